@@ -1,0 +1,73 @@
+"""The bounding box: the only pixels worth testing (seed 000 §1.2, seed 001)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .edges import EdgeSetup
+
+
+@dataclass(frozen=True)
+class BBox:
+    """Pixels whose centres lie in the triangle's bounding box, clipped to the image.
+
+    Rows ``row0 <= i < row1`` and columns ``col0 <= j < col1`` (half-open, so an empty box
+    has ``row0 == row1`` or ``col0 == col1``). ``xmin .. ymax`` are the box's extents in
+    pixels, before clipping.
+    """
+
+    row0: int
+    row1: int
+    col0: int
+    col1: int
+    xmin: float
+    xmax: float
+    ymin: float
+    ymax: float
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return (self.row1 - self.row0, self.col1 - self.col0)
+
+    @property
+    def size(self) -> int:
+        return self.shape[0] * self.shape[1]
+
+    def rows(self) -> np.ndarray:
+        return np.arange(self.row0, self.row1)
+
+    def cols(self) -> np.ndarray:
+        return np.arange(self.col0, self.col1)
+
+
+def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
+    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n)."""
+    unit, half = setup.unit, setup.half
+    if setup.exact:  # integer ceil/floor: exact
+        first = -((half - lo) // unit)
+        last = (hi - half) // unit
+    else:
+        first = np.ceil((lo - half) / unit)
+        last = np.floor((hi - half) / unit)
+    first, last = int(min(max(first, 0), n)), int(min(last, n - 1))
+    return first, max(first, last + 1)
+
+
+def pixel_bbox(setup: EdgeSetup, width: int, height: int) -> BBox:
+    """Bounding box of the triangle's vertices, as pixel index ranges clipped to the image."""
+    lo, hi = setup.p.min(axis=0), setup.p.max(axis=0)
+    col0, col1 = centre_range(lo[0], hi[0], setup, width)
+    row0, row1 = centre_range(lo[1], hi[1], setup, height)
+    px = 1.0 / float(setup.unit)
+    return BBox(
+        row0=row0,
+        row1=row1,
+        col0=col0,
+        col1=col1,
+        xmin=float(lo[0]) * px,
+        xmax=float(hi[0]) * px,
+        ymin=float(lo[1]) * px,
+        ymax=float(hi[1]) * px,
+    )

@@ -1,0 +1,248 @@
+"""``rasterize``: fill one triangle by span tables or half-planes, then interpolate."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import half_planes, span_tables
+from .barycentric import barycentric_pixels
+from .bbox import BBox, pixel_bbox
+from .edges import EdgeSetup, setup_edges
+from .interpolation import MODES, interpolate
+from .snapping import SUBPIXEL_BITS, check_bits
+from .trace import FillTrace
+from .triangle import Triangle
+
+METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill}
+CULL = (None, "back", "front")
+
+
+@dataclass(frozen=True)
+class Fill:
+    """The result of :func:`rasterize`.
+
+    Attributes
+    ----------
+    coverage : (height, width) bool
+        Pixels whose centres the triangle covers.
+    attrs : mapping of name to (height, width) or (height, width, k) float64
+        Interpolated attributes, NaN outside coverage.
+    depth : (height, width) float64 or None
+        Window depth (affine in screen space), NaN outside; None when no z was given.
+    trace : FillTrace or None
+        Every step, when ``trace=True``.
+    """
+
+    coverage: np.ndarray
+    attrs: Mapping[str, np.ndarray]
+    depth: np.ndarray | None
+    trace: FillTrace | None = None
+
+
+def _check_size(name: str, value) -> int:
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        raise TypeError(f"{name} must be an int, got {value!r}")
+    if value <= 0:
+        raise ValueError(f"{name} must be positive, got {value}")
+    return int(value)
+
+
+def _check_choice(name: str, value, choices) -> None:
+    if value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}; got {value!r}")
+
+
+def rasterize(
+    tri: Triangle,
+    width: int,
+    height: int,
+    *,
+    method: str = "halfplane",
+    interpolation: str = "perspective",
+    trace: bool = False,
+    subpixel_bits: int | None = SUBPIXEL_BITS,
+    cull: str | None = None,
+) -> Fill:
+    """Fill a triangle into a ``height`` × ``width`` image and interpolate its attributes.
+
+    Parameters
+    ----------
+    tri : Triangle
+        Screen-space triangle (see ``CONVENTIONS``: x right, y down, pixel centres at
+        ``(j + 0.5, i + 0.5)``).
+    width, height : int
+        Image size in pixels.
+    method : {"halfplane", "span"}
+        Half-plane edge tests over the bounding box, or span tables (split at u4, fill
+        raster lines). Both cover exactly the same pixels.
+    interpolation : {"perspective", "affine"}
+        Perspective-correct (f/w over 1/w) or plain screen-space interpolation.
+    trace : bool
+        Record every step (see :class:`~teachraster.trace.FillTrace`). Never changes
+        the pixels.
+    subpixel_bits : int or None
+        Vertices are snapped to ``1 / 2**subpixel_bits`` px before coverage is decided
+        (8, as in Direct3D). None keeps raw floats, to show what precision does.
+    cull : {None, "back", "front"}
+        Drop back-facing (clockwise on screen) or front-facing triangles.
+
+    Examples
+    --------
+    >>> import teachraster as tr
+    >>> tri = tr.Triangle([[0, 0], [4, 0], [0, 4]], attrs={"u": [0.0, 1.0, 0.0]})
+    >>> fill = tr.rasterize(tri, 4, 4)
+    >>> fill.coverage.astype(int)
+    array([[1, 1, 1, 1],
+           [1, 1, 1, 0],
+           [1, 1, 0, 0],
+           [1, 0, 0, 0]])
+    >>> float(fill.attrs["u"][0, 1])
+    0.375
+    """
+    if not isinstance(tri, Triangle):
+        raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
+    width, height = _check_size("width", width), _check_size("height", height)
+    _check_choice("method", method, tuple(METHODS))
+    _check_choice("interpolation", interpolation, MODES)
+    _check_choice("cull", cull, CULL)
+    check_bits(subpixel_bits)
+
+    setup = setup_edges(tri.xy, subpixel_bits)
+    box = pixel_bbox(setup, width, height)
+    culled = _culled(setup, cull)
+    if culled:
+        local, algo_trace = np.zeros(box.shape, dtype=bool), None
+    else:
+        local, algo_trace = METHODS[method](setup, box, trace)
+    if setup.area2 == 0:  # zero area covers nothing (exact arithmetic already ensures it)
+        local[:] = False
+
+    coverage = np.zeros((height, width), dtype=bool)
+    coverage[box.row0 : box.row1, box.col0 : box.col1] = local
+    rows, cols = np.nonzero(coverage)
+    lam = barycentric_pixels(setup, rows, cols)
+
+    modes = MODES if trace else (interpolation,)
+    values = {
+        mode: {name: interpolate(lam, f, tri.w, mode) for name, f in tri.attrs.items()}
+        for mode in modes
+    }
+    depth_values = None if tri.z is None else interpolate(lam, tri.z, tri.w, "affine")
+
+    def scatter(vals: np.ndarray) -> np.ndarray:
+        out = np.full((height, width, *vals.shape[1:]), np.nan)
+        out[rows, cols] = vals
+        return out
+
+    attrs = {name: scatter(v) for name, v in values[interpolation].items()}
+    depth = None if depth_values is None else scatter(depth_values)
+    fill_trace = None
+    if trace:
+        fill_trace = _record(
+            tri, setup, box, method, interpolation, subpixel_bits, (width, height),
+            culled, local, algo_trace, lam, values, depth_values,
+        )  # fmt: skip
+    return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
+
+
+def _culled(setup: EdgeSetup, cull: str | None) -> bool:
+    # Conventions: front-facing = counter-clockwise on screen = negative E(v0, v1, v2).
+    if cull == "back":
+        return setup.original_area2 > 0
+    if cull == "front":
+        return setup.original_area2 < 0
+    return False
+
+
+def _describe_setup(setup, box, method, tri, bits, culled, algo_trace):
+    px = 1.0 / float(setup.unit)
+    snapped = setup.p[np.argsort(setup.perm)].astype(np.float64) * px
+    pts = ", ".join(f"({x:g}, {y:g})" for x, y in snapped)
+    grid = "raw floats (no snapping)" if bits is None else f"the 1/{2**bits} px grid"
+    steps = [("snap", f"vertices on {grid}: {pts}")]
+    area = float(setup.original_area2) * px * px / 2
+    if area == 0:
+        turn = "zero area: the triangle is degenerate and covers no pixel centre"
+    else:
+        facing = "clockwise on screen (back-facing)" if area > 0 else (
+            "counter-clockwise on screen (front-facing)"
+        )
+        turn = f"signed area {area:g} px²: {facing}"
+        if area < 0:
+            turn += "; two vertices swapped so the inside is on the positive side"
+    steps.append(("winding", turn + ("; culled, nothing is filled" if culled else "")))
+    n = box.size
+    steps.append((
+        "bbox",
+        f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
+        + (f"rows {box.row0}-{box.row1 - 1}, columns {box.col0}-{box.col1 - 1} "
+           f"({n} pixel centres)" if n else "no pixel centre of the image inside"),
+    ))  # fmt: skip
+    if method == "span" and algo_trace is not None:
+        s = algo_trace
+        order = ", ".join(
+            f"v{i + 1} = vertex {o} ({x:g}, {y:g})" for i, (o, (x, y)) in enumerate(
+                zip(s.order, s.sorted_xy)
+            )
+        )
+        steps.append(("sort", f"sorted by y: {order}"))
+        if s.u4 is None:
+            split = "zero height: nothing to split"
+        elif s.flat_bottom is None:
+            split = f"already flat-topped (v1.y = v2.y = {s.sorted_xy[0, 1]:g}): no split"
+        elif s.flat_top is None:
+            split = f"already flat-bottomed (v2.y = v3.y = {s.sorted_xy[1, 1]:g}): no split"
+        else:
+            split = (
+                f"split at y = {s.sorted_xy[1, 1]:g}: u4 = (v2-v1)/(v3-v1)*(u3-u1)+u1 = "
+                f"{s.u4:.3f}, giving a flat-bottom (v1, v2, v4) and a flat-top (v2, v4, v3) "
+                "triangle"
+            )
+        steps.append(("split", split))
+    return snapped, area, tuple(steps)
+
+
+def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, local,
+            algo_trace, lam, values, depth_values) -> FillTrace:  # fmt: skip
+    width, height = size
+    snapped, area, steps = _describe_setup(setup, box, method, tri, bits, culled, algo_trace)
+    first = len(steps)
+    if method == "span" and algo_trace is not None:
+        # a pixel is filled at the step of its raster line
+        line_step = first + np.arange(box.shape[0], dtype=np.int32)
+        filled_at = np.where(local, line_step[:, None], -1).astype(np.int32)
+    else:  # a pixel is filled at the step that visits it (row-major over the bbox)
+        visit = first + np.arange(box.size, dtype=np.int32).reshape(box.shape)
+        filled_at = np.where(local, visit, -1).astype(np.int32)
+
+    def local_image(vals: np.ndarray) -> np.ndarray:
+        out = np.full((*box.shape, *vals.shape[1:]), np.nan)
+        out[local] = vals
+        return out
+
+    return FillTrace(
+        method=method,
+        interpolation=interpolation,
+        subpixel_bits=bits,
+        width=width,
+        height=height,
+        xy=tri.xy,
+        snapped=snapped,
+        signed_area=area,
+        front_facing=area < 0,
+        culled=culled,
+        edges=setup.edges,
+        top_left=setup.top_left,
+        bbox=box,
+        filled_at=filled_at,
+        barycentric=local_image(lam),
+        affine={k: local_image(v) for k, v in values["affine"].items()},
+        perspective={k: local_image(v) for k, v in values["perspective"].items()},
+        depth=None if depth_values is None else local_image(depth_values),
+        span=algo_trace if method == "span" else None,
+        halfplane=algo_trace if method == "halfplane" else None,
+        setup=steps,
+    )

@@ -1,0 +1,205 @@
+"""The trace: every step of one fill, recorded as plain data for the presentation layer.
+
+A trace holds numpy arrays and small frozen dataclasses only (never one Python object per
+pixel): steps are *numbered* and their captions are written on demand, so recording a
+256×256 fill costs a few arrays. Per-pixel arrays cover the bounding box; use
+:meth:`FillTrace.image` to place one in the whole image.
+
+Steps run in this order: set-up steps (snap, winding, bounding box, and for span tables
+sort and split), then the work steps (one per raster line for span tables, one per
+visited pixel for half-planes), then one interpolation step.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from .bbox import BBox
+from .half_planes import HalfPlaneTrace
+from .span_tables import SpanTrace
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step of a fill, as the widgets show it.
+
+    ``kind`` is one of ``"snap"``, ``"winding"``, ``"bbox"``, ``"sort"``, ``"split"``,
+    ``"row"``, ``"pixel"``, ``"interpolate"``. ``row``/``col`` are image indices where the
+    step concerns one raster line or pixel.
+    """
+
+    index: int
+    kind: str
+    caption: str
+    row: int | None = None
+    col: int | None = None
+
+
+@dataclass(frozen=True)
+class FillTrace:
+    """Everything :func:`teachraster.rasterize` did for one triangle (``trace=True``).
+
+    Attributes
+    ----------
+    method, interpolation : str
+        As passed to ``rasterize``.
+    subpixel_bits : int or None
+        Snapping precision used (None = raw floats).
+    width, height : int
+        Image size.
+    xy, snapped : (3, 2) float
+        Vertex positions as given and after snapping, in pixels.
+    signed_area : float
+        Area in px² of the snapped triangle, positive when clockwise on screen.
+    front_facing, culled : bool
+        Counter-clockwise on screen; removed by back/front-face culling.
+    edges : (3, 2) int
+        Original vertex indices (from, to) of the edges, in test order.
+    top_left : (3,) bool
+        Whether each edge is a top or left edge (decides centres exactly on it).
+    bbox : BBox
+        Pixels whose centres lie in the bounding box, clipped to the image.
+    filled_at : (rows, cols) int32
+        Step index at which each bbox pixel was filled, -1 if never.
+    barycentric : (rows, cols, 3) float64
+        Screen-space weights of vertices 0, 1, 2; NaN outside coverage.
+    affine, perspective : mapping of name to (rows, cols[, k]) float64
+        Both interpolations of every attribute, NaN outside coverage.
+    depth : (rows, cols) float64 or None
+        Interpolated window depth, NaN outside coverage.
+    span, halfplane : SpanTrace or HalfPlaneTrace or None
+        The algorithm-specific record (the other one is None).
+    setup : tuple of (kind, caption)
+        The set-up steps.
+    """
+
+    method: str
+    interpolation: str
+    subpixel_bits: int | None
+    width: int
+    height: int
+    xy: np.ndarray
+    snapped: np.ndarray
+    signed_area: float
+    front_facing: bool
+    culled: bool
+    edges: np.ndarray
+    top_left: np.ndarray
+    bbox: BBox
+    filled_at: np.ndarray
+    barycentric: np.ndarray
+    affine: Mapping[str, np.ndarray]
+    perspective: Mapping[str, np.ndarray]
+    depth: np.ndarray | None
+    span: SpanTrace | None
+    halfplane: HalfPlaneTrace | None
+    setup: tuple[tuple[str, str], ...]
+
+    # -- stepping -------------------------------------------------------------------
+    @property
+    def n_work(self) -> int:
+        """Number of work steps: raster lines (span) or visited pixels (half-plane)."""
+        if self.culled:
+            return 0
+        if self.span is not None:
+            return len(self.span.rows)
+        return self.bbox.size
+
+    def __len__(self) -> int:
+        return len(self.setup) + self.n_work + 1
+
+    def __iter__(self) -> Iterator[Step]:
+        return (self.step(k) for k in range(len(self)))
+
+    @property
+    def first_work_step(self) -> int:
+        return len(self.setup)
+
+    def step(self, k: int) -> Step:
+        """Step ``k`` (negative counts from the end), with its caption."""
+        n = len(self)
+        if not -n <= k < n:
+            raise IndexError(f"step {k} out of range for a trace of {n} steps")
+        k %= n
+        if k < len(self.setup):
+            kind, caption = self.setup[k]
+            return Step(k, kind, caption)
+        i = k - len(self.setup)
+        if i == self.n_work:
+            return Step(k, "interpolate", self._interpolation_caption())
+        if self.span is not None:
+            return self._row_step(k, i)
+        return self._pixel_step(k, i)
+
+    def caption(self, k: int) -> str:
+        """The one-line plain-English caption of step ``k``."""
+        return self.step(k).caption
+
+    def coverage_at(self, k: int) -> np.ndarray:
+        """(height, width) bool: the pixels filled once steps 0..k have run."""
+        done = (self.filled_at >= 0) & (self.filled_at <= k)
+        return self.image(done, fill=False)
+
+    def image(self, local: np.ndarray, fill=np.nan) -> np.ndarray:
+        """Place a bbox-local array into a full (height, width, ...) image."""
+        b = self.bbox
+        out = np.full((self.height, self.width, *local.shape[2:]), fill, dtype=local.dtype)
+        out[b.row0 : b.row1, b.col0 : b.col1] = local
+        return out
+
+    # -- captions -------------------------------------------------------------------
+    def _row_step(self, k: int, i: int) -> Step:
+        s = self.span
+        row, part = int(s.rows[i]), ("flat-bottom", "flat-top")[s.half[i]]
+        start, stop = int(s.col_start[i]), int(s.col_stop[i])
+        where = f"row {row} (y = {row + 0.5:g}, {part} part)"
+        if np.isfinite(s.x_left[i]) and np.isfinite(s.x_right[i]):
+            where += f": span x = {s.x_left[i]:.2f} .. {s.x_right[i]:.2f}"
+        if stop > start:
+            cols = f"column {start}" if stop == start + 1 else f"columns {start}-{stop - 1}"
+            text = f"{where} covers {cols}"
+        else:
+            text = f"{where} covers no pixel centre"
+        return Step(k, "row", text, row=row)
+
+    def _pixel_step(self, k: int, i: int) -> Step:
+        h = self.halfplane
+        r, c = divmod(i, self.bbox.shape[1])
+        row, col = self.bbox.row0 + r, self.bbox.col0 + c
+        e = h.edge_values[r, c]
+        run = int(h.tests_run[r, c])
+        parts = []
+        for t in range(run):
+            a, b = self.edges[t]
+            passed = e[t] > 0 or (e[t] == 0 and self.top_left[t])
+            rel = ">" if e[t] > 0 else "<" if e[t] < 0 else "="
+            tie = " (on a top-left edge)" if e[t] == 0 and passed else ""
+            tie = " (on an edge that is not top-left)" if e[t] == 0 and not passed else tie
+            parts.append(f"E{a}{b} = {e[t]:.3g} {rel} 0{tie}")
+        rejected = int(h.rejected_by[r, c])
+        verdict = (
+            "inside: covered"
+            if rejected < 0
+            else f"outside: rejected by test {rejected + 1} of 3"
+            + (", later tests skipped" if run < 3 else "")
+        )
+        text = f"pixel (row {row}, col {col}) at ({col + 0.5:g}, {row + 0.5:g}): "
+        return Step(k, "pixel", text + ", ".join(parts) + f" -> {verdict}", row=row, col=col)
+
+    def _interpolation_caption(self) -> str:
+        n = int((self.filled_at >= 0).sum())
+        if self.culled:
+            return "triangle culled: nothing to interpolate"
+        names = list(self.affine)
+        if self.depth is not None:
+            names.append("depth z (affine)")
+        if not names:
+            return f"{n} pixels covered; no attributes to interpolate"
+        how = {
+            "perspective": "perspective-correct (f/w and 1/w are affine on screen)",
+            "affine": "affine in screen space",
+        }[self.interpolation]
+        return f"interpolated {', '.join(names)} at {n} covered pixels, {how}"

@@ -1,0 +1,114 @@
+"""The input of the core rasteriser: one screen-space triangle and its vertex data."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+def as_finite(name: str, value, shape: tuple[int | None, ...]) -> np.ndarray:
+    """Return ``value`` as a float64 array of ``shape`` (``None`` = any), or raise.
+
+    Errors name the offending argument, so a student sees *which* input was wrong.
+    """
+    try:
+        arr = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{name} must be numeric array-like: {exc}") from None
+    ok = arr.ndim == len(shape) and all(s is None or s == n for s, n in zip(shape, arr.shape))
+    if not ok:
+        want = "(" + ", ".join("k" if s is None else str(s) for s in shape) + ")"
+        raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise ValueError(f"{name} contains NaN or infinity: {arr.tolist()}")
+    return arr
+
+
+@dataclass(frozen=True)
+class Triangle:
+    """One triangle in screen space, ready to be filled.
+
+    Parameters
+    ----------
+    xy : (3, 2) array-like
+        Vertex positions in pixels: x to the right, y down (see CONVENTIONS).
+    w : (3,) array-like, optional
+        Clip-space w of each vertex (> 0); for a perspective camera this is the
+        view-space depth. Default: all 1, i.e. no perspective.
+    z : (3,) array-like, optional
+        Window depth of each vertex, in [0, 1] (smaller is nearer).
+    attrs : mapping of str to (3,) or (3, k) array-like, optional
+        Per-vertex attributes to interpolate (colours, texture coordinates, ...).
+
+    Examples
+    --------
+    >>> tri = Triangle([[1, 1], [5, 1], [1, 4]], attrs={"u": [0, 1, 0]})
+    >>> tri.signed_area       # clockwise on screen: back-facing (see CONVENTIONS)
+    6.0
+    """
+
+    xy: np.ndarray
+    w: np.ndarray | None = None
+    z: np.ndarray | None = None
+    attrs: Mapping[str, np.ndarray] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        xy = as_finite("xy", self.xy, (3, 2))
+        w = np.ones(3) if self.w is None else as_finite("w", self.w, (3,))
+        if (w <= 0).any():
+            raise ValueError(
+                f"w must be > 0 for every vertex, got {w.tolist()}: a vertex with w <= 0 "
+                "is on or behind the eye; clip the triangle against the near plane first "
+                "(the scene pipeline, tr.render, does this in clip space)"
+            )
+        z = None if self.z is None else as_finite("z", self.z, (3,))
+        if z is not None and ((z < 0) | (z > 1)).any():
+            raise ValueError(f"z is window depth and must lie in [0, 1], got {z.tolist()}")
+        attrs = {} if self.attrs is None else self.attrs
+        if not isinstance(attrs, Mapping):
+            raise TypeError(f"attrs must be a mapping of name to values, got {type(attrs)}")
+        clean = {}
+        for name, values in attrs.items():
+            if not isinstance(name, str):
+                raise TypeError(f"attrs: names must be strings, got {name!r}")
+            arr = np.array(values, dtype=np.float64) if _numeric(values) else None
+            if arr is None:
+                raise TypeError(f"attrs[{name!r}] must be numeric array-like")
+            shape = (3,) if arr.ndim == 1 else (3, None)
+            if arr.ndim not in (1, 2) or arr.shape[0] != 3:
+                raise ValueError(
+                    f"attrs[{name!r}] must have shape (3,) or (3, k): one value per vertex, "
+                    f"got {arr.shape}"
+                )
+            clean[name] = as_finite(f"attrs[{name!r}]", arr, shape)
+        for arr in (xy, w, *([z] if z is not None else []), *clean.values()):
+            arr.flags.writeable = False
+        object.__setattr__(self, "xy", xy)
+        object.__setattr__(self, "w", w)
+        object.__setattr__(self, "z", z)
+        object.__setattr__(self, "attrs", clean)
+
+    @property
+    def signed_area(self) -> float:
+        """Signed area in px², positive when the vertices run clockwise on screen.
+
+        Computed relative to vertex 0 (y-down numbers), ``E(v0, v1, v2) / 2``. Front-facing
+        triangles (counter-clockwise on screen) have a negative value.
+        """
+        (ax, ay), (bx, by), (cx, cy) = self.xy
+        return float(((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) / 2)
+
+    @property
+    def front_facing(self) -> bool:
+        """True when the vertices run counter-clockwise as seen on screen."""
+        return self.signed_area < 0
+
+
+def _numeric(values) -> bool:
+    try:
+        np.array(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        return False
+    return True
