@@ -1,0 +1,26 @@
+"""The viewport transform: clip space to window (screen) space, as in CONVENTIONS.
+
+``x_win = (x/w + 1) * width / 2``, ``y_win = (1 - y/w) * height / 2`` (y down, row 0 at
+the top), ``z_win = (z/w) / 2 + 1/2`` (NDC z in [-1, 1] to depth [0, 1], smaller nearer).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def to_window(clip, width: int, height: int) -> np.ndarray:
+    """Window coordinates (x, y, z) of clip-space points (..., 4) with w > 0.
+
+    The divide by w is only safe after clipping against the near plane (w > 0).
+
+    >>> to_window([[0.0, 0.0, 0.0, 1.0], [-2.0, 2.0, 2.0, 2.0]], 640, 480)
+    array([[320., 240.,   0.5],
+           [  0.,   0.,   1. ]])
+    """
+    c = np.asarray(clip, dtype=np.float64)
+    w = c[..., 3]
+    x = (c[..., 0] / w + 1.0) * (width / 2)
+    y = (1.0 - c[..., 1] / w) * (height / 2)
+    z = (c[..., 2] / w) * 0.5 + 0.5
+    return np.stack([x, y, z], axis=-1)
