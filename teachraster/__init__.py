@@ -4,8 +4,8 @@ The core (this package minus plotting and widgets) depends on numpy only.
 
 >>> import teachraster as tr
 >>> fill = tr.rasterize(tr.Triangle([[0, 0], [3, 0], [0, 3]]), 3, 3, method="span")
->>> int(fill.coverage.sum())
-6
+>>> int(fill.coverage.sum())   # centres with x + y < 3; the hypotenuse is not top-left
+3
 """
 
 from .barycentric import barycentric

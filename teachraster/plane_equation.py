@@ -107,8 +107,8 @@ def setup_matrix(xy) -> np.ndarray:
     ``det = (b_x - a_x)(c_y - a_y) - (c_x - a_x)(b_y - a_y)``.
 
     >>> setup_matrix([[0, 0], [4, 0], [0, 2]])
-    array([[ 0.25,  0.  ],
-           [ 0.  ,  0.5 ]])
+    array([[0.25, 0.  ],
+           [0.  , 0.5 ]])
     """
     (ax, ay), (bx, by), (cx, cy) = as_finite("xy", xy, (3, 2))
     det = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay)

@@ -95,11 +95,11 @@ def rasterize(
     >>> tri = tr.Triangle([[0, 0], [4, 0], [0, 4]], attrs={"u": [0.0, 1.0, 0.0]})
     >>> fill = tr.rasterize(tri, 4, 4)
     >>> fill.coverage.astype(int)
-    array([[1, 1, 1, 1],
-           [1, 1, 1, 0],
+    array([[1, 1, 1, 0],
            [1, 1, 0, 0],
-           [1, 0, 0, 0]])
-    >>> float(fill.attrs["u"][0, 1])
+           [1, 0, 0, 0],
+           [0, 0, 0, 0]])
+    >>> float(fill.attrs["u"][0, 1])     # at the centre (1.5, 0.5): u = x / 4
     0.375
     """
     if not isinstance(tri, Triangle):
@@ -167,8 +167,10 @@ def _describe_setup(setup, box, method, tri, bits, culled, algo_trace):
     if area == 0:
         turn = "zero area: the triangle is degenerate and covers no pixel centre"
     else:
-        facing = "clockwise on screen (back-facing)" if area > 0 else (
-            "counter-clockwise on screen (front-facing)"
+        facing = (
+            "clockwise on screen (back-facing)"
+            if area > 0
+            else ("counter-clockwise on screen (front-facing)")
         )
         turn = f"signed area {area:g} px²: {facing}"
         if area < 0:
@@ -184,9 +186,8 @@ def _describe_setup(setup, box, method, tri, bits, culled, algo_trace):
     if method == "span" and algo_trace is not None:
         s = algo_trace
         order = ", ".join(
-            f"v{i + 1} = vertex {o} ({x:g}, {y:g})" for i, (o, (x, y)) in enumerate(
-                zip(s.order, s.sorted_xy)
-            )
+            f"v{i + 1} = vertex {o} ({x:g}, {y:g})"
+            for i, (o, (x, y)) in enumerate(zip(s.order, s.sorted_xy))
         )
         steps.append(("sort", f"sorted by y: {order}"))
         if s.u4 is None:

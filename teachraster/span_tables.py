@@ -99,9 +99,7 @@ def _column_bounds(setup: EdgeSetup, k: int, y: np.ndarray):
     return (np.ceil(c) if tl else np.floor(c) + 1).astype(np.int64), None, crossing
 
 
-def fill(
-    setup: EdgeSetup, bbox: BBox, record: bool
-) -> tuple[np.ndarray, SpanTrace | None]:
+def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTrace | None]:
     """Coverage of the bounding box (bbox-local bool array) and, if asked, the trace."""
     rows = bbox.rows()
     y = setup.centre_x(rows)

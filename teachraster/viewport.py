@@ -15,8 +15,8 @@ def to_window(clip, width: int, height: int) -> np.ndarray:
     The divide by w is only safe after clipping against the near plane (w > 0).
 
     >>> to_window([[0.0, 0.0, 0.0, 1.0], [-2.0, 2.0, 2.0, 2.0]], 640, 480)
-    array([[320., 240.,   0.5],
-           [  0.,   0.,   1. ]])
+    array([[320. , 240. ,   0.5],
+           [  0. ,   0. ,   1. ]])
     """
     c = np.asarray(clip, dtype=np.float64)
     w = c[..., 3]

@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""Developer commands for teachraster. Standard library only, so it runs on a fresh machine.
+
+    python3 dev.py lab  [jupyter lab args...]   # e.g. --no-browser
+    python3 dev.py test [pytest args...]        # e.g. -k packaging
+
+Both create ./.venv if needed and `pip install -e` the project with the right extra. The
+install is skipped when pyproject.toml has not changed since the last one (a stamp file
+inside .venv records its hash).
+"""
+
+import hashlib
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent
+VENV = ROOT / ".venv"
+BIN = VENV / ("Scripts" if os.name == "nt" else "bin")
+PYTHON = BIN / ("python.exe" if os.name == "nt" else "python")
+STAMP = VENV / "teachraster-install.json"
+
+# Which installed extras satisfy each request (dev = lab + test).
+SATISFIES = {"lab": ("lab", "dev"), "dev": ("dev",)}
+
+
+def run(cmd, **kwargs):
+    print("+ " + " ".join(str(c) for c in cmd), flush=True)
+    return subprocess.run([str(c) for c in cmd], cwd=ROOT, **kwargs).returncode
+
+
+def check(cmd):
+    if run(cmd) != 0:
+        sys.exit(f"dev.py: command failed: {' '.join(str(c) for c in cmd)}")
+
+
+def ensure_venv(extra):
+    """Create .venv and install the project with `extra`, unless that is already done."""
+    if sys.version_info < (3, 10):  # noqa: UP036 (dev.py may run on any python3)
+        sys.exit(f"dev.py: teachraster needs Python >= 3.10, this is {sys.version.split()[0]}")
+    if not PYTHON.exists():
+        print(f"dev.py: creating {VENV.name}/ with {sys.executable}", flush=True)
+        check([sys.executable, "-m", "venv", VENV])
+        check([PYTHON, "-m", "pip", "install", "--quiet", "--upgrade", "pip"])
+    digest = hashlib.sha256((ROOT / "pyproject.toml").read_bytes()).hexdigest()
+    stamps = json.loads(STAMP.read_text()) if STAMP.exists() else {}
+    if any(stamps.get(e) == digest for e in SATISFIES[extra]):
+        print(f"dev.py: .venv is up to date with pyproject.toml ([{extra}])", flush=True)
+        return
+    print(f"dev.py: installing teachraster[{extra}] into .venv (takes a minute)", flush=True)
+    check([PYTHON, "-m", "pip", "install", "--disable-pip-version-check", "-e", f".[{extra}]"])
+    stamps[extra] = digest
+    STAMP.write_text(json.dumps(stamps, indent=1))
+
+
+def lab(args):
+    ensure_venv("lab")
+    cmd = [str(PYTHON), "-m", "jupyter", "lab", "notebooks/", *args]
+    if hasattr(os, "geteuid") and os.geteuid() == 0 and "--allow-root" not in args:
+        cmd.append("--allow-root")  # containers and CI machines often run as root
+    print("+ " + " ".join(cmd), flush=True)
+    if os.name == "nt":
+        sys.exit(subprocess.call(cmd, cwd=ROOT))
+    os.execv(cmd[0], cmd)  # hand the terminal (and Ctrl-C) to JupyterLab
+
+
+def test(args):
+    ensure_venv("dev")
+    os.environ.setdefault("MPLBACKEND", "Agg")  # doctests and tests never open windows
+    steps = {
+        "ruff check": [PYTHON, "-m", "ruff", "check", "."],
+        "ruff format": [PYTHON, "-m", "ruff", "format", "--check", "."],
+        "pytest": [PYTHON, "-m", "pytest", *args],  # last, so its summary closes the output
+    }
+    failed = [name for name, cmd in steps.items() if run(cmd) != 0]
+    if failed:
+        sys.exit(f"dev.py: FAILED: {', '.join(failed)}")
+
+
+def main():
+    commands = {"lab": lab, "test": test}
+    if len(sys.argv) < 2 or sys.argv[1] not in commands:
+        sys.exit(__doc__)
+    os.chdir(ROOT)
+    commands[sys.argv[1]](sys.argv[2:])
+
+
+if __name__ == "__main__":
+    main()
