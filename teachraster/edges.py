@@ -121,9 +121,13 @@ def setup_edges(xy: np.ndarray, subpixel_bits: int | None) -> EdgeSetup:
 def edge_values_at(setup: EdgeSetup, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
     """E_k at the centres of pixels (rows[i], cols[i]): shape (n, 3), in units²."""
     out = np.empty((len(rows), 3), dtype=setup.p.dtype)
+    if len(rows) == 0:
+        return out
+    # One row term per raster line and one column term per column, then gather: the same
+    # exact values as evaluating E per pixel, for a fraction of the multiplications.
+    r0, c0 = rows.min(), cols.min()
+    all_rows, all_cols = np.arange(r0, rows.max() + 1), np.arange(c0, cols.max() + 1)
     for k in range(3):
-        a, b = setup.p[k], setup.p[(k + 1) % 3]
-        ys = setup.centre_x(rows) - a[1]
-        xs = setup.centre_x(cols) - a[0]
-        out[:, k] = (b[0] - a[0]) * ys - (b[1] - a[1]) * xs
+        row_term, col_term = setup.edge_terms(k, all_rows, all_cols)
+        np.subtract(row_term[rows - r0], col_term[cols - c0], out=out[:, k])
     return out

@@ -21,21 +21,40 @@ from .edges import EdgeSetup
 class HalfPlaneTrace:
     """What the half-plane fill did, per pixel of the bounding box (bbox-local arrays).
 
-    Pixels are visited in row-major order over the bounding box.
+    Pixels are visited in row-major order over the bounding box. The fill's own edge
+    values are kept as computed (exact, in internal units), so recording costs no copy;
+    the properties below derive what the presentation shows.
 
     Attributes
     ----------
-    edge_values : (rows, cols, 3) float64
-        E_k at each pixel centre in px² (positive = inside edge k), in test order.
-    tests_run : (rows, cols) int8
-        Edge tests a bail-out loop runs there: 1, 2 or 3.
-    rejected_by : (rows, cols) int8
-        Position (0, 1, 2) of the first failing test, or -1 when the pixel is covered.
+    edge_units : tuple of three (rows, cols) arrays
+        E_k at each pixel centre in internal units², in test order.
+    passed : tuple of three (rows, cols) bool arrays
+        Whether each pixel passed test k (top-left rule included).
+    px2_per_unit2 : float
+        Converts ``edge_units`` to px².
     """
 
-    edge_values: np.ndarray
-    tests_run: np.ndarray
-    rejected_by: np.ndarray
+    edge_units: tuple[np.ndarray, np.ndarray, np.ndarray]
+    passed: tuple[np.ndarray, np.ndarray, np.ndarray]
+    px2_per_unit2: float
+
+    @property
+    def edge_values(self) -> np.ndarray:
+        """(rows, cols, 3) float64: E_k in px² (positive = inside edge k), in test order."""
+        return np.stack(self.edge_units, axis=-1).astype(np.float64) * self.px2_per_unit2
+
+    @property
+    def tests_run(self) -> np.ndarray:
+        """(rows, cols) int8: edge tests a bail-out loop runs at each pixel (1, 2 or 3)."""
+        ok0, ok1, _ = self.passed
+        return (1 + ok0.astype(np.int8) + (ok0 & ok1)).astype(np.int8)
+
+    @property
+    def rejected_by(self) -> np.ndarray:
+        """(rows, cols) int8: position of the first failing test, -1 where covered."""
+        ok0, ok1, ok2 = self.passed
+        return np.where(~ok0, 0, np.where(~ok1, 1, np.where(~ok2, 2, -1))).astype(np.int8)
 
     def visit_order(self) -> np.ndarray:
         """(n, 2) bbox-local (row, col) of each visited pixel, in visiting order."""
@@ -53,14 +72,10 @@ def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, HalfPl
         # E is affine in the pixel position: one subtraction per pixel (exact in int64).
         e = row_term[:, None] - col_term[None, :]
         ok = setup.inside(k, e)
-        covered &= ok
+        covered &= ok  # a loop would stop here at the first failure; see tests_run
         if record:
             values.append(e)
             passed.append(ok)
     if not record:
         return covered, None
-    ok0, ok1, ok2 = passed
-    tests_run = (1 + ok0 + (ok0 & ok1)).astype(np.int8)
-    rejected_by = np.where(~ok0, 0, np.where(~ok1, 1, np.where(~ok2, 2, -1))).astype(np.int8)
-    edge_values = np.stack(values, axis=-1).astype(np.float64) * setup.pixels_per_unit2()
-    return covered, HalfPlaneTrace(edge_values, tests_run, rejected_by)
+    return covered, HalfPlaneTrace(tuple(values), tuple(passed), setup.pixels_per_unit2())

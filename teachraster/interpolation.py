@@ -29,21 +29,26 @@ def perspective_weights(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
     """
     if np.all(w == w[0]):
         return lam
-    q = lam / w  # λ_i / w_i: affine in screen space, like 1/w itself
-    return q / q.sum(axis=-1, keepdims=True)
+    q = lam * (1.0 / w)  # λ_i / w_i: affine in screen space, like 1/w itself
+    q /= (q[..., 0] + q[..., 1] + q[..., 2])[..., None]
+    return q
 
 
 def blend(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
     """``f_0 + μ_1 (f_1 - f_0) + μ_2 (f_2 - f_0)`` for values (3,) or (3, k).
 
+    Evaluated as one matrix product ``[1, μ_1, μ_2] @ [f_0; f_1 - f_0; f_2 - f_0]`` for all
+    pixels and attributes at once. For a constant attribute the differences are exactly
+    zero, so the result is exactly f_0 whatever order the sum is taken in.
+
     >>> blend(np.array([[0.2, 0.3, 0.5]]), np.array([7.0, 7.0, 7.0]))
     array([7.])
     """
     f0 = values[0]
-    d1, d2 = values[1] - f0, values[2] - f0
-    if values.ndim == 1:
-        return f0 + weights[:, 1] * d1 + weights[:, 2] * d2
-    return f0 + weights[:, 1:2] * d1 + weights[:, 2:3] * d2
+    rows = np.stack([f0, values[1] - f0, values[2] - f0]).reshape(3, -1)
+    ones = np.array(weights, dtype=np.float64)  # a copy: column 0 becomes the 1 of f_0
+    ones[:, 0] = 1.0
+    return (ones @ rows).reshape(len(weights), *values.shape[1:])
 
 
 def interpolate(lam: np.ndarray, values: np.ndarray, w: np.ndarray, mode: str) -> np.ndarray:

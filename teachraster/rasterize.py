@@ -11,7 +11,7 @@ from . import half_planes, span_tables
 from .barycentric import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import EdgeSetup, setup_edges
-from .interpolation import MODES, interpolate
+from .interpolation import MODES, blend, perspective_weights
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
@@ -122,30 +122,52 @@ def rasterize(
 
     coverage = np.zeros((height, width), dtype=bool)
     coverage[box.row0 : box.row1, box.col0 : box.col1] = local
-    rows, cols = np.nonzero(coverage)
+    rows, cols = np.nonzero(coverage)  # row-major, the order of every per-pixel array
     lam = barycentric_pixels(setup, rows, cols)
 
+    # All attributes travel as one (3, K) block, so the per-pixel work (weights, blend,
+    # scatter) runs once per fill rather than once per attribute.
+    packed, layout = _pack(tri.attrs)
     modes = MODES if trace else (interpolation,)
-    values = {
-        mode: {name: interpolate(lam, f, tri.w, mode) for name, f in tri.attrs.items()}
-        for mode in modes
-    }
-    depth_values = None if tri.z is None else interpolate(lam, tri.z, tri.w, "affine")
+    values = {mode: blend(_weights(lam, tri.w, mode), packed) for mode in modes}
+    depth_values = None if tri.z is None else blend(lam, tri.z)
 
-    def scatter(vals: np.ndarray) -> np.ndarray:
-        out = np.full((height, width, *vals.shape[1:]), np.nan)
-        out[rows, cols] = vals
-        return out
-
-    attrs = {name: scatter(v) for name, v in values[interpolation].items()}
-    depth = None if depth_values is None else scatter(depth_values)
+    image = np.full((height, width, packed.shape[1]), np.nan)
+    image[coverage] = values[interpolation]
+    attrs = _unpack(image, layout)
+    depth = None
+    if depth_values is not None:
+        depth = np.full((height, width), np.nan)
+        depth[coverage] = depth_values
     fill_trace = None
     if trace:
         fill_trace = _record(
             tri, setup, box, method, interpolation, subpixel_bits, (width, height),
-            culled, local, algo_trace, lam, values, depth_values,
+            culled, local, algo_trace, lam,
+            {mode: _unpack(v, layout) for mode, v in values.items()}, depth_values,
         )  # fmt: skip
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
+
+
+def _weights(lam: np.ndarray, w: np.ndarray, mode: str) -> np.ndarray:
+    return perspective_weights(lam, w) if mode == "perspective" else lam
+
+
+def _pack(attrs: Mapping[str, np.ndarray]):
+    """Stack (3,) and (3, k) attributes into one (3, K) block, remembering the layout."""
+    layout, blocks, start = {}, [], 0
+    for name, f in attrs.items():
+        block = f.reshape(3, -1)
+        layout[name] = start if f.ndim == 1 else slice(start, start + block.shape[1])
+        blocks.append(block)
+        start += block.shape[1]
+    packed = np.concatenate(blocks, axis=1) if blocks else np.zeros((3, 0))
+    return packed, layout
+
+
+def _unpack(block: np.ndarray, layout) -> dict[str, np.ndarray]:
+    """Views of each attribute in a (..., K) block: (...,) for scalars, (..., k) otherwise."""
+    return {name: block[..., where] for name, where in layout.items()}
 
 
 def _culled(setup: EdgeSetup, cull: str | None) -> bool:
@@ -219,11 +241,6 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         visit = first + np.arange(box.size, dtype=np.int32).reshape(box.shape)
         filled_at = np.where(local, visit, -1).astype(np.int32)
 
-    def local_image(vals: np.ndarray) -> np.ndarray:
-        out = np.full((*box.shape, *vals.shape[1:]), np.nan)
-        out[local] = vals
-        return out
-
     return FillTrace(
         method=method,
         interpolation=interpolation,
@@ -239,10 +256,10 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         top_left=setup.top_left,
         bbox=box,
         filled_at=filled_at,
-        barycentric=local_image(lam),
-        affine={k: local_image(v) for k, v in values["affine"].items()},
-        perspective={k: local_image(v) for k, v in values["perspective"].items()},
-        depth=None if depth_values is None else local_image(depth_values),
+        pixel_barycentric=lam,
+        pixel_affine=values["affine"],
+        pixel_perspective=values["perspective"],
+        pixel_depth=depth_values,
         span=algo_trace if method == "span" else None,
         halfplane=algo_trace if method == "halfplane" else None,
         setup=steps,

@@ -64,12 +64,15 @@ class FillTrace:
         Pixels whose centres lie in the bounding box, clipped to the image.
     filled_at : (rows, cols) int32
         Step index at which each bbox pixel was filled, -1 if never.
-    barycentric : (rows, cols, 3) float64
-        Screen-space weights of vertices 0, 1, 2; NaN outside coverage.
-    affine, perspective : mapping of name to (rows, cols[, k]) float64
-        Both interpolations of every attribute, NaN outside coverage.
-    depth : (rows, cols) float64 or None
-        Interpolated window depth, NaN outside coverage.
+    pixel_barycentric : (n, 3) float64
+        Screen-space weights of vertices 0, 1, 2 at each covered pixel, in row-major order
+        (the order of ``np.nonzero(filled_at >= 0)``); the ``barycentric`` property places
+        them in a bbox-local image.
+    pixel_affine, pixel_perspective : mapping of name to (n,) or (n, k) float64
+        Both interpolations of every attribute at each covered pixel (properties
+        ``affine`` and ``perspective`` give bbox-local images, NaN outside coverage).
+    pixel_depth : (n,) float64 or None
+        Interpolated window depth at each covered pixel (property ``depth``).
     span, halfplane : SpanTrace or HalfPlaneTrace or None
         The algorithm-specific record (the other one is None).
     setup : tuple of (kind, caption)
@@ -90,13 +93,44 @@ class FillTrace:
     top_left: np.ndarray
     bbox: BBox
     filled_at: np.ndarray
-    barycentric: np.ndarray
-    affine: Mapping[str, np.ndarray]
-    perspective: Mapping[str, np.ndarray]
-    depth: np.ndarray | None
+    pixel_barycentric: np.ndarray
+    pixel_affine: Mapping[str, np.ndarray]
+    pixel_perspective: Mapping[str, np.ndarray]
+    pixel_depth: np.ndarray | None
     span: SpanTrace | None
     halfplane: HalfPlaneTrace | None
     setup: tuple[tuple[str, str], ...]
+
+    # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
+    @property
+    def covered(self) -> np.ndarray:
+        """(rows, cols) bool: bbox pixels the triangle covers."""
+        return self.filled_at >= 0
+
+    def _local(self, values: np.ndarray) -> np.ndarray:
+        out = np.full((*self.bbox.shape, *values.shape[1:]), np.nan)
+        out[self.covered] = values
+        return out
+
+    @property
+    def barycentric(self) -> np.ndarray:
+        """(rows, cols, 3) screen-space barycentrics, NaN outside coverage."""
+        return self._local(self.pixel_barycentric)
+
+    @property
+    def affine(self) -> dict[str, np.ndarray]:
+        """Affine (screen-space) value of every attribute, bbox-local, NaN outside."""
+        return {k: self._local(v) for k, v in self.pixel_affine.items()}
+
+    @property
+    def perspective(self) -> dict[str, np.ndarray]:
+        """Perspective-correct value of every attribute, bbox-local, NaN outside."""
+        return {k: self._local(v) for k, v in self.pixel_perspective.items()}
+
+    @property
+    def depth(self) -> np.ndarray | None:
+        """Window depth, bbox-local, NaN outside coverage (None without z)."""
+        return None if self.pixel_depth is None else self._local(self.pixel_depth)
 
     # -- stepping -------------------------------------------------------------------
     @property
@@ -193,8 +227,8 @@ class FillTrace:
         n = int((self.filled_at >= 0).sum())
         if self.culled:
             return "triangle culled: nothing to interpolate"
-        names = list(self.affine)
-        if self.depth is not None:
+        names = list(self.pixel_affine)
+        if self.pixel_depth is not None:
             names.append("depth z (affine)")
         if not names:
             return f"{n} pixels covered; no attributes to interpolate"

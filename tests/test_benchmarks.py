@@ -1,0 +1,15 @@
+"""The benchmark script still runs (a smoke run; speed itself is never asserted)."""
+
+import importlib.util
+from pathlib import Path
+
+BENCH = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_fill.py"
+
+
+def test_fill_benchmark_quick_run_succeeds(capsys):
+    spec = importlib.util.spec_from_file_location("bench_fill", BENCH)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    assert bench.main(["--quick", "--repeat", "1"]) == 0  # non-zero means a failed check
+    out = capsys.readouterr().out
+    assert "same coverage" in out and "PASS" in out
