@@ -72,31 +72,65 @@ def split_point(sorted_xy: np.ndarray) -> float | None:
     return float((v2 - v1) / (v3 - v1) * (u3 - u1) + u1)
 
 
-def _column_bounds(setup: EdgeSetup, k: int, y: np.ndarray):
-    """Columns allowed by edge k on rows with centre y (units): (lo, hi, crossing in px).
+#: "No bound" for a column range: far beyond any image, and safe in int64 arithmetic.
+NO_BOUND = 2**62
 
-    Returns ``lo``/``hi`` as arrays where this edge gives a lower/upper bound (the other
-    is None), or ``(None, None, row_ok)`` for a horizontal edge.
+
+def edge_bounds(a, b, top_left, y, unit, half, exact: bool):
+    """Columns allowed by directed edges a→b on raster lines with centre y (internal units).
+
+    Solves the edge's tie-aware test ``E >= 0`` (top-left) or ``E > 0`` for the column j
+    of the pixel centre ``X = j * unit + half`` on each row. All arguments broadcast, so
+    one triangle's edge over many rows and many triangles' edges at once work alike.
+
+    Returns
+    -------
+    lo, hi : int64 arrays
+        The edge allows ``lo <= j <= hi``; an edge going up (dy < 0, inside on its right)
+        gives ``lo``, one going down gives ``hi``; the other is +-NO_BOUND.
+    ok : bool array
+        False only on the line of a horizontal edge whose tie excludes the whole row.
+    crossing : float array
+        Where the row's centre line crosses the edge, in pixels (NaN if horizontal).
     """
-    a, b = setup.p[k], setup.p[(k + 1) % 3]
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    K = dx * (y - a[1])  # E = K - dy * (X - a.x) on this row
-    unit, half, tl = setup.unit, setup.half, setup.top_left[k]
-    if dy == 0:
-        return None, None, (K >= 0) if tl else (K > 0)
-    crossing = (a[0] + K / dy) / float(unit)  # where the row's centre line meets the edge
-    if setup.exact:
-        bias = 0 if tl else 1  # E >= bias is the tie-aware test on integers
-        if dy > 0:  # E >= bias  <=>  X - a.x <= floor((K - bias) / dy): an upper bound
-            x_max = a[0] + (K - bias) // dy
-            return None, (x_max - half) // unit, crossing
-        # E >= bias  <=>  X - a.x >= ceil((bias - K) / -dy) = -((K - bias) // -dy): lower bound
-        x_min = a[0] - ((K - bias) // -dy)
-        return -((half - x_min) // unit), None, crossing
-    c = crossing - 0.5  # raw floats: centre j + 0.5 against the crossing
-    if dy > 0:
-        return None, (np.floor(c) if tl else np.ceil(c) - 1).astype(np.int64), crossing
-    return (np.ceil(c) if tl else np.floor(c) + 1).astype(np.int64), None, crossing
+    a, b = np.asarray(a), np.asarray(b)
+    ax, ay = a[..., 0], a[..., 1]
+    dx, dy = b[..., 0] - ax, b[..., 1] - ay
+    K = dx * (y - ay)  # on this row, E = K - dy * (X - a.x)
+    flat = dy == 0
+    safe = np.where(flat, 1, dy)
+    crossing = np.where(flat, np.nan, (ax + K / safe) / float(unit))
+    if exact:
+        bias = np.where(top_left, 0, 1)  # on integers, E > 0 is E >= 1
+        # dy > 0: E >= bias  <=>  X - a.x <= floor((K - bias) / dy)        (upper bound)
+        x_max = ax + (K - bias) // safe
+        # dy < 0: E >= bias  <=>  X - a.x >= ceil((K - bias) / dy)
+        #                                  = -((K - bias) // -dy)          (lower bound)
+        x_min = ax - ((K - bias) // -safe)
+        hi = np.where(dy > 0, (x_max - half) // unit, NO_BOUND)
+        lo = np.where(dy < 0, -((half - x_min) // unit), -NO_BOUND)
+        ok = ~flat | (K >= bias)
+    else:  # raw floats: start from the crossing, then settle on E itself
+        c = np.where(flat, 0.0, crossing - 0.5)
+        hi = np.where(top_left, np.floor(c), np.ceil(c) - 1).astype(np.int64)
+        lo = np.where(top_left, np.ceil(c), np.floor(c) + 1).astype(np.int64)
+
+        def inside(j):  # the half-plane test, with the same float operations, at column j
+            e = K - dy * ((j * unit + half) - ax)
+            return np.where(top_left, e >= 0, e > 0)
+
+        # The rounded crossing can be a column off where the half-plane method's own
+        # rounding of E decides a tie; E is monotonic along the row, so stepping towards
+        # its verdict makes both methods agree even on unsnapped floats.
+        for _ in range(2):
+            hi = np.where(inside(hi), hi, hi - 1)
+            hi = np.where(inside(hi + 1), hi + 1, hi)
+            lo = np.where(inside(lo), lo, lo + 1)
+            lo = np.where(inside(lo - 1), lo - 1, lo)
+        hi = np.where(dy > 0, hi, NO_BOUND)
+        lo = np.where(dy < 0, lo, -NO_BOUND)
+        ok = ~flat | np.where(top_left, K >= 0, K > 0)
+    return lo, hi, ok, crossing
 
 
 def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTrace | None]:
@@ -114,15 +148,16 @@ def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTr
         active = (y >= min(a[1], b[1])) & (y <= max(a[1], b[1]))
         if not active.any():
             continue
-        low, high, extra = _column_bounds(setup, k, y[active])
-        if low is None and high is None:  # horizontal edge: whole row in or out
-            row_ok[active] &= extra
-        elif low is not None:
-            lo[active] = np.maximum(lo[active], low)
-            x_left[active] = np.maximum(x_left[active], extra)
-        else:
-            hi[active] = np.minimum(hi[active], high)
-            x_right[active] = np.minimum(x_right[active], extra)
+        low, high, ok, crossing = edge_bounds(
+            a, b, setup.top_left[k], y[active], setup.unit, setup.half, setup.exact
+        )
+        lo[active] = np.maximum(lo[active], low)
+        hi[active] = np.minimum(hi[active], high)
+        row_ok[active] &= ok  # a horizontal edge keeps or drops its whole row
+        if b[1] < a[1]:  # going up: the left end of the span
+            x_left[active] = np.maximum(x_left[active], crossing)
+        elif b[1] > a[1]:
+            x_right[active] = np.minimum(x_right[active], crossing)
     hi = np.where(row_ok, hi, lo - 1)  # a dropped row is an empty span
     cols = bbox.cols()
     covered = (cols[None, :] >= lo[:, None]) & (cols[None, :] <= hi[:, None])

@@ -1,0 +1,307 @@
+"""Depth mappings and depth-buffer precision: why distant surfaces z-fight (seed 003).
+
+Seed 003's z-buffer keeps, per pixel, the depth of the nearest fragment so far and warns that a
+"z-buffer can be inaccurate with few bits" ("aliasing on depth", z-buffer tearing). Which depth
+is stored matters as much as how many bits store it:
+
+- **view distance** ``z`` (> 0 in front of the eye) is what the seed's pseudo-code compares, but
+  it is *not* affine in screen space (seed 003: interpolate 1/z, not z), so GPUs do not store it;
+- seed 003's ``z' = n + f - f n / z`` (:func:`seed_depth`) is affine in ``1/z`` and therefore
+  affine in screen space, maps ``near -> near`` and ``far -> far`` and keeps the depth order;
+- the **window depth** of OpenGL, :func:`window_depth`, is the same hyperbola rescaled to
+  [0, 1]: ``(z' - n) / (f - n) = (f / (f - n)) (1 - n / z)``. This is what CONVENTIONS' ``z_win``
+  holds and what a real depth buffer stores;
+- :func:`linear_depth` ``(z - n) / (f - n)`` is the comparison case with even resolution.
+
+Because the hyperbola flattens out with distance, one step of a 16- or 24-bit buffer spans a
+width in ``z`` that grows like ``z**2`` (:func:`depth_resolution`): two surfaces a fixed
+distance apart are told apart near the camera and collapse to the same stored value far away,
+where they z-fight (:func:`fights`).
+
+>>> near, far = 0.1, 1000.0
+>>> fights([2.0, 500.0], [2.5, 500.5], near, far, "unorm16")
+array([False,  True])
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
+MAPPINGS = ("perspective", "linear")
+
+_UNORM_BITS = {"unorm24": 24, "unorm16": 16}
+
+
+def quantize(depth, fmt: str) -> np.ndarray:
+    """The value a depth buffer of format ``fmt`` stores for ``depth``, as float64.
+
+    Parameters
+    ----------
+    depth : array-like
+        Window depths, normally in [0, 1]; NaN (no fragment) stays NaN.
+    fmt : {"float64", "float32", "unorm24", "unorm16"}
+        ``float32`` rounds to the nearest float32 (``GL_DEPTH_COMPONENT32F``). ``unormB`` stores
+        the integer ``round(d (2**B - 1))`` (round half to even) and reads back that integer
+        divided by ``2**B - 1`` (``GL_DEPTH_COMPONENT24`` / ``16``); a unorm buffer cannot
+        hold anything outside [0, 1], so depth is clamped to [0, 1] first, as GL does for
+        fixed-point depth buffers. ``float64`` returns a copy unchanged.
+
+    Returns
+    -------
+    float64 ndarray, same shape as ``depth``
+        Always a new array, 0-d for a scalar (the caller may write into it).
+
+    Examples
+    --------
+    >>> quantize([0.25, 1.0, np.nan], "unorm16")       # 0.25 * 65535 = 16383.75 -> 16384
+    array([0.250004, 1.      ,      nan])
+    >>> quantize([0.1], "float32") - 0.1
+    array([1.49...e-09])
+    """
+    if fmt == "float64":
+        return np.array(depth, dtype=np.float64)
+    d = np.asarray(depth, dtype=np.float64)
+    if fmt == "float32":
+        return d.astype(np.float32).astype(np.float64)
+    if fmt not in _UNORM_BITS:
+        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    scale = float(2 ** _UNORM_BITS[fmt] - 1)
+    # In place on one fresh array: this runs once per fragment batch in the z-buffer, so avoid
+    # temporaries. rint rounds half to even; NaN passes through clip and rint unchanged.
+    out = np.empty(d.shape)
+    np.clip(d, 0.0, 1.0, out=out)
+    out *= scale
+    np.rint(out, out=out)
+    out /= scale
+    return out
+
+
+def window_depth(z_view, near: float, far: float) -> np.ndarray:
+    """OpenGL window depth in [0, 1] of points at view distance ``z_view`` (near -> 0, far -> 1).
+
+    The perspective projection (``glFrustum`` / ``gluPerspective``) gives NDC depth
+    ``(f + n)/(f - n) - 2 f n / ((f - n) z)``; the viewport's ``z/2 + 1/2`` (CONVENTIONS) turns
+    that into ``(f / (f - n)) (1 - n / z)``.
+
+    Parameters
+    ----------
+    z_view : array-like
+        Distance in front of the eye along the view axis (> 0; NaN passes through). Points
+        nearer than ``near`` give negative depth and points beyond ``far`` depth above 1: the
+        near and far clip planes remove them.
+    near, far : float
+        Clip-plane distances, 0 < near < far.
+
+    Returns
+    -------
+    float64 ndarray
+
+    Examples
+    --------
+    >>> window_depth([0.5, 1.0, 2.0], 0.5, 2.0)
+    array([0.    , 0.6667, 1.    ])
+    """
+    near, far = _planes(near, far, positive=True)
+    z = _distances("z_view", z_view, positive=True)
+    # Written as (1 - n/z) / (1 - n/f): mathematically f (z - n) / (z (f - n)), but in floating
+    # point every step is monotonic in z, so depth order is never reversed by rounding, and
+    # z = near gives exactly 0 and z = far exactly 1 (same expression above and below the bar).
+    return (1.0 - near / z) / (1.0 - near / far)
+
+
+def seed_depth(z, near: float, far: float) -> np.ndarray:
+    """Seed 003's ``z' = n + f - f n / z``: the perspective depth in view-distance units.
+
+    ``z'`` is affine in ``1/z``, so it may be interpolated affinely in screen space (seed 003,
+    eq. 12), unlike ``z`` itself; it maps near to near and far to far and preserves order.
+
+    Parameters
+    ----------
+    z : array-like
+        View distances (> 0).
+    near, far : float
+        0 < near < far.
+
+    Examples
+    --------
+    >>> seed_depth([1.0, 2.0, 4.0], 1.0, 4.0)      # 5 - 4/z
+    array([1., 3., 4.])
+    """
+    near, far = _planes(near, far, positive=True)
+    z = _distances("z", z, positive=True)
+    # n + (f - n) * window_depth equals n + f - fn/z exactly in real numbers; in floating point
+    # it inherits window_depth's monotonicity and gives exactly n at z = n (and f at z = f up
+    # to one rounding of n + (f - n)), where the literal formula drifts by a few ulps.
+    return near + (far - near) * window_depth(z, near, far)
+
+
+def linear_depth(z, near: float, far: float) -> np.ndarray:
+    """``(z - near) / (far - near)``: depth linear in view distance, the even-resolution baseline.
+
+    Parameters
+    ----------
+    z : array-like
+        View distances.
+    near, far : float
+        near < far (near may be 0 or negative: this is also an orthographic camera's depth).
+
+    Examples
+    --------
+    >>> linear_depth([1.0, 2.5, 4.0], 1.0, 4.0)
+    array([0. , 0.5, 1. ])
+    """
+    near, far = _planes(near, far, positive=False)
+    z = _distances("z", z, positive=False)
+    return (z - near) / (far - near)
+
+
+def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "perspective"):
+    """Smallest change in view distance at ``z`` that changes the stored depth (to first order).
+
+    One step of the buffer, ``step(d)``, divided by how fast the mapped depth ``d(z)`` moves:
+    ``step / |d'(z)|``. Surfaces closer together than this tend to store the same value and
+    z-fight (seed 003's depth aliasing).
+
+    - ``perspective`` (:func:`window_depth`): ``d' = f n / ((f - n) z**2)``, so with a fixed step
+      the resolution grows like ``z**2``;
+    - ``linear`` (:func:`linear_depth`): ``d' = 1 / (f - n)``, the same everywhere.
+
+    The step is ``1 / (2**B - 1)`` for ``unormB`` and the gap to the next float
+    (``np.spacing``) at the stored value for ``float32`` / ``float64``, so floats resolve more
+    finely near depth 0 than near 1.
+
+    Parameters
+    ----------
+    z : array-like
+        View distances (> 0 for the perspective mapping).
+    near, far : float
+        Clip planes.
+    fmt : {"float64", "float32", "unorm24", "unorm16"}
+        Depth buffer format.
+    mapping : {"perspective", "linear"}
+        Which depth is stored.
+
+    Returns
+    -------
+    float64 ndarray
+        Distance in the units of ``z``.
+
+    Examples
+    --------
+    >>> depth_resolution([2.0, 500.0], 0.1, 1000.0, "unorm16")
+    array([6.1e-04, 3.81e+01])
+    >>> depth_resolution([2.0, 500.0], 0.1, 1000.0, "unorm16", mapping="linear")
+    array([0.0153, 0.0153])
+    """
+    map_depth, positive = _mapping(mapping)
+    near, far = _planes(near, far, positive=positive)
+    z = _distances("z", z, positive=positive)
+    if fmt not in DEPTH_FORMATS:
+        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    if mapping == "perspective":
+        slope = near / ((1.0 - near / far) * z * z)  # = f n / ((f - n) z**2), as window_depth
+    else:
+        slope = np.full_like(z, 1.0 / (far - near))
+    return _step(map_depth(z, near, far), fmt) / slope
+
+
+def fights(z_a, z_b, near: float, far: float, fmt: str, mapping: str = "perspective"):
+    """Predict z-fighting: True where two different distances store equal (or swapped) depths.
+
+    When two surfaces at ``z_a != z_b`` store the same depth, the depth test (strictly smaller
+    wins, CONVENTIONS) cannot tell which is in front, and rounding of the interpolated depth
+    across the triangles decides pixel by pixel: the stripes of seed 003's "z-buffer tearing".
+    Equal distances are a tie, not a precision effect, and give False; so does NaN.
+
+    Parameters
+    ----------
+    z_a, z_b : array-like
+        View distances of the two surfaces at the same pixels (broadcast together).
+    near, far, fmt, mapping
+        As for :func:`depth_resolution`.
+
+    Returns
+    -------
+    bool ndarray
+
+    Examples
+    --------
+    >>> fights([100.0, 100.0], [100.5, 100.5], 0.1, 1000.0, "unorm24")
+    array([False, False])
+    >>> fights([100.0], [100.5], 0.1, 1000.0, "unorm16")
+    array([ True])
+    """
+    map_depth, positive = _mapping(mapping)
+    near, far = _planes(near, far, positive=positive)
+    a = _distances("z_a", z_a, positive=positive)
+    b = _distances("z_b", z_b, positive=positive)
+    try:
+        a, b = np.broadcast_arrays(a, b)
+    except ValueError:
+        raise ValueError(
+            f"z_a and z_b must broadcast together, got {a.shape} and {b.shape}"
+        ) from None
+    if fmt not in DEPTH_FORMATS:
+        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    qa = quantize(map_depth(a, near, far), fmt)
+    qb = quantize(map_depth(b, near, far), fmt)
+    real = ~(np.isnan(a) | np.isnan(b)) & (a != b)
+    # Both mappings and quantisation are monotonic, so an inversion should never happen; it is
+    # checked anyway, because a swapped order would be as visible as a tie.
+    wrong = (qa == qb) | (np.sign(qa - qb) != np.sign(a - b))
+    return real & wrong
+
+
+# -- helpers ----------------------------------------------------------------------------------
+def _step(d: np.ndarray, fmt: str) -> np.ndarray:
+    """One step of the stored depth at ``d``: the gap between neighbouring storable values."""
+    if fmt in _UNORM_BITS:
+        return np.full_like(d, 1.0 / (2 ** _UNORM_BITS[fmt] - 1))
+    dtype = np.float32 if fmt == "float32" else np.float64
+    # np.spacing is signed (negative below 0); the step size is its magnitude.
+    return np.abs(np.spacing(d.astype(dtype))).astype(np.float64)
+
+
+def _mapping(mapping: str):
+    """The depth function for ``mapping`` and whether it needs z > 0."""
+    if mapping == "perspective":
+        return window_depth, True
+    if mapping == "linear":
+        return linear_depth, False
+    raise ValueError(f"mapping must be one of {MAPPINGS}, got {mapping!r}")
+
+
+def _planes(near, far, *, positive: bool) -> tuple[float, float]:
+    """Validated ``near`` and ``far`` as floats; errors name the argument."""
+    out = []
+    for name, value in (("near", near), ("far", far)):
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            raise TypeError(f"{name} must be a real number, got {value!r}") from None
+        if not np.isfinite(v):
+            raise ValueError(f"{name} must be finite, got {v}")
+        out.append(v)
+    n, f = out
+    if positive and n <= 0:
+        raise ValueError(
+            f"near must be > 0 for a perspective depth (1/z blows up at the eye), got {n}"
+        )
+    if f <= n:
+        raise ValueError(f"far must be > near, got near={n}, far={f}")
+    return n, f
+
+
+def _distances(name: str, z, *, positive: bool) -> np.ndarray:
+    """``z`` as a float64 array; with ``positive``, every non-NaN value must be > 0."""
+    try:
+        arr = np.asarray(z, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be numeric array-like, got {z!r}") from None
+    if positive and (arr <= 0).any():
+        raise ValueError(
+            f"{name} must be > 0 (in front of the eye); a point at or behind the eye has no "
+            f"perspective depth -- clip against the near plane first. Got min {np.nanmin(arr)}"
+        )
+    return arr
