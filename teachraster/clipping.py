@@ -1,0 +1,151 @@
+"""Homogeneous clipping against the near and far planes, before the divide by w.
+
+A vertex behind the eye has w < 0; dividing by it would mirror the vertex through the
+eye, and a vertex near w = 0 would be thrown towards infinity. So, as OpenGL does, each
+triangle is clipped in clip space against ``-w <= z <= w`` (Sutherland-Hodgman), where
+everything is still linear: a new vertex on an edge is ``v0 + t (v1 - v0)`` with
+``t = d0 / (d0 - d1)`` for the signed distances d to the plane, and its attributes are
+interpolated with the same t (attributes are linear in clip space, which is exactly why
+perspective-correct interpolation later divides by w). x and y are not clipped: the
+bounding box does that in screen space (a guard band).
+
+For robustness with hand-made clip coordinates (not from a projection matrix) a third
+plane ``w >= W_MIN`` keeps any vertex exactly on the eye plane (w = 0, z = 0, which
+satisfies -w <= z <= w) away from the divide.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Smallest w a clipped vertex may have (see the module docstring).
+W_MIN = 1e-12
+
+#: Planes as coefficient vectors: d = plane · (x, y, z, w); inside when d >= 0.
+PLANES = {
+    "near": np.array([0.0, 0.0, 1.0, 1.0]),  # z + w >= 0
+    "far": np.array([0.0, 0.0, -1.0, 1.0]),  # w - z >= 0
+}
+
+INSIDE, CLIPPED, DROPPED = 0, 1, 2
+
+
+def _distances(v: np.ndarray) -> np.ndarray:
+    """(..., 3) signed distances to near, far and the w = W_MIN plane."""
+    return np.stack([v[..., 2] + v[..., 3], v[..., 3] - v[..., 2], v[..., 3] - W_MIN], axis=-1)
+
+
+def classify(clip: np.ndarray) -> np.ndarray:
+    """Per triangle: INSIDE (no plane cuts it), DROPPED (wholly outside one plane), CLIPPED.
+
+    >>> classify(np.array([[[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]],
+    ...                    [[0, 0, -3, 1], [1, 0, -3, 1], [0, 1, -3, 1]],
+    ...                    [[0, 0, -3, 1], [1, 0, 0, 1], [0, 1, 0, 1]]]))
+    array([0, 2, 1], dtype=int8)
+    """
+    d = _distances(clip)  # (N, 3 vertices, 3 planes)
+    inside = d >= 0
+    status = np.full(len(clip), CLIPPED, dtype=np.int8)
+    status[inside.all(axis=(1, 2))] = INSIDE
+    status[(~inside).all(axis=1).any(axis=1)] = DROPPED
+    return status
+
+
+def clip_polygon(poly: np.ndarray, attrs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Sutherland-Hodgman: clip one convex polygon (n, 4) and its attributes (n, k).
+
+    Returns the clipped polygon and its attributes (possibly with 0 vertices).
+
+    >>> tri = np.array([[0.0, 0, -3, 1], [0, 0, 0, 1], [1, 0, 0, 1]])
+    >>> p, _ = clip_polygon(tri, np.zeros((3, 0)))
+    >>> len(p), bool((p[:, 2] + p[:, 3] >= -1e-12).all())
+    (4, True)
+    """
+    for k in range(3):
+        if len(poly) == 0:
+            break
+        d = _distances(poly)[:, k]
+        out_v, out_a = [], []
+        n = len(poly)
+        for i in range(n):
+            j = (i + 1) % n
+            if d[i] >= 0:
+                out_v.append(poly[i])
+                out_a.append(attrs[i])
+            if (d[i] >= 0) != (d[j] >= 0):  # the edge crosses the plane: add the crossing
+                t = d[i] / (d[i] - d[j])
+                out_v.append(poly[i] + t * (poly[j] - poly[i]))
+                out_a.append(attrs[i] + t * (attrs[j] - attrs[i]))
+        poly = np.array(out_v).reshape(-1, 4)
+        attrs = np.array(out_a).reshape(len(poly), attrs.shape[1])
+    return poly, attrs
+
+
+@dataclass(frozen=True)
+class ClipResult:
+    """Triangles after clipping, ready for the viewport transform.
+
+    Attributes
+    ----------
+    clip : (M, 3, 4) float64
+        Output triangles (unchanged ones first keep their order with clipped pieces in
+        place: output order follows input order).
+    attrs : (M, 3, k) float64
+    parent : (M,) int
+        Input triangle each output triangle came from.
+    status : (N,) int8
+        Per input triangle: 0 inside, 1 clipped, 2 dropped.
+    polygons : tuple of (n, 4) arrays
+        The clipped polygon of each CLIPPED input triangle, in input order (for the trace).
+    """
+
+    clip: np.ndarray
+    attrs: np.ndarray
+    parent: np.ndarray
+    status: np.ndarray
+    polygons: tuple[np.ndarray, ...]
+
+
+def clip_triangles(clip: np.ndarray, attrs: np.ndarray, force: bool = False) -> ClipResult:
+    """Clip triangles (N, 3, 4) with attributes (N, 3, k) against near and far.
+
+    Only triangles that a plane actually cuts go through the (per-polygon) clipper;
+    ``force=True`` sends every triangle through it, for comparison.
+    """
+    status = classify(clip)
+    todo = np.flatnonzero(status != DROPPED) if force else np.flatnonzero(status == CLIPPED)
+    pieces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+    polygons = []
+    for t in todo:
+        poly, pattrs = clip_polygon(clip[t], attrs[t])
+        if status[t] == CLIPPED:
+            polygons.append(poly)
+        # A convex polygon becomes a fan of triangles around its first vertex, keeping
+        # the winding (and so the facing) of the original triangle.
+        fan = [(0, i, i + 1) for i in range(1, len(poly) - 1)]
+        pieces[int(t)] = (poly[fan].reshape(-1, 3, 4), pattrs[fan].reshape(-1, 3, attrs.shape[2]))
+    out_clip, out_attrs, parent = [], [], []
+    keep = status == INSIDE
+    if not pieces:  # the common case: no triangle needed clipping
+        idx = np.flatnonzero(keep)
+        return ClipResult(clip[idx], attrs[idx], idx, status, tuple(polygons))
+    for t in range(len(clip)):
+        if int(t) in pieces:
+            c, a = pieces[int(t)]
+        elif keep[t]:
+            c, a = clip[t : t + 1], attrs[t : t + 1]
+        else:
+            continue
+        out_clip.append(c)
+        out_attrs.append(a)
+        parent.append(np.full(len(c), t))
+    k = attrs.shape[2]
+    return ClipResult(
+        np.concatenate(out_clip) if out_clip else np.zeros((0, 3, 4)),
+        np.concatenate(out_attrs) if out_attrs else np.zeros((0, 3, k)),
+        np.concatenate(parent) if parent else np.zeros(0, dtype=np.int64),
+        status,
+        tuple(polygons),
+    )
