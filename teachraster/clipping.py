@@ -11,7 +11,9 @@ bounding box does that in screen space (a guard band).
 
 For robustness with hand-made clip coordinates (not from a projection matrix) a third
 plane ``w >= W_MIN`` keeps any vertex exactly on the eye plane (w = 0, z = 0, which
-satisfies -w <= z <= w) away from the divide.
+satisfies -w <= z <= w) away from the divide. And like a GPU's guard band, optional
+planes ``|x|, |y| <= guard * w`` far outside the image keep window coordinates within the
+range where the fixed-point edge functions are exact; they cut only invisible parts.
 """
 
 from __future__ import annotations
@@ -23,21 +25,29 @@ import numpy as np
 #: Smallest w a clipped vertex may have (see the module docstring).
 W_MIN = 1e-12
 
-#: Planes as coefficient vectors: d = plane · (x, y, z, w); inside when d >= 0.
-PLANES = {
-    "near": np.array([0.0, 0.0, 1.0, 1.0]),  # z + w >= 0
-    "far": np.array([0.0, 0.0, -1.0, 1.0]),  # w - z >= 0
-}
-
 INSIDE, CLIPPED, DROPPED = 0, 1, 2
 
 
-def _distances(v: np.ndarray) -> np.ndarray:
-    """(..., 3) signed distances to near, far and the w = W_MIN plane."""
-    return np.stack([v[..., 2] + v[..., 3], v[..., 3] - v[..., 2], v[..., 3] - W_MIN], axis=-1)
+def planes(guard: float | None = None) -> np.ndarray:
+    """Clip planes as rows (a, b, c, d): inside where a x + b y + c z + d w >= 0.
+
+    Near ``z + w >= 0``, far ``w - z >= 0``, the eye plane ``w >= W_MIN`` (the offset is
+    applied in :func:`distances`), then the four guard-band planes if ``guard`` is given.
+    """
+    rows = [[0, 0, 1, 1], [0, 0, -1, 1], [0, 0, 0, 1]]
+    if guard is not None:
+        rows += [[-1, 0, 0, guard], [1, 0, 0, guard], [0, -1, 0, guard], [0, 1, 0, guard]]
+    return np.array(rows, dtype=np.float64)
 
 
-def classify(clip: np.ndarray) -> np.ndarray:
+def distances(v: np.ndarray, guard: float | None = None) -> np.ndarray:
+    """(..., P) signed distances of clip-space points (..., 4) to each plane."""
+    d = v @ planes(guard).T
+    d[..., 2] -= W_MIN
+    return d
+
+
+def classify(clip: np.ndarray, guard: float | None = None) -> np.ndarray:
     """Per triangle: INSIDE (no plane cuts it), DROPPED (wholly outside one plane), CLIPPED.
 
     >>> classify(np.array([[[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]],
@@ -45,7 +55,7 @@ def classify(clip: np.ndarray) -> np.ndarray:
     ...                    [[0, 0, -3, 1], [1, 0, 0, 1], [0, 1, 0, 1]]]))
     array([0, 2, 1], dtype=int8)
     """
-    d = _distances(clip)  # (N, 3 vertices, 3 planes)
+    d = distances(clip, guard)  # (N, 3 vertices, P planes)
     inside = d >= 0
     status = np.full(len(clip), CLIPPED, dtype=np.int8)
     status[inside.all(axis=(1, 2))] = INSIDE
@@ -53,7 +63,9 @@ def classify(clip: np.ndarray) -> np.ndarray:
     return status
 
 
-def clip_polygon(poly: np.ndarray, attrs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def clip_polygon(
+    poly: np.ndarray, attrs: np.ndarray, guard: float | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """Sutherland-Hodgman: clip one convex polygon (n, 4) and its attributes (n, k).
 
     Returns the clipped polygon and its attributes (possibly with 0 vertices).
@@ -63,10 +75,10 @@ def clip_polygon(poly: np.ndarray, attrs: np.ndarray) -> tuple[np.ndarray, np.nd
     >>> len(p), bool((p[:, 2] + p[:, 3] >= -1e-12).all())
     (4, True)
     """
-    for k in range(3):
+    for k in range(len(planes(guard))):
         if len(poly) == 0:
             break
-        d = _distances(poly)[:, k]
+        d = distances(poly, guard)[:, k]
         out_v, out_a = [], []
         n = len(poly)
         for i in range(n):
@@ -108,18 +120,20 @@ class ClipResult:
     polygons: tuple[np.ndarray, ...]
 
 
-def clip_triangles(clip: np.ndarray, attrs: np.ndarray, force: bool = False) -> ClipResult:
-    """Clip triangles (N, 3, 4) with attributes (N, 3, k) against near and far.
+def clip_triangles(
+    clip: np.ndarray, attrs: np.ndarray, guard: float | None = None, force: bool = False
+) -> ClipResult:
+    """Clip triangles (N, 3, 4) with attributes (N, 3, k) against near, far (and guard).
 
     Only triangles that a plane actually cuts go through the (per-polygon) clipper;
     ``force=True`` sends every triangle through it, for comparison.
     """
-    status = classify(clip)
+    status = classify(clip, guard)
     todo = np.flatnonzero(status != DROPPED) if force else np.flatnonzero(status == CLIPPED)
     pieces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
     polygons = []
     for t in todo:
-        poly, pattrs = clip_polygon(clip[t], attrs[t])
+        poly, pattrs = clip_polygon(clip[t], attrs[t], guard)
         if status[t] == CLIPPED:
             polygons.append(poly)
         # A convex polygon becomes a fan of triangles around its first vertex, keeping
