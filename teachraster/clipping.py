@@ -138,8 +138,9 @@ def clip_triangles(
             polygons.append(poly)
         # A convex polygon becomes a fan of triangles around its first vertex, keeping
         # the winding (and so the facing) of the original triangle.
-        fan = [(0, i, i + 1) for i in range(1, len(poly) - 1)]
-        pieces[int(t)] = (poly[fan].reshape(-1, 3, 4), pattrs[fan].reshape(-1, 3, attrs.shape[2]))
+        fan = np.array([(0, i, i + 1) for i in range(1, len(poly) - 1)], dtype=np.int64)
+        fan = fan.reshape(-1, 3)
+        pieces[int(t)] = (poly[fan], pattrs[fan])
     out_clip, out_attrs, parent = [], [], []
     keep = status == INSIDE
     if not pieces:  # the common case: no triangle needed clipping

@@ -23,6 +23,7 @@ import numpy as np
 from .batch import rasterize_batch
 from .clipping import CLIPPED, DROPPED, clip_triangles
 from .depth import DEPTH_FORMATS, quantize
+from .interpolation import MODES
 from .plan import Effect, Plan, parse_force
 from .rasterize import CULL, _check_choice, _check_size
 from .snapping import SUBPIXEL_BITS, check_bits
@@ -122,6 +123,7 @@ def render(
     depth_test: bool = True,
     cull: str | None = None,
     depth_format: str = "float64",
+    interpolation: str = "perspective",
     force=None,
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
@@ -142,6 +144,9 @@ def render(
         Remove back-facing (clockwise on screen) or front-facing triangles.
     depth_format : {"float64", "float32", "unorm24", "unorm16"}
         What the depth buffer stores; fewer bits show z-fighting.
+    interpolation : {"perspective", "affine"}
+        Perspective-correct attributes (GLSL ``smooth``, the default) or plain
+        screen-space ones (``noperspective``), to show the difference.
     force : None, "all" or names from ``teachraster.plan.FORCEABLE``
         Run these effects everywhere, even where the plan says they change nothing.
     trace : bool
@@ -165,6 +170,7 @@ def render(
     width, height = _check_size("width", width), _check_size("height", height)
     _check_choice("cull", cull, CULL)
     _check_choice("depth_format", depth_format, DEPTH_FORMATS)
+    _check_choice("interpolation", interpolation, MODES)
     check_bits(subpixel_bits)
     forced = parse_force(force)
     n_in, k = len(clip), attrs.shape[2]
@@ -237,14 +243,20 @@ def render(
 
     # 6. attributes, perspective-correct, at visible pixels only (or every fragment if forced)
     unequal = ~np.all(w == w[:, :1], axis=1)
+    if interpolation == "affine":
+        unequal[:] = False
     where = np.flatnonzero(winner >= 0)
     shade = np.arange(len(frags.tri)) if "attributes" in forced else winner[where]
-    values = _interpolate(frags, shade, w, clipped.attrs, unequal, "perspective" in forced)
+    divide_all = "perspective" in forced and interpolation == "perspective"
+    values = _interpolate(frags, shade, w, clipped.attrs, unequal, divide_all)
     if "attributes" in forced:
         values = values[winner[where]]
-    n_persp = int(unequal.sum()) if "perspective" not in forced else m_tris
+    n_persp = m_tris if divide_all else int(unequal.sum())
     if k == 0:
         why = "no attributes given: nothing to interpolate"
+    elif interpolation == "affine":
+        why = "interpolation='affine' asked: screen-space values, no divide by w"
+        n_persp = 0
     elif "perspective" in forced:
         why = "divide by w at every pixel, even where all three w are equal"
     elif n_persp:

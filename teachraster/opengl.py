@@ -1,0 +1,447 @@
+"""Render clip-space triangles with a real GPU rasteriser (OpenGL) to check teachraster against.
+
+This optional module draws the same clip-space triangles as :func:`teachraster.render` with
+OpenGL, through `moderngl <https://moderngl.readthedocs.io>`_ and a headless EGL context (on
+machines without a GPU that is Mesa's llvmpipe, a software rasteriser that, like Direct3D and
+teachraster, snaps vertices to 1/256 px). It reads back float32 render targets: the triangle id
+(``gl_PrimitiveID``), every attribute interpolated both as a GLSL ``smooth`` (perspective-correct)
+and a ``noperspective`` (affine) varying, and the window depth ``gl_FragCoord.z``.
+
+The core package never imports this module, and importing it does not need moderngl: it is
+imported inside the functions, so :func:`gl_available` can report why OpenGL is missing.
+
+How the conventions are met
+---------------------------
+- **Rows and the fill rule.** GL's window has y up, row 0 at the bottom, and a top-left fill
+  rule in those coordinates. Flipping the read-back image to put row 0 at the top would turn
+  it into a *bottom*-left rule. Instead the vertex shader negates clip y and the rows are read
+  back unflipped: GL's window y is then exactly teachraster's y-down ``y_win``, GL row r is our
+  row r, and GL's top-left rule is ours.
+- **Winding.** After negating y, GL's signed area in its window coordinates equals
+  teachraster's ``E(v0, v1, v2)``, which is negative for our front faces (counter-clockwise on
+  screen). GL calls a positive area counter-clockwise, so ``glFrontFace(GL_CW)`` makes GL's
+  front faces ours, and ``cull="back"`` drops exactly what the conventions call back-facing.
+- **Depth.** A 32-bit float depth buffer (``GL_DEPTH_COMPONENT32F``), ``GL_LESS`` (strictly
+  nearer wins, ties keep the earlier triangle) and primitive order without the test. The
+  depth range is set to [0, 1/2] and ``2 * gl_FragCoord.z`` is reported: halving is exact in
+  floating point, so nothing changes except that a fragment on the far plane (depth 1) still
+  passes against the cleared value 1.0, as it does in teachraster where an empty pixel has no
+  depth at all.
+
+Examples
+--------
+Where OpenGL is available, GL covers exactly the pixels the core rasteriser does:
+
+>>> import numpy as np
+>>> import teachraster as tr
+>>> clip = np.array([[[-1, 1, 0, 1], [1, 1, 0, 1], [-1, -1, 0, 1]]], dtype=float)
+>>> ours = tr.rasterize(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 4, 4).coverage
+>>> ours.astype(int)          # the hypotenuse is a right edge: its centres are not covered
+array([[1, 1, 1, 0],
+       [1, 1, 0, 0],
+       [1, 0, 0, 0],
+       [0, 0, 0, 0]])
+>>> ok, why = gl_available()
+>>> not ok or bool((gl_render(clip, 4, 4).coverage == ours).all())
+True
+"""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["GLFrame", "GLRenderer", "gl_available", "gl_render"]
+
+#: Attribute components carried by one varying (a vec4).
+_CHUNK = 4
+#: vec4 attribute chunks per draw pass: 1 target (id, depth) + 2 per chunk <= 8 colour targets.
+_CHUNKS_PER_PASS = 3
+#: Triangle ids travel as float32, exact up to 2**24.
+_MAX_TRIANGLES = 2**24
+
+# OpenGL enums used through ctypes (moderngl has no 32-bit float depth buffer).
+_GL_RENDERBUFFER = 0x8D41
+_GL_FRAMEBUFFER = 0x8D40
+_GL_DEPTH_ATTACHMENT = 0x8D00
+_GL_DEPTH_COMPONENT32F = 0x8CAC
+_GL_FRAMEBUFFER_COMPLETE = 0x8CD5
+
+# Cached per process: creating an EGL context costs tens of milliseconds.
+_STATE: dict = {"status": None, "ctx": None, "gl": None, "programs": {}}
+
+
+@dataclass(frozen=True)
+class GLFrame:
+    """What OpenGL drew, read back from float32 render targets (row 0 at the top).
+
+    Attributes
+    ----------
+    triangle_id : (height, width) int64
+        Index of the triangle that wrote the pixel (``gl_PrimitiveID``), -1 where none did.
+    smooth : (height, width, k) float64
+        Attributes interpolated as GLSL ``smooth`` varyings (perspective-correct), NaN where
+        uncovered. ``k`` is 0 when no attributes were given.
+    noperspective : (height, width, k) float64
+        The same attributes as ``noperspective`` varyings (affine in screen space).
+    depth : (height, width) float64
+        Window depth ``gl_FragCoord.z`` in [0, 1], NaN where uncovered.
+    coverage : (height, width) bool
+        ``triangle_id >= 0``.
+    """
+
+    triangle_id: np.ndarray
+    smooth: np.ndarray
+    noperspective: np.ndarray
+    depth: np.ndarray
+    coverage: np.ndarray
+
+
+def gl_available() -> tuple[bool, str]:
+    """Whether an OpenGL 3.3 context can be created here, and the renderer or the reason not.
+
+    Tries to import moderngl and create a standalone (headless) EGL context. The answer and
+    the context are cached for the life of the process.
+
+    Returns
+    -------
+    (True, renderer) or (False, reason)
+        ``renderer`` is ``GL_RENDERER``, e.g. ``"llvmpipe (LLVM 15.0.6, 256 bits)"``.
+
+    Examples
+    --------
+    >>> ok, text = gl_available()
+    >>> isinstance(ok, bool) and isinstance(text, str)
+    True
+    """
+    if _STATE["status"] is None:
+        _STATE["status"] = _create_context()
+    return _STATE["status"]
+
+
+def _create_context() -> tuple[bool, str]:
+    try:
+        import moderngl
+    except ImportError as exc:
+        return False, f"moderngl is not installed ({exc}); pip install moderngl"
+    try:
+        ctx = moderngl.create_standalone_context(backend="egl", require=330)
+    except Exception as exc:  # glcontext raises plain Exceptions for missing EGL/drivers
+        return False, (
+            f"no OpenGL 3.3 context through headless EGL: {exc} (on Debian: apt-get install "
+            "libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libgbm1)"
+        )
+    try:
+        gl = _RawGL()
+    except OSError as exc:
+        ctx.release()
+        return False, f"OpenGL context created but raw GL entry points not found: {exc}"
+    _STATE["ctx"], _STATE["gl"] = ctx, gl
+    return True, str(ctx.info["GL_RENDERER"])
+
+
+def _context():
+    ok, why = gl_available()
+    if not ok:
+        raise RuntimeError(f"OpenGL is not available: {why}")
+    return _STATE["ctx"], _STATE["gl"]
+
+
+class _RawGL:
+    """The few GL calls moderngl does not offer, looked up through ``eglGetProcAddress``.
+
+    moderngl's depth buffers are 24-bit fixed point; the depth test must run on float32 like
+    the depth we compare against, so we attach a ``GL_DEPTH_COMPONENT32F`` renderbuffer
+    ourselves, and set the depth range (see the module docstring).
+    """
+
+    def __init__(self) -> None:
+        name = ctypes.util.find_library("EGL") or "libEGL.so.1"
+        egl = ctypes.CDLL(name)
+        egl.eglGetProcAddress.restype = ctypes.c_void_p
+        egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+        u, i, d = ctypes.c_uint, ctypes.c_int, ctypes.c_double
+
+        def fn(symbol: str, restype, *argtypes):
+            ptr = egl.eglGetProcAddress(symbol.encode())
+            if not ptr:
+                raise OSError(f"eglGetProcAddress({symbol!r}) returned NULL")
+            return ctypes.CFUNCTYPE(restype, *argtypes)(ptr)
+
+        self.gen_renderbuffers = fn("glGenRenderbuffers", None, i, ctypes.POINTER(u))
+        self.delete_renderbuffers = fn("glDeleteRenderbuffers", None, i, ctypes.POINTER(u))
+        self.bind_renderbuffer = fn("glBindRenderbuffer", None, u, u)
+        self.renderbuffer_storage = fn("glRenderbufferStorage", None, u, u, i, i)
+        self.framebuffer_renderbuffer = fn("glFramebufferRenderbuffer", None, u, u, u, u)
+        self.check_framebuffer_status = fn("glCheckFramebufferStatus", u, u)
+        self.depth_range = fn("glDepthRange", None, d, d)
+
+    def float_depth_buffer(self, width: int, height: int) -> int:
+        """Attach a new float32 depth renderbuffer to the bound framebuffer; return its name."""
+        name = ctypes.c_uint(0)
+        self.gen_renderbuffers(1, ctypes.byref(name))
+        self.bind_renderbuffer(_GL_RENDERBUFFER, name)
+        self.renderbuffer_storage(_GL_RENDERBUFFER, _GL_DEPTH_COMPONENT32F, width, height)
+        self.bind_renderbuffer(_GL_RENDERBUFFER, 0)
+        self.framebuffer_renderbuffer(
+            _GL_FRAMEBUFFER, _GL_DEPTH_ATTACHMENT, _GL_RENDERBUFFER, name.value
+        )
+        status = self.check_framebuffer_status(_GL_FRAMEBUFFER)
+        if status != _GL_FRAMEBUFFER_COMPLETE:
+            self.delete(name.value)
+            raise RuntimeError(f"framebuffer with a float32 depth buffer incomplete: {status:#x}")
+        return name.value
+
+    def delete(self, renderbuffer: int) -> None:
+        name = ctypes.c_uint(renderbuffer)
+        self.delete_renderbuffers(1, ctypes.byref(name))
+
+
+def _shaders(n_chunks: int) -> tuple[str, str]:
+    """GLSL 3.30 sources for a pass carrying ``n_chunks`` vec4 attribute chunks."""
+    chunks = range(n_chunks)
+    vs = ["#version 330", "in vec4 in_pos;"]
+    vs += [f"in vec4 in_a{c};\nsmooth out vec4 s{c};\nnoperspective out vec4 n{c};" for c in chunks]
+    vs += [
+        "void main() {",
+        # y negated: GL's bottom-up window rows become our top-down rows, unflipped, so its
+        # top-left rule is ours (module docstring). GL clips this in homogeneous space itself.
+        "    gl_Position = vec4(in_pos.x, -in_pos.y, in_pos.z, in_pos.w);",
+        *[f"    s{c} = in_a{c};\n    n{c} = in_a{c};" for c in chunks],
+        "}",
+    ]
+    fs = ["#version 330"]
+    fs += [f"smooth in vec4 s{c};\nnoperspective in vec4 n{c};" for c in chunks]
+    fs += ["layout(location = 0) out vec4 o_id_depth;"]
+    fs += [
+        f"layout(location = {1 + 2 * c}) out vec4 o_s{c};\n"
+        f"layout(location = {2 + 2 * c}) out vec4 o_n{c};"
+        for c in chunks
+    ]
+    fs += [
+        "void main() {",
+        # The depth range is [0, 1/2] (module docstring); doubling is exact.
+        "    o_id_depth = vec4(float(gl_PrimitiveID), 2.0 * gl_FragCoord.z, 0.0, 1.0);",
+        *[f"    o_s{c} = s{c};\n    o_n{c} = n{c};" for c in chunks],
+        "}",
+    ]
+    return "\n".join(vs) + "\n", "\n".join(fs) + "\n"
+
+
+def _program(ctx, n_chunks: int):
+    programs = _STATE["programs"]
+    if n_chunks not in programs:
+        vs, fs = _shaders(n_chunks)
+        programs[n_chunks] = ctx.program(vertex_shader=vs, fragment_shader=fs)
+    return programs[n_chunks]
+
+
+def _check_inputs(clip, width, height, attrs, cull):
+    for name, value in (("width", width), ("height", height)):
+        if isinstance(value, bool) or not isinstance(value, int | np.integer) or value <= 0:
+            raise ValueError(f"{name} must be a positive int, got {value!r}")
+    clip = np.asarray(clip, dtype=np.float64)
+    if clip.ndim != 3 or clip.shape[1:] != (3, 4):
+        raise ValueError(f"clip must have shape (N, 3, 4), got {clip.shape}")
+    if not np.isfinite(clip).all():
+        raise ValueError("clip contains NaN or infinity")
+    if len(clip) > _MAX_TRIANGLES:
+        raise ValueError(f"at most {_MAX_TRIANGLES} triangles (ids are exact float32 values)")
+    n = len(clip)
+    if attrs is None:
+        attrs = np.zeros((n, 3, 0))
+    attrs = np.asarray(attrs, dtype=np.float64)
+    if attrs.ndim == 2:
+        attrs = attrs[..., None]
+    if attrs.ndim != 3 or attrs.shape[:2] != (n, 3):
+        raise ValueError(
+            f"attrs must have shape (N, 3) or (N, 3, k) with N = {n}, got {attrs.shape}"
+        )
+    if cull not in (None, "back", "front"):
+        raise ValueError(f"cull must be None, 'back' or 'front'; got {cull!r}")
+    return clip, int(width), int(height), attrs
+
+
+class GLRenderer:
+    """One scene uploaded to OpenGL, ready to be drawn and read back as often as wanted.
+
+    :func:`gl_render` is this in one call. Keeping the renderer lets a benchmark time the
+    draw and read-back apart from the upload (buffers, vertex arrays, render targets).
+
+    Parameters
+    ----------
+    clip, width, height, attrs, depth_test, cull
+        As in :func:`gl_render`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> clip = np.array([[[-1, 1, 0, 1], [1, 1, 0, 1], [-1, -1, 0, 1]]], dtype=float)
+    >>> if gl_available()[0]:
+    ...     with GLRenderer(clip, 4, 4) as gl:
+    ...         frames = [gl.render() for _ in range(3)]   # upload once, draw three times
+    ...     print([int(f.coverage.sum()) for f in frames])
+    ... else:
+    ...     print([6, 6, 6])
+    [6, 6, 6]
+    """
+
+    def __init__(self, clip, width, height, *, attrs=None, depth_test=True, cull=None):
+        clip, self.width, self.height, attrs = _check_inputs(clip, width, height, attrs, cull)
+        self.ctx, self._gl = _context()
+        self.depth_test, self.cull, self.k = bool(depth_test), cull, attrs.shape[2]
+        self._resources: list = []
+        self._depth_rb: int | None = None
+        try:
+            self._upload(clip, attrs)
+        except BaseException:
+            self.release()
+            raise
+
+    def _upload(self, clip: np.ndarray, attrs: np.ndarray) -> None:
+        ctx = self.ctx
+        n = len(clip)
+        pos = ctx.buffer(clip.astype("f4").tobytes())
+        self._resources.append(pos)
+        n_chunks = -(-self.k // _CHUNK)
+        padded = np.zeros((n, 3, n_chunks * _CHUNK), dtype="f4")
+        padded[..., : self.k] = attrs
+        chunk_buffers = []
+        for c in range(n_chunks):
+            buf = ctx.buffer(np.ascontiguousarray(padded[..., c * 4 : c * 4 + 4]).tobytes())
+            self._resources.append(buf)
+            chunk_buffers.append(buf)
+        # Passes of up to _CHUNKS_PER_PASS chunks; ids and depth come out of every pass alike.
+        groups = [
+            range(s, min(s + _CHUNKS_PER_PASS, n_chunks))
+            for s in range(0, n_chunks, _CHUNKS_PER_PASS)
+        ]
+        self._passes = []
+        for group in groups or [range(0)]:
+            prog = _program(ctx, len(group))
+            content = [(pos, "4f", "in_pos")]
+            content += [(chunk_buffers[c], "4f", f"in_a{j}") for j, c in enumerate(group)]
+            vao = ctx.vertex_array(prog, content)
+            self._resources.append(vao)
+            self._passes.append((vao, list(group)))
+        size = (self.width, self.height)
+        n_targets = 1 + 2 * max(len(g) for _, g in self._passes)
+        targets = [ctx.renderbuffer(size, 4, dtype="f4") for _ in range(n_targets)]
+        self._resources.extend(targets)
+        self.fbo = ctx.framebuffer(targets)
+        self._resources.append(self.fbo)
+        self.fbo.use()
+        self._depth_rb = self._gl.float_depth_buffer(self.width, self.height)
+        self.fbo.depth_mask = True  # moderngl assumes no depth writes without its own buffer
+        self._n_vertices = 3 * n
+
+    def draw(self, vao) -> None:
+        """Clear the targets and draw every triangle with one pass's vertex array."""
+        import moderngl
+
+        ctx = self.ctx
+        self.fbo.use()
+        self._gl.depth_range(0.0, 0.5)
+        flags = moderngl.NOTHING
+        if self.depth_test:
+            flags |= moderngl.DEPTH_TEST
+            ctx.depth_func = "<"  # strictly nearer wins; ties keep the earlier triangle
+        if self.cull is not None:
+            flags |= moderngl.CULL_FACE
+            ctx.front_face = "cw"  # with y negated, GL's clockwise is our counter-clockwise
+            ctx.cull_face = self.cull
+        ctx.enable_only(flags)
+        # -1 marks "no triangle" in the id target; the other targets are masked later.
+        self.fbo.clear(-1.0, -1.0, -1.0, -1.0, depth=1.0)
+        if self._n_vertices:
+            vao.render(moderngl.TRIANGLES, vertices=self._n_vertices)
+
+    def _read(self, attachment: int) -> np.ndarray:
+        out = np.empty((self.height, self.width, 4), dtype="f4")
+        self.fbo.read_into(out, components=4, attachment=attachment, dtype="f4")
+        return out  # GL row 0 is our row 0: no flip (module docstring)
+
+    def render(self) -> GLFrame:
+        """Draw all passes and read the targets back into a :class:`GLFrame`."""
+        h, w = self.height, self.width
+        smooth = np.full((h, w, self.k), np.nan)
+        nopersp = np.full((h, w, self.k), np.nan)
+        ids = depth = None
+        for vao, group in self._passes:
+            self.draw(vao)
+            id_depth = self._read(0)
+            if ids is None:
+                ids = id_depth[..., 0].astype(np.int64)
+                depth = id_depth[..., 1].astype(np.float64)
+            for j, c in enumerate(group):
+                lo, hi = c * _CHUNK, min(c * _CHUNK + _CHUNK, self.k)
+                smooth[..., lo:hi] = self._read(1 + 2 * j)[..., : hi - lo]
+                nopersp[..., lo:hi] = self._read(2 + 2 * j)[..., : hi - lo]
+        coverage = ids >= 0
+        ids[~coverage] = -1
+        depth[~coverage] = np.nan
+        smooth[~coverage] = np.nan
+        nopersp[~coverage] = np.nan
+        return GLFrame(
+            triangle_id=ids,
+            smooth=smooth,
+            noperspective=nopersp,
+            depth=depth,
+            coverage=coverage,
+        )
+
+    def release(self) -> None:
+        """Free the GL objects of this scene (the cached context and programs stay)."""
+        if self._depth_rb is not None:
+            self._gl.delete(self._depth_rb)
+            self._depth_rb = None
+        for obj in reversed(self._resources):
+            obj.release()
+        self._resources.clear()
+
+    def __enter__(self) -> GLRenderer:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.release()
+
+
+def gl_render(
+    clip, width: int, height: int, *, attrs=None, depth_test: bool = True, cull: str | None = None
+) -> GLFrame:
+    """Draw clip-space triangles with OpenGL and read back ids, attributes and depth.
+
+    The vertices go straight to ``gl_Position`` (with y negated, see the module docstring),
+    so GL clips in homogeneous space itself, exactly the input of :func:`teachraster.render`.
+
+    Parameters
+    ----------
+    clip : (N, 3, 4) array-like
+        Clip-space vertices (x, y, z, w); sent to GL as float32.
+    width, height : int
+        Image size in pixels.
+    attrs : (N, 3) or (N, 3, k) array-like, optional
+        Per-vertex attributes, interpolated both as ``smooth`` and ``noperspective``
+        varyings (float32). Any k: four components per varying, several passes when needed.
+    depth_test : bool
+        Nearer fragment wins (strictly smaller depth; ties keep the earlier triangle), with a
+        float32 depth buffer. Without it later triangles overwrite earlier ones.
+    cull : {None, "back", "front"}
+        Drop triangles that are back-facing (clockwise on screen) or front-facing.
+
+    Returns
+    -------
+    GLFrame
+
+    Raises
+    ------
+    RuntimeError
+        When no OpenGL context can be created (:func:`gl_available` says why).
+    ValueError
+        On malformed input.
+    """
+    with GLRenderer(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull) as gl:
+        return gl.render()

@@ -1,0 +1,51 @@
+"""The painter's algorithm (seed 003): sort triangles far to near, draw without a z-buffer.
+
+It needs no depth buffer, but one depth per *triangle* cannot order triangles that
+intersect or overlap cyclically, which is where the z-buffer's per-pixel test wins.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .render import Frame
+from .render import render as render_clip
+from .viewport import to_window
+
+KEYS = ("max", "mean", "min")
+
+
+def painter_order(clip, key: str = "max") -> np.ndarray:
+    """Drawing order, far to near, by each triangle's ``key`` window depth.
+
+    Triangles with a vertex at or behind the eye (w <= 0) are sorted by their in-front
+    vertices only (clipping handles the rest); ties keep the input order.
+
+    >>> painter_order([[[0, 0, 0.5, 1]] * 3, [[0, 0, -0.5, 1]] * 3, [[0, 0, 0.9, 1]] * 3])
+    array([2, 0, 1])
+    """
+    if key not in KEYS:
+        raise ValueError(f"key must be one of {KEYS}, got {key!r}")
+    clip = np.asarray(clip, dtype=np.float64)
+    front = clip[..., 3] > 0
+    z = np.where(front, to_window(np.where(front[..., None], clip, 1.0), 2, 2)[..., 2], np.nan)
+    depth = {"max": np.nanmax, "mean": np.nanmean, "min": np.nanmin}[key](
+        np.where(front.any(axis=1)[:, None], z, 0.0), axis=1
+    )
+    return np.argsort(-depth, kind="stable")
+
+
+def painter(clip, width: int, height: int, *, attrs=None, key: str = "max", **kwargs) -> Frame:
+    """Render with the painter's algorithm; ``triangle_id`` refers to the input order.
+
+    Keyword arguments other than ``depth_test`` go to :func:`teachraster.render.render`.
+    """
+    if "depth_test" in kwargs:
+        raise TypeError("painter draws without a depth test; do not pass depth_test")
+    order = painter_order(clip, key)
+    clip = np.asarray(clip, dtype=np.float64)[order]
+    if attrs is not None:
+        attrs = np.asarray(attrs, dtype=np.float64)[order]
+    frame = render_clip(clip, width, height, attrs=attrs, depth_test=False, **kwargs)
+    ids = np.where(frame.triangle_id >= 0, order[np.maximum(frame.triangle_id, 0)], -1)
+    return Frame(ids, frame.attrs, frame.depth, frame.plan, frame.trace)
