@@ -6,9 +6,12 @@ is *not*: what is affine in screen space is f/w and 1/w (seed 000, eq. 19; seed 
 - affine ("noperspective"):       f = Σ λ_i f_i
 - perspective-correct ("smooth"): f = Σ λ_i f_i/w_i / Σ λ_i/w_i
 
-Both are written as ``f_0 + μ_1 (f_1 - f_0) + μ_2 (f_2 - f_0)`` (recentred at vertex 0,
-seed 004), so an attribute that is the same at all three vertices comes out exactly
-constant, with no rounding at all.
+Both are evaluated as ``Σ μ_i f_i`` with weights μ (λ itself, or the perspective
+weights), then clamped to the range of the three vertex values. The weighted sum makes a
+weight of exactly 0 contribute exactly nothing (so a pixel centre on a vertex gets that
+vertex's value, and one on an edge ignores the opposite vertex); the clamp removes the
+last-ulp overshoot that rounding can leave (depth never leaves [0, 1]) and makes an
+attribute that is equal at all three vertices come out exactly constant.
 """
 
 from __future__ import annotations
@@ -35,20 +38,26 @@ def perspective_weights(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
 
 
 def blend(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """``f_0 + μ_1 (f_1 - f_0) + μ_2 (f_2 - f_0)`` for values (3,) or (3, k).
+    """``Σ μ_i f_i`` clamped to the vertex values' range, for values (3,) or (3, k).
 
-    Evaluated as one matrix product ``[1, μ_1, μ_2] @ [f_0; f_1 - f_0; f_2 - f_0]`` for all
-    pixels and attributes at once. For a constant attribute the differences are exactly
-    zero, so the result is exactly f_0 whatever order the sum is taken in.
+    One matrix product for all pixels and attributes at once.
 
     >>> blend(np.array([[0.2, 0.3, 0.5]]), np.array([7.0, 7.0, 7.0]))
     array([7.])
+    >>> blend(np.array([[0.0, 2 / 11, 9 / 11]]), np.array([1.0, 0.0, 0.0]))  # not -1e-16
+    array([0.])
     """
-    f0 = values[0]
-    rows = np.stack([f0, values[1] - f0, values[2] - f0]).reshape(3, -1)
-    ones = np.array(weights, dtype=np.float64)  # a copy: column 0 becomes the 1 of f_0
-    ones[:, 0] = 1.0
-    return (ones @ rows).reshape(len(weights), *values.shape[1:])
+    flat = values.reshape(3, -1)
+    out = weights @ flat
+    np.clip(out, flat.min(axis=0), flat.max(axis=0), out=out)
+    return out.reshape(len(weights), *values.shape[1:])
+
+
+def blend_each(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """:func:`blend` with different vertex values per row: weights (n, 3), values (n, 3, k)."""
+    out = np.einsum("ni,nik->nk", weights, values)
+    np.clip(out, values.min(axis=1), values.max(axis=1), out=out)
+    return out
 
 
 def interpolate(lam: np.ndarray, values: np.ndarray, w: np.ndarray, mode: str) -> np.ndarray:

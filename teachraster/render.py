@@ -23,7 +23,7 @@ import numpy as np
 from .batch import rasterize_batch
 from .clipping import CLIPPED, DROPPED, clip_triangles
 from .depth import DEPTH_FORMATS, quantize
-from .interpolation import MODES
+from .interpolation import MODES, blend_each
 from .plan import Effect, Plan, parse_force
 from .rasterize import CULL, _check_choice, _check_size
 from .snapping import SUBPIXEL_BITS, check_bits
@@ -220,7 +220,8 @@ def render(
     # 4. fill every triangle at once
     frags = rasterize_batch(window[:, :, :2], width, height, subpixel_bits=subpixel_bits,
                             skip=culled)  # fmt: skip
-    depth = quantize(_blend_rows(frags.lam, window[frags.tri, :, 2]), depth_format)
+    depth = blend_each(frags.lam, window[frags.tri, :, 2:3])[:, 0]
+    depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
 
     # 5. visibility
@@ -310,12 +311,6 @@ def render(
     )
 
 
-def _blend_rows(lam: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """Per fragment ``v0 + λ1 (v1 - v0) + λ2 (v2 - v0)`` with per-fragment vertex values."""
-    v0 = values[:, 0]
-    return v0 + lam[:, 1] * (values[:, 1] - v0) + lam[:, 2] * (values[:, 2] - v0)
-
-
 def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed."""
     k = attrs.shape[2]
@@ -327,9 +322,7 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if persp.any():  # f/w and 1/w are affine in screen space (seed 000, eq. 19)
         q = weights[persp] / w[tri[persp]]
         weights[persp] = q / q.sum(axis=1, keepdims=True)
-    f = attrs[tri]  # (n, 3, k)
-    # recentred at vertex 0, so an attribute equal at all three vertices stays exact
-    return f[:, 0] + weights[:, 1:2] * (f[:, 1] - f[:, 0]) + weights[:, 2:3] * (f[:, 2] - f[:, 0])
+    return blend_each(weights, attrs[tri])
 
 
 def _resolve(pixel, tri, depth, n_pixels, depth_test, force_test, trace):

@@ -19,7 +19,8 @@ def as_finite(name: str, value, shape: tuple[int | None, ...]) -> np.ndarray:
         raise TypeError(f"{name} must be numeric array-like: {exc}") from None
     ok = arr.ndim == len(shape) and all(s is None or s == n for s, n in zip(shape, arr.shape))
     if not ok:
-        want = "(" + ", ".join("k" if s is None else str(s) for s in shape) + ")"
+        dims = ["k" if s is None else str(s) for s in shape]
+        want = "(" + ", ".join(dims) + ("," if len(dims) == 1 else "") + ")"
         raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
     if not np.isfinite(arr).all():
         raise ValueError(f"{name} contains NaN or infinity: {arr.tolist()}")

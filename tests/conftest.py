@@ -1,0 +1,171 @@
+"""Shared helpers: an independent exact reference rasteriser and triangle generators.
+
+The reference below is written from CONVENTIONS.md alone, not from the package code:
+
+- snap every coordinate to 1/2**bits px with round half to even, in exact rational arithmetic
+  (``fractions.Fraction``; Python's ``round`` of a Fraction rounds half to even);
+- orient the triangle so that ``E(v0, v1, v2) > 0``;
+- a pixel centre is covered when every edge function is > 0, or == 0 on a top-left edge
+  (``b.y < a.y`` or ``b.y == a.y and b.x > a.x``).
+
+After snapping, every coordinate times ``2**(bits + 1)`` is an integer (pixel centres too), so
+the reference evaluates the Fraction-exact edge functions with Python's unbounded integers,
+which is exact and fast enough to check thousands of triangles.
+"""
+
+from __future__ import annotations
+
+import itertools
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import strategies as st
+
+import teachraster as tr
+
+PERMUTATIONS = list(itertools.permutations(range(3)))
+METHODS = ("halfplane", "span")
+MODES = ("perspective", "affine")
+
+
+# -- exact reference --------------------------------------------------------------------------
+def snap_exact(value: float, bits: int = 8) -> Fraction:
+    """``value`` snapped to the 1/2**bits grid, round half to even, as an exact Fraction."""
+    scale = 2**bits
+    return Fraction(round(Fraction(value) * scale), scale)
+
+
+def snapped_vertices(xy, bits: int = 8) -> list[tuple[Fraction, Fraction]]:
+    return [(snap_exact(float(x), bits), snap_exact(float(y), bits)) for x, y in np.asarray(xy)]
+
+
+def edge_exact(a, b, p):
+    """E(a, b, p) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x), in the operands' type."""
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+
+def top_left(a, b) -> bool:
+    """CONVENTIONS: the directed edge a→b (interior on its positive side) is top or left."""
+    return b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+
+
+def signed_area_exact(xy, bits: int = 8) -> Fraction:
+    """Signed area of the snapped triangle, px², positive when clockwise on screen."""
+    v = snapped_vertices(xy, bits)
+    return edge_exact(v[0], v[1], v[2]) / 2
+
+
+def reference_coverage(xy, width: int, height: int, bits: int = 8) -> np.ndarray:
+    """(height, width) bool coverage by the top-left rule, decided exactly on the snapped grid."""
+    scale = 2 ** (bits + 1)  # snapped coordinates and pixel centres are integers in these units
+    v = [(int(x * scale), int(y * scale)) for x, y in snapped_vertices(xy, bits)]
+    out = np.zeros((height, width), dtype=bool)
+    area2 = edge_exact(v[0], v[1], v[2])
+    if area2 == 0:
+        return out
+    if area2 < 0:
+        v = [v[0], v[2], v[1]]
+    edges = [(v[k], v[(k + 1) % 3]) for k in range(3)]
+    biases = [0 if top_left(a, b) else 1 for a, b in edges]  # integer E: E >= bias
+    half = scale // 2
+    xs, ys = [p[0] for p in v], [p[1] for p in v]
+    cols = [j for j in range(width) if min(xs) <= j * scale + half <= max(xs)]
+    rows = [i for i in range(height) if min(ys) <= i * scale + half <= max(ys)]
+    for i in rows:
+        py = i * scale + half
+        for j in cols:
+            p = (j * scale + half, py)
+            if all(edge_exact(a, b, p) >= bias for (a, b), bias in zip(edges, biases)):
+                out[i, j] = True
+    return out
+
+
+def exact_barycentric(xy, point, bits: int = 8) -> tuple[Fraction, Fraction, Fraction]:
+    """Screen-space barycentrics of ``point`` in the snapped triangle, as exact Fractions."""
+    a, b, c = snapped_vertices(xy, bits)
+    p = (Fraction(point[0]), Fraction(point[1]))
+    area = edge_exact(a, b, c)
+    return (edge_exact(b, c, p) / area, edge_exact(c, a, p) / area, edge_exact(a, b, p) / area)
+
+
+def centres(coverage: np.ndarray):
+    """Rows, cols and pixel-centre coordinates (x, y) of the covered pixels."""
+    rows, cols = np.nonzero(coverage)
+    return rows, cols, cols + 0.5, rows + 0.5
+
+
+def raster(xy, width, height, **kwargs) -> np.ndarray:
+    """Coverage of ``tr.rasterize`` for bare positions."""
+    return tr.rasterize(tr.Triangle(xy), width, height, **kwargs).coverage
+
+
+def explain(xy, got, want) -> str:
+    """Failure message that makes a coverage mismatch reproducible."""
+    diff = np.argwhere(got != want)
+    return f"xy={np.asarray(xy).tolist()!r}: differs at (row, col) {diff[:8].tolist()}"
+
+
+# -- triangle generators ----------------------------------------------------------------------
+def random_triangles(rng: np.random.Generator, kind: str, n: int, width: int, height: int):
+    """``n`` triangles (n, 3, 2) of one kind, spread a little beyond a width x height image.
+
+    kinds: ``float`` (arbitrary doubles), ``centre`` (on pixel centres), ``subpixel`` (on the
+    1/256 grid), ``tie`` (small half-integer grid: many edges through centres and corners),
+    ``outside`` (partly outside the image), ``huge`` (larger than the image).
+    """
+    lo = np.array([-2.0, -2.0])
+    hi = np.array([width + 2.0, height + 2.0])
+    if kind == "float":
+        return rng.uniform(lo, hi, size=(n, 3, 2))
+    if kind == "centre":
+        return rng.integers(lo, hi, size=(n, 3, 2)) + 0.5
+    if kind == "subpixel":
+        return rng.integers(lo * 256, hi * 256, size=(n, 3, 2)) / 256.0
+    if kind == "tie":
+        return rng.integers(0, 2 * 7, size=(n, 3, 2)) / 2.0
+    if kind == "outside":
+        return rng.uniform(-3 * hi, 3 * hi, size=(n, 3, 2))
+    if kind == "huge":
+        return rng.uniform(-100 * hi, 100 * hi, size=(n, 3, 2))
+    raise ValueError(kind)
+
+
+KINDS = ("float", "centre", "subpixel", "tie", "outside", "huge")
+
+
+def triangles(coords: st.SearchStrategy) -> st.SearchStrategy:
+    """Strategy for (3, 2) float arrays whose coordinates come from ``coords``."""
+    return st.lists(st.tuples(coords, coords), min_size=3, max_size=3).map(
+        lambda v: np.array(v, dtype=np.float64)
+    )
+
+
+def float_coords(lo: float = -3.0, hi: float = 15.0) -> st.SearchStrategy:
+    return st.floats(lo, hi, allow_nan=False, allow_infinity=False)
+
+
+def centre_coords(lo: int = -2, hi: int = 14) -> st.SearchStrategy:
+    return st.integers(lo, hi).map(lambda i: i + 0.5)
+
+
+def subpixel_coords(lo: int = -2, hi: int = 14) -> st.SearchStrategy:
+    return st.integers(lo * 256, hi * 256).map(lambda i: i / 256.0)
+
+
+def tie_coords(n: int = 6) -> st.SearchStrategy:
+    """Half-integers in [0, n]: pixel corners and centres, so edges hit centres constantly."""
+    return st.integers(0, 2 * n).map(lambda i: i / 2.0)
+
+
+any_triangle = st.one_of(
+    triangles(float_coords()),
+    triangles(centre_coords()),
+    triangles(subpixel_coords()),
+    triangles(tie_coords()),
+)
+
+
+@pytest.fixture
+def rng():
+    return np.random.default_rng(20240611)
