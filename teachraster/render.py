@@ -321,7 +321,7 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     if persp.any():  # f/w and 1/w are affine in screen space (seed 000, eq. 19)
         q = weights[persp] / w[tri[persp]]
-        weights[persp] = q / q.sum(axis=1, keepdims=True)
+        weights[persp] = q / (q[:, 0] + q[:, 1] + q[:, 2])[:, None]
     return blend_each(weights, attrs[tri])
 
 
