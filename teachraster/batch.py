@@ -58,8 +58,14 @@ def rasterize_batch(
     *,
     subpixel_bits: int | None = SUBPIXEL_BITS,
     skip: np.ndarray | None = None,
+    snapped_weights: bool = True,
 ) -> Fragments:
     """Fragments of triangles ``xy`` (n, 3, 2) in window pixels; ``skip`` (n,) bool drops some.
+
+    Coverage is always decided on the snapped grid. ``snapped_weights=False`` computes the
+    barycentrics from the unsnapped positions instead, as OpenGL implementations such as
+    llvmpipe do for attribute set-up (a triangle whose unsnapped area has a different sign
+    or is zero keeps its snapped weights, which always exist where it covers a pixel).
 
     Two triangles splitting a 2×2 square: the shared diagonal's centres go to the triangle
     for which it is a top-left edge, so each pixel is covered exactly once.
@@ -112,7 +118,7 @@ def rasterize_batch(
     within = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
     tri = np.repeat(owner, counts)
     cols = np.repeat(lo, counts) + within
-    rows = np.repeat(rows, counts)
+    line_rows, rows = rows, np.repeat(rows, counts)
 
     # Barycentrics from the exact edge functions, in the caller's vertex order: weight k is
     # E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding. Along a span E
@@ -120,12 +126,22 @@ def rasterize_batch(
     # stepped (seed 002's incremental form); on the snapped grid the steps are exact
     # integers, so this is the same value as evaluating E at every pixel.
     lam = np.empty((len(tri), 3))
-    start_x = lo * unit + half
-    area = np.repeat(area2[owner], counts).astype(np.float64)
+    src, src_unit, src_half, src_area = v, unit, half, area2
+    if not snapped_weights:
+        raw = np.asarray(xy, dtype=np.float64)
+        (px, py), (qx, qy), (rx, ry) = (raw[:, k].T for k in range(3))
+        raw_area = (qx - px) * (ry - py) - (qy - py) * (rx - px)
+        usable = np.sign(raw_area) == np.sign(area2)
+        src = np.where(usable[:, None, None], raw, v / float(unit))
+        src_area = np.where(usable, raw_area, area2 / float(unit) ** 2)
+        src_unit, src_half = 1.0, 0.5
+    start_x = lo * src_unit + src_half
+    row_y = line_rows * src_unit + src_half
+    area = np.repeat(src_area[owner], counts).astype(np.float64)
     for k in range(3):
-        a, b = v[owner, (k + 1) % 3], v[owner, (k + 2) % 3]
+        a, b = src[owner, (k + 1) % 3], src[owner, (k + 2) % 3]
         dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-        e_start = dx * (y - a[:, 1]) - dy * (start_x - a[:, 0])
-        e = np.repeat(e_start, counts) - np.repeat(dy * unit, counts) * within
+        e_start = dx * (row_y - a[:, 1]) - dy * (start_x - a[:, 0])
+        e = np.repeat(e_start, counts) - np.repeat(dy * src_unit, counts) * within
         np.divide(e, area, out=lam[:, k])
     return Fragments(tri=tri, row=rows, col=cols, lam=lam, facing=facing)

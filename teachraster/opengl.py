@@ -364,27 +364,41 @@ class GLRenderer:
         self.fbo.read_into(out, components=4, attachment=attachment, dtype="f4")
         return out  # GL row 0 is our row 0: no flip (module docstring)
 
+    def render_raw(self) -> list[list[np.ndarray]]:
+        """Draw every pass and return its float32 targets as read, without any conversion.
+
+        Returns
+        -------
+        list (one per pass) of lists of (height, width, 4) float32 arrays
+            ``[id_depth, smooth_0, noperspective_0, smooth_1, ...]``: channel 0 of ``id_depth``
+            is the triangle id (-1 where none), channel 1 the depth; each attribute pair holds
+            four components of the pass's attribute chunks. Row 0 is the top.
+        """
+        out = []
+        for vao, group in self._passes:
+            self.draw(vao)
+            out.append([self._read(i) for i in range(1 + 2 * len(group))])
+        return out
+
     def render(self) -> GLFrame:
         """Draw all passes and read the targets back into a :class:`GLFrame`."""
         h, w = self.height, self.width
-        smooth = np.full((h, w, self.k), np.nan)
-        nopersp = np.full((h, w, self.k), np.nan)
-        ids = depth = None
-        for vao, group in self._passes:
-            self.draw(vao)
-            id_depth = self._read(0)
-            if ids is None:
-                ids = id_depth[..., 0].astype(np.int64)
-                depth = id_depth[..., 1].astype(np.float64)
+        smooth = np.empty((h, w, self.k))
+        nopersp = np.empty((h, w, self.k))
+        raw = self.render_raw()
+        ids = raw[0][0][..., 0].astype(np.int64)  # ids and depth are the same in every pass
+        depth = raw[0][0][..., 1].astype(np.float64)
+        for (_, group), targets in zip(self._passes, raw):
             for j, c in enumerate(group):
                 lo, hi = c * _CHUNK, min(c * _CHUNK + _CHUNK, self.k)
-                smooth[..., lo:hi] = self._read(1 + 2 * j)[..., : hi - lo]
-                nopersp[..., lo:hi] = self._read(2 + 2 * j)[..., : hi - lo]
-        coverage = ids >= 0
-        ids[~coverage] = -1
-        depth[~coverage] = np.nan
-        smooth[~coverage] = np.nan
-        nopersp[~coverage] = np.nan
+                smooth[..., lo:hi] = targets[1 + 2 * j][..., : hi - lo]
+                nopersp[..., lo:hi] = targets[2 + 2 * j][..., : hi - lo]
+        coverage = ids >= 0  # the id target was cleared to -1
+        # copyto with a broadcast mask: several times faster than boolean-index assignment
+        uncovered = ~coverage
+        np.copyto(depth, np.nan, where=uncovered)
+        np.copyto(smooth, np.nan, where=uncovered[..., None])
+        np.copyto(nopersp, np.nan, where=uncovered[..., None])
         return GLFrame(
             triangle_id=ids,
             smooth=smooth,

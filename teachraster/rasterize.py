@@ -11,7 +11,7 @@ from . import half_planes, span_tables
 from .barycentric import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import EdgeSetup, setup_edges
-from .interpolation import MODES, blend, perspective_weights
+from .interpolation import FILL_MODES, MODES, blend, perspective_weights, subdivided
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
@@ -62,6 +62,7 @@ def rasterize(
     *,
     method: str = "halfplane",
     interpolation: str = "perspective",
+    subdivision: int = 8,
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
     cull: str | None = None,
@@ -78,8 +79,12 @@ def rasterize(
     method : {"halfplane", "span"}
         Half-plane edge tests over the bounding box, or span tables (split at u4, fill
         raster lines). Both cover exactly the same pixels.
-    interpolation : {"perspective", "affine"}
-        Perspective-correct (f/w over 1/w) or plain screen-space interpolation.
+    interpolation : {"perspective", "affine", "subdivided"}
+        Perspective-correct (f/w over 1/w), plain screen-space interpolation, or
+        perspective-correct only at every ``subdivision``-th pixel of each span and at
+        its ends with affine steps in between (the classic software-renderer trade-off).
+    subdivision : int
+        Pixels between exact evaluations for ``"subdivided"`` (1 = exact).
     trace : bool
         Record every step (see :class:`~teachraster.trace.FillTrace`). Never changes
         the pixels.
@@ -106,7 +111,11 @@ def rasterize(
         raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
     width, height = _check_size("width", width), _check_size("height", height)
     _check_choice("method", method, tuple(METHODS))
-    _check_choice("interpolation", interpolation, MODES)
+    _check_choice("interpolation", interpolation, FILL_MODES)
+    if isinstance(subdivision, bool) or not isinstance(subdivision, int | np.integer):
+        raise TypeError(f"subdivision must be an int, got {subdivision!r}")
+    if subdivision < 1:
+        raise ValueError(f"subdivision must be >= 1, got {subdivision}")
     _check_choice("cull", cull, CULL)
     check_bits(subpixel_bits)
 
@@ -129,7 +138,9 @@ def rasterize(
     # scatter) runs once per fill rather than once per attribute.
     packed, layout = _pack(tri.attrs)
     modes = MODES if trace else (interpolation,)
-    values = {mode: blend(_weights(lam, tri.w, mode), packed) for mode in modes}
+    values = {mode: blend(_weights(lam, tri.w, mode), packed) for mode in modes if mode in MODES}
+    if interpolation == "subdivided":
+        values["subdivided"] = subdivided(lam, rows, packed, tri.w, int(subdivision))
     depth_values = None if tri.z is None else blend(lam, tri.z)
 
     image = np.full((height, width, packed.shape[1]), np.nan)

@@ -218,8 +218,10 @@ def render(
     )  # fmt: skip
 
     # 4. fill every triangle at once
+    # Coverage on the snapped grid; weights from the unsnapped positions, as GPUs set up
+    # attributes (so the new vertices clipping creates interpolate exactly).
     frags = rasterize_batch(window[:, :, :2], width, height, subpixel_bits=subpixel_bits,
-                            skip=culled)  # fmt: skip
+                            skip=culled, snapped_weights=False)  # fmt: skip
     depth = blend_each(frags.lam, window[frags.tri, :, 2:3])[:, 0]
     depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col

@@ -25,6 +25,7 @@ on the 1/256 grid), so the window coordinates GL computes in float32 equal
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 import textwrap
@@ -35,6 +36,8 @@ import pytest
 try:
     import moderngl  # noqa: F401
 except ImportError as exc:
+    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
+        raise
     pytest.skip(
         f"OpenGL cross-check needs moderngl (pip install moderngl): {exc}",
         allow_module_level=True,
@@ -46,6 +49,8 @@ from teachraster.viewport import to_window
 
 GL_OK, GL_WHY = gl_available()
 if not GL_OK:
+    if os.environ.get("TEACHRASTER_REQUIRE_GL"):  # set by .ci/run: in CI the check must run
+        raise RuntimeError(f"TEACHRASTER_REQUIRE_GL is set but no OpenGL context: {GL_WHY}")
     pytest.skip(f"no OpenGL context can be created here: {GL_WHY}", allow_module_level=True)
 
 W, H = 64, 32
@@ -90,7 +95,8 @@ def scale(a) -> np.ndarray:
 
 
 def describe(xy, w, mask) -> str:
-    return f"xy={np.asarray(xy).tolist()} w={np.asarray(w).tolist()} at {np.argwhere(mask)[:6].tolist()}"
+    where = np.argwhere(mask)[:6].tolist()
+    return f"xy={np.asarray(xy).tolist()} w={np.asarray(w).tolist()} at {where}"
 
 
 # -- the module itself -------------------------------------------------------------------------
@@ -318,8 +324,9 @@ def random_scene(rng) -> tuple[np.ndarray, np.ndarray]:
 
     w = view depth is ± a power of two (some behind the eye, some nearer than NEAR, some
     beyond FAR), NDC x, y within ±1.3 such that unclipped vertices land exactly on the 1/256 px
-    grid (llvmpipe interpolates on unsnapped vertices, see the top), z from the projection matrix so depths interpenetrate. Now and
-    then a triangle is repeated to test that depth ties keep the earlier one.
+    grid (llvmpipe interpolates on unsnapped vertices, see the top), z from the projection
+    matrix so depths interpenetrate. Now and then a triangle is repeated to test that depth
+    ties keep the earlier one.
     """
     n = int(rng.integers(2, 6))
     w = 2.0 ** rng.integers(-1, 6, size=(n, 3))
@@ -393,9 +400,10 @@ def reference(clip: np.ndarray, attrs: np.ndarray, xy: np.ndarray = PIX):
     """Exact, unsnapped rendering facts per triangle at window points ``xy`` (n, 2), float64.
 
     Homogeneous rasterisation: a window point is the ray d = (X, Y, 1) in NDC; the clip-space
-    point of the triangle on it has barycentrics β ∝ d M⁻¹ (M: rows x, y, w). It is covered iff
+    point of the triangle on it has barycentrics β ∝ d M⁻¹ (M: rows x, y, w); covered iff
     all β ≥ 0, its w > 0 and -w <= z <= w. Returns inside (N, n), depth (N, n), attrs
-    (N, n, k) and the facing (N,) (True = front, i.e. det M > 0, see the culling test).
+    (N, n, k) and the facing (N,): front iff det M > 0, since the visible (w > 0) part of the
+    triangle has a screen area of the sign of det M whatever the signs of the vertex w.
     """
     X = xy[:, 0] * 2 / W - 1
     Y = 1 - xy[:, 1] * 2 / H
@@ -454,7 +462,7 @@ def test_scenes_match_exact_reference():
     agree away from every edge (the reference is unsnapped) and away from depth near-ties."""
     rng = np.random.default_rng(2024)
     crossed = clipped_far = 0
-    for s in range(150):
+    for s in range(300):
         clip, attrs = random_scene(rng)
         depth_test, cull = scene_options(rng)
         gl = gl_render(clip, W, H, attrs=attrs, depth_test=depth_test, cull=cull)
@@ -472,14 +480,20 @@ def test_scenes_match_exact_reference():
         assert not bad.any(), f"scene {s}: ids differ at {np.argwhere(bad)[:6].tolist()}"
         crossed += bool((clip[..., 2] < -clip[..., 3]).any(axis=1).any())
         clipped_far += bool((clip[..., 2] > clip[..., 3]).any())
-    assert crossed > 50 and clipped_far > 20
+    assert crossed > 100 and clipped_far > 40
 
 
 def test_scenes_match_tr_render():
-    """GL against ``tr.render``: identical ids except within 1/256 px of edges created by
-    clipping (and depth near-ties), attributes within float32 tolerance, depth within 1e-6."""
-    rng = np.random.default_rng(77)
-    n_scenes, masked, ties = 250, 0, 0
+    """GL against ``tr.render`` on 400 random scenes, near- and far-plane crossings and depth
+    overlaps included: identical ids except within 1/256 px of edges created by clipping (and
+    depth near-ties), attributes within float32 tolerance and depth within 1e-6 everywhere,
+    clipped triangles included (both set up attributes from the unsnapped positions)."""
+    check_scenes_against_tr_render(n_scenes=400, seed=77, snap_allowance=False)
+
+
+def check_scenes_against_tr_render(n_scenes: int, seed: int, snap_allowance: bool) -> None:
+    rng = np.random.default_rng(seed)
+    masked, ties = 0, 0
     for s in range(n_scenes):
         clip, attrs = random_scene(rng)
         depth_test, cull = scene_options(rng)
@@ -509,7 +523,7 @@ def test_scenes_match_tr_render():
         if not same.any():
             continue
         t = ids[same]
-        tol_a, tol_z = attribute_tolerances(clip, attrs, t, same)
+        tol_a, tol_z = attribute_tolerances(clip, attrs, t, same, snap_allowance)
         err_a = np.abs(gl.smooth[same] - np.asarray(frame.attrs)[same])
         err_z = np.abs(gl.depth[same] - np.asarray(frame.depth)[same])
         assert (err_a <= tol_a).all(), f"scene {s}: attrs off by {err_a.max()}"
@@ -518,7 +532,7 @@ def test_scenes_match_tr_render():
     assert ties < 0.001 * n_scenes * W * H, ties
 
 
-def attribute_tolerances(clip, attrs, t, same):
+def attribute_tolerances(clip, attrs, t, same, snap_allowance=True):
     """float32 tolerances per pixel: the floors of the issue scaled by the conditioning of the
     (clipped) triangle, plus, for near/far-clipped triangles, what snapping the new vertices
     moves an attribute by (|gradient| x 1/256 px: tr.render interpolates on snapped vertices,
@@ -541,7 +555,7 @@ def attribute_tolerances(clip, attrs, t, same):
         tol_a[sel] = span * max(2e-5, 16 * EPS32 * k * wr)
         tol_z[sel] = max(1e-6, 4 * EPS32 * k)
         near_far_clipped = not np.all([clip[i] @ p >= 0 for p in NEAR_FAR])
-        if near_far_clipped:
+        if near_far_clipped and snap_allowance:
             h = 1e-3
             grads_a, grads_z = 0.0, 0.0
             for off in ([h, 0], [0, h]):
