@@ -51,6 +51,16 @@ def _ranges(starts: np.ndarray, stops: np.ndarray):
     return owner, values
 
 
+def snapped_area2(xy: np.ndarray, subpixel_bits: int | None = SUBPIXEL_BITS) -> np.ndarray:
+    """Twice the signed area of each snapped triangle (n,), in internal units².
+
+    Positive when clockwise on screen (back-facing), negative when front-facing.
+    """
+    v = to_units(xy, subpixel_bits)
+    (ax, ay), (bx, by), (cx, cy) = (v[:, k].T for k in range(3))
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+
 def rasterize_batch(
     xy: np.ndarray,
     width: int,
@@ -78,8 +88,7 @@ def rasterize_batch(
     unit = units_per_pixel(subpixel_bits)
     exact = subpixel_bits is not None
     half = unit // 2 if exact else 0.5
-    (ax, ay), (bx, by), (cx, cy) = (v[:, k].T for k in range(3))
-    area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    area2 = snapped_area2(xy, subpixel_bits)
     facing = np.sign(area2).astype(np.int8)
     # Orient every triangle so its inside is on the positive side (swap vertices 1 and 2).
     perm = np.where((area2 < 0)[:, None], [0, 2, 1], [0, 1, 2])

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .batch import rasterize_batch
+from .batch import rasterize_batch, snapped_area2
 from .clipping import CLIPPED, DROPPED, clip_triangles
 from .depth import DEPTH_FORMATS, quantize
 from .interpolation import MODES, blend_each
@@ -109,9 +109,16 @@ def _check_clip(clip, attrs):
 
 
 def _guard(width: int, height: int, bits: int | None) -> float:
-    """NDC guard band: window coordinates stay well inside the exact fixed-point range."""
-    limit_px = 2.0 ** (27 - (bits if bits is not None else 8))
-    return max(limit_px / max(width, height), 2.0)
+    """NDC guard band G: window |x|, |y| <= (G + 1) * size / 2 stay just inside the range
+    where the fixed-point edge functions are exact (|x| < 2**(29 - bits) px)."""
+    limit_px = 2.0 ** (29 - (bits if bits is not None else 8))
+    guard = 2 * 0.999 * limit_px / max(width, height) - 1.0
+    if guard < 1.0:
+        raise ValueError(
+            f"subpixel_bits: a {width}x{height} image does not fit the exact fixed-point "
+            f"range with {bits} sub-pixel bits; use fewer bits"
+        )
+    return guard
 
 
 def render(
@@ -202,8 +209,8 @@ def render(
     m_tris = len(window)
 
     # 3. culling by screen winding (front-facing = counter-clockwise on screen)
-    (ax, ay), (bx, by), (cx, cy) = (window[:, i, :2].T for i in range(3))
-    signed = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    # Facing is decided on the snapped triangle, the one that is actually filled.
+    signed = snapped_area2(window[:, :, :2], subpixel_bits)
     culled = np.zeros(m_tris, dtype=bool)
     if cull == "back":
         culled = signed > 0

@@ -14,6 +14,7 @@ import numpy as np
 
 from .camera import Camera
 from .plan import Effect, Plan, parse_force
+from .rasterize import _check_size
 from .render import Frame
 from .render import render as render_clip
 from .scenes import Scene
@@ -74,6 +75,7 @@ def render_scene(
     camera = scene.camera if camera is None else camera
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a teachraster Camera, got {type(camera).__name__}")
+    width, height = _check_size("width", width), _check_size("height", height)
     forced = parse_force(force)
     mesh = scene.mesh
     names = sorted(mesh.attrs) if "attributes" in forced else list(scene.uses)
