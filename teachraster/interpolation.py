@@ -35,7 +35,9 @@ def perspective_weights(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
     """
     if np.all(w == w[0]):
         return lam
-    q = lam * (1.0 / w)  # λ_i / w_i: affine in screen space, like 1/w itself
+    # λ_i / w_i is affine in screen space, like 1/w itself. Only the ratios of w matter,
+    # so scale by the smallest w: 1/w alone overflows for tiny (even subnormal) w.
+    q = lam * (w.min() / w)
     q /= (q[..., 0] + q[..., 1] + q[..., 2])[..., None]
     return q
 

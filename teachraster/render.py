@@ -329,7 +329,8 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     weights = frags.lam[shade].copy()
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     if persp.any():  # f/w and 1/w are affine in screen space (seed 000, eq. 19)
-        q = weights[persp] / w[tri[persp]]
+        wt = w[tri[persp]]
+        q = weights[persp] * (wt.min(axis=1, keepdims=True) / wt)  # only ratios of w matter
         weights[persp] = q / (q[:, 0] + q[:, 1] + q[:, 2])[:, None]
     return blend_each(weights, attrs[tri])
 
