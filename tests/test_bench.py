@@ -1,0 +1,143 @@
+"""teachraster.bench: the accuracy-vs-time study (smoke run, ground truths, Pareto front)."""
+
+from __future__ import annotations
+
+import csv
+
+import numpy as np
+import pytest
+from conftest import random_triangles, reference_coverage
+
+import teachraster as tr
+from teachraster import bench
+
+
+@pytest.fixture(scope="module")
+def quick_run(tmp_path_factory):
+    pytest.importorskip("matplotlib")
+    out = tmp_path_factory.mktemp("bench-out")
+    assert bench.main(["--quick", "--out", str(out), "--repeat", "1"]) == 0
+    return out
+
+
+def test_quick_run_writes_csv_with_every_group_and_variant(quick_run, capsys):
+    with (quick_run / "bench.csv").open() as fh:
+        rows = list(csv.DictReader(fh))
+    expected = bench.variant_names(quick=True)
+    for group, variants in expected.items():
+        assert [r["variant"] for r in rows if r["group"] == group] == variants
+    assert [r["group"] for r in rows] == [g for g in bench.GROUPS for _ in expected[g]]
+    for r in rows:
+        assert float(r["time_median_s"]) > 0
+        assert float(r["time_ratio_to_baseline"]) > 0
+        assert float(r["error"]) >= 0
+    by_variant = {(r["group"], r["variant"]): r for r in rows}
+    assert float(by_variant[("edge functions", "fixed8 direct")]["error"]) == 0
+    assert float(by_variant[("edge functions", "fixed4 direct")]["error"]) > 0
+    assert float(by_variant[("interpolation", "perspective")]["error"]) < 1e-9
+    assert float(by_variant[("interpolation", "affine")]["error"]) > 1
+    assert all(float(r["error"]) == 0 for r in rows if r["group"] == "fill")
+    assert float(by_variant[("depth", "window float64")]["error"]) == 0
+    assert float(by_variant[("depth", "window unorm16")]["error"]) > 0
+
+
+def test_quick_run_writes_the_plots(quick_run):
+    for name in ("pareto.png", "subdivision.png"):
+        data = (quick_run / name).read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10_000
+
+
+def test_pareto_front_on_a_tiny_example():
+    rows = [
+        {"name": "a", "t": 1.0, "e": 5.0},
+        {"name": "b", "t": 2.0, "e": 1.0},
+        {"name": "c", "t": 3.0, "e": 3.0},  # slower and worse than b
+        {"name": "d", "t": 4.0, "e": 0.0},
+        {"name": "e", "t": 2.0, "e": 1.0},  # the same point as b: b is kept
+        {"name": "f", "t": 1.0, "e": 6.0},  # as fast as a, but worse
+    ]
+    assert [r["name"] for r in bench.pareto_front(rows, "t", "e")] == ["a", "b", "d"]
+    assert bench.pareto_front([], "t", "e") == []
+
+
+def test_subdivided_error_decreases_with_n_and_n1_is_perspective():
+    size = 256
+    xy, w, uv = bench.floor_quad(size)
+    errors, means = [], []
+    for n in (1, *bench.SUBDIVISIONS):
+        err, total, count = 0.0, 0.0, 0
+        for t in range(2):
+            tri = tr.Triangle(xy[t], w=w[t], attrs={"uv": uv[t]})
+            fill = tr.rasterize(tri, size, size, interpolation="subdivided", subdivision=n)
+            rows, cols = np.nonzero(fill.coverage)
+            want = bench.uv_ground_truth(xy[t], w[t], uv[t], size, rows, cols)
+            diff = np.abs(fill.attrs["uv"][fill.coverage] - want)
+            err, total, count = max(err, diff.max()), total + diff.sum(), count + diff.size
+            if n == 1:
+                exact = tr.rasterize(tri, size, size, interpolation="perspective")
+                assert np.array_equal(fill.attrs["uv"], exact.attrs["uv"], equal_nan=True)
+        errors.append(err)
+        means.append(total / count)
+    assert errors[0] < 1e-9  # perspective against the 3D ground truth
+    # fewer divides, more error: the mean strictly, the max never less
+    assert all(a < b for a, b in zip(means, means[1:])), means
+    assert all(a <= b for a, b in zip(errors, errors[1:])), errors
+    assert errors[1] < errors[-1]
+
+
+def test_uv_ground_truth_matches_the_perspective_formula():
+    # Independent derivations agree: 3D ray-plane intersection and f/w over 1/w.
+    size = 256
+    xy, w, uv = bench.floor_quad(size)
+    for t in range(2):
+        fill = tr.rasterize(tr.Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}), size, size)
+        rows, cols = np.nonzero(fill.coverage)
+        want = bench.uv_ground_truth(xy[t], w[t], uv[t], size, rows, cols)
+        assert len(rows) > 400
+        np.testing.assert_allclose(fill.attrs["uv"][fill.coverage], want, atol=1e-12)
+
+
+def test_exact_coverage_matches_the_conftest_reference(rng):
+    for kind in ("float", "tie", "subpixel", "outside"):
+        for xy in random_triangles(rng, kind, 15, 10, 10):
+            assert (bench.exact_coverage(xy, 10, 10, 8) == reference_coverage(xy, 10, 10)).all()
+            raw = bench.exact_coverage(xy, 10, 10, None)
+            assert (raw == tr.rasterize(tr.Triangle(xy), 10, 10, subpixel_bits=None).coverage).all()
+
+
+def test_exact_coverage_in_a_far_window():
+    xy = np.array([[0.3, 0.7], [9.6, 2.5], [3.5, 9.5]])
+    near = bench.exact_coverage(xy, 10, 10)
+    far = bench.exact_coverage(xy + 1e5, 10, 10, origin=(100_000, 100_000))
+    assert (near == far).all()
+
+
+def test_depth_ground_truth_sees_the_near_triangle_of_every_pair():
+    view, z = bench.depth_pairs()
+    order = np.argsort(-z, kind="stable")
+    frame = tr.render(bench.depth_clip(view[order], "window"), 64, 64, depth_test=False)
+    ids = order[frame.triangle_id[frame.triangle_id >= 0]]
+    # the near triangle (odd index) of each pair is visible, and so is a sliver of the far one
+    assert set(ids % 2) == {0, 1}
+    assert (np.bincount(ids % 2)[1]) > (np.bincount(ids % 2)[0])
+
+
+def test_linear_depth_clip_stores_linear_depth():
+    view, z = bench.depth_pairs()
+    frame = tr.render(bench.depth_clip(view, "linear"), 64, 64)
+    seen = frame.triangle_id >= 0
+    want = tr.linear_depth(z[frame.triangle_id[seen]], bench.NEAR, bench.FAR)
+    np.testing.assert_allclose(frame.depth[seen], want, atol=1e-12)
+
+
+def test_progress_bar_writes_to_stderr(capsys):
+    bar = bench.Progress(2)
+    bar.step("one")
+    bar.step("two")
+    err = capsys.readouterr().err
+    assert "2/2" in err and err.endswith("\n")
+
+
+def test_main_rejects_a_bad_repeat(tmp_path):
+    with pytest.raises(SystemExit):
+        bench.main(["--repeat", "0", "--out", str(tmp_path)])
