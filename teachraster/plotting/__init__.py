@@ -1,0 +1,140 @@
+"""Plots and in-place-updating views of teachraster fills and renders (matplotlib).
+
+``import teachraster`` never imports matplotlib; ``import teachraster.plotting`` does.
+
+Conventions
+-----------
+Every ``plot_*`` function takes a matplotlib ``Axes`` first, draws on it and returns the
+artists it created: a small dataclass that iterates like a list (``list(result)``) and names
+them as fields. Pixel (row i, col j) is the square [j, j+1] × [i, i+1] in data coordinates,
+**y down** (``ax.set_ylim(height, 0)``), with its centre (the sample point) at
+(j + 0.5, i + 0.5), as in CONVENTIONS. NaN (not covered) is drawn transparent. Colours are
+fixed per role (:data:`COLORS`, Okabe–Ito, colour-blind safe); sizes follow ``rcParams``, so
+``use_style("classroom")`` makes every figure projector-ready.
+
+Geometry of one fill (``fill = tr.rasterize(tri, W, H, trace=True)``)
+-------------------------------------------------------------------
+- :func:`plot_pixel_grid` -- pixel boundaries; sets up pixel axes (y down, ticks on centres).
+- :func:`plot_pixel_centres` -- the sample points, filled where covered.
+- :func:`plot_coverage` -- covered pixels of a Fill, Frame, trace or bool array.
+- :func:`plot_triangle` -- edges with direction arrows, vertex labels v0, v1, v2, edge names.
+- :func:`plot_bbox` -- the bounding box and the pixels whose centres it holds.
+- :func:`plot_split` -- span tables: the split line at u4 with its value, the two flat parts.
+- :func:`plot_raster_line` -- span tables: the raster line of a step and its span.
+- :func:`plot_current_pixel` -- half-planes: the pixel a step tests.
+- :func:`plot_edge_values` -- edge function E_k (values or signs) at every pixel centre.
+- :func:`plot_bailout` -- which edge test rejected each pixel, and how many tests ran.
+- :func:`plot_visit_order` -- the order in which the fill reaches the pixels.
+
+Per-pixel values
+----------------
+- :func:`plot_barycentric` -- λ0, λ1, λ2 as RGB, or one weight as a value map.
+- :func:`plot_attribute` -- an interpolated attribute (affine or perspective-correct).
+- :func:`plot_error_heatmap` -- |a − b| with a colour bar; its maximum marked and in the title.
+- :func:`plot_depth` -- the depth buffer (window depth, 0 = near).
+- :func:`plot_image` -- a colour image such as a texture-mapped SceneFrame.
+- :func:`plot_plan` / :func:`format_plan` -- a render plan as a text table.
+
+Views (draw once, then update in place; for widgets and animations)
+-------------------------------------------------------------------
+- :class:`FillView` -- step through a fill: ``show_step(k)``, ``set_fill(new_fill)``.
+- :class:`InterpolationView` -- affine | perspective-correct | error heatmap, ``update(fill)``.
+- :class:`ComparisonView` -- any two images and their error heatmap, ``update(a, b)``.
+
+Style
+-----
+- :func:`use_style` -- ``"classroom"`` (large fonts, thick lines) or ``"default"``; also a
+  context manager.
+- :data:`COLORS`, :data:`OKABE_ITO` -- the colour of each role and the palette.
+"""
+
+from .images import (
+    HeatmapArtists,
+    ImageArtists,
+    PlanArtists,
+    abs_error,
+    attribute_image,
+    format_plan,
+    plot_attribute,
+    plot_barycentric,
+    plot_depth,
+    plot_error_heatmap,
+    plot_image,
+    plot_plan,
+)
+from .plots import (
+    BailoutArtists,
+    BBoxArtists,
+    CentreArtists,
+    CoverageArtists,
+    EdgeValueArtists,
+    GridArtists,
+    PixelArtists,
+    RasterLineArtists,
+    SplitArtists,
+    TriangleArtists,
+    VisitArtists,
+    bailout,
+    edge_images,
+    plot_bailout,
+    plot_bbox,
+    plot_coverage,
+    plot_current_pixel,
+    plot_edge_values,
+    plot_pixel_centres,
+    plot_pixel_grid,
+    plot_raster_line,
+    plot_split,
+    plot_triangle,
+    plot_visit_order,
+    visit_order,
+)
+from .style import COLORS, OKABE_ITO, STYLES, use_style
+from .views import ComparisonView, FillView, InterpolationView
+
+__all__ = [
+    "COLORS",
+    "OKABE_ITO",
+    "STYLES",
+    "BBoxArtists",
+    "BailoutArtists",
+    "CentreArtists",
+    "ComparisonView",
+    "CoverageArtists",
+    "EdgeValueArtists",
+    "FillView",
+    "GridArtists",
+    "HeatmapArtists",
+    "ImageArtists",
+    "InterpolationView",
+    "PixelArtists",
+    "PlanArtists",
+    "RasterLineArtists",
+    "SplitArtists",
+    "TriangleArtists",
+    "VisitArtists",
+    "abs_error",
+    "attribute_image",
+    "bailout",
+    "edge_images",
+    "format_plan",
+    "plot_attribute",
+    "plot_bailout",
+    "plot_barycentric",
+    "plot_bbox",
+    "plot_coverage",
+    "plot_current_pixel",
+    "plot_depth",
+    "plot_edge_values",
+    "plot_error_heatmap",
+    "plot_image",
+    "plot_pixel_centres",
+    "plot_pixel_grid",
+    "plot_plan",
+    "plot_raster_line",
+    "plot_split",
+    "plot_triangle",
+    "plot_visit_order",
+    "use_style",
+    "visit_order",
+]

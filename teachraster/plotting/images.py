@@ -1,0 +1,410 @@
+"""Per-pixel images: barycentrics, attributes, the error heatmap, depth, colour, the plan.
+
+Every function draws on the Axes it is given and returns an :class:`~._common.Artists`
+dataclass; the images also have an ``update(...)`` method that changes the data of the same
+artists (for views that follow a moving vertex or slider). NaN (no coverage) is drawn
+transparent, so whatever is below (the pixel grid, the background) shows through.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.text import Text
+
+from ..plan import Plan
+from ..rasterize import Fill
+from ..render import Frame
+from ..scene_render import SceneFrame
+from ..trace import FillTrace
+from ._common import (
+    Artists,
+    as_trace,
+    fs,
+    label_box,
+    ms,
+    quiet_nanmax,
+    rgba_image,
+    set_image,
+    show_image,
+)
+from .style import COLORS, ERROR_CMAP, VALUE_CMAP
+
+
+@dataclass
+class ImageArtists(Artists):
+    """One image (and its colour bar, on its own Axes, if any)."""
+
+    image: object
+    colorbar: object = None
+
+    def update(self, data) -> None:
+        """Show new values (same shape or not) in the same image."""
+        data = np.asarray(data, dtype=np.float64)
+        if data.ndim == 3:
+            data = rgba_image(data)
+        self.image = set_image(self.image, data)
+        if self.colorbar is not None and self.colorbar.mappable is not self.image:
+            self.colorbar.update_normal(self.image)
+
+
+def _show(ax, data, *, cmap=None, vmin=None, vmax=None, colorbar=True, label=None, **kw):
+    """imshow a (H, W) value image (with a colour bar) or an (H, W, 3) colour image."""
+    data = np.asarray(data, dtype=np.float64)
+    if data.ndim == 3:
+        return ImageArtists(show_image(ax, rgba_image(data), zorder=0.5, **kw))
+    if data.ndim != 2:
+        raise ValueError(f"expected an (H, W) or (H, W, 3) image, got shape {data.shape}")
+    im = show_image(ax, data, cmap=cmap or VALUE_CMAP, vmin=vmin, vmax=vmax, zorder=0.5, **kw)
+    cbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label=label) if colorbar else None
+    return ImageArtists(im, cbar)
+
+
+# -- barycentric coordinates -------------------------------------------------------------------
+def plot_barycentric(
+    ax, fill, channel: int | None = None, *, colorbar: bool = True, title: bool = True
+) -> ImageArtists:
+    """Screen-space barycentric weights λ0, λ1, λ2 at the covered pixel centres.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+    channel : {None, 0, 1, 2}
+        None: all three at once as red, green and blue (each vertex its primary colour,
+        mixtures in between); 0, 1 or 2: that one weight as a value map with a colour bar.
+    colorbar : bool
+        Colour bar for a single channel.
+    title : bool
+        Set the Axes title.
+
+    Returns
+    -------
+    ImageArtists
+    """
+    trace = as_trace(fill, "plot_barycentric")
+    lam = trace.image(trace.barycentric)
+    if channel is None:
+        result = _show(ax, np.clip(lam, 0.0, 1.0))
+        name = "λ0, λ1, λ2 as red, green, blue"
+    else:
+        if channel not in (0, 1, 2):
+            raise ValueError(f"channel must be None, 0, 1 or 2, got {channel!r}")
+        result = _show(ax, lam[..., channel], vmin=0, vmax=1, colorbar=colorbar,
+                       label=f"λ{channel}")  # fmt: skip
+        name = f"barycentric λ{channel}: 1 at v{channel}, 0 opposite"
+    if title:
+        ax.set_title(name)
+    return result
+
+
+# -- attributes --------------------------------------------------------------------------------
+def attribute_image(source, name: str | None = None, *, mode: str | None = None,
+                    channel: int | None = None) -> np.ndarray:  # fmt: skip
+    """An interpolated attribute as an (H, W) value image or an (H, W, 3) colour image.
+
+    Parameters
+    ----------
+    source : Fill, FillTrace, Frame, SceneFrame or array
+        Where the values come from. A Fill gives ``fill.attrs[name]``; with ``mode`` (or for
+        a FillTrace) the trace's ``"affine"`` or ``"perspective"`` values, both of which a
+        traced fill records. A SceneFrame gives ``frame.attr(name)``, a Frame ``frame.attrs``.
+    name : str, optional
+        Attribute name; may be left out when there is only one.
+    mode : {None, "affine", "perspective"}
+        Which interpolation (needs a trace); None: the one the fill was made with.
+    channel : int, optional
+        Pick one channel of a vector attribute. Without it, a 3-channel attribute is a colour
+        image, one channel is squeezed, and for others channel 0 is taken.
+    """
+    if isinstance(source, Fill | FillTrace):
+        trace = source if isinstance(source, FillTrace) else source.trace
+        if isinstance(source, FillTrace) or mode is not None:
+            if trace is None:
+                raise ValueError(f"mode={mode!r} needs a traced fill: rasterize(..., trace=True)")
+            mode = trace.interpolation if mode is None else mode
+            if mode not in ("affine", "perspective"):
+                raise ValueError(f"mode must be 'affine' or 'perspective', got {mode!r}")
+            values = trace.affine if mode == "affine" else trace.perspective
+            values = {k: trace.image(v) for k, v in values.items()}
+        else:
+            values = dict(source.attrs)
+        if not values:
+            raise ValueError("the triangle has no attributes: give Triangle(..., attrs={...})")
+        if name is None:
+            if len(values) > 1:
+                raise ValueError(f"several attributes, pick one by name: {sorted(values)}")
+            name = next(iter(values))
+        if name not in values:
+            raise KeyError(f"no attribute {name!r}; the triangle has {sorted(values)}")
+        data = values[name]
+    elif isinstance(source, SceneFrame) and name is not None:
+        data = source.attr(name)
+    elif isinstance(source, Frame):
+        data = source.attrs
+    else:
+        data = source
+    data = np.asarray(data, dtype=np.float64)
+    if data.ndim == 3:
+        if channel is not None:
+            data = data[..., channel]
+        elif data.shape[2] == 1:
+            data = data[..., 0]
+        elif data.shape[2] != 3:
+            data = data[..., 0]
+    return data
+
+
+def plot_attribute(
+    ax,
+    source,
+    name: str | None = None,
+    *,
+    mode: str | None = None,
+    channel: int | None = None,
+    cmap=None,
+    vmin: float | None = None,
+    vmax: float | None = None,
+    colorbar: bool = True,
+    title: str | None = None,
+) -> ImageArtists:
+    """An interpolated attribute: a value map with a colour bar, or colours.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    source, name, mode, channel
+        As for :func:`attribute_image`.
+    cmap, vmin, vmax
+        Colour map and its range for a value map (default: the value colour map and the
+        data's range; give the same range to two plots that should be compared).
+    colorbar : bool
+        Colour bar for a value map.
+    title : str, optional
+        Axes title (default: the attribute's name and interpolation, where known).
+
+    Returns
+    -------
+    ImageArtists
+    """
+    data = attribute_image(source, name, mode=mode, channel=channel)
+    result = _show(ax, data, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
+                   label=name)  # fmt: skip
+    if title is None and name is not None:
+        how = mode or (source.trace.interpolation if isinstance(source, Fill) and source.trace
+                       else None)  # fmt: skip
+        title = name + (f" ({how})" if how else "")
+    if title:
+        ax.set_title(title)
+    return result
+
+
+# -- the error heatmap -------------------------------------------------------------------------
+def abs_error(a, b) -> np.ndarray:
+    """(H, W) |a - b|; for (H, W, k) the largest channel error. NaN where either is NaN."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    if a.shape != b.shape:
+        raise ValueError(f"a and b must have the same shape, got {a.shape} and {b.shape}")
+    err = np.abs(a - b)
+    if err.ndim == 3:
+        bad = np.isnan(err).all(axis=-1)
+        err = np.where(bad, np.nan, np.nanmax(np.where(np.isnan(err), -np.inf, err), axis=-1))
+    elif err.ndim != 2:
+        raise ValueError(f"expected (H, W) or (H, W, k) images, got shape {err.shape}")
+    return err
+
+
+@dataclass
+class HeatmapArtists(Artists):
+    """Artists of :func:`plot_error_heatmap`; ``maximum`` is the reported largest error."""
+
+    image: object
+    marker: Line2D
+    note: Text
+    title: Text | None
+    label: str = "|a − b|"
+    maximum: float = float("nan")
+    colorbar: object = None
+
+    def update(self, a, b) -> None:
+        """Show the error of new images (same artists; the colour bar follows)."""
+        err = abs_error(a, b)
+        m = quiet_nanmax(err)
+        self.maximum = m
+        self.image = set_image(self.image, err)
+        if self.colorbar is not None and self.colorbar.mappable is not self.image:
+            self.colorbar.update_normal(self.image)
+        h, w = err.shape
+        # A zero (or no) error still needs a valid, non-empty colour range.
+        self.image.set_clim(0.0, m if np.isfinite(m) and m > 0 else 1.0)
+        if np.isfinite(m):
+            i, j = np.unravel_index(np.nanargmax(err), err.shape)
+            self.marker.set_data([j + 0.5], [i + 0.5])
+            self.note.xy = (j + 0.5, i + 0.5)
+            # keep the note inside the image: it points left in the right half, and so on
+            self.note.set_position((-fs(1.2) if j > w / 2 else fs(1.2),
+                                    fs(1.2) if i > h / 2 else -fs(1.2)))  # fmt: skip
+            self.note.set_horizontalalignment("right" if j > w / 2 else "left")
+            self.note.set_text(f"max {m:.3g}")
+            self.marker.set_visible(True)
+            self.note.set_visible(True)
+            self._set_title(f"{self.label}: max = {m:.3g}")
+        else:
+            self.marker.set_visible(False)
+            self.note.set_visible(False)
+            self._set_title(f"{self.label}: no pixel to compare")
+
+    def _set_title(self, text: str) -> None:
+        if self.title is not None:
+            self.title.set_text(text)
+
+
+def plot_error_heatmap(
+    ax, a, b, *, label: str = "|a − b|", colorbar: bool = True, title: bool = True
+) -> HeatmapArtists:
+    """Heatmap of |a − b| with a colour bar, the maximum marked and stated in the title.
+
+    The usual use: ``a`` affine and ``b`` perspective-correct values of one attribute, which
+    differ most where the triangle recedes fastest (seed 000 §2, seed 004).
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    a, b : (H, W) or (H, W, k) arrays
+        The two images; NaN (uncovered) in either gives a transparent pixel. For k channels
+        the largest channel error is shown.
+    label : str
+        What is compared, for the title and colour bar.
+    colorbar : bool
+        Add a colour bar (0 to the maximum).
+    title : bool
+        Put ``"{label}: max = ..."`` in the Axes title (the ``note`` by the marked pixel
+        says it too).
+
+    Returns
+    -------
+    HeatmapArtists
+        ``image``, ``marker`` (ring round the worst pixel), ``note``, ``title``, ``colorbar``
+        and ``maximum``, which equals ``np.nanmax(abs(a - b))`` (NaN if nothing is covered).
+    """
+    err = abs_error(a, b)
+    im = show_image(ax, err, cmap=ERROR_CMAP, vmin=0.0, vmax=1.0, zorder=0.5)
+    marker = ax.plot([], [], "o", ms=ms(2.0), mfc="none", mec=COLORS["fill"], mew=ms(0.3),
+                     zorder=5)[0]  # fmt: skip
+    note = ax.annotate(
+        "", (0, 0), xytext=(0, 0), textcoords="offset points", fontsize=fs(0.8),
+        color="black", bbox=label_box(0.9), zorder=6, annotation_clip=False,
+        arrowprops={"arrowstyle": "-", "color": COLORS["fill"], "lw": ms(0.2)},
+    )  # fmt: skip
+    title_text = ax.title if title else None
+    result = HeatmapArtists(im, marker, note, title_text, label)
+    result.update(a, b)
+    if colorbar:
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label=label)
+    return result
+
+
+# -- depth and colour --------------------------------------------------------------------------
+def plot_depth(
+    ax, source, *, cmap=None, vmin=None, vmax=None, colorbar: bool = True, title: bool = True
+) -> ImageArtists:
+    """The depth buffer: window depth z per pixel (0 near, 1 far), NaN transparent.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    source : Fill, FillTrace, Frame or (H, W) array
+        A fill needs a triangle with ``z``; a Frame gives the depth its buffer stores.
+    cmap, vmin, vmax
+        Colour map (default: the value colour map, dark = near) and range (default: the
+        data's, for contrast; pass 0 and 1 for the full range).
+    colorbar, title : bool
+
+    Returns
+    -------
+    ImageArtists
+    """
+    if isinstance(source, Fill | Frame):
+        depth = source.depth
+    elif isinstance(source, FillTrace):
+        depth = None if source.depth is None else source.image(source.depth)
+    else:
+        depth = source
+    if depth is None:
+        raise ValueError("no depth: give the triangle window depths, Triangle(..., z=[...])")
+    result = _show(ax, depth, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
+                   label="window depth z (0 = near)")  # fmt: skip
+    if title:
+        ax.set_title("depth buffer")
+    return result
+
+
+def plot_image(ax, source, *, title: str | None = None) -> ImageArtists:
+    """A colour image, e.g. the texture-mapped result of a scene; NaN pixels transparent.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    source : SceneFrame or (H, W, 3) array with values in [0, 1]
+    title : str, optional
+
+    Returns
+    -------
+    ImageArtists
+    """
+    rgb = source.image if isinstance(source, SceneFrame) else source
+    if rgb is None:
+        raise ValueError("this frame has no shaded image")
+    result = _show(ax, rgb)
+    if title:
+        ax.set_title(title)
+    return result
+
+
+# -- the render plan ---------------------------------------------------------------------------
+def format_plan(plan, width: int = 64) -> str:
+    """A render plan as a text table: effect, ran or skipped, how much, and why (wrapped)."""
+    plan = plan.plan if isinstance(plan, Frame) else plan
+    if not isinstance(plan, Plan):
+        raise TypeError(f"expected a Plan or a Frame, got {type(plan).__name__}")
+    lines = [f"{'effect':<12}{'':<8}how much", "-" * width]
+    for e in plan:
+        state = "forced" if e.forced else ("ran" if e.ran else "skipped")
+        lines.append(f"{e.name:<12}{state:<8}{e.count:,} of {e.total:,} {e.unit}")
+        lines += textwrap.wrap(e.why, width, initial_indent="    ", subsequent_indent="    ")
+    return "\n".join(lines)
+
+
+@dataclass
+class PlanArtists(Artists):
+    """The text of :func:`plot_plan`."""
+
+    text: Text
+
+    def update(self, plan) -> None:
+        self.text.set_text(format_plan(plan))
+
+
+def plot_plan(ax, plan, *, title: bool = True) -> PlanArtists:
+    """The render plan (which effects ran, for how much, and why) as a text table.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+        Its frame and ticks are turned off.
+    plan : Plan or Frame
+    title : bool
+
+    Returns
+    -------
+    PlanArtists
+    """
+    ax.set_axis_off()
+    text = ax.text(0.0, 1.0, format_plan(plan), transform=ax.transAxes, va="top", ha="left",
+                   family="monospace", fontsize=fs(0.7))  # fmt: skip
+    if title:
+        ax.set_title("render plan", loc="left")
+    return PlanArtists(text)

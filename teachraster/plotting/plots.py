@@ -1,0 +1,869 @@
+"""Plots of one fill: the pixel grid, the triangle, the bounding box, the split, each step.
+
+Every function draws on the Axes it is given and returns an :class:`~._common.Artists`
+dataclass (iterable like a list of the artists it created). Results that a view updates in
+place also have an ``update(...)`` method, which changes the *existing* artists' data
+(``set_data``, ``set_xy``, ``set_text``, ``set_visible``) and never adds new ones.
+
+Coordinates follow CONVENTIONS: pixel (row i, col j) is the square [j, j+1] × [i, i+1] with
+y down, its centre (the sample point) at (j + 0.5, i + 0.5).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from matplotlib.collections import LineCollection
+from matplotlib.colors import ListedColormap, Normalize
+from matplotlib.lines import Line2D
+from matplotlib.patches import FancyArrowPatch, Patch, Polygon, Rectangle
+from matplotlib.text import Text
+
+from ..bbox import BBox
+from ..rasterize import Fill
+from ..trace import FillTrace
+from ..triangle import Triangle
+from ._common import (
+    Artists,
+    as_coverage,
+    as_trace,
+    fs,
+    label_box,
+    lw,
+    ms,
+    pixel_axes,
+    set_image,
+    show_image,
+    tint,
+    two_colour,
+)
+from .style import COLORS, SIGNED_CMAP, VALUE_CMAP
+
+#: Above this many pixels along a side the grid lines would merge into grey: none are drawn.
+GRID_LIMIT = 96
+#: Numbers are written into cells only when the plotted region has at most this many pixels.
+ANNOTATE_LIMIT = 256
+
+
+# -- the pixel grid ----------------------------------------------------------------------------
+@dataclass
+class GridArtists(Artists):
+    """Pixel boundaries (one LineCollection) of a :func:`plot_pixel_grid`."""
+
+    lines: LineCollection
+
+    ticks: int = 8
+
+    def update(self, width: int, height: int) -> None:
+        """Redraw for a new image size (same artist)."""
+        self.lines.set_segments(_grid_segments(width, height))
+        pixel_axes(self.lines.axes, width, height, ticks=self.ticks > 0, most=self.ticks)
+
+
+def _grid_segments(width: int, height: int) -> list:
+    if max(width, height) > GRID_LIMIT:
+        return []
+    xs, ys = np.arange(width + 1), np.arange(height + 1)
+    vertical = [((x, 0), (x, height)) for x in xs]
+    horizontal = [((0, y), (width, y)) for y in ys]
+    return vertical + horizontal
+
+
+def plot_pixel_grid(ax, width: int, height: int, *, ticks: bool | int = True) -> GridArtists:
+    """Draw the boundaries of a ``height`` × ``width`` pixel grid and set up pixel axes.
+
+    The axes get x from 0 to ``width``, y from ``height`` (bottom) to 0 (top), equal aspect,
+    and ticks on pixel centres labelled with column and row indices (x axis on top).
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    width, height : int
+        Image size in pixels. Beyond :data:`GRID_LIMIT` pixels no lines are drawn.
+    ticks : bool or int
+        Label rows and columns: True for at most 8 labels per axis, an int for at most that
+        many (fewer labels also draw faster), False for no ticks at all.
+
+    Returns
+    -------
+    GridArtists
+        ``lines``: the LineCollection of pixel boundaries.
+    """
+    lines = LineCollection(
+        _grid_segments(width, height),
+        colors=COLORS["grid"],
+        linewidths=max(0.6, lw(0.25)),
+        zorder=1.5,  # above images (zorder 0), below everything else
+    )
+    ax.add_collection(lines, autolim=False)
+    most = (8 if ticks else 0) if isinstance(ticks, bool) else int(ticks)
+    pixel_axes(ax, width, height, ticks=most > 0, most=most)
+    return GridArtists(lines, most)
+
+
+# -- pixel centres -----------------------------------------------------------------------------
+@dataclass
+class CentreArtists(Artists):
+    """Pixel centres of a :func:`plot_pixel_centres`: covered (filled dots) and the rest."""
+
+    inside: Line2D
+    outside: Line2D
+
+    def update(self, width: int, height: int, coverage=None) -> None:
+        """Move the dots to a new grid size and/or coverage."""
+        (xi, yi), (xo, yo) = _centres(width, height, coverage)
+        self.inside.set_data(xi, yi)
+        self.outside.set_data(xo, yo)
+
+
+def _centres(width, height, coverage):
+    rows, cols = np.indices((height, width))
+    x, y = cols.ravel() + 0.5, rows.ravel() + 0.5
+    if coverage is None:
+        return (x[:0], y[:0]), (x, y)
+    cov = as_coverage(coverage).ravel()
+    return (x[cov], y[cov]), (x[~cov], y[~cov])
+
+
+def plot_pixel_centres(ax, width: int, height: int, coverage=None) -> CentreArtists:
+    """Mark every pixel centre (j + 0.5, i + 0.5), the point where coverage is decided.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    width, height : int
+        Image size in pixels.
+    coverage : (height, width) bool array, Fill, Frame or FillTrace, optional
+        If given, covered centres are drawn as filled dots and the others as small hollow
+        ones; otherwise all as small grey dots.
+
+    Returns
+    -------
+    CentreArtists
+        ``inside`` and ``outside``: marker-only Line2D artists (fast to redraw).
+    """
+    (xi, yi), (xo, yo) = _centres(width, height, coverage)
+    size = ms(0.32) if max(width, height) <= 48 else ms(0.2)
+    inside = ax.plot(xi, yi, "o", ms=size * 1.3, color=COLORS["edge"], zorder=3.5)[0]
+    outside = ax.plot(
+        xo, yo, "o", ms=size, mfc=COLORS["centre"] if coverage is None else "none",
+        mec=COLORS["centre"], mew=max(0.8, lw(0.25)), zorder=3.5,
+    )[0]  # fmt: skip
+    return CentreArtists(inside, outside)
+
+
+# -- coverage ----------------------------------------------------------------------------------
+@dataclass
+class CoverageArtists(Artists):
+    """The coverage image of :func:`plot_coverage` (its data is exactly the coverage, 0/1)."""
+
+    image: object
+
+    def update(self, coverage) -> None:
+        """Show new coverage in the same image."""
+        self.image = set_image(self.image, as_coverage(coverage).astype(np.float64))
+
+
+def plot_coverage(ax, coverage, *, color=None, alpha: float | None = None) -> CoverageArtists:
+    """Colour the covered pixels; uncovered ones stay transparent so the grid shows through.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    coverage : (H, W) bool array, Fill, Frame or FillTrace
+        Which pixels to colour (a Frame: pixels any triangle wrote).
+    color : colour, optional
+        Default: the "fill" colour of :data:`~teachraster.plotting.style.COLORS`.
+    alpha : float, optional
+        Opacity of the filled pixels (default opaque, which is also fastest to draw).
+
+    Returns
+    -------
+    CoverageArtists
+        ``image``: an AxesImage whose data is the coverage as 0.0 / 1.0.
+    """
+    cov = as_coverage(coverage).astype(np.float64)
+    cmap = two_colour(COLORS["fill"] if color is None else color)
+    im = show_image(ax, cov, cmap=cmap, vmin=0, vmax=1, alpha=alpha, zorder=0.5)
+    return CoverageArtists(im)
+
+
+# -- the triangle ------------------------------------------------------------------------------
+def _vertices(tri) -> np.ndarray:
+    """(3, 2) positions to draw: snapped ones for a fill (what was filled), else as given."""
+    if isinstance(tri, FillTrace):
+        return tri.snapped
+    if isinstance(tri, Fill):
+        return as_trace(tri, "plot_triangle").snapped
+    if isinstance(tri, Triangle):
+        return tri.xy
+    xy = np.asarray(tri, dtype=np.float64)
+    if xy.shape != (3, 2):
+        raise ValueError(f"triangle positions must have shape (3, 2), got {xy.shape}")
+    return xy
+
+
+def _default_edges(tri) -> np.ndarray:
+    if isinstance(tri, Fill | FillTrace):
+        return as_trace(tri).edges
+    return np.array([[0, 1], [1, 2], [2, 0]])
+
+
+def _outward(points: np.ndarray, centre: np.ndarray, dist: float, ax) -> list:
+    """Offsets in points pushing labels at ``points`` away from ``centre`` (y flipped)."""
+    out = []
+    flip = -1.0 if ax.yaxis_inverted() else 1.0  # data y down -> screen y up
+    for p in points:
+        d = p - centre
+        n = float(np.hypot(*d))
+        d = d / n if n > 1e-12 else np.array([0.0, -1.0])
+        out.append((dist * d[0], flip * dist * d[1]))
+    return out
+
+
+@dataclass
+class TriangleArtists(Artists):
+    """Artists of :func:`plot_triangle`."""
+
+    outline: Line2D
+    vertices: Line2D
+    arrows: list = field(default_factory=list)
+    labels: list = field(default_factory=list)
+    edge_labels: list = field(default_factory=list)
+
+    def update(self, tri, edges=None) -> None:
+        """Move everything to a new triangle (same artists)."""
+        xy = _vertices(tri)
+        edges = _default_edges(tri) if edges is None else np.asarray(edges)
+        closed = np.vstack([xy, xy[:1]])
+        self.outline.set_data(closed[:, 0], closed[:, 1])
+        self.vertices.set_data(xy[:, 0], xy[:, 1])
+        for arrow, (a, b) in zip(self.arrows, edges):
+            pa, pb = xy[a], xy[b]
+            arrow.set_positions(pa + 0.42 * (pb - pa), pa + 0.58 * (pb - pa))
+        ax = self.outline.axes
+        centre = xy.mean(axis=0)
+        for label, p, off in zip(self.labels, xy, _outward(xy, centre, fs(0.9), ax)):
+            label.xy = tuple(p)
+            label.set_position(off)
+        mids = np.array([(xy[a] + xy[b]) / 2 for a, b in edges])
+        for label, (a, b), p, off in zip(
+            self.edge_labels, edges, mids, _outward(mids, centre, fs(0.9), ax)
+        ):
+            label.xy = tuple(p)
+            label.set_position(off)
+            label.set_text(f"E{a}{b}")
+
+
+def plot_triangle(
+    ax,
+    tri,
+    *,
+    edges=None,
+    arrows: bool = True,
+    labels: bool = True,
+    edge_labels: bool = False,
+    color=None,
+) -> TriangleArtists:
+    """Draw a triangle's edges with direction arrows and the vertex labels v0, v1, v2.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    tri : Triangle, Fill (with trace), FillTrace or (3, 2) array
+        For a fill, the *snapped* vertices are drawn (the ones coverage was decided with).
+    edges : (3, 2) int array, optional
+        Directed edges as (from, to) vertex indices. Default: for a fill, the edges in the
+        order and direction they are tested (``trace.edges``, interior on the right as seen on
+        screen); otherwise v0→v1→v2→v0, which shows the winding as given.
+    arrows : bool
+        An arrowhead in the middle of each edge, pointing along it.
+    labels : bool
+        Vertex labels v0, v1, v2, pushed outwards.
+    edge_labels : bool
+        Label each edge with its edge function's name, e.g. ``E01`` (as in the captions).
+    color : colour, optional
+        Default: the "edge" colour of :data:`~teachraster.plotting.style.COLORS`.
+
+    Returns
+    -------
+    TriangleArtists
+        ``outline``, ``vertices`` (Line2D), ``arrows`` (FancyArrowPatch), ``labels`` and
+        ``edge_labels`` (Annotation).
+    """
+    color = COLORS["edge"] if color is None else color
+    outline = ax.plot([], [], "-", color=color, lw=lw(0.8), zorder=4, solid_joinstyle="round")[0]
+    vertices = ax.plot([], [], "o", color=color, ms=ms(0.7), zorder=4.5)[0]
+    result = TriangleArtists(outline, vertices)
+    if arrows:
+        for _ in range(3):
+            arrow = FancyArrowPatch(
+                (0, 0), (1, 0), arrowstyle="-|>", mutation_scale=fs(1.3), color=color,
+                lw=lw(0.5), shrinkA=0, shrinkB=0, zorder=4.2,
+            )  # fmt: skip
+            ax.add_patch(arrow)
+            result.arrows.append(arrow)
+    if labels:
+        for i in range(3):
+            result.labels.append(
+                ax.annotate(
+                    f"v{i}",
+                    (0, 0),
+                    xytext=(0, 0),
+                    textcoords="offset points",
+                    ha="center",
+                    va="center",
+                    fontsize=fs(0.95),
+                    fontweight="bold",
+                    color=color,
+                    bbox=label_box(),
+                    zorder=6,
+                    annotation_clip=False,
+                )  # fmt: skip
+            )
+    if edge_labels:
+        for _ in range(3):
+            result.edge_labels.append(
+                ax.annotate(
+                    "",
+                    (0, 0),
+                    xytext=(0, 0),
+                    textcoords="offset points",
+                    ha="center",
+                    va="center",
+                    fontsize=fs(0.75),
+                    style="italic",
+                    color=color,
+                    bbox=label_box(0.7),
+                    zorder=6,
+                    annotation_clip=False,
+                )  # fmt: skip
+            )
+    result.update(tri, edges)
+    return result
+
+
+# -- bounding box ------------------------------------------------------------------------------
+@dataclass
+class BBoxArtists(Artists):
+    """Artists of :func:`plot_bbox`: the exact box and the pixels whose centres it holds."""
+
+    outline: Rectangle
+    cells: Rectangle
+
+    def update(self, bbox) -> None:
+        """Move to a new bounding box (a BBox, Fill or FillTrace)."""
+        b = _bbox(bbox)
+        self.outline.set_bounds(b.xmin, b.ymin, b.xmax - b.xmin, b.ymax - b.ymin)
+        self.cells.set_bounds(b.col0, b.row0, b.col1 - b.col0, b.row1 - b.row0)
+
+
+def _bbox(obj) -> BBox:
+    return obj if isinstance(obj, BBox) else as_trace(obj, "plot_bbox").bbox
+
+
+def plot_bbox(ax, bbox, *, color=None) -> BBoxArtists:
+    """Draw the bounding box: its exact extent (dashed) and the pixels it makes us test.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    bbox : BBox, Fill (with trace) or FillTrace
+    color : colour, optional
+        Default: the "bbox" colour of :data:`~teachraster.plotting.style.COLORS`.
+
+    Returns
+    -------
+    BBoxArtists
+        ``outline``: dashed Rectangle from (xmin, ymin) to (xmax, ymax);
+        ``cells``: lightly shaded Rectangle over the pixels whose centres lie inside
+        (clipped to the image), the pixels the half-plane method visits.
+    """
+    color = COLORS["bbox"] if color is None else color
+    outline = Rectangle((0, 0), 0, 0, fill=False, ec=color, lw=lw(0.8), ls=(0, (4, 2)), zorder=3.8)
+    cells = Rectangle((0, 0), 0, 0, fc=tint(color, 0.14), ec="none", zorder=0.3)
+    ax.add_patch(cells)
+    ax.add_patch(outline)
+    result = BBoxArtists(outline, cells)
+    result.update(bbox)
+    return result
+
+
+# -- span tables: the split at u4 --------------------------------------------------------------
+@dataclass
+class SplitArtists(Artists):
+    """Artists of :func:`plot_split`."""
+
+    flat_bottom: Polygon
+    flat_top: Polygon
+    line: Line2D
+    point: Line2D
+    label: Text
+
+    def update(self, fill) -> None:
+        """Show the split of another fill; everything is hidden unless it used span tables."""
+        trace = as_trace(fill, "plot_split")
+        s = trace.span
+        if s is None or s.u4 is None:
+            self.set_visible(False)
+            return
+        v2y = float(s.sorted_xy[1, 1])
+        for poly, part in ((self.flat_bottom, s.flat_bottom), (self.flat_top, s.flat_top)):
+            poly.set_visible(part is not None)
+            if part is not None:
+                poly.set_xy(part)
+        self.line.set_data([0, trace.width], [v2y, v2y])
+        self.point.set_data([s.u4], [v2y])
+        # The label sits just above the split line, on the side of v4 towards v2: that part
+        # of the line is inside the triangle, so the label stays within the image.
+        right = s.u4 <= s.sorted_xy[1, 0]
+        self.label.xy = (s.u4, v2y)
+        self.label.set_position((fs(0.5) if right else -fs(0.5), fs(0.5)))
+        self.label.set_horizontalalignment("left" if right else "right")
+        self.label.set_text(f"v4: u4 = {s.u4:.2f}")
+        for artist in (self.line, self.point, self.label):
+            artist.set_visible(True)
+
+
+def plot_split(ax, fill) -> SplitArtists:
+    """The span-table split: the line y = v2.y, the point v4 = (u4, v2.y), the flat triangles.
+
+    Seed 000 §1.1: with the vertices sorted by y (v1 top, v3 bottom),
+    ``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` splits the triangle into a flat-bottom
+    (v1, v2, v4) and a flat-top (v2, v4, v3) triangle.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+        Rasterised with ``method="span"``; for another method (or a zero-height triangle,
+        which has no split) the artists are created hidden, so a view can reuse them.
+
+    Returns
+    -------
+    SplitArtists
+        ``flat_bottom``, ``flat_top`` (Polygon), ``line`` (dashed Line2D across the image),
+        ``point`` (marker at v4) and ``label`` (Annotation with the value of u4).
+    """
+    # opaque tints rather than alpha: the same look on white, and cheaper to redraw
+    flat_bottom = Polygon(np.zeros((3, 2)), closed=True, fc=tint(COLORS["flat_bottom"], 0.3),
+                          ec=COLORS["flat_bottom"], lw=lw(0.5), zorder=0.4)  # fmt: skip
+    flat_top = Polygon(np.zeros((3, 2)), closed=True, fc=tint(COLORS["flat_top"], 0.5),
+                       ec=COLORS["flat_top"], lw=lw(0.5), zorder=0.4)  # fmt: skip
+    ax.add_patch(flat_bottom)
+    ax.add_patch(flat_top)
+    line = ax.plot([], [], ls=(0, (6, 3)), color=COLORS["split"], lw=lw(0.7), zorder=3.9)[0]
+    point = ax.plot([], [], "D", color=COLORS["split"], ms=ms(0.9), mec="white", zorder=5)[0]
+    label = ax.annotate(
+        "", (0, 0), xytext=(0, 0), textcoords="offset points", va="bottom",
+        fontsize=fs(0.9), fontweight="bold", color=COLORS["split"], bbox=label_box(),
+        zorder=6, annotation_clip=False,
+    )  # fmt: skip
+    result = SplitArtists(flat_bottom, flat_top, line, point, label)
+    result.update(fill)
+    return result
+
+
+# -- the current step: raster line or pixel ----------------------------------------------------
+@dataclass
+class RasterLineArtists(Artists):
+    """Artists of :func:`plot_raster_line`."""
+
+    band: Rectangle
+    span: Line2D
+    cells: Rectangle
+
+    def update(self, fill, k: int) -> None:
+        """Show the raster line of step ``k`` (hidden unless step k fills a raster line)."""
+        trace = as_trace(fill, "plot_raster_line")
+        step = trace.step(k)
+        if step.kind != "row":
+            self.set_visible(False)
+            return
+        s = trace.span
+        i = step.index - trace.first_work_step
+        row = step.row
+        self.band.set_bounds(0, row, trace.width, 1)
+        xl, xr = float(s.x_left[i]), float(s.x_right[i])
+        self.span.set_data([xl, xr], [row + 0.5, row + 0.5])
+        self.span.set_visible(bool(np.isfinite(xl) and np.isfinite(xr) and xr >= xl))
+        start, stop = int(s.col_start[i]), int(s.col_stop[i])
+        self.cells.set_bounds(start, row, stop - start, 1)
+        self.cells.set_visible(stop > start)
+        self.band.set_visible(True)
+
+
+def plot_raster_line(ax, fill, k: int) -> RasterLineArtists:
+    """Highlight the raster line of step ``k`` of a span-table fill and its span.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+    k : int
+        A step index; unless it is a ``"row"`` step the artists are created hidden.
+
+    Returns
+    -------
+    RasterLineArtists
+        ``band``: the whole raster line, lightly shaded; ``span``: a thick segment along
+        y = row + 0.5 from where the line crosses the left edge to the right edge;
+        ``cells``: outline of the covered pixels of that row.
+    """
+    c = COLORS["current"]
+    band = Rectangle((0, 0), 0, 1, fc=c, ec="none", alpha=0.15, zorder=0.6)
+    cells = Rectangle((0, 0), 0, 1, fill=False, ec=c, lw=lw(0.8), zorder=4.8)
+    ax.add_patch(band)
+    ax.add_patch(cells)
+    span = ax.plot([], [], "-", color=c, lw=lw(0.9), marker="|", ms=ms(1.6), mew=lw(0.8),
+                   solid_capstyle="butt", zorder=4.9)[0]  # fmt: skip
+    result = RasterLineArtists(band, span, cells)
+    result.update(fill, k)
+    return result
+
+
+@dataclass
+class PixelArtists(Artists):
+    """Artists of :func:`plot_current_pixel`."""
+
+    box: Rectangle
+    centre: Line2D
+
+    def update(self, fill, k: int) -> None:
+        """Show the pixel of step ``k`` (hidden unless step k tests one pixel)."""
+        step = as_trace(fill, "plot_current_pixel").step(k)
+        if step.kind != "pixel":
+            self.set_visible(False)
+            return
+        self.box.set_xy((step.col, step.row))
+        self.centre.set_data([step.col + 0.5], [step.row + 0.5])
+        self.set_visible(True)
+
+
+def plot_current_pixel(ax, fill, k: int) -> PixelArtists:
+    """Outline the pixel that step ``k`` of a half-plane fill tests, and mark its centre.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+    k : int
+        A step index; unless it is a ``"pixel"`` step the artists are created hidden.
+
+    Returns
+    -------
+    PixelArtists
+        ``box`` (Rectangle outline) and ``centre`` (a cross at the sample point).
+    """
+    c = COLORS["current"]
+    box = Rectangle((0, 0), 1, 1, fill=False, ec=c, lw=lw(1.0), zorder=4.8)
+    ax.add_patch(box)
+    centre = ax.plot([], [], "x", color=c, ms=ms(1.0), mew=lw(0.7), zorder=4.9)[0]
+    result = PixelArtists(box, centre)
+    result.update(fill, k)
+    return result
+
+
+# -- edge functions ----------------------------------------------------------------------------
+def edge_images(fill) -> np.ndarray:
+    """(H, W, 3) edge-function values E_k (px²) at every pixel centre, in test order.
+
+    Computed from the snapped vertices over the whole image, so the half-plane of each edge
+    shows beyond the bounding box too. On the snapped grid the values are exact in float64
+    (small dyadic numbers), and equal the half-plane trace's own inside its bounding box.
+    """
+    trace = as_trace(fill, "edge_images")
+    xy = trace.snapped
+    rows, cols = np.indices((trace.height, trace.width))
+    px, py = cols + 0.5, rows + 0.5
+    out = np.empty((trace.height, trace.width, 3))
+    for k, (a, b) in enumerate(trace.edges):
+        (ax_, ay), (bx, by) = xy[a], xy[b]
+        out[..., k] = (bx - ax_) * (py - ay) - (by - ay) * (px - ax_)
+    return out
+
+
+@dataclass
+class EdgeValueArtists(Artists):
+    """Artists of :func:`plot_edge_values`."""
+
+    image: object
+    boundary: list = field(default_factory=list)
+    texts: list = field(default_factory=list)
+    legend: object = None
+    colorbar: object = None
+
+
+def _cell_texts(ax, values, fmt, *, rows=None, cols=None, colors=None, scale=0.55) -> list:
+    """Write ``fmt(value)`` at the centre of each cell of a (h, w) block (NaN skipped)."""
+    h, w = values.shape
+    r0 = 0 if rows is None else rows
+    c0 = 0 if cols is None else cols
+    out = []
+    for i in range(h):
+        for j in range(w):
+            v = values[i, j]
+            if isinstance(v, float | np.floating) and np.isnan(v):
+                continue
+            color = "black" if colors is None else colors[i, j]
+            out.append(ax.text(c0 + j + 0.5, r0 + i + 0.5, fmt(v), ha="center", va="center",
+                               fontsize=fs(scale), color=color, zorder=5))  # fmt: skip
+    return out
+
+
+def plot_edge_values(
+    ax,
+    fill,
+    k: int,
+    *,
+    signs: bool = False,
+    annotate: bool | None = None,
+    colorbar: bool = True,
+    title: bool = True,
+) -> EdgeValueArtists:
+    """The edge function of edge ``k`` at every pixel centre: values or just their signs.
+
+    ``E(a, b, p) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x)`` is positive on the
+    inside (to the right of a→b as seen on screen), negative outside and zero on the line.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+    k : {0, 1, 2}
+        Edge in test order (``trace.edges[k]``, named ``E{a}{b}`` as in the captions).
+    signs : bool
+        Show only the sign (+ inside, − outside, 0 on the edge) instead of the values.
+    annotate : bool, optional
+        Write the value (or sign) into each pixel. Default: when the image has at most
+        :data:`ANNOTATE_LIMIT` pixels.
+    colorbar : bool
+        A colour bar for values (a legend for signs).
+    title : bool
+        Set the Axes title.
+
+    Returns
+    -------
+    EdgeValueArtists
+        ``image``, ``boundary`` (the edge's line and its arrow), ``texts``, ``legend``,
+        ``colorbar``.
+    """
+    trace = as_trace(fill, "plot_edge_values")
+    if k not in (0, 1, 2):
+        raise ValueError(f"k must be 0, 1 or 2 (an edge in test order), got {k!r}")
+    e = edge_images(trace)[..., k]
+    a, b = trace.edges[k]
+    name = f"E{a}{b}"
+    h, w = e.shape
+    if annotate is None:  # values need bigger cells than signs to stay legible
+        annotate = h * w <= (ANNOTATE_LIMIT if signs else ANNOTATE_LIMIT // 2)
+    if signs:
+        sign = np.sign(e)
+        cmap = ListedColormap([COLORS["outside"], "#F2F2F2", COLORS["inside"]])
+        im = show_image(ax, sign, cmap=cmap, vmin=-1.5, vmax=1.5, alpha=0.55, zorder=0.5)
+    else:
+        m = float(np.abs(e).max()) or 1.0
+        im = show_image(ax, e, cmap=SIGNED_CMAP, norm=Normalize(-m, m), zorder=0.5)
+    result = EdgeValueArtists(im)
+    pa, pb = trace.snapped[a], trace.snapped[b]
+    if np.any(pa != pb):  # a zero-length edge has no line
+        result.boundary.append(ax.axline(pa, pb, color=COLORS["edge"], lw=lw(0.7), zorder=4))
+        arrow = FancyArrowPatch(pa, pb, arrowstyle="-|>", mutation_scale=fs(1.4),
+                                color=COLORS["edge"], lw=lw(0.7), shrinkA=0, shrinkB=0,
+                                zorder=4.2)  # fmt: skip
+        ax.add_patch(arrow)
+        result.boundary.append(arrow)
+    if annotate:
+        if signs:
+            result.texts = _cell_texts(ax, sign, lambda v: {1: "+", -1: "−", 0: "0"}[int(v)],
+                                       scale=0.8)  # fmt: skip
+        else:
+            result.texts = _cell_texts(ax, e, lambda v: f"{v:.3g}", scale=0.42)
+    if signs:
+        handles = [Patch(fc=COLORS["inside"], alpha=0.55, label=f"{name} > 0: inside"),
+                   Patch(fc=COLORS["outside"], alpha=0.55, label=f"{name} < 0: outside")]  # fmt: skip
+        result.legend = ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                                  borderaxespad=0.0)  # fmt: skip
+    elif colorbar:
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label=f"{name} (px²)")
+    if title:
+        what = "sign of " if signs else ""
+        tl = "top-left" if trace.top_left[k] else "not top-left"
+        ax.set_title(f"{what}{name}: edge v{a} → v{b} ({tl})")
+    return result
+
+
+# -- half-plane bail-out -----------------------------------------------------------------------
+@dataclass
+class BailoutArtists(Artists):
+    """Artists of :func:`plot_bailout`."""
+
+    image: object
+    texts: list = field(default_factory=list)
+    legend: object = None
+
+
+BAILOUT_COLORS = (COLORS["fill"], "#F0E442", "#E69F00", "#D55E00")
+
+
+def bailout(fill) -> tuple[np.ndarray, np.ndarray]:
+    """Bbox-local (rejected_by, tests_run) of a bail-out half-plane loop, for any method.
+
+    ``rejected_by`` is -1 where the pixel is covered, else the position (0, 1, 2) of the first
+    failing edge test; ``tests_run`` counts the tests a loop stopping at that failure runs.
+    A half-plane trace's own record is used where there is one.
+    """
+    trace = as_trace(fill, "bailout")
+    if trace.halfplane is not None:
+        return trace.halfplane.rejected_by, trace.halfplane.tests_run
+    b = trace.bbox
+    e = edge_images(trace)[b.row0 : b.row1, b.col0 : b.col1]
+    ok = (e > 0) | ((e == 0) & np.asarray(trace.top_left)[None, None, :])
+    ok0, ok1, ok2 = ok[..., 0], ok[..., 1], ok[..., 2]
+    rejected = np.where(~ok0, 0, np.where(~ok1, 1, np.where(~ok2, 2, -1))).astype(np.int8)
+    run = (1 + ok0.astype(np.int8) + (ok0 & ok1)).astype(np.int8)
+    if trace.signed_area == 0:  # zero area: covers nothing though no test may fail
+        rejected = np.where(rejected < 0, 2, rejected).astype(np.int8)
+    return rejected, run
+
+
+def plot_bailout(ax, fill, *, annotate: bool | None = None, title: bool = True) -> BailoutArtists:
+    """Which edge test rejected each pixel of the bounding box, and how many tests ran.
+
+    A scalar half-plane loop tests the three edges in turn and stops at the first failure,
+    so pixels rejected by test 1 cost one test, by test 2 two, and covered pixels all three.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+        Either method (for span tables the tests are evaluated afresh).
+    annotate : bool, optional
+        Write the number of tests run into each pixel. Default: when the bounding box has at
+        most :data:`ANNOTATE_LIMIT` pixels.
+    title : bool
+        Set the Axes title (with the average number of tests per pixel).
+
+    Returns
+    -------
+    BailoutArtists
+        ``image`` (0 covered, 1-3 rejected by that test, NaN outside the box), ``texts``,
+        ``legend``.
+    """
+    trace = as_trace(fill, "plot_bailout")
+    rejected, run = bailout(trace)
+    local = np.where(rejected < 0, 0.0, rejected + 1.0)
+    if trace.culled:
+        local[:] = np.nan  # nothing is tested: the whole triangle was culled
+    image = trace.image(local)
+    im = show_image(ax, image, cmap=ListedColormap(BAILOUT_COLORS), vmin=-0.5, vmax=3.5,
+                    alpha=0.9, zorder=0.5)  # fmt: skip
+    result = BailoutArtists(im)
+    b = trace.bbox
+    annotate = b.size <= ANNOTATE_LIMIT if annotate is None else annotate
+    if annotate and not trace.culled:
+        result.texts = _cell_texts(ax, run.astype(float), lambda v: str(int(v)), rows=b.row0,
+                                   cols=b.col0, scale=0.6)  # fmt: skip
+    names = [f"E{a}{c}" for a, c in trace.edges]
+    handles = [Patch(fc=BAILOUT_COLORS[0], label="covered: 3 tests")] + [
+        Patch(fc=BAILOUT_COLORS[t + 1],
+              label=f"out at test {t + 1} ({names[t]}): {t + 1} test" + "s" * (t > 0))
+        for t in range(3)
+    ]  # fmt: skip
+    result.legend = ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                              borderaxespad=0.0, title="tests run per pixel")  # fmt: skip
+    if title:
+        if trace.culled:
+            ax.set_title("bail-out: triangle culled, no pixel tested")
+        elif b.size == 0:
+            ax.set_title("bail-out: no pixel centre in the bounding box")
+        else:
+            ax.set_title(f"bail-out: {run.mean():.2f} tests per pixel (3 without)")
+    return result
+
+
+# -- visit order -------------------------------------------------------------------------------
+@dataclass
+class VisitArtists(Artists):
+    """Artists of :func:`plot_visit_order`."""
+
+    image: object
+    path: Line2D | None = None
+    texts: list = field(default_factory=list)
+    colorbar: object = None
+
+
+def visit_order(fill) -> tuple[np.ndarray, np.ndarray]:
+    """(rows, cols) of the pixels a fill touches, in the order it touches them.
+
+    Half-planes visit every pixel of the bounding box in row-major order; span tables write
+    only the covered pixels, raster line by raster line, left to right.
+    """
+    trace = as_trace(fill, "visit_order")
+    b = trace.bbox
+    if trace.culled:
+        return np.zeros(0, dtype=int), np.zeros(0, dtype=int)
+    if trace.method == "halfplane":
+        r, c = np.indices(b.shape)
+    else:
+        r, c = np.nonzero(trace.covered)  # row-major: the order the spans write them
+    return r.ravel() + b.row0, c.ravel() + b.col0
+
+
+def plot_visit_order(
+    ax,
+    fill,
+    *,
+    numbers: bool | None = None,
+    path: bool = True,
+    colorbar: bool = True,
+    title: bool = True,
+) -> VisitArtists:
+    """Colour each pixel by when the fill reaches it, and trace the path through the centres.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+    numbers : bool, optional
+        Write the visit number into each pixel. Default: up to 100 visited pixels.
+    path : bool
+        Join the centres in visiting order with a thin line.
+    colorbar : bool
+        A colour bar of the visit number.
+    title : bool
+        Set the Axes title.
+
+    Returns
+    -------
+    VisitArtists
+        ``image`` (visit number, NaN where never visited), ``path``, ``texts``, ``colorbar``.
+    """
+    trace = as_trace(fill, "plot_visit_order")
+    rows, cols = visit_order(trace)
+    order = np.full((trace.height, trace.width), np.nan)
+    order[rows, cols] = np.arange(len(rows))
+    im = show_image(ax, order, cmap=VALUE_CMAP, vmin=0, vmax=max(len(rows) - 1, 1), alpha=0.85,
+                    zorder=0.5)  # fmt: skip
+    result = VisitArtists(im)
+    if path and len(rows):
+        result.path = ax.plot(cols + 0.5, rows + 0.5, "-", color=COLORS["edge"], lw=lw(0.3),
+                              alpha=0.6, zorder=3)[0]  # fmt: skip
+    numbers = len(rows) <= 100 if numbers is None else numbers
+    if numbers:
+        colors = im.cmap(im.norm(np.arange(len(rows))))
+        for n, (r, c) in enumerate(zip(rows, cols)):
+            # black on light cells, white on dark ones
+            ink = "black" if colors[n, :3] @ [0.299, 0.587, 0.114] > 0.5 else "white"
+            result.texts.append(ax.text(c + 0.5, r + 0.5, str(n), ha="center", va="center",
+                                        fontsize=fs(0.5), color=ink, zorder=5))  # fmt: skip
+    if colorbar:
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label="visit number")
+    if title:
+        if trace.method == "halfplane":
+            what = f"half-planes: all {len(rows)} pixels of the box"
+        else:
+            what = f"span tables: only the {len(rows)} covered"
+        ax.set_title(f"visit order, {what}")
+    return result

@@ -1,0 +1,490 @@
+"""Composite figures that update in place: stepping through a fill, comparing interpolations.
+
+Both views draw their artists once. Afterwards :meth:`FillView.show_step`,
+:meth:`FillView.set_fill`, :meth:`ComparisonView.update` and :meth:`InterpolationView.update`
+only change those artists' data (``set_data``, ``set_xy``, ``set_text``, ``set_visible``),
+never clear the Axes or add artists, then ask the canvas for a redraw with ``draw_idle``. That
+keeps a step or a vertex drag fast enough for a slider in a notebook, and lets widgets drive
+the views from code.
+
+The figures use fixed margins rather than a layout engine: a layout engine would run again at
+every redraw.
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+from matplotlib.colors import to_rgba
+from matplotlib.transforms import ScaledTranslation
+
+from ..trace import FillTrace, Step
+from ._common import (
+    Artists,
+    as_trace,
+    fs,
+    image_shape,
+    quiet_nanmax,
+    set_image,
+    show_image,
+    two_colour,
+)
+from .images import ImageArtists, _show, attribute_image, plot_error_heatmap
+from .plots import (
+    plot_bbox,
+    plot_coverage,
+    plot_current_pixel,
+    plot_pixel_centres,
+    plot_pixel_grid,
+    plot_raster_line,
+    plot_split,
+    plot_triangle,
+)
+from .style import COLORS
+
+METHOD_NAMES = {"span": "Span tables", "halfplane": "Half-planes"}
+
+
+def _new_figure(figsize, rect):
+    """A pyplot figure (so notebooks display it) with one Axes at ``rect``, no layout engine."""
+    import matplotlib.pyplot as plt  # pyplot only when a view makes its own figure
+
+    fig = plt.figure(figsize=figsize)
+    return fig, fig.add_axes(rect)
+
+
+class FillView:
+    """Step through one fill: a figure whose artists each step updates in place.
+
+    It shows the pixel grid and centres, the triangle (edges in test order, with arrows and
+    the edge-function names used in the captions), the bounding box, the pixels filled so far,
+    for half-planes the pixels tested and rejected so far, the current raster line (span
+    tables) or pixel (half-planes), the split at u4 (span tables), a header and the caption of
+    the current step. The bounding box appears from its set-up step on and the split from the
+    split step on, as the algorithm finds them.
+
+    Parameters
+    ----------
+    fill : Fill (rasterised with ``trace=True``) or FillTrace
+    ax : matplotlib Axes, optional
+        Draw into this Axes (the caption goes just below it). Default: a new figure.
+    step : int, optional
+        Step to show first; default the last one (the finished fill).
+    legend : bool
+        A legend of the colours, to the right of the grid.
+    centres : bool
+        Mark the pixel centres (where coverage is decided).
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import teachraster as tr
+    >>> fill = tr.rasterize(tr.Triangle([[1, 1], [7, 2], [3, 7]]), 8, 8, trace=True)
+    >>> view = FillView(fill, step=0)
+    >>> view.show_step(5).kind
+    'pixel'
+    >>> bool((view.coverage.image.get_array() == fill.trace.coverage_at(5)).all())
+    True
+    >>> import matplotlib.pyplot as plt; plt.close(view.fig)
+    """
+
+    def __init__(self, fill, *, ax=None, step: int | None = None, legend: bool = True,
+                 centres: bool = True) -> None:  # fmt: skip
+        trace = as_trace(fill, "FillView")
+        if ax is None:
+            # room on the right for the legend and below for a three-line caption
+            ax = _new_figure((12.0, 9.5), (0.07, 0.13, 0.62, 0.745))[1]
+        self.fig, self.ax = ax.figure, ax
+        W, H = trace.width, trace.height
+        self.grid = plot_pixel_grid(ax, W, H, ticks=5)  # few labels: each costs a step time
+        zeros = np.zeros((H, W))
+        # Pixels tested and rejected so far (half-planes): the work span tables avoid.
+        self.rejected = show_image(ax, zeros, cmap=two_colour(COLORS["rejected"]), vmin=0,
+                                   vmax=1, zorder=0.45)  # fmt: skip
+        self.coverage = plot_coverage(ax, zeros)
+        self.bbox = plot_bbox(ax, trace)
+        self.split = plot_split(ax, trace)
+        self.centres = plot_pixel_centres(ax, W, H) if centres else None
+        self.triangle = plot_triangle(ax, trace, edge_labels=True)
+        self.raster_line = plot_raster_line(ax, trace, 0)
+        self.pixel = plot_current_pixel(ax, trace, 0)
+        # An explicit title position: automatic placement (above the top ticks) costs time
+        # at every draw.
+        self.header = ax.set_title("", y=1.0, pad=fs(3.2), loc="left")
+        # Wrapped by hand (textwrap, width from the figure): matplotlib's wrap=True measures
+        # every word at every draw, which costs more than the rest of a step.
+        self.caption_text = ax.text(0.0, -0.03, "", transform=ax.transAxes, va="top",
+                                    ha="left", fontsize=fs(0.85), linespacing=1.3)  # fmt: skip
+        self._caption = ""
+        self.legend = Key(ax, 5) if legend else None
+        self._trace: FillTrace | None = None
+        self._step = -1
+        self.set_fill(fill, step=step, draw=False)
+
+    # -- state -----------------------------------------------------------------------------
+    @property
+    def trace(self) -> FillTrace:
+        """The trace of the fill on show."""
+        return self._trace
+
+    @property
+    def n_steps(self) -> int:
+        """Number of steps of the current fill (a slider runs from 0 to ``n_steps - 1``)."""
+        return len(self._trace)
+
+    @property
+    def step(self) -> int:
+        """Index of the step on show."""
+        return self._step
+
+    @property
+    def caption(self) -> str:
+        """Caption of the step on show, as ``trace.caption(step)`` (displayed wrapped)."""
+        return self._caption
+
+    def _wrap(self, text: str) -> str:
+        """``text`` broken into lines that fit between the Axes' left edge and the figure's."""
+        fig_w = self.fig.get_figwidth() * 72.0  # points
+        x0 = self.ax.get_position().x0
+        # DejaVu Sans averages about 0.55 em per character of running text
+        chars = int((1.0 - x0) * fig_w * 0.95 / (0.55 * self.caption_text.get_fontsize()))
+        return textwrap.fill(text, max(chars, 20), break_on_hyphens=False,
+                             break_long_words=False)  # fmt: skip
+
+    @property
+    def artists(self) -> list:
+        """Every artist the view created (for tests and custom styling)."""
+        parts = [self.grid, self.coverage, self.bbox, self.split, self.centres, self.triangle,
+                 self.raster_line, self.pixel, self.legend]  # fmt: skip
+        out = [a for p in parts if isinstance(p, Artists) for a in p.artists]
+        return out + [self.rejected, self.header, self.caption_text]
+
+    # -- updates ---------------------------------------------------------------------------
+    def show_step(self, k: int, *, draw: bool = True) -> Step:
+        """Show the fill after steps 0..k, updating the existing artists in place.
+
+        Parameters
+        ----------
+        k : int
+            Step index; negative counts from the end. Out of range raises IndexError.
+        draw : bool
+            Ask the canvas to redraw (``draw_idle``) afterwards.
+
+        Returns
+        -------
+        Step
+            The step now on show (its ``caption`` is the caption displayed).
+        """
+        trace = self._trace
+        step = trace.step(k)
+        k = step.index
+        self._step = k
+        cov = trace.coverage_at(k).astype(np.float64)
+        self.coverage.image = set_image(self.coverage.image, cov)
+        if self._visit_step is not None:
+            b = trace.bbox
+            local = (self._visit_step <= k) & ~trace.covered
+            img = np.zeros((trace.height, trace.width))
+            img[b.row0 : b.row1, b.col0 : b.col1] = local
+            self.rejected = set_image(self.rejected, img)
+            # nothing rejected yet: skip drawing the layer at all
+            self.rejected.set_visible(bool(local.any()))
+        self.bbox.outline.set_visible(k >= self._bbox_step)
+        # the pixels of the box are work only for half-planes, which test every one of them
+        self.bbox.cells.set_visible(k >= self._bbox_step and trace.halfplane is not None)
+        if k >= self._split_step:
+            self.split.update(trace)  # shows the parts that exist
+        else:
+            self.split.set_visible(False)
+        self.raster_line.update(trace, k)
+        self.pixel.update(trace, k)
+        method = METHOD_NAMES.get(trace.method, trace.method)
+        self.header.set_text(f"{method}: step {k} of {len(trace) - 1} ({step.kind})")
+        self._caption = step.caption
+        self.caption_text.set_text(self._wrap(step.caption))
+        if draw:
+            self.fig.canvas.draw_idle()
+        return step
+
+    def set_fill(self, fill, *, step: int | None = None, draw: bool = True) -> Step:
+        """Show another fill (a moved vertex, the other method, ...), reusing the artists.
+
+        Parameters
+        ----------
+        fill : Fill (with trace) or FillTrace
+        step : int, optional
+            Step to show. Default: the last step if the view was on the last step (a
+            finished fill stays finished while a vertex moves), else the same step index,
+            clipped to the new fill's steps.
+        draw : bool
+            Ask the canvas to redraw afterwards.
+
+        Returns
+        -------
+        Step
+        """
+        trace = as_trace(fill, "FillView.set_fill")
+        old = self._trace
+        if step is None:
+            at_end = old is None or self._step >= len(old) - 1
+            step = len(trace) - 1 if at_end else min(self._step, len(trace) - 1)
+        W, H = trace.width, trace.height
+        if old is None or (old.width, old.height) != (W, H):
+            self.grid.update(W, H)
+            if self.centres is not None:
+                self.centres.update(W, H)
+            # same artists for the same size; new ones (same colours) for a new size
+            self.rejected = set_image(self.rejected, np.zeros((H, W)))
+            self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
+        self._trace = trace
+        kinds = [kind for kind, _ in trace.setup]
+        self._bbox_step = kinds.index("bbox") if "bbox" in kinds else 0
+        self._split_step = kinds.index("split") if "split" in kinds else len(trace)
+        if trace.halfplane is not None:
+            b = trace.bbox
+            self._visit_step = trace.first_work_step + np.arange(b.size).reshape(b.shape)
+        else:
+            self._visit_step = None
+            self.rejected.set_visible(False)
+        self.triangle.update(trace)
+        # the edge names are what half-plane captions talk about; span captions do not
+        for label in self.triangle.edge_labels:
+            label.set_visible(trace.method == "halfplane")
+        self.bbox.update(trace)
+        if self.legend is not None and (old is None or old.method != trace.method):
+            self._make_legend(trace.method)
+        return self.show_step(step, draw=draw)
+
+    def _make_legend(self, method: str) -> None:
+        """Fill the key with what this method shows (same artists, new labels)."""
+        c = COLORS
+        entries = [("filled", c["fill"], c["fill"])]
+        if method == "halfplane":
+            entries.append(("tested, rejected", c["rejected"], c["rejected"]))
+        entries.append(("bounding box", "none", c["bbox"]))
+        if method == "span":
+            entries += [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
+                        ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),
+                        ("current raster line", "none", c["current"])]  # fmt: skip
+        else:
+            entries.append(("current pixel", "none", c["current"]))
+        self.legend.set_entries(entries)
+
+
+class Key(Artists):
+    """A legend drawn as plain markers and texts beside an Axes.
+
+    It looks like a legend but costs a third of one at every draw (a matplotlib Legend lays
+    out its boxes again each time), and its entries change in place.
+    """
+
+    def __init__(self, ax, n: int, *, x: float = 1.04, y: float = 1.0) -> None:
+        self.swatches, self.texts = [], []
+        fig = ax.figure
+        size = fs(0.75)
+        for i in range(n):
+            # each entry one line lower, measured in inches so it follows the font size
+            shift = ScaledTranslation(0, -i * size * 1.7 / 72, fig.dpi_scale_trans)
+            trans = ax.transAxes + shift
+            self.swatches.append(ax.plot([x], [y], "s", ms=size * 1.1, mew=2.0,
+                                         transform=trans, clip_on=False)[0])  # fmt: skip
+            self.texts.append(ax.text(x + 0.04, y, "", transform=trans, va="center",
+                                      ha="left", fontsize=size, clip_on=False))  # fmt: skip
+
+    @property
+    def artists(self) -> list:
+        return self.swatches + self.texts
+
+    def set_entries(self, entries) -> None:
+        """``entries``: (label, face colour, edge colour) per line; the rest are hidden."""
+        for i, (swatch, text) in enumerate(zip(self.swatches, self.texts)):
+            on = i < len(entries)
+            swatch.set_visible(on)
+            text.set_visible(on)
+            if on:
+                label, face, edge = entries[i]
+                swatch.set_markerfacecolor(face)
+                swatch.set_markeredgecolor(edge)
+                text.set_text(label)
+
+
+class ComparisonView:
+    """Two images side by side and the heatmap of their difference, updated in place.
+
+    For example affine vs perspective-correct values of an attribute, or two renders of a
+    textured floor. Value images share one colour range, so equal colours mean equal values.
+
+    Parameters
+    ----------
+    a, b : (H, W) or (H, W, 3) arrays
+        The two images (NaN: not covered, drawn transparent).
+    titles : (str, str)
+        Titles of the two images.
+    label : str
+        What the heatmap shows (its title says the maximum too).
+    axes : three matplotlib Axes, optional
+        Default: a new figure with three panels.
+    vmin, vmax : float, optional
+        Fixed colour range of the value images; default the range of both images, renewed at
+        every update.
+    grid : bool
+        Pixel boundaries on every panel (up to the grid size limit).
+    """
+
+    def __init__(self, a, b, *, titles=("a", "b"), label: str = "|a − b|", axes=None,
+                 vmin=None, vmax=None, grid: bool = True) -> None:  # fmt: skip
+        a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+        h, w = a.shape[:2]
+        caxes = [None, None, None]
+        if axes is None:
+            import matplotlib.pyplot as plt
+
+            # Three equal panels whose boxes match the image's aspect, each colour bar exactly
+            # as tall as its panel, the figure as tall as the panels need: computed once here,
+            # so no layout engine runs at every draw. Sizes in inches.
+            pw = 4.4
+            ph = pw * h / w
+            if ph > 5.4:  # tall images: limit the height instead
+                ph, pw = 5.4, 5.4 * w / h
+            fw, fh = 18.0, ph + 1.9  # room above for titles and column labels
+            fig = plt.figure(figsize=(fw, fh))
+            bottom = 0.35 / fh
+            lefts = (0.81, 6.39, 12.24)
+
+            def rect(x, width):
+                return (x / fw, bottom, width / fw, ph / fh)
+
+            axes = [fig.add_axes(rect(x, pw)) for x in lefts]
+            if a.ndim == 2:  # colour images have no colour bar
+                caxes[1] = fig.add_axes(rect(lefts[1] + pw + 0.2, 0.2))
+            caxes[2] = fig.add_axes(rect(lefts[2] + pw + 0.2, 0.2))
+        self.axes = list(axes)
+        self.fig = self.axes[0].figure
+        self._fixed = (vmin, vmax)
+        lo, hi = self._range(a, b)
+        # Row and column labels on the first panel only (the panels show the same pixels):
+        # tick labels are the dearest part of a redraw.
+        self.grids = [plot_pixel_grid(ax, w, h, ticks=5 if i == 0 else False) if grid else None
+                      for i, ax in enumerate(self.axes)]  # fmt: skip
+        self.images: list[ImageArtists] = []
+        for ax, data, title, cax in zip(self.axes[:2], (a, b), titles, caxes):
+            # One colour bar, by the second panel: both value images share the range.
+            self.images.append(_show(ax, data, vmin=lo, vmax=hi, colorbar=False))
+            if ax is self.axes[1] and data.ndim == 2:
+                cb_kw = {"cax": cax} if cax is not None else {"ax": ax, "shrink": 0.85}
+                self.images[-1].colorbar = self.fig.colorbar(self.images[-1].image, **cb_kw)
+            ax.set_title(title, y=1.0, pad=fs(3.0))
+        self.axes[2].set_title("", y=1.0, pad=fs(3.0))  # fixed position: no per-draw layout
+        own_figure = caxes[2] is not None
+        self.heatmap = plot_error_heatmap(self.axes[2], a, b, label=label,
+                                          colorbar=not own_figure)  # fmt: skip
+        if own_figure:
+            self.heatmap.colorbar = self.fig.colorbar(self.heatmap.image, cax=caxes[2],
+                                                      label=label)  # fmt: skip
+
+    def _range(self, a, b):
+        vmin, vmax = self._fixed
+        if a.ndim == 3:
+            return 0.0, 1.0
+        lo = quiet_nanmax(-np.concatenate([a.ravel(), b.ravel()]))
+        hi = quiet_nanmax(np.concatenate([a.ravel(), b.ravel()]))
+        lo = -lo if np.isfinite(lo) else 0.0
+        hi = hi if np.isfinite(hi) else 1.0
+        if hi <= lo:
+            lo, hi = lo - 0.5, hi + 0.5  # a constant image still needs a colour range
+        return (lo if vmin is None else vmin), (hi if vmax is None else vmax)
+
+    @property
+    def maximum(self) -> float:
+        """The largest |a − b| on show (NaN when nothing is covered)."""
+        return self.heatmap.maximum
+
+    def update(self, a, b, *, draw: bool = True) -> None:
+        """Show new images in the same artists."""
+        a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+        h, w = a.shape[:2]
+        old = image_shape(self.images[0].image)[:2]
+        if (h, w) != old:
+            for g in self.grids:
+                if g is not None:
+                    g.update(w, h)
+        lo, hi = self._range(a, b)
+        for art, data in zip(self.images, (a, b)):
+            art.update(data)
+            if data.ndim == 2:
+                art.image.set_clim(lo, hi)
+        self.heatmap.update(a, b)
+        if draw:
+            self.fig.canvas.draw_idle()
+
+
+class InterpolationView(ComparisonView):
+    """Affine vs perspective-correct values of one attribute of a fill, and their error.
+
+    Both interpolations come from the fill's trace (a traced fill records both, whatever
+    ``interpolation`` it was made with). The triangle is outlined, with vertex labels, on every
+    panel.
+
+    Parameters
+    ----------
+    fill : Fill (with trace) or FillTrace
+    name : str, optional
+        Attribute to show; may be left out when the triangle has only one.
+    channel : int, optional
+        One channel of a vector attribute (a 3-channel one is otherwise shown as colour).
+    axes : three matplotlib Axes, optional
+    vmin, vmax : float, optional
+        Fixed colour range of the values (default: their range, renewed at every update).
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import teachraster as tr
+    >>> tri = tr.Triangle([[1, 1], [15, 3], [4, 14]], w=[1, 4, 2], attrs={"u": [0, 1, 0]})
+    >>> view = InterpolationView(tr.rasterize(tri, 16, 16, trace=True))
+    >>> view.maximum > 0.1     # w differs across the vertices: affine is visibly wrong
+    True
+    >>> import matplotlib.pyplot as plt; plt.close(view.fig)
+    """
+
+    def __init__(self, fill, name: str | None = None, *, channel: int | None = None, axes=None,
+                 vmin=None, vmax=None) -> None:  # fmt: skip
+        trace = as_trace(fill, "InterpolationView")
+        self.name = name
+        self.channel = channel
+        a, b = self._images(trace)
+        label = self.name + ("" if channel is None else f"[{channel}]")
+        super().__init__(
+            a, b, titles=(f"{label}: affine (screen space)", f"{label}: perspective-correct"),
+            label="|affine − perspective|", axes=axes, vmin=vmin, vmax=vmax,
+        )  # fmt: skip
+        self.triangles = [plot_triangle(ax, trace, arrows=False) for ax in self.axes]
+        for tri in self.triangles:
+            tri.outline.set_linewidth(tri.outline.get_linewidth() * 0.6)
+        self._trace = trace
+
+    def _images(self, trace):
+        if self.name is None:
+            names = list(trace.pixel_affine)
+            if len(names) != 1:
+                raise ValueError(f"pick an attribute by name: {names or 'none given'}")
+            self.name = names[0]
+        a = attribute_image(trace, self.name, mode="affine", channel=self.channel)
+        b = attribute_image(trace, self.name, mode="perspective", channel=self.channel)
+        return a, b
+
+    @property
+    def trace(self) -> FillTrace:
+        return self._trace
+
+    def update(self, fill, *, draw: bool = True) -> None:  # type: ignore[override]
+        """Show another fill (e.g. after a vertex or its w moved) in the same artists."""
+        trace = as_trace(fill, "InterpolationView.update")
+        a, b = self._images(trace)
+        self._trace = trace
+        for tri in self.triangles:
+            tri.update(trace)
+        super().update(a, b, draw=draw)

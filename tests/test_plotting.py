@@ -1,0 +1,482 @@
+"""The plotting layer: every plot returns its artists, the views update in place and agree
+with the trace, the style switches and comes back, the error heatmap reports the true maximum."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+import warnings  # noqa: E402
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster import plotting as tp  # noqa: E402
+from teachraster.scenes import get_scene  # noqa: E402
+
+METHODS = ("span", "halfplane")
+W = H = 16
+
+
+@pytest.fixture(autouse=True)
+def close_figures():
+    yield
+    plt.close("all")
+
+
+def make_fill(method="halfplane", xy=((1.3, 1.2), (14.6, 4.7), (5.2, 14.1)), size=(W, H), **kw):
+    tri = tr.Triangle(
+        xy, w=[1.0, 3.0, 6.0], z=[0.1, 0.5, 0.9], attrs={"u": [0.0, 1.0, 0.0], "rgb": np.eye(3)}
+    )
+    return tr.rasterize(tri, *size, method=method, trace=True, **kw)
+
+
+# Awkward fills: culled, zero area, one row high, partly and wholly outside the image.
+ODD = {
+    "culled": dict(xy=((1, 1), (12, 2), (4, 13)), cull="back"),
+    "zero_area": dict(xy=((1, 1), (5, 5), (9, 9))),
+    "one_point": dict(xy=((3, 3), (3, 3), (3, 3))),
+    "flat_top": dict(xy=((1, 2), (14, 2), (6, 13))),
+    "thin": dict(xy=((0.2, 4.4), (15.7, 4.6), (8.0, 4.55))),
+    "partly_outside": dict(xy=((-5, -3), (30, 4), (6, 25))),
+    "outside": dict(xy=((40, 40), (50, 41), (45, 60))),
+}
+
+
+def on_axes(result, ax):
+    """The result lists artists, every one of them on ``ax``."""
+    artists = list(result)
+    assert artists, "no artists returned"
+    assert all(a.axes is ax for a in artists), [a for a in artists if a.axes is not ax]
+    children = ax.get_children()
+    assert all(a in children for a in artists)
+    return artists
+
+
+# -- packaging ---------------------------------------------------------------------------------
+def test_core_does_not_import_matplotlib_but_plotting_does():
+    code = (
+        "import sys, teachraster\n"
+        "assert 'matplotlib' not in sys.modules\n"
+        "import teachraster.plotting\n"
+        "assert 'matplotlib' in sys.modules\n"
+        "assert 'matplotlib.pyplot' not in sys.modules, 'plotting should not need pyplot'\n"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_every_name_in_all_exists():
+    for name in tp.__all__:
+        assert hasattr(tp, name), name
+
+
+# -- each plot function ------------------------------------------------------------------------
+def _calls(fill):
+    t = fill.trace
+    kinds = [k for k, _ in t.setup]
+    split_step = kinds.index("split") if "split" in kinds else 0
+    row_step = t.first_work_step
+    return {
+        "grid": lambda ax: tp.plot_pixel_grid(ax, W, H),
+        "centres": lambda ax: tp.plot_pixel_centres(ax, W, H, fill),
+        "coverage": lambda ax: tp.plot_coverage(ax, fill),
+        "triangle": lambda ax: tp.plot_triangle(ax, fill, edge_labels=True),
+        "triangle_xy": lambda ax: tp.plot_triangle(ax, [[0, 0], [4, 1], [2, 5]]),
+        "bbox": lambda ax: tp.plot_bbox(ax, fill),
+        "split": lambda ax: tp.plot_split(ax, fill),
+        "raster_line": lambda ax: tp.plot_raster_line(ax, fill, max(row_step, split_step)),
+        "current_pixel": lambda ax: tp.plot_current_pixel(ax, fill, row_step),
+        "edge_values": lambda ax: tp.plot_edge_values(ax, fill, 1),
+        "edge_signs": lambda ax: tp.plot_edge_values(ax, fill, 2, signs=True),
+        "bailout": lambda ax: tp.plot_bailout(ax, fill),
+        "visit_order": lambda ax: tp.plot_visit_order(ax, fill),
+        "barycentric": lambda ax: tp.plot_barycentric(ax, fill),
+        "barycentric_1": lambda ax: tp.plot_barycentric(ax, fill, 1),
+        "attribute": lambda ax: tp.plot_attribute(ax, fill, "u"),
+        "attribute_affine": lambda ax: tp.plot_attribute(ax, fill, "u", mode="affine"),
+        "attribute_rgb": lambda ax: tp.plot_attribute(ax, fill, "rgb"),
+        "heatmap": lambda ax: tp.plot_error_heatmap(
+            ax, tp.attribute_image(fill, "u", mode="affine"), fill.attrs["u"]
+        ),
+        "depth": lambda ax: tp.plot_depth(ax, fill),
+        "image": lambda ax: tp.plot_image(ax, fill.attrs["rgb"]),
+    }
+
+
+CALL_NAMES = list(_calls(make_fill()))
+
+
+@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("name", CALL_NAMES)
+def test_plot_functions_return_their_artists_on_the_axes(method, name):
+    fill = make_fill(method)
+    fig, ax = plt.subplots()
+    result = _calls(fill)[name](ax)
+    if name in ("split", "raster_line") and method == "halfplane":
+        # created hidden, so that a view can reuse them for span tables
+        assert not any(a.get_visible() for a in result)
+    elif name == "current_pixel" and method == "span":
+        assert not any(a.get_visible() for a in result)
+    on_axes(result, ax)
+    fig.canvas.draw()
+
+
+@pytest.mark.parametrize("case", list(ODD))
+@pytest.mark.parametrize("name", CALL_NAMES)
+def test_plot_functions_survive_odd_triangles(case, name):
+    method = "span" if name in ("split", "raster_line") else "halfplane"
+    fill = make_fill(method, **ODD[case])
+    fig, ax = plt.subplots()
+    result = _calls(fill)[name](ax)
+    assert all(a.axes is ax for a in result)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no all-NaN or divide warnings while drawing
+        fig.canvas.draw()
+
+
+def test_plot_coverage_data_is_the_coverage():
+    fill = make_fill()
+    fig, ax = plt.subplots()
+    result = tp.plot_coverage(ax, fill)
+    np.testing.assert_array_equal(np.asarray(result.image.get_array()), fill.coverage)
+    other = make_fill(xy=((0, 0), (15, 0), (0, 15)))
+    result.update(other)
+    np.testing.assert_array_equal(np.asarray(result.image.get_array()), other.coverage)
+
+
+def test_pixel_axes_are_y_down_with_centres_on_ticks():
+    fig, ax = plt.subplots()
+    tp.plot_pixel_grid(ax, 10, 6)
+    assert ax.get_xlim() == (0, 10)
+    assert ax.get_ylim() == (6, 0)  # y down: row 0 at the top
+    assert ax.get_xticks()[0] == 0.5
+
+
+def test_triangle_labels_and_arrows():
+    fig, ax = plt.subplots()
+    xy = np.array([[1.0, 1.0], [9.0, 2.0], [3.0, 8.0]])
+    result = tp.plot_triangle(ax, xy)
+    assert [t.get_text() for t in result.labels] == ["v0", "v1", "v2"]
+    assert len(result.arrows) == 3
+    np.testing.assert_array_equal(result.vertices.get_xydata(), xy)
+    # arrows point along v0→v1, v1→v2, v2→v0
+    for arrow, (a, b) in zip(result.arrows, [(0, 1), (1, 2), (2, 0)]):
+        (x0, y0), (x1, y1) = arrow._posA_posB
+        assert np.dot([x1 - x0, y1 - y0], xy[b] - xy[a]) > 0
+
+
+def test_split_shows_u4():
+    fill = make_fill("span")
+    fig, ax = plt.subplots()
+    result = tp.plot_split(ax, fill)
+    s = fill.trace.span
+    assert f"{s.u4:.2f}" in result.label.get_text()
+    assert result.point.get_xdata()[0] == s.u4
+    np.testing.assert_array_equal(result.flat_bottom.get_xy()[:3], s.flat_bottom)
+    np.testing.assert_array_equal(result.flat_top.get_xy()[:3], s.flat_top)
+
+
+def test_edge_values_match_the_half_plane_trace():
+    fill = make_fill("halfplane")
+    t, b = fill.trace, fill.trace.bbox
+    mine = tp.edge_images(fill)[b.row0 : b.row1, b.col0 : b.col1]
+    np.testing.assert_array_equal(mine, t.halfplane.edge_values)
+
+
+def test_bailout_of_span_tables_matches_half_planes():
+    for xy in ((1.3, 1.2), (14.6, 4.7), (5.2, 14.1)), ((2, 2), (14, 2), (2, 14)):
+        hp = tp.bailout(make_fill("halfplane", xy=xy))
+        sp = tp.bailout(make_fill("span", xy=xy))
+        np.testing.assert_array_equal(hp[0], sp[0])
+        np.testing.assert_array_equal(hp[1], sp[1])
+
+
+def test_visit_order():
+    hp, sp = make_fill("halfplane"), make_fill("span")
+    rows, cols = tp.visit_order(hp)
+    assert len(rows) == hp.trace.bbox.size
+    rows, cols = tp.visit_order(sp)
+    assert len(rows) == sp.coverage.sum()
+    assert sp.coverage[rows, cols].all()
+    assert np.all(np.diff(rows) >= 0)  # raster lines top to bottom
+
+
+# -- the error heatmap -------------------------------------------------------------------------
+def test_error_heatmap_reports_the_true_maximum():
+    fill = make_fill()
+    a = tp.attribute_image(fill, "u", mode="affine")
+    b = tp.attribute_image(fill, "u", mode="perspective")
+    fig, ax = plt.subplots()
+    hm = tp.plot_error_heatmap(ax, a, b)
+    want = np.nanmax(np.abs(a - b))
+    assert want > 0.05
+    assert hm.maximum == want
+    assert f"{want:.3g}" in ax.get_title()
+    assert hm.colorbar is not None
+    assert hm.image.get_clim() == (0.0, want)
+    i, j = np.unravel_index(np.nanargmax(np.abs(a - b)), a.shape)
+    assert tuple(hm.marker.get_xydata()[0]) == (j + 0.5, i + 0.5)
+    # in place: new data, same artists
+    before = len(ax.get_children())
+    hm.update(a, a)
+    assert hm.maximum == 0.0
+    assert len(ax.get_children()) == before
+
+
+def test_error_heatmap_of_colours_and_of_nothing():
+    fill = make_fill()
+    a = tp.attribute_image(fill, "rgb", mode="affine")
+    b = tp.attribute_image(fill, "rgb", mode="perspective")
+    fig, ax = plt.subplots()
+    hm = tp.plot_error_heatmap(ax, a, b)
+    assert hm.maximum == np.nanmax(np.abs(a - b))
+    nothing = np.full((4, 4), np.nan)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        hm.update(nothing, nothing)
+        fig.canvas.draw()
+    assert np.isnan(hm.maximum)
+    with pytest.raises(ValueError, match="same shape"):
+        tp.abs_error(np.zeros((2, 2)), np.zeros((3, 3)))
+
+
+# -- FillView ----------------------------------------------------------------------------------
+def coverage_shown(view):
+    return np.asarray(view.coverage.image.get_array())
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_fill_view_follows_the_trace_in_place(method):
+    fill = make_fill(method)
+    trace = fill.trace
+    view = tp.FillView(fill, step=0)
+    view.fig.canvas.draw()
+    n_children = len(view.ax.get_children())
+    n_fig = len(view.fig.get_children())
+    steps = sorted({0, 1, 2, trace.first_work_step, len(trace) // 2, len(trace) - 2})
+    steps += list(range(len(trace)))[:: max(1, len(trace) // 25)] + [len(trace) - 1, -1]
+    for k in steps:
+        step = view.show_step(k, draw=False)
+        assert step == trace.step(k)
+        k = step.index  # -1 means the last step (coverage_at wants the index itself)
+        np.testing.assert_array_equal(coverage_shown(view), trace.coverage_at(k))
+        assert view.caption == trace.caption(k)
+        shown = view.caption_text.get_text()
+        assert " ".join(shown.split()) == " ".join(trace.caption(k).split())
+        assert f"step {k} of {len(trace) - 1}" in view.header.get_text()
+        view.fig.canvas.draw()
+        assert len(view.ax.get_children()) == n_children
+        assert len(view.fig.get_children()) == n_fig
+    assert view.step == len(trace) - 1
+    np.testing.assert_array_equal(coverage_shown(view), fill.coverage)
+
+
+def test_fill_view_shows_the_current_raster_line_and_split():
+    fill = make_fill("span")
+    t = fill.trace
+    view = tp.FillView(fill, step=0)
+    assert not view.split.line.get_visible()  # not found yet
+    assert not view.bbox.outline.get_visible()
+    k = t.first_work_step + 3
+    view.show_step(k, draw=False)
+    assert view.split.line.get_visible() and view.bbox.outline.get_visible()
+    row = t.step(k).row
+    assert view.raster_line.band.get_visible()
+    assert view.raster_line.band.get_y() == row
+    assert not view.pixel.box.get_visible()
+
+
+def test_fill_view_shows_the_current_pixel_and_rejected_pixels():
+    fill = make_fill("halfplane")
+    t = fill.trace
+    view = tp.FillView(fill)
+    k = t.first_work_step + t.bbox.size // 2
+    view.show_step(k, draw=False)
+    step = t.step(k)
+    assert view.pixel.box.get_visible()
+    assert view.pixel.box.get_xy() == (step.col, step.row)
+    assert not view.raster_line.band.get_visible()
+    assert not view.split.line.get_visible()
+    rejected = np.asarray(view.rejected.get_array()).astype(bool)
+    # every pixel shown rejected was visited already and is not covered
+    assert not (rejected & t.coverage_at(k)).any()
+    assert rejected.sum() > 0
+
+
+def test_fill_view_set_fill_reuses_the_artists():
+    view = tp.FillView(make_fill("span"))
+    n_children = len(view.ax.get_children())
+    for method in ("halfplane", "span", "halfplane"):
+        for dx in (0.0, 0.7, -1.3):
+            xy = np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)]) + dx
+            fill = make_fill(method, xy=xy)
+            view.set_fill(fill, draw=False)
+            assert view.trace is fill.trace
+            assert view.step == len(fill.trace) - 1  # a finished fill stays finished
+            np.testing.assert_array_equal(coverage_shown(view), fill.coverage)
+            view.fig.canvas.draw()
+            assert len(view.ax.get_children()) == n_children
+    # mid-way: the same step index, clipped to the new fill
+    view.show_step(4, draw=False)
+    view.set_fill(make_fill("span"), draw=False)
+    assert view.step == 4
+    view.set_fill(make_fill("span"), step=0, draw=False)
+    assert view.step == 0
+
+
+def test_fill_view_new_image_size():
+    view = tp.FillView(make_fill(size=(16, 16)))
+    fill = make_fill(size=(24, 10))
+    view.set_fill(fill, draw=False)
+    np.testing.assert_array_equal(coverage_shown(view), fill.coverage)
+    assert view.ax.get_xlim() == (0, 24) and view.ax.get_ylim() == (10, 0)
+    view.fig.canvas.draw()
+
+
+@pytest.mark.parametrize("case", list(ODD))
+@pytest.mark.parametrize("method", METHODS)
+def test_fill_view_odd_triangles(case, method):
+    fill = make_fill(method, **ODD[case])
+    view = tp.FillView(fill)
+    for k in range(len(fill.trace)):
+        view.show_step(k, draw=False)
+        np.testing.assert_array_equal(coverage_shown(view), fill.trace.coverage_at(k))
+        assert view.caption == fill.trace.caption(k)
+    view.fig.canvas.draw()
+
+
+def test_fill_view_on_given_axes_and_errors():
+    fig, (ax1, ax2) = plt.subplots(1, 2)
+    fill = make_fill()
+    view = tp.FillView(fill, ax=ax2, legend=False)
+    assert view.ax is ax2 and view.fig is fig
+    with pytest.raises(IndexError):
+        view.show_step(len(fill.trace))
+    with pytest.raises(ValueError, match="trace=True"):
+        tp.FillView(tr.rasterize(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 4, 4))
+
+
+def test_fill_view_draw_idle_is_called():
+    view = tp.FillView(make_fill())
+    calls = []
+    view.fig.canvas.draw_idle = lambda *a, **k: calls.append(1)
+    view.show_step(3)
+    view.set_fill(make_fill("span"))
+    view.show_step(2, draw=False)
+    assert len(calls) == 2
+
+
+# -- interpolation / comparison views ----------------------------------------------------------
+def test_interpolation_view_updates_in_place():
+    fill = make_fill()
+    view = tp.InterpolationView(fill, "u")
+    view.fig.canvas.draw()
+    counts = [len(ax.get_children()) for ax in view.axes]
+    for dx in (0.0, 1.0, -0.5):
+        xy = np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)]) + dx
+        f = make_fill(xy=xy)
+        view.update(f, draw=False)
+        a = tp.attribute_image(f, "u", mode="affine")
+        b = tp.attribute_image(f, "u", mode="perspective")
+        assert view.maximum == np.nanmax(np.abs(a - b))
+        np.testing.assert_array_equal(np.asarray(view.images[0].image.get_array()), a)
+        view.fig.canvas.draw()
+        assert [len(ax.get_children()) for ax in view.axes] == counts
+
+
+def test_interpolation_view_needs_a_name_when_several():
+    with pytest.raises(ValueError, match="pick an attribute"):
+        tp.InterpolationView(make_fill())
+    view = tp.InterpolationView(make_fill(), "rgb")  # colour attribute
+    view.fig.canvas.draw()
+
+
+def test_interpolation_view_without_perspective_has_no_error():
+    tri = tr.Triangle([[1, 1], [14, 3], [4, 13]], attrs={"u": [0, 1, 0]})
+    view = tp.InterpolationView(tr.rasterize(tri, W, H, trace=True))
+    assert view.maximum < 1e-12
+
+
+def test_comparison_view_of_textured_floor_renders():
+    scene = get_scene("textured_floor")
+    a = tr.render(scene, None, 48, 36, interpolation="affine")
+    b = tr.render(scene, None, 48, 36)
+    view = tp.ComparisonView(a.image, b.image, titles=("affine", "perspective-correct"))
+    assert view.maximum == np.nanmax(np.abs(a.image - b.image))
+    view.update(b.image, b.image, draw=False)
+    assert view.maximum == 0.0
+    view.fig.canvas.draw()
+
+
+# -- frames and scenes -------------------------------------------------------------------------
+def test_frames_and_scene_frames():
+    scene = get_scene("textured_floor")
+    frame = tr.render(scene, None, 40, 30)
+    clip = [[[-1, -1, 0.2, 1], [1, -1, 0.5, 1], [-1, 1, 0.9, 1]]]
+    bare = tr.render(clip, 12, 10, attrs=[[[0.0], [1.0], [0.0]]])
+    fig, axes = plt.subplots(2, 3)
+    on_axes(tp.plot_coverage(axes[0, 0], frame), axes[0, 0])
+    on_axes(tp.plot_depth(axes[0, 1], frame), axes[0, 1])
+    on_axes(tp.plot_image(axes[0, 2], frame), axes[0, 2])
+    on_axes(tp.plot_attribute(axes[1, 0], frame, "uv", channel=0), axes[1, 0])
+    on_axes(tp.plot_attribute(axes[1, 1], bare), axes[1, 1])
+    result = on_axes(tp.plot_plan(axes[1, 2], frame), axes[1, 2])
+    text = result[0].get_text()
+    assert all(e.name in text for e in frame.plan)
+    fig.canvas.draw()
+    np.testing.assert_array_equal(
+        np.asarray(tp.plot_coverage(axes[0, 0], bare).image.get_array()), bare.coverage
+    )
+
+
+def test_depth_needs_z():
+    fill = tr.rasterize(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 4, 4)
+    fig, ax = plt.subplots()
+    with pytest.raises(ValueError, match="z="):
+        tp.plot_depth(ax, fill)
+
+
+def test_large_images_use_an_image_not_a_mesh():
+    fig, ax = plt.subplots()
+    big = np.random.default_rng(0).random((200, 300))
+    result = tp.plot_attribute(ax, big)
+    assert isinstance(result.image, matplotlib.image.AxesImage)
+    assert ax.get_ylim() == (200, 0)
+    result.update(big[::-1])
+    fig.canvas.draw()
+
+
+# -- style -------------------------------------------------------------------------------------
+def test_use_style_changes_rcparams_and_back():
+    before = {k: matplotlib.rcParams[k] for k in ("font.size", "lines.linewidth", "backend")}
+    with tp.use_style("classroom"):
+        assert matplotlib.rcParams["font.size"] == 18
+        assert matplotlib.rcParams["lines.linewidth"] == 3.5
+        colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
+        assert set(colors) <= {c.lower() for c in tp.OKABE_ITO.values()} | set(
+            tp.OKABE_ITO.values()
+        )
+    assert {k: matplotlib.rcParams[k] for k in before} == before
+
+
+def test_use_style_persists_without_with():
+    try:
+        tp.use_style("classroom")
+        assert matplotlib.rcParams["font.size"] == 18
+        tp.use_style("default")
+        assert matplotlib.rcParams["font.size"] == matplotlib.rcParamsDefault["font.size"]
+        assert matplotlib.get_backend().lower() == "agg"  # the backend is left alone
+    finally:
+        tp.use_style("default")
+    with pytest.raises(ValueError, match="unknown style"):
+        tp.use_style("projector")
+
+
+def test_classroom_figures_draw():
+    with tp.use_style("classroom"):
+        view = tp.FillView(make_fill("span"))
+        view.fig.canvas.draw()
+        assert view.caption_text.get_fontsize() > 12
