@@ -1,0 +1,50 @@
+"""Jupyter widgets (ipywidgets 8) for stepping through fills and comparing interpolations.
+
+``import teachraster.widgets`` imports matplotlib and ipywidgets (the ``lab`` extra); the core
+never does. Every widget builds on the in-place views of :mod:`teachraster.plotting`, shows
+itself when it is the last expression of a cell (or ``display(w.widget)``), and can be driven
+from code by setting ``.value`` on its controls, so its logic is tested without a browser.
+
+Widgets
+-------
+- :class:`FillPlayer` -- Play/Pause, step slider, previous/next, speed, method toggle (span
+  tables / half-planes), interpolation toggle (affine / perspective-correct), the caption of
+  the current step; a FillView (and an InterpolationView when the triangle has attributes).
+- :class:`TriangleEditor` -- move each vertex (x, y) and change its w; the fill, the split at
+  u4 and the affine-vs-perspective error heatmap follow. With ipympl the vertices can also be
+  dragged with the mouse.
+- :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
+  perspective-correct texture coordinates side by side, with the error in texels; a tilt
+  slider.
+
+Figures
+-------
+``backend="auto"`` (the default) puts an interactive ipympl canvas in the widget under
+``%matplotlib widget``, and otherwise a PNG image (``ipywidgets.Image``) redrawn at each
+update, which works with the inline backend, in a browser and headless (nbclient). Force one
+with ``backend="ipympl"`` or ``backend="image"``.
+
+Example
+-------
+>>> import teachraster as tr
+>>> from teachraster.widgets import FillPlayer
+>>> player = FillPlayer(tr.Triangle([[1, 1], [14, 4], [5, 14]]), 16, 16, backend="image")
+>>> player.next.click()
+>>> player.slider.value
+1
+>>> player.close()
+"""
+
+from ._display import BACKENDS, FigureDisplay, resolve_backend
+from .editor import TriangleEditor
+from .player import FillPlayer
+from .textured import TexturedPlaneViewer
+
+__all__ = [
+    "BACKENDS",
+    "FigureDisplay",
+    "FillPlayer",
+    "TexturedPlaneViewer",
+    "TriangleEditor",
+    "resolve_backend",
+]

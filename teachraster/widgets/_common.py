@@ -1,0 +1,61 @@
+"""Pieces every widget shares: style handling, figure layout for a FillView, titles."""
+
+from __future__ import annotations
+
+import contextlib
+
+import ipywidgets as widgets
+import matplotlib as mpl
+
+from ..plotting import use_style
+
+
+def style_context(style: str | None):
+    """``use_style(style)`` for the duration of a block, or nothing when ``style`` is None.
+
+    Widgets build their figures inside it, so a widget can look "classroom" without
+    switching the notebook's style for every later plot.
+    """
+    return contextlib.nullcontext() if style is None else use_style(style)
+
+
+def font_scale() -> float:
+    """Current font size relative to matplotlib's default of 10 pt (margins follow it)."""
+    return float(mpl.rcParams["font.size"]) / 10.0
+
+
+def fill_axes(fig, width: int, height: int, *, side: float = 4.4, legend: bool = True):
+    """Size ``fig`` for a FillView of a ``width`` × ``height`` grid and add its Axes.
+
+    Fixed margins (no layout engine, which would run again at every step): room above for
+    the view's header and the column labels, on the left for the row labels, on the right
+    for the view's colour key. ``side`` is the longer side of the grid in inches.
+    """
+    s = font_scale()
+    if width >= height:
+        aw, ah = side, side * height / width
+    else:
+        aw, ah = side * width / height, side
+    left, right = 0.65 * s, (2.1 * s if legend else 0.25)
+    top, bottom = 0.85 * s, 0.15
+    fw, fh = left + aw + right, top + ah + bottom
+    fig.set_size_inches(fw, fh)
+    return fig.add_axes((left / fw, bottom / fh, aw / fw, ah / fh))
+
+
+def title_html(title: str, subtitle: str = "") -> widgets.HTML:
+    """A bold title line with an optional grey explanation below it."""
+    sub = f"<div style='color:#555'>{subtitle}</div>" if subtitle else ""
+    return widgets.HTML(f"<div style='font-size:1.25em;font-weight:bold'>{title}</div>{sub}")
+
+
+def labelled(text: str, control) -> widgets.HBox:
+    """``control`` with a label on its left.
+
+    ToggleButtons put their own ``description`` on a line of its own when space is short;
+    a separate Label keeps label and buttons on one line.
+    """
+    label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0"))
+    return widgets.HBox(
+        [label, control], layout=widgets.Layout(align_items="center", margin="0 24px 0 0")
+    )

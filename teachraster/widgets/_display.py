@@ -1,0 +1,170 @@
+"""Figures inside widgets: an ipympl canvas, or a PNG in an ``ipywidgets.Image``.
+
+With ``%matplotlib widget`` (ipympl) the figure's canvas *is* a widget: it goes into the box
+as it is and redraws in the browser when asked (``draw_idle``). With any other backend
+(the inline default, and headless runs such as nbclient) the figure is drawn by Agg and its
+PNG bytes go into an ``ipywidgets.Image``, replaced at each update. Either way the figure is
+made here, not by pyplot, so it is never also shown a second time by the inline backend at
+the end of a cell, and it does not pile up in pyplot's list of open figures.
+"""
+
+from __future__ import annotations
+
+import io
+
+import ipywidgets as widgets
+import matplotlib as mpl
+import numpy as np
+from matplotlib.figure import Figure
+
+BACKENDS = ("auto", "ipympl", "image")
+
+#: Resolution of figures shown as PNG images: crisp on an ordinary screen, and small enough
+#: for a step to be drawn, encoded and sent within a Play interval.
+IMAGE_DPI = 96
+#: Resolution of the three-panel comparison figures: lower, so that they fit the width of a
+#: notebook also as an ipympl canvas (which, unlike an image, does not scale down).
+COMPARISON_DPI = 80
+
+
+def resolve_backend(backend: str = "auto") -> str:
+    """``"ipympl"`` or ``"image"``: how figures are shown.
+
+    Parameters
+    ----------
+    backend : {"auto", "ipympl", "image"}
+        ``"auto"`` picks ipympl when matplotlib's backend is ipympl (``%matplotlib widget``
+        or ``%matplotlib ipympl``), else a PNG image.
+
+    Examples
+    --------
+    >>> resolve_backend("image")
+    'image'
+    """
+    if backend not in BACKENDS:
+        raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
+    if backend != "auto":
+        return backend
+    # get_backend() would *resolve* a pending auto backend (and may import a GUI toolkit);
+    # the raw rcParam says what the user chose without side effects.
+    name = str(dict.__getitem__(mpl.rcParams, "backend")).lower()
+    return "ipympl" if ("ipympl" in name or "widget" in name) else "image"
+
+
+def new_figure(figsize: tuple[float, float], mode: str, *, dpi: float | None = None) -> Figure:
+    """A figure with a canvas suited to ``mode`` (``"ipympl"`` or ``"image"``), not in pyplot."""
+    if mode == "ipympl":
+        from ipympl.backend_nbagg import Canvas, FigureManager
+
+        fig = Figure(figsize=figsize, dpi=dpi)
+        canvas = Canvas(fig)
+        # The manager wires the canvas to its toolbar and the browser; registering it with
+        # pyplot (as plt.figure would) would show the figure a second time.
+        FigureManager(canvas, 0)
+        canvas.header_visible = False
+        canvas.footer_visible = False
+        canvas.resizable = False
+        canvas.toolbar_visible = False
+        return fig
+    if mode != "image":
+        raise ValueError(f"mode must be 'ipympl' or 'image', got {mode!r}")
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = Figure(figsize=figsize, dpi=dpi or IMAGE_DPI)
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def png_bytes(fig: Figure) -> bytes:
+    """The figure's last Agg drawing as PNG bytes (call ``fig.canvas.draw()`` first).
+
+    Encoded by Pillow at the lowest compression level: several times faster than
+    ``savefig`` (which draws the figure again) for a file only a little larger.
+    """
+    from PIL import Image as PILImage
+
+    rgba = np.asarray(fig.canvas.buffer_rgba())
+    out = io.BytesIO()
+    # the figure background is opaque: dropping alpha makes the file a quarter smaller
+    PILImage.fromarray(rgba[..., :3]).save(out, format="png", compress_level=1)
+    return out.getvalue()
+
+
+class FigureDisplay:
+    """A figure and the widget that shows it; :meth:`refresh` after changing its artists.
+
+    Parameters
+    ----------
+    fig : Figure
+        Made by :func:`new_figure` with the same ``mode``.
+    mode : {"ipympl", "image"}
+
+    Attributes
+    ----------
+    widget : ipywidgets widget
+        The ipympl canvas itself, or an ``ipywidgets.Image`` holding the PNG.
+    draws : int
+        How many times :meth:`refresh` has run (for tests).
+    """
+
+    def __init__(self, fig: Figure, mode: str) -> None:
+        self.fig = fig
+        self.mode = mode
+        self.draws = 0
+        if mode == "ipympl":
+            self.widget = fig.canvas
+        else:
+            width = int(round(fig.get_figwidth() * fig.dpi))
+            # natural size, but never wider than the notebook column (the image scales down)
+            layout = widgets.Layout(width=f"{width}px", max_width="100%", height="auto")
+            self.widget = widgets.Image(format="png", layout=layout)
+            self.widget.add_class("teachraster-figure")  # a handle for browser tests
+        self.refresh()
+
+    def refresh(self) -> None:
+        """Show the figure's current state.
+
+        ipympl: ask the browser for a redraw (``draw_idle``); image: draw with Agg now and
+        replace the PNG.
+        """
+        self.draws += 1
+        if self.mode == "ipympl":
+            self.fig.canvas.draw_idle()
+            return
+        self.fig.canvas.draw()
+        self.widget.value = png_bytes(self.fig)
+
+    def close(self) -> None:
+        """Release the widget (and the browser-side canvas)."""
+        self.widget.close()
+
+
+def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)) -> list:
+    """Three equal panels side by side for a ComparisonView / InterpolationView.
+
+    The views add colour bars to the middle and right panels with ``fig.colorbar(ax=...)``,
+    which takes 20% of the panel's width; those panels are made wider by as much here, so
+    that all three images end up the same size. ``colorbars`` says which of the middle and
+    right panels get one. The figure is resized to fit.
+    """
+    pw = 2.6  # inches per panel
+    ph = pw * height / width
+    if ph > 3.2:  # tall images: limit the height instead
+        ph, pw = 3.2, 3.2 * width / height
+    left, gap, top, bottom = 0.55, 0.4, 0.75, 0.25
+    widths = [pw] + [pw / 0.8 + 0.3 if c else pw for c in colorbars]
+    fw = left + sum(widths) + gap * 2 + 0.5
+    fh = ph + top + bottom
+    fig.set_size_inches(fw, fh)
+    axes, x = [], left
+    for w in widths:
+        axes.append(fig.add_axes((x / fw, bottom / fh, w / fw, ph / fh)))
+        x += w + gap
+    return axes
+
+
+def html_escape(text: str) -> str:
+    """``text`` safe to put in an HTML widget (captions contain ``<`` and ``>``)."""
+    import html
+
+    return html.escape(text, quote=False)

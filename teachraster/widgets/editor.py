@@ -1,0 +1,279 @@
+"""``TriangleEditor``: move the vertices of a triangle and watch the fill and the error follow."""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import time
+
+import ipywidgets as widgets
+import numpy as np
+
+from ..plotting import FillView, InterpolationView
+from ..rasterize import rasterize
+from ..span_tables import split_point
+from ..triangle import Triangle
+from ._common import fill_axes, labelled, style_context, title_html
+from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+
+#: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
+#: ratios, which is what perspective depends on).
+W_RANGE = (0.2, 10.0)
+
+
+class TriangleEditor:
+    """Edit a triangle's vertices (x, y and w) and see the fill, u4 and the error heatmap follow.
+
+    Two figures update in place at every change: a :class:`~teachraster.plotting.FillView`
+    of the finished fill (with span tables: the split line at u4 and the two flat parts) and
+    an :class:`~teachraster.plotting.InterpolationView` of one attribute, affine vs
+    perspective-correct, with the heatmap of their difference. It grows where w changes
+    fastest across the triangle, and vanishes when all three w are equal.
+
+    With the ipympl backend (``%matplotlib widget``) the vertices can also be dragged in the
+    fill figure with the mouse; the sliders follow.
+
+    Parameters
+    ----------
+    tri : Triangle
+        The starting triangle. If it has no attribute ``attribute``, ``u = [0, 1, 0]`` is
+        added (0 at v0 and v2, 1 at v1).
+    width, height : int
+        Image size in pixels.
+    method : {"span", "halfplane"}
+        Fill method shown (span tables show the split at u4).
+    attribute : str
+        Attribute compared in the interpolation figure.
+    backend : {"auto", "ipympl", "image"}
+        As for :class:`~teachraster.widgets.FillPlayer`.
+    style : str, optional
+        Plotting style for this widget's figures.
+
+    Attributes
+    ----------
+    widget : ipywidgets.VBox
+    x, y, w : lists of three sliders
+        ``x[i]``, ``y[i]``: vertex i in pixels; ``w[i]``: its clip-space w (depth).
+    method : ToggleButtons
+    info : HTML
+        Area and winding, pixels covered, u4 and the largest interpolation error in words.
+    view, interp_view : FillView, InterpolationView
+    fig : Figure
+        The FillView's figure.
+    tri, fill : Triangle, Fill
+        What is on show.
+    last_update_s : float
+        Seconds the last re-render took (kernel side).
+
+    Examples
+    --------
+    >>> import teachraster as tr
+    >>> editor = TriangleEditor(tr.Triangle([[1, 1], [14, 4], [5, 14]]), 16, 16, backend="image")
+    >>> editor.x[1].value = 9.0
+    >>> editor.fill.trace.snapped[1].tolist()
+    [9.0, 4.0]
+    >>> editor.close()
+    """
+
+    def __init__(
+        self,
+        tri: Triangle,
+        width: int,
+        height: int,
+        *,
+        method: str = "span",
+        attribute: str = "u",
+        backend: str = "auto",
+        style: str | None = None,
+    ) -> None:
+        if not isinstance(tri, Triangle):
+            raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
+        attrs = dict(tri.attrs)
+        attrs.setdefault(attribute, [0.0, 1.0, 0.0])
+        self.tri = Triangle(tri.xy, w=tri.w, z=tri.z, attrs=attrs)
+        self.width, self.height = width, height
+        self.attribute = attribute
+        self.backend = resolve_backend(backend)
+        self._quiet = False
+        self._dragging: int | None = None
+        self._pending = None
+        self._last_done = 0.0
+        self.last_update_s = 0.0
+        self.fill = self._rasterize(self.tri, method)
+
+        with style_context(style):
+            self.fig = new_figure((7, 5), self.backend)
+            ax = fill_axes(self.fig, width, height, side=4.0)
+            self.view = FillView(self.fill, ax=ax, step=-1)
+            # a finished fill has no step to explain; the info line says what matters here
+            self.view.caption_text.set_visible(False)
+            self.display = FigureDisplay(self.fig, self.backend)
+            ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
+            axes = comparison_axes(ifig, height, width)
+            self.interp_view = InterpolationView(self.fill, attribute, axes=axes)
+            self.interp_display = FigureDisplay(ifig, self.backend)
+
+        # -- controls ---------------------------------------------------------------------------
+        xy, w = self.tri.xy, self.tri.w
+        style_kw = {"description_width": "95px"}
+        layout = widgets.Layout(width="320px")
+        self.x, self.y, self.w, columns = [], [], [], []
+        for i in range(3):
+            x = widgets.FloatSlider(value=xy[i, 0], min=min(0.0, xy[i, 0]),
+                                    max=max(float(width), xy[i, 0]), step=0.05,
+                                    description=f"x{i} (px)", readout_format=".2f",
+                                    style=style_kw, layout=layout)  # fmt: skip
+            y = widgets.FloatSlider(value=xy[i, 1], min=min(0.0, xy[i, 1]),
+                                    max=max(float(height), xy[i, 1]), step=0.05,
+                                    description=f"y{i} (px)", readout_format=".2f",
+                                    style=style_kw, layout=layout)  # fmt: skip
+            lo, hi = math.log10(min(W_RANGE[0], w[i])), math.log10(max(W_RANGE[1], w[i]))
+            wi = widgets.FloatLogSlider(value=w[i], base=10, min=lo, max=hi, step=0.01,
+                                        description=f"w{i} (depth)", readout_format=".2f",
+                                        style=style_kw, layout=layout)  # fmt: skip
+            for s in (x, y, wi):
+                s.observe(self._on_slider, "value")
+            self.x.append(x)
+            self.y.append(y)
+            self.w.append(wi)
+            columns.append(widgets.VBox([widgets.HTML(f"<b>vertex v{i}</b>"), x, y, wi]))
+        self.method = widgets.ToggleButtons(
+            options=[("span tables", "span"), ("half-planes", "halfplane")],
+            value=method,
+        )
+        self.method.style.button_width = "150px"
+        self.method.observe(self._on_slider, "value")
+        self.info = widgets.HTML(layout=widgets.Layout(min_height="2.6em"))
+        self._set_info()
+
+        hint = "Move a vertex or change its depth w"
+        if self.backend == "ipympl":
+            hint += " (or drag a vertex in the upper figure)"
+            self.fig.canvas.mpl_connect("button_press_event", self._on_press)
+            self.fig.canvas.mpl_connect("motion_notify_event", self._on_motion)
+            self.fig.canvas.mpl_connect("button_release_event", self._on_release)
+        title = title_html(
+            "Edit a triangle: fill, split point and interpolation error",
+            hint + ". The error heatmap is |affine − perspective-correct| of "
+            f"<i>{attribute}</i>: zero when all three w are equal.",
+        )
+        self.widget = widgets.VBox([
+            title, widgets.HBox(columns), labelled("method", self.method), self.info,
+            self.display.widget, self.interp_display.widget,
+        ])  # fmt: skip
+
+    # -- geometry ---------------------------------------------------------------------------
+    def _rasterize(self, tri: Triangle, method: str):
+        return rasterize(tri, self.width, self.height, method=method, trace=True)
+
+    @property
+    def xy(self) -> np.ndarray:
+        """(3, 2) vertex positions set on the sliders."""
+        return np.array([[self.x[i].value, self.y[i].value] for i in range(3)])
+
+    @property
+    def w_values(self) -> np.ndarray:
+        """(3,) w set on the sliders."""
+        return np.array([s.value for s in self.w])
+
+    def set_vertex(self, i: int, x: float | None = None, y: float | None = None,
+                   w: float | None = None) -> None:  # fmt: skip
+        """Move vertex ``i`` (any of x, y, w) and re-render once.
+
+        Values beyond a slider's range are clipped to it (as a slider does).
+        """
+        with self._holding():
+            for slider, value in ((self.x[i], x), (self.y[i], y), (self.w[i], w)):
+                if value is not None:
+                    slider.value = value
+        self.update()
+
+    @contextlib.contextmanager
+    def _holding(self):
+        self._quiet = True
+        try:
+            yield
+        finally:
+            self._quiet = False
+
+    def _on_slider(self, change) -> None:
+        if not self._quiet:
+            self.update()
+
+    def update(self) -> None:
+        """Re-rasterise the triangle on the sliders and update both figures in place."""
+        t0 = time.perf_counter()
+        self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
+        self.fill = self._rasterize(self.tri, self.method.value)
+        self.view.set_fill(self.fill, step=-1, draw=False)
+        self.interp_view.update(self.fill, draw=False)
+        self._set_info()
+        self.display.refresh()
+        self.interp_display.refresh()
+        self._last_done = time.perf_counter()
+        self.last_update_s = self._last_done - t0
+
+    def _set_info(self) -> None:
+        trace = self.fill.trace
+        area = trace.signed_area
+        covered = int(trace.covered.sum())
+        if area == 0:
+            parts = ["<b>zero area</b> (after snapping): the triangle covers no pixel"]
+        else:
+            facing = "front-facing (counter-clockwise" if area < 0 else "back-facing (clockwise"
+            parts = [f"area {abs(area):.2f} px², {facing} on screen)",
+                     f"{covered} pixel{'s' * (covered != 1)} covered"]  # fmt: skip
+        if trace.span is not None:
+            u4 = trace.span.u4
+        else:
+            snapped = trace.snapped[np.lexsort((trace.snapped[:, 0], trace.snapped[:, 1]))]
+            u4 = split_point(snapped)
+        if u4 is not None:
+            parts.append(f"split at u4 = {u4:.2f}")
+        m = self.interp_view.maximum
+        if np.isfinite(m):
+            parts.append(f"largest |affine − perspective| of {self.attribute} = {m:.3g}")
+        self.info.value = " · ".join(parts)
+
+    # -- mouse dragging (ipympl) ------------------------------------------------------------
+    def _on_press(self, event) -> None:
+        if event.inaxes is not self.view.ax or event.button != 1 or event.xdata is None:
+            return
+        d = np.hypot(*(self.xy - [event.xdata, event.ydata]).T)
+        i = int(np.argmin(d))
+        # within about a pixel, or a few percent of the grid on large grids
+        if d[i] <= max(1.0, 0.04 * max(self.width, self.height)):
+            self._dragging = i
+
+    def _on_motion(self, event) -> None:
+        if self._dragging is None or event.inaxes is not self.view.ax or event.xdata is None:
+            return
+        self._pending = (event.xdata, event.ydata)
+        # Mouse events queue up while a re-render runs; one that arrives right after the
+        # last render finished is such a backlog, so skip it (the release applies the last).
+        if time.perf_counter() - self._last_done < 0.02:
+            return
+        self._apply_pending()
+
+    def _on_release(self, event) -> None:
+        if self._dragging is not None:
+            self._apply_pending()
+        self._dragging = None
+
+    def _apply_pending(self) -> None:
+        if self._pending is not None and self._dragging is not None:
+            x, y = self._pending
+            self._pending = None
+            self.set_vertex(self._dragging, x=float(x), y=float(y))
+
+    # -- display ----------------------------------------------------------------------------
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the editor."""
+        from .player import _close_tree
+
+        for d in (self.display, self.interp_display):
+            d.close()
+        _close_tree(self.widget)

@@ -1,0 +1,293 @@
+"""``FillPlayer``: play a traced fill step by step, switch method and interpolation."""
+
+from __future__ import annotations
+
+import contextlib
+import html
+
+import ipywidgets as widgets
+
+from ..plotting import COLORS, FillView, InterpolationView
+from ..rasterize import rasterize
+from ..triangle import Triangle
+from ._common import fill_axes, labelled, style_context, title_html
+from ._display import (
+    COMPARISON_DPI,
+    FigureDisplay,
+    comparison_axes,
+    html_escape,
+    new_figure,
+    resolve_backend,
+)
+
+METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane")]
+INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspective")]
+
+
+class FillPlayer:
+    """Step through the fill of one triangle: Play/Pause, a step slider, the step in words.
+
+    The figure is a :class:`~teachraster.plotting.FillView`; moving the step slider calls
+    ``view.show_step(k)``, which changes the data of the existing artists (no redraw from
+    scratch). The method and interpolation toggles rasterise the triangle again
+    (``trace=True``) and hand the new fill to ``view.set_fill``; the slider's range follows
+    the new number of steps. When the triangle has attributes, a second figure (an
+    :class:`~teachraster.plotting.InterpolationView`) shows one of them interpolated both
+    ways and their difference, the interpolation in use highlighted.
+
+    Everything can be driven from code: set ``player.slider.value``,
+    ``player.method.value`` or ``player.interpolation.value``, or ``click()`` a button.
+
+    Parameters
+    ----------
+    tri : Triangle
+        The triangle to fill (screen space, pixels).
+    width, height : int
+        Image size in pixels (a 32 × 32 grid or smaller reads best).
+    method : {"span", "halfplane"}
+        Span tables or half-planes, as for :func:`teachraster.rasterize`.
+    interpolation : {"perspective", "affine"}
+        How attributes are interpolated.
+    attribute : str, optional
+        Attribute shown in the interpolation figure; default the triangle's first.
+    step : int
+        Step shown first (0: the start; -1: the finished fill).
+    interval : int
+        Milliseconds per step when playing.
+    backend : {"auto", "ipympl", "image"}
+        ``"ipympl"`` puts the interactive canvas in the widget (``%matplotlib widget``);
+        ``"image"`` shows a PNG, redrawn at each step (any backend, also headless);
+        ``"auto"`` picks ipympl when it is matplotlib's backend.
+    style : str, optional
+        Plotting style for this widget's figures (``"classroom"``); default the current one.
+
+    Attributes
+    ----------
+    widget : ipywidgets.VBox
+        Everything, ready to display (the player also displays itself).
+    play, slider, speed, prev, next, first, last, method, interpolation, caption
+        The controls: ``Play`` (jslinked to ``slider``: it runs in the browser), the step
+        ``IntSlider``, the Play interval in ms, the step buttons, the two
+        ``ToggleButtons`` and the ``HTML`` caption of the current step.
+    view : FillView
+    fig : matplotlib Figure
+        The FillView's figure.
+    interp_view : InterpolationView or None
+        None when the triangle has no attributes.
+    fill : Fill
+        The fill on show.
+
+    Examples
+    --------
+    >>> import teachraster as tr
+    >>> tri = tr.Triangle([[1, 1], [14, 4], [5, 14]], w=[1, 2, 4], attrs={"u": [0, 1, 0]})
+    >>> player = FillPlayer(tri, 16, 16, backend="image")
+    >>> player.slider.value = 6
+    >>> player.caption_text == player.trace.caption(6)
+    True
+    >>> player.close()
+    """
+
+    def __init__(
+        self,
+        tri: Triangle,
+        width: int,
+        height: int,
+        method: str = "span",
+        interpolation: str = "perspective",
+        *,
+        attribute: str | None = None,
+        step: int = 0,
+        interval: int = 400,
+        backend: str = "auto",
+        style: str | None = None,
+    ) -> None:
+        if not isinstance(tri, Triangle):
+            raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
+        self.tri, self.width, self.height = tri, width, height
+        self.backend = resolve_backend(backend)
+        self._quiet = False  # True while the player itself moves the slider
+        self.fill = rasterize(tri, width, height, method=method, interpolation=interpolation,
+                              trace=True)  # fmt: skip
+        trace = self.fill.trace
+        n = len(trace)
+        step = trace.step(step).index
+
+        with style_context(style):
+            self.fig = new_figure((8, 6), self.backend)
+            ax = fill_axes(self.fig, width, height)
+            self.view = FillView(self.fill, ax=ax, step=step)
+            # The caption is a widget below the controls, in full and selectable; drawing it
+            # in the figure as well would cost time at every step.
+            self.view.caption_text.set_visible(False)
+            self.display = FigureDisplay(self.fig, self.backend)
+            self.interp_view = None
+            self.interp_display = None
+            if tri.attrs:
+                name = attribute or next(iter(tri.attrs))
+                ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
+                axes = comparison_axes(ifig, height, width)
+                self.interp_view = InterpolationView(self.fill, name, axes=axes)
+                self._titles = [ax.get_title() for ax in self.interp_view.axes[:2]]
+                self._highlight(interpolation)
+                self.interp_display = FigureDisplay(ifig, self.backend)
+
+        # -- controls ---------------------------------------------------------------------------
+        self.play = widgets.Play(value=step, min=0, max=n - 1, interval=interval,
+                                 show_repeat=False, tooltip="play / pause")  # fmt: skip
+        self.slider = widgets.IntSlider(value=step, min=0, max=n - 1, description="step",
+                                        continuous_update=True,
+                                        layout=widgets.Layout(width="420px"))  # fmt: skip
+        # Linked in the browser, so playing needs no round trip through the kernel per tick;
+        # the kernel hears of each new slider value and redraws.
+        self.link = widgets.jslink((self.play, "value"), (self.slider, "value"))
+        self.speed = widgets.IntSlider(value=interval, min=50, max=2000, step=50,
+                                       description="ms / step",
+                                       layout=widgets.Layout(width="300px"))  # fmt: skip
+        # A kernel-side link: the interval rarely changes, and this way setting speed.value
+        # from code changes the Play too.
+        self.speed_link = widgets.link((self.speed, "value"), (self.play, "interval"))
+        small = widgets.Layout(width="44px")
+        self.first = widgets.Button(icon="fast-backward", tooltip="first step", layout=small)
+        self.prev = widgets.Button(icon="step-backward", tooltip="previous step", layout=small)
+        self.next = widgets.Button(icon="step-forward", tooltip="next step", layout=small)
+        self.last = widgets.Button(icon="fast-forward", tooltip="last step", layout=small)
+        self.first.on_click(lambda _: self._go(0))
+        self.prev.on_click(lambda _: self._go(self.slider.value - 1))
+        self.next.on_click(lambda _: self._go(self.slider.value + 1))
+        self.last.on_click(lambda _: self._go(self.slider.max))
+        self.method = widgets.ToggleButtons(options=METHOD_OPTIONS, value=method,
+                                            tooltips=["sort, split at u4, fill row by row",
+                                                      "test every pixel of the bounding box "
+                                                      "against the three edges"])  # fmt: skip
+        self.interpolation = widgets.ToggleButtons(
+            options=INTERPOLATION_OPTIONS, value=interpolation,
+            tooltips=["screen-space blend of the vertex values (GLSL noperspective)",
+                      "blend f/w and 1/w, then divide (GLSL smooth)"],
+        )  # fmt: skip
+        for toggle in (self.method, self.interpolation):
+            toggle.style.button_width = "150px"
+        self.caption = widgets.HTML(
+            html_escape(trace.caption(step)),
+            layout=widgets.Layout(min_height="3.2em", width="100%", padding="2px 6px",
+                                  border=f"1px solid {COLORS['grid']}"),
+        )  # fmt: skip
+        self.caption.style.font_size = "15px"
+        self.caption.add_class("teachraster-caption")  # a handle for styling and browser tests
+
+        self.slider.observe(self._on_step, "value")
+        self.method.observe(self._on_fill_options, "value")
+        self.interpolation.observe(self._on_fill_options, "value")
+
+        title = title_html(
+            "How a GPU fills a triangle, step by step",
+            "Press play, drag the step slider or use the buttons; switch the method and the "
+            "interpolation to compare.",
+        )
+        figures = [self.display.widget]
+        if self.interp_display is not None:
+            figures.append(self.interp_display.widget)
+        self.widget = widgets.VBox([
+            title,
+            widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last]),
+            widgets.HBox([labelled("method", self.method),
+                          labelled("interpolation", self.interpolation)]),
+            self.speed,
+            self.caption,
+            *figures,
+        ])  # fmt: skip
+
+    # -- state ------------------------------------------------------------------------------
+    @property
+    def trace(self):
+        """The FillTrace on show."""
+        return self.fill.trace
+
+    @property
+    def step(self) -> int:
+        """The step on show."""
+        return self.view.step
+
+    @property
+    def caption_text(self) -> str:
+        """The caption on show as plain text (equal to ``trace.caption(step)``)."""
+        return html.unescape(self.caption.value)
+
+    # -- driving ----------------------------------------------------------------------------
+    def show_step(self, k: int) -> None:
+        """Show step ``k`` (the same as setting ``slider.value``; negative counts from the end)."""
+        self.slider.value = self.trace.step(k).index
+
+    def _go(self, k: int) -> None:
+        self.slider.value = min(max(k, self.slider.min), self.slider.max)
+
+    def _on_step(self, change) -> None:
+        if not self._quiet:
+            self._draw_step(change["new"])
+
+    def _draw_step(self, k: int) -> None:
+        step = self.view.show_step(k, draw=False)
+        self.caption.value = html_escape(step.caption)
+        self.display.refresh()
+
+    @contextlib.contextmanager
+    def _holding(self):
+        """Move the slider without each move redrawing (one redraw afterwards instead)."""
+        self._quiet = True
+        try:
+            yield
+        finally:
+            self._quiet = False
+
+    def _on_fill_options(self, change) -> None:
+        self.fill = rasterize(self.tri, self.width, self.height, method=self.method.value,
+                              interpolation=self.interpolation.value, trace=True)  # fmt: skip
+        trace = self.fill.trace
+        last = len(trace) - 1
+        # A finished fill stays finished; otherwise keep the step index (as FillView does).
+        at_end = self.slider.value >= self.slider.max
+        k = last if at_end else min(self.slider.value, last)
+        with self._holding():
+            # widen before moving, narrow after, so the value is never out of range
+            self.slider.max = self.play.max = max(last, self.slider.max)
+            self.slider.value = k
+            self.slider.max = self.play.max = last
+        step = self.view.set_fill(self.fill, step=k, draw=False)
+        self.caption.value = html_escape(step.caption)
+        self.display.refresh()
+        if self.interp_view is not None:
+            self.interp_view.update(self.fill, draw=False)
+            self._highlight(self.interpolation.value)
+            self.interp_display.refresh()
+
+    def _highlight(self, interpolation: str) -> None:
+        """Mark the panel of the interpolation in use; fade the other one."""
+        view = self.interp_view
+        for i, (ax, title) in enumerate(zip(view.axes[:2], self._titles)):
+            used = (i == 0) == (interpolation == "affine")
+            # only the text: set_title would also reset the fixed title position
+            ax.title.set_text(title + ("  (in use)" if used else ""))
+            for spine in ax.spines.values():
+                spine.set_edgecolor(COLORS["current"] if used else "black")
+                spine.set_linewidth(3.0 if used else 0.8)
+            view.images[i].image.set_alpha(1.0 if used else 0.4)
+
+    # -- display ----------------------------------------------------------------------------
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the player (the figures are freed with it)."""
+        for d in (self.display, self.interp_display):
+            if d is not None:
+                d.close()
+        self.link.close()
+        self.speed_link.unlink()
+        _close_tree(self.widget)
+
+
+def _close_tree(widget) -> None:
+    """Close a widget and, depth first, every widget inside it."""
+    for child in getattr(widget, "children", ()):
+        _close_tree(child)
+    widget.close()

@@ -1,0 +1,208 @@
+"""``TexturedPlaneViewer``: a checkerboard square, affine vs perspective-correct, tilting away."""
+
+from __future__ import annotations
+
+import math
+
+import ipywidgets as widgets
+import numpy as np
+
+from ..camera import Camera
+from ..plotting import ComparisonView
+from ..scene_render import render
+from ..texture import checkerboard, sample, texel_error
+from ._common import style_context, title_html
+from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+
+#: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
+#: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
+#: the far edge is the top row of the checkerboard).
+CORNERS = np.array([[-1.0, 1.0], [1.0, 1.0], [1.0, 0.0], [-1.0, 0.0]])
+CORNER_UV = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+#: Two triangles sharing the diagonal from the far-left to the near-right corner: affine
+#: interpolation bends the checker lines differently on either side of it (the seam).
+TRIANGLES = np.array([[0, 3, 2], [0, 2, 1]])
+#: How much of the screen the square may fill, in NDC (a margin all round).
+FIT = 0.92
+
+
+def plane_clip(tilt_deg: float, camera: Camera, aspect: float, *, distance: float = 0.6,
+               below: float = 1.5) -> np.ndarray:  # fmt: skip
+    """(2, 3, 4) clip-space triangles of the square tilted ``tilt_deg`` away from the camera.
+
+    The square (side 2) stands like a wall ``distance`` in front of a camera that looks
+    straight ahead (down -z), its bottom edge ``below`` units below the eye. Tilting turns it
+    about that bottom edge, the top edge going away: at 0° it faces the camera (every w
+    equal), at 90° it lies flat like a floor, its far edge at ``distance + 2``.
+
+    The projection is then zoomed and shifted in screen space so the square fills the
+    frame at every tilt: an off-centre frustum (glFrustum with asymmetric bounds), which
+    changes x and y but keeps every w, so how strong the perspective is depends only on
+    where the square is.
+    """
+    t = math.radians(tilt_deg)
+    x, y = CORNERS[:, 0], 2.0 * CORNERS[:, 1]
+    world = np.stack([x, y * math.cos(t) - below, -distance - y * math.sin(t)], axis=1)
+    clip = camera.clip(world, aspect)
+    ndc = clip[:, :2] / clip[:, 3:]
+    lo, hi = ndc.min(axis=0), ndc.max(axis=0)
+    scale = 2 * FIT / float(np.max(hi - lo))  # one scale for x and y: squares stay square
+    centre = (lo + hi) / 2
+    # x_ndc' = scale * (x_ndc - c)  <=>  x_clip' = scale * (x_clip - c * w)
+    clip[:, :2] = scale * (clip[:, :2] - centre * clip[:, 3:])
+    return clip[TRIANGLES]
+
+
+class TexturedPlaneViewer:
+    """A textured square tilted away from the camera: affine vs perspective-correct texturing.
+
+    Both images come from :func:`teachraster.render` of the same two clip-space triangles,
+    once with ``interpolation="affine"`` (screen-space texture coordinates, as early
+    software renderers and the PlayStation did) and once ``"perspective"``, then sampled from
+    a checkerboard with :func:`teachraster.sample`. With affine coordinates the checker
+    lines bend and kink along the diagonal shared by the two triangles; the right panel
+    measures the difference in texels (:func:`teachraster.texel_error`). At tilt 0 all
+    w are equal and the two agree exactly.
+
+    Parameters
+    ----------
+    width, height : int
+        Image size in pixels.
+    tilt : float
+        Starting tilt in degrees (0: the square faces the camera like a wall; 90: it lies
+        flat like a floor).
+    distance : float
+        Distance from the camera to the square's near (hinge) edge; the square has side 2.
+        Nearer means stronger perspective: w runs from ``distance`` to ``distance + 2`` at
+        90°.
+    below : float
+        How far below the eye the hinge edge is (the floor's depth below the camera).
+    checks, texels : int
+        Checkerboard squares per side and texture size.
+    backend : {"auto", "ipympl", "image"}
+    style : str, optional
+
+    Attributes
+    ----------
+    widget : ipywidgets.VBox
+    tilt : FloatSlider
+        Degrees the square is tilted away, 0 to 90 (also available as ``depth``).
+    view : ComparisonView
+        ``view.images`` the two renders, ``view.heatmap`` the texel error.
+    affine, perspective : (H, W, 3) arrays
+        The two images on show (NaN outside the square).
+    error : (H, W) array
+        |uv_affine − uv_perspective| in texels.
+    maximum : float
+        Largest texel error on show.
+
+    Examples
+    --------
+    >>> viewer = TexturedPlaneViewer(64, 48, tilt=0.0, backend="image")
+    >>> float(viewer.maximum) < 1e-9
+    True
+    >>> viewer.tilt.value = 60.0
+    >>> viewer.maximum > 1.0
+    True
+    >>> viewer.close()
+    """
+
+    def __init__(
+        self,
+        width: int = 160,
+        height: int = 120,
+        *,
+        tilt: float = 60.0,
+        distance: float = 0.6,
+        below: float = 1.5,
+        checks: int = 8,
+        texels: int = 64,
+        backend: str = "auto",
+        style: str | None = None,
+    ) -> None:
+        self.width, self.height = width, height
+        self.backend = resolve_backend(backend)
+        self.texture = checkerboard(checks, texels)
+        self.distance, self.below = distance, below
+        # Looking straight ahead; plane_clip zooms the view onto the square, so the field of
+        # view only needs to be some valid angle.
+        self.camera = Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0,
+                             near=0.05, far=50.0)  # fmt: skip
+        self._render(tilt)
+        with style_context(style):
+            fig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
+            axes = comparison_axes(fig, height, width, colorbars=(False, True))
+            self.view = ComparisonView(
+                self.affine, self.perspective, axes=axes,
+                titles=("affine (screen-space) uv", "perspective-correct uv"),
+                label="texel error",
+            )  # fmt: skip
+            self._show_error()
+            self.display = FigureDisplay(fig, self.backend)
+        self.fig = fig
+
+        self.tilt = widgets.FloatSlider(value=tilt, min=0.0, max=90.0, step=1.0,
+                                        description="tilt (°)", readout_format=".0f",
+                                        layout=widgets.Layout(width="420px"))  # fmt: skip
+        self.depth = self.tilt  # the brief's name for it: how far the plane recedes
+        self.tilt.observe(lambda change: self.update(change["new"]), "value")
+        self.info = widgets.HTML()
+        self._set_info()
+        title = title_html(
+            "Texture mapping a receding square: affine vs perspective-correct",
+            "Tilt the square away from the camera. Affine texture coordinates bend the "
+            "checker lines and kink them along the diagonal where the two triangles meet.",
+        )
+        self.widget = widgets.VBox([title, self.tilt, self.info, self.display.widget])
+
+    def _render(self, tilt: float) -> None:
+        clip = plane_clip(tilt, self.camera, self.width / self.height,
+                          distance=self.distance, below=self.below)  # fmt: skip
+        uv = np.broadcast_to(CORNER_UV[TRIANGLES], (2, 3, 2))
+        self.clip = clip
+        out = {}
+        for mode in ("affine", "perspective"):
+            frame = render(clip, self.width, self.height, attrs=uv, interpolation=mode)
+            out[mode] = frame.attrs
+        self.uv_affine, self.uv_perspective = out["affine"], out["perspective"]
+        self.affine = sample(self.texture, self.uv_affine)
+        self.perspective = sample(self.texture, self.uv_perspective)
+        self.error = texel_error(self.uv_affine, self.uv_perspective, self.texture.shape)
+
+    def _show_error(self) -> None:
+        # The heatmap shows texel error, not the colour difference ComparisonView computes:
+        # the same artists, given |error - 0|.
+        self.view.heatmap.update(self.error, np.zeros_like(self.error))
+
+    @property
+    def maximum(self) -> float:
+        """Largest texel error on show."""
+        return self.view.maximum
+
+    def update(self, tilt: float | None = None) -> None:
+        """Render again at ``tilt`` (default: the slider's) and update the figure in place."""
+        self._render(self.tilt.value if tilt is None else tilt)
+        self.view.update(self.affine, self.perspective, draw=False)
+        self._show_error()
+        self._set_info()
+        self.display.refresh()
+
+    def _set_info(self) -> None:
+        w = self.clip[..., 3]
+        near, far = float(w.min()), float(w.max())
+        m = self.maximum
+        err = f"{m:.2f} texels" if np.isfinite(m) else "none"
+        self.info.value = (
+            f"w from {near:.2f} (near edge) to {far:.2f} (far edge), ratio {far / near:.2f} · "
+            f"largest texture-coordinate error of affine interpolation: <b>{err}</b>"
+        )
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the viewer."""
+        from .player import _close_tree
+
+        self.display.close()
+        _close_tree(self.widget)

@@ -1,0 +1,404 @@
+"""The widgets, driven from code (no browser): every control moves the figures it should, the
+figures update in place, degenerate triangles never raise, the benchmark script runs."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import importlib.util  # noqa: E402
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+from types import SimpleNamespace  # noqa: E402
+
+import ipywidgets as widgets  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from ipywidgets.widgets import widget_link  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.widgets import (  # noqa: E402
+    FillPlayer,
+    TexturedPlaneViewer,
+    TriangleEditor,
+    _display,  # noqa: E402
+    resolve_backend,
+)
+from teachraster.widgets.textured import plane_clip  # noqa: E402
+
+W = H = 16
+XY = ((1.3, 1.2), (14.6, 4.7), (5.2, 14.1))
+
+
+def triangle(xy=XY, w=(1.0, 3.0, 6.0)):
+    return tr.Triangle(xy, w=w, attrs={"u": [0.0, 1.0, 0.0]})
+
+
+@pytest.fixture
+def player():
+    p = FillPlayer(triangle(), W, H, backend="image")
+    yield p
+    p.close()
+
+
+@pytest.fixture
+def editor():
+    e = TriangleEditor(triangle(), W, H, backend="image")
+    yield e
+    e.close()
+
+
+def shown_coverage(view) -> np.ndarray:
+    return np.asarray(view.coverage.image.get_array()).astype(bool)
+
+
+def work_kinds(trace) -> set:
+    return {s.kind for s in trace} - {"snap", "winding", "bbox", "sort", "split", "interpolate"}
+
+
+# -- FillPlayer --------------------------------------------------------------------------------
+@pytest.mark.parametrize("method", ["span", "halfplane"])
+def test_step_slider_sets_caption_and_coverage(method):
+    player = FillPlayer(triangle(), W, H, method=method, backend="image")
+    trace = player.trace
+    assert player.slider.min == 0 and player.slider.max == len(trace) - 1
+    pngs = set()
+    for k in sorted({0, 1, 3, len(trace) // 2, len(trace) - 2, len(trace) - 1}):
+        player.slider.value = k
+        assert player.step == k
+        assert player.caption_text == trace.caption(k)
+        assert np.array_equal(shown_coverage(player.view), trace.coverage_at(k))
+        png = bytes(player.display.widget.value)
+        assert png.startswith(b"\x89PNG")
+        pngs.add(png)
+    assert len(pngs) > 1  # the picture itself changes, not just the artists
+    player.close()
+
+
+def test_caption_widget_escapes_html(player):
+    player.method.value = "halfplane"
+    k = next(s.index for s in player.trace if "<" in s.caption or ">" in s.caption)
+    player.slider.value = k
+    assert "<" not in player.caption.value.replace("&lt;", "")
+    assert player.caption_text == player.trace.caption(k)
+
+
+def test_step_buttons_move_the_slider(player):
+    assert player.slider.value == 0
+    player.next.click()
+    player.next.click()
+    assert player.slider.value == 2
+    player.prev.click()
+    assert player.slider.value == 1
+    player.first.click()
+    player.prev.click()  # stays at the first step
+    assert player.slider.value == 0
+    player.last.click()
+    player.next.click()  # stays at the last step
+    assert player.slider.value == player.slider.max == len(player.trace) - 1
+    assert player.caption_text == player.trace.caption(-1)
+
+
+def test_method_toggle_rasterises_again_and_the_slider_follows(player):
+    assert work_kinds(player.trace) == {"row"}
+    span_steps = len(player.trace)
+    player.slider.value = 5
+    player.method.value = "halfplane"
+    trace = player.trace
+    assert trace.method == "halfplane" and work_kinds(trace) == {"pixel"}
+    assert len(trace) != span_steps
+    assert player.slider.max == player.play.max == len(trace) - 1
+    assert player.slider.value == 5  # the same step index
+    assert player.caption_text == trace.caption(5)
+    assert np.array_equal(shown_coverage(player.view), trace.coverage_at(5))
+    # a finished fill stays finished when switching back
+    player.last.click()
+    player.method.value = "span"
+    assert work_kinds(player.trace) == {"row"}
+    assert player.slider.value == player.slider.max == span_steps - 1
+    assert player.view.step == span_steps - 1
+    assert player.caption_text == player.trace.caption(-1)
+
+
+def test_interpolation_toggle_changes_the_interpolation_view(player):
+    view = player.interp_view
+    assert view is not None
+    affine_ax, persp_ax = view.axes[:2]
+    assert "in use" in persp_ax.title.get_text() and "in use" not in affine_ax.title.get_text()
+    png = player.interp_display.widget.value
+    player.interpolation.value = "affine"
+    assert player.trace.interpolation == "affine"
+    assert "in use" in affine_ax.title.get_text() and "in use" not in persp_ax.title.get_text()
+    assert view.images[0].image.get_alpha() == 1.0 and view.images[1].image.get_alpha() < 1.0
+    assert player.interp_display.widget.value != png
+    # the last step says which interpolation ran
+    player.last.click()
+    assert "affine in screen space" in player.caption_text
+    player.interpolation.value = "perspective"
+    assert "perspective-correct" in player.caption_text
+
+
+def test_interpolation_view_follows_the_method_toggle(player):
+    before = player.interp_view.trace
+    player.method.value = "halfplane"
+    assert player.interp_view.trace is player.trace is not before
+
+
+def test_play_is_linked_to_the_slider_in_the_browser(player):
+    link = player.link
+    # jslink (not link): the Play drives the slider in the browser, no kernel round trip
+    assert isinstance(link, widget_link.Link)
+    assert link.source == (player.play, "value")
+    assert link.target == (player.slider, "value")
+    assert (player.play.min, player.play.max) == (player.slider.min, player.slider.max)
+    player.speed.value = 150
+    assert player.play.interval == 150
+
+
+def test_player_without_attributes_has_no_interpolation_view():
+    p = FillPlayer(tr.Triangle(XY), W, H, backend="image")
+    assert p.interp_view is None
+    p.interpolation.value = "affine"
+    p.slider.value = p.slider.max
+    assert "no attributes" in p.caption_text
+    p.close()
+
+
+DEGENERATE = {
+    "zero_area": ((1, 1), (5, 5), (9, 9)),
+    "one_point": ((3, 3), (3, 3), (3, 3)),
+    "outside": ((40, 40), (50, 41), (45, 60)),
+    "thin": ((0.2, 4.4), (15.7, 4.6), (8.0, 4.55)),
+}
+
+
+@pytest.mark.parametrize("xy", DEGENERATE.values(), ids=DEGENERATE)
+def test_player_steps_through_degenerate_triangles(xy):
+    p = FillPlayer(triangle(xy), W, H, backend="image")
+    for method in ("span", "halfplane"):
+        p.method.value = method
+        for k in range(p.slider.max + 1):
+            p.slider.value = k
+            assert p.caption_text == p.trace.caption(k)
+    p.close()
+
+
+def test_stepping_updates_artists_in_place(player):
+    ax = player.view.ax
+    n_children, n_axes = len(ax.get_children()), len(player.fig.axes)
+    artists = set(map(id, ax.get_children()))
+    for k in range(50):
+        player.slider.value = k % (player.slider.max + 1)
+    assert len(ax.get_children()) == n_children
+    assert set(map(id, ax.get_children())) == artists  # the very same artists
+    assert len(player.fig.axes) == n_axes
+    # toggles reuse them too
+    ifig = player.interp_view.fig
+    n_interp = [len(a.get_children()) for a in ifig.axes]
+    for _ in range(3):
+        player.method.value = "halfplane"
+        player.interpolation.value = "affine"
+        player.method.value = "span"
+        player.interpolation.value = "perspective"
+    assert len(ax.get_children()) == n_children
+    assert [len(a.get_children()) for a in ifig.axes] == n_interp
+
+
+def test_player_widget_holds_the_controls_and_displays(player):
+    def walk(w):
+        yield w
+        for c in getattr(w, "children", ()):
+            yield from walk(c)
+
+    inside = list(walk(player.widget))
+    for control in (player.play, player.slider, player.prev, player.next, player.speed,
+                    player.method, player.interpolation, player.caption,
+                    player.display.widget):  # fmt: skip
+        assert any(control is w for w in inside)
+    assert isinstance(player.display.widget, widgets.Image)
+    assert player.fig is player.view.fig
+    assert "application/vnd.jupyter.widget-view+json" in player._repr_mimebundle_()
+
+
+def test_player_rejects_bad_input():
+    with pytest.raises(TypeError, match="Triangle"):
+        FillPlayer(XY, W, H, backend="image")
+    with pytest.raises(ValueError, match="method"):
+        FillPlayer(triangle(), W, H, method="scanline", backend="image")
+    with pytest.raises(ValueError, match="backend"):
+        FillPlayer(triangle(), W, H, backend="svg")
+
+
+def test_style_applies_to_the_widget_only():
+    size = matplotlib.rcParams["font.size"]
+    p = FillPlayer(triangle(), W, H, backend="image", style="classroom")
+    assert matplotlib.rcParams["font.size"] == size
+    assert p.view.caption_text.get_fontsize() > size  # classroom fonts inside the figure
+    p.close()
+
+
+# -- backends ----------------------------------------------------------------------------------
+def test_auto_backend_follows_matplotlib(monkeypatch):
+    assert resolve_backend("auto") == "image"  # Agg here
+    for name in ("module://ipympl.backend_nbagg", "widget", "ipympl"):
+        monkeypatch.setattr(_display.mpl, "rcParams", {"backend": name})
+        assert resolve_backend("auto") == "ipympl"
+    monkeypatch.setattr(_display.mpl, "rcParams", {"backend": "module://matplotlib_inline"})
+    assert resolve_backend("auto") == "image"
+    with pytest.raises(ValueError, match="backend"):
+        resolve_backend("qt")
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # raised inside ipympl
+def test_ipympl_backend_puts_the_canvas_in_the_box():
+    pytest.importorskip("ipympl")
+    from ipympl.backend_nbagg import Canvas
+
+    p = FillPlayer(triangle(), W, H, backend="ipympl")
+    assert isinstance(p.fig.canvas, Canvas)
+    assert any(c is p.fig.canvas for c in p.widget.children)
+    p.slider.value = 4
+    assert np.array_equal(shown_coverage(p.view), p.trace.coverage_at(4))
+    p.close()
+    e = TriangleEditor(triangle(), W, H, backend="ipympl")
+    assert any(c is e.fig.canvas for c in e.widget.children)
+    e.close()
+
+
+# -- TriangleEditor ----------------------------------------------------------------------------
+def test_vertex_sliders_move_the_triangle(editor):
+    editor.x[1].value = 9.0
+    editor.y[1].value = 3.25
+    trace = editor.fill.trace
+    assert trace.snapped[1].tolist() == [9.0, 3.25]
+    assert editor.view.trace is trace and editor.interp_view.trace is trace
+    assert editor.view.step == len(trace) - 1  # the finished fill
+    assert np.array_equal(shown_coverage(editor.view), trace.coverage_at(len(trace) - 1))
+    # snapping to 1/256 px happens in the core; the editor shows the snapped triangle
+    editor.x[0].value = 2.0 + 0.3 / 256
+    assert editor.fill.trace.snapped[0, 0] == 2.0
+
+
+def test_split_point_follows_the_middle_vertex(editor):
+    u4 = editor.fill.trace.span.u4
+    assert f"u4 = {u4:.2f}" in editor.info.value
+    editor.y[1].value = 8.0
+    new = editor.fill.trace.span.u4
+    assert new != u4
+    assert editor.view.split.label.get_text() == f"v4: u4 = {new:.2f}"
+
+
+def test_depth_sliders_drive_the_error_heatmap(editor):
+    for s in editor.w:
+        editor._quiet = True
+        s.value = 2.0
+    editor._quiet = False
+    editor.update()
+    assert editor.interp_view.maximum < 1e-12  # equal w: affine is exact
+    editor.w[2].value = 8.0
+    big = editor.interp_view.maximum
+    assert big > 0.05
+    assert f"{big:.3g}" in editor.interp_view.heatmap.title.get_text()
+
+
+def test_zero_area_positions_do_not_raise(editor):
+    # all three on one line, one slider at a time (the way a student drags into it)
+    for i, (x, y) in enumerate([(2.0, 2.0), (6.0, 6.0), (10.0, 10.0)]):
+        editor.x[i].value = x
+        editor.y[i].value = y
+    trace = editor.fill.trace
+    assert trace.signed_area == 0 and not trace.covered.any()
+    assert "zero area" in editor.info.value
+    assert not shown_coverage(editor.view).any()
+    editor.set_vertex(1, x=2.0, y=2.0)  # two vertices on top of each other
+    editor.set_vertex(2, x=2.0, y=2.0)  # a single point
+    editor.method.value = "halfplane"
+    editor.w[0].value = 5.0
+    assert not editor.fill.coverage.any()
+
+
+def test_set_vertex_renders_once(editor):
+    before = editor.display.draws
+    editor.set_vertex(0, x=3.0, y=2.0, w=2.5)
+    assert editor.display.draws == before + 1
+    assert editor.fill.trace.snapped[0].tolist() == [3.0, 2.0]
+    assert editor.tri.w[0] == pytest.approx(2.5)
+
+
+def test_dragging_a_vertex_with_the_mouse(editor):
+    ax = editor.view.ax
+
+    def event(x, y, inaxes=ax):
+        return SimpleNamespace(inaxes=inaxes, button=1, xdata=x, ydata=y)
+
+    x1, y1 = editor.xy[1]
+    editor._on_press(event(x1 + 0.3, y1 - 0.2))  # near v1
+    assert editor._dragging == 1
+    editor._last_done = 0.0  # no backlog
+    editor._on_motion(event(11.0, 6.0))
+    editor._on_release(event(11.0, 6.0))
+    assert editor._dragging is None
+    assert editor.fill.trace.snapped[1].tolist() == [11.0, 6.0]
+    assert (editor.x[1].value, editor.y[1].value) == (11.0, 6.0)
+    # a press far from every vertex drags nothing
+    editor._on_press(event(8.0, 15.5))
+    assert editor._dragging is None
+
+
+# -- TexturedPlaneViewer -----------------------------------------------------------------------
+def test_tilt_slider_changes_both_images_and_the_error_grows():
+    viewer = TexturedPlaneViewer(64, 48, tilt=0.0, backend="image")
+    assert viewer.depth is viewer.tilt
+    assert viewer.maximum < 1e-9  # facing the camera: all w equal, affine is exact
+    maxima, previous = [], (viewer.affine, viewer.perspective)
+    for tilt in (15.0, 30.0, 45.0, 60.0, 75.0, 90.0):
+        viewer.tilt.value = tilt
+        a, p = viewer.affine, viewer.perspective
+        assert not np.array_equal(a, previous[0], equal_nan=True)
+        assert not np.array_equal(p, previous[1], equal_nan=True)
+        # what is shown is what was rendered
+        shown = np.asarray(viewer.view.images[1].image.get_array())
+        assert shown.shape[:2] == (48, 64)
+        maxima.append(viewer.maximum)
+        previous = (a, p)
+    assert all(b > a for a, b in zip(maxima, maxima[1:])), maxima
+    assert maxima[-1] > 5.0  # several texels off: the warp is obvious
+    assert f"{maxima[-1]:.3g}" in viewer.view.heatmap.title.get_text()
+    viewer.close()
+
+
+@pytest.mark.parametrize("tilt", [0.0, 40.0, 75.0, 90.0])
+def test_the_square_is_fully_on_screen(tilt):
+    viewer = TexturedPlaneViewer(64, 48, tilt=tilt, backend="image")
+    covered = ~np.isnan(viewer.perspective[..., 0])
+    assert covered.sum() > 0.15 * covered.size
+    # nothing touches the border: the whole square is in the frame
+    assert not (covered[0].any() or covered[-1].any() or covered[:, 0].any()
+                or covered[:, -1].any())  # fmt: skip
+    clip = plane_clip(tilt, viewer.camera, 64 / 48)
+    ndc = clip[..., :2] / clip[..., 3:]
+    assert np.abs(ndc).max() <= 0.92 + 1e-9
+    viewer.close()
+
+
+def test_textured_viewer_shows_texel_error_in_place():
+    viewer = TexturedPlaneViewer(48, 36, tilt=50.0, backend="image")
+    axes = viewer.fig.axes
+    children = [len(a.get_children()) for a in axes]
+    err = np.asarray(viewer.view.heatmap.image.get_array(), dtype=float)
+    assert np.nanmax(err) == pytest.approx(np.nanmax(viewer.error))
+    for tilt in range(0, 91, 5):
+        viewer.tilt.value = float(tilt)
+    assert [len(a.get_children()) for a in viewer.fig.axes] == children
+    viewer.close()
+
+
+# -- benchmark script --------------------------------------------------------------------------
+def test_widget_benchmark_quick_run_succeeds(capsys):
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_widgets.py"
+    spec = importlib.util.spec_from_file_location("bench_widgets", path)
+    bench = importlib.util.module_from_spec(spec)
+    sys.modules["bench_widgets"] = bench
+    spec.loader.exec_module(bench)
+    assert bench.main(["--quick"]) == 0
+    out = capsys.readouterr().out
+    assert "step slider" in out and "vertex" in out and ("PASS" in out or "MISS" in out)
