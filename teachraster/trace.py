@@ -173,7 +173,11 @@ class FillTrace:
         return self.step(k).caption
 
     def coverage_at(self, k: int) -> np.ndarray:
-        """(height, width) bool: the pixels filled once steps 0..k have run."""
+        """(height, width) bool: the pixels filled once steps 0..k have run.
+
+        ``k`` counts from the end when negative, as in :meth:`step`.
+        """
+        k = self.step(k).index  # validates k and resolves negative indices
         done = (self.filled_at >= 0) & (self.filled_at <= k)
         return self.image(done, fill=False)
 
