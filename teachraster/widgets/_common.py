@@ -10,6 +10,24 @@ import matplotlib as mpl
 from ..plotting import use_style
 
 
+class Holdable:
+    """Lets a widget set its own controls without each change redrawing.
+
+    Observers check ``self._quiet``; inside ``with self._holding():`` it is True, so the
+    widget changes several controls and then redraws once.
+    """
+
+    _quiet = False
+
+    @contextlib.contextmanager
+    def _holding(self):
+        self._quiet = True
+        try:
+            yield
+        finally:
+            self._quiet = False
+
+
 def style_context(style: str | None):
     """``use_style(style)`` for the duration of a block, or nothing when ``style`` is None.
 

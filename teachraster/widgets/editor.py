@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
 import math
 import time
 
@@ -13,7 +12,7 @@ from ..plotting import FillView, InterpolationView
 from ..rasterize import rasterize
 from ..span_tables import split_point
 from ..triangle import Triangle
-from ._common import fill_axes, labelled, style_context, title_html
+from ._common import Holdable, fill_axes, labelled, style_context, title_html
 from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
@@ -21,7 +20,7 @@ from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure
 W_RANGE = (0.2, 10.0)
 
 
-class TriangleEditor:
+class TriangleEditor(Holdable):
     """Edit a triangle's vertices (x, y and w) and see the fill, u4 and the error heatmap follow.
 
     Two figures update in place at every change: a :class:`~teachraster.plotting.FillView`
@@ -187,14 +186,6 @@ class TriangleEditor:
                 if value is not None:
                     slider.value = value
         self.update()
-
-    @contextlib.contextmanager
-    def _holding(self):
-        self._quiet = True
-        try:
-            yield
-        finally:
-            self._quiet = False
 
     def _on_slider(self, change) -> None:
         if not self._quiet:

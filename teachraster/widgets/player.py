@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
 import html
 
 import ipywidgets as widgets
@@ -10,7 +9,7 @@ import ipywidgets as widgets
 from ..plotting import COLORS, FillView, InterpolationView
 from ..rasterize import rasterize
 from ..triangle import Triangle
-from ._common import fill_axes, labelled, style_context, title_html
+from ._common import Holdable, fill_axes, labelled, style_context, title_html
 from ._display import (
     COMPARISON_DPI,
     FigureDisplay,
@@ -24,7 +23,7 @@ METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane")]
 INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspective")]
 
 
-class FillPlayer:
+class FillPlayer(Holdable):
     """Step through the fill of one triangle: Play/Pause, a step slider, the step in words.
 
     The figure is a :class:`~teachraster.plotting.FillView`; moving the step slider calls
@@ -229,15 +228,6 @@ class FillPlayer:
         step = self.view.show_step(k, draw=False)
         self.caption.value = html_escape(step.caption)
         self.display.refresh()
-
-    @contextlib.contextmanager
-    def _holding(self):
-        """Move the slider without each move redrawing (one redraw afterwards instead)."""
-        self._quiet = True
-        try:
-            yield
-        finally:
-            self._quiet = False
 
     def _on_fill_options(self, change) -> None:
         self.fill = rasterize(self.tri, self.width, self.height, method=self.method.value,
