@@ -190,7 +190,8 @@ def _culled(setup: EdgeSetup, cull: str | None) -> bool:
     return False
 
 
-def _describe_setup(setup, box, method, tri, bits, culled, algo_trace):
+def _describe_setup(setup, box, method, bits, culled, algo_trace):
+    """The set-up steps of the trace: (kind, caption) pairs, plus snapped xy and area."""
     px = 1.0 / float(setup.unit)
     snapped = setup.p[np.argsort(setup.perm)].astype(np.float64) * px
     pts = ", ".join(f"({x:g}, {y:g})" for x, y in snapped)
@@ -200,14 +201,12 @@ def _describe_setup(setup, box, method, tri, bits, culled, algo_trace):
     if area == 0:
         turn = "zero area: the triangle is degenerate and covers no pixel centre"
     else:
-        facing = (
-            "clockwise on screen (back-facing)"
-            if area > 0
-            else ("counter-clockwise on screen (front-facing)")
-        )
-        turn = f"signed area {area:g} px²: {facing}"
-        if area < 0:
-            turn += "; two vertices swapped so the inside is on the positive side"
+        turn = f"signed area {area:g} px²: "
+        if area > 0:
+            turn += "clockwise on screen (back-facing)"
+        else:
+            turn += "counter-clockwise on screen (front-facing); two vertices swapped so the "
+            turn += "inside is on the positive side"
     steps.append(("winding", turn + ("; culled, nothing is filled" if culled else "")))
     n = box.size
     steps.append((
@@ -242,7 +241,7 @@ def _describe_setup(setup, box, method, tri, bits, culled, algo_trace):
 def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, local,
             algo_trace, lam, values, depth_values) -> FillTrace:  # fmt: skip
     width, height = size
-    snapped, area, steps = _describe_setup(setup, box, method, tri, bits, culled, algo_trace)
+    snapped, area, steps = _describe_setup(setup, box, method, bits, culled, algo_trace)
     first = len(steps)
     if method == "span" and algo_trace is not None:
         # a pixel is filled at the step of its raster line
