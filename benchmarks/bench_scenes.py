@@ -18,9 +18,7 @@ from __future__ import annotations
 import argparse
 import cProfile
 import pstats
-import statistics
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -29,22 +27,14 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # the sibling bench_fill
+
+from bench_fill import median_seconds  # noqa: E402
+
 import teachraster as tr  # noqa: E402
 from teachraster.scenes import uv_sphere  # noqa: E402
 
 SPHERE_TARGET = 10.0  # within 10x of llvmpipe
-
-
-def median_seconds(fn, repeat: int, warmup: int = 1) -> float:
-    """Median wall time of ``fn()`` over ``repeat`` calls."""
-    for _ in range(warmup):
-        fn()
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def bench_plan(width: int, height: int, repeat: int) -> None:

@@ -15,3 +15,23 @@ def test_fill_benchmark_quick_run_succeeds(capsys):
     assert bench.main(["--quick", "--repeat", "1"]) == 0  # non-zero means a failed check
     out = capsys.readouterr().out
     assert "same coverage" in out and "PASS" in out
+
+
+def _load(name: str):
+    path = BENCH.parent / f"{name}.py"
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_scene_benchmark_quick_run_succeeds(capsys):
+    assert _load("bench_scenes").main(["--quick", "--repeat", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "planned" in out and "UV sphere" in out
+
+
+def test_widget_benchmark_quick_run_succeeds(capsys):
+    assert _load("bench_widgets").main(["--quick"]) == 0
+    assert "step slider" in capsys.readouterr().out
