@@ -119,7 +119,9 @@ def rasterize_batch(
         top_left = (b[:, 1] < a[:, 1]) | ((b[:, 1] == a[:, 1]) & (b[:, 0] > a[:, 0]))
         # Each edge bounds the lines its closed y-range contains (an active edge table).
         active = (y >= np.minimum(a[:, 1], b[:, 1])) & (y <= np.maximum(a[:, 1], b[:, 1]))
-        e_lo, e_hi, e_ok, _ = edge_bounds(a, b, top_left, y, unit, half, exact)
+        e_lo, e_hi, e_ok, _ = edge_bounds(
+            a, b, top_left, y, unit, half, exact, first_col=0, last_col=width - 1
+        )
         lo = np.where(active, np.maximum(lo, e_lo), lo)
         hi = np.where(active, np.minimum(hi, e_hi), hi)
         ok &= ~active | e_ok

@@ -76,12 +76,16 @@ def split_point(sorted_xy: np.ndarray) -> float | None:
 NO_BOUND = 2**62
 
 
-def edge_bounds(a, b, top_left, y, unit, half, exact: bool):
+def edge_bounds(a, b, top_left, y, unit, half, exact: bool, first_col=0, last_col=0):
     """Columns allowed by directed edges a→b on raster lines with centre y (internal units).
 
     Solves the edge's tie-aware test ``E >= 0`` (top-left) or ``E > 0`` for the column j
     of the pixel centre ``X = j * unit + half`` on each row. All arguments broadcast, so
     one triangle's edge over many rows and many triangles' edges at once work alike.
+
+    On the snapped grid the answer is one exact integer division. With raw floats
+    (``exact=False``) the answer is searched for among columns ``first_col .. last_col``
+    (bisection on E itself; outside that range only "before" or "after" is reported).
 
     Returns
     -------
@@ -99,7 +103,8 @@ def edge_bounds(a, b, top_left, y, unit, half, exact: bool):
     K = dx * (y - ay)  # on this row, E = K - dy * (X - a.x)
     flat = dy == 0
     safe = np.where(flat, 1, dy)
-    crossing = np.where(flat, np.nan, (ax + K / safe) / float(unit))
+    with np.errstate(over="ignore", invalid="ignore"):  # raw floats may be astronomically far
+        crossing = np.where(flat, np.nan, (ax + K / safe) / float(unit))
     if exact:
         bias = np.where(top_left, 0, 1)  # on integers, E > 0 is E >= 1
         # dy > 0: E >= bias  <=>  X - a.x <= floor((K - bias) / dy)        (upper bound)
@@ -110,54 +115,76 @@ def edge_bounds(a, b, top_left, y, unit, half, exact: bool):
         hi = np.where(dy > 0, (x_max - half) // unit, NO_BOUND)
         lo = np.where(dy < 0, -((half - x_min) // unit), -NO_BOUND)
         ok = ~flat | (K >= bias)
-    else:  # raw floats: start from the crossing, then settle on E itself
-        c = np.where(flat, 0.0, crossing - 0.5)
-        hi = np.where(top_left, np.floor(c), np.ceil(c) - 1).astype(np.int64)
-        lo = np.where(top_left, np.ceil(c), np.floor(c) + 1).astype(np.int64)
-
-        def inside(j):  # the half-plane test, with the same float operations, at column j
-            e = K - dy * ((j * unit + half) - ax)
+    else:
+        # Raw floats: the crossing, rounded, can disagree with how the half-plane method's
+        # own rounding of E decides a tie (or be far off for astronomically distant
+        # vertices). E is monotonic along a row even in floating point, so a bisection on
+        # the very test the half-plane method evaluates, with the same operations, finds
+        # the column where its verdict changes: both methods then agree on every pixel.
+        def inside(j):
+            with np.errstate(over="ignore", invalid="ignore"):
+                e = K - dy * ((j * unit + half) - ax)
             return np.where(top_left, e >= 0, e > 0)
 
-        # The rounded crossing can be a column off where the half-plane method's own
-        # rounding of E decides a tie; E is monotonic along the row, so stepping towards
-        # its verdict makes both methods agree even on unsnapped floats.
-        for _ in range(2):
-            hi = np.where(inside(hi), hi, hi - 1)
-            hi = np.where(inside(hi + 1), hi + 1, hi)
-            lo = np.where(inside(lo), lo, lo + 1)
-            lo = np.where(inside(lo - 1), lo - 1, lo)
-        hi = np.where(dy > 0, hi, NO_BOUND)
-        lo = np.where(dy < 0, lo, -NO_BOUND)
+        shape = np.broadcast(K, dy, first_col, last_col).shape
+        below = np.broadcast_to(np.asarray(first_col, dtype=np.int64) - 1, shape)
+        above = np.broadcast_to(np.asarray(last_col, dtype=np.int64) + 1, shape)
+        down = np.broadcast_to(dy > 0, shape)  # inside on the left: true, then false
+        for _ in range(int(np.max(above - below, initial=1)).bit_length()):
+            mid = (below + above) // 2
+            if_inside = inside(mid) == down  # "mid is on the same side as `below`"
+            below = np.where(if_inside & (above - below > 1), mid, below)
+            above = np.where(~if_inside & (above - below > 1), mid, above)
+        hi = np.where(dy > 0, below, NO_BOUND)
+        lo = np.where(dy < 0, above, -NO_BOUND)
         ok = ~flat | np.where(top_left, K >= 0, K > 0)
     return lo, hi, ok, crossing
+
+
+def _edge_index(i: int, j: int) -> int:
+    """Index k of the oriented edge p_k -> p_(k+1) that joins vertices i and j."""
+    return i if j == (i + 1) % 3 else j
 
 
 def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTrace | None]:
     """Coverage of the bounding box (bbox-local bool array) and, if asked, the trace."""
     rows = bbox.rows()
     y = setup.centre_x(rows)
+    # Sort by y (then x): v1 on top, v3 at the bottom (seed 000 §1.1).
+    v1, v2, v3 = np.lexsort((setup.p[:, 0], setup.p[:, 1]))
+    long_edge, top_edge, bottom_edge = _edge_index(v1, v3), _edge_index(v1, v2), _edge_index(v2, v3)
+    split_y = setup.p[v2, 1]
+    # Rows above v2 belong to the flat-bottom triangle (v1, v2, v4): its span runs between
+    # the long edge and the short top edge. Rows from v2 down belong to the flat-top one
+    # (v2, v4, v3): between the long edge and the short bottom edge. On the split row itself
+    # v2 lies on both short edges, so both are tested there.
+    upper = y < split_y
+    parts = (
+        (upper, (long_edge, top_edge)),
+        (~upper, (long_edge, bottom_edge)),
+        (y == split_y, (top_edge,)),
+    )
     lo = np.full(len(rows), bbox.col0, dtype=np.int64)
     hi = np.full(len(rows), bbox.col1 - 1, dtype=np.int64)
     row_ok = np.ones(len(rows), dtype=bool)
     x_left = np.full(len(rows), -np.inf)
     x_right = np.full(len(rows), np.inf)
-    for k in range(3):
-        a, b = setup.p[k], setup.p[(k + 1) % 3]
-        # The edge is active on the rows its closed y-range contains (an active edge table).
-        active = (y >= min(a[1], b[1])) & (y <= max(a[1], b[1]))
-        if not active.any():
+    for part, edges in parts:
+        if not part.any():
             continue
-        low, high, ok, crossing = edge_bounds(
-            a, b, setup.top_left[k], y[active], setup.unit, setup.half, setup.exact
-        )
-        lo[active] = np.maximum(lo[active], low)
-        hi[active] = np.minimum(hi[active], high)
-        row_ok[active] &= ok  # a horizontal edge keeps or drops its whole row
-        if b[1] < a[1]:  # going up: the left end of the span
-            x_left[active] = np.maximum(x_left[active], crossing)
-        elif b[1] > a[1]:
-            x_right[active] = np.minimum(x_right[active], crossing)
+        for k in edges:
+            a, b = setup.p[k], setup.p[(k + 1) % 3]
+            low, high, ok, crossing = edge_bounds(
+                a, b, setup.top_left[k], y[part], setup.unit, setup.half, setup.exact,
+                first_col=bbox.col0, last_col=bbox.col1 - 1,
+            )  # fmt: skip
+            lo[part] = np.maximum(lo[part], low)
+            hi[part] = np.minimum(hi[part], high)
+            row_ok[part] &= ok  # a horizontal edge keeps or drops its whole row
+            if b[1] < a[1]:  # going up: the left end of the span
+                x_left[part] = np.maximum(x_left[part], crossing)
+            elif b[1] > a[1]:
+                x_right[part] = np.minimum(x_right[part], crossing)
     hi = np.where(row_ok, hi, lo - 1)  # a dropped row is an empty span
     cols = bbox.cols()
     covered = (cols[None, :] >= lo[:, None]) & (cols[None, :] <= hi[:, None])
@@ -184,7 +211,8 @@ def _trace(setup, rows, y, lo, hi, x_left, x_right) -> SpanTrace:
         flat_bottom=flat_bottom,
         flat_top=flat_top,
         rows=rows,
-        half=(y >= sorted_units[1, 1]).astype(np.int8),
+        # the split row goes with the flat-top part, unless there is none (flat bottom)
+        half=((y >= sorted_units[1, 1]) & (flat_top is not None)).astype(np.int8),
         x_left=x_left,
         x_right=x_right,
         col_start=lo,
