@@ -119,6 +119,8 @@ def rasterize_batch(
         top_left = (b[:, 1] < a[:, 1]) | ((b[:, 1] == a[:, 1]) & (b[:, 0] > a[:, 0]))
         # Each edge bounds the lines its closed y-range contains (an active edge table).
         active = (y >= np.minimum(a[:, 1], b[:, 1])) & (y <= np.maximum(a[:, 1], b[:, 1]))
+        if not exact:  # raw floats: all three tests on every line (see span_tables.fill)
+            active[:] = True
         e_lo, e_hi, e_ok, _ = edge_bounds(
             a, b, top_left, y, unit, half, exact, first_col=0, last_col=width - 1
         )

@@ -23,6 +23,10 @@ SUBPIXEL_BITS = 8
 UNIT_LIMIT = 2**30
 
 
+#: Largest |coordinate| for raw floats: products of two differences stay below 1.8e308.
+FLOAT_LIMIT = 1e150
+
+
 def check_bits(subpixel_bits: int | None) -> None:
     """Raise unless ``subpixel_bits`` is ``None`` or an int in [0, 16]."""
     if subpixel_bits is None:
@@ -65,6 +69,11 @@ def to_units(xy: np.ndarray, subpixel_bits: int | None) -> np.ndarray:
     """
     xy = np.asarray(xy, dtype=np.float64)
     if subpixel_bits is None:
+        if np.abs(xy).max(initial=0.0) >= FLOAT_LIMIT:
+            raise ValueError(
+                f"xy: coordinates beyond ±{FLOAT_LIMIT:g} px overflow float64 edge functions "
+                "(a product of two differences would exceed the largest double)"
+            )
         return xy.copy()
     units = np.rint(xy * 2.0**subpixel_bits) * 2.0
     if np.abs(units).max(initial=0.0) >= UNIT_LIMIT:

@@ -164,6 +164,11 @@ def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTr
         (~upper, (long_edge, bottom_edge)),
         (y == split_y, (top_edge,)),
     )
+    if not setup.exact:
+        # With raw floats, rounding can make the mathematically redundant third test fail
+        # (far-away vertices cancel catastrophically), so every row gets all three, as in
+        # the half-plane method: both then cover exactly the same pixels.
+        parts = ((np.ones(len(rows), dtype=bool), (0, 1, 2)),)
     lo = np.full(len(rows), bbox.col0, dtype=np.int64)
     hi = np.full(len(rows), bbox.col1 - 1, dtype=np.int64)
     row_ok = np.ones(len(rows), dtype=bool)
