@@ -23,9 +23,15 @@ from dataclasses import dataclass
 import numpy as np
 
 #: Smallest w a clipped vertex may have (see the module docstring).
-W_MIN = 1e-12
+W_MIN = 1e-300  # only a vertex exactly on (or numerically at) the eye plane is affected:
+# any larger w is a legitimate vertex just in front of the eye, whose projection the guard
+# band, not this plane, keeps in range
 
 INSIDE, CLIPPED, DROPPED = 0, 1, 2
+
+#: Default guard band of :func:`clip_triangles`, in NDC units: about a million image
+#: widths, far beyond anything visible yet keeping every projected vertex finite.
+DEFAULT_GUARD = 2.0**20
 
 
 def planes(guard: float | None = None) -> np.ndarray:
@@ -63,6 +69,25 @@ def classify(clip: np.ndarray, guard: float | None = None) -> np.ndarray:
     return status
 
 
+def _onto_plane(v: np.ndarray, k: int, guard: float | None) -> np.ndarray:
+    """Put a new vertex exactly on clip plane k (its rounding error, ~1e-16, removed).
+
+    Later planes and the divide by w then see it where it belongs: never a hair outside a
+    plane it was cut at, and never at w <= 0 after the cut at the eye plane.
+    """
+    v = v.copy()
+    if k == 0:  # near: z = -w
+        v[2] = -v[3]
+    elif k == 1:  # far: z = w
+        v[2] = v[3]
+    elif k == 2:  # eye: w = W_MIN
+        v[3] = W_MIN
+    else:  # guard band: x or y = +-guard * w
+        axis, sign = (0, 0, 1, 1)[k - 3], (1, -1, 1, -1)[k - 3]
+        v[axis] = sign * guard * v[3]
+    return v
+
+
 def clip_polygon(
     poly: np.ndarray, attrs: np.ndarray, guard: float | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -87,9 +112,14 @@ def clip_polygon(
                 out_v.append(poly[i])
                 out_a.append(attrs[i])
             if (d[i] >= 0) != (d[j] >= 0):  # the edge crosses the plane: add the crossing
-                t = d[i] / (d[i] - d[j])
-                out_v.append(poly[i] + t * (poly[j] - poly[i]))
-                out_a.append(attrs[i] + t * (attrs[j] - attrs[i]))
+                # Step from the endpoint nearer the plane: t is then small and the new
+                # vertex accurate (from the far end, 1 - t can round a vertex just off
+                # the eye plane onto it), and an edge shared by two triangles is cut at
+                # the same point whichever way round they traverse it.
+                a, b = (i, j) if abs(d[i]) <= abs(d[j]) else (j, i)
+                t = d[a] / (d[a] - d[b])
+                out_v.append(_onto_plane(poly[a] + t * (poly[b] - poly[a]), k, guard))
+                out_a.append(attrs[a] + t * (attrs[b] - attrs[a]))
         poly = np.array(out_v).reshape(-1, 4)
         attrs = np.array(out_a).reshape(len(poly), attrs.shape[1])
     return poly, attrs
@@ -121,12 +151,14 @@ class ClipResult:
 
 
 def clip_triangles(
-    clip: np.ndarray, attrs: np.ndarray, guard: float | None = None, force: bool = False
+    clip: np.ndarray, attrs: np.ndarray, guard: float | None = DEFAULT_GUARD, force: bool = False
 ) -> ClipResult:
-    """Clip triangles (N, 3, 4) with attributes (N, 3, k) against near, far (and guard).
+    """Clip triangles (N, 3, 4) with attributes (N, 3, k) against near, far and the guard band.
 
     Only triangles that a plane actually cuts go through the (per-polygon) clipper;
-    ``force=True`` sends every triangle through it, for comparison.
+    ``force=True`` sends every triangle through it, for comparison. ``guard`` is the
+    guard band in NDC units (``render`` sizes it to the image); ``None`` drops it, and then
+    a vertex cut at the eye plane can project arbitrarily far.
     """
     status = classify(clip, guard)
     todo = np.flatnonzero(status != DROPPED) if force else np.flatnonzero(status == CLIPPED)

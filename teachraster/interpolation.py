@@ -35,10 +35,25 @@ def perspective_weights(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
     """
     if np.all(w == w[0]):
         return lam
+    return weights_per_row(lam, np.broadcast_to(w, lam.shape))
+
+
+def weights_per_row(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """:func:`perspective_weights` with its own three w on every row: lam, w (n, 3)."""
     # λ_i / w_i is affine in screen space, like 1/w itself. Only the ratios of w matter,
-    # so scale by the smallest w: 1/w alone overflows for tiny (even subnormal) w.
-    q = lam * (w.min() / w)
-    q /= (q[..., 0] + q[..., 1] + q[..., 2])[..., None]
+    # so scale by each row's smallest w: 1/w alone overflows for tiny (even subnormal) w.
+    with np.errstate(under="ignore"):
+        q = lam * (w.min(axis=-1, keepdims=True) / w)
+    total = q[..., 0] + q[..., 1] + q[..., 2]
+    # Ratios of w beyond the float range (1e200 against 1e-200) can still underflow every
+    # term of a row to 0; those rows are redone in logarithms, where nothing overflows.
+    bad = ~(total > 0)
+    if bad.any():
+        with np.errstate(divide="ignore"):  # log(0) = -inf: a zero weight stays zero
+            lq = np.log(lam[bad]) - np.log(w[bad])
+        q[bad] = np.exp(lq - lq.max(axis=-1, keepdims=True))
+        total[bad] = q[bad].sum(axis=-1)
+    q /= total[..., None]
     return q
 
 

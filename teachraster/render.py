@@ -23,7 +23,7 @@ import numpy as np
 from .batch import rasterize_batch, snapped_area2
 from .clipping import CLIPPED, DROPPED, clip_triangles
 from .depth import DEPTH_FORMATS, quantize
-from .interpolation import MODES, blend_each
+from .interpolation import MODES, blend_each, weights_per_row
 from .plan import Effect, Plan, parse_force
 from .rasterize import CULL, _check_choice, _check_size
 from .snapping import SUBPIXEL_BITS, check_bits
@@ -329,9 +329,7 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     weights = frags.lam[shade].copy()
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     if persp.any():  # f/w and 1/w are affine in screen space (seed 000, eq. 19)
-        wt = w[tri[persp]]
-        q = weights[persp] * (wt.min(axis=1, keepdims=True) / wt)  # only ratios of w matter
-        weights[persp] = q / (q[:, 0] + q[:, 1] + q[:, 2])[:, None]
+        weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
     return blend_each(weights, attrs[tri])
 
 

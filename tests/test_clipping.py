@@ -359,3 +359,14 @@ def test_clipping_leaves_unclipped_triangles_as_rasterize(rng):
         got = np.zeros((H, W), dtype=bool)
         got[t.fragment_row[mine], t.fragment_col[mine]] = True
         np.testing.assert_array_equal(got, reference_fill(clip[k], None).coverage)
+
+
+@pytest.mark.parametrize("w0", [1e-13, 1e-30, 1e-200])
+def test_a_vertex_a_hair_in_front_of_the_eye_is_kept(w0):
+    """-w <= z <= w holds for a vertex at z = 0, w = 1e-13: the triangle is inside, not
+    dropped (a fixed eye-plane margin like w >= 1e-12 would cut away its whole screen
+    footprint), and it draws exactly what it draws at w = 1."""
+    near_eye = tr.render([[[0, 0, 0, w0], [1, 0, 0, 1], [0, 1, 0, 1]]], 16, 16)
+    plain = tr.render([[[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]]], 16, 16)
+    np.testing.assert_array_equal(near_eye.triangle_id, plain.triangle_id)
+    assert near_eye.plan["clipping"].count == 0
