@@ -59,7 +59,12 @@ def parse_force(force) -> frozenset[str]:
         return frozenset()
     if force == "all":
         return frozenset(FORCEABLE)
-    names = {force} if isinstance(force, str) else set(force)
+    try:
+        names = {force} if isinstance(force, str) else set(force)
+    except TypeError:
+        raise TypeError(
+            f"force must be None, 'all', an effect name or names, got {force!r}"
+        ) from None
     unknown = names - set(FORCEABLE)
     if unknown:
         raise ValueError(f"force: unknown effect(s) {sorted(unknown)}; choose from {FORCEABLE}")

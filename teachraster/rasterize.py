@@ -156,6 +156,7 @@ def rasterize(
             tri, setup, box, method, interpolation, subpixel_bits, (width, height),
             culled, local, algo_trace, lam,
             {mode: _unpack(v, layout) for mode, v in values.items()}, depth_values,
+            subdivision if interpolation == "subdivided" else None,
         )  # fmt: skip
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
 
@@ -239,7 +240,7 @@ def _describe_setup(setup, box, method, bits, culled, algo_trace):
 
 
 def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, local,
-            algo_trace, lam, values, depth_values) -> FillTrace:  # fmt: skip
+            algo_trace, lam, values, depth_values, subdivision) -> FillTrace:  # fmt: skip
     width, height = size
     snapped, area, steps = _describe_setup(setup, box, method, bits, culled, algo_trace)
     first = len(steps)
@@ -273,4 +274,6 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         span=algo_trace if method == "span" else None,
         halfplane=algo_trace if method == "halfplane" else None,
         setup=steps,
+        subdivision=subdivision,
+        pixel_subdivided=values.get("subdivided"),
     )

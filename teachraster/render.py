@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .batch import rasterize_batch, snapped_area2
-from .clipping import CLIPPED, DROPPED, clip_triangles
+from .clipping import CLIPPED, DROPPED, INSIDE, classify, clip_triangles
 from .depth import DEPTH_FORMATS, quantize
 from .interpolation import MODES, blend_each, weights_per_row
 from .plan import Effect, Plan, parse_force
@@ -97,6 +97,8 @@ class Frame:
 
 
 def _check_clip(clip, attrs):
+    if np.size(clip) == 0:  # an empty scene, however it is spelt ([] or (0, 3, 4))
+        clip = np.zeros((0, 3, 4))
     clip = as_finite("clip", clip, (None, 3, 4))
     n = len(clip)
     if attrs is None:
@@ -189,11 +191,19 @@ def render(
     )
     n_cut = int((clipped.status == CLIPPED).sum())
     n_drop = int((clipped.status == DROPPED).sum())
+    # Which cuts were the near/far planes, and which only the guard band far off screen.
+    n_guard = int(((clipped.status == CLIPPED) & (classify(clip, None) == INSIDE)).sum())
+    n_depth = n_cut - n_guard
     why = (
-        f"{n_cut} triangle(s) cross the near or far plane and were cut in clip space"
-        if n_cut
+        f"{n_depth} triangle(s) cross the near or far plane and were cut in clip space"
+        if n_depth
         else "no triangle crosses the near or far plane: nothing to clip"
     )
+    if n_guard:
+        why += (
+            f"; {n_guard} reach far beyond the image and were trimmed at the guard band "
+            "(invisible parts only)"
+        )
     if n_drop:
         why += f"; {n_drop} lie wholly outside and were dropped"
     if "clipping" in forced:
@@ -233,13 +243,15 @@ def render(
     depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
 
-    # 5. visibility
+    # 5. visibility (forcing the test means nothing when it is switched off)
+    force_test = "depth_test" in forced and depth_test
     winner, passed, tested = _resolve(pixel, frags.tri, depth, width * height, depth_test,
-                                      "depth_test" in forced, trace)  # fmt: skip
+                                      force_test, trace)  # fmt: skip
     covered = int((winner >= 0).sum())
     if not depth_test:
         why = "off (depth_test=False): later triangles overwrite earlier ones"
-    elif "depth_test" in forced:
+        tested = 0
+    elif force_test:
         why = "every fragment depth-tested against the buffer"
     else:
         why = (
@@ -247,8 +259,8 @@ def render(
             f"the other {covered - tested:,} covered pixel(s) hold a single fragment"
         )
     effects.append(
-        Effect("depth_test", depth_test and (tested > 0 or "depth_test" in forced), tested,
-               covered, "pixels", why, "depth_test" in forced)
+        Effect("depth_test", depth_test and (tested > 0 or force_test), tested, covered,
+               "pixels", why, force_test)
     )  # fmt: skip
 
     # 6. attributes, perspective-correct, at visible pixels only (or every fragment if forced)
@@ -261,24 +273,28 @@ def render(
     values = _interpolate(frags, shade, w, clipped.attrs, unequal, divide_all)
     if "attributes" in forced:
         values = values[winner[where]]
-    n_persp = m_tris if divide_all else int(unequal.sum())
+    # Count the triangles whose visible (or, forced, all) fragments were really divided.
+    shaded_tris = np.unique(frags.tri[shade])
+    n_persp = len(shaded_tris) if divide_all else int(unequal[shaded_tris].sum())
     if k == 0:
         why = "no attributes given: nothing to interpolate"
+    elif len(shaded_tris) == 0:
+        why = "no triangle is visible: nothing to interpolate"
     elif interpolation == "affine":
         why = "interpolation='affine' asked: screen-space values, no divide by w"
         n_persp = 0
-    elif "perspective" in forced:
+    elif divide_all:
         why = "divide by w at every pixel, even where all three w are equal"
     elif n_persp:
         why = (
-            f"w differs across the vertices of {n_persp} of {m_tris} triangle(s): "
-            "f/w over 1/w there; equal w makes affine interpolation exact elsewhere"
+            f"w differs across the vertices of {n_persp} of the {len(shaded_tris)} visible "
+            "triangle(s): f/w over 1/w there; equal w makes affine interpolation exact elsewhere"
         )
     else:
         why = "every triangle has equal w at its vertices: affine interpolation is exact"
     effects.append(
         Effect("perspective", k > 0 and n_persp > 0, n_persp if k else 0, m_tris, "triangles",
-               why, "perspective" in forced)
+               why, divide_all)
     )  # fmt: skip
     n_shaded = len(shade) if k else 0
     effects.append(

@@ -77,6 +77,10 @@ class FillTrace:
         The algorithm-specific record (the other one is None).
     setup : tuple of (kind, caption)
         The set-up steps.
+    subdivision : int or None
+        N of ``interpolation="subdivided"``; None for the other modes.
+    pixel_subdivided : mapping of name to (n,) or (n, k) float64, or None
+        The subdivided values actually written (``interpolation="subdivided"`` only).
     """
 
     method: str
@@ -100,6 +104,8 @@ class FillTrace:
     span: SpanTrace | None
     halfplane: HalfPlaneTrace | None
     setup: tuple[tuple[str, str], ...]
+    subdivision: int | None = None
+    pixel_subdivided: Mapping[str, np.ndarray] | None = None
 
     # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
     @property
@@ -239,5 +245,7 @@ class FillTrace:
         how = {
             "perspective": "perspective-correct (f/w and 1/w are affine on screen)",
             "affine": "affine in screen space",
+            "subdivided": f"perspective-correct at every {self.subdivision}th pixel of each "
+            "span and at its ends, affine in between",
         }[self.interpolation]
         return f"interpolated {', '.join(names)} at {n} covered pixels, {how}"

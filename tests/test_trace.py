@@ -384,3 +384,18 @@ def test_hypothesis_trace_final_coverage_matches(xy, method, cull):
     np.testing.assert_array_equal(fill.coverage, plain.coverage)
     np.testing.assert_array_equal(fill.trace.coverage_at(len(fill.trace) - 1), fill.coverage)
     assert fill.trace.step(-1).kind == "interpolate"
+
+
+def test_subdivided_interpolation_is_traced_and_captioned():
+    """interpolation="subdivided" records N and the values it wrote, and captions its steps."""
+    tri = tr.Triangle([[1, 1], [14, 3], [4, 14]], w=[1, 3, 6], attrs={"u": [0, 1, 0]})
+    for method in ("span", "halfplane"):
+        fill = tr.rasterize(tri, 16, 16, method=method, interpolation="subdivided",
+                            subdivision=4, trace=True)  # fmt: skip
+        t = fill.trace
+        assert t.subdivision == 4
+        np.testing.assert_array_equal(t.pixel_subdivided["u"], fill.attrs["u"][fill.coverage])
+        assert all(step.caption for step in t)
+        assert "every 4th pixel" in t.caption(-1)
+    plain = tr.rasterize(tri, 16, 16, trace=True).trace
+    assert plain.subdivision is None and plain.pixel_subdivided is None
