@@ -31,7 +31,9 @@ class Effect:
 
     def __str__(self) -> str:
         state = "forced" if self.forced else ("ran" if self.ran else "skipped")
-        return f"{self.name:<11} {state:<7} {self.count:>8,} of {self.total:>9,} {self.unit:<10} {self.why}"
+        # "applied to" so that "skipped, applied to 0 of 12" cannot read as "none skipped"
+        amount = f"applied to {self.count:>8,} of {self.total:>9,} {self.unit:<10}"
+        return f"{self.name:<11} {state:<7} {amount} {self.why}"
 
 
 @dataclass(frozen=True)
