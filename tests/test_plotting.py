@@ -480,3 +480,34 @@ def test_classroom_figures_draw():
         view = tp.FillView(make_fill("span"))
         view.fig.canvas.draw()
         assert view.caption_text.get_fontsize() > 12
+
+
+def test_span_fill_view_labels_vertices_in_span_order():
+    # input order differs from the y order: v1 (top) is input vertex 1, v3 (bottom) input 0
+    tri = tr.Triangle([[10.0, 13.0], [3.0, 1.0], [13.0, 6.0]])
+    span = tr.rasterize(tri, W, H, method="span", trace=True)
+    order = list(span.trace.span.order)
+    assert order != [0, 1, 2]
+    view = tp.FillView(span)
+    labels = view.triangle.labels
+    assert [labels[i].get_text() for i in order] == ["v1", "v2", "v3"]
+    # half-planes name the vertices in input order; set_fill relabels the same artists
+    view.set_fill(tr.rasterize(tri, W, H, method="halfplane", trace=True))
+    assert view.triangle.labels is labels
+    assert [label.get_text() for label in labels] == ["v0", "v1", "v2"]
+    moved = tr.Triangle([[3.0, 12.0], [10.0, 2.0], [13.0, 7.0]])
+    fill = tr.rasterize(moved, W, H, method="span", trace=True)
+    view.set_fill(fill)
+    assert [labels[i].get_text() for i in fill.trace.span.order] == ["v1", "v2", "v3"]
+    view.fig.canvas.draw()
+    plt.close(view.fig)
+
+
+def test_labels_of_far_away_vertices_are_not_drawn():
+    fig, ax = plt.subplots()
+    tp.plot_pixel_grid(ax, 16, 16)
+    result = tp.plot_triangle(ax, [[-1e6, -1e6], [1e6, 8], [8, 15.5]], edge_labels=True)
+    fig.canvas.draw()  # used to overflow FreeType's rasteriser
+    renderer = fig.canvas.get_renderer()
+    assert [a._check_xy(renderer) for a in result.labels] == [False, False, True]
+    plt.close(fig)

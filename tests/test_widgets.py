@@ -122,12 +122,13 @@ def test_method_toggle_rasterises_again_and_the_slider_follows(player):
 def test_interpolation_toggle_changes_the_interpolation_view(player):
     view = player.interp_view
     assert view is not None
-    affine_ax, persp_ax = view.axes[:2]
-    assert "in use" in persp_ax.title.get_text() and "in use" not in affine_ax.title.get_text()
+    affine_mark, persp_mark = player.in_use
+    assert persp_mark.get_visible() and not affine_mark.get_visible()
+    assert persp_mark.get_text() == "in use"
     png = player.interp_display.widget.value
     player.interpolation.value = "affine"
     assert player.trace.interpolation == "affine"
-    assert "in use" in affine_ax.title.get_text() and "in use" not in persp_ax.title.get_text()
+    assert affine_mark.get_visible() and not persp_mark.get_visible()
     assert view.images[0].image.get_alpha() == 1.0 and view.images[1].image.get_alpha() < 1.0
     assert player.interp_display.widget.value != png
     # the last step says which interpolation ran
@@ -308,6 +309,7 @@ def test_zero_area_positions_do_not_raise(editor):
     trace = editor.fill.trace
     assert trace.signed_area == 0 and not trace.covered.any()
     assert "zero area" in editor.info.value
+    assert "u4" not in editor.info.value  # nothing to split
     assert not shown_coverage(editor.view).any()
     editor.set_vertex(1, x=2.0, y=2.0)  # two vertices on top of each other
     editor.set_vertex(2, x=2.0, y=2.0)  # a single point
@@ -402,3 +404,29 @@ def test_widget_benchmark_quick_run_succeeds(capsys):
     assert bench.main(["--quick"]) == 0
     out = capsys.readouterr().out
     assert "step slider" in out and "vertex" in out and ("PASS" in out or "MISS" in out)
+
+
+def test_far_away_vertices_render_without_their_labels():
+    # vertices around 1e6 px: labels there used to overflow FreeType's rasteriser
+    tri = tr.Triangle([[-1e6, -1e6], [1e6, 8], [8, 1e6]], attrs={"u": [0, 1, 0]})
+    player = FillPlayer(tri, 16, 16, backend="image")
+    editor = TriangleEditor(tri, 16, 16, backend="image")
+    for view in (player.view, editor.view):
+        renderer = view.fig.canvas.get_renderer()
+        drawn = [label._check_xy(renderer) for label in view.triangle.labels]
+        assert drawn == [False, False, False]
+    assert player.display.widget.value and editor.interp_display.widget.value
+    player.close()
+    editor.close()
+
+
+def test_span_player_labels_vertices_in_span_order():
+    tri = tr.Triangle([[14.0, 12.0], [2.0, 1.5], [7.0, 6.0]])
+    player = FillPlayer(tri, 16, 16, method="span", backend="image")
+    order = player.trace.span.order
+    labels = player.view.triangle.labels
+    assert [labels[i].get_text() for i in order] == ["v1", "v2", "v3"]
+    player.method.value = "halfplane"  # same label artists, input order again
+    assert player.view.triangle.labels is labels
+    assert [label.get_text() for label in labels] == ["v0", "v1", "v2"]
+    player.close()

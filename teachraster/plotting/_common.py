@@ -11,6 +11,8 @@ import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.collections import QuadMesh
 from matplotlib.colors import ListedColormap, to_rgba
+from matplotlib.text import Annotation
+from matplotlib.transforms import IdentityTransform
 
 from ..rasterize import Fill
 from ..render import Frame
@@ -220,3 +222,36 @@ def tint(color, amount: float) -> tuple:
     """
     r, g, b, _ = to_rgba(color)
     return (1 - amount + amount * r, 1 - amount + amount * g, 1 - amount + amount * b, 1.0)
+
+
+class NearAnnotation(Annotation):
+    """An annotation drawn outside its Axes only while its point is near them.
+
+    Labels of vertices and edges may sit just outside the image (``annotation_clip=False``
+    behaviour), but a point far outside -- a vertex at 1e6 px -- is not drawn at all: text
+    at such screen positions overflows FreeType's rasteriser, and there is nothing to see.
+    The test runs at draw time, so it follows zooming and later changes of the limits.
+    """
+
+    #: How far (in points, times the font size) the point may lie outside the Axes.
+    margin = 2.0
+
+    def _check_xy(self, renderer=None):
+        ax = self.axes
+        if ax is None:
+            return super()._check_xy(renderer)
+        if renderer is None:
+            renderer = self.get_figure(root=True)._get_renderer()
+        x, y = self._get_position_xy(renderer)
+        if not (np.isfinite(x) and np.isfinite(y)):
+            return False
+        pad = self.margin * self.get_fontsize() * ax.figure.dpi / 72.0
+        return bool(ax.bbox.expanded(1.0, 1.0).padded(pad).contains(x, y))
+
+
+def annotate_near(ax, text, xy, **kwargs) -> NearAnnotation:
+    """``ax.annotate(text, xy, **kwargs)`` as a :class:`NearAnnotation`."""
+    a = NearAnnotation(text, xy, **kwargs)
+    a.set_transform(IdentityTransform())
+    ax._add_text(a)
+    return a

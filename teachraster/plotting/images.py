@@ -251,7 +251,7 @@ class HeatmapArtists(Artists):
             self.note.set_text(f"max {m:.3g}")
             self.marker.set_visible(True)
             self.note.set_visible(True)
-            self._set_title(f"{self.label}: max = {m:.3g}")
+            self._set_title(f"{self.label}: max {m:.3g}")
         else:
             self.marker.set_visible(False)
             self.note.set_visible(False)
@@ -281,7 +281,7 @@ def plot_error_heatmap(
     colorbar : bool
         Add a colour bar (0 to the maximum).
     title : bool
-        Put ``"{label}: max = ..."`` in the Axes title (the ``note`` by the marked pixel
+        Put ``"{label}: max ..."`` in the Axes title (the ``note`` by the marked pixel
         says it too).
 
     Returns
@@ -296,7 +296,7 @@ def plot_error_heatmap(
                      zorder=5)[0]  # fmt: skip
     note = ax.annotate(
         "", (0, 0), xytext=(0, 0), textcoords="offset points", fontsize=fs(0.8),
-        color="black", bbox=label_box(0.9), zorder=6, annotation_clip=False,
+        color="black", bbox=label_box(0.9), zorder=7, annotation_clip=False,  # above labels
         arrowprops={"arrowstyle": "-", "color": COLORS["fill"], "lw": ms(0.2)},
     )  # fmt: skip
     title_text = ax.title if title else None

@@ -22,10 +22,12 @@ from matplotlib.text import Text
 
 from ..bbox import BBox
 from ..rasterize import Fill
+from ..span_tables import SpanTrace
 from ..trace import FillTrace
 from ..triangle import Triangle
 from ._common import (
     Artists,
+    annotate_near,
     as_coverage,
     as_trace,
     fs,
@@ -210,6 +212,24 @@ def _default_edges(tri) -> np.ndarray:
     return np.array([[0, 1], [1, 2], [2, 0]])
 
 
+def vertex_names(tri) -> list[str]:
+    """Names of the vertices at input positions 0, 1, 2, as the captions of ``tri`` use them.
+
+    Span tables name the vertices sorted by y (seed 000): v1 top, v2 middle, v3 bottom, so
+    the vertex at input position ``span.order[k]`` is ``v{k+1}``. Everything else (half-plane
+    fills, bare triangles) names them in input order: v0, v1, v2.
+    """
+    if isinstance(tri, Fill | FillTrace):
+        trace = as_trace(tri)
+        span = getattr(trace, "span", None)
+        if trace.method == "span" and isinstance(span, SpanTrace):
+            names = [""] * 3
+            for k, i in enumerate(np.asarray(span.order, dtype=int)):
+                names[i] = f"v{k + 1}"
+            return names
+    return ["v0", "v1", "v2"]
+
+
 def _outward(points: np.ndarray, centre: np.ndarray, dist: float, ax) -> list:
     """Offsets in points pushing labels at ``points`` away from ``centre`` (y flipped)."""
     out = []
@@ -244,9 +264,11 @@ class TriangleArtists(Artists):
             arrow.set_positions(pa + 0.42 * (pb - pa), pa + 0.58 * (pb - pa))
         ax = self.outline.axes
         centre = xy.mean(axis=0)
-        for label, p, off in zip(self.labels, xy, _outward(xy, centre, fs(0.9), ax)):
+        names = vertex_names(tri)
+        for label, name, p, off in zip(self.labels, names, xy, _outward(xy, centre, fs(0.9), ax)):
             label.xy = tuple(p)
             label.set_position(off)
+            label.set_text(name)
         mids = np.array([(xy[a] + xy[b]) / 2 for a, b in edges])
         for label, (a, b), p, off in zip(
             self.edge_labels, edges, mids, _outward(mids, centre, fs(0.9), ax)
@@ -266,7 +288,11 @@ def plot_triangle(
     edge_labels: bool = False,
     color=None,
 ) -> TriangleArtists:
-    """Draw a triangle's edges with direction arrows and the vertex labels v0, v1, v2.
+    """Draw a triangle's edges with direction arrows and the vertex labels.
+
+    Vertices are labelled as the captions name them: v0, v1, v2 in input order, except for a
+    span-table fill, whose captions name them sorted by y (v1 top, v2 middle, v3 bottom; see
+    :func:`vertex_names`). A label whose vertex lies far outside the Axes is not drawn.
 
     Parameters
     ----------
@@ -280,7 +306,7 @@ def plot_triangle(
     arrows : bool
         An arrowhead in the middle of each edge, pointing along it.
     labels : bool
-        Vertex labels v0, v1, v2, pushed outwards.
+        Vertex labels (v0, v1, v2; v1, v2, v3 by y for span tables), pushed outwards.
     edge_labels : bool
         Label each edge with its edge function's name, e.g. ``E01`` (as in the captions).
     color : colour, optional
@@ -305,10 +331,11 @@ def plot_triangle(
             ax.add_patch(arrow)
             result.arrows.append(arrow)
     if labels:
-        for i in range(3):
+        for _ in range(3):
             result.labels.append(
-                ax.annotate(
-                    f"v{i}",
+                annotate_near(
+                    ax,
+                    "",
                     (0, 0),
                     xytext=(0, 0),
                     textcoords="offset points",
@@ -325,7 +352,8 @@ def plot_triangle(
     if edge_labels:
         for _ in range(3):
             result.edge_labels.append(
-                ax.annotate(
+                annotate_near(
+                    ax,
                     "",
                     (0, 0),
                     xytext=(0, 0),
@@ -455,8 +483,8 @@ def plot_split(ax, fill) -> SplitArtists:
     ax.add_patch(flat_top)
     line = ax.plot([], [], ls=(0, (6, 3)), color=COLORS["split"], lw=lw(0.7), zorder=3.9)[0]
     point = ax.plot([], [], "D", color=COLORS["split"], ms=ms(0.9), mec="white", zorder=5)[0]
-    label = ax.annotate(
-        "", (0, 0), xytext=(0, 0), textcoords="offset points", va="bottom",
+    label = annotate_near(
+        ax, "", (0, 0), xytext=(0, 0), textcoords="offset points", va="bottom",
         fontsize=fs(0.9), fontweight="bold", color=COLORS["split"], bbox=label_box(),
         zorder=6, annotation_clip=False,
     )  # fmt: skip

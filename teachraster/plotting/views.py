@@ -375,8 +375,8 @@ class ComparisonView:
             if ax is self.axes[1] and data.ndim == 2:
                 cb_kw = {"cax": cax} if cax is not None else {"ax": ax, "shrink": 0.85}
                 self.images[-1].colorbar = self.fig.colorbar(self.images[-1].image, **cb_kw)
-            ax.set_title(title, y=1.0, pad=fs(3.0))
-        self.axes[2].set_title("", y=1.0, pad=fs(3.0))  # fixed position: no per-draw layout
+            ax.set_title(title, y=1.0, pad=fs(3.4))
+        self.axes[2].set_title("", y=1.0, pad=fs(3.4))  # fixed position: no per-draw layout
         own_figure = caxes[2] is not None
         self.heatmap = plot_error_heatmap(self.axes[2], a, b, label=label,
                                           colorbar=not own_figure)  # fmt: skip
@@ -457,10 +457,15 @@ class InterpolationView(ComparisonView):
         self.channel = channel
         a, b = self._images(trace)
         label = self.name + ("" if channel is None else f"[{channel}]")
+        # Short titles, so that they fit their panels at classroom font sizes too; the
+        # attribute's name labels the colour bar of the values.
         super().__init__(
-            a, b, titles=(f"{label}: affine (screen space)", f"{label}: perspective-correct"),
-            label="|affine − perspective|", axes=axes, vmin=vmin, vmax=vmax,
+            a, b, titles=("affine", "perspective-correct"), label="|error|", axes=axes,
+            vmin=vmin, vmax=vmax,
         )  # fmt: skip
+        colorbar = self.images[1].colorbar
+        if colorbar is not None:
+            colorbar.set_label(label)
         self.triangles = [plot_triangle(ax, trace, arrows=False) for ax in self.axes]
         for tri in self.triangles:
             tri.outline.set_linewidth(tri.outline.get_linewidth() * 0.6)

@@ -139,25 +139,39 @@ class FigureDisplay:
         self.widget.close()
 
 
-def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)) -> list:
+def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,
+                    below: bool = False) -> list:  # fmt: skip
     """Three equal panels side by side for a ComparisonView / InterpolationView.
 
     The views add colour bars to the middle and right panels with ``fig.colorbar(ax=...)``,
     which takes 20% of the panel's width; those panels are made wider by as much here, so
     that all three images end up the same size. ``colorbars`` says which of the middle and
-    right panels get one. The figure is resized to fit.
+    right panels get one; ``below`` leaves a line of room under the panels (for a note such
+    as "in use"). The figure is resized to fit.
+
+    Margins, gaps and the panels themselves grow with the font size (``font_scale``), as in
+    ``fill_axes``: with ``use_style("classroom")`` the titles, the row labels and the colour
+    bars' labels keep their room instead of overlapping or being cut off.
     """
-    pw = 2.6  # inches per panel
+    from ._common import font_scale
+
+    s = font_scale()
+    pw = 2.6 * max(1.0, 0.75 * s)  # inches per panel: titles need more room at large fonts
     ph = pw * height / width
-    if ph > 3.2:  # tall images: limit the height instead
-        ph, pw = 3.2, 3.2 * width / height
-    left, gap, top, bottom = 0.55, 0.4, 0.75, 0.25
+    if ph > 3.2 * max(1.0, 0.75 * s):  # tall images: limit the height instead
+        ph = 3.2 * max(1.0, 0.75 * s)
+        pw = ph * width / height
+    # left: row tick labels and "row i"; top: title above the column tick labels and
+    # "column j"; gap and right: a colour bar's tick labels and its label
+    left, top = 0.6 * s, 0.8 * s
+    bottom = 0.2 + (0.3 * s if below else 0.0)
+    gaps = [0.35 * s] + [(0.75 * s if c else 0.35 * s) for c in colorbars]
     widths = [pw] + [pw / 0.8 + 0.3 if c else pw for c in colorbars]
-    fw = left + sum(widths) + gap * 2 + 0.5
+    fw = left + sum(widths) + sum(gaps)
     fh = ph + top + bottom
     fig.set_size_inches(fw, fh)
     axes, x = [], left
-    for w in widths:
+    for w, gap in zip(widths, gaps):
         axes.append(fig.add_axes((x / fw, bottom / fh, w / fw, ph / fh)))
         x += w + gap
     return axes

@@ -219,7 +219,7 @@ class TriangleEditor(Holdable):
         else:
             snapped = trace.snapped[np.lexsort((trace.snapped[:, 0], trace.snapped[:, 1]))]
             u4 = split_point(snapped)
-        if u4 is not None:
+        if u4 is not None and area != 0:  # a zero-area triangle has nothing to split
             parts.append(f"split at u4 = {u4:.2f}")
         m = self.interp_view.maximum
         if np.isfinite(m):

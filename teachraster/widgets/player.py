@@ -7,6 +7,7 @@ import html
 import ipywidgets as widgets
 
 from ..plotting import COLORS, FillView, InterpolationView
+from ..plotting._common import fs
 from ..rasterize import rasterize
 from ..triangle import Triangle
 from ._common import Holdable, fill_axes, labelled, style_context, title_html
@@ -125,9 +126,15 @@ class FillPlayer(Holdable):
             if tri.attrs:
                 name = attribute or next(iter(tri.attrs))
                 ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-                axes = comparison_axes(ifig, height, width)
+                axes = comparison_axes(ifig, height, width, below=True)
                 self.interp_view = InterpolationView(self.fill, name, axes=axes)
-                self._titles = [ax.get_title() for ax in self.interp_view.axes[:2]]
+                # "in use" goes under the panel: in its title it would not fit at large fonts
+                self.in_use = [
+                    ax.text(0.5, -0.03, "in use", transform=ax.transAxes, ha="center",
+                            va="top", fontsize=fs(0.9), fontweight="bold",
+                            color=COLORS["current"])
+                    for ax in self.interp_view.axes[:2]
+                ]  # fmt: skip
                 self._highlight(interpolation)
                 self.interp_display = FigureDisplay(ifig, self.backend)
 
@@ -253,10 +260,9 @@ class FillPlayer(Holdable):
     def _highlight(self, interpolation: str) -> None:
         """Mark the panel of the interpolation in use; fade the other one."""
         view = self.interp_view
-        for i, (ax, title) in enumerate(zip(view.axes[:2], self._titles)):
+        for i, (ax, mark) in enumerate(zip(view.axes[:2], self.in_use)):
             used = (i == 0) == (interpolation == "affine")
-            # only the text: set_title would also reset the fixed title position
-            ax.title.set_text(title + ("  (in use)" if used else ""))
+            mark.set_visible(used)
             for spine in ax.spines.values():
                 spine.set_edgecolor(COLORS["current"] if used else "black")
                 spine.set_linewidth(3.0 if used else 0.8)

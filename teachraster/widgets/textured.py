@@ -134,9 +134,10 @@ class TexturedPlaneViewer:
             axes = comparison_axes(fig, height, width, colorbars=(False, True))
             self.view = ComparisonView(
                 self.affine, self.perspective, axes=axes,
-                titles=("affine (screen-space) uv", "perspective-correct uv"),
-                label="texel error",
+                titles=("affine uv", "perspective-correct uv"), label="|error|",
             )  # fmt: skip
+            if self.view.heatmap.colorbar is not None:
+                self.view.heatmap.colorbar.set_label("texels")
             self._show_error()
             self.display = FigureDisplay(fig, self.backend)
         self.fig = fig
