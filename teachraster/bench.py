@@ -752,7 +752,10 @@ def _place_labels(ax, pts, texts, fontsize=7.5):
         )
 
 
-def _panel(ax, block, title, xkey, ykey, xlabel, ylabel, xlog):
+def pareto_panel(ax, block, title, xkey, ykey, xlabel, ylabel, xlog):
+    """One panel of :func:`pareto_figure`: the variants of ``block`` (rows of one group),
+    error ``ykey`` against cost ``xkey``, with the Pareto front; for lessons that lay out
+    the panels themselves."""
     pts = [dict(r, time_ms=r["time_median_s"] * 1e3) for r in block]
     errors = np.array([float(p[ykey]) for p in pts])
     exact = errors == 0
@@ -848,7 +851,7 @@ def pareto_figure(rows: list[dict]):
         if not block:
             ax.set_visible(False)
             continue
-        _panel(ax, block, title, xkey, ykey, xlabel, ylabel, xlog)
+        pareto_panel(ax, block, title, xkey, ykey, xlabel, ylabel, xlog)
     fig.suptitle(
         "Accuracy vs time: lower left is better; red = on the Pareto front "
         "(no variant is both cheaper and more accurate)",

@@ -590,6 +590,7 @@ def cmd_scene(args, parser) -> int:
     scene = get_scene(args.name)
     width, height = args.size
     frame = render_scene(scene, width=width, height=height, interpolation=args.interpolation)
+    textured = scene.shading == "texture" and scene.texture is not None
     plt = _pyplot()
     with use_style(args.style):
         if args.compare:
@@ -600,9 +601,16 @@ def cmd_scene(args, parser) -> int:
                 a.image,
                 b.image,
                 titles=("affine", "perspective-correct"),
-                label="|affine − perspective|",
+                label="texel error" if textured else "|affine − perspective|",
                 grid=max(width, height) <= 64,
             )
+            if textured:
+                # The colour difference of a two-tone texture is only stripes of 0 and 1:
+                # compare where the samples land instead, in texels (as lesson 04 does).
+                from .texture import texel_error
+
+                texels = texel_error(a.attr("uv"), b.attr("uv"), scene.texture.shape)
+                view.heatmap.update(texels, np.zeros_like(texels))
             fig = view.fig
             fig.text(
                 0.5,
@@ -628,6 +636,9 @@ def cmd_scene(args, parser) -> int:
         finally:
             plt.close(fig)
     _say(f"{scene.name}: {scene.description}")
+    if args.compare:
+        what = "texel error" if textured else "|affine - perspective|"
+        _say(f"max {what} = {view.maximum:.3g}")
     _say(format_plan(frame))
     _say(f"wrote {args.output}")
     return 0

@@ -231,7 +231,43 @@ def test_scene_compare(tmp_path, capsys):
     argv = ["scene", "textured_floor", "--size", "40x30", "--interpolation", "affine"]
     assert run(*argv, "--compare", "-o", out, *FAST) == 0
     assert png_size(out)[0] > 2 * png_size(out)[1]
-    assert "effect" in capsys.readouterr().out
+    text = capsys.readouterr().out
+    assert "effect" in text
+    # a textured scene compares where the samples land, in texels, not the two-tone colours
+    assert "max texel error = " in text
+    error = float(text.split("max texel error = ")[1].split()[0])
+    assert error > 1.0
+
+
+def test_scene_compare_texel_error_matches_texture_module(tmp_path, monkeypatch):
+    from teachraster.plotting import ComparisonView
+    from teachraster.scene_render import render_scene
+    from teachraster.scenes import get_scene
+    from teachraster.texture import texel_error
+
+    views = []
+    original = ComparisonView.__init__
+
+    def spy(self, *args, **kwargs):
+        original(self, *args, **kwargs)
+        views.append(self)
+
+    monkeypatch.setattr(ComparisonView, "__init__", spy)
+    argv = ["scene", "textured_floor", "--size", "40x30", "--compare"]
+    assert cli.main([*argv, "-o", str(tmp_path / "f.png"), *FAST]) == 0
+    scene = get_scene("textured_floor")
+    uv = {
+        mode: render_scene(scene, width=40, height=30, interpolation=mode).attr("uv")
+        for mode in ("affine", "perspective")
+    }
+    expected = np.nanmax(texel_error(uv["affine"], uv["perspective"], scene.texture.shape))
+    assert views[0].maximum == pytest.approx(expected)
+
+
+def test_scene_compare_untextured_keeps_colour_difference(tmp_path, capsys):
+    out = tmp_path / "cube.png"
+    assert run("scene", "cube", "--size", "40x30", "--compare", "-o", out, *FAST) == 0
+    assert "max |affine - perspective| = " in capsys.readouterr().out
 
 
 @pytest.mark.parametrize(
