@@ -11,7 +11,7 @@ from . import half_planes, span_tables
 from .barycentric import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import EdgeSetup, setup_edges
-from .interpolation import FILL_MODES, MODES, blend, perspective_weights, subdivided
+from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
@@ -138,7 +138,7 @@ def rasterize(
     # scatter) runs once per fill rather than once per attribute.
     packed, layout = _pack(tri.attrs)
     modes = MODES if trace else (interpolation,)
-    values = {mode: blend(_weights(lam, tri.w, mode), packed) for mode in modes if mode in MODES}
+    values = {mode: interpolate(lam, packed, tri.w, mode) for mode in modes if mode in MODES}
     if interpolation == "subdivided":
         values["subdivided"] = subdivided(lam, rows, packed, tri.w, int(subdivision))
     depth_values = None if tri.z is None else blend(lam, tri.z)
@@ -159,10 +159,6 @@ def rasterize(
             subdivision if interpolation == "subdivided" else None,
         )  # fmt: skip
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
-
-
-def _weights(lam: np.ndarray, w: np.ndarray, mode: str) -> np.ndarray:
-    return perspective_weights(lam, w) if mode == "perspective" else lam
 
 
 def _pack(attrs: Mapping[str, np.ndarray]):

@@ -93,7 +93,6 @@ class TriangleEditor(Holdable):
         self.width, self.height = width, height
         self.attribute = attribute
         self.backend = resolve_backend(backend)
-        self._quiet = False
         self._dragging: int | None = None
         self._pending = None
         self._last_done = 0.0

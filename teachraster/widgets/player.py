@@ -106,7 +106,6 @@ class FillPlayer(Holdable):
             raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
         self.tri, self.width, self.height = tri, width, height
         self.backend = resolve_backend(backend)
-        self._quiet = False  # True while the player itself moves the slider
         self.fill = rasterize(tri, width, height, method=method, interpolation=interpolation,
                               trace=True)  # fmt: skip
         trace = self.fill.trace
