@@ -32,7 +32,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))  # the sibling bench_fi
 from bench_fill import median_seconds  # noqa: E402
 
 import teachraster as tr  # noqa: E402
-from teachraster.scenes import uv_sphere  # noqa: E402
+from teachraster.pipeline.scenes import uv_sphere  # noqa: E402
 
 SPHERE_TARGET = 10.0  # within 10x of llvmpipe
 
@@ -73,7 +73,7 @@ def bench_sphere(size: int, repeat: int, profile: bool) -> None:
     )
     ours = median_seconds(lambda: tr.render(clip, size, size, attrs=uv), repeat)
     print(f"  teachraster tr.render       {ours * 1e3:8.1f} ms")
-    from teachraster.opengl import gl_available, gl_render
+    from teachraster.study.opengl import gl_available, gl_render
 
     ok, why = gl_available()
     if not ok:

@@ -12,11 +12,11 @@ texture-coordinate attribute ``uv``, depth test on) and prints the medians.
 Three figures, each a median of ``repeat`` timed calls after one warm-up call (the EGL context
 and the compiled shader programs are created once per process and never timed):
 
-- ``upload_draw_read``: everything :func:`teachraster.opengl.gl_render` does per frame: create
+- ``upload_draw_read``: everything :func:`teachraster.study.opengl.gl_render` does per frame: create
   the vertex buffers, vertex arrays and float32 render targets, draw, read every target back
   into numpy and release the GL objects;
-- ``draw_read``: the scene already uploaded (:class:`teachraster.opengl.GLRenderer` kept): clear,
-  draw, read back and build the :class:`~teachraster.opengl.GLFrame` (float64, NaN masking);
+- ``draw_read``: the scene already uploaded (:class:`teachraster.study.opengl.GLRenderer` kept): clear,
+  draw, read back and build the :class:`~teachraster.study.opengl.GLFrame` (float64, NaN masking);
 - ``draw_read_raw``: the same without the conversion: clear, draw and read the float32 targets
   (id/depth, ``smooth`` and ``noperspective``) into numpy. This is what a GPU-resident scene
   costs per frame, read-back included.
@@ -39,7 +39,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from teachraster.opengl import GLRenderer, gl_available, gl_render  # noqa: E402
+from teachraster.study.opengl import GLRenderer, gl_available, gl_render  # noqa: E402
 
 
 class GLTiming(NamedTuple):
@@ -66,7 +66,7 @@ def time_gl(clip, width: int, height: int, attrs=None, repeat: int = 7) -> GLTim
     Parameters
     ----------
     clip : (N, 3, 4) array-like
-        Clip-space triangles, as for :func:`teachraster.render`.
+        Clip-space triangles, as for :func:`teachraster.pipeline.render_triangles.render`.
     width, height : int
         Image size.
     attrs : (N, 3) or (N, 3, k) array-like, optional

@@ -8,43 +8,65 @@ The core (this package minus plotting and widgets) depends on numpy only.
 3
 """
 
-from .barycentric import barycentric
-from .batch import Fragments, rasterize_batch
-from .bbox import BBox
-from .camera import Camera, look_at, orthographic, perspective
-from .clipping import clip_triangles
-from .depth import (
+from .core import (
+    SUBPIXEL_BITS,
+    AttributePlane,
+    BBox,
+    Fill,
+    FillTrace,
+    HalfPlaneTrace,
+    PlaneEquation,
+    SpanTrace,
+    Step,
+    Triangle,
+    attribute_plane,
+    barycentric,
+    edge_function,
+    is_top_left,
+    perspective_weights,
+    plane_equation,
+    rasterize,
+    setup_matrix,
+    snap,
+    split_point,
+)
+from .pipeline import (
     DEPTH_FORMATS,
+    SCENES,
+    Camera,
+    Effect,
+    Fragments,
+    Frame,
+    Mesh,
+    ObjError,
+    Plan,
+    RenderTrace,
+    Scene,
+    SceneFrame,
+    checkerboard,
+    clip_triangles,
     depth_resolution,
     fights,
+    get_scene,
     linear_depth,
+    look_at,
+    orthographic,
+    painter,
+    perspective,
     quantize,
+    rasterize_batch,
+    read_obj,
+    render,
+    render_scene,
+    rotate,
+    sample,
+    scale,
     seed_depth,
+    texel_error,
+    to_window,
+    translate,
     window_depth,
 )
-from .edges import edge_function, is_top_left
-from .half_planes import HalfPlaneTrace
-from .interpolation import perspective_weights
-from .mesh import Mesh, rotate, scale, translate
-from .obj import ObjError, read_obj
-from .plan import Effect, Plan
-from .plane_equation import (
-    AttributePlane,
-    PlaneEquation,
-    attribute_plane,
-    plane_equation,
-    setup_matrix,
-)
-from .rasterize import Fill, rasterize
-from .render import Frame, RenderTrace
-from .scene_render import SceneFrame, render, render_scene
-from .scenes import SCENES, Scene, get_scene
-from .snapping import SUBPIXEL_BITS, snap
-from .span_tables import SpanTrace, split_point
-from .texture import checkerboard, sample, texel_error
-from .trace import FillTrace, Step
-from .triangle import Triangle
-from .viewport import to_window
 
 __version__ = "0.1.0"
 
@@ -83,6 +105,7 @@ __all__ = [
     "linear_depth",
     "look_at",
     "orthographic",
+    "painter",
     "perspective",
     "perspective_weights",
     "plane_equation",

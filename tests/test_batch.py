@@ -12,7 +12,7 @@ import pytest
 from conftest import random_triangles, reference_coverage, signed_area_exact
 
 import teachraster as tr
-from teachraster.batch import rasterize_batch
+from teachraster.pipeline.batched_fill import rasterize_batch
 
 W, H = 23, 17
 BATCH_KINDS = ("float", "centre", "subpixel", "tie", "outside", "huge")

@@ -1,4 +1,4 @@
-"""teachraster.bench: the accuracy-vs-time study (smoke run, ground truths, Pareto front)."""
+"""teachraster.study.bench: the accuracy-vs-time study (smoke run, ground truths, Pareto front)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 from conftest import random_triangles, reference_coverage
 
 import teachraster as tr
-from teachraster import bench
+from teachraster.study import bench
 
 
 @pytest.fixture(scope="module")

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from teachraster.camera import Camera, look_at, orthographic, perspective
-from teachraster.viewport import to_window
+from teachraster.pipeline.camera import Camera, look_at, orthographic, perspective
+from teachraster.pipeline.viewport import to_window
 
 CAMERAS = [
     Camera(eye=(0, 0, 5), target=(0, 0, 0)),

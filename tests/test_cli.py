@@ -20,10 +20,10 @@ import pytest  # noqa: E402
 from PIL import Image  # noqa: E402
 
 import teachraster as tr  # noqa: E402
-from teachraster import cli  # noqa: E402
-from teachraster.hardcases import CASES  # noqa: E402
+from teachraster.cli import commands as cli  # noqa: E402
+from teachraster.pipeline.scenes import SCENES  # noqa: E402
 from teachraster.plotting import FillView  # noqa: E402
-from teachraster.scenes import SCENES  # noqa: E402
+from teachraster.study.hardcases import CASES  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
@@ -240,10 +240,10 @@ def test_scene_compare(tmp_path, capsys):
 
 
 def test_scene_compare_texel_error_matches_texture_module(tmp_path, monkeypatch):
+    from teachraster.pipeline.render_scenes import render_scene
+    from teachraster.pipeline.scenes import get_scene
+    from teachraster.pipeline.texture import texel_error
     from teachraster.plotting import ComparisonView
-    from teachraster.scene_render import render_scene
-    from teachraster.scenes import get_scene
-    from teachraster.texture import texel_error
 
     views = []
     original = ComparisonView.__init__

@@ -15,9 +15,9 @@ import pytest
 from test_render import H, W, clip_from_window, random_clip, reference_fill
 
 import teachraster as tr
-from teachraster.camera import perspective
-from teachraster.clipping import CLIPPED, DROPPED, INSIDE, W_MIN, clip_triangles
-from teachraster.scenes import get_scene
+from teachraster.pipeline.camera import perspective
+from teachraster.pipeline.clipping import CLIPPED, DROPPED, INSIDE, W_MIN, clip_triangles
+from teachraster.pipeline.scenes import get_scene
 
 NEAR, FAR = 0.1, 20.0
 PROJ = perspective(70.0, W / H, NEAR, FAR)

@@ -1,4 +1,4 @@
-"""Depth mappings, depth-buffer formats, resolution and z-fighting (seed 003)."""
+"""Depth mappings, depth-buffer formats, resolution and z-fighting (Ritschel, *Interpolation and z-buffering*)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from teachraster.depth import (
+from teachraster.pipeline.depth import (
     DEPTH_FORMATS,
     depth_resolution,
     fights,
@@ -18,7 +18,7 @@ from teachraster.depth import (
     seed_depth,
     window_depth,
 )
-from teachraster.viewport import to_window
+from teachraster.pipeline.viewport import to_window
 
 UNORM = {"unorm24": 24, "unorm16": 16}
 

@@ -1,4 +1,4 @@
-"""The hard-case catalogue (``teachraster.hardcases``): every case, every fill method.
+"""The hard-case catalogue (``teachraster.study.hardcases``): every case, every fill method.
 
 Each case is run with each fill method it applies to and checked against its ``expect``;
 screen-space cases are also checked against the exact reference rasteriser of ``conftest``
@@ -13,7 +13,7 @@ import pytest
 from conftest import explain, reference_coverage
 
 import teachraster as tr
-from teachraster import hardcases as hc
+from teachraster.study import hardcases as hc
 
 RUNS = [(name, method) for name, case in hc.CASES.items() for method in case.methods]
 SCREEN = [name for name, case in hc.CASES.items() if case.triangles is not None]

@@ -1,4 +1,4 @@
-"""Interpolation: barycentrics, affine vs perspective-correct, depth, plane equations (seeds 002-004).
+"""Interpolation: barycentrics, affine vs perspective-correct, depth, plane equations (the plane-equation post, Ritschel, Fatahalian).
 
 Reference values are computed here from exact Fraction barycentrics of the snapped triangle and
 the formulas in CONVENTIONS.md, independently of the package's own arithmetic.
@@ -160,7 +160,7 @@ def test_barycentric_reproduces_vertices():
     )
 )
 def test_barycentric_is_the_ratio_of_areas(pts):
-    """lambda_A(P) = area(P, B, C) / area(A, B, C) etc. (seed 003), against exact Fractions."""
+    """lambda_A(P) = area(P, B, C) / area(A, B, C) etc. (Ritschel, *Interpolation and z-buffering*), against exact Fractions."""
     xy, p = pts[:3], pts[3]
     a, b, c = [(Fraction(x), Fraction(y)) for x, y in xy]
     P = (Fraction(p[0]), Fraction(p[1]))
@@ -272,7 +272,7 @@ def test_attributes_within_vertex_value_range(mode):
             )
 
 
-# -- plane equations (seed 002) and the setup matrix (seed 004) --------------------------------
+# -- plane equations (*Triangle Rasterisation II - Interpolation*) and the setup matrix (Fatahalian, CMU 15-462 *Texture*) --------------------------------
 @pytest.mark.parametrize("method", METHODS)
 def test_plane_equation_agrees_with_affine_interpolation(method):
     """f = -(A x + B y + D) / C at pixel centres equals the affine fill (snapped vertices)."""
@@ -307,7 +307,7 @@ def test_plane_equation_coefficients():
 
 @pytest.mark.parametrize("k", [None, 3])
 def test_stepped_plane_approximates_direct_evaluation(k):
-    """stepped(): start exact, then add dy per row and dx per pixel (seed 002's inner loop);
+    """stepped(): start exact, then add dy per row and dx per pixel (*Triangle Rasterisation II - Interpolation*'s inner loop);
     over a 64 x 48 grid the accumulated rounding stays tiny."""
     rng = np.random.default_rng(15)
     for _ in range(20):
@@ -339,7 +339,7 @@ def test_setup_matrix_inverts_the_edge_matrix():
 
 
 def test_attribute_plane_agrees_with_plane_equation():
-    """[A, B] = M [f_b - f_a, f_c - f_a] gives seed 002's gradient (dx, dy) and the same values;
+    """[A, B] = M [f_b - f_a, f_c - f_a] gives *Triangle Rasterisation II - Interpolation*'s gradient (dx, dy) and the same values;
     one M reused for several attributes gives the same planes as a fresh set-up."""
     rng = np.random.default_rng(17)
     for _ in range(50):
@@ -375,7 +375,7 @@ def _exact_plane_value(xy, f, p) -> Fraction:
 
 def test_recentred_plane_is_accurate_far_from_the_origin():
     """Seed 004: "greater precision near the origin". At ~1e7 px the plane recentred at vertex a
-    stays accurate (error < 1e-9) and is never worse than seed 002's absolute-coordinate plane,
+    stays accurate (error < 1e-9) and is never worse than *Triangle Rasterisation II - Interpolation*'s absolute-coordinate plane,
     which loses digits to cancellation (compared against Fraction-exact values)."""
     rng = np.random.default_rng(18)
     worst_absolute = 0.0

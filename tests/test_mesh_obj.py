@@ -8,8 +8,8 @@ from collections import Counter
 import numpy as np
 import pytest
 
-from teachraster.camera import Camera
-from teachraster.mesh import (
+from teachraster.pipeline.camera import Camera
+from teachraster.pipeline.mesh import (
     Mesh,
     cube_mesh,
     fan_mesh,
@@ -20,8 +20,8 @@ from teachraster.mesh import (
     translate,
     uv_sphere_mesh,
 )
-from teachraster.obj import ObjError, read_obj
-from teachraster.viewport import to_window
+from teachraster.pipeline.obj import ObjError, read_obj
+from teachraster.pipeline.viewport import to_window
 
 
 def face_normals(mesh: Mesh) -> np.ndarray:

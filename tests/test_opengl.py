@@ -20,7 +20,7 @@ context can be created. What llvmpipe does that the tests must allow for (found 
 
 Exactness of the inputs: the image is 64 × 32 and w is a power of two (or the window position is
 on the 1/256 grid), so the window coordinates GL computes in float32 equal
-``teachraster.viewport.to_window`` in float64 bit for bit.
+``teachraster.pipeline.viewport.to_window`` in float64 bit for bit.
 """
 
 from __future__ import annotations
@@ -44,8 +44,8 @@ except ImportError as exc:
     )
 
 import teachraster as tr
-from teachraster.opengl import GLFrame, GLRenderer, gl_available, gl_render
-from teachraster.viewport import to_window
+from teachraster.pipeline.viewport import to_window
+from teachraster.study.opengl import GLFrame, GLRenderer, gl_available, gl_render
 
 GL_OK, GL_WHY = gl_available()
 if not GL_OK:
@@ -106,8 +106,8 @@ def test_importable_without_moderngl():
         import sys
         sys.modules["moderngl"] = None  # makes `import moderngl` raise ImportError
         import teachraster
-        assert "teachraster.opengl" not in sys.modules, "the core must not import opengl"
-        from teachraster.opengl import gl_available
+        assert "teachraster.study.opengl" not in sys.modules, "the core must not import opengl"
+        from teachraster.study.opengl import gl_available
         ok, why = gl_available()
         assert ok is False and "moderngl" in why, (ok, why)
         print("ok")

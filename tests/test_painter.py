@@ -14,8 +14,8 @@ import pytest
 from test_render import H, W, clip_from_window, reference_fill
 
 import teachraster as tr
-from teachraster.painter import KEYS, painter, painter_order
-from teachraster.scenes import get_scene
+from teachraster.pipeline.painters_algorithm import KEYS, painter, painter_order
+from teachraster.pipeline.scenes import get_scene
 
 
 def nearest_per_pixel(clip, width=W, height=H, bits=None):

@@ -13,8 +13,8 @@ import pytest
 from test_render import H, W, clip_from_window, random_clip, reference_fill
 
 import teachraster as tr
-from teachraster.plan import FORCEABLE, Effect, Plan, parse_force
-from teachraster.scenes import SCENES, get_scene
+from teachraster.pipeline.render_plan import FORCEABLE, Effect, Plan, parse_force
+from teachraster.pipeline.scenes import SCENES, get_scene
 
 EFFECTS = ("clipping", "culling", "depth_test", "perspective", "attributes")
 

@@ -15,7 +15,7 @@ import pytest  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster import plotting as tp  # noqa: E402
-from teachraster.scenes import get_scene  # noqa: E402
+from teachraster.pipeline.scenes import get_scene  # noqa: E402
 
 METHODS = ("span", "halfplane")
 W = H = 16

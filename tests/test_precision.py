@@ -1,4 +1,4 @@
-"""teachraster.precision: the edge-function arithmetics of the accuracy-vs-time study."""
+"""teachraster.study.precision: the edge-function arithmetics of the accuracy-vs-time study."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import pytest
 from conftest import KINDS, random_triangles, raster, reference_coverage
 
 import teachraster as tr
-from teachraster import precision
-from teachraster.bench import exact_coverage, jittered_mesh
+from teachraster.study import precision
+from teachraster.study.bench import exact_coverage, jittered_mesh
 
 SIZE = 24
 

@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 import teachraster as tr
-from teachraster.depth import quantize
-from teachraster.scenes import SCENES, get_scene
-from teachraster.texture import texel_error
+from teachraster.pipeline.depth import quantize
+from teachraster.pipeline.scenes import SCENES, get_scene
+from teachraster.pipeline.texture import texel_error
 
 W, H = 24, 18
 

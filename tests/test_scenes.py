@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 import teachraster as tr
-from teachraster.camera import Camera
-from teachraster.mesh import Mesh, fan_mesh
-from teachraster.scenes import (
+from teachraster.pipeline.camera import Camera
+from teachraster.pipeline.mesh import Mesh, fan_mesh
+from teachraster.pipeline.scenes import (
     SCENES,
     Scene,
     behind_camera,
@@ -22,7 +22,7 @@ from teachraster.scenes import (
     textured_floor,
     uv_sphere,
 )
-from teachraster.viewport import to_window
+from teachraster.pipeline.viewport import to_window
 
 W, H = 96, 72
 
@@ -181,8 +181,8 @@ def test_textured_floor_recedes_to_the_horizon():
 
 
 def test_local_checkerboard_fallback_matches_the_texture_module():
-    from teachraster import scenes
-    from teachraster.texture import checkerboard
+    from teachraster.pipeline import scenes
+    from teachraster.pipeline.texture import checkerboard
 
     for checks, texels in ((8, 64), (16, 128), (3, 10)):
         want = checkerboard(checks=checks, texels=texels)

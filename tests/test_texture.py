@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import teachraster as tr
-from teachraster.texture import FILTERS, WRAPS, checkerboard, sample, texel_error
+from teachraster.pipeline.texture import FILTERS, WRAPS, checkerboard, sample, texel_error
 
 
 def centres(h: int, w: int) -> np.ndarray:

@@ -118,7 +118,7 @@ def test_bbox_contains_every_covered_pixel(method):
 
 # -- span tables ------------------------------------------------------------------------------
 def test_span_trace_rows_split_and_spans():
-    """Span trace: rows sorted, u4 from seed 000's formula, spans reproduce coverage row by row,
+    """Span trace: rows sorted, u4 from Ek's *Triangles and Perspective Correct Interpolation* formula, spans reproduce coverage row by row,
     and the crossings bracket the covered centres."""
     for tri in cases(5, 40):
         fill = traced(tri, "span")
@@ -192,7 +192,7 @@ def test_span_trace_of_zero_height_or_zero_area_does_not_divide_by_zero(xy):
 
 
 def test_split_point_formula():
-    """tr.split_point implements u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1 (seed 000 §1.1)."""
+    """tr.split_point implements u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1 (Ek, *Triangles and Perspective Correct Interpolation*, §1.1)."""
     rng = np.random.default_rng(6)
     for _ in range(50):
         pts = rng.uniform(0, 10, (3, 2))

@@ -14,9 +14,9 @@ from matplotlib.colors import ListedColormap, to_rgba
 from matplotlib.text import Annotation
 from matplotlib.transforms import IdentityTransform
 
-from ..rasterize import Fill
-from ..render import Frame
-from ..trace import FillTrace
+from ..core.fill import Fill
+from ..core.trace import FillTrace
+from ..pipeline.render_triangles import Frame
 
 
 @dataclass

@@ -15,11 +15,11 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
-from ..plan import Plan
-from ..rasterize import Fill
-from ..render import Frame
-from ..scene_render import SceneFrame
-from ..trace import FillTrace
+from ..core.fill import Fill
+from ..core.trace import FillTrace
+from ..pipeline.render_plan import Plan
+from ..pipeline.render_scenes import SceneFrame
+from ..pipeline.render_triangles import Frame
 from ._common import (
     Artists,
     as_trace,
@@ -268,7 +268,7 @@ def plot_error_heatmap(
     """Heatmap of |a − b| with a colour bar, the maximum marked and stated in the title.
 
     The usual use: ``a`` affine and ``b`` perspective-correct values of one attribute, which
-    differ most where the triangle recedes fastest (seed 000 §2, seed 004).
+    differ most where the triangle recedes fastest (Ek, *Triangles and Perspective Correct Interpolation*, §2, Fatahalian, CMU 15-462 *Texture*).
 
     Parameters
     ----------

@@ -20,11 +20,11 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch, Patch, Polygon, Rectangle
 from matplotlib.text import Text
 
-from ..bbox import BBox
-from ..rasterize import Fill
-from ..span_tables import SpanTrace
-from ..trace import FillTrace
-from ..triangle import Triangle
+from ..core.bbox import BBox
+from ..core.fill import Fill
+from ..core.span_tables import SpanTrace
+from ..core.trace import FillTrace
+from ..core.triangle import Triangle
 from ._common import (
     Artists,
     annotate_near,
@@ -215,7 +215,7 @@ def _default_edges(tri) -> np.ndarray:
 def vertex_names(tri) -> list[str]:
     """Names of the vertices at input positions 0, 1, 2, as the captions of ``tri`` use them.
 
-    Span tables name the vertices sorted by y (seed 000): v1 top, v2 middle, v3 bottom, so
+    Span tables name the vertices sorted by y (Ek, *Triangles and Perspective Correct Interpolation*): v1 top, v2 middle, v3 bottom, so
     the vertex at input position ``span.order[k]`` is ``v{k+1}``. Everything else (half-plane
     fills, bare triangles) names them in input order: v0, v1, v2.
     """

@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib.colors import to_rgba
 from matplotlib.transforms import ScaledTranslation
 
-from ..trace import FillTrace, Step
+from ..core.trace import FillTrace, Step
 from ._common import (
     Artists,
     as_trace,

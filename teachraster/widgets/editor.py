@@ -8,10 +8,10 @@ import time
 import ipywidgets as widgets
 import numpy as np
 
+from ..core.fill import rasterize
+from ..core.span_tables import split_point
+from ..core.triangle import Triangle
 from ..plotting import FillView, InterpolationView
-from ..rasterize import rasterize
-from ..span_tables import split_point
-from ..triangle import Triangle
 from ._common import Holdable, fill_axes, labelled, style_context, title_html
 from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 

@@ -6,10 +6,10 @@ import html
 
 import ipywidgets as widgets
 
+from ..core.fill import rasterize
+from ..core.triangle import Triangle
 from ..plotting import COLORS, FillView, InterpolationView
 from ..plotting._common import fs
-from ..rasterize import rasterize
-from ..triangle import Triangle
 from ._common import Holdable, fill_axes, labelled, style_context, title_html
 from ._display import (
     COMPARISON_DPI,

@@ -7,10 +7,10 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
-from ..camera import Camera
+from ..pipeline.camera import Camera
+from ..pipeline.render_scenes import render
+from ..pipeline.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
-from ..scene_render import render
-from ..texture import checkerboard, sample, texel_error
 from ._common import style_context, title_html
 from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 
@@ -56,7 +56,7 @@ def plane_clip(tilt_deg: float, camera: Camera, aspect: float, *, distance: floa
 class TexturedPlaneViewer:
     """A textured square tilted away from the camera: affine vs perspective-correct texturing.
 
-    Both images come from :func:`teachraster.render` of the same two clip-space triangles,
+    Both images come from :func:`teachraster.pipeline.render_triangles.render` of the same two clip-space triangles,
     once with ``interpolation="affine"`` (screen-space texture coordinates, as early
     software renderers and the PlayStation did) and once ``"perspective"``, then sampled from
     a checkerboard with :func:`teachraster.sample`. With affine coordinates the checker

@@ -116,7 +116,7 @@ def read_obj(source) -> Mesh:
             positions.append(_numbers(n, args, 3, 4, "v")[:3])
         elif key == "vt":
             uv = _numbers(n, args, 1, 3, "vt")
-            # OBJ puts v = 0 at the bottom of the image (OpenGL); teachraster.texture puts
+            # OBJ puts v = 0 at the bottom of the image (OpenGL); teachraster.pipeline.texture puts
             # v = 0 at row 0, the top (like the image arrays), hence 1 - v.
             uvs.append([uv[0], 1.0 - (uv + [0.0])[1]])
         elif key == "vn":

@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .validate import as_int
+
 #: Default number of sub-pixel bits (Direct3D 10+).
 SUBPIXEL_BITS = 8
 
@@ -27,14 +29,11 @@ UNIT_LIMIT = 2**30
 FLOAT_LIMIT = 1e150
 
 
-def check_bits(subpixel_bits: int | None) -> None:
-    """Raise unless ``subpixel_bits`` is ``None`` or an int in [0, 16]."""
+def check_bits(subpixel_bits: int | None) -> int | None:
+    """``subpixel_bits`` as a Python int in [0, 16], or None; else raise naming it."""
     if subpixel_bits is None:
-        return
-    if isinstance(subpixel_bits, bool) or not isinstance(subpixel_bits, int | np.integer):
-        raise TypeError(f"subpixel_bits must be an int or None, got {subpixel_bits!r}")
-    if not 0 <= subpixel_bits <= 16:
-        raise ValueError(f"subpixel_bits must be in [0, 16] or None, got {subpixel_bits}")
+        return None
+    return as_int("subpixel_bits", subpixel_bits, minimum=0, maximum=16)
 
 
 def units_per_pixel(subpixel_bits: int | None) -> int | float:

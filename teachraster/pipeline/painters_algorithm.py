@@ -1,4 +1,4 @@
-"""The painter's algorithm (seed 003): sort triangles far to near, draw without a z-buffer.
+"""The painter's algorithm (Ritschel, *Interpolation and z-buffering*): sort triangles far to near, draw without a z-buffer.
 
 It needs no depth buffer, but one depth per *triangle* cannot order triangles that
 intersect or overlap cyclically, which is where the z-buffer's per-pixel test wins.
@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .render import Frame
-from .render import render as render_clip
+from .render_triangles import Frame
+from .render_triangles import render as render_clip
 from .viewport import to_window
 
 KEYS = ("max", "mean", "min")
@@ -38,7 +38,7 @@ def painter_order(clip, key: str = "max") -> np.ndarray:
 def painter(clip, width: int, height: int, *, attrs=None, key: str = "max", **kwargs) -> Frame:
     """Render with the painter's algorithm; ``triangle_id`` refers to the input order.
 
-    Keyword arguments other than ``depth_test`` go to :func:`teachraster.render.render`.
+    Keyword arguments other than ``depth_test`` go to :func:`teachraster.pipeline.render_triangles.render`.
     """
     if "depth_test" in kwargs:
         raise TypeError("painter draws without a depth test; do not pass depth_test")

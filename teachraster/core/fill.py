@@ -8,13 +8,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import half_planes, span_tables
-from .barycentric import barycentric_pixels
+from .barycentrics import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import EdgeSetup, setup_edges
 from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
+from .validate import as_bool, as_int, as_size, check_choice
 
 METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill}
 CULL = (None, "back", "front")
@@ -40,19 +41,6 @@ class Fill:
     attrs: Mapping[str, np.ndarray]
     depth: np.ndarray | None
     trace: FillTrace | None = None
-
-
-def _check_size(name: str, value) -> int:
-    if isinstance(value, bool) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be an int, got {value!r}")
-    if value <= 0:
-        raise ValueError(f"{name} must be positive, got {value}")
-    return int(value)
-
-
-def _check_choice(name: str, value, choices) -> None:
-    if value not in choices:
-        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}; got {value!r}")
 
 
 def rasterize(
@@ -86,7 +74,7 @@ def rasterize(
     subdivision : int
         Pixels between exact evaluations for ``"subdivided"`` (1 = exact).
     trace : bool
-        Record every step (see :class:`~teachraster.trace.FillTrace`). Never changes
+        Record every step (see :class:`~teachraster.core.trace.FillTrace`). Never changes
         the pixels.
     subpixel_bits : int or None
         Vertices are snapped to ``1 / 2**subpixel_bits`` px before coverage is decided
@@ -109,15 +97,13 @@ def rasterize(
     """
     if not isinstance(tri, Triangle):
         raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
-    width, height = _check_size("width", width), _check_size("height", height)
-    _check_choice("method", method, tuple(METHODS))
-    _check_choice("interpolation", interpolation, FILL_MODES)
-    if isinstance(subdivision, bool) or not isinstance(subdivision, int | np.integer):
-        raise TypeError(f"subdivision must be an int, got {subdivision!r}")
-    if subdivision < 1:
-        raise ValueError(f"subdivision must be >= 1, got {subdivision}")
-    _check_choice("cull", cull, CULL)
-    check_bits(subpixel_bits)
+    width, height = as_size("width", width), as_size("height", height)
+    check_choice("method", method, tuple(METHODS))
+    check_choice("interpolation", interpolation, FILL_MODES)
+    subdivision = as_int("subdivision", subdivision, minimum=1)
+    check_choice("cull", cull, CULL)
+    trace = as_bool("trace", trace)
+    subpixel_bits = check_bits(subpixel_bits)
 
     setup = setup_edges(tri.xy, subpixel_bits)
     box = pixel_bbox(setup, width, height)

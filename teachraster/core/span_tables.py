@@ -150,7 +150,7 @@ def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTr
     """Coverage of the bounding box (bbox-local bool array) and, if asked, the trace."""
     rows = bbox.rows()
     y = setup.centre_x(rows)
-    # Sort by y (then x): v1 on top, v3 at the bottom (seed 000 §1.1).
+    # Sort by y (then x): v1 on top, v3 at the bottom (Ek, *Triangles and Perspective Correct Interpolation*, §1.1).
     v1, v2, v3 = np.lexsort((setup.p[:, 0], setup.p[:, 1]))
     long_edge, top_edge, bottom_edge = _edge_index(v1, v3), _edge_index(v1, v2), _edge_index(v2, v3)
     split_y = setup.p[v2, 1]

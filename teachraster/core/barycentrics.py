@@ -1,10 +1,10 @@
-"""Barycentric coordinates as ratios of areas (seed 003), computed relative to a vertex.
+"""Barycentric coordinates as ratios of areas (Ritschel, *Interpolation and z-buffering*), computed relative to a vertex.
 
 ``λ_A(P) = t(P, B, C) / t(A, B, C)`` and its two rotations: each weight is the area of the
 sub-triangle opposite a vertex over the whole area. Each area is an edge function, which
 is evaluated from differences ``p - a`` to a vertex of the edge. Evaluating the same
 quantity as a plane ``A x + B y + C`` in absolute coordinates instead cancels
-catastrophically far from the origin (seed 004: "you have greater precision near the
+catastrophically far from the origin (Fatahalian, CMU 15-462 *Texture*: "you have greater precision near the
 origin").
 """
 
@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from .edges import EdgeSetup, edge_values_at
-from .triangle import as_finite
+from .validate import as_finite
 
 
 def barycentric(xy, points) -> np.ndarray:

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .triangle import as_finite
+from ..core.validate import as_finite, as_int
 
 
 def _as_indices(value, n_vertices: int) -> np.ndarray:
@@ -210,12 +210,6 @@ def rotate(axis, degrees: float) -> np.ndarray:
 
 
 # -- primitives -------------------------------------------------------------------------------
-def _count(name: str, value, least: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be an int, got {value!r}")
-    if value < least:
-        raise ValueError(f"{name} must be >= {least}, got {value}")
-    return int(value)
 
 
 def _positive(name: str, value) -> float:
@@ -242,12 +236,12 @@ def grid_mesh(nx: int, ny: int, size: float = 2.0) -> Mesh:
 
     Spans ``[-size/2, size/2]`` in x and y; watertight (neighbouring cells share vertices).
     uv runs 0..1 along +x (u) and -y (v): texture row 0 (v = 0) is at the top, so a texture
-    appears upright (the convention of :mod:`teachraster.texture`).
+    appears upright (the convention of :mod:`teachraster.pipeline.texture`).
 
     >>> grid_mesh(3, 2).triangles.shape
     (12, 3)
     """
-    nx, ny, size = _count("nx", nx, 1), _count("ny", ny, 1), _positive("size", size)
+    nx, ny, size = as_int("nx", nx, minimum=1), as_int("ny", ny, minimum=1), _positive("size", size)
     u, v = np.meshgrid(np.linspace(0, 1, nx + 1), np.linspace(0, 1, ny + 1))
     u, v = u.ravel(), v.ravel()
     pos = np.stack([(u - 0.5) * size, (v - 0.5) * size, np.zeros_like(u)], -1)
@@ -317,7 +311,7 @@ def uv_sphere_mesh(radius: float = 1.0, n_lat: int = 16, n_lon: int = 32) -> Mes
     (36, 3)
     """
     r = _positive("radius", radius)
-    n_lat, n_lon = _count("n_lat", n_lat, 2), _count("n_lon", n_lon, 3)
+    n_lat, n_lon = as_int("n_lat", n_lat, minimum=2), as_int("n_lon", n_lon, minimum=3)
     i, j = np.meshgrid(np.arange(n_lat + 1), np.arange(n_lon + 1), indexing="ij")
     theta = np.pi * i / n_lat  # polar angle from +y
     phi = 2 * np.pi * (j % n_lon) / n_lon  # j % n_lon: the seam repeats column 0 exactly
@@ -361,7 +355,7 @@ def fan_mesh(n: int = 12, radius: float = 1.0) -> Mesh:
     >>> fan_mesh(4).triangles.tolist()
     [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]]
     """
-    n, r = _count("n", n, 3), _positive("radius", radius)
+    n, r = as_int("n", n, minimum=3), _positive("radius", radius)
     a = 2 * np.pi * np.arange(n) / n
     xy = np.concatenate([[[0.0, 0.0]], np.stack([np.cos(a), np.sin(a)], -1)])
     pos = np.concatenate([r * xy, np.zeros((n + 1, 1))], axis=1)

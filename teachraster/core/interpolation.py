@@ -1,7 +1,10 @@
-"""Affine (screen-space) and perspective-correct interpolation (seeds 000, 003, 004).
+"""Affine (screen-space) and perspective-correct interpolation.
+
+Ek, *Triangles and Perspective Correct Interpolation*, §2; Ritschel, *Interpolation and
+z-buffering*; Fatahalian, CMU 15-462 *Texture*.
 
 Screen-space barycentrics λ are affine in (x, y). Under perspective a vertex attribute f
-is *not*: what is affine in screen space is f/w and 1/w (seed 000, eq. 19; seed 004). So
+is *not*: what is affine in screen space is f/w and 1/w (Ek, *Triangles and Perspective Correct Interpolation*, eq. 19; Fatahalian, CMU 15-462 *Texture*). So
 
 - affine ("noperspective"):       f = Σ λ_i f_i
 - perspective-correct ("smooth"): f = Σ λ_i f_i/w_i / Σ λ_i/w_i

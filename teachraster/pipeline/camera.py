@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .triangle import as_finite
+from ..core.validate import as_finite
 
 PROJECTIONS = ("perspective", "orthographic")
 

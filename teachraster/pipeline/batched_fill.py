@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .snapping import SUBPIXEL_BITS, to_units, units_per_pixel
-from .span_tables import edge_bounds
+from ..core.snapping import SUBPIXEL_BITS, to_units, units_per_pixel
+from ..core.span_tables import edge_bounds
 
 
 @dataclass(frozen=True)
@@ -136,7 +136,7 @@ def rasterize_batch(
     # Barycentrics from the exact edge functions, in the caller's vertex order: weight k is
     # E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding. Along a span E
     # changes by -dy per unit of x, so it is evaluated once at the span's start and then
-    # stepped (seed 002's incremental form); on the snapped grid the steps are exact
+    # stepped (*Triangle Rasterisation II - Interpolation*'s incremental form); on the snapped grid the steps are exact
     # integers, so this is the same value as evaluating E at every pixel.
     lam = np.empty((len(tri), 3))
     src, src_unit, src_half, src_area = v, unit, half, area2

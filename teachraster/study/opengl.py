@@ -1,6 +1,6 @@
 """Render clip-space triangles with a real GPU rasteriser (OpenGL) to check teachraster against.
 
-This optional module draws the same clip-space triangles as :func:`teachraster.render` with
+This optional module draws the same clip-space triangles as :func:`teachraster.pipeline.render_triangles.render` with
 OpenGL, through `moderngl <https://moderngl.readthedocs.io>`_ and a headless EGL context (on
 machines without a GPU that is Mesa's llvmpipe, a software rasteriser that, like Direct3D and
 teachraster, snaps vertices to 1/256 px). It reads back float32 render targets: the triangle id
@@ -53,6 +53,8 @@ import ctypes.util
 from dataclasses import dataclass
 
 import numpy as np
+
+from ..core.validate import as_size
 
 __all__ = ["GLFrame", "GLRenderer", "gl_available", "gl_render"]
 
@@ -240,9 +242,7 @@ def _program(ctx, n_chunks: int):
 
 
 def _check_inputs(clip, width, height, attrs, cull):
-    for name, value in (("width", width), ("height", height)):
-        if isinstance(value, bool) or not isinstance(value, int | np.integer) or value <= 0:
-            raise ValueError(f"{name} must be a positive int, got {value!r}")
+    width, height = as_size("width", width), as_size("height", height)
     clip = np.asarray(clip, dtype=np.float64)
     if clip.ndim != 3 or clip.shape[1:] != (3, 4):
         raise ValueError(f"clip must have shape (N, 3, 4), got {clip.shape}")
@@ -429,7 +429,7 @@ def gl_render(
     """Draw clip-space triangles with OpenGL and read back ids, attributes and depth.
 
     The vertices go straight to ``gl_Position`` (with y negated, see the module docstring),
-    so GL clips in homogeneous space itself, exactly the input of :func:`teachraster.render`.
+    so GL clips in homogeneous space itself, exactly the input of :func:`teachraster.pipeline.render_triangles.render`.
 
     Parameters
     ----------

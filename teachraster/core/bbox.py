@@ -1,4 +1,4 @@
-"""The bounding box: the only pixels worth testing (seed 000 §1.2, seed 001)."""
+"""The bounding box: the only pixels worth testing (Ek, *Triangles and Perspective Correct Interpolation*, §1.2, the CS148 rasterisation notes (*Why Triangles?*))."""
 
 from __future__ import annotations
 

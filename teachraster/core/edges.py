@@ -1,7 +1,7 @@
 """Edge functions, winding and the top-left rule: the per-triangle set-up both fills share.
 
 The edge function of the directed edge a→b at point p is the z-component of the cross
-product (b - a) × (p - a) (lesson: half-planes, seed 000 §1.2)::
+product (b - a) × (p - a) (lesson: half-planes, Ek, *Triangles and Perspective Correct Interpolation*, §1.2)::
 
     E(a, b, p) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x)
 
@@ -11,7 +11,7 @@ point is inside when all three edge functions are positive. A centre exactly on 
 triangles belongs to exactly one of them.
 
 Exactness: on the snapped grid all coordinates are int64 below 2**30 in magnitude
-(:data:`teachraster.snapping.UNIT_LIMIT`), so each difference is below 2**31, each product
+(:data:`teachraster.core.snapping.UNIT_LIMIT`), so each difference is below 2**31, each product
 below 2**62 and E below 2**63: computed in int64, E is exact, and the sign tests and the
 ``E == 0`` ties are decided without rounding.
 """

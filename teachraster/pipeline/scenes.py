@@ -1,6 +1,6 @@
 """Built-in teaching scenes: each a mesh, a camera looking at it, and how to shade it.
 
-Texture coordinates follow :mod:`teachraster.texture`: ``v = 0`` is the top row of the
+Texture coordinates follow :mod:`teachraster.pipeline.texture`: ``v = 0`` is the top row of the
 texture, so a texture appears upright on a surface whose ``v`` grows downwards.
 
 >>> scene = get_scene("cube")

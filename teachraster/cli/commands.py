@@ -242,8 +242,8 @@ def _add_output(p: argparse.ArgumentParser, *, animated: bool) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     """The ``teachraster`` argument parser (subcommands fill, compare, scene, case, list)."""
-    from .hardcases import CASES  # numpy-only, like the rest of the core
-    from .scenes import SCENES
+    from ..pipeline.scenes import SCENES
+    from ..study.hardcases import CASES  # numpy-only, like the rest of the core
 
     parser = argparse.ArgumentParser(
         prog="teachraster",
@@ -453,14 +453,14 @@ def _animate(
 
 
 def _triangle(args, *, attrs_default=None):
-    from .triangle import Triangle
+    from ..core.triangle import Triangle
 
     attrs = dict(args.attr) if args.attr else dict(attrs_default or {})
     return Triangle(args.xy, w=args.w, attrs=attrs)
 
 
 def _rasterize(args, tri):
-    from .rasterize import rasterize
+    from ..core.fill import rasterize
 
     width, height = args.size
     return rasterize(
@@ -489,7 +489,7 @@ def _say(text: str) -> None:
 # -- commands ----------------------------------------------------------------------------------
 def cmd_fill(args, parser) -> int:
     """Animate a fill step by step with :class:`FillView`, or save one step as a PNG."""
-    from .plotting import FillView, use_style
+    from ..plotting import FillView, use_style
 
     if args.step is not None and _is_animation(args):
         parser.error("argument --step: a .gif/.mp4 animates every step; --step is for a .png")
@@ -526,8 +526,8 @@ def cmd_fill(args, parser) -> int:
 
 def cmd_compare(args, parser) -> int:
     """Affine vs perspective-correct values and their error (:class:`InterpolationView`)."""
-    from .plotting import InterpolationView, use_style
-    from .triangle import Triangle
+    from ..core.triangle import Triangle
+    from ..plotting import InterpolationView, use_style
 
     tri = _triangle(args, attrs_default=[parse_attr("u=0,1,0")])
     name = args.show if args.show is not None else next(iter(tri.attrs))
@@ -582,10 +582,10 @@ def cmd_compare(args, parser) -> int:
 
 def cmd_scene(args, parser) -> int:
     """Render a built-in scene, save its image (or the comparison) and print its plan."""
-    from .plotting import ComparisonView, format_plan, plot_image, use_style
-    from .plotting._common import fs
-    from .scene_render import render_scene
-    from .scenes import get_scene
+    from ..pipeline.render_scenes import render_scene
+    from ..pipeline.scenes import get_scene
+    from ..plotting import ComparisonView, format_plan, plot_image, use_style
+    from ..plotting._common import fs
 
     scene = get_scene(args.name)
     width, height = args.size
@@ -607,7 +607,7 @@ def cmd_scene(args, parser) -> int:
             if textured:
                 # The colour difference of a two-tone texture is only stripes of 0 and 1:
                 # compare where the samples land instead, in texels (as lesson 04 does).
-                from .texture import texel_error
+                from ..pipeline.texture import texel_error
 
                 texels = texel_error(a.attr("uv"), b.attr("uv"), scene.texture.shape)
                 view.heatmap.update(texels, np.zeros_like(texels))
@@ -646,7 +646,7 @@ def cmd_scene(args, parser) -> int:
 
 def _counts(result) -> np.ndarray | None:
     """(H, W) coverage counts of a case's result, where it has pixels."""
-    from .hardcases import Fills, Rendered
+    from ..study.hardcases import Fills, Rendered
 
     if isinstance(result, Fills):
         return result.counts
@@ -680,9 +680,9 @@ def _count_panels(
     """
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
-    from .plotting import plot_pixel_grid, plot_triangle
-    from .plotting._common import fs
-    from .plotting.style import COLORS, OKABE_ITO
+    from ..plotting import plot_pixel_grid, plot_triangle
+    from ..plotting._common import fs
+    from ..plotting.style import COLORS, OKABE_ITO
 
     h, w = panels[0][0].shape
     top = max(int(max(p.max() for p, _ in panels)), 2)
@@ -729,8 +729,8 @@ def cmd_case(args, parser) -> int:
     """Run a hard case, check it, and save our coverage counts beside the naive ones."""
     import textwrap
 
-    from .hardcases import get_case
-    from .plotting import use_style
+    from ..plotting import use_style
+    from ..study.hardcases import get_case
 
     case = get_case(args.name)
     if args.method is not None and args.method not in case.methods:
@@ -803,8 +803,8 @@ def cmd_case(args, parser) -> int:
 
 def cmd_list(args, parser) -> int:
     """Print the built-in scenes and hard cases, one a line with what they teach."""
-    from .hardcases import CASES
-    from .scenes import SCENES
+    from ..pipeline.scenes import SCENES
+    from ..study.hardcases import CASES
 
     _say("scenes (teachraster scene NAME -o out.png):")
     for name, make in SCENES.items():

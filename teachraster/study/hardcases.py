@@ -3,7 +3,7 @@
 Each :class:`HardCase` holds its inputs, a one-line ``why``, what a correct rasteriser must do
 (``expect`` in words, :meth:`HardCase.check` as code), a :meth:`HardCase.run` that executes it
 with the core (:func:`teachraster.rasterize` for screen-space triangles,
-:func:`teachraster.render` for clip-space ones) and, where it is instructive, a
+:func:`teachraster.pipeline.render_triangles.render` for clip-space ones) and, where it is instructive, a
 :meth:`HardCase.naive` version: what a straightforward implementation computes instead, written
 out below in a few lines of numpy so that lesson 07 can show "naive vs ours" side by side.
 
@@ -18,7 +18,7 @@ out below in a few lines of numpy so that lesson 07 can show "naive vs ours" sid
 Results
 -------
 - screen-space cases (``kind`` "triangle", "triangles", "mesh") return a :class:`Fills`: one
-  :class:`~teachraster.rasterize.Fill` per triangle and their summed coverage ``counts``;
+  :class:`~teachraster.core.fill.Fill` per triangle and their summed coverage ``counts``;
 - clip-space cases ("clip") return a :class:`Rendered`: the frame and the union coverage of
   the clipped window triangles filled again with the chosen method;
 - precision and depth cases return a small dataclass of measured numbers.
@@ -35,18 +35,18 @@ from typing import Any
 
 import numpy as np
 
-from . import half_planes, span_tables
-from .barycentric import barycentric_pixels
-from .bbox import pixel_bbox
-from .camera import perspective
-from .edges import setup_edges
-from .interpolation import blend
-from .plane_equation import attribute_plane, plane_equation
-from .rasterize import Fill, rasterize
-from .render import Frame
-from .render import render as render_clip
-from .snapping import SUBPIXEL_BITS, snap
-from .triangle import Triangle
+from ..core import half_planes, span_tables
+from ..core.barycentrics import barycentric_pixels
+from ..core.bbox import pixel_bbox
+from ..core.edges import setup_edges
+from ..core.fill import Fill, rasterize
+from ..core.interpolation import blend
+from ..core.plane_equations import attribute_plane, plane_equation
+from ..core.snapping import SUBPIXEL_BITS, snap
+from ..core.triangle import Triangle
+from ..pipeline.camera import perspective
+from ..pipeline.render_triangles import Frame
+from ..pipeline.render_triangles import render as render_clip
 
 #: Fill methods a screen-space case runs with.
 FILL_METHODS = ("halfplane", "span")
@@ -206,7 +206,7 @@ def naive_coverage(
         Orient by the sign of the float area, or assume clockwise-on-screen input (a
         counter-clockwise triangle then covers nothing).
     absolute : bool
-        Evaluate ``E = A x + B y + C`` with absolute coordinates (seed 002's plane form),
+        Evaluate ``E = A x + B y + C`` with absolute coordinates (*Triangle Rasterisation II - Interpolation*'s plane form),
         which cancels catastrophically far from the origin, instead of from differences.
     origin : (row, col)
         Pixel index of the window's top-left pixel (for triangles far from the origin).
@@ -792,7 +792,7 @@ def _far_case():
                     local + o, _FAR_WINDOW, _FAR_WINDOW, rule="top_left", dtype=dtype,
                     absolute=True, origin=(o, o),
                 )  # fmt: skip
-            # seed 002's plane in absolute coordinates, float64, at the local pixel centres
+            # *Triangle Rasterisation II - Interpolation*'s plane in absolute coordinates, float64, at the local pixel centres
             ys, xs = np.mgrid[0:_FAR_WINDOW, 0:_FAR_WINDOW] + 0.5
             values[f"plane_{o}"] = plane_equation(local + o, f)(xs + o, ys + o)
             values[f"recentred_{o}"] = attribute_plane(local + o, f)(xs + o, ys + o)
@@ -824,7 +824,7 @@ def _far_case():
             run,
             check,
             "float32 edge functions in absolute form (A x + B y + C with C ~ x·y) lose the "
-            "bits that decide coverage (wrong pixels from 1e5); seed 002's absolute plane "
+            "bits that decide coverage (wrong pixels from 1e5); *Triangle Rasterisation II - Interpolation*'s absolute plane "
             "equation in float64 is off by ~3e-6 at 1e6",
             naive,
             shows,
@@ -973,8 +973,8 @@ _snap_cases()
 class DriftResult:
     """Largest error against the exact value, over the pixels the triangle covers.
 
-    ``ours`` is the core's fill (exact barycentrics then a blend); ``recentred`` seed 004's
-    plane evaluated directly at each pixel; ``stepped64`` seed 002's incremental stepping in
+    ``ours`` is the core's fill (exact barycentrics then a blend); ``recentred`` Fatahalian's (CMU 15-462, *Texture*)
+    plane evaluated directly at each pixel; ``stepped64`` *Triangle Rasterisation II - Interpolation*'s incremental stepping in
     float64 (:meth:`teachraster.PlaneEquation.stepped`).
     """
 
@@ -1050,7 +1050,7 @@ def _drift_case():
             "accumulates rounding",
             "precision",
             "the core evaluates every pixel directly from exact edge functions: error <= 1e-9 "
-            "everywhere (so is seed 004's recentred plane); seed 002's stepping in float64 "
+            "everywhere (so is Fatahalian's (CMU 15-462, *Texture*) recentred plane); *Triangle Rasterisation II - Interpolation*'s stepping in float64 "
             "drifts measurably (reported), in float32 visibly",
             _frozen(xy=xy, f=f, size=(width, height)),
             run,

@@ -1,4 +1,4 @@
-"""Attributes as planes over the screen: seed 002's A, B, C, D and seed 004's matrix M.
+"""Attributes as planes over the screen: *Triangle Rasterisation II - Interpolation*'s A, B, C, D and Fatahalian's (CMU 15-462, *Texture*) matrix M.
 
 Seed 002 treats the three points (x_i, y_i, f_i) as a plane ``A x + B y + C f + D = 0``,
 so ``f = -(A x + B y + D) / C``; stepping one pixel right adds ``dx = -A/C`` and one row
@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .triangle import as_finite
+from .validate import as_finite
 
 
 def _values(f) -> np.ndarray:
@@ -30,7 +30,7 @@ def _nondegenerate(c) -> None:
 
 @dataclass(frozen=True)
 class PlaneEquation:
-    """``A x + B y + C f + D = 0`` through the three points (x_i, y_i, f_i) (seed 002).
+    """``A x + B y + C f + D = 0`` through the three points (x_i, y_i, f_i) (*Triangle Rasterisation II - Interpolation*).
 
     A, B, D have the attribute's shape (scalar or (k,)); C is twice the signed area.
     """
@@ -58,7 +58,7 @@ class PlaneEquation:
         return -(self.A * x + self.B * y + self.D) / self.C
 
     def stepped(self, x0: float, y0: float, ncols: int, nrows: int) -> np.ndarray:
-        """Evaluate on a grid by incremental stepping, as in seed 002's inner loop.
+        """Evaluate on a grid by incremental stepping, as in *Triangle Rasterisation II - Interpolation*'s inner loop.
 
         Starts from the exact value at (x0, y0), then adds ``dy`` once per row and ``dx``
         once per pixel, strictly in order, so rounding errors accumulate the way they
@@ -83,7 +83,7 @@ class PlaneEquation:
 
 
 def plane_equation(xy, f) -> PlaneEquation:
-    """The plane through (x_i, y_i, f_i), with seed 002's formulas (absolute coordinates).
+    """The plane through (x_i, y_i, f_i), with *Triangle Rasterisation II - Interpolation*'s formulas (absolute coordinates).
 
     >>> p = plane_equation([[0, 0], [4, 0], [0, 4]], [1.0, 3.0, 5.0])
     >>> float(p.dx), float(p.dy), float(p(1, 1))

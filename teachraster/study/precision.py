@@ -4,7 +4,7 @@ The core (:func:`teachraster.rasterize`) decides coverage one way only: vertices
 1/256 px, edge functions in exact int64 arithmetic, each pixel's value computed directly
 from a vertex. This module evaluates the *same* half-plane test (edge functions of the
 CONVENTIONS, top-left tie rule) in the other arithmetics a rasteriser might use, so the
-benchmark (:mod:`teachraster.bench`) and lesson 06 can measure what each one gets wrong and
+benchmark (:mod:`teachraster.study.bench`) and lesson 06 can measure what each one gets wrong and
 what it costs. It is a study tool, not a second rasteriser: nothing in the core calls it.
 
 Arithmetics (``arithmetic=``):
@@ -44,7 +44,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .snapping import to_units
+from ..core.snapping import to_units
+from ..core.validate import as_size
 
 ARITHMETICS = ("fixed8", "fixed4", "float64", "float32", "unsnapped")
 EVALUATIONS = ("direct", "incremental")
@@ -85,13 +86,11 @@ def _check(arithmetic: str, evaluation: str) -> None:
 
 
 def _check_window(width, height, origin) -> tuple[int, int, int, int]:
-    for name, v in (("width", width), ("height", height)):
-        if isinstance(v, bool) or not isinstance(v, int | np.integer) or v <= 0:
-            raise ValueError(f"{name} must be a positive int, got {v!r}")
+    width, height = as_size("width", width), as_size("height", height)
     ox, oy = origin
     if int(ox) != ox or int(oy) != oy:
         raise ValueError(f"origin must be whole pixels, got {origin!r}")
-    return int(width), int(height), int(ox), int(oy)
+    return width, height, int(ox), int(oy)
 
 
 def _as_xy(xy) -> np.ndarray:

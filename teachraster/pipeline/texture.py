@@ -1,7 +1,8 @@
-"""Textures: a procedural checkerboard, and nearest / bilinear sampling (seeds 000, 003, 004).
+"""Textures: a procedural checkerboard, and nearest / bilinear sampling.
 
-Seed 003 lists texture coordinates among the per-pixel values a rasteriser interpolates; seeds
-000 and 004 explain why they must be interpolated perspective-correctly. Sampling a texture at
+Ritschel (*Interpolation and z-buffering*) lists texture coordinates among the per-pixel values
+a rasteriser interpolates; Ek (*Triangles and Perspective Correct Interpolation*) and
+Fatahalian (CMU 15-462, *Texture*) explain why they must be interpolated perspective-correctly. Sampling a texture at
 the interpolated coordinates is what makes the difference *visible*: with affine
 interpolation a receding checkerboard bends (the classic warp), and :func:`texel_error` measures
 the bend in texels.
@@ -33,6 +34,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.validate import as_int
+
 FILTERS = ("nearest", "bilinear")
 WRAPS = ("repeat", "clamp")
 
@@ -45,7 +48,7 @@ def checkerboard(
     """A ``checks`` x ``checks`` checkerboard texture of ``texels`` x ``texels`` texels.
 
     The classic test texture for perspective: its straight lines show at a glance whether
-    texture coordinates were interpolated perspective-correctly (seed 004).
+    texture coordinates were interpolated perspective-correctly (Fatahalian, CMU 15-462 *Texture*).
 
     Parameters
     ----------
@@ -69,8 +72,8 @@ def checkerboard(
            [0., 0., 1., 1.],
            [0., 0., 1., 1.]])
     """
-    texels = _check_count("texels", texels, 1)
-    checks = _check_count("checks", checks, 1)
+    texels = as_int("texels", texels, minimum=1)
+    checks = as_int("checks", checks, minimum=1)
     if checks > texels:
         raise ValueError(
             f"checks must be <= texels (a square must be at least one texel wide), "
@@ -208,14 +211,6 @@ def _wrap(index: np.ndarray, size: int, wrap: str) -> np.ndarray:
     else:
         index = np.clip(index, 0, size - 1)
     return index.astype(np.intp)
-
-
-def _check_count(name: str, value, minimum: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be an int, got {value!r}")
-    if value < minimum:
-        raise ValueError(f"{name} must be >= {minimum}, got {value}")
-    return int(value)
 
 
 def _texture_size(shape) -> tuple[int, int]:

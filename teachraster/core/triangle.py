@@ -7,24 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-
-def as_finite(name: str, value, shape: tuple[int | None, ...]) -> np.ndarray:
-    """Return ``value`` as a float64 array of ``shape`` (``None`` = any), or raise.
-
-    Errors name the offending argument, so a student sees *which* input was wrong.
-    """
-    try:
-        arr = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be numeric array-like: {exc}") from None
-    ok = arr.ndim == len(shape) and all(s is None or s == n for s, n in zip(shape, arr.shape))
-    if not ok:
-        dims = ["k" if s is None else str(s) for s in shape]
-        want = "(" + ", ".join(dims) + ("," if len(dims) == 1 else "") + ")"
-        raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
-    if not np.isfinite(arr).all():
-        raise ValueError(f"{name} contains NaN or infinity: {arr.tolist()}")
-    return arr
+from .validate import as_finite
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""Half-plane fill: bounding box, then three edge tests per pixel (seed 000 §1.2, seed 001).
+"""Half-plane fill: bounding box, then three edge tests per pixel (Ek, *Triangles and Perspective Correct Interpolation*, §1.2, the CS148 rasterisation notes (*Why Triangles?*)).
 
 Every pixel centre in the bounding box is tested against the three edges in turn
 (walking round the triangle: v0→v1, v1→v2, v2→v0 in positive winding). A scalar loop

@@ -1,7 +1,7 @@
-"""Rendering a :class:`~teachraster.scenes.Scene`: the convenience on top of ``render``.
+"""Rendering a :class:`~teachraster.pipeline.scenes.Scene`: the convenience on top of ``render``.
 
 It projects the scene's mesh with a camera, hands the clip-space triangles to
-:func:`teachraster.render.render` together with *only the attributes the shading uses*
+:func:`teachraster.pipeline.render_triangles.render` together with *only the attributes the shading uses*
 (texture coordinates for a textured scene, colours for a coloured one; normals are never
 interpolated, since nothing lights these scenes), and shades the result.
 """
@@ -12,18 +12,18 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..core.validate import as_size
 from .camera import Camera
-from .plan import Effect, Plan, parse_force
-from .rasterize import _check_size
-from .render import Frame
-from .render import render as render_clip
+from .render_plan import Effect, Plan, parse_force
+from .render_triangles import Frame
+from .render_triangles import render as render_clip
 from .scenes import Scene
 from .texture import sample
 
 
 @dataclass(frozen=True)
 class SceneFrame(Frame):
-    """A :class:`~teachraster.render.Frame` of a scene, shaded.
+    """A :class:`~teachraster.pipeline.render_triangles.Frame` of a scene, shaded.
 
     Attributes
     ----------
@@ -63,9 +63,9 @@ def render_scene(
     """Render ``scene`` through ``camera`` (default: the scene's own) and shade it.
 
     Other keyword arguments (``depth_test``, ``cull``, ``depth_format``, ``interpolation``,
-    ``trace``, ``subpixel_bits``) go to :func:`teachraster.render.render`.
+    ``trace``, ``subpixel_bits``) go to :func:`teachraster.pipeline.render_triangles.render`.
 
-    >>> from teachraster.scenes import get_scene
+    >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
     >>> frame.image.shape, sorted(frame.layout)
     ((48, 64, 3), ['uv'])
@@ -75,7 +75,7 @@ def render_scene(
     camera = scene.camera if camera is None else camera
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a teachraster Camera, got {type(camera).__name__}")
-    width, height = _check_size("width", width), _check_size("height", height)
+    width, height = as_size("width", width), as_size("height", height)
     forced = parse_force(force)
     mesh = scene.mesh
     names = sorted(mesh.attrs) if "attributes" in forced else list(scene.uses)
@@ -125,8 +125,8 @@ def render_scene(
 def render(clip_or_scene, *args, **kwargs) -> Frame:
     """``render(clip, width, height, ...)`` or ``render(scene, camera, width, height, ...)``.
 
-    With clip-space triangles this is :func:`teachraster.render.render`; with a
-    :class:`~teachraster.scenes.Scene` it is :func:`render_scene`.
+    With clip-space triangles this is :func:`teachraster.pipeline.render_triangles.render`; with a
+    :class:`~teachraster.pipeline.scenes.Scene` it is :func:`render_scene`.
     """
     if isinstance(clip_or_scene, Scene):
         return render_scene(clip_or_scene, *args, **kwargs)

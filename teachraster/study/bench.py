@@ -1,6 +1,6 @@
 """Accuracy vs time: what each cheaper or costlier way of rasterising gets wrong, and costs.
 
-Run ``python -m teachraster.bench [--quick] [--out DIR] [--repeat N]``. On fixed, seeded
+Run ``python -m teachraster.study.bench [--quick] [--out DIR] [--repeat N]``. On fixed, seeded
 scenes it measures every variant's error against a ground truth computed independently of
 the rasteriser, and its time (the median of ``--repeat`` runs after two warm-ups, with
 ``time.perf_counter``; the variants of a group are timed round-robin, so a busy machine
@@ -16,14 +16,14 @@ interpolation
     intersection per pixel centre in 3D (float64), which never uses screen-space
     barycentrics.
 edge functions
-    :func:`teachraster.precision.coverage` in five arithmetics, evaluated directly or
+    :func:`teachraster.study.precision.coverage` in five arithmetics, evaluated directly or
     incrementally. Error: pixels whose coverage differs from the exact rational coverage of
     the triangle snapped to 1/256 px (CONVENTIONS' reference), on random triangles and on a
     jittered watertight mesh placed at 0, 1e5 and 1e6 px from the origin; also gaps and
     double hits on the mesh, and differences from the exact *unsnapped* geometry.
 
     Far from the origin the image is a window of pixels at the mesh's integer offset
-    (``origin=`` of :mod:`teachraster.precision`) and every arithmetic is given the
+    (``origin=`` of :mod:`teachraster.study.precision`) and every arithmetic is given the
     *absolute* coordinates, as a rasteriser without a window-relative set-up would see
     them. The integer arithmetics are unaffected (subtracting whole pixels is exact, so
     they equal ``tr.rasterize`` on window-relative positions); float32 rounds each vertex to
@@ -60,12 +60,12 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.fill import rasterize
+from ..core.triangle import Triangle
+from ..pipeline.camera import perspective
+from ..pipeline.depth import linear_depth
+from ..pipeline.render_scenes import render
 from . import precision
-from .camera import perspective
-from .depth import linear_depth
-from .rasterize import rasterize
-from .scene_render import render
-from .triangle import Triangle
 
 GROUPS = ("interpolation", "edge functions", "fill", "depth")
 
@@ -195,7 +195,7 @@ def exact_coverage(xy, width: int, height: int, bits: int | None = 8, origin=(0,
     first evaluated in float64; where the result is farther from 0 than a proven bound on
     its rounding error its sign is certain, and only the remaining pixels (centres on or a
     hair from an edge) are decided with Fractions. This is independent of the package's
-    rasteriser and of :mod:`teachraster.precision`.
+    rasteriser and of :mod:`teachraster.study.precision`.
 
     Returns
     -------
@@ -903,9 +903,9 @@ def plot(rows: list[dict], out_dir) -> list[Path]:
 
 # -- command line -----------------------------------------------------------------------------
 def main(argv: list[str] | None = None) -> int:
-    """``python -m teachraster.bench [--quick] [--out DIR] [--repeat N]``."""
+    """``python -m teachraster.study.bench [--quick] [--out DIR] [--repeat N]``."""
     parser = argparse.ArgumentParser(
-        prog="python -m teachraster.bench",
+        prog="python -m teachraster.study.bench",
         description="Accuracy vs time of teachraster's cheaper and costlier variants.",
     )
     parser.add_argument("--quick", action="store_true", help="small scenes: a smoke run")

@@ -1,12 +1,12 @@
-"""Depth mappings and depth-buffer precision: why distant surfaces z-fight (seed 003).
+"""Depth mappings and depth-buffer precision: why distant surfaces z-fight (Ritschel, *Interpolation and z-buffering*).
 
 Seed 003's z-buffer keeps, per pixel, the depth of the nearest fragment so far and warns that a
 "z-buffer can be inaccurate with few bits" ("aliasing on depth", z-buffer tearing). Which depth
 is stored matters as much as how many bits store it:
 
 - **view distance** ``z`` (> 0 in front of the eye) is what the seed's pseudo-code compares, but
-  it is *not* affine in screen space (seed 003: interpolate 1/z, not z), so GPUs do not store it;
-- seed 003's ``z' = n + f - f n / z`` (:func:`seed_depth`) is affine in ``1/z`` and therefore
+  it is *not* affine in screen space (Ritschel, *Interpolation and z-buffering*: interpolate 1/z, not z), so GPUs do not store it;
+- Ritschel's *Interpolation and z-buffering* ``z' = n + f - f n / z`` (:func:`seed_depth`) is affine in ``1/z`` and therefore
   affine in screen space, maps ``near -> near`` and ``far -> far`` and keeps the depth order;
 - the **window depth** of OpenGL, :func:`window_depth`, is the same hyperbola rescaled to
   [0, 1]: ``(z' - n) / (f - n) = (f / (f - n)) (1 - n / z)``. This is what CONVENTIONS' ``z_win``
@@ -113,7 +113,7 @@ def window_depth(z_view, near: float, far: float) -> np.ndarray:
 def seed_depth(z, near: float, far: float) -> np.ndarray:
     """Seed 003's ``z' = n + f - f n / z``: the perspective depth in view-distance units.
 
-    ``z'`` is affine in ``1/z``, so it may be interpolated affinely in screen space (seed 003,
+    ``z'`` is affine in ``1/z``, so it may be interpolated affinely in screen space (Ritschel, *Interpolation and z-buffering*,
     eq. 12), unlike ``z`` itself; it maps near to near and far to far and preserves order.
 
     Parameters
@@ -161,7 +161,7 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
 
     One step of the buffer, ``step(d)``, divided by how fast the mapped depth ``d(z)`` moves:
     ``step / |d'(z)|``. Surfaces closer together than this tend to store the same value and
-    z-fight (seed 003's depth aliasing).
+    z-fight (Ritschel's *Interpolation and z-buffering* depth aliasing).
 
     - ``perspective`` (:func:`window_depth`): ``d' = f n / ((f - n) z**2)``, so with a fixed step
       the resolution grows like ``z**2``;
@@ -211,7 +211,7 @@ def fights(z_a, z_b, near: float, far: float, fmt: str, mapping: str = "perspect
 
     When two surfaces at ``z_a != z_b`` store the same depth, the depth test (strictly smaller
     wins, CONVENTIONS) cannot tell which is in front, and rounding of the interpolated depth
-    across the triangles decides pixel by pixel: the stripes of seed 003's "z-buffer tearing".
+    across the triangles decides pixel by pixel: the stripes of Ritschel's *Interpolation and z-buffering* "z-buffer tearing".
     Equal distances are a tie, not a precision effect, and give False; so does NaN.
 
     Parameters

@@ -1,14 +1,14 @@
 """``render``: clip, cull, fill, depth-test and interpolate a list of clip-space triangles.
 
 The pipeline, in order (each stage simulated only where the scene needs it, see
-:mod:`teachraster.plan`):
+:mod:`teachraster.pipeline.render_plan`):
 
-1. homogeneous clipping against near and far (:mod:`teachraster.clipping`);
-2. the viewport transform to window coordinates (:mod:`teachraster.viewport`);
+1. homogeneous clipping against near and far (:mod:`teachraster.pipeline.clipping`);
+2. the viewport transform to window coordinates (:mod:`teachraster.pipeline.viewport`);
 3. back- or front-face culling, if asked;
-4. filling every triangle at once (:mod:`teachraster.batch`, identical pixels to
+4. filling every triangle at once (:mod:`teachraster.pipeline.batched_fill`, identical pixels to
    :func:`teachraster.rasterize`);
-5. the z-buffer (seed 003): a fragment is kept when its stored depth is strictly smaller
+5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its stored depth is strictly smaller
    than the buffer's, so ties keep the earlier triangle; without the depth test later
    triangles overwrite earlier ones;
 6. perspective-correct interpolation of the attributes, at the visible pixels only.
@@ -20,14 +20,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .batch import rasterize_batch, snapped_area2
+from ..core.fill import CULL
+from ..core.interpolation import MODES, blend_each, weights_per_row
+from ..core.snapping import SUBPIXEL_BITS, check_bits
+from ..core.validate import as_finite, as_size, check_choice
+from .batched_fill import rasterize_batch, snapped_area2
 from .clipping import CLIPPED, DROPPED, INSIDE, classify, clip_triangles
 from .depth import DEPTH_FORMATS, quantize
-from .interpolation import MODES, blend_each, weights_per_row
-from .plan import Effect, Plan, parse_force
-from .rasterize import CULL, _check_choice, _check_size
-from .snapping import SUBPIXEL_BITS, check_bits
-from .triangle import as_finite
+from .render_plan import Effect, Plan, parse_force
 from .viewport import to_window
 
 
@@ -156,7 +156,7 @@ def render(
     interpolation : {"perspective", "affine"}
         Perspective-correct attributes (GLSL ``smooth``, the default) or plain
         screen-space ones (``noperspective``), to show the difference.
-    force : None, "all" or names from ``teachraster.plan.FORCEABLE``
+    force : None, "all" or names from ``teachraster.pipeline.render_plan.FORCEABLE``
         Run these effects everywhere, even where the plan says they change nothing.
     trace : bool
         Record every stage (see :class:`RenderTrace`).
@@ -176,11 +176,11 @@ def render(
     no triangle crosses the near or far plane: nothing to clip
     """
     clip, attrs = _check_clip(clip, attrs)
-    width, height = _check_size("width", width), _check_size("height", height)
-    _check_choice("cull", cull, CULL)
-    _check_choice("depth_format", depth_format, DEPTH_FORMATS)
-    _check_choice("interpolation", interpolation, MODES)
-    check_bits(subpixel_bits)
+    width, height = as_size("width", width), as_size("height", height)
+    check_choice("cull", cull, CULL)
+    check_choice("depth_format", depth_format, DEPTH_FORMATS)
+    check_choice("interpolation", interpolation, MODES)
+    subpixel_bits = check_bits(subpixel_bits)
     forced = parse_force(force)
     n_in, k = len(clip), attrs.shape[2]
     effects = []
@@ -344,7 +344,7 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     tri = frags.tri[shade]
     weights = frags.lam[shade].copy()
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
-    if persp.any():  # f/w and 1/w are affine in screen space (seed 000, eq. 19)
+    if persp.any():  # f/w and 1/w are affine in screen space (Ek, *Triangles and Perspective Correct Interpolation*, eq. 19)
         weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
     return blend_each(weights, attrs[tri])
 

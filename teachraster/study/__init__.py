@@ -1,0 +1,9 @@
+"""The study: what accuracy costs, the hard cases, and the check against a real GPU.
+
+Lessons 06 and 07 in code. Nothing here is imported by ``import teachraster``:
+
+- :mod:`.precision`: cheaper and costlier arithmetic for the same half-plane test;
+- :mod:`.bench`: the accuracy-vs-time study (``python -m teachraster.study.bench``);
+- :mod:`.hardcases`: the catalogue of named hard cases, each with a naive variant;
+- :mod:`.opengl`: the same triangles through OpenGL (Mesa's llvmpipe), for cross-checks.
+"""
