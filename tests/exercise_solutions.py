@@ -93,3 +93,114 @@ CORRECT = {
     "depth_test": depth_test,
     "clip_near": clip_near,
 }
+
+
+# -- typical mistakes (issue 10), each with words its explanation must contain -----------------
+def _covers_with(rule, orient=True, dtype=float, offset=0.0):
+    """A covers() built from a tie rule ``rule(e, a, b) -> bool`` for E == 0 on edge a→b."""
+
+    def fn(xy, p):
+        v = [np.asarray(q, dtype=dtype) for q in xy]
+        p = np.asarray(p, dtype=dtype) - dtype(offset)
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return False
+        if area < 0 and orient:
+            v = [v[0], v[2], v[1]]
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = edge_function(a, b, p)
+            if e < 0 or (e == 0 and not rule(a, b)):
+                return False
+        return True
+
+    return fn
+
+
+def _fill_from(covers_fn, offset=0.0):
+    def fn(xy, width, height):
+        out = np.zeros((height, width), dtype=bool)
+        for i in range(height):
+            for j in range(width):
+                out[i, j] = covers_fn(xy, (j + offset, i + offset))
+        return out
+
+    return fn
+
+
+both_own = _covers_with(lambda a, b: True)
+none_own = _covers_with(lambda a, b: False)
+one_winding = _covers_with(_owns, orient=False)
+bottom_right = _covers_with(lambda a, b: not _owns(a, b))
+covers_float32 = _covers_with(_owns, dtype=np.float32)
+fill_at_corners = _fill_from(covers, offset=0.0)
+
+
+def split_without_u1(v):
+    (u1, v1), (_, v2), (u3, v3) = v
+    return (v2 - v1) / (v3 - v1) * (u3 - u1)
+
+
+def barycentric_absolute_float32(xy, p):
+    (ax, ay), (bx, by), (cx, cy) = np.asarray(xy, dtype=np.float32)
+    x, y = np.asarray(p, dtype=np.float32)
+    # each weight as a plane A x + B y + C in absolute coordinates
+    planes = [
+        (by - cy, cx - bx, bx * cy - cx * by),
+        (cy - ay, ax - cx, cx * ay - ax * cy),
+        (ay - by, bx - ax, ax * by - bx * ay),
+    ]
+    area = planes[0][2] + planes[1][2] + planes[2][2]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.array([(A * x + B * y + C) / area for A, B, C in planes], dtype=np.float64)
+
+
+def perspective_affine(lam, w, f):
+    return float(np.dot(lam, f))
+
+
+def perspective_times_w(lam, w, f):
+    lam, w, f = (np.asarray(x, dtype=float) for x in (lam, w, f))
+    q = lam * w
+    return float(q @ f / q.sum())
+
+
+def depth_less_equal(incoming, stored):
+    return incoming <= stored
+
+
+def clip_nothing(v):
+    return np.asarray(v, dtype=float)
+
+
+def clip_after_divide(v):
+    """Tests z/w >= -1 after the divide (wrong for w < 0) and cuts there."""
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            da, db = a[2] / a[3] + 1, b[2] / b[3] + 1
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0):
+                out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+
+#: (exercise, wrong function, words the explanation of its first failure must contain)
+MISTAKES = {
+    "both edges own a centre": ("covers", both_own, "covered twice"),
+    "no edge owns a centre": ("covers", none_own, "covered by neither"),
+    "one winding only": ("covers", one_winding, "handle both windings"),
+    "bottom-right rule": ("covers", bottom_right, "bottom-right rule"),
+    "sampling at integer coordinates": ("fill", fill_at_corners, "pixel corners"),
+    "float32 edge functions": ("covers", covers_float32, "float32"),
+    "u4 without its offset": ("split_point", split_without_u1, "did you add u1?"),
+    "absolute float32 barycentrics": ("barycentric", barycentric_absolute_float32, "cancels"),
+    "affine instead of perspective": ("perspective", perspective_affine, "the affine Σλf"),
+    "multiplying by w": ("perspective", perspective_times_w, "multiplied by w"),
+    "<= in the depth test": ("depth_test", depth_less_equal, "use <, not <="),
+    "no clipping": ("clip_near", clip_nothing, "unclipped"),
+    "testing after the divide": ("clip_near", clip_after_divide, "before dividing by w"),
+}

@@ -36,11 +36,6 @@ class CoverageCase:
     size: tuple[int, int]
     mesh: bool = False
 
-    @property
-    def far(self) -> float:
-        """Distance of the window from the image origin, in pixels."""
-        return float(np.hypot(*self.origin))
-
 
 def winding(xy: np.ndarray) -> str:
     """Words for the winding of a triangle as seen on screen (y down)."""
@@ -119,6 +114,16 @@ def random_coverage(zero_area: bool = True, far: bool = True) -> list[CoverageCa
             n += 1
             label = f"random {n}: {winding(xy)}, on the 1/256 grid, {offset} px from the origin"
             out.append(CoverageCase(label, xy[None], (offset, offset), (WINDOW, WINDOW)))
+    for clockwise in (True, False) if far else ():
+        # vertices 1/256 px to the right of pixel centres: centres lie just beside the edges,
+        # which float32 (1/128 px apart here, ties to even) puts exactly on them
+        xy = _random_triangle(rng, "centres", clockwise) + (100_000 + 1 / 256, 100_000)
+        n += 1
+        label = (
+            f"random {n}: {winding(xy)}, vertices 1/256 px right of pixel centres, "
+            "100000 px from the origin"
+        )
+        out.append(CoverageCase(label, xy[None], (100_000, 100_000), (WINDOW, WINDOW)))
     return out
 
 

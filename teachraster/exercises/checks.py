@@ -87,7 +87,7 @@ def check_covers(fn) -> Report:
 
 def check_fill(fn) -> Report:
     # fill draws the image from the origin: cases far from it have no pixel to show
-    cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.far == 0]
+    cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
     return _check_coverage("fill", fn, cases, _fill_body)
 
 
@@ -160,20 +160,27 @@ def _draw_bary(ax, case, got):
 
 
 def _draw_persp(ax, case, got):
-    from .drawing import draw_values
+    from .drawing import draw_bars
 
     lam, w, f = case[1]
-    labels = ["perspective", "affine Σλf"]
+    labels = ["perspective-\ncorrect", "affine Σλf"]
     values = [case[2], float(lam @ f)]
-    return draw_values(ax, labels, values, None if got is None else [got, float(lam @ f)])
+    if got is not None:
+        labels.append("yours")
+        values.append(got)
+    wrong = [False, False, got is not None and not close(got, case[2])]
+    return draw_bars(ax, labels, values, wrong[: len(values)])
 
 
 def _draw_depth(ax, case, got):
-    from .drawing import draw_values
+    from .drawing import draw_bars
 
     a, b = case[1]
-    yours = None if got is None else [a, b, float(got)]
-    return draw_values(ax, ["incoming", "stored", "passes"], [a, b, float(case[2])], yours)
+    passes = "passes" if case[2] else "fails"
+    artists = draw_bars(ax, ["incoming", "stored"], [a, b], [False, False])
+    yours = "" if got is None else f", yours {'passes' if got else 'fails'}"
+    artists.append(ax.set_xlabel(f"depth (smaller is nearer): it {passes}{yours}"))
+    return artists
 
 
 def _draw_clip(ax, case, got):

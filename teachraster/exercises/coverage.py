@@ -105,11 +105,6 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
         f"centre {point(c)} is strictly inside all three edges (E = "
         f"{', '.join(fmt(v) for v in e)} px², all on the interior side): it is covered; {yours}"
     )
-    if area2(xy) < 0:
-        text += (
-            f" — this triangle runs counter-clockwise on screen (E(v1, v2, v3) = "
-            f"{fmt(area2(xy))} < 0): handle both windings"
-        )
     return text, k
 
 
@@ -148,13 +143,18 @@ def diagnose(case: CoverageCase, xy: np.ndarray, got: np.ndarray, expected: np.n
             f"(E(v1, v2, v3) = {fmt(area2(xy))} < 0): handle both windings (swap two vertices, "
             "or accept all-negative edge functions)"
         )
-    for name, cov in _rule_variants(case, xy).items():
-        if not np.array_equal(cov, expected) and np.array_equal(cov, got):
-            return MISTAKES[name]
-    if case.far > 1e4:
-        ulp = float(np.spacing(np.float32(case.far)))
+    matches = [
+        MISTAKES[name]
+        for name, cov in _rule_variants(case, xy).items()
+        if not np.array_equal(cov, expected) and np.array_equal(cov, got)
+    ]
+    if matches:  # several wrong rules can give the same pixels on one triangle: name each
+        return "; or ".join(matches)
+    far = max(case.origin)
+    if far > 1e4:
+        ulp = float(np.spacing(np.float32(far)))
         return (
-            f"this triangle lies {fmt(case.far)} px from the origin, where float32 numbers are "
+            f"this triangle lies {fmt(far)} px from the origin, where float32 numbers are "
             f"{fmt(ulp)} px apart and cannot hold the 1/256-px grid: compute the edge functions "
             "in float64 (or exact integers), relative to a vertex"
         )
@@ -165,9 +165,15 @@ def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray
     """The failure of triangle ``k`` of ``case`` (got_all, expected_all: (n, h, w) bool)."""
     xy = case.triangles[k]
     got, expected = got_all[k], expected_all[k]
+    # the example pixel: preferably one exactly on a single edge (the top-left rule's case)
+    centres = [
+        np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5])
+        for i, j in np.argwhere(got != expected)
+    ]
     wrong = np.argwhere(got != expected)
-    i, j = wrong[0]
-    c = np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5])
+    on_one_edge = [n for n, c in enumerate(centres) if (_values(xy, c) == 0).sum() == 1]
+    n = on_one_edge[0] if on_one_edge and area2(xy) != 0 else 0
+    (i, j), c = wrong[n], centres[n]
     text, edge = explain_pixel(xy, c, bool(expected[i, j]))
     if case.mesh:
         times = int(got_all[:, i, j].sum())

@@ -64,6 +64,15 @@ def draw_values(ax, labels, expected, got):
     return artists
 
 
+def draw_bars(ax, labels, values, wrong):
+    """One bar per value; ``wrong[k]`` marks the student's bar that is wrong in red."""
+    colours = [STATE_COLOURS[3] if bad else "#c8c8c8" for bad in wrong]
+    artists = list(ax.bar(np.arange(len(values)), values, color=colours))
+    ax.set_xticks(np.arange(len(values)), labels)
+    ax.axhline(0, color="black", linewidth=0.5)
+    return artists
+
+
 def draw_split(ax, v, expected, got):
     """The sorted triangle, the line v = v2.y, the true v4 and the student's."""
     ring = np.vstack([v, v[:1]])

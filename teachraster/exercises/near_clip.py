@@ -57,23 +57,29 @@ def explain_clip(args, expected, got) -> str:
     got = np.asarray(got, dtype=float).reshape(-1, 4)
     d = v[:, 2] + v[:, 3]  # signed distance to the near plane
     outside = [k for k in range(3) if d[k] < 0]
-    if got.shape == v.shape and np.allclose(got, v) and outside:
-        k = outside[0]
-        return (
-            f"you returned the triangle unclipped: v{k + 1} = {vec(v[k])} has z + w = "
-            f"{num(d[k])} < 0, it is behind the near plane z = −w"
-        )
     with np.errstate(divide="ignore", invalid="ignore"):
-        after = v[:, 2] / v[:, 3] >= -1
+        after = v[:, 2] / v[:, 3] >= -1  # what a test after the divide says
     flipped = [k for k in range(3) if after[k] != (d[k] >= 0)]
+    divide = ""
     if flipped:
         k = flipped[0]
-        return (
+        divide = (
             f"v{k + 1} = {vec(v[k])} has w = {num(v[k, 3])} < 0: after the divide its z/w = "
             f"{num(v[k, 2] / v[k, 3])} looks {'inside' if after[k] else 'outside'}, but "
             f"z + w = {num(d[k])} says it is {'inside' if d[k] >= 0 else 'behind the near plane'}: "
             "test z + w >= 0 in clip space, before dividing by w"
         )
+    if got.shape == v.shape and np.allclose(got, v) and outside:
+        k = outside[0]
+        text = (
+            f"you returned the triangle unclipped: v{k + 1} = {vec(v[k])} has z + w = "
+            f"{num(d[k])} < 0, it is behind the near plane z = −w"
+        )
+        if set(outside) <= set(flipped):  # a test after the divide would also keep them all
+            text += f". If you tested after the divide: {divide}"
+        return text
+    if divide:
+        return divide
     scale = max(1.0, float(np.abs(v).max()))
     bad = [p for p in got if p[2] + p[3] < -TOL * scale]
     if bad:

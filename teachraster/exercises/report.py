@@ -86,7 +86,9 @@ class Report:
         """
         if self.failures and self.failures[0].draw is not None:
             artists = self.failures[0].draw(ax)
-            ax.set_title(f"{self.exercise}: {self.failures[0].case}", fontsize="small")
+            case = self.failures[0].case
+            case = case if len(case) <= 48 else case[:45] + "..."
+            ax.set_title(f"{self.exercise}: {case}", fontsize="small")
         elif self.example is not None:
             artists = self.example(ax)
             state = "not implemented yet" if self.not_implemented else "passes"

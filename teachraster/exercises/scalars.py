@@ -31,6 +31,8 @@ def num(x: float, other: float | None = None) -> str:
     x = float(x)
     if not np.isfinite(x):
         return repr(x)
+    if 0 < abs(x) < 1e-3:  # tiny values (w next to the eye plane) keep their digits
+        return f"{x:.3g}"
     for digits in (3, 6, 9, 12, 15, 17):
         text = f"{x:.{digits}f}"
         if other is None or not np.isfinite(other) or text != f"{float(other):.{digits}f}":
@@ -94,7 +96,8 @@ def explain_edge_function(args, expected, got) -> str:
 
 # -- split_point ------------------------------------------------------------------------------
 def split_point_cases():
-    out = []
+    v = np.array([[2.5, 1.5], [9.5, 4.5], [4.5, 12.5]])  # issue 10's example
+    out = [("a long edge to the left", (v,), split_point(v))]
     for label, xy in proper_triangles():
         v = sorted_by_y(xy)
         if v[0, 1] != v[2, 1]:
@@ -151,6 +154,12 @@ def explain_barycentric(args, expected, got) -> str:
             f"the origin float32 numbers are {num(float(np.spacing(np.float32(far))))} px apart, "
             "and a plane A·x + B·y + C evaluated in absolute coordinates cancels catastrophically: "
             "compute differences p − v to a vertex first, in float64"
+        )
+    error = float(np.abs(got - expected).max())
+    if error < 1e-5:
+        return (
+            f"{head}; {right}: they differ by {error:.1g}, about float32's rounding "
+            "(6e-8 relative): compute in float64"
         )
     if not close(got.sum(), 1.0):
         return f"{head}, which sum to {num(got.sum())}; {right} and always sum to 1"
