@@ -43,7 +43,11 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
         i, j = pixel
         artists += ax.plot(x0 + j + 0.5, y0 + i + 0.5, "o", mfc="none", mec="black", ms=9)
     handles = [Patch(color=STATE_COLOURS[s], label=STATE_NAMES[s]) for s in (1, 2, 3)]
-    artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper right"))
+    # outside the axes, to the right: the legend must never hide a pixel
+    legend = ax.legend(
+        handles=handles, fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)
+    )
+    artists.append(legend)
     ax.set_xlim(x0, x0 + w)
     ax.set_ylim(y0 + h, y0)
     ax.set_aspect("equal")
