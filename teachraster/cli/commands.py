@@ -36,6 +36,8 @@ from pathlib import Path
 
 import numpy as np
 
+from . import course
+
 #: Output formats by suffix: still image or animation.
 STILL, ANIMATED = (".png",), (".gif", ".mp4")
 #: Default resolutions: PNG for slides (crisp when scaled), animations small enough to embed.
@@ -356,6 +358,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="List the built-in scenes and hard cases.",
     )
     p.set_defaults(parser=p)
+    course.add_parsers(sub)  # lessons, student-version (teachraster/cli/course.py)
     return parser
 
 
@@ -823,6 +826,7 @@ COMMANDS = {
     "scene": cmd_scene,
     "case": cmd_case,
     "list": cmd_list,
+    **course.COMMANDS,
 }
 
 
