@@ -136,6 +136,11 @@ covers_float32 = _covers_with(_owns, dtype=np.float32)
 fill_at_corners = _fill_from(covers, offset=0.0)
 
 
+def edge_function_float32(a, b, p):
+    a, b, p = (np.asarray(x, dtype=np.float32) for x in (a, b, p))
+    return float((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]))
+
+
 def split_without_u1(v):
     (u1, v1), (_, v2), (u3, v3) = v
     return (v2 - v1) / (v3 - v1) * (u3 - u1)
@@ -196,6 +201,7 @@ MISTAKES = {
     "bottom-right rule": ("covers", bottom_right, "bottom-right rule"),
     "sampling at integer coordinates": ("fill", fill_at_corners, "pixel corners"),
     "float32 edge functions": ("covers", covers_float32, "float32"),
+    "float32 edge function values": ("edge_function", edge_function_float32, "float32"),
     "u4 without its offset": ("split_point", split_without_u1, "did you add u1?"),
     "absolute float32 barycentrics": ("barycentric", barycentric_absolute_float32, "cancels"),
     "affine instead of perspective": ("perspective", perspective_affine, "the affine Σλf"),

@@ -9,14 +9,14 @@ import numpy as np
 from . import coverage, near_clip, scalars
 from .cases import CoverageCase, catalogue_coverage, random_coverage
 from .report import Failure, Report
-from .running import run_case
+from .running import WrongAnswerType, run_case
 from .tolerance import all_close, close, same_polygon
 
 
 def _as_bool(value) -> bool:
     arr = np.asarray(value)
     if arr.size != 1 or arr.dtype.kind not in "bui":
-        raise TypeError(f"returned {value!r}, not a bool")
+        raise WrongAnswerType(f"returned {value!r:.60}, not a bool")
     return bool(arr.item())
 
 
@@ -51,7 +51,7 @@ def _fill_body(fn, case: CoverageCase):
         for xy in case.triangles:
             got = np.asarray(fn(xy.copy(), w, h))
             if got.shape != (h, w) or got.dtype.kind not in "bui":
-                raise TypeError(
+                raise WrongAnswerType(
                     f"returned a {got.dtype} array of shape {got.shape}; expected a bool array "
                     f"of shape (height, width) = {(h, w)}"
                 )
@@ -69,9 +69,7 @@ def _check_coverage(name: str, fn, cases: list[CoverageCase], body) -> Report:
         if outcome.not_implemented:
             return Report(name, [], len(cases), True, coverage.example_drawing(cases[0]))
         if outcome.error:
-            failures.append(
-                Failure(case.label, f"your function raised {outcome.error}", expected, None)
-            )
+            failures.append(Failure(case.label, outcome.error, expected, None))
             continue
         for k in range(len(case.triangles)):
             if not np.array_equal(outcome.value[k], expected[k]):
@@ -100,7 +98,7 @@ def _check_values(name, fn, cases, convert, same, explain, draw) -> Report:
         if outcome.not_implemented:
             return Report(name, [], len(cases), True, _drawer(draw, cases[0], None))
         if outcome.error:
-            failures.append(Failure(label, f"your function raised {outcome.error}", expected, None))
+            failures.append(Failure(label, outcome.error, expected, None))
         elif not same(outcome.value, expected):
             text = explain(args, expected, outcome.value)
             case = (label, args, expected)
@@ -117,26 +115,33 @@ def _drawer(draw, case, got):
     return drawing
 
 
+def _numbers(value) -> np.ndarray:
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise WrongAnswerType(f"returned {value!r:.60}, not numbers") from None
+
+
 def _float(value) -> float:
-    arr = np.asarray(value, dtype=float)
+    arr = _numbers(value)
     if arr.size != 1:
-        raise TypeError(f"returned an array of shape {arr.shape}, not one number")
+        raise WrongAnswerType(f"returned {value!r:.60}, not one number")
     return float(arr.item())
 
 
 def _vector3(value) -> np.ndarray:
-    arr = np.asarray(value, dtype=float)
+    arr = _numbers(value)
     if arr.shape != (3,):
-        raise TypeError(f"returned shape {arr.shape}; expected (3,)")
+        raise WrongAnswerType(f"returned {value!r:.60}; expected 3 weights, shape (3,)")
     return arr
 
 
 def _polygon(value) -> np.ndarray:
-    arr = np.asarray(value, dtype=float)
+    arr = _numbers(value)
     if arr.size == 0:
         return np.zeros((0, 4))
     if arr.ndim != 2 or arr.shape[1] != 4:
-        raise TypeError(f"returned shape {arr.shape}; expected (n, 4)")
+        raise WrongAnswerType(f"returned {value!r:.60}; expected an (n, 4) array of vertices")
     return arr
 
 

@@ -171,8 +171,11 @@ def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray
         for i, j in np.argwhere(got != expected)
     ]
     wrong = np.argwhere(got != expected)
-    on_one_edge = [n for n, c in enumerate(centres) if (_values(xy, c) == 0).sum() == 1]
-    n = on_one_edge[0] if on_one_edge and area2(xy) != 0 else 0
+    mistake = diagnose(case, xy, got, expected)
+    zeros = [int((_values(xy, c) == 0).sum()) for c in centres] if area2(xy) else [0]
+    # a winding mistake shows best inside the triangle, a tie rule on a single edge
+    want = 0 if mistake.startswith("you covered nothing") else 1
+    n = zeros.index(want) if want in zeros else 0
     (i, j), c = wrong[n], centres[n]
     text, edge = explain_pixel(xy, c, bool(expected[i, j]))
     if case.mesh:
@@ -182,7 +185,6 @@ def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray
                 f"; over this mesh your function covers {point(c)} {times} times, a watertight "
                 "mesh must cover it exactly once"
             )
-    mistake = diagnose(case, xy, got, expected)
     n_missing = int((expected & ~got).sum())
     n_extra = int((got & ~expected).sum())
     counts = f" ({n_missing} pixel(s) missing, {n_extra} extra)"

@@ -59,7 +59,8 @@ def explain_clip(args, expected, got) -> str:
     outside = [k for k in range(3) if d[k] < 0]
     with np.errstate(divide="ignore", invalid="ignore"):
         after = v[:, 2] / v[:, 3] >= -1  # what a test after the divide says
-    flipped = [k for k in range(3) if after[k] != (d[k] >= 0)]
+    # a vertex the divide misclassifies, and the student's polygon agrees with the divide
+    flipped = [k for k in range(3) if after[k] != (d[k] >= 0) and _has(got, v[k]) == bool(after[k])]
     divide = ""
     if flipped:
         k = flipped[0]
@@ -95,7 +96,7 @@ def explain_clip(args, expected, got) -> str:
         if (d[i] >= 0) != (d[j] >= 0):
             t = d[i] / (d[i] - d[j])
             cuts.append(
-                f"edge v{i + 1}→v{j + 1} crosses it at t = d{i + 1}/(d{i + 1} − d{j + 1}) = "
+                f"edge v{i + 1}→v{j + 1} crosses the near plane at t = d{i + 1}/(d{i + 1} − d{j + 1}) = "
                 f"{num(t)} (d = z + w), at {vec(v[i] + t * (v[j] - v[i]))}"
             )
     where = "; ".join(cuts) if cuts else "no edge crosses the near plane"
@@ -103,6 +104,10 @@ def explain_clip(args, expected, got) -> str:
         f"your polygon {_poly(got)} should be {_poly(expected)}: {where}. Interpolate the new "
         "vertices in clip space, before the divide, and keep the inside vertices in order"
     )
+
+
+def _has(poly: np.ndarray, vertex: np.ndarray) -> bool:
+    return any(np.allclose(p, vertex, rtol=TOL, atol=TOL) for p in poly)
 
 
 def _poly(p: np.ndarray) -> str:

@@ -25,6 +25,10 @@ class CaseTimeout(Exception):
     """A case ran past its time limit."""
 
 
+class WrongAnswerType(TypeError):
+    """The function returned something of the wrong type or shape (the message says what)."""
+
+
 @dataclass(frozen=True)
 class Outcome:
     """What running one case gave: a value, or why there is none.
@@ -74,7 +78,7 @@ def run_case(body: Callable[[], Any], limit: float | None = None) -> Outcome:
     """Run ``body`` (which calls the student's function) and capture what happens.
 
     >>> run_case(lambda: 1 / 0).error
-    'ZeroDivisionError: division by zero'
+    'your function raised ZeroDivisionError: division by zero'
     >>> run_case(lambda: 2).value
     2
     """
@@ -85,6 +89,8 @@ def run_case(body: Callable[[], Any], limit: float | None = None) -> Outcome:
     except NotImplementedError:
         return Outcome(not_implemented=True)
     except CaseTimeout as exc:
-        return Outcome(error=f"stopped: it {exc}")
+        return Outcome(error=f"your function was stopped: it {exc}")
+    except WrongAnswerType as exc:
+        return Outcome(error=f"your function {exc}")
     except Exception as exc:  # a student's bug of any kind is a failed case, never a crash
-        return Outcome(error=last_line(exc))
+        return Outcome(error=f"your function raised {last_line(exc)}")

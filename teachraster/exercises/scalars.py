@@ -25,20 +25,28 @@ from .tolerance import all_close, close
 def num(x: float, other: float | None = None) -> str:
     """``x`` with 3 decimals, or more when needed to tell it from ``other``.
 
-    >>> num(3.04545), num(1.0000001, 1.0), num(2.0)
-    ('3.045', '1.0000001', '2')
+    >>> num(3.04545), num(1.0000001, 1.0), num(2.0), num(100009.73828125)
+    ('3.045', '1.0000001', '2', '100009.73828125')
     """
     x = float(x)
     if not np.isfinite(x):
         return repr(x)
     if 0 < abs(x) < 1e-3:  # tiny values (w next to the eye plane) keep their digits
         return f"{x:.3g}"
+    if other is None and (x * 256).is_integer() and abs(x) < 2**40:
+        # on the 1/256 grid (positions): exactly, so that the student can reproduce the case
+        return f"{x:.8f}".rstrip("0").rstrip(".")
     for digits in (3, 6, 9, 12, 15, 17):
         text = f"{x:.{digits}f}"
         if other is None or not np.isfinite(other) or text != f"{float(other):.{digits}f}":
             break
     text = text.rstrip("0").rstrip(".")
     return "0" if text in ("", "-0") else text
+
+
+def factor(x: float) -> str:
+    """A number to multiply by: negative ones in parentheses."""
+    return f"({num(x)})" if x < 0 else num(x)
 
 
 def vec(v, other=None) -> str:
@@ -89,7 +97,8 @@ def explain_edge_function(args, expected, got) -> str:
         )
     return (
         f"for {where}, E = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) = "
-        f"{num(b[0] - a[0])}·{num(p[1] - a[1])} − {num(b[1] - a[1])}·{num(p[0] - a[0])} = "
+        f"{factor(b[0] - a[0])}·{factor(p[1] - a[1])} − {factor(b[1] - a[1])}·"
+        f"{factor(p[0] - a[0])} = "
         f"{num(expected, got)}; yours is {num(got, expected)}." + hint
     )
 
