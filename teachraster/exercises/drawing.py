@@ -95,19 +95,21 @@ def draw_split(ax, v, expected, got):
 
 
 def draw_clip(ax, v, expected, got):
-    """Triangle and polygons in the (z, w) plane, with the near plane z = -w."""
-    artists = []
-    ring = np.vstack([v, v[:1]])
-    artists += ax.plot(ring[:, 2], ring[:, 3], color="black", linewidth=1, label="triangle")
-    lim = max(1.0, float(np.abs(v[:, 2:]).max())) * 1.1
-    artists += ax.plot([-lim, lim], [lim, -lim], color=EDGE_COLOUR, linewidth=2, label="z = -w")
+    """Triangle and polygons over (x, z + w): the near plane is the line z + w = 0."""
+
+    def ring(p):
+        p = np.vstack([p, p[:1]])
+        return p[:, 0], p[:, 2] + p[:, 3]
+
+    artists = list(ax.plot(*ring(v), color="black", linewidth=1, label="triangle"))
+    artists.append(ax.axhline(0, color=EDGE_COLOUR, linewidth=2, label="near plane z + w = 0"))
     if len(expected):
-        e = np.vstack([expected, expected[:1]])
-        artists += ax.plot(e[:, 2], e[:, 3], "o-", color="#2b7bba", label="clipped (expected)")
+        artists += ax.plot(*ring(expected), "o-", color="#2b7bba", label="clipped (expected)")
     if got is not None and len(got):
-        g = np.vstack([got, got[:1]])
-        artists += ax.plot(g[:, 2], g[:, 3], "x--", color=STATE_COLOURS[3], label="yours")
-    ax.set_xlabel("z")
-    ax.set_ylabel("w")
-    artists.append(ax.legend(fontsize="x-small"))
+        artists += ax.plot(*ring(got), "x--", color=STATE_COLOURS[3], label="yours")
+    for k, p in enumerate(v):
+        artists.append(ax.annotate(f"v{k + 1}", (p[0], p[2] + p[3]), fontsize="x-small"))
+    ax.set_xlabel("x (clip space)")
+    ax.set_ylabel("z + w (inside ≥ 0)")
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     return artists
