@@ -210,3 +210,45 @@ MISTAKES = {
     "no clipping": ("clip_near", clip_nothing, "unclipped"),
     "testing after the divide": ("clip_near", clip_after_divide, "before dividing by w"),
 }
+
+
+# -- other correct solutions: a different algorithm, order or form must pass as well -----------
+def fill_vectorised(xy, width, height):
+    """Half-planes over the whole image at once, in exact integers (1/512-px units)."""
+    v = np.rint(np.asarray(xy, dtype=float) * 512).astype(np.int64)
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return np.zeros((height, width), dtype=bool)
+    if area < 0:
+        v = v[[0, 2, 1]]
+    y, x = np.mgrid[0:height, 0:width] * 512 + 256
+    out = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+        out &= (e >= 0) if _owns(a, b) else (e > 0)
+    return out
+
+
+def split_point_from_v3(v):
+    """The same point reached from the other end of the long edge."""
+    (u1, v1), (_, v2), (u3, v3) = v
+    return u3 - (v3 - v2) / (v3 - v1) * (u3 - u1)
+
+
+def clip_near_rotated_with_duplicates(v):
+    """Starts at v2 and repeats its first vertex (allowed: consecutive duplicates are removed)."""
+    poly = clip_near(np.roll(np.asarray(v, dtype=float), -1, axis=0))
+    return np.vstack([poly[:1], poly])
+
+
+def depth_test_numpy(incoming, stored):
+    return np.less(incoming, stored)
+
+
+ALTERNATIVES = {
+    "fill": fill_vectorised,
+    "split_point": split_point_from_v3,
+    "clip_near": clip_near_rotated_with_duplicates,
+    "depth_test": depth_test_numpy,
+}

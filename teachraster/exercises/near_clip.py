@@ -30,15 +30,16 @@ def clip_cases():
             if near_only(v):
                 out.append((name, (np.array(v, dtype=float),)))
     rng = np.random.default_rng(SEED + 4)
-    shapes = {"in front": (0.5, 3.0), "crossing": (-2.0, 3.0), "behind": (-3.0, -0.5)}
-    for kind, (lo, hi) in shapes.items():
-        for _ in range(6):
-            w = np.round(rng.uniform(lo, hi, 3), 3)
-            z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
-            xy = np.round(rng.uniform(-2, 2, (3, 2)), 3)
-            v = np.column_stack([xy, z, w])
-            if near_only(v):
-                out.append((f"random {kind} triangle", (v,)))
+    counts = [0, 0, 0, 0]  # random cases by how many vertices lie behind the plane
+    while min(counts[:3]) < 5:
+        lo, hi = ((0.5, 3.0), (-2.0, 3.0), (-3.0, -0.5))[rng.integers(0, 3)]
+        w = np.round(rng.uniform(lo, hi, 3), 3)
+        z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
+        v = np.column_stack([np.round(rng.uniform(-2, 2, (3, 2)), 3), z, w])
+        behind = int((z + w < 0).sum())
+        if near_only(v) and counts[behind] < 5:
+            counts[behind] += 1
+            out.append((f"random, {_BEHIND[behind]} the near plane", (v,)))
     # one vertex exactly on the plane, the others on either side
     v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
     out.append(("a vertex on the near plane", (v,)))
@@ -50,6 +51,9 @@ def clip_cases():
         )
         for label, a in out
     ]
+
+
+_BEHIND = ("no vertex behind", "one vertex behind", "two vertices behind", "all behind")
 
 
 def explain_clip(args, expected, got) -> str:
