@@ -62,8 +62,9 @@ class Report:
     def __str__(self) -> str:
         if self.not_implemented:
             return (
-                f"{self.exercise}: not implemented yet (replace `raise NotImplementedError` "
-                "with your code, then run this cell again)"
+                f"{self.exercise}: not implemented yet (it, or a function it calls, raises "
+                "NotImplementedError: replace `raise NotImplementedError()` with your code, "
+                "then run this cell again)"
             )
         if self.passed:
             return f"{self.exercise}: all {self.n_cases} cases pass"
