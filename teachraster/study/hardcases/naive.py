@@ -92,7 +92,7 @@ def naive_window(clip, width: int, height: int) -> np.ndarray:
 
 
 def naive_stepped32(xy, f, x0: float, y0: float, ncols: int, nrows: int) -> np.ndarray:
-    """Seed 002's incremental stepping (start, then ``+= dx`` per pixel) in float32."""
+    """The plane-equation post's (*Triangle Rasterisation II - Interpolation*) incremental stepping (start, then ``+= dx`` per pixel) in float32."""
     plane = plane_equation(xy, f)
     start = np.float32(plane(x0, y0))
     dx, dy = np.float32(plane.dx), np.float32(plane.dy)
