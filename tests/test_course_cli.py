@@ -7,7 +7,7 @@ import json
 import pytest
 
 from teachraster import course
-from teachraster.cli.commands import main
+from teachraster.cli import main
 
 
 def test_the_course_is_found_in_the_checkout():

@@ -120,7 +120,7 @@ def test_exercise_teacher_version_passes_and_draws_every_check(path, monkeypatch
 
 @pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
 def test_exercise_student_version_runs_and_says_not_implemented(path, tmp_path, monkeypatch):
-    from teachraster.cli.commands import main
+    from teachraster.cli import main
 
     monkeypatch.setenv("MPLBACKEND", "Agg")
     assert main(["student-version", str(path), "-o", str(tmp_path)]) == 0
