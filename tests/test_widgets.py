@@ -20,7 +20,7 @@ from teachraster.widgets import (  # noqa: E402
     FillPlayer,
     TexturedPlaneViewer,
     TriangleEditor,
-    _display,  # noqa: E402
+    display,  # noqa: E402
     resolve_backend,
 )
 from teachraster.widgets.textured import plane_clip  # noqa: E402
@@ -241,9 +241,9 @@ def test_style_applies_to_the_widget_only():
 def test_auto_backend_follows_matplotlib(monkeypatch):
     assert resolve_backend("auto") == "image"  # Agg here
     for name in ("module://ipympl.backend_nbagg", "widget", "ipympl"):
-        monkeypatch.setattr(_display.mpl, "rcParams", {"backend": name})
+        monkeypatch.setattr(display.mpl, "rcParams", {"backend": name})
         assert resolve_backend("auto") == "ipympl"
-    monkeypatch.setattr(_display.mpl, "rcParams", {"backend": "module://matplotlib_inline"})
+    monkeypatch.setattr(display.mpl, "rcParams", {"backend": "module://matplotlib_inline"})
     assert resolve_backend("auto") == "image"
     with pytest.raises(ValueError, match="backend"):
         resolve_backend("qt")
