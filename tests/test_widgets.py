@@ -430,3 +430,67 @@ def test_span_player_labels_vertices_in_span_order():
     assert player.view.triangle.labels is labels
     assert [label.get_text() for label in labels] == ["v0", "v1", "v2"]
     player.close()
+
+
+# -- fast ticks --------------------------------------------------------------------------------
+def test_fast_png_decodes_to_the_figure():
+    from PIL import Image
+
+    p = FillPlayer(triangle(), W, H, method="halfplane", backend="image")
+    p.slider.value = 40
+    png = bytes(p.display.widget.value)
+    shown = np.asarray(Image.open(__import__("io").BytesIO(png)).convert("RGBA"))
+    np.testing.assert_array_equal(shown, np.asarray(p.fig.canvas.buffer_rgba()))
+    with pytest.raises(ValueError, match="RGBA"):
+        display.encode_png(np.zeros((2, 2, 3), dtype=np.uint8))
+    p.close()
+
+
+@pytest.mark.parametrize("method", ["span", "halfplane"])
+def test_play_shows_every_step(method):
+    """Each step the Play reaches redraws (blitted) and shows a new picture."""
+    p = FillPlayer(triangle(), W, H, method=method, backend="image")
+    draws, last = p.display.draws, bytes(p.display.widget.value)
+    for k in range(1, min(p.slider.max, 40) + 1):
+        p.slider.value = k  # what the browser's Play does, one value at a time
+        png = bytes(p.display.widget.value)
+        assert png != last, k
+        last = png
+    assert p.display.draws == draws + min(p.slider.max, 40)
+    p.close()
+
+
+def test_player_blits_its_steps_and_keeps_its_fills(player):
+    assert player.display.draw == player.view.redraw
+    player.slider.value = 3
+    assert not player.view.redraw()  # the step was blitted: nothing left to draw fully
+    span = player.fill
+    player.method.value = "halfplane"
+    player.method.value = "span"
+    assert player.fill is span  # toggling back reuses the fill, no new rasterisation
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # raised inside ipympl
+def test_ipympl_sends_one_fast_frame_per_step():
+    pytest.importorskip("ipympl")
+    from io import BytesIO
+
+    from matplotlib.backends.backend_webagg_core import FigureCanvasWebAggCore
+    from PIL import Image
+
+    p = FillPlayer(triangle(), W, H, method="halfplane", backend="ipympl")
+    canvas = p.fig.canvas
+    canvas.syncing_data_url = False  # as once a browser shows it
+    sent = []
+    canvas.send_binary = sent.append
+    for k in range(1, 6):
+        p.slider.value = k
+        assert len(sent) == k  # each step reaches the browser
+    # the fast encoder sends the pixels matplotlib's own would
+    before = canvas._last_buff.copy()
+    p.slider.value = 30
+    frame = np.asarray(Image.open(BytesIO(sent[-1])).convert("RGBA"))
+    canvas._last_buff, canvas._png_is_old = before, True
+    theirs = FigureCanvasWebAggCore.get_diff_image(canvas)
+    np.testing.assert_array_equal(frame, np.asarray(Image.open(BytesIO(theirs)).convert("RGBA")))
+    p.close()

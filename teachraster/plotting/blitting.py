@@ -92,9 +92,7 @@ class LayeredBlit:
                 if image is not None:
                     renderer.draw_image(gc, image[0], image[1], image[2])
                 continue
-            for artist in artists:
-                if artist.get_visible():
-                    self._draw_moving(artist, renderer, gc)
+            self._draw_moving([a for a in artists if a.get_visible()], renderer, gc)
         gc.restore()
         return built
 
@@ -144,22 +142,35 @@ class LayeredBlit:
         return background, layers
 
     # -- moving artists -------------------------------------------------------------------
-    def _draw_moving(self, artist, renderer, gc) -> None:
-        if isinstance(artist, QuadMesh | AxesImage) and artist.get_array() is not None:
-            data = np.asarray(artist.get_array())
-            if data.ndim == 2:
-                self._paint_pixels(artist, data, renderer, gc)
-                return
-        artist.draw(renderer)
+    def _draw_moving(self, artists, renderer, gc) -> None:
+        """Draw in order; runs of per-pixel images on one Axes are merged and painted once."""
+        run: list = []
+        for artist in [*artists, None]:
+            data = _pixel_data(artist)
+            if data is not None and (not run or _same_grid(run[-1], artist, data)):
+                run.append((artist, data))
+                continue
+            if run:
+                self._paint_pixels(run, renderer, gc)
+                run = []
+            if data is not None:
+                run.append((artist, data))
+            elif artist is not None:
+                artist.draw(renderer)
 
-    def _paint_pixels(self, artist, data, renderer, gc) -> None:
-        """Paint a per-pixel image by nearest lookup (no resampling), clipped to its Axes."""
+    def _paint_pixels(self, run, renderer, gc) -> None:
+        """Paint per-pixel images by nearest lookup (no resampling), clipped to their Axes."""
+        artist, data = run[0]
         x0, y0, rows, cols = self._lookup(artist.axes, data.shape)
         if rows.size == 0 or cols.size == 0:
             return
         small = artist.to_rgba(data, alpha=artist.get_alpha(), bytes=True)
-        big = small[rows[:, None], cols[None, :]]
-        renderer.draw_image(gc, x0, y0, big)
+        for above, values in run[1:]:
+            small = _over(above.to_rgba(values, alpha=above.get_alpha(), bytes=True), small)
+        # one 32-bit word per pixel: two 1-D takes are much faster than a 2-D fancy index
+        words = np.ascontiguousarray(small).view(np.uint32)[..., 0]
+        big = words.take(rows, axis=0).take(cols, axis=1)
+        renderer.draw_image(gc, x0, y0, big.view(np.uint8).reshape(*big.shape, 4))
 
     def _lookup(self, ax, shape):
         """Screen pixels of ``ax`` and the data pixel each one's centre falls in."""
@@ -180,6 +191,33 @@ class LayeredBlit:
             rows = np.clip(np.floor(ys).astype(int), 0, shape[0] - 1)
             self._lookups[key] = (c0, r0, rows, cols)
         return self._lookups[key]
+
+
+def _pixel_data(artist):
+    """The 2-D data of a per-pixel image artist (QuadMesh or AxesImage), else None."""
+    if isinstance(artist, QuadMesh | AxesImage) and artist.get_array() is not None:
+        data = np.asarray(artist.get_array())
+        if data.ndim == 2:
+            return data
+    return None
+
+
+def _same_grid(previous, artist, data) -> bool:
+    return previous[0].axes is artist.axes and previous[1].shape == data.shape
+
+
+def _over(top: np.ndarray, bottom: np.ndarray) -> np.ndarray:
+    """Straight-alpha RGBA ``top`` over ``bottom`` (uint8), as Agg blends them."""
+    opacity = top[..., 3]
+    if not ((opacity > 0) & (opacity < 255)).any():  # opaque or clear: just pick
+        return np.where((opacity == 255)[..., None], top, bottom)
+    ta = top[..., 3:4].astype(np.float32) / 255.0
+    ba = bottom[..., 3:4].astype(np.float32) / 255.0
+    alpha = ta + ba * (1.0 - ta)
+    rgb = top[..., :3] * ta + bottom[..., :3] * ba * (1.0 - ta)
+    rgb = np.divide(rgb, alpha, out=np.zeros_like(rgb), where=alpha > 0)
+    out = np.concatenate([rgb, alpha * 255.0], axis=-1)
+    return np.clip(np.rint(out), 0, 255).astype(np.uint8)
 
 
 def _crop(rgba: np.ndarray):
