@@ -595,3 +595,19 @@ def test_artists_update_from_a_step():
     assert pixel.box.get_visible()
     pixel.update(step)  # a row step: no pixel to show
     assert not pixel.box.get_visible()
+
+
+def test_interpolation_view_highlights_the_mode_in_use():
+    view = tp.InterpolationView(make_fill(), "u")
+    assert view.in_use is None
+    view.highlight("affine")
+    affine, persp = view.in_use
+    assert affine.get_visible() and not persp.get_visible()
+    assert view.images[1].image.get_alpha() < 1.0 == view.images[0].image.get_alpha()
+    n = len(view.axes[0].get_children())
+    view.highlight("perspective")
+    assert persp.get_visible() and not affine.get_visible()
+    view.highlight(None)
+    assert not (affine.get_visible() or persp.get_visible())
+    assert view.images[0].image.get_alpha() == view.images[1].image.get_alpha() == 1.0
+    assert len(view.axes[0].get_children()) == n  # the same notes, reused

@@ -1,11 +1,13 @@
 """Composite figures that update in place: stepping through a fill, comparing interpolations.
 
-Both views draw their artists once. Afterwards :meth:`FillView.show_step`,
+The views draw their artists once. Afterwards :meth:`FillView.show_step`,
 :meth:`FillView.set_fill`, :meth:`ComparisonView.update` and :meth:`InterpolationView.update`
 only change those artists' data (``set_data``, ``set_xy``, ``set_text``, ``set_visible``),
 never clear the Axes or add artists, then ask the canvas for a redraw with ``draw_idle``. That
 keeps a step or a vertex drag fast enough for a slider in a notebook, and lets widgets drive
-the views from code.
+the views from code. For the fastest steps, :meth:`FillView.redraw` renders the canvas by
+blitting (:mod:`teachraster.plotting.blitting`): a cached background and still layers, with
+only the moving artists drawn again.
 
 The figures use fixed margins rather than a layout engine: a layout engine would run again at
 every redraw.
@@ -76,6 +78,13 @@ class FillView:
         A legend of the colours, to the right of the grid.
     centres : bool
         Mark the pixel centres (where coverage is decided).
+    caption : bool
+        Write the caption below the Axes (a widget may show it itself instead).
+
+    A step asks the trace for :meth:`~teachraster.core.trace.FillTrace.step` once and hands
+    the Step to the artists; which pixels are filled or rejected, and from which step on
+    the bounding box and the split show, come from the trace's accessors too.
+    :meth:`redraw` renders a step by blitting (only what moves is drawn again).
 
     Examples
     --------
