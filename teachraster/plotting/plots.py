@@ -331,45 +331,21 @@ def plot_triangle(
             ax.add_patch(arrow)
             result.arrows.append(arrow)
     if labels:
-        for _ in range(3):
-            result.labels.append(
-                annotate_near(
-                    ax,
-                    "",
-                    (0, 0),
-                    xytext=(0, 0),
-                    textcoords="offset points",
-                    ha="center",
-                    va="center",
-                    fontsize=fs(0.95),
-                    fontweight="bold",
-                    color=color,
-                    bbox=label_box(),
-                    zorder=6,
-                    annotation_clip=False,
-                )  # fmt: skip
-            )
+        result.labels = _labels(ax, color, fontsize=fs(0.95), fontweight="bold", alpha=0.85)
     if edge_labels:
-        for _ in range(3):
-            result.edge_labels.append(
-                annotate_near(
-                    ax,
-                    "",
-                    (0, 0),
-                    xytext=(0, 0),
-                    textcoords="offset points",
-                    ha="center",
-                    va="center",
-                    fontsize=fs(0.75),
-                    style="italic",
-                    color=color,
-                    bbox=label_box(0.7),
-                    zorder=6,
-                    annotation_clip=False,
-                )  # fmt: skip
-            )
+        result.edge_labels = _labels(ax, color, fontsize=fs(0.75), style="italic", alpha=0.7)
     result.update(tri, edges)
     return result
+
+
+def _labels(ax, color, *, alpha: float, **style) -> list:
+    """Three empty labels in white boxes, placed later by TriangleArtists.update."""
+    return [
+        annotate_near(ax, "", (0, 0), xytext=(0, 0), textcoords="offset points", ha="center",
+                      va="center", color=color, bbox=label_box(alpha), zorder=6,
+                      annotation_clip=False, **style)
+        for _ in range(3)
+    ]  # fmt: skip
 
 
 # -- bounding box ------------------------------------------------------------------------------
