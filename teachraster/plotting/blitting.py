@@ -66,9 +66,6 @@ class LayeredBlit:
         self._cache.clear()
         self._lookups.clear()
 
-    def _moving(self) -> list[Artist]:
-        return [a for kind, arts in self.plan if kind == MOVING for a in arts]
-
     def draw(self, key: Hashable = None) -> bool:
         """Render the figure into its canvas' buffer; True when this needed a full draw.
 
@@ -80,6 +77,8 @@ class LayeredBlit:
         full_key = (key, canvas.get_width_height(), self.fig.dpi)
         built = full_key not in self._cache
         if built:
+            if len(self._cache) >= 8:  # e.g. many canvas sizes: keep memory bounded
+                self._cache.clear()
             self._cache[full_key] = self._build()
         background, layers = self._cache[full_key]
         canvas.restore_region(background)
