@@ -448,15 +448,21 @@ def test_fast_png_decodes_to_the_figure():
 
 @pytest.mark.parametrize("method", ["span", "halfplane"])
 def test_play_shows_every_step(method):
-    """Each step the Play reaches redraws (blitted) and shows a new picture."""
+    """Each step the Play reaches is drawn (blitted) and displayed; every work step (a raster
+    line, a pixel) changes the picture. (Set-up steps such as snap -> winding differ only in
+    the caption and the step label.)"""
     p = FillPlayer(triangle(), W, H, method=method, backend="image")
+    trace = p.trace
     draws, last = p.display.draws, bytes(p.display.widget.value)
-    for k in range(1, min(p.slider.max, 40) + 1):
+    n = min(p.slider.max, trace.first_work_step + 40)
+    for k in range(1, n + 1):
         p.slider.value = k  # what the browser's Play does, one value at a time
         png = bytes(p.display.widget.value)
-        assert png != last, k
+        if trace.first_work_step <= k < trace.interpolation_step:
+            assert png != last, k
+        assert p.caption_text == trace.caption(k)
         last = png
-    assert p.display.draws == draws + min(p.slider.max, 40)
+    assert p.display.draws == draws + n
     p.close()
 
 
@@ -494,3 +500,12 @@ def test_ipympl_sends_one_fast_frame_per_step():
     theirs = FigureCanvasWebAggCore.get_diff_image(canvas)
     np.testing.assert_array_equal(frame, np.asarray(Image.open(BytesIO(theirs)).convert("RGBA")))
     p.close()
+
+
+def test_step_label_follows_the_slider(player):
+    player.slider.value = 0
+    assert player.step_info.value == f"of {len(player.trace) - 1} (snap)"
+    player.method.value = "halfplane"
+    player.slider.value = player.trace.first_work_step
+    assert player.step_info.value == f"of {len(player.trace) - 1} (pixel)"
+    assert player.view.header.get_text() == "Half-planes"  # still: drawn once, not per step

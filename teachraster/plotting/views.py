@@ -80,6 +80,9 @@ class FillView:
         Mark the pixel centres (where coverage is decided).
     caption : bool
         Write the caption below the Axes (a widget may show it itself instead).
+    step_header : bool
+        Header "Half-planes: step k of n (kind)"; False: just the method, and a widget shows
+        the step (the header is then still, which makes a blitted step cheaper by half).
 
     A step asks the trace for :meth:`~teachraster.core.trace.FillTrace.step` once and hands
     the Step to the artists; which pixels are filled or rejected, and from which step on
@@ -101,7 +104,8 @@ class FillView:
     """
 
     def __init__(self, fill, *, ax=None, step: int | None = None, legend: bool = True,
-                 centres: bool = True, caption: bool = True) -> None:  # fmt: skip
+                 centres: bool = True, caption: bool = True,
+                 step_header: bool = True) -> None:  # fmt: skip
         trace = as_trace(fill, "FillView")
         if ax is None:
             # room on the right for the legend and below for a three-line caption
@@ -129,6 +133,7 @@ class FillView:
                                     ha="left", fontsize=fs(0.85), linespacing=1.3)  # fmt: skip
         # A widget may show the caption itself (in full, selectable) instead.
         self.caption_text.set_visible(caption)
+        self._step_header = step_header
         self._caption = ""
         self.legend = Key(ax, 5) if legend else None
         self._trace: FillTrace | None = None
@@ -211,7 +216,10 @@ class FillView:
         self.raster_line.update(step)
         self.pixel.update(step)
         method = METHOD_NAMES.get(trace.method, trace.method)
-        self.header.set_text(f"{method}: step {k} of {len(trace) - 1} ({step.kind})")
+        if self._step_header:
+            self.header.set_text(f"{method}: step {k} of {len(trace) - 1} ({step.kind})")
+        else:
+            self.header.set_text(method)
         self._caption = step.caption
         if self.caption_text.get_visible():
             self.caption_text.set_text(self._wrap(step.caption))
@@ -276,14 +284,16 @@ class FillView:
             (STILL, middle),
             (MOVING, [r.cells, p.box, r.span, p.centre]),
             (STILL, [split.point, split.label, *t.labels, *t.edge_labels]),
-            (MOVING, [self.header, self.caption_text]),
+            # text costs more to draw than the pixels: the header moves only with the step
+            (MOVING, [self.header] if self._step_header else []),
+            (MOVING, [self.caption_text]),
         ])  # fmt: skip
 
     def redraw(self) -> bool:
         """Render the figure into its (Agg-based) canvas now, as fast as the change allows.
 
         After :meth:`show_step` only the moving artists (pixels filled and rejected, the
-        current raster line or pixel, header, caption) are drawn again, over a cached
+        current raster line or pixel, step header, caption) are drawn again, over a cached
         background and still layers (blitting); the first time, after :meth:`set_fill` and
         when the bounding box or the split appears, the whole figure is drawn. Call
         ``view.blit.invalidate()`` after changing other artists yourself. The result equals

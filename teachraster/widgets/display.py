@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import struct
+import sys
 import zlib
 
 import ipywidgets as widgets
@@ -95,8 +96,11 @@ def fast_ipympl_canvas():
                 return None
             pixels = np.asarray(self.get_renderer().buffer_rgba())
             buff = pixels.view(np.uint32).squeeze(2)
-            if (self._force_full or buff.shape != self._last_buff.shape
-                    or (pixels[:, :, 3] != 255).any()):  # fmt: skip
+            # any transparency forces a full frame; on little-endian machines alpha is the
+            # high byte of each 32-bit pixel, so one contiguous comparison finds it
+            clear = (buff < 0xFF000000).any() if sys.byteorder == "little" else (
+                pixels[:, :, 3] != 255).any()  # fmt: skip
+            if self._force_full or buff.shape != self._last_buff.shape or clear:
                 self.set_image_mode("full")
                 output = buff
             else:

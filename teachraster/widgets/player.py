@@ -64,10 +64,11 @@ class FillPlayer(Holdable):
     ----------
     widget : ipywidgets.VBox
         Everything, ready to display (the player also displays itself).
-    play, slider, speed, prev, next, first, last, method, interpolation, caption
+    play, slider, speed, prev, next, first, last, method, interpolation, caption, step_info
         The controls: ``Play`` (jslinked to ``slider``: it runs in the browser), the step
         ``IntSlider``, the Play interval in ms, the step buttons, the two
-        ``ToggleButtons`` and the ``HTML`` caption of the current step.
+        ``ToggleButtons``, the ``HTML`` caption of the current step and the ``Label`` by the
+        slider with the last step number and the kind of step ("of 787 (pixel)").
     view : FillView
     fig : matplotlib Figure
         The FillView's figure.
@@ -127,7 +128,8 @@ class FillPlayer(Holdable):
         ax = fill_axes(self.fig, self.width, self.height)
         # The caption is a widget below the controls, in full and selectable; drawing it in
         # the figure as well would cost time at every step.
-        self.view = FillView(self.fill, ax=ax, step=step, caption=False)
+        # The step number and kind go to a label by the slider for the same reason.
+        self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False)
         # Steps are blitted: only what moves is drawn again (see FillView.redraw).
         self.display = FigureDisplay(self.fig, self.backend, draw=self.view.redraw)
         self.interp_view = self.interp_display = None
@@ -173,6 +175,7 @@ class FillPlayer(Holdable):
                                   border=f"1px solid {COLORS['grid']}"),
         )  # fmt: skip
         self.caption.style.font_size = "15px"
+        self.step_info = widgets.Label(self._step_info(self.trace.step(step)))
         self.caption.add_class("teachraster-caption")  # a handle for styling and browser tests
         self.slider.observe(self._on_step, "value")
         self.method.observe(self._on_fill_options, "value")
@@ -200,7 +203,8 @@ class FillPlayer(Holdable):
             figures.append(self.interp_display.widget)
         return widgets.VBox([
             title,
-            widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last]),
+            widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last,
+                          self.step_info]),
             widgets.HBox([labelled("method", self.method),
                           labelled("interpolation", self.interpolation)]),
             self.speed,
@@ -238,8 +242,16 @@ class FillPlayer(Holdable):
 
     def _draw_step(self, k: int) -> None:
         step = self.view.show_step(k, draw=False)
-        self.caption.value = html_escape(step.caption)
+        self._show_caption(step)
         self.display.refresh()
+
+    def _show_caption(self, step) -> None:
+        self.caption.value = html_escape(step.caption)
+        self.step_info.value = self._step_info(step)
+
+    def _step_info(self, step) -> str:
+        """``"of 787 (pixel)"``: beside the slider's own readout of the step number."""
+        return f"of {len(self.trace) - 1} ({step.kind})"
 
     def _on_fill_options(self, change) -> None:
         self.fill = self._rasterize(self.method.value, self.interpolation.value)
@@ -252,7 +264,7 @@ class FillPlayer(Holdable):
             self.slider.max = self.play.max = max(last, self.slider.max)
             self.slider.value = step.index
             self.slider.max = self.play.max = last
-        self.caption.value = html_escape(step.caption)
+        self._show_caption(step)
         self.display.refresh()
         if self.interp_view is not None:
             self.interp_view.update(self.fill, draw=False)
