@@ -31,10 +31,13 @@ def test_readme_examples_run(monkeypatch, tmp_path):
     pytest.importorskip("ipywidgets")
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("MPLBACKEND", "Agg")
-    namespace: dict = {}
-    exec(compile(PRELUDE, "prelude", "exec"), namespace)
-    for i, block in enumerate(BLOCKS, 1):
-        exec(compile(block, f"README.md python block {i}", "exec"), namespace)
+    import matplotlib
     import matplotlib.pyplot as plt
 
+    namespace: dict = {}
+    # the README sets the classroom style globally: keep it from leaking into other tests
+    with matplotlib.rc_context():
+        exec(compile(PRELUDE, "prelude", "exec"), namespace)
+        for i, block in enumerate(BLOCKS, 1):
+            exec(compile(block, f"README.md python block {i}", "exec"), namespace)
     plt.close("all")
