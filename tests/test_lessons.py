@@ -1,0 +1,109 @@
+"""The lessons' numbers: each lesson is executed once and its variables are checked here.
+
+The notebooks are written for a classroom, so they keep a visible check only where checking is
+the point of the cell. The facts a lesson relies on (our loop fills what the package fills,
+the formula gives the package's value, the figure shows what the text says) are asserted here,
+on the variables the executed notebook leaves behind. ``lesson(name)`` runs a notebook with
+nbclient, as ``tests/test_packaging.py`` does, then pickles every variable that can be pickled
+and hands them back as a namespace.
+"""
+
+from __future__ import annotations
+
+import functools
+import pickle
+import tempfile
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+NOTEBOOK_DIR = ROOT / "notebooks"
+
+# Runs inside the kernel after the lesson: every global that pickles, each on its own, so one
+# unpicklable value (a widget, a figure) does not hide the others.
+_DUMP = """
+import pickle as _pickle, types as _types
+_kept = {}
+for _name, _value in list(globals().items()):
+    if _name.startswith("_") or isinstance(_value, (_types.ModuleType, type)) or callable(_value):
+        continue
+    try:
+        _kept[_name] = _pickle.dumps(_value)
+    except Exception:
+        pass
+with open(__PATH__, "wb") as _fh:
+    _pickle.dump(_kept, _fh)
+"""
+
+
+@functools.cache
+def lesson(name: str) -> SimpleNamespace:
+    """Execute ``notebooks/<name>.ipynb`` once and return its picklable globals."""
+    import os
+
+    import nbformat
+    from nbclient import NotebookClient
+
+    os.environ["MPLBACKEND"] = "Agg"  # the kernel inherits this environment
+    nb = nbformat.read(NOTEBOOK_DIR / f"{name}.ipynb", as_version=4)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "globals.pickle"
+        nb.cells.append(nbformat.v4.new_code_cell(_DUMP.replace("__PATH__", repr(str(out)))))
+        NotebookClient(
+            nb,
+            timeout=600,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
+        ).execute()
+        raw = pickle.loads(out.read_bytes())
+    values = {}
+    for key, blob in raw.items():
+        try:
+            values[key] = pickle.loads(blob)
+        except Exception:  # e.g. an instance of a class defined in the notebook
+            continue
+    return SimpleNamespace(**values)
+
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
+
+
+# -- 01 span tables ------------------------------------------------------------------------------
+def test_01_hand_written_span_loop_matches_the_package():
+    ns = lesson("01_span_tables")
+    span = ns.span
+    assert list(span.order) == list(ns.order)
+    assert np.array_equal(span.sorted_xy, ns.xy[ns.order])
+    assert ns.u4 == 6.5 == span.u4
+    # v4 = (u4, v2) lies exactly on the long edge
+    import teachraster as tr
+
+    assert tr.edge_function(ns.xy[ns.order][0], ns.xy[ns.order][2], [ns.u4, ns.v2]) == 0
+    assert span.flat_bottom[1, 1] == span.flat_bottom[2, 1] == ns.v2
+    assert span.flat_top[0, 1] == span.flat_top[1, 1] == ns.v2
+    assert np.array_equal(ns.cover, ns.fill.coverage)
+    rows = [r for r in span.rows if r in ns.ends]  # the package also traces row v = v3
+    assert set(span.rows) - set(rows) == {17}
+    assert np.array_equal(span.x_left[: len(rows)], [ns.ends[i][0] for i in rows])
+    assert np.array_equal(span.x_right[: len(rows)], [ns.ends[i][1] for i in rows])
+    cover = ns.cover
+    assert cover[5, 5] and not cover[5, 11]  # left end owned, right end not
+    assert cover[9, 6] and not cover[9, 18]
+    assert not cover[1].any() and not cover[17].any()
+    assert ns.shown_caption == ns.trace.caption(ns.step_of_row[13])
+    assert np.array_equal(ns.shown_coverage, ns.trace.coverage_at(ns.step_of_row[13]))
+
+
+def test_01_flat_cases_follow_the_half_open_row_rule():
+    ns = lesson("01_span_tables")
+    for name, fill in ns.flat.items():
+        assert np.array_equal(ns.ours_flat[name], fill.coverage), name
+    top, bottom = ns.flat["flat-topped"], ns.flat["flat-bottomed"]
+    assert top.trace.span.flat_bottom is None and top.coverage[2].sum() == 10
+    assert bottom.trace.span.flat_top is None and not bottom.coverage[10].any()
+    assert (
+        not ns.flat["zero height"].coverage.any() and ns.flat["zero height"].trace.span.u4 is None
+    )
