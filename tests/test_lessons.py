@@ -107,3 +107,53 @@ def test_01_flat_cases_follow_the_half_open_row_rule():
     assert (
         not ns.flat["zero height"].coverage.any() and ns.flat["zero height"].trace.span.u4 is None
     )
+
+
+# -- 02 half-planes ------------------------------------------------------------------------------
+def test_02_bbox_edge_functions_and_bailout():
+    import teachraster as tr
+
+    ns = lesson("02_half_planes")
+    box, rows, cols = ns.box, ns.rows, ns.cols
+    assert (box.xmin, box.xmax, box.ymin, box.ymax) == (ns.u_min, ns.u_max, ns.v_min, ns.v_max)
+    assert (box.col0, box.col1, box.row0, box.row1) == (
+        cols.start,
+        cols.stop,
+        rows.start,
+        rows.stop,
+    )
+    assert box.size == len(rows) * len(cols) == 169
+    assert ns.cross_z == ns.cs148 == tr.edge_function(ns.v0, ns.v1, ns.p) > 0
+    assert (ns.F != 0).all()
+    assert np.array_equal((ns.F > 0).all(axis=-1), ns.fill.coverage)
+    b = box
+    assert np.array_equal(ns.trace.halfplane.edge_values, ns.F[b.row0 : b.row1, b.col0 : b.col1])
+    assert np.array_equal(ns.runs, ns.by_hand)
+    assert ns.with_bailout < ns.without
+    assert ns.shown_caption == ns.trace.caption(ns.k)
+    assert (ns.shown_step.row, ns.shown_step.col) == (box.row0 + 5, box.col0 + 6)
+
+
+def test_02_winding_culling_and_the_top_left_rule():
+    import teachraster as tr
+
+    ns = lesson("02_half_planes")
+    assert ns.front.front_facing and not ns.back.front_facing
+    n = int(ns.fill.coverage.sum())
+    assert ns.culled == {
+        ("clockwise", None): n,
+        ("clockwise", "back"): 0,
+        ("clockwise", "front"): n,
+        ("counter-clockwise", None): n,
+        ("counter-clockwise", "back"): n,
+        ("counter-clockwise", "front"): 0,
+    }
+    for name in ["top-left rule", "rule, unsnapped"]:
+        assert np.array_equal(ns.counts[name], ns.square)
+    naive = ns.counts["naive f >= 0"]
+    assert naive.max() == 2 and (naive[ns.diagonal] == 2).all()
+    assert not ns.row8["above (bottom edge)"].any()
+    assert ns.row8["below (top edge)"].sum() == 12
+    assert ns.row8["naive, above"].sum() == ns.row8["naive, below"].sum() == 13
+    assert np.array_equal(ns.editor_coverage, tr.rasterize(ns.moved, 16, 16).coverage)
+    assert ns.moved.front_facing
