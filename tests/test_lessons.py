@@ -27,8 +27,10 @@ NOTEBOOK_DIR = ROOT / "notebooks"
 _DUMP = """
 import pickle as _pickle, types as _types
 _kept = {}
+_SKIP = (_types.ModuleType, type, _types.FunctionType, _types.BuiltinFunctionType,
+         _types.MethodType)
 for _name, _value in list(globals().items()):
-    if _name.startswith("_") or isinstance(_value, (_types.ModuleType, type)) or callable(_value):
+    if _name.startswith("_") or isinstance(_value, _SKIP):
         continue
     try:
         _kept[_name] = _pickle.dumps(_value)
@@ -157,3 +159,44 @@ def test_02_winding_culling_and_the_top_left_rule():
     assert ns.row8["naive, above"].sum() == ns.row8["naive, below"].sum() == 13
     assert np.array_equal(ns.editor_coverage, tr.rasterize(ns.moved, 16, 16).coverage)
     assert ns.moved.front_facing
+
+
+# -- 03 barycentrics and plane equations --------------------------------------------------------
+def test_03_three_views_of_one_plane():
+    import teachraster as tr
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    xy, p, f = ns.xy, ns.p, ns.f
+    assert np.isclose(ns.lam_areas.sum(), 1.0) and np.allclose(ns.lam_areas @ xy, p)
+    assert np.allclose(tr.barycentric(xy, p), ns.lam_areas) and np.allclose(ns.lam, ns.lam_areas)
+    assert np.allclose(tr.barycentric(xy, xy), np.eye(3))
+    lam_px = ns.lam_px
+    assert np.allclose(lam_px, tr.barycentric(ns.fill.trace.snapped, ns.centres), atol=1e-15)
+    assert ((lam_px >= 0) & (lam_px <= 1)).all()
+    # the contour lines drawn are lines of constant λ0 inside the triangle
+    assert np.nanmin(ns.lam0_fine) >= 0 and np.nanmax(ns.lam0_fine) <= 1
+    plane = ns.plane
+    assert np.allclose(-(plane.A * xy[:, 0] + plane.B * xy[:, 1] + plane.D) / plane.C, f)
+    assert plane.C == tr.edge_function(*xy)
+    assert np.isclose(plane(*p), ns.lam @ f)
+    ys, xs = np.mgrid[0:14, 0:16] + 0.5
+    assert np.allclose(ns.grid, plane(xs, ys), atol=1e-13)
+    # Fatahalian's 3 x 3 system, and M recentred at v0, give the same gradient
+    assert np.allclose(ns.system @ [ns.g_x, ns.g_y, ns.g_0], f)
+    assert np.allclose(ns.g_recentred, [ns.g_x, ns.g_y]) and np.allclose(ns.M, ns.M_by_hand)
+    assert np.allclose([ns.g_x, ns.g_y], [plane.dx, plane.dy])
+    assert np.allclose(ns.planes.A, ns.abcd.dx) and np.allclose(ns.planes.B, ns.abcd.dy)
+    assert np.allclose(ns.planes(*ns.centres.T), ns.fill.trace.pixel_barycentric @ ns.F)
+    assert np.allclose(ns.moved["g"][:2], ns.moved["g_recentred"])
+
+
+def test_03_stepping_and_recentring_numbers_match_the_text():
+    ns = lesson("03_barycentric_and_plane_equations")
+    err = ns.err
+    assert err["stepped, float32"][-1] > 1e-3  # "a few hundredths off"
+    assert err["stepped, float32"][-1] > 100 * np.spacing(np.float32(1000.0))
+    assert 1e-13 < err["stepped, float64"].max() < 1e-9  # "about 1e-10"
+    assert err["stepped, float64"].max() > 100 * err["direct, recentred (Fatahalian)"].max()
+    assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
+    assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
+    assert ns.absolute[-1] > 1000 * ns.absolute[0]

@@ -1,0 +1,76 @@
+"""The lessons' own widgets (plane explorer, depth-precision explorer, case picker), driven
+from code: every control changes what is shown, and the numbers shown are the package's."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.widgets.plane_explorer import (  # noqa: E402
+    PlaneExplorer,
+    level_segments,
+    plane_system,
+)
+
+
+# -- PlaneExplorer -------------------------------------------------------------------------------
+@pytest.fixture
+def explorer():
+    ex = PlaneExplorer([[2, 1], [13, 5], [5, 12]], [0.2, 0.9, 0.5], 16, 14, backend="image")
+    yield ex
+    ex.close()
+
+
+def test_plane_system_three_ways_agree():
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        xy, f = rng.uniform(0, 20, (3, 2)), rng.uniform(-1, 1, 3)
+        s = plane_system(xy, f)
+        gx, gy, g0 = s["g"]
+        assert np.allclose(s["system"] @ s["g"], f)  # the 3 x 3 system is solved
+        assert np.allclose(s["g_recentred"], [gx, gy])  # M gives the same gradient
+        A, B, C, D = s["ABCD"]
+        assert np.isclose(C, s["area2"])
+        assert np.allclose([-A / C, -B / C], [gx, gy])  # dx, dy of the other note
+        assert np.allclose(tr.attribute_plane(xy, f)(*xy.T), f)
+
+
+def test_plane_system_zero_area_has_no_plane():
+    s = plane_system([[0, 0], [1, 1], [2, 2]], [0, 1, 2])
+    assert s["area2"] == 0 and "g" not in s and "M" not in s
+
+
+def test_level_segments_lie_on_their_level():
+    g = np.array([0.3, -0.7, 1.1])
+    for level, seg in zip([0.0, 2.5], level_segments(g, [0.0, 2.5], 16, 14)):
+        assert np.allclose(seg @ g[:2] + g[2], level)
+    assert level_segments([0.0, 0.0, 1.0], [1.0], 8, 8) == []
+
+
+def test_explorer_shows_the_plane_and_follows_the_sliders(explorer):
+    shown = np.asarray(explorer.image.image.get_array(), dtype=float)
+    fill = tr.rasterize(tr.Triangle(explorer.xy, attrs={"f": explorer.fvals}), 16, 14)
+    inside = fill.coverage  # no centre lies on an edge here, so coverage = inside
+    assert np.allclose(shown[inside], fill.attrs["f"][inside])
+    assert np.isnan(shown[~inside]).all()
+    before = explorer.info.value
+    explorer.f[2].value = 1.7
+    assert explorer.info.value != before and "1.70" in explorer.info.value
+    assert np.isclose(np.nanmax(explorer.values), 1.7, atol=0.3)
+    segments = explorer.contours.get_segments()
+    g = explorer.system["g"]
+    assert len(segments) > 0
+    for seg in segments:  # all parallel: the same value along each
+        values = np.asarray(seg) @ g[:2] + g[2]
+        assert np.isclose(values[0], values[1])
+
+
+def test_explorer_survives_a_zero_area_triangle(explorer):
+    for k, (x, y) in enumerate([(1, 1), (5, 5), (9, 9)]):
+        explorer.x[k].value, explorer.y[k].value = x, y
+    assert "zero area" in explorer.info.value
+    assert np.isnan(explorer.values).all()
+    assert explorer.contours.get_segments() == []
