@@ -200,3 +200,33 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
     assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
     assert ns.absolute[-1] > 1000 * ns.absolute[0]
+
+
+# -- 04 perspective-correct interpolation -------------------------------------------------------
+def test_04_derivation_and_the_notes_barycentrics():
+    ns = lesson("04_perspective_correct_interpolation")
+    assert np.allclose(ns.t, ns.t_ray, atol=1e-15)
+    assert np.allclose(ns.x / ns.z, ns.s)
+    assert np.allclose(1 / ns.z, 1 / ns.z0 + ns.q * (1 / ns.z1 - 1 / ns.z0))  # Ek (19)
+    assert not np.allclose(ns.z, ns.z0 + ns.q * (ns.z1 - ns.z0))
+    assert np.allclose(ns.u_persp, ns.u_true, atol=1e-12)
+    assert np.abs(ns.u_affine - ns.u_true).max() > 0.1
+    assert ns.residuals["u / w"] < 1e-12 and ns.residuals["1 / w"] < 1e-12
+    assert ns.residuals["u"] > 1e-2 and ns.residuals["w"] > 1e-1
+    # CS148's α_i are the world barycentrics of the hit point, and give Σλf/w ÷ Σλ/w
+    assert np.allclose(ns.alpha, ns.alpha_ray, atol=1e-12)
+    assert np.allclose(ns.u_alpha, ns.u_divide, atol=1e-15)
+    assert np.allclose(ns.u_alpha, ns.u_true, atol=1e-12)
+
+
+def test_04_toggle_heatmap_floor_and_tilt():
+    ns = lesson("04_perspective_correct_interpolation")
+    assert np.array_equal(ns.affine.coverage, ns.persp.coverage)
+    assert np.allclose(*ns.same, equal_nan=True, atol=1e-15)
+    assert np.array_equal(ns.player_affine, ns.affine.attrs["u"], equal_nan=True)
+    assert np.array_equal(ns.player_perspective, ns.persp.attrs["u"], equal_nan=True)
+    assert 0.15 < np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)
+    assert 1.0 < ns.floor_w.min() and ns.floor_w.max() < 8  # the readable floor
+    assert np.nanmax(ns.texels) > 10
+    assert ns.far_w.max() > 35  # the original floor, for the moiré
+    assert ns.maxima[0] < 1e-9 and ns.maxima[0] < ns.maxima[30] < ns.maxima[75]
