@@ -74,3 +74,45 @@ def test_explorer_survives_a_zero_area_triangle(explorer):
     assert "zero area" in explorer.info.value
     assert np.isnan(explorer.values).all()
     assert explorer.contours.get_segments() == []
+
+
+# -- DepthPrecisionExplorer ---------------------------------------------------------------------
+def test_depth_explorer_curve_is_the_package_resolution():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("unorm16", near=0.1, far=1000.0, backend="image")
+    try:
+        x, y = ex.curve.get_data()
+        assert np.allclose(y, tr.depth_resolution(x, 0.1, 1000.0, "unorm16"))
+        first16 = ex.fight_from
+        assert first16 is not None and "z-fighting from" in ex.info.value
+        ex.format.value = "unorm24"  # more bits: fighting starts farther away
+        assert ex.fight_from > first16
+        ex.near.value = 1.0  # the classic fix: a farther near plane
+        assert ex.fight_from is None or ex.fight_from > 100
+        x, y = ex.curve.get_data()
+        assert x[0] >= 1.0 and np.allclose(y, tr.depth_resolution(x, 1.0, 1000.0, "unorm24"))
+        # the reference curve stays where it started
+        assert np.allclose(ex.reference.get_ydata()[:3], tr.depth_resolution(
+            ex.reference.get_xdata()[:3], 0.1, 1000.0, "unorm16"))  # fmt: skip
+    finally:
+        ex.close()
+
+
+def test_depth_explorer_reverse_z_helps_float32_only():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer, first_fight
+
+    ex = DepthPrecisionExplorer("float32", backend="image")
+    try:
+        assert ex.fight_from is not None
+        ex.reverse.value = True
+        assert ex.mapping == "reversed" and ex.fight_from is None
+        assert "no z-fighting" in ex.info.value
+        ex.format.value = "unorm24"  # an even step: reversing gains nothing
+        z = np.geomspace(1, 1000, 300)
+        assert first_fight(z, 0.005, 0.1, 1000.0, "unorm24", "reversed") == first_fight(
+            z, 0.005, 0.1, 1000.0, "unorm24", "perspective"
+        )
+        assert ex.fight_from is not None
+    finally:
+        ex.close()
