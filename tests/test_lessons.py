@@ -230,3 +230,72 @@ def test_04_toggle_heatmap_floor_and_tilt():
     assert np.nanmax(ns.texels) > 10
     assert ns.far_w.max() > 35  # the original floor, for the moiré
     assert ns.maxima[0] < 1e-9 and ns.maxima[0] < ns.maxima[30] < ns.maxima[75]
+
+
+# -- 05a z-buffer ------------------------------------------------------------------------------
+def test_05a_zbuffer_painter_plan_and_clipping():
+    import teachraster as tr
+
+    ns = lesson("05a_zbuffer")
+    ids = ns.ids
+    assert (ids["far first, then near"] == 1).all() and (ids["near first, then far"] == 0).all()
+    assert (ids["equal depth (a tie)"] == 0).all() and (ids["no depth test"] == 1).all()
+    for r in ns.results.values():
+        assert (r["zbuf"].triangle_id == r["truth"]).all()
+        assert (r["paint"].triangle_id != r["truth"]).sum() > 0
+    assert min(ns.wrong_by_order.values()) > 0  # the cyclic overlap: no order is right
+    frame = ns.frame
+    assert np.array_equal(frame.depth.ravel()[ns.covered], ns.smallest[ns.covered])
+    trace = frame.trace
+    assert (trace.fragment_depth[ns.failed] >= ns.smallest[ns.pixel[ns.failed]]).all()
+    assert trace.fragment_passed[trace.fragment_triangle == 0].all()
+    assert frame.plan["depth_test"].count == ns.contested < frame.coverage.sum()
+    assert not ns.single.plan["depth_test"].ran
+    assert np.array_equal(ns.failed_px, ns.painter_wrong)
+    # clipping, step by step: the near plane drops the vertex behind the eye, adds two on it
+    near = ns.steps[0]
+    assert near.plane.startswith("near") and near.new.sum() == 2 and len(near.polygon) == 4
+    assert np.allclose(near.polygon[near.new, 2], -near.polygon[near.new, 3])
+    assert not any(s.new.any() for s in ns.steps[1:])
+    assert (ns.clipped[:, 3] > 0).all()
+    assert ns.clip_tri_frame.coverage.any()
+    from teachraster.pipeline.clipping import clip_polygon
+
+    poly, attrs = clip_polygon(ns.clip_tri_clip, ns.clip_tri_u)
+    assert np.allclose(poly, ns.clipped) and np.allclose(attrs, ns.clipped_u)
+    assert (
+        tr.render(ns.clip_tri_clip[None], 160, 120).coverage.sum()
+        == ns.clip_tri_frame.coverage.sum()
+    )
+
+
+# -- 05b depth precision ------------------------------------------------------------------------
+def test_05b_depth_mappings_resolution_and_fighting():
+    import teachraster as tr
+
+    ns = lesson("05b_depth_precision")
+    assert ns.err_depth < 1e-12 and ns.err_z > 1e-3
+    res = ns.res
+    assert np.allclose(res[1:] / res[:-1], 100.0)
+    f, size = ns.fights, ns.size
+    assert not f["float64"].any()
+    assert not f["unorm16"][:2].any() and not f["float32"][:4].any()
+    assert f["unorm16"][2] > 0 and f["float32"][2] == f["unorm24"][2] == 0
+    assert f["float32"][5] > size[5] / 2 and f["unorm24"][5] > size[5] / 2
+    for fmt, r in ns.predicted.items():  # section 2's prediction
+        assert not f[fmt][r < ns.delta / 4].any()
+        assert (f[fmt][r > 4 * ns.delta] > size[r > 4 * ns.delta] / 2).all()
+    assert ns.levels["unorm16"] < ns.levels["unorm24"] <= ns.levels["float64"]
+    assert tr.fights([2.0, 500.0], [2.5, 500.5], 0.1, 1000.0, "unorm16").tolist() == [False, True]
+
+
+def test_05b_reverse_z_bias_and_explorer():
+    ns = lesson("05b_depth_precision")
+    # the per-pixel prediction reproduces the renders, and reverse-Z float32 removes the fight
+    assert np.array_equal(ns.fights_window["float32"], ns.fights["float32"])
+    assert not ns.fights_reversed["float32"].any()
+    assert np.array_equal(ns.fights_reversed["unorm24"], ns.fights_window["unorm24"])
+    assert ns.decal_shown["no bias"] < ns.decal_shown["depth bias"] == int(ns.decal_only.sum())
+    ef = ns.explorer_fights
+    assert ef[("unorm16", 1.0, False)] > ef[("unorm16", 0.1, False)]
+    assert ef[("float32", 0.1, False)] is not None and ef[("float32", 0.1, True)] is None
