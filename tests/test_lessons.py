@@ -299,3 +299,25 @@ def test_05b_reverse_z_bias_and_explorer():
     ef = ns.explorer_fights
     assert ef[("unorm16", 1.0, False)] > ef[("unorm16", 0.1, False)]
     assert ef[("float32", 0.1, False)] is not None and ef[("float32", 0.1, True)] is None
+
+
+# -- 06 what accuracy costs ---------------------------------------------------------------------
+def test_06_counts_errors_and_cracks():
+    ns = lesson("06_what_accuracy_costs")
+    row = {(r["group"], r["variant"]): r for r in ns.rows}
+    assert row[("interpolation", "perspective")]["error"] < 1e-9
+    assert row[("interpolation", "affine")]["error"] > 100
+    sub = [row[("interpolation", f"subdivided N={n}")] for n in (2, 4, 8, 16, 32)]
+    assert all(a["mean_abs_texels"] < b["mean_abs_texels"] for a, b in zip(sub, sub[1:]))
+    assert all(a["cycles"] > b["cycles"] for a, b in zip(sub, sub[1:]))
+    assert sub[3]["mean_abs_texels"] < 1.0  # Quake's N = 16: under a texel on average
+    for ev in ["direct", "incremental"]:
+        assert row[("edge functions", f"fixed8 {ev}")]["error"] == 0
+        assert row[("edge functions", f"fixed4 {ev}")]["error"] > 0
+        f32 = row[("edge functions", f"float32 {ev}")]
+        assert f32["mesh_wrong_px_at_0"] < f32["mesh_wrong_px_at_1e6"]
+    assert ns.cracks["top-left"]["gaps"] == ns.cracks["top-left"]["double_hits"] == 0
+    assert ns.cracks["E >= 0"]["double_hits"] > 0 and ns.cracks["E > 0"]["gaps"] > 0
+    assert all(r["error"] == 0 for r in ns.fill)
+    assert row[("depth", "window unorm16")]["first_inverted_z"] == 20
+    assert [r["variant"] for r in ns.fronts["interpolation"]][-1] == "perspective"
