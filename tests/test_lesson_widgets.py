@@ -116,3 +116,38 @@ def test_depth_explorer_reverse_z_helps_float32_only():
         assert ex.fight_from is not None
     finally:
         ex.close()
+
+
+# -- CasePicker ----------------------------------------------------------------------------------
+def test_owner_image_marks_double_hits_and_gaps():
+    from teachraster.widgets.case_picker import NONE, SEVERAL, owner_image
+
+    a = np.zeros((3, 3), bool)
+    b = np.zeros((3, 3), bool)
+    a[0, :2] = True
+    b[0, 1:] = True
+    owner = owner_image([a, b])
+    assert owner[0].tolist() == [0, SEVERAL, 1] and (owner[1:] == NONE).all()
+
+
+def test_case_picker_shows_every_screen_case_with_both_methods():
+    from teachraster.study import hardcases
+    from teachraster.widgets.case_picker import SEVERAL, CasePicker, owner_image, screen_cases
+
+    names = screen_cases()
+    assert "fan_spokes_through_centres" in names and "behind_camera" not in names
+    picker = CasePicker("d3d_split_square", backend="image")
+    try:
+        for name in names:
+            for method in hardcases.FILL_METHODS:
+                picker.case.value, picker.method.value = name, method
+                result = hardcases.get_case(name).run(method)
+                assert np.array_equal(picker.owner, owner_image(result.fills))
+                assert picker.passed and "passes its check" in picker.info.value
+        picker.case.value = "fan_spokes_through_centres"
+        assert int(picker.owner.max()) == 15 and not (picker.owner == SEVERAL).any()
+        assert picker.naive_counts.max() == 16  # the hub, naive: all sixteen triangles
+        with pytest.raises(ValueError, match="screen-space"):
+            CasePicker("behind_camera", backend="image")
+    finally:
+        picker.close()
