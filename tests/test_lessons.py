@@ -321,3 +321,24 @@ def test_06_counts_errors_and_cracks():
     assert all(r["error"] == 0 for r in ns.fill)
     assert row[("depth", "window unorm16")]["first_inverted_z"] == 20
     assert [r["variant"] for r in ns.fronts["interpolation"]][-1] == "perspective"
+
+
+# -- 07 hard cases ------------------------------------------------------------------------------
+def test_07_cases_fan_owners_and_catalogue():
+    ns = lesson("07_hard_cases")
+    ours, naive = ns.split_square
+    assert ours.max() == 1 and naive.max() == 2
+    owner = ns.fan_owner
+    assert owner.max() == 15 and (owner >= -1).all()  # every pixel one owner, none twice
+    assert ns.fan_naive[ns.hub] == 16 and owner[ns.hub] >= 0
+    assert (ns.flat_top[0] != ns.flat_top[1]).any()
+    assert ns.slivers[0].max() == 1 and ns.slivers[1].max() == 2
+    assert ns.other_winding[0].any() and not ns.other_winding[1].any()
+    at0, at1e6 = ns.far_coverage
+    assert np.array_equal(at0, at1e6) and at1e6.any() and not ns.wrong32.any()
+    assert ns.drift[1] > 1e6 * ns.drift[0]
+    assert ns.sky.any() and not ns.sky_ours.any()
+    assert ns.w_ratio_error > 0.5
+    assert all(v == 0 for (fmt, _), v in ns.coplanar_wrong.items() if fmt == "float64")
+    assert all(v > 0 for (fmt, _), v in ns.coplanar_wrong.items() if fmt == "unorm16")
+    assert len(ns.shown) == 11 and not ns.failures
