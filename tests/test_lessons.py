@@ -152,7 +152,7 @@ def test_02_winding_culling_and_the_top_left_rule():
     }
     for name in ["top-left rule", "rule, unsnapped"]:
         assert np.array_equal(ns.counts[name], ns.square)
-    naive = ns.counts["naive f >= 0"]
+    naive = ns.counts["naive E >= 0"]
     assert naive.max() == 2 and (naive[ns.diagonal] == 2).all()
     assert not ns.row8["above (bottom edge)"].any()
     assert ns.row8["below (top edge)"].sum() == 12
