@@ -342,3 +342,12 @@ def test_07_cases_fan_owners_and_catalogue():
     assert all(v == 0 for (fmt, _), v in ns.coplanar_wrong.items() if fmt == "float64")
     assert all(v > 0 for (fmt, _), v in ns.coplanar_wrong.items() if fmt == "unorm16")
     assert len(ns.shown) == 11 and not ns.failures
+
+
+# -- 00 tour ------------------------------------------------------------------------------------
+def test_00_tour_numbers():
+    ns = lesson("00_tour")
+    assert ns.same and np.array_equal(ns.span.coverage, ns.halfplane.coverage)
+    assert np.nanmax(ns.err) > 0.1
+    assert ns.frame.image.shape == (240, 320, 3)
+    assert {e.name for e in ns.frame.plan} >= {"clipping", "culling", "depth_test", "perspective"}
