@@ -17,8 +17,8 @@ from matplotlib import colormaps
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
-from ._common import labelled, style_context, title_html
-from ._display import FigureDisplay, new_figure, resolve_backend
+from .common import close_tree, labelled, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
 NONE, SEVERAL = -1, -2
@@ -197,5 +197,4 @@ class CasePicker:
     def close(self) -> None:
         """Close every widget of the picker."""
         self.display.close()
-        for w in (self.case, self.method, self.info, self.widget):
-            w.close()
+        close_tree(self.widget)

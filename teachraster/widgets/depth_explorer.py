@@ -15,8 +15,8 @@ import numpy as np
 
 from ..pipeline.depth import depth_resolution, fights
 from ..plotting import COLORS
-from ._common import labelled, style_context, title_html
-from ._display import FigureDisplay, new_figure, resolve_backend
+from .common import close_tree, labelled, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
 FORMATS = ("unorm16", "unorm24", "float32")
@@ -165,5 +165,4 @@ class DepthPrecisionExplorer:
     def close(self) -> None:
         """Close every widget of the explorer."""
         self.display.close()
-        for w in (self.format, self.near, self.reverse, self.info, self.widget):
-            w.close()
+        close_tree(self.widget)

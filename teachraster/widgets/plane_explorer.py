@@ -20,8 +20,8 @@ from matplotlib.collections import LineCollection
 
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
-from ._common import style_context, title_html
-from ._display import FigureDisplay, new_figure, resolve_backend
+from .common import close_tree, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
@@ -254,7 +254,7 @@ class PlaneExplorer:
     def close(self) -> None:
         """Close every widget of the explorer."""
         self.display.close()
-        _close_tree(self.widget)
+        close_tree(self.widget)
 
 
 def _barycentric_grid(xy, xs, ys, area2: float) -> np.ndarray:
@@ -263,10 +263,3 @@ def _barycentric_grid(xy, xs, ys, area2: float) -> np.ndarray:
     la = ((cx - bx) * (ys - by) - (cy - by) * (xs - bx)) / area2
     lb = ((ax - cx) * (ys - cy) - (ay - cy) * (xs - cx)) / area2
     return np.stack([la, lb, 1.0 - la - lb])
-
-
-def _close_tree(widget) -> None:
-    # Close a widget and, depth first, every widget inside it.
-    for child in getattr(widget, "children", ()):
-        _close_tree(child)
-    widget.close()
