@@ -209,6 +209,7 @@ def test_04_derivation_and_the_notes_barycentrics():
     assert np.allclose(ns.x / ns.z, ns.s)
     assert np.allclose(1 / ns.z, 1 / ns.z0 + ns.q * (1 / ns.z1 - 1 / ns.z0))  # Ek (19)
     assert not np.allclose(ns.z, ns.z0 + ns.q * (ns.z1 - ns.z0))
+    assert ns.misprint > 0.1  # the notes' lines (17)-(18) with 1/z1 are wrong
     assert np.allclose(ns.u_persp, ns.u_true, atol=1e-12)
     assert np.abs(ns.u_affine - ns.u_true).max() > 0.1
     assert ns.residuals["u / w"] < 1e-12 and ns.residuals["1 / w"] < 1e-12
