@@ -33,10 +33,15 @@ def test_core_import_does_not_pull_in_plotting_or_widgets():
     assert out.stdout.strip() == "[]", f"import teachraster loaded {out.stdout.strip()}"
 
 
+#: The lessons by number: issue 4's 00 tour and one per topic of the notes, lesson 05 split by
+#: issue 10 into 05a (the z-buffer, clipping) and 05b (depth precision).
+CURRICULUM = ["00", "01", "02", "03", "04", "05a", "05b", "06", "07"]
+
+
 def test_every_lesson_of_the_curriculum_is_there():
-    """Issue 4's eight lessons: 00 tour, then one per topic of the seeds."""
-    prefixes = sorted(name[:3] for name in LESSON_IDS)
-    assert prefixes == [f"{i:02d}_" for i in range(8)], LESSON_IDS
+    """Every lesson of CURRICULUM, and nothing else, is a notebook ``<number>_<topic>.ipynb``."""
+    prefixes = sorted(name.split("_")[0] for name in LESSON_IDS)
+    assert prefixes == CURRICULUM, LESSON_IDS
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=NB_IDS)
