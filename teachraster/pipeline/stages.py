@@ -24,6 +24,7 @@ Conventions shared by all stages: triangles are indexed 0..M-1 *after* clipping
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -42,7 +43,7 @@ from .render_plan import (
     perspective_effect,
 )
 from .viewport import to_window
-from .zbuffer import resolve
+from .zbuffer import passed_on_arrival, resolve
 
 
 def guard_band(width: int, height: int, bits: int | None) -> float:
@@ -120,18 +121,30 @@ class Visibility:
     ----------
     depth : (m,) float64
         Every fragment's depth as the buffer stores it (after ``depth_format``).
-    passed : (m,) bool
-        Whether the fragment passed the depth test when it arrived (True without the test).
+    pixel : (m,) int64
+        Every fragment's flat pixel index ``row * width + col``.
+    depth_test : bool
+        Whether the test was on (without it, later fragments overwrite earlier ones).
     pixels : (v,) int64
         Flat indices of the covered pixels, ascending.
     winner : (v,) int64
         The fragment each covered pixel shows.
+
+    ``passed`` (m,) bool, whether each fragment passed the depth test when it arrived
+    (always True without the test), is computed on first use (for the trace).
     """
 
     depth: np.ndarray
-    passed: np.ndarray
+    pixel: np.ndarray
+    depth_test: bool
     pixels: np.ndarray
     winner: np.ndarray
+
+    @cached_property
+    def passed(self) -> np.ndarray:
+        if not self.depth_test:
+            return np.ones(len(self.pixel), dtype=bool)
+        return passed_on_arrival(self.pixel, self.depth)
 
 
 def depth_stage(
@@ -145,19 +158,21 @@ def depth_stage(
 ) -> tuple[Visibility, Effect]:
     """5. The z-buffer (Ritschel, *Interpolation and z-buffering*): who is visible where.
 
-    With the test a fragment is kept when its stored depth is strictly smaller than the
-    buffer's, so ties keep the earlier triangle; without it later triangles overwrite
-    earlier ones. Only pixels that fragments of 2+ triangles reach are tested, unless
-    "depth_test" is in ``forced`` (meaningless, and not reported, with the test off).
+    Depth is affine in screen space, so it comes from each triangle's depth plane, one
+    multiply-add per fragment (no barycentrics). With the test a fragment is kept when its
+    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
+    without it later triangles overwrite earlier ones. The plan counts the pixels that
+    fragments of 2+ triangles reach (where the test decides anything); "depth_test" in
+    ``forced`` reports every fragment as tested (the one-pass resolve does the same work
+    either way; meaningless, and not reported, with the test off).
     """
-    depth = blend_each(frags.lam, window[frags.tri, :, 2:3])[:, 0]
-    depth = quantize(depth, depth_format)
+    depth = quantize(frags.plane(window[:, :, 2]), depth_format)
     pixel = frags.row * width + frags.col
     force = "depth_test" in forced and depth_test
-    winner, passed, tested = resolve(pixel, depth, width * height, depth_test, force)
+    winner, tested = resolve(pixel, depth, width * height, depth_test)
     pixels = np.flatnonzero(winner >= 0)
     effect = depth_test_effect(depth_test, force, tested, len(pixels))
-    return Visibility(depth, passed, pixels, winner[pixels]), effect
+    return Visibility(depth, pixel, depth_test, pixels, winner[pixels]), effect
 
 
 def interpolate_stage(
@@ -197,8 +212,8 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
-    weights = frags.lam[shade].copy()
+    weights = frags.weights(shade)
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     if persp.any():  # f/w and 1/w are affine in screen space
         weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
-    return blend_each(weights, attrs[tri])
+    return blend_each(weights, attrs, index=tri)
