@@ -197,7 +197,7 @@ def interpolate_stage(
     if every:
         values = values[visible.winner]
     # Count the triangles whose visible (or, forced, all) fragments were really divided.
-    shaded_tris = np.unique(frags.tri[shade])
+    shaded_tris = np.flatnonzero(np.bincount(frags.tri[shade], minlength=len(w)))
     n_persp = len(shaded_tris) if divide_all else int(unequal[shaded_tris].sum())
     m = len(clipped.clip)
     perspective = perspective_effect(k, len(shaded_tris), n_persp, m, interpolation, divide_all)
@@ -212,8 +212,10 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
-    weights = frags.weights(shade)
+    weights = frags.weights_at(tri, frags.col[shade] + 0.5, frags.row[shade] + 0.5)
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
-    if persp.any():  # f/w and 1/w are affine in screen space
+    if persp.all():  # f/w and 1/w are affine in screen space (no masking needed)
+        weights = weights_per_row(weights, w[tri])
+    elif persp.any():
         weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
     return blend_each(weights, attrs, index=tri)
