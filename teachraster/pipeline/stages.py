@@ -73,7 +73,7 @@ def clip_stage(
     clipped = clip_triangles(clip, attrs, guard=guard_band(width, height, bits), force=force)
     cut = clipped.status == CLIPPED
     # Which cuts were the near/far planes, and which only the guard band far off screen.
-    n_guard = int((cut & (classify(clip, None) == INSIDE)).sum())
+    n_guard = int((classify(clip[cut], None) == INSIDE).sum()) if cut.any() else 0
     n_drop = int((clipped.status == DROPPED).sum())
     effect = clipping_effect(len(clip), int(cut.sum()) - n_guard, n_guard, n_drop, force)
     return clipped, effect
