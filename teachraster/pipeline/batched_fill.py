@@ -75,12 +75,16 @@ class Fragments:
         points outside the triangle get negative weights (extrapolation).
         """
         lam = np.empty((len(tri), 3))
+        area = self.area2[tri]
         for k, (ax, ay, dx, dy) in enumerate(self._edges):
             # E(a, b, p) = (b - a).x (p.y - a.y) - (b - a).y (p.x - a.x), for edge a = v_k+1,
             # b = v_k+2; one gather per per-triangle number (contiguous, cheap).
-            e = dx[tri] * (y - ay[tri])
-            e -= dy[tri] * (x - ax[tri])
-            np.divide(e, self.area2[tri], out=lam[:, k])
+            e = y - ay[tri]
+            e *= dx[tri]
+            d = x - ax[tri]
+            d *= dy[tri]
+            e -= d
+            np.divide(e, area, out=lam[:, k])
         return lam
 
     @cached_property
@@ -108,8 +112,18 @@ class Fragments:
             A = (d1 * e2[:, 1] - d2 * e1[:, 1]) / self.area2
             B = (d2 * e1[:, 0] - d1 * e2[:, 0]) / self.area2
         t = self.tri
-        out = f[t, 0] + A[t] * (self.col + 0.5 - v[t, 0, 0]) + B[t] * (self.row + 0.5 - v[t, 0, 1])
-        np.clip(out, f.min(axis=1)[t], f.max(axis=1)[t], out=out)
+        x0, y0, f0 = (np.ascontiguousarray(c) for c in (v[:, 0, 0], v[:, 0, 1], f[:, 0]))
+        # f0 + A (x - x0) + B (y - y0), in place on two fragment-sized arrays.
+        out = self.col + 0.5
+        out -= x0[t]
+        out *= A[t]
+        out += f0[t]
+        dy = self.row + 0.5
+        dy -= y0[t]
+        dy *= B[t]
+        out += dy
+        np.maximum(out, f.min(axis=1)[t], out=out)
+        np.minimum(out, f.max(axis=1)[t], out=out)
         return out
 
 

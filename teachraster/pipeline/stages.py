@@ -3,12 +3,24 @@
 Lesson 05 follows a triangle from clip space to a pixel; each step of that journey is one
 function here, and ``render`` is just these calls in a row::
 
-    clip_stage       clip space   -> ClipResult (triangles cut at near/far), Effect
-    viewport_stage   ClipResult   -> window (x, y, z) per vertex
-    cull_stage       window       -> culled (bool per triangle), Effect
-    fill_stage       window       -> Fragments (covered pixel centres, barycentrics)
-    depth_stage      Fragments    -> Visibility (stored depths, the z-buffer's winners), Effect
-    interpolate_stage Visibility  -> attribute values at the visible pixels, two Effects
+    clip_stage        (N, 3, 4) clip, (N, 3, k) attrs -> ClipResult, Effect
+    viewport_stage    ClipResult -> (M, 3, 3) window x, y, z
+    cull_stage        window     -> (M,) bool culled, Effect
+    fill_stage        window     -> Fragments: (triangle, row, col) of every covered centre
+    depth_stage       Fragments  -> Visibility: stored depth per fragment, winner per pixel, Effect
+    interpolate_stage Visibility -> (v, k) attributes at the v visible pixels, two Effects
+
+What crosses each boundary, for code that extends a stage (tiles, multisampling, texture
+derivatives):
+
+- :class:`~teachraster.pipeline.clipping.ClipResult`: ``clip`` (M, 3, 4), ``attrs``
+  (M, 3, k), ``parent`` (M,) input index, ``status`` (N,), the cut ``polygons``;
+- :class:`~teachraster.pipeline.batched_fill.Fragments`: ``tri``, ``row``, ``col`` (m,) are
+  generated once; nothing is evaluated at them until asked: ``weights(index)`` /
+  ``weights_at(tri, x, y)`` give barycentrics at fragments or at any point (sample
+  positions, helper pixels), ``plane(values)`` an affine per-vertex quantity (depth);
+- :class:`Visibility`: ``depth`` and ``pixel`` (m,) per fragment, ``pixels`` (v,) covered
+  flat pixel indices and ``winner`` (v,) the fragment each shows; ``passed`` on demand.
 
 Every stage receives and returns plain numpy arrays and small frozen dataclasses (the trace
 contract); the words that explain a stage's decision live in
@@ -166,7 +178,9 @@ def depth_stage(
     ``forced`` reports every fragment as tested (the one-pass resolve does the same work
     either way; meaningless, and not reported, with the test off).
     """
-    depth = quantize(frags.plane(window[:, :, 2]), depth_format)
+    depth = frags.plane(window[:, :, 2])  # a fresh array: float64 needs no copy
+    if depth_format != "float64":
+        depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
     force = "depth_test" in forced and depth_test
     winner, tested = resolve(pixel, depth, width * height, depth_test)
