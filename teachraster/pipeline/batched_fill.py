@@ -192,10 +192,17 @@ def rasterize_batch(
     # Every line applies all three edge tests: coverage is the intersection of the three
     # half-planes, so an edge whose y-range misses the line still bounds it correctly (on
     # the exact integer grid the answer is identical to an active edge table's).
+    # Per-triangle numbers are gathered per line from contiguous 1-D arrays (indexing the
+    # (n, 3, 2) block with two index arrays takes a slow path in numpy).
+    corner = [[np.ascontiguousarray(p[:, k, c]) for c in (0, 1)] for k in range(3)]
     for k in range(3):
-        a, b = p[owner, k], p[owner, (k + 1) % 3]
+        # (L, 2) views of (2, L) arrays: each coordinate stays contiguous for edge_bounds.
+        a = np.stack([corner[k][0][owner], corner[k][1][owner]]).T
+        j = (k + 1) % 3
+        b = np.stack([corner[j][0][owner], corner[j][1][owner]]).T
+        top_left = np.ascontiguousarray(setup.top_left[:, k])[owner]
         e_lo, e_hi, e_ok, _ = edge_bounds(
-            a, b, setup.top_left[owner, k], y, unit, half, exact,
+            a, b, top_left, y, unit, half, exact,
             first_col=0, last_col=width - 1, crossings=False,
         )  # fmt: skip
         np.maximum(lo, e_lo, out=lo)
