@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.fill import CULL
-from ..core.interpolation import MODES, blend_each, weights_per_row
+from ..core.interpolation import MODES, blend_each, convex_weights, weights_per_row
 from ..core.snapping import SUBPIXEL_BITS, check_bits
 from ..core.validate import as_finite, as_size, check_choice
 from .batched_fill import rasterize_batch, snapped_area2
@@ -342,7 +342,9 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
-    weights = frags.lam[shade].copy()
+    # Weights from the unsnapped set-up can be slightly negative at a covered centre that
+    # snapping brought inside an edge: made convex, so the value stays within range.
+    weights = convex_weights(frags.lam[shade])
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     if persp.any():  # f/w and 1/w are affine in screen space (Ek, *Triangles and Perspective Correct Interpolation*, eq. 19)
         weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
