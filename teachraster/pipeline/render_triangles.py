@@ -20,14 +20,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.fill import CULL
-from ..core.interpolation import MODES, blend_each, convex_weights, weights_per_row
-from ..core.snapping import SUBPIXEL_BITS, check_bits
-from ..core.validate import as_finite, as_size, check_choice
+from ..core.interpolation import blend_each, convex_weights, weights_per_row
+from ..core.snapping import SUBPIXEL_BITS
 from .batched_fill import rasterize_batch, snapped_area2
 from .clipping import CLIPPED, DROPPED, INSIDE, classify, clip_triangles
-from .depth import DEPTH_FORMATS, quantize
-from .render_plan import Effect, Plan, parse_force
+from .depth import quantize
+from .inputs import check_render
+from .render_plan import Effect, Plan
 from .viewport import to_window
 
 
@@ -96,20 +95,6 @@ class Frame:
         return self.triangle_id >= 0
 
 
-def _check_clip(clip, attrs):
-    if np.size(clip) == 0:  # an empty scene, however it is spelt ([] or (0, 3, 4))
-        clip = np.zeros((0, 3, 4))
-    clip = as_finite("clip", clip, (None, 3, 4))
-    n = len(clip)
-    if attrs is None:
-        return clip, np.zeros((n, 3, 0))
-    arr = np.asarray(attrs, dtype=np.float64)
-    if arr.ndim == 2:
-        arr = arr[:, :, None]
-    arr = as_finite("attrs", arr, (n, 3, None))
-    return clip, arr
-
-
 def _guard(width: int, height: int, bits: int | None) -> float:
     """NDC guard band G: window |x|, |y| <= (G + 1) * size / 2 stay just inside the range
     where the fixed-point edge functions are exact (|x| < 2**(29 - bits) px)."""
@@ -136,6 +121,7 @@ def render(
     force=None,
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
+    max_pixels: int | None = None,
 ) -> Frame:
     """Render clip-space triangles into a ``height`` × ``width`` frame.
 
@@ -162,6 +148,14 @@ def render(
         Record every stage (see :class:`RenderTrace`).
     subpixel_bits : int or None
         Snapping precision, as in :func:`teachraster.rasterize`.
+    max_pixels : int, optional
+        Largest ``width * height`` allowed (default 2**28 = 16384²): a larger frame raises
+        a ValueError saying what it would cost, before anything is allocated.
+
+    Raises
+    ------
+    ValueError, TypeError
+        For a bad argument, naming it (see :mod:`teachraster.pipeline.inputs`).
 
     Examples
     --------
@@ -175,13 +169,11 @@ def render(
     >>> print(frame.plan["clipping"].why)
     no triangle crosses the near or far plane: nothing to clip
     """
-    clip, attrs = _check_clip(clip, attrs)
-    width, height = as_size("width", width), as_size("height", height)
-    check_choice("cull", cull, CULL)
-    check_choice("depth_format", depth_format, DEPTH_FORMATS)
-    check_choice("interpolation", interpolation, MODES)
-    subpixel_bits = check_bits(subpixel_bits)
-    forced = parse_force(force)
+    a = check_render(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull,
+                     depth_format=depth_format, interpolation=interpolation, force=force,
+                     trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
+    clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
+    depth_test, trace, forced = a.depth_test, a.trace, a.forced
     n_in, k = len(clip), attrs.shape[2]
     effects = []
 
