@@ -114,10 +114,9 @@ def as_finite(name: str, value, shape: tuple[int | None, ...] | None) -> np.ndar
     """Return ``value`` as a float64 array of ``shape`` (``None`` = any), or raise.
 
     Errors name the offending argument, so a student sees *which* input was wrong:
-    a TypeError for what is not an array of real numbers (strings, bytes, mappings,
-    sets, complex numbers, None entries, ragged nested lists) and a ValueError for a
-    wrong shape, NaN, infinity or a number too large for a float (``10**400``).
-    Complex values are refused rather than silently losing their imaginary part.
+    a TypeError for what is not an array of real numbers (see :func:`as_real`) and a
+    ValueError for a wrong shape, NaN, infinity or a number too large for a float
+    (``10**400``).
 
     >>> as_finite("w", [1, 2, 3], (3,))
     array([1., 2., 3.])
@@ -125,6 +124,25 @@ def as_finite(name: str, value, shape: tuple[int | None, ...] | None) -> np.ndar
     Traceback (most recent call last):
     ...
     TypeError: w must be numeric (real numbers), got complex values
+    """
+    arr = as_real(name, value, shape)
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        where = tuple(int(i) for i in np.argwhere(bad)[0]) if arr.ndim else ()
+        raise ValueError(
+            f"{name} contains NaN or infinity (or a number too large for a float): "
+            f"{arr[where].item()!r} at index {list(where)}"
+        )
+    return arr
+
+
+def as_real(name: str, value, shape: tuple[int | None, ...] | None = None) -> np.ndarray:
+    """``value`` as a float64 array of ``shape`` (``None`` = any); NaN and inf pass.
+
+    A TypeError naming ``name`` for what is not an array of real numbers: strings, bytes,
+    mappings, sets, complex numbers (refused rather than silently losing their imaginary
+    part), None entries, ragged nested lists; a ValueError for a wrong shape or a Python
+    integer too large for a float.
     """
     raw = _as_array(name, value)
     kind = raw.dtype.kind
@@ -137,20 +155,12 @@ def as_finite(name: str, value, shape: tuple[int | None, ...] | None) -> np.ndar
         for item in raw.flat:
             _check_scalar(name, item)
     try:
-        with np.errstate(all="ignore"):  # long doubles beyond float64 become inf: caught below
-            arr = np.array(raw, dtype=np.float64)
+        with np.errstate(all="ignore"):  # long doubles beyond float64 become inf: caught later
+            return np.array(raw, dtype=np.float64)
     except OverflowError:
         raise ValueError(f"{name} holds a number too large for a float (over 1.8e308)") from None
     except (TypeError, ValueError) as exc:
         raise TypeError(f"{name} must be numeric array-like: {exc}") from None
-    bad = ~np.isfinite(arr)
-    if bad.any():
-        where = tuple(int(i) for i in np.argwhere(bad)[0]) if arr.ndim else ()
-        raise ValueError(
-            f"{name} contains NaN or infinity (or a number too large for a float): "
-            f"{arr[where].item()!r} at index {list(where)}"
-        )
-    return arr
 
 
 def check_shape(name: str, got: tuple[int, ...], shape: tuple[int | None, ...]) -> None:
