@@ -47,18 +47,20 @@ def convex_weights(lam: np.ndarray) -> np.ndarray:
     (exactly 0) keep their exact values. Two degenerate cases that only rounding can
     produce are settled explicitly so that the result is *always* convex: a weight that
     overflowed to +inf (a set-up area that underflowed) takes the whole row, and a row
-    whose weights were all <= 0 becomes (1/3, 1/3, 1/3).
+    whose weights were all <= 0 (or NaN) becomes (1/3, 1/3, 1/3).
 
     >>> convex_weights(np.array([[-0.25, 0.5, 0.75], [0.2, 0.3, 0.5]]))
     array([[0. , 0.4, 0.6],
            [0.2, 0.3, 0.5]])
     """
     lam = np.asarray(lam, dtype=np.float64)
-    fix = ((lam < 0) | np.isposinf(lam)).any(axis=-1)
+    ok = ((lam >= 0) & (lam < np.inf)).all(axis=-1)  # NaN fails both tests
+    with np.errstate(invalid="ignore"):  # inf + -inf: such a row is fixed anyway
+        fix = ~ok | ~(lam[..., 0] + lam[..., 1] + lam[..., 2] > 0)
     if not fix.any():
         return lam
     out = lam.copy()
-    rows = np.maximum(out[fix], 0.0)
+    rows = np.fmax(out[fix], 0.0)  # fmax: a NaN weight (never from finite input) counts as 0
     huge = np.isposinf(rows)
     some = huge.any(axis=-1)
     rows[some] = huge[some]
