@@ -44,7 +44,7 @@ def as_int(name: str, value, *, minimum: int | None = None, maximum: int | None 
     try:
         out = operator.index(value)
     except TypeError:
-        raise TypeError(f"{name} must be an int, got {_short(value)}") from None
+        raise TypeError(f"{name} must be an int, got {short_repr(value)}") from None
     if not -INT_LIMIT - 1 <= out <= INT_LIMIT:
         raise ValueError(f"{name} is too large: {out} does not fit a 64-bit integer")
     if minimum is not None and out < minimum:
@@ -94,7 +94,7 @@ def as_bool(name: str, value) -> bool:
     test *on*.
     """
     if not isinstance(value, bool | np.bool_):
-        raise TypeError(f"{name} must be True or False, got {_short(value)}")
+        raise TypeError(f"{name} must be True or False, got {short_repr(value)}")
     return bool(value)
 
 
@@ -106,7 +106,7 @@ def check_choice(name: str, value, choices) -> None:
         ok = False
     if not ok:
         raise ValueError(
-            f"{name} must be one of {', '.join(map(repr, choices))}; got {_short(value)}"
+            f"{name} must be one of {', '.join(map(repr, choices))}; got {short_repr(value)}"
         )
 
 
@@ -199,12 +199,12 @@ def _check_scalar(name: str, item) -> None:
     try:
         float(item)  # Fraction, Decimal, ...: anything with a real value
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be numeric (real numbers), got {_short(item)}") from None
+        raise TypeError(f"{name} must be numeric (real numbers), got {short_repr(item)}") from None
     except OverflowError:
         pass  # reported by the conversion, with the other too-large numbers
 
 
-def _short(value) -> str:
+def short_repr(value) -> str:
     """``repr(value)``, cut short: a message must stay readable whatever was passed."""
     text = repr(value)
     return text if len(text) <= 80 else text[:77] + "..."

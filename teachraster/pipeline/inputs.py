@@ -10,7 +10,6 @@ have cost instead of after minutes of allocation.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,7 +17,15 @@ import numpy as np
 from ..core.fill import CULL
 from ..core.interpolation import MODES
 from ..core.snapping import check_bits
-from ..core.validate import as_bool, as_finite, as_size, check_choice, check_pixels, check_shape
+from ..core.validate import (
+    as_bool,
+    as_finite,
+    as_size,
+    check_choice,
+    check_pixels,
+    check_shape,
+    short_repr,
+)
 from .depth import DEPTH_FORMATS
 from .render_plan import parse_force
 
@@ -50,13 +57,18 @@ class RenderInputs:
 
 
 def check_force(force) -> frozenset[str]:
-    """``force`` as a set of effect names; a mapping is refused (its keys are no request)."""
-    if isinstance(force, Mapping):
+    """``force`` as a set of effect names: None, "all", one name, or a list, tuple or set of
+    names. Anything else (a mapping, whose keys are no request; an array) is a TypeError.
+    """
+    if force is None or isinstance(force, str):
+        return parse_force(force)
+    names = list(force) if isinstance(force, list | tuple | set | frozenset) else None
+    if names is None or not all(isinstance(name, str) for name in names):
         raise TypeError(
-            f"force must be None, 'all', an effect name or a list of names, got a "
-            f"{type(force).__name__}"
+            "force must be None, 'all', an effect name or a list of effect names, got "
+            f"{short_repr(force)}"
         )
-    return parse_force(force)
+    return parse_force(names)
 
 
 def check_clip(clip) -> np.ndarray:

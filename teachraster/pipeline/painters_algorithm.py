@@ -28,6 +28,8 @@ def painter_order(clip, key: str = "max") -> np.ndarray:
     """
     check_choice("key", key, KEYS)
     clip = check_clip(clip)
+    if len(clip) == 0:
+        return np.zeros(0, dtype=np.int64)
     front = clip[..., 3] > 0
     z = np.where(front, to_window(np.where(front[..., None], clip, 1.0), 2, 2)[..., 2], np.nan)
     depth = {"max": np.nanmax, "mean": np.nanmean, "min": np.nanmin}[key](
@@ -49,5 +51,7 @@ def painter(clip, width: int, height: int, *, attrs=None, key: str = "max", **kw
     if attrs is not None:
         attrs = check_attrs(attrs, len(clip))[order]
     frame = render_clip(clip, width, height, attrs=attrs, depth_test=False, **kwargs)
-    ids = np.where(frame.triangle_id >= 0, order[np.maximum(frame.triangle_id, 0)], -1)
+    ids = frame.triangle_id  # input order: drawing-order ids mapped back
+    if len(order):
+        ids = np.where(ids >= 0, order[np.maximum(ids, 0)], -1)
     return Frame(ids, frame.attrs, frame.depth, frame.plan, frame.trace)

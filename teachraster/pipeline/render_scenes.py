@@ -12,13 +12,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..core.validate import check_choice
 from .camera import Camera
 from .inputs import check_force, check_size
 from .render_plan import Effect, Plan
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 from .scenes import Scene
-from .texture import sample
+from .texture import FILTERS, sample
 
 
 @dataclass(frozen=True)
@@ -79,6 +80,7 @@ def render_scene(
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a teachraster Camera, got {type(camera).__name__}")
     width, height, max_pixels = check_size(width, height, max_pixels)
+    check_choice("texture_filter", texture_filter, FILTERS)
     forced = check_force(force)
     mesh = scene.mesh
     names = sorted(mesh.attrs) if "attributes" in forced else list(scene.uses)
