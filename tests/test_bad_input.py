@@ -422,3 +422,33 @@ def test_obj_numbers_are_ascii(word):
         tr.read_obj("v 0 0 0\nv 1 " + word + " 0\n")
     mesh = tr.read_obj("v 0 0 0\nv +1.5e0 -.5 2.\nv 1 1 1\nf 1 2 -1\n")
     assert mesh.positions[1].tolist() == [1.5, -0.5, 2.0]
+
+
+def test_numpy_integer_steps_and_plot_sizes():
+    """A trace step given as np.int8 on a trace longer than 127 steps (k % n used to overflow
+    inside int8); a 255-pixel grid given as np.uint8 (width + 1 used to wrap to 0)."""
+    fill = tr.rasterize(tri(xy=[[0, 0], [20, 0], [0, 20]]), 20, 20, trace=True)
+    assert len(fill.trace) > 127
+    assert fill.trace.step(np.int8(100)) == fill.trace.step(100)
+    with pytest.raises(TypeError, match=r"\bk\b"):
+        fill.trace.step(1.0)
+    import argparse
+
+    from teachraster.cli.commands import parse_size
+
+    assert parse_size("16x12") == (16, 12)
+    for bad in ("1_6x16", "+16x16", "\u0661\u0666x16"):
+        with pytest.raises(argparse.ArgumentTypeError):
+            parse_size(bad)
+    plt = pytest.importorskip("matplotlib.pyplot")
+    from teachraster.plotting import plot_pixel_grid
+
+    fig, ax = plt.subplots()
+    try:
+        grid = plot_pixel_grid(ax, np.uint8(255), np.uint8(2), ticks=np.int8(4))
+        assert ax.get_xlim() == (0.0, 255.0)
+        assert grid.ticks == 4
+        with pytest.raises(TypeError, match="width"):
+            plot_pixel_grid(ax, 2.5, 2)
+    finally:
+        plt.close(fig)

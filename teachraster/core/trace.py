@@ -20,6 +20,7 @@ import numpy as np
 from .bbox import BBox
 from .half_planes import HalfPlaneTrace
 from .span_tables import SpanTrace
+from .validate import as_int
 
 
 @dataclass(frozen=True)
@@ -160,6 +161,7 @@ class FillTrace:
 
     def step(self, k: int) -> Step:
         """Step ``k`` (negative counts from the end), with its caption."""
+        k = as_int("k", k)  # a Python int: np.int8(5) % 300 would overflow inside int8
         n = len(self)
         if not -n <= k < n:
             raise IndexError(f"step {k} out of range for a trace of {n} steps")
