@@ -55,8 +55,9 @@ def convex_weights(lam: np.ndarray) -> np.ndarray:
     """
     lam = np.asarray(lam, dtype=np.float64)
     ok = ((lam >= 0) & (lam < np.inf)).all(axis=-1)  # NaN fails both tests
-    with np.errstate(invalid="ignore"):  # inf + -inf: such a row is fixed anyway
-        fix = ~ok | ~(lam[..., 0] + lam[..., 1] + lam[..., 2] > 0)
+    with np.errstate(invalid="ignore", over="ignore"):  # inf - inf, 1e308 + 1e308: fixed below
+        total = lam[..., 0] + lam[..., 1] + lam[..., 2]
+    fix = ~ok | ~((total > 0) & (total < np.inf))
     if not fix.any():
         return lam
     out = lam.copy()
@@ -64,10 +65,13 @@ def convex_weights(lam: np.ndarray) -> np.ndarray:
     huge = np.isposinf(rows)
     some = huge.any(axis=-1)
     rows[some] = huge[some]
-    total = rows.sum(axis=-1)
-    none = ~(total > 0)
-    rows[none], total[none] = 1.0, 3.0
-    out[fix] = rows / total[:, None]
+    # Divided by their largest entry first, so that the sum cannot overflow (weights near
+    # the float maximum); the largest entry becomes exactly 1.
+    top = rows.max(axis=-1, keepdims=True)
+    none = ~(top[:, 0] > 0)
+    rows[none], top[none] = 1.0, 1.0
+    rows /= top
+    out[fix] = rows / rows.sum(axis=-1, keepdims=True)
     return out
 
 
