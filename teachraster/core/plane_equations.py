@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validate import as_finite
+from .validate import as_finite, as_size
 
 
 def _values(f) -> np.ndarray:
@@ -69,6 +69,7 @@ class PlaneEquation:
         array([[1.5, 2.5, 3.5],
                [3.5, 4.5, 5.5]])
         """
+        ncols, nrows = as_size("ncols", ncols), as_size("nrows", nrows)
         start = self(x0, y0)
         shape = np.shape(start)
         col_steps = np.broadcast_to(self.dx, shape)

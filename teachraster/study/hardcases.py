@@ -44,6 +44,7 @@ from ..core.interpolation import blend
 from ..core.plane_equations import attribute_plane, plane_equation
 from ..core.snapping import SUBPIXEL_BITS, snap
 from ..core.triangle import Triangle
+from ..core.validate import as_int, as_size
 from ..pipeline.camera import perspective
 from ..pipeline.render_triangles import Frame
 from ..pipeline.render_triangles import render as render_clip
@@ -242,6 +243,7 @@ def naive_coverage(
 
 def naive_counts(triangles, width: int, height: int, **kwargs) -> np.ndarray:
     """Sum of :func:`naive_coverage` over triangles."""
+    width, height = as_size("width", width), as_size("height", height)
     counts = np.zeros((height, width), dtype=np.int64)
     for xy in triangles:
         counts += naive_coverage(xy, width, height, **kwargs)
@@ -250,6 +252,7 @@ def naive_counts(triangles, width: int, height: int, **kwargs) -> np.ndarray:
 
 def naive_window(clip, width: int, height: int) -> np.ndarray:
     """Divide by w *before* clipping: a vertex behind the eye is mirrored, w = 0 gives inf/NaN."""
+    width, height = as_size("width", width), as_size("height", height)
     c = np.asarray(clip, dtype=np.float64)
     with np.errstate(divide="ignore", invalid="ignore"):
         ndc = c[..., :3] / c[..., 3:4]
@@ -260,6 +263,7 @@ def naive_window(clip, width: int, height: int) -> np.ndarray:
 
 def naive_stepped32(xy, f, x0: float, y0: float, ncols: int, nrows: int) -> np.ndarray:
     """Seed 002's incremental stepping (start, then ``+= dx`` per pixel) in float32."""
+    ncols, nrows = as_size("ncols", ncols), as_size("nrows", nrows)
     plane = plane_equation(xy, f)
     start = np.float32(plane(x0, y0))
     dx, dy = np.float32(plane.dx), np.float32(plane.dy)
@@ -272,6 +276,7 @@ def naive_stepped32(xy, f, x0: float, y0: float, ncols: int, nrows: int) -> np.n
 
 def naive_affine(xy, f, width: int, height: int) -> np.ndarray:
     """Screen-space (affine) interpolation everywhere in the image, ignoring w."""
+    width, height = as_size("width", width), as_size("height", height)
     v = np.asarray(xy, dtype=np.float64)
     ys, xs = np.mgrid[0:height, 0:width] + 0.5
     (ax, ay), (bx, by), (cx, cy) = v
@@ -748,6 +753,7 @@ def fill_window(xy, f, row0: int, col0: int, size: int, method: str):
     that is gigabytes, so this runs the same core steps (snap and set up edges, bounding box,
     fill, exact barycentrics, blend) on the window only.
     """
+    row0, col0, size = as_int("row0", row0), as_int("col0", col0), as_size("size", size)
     setup = setup_edges(np.asarray(xy, dtype=np.float64), SUBPIXEL_BITS)
     box = pixel_bbox(setup, col0 + size, row0 + size)
     assert box.row0 >= row0 and box.col0 >= col0, "triangle leaves the window"
