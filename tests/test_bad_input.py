@@ -452,3 +452,68 @@ def test_numpy_integer_steps_and_plot_sizes():
             plot_pixel_grid(ax, 2.5, 2)
     finally:
         plt.close(fig)
+
+
+BAD_VALUES = {
+    "complex": [1j, 0, 0],
+    "ragged": [[1, 2], [3]],
+    "str": "abc",
+    "bytes": b"abc",
+    "dict": {"a": 1},
+    "huge int": [10**400, 0, 0],
+    "None": None,
+}
+ENTRY_POINTS = {
+    "eye": lambda b: tr.Camera(eye=b, target=(0, 0, 0)),
+    "fov_y": lambda b: tr.perspective(b, 1.0, 0.1, 10),
+    "left": lambda b: tr.orthographic(b, 1, -1, 1, 0.1, 10),
+    "axis": lambda b: tr.rotate(b, 30),
+    "degrees": lambda b: tr.rotate("x", b),
+    "x": lambda b: tr.translate(b, 0, 0),
+    "z": lambda b: tr.seed_depth(b, 0.1, 10),
+    "z_view": lambda b: tr.window_depth(b, 0.1, 10),
+    "z_a": lambda b: tr.fights(b, [1, 2, 3], 0.1, 10, "unorm24"),
+    "near": lambda b: tr.linear_depth([1.0], b, 10),
+    "depth": lambda b: tr.quantize(b, "unorm24"),
+    "points": lambda b: tr.barycentric(GOOD_XY, b),
+    "f": lambda b: tr.plane_equation(GOOD_XY, b),
+    "p": lambda b: tr.edge_function((0, 0), (1, 0), b),
+    "a": lambda b: tr.is_top_left(b, (1, 0)),
+    "sorted_xy": lambda b: tr.split_point(b),
+    "colors": lambda b: tr.checkerboard(colors=b),
+    "uv": lambda b: tr.sample(np.ones((2, 2)), b),
+    "positions": lambda b: tr.Mesh(b, [[0, 1, 2]]),
+    "name": lambda b: tr.get_scene(b),
+}
+
+
+@pytest.mark.parametrize("bad", sorted(BAD_VALUES))
+@pytest.mark.parametrize("arg", sorted(ENTRY_POINTS))
+def test_every_entry_point_names_its_argument(arg, bad):
+    """Cameras, matrices, depth mappings, barycentrics, plane equations, textures, meshes and
+    scenes: a ValueError/TypeError naming the argument, never a raw numpy or Python error
+    (OverflowError, KeyError, IndexError, 'could not convert string to float')."""
+    import re
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises((ValueError, TypeError)) as info:
+            ENTRY_POINTS[arg](BAD_VALUES[bad])
+    assert type(info.value) in (ValueError, TypeError)
+    assert re.search(rf"\b{arg}\b", str(info.value)), str(info.value)
+
+
+def test_degenerate_projections_are_refused():
+    """Equal planes would divide by zero; a field of view must lie in (0, 180) degrees."""
+    with pytest.raises(ValueError, match="left and right must differ"):
+        tr.orthographic(1, 1, -1, 1, 0.1, 10)
+    with pytest.raises(ValueError, match="near and far must differ"):
+        tr.perspective(60, 1.0, 2.0, 2.0)
+    with pytest.raises(ValueError, match="fov_y"):
+        tr.perspective(180, 1.0, 0.1, 10)
+    with pytest.raises(TypeError, match="aspect"):
+        tr.perspective(60, True, 0.1, 10)
+    np.testing.assert_array_equal(
+        tr.perspective(np.float32(90), np.int8(1), 1, np.uint8(3)), tr.perspective(90, 1, 1, 3)
+    )

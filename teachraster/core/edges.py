@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .snapping import to_units, units_per_pixel
+from .validate import as_finite, as_real
 
 
 @dataclass(frozen=True)
@@ -81,7 +82,10 @@ def edge_function(a, b, p) -> np.ndarray:
     >>> float(edge_function([0, 0], [4, 0], [1, 3]))   # p below a→b (y down): inside
     12.0
     """
-    a, b, p = (np.asarray(v, dtype=np.float64) for v in (a, b, p))
+    a, b = as_finite("a", a, (2,)), as_finite("b", b, (2,))
+    p = as_real("p", p)
+    if p.shape[-1:] != (2,):
+        raise ValueError(f"p must have shape (..., 2), got {p.shape}")
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
 
 
@@ -94,6 +98,11 @@ def is_top_left(a, b) -> bool:
     >>> is_top_left((0, 0), (4, 0)), is_top_left((0, 4), (0, 0)), is_top_left((4, 0), (0, 4))
     (True, True, False)
     """
+    return _top_left(as_finite("a", a, (2,)), as_finite("b", b, (2,)))
+
+
+def _top_left(a, b) -> bool:
+    """:func:`is_top_left` without the argument checks, for the set-up's own vertices."""
     return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
 
 
@@ -106,7 +115,7 @@ def setup_edges(xy: np.ndarray, subpixel_bits: int | None) -> EdgeSetup:
     # interior is on the positive side of every edge (culling is decided by the caller).
     perm = np.array([0, 2, 1]) if area2 < 0 else np.array([0, 1, 2])
     p = v[perm]
-    top_left = np.array([is_top_left(p[k], p[(k + 1) % 3]) for k in range(3)])
+    top_left = np.array([_top_left(p[k], p[(k + 1) % 3]) for k in range(3)])
     return EdgeSetup(
         p=p,
         perm=perm,

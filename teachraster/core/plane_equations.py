@@ -15,12 +15,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validate import as_finite, as_size
+from .validate import as_finite, as_size, check_shape
 
 
 def _values(f) -> np.ndarray:
-    arr = np.asarray(f, dtype=np.float64)
-    return as_finite("f", arr, (3,) if arr.ndim == 1 else (3, None))
+    arr = as_finite("f", f, None)
+    check_shape("f", arr.shape, (3,) if arr.ndim == 1 else (3, None))
+    return arr
 
 
 def _nondegenerate(c) -> None:

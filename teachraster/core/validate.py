@@ -15,6 +15,8 @@ ValueError: width must be positive, got 0
 
 from __future__ import annotations
 
+import math
+import numbers
 import operator
 from collections.abc import Mapping, Set
 
@@ -51,6 +53,30 @@ def as_int(name: str, value, *, minimum: int | None = None, maximum: int | None 
         raise ValueError(f"{name} must be >= {minimum}, got {out}")
     if maximum is not None and out > maximum:
         raise ValueError(f"{name} must be <= {maximum}, got {out}")
+    return out
+
+
+def as_float(name: str, value, *, finite: bool = True) -> float:
+    """A real number (Python or numpy, not a bool, string or complex) as a Python float.
+
+    >>> as_float("fov_y", np.float32(60))
+    60.0
+    >>> as_float("near", 10**400)
+    Traceback (most recent call last):
+    ...
+    ValueError: near is too large for a float: 1000000000000000000000000000000000000000000000000000000000000000000000...
+    """
+    scalar = isinstance(value, numbers.Real) or (
+        isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"
+    )
+    if not scalar or isinstance(value, bool | np.bool_):
+        raise TypeError(f"{name} must be a real number, got {short_repr(value)}")
+    try:
+        out = float(value)
+    except OverflowError:
+        raise ValueError(f"{name} is too large for a float: {short_repr(value)}") from None
+    if finite and not math.isfinite(out):
+        raise ValueError(f"{name} must be finite, got {out}")
     return out
 
 

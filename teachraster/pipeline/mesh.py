@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core.validate import as_finite, as_int, check_shape
+from ..core.validate import as_finite, as_float, as_int, check_shape
 
 
 def _integral(arr: np.ndarray) -> bool:
@@ -170,7 +170,7 @@ def translate(x: float, y: float, z: float) -> np.ndarray:
     array([1., 2., 3., 1.])
     """
     m = np.eye(4)
-    m[:3, 3] = as_finite("translation", [x, y, z], (3,))
+    m[:3, 3] = [as_float("x", x), as_float("y", y), as_float("z", z)]
     return m
 
 
@@ -204,7 +204,7 @@ def rotate(axis, degrees: float) -> np.ndarray:
     if length == 0:
         raise ValueError("axis must not be the zero vector")
     x, y, z = a / length
-    degrees = float(degrees)
+    degrees = as_float("degrees", degrees)
     if degrees % 90 == 0:
         # Quarter turns exactly: cos(90°) in floating point is 6e-17, not 0, which would
         # leave a floor that is not quite flat.
@@ -221,7 +221,7 @@ def rotate(axis, degrees: float) -> np.ndarray:
 
 
 def _positive(name: str, value) -> float:
-    v = float(value)
+    v = as_float(name, value, finite=False)
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
     return v

@@ -79,12 +79,7 @@ def checkerboard(
             f"checks must be <= texels (a square must be at least one texel wide), "
             f"got checks={checks}, texels={texels}"
         )
-    try:
-        cols = np.array(colors, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"colors must be numeric array-like of shape (2, C), got {colors!r}"
-        ) from None
+    cols = as_real("colors", colors)
     if cols.ndim != 2 or cols.shape[0] != 2 or cols.shape[1] < 1:
         raise ValueError(f"colors must have shape (2, C): two colours, got {cols.shape}")
     if not (np.isfinite(cols).all() and ((cols >= 0) & (cols <= 1)).all()):
