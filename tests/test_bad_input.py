@@ -434,7 +434,7 @@ def test_numpy_integer_steps_and_plot_sizes():
         fill.trace.step(1.0)
     import argparse
 
-    from teachraster.cli.commands import parse_size
+    from teachraster.cli.arguments import parse_size
 
     assert parse_size("16x12") == (16, 12)
     for bad in ("1_6x16", "+16x16", "\u0661\u0666x16"):

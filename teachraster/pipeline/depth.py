@@ -1,6 +1,6 @@
 """Depth mappings and depth-buffer precision: why distant surfaces z-fight (Ritschel, *Interpolation and z-buffering*).
 
-Seed 003's z-buffer keeps, per pixel, the depth of the nearest fragment so far and warns that a
+Ritschel's (*Interpolation and z-buffering*) z-buffer keeps, per pixel, the depth of the nearest fragment so far and warns that a
 "z-buffer can be inaccurate with few bits" ("aliasing on depth", z-buffer tearing). Which depth
 is stored matters as much as how many bits store it:
 
@@ -116,7 +116,7 @@ def window_depth(z_view, near: float, far: float) -> np.ndarray:
 
 
 def seed_depth(z, near: float, far: float) -> np.ndarray:
-    """Seed 003's ``z' = n + f - f n / z``: the perspective depth in view-distance units.
+    """Ritschel's (*Interpolation and z-buffering*) ``z' = n + f - f n / z``: the perspective depth in view-distance units.
 
     ``z'`` is affine in ``1/z``, so it may be interpolated affinely in screen space (Ritschel, *Interpolation and z-buffering*,
     eq. 12), unlike ``z`` itself; it maps near to near and far to far and preserves order.
