@@ -16,7 +16,7 @@ from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
-from .validate import as_bool, as_int, as_size, check_choice
+from .validate import as_bool, as_int, as_size, check_choice, check_pixels
 
 METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill}
 CULL = (None, "back", "front")
@@ -55,6 +55,7 @@ def rasterize(
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
     cull: str | None = None,
+    max_pixels: int | None = None,
 ) -> Fill:
     """Fill a triangle into a ``height`` × ``width`` image and interpolate its attributes.
 
@@ -82,6 +83,9 @@ def rasterize(
         (8, as in Direct3D). None keeps raw floats, to show what precision does.
     cull : {None, "back", "front"}
         Drop back-facing (clockwise on screen) or front-facing triangles.
+    max_pixels : int, optional
+        Largest ``width * height`` allowed (default 2**28 = 16384²): a larger image raises
+        a ValueError saying what it would cost, before anything is allocated.
 
     Examples
     --------
@@ -99,6 +103,8 @@ def rasterize(
     if not isinstance(tri, Triangle):
         raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
     width, height = as_size("width", width), as_size("height", height)
+    channels = sum(f.size // 3 for f in tri.attrs.values())
+    check_pixels(width, height, max_pixels, 9 + 8 * channels)  # coverage, depth, attributes
     check_choice("method", method, tuple(METHODS))
     check_choice("interpolation", interpolation, FILL_MODES)
     subdivision = as_int("subdivision", subdivision, minimum=1)
@@ -127,7 +133,10 @@ def rasterize(
     modes = MODES if trace else (interpolation,)
     values = {mode: interpolate(lam, packed, tri.w, mode) for mode in modes if mode in MODES}
     if interpolation == "subdivided":
-        values["subdivided"] = subdivided(lam, rows, packed, tri.w, int(subdivision))
+        # A step beyond the widest span anchors only the span ends, like any larger step;
+        # capping it keeps every index sum in int64.
+        step = min(subdivision, width + 1)
+        values["subdivided"] = subdivided(lam, rows, packed, tri.w, step)
     depth_values = None if tri.z is None else blend(lam, tri.z)
 
     image = np.full((height, width, packed.shape[1]), np.nan)

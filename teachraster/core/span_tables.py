@@ -21,6 +21,7 @@ import numpy as np
 
 from .bbox import BBox
 from .edges import EdgeSetup
+from .validate import as_finite
 
 
 @dataclass(frozen=True)
@@ -66,7 +67,7 @@ def split_point(sorted_xy: np.ndarray) -> float | None:
     >>> split_point(np.array([[2.0, 0.0], [0.0, 2.0], [6.0, 4.0]]))
     4.0
     """
-    (u1, v1), (_, v2), (u3, v3) = sorted_xy
+    (u1, v1), (_, v2), (u3, v3) = as_finite("sorted_xy", sorted_xy, (3, 2))
     if v3 == v1:  # zero height: no split, and no division by zero
         return None
     return float((v2 - v1) / (v3 - v1) * (u3 - u1) + u1)
