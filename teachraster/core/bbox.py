@@ -42,9 +42,13 @@ class BBox:
         return np.arange(self.col0, self.col1)
 
 
-def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
-    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n)."""
-    unit, half = setup.unit, setup.half
+def centre_range(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[int, int]:
+    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n).
+
+    ``half`` is the tested point's offset from the pixel corner (default: the centre).
+    """
+    unit = setup.unit
+    half = setup.half if half is None else half
     if setup.exact:  # integer ceil/floor: exact
         first = -((half - lo) // unit)
         last = (hi - half) // unit
@@ -56,10 +60,13 @@ def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
 
 
 def pixel_bbox(setup: EdgeSetup, width: int, height: int) -> BBox:
-    """Bounding box of the triangle's vertices, as pixel index ranges clipped to the image."""
+    """Bounding box of the triangle's vertices, as pixel index ranges clipped to the image.
+
+    The pixels whose tested point (centre, or ``setup.sample``) lies in the box.
+    """
     lo, hi = setup.p.min(axis=0), setup.p.max(axis=0)
-    col0, col1 = centre_range(lo[0], hi[0], setup, width)
-    row0, row1 = centre_range(lo[1], hi[1], setup, height)
+    col0, col1 = centre_range(lo[0], hi[0], setup, width, setup.offset_x)
+    row0, row1 = centre_range(lo[1], hi[1], setup, height, setup.offset_y)
     px = 1.0 / float(setup.unit)
     return BBox(
         row0=row0,

@@ -12,6 +12,8 @@ from .barycentrics import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import EdgeSetup, setup_edges
 from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
+from .multisample import MultiFill, fill_samples
+from .sample_patterns import as_samples, is_single
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
@@ -33,14 +35,35 @@ class Fill:
         Interpolated attributes, NaN outside coverage.
     depth : (height, width) float64 or None
         Window depth (affine in screen space), NaN outside; None when no z was given.
+        Multisampled: evaluated where the attributes are.
     trace : FillTrace or None
         Every step, when ``trace=True``.
+    sample_coverage : (height, width, S) bool or None
+        Coverage of every sample (``samples`` other than 1); ``coverage`` is their "any".
+    sample_attrs : mapping of name to (height, width, S) or (height, width, S, k), or None
+        Attributes at every covered sample (``per_sample=True``), NaN elsewhere.
+    sample_depth : (height, width, S) float64 or None
+        Window depth at every covered sample (multisampled with z), NaN elsewhere.
+    samples : (S, 2) float64 or None
+        The sample offsets inside the pixel as tested (on the internal grid), in px.
     """
 
     coverage: np.ndarray
     attrs: Mapping[str, np.ndarray]
     depth: np.ndarray | None
     trace: FillTrace | None = None
+    sample_coverage: np.ndarray | None = None
+    sample_attrs: Mapping[str, np.ndarray] | None = None
+    sample_depth: np.ndarray | None = None
+    samples: np.ndarray | None = None
+
+    @property
+    def coverage_fraction(self) -> np.ndarray:
+        """(height, width) float64: the fraction of each pixel's samples covered (0 or 1
+        without multisampling)."""
+        if self.sample_coverage is None:
+            return self.coverage.astype(np.float64)
+        return self.sample_coverage.mean(axis=2)
 
 
 def rasterize(
@@ -54,6 +77,9 @@ def rasterize(
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
     cull: str | None = None,
+    samples=1,
+    centroid: bool = False,
+    per_sample: bool = False,
 ) -> Fill:
     """Fill a triangle into a ``height`` × ``width`` image and interpolate its attributes.
 
@@ -81,6 +107,16 @@ def rasterize(
         (8, as in Direct3D). None keeps raw floats, to show what precision does.
     cull : {None, "back", "front"}
         Drop back-facing (clockwise on screen) or front-facing triangles.
+    samples : int or (S, 2) array-like
+        1 (pixel centres), 2, 4, 8 or 16 (the standard patterns of
+        :func:`~teachraster.core.sample_patterns.sample_pattern`), or offsets in [0, 1)²:
+        coverage per sample (``fill.sample_coverage``), each sample decided like a centre.
+    centroid : bool
+        Multisampled: evaluate attributes at the covered sample nearest the centre when
+        the centre is not covered, instead of extrapolating at the centre.
+    per_sample : bool
+        Supersampling: attributes at every covered sample (``fill.sample_attrs``) and
+        ``fill.attrs`` their mean.
 
     Examples
     --------
@@ -104,6 +140,7 @@ def rasterize(
     check_choice("cull", cull, CULL)
     trace = as_bool("trace", trace)
     subpixel_bits = check_bits(subpixel_bits)
+    offsets = _check_samples(samples, method, interpolation, centroid, per_sample)
 
     setup = setup_edges(tri.xy, subpixel_bits)
     box = pixel_bbox(setup, width, height)
@@ -117,12 +154,15 @@ def rasterize(
 
     coverage = np.zeros((height, width), dtype=bool)
     coverage[box.row0 : box.row1, box.col0 : box.col1] = local
-    rows, cols = np.nonzero(coverage)  # row-major, the order of every per-pixel array
-    lam = barycentric_pixels(setup, rows, cols)
-
     # All attributes travel as one (3, K) block, so the per-pixel work (weights, blend,
     # scatter) runs once per fill rather than once per attribute.
     packed, layout = _pack(tri.attrs)
+    multi = None
+    if offsets is not None:  # the samples decide coverage; the centres still drive the trace
+        multi = fill_samples(setup, offsets, (width, height), METHODS[method], coverage,
+                             packed, tri, (interpolation, centroid, per_sample, trace, culled))  # fmt: skip
+    rows, cols = np.nonzero(coverage)  # row-major, the order of every per-pixel array
+    lam = barycentric_pixels(setup, rows, cols)
     modes = MODES if trace else (interpolation,)
     values = {mode: interpolate(lam, packed, tri.w, mode) for mode in modes if mode in MODES}
     if interpolation == "subdivided":
@@ -143,8 +183,42 @@ def rasterize(
             culled, local, algo_trace, lam,
             {mode: _unpack(v, layout) for mode, v in values.items()}, depth_values,
             subdivision if interpolation == "subdivided" else None,
+            None if multi is None else multi.trace,
         )  # fmt: skip
+    if multi is not None:
+        return _multi_result(multi, layout, fill_trace)
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
+
+
+def _check_samples(samples, method, interpolation, centroid, per_sample):
+    """Validated multisampling options: the (S, 2) offsets, or None for one centre sample."""
+    centroid = as_bool("centroid", centroid)
+    per_sample = as_bool("per_sample", per_sample)
+    if is_single(samples):  # one sample at the centre: centroid and per_sample change nothing
+        return None
+    offsets = as_samples(samples)
+    if method not in ("halfplane", "span"):
+        raise ValueError(f"samples: method={method!r} fills pixel centres only; use samples=1")
+    if interpolation == "subdivided":
+        raise ValueError(
+            "interpolation: 'subdivided' steps along spans of pixel centres and is not "
+            "defined with samples > 1; use 'perspective' or 'affine'"
+        )
+    return offsets
+
+
+def _multi_result(multi: MultiFill, layout, fill_trace) -> Fill:
+    """The :class:`Fill` of a multisampled rasterisation."""
+    return Fill(
+        coverage=multi.coverage,
+        attrs=_unpack(multi.attrs, layout),
+        depth=multi.depth,
+        trace=fill_trace,
+        sample_coverage=multi.sample_coverage,
+        sample_attrs=None if multi.sample_attrs is None else _unpack(multi.sample_attrs, layout),
+        sample_depth=multi.sample_depth,
+        samples=multi.offsets,
+    )
 
 
 def _pack(attrs: Mapping[str, np.ndarray]):
@@ -222,7 +296,7 @@ def _describe_setup(setup, box, method, bits, culled, algo_trace):
 
 
 def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, local,
-            algo_trace, lam, values, depth_values, subdivision) -> FillTrace:  # fmt: skip
+            algo_trace, lam, values, depth_values, subdivision, samples) -> FillTrace:  # fmt: skip
     width, height = size
     snapped, area, steps = _describe_setup(setup, box, method, bits, culled, algo_trace)
     first = len(steps)
@@ -258,4 +332,5 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         setup=steps,
         subdivision=subdivision,
         pixel_subdivided=values.get("subdivided"),
+        samples=samples,
     )

@@ -19,6 +19,7 @@ import numpy as np
 
 from .bbox import BBox
 from .half_planes import HalfPlaneTrace
+from .multisample import SampleTrace
 from .span_tables import SpanTrace
 
 
@@ -81,6 +82,10 @@ class FillTrace:
         N of ``interpolation="subdivided"``; None for the other modes.
     pixel_subdivided : mapping of name to (n,) or (n, k) float64, or None
         The subdivided values actually written (``interpolation="subdivided"`` only).
+    samples : SampleTrace or None
+        With ``samples`` other than 1: every sample's tests and where each pixel's
+        attributes were evaluated. The steps and the per-pixel arrays above then describe
+        the pixel-centre pass (what ``samples=1`` fills), for the same step-by-step story.
     """
 
     method: str
@@ -106,6 +111,7 @@ class FillTrace:
     setup: tuple[tuple[str, str], ...]
     subdivision: int | None = None
     pixel_subdivided: Mapping[str, np.ndarray] | None = None
+    samples: SampleTrace | None = None
 
     # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
     @property
