@@ -131,32 +131,15 @@ def rasterize(
     >>> float(fill.attrs["u"][0, 1])     # at the centre (1.5, 0.5): u = x / 4
     0.375
     """
-    if not isinstance(tri, Triangle):
-        raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
-    width, height = as_size("width", width), as_size("height", height)
-    check_choice("method", method, tuple(METHODS))
-    check_choice("interpolation", interpolation, FILL_MODES)
-    subdivision = as_int("subdivision", subdivision, minimum=1)
-    check_choice("cull", cull, CULL)
-    trace = as_bool("trace", trace)
-    subpixel_bits = check_bits(subpixel_bits)
+    width, height, subdivision, trace, subpixel_bits = _check_args(
+        tri, width, height, method, interpolation, subdivision, cull, trace, subpixel_bits
+    )
     offsets = _check_samples(samples, method, interpolation, centroid, per_sample)
-
     setup = setup_edges(tri.xy, subpixel_bits)
     box = pixel_bbox(setup, width, height)
     culled = _culled(setup, cull)
-    if culled:
-        local, algo_trace = np.zeros(box.shape, dtype=bool), None
-    else:
-        local, algo_trace = METHODS[method](setup, box, trace)
-    if setup.area2 == 0:  # zero area covers nothing (exact arithmetic already ensures it)
-        local[:] = False
-
-    coverage = np.zeros((height, width), dtype=bool)
-    coverage[box.row0 : box.row1, box.col0 : box.col1] = local
-    # All attributes travel as one (3, K) block, so the per-pixel work (weights, blend,
-    # scatter) runs once per fill rather than once per attribute.
-    packed, layout = _pack(tri.attrs)
+    coverage, local, algo_trace = _fill_centres(setup, box, method, culled, trace, width, height)
+    packed, layout = _pack(tri.attrs)  # one (3, K) block: per-pixel work once per fill
     multi = None
     if offsets is not None:  # the samples decide coverage; the centres still drive the trace
         multi = fill_samples(setup, offsets, (width, height), METHODS[method], coverage,
@@ -169,13 +152,8 @@ def rasterize(
         values["subdivided"] = subdivided(lam, rows, packed, tri.w, int(subdivision))
     depth_values = None if tri.z is None else blend(lam, tri.z)
 
-    image = np.full((height, width, packed.shape[1]), np.nan)
-    image[coverage] = values[interpolation]
-    attrs = _unpack(image, layout)
-    depth = None
-    if depth_values is not None:
-        depth = np.full((height, width), np.nan)
-        depth[coverage] = depth_values
+    attrs = _unpack(_place(coverage, values[interpolation]), layout)
+    depth = None if depth_values is None else _place(coverage, depth_values)
     fill_trace = None
     if trace:
         fill_trace = _record(
@@ -188,6 +166,38 @@ def rasterize(
     if multi is not None:
         return _multi_result(multi, layout, fill_trace)
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
+
+
+def _place(coverage: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """Per-pixel ``values`` (n, ...) into an image (H, W, ...), NaN outside ``coverage``."""
+    image = np.full((*coverage.shape, *values.shape[1:]), np.nan)
+    image[coverage] = values
+    return image
+
+
+def _check_args(tri, width, height, method, interpolation, subdivision, cull, trace, bits):
+    """Validated arguments of :func:`rasterize` (errors name the argument)."""
+    if not isinstance(tri, Triangle):
+        raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
+    width, height = as_size("width", width), as_size("height", height)
+    check_choice("method", method, tuple(METHODS))
+    check_choice("interpolation", interpolation, FILL_MODES)
+    subdivision = as_int("subdivision", subdivision, minimum=1)
+    check_choice("cull", cull, CULL)
+    return width, height, subdivision, as_bool("trace", trace), check_bits(bits)
+
+
+def _fill_centres(setup, box, method, culled, record, width, height):
+    """Pixel-centre coverage (H, W), its bbox-local part and the algorithm's trace."""
+    if culled:
+        local, algo_trace = np.zeros(box.shape, dtype=bool), None
+    else:
+        local, algo_trace = METHODS[method](setup, box, record)
+    if setup.area2 == 0:  # zero area covers nothing (exact arithmetic already ensures it)
+        local[:] = False
+    coverage = np.zeros((height, width), dtype=bool)
+    coverage[box.row0 : box.row1, box.col0 : box.col1] = local
+    return coverage, local, algo_trace
 
 
 def _check_samples(samples, method, interpolation, centroid, per_sample):
