@@ -42,10 +42,13 @@ class BBox:
         return np.arange(self.col0, self.col1)
 
 
-def centre_range(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[int, int]:
-    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n).
+def centre_ranges(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[np.ndarray, np.ndarray]:
+    """Half-open index ranges [first, stop) of pixel centres c with ``lo <= c <= hi``.
 
-    ``half`` is the tested point's offset from the pixel corner (default: the centre).
+    ``lo`` and ``hi`` are arrays (one range per entry, in internal units); the ranges are
+    clipped to [0, n) and empty ones have ``stop == first``. Integer floor and ceiling on
+    the snapped grid, so the bounds are exact. ``half`` is the tested point's offset from
+    the pixel corner in units (default: the centre; a sample's offset when multisampling).
     """
     unit = setup.unit
     half = setup.half if half is None else half
@@ -55,8 +58,15 @@ def centre_range(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[int, int]
     else:
         first = np.ceil((lo - half) / unit)
         last = np.floor((hi - half) / unit)
-    first, last = int(min(max(first, 0), n)), int(min(last, n - 1))
-    return first, max(first, last + 1)
+    first = np.clip(first, 0, n).astype(np.int64)
+    stop = np.maximum(first, np.minimum(last, n - 1).astype(np.int64) + 1)
+    return first, stop
+
+
+def centre_range(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[int, int]:
+    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n)."""
+    first, stop = centre_ranges(np.asarray(lo), np.asarray(hi), setup, n, half)
+    return int(first), int(stop)
 
 
 def pixel_bbox(setup: EdgeSetup, width: int, height: int) -> BBox:
