@@ -44,7 +44,7 @@ class Fragments:
     facing: np.ndarray
 
 
-def _ranges(starts: np.ndarray, stops: np.ndarray):
+def flat_ranges(starts: np.ndarray, stops: np.ndarray):
     """Flatten the integer ranges [starts[i], stops[i]): (owner index, value) arrays."""
     counts = np.maximum(stops - starts, 0)
     owner = np.repeat(np.arange(len(counts)), counts)
@@ -98,14 +98,49 @@ def rasterize_batch(
     # Raster lines per triangle: centres within the y-range, clipped to the image.
     r0, r1 = centre_ranges(p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1), setup, height)
     r1 = np.where(live, r1, r0)
-    owner, rows = _ranges(r0, r1)
+    owner, rows = flat_ranges(r0, r1)
     y = rows * unit + half
     if not exact:
         y = y.astype(np.float64)
 
-    lo = np.zeros(len(rows), dtype=np.int64)
-    hi = np.full(len(rows), width - 1, dtype=np.int64)
-    ok = np.ones(len(rows), dtype=bool)
+    lo, hi, ok = line_bounds(setup, owner, y, half, width)
+    counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
+    within = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
+    tri = np.repeat(owner, counts)
+    cols = np.repeat(lo, counts) + within
+    line_rows, rows = rows, np.repeat(rows, counts)
+
+    # Barycentrics from the exact edge functions, in the caller's vertex order: weight k is
+    # E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding. Along a span E
+    # changes by -dy per unit of x, so it is evaluated once at the span's start and then
+    # stepped (*Triangle Rasterisation II - Interpolation*'s incremental form); on the snapped grid the steps are exact
+    # integers, so this is the same value as evaluating E at every pixel.
+    lam = np.empty((len(tri), 3))
+    src, src_area, src_unit, src_half = weight_source(xy, setup, snapped_weights)
+    start_x = lo * src_unit + src_half
+    row_y = line_rows * src_unit + src_half
+    area = np.repeat(src_area[owner], counts).astype(np.float64)
+    for k in range(3):
+        a, b = src[owner, (k + 1) % 3], src[owner, (k + 2) % 3]
+        dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
+        e_start = dx * (row_y - a[:, 1]) - dy * (start_x - a[:, 0])
+        e = np.repeat(e_start, counts) - np.repeat(dy * src_unit, counts) * within
+        np.divide(e, area, out=lam[:, k])
+    return Fragments(tri=tri, row=rows, col=cols, lam=lam, facing=facing(area2))
+
+
+def line_bounds(setup, owner: np.ndarray, y: np.ndarray, half, width: int):
+    """Column bounds of raster lines: lo, hi (int64) and ok (bool) per entry of ``owner``.
+
+    ``setup`` is the batch's :func:`setup_edges`; line i belongs to triangle ``owner[i]`` and
+    tests the points ``(j * unit + half, y[i])`` in internal units (``half`` the pixel
+    centre's x offset, or a sample's). The span is ``lo <= j <= hi`` where ``ok``; lines
+    outside a triangle's y-range are the caller's to drop (no edge is active there).
+    """
+    p, unit, exact = setup.p, setup.unit, setup.exact
+    lo = np.zeros(len(y), dtype=np.int64)
+    hi = np.full(len(y), width - 1, dtype=np.int64)
+    ok = np.ones(len(y), dtype=bool)
     for k in range(3):
         a, b = p[owner, k], p[owner, (k + 1) % 3]
         top_left = setup.top_left[owner, k]
@@ -119,36 +154,24 @@ def rasterize_batch(
         lo = np.where(active, np.maximum(lo, e_lo), lo)
         hi = np.where(active, np.minimum(hi, e_hi), hi)
         ok &= ~active | e_ok
-    counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
-    within = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
-    tri = np.repeat(owner, counts)
-    cols = np.repeat(lo, counts) + within
-    line_rows, rows = rows, np.repeat(rows, counts)
+    return lo, hi, ok
 
-    # Barycentrics from the exact edge functions, in the caller's vertex order: weight k is
-    # E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding. Along a span E
-    # changes by -dy per unit of x, so it is evaluated once at the span's start and then
-    # stepped (*Triangle Rasterisation II - Interpolation*'s incremental form); on the snapped grid the steps are exact
-    # integers, so this is the same value as evaluating E at every pixel.
-    lam = np.empty((len(tri), 3))
+
+def weight_source(xy: np.ndarray, setup, snapped_weights: bool):
+    """Vertices (n, 3, 2), area2 (n,), unit and half from which barycentrics are computed.
+
+    The snapped triangle in internal units, or (``snapped_weights=False``) the unsnapped one
+    in pixels, as OpenGL implementations such as llvmpipe set up attributes; a triangle
+    whose unsnapped area has another sign or is zero keeps its snapped weights.
+    """
+    unit, area2 = setup.unit, np.asarray(setup.original_area2)
     # The snapped vertices in the caller's order (the orientation swap is its own inverse).
-    v = np.take_along_axis(p, setup.perm[:, :, None], axis=1)
-    src, src_unit, src_half, src_area = v, unit, half, area2
-    if not snapped_weights:
-        raw = np.asarray(xy, dtype=np.float64)
-        (px, py), (qx, qy), (rx, ry) = (raw[:, k].T for k in range(3))
-        raw_area = (qx - px) * (ry - py) - (qy - py) * (rx - px)
-        usable = np.sign(raw_area) == np.sign(area2)
-        src = np.where(usable[:, None, None], raw, v / float(unit))
-        src_area = np.where(usable, raw_area, area2 / float(unit) ** 2)
-        src_unit, src_half = 1.0, 0.5
-    start_x = lo * src_unit + src_half
-    row_y = line_rows * src_unit + src_half
-    area = np.repeat(src_area[owner], counts).astype(np.float64)
-    for k in range(3):
-        a, b = src[owner, (k + 1) % 3], src[owner, (k + 2) % 3]
-        dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-        e_start = dx * (row_y - a[:, 1]) - dy * (start_x - a[:, 0])
-        e = np.repeat(e_start, counts) - np.repeat(dy * src_unit, counts) * within
-        np.divide(e, area, out=lam[:, k])
-    return Fragments(tri=tri, row=rows, col=cols, lam=lam, facing=facing(area2))
+    v = np.take_along_axis(setup.p, setup.perm[:, :, None], axis=1)
+    if snapped_weights:
+        return v, area2, unit, setup.half
+    raw = np.asarray(xy, dtype=np.float64)
+    (px, py), (qx, qy), (rx, ry) = (raw[:, k].T for k in range(3))
+    raw_area = (qx - px) * (ry - py) - (qy - py) * (rx - px)
+    usable = np.sign(raw_area) == np.sign(area2)
+    src = np.where(usable[:, None, None], raw, v / float(unit))
+    return src, np.where(usable, raw_area, area2 / float(unit) ** 2), 1.0, 0.5

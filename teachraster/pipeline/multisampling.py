@@ -1,0 +1,473 @@
+"""Multisampled rendering: coverage and depth per sample, shading once per pixel and triangle.
+
+What a GPU does with MSAA, and what ``tr.render(..., samples=S)`` simulates:
+
+1. **coverage per sample**: every sample of every pixel is tested against every triangle
+   exactly like a pixel centre (:mod:`teachraster.core.multisample`); here the span tables
+   of :mod:`teachraster.pipeline.batched_fill` run once per sample, one raster line per
+   sample row, giving per (triangle, pixel row) one column interval per sample;
+2. **depth per sample**: each covered sample gets the triangle's depth at the sample point
+   and is z-tested on its own (the buffer holds S depths per pixel);
+3. **shading once per pixel and triangle**: the attributes of a triangle are evaluated once
+   per pixel it covers, at the pixel centre (extrapolated when the centre lies outside),
+   and written to every sample it wins;
+4. **resolve**: the pixel's colour is the mean over its S samples, uncovered samples counting
+   as the background (:meth:`~teachraster.pipeline.render_triangles.Frame.resolve`).
+
+*Simulate only what the scene calls for*: in a pixel covered wholly by one triangle and
+touched by no other, every sample has the same triangle, so no per-sample test is needed:
+the intersection of a line's S sample intervals is such "full" pixels, and only the rest
+(partly covered, or reached by two or more triangles) is expanded to samples. The
+``multisampling`` effect of the plan says for how many pixels that ran; ``force`` expands
+every pixel, with the same frame (tests/test_render_msaa.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..core.edges import setup_edges
+from ..core.interpolation import blend_each, weights_per_row
+from ..core.multisample import offsets_in_units
+from .batched_fill import flat_ranges, line_bounds, weight_source
+from .depth import quantize
+from .render_plan import (
+    attributes_effect,
+    depth_test_effect,
+    multisampling_effect,
+    perspective_effect,
+)
+from .zbuffer import resolve
+
+
+@dataclass(frozen=True)
+class SampleFragments:
+    """Per-sample coverage of a batch, as whole pixels where possible.
+
+    Attributes
+    ----------
+    full_pixel, full_tri : (f,) int64
+        (pixel, triangle) pairs where the triangle covers every sample of the pixel (flat
+        pixel index, triangle index after clipping), in drawing order.
+    tri, pixel, sample : (m,) int64
+        Every covered sample of the other (pixel, triangle) pairs, in drawing order.
+    n_fragments : int
+        (pixel, triangle) pairs covering at least one sample.
+    """
+
+    full_pixel: np.ndarray
+    full_tri: np.ndarray
+    tri: np.ndarray
+    pixel: np.ndarray
+    sample: np.ndarray
+    n_fragments: int
+
+
+def _sample_lines(setup, live, units, width, height):
+    """Raster lines (owner, row) and each sample's column interval lo..hi (L, S)."""
+    p, unit = setup.p, setup.unit
+    ymin, ymax = p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1)
+    # pixel rows whose square [i, i + 1) meets the y-range: every sample row lies in one
+    if setup.exact:
+        r0, r1 = ymin // unit, ymax // unit + 1
+    else:
+        r0, r1 = np.floor(ymin / unit), np.floor(ymax / unit) + 1
+    r0 = np.clip(r0, 0, height).astype(np.int64)
+    r1 = np.clip(r1, 0, height).astype(np.int64)
+    r1 = np.where(live, np.maximum(r1, r0), r0)
+    owner, rows = flat_ranges(r0, r1)
+    lo = np.empty((len(rows), len(units)), dtype=np.int64)
+    hi = np.empty_like(lo)
+    for s, (ox, oy) in enumerate(units.tolist()):
+        y = rows * unit + oy
+        if not setup.exact:
+            y = y.astype(np.float64)
+        l_s, h_s, ok = line_bounds(setup, owner, y, ox, width)
+        ok &= (y >= ymin[owner]) & (y <= ymax[owner])  # the sample row crosses the triangle
+        lo[:, s], hi[:, s] = l_s, np.where(ok, h_s, l_s - 1)
+    return owner, rows, lo, hi
+
+
+def sample_fragments(setup, live, units, width: int, height: int, force: bool) -> SampleFragments:
+    """Per-sample coverage of a batch of triangles, whole pixels kept whole.
+
+    ``setup`` is the batch's edge set-up (window positions), ``live`` (M,) the triangles to
+    draw, ``units`` (S, 2) the sample offsets on the internal grid. The columns where every
+    sample's interval overlaps are *full* pixels; the rest of the union is expanded to
+    samples. With ``force`` no pixel is taken as full.
+    """
+    owner, rows, lo, hi = _sample_lines(setup, live, units, width, height)
+    covered = hi >= lo
+    union_lo = np.where(covered, lo, width).min(axis=1, initial=width)
+    union_hi = np.where(covered, hi, -1).max(axis=1, initial=-1)
+    if force:
+        full_lo, full_hi = np.zeros(len(rows), np.int64), np.full(len(rows), -1, np.int64)
+    else:  # columns where every sample is covered: the intersection of the intervals
+        full_lo, full_hi = lo.max(axis=1), hi.min(axis=1)
+    has_full = full_hi >= full_lo
+    f_line, f_col = flat_ranges(full_lo, np.where(has_full, full_hi + 1, full_lo))
+    # the rest of the union: left of the full part, and right of it
+    left_stop = np.where(has_full, full_lo, union_hi + 1)
+    right_lo = np.where(has_full, full_hi + 1, 0)
+    right_stop = np.where(has_full, union_hi + 1, 0)
+    l_line, l_col = flat_ranges(union_lo, np.maximum(left_stop, union_lo))
+    r_line, r_col = flat_ranges(right_lo, np.maximum(right_stop, right_lo))
+    p_line, p_col = np.concatenate([l_line, r_line]), np.concatenate([l_col, r_col])
+    mask = (lo[p_line] <= p_col[:, None]) & (p_col[:, None] <= hi[p_line])
+    e_frag, e_sample = np.nonzero(mask)  # the union may have gaps: empty rows drop out
+    tri, pix = owner[p_line[e_frag]], rows[p_line[e_frag]] * width + p_col[e_frag]
+    order = np.argsort(tri, kind="stable")  # drawing order: triangle by triangle
+    return SampleFragments(
+        full_pixel=rows[f_line] * width + f_col,
+        full_tri=owner[f_line],
+        tri=tri[order],
+        pixel=pix[order],
+        sample=e_sample[order].astype(np.int64),
+        n_fragments=len(f_line) + int(mask.any(axis=1).sum()),
+    )
+
+
+def depth_planes(source, window) -> np.ndarray:
+    """Per triangle (M, 7): origin x, y (source units), z there, dz/dx, dz/dy, min z, max z.
+
+    Window depth is affine in screen space: one plane per triangle, evaluated relative to
+    its vertex 0 (no large absolute products), from the same vertices as the barycentrics.
+    """
+    src, area, unit, _ = source
+    z = window[:, :, 2]
+    gx, gy = np.zeros(len(z)), np.zeros(len(z))
+    for k in range(3):
+        a, b = src[:, (k + 1) % 3], src[:, (k + 2) % 3]
+        gx -= (b[:, 1] - a[:, 1]) * z[:, k]
+        gy += (b[:, 0] - a[:, 0]) * z[:, k]
+    with np.errstate(divide="ignore", invalid="ignore"):  # zero area: never covers anything
+        gx, gy = gx / area, gy / area
+    return np.stack([src[:, 0, 0], src[:, 0, 1], z[:, 0], gx, gy, z.min(1), z.max(1)], axis=1)
+
+
+def plane_depth(planes, unit, tri, x, y) -> np.ndarray:
+    """Depth of triangles ``tri`` (n,) at points (x, y) px, clamped to the vertices' range.
+
+    ``x`` and ``y`` are (n,) or (n, S) (all S samples of one pixel: one gather per pixel,
+    the same operations per sample, so the same bits as point by point).
+    """
+    c = planes[tri]
+    if np.ndim(x) == 2:
+        c = c[:, None, :]
+    d = c[..., 2] + c[..., 3] * (x * unit - c[..., 0]) + c[..., 4] * (y * unit - c[..., 1])
+    return np.clip(d, c[..., 5], c[..., 6])
+
+
+def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
+    """Pixels where one triangle shows at every sample without a per-sample test.
+
+    A pixel qualifies when no triangle covers it only partly and either one triangle covers
+    it, or the depth test is off (the last drawn wins everywhere), or one triangle's depth
+    over the whole pixel square lies strictly below every other's there (bounded by the
+    plane's slope, after quantisation: so every sample's test would agree). Returns a
+    bool mask over ``frags.full_pixel`` (True: decided whole) and the winner per pixel.
+    """
+    width, height = size
+    n_pix = width * height
+    f_pix, f_tri = frags.full_pixel, frags.full_tri
+    count = np.bincount(f_pix, minlength=n_pix)
+    partial = np.bincount(frags.pixel, minlength=n_pix) > 0
+    candidate = (~partial)[f_pix]
+    winner = np.full(n_pix, -1, dtype=np.int64)
+    one = candidate & (count[f_pix] == 1)
+    winner[f_pix[one]] = f_tri[one]
+    many = np.flatnonzero(candidate & (count[f_pix] > 1))
+    if len(many):
+        order = many[np.argsort(f_pix[many], kind="stable")]
+        pix, tri = f_pix[order], f_tri[order]
+        starts = np.flatnonzero(np.r_[True, pix[1:] != pix[:-1]])
+        if not depth_test:  # the last one drawn wins at every sample
+            last = np.r_[starts[1:], len(order)] - 1
+            winner[pix[last]] = tri[last]
+        else:
+            _nearest_everywhere(planes, unit, pix, tri, starts, width, depth_format, winner)
+    whole = winner[f_pix] >= 0
+    return whole & candidate, winner
+
+
+def _nearest_everywhere(planes, unit, pix, tri, starts, width, depth_format, winner):
+    """Set ``winner`` where one triangle is nearer than all others over the whole pixel.
+
+    ``pix``, ``tri`` are the full fragments of contested pixels grouped by pixel (groups
+    begin at ``starts``, drawing order inside). Each plane's range over the pixel square is
+    its centre value ± half the slopes; a margin covers the rounding of the per-sample
+    evaluation; quantising both ends keeps the order every sample's test would see.
+    """
+    row, col = np.divmod(pix, width)
+    c = planes[tri]
+    tx, ty = c[:, 3] * ((col + 0.5) * unit - c[:, 0]), c[:, 4] * ((row + 0.5) * unit - c[:, 1])
+    centre = c[:, 2] + tx + ty
+    reach = 0.5 * unit * (np.abs(c[:, 3]) + np.abs(c[:, 4]))
+    margin = 1e-12 * (1.0 + np.abs(tx) + np.abs(ty) + reach)
+    hi = quantize(np.clip(centre + reach + margin, c[:, 5], c[:, 6]) + margin, depth_format)
+    lo = quantize(np.clip(centre - reach - margin, c[:, 5], c[:, 6]) - margin, depth_format)
+    sizes = np.diff(np.r_[starts, len(pix)])
+    best = np.minimum.reduceat(hi, starts)
+    index = np.arange(len(pix))
+    big = len(pix)
+    first = np.minimum.reduceat(np.where(hi == np.repeat(best, sizes), index, big), starts)
+    others = lo.copy()
+    others[first] = np.inf
+    decided = best < np.minimum.reduceat(others, starts)
+    winner[pix[first[decided]]] = tri[first[decided]]
+
+
+def barycentrics_at(source, tri: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Barycentrics (n, 3) of triangles ``tri`` at points (x, y) in pixels, any point.
+
+    ``source`` is :func:`~teachraster.pipeline.batched_fill.weight_source`'s answer: the
+    same vertices and areas the batched fill uses, evaluated directly at the point.
+    """
+    src, src_area, src_unit, _ = source
+    px, py = x * src_unit, y * src_unit
+    lam = np.empty((len(tri), 3))
+    area = src_area[tri].astype(np.float64)
+    v = src[tri]  # one gather of the three vertices
+    for k in range(3):
+        a, b = v[:, (k + 1) % 3], v[:, (k + 2) % 3]
+        dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
+        lam[:, k] = (dx * (py - a[:, 1]) - dy * (px - a[:, 0])) / area
+    return lam
+
+
+def shade(source, window, w, attrs, tri, pixel, won, offsets, width, perspective):
+    """Attributes (n, k) and depth (n,) of ``tri`` evaluated once for ``pixel``.
+
+    At the pixel centre, extrapolated on the triangle's planes when the centre lies
+    outside (values may leave the vertex range). Where the extrapolated 1/w would be <= 0,
+    at the sample nearest the centre among ``won`` (n, S) bool, the samples the triangle
+    shows in that pixel (ties: lower index). ``perspective`` (M,) bool: divide by w.
+    """
+    row, col = np.divmod(pixel, width)
+    x, y = col + 0.5, row + 0.5
+    lam = barycentrics_at(source, tri, x, y)
+    wt = w[tri]
+    q = lam * (wt.min(axis=1, keepdims=True) / wt)
+    bad = perspective[tri] & ~(q.sum(axis=1) > 0)
+    if bad.any():
+        d = offsets - 0.5
+        order = np.argsort(d[:, 0] ** 2 + d[:, 1] ** 2, kind="stable")
+        s = order[np.argmax(won[bad][:, order], axis=1)]
+        x, y = x.astype(np.float64), y.astype(np.float64)
+        x[bad], y[bad] = col[bad] + offsets[s, 0], row[bad] + offsets[s, 1]
+        lam[bad] = barycentrics_at(source, tri[bad], x[bad], y[bad])
+    inside = (lam >= 0).all(axis=1)
+    weights = lam.copy()
+    persp = perspective[tri]
+    clamp = inside & persp
+    if clamp.any():
+        weights[clamp] = weights_per_row(lam[clamp], wt[clamp])
+    out = ~inside & persp
+    if out.any():  # the planes of f/w and 1/w extended beyond the triangle
+        qo = lam[out] * (wt[out].min(axis=1, keepdims=True) / wt[out])
+        weights[out] = qo / qo.sum(axis=1, keepdims=True)
+    values = np.empty((len(tri), attrs.shape[2]))
+    depth = np.empty(len(tri))
+    z = window[tri, :, 2:3]
+    values[inside] = blend_each(weights[inside], attrs[tri[inside]])
+    depth[inside] = blend_each(lam[inside], z[inside])[:, 0]
+    values[~inside] = np.einsum("nk,nkc->nc", weights[~inside], attrs[tri[~inside]])
+    depth[~inside] = np.einsum("nk,nk->n", lam[~inside], z[~inside, :, 0])
+    return values, depth
+
+
+def _distinct(sub: np.ndarray, i: np.ndarray, s: np.ndarray):
+    """One entry per distinct triangle of each row of ``sub`` (n, S).
+
+    ``(i, s)`` enumerate the entries ``sub >= 0`` row-major. Returns ``first`` (positions in
+    that enumeration of each row's first sample of a triangle) and ``inverse`` (for every
+    entry, the index in ``first`` of its triangle's first sample).
+    """
+    lead = np.argmax(sub[:, :, None] == sub[:, None, :], axis=2)  # (n, S): first same sample
+    slot = np.full(sub.shape, -1, dtype=np.int64)
+    slot[i, s] = np.arange(len(i))
+    is_first = lead[i, s] == s
+    first = np.flatnonzero(is_first)
+    number = np.full(len(i), -1, dtype=np.int64)
+    number[first] = np.arange(len(first))
+    inverse = number[slot[i, lead[i, s]]]
+    return first, inverse
+
+
+def owners(parents: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per pixel, the input triangle owning most samples (ties: the earlier) and a sample of it.
+
+    ``parents`` (n, S) holds the input triangle id of each sample (-1 none). Returns the owner
+    (n,) (-1 where no sample is covered) and the first sample (n,) it owns.
+
+    >>> owners(np.array([[3, 1, 1, 3], [2, -1, -1, -1], [-1, -1, -1, -1]]))
+    (array([ 1,  2, -1]), array([1, 0, 0]))
+    """
+    count = (parents[:, :, None] == parents[:, None, :]).sum(axis=2)
+    count = np.where(parents >= 0, count, 0)
+    best = count.max(axis=1, initial=0)
+    big = np.iinfo(np.int64).max
+    candidate = (count == best[:, None]) & (parents >= 0)
+    owner = np.where(candidate, parents, big).min(axis=1, initial=big)
+    owner = np.where(best > 0, owner, -1)
+    first = np.argmax(parents == owner[:, None], axis=1)
+    return owner, first
+
+
+@dataclass(frozen=True)
+class MultiFrame:
+    """Per-sample and per-pixel results of a multisampled render (flat pixel arrays)."""
+
+    sample_tri: np.ndarray  # (P, S) triangle after clipping, -1 none
+    sample_depth: np.ndarray  # (P, S)
+    sample_attrs: np.ndarray  # (P, S, k)
+    owner: np.ndarray  # (P,) triangle after clipping owning most samples, -1 none
+    attrs: np.ndarray  # (P, k)
+    depth: np.ndarray  # (P,)
+    offsets: np.ndarray  # (S, 2) px as tested
+    counts: dict  # numbers for the plan
+
+
+def visibility(frags, planes, unit, offsets, size, options, forced):
+    """The depth buffer per sample: (P, S) triangle and stored depth, the whole pixels
+    (flat index, triangle) and the number of samples where 2+ triangles met."""
+    depth_test, depth_format = options
+    force_test, force_ms = forced
+    width, height = size
+    n_s, n_pix = len(offsets), width * height
+    if force_ms:
+        whole, winner = np.zeros(len(frags.full_pixel), bool), np.full(n_pix, -1, np.int64)
+    else:
+        whole, winner = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
+    # every other covered sample, in drawing order (full fragments count S times)
+    rest = np.flatnonzero(~whole)
+    tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.tri])
+    pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.pixel])
+    sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), frags.sample])
+    order = np.argsort(tri, kind="stable")
+    tri, pixel, sample = tri[order], pixel[order], sample[order]
+    row, col = np.divmod(pixel, width)
+    x, y = col + offsets[sample, 0], row + offsets[sample, 1]
+    depth = quantize(plane_depth(planes, unit, tri, x, y), depth_format)
+    slot = pixel * n_s + sample
+    won, passed, tested = resolve(slot, depth, n_pix * n_s, depth_test, force_test)
+    sample_tri = np.full(n_pix * n_s, -1, dtype=np.int64)
+    sample_depth = np.full(n_pix * n_s, np.nan)
+    hit = np.flatnonzero(won >= 0)
+    sample_tri[hit], sample_depth[hit] = tri[won[hit]], depth[won[hit]]
+    # whole pixels: their one triangle at every sample, no per-sample test
+    wp = np.flatnonzero(winner >= 0)
+    wr, wc = np.divmod(wp, width)
+    sample_tri = sample_tri.reshape(n_pix, n_s)
+    sample_depth = sample_depth.reshape(n_pix, n_s)
+    sample_tri[wp] = winner[wp][:, None]
+    sample_depth[wp] = quantize(
+        plane_depth(planes, unit, winner[wp], wc[:, None] + offsets[:, 0],
+                    wr[:, None] + offsets[:, 1]), depth_format,
+    )  # fmt: skip
+    met = int(np.count_nonzero(np.bincount(slot) > 1))
+    met += n_s * int(np.count_nonzero(np.bincount(frags.full_pixel[whole], minlength=n_pix) > 1))
+    return sample_tri, sample_depth, (wp, winner[wp]), met
+
+
+def shade_pixels(sample_tri, whole, frags, source, window, clipped, offsets, size, flags):
+    """Attributes per sample (once per pixel and triangle) and the owners' per-pixel values."""
+    force_ms, force_attrs, perspective = flags
+    width, _ = size
+    n_pix, n_s = sample_tri.shape
+    w, attrs, parent = clipped.clip[:, :, 3], clipped.attrs, clipped.parent
+    k = attrs.shape[2]
+    out_attrs = np.full((n_pix, n_s, k), np.nan)
+    owner = np.full(n_pix, -1, dtype=np.int64)
+    pix_attrs, pix_depth = np.full((n_pix, k), np.nan), np.full(n_pix, np.nan)
+    args = (source, window, w, attrs)
+    # simple pixels: one evaluation serves all samples
+    sp, st = whole
+    vals, dep = shade(*args, st, sp, np.ones((len(sp), n_s), bool), offsets, width, perspective)
+    out_attrs[sp] = vals[:, None, :]
+    owner[sp], pix_attrs[sp], pix_depth[sp] = st, vals, dep
+    # the other covered pixels: one evaluation per (pixel, triangle) seen at a sample
+    is_simple = np.zeros(n_pix, dtype=bool)
+    is_simple[sp] = True
+    others = np.flatnonzero((sample_tri >= 0).any(axis=1) & ~is_simple)
+    sub = sample_tri[others]
+    i, s = np.nonzero(sub >= 0)
+    pix, tri = others[i], sub[i, s]
+    if force_ms:  # every sample evaluates its own triangle: the same values, S times the work
+        first, inverse = np.arange(len(pix)), np.arange(len(pix))
+    else:
+        first, inverse = _distinct(sub, i, s)
+    won = sample_tri[pix[first]] == tri[first][:, None]
+    vals, dep = shade(*args, tri[first], pix[first], won, offsets, width, perspective)
+    out_attrs[pix, s] = vals[inverse]
+    parents = np.where(sub >= 0, parent[np.maximum(sub, 0)], -1)
+    _, own_sample = owners(parents)
+    slot = np.full(sub.shape, -1, dtype=np.int64)
+    slot[i, s] = np.arange(len(i))
+    at = inverse[slot[np.arange(len(others)), own_sample]]
+    owner[others] = sub[np.arange(len(others)), own_sample]
+    pix_attrs[others], pix_depth[others] = vals[at], dep[at]
+    n_shaded = len(sp) + len(first)
+    if force_attrs:  # also every hidden (pixel, triangle): evaluated, then discarded
+        keys = np.unique(
+            np.r_[frags.pixel * len(w) + frags.tri, frags.full_pixel * len(w) + frags.full_tri]
+        )
+        hidden_pix, hidden_tri = np.divmod(keys, len(w))
+        won = sample_tri[hidden_pix] == hidden_tri[:, None]
+        shade(*args, hidden_tri, hidden_pix, won, offsets, width, perspective)
+        n_shaded += len(keys)
+    return out_attrs, owner, pix_attrs, pix_depth, n_shaded
+
+
+def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
+    """Fill, depth-test and shade a multisampled frame: a :class:`MultiFrame` and its effects.
+
+    ``options`` is ``(depth_test, depth_format, interpolation)``; ``forced`` the plan's
+    forced effects ("multisampling" expands every pixel to samples).
+    """
+    depth_test, depth_format, interpolation = options
+    width, height = size
+    xy = window[:, :, :2]
+    setup = setup_edges(xy, bits)
+    live = (np.asarray(setup.original_area2) != 0) & ~culled
+    units = offsets_in_units(offsets, setup)
+    px = units.astype(np.float64) / float(setup.unit)
+    force_ms = "multisampling" in forced
+    frags = sample_fragments(setup, live, units, width, height, force_ms)
+    source = weight_source(xy, setup, snapped_weights=False)
+    planes = depth_planes(source, window)
+    force_test = "depth_test" in forced and depth_test
+    sample_tri, sample_depth, whole, contested = visibility(
+        frags, planes, source[2], px, size, (depth_test, depth_format), (force_test, force_ms)
+    )
+    w = clipped.clip[:, :, 3]
+    unequal = ~np.all(w == w[:, :1], axis=1)
+    divide_all = "perspective" in forced and interpolation == "perspective"
+    perspective = np.ones(len(w), bool) if divide_all else unequal
+    if interpolation == "affine":
+        perspective = np.zeros(len(w), bool)
+    flags = (force_ms, "attributes" in forced, perspective)
+    sample_attrs, owner, attrs, depth, n_shaded = shade_pixels(
+        sample_tri, whole, frags, source, window, clipped, px, size, flags
+    )
+    depth = quantize(depth, depth_format)
+    n_covered = int((owner >= 0).sum())
+    n_samples = int((sample_tri >= 0).sum())
+    n_per_sample = n_covered - len(whole[0])
+    k = clipped.attrs.shape[2]
+    visible = np.unique(sample_tri[sample_tri >= 0])
+    n_persp = int(perspective[visible].sum())
+    depth_effect = depth_test_effect(depth_test, force_test, contested, n_samples)
+    why = depth_effect.why.replace("pixel(s)", "sample(s)").replace(
+        "every fragment", "every sample"
+    )
+    effects = (
+        replace(depth_effect, unit="samples", why=why),
+        multisampling_effect(len(px), n_per_sample, n_covered, force_ms),
+        perspective_effect(k, len(visible), n_persp, len(w), interpolation, divide_all),
+        attributes_effect(k, n_shaded, frags.n_fragments, n_covered, "attributes" in forced),
+    )
+    multi = MultiFrame(sample_tri, sample_depth, sample_attrs, owner, attrs, depth, px, {})
+    return multi, effects
