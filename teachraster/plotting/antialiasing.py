@@ -138,13 +138,46 @@ def plot_area_error(ax, fraction, area, *, colorbar: bool = True, title: bool = 
 # -- one pixel, magnified ----------------------------------------------------------------------
 @dataclass
 class PixelSampleArtists(Artists):
-    """One magnified pixel of :func:`plot_pixel_samples`."""
+    """One magnified pixel of :func:`plot_pixel_samples`; :meth:`update` moves it in place."""
 
     square: Line2D
     centre: Line2D
     edges: list = field(default_factory=list)
     dots: list = field(default_factory=list)
     labels: list = field(default_factory=list)
+
+    def update(self, source, row: int, col: int, *, triangles=None) -> None:
+        """Show pixel (row, col) of ``source`` (the pattern may change: dots are redrawn)."""
+        ax = self.square.axes
+        for artist in [*self.edges, *self.dots, *self.labels]:
+            artist.remove()
+        self.edges, self.dots, self.labels = [], [], []
+        ids, offsets = sample_data(source)
+        ax.set_xlim(col - 0.15, col + 1.15)
+        ax.set_ylim(row + 1.15, row - 0.15)
+        self.square.set_data([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row])
+        self.centre.set_data([col + 0.5], [row + 0.5])
+        trace = getattr(getattr(source, "trace", None), "samples", None)
+        if triangles is None and trace is not None:
+            triangles = [source.trace.snapped]
+        frame = isinstance(source, Frame)
+        for t, tri in enumerate(np.asarray(triangles if triangles is not None else [])):
+            closed = np.vstack([tri, tri[:1]])
+            color = TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)] if frame else COLORS["edge"]
+            self.edges += ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw(0.8))
+        values = None if trace is None else trace.edge_values(row, col)
+        for s, (ox, oy) in enumerate(offsets):
+            t = int(ids[row, col, s])
+            color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
+            self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4), mfc=color,
+                                 mec=COLORS["edge"], zorder=5)  # fmt: skip
+            label = _label(s, t, None if values is None else values[s])
+            self.labels.append(ax.annotate(
+                label, (col + ox, row + oy), xytext=(6, 6), textcoords="offset points",
+                fontsize=fs(0.6), bbox=label_box(0.8), zorder=6,
+            ))  # fmt: skip
+        covered = int((ids[row, col] >= 0).sum())
+        ax.set_title(f"pixel (row {row}, col {col}): {covered} of {len(offsets)} samples covered")
 
 
 def _label(s, t, e) -> str:
@@ -168,31 +201,9 @@ def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> Pix
         Window positions of the triangles, to draw their edges through the pixel (for a
         Fill the traced snapped triangle is drawn by default).
     """
-    ids, offsets = sample_data(source)
-    ax.set_xlim(col - 0.15, col + 1.15)
-    ax.set_ylim(row + 1.15, row - 0.15)
     ax.set_aspect("equal")
-    sq = ax.plot([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row],
-                 color=COLORS["grid"], lw=lw(0.6))[0]  # fmt: skip
-    centre = ax.plot([col + 0.5], [row + 0.5], "+", color=COLORS["centre"], ms=ms(1.0))[0]
-    result = PixelSampleArtists(sq, centre)
-    trace = getattr(getattr(source, "trace", None), "samples", None)
-    if triangles is None and trace is not None:
-        triangles = [source.trace.snapped]
-    for t, tri in enumerate(np.asarray(triangles if triangles is not None else [])):
-        closed = np.vstack([tri, tri[:1]])
-        color = TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)] if isinstance(source, Frame) else "k"
-        result.edges += ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw(0.8))
-    for s, (ox, oy) in enumerate(offsets):
-        t = int(ids[row, col, s])
-        color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
-        result.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4), mfc=color,
-                               mec=COLORS["edge"], zorder=5)  # fmt: skip
-        e = None if trace is None else trace.edge_values(row, col)[s]
-        result.labels.append(ax.annotate(
-            _label(s, t, e), (col + ox, row + oy), xytext=(6, 6), textcoords="offset points",
-            fontsize=fs(0.6), bbox=label_box(0.8), zorder=6,
-        ))  # fmt: skip
-    ax.set_title(f"pixel (row {row}, col {col}): {int((ids[row, col] >= 0).sum())} of "
-                 f"{len(offsets)} samples covered")  # fmt: skip
+    square = ax.plot([], [], color=COLORS["grid"], lw=lw(0.6))[0]
+    centre = ax.plot([], [], "+", color=COLORS["centre"], ms=ms(1.0))[0]
+    result = PixelSampleArtists(square, centre)
+    result.update(source, row, col, triangles=triangles)
     return result

@@ -1,0 +1,49 @@
+"""PixelInspector: driven from code like a student would, its figure follows the controls."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.widgets import PixelInspector  # noqa: E402
+from teachraster.widgets.inspector import PATTERNS, pattern_samples  # noqa: E402
+
+
+@pytest.fixture
+def scene():
+    return np.array([[[-1, 1, 0, 1], [1, 1, 0, 1], [-1, -1, 0, 1]],
+                     [[1, 1, 0.5, 1], [1, -1, 0.5, 1], [-1, -1, 0.5, 1]]], float)  # fmt: skip
+
+
+def test_every_pattern_and_pixel_of_a_scene(scene):
+    w = PixelInspector(scene, 8, 6, backend="image")
+    try:
+        for label in PATTERNS:
+            w.pattern.value = label
+            n = PATTERNS[label][0]
+            assert w.result.sample_triangle_id.shape == (6, 8, n)
+            assert len(w.pixel.dots) == n and len(w.samples.covered.get_offsets()) == 6 * 8 * n
+        w.row.value, w.col.value = 3, 5
+        x, y = w.marker.get_data()
+        assert (min(x), min(y)) == (5, 3)
+        ids = w.result.sample_triangle_id[3, 5]
+        for s, label in enumerate(w.pixel.labels):
+            assert f"triangle {ids[s]}" in label.get_text()
+    finally:
+        w.close()
+
+
+def test_single_triangle_labels_edge_values():
+    tri = tr.Triangle([[0.6, 0.4], [9.3, 2.1], [2.2, 7.7]])
+    w = PixelInspector(tri, 10, 8, row=2, col=1, backend="image")
+    try:
+        e = w.result.trace.samples.edge_values(2, 1)
+        assert all(f"E2={e[s, 2]:+.3g}" in lab.get_text() for s, lab in enumerate(w.pixel.labels))
+        w.pattern.value = "1 (centre)"
+        assert w.result.sample_coverage.shape[2] == 1
+        assert isinstance(pattern_samples("4 ordered grid"), np.ndarray)
+    finally:
+        w.close()
