@@ -22,7 +22,7 @@ from matplotlib.lines import Line2D
 from ..core.fill import Fill
 from ..pipeline.render_triangles import Frame
 from ._common import Artists, fs, label_box, lw, ms, show_image
-from .images import ImageArtists, _show
+from .images import ImageArtists
 from .style import COLORS, OKABE_ITO, SIGNED_CMAP, VALUE_CMAP
 
 #: Colours of triangle ids 0, 1, 2, ... in per-sample plots (cycled).
@@ -103,12 +103,18 @@ def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
     return result
 
 
+def _value_image(ax, data, cmap, vmin, vmax, colorbar, label) -> ImageArtists:
+    im = show_image(ax, np.asarray(data, dtype=np.float64), cmap=cmap, vmin=vmin, vmax=vmax,
+                    zorder=0.5)  # fmt: skip
+    cbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label=label) if colorbar else None
+    return ImageArtists(im, cbar)
+
+
 def plot_coverage_fraction(ax, source, *, colorbar: bool = True, title: bool = True):
     """The fraction of each pixel's samples covered: what the resolve shows for a white
     triangle on black (``fill.coverage_fraction`` or ``frame.coverage_fraction``)."""
     data = source.coverage_fraction if isinstance(source, Fill | Frame) else source
-    result = _show(ax, data, cmap=VALUE_CMAP, vmin=0.0, vmax=1.0, colorbar=colorbar,
-                   label="covered fraction")  # fmt: skip
+    result = _value_image(ax, data, VALUE_CMAP, 0.0, 1.0, colorbar, "covered fraction")
     if title:
         ax.set_title("coverage fraction")
     return result
@@ -126,8 +132,8 @@ def plot_area_error(ax, fraction, area, *, colorbar: bool = True, title: bool = 
     err = np.asarray(frac, dtype=np.float64) - np.asarray(area, dtype=np.float64)
     err = np.where((np.asarray(frac) > 0) | (np.asarray(area) > 0), err, np.nan)
     bound = float(np.nanmax(np.abs(err), initial=0.0)) or 1.0
-    result = _show(ax, err, cmap=SIGNED_CMAP, vmin=-bound, vmax=bound, colorbar=colorbar,
-                   label="fraction − exact area")  # fmt: skip
+    result = _value_image(ax, err, SIGNED_CMAP, -bound, bound, colorbar,
+                          "fraction − exact area")  # fmt: skip
     if title:
         e = np.abs(err[np.isfinite(err)])
         mean, worst = (float(e.mean()), float(e.max())) if e.size else (0.0, 0.0)
