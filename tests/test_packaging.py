@@ -28,9 +28,9 @@ def test_core_import_does_not_pull_in_plotting_or_widgets():
 
 
 def test_every_lesson_of_the_curriculum_is_there():
-    """Issue 4's eight lessons: 00 tour, then one per topic of the seeds."""
+    """Issue 4's eight lessons (00 tour, then one per topic of the seeds) and 08 antialiasing."""
     prefixes = sorted(name[:3] for name in NB_IDS)
-    assert prefixes == [f"{i:02d}_" for i in range(8)], NB_IDS
+    assert prefixes == [f"{i:02d}_" for i in range(9)], NB_IDS
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=NB_IDS)
