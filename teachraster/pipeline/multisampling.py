@@ -153,11 +153,20 @@ def plane_depth(planes, unit, tri, x, y) -> np.ndarray:
     ``x`` and ``y`` are (n,) or (n, S) (all S samples of one pixel: one gather per pixel,
     the same operations per sample, so the same bits as point by point).
     """
-    c = planes[tri]
+    c = np.take(planes.T, tri, axis=1)  # (7, n): one gather, each row contiguous
     if np.ndim(x) == 2:
-        c = c[:, None, :]
-    d = c[..., 2] + c[..., 3] * (x * unit - c[..., 0]) + c[..., 4] * (y * unit - c[..., 1])
-    return np.clip(d, c[..., 5], c[..., 6])
+        c = c[:, :, None]
+    d = x * unit
+    d -= c[0]
+    d *= c[3]
+    e = y * unit
+    e -= c[1]
+    e *= c[4]
+    d += e
+    d += c[2]  # z0 + gx (x - x0) + gy (y - y0), in this order everywhere
+    np.maximum(d, c[5], out=d)
+    np.minimum(d, c[6], out=d)
+    return d
 
 
 def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
