@@ -585,7 +585,7 @@ def cmd_scene(args, parser) -> int:
     from ..pipeline.render_scenes import render_scene
     from ..pipeline.scenes import get_scene
     from ..plotting import ComparisonView, format_plan, plot_image, use_style
-    from ..plotting._common import fs
+    from ..plotting.common import fs
 
     scene = get_scene(args.name)
     width, height = args.size
@@ -681,7 +681,7 @@ def _count_panels(
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
     from ..plotting import plot_pixel_grid, plot_triangle
-    from ..plotting._common import fs
+    from ..plotting.common import fs
     from ..plotting.style import COLORS, OKABE_ITO
 
     h, w = panels[0][0].shape

@@ -11,8 +11,8 @@ from ..core.triangle import Triangle
 from ..pipeline.render_triangles import render
 from ..pipeline.viewport import to_window
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
-from ._common import Holdable, style_context, title_html
-from ._display import FigureDisplay, new_figure, resolve_backend
+from .common import Holdable, close_tree, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
 
 #: The patterns the chooser offers: label -> (n, kind).
 PATTERNS = {
@@ -141,7 +141,5 @@ class PixelInspector(Holdable):
 
     def close(self) -> None:
         """Close every widget of the inspector."""
-        from .player import _close_tree
-
         self.display.close()
-        _close_tree(self.widget)
+        close_tree(self.widget)
