@@ -47,3 +47,27 @@ def test_single_triangle_labels_edge_values():
         assert isinstance(pattern_samples("4 ordered grid"), np.ndarray)
     finally:
         w.close()
+
+
+def test_fill_player_samples_chooser():
+    from teachraster.widgets import FillPlayer
+
+    tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], attrs={"u": [0, 1, 0]})
+    p = FillPlayer(tri, 16, 16, backend="image")
+    try:
+        assert p.sample_dots is None and p.fill.sample_coverage is None
+        p.slider.value = 12
+        p.samples.value = "4 standard (rotated grid)"
+        cov = p.fill.sample_coverage
+        assert cov.shape == (16, 16, 4)
+        assert len(p.sample_dots.covered.get_offsets()) == cov.sum()
+        assert p.slider.value == 12 and p.caption_text == p.trace.caption(12)
+        p.method.value = "halfplane"  # the samples follow the method change
+        assert p.fill.sample_coverage.shape == (16, 16, 4)
+        p.samples.value = "16 jittered"
+        assert len(p.sample_dots.covered.get_offsets()) == p.fill.sample_coverage.sum()
+        p.samples.value = "1 (centre)"
+        assert not p.sample_dots.covered.get_visible()
+        assert p.display.draws > 0
+    finally:
+        p.close()

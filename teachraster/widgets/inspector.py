@@ -6,31 +6,19 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..core.fill import rasterize
-from ..core.sample_patterns import sample_pattern
 from ..core.triangle import Triangle
 from ..pipeline.render_triangles import render
 from ..pipeline.viewport import to_window
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
-from .common import Holdable, close_tree, style_context, title_html
+from .common import (
+    SAMPLE_PATTERNS,
+    Holdable,
+    close_tree,
+    pattern_samples,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
-
-#: The patterns the chooser offers: label -> (n, kind).
-PATTERNS = {
-    "1 (centre)": (1, "standard"),
-    "2 standard": (2, "standard"),
-    "4 standard (rotated grid)": (4, "standard"),
-    "4 ordered grid": (4, "grid"),
-    "8 standard": (8, "standard"),
-    "16 standard": (16, "standard"),
-    "16 jittered": (16, "jittered"),
-    "16 random": (16, "random"),
-}
-
-
-def pattern_samples(label: str):
-    """``samples=`` for a chooser label: an int for the standard patterns, else offsets."""
-    n, kind = PATTERNS[label]
-    return n if kind == "standard" else sample_pattern(n, kind)
 
 
 class PixelInspector(Holdable):
@@ -43,7 +31,7 @@ class PixelInspector(Holdable):
         values) or a scene (``tr.render``: every sample labelled with the triangle it shows).
     width, height : int
     pattern : str
-        A key of :data:`PATTERNS`.
+        A key of :data:`teachraster.widgets.common.SAMPLE_PATTERNS`.
     row, col : int
         The pixel shown magnified first.
     backend, style
@@ -68,7 +56,7 @@ class PixelInspector(Holdable):
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.source, self.width, self.height = source, width, height
         self.backend = resolve_backend(backend)
-        self.pattern = widgets.Dropdown(options=list(PATTERNS), value=pattern,
+        self.pattern = widgets.Dropdown(options=list(SAMPLE_PATTERNS), value=pattern,
                                         description="samples")  # fmt: skip
         self.row = widgets.IntSlider(value=row, min=0, max=height - 1, description="row")
         self.col = widgets.IntSlider(value=col, min=0, max=width - 1, description="col")
