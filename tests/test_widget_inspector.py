@@ -9,7 +9,8 @@ import pytest  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster.widgets import PixelInspector  # noqa: E402
-from teachraster.widgets.inspector import PATTERNS, pattern_samples  # noqa: E402
+from teachraster.widgets.common import SAMPLE_PATTERNS as PATTERNS  # noqa: E402
+from teachraster.widgets.common import pattern_samples  # noqa: E402
 
 
 @pytest.fixture
