@@ -180,3 +180,23 @@ def test_bad_samples_in_render(samples):
     clip = clip_from_window([[[0, 0], [4, 0], [0, 4]]], 0.5, 1.0, 4, 4)
     with pytest.raises((ValueError, TypeError), match="samples"):
         tr.render(clip, 4, 4, samples=samples)
+
+
+def test_trace_records_the_per_sample_tests(rng):
+    clip = random_clip(rng, 6)
+    frame = tr.render(clip, W, H, samples=4, trace=True)
+    plain = tr.render(clip, W, H, samples=4)
+    np.testing.assert_array_equal(frame.sample_triangle_id, plain.sample_triangle_id)
+    t = frame.trace
+    per_sample = t.fragment_sample >= 0
+    # at each sample the last entry that passed the test (drawing order) is what is shown
+    last = {}
+    for k in np.flatnonzero(per_sample & t.fragment_passed):
+        last[t.fragment_row[k], t.fragment_col[k], t.fragment_sample[k]] = t.fragment_triangle[k]
+    assert len(last) > 20
+    for (i, j, s), tri in last.items():
+        assert frame.sample_triangle_id[i, j, s] == tri
+    whole = ~per_sample
+    ids = frame.sample_triangle_id[t.fragment_row[whole], t.fragment_col[whole]]
+    assert (ids == t.fragment_triangle[whole][:, None]).all()  # one triangle at every sample
+    assert whole.sum() == frame.plan["multisampling"].total - frame.plan["multisampling"].count

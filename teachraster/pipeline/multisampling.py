@@ -336,7 +336,7 @@ class MultiFrame:
     attrs: np.ndarray  # (P, k)
     depth: np.ndarray  # (P,)
     offsets: np.ndarray  # (S, 2) px as tested
-    counts: dict  # numbers for the plan
+    record: dict  # the per-sample depth-test entries and the whole pixels, for the trace
 
 
 def visibility(frags, planes, unit, offsets, size, options, forced):
@@ -378,7 +378,9 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     )  # fmt: skip
     met = int(np.count_nonzero(np.bincount(slot) > 1))
     met += n_s * int(np.count_nonzero(np.bincount(frags.full_pixel[whole], minlength=n_pix) > 1))
-    return sample_tri, sample_depth, (wp, winner[wp]), met
+    record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "passed": passed,
+              "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
+    return sample_tri, sample_depth, (wp, winner[wp]), met, record
 
 
 def shade_pixels(sample_tri, whole, frags, source, window, clipped, offsets, size, flags):
@@ -448,7 +450,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     source = weight_source(xy, setup, snapped_weights=False)
     planes = depth_planes(source, window)
     force_test = "depth_test" in forced and depth_test
-    sample_tri, sample_depth, whole, contested = visibility(
+    sample_tri, sample_depth, whole, contested, record = visibility(
         frags, planes, source[2], px, size, (depth_test, depth_format), (force_test, force_ms)
     )
     w = clipped.clip[:, :, 3]
@@ -478,5 +480,5 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         perspective_effect(k, len(visible), n_persp, len(w), interpolation, divide_all),
         attributes_effect(k, n_shaded, frags.n_fragments, n_covered, "attributes" in forced),
     )
-    multi = MultiFrame(sample_tri, sample_depth, sample_attrs, owner, attrs, depth, px, {})
+    multi = MultiFrame(sample_tri, sample_depth, sample_attrs, owner, attrs, depth, px, record)
     return multi, effects

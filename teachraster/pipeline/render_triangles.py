@@ -60,6 +60,10 @@ class RenderTrace:
         Its depth as the buffer stores it (after ``depth_format`` quantisation).
     fragment_passed : (m,) bool
         Whether it passed the depth test when it arrived (always True without the test).
+    fragment_sample : (m,) int64 or None
+        Multisampled renders: the sample each fragment entry was tested at, or -1 for a
+        pixel decided whole (one triangle at every sample, no per-sample test; its depth is
+        NaN here, the per-sample depths are in ``Frame.sample_depth``).
     """
 
     clip_status: np.ndarray
@@ -72,6 +76,7 @@ class RenderTrace:
     fragment_col: np.ndarray
     fragment_depth: np.ndarray
     fragment_passed: np.ndarray
+    fragment_sample: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -287,10 +292,17 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         return np.where(sub >= 0, clipped.parent[np.maximum(sub, 0)], -1)
 
     record = None
-    if trace:
-        empty = np.zeros(0, dtype=np.int64)
-        record = RenderTrace(clipped.status, clipped.polygons, window, clipped.parent, culled,
-                             empty, empty, empty, np.zeros(0), np.zeros(0, dtype=bool))  # fmt: skip
+    if trace:  # the per-sample entries in drawing order, then the pixels decided whole
+        r = multi.record
+        tri = np.concatenate([r["tri"], r["whole_tri"]])
+        row, col = np.divmod(np.concatenate([r["pixel"], r["whole_pixel"]]), width)
+        record = RenderTrace(
+            clipped.status, clipped.polygons, window, clipped.parent, culled,
+            clipped.parent[tri], row, col,
+            np.concatenate([r["depth"], np.full(len(r["whole_tri"]), np.nan)]),
+            np.concatenate([r["passed"], np.ones(len(r["whole_tri"]), dtype=bool)]),
+            np.concatenate([r["sample"], np.full(len(r["whole_tri"]), -1)]),
+        )  # fmt: skip
     return Frame(
         triangle_id=ids(multi.owner).reshape(height, width),
         attrs=multi.attrs.reshape(height, width, k),
