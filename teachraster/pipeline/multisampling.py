@@ -52,7 +52,7 @@ class SampleFragments:
         (pixel, triangle) pairs where the triangle covers every sample of the pixel (flat
         pixel index, triangle index after clipping), in drawing order.
     tri, pixel, sample : (m,) int64
-        Every covered sample of the other (pixel, triangle) pairs, in drawing order.
+        Every covered sample of the other (pixel, triangle) pairs.
     n_fragments : int
         (pixel, triangle) pairs covering at least one sample.
     """
@@ -118,13 +118,12 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     mask = (lo[p_line] <= p_col[:, None]) & (p_col[:, None] <= hi[p_line])
     e_frag, e_sample = np.nonzero(mask)  # the union may have gaps: empty rows drop out
     tri, pix = owner[p_line[e_frag]], rows[p_line[e_frag]] * width + p_col[e_frag]
-    order = np.argsort(tri, kind="stable")  # drawing order: triangle by triangle
     return SampleFragments(
         full_pixel=rows[f_line] * width + f_col,
         full_tri=owner[f_line],
-        tri=tri[order],
-        pixel=pix[order],
-        sample=e_sample[order].astype(np.int64),
+        tri=tri,
+        pixel=pix,
+        sample=e_sample.astype(np.int64),
         n_fragments=len(f_line) + int(mask.any(axis=1).sum()),
     )
 
@@ -188,27 +187,29 @@ def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
     one = candidate & (count[f_pix] == 1)
     winner[f_pix[one]] = f_tri[one]
     many = np.flatnonzero(candidate & (count[f_pix] > 1))
-    if len(many):
-        order = many[np.argsort(f_pix[many], kind="stable")]
-        pix, tri = f_pix[order], f_tri[order]
-        starts = np.flatnonzero(np.r_[True, pix[1:] != pix[:-1]])
-        if not depth_test:  # the last one drawn wins at every sample
-            last = np.r_[starts[1:], len(order)] - 1
-            winner[pix[last]] = tri[last]
+    if len(many):  # per-pixel reductions by ufunc.at: no sort by pixel needed
+        pix, tri = f_pix[many], f_tri[many]
+        if not depth_test:  # the last one drawn (highest index) wins at every sample
+            last = np.full(n_pix, -1, dtype=np.int64)
+            np.maximum.at(last, pix, np.arange(len(pix)))
+            done = np.flatnonzero(last >= 0)
+            winner[done] = tri[last[done]]
         else:
-            _nearest_everywhere(planes, unit, pix, tri, starts, width, depth_format, winner)
+            _nearest_everywhere(planes, unit, pix, tri, width, depth_format, winner)
     whole = winner[f_pix] >= 0
     return whole & candidate, winner
 
 
-def _nearest_everywhere(planes, unit, pix, tri, starts, width, depth_format, winner):
+def _nearest_everywhere(planes, unit, pix, tri, width, depth_format, winner):
     """Set ``winner`` where one triangle is nearer than all others over the whole pixel.
 
-    ``pix``, ``tri`` are the full fragments of contested pixels grouped by pixel (groups
-    begin at ``starts``, drawing order inside). Each plane's range over the pixel square is
-    its centre value ± half the slopes; a margin covers the rounding of the per-sample
-    evaluation; quantising both ends keeps the order every sample's test would see.
+    ``pix``, ``tri`` are the full fragments of contested pixels in drawing order. Each
+    plane's range over the pixel square is its centre value ± half the slopes; a margin
+    covers the rounding of the per-sample evaluation; quantising both ends keeps the order
+    every sample's test would see. The candidate is the first fragment (drawing order)
+    with the smallest upper end; it wins when that is below every other fragment's lower end.
     """
+    n_pix = len(winner)
     row, col = np.divmod(pix, width)
     c = planes[tri]
     tx, ty = c[:, 3] * ((col + 0.5) * unit - c[:, 0]), c[:, 4] * ((row + 0.5) * unit - c[:, 1])
@@ -217,15 +218,16 @@ def _nearest_everywhere(planes, unit, pix, tri, starts, width, depth_format, win
     margin = 1e-12 * (1.0 + np.abs(tx) + np.abs(ty) + reach)
     hi = quantize(np.clip(centre + reach + margin, c[:, 5], c[:, 6]) + margin, depth_format)
     lo = quantize(np.clip(centre - reach - margin, c[:, 5], c[:, 6]) - margin, depth_format)
-    sizes = np.diff(np.r_[starts, len(pix)])
-    best = np.minimum.reduceat(hi, starts)
+    best = np.full(n_pix, np.inf)
+    np.minimum.at(best, pix, hi)
     index = np.arange(len(pix))
-    big = len(pix)
-    first = np.minimum.reduceat(np.where(hi == np.repeat(best, sizes), index, big), starts)
-    others = lo.copy()
-    others[first] = np.inf
-    decided = best < np.minimum.reduceat(others, starts)
-    winner[pix[first[decided]]] = tri[first[decided]]
+    first = np.full(n_pix, len(pix), dtype=np.int64)
+    np.minimum.at(first, pix, np.where(hi == best[pix], index, len(pix)))
+    others = np.where(first[pix] == index, np.inf, lo)
+    rest = np.full(n_pix, np.inf)
+    np.minimum.at(rest, pix, others)
+    done = np.flatnonzero(best < rest)  # inf < inf is False for pixels not in this set
+    winner[done] = tri[first[done]]
 
 
 def barycentrics_at(source, tri: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -355,7 +357,8 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.tri])
     pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.pixel])
     sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), frags.sample])
-    order = np.argsort(tri, kind="stable")
+    # grouped by sample slot, drawing order (triangle index) inside each: the z-buffer's order
+    order = np.argsort((pixel * n_s + sample) * len(planes) + tri)
     tri, pixel, sample = tri[order], pixel[order], sample[order]
     row, col = np.divmod(pixel, width)
     x, y = col + offsets[sample, 0], row + offsets[sample, 1]

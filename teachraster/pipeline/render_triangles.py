@@ -61,8 +61,8 @@ class RenderTrace:
     fragment_passed : (m,) bool
         Whether it passed the depth test when it arrived (always True without the test).
     fragment_sample : (m,) int64 or None
-        Multisampled renders: the sample each fragment entry was tested at, or -1 for a
-        pixel decided whole (one triangle at every sample, no per-sample test; its depth is
+        Multisampled renders: the sample each fragment entry was tested at (entries grouped
+        by sample, drawing order inside each), or -1 for a pixel decided whole (one triangle at every sample, no per-sample test; its depth is
         NaN here, the per-sample depths are in ``Frame.sample_depth``).
     """
 
