@@ -200,3 +200,17 @@ def test_trace_records_the_per_sample_tests(rng):
     ids = frame.sample_triangle_id[t.fragment_row[whole], t.fragment_col[whole]]
     assert (ids == t.fragment_triangle[whole][:, None]).all()  # one triangle at every sample
     assert whole.sum() == frame.plan["multisampling"].total - frame.plan["multisampling"].count
+
+
+@pytest.mark.parametrize(
+    "clip",
+    [np.zeros((0, 3, 4)), np.array([[[0, 0, 0, -1], [1, 0, 0, -1], [0, 1, 0, -1]]], float),
+     np.array([[[0, 0, 0, 1], [0.5, 0.5, 0, 1], [1, 1, 0, 1]]], float)],
+    ids=["empty", "behind the eye", "zero area"],
+)  # fmt: skip
+def test_nothing_to_draw(clip):
+    frame = tr.render(clip, 8, 6, samples=4, attrs=np.ones((len(clip), 3)), trace=True)
+    assert (frame.sample_triangle_id == -1).all() and (frame.triangle_id == -1).all()
+    assert np.isnan(frame.sample_depth).all() and np.isnan(frame.attrs).all()
+    assert frame.plan["multisampling"].total == 0
+    np.testing.assert_array_equal(frame.resolve(np.zeros((6, 8, 4)), 0.5), 0.5)

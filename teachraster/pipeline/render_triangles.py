@@ -288,8 +288,9 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     width, height = size
     n_s, k = len(multi.offsets), clipped.attrs.shape[2]
 
-    def ids(sub):
-        return np.where(sub >= 0, clipped.parent[np.maximum(sub, 0)], -1)
+    def ids(sub):  # input triangle ids (-1 stays -1; -1 also when nothing survived clipping)
+        parent = np.r_[clipped.parent, -1]  # index -1 reads the appended -1
+        return parent[sub]
 
     record = None
     if trace:  # the per-sample entries in drawing order, then the pixels decided whole
