@@ -29,7 +29,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.edges import setup_edges
-from ..core.interpolation import blend_each, weights_per_row
+from ..core.interpolation import weights_per_row
 from ..core.multisample import offsets_in_units
 from .batched_fill import flat_ranges, line_bounds, weight_source
 from .depth import quantize
@@ -252,41 +252,47 @@ def shade(source, window, w, attrs, tri, pixel, won, offsets, width, perspective
     """Attributes (n, k) and depth (n,) of ``tri`` evaluated once for ``pixel``.
 
     At the pixel centre, extrapolated on the triangle's planes when the centre lies
-    outside (values may leave the vertex range). Where the extrapolated 1/w would be <= 0,
-    at the sample nearest the centre among ``won`` (n, S) bool, the samples the triangle
-    shows in that pixel (ties: lower index). ``perspective`` (M,) bool: divide by w.
+    outside (values may leave the vertex range; inside they are clamped to it, as at
+    covered centres). Where the extrapolated 1/w would be <= 0, at the sample nearest the
+    centre among ``won`` (n, S) bool, the samples the triangle shows in that pixel (ties:
+    lower index). ``perspective`` (M,) bool: divide by w.
     """
     row, col = np.divmod(pixel, width)
     x, y = col + 0.5, row + 0.5
     lam = barycentrics_at(source, tri, x, y)
     wt = w[tri]
+    persp = perspective[tri]
     q = lam * (wt.min(axis=1, keepdims=True) / wt)
-    bad = perspective[tri] & ~(q.sum(axis=1) > 0)
-    if bad.any():
+    total = q[:, 0] + q[:, 1] + q[:, 2]
+    inside = (lam[:, 0] >= 0) & (lam[:, 1] >= 0) & (lam[:, 2] >= 0)
+    bad = persp & ~inside & ~(total > 0)
+    if bad.any():  # the plane of 1/w crosses zero before the centre: use a covered sample
         d = offsets - 0.5
         order = np.argsort(d[:, 0] ** 2 + d[:, 1] ** 2, kind="stable")
         s = order[np.argmax(won[bad][:, order], axis=1)]
         x, y = x.astype(np.float64), y.astype(np.float64)
         x[bad], y[bad] = col[bad] + offsets[s, 0], row[bad] + offsets[s, 1]
         lam[bad] = barycentrics_at(source, tri[bad], x[bad], y[bad])
-    inside = (lam >= 0).all(axis=1)
-    weights = lam.copy()
-    persp = perspective[tri]
-    clamp = inside & persp
-    if clamp.any():
-        weights[clamp] = weights_per_row(lam[clamp], wt[clamp])
-    out = ~inside & persp
-    if out.any():  # the planes of f/w and 1/w extended beyond the triangle
-        qo = lam[out] * (wt[out].min(axis=1, keepdims=True) / wt[out])
-        weights[out] = qo / qo.sum(axis=1, keepdims=True)
-    values = np.empty((len(tri), attrs.shape[2]))
-    depth = np.empty(len(tri))
-    z = window[tri, :, 2:3]
-    values[inside] = blend_each(weights[inside], attrs[tri[inside]])
-    depth[inside] = blend_each(lam[inside], z[inside])[:, 0]
-    values[~inside] = np.einsum("nk,nkc->nc", weights[~inside], attrs[tri[~inside]])
-    depth[~inside] = np.einsum("nk,nk->n", lam[~inside], z[~inside, :, 0])
+        q[bad] = lam[bad] * (wt[bad].min(axis=1, keepdims=True) / wt[bad])
+        total[bad] = q[bad, 0] + q[bad, 1] + q[bad, 2]
+        inside = (lam[:, 0] >= 0) & (lam[:, 1] >= 0) & (lam[:, 2] >= 0)
+    with np.errstate(divide="ignore", invalid="ignore"):  # rows fixed just below
+        weights = np.where(persp[:, None], q / total[:, None], lam)
+    under = persp & ~(total > 0)  # every term underflowed: the log-domain fallback
+    if under.any():
+        weights[under] = weights_per_row(np.maximum(lam[under], 0), wt[under])
+    values = _blend(weights, attrs[tri], inside)
+    depth = _blend(lam, window[tri, :, 2:3], inside)[:, 0]
     return values, depth
+
+
+def _blend(weights, values, clamp):
+    """``Σ μ_i f_i`` per row, values (n, 3, k); clamped to the vertex range where ``clamp``."""
+    v0, v1, v2 = values[:, 0], values[:, 1], values[:, 2]
+    out = weights[:, 0:1] * v0 + weights[:, 1:2] * v1 + weights[:, 2:3] * v2
+    lo = np.minimum(np.minimum(v0, v1), v2)
+    hi = np.maximum(np.maximum(v0, v1), v2)
+    return np.where(clamp[:, None], np.minimum(np.maximum(out, lo), hi), out)
 
 
 def _distinct(sub: np.ndarray, i: np.ndarray, s: np.ndarray):
