@@ -351,7 +351,7 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     """The depth buffer per sample: (P, S) triangle and stored depth, the whole pixels
     (flat index, triangle) and the number of samples where 2+ triangles met."""
     depth_test, depth_format = options
-    force_test, force_ms = forced
+    _, force_ms = forced  # the one-pass z-buffer does the same work forced or not
     width, height = size
     n_s, n_pix = len(offsets), width * height
     if force_ms:
@@ -370,7 +370,7 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     x, y = col + offsets[sample, 0], row + offsets[sample, 1]
     depth = quantize(plane_depth(planes, unit, tri, x, y), depth_format)
     slot = pixel * n_s + sample
-    won, passed, tested = resolve(slot, depth, n_pix * n_s, depth_test, force_test)
+    won, _ = resolve(slot, depth, n_pix * n_s, depth_test)
     sample_tri = np.full(n_pix * n_s, -1, dtype=np.int64)
     sample_depth = np.full(n_pix * n_s, np.nan)
     hit = np.flatnonzero(won >= 0)
@@ -387,8 +387,8 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     )  # fmt: skip
     met = int(np.count_nonzero(np.bincount(slot) > 1))
     met += n_s * int(np.count_nonzero(np.bincount(frags.full_pixel[whole], minlength=n_pix) > 1))
-    record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "passed": passed,
-              "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
+    record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "slot": slot,
+              "depth_test": depth_test, "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
     return sample_tri, sample_depth, (wp, winner[wp]), met, record
 
 

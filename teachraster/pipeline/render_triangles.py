@@ -37,6 +37,7 @@ from .stages import (
     interpolate_stage,
     viewport_stage,
 )
+from .zbuffer import passed_on_arrival
 
 
 @dataclass(frozen=True)
@@ -301,7 +302,11 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
             clipped.status, clipped.polygons, window, clipped.parent, culled,
             clipped.parent[tri], row, col,
             np.concatenate([r["depth"], np.full(len(r["whole_tri"]), np.nan)]),
-            np.concatenate([r["passed"], np.ones(len(r["whole_tri"]), dtype=bool)]),
+            np.concatenate([
+                passed_on_arrival(r["slot"], r["depth"]) if r["depth_test"]
+                else np.ones(len(r["slot"]), dtype=bool),
+                np.ones(len(r["whole_tri"]), dtype=bool),
+            ]),
             np.concatenate([r["sample"], np.full(len(r["whole_tri"]), -1)]),
         )  # fmt: skip
     return Frame(

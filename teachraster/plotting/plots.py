@@ -433,7 +433,7 @@ class SplitArtists(Artists):
 def plot_split(ax, fill) -> SplitArtists:
     """The span-table split: the line y = v2.y, the point v4 = (u4, v2.y), the flat triangles.
 
-    Seed 000 §1.1: with the vertices sorted by y (v1 top, v3 bottom),
+    Ek, *Triangles and Perspective Correct Interpolation*, §1.1: with the vertices sorted by y (v1 top, v3 bottom),
     ``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` splits the triangle into a flat-bottom
     (v1, v2, v4) and a flat-top (v2, v4, v3) triangle.
 
