@@ -171,61 +171,73 @@ def plane_depth(planes, unit, tri, x, y) -> np.ndarray:
 def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
     """Pixels where one triangle shows at every sample without a per-sample test.
 
-    A pixel qualifies when no triangle covers it only partly and either one triangle covers
-    it, or the depth test is off (the last drawn wins everywhere), or one triangle's depth
-    over the whole pixel square lies strictly below every other's there (bounded by the
-    plane's slope, after quantisation: so every sample's test would agree). Returns a
-    bool mask over ``frags.full_pixel`` (True: decided whole) and the winner per pixel.
+    A pixel qualifies when a triangle covers all its samples and either no other triangle
+    reaches the pixel, or (depth test off, no partial coverage) it is the last drawn, or
+    (depth test on) its depth over the whole pixel square lies strictly below every other
+    triangle's there, partly covering ones included (bounded by the plane's slope, after
+    quantisation: every sample's test would agree). Returns the winner per pixel (-1: decide
+    sample by sample).
     """
     width, height = size
     n_pix = width * height
     f_pix, f_tri = frags.full_pixel, frags.full_tri
     count = np.bincount(f_pix, minlength=n_pix)
     partial = np.bincount(frags.pixel, minlength=n_pix) > 0
-    candidate = (~partial)[f_pix]
     winner = np.full(n_pix, -1, dtype=np.int64)
-    one = candidate & (count[f_pix] == 1)
+    one = ~partial[f_pix] & (count[f_pix] == 1)
     winner[f_pix[one]] = f_tri[one]
-    many = np.flatnonzero(candidate & (count[f_pix] > 1))
-    if len(many):  # per-pixel reductions by ufunc.at: no sort by pixel needed
-        pix, tri = f_pix[many], f_tri[many]
-        if not depth_test:  # the last one drawn (highest index) wins at every sample
-            last = np.full(n_pix, -1, dtype=np.int64)
-            np.maximum.at(last, pix, np.arange(len(pix)))
-            done = np.flatnonzero(last >= 0)
-            winner[done] = tri[last[done]]
-        else:
-            _nearest_everywhere(planes, unit, pix, tri, width, depth_format, winner)
-    whole = winner[f_pix] >= 0
-    return whole & candidate, winner
+    if not depth_test:  # the last one drawn (highest index) wins at every sample
+        many = np.flatnonzero(~partial[f_pix] & (count[f_pix] > 1))
+        last = np.full(n_pix, -1, dtype=np.int64)
+        np.maximum.at(last, f_pix[many], many)
+        done = np.flatnonzero(last >= 0)
+        winner[done] = f_tri[last[done]]
+        return winner
+    contested = np.flatnonzero(partial[f_pix] | (count[f_pix] > 1))
+    if len(contested):  # per-pixel reductions by ufunc.at: no sort by pixel needed
+        hidden = np.flatnonzero(count[frags.pixel] > 0)  # partial entries beside a full one
+        _nearest_everywhere(planes, unit, (f_pix[contested], f_tri[contested]),
+                            (frags.pixel[hidden], frags.tri[hidden]), width, depth_format,
+                            winner)  # fmt: skip
+    return winner
 
 
-def _nearest_everywhere(planes, unit, pix, tri, width, depth_format, winner):
-    """Set ``winner`` where one triangle is nearer than all others over the whole pixel.
-
-    ``pix``, ``tri`` are the full fragments of contested pixels in drawing order. Each
-    plane's range over the pixel square is its centre value ± half the slopes; a margin
-    covers the rounding of the per-sample evaluation; quantising both ends keeps the order
-    every sample's test would see. The candidate is the first fragment (drawing order)
-    with the smallest upper end; it wins when that is below every other fragment's lower end.
-    """
-    n_pix = len(winner)
+def _depth_range(planes, unit, pix, tri, width, depth_format):
+    """Lower and upper bound of each plane's stored depth over its pixel square."""
     row, col = np.divmod(pix, width)
     c = planes[tri]
     tx, ty = c[:, 3] * ((col + 0.5) * unit - c[:, 0]), c[:, 4] * ((row + 0.5) * unit - c[:, 1])
     centre = c[:, 2] + tx + ty
     reach = 0.5 * unit * (np.abs(c[:, 3]) + np.abs(c[:, 4]))
     margin = 1e-12 * (1.0 + np.abs(tx) + np.abs(ty) + reach)
-    hi = quantize(np.clip(centre + reach + margin, c[:, 5], c[:, 6]) + margin, depth_format)
     lo = quantize(np.clip(centre - reach - margin, c[:, 5], c[:, 6]) - margin, depth_format)
+    hi = quantize(np.clip(centre + reach + margin, c[:, 5], c[:, 6]) + margin, depth_format)
+    return lo, hi
+
+
+def _nearest_everywhere(planes, unit, full, partial, width, depth_format, winner):
+    """Set ``winner`` where one whole triangle is nearer than all others over the pixel.
+
+    ``full`` = (pixels, triangles) of fragments covering every sample of contested pixels,
+    in drawing order; ``partial`` = the same for entries covering only some samples there.
+    Each plane's range over the pixel square is its centre value ± half the slopes; a margin
+    covers the rounding of the per-sample evaluation; quantising both ends keeps the order
+    every sample's test would see. The candidate is the first full fragment (drawing order)
+    with the smallest upper end; it wins when that is below every other's lower end.
+    """
+    n_pix = len(winner)
+    pix, tri = full
+    lo, hi = _depth_range(planes, unit, pix, tri, width, depth_format)
     best = np.full(n_pix, np.inf)
     np.minimum.at(best, pix, hi)
     index = np.arange(len(pix))
     first = np.full(n_pix, len(pix), dtype=np.int64)
     np.minimum.at(first, pix, np.where(hi == best[pix], index, len(pix)))
-    others = np.where(first[pix] == index, np.inf, lo)
     rest = np.full(n_pix, np.inf)
-    np.minimum.at(rest, pix, others)
+    np.minimum.at(rest, pix, np.where(first[pix] == index, np.inf, lo))
+    if len(partial[0]):
+        p_lo, _ = _depth_range(planes, unit, *partial, width, depth_format)
+        np.minimum.at(rest, partial[0], p_lo)
     done = np.flatnonzero(best < rest)  # inf < inf is False for pixels not in this set
     winner[done] = tri[first[done]]
 
@@ -355,14 +367,15 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     width, height = size
     n_s, n_pix = len(offsets), width * height
     if force_ms:
-        whole, winner = np.zeros(len(frags.full_pixel), bool), np.full(n_pix, -1, np.int64)
+        winner = np.full(n_pix, -1, np.int64)
     else:
-        whole, winner = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
-    # every other covered sample, in drawing order (full fragments count S times)
-    rest = np.flatnonzero(~whole)
-    tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.tri])
-    pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.pixel])
-    sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), frags.sample])
+        winner = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
+    # every covered sample of the other pixels (full fragments count S times)
+    rest = np.flatnonzero(winner[frags.full_pixel] < 0)
+    keep = np.flatnonzero(winner[frags.pixel] < 0)
+    tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.tri[keep]])
+    pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.pixel[keep]])
+    sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), frags.sample[keep]])
     # grouped by sample slot, drawing order (triangle index) inside each: the z-buffer's order
     order = np.argsort((pixel * n_s + sample) * len(planes) + tri)
     tri, pixel, sample = tri[order], pixel[order], sample[order]
@@ -386,7 +399,10 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
                     wr[:, None] + offsets[:, 1]), depth_format,
     )  # fmt: skip
     met = int(np.count_nonzero(np.bincount(slot) > 1))
-    met += n_s * int(np.count_nonzero(np.bincount(frags.full_pixel[whole], minlength=n_pix) > 1))
+    reached = np.bincount(frags.full_pixel, minlength=n_pix) + (
+        np.bincount(frags.pixel, minlength=n_pix) > 0
+    )  # a pixel decided whole that 2+ triangles reach: the test settled all its samples
+    met += n_s * int(np.count_nonzero(reached[wp] > 1))
     record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "slot": slot,
               "depth_test": depth_test, "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
     return sample_tri, sample_depth, (wp, winner[wp]), met, record
