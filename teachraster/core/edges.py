@@ -18,7 +18,7 @@ below 2**62 and E below 2**63: computed in int64, E is exact, and the sign tests
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -43,6 +43,9 @@ class EdgeSetup:
     top_left: np.ndarray  # (..., 3) bool per edge
     unit: int | float  # internal units per pixel
     exact: bool  # True on the snapped integer grid
+    #: Where inside each pixel the tests run, (x, y) from its top-left corner in units;
+    #: None is the pixel centre. Multisampling sets one per sample (see :meth:`at_sample`).
+    sample: tuple[int, int] | tuple[float, float] | None = None
 
     @property
     def half(self) -> int | float:
@@ -50,13 +53,35 @@ class EdgeSetup:
         return self.unit // 2 if self.exact else 0.5
 
     @property
+    def offset_x(self) -> int | float:
+        """x of the tested point from the pixel's corner, in units (the centre by default)."""
+        return self.half if self.sample is None else self.sample[0]
+
+    @property
+    def offset_y(self) -> int | float:
+        """y of the tested point from the pixel's corner, in units (the centre by default)."""
+        return self.half if self.sample is None else self.sample[1]
+
+    def at_sample(self, ox, oy) -> EdgeSetup:
+        """The same triangle tested at offset (ox, oy) units inside every pixel.
+
+        Everything else (vertices, winding, the top-left flags) is shared: a sample is
+        decided exactly like a pixel centre, only at another point of the pixel.
+        """
+        return replace(self, sample=(ox, oy))
+
+    @property
     def edges(self) -> np.ndarray:
         """(3, 2) original vertex indices (from, to) of each directed edge, in test order."""
         return np.stack([self.perm, np.roll(self.perm, -1)], axis=1)
 
     def centre_x(self, cols: np.ndarray) -> np.ndarray:
-        """x of pixel centres of columns ``cols``, in units."""
-        return np.asarray(cols, dtype=self.p.dtype) * self.unit + self.half
+        """x of the tested points (pixel centres, or the sample) of columns ``cols``, in units."""
+        return np.asarray(cols, dtype=self.p.dtype) * self.unit + self.offset_x
+
+    def centre_y(self, rows: np.ndarray) -> np.ndarray:
+        """y of the tested points (pixel centres, or the sample) of rows ``rows``, in units."""
+        return np.asarray(rows, dtype=self.p.dtype) * self.unit + self.offset_y
 
     def edge_terms(self, k: int, rows: np.ndarray, cols: np.ndarray):
         """Row and column parts of E_k: ``E_k[r, c] = row_term[r] - col_term[c]``.
@@ -65,7 +90,7 @@ class EdgeSetup:
         the pixel position, so one multiply per row and one per column suffice.
         """
         a, b = self.p[k], self.p[(k + 1) % 3]
-        ys = self.centre_x(rows) - a[1]  # centre y uses the same formula as centre x
+        ys = self.centre_y(rows) - a[1]
         xs = self.centre_x(cols) - a[0]
         return (b[0] - a[0]) * ys, (b[1] - a[1]) * xs
 

@@ -158,7 +158,7 @@ def _edge_index(i: int, j: int) -> int:
 def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTrace | None]:
     """Coverage of the bounding box (bbox-local bool array) and, if asked, the trace."""
     rows = bbox.rows()
-    y = setup.centre_x(rows)
+    y = setup.centre_y(rows)  # one raster line per row of tested points (centres or a sample)
     # Sort by y (then x): v1 on top, v3 at the bottom (Ek, *Triangles and Perspective Correct Interpolation*, §1.1).
     v1, v2, v3 = np.lexsort((setup.p[:, 0], setup.p[:, 1]))
     long_edge, top_edge, bottom_edge = _edge_index(v1, v3), _edge_index(v1, v2), _edge_index(v2, v3)
@@ -189,7 +189,7 @@ def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTr
         for k in edges:
             a, b = setup.p[k], setup.p[(k + 1) % 3]
             low, high, ok, crossing = edge_bounds(
-                a, b, setup.top_left[k], y[part], setup.unit, setup.half, setup.exact,
+                a, b, setup.top_left[k], y[part], setup.unit, setup.offset_x, setup.exact,
                 first_col=bbox.col0, last_col=bbox.col1 - 1,
             )  # fmt: skip
             lo[part] = np.maximum(lo[part], low)

@@ -35,6 +35,7 @@ from . import half_planes
 from .bbox import BBox
 from .edges import setup_edges
 from .half_planes import HalfPlaneTrace
+from .multisample import SampleTrace
 from .span_tables import SpanTrace
 from .validate import as_int
 
@@ -106,6 +107,10 @@ class FillTrace:
         N of ``interpolation="subdivided"``; None for the other modes.
     pixel_subdivided : mapping of name to (n,) or (n, k) float64, or None
         The subdivided values actually written (``interpolation="subdivided"`` only).
+    samples : SampleTrace or None
+        With ``samples`` other than 1: every sample's tests and where each pixel's
+        attributes were evaluated. The steps and the per-pixel arrays above then describe
+        the pixel-centre pass (what ``samples=1`` fills), for the same step-by-step story.
     """
 
     method: str
@@ -130,6 +135,7 @@ class FillTrace:
     halfplane: HalfPlaneTrace | None
     subdivision: int | None = None
     pixel_subdivided: Mapping[str, np.ndarray] | None = None
+    samples: SampleTrace | None = None
 
     # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
     def _local(self, values: np.ndarray) -> np.ndarray:

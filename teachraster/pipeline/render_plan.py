@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: Effects that ``force=`` can switch on everywhere, for comparison.
-FORCEABLE = ("clipping", "perspective", "depth_test", "attributes")
+FORCEABLE = ("clipping", "perspective", "depth_test", "attributes", "multisampling")
 
 
 @dataclass(frozen=True)
@@ -159,3 +159,22 @@ def attributes_effect(
     else:
         why = f"{k} channel(s) at the {covered:,} visible pixel(s) only, not at hidden fragments"
     return Effect("attributes", k > 0, n_shaded if k else 0, n_fragments, "fragments", why, forced)
+
+
+def multisampling_effect(n_samples: int, n_per_sample: int, covered: int, forced: bool) -> Effect:
+    """MSAA: ``n_per_sample`` of ``covered`` pixels needed work sample by sample.
+
+    At the others every sample shows the same triangle: it covers the whole pixel and no
+    other triangle touches it, or every other one that does is farther over the whole pixel
+    (or drawn earlier without the depth test). One answer serves all ``n_samples`` there.
+    """
+    if forced:
+        why = f"every covered pixel resolved sample by sample ({n_samples} samples)"
+    else:
+        why = (
+            f"{n_per_sample:,} pixel(s) are partly covered or reached by 2+ triangles: "
+            f"coverage, depth test and shading per sample there; the other "
+            f"{covered - n_per_sample:,} show one triangle at every sample (it covers the "
+            f"whole pixel and is in front over all of it): one answer for all {n_samples}"
+        )
+    return Effect("multisampling", True, n_per_sample, covered, "pixels", why, forced)

@@ -60,14 +60,18 @@ def render_scene(
     texture_filter: str = "nearest",
     force=None,
     max_pixels: int | None = None,
+    background=(1.0, 1.0, 1.0),
     **kwargs,
 ) -> SceneFrame:
     """Render ``scene`` through ``camera`` (default: the scene's own) and shade it.
 
     Other keyword arguments (``depth_test``, ``cull``, ``depth_format``, ``interpolation``,
-    ``trace``, ``subpixel_bits``) go to :func:`teachraster.pipeline.render_triangles.render`;
-    ``max_pixels`` (default 2**28) caps ``width * height`` there too, checked before the
-    scene is projected.
+    ``trace``, ``subpixel_bits``, ``samples``) go to
+    :func:`teachraster.pipeline.render_triangles.render`; ``max_pixels`` (default 2**28) caps
+    ``width * height`` there too, checked before the scene is projected. With ``samples`` > 1
+    the image is the MSAA resolve: every sample shows its triangle's colour (shaded once per
+    pixel and triangle), and uncovered samples count as ``background`` (default white, the
+    figure background an uncovered pixel shows); pixels with no covered sample stay NaN.
 
     >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
@@ -111,22 +115,35 @@ def render_scene(
             for e in effects
         )
 
-    if scene.shading == "texture":
-        uv = frame.attrs[..., layout["uv"]]
-        image = sample(scene.texture, uv, filter=texture_filter)
-    elif scene.shading == "color":
-        image = frame.attrs[..., layout["color"]]
-    else:
-        image = _palette(frame.triangle_id)
+    if frame.sample_triangle_id is None:
+        image = _shade(scene, frame.attrs, frame.triangle_id, layout, texture_filter)
+    else:  # MSAA: each sample holds its triangle's colour (shaded once per pixel), resolved
+        colours = _shade(scene, frame.sample_attrs, frame.sample_triangle_id, layout,
+                         texture_filter)  # fmt: skip
+        image = frame.resolve(colours, background)
+        image[~frame.coverage] = np.nan  # no sample covered: uncovered, as without MSAA
     return SceneFrame(
         triangle_id=frame.triangle_id,
         attrs=frame.attrs,
         depth=frame.depth,
         plan=Plan(effects),
         trace=frame.trace,
+        sample_triangle_id=frame.sample_triangle_id,
+        sample_depth=frame.sample_depth,
+        sample_attrs=frame.sample_attrs,
+        samples=frame.samples,
         image=image,
         layout=layout,
     )
+
+
+def _shade(scene: Scene, attrs, ids, layout, texture_filter) -> np.ndarray:
+    """The scene's colour from interpolated ``attrs`` (..., k) and triangle ``ids`` (...)."""
+    if scene.shading == "texture":
+        return sample(scene.texture, attrs[..., layout["uv"]], filter=texture_filter)
+    if scene.shading == "color":
+        return attrs[..., layout["color"]]
+    return _palette(ids)
 
 
 def render(clip_or_scene, *args, **kwargs) -> Frame:

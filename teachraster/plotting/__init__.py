@@ -35,6 +35,13 @@ Per-pixel values
 - :func:`plot_image` -- a colour image such as a texture-mapped SceneFrame.
 - :func:`plot_plan` / :func:`format_plan` -- a render plan as a text table.
 
+Antialiasing (multisampled fills and frames, :mod:`.antialiasing`)
+------------------------------------------------------------------
+- :func:`plot_samples` -- every sample at its position, filled where covered.
+- :func:`plot_pixel_samples` -- one pixel magnified: samples, owners, edge values.
+- :func:`plot_coverage_fraction` -- the fraction of samples covered per pixel.
+- :func:`plot_area_error` -- coverage fraction minus the exact area, signed.
+
 Views (draw once, then update in place; for widgets and animations)
 -------------------------------------------------------------------
 - :class:`FillView` -- step through a fill: ``show_step(k)``, ``set_fill(new_fill)``;
@@ -49,6 +56,14 @@ Style
 - :data:`COLORS`, :data:`OKABE_ITO` -- the colour of each role and the palette.
 """
 
+from .antialiasing import (
+    PixelSampleArtists,
+    SampleArtists,
+    plot_area_error,
+    plot_coverage_fraction,
+    plot_pixel_samples,
+    plot_samples,
+)
 from .images import (
     HeatmapArtists,
     ImageArtists,
@@ -94,6 +109,12 @@ from .style import COLORS, OKABE_ITO, STYLES, use_style
 from .views import ComparisonView, FillView, InterpolationView
 
 __all__ = [
+    "PixelSampleArtists",
+    "SampleArtists",
+    "plot_area_error",
+    "plot_coverage_fraction",
+    "plot_pixel_samples",
+    "plot_samples",
     "COLORS",
     "OKABE_ITO",
     "STYLES",

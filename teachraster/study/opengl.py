@@ -28,6 +28,11 @@ How the conventions are met
   passes against the cleared value 1.0, as it does in teachraster where an empty pixel has no
   depth at all.
 
+- **Multisampling.** :func:`gl_render_samples` draws into a 4-sample float texture and reads
+  every sample back with ``texelFetch`` on a ``sampler2DMS``; ``gl_SampleMaskIn`` gives GL's
+  own coverage mask per fragment. llvmpipe's positions (``glGetMultisamplefv``) are the
+  Direct3D standard pattern, and with y negated they are our y-down offsets unchanged.
+
 Examples
 --------
 Where OpenGL is available, GL covers exactly the pixels the core rasteriser does:
@@ -56,7 +61,15 @@ import numpy as np
 
 from ..core.validate import as_size
 
-__all__ = ["GLFrame", "GLRenderer", "gl_available", "gl_render"]
+__all__ = [
+    "GLFrame",
+    "GLRenderer",
+    "GLSampleFrame",
+    "gl_available",
+    "gl_render",
+    "gl_render_samples",
+    "gl_sample_positions",
+]
 
 #: Attribute components carried by one varying (a vec4).
 _CHUNK = 4
@@ -71,6 +84,7 @@ _GL_FRAMEBUFFER = 0x8D40
 _GL_DEPTH_ATTACHMENT = 0x8D00
 _GL_DEPTH_COMPONENT32F = 0x8CAC
 _GL_FRAMEBUFFER_COMPLETE = 0x8CD5
+_GL_SAMPLE_POSITION = 0x8E50
 
 # Cached per process: creating an EGL context costs tens of milliseconds.
 _STATE: dict = {"status": None, "ctx": None, "gl": None, "programs": {}}
@@ -180,13 +194,23 @@ class _RawGL:
         self.framebuffer_renderbuffer = fn("glFramebufferRenderbuffer", None, u, u, u, u)
         self.check_framebuffer_status = fn("glCheckFramebufferStatus", u, u)
         self.depth_range = fn("glDepthRange", None, d, d)
+        self.renderbuffer_storage_multisample = fn(
+            "glRenderbufferStorageMultisample", None, u, i, u, i, i
+        )
+        self.get_multisample = fn("glGetMultisamplefv", None, u, u, ctypes.POINTER(ctypes.c_float))
 
-    def float_depth_buffer(self, width: int, height: int) -> int:
-        """Attach a new float32 depth renderbuffer to the bound framebuffer; return its name."""
+    def float_depth_buffer(self, width: int, height: int, samples: int = 0) -> int:
+        """Attach a new float32 depth renderbuffer (``samples`` per pixel when > 0) to the
+        bound framebuffer; return its name."""
         name = ctypes.c_uint(0)
         self.gen_renderbuffers(1, ctypes.byref(name))
         self.bind_renderbuffer(_GL_RENDERBUFFER, name)
-        self.renderbuffer_storage(_GL_RENDERBUFFER, _GL_DEPTH_COMPONENT32F, width, height)
+        if samples:
+            self.renderbuffer_storage_multisample(
+                _GL_RENDERBUFFER, samples, _GL_DEPTH_COMPONENT32F, width, height
+            )
+        else:
+            self.renderbuffer_storage(_GL_RENDERBUFFER, _GL_DEPTH_COMPONENT32F, width, height)
         self.bind_renderbuffer(_GL_RENDERBUFFER, 0)
         self.framebuffer_renderbuffer(
             _GL_FRAMEBUFFER, _GL_DEPTH_ATTACHMENT, _GL_RENDERBUFFER, name.value
@@ -459,3 +483,159 @@ def gl_render(
     """
     with GLRenderer(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull) as gl:
         return gl.render()
+
+
+# -- multisampling -----------------------------------------------------------------------------
+@dataclass(frozen=True)
+class GLSampleFrame:
+    """What OpenGL drew into a multisampled framebuffer, read back sample by sample.
+
+    Attributes
+    ----------
+    sample_triangle_id : (height, width, S) int64
+        Index of the triangle each sample shows (``gl_PrimitiveID`` of the fragment that
+        wrote it), -1 where none did. Row 0 at the top, as everywhere.
+    sample_mask : (height, width, S) bool
+        Bit s of ``gl_SampleMaskIn[0]`` of the fragment that wrote sample s (False where
+        none did): GL's own coverage mask for the fragment.
+    positions : (S, 2) float64
+        The sample positions GL reports (``glGetMultisamplefv(GL_SAMPLE_POSITION, s)``).
+    """
+
+    sample_triangle_id: np.ndarray
+    sample_mask: np.ndarray
+    positions: np.ndarray
+
+
+_MS_DRAW_FS = """#version 400
+layout(location = 0) out vec4 o_id;
+void main() {
+    // the depth range is [0, 1/2] (module docstring); the id and this fragment's mask
+    o_id = vec4(float(gl_PrimitiveID), float(gl_SampleMaskIn[0]), 0.0, 1.0);
+}
+"""
+_MS_RESOLVE_VS = """#version 330
+in vec2 in_corner;
+void main() { gl_Position = vec4(in_corner, 0.0, 1.0); }
+"""
+_MS_RESOLVE_FS = """#version 330
+uniform sampler2DMS samples;
+uniform int sample_index;
+out vec4 o;
+void main() { o = texelFetch(samples, ivec2(gl_FragCoord.xy), sample_index); }
+"""
+
+
+def gl_sample_positions(samples: int = 4) -> np.ndarray:
+    """(S, 2) sample positions of a ``samples``-sample float framebuffer, as GL reports them.
+
+    GL gives them from the pixel's lower-left corner with y up; with clip y negated and no
+    flip on read-back (module docstring) GL's rows are ours, so these are our y-down offsets.
+    """
+    ctx, gl = _context()
+    tex = ctx.texture((4, 4), 4, dtype="f4", samples=samples)
+    fbo = ctx.framebuffer([tex])
+    try:
+        fbo.use()
+        out = np.empty((samples, 2))
+        for s in range(samples):
+            v = (ctypes.c_float * 2)()
+            gl.get_multisample(_GL_SAMPLE_POSITION, s, v)
+            out[s] = v[0], v[1]
+        return out
+    finally:
+        fbo.release()
+        tex.release()
+
+
+def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_test: bool = True,
+                      cull: str | None = None) -> GLSampleFrame:  # fmt: skip
+    """Draw clip-space triangles into an S-sample framebuffer and read every sample back.
+
+    The triangles are drawn as in :func:`gl_render` (clip y negated, float32 depth in
+    [0, 1/2], ``GL_LESS``), into a multisampled float texture; a second pass reads sample s
+    of every pixel with ``texelFetch`` on a ``sampler2DMS`` into a plain float target.
+    """
+    import moderngl
+
+    clip, width, height, _ = _check_inputs(clip, width, height, None, cull)
+    ctx, gl = _context()
+    res, depth_rb = [], None
+    try:
+        tex = ctx.texture((width, height), 4, dtype="f4", samples=samples)
+        res.append(tex)
+        fbo = ctx.framebuffer([tex])
+        res.append(fbo)
+        fbo.use()
+        depth_rb = gl.float_depth_buffer(width, height, samples)
+        fbo.depth_mask = True
+        if "ms_draw" not in _STATE["programs"]:
+            vs, _ = _shaders(0)
+            _STATE["programs"]["ms_draw"] = ctx.program(
+                vertex_shader=vs, fragment_shader=_MS_DRAW_FS
+            )
+            _STATE["programs"]["ms_resolve"] = ctx.program(
+                vertex_shader=_MS_RESOLVE_VS, fragment_shader=_MS_RESOLVE_FS
+            )
+        draw, read = _STATE["programs"]["ms_draw"], _STATE["programs"]["ms_resolve"]
+        pos = ctx.buffer(clip.astype("f4").tobytes())
+        res.append(pos)
+        vao = ctx.vertex_array(draw, [(pos, "4f", "in_pos")])
+        res.append(vao)
+        gl.depth_range(0.0, 0.5)
+        flags = moderngl.NOTHING
+        if depth_test:
+            flags |= moderngl.DEPTH_TEST
+            ctx.depth_func = "<"
+        if cull is not None:
+            flags |= moderngl.CULL_FACE
+            ctx.front_face, ctx.cull_face = "cw", cull
+        ctx.enable_only(flags)
+        fbo.clear(-1.0, 0.0, 0.0, 0.0, depth=1.0)
+        if len(clip):
+            vao.render(moderngl.TRIANGLES, vertices=3 * len(clip))
+        positions = gl_sample_positions(samples)
+        ids, masks = _read_samples(ctx, read, tex, (width, height), samples, res)
+    finally:
+        if depth_rb is not None:
+            gl.delete(depth_rb)
+        for obj in reversed(res):
+            obj.release()
+    bits = masks.astype(np.int64)
+    mask = (bits[..., None] >> np.arange(samples)) & 1
+    covered = ids >= 0
+    return GLSampleFrame(
+        sample_triangle_id=ids,
+        sample_mask=np.stack([mask[..., s, s] for s in range(samples)], axis=-1).astype(bool)
+        & covered,
+        positions=positions,
+    )
+
+
+def _read_samples(ctx, program, tex, size, samples, res):
+    """(H, W, S) ids and masks: one full-screen pass per sample with ``texelFetch``."""
+    import moderngl
+
+    width, height = size
+    corners = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype="f4").tobytes())
+    res.append(corners)
+    vao = ctx.vertex_array(program, [(corners, "2f", "in_corner")])
+    res.append(vao)
+    target = ctx.renderbuffer(size, 4, dtype="f4")
+    res.append(target)
+    out_fbo = ctx.framebuffer([target])
+    res.append(out_fbo)
+    out_fbo.use()
+    ctx.enable_only(moderngl.NOTHING)
+    tex.use(location=0)
+    program["samples"] = 0
+    ids = np.empty((height, width, samples), dtype=np.int64)
+    masks = np.empty((height, width, samples))
+    buf = np.empty((height, width, 4), dtype="f4")
+    for s in range(samples):
+        program["sample_index"] = s
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        out_fbo.read_into(buf, components=4, dtype="f4")  # GL row 0 is ours: no flip
+        ids[..., s] = buf[..., 0].astype(np.int64)
+        masks[..., s] = buf[..., 1]
+    return ids, masks

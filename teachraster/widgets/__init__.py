@@ -16,6 +16,8 @@ Widgets
 - :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
   perspective-correct texture coordinates side by side, with the error in texels; a tilt
   slider.
+- :class:`PixelInspector` -- choose a pixel and a sample pattern: every sample of the image,
+  and the pixel magnified with the triangle owning each sample and its edge values.
 
 Figures
 -------
@@ -37,6 +39,7 @@ Example
 
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
+from .inspector import PixelInspector
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer
 
@@ -44,6 +47,7 @@ __all__ = [
     "BACKENDS",
     "FigureDisplay",
     "FillPlayer",
+    "PixelInspector",
     "TexturedPlaneViewer",
     "TriangleEditor",
     "resolve_backend",
