@@ -517,3 +517,17 @@ def test_degenerate_projections_are_refused():
     np.testing.assert_array_equal(
         tr.perspective(np.float32(90), np.int8(1), 1, np.uint8(3)), tr.perspective(90, 1, 1, 3)
     )
+
+
+def test_widget_sizes_are_python_ints():
+    """The widgets take numpy integer sizes (stored as Python ints) and name a float size."""
+    pytest.importorskip("ipywidgets")
+    pytest.importorskip("matplotlib")
+    from teachraster.widgets import FillPlayer
+
+    t = tr.Triangle([[1, 1], [7, 2], [2, 6]])
+    player = FillPlayer(t, np.uint8(8), np.int64(6), interval=np.int16(300))
+    assert (player.width, player.height) == (8, 6) and type(player.width) is int
+    player.close()
+    with pytest.raises(TypeError, match="width"):
+        FillPlayer(t, 8.0, 6)

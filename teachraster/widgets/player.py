@@ -8,6 +8,7 @@ import ipywidgets as widgets
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
+from ..core.validate import as_int, as_size
 from ..plotting import COLORS, FillView, InterpolationView, plot_samples
 from ..plotting.blitting import STILL, LayeredBlit
 from .common import (
@@ -120,7 +121,9 @@ class FillPlayer(Holdable):
     ) -> None:
         if not isinstance(tri, Triangle):
             raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
-        self.tri, self.width, self.height = tri, width, height
+        self.tri = tri
+        self.width, self.height = as_size("width", width), as_size("height", height)
+        interval = as_int("interval", interval, minimum=1)
         self.backend = resolve_backend(backend)
         self._fills: dict[tuple[str, str, str], object] = {}
         self.samples = widgets.Dropdown(options=list(SAMPLE_PATTERNS), value=samples,
