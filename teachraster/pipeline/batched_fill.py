@@ -14,7 +14,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.snapping import SUBPIXEL_BITS, to_units, units_per_pixel
+from ..core.bbox import centre_ranges
+from ..core.edges import facing, setup_edges
+from ..core.snapping import SUBPIXEL_BITS
 from ..core.span_tables import edge_bounds
 
 
@@ -56,9 +58,7 @@ def snapped_area2(xy: np.ndarray, subpixel_bits: int | None = SUBPIXEL_BITS) -> 
 
     Positive when clockwise on screen (back-facing), negative when front-facing.
     """
-    v = to_units(xy, subpixel_bits)
-    (ax, ay), (bx, by), (cx, cy) = (v[:, k].T for k in range(3))
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    return np.asarray(setup_edges(np.asarray(xy, dtype=np.float64), subpixel_bits).original_area2)
 
 
 def rasterize_batch(
@@ -84,28 +84,20 @@ def rasterize_batch(
     >>> f.tri.tolist(), f.row.tolist(), f.col.tolist()
     ([0, 1, 1, 1], [0, 0, 1, 1], [0, 1, 0, 1])
     """
-    v = to_units(xy, subpixel_bits)  # (n, 3, 2)
-    unit = units_per_pixel(subpixel_bits)
-    exact = subpixel_bits is not None
-    half = unit // 2 if exact else 0.5
-    area2 = snapped_area2(xy, subpixel_bits)
-    facing = np.sign(area2).astype(np.int8)
-    # Orient every triangle so its inside is on the positive side (swap vertices 1 and 2).
-    perm = np.where((area2 < 0)[:, None], [0, 2, 1], [0, 1, 2])
-    p = np.take_along_axis(v, perm[:, :, None], axis=1)
+    xy = np.asarray(xy, dtype=np.float64).reshape(-1, 3, 2)
+    # The same set-up as tr.rasterize, once for the whole batch: snapping, orientation
+    # (inside on the positive side of every edge) and the top-left classification.
+    setup = setup_edges(xy, subpixel_bits)
+    unit, half, exact = setup.unit, setup.half, setup.exact
+    area2 = np.asarray(setup.original_area2)
+    p = setup.p
     live = area2 != 0
     if skip is not None:
         live &= ~skip
 
     # Raster lines per triangle: centres within the y-range, clipped to the image.
-    ymin, ymax = p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1)
-    if exact:
-        r0, r1 = -((half - ymin) // unit), (ymax - half) // unit
-    else:
-        r0, r1 = np.ceil((ymin - half) / unit), np.floor((ymax - half) / unit)
-    r0 = np.clip(r0, 0, height).astype(np.int64)
-    r1 = np.clip(r1 + 1, 0, height).astype(np.int64)
-    r1 = np.where(live, np.maximum(r1, r0), r0)
+    r0, r1 = centre_ranges(p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1), setup, height)
+    r1 = np.where(live, r1, r0)
     owner, rows = _ranges(r0, r1)
     y = rows * unit + half
     if not exact:
@@ -116,7 +108,7 @@ def rasterize_batch(
     ok = np.ones(len(rows), dtype=bool)
     for k in range(3):
         a, b = p[owner, k], p[owner, (k + 1) % 3]
-        top_left = (b[:, 1] < a[:, 1]) | ((b[:, 1] == a[:, 1]) & (b[:, 0] > a[:, 0]))
+        top_left = setup.top_left[owner, k]
         # Each edge bounds the lines its closed y-range contains (an active edge table).
         active = (y >= np.minimum(a[:, 1], b[:, 1])) & (y <= np.maximum(a[:, 1], b[:, 1]))
         if not exact:  # raw floats: all three tests on every line (see span_tables.fill)
@@ -139,6 +131,8 @@ def rasterize_batch(
     # stepped (*Triangle Rasterisation II - Interpolation*'s incremental form); on the snapped grid the steps are exact
     # integers, so this is the same value as evaluating E at every pixel.
     lam = np.empty((len(tri), 3))
+    # The snapped vertices in the caller's order (the orientation swap is its own inverse).
+    v = np.take_along_axis(p, setup.perm[:, :, None], axis=1)
     src, src_unit, src_half, src_area = v, unit, half, area2
     if not snapped_weights:
         raw = np.asarray(xy, dtype=np.float64)
@@ -157,4 +151,4 @@ def rasterize_batch(
         e_start = dx * (row_y - a[:, 1]) - dy * (start_x - a[:, 0])
         e = np.repeat(e_start, counts) - np.repeat(dy * src_unit, counts) * within
         np.divide(e, area, out=lam[:, k])
-    return Fragments(tri=tri, row=rows, col=cols, lam=lam, facing=facing)
+    return Fragments(tri=tri, row=rows, col=cols, lam=lam, facing=facing(area2))
