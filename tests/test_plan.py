@@ -16,7 +16,7 @@ import teachraster as tr
 from teachraster.pipeline.render_plan import FORCEABLE, Effect, Plan, parse_force
 from teachraster.pipeline.scenes import SCENES, get_scene
 
-EFFECTS = ("clipping", "culling", "depth_test", "perspective", "attributes")
+EFFECTS = ("clipping", "culling", "depth_test", "perspective", "attributes", "derivatives")
 
 
 def assert_same_render(a, b, msg=""):

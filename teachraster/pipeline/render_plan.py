@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: Effects that ``force=`` can switch on everywhere, for comparison.
-FORCEABLE = ("clipping", "perspective", "depth_test", "attributes")
+FORCEABLE = ("clipping", "perspective", "depth_test", "attributes", "derivatives")
 
 
 @dataclass(frozen=True)
@@ -159,3 +159,30 @@ def attributes_effect(
     else:
         why = f"{k} channel(s) at the {covered:,} visible pixel(s) only, not at hidden fragments"
     return Effect("attributes", k > 0, n_shaded if k else 0, n_fragments, "fragments", why, forced)
+
+
+def derivatives_effect(
+    mode: str | None,
+    n_pixels: int,
+    n_visible: int,
+    n_quads: int,
+    n_helpers: int,
+    n_fallback: int,
+    forced: bool,
+) -> Effect:
+    """Quad derivatives: ``mode`` differences at ``n_pixels`` of ``n_visible`` visible pixels,
+    from ``n_quads`` (quad, triangle) pairs with ``n_helpers`` helper pixels; ``n_fallback``
+    pixels took a difference away from a helper beyond the triangle's horizon."""
+    if mode is None:
+        why = "not asked (derivatives=False): no quads evaluated"
+    else:
+        why = (
+            f"{mode} differences in {n_quads:,} 2x2 quad(s), {n_helpers:,} helper pixel(s) "
+            "evaluated on their triangle's extrapolated interpolation"
+        )
+        if n_fallback:
+            why += f"; {n_fallback} pixel(s) avoided a helper beyond the horizon"
+        if forced:
+            why = "at every visible pixel; " + why
+    ran = mode is not None and n_pixels > 0
+    return Effect("derivatives", ran, n_pixels, n_visible, "pixels", why, forced)

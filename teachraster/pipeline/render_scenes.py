@@ -12,13 +12,15 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..core.validate import as_size
+from ..core.validate import as_size, check_choice
 from .camera import Camera
+from .quad_derivatives import may_minify
 from .render_plan import Effect, Plan, parse_force
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 from .scenes import Scene
-from .texture import sample
+from .texture import TEXTURE_FILTERS, sample
+from .texture_filters import MIPMAP_FILTERS
 
 
 @dataclass(frozen=True)
@@ -63,7 +65,14 @@ def render_scene(
     """Render ``scene`` through ``camera`` (default: the scene's own) and shade it.
 
     Other keyword arguments (``depth_test``, ``cull``, ``depth_format``, ``interpolation``,
-    ``trace``, ``subpixel_bits``) go to :func:`teachraster.pipeline.render_triangles.render`.
+    ``trace``, ``subpixel_bits``, ``derivatives``) go to
+    :func:`teachraster.pipeline.render_triangles.render`.
+
+    ``texture_filter`` is any filter of :func:`teachraster.pipeline.texture.sample`. The
+    mipmapped ones need the screen-space derivatives of ``uv``: they are computed from 2×2
+    quads only for the triangles the texture may be minified on (the plan's "derivatives"
+    effect says how many; ``force="derivatives"`` computes them everywhere, with the same
+    image); elsewhere the texture is magnified and level 0 is sampled.
 
     >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
@@ -76,6 +85,7 @@ def render_scene(
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a teachraster Camera, got {type(camera).__name__}")
     width, height = as_size("width", width), as_size("height", height)
+    check_choice("texture_filter", texture_filter, TEXTURE_FILTERS)
     forced = parse_force(force)
     mesh = scene.mesh
     names = sorted(mesh.attrs) if "attributes" in forced else list(scene.uses)
@@ -89,6 +99,12 @@ def render_scene(
         start += corner.shape[2]
     attrs = np.concatenate(blocks, axis=2) if blocks else None
     clip = camera.clip(mesh.corner_positions(), width / height)
+    mipmapped = scene.shading == "texture" and texture_filter in MIPMAP_FILTERS
+    if mipmapped and "derivatives" not in kwargs:
+        kwargs["derivatives"] = True
+        kwargs["derivatives_where"] = may_minify(
+            clip, mesh.corner("uv"), width, height, np.shape(scene.texture)
+        )
     frame = render_clip(clip, width, height, attrs=attrs, force=forced, **kwargs)
 
     # Say which attributes were interpolated and which were skipped, and why.
@@ -98,6 +114,7 @@ def render_scene(
     effects = tuple(
         replace(e, why=f"{why}; {e.why}") if e.name == "attributes" else e for e in frame.plan
     )
+    effects = _derivatives_why(effects, scene, texture_filter, kwargs)
     if not names:
         effects = tuple(
             Effect("attributes", False, 0, e.total, e.unit, why) if e.name == "attributes" else e
@@ -105,8 +122,7 @@ def render_scene(
         )
 
     if scene.shading == "texture":
-        uv = frame.attrs[..., layout["uv"]]
-        image = sample(scene.texture, uv, filter=texture_filter)
+        image = _texture(scene.texture, frame, layout["uv"], texture_filter)
     elif scene.shading == "color":
         image = frame.attrs[..., layout["color"]]
     else:
@@ -119,6 +135,46 @@ def render_scene(
         trace=frame.trace,
         image=image,
         layout=layout,
+        ddx=frame.ddx,
+        ddy=frame.ddy,
+    )
+
+
+def _texture(texture, frame, uv_slice, texture_filter) -> np.ndarray:
+    """The textured image; where a mipmapped filter has no derivatives, level 0 (λ = −∞)."""
+    uv = frame.attrs[..., uv_slice]
+    if texture_filter not in MIPMAP_FILTERS:
+        return sample(texture, uv, filter=texture_filter)
+    if frame.ddx is None:
+        zero = np.zeros_like(uv)
+        return sample(texture, uv, texture_filter, ddx=zero, ddy=zero)
+    # Pixels of triangles the plan found magnified everywhere have no derivatives: a zero
+    # footprint samples level 0, exactly what their derivatives would have chosen.
+    ddx, ddy = frame.ddx[..., uv_slice], frame.ddy[..., uv_slice]
+    missing = np.isnan(ddx).any(axis=-1) | np.isnan(ddy).any(axis=-1)
+    ddx = np.where(missing[..., None], 0.0, ddx)
+    ddy = np.where(missing[..., None], 0.0, ddy)
+    return sample(texture, uv, texture_filter, ddx=ddx, ddy=ddy)
+
+
+def _derivatives_why(effects, scene, texture_filter, kwargs):
+    """Say why the scene needed derivatives (or not) in front of the stage's own words."""
+    if scene.shading != "texture":
+        why = f"shading={scene.shading!r} samples no texture"
+    elif texture_filter not in MIPMAP_FILTERS:
+        why = f"texture_filter={texture_filter!r} uses no mipmaps: no footprint needed"
+    elif kwargs.get("derivatives_where") is not None:
+        where = kwargs["derivatives_where"]
+        n = int(where.sum())
+        why = (
+            f"texture_filter={texture_filter!r} uses mipmaps; the texture may be minified on "
+            f"{n} of {len(where)} triangle(s)"
+            + ("" if n else ": magnified everywhere, level 0 without derivatives")
+        )
+    else:
+        why = f"derivatives={kwargs.get('derivatives')!r} asked"
+    return tuple(
+        replace(e, why=f"{why}; {e.why}") if e.name == "derivatives" else e for e in effects
     )
 
 

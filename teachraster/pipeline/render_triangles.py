@@ -12,12 +12,14 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
    (:mod:`teachraster.pipeline.zbuffer`);
-6. perspective-correct interpolation of the attributes, at the visible pixels only.
+6. perspective-correct interpolation of the attributes, at the visible pixels only;
+7. on request, their screen-space derivatives from 2×2 quads with helper pixels
+   (:mod:`teachraster.pipeline.quad_derivatives`), for texture filtering.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -26,6 +28,7 @@ from ..core.interpolation import MODES
 from ..core.snapping import SUBPIXEL_BITS, check_bits
 from ..core.validate import as_finite, as_size, check_choice
 from .depth import DEPTH_FORMATS
+from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
 from .render_plan import Plan, parse_force
 from .stages import (
     clip_stage,
@@ -58,6 +61,8 @@ class RenderTrace:
         Its depth as the buffer stores it (after ``depth_format`` quantisation).
     fragment_passed : (m,) bool
         Whether it passed the depth test when it arrived (always True without the test).
+    quads : QuadTrace or None
+        The 2×2 quads and helper pixels evaluated for derivatives, when they were.
     """
 
     clip_status: np.ndarray
@@ -70,6 +75,7 @@ class RenderTrace:
     fragment_col: np.ndarray
     fragment_depth: np.ndarray
     fragment_passed: np.ndarray
+    quads: QuadTrace | None = None
 
 
 @dataclass(frozen=True)
@@ -88,6 +94,9 @@ class Frame:
         Which effects were simulated, for how much, and why.
     trace : RenderTrace or None
         Every stage's record, when ``trace=True``.
+    ddx, ddy : (H, W, k) float64 or None
+        Screen-space derivatives of the attributes from 2×2 quads (``derivatives=``): per
+        pixel step right and per pixel step down; NaN where uncovered. None when not computed.
     """
 
     triangle_id: np.ndarray
@@ -95,6 +104,8 @@ class Frame:
     depth: np.ndarray
     plan: Plan
     trace: RenderTrace | None = None
+    ddx: np.ndarray | None = None
+    ddy: np.ndarray | None = None
 
     @property
     def coverage(self) -> np.ndarray:
@@ -129,6 +140,8 @@ def render(
     force=None,
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
+    derivatives=False,
+    derivatives_where=None,
 ) -> Frame:
     """Render clip-space triangles into a ``height`` × ``width`` frame.
 
@@ -155,6 +168,13 @@ def render(
         Record every stage (see :class:`RenderTrace`).
     subpixel_bits : int or None
         Snapping precision, as in :func:`teachraster.rasterize`.
+    derivatives : bool or {"coarse", "fine"}
+        Also compute ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True`` or ``"coarse"``
+        (one pair per quad, as llvmpipe) or ``"fine"`` (per row / column); see
+        :mod:`teachraster.pipeline.quad_derivatives`.
+    derivatives_where : (N,) bool array-like, optional
+        Only the pixels of these input triangles get derivatives (NaN elsewhere); how
+        ``render(scene, ...)`` limits them to the triangles a texture filter minifies.
 
     Examples
     --------
@@ -175,6 +195,8 @@ def render(
     check_choice("interpolation", interpolation, MODES)
     subpixel_bits = check_bits(subpixel_bits)
     forced = parse_force(force)
+    mode = as_derivative_mode(derivatives)
+    where = _check_where(derivatives_where, len(clip))
 
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
@@ -187,9 +209,35 @@ def render(
         frags, visible, clipped, interpolation, forced
     )
 
-    plan = Plan((clipping, culling, depth_testing, perspective, attributes))
-    record = _record(clipped, window, culled, frags, visible) if trace else None
-    return _frame(visible, values, clipped, frags, width, height, plan, record)
+    ddx, ddy, quads, derivs = derivatives_stage(
+        frags, visible, clipped, window, (width, height), mode,
+        None if where is None else where[clipped.parent], interpolation, forced, subpixel_bits,
+        trace,
+    )  # fmt: skip
+
+    plan = Plan((clipping, culling, depth_testing, perspective, attributes, derivs))
+    record = _record(clipped, window, culled, frags, visible, quads) if trace else None
+    frame = _frame(visible, values, clipped, frags, width, height, plan, record)
+    if ddx is None:
+        return frame
+    return replace(frame, ddx=_image(visible, ddx, width, height),
+                   ddy=_image(visible, ddy, width, height))  # fmt: skip
+
+
+def _check_where(where, n):
+    if where is None:
+        return None
+    arr = np.asarray(where)
+    if arr.shape != (n,) or arr.dtype != bool:
+        raise ValueError(f"derivatives_where must be a bool array of shape ({n},), got {arr!r}")
+    return arr
+
+
+def _image(visible, values, width, height) -> np.ndarray:
+    """(H, W, k) image of per-visible-pixel values, NaN elsewhere."""
+    out = np.full((width * height, values.shape[1]), np.nan)
+    out[visible.pixels] = values
+    return out.reshape(height, width, values.shape[1])
 
 
 def _frame(visible, values, clipped, frags, width, height, plan, record) -> Frame:
@@ -210,7 +258,7 @@ def _frame(visible, values, clipped, frags, width, height, plan, record) -> Fram
     )
 
 
-def _record(clipped, window, culled, frags, visible) -> RenderTrace:
+def _record(clipped, window, culled, frags, visible, quads=None) -> RenderTrace:
     """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
     return RenderTrace(
         clip_status=clipped.status,
@@ -223,4 +271,5 @@ def _record(clipped, window, culled, frags, visible) -> RenderTrace:
         fragment_col=frags.col,
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
+        quads=quads,
     )

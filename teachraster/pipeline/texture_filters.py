@@ -22,7 +22,8 @@ Levels are clamped to the pyramid (0 … q). Anisotropic filtering follows the
 ``EXT_texture_filter_anisotropic`` spec: with P_max and P_min the longer and shorter of the
 two footprint axes (in texels), ``N = min(⌈P_max / P_min⌉, max_anisotropy)`` probes at
 ``λ = log2(P_max / N)`` (about the minor axis's level), spaced evenly along the major axis:
-``uv + (i / (N + 1) − ½) · ∂uv/∂major`` for i = 1 … N, averaged.
+``uv + (i / (N + 1) − ½) · ∂uv/∂major`` for i = 1 … N, averaged. Where the footprint is
+magnified (P_max ≤ 1 texel) one probe is taken: bilinear on level 0, like every other filter.
 
 >>> float(mip_level([[0.25, 0.0]], [[0.0, 0.25]], (8, 8))[0])    # 2 texels per pixel
 1.0
@@ -147,8 +148,9 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
     major = np.where((px >= py)[:, None], dx, dy)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = np.ceil(pmax / pmin)
-    # pmin = 0 is infinitely anisotropic; pmax = 0 (a constant uv) needs one probe.
-    n = np.where(pmax == 0, 1, np.minimum(np.nan_to_num(ratio, posinf=np.inf), max_anisotropy))
+    # pmin = 0 is infinitely anisotropic. Where the texture is magnified (pmax <= 1, λ <= 0)
+    # there is nothing to average: one probe at the centre, i.e. bilinear on level 0.
+    n = np.where(pmax <= 1, 1, np.minimum(ratio, max_anisotropy))
     n = np.maximum(n, 1).astype(np.intp)
     with np.errstate(divide="ignore"):
         lam = np.log2(pmax / n)
