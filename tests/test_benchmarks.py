@@ -35,3 +35,8 @@ def test_scene_benchmark_quick_run_succeeds(capsys):
 def test_widget_benchmark_quick_run_succeeds(capsys):
     assert _load("bench_widgets").main(["--quick"]) == 0
     assert "step slider" in capsys.readouterr().out
+
+
+def test_texture_benchmark_quick_run_succeeds(capsys):
+    assert _load("bench_texture").main(["--quick", "--repeat", "1"]) == 0
+    assert "trilinear / bilinear" in capsys.readouterr().out
