@@ -58,10 +58,13 @@ def test_constant_texture_and_uncovered_pixels():
 def test_texel_reads_and_the_study_rows():
     scene = tr.get_scene("textured_floor")
     frame = tr.render(scene, width=64, height=48, texture_filter="trilinear")
-    assert texel_reads("nearest", frame, scene.texture.shape) == 1
-    assert texel_reads("linear_mipmap_nearest", frame, scene.texture.shape) == 4
-    assert 4 < texel_reads("trilinear", frame, scene.texture.shape) <= 8
-    rows = filter_study(scene, 64, 48, samples=4, repeat=1)
+    cov = frame.coverage
+    d = (frame.ddx[cov], frame.ddy[cov], scene.texture.shape)
+    assert texel_reads("nearest", *d) == 1
+    assert texel_reads("linear_mipmap_nearest", *d) == 4
+    assert 4 < texel_reads("trilinear", *d) <= 8
+    assert texel_reads("anisotropic", *d) > texel_reads("trilinear", *d)
+    rows = filter_study(scene, 96, 72, samples=12, repeat=1)
     by = {r["filter"]: r for r in rows}
     assert set(by) >= {"nearest", "bilinear", "trilinear", "anisotropic"}
     # minified pixels: mipmaps beat no mipmaps, anisotropy beats trilinear

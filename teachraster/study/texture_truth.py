@@ -99,19 +99,19 @@ def footprint_average(clip, uv, texture, triangle_id, *, samples: int = 16, seed
     return out if tex.ndim == 3 else out[..., 0]
 
 
-def texel_reads(filter: str, frame, texture_shape, max_anisotropy: int = 16) -> float:
-    """Mean texels read per covered pixel by ``filter`` on ``frame`` (a textured SceneFrame).
+def texel_reads(filter: str, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> float:
+    """Mean texels read per pixel by ``filter``, given the (n, 2) derivatives of (u, v).
 
     Nearest reads 1, bilinear 4; a linear-between-levels filter reads its within-level count
     twice where λ falls between two levels (once where it is clamped); anisotropic reads a
     trilinear footprint per probe.
+
+    >>> texel_reads("trilinear", [[0.25, 0.0]], [[0.0, 0.25]], (8, 8))   # λ = 1: one level
+    4.0
     """
     within = 1 if filter.startswith("nearest") else 4
-    cov = frame.coverage
     if filter in ("nearest", "bilinear") or filter.endswith("mipmap_nearest"):
         return float(within)
-    uv = frame.layout["uv"]
-    ddx, ddy = frame.ddx[..., uv][cov], frame.ddy[..., uv][cov]
     px, py = footprint_axes(ddx, ddy, texture_shape)
     q = len(mipmap(np.zeros(texture_shape[:2]))) - 1
     pmax, pmin = np.maximum(px, py), np.minimum(px, py)
@@ -153,10 +153,13 @@ def filter_study(
     rows = []
     for f, t in zip(filters, times):
         frame = frames[f]
-        if f in MIPMAP_FILTERS and frame.ddx is None:  # magnified scene: level 0, 1 level read
+        if frame.ddx is None:  # no mipmaps, or magnified everywhere: level 0 only
             reads = 1.0 if f.startswith("nearest") else 4.0
         else:
-            reads = texel_reads(f, frame, scene.texture.shape)
+            d = frame.layout["uv"]
+            cov = frame.coverage
+            reads = texel_reads(f, frame.ddx[..., d][cov], frame.ddy[..., d][cov],
+                                scene.texture.shape)  # fmt: skip
         err = frame.image - truth
         cov = frame.coverage
         rows.append({

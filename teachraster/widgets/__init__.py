@@ -16,6 +16,9 @@ Widgets
 - :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
   perspective-correct texture coordinates side by side, with the error in texels; a tilt
   slider.
+- :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
+  chooser: the filtered image, the mip level per pixel and the error against the true
+  footprint average (lesson 09).
 
 Figures
 -------
@@ -37,12 +40,14 @@ Example
 
 from ._display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
+from .filter_explorer import FilterExplorer
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer
 
 __all__ = [
     "BACKENDS",
     "FigureDisplay",
+    "FilterExplorer",
     "FillPlayer",
     "TexturedPlaneViewer",
     "TriangleEditor",
