@@ -3,12 +3,24 @@
 Lesson 05 follows a triangle from clip space to a pixel; each step of that journey is one
 function here, and ``render`` is just these calls in a row::
 
-    clip_stage       clip space   -> ClipResult (triangles cut at near/far), Effect
-    viewport_stage   ClipResult   -> window (x, y, z) per vertex
-    cull_stage       window       -> culled (bool per triangle), Effect
-    fill_stage       window       -> Fragments (covered pixel centres, barycentrics)
-    depth_stage      Fragments    -> Visibility (stored depths, the z-buffer's winners), Effect
-    interpolate_stage Visibility  -> attribute values at the visible pixels, two Effects
+    clip_stage        (N, 3, 4) clip, (N, 3, k) attrs -> ClipResult, Effect
+    viewport_stage    ClipResult -> (M, 3, 3) window x, y, z
+    cull_stage        window     -> (M,) bool culled, Effect
+    fill_stage        window     -> Fragments: (triangle, row, col) of every covered centre
+    depth_stage       Fragments  -> Visibility: stored depth per fragment, winner per pixel, Effect
+    interpolate_stage Visibility -> (v, k) attributes at the v visible pixels, two Effects
+
+What crosses each boundary, for code that extends a stage (tiles, multisampling, texture
+derivatives):
+
+- :class:`~teachraster.pipeline.clipping.ClipResult`: ``clip`` (M, 3, 4), ``attrs``
+  (M, 3, k), ``parent`` (M,) input index, ``status`` (N,), the cut ``polygons``;
+- :class:`~teachraster.pipeline.batched_fill.Fragments`: ``tri``, ``row``, ``col`` (m,) are
+  generated once; nothing is evaluated at them until asked: ``weights(index)`` /
+  ``weights_at(tri, x, y)`` give barycentrics at fragments or at any point (sample
+  positions, helper pixels), ``plane(values)`` an affine per-vertex quantity (depth);
+- :class:`Visibility`: ``depth`` and ``pixel`` (m,) per fragment, ``pixels`` (v,) covered
+  flat pixel indices and ``winner`` (v,) the fragment each shows; ``passed`` on demand.
 
 Every stage receives and returns plain numpy arrays and small frozen dataclasses (the trace
 contract); the words that explain a stage's decision live in
@@ -24,6 +36,7 @@ Conventions shared by all stages: triangles are indexed 0..M-1 *after* clipping
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -42,7 +55,7 @@ from .render_plan import (
     perspective_effect,
 )
 from .viewport import to_window
-from .zbuffer import resolve
+from .zbuffer import passed_on_arrival, resolve
 
 
 def guard_band(width: int, height: int, bits: int | None) -> float:
@@ -72,7 +85,7 @@ def clip_stage(
     clipped = clip_triangles(clip, attrs, guard=guard_band(width, height, bits), force=force)
     cut = clipped.status == CLIPPED
     # Which cuts were the near/far planes, and which only the guard band far off screen.
-    n_guard = int((cut & (classify(clip, None) == INSIDE)).sum())
+    n_guard = int((classify(clip[cut], None) == INSIDE).sum()) if cut.any() else 0
     n_drop = int((clipped.status == DROPPED).sum())
     effect = clipping_effect(len(clip), int(cut.sum()) - n_guard, n_guard, n_drop, force)
     return clipped, effect
@@ -120,18 +133,30 @@ class Visibility:
     ----------
     depth : (m,) float64
         Every fragment's depth as the buffer stores it (after ``depth_format``).
-    passed : (m,) bool
-        Whether the fragment passed the depth test when it arrived (True without the test).
+    pixel : (m,) int64
+        Every fragment's flat pixel index ``row * width + col``.
+    depth_test : bool
+        Whether the test was on (without it, later fragments overwrite earlier ones).
     pixels : (v,) int64
         Flat indices of the covered pixels, ascending.
     winner : (v,) int64
         The fragment each covered pixel shows.
+
+    ``passed`` (m,) bool, whether each fragment passed the depth test when it arrived
+    (always True without the test), is computed on first use (for the trace).
     """
 
     depth: np.ndarray
-    passed: np.ndarray
+    pixel: np.ndarray
+    depth_test: bool
     pixels: np.ndarray
     winner: np.ndarray
+
+    @cached_property
+    def passed(self) -> np.ndarray:
+        if not self.depth_test:
+            return np.ones(len(self.pixel), dtype=bool)
+        return passed_on_arrival(self.pixel, self.depth)
 
 
 def depth_stage(
@@ -145,19 +170,23 @@ def depth_stage(
 ) -> tuple[Visibility, Effect]:
     """5. The z-buffer (Ritschel, *Interpolation and z-buffering*): who is visible where.
 
-    With the test a fragment is kept when its stored depth is strictly smaller than the
-    buffer's, so ties keep the earlier triangle; without it later triangles overwrite
-    earlier ones. Only pixels that fragments of 2+ triangles reach are tested, unless
-    "depth_test" is in ``forced`` (meaningless, and not reported, with the test off).
+    Depth is affine in screen space, so it comes from each triangle's depth plane, one
+    multiply-add per fragment (no barycentrics). With the test a fragment is kept when its
+    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
+    without it later triangles overwrite earlier ones. The plan counts the pixels that
+    fragments of 2+ triangles reach (where the test decides anything); "depth_test" in
+    ``forced`` reports every fragment as tested (the one-pass resolve does the same work
+    either way; meaningless, and not reported, with the test off).
     """
-    depth = blend_each(frags.lam, window[frags.tri, :, 2:3])[:, 0]
-    depth = quantize(depth, depth_format)
+    depth = frags.plane(window[:, :, 2])  # a fresh array: float64 needs no copy
+    if depth_format != "float64":
+        depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
     force = "depth_test" in forced and depth_test
-    winner, passed, tested = resolve(pixel, depth, width * height, depth_test, force)
+    winner, tested = resolve(pixel, depth, width * height, depth_test)
     pixels = np.flatnonzero(winner >= 0)
     effect = depth_test_effect(depth_test, force, tested, len(pixels))
-    return Visibility(depth, passed, pixels, winner[pixels]), effect
+    return Visibility(depth, pixel, depth_test, pixels, winner[pixels]), effect
 
 
 def interpolate_stage(
@@ -182,7 +211,7 @@ def interpolate_stage(
     if every:
         values = values[visible.winner]
     # Count the triangles whose visible (or, forced, all) fragments were really divided.
-    shaded_tris = np.unique(frags.tri[shade])
+    shaded_tris = np.flatnonzero(np.bincount(frags.tri[shade], minlength=len(w)))
     n_persp = len(shaded_tris) if divide_all else int(unequal[shaded_tris].sum())
     m = len(clipped.clip)
     perspective = perspective_effect(k, len(shaded_tris), n_persp, m, interpolation, divide_all)
@@ -197,8 +226,10 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
-    weights = frags.lam[shade].copy()
+    weights = frags.weights_at(tri, frags.col[shade] + 0.5, frags.row[shade] + 0.5)
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
-    if persp.any():  # f/w and 1/w are affine in screen space
+    if persp.all():  # f/w and 1/w are affine in screen space (no masking needed)
+        weights = weights_per_row(weights, w[tri])
+    elif persp.any():
         weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
-    return blend_each(weights, attrs[tri])
+    return blend_each(weights, attrs, index=tri)
