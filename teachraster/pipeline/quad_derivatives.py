@@ -26,7 +26,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.snapping import snap
 from .render_plan import derivatives_effect
 
 #: ``derivatives=`` choices; ``True`` means "coarse".
@@ -90,23 +89,18 @@ class AttributePlanes:
     den_grad: np.ndarray
 
 
-def attribute_planes(xy, w, attrs, perspective: bool, bits: int | None) -> AttributePlanes:
+def attribute_planes(xy, w, attrs, perspective: bool) -> AttributePlanes:
     """:class:`AttributePlanes` of triangles ``xy`` (M, 3, 2), ``w`` (M, 3), ``attrs`` (M, 3, k).
 
-    From the unsnapped window positions, as ``render`` sets up attributes; a triangle whose
-    unsnapped area is zero uses its snapped vertices (it can cover pixels only then).
+    ``xy`` are the positions the rasteriser sets its weights up from
+    (:attr:`teachraster.pipeline.batched_fill.Fragments.vertices`: the unsnapped window
+    positions in ``render``), so helpers extrapolate exactly the covered pixels' functions.
+    A zero-area triangle (it covers nothing) gets NaN planes.
     """
     xy = np.asarray(xy, dtype=np.float64)
-
-    def area_of(v):
-        return (v[:, 1, 0] - v[:, 0, 0]) * (v[:, 2, 1] - v[:, 0, 1]) - (v[:, 1, 1] - v[:, 0, 1]) * (
-            v[:, 2, 0] - v[:, 0, 0]
-        )
-
-    area = area_of(xy)
-    if (area == 0).any():
-        xy = np.where((area == 0)[:, None, None], snap(xy, bits), xy)
-        area = area_of(xy)
+    area = (xy[:, 1, 0] - xy[:, 0, 0]) * (xy[:, 2, 1] - xy[:, 0, 1]) - (
+        xy[:, 1, 1] - xy[:, 0, 1]
+    ) * (xy[:, 2, 0] - xy[:, 0, 0])
     area = np.where(area == 0, np.nan, area)
     # ∇λ_k = perpendicular of the opposite edge over twice the area.
     grad = np.empty((len(xy), 3, 2))
@@ -133,7 +127,7 @@ def extrapolate(planes: AttributePlanes, tri, x, y):
     triangle's horizon the returned 1/w is ≤ 0 and the value meaningless.
 
     >>> planes = attribute_planes(np.array([[[0.0, 0], [4, 0], [0, 4]]]), np.ones((1, 3)),
-    ...                           np.array([[[0.0], [1.0], [0.0]]]), True, 8)
+    ...                           np.array([[[0.0], [1.0], [0.0]]]), True)
     >>> extrapolate(planes, np.array([0]), np.array([6.0]), np.array([0.0]))   # outside
     (array([[1.5]]), array([1.]))
     """
@@ -253,9 +247,7 @@ def as_derivative_mode(derivatives) -> str | None:
     raise ValueError(f"derivatives must be False, True, 'coarse' or 'fine'; got {derivatives!r}")
 
 
-def derivatives_stage(
-    frags, visible, clipped, window, size, mode, where, interpolation, forced, bits, trace
-):
+def derivatives_stage(frags, visible, clipped, size, mode, where, interpolation, forced, trace):
     """7. Quad derivatives of the attributes at the visible pixels that need them.
 
     ``mode`` None skips the stage unless "derivatives" is in ``forced`` (then "coarse");
@@ -278,7 +270,7 @@ def derivatives_stage(
     rows, cols = np.divmod(visible.pixels[sel], width)
     ddx = np.full((n_visible, k), np.nan)
     ddy = np.full((n_visible, k), np.nan)
-    planes = attribute_planes(window[:, :, :2], w, attrs, interpolation == "perspective", bits)
+    planes = attribute_planes(frags.vertices, w, attrs, interpolation == "perspective")
     dx, dy, moved = quad_derivatives(rows, cols, tris[sel], planes, mode)
     ddx[sel], ddy[sel] = dx, dy
     q_row, q_col, q_tri, shaded = quad_pairs(rows, cols, tris[sel], width, height)
@@ -319,7 +311,7 @@ def may_minify(clip, uv, width: int, height: int, texture_shape) -> np.ndarray:
         return out
     c, w, uv = clip[front], w[front], uv[front] * np.array([tw, th])  # in texels
     xy = np.stack([(c[..., 0] / w + 1) * width / 2, (1 - c[..., 1] / w) * height / 2], axis=-1)
-    planes = attribute_planes(xy, w, uv, True, None)
+    planes = attribute_planes(xy, w, uv, True)
     grow = np.array([[-1, -1], [-1, 1], [1, -1], [1, 1]], dtype=np.float64)
     corners = (xy[:, :, None, :] + grow).reshape(len(xy), 12, 2) - planes.anchor[:, None]
     num = planes.num0[:, None] + np.einsum("mpa,mak->mpk", corners, planes.num_grad)

@@ -210,9 +210,8 @@ def render(
     )
 
     ddx, ddy, quads, derivs = derivatives_stage(
-        frags, visible, clipped, window, (width, height), mode,
-        None if where is None else where[clipped.parent], interpolation, forced, subpixel_bits,
-        trace,
+        frags, visible, clipped, (width, height), mode,
+        None if where is None else where[clipped.parent], interpolation, forced, trace,
     )  # fmt: skip
 
     plan = Plan((clipping, culling, depth_testing, perspective, attributes, derivs))
