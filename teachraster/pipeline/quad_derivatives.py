@@ -154,9 +154,10 @@ def exact_derivatives(planes: AttributePlanes, tri, x, y):
     )
 
 
-def lane_values(planes: AttributePlanes, tris, q_row, q_col):
-    """Attributes (4 arrays (n, k)) and relative 1/w (4 arrays (n,)) at the lanes of quads
-    whose upper-left pixel is (q_row, q_col), on triangles ``tris``; extrapolated, unclamped.
+def lane_values(planes: AttributePlanes, tris, q_row, q_col, lanes=(0, 1, 2, 3)):
+    """Attributes (one (n, k) array per lane in ``lanes``, None for the others) and relative
+    1/w (4 arrays (n,)) at the lanes of quads whose upper-left pixel is (q_row, q_col), on
+    triangles ``tris``; extrapolated, unclamped.
 
     The upper-left lane from the planes, the others one gradient step away (f/w and 1/w are
     affine, so this is exact up to rounding).
@@ -167,25 +168,39 @@ def lane_values(planes: AttributePlanes, tris, q_row, q_col):
     dgx, dgy = planes.den_grad[tris, 0], planes.den_grad[tris, 1]
     num = planes.num0[tris] + dx[:, None] * ngx + dy[:, None] * ngy
     den = planes.den0[tris] + dx * dgx + dy * dgy
-    nums = (num, num + ngx, num + ngy, num + ngx + ngy)
-    dens = (den, den + dgx, den + dgy, den + dgx + dgy)
+    steps = ((0, 0), (1, 0), (0, 1), (1, 1))
+    dens = [den + sx * dgx + sy * dgy if sx or sy else den for sx, sy in steps]
+    vals = [None] * 4
     with np.errstate(divide="ignore", invalid="ignore"):
-        return [n / d[:, None] for n, d in zip(nums, dens)], list(dens)
+        for lane in lanes:
+            sx, sy = steps[lane]
+            n = num + (ngx if sx else 0.0) + (ngy if sy else 0.0)
+            vals[lane] = n / dens[lane][:, None]
+    return vals, dens
 
 
-def quad_derivatives(rows, cols, tris, planes: AttributePlanes, mode: str):
+def quad_derivatives(rows, cols, tris, planes: AttributePlanes, mode: str, pairs):
     """Derivatives (v, k) at visible pixels ``rows``, ``cols`` of (post-clip) triangles ``tris``.
 
-    Each pixel evaluates its own quad on its own triangle (so quads straddling two triangles
-    get each triangle's helpers). Returns ``ddx``, ``ddy`` and (v,) bool: the pixels whose
-    difference had to avoid a helper beyond the horizon.
+    ``pairs`` is :func:`quad_pairs` of these pixels: each (quad, triangle) pair is evaluated
+    once, on its own triangle (so quads straddling two triangles get each triangle's helpers).
+    Returns ``ddx``, ``ddy`` and (v,) bool: the pixels whose difference had to avoid a helper
+    beyond the horizon.
     """
-    vals, dens = lane_values(planes, tris, rows - rows % 2, cols - cols % 2)
+    q_row, q_col, q_tri, _, pixel_pair = pairs
+    coarse = mode == "coarse"
+    vals, dens = lane_values(planes, q_tri, q_row, q_col, (0, 1, 2) if coarse else (0, 1, 2, 3))
     ok = [d > 0 for d in dens]
-    if mode == "fine":
-        own_row, own_col = rows % 2, cols % 2
-    else:  # coarse: the upper row and the left column for the whole quad
+    if coarse and ok[0].all() and ok[1].all() and ok[2].all():  # the usual case: no horizon
+        return (vals[1] - vals[0])[pixel_pair], (vals[2] - vals[0])[pixel_pair], \
+            np.zeros(len(rows), dtype=bool)  # fmt: skip
+    if coarse:  # some quads must use their lower row or right column
+        vals, _ = lane_values(planes, q_tri, q_row, q_col)
         own_row = own_col = np.zeros(len(rows), dtype=np.intp)
+    else:
+        own_row, own_col = rows % 2, cols % 2
+    vals = [v[pixel_pair] for v in vals]  # per pixel from here on
+    ok = [o[pixel_pair] for o in ok]
     ddx, moved_x, bad_x = _difference(vals, ok, own_row, ((0, 1), (2, 3)))
     ddy, moved_y, bad_y = _difference(vals, ok, own_col, ((0, 2), (1, 3)))
     stuck = np.flatnonzero(bad_x | bad_y)
@@ -212,9 +227,9 @@ def _difference(vals, ok, first, lanes):
 def quad_pairs(rows, cols, tris, width: int, height: int):
     """Every (quad, triangle) pair among pixels ``rows``, ``cols`` shown by ``tris``.
 
-    Returns the pairs' quad upper-left rows and columns, triangles and (q, 4) shaded lanes;
-    the other lanes of a pair are its helper pixels. A quad grid instead of a sort: each
-    quad's four lanes are compared with each other.
+    Returns the pairs' quad upper-left rows and columns, triangles, (q, 4) shaded lanes (the
+    other lanes of a pair are its helper pixels) and, per pixel, the index of its pair. A
+    quad grid instead of a sort: each quad's four lanes are compared with each other.
     """
     qw = (width + 1) // 2
     quad = (rows // 2) * qw + cols // 2
@@ -222,18 +237,25 @@ def quad_pairs(rows, cols, tris, width: int, height: int):
     grid[quad, (rows % 2) * 2 + cols % 2] = tris
     occupied = np.flatnonzero((grid >= 0).any(axis=1))
     lanes = grid[occupied]
-    quads, owners = [], []
-    for j in range(4):  # a pair starts at its triangle's first lane in the quad
+    starts = []  # a pair starts at its triangle's first lane in the quad
+    for j in range(4):
         first = lanes[:, j] >= 0
         for i in range(j):
             first &= lanes[:, i] != lanes[:, j]
-        quads.append(occupied[first])
-        owners.append(lanes[first, j])
-    quad_id, tri = np.concatenate(quads), np.concatenate(owners)
-    order = np.lexsort((tri, quad_id))
-    quad_id, tri = quad_id[order], tri[order]
+        starts.append(first)
+    pos = np.concatenate([np.flatnonzero(f) for f in starts])  # into `occupied`
+    start_lane = np.concatenate([np.full(int(f.sum()), j) for j, f in enumerate(starts)])
+    tri = lanes[pos, start_lane]
+    order = np.lexsort((tri, occupied[pos]))
+    pos, start_lane, tri = pos[order], start_lane[order], tri[order]
+    quad_id = occupied[pos]
+    pair_at = np.full(grid.shape, -1, dtype=np.int64)  # pair index at each start lane
+    pair_at[quad_id, start_lane] = np.arange(len(pos))
+    # Each pixel's pair starts at the first lane of its quad holding its own triangle.
+    first_lane = (grid[quad] == tris[:, None]).argmax(axis=1)
+    pixel_pair = pair_at[quad, first_lane]
     shaded = grid[quad_id] == tri[:, None]
-    return (quad_id // qw) * 2, (quad_id % qw) * 2, tri, shaded
+    return (quad_id // qw) * 2, (quad_id % qw) * 2, tri, shaded, pixel_pair
 
 
 def as_derivative_mode(derivatives) -> str | None:
@@ -268,12 +290,16 @@ def derivatives_stage(frags, visible, clipped, size, mode, where, interpolation,
     need = np.ones(len(tris), dtype=bool) if where is None or force else where[tris]
     sel = np.flatnonzero(need)
     rows, cols = np.divmod(visible.pixels[sel], width)
-    ddx = np.full((n_visible, k), np.nan)
-    ddy = np.full((n_visible, k), np.nan)
     planes = attribute_planes(frags.vertices, w, attrs, interpolation == "perspective")
-    dx, dy, moved = quad_derivatives(rows, cols, tris[sel], planes, mode)
-    ddx[sel], ddy[sel] = dx, dy
-    q_row, q_col, q_tri, shaded = quad_pairs(rows, cols, tris[sel], width, height)
+    pairs = quad_pairs(rows, cols, tris[sel], width, height)
+    dx, dy, moved = quad_derivatives(rows, cols, tris[sel], planes, mode, pairs)
+    if len(sel) == n_visible:
+        ddx, ddy = dx, dy
+    else:
+        ddx = np.full((n_visible, k), np.nan)
+        ddy = np.full((n_visible, k), np.nan)
+        ddx[sel], ddy[sel] = dx, dy
+    q_row, q_col, q_tri, shaded, _ = pairs
     quads = None
     if trace:
         vals, dens = lane_values(planes, q_tri, q_row, q_col)

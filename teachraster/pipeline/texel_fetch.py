@@ -59,8 +59,9 @@ def texture_size(shape, name: str = "shape") -> tuple[int, int]:
     return dims[0], dims[1]
 
 
-def wrap_index(index: np.ndarray, size: int, wrap: str) -> np.ndarray:
-    """Integer texel indices for float indices (already floored), tiled or clamped."""
+def wrap_index(index: np.ndarray, size, wrap: str) -> np.ndarray:
+    """Integer texel indices for float indices (already floored), tiled or clamped; ``size``
+    a number or one per index."""
     if wrap == "repeat":
         index = np.mod(index, size)  # floor-mod: -1 -> size - 1, like GL_REPEAT
     else:
@@ -78,10 +79,29 @@ def lookup(level: np.ndarray, u: np.ndarray, v: np.ndarray, filter: str, wrap: s
     h, w = level.shape[:2]
     # Texels as rows of an (H*W, C) table fetched by one flat index (np.take): a little faster
     # than fancy-indexing [row, col], and it treats (H, W) and (H, W, C) textures alike.
-    table = level.reshape(h * w, -1)
+    return filtered(level.reshape(h * w, -1), 0, h, w, u, v, filter, wrap)
+
+
+def level_table(levels) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Every level's texels in one (T, C) table, and each level's offset, height and width.
+
+    So a mipmapped filter reads all its pixels' levels in one pass of :func:`filtered`, each
+    pixel with its own level's offset and size, instead of one pass per level.
+    """
+    flat = [lv.reshape(lv.shape[0] * lv.shape[1], -1) for lv in levels]
+    sizes = np.array([len(f) for f in flat])
+    offset = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+    height = np.array([lv.shape[0] for lv in levels])
+    width = np.array([lv.shape[1] for lv in levels])
+    return np.concatenate(flat), offset, height, width
+
+
+def filtered(table, offset, h, w, u, v, filter: str, wrap: str) -> np.ndarray:
+    """:func:`lookup` on texels stored from ``offset`` of ``table`` as an ``h`` × ``w`` level;
+    ``offset``, ``h``, ``w`` are numbers or per-sample arrays (see :func:`level_table`)."""
 
     def fetch(row, col):
-        return np.take(table, row * w + col, axis=0)
+        return np.take(table, offset + row * w + col, axis=0)
 
     if filter == "nearest":
         # The texel whose square [c/W, (c+1)/W) contains u: floor(u * W), then wrap the index.

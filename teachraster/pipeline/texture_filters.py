@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .texel_fetch import lookup, texture_size
+from .texel_fetch import filtered, level_table, texture_size
 
 #: Filters that use the pyramid, each as (how levels are chosen, the filter within a level).
 MIPMAP_FILTERS = {
@@ -89,9 +89,16 @@ def mip_level(ddx, ddy, texture_shape) -> np.ndarray:
     >>> mip_level([[1 / 64, 0.0], [0.5, 0.5]], [[0.0, 1 / 64], [0.0, 0.0]], (64, 64))
     array([0. , 5.5])
     """
-    px, py = footprint_axes(ddx, ddy, texture_shape)
+    h, w = texture_size(texture_shape, "texture_shape")
+    dx, dy = _as_derivative("ddx", ddx), _as_derivative("ddy", ddy)
+    if dx.shape != dy.shape:
+        raise ValueError(f"ddx and ddy must have the same shape, got {dx.shape} and {dy.shape}")
+    # log2 of the longer axis, from squared lengths: λ = ½ log2 max(|∂x|², |∂y|²) needs no
+    # square roots (the same number, and the cheapest part of trilinear filtering stays cheap).
+    sx = (dx[..., 0] * w) ** 2 + (dx[..., 1] * h) ** 2
+    sy = (dy[..., 0] * w) ** 2 + (dy[..., 1] * h) ** 2
     with np.errstate(divide="ignore"):
-        return np.log2(np.maximum(px, py))
+        return 0.5 * np.log2(np.maximum(sx, sy))
 
 
 def nearest_level(lam: np.ndarray, q: int) -> np.ndarray:
@@ -115,28 +122,30 @@ def linear_levels(lam: np.ndarray, q: int) -> tuple[np.ndarray, np.ndarray, np.n
     return d1.astype(np.intp), np.minimum(d1 + 1, q).astype(np.intp), clamped - d1
 
 
-def sample_levels(levels, u, v, lam, how: str, within: str, wrap: str) -> np.ndarray:
+def sample_levels(levels, u, v, lam, how: str, within: str, wrap: str, table=None) -> np.ndarray:
     """Mipmapped sampling at finite ``u``, ``v``, ``lam`` (n,): an (n, C) array.
 
     ``how`` is ``"nearest"`` (one level, :func:`nearest_level`) or ``"linear"`` (two levels,
-    :func:`linear_levels`); ``within`` is the filter inside a level.
+    :func:`linear_levels`); ``within`` is the filter inside a level. ``table`` is
+    ``level_table(levels)`` when the caller has it already.
     """
     q = len(levels) - 1
+    table, offset, height, width = level_table(levels) if table is None else table
+
+    def read(level, sel=None):
+        uu, vv = (u, v) if sel is None else (u[sel], v[sel])
+        return filtered(table, offset[level], height[level], width[level], uu, vv, within, wrap)
+
+    # All pixels in one pass each, every pixel at its own level (as a GPU's texture unit
+    # reads only the levels each pixel needs).
     if how == "nearest":
-        first, second, t = nearest_level(lam, q), None, None
-    else:
-        first, second, t = linear_levels(lam, q)
-    out = np.empty((len(u), levels[0].reshape(*levels[0].shape[:2], -1).shape[2]))
-    # Level by level: each pixel reads only the levels it needs, as a GPU's texture unit does.
-    for level in np.unique(first):
-        sel = first == level
-        out[sel] = lookup(levels[level], u[sel], v[sel], within, wrap)
-    if second is not None:
-        blend = np.flatnonzero(t > 0)
-        for level in np.unique(second[blend]):
-            sel = blend[second[blend] == level]
-            upper = lookup(levels[level], u[sel], v[sel], within, wrap)
-            out[sel] += t[sel, None] * (upper - out[sel])
+        return read(nearest_level(lam, q))
+    first, second, t = linear_levels(lam, q)
+    out = read(first)
+    blend = np.flatnonzero(t > 0)  # magnified or clamped pixels read one level only
+    if len(blend):
+        upper = read(second[blend], blend)
+        out[blend] += t[blend, None] * (upper - out[blend])
     return out
 
 
@@ -154,6 +163,7 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
     n = np.maximum(n, 1).astype(np.intp)
     with np.errstate(divide="ignore"):
         lam = np.log2(pmax / n)
+    table = level_table(levels)
     out = 0.0
     for i in range(1, int(n.max(initial=1)) + 1):
         # Probe i of N sits at i / (N + 1) - 1/2 along the major axis; pixels with fewer
@@ -163,6 +173,6 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
         idx = np.flatnonzero(active)
         probe = np.zeros((len(u), levels[0].reshape(*levels[0].shape[:2], -1).shape[2]))
         probe[idx] = sample_levels(levels, u[idx] + step[idx, 0], v[idx] + step[idx, 1],
-                                   lam[idx], "linear", "bilinear", wrap)  # fmt: skip
+                                   lam[idx], "linear", "bilinear", wrap, table)  # fmt: skip
         out = out + probe
     return out / n[:, None]
