@@ -153,7 +153,7 @@ def setup_edges(xy: np.ndarray, subpixel_bits: int | None) -> EdgeSetup:
     # interior is on the positive side of every edge (culling is decided by the caller).
     perm = np.where((area2 < 0)[..., None], np.array([0, 2, 1]), np.array([0, 1, 2]))
     p = np.take_along_axis(v, perm[..., None], axis=-2)
-    top_left = top_left_edges(p, np.roll(p, -1, axis=-2))
+    top_left = top_left_edges(p, p[..., [1, 2, 0], :])
     return EdgeSetup(
         p=p,
         perm=perm,

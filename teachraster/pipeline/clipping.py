@@ -130,6 +130,7 @@ def _cut(poly, attrs, count, d, k, guard):
 
     Vertex i is kept when inside (d >= 0); where edge i -> i+1 crosses the plane the
     crossing follows it, so every polygon keeps its winding and starts where it did.
+    Returns the polygons, their attributes, the corner counts and which corners are new.
     """
     n, cap = d.shape
     idx = np.arange(cap)
@@ -167,7 +168,9 @@ def _cut(poly, attrs, count, d, k, guard):
     out_a = np.zeros((n, cap + 1, attrs.shape[2]))
     out_p[rows, dest] = cand_p[rows, slots]
     out_a[rows, dest] = cand_a[rows, slots]
-    return out_p, out_a, mask.sum(axis=1)
+    new = np.zeros((n, cap + 1), dtype=bool)
+    new[rows, dest] = slots % 2 == 1  # odd slots hold the crossings
+    return out_p, out_a, mask.sum(axis=1), new
 
 
 def clip_polygons(poly, attrs, count, guard: float | None = None):
@@ -196,7 +199,7 @@ def clip_polygons(poly, attrs, count, guard: float | None = None):
         todo = np.flatnonzero((valid & (d < 0)).any(axis=1))
         if len(todo) == 0:
             continue
-        cut_p, cut_a, cut_n = _cut(poly[todo], attrs[todo], count[todo], d[todo], k, guard)
+        cut_p, cut_a, cut_n, _ = _cut(poly[todo], attrs[todo], count[todo], d[todo], k, guard)
         poly = np.concatenate([poly, np.zeros((len(poly), 1, 4))], axis=1)
         attrs = np.concatenate([attrs, np.zeros((len(attrs), 1, attrs.shape[2]))], axis=1)
         poly[todo], attrs[todo], count[todo] = cut_p, cut_a, cut_n
@@ -211,6 +214,17 @@ def clip_polygons(poly, attrs, count, guard: float | None = None):
         attrs = np.take_along_axis(attrs, order[:, :, None], axis=1)
         count = live.sum(axis=1)
     return poly, attrs, count
+
+
+def _clip_against(poly: np.ndarray, attrs: np.ndarray, k: int, guard: float | None):
+    """One Sutherland-Hodgman pass: ``poly`` (n, 4) and ``attrs`` (n, k) against plane ``k``.
+
+    The renderer's own pass (:func:`_cut`) on a batch of one. Returns the new polygon, its
+    attributes and a bool mask of the vertices the pass created.
+    """
+    d = _distance(poly, k, guard)
+    p, a, n, new = _cut(poly[None], attrs[None], np.array([len(poly)]), d[None], k, guard)
+    return p[0, : n[0]], a[0, : n[0]], new[0, : n[0]]
 
 
 def clip_polygon(
@@ -229,6 +243,87 @@ def clip_polygon(
     attrs = np.asarray(attrs, dtype=np.float64).reshape(len(poly), -1)
     p, a, n = clip_polygons(poly[None], attrs[None], np.array([len(poly)]), guard)
     return p[0, : n[0]], a[0, : n[0]]
+
+
+#: Names of the clip planes, in the order of :func:`planes`.
+#: The eye comes last: it only removes the origin, which the planes before it leave alone.
+PLANE_NAMES = ("near z >= -w", "far z <= w", "guard x >= -g w", "guard x <= g w",
+               "guard y >= -g w", "guard y <= g w", "eye w > 0")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class ClipStep:
+    """The polygon after one clip plane (a record of :func:`clip_polygon_steps`).
+
+    Attributes
+    ----------
+    plane : str
+        Which plane, e.g. ``"near z >= -w"``.
+    distances : (n,) float64
+        Signed distance of each vertex of the polygon *before* this plane (>= 0 inside).
+    polygon : (m, 4) float64
+        The clip-space polygon after this plane.
+    attrs : (m, k) float64
+        Its attributes (new vertices: interpolated with the same t as the position).
+    new : (m,) bool
+        Which vertices this plane created (on the plane itself).
+    """
+
+    plane: str
+    distances: np.ndarray
+    polygon: np.ndarray
+    attrs: np.ndarray
+    new: np.ndarray
+
+
+def clip_polygon_steps(poly, attrs=None, guard: float | None = None) -> list[ClipStep]:
+    """:func:`clip_polygon` one plane at a time, for teaching: the polygon after each plane.
+
+    The same passes as :func:`clip_polygon` (so the last step's polygon is its result), each
+    recorded with the distances it tested, the vertices it kept and the ones it created.
+
+    Parameters
+    ----------
+    poly : (n, 4) array-like
+        Clip-space polygon (a triangle: n = 3).
+    attrs : (n, k) array-like, optional
+        Vertex attributes (default: none).
+    guard : float, optional
+        Guard band in NDC units (default: no guard-band planes).
+
+    Returns
+    -------
+    list of ClipStep, one per plane in the order of ``PLANE_NAMES`` (near, far, the guard band
+    if given, then the eye, whose "distance" is w and which keeps w > 0); fewer if the
+    polygon vanished.
+
+    Examples
+    --------
+    >>> tri = [[0.0, 0, -3, 1], [0, 0, 0, 1], [1, 0, 0, 1]]   # vertex 0 in front of near
+    >>> steps = clip_polygon_steps(tri, [[0.0], [1.0], [2.0]])
+    >>> steps[0].plane, len(steps[0].polygon), steps[0].new.tolist()
+    ('near z >= -w', 4, [True, False, False, True])
+    >>> steps[0].attrs[steps[0].new].ravel().round(4).tolist()   # a third of the way back
+    [0.6667, 1.3333]
+    """
+    poly = np.asarray(poly, dtype=np.float64).reshape(-1, 4)
+    attrs = np.zeros((len(poly), 0)) if attrs is None else np.asarray(attrs, dtype=np.float64)
+    attrs = attrs.reshape(len(poly), -1)
+    steps = []
+    for k in range(len(planes(guard))):
+        if len(poly) == 0:
+            break
+        d = _distance(poly, k, guard)
+        poly, attrs, new = _clip_against(poly, attrs, k, guard)
+        steps.append(ClipStep(PLANE_NAMES[k], d, poly, attrs, new))
+    if len(poly):  # the eye, last: keeps w > 0 (drops only the origin, see the module doc)
+        live = poly[:, 3] > 0
+        steps.append(
+            ClipStep(
+                PLANE_NAMES[-1], poly[:, 3], poly[live], attrs[live], np.zeros(live.sum(), bool)
+            )
+        )
+    return steps
 
 
 @dataclass(frozen=True)

@@ -2,7 +2,7 @@
 pyramid, and filters side by side with their error against the true footprint average.
 
 Every function draws on the Axes it is given (a row of Axes for the comparison) and returns
-an :class:`~._common.Artists` dataclass, as everywhere in :mod:`teachraster.plotting`.
+an :class:`~.common.Artists` dataclass, as everywhere in :mod:`teachraster.plotting`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from matplotlib.patches import Rectangle
 
 from ..pipeline.render_triangles import Frame
 from ..pipeline.texture_filters import nearest_level
-from ._common import Artists, fs, lw, pixel_axes, rgba_image, set_image, show_image
+from .common import Artists, fs, lw, pixel_axes, rgba_image, set_image, show_image
 from .style import ERROR_CMAP, OKABE_ITO
 
 #: One colour per triangle in quad plots, and one per mip level in LOD maps (levels beyond

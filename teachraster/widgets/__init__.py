@@ -38,7 +38,7 @@ Example
 >>> player.close()
 """
 
-from ._display import BACKENDS, FigureDisplay, resolve_backend
+from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
 from .player import FillPlayer

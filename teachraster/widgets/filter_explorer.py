@@ -12,8 +12,8 @@ from ..pipeline.texture import TEXTURE_FILTERS, checkerboard, sample
 from ..pipeline.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..study.texture_truth import footprint_average, texel_reads
-from ._common import style_context, title_html
-from ._display import COMPARISON_DPI, FigureDisplay, new_figure, resolve_backend
+from .common import close_tree, style_context, title_html
+from .display import COMPARISON_DPI, FigureDisplay, new_figure, resolve_backend
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 
@@ -162,7 +162,5 @@ class FilterExplorer:
 
     def close(self) -> None:
         """Close every widget of the explorer."""
-        from .player import _close_tree
-
         self.display.close()
-        _close_tree(self.widget)
+        close_tree(self.widget)
