@@ -12,7 +12,9 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
    (:mod:`teachraster.pipeline.zbuffer`);
-6. perspective-correct interpolation of the attributes, at the visible pixels only.
+6. perspective-correct interpolation of the attributes, at the visible pixels only;
+7. on request, their screen-space derivatives from 2×2 quads with helper pixels
+   (:mod:`teachraster.pipeline.quad_derivatives`), for texture filtering.
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
 from .inputs import check_render
 from .multisampling import multisample_stage
+from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
 from .render_plan import Plan
 from .stages import (
     clip_stage,
@@ -62,6 +65,8 @@ class RenderTrace:
         Multisampled renders: the sample each fragment entry was tested at (entries grouped
         by sample, drawing order inside each), or -1 for a pixel decided whole (one triangle at every sample, no per-sample test; its depth is
         NaN here, the per-sample depths are in ``Frame.sample_depth``).
+    quads : QuadTrace or None
+        The 2×2 quads and helper pixels evaluated for derivatives, when they were.
     """
 
     clip_status: np.ndarray
@@ -75,6 +80,7 @@ class RenderTrace:
     fragment_depth: np.ndarray
     fragment_passed: np.ndarray
     fragment_sample: np.ndarray | None = None
+    quads: QuadTrace | None = None
 
 
 @dataclass(frozen=True)
@@ -104,6 +110,9 @@ class Frame:
         (at the centre, extrapolated when outside), NaN where uncovered.
     samples : (S, 2) float64 or None
         The sample offsets inside the pixel as tested, in px.
+    ddx, ddy : (H, W, k) float64 or None
+        Screen-space derivatives of the attributes from 2×2 quads (``derivatives=``): per
+        pixel step right and per pixel step down; NaN where uncovered. None when not computed.
     """
 
     triangle_id: np.ndarray
@@ -115,6 +124,8 @@ class Frame:
     sample_depth: np.ndarray | None = None
     sample_attrs: np.ndarray | None = None
     samples: np.ndarray | None = None
+    ddx: np.ndarray | None = None
+    ddy: np.ndarray | None = None
 
     @property
     def coverage(self) -> np.ndarray:
@@ -175,8 +186,11 @@ def render(
     subpixel_bits: int | None = SUBPIXEL_BITS,
     max_pixels: int | None = None,
     samples=1,
+    derivatives=False,
+    derivatives_where=None,
 ) -> Frame:
-    """Render clip-space triangles into a ``height`` × ``width`` frame.
+    """Render clip-space triangles into a ``height`` × ``width`` frame (bad arguments raise
+    a ValueError or TypeError naming them, see :mod:`teachraster.pipeline.inputs`).
 
     Parameters
     ----------
@@ -202,17 +216,18 @@ def render(
     subpixel_bits : int or None
         Snapping precision, as in :func:`teachraster.rasterize`.
     max_pixels : int, optional
-        Largest ``width * height`` allowed (default 2**28 = 16384²): a larger frame raises
-        a ValueError saying what it would cost, before anything is allocated.
-
-    Raises
-    ------
-    ValueError, TypeError
-        For a bad argument, naming it (see :mod:`teachraster.pipeline.inputs`).
+        Largest ``width * height`` (default 2**28): larger raises before allocating.
     samples : int or (S, 2) array-like
         Multisampling (MSAA): 1, 2, 4, 8, 16 (standard patterns) or offsets in [0, 1)².
         Coverage and the depth test per sample, attributes once per pixel and triangle
         (see :class:`Frame` and :mod:`teachraster.pipeline.multisampling`).
+    derivatives : bool or {"coarse", "fine"}
+        Also compute ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True`` or ``"coarse"``
+        (one pair per quad, as llvmpipe) or ``"fine"`` (per row / column); see
+        :mod:`teachraster.pipeline.quad_derivatives`.
+    derivatives_where : (N,) bool array-like, optional
+        Only the pixels of these input triangles get derivatives (NaN elsewhere); how
+        ``render(scene, ...)`` limits them to the triangles a texture filter minifies.
 
     Examples
     --------
@@ -232,17 +247,15 @@ def render(
     clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
     depth_test, trace, forced = a.depth_test, a.trace, a.forced
     offsets = None if is_single(samples) else as_samples(samples)
+    mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
 
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
-    if offsets is not None:
-        multi, effects = multisample_stage(
-            clipped, window, culled, (width, height), subpixel_bits, offsets,
-            (depth_test, depth_format, interpolation), forced,
-        )  # fmt: skip
-        return _multi_frame(multi, clipped, window, culled, (width, height),
-                            Plan((clipping, culling, *effects)), trace)  # fmt: skip
+    if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
+        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets,
+                                    (width, height, subpixel_bits), (depth_test, depth_format,
+                                    interpolation), forced, trace)  # fmt: skip
     frags = fill_stage(window, width, height, subpixel_bits, culled)
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
@@ -251,26 +264,65 @@ def render(
         frags, visible, clipped, interpolation, forced
     )
 
-    plan = Plan((clipping, culling, depth_testing, perspective, attributes))
-    record = _record(clipped, window, culled, frags, visible) if trace else None
-    return _frame(visible, values, clipped, frags, width, height, plan, record)
+    ddx, ddy, quads, derivs = derivatives_stage(
+        frags, visible, clipped, (width, height), mode,
+        None if where is None else where[clipped.parent], interpolation, forced, trace,
+    )  # fmt: skip
+    plan = Plan((clipping, culling, depth_testing, perspective, attributes, derivs))
+    record = _record(clipped, window, culled, frags, visible, quads) if trace else None
+    return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
 
 
-def _frame(visible, values, clipped, frags, width, height, plan, record) -> Frame:
-    """Scatter the visible pixels' triangle, depth and attributes into (H, W) images."""
-    k = values.shape[1]
+def _render_multisampled(clipped, window, culled, effects, offsets, grid, options, forced,
+                         trace) -> Frame:  # fmt: skip
+    """The multisampled rest of :func:`render`, after clipping, the viewport and culling."""
+    width, height, bits = grid
+    multi, more = multisample_stage(
+        clipped, window, culled, (width, height), bits, offsets, options, forced
+    )
+    plan = Plan((*effects, *more))
+    return _multi_frame(multi, clipped, window, culled, (width, height), plan, trace)
+
+
+def _check_derivatives(derivatives, where, n, offsets):
+    """The derivative mode (None: off) and the triangles that want derivatives (None: all)."""
+    mode = as_derivative_mode(derivatives)
+    if offsets is not None and mode is not None:
+        raise ValueError("derivatives: quad derivatives are simulated with samples=1 only")
+    return mode, _check_where(where, n)
+
+
+def _check_where(where, n):
+    if where is None:
+        return None
+    arr = np.asarray(where)
+    if arr.shape != (n,) or arr.dtype != bool:
+        raise ValueError(f"derivatives_where must be a bool array of shape ({n},), got {arr!r}")
+    return arr
+
+
+def _image(visible, values, width, height) -> np.ndarray:
+    """(H, W, k) image of per-visible-pixel values, NaN elsewhere."""
+    out = np.full((width * height, values.shape[1]), np.nan)
+    out[visible.pixels] = values
+    return out.reshape(height, width, values.shape[1])
+
+
+def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=None,
+           ddy=None) -> Frame:  # fmt: skip
+    """Scatter the visible pixels' triangle, depth, attributes (and derivatives) into images."""
     triangle_id = np.full(width * height, -1, dtype=np.int64)
     triangle_id[visible.pixels] = clipped.parent[frags.tri[visible.winner]]
     depth = np.full(width * height, np.nan)
     depth[visible.pixels] = visible.depth[visible.winner]
-    attrs = np.full((width * height, k), np.nan)
-    attrs[visible.pixels] = values
     return Frame(
         triangle_id=triangle_id.reshape(height, width),
-        attrs=attrs.reshape(height, width, k),
+        attrs=_image(visible, values, width, height),
         depth=depth.reshape(height, width),
         plan=plan,
         trace=record,
+        ddx=None if ddx is None else _image(visible, ddx, width, height),
+        ddy=None if ddy is None else _image(visible, ddy, width, height),
     )
 
 
@@ -312,7 +364,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     )
 
 
-def _record(clipped, window, culled, frags, visible) -> RenderTrace:
+def _record(clipped, window, culled, frags, visible, quads=None) -> RenderTrace:
     """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
     return RenderTrace(
         clip_status=clipped.status,
@@ -325,4 +377,5 @@ def _record(clipped, window, culled, frags, visible) -> RenderTrace:
         fragment_col=frags.col,
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
+        quads=quads,
     )

@@ -42,6 +42,13 @@ Antialiasing (multisampled fills and frames, :mod:`.antialiasing`)
 - :func:`plot_coverage_fraction` -- the fraction of samples covered per pixel.
 - :func:`plot_area_error` -- coverage fraction minus the exact area, signed.
 
+Texture filtering (lesson 09)
+-----------------------------
+- :func:`plot_quads` -- 2×2 quads and helper pixels of ``render(..., derivatives=True, trace=True)``.
+- :func:`plot_lod` -- the level-of-detail map, one colour per mip level.
+- :func:`plot_pyramid` -- a mip pyramid, level 0 and the smaller levels beside it.
+- :func:`plot_filters` -- filtered renders side by side with their error against the truth.
+
 Views (draw once, then update in place; for widgets and animations)
 -------------------------------------------------------------------
 - :class:`FillView` -- step through a fill: ``show_step(k)``, ``set_fill(new_fill)``;
@@ -106,6 +113,16 @@ from .plots import (
     visit_order,
 )
 from .style import COLORS, OKABE_ITO, STYLES, use_style
+from .texture_plots import (
+    FilterArtists,
+    LodArtists,
+    PyramidArtists,
+    QuadArtists,
+    plot_filters,
+    plot_lod,
+    plot_pyramid,
+    plot_quads,
+)
 from .views import ComparisonView, FillView, InterpolationView
 
 __all__ = [
@@ -124,13 +141,17 @@ __all__ = [
     "ComparisonView",
     "CoverageArtists",
     "EdgeValueArtists",
+    "FilterArtists",
     "FillView",
     "GridArtists",
     "HeatmapArtists",
     "ImageArtists",
     "InterpolationView",
+    "LodArtists",
     "PixelArtists",
     "PlanArtists",
+    "PyramidArtists",
+    "QuadArtists",
     "RasterLineArtists",
     "SplitArtists",
     "TriangleArtists",
@@ -149,10 +170,14 @@ __all__ = [
     "plot_depth",
     "plot_edge_values",
     "plot_error_heatmap",
+    "plot_filters",
     "plot_image",
+    "plot_lod",
     "plot_pixel_centres",
     "plot_pixel_grid",
     "plot_plan",
+    "plot_pyramid",
+    "plot_quads",
     "plot_raster_line",
     "plot_split",
     "plot_triangle",

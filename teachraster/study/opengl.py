@@ -6,6 +6,9 @@ machines without a GPU that is Mesa's llvmpipe, a software rasteriser that, like
 teachraster, snaps vertices to 1/256 px). It reads back float32 render targets: the triangle id
 (``gl_PrimitiveID``), every attribute interpolated both as a GLSL ``smooth`` (perspective-correct)
 and a ``noperspective`` (affine) varying, and the window depth ``gl_FragCoord.z``.
+:func:`gl_texture_lod` draws textured triangles and reads back GLSL
+``textureQueryLod(...)`` (GL's λ from its own 2×2 quads) and the colour a mipmapped filter
+returns, to check quads, derivatives and the choice of mip level (lesson 09).
 
 The core package never imports this module, and importing it does not need moderngl: it is
 imported inside the functions, so :func:`gl_available` can report why OpenGL is missing.
@@ -65,10 +68,12 @@ __all__ = [
     "GLFrame",
     "GLRenderer",
     "GLSampleFrame",
+    "GLTextureFrame",
     "gl_available",
     "gl_render",
     "gl_render_samples",
     "gl_sample_positions",
+    "gl_texture_lod",
 ]
 
 #: Attribute components carried by one varying (a vec4).
@@ -639,3 +644,138 @@ def _read_samples(ctx, program, tex, size, samples, res):
         ids[..., s] = buf[..., 0].astype(np.int64)
         masks[..., s] = buf[..., 1]
     return ids, masks
+
+
+# -- texture level of detail ------------------------------------------------------------------
+#: Minifying filters :func:`gl_texture_lod` can ask GL for, by teachraster's names.
+_GL_MIN_FILTERS = {
+    "nearest_mipmap_nearest": "NEAREST_MIPMAP_NEAREST",
+    "linear_mipmap_nearest": "LINEAR_MIPMAP_NEAREST",
+    "nearest_mipmap_linear": "NEAREST_MIPMAP_LINEAR",
+    "trilinear": "LINEAR_MIPMAP_LINEAR",
+}
+
+_LOD_VS = """#version 400
+in vec4 in_pos;
+in vec2 in_uv;
+smooth out vec2 uv;
+void main() {
+    gl_Position = vec4(in_pos.x, -in_pos.y, in_pos.z, in_pos.w);  // y negated, as above
+    uv = in_uv;
+}
+"""
+
+_LOD_FS = """#version 400
+uniform sampler2D tex;
+smooth in vec2 uv;
+layout(location = 0) out vec4 o_lod;
+layout(location = 1) out vec4 o_color;
+void main() {
+    vec2 q = textureQueryLod(tex, uv);  // x: the level(s) accessed, y: the computed lambda
+    o_lod = vec4(float(gl_PrimitiveID), q.x, q.y, 1.0);
+    o_color = texture(tex, uv);
+}
+"""
+
+
+@dataclass(frozen=True)
+class GLTextureFrame:
+    """What OpenGL computed for a textured draw (row 0 at the top).
+
+    Attributes
+    ----------
+    triangle_id : (height, width) int64
+        ``gl_PrimitiveID``, -1 where nothing was drawn.
+    lod : (height, width) float64
+        ``textureQueryLod(tex, uv).y``: GL's λ relative to the base level, NaN where uncovered.
+    level : (height, width) float64
+        ``textureQueryLod(tex, uv).x``: the (clamped) level GL would access.
+    color : (height, width, 4) float64
+        ``texture(tex, uv)`` with the asked minifying filter (RGBA; channels the texture did
+        not have are GL's defaults).
+    """
+
+    triangle_id: np.ndarray
+    lod: np.ndarray
+    level: np.ndarray
+    color: np.ndarray
+
+
+def gl_texture_lod(
+    clip, uv, width: int, height: int, levels, *, filter: str = "nearest_mipmap_nearest"
+) -> GLTextureFrame:
+    """Draw textured clip-space triangles with OpenGL and read back λ and the sampled colour.
+
+    The mip levels are uploaded as given (``levels[0]`` first, our row 0 as GL's ``t = 0``
+    so GL's (s, t) is teachraster's (u, v)), wrap ``REPEAT``, magnification ``NEAREST``. GL
+    computes λ from its own 2×2 quads: with y negated its quads are aligned with ours, so this
+    checks :func:`teachraster.render`'s derivatives and :func:`teachraster.mip_level`.
+
+    Parameters
+    ----------
+    clip : (N, 3, 4) array-like
+        Clip-space vertices, as in :func:`gl_render`.
+    uv : (N, 3, 2) array-like
+        Texture coordinates per vertex (a ``smooth`` varying).
+    width, height : int
+        Image size.
+    levels : list of (h, w) or (h, w, C) arrays, C <= 4
+        The full pyramid (e.g. ``tr.mipmap(texture)``), down to 1 × 1.
+    filter : str
+        One of ``nearest_mipmap_nearest``, ``linear_mipmap_nearest``,
+        ``nearest_mipmap_linear``, ``trilinear``.
+    """
+    import moderngl
+
+    clip, width, height, uv = _check_inputs(clip, width, height, uv, None)
+    if uv.shape[2] != 2:
+        raise ValueError(f"uv must have shape (N, 3, 2), got {uv.shape}")
+    if filter not in _GL_MIN_FILTERS:
+        raise ValueError(f"filter must be one of {tuple(_GL_MIN_FILTERS)}; got {filter!r}")
+    ctx, _ = _context()
+    levels = [np.asarray(lv, dtype=np.float64) for lv in levels]
+    levels = [lv[..., None] if lv.ndim == 2 else lv for lv in levels]
+    comps = levels[0].shape[2]
+    if "lod" not in _STATE["programs"]:
+        _STATE["programs"]["lod"] = ctx.program(vertex_shader=_LOD_VS, fragment_shader=_LOD_FS)
+    prog = _STATE["programs"]["lod"]
+    res = []
+    try:
+        h0, w0 = levels[0].shape[:2]
+        tex = ctx.texture((w0, h0), comps, levels[0].astype("f4").tobytes(), dtype="f4")
+        res.append(tex)
+        tex.build_mipmaps()  # allocates every level; overwritten with ours below
+        for i, lv in enumerate(levels[1:], start=1):
+            tex.write(np.ascontiguousarray(lv, dtype="f4").tobytes(), level=i)
+        tex.filter = (getattr(moderngl, _GL_MIN_FILTERS[filter]), moderngl.NEAREST)
+        tex.repeat_x = tex.repeat_y = True
+        pos = ctx.buffer(clip.astype("f4").tobytes())
+        tc = ctx.buffer(uv.astype("f4").tobytes())
+        res += [pos, tc]
+        vao = ctx.vertex_array(prog, [(pos, "4f", "in_pos"), (tc, "2f", "in_uv")])
+        res.append(vao)
+        targets = [ctx.renderbuffer((width, height), 4, dtype="f4") for _ in range(2)]
+        res += targets
+        fbo = ctx.framebuffer(targets)
+        res.append(fbo)
+        fbo.use()
+        ctx.enable_only(moderngl.NOTHING)
+        fbo.clear(-1.0, -1.0, -1.0, -1.0)
+        tex.use(0)
+        prog["tex"].value = 0
+        vao.render(moderngl.TRIANGLES, vertices=3 * len(clip))
+        out = []
+        for attachment in range(2):
+            buf = np.empty((height, width, 4), dtype="f4")
+            fbo.read_into(buf, components=4, attachment=attachment, dtype="f4")
+            out.append(buf.astype(np.float64))
+    finally:
+        for obj in reversed(res):
+            obj.release()
+    ids = out[0][..., 0].astype(np.int64)
+    uncovered = ids < 0
+    lod, level, color = out[0][..., 2], out[0][..., 1], out[1]
+    for arr in (lod, level):
+        arr[uncovered] = np.nan
+    color[uncovered] = np.nan
+    return GLTextureFrame(triangle_id=ids, lod=lod, level=level, color=color)

@@ -18,6 +18,9 @@ Widgets
   slider.
 - :class:`PixelInspector` -- choose a pixel and a sample pattern: every sample of the image,
   and the pixel magnified with the triangle owning each sample and its edge values.
+- :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
+  chooser: the filtered image, the mip level per pixel and the error against the true
+  footprint average (lesson 09).
 
 Figures
 -------
@@ -39,6 +42,7 @@ Example
 
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
+from .filter_explorer import FilterExplorer
 from .inspector import PixelInspector
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer
@@ -46,6 +50,7 @@ from .textured import TexturedPlaneViewer
 __all__ = [
     "BACKENDS",
     "FigureDisplay",
+    "FilterExplorer",
     "FillPlayer",
     "PixelInspector",
     "TexturedPlaneViewer",
