@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import half_planes, span_tables
+from . import half_planes, span_tables, tiles
 from .barycentrics import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import EdgeSetup, setup_edges
@@ -17,7 +17,7 @@ from .trace import FillTrace
 from .triangle import Triangle
 from .validate import as_bool, as_int, as_size, check_choice
 
-METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill}
+METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill, "tiled": tiles.fill}
 CULL = (None, "back", "front")
 
 
@@ -54,6 +54,7 @@ def rasterize(
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
     cull: str | None = None,
+    block_sizes=tiles.BLOCK_SIZES,
 ) -> Fill:
     """Fill a triangle into a ``height`` × ``width`` image and interpolate its attributes.
 
@@ -64,9 +65,11 @@ def rasterize(
         ``(j + 0.5, i + 0.5)``).
     width, height : int
         Image size in pixels.
-    method : {"halfplane", "span"}
-        Half-plane edge tests over the bounding box, or span tables (split at u4, fill
-        raster lines). Both cover exactly the same pixels.
+    method : {"halfplane", "span", "tiled"}
+        Half-plane edge tests over the bounding box, span tables (split at u4, fill
+        raster lines), or hierarchical blocks (accept or reject whole blocks by their
+        corners, test pixels only in partial blocks of the smallest size). All three cover
+        exactly the same pixels.
     interpolation : {"perspective", "affine", "subdivided"}
         Perspective-correct (f/w over 1/w), plain screen-space interpolation, or
         perspective-correct only at every ``subdivision``-th pixel of each span and at
@@ -81,6 +84,9 @@ def rasterize(
         (8, as in Direct3D). None keeps raw floats, to show what precision does.
     cull : {None, "back", "front"}
         Drop back-facing (clockwise on screen) or front-facing triangles.
+    block_sizes : sequence of int
+        Block sizes of ``method="tiled"``, largest first, each dividing the one before
+        (llvmpipe's 64, 16, 4 by default). Checked for every method.
 
     Examples
     --------
@@ -104,6 +110,7 @@ def rasterize(
     check_choice("cull", cull, CULL)
     trace = as_bool("trace", trace)
     subpixel_bits = check_bits(subpixel_bits)
+    block_sizes = tiles.check_block_sizes(block_sizes)
 
     setup = setup_edges(tri.xy, subpixel_bits)
     box = pixel_bbox(setup, width, height)
@@ -111,7 +118,8 @@ def rasterize(
     if culled:
         local, algo_trace = np.zeros(box.shape, dtype=bool), None
     else:
-        local, algo_trace = METHODS[method](setup, box, trace)
+        extra = {"block_sizes": block_sizes, "image": (height, width)} if method == "tiled" else {}
+        local, algo_trace = METHODS[method](setup, box, trace, **extra)
     if setup.area2 == 0:  # zero area covers nothing (exact arithmetic already ensures it)
         local[:] = False
 
@@ -218,6 +226,8 @@ def _describe_setup(setup, box, method, bits, culled, algo_trace):
                 "triangle"
             )
         steps.append(("split", split))
+    if method == "tiled" and algo_trace is not None:
+        steps.append(("blocks", tiles.setup_caption(algo_trace)))
     return snapped, area, tuple(steps)
 
 
@@ -230,6 +240,8 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         # a pixel is filled at the step of its raster line
         line_step = first + np.arange(box.shape[0], dtype=np.int32)
         filled_at = np.where(local, line_step[:, None], -1).astype(np.int32)
+    elif method == "tiled" and algo_trace is not None:  # at the step of its filling block
+        filled_at = algo_trace.filled_steps(box, local, first)
     else:  # a pixel is filled at the step that visits it (row-major over the bbox)
         visit = first + np.arange(box.size, dtype=np.int32).reshape(box.shape)
         filled_at = np.where(local, visit, -1).astype(np.int32)
@@ -255,6 +267,7 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         pixel_depth=depth_values,
         span=algo_trace if method == "span" else None,
         halfplane=algo_trace if method == "halfplane" else None,
+        blocks=algo_trace if method == "tiled" else None,
         setup=steps,
         subdivision=subdivision,
         pixel_subdivided=values.get("subdivided"),

@@ -6,8 +6,9 @@ pixel): steps are *numbered* and their captions are written on demand, so record
 :meth:`FillTrace.image` to place one in the whole image.
 
 Steps run in this order: set-up steps (snap, winding, bounding box, and for span tables
-sort and split), then the work steps (one per raster line for span tables, one per
-visited pixel for half-planes), then one interpolation step.
+sort and split; for tiles the block sizes), then the work steps (one per raster line for
+span tables, one per visited pixel for half-planes, one per classified block for tiles),
+then one interpolation step.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import numpy as np
 from .bbox import BBox
 from .half_planes import HalfPlaneTrace
 from .span_tables import SpanTrace
+from .tile_trace import TileTrace
 
 
 @dataclass(frozen=True)
@@ -27,8 +29,9 @@ class Step:
     """One step of a fill, as the widgets show it.
 
     ``kind`` is one of ``"snap"``, ``"winding"``, ``"bbox"``, ``"sort"``, ``"split"``,
-    ``"row"``, ``"pixel"``, ``"interpolate"``. ``row``/``col`` are image indices where the
-    step concerns one raster line or pixel.
+    ``"blocks"``, ``"row"``, ``"pixel"``, ``"block"``, ``"interpolate"``. ``row``/``col``
+    are image indices where the step concerns one raster line, pixel or block (its
+    top-left pixel).
     """
 
     index: int
@@ -73,8 +76,8 @@ class FillTrace:
         ``affine`` and ``perspective`` give bbox-local images, NaN outside coverage).
     pixel_depth : (n,) float64 or None
         Interpolated window depth at each covered pixel (property ``depth``).
-    span, halfplane : SpanTrace or HalfPlaneTrace or None
-        The algorithm-specific record (the other one is None).
+    span, halfplane, blocks : SpanTrace or HalfPlaneTrace or TileTrace or None
+        The algorithm-specific record (the others are None).
     setup : tuple of (kind, caption)
         The set-up steps.
     subdivision : int or None
@@ -106,6 +109,7 @@ class FillTrace:
     setup: tuple[tuple[str, str], ...]
     subdivision: int | None = None
     pixel_subdivided: Mapping[str, np.ndarray] | None = None
+    blocks: TileTrace | None = None
 
     # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
     @property
@@ -141,11 +145,13 @@ class FillTrace:
     # -- stepping -------------------------------------------------------------------
     @property
     def n_work(self) -> int:
-        """Number of work steps: raster lines (span) or visited pixels (half-plane)."""
+        """Work steps: raster lines (span), visited pixels (half-plane) or blocks (tiled)."""
         if self.culled:
             return 0
         if self.span is not None:
             return len(self.span.rows)
+        if self.blocks is not None:
+            return len(self.blocks)
         return self.bbox.size
 
     def __len__(self) -> int:
@@ -172,6 +178,10 @@ class FillTrace:
             return Step(k, "interpolate", self._interpolation_caption())
         if self.span is not None:
             return self._row_step(k, i)
+        if self.blocks is not None:
+            b = self.blocks
+            caption = b.caption(i, self.edges)
+            return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]))
         return self._pixel_step(k, i)
 
     def caption(self, k: int) -> str:
