@@ -116,19 +116,21 @@ def fill(
     grids: list[tuple[int, int]] = []
     if bbox.size and setup.area2 != 0:  # a zero-area triangle classifies no block
         top, grid, stepper = _top_level(setup, bbox, sizes[0], (height, width))
+        canvas = _Canvas(stepper.base, (grid[0] * sizes[0], grid[1] * sizes[0]), sizes[-1])
         grids.append(grid)
         level = top
         for depth, size in enumerate(sizes):
             _classify(level, stepper)
-            _paint_accepted(local, bbox, level)
+            canvas.accept(level)
             levels.append(level)
             partial = np.flatnonzero(level.kind == PARTIAL)
             if depth == len(sizes) - 1:
-                _test_pixels(local, bbox, level, partial, stepper)
+                _test_pixels(canvas, level, partial, stepper)
                 break
             q = size // sizes[depth + 1]
             grids.append((q, q))
             level = _children(level, partial, sizes[depth + 1], (height, width), stepper)
+        local = canvas.crop(bbox)
     if not record:
         return local, None
     return local, _trace(levels, sizes, tuple(grids), setup, _counters(levels, sizes))
@@ -205,22 +207,36 @@ def _children(level: _Level, partial: np.ndarray, size: int, image, stepper) -> 
     )  # fmt: skip
 
 
-def _paint_accepted(local: np.ndarray, box: BBox, level: _Level) -> None:
-    """Fill every accepted block of the level: one block-grid mask, upsampled."""
-    acc = level.kind == ACCEPTED
-    if not acc.any():
-        return
-    s = level.size
-    gr0, gc0 = box.row0 // s, box.col0 // s
-    grid = np.zeros(((box.row1 - 1) // s - gr0 + 1, (box.col1 - 1) // s - gc0 + 1), dtype=bool)
-    # Accepted blocks lie inside the triangle, hence inside the bounding box.
-    grid[level.row[acc] // s - gr0, level.col[acc] // s - gc0] = True
-    up = np.repeat(np.repeat(grid, s, axis=0), s, axis=1)
-    r0, c0 = box.row0 - gr0 * s, box.col0 - gc0 * s
-    local |= up[r0 : r0 + box.shape[0], c0 : c0 + box.shape[1]]
+class _Canvas:
+    """Coverage over the top-level blocks: accepted blocks marked as cells of the smallest
+    size (one mark per cell, not per pixel), tested pixels as pixels; merged once."""
+
+    def __init__(self, base: tuple[int, int], shape: tuple[int, int], cell: int):
+        self.base, self.cell = base, cell
+        self.pixels = np.zeros(shape, dtype=bool)
+        self.cells = np.zeros((shape[0] // cell, shape[1] // cell), dtype=bool)
+
+    def accept(self, level: _Level) -> None:
+        """Mark every accepted block of the level (all its cells at once)."""
+        acc = level.kind == ACCEPTED
+        m, d = level.size // self.cell, np.arange(level.size // self.cell)
+        i0 = (level.row[acc] - self.base[0]) // self.cell
+        j0 = (level.col[acc] - self.base[1]) // self.cell
+        self.cells[i0[:, None, None] + d[:, None], j0[:, None, None] + d] = m > 0
+
+    def set_pixels(self, rows: np.ndarray, cols: np.ndarray) -> None:
+        self.pixels[rows - self.base[0], cols - self.base[1]] = True
+
+    def crop(self, box: BBox) -> np.ndarray:
+        """The bbox-local coverage: cells spread to their pixels (one broadcast), cropped."""
+        (r, c), s = self.cells.shape, self.cell
+        self.pixels.reshape(r, s, c, s)[...] |= self.cells[:, None, :, None]
+        r0, c0 = box.row0 - self.base[0], box.col0 - self.base[1]
+        # Accepted blocks and covered pixels lie inside the triangle, hence inside the box.
+        return self.pixels[r0 : r0 + box.shape[0], c0 : c0 + box.shape[1]].copy()
 
 
-def _test_pixels(local, box: BBox, level: _Level, partial: np.ndarray, stepper) -> None:
+def _test_pixels(canvas: _Canvas, level: _Level, partial: np.ndarray, stepper) -> None:
     """Pixel by pixel in the partial blocks of the smallest size (per edge, all blocks)."""
     s, setup = level.size, stepper.setup
     dr, dc = np.indices((s, s))
@@ -236,7 +252,7 @@ def _test_pixels(local, box: BBox, level: _Level, partial: np.ndarray, stepper) 
             e = stepper.direct(k, rows[:, :, None], cols[:, None, :])
         covered &= setup.inside(k, e)
     n, a, b = np.nonzero(covered)
-    local[level.row[partial][n] + a - box.row0, level.col[partial][n] + b - box.col0] = True
+    canvas.set_pixels(level.row[partial][n] + a, level.col[partial][n] + b)
     level.covered[partial] = covered.sum(axis=(1, 2))
 
 
