@@ -73,8 +73,8 @@ class _Level:
 class _Stepper:
     """Per-triangle constants of the walk: E's increments (exact) or its row/col terms."""
 
-    def __init__(self, setup: EdgeSetup, rows: np.ndarray, cols: np.ndarray):
-        self.setup = setup
+    def __init__(self, setup: EdgeSetup, rows: np.ndarray, cols: np.ndarray, dtype=None):
+        self.setup, self.dtype = setup, dtype
         p, unit = setup.p, setup.unit
         d = np.roll(p, -1, axis=0) - p  # (3, 2) edge vectors b - a
         # E(row + 1) - E(row) = dx * unit, E(col + 1) - E(col) = -dy * unit: exact integers
@@ -93,7 +93,18 @@ class _Stepper:
 
     def steps(self, drow: np.ndarray, dcol: np.ndarray) -> np.ndarray:
         """(..., 3) table of increments from a centre to the centre ``(drow, dcol)`` away."""
-        return drow[..., None] * self.down + dcol[..., None] * self.right
+        return self.wrap(drow[..., None] * self.down + dcol[..., None] * self.right)
+
+    def wrap(self, values: np.ndarray) -> np.ndarray:
+        """Values as a ``dtype``-bit register holds them (wrapping silently), if one was set.
+
+        Addition and multiplication modulo 2**bits commute with the cast, so wrapping the
+        exact int64 results at each step gives what a narrower adder computes throughout
+        (see :mod:`.fixed_point`). Without ``dtype`` this is the identity (exact int64).
+        """
+        if self.dtype is None or not self.setup.exact:
+            return values
+        return np.asarray(values).astype(self.dtype)
 
 
 def fill(
@@ -103,11 +114,14 @@ def fill(
     *,
     block_sizes=BLOCK_SIZES,
     image: tuple[int, int] | None = None,
+    dtype=None,
 ) -> tuple[np.ndarray, TileTrace | None]:
     """Coverage of the bounding box (bbox-local bool array) and, if asked, the trace.
 
     ``image`` is ``(height, width)``: blocks are clipped to the image, not to the box
-    (default: the box's far corner, for callers that fill a window).
+    (default: the box's far corner, for callers that fill a window). ``dtype`` (e.g.
+    ``np.int32``) makes the snapped walk step in that integer width, wrapping on overflow
+    as hardware registers do: only for :func:`.fixed_point.narrow_fill`'s demonstration.
     """
     sizes = check_block_sizes(block_sizes)
     height, width = (bbox.row1, bbox.col1) if image is None else image
@@ -115,7 +129,7 @@ def fill(
     levels: list[_Level] = []
     grids: list[tuple[int, int]] = []
     if bbox.size and setup.area2 != 0:  # a zero-area triangle classifies no block
-        top, grid, stepper = _top_level(setup, bbox, sizes[0], (height, width))
+        top, grid, stepper = _top_level(setup, bbox, sizes[0], (height, width), dtype)
         canvas = _Canvas(stepper.base, (grid[0] * sizes[0], grid[1] * sizes[0]), sizes[-1])
         grids.append(grid)
         level = top
@@ -136,16 +150,17 @@ def fill(
     return local, _trace(levels, sizes, tuple(grids), setup, _counters(levels, sizes))
 
 
-def _top_level(setup: EdgeSetup, box: BBox, size: int, image: tuple[int, int]):
+def _top_level(setup: EdgeSetup, box: BBox, size: int, image: tuple[int, int], dtype=None):
     """The blocks of the largest size on the image grid that overlap the bounding box."""
     gr0, gr1 = box.row0 // size, (box.row1 - 1) // size + 1
     gc0, gc1 = box.col0 // size, (box.col1 - 1) // size + 1
-    stepper = _Stepper(setup, np.arange(gr0 * size, gr1 * size), np.arange(gc0 * size, gc1 * size))
+    rows, cols = np.arange(gr0 * size, gr1 * size), np.arange(gc0 * size, gc1 * size)
+    stepper = _Stepper(setup, rows, cols, dtype)
     bi, bj = np.indices((gr1 - gr0, gc1 - gc0)).reshape(2, -1)
     row, col = (gr0 + bi) * size, (gc0 + bj) * size
     e0 = None
     if setup.exact:  # the only evaluation of E; every later value is stepped from these
-        e0 = np.stack([stepper.direct(k, row, col) for k in range(3)], axis=1)
+        e0 = stepper.wrap(np.stack([stepper.direct(k, row, col) for k in range(3)], axis=1))
     level = _Level(
         size, row, col, _extent(row, col, size, image), np.full(len(row), -1),
         np.stack([bi, bj], axis=1), e0,
@@ -171,8 +186,8 @@ def _classify(level: _Level, stepper: _Stepper) -> None:
     rows_min = np.where(stepper.down < 0, last[:, :1], 0)
     cols_min = np.where(stepper.right < 0, last[:, 1:], 0)
     if level.e0 is not None:  # exact: corner = first centre + integer increments
-        e_max = level.e0 + rows_max * stepper.down + cols_max * stepper.right
-        e_min = level.e0 + rows_min * stepper.down + cols_min * stepper.right
+        e_max = stepper.wrap(level.e0 + rows_max * stepper.down + cols_max * stepper.right)
+        e_min = stepper.wrap(level.e0 + rows_min * stepper.down + cols_min * stepper.right)
     else:
         e_max, e_min = np.empty((n, 3)), np.empty((n, 3))
         for k in range(3):
@@ -199,7 +214,7 @@ def _children(level: _Level, partial: np.ndarray, size: int, image, stepper) -> 
     e0 = None
     if level.e0 is not None:  # child's first centre = parent's + a per-level table
         table = stepper.steps(di * size, dj * size)  # (q*q, 3), once per level
-        e0 = (level.e0[partial, None, :] + table[None]).reshape(-1, 3)
+        e0 = stepper.wrap(level.e0[partial, None, :] + table[None]).reshape(-1, 3)
     keep = (row < image[0]) & (col < image[1])
     return _Level(
         size, row[keep], col[keep], _extent(row[keep], col[keep], size, image), parent[keep],
@@ -247,7 +262,7 @@ def _test_pixels(canvas: _Canvas, level: _Level, partial: np.ndarray, stepper) -
     table = stepper.steps(dr, dc)  # (s, s, 3) increments from the first centre, once
     for k in range(3):
         if level.e0 is not None:  # exact: one addition per pixel
-            e = level.e0[partial, k, None, None] + table[None, :, :, k]
+            e = stepper.wrap(level.e0[partial, k, None, None] + table[None, :, :, k])
         else:
             e = stepper.direct(k, rows[:, :, None], cols[:, None, :])
         covered &= setup.inside(k, e)
