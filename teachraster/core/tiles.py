@@ -145,6 +145,8 @@ def fill(
             grids.append((q, q))
             level = _children(level, partial, sizes[depth + 1], (height, width), stepper)
         local = canvas.crop(bbox)
+        for upper, lower in zip(levels[-2::-1], levels[:0:-1]):  # bottom-up: partial totals
+            np.add.at(upper.covered, lower.parent, lower.covered)
     if not record:
         return local, None
     return local, _trace(levels, sizes, tuple(grids), setup, _counters(levels, sizes))
