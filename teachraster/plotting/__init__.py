@@ -26,6 +26,13 @@ Geometry of one fill (``fill = tr.rasterize(tri, W, H, trace=True)``)
 - :func:`plot_bailout` -- which edge test rejected each pixel, and how many tests ran.
 - :func:`plot_visit_order` -- the order in which the fill reaches the pixels.
 
+Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
+-------------------------------------------------------------------
+- :func:`plot_blocks` -- the classified blocks coloured by kind, a level or up to a step.
+- :func:`plot_hierarchy` -- one panel per block size.
+- :func:`plot_block_counters` -- llvmpipe-style counters as a table.
+- :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
+
 Per-pixel values
 ----------------
 - :func:`plot_barycentric` -- λ0, λ1, λ2 as RGB, or one weight as a value map.
@@ -90,16 +97,30 @@ from .plots import (
     visit_order,
 )
 from .style import COLORS, OKABE_ITO, STYLES, use_style
+from .tiles import (
+    BLOCK_COLORS,
+    BlockArtists,
+    CounterArtists,
+    TraversalArtists,
+    block_mask,
+    plot_block_counters,
+    plot_blocks,
+    plot_hierarchy,
+    plot_traversal,
+)
 from .views import ComparisonView, FillView, InterpolationView
 
 __all__ = [
+    "BLOCK_COLORS",
     "COLORS",
     "OKABE_ITO",
     "STYLES",
     "BBoxArtists",
     "BailoutArtists",
+    "BlockArtists",
     "CentreArtists",
     "ComparisonView",
+    "CounterArtists",
     "CoverageArtists",
     "EdgeValueArtists",
     "FillView",
@@ -111,28 +132,34 @@ __all__ = [
     "PlanArtists",
     "RasterLineArtists",
     "SplitArtists",
+    "TraversalArtists",
     "TriangleArtists",
     "VisitArtists",
     "abs_error",
     "attribute_image",
     "bailout",
+    "block_mask",
     "edge_images",
     "format_plan",
     "plot_attribute",
     "plot_bailout",
     "plot_barycentric",
+    "plot_block_counters",
+    "plot_blocks",
     "plot_bbox",
     "plot_coverage",
     "plot_current_pixel",
     "plot_depth",
     "plot_edge_values",
     "plot_error_heatmap",
+    "plot_hierarchy",
     "plot_image",
     "plot_pixel_centres",
     "plot_pixel_grid",
     "plot_plan",
     "plot_raster_line",
     "plot_split",
+    "plot_traversal",
     "plot_triangle",
     "plot_visit_order",
     "use_style",
