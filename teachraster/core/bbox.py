@@ -42,8 +42,13 @@ class BBox:
         return np.arange(self.col0, self.col1)
 
 
-def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
-    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n)."""
+def centre_ranges(lo, hi, setup: EdgeSetup, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Half-open index ranges [first, stop) of pixel centres c with ``lo <= c <= hi``.
+
+    ``lo`` and ``hi`` are arrays (one range per entry, in internal units); the ranges are
+    clipped to [0, n) and empty ones have ``stop == first``. Integer floor and ceiling on
+    the snapped grid, so the bounds are exact.
+    """
     unit, half = setup.unit, setup.half
     if setup.exact:  # integer ceil/floor: exact
         first = -((half - lo) // unit)
@@ -51,8 +56,15 @@ def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
     else:
         first = np.ceil((lo - half) / unit)
         last = np.floor((hi - half) / unit)
-    first, last = int(min(max(first, 0), n)), int(min(last, n - 1))
-    return first, max(first, last + 1)
+    first = np.clip(first, 0, n).astype(np.int64)
+    stop = np.maximum(first, np.minimum(last, n - 1).astype(np.int64) + 1)
+    return first, stop
+
+
+def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
+    """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n)."""
+    first, stop = centre_ranges(np.asarray(lo), np.asarray(hi), setup, n)
+    return int(first), int(stop)
 
 
 def pixel_bbox(setup: EdgeSetup, width: int, height: int) -> BBox:

@@ -30,14 +30,16 @@ class EdgeSetup:
     """Once-per-triangle set-up, in internal units (int64 snapped, or float64 raw).
 
     ``p`` holds the vertices re-ordered so that the area is positive; ``perm[k]`` is the
-    original index of ``p[k]``. Edge ``k`` runs ``p[k] → p[(k + 1) % 3]``.
+    original index of ``p[k]``. Edge ``k`` runs ``p[k] → p[(k + 1) % 3]``. A batch (see
+    :func:`setup_edges`) has leading axes on every array; the per-pixel methods below are
+    for one triangle.
     """
 
-    p: np.ndarray  # (3, 2) oriented vertices, internal units
-    perm: np.ndarray  # (3,) original vertex index of each oriented vertex
-    area2: int | float  # E(p0, p1, p2) >= 0, in units²
-    original_area2: int | float  # E(v0, v1, v2) in the caller's vertex order
-    top_left: np.ndarray  # (3,) bool per edge
+    p: np.ndarray  # (..., 3, 2) oriented vertices, internal units
+    perm: np.ndarray  # (..., 3) original vertex index of each oriented vertex
+    area2: int | float | np.ndarray  # (...) E(p0, p1, p2) >= 0, in units²
+    original_area2: int | float | np.ndarray  # (...) E(v0, v1, v2) in the caller's order
+    top_left: np.ndarray  # (..., 3) bool per edge
     unit: int | float  # internal units per pixel
     exact: bool  # True on the snapped integer grid
 
@@ -97,21 +99,66 @@ def is_top_left(a, b) -> bool:
     return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
 
 
+def top_left_edges(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """:func:`is_top_left` for arrays of directed edges ``a → b`` (..., 2): (...,) bool."""
+    return (b[..., 1] < a[..., 1]) | ((b[..., 1] == a[..., 1]) & (b[..., 0] > a[..., 0]))
+
+
+def facing(area2) -> np.ndarray:
+    """Facing of triangles from their signed area E(v0, v1, v2): int8 +1, -1 or 0.
+
+    +1 clockwise on screen (back-facing), -1 counter-clockwise (front-facing, CONVENTIONS'
+    winding), 0 zero area.
+
+    >>> facing(np.array([12, -3, 0])).tolist()
+    [1, -1, 0]
+    """
+    return np.sign(area2).astype(np.int8)
+
+
+def culled(area2, cull: str | None) -> np.ndarray:
+    """The culling test, the one place it is written: which triangles ``cull`` removes.
+
+    ``area2`` is E(v0, v1, v2) of the *snapped* triangle in the caller's vertex order (the
+    triangle that is actually filled); ``cull`` is None, "back" or "front". Zero-area
+    triangles are never culled (they cover nothing anyway).
+
+    >>> culled(np.array([12, -3, 0]), "back").tolist(), culled(np.array([12, -3, 0]), None).tolist()
+    ([True, False, False], [False, False, False])
+    """
+    side = facing(area2)
+    if cull == "back":
+        return side > 0
+    if cull == "front":
+        return side < 0
+    return np.zeros(np.shape(side), dtype=bool)
+
+
 def setup_edges(xy: np.ndarray, subpixel_bits: int | None) -> EdgeSetup:
-    """Snap, orient and classify the edges of a triangle (once per triangle)."""
+    """Snap, orient and classify the edges of a triangle (once per triangle).
+
+    ``xy`` is (3, 2) for one triangle or (..., 3, 2) for a batch: every field of the
+    returned :class:`EdgeSetup` then gains the same leading axes (``p`` (..., 3, 2),
+    ``perm`` (..., 3), ``area2`` (...), ``top_left`` (..., 3)), so the batched fill shares
+    this one snapping, orientation and top-left classification.
+
+    >>> s = setup_edges(np.array([[[0, 0], [0, 4], [4, 0]], [[0, 0], [4, 0], [0, 4]]]), 8)
+    >>> s.perm.tolist(), s.original_area2.tolist(), s.top_left.tolist()
+    ([[0, 2, 1], [0, 1, 2]], [-4194304, 4194304], [[True, False, True], [True, False, True]])
+    """
     v = to_units(xy, subpixel_bits)
-    (ax, ay), (bx, by), (cx, cy) = v
+    (ax, ay), (bx, by), (cx, cy) = (np.moveaxis(v[..., k, :], -1, 0) for k in range(3))
     area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
     # Both windings are filled: a negative area just means swapping two vertices so the
     # interior is on the positive side of every edge (culling is decided by the caller).
-    perm = np.array([0, 2, 1]) if area2 < 0 else np.array([0, 1, 2])
-    p = v[perm]
-    top_left = np.array([is_top_left(p[k], p[(k + 1) % 3]) for k in range(3)])
+    perm = np.where((area2 < 0)[..., None], np.array([0, 2, 1]), np.array([0, 1, 2]))
+    p = np.take_along_axis(v, perm[..., None], axis=-2)
+    top_left = top_left_edges(p, np.roll(p, -1, axis=-2))
     return EdgeSetup(
         p=p,
         perm=perm,
-        area2=abs(area2),
-        original_area2=area2,
+        area2=abs(area2)[()],
+        original_area2=area2[()],
         top_left=top_left,
         unit=units_per_pixel(subpixel_bits),
         exact=subpixel_bits is not None,

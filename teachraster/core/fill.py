@@ -10,7 +10,8 @@ import numpy as np
 from . import half_planes, span_tables, tiles
 from .barycentrics import barycentric_pixels
 from .bbox import BBox, pixel_bbox
-from .edges import EdgeSetup, setup_edges
+from .edges import culled as culled_by
+from .edges import setup_edges
 from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
@@ -114,7 +115,7 @@ def rasterize(
 
     setup = setup_edges(tri.xy, subpixel_bits)
     box = pixel_bbox(setup, width, height)
-    culled = _culled(setup, cull)
+    culled = bool(culled_by(setup.original_area2, cull))
     if culled:
         local, algo_trace = np.zeros(box.shape, dtype=bool), None
     else:
@@ -170,15 +171,6 @@ def _pack(attrs: Mapping[str, np.ndarray]):
 def _unpack(block: np.ndarray, layout) -> dict[str, np.ndarray]:
     """Views of each attribute in a (..., K) block: (...,) for scalars, (..., k) otherwise."""
     return {name: block[..., where] for name, where in layout.items()}
-
-
-def _culled(setup: EdgeSetup, cull: str | None) -> bool:
-    # Conventions: front-facing = counter-clockwise on screen = negative E(v0, v1, v2).
-    if cull == "back":
-        return setup.original_area2 > 0
-    if cull == "front":
-        return setup.original_area2 < 0
-    return False
 
 
 def _describe_setup(setup, box, method, bits, culled, algo_trace):

@@ -76,13 +76,33 @@ def blend(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
     return out.reshape(len(weights), *values.shape[1:])
 
 
-def blend_each(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """:func:`blend` with different vertex values per row: weights (n, 3), values (n, 3, k)."""
-    v0, v1, v2 = values[:, 0], values[:, 1], values[:, 2]
-    # Written out per vertex: reductions over an axis of length 3 are slow in numpy.
-    out = weights[:, 0:1] * v0 + weights[:, 1:2] * v1 + weights[:, 2:3] * v2
-    np.maximum(out, np.minimum(np.minimum(v0, v1), v2), out=out)
-    np.minimum(out, np.maximum(np.maximum(v0, v1), v2), out=out)
+def blend_each(weights: np.ndarray, values: np.ndarray, index=None) -> np.ndarray:
+    """:func:`blend` with different vertex values per row: weights (n, 3), values (n, 3, k).
+
+    With ``index`` (n,), ``values`` holds one (3, k) block per triangle (M, 3, k) and row i
+    uses block ``index[i]``, gathered here one channel at a time (cheaper than gathering
+    the whole (n, 3, k) block first).
+
+    >>> blend_each(np.array([[0.5, 0.5, 0.0]]), np.array([[[0.0], [2.0], [9.0]]]))
+    array([[1.]])
+    """
+    n, k = len(weights), values.shape[2]
+    out = np.empty((n, k))
+    # One contiguous 1-D array per weight and per vertex value: written out per vertex and
+    # per channel, because reductions over an axis of length 3, and arithmetic on strided
+    # (n, 3, k) views, are slow in numpy.
+    m0, m1, m2 = (np.ascontiguousarray(weights[:, i]) for i in range(3))
+    for j in range(k):
+        if index is None:
+            v0, v1, v2 = (np.ascontiguousarray(values[:, i, j]) for i in range(3))
+        else:
+            v0, v1, v2 = (np.ascontiguousarray(values[:, i, j])[index] for i in range(3))
+        o = m0 * v0
+        o += m1 * v1
+        o += m2 * v2
+        np.maximum(o, np.minimum(np.minimum(v0, v1), v2), out=o)
+        np.minimum(o, np.maximum(np.maximum(v0, v1), v2), out=o)
+        out[:, j] = o
     return out
 
 

@@ -8,8 +8,11 @@ Lesson 05 in code, one module per stage or ingredient:
 - :mod:`.batched_fill`: every triangle's span fill at once (identical to ``rasterize``);
 - :mod:`.depth`: depth mappings and storage precision (Ritschel, *Interpolation and
   z-buffering*);
+- :mod:`.zbuffer`: the depth test resolved for all fragments at once;
 - :mod:`.render_plan`: which effects a scene needs, and the words that say why;
-- :mod:`.render_triangles`: ``render`` of clip-space triangles, stage by stage;
+- :mod:`.stages`: the stage functions (clip, viewport, cull, fill, depth, interpolate), each
+  returning its data and its plan effect;
+- :mod:`.render_triangles`: ``render`` of clip-space triangles, the stages in a row;
 - :mod:`.render_scenes`: ``render`` of a :class:`Scene` through a camera, shaded;
 - :mod:`.painters_algorithm`: the painter's algorithm, for comparison with the z-buffer.
 """

@@ -6,21 +6,28 @@ arrays: the span of each line comes from the same exact :func:`edge_bounds` as t
 span-table fill, so the pixels are identical to filling each triangle with
 :func:`teachraster.rasterize`, and the work is proportional to lines + fragments rather
 than to bounding-box area.
+
+The fragments are generated once, as (triangle, row, column); what is *evaluated* at them
+(barycentrics, a plane such as depth) is computed on demand and only where it is needed,
+so a z-buffer can decide visibility before any attribute is touched.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
-from ..core.snapping import SUBPIXEL_BITS, to_units, units_per_pixel
+from ..core.bbox import centre_ranges
+from ..core.edges import facing, setup_edges
+from ..core.snapping import SUBPIXEL_BITS
 from ..core.span_tables import edge_bounds
 
 
 @dataclass(frozen=True)
 class Fragments:
-    """Pixel centres covered by a batch of triangles, in triangle order.
+    """Pixel centres covered by a batch of triangles, in triangle order (drawing order).
 
     Attributes
     ----------
@@ -28,18 +35,82 @@ class Fragments:
         Index of the triangle (in the batch) that covers the pixel.
     row, col : (m,) int64
         The pixel.
-    lam : (m, 3) float64
-        Screen-space barycentrics of the triangle's vertices 0, 1, 2 (their order as given).
     facing : (n,) int8
         Per triangle: +1 clockwise on screen (back-facing), -1 counter-clockwise
         (front-facing), 0 zero area.
+    vertices : (n, 3, 2) float64
+        The positions, in pixels, the weights are set up from (snapped, or the caller's
+        unsnapped ones with ``snapped_weights=False``), in the caller's vertex order.
+    area2 : (n,) float64
+        E(v0, v1, v2) of ``vertices`` (twice the signed area, px²).
+
+    ``lam`` (m, 3), the screen-space barycentrics of every fragment, is computed on first
+    use; :meth:`weights` and :meth:`weights_at` evaluate them for a subset or at any
+    point (a sample position, a helper pixel), :meth:`plane` interpolates per-vertex
+    values affinely at every fragment.
     """
 
     tri: np.ndarray
     row: np.ndarray
     col: np.ndarray
-    lam: np.ndarray
     facing: np.ndarray
+    vertices: np.ndarray
+    area2: np.ndarray
+
+    @cached_property
+    def lam(self) -> np.ndarray:
+        """(m, 3) barycentrics of vertices 0, 1, 2 at every fragment's pixel centre."""
+        return self.weights()
+
+    def weights(self, index=None) -> np.ndarray:
+        """(len(index), 3) barycentrics at the centres of fragments ``index`` (all if None)."""
+        if index is None:
+            return self.weights_at(self.tri, self.col + 0.5, self.row + 0.5)
+        return self.weights_at(self.tri[index], self.col[index] + 0.5, self.row[index] + 0.5)
+
+    def weights_at(self, tri: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """(len(tri), 3) barycentrics of triangles ``tri`` at points (x, y) in pixels.
+
+        Weight k is E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding;
+        points outside the triangle get negative weights (extrapolation).
+        """
+        lam = np.empty((len(tri), 3))
+        for k, (ax, ay, dx, dy) in enumerate(self._edges):
+            # E(a, b, p) = (b - a).x (p.y - a.y) - (b - a).y (p.x - a.x), for edge a = v_k+1,
+            # b = v_k+2; one gather per per-triangle number (contiguous, cheap).
+            e = dx[tri] * (y - ay[tri])
+            e -= dy[tri] * (x - ax[tri])
+            np.divide(e, self.area2[tri], out=lam[:, k])
+        return lam
+
+    @cached_property
+    def _edges(self) -> tuple[tuple[np.ndarray, ...], ...]:
+        """Per vertex k, the opposite edge a → b as contiguous (n,) arrays: a.x, a.y, dx, dy."""
+        v = self.vertices
+        out = []
+        for k in range(3):
+            a, b = v[:, (k + 1) % 3], v[:, (k + 2) % 3]
+            out.append(tuple(np.ascontiguousarray(c) for c in (a[:, 0], a[:, 1], *(b - a).T)))
+        return tuple(out)
+
+    def plane(self, values: np.ndarray) -> np.ndarray:
+        """(m,) per-vertex ``values`` (n, 3) interpolated affinely at every fragment.
+
+        The plane ``f = f0 + A (x - x0) + B (y - y0)`` of each triangle is set up once
+        (Fatahalian's matrix M, CMU 15-462 *Texture*) and evaluated per fragment, then
+        clamped to the vertex values' range (rounding cannot leave it, so depth stays in
+        [0, 1]). Cheaper than barycentrics when only one quantity, such as depth, is needed.
+        """
+        v, f = self.vertices, np.asarray(values, dtype=np.float64)
+        e1, e2 = v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]
+        d1, d2 = f[:, 1] - f[:, 0], f[:, 2] - f[:, 0]
+        with np.errstate(divide="ignore", invalid="ignore"):  # zero area: no fragments
+            A = (d1 * e2[:, 1] - d2 * e1[:, 1]) / self.area2
+            B = (d2 * e1[:, 0] - d1 * e2[:, 0]) / self.area2
+        t = self.tri
+        out = f[t, 0] + A[t] * (self.col + 0.5 - v[t, 0, 0]) + B[t] * (self.row + 0.5 - v[t, 0, 1])
+        np.clip(out, f.min(axis=1)[t], f.max(axis=1)[t], out=out)
+        return out
 
 
 def _ranges(starts: np.ndarray, stops: np.ndarray):
@@ -56,9 +127,7 @@ def snapped_area2(xy: np.ndarray, subpixel_bits: int | None = SUBPIXEL_BITS) -> 
 
     Positive when clockwise on screen (back-facing), negative when front-facing.
     """
-    v = to_units(xy, subpixel_bits)
-    (ax, ay), (bx, by), (cx, cy) = (v[:, k].T for k in range(3))
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    return np.asarray(setup_edges(np.asarray(xy, dtype=np.float64), subpixel_bits).original_area2)
 
 
 def rasterize_batch(
@@ -84,28 +153,20 @@ def rasterize_batch(
     >>> f.tri.tolist(), f.row.tolist(), f.col.tolist()
     ([0, 1, 1, 1], [0, 0, 1, 1], [0, 1, 0, 1])
     """
-    v = to_units(xy, subpixel_bits)  # (n, 3, 2)
-    unit = units_per_pixel(subpixel_bits)
-    exact = subpixel_bits is not None
-    half = unit // 2 if exact else 0.5
-    area2 = snapped_area2(xy, subpixel_bits)
-    facing = np.sign(area2).astype(np.int8)
-    # Orient every triangle so its inside is on the positive side (swap vertices 1 and 2).
-    perm = np.where((area2 < 0)[:, None], [0, 2, 1], [0, 1, 2])
-    p = np.take_along_axis(v, perm[:, :, None], axis=1)
+    xy = np.asarray(xy, dtype=np.float64).reshape(-1, 3, 2)
+    # The same set-up as tr.rasterize, once for the whole batch: snapping, orientation
+    # (inside on the positive side of every edge) and the top-left classification.
+    setup = setup_edges(xy, subpixel_bits)
+    unit, half, exact = setup.unit, setup.half, setup.exact
+    area2 = np.asarray(setup.original_area2)
+    p = setup.p
     live = area2 != 0
     if skip is not None:
         live &= ~skip
 
     # Raster lines per triangle: centres within the y-range, clipped to the image.
-    ymin, ymax = p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1)
-    if exact:
-        r0, r1 = -((half - ymin) // unit), (ymax - half) // unit
-    else:
-        r0, r1 = np.ceil((ymin - half) / unit), np.floor((ymax - half) / unit)
-    r0 = np.clip(r0, 0, height).astype(np.int64)
-    r1 = np.clip(r1 + 1, 0, height).astype(np.int64)
-    r1 = np.where(live, np.maximum(r1, r0), r0)
+    r0, r1 = centre_ranges(p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1), setup, height)
+    r1 = np.where(live, r1, r0)
     owner, rows = _ranges(r0, r1)
     y = rows * unit + half
     if not exact:
@@ -116,7 +177,7 @@ def rasterize_batch(
     ok = np.ones(len(rows), dtype=bool)
     for k in range(3):
         a, b = p[owner, k], p[owner, (k + 1) % 3]
-        top_left = (b[:, 1] < a[:, 1]) | ((b[:, 1] == a[:, 1]) & (b[:, 0] > a[:, 0]))
+        top_left = setup.top_left[owner, k]
         # Each edge bounds the lines its closed y-range contains (an active edge table).
         active = (y >= np.minimum(a[:, 1], b[:, 1])) & (y <= np.maximum(a[:, 1], b[:, 1]))
         if not exact:  # raw floats: all three tests on every line (see span_tables.fill)
@@ -128,33 +189,21 @@ def rasterize_batch(
         hi = np.where(active, np.minimum(hi, e_hi), hi)
         ok &= ~active | e_ok
     counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
-    within = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
+    # One fragment per covered centre, generated once: column = lo + position in the span.
+    first = np.cumsum(counts) - counts  # where each line's span starts in the flat arrays
+    cols = np.arange(first[-1] + counts[-1] if len(counts) else 0)
+    cols += np.repeat(lo - first, counts)
     tri = np.repeat(owner, counts)
-    cols = np.repeat(lo, counts) + within
-    line_rows, rows = rows, np.repeat(rows, counts)
+    rows = np.repeat(rows, counts)
 
-    # Barycentrics from the exact edge functions, in the caller's vertex order: weight k is
-    # E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding. Along a span E
-    # changes by -dy per unit of x, so it is evaluated once at the span's start and then
-    # stepped (*Triangle Rasterisation II - Interpolation*'s incremental form); on the snapped grid the steps are exact
-    # integers, so this is the same value as evaluating E at every pixel.
-    lam = np.empty((len(tri), 3))
-    src, src_unit, src_half, src_area = v, unit, half, area2
+    # The positions the weights are set up from: the snapped vertices in the caller's order
+    # (the orientation swap is its own inverse), or the unsnapped ones as GPUs do.
+    snapped = np.take_along_axis(p, setup.perm[:, :, None], axis=1) / float(unit)
+    src, src_area = snapped, area2 / float(unit) ** 2
     if not snapped_weights:
-        raw = np.asarray(xy, dtype=np.float64)
-        (px, py), (qx, qy), (rx, ry) = (raw[:, k].T for k in range(3))
+        (px, py), (qx, qy), (rx, ry) = (xy[:, k].T for k in range(3))
         raw_area = (qx - px) * (ry - py) - (qy - py) * (rx - px)
         usable = np.sign(raw_area) == np.sign(area2)
-        src = np.where(usable[:, None, None], raw, v / float(unit))
-        src_area = np.where(usable, raw_area, area2 / float(unit) ** 2)
-        src_unit, src_half = 1.0, 0.5
-    start_x = lo * src_unit + src_half
-    row_y = line_rows * src_unit + src_half
-    area = np.repeat(src_area[owner], counts).astype(np.float64)
-    for k in range(3):
-        a, b = src[owner, (k + 1) % 3], src[owner, (k + 2) % 3]
-        dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-        e_start = dx * (row_y - a[:, 1]) - dy * (start_x - a[:, 0])
-        e = np.repeat(e_start, counts) - np.repeat(dy * src_unit, counts) * within
-        np.divide(e, area, out=lam[:, k])
-    return Fragments(tri=tri, row=rows, col=cols, lam=lam, facing=facing)
+        src = np.where(usable[:, None, None], xy, snapped)
+        src_area = np.where(usable, raw_area, src_area)
+    return Fragments(tri, rows, cols, facing(area2), src, src_area.astype(np.float64))

@@ -71,3 +71,91 @@ def parse_force(force) -> frozenset[str]:
     if unknown:
         raise ValueError(f"force: unknown effect(s) {sorted(unknown)}; choose from {FORCEABLE}")
     return frozenset(names)
+
+
+# -- the words: why each stage ran or was skipped, one function per effect -----------------------
+def clipping_effect(n_in: int, n_depth: int, n_guard: int, n_drop: int, forced: bool) -> Effect:
+    """Clipping: ``n_depth`` triangles cut at near/far, ``n_guard`` only at the guard band,
+    ``n_drop`` dropped whole, of ``n_in`` input triangles."""
+    if n_depth:
+        why = f"{n_depth} triangle(s) cross the near or far plane and were cut in clip space"
+    else:
+        why = "no triangle crosses the near or far plane: nothing to clip"
+    if n_guard:
+        why += (
+            f"; {n_guard} reach far beyond the image and were trimmed at the guard band "
+            "(invisible parts only)"
+        )
+    if n_drop:
+        why += f"; {n_drop} lie wholly outside and were dropped"
+    if forced:
+        why = "every triangle sent through the clipper; " + why
+    n_cut = n_depth + n_guard
+    return Effect("clipping", bool(n_cut) or forced, n_cut, n_in, "triangles", why, forced)
+
+
+def culling_effect(cull: str | None, n_culled: int, total: int) -> Effect:
+    """Culling: ``n_culled`` of ``total`` triangles removed because ``cull`` asked for it."""
+    if cull:
+        why = f"cull={cull!r} asked: {n_culled} {cull}-facing triangle(s) removed"
+    else:
+        why = "not asked (cull=None): both windings are drawn"
+    return Effect("culling", cull is not None, n_culled, total, "triangles", why)
+
+
+def depth_test_effect(depth_test: bool, forced: bool, tested: int, covered: int) -> Effect:
+    """The z-buffer: ``tested`` of ``covered`` pixels received fragments of 2+ triangles.
+
+    ``forced`` means every fragment went through the test (only meaningful with the test on).
+    """
+    if not depth_test:
+        why = "off (depth_test=False): later triangles overwrite earlier ones"
+        tested = 0
+    elif forced:
+        why = "every fragment depth-tested against the buffer"
+    else:
+        why = (
+            f"fragments of 2+ triangles land on {tested:,} pixel(s): tested there; "
+            f"the other {covered - tested:,} covered pixel(s) hold a single fragment"
+        )
+    ran = depth_test and (tested > 0 or forced)
+    return Effect("depth_test", ran, tested, covered, "pixels", why, forced)
+
+
+def perspective_effect(
+    k: int, n_visible: int, n_persp: int, total: int, interpolation: str, forced: bool
+) -> Effect:
+    """The divide by w: ``n_persp`` of the ``n_visible`` visible triangles (of ``total``)
+    have unequal w and were interpolated perspective-correctly (all when ``forced``)."""
+    if k == 0:
+        why = "no attributes given: nothing to interpolate"
+    elif n_visible == 0:
+        why = "no triangle is visible: nothing to interpolate"
+    elif interpolation == "affine":
+        why = "interpolation='affine' asked: screen-space values, no divide by w"
+        n_persp = 0
+    elif forced:
+        why = "divide by w at every pixel, even where all three w are equal"
+    elif n_persp:
+        why = (
+            f"w differs across the vertices of {n_persp} of the {n_visible} visible "
+            "triangle(s): f/w over 1/w there; equal w makes affine interpolation exact elsewhere"
+        )
+    else:
+        why = "every triangle has equal w at its vertices: affine interpolation is exact"
+    count = n_persp if k else 0
+    return Effect("perspective", k > 0 and n_persp > 0, count, total, "triangles", why, forced)
+
+
+def attributes_effect(
+    k: int, n_shaded: int, n_fragments: int, covered: int, forced: bool
+) -> Effect:
+    """Attribute interpolation: ``k`` channels at ``n_shaded`` of ``n_fragments`` fragments
+    (the ``covered`` visible pixels, or every fragment when ``forced``)."""
+    if not k:
+        why = "no attributes given"
+    elif forced:
+        why = f"{k} channel(s) at every fragment, hidden ones included"
+    else:
+        why = f"{k} channel(s) at the {covered:,} visible pixel(s) only, not at hidden fragments"
+    return Effect("attributes", k > 0, n_shaded if k else 0, n_fragments, "fragments", why, forced)

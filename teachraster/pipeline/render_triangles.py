@@ -1,16 +1,17 @@
 """``render``: clip, cull, fill, depth-test and interpolate a list of clip-space triangles.
 
-The pipeline, in order (each stage simulated only where the scene needs it, see
-:mod:`teachraster.pipeline.render_plan`):
+The pipeline, in order, one function of :mod:`teachraster.pipeline.stages` per stage (each
+simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_plan`):
 
 1. homogeneous clipping against near and far (:mod:`teachraster.pipeline.clipping`);
 2. the viewport transform to window coordinates (:mod:`teachraster.pipeline.viewport`);
 3. back- or front-face culling, if asked;
 4. filling every triangle at once (:mod:`teachraster.pipeline.batched_fill`, identical pixels to
    :func:`teachraster.rasterize`);
-5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its stored depth is strictly smaller
-   than the buffer's, so ties keep the earlier triangle; without the depth test later
-   triangles overwrite earlier ones;
+5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its
+   stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
+   without the depth test later triangles overwrite earlier ones
+   (:mod:`teachraster.pipeline.zbuffer`);
 6. perspective-correct interpolation of the attributes, at the visible pixels only.
 """
 
@@ -21,14 +22,19 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.fill import CULL
-from ..core.interpolation import MODES, blend_each, weights_per_row
+from ..core.interpolation import MODES
 from ..core.snapping import SUBPIXEL_BITS, check_bits
 from ..core.validate import as_finite, as_size, check_choice
-from .batched_fill import rasterize_batch, snapped_area2
-from .clipping import CLIPPED, DROPPED, INSIDE, classify, clip_triangles
-from .depth import DEPTH_FORMATS, quantize
-from .render_plan import Effect, Plan, parse_force
-from .viewport import to_window
+from .depth import DEPTH_FORMATS
+from .render_plan import Plan, parse_force
+from .stages import (
+    clip_stage,
+    cull_stage,
+    depth_stage,
+    fill_stage,
+    interpolate_stage,
+    viewport_stage,
+)
 
 
 @dataclass(frozen=True)
@@ -110,19 +116,6 @@ def _check_clip(clip, attrs):
     return clip, arr
 
 
-def _guard(width: int, height: int, bits: int | None) -> float:
-    """NDC guard band G: window |x|, |y| <= (G + 1) * size / 2 stay just inside the range
-    where the fixed-point edge functions are exact (|x| < 2**(29 - bits) px)."""
-    limit_px = 2.0 ** (29 - (bits if bits is not None else 8))
-    guard = 2 * 0.999 * limit_px / max(width, height) - 1.0
-    if guard < 1.0:
-        raise ValueError(
-            f"subpixel_bits: a {width}x{height} image does not fit the exact fixed-point "
-            f"range with {bits} sub-pixel bits; use fewer bits"
-        )
-    return guard
-
-
 def render(
     clip,
     width: int,
@@ -182,206 +175,52 @@ def render(
     check_choice("interpolation", interpolation, MODES)
     subpixel_bits = check_bits(subpixel_bits)
     forced = parse_force(force)
-    n_in, k = len(clip), attrs.shape[2]
-    effects = []
 
-    # 1. clipping, only for triangles a plane cuts
-    clipped = clip_triangles(
-        clip, attrs, guard=_guard(width, height, subpixel_bits), force="clipping" in forced
+    clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
+    window = viewport_stage(clipped, width, height)
+    culled, culling = cull_stage(window, cull, subpixel_bits)
+    frags = fill_stage(window, width, height, subpixel_bits, culled)
+    visible, depth_testing = depth_stage(
+        frags, window, width, height, depth_test, depth_format, forced
     )
-    n_cut = int((clipped.status == CLIPPED).sum())
-    n_drop = int((clipped.status == DROPPED).sum())
-    # Which cuts were the near/far planes, and which only the guard band far off screen.
-    n_guard = int(((clipped.status == CLIPPED) & (classify(clip, None) == INSIDE)).sum())
-    n_depth = n_cut - n_guard
-    why = (
-        f"{n_depth} triangle(s) cross the near or far plane and were cut in clip space"
-        if n_depth
-        else "no triangle crosses the near or far plane: nothing to clip"
+    values, (perspective, attributes) = interpolate_stage(
+        frags, visible, clipped, interpolation, forced
     )
-    if n_guard:
-        why += (
-            f"; {n_guard} reach far beyond the image and were trimmed at the guard band "
-            "(invisible parts only)"
-        )
-    if n_drop:
-        why += f"; {n_drop} lie wholly outside and were dropped"
-    if "clipping" in forced:
-        why = "every triangle sent through the clipper; " + why
-    effects.append(
-        Effect("clipping", bool(n_cut) or "clipping" in forced, n_cut, n_in, "triangles", why,
-               "clipping" in forced)
-    )  # fmt: skip
 
-    # 2. viewport transform (safe: clipping left w > 0)
-    window = to_window(clipped.clip, width, height)
-    w = clipped.clip[:, :, 3]
-    m_tris = len(window)
+    plan = Plan((clipping, culling, depth_testing, perspective, attributes))
+    record = _record(clipped, window, culled, frags, visible) if trace else None
+    return _frame(visible, values, clipped, frags, width, height, plan, record)
 
-    # 3. culling by screen winding (front-facing = counter-clockwise on screen)
-    # Facing is decided on the snapped triangle, the one that is actually filled.
-    signed = snapped_area2(window[:, :, :2], subpixel_bits)
-    culled = np.zeros(m_tris, dtype=bool)
-    if cull == "back":
-        culled = signed > 0
-    elif cull == "front":
-        culled = signed < 0
-    effects.append(
-        Effect(
-            "culling", cull is not None, int(culled.sum()), m_tris, "triangles",
-            f"cull={cull!r} asked: {int(culled.sum())} {cull}-facing triangle(s) removed"
-            if cull else "not asked (cull=None): both windings are drawn",
-        )
-    )  # fmt: skip
 
-    # 4. fill every triangle at once
-    # Coverage on the snapped grid; weights from the unsnapped positions, as GPUs set up
-    # attributes (so the new vertices clipping creates interpolate exactly).
-    frags = rasterize_batch(window[:, :, :2], width, height, subpixel_bits=subpixel_bits,
-                            skip=culled, snapped_weights=False)  # fmt: skip
-    depth = blend_each(frags.lam, window[frags.tri, :, 2:3])[:, 0]
-    depth = quantize(depth, depth_format)
-    pixel = frags.row * width + frags.col
-
-    # 5. visibility (forcing the test means nothing when it is switched off)
-    force_test = "depth_test" in forced and depth_test
-    winner, passed, tested = _resolve(pixel, frags.tri, depth, width * height, depth_test,
-                                      force_test, trace)  # fmt: skip
-    covered = int((winner >= 0).sum())
-    if not depth_test:
-        why = "off (depth_test=False): later triangles overwrite earlier ones"
-        tested = 0
-    elif force_test:
-        why = "every fragment depth-tested against the buffer"
-    else:
-        why = (
-            f"fragments of 2+ triangles land on {tested:,} pixel(s): tested there; "
-            f"the other {covered - tested:,} covered pixel(s) hold a single fragment"
-        )
-    effects.append(
-        Effect("depth_test", depth_test and (tested > 0 or force_test), tested, covered,
-               "pixels", why, force_test)
-    )  # fmt: skip
-
-    # 6. attributes, perspective-correct, at visible pixels only (or every fragment if forced)
-    unequal = ~np.all(w == w[:, :1], axis=1)
-    if interpolation == "affine":
-        unequal[:] = False
-    where = np.flatnonzero(winner >= 0)
-    shade = np.arange(len(frags.tri)) if "attributes" in forced else winner[where]
-    divide_all = "perspective" in forced and interpolation == "perspective"
-    values = _interpolate(frags, shade, w, clipped.attrs, unequal, divide_all)
-    if "attributes" in forced:
-        values = values[winner[where]]
-    # Count the triangles whose visible (or, forced, all) fragments were really divided.
-    shaded_tris = np.unique(frags.tri[shade])
-    n_persp = len(shaded_tris) if divide_all else int(unequal[shaded_tris].sum())
-    if k == 0:
-        why = "no attributes given: nothing to interpolate"
-    elif len(shaded_tris) == 0:
-        why = "no triangle is visible: nothing to interpolate"
-    elif interpolation == "affine":
-        why = "interpolation='affine' asked: screen-space values, no divide by w"
-        n_persp = 0
-    elif divide_all:
-        why = "divide by w at every pixel, even where all three w are equal"
-    elif n_persp:
-        why = (
-            f"w differs across the vertices of {n_persp} of the {len(shaded_tris)} visible "
-            "triangle(s): f/w over 1/w there; equal w makes affine interpolation exact elsewhere"
-        )
-    else:
-        why = "every triangle has equal w at its vertices: affine interpolation is exact"
-    effects.append(
-        Effect("perspective", k > 0 and n_persp > 0, n_persp if k else 0, m_tris, "triangles",
-               why, divide_all)
-    )  # fmt: skip
-    n_shaded = len(shade) if k else 0
-    effects.append(
-        Effect(
-            "attributes", k > 0, n_shaded, len(frags.tri), "fragments",
-            (f"{k} channel(s) at every fragment, hidden ones included" if "attributes" in forced
-             else f"{k} channel(s) at the {covered:,} visible pixel(s) only, not at hidden "
-             "fragments") if k else "no attributes given",
-            "attributes" in forced,
-        )
-    )  # fmt: skip
-
+def _frame(visible, values, clipped, frags, width, height, plan, record) -> Frame:
+    """Scatter the visible pixels' triangle, depth and attributes into (H, W) images."""
+    k = values.shape[1]
     triangle_id = np.full(width * height, -1, dtype=np.int64)
-    triangle_id[where] = clipped.parent[frags.tri[winner[where]]]
-    out_depth = np.full(width * height, np.nan)
-    out_depth[where] = depth[winner[where]]
-    out_attrs = np.full((width * height, k), np.nan)
-    out_attrs[where] = values
-    record = None
-    if trace:
-        record = RenderTrace(
-            clip_status=clipped.status,
-            clip_polygons=clipped.polygons,
-            window=window,
-            parent=clipped.parent,
-            culled=culled,
-            fragment_triangle=clipped.parent[frags.tri],
-            fragment_row=frags.row,
-            fragment_col=frags.col,
-            fragment_depth=depth,
-            fragment_passed=passed,
-        )
+    triangle_id[visible.pixels] = clipped.parent[frags.tri[visible.winner]]
+    depth = np.full(width * height, np.nan)
+    depth[visible.pixels] = visible.depth[visible.winner]
+    attrs = np.full((width * height, k), np.nan)
+    attrs[visible.pixels] = values
     return Frame(
         triangle_id=triangle_id.reshape(height, width),
-        attrs=out_attrs.reshape(height, width, k),
-        depth=out_depth.reshape(height, width),
-        plan=Plan(tuple(effects)),
+        attrs=attrs.reshape(height, width, k),
+        depth=depth.reshape(height, width),
+        plan=plan,
         trace=record,
     )
 
 
-def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
-    """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed."""
-    k = attrs.shape[2]
-    if k == 0 or len(shade) == 0:
-        return np.zeros((len(shade), k))
-    tri = frags.tri[shade]
-    weights = frags.lam[shade].copy()
-    persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
-    if persp.any():  # f/w and 1/w are affine in screen space (Ek, *Triangles and Perspective Correct Interpolation*, eq. 19)
-        weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
-    return blend_each(weights, attrs[tri])
-
-
-def _resolve(pixel, tri, depth, n_pixels, depth_test, force_test, trace):
-    """The z-buffer: winning fragment per pixel (-1 none), pass flags, pixels tested.
-
-    Fragments arrive in drawing order. A pixel reached by one fragment needs no test; where
-    several arrive, the nearest wins (strictly smaller depth, so ties keep the earlier).
-    """
-    count = np.bincount(pixel, minlength=n_pixels)
-    multi = count[pixel] > 1
-    tested = int((count > 1).sum())
-    winner = np.full(n_pixels, -1, dtype=np.int64)
-    single = np.flatnonzero(~multi)
-    winner[pixel[single]] = single
-    passed = np.ones(len(pixel), dtype=bool)
-    idx = np.arange(len(pixel)) if force_test else np.flatnonzero(multi)
-    if len(idx) == 0:
-        return winner, passed, tested
-    # Group the contested fragments by pixel, keeping drawing order within each pixel.
-    order = idx[np.argsort(pixel[idx], kind="stable")]
-    pix = pixel[order]
-    starts = np.flatnonzero(np.r_[True, pix[1:] != pix[:-1]])
-    rank = np.arange(len(order)) - np.repeat(starts, np.diff(np.r_[starts, len(order)]))
-    if not depth_test:  # painter's order: the last fragment drawn wins
-        last = np.r_[starts[1:], len(order)] - 1
-        winner[pix[last]] = order[last]
-        return winner, passed, tested
-    # One layer at a time: layer r holds the r-th fragment of every contested pixel, so
-    # each layer touches a pixel at most once and the buffer update is a plain scatter.
-    buffer = np.full(n_pixels, np.inf)
-    for r in range(int(rank.max()) + 1):
-        layer = order[rank == r]
-        p = pixel[layer]
-        ok = depth[layer] < buffer[p]
-        passed[layer] = ok
-        buffer[p[ok]] = depth[layer[ok]]
-        winner[p[ok]] = layer[ok]
-    return winner, passed, tested
+def _record(clipped, window, culled, frags, visible) -> RenderTrace:
+    """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
+    return RenderTrace(
+        clip_status=clipped.status,
+        clip_polygons=clipped.polygons,
+        window=window,
+        parent=clipped.parent,
+        culled=culled,
+        fragment_triangle=clipped.parent[frags.tri],
+        fragment_row=frags.row,
+        fragment_col=frags.col,
+        fragment_depth=visible.depth,
+        fragment_passed=visible.passed,
+    )
