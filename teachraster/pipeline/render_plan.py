@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: Effects that ``force=`` can switch on everywhere, for comparison.
-FORCEABLE = ("clipping", "perspective", "depth_test", "attributes")
+FORCEABLE = ("clipping", "perspective", "depth_test", "hi_z", "attributes")
 
 
 @dataclass(frozen=True)

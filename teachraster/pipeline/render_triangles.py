@@ -11,7 +11,8 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
-   (:mod:`teachraster.pipeline.zbuffer`);
+   (:mod:`teachraster.pipeline.zbuffer`); where fragments overlap, what early-z and Hi-Z
+   would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
 6. perspective-correct interpolation of the attributes, at the visible pixels only.
 """
 
@@ -26,6 +27,7 @@ from ..core.interpolation import MODES
 from ..core.snapping import SUBPIXEL_BITS, check_bits
 from ..core.validate import as_finite, as_size, check_choice
 from .depth import DEPTH_FORMATS
+from .hierarchical_z import HiZResult, hiz_stage
 from .render_plan import Plan, parse_force
 from .stages import (
     clip_stage,
@@ -58,6 +60,8 @@ class RenderTrace:
         Its depth as the buffer stores it (after ``depth_format`` quantisation).
     fragment_passed : (m,) bool
         Whether it passed the depth test when it arrived (always True without the test).
+    hiz : HiZResult or None
+        Early-z and Hi-Z per block and fragment (None without the depth test).
     """
 
     clip_status: np.ndarray
@@ -70,6 +74,7 @@ class RenderTrace:
     fragment_col: np.ndarray
     fragment_depth: np.ndarray
     fragment_passed: np.ndarray
+    hiz: HiZResult | None = None
 
 
 @dataclass(frozen=True)
@@ -183,12 +188,13 @@ def render(
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
+    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced)
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
 
-    plan = Plan((clipping, culling, depth_testing, perspective, attributes))
-    record = _record(clipped, window, culled, frags, visible) if trace else None
+    plan = Plan((clipping, culling, depth_testing, hi_z, perspective, attributes))
+    record = _record(clipped, window, culled, frags, visible, hiz) if trace else None
     return _frame(visible, values, clipped, frags, width, height, plan, record)
 
 
@@ -210,7 +216,7 @@ def _frame(visible, values, clipped, frags, width, height, plan, record) -> Fram
     )
 
 
-def _record(clipped, window, culled, frags, visible) -> RenderTrace:
+def _record(clipped, window, culled, frags, visible, hiz=None) -> RenderTrace:
     """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
     return RenderTrace(
         clip_status=clipped.status,
@@ -223,4 +229,5 @@ def _record(clipped, window, culled, frags, visible) -> RenderTrace:
         fragment_col=frags.col,
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
+        hiz=hiz,
     )
