@@ -148,3 +148,24 @@ def test_degenerate_triangle_never_raises():
         ex.level.value = 2
     finally:
         ex.close()
+
+
+def test_plot_early_z_counts_per_pixel(ax):
+    from teachraster.pipeline.scenes import get_scene
+
+    clip = get_scene("cube").clip(80 / 60)
+    frame = tr.render(clip, 80, 60, trace=True)
+    c = frame.trace.hiz.counts
+    totals = {k: int(tp.early_z_counts(frame, k).sum()) for k in ("hi_z", "early_z", "shaded")}
+    assert totals == {
+        "hi_z": c["hiz_rejected"],
+        "early_z": c["early_z_killed"],
+        "shaded": c["shaded"],
+    }
+    art = tp.plot_early_z(ax, frame, "shaded")
+    assert f"{c['shaded']:,} fragments shaded" in ax.get_title()
+    assert art.colorbar is not None
+    with pytest.raises(ValueError, match="trace=True"):
+        tp.early_z_counts(tr.render(clip, 80, 60))
+    with pytest.raises(ValueError, match="kind"):
+        tp.early_z_counts(frame, "late_z")

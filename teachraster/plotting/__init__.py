@@ -32,6 +32,8 @@ Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
 - :func:`plot_hierarchy` -- one panel per block size.
 - :func:`plot_block_counters` -- llvmpipe-style counters as a table.
 - :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
+- :func:`plot_early_z` -- per pixel, fragments Hi-Z rejected, early-z killed, or shaded
+  (``tr.render(..., trace=True)``).
 
 Per-pixel values
 ----------------
@@ -101,10 +103,13 @@ from .tiles import (
     BLOCK_COLORS,
     BlockArtists,
     CounterArtists,
+    EarlyZArtists,
     TraversalArtists,
     block_mask,
+    early_z_counts,
     plot_block_counters,
     plot_blocks,
+    plot_early_z,
     plot_hierarchy,
     plot_traversal,
 )
@@ -122,6 +127,7 @@ __all__ = [
     "ComparisonView",
     "CounterArtists",
     "CoverageArtists",
+    "EarlyZArtists",
     "EdgeValueArtists",
     "FillView",
     "GridArtists",
@@ -139,6 +145,7 @@ __all__ = [
     "attribute_image",
     "bailout",
     "block_mask",
+    "early_z_counts",
     "edge_images",
     "format_plan",
     "plot_attribute",
@@ -150,6 +157,7 @@ __all__ = [
     "plot_coverage",
     "plot_current_pixel",
     "plot_depth",
+    "plot_early_z",
     "plot_edge_values",
     "plot_error_heatmap",
     "plot_hierarchy",

@@ -256,3 +256,48 @@ def plot_traversal(
                                         fontsize=fs(0.45), color=ink, zorder=4))  # fmt: skip
     ax.set_title(traversal if traversal != "tiled" else f"tiled ({tile}×{tile})")
     return result
+
+
+#: What :func:`plot_early_z` can count per pixel.
+EARLY_Z_KINDS = ("hi_z", "early_z", "shaded")
+
+
+@dataclass
+class EarlyZArtists(Artists):
+    """The per-pixel count image of a :func:`plot_early_z` and its colour bar."""
+
+    image: object
+    colorbar: object | None = None
+
+
+def early_z_counts(frame, kind: str = "hi_z") -> np.ndarray:
+    """(H, W) int: fragments per pixel that Hi-Z rejected (``"hi_z"``), early-z killed
+    (``"early_z"``) or that were shaded (``"shaded"``), from ``frame.trace.hiz``."""
+    check_choice("kind", kind, EARLY_Z_KINDS)
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "hiz", None) is None:
+        raise ValueError("early_z_counts needs tr.render(..., trace=True) with the depth test on")
+    hiz = trace.hiz
+    rejected, passed = hiz.fragment_rejected, hiz.fragment_passed
+    pick = {"hi_z": rejected, "early_z": ~passed & ~rejected, "shaded": passed}[kind]
+    height, width = frame.triangle_id.shape
+    flat = trace.fragment_row[pick] * width + trace.fragment_col[pick]
+    return np.bincount(flat, minlength=width * height).reshape(height, width)
+
+
+def plot_early_z(ax, frame, kind: str = "hi_z", *, colorbar: bool = True) -> EarlyZArtists:
+    """Per pixel, how many fragments Hi-Z rejected whole, early-z killed, or were shaded.
+
+    Zero is drawn transparent. The title gives the total.
+    """
+    counts = early_z_counts(frame, kind)
+    height, width = counts.shape
+    shown = np.where(counts > 0, counts.astype(float), np.nan)
+    pixel_axes(ax, width, height, ticks=False)
+    im = show_image(ax, shown, cmap=VALUE_CMAP, vmin=0, vmax=max(int(counts.max()), 1))
+    result = EarlyZArtists(im)
+    if colorbar:
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, label="fragments")
+    name = {"hi_z": "rejected by Hi-Z", "early_z": "killed by early-z", "shaded": "shaded"}[kind]
+    ax.set_title(f"{int(counts.sum()):,} fragments {name}")
+    return result
