@@ -169,3 +169,22 @@ def test_plot_early_z_counts_per_pixel(ax):
         tp.early_z_counts(tr.render(clip, 80, 60))
     with pytest.raises(ValueError, match="kind"):
         tp.early_z_counts(frame, "late_z")
+
+
+def test_fill_player_steps_through_blocks():
+    from teachraster.widgets import FillPlayer
+
+    player = FillPlayer(tr.Triangle(XY), 64, 64, method="tiled", backend="image")
+    try:
+        trace = player.trace
+        assert trace.blocks is not None
+        k = trace.first_work_step + 2
+        player.slider.value = k
+        assert player.caption_text == trace.caption(k) and "block" in player.caption_text
+        np.testing.assert_array_equal(
+            np.asarray(player.view.coverage.image.get_array()).astype(bool), trace.coverage_at(k)
+        )
+        player.method.value = "span"
+        assert player.trace.span is not None
+    finally:
+        player.close()
