@@ -188,3 +188,14 @@ def test_fill_player_steps_through_blocks():
         assert player.trace.span is not None
     finally:
         player.close()
+
+
+def test_cli_fill_with_tiles(tmp_path):
+    from teachraster.cli import main
+
+    out = tmp_path / "tiles.png"
+    assert (
+        main(["fill", "--xy", "2.2,1.5 13.7,5.2 5.1,12.8", "--method", "tiled", "-o", str(out)])
+        == 0
+    )
+    assert out.read_bytes().startswith(b"\x89PNG")
