@@ -122,7 +122,7 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
     b_row, b_col = (block_tile // tiles_x) * tile, (block_tile % tiles_x) * tile
     open_pixels = np.bincount(block, weights=~contested, minlength=len(keys))
     tested = np.ones(len(keys), bool) if force else open_pixels == 0
-    arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri)
+    arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri, width * height)
     nearest = np.full(len(keys), np.nan)
     farthest = np.full(len(keys), np.nan)
     idx = np.flatnonzero(tested)
@@ -133,7 +133,9 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
         # at any arrival from below: a block nearer than that somewhere is never rejected,
         # and only the others need the buffer as it was (the costly part).
         final = _final_tile_max(visible, (height, width), tile)[block_tile[idx]]
-        idx = idx[nearest[idx] >= final]
+        ready = arrivals.tile_ready((height, width), tile)[block_tile[idx]]
+        # ... and a tile with a pixel no earlier triangle reached is still open (inf).
+        idx = idx[(nearest[idx] >= final) & (ready < block_tri[idx])]
         farthest[idx] = arrivals.tile_farthest(block_tri[idx], b_row[idx], b_col[idx],
                                                (height, width), tile)  # fmt: skip
     rejected = tested & (nearest >= farthest)
@@ -171,19 +173,33 @@ class _Arrivals:
     """The z-buffer as each fragment found it: fragments grouped by pixel (drawing order
     kept inside a group) with the running minimum of their stored depths."""
 
-    def __init__(self, pixel: np.ndarray, depth: np.ndarray, tri: np.ndarray):
+    def __init__(self, pixel: np.ndarray, depth: np.ndarray, tri: np.ndarray, n_pixels: int):
         m = len(pixel)
-        self.n_tri = int(tri.max()) + 1 if m else 1
         # Fragments come in drawing order (by triangle), so a stable sort by pixel orders
         # each pixel's fragments by triangle.
         order = np.argsort(pixel, kind="stable")
-        self.pix = pixel[order]
-        self.key = self.pix * self.n_tri + tri[order]
-        self.running = _running_min(self.pix, depth[order])
-        first = np.r_[True, self.pix[1:] != self.pix[:-1]] if m else np.zeros(0, bool)
+        self.tri = tri[order]
+        self.count = np.bincount(pixel, minlength=n_pixels)
+        self.start = np.cumsum(self.count) - self.count  # each pixel's first fragment
+        self.running = _running_min(pixel[order], depth[order], int(self.count.max(initial=0)))
+        first = np.zeros(m, dtype=bool)
+        first[self.start[self.count > 0]] = True
         before = np.where(first, np.inf, np.r_[np.inf, self.running[:-1]])
         self.passed = np.empty(m, dtype=bool)  # strictly nearer than all before it
         self.passed[order] = depth[order] < before
+
+    def tile_ready(self, image, tile) -> np.ndarray:
+        """Per tile, the triangle after which every pixel of it holds a depth (the largest
+        first-arriving triangle over its pixels; beyond the last triangle if one stays
+        empty)."""
+        height, width = image
+        ty, tx = -(-height // tile), -(-width // tile)
+        first = np.full((ty * tile, tx * tile), -1, dtype=np.int64)  # beyond the image
+        reached = self.count > 0
+        arrival = np.full(height * width, np.iinfo(np.int64).max, dtype=np.int64)
+        arrival[reached] = self.tri[self.start[reached]]
+        first[:height, :width] = arrival.reshape(height, width)
+        return first.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
 
     def tile_farthest(self, tri, row, col, image, tile) -> np.ndarray:
         """Largest buffer depth over each tile just before triangle ``tri`` arrives (inf
@@ -192,24 +208,27 @@ class _Arrivals:
         dr, dc = np.indices((tile, tile)).reshape(2, -1)
         r, c = row[:, None] + dr, col[:, None] + dc  # (b, tile²) pixels of each tile
         inside = (r < height) & (c < width)
-        p = r * width + c
-        # the last fragment at p from an earlier triangle
-        at = np.searchsorted(self.key, p * self.n_tri + tri[:, None], side="left") - 1
-        at0 = np.maximum(at, 0)
-        ok = (at >= 0) & (self.pix[at0] == p)
-        before = np.where(ok, self.running[at0], np.inf)  # the buffer at arrival
+        p = np.where(inside, r * width + c, 0)
+        start, count = self.start[p], np.where(inside, self.count[p], 0)
+        before = np.full(p.shape, np.inf)  # the buffer at arrival
+        tri = np.broadcast_to(tri[:, None], p.shape)
+        for k in range(int(count.max(initial=0))):  # depth complexity: a few rounds
+            at = np.minimum(start + k, len(self.tri) - 1)
+            earlier = (k < count) & (self.tri[at] < tri)  # fragments of earlier triangles
+            before = np.where(earlier, self.running[at], before)  # running min: the last
         return np.where(inside, before, -np.inf).max(axis=1)
 
 
-def _running_min(group_key: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input)."""
-    m = len(values)
-    if m == 0:
-        return values.copy()
-    uniq, rank = np.unique(values, return_inverse=True)
-    group = np.cumsum(np.r_[False, group_key[1:] != group_key[:-1]])
-    best = np.maximum.accumulate(group * m + (m - 1 - rank))  # later groups always larger
-    return uniq[m - 1 - (best - group * m)]
+def _running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.ndarray:
+    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input) no
+    longer than ``longest``: log2(longest) doubling steps, each one pass over the array."""
+    out = values.copy()
+    step = 1
+    while step < longest:
+        same = group_key[step:] == group_key[:-step]
+        np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
+        step *= 2
+    return out
 
 
 def hiz_effect(result: HiZResult, n_contested: int, forced: bool) -> Effect:
