@@ -59,8 +59,9 @@ class HiZResult:
         Smallest depth the triangle can store in the tile (NaN where not tested).
     tile_farthest : (b,) float64
         The tile's largest stored depth when the triangle arrived (inf: not yet full);
-        NaN where not needed: untested, or nearer than the tile's *final* maximum (the
-        buffer only gets nearer, so such a block can never be rejected).
+        NaN where not needed: untested, nearer than the tile's *final* maximum (the
+        buffer only gets nearer, so such a block can never be rejected), or arriving
+        while a pixel of the tile is still empty (the maximum is then inf).
     fragment_block : (m,) int64
         The block of every fragment.
     fragment_passed : (m,) bool
