@@ -236,10 +236,11 @@ class _Canvas:
     def accept(self, level: _Level) -> None:
         """Mark every accepted block of the level (all its cells at once)."""
         acc = level.kind == ACCEPTED
-        m, d = level.size // self.cell, np.arange(level.size // self.cell)
+        d = np.arange(level.size // self.cell)  # cells along a side of the block
         i0 = (level.row[acc] - self.base[0]) // self.cell
         j0 = (level.col[acc] - self.base[1]) // self.cell
-        self.cells[i0[:, None, None] + d[:, None], j0[:, None, None] + d] = m > 0
+        # Whole blocks, also beyond the image at its border: crop() keeps only the box.
+        self.cells[i0[:, None, None] + d[:, None], j0[:, None, None] + d] = True
 
     def set_pixels(self, rows: np.ndarray, cols: np.ndarray) -> None:
         self.pixels[rows - self.base[0], cols - self.base[1]] = True
