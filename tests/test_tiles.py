@@ -122,6 +122,7 @@ def exact_classification(xy, trace, b, bits=8):
         bias = 0 if top_left(a, c) else 1
         passes.append([e >= bias for e in values])
         extremes.append((max(values), min(values)))
+    exact_classification.crossing = [any(p) and not all(p) for p in passes]
     if any(not any(p) for p in passes):
         return "rejected", extremes
     if all(all(p) for p in passes):
@@ -135,6 +136,7 @@ def check_blocks(xy, width, height, sizes):
     for b in range(len(t)):
         kind, extremes = exact_classification(xy, t, b)
         assert t.kind[b] == kind, (xy.tolist(), b)
+        assert t.crossing[b].tolist() == exact_classification.crossing
         assert [tuple(e) for e in zip(t.e_max[b].tolist(), t.e_min[b].tolist())] == extremes
         r, c = int(t.row[b]), int(t.col[b])
         block = cov[r : r + t.extent[b, 0], c : c + t.extent[b, 1]]

@@ -108,6 +108,9 @@ class TileTrace:
         Covered pixels inside each block.
     rejected_by : (n,) int8
         Position (in test order) of the edge that rejected the block, -1 if not rejected.
+    crossing : (n, 3) bool
+        Edges that include one extreme corner and exclude the other (they cross a
+        block that no edge rejects: what makes it partial).
     sibling : (n, 2) int
         Row and column of each block in the grid of its siblings.
     grids : tuple of (rows, cols)
@@ -133,6 +136,7 @@ class TileTrace:
     counters: BlockCounters
     px2_per_unit2: float
     rejected_by: np.ndarray
+    crossing: np.ndarray
     sibling: np.ndarray
     grids: tuple[tuple[int, int], ...]
 
@@ -205,14 +209,16 @@ class TileTrace:
                 f"every edge passes at its least inside corner ({low}): accepted, "
                 f"{rows * cols} pixels filled with no pixel test"
             )
-        elif self.level[b] < len(self.block_sizes) - 1:
-            child = self.block_sizes[self.level[b] + 1]
-            why = f"an edge crosses it: partial, split into {child}×{child} blocks"
         else:
-            why = (
-                f"an edge crosses it: partial, {rows * cols} pixel tests, "
-                f"{int(self.covered[b])} covered"
-            )
+            names = [n for n, c in zip(name, self.crossing[b]) if c]
+            crossing = " and ".join([", ".join(names[:-1]), names[-1]] if len(names) > 1 else names)
+            verb = "crosses" if self.crossing[b].sum() == 1 else "cross"
+            if self.level[b] < len(self.block_sizes) - 1:
+                child = self.block_sizes[self.level[b] + 1]
+                then = f"split into {child}×{child} blocks"
+            else:
+                then = f"{rows * cols} pixel tests, {int(self.covered[b])} covered"
+            why = f"{crossing} {verb} it: partial, {then}"
         return f"{where}: {why}"
 
 

@@ -67,6 +67,7 @@ class _Level:
     e_max: np.ndarray | None = None
     e_min: np.ndarray | None = None
     rejected_by: np.ndarray | None = None
+    crossing: np.ndarray | None = None
     covered: np.ndarray | None = None
 
 
@@ -201,6 +202,7 @@ def _classify(level: _Level, stepper: _Stepper) -> None:
     accepted = pass_min.all(axis=1) & ~rejected
     level.kind = np.where(rejected, REJECTED, np.where(accepted, ACCEPTED, PARTIAL)).astype(np.int8)
     level.rejected_by = np.where(rejected, np.argmin(pass_max, axis=1), -1).astype(np.int8)
+    level.crossing = pass_max & ~pass_min  # the edge passes one corner and fails another
     level.e_max, level.e_min = e_max, e_min
     level.covered = np.where(accepted, level.extent[:, 0] * level.extent[:, 1], 0)
 
@@ -298,6 +300,7 @@ def _empty_level(size: int, dtype) -> _Level:
     level = _Level(size, none, none, pairs, none, pairs, None, np.zeros(0, np.int8))
     level.e_max = level.e_min = np.zeros((0, 3), dtype)
     level.rejected_by, level.covered = np.zeros(0, np.int8), none
+    level.crossing = np.zeros((0, 3), dtype=bool)
     return level
 
 
@@ -334,6 +337,7 @@ def _trace(levels: list[_Level], sizes, grids, setup: EdgeSetup, counters) -> Ti
         counters=counters,
         px2_per_unit2=setup.pixels_per_unit2(),
         rejected_by=cat("rejected_by").astype(np.int8)[order],
+        crossing=cat("crossing").astype(bool)[order],
         sibling=sibling[order],
         grids=tuple(grids),
     )
@@ -347,8 +351,10 @@ def setup_caption(trace: TileTrace) -> str:
         return f"blocks of {sizes} px: no block to classify (empty box or zero area)"
     rows, cols = trace.grids[0]
     s = trace.block_sizes[0]
+    blocks = f"{top} top-level {s}×{s} blocks ({rows} × {cols}) overlap"
+    if top == 1:
+        blocks = f"one top-level {s}×{s} block overlaps"
     return (
-        f"blocks of {sizes} px: {top} top-level {s}×{s} block{'s' * (top != 1)} ({rows} × {cols}) "
-        "overlap the "
-        "bounding box; each is classified by its corners, partial ones are split"
+        f"blocks of {sizes} px: {blocks} the bounding box; each is classified by its "
+        "corners, partial ones are split"
     )
