@@ -161,11 +161,13 @@ class TileExplorer(Holdable):
         return self.widget._repr_mimebundle_(**kwargs)
 
     def close(self) -> None:
-        """Close every widget of the explorer."""
-        from .player import _close_tree
-
+        """Close every widget of the explorer (depth first)."""
         self.display.close()
-        _close_tree(self.widget)
+        stack = [self.widget]
+        while stack:
+            widget = stack.pop()
+            stack.extend(getattr(widget, "children", ()))
+            widget.close()
 
 
 def _counter_table(counters) -> str:
