@@ -199,3 +199,15 @@ def test_cli_fill_with_tiles(tmp_path):
         == 0
     )
     assert out.read_bytes().startswith(b"\x89PNG")
+
+
+@pytest.mark.parametrize("traversal", TRAVERSALS)
+def test_plot_block_path_follows_the_visit_order(fill, ax, traversal):
+    blocks = fill.trace.blocks
+    art = tp.plot_block_path(ax, fill, traversal, level=1)
+    order = blocks.visit_order(traversal)
+    order = order[blocks.level[order] == 1]
+    x, y = art.path.get_data()
+    np.testing.assert_array_equal(x, blocks.col[order] + blocks.extent[order, 1] / 2)
+    np.testing.assert_array_equal(y, blocks.row[order] + blocks.extent[order, 0] / 2)
+    assert f"{len(order)} blocks of 4×4" in ax.get_title()

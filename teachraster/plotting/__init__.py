@@ -32,6 +32,7 @@ Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
 - :func:`plot_hierarchy` -- one panel per block size.
 - :func:`plot_block_counters` -- llvmpipe-style counters as a table.
 - :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
+- :func:`plot_block_path` -- the walk through one level's blocks in a traversal order.
 - :func:`plot_early_z` -- per pixel, fragments Hi-Z rejected, early-z killed, or shaded
   (``tr.render(..., trace=True)``).
 
@@ -102,12 +103,14 @@ from .style import COLORS, OKABE_ITO, STYLES, use_style
 from .tiles import (
     BLOCK_COLORS,
     BlockArtists,
+    BlockPathArtists,
     CounterArtists,
     EarlyZArtists,
     TraversalArtists,
     block_mask,
     early_z_counts,
     plot_block_counters,
+    plot_block_path,
     plot_blocks,
     plot_early_z,
     plot_hierarchy,
@@ -123,6 +126,7 @@ __all__ = [
     "BBoxArtists",
     "BailoutArtists",
     "BlockArtists",
+    "BlockPathArtists",
     "CentreArtists",
     "ComparisonView",
     "CounterArtists",
@@ -152,6 +156,7 @@ __all__ = [
     "plot_bailout",
     "plot_barycentric",
     "plot_block_counters",
+    "plot_block_path",
     "plot_blocks",
     "plot_bbox",
     "plot_coverage",

@@ -301,3 +301,37 @@ def plot_early_z(ax, frame, kind: str = "hi_z", *, colorbar: bool = True) -> Ear
     name = {"hi_z": "rejected by Hi-Z", "early_z": "killed by early-z", "shaded": "shaded"}[kind]
     ax.set_title(f"{int(counts.sum()):,} fragments {name}")
     return result
+
+
+@dataclass
+class BlockPathArtists(Artists):
+    """The path of a :func:`plot_block_path` and the numbers on its blocks."""
+
+    path: Line2D
+    texts: list = field(default_factory=list)
+
+
+def plot_block_path(
+    ax, fill, traversal: str = "scanline", *, level: int = -1, numbers: bool | None = None
+) -> BlockPathArtists:
+    """Join the centres of one level's blocks in the order the walk visits them.
+
+    The walk is depth first, so the blocks of a level are visited parent by parent; the
+    traversal orders the siblings. ``level`` indexes ``block_sizes`` (default: the smallest).
+    """
+    _, blocks = tile_trace(fill, "plot_block_path")
+    check_choice("traversal", traversal, TRAVERSALS)
+    level = range(len(blocks.block_sizes))[level]
+    order = blocks.visit_order(traversal)
+    order = order[blocks.level[order] == level]
+    x = blocks.col[order] + blocks.extent[order, 1] / 2
+    y = blocks.row[order] + blocks.extent[order, 0] / 2
+    (line,) = ax.plot(x, y, "-", color=COLORS["edge"], lw=lw(0.5), zorder=4)
+    result = BlockPathArtists(line)
+    if numbers if numbers is not None else len(order) <= 64:
+        for n, (u, v) in enumerate(zip(x, y)):
+            result.texts.append(ax.text(u, v, str(n), ha="center", va="center",
+                                        fontsize=fs(0.45), zorder=5))  # fmt: skip
+    size = blocks.block_sizes[level]
+    ax.set_title(f"{traversal}: {len(order)} blocks of {size}×{size}")
+    return result
