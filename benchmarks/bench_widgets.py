@@ -8,13 +8,21 @@ Run from anywhere (the repository root is put on ``sys.path``)::
 
 Measurements (medians of ``--repeat`` changes, after one warm-up, Agg canvas, PNG mode):
 
-1. Step slider: from setting ``FillPlayer.slider.value = k`` to ``fig.canvas.draw()`` having
-   finished, on a 32×32 grid, for span tables and half-planes (steps cycling through the
+1. Step slider: from setting ``FillPlayer.slider.value = k`` to the figure having been drawn
+   (blitted: see ``FillView.redraw``), on a 32×32 grid, for span tables and half-planes (steps cycling through the
    fill). Target: under 30 ms. Shown too: the time until the PNG for the browser is ready.
 2. Vertex: from setting one vertex slider of a ``TriangleEditor`` (32×32) to both figures
    (fill with the split, and the error heatmap) being drawn, re-rasterising included.
    Target: under 100 ms.
 3. For information: a tilt change of the ``TexturedPlaneViewer`` (160×120, two renders).
+4. The tick ratio of issue 8 (machines here differ by 2× from day to day, so a ratio measured
+   in one run): the median over 40 random slider jumps of a 128×128 half-plane
+   ``FillPlayer`` (kernel side, default image display: step logic, Agg drawing and the PNG
+   for the browser included; every displayed PNG must differ from the one before), divided
+   by the median of a full Agg draw of a plain 640×480 figure holding one 128×128 image, the
+   two timed in turn. Target: at most 0.6. The same jumps are timed once more with the full
+   redraw the player used before blitting (``display.draw = None``) for comparison, and
+   under ipympl (its canvas is an Agg canvas: blit and the diff PNG ipympl would send).
 
 Targets are reported as PASS/MISS; the exit status is non-zero only on errors.
 """
@@ -22,6 +30,7 @@ Targets are reported as PASS/MISS; the exit status is non-zero only on errors.
 from __future__ import annotations
 
 import argparse
+import random
 import statistics
 import sys
 import time
@@ -39,6 +48,9 @@ import teachraster as tr  # noqa: E402
 from teachraster.widgets import FillPlayer, TexturedPlaneViewer, TriangleEditor  # noqa: E402
 
 SIZE = 32
+TICK_SIZE = 128
+TICK_JUMPS = 40
+TICK_TARGET = 0.6
 STEP_TARGET_MS = 30.0
 VERTEX_TARGET_MS = 100.0
 #: A triangle over most of the 32×32 grid, with different w (the heatmap has work to do).
@@ -47,19 +59,25 @@ TRI = tr.Triangle([[2.3, 1.7], [29.6, 9.1], [9.2, 30.4]], w=[1.0, 3.0, 6.0],
 
 
 class DrawClock:
-    """Records when the last ``canvas.draw()`` of some figures finished."""
+    """Records when the last drawing of some figure displays finished.
 
-    def __init__(self, *figs) -> None:
+    A display draws with its ``draw`` (a view's blitting redraw) or ``fig.canvas.draw``.
+    """
+
+    def __init__(self, *displays) -> None:
         self.done = 0.0
-        for fig in figs:
-            canvas = fig.canvas
-            draw = canvas.draw
+        for display in displays:
+            draw = display.draw or display.fig.canvas.draw
 
             def timed(*args, _draw=draw, **kwargs):
-                _draw(*args, **kwargs)
+                result = _draw(*args, **kwargs)
                 self.done = time.perf_counter()
+                return result
 
-            canvas.draw = timed
+            if display.draw is None:
+                display.fig.canvas.draw = timed
+            else:
+                display.draw = timed
 
 
 def time_changes(set_value, values, clock: DrawClock) -> tuple[list[float], list[float]]:
@@ -80,7 +98,7 @@ def verdict(ms: float, target: float) -> str:
 
 def bench_steps(method: str, repeat: int) -> tuple[float, float, int]:
     player = FillPlayer(TRI, SIZE, SIZE, method=method, backend="image")
-    clock = DrawClock(player.fig)
+    clock = DrawClock(player.display)
     n = player.slider.max + 1
     # every step kind (set-up, work, interpolation), spread over the whole fill
     values = [(i * 7 + 1) % n for i in range(repeat + 1)]
@@ -95,7 +113,7 @@ def bench_steps(method: str, repeat: int) -> tuple[float, float, int]:
 
 def bench_vertex(repeat: int) -> tuple[float, float]:
     editor = TriangleEditor(TRI, SIZE, SIZE, backend="image")
-    clock = DrawClock(editor.fig, editor.interp_view.fig)
+    clock = DrawClock(editor.display, editor.interp_display)
     xs = [20.0 + 8.0 * ((i * 37) % 100) / 100 for i in range(repeat + 1)]
 
     def set_x(x):
@@ -108,7 +126,7 @@ def bench_vertex(repeat: int) -> tuple[float, float]:
 
 def bench_tilt(repeat: int) -> tuple[float, float]:
     viewer = TexturedPlaneViewer(160, 120, tilt=10.0, backend="image")
-    clock = DrawClock(viewer.fig)
+    clock = DrawClock(viewer.display)
     tilts = [5.0 + (i * 13) % 85 for i in range(repeat + 1)]
 
     def set_tilt(t):
@@ -117,6 +135,92 @@ def bench_tilt(repeat: int) -> tuple[float, float]:
     drawn, total = time_changes(set_tilt, tilts, clock)
     viewer.close()
     return statistics.median(drawn[1:]), statistics.median(total[1:])
+
+
+def reference_figure():
+    """A plain 640×480 Agg figure holding one 128×128 image: the yardstick of a full draw."""
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.4, 4.8), dpi=100)
+    FigureCanvasAgg(fig)
+    fig.add_subplot().imshow(np.random.default_rng(0).random((128, 128)))
+    return fig
+
+
+def tick_player(backend: str):
+    """The 128×128 half-plane FillPlayer of the tick ratio (tens of thousands of steps)."""
+    s = TICK_SIZE / SIZE
+    tri = tr.Triangle(TRI.xy * s, w=TRI.w, attrs=dict(TRI.attrs))
+    return FillPlayer(tri, TICK_SIZE, TICK_SIZE, method="halfplane", backend=backend)
+
+
+def bench_tick_ratio(jumps: int = TICK_JUMPS, *, path: str = "blit", seed: int = 8) -> dict:
+    """Median ms of a random slider jump and of the reference draw, timed in turn.
+
+    ``path``: ``"blit"`` (the player as it is), ``"full"`` (a full Agg redraw per tick, as
+    before blitting) or ``"ipympl"`` (ipympl canvas: blit plus the PNG of the changed pixels
+    it sends to the browser, caught here instead of sent).
+    """
+    player = tick_player("ipympl" if path == "ipympl" else "image")
+    canvas = player.fig.canvas
+    if path == "ipympl":
+        # As once a browser shows the canvas: ipympl then stops re-encoding every frame as a
+        # data URL, and sends each frame's changed pixels, encoded in refresh (canvas.blit).
+        canvas.syncing_data_url = False
+        sent = []
+        canvas.send_binary = sent.append
+    if path == "full":
+        player.display.draw = None  # FigureDisplay then calls fig.canvas.draw()
+    ref = reference_figure()
+    ref.canvas.draw()  # warm-up of both
+    rng = random.Random(seed)
+    n = player.slider.max + 1
+    ticks, refs, unchanged = [], [], 0
+    last = None
+    for i in range(jumps + 1):
+        k = rng.randrange(n)
+        if k == player.slider.value:
+            k = (k + 1) % n
+        t0 = time.perf_counter()
+        player.slider.value = k
+        # ipympl: the frame sent for this tick (None when none was sent)
+        png = (sent.pop() if sent else None) if path == "ipympl" else player.display.widget.value
+        t1 = time.perf_counter()
+        ref.canvas.draw()
+        t2 = time.perf_counter()
+        if i:  # the first jump is the warm-up
+            ticks.append((t1 - t0) * 1e3)
+            refs.append((t2 - t1) * 1e3)
+            unchanged += png is None or png == last
+        last = png
+    player.close()
+    tick, draw = statistics.median(ticks), statistics.median(refs)
+    return {"tick": tick, "reference": draw, "ratio": tick / draw, "unchanged": unchanged,
+            "steps": n}  # fmt: skip
+
+
+def print_tick_ratios(jumps: int) -> None:
+    print(f"\ntick ratio: median of {jumps} random slider jumps, {TICK_SIZE}x{TICK_SIZE} "
+          "half-plane FillPlayer / full Agg draw of a 640x480 figure with one 128x128 image")  # fmt: skip
+    print(f"{'path':<44}{'tick':>10}{'reference':>11}{'ratio':>8}  target")
+    paths = [("blit", "image display: blit + fast PNG"),
+             ("full", "image display: full redraw + fast PNG"),
+             ("ipympl", "ipympl canvas: blit + diff PNG")]  # fmt: skip
+    try:
+        import ipympl  # noqa: F401
+    except ImportError:
+        paths = paths[:2]
+    for path, label in paths:
+        r = bench_tick_ratio(jumps, path=path)
+        note = f"<= {TICK_TARGET} {verdict(r['ratio'], TICK_TARGET + 1e-12)}"
+        if path != "blit":
+            note = "(comparison)" if path == "full" else note
+        if r["unchanged"]:
+            note += f"  ({r['unchanged']} displayed PNGs did not change!)"
+        print(f"{label:<44}{r['tick']:>8.1f}ms{r['reference']:>9.1f}ms{r['ratio']:>8.2f}  "
+              f"{note}")  # fmt: skip
 
 
 def main(argv=None) -> int:
@@ -140,7 +244,8 @@ def main(argv=None) -> int:
     drawn, total = bench_tilt(repeat)
     label = "tilt slider, textured plane (160x120)"
     print(f"{label:<44}{drawn:>8.1f}ms{total:>8.1f}ms  (information)")
-    print("drawn: until fig.canvas.draw() finished; + PNG: until the PNG for the browser is set")
+    print("drawn: until the figure was drawn; + PNG: until the PNG for the browser is set")
+    print_tick_ratios(5 if args.quick else TICK_JUMPS)
     return 0
 
 

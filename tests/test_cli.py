@@ -20,7 +20,7 @@ import pytest  # noqa: E402
 from PIL import Image  # noqa: E402
 
 import teachraster as tr  # noqa: E402
-from teachraster.cli import commands as cli  # noqa: E402
+from teachraster import cli  # noqa: E402
 from teachraster.pipeline.scenes import SCENES  # noqa: E402
 from teachraster.plotting import FillView  # noqa: E402
 from teachraster.study.hardcases import CASES  # noqa: E402
@@ -381,7 +381,7 @@ def test_write_failure_is_one_line_not_a_traceback(tmp_path, capsys):
 
 # -- MP4 -------------------------------------------------------------------------------------
 def test_mp4_without_ffmpeg_says_install_it_or_use_gif(tmp_path, capsys, monkeypatch):
-    monkeypatch.setattr(cli, "ffmpeg_available", lambda: False)
+    monkeypatch.setattr(cli.run, "ffmpeg_available", lambda: False)
     out = tmp_path / "a.mp4"
     with pytest.raises(SystemExit) as exc:
         cli.main(["fill", "--xy", XY, "-o", str(out)])

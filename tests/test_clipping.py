@@ -370,3 +370,25 @@ def test_a_vertex_a_hair_in_front_of_the_eye_is_kept(w0):
     plain = tr.render([[[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]]], 16, 16)
     np.testing.assert_array_equal(near_eye.triangle_id, plain.triangle_id)
     assert near_eye.plan["clipping"].count == 0
+
+
+def test_clip_polygon_steps_record_each_plane_and_end_at_clip_polygon():
+    from teachraster.pipeline.clipping import PLANE_NAMES, clip_polygon, clip_polygon_steps
+
+    rng = np.random.default_rng(7)
+    for _ in range(50):
+        tri = np.column_stack([rng.uniform(-2, 2, (3, 3)), rng.uniform(-1, 3, (3, 1))])
+        attrs = rng.uniform(0, 1, (3, 2))
+        steps = clip_polygon_steps(tri, attrs, guard=4.0)
+        poly, pattrs = clip_polygon(tri, attrs, guard=4.0)
+        assert [s.plane for s in steps] == list(PLANE_NAMES[: len(steps)])
+        assert np.array_equal(steps[-1].polygon, poly) and np.array_equal(steps[-1].attrs, pattrs)
+        before = tri
+        for s in steps:
+            assert len(s.distances) == len(before) and len(s.new) == len(s.polygon)
+            # kept vertices are the inside ones of the polygon before, in order
+            assert np.array_equal(s.polygon[~s.new], before[s.distances >= 0])
+            before = s.polygon
+        # every new vertex of the near step lies on z = -w
+        near = steps[0]
+        assert np.allclose(near.polygon[near.new, 2], -near.polygon[near.new, 3])

@@ -9,6 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import teachraster as tr
 from teachraster.pipeline.depth import (
     DEPTH_FORMATS,
     depth_resolution,
@@ -271,3 +272,75 @@ def test_linear_mapping_allows_an_orthographic_near_plane():
     assert linear_depth(0.0, 0.0, 10.0) == 0.0
     assert depth_resolution(-1.0, -2.0, 10.0, "unorm16", mapping="linear") > 0
     assert not fights(-1.0, 1.0, -2.0, 10.0, "unorm16", mapping="linear")
+
+
+# -- reverse-Z and depth bias (lesson 05b) -----------------------------------------------------
+def test_reversed_depth_is_one_minus_window_depth_without_the_cancellation():
+    from teachraster.pipeline.depth import reversed_depth
+
+    z = np.geomspace(0.1, 1000.0, 50)
+    rev = reversed_depth(z, 0.1, 1000.0)
+    assert np.allclose(rev, 1 - tr.window_depth(z, 0.1, 1000.0), atol=1e-12)
+    assert rev[0] == 1.0 and rev[-1] == 0.0 and (np.diff(rev) < 0).all()
+    # far away the small value keeps its relative precision, which 1 - d loses
+    exact = (0.1 / 900.0 - 0.1 / 1000.0) / (1 - 0.1 / 1000.0)
+    assert abs(reversed_depth(900.0, 0.1, 1000.0) - exact) < 1e-16 * exact * 10
+
+
+def test_reversed_float32_resolves_what_window_float32_cannot():
+    near, far, z = 0.1, 1000.0, np.array([100.0, 300.0, 900.0])
+    win = tr.depth_resolution(z, near, far, "float32")
+    rev = tr.depth_resolution(z, near, far, "float32", mapping="reversed")
+    assert (rev < win / 100).all()
+    # nearly proportional to z (float32's relative step), not z**2
+    assert 2 < rev[1] / rev[0] < 4.5 and 8 < win[1] / win[0] < 10
+    a, b = z[1:], z[1:] + 0.005
+    assert tr.fights(a, b, near, far, "float32").all()
+    assert not tr.fights(a, b, near, far, "float32", mapping="reversed").any()
+    # unorm has an even step: reversing it gains nothing
+    assert np.allclose(
+        tr.depth_resolution(z, near, far, "unorm24", mapping="reversed"),
+        tr.depth_resolution(z, near, far, "unorm24"),
+    )
+
+
+def test_reversed_fights_uses_greater_is_nearer():
+    # two well separated surfaces never "fight", whichever mapping stores them
+    assert not tr.fights([1.0], [2.0], 0.1, 10.0, "float32", mapping="reversed").any()
+
+
+def test_depth_bias_and_slope():
+    from teachraster.pipeline.depth import depth_bias, max_depth_slope, offset_clip_depth
+
+    assert np.isclose(depth_bias(0.3, "unorm24", units=2.0), 2 / (2**24 - 1))
+    assert depth_bias(0.5, "float32", units=1.0) == np.spacing(np.float32(0.5))
+    assert np.isclose(depth_bias(0.5, "float64", units=0.0, slope=0.02, slope_factor=1.5), 0.03)
+    tri = np.array([[[0, 0, 0.5], [8, 0, 0.5], [0, 4, 0.9]], [[0, 0, 0], [1, 1, 0], [2, 2, 0]]])
+    slopes = max_depth_slope(tri)
+    assert np.isclose(slopes[0], 0.1) and np.isnan(slopes[1])
+    clip = np.array([[[0.0, 0.0, 0.2, 1.0], [0.5, 0.0, -0.4, 2.0], [0.0, 0.5, 0.1, 3.0]]])
+    moved = offset_clip_depth(clip, -0.01)
+    before = clip[..., 2] / clip[..., 3] / 2 + 0.5
+    after = moved[..., 2] / moved[..., 3] / 2 + 0.5
+    assert np.allclose(after - before, -0.01) and np.array_equal(
+        moved[..., [0, 1, 3]], clip[..., [0, 1, 3]]
+    )
+    with pytest.raises(ValueError, match="depth_format"):
+        depth_bias(0.5, "unorm8")
+    with pytest.raises(ValueError, match="clip"):
+        offset_clip_depth(np.zeros((3, 4)), 0.1)
+
+
+def test_decal_with_depth_bias_wins_the_depth_test():
+    from teachraster.pipeline.depth import depth_bias, offset_clip_depth
+
+    # A wall and a decal on it (the same plane), the decal drawn second: without a bias
+    # the tie keeps the wall; one unit of bias gives every decal pixel to the decal.
+    wall = np.array([[[-1, -1, 0.3, 1], [3, -1, 0.3, 1], [-1, 3, 0.3, 1]]], dtype=float)
+    decal = wall.copy()
+    plain = tr.render(np.concatenate([wall, decal]), 8, 8, depth_format="unorm16")
+    assert (plain.triangle_id == 0).all()
+    bias = depth_bias(0.65, "unorm16", units=1.0)
+    biased = tr.render(np.concatenate([wall, offset_clip_depth(decal, -bias)]), 8, 8,
+                       depth_format="unorm16")  # fmt: skip
+    assert (biased.triangle_id == 1).all()

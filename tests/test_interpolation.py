@@ -288,7 +288,7 @@ def test_plane_equation_agrees_with_affine_interpolation(method):
 
 
 def test_plane_equation_coefficients():
-    """Seed 002: C is twice the signed area (shared by all attributes); dx = -A/C, dy = -B/C
+    """The post *Triangle Rasterisation II - Interpolation*: C is twice the signed area (shared by all attributes); dx = -A/C, dy = -B/C
     are the per-pixel and per-row steps."""
     rng = np.random.default_rng(14)
     for _ in range(50):
@@ -325,7 +325,7 @@ def test_stepped_plane_approximates_direct_evaluation(k):
 
 
 def test_setup_matrix_inverts_the_edge_matrix():
-    """Seed 004: M = inverse of [[b - a], [c - a]], so M @ [[b - a], [c - a]] = I."""
+    """Fatahalian (CMU 15-462, *Texture*): M = inverse of [[b - a], [c - a]], so M @ [[b - a], [c - a]] = I."""
     rng = np.random.default_rng(16)
     for _ in range(50):
         xy = rng.uniform(-30, 30, (3, 2))
@@ -374,7 +374,7 @@ def _exact_plane_value(xy, f, p) -> Fraction:
 
 
 def test_recentred_plane_is_accurate_far_from_the_origin():
-    """Seed 004: "greater precision near the origin". At ~1e7 px the plane recentred at vertex a
+    """Fatahalian (CMU 15-462, *Texture*): "greater precision near the origin". At ~1e7 px the plane recentred at vertex a
     stays accurate (error < 1e-9) and is never worse than *Triangle Rasterisation II - Interpolation*'s absolute-coordinate plane,
     which loses digits to cancellation (compared against Fraction-exact values)."""
     rng = np.random.default_rng(18)

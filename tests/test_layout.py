@@ -129,7 +129,6 @@ def test_no_function_longer_than_100_lines():
     assert not long, long
 
 
-@pytest.mark.xfail(strict=True, reason="issue 8: plotting/widgets/cli private helpers")
 def test_no_private_names_imported_across_modules():
     wrong = []
     for path, module in _modules():

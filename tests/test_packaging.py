@@ -11,8 +11,14 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 NOTEBOOK_DIR = ROOT / "notebooks"
-NOTEBOOKS = sorted(NOTEBOOK_DIR.glob("*.ipynb"))
-NB_IDS = [nb.name for nb in NOTEBOOKS]
+LESSONS = sorted(NOTEBOOK_DIR.glob("*.ipynb"))
+LESSON_IDS = [nb.name for nb in LESSONS]
+#: Exercise notebooks (teacher versions, issue 10); their student versions are generated.
+EXERCISES = sorted((NOTEBOOK_DIR / "exercises").glob("*.ipynb"))
+#: Every committed notebook under notebooks/: lessons and exercises.
+NOTEBOOKS = LESSONS + EXERCISES
+NB_IDS = [str(nb.relative_to(NOTEBOOK_DIR)) for nb in NOTEBOOKS]
+EX_IDS = [nb.name for nb in EXERCISES]
 
 
 def test_core_import_does_not_pull_in_plotting_or_widgets():
@@ -27,13 +33,15 @@ def test_core_import_does_not_pull_in_plotting_or_widgets():
     assert out.stdout.strip() == "[]", f"import teachraster loaded {out.stdout.strip()}"
 
 
-#: The lessons: issue 4's eight (00 tour, then one per topic of the seeds), and 10 (tiles).
-CURRICULUM = [f"{i:02d}_" for i in range(8)] + ["10_"]
+#: The lessons by number: issue 4's 00 tour and one per topic of the notes, lesson 05 split by
+#: issue 10 into 05a (the z-buffer, clipping) and 05b (depth precision); 10 tiles (issue 13).
+CURRICULUM = ["00", "01", "02", "03", "04", "05a", "05b", "06", "07", "10"]
 
 
 def test_every_lesson_of_the_curriculum_is_there():
-    prefixes = sorted(name[:3] for name in NB_IDS)
-    assert prefixes == CURRICULUM, NB_IDS
+    """Every lesson of CURRICULUM, and nothing else, is a notebook ``<number>_<topic>.ipynb``."""
+    prefixes = sorted(name.split("_")[0] for name in LESSON_IDS)
+    assert prefixes == CURRICULUM, LESSON_IDS
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=NB_IDS)
@@ -52,19 +60,86 @@ def test_notebook_is_committed_clean(path):
     )
 
 
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=NB_IDS)
-def test_notebook_runs_headless(path, monkeypatch):
+def execute(nb, cwd: Path):
+    """Run every cell of ``nb`` in a fresh python3 kernel; raise on the first failing cell."""
     from nbclient import NotebookClient
 
-    monkeypatch.setenv("MPLBACKEND", "Agg")  # the kernel inherits this environment
-    nb = nbformat.read(path, as_version=4)
     client = NotebookClient(
-        nb,
-        timeout=300,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
+        nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": str(cwd)}}
     )
     client.execute()  # raises CellExecutionError, with the traceback, if any cell fails
+    return nb
+
+
+# exercise notebooks run in test_exercise_teacher_version_passes_and_draws_every_check
+@pytest.mark.parametrize("path", LESSONS, ids=LESSON_IDS)
+def test_notebook_runs_headless(path, monkeypatch):
+    monkeypatch.setenv("MPLBACKEND", "Agg")  # the kernel inherits this environment
+    execute(nbformat.read(path, as_version=4), path.parent)
+
+
+def _streams(nb) -> str:
+    return "".join(
+        out.get("text", "")
+        for cell in nb.cells
+        if cell.cell_type == "code"
+        for out in cell.outputs
+        if out.get("output_type") == "stream"
+    )
+
+
+def _figures(nb) -> int:
+    return sum(
+        "image/png" in out.get("data", {})
+        for cell in nb.cells
+        if cell.cell_type == "code"
+        for out in cell.outputs
+    )
+
+
+def _solution_cells(nb) -> list[int]:
+    return [i for i, c in enumerate(nb.cells) if "### BEGIN SOLUTION" in c.source]
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
+def test_exercise_notebook_has_nbgrader_solutions_each_followed_by_a_check(path):
+    nb = nbformat.read(path, as_version=4)
+    solutions = _solution_cells(nb)
+    assert solutions, f"{path.name} has no ### BEGIN SOLUTION region"
+    for i in solutions:
+        assert "### END SOLUTION" in nb.cells[i].source
+        assert nb.cells[i].metadata["nbgrader"]["solution"] is True
+        check = nb.cells[i + 1].source
+        assert check.startswith("show(ex.check("), f"cell {i + 1} should check cell {i}"
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
+def test_exercise_teacher_version_passes_and_draws_every_check(path, monkeypatch):
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    nb = execute(nbformat.read(path, as_version=4), path.parent)
+    n = len(_solution_cells(nb))
+    text = _streams(nb)
+    assert text.count("cases pass") == n and " fail" not in text, text
+    assert _figures(nb) == n  # each check shows its report as a figure too
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
+def test_exercise_student_version_runs_and_says_not_implemented(path, tmp_path, monkeypatch):
+    from teachraster.cli import main
+
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    assert main(["student-version", str(path), "-o", str(tmp_path)]) == 0
+    student = nbformat.read(tmp_path / path.name, as_version=4)
+    assert "### BEGIN SOLUTION" not in "".join(c.source for c in student.cells)
+    assert "raise NotImplementedError()" in "".join(c.source for c in student.cells)
+    execute(student, tmp_path)  # top to bottom, no cell raises
+    n = len(_solution_cells(nbformat.read(path, as_version=4)))
+    text = _streams(student)
+    assert text.count("not implemented yet") == n, text
+    assert "Traceback" not in text
+    errors = [o for c in student.cells for o in c.get("outputs", []) if o.output_type == "error"]
+    assert not errors
+    assert _figures(student) == n
 
 
 def quick_start_commands():

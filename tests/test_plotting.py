@@ -76,8 +76,7 @@ def test_every_name_in_all_exists():
 # -- each plot function ------------------------------------------------------------------------
 def _calls(fill):
     t = fill.trace
-    kinds = [k for k, _ in t.setup]
-    split_step = kinds.index("split") if "split" in kinds else 0
+    split_step = t.split_step or 0
     row_step = t.first_work_step
     return {
         "grid": lambda ax: tp.plot_pixel_grid(ax, W, H),
@@ -511,3 +510,104 @@ def test_labels_of_far_away_vertices_are_not_drawn():
     renderer = fig.canvas.get_renderer()
     assert [a._check_xy(renderer) for a in result.labels] == [False, False, True]
     plt.close(fig)
+
+
+# -- one resolve per tick, blitting ------------------------------------------------------------
+@pytest.mark.parametrize("method", METHODS)
+def test_a_step_is_resolved_once_per_tick(method, monkeypatch):
+    """FillView.show_step asks the trace for the step once and hands it to the artists."""
+    view = tp.FillView(make_fill(method), step=0)
+    calls = []
+    real = type(view.trace).step
+
+    def counting(self, k):
+        calls.append(k)
+        return real(self, k)
+
+    monkeypatch.setattr(type(view.trace), "step", counting)
+    for k in (3, view.trace.first_work_step + 2, -1, 0):
+        calls.clear()
+        view.show_step(k, draw=False)
+        view.redraw()
+        assert len(calls) == 1, calls
+
+
+def rendered(fig):
+    return np.asarray(fig.canvas.buffer_rgba()).astype(int)
+
+
+@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("size", [16, 40])
+def test_blitted_steps_equal_a_full_redraw(method, size):
+    """redraw() (background, still layers, moving artists) matches fig.canvas.draw()."""
+    s = size / W
+    xy = np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)]) * s
+    fill = make_fill(method, xy=xy, size=(size, size))
+    view = tp.FillView(fill, step=0, legend=True)
+    n = len(fill.trace)
+    steps = [0, 2, fill.trace.first_work_step, n // 3, n // 2, n // 2 + 1, n - 2, n - 1, 5]
+    full_draws = []
+    for k in steps:
+        view.show_step(k, draw=False)
+        full_draws.append(view.redraw())
+        fast = rendered(view.fig)
+        view.fig.canvas.draw()
+        diff = np.abs(fast - rendered(view.fig)).max(axis=-1)
+        # the same picture; compositing the layers rounds anti-aliased edges by a few levels
+        assert diff.max() <= 8, (k, diff.max())
+        assert (diff > 0).mean() < 0.5
+    # whole draws only when the still artists change: first, bbox found, split found
+    assert full_draws[0] and sum(full_draws) <= 3 + (method == "span")
+    assert not view.redraw()  # nothing changed: blitted
+
+
+def test_set_fill_invalidates_the_blit_cache():
+    view = tp.FillView(make_fill("span"), step=-1)
+    assert view.redraw() and not view.redraw()
+    view.set_fill(make_fill("halfplane"), draw=False)
+    assert view.redraw()
+    fast = rendered(view.fig)
+    view.fig.canvas.draw()
+    assert np.abs(fast - rendered(view.fig)).max() <= 8
+
+
+def test_layered_blit_rejects_unknown_kinds():
+    from teachraster.plotting.blitting import LayeredBlit
+
+    fig, ax = plt.subplots()
+    with pytest.raises(ValueError, match="moving"):
+        LayeredBlit(fig, [("static", [])])
+
+
+def test_artists_update_from_a_step():
+    fill = make_fill("span")
+    t = fill.trace
+    fig, ax = plt.subplots()
+    line = tp.plot_raster_line(ax, fill, 0)
+    assert not line.band.get_visible()
+    step = t.step(t.first_work_step + 4)
+    line.update(step)
+    assert line.band.get_visible() and line.band.get_y() == step.row
+    start, stop = step.columns
+    assert line.cells.get_x() == start and line.cells.get_width() == stop - start
+    pixel = tp.plot_current_pixel(ax, make_fill("halfplane"), 0)
+    pixel.update(make_fill("halfplane").trace.step(9))
+    assert pixel.box.get_visible()
+    pixel.update(step)  # a row step: no pixel to show
+    assert not pixel.box.get_visible()
+
+
+def test_interpolation_view_highlights_the_mode_in_use():
+    view = tp.InterpolationView(make_fill(), "u")
+    assert view.in_use is None
+    view.highlight("affine")
+    affine, persp = view.in_use
+    assert affine.get_visible() and not persp.get_visible()
+    assert view.images[1].image.get_alpha() < 1.0 == view.images[0].image.get_alpha()
+    n = len(view.axes[0].get_children())
+    view.highlight("perspective")
+    assert persp.get_visible() and not affine.get_visible()
+    view.highlight(None)
+    assert not (affine.get_visible() or persp.get_visible())
+    assert view.images[0].image.get_alpha() == view.images[1].image.get_alpha() == 1.0
+    assert len(view.axes[0].get_children()) == n  # the same notes, reused

@@ -399,3 +399,108 @@ def test_subdivided_interpolation_is_traced_and_captioned():
         assert "every 4th pixel" in t.caption(-1)
     plain = tr.rasterize(tri, 16, 16, trace=True).trace
     assert plain.subdivision is None and plain.pixel_subdivided is None
+
+
+# -- the step table's accessors ---------------------------------------------------------------
+@pytest.mark.parametrize("method", METHODS)
+def test_step_numbers_come_from_the_trace(method):
+    """bbox_step, split_step, first_work_step, interpolation_step name the step kinds."""
+    for tri in cases(11, 4):
+        t = traced(tri, method).trace
+        kinds = [s.kind for s in t]
+        assert kinds[t.bbox_step] == "bbox"
+        if method == "span":
+            assert kinds[t.split_step] == "split" and t.split_step < t.first_work_step
+        else:
+            assert t.split_step is None and "split" not in kinds
+        assert t.first_work_step == len(t.setup_kinds) == len(t.setup)
+        assert kinds[t.interpolation_step] == "interpolate"
+        assert t.index(-1) == t.interpolation_step == len(t) - 1
+        assert [caption for _, caption in t.setup] == [t.caption(k) for k in range(len(t.setup))]
+        with pytest.raises(IndexError):
+            t.index(len(t))
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_visit_step_numbers_every_pixel_the_fill_reaches(method):
+    for tri in cases(12, 4):
+        fill = traced(tri, method)
+        t, b = fill.trace, fill.trace.bbox
+        v = t.visit_step
+        assert v.shape == b.shape
+        if method == "halfplane" and not t.culled:
+            expected = t.first_work_step + np.arange(b.size).reshape(b.shape)
+            np.testing.assert_array_equal(v, expected)
+        else:  # span tables reach the covered pixels, at the step of their raster line
+            np.testing.assert_array_equal(v >= 0, t.covered)
+        np.testing.assert_array_equal(t.filled_at, np.where(t.covered, v, -1))
+        for row, col in [(b.row0, b.col0), (b.row1 - 1, b.col1 - 1), (-1, 0), (0, W)]:
+            inside = b.row0 <= row < b.row1 and b.col0 <= col < b.col1
+            expected = int(v[row - b.row0, col - b.col0]) if inside else -1
+            assert t.visit_step_of(row, col) == expected
+        rows, cols = t.visit_order()
+        steps = [t.visit_step_of(r, c) for r, c in zip(rows, cols)]
+        assert steps == sorted(steps) and len(steps) == int((v >= 0).sum())
+        for k in (t.first_work_step, len(t) // 2, len(t) - 1):
+            if t.step(k).kind == "pixel":  # the pixel a step tests is its visit step's
+                s = t.step(k)
+                assert t.visit_step_of(s.row, s.col) == k
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_rejected_at_is_what_half_planes_tested_and_left_out(method):
+    for tri in cases(13, 4):
+        fill = traced(tri, method)
+        t = fill.trace
+        for k in (0, t.first_work_step, len(t) // 2, len(t) - 1):
+            rejected = t.rejected_at(k)
+            if method == "span":
+                assert not rejected.any()
+                continue
+            visited = t.image((t.visit_step >= 0) & (t.visit_step <= k), fill=False)
+            np.testing.assert_array_equal(rejected, visited & ~t.coverage_at(-1))
+        if method == "halfplane":
+            np.testing.assert_array_equal(t.rejected_at(-1) | fill.coverage,
+                                          t.image(np.ones(t.bbox.shape, bool), fill=False))  # fmt: skip
+
+
+def test_pixel_steps_build_no_bbox_sized_arrays(monkeypatch):
+    """Captioning one pixel reads that pixel's values only (not edge_values & co.)."""
+    from teachraster.core.half_planes import HalfPlaneTrace
+
+    t = tr.rasterize(tr.Triangle([[1, 1], [60, 9], [12, 58]]), 64, 64, trace=True).trace
+    expected = [t.step(k) for k in range(t.first_work_step, t.first_work_step + 200)]
+
+    def boom(self):
+        raise AssertionError("a whole-box array was built to caption one pixel")
+
+    for name in ("edge_values", "rejected_by", "tests_run"):
+        monkeypatch.setattr(HalfPlaneTrace, name, property(boom))
+    got = [t.step(k) for k in range(t.first_work_step, t.first_work_step + 200)]
+    assert got == expected
+    assert "->" in got[0].caption and got[0].kind == "pixel"
+
+
+def test_bail_out_and_edge_images_are_the_half_plane_tests_for_either_method():
+    tri = tr.Triangle([[1.3, 1.2], [11.6, 4.7], [5.2, 10.1]])
+    hp, sp = traced(tri, "halfplane").trace, traced(tri, "span").trace
+    for a, b in zip(hp.bail_out(), sp.bail_out()):
+        np.testing.assert_array_equal(a, b)
+    np.testing.assert_array_equal(hp.edge_images(), sp.edge_images())
+    b = hp.bbox
+    np.testing.assert_array_equal(hp.edge_images()[b.row0 : b.row1, b.col0 : b.col1],
+                                  hp.halfplane.edge_values)  # fmt: skip
+    assert sp.edge_tests() is not sp.halfplane  # span traces run the tests afresh
+    assert hp.edge_tests() is hp.halfplane
+
+
+def test_row_steps_carry_their_span():
+    t = traced(tr.Triangle([[1.3, 1.2], [11.6, 4.7], [5.2, 10.1]]), "span").trace
+    s = t.span
+    for i in range(len(s.rows)):
+        step = t.step(t.first_work_step + i)
+        assert step.work == i and step.columns == (int(s.col_start[i]), int(s.col_stop[i]))
+        if np.isfinite(s.x_left[i]) and np.isfinite(s.x_right[i]):
+            assert step.span_x == (float(s.x_left[i]), float(s.x_right[i]))
+        else:
+            assert step.span_x is None

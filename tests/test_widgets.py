@@ -20,7 +20,7 @@ from teachraster.widgets import (  # noqa: E402
     FillPlayer,
     TexturedPlaneViewer,
     TriangleEditor,
-    _display,  # noqa: E402
+    display,  # noqa: E402
     resolve_backend,
 )
 from teachraster.widgets.textured import plane_clip  # noqa: E402
@@ -241,9 +241,9 @@ def test_style_applies_to_the_widget_only():
 def test_auto_backend_follows_matplotlib(monkeypatch):
     assert resolve_backend("auto") == "image"  # Agg here
     for name in ("module://ipympl.backend_nbagg", "widget", "ipympl"):
-        monkeypatch.setattr(_display.mpl, "rcParams", {"backend": name})
+        monkeypatch.setattr(display.mpl, "rcParams", {"backend": name})
         assert resolve_backend("auto") == "ipympl"
-    monkeypatch.setattr(_display.mpl, "rcParams", {"backend": "module://matplotlib_inline"})
+    monkeypatch.setattr(display.mpl, "rcParams", {"backend": "module://matplotlib_inline"})
     assert resolve_backend("auto") == "image"
     with pytest.raises(ValueError, match="backend"):
         resolve_backend("qt")
@@ -430,3 +430,82 @@ def test_span_player_labels_vertices_in_span_order():
     assert player.view.triangle.labels is labels
     assert [label.get_text() for label in labels] == ["v0", "v1", "v2"]
     player.close()
+
+
+# -- fast ticks --------------------------------------------------------------------------------
+def test_fast_png_decodes_to_the_figure():
+    from PIL import Image
+
+    p = FillPlayer(triangle(), W, H, method="halfplane", backend="image")
+    p.slider.value = 40
+    png = bytes(p.display.widget.value)
+    shown = np.asarray(Image.open(__import__("io").BytesIO(png)).convert("RGBA"))
+    np.testing.assert_array_equal(shown, np.asarray(p.fig.canvas.buffer_rgba()))
+    with pytest.raises(ValueError, match="RGBA"):
+        display.encode_png(np.zeros((2, 2, 3), dtype=np.uint8))
+    p.close()
+
+
+@pytest.mark.parametrize("method", ["span", "halfplane"])
+def test_play_shows_every_step(method):
+    """Each step the Play reaches is drawn (blitted) and displayed; every work step (a raster
+    line, a pixel) changes the picture. (Set-up steps such as snap -> winding differ only in
+    the caption and the step label.)"""
+    p = FillPlayer(triangle(), W, H, method=method, backend="image")
+    trace = p.trace
+    draws, last = p.display.draws, bytes(p.display.widget.value)
+    n = min(p.slider.max, trace.first_work_step + 40)
+    for k in range(1, n + 1):
+        p.slider.value = k  # what the browser's Play does, one value at a time
+        png = bytes(p.display.widget.value)
+        if trace.first_work_step <= k < trace.interpolation_step:
+            assert png != last, k
+        assert p.caption_text == trace.caption(k)
+        last = png
+    assert p.display.draws == draws + n
+    p.close()
+
+
+def test_player_blits_its_steps_and_keeps_its_fills(player):
+    assert player.display.draw == player.view.redraw
+    player.slider.value = 3
+    assert not player.view.redraw()  # the step was blitted: nothing left to draw fully
+    span = player.fill
+    player.method.value = "halfplane"
+    player.method.value = "span"
+    assert player.fill is span  # toggling back reuses the fill, no new rasterisation
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # raised inside ipympl
+def test_ipympl_sends_one_fast_frame_per_step():
+    pytest.importorskip("ipympl")
+    from io import BytesIO
+
+    from matplotlib.backends.backend_webagg_core import FigureCanvasWebAggCore
+    from PIL import Image
+
+    p = FillPlayer(triangle(), W, H, method="halfplane", backend="ipympl")
+    canvas = p.fig.canvas
+    canvas.syncing_data_url = False  # as once a browser shows it
+    sent = []
+    canvas.send_binary = sent.append
+    for k in range(1, 6):
+        p.slider.value = k
+        assert len(sent) == k  # each step reaches the browser
+    # the fast encoder sends the pixels matplotlib's own would
+    before = canvas._last_buff.copy()
+    p.slider.value = 30
+    frame = np.asarray(Image.open(BytesIO(sent[-1])).convert("RGBA"))
+    canvas._last_buff, canvas._png_is_old = before, True
+    theirs = FigureCanvasWebAggCore.get_diff_image(canvas)
+    np.testing.assert_array_equal(frame, np.asarray(Image.open(BytesIO(theirs)).convert("RGBA")))
+    p.close()
+
+
+def test_step_label_follows_the_slider(player):
+    player.slider.value = 0
+    assert player.step_info.value == f"of {len(player.trace) - 1} (snap)"
+    player.method.value = "halfplane"
+    player.slider.value = player.trace.first_work_step
+    assert player.step_info.value == f"of {len(player.trace) - 1} (pixel)"
+    assert player.view.header.get_text() == "Half-planes"  # still: drawn once, not per step

@@ -173,70 +173,14 @@ def _unpack(block: np.ndarray, layout) -> dict[str, np.ndarray]:
     return {name: block[..., where] for name, where in layout.items()}
 
 
-def _describe_setup(setup, box, method, bits, culled, algo_trace):
-    """The set-up steps of the trace: (kind, caption) pairs, plus snapped xy and area."""
-    px = 1.0 / float(setup.unit)
-    snapped = setup.p[np.argsort(setup.perm)].astype(np.float64) * px
-    pts = ", ".join(f"({x:g}, {y:g})" for x, y in snapped)
-    grid = "raw floats (no snapping)" if bits is None else f"the 1/{2**bits} px grid"
-    steps = [("snap", f"vertices on {grid}: {pts}")]
-    area = float(setup.original_area2) * px * px / 2
-    if area == 0:
-        turn = "zero area: the triangle is degenerate and covers no pixel centre"
-    else:
-        turn = f"signed area {area:g} px²: "
-        if area > 0:
-            turn += "clockwise on screen (back-facing)"
-        else:
-            turn += "counter-clockwise on screen (front-facing); two vertices swapped so the "
-            turn += "inside is on the positive side"
-    steps.append(("winding", turn + ("; culled, nothing is filled" if culled else "")))
-    n = box.size
-    steps.append((
-        "bbox",
-        f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
-        + (f"rows {box.row0}-{box.row1 - 1}, columns {box.col0}-{box.col1 - 1} "
-           f"({n} pixel centres)" if n else "no pixel centre of the image inside"),
-    ))  # fmt: skip
-    if method == "span" and algo_trace is not None:
-        s = algo_trace
-        order = ", ".join(
-            f"v{i + 1} = vertex {o} ({x:g}, {y:g})"
-            for i, (o, (x, y)) in enumerate(zip(s.order, s.sorted_xy))
-        )
-        steps.append(("sort", f"sorted by y: {order}"))
-        if s.u4 is None:
-            split = "zero height: nothing to split"
-        elif s.flat_bottom is None:
-            split = f"already flat-topped (v1.y = v2.y = {s.sorted_xy[0, 1]:g}): no split"
-        elif s.flat_top is None:
-            split = f"already flat-bottomed (v2.y = v3.y = {s.sorted_xy[1, 1]:g}): no split"
-        else:
-            split = (
-                f"split at y = {s.sorted_xy[1, 1]:g}: u4 = (v2-v1)/(v3-v1)*(u3-u1)+u1 = "
-                f"{s.u4:.3f}, giving a flat-bottom (v1, v2, v4) and a flat-top (v2, v4, v3) "
-                "triangle"
-            )
-        steps.append(("split", split))
-    if method == "tiled" and algo_trace is not None:
-        steps.append(("blocks", tiles.setup_caption(algo_trace)))
-    return snapped, area, tuple(steps)
-
-
 def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, local,
             algo_trace, lam, values, depth_values, subdivision) -> FillTrace:  # fmt: skip
+    """The FillTrace of one fill: the data only; the trace numbers the steps and writes
+    every caption itself."""
     width, height = size
-    snapped, area, steps = _describe_setup(setup, box, method, bits, culled, algo_trace)
-    first = len(steps)
-    if method == "span" and algo_trace is not None:
-        # a pixel is filled at the step of its raster line
-        line_step = first + np.arange(box.shape[0], dtype=np.int32)
-        filled_at = np.where(local, line_step[:, None], -1).astype(np.int32)
-    elif method == "tiled" and algo_trace is not None:  # at the step of its filling block
-        filled_at = algo_trace.filled_steps(box, local, first)
-    else:  # a pixel is filled at the step that visits it (row-major over the bbox)
-        visit = first + np.arange(box.size, dtype=np.int32).reshape(box.shape)
-        filled_at = np.where(local, visit, -1).astype(np.int32)
+    px = 1.0 / float(setup.unit)
+    snapped = setup.p[np.argsort(setup.perm)].astype(np.float64) * px
+    area = float(setup.original_area2) * px * px / 2
 
     return FillTrace(
         method=method,
@@ -252,7 +196,7 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         edges=setup.edges,
         top_left=setup.top_left,
         bbox=box,
-        filled_at=filled_at,
+        covered=local,
         pixel_barycentric=lam,
         pixel_affine=values["affine"],
         pixel_perspective=values["perspective"],
@@ -260,7 +204,6 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         span=algo_trace if method == "span" else None,
         halfplane=algo_trace if method == "halfplane" else None,
         blocks=algo_trace if method == "tiled" else None,
-        setup=steps,
         subdivision=subdivision,
         pixel_subdivided=values.get("subdivided"),
     )

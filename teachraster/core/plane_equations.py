@@ -1,10 +1,10 @@
 """Attributes as planes over the screen: *Triangle Rasterisation II - Interpolation*'s A, B, C, D and Fatahalian's (CMU 15-462, *Texture*) matrix M.
 
-Seed 002 treats the three points (x_i, y_i, f_i) as a plane ``A x + B y + C f + D = 0``,
+The post *Triangle Rasterisation II - Interpolation* treats the three points (x_i, y_i, f_i) as a plane ``A x + B y + C f + D = 0``,
 so ``f = -(A x + B y + D) / C``; stepping one pixel right adds ``dx = -A/C`` and one row
 down adds ``dy = -B/C``, turning the inner loop into one addition per pixel.
 
-Seed 004 recentres at vertex a: ``f(x, y) = f_a + A (x - a_x) + B (y - a_y)`` with
+Fatahalian (CMU 15-462, *Texture*) recentres at vertex a: ``f(x, y) = f_a + A (x - a_x) + B (y - a_y)`` with
 ``[A, B] = M [f_b - f_a, f_c - f_a]``. M depends only on the triangle, so it is set up
 once and reused for every attribute, and working near the origin keeps precision.
 """
@@ -101,7 +101,7 @@ def plane_equation(xy, f) -> PlaneEquation:
 
 
 def setup_matrix(xy) -> np.ndarray:
-    """Seed 004's once-per-triangle matrix M, which maps vertex differences to gradients.
+    """Fatahalian's (CMU 15-462, *Texture*) once-per-triangle matrix M, which maps vertex differences to gradients.
 
     ``M = 1/det [[c_y - a_y, a_y - b_y], [a_x - c_x, b_x - a_x]]`` with
     ``det = (b_x - a_x)(c_y - a_y) - (c_x - a_x)(b_y - a_y)``.

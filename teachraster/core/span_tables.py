@@ -1,6 +1,6 @@
 """Span tables: split at u4 into a flat-bottom and a flat-top triangle, fill row by row.
 
-Seed 000 §1.1: sort the vertices by y (v1 top, v3 bottom). The horizontal line through
+Ek, *Triangles and Perspective Correct Interpolation*, §1.1: sort the vertices by y (v1 top, v3 bottom). The horizontal line through
 v2 meets the long edge v1-v3 at ``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` (similar
 triangles), which splits the triangle into a flat-bottom one (v1, v2, v4) and a flat-top
 one (v2, v4, v3). Each raster line of either is one span between a left and a right edge.

@@ -172,20 +172,37 @@ class TileTrace:
             rank[idx] = traversal_rank(i, j, grid, traversal, tile=2)
         return depth_first(self.parent, self.level, rank)
 
-    def filled_steps(self, box: BBox, covered: np.ndarray, first: int) -> np.ndarray:
-        """(rows, cols) int32 over ``box``: the step that filled each covered pixel, else -1.
+    def leaf_steps(self, box: BBox, first: int) -> np.ndarray:
+        """(rows, cols) int32 over ``box``: the step of the block that decided each pixel.
 
-        Block ``b`` is step ``first + b``; a pixel is filled by its accepted block or by the
-        smallest partial block whose pixel tests found it covered.
+        Block ``b`` is step ``first + b``. Every pixel of the box lies in exactly one block
+        that is not split: rejected, accepted, or partial of the smallest size (its pixel
+        tests). -1 where no block was classified (empty box, zero area).
         """
         out = np.full(box.shape, -1, dtype=np.int32)
         last = len(self.block_sizes) - 1
-        fills = (self.kind_code == ACCEPTED) | ((self.level == last) & (self.kind_code == PARTIAL))
-        for b in np.flatnonzero(fills):  # one slice per block (never per pixel)
+        leaves = (self.kind_code != PARTIAL) | (self.level == last)
+        for b in np.flatnonzero(leaves):  # one slice per block (never per pixel)
             r0, c0 = self.row[b] - box.row0, self.col[b] - box.col0
             r1, c1 = r0 + self.extent[b, 0], c0 + self.extent[b, 1]
             out[max(r0, 0) : max(r1, 0), max(c0, 0) : max(c1, 0)] = first + b
-        return np.where(covered, out, -1).astype(np.int32)
+        return out
+
+    def setup_caption(self) -> str:
+        """The set-up step: block sizes and the top-level blocks to classify."""
+        sizes = ", ".join(f"{s}×{s}" for s in self.block_sizes)
+        top = int((self.level == 0).sum())
+        if not top:
+            return f"blocks of {sizes} px: no block to classify (empty box or zero area)"
+        rows, cols = self.grids[0]
+        s = self.block_sizes[0]
+        blocks = f"{top} top-level {s}×{s} blocks ({rows} × {cols}) overlap"
+        if top == 1:
+            blocks = f"one top-level {s}×{s} block overlaps"
+        return (
+            f"blocks of {sizes} px: {blocks} the bounding box; each is classified by its "
+            "corners, partial ones are split"
+        )
 
     def caption(self, b: int, edges: np.ndarray) -> str:
         """One line on block ``b``: where it is, the deciding edge values, the verdict."""

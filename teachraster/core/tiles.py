@@ -341,20 +341,3 @@ def _trace(levels: list[_Level], sizes, grids, setup: EdgeSetup, counters) -> Ti
         sibling=sibling[order],
         grids=tuple(grids),
     )
-
-
-def setup_caption(trace: TileTrace) -> str:
-    """The set-up step of a tiled fill: block sizes and the top-level blocks to classify."""
-    sizes = ", ".join(f"{s}×{s}" for s in trace.block_sizes)
-    top = int((trace.level == 0).sum())
-    if not top:
-        return f"blocks of {sizes} px: no block to classify (empty box or zero area)"
-    rows, cols = trace.grids[0]
-    s = trace.block_sizes[0]
-    blocks = f"{top} top-level {s}×{s} blocks ({rows} × {cols}) overlap"
-    if top == 1:
-        blocks = f"one top-level {s}×{s} block overlaps"
-    return (
-        f"blocks of {sizes} px: {blocks} the bounding box; each is classified by its "
-        "corners, partial ones are split"
-    )

@@ -5,23 +5,45 @@ pixel): steps are *numbered* and their captions are written on demand, so record
 256×256 fill costs a few arrays. Per-pixel arrays cover the bounding box; use
 :meth:`FillTrace.image` to place one in the whole image.
 
-Steps run in this order: set-up steps (snap, winding, bounding box, and for span tables
-sort and split; for tiles the block sizes), then the work steps (one per raster line for
-span tables, one per visited pixel for half-planes, one per classified block for tiles),
-then one interpolation step.
+The trace is the one owner of the step table. Steps run in this order:
+
+====================  =====================================================================
+step                  what
+====================  =====================================================================
+0, 1, 2               set-up: ``snap``, ``winding``, ``bbox`` (:attr:`FillTrace.bbox_step`)
+3, 4 (span tables)    ``sort``, ``split`` (:attr:`FillTrace.split_step`)
+3 (tiles)             ``blocks``: the block sizes and the top-level blocks
+first_work_step ...   one ``row`` step per raster line (span tables), one ``pixel`` step
+                      per bounding-box pixel in row-major order (half-planes), or one
+                      ``block`` step per classified block in visit order (tiles);
+                      :attr:`FillTrace.visit_step` numbers every pixel
+last                  ``interpolate`` (:attr:`FillTrace.interpolation_step`)
+====================  =====================================================================
+
+Presentation code asks the trace (``step``, ``coverage_at``, ``rejected_at``,
+``visit_step``, ``bail_out``, ``edge_images``, ``visit_order``) rather than re-deriving any
+of it.
 """
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
+from . import half_planes
 from .bbox import BBox
+from .edges import setup_edges
 from .half_planes import HalfPlaneTrace
 from .span_tables import SpanTrace
 from .tile_trace import TileTrace
+
+SETUP_KINDS = ("snap", "winding", "bbox")
+SPAN_SETUP_KINDS = ("sort", "split")
+TILE_SETUP_KINDS = ("blocks",)
 
 
 @dataclass(frozen=True)
@@ -30,8 +52,12 @@ class Step:
 
     ``kind`` is one of ``"snap"``, ``"winding"``, ``"bbox"``, ``"sort"``, ``"split"``,
     ``"blocks"``, ``"row"``, ``"pixel"``, ``"block"``, ``"interpolate"``. ``row``/``col``
-    are image indices where the step concerns one raster line, pixel or block (its
-    top-left pixel).
+    are image indices where the step concerns one raster line, pixel or block (its top-left
+    pixel). ``work`` is the position among the work steps (raster line, visited pixel or
+    block number, from 0). A ``"row"`` step also carries its span:
+    ``span_x`` where the raster line's centre crosses its left and right edges (px) and
+    ``columns`` the covered columns ``start <= j < stop`` (``span_x`` is None when an end is
+    not finite), so an artist can draw the step from the Step alone.
     """
 
     index: int
@@ -39,6 +65,9 @@ class Step:
     caption: str
     row: int | None = None
     col: int | None = None
+    work: int | None = None
+    span_x: tuple[float, float] | None = None
+    columns: tuple[int, int] | None = None
 
 
 @dataclass(frozen=True)
@@ -65,11 +94,11 @@ class FillTrace:
         Whether each edge is a top or left edge (decides centres exactly on it).
     bbox : BBox
         Pixels whose centres lie in the bounding box, clipped to the image.
-    filled_at : (rows, cols) int32
-        Step index at which each bbox pixel was filled, -1 if never.
+    covered : (rows, cols) bool
+        Bbox pixels the triangle covers (``filled_at`` numbers them by step).
     pixel_barycentric : (n, 3) float64
         Screen-space weights of vertices 0, 1, 2 at each covered pixel, in row-major order
-        (the order of ``np.nonzero(filled_at >= 0)``); the ``barycentric`` property places
+        (the order of ``np.nonzero(covered)``); the ``barycentric`` property places
         them in a bbox-local image.
     pixel_affine, pixel_perspective : mapping of name to (n,) or (n, k) float64
         Both interpolations of every attribute at each covered pixel (properties
@@ -77,9 +106,7 @@ class FillTrace:
     pixel_depth : (n,) float64 or None
         Interpolated window depth at each covered pixel (property ``depth``).
     span, halfplane, blocks : SpanTrace or HalfPlaneTrace or TileTrace or None
-        The algorithm-specific record (the others are None).
-    setup : tuple of (kind, caption)
-        The set-up steps.
+        The algorithm-specific record (the others are None; all None when culled).
     subdivision : int or None
         N of ``interpolation="subdivided"``; None for the other modes.
     pixel_subdivided : mapping of name to (n,) or (n, k) float64, or None
@@ -99,24 +126,18 @@ class FillTrace:
     edges: np.ndarray
     top_left: np.ndarray
     bbox: BBox
-    filled_at: np.ndarray
+    covered: np.ndarray
     pixel_barycentric: np.ndarray
     pixel_affine: Mapping[str, np.ndarray]
     pixel_perspective: Mapping[str, np.ndarray]
     pixel_depth: np.ndarray | None
     span: SpanTrace | None
     halfplane: HalfPlaneTrace | None
-    setup: tuple[tuple[str, str], ...]
     subdivision: int | None = None
     pixel_subdivided: Mapping[str, np.ndarray] | None = None
     blocks: TileTrace | None = None
 
     # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
-    @property
-    def covered(self) -> np.ndarray:
-        """(rows, cols) bool: bbox pixels the triangle covers."""
-        return self.filled_at >= 0
-
     def _local(self, values: np.ndarray) -> np.ndarray:
         out = np.full((*self.bbox.shape, *values.shape[1:]), np.nan)
         out[self.covered] = values
@@ -142,10 +163,38 @@ class FillTrace:
         """Window depth, bbox-local, NaN outside coverage (None without z)."""
         return None if self.pixel_depth is None else self._local(self.pixel_depth)
 
-    # -- stepping -------------------------------------------------------------------
+    # -- the step table -------------------------------------------------------------------
+    @property
+    def setup_kinds(self) -> tuple[str, ...]:
+        """Kinds of the set-up steps: snap, winding, bbox (and sort, split for span tables;
+        blocks for tiles)."""
+        extra = SPAN_SETUP_KINDS if self.span is not None else ()
+        return SETUP_KINDS + extra + (TILE_SETUP_KINDS if self.blocks is not None else ())
+
+    @property
+    def setup(self) -> tuple[tuple[str, str], ...]:
+        """The set-up steps as (kind, caption) pairs."""
+        return tuple((kind, self._setup_caption(kind)) for kind in self.setup_kinds)
+
+    @property
+    def bbox_step(self) -> int:
+        """Index of the step that finds the bounding box (drawn from this step on)."""
+        return SETUP_KINDS.index("bbox")
+
+    @property
+    def split_step(self) -> int | None:
+        """Index of the span tables' split step (u4 shown from it on); None for half-planes."""
+        return self.setup_kinds.index("split") if self.span is not None else None
+
+    @property
+    def first_work_step(self) -> int:
+        """Index of the first work step (raster line or pixel) after the set-up."""
+        return len(self.setup_kinds)
+
     @property
     def n_work(self) -> int:
-        """Work steps: raster lines (span), visited pixels (half-plane) or blocks (tiled)."""
+        """Number of work steps: raster lines (span), visited pixels (half-plane) or
+        classified blocks (tiles)."""
         if self.culled:
             return 0
         if self.span is not None:
@@ -154,48 +203,110 @@ class FillTrace:
             return len(self.blocks)
         return self.bbox.size
 
+    @property
+    def interpolation_step(self) -> int:
+        """Index of the last step, which interpolates the attributes."""
+        return self.first_work_step + self.n_work
+
     def __len__(self) -> int:
-        return len(self.setup) + self.n_work + 1
+        return self.interpolation_step + 1
 
     def __iter__(self) -> Iterator[Step]:
         return (self.step(k) for k in range(len(self)))
 
-    @property
-    def first_work_step(self) -> int:
-        return len(self.setup)
+    def index(self, k: int) -> int:
+        """Step ``k`` as a non-negative index (negative counts from the end), without
+        writing its caption. Out of range raises IndexError.
+
+        >>> import teachraster as tr
+        >>> t = tr.rasterize(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 4, 4, trace=True).trace
+        >>> t.index(-1) == len(t) - 1 == t.interpolation_step
+        True
+        """
+        k, n = operator.index(k), len(self)
+        if not -n <= k < n:
+            raise IndexError(f"step {k} out of range for a trace of {n} steps")
+        return k % n
 
     def step(self, k: int) -> Step:
         """Step ``k`` (negative counts from the end), with its caption."""
-        n = len(self)
-        if not -n <= k < n:
-            raise IndexError(f"step {k} out of range for a trace of {n} steps")
-        k %= n
-        if k < len(self.setup):
-            kind, caption = self.setup[k]
-            return Step(k, kind, caption)
-        i = k - len(self.setup)
-        if i == self.n_work:
+        k = self.index(k)
+        if k < self.first_work_step:
+            kind = self.setup_kinds[k]
+            return Step(k, kind, self._setup_caption(kind))
+        if k == self.interpolation_step:
             return Step(k, "interpolate", self._interpolation_caption())
+        i = k - self.first_work_step
         if self.span is not None:
             return self._row_step(k, i)
         if self.blocks is not None:
             b = self.blocks
             caption = b.caption(i, self.edges)
-            return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]))
+            return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]), work=i)
         return self._pixel_step(k, i)
 
     def caption(self, k: int) -> str:
         """The one-line plain-English caption of step ``k``."""
         return self.step(k).caption
 
+    # -- which step reaches which pixel ---------------------------------------------------
+    @cached_property
+    def visit_step(self) -> np.ndarray:
+        """(rows, cols) int32, bbox-local: the step at which the fill reaches each pixel.
+
+        Half-planes visit (test) every pixel of the box, row by row; span tables reach only
+        the covered pixels, each at the step of its raster line; tiles reach each pixel at
+        the step of the block that decided it (rejected, accepted, or tested pixel by pixel).
+        -1: never reached (uncovered pixels of span tables, every pixel of a culled
+        triangle).
+        """
+        shape, first = self.bbox.shape, self.first_work_step
+        if self.culled:
+            return np.full(shape, -1, dtype=np.int32)
+        if self.blocks is not None:
+            return self.blocks.leaf_steps(self.bbox, first)
+        if self.span is not None:
+            line = first + np.arange(shape[0], dtype=np.int32)
+            return np.where(self.covered, line[:, None], -1).astype(np.int32)
+        return first + np.arange(self.bbox.size, dtype=np.int32).reshape(shape)
+
+    def visit_step_of(self, row: int, col: int) -> int:
+        """The step that reaches image pixel (``row``, ``col``), -1 if none does."""
+        b = self.bbox
+        if not (b.row0 <= row < b.row1 and b.col0 <= col < b.col1):
+            return -1
+        return int(self.visit_step[row - b.row0, col - b.col0])
+
+    @cached_property
+    def filled_at(self) -> np.ndarray:
+        """(rows, cols) int32, bbox-local: step at which each pixel was filled, -1 if never."""
+        return np.where(self.covered, self.visit_step, -1).astype(np.int32)
+
+    def visit_order(self) -> tuple[np.ndarray, np.ndarray]:
+        """Image (rows, cols) of the pixels the fill reaches, in the order it reaches them."""
+        local = self.visit_step >= 0
+        r, c = np.nonzero(local)
+        order = np.argsort(self.visit_step[local], kind="stable")
+        return r[order] + self.bbox.row0, c[order] + self.bbox.col0
+
     def coverage_at(self, k: int) -> np.ndarray:
         """(height, width) bool: the pixels filled once steps 0..k have run.
 
         ``k`` counts from the end when negative, as in :meth:`step`.
         """
-        k = self.step(k).index  # validates k and resolves negative indices
-        done = (self.filled_at >= 0) & (self.filled_at <= k)
-        return self.image(done, fill=False)
+        k = self.index(k)
+        return self.image(self.covered & (self.filled_at <= k), fill=False)
+
+    def rejected_at(self, k: int) -> np.ndarray:
+        """(height, width) bool: pixels tested and rejected once steps 0..k have run.
+
+        Half-planes test every pixel they do not cover, tiles reject them by blocks or test
+        them in the smallest partial blocks; for span tables this is all False.
+        """
+        k = self.index(k)
+        if self.halfplane is None and self.blocks is None:
+            return np.zeros((self.height, self.width), dtype=bool)
+        return self.image((self.visit_step <= k) & ~self.covered, fill=False)
 
     def image(self, local: np.ndarray, fill=np.nan) -> np.ndarray:
         """Place a bbox-local array into a full (height, width, ...) image."""
@@ -204,47 +315,148 @@ class FillTrace:
         out[b.row0 : b.row1, b.col0 : b.col1] = local
         return out
 
-    # -- captions -------------------------------------------------------------------
+    # -- edge tests, for either method ----------------------------------------------------
+    def edge_tests(self, bbox: BBox | None = None) -> HalfPlaneTrace:
+        """The half-plane edge tests over ``bbox`` (default: the trace's own box).
+
+        A half-plane trace's own record when it covers that box; otherwise the tests are
+        run by :func:`teachraster.core.half_planes.fill` on the same snapped set-up, so
+        span tables can show what half-planes would test, and plots can show the edge
+        functions beyond the bounding box.
+        """
+        box = self.bbox if bbox is None else bbox
+        if self.halfplane is not None and box == self.bbox:
+            return self.halfplane
+        setup = setup_edges(np.asarray(self.xy, dtype=np.float64), self.subpixel_bits)
+        return half_planes.fill(setup, box, True)[1]
+
+    def edge_images(self) -> np.ndarray:
+        """(height, width, 3) E_k in px² at every pixel centre of the image, in test order.
+
+        Exact on the snapped grid; equal to ``halfplane.edge_values`` inside the box.
+        """
+        whole = BBox(0, self.height, 0, self.width, 0.0, float(self.width), 0.0,
+                     float(self.height))  # fmt: skip
+        return self.edge_tests(whole).edge_values
+
+    def bail_out(self) -> tuple[np.ndarray, np.ndarray]:
+        """Bbox-local (rejected_by, tests_run) of a bail-out half-plane loop, for any method.
+
+        ``rejected_by`` is -1 where the pixel is covered, else the position (0, 1, 2) of
+        the first failing edge test (a zero-area triangle passes every test at a centre on
+        its line yet covers nothing: reported as rejected by the last test);
+        ``tests_run`` counts the tests a loop stopping at that failure runs.
+        """
+        tests = self.edge_tests()
+        rejected = tests.rejected_by
+        rejected = np.where((rejected < 0) & ~self.covered, 2, rejected).astype(np.int8)
+        return rejected, tests.tests_run
+
+    # -- captions -------------------------------------------------------------------------
+    def _setup_caption(self, kind: str) -> str:
+        return {
+            "snap": self._snap_caption,
+            "winding": self._winding_caption,
+            "bbox": self._bbox_caption,
+            "sort": self._sort_caption,
+            "split": self._split_caption,
+            "blocks": lambda: self.blocks.setup_caption(),
+        }[kind]()
+
+    def _snap_caption(self) -> str:
+        pts = ", ".join(f"({x:g}, {y:g})" for x, y in self.snapped)
+        bits = self.subpixel_bits
+        grid = "raw floats (no snapping)" if bits is None else f"the 1/{2**bits} px grid"
+        return f"vertices on {grid}: {pts}"
+
+    def _winding_caption(self) -> str:
+        area = self.signed_area
+        if area == 0:
+            turn = "zero area: the triangle is degenerate and covers no pixel centre"
+        else:
+            turn = f"signed area {area:g} px²: "
+            if area > 0:
+                turn += "clockwise on screen (back-facing)"
+            else:
+                turn += "counter-clockwise on screen (front-facing); two vertices swapped so "
+                turn += "the inside is on the positive side"
+        return turn + ("; culled, nothing is filled" if self.culled else "")
+
+    def _bbox_caption(self) -> str:
+        box = self.bbox
+        where = f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
+        if not box.size:
+            return where + "no pixel centre of the image inside"
+        return where + (f"rows {box.row0}-{box.row1 - 1}, columns {box.col0}-{box.col1 - 1} "
+                        f"({box.size} pixel centres)")  # fmt: skip
+
+    def _sort_caption(self) -> str:
+        s = self.span
+        order = ", ".join(
+            f"v{i + 1} = vertex {o} ({x:g}, {y:g})"
+            for i, (o, (x, y)) in enumerate(zip(s.order, s.sorted_xy))
+        )
+        return f"sorted by y: {order}"
+
+    def _split_caption(self) -> str:
+        s = self.span
+        if s.u4 is None:
+            return "zero height: nothing to split"
+        if s.flat_bottom is None:
+            return f"already flat-topped (v1.y = v2.y = {s.sorted_xy[0, 1]:g}): no split"
+        if s.flat_top is None:
+            return f"already flat-bottomed (v2.y = v3.y = {s.sorted_xy[1, 1]:g}): no split"
+        return (
+            f"split at y = {s.sorted_xy[1, 1]:g}: u4 = (v2-v1)/(v3-v1)*(u3-u1)+u1 = "
+            f"{s.u4:.3f}, giving a flat-bottom (v1, v2, v4) and a flat-top (v2, v4, v3) "
+            "triangle"
+        )
+
     def _row_step(self, k: int, i: int) -> Step:
         s = self.span
         row, part = int(s.rows[i]), ("flat-bottom", "flat-top")[s.half[i]]
         start, stop = int(s.col_start[i]), int(s.col_stop[i])
+        xl, xr = float(s.x_left[i]), float(s.x_right[i])
         where = f"row {row} (y = {row + 0.5:g}, {part} part)"
-        if np.isfinite(s.x_left[i]) and np.isfinite(s.x_right[i]):
-            where += f": span x = {s.x_left[i]:.2f} .. {s.x_right[i]:.2f}"
+        if np.isfinite(xl) and np.isfinite(xr):
+            where += f": span x = {xl:.2f} .. {xr:.2f}"
         if stop > start:
             cols = f"column {start}" if stop == start + 1 else f"columns {start}-{stop - 1}"
             text = f"{where} covers {cols}"
         else:
             text = f"{where} covers no pixel centre"
-        return Step(k, "row", text, row=row)
+        span_x = (xl, xr) if np.isfinite(xl) and np.isfinite(xr) else None
+        return Step(k, "row", text, row=row, work=i, span_x=span_x, columns=(start, stop))
 
     def _pixel_step(self, k: int, i: int) -> Step:
+        # One pixel's values only: no bbox-sized array is built per step.
         h = self.halfplane
         r, c = divmod(i, self.bbox.shape[1])
         row, col = self.bbox.row0 + r, self.bbox.col0 + c
-        e = h.edge_values[r, c]
-        run = int(h.tests_run[r, c])
-        parts = []
-        for t in range(run):
-            a, b = self.edges[t]
-            passed = e[t] > 0 or (e[t] == 0 and self.top_left[t])
-            rel = ">" if e[t] > 0 else "<" if e[t] < 0 else "="
-            tie = " (on a top-left edge)" if e[t] == 0 and passed else ""
-            tie = " (on an edge that is not top-left)" if e[t] == 0 and not passed else tie
-            parts.append(f"E{a}{b} = {e[t]:.3g} {rel} 0{tie}")
-        rejected = int(h.rejected_by[r, c])
-        verdict = (
-            "inside: covered"
-            if rejected < 0
-            else f"outside: rejected by test {rejected + 1} of 3"
-            + (", later tests skipped" if run < 3 else "")
-        )
+        parts, rejected = [], -1
+        for t in range(3):
+            e = float(h.edge_units[t][r, c]) * h.px2_per_unit2
+            passed = bool(h.passed[t][r, c])
+            rel = ">" if e > 0 else "<" if e < 0 else "="
+            tie = " (on a top-left edge)" if e == 0 and passed else ""
+            tie = " (on an edge that is not top-left)" if e == 0 and not passed else tie
+            parts.append(f"E{self.edges[t][0]}{self.edges[t][1]} = {e:.3g} {rel} 0{tie}")
+            if not passed:
+                rejected = t
+                break  # a bail-out loop stops at the first failing test
+        if rejected >= 0:
+            verdict = f"outside: rejected by test {rejected + 1} of 3"
+            verdict += ", later tests skipped" if rejected < 2 else ""
+        elif self.covered[r, c]:
+            verdict = "inside: covered"
+        else:
+            verdict = "all tests pass on the line of a zero-area triangle: not covered"
         text = f"pixel (row {row}, col {col}) at ({col + 0.5:g}, {row + 0.5:g}): "
-        return Step(k, "pixel", text + ", ".join(parts) + f" -> {verdict}", row=row, col=col)
+        return Step(k, "pixel", text + ", ".join(parts) + f" -> {verdict}", row=row, col=col,
+                    work=i)  # fmt: skip
 
     def _interpolation_caption(self) -> str:
-        n = int((self.filled_at >= 0).sum())
+        n = int(np.count_nonzero(self.covered))
         if self.culled:
             return "triangle culled: nothing to interpolate"
         names = list(self.pixel_affine)

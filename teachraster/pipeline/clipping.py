@@ -88,6 +88,34 @@ def _onto_plane(v: np.ndarray, k: int, guard: float | None) -> np.ndarray:
     return v
 
 
+def _clip_against(poly: np.ndarray, attrs: np.ndarray, k: int, guard: float | None):
+    """One Sutherland-Hodgman pass: ``poly`` (n, 4) and ``attrs`` (n, k) against plane ``k``.
+
+    Returns the new polygon, its attributes and a bool mask of the vertices the pass created.
+    """
+    d = distances(poly, guard)[:, k]
+    out_v, out_a, new = [], [], []
+    n = len(poly)
+    for i in range(n):
+        j = (i + 1) % n
+        if d[i] >= 0:
+            out_v.append(poly[i])
+            out_a.append(attrs[i])
+            new.append(False)
+        if (d[i] >= 0) != (d[j] >= 0):  # the edge crosses the plane: add the crossing
+            # Step from the endpoint nearer the plane: t is then small and the new
+            # vertex accurate (from the far end, 1 - t can round a vertex just off
+            # the eye plane onto it), and an edge shared by two triangles is cut at
+            # the same point whichever way round they traverse it.
+            a, b = (i, j) if abs(d[i]) <= abs(d[j]) else (j, i)
+            t = d[a] / (d[a] - d[b])
+            out_v.append(_onto_plane(poly[a] + t * (poly[b] - poly[a]), k, guard))
+            out_a.append(attrs[a] + t * (attrs[b] - attrs[a]))
+            new.append(True)
+    poly = np.array(out_v).reshape(-1, 4)
+    return poly, np.array(out_a).reshape(len(poly), attrs.shape[1]), np.array(new, dtype=bool)
+
+
 def clip_polygon(
     poly: np.ndarray, attrs: np.ndarray, guard: float | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -103,26 +131,79 @@ def clip_polygon(
     for k in range(len(planes(guard))):
         if len(poly) == 0:
             break
-        d = distances(poly, guard)[:, k]
-        out_v, out_a = [], []
-        n = len(poly)
-        for i in range(n):
-            j = (i + 1) % n
-            if d[i] >= 0:
-                out_v.append(poly[i])
-                out_a.append(attrs[i])
-            if (d[i] >= 0) != (d[j] >= 0):  # the edge crosses the plane: add the crossing
-                # Step from the endpoint nearer the plane: t is then small and the new
-                # vertex accurate (from the far end, 1 - t can round a vertex just off
-                # the eye plane onto it), and an edge shared by two triangles is cut at
-                # the same point whichever way round they traverse it.
-                a, b = (i, j) if abs(d[i]) <= abs(d[j]) else (j, i)
-                t = d[a] / (d[a] - d[b])
-                out_v.append(_onto_plane(poly[a] + t * (poly[b] - poly[a]), k, guard))
-                out_a.append(attrs[a] + t * (attrs[b] - attrs[a]))
-        poly = np.array(out_v).reshape(-1, 4)
-        attrs = np.array(out_a).reshape(len(poly), attrs.shape[1])
+        poly, attrs, _ = _clip_against(poly, attrs, k, guard)
     return poly, attrs
+
+
+#: Names of the clip planes, in the order of :func:`planes`.
+PLANE_NAMES = ("near z >= -w", "far z <= w", "eye w > 0", "guard x >= -g w", "guard x <= g w",
+               "guard y >= -g w", "guard y <= g w")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class ClipStep:
+    """The polygon after one clip plane (a record of :func:`clip_polygon_steps`).
+
+    Attributes
+    ----------
+    plane : str
+        Which plane, e.g. ``"near z >= -w"``.
+    distances : (n,) float64
+        Signed distance of each vertex of the polygon *before* this plane (>= 0 inside).
+    polygon : (m, 4) float64
+        The clip-space polygon after this plane.
+    attrs : (m, k) float64
+        Its attributes (new vertices: interpolated with the same t as the position).
+    new : (m,) bool
+        Which vertices this plane created (on the plane itself).
+    """
+
+    plane: str
+    distances: np.ndarray
+    polygon: np.ndarray
+    attrs: np.ndarray
+    new: np.ndarray
+
+
+def clip_polygon_steps(poly, attrs=None, guard: float | None = None) -> list[ClipStep]:
+    """:func:`clip_polygon` one plane at a time, for teaching: the polygon after each plane.
+
+    The same passes as :func:`clip_polygon` (so the last step's polygon is its result), each
+    recorded with the distances it tested, the vertices it kept and the ones it created.
+
+    Parameters
+    ----------
+    poly : (n, 4) array-like
+        Clip-space polygon (a triangle: n = 3).
+    attrs : (n, k) array-like, optional
+        Vertex attributes (default: none).
+    guard : float, optional
+        Guard band in NDC units (default: no guard-band planes).
+
+    Returns
+    -------
+    list of ClipStep, one per plane (fewer if the polygon vanished).
+
+    Examples
+    --------
+    >>> tri = [[0.0, 0, -3, 1], [0, 0, 0, 1], [1, 0, 0, 1]]   # vertex 0 in front of near
+    >>> steps = clip_polygon_steps(tri, [[0.0], [1.0], [2.0]])
+    >>> steps[0].plane, len(steps[0].polygon), steps[0].new.tolist()
+    ('near z >= -w', 4, [True, False, False, True])
+    >>> steps[0].attrs[steps[0].new].ravel().round(4).tolist()   # a third of the way back
+    [0.6667, 1.3333]
+    """
+    poly = np.asarray(poly, dtype=np.float64).reshape(-1, 4)
+    attrs = np.zeros((len(poly), 0)) if attrs is None else np.asarray(attrs, dtype=np.float64)
+    attrs = attrs.reshape(len(poly), -1)
+    steps = []
+    for k in range(len(planes(guard))):
+        if len(poly) == 0:
+            break
+        d = distances(poly, guard)[:, k]
+        poly, attrs, new = _clip_against(poly, attrs, k, guard)
+        steps.append(ClipStep(PLANE_NAMES[k], d, poly, attrs, new))
+    return steps
 
 
 @dataclass(frozen=True)

@@ -1,6 +1,6 @@
 """Depth mappings and depth-buffer precision: why distant surfaces z-fight (Ritschel, *Interpolation and z-buffering*).
 
-Seed 003's z-buffer keeps, per pixel, the depth of the nearest fragment so far and warns that a
+Ritschel's (*Interpolation and z-buffering*) z-buffer keeps, per pixel, the depth of the nearest fragment so far and warns that a
 "z-buffer can be inaccurate with few bits" ("aliasing on depth", z-buffer tearing). Which depth
 is stored matters as much as how many bits store it:
 
@@ -11,7 +11,16 @@ is stored matters as much as how many bits store it:
 - the **window depth** of OpenGL, :func:`window_depth`, is the same hyperbola rescaled to
   [0, 1]: ``(z' - n) / (f - n) = (f / (f - n)) (1 - n / z)``. This is what CONVENTIONS' ``z_win``
   holds and what a real depth buffer stores;
-- :func:`linear_depth` ``(z - n) / (f - n)`` is the comparison case with even resolution.
+- :func:`linear_depth` ``(z - n) / (f - n)`` is the comparison case with even resolution;
+- :func:`reversed_depth` ``1 - window_depth``, computed without that subtraction, is
+  **reverse-Z**: near -> 1, far -> 0, the larger value wins the depth test. In ``float32`` it
+  puts the dense floats near 0 where the hyperbola is flat (far away), which nearly evens out
+  the resolution.
+
+:func:`depth_bias` is Direct3D's / OpenGL's polygon offset (``DepthBias`` and
+``SlopeScaledDepthBias``, ``glPolygonOffset(factor, units)``): a per-triangle constant added to
+the window depth so a decal lying on a wall wins the test; :func:`max_depth_slope` gives the
+slope term and :func:`offset_clip_depth` applies a window-depth offset to clip-space triangles.
 
 Because the hyperbola flattens out with distance, one step of a 16- or 24-bit buffer spans a
 width in ``z`` that grows like ``z**2`` (:func:`depth_resolution`): two surfaces a fixed
@@ -28,7 +37,7 @@ from __future__ import annotations
 import numpy as np
 
 DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
-MAPPINGS = ("perspective", "linear")
+MAPPINGS = ("perspective", "linear", "reversed")
 
 _UNORM_BITS = {"unorm24": 24, "unorm16": 16}
 
@@ -111,7 +120,7 @@ def window_depth(z_view, near: float, far: float) -> np.ndarray:
 
 
 def seed_depth(z, near: float, far: float) -> np.ndarray:
-    """Seed 003's ``z' = n + f - f n / z``: the perspective depth in view-distance units.
+    """Ritschel's (*Interpolation and z-buffering*) ``z' = n + f - f n / z``: the perspective depth in view-distance units.
 
     ``z'`` is affine in ``1/z``, so it may be interpolated affinely in screen space (Ritschel, *Interpolation and z-buffering*,
     eq. 12), unlike ``z`` itself; it maps near to near and far to far and preserves order.
@@ -134,6 +143,33 @@ def seed_depth(z, near: float, far: float) -> np.ndarray:
     # it inherits window_depth's monotonicity and gives exactly n at z = n (and f at z = f up
     # to one rounding of n + (f - n)), where the literal formula drifts by a few ulps.
     return near + (far - near) * window_depth(z, near, far)
+
+
+def reversed_depth(z_view, near: float, far: float) -> np.ndarray:
+    """Reverse-Z window depth in [0, 1]: near -> 1, far -> 0, **larger is nearer**.
+
+    Mathematically ``1 - window_depth(z)``, i.e. ``(n / z - n / f) / (1 - n / f)``, but
+    computed in that second form: ``1 - d`` would round away exactly the precision reverse-Z
+    is for. With a ``float32`` buffer (``GL_DEPTH_COMPONENT32F`` with ``glClipControl(...,
+    GL_ZERO_TO_ONE)`` and ``glDepthFunc(GL_GREATER)``; Direct3D with ``D3D11_COMPARISON_GREATER``),
+    far-away depths land near 0, where floats are densest, and the resolution in ``z`` is
+    nearly proportional to ``z`` instead of ``z**2``.
+
+    Parameters
+    ----------
+    z_view : array-like
+        View distances (> 0).
+    near, far : float
+        0 < near < far.
+
+    Examples
+    --------
+    >>> reversed_depth([0.5, 1.0, 2.0], 0.5, 2.0)
+    array([1.    , 0.3333, 0.    ])
+    """
+    near, far = _planes(near, far, positive=True)
+    z = _distances("z_view", z_view, positive=True)
+    return (near / z - near / far) / (1.0 - near / far)
 
 
 def linear_depth(z, near: float, far: float) -> np.ndarray:
@@ -165,7 +201,9 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
 
     - ``perspective`` (:func:`window_depth`): ``d' = f n / ((f - n) z**2)``, so with a fixed step
       the resolution grows like ``z**2``;
-    - ``linear`` (:func:`linear_depth`): ``d' = 1 / (f - n)``, the same everywhere.
+    - ``linear`` (:func:`linear_depth`): ``d' = 1 / (f - n)``, the same everywhere;
+    - ``reversed`` (:func:`reversed_depth`): the same slope as ``perspective``, but the stored
+      values of far points are near 0, where a float's step is small.
 
     The step is ``1 / (2**B - 1)`` for ``unormB`` and the gap to the next float
     (``np.spacing``) at the stored value for ``float32`` / ``float64``, so floats resolve more
@@ -179,7 +217,7 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
         Clip planes.
     fmt : {"float64", "float32", "unorm24", "unorm16"}
         Depth buffer format.
-    mapping : {"perspective", "linear"}
+    mapping : {"perspective", "linear", "reversed"}
         Which depth is stored.
 
     Returns
@@ -193,13 +231,15 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
     array([6.1e-04, 3.81e+01])
     >>> depth_resolution([2.0, 500.0], 0.1, 1000.0, "unorm16", mapping="linear")
     array([0.0153, 0.0153])
+    >>> depth_resolution([500.0], 0.1, 1000.0, "float32", mapping="reversed") < 1e-3
+    array([ True])
     """
     map_depth, positive = _mapping(mapping)
     near, far = _planes(near, far, positive=positive)
     z = _distances("z", z, positive=positive)
     if fmt not in DEPTH_FORMATS:
         raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
-    if mapping == "perspective":
+    if mapping in ("perspective", "reversed"):
         slope = near / ((1.0 - near / far) * z * z)  # = f n / ((f - n) z**2), as window_depth
     else:
         slope = np.full_like(z, 1.0 / (far - near))
@@ -247,10 +287,113 @@ def fights(z_a, z_b, near: float, far: float, fmt: str, mapping: str = "perspect
     qa = quantize(map_depth(a, near, far), fmt)
     qb = quantize(map_depth(b, near, far), fmt)
     real = ~(np.isnan(a) | np.isnan(b)) & (a != b)
-    # Both mappings and quantisation are monotonic, so an inversion should never happen; it is
-    # checked anyway, because a swapped order would be as visible as a tie.
-    wrong = (qa == qb) | (np.sign(qa - qb) != np.sign(a - b))
+    # Every mapping and quantisation is monotonic, so an inversion should never happen; it is
+    # checked anyway, because a swapped order would be as visible as a tie. Reverse-Z stores
+    # the nearer surface as the larger value.
+    order = -1.0 if mapping == "reversed" else 1.0
+    wrong = (qa == qb) | (np.sign(order * (qa - qb)) != np.sign(a - b))
     return real & wrong
+
+
+def max_depth_slope(window) -> np.ndarray:
+    """Direct3D's ``MaxDepthSlope`` of each triangle: ``max(|dz/dx|, |dz/dy|)`` in window space.
+
+    Parameters
+    ----------
+    window : (N, 3, 3) or (3, 3) array-like
+        Window-space vertices (x, y in pixels, z the window depth), e.g. from
+        :func:`teachraster.pipeline.viewport.to_window`.
+
+    Returns
+    -------
+    (N,) float64 ndarray (0-d for one triangle); NaN for a zero-area triangle.
+
+    Examples
+    --------
+    >>> float(max_depth_slope([[0, 0, 0.5], [10, 0, 0.6], [0, 10, 0.5]]))   # 0.01 per pixel in x
+    0.01
+    """
+    v = np.asarray(window, dtype=np.float64)
+    if v.shape[-2:] != (3, 3):
+        raise ValueError(f"window must have shape (N, 3, 3) or (3, 3), got {v.shape}")
+    e1, e2 = v[..., 1, :] - v[..., 0, :], v[..., 2, :] - v[..., 0, :]
+    # The plane z = z0 + gx (x - x0) + gy (y - y0) through the three vertices (lesson 03's M).
+    det = e1[..., 0] * e2[..., 1] - e2[..., 0] * e1[..., 1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gx = (e2[..., 1] * e1[..., 2] - e1[..., 1] * e2[..., 2]) / det
+        gy = (e1[..., 0] * e2[..., 2] - e2[..., 0] * e1[..., 2]) / det
+    out = np.maximum(np.abs(gx), np.abs(gy))
+    return np.where(det == 0, np.nan, out)
+
+
+def depth_bias(depth, fmt: str, *, units: float = 1.0, slope: float = 0.0,
+               slope_factor: float = 0.0) -> np.ndarray:  # fmt: skip
+    """Polygon offset: ``units * r + slope_factor * slope``, the amount to move a depth nearer.
+
+    Direct3D 11 computes ``DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope``
+    (OpenGL's ``glPolygonOffset(factor, units)`` is ``factor * slope + units * r``), where
+    ``r`` is the smallest difference the depth buffer resolves at ``depth``: one step of the
+    format (``1 / (2**B - 1)`` for unorm, the float spacing at ``depth`` for floats; Direct3D
+    takes the exponent of the triangle's largest depth, which is the same step). A decal drawn
+    on a wall with ``units >= 1`` stores a depth at least one step nearer, so it wins the depth
+    test instead of z-fighting; the slope term keeps that true across a steep triangle, whose
+    interpolated depths differ by more than one step from pixel to pixel.
+
+    Parameters
+    ----------
+    depth : array-like
+        Stored depth(s) where the offset applies (its step sets ``r``).
+    fmt : {"float64", "float32", "unorm24", "unorm16"}
+    units, slope_factor : float
+        The constant and slope-scaled factors.
+    slope : float or array-like
+        :func:`max_depth_slope` of the triangle (depth per pixel).
+
+    Returns
+    -------
+    float64 ndarray: the offset, >= 0 for non-negative factors. Subtract it (smaller is nearer)
+    or, with reverse-Z, add it.
+
+    Examples
+    --------
+    >>> float(depth_bias(0.5, "unorm16", units=1.0) * 65535)
+    1.0
+    >>> float(depth_bias(0.5, "float32", units=2.0)) == 2 * float(np.spacing(np.float32(0.5)))
+    True
+    """
+    if fmt not in DEPTH_FORMATS:
+        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    d = _distances("depth", depth, positive=False)
+    return np.asarray(float(units) * _step(d, fmt) + float(slope_factor) * np.asarray(slope, float))
+
+
+def offset_clip_depth(clip, offset) -> np.ndarray:
+    """Clip-space triangles whose window depth is moved by ``offset`` (per triangle or one).
+
+    Window depth is ``z / (2 w) + 1/2`` (CONVENTIONS), so adding ``2 * offset * w`` to clip
+    z moves the window depth of every point of the triangle by exactly ``offset`` and changes
+    nothing else: ``x``, ``y`` and ``w`` (hence coverage and interpolation) are untouched. Pass
+    ``-depth_bias(...)`` to pull a decal nearer (smaller is nearer).
+
+    Parameters
+    ----------
+    clip : (N, 3, 4) array-like
+        Clip-space triangles.
+    offset : float or (N,) array-like
+        Window-depth offset of each triangle.
+
+    Examples
+    --------
+    >>> out = offset_clip_depth([[[0, 0, 0.0, 2], [1, 0, 0.0, 2], [0, 1, 0.0, 2]]], -0.25)
+    >>> out[0, :, 2] / out[0, :, 3] / 2 + 0.5          # window depth 0.5 -> 0.25
+    array([0.25, 0.25, 0.25])
+    """
+    c = np.array(clip, dtype=np.float64)
+    if c.ndim != 3 or c.shape[1:] != (3, 4):
+        raise ValueError(f"clip must have shape (N, 3, 4), got {c.shape}")
+    off = np.broadcast_to(np.asarray(offset, dtype=np.float64), (c.shape[0],))
+    c[..., 2] += 2.0 * off[:, None] * c[..., 3]
+    return c
 
 
 # -- helpers ----------------------------------------------------------------------------------
@@ -269,6 +412,8 @@ def _mapping(mapping: str):
         return window_depth, True
     if mapping == "linear":
         return linear_depth, False
+    if mapping == "reversed":
+        return reversed_depth, True
     raise ValueError(f"mapping must be one of {MAPPINGS}, got {mapping!r}")
 
 

@@ -47,7 +47,8 @@ Per-pixel values
 
 Views (draw once, then update in place; for widgets and animations)
 -------------------------------------------------------------------
-- :class:`FillView` -- step through a fill: ``show_step(k)``, ``set_fill(new_fill)``.
+- :class:`FillView` -- step through a fill: ``show_step(k)``, ``set_fill(new_fill)``;
+  ``redraw()`` renders a step by blitting (:class:`~.blitting.LayeredBlit`).
 - :class:`InterpolationView` -- affine | perspective-correct | error heatmap, ``update(fill)``.
 - :class:`ComparisonView` -- any two images and their error heatmap, ``update(a, b)``.
 

@@ -1,6 +1,6 @@
 """Per-pixel images: barycentrics, attributes, the error heatmap, depth, colour, the plan.
 
-Every function draws on the Axes it is given and returns an :class:`~._common.Artists`
+Every function draws on the Axes it is given and returns an :class:`~.common.Artists`
 dataclass; the images also have an ``update(...)`` method that changes the data of the same
 artists (for views that follow a moving vertex or slider). NaN (no coverage) is drawn
 transparent, so whatever is below (the pixel grid, the background) shows through.
@@ -20,7 +20,7 @@ from ..core.trace import FillTrace
 from ..pipeline.render_plan import Plan
 from ..pipeline.render_scenes import SceneFrame
 from ..pipeline.render_triangles import Frame
-from ._common import (
+from .common import (
     Artists,
     as_trace,
     fs,
@@ -51,7 +51,7 @@ class ImageArtists(Artists):
             self.colorbar.update_normal(self.image)
 
 
-def _show(ax, data, *, cmap=None, vmin=None, vmax=None, colorbar=True, label=None, **kw):
+def show_values(ax, data, *, cmap=None, vmin=None, vmax=None, colorbar=True, label=None, **kw):
     """imshow a (H, W) value image (with a colour bar) or an (H, W, 3) colour image."""
     data = np.asarray(data, dtype=np.float64)
     if data.ndim == 3:
@@ -88,12 +88,12 @@ def plot_barycentric(
     trace = as_trace(fill, "plot_barycentric")
     lam = trace.image(trace.barycentric)
     if channel is None:
-        result = _show(ax, np.clip(lam, 0.0, 1.0))
+        result = show_values(ax, np.clip(lam, 0.0, 1.0))
         name = "λ0, λ1, λ2 as red, green, blue"
     else:
         if channel not in (0, 1, 2):
             raise ValueError(f"channel must be None, 0, 1 or 2, got {channel!r}")
-        result = _show(ax, lam[..., channel], vmin=0, vmax=1, colorbar=colorbar,
+        result = show_values(ax, lam[..., channel], vmin=0, vmax=1, colorbar=colorbar,
                        label=f"λ{channel}")  # fmt: skip
         name = f"barycentric λ{channel}: 1 at v{channel}, 0 opposite"
     if title:
@@ -191,7 +191,7 @@ def plot_attribute(
     ImageArtists
     """
     data = attribute_image(source, name, mode=mode, channel=channel)
-    result = _show(ax, data, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
+    result = show_values(ax, data, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
                    label=name)  # fmt: skip
     if title is None and name is not None:
         how = mode or (source.trace.interpolation if isinstance(source, Fill) and source.trace
@@ -335,7 +335,7 @@ def plot_depth(
         depth = source
     if depth is None:
         raise ValueError("no depth: give the triangle window depths, Triangle(..., z=[...])")
-    result = _show(ax, depth, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
+    result = show_values(ax, depth, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
                    label="window depth z (0 = near)")  # fmt: skip
     if title:
         ax.set_title("depth buffer")
@@ -358,7 +358,7 @@ def plot_image(ax, source, *, title: str | None = None) -> ImageArtists:
     rgb = source.image if isinstance(source, SceneFrame) else source
     if rgb is None:
         raise ValueError("this frame has no shaded image")
-    result = _show(ax, rgb)
+    result = show_values(ax, rgb)
     if title:
         ax.set_title(title)
     return result

@@ -1,6 +1,6 @@
 """Plots of one fill: the pixel grid, the triangle, the bounding box, the split, each step.
 
-Every function draws on the Axes it is given and returns an :class:`~._common.Artists`
+Every function draws on the Axes it is given and returns an :class:`~.common.Artists`
 dataclass (iterable like a list of the artists it created). Results that a view updates in
 place also have an ``update(...)`` method, which changes the *existing* artists' data
 (``set_data``, ``set_xy``, ``set_text``, ``set_visible``) and never adds new ones.
@@ -23,9 +23,9 @@ from matplotlib.text import Text
 from ..core.bbox import BBox
 from ..core.fill import Fill
 from ..core.span_tables import SpanTrace
-from ..core.trace import FillTrace
+from ..core.trace import FillTrace, Step
 from ..core.triangle import Triangle
-from ._common import (
+from .common import (
     Artists,
     annotate_near,
     as_coverage,
@@ -331,45 +331,21 @@ def plot_triangle(
             ax.add_patch(arrow)
             result.arrows.append(arrow)
     if labels:
-        for _ in range(3):
-            result.labels.append(
-                annotate_near(
-                    ax,
-                    "",
-                    (0, 0),
-                    xytext=(0, 0),
-                    textcoords="offset points",
-                    ha="center",
-                    va="center",
-                    fontsize=fs(0.95),
-                    fontweight="bold",
-                    color=color,
-                    bbox=label_box(),
-                    zorder=6,
-                    annotation_clip=False,
-                )  # fmt: skip
-            )
+        result.labels = _labels(ax, color, fontsize=fs(0.95), fontweight="bold", alpha=0.85)
     if edge_labels:
-        for _ in range(3):
-            result.edge_labels.append(
-                annotate_near(
-                    ax,
-                    "",
-                    (0, 0),
-                    xytext=(0, 0),
-                    textcoords="offset points",
-                    ha="center",
-                    va="center",
-                    fontsize=fs(0.75),
-                    style="italic",
-                    color=color,
-                    bbox=label_box(0.7),
-                    zorder=6,
-                    annotation_clip=False,
-                )  # fmt: skip
-            )
+        result.edge_labels = _labels(ax, color, fontsize=fs(0.75), style="italic", alpha=0.7)
     result.update(tri, edges)
     return result
+
+
+def _labels(ax, color, *, alpha: float, **style) -> list:
+    """Three empty labels in white boxes, placed later by TriangleArtists.update."""
+    return [
+        annotate_near(ax, "", (0, 0), xytext=(0, 0), textcoords="offset points", ha="center",
+                      va="center", color=color, bbox=label_box(alpha), zorder=6,
+                      annotation_clip=False, **style)
+        for _ in range(3)
+    ]  # fmt: skip
 
 
 # -- bounding box ------------------------------------------------------------------------------
@@ -457,7 +433,7 @@ class SplitArtists(Artists):
 def plot_split(ax, fill) -> SplitArtists:
     """The span-table split: the line y = v2.y, the point v4 = (u4, v2.y), the flat triangles.
 
-    Seed 000 §1.1: with the vertices sorted by y (v1 top, v3 bottom),
+    Ek, *Triangles and Perspective Correct Interpolation*, §1.1: with the vertices sorted by y (v1 top, v3 bottom),
     ``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` splits the triangle into a flat-bottom
     (v1, v2, v4) and a flat-top (v2, v4, v3) triangle.
 
@@ -502,21 +478,17 @@ class RasterLineArtists(Artists):
     span: Line2D
     cells: Rectangle
 
-    def update(self, fill, k: int) -> None:
-        """Show the raster line of step ``k`` (hidden unless step k fills a raster line)."""
-        trace = as_trace(fill, "plot_raster_line")
-        step = trace.step(k)
+    def update(self, step: Step) -> None:
+        """Show the raster line of ``step`` (hidden unless it fills a raster line)."""
         if step.kind != "row":
             self.set_visible(False)
             return
-        s = trace.span
-        i = step.index - trace.first_work_step
         row = step.row
-        self.band.set_bounds(0, row, trace.width, 1)
-        xl, xr = float(s.x_left[i]), float(s.x_right[i])
-        self.span.set_data([xl, xr], [row + 0.5, row + 0.5])
-        self.span.set_visible(bool(np.isfinite(xl) and np.isfinite(xr) and xr >= xl))
-        start, stop = int(s.col_start[i]), int(s.col_stop[i])
+        self.band.set_y(row)  # x spans the Axes: the band's transform is x-axes, y-data
+        self.span.set_visible(step.span_x is not None and step.span_x[1] >= step.span_x[0])
+        if step.span_x is not None:
+            self.span.set_data(list(step.span_x), [row + 0.5, row + 0.5])
+        start, stop = step.columns
         self.cells.set_bounds(start, row, stop - start, 1)
         self.cells.set_visible(stop > start)
         self.band.set_visible(True)
@@ -540,14 +512,16 @@ def plot_raster_line(ax, fill, k: int) -> RasterLineArtists:
         ``cells``: outline of the covered pixels of that row.
     """
     c = COLORS["current"]
-    band = Rectangle((0, 0), 0, 1, fc=c, ec="none", alpha=0.15, zorder=0.6)
+    # the whole width of the Axes: x in Axes coordinates, y in data (pixel rows)
+    band = Rectangle((0, 0), 1, 1, fc=c, ec="none", alpha=0.15, zorder=0.6,
+                     transform=ax.get_yaxis_transform())  # fmt: skip
     cells = Rectangle((0, 0), 0, 1, fill=False, ec=c, lw=lw(0.8), zorder=4.8)
     ax.add_patch(band)
     ax.add_patch(cells)
     span = ax.plot([], [], "-", color=c, lw=lw(0.9), marker="|", ms=ms(1.6), mew=lw(0.8),
                    solid_capstyle="butt", zorder=4.9)[0]  # fmt: skip
     result = RasterLineArtists(band, span, cells)
-    result.update(fill, k)
+    result.update(as_trace(fill, "plot_raster_line").step(k))
     return result
 
 
@@ -558,9 +532,8 @@ class PixelArtists(Artists):
     box: Rectangle
     centre: Line2D
 
-    def update(self, fill, k: int) -> None:
-        """Show the pixel of step ``k`` (hidden unless step k tests one pixel)."""
-        step = as_trace(fill, "plot_current_pixel").step(k)
+    def update(self, step: Step) -> None:
+        """Show the pixel of ``step`` (hidden unless it tests one pixel)."""
         if step.kind != "pixel":
             self.set_visible(False)
             return
@@ -589,7 +562,7 @@ def plot_current_pixel(ax, fill, k: int) -> PixelArtists:
     ax.add_patch(box)
     centre = ax.plot([], [], "x", color=c, ms=ms(1.0), mew=lw(0.7), zorder=4.9)[0]
     result = PixelArtists(box, centre)
-    result.update(fill, k)
+    result.update(as_trace(fill, "plot_current_pixel").step(k))
     return result
 
 
@@ -597,19 +570,11 @@ def plot_current_pixel(ax, fill, k: int) -> PixelArtists:
 def edge_images(fill) -> np.ndarray:
     """(H, W, 3) edge-function values E_k (px²) at every pixel centre, in test order.
 
-    Computed from the snapped vertices over the whole image, so the half-plane of each edge
-    shows beyond the bounding box too. On the snapped grid the values are exact in float64
-    (small dyadic numbers), and equal the half-plane trace's own inside its bounding box.
+    The trace's own edge tests (:meth:`~teachraster.core.trace.FillTrace.edge_images`) over
+    the whole image, so the half-plane of each edge shows beyond the bounding box too. Exact
+    on the snapped grid, and equal to the half-plane trace's values inside the box.
     """
-    trace = as_trace(fill, "edge_images")
-    xy = trace.snapped
-    rows, cols = np.indices((trace.height, trace.width))
-    px, py = cols + 0.5, rows + 0.5
-    out = np.empty((trace.height, trace.width, 3))
-    for k, (a, b) in enumerate(trace.edges):
-        (ax_, ay), (bx, by) = xy[a], xy[b]
-        out[..., k] = (bx - ax_) * (py - ay) - (by - ay) * (px - ax_)
-    return out
+    return as_trace(fill, "edge_images").edge_images()
 
 
 @dataclass
@@ -740,20 +705,9 @@ def bailout(fill) -> tuple[np.ndarray, np.ndarray]:
 
     ``rejected_by`` is -1 where the pixel is covered, else the position (0, 1, 2) of the first
     failing edge test; ``tests_run`` counts the tests a loop stopping at that failure runs.
-    A half-plane trace's own record is used where there is one.
+    As recorded by the trace (:meth:`~teachraster.core.trace.FillTrace.bail_out`).
     """
-    trace = as_trace(fill, "bailout")
-    if trace.halfplane is not None:
-        return trace.halfplane.rejected_by, trace.halfplane.tests_run
-    b = trace.bbox
-    e = edge_images(trace)[b.row0 : b.row1, b.col0 : b.col1]
-    ok = (e > 0) | ((e == 0) & np.asarray(trace.top_left)[None, None, :])
-    ok0, ok1, ok2 = ok[..., 0], ok[..., 1], ok[..., 2]
-    rejected = np.where(~ok0, 0, np.where(~ok1, 1, np.where(~ok2, 2, -1))).astype(np.int8)
-    run = (1 + ok0.astype(np.int8) + (ok0 & ok1)).astype(np.int8)
-    if trace.signed_area == 0:  # zero area: covers nothing though no test may fail
-        rejected = np.where(rejected < 0, 2, rejected).astype(np.int8)
-    return rejected, run
+    return as_trace(fill, "bailout").bail_out()
 
 
 def plot_bailout(ax, fill, *, annotate: bool | None = None, title: bool = True) -> BailoutArtists:
@@ -826,17 +780,10 @@ def visit_order(fill) -> tuple[np.ndarray, np.ndarray]:
     """(rows, cols) of the pixels a fill touches, in the order it touches them.
 
     Half-planes visit every pixel of the bounding box in row-major order; span tables write
-    only the covered pixels, raster line by raster line, left to right.
+    only the covered pixels, raster line by raster line, left to right. As numbered by the
+    trace (:meth:`~teachraster.core.trace.FillTrace.visit_order`).
     """
-    trace = as_trace(fill, "visit_order")
-    b = trace.bbox
-    if trace.culled:
-        return np.zeros(0, dtype=int), np.zeros(0, dtype=int)
-    if trace.method == "halfplane":
-        r, c = np.indices(b.shape)
-    else:
-        r, c = np.nonzero(trace.covered)  # row-major: the order the spans write them
-    return r.ravel() + b.row0, c.ravel() + b.col0
+    return as_trace(fill, "visit_order").visit_order()
 
 
 def plot_visit_order(

@@ -29,7 +29,7 @@ from ..core.tile_trace import KINDS, TileTrace
 from ..core.trace import FillTrace
 from ..core.traversal import TRAVERSALS, traversal_order
 from ..core.validate import check_choice
-from ._common import Artists, as_trace, fs, lw, pixel_axes, show_image
+from .common import Artists, as_trace, fs, lw, pixel_axes, show_image
 from .plots import plot_coverage, plot_pixel_grid, plot_triangle
 from .style import COLORS, OKABE_ITO, VALUE_CMAP
 

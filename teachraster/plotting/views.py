@@ -1,11 +1,13 @@
 """Composite figures that update in place: stepping through a fill, comparing interpolations.
 
-Both views draw their artists once. Afterwards :meth:`FillView.show_step`,
+The views draw their artists once. Afterwards :meth:`FillView.show_step`,
 :meth:`FillView.set_fill`, :meth:`ComparisonView.update` and :meth:`InterpolationView.update`
 only change those artists' data (``set_data``, ``set_xy``, ``set_text``, ``set_visible``),
 never clear the Axes or add artists, then ask the canvas for a redraw with ``draw_idle``. That
 keeps a step or a vertex drag fast enough for a slider in a notebook, and lets widgets drive
-the views from code.
+the views from code. For the fastest steps, :meth:`FillView.redraw` renders the canvas by
+blitting (:mod:`teachraster.plotting.blitting`): a cached background and still layers, with
+only the moving artists drawn again.
 
 The figures use fixed margins rather than a layout engine: a layout engine would run again at
 every redraw.
@@ -20,7 +22,8 @@ from matplotlib.colors import to_rgba
 from matplotlib.transforms import ScaledTranslation
 
 from ..core.trace import FillTrace, Step
-from ._common import (
+from .blitting import MOVING, STILL, LayeredBlit
+from .common import (
     Artists,
     as_trace,
     fs,
@@ -30,7 +33,7 @@ from ._common import (
     show_image,
     two_colour,
 )
-from .images import ImageArtists, _show, attribute_image, plot_error_heatmap
+from .images import ImageArtists, attribute_image, plot_error_heatmap, show_values
 from .plots import (
     plot_bbox,
     plot_coverage,
@@ -75,6 +78,16 @@ class FillView:
         A legend of the colours, to the right of the grid.
     centres : bool
         Mark the pixel centres (where coverage is decided).
+    caption : bool
+        Write the caption below the Axes (a widget may show it itself instead).
+    step_header : bool
+        Header "Half-planes: step k of n (kind)"; False: just the method, and a widget shows
+        the step (the header is then still, which makes a blitted step cheaper by half).
+
+    A step asks the trace for :meth:`~teachraster.core.trace.FillTrace.step` once and hands
+    the Step to the artists; which pixels are filled or rejected, and from which step on
+    the bounding box and the split show, come from the trace's accessors too.
+    :meth:`redraw` renders a step by blitting (only what moves is drawn again).
 
     Examples
     --------
@@ -91,7 +104,8 @@ class FillView:
     """
 
     def __init__(self, fill, *, ax=None, step: int | None = None, legend: bool = True,
-                 centres: bool = True) -> None:  # fmt: skip
+                 centres: bool = True, caption: bool = True,
+                 step_header: bool = True) -> None:  # fmt: skip
         trace = as_trace(fill, "FillView")
         if ax is None:
             # room on the right for the legend and below for a three-line caption
@@ -117,6 +131,9 @@ class FillView:
         # every word at every draw, which costs more than the rest of a step.
         self.caption_text = ax.text(0.0, -0.03, "", transform=ax.transAxes, va="top",
                                     ha="left", fontsize=fs(0.85), linespacing=1.3)  # fmt: skip
+        # A widget may show the caption itself (in full, selectable) instead.
+        self.caption_text.set_visible(caption)
+        self._step_header = step_header
         self._caption = ""
         self.legend = Key(ax, 5) if legend else None
         self._trace: FillTrace | None = None
@@ -178,32 +195,34 @@ class FillView:
             The step now on show (its ``caption`` is the caption displayed).
         """
         trace = self._trace
-        step = trace.step(k)
-        k = step.index
-        self._step = k
-        cov = trace.coverage_at(k).astype(np.float64)
-        self.coverage.image = set_image(self.coverage.image, cov)
-        if self._visit_step is not None:
-            b = trace.bbox
-            local = (self._visit_step <= k) & ~trace.covered
-            img = np.zeros((trace.height, trace.width))
-            img[b.row0 : b.row1, b.col0 : b.col1] = local
-            self.rejected = set_image(self.rejected, img)
+        step = trace.step(k)  # the one resolve of this tick: artists get the Step
+        k = self._step = step.index
+        self.coverage.image = set_image(self.coverage.image, trace.coverage_at(k).astype(float))
+        if trace.halfplane is not None:
+            rejected = trace.rejected_at(k)
+            self.rejected = set_image(self.rejected, rejected.astype(float))
             # nothing rejected yet: skip drawing the layer at all
-            self.rejected.set_visible(bool(local.any()))
-        self.bbox.outline.set_visible(k >= self._bbox_step)
+            self.rejected.set_visible(bool(rejected.any()))
+        boxed = k >= trace.bbox_step
+        self.bbox.outline.set_visible(boxed)
         # the pixels of the box are work only for half-planes, which test every one of them
-        self.bbox.cells.set_visible(k >= self._bbox_step and trace.halfplane is not None)
-        if k >= self._split_step:
+        self.bbox.cells.set_visible(boxed and trace.halfplane is not None)
+        split = trace.split_step is not None and k >= trace.split_step
+        if split:
             self.split.update(trace)  # shows the parts that exist
         else:
             self.split.set_visible(False)
-        self.raster_line.update(trace, k)
-        self.pixel.update(trace, k)
+        self._still = (boxed, split)
+        self.raster_line.update(step)
+        self.pixel.update(step)
         method = METHOD_NAMES.get(trace.method, trace.method)
-        self.header.set_text(f"{method}: step {k} of {len(trace) - 1} ({step.kind})")
+        if self._step_header:
+            self.header.set_text(f"{method}: step {k} of {len(trace) - 1} ({step.kind})")
+        else:
+            self.header.set_text(method)
         self._caption = step.caption
-        self.caption_text.set_text(self._wrap(step.caption))
+        if self.caption_text.get_visible():
+            self.caption_text.set_text(self._wrap(step.caption))
         if draw:
             self.fig.canvas.draw_idle()
         return step
@@ -239,14 +258,7 @@ class FillView:
             self.rejected = set_image(self.rejected, np.zeros((H, W)))
             self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
         self._trace = trace
-        kinds = [kind for kind, _ in trace.setup]
-        self._bbox_step = kinds.index("bbox") if "bbox" in kinds else 0
-        self._split_step = kinds.index("split") if "split" in kinds else len(trace)
-        if trace.halfplane is not None:
-            b = trace.bbox
-            self._visit_step = trace.first_work_step + np.arange(b.size).reshape(b.shape)
-        else:
-            self._visit_step = None
+        if trace.halfplane is None:
             self.rejected.set_visible(False)
         self.triangle.update(trace)
         # the edge names are what half-plane captions talk about; span captions do not
@@ -255,7 +267,44 @@ class FillView:
         self.bbox.update(trace)
         if self.legend is not None and (old is None or old.method != trace.method):
             self._make_legend(trace.method)
+        self.blit = self._blit_plan()  # new still artists; images may be new artists too
         return self.show_step(step, draw=draw)
+
+    # -- fast redraws ----------------------------------------------------------------------
+    def _blit_plan(self):
+        """What moves at a step and what stays, in drawing order (see LayeredBlit)."""
+        t, r, p = self.triangle, self.raster_line, self.pixel
+        split = self.split
+        middle = [self.grid.lines, *self.ax.spines.values(), self.bbox.outline, split.line,
+                  t.outline, *t.arrows, t.vertices]  # fmt: skip
+        if self.centres is not None:
+            middle[1:1] = [self.centres.inside, self.centres.outside]
+        return LayeredBlit(self.fig, [
+            (MOVING, [self.rejected, self.coverage.image, r.band]),
+            (STILL, middle),
+            (MOVING, [r.cells, p.box, r.span, p.centre]),
+            (STILL, [split.point, split.label, *t.labels, *t.edge_labels]),
+            # text costs more to draw than the pixels: the header moves only with the step
+            (MOVING, [self.header] if self._step_header else []),
+            (MOVING, [self.caption_text]),
+        ])  # fmt: skip
+
+    def redraw(self) -> bool:
+        """Render the figure into its (Agg-based) canvas now, as fast as the change allows.
+
+        After :meth:`show_step` only the moving artists (pixels filled and rejected, the
+        current raster line or pixel, step header, caption) are drawn again, over a cached
+        background and still layers (blitting); the first time, after :meth:`set_fill` and
+        when the bounding box or the split appears, the whole figure is drawn. Call
+        ``view.blit.invalidate()`` after changing other artists yourself. The result equals
+        ``fig.canvas.draw()`` up to rounding at anti-aliased edges.
+
+        Returns
+        -------
+        bool
+            True when the whole figure was drawn.
+        """
+        return self.blit.draw(self._still)
 
     def _make_legend(self, method: str) -> None:
         """Fill the key with what this method shows (same artists, new labels)."""
@@ -371,7 +420,7 @@ class ComparisonView:
         self.images: list[ImageArtists] = []
         for ax, data, title, cax in zip(self.axes[:2], (a, b), titles, caxes):
             # One colour bar, by the second panel: both value images share the range.
-            self.images.append(_show(ax, data, vmin=lo, vmax=hi, colorbar=False))
+            self.images.append(show_values(ax, data, vmin=lo, vmax=hi, colorbar=False))
             if ax is self.axes[1] and data.ndim == 2:
                 cb_kw = {"cax": cax} if cax is not None else {"ax": ax, "shrink": 0.85}
                 self.images[-1].colorbar = self.fig.colorbar(self.images[-1].image, **cb_kw)
@@ -470,6 +519,7 @@ class InterpolationView(ComparisonView):
         for tri in self.triangles:
             tri.outline.set_linewidth(tri.outline.get_linewidth() * 0.6)
         self._trace = trace
+        self.in_use = None  # the "in use" notes of highlight(), made when first needed
 
     def _images(self, trace):
         if self.name is None:
@@ -484,6 +534,28 @@ class InterpolationView(ComparisonView):
     @property
     def trace(self) -> FillTrace:
         return self._trace
+
+    def highlight(self, interpolation: str | None) -> None:
+        """Mark the panel of the interpolation in use ("affine" or "perspective") and fade
+        the other one; None shows both alike.
+
+        The mark is an "in use" note under the panel (in its title it would not fit at large
+        fonts) and a thick frame in the colour of the current step.
+        """
+        if self.in_use is None:
+            self.in_use = [
+                ax.text(0.5, -0.03, "in use", transform=ax.transAxes, ha="center", va="top",
+                        fontsize=fs(0.9), fontweight="bold", color=COLORS["current"])
+                for ax in self.axes[:2]
+            ]  # fmt: skip
+        for i, (ax, mark) in enumerate(zip(self.axes[:2], self.in_use)):
+            used = interpolation is not None and (i == 0) == (interpolation == "affine")
+            mark.set_visible(used)
+            for spine in ax.spines.values():
+                spine.set_edgecolor(COLORS["current"] if used else "black")
+                spine.set_linewidth(3.0 if used else 0.8)
+            faded = interpolation is not None and not used
+            self.images[i].image.set_alpha(0.4 if faded else 1.0)
 
     def update(self, fill, *, draw: bool = True) -> None:  # type: ignore[override]
         """Show another fill (e.g. after a vertex or its w moved) in the same artists."""

@@ -37,7 +37,7 @@ Example
 >>> player.close()
 """
 
-from ._display import BACKENDS, FigureDisplay, resolve_backend
+from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer

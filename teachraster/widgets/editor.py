@@ -12,8 +12,8 @@ from ..core.fill import rasterize
 from ..core.span_tables import split_point
 from ..core.triangle import Triangle
 from ..plotting import FillView, InterpolationView
-from ._common import Holdable, fill_axes, labelled, style_context, title_html
-from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .common import Holdable, close_tree, fill_axes, labelled, style_context, title_html
+from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
 #: ratios, which is what perspective depends on).
@@ -102,9 +102,8 @@ class TriangleEditor(Holdable):
         with style_context(style):
             self.fig = new_figure((7, 5), self.backend)
             ax = fill_axes(self.fig, width, height, side=4.0)
-            self.view = FillView(self.fill, ax=ax, step=-1)
             # a finished fill has no step to explain; the info line says what matters here
-            self.view.caption_text.set_visible(False)
+            self.view = FillView(self.fill, ax=ax, step=-1, caption=False)
             self.display = FigureDisplay(self.fig, self.backend)
             ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
             axes = comparison_axes(ifig, height, width)
@@ -262,8 +261,6 @@ class TriangleEditor(Holdable):
 
     def close(self) -> None:
         """Close every widget of the editor."""
-        from .player import _close_tree
-
         for d in (self.display, self.interp_display):
             d.close()
-        _close_tree(self.widget)
+        close_tree(self.widget)

@@ -9,9 +9,8 @@ import ipywidgets as widgets
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from ..plotting import COLORS, FillView, InterpolationView
-from ..plotting._common import fs
-from ._common import Holdable, fill_axes, labelled, style_context, title_html
-from ._display import (
+from .common import Holdable, close_tree, fill_axes, labelled, style_context, title_html
+from .display import (
     COMPARISON_DPI,
     FigureDisplay,
     comparison_axes,
@@ -66,10 +65,11 @@ class FillPlayer(Holdable):
     ----------
     widget : ipywidgets.VBox
         Everything, ready to display (the player also displays itself).
-    play, slider, speed, prev, next, first, last, method, interpolation, caption
+    play, slider, speed, prev, next, first, last, method, interpolation, caption, step_info
         The controls: ``Play`` (jslinked to ``slider``: it runs in the browser), the step
         ``IntSlider``, the Play interval in ms, the step buttons, the two
-        ``ToggleButtons`` and the ``HTML`` caption of the current step.
+        ``ToggleButtons``, the ``HTML`` caption of the current step and the ``Label`` by the
+        slider with the last step number and the kind of step ("of 787 (pixel)").
     view : FillView
     fig : matplotlib Figure
         The FillView's figure.
@@ -107,38 +107,43 @@ class FillPlayer(Holdable):
             raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
         self.tri, self.width, self.height = tri, width, height
         self.backend = resolve_backend(backend)
-        self.fill = rasterize(tri, width, height, method=method, interpolation=interpolation,
-                              trace=True)  # fmt: skip
-        trace = self.fill.trace
-        n = len(trace)
-        step = trace.step(step).index
-
+        self._fills: dict[tuple[str, str], object] = {}
+        self.fill = self._rasterize(method, interpolation)
+        step = self.trace.index(step)
         with style_context(style):
-            self.fig = new_figure((8, 6), self.backend)
-            ax = fill_axes(self.fig, width, height)
-            self.view = FillView(self.fill, ax=ax, step=step)
-            # The caption is a widget below the controls, in full and selectable; drawing it
-            # in the figure as well would cost time at every step.
-            self.view.caption_text.set_visible(False)
-            self.display = FigureDisplay(self.fig, self.backend)
-            self.interp_view = None
-            self.interp_display = None
-            if tri.attrs:
-                name = attribute or next(iter(tri.attrs))
-                ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-                axes = comparison_axes(ifig, height, width, below=True)
-                self.interp_view = InterpolationView(self.fill, name, axes=axes)
-                # "in use" goes under the panel: in its title it would not fit at large fonts
-                self.in_use = [
-                    ax.text(0.5, -0.03, "in use", transform=ax.transAxes, ha="center",
-                            va="top", fontsize=fs(0.9), fontweight="bold",
-                            color=COLORS["current"])
-                    for ax in self.interp_view.axes[:2]
-                ]  # fmt: skip
-                self._highlight(interpolation)
-                self.interp_display = FigureDisplay(ifig, self.backend)
+            self._make_figures(attribute, step, interpolation)
+        self._make_controls(step, interval, method, interpolation)
+        self.widget = self._layout()
 
-        # -- controls ---------------------------------------------------------------------------
+    # -- building ---------------------------------------------------------------------------
+    def _rasterize(self, method: str, interpolation: str):
+        """The traced fill for these options (each made once: toggling back costs nothing)."""
+        key = (method, interpolation)
+        if key not in self._fills:
+            self._fills[key] = rasterize(self.tri, self.width, self.height, method=method,
+                                         interpolation=interpolation, trace=True)  # fmt: skip
+        return self._fills[key]
+
+    def _make_figures(self, attribute, step: int, interpolation: str) -> None:
+        self.fig = new_figure((8, 6), self.backend)
+        ax = fill_axes(self.fig, self.width, self.height)
+        # The caption is a widget below the controls, in full and selectable; drawing it in
+        # the figure as well would cost time at every step.
+        # The step number and kind go to a label by the slider for the same reason.
+        self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False)
+        # Steps are blitted: only what moves is drawn again (see FillView.redraw).
+        self.display = FigureDisplay(self.fig, self.backend, draw=self.view.redraw)
+        self.interp_view = self.interp_display = None
+        if self.tri.attrs:
+            name = attribute or next(iter(self.tri.attrs))
+            ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
+            axes = comparison_axes(ifig, self.height, self.width, below=True)
+            self.interp_view = InterpolationView(self.fill, name, axes=axes)
+            self.interp_view.highlight(interpolation)
+            self.interp_display = FigureDisplay(ifig, self.backend)
+
+    def _make_controls(self, step: int, interval: int, method: str, interpolation: str):
+        n = len(self.trace)
         self.play = widgets.Play(value=step, min=0, max=n - 1, interval=interval,
                                  show_repeat=False, tooltip="play / pause")  # fmt: skip
         self.slider = widgets.IntSlider(value=step, min=0, max=n - 1, description="step",
@@ -153,15 +158,7 @@ class FillPlayer(Holdable):
         # A kernel-side link: the interval rarely changes, and this way setting speed.value
         # from code changes the Play too.
         self.speed_link = widgets.link((self.speed, "value"), (self.play, "interval"))
-        small = widgets.Layout(width="44px")
-        self.first = widgets.Button(icon="fast-backward", tooltip="first step", layout=small)
-        self.prev = widgets.Button(icon="step-backward", tooltip="previous step", layout=small)
-        self.next = widgets.Button(icon="step-forward", tooltip="next step", layout=small)
-        self.last = widgets.Button(icon="fast-forward", tooltip="last step", layout=small)
-        self.first.on_click(lambda _: self._go(0))
-        self.prev.on_click(lambda _: self._go(self.slider.value - 1))
-        self.next.on_click(lambda _: self._go(self.slider.value + 1))
-        self.last.on_click(lambda _: self._go(self.slider.max))
+        self._make_buttons()
         self.method = widgets.ToggleButtons(options=METHOD_OPTIONS, value=method,
                                             tooltips=["sort, split at u4, fill row by row",
                                                       "test every pixel of the bounding box "
@@ -174,17 +171,29 @@ class FillPlayer(Holdable):
         for toggle in (self.method, self.interpolation):
             toggle.style.button_width = "150px"
         self.caption = widgets.HTML(
-            html_escape(trace.caption(step)),
+            html_escape(self.trace.caption(step)),
             layout=widgets.Layout(min_height="3.2em", width="100%", padding="2px 6px",
                                   border=f"1px solid {COLORS['grid']}"),
         )  # fmt: skip
         self.caption.style.font_size = "15px"
+        self.step_info = widgets.Label(self._step_info(self.trace.step(step)))
         self.caption.add_class("teachraster-caption")  # a handle for styling and browser tests
-
         self.slider.observe(self._on_step, "value")
         self.method.observe(self._on_fill_options, "value")
         self.interpolation.observe(self._on_fill_options, "value")
 
+    def _make_buttons(self) -> None:
+        small = widgets.Layout(width="44px")
+        self.first = widgets.Button(icon="fast-backward", tooltip="first step", layout=small)
+        self.prev = widgets.Button(icon="step-backward", tooltip="previous step", layout=small)
+        self.next = widgets.Button(icon="step-forward", tooltip="next step", layout=small)
+        self.last = widgets.Button(icon="fast-forward", tooltip="last step", layout=small)
+        self.first.on_click(lambda _: self._go(0))
+        self.prev.on_click(lambda _: self._go(self.slider.value - 1))
+        self.next.on_click(lambda _: self._go(self.slider.value + 1))
+        self.last.on_click(lambda _: self._go(self.slider.max))
+
+    def _layout(self) -> widgets.VBox:
         title = title_html(
             "How a GPU fills a triangle, step by step",
             "Press play, drag the step slider or use the buttons; switch the method and the "
@@ -193,9 +202,10 @@ class FillPlayer(Holdable):
         figures = [self.display.widget]
         if self.interp_display is not None:
             figures.append(self.interp_display.widget)
-        self.widget = widgets.VBox([
+        return widgets.VBox([
             title,
-            widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last]),
+            widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last,
+                          self.step_info]),
             widgets.HBox([labelled("method", self.method),
                           labelled("interpolation", self.interpolation)]),
             self.speed,
@@ -222,7 +232,7 @@ class FillPlayer(Holdable):
     # -- driving ----------------------------------------------------------------------------
     def show_step(self, k: int) -> None:
         """Show step ``k`` (the same as setting ``slider.value``; negative counts from the end)."""
-        self.slider.value = self.trace.step(k).index
+        self.slider.value = self.trace.index(k)
 
     def _go(self, k: int) -> None:
         self.slider.value = min(max(k, self.slider.min), self.slider.max)
@@ -233,40 +243,39 @@ class FillPlayer(Holdable):
 
     def _draw_step(self, k: int) -> None:
         step = self.view.show_step(k, draw=False)
-        self.caption.value = html_escape(step.caption)
+        self._show_caption(step)
         self.display.refresh()
 
+    def _show_caption(self, step) -> None:
+        self.caption.value = html_escape(step.caption)
+        self.step_info.value = self._step_info(step)
+
+    def _step_info(self, step) -> str:
+        """``"of 787 (pixel)"``: beside the slider's own readout of the step number."""
+        return f"of {len(self.trace) - 1} ({step.kind})"
+
     def _on_fill_options(self, change) -> None:
-        self.fill = rasterize(self.tri, self.width, self.height, method=self.method.value,
-                              interpolation=self.interpolation.value, trace=True)  # fmt: skip
-        trace = self.fill.trace
-        last = len(trace) - 1
-        # A finished fill stays finished; otherwise keep the step index (as FillView does).
-        at_end = self.slider.value >= self.slider.max
-        k = last if at_end else min(self.slider.value, last)
+        self.fill = self._rasterize(self.method.value, self.interpolation.value)
+        # The view decides the step (a finished fill stays finished, else the same index);
+        # the slider follows it.
+        step = self.view.set_fill(self.fill, draw=False)
+        last = len(self.trace) - 1
         with self._holding():
             # widen before moving, narrow after, so the value is never out of range
             self.slider.max = self.play.max = max(last, self.slider.max)
-            self.slider.value = k
+            self.slider.value = step.index
             self.slider.max = self.play.max = last
-        step = self.view.set_fill(self.fill, step=k, draw=False)
-        self.caption.value = html_escape(step.caption)
+        self._show_caption(step)
         self.display.refresh()
         if self.interp_view is not None:
             self.interp_view.update(self.fill, draw=False)
-            self._highlight(self.interpolation.value)
+            self.interp_view.highlight(self.interpolation.value)
             self.interp_display.refresh()
 
-    def _highlight(self, interpolation: str) -> None:
-        """Mark the panel of the interpolation in use; fade the other one."""
-        view = self.interp_view
-        for i, (ax, mark) in enumerate(zip(view.axes[:2], self.in_use)):
-            used = (i == 0) == (interpolation == "affine")
-            mark.set_visible(used)
-            for spine in ax.spines.values():
-                spine.set_edgecolor(COLORS["current"] if used else "black")
-                spine.set_linewidth(3.0 if used else 0.8)
-            view.images[i].image.set_alpha(1.0 if used else 0.4)
+    @property
+    def in_use(self) -> list:
+        """The "in use" notes under the interpolation panels (empty without attributes)."""
+        return [] if self.interp_view is None else self.interp_view.in_use
 
     # -- display ----------------------------------------------------------------------------
     def _repr_mimebundle_(self, **kwargs):
@@ -279,11 +288,4 @@ class FillPlayer(Holdable):
                 d.close()
         self.link.close()
         self.speed_link.unlink()
-        _close_tree(self.widget)
-
-
-def _close_tree(widget) -> None:
-    """Close a widget and, depth first, every widget inside it."""
-    for child in getattr(widget, "children", ()):
-        _close_tree(child)
-    widget.close()
+        close_tree(self.widget)

@@ -11,8 +11,8 @@ from ..pipeline.camera import Camera
 from ..pipeline.render_scenes import render
 from ..pipeline.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
-from ._common import style_context, title_html
-from ._display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .common import close_tree, style_context, title_html
+from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -203,7 +203,5 @@ class TexturedPlaneViewer:
 
     def close(self) -> None:
         """Close every widget of the viewer."""
-        from .player import _close_tree
-
         self.display.close()
-        _close_tree(self.widget)
+        close_tree(self.widget)

@@ -9,8 +9,8 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_coverage, plot_pixel_grid, plot_triangle
 from ..plotting.tiles import block_mask
-from ._common import Holdable, fill_axes, labelled, style_context, title_html
-from ._display import FigureDisplay, html_escape, new_figure, resolve_backend
+from .common import Holdable, fill_axes, labelled, style_context, title_html
+from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
 #: Block-size choices: llvmpipe's, and smaller hierarchies that read on a small grid.
 SIZE_OPTIONS = [

@@ -77,3 +77,10 @@ def labelled(text: str, control) -> widgets.HBox:
     return widgets.HBox(
         [label, control], layout=widgets.Layout(align_items="center", margin="0 24px 0 0")
     )
+
+
+def close_tree(widget) -> None:
+    """Close a widget and, depth first, every widget inside it."""
+    for child in getattr(widget, "children", ()):
+        close_tree(child)
+    widget.close()

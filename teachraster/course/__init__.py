@@ -1,0 +1,43 @@
+"""Where the course is: the lesson notebooks and the exercise notebooks, as files.
+
+A wheel carries them as package data (``teachraster/course/notebooks/``, written by the build:
+see ``setup.py``), with the exercises already in their student version. In a checkout of the
+repository (an editable install) they are read from ``notebooks/`` itself, where the exercises
+are the teacher versions; :func:`teachraster.exercises.student_version.student_notebook` turns
+either into the student version (it leaves a student version unchanged).
+
+Standard library only: ``teachraster lessons`` needs no numpy to copy files.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+#: Inside an installed wheel.
+PACKAGED = Path(__file__).resolve().parent / "notebooks"
+#: In a checkout of the repository: teachraster/course -> the repository's notebooks/.
+CHECKOUT = Path(__file__).resolve().parents[2] / "notebooks"
+
+
+def notebooks_dir() -> Path:
+    """The directory holding the lessons (and ``exercises/``): packaged, else the checkout's.
+
+    Raises ``FileNotFoundError`` when neither exists (an installation without its data).
+    """
+    for path in (PACKAGED, CHECKOUT):
+        if any(path.glob("*.ipynb")):
+            return path
+    raise FileNotFoundError(
+        f"no lesson notebooks in {PACKAGED} or {CHECKOUT}: reinstall teachraster from a wheel "
+        "or a checkout of its repository"
+    )
+
+
+def lessons() -> list[Path]:
+    """The lesson notebooks, in course order (00_..., 01_..., ...)."""
+    return sorted(notebooks_dir().glob("*.ipynb"))
+
+
+def exercises() -> list[Path]:
+    """The exercise notebooks, in course order (teacher versions in a checkout)."""
+    return sorted((notebooks_dir() / "exercises").glob("*.ipynb"))

@@ -1,0 +1,21 @@
+"""Exercises with a checker that explains every wrong answer by the rules.
+
+>>> from teachraster import exercises as ex
+>>> ex.names()
+['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near']
+>>> report = ex.check("depth_test", lambda incoming, stored: incoming <= stored)
+>>> report.passed
+False
+>>> print(report.failures[0].explanation)      # doctest: +ELLIPSIS
+the incoming depth 0.5 equals the stored 0.5: a tie keeps the fragment already stored ...
+
+The checker sits above the study layer: it takes its cases from the hard-case catalogue
+(:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one
+top-left rule and one reference for every answer. matplotlib is imported only when a report
+is drawn (:meth:`Report.plot`).
+"""
+
+from .checks import check, names
+from .report import Failure, Report
+
+__all__ = ["Failure", "Report", "check", "names"]

@@ -1,0 +1,155 @@
+"""The cases every check runs: the hard-case catalogue first, then seeded random ones.
+
+Random triangles come in both windings, with vertices on pixel centres or anywhere on the
+1/256-px grid, flat-topped and flat-bottomed, smaller than a pixel, far from the origin (up to
+1e5 px: a window of pixels around the triangle is tested) and, for the coverage exercises
+only, of zero area. The seed is fixed, so a student sees the same cases on every run.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.snapping import snap
+from ..study.hardcases import CASES
+
+#: Seed of the random cases (fixed: the same cases on every run).
+SEED = 20240610
+#: Side of the window a random coverage case is tested on (small: Python loops stay fast).
+WINDOW = 12
+
+
+@dataclass(frozen=True)
+class CoverageCase:
+    """Triangles tested on a window of ``size`` = (width, height) pixels at ``origin``.
+
+    ``origin`` = (col0, row0) is the window's top-left pixel in the image: pixel (i, j) of
+    the window has its centre at (col0 + j + 0.5, row0 + i + 0.5). ``mesh`` cases must cover
+    each centre once over all their triangles.
+    """
+
+    label: str
+    triangles: np.ndarray  # (n, 3, 2) absolute pixel positions, on the 1/256 grid
+    origin: tuple[int, int]
+    size: tuple[int, int]
+    mesh: bool = False
+
+
+def winding(xy: np.ndarray) -> str:
+    """Words for the winding of a triangle as seen on screen (y down)."""
+    a = (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (
+        xy[2, 0] - xy[0, 0]
+    )
+    if a == 0:
+        return "zero area"
+    return "clockwise on screen" if a > 0 else "counter-clockwise on screen"
+
+
+def catalogue_coverage() -> list[CoverageCase]:
+    """Screen-space cases of the hard-case catalogue, snapped to the 1/256 grid."""
+    out = []
+    for name, case in CASES.items():
+        tris = case.inputs.get("triangles")
+        if tris is None or case.kind not in ("triangle", "triangles", "mesh"):
+            continue
+        w, h = case.inputs["size"]
+        out.append(CoverageCase(name, snap(tris), (0, 0), (int(w), int(h)), case.kind == "mesh"))
+    local = snap(CASES["far_from_origin"].inputs["local"])
+    for offset in CASES["far_from_origin"].inputs["offsets"]:
+        if 0 < offset <= 1e5:
+            o = int(offset)
+            tri = local - local.min(axis=0) + 1.0 + o
+            out.append(CoverageCase(f"far_from_origin at {o} px", tri[None], (o, o), (16, 16)))
+    return out
+
+
+def _random_triangle(rng, kind: str, clockwise: bool) -> np.ndarray:
+    lo, hi = 0.5, WINDOW - 0.5
+    if kind == "centres":
+        xy = rng.integers(0, WINDOW, size=(3, 2)) + 0.5
+    elif kind == "flat":
+        xy = rng.integers(0, WINDOW, size=(3, 2)) + 0.5
+        xy[1, 1] = xy[0, 1]
+    elif kind == "subpixel":
+        xy = snap(rng.uniform(0, 1.2, size=(3, 2)) + rng.integers(1, WINDOW - 2, size=2))
+    elif kind == "zero area":
+        a = rng.integers(1, WINDOW // 2, size=2) + 0.5
+        d = rng.integers(-2, 3, size=2)
+        xy = np.array([a, a + d, a + 2 * d], dtype=float)
+    else:  # anywhere on the 1/256-px grid
+        xy = snap(rng.uniform(lo, hi, size=(3, 2)))
+    area = (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (
+        xy[2, 0] - xy[0, 0]
+    )
+    if (area > 0) != clockwise:
+        xy = xy[[1, 0, 2]]  # the other winding: swap two vertices
+    return np.roll(xy, rng.integers(0, 3), axis=0)
+
+
+#: Kinds of random triangles and how many of each (both windings alternate).
+RANDOM_KINDS = (("centres", 6), ("grid", 8), ("flat", 4), ("subpixel", 4), ("zero area", 2))
+
+
+def random_coverage(zero_area: bool = True, far: bool = True) -> list[CoverageCase]:
+    """Seeded random coverage cases (see the module docstring)."""
+    rng = np.random.default_rng(SEED)
+    out = []
+    n = 0
+    for kind, count in RANDOM_KINDS:
+        for i in range(count):
+            xy = _random_triangle(rng, kind, clockwise=i % 2 == 0)
+            n += 1
+            if kind == "zero area" and not zero_area:
+                continue
+            words = (
+                _kind_words[kind] if kind == "zero area" else f"{winding(xy)}, {_kind_words[kind]}"
+            )
+            label = f"random {n}: {words}"
+            out.append(CoverageCase(label, xy[None], (0, 0), (WINDOW, WINDOW)))
+    for offset in (30_000, 100_000) if far else ():
+        for clockwise in (True, False):
+            xy = _random_triangle(rng, "grid", clockwise) + offset
+            n += 1
+            label = f"random {n}: {winding(xy)}, on the 1/256 grid, {offset} px from the origin"
+            out.append(CoverageCase(label, xy[None], (offset, offset), (WINDOW, WINDOW)))
+    for clockwise in (True, False) if far else ():
+        # vertices 1/256 px to the right of pixel centres: centres lie just beside the edges,
+        # which float32 (1/128 px apart here, ties to even) puts exactly on them
+        xy = _random_triangle(rng, "centres", clockwise) + (100_000 + 1 / 256, 100_000)
+        n += 1
+        label = (
+            f"random {n}: {winding(xy)}, vertices 1/256 px right of pixel centres, "
+            "100000 px from the origin"
+        )
+        out.append(CoverageCase(label, xy[None], (100_000, 100_000), (WINDOW, WINDOW)))
+    return out
+
+
+_kind_words = {
+    "centres": "vertices on pixel centres",
+    "grid": "vertices on the 1/256 grid",
+    "flat": "a horizontal edge",
+    "subpixel": "smaller than a pixel",
+    "zero area": "zero area (collinear vertices)",
+}
+
+
+def proper_triangles() -> list[tuple[str, np.ndarray]]:
+    """(label, xy) of non-degenerate triangles, catalogue then random, including far ones."""
+    out = []
+    for case in catalogue_coverage() + random_coverage(zero_area=False):
+        for k, xy in enumerate(case.triangles):
+            a = (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (
+                xy[2, 0] - xy[0, 0]
+            )
+            if a != 0:
+                suffix = f", triangle {k}" if len(case.triangles) > 1 else ""
+                out.append((case.label + suffix, xy))
+    return out
+
+
+def sorted_by_y(xy: np.ndarray) -> np.ndarray:
+    """v1, v2, v3 sorted by y (stable, as the span-table fill sorts them)."""
+    return xy[np.argsort(xy[:, 1], kind="stable")]

@@ -1,0 +1,115 @@
+"""Small figures of a case for :meth:`Report.plot` (matplotlib is imported only in here,
+and only when a report is drawn)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+#: Pixel states: right and empty, right and covered, missing, extra.
+STATE_COLOURS = ("#ffffff", "#c8c8c8", "#2b7bba", "#d7301f")
+STATE_NAMES = ("", "covered", "missing (the rule covers it)", "extra (the rule does not)")
+EDGE_COLOUR = "#ff9f1c"
+
+
+def draw_coverage(ax, case, xy, expected, got, edge, pixel):
+    """Pixels of the window coloured by state, the triangle, the deciding edge, the pixel."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    h, w = expected.shape
+    state = np.where(expected == got, expected.astype(int), np.where(expected, 2, 3))
+    x0, y0 = case.origin
+    artists = [
+        ax.imshow(
+            state,
+            cmap=ListedColormap(STATE_COLOURS),
+            vmin=0,
+            vmax=3,
+            extent=(x0, x0 + w, y0 + h, y0),
+            interpolation="nearest",
+        )
+    ]
+    ax.set_xticks(np.arange(x0, x0 + w + 1), minor=True)
+    ax.set_yticks(np.arange(y0, y0 + h + 1), minor=True)
+    ax.grid(which="minor", color="#eeeeee", linewidth=0.5)
+    ring = np.vstack([xy, xy[:1]])
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    for k, v in enumerate(xy):
+        artists.append(ax.annotate(f"v{k + 1}", v, fontsize="x-small", color="black"))
+    if edge is not None:
+        a, b = xy[edge], xy[(edge + 1) % 3]
+        artists += ax.plot([a[0], b[0]], [a[1], b[1]], color=EDGE_COLOUR, linewidth=3)
+    if pixel is not None:
+        i, j = pixel
+        artists += ax.plot(x0 + j + 0.5, y0 + i + 0.5, "o", mfc="none", mec="black", ms=9)
+    handles = [Patch(color=STATE_COLOURS[s], label=STATE_NAMES[s]) for s in (1, 2, 3)]
+    # outside the axes, to the right: the legend must never hide a pixel
+    legend = ax.legend(
+        handles=handles, fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)
+    )
+    artists.append(legend)
+    ax.set_xlim(x0, x0 + w)
+    ax.set_ylim(y0 + h, y0)
+    ax.set_aspect("equal")
+    return artists
+
+
+def draw_values(ax, labels, expected, got):
+    """Expected and got side by side as bars (``got`` may be None: nothing to show yet)."""
+    x = np.arange(len(labels))
+    artists = list(ax.bar(x - 0.2, expected, width=0.4, color="#c8c8c8", label="expected"))
+    if got is not None:
+        ok = np.isclose(got, expected, rtol=1e-9, atol=1e-9)
+        colours = np.where(ok, "#c8c8c8", STATE_COLOURS[3])
+        artists += list(ax.bar(x + 0.2, got, width=0.4, color=colours, hatch="//", label="yours"))
+    ax.set_xticks(x, labels)
+    ax.axhline(0, color="black", linewidth=0.5)
+    artists.append(ax.legend(fontsize="x-small"))
+    return artists
+
+
+def draw_bars(ax, labels, values, wrong):
+    """One bar per value; ``wrong[k]`` marks the student's bar that is wrong in red."""
+    colours = [STATE_COLOURS[3] if bad else "#c8c8c8" for bad in wrong]
+    artists = list(ax.bar(np.arange(len(values)), values, color=colours))
+    ax.set_xticks(np.arange(len(values)), labels)
+    ax.axhline(0, color="black", linewidth=0.5)
+    return artists
+
+
+def draw_split(ax, v, expected, got):
+    """The sorted triangle, the line v = v2.y, the true v4 and the student's."""
+    ring = np.vstack([v, v[:1]])
+    artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    artists += ax.plot([v[0, 0], v[2, 0]], [v[0, 1], v[2, 1]], color=EDGE_COLOUR, linewidth=3)
+    artists.append(ax.axhline(v[1, 1], color="#888888", linestyle=":"))
+    artists += ax.plot(expected, v[1, 1], "o", color="#2b7bba", label="v4 (expected)")
+    if got is not None and np.isfinite(got):
+        artists += ax.plot(got, v[1, 1], "x", color=STATE_COLOURS[3], ms=10, label="your u4")
+    for k, p in enumerate(v):
+        artists.append(ax.annotate(f"v{k + 1}", p, fontsize="x-small"))
+    ax.set_ylim(v[:, 1].max() + 1, v[:, 1].min() - 1)
+    ax.set_aspect("equal", adjustable="datalim")
+    artists.append(ax.legend(fontsize="x-small"))
+    return artists
+
+
+def draw_clip(ax, v, expected, got):
+    """Triangle and polygons over (x, z + w): the near plane is the line z + w = 0."""
+
+    def ring(p):
+        p = np.vstack([p, p[:1]])
+        return p[:, 0], p[:, 2] + p[:, 3]
+
+    artists = list(ax.plot(*ring(v), color="black", linewidth=1, label="triangle"))
+    artists.append(ax.axhline(0, color=EDGE_COLOUR, linewidth=2, label="near plane z + w = 0"))
+    if len(expected):
+        artists += ax.plot(*ring(expected), "o-", color="#2b7bba", label="clipped (expected)")
+    if got is not None and len(got):
+        artists += ax.plot(*ring(got), "x--", color=STATE_COLOURS[3], label="yours")
+    for k, p in enumerate(v):
+        artists.append(ax.annotate(f"v{k + 1}", (p[0], p[2] + p[3]), fontsize="x-small"))
+    ax.set_xlabel("x (clip space)")
+    ax.set_ylabel("z + w (inside ≥ 0)")
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    return artists

@@ -1,0 +1,259 @@
+"""Cases and explanations of the exercises with a number or a few as the answer.
+
+``edge_function``, ``split_point``, ``barycentric``, ``perspective`` and ``depth_test``:
+expected values come from the core (:func:`~teachraster.core.edges.edge_function`,
+:func:`~teachraster.core.span_tables.split_point`,
+:func:`~teachraster.core.barycentrics.barycentric`,
+:func:`~teachraster.core.interpolation.perspective_weights` with
+:func:`~teachraster.core.interpolation.blend`); each explanation quotes the case's numbers and,
+where a typical mistake reproduces the student's answer, names it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.barycentrics import barycentric
+from ..core.edges import edge_function
+from ..core.interpolation import blend, perspective_weights
+from ..core.span_tables import split_point
+from ..study.hardcases import CASES
+from .cases import SEED, proper_triangles, sorted_by_y
+from .tolerance import all_close, close
+
+
+def num(x: float, other: float | None = None) -> str:
+    """``x`` with 3 decimals, or more when needed to tell it from ``other``.
+
+    >>> num(3.04545), num(1.0000001, 1.0), num(2.0), num(100009.73828125)
+    ('3.045', '1.0000001', '2', '100009.73828125')
+    """
+    x = float(x)
+    if not np.isfinite(x):
+        return repr(x)
+    if 0 < abs(x) < 1e-3:  # tiny values (w next to the eye plane) keep their digits
+        return f"{x:.3g}"
+    if other is None and (x * 256).is_integer() and abs(x) < 2**40:
+        # on the 1/256 grid (positions): exactly, so that the student can reproduce the case
+        return f"{x:.8f}".rstrip("0").rstrip(".")
+    for digits in (3, 6, 9, 12, 15, 17):
+        text = f"{x:.{digits}f}"
+        if other is None or not np.isfinite(other) or text != f"{float(other):.{digits}f}":
+            break
+    text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("", "-0") else text
+
+
+def factor(x: float) -> str:
+    """A number to multiply by: negative ones in parentheses."""
+    return f"({num(x)})" if x < 0 else num(x)
+
+
+def vec(v, other=None) -> str:
+    v = np.asarray(v, dtype=float).ravel()
+    o = [None] * len(v) if other is None else np.asarray(other, dtype=float).ravel()
+    if len(o) != len(v):
+        o = [None] * len(v)
+    return "(" + ", ".join(num(a, b) for a, b in zip(v, o)) + ")"
+
+
+def tri_words(xy) -> str:
+    return f"v1={vec(xy[0])}, v2={vec(xy[1])}, v3={vec(xy[2])}"
+
+
+def _centre_near(p) -> np.ndarray:
+    return np.floor(p) + 0.5
+
+
+# -- edge_function ----------------------------------------------------------------------------
+def edge_function_cases():
+    out = []
+    for n, (label, xy) in enumerate(proper_triangles()):
+        k = n % 3
+        a, b = xy[k], xy[(k + 1) % 3]
+        p = _centre_near(xy.mean(axis=0)) if n % 2 else xy[(k + 2) % 3]
+        out.append(
+            (f"{label}, edge v{k + 1}→v{(k + 1) % 3 + 1}", (a, b, p), float(edge_function(a, b, p)))
+        )
+    return out
+
+
+def explain_edge_function(args, expected, got) -> str:
+    a, b, p = args
+    where = f"a={vec(a)}, b={vec(b)}, p={vec(p)}"
+    if close(got, -expected):
+        return (
+            f"for {where} your {num(got)} is −E: E(a, b, p) = (b.x − a.x)(p.y − a.y) − "
+            f"(b.y − a.y)(p.x − a.x) = {num(expected)}, positive on the interior side; you "
+            "have the two products (or a and b) the other way round"
+        )
+    far = float(np.abs([a, b, p]).max())
+    hint = ""
+    if far > 1e4:
+        hint = (
+            f" At {num(far)} px from the origin float32 numbers are "
+            f"{num(float(np.spacing(np.float32(far))))} px apart and cannot hold the 1/256 grid: "
+            "compute in float64"
+        )
+    return (
+        f"for {where}, E = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) = "
+        f"{factor(b[0] - a[0])}·{factor(p[1] - a[1])} − {factor(b[1] - a[1])}·"
+        f"{factor(p[0] - a[0])} = "
+        f"{num(expected, got)}; yours is {num(got, expected)}." + hint
+    )
+
+
+# -- split_point ------------------------------------------------------------------------------
+def split_point_cases():
+    v = np.array([[2.5, 1.5], [9.5, 4.5], [4.5, 12.5]])  # issue 10's example
+    out = [("a long edge to the left", (v,), split_point(v))]
+    for label, xy in proper_triangles():
+        v = sorted_by_y(xy)
+        if v[0, 1] != v[2, 1]:
+            out.append((label, (v,), split_point(v)))
+    return out
+
+
+def explain_split_point(args, expected, got) -> str:
+    (v,) = args
+    (u1, v1), (u2, v2), (u3, v3) = v
+    head = f"your u4 is {num(got, expected)} for {tri_words(v)}"
+    rule = f"the long edge meets v = {num(v2)} at u = {num(expected, got)}"
+    if close(got, expected - u1) and not close(u1, 0):
+        return f"{head}; {rule} (did you add u1?)"
+    if close(got, u1 + (v2 - v1) / (v3 - v1) * (u2 - u1)):
+        return f"{head}; {rule}: u4 lies on the long edge v1→v3, so use u3 − u1, not u2 − u1"
+    if close(got, u1 + (v3 - v1) / (v2 - v1) * (u3 - u1)) if v2 != v1 else False:
+        return f"{head}; {rule}: the fraction is (v2 − v1)/(v3 − v1), not its inverse"
+    return f"{head}; {rule} = (v2 − v1)/(v3 − v1)·(u3 − u1) + u1 (similar triangles)"
+
+
+# -- barycentric ------------------------------------------------------------------------------
+def barycentric_cases():
+    rng = np.random.default_rng(SEED + 1)
+    out = []
+    for label, xy in proper_triangles():
+        lo, hi = xy.min(axis=0), xy.max(axis=0)
+        for p in (_centre_near(xy.mean(axis=0)), _centre_near(rng.uniform(lo, hi))):
+            out.append((f"{label}, p={vec(p)}", (xy, p), barycentric(xy, p)))
+    return out
+
+
+def explain_barycentric(args, expected, got) -> str:
+    xy, p = args
+    got = np.asarray(got, dtype=float)
+    head = f"at p={vec(p)} in {tri_words(xy)} your λ = {vec(got, expected)}"
+    right = f"the weights are {vec(expected, got)}"
+    area = float(edge_function(xy[0], xy[1], xy[2]))
+    if all_close(got, -expected):
+        return (
+            f"{head}; {right}: divide by the signed area E(v1, v2, v3) = {num(area)} (negative: "
+            "this triangle runs counter-clockwise on screen), not by its absolute value"
+        )
+    for perm in ((0, 2, 1), (1, 0, 2), (2, 1, 0), (1, 2, 0), (2, 0, 1)):
+        if all_close(got, expected[list(perm)]):
+            return (
+                f"{head}; {right}: the same numbers in another order. λ_i belongs to v_i: the "
+                "area of the sub-triangle opposite v_i (p with the other two) over the whole"
+            )
+    far = float(np.abs(xy).max())
+    if far > 1e4:
+        return (
+            f"{head}; {right} (error {num(np.abs(got - expected).max())}). {num(far)} px from "
+            f"the origin float32 numbers are {num(float(np.spacing(np.float32(far))))} px apart, "
+            "and a plane A·x + B·y + C evaluated in absolute coordinates cancels catastrophically: "
+            "compute differences p − v to a vertex first, in float64"
+        )
+    error = float(np.abs(got - expected).max())
+    if error < 1e-5:
+        return (
+            f"{head}; {right}: they differ by {error:.1g}, about float32's rounding "
+            "(6e-8 relative): compute in float64"
+        )
+    if not close(got.sum(), 1.0):
+        return f"{head}, which sum to {num(got.sum())}; {right} and always sum to 1"
+    return (
+        f"{head}; {right}: λ_i = E of the edge opposite v_i at p, divided by "
+        f"E(v1, v2, v3) = {num(area)}"
+    )
+
+
+# -- perspective ------------------------------------------------------------------------------
+def _perspective(lam, w, f) -> float:
+    return float(blend(perspective_weights(np.asarray(lam)[None], np.asarray(w)), np.asarray(f))[0])
+
+
+def perspective_cases():
+    rng = np.random.default_rng(SEED + 2)
+    ws = [np.array([1.0, 2.0, 4.0])]
+    for name in ("perspective_w_ratio_1e6", "perspective_w_scale"):
+        # subnormal w (1e-310) is left to the catalogue's own test: there 1/w overflows and a
+        # straightforward correct formula would fail for a reason the exercise does not teach
+        ws += [w for w in CASES[name].inputs["ws"] if w.min() >= np.finfo(float).tiny]
+    ws += list(np.exp(rng.uniform(np.log(0.1), np.log(100.0), size=(8, 3))))
+    lams = [np.array([0.2, 0.3, 0.5]), np.array([1.0, 0, 0]), np.array([0, 0.5, 0.5])]
+    out = []
+    for n, w in enumerate(ws):
+        f = np.array([0.0, 1.0, 2.0]) if n == 0 else np.round(rng.uniform(-5, 5, 3), 2)
+        for lam in lams + [rng.dirichlet(np.ones(3))]:
+            args = (lam, np.asarray(w, dtype=float), f)
+            out.append((f"λ={vec(lam)}, w={vec(w)}, f={vec(f)}", args, _perspective(*args)))
+    return out
+
+
+def explain_perspective(args, expected, got) -> str:
+    lam, w, f = args
+    head = f"at λ={vec(lam)}, w={vec(w)}, f={vec(f)} your {num(got, expected)}"
+    right = f"the perspective-correct value is {num(expected, got)}"
+    affine = float(lam @ f)
+    times_w = float((lam * w) @ f / (lam @ w))
+    unnormalised = float((lam / w) @ f)
+    if close(got, affine) and not close(affine, expected):
+        return f"{head} is the affine Σλf; {right}: divide by w"
+    if close(got, times_w) and not close(times_w, expected):
+        return f"{head} is Σλ·f·w / Σλ·w: you multiplied by w; {right}: divide by w instead"
+    if close(got, unnormalised) and not close(unnormalised, expected):
+        return (
+            f"{head} is Σλf/w; {right}: divide it by Σλ/w = {num(lam @ (1 / w))} (the "
+            "interpolated 1/w)"
+        )
+    return f"{head}; {right} = Σλf/w ÷ Σλ/w = {num((lam / w) @ f)} ÷ {num(lam @ (1 / w))}"
+
+
+# -- depth_test -------------------------------------------------------------------------------
+def depth_test_cases():
+    rng = np.random.default_rng(SEED + 3)
+    pairs = [(0.5, 0.5), (0.3, 0.7), (0.7, 0.3), (0.0, 0.0), (1.0, 1.0), (0.0, 1.0), (1.0, 0.0)]
+    pairs += [(np.nextafter(0.5, 0.0), 0.5), (np.nextafter(0.5, 1.0), 0.5), (-0.0, 0.0)]
+    for a, b in rng.uniform(0, 1, size=(10, 2)):
+        pairs += [(a, b), (a, a)]
+    # the catalogue's coplanar_overlap: two triangles in one plane give equal depths
+    label = "coplanar_overlap: equal depths of two coplanar triangles"
+    out = [
+        (
+            label if a == b and n == 0 else f"incoming {num(a)}, stored {num(b)}",
+            (float(a), float(b)),
+            bool(a < b),
+        )
+        for n, (a, b) in enumerate(pairs)
+    ]
+    return out
+
+
+def explain_depth_test(args, expected, got) -> str:
+    a, b = args
+    if a == b:
+        return (
+            f"the incoming depth {num(a)} equals the stored {num(b)}: a tie keeps the fragment "
+            "already stored (the conventions: strictly smaller depth passes, ties keep the "
+            "earlier triangle); your function let it pass: use <, not <="
+        )
+    if a > b:
+        return (
+            f"the incoming depth {num(a, b)} is farther than the stored {num(b, a)} (smaller "
+            "depth is nearer): it must fail; your function let it pass"
+        )
+    return (
+        f"the incoming depth {num(a, b)} is nearer than the stored {num(b, a)} (smaller depth "
+        "is nearer): it passes; your function rejected it"
+    )

@@ -1,0 +1,301 @@
+"""The four groups of the study: each variant's error against its ground truth, and its time."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...core.fill import rasterize
+from ...core.triangle import Triangle
+from ...pipeline.camera import perspective
+from ...pipeline.depth import linear_depth
+from ...pipeline.render_scenes import render
+from .. import precision
+from .ground_truth import exact_coverage, uv_ground_truth
+from .settings import (
+    DEPTH_DISTANCES,
+    DEPTH_FORMATS,
+    DEPTH_GAP,
+    DEPTH_MAPPINGS,
+    EDGE_VARIANTS,
+    FAR,
+    MESH_OFFSETS,
+    NEAR,
+    SUBDIVISIONS,
+    TEXELS,
+)
+from .timing import Progress, time_rows
+
+
+# -- interpolation ----------------------------------------------------------------------------
+def floor_quad(size: int, roll: float = 25.0):
+    """A floor receding from 0.6 to 60 units, as two window-space triangles with w and uv.
+
+    A pinhole camera of focal length ``size / 2`` px, 1 unit above the floor and rolled by
+    ``roll`` degrees about its view axis. Without the roll every raster line of a level
+    floor has one depth, so perspective is affine along each span and subdivided
+    interpolation would be exact (why Quake drew floors along lines of constant depth); the
+    roll makes w change along the rows, the general case. A camera-space point (X, Y, Z)
+    lands at ``(c + f X / Z, c + f Y / Z)`` (y down) with w = Z. Positions are put on the
+    1/256 px grid, so the rasteriser's snapped triangle *is* the geometry and the only error
+    left is interpolation's. u runs 0..1 across, v 0..1 from near to far.
+
+    Returns
+    -------
+    xy (2, 3, 2), w (2, 3), uv (2, 3, 2)
+    """
+    f = c = size / 2
+    corners = np.array([[-4.0, 0.6], [4.0, 0.6], [4.0, 60.0], [-4.0, 60.0]])  # (X, Z)
+    uv = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    a = math.radians(roll)
+    X = corners[:, 0] * math.cos(a) - 1.0 * math.sin(a)  # the floor is 1 unit below (y down)
+    Y = corners[:, 0] * math.sin(a) + 1.0 * math.cos(a)
+    w = corners[:, 1]
+    xy = np.column_stack([c + f * X / w, c + f * Y / w])
+    xy = np.rint(xy * 256) / 256
+    tris = np.array([[0, 1, 2], [0, 2, 3]])
+    return xy[tris], w[tris], uv[tris]
+
+
+def _divides(cov: np.ndarray, mode: str, n: int) -> int:
+    """Perspective divides a scalar span loop performs: the cost numpy's timing hides.
+
+    Per pixel for perspective, none for affine, and for subdivided one at every n-th pixel
+    of each span and at its last pixel (see ``interpolation.subdivided``).
+    """
+    if mode == "affine":
+        return 0
+    lengths = cov.sum(axis=1)
+    lengths = lengths[lengths > 0]
+    if mode == "perspective":
+        return int(lengths.sum())
+    return int((-(-lengths // n) + ((lengths - 1) % n != 0)).sum())
+
+
+def bench_interpolation(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+    size = cfg["interp"]
+    xy, w, uv = floor_quad(size)
+    tris = [Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}) for t in range(2)]
+    truth = []
+    for t in range(2):
+        cov = rasterize(tris[t], size, size).coverage
+        rows, cols = np.nonzero(cov)
+        truth.append((cov, uv_ground_truth(xy[t], w[t], uv[t], size, rows, cols)))
+    modes = [("affine", "affine", 1), ("perspective", "perspective", 1)]
+    modes += [(f"subdivided N={n}", "subdivided", n) for n in SUBDIVISIONS]
+    rows_out, timers = [], []
+    for name, mode, n in modes:
+
+        def fill(mode=mode, n=n):
+            return [rasterize(t, size, size, interpolation=mode, subdivision=n) for t in tris]
+
+        errs = []
+        for fl, (cov, want) in zip(fill(), truth):
+            errs.append(np.abs(fl.attrs["uv"][cov] - want).ravel() * TEXELS)
+        err = np.concatenate(errs)
+        divides = sum(_divides(cov, mode, n) for cov, _ in truth)
+        rows_out.append(
+            {
+                "group": "interpolation",
+                "variant": name,
+                "error": float(err.max()),
+                "mean_abs_texels": float(err.mean()),
+                "divides_per_pixel": divides / len(err) * 2,  # err holds u and v: 2 per pixel
+            }
+        )
+        timers.append(fill)
+        progress.step(f"interpolation: {name}")
+    return time_rows(rows_out, timers, repeat, progress, "perspective")
+
+
+# -- edge functions ---------------------------------------------------------------------------
+def random_triangles(size: int, seed: int = 6) -> np.ndarray:
+    """Fixed triangles near the origin: 12 with arbitrary float vertices, 12 on the half-pixel
+    grid (edges through pixel centres and corners: ties everywhere)."""
+    rng = np.random.default_rng(seed)
+    floats = rng.uniform(-0.1 * size, 1.1 * size, size=(12, 3, 2))
+    ties = rng.integers(0, 2 * size, size=(12, 3, 2)) / 2.0
+    return np.concatenate([floats, ties])
+
+
+def jittered_mesh(size: int, cells: int = 4, seed: int = 3) -> np.ndarray:
+    """A watertight mesh filling [1, size - 1]²: a grid of ``cells`` x ``cells`` quads with
+    randomly moved inner vertices (border vertices slide along the border only), each quad
+    split along alternating diagonals. Big triangles: long rows for stepping to drift on."""
+    rng = np.random.default_rng(seed)
+    step = (size - 2) / cells
+    g = np.stack(np.meshgrid(np.arange(cells + 1), np.arange(cells + 1)), -1) * step
+    jitter = rng.uniform(-0.35, 0.35, g.shape) * step
+    jitter[[0, -1], :, 1] = 0  # top and bottom rows stay on their lines
+    jitter[:, [0, -1], 0] = 0  # left and right columns too
+    g = g + jitter + 1.0
+    tris = []
+    for r in range(cells):
+        for c in range(cells):
+            a, b, cc, d = g[r, c], g[r, c + 1], g[r + 1, c + 1], g[r + 1, c]
+            tris += [[a, b, cc], [a, cc, d]] if (r + c) % 2 else [[a, b, d], [b, cc, d]]
+    return np.array(tris)
+
+
+def _scale_label(offset: int) -> str:
+    return "0" if offset == 0 else f"1e{round(math.log10(offset))}"
+
+
+def bench_edges(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+    size, msize = cfg["edges"], cfg["mesh"]
+    tris = random_triangles(size)
+    ref8 = [exact_coverage(t, size, size, 8) for t in tris]
+    ref_raw = [exact_coverage(t, size, size, None) for t in tris]
+    mesh = jittered_mesh(msize)
+    meshes = {}
+    for off in MESH_OFFSETS:
+        # Absolute coordinates off + local ones: the image is the window at (off, off).
+        placed = mesh + float(off)
+        refs = [exact_coverage(t, msize, msize, 8, origin=(off, off)) for t in placed]
+        counts = np.sum(refs, axis=0)
+        assert counts.max() <= 1, "the reference mesh must be watertight"
+        meshes[off] = (placed, refs, counts)
+    rows_out, timers = [], []
+    for arith, ev in EDGE_VARIANTS:
+
+        def fill(arith=arith, ev=ev):
+            return [precision.coverage(t, size, size, arith, ev) for t in tris]
+
+        got = fill()
+        row = {
+            "group": "edge functions",
+            "variant": f"{arith} {ev}",
+            "wrong_px_random": int(sum((g != r).sum() for g, r in zip(got, ref8))),
+            "wrong_px_unsnapped_geometry": int(sum((g != r).sum() for g, r in zip(got, ref_raw))),
+        }
+        total_wrong, gaps, double = row["wrong_px_random"], 0, 0
+        for off, (placed, refs, want) in meshes.items():
+            counts = np.zeros((msize, msize), dtype=np.int32)
+            wrong = 0
+            for t, ref in zip(placed, refs):
+                cov = precision.coverage(t, msize, msize, arith, ev, origin=(off, off))
+                wrong += int((cov != ref).sum())
+                counts += cov
+            label = _scale_label(off)
+            row[f"mesh_wrong_px_at_{label}"] = wrong
+            row[f"gaps_at_{label}"] = int(((want == 1) & (counts == 0)).sum())
+            row[f"double_hits_at_{label}"] = int((counts > 1).sum())
+            total_wrong += wrong
+            gaps += row[f"gaps_at_{label}"]
+            double += row[f"double_hits_at_{label}"]
+        row.update(error=total_wrong, gaps=gaps, double_hits=double, cracks=gaps + double)
+        rows_out.append(row)
+        timers.append(fill)
+        progress.step(f"edge functions: {arith} {ev}")
+    return time_rows(rows_out, timers, repeat, progress, "fixed8 direct")
+
+
+# -- fill algorithms --------------------------------------------------------------------------
+def fill_triangle(size: int) -> Triangle:
+    """About half the image, with w = 1, 2, 4 and uv: the work of a typical textured fill."""
+    xy = np.array([[0.013, 0.021], [0.987, 0.063], [0.197, 0.979]]) * size
+    return Triangle(xy, w=[1.0, 2.0, 4.0], attrs={"uv": [[0, 0], [1, 0], [0, 1]]})
+
+
+def bench_fill(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+    rows_out = []
+    for size in cfg["fill"]:
+        tri = fill_triangle(size)
+        ref = exact_coverage(tri.xy, size, size, 8)
+        block, timers = [], []
+        for method in ("halfplane", "span"):
+            for traced in (False, True):
+                name = f"{method}{'+trace' if traced else ''} {size}²"
+
+                def fill(method=method, traced=traced, tri=tri, size=size):
+                    return rasterize(tri, size, size, method=method, trace=traced)
+
+                block.append(
+                    {
+                        "group": "fill",
+                        "variant": name,
+                        "error": int((fill().coverage != ref).sum()),
+                        "pixels": int(ref.sum()),
+                    }
+                )
+                timers.append(fill)
+                progress.step(f"fill: {name}")
+        rows_out += time_rows(block, timers, repeat, progress, f"halfplane {size}²")
+    return rows_out
+
+
+# -- depth ------------------------------------------------------------------------------------
+def depth_pairs(aspect: float = 1.0):
+    """Pairs of camera-facing triangles, one pair per distance in :data:`DEPTH_DISTANCES`.
+
+    Pair k sits in cell k of a 3 x 3 layout of the screen: a triangle at view distance
+    ``z + DEPTH_GAP`` is drawn first, then one at ``z`` shifted a little sideways, so most
+    of the two overlap. A depth buffer that cannot tell them apart stores a tie, and the
+    tie keeps the earlier, *farther* triangle: an inversion. Facing the camera, each
+    triangle has one view distance, so any depth mapping (linear too) is affine over it.
+
+    Returns
+    -------
+    view (2K, 3, 3) view-space vertices, z_view (2K,) their distances.
+    """
+    proj = perspective(60.0, aspect, NEAR, FAR)
+    t = 1.0 / proj[1, 1]  # tan(fov / 2)
+    shape = np.array([[-0.28, -0.25], [0.25, -0.3], [-0.05, 0.28]])  # NDC, about the cell
+    view, z_view = [], []
+    for k, z in enumerate(DEPTH_DISTANCES):
+        centre = np.array([(k % 3 - 1) * 2 / 3, (1 - k // 3) * 2 / 3])
+        for dz, shift in ((DEPTH_GAP, 0.0), (0.0, 0.06)):
+            ndc = centre + shape + [shift, 0.0]
+            d = z + dz
+            pts = np.column_stack([ndc[:, 0] * d * t * aspect, ndc[:, 1] * d * t, -np.full(3, d)])
+            view.append(pts)
+            z_view.append(d)
+    return np.array(view), np.array(z_view)
+
+
+def depth_clip(view: np.ndarray, mapping: str, aspect: float = 1.0) -> np.ndarray:
+    """Clip coordinates storing the window depth, or ``linear_depth`` of the view distance."""
+    proj = perspective(60.0, aspect, NEAR, FAR)
+    homo = np.concatenate([view, np.ones(view.shape[:2] + (1,))], axis=2)
+    clip = homo @ proj.T
+    if mapping == "linear":
+        # z_win = (z/w)/2 + 1/2 = linear_depth  <=>  z = w (2 linear_depth - 1); exact per
+        # vertex, and affine across these camera-facing triangles.
+        w = clip[..., 3]
+        clip[..., 2] = w * (2 * linear_depth(-view[..., 2], NEAR, FAR) - 1)
+    return clip
+
+
+def bench_depth(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+    size = cfg["depth"]
+    view, z_view = depth_pairs()
+    # Ground truth: the painter's algorithm with exact view distances, far to near, no
+    # depth buffer at all (valid: the triangles face the camera and do not intersect).
+    order = np.argsort(-z_view, kind="stable")
+    painted = render(depth_clip(view[order], "window"), size, size, depth_test=False)
+    truth = np.where(painted.triangle_id >= 0, order[painted.triangle_id], -1)
+    pair_of = np.where(truth >= 0, truth // 2, -1)
+    rows_out, timers = [], []
+    for mapping in DEPTH_MAPPINGS:
+        clip = depth_clip(view, mapping)
+        for fmt in DEPTH_FORMATS:
+
+            def draw(clip=clip, fmt=fmt):
+                return render(clip, size, size, depth_format=fmt)
+
+            wrong = draw().triangle_id != truth
+            bad_pairs = sorted(set(pair_of[wrong].tolist()) - {-1})
+            first = DEPTH_DISTANCES[bad_pairs[0]] if bad_pairs else ""
+            rows_out.append(
+                {
+                    "group": "depth",
+                    "variant": f"{mapping} {fmt}",
+                    "error": int(wrong.sum()),
+                    "first_inverted_z": first,
+                    "inverted_pairs": len(bad_pairs),
+                }
+            )
+            timers.append(draw)
+            progress.step(f"depth: {mapping} {fmt}")
+    return time_rows(rows_out, timers, repeat, progress, "window float64")

@@ -1,0 +1,66 @@
+"""Timing: interleaved medians (a busy machine slows every variant alike) and progress."""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import time
+from collections.abc import Callable
+
+from .settings import ERROR_MEASURE
+
+
+# -- timing and progress ----------------------------------------------------------------------
+def time_interleaved(fns: list[Callable[[], object]], repeat: int) -> list[float]:
+    """Median wall time of each ``fn()``, measured round-robin: one call of each per round.
+
+    Other work on the machine (another process, a CPU-frequency change) then slows every
+    variant alike instead of whichever happened to be measured at that moment, so the
+    ratios between variants stay fair on a busy machine. Two untimed warm-up rounds come
+    first.
+    """
+    for _ in range(2):
+        for fn in fns:
+            fn()
+    times = [[] for _ in fns]
+    for _ in range(max(1, repeat)):
+        for fn, record in zip(fns, times):
+            t0 = time.perf_counter()
+            fn()
+            record.append(time.perf_counter() - t0)
+    return [statistics.median(t) for t in times]
+
+
+def time_rows(rows: list[dict], fns: list, repeat: int, progress: Progress, baseline: str):
+    """Time a group's variants together (:func:`time_interleaved`), then add the ratios."""
+    for row, t in zip(rows, time_interleaved(fns, repeat)):
+        row["time_median_s"] = t
+    progress.step(f"{rows[0]['group']}: timing")
+    return _ratios(rows, baseline)
+
+
+class Progress:
+    """A one-line text progress bar on stderr (no dependency)."""
+
+    def __init__(self, total: int, enabled: bool = True, width: int = 30):
+        self.total, self.done, self.enabled, self.width = total, 0, enabled, width
+
+    def step(self, label: str) -> None:
+        self.done += 1
+        if not self.enabled:
+            return
+        filled = round(self.width * self.done / self.total)
+        bar = "#" * filled + "-" * (self.width - filled)
+        sys.stderr.write(f"\r[{bar}] {self.done:2d}/{self.total} {label[:40]:<40}")
+        if self.done == self.total:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+
+
+def _ratios(rows: list[dict], baseline: str) -> list[dict]:
+    base = next(r["time_median_s"] for r in rows if r["variant"] == baseline)
+    for r in rows:
+        r["time_ratio_to_baseline"] = r["time_median_s"] / base
+        r["baseline"] = baseline
+        r["error_measure"] = ERROR_MEASURE[r["group"]]
+    return rows

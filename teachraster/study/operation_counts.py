@@ -1,0 +1,220 @@
+"""What each variant of the accuracy study costs in operations, and meshes that crack.
+
+Wall-clock time of numpy code is a poor cost model: numpy pays per array pass, not per
+arithmetic operation, and the order of close variants changes between runs. Lesson 06 therefore
+counts what a scalar rasteriser would execute, per pixel, for each variant of
+:mod:`teachraster.study.bench`: **divides**, **multiplies** and **additions** (subtractions and
+comparisons count as additions), and the **bits of precision** the arithmetic keeps. The counts
+follow from the formulas, not from timing:
+
+- *interpolation*, per pixel along a span, one attribute ``u`` (plus ``1/w``):
+  affine steps ``u`` (1 addition); perspective-correct steps ``u/w`` and ``1/w`` (2 additions)
+  and recovers ``u = (u/w) / (1/w)`` (1 divide, or a reciprocal and 1 multiply: counted as
+  1 divide + 1 multiply); subdivided by ``N`` does that only at every ``N``-th pixel and steps
+  ``u`` affinely in between (per pixel: ``1/N`` divides, ``2/N`` multiplies, ``1 + 3/N``
+  additions);
+- *edge functions*, per tested pixel, three edges: direct
+  ``E = (b_x - a_x)(p_y - a_y) - (b_y - a_y)(p_x - a_x)`` with the edge's differences set up
+  once (2 multiplies, 3 additions per edge), incremental one addition per edge;
+- *fill*, per triangle: half-planes test every centre of the bounding box incrementally
+  (3 additions and 3 comparisons per centre); span tables compute ``u4`` (1 divide) and
+  two crossings per raster line (1 divide, 1 multiply, 2 additions each; the pixels of a span
+  need no test);
+- *depth*: one comparison per fragment; the format sets the bits stored.
+
+:data:`CYCLES_1990S` weights the three operations roughly as an early-1990s FPU did (a divide
+costing tens of additions); :func:`cycles` applies any weights.
+
+:func:`tie_mesh` and :func:`crack_counts` build a watertight mesh whose shared edges pass
+through pixel centres and count the pixels a coverage rule leaves uncovered (gaps) or covers
+twice (double hits): the top-left rule gives none, ``E >= 0`` double hits, ``E > 0`` gaps.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.fill import rasterize
+from ..core.triangle import Triangle
+from . import bench
+
+#: Rough cost of each operation in cycles on a early-1990s floating-point unit (an addition
+#: 1, a multiply 3, a divide 20-40): the weights of :func:`cycles`.
+CYCLES_1990S = {"divides": 30.0, "multiplies": 3.0, "additions": 1.0}
+#: Bits of precision the arithmetic keeps: the significand of a float, a whole int64.
+BITS_KEPT = {"fixed8": 63, "fixed4": 63, "float64": 53, "float32": 24, "unsnapped": 53}
+DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
+RULES = ("top-left", "E >= 0", "E > 0")
+
+
+@dataclass(frozen=True)
+class OpCount:
+    """Operations per pixel (or per triangle for the fill group), and bits kept."""
+
+    divides: float
+    multiplies: float
+    additions: float
+    bits: int | None = None
+    per: str = "pixel"
+
+
+def interpolation_count(variant: str) -> OpCount:
+    """Operations per pixel of one interpolated attribute (see the module docstring).
+
+    >>> interpolation_count("subdivided N=16")
+    OpCount(divides=0.0625, multiplies=0.125, additions=1.1875, bits=53, per='pixel')
+    """
+    if variant == "affine":
+        return OpCount(0.0, 0.0, 1.0, 53)
+    if variant == "perspective":
+        return OpCount(1.0, 1.0, 2.0, 53)
+    if variant.startswith("subdivided N="):
+        n = int(variant.split("=")[1])
+        return OpCount(1.0 / n, 2.0 / n, 1.0 + 3.0 / n, 53)
+    raise ValueError(f"unknown interpolation variant {variant!r}")
+
+
+def edge_count(variant: str) -> OpCount:
+    """Operations per tested pixel for three edge functions, and the bits kept.
+
+    >>> edge_count("float32 incremental")
+    OpCount(divides=0.0, multiplies=0.0, additions=3.0, bits=24, per='pixel')
+    """
+    arith, evaluation = variant.split()
+    if arith not in BITS_KEPT or evaluation not in ("direct", "incremental"):
+        raise ValueError(f"unknown edge-function variant {variant!r}")
+    if evaluation == "direct":
+        return OpCount(0.0, 6.0, 9.0, BITS_KEPT[arith])
+    return OpCount(0.0, 0.0, 3.0, BITS_KEPT[arith])
+
+
+def edge_bits_needed(size: int, offset: float, subpixel_bits: int = 8) -> int:
+    """Bits an exact edge function needs: positions at ``offset`` and the products of differences.
+
+    A position up to ``offset + size`` px on a 1/2**s grid needs ``log2(offset + size) + s``
+    bits; a difference of two positions ``log2(size) + s + 1`` (its sign), their product twice
+    that. Exact arithmetic needs the larger of the two.
+
+    >>> edge_bits_needed(64, 0), edge_bits_needed(64, 1_000_000)
+    (31, 31)
+    """
+    position = math.ceil(math.log2(offset + size)) + subpixel_bits
+    difference = math.ceil(math.log2(size)) + subpixel_bits + 1
+    return max(position, 2 * difference + 1)
+
+
+def fill_count(variant: str) -> OpCount:
+    """Operations per triangle of the study's fill triangle for ``"halfplane …"`` / ``"span …"``.
+
+    Counted on the triangle :func:`teachraster.study.bench.fill_triangle` fills at that size
+    (the trace adds bookkeeping, not arithmetic: the same counts).
+    """
+    method = variant.split()[0].split("+")[0]
+    size = int(variant.split()[-1].rstrip("²"))
+    trace = rasterize(bench.fill_triangle(size), size, size, method="halfplane", trace=True).trace
+    if method == "halfplane":
+        n = trace.bbox.size
+        return OpCount(0.0, 0.0, 6.0 * n, None, "triangle")
+    if method == "span":
+        rows = trace.bbox.row1 - trace.bbox.row0
+        return OpCount(1.0 + 2.0 * rows, 2.0 * rows, 4.0 * rows, None, "triangle")
+    raise ValueError(f"unknown fill variant {variant!r}")
+
+
+def count(row: dict) -> OpCount:
+    """:class:`OpCount` of a row of :func:`teachraster.study.bench.run`."""
+    group, variant = row["group"], row["variant"]
+    if group == "interpolation":
+        return interpolation_count(variant)
+    if group == "edge functions":
+        return edge_count(variant)
+    if group == "fill":
+        return fill_count(variant)
+    if group == "depth":
+        return OpCount(0.0, 0.0, 1.0, DEPTH_BITS[variant.split()[1]], "fragment")
+    raise ValueError(f"unknown group {group!r}")
+
+
+def cycles(op: OpCount, weights: dict | None = None) -> float:
+    """Weighted cost of ``op``: divides, multiplies and additions times their weights.
+
+    >>> cycles(interpolation_count("perspective"))
+    35.0
+    """
+    w = CYCLES_1990S if weights is None else weights
+    return (
+        op.divides * w["divides"] + op.multiplies * w["multiplies"] + op.additions * w["additions"]
+    )
+
+
+def with_counts(rows: list[dict], weights: dict | None = None) -> list[dict]:
+    """Copies of ``rows`` with ``divides``, ``multiplies``, ``additions``, ``bits``,
+    ``cycles`` and ``per`` added (the operation counts beside the measured time)."""
+    out = []
+    for row in rows:
+        op = count(row)
+        out.append({**row, "divides": op.divides, "multiplies": op.multiplies,
+                    "additions": op.additions, "bits": op.bits, "per": op.per,
+                    "cycles": cycles(op, weights)})  # fmt: skip
+    return out
+
+
+# -- cracks -----------------------------------------------------------------------------------
+def tie_mesh(size: int = 24, cells: int = 3, seed: int = 5) -> np.ndarray:
+    """A watertight mesh of (2 cells²) triangles whose vertices are all on pixel centres.
+
+    Inner grid vertices move by whole pixels, so every edge, shared or not, passes through
+    pixel centres at regular steps: ties (E = 0) on every shared edge.
+    """
+    rng = np.random.default_rng(seed)
+    step = (size - 2) // cells
+    g = np.stack(np.meshgrid(np.arange(cells + 1), np.arange(cells + 1)), -1) * step + 1.5
+    jitter = rng.integers(-(step // 3), step // 3 + 1, g.shape).astype(float)
+    jitter[[0, -1], :, 1] = 0
+    jitter[:, [0, -1], 0] = 0
+    g = g + jitter
+    tris = []
+    for r in range(cells):
+        for c in range(cells):
+            a, b, cc, d = g[r, c], g[r, c + 1], g[r + 1, c + 1], g[r + 1, c]
+            tris += [[a, b, cc], [a, cc, d]] if (r + c) % 2 else [[a, b, d], [b, cc, d]]
+    return np.array(tris)
+
+
+def rule_coverage(xy, width: int, height: int, rule: str) -> np.ndarray:
+    """Coverage of one triangle in float64 under ``rule``: "top-left", "E >= 0" or "E > 0".
+
+    >>> tri = [[0.5, 0.5], [4.5, 0.5], [0.5, 4.5]]          # edges through centres
+    >>> [int(rule_coverage(tri, 6, 6, r).sum()) for r in RULES]
+    [10, 15, 3]
+    """
+    if rule not in RULES:
+        raise ValueError(f"rule must be one of {RULES}, got {rule!r}")
+    xy = np.asarray(xy, dtype=np.float64)
+    a, b, c = xy
+    if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+        xy = xy[[0, 2, 1]]  # inside on the positive side
+    px, py = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
+    ok = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        p, q = xy[k], xy[(k + 1) % 3]
+        e = (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0])
+        top_left = q[1] < p[1] or (q[1] == p[1] and q[0] > p[0])
+        tie = {"top-left": top_left, "E >= 0": True, "E > 0": False}[rule]
+        ok &= (e > 0) | ((e == 0) & tie)
+    return ok
+
+
+def crack_counts(mesh, width: int, height: int, rule: str) -> dict:
+    """Gaps and double hits of ``mesh`` under ``rule``, against the package's coverage.
+
+    Returns ``{"gaps": ..., "double_hits": ..., "counts": (height, width) int array}``; a gap is
+    a pixel the package covers once and the rule leaves empty.
+    """
+    want = sum(rasterize(Triangle(t), width, height).coverage.astype(int) for t in mesh)
+    counts = sum(rule_coverage(t, width, height, rule).astype(int) for t in mesh)
+    return {"gaps": int(((want == 1) & (counts == 0)).sum()),
+            "double_hits": int((counts > 1).sum()), "counts": counts}  # fmt: skip

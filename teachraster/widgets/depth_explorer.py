@@ -1,0 +1,168 @@
+"""``DepthPrecisionExplorer``: how bits, the near plane and reverse-Z set the depth resolution.
+
+Lesson 05b's widget. The figure plots the smallest change in view distance the depth buffer
+still sees, :func:`teachraster.pipeline.depth.depth_resolution`, against the distance, for the
+chosen format, near plane and mapping (window depth or reverse-Z), with two surfaces a gap
+``delta`` apart as a horizontal line: where the curve rises above the line they z-fight
+(:func:`teachraster.pipeline.depth.fights`). A faint reference curve keeps the starting
+configuration on screen for comparison.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+
+from ..pipeline.depth import depth_resolution, fights
+from ..plotting import COLORS
+from .common import close_tree, labelled, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
+
+#: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
+FORMATS = ("unorm16", "unorm24", "float32")
+#: Mappings offered: OpenGL's window depth (near -> 0) and reverse-Z (near -> 1).
+MAPPINGS = ("perspective", "reversed")
+
+
+def first_fight(z, delta: float, near: float, far: float, fmt: str, mapping: str):
+    """The nearest distance in ``z`` (sorted) where surfaces ``delta`` apart store one depth.
+
+    Returns ``None`` when no distance of ``z`` fights.
+
+    Examples
+    --------
+    >>> z = np.geomspace(1, 1000, 200)
+    >>> round(first_fight(z, 0.01, 0.1, 1000.0, "unorm16", "perspective"), 1)
+    9.9
+    >>> first_fight(z, 0.01, 0.1, 1000.0, "float32", "reversed") is None
+    True
+    """
+    z = np.asarray(z, dtype=np.float64)
+    hit = fights(z, z + delta, near, far, fmt, mapping=mapping)
+    return float(z[np.argmax(hit)]) if hit.any() else None
+
+
+class DepthPrecisionExplorer:
+    """Depth resolution against distance: pick the format, the near plane, reverse-Z.
+
+    Parameters
+    ----------
+    fmt : {"unorm16", "unorm24", "float32"}
+    near, far : float
+        Clip planes (the near slider runs from 0.01 to 10, log scale).
+    reverse : bool
+        Start with reverse-Z.
+    delta : float
+        Gap between the two surfaces whose fighting is predicted.
+    backend : {"auto", "ipympl", "image"}
+    style : str, optional
+
+    Attributes
+    ----------
+    widget : ipywidgets.VBox
+    format : ToggleButtons
+    near : FloatLogSlider
+    reverse : Checkbox
+    z : ndarray
+        Distances plotted, from ``near`` to ``far``.
+    resolution : ndarray
+        Resolution at ``z`` for the current settings (what the curve shows).
+    fight_from : float or None
+        Nearest plotted distance where the two surfaces z-fight.
+
+    Examples
+    --------
+    >>> ex = DepthPrecisionExplorer("float32", backend="image")
+    >>> ex.fight_from is not None
+    True
+    >>> ex.reverse.value = True
+    >>> ex.fight_from is None
+    True
+    >>> ex.close()
+    """
+
+    def __init__(self, fmt: str = "unorm24", near: float = 0.1, far: float = 1000.0, *,
+                 reverse: bool = False, delta: float = 0.005, backend: str = "auto",
+                 style: str | None = None) -> None:  # fmt: skip
+        self.far, self.delta = float(far), float(delta)
+        self.backend = resolve_backend(backend)
+        self.format = widgets.ToggleButtons(options=FORMATS, value=fmt)
+        self.near = widgets.FloatLogSlider(value=near, base=10, min=-2, max=1, step=0.05,
+                                           description="near", readout_format=".3g")  # fmt: skip
+        self.reverse = widgets.Checkbox(value=reverse, description="reverse-Z")
+        self._compute()
+        with style_context(style):
+            self.fig = new_figure((9.0, 5.5), self.backend)
+            self.fig.set_layout_engine("constrained")
+            ax = self.fig.add_subplot()
+            (self.reference,) = ax.loglog(self.z, self.resolution, color="#BBBBBB", lw=2,
+                                          label=f"start: {self._label()}")  # fmt: skip
+            (self.curve,) = ax.loglog(self.z, self.resolution, color=COLORS["edge"], lw=3,
+                                      label="now")  # fmt: skip
+            ax.axhline(self.delta, color=COLORS["outside"], ls="--", lw=2,
+                       label=f"gap δ = {self.delta:g}")  # fmt: skip
+            self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=1.5, ls=":")
+            ax.set(xlabel="view distance z", ylabel="smallest visible Δz", ylim=(1e-9, 1e3),
+                   xlim=(0.01, self.far))  # fmt: skip
+            ax.grid(True, which="major", alpha=0.3)
+            ax.legend(loc="upper left")
+            self.ax = ax
+            self._draw()
+            self.display = FigureDisplay(self.fig, self.backend)
+        self.info = widgets.HTML(self._info_html())
+        for control in (self.format, self.near, self.reverse):
+            control.observe(lambda change: self.update(), "value")
+        title = title_html(
+            "Depth precision: bits, near plane, reverse-Z",
+            "Where the curve rises above the dashed line, two surfaces δ apart store the same "
+            "depth and z-fight. Move the near plane out, add bits, or reverse Z with float32.",
+        )
+        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse])
+        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+
+    @property
+    def mapping(self) -> str:
+        """``"reversed"`` with reverse-Z on, else ``"perspective"`` (window depth)."""
+        return "reversed" if self.reverse.value else "perspective"
+
+    def _label(self) -> str:
+        rz = ", reverse-Z" if self.reverse.value else ""
+        return f"{self.format.value}, near {self.near.value:.3g}{rz}"
+
+    def _compute(self) -> None:
+        near = float(self.near.value)
+        self.z = np.geomspace(near * 1.001, self.far, 400)
+        fmt, mapping = self.format.value, self.mapping
+        self.resolution = depth_resolution(self.z, near, self.far, fmt, mapping=mapping)
+        self.fight_from = first_fight(self.z, self.delta, near, self.far, fmt, mapping)
+
+    def _draw(self) -> None:
+        self.curve.set_data(self.z, self.resolution)
+        self.curve.set_label(f"now: {self._label()}")
+        x = np.nan if self.fight_from is None else self.fight_from
+        self.marker.set_xdata([x, x])
+        self.ax.legend(loc="upper left")
+
+    def update(self) -> None:
+        """Recompute from the controls and redraw the same artists."""
+        self._compute()
+        self._draw()
+        self.info.value = self._info_html()
+        self.display.refresh()
+
+    def _info_html(self) -> str:
+        res = dict(zip(("1", "10", "100"), np.interp([1.0, 10.0, 100.0], self.z, self.resolution)))
+        where = ("<b>no z-fighting</b> up to the far plane" if self.fight_from is None
+                 else f"z-fighting from <b>z ≈ {self.fight_from:.3g}</b>")  # fmt: skip
+        return (
+            f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart · "
+            f"Δz at z = 1, 10, 100: {res['1']:.2g}, {res['10']:.2g}, {res['100']:.2g}"
+        )
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the explorer."""
+        self.display.close()
+        close_tree(self.widget)

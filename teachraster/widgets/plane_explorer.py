@@ -1,0 +1,265 @@
+"""``PlaneExplorer``: an attribute as a plane over the screen, and the set-up that finds it.
+
+Lesson 03's widget. Move a vertex or change a vertex value and watch the three views of the
+same plane agree: the attribute at every pixel centre with its (straight, parallel) contour
+lines, Fatahalian's 3 × 3 system and its set-up matrix M (CMU 15-462 *Texture*), and the
+coefficients A, B, C, D of *Triangle Rasterisation II - Interpolation* with its steps
+dx = −A/C, dy = −B/C.
+
+Symbols (lesson 00's table): vertices v0, v1, v2 (Fatahalian's **a**, **b**, **c**), vertex
+values f0, f1, f2 (his f1, f2, f3); the plane f(x, y) = g_x x + g_y y + g_0 (Fatahalian writes
+A, B, C for g_x, g_y, g_0; the other note's A, B, C, D are different numbers, C being twice
+the signed area).
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+from matplotlib.collections import LineCollection
+
+from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
+from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
+from .common import close_tree, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
+
+#: Number of contour levels drawn between the smallest and largest vertex value.
+LEVELS = 6
+
+
+def plane_system(xy, f) -> dict:
+    """Fatahalian's 3 × 3 system for the plane through ``(x_i, y_i, f_i)``, solved two ways.
+
+    Parameters
+    ----------
+    xy : (3, 2) array-like
+        Vertices v0, v1, v2 in pixels.
+    f : (3,) array-like
+        Vertex values f0, f1, f2.
+
+    Returns
+    -------
+    dict
+        ``system`` the 3 × 3 matrix with rows (x_k, y_k, 1) of v0, v1, v2;
+        ``g`` (g_x, g_y, g_0) solving ``system @ g = f`` (f = g_x x + g_y y + g_0);
+        ``M`` the 2 × 2 set-up matrix; ``g_recentred`` ``M @ (f1 - f0, f2 - f0)``, which must
+        equal (g_x, g_y); ``ABCD`` the other note's coefficients; ``area2`` = 2 × signed area.
+        For a zero-area triangle only ``system`` and ``area2`` (0) are given.
+
+    Examples
+    --------
+    >>> s = plane_system([[0, 0], [4, 0], [0, 2]], [1.0, 3.0, 2.0])
+    >>> s["g"].round(6).tolist(), s["g_recentred"].round(6).tolist()
+    ([0.5, 0.5, 1.0], [0.5, 0.5])
+    """
+    xy = np.asarray(xy, dtype=np.float64).reshape(3, 2)
+    f = np.asarray(f, dtype=np.float64).reshape(3)
+    system = np.column_stack([xy, np.ones(3)])
+    (ax, ay), (bx, by), (cx, cy) = xy
+    area2 = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay)
+    out = {"system": system, "area2": float(area2)}
+    if area2 == 0:
+        return out
+    M = setup_matrix(xy)
+    plane = plane_equation(xy, f)
+    out.update(
+        g=np.linalg.solve(system, f),
+        M=M,
+        g_recentred=M @ np.array([f[1] - f[0], f[2] - f[0]]),
+        ABCD=np.array([plane.A, plane.B, plane.C, plane.D], dtype=np.float64),
+    )
+    return out
+
+
+def level_segments(g, levels, width: float, height: float) -> list:
+    """Segments of the lines f = level, for the plane ``f = g_x x + g_y y + g_0``.
+
+    Each line is straight (the plane's contour lines are parallel), given as a segment long
+    enough to cross the whole ``width`` × ``height`` image; the axes clip it. A flat plane
+    (g_x = g_y = 0) has no contour lines.
+
+    Examples
+    --------
+    >>> seg = level_segments([1.0, 0.0, 0.0], [3.0], 8, 8)[0]   # f = x: the line x = 3
+    >>> seg[:, 0].tolist()
+    [3.0, 3.0]
+    """
+    gx, gy, g0 = (float(v) for v in g)
+    norm2 = gx * gx + gy * gy
+    if norm2 == 0:
+        return []
+    centre = np.array([width / 2, height / 2])
+    grad, along = np.array([gx, gy]), np.array([-gy, gx]) / np.sqrt(norm2)
+    reach = 2.0 * (width + height)
+    segments = []
+    for level in levels:
+        value = gx * centre[0] + gy * centre[1] + g0
+        p0 = centre + (level - value) / norm2 * grad  # nearest point of the line to the centre
+        segments.append(np.array([p0 - reach * along, p0 + reach * along]))
+    return segments
+
+
+class PlaneExplorer:
+    """Move the vertices, change their values: the plane, its contour lines and its set-up.
+
+    Parameters
+    ----------
+    xy : (3, 2) array-like
+        Starting vertices v0, v1, v2 in pixels.
+    f : (3,) array-like
+        Starting vertex values f0, f1, f2.
+    width, height : int
+        Pixel grid.
+    backend : {"auto", "ipympl", "image"}
+    style : str, optional
+
+    Attributes
+    ----------
+    widget : ipywidgets.VBox
+    x, y, f : lists of three FloatSliders
+        Vertex positions and values; setting ``.value`` updates everything.
+    values : (height, width) array
+        The plane at every pixel centre inside the triangle (NaN outside): what the image
+        shows.
+    system : dict
+        :func:`plane_system` of the current triangle.
+    info : ipywidgets.HTML
+        The system, M and the coefficients, as numbers.
+
+    Examples
+    --------
+    >>> ex = PlaneExplorer([[1, 1], [14, 4], [5, 13]], [0.0, 1.0, 0.5], backend="image")
+    >>> ex.f[1].value = 2.0
+    >>> bool(np.allclose(ex.system["g"][:2], ex.system["g_recentred"]))
+    True
+    >>> ex.close()
+    """
+
+    def __init__(self, xy=((2.0, 1.0), (13.0, 5.0), (5.0, 12.0)), f=(0.2, 0.9, 0.5),
+                 width: int = 16, height: int = 14, *, backend: str = "auto",
+                 style: str | None = None) -> None:  # fmt: skip
+        self.width, self.height = width, height
+        self.backend = resolve_backend(backend)
+        xy = np.asarray(xy, dtype=np.float64).reshape(3, 2)
+        f = np.asarray(f, dtype=np.float64).reshape(3)
+        self._sliders(xy, f)
+        self._compute()
+        with style_context(style):
+            self.fig = new_figure((7.5, 6.0), self.backend)
+            self.fig.set_layout_engine("constrained")
+            self.ax = self.fig.add_subplot()
+            plot_pixel_grid(self.ax, width, height)
+            lo, hi = self._range()
+            self.image = plot_attribute(self.ax, self.values, vmin=lo, vmax=hi,
+                                        title="f at the pixel centres")  # fmt: skip
+            self.contours = LineCollection(self._segments(), colors=COLORS["edge"],
+                                           linewidths=1.5, linestyles="--")  # fmt: skip
+            self.ax.add_collection(self.contours)
+            self.triangle = plot_triangle(self.ax, self.xy, arrows=False)
+            self.display = FigureDisplay(self.fig, self.backend)
+        self.info = widgets.HTML(self._info_html())
+        title = title_html(
+            "An attribute is a plane: f = g_x x + g_y y + g_0",
+            "Move a vertex or change its value. The contour lines (dashed, f in equal steps) "
+            "stay straight and parallel; the 3 × 3 system, the set-up matrix M and the "
+            "coefficients A, B, C, D follow.",
+        )
+        rows = [widgets.HBox([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
+        self.widget = widgets.VBox([title, *rows, widgets.HBox([self.display.widget, self.info])])
+
+    def _sliders(self, xy, f) -> None:
+        def slider(value, lo, hi, name):
+            s = widgets.FloatSlider(value=value, min=lo, max=hi, step=0.25, description=name,
+                                    layout=widgets.Layout(width="260px"))  # fmt: skip
+            s.observe(lambda change: self.update(), "value")
+            return s
+
+        self.x = [slider(xy[k, 0], 0.0, self.width, f"v{k} x") for k in range(3)]
+        self.y = [slider(xy[k, 1], 0.0, self.height, f"v{k} y") for k in range(3)]
+        self.f = [slider(f[k], -1.0, 2.0, f"f{k}") for k in range(3)]
+
+    @property
+    def xy(self) -> np.ndarray:
+        """The current vertices, (3, 2)."""
+        return np.array([[self.x[k].value, self.y[k].value] for k in range(3)])
+
+    @property
+    def fvals(self) -> np.ndarray:
+        """The current vertex values, (3,)."""
+        return np.array([s.value for s in self.f])
+
+    def _compute(self) -> None:
+        xy, f = self.xy, self.fvals
+        self.system = plane_system(xy, f)
+        ys, xs = np.mgrid[0 : self.height, 0 : self.width] + 0.5
+        values = np.full((self.height, self.width), np.nan)
+        if self.system["area2"] != 0:
+            lam = _barycentric_grid(xy, xs, ys, self.system["area2"])
+            inside = (lam >= 0).all(axis=0)
+            values[inside] = attribute_plane(xy, f, M=self.system["M"])(xs, ys)[inside]
+        self.values = values
+
+    def _range(self) -> tuple[float, float]:
+        # The colour range: the vertex values (the plane's extremes on the triangle).
+        f = self.fvals
+        lo, hi = float(f.min()), float(f.max())
+        return (lo, hi) if hi > lo else (lo - 0.5, hi + 0.5)
+
+    def _segments(self) -> list:
+        if "g" not in self.system:
+            return []
+        f = self.fvals
+        levels = np.linspace(f.min(), f.max(), LEVELS + 2)[1:-1]
+        return level_segments(self.system["g"], levels, self.width, self.height)
+
+    def update(self) -> None:
+        """Recompute from the sliders and redraw the same artists."""
+        self._compute()
+        self.image.update(self.values)
+        self.image.image.set_clim(*self._range())
+        self.contours.set_segments(self._segments())
+        self.triangle.update(self.xy)
+        self.info.value = self._info_html()
+        self.display.refresh()
+
+    def _info_html(self) -> str:
+        s = self.system
+        xy, f = self.xy, self.fvals
+        rows = "".join(
+            f"<tr><td>[{x:.2f}</td><td>{y:.2f}</td><td>1]</td><td>&nbsp;=&nbsp;{v:.2f}</td></tr>"
+            for (x, y), v in zip(xy, f)
+        )
+        parts = ["<b>3 × 3 system</b> (rows v0, v1, v2) · (g_x, g_y, g_0) = f:",
+                 f"<table style='font-family:monospace'>{rows}</table>"]  # fmt: skip
+        if "g" not in s:
+            parts.append("<b>zero area</b>: the three points are on one line, no plane")
+            return "<div style='margin-left:16px'>" + "<br>".join(parts) + "</div>"
+        (m00, m01), (m10, m11) = s["M"]
+        gx, gy, g0 = s["g"]
+        A, B, C, D = s["ABCD"]
+        parts += [
+            f"solution: g_x = {gx:.4f}, g_y = {gy:.4f}, g_0 = {g0:.4f}",
+            f"<b>M</b> = [[{m00:.4f}, {m01:.4f}], [{m10:.4f}, {m11:.4f}]] (once per triangle)",
+            "M · (f1 − f0, f2 − f0) = "
+            f"({s['g_recentred'][0]:.4f}, {s['g_recentred'][1]:.4f}) = (g_x, g_y)",
+            f"<b>A, B, C, D</b> = {A:.3f}, {B:.3f}, {C:.3f}, {D:.3f} "
+            f"(C = 2 × signed area = {s['area2']:.3f})",
+            f"dx = −A/C = {-A / C:.4f}, dy = −B/C = {-B / C:.4f}",
+        ]
+        return "<div style='margin-left:16px'>" + "<br>".join(parts) + "</div>"
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the explorer."""
+        self.display.close()
+        close_tree(self.widget)
+
+
+def _barycentric_grid(xy, xs, ys, area2: float) -> np.ndarray:
+    # (3, H, W) screen-space barycentrics at the pixel centres, from the edge functions.
+    (ax, ay), (bx, by), (cx, cy) = xy
+    la = ((cx - bx) * (ys - by) - (cy - by) * (xs - bx)) / area2
+    lb = ((ax - cx) * (ys - cy) - (ay - cy) * (xs - cx)) / area2
+    return np.stack([la, lb, 1.0 - la - lb])

@@ -1,0 +1,186 @@
+"""The exercise checker: correct solutions pass, typical mistakes are caught AND explained."""
+
+from __future__ import annotations
+
+import re
+import time
+
+import numpy as np
+import pytest
+from exercise_solutions import ALTERNATIVES, CORRECT, MISTAKES
+
+from teachraster import exercises as ex
+from teachraster.exercises import running
+
+NAMES = ex.names()
+
+
+def test_names_in_course_order():
+    assert NAMES == [
+        "edge_function",
+        "covers",
+        "fill",
+        "split_point",
+        "barycentric",
+        "perspective",
+        "depth_test",
+        "clip_near",
+    ]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_independent_correct_solution_passes_every_case(name):
+    report = ex.check(name, CORRECT[name])
+    assert report.passed, str(report)
+    assert report.n_cases >= 20
+    assert str(report) == f"{name}: all {report.n_cases} cases pass"
+
+
+@pytest.mark.parametrize("name", list(ALTERNATIVES))
+def test_another_correct_solution_passes_too(name):
+    """Any algorithm, any starting vertex, repeated vertices: only the answer counts."""
+    report = ex.check(name, ALTERNATIVES[name])
+    assert report.passed, str(report)
+
+
+@pytest.mark.parametrize("mistake", list(MISTAKES))
+def test_typical_mistake_is_caught_and_explained(mistake):
+    name, fn, words = MISTAKES[mistake]
+    report = ex.check(name, fn)
+    assert not report.passed
+    assert report.failures[0].explanation in str(report)
+    explained = [f for f in report.failures if words in f.explanation]
+    assert explained, f"no explanation says {words!r}:\n{report}"
+
+
+def test_the_mistakes_name_the_rule_and_quote_the_numbers():
+    """The three explanations of issue 10, as the checker writes them."""
+    name, fn, _ = MISTAKES["u4 without its offset"]
+    first = ex.check(name, fn).failures[0].explanation
+    assert first == (
+        "your u4 is 0.545 for v1=(2.5, 1.5), v2=(9.5, 4.5), v3=(4.5, 12.5); the long edge "
+        "meets v = 4.5 at u = 3.045 (did you add u1?)"
+    )
+    name, fn, _ = MISTAKES["affine instead of perspective"]
+    first = ex.check(name, fn).failures[0].explanation
+    assert first == (
+        "at λ=(0.2, 0.3, 0.5), w=(1, 2, 4), f=(0, 1, 2) your 1.3 is the affine Σλf; the "
+        "perspective-correct value is 0.842: divide by w"
+    )
+    name, fn, _ = MISTAKES["bottom-right rule"]
+    texts = " ".join(f.explanation for f in ex.check(name, fn).failures)
+    on_edge = (
+        r"centre \([\d.]+, [\d.]+\) lies exactly on edge v\d→v\d, a (top|left|right|bottom) edge"
+    )
+    assert re.search(on_edge + r": the top-left rule (covers it|leaves it uncovered)", texts)
+
+
+def test_failures_carry_expected_and_got():
+    report = ex.check("split_point", MISTAKES["u4 without its offset"][1])
+    f = report.failures[0]
+    assert f.expected == pytest.approx(3.0454545454545454)
+    assert f.got == pytest.approx(0.5454545454545454)
+    assert f.case == "a long edge to the left"
+
+
+def test_a_students_exception_is_a_failure_with_its_last_line():
+    def broken(xy, p):
+        raise ValueError("my bug")
+
+    report = ex.check("covers", broken)
+    assert not report.passed and not report.not_implemented
+    assert report.failures[0].explanation == "your function raised ValueError: my bug"
+    assert len(report.failures) == report.n_cases
+
+
+def test_a_wrong_type_is_a_failure():
+    report = ex.check("covers", lambda xy, p: None)
+    assert "returned None, not a bool" in report.failures[0].explanation
+    report = ex.check("fill", lambda xy, w, h: np.zeros((w + 1, h), bool))
+    assert "expected a bool array of shape (height, width)" in report.failures[0].explanation
+
+
+def test_not_implemented_is_reported_without_failures():
+    def stub(*args):
+        raise NotImplementedError
+
+    for name in NAMES:
+        report = ex.check(name, stub)
+        assert report.not_implemented and not report.passed and report.failures == []
+        assert "not implemented yet" in str(report)
+
+
+def test_each_case_has_a_time_limit(monkeypatch):
+    monkeypatch.setattr(running, "CASE_LIMIT", 0.05)
+
+    def forever(incoming, stored):
+        while True:
+            pass
+
+    start = time.perf_counter()
+    report = ex.check("depth_test", forever)
+    assert "stopped: it took longer than the limit of 0.05 s" in report.failures[0].explanation
+    assert time.perf_counter() - start < 0.05 * report.n_cases + 5
+
+
+def test_a_student_mutating_its_input_does_not_change_the_expected_answer():
+    def mutating(xy, p):
+        xy[:] = 0
+        return False
+
+    report = ex.check("covers", mutating)
+    assert not report.passed
+    assert ex.check("covers", CORRECT["covers"]).passed
+
+
+def test_bad_arguments_name_the_argument():
+    with pytest.raises(ValueError, match="name must be one of"):
+        ex.check("cover", CORRECT["covers"])
+    with pytest.raises(TypeError, match="fn must be a function"):
+        ex.check("covers", 3)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_reports_draw_failing_passing_and_missing(name):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    wrong = {m[0]: m[1] for m in MISTAKES.values()}
+    wrong.setdefault("edge_function", lambda a, b, p: 0.0)
+    wrong.setdefault("fill", lambda xy, w, h: np.zeros((h, w), bool))
+
+    def stub(*args):
+        raise NotImplementedError
+
+    for fn in (CORRECT[name], wrong[name], stub):
+        fig, ax = plt.subplots(figsize=(3, 3))
+        artists = ex.check(name, fn).plot(ax)
+        assert artists and ax.get_title().startswith(name)
+        fig.canvas.draw()
+        plt.close(fig)
+
+
+def test_coverage_plot_marks_missing_and_extra_and_the_edge():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("covers", MISTAKES["bottom-right rule"][1])
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    state = ax.images[0].get_array()
+    assert (state == 2).any() and (state == 3).any()  # missing and extra pixels
+    assert any(line.get_linewidth() == 3 for line in ax.lines)  # the deciding edge
+    plt.close(fig)
+
+
+def test_import_does_not_pull_in_matplotlib():
+    import subprocess
+    import sys
+
+    code = "import sys, teachraster.exercises; print('matplotlib' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False"

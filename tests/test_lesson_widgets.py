@@ -1,0 +1,153 @@
+"""The lessons' own widgets (plane explorer, depth-precision explorer, case picker), driven
+from code: every control changes what is shown, and the numbers shown are the package's."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.widgets.plane_explorer import (  # noqa: E402
+    PlaneExplorer,
+    level_segments,
+    plane_system,
+)
+
+
+# -- PlaneExplorer -------------------------------------------------------------------------------
+@pytest.fixture
+def explorer():
+    ex = PlaneExplorer([[2, 1], [13, 5], [5, 12]], [0.2, 0.9, 0.5], 16, 14, backend="image")
+    yield ex
+    ex.close()
+
+
+def test_plane_system_three_ways_agree():
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        xy, f = rng.uniform(0, 20, (3, 2)), rng.uniform(-1, 1, 3)
+        s = plane_system(xy, f)
+        gx, gy, g0 = s["g"]
+        assert np.allclose(s["system"] @ s["g"], f)  # the 3 x 3 system is solved
+        assert np.allclose(s["g_recentred"], [gx, gy])  # M gives the same gradient
+        A, B, C, D = s["ABCD"]
+        assert np.isclose(C, s["area2"])
+        assert np.allclose([-A / C, -B / C], [gx, gy])  # dx, dy of the other note
+        assert np.allclose(tr.attribute_plane(xy, f)(*xy.T), f)
+
+
+def test_plane_system_zero_area_has_no_plane():
+    s = plane_system([[0, 0], [1, 1], [2, 2]], [0, 1, 2])
+    assert s["area2"] == 0 and "g" not in s and "M" not in s
+
+
+def test_level_segments_lie_on_their_level():
+    g = np.array([0.3, -0.7, 1.1])
+    for level, seg in zip([0.0, 2.5], level_segments(g, [0.0, 2.5], 16, 14)):
+        assert np.allclose(seg @ g[:2] + g[2], level)
+    assert level_segments([0.0, 0.0, 1.0], [1.0], 8, 8) == []
+
+
+def test_explorer_shows_the_plane_and_follows_the_sliders(explorer):
+    shown = np.asarray(explorer.image.image.get_array(), dtype=float)
+    fill = tr.rasterize(tr.Triangle(explorer.xy, attrs={"f": explorer.fvals}), 16, 14)
+    inside = fill.coverage  # no centre lies on an edge here, so coverage = inside
+    assert np.allclose(shown[inside], fill.attrs["f"][inside])
+    assert np.isnan(shown[~inside]).all()
+    before = explorer.info.value
+    explorer.f[2].value = 1.7
+    assert explorer.info.value != before and "1.70" in explorer.info.value
+    assert np.isclose(np.nanmax(explorer.values), 1.7, atol=0.3)
+    segments = explorer.contours.get_segments()
+    g = explorer.system["g"]
+    assert len(segments) > 0
+    for seg in segments:  # all parallel: the same value along each
+        values = np.asarray(seg) @ g[:2] + g[2]
+        assert np.isclose(values[0], values[1])
+
+
+def test_explorer_survives_a_zero_area_triangle(explorer):
+    for k, (x, y) in enumerate([(1, 1), (5, 5), (9, 9)]):
+        explorer.x[k].value, explorer.y[k].value = x, y
+    assert "zero area" in explorer.info.value
+    assert np.isnan(explorer.values).all()
+    assert explorer.contours.get_segments() == []
+
+
+# -- DepthPrecisionExplorer ---------------------------------------------------------------------
+def test_depth_explorer_curve_is_the_package_resolution():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("unorm16", near=0.1, far=1000.0, backend="image")
+    try:
+        x, y = ex.curve.get_data()
+        assert np.allclose(y, tr.depth_resolution(x, 0.1, 1000.0, "unorm16"))
+        first16 = ex.fight_from
+        assert first16 is not None and "z-fighting from" in ex.info.value
+        ex.format.value = "unorm24"  # more bits: fighting starts farther away
+        assert ex.fight_from > first16
+        ex.near.value = 1.0  # the classic fix: a farther near plane
+        assert ex.fight_from is None or ex.fight_from > 100
+        x, y = ex.curve.get_data()
+        assert x[0] >= 1.0 and np.allclose(y, tr.depth_resolution(x, 1.0, 1000.0, "unorm24"))
+        # the reference curve stays where it started
+        assert np.allclose(ex.reference.get_ydata()[:3], tr.depth_resolution(
+            ex.reference.get_xdata()[:3], 0.1, 1000.0, "unorm16"))  # fmt: skip
+    finally:
+        ex.close()
+
+
+def test_depth_explorer_reverse_z_helps_float32_only():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer, first_fight
+
+    ex = DepthPrecisionExplorer("float32", backend="image")
+    try:
+        assert ex.fight_from is not None
+        ex.reverse.value = True
+        assert ex.mapping == "reversed" and ex.fight_from is None
+        assert "no z-fighting" in ex.info.value
+        ex.format.value = "unorm24"  # an even step: reversing gains nothing
+        z = np.geomspace(1, 1000, 300)
+        assert first_fight(z, 0.005, 0.1, 1000.0, "unorm24", "reversed") == first_fight(
+            z, 0.005, 0.1, 1000.0, "unorm24", "perspective"
+        )
+        assert ex.fight_from is not None
+    finally:
+        ex.close()
+
+
+# -- CasePicker ----------------------------------------------------------------------------------
+def test_owner_image_marks_double_hits_and_gaps():
+    from teachraster.widgets.case_picker import NONE, SEVERAL, owner_image
+
+    a = np.zeros((3, 3), bool)
+    b = np.zeros((3, 3), bool)
+    a[0, :2] = True
+    b[0, 1:] = True
+    owner = owner_image([a, b])
+    assert owner[0].tolist() == [0, SEVERAL, 1] and (owner[1:] == NONE).all()
+
+
+def test_case_picker_shows_every_screen_case_with_both_methods():
+    from teachraster.study import hardcases
+    from teachraster.widgets.case_picker import SEVERAL, CasePicker, owner_image, screen_cases
+
+    names = screen_cases()
+    assert "fan_spokes_through_centres" in names and "behind_camera" not in names
+    picker = CasePicker("d3d_split_square", backend="image")
+    try:
+        for name in names:
+            for method in hardcases.FILL_METHODS:
+                picker.case.value, picker.method.value = name, method
+                result = hardcases.get_case(name).run(method)
+                assert np.array_equal(picker.owner, owner_image(result.fills))
+                assert picker.passed and "passes its check" in picker.info.value
+        picker.case.value = "fan_spokes_through_centres"
+        assert int(picker.owner.max()) == 15 and not (picker.owner == SEVERAL).any()
+        assert picker.naive_counts.max() == 16  # the hub, naive: all sixteen triangles
+        with pytest.raises(ValueError, match="screen-space"):
+            CasePicker("behind_camera", backend="image")
+    finally:
+        picker.close()

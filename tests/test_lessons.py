@@ -1,0 +1,354 @@
+"""The lessons' numbers: each lesson is executed once and its variables are checked here.
+
+The notebooks are written for a classroom, so they keep a visible check only where checking is
+the point of the cell. The facts a lesson relies on (our loop fills what the package fills,
+the formula gives the package's value, the figure shows what the text says) are asserted here,
+on the variables the executed notebook leaves behind. ``lesson(name)`` runs a notebook with
+nbclient, as ``tests/test_packaging.py`` does, then pickles every variable that can be pickled
+and hands them back as a namespace.
+"""
+
+from __future__ import annotations
+
+import functools
+import pickle
+import tempfile
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+NOTEBOOK_DIR = ROOT / "notebooks"
+
+# Runs inside the kernel after the lesson: every global that pickles, each on its own, so one
+# unpicklable value (a widget, a figure) does not hide the others.
+_DUMP = """
+import pickle as _pickle, types as _types
+_kept = {}
+_SKIP = (_types.ModuleType, type, _types.FunctionType, _types.BuiltinFunctionType,
+         _types.MethodType)
+for _name, _value in list(globals().items()):
+    if _name.startswith("_") or isinstance(_value, _SKIP):
+        continue
+    try:
+        _kept[_name] = _pickle.dumps(_value)
+    except Exception:
+        pass
+with open(__PATH__, "wb") as _fh:
+    _pickle.dump(_kept, _fh)
+"""
+
+
+@functools.cache
+def lesson(name: str) -> SimpleNamespace:
+    """Execute ``notebooks/<name>.ipynb`` once and return its picklable globals."""
+    import os
+
+    import nbformat
+    from nbclient import NotebookClient
+
+    os.environ["MPLBACKEND"] = "Agg"  # the kernel inherits this environment
+    nb = nbformat.read(NOTEBOOK_DIR / f"{name}.ipynb", as_version=4)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "globals.pickle"
+        nb.cells.append(nbformat.v4.new_code_cell(_DUMP.replace("__PATH__", repr(str(out)))))
+        NotebookClient(
+            nb,
+            timeout=600,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
+        ).execute()
+        raw = pickle.loads(out.read_bytes())
+    values = {}
+    for key, blob in raw.items():
+        try:
+            values[key] = pickle.loads(blob)
+        except Exception:  # e.g. an instance of a class defined in the notebook
+            continue
+    return SimpleNamespace(**values)
+
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
+
+
+# -- 01 span tables ------------------------------------------------------------------------------
+def test_01_hand_written_span_loop_matches_the_package():
+    ns = lesson("01_span_tables")
+    span = ns.span
+    assert list(span.order) == list(ns.order)
+    assert np.array_equal(span.sorted_xy, ns.xy[ns.order])
+    assert ns.u4 == 6.5 == span.u4
+    # v4 = (u4, v2) lies exactly on the long edge
+    import teachraster as tr
+
+    assert tr.edge_function(ns.xy[ns.order][0], ns.xy[ns.order][2], [ns.u4, ns.v2]) == 0
+    assert span.flat_bottom[1, 1] == span.flat_bottom[2, 1] == ns.v2
+    assert span.flat_top[0, 1] == span.flat_top[1, 1] == ns.v2
+    assert np.array_equal(ns.cover, ns.fill.coverage)
+    rows = [r for r in span.rows if r in ns.ends]  # the package also traces row v = v3
+    assert set(span.rows) - set(rows) == {17}
+    assert np.array_equal(span.x_left[: len(rows)], [ns.ends[i][0] for i in rows])
+    assert np.array_equal(span.x_right[: len(rows)], [ns.ends[i][1] for i in rows])
+    cover = ns.cover
+    assert cover[5, 5] and not cover[5, 11]  # left end owned, right end not
+    assert cover[9, 6] and not cover[9, 18]
+    assert not cover[1].any() and not cover[17].any()
+    assert ns.shown_caption == ns.trace.caption(ns.step_of_row[13])
+    assert np.array_equal(ns.shown_coverage, ns.trace.coverage_at(ns.step_of_row[13]))
+
+
+def test_01_flat_cases_follow_the_half_open_row_rule():
+    ns = lesson("01_span_tables")
+    for name, fill in ns.flat.items():
+        assert np.array_equal(ns.ours_flat[name], fill.coverage), name
+    top, bottom = ns.flat["flat-topped"], ns.flat["flat-bottomed"]
+    assert top.trace.span.flat_bottom is None and top.coverage[2].sum() == 10
+    assert bottom.trace.span.flat_top is None and not bottom.coverage[10].any()
+    assert (
+        not ns.flat["zero height"].coverage.any() and ns.flat["zero height"].trace.span.u4 is None
+    )
+
+
+# -- 02 half-planes ------------------------------------------------------------------------------
+def test_02_bbox_edge_functions_and_bailout():
+    import teachraster as tr
+
+    ns = lesson("02_half_planes")
+    box, rows, cols = ns.box, ns.rows, ns.cols
+    assert (box.xmin, box.xmax, box.ymin, box.ymax) == (ns.u_min, ns.u_max, ns.v_min, ns.v_max)
+    assert (box.col0, box.col1, box.row0, box.row1) == (
+        cols.start,
+        cols.stop,
+        rows.start,
+        rows.stop,
+    )
+    assert box.size == len(rows) * len(cols) == 169
+    assert ns.cross_z == ns.cs148 == tr.edge_function(ns.v0, ns.v1, ns.p) > 0
+    assert (ns.F != 0).all()
+    assert np.array_equal((ns.F > 0).all(axis=-1), ns.fill.coverage)
+    b = box
+    assert np.array_equal(ns.trace.halfplane.edge_values, ns.F[b.row0 : b.row1, b.col0 : b.col1])
+    assert np.array_equal(ns.runs, ns.by_hand)
+    assert ns.with_bailout < ns.without
+    assert ns.shown_caption == ns.trace.caption(ns.k)
+    assert (ns.shown_step.row, ns.shown_step.col) == (box.row0 + 5, box.col0 + 6)
+
+
+def test_02_winding_culling_and_the_top_left_rule():
+    import teachraster as tr
+
+    ns = lesson("02_half_planes")
+    assert ns.front.front_facing and not ns.back.front_facing
+    n = int(ns.fill.coverage.sum())
+    assert ns.culled == {
+        ("clockwise", None): n,
+        ("clockwise", "back"): 0,
+        ("clockwise", "front"): n,
+        ("counter-clockwise", None): n,
+        ("counter-clockwise", "back"): n,
+        ("counter-clockwise", "front"): 0,
+    }
+    for name in ["top-left rule", "rule, unsnapped"]:
+        assert np.array_equal(ns.counts[name], ns.square)
+    naive = ns.counts["naive E >= 0"]
+    assert naive.max() == 2 and (naive[ns.diagonal] == 2).all()
+    assert not ns.row8["above (bottom edge)"].any()
+    assert ns.row8["below (top edge)"].sum() == 12
+    assert ns.row8["naive, above"].sum() == ns.row8["naive, below"].sum() == 13
+    assert np.array_equal(ns.editor_coverage, tr.rasterize(ns.moved, 16, 16).coverage)
+    assert ns.moved.front_facing
+
+
+# -- 03 barycentrics and plane equations --------------------------------------------------------
+def test_03_three_views_of_one_plane():
+    import teachraster as tr
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    xy, p, f = ns.xy, ns.p, ns.f
+    assert np.isclose(ns.lam_areas.sum(), 1.0) and np.allclose(ns.lam_areas @ xy, p)
+    assert np.allclose(tr.barycentric(xy, p), ns.lam_areas) and np.allclose(ns.lam, ns.lam_areas)
+    assert np.allclose(tr.barycentric(xy, xy), np.eye(3))
+    lam_px = ns.lam_px
+    assert np.allclose(lam_px, tr.barycentric(ns.fill.trace.snapped, ns.centres), atol=1e-15)
+    assert ((lam_px >= 0) & (lam_px <= 1)).all()
+    # the contour lines drawn are lines of constant λ0 inside the triangle
+    assert np.nanmin(ns.lam0_fine) >= 0 and np.nanmax(ns.lam0_fine) <= 1
+    plane = ns.plane
+    assert np.allclose(-(plane.A * xy[:, 0] + plane.B * xy[:, 1] + plane.D) / plane.C, f)
+    assert plane.C == tr.edge_function(*xy)
+    assert np.isclose(plane(*p), ns.lam @ f)
+    ys, xs = np.mgrid[0:14, 0:16] + 0.5
+    assert np.allclose(ns.grid, plane(xs, ys), atol=1e-13)
+    # Fatahalian's 3 x 3 system, and M recentred at v0, give the same gradient
+    assert np.allclose(ns.system @ [ns.g_x, ns.g_y, ns.g_0], f)
+    assert np.allclose(ns.g_recentred, [ns.g_x, ns.g_y]) and np.allclose(ns.M, ns.M_by_hand)
+    assert np.allclose([ns.g_x, ns.g_y], [plane.dx, plane.dy])
+    assert np.allclose(ns.planes.A, ns.abcd.dx) and np.allclose(ns.planes.B, ns.abcd.dy)
+    assert np.allclose(ns.planes(*ns.centres.T), ns.fill.trace.pixel_barycentric @ ns.F)
+    assert np.allclose(ns.moved["g"][:2], ns.moved["g_recentred"])
+
+
+def test_03_stepping_and_recentring_numbers_match_the_text():
+    ns = lesson("03_barycentric_and_plane_equations")
+    err = ns.err
+    assert err["stepped, float32"][-1] > 1e-3  # "a few hundredths off"
+    assert err["stepped, float32"][-1] > 100 * np.spacing(np.float32(1000.0))
+    assert 1e-13 < err["stepped, float64"].max() < 1e-9  # "about 1e-10"
+    assert err["stepped, float64"].max() > 100 * err["direct, recentred (Fatahalian)"].max()
+    assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
+    assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
+    assert ns.absolute[-1] > 1000 * ns.absolute[0]
+
+
+# -- 04 perspective-correct interpolation -------------------------------------------------------
+def test_04_derivation_and_the_notes_barycentrics():
+    ns = lesson("04_perspective_correct_interpolation")
+    assert np.allclose(ns.t, ns.t_ray, atol=1e-15)
+    assert np.allclose(ns.x / ns.z, ns.s)
+    assert np.allclose(1 / ns.z, 1 / ns.z0 + ns.q * (1 / ns.z1 - 1 / ns.z0))  # Ek (19)
+    assert not np.allclose(ns.z, ns.z0 + ns.q * (ns.z1 - ns.z0))
+    assert ns.misprint > 0.1  # the notes' lines (17)-(18) with 1/z1 are wrong
+    assert np.allclose(ns.u_persp, ns.u_true, atol=1e-12)
+    assert np.abs(ns.u_affine - ns.u_true).max() > 0.1
+    assert ns.residuals["u / w"] < 1e-12 and ns.residuals["1 / w"] < 1e-12
+    assert ns.residuals["u"] > 1e-2 and ns.residuals["w"] > 1e-1
+    # CS148's α_i are the world barycentrics of the hit point, and give Σλf/w ÷ Σλ/w
+    assert np.allclose(ns.alpha, ns.alpha_ray, atol=1e-12)
+    assert np.allclose(ns.u_alpha, ns.u_divide, atol=1e-15)
+    assert np.allclose(ns.u_alpha, ns.u_true, atol=1e-12)
+
+
+def test_04_toggle_heatmap_floor_and_tilt():
+    ns = lesson("04_perspective_correct_interpolation")
+    assert np.array_equal(ns.affine.coverage, ns.persp.coverage)
+    assert np.allclose(*ns.same, equal_nan=True, atol=1e-15)
+    assert np.array_equal(ns.player_affine, ns.affine.attrs["u"], equal_nan=True)
+    assert np.array_equal(ns.player_perspective, ns.persp.attrs["u"], equal_nan=True)
+    assert 0.15 < np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)
+    assert 1.0 < ns.floor_w.min() and ns.floor_w.max() < 8  # the readable floor
+    assert np.nanmax(ns.texels) > 10
+    assert ns.far_w.max() > 35  # the original floor, for the moiré
+    assert ns.maxima[0] < 1e-9 and ns.maxima[0] < ns.maxima[30] < ns.maxima[75]
+
+
+# -- 05a z-buffer ------------------------------------------------------------------------------
+def test_05a_zbuffer_painter_plan_and_clipping():
+    import teachraster as tr
+
+    ns = lesson("05a_zbuffer")
+    ids = ns.ids
+    assert (ids["far first, then near"] == 1).all() and (ids["near first, then far"] == 0).all()
+    assert (ids["equal depth (a tie)"] == 0).all() and (ids["no depth test"] == 1).all()
+    for r in ns.results.values():
+        assert (r["zbuf"].triangle_id == r["truth"]).all()
+        assert (r["paint"].triangle_id != r["truth"]).sum() > 0
+    assert min(ns.wrong_by_order.values()) > 0  # the cyclic overlap: no order is right
+    frame = ns.frame
+    assert np.array_equal(frame.depth.ravel()[ns.covered], ns.smallest[ns.covered])
+    trace = frame.trace
+    assert (trace.fragment_depth[ns.failed] >= ns.smallest[ns.pixel[ns.failed]]).all()
+    assert trace.fragment_passed[trace.fragment_triangle == 0].all()
+    assert frame.plan["depth_test"].count == ns.contested < frame.coverage.sum()
+    assert not ns.single.plan["depth_test"].ran
+    assert np.array_equal(ns.failed_px, ns.painter_wrong)
+    # clipping, step by step: the near plane drops the vertex behind the eye, adds two on it
+    near = ns.steps[0]
+    assert near.plane.startswith("near") and near.new.sum() == 2 and len(near.polygon) == 4
+    assert np.allclose(near.polygon[near.new, 2], -near.polygon[near.new, 3])
+    assert not any(s.new.any() for s in ns.steps[1:])
+    assert (ns.clipped[:, 3] > 0).all()
+    assert ns.clip_tri_frame.coverage.any()
+    from teachraster.pipeline.clipping import clip_polygon
+
+    poly, attrs = clip_polygon(ns.clip_tri_clip, ns.clip_tri_u)
+    assert np.allclose(poly, ns.clipped) and np.allclose(attrs, ns.clipped_u)
+    assert (
+        tr.render(ns.clip_tri_clip[None], 160, 120).coverage.sum()
+        == ns.clip_tri_frame.coverage.sum()
+    )
+
+
+# -- 05b depth precision ------------------------------------------------------------------------
+def test_05b_depth_mappings_resolution_and_fighting():
+    import teachraster as tr
+
+    ns = lesson("05b_depth_precision")
+    assert ns.err_depth < 1e-12 and ns.err_z > 1e-3
+    res = ns.res
+    assert np.allclose(res[1:] / res[:-1], 100.0)
+    f, size = ns.fights, ns.size
+    assert not f["float64"].any()
+    assert not f["unorm16"][:2].any() and not f["float32"][:4].any()
+    assert f["unorm16"][2] > 0 and f["float32"][2] == f["unorm24"][2] == 0
+    assert f["float32"][5] > size[5] / 2 and f["unorm24"][5] > size[5] / 2
+    for fmt, r in ns.predicted.items():  # section 2's prediction
+        assert not f[fmt][r < ns.delta / 4].any()
+        assert (f[fmt][r > 4 * ns.delta] > size[r > 4 * ns.delta] / 2).all()
+    assert ns.levels["unorm16"] < ns.levels["unorm24"] <= ns.levels["float64"]
+    assert tr.fights([2.0, 500.0], [2.5, 500.5], 0.1, 1000.0, "unorm16").tolist() == [False, True]
+
+
+def test_05b_reverse_z_bias_and_explorer():
+    ns = lesson("05b_depth_precision")
+    # the per-pixel prediction reproduces the renders, and reverse-Z float32 removes the fight
+    assert np.array_equal(ns.fights_window["float32"], ns.fights["float32"])
+    assert not ns.fights_reversed["float32"].any()
+    assert np.array_equal(ns.fights_reversed["unorm24"], ns.fights_window["unorm24"])
+    assert ns.decal_shown["no bias"] < ns.decal_shown["depth bias"] == int(ns.decal_only.sum())
+    ef = ns.explorer_fights
+    assert ef[("unorm16", 1.0, False)] > ef[("unorm16", 0.1, False)]
+    assert ef[("float32", 0.1, False)] is not None and ef[("float32", 0.1, True)] is None
+
+
+# -- 06 what accuracy costs ---------------------------------------------------------------------
+def test_06_counts_errors_and_cracks():
+    ns = lesson("06_what_accuracy_costs")
+    row = {(r["group"], r["variant"]): r for r in ns.rows}
+    assert row[("interpolation", "perspective")]["error"] < 1e-9
+    assert row[("interpolation", "affine")]["error"] > 100
+    sub = [row[("interpolation", f"subdivided N={n}")] for n in (2, 4, 8, 16, 32)]
+    assert all(a["mean_abs_texels"] < b["mean_abs_texels"] for a, b in zip(sub, sub[1:]))
+    assert all(a["cycles"] > b["cycles"] for a, b in zip(sub, sub[1:]))
+    assert sub[3]["mean_abs_texels"] < 1.0  # Quake's N = 16: under a texel on average
+    for ev in ["direct", "incremental"]:
+        assert row[("edge functions", f"fixed8 {ev}")]["error"] == 0
+        assert row[("edge functions", f"fixed4 {ev}")]["error"] > 0
+        f32 = row[("edge functions", f"float32 {ev}")]
+        assert f32["mesh_wrong_px_at_0"] < f32["mesh_wrong_px_at_1e6"]
+    assert ns.cracks["top-left"]["gaps"] == ns.cracks["top-left"]["double_hits"] == 0
+    assert ns.cracks["E >= 0"]["double_hits"] > 0 and ns.cracks["E > 0"]["gaps"] > 0
+    assert all(r["error"] == 0 for r in ns.fill)
+    assert row[("depth", "window unorm16")]["first_inverted_z"] == 20
+    assert [r["variant"] for r in ns.fronts["interpolation"]][-1] == "perspective"
+
+
+# -- 07 hard cases ------------------------------------------------------------------------------
+def test_07_cases_fan_owners_and_catalogue():
+    ns = lesson("07_hard_cases")
+    ours, naive = ns.split_square
+    assert ours.max() == 1 and naive.max() == 2
+    owner = ns.fan_owner
+    assert owner.max() == 15 and (owner >= -1).all()  # every pixel one owner, none twice
+    assert ns.fan_naive[ns.hub] == 16 and owner[ns.hub] >= 0
+    assert (ns.flat_top[0] != ns.flat_top[1]).any()
+    assert ns.slivers[0].max() == 1 and ns.slivers[1].max() == 2
+    assert ns.other_winding[0].any() and not ns.other_winding[1].any()
+    at0, at1e6 = ns.far_coverage
+    assert np.array_equal(at0, at1e6) and at1e6.any() and not ns.wrong32.any()
+    assert ns.drift[1] > 1e6 * ns.drift[0]
+    assert ns.sky.any() and not ns.sky_ours.any()
+    assert ns.w_ratio_error > 0.5
+    assert all(v == 0 for (fmt, _), v in ns.coplanar_wrong.items() if fmt == "float64")
+    assert all(v > 0 for (fmt, _), v in ns.coplanar_wrong.items() if fmt == "unorm16")
+    assert len(ns.shown) == 11 and not ns.failures
+
+
+# -- 00 tour ------------------------------------------------------------------------------------
+def test_00_tour_numbers():
+    ns = lesson("00_tour")
+    assert ns.same and np.array_equal(ns.span.coverage, ns.halfplane.coverage)
+    assert np.nanmax(ns.err) > 0.1
+    assert ns.frame.image.shape == (240, 320, 3)
+    assert {e.name for e in ns.frame.plan} >= {"clipping", "culling", "depth_test", "perspective"}
