@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .snapping import to_units, units_per_pixel
+from .validate import as_finite, as_real
 
 
 @dataclass(frozen=True)
@@ -83,7 +84,10 @@ def edge_function(a, b, p) -> np.ndarray:
     >>> float(edge_function([0, 0], [4, 0], [1, 3]))   # p below a→b (y down): inside
     12.0
     """
-    a, b, p = (np.asarray(v, dtype=np.float64) for v in (a, b, p))
+    a, b = as_finite("a", a, (2,)), as_finite("b", b, (2,))
+    p = as_real("p", p)
+    if p.shape[-1:] != (2,):
+        raise ValueError(f"p must have shape (..., 2), got {p.shape}")
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
 
 
@@ -96,7 +100,7 @@ def is_top_left(a, b) -> bool:
     >>> is_top_left((0, 0), (4, 0)), is_top_left((0, 4), (0, 0)), is_top_left((4, 0), (0, 4))
     (True, True, False)
     """
-    return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
+    return bool(top_left_edges(as_finite("a", a, (2,)), as_finite("b", b, (2,))))
 
 
 def top_left_edges(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -153,7 +157,7 @@ def setup_edges(xy: np.ndarray, subpixel_bits: int | None) -> EdgeSetup:
     # interior is on the positive side of every edge (culling is decided by the caller).
     perm = np.where((area2 < 0)[..., None], np.array([0, 2, 1]), np.array([0, 1, 2]))
     p = np.take_along_axis(v, perm[..., None], axis=-2)
-    top_left = top_left_edges(p, np.roll(p, -1, axis=-2))
+    top_left = top_left_edges(p, p[..., [1, 2, 0], :])
     return EdgeSetup(
         p=p,
         perm=perm,

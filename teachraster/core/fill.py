@@ -16,7 +16,7 @@ from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
 from .snapping import SUBPIXEL_BITS, check_bits
 from .trace import FillTrace
 from .triangle import Triangle
-from .validate import as_bool, as_int, as_size, check_choice
+from .validate import as_bool, as_int, as_size, check_choice, check_pixels
 
 METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill, "tiled": tiles.fill}
 CULL = (None, "back", "front")
@@ -56,6 +56,7 @@ def rasterize(
     subpixel_bits: int | None = SUBPIXEL_BITS,
     cull: str | None = None,
     block_sizes=tiles.BLOCK_SIZES,
+    max_pixels: int | None = None,
 ) -> Fill:
     """Fill a triangle into a ``height`` × ``width`` image and interpolate its attributes.
 
@@ -88,6 +89,9 @@ def rasterize(
     block_sizes : sequence of int
         Block sizes of ``method="tiled"``, largest first, each dividing the one before
         (llvmpipe's 64, 16, 4 by default). Checked for every method.
+    max_pixels : int, optional
+        Largest ``width * height`` allowed (default 2**28 = 16384²): a larger image raises
+        a ValueError saying what it would cost, before anything is allocated.
 
     Examples
     --------
@@ -105,6 +109,8 @@ def rasterize(
     if not isinstance(tri, Triangle):
         raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
     width, height = as_size("width", width), as_size("height", height)
+    channels = sum(f.size // 3 for f in tri.attrs.values())
+    check_pixels(width, height, max_pixels, 9 + 8 * channels)  # coverage, depth, attributes
     check_choice("method", method, tuple(METHODS))
     check_choice("interpolation", interpolation, FILL_MODES)
     subdivision = as_int("subdivision", subdivision, minimum=1)
@@ -135,7 +141,10 @@ def rasterize(
     modes = MODES if trace else (interpolation,)
     values = {mode: interpolate(lam, packed, tri.w, mode) for mode in modes if mode in MODES}
     if interpolation == "subdivided":
-        values["subdivided"] = subdivided(lam, rows, packed, tri.w, int(subdivision))
+        # A step beyond the widest span anchors only the span ends, like any larger step;
+        # capping it keeps every index sum in int64.
+        step = min(subdivision, width + 1)
+        values["subdivided"] = subdivided(lam, rows, packed, tri.w, step)
     depth_values = None if tri.z is None else blend(lam, tri.z)
 
     image = np.full((height, width, packed.shape[1]), np.nan)

@@ -21,6 +21,7 @@ import numpy as np
 
 from .bbox import BBox
 from .edges import EdgeSetup
+from .validate import as_finite
 
 
 @dataclass(frozen=True)
@@ -66,7 +67,7 @@ def split_point(sorted_xy: np.ndarray) -> float | None:
     >>> split_point(np.array([[2.0, 0.0], [0.0, 2.0], [6.0, 4.0]]))
     4.0
     """
-    (u1, v1), (_, v2), (u3, v3) = sorted_xy
+    (u1, v1), (_, v2), (u3, v3) = as_finite("sorted_xy", sorted_xy, (3, 2))
     if v3 == v1:  # zero height: no split, and no division by zero
         return None
     return float((v2 - v1) / (v3 - v1) * (u3 - u1) + u1)
@@ -76,7 +77,9 @@ def split_point(sorted_xy: np.ndarray) -> float | None:
 NO_BOUND = 2**62
 
 
-def edge_bounds(a, b, top_left, y, unit, half, exact: bool, first_col=0, last_col=0):
+def edge_bounds(
+    a, b, top_left, y, unit, half, exact: bool, first_col=0, last_col=0, crossings=True
+):
     """Columns allowed by directed edges a→b on raster lines with centre y (internal units).
 
     Solves the edge's tie-aware test ``E >= 0`` (top-left) or ``E > 0`` for the column j
@@ -94,8 +97,9 @@ def edge_bounds(a, b, top_left, y, unit, half, exact: bool, first_col=0, last_co
         gives ``lo``, one going down gives ``hi``; the other is +-NO_BOUND.
     ok : bool array
         False only on the line of a horizontal edge whose tie excludes the whole row.
-    crossing : float array
-        Where the row's centre line crosses the edge, in pixels (NaN if horizontal).
+    crossing : float array or None
+        Where the row's centre line crosses the edge, in pixels (NaN if horizontal); None
+        with ``crossings=False`` (the batched fill needs only the bounds).
     """
     a, b = np.asarray(a), np.asarray(b)
     ax, ay = a[..., 0], a[..., 1]
@@ -103,17 +107,22 @@ def edge_bounds(a, b, top_left, y, unit, half, exact: bool, first_col=0, last_co
     K = dx * (y - ay)  # on this row, E = K - dy * (X - a.x)
     flat = dy == 0
     safe = np.where(flat, 1, dy)
-    with np.errstate(over="ignore", invalid="ignore"):  # raw floats may be astronomically far
-        crossing = np.where(flat, np.nan, (ax + K / safe) / float(unit))
+    crossing = None
+    if crossings:
+        with np.errstate(over="ignore", invalid="ignore"):  # raw floats may be astronomically far
+            crossing = np.where(flat, np.nan, (ax + K / safe) / float(unit))
     if exact:
         bias = np.where(top_left, 0, 1)  # on integers, E > 0 is E >= 1
         # dy > 0: E >= bias  <=>  X - a.x <= floor((K - bias) / dy)        (upper bound)
-        x_max = ax + (K - bias) // safe
         # dy < 0: E >= bias  <=>  X - a.x >= ceil((K - bias) / dy)
         #                                  = -((K - bias) // -dy)          (lower bound)
-        x_min = ax - ((K - bias) // -safe)
-        hi = np.where(dy > 0, (x_max - half) // unit, NO_BOUND)
-        lo = np.where(dy < 0, -((half - x_min) // unit), -NO_BOUND)
+        # so one floor division by |dy| serves both; units per pixel are a power of two,
+        # so the division to columns is an (arithmetic, i.e. flooring) shift.
+        q = (K - bias) // np.abs(safe)
+        x_edge = np.where(dy > 0, ax + q, ax - q)
+        shift = int(unit).bit_length() - 1
+        hi = np.where(dy > 0, (x_edge - half) >> shift, NO_BOUND)
+        lo = np.where(dy < 0, -((half - x_edge) >> shift), -NO_BOUND)
         ok = ~flat | (K >= bias)
     else:
         # Raw floats: the crossing, rounded, can disagree with how the half-plane method's

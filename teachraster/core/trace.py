@@ -27,7 +27,6 @@ of it.
 
 from __future__ import annotations
 
-import operator
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -40,6 +39,7 @@ from .edges import setup_edges
 from .half_planes import HalfPlaneTrace
 from .span_tables import SpanTrace
 from .tile_trace import TileTrace
+from .validate import as_int
 
 SETUP_KINDS = ("snap", "winding", "bbox")
 SPAN_SETUP_KINDS = ("sort", "split")
@@ -223,7 +223,7 @@ class FillTrace:
         >>> t.index(-1) == len(t) - 1 == t.interpolation_step
         True
         """
-        k, n = operator.index(k), len(self)
+        k, n = as_int("k", k), len(self)  # names k; a Python int, so k % n cannot wrap
         if not -n <= k < n:
             raise IndexError(f"step {k} out of range for a trace of {n} steps")
         return k % n

@@ -75,12 +75,16 @@ class Fragments:
         points outside the triangle get negative weights (extrapolation).
         """
         lam = np.empty((len(tri), 3))
+        area = self.area2[tri]
         for k, (ax, ay, dx, dy) in enumerate(self._edges):
             # E(a, b, p) = (b - a).x (p.y - a.y) - (b - a).y (p.x - a.x), for edge a = v_k+1,
             # b = v_k+2; one gather per per-triangle number (contiguous, cheap).
-            e = dx[tri] * (y - ay[tri])
-            e -= dy[tri] * (x - ax[tri])
-            np.divide(e, self.area2[tri], out=lam[:, k])
+            e = y - ay[tri]
+            e *= dx[tri]
+            d = x - ax[tri]
+            d *= dy[tri]
+            e -= d
+            np.divide(e, area, out=lam[:, k])
         return lam
 
     @cached_property
@@ -108,8 +112,18 @@ class Fragments:
             A = (d1 * e2[:, 1] - d2 * e1[:, 1]) / self.area2
             B = (d2 * e1[:, 0] - d1 * e2[:, 0]) / self.area2
         t = self.tri
-        out = f[t, 0] + A[t] * (self.col + 0.5 - v[t, 0, 0]) + B[t] * (self.row + 0.5 - v[t, 0, 1])
-        np.clip(out, f.min(axis=1)[t], f.max(axis=1)[t], out=out)
+        x0, y0, f0 = (np.ascontiguousarray(c) for c in (v[:, 0, 0], v[:, 0, 1], f[:, 0]))
+        # f0 + A (x - x0) + B (y - y0), in place on two fragment-sized arrays.
+        out = self.col + 0.5
+        out -= x0[t]
+        out *= A[t]
+        out += f0[t]
+        dy = self.row + 0.5
+        dy -= y0[t]
+        dy *= B[t]
+        out += dy
+        np.maximum(out, f.min(axis=1)[t], out=out)
+        np.minimum(out, f.max(axis=1)[t], out=out)
         return out
 
 
@@ -175,19 +189,25 @@ def rasterize_batch(
     lo = np.zeros(len(rows), dtype=np.int64)
     hi = np.full(len(rows), width - 1, dtype=np.int64)
     ok = np.ones(len(rows), dtype=bool)
+    # Every line applies all three edge tests: coverage is the intersection of the three
+    # half-planes, so an edge whose y-range misses the line still bounds it correctly (on
+    # the exact integer grid the answer is identical to an active edge table's).
+    # Per-triangle numbers are gathered per line from contiguous 1-D arrays (indexing the
+    # (n, 3, 2) block with two index arrays takes a slow path in numpy).
+    corner = [[np.ascontiguousarray(p[:, k, c]) for c in (0, 1)] for k in range(3)]
     for k in range(3):
-        a, b = p[owner, k], p[owner, (k + 1) % 3]
-        top_left = setup.top_left[owner, k]
-        # Each edge bounds the lines its closed y-range contains (an active edge table).
-        active = (y >= np.minimum(a[:, 1], b[:, 1])) & (y <= np.maximum(a[:, 1], b[:, 1]))
-        if not exact:  # raw floats: all three tests on every line (see span_tables.fill)
-            active[:] = True
+        # (L, 2) views of (2, L) arrays: each coordinate stays contiguous for edge_bounds.
+        a = np.stack([corner[k][0][owner], corner[k][1][owner]]).T
+        j = (k + 1) % 3
+        b = np.stack([corner[j][0][owner], corner[j][1][owner]]).T
+        top_left = np.ascontiguousarray(setup.top_left[:, k])[owner]
         e_lo, e_hi, e_ok, _ = edge_bounds(
-            a, b, top_left, y, unit, half, exact, first_col=0, last_col=width - 1
-        )
-        lo = np.where(active, np.maximum(lo, e_lo), lo)
-        hi = np.where(active, np.minimum(hi, e_hi), hi)
-        ok &= ~active | e_ok
+            a, b, top_left, y, unit, half, exact,
+            first_col=0, last_col=width - 1, crossings=False,
+        )  # fmt: skip
+        np.maximum(lo, e_lo, out=lo)
+        np.minimum(hi, e_hi, out=hi)
+        ok &= e_ok
     counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
     # One fragment per covered centre, generated once: column = lo + position in the span.
     first = np.cumsum(counts) - counts  # where each line's span starts in the flat arrays

@@ -12,13 +12,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..core.validate import as_size
+from ..core.validate import check_choice
 from .camera import Camera
-from .render_plan import Effect, Plan, parse_force
+from .inputs import check_force, check_size
+from .render_plan import Effect, Plan
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 from .scenes import Scene
-from .texture import sample
+from .texture import FILTERS, sample
 
 
 @dataclass(frozen=True)
@@ -58,12 +59,15 @@ def render_scene(
     *,
     texture_filter: str = "nearest",
     force=None,
+    max_pixels: int | None = None,
     **kwargs,
 ) -> SceneFrame:
     """Render ``scene`` through ``camera`` (default: the scene's own) and shade it.
 
     Other keyword arguments (``depth_test``, ``cull``, ``depth_format``, ``interpolation``,
-    ``trace``, ``subpixel_bits``) go to :func:`teachraster.pipeline.render_triangles.render`.
+    ``trace``, ``subpixel_bits``) go to :func:`teachraster.pipeline.render_triangles.render`;
+    ``max_pixels`` (default 2**28) caps ``width * height`` there too, checked before the
+    scene is projected.
 
     >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
@@ -75,8 +79,9 @@ def render_scene(
     camera = scene.camera if camera is None else camera
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a teachraster Camera, got {type(camera).__name__}")
-    width, height = as_size("width", width), as_size("height", height)
-    forced = parse_force(force)
+    width, height, max_pixels = check_size(width, height, max_pixels)
+    check_choice("texture_filter", texture_filter, FILTERS)
+    forced = check_force(force)
     mesh = scene.mesh
     names = sorted(mesh.attrs) if "attributes" in forced else list(scene.uses)
     skipped = sorted(set(mesh.attrs) - set(names))
@@ -89,7 +94,9 @@ def render_scene(
         start += corner.shape[2]
     attrs = np.concatenate(blocks, axis=2) if blocks else None
     clip = camera.clip(mesh.corner_positions(), width / height)
-    frame = render_clip(clip, width, height, attrs=attrs, force=forced, **kwargs)
+    frame = render_clip(
+        clip, width, height, attrs=attrs, force=forced, max_pixels=max_pixels, **kwargs
+    )
 
     # Say which attributes were interpolated and which were skipped, and why.
     why = f"interpolated {names or 'nothing'} for shading={scene.shading!r}"

@@ -22,13 +22,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.fill import CULL
-from ..core.interpolation import MODES
-from ..core.snapping import SUBPIXEL_BITS, check_bits
-from ..core.validate import as_finite, as_size, check_choice
-from .depth import DEPTH_FORMATS
+from ..core.snapping import SUBPIXEL_BITS
 from .hierarchical_z import HiZResult, hiz_stage
-from .render_plan import Plan, parse_force
+from .inputs import check_render
+from .render_plan import Plan
 from .stages import (
     clip_stage,
     cull_stage,
@@ -107,20 +104,6 @@ class Frame:
         return self.triangle_id >= 0
 
 
-def _check_clip(clip, attrs):
-    if np.size(clip) == 0:  # an empty scene, however it is spelt ([] or (0, 3, 4))
-        clip = np.zeros((0, 3, 4))
-    clip = as_finite("clip", clip, (None, 3, 4))
-    n = len(clip)
-    if attrs is None:
-        return clip, np.zeros((n, 3, 0))
-    arr = np.asarray(attrs, dtype=np.float64)
-    if arr.ndim == 2:
-        arr = arr[:, :, None]
-    arr = as_finite("attrs", arr, (n, 3, None))
-    return clip, arr
-
-
 def render(
     clip,
     width: int,
@@ -134,6 +117,7 @@ def render(
     force=None,
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
+    max_pixels: int | None = None,
 ) -> Frame:
     """Render clip-space triangles into a ``height`` × ``width`` frame.
 
@@ -160,6 +144,14 @@ def render(
         Record every stage (see :class:`RenderTrace`).
     subpixel_bits : int or None
         Snapping precision, as in :func:`teachraster.rasterize`.
+    max_pixels : int, optional
+        Largest ``width * height`` allowed (default 2**28 = 16384²): a larger frame raises
+        a ValueError saying what it would cost, before anything is allocated.
+
+    Raises
+    ------
+    ValueError, TypeError
+        For a bad argument, naming it (see :mod:`teachraster.pipeline.inputs`).
 
     Examples
     --------
@@ -173,13 +165,11 @@ def render(
     >>> print(frame.plan["clipping"].why)
     no triangle crosses the near or far plane: nothing to clip
     """
-    clip, attrs = _check_clip(clip, attrs)
-    width, height = as_size("width", width), as_size("height", height)
-    check_choice("cull", cull, CULL)
-    check_choice("depth_format", depth_format, DEPTH_FORMATS)
-    check_choice("interpolation", interpolation, MODES)
-    subpixel_bits = check_bits(subpixel_bits)
-    forced = parse_force(force)
+    a = check_render(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull,
+                     depth_format=depth_format, interpolation=interpolation, force=force,
+                     trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
+    clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
+    depth_test, trace, forced = a.depth_test, a.trace, a.forced
 
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)

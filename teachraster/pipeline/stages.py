@@ -3,12 +3,24 @@
 Lesson 05 follows a triangle from clip space to a pixel; each step of that journey is one
 function here, and ``render`` is just these calls in a row::
 
-    clip_stage       clip space   -> ClipResult (triangles cut at near/far), Effect
-    viewport_stage   ClipResult   -> window (x, y, z) per vertex
-    cull_stage       window       -> culled (bool per triangle), Effect
-    fill_stage       window       -> Fragments (covered pixel centres, barycentrics)
-    depth_stage      Fragments    -> Visibility (stored depths, the z-buffer's winners), Effect
-    interpolate_stage Visibility  -> attribute values at the visible pixels, two Effects
+    clip_stage        (N, 3, 4) clip, (N, 3, k) attrs -> ClipResult, Effect
+    viewport_stage    ClipResult -> (M, 3, 3) window x, y, z
+    cull_stage        window     -> (M,) bool culled, Effect
+    fill_stage        window     -> Fragments: (triangle, row, col) of every covered centre
+    depth_stage       Fragments  -> Visibility: stored depth per fragment, winner per pixel, Effect
+    interpolate_stage Visibility -> (v, k) attributes at the v visible pixels, two Effects
+
+What crosses each boundary, for code that extends a stage (tiles, multisampling, texture
+derivatives):
+
+- :class:`~teachraster.pipeline.clipping.ClipResult`: ``clip`` (M, 3, 4), ``attrs``
+  (M, 3, k), ``parent`` (M,) input index, ``status`` (N,), the cut ``polygons``;
+- :class:`~teachraster.pipeline.batched_fill.Fragments`: ``tri``, ``row``, ``col`` (m,) are
+  generated once; nothing is evaluated at them until asked: ``weights(index)`` /
+  ``weights_at(tri, x, y)`` give barycentrics at fragments or at any point (sample
+  positions, helper pixels), ``plane(values)`` an affine per-vertex quantity (depth);
+- :class:`Visibility`: ``depth`` and ``pixel`` (m,) per fragment, ``pixels`` (v,) covered
+  flat pixel indices and ``winner`` (v,) the fragment each shows; ``passed`` on demand.
 
 Every stage receives and returns plain numpy arrays and small frozen dataclasses (the trace
 contract); the words that explain a stage's decision live in
@@ -30,7 +42,7 @@ import numpy as np
 
 from ..core.edges import culled as culled_by
 from ..core.edges import setup_edges
-from ..core.interpolation import blend_each, weights_per_row
+from ..core.interpolation import blend_each, convex_weights, weights_per_row
 from .batched_fill import Fragments, rasterize_batch
 from .clipping import CLIPPED, DROPPED, INSIDE, ClipResult, classify, clip_triangles
 from .depth import quantize
@@ -73,7 +85,7 @@ def clip_stage(
     clipped = clip_triangles(clip, attrs, guard=guard_band(width, height, bits), force=force)
     cut = clipped.status == CLIPPED
     # Which cuts were the near/far planes, and which only the guard band far off screen.
-    n_guard = int((cut & (classify(clip, None) == INSIDE)).sum())
+    n_guard = int((classify(clip[cut], None) == INSIDE).sum()) if cut.any() else 0
     n_drop = int((clipped.status == DROPPED).sum())
     effect = clipping_effect(len(clip), int(cut.sum()) - n_guard, n_guard, n_drop, force)
     return clipped, effect
@@ -166,7 +178,9 @@ def depth_stage(
     ``forced`` reports every fragment as tested (the one-pass resolve does the same work
     either way; meaningless, and not reported, with the test off).
     """
-    depth = quantize(frags.plane(window[:, :, 2]), depth_format)
+    depth = frags.plane(window[:, :, 2])  # a fresh array: float64 needs no copy
+    if depth_format != "float64":
+        depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
     force = "depth_test" in forced and depth_test
     winner, tested = resolve(pixel, depth, width * height, depth_test)
@@ -197,7 +211,7 @@ def interpolate_stage(
     if every:
         values = values[visible.winner]
     # Count the triangles whose visible (or, forced, all) fragments were really divided.
-    shaded_tris = np.unique(frags.tri[shade])
+    shaded_tris = np.flatnonzero(np.bincount(frags.tri[shade], minlength=len(w)))
     n_persp = len(shaded_tris) if divide_all else int(unequal[shaded_tris].sum())
     m = len(clipped.clip)
     perspective = perspective_effect(k, len(shaded_tris), n_persp, m, interpolation, divide_all)
@@ -212,8 +226,13 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
-    weights = frags.weights(shade)
+    weights = frags.weights_at(tri, frags.col[shade] + 0.5, frags.row[shade] + 0.5)
+    # Weights from the unsnapped set-up can be slightly negative at a covered centre that
+    # snapping brought inside an edge: made convex, so every value stays within range.
+    weights = convex_weights(weights)
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
-    if persp.any():  # f/w and 1/w are affine in screen space
+    if persp.all():  # f/w and 1/w are affine in screen space (no masking needed)
+        weights = weights_per_row(weights, w[tri])
+    elif persp.any():
         weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
     return blend_each(weights, attrs, index=tri)

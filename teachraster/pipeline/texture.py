@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import as_int
+from ..core.validate import as_int, as_real
 
 FILTERS = ("nearest", "bilinear")
 WRAPS = ("repeat", "clamp")
@@ -79,12 +79,7 @@ def checkerboard(
             f"checks must be <= texels (a square must be at least one texel wide), "
             f"got checks={checks}, texels={texels}"
         )
-    try:
-        cols = np.array(colors, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"colors must be numeric array-like of shape (2, C), got {colors!r}"
-        ) from None
+    cols = as_real("colors", colors)
     if cols.ndim != 2 or cols.shape[0] != 2 or cols.shape[1] < 1:
         raise ValueError(f"colors must have shape (2, C): two colours, got {cols.shape}")
     if not (np.isfinite(cols).all() and ((cols >= 0) & (cols <= 1)).all()):
@@ -216,10 +211,10 @@ def _wrap(index: np.ndarray, size: int, wrap: str) -> np.ndarray:
 def _texture_size(shape) -> tuple[int, int]:
     """``(H, W)`` from a texture shape, or a ValueError naming ``shape``."""
     try:
-        dims = tuple(int(s) for s in shape)
+        dims = tuple(as_int("shape", s) for s in shape)  # 2.7 is no size (int() would floor it)
     except (TypeError, ValueError):
         raise ValueError(
-            f"shape must be a texture shape (H, W) or (H, W, C), got {shape!r}"
+            f"shape must be a texture shape (H, W) or (H, W, C) of ints, got {shape!r}"
         ) from None
     if len(dims) not in (2, 3) or min(dims) < 1:
         raise ValueError(f"shape must be a texture shape (H, W) or (H, W, C), got {shape!r}")
@@ -227,10 +222,7 @@ def _texture_size(shape) -> tuple[int, int]:
 
 
 def _as_texture(texture) -> np.ndarray:
-    try:
-        tex = np.asarray(texture, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError("texture must be a numeric array of shape (H, W) or (H, W, C)") from None
+    tex = as_real("texture", texture)
     if tex.ndim not in (2, 3) or min(tex.shape) < 1:
         raise ValueError(f"texture must have shape (H, W) or (H, W, C), got {tex.shape}")
     if not np.isfinite(tex).all():
@@ -239,10 +231,7 @@ def _as_texture(texture) -> np.ndarray:
 
 
 def _as_uv(name: str, uv, allow_inf: bool = False) -> np.ndarray:
-    try:
-        arr = np.asarray(uv, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a numeric array of shape (..., 2)") from None
+    arr = as_real(name, uv)
     if arr.ndim < 1 or arr.shape[-1] != 2:
         raise ValueError(f"{name} must have shape (..., 2): (u, v) pairs, got {arr.shape}")
     if not allow_inf and np.isinf(arr).any():

@@ -49,6 +49,10 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     count = np.bincount(pixel, minlength=n_pixels)
     tested = int((count > 1).sum())
     index = np.arange(m)
+    if tested == 0:  # one fragment per pixel at most: nothing to resolve
+        winner = np.full(n_pixels, -1, dtype=np.int64)
+        winner[pixel] = index
+        return winner, tested
     if not depth_test:  # painter's order: the last fragment drawn wins
         winner = np.full(n_pixels, -1, dtype=np.int64)
         np.maximum.at(winner, pixel, index)
