@@ -16,7 +16,15 @@ import teachraster as tr
 from teachraster.pipeline.render_plan import FORCEABLE, Effect, Plan, parse_force
 from teachraster.pipeline.scenes import SCENES, get_scene
 
-EFFECTS = ("clipping", "culling", "depth_test", "perspective", "attributes", "derivatives")
+EFFECTS = (
+    "clipping",
+    "culling",
+    "depth_test",
+    "hi_z",
+    "perspective",
+    "attributes",
+    "derivatives",
+)
 
 
 def assert_same_render(a, b, msg=""):
@@ -62,7 +70,7 @@ def test_planned_equals_everything_on_random_scenes(rng):
             # forcing is meaningless (and not reported) for the divide of affine
             # interpolation and for the test of a render without depth test
             moot = (name == "perspective" and kw.get("interpolation") == "affine") or (
-                name == "depth_test" and kw.get("depth_test") is False
+                name in ("depth_test", "hi_z") and kw.get("depth_test") is False
             )
             if name == "multisampling":  # one sample per pixel: no such effect to report
                 assert name not in [e.name for e in forced.plan]

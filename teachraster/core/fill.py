@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import half_planes, span_tables
+from . import half_planes, span_tables, tiles
 from .barycentrics import barycentric_pixels
 from .bbox import BBox, pixel_bbox
 from .edges import culled as culled_by
@@ -20,7 +20,7 @@ from .trace import FillTrace
 from .triangle import Triangle
 from .validate import as_bool, as_int, as_size, check_choice, check_pixels
 
-METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill}
+METHODS = {"halfplane": half_planes.fill, "span": span_tables.fill, "tiled": tiles.fill}
 CULL = (None, "back", "front")
 
 
@@ -78,6 +78,7 @@ def rasterize(
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
     cull: str | None = None,
+    block_sizes=tiles.BLOCK_SIZES,
     max_pixels: int | None = None,
     samples=1,
     centroid: bool = False,
@@ -92,13 +93,12 @@ def rasterize(
         ``(j + 0.5, i + 0.5)``).
     width, height : int
         Image size in pixels.
-    method : {"halfplane", "span"}
-        Half-plane edge tests over the bounding box, or span tables (split at u4, fill
-        raster lines). Both cover exactly the same pixels.
+    method : {"halfplane", "span", "tiled"}
+        Half-plane tests over the bounding box, span tables (split at u4, fill raster
+        lines) or hierarchical tiles (``block_sizes``). All cover exactly the same pixels.
     interpolation : {"perspective", "affine", "subdivided"}
-        Perspective-correct (f/w over 1/w), plain screen-space interpolation, or
-        perspective-correct only at every ``subdivision``-th pixel of each span and at
-        its ends with affine steps in between (the classic software-renderer trade-off).
+        Perspective-correct (f/w over 1/w), plain screen-space, or perspective-correct at
+        every ``subdivision``-th pixel of each span and its ends, affine in between.
     subdivision : int
         Pixels between exact evaluations for ``"subdivided"`` (1 = exact).
     trace : bool
@@ -109,15 +109,15 @@ def rasterize(
         (8, as in Direct3D). None keeps raw floats, to show what precision does.
     cull : {None, "back", "front"}
         Drop back-facing (clockwise on screen) or front-facing triangles.
+    block_sizes : sequence of int
+        Tiles: block sizes, largest first, each dividing the one before (64, 16, 4).
     max_pixels : int, optional
         Largest ``width * height`` (default 2**28): larger raises before allocating.
     samples : int or (S, 2) array-like
-        1 (pixel centres), 2, 4, 8 or 16 (the standard patterns of
-        :func:`~teachraster.core.sample_patterns.sample_pattern`), or offsets in [0, 1)²:
-        coverage per sample (``fill.sample_coverage``), each sample decided like a centre.
+        1 (centres), 2, 4, 8, 16 (standard patterns, :func:`~teachraster.sample_pattern`)
+        or offsets in [0, 1)²: coverage per sample (``fill.sample_coverage``).
     centroid : bool
-        Multisampled: evaluate attributes at the covered sample nearest the centre when
-        the centre is not covered, instead of extrapolating at the centre.
+        Multisampled: attributes at the covered sample nearest an uncovered centre.
     per_sample : bool
         Supersampling: attributes per covered sample (``fill.sample_attrs``), their mean.
 
@@ -134,27 +134,24 @@ def rasterize(
     >>> float(fill.attrs["u"][0, 1])     # at the centre (1.5, 0.5): u = x / 4
     0.375
     """
-    width, height, subdivision, trace, subpixel_bits = _check_args(
+    width, height, subdivision, trace, subpixel_bits, block_sizes = _check_args(
         tri, width, height, method, interpolation, subdivision, cull, trace, subpixel_bits,
-        max_pixels,
+        max_pixels, block_sizes,
     )  # fmt: skip
     offsets = _check_samples(samples, method, interpolation, centroid, per_sample)
     setup = setup_edges(tri.xy, subpixel_bits)
-    box = pixel_bbox(setup, width, height)
-    culled = bool(culled_by(setup.original_area2, cull))
-    coverage, local, algo_trace = _fill_centres(setup, box, method, culled, trace, width, height)
+    box, culled = pixel_bbox(setup, width, height), bool(culled_by(setup.original_area2, cull))
+    coverage, local, algo_trace = _fill_centres(
+        setup, box, method, culled, trace, width, height, block_sizes
+    )
     packed, layout = _pack(tri.attrs)  # one (3, K) block: per-pixel work once per fill
     multi = None
     if offsets is not None:  # the samples decide coverage; the centres still drive the trace
         multi = fill_samples(setup, offsets, (width, height), METHODS[method], coverage,
                              packed, tri, (interpolation, centroid, per_sample, trace, culled))  # fmt: skip
-    rows, cols = np.nonzero(coverage)  # row-major, the order of every per-pixel array
-    lam = barycentric_pixels(setup, rows, cols)
-    values, depth_values = _interpolate_centres(
-        tri, lam, rows, packed, interpolation, subdivision, width, trace
+    lam, values, depth_values = _interpolate_centres(
+        tri, setup, coverage, packed, interpolation, subdivision, trace
     )
-    attrs = _unpack(_place(coverage, values[interpolation]), layout)
-    depth = None if depth_values is None else _place(coverage, depth_values)
     fill_trace = None
     if trace:
         fill_trace = _record(
@@ -166,14 +163,20 @@ def rasterize(
         )  # fmt: skip
     if multi is not None:
         return _multi_result(multi, layout, fill_trace)
+    attrs = _unpack(_place(coverage, values[interpolation]), layout)
+    depth = None if depth_values is None else _place(coverage, depth_values)
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
 
 
-def _interpolate_centres(tri, lam, rows, packed, interpolation, subdivision, width, trace):
-    """The attribute values of every mode needed at the covered centres, and their depth.
+def _interpolate_centres(tri, setup, coverage, packed, interpolation, subdivision, trace):
+    """Barycentrics, the attribute values of every mode needed and the depth at the covered
+    centres, in row-major order (the order of every per-pixel array).
 
     A trace records both affine and perspective-correct values, whatever mode was asked.
     """
+    rows, cols = np.nonzero(coverage)
+    lam = barycentric_pixels(setup, rows, cols)
+    width = coverage.shape[1]
     modes = MODES if trace else (interpolation,)
     values = {mode: interpolate(lam, packed, tri.w, mode) for mode in modes if mode in MODES}
     if interpolation == "subdivided":
@@ -182,7 +185,7 @@ def _interpolate_centres(tri, lam, rows, packed, interpolation, subdivision, wid
         step = min(subdivision, width + 1)
         values["subdivided"] = subdivided(lam, rows, packed, tri.w, step)
     depth_values = None if tri.z is None else blend(lam, tri.z)
-    return values, depth_values
+    return lam, values, depth_values
 
 
 def _place(coverage: np.ndarray, values: np.ndarray) -> np.ndarray:
@@ -193,7 +196,7 @@ def _place(coverage: np.ndarray, values: np.ndarray) -> np.ndarray:
 
 
 def _check_args(tri, width, height, method, interpolation, subdivision, cull, trace, bits,
-                max_pixels):  # fmt: skip
+                max_pixels, block_sizes):  # fmt: skip
     """Validated arguments of :func:`rasterize` (errors name the argument)."""
     if not isinstance(tri, Triangle):
         raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
@@ -204,15 +207,17 @@ def _check_args(tri, width, height, method, interpolation, subdivision, cull, tr
     check_choice("interpolation", interpolation, FILL_MODES)
     subdivision = as_int("subdivision", subdivision, minimum=1)
     check_choice("cull", cull, CULL)
-    return width, height, subdivision, as_bool("trace", trace), check_bits(bits)
+    return (width, height, subdivision, as_bool("trace", trace), check_bits(bits),
+            tiles.check_block_sizes(block_sizes))  # fmt: skip
 
 
-def _fill_centres(setup, box, method, culled, record, width, height):
+def _fill_centres(setup, box, method, culled, record, width, height, block_sizes):
     """Pixel-centre coverage (H, W), its bbox-local part and the algorithm's trace."""
     if culled:
         local, algo_trace = np.zeros(box.shape, dtype=bool), None
     else:
-        local, algo_trace = METHODS[method](setup, box, record)
+        extra = {"block_sizes": block_sizes, "image": (height, width)} if method == "tiled" else {}
+        local, algo_trace = METHODS[method](setup, box, record, **extra)
     if setup.area2 == 0:  # zero area covers nothing (exact arithmetic already ensures it)
         local[:] = False
     coverage = np.zeros((height, width), dtype=bool)
@@ -298,6 +303,7 @@ def _record(tri, setup, box: BBox, method, interpolation, bits, size, culled, lo
         pixel_depth=depth_values,
         span=algo_trace if method == "span" else None,
         halfplane=algo_trace if method == "halfplane" else None,
+        blocks=algo_trace if method == "tiled" else None,
         subdivision=subdivision,
         pixel_subdivided=values.get("subdivided"),
         samples=samples,

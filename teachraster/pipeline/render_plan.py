@@ -15,6 +15,7 @@ FORCEABLE = (
     "clipping",
     "perspective",
     "depth_test",
+    "hi_z",
     "attributes",
     "multisampling",
     "derivatives",

@@ -11,7 +11,8 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
-   (:mod:`teachraster.pipeline.zbuffer`);
+   (:mod:`teachraster.pipeline.zbuffer`); where fragments overlap, what early-z and Hi-Z
+   would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
 6. perspective-correct interpolation of the attributes, at the visible pixels only;
 7. on request, their screen-space derivatives from 2×2 quads with helper pixels
    (:mod:`teachraster.pipeline.quad_derivatives`), for texture filtering.
@@ -25,6 +26,7 @@ import numpy as np
 
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
+from .hierarchical_z import HiZResult, hiz_stage
 from .inputs import check_render
 from .multisampling import multisample_stage
 from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
@@ -67,6 +69,8 @@ class RenderTrace:
         NaN here, the per-sample depths are in ``Frame.sample_depth``).
     quads : QuadTrace or None
         The 2×2 quads and helper pixels evaluated for derivatives, when they were.
+    hiz : HiZResult or None
+        Early-z and Hi-Z per block and fragment (None without the depth test).
     """
 
     clip_status: np.ndarray
@@ -81,6 +85,7 @@ class RenderTrace:
     fragment_passed: np.ndarray
     fragment_sample: np.ndarray | None = None
     quads: QuadTrace | None = None
+    hiz: HiZResult | None = None
 
 
 @dataclass(frozen=True)
@@ -260,16 +265,16 @@ def render(
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
+    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced)
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
-
     ddx, ddy, quads, derivs = derivatives_stage(
         frags, visible, clipped, (width, height), mode,
         None if where is None else where[clipped.parent], interpolation, forced, trace,
     )  # fmt: skip
-    plan = Plan((clipping, culling, depth_testing, perspective, attributes, derivs))
-    record = _record(clipped, window, culled, frags, visible, quads) if trace else None
+    plan = Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
+    record = _record(clipped, window, culled, frags, visible, quads, hiz) if trace else None
     return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
 
 
@@ -364,7 +369,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     )
 
 
-def _record(clipped, window, culled, frags, visible, quads=None) -> RenderTrace:
+def _record(clipped, window, culled, frags, visible, quads=None, hiz=None) -> RenderTrace:
     """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
     return RenderTrace(
         clip_status=clipped.status,
@@ -378,4 +383,5 @@ def _record(clipped, window, culled, frags, visible, quads=None) -> RenderTrace:
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
         quads=quads,
+        hiz=hiz,
     )

@@ -26,6 +26,16 @@ Geometry of one fill (``fill = tr.rasterize(tri, W, H, trace=True)``)
 - :func:`plot_bailout` -- which edge test rejected each pixel, and how many tests ran.
 - :func:`plot_visit_order` -- the order in which the fill reaches the pixels.
 
+Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
+-------------------------------------------------------------------
+- :func:`plot_blocks` -- the classified blocks coloured by kind, a level or up to a step.
+- :func:`plot_hierarchy` -- one panel per block size.
+- :func:`plot_block_counters` -- llvmpipe-style counters as a table.
+- :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
+- :func:`plot_block_path` -- the walk through one level's blocks in a traversal order.
+- :func:`plot_early_z` -- per pixel, fragments Hi-Z rejected, early-z killed, or shaded
+  (``tr.render(..., trace=True)``).
+
 Per-pixel values
 ----------------
 - :func:`plot_barycentric` -- λ0, λ1, λ2 as RGB, or one weight as a value map.
@@ -123,6 +133,22 @@ from .texture_plots import (
     plot_pyramid,
     plot_quads,
 )
+from .tiles import (
+    BLOCK_COLORS,
+    BlockArtists,
+    BlockPathArtists,
+    CounterArtists,
+    EarlyZArtists,
+    TraversalArtists,
+    block_mask,
+    early_z_counts,
+    plot_block_counters,
+    plot_block_path,
+    plot_blocks,
+    plot_early_z,
+    plot_hierarchy,
+    plot_traversal,
+)
 from .views import ComparisonView, FillView, InterpolationView
 
 __all__ = [
@@ -132,14 +158,19 @@ __all__ = [
     "plot_coverage_fraction",
     "plot_pixel_samples",
     "plot_samples",
+    "BLOCK_COLORS",
     "COLORS",
     "OKABE_ITO",
     "STYLES",
     "BBoxArtists",
     "BailoutArtists",
+    "BlockArtists",
+    "BlockPathArtists",
     "CentreArtists",
     "ComparisonView",
+    "CounterArtists",
     "CoverageArtists",
+    "EarlyZArtists",
     "EdgeValueArtists",
     "FilterArtists",
     "FillView",
@@ -154,23 +185,31 @@ __all__ = [
     "QuadArtists",
     "RasterLineArtists",
     "SplitArtists",
+    "TraversalArtists",
     "TriangleArtists",
     "VisitArtists",
     "abs_error",
     "attribute_image",
     "bailout",
+    "block_mask",
+    "early_z_counts",
     "edge_images",
     "format_plan",
     "plot_attribute",
     "plot_bailout",
     "plot_barycentric",
+    "plot_block_counters",
+    "plot_block_path",
+    "plot_blocks",
     "plot_bbox",
     "plot_coverage",
     "plot_current_pixel",
     "plot_depth",
+    "plot_early_z",
     "plot_edge_values",
     "plot_error_heatmap",
     "plot_filters",
+    "plot_hierarchy",
     "plot_image",
     "plot_lod",
     "plot_pixel_centres",
@@ -180,6 +219,7 @@ __all__ = [
     "plot_quads",
     "plot_raster_line",
     "plot_split",
+    "plot_traversal",
     "plot_triangle",
     "plot_visit_order",
     "use_style",

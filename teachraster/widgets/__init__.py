@@ -13,6 +13,8 @@ Widgets
 - :class:`TriangleEditor` -- move each vertex (x, y) and change its w; the fill, the split at
   u4 and the affine-vs-perspective error heatmap follow. With ipympl the vertices can also be
   dragged with the mouse.
+- :class:`TileExplorer` -- the block hierarchy of a tiled fill, level by level or block by
+  block in a traversal order, with block sizes and traversal as menus and the counters.
 - :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
   perspective-correct texture coordinates side by side, with the error in texels; a tilt
   slider.
@@ -46,6 +48,7 @@ from .filter_explorer import FilterExplorer
 from .inspector import PixelInspector
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer
+from .tiles import TileExplorer
 
 __all__ = [
     "BACKENDS",
@@ -54,6 +57,7 @@ __all__ = [
     "FillPlayer",
     "PixelInspector",
     "TexturedPlaneViewer",
+    "TileExplorer",
     "TriangleEditor",
     "resolve_backend",
 ]

@@ -30,7 +30,7 @@ from .display import (
     resolve_backend,
 )
 
-METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane")]
+METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane"), ("tiles", "tiled")]
 INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspective")]
 
 
@@ -54,8 +54,9 @@ class FillPlayer(Holdable):
         The triangle to fill (screen space, pixels).
     width, height : int
         Image size in pixels (a 32 × 32 grid or smaller reads best).
-    method : {"span", "halfplane"}
-        Span tables or half-planes, as for :func:`teachraster.rasterize`.
+    method : {"span", "halfplane", "tiled"}
+        Span tables, half-planes or tiles (one step per classified block), as for
+        :func:`teachraster.rasterize`.
     interpolation : {"perspective", "affine"}
         How attributes are interpolated.
     attribute : str, optional
