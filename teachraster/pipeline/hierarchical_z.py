@@ -100,12 +100,19 @@ class HiZResult:
 
 
 def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height: int,
-              depth_format: str, forced, tile: int = HIZ_TILE) -> tuple[HiZResult | None, Effect]:  # fmt: skip
+              depth_format: str, forced, record: bool = True,
+              tile: int = HIZ_TILE) -> tuple[HiZResult | None, Effect]:  # fmt: skip
     """5b. Early-z and Hi-Z over the fragments the depth stage resolved.
 
     ``visible`` is the depth stage's :class:`~teachraster.pipeline.stages.Visibility`
     (stored depth and pixel of every fragment). Returns the record (None when the depth
-    test is off) and the "hi_z" plan effect.
+    test is off, or when nothing asked for it) and the "hi_z" plan effect.
+
+    Early-z and Hi-Z never change the frame: they are what a GPU drawing in order would
+    save. This simulator resolves visibility in one pass and interpolates attributes at the
+    visible pixels only, so replaying the in-order tile bounds would cost it time (about
+    half of a large render) and save it none. It is therefore run only when it is looked
+    at: with ``record`` (``render(..., trace=True)``) or ``force="hi_z"``.
     """
     force = "hi_z" in forced and visible.depth_test
     m = len(frags.tri)
@@ -113,6 +120,14 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
         why = "off (depth_test=False): nothing is hidden, so nothing is rejected early"
         return None, Effect("hi_z", False, 0, m, "fragments", why)
     count = np.bincount(visible.pixel, minlength=width * height)
+    n_contested = int((count > 1).sum())
+    if not (record or force) and n_contested:
+        why = (
+            f"depth complexity above one on {n_contested:,} pixel(s), but the frame is the "
+            "same without Hi-Z: not simulated; render(..., trace=True) or force='hi_z' "
+            "reports what early-z and Hi-Z would save a GPU"
+        )
+        return None, Effect("hi_z", False, 0, m, "fragments", why)
     contested = count[visible.pixel] > 1  # depth complexity above one at the fragment
     tiles_x = -(-width // tile)
     tile_id = (frags.row // tile) * tiles_x + frags.col // tile

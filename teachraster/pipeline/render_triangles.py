@@ -265,7 +265,7 @@ def render(
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
-    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced)
+    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced, trace)
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
