@@ -175,6 +175,10 @@ def _interpolate_centres(tri, setup, coverage, packed, interpolation, subdivisio
     A trace records both affine and perspective-correct values, whatever mode was asked.
     """
     rows, cols = np.nonzero(coverage)
+    if packed.shape[1] == 0 and tri.z is None and not trace:
+        # Nothing to interpolate and nothing to record: weights would be computed for no one
+        # (a coverage-only fill then costs what its algorithm costs, nothing more).
+        return None, {interpolation: np.zeros((len(rows), 0))}, None
     lam = barycentric_pixels(setup, rows, cols)
     width = coverage.shape[1]
     modes = MODES if trace else (interpolation,)
