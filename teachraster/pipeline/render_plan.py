@@ -41,7 +41,7 @@ class Effect:
         state = "forced" if self.forced else ("ran" if self.ran else "skipped")
         # "applied to" so that "skipped, applied to 0 of 12" cannot read as "none skipped"
         amount = f"applied to {self.count:>8,} of {self.total:>9,} {self.unit:<10}"
-        return f"{self.name:<11} {state:<7} {amount} {self.why}"
+        return f"{self.name:<13} {state:<7} {amount} {self.why}"
 
 
 @dataclass(frozen=True)
