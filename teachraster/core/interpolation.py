@@ -97,9 +97,10 @@ def blend_each(weights: np.ndarray, values: np.ndarray, index=None) -> np.ndarra
             v0, v1, v2 = (np.ascontiguousarray(values[:, i, j]) for i in range(3))
         else:
             v0, v1, v2 = (np.ascontiguousarray(values[:, i, j])[index] for i in range(3))
-        o = m0 * v0
-        o += m1 * v1
-        o += m2 * v2
+        with np.errstate(over="ignore"):  # values near the float maximum: the clamp below
+            o = m0 * v0  # brings an overflowed sum back to the finite extreme value
+            o += m1 * v1
+            o += m2 * v2
         np.maximum(o, np.minimum(np.minimum(v0, v1), v2), out=o)
         np.minimum(o, np.maximum(np.maximum(v0, v1), v2), out=o)
         out[:, j] = o
