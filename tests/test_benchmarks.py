@@ -35,3 +35,14 @@ def test_scene_benchmark_quick_run_succeeds(capsys):
 def test_widget_benchmark_quick_run_succeeds(capsys):
     assert _load("bench_widgets").main(["--quick"]) == 0
     assert "step slider" in capsys.readouterr().out
+
+
+def test_antialiasing_benchmark_quick_run_succeeds(capsys):
+    assert _load("bench_antialiasing").main(["--quick", "--repeat", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "exact pixel area" in out and "samples=4" in out
+
+
+def test_texture_benchmark_quick_run_succeeds(capsys):
+    assert _load("bench_texture").main(["--quick", "--repeat", "1"]) == 0
+    assert "trilinear / bilinear" in capsys.readouterr().out

@@ -173,7 +173,12 @@ def test_barycentric_is_the_ratio_of_areas(pts):
         return
     want = [area(P, b, c) / total, area(P, c, a) / total, area(P, a, b) / total]
     got = tr.barycentric(xy, p)
-    tol = 1e-12 * (1 + max(abs(float(v)) for v in want))
+    # Each weight is a difference of products of coordinate differences (size ~ extent²)
+    # over the doubled area: its rounding error grows with extent² / |area| (a sliver far
+    # from P is ill-conditioned, whatever the formula), times the weights' own size.
+    extent = float(np.ptp(pts, axis=0).max())
+    cond = max(1.0, extent**2 / abs(float(total)))
+    tol = 1e-14 * cond * (1 + max(abs(float(v)) for v in want))
     np.testing.assert_allclose(got, [float(v) for v in want], rtol=0, atol=tol)
     np.testing.assert_allclose(got.sum(), 1.0, atol=tol)
 

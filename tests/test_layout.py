@@ -117,7 +117,6 @@ def test_no_module_is_shadowed_by_a_name(package):
         assert getattr(pkg, info.name) is mod, f"{package}.{info.name} is not the module {full}"
 
 
-@pytest.mark.xfail(strict=True, reason="issue 8: render, rasterize, the CLI parser, FillPlayer")
 def test_no_function_longer_than_100_lines():
     long = []
     for path, module in _modules():

@@ -352,3 +352,46 @@ def test_00_tour_numbers():
     assert np.nanmax(ns.err) > 0.1
     assert ns.frame.image.shape == (240, 320, 3)
     assert {e.name for e in ns.frame.plan} >= {"clipping", "culling", "depth_test", "perspective"}
+
+
+# -- 09 texture filtering --------------------------------------------------------------------------
+def test_09_mipmaps_remove_the_moire():
+    ns = lesson("09_texture_filtering")
+    assert ns.rms["trilinear"] < 0.6 * ns.moire_error
+    assert ns.rms["trilinear"] < ns.rms["bilinear"] < ns.rms["nearest"]
+    assert ns.art.n_helpers > 0  # the quad figure shows helper pixels
+
+
+def test_09_quad_differences_follow_the_exact_map():
+    ns = lesson("09_texture_filtering")
+    np.testing.assert_allclose(ns.quad_ddx, ns.exact_ddx, rtol=1e-9)
+    # the quad in the cell below the figure is covered by one triangle: ddx is a plain difference
+    r, c = ns.qr, ns.qc
+    np.testing.assert_allclose(
+        ns.quads.ddx[r, c], ns.quads.attrs[r, c + 1] - ns.quads.attrs[r, c], atol=1e-12
+    )
+
+
+def test_09_the_level_map_spans_magnified_and_minified_pixels():
+    ns = lesson("09_texture_filtering")
+    assert np.nanmin(ns.lam) < 0 < 5 < np.nanmax(ns.lam)
+    assert len(ns.levels) == 8 and ns.levels[-1].shape[:2] == (1, 1)
+    assert len(ns.band_rows) > 10  # the seams figure shows a real band
+
+
+def test_09_anisotropy_wins_on_minified_pixels_and_costs_more():
+    ns = lesson("09_texture_filtering")
+    assert ns.aniso_error < ns.trilinear_error
+    study = {r["filter"]: r for r in ns.study}
+    minified = {f: r["error_minified"] for f, r in study.items()}
+    reads = {f: r["texel_reads"] for f, r in study.items()}
+    assert minified["anisotropic"] < minified["trilinear"] < minified["nearest"]
+    assert reads["anisotropic"] > reads["trilinear"] > reads["nearest"]
+
+
+def test_09_gpu_and_widget_agree_with_the_story():
+    ns = lesson("09_texture_filtering")
+    if ns.gl_agreement is not None:
+        assert ns.gl_agreement >= 0.98
+    errors = ns.explorer_errors
+    assert errors["trilinear"] < errors["nearest"] and errors["anisotropic"] < errors["nearest"]

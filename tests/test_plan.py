@@ -16,7 +16,15 @@ import teachraster as tr
 from teachraster.pipeline.render_plan import FORCEABLE, Effect, Plan, parse_force
 from teachraster.pipeline.scenes import SCENES, get_scene
 
-EFFECTS = ("clipping", "culling", "depth_test", "perspective", "attributes")
+EFFECTS = (
+    "clipping",
+    "culling",
+    "depth_test",
+    "hi_z",
+    "perspective",
+    "attributes",
+    "derivatives",
+)
 
 
 def assert_same_render(a, b, msg=""):
@@ -62,8 +70,11 @@ def test_planned_equals_everything_on_random_scenes(rng):
             # forcing is meaningless (and not reported) for the divide of affine
             # interpolation and for the test of a render without depth test
             moot = (name == "perspective" and kw.get("interpolation") == "affine") or (
-                name == "depth_test" and kw.get("depth_test") is False
+                name in ("depth_test", "hi_z") and kw.get("depth_test") is False
             )
+            if name == "multisampling":  # one sample per pixel: no such effect to report
+                assert name not in [e.name for e in forced.plan]
+                continue
             assert forced.plan[name].forced != moot
         clipped += planned.plan["clipping"].ran
         perspective += planned.plan["perspective"].ran
@@ -202,7 +213,12 @@ def test_force_all_marks_every_forceable_effect():
     clip = clip_from_window([[[2, 2], [20, 3], [4, 15]]])
     plan = tr.render(clip, W, H, attrs=np.ones((1, 3)), force="all").plan
     for name in FORCEABLE:
+        if name == "multisampling":  # reported only with samples > 1
+            continue
         assert plan[name].forced and plan[name].ran, name
+    plan = tr.render(clip, W, H, attrs=np.ones((1, 3)), force="all", samples=4).plan
+    # quad derivatives are simulated with samples=1 only: a multisampled plan has none
+    assert all(plan[name].forced and plan[name].ran for name in FORCEABLE if name != "derivatives")
     assert not plan["culling"].forced
     plan = tr.render(clip, W, H, attrs=np.ones((1, 3)), force=["clipping", "depth_test"]).plan
     assert [e.name for e in plan if e.forced] == ["clipping", "depth_test"]

@@ -95,7 +95,10 @@ def unsnapped_values(clip_tri, attrs_tri, rows, cols, interpolation, width=W, he
 
     Barycentrics λ_k = E(v_k+1, v_k+2, p) / E(v0, v1, v2) of the float window positions (what
     GPUs use for attribute set-up), then Σ λ f (affine) or Σ λ f / w / Σ λ / w (perspective),
-    clamped to the vertex values' range.
+    clamped to the vertex values' range. For the attributes λ is first made convex (negative
+    weights, at covered centres that snapping brought inside an edge, clamped to 0 and the row
+    renormalised: a covered centre gets a convex combination); depth extrapolates as llvmpipe's
+    plane equation does, clamped to the vertex depths.
     """
     win = tr.to_window(clip_tri, width, height)
     v = win[:, :2]
@@ -106,9 +109,10 @@ def unsnapped_values(clip_tri, attrs_tri, rows, cols, interpolation, width=W, he
 
     area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
     lam = np.stack([edge(v[1], v[2]), edge(v[2], v[0]), edge(v[0], v[1])], 1) / area
-    mu = lam
+    mu = np.maximum(lam, 0)
+    mu = mu / mu.sum(axis=1, keepdims=True)
     if interpolation == "perspective":
-        mu = lam / clip_tri[:, 3]
+        mu = mu / clip_tri[:, 3]
         mu = mu / mu.sum(axis=1, keepdims=True)
     a = np.asarray(attrs_tri, dtype=np.float64)
     values = np.clip(mu @ a, a.min(axis=0), a.max(axis=0))

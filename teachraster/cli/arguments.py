@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -72,13 +73,11 @@ def parse_attr(text: str) -> tuple[str, np.ndarray]:
 
 def parse_size(text: str) -> tuple[int, int]:
     """``"WxH"`` in pixels, e.g. ``"16x16"``."""
-    parts = text.lower().split("x")
-    try:
-        w, h = (int(p) for p in parts)
-    except ValueError:
-        raise argparse.ArgumentTypeError(
-            f"expected WIDTHxHEIGHT such as 16x16, got {text!r}"
-        ) from None
+    # ASCII digits only: int() would also take "1_6", "+16" and non-ASCII digits.
+    match = re.fullmatch(r"\s*([0-9]+)\s*x\s*([0-9]+)\s*", text.lower())
+    if match is None:
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT such as 16x16, got {text!r}")
+    w, h = int(match.group(1)), int(match.group(2))
     if w <= 0 or h <= 0:
         raise argparse.ArgumentTypeError(f"width and height must be positive, got {text!r}")
     if w * h > 4096 * 4096:

@@ -48,9 +48,9 @@ def _add_triangle(p: argparse.ArgumentParser, *, attr_default: str | None) -> No
     )
     p.add_argument(
         "--method",
-        choices=("span", "halfplane"),
+        choices=("span", "halfplane", "tiled"),
         default="span",
-        help="span tables or half-plane tests (default span)",
+        help="span tables, half-plane tests or tiles (default span)",
     )
     p.add_argument(
         "--interpolation",

@@ -10,6 +10,8 @@ One module per idea of the first four lessons, in the order the notes teach them
 - :mod:`.half_planes`: test every centre of the bounding box (Ek, *Rasterization*, §1.2);
 - :mod:`.barycentrics`, :mod:`.plane_equations`, :mod:`.interpolation`: weights, planes and the
   setup matrix, affine vs perspective-correct values;
+- :mod:`.sample_patterns`, :mod:`.multisample`: sample positions inside the pixel, coverage
+  per sample and where a multisampled pixel's attributes are evaluated (antialiasing);
 - :mod:`.trace`: the recorded steps and their captions; :mod:`.fill`: ``rasterize`` itself.
 """
 
@@ -19,6 +21,7 @@ from .edges import edge_function, is_top_left
 from .fill import Fill, rasterize
 from .half_planes import HalfPlaneTrace
 from .interpolation import perspective_weights
+from .multisample import SampleTrace
 from .plane_equations import (
     AttributePlane,
     PlaneEquation,
@@ -26,6 +29,7 @@ from .plane_equations import (
     plane_equation,
     setup_matrix,
 )
+from .sample_patterns import sample_pattern
 from .snapping import SUBPIXEL_BITS, snap
 from .span_tables import SpanTrace, split_point
 from .trace import FillTrace, Step
@@ -39,6 +43,7 @@ __all__ = [
     "FillTrace",
     "HalfPlaneTrace",
     "PlaneEquation",
+    "SampleTrace",
     "SpanTrace",
     "Step",
     "Triangle",
@@ -49,6 +54,7 @@ __all__ = [
     "perspective_weights",
     "plane_equation",
     "rasterize",
+    "sample_pattern",
     "setup_matrix",
     "snap",
     "split_point",

@@ -42,14 +42,16 @@ class BBox:
         return np.arange(self.col0, self.col1)
 
 
-def centre_ranges(lo, hi, setup: EdgeSetup, n: int) -> tuple[np.ndarray, np.ndarray]:
+def centre_ranges(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[np.ndarray, np.ndarray]:
     """Half-open index ranges [first, stop) of pixel centres c with ``lo <= c <= hi``.
 
     ``lo`` and ``hi`` are arrays (one range per entry, in internal units); the ranges are
     clipped to [0, n) and empty ones have ``stop == first``. Integer floor and ceiling on
-    the snapped grid, so the bounds are exact.
+    the snapped grid, so the bounds are exact. ``half`` is the tested point's offset from
+    the pixel corner in units (default: the centre; a sample's offset when multisampling).
     """
-    unit, half = setup.unit, setup.half
+    unit = setup.unit
+    half = setup.half if half is None else half
     if setup.exact:  # integer ceil/floor: exact
         first = -((half - lo) // unit)
         last = (hi - half) // unit
@@ -61,17 +63,20 @@ def centre_ranges(lo, hi, setup: EdgeSetup, n: int) -> tuple[np.ndarray, np.ndar
     return first, stop
 
 
-def centre_range(lo, hi, setup: EdgeSetup, n: int) -> tuple[int, int]:
+def centre_range(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[int, int]:
     """Half-open index range of pixel centres c with ``lo <= c <= hi``, clipped to [0, n)."""
-    first, stop = centre_ranges(np.asarray(lo), np.asarray(hi), setup, n)
+    first, stop = centre_ranges(np.asarray(lo), np.asarray(hi), setup, n, half)
     return int(first), int(stop)
 
 
 def pixel_bbox(setup: EdgeSetup, width: int, height: int) -> BBox:
-    """Bounding box of the triangle's vertices, as pixel index ranges clipped to the image."""
+    """Bounding box of the triangle's vertices, as pixel index ranges clipped to the image.
+
+    The pixels whose tested point (centre, or ``setup.sample``) lies in the box.
+    """
     lo, hi = setup.p.min(axis=0), setup.p.max(axis=0)
-    col0, col1 = centre_range(lo[0], hi[0], setup, width)
-    row0, row1 = centre_range(lo[1], hi[1], setup, height)
+    col0, col1 = centre_range(lo[0], hi[0], setup, width, setup.offset_x)
+    row0, row1 = centre_range(lo[1], hi[1], setup, height, setup.offset_y)
     px = 1.0 / float(setup.unit)
     return BBox(
         row0=row0,

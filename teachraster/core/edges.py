@@ -18,11 +18,12 @@ below 2**62 and E below 2**63: computed in int64, E is exact, and the sign tests
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from .snapping import to_units, units_per_pixel
+from .validate import as_finite, as_real
 
 
 @dataclass(frozen=True)
@@ -42,6 +43,9 @@ class EdgeSetup:
     top_left: np.ndarray  # (..., 3) bool per edge
     unit: int | float  # internal units per pixel
     exact: bool  # True on the snapped integer grid
+    #: Where inside each pixel the tests run, (x, y) from its top-left corner in units;
+    #: None is the pixel centre. Multisampling sets one per sample (see :meth:`at_sample`).
+    sample: tuple[int, int] | tuple[float, float] | None = None
 
     @property
     def half(self) -> int | float:
@@ -49,13 +53,35 @@ class EdgeSetup:
         return self.unit // 2 if self.exact else 0.5
 
     @property
+    def offset_x(self) -> int | float:
+        """x of the tested point from the pixel's corner, in units (the centre by default)."""
+        return self.half if self.sample is None else self.sample[0]
+
+    @property
+    def offset_y(self) -> int | float:
+        """y of the tested point from the pixel's corner, in units (the centre by default)."""
+        return self.half if self.sample is None else self.sample[1]
+
+    def at_sample(self, ox, oy) -> EdgeSetup:
+        """The same triangle tested at offset (ox, oy) units inside every pixel.
+
+        Everything else (vertices, winding, the top-left flags) is shared: a sample is
+        decided exactly like a pixel centre, only at another point of the pixel.
+        """
+        return replace(self, sample=(ox, oy))
+
+    @property
     def edges(self) -> np.ndarray:
         """(3, 2) original vertex indices (from, to) of each directed edge, in test order."""
         return np.stack([self.perm, np.roll(self.perm, -1)], axis=1)
 
     def centre_x(self, cols: np.ndarray) -> np.ndarray:
-        """x of pixel centres of columns ``cols``, in units."""
-        return np.asarray(cols, dtype=self.p.dtype) * self.unit + self.half
+        """x of the tested points (pixel centres, or the sample) of columns ``cols``, in units."""
+        return np.asarray(cols, dtype=self.p.dtype) * self.unit + self.offset_x
+
+    def centre_y(self, rows: np.ndarray) -> np.ndarray:
+        """y of the tested points (pixel centres, or the sample) of rows ``rows``, in units."""
+        return np.asarray(rows, dtype=self.p.dtype) * self.unit + self.offset_y
 
     def edge_terms(self, k: int, rows: np.ndarray, cols: np.ndarray):
         """Row and column parts of E_k: ``E_k[r, c] = row_term[r] - col_term[c]``.
@@ -64,7 +90,7 @@ class EdgeSetup:
         the pixel position, so one multiply per row and one per column suffice.
         """
         a, b = self.p[k], self.p[(k + 1) % 3]
-        ys = self.centre_x(rows) - a[1]  # centre y uses the same formula as centre x
+        ys = self.centre_y(rows) - a[1]
         xs = self.centre_x(cols) - a[0]
         return (b[0] - a[0]) * ys, (b[1] - a[1]) * xs
 
@@ -83,7 +109,10 @@ def edge_function(a, b, p) -> np.ndarray:
     >>> float(edge_function([0, 0], [4, 0], [1, 3]))   # p below a→b (y down): inside
     12.0
     """
-    a, b, p = (np.asarray(v, dtype=np.float64) for v in (a, b, p))
+    a, b = as_finite("a", a, (2,)), as_finite("b", b, (2,))
+    p = as_real("p", p)
+    if p.shape[-1:] != (2,):
+        raise ValueError(f"p must have shape (..., 2), got {p.shape}")
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
 
 
@@ -96,7 +125,7 @@ def is_top_left(a, b) -> bool:
     >>> is_top_left((0, 0), (4, 0)), is_top_left((0, 4), (0, 0)), is_top_left((4, 0), (0, 4))
     (True, True, False)
     """
-    return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
+    return bool(top_left_edges(as_finite("a", a, (2,)), as_finite("b", b, (2,))))
 
 
 def top_left_edges(a: np.ndarray, b: np.ndarray) -> np.ndarray:

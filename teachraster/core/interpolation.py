@@ -15,6 +15,13 @@ weight of exactly 0 contribute exactly nothing (so a pixel centre on a vertex ge
 vertex's value, and one on an edge ignores the opposite vertex); the clamp removes the
 last-ulp overshoot that rounding can leave (depth never leaves [0, 1]) and makes an
 attribute that is equal at all three vertices come out exactly constant.
+
+Inside coverage the weights are made convex first (:func:`convex_weights`), so every
+covered pixel centre gets a finite value within the range of the vertex values whatever
+the w ratios (see :func:`weights_per_row` for why this is guaranteed). Every function
+here takes ``extrapolate=True`` for evaluation points *outside* the triangle (MSAA pixel
+centres, helper pixels of a 2×2 quad): the weights are then used as given, negative ones
+included, and nothing is clamped.
 """
 
 from __future__ import annotations
@@ -27,27 +34,110 @@ MODES = ("perspective", "affine")
 FILL_MODES = (*MODES, "subdivided")
 
 
-def perspective_weights(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
+def convex_weights(lam: np.ndarray) -> np.ndarray:
+    """Barycentrics made a convex combination: every weight >= 0, each row summing to 1.
+
+    A pixel centre that is *covered* lies inside the triangle, so its true weights are
+    already convex. Computed ones can still come out slightly negative: ``tr.render``
+    decides coverage on the snapped triangle but sets up the weights from the unsnapped
+    positions (as llvmpipe does), and a centre that snapping brought inside an edge lies a
+    hair outside the unsnapped one. Such weights are clamped to 0 and their row
+    renormalised (the nearest convex weights up to rounding); rows that are already
+    non-negative are returned bit for bit, so vertices (a weight of exactly 1) and edges
+    (exactly 0) keep their exact values. Two degenerate cases that only rounding can
+    produce are settled explicitly so that the result is *always* convex: a weight that
+    overflowed to +inf (a set-up area that underflowed) takes the whole row, and a row
+    whose weights were all <= 0 (or NaN) becomes (1/3, 1/3, 1/3).
+
+    >>> convex_weights(np.array([[-0.25, 0.5, 0.75], [0.2, 0.3, 0.5]]))
+    array([[0. , 0.4, 0.6],
+           [0.2, 0.3, 0.5]])
+    """
+    lam = np.asarray(lam, dtype=np.float64)
+    if lam.size == 0 or _plainly_convex(lam):
+        return lam
+    ok = ((lam >= 0) & (lam < np.inf)).all(axis=-1)  # NaN fails both tests
+    with np.errstate(invalid="ignore", over="ignore"):  # inf - inf, 1e308 + 1e308: fixed below
+        total = lam[..., 0] + lam[..., 1] + lam[..., 2]
+    fix = ~ok | ~((total > 0) & (total < np.inf))
+    if not fix.any():
+        return lam
+    out = lam.copy()
+    rows = np.fmax(out[fix], 0.0)  # fmax: a NaN weight (never from finite input) counts as 0
+    huge = np.isposinf(rows)
+    some = huge.any(axis=-1)
+    rows[some] = huge[some]
+    # Divided by their largest entry first, so that the sum cannot overflow (weights near
+    # the float maximum); the largest entry becomes exactly 1.
+    top = rows.max(axis=-1, keepdims=True)
+    none = ~(top[:, 0] > 0)
+    rows[none], top[none] = 1.0, 1.0
+    rows /= top
+    out[fix] = rows / rows.sum(axis=-1, keepdims=True)
+    return out
+
+
+def _plainly_convex(lam: np.ndarray) -> bool:
+    """Whether every row is already fine: weights in [0, 2], positive sums (the usual case).
+
+    Whole-array reductions and one matrix product, several times faster than the per-row
+    tests, which then run only when some weight is negative, huge or NaN (NaN fails
+    ``min() >= 0``). Weights <= 2 cannot overflow a sum.
+    """
+    return bool(lam.min() >= 0 and lam.max() <= 2.0 and ((lam @ _ONES) > 0).all())
+
+
+_ONES = np.ones(3)
+
+
+def perspective_weights(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False) -> np.ndarray:
     """Perspective-correct weights μ_i = (λ_i / w_i) / Σ_j (λ_j / w_j).
 
     When all w are equal the division changes nothing mathematically, so λ is returned
     as it is: affine interpolation is then exact (and skips a per-pixel divide).
 
+    By default λ first goes through :func:`convex_weights`, which makes μ a convex
+    combination for every row (see :func:`weights_per_row` for why); ``extrapolate=True``
+    keeps λ as given, for evaluation points outside the triangle (MSAA pixel centres,
+    helper pixels) that must extrapolate the triangle's interpolation.
+
     >>> perspective_weights(np.array([[0.5, 0.5, 0.0]]), np.array([1.0, 3.0, 1.0]))
     array([[0.75, 0.25, 0.  ]])
     """
     if np.all(w == w[0]):
-        return lam
-    return weights_per_row(lam, np.broadcast_to(w, lam.shape))
+        return lam if extrapolate else convex_weights(lam)
+    return weights_per_row(lam, np.broadcast_to(w, lam.shape), extrapolate=extrapolate)
 
 
-def weights_per_row(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
-    """:func:`perspective_weights` with its own three w on every row: lam, w (n, 3)."""
+def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False) -> np.ndarray:
+    """:func:`perspective_weights` with its own three w on every row: lam, w (n, 3).
+
+    Why the result is always a convex combination (finite, >= 0, summing to 1): λ is
+    made convex first (:func:`convex_weights`), and each w_i > 0 is replaced by the ratio
+    ``min(w) / w_i`` in (0, 1] (only ratios of w matter), so every q_i = λ_i min(w)/w_i
+    lies in [0, 1]: nothing can overflow and no two terms can cancel, the total is in
+    [0, 3] and the vertex holding the smallest w keeps its full λ. The total can be 0
+    only when every q with λ_i > 0 underflowed (w ratios beyond ~1e308); those rows are
+    redone in logarithms, where the largest term becomes exactly 1 (λ has a positive
+    entry, so its log is finite). Dividing each q_i by a total >= q_i then gives weights
+    in [0, 1].
+
+    ``extrapolate=True`` skips the clamping of λ, for evaluation points outside the
+    triangle: there the total may legitimately be <= 0 (the point lies beyond the
+    horizon of the triangle's plane, where 1/w changes sign); such rows, and rows whose
+    every term underflowed, come out non-finite, as on a GPU (no log-domain rescue: a
+    logarithm needs positive weights).
+    """
+    if not extrapolate:
+        lam = convex_weights(lam)
     # λ_i / w_i is affine in screen space, like 1/w itself. Only the ratios of w matter,
     # so scale by each row's smallest w: 1/w alone overflows for tiny (even subnormal) w.
     with np.errstate(under="ignore"):
         q = lam * (w.min(axis=-1, keepdims=True) / w)
     total = q[..., 0] + q[..., 1] + q[..., 2]
+    if extrapolate:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return q / total[..., None]
     # Ratios of w beyond the float range (1e200 against 1e-200) can still underflow every
     # term of a row to 0; those rows are redone in logarithms, where nothing overflows.
     bad = ~(total > 0)
@@ -60,10 +150,13 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
     return q
 
 
-def blend(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
+def blend(weights: np.ndarray, values: np.ndarray, *, extrapolate: bool = False) -> np.ndarray:
     """``Σ μ_i f_i`` clamped to the vertex values' range, for values (3,) or (3, k).
 
-    One matrix product for all pixels and attributes at once.
+    One matrix product for all pixels and attributes at once. With convex weights the
+    sum lies in the range up to rounding; the clamp removes that last-ulp overshoot (and
+    an overflow to ±inf when the values are near the float maximum, which it brings back
+    to the finite extreme value). ``extrapolate=True`` leaves the sum unclamped.
 
     >>> blend(np.array([[0.2, 0.3, 0.5]]), np.array([7.0, 7.0, 7.0]))
     array([7.])
@@ -71,17 +164,21 @@ def blend(weights: np.ndarray, values: np.ndarray) -> np.ndarray:
     array([0.])
     """
     flat = values.reshape(3, -1)
-    out = weights @ flat
-    np.clip(out, flat.min(axis=0), flat.max(axis=0), out=out)
+    with np.errstate(over="ignore"):
+        out = weights @ flat
+    if not extrapolate:
+        np.clip(out, flat.min(axis=0), flat.max(axis=0), out=out)
     return out.reshape(len(weights), *values.shape[1:])
 
 
-def blend_each(weights: np.ndarray, values: np.ndarray, index=None) -> np.ndarray:
+def blend_each(
+    weights: np.ndarray, values: np.ndarray, index=None, *, extrapolate: bool = False
+) -> np.ndarray:
     """:func:`blend` with different vertex values per row: weights (n, 3), values (n, 3, k).
 
     With ``index`` (n,), ``values`` holds one (3, k) block per triangle (M, 3, k) and row i
     uses block ``index[i]``, gathered here one channel at a time (cheaper than gathering
-    the whole (n, 3, k) block first).
+    the whole (n, 3, k) block first). ``extrapolate=True`` leaves the sums unclamped.
 
     >>> blend_each(np.array([[0.5, 0.5, 0.0]]), np.array([[[0.0], [2.0], [9.0]]]))
     array([[1.]])
@@ -97,20 +194,31 @@ def blend_each(weights: np.ndarray, values: np.ndarray, index=None) -> np.ndarra
             v0, v1, v2 = (np.ascontiguousarray(values[:, i, j]) for i in range(3))
         else:
             v0, v1, v2 = (np.ascontiguousarray(values[:, i, j])[index] for i in range(3))
-        with np.errstate(over="ignore"):  # values near the float maximum: the clamp below
-            o = m0 * v0  # brings an overflowed sum back to the finite extreme value
+        with np.errstate(over="ignore"):  # values near the float maximum: clamped below
+            o = m0 * v0
             o += m1 * v1
             o += m2 * v2
-        np.maximum(o, np.minimum(np.minimum(v0, v1), v2), out=o)
-        np.minimum(o, np.maximum(np.maximum(v0, v1), v2), out=o)
+        if not extrapolate:
+            np.maximum(o, np.minimum(np.minimum(v0, v1), v2), out=o)
+            np.minimum(o, np.maximum(np.maximum(v0, v1), v2), out=o)
         out[:, j] = o
     return out
 
 
-def interpolate(lam: np.ndarray, values: np.ndarray, w: np.ndarray, mode: str) -> np.ndarray:
-    """Interpolate vertex ``values`` at pixels with barycentrics ``lam`` (n, 3)."""
-    weights = perspective_weights(lam, w) if mode == "perspective" else lam
-    return blend(weights, values)
+def interpolate(
+    lam: np.ndarray, values: np.ndarray, w: np.ndarray, mode: str, *, extrapolate: bool = False
+) -> np.ndarray:
+    """Interpolate vertex ``values`` at pixels with barycentrics ``lam`` (n, 3).
+
+    Inside coverage (the default) the weights are made convex, so every value is finite
+    and within the vertex values' range; ``extrapolate=True`` evaluates the triangle's
+    own affine or perspective interpolation as it is, outside the triangle too.
+    """
+    if mode == "perspective":
+        weights = perspective_weights(lam, w, extrapolate=extrapolate)
+    else:
+        weights = lam if extrapolate else convex_weights(lam)
+    return blend(weights, values, extrapolate=extrapolate)
 
 
 def subdivided(

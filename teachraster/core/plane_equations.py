@@ -15,12 +15,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validate import as_finite
+from .validate import as_finite, as_size, check_shape
 
 
 def _values(f) -> np.ndarray:
-    arr = np.asarray(f, dtype=np.float64)
-    return as_finite("f", arr, (3,) if arr.ndim == 1 else (3, None))
+    arr = as_finite("f", f, None)
+    check_shape("f", arr.shape, (3,) if arr.ndim == 1 else (3, None))
+    return arr
 
 
 def _nondegenerate(c) -> None:
@@ -69,6 +70,7 @@ class PlaneEquation:
         array([[1.5, 2.5, 3.5],
                [3.5, 4.5, 5.5]])
         """
+        ncols, nrows = as_size("ncols", ncols), as_size("nrows", nrows)
         start = self(x0, y0)
         shape = np.shape(start)
         col_steps = np.broadcast_to(self.dx, shape)

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .validate import as_int
+from .validate import as_int, as_real
 
 #: Default number of sub-pixel bits (Direct3D 10+).
 SUBPIXEL_BITS = 8
@@ -38,6 +38,7 @@ def check_bits(subpixel_bits: int | None) -> int | None:
 
 def units_per_pixel(subpixel_bits: int | None) -> int | float:
     """Internal units in one pixel: ``2**(bits + 1)``, or 1.0 for raw floats."""
+    subpixel_bits = check_bits(subpixel_bits)  # a Python int: 2**9 cannot wrap in an int8
     return 1.0 if subpixel_bits is None else 2 ** (subpixel_bits + 1)
 
 
@@ -49,12 +50,18 @@ def snap(xy: np.ndarray, subpixel_bits: int | None = SUBPIXEL_BITS) -> np.ndarra
     >>> snap([[0.3, 0.7]], subpixel_bits=2)
     array([[0.25, 0.75]])
     """
-    xy = np.asarray(xy, dtype=np.float64)
+    xy = as_real("xy", xy)
+    subpixel_bits = check_bits(subpixel_bits)
     if subpixel_bits is None:
         return xy.copy()
     scale = float(2**subpixel_bits)
-    # Multiplying by a power of two is exact, and np.rint rounds half to even.
-    return np.rint(xy * scale) / scale
+    # Multiplying by a power of two is exact, and np.rint rounds half to even. A double of
+    # magnitude >= 2**(52 - bits) is already a multiple of 1/2**bits: it is kept as it is,
+    # which also spares xy * scale from overflowing near the float maximum.
+    out = xy.copy()
+    small = np.abs(xy) < 2.0 ** (52 - subpixel_bits)
+    out[small] = np.rint(xy[small] * scale) / scale
+    return out
 
 
 def to_units(xy: np.ndarray, subpixel_bits: int | None) -> np.ndarray:
@@ -67,6 +74,7 @@ def to_units(xy: np.ndarray, subpixel_bits: int | None) -> np.ndarray:
     array([[ 768, 1024]])
     """
     xy = np.asarray(xy, dtype=np.float64)
+    subpixel_bits = check_bits(subpixel_bits)
     if subpixel_bits is None:
         if np.abs(xy).max(initial=0.0) >= FLOAT_LIMIT:
             raise ValueError(
@@ -74,7 +82,8 @@ def to_units(xy: np.ndarray, subpixel_bits: int | None) -> np.ndarray:
                 "(a product of two differences would exceed the largest double)"
             )
         return xy.copy()
-    units = np.rint(xy * 2.0**subpixel_bits) * 2.0
+    with np.errstate(over="ignore"):  # beyond the float range is beyond UNIT_LIMIT too
+        units = np.rint(xy * 2.0**subpixel_bits) * 2.0
     if np.abs(units).max(initial=0.0) >= UNIT_LIMIT:
         limit = UNIT_LIMIT / 2 ** (subpixel_bits + 1)
         raise ValueError(

@@ -21,6 +21,7 @@ import numpy as np
 
 from .bbox import BBox
 from .edges import EdgeSetup
+from .validate import as_finite
 
 
 @dataclass(frozen=True)
@@ -66,7 +67,7 @@ def split_point(sorted_xy: np.ndarray) -> float | None:
     >>> split_point(np.array([[2.0, 0.0], [0.0, 2.0], [6.0, 4.0]]))
     4.0
     """
-    (u1, v1), (_, v2), (u3, v3) = sorted_xy
+    (u1, v1), (_, v2), (u3, v3) = as_finite("sorted_xy", sorted_xy, (3, 2))
     if v3 == v1:  # zero height: no split, and no division by zero
         return None
     return float((v2 - v1) / (v3 - v1) * (u3 - u1) + u1)
@@ -157,7 +158,7 @@ def _edge_index(i: int, j: int) -> int:
 def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTrace | None]:
     """Coverage of the bounding box (bbox-local bool array) and, if asked, the trace."""
     rows = bbox.rows()
-    y = setup.centre_x(rows)
+    y = setup.centre_y(rows)  # one raster line per row of tested points (centres or a sample)
     # Sort by y (then x): v1 on top, v3 at the bottom (Ek, *Triangles and Perspective Correct Interpolation*, §1.1).
     v1, v2, v3 = np.lexsort((setup.p[:, 0], setup.p[:, 1]))
     long_edge, top_edge, bottom_edge = _edge_index(v1, v3), _edge_index(v1, v2), _edge_index(v2, v3)
@@ -188,7 +189,7 @@ def fill(setup: EdgeSetup, bbox: BBox, record: bool) -> tuple[np.ndarray, SpanTr
         for k in edges:
             a, b = setup.p[k], setup.p[(k + 1) % 3]
             low, high, ok, crossing = edge_bounds(
-                a, b, setup.top_left[k], y[part], setup.unit, setup.half, setup.exact,
+                a, b, setup.top_left[k], y[part], setup.unit, setup.offset_x, setup.exact,
                 first_col=bbox.col0, last_col=bbox.col1 - 1,
             )  # fmt: skip
             lo[part] = np.maximum(lo[part], low)

@@ -12,8 +12,10 @@ step                  what
 ====================  =====================================================================
 0, 1, 2               set-up: ``snap``, ``winding``, ``bbox`` (:attr:`FillTrace.bbox_step`)
 3, 4 (span tables)    ``sort``, ``split`` (:attr:`FillTrace.split_step`)
-first_work_step ...   one ``row`` step per raster line (span tables) or one ``pixel`` step
-                      per bounding-box pixel in row-major order (half-planes);
+3 (tiles)             ``blocks``: the block sizes and the top-level blocks
+first_work_step ...   one ``row`` step per raster line (span tables), one ``pixel`` step
+                      per bounding-box pixel in row-major order (half-planes), or one
+                      ``block`` step per classified block in visit order (tiles);
                       :attr:`FillTrace.visit_step` numbers every pixel
 last                  ``interpolate`` (:attr:`FillTrace.interpolation_step`)
 ====================  =====================================================================
@@ -25,7 +27,6 @@ of it.
 
 from __future__ import annotations
 
-import operator
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -36,10 +37,14 @@ from . import half_planes
 from .bbox import BBox
 from .edges import setup_edges
 from .half_planes import HalfPlaneTrace
+from .multisample import SampleTrace
 from .span_tables import SpanTrace
+from .tile_trace import TileTrace
+from .validate import as_int
 
 SETUP_KINDS = ("snap", "winding", "bbox")
 SPAN_SETUP_KINDS = ("sort", "split")
+TILE_SETUP_KINDS = ("blocks",)
 
 
 @dataclass(frozen=True)
@@ -47,9 +52,10 @@ class Step:
     """One step of a fill, as the widgets show it.
 
     ``kind`` is one of ``"snap"``, ``"winding"``, ``"bbox"``, ``"sort"``, ``"split"``,
-    ``"row"``, ``"pixel"``, ``"interpolate"``. ``row``/``col`` are image indices where the
-    step concerns one raster line or pixel. ``work`` is the position among the work steps
-    (raster line or visited pixel number, from 0). A ``"row"`` step also carries its span:
+    ``"blocks"``, ``"row"``, ``"pixel"``, ``"block"``, ``"interpolate"``. ``row``/``col``
+    are image indices where the step concerns one raster line, pixel or block (its top-left
+    pixel). ``work`` is the position among the work steps (raster line, visited pixel or
+    block number, from 0). A ``"row"`` step also carries its span:
     ``span_x`` where the raster line's centre crosses its left and right edges (px) and
     ``columns`` the covered columns ``start <= j < stop`` (``span_x`` is None when an end is
     not finite), so an artist can draw the step from the Step alone.
@@ -100,12 +106,16 @@ class FillTrace:
         ``affine`` and ``perspective`` give bbox-local images, NaN outside coverage).
     pixel_depth : (n,) float64 or None
         Interpolated window depth at each covered pixel (property ``depth``).
-    span, halfplane : SpanTrace or HalfPlaneTrace or None
-        The algorithm-specific record (the other one is None; both None when culled).
+    span, halfplane, blocks : SpanTrace or HalfPlaneTrace or TileTrace or None
+        The algorithm-specific record (the others are None; all None when culled).
     subdivision : int or None
         N of ``interpolation="subdivided"``; None for the other modes.
     pixel_subdivided : mapping of name to (n,) or (n, k) float64, or None
         The subdivided values actually written (``interpolation="subdivided"`` only).
+    samples : SampleTrace or None
+        With ``samples`` other than 1: every sample's tests and where each pixel's
+        attributes were evaluated. The steps and the per-pixel arrays above then describe
+        the pixel-centre pass (what ``samples=1`` fills), for the same step-by-step story.
     """
 
     method: str
@@ -130,6 +140,8 @@ class FillTrace:
     halfplane: HalfPlaneTrace | None
     subdivision: int | None = None
     pixel_subdivided: Mapping[str, np.ndarray] | None = None
+    samples: SampleTrace | None = None
+    blocks: TileTrace | None = None
 
     # -- per-pixel values as bbox-local images (NaN outside coverage) -----------------
     def _local(self, values: np.ndarray) -> np.ndarray:
@@ -160,8 +172,10 @@ class FillTrace:
     # -- the step table -------------------------------------------------------------------
     @property
     def setup_kinds(self) -> tuple[str, ...]:
-        """Kinds of the set-up steps: snap, winding, bbox (and sort, split for span tables)."""
-        return SETUP_KINDS + (SPAN_SETUP_KINDS if self.span is not None else ())
+        """Kinds of the set-up steps: snap, winding, bbox (and sort, split for span tables;
+        blocks for tiles)."""
+        extra = SPAN_SETUP_KINDS if self.span is not None else ()
+        return SETUP_KINDS + extra + (TILE_SETUP_KINDS if self.blocks is not None else ())
 
     @property
     def setup(self) -> tuple[tuple[str, str], ...]:
@@ -185,11 +199,14 @@ class FillTrace:
 
     @property
     def n_work(self) -> int:
-        """Number of work steps: raster lines (span) or visited pixels (half-plane)."""
+        """Number of work steps: raster lines (span), visited pixels (half-plane) or
+        classified blocks (tiles)."""
         if self.culled:
             return 0
         if self.span is not None:
             return len(self.span.rows)
+        if self.blocks is not None:
+            return len(self.blocks)
         return self.bbox.size
 
     @property
@@ -212,7 +229,7 @@ class FillTrace:
         >>> t.index(-1) == len(t) - 1 == t.interpolation_step
         True
         """
-        k, n = operator.index(k), len(self)
+        k, n = as_int("k", k), len(self)  # names k; a Python int, so k % n cannot wrap
         if not -n <= k < n:
             raise IndexError(f"step {k} out of range for a trace of {n} steps")
         return k % n
@@ -228,6 +245,10 @@ class FillTrace:
         i = k - self.first_work_step
         if self.span is not None:
             return self._row_step(k, i)
+        if self.blocks is not None:
+            b = self.blocks
+            caption = b.caption(i, self.edges)
+            return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]), work=i)
         return self._pixel_step(k, i)
 
     def caption(self, k: int) -> str:
@@ -240,12 +261,16 @@ class FillTrace:
         """(rows, cols) int32, bbox-local: the step at which the fill reaches each pixel.
 
         Half-planes visit (test) every pixel of the box, row by row; span tables reach only
-        the covered pixels, each at the step of its raster line. -1: never reached
-        (uncovered pixels of span tables, every pixel of a culled triangle).
+        the covered pixels, each at the step of its raster line; tiles reach each pixel at
+        the step of the block that decided it (rejected, accepted, or tested pixel by pixel).
+        -1: never reached (uncovered pixels of span tables, every pixel of a culled
+        triangle).
         """
         shape, first = self.bbox.shape, self.first_work_step
         if self.culled:
             return np.full(shape, -1, dtype=np.int32)
+        if self.blocks is not None:
+            return self.blocks.leaf_steps(self.bbox, first)
         if self.span is not None:
             line = first + np.arange(shape[0], dtype=np.int32)
             return np.where(self.covered, line[:, None], -1).astype(np.int32)
@@ -281,10 +306,11 @@ class FillTrace:
     def rejected_at(self, k: int) -> np.ndarray:
         """(height, width) bool: pixels tested and rejected once steps 0..k have run.
 
-        Only half-planes test pixels they do not cover; for span tables this is all False.
+        Half-planes test every pixel they do not cover, tiles reject them by blocks or test
+        them in the smallest partial blocks; for span tables this is all False.
         """
         k = self.index(k)
-        if self.halfplane is None:
+        if self.halfplane is None and self.blocks is None:
             return np.zeros((self.height, self.width), dtype=bool)
         return self.image((self.visit_step <= k) & ~self.covered, fill=False)
 
@@ -340,6 +366,7 @@ class FillTrace:
             "bbox": self._bbox_caption,
             "sort": self._sort_caption,
             "split": self._split_caption,
+            "blocks": lambda: self.blocks.setup_caption(),
         }[kind]()
 
     def _snap_caption(self) -> str:

@@ -57,16 +57,13 @@ class Triangle:
         for name, values in attrs.items():
             if not isinstance(name, str):
                 raise TypeError(f"attrs: names must be strings, got {name!r}")
-            arr = np.array(values, dtype=np.float64) if _numeric(values) else None
-            if arr is None:
-                raise TypeError(f"attrs[{name!r}] must be numeric array-like")
-            shape = (3,) if arr.ndim == 1 else (3, None)
+            arr = as_finite(f"attrs[{name!r}]", values, None)
             if arr.ndim not in (1, 2) or arr.shape[0] != 3:
                 raise ValueError(
                     f"attrs[{name!r}] must have shape (3,) or (3, k): one value per vertex, "
                     f"got {arr.shape}"
                 )
-            clean[name] = as_finite(f"attrs[{name!r}]", arr, shape)
+            clean[name] = arr
         for arr in (xy, w, *([z] if z is not None else []), *clean.values()):
             arr.flags.writeable = False
         object.__setattr__(self, "xy", xy)
@@ -88,11 +85,3 @@ class Triangle:
     def front_facing(self) -> bool:
         """True when the vertices run counter-clockwise as seen on screen."""
         return self.signed_area < 0
-
-
-def _numeric(values) -> bool:
-    try:
-        np.array(values, dtype=np.float64)
-    except (TypeError, ValueError):
-        return False
-    return True

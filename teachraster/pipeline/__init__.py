@@ -3,6 +3,7 @@
 Lesson 05 in code, one module per stage or ingredient:
 
 - :mod:`.camera`, :mod:`.mesh`, :mod:`.obj`, :mod:`.scenes`, :mod:`.texture`: what is drawn;
+- :mod:`.texel_fetch`, :mod:`.mip_pyramid`, :mod:`.texture_filters`: texels, mipmaps, filters;
 - :mod:`.clipping`: homogeneous near/far clipping (Sutherland-Hodgman, before the divide);
 - :mod:`.viewport`: clip space to window coordinates;
 - :mod:`.batched_fill`: every triangle's span fill at once (identical to ``rasterize``);
@@ -30,18 +31,21 @@ from .depth import (
     window_depth,
 )
 from .mesh import Mesh, rotate, scale, translate
+from .mip_pyramid import mipmap
 from .obj import ObjError, read_obj
 from .painters_algorithm import painter
 from .render_plan import Effect, Plan
 from .render_scenes import SceneFrame, render, render_scene
 from .render_triangles import Frame, RenderTrace
 from .scenes import SCENES, Scene, get_scene
-from .texture import checkerboard, sample, texel_error
+from .texture import TEXTURE_FILTERS, checkerboard, sample, texel_error
+from .texture_filters import mip_level
 from .viewport import to_window
 
 __all__ = [
     "DEPTH_FORMATS",
     "SCENES",
+    "TEXTURE_FILTERS",
     "Camera",
     "Effect",
     "Fragments",
@@ -59,6 +63,8 @@ __all__ = [
     "get_scene",
     "linear_depth",
     "look_at",
+    "mip_level",
+    "mipmap",
     "orthographic",
     "painter",
     "perspective",

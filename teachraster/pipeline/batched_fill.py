@@ -127,7 +127,7 @@ class Fragments:
         return out
 
 
-def _ranges(starts: np.ndarray, stops: np.ndarray):
+def flat_ranges(starts: np.ndarray, stops: np.ndarray):
     """Flatten the integer ranges [starts[i], stops[i]): (owner index, value) arrays."""
     counts = np.maximum(stops - starts, 0)
     owner = np.repeat(np.arange(len(counts)), counts)
@@ -181,14 +181,36 @@ def rasterize_batch(
     # Raster lines per triangle: centres within the y-range, clipped to the image.
     r0, r1 = centre_ranges(p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1), setup, height)
     r1 = np.where(live, r1, r0)
-    owner, rows = _ranges(r0, r1)
+    owner, rows = flat_ranges(r0, r1)
     y = rows * unit + half
     if not exact:
         y = y.astype(np.float64)
 
-    lo = np.zeros(len(rows), dtype=np.int64)
-    hi = np.full(len(rows), width - 1, dtype=np.int64)
-    ok = np.ones(len(rows), dtype=bool)
+    lo, hi, ok = line_bounds(setup, owner, y, half, width)
+    counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
+    # One fragment per covered centre, generated once: column = lo + position in the span.
+    first = np.cumsum(counts) - counts  # where each line's span starts in the flat arrays
+    cols = np.arange(first[-1] + counts[-1] if len(counts) else 0)
+    cols += np.repeat(lo - first, counts)
+    tri = np.repeat(owner, counts)
+    rows = np.repeat(rows, counts)
+
+    src, src_area, _, _ = weight_source(xy, setup, snapped_weights)
+    return Fragments(tri, rows, cols, facing(area2), src, src_area.astype(np.float64))
+
+
+def line_bounds(setup, owner: np.ndarray, y: np.ndarray, half, width: int):
+    """Column bounds of raster lines: lo, hi (int64) and ok (bool) per entry of ``owner``.
+
+    ``setup`` is the batch's :func:`setup_edges`; line i belongs to triangle ``owner[i]`` and
+    tests the points ``(j * unit + half, y[i])`` in internal units (``half`` the pixel
+    centre's x offset, or a sample's, when multisampling). The span is ``lo <= j <= hi``
+    where ``ok``. Lines outside a triangle's y-range are the caller's to drop.
+    """
+    p, unit, exact = setup.p, setup.unit, setup.exact
+    lo = np.zeros(len(y), dtype=np.int64)
+    hi = np.full(len(y), width - 1, dtype=np.int64)
+    ok = np.ones(len(y), dtype=bool)
     # Every line applies all three edge tests: coverage is the intersection of the three
     # half-planes, so an edge whose y-range misses the line still bounds it correctly (on
     # the exact integer grid the answer is identical to an active edge table's).
@@ -208,16 +230,17 @@ def rasterize_batch(
         np.maximum(lo, e_lo, out=lo)
         np.minimum(hi, e_hi, out=hi)
         ok &= e_ok
-    counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
-    # One fragment per covered centre, generated once: column = lo + position in the span.
-    first = np.cumsum(counts) - counts  # where each line's span starts in the flat arrays
-    cols = np.arange(first[-1] + counts[-1] if len(counts) else 0)
-    cols += np.repeat(lo - first, counts)
-    tri = np.repeat(owner, counts)
-    rows = np.repeat(rows, counts)
+    return lo, hi, ok
 
-    # The positions the weights are set up from: the snapped vertices in the caller's order
-    # (the orientation swap is its own inverse), or the unsnapped ones as GPUs do.
+
+def weight_source(xy: np.ndarray, setup, snapped_weights: bool):
+    """Vertices (n, 3, 2) px, area2 (n,) px², unit 1.0 and centre 0.5 for barycentrics.
+
+    The snapped vertices in the caller's order (the orientation swap is its own inverse),
+    or (``snapped_weights=False``) the unsnapped ones, as GPUs set up attributes; a triangle
+    whose unsnapped area has another sign or is zero keeps its snapped weights.
+    """
+    p, unit, area2 = setup.p, setup.unit, np.asarray(setup.original_area2)
     snapped = np.take_along_axis(p, setup.perm[:, :, None], axis=1) / float(unit)
     src, src_area = snapped, area2 / float(unit) ** 2
     if not snapped_weights:
@@ -226,4 +249,4 @@ def rasterize_batch(
         usable = np.sign(raw_area) == np.sign(area2)
         src = np.where(usable[:, None, None], xy, snapped)
         src_area = np.where(usable, raw_area, src_area)
-    return Fragments(tri, rows, cols, facing(area2), src, src_area.astype(np.float64))
+    return src, src_area.astype(np.float64), 1.0, 0.5

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.validate import as_finite
+from ..core.validate import as_finite, as_float, as_real
 
 PROJECTIONS = ("perspective", "orthographic")
 
@@ -65,6 +65,14 @@ def perspective(fov_y: float, aspect: float, near: float, far: float) -> np.ndar
     >>> p @ [0, 0, -1, 1], p @ [0, 0, -3, 1]        # near -> z/w = -1, far -> +1
     (array([ 0.,  0., -1.,  1.]), array([0., 0., 3., 3.]))
     """
+    fov_y, aspect = as_float("fov_y", fov_y), as_float("aspect", aspect)
+    near, far = as_float("near", near), as_float("far", far)
+    if not 0 < fov_y < 180:
+        raise ValueError(f"fov_y must be between 0 and 180 degrees, got {fov_y}")
+    if aspect <= 0:
+        raise ValueError(f"aspect must be > 0 (width / height), got {aspect}")
+    if near == far:
+        raise ValueError(f"near and far must differ, got {near} for both")
     f = 1.0 / math.tan(math.radians(fov_y) / 2)
     m = np.zeros((4, 4))
     m[0, 0] = f / aspect
@@ -81,6 +89,13 @@ def orthographic(left: float, right: float, bottom: float, top: float, near: flo
     >>> orthographic(-2, 2, -1, 1, 0, 10) @ [2, 1, -10, 1]
     array([1., 1., 1., 1.])
     """
+    names = ("left", "right", "bottom", "top", "near", "far")
+    values = (left, right, bottom, top, near, far)
+    left, right, bottom, top, near, far = (as_float(n, v) for n, v in zip(names, values))
+    for a, b, lo, hi in ((left, right, "left", "right"), (bottom, top, "bottom", "top"),
+                         (near, far, "near", "far")):  # fmt: skip
+        if a == b:
+            raise ValueError(f"{lo} and {hi} must differ, got {a} for both")
     m = np.eye(4)
     m[0, 0] = 2 / (right - left)
     m[1, 1] = 2 / (top - bottom)
@@ -168,7 +183,7 @@ class Camera:
 
     def projection_matrix(self, aspect: float) -> np.ndarray:
         """View to clip space, (4, 4), for an image of ``aspect`` = width / height."""
-        aspect = float(aspect)
+        aspect = as_float("aspect", aspect, finite=False)
         if not (math.isfinite(aspect) and aspect > 0):
             raise ValueError(f"aspect must be a finite number > 0 (width / height), got {aspect}")
         if self.projection == "perspective":
@@ -186,7 +201,7 @@ class Camera:
         Dividing here would be wrong for points behind the camera (w <= 0): clipping
         against the near plane has to happen first, in homogeneous coordinates.
         """
-        p = np.asarray(points, dtype=np.float64)
+        p = as_real("points", points)
         if p.shape[-1:] != (3,):
             raise ValueError(f"points must have shape (..., 3), got {p.shape}")
         m = self.matrix(aspect)

@@ -36,6 +36,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.validate import as_float, as_real
+
 DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
 MAPPINGS = ("perspective", "linear", "reversed")
 
@@ -68,9 +70,12 @@ def quantize(depth, fmt: str) -> np.ndarray:
     >>> quantize([0.1], "float32") - 0.1
     array([1.49...e-09])
     """
+    if isinstance(depth, np.ndarray) and depth.dtype == np.float64:
+        d = depth  # the z-buffer's own arrays: no check, no copy (runs per fragment batch)
+    else:
+        d = as_real("depth", depth)
     if fmt == "float64":
-        return np.array(depth, dtype=np.float64)
-    d = np.asarray(depth, dtype=np.float64)
+        return d.copy() if d is depth else d
     if fmt == "float32":
         return d.astype(np.float32).astype(np.float64)
     if fmt not in _UNORM_BITS:
@@ -421,13 +426,7 @@ def _planes(near, far, *, positive: bool) -> tuple[float, float]:
     """Validated ``near`` and ``far`` as floats; errors name the argument."""
     out = []
     for name, value in (("near", near), ("far", far)):
-        try:
-            v = float(value)
-        except (TypeError, ValueError):
-            raise TypeError(f"{name} must be a real number, got {value!r}") from None
-        if not np.isfinite(v):
-            raise ValueError(f"{name} must be finite, got {v}")
-        out.append(v)
+        out.append(as_float(name, value))
     n, f = out
     if positive and n <= 0:
         raise ValueError(
@@ -440,10 +439,7 @@ def _planes(near, far, *, positive: bool) -> tuple[float, float]:
 
 def _distances(name: str, z, *, positive: bool) -> np.ndarray:
     """``z`` as a float64 array; with ``positive``, every non-NaN value must be > 0."""
-    try:
-        arr = np.asarray(z, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be numeric array-like, got {z!r}") from None
+    arr = as_real(name, z)
     if positive and (arr <= 0).any():
         raise ValueError(
             f"{name} must be > 0 (in front of the eye); a point at or behind the eye has no "

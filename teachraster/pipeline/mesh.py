@@ -21,7 +21,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core.validate import as_finite, as_int
+from ..core.validate import as_finite, as_float, as_int, check_shape
+
+
+def _integral(arr: np.ndarray) -> bool:
+    """Whether float ``arr`` holds whole numbers that int64 can take without overflow."""
+    return bool(np.all(np.isfinite(arr)) and np.all(arr == np.round(arr))) and bool(
+        np.all(np.abs(arr) < 2**62)
+    )
 
 
 def _as_indices(value, n_vertices: int) -> np.ndarray:
@@ -29,7 +36,7 @@ def _as_indices(value, n_vertices: int) -> np.ndarray:
         arr = np.asarray(value)
         if arr.size == 0:
             arr = arr.reshape(0, 3).astype(np.int64)
-        if arr.dtype.kind == "f" and np.all(np.isfinite(arr)) and np.all(arr == np.round(arr)):
+        if arr.dtype.kind == "f" and _integral(arr):
             arr = arr.astype(np.int64)  # integral floats (e.g. from np.loadtxt) are fine
     except (TypeError, ValueError) as exc:
         raise TypeError(f"triangles must be an integer array: {exc}") from None
@@ -78,9 +85,10 @@ class Mesh:
         for name, values in self.attrs.items():
             if not isinstance(name, str):
                 raise TypeError(f"attrs: names must be strings, got {name!r}")
-            arr = np.asarray(values)
+            arr = as_finite(f"attrs[{name!r}]", values, None)
             shape = (len(pos),) if arr.ndim == 1 else (len(pos), None)
-            clean[name] = as_finite(f"attrs[{name!r}]", values, shape)
+            check_shape(f"attrs[{name!r}]", arr.shape, shape)
+            clean[name] = arr
         for arr in (pos, tris, *clean.values()):
             arr.flags.writeable = False
         object.__setattr__(self, "positions", pos)
@@ -162,7 +170,7 @@ def translate(x: float, y: float, z: float) -> np.ndarray:
     array([1., 2., 3., 1.])
     """
     m = np.eye(4)
-    m[:3, 3] = as_finite("translation", [x, y, z], (3,))
+    m[:3, 3] = [as_float("x", x), as_float("y", y), as_float("z", z)]
     return m
 
 
@@ -196,7 +204,7 @@ def rotate(axis, degrees: float) -> np.ndarray:
     if length == 0:
         raise ValueError("axis must not be the zero vector")
     x, y, z = a / length
-    degrees = float(degrees)
+    degrees = as_float("degrees", degrees)
     if degrees % 90 == 0:
         # Quarter turns exactly: cos(90°) in floating point is 6e-17, not 0, which would
         # leave a floor that is not quite flat.
@@ -213,7 +221,7 @@ def rotate(axis, degrees: float) -> np.ndarray:
 
 
 def _positive(name: str, value) -> float:
-    v = float(value)
+    v = as_float(name, value, finite=False)
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
     return v

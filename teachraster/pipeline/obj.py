@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 
 import numpy as np
 
@@ -41,15 +42,53 @@ class ObjError(ValueError):
 
 
 def _text(source) -> str:
+    """The OBJ text of a path, a file, a string or bytes, without a UTF-8 byte-order mark.
+
+    Bytes are decoded as UTF-8 with undecodable bytes kept as surrogates
+    (``surrogateescape``): they are harmless in a comment and reported with their line
+    anywhere else (see :func:`_lines`).
+    """
     if hasattr(source, "read"):
         text = source.read()
-        return text.decode() if isinstance(text, bytes) else text
-    if isinstance(source, str) and "\n" in source:
-        return source
-    if isinstance(source, str | os.PathLike):
-        with open(source, encoding="utf-8") as fh:
-            return fh.read()
-    raise TypeError(f"source must be a path, a file-like object or OBJ text, got {type(source)}")
+    elif (
+        isinstance(source, str) and "\n" in source or isinstance(source, bytes) and b"\n" in source
+    ):
+        text = source  # OBJ text itself (a path has no newline)
+    elif isinstance(source, str | bytes | os.PathLike):
+        with open(source, "rb") as fh:
+            text = fh.read()
+    else:
+        raise TypeError(
+            f"source must be a path, a file-like object or OBJ text, got {type(source)}"
+        )
+    if isinstance(text, bytes | bytearray):
+        text = bytes(text).decode("utf-8", errors="surrogateescape")
+    if not isinstance(text, str):
+        raise TypeError(f"source.read() must return str or bytes, got {type(text)}")
+    return text.removeprefix("\ufeff")
+
+
+#: Line breaks as Python's universal newlines see them (not str.splitlines, which also
+#: breaks at form feeds and Unicode separators and would shift the line numbers).
+_NEWLINE = re.compile(r"\r\n|\r|\n")
+_INDEX = re.compile(r"-?[0-9]+")  # exactly: int() would also take "+1", "1_0", "١"
+_NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
+
+
+def _lines(text: str):
+    """``(line number, words)`` of each non-blank line, comments removed."""
+    for n, raw in enumerate(_NEWLINE.split(text), start=1):
+        line = raw.split("#", 1)[0]
+        bad = _SURROGATE.search(line)
+        if bad:
+            byte = ord(bad.group()) - 0xDC00
+            raise ObjError(n, f"byte 0x{byte:02x} is not UTF-8 text (allowed only in comments)")
+        words = line.split()
+        if words:
+            yield n, words
+
+
+_SURROGATE = re.compile("[\udc80-\udcff]")
 
 
 def _numbers(n: int, words: list[str], least: int, most: int, what: str) -> list[float]:
@@ -64,16 +103,17 @@ def _numbers(n: int, words: list[str], least: int, most: int, what: str) -> list
             raise ObjError(n, f"bad number {w!r}") from None
         if not math.isfinite(x):
             raise ObjError(n, f"bad number {w!r}: not finite")
+        if not _NUMBER.fullmatch(w):  # float() also takes "1_0" and non-ASCII digits
+            raise ObjError(n, f"bad number {w!r}: want ASCII digits, e.g. -1.5e3")
         out.append(x)
     return out
 
 
 def _index(n: int, word: str, count: int, what: str) -> int:
     """0-based index from an OBJ index (1-based, or negative = relative to ``count``)."""
-    try:
-        i = int(word)
-    except ValueError:
-        raise ObjError(n, f"bad {what} index {word!r}") from None
+    if not _INDEX.fullmatch(word):
+        raise ObjError(n, f"bad {what} index {word!r}: want an optional minus and ASCII digits")
+    i = int(word)
     if i == 0:
         raise ObjError(n, f"{what} index 0: OBJ indices start at 1")
     k = i - 1 if i > 0 else count + i
@@ -107,10 +147,7 @@ def read_obj(source) -> Mesh:
     n_normals = 0
     faces: list[tuple[int, list[tuple[int, int | None]]]] = []  # (line, [(v, vt)])
     first_form: tuple[int, bool] | None = None  # (line, has vt) of the first face
-    for n, raw in enumerate(_text(source).splitlines(), start=1):
-        words = raw.split("#", 1)[0].split()
-        if not words:
-            continue
+    for n, words in _lines(_text(source)):
         key, args = words[0], words[1:]
         if key == "v":
             positions.append(_numbers(n, args, 3, 4, "v")[:3])

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.validate import check_choice
+from .inputs import check_attrs, check_clip
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 from .viewport import to_window
@@ -24,9 +26,10 @@ def painter_order(clip, key: str = "max") -> np.ndarray:
     >>> painter_order([[[0, 0, 0.5, 1]] * 3, [[0, 0, -0.5, 1]] * 3, [[0, 0, 0.9, 1]] * 3])
     array([2, 0, 1])
     """
-    if key not in KEYS:
-        raise ValueError(f"key must be one of {KEYS}, got {key!r}")
-    clip = np.asarray(clip, dtype=np.float64)
+    check_choice("key", key, KEYS)
+    clip = check_clip(clip)
+    if len(clip) == 0:
+        return np.zeros(0, dtype=np.int64)
     front = clip[..., 3] > 0
     z = np.where(front, to_window(np.where(front[..., None], clip, 1.0), 2, 2)[..., 2], np.nan)
     depth = {"max": np.nanmax, "mean": np.nanmean, "min": np.nanmin}[key](
@@ -42,10 +45,13 @@ def painter(clip, width: int, height: int, *, attrs=None, key: str = "max", **kw
     """
     if "depth_test" in kwargs:
         raise TypeError("painter draws without a depth test; do not pass depth_test")
+    clip = check_clip(clip)
     order = painter_order(clip, key)
-    clip = np.asarray(clip, dtype=np.float64)[order]
+    clip = clip[order]
     if attrs is not None:
-        attrs = np.asarray(attrs, dtype=np.float64)[order]
+        attrs = check_attrs(attrs, len(clip))[order]
     frame = render_clip(clip, width, height, attrs=attrs, depth_test=False, **kwargs)
-    ids = np.where(frame.triangle_id >= 0, order[np.maximum(frame.triangle_id, 0)], -1)
+    ids = frame.triangle_id  # input order: drawing-order ids mapped back
+    if len(order):
+        ids = np.where(ids >= 0, order[np.maximum(ids, 0)], -1)
     return Frame(ids, frame.attrs, frame.depth, frame.plan, frame.trace)

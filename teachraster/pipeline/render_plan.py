@@ -11,7 +11,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 #: Effects that ``force=`` can switch on everywhere, for comparison.
-FORCEABLE = ("clipping", "perspective", "depth_test", "attributes")
+FORCEABLE = (
+    "clipping",
+    "perspective",
+    "depth_test",
+    "hi_z",
+    "attributes",
+    "multisampling",
+    "derivatives",
+)
 
 
 @dataclass(frozen=True)
@@ -159,3 +167,49 @@ def attributes_effect(
     else:
         why = f"{k} channel(s) at the {covered:,} visible pixel(s) only, not at hidden fragments"
     return Effect("attributes", k > 0, n_shaded if k else 0, n_fragments, "fragments", why, forced)
+
+
+def multisampling_effect(n_samples: int, n_per_sample: int, covered: int, forced: bool) -> Effect:
+    """MSAA: ``n_per_sample`` of ``covered`` pixels needed work sample by sample.
+
+    At the others every sample shows the same triangle: it covers the whole pixel and no
+    other triangle touches it, or every other one that does is farther over the whole pixel
+    (or drawn earlier without the depth test). One answer serves all ``n_samples`` there.
+    """
+    if forced:
+        why = f"every covered pixel resolved sample by sample ({n_samples} samples)"
+    else:
+        why = (
+            f"{n_per_sample:,} pixel(s) are partly covered or reached by 2+ triangles: "
+            f"coverage, depth test and shading per sample there; the other "
+            f"{covered - n_per_sample:,} show one triangle at every sample (it covers the "
+            f"whole pixel and is in front over all of it): one answer for all {n_samples}"
+        )
+    return Effect("multisampling", True, n_per_sample, covered, "pixels", why, forced)
+
+
+def derivatives_effect(
+    mode: str | None,
+    n_pixels: int,
+    n_visible: int,
+    n_quads: int,
+    n_helpers: int,
+    n_fallback: int,
+    forced: bool,
+) -> Effect:
+    """Quad derivatives: ``mode`` differences at ``n_pixels`` of ``n_visible`` visible pixels,
+    from ``n_quads`` (quad, triangle) pairs with ``n_helpers`` helper pixels; ``n_fallback``
+    pixels took a difference away from a helper beyond the triangle's horizon."""
+    if mode is None:
+        why = "not asked (derivatives=False): no quads evaluated"
+    else:
+        why = (
+            f"{mode} differences in {n_quads:,} 2x2 quad(s), {n_helpers:,} helper pixel(s) "
+            "evaluated on their triangle's extrapolated interpolation"
+        )
+        if n_fallback:
+            why += f"; {n_fallback} pixel(s) avoided a helper beyond the horizon"
+        if forced:
+            why = "at every visible pixel; " + why
+    ran = mode is not None and n_pixels > 0
+    return Effect("derivatives", ran, n_pixels, n_visible, "pixels", why, forced)

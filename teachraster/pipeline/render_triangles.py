@@ -11,8 +11,11 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
-   (:mod:`teachraster.pipeline.zbuffer`);
-6. perspective-correct interpolation of the attributes, at the visible pixels only.
+   (:mod:`teachraster.pipeline.zbuffer`); where fragments overlap, what early-z and Hi-Z
+   would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
+6. perspective-correct interpolation of the attributes, at the visible pixels only;
+7. on request, their screen-space derivatives from 2×2 quads with helper pixels
+   (:mod:`teachraster.pipeline.quad_derivatives`), for texture filtering.
 """
 
 from __future__ import annotations
@@ -21,12 +24,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.fill import CULL
-from ..core.interpolation import MODES
-from ..core.snapping import SUBPIXEL_BITS, check_bits
-from ..core.validate import as_finite, as_size, check_choice
-from .depth import DEPTH_FORMATS
-from .render_plan import Plan, parse_force
+from ..core.sample_patterns import as_samples, is_single
+from ..core.snapping import SUBPIXEL_BITS
+from .hierarchical_z import HiZResult, hiz_stage
+from .inputs import check_render
+from .multisampling import multisample_stage
+from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
+from .render_plan import Plan
 from .stages import (
     clip_stage,
     cull_stage,
@@ -35,6 +39,7 @@ from .stages import (
     interpolate_stage,
     viewport_stage,
 )
+from .zbuffer import passed_on_arrival
 
 
 @dataclass(frozen=True)
@@ -58,6 +63,14 @@ class RenderTrace:
         Its depth as the buffer stores it (after ``depth_format`` quantisation).
     fragment_passed : (m,) bool
         Whether it passed the depth test when it arrived (always True without the test).
+    fragment_sample : (m,) int64 or None
+        Multisampled renders: the sample each fragment entry was tested at (entries grouped
+        by sample, drawing order inside each), or -1 for a pixel decided whole (one triangle at every sample, no per-sample test; its depth is
+        NaN here, the per-sample depths are in ``Frame.sample_depth``).
+    quads : QuadTrace or None
+        The 2×2 quads and helper pixels evaluated for derivatives, when they were.
+    hiz : HiZResult or None
+        Early-z and Hi-Z per block and fragment (None without the depth test).
     """
 
     clip_status: np.ndarray
@@ -70,6 +83,9 @@ class RenderTrace:
     fragment_col: np.ndarray
     fragment_depth: np.ndarray
     fragment_passed: np.ndarray
+    fragment_sample: np.ndarray | None = None
+    quads: QuadTrace | None = None
+    hiz: HiZResult | None = None
 
 
 @dataclass(frozen=True)
@@ -88,6 +104,20 @@ class Frame:
         Which effects were simulated, for how much, and why.
     trace : RenderTrace or None
         Every stage's record, when ``trace=True``.
+    sample_triangle_id : (H, W, S) int64 or None
+        With ``samples`` other than 1: the input triangle each sample shows, -1 none.
+        ``triangle_id``, ``depth`` and ``attrs`` then describe the triangle owning most of
+        the pixel's samples (ties: the earlier), evaluated once for the pixel.
+    sample_depth : (H, W, S) float64 or None
+        The depth buffer, one depth per sample, NaN where uncovered.
+    sample_attrs : (H, W, S, k) float64 or None
+        The attributes each sample holds: those of its triangle, evaluated once per pixel
+        (at the centre, extrapolated when outside), NaN where uncovered.
+    samples : (S, 2) float64 or None
+        The sample offsets inside the pixel as tested, in px.
+    ddx, ddy : (H, W, k) float64 or None
+        Screen-space derivatives of the attributes from 2×2 quads (``derivatives=``): per
+        pixel step right and per pixel step down; NaN where uncovered. None when not computed.
     """
 
     triangle_id: np.ndarray
@@ -95,25 +125,55 @@ class Frame:
     depth: np.ndarray
     plan: Plan
     trace: RenderTrace | None = None
+    sample_triangle_id: np.ndarray | None = None
+    sample_depth: np.ndarray | None = None
+    sample_attrs: np.ndarray | None = None
+    samples: np.ndarray | None = None
+    ddx: np.ndarray | None = None
+    ddy: np.ndarray | None = None
 
     @property
     def coverage(self) -> np.ndarray:
         """(H, W) bool: pixels some triangle wrote."""
         return self.triangle_id >= 0
 
+    @property
+    def coverage_fraction(self) -> np.ndarray:
+        """(H, W) float64: fraction of each pixel's samples some triangle covers."""
+        if self.sample_triangle_id is None:
+            return self.coverage.astype(np.float64)
+        return (self.sample_triangle_id >= 0).mean(axis=2)
 
-def _check_clip(clip, attrs):
-    if np.size(clip) == 0:  # an empty scene, however it is spelt ([] or (0, 3, 4))
-        clip = np.zeros((0, 3, 4))
-    clip = as_finite("clip", clip, (None, 3, 4))
-    n = len(clip)
-    if attrs is None:
-        return clip, np.zeros((n, 3, 0))
-    arr = np.asarray(attrs, dtype=np.float64)
-    if arr.ndim == 2:
-        arr = arr[:, :, None]
-    arr = as_finite("attrs", arr, (n, 3, None))
-    return clip, arr
+    def resolve(self, values, background=0.0) -> np.ndarray:
+        """The MSAA resolve: the mean of per-sample ``values`` over all S samples of a pixel.
+
+        Uncovered samples count as ``background`` (a scalar or a (c,) colour).
+
+        Parameters
+        ----------
+        values : (H, W, S) or (H, W, S, c) array-like
+            One value per sample, e.g. ``frame.sample_attrs`` or a colour shaded from it.
+            A single-sample frame takes (H, W) or (H, W, c) values instead.
+        background : float or (c,) array-like
+
+        Examples
+        --------
+        >>> clip = [[[-1, -1, 0, 1], [1, -1, 0, 1], [-1, 1, 0, 1]]]
+        >>> frame = render(clip, 2, 2, attrs=[[1.0, 1.0, 1.0]], samples=4)
+        >>> frame.resolve(frame.sample_attrs, background=0.0)[..., 0]
+        array([[0.5, 0. ],
+               [1. , 0.5]])
+        """
+        ids = self.sample_triangle_id
+        if ids is None:
+            ids = self.triangle_id[..., None]
+            values = np.asarray(values, dtype=np.float64)[:, :, None]
+        values = np.asarray(values, dtype=np.float64)
+        if values.shape[:3] != ids.shape:
+            raise ValueError(f"values must have shape {ids.shape} (+ channels), got {values.shape}")
+        covered = (ids >= 0).reshape(*ids.shape, *([1] * (values.ndim - 3)))
+        bg = np.broadcast_to(np.asarray(background, dtype=np.float64), values.shape[3:])
+        return np.where(covered, values, bg).mean(axis=2)
 
 
 def render(
@@ -129,8 +189,13 @@ def render(
     force=None,
     trace: bool = False,
     subpixel_bits: int | None = SUBPIXEL_BITS,
+    max_pixels: int | None = None,
+    samples=1,
+    derivatives=False,
+    derivatives_where=None,
 ) -> Frame:
-    """Render clip-space triangles into a ``height`` × ``width`` frame.
+    """Render clip-space triangles into a ``height`` × ``width`` frame (bad arguments raise
+    a ValueError or TypeError naming them, see :mod:`teachraster.pipeline.inputs`).
 
     Parameters
     ----------
@@ -155,6 +220,19 @@ def render(
         Record every stage (see :class:`RenderTrace`).
     subpixel_bits : int or None
         Snapping precision, as in :func:`teachraster.rasterize`.
+    max_pixels : int, optional
+        Largest ``width * height`` (default 2**28): larger raises before allocating.
+    samples : int or (S, 2) array-like
+        Multisampling (MSAA): 1, 2, 4, 8, 16 (standard patterns) or offsets in [0, 1)².
+        Coverage and the depth test per sample, attributes once per pixel and triangle
+        (see :class:`Frame` and :mod:`teachraster.pipeline.multisampling`).
+    derivatives : bool or {"coarse", "fine"}
+        Also compute ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True`` or ``"coarse"``
+        (one pair per quad, as llvmpipe) or ``"fine"`` (per row / column); see
+        :mod:`teachraster.pipeline.quad_derivatives`.
+    derivatives_where : (N,) bool array-like, optional
+        Only the pixels of these input triangles get derivatives (NaN elsewhere); how
+        ``render(scene, ...)`` limits them to the triangles a texture filter minifies.
 
     Examples
     --------
@@ -168,49 +246,130 @@ def render(
     >>> print(frame.plan["clipping"].why)
     no triangle crosses the near or far plane: nothing to clip
     """
-    clip, attrs = _check_clip(clip, attrs)
-    width, height = as_size("width", width), as_size("height", height)
-    check_choice("cull", cull, CULL)
-    check_choice("depth_format", depth_format, DEPTH_FORMATS)
-    check_choice("interpolation", interpolation, MODES)
-    subpixel_bits = check_bits(subpixel_bits)
-    forced = parse_force(force)
+    a = check_render(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull,
+                     depth_format=depth_format, interpolation=interpolation, force=force,
+                     trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
+    clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
+    depth_test, trace, forced = a.depth_test, a.trace, a.forced
+    offsets = None if is_single(samples) else as_samples(samples)
+    mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
 
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
+    if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
+        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets,
+                                    (width, height, subpixel_bits), (depth_test, depth_format,
+                                    interpolation), forced, trace)  # fmt: skip
     frags = fill_stage(window, width, height, subpixel_bits, culled)
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
+    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced)
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
+    ddx, ddy, quads, derivs = derivatives_stage(
+        frags, visible, clipped, (width, height), mode,
+        None if where is None else where[clipped.parent], interpolation, forced, trace,
+    )  # fmt: skip
+    plan = Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
+    record = _record(clipped, window, culled, frags, visible, quads, hiz) if trace else None
+    return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
 
-    plan = Plan((clipping, culling, depth_testing, perspective, attributes))
-    record = _record(clipped, window, culled, frags, visible) if trace else None
-    return _frame(visible, values, clipped, frags, width, height, plan, record)
+
+def _render_multisampled(clipped, window, culled, effects, offsets, grid, options, forced,
+                         trace) -> Frame:  # fmt: skip
+    """The multisampled rest of :func:`render`, after clipping, the viewport and culling."""
+    width, height, bits = grid
+    multi, more = multisample_stage(
+        clipped, window, culled, (width, height), bits, offsets, options, forced
+    )
+    plan = Plan((*effects, *more))
+    return _multi_frame(multi, clipped, window, culled, (width, height), plan, trace)
 
 
-def _frame(visible, values, clipped, frags, width, height, plan, record) -> Frame:
-    """Scatter the visible pixels' triangle, depth and attributes into (H, W) images."""
-    k = values.shape[1]
+def _check_derivatives(derivatives, where, n, offsets):
+    """The derivative mode (None: off) and the triangles that want derivatives (None: all)."""
+    mode = as_derivative_mode(derivatives)
+    if offsets is not None and mode is not None:
+        raise ValueError("derivatives: quad derivatives are simulated with samples=1 only")
+    return mode, _check_where(where, n)
+
+
+def _check_where(where, n):
+    if where is None:
+        return None
+    arr = np.asarray(where)
+    if arr.shape != (n,) or arr.dtype != bool:
+        raise ValueError(f"derivatives_where must be a bool array of shape ({n},), got {arr!r}")
+    return arr
+
+
+def _image(visible, values, width, height) -> np.ndarray:
+    """(H, W, k) image of per-visible-pixel values, NaN elsewhere."""
+    out = np.full((width * height, values.shape[1]), np.nan)
+    out[visible.pixels] = values
+    return out.reshape(height, width, values.shape[1])
+
+
+def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=None,
+           ddy=None) -> Frame:  # fmt: skip
+    """Scatter the visible pixels' triangle, depth, attributes (and derivatives) into images."""
     triangle_id = np.full(width * height, -1, dtype=np.int64)
     triangle_id[visible.pixels] = clipped.parent[frags.tri[visible.winner]]
     depth = np.full(width * height, np.nan)
     depth[visible.pixels] = visible.depth[visible.winner]
-    attrs = np.full((width * height, k), np.nan)
-    attrs[visible.pixels] = values
     return Frame(
         triangle_id=triangle_id.reshape(height, width),
-        attrs=attrs.reshape(height, width, k),
+        attrs=_image(visible, values, width, height),
         depth=depth.reshape(height, width),
         plan=plan,
         trace=record,
+        ddx=None if ddx is None else _image(visible, ddx, width, height),
+        ddy=None if ddy is None else _image(visible, ddy, width, height),
     )
 
 
-def _record(clipped, window, culled, frags, visible) -> RenderTrace:
+def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
+    """The :class:`Frame` of a multisampled render (input triangle ids, (H, W, ...) images)."""
+    width, height = size
+    n_s, k = len(multi.offsets), clipped.attrs.shape[2]
+
+    def ids(sub):  # input triangle ids (-1 stays -1; -1 also when nothing survived clipping)
+        parent = np.r_[clipped.parent, -1]  # index -1 reads the appended -1
+        return parent[sub]
+
+    record = None
+    if trace:  # the per-sample entries in drawing order, then the pixels decided whole
+        r = multi.record
+        tri = np.concatenate([r["tri"], r["whole_tri"]])
+        row, col = np.divmod(np.concatenate([r["pixel"], r["whole_pixel"]]), width)
+        record = RenderTrace(
+            clipped.status, clipped.polygons, window, clipped.parent, culled,
+            clipped.parent[tri], row, col,
+            np.concatenate([r["depth"], np.full(len(r["whole_tri"]), np.nan)]),
+            np.concatenate([
+                passed_on_arrival(r["slot"], r["depth"]) if r["depth_test"]
+                else np.ones(len(r["slot"]), dtype=bool),
+                np.ones(len(r["whole_tri"]), dtype=bool),
+            ]),
+            np.concatenate([r["sample"], np.full(len(r["whole_tri"]), -1)]),
+        )  # fmt: skip
+    return Frame(
+        triangle_id=ids(multi.owner).reshape(height, width),
+        attrs=multi.attrs.reshape(height, width, k),
+        depth=multi.depth.reshape(height, width),
+        plan=plan,
+        trace=record,
+        sample_triangle_id=ids(multi.sample_tri).reshape(height, width, n_s),
+        sample_depth=multi.sample_depth.reshape(height, width, n_s),
+        sample_attrs=multi.sample_attrs.reshape(height, width, n_s, k),
+        samples=multi.offsets,
+    )
+
+
+def _record(clipped, window, culled, frags, visible, quads=None, hiz=None) -> RenderTrace:
     """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
     return RenderTrace(
         clip_status=clipped.status,
@@ -223,4 +382,6 @@ def _record(clipped, window, culled, frags, visible) -> RenderTrace:
         fragment_col=frags.col,
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
+        quads=quads,
+        hiz=hiz,
     )

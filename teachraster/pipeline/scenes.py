@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.validate import short_repr
 from .camera import Camera
 from .mesh import (
     Mesh,
@@ -255,6 +256,6 @@ SCENES: dict[str, Callable[[], Scene]] = {
 
 def get_scene(name: str) -> Scene:
     """Build the built-in scene called ``name`` (see ``SCENES``)."""
-    if name not in SCENES:
-        raise ValueError(f"unknown scene {name!r}; choose from {', '.join(SCENES)}")
+    if not isinstance(name, str) or name not in SCENES:
+        raise ValueError(f"name: unknown scene {short_repr(name)}; choose from {', '.join(SCENES)}")
     return SCENES[name]()

@@ -42,7 +42,7 @@ import numpy as np
 
 from ..core.edges import culled as culled_by
 from ..core.edges import setup_edges
-from ..core.interpolation import blend_each, weights_per_row
+from ..core.interpolation import blend_each, convex_weights, weights_per_row
 from .batched_fill import Fragments, rasterize_batch
 from .clipping import CLIPPED, DROPPED, INSIDE, ClipResult, classify, clip_triangles
 from .depth import quantize
@@ -227,6 +227,9 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
     weights = frags.weights_at(tri, frags.col[shade] + 0.5, frags.row[shade] + 0.5)
+    # Weights from the unsnapped set-up can be slightly negative at a covered centre that
+    # snapping brought inside an edge: made convex, so every value stays within range.
+    weights = convex_weights(weights)
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     if persp.all():  # f/w and 1/w are affine in screen space (no masking needed)
         weights = weights_per_row(weights, w[tri])

@@ -1,4 +1,4 @@
-"""Textures: a procedural checkerboard, and nearest / bilinear sampling.
+"""Textures: a procedural checkerboard, and sampling (nearest, bilinear, mipmapped, anisotropic).
 
 Ritschel (*Interpolation and z-buffering*) lists texture coordinates among the per-pixel values
 a rasteriser interpolates; Ek (*Triangles and Perspective Correct Interpolation*) and
@@ -32,12 +32,19 @@ array([[0.92, 0.92, 0.92],
 
 from __future__ import annotations
 
+from numbers import Real
+
 import numpy as np
 
-from ..core.validate import as_int
+from ..core.validate import as_int, as_real, check_choice
+from .mip_pyramid import as_pyramid, is_pyramid
+from .texel_fetch import LEVEL_FILTERS, WRAPS, as_texture, as_uv, lookup, texture_size
+from .texture_filters import MIPMAP_FILTERS, mip_level, sample_anisotropic, sample_levels
 
-FILTERS = ("nearest", "bilinear")
-WRAPS = ("repeat", "clamp")
+#: The filters within one level (no mipmaps); the mipmapped ones are ``MIPMAP_FILTERS``.
+FILTERS = LEVEL_FILTERS
+#: Every filter ``sample`` knows.
+TEXTURE_FILTERS = FILTERS + tuple(MIPMAP_FILTERS)
 
 
 def checkerboard(
@@ -79,12 +86,7 @@ def checkerboard(
             f"checks must be <= texels (a square must be at least one texel wide), "
             f"got checks={checks}, texels={texels}"
         )
-    try:
-        cols = np.array(colors, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"colors must be numeric array-like of shape (2, C), got {colors!r}"
-        ) from None
+    cols = as_real("colors", colors)
     if cols.ndim != 2 or cols.shape[0] != 2 or cols.shape[1] < 1:
         raise ValueError(f"colors must have shape (2, C): two colours, got {cols.shape}")
     if not (np.isfinite(cols).all() and ((cols >= 0) & (cols <= 1)).all()):
@@ -96,24 +98,49 @@ def checkerboard(
     return cols[parity]
 
 
-def sample(texture, uv, filter: str = "nearest", wrap: str = "repeat") -> np.ndarray:
-    """Sample ``texture`` at texture coordinates ``uv`` (convention in the module docstring).
+def sample(
+    texture,
+    uv,
+    filter: str = "nearest",
+    wrap: str = "repeat",
+    *,
+    lod=None,
+    ddx=None,
+    ddy=None,
+    max_anisotropy=16,
+) -> np.ndarray:
+    """Sample a texture or its mip pyramid at texture coordinates ``uv``.
+
+    Convention in the module docstring; the mipmapped filters in
+    :mod:`teachraster.pipeline.texture_filters`.
 
     Parameters
     ----------
-    texture : (H, W) or (H, W, C) array-like
-        Finite texel values (kept as they are: an 8-bit image is not rescaled).
+    texture : (H, W) or (H, W, C) array-like, or a pyramid (list of arrays, see ``mipmap``)
+        Finite texel values (kept as they are: an 8-bit image is not rescaled). A single
+        texture is turned into its pyramid when the filter uses mipmaps; a pyramid's level 0
+        serves ``nearest`` and ``bilinear``.
     uv : (..., 2) array-like
         ``(u, v)`` per sample; NaN marks "no sample" (an uncovered pixel).
-    filter : {"nearest", "bilinear"}
-        Nearest texel, or GL-style bilinear blend of the four nearest texel centres.
+    filter : str
+        ``"nearest"`` or ``"bilinear"`` (level 0 only), ``"nearest_mipmap_nearest"``,
+        ``"linear_mipmap_nearest"``, ``"nearest_mipmap_linear"``, ``"trilinear"`` (these need
+        ``lod``, or ``ddx`` and ``ddy``) or ``"anisotropic"`` (needs ``ddx`` and ``ddy``).
     wrap : {"repeat", "clamp"}
         What lies outside [0, 1]: the texture tiled, or its border texels stretched.
+    lod : float or (...) array-like, optional
+        The level of detail λ per sample (broadcast against ``uv``'s leading shape).
+    ddx, ddy : (..., k) array-like, optional
+        Screen-space derivatives of ``(u, v)`` (channels 0, 1), e.g. ``frame.ddx``; λ is
+        :func:`~teachraster.pipeline.texture_filters.mip_level` of them.
+    max_anisotropy : number >= 1
+        Most probes ``anisotropic`` takes along the footprint's major axis (GL's
+        ``TEXTURE_MAX_ANISOTROPY``).
 
     Returns
     -------
     (..., C) float64, or (...) for an (H, W) texture
-        NaN wherever ``u`` or ``v`` is NaN.
+        NaN wherever ``u``, ``v`` (or the level of detail) is NaN.
 
     Examples
     --------
@@ -124,46 +151,80 @@ def sample(texture, uv, filter: str = "nearest", wrap: str = "repeat") -> np.nda
     array([0.5, nan])
     >>> sample(tex, [[-3.0, 0.25]], wrap="clamp")
     array([0.])
+    >>> sample(tex, [[0.25, 0.25], [0.25, 0.25]], "trilinear", lod=[0.0, 1.0])   # level 1: mean
+    array([0. , 1.5])
     """
-    tex = _as_texture(texture)
-    uv = _as_uv("uv", uv)
-    if filter not in FILTERS:
-        raise ValueError(f"filter must be one of {FILTERS}, got {filter!r}")
-    if wrap not in WRAPS:
-        raise ValueError(f"wrap must be one of {WRAPS}, got {wrap!r}")
-    h, w = tex.shape[:2]
-    lead = uv.shape[:-1]
+    check_choice("filter", filter, TEXTURE_FILTERS)
+    check_choice("wrap", wrap, WRAPS)
+    if filter in FILTERS:
+        levels = as_pyramid(texture) if is_pyramid(texture) else [as_texture(texture)]
+    else:
+        levels = as_pyramid(texture)
+    uv = as_uv("uv", uv)
+    lead, tail = uv.shape[:-1], levels[0].shape[2:]
     flat = uv.reshape(-1, 2)
     # Uncovered pixels carry NaN coordinates (CONVENTIONS); skip them instead of letting NaN
     # reach an integer index, and give them NaN colour so "nothing drawn" stays visible.
     ok = ~np.isnan(flat).any(axis=1)
-    u, v = flat[ok, 0], flat[ok, 1]
-    # Texels as rows of an (H*W, C) table fetched by one flat index (np.take): a little faster
-    # than fancy-indexing [row, col], and it treats (H, W) and (H, W, C) textures alike.
-    table = tex.reshape(h * w, -1)
-
-    def fetch(row, col):
-        return np.take(table, row * w + col, axis=0)
-
-    if filter == "nearest":
-        # The texel whose square [c/W, (c+1)/W) contains u: floor(u * W), then wrap the index.
-        values = fetch(_wrap(np.floor(v * h), h, wrap), _wrap(np.floor(u * w), w, wrap))
+    if filter in FILTERS:
+        _check_unused(filter, lod=lod, ddx=ddx, ddy=ddy)
+        values = lookup(levels[0], flat[ok, 0], flat[ok, 1], filter, wrap)
     else:
-        # GL_LINEAR: shift by half a texel so texel centres sit on integers, then blend the
-        # four neighbours. Written as a + t (b - a), recentred like interpolation.blend (seed
-        # 004), so a constant texture stays exactly constant and t = 0 returns a exactly.
-        x, y = u * w - 0.5, v * h - 0.5
-        x0, y0 = np.floor(x), np.floor(y)
-        fx, fy = (x - x0)[:, None], (y - y0)[:, None]
-        c0, c1 = _wrap(x0, w, wrap), _wrap(x0 + 1, w, wrap)
-        r0, r1 = _wrap(y0, h, wrap), _wrap(y0 + 1, h, wrap)
-        t00, t01 = fetch(r0, c0), fetch(r0, c1)
-        t10, t11 = fetch(r1, c0), fetch(r1, c1)
-        top = t00 + fx * (t01 - t00)
-        values = top + fy * (t10 + fx * (t11 - t10) - top)
-    out = np.full((flat.shape[0], table.shape[1]), np.nan)
+        values, ok = _sample_mipmapped(levels, flat, ok, lead, filter, wrap, lod, ddx, ddy,
+                                       max_anisotropy)  # fmt: skip
+    out = np.full((flat.shape[0], values.shape[1]), np.nan)
     out[ok] = values
-    return out.reshape(lead + tex.shape[2:])
+    return out.reshape(lead + tail)
+
+
+def _check_unused(filter, **given):
+    extra = [name for name, value in given.items() if value is not None]
+    if extra:
+        raise ValueError(
+            f"{extra[0]}: filter={filter!r} samples level 0 only and takes no {extra[0]}"
+        )
+
+
+def _sample_mipmapped(levels, flat, ok, lead, filter, wrap, lod, ddx, ddy, max_anisotropy):
+    """Values at the samples ``ok`` where λ is also defined, and that narrowed mask."""
+    if isinstance(max_anisotropy, bool) or not isinstance(max_anisotropy, Real | np.number):
+        raise ValueError(f"max_anisotropy must be a number >= 1, got {max_anisotropy!r}")
+    if not max_anisotropy >= 1:  # also refuses NaN
+        raise ValueError(
+            f"max_anisotropy must be a number >= 1 (GL's minimum), got {max_anisotropy!r}"
+        )
+    if filter == "anisotropic" and (lod is not None or ddx is None or ddy is None):
+        raise ValueError("filter='anisotropic' needs ddx and ddy (the footprint), not lod")
+    if lod is not None and (ddx is not None or ddy is not None):
+        raise ValueError("lod: give either lod or ddx and ddy, not both")
+    if lod is None and (ddx is None or ddy is None):
+        raise ValueError(f"filter={filter!r} needs lod, or ddx and ddy to compute it from")
+    n = flat.shape[0]
+    if lod is not None:
+        try:
+            lam = np.broadcast_to(np.asarray(lod, dtype=np.float64), lead).reshape(n)
+        except (TypeError, ValueError):
+            raise ValueError(f"lod must be a number or an array of shape {lead}") from None
+    else:
+        dx = _derivatives("ddx", ddx, lead)
+        dy = _derivatives("ddy", ddy, lead)
+        lam = mip_level(dx, dy, levels[0].shape)
+    ok = ok & ~np.isnan(lam)
+    u, v = flat[ok, 0], flat[ok, 1]
+    if filter == "anisotropic":
+        return sample_anisotropic(levels, u, v, dx[ok], dy[ok], max_anisotropy, wrap), ok
+    how, within = MIPMAP_FILTERS[filter]
+    return sample_levels(levels, u, v, lam[ok], how, within, wrap), ok
+
+
+def _derivatives(name, value, lead):
+    try:
+        arr = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a numeric array of shape (..., k), k >= 2") from None
+    if arr.shape[:-1] != lead or arr.ndim < 1 or arr.shape[-1] < 2:
+        raise ValueError(f"{name} must have shape {lead + ('k',)} with k >= 2, got {arr.shape}")
+    return arr.reshape(-1, arr.shape[-1])[:, :2]
 
 
 def texel_error(uv_a, uv_b, shape) -> np.ndarray:
@@ -190,9 +251,9 @@ def texel_error(uv_a, uv_b, shape) -> np.ndarray:
     >>> texel_error([[0.5, 0.5], [0.0, 0.0]], [[0.75, 0.5], [np.nan, 0.0]], (8, 4))
     array([ 1., nan])
     """
-    a = _as_uv("uv_a", uv_a, allow_inf=True)
-    b = _as_uv("uv_b", uv_b, allow_inf=True)
-    h, w = _texture_size(shape)
+    a = as_uv("uv_a", uv_a, allow_inf=True)
+    b = as_uv("uv_b", uv_b, allow_inf=True)
+    h, w = texture_size(shape)
     try:
         np.broadcast_shapes(a.shape, b.shape)
     except ValueError:
@@ -201,51 +262,3 @@ def texel_error(uv_a, uv_b, shape) -> np.ndarray:
         ) from None
     d = a - b
     return np.hypot(d[..., 0] * w, d[..., 1] * h)
-
-
-# -- helpers ----------------------------------------------------------------------------------
-def _wrap(index: np.ndarray, size: int, wrap: str) -> np.ndarray:
-    """Integer texel indices for float indices (already floored), tiled or clamped."""
-    if wrap == "repeat":
-        index = np.mod(index, size)  # floor-mod: -1 -> size - 1, like GL_REPEAT
-    else:
-        index = np.clip(index, 0, size - 1)
-    return index.astype(np.intp)
-
-
-def _texture_size(shape) -> tuple[int, int]:
-    """``(H, W)`` from a texture shape, or a ValueError naming ``shape``."""
-    try:
-        dims = tuple(int(s) for s in shape)
-    except (TypeError, ValueError):
-        raise ValueError(
-            f"shape must be a texture shape (H, W) or (H, W, C), got {shape!r}"
-        ) from None
-    if len(dims) not in (2, 3) or min(dims) < 1:
-        raise ValueError(f"shape must be a texture shape (H, W) or (H, W, C), got {shape!r}")
-    return dims[0], dims[1]
-
-
-def _as_texture(texture) -> np.ndarray:
-    try:
-        tex = np.asarray(texture, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError("texture must be a numeric array of shape (H, W) or (H, W, C)") from None
-    if tex.ndim not in (2, 3) or min(tex.shape) < 1:
-        raise ValueError(f"texture must have shape (H, W) or (H, W, C), got {tex.shape}")
-    if not np.isfinite(tex).all():
-        raise ValueError("texture contains NaN or infinity")
-    return tex
-
-
-def _as_uv(name: str, uv, allow_inf: bool = False) -> np.ndarray:
-    try:
-        arr = np.asarray(uv, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a numeric array of shape (..., 2)") from None
-    if arr.ndim < 1 or arr.shape[-1] != 2:
-        raise ValueError(f"{name} must have shape (..., 2): (u, v) pairs, got {arr.shape}")
-    if not allow_inf and np.isinf(arr).any():
-        # NaN means "uncovered" and is allowed; infinity has no texel at all.
-        raise ValueError(f"{name} contains infinity (NaN is allowed and marks no sample)")
-    return arr

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.validate import as_real, as_size
+
 
 def to_window(clip, width: int, height: int) -> np.ndarray:
     """Window coordinates (x, y, z) of clip-space points (..., 4) with w > 0.
@@ -18,7 +20,10 @@ def to_window(clip, width: int, height: int) -> np.ndarray:
     array([[320. , 240. ,   0.5],
            [  0. ,   0. ,   1. ]])
     """
-    c = np.asarray(clip, dtype=np.float64)
+    c = as_real("clip", clip)
+    if c.ndim < 1 or c.shape[-1] != 4:
+        raise ValueError(f"clip must have shape (..., 4): (x, y, z, w) points, got {c.shape}")
+    width, height = as_size("width", width), as_size("height", height)
     w = c[..., 3]
     x = (c[..., 0] / w + 1.0) * (width / 2)
     y = (1.0 - c[..., 1] / w) * (height / 2)

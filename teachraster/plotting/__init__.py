@@ -26,6 +26,16 @@ Geometry of one fill (``fill = tr.rasterize(tri, W, H, trace=True)``)
 - :func:`plot_bailout` -- which edge test rejected each pixel, and how many tests ran.
 - :func:`plot_visit_order` -- the order in which the fill reaches the pixels.
 
+Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
+-------------------------------------------------------------------
+- :func:`plot_blocks` -- the classified blocks coloured by kind, a level or up to a step.
+- :func:`plot_hierarchy` -- one panel per block size.
+- :func:`plot_block_counters` -- llvmpipe-style counters as a table.
+- :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
+- :func:`plot_block_path` -- the walk through one level's blocks in a traversal order.
+- :func:`plot_early_z` -- per pixel, fragments Hi-Z rejected, early-z killed, or shaded
+  (``tr.render(..., trace=True)``).
+
 Per-pixel values
 ----------------
 - :func:`plot_barycentric` -- λ0, λ1, λ2 as RGB, or one weight as a value map.
@@ -34,6 +44,20 @@ Per-pixel values
 - :func:`plot_depth` -- the depth buffer (window depth, 0 = near).
 - :func:`plot_image` -- a colour image such as a texture-mapped SceneFrame.
 - :func:`plot_plan` / :func:`format_plan` -- a render plan as a text table.
+
+Antialiasing (multisampled fills and frames, :mod:`.antialiasing`)
+------------------------------------------------------------------
+- :func:`plot_samples` -- every sample at its position, filled where covered.
+- :func:`plot_pixel_samples` -- one pixel magnified: samples, owners, edge values.
+- :func:`plot_coverage_fraction` -- the fraction of samples covered per pixel.
+- :func:`plot_area_error` -- coverage fraction minus the exact area, signed.
+
+Texture filtering (lesson 09)
+-----------------------------
+- :func:`plot_quads` -- 2×2 quads and helper pixels of ``render(..., derivatives=True, trace=True)``.
+- :func:`plot_lod` -- the level-of-detail map, one colour per mip level.
+- :func:`plot_pyramid` -- a mip pyramid, level 0 and the smaller levels beside it.
+- :func:`plot_filters` -- filtered renders side by side with their error against the truth.
 
 Views (draw once, then update in place; for widgets and animations)
 -------------------------------------------------------------------
@@ -49,6 +73,14 @@ Style
 - :data:`COLORS`, :data:`OKABE_ITO` -- the colour of each role and the palette.
 """
 
+from .antialiasing import (
+    PixelSampleArtists,
+    SampleArtists,
+    plot_area_error,
+    plot_coverage_fraction,
+    plot_pixel_samples,
+    plot_samples,
+)
 from .images import (
     HeatmapArtists,
     ImageArtists,
@@ -91,49 +123,103 @@ from .plots import (
     visit_order,
 )
 from .style import COLORS, OKABE_ITO, STYLES, use_style
+from .texture_plots import (
+    FilterArtists,
+    LodArtists,
+    PyramidArtists,
+    QuadArtists,
+    plot_filters,
+    plot_lod,
+    plot_pyramid,
+    plot_quads,
+)
+from .tiles import (
+    BLOCK_COLORS,
+    BlockArtists,
+    BlockPathArtists,
+    CounterArtists,
+    EarlyZArtists,
+    TraversalArtists,
+    block_mask,
+    early_z_counts,
+    plot_block_counters,
+    plot_block_path,
+    plot_blocks,
+    plot_early_z,
+    plot_hierarchy,
+    plot_traversal,
+)
 from .views import ComparisonView, FillView, InterpolationView
 
 __all__ = [
+    "PixelSampleArtists",
+    "SampleArtists",
+    "plot_area_error",
+    "plot_coverage_fraction",
+    "plot_pixel_samples",
+    "plot_samples",
+    "BLOCK_COLORS",
     "COLORS",
     "OKABE_ITO",
     "STYLES",
     "BBoxArtists",
     "BailoutArtists",
+    "BlockArtists",
+    "BlockPathArtists",
     "CentreArtists",
     "ComparisonView",
+    "CounterArtists",
     "CoverageArtists",
+    "EarlyZArtists",
     "EdgeValueArtists",
+    "FilterArtists",
     "FillView",
     "GridArtists",
     "HeatmapArtists",
     "ImageArtists",
     "InterpolationView",
+    "LodArtists",
     "PixelArtists",
     "PlanArtists",
+    "PyramidArtists",
+    "QuadArtists",
     "RasterLineArtists",
     "SplitArtists",
+    "TraversalArtists",
     "TriangleArtists",
     "VisitArtists",
     "abs_error",
     "attribute_image",
     "bailout",
+    "block_mask",
+    "early_z_counts",
     "edge_images",
     "format_plan",
     "plot_attribute",
     "plot_bailout",
     "plot_barycentric",
+    "plot_block_counters",
+    "plot_block_path",
+    "plot_blocks",
     "plot_bbox",
     "plot_coverage",
     "plot_current_pixel",
     "plot_depth",
+    "plot_early_z",
     "plot_edge_values",
     "plot_error_heatmap",
+    "plot_filters",
+    "plot_hierarchy",
     "plot_image",
+    "plot_lod",
     "plot_pixel_centres",
     "plot_pixel_grid",
     "plot_plan",
+    "plot_pyramid",
+    "plot_quads",
     "plot_raster_line",
     "plot_split",
+    "plot_traversal",
     "plot_triangle",
     "plot_visit_order",
     "use_style",

@@ -16,6 +16,7 @@ from matplotlib.transforms import IdentityTransform
 
 from ..core.fill import Fill
 from ..core.trace import FillTrace
+from ..core.validate import as_int, as_size
 from ..pipeline.render_triangles import Frame
 
 
@@ -91,6 +92,8 @@ def pixel_axes(ax, width: int, height: int, *, ticks: bool = True, most: int = 8
     and are labelled with column / row indices (at most ``most`` per axis, at round
     spacings), the x axis on top as in a matrix.
     """
+    width, height = as_size("width", width), as_size("height", height)
+    most = as_int("most", most, minimum=1) if ticks else most
     ax.set_xlim(0, width)
     ax.set_ylim(height, 0)  # y down: row 0 at the top
     ax.set_aspect("equal")
@@ -108,6 +111,7 @@ def pixel_axes(ax, width: int, height: int, *, ticks: bool = True, most: int = 8
 
 def image_extent(width: int, height: int) -> tuple[float, float, float, float]:
     """imshow extent placing pixel (i, j) on [j, j+1] × [i, i+1], row 0 at the top."""
+    width, height = as_size("width", width), as_size("height", height)
     return (0.0, float(width), float(height), 0.0)
 
 

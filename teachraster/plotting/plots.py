@@ -25,6 +25,7 @@ from ..core.fill import Fill
 from ..core.span_tables import SpanTrace
 from ..core.trace import FillTrace, Step
 from ..core.triangle import Triangle
+from ..core.validate import as_int, as_size
 from .common import (
     Artists,
     annotate_near,
@@ -64,6 +65,8 @@ class GridArtists(Artists):
 
 
 def _grid_segments(width: int, height: int) -> list:
+    # Python ints: np.arange(np.uint8(255) + 1) would wrap to an empty grid.
+    width, height = as_size("width", width), as_size("height", height)
     if max(width, height) > GRID_LIMIT:
         return []
     xs, ys = np.arange(width + 1), np.arange(height + 1)
@@ -99,7 +102,10 @@ def plot_pixel_grid(ax, width: int, height: int, *, ticks: bool | int = True) ->
         zorder=1.5,  # above images (zorder 0), below everything else
     )
     ax.add_collection(lines, autolim=False)
-    most = (8 if ticks else 0) if isinstance(ticks, bool) else int(ticks)
+    if isinstance(ticks, bool | np.bool_):
+        most = 8 if ticks else 0
+    else:
+        most = as_int("ticks", ticks, minimum=0)
     pixel_axes(ax, width, height, ticks=most > 0, most=most)
     return GridArtists(lines, most)
 
@@ -120,6 +126,7 @@ class CentreArtists(Artists):
 
 
 def _centres(width, height, coverage):
+    width, height = as_size("width", width), as_size("height", height)
     rows, cols = np.indices((height, width))
     x, y = cols.ravel() + 0.5, rows.ravel() + 0.5
     if coverage is None:

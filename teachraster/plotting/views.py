@@ -46,7 +46,7 @@ from .plots import (
 )
 from .style import COLORS
 
-METHOD_NAMES = {"span": "Span tables", "halfplane": "Half-planes"}
+METHOD_NAMES = {"span": "Span tables", "halfplane": "Half-planes", "tiled": "Tiles"}
 
 
 def _new_figure(figsize, rect):

@@ -5,5 +5,6 @@ Lessons 06 and 07 in code. Nothing here is imported by ``import teachraster``:
 - :mod:`.precision`: cheaper and costlier arithmetic for the same half-plane test;
 - :mod:`.bench`: the accuracy-vs-time study (``python -m teachraster.study.bench``);
 - :mod:`.hardcases`: the catalogue of named hard cases, each with a naive variant;
+- :mod:`.antialiasing`: exact pixel areas, the ground truth of the sample-count study;
 - :mod:`.opengl`: the same triangles through OpenGL (Mesa's llvmpipe), for cross-checks.
 """

@@ -6,6 +6,9 @@ machines without a GPU that is Mesa's llvmpipe, a software rasteriser that, like
 teachraster, snaps vertices to 1/256 px). It reads back float32 render targets: the triangle id
 (``gl_PrimitiveID``), every attribute interpolated both as a GLSL ``smooth`` (perspective-correct)
 and a ``noperspective`` (affine) varying, and the window depth ``gl_FragCoord.z``.
+:func:`gl_texture_lod` draws textured triangles and reads back GLSL
+``textureQueryLod(...)`` (GL's λ from its own 2×2 quads) and the colour a mipmapped filter
+returns, to check quads, derivatives and the choice of mip level (lesson 09).
 
 The core package never imports this module, and importing it does not need moderngl: it is
 imported inside the functions, so :func:`gl_available` can report why OpenGL is missing.
@@ -27,6 +30,11 @@ How the conventions are met
   floating point, so nothing changes except that a fragment on the far plane (depth 1) still
   passes against the cleared value 1.0, as it does in teachraster where an empty pixel has no
   depth at all.
+
+- **Multisampling.** :func:`gl_render_samples` draws into a 4-sample float texture and reads
+  every sample back with ``texelFetch`` on a ``sampler2DMS``; ``gl_SampleMaskIn`` gives GL's
+  own coverage mask per fragment. llvmpipe's positions (``glGetMultisamplefv``) are the
+  Direct3D standard pattern, and with y negated they are our y-down offsets unchanged.
 
 Examples
 --------
@@ -56,7 +64,17 @@ import numpy as np
 
 from ..core.validate import as_size
 
-__all__ = ["GLFrame", "GLRenderer", "gl_available", "gl_render"]
+__all__ = [
+    "GLFrame",
+    "GLRenderer",
+    "GLSampleFrame",
+    "GLTextureFrame",
+    "gl_available",
+    "gl_render",
+    "gl_render_samples",
+    "gl_sample_positions",
+    "gl_texture_lod",
+]
 
 #: Attribute components carried by one varying (a vec4).
 _CHUNK = 4
@@ -71,6 +89,7 @@ _GL_FRAMEBUFFER = 0x8D40
 _GL_DEPTH_ATTACHMENT = 0x8D00
 _GL_DEPTH_COMPONENT32F = 0x8CAC
 _GL_FRAMEBUFFER_COMPLETE = 0x8CD5
+_GL_SAMPLE_POSITION = 0x8E50
 
 # Cached per process: creating an EGL context costs tens of milliseconds.
 _STATE: dict = {"status": None, "ctx": None, "gl": None, "programs": {}}
@@ -180,13 +199,23 @@ class _RawGL:
         self.framebuffer_renderbuffer = fn("glFramebufferRenderbuffer", None, u, u, u, u)
         self.check_framebuffer_status = fn("glCheckFramebufferStatus", u, u)
         self.depth_range = fn("glDepthRange", None, d, d)
+        self.renderbuffer_storage_multisample = fn(
+            "glRenderbufferStorageMultisample", None, u, i, u, i, i
+        )
+        self.get_multisample = fn("glGetMultisamplefv", None, u, u, ctypes.POINTER(ctypes.c_float))
 
-    def float_depth_buffer(self, width: int, height: int) -> int:
-        """Attach a new float32 depth renderbuffer to the bound framebuffer; return its name."""
+    def float_depth_buffer(self, width: int, height: int, samples: int = 0) -> int:
+        """Attach a new float32 depth renderbuffer (``samples`` per pixel when > 0) to the
+        bound framebuffer; return its name."""
         name = ctypes.c_uint(0)
         self.gen_renderbuffers(1, ctypes.byref(name))
         self.bind_renderbuffer(_GL_RENDERBUFFER, name)
-        self.renderbuffer_storage(_GL_RENDERBUFFER, _GL_DEPTH_COMPONENT32F, width, height)
+        if samples:
+            self.renderbuffer_storage_multisample(
+                _GL_RENDERBUFFER, samples, _GL_DEPTH_COMPONENT32F, width, height
+            )
+        else:
+            self.renderbuffer_storage(_GL_RENDERBUFFER, _GL_DEPTH_COMPONENT32F, width, height)
         self.bind_renderbuffer(_GL_RENDERBUFFER, 0)
         self.framebuffer_renderbuffer(
             _GL_FRAMEBUFFER, _GL_DEPTH_ATTACHMENT, _GL_RENDERBUFFER, name.value
@@ -459,3 +488,294 @@ def gl_render(
     """
     with GLRenderer(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull) as gl:
         return gl.render()
+
+
+# -- multisampling -----------------------------------------------------------------------------
+@dataclass(frozen=True)
+class GLSampleFrame:
+    """What OpenGL drew into a multisampled framebuffer, read back sample by sample.
+
+    Attributes
+    ----------
+    sample_triangle_id : (height, width, S) int64
+        Index of the triangle each sample shows (``gl_PrimitiveID`` of the fragment that
+        wrote it), -1 where none did. Row 0 at the top, as everywhere.
+    sample_mask : (height, width, S) bool
+        Bit s of ``gl_SampleMaskIn[0]`` of the fragment that wrote sample s (False where
+        none did): GL's own coverage mask for the fragment.
+    positions : (S, 2) float64
+        The sample positions GL reports (``glGetMultisamplefv(GL_SAMPLE_POSITION, s)``).
+    """
+
+    sample_triangle_id: np.ndarray
+    sample_mask: np.ndarray
+    positions: np.ndarray
+
+
+_MS_DRAW_FS = """#version 400
+layout(location = 0) out vec4 o_id;
+void main() {
+    // the depth range is [0, 1/2] (module docstring); the id and this fragment's mask
+    o_id = vec4(float(gl_PrimitiveID), float(gl_SampleMaskIn[0]), 0.0, 1.0);
+}
+"""
+_MS_RESOLVE_VS = """#version 330
+in vec2 in_corner;
+void main() { gl_Position = vec4(in_corner, 0.0, 1.0); }
+"""
+_MS_RESOLVE_FS = """#version 330
+uniform sampler2DMS samples;
+uniform int sample_index;
+out vec4 o;
+void main() { o = texelFetch(samples, ivec2(gl_FragCoord.xy), sample_index); }
+"""
+
+
+def gl_sample_positions(samples: int = 4) -> np.ndarray:
+    """(S, 2) sample positions of a ``samples``-sample float framebuffer, as GL reports them.
+
+    GL gives them from the pixel's lower-left corner with y up; with clip y negated and no
+    flip on read-back (module docstring) GL's rows are ours, so these are our y-down offsets.
+    """
+    ctx, gl = _context()
+    tex = ctx.texture((4, 4), 4, dtype="f4", samples=samples)
+    fbo = ctx.framebuffer([tex])
+    try:
+        fbo.use()
+        out = np.empty((samples, 2))
+        for s in range(samples):
+            v = (ctypes.c_float * 2)()
+            gl.get_multisample(_GL_SAMPLE_POSITION, s, v)
+            out[s] = v[0], v[1]
+        return out
+    finally:
+        fbo.release()
+        tex.release()
+
+
+def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_test: bool = True,
+                      cull: str | None = None) -> GLSampleFrame:  # fmt: skip
+    """Draw clip-space triangles into an S-sample framebuffer and read every sample back.
+
+    The triangles are drawn as in :func:`gl_render` (clip y negated, float32 depth in
+    [0, 1/2], ``GL_LESS``), into a multisampled float texture; a second pass reads sample s
+    of every pixel with ``texelFetch`` on a ``sampler2DMS`` into a plain float target.
+    """
+    import moderngl
+
+    clip, width, height, _ = _check_inputs(clip, width, height, None, cull)
+    ctx, gl = _context()
+    res, depth_rb = [], None
+    try:
+        tex = ctx.texture((width, height), 4, dtype="f4", samples=samples)
+        res.append(tex)
+        fbo = ctx.framebuffer([tex])
+        res.append(fbo)
+        fbo.use()
+        depth_rb = gl.float_depth_buffer(width, height, samples)
+        fbo.depth_mask = True
+        if "ms_draw" not in _STATE["programs"]:
+            vs, _ = _shaders(0)
+            _STATE["programs"]["ms_draw"] = ctx.program(
+                vertex_shader=vs, fragment_shader=_MS_DRAW_FS
+            )
+            _STATE["programs"]["ms_resolve"] = ctx.program(
+                vertex_shader=_MS_RESOLVE_VS, fragment_shader=_MS_RESOLVE_FS
+            )
+        draw, read = _STATE["programs"]["ms_draw"], _STATE["programs"]["ms_resolve"]
+        pos = ctx.buffer(clip.astype("f4").tobytes())
+        res.append(pos)
+        vao = ctx.vertex_array(draw, [(pos, "4f", "in_pos")])
+        res.append(vao)
+        gl.depth_range(0.0, 0.5)
+        flags = moderngl.NOTHING
+        if depth_test:
+            flags |= moderngl.DEPTH_TEST
+            ctx.depth_func = "<"
+        if cull is not None:
+            flags |= moderngl.CULL_FACE
+            ctx.front_face, ctx.cull_face = "cw", cull
+        ctx.enable_only(flags)
+        fbo.clear(-1.0, 0.0, 0.0, 0.0, depth=1.0)
+        if len(clip):
+            vao.render(moderngl.TRIANGLES, vertices=3 * len(clip))
+        positions = gl_sample_positions(samples)
+        ids, masks = _read_samples(ctx, read, tex, (width, height), samples, res)
+    finally:
+        if depth_rb is not None:
+            gl.delete(depth_rb)
+        for obj in reversed(res):
+            obj.release()
+    bits = masks.astype(np.int64)
+    mask = (bits[..., None] >> np.arange(samples)) & 1
+    covered = ids >= 0
+    return GLSampleFrame(
+        sample_triangle_id=ids,
+        sample_mask=np.stack([mask[..., s, s] for s in range(samples)], axis=-1).astype(bool)
+        & covered,
+        positions=positions,
+    )
+
+
+def _read_samples(ctx, program, tex, size, samples, res):
+    """(H, W, S) ids and masks: one full-screen pass per sample with ``texelFetch``."""
+    import moderngl
+
+    width, height = size
+    corners = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype="f4").tobytes())
+    res.append(corners)
+    vao = ctx.vertex_array(program, [(corners, "2f", "in_corner")])
+    res.append(vao)
+    target = ctx.renderbuffer(size, 4, dtype="f4")
+    res.append(target)
+    out_fbo = ctx.framebuffer([target])
+    res.append(out_fbo)
+    out_fbo.use()
+    ctx.enable_only(moderngl.NOTHING)
+    tex.use(location=0)
+    program["samples"] = 0
+    ids = np.empty((height, width, samples), dtype=np.int64)
+    masks = np.empty((height, width, samples))
+    buf = np.empty((height, width, 4), dtype="f4")
+    for s in range(samples):
+        program["sample_index"] = s
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        out_fbo.read_into(buf, components=4, dtype="f4")  # GL row 0 is ours: no flip
+        ids[..., s] = buf[..., 0].astype(np.int64)
+        masks[..., s] = buf[..., 1]
+    return ids, masks
+
+
+# -- texture level of detail ------------------------------------------------------------------
+#: Minifying filters :func:`gl_texture_lod` can ask GL for, by teachraster's names.
+_GL_MIN_FILTERS = {
+    "nearest_mipmap_nearest": "NEAREST_MIPMAP_NEAREST",
+    "linear_mipmap_nearest": "LINEAR_MIPMAP_NEAREST",
+    "nearest_mipmap_linear": "NEAREST_MIPMAP_LINEAR",
+    "trilinear": "LINEAR_MIPMAP_LINEAR",
+}
+
+_LOD_VS = """#version 400
+in vec4 in_pos;
+in vec2 in_uv;
+smooth out vec2 uv;
+void main() {
+    gl_Position = vec4(in_pos.x, -in_pos.y, in_pos.z, in_pos.w);  // y negated, as above
+    uv = in_uv;
+}
+"""
+
+_LOD_FS = """#version 400
+uniform sampler2D tex;
+smooth in vec2 uv;
+layout(location = 0) out vec4 o_lod;
+layout(location = 1) out vec4 o_color;
+void main() {
+    vec2 q = textureQueryLod(tex, uv);  // x: the level(s) accessed, y: the computed lambda
+    o_lod = vec4(float(gl_PrimitiveID), q.x, q.y, 1.0);
+    o_color = texture(tex, uv);
+}
+"""
+
+
+@dataclass(frozen=True)
+class GLTextureFrame:
+    """What OpenGL computed for a textured draw (row 0 at the top).
+
+    Attributes
+    ----------
+    triangle_id : (height, width) int64
+        ``gl_PrimitiveID``, -1 where nothing was drawn.
+    lod : (height, width) float64
+        ``textureQueryLod(tex, uv).y``: GL's λ relative to the base level, NaN where uncovered.
+    level : (height, width) float64
+        ``textureQueryLod(tex, uv).x``: the (clamped) level GL would access.
+    color : (height, width, 4) float64
+        ``texture(tex, uv)`` with the asked minifying filter (RGBA; channels the texture did
+        not have are GL's defaults).
+    """
+
+    triangle_id: np.ndarray
+    lod: np.ndarray
+    level: np.ndarray
+    color: np.ndarray
+
+
+def gl_texture_lod(
+    clip, uv, width: int, height: int, levels, *, filter: str = "nearest_mipmap_nearest"
+) -> GLTextureFrame:
+    """Draw textured clip-space triangles with OpenGL and read back λ and the sampled colour.
+
+    The mip levels are uploaded as given (``levels[0]`` first, our row 0 as GL's ``t = 0``
+    so GL's (s, t) is teachraster's (u, v)), wrap ``REPEAT``, magnification ``NEAREST``. GL
+    computes λ from its own 2×2 quads: with y negated its quads are aligned with ours, so this
+    checks :func:`teachraster.render`'s derivatives and :func:`teachraster.mip_level`.
+
+    Parameters
+    ----------
+    clip : (N, 3, 4) array-like
+        Clip-space vertices, as in :func:`gl_render`.
+    uv : (N, 3, 2) array-like
+        Texture coordinates per vertex (a ``smooth`` varying).
+    width, height : int
+        Image size.
+    levels : list of (h, w) or (h, w, C) arrays, C <= 4
+        The full pyramid (e.g. ``tr.mipmap(texture)``), down to 1 × 1.
+    filter : str
+        One of ``nearest_mipmap_nearest``, ``linear_mipmap_nearest``,
+        ``nearest_mipmap_linear``, ``trilinear``.
+    """
+    import moderngl
+
+    clip, width, height, uv = _check_inputs(clip, width, height, uv, None)
+    if uv.shape[2] != 2:
+        raise ValueError(f"uv must have shape (N, 3, 2), got {uv.shape}")
+    if filter not in _GL_MIN_FILTERS:
+        raise ValueError(f"filter must be one of {tuple(_GL_MIN_FILTERS)}; got {filter!r}")
+    ctx, _ = _context()
+    levels = [np.asarray(lv, dtype=np.float64) for lv in levels]
+    levels = [lv[..., None] if lv.ndim == 2 else lv for lv in levels]
+    comps = levels[0].shape[2]
+    if "lod" not in _STATE["programs"]:
+        _STATE["programs"]["lod"] = ctx.program(vertex_shader=_LOD_VS, fragment_shader=_LOD_FS)
+    prog = _STATE["programs"]["lod"]
+    res = []
+    try:
+        h0, w0 = levels[0].shape[:2]
+        tex = ctx.texture((w0, h0), comps, levels[0].astype("f4").tobytes(), dtype="f4")
+        res.append(tex)
+        tex.build_mipmaps()  # allocates every level; overwritten with ours below
+        for i, lv in enumerate(levels[1:], start=1):
+            tex.write(np.ascontiguousarray(lv, dtype="f4").tobytes(), level=i)
+        tex.filter = (getattr(moderngl, _GL_MIN_FILTERS[filter]), moderngl.NEAREST)
+        tex.repeat_x = tex.repeat_y = True
+        pos = ctx.buffer(clip.astype("f4").tobytes())
+        tc = ctx.buffer(uv.astype("f4").tobytes())
+        res += [pos, tc]
+        vao = ctx.vertex_array(prog, [(pos, "4f", "in_pos"), (tc, "2f", "in_uv")])
+        res.append(vao)
+        targets = [ctx.renderbuffer((width, height), 4, dtype="f4") for _ in range(2)]
+        res += targets
+        fbo = ctx.framebuffer(targets)
+        res.append(fbo)
+        fbo.use()
+        ctx.enable_only(moderngl.NOTHING)
+        fbo.clear(-1.0, -1.0, -1.0, -1.0)
+        tex.use(0)
+        prog["tex"].value = 0
+        vao.render(moderngl.TRIANGLES, vertices=3 * len(clip))
+        out = []
+        for attachment in range(2):
+            buf = np.empty((height, width, 4), dtype="f4")
+            fbo.read_into(buf, components=4, attachment=attachment, dtype="f4")
+            out.append(buf.astype(np.float64))
+    finally:
+        for obj in reversed(res):
+            obj.release()
+    ids = out[0][..., 0].astype(np.int64)
+    uncovered = ids < 0
+    lod, level, color = out[0][..., 2], out[0][..., 1], out[1]
+    for arr in (lod, level):
+        arr[uncovered] = np.nan
+    color[uncovered] = np.nan
+    return GLTextureFrame(triangle_id=ids, lod=lod, level=level, color=color)

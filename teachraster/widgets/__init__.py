@@ -13,9 +13,16 @@ Widgets
 - :class:`TriangleEditor` -- move each vertex (x, y) and change its w; the fill, the split at
   u4 and the affine-vs-perspective error heatmap follow. With ipympl the vertices can also be
   dragged with the mouse.
+- :class:`TileExplorer` -- the block hierarchy of a tiled fill, level by level or block by
+  block in a traversal order, with block sizes and traversal as menus and the counters.
 - :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
   perspective-correct texture coordinates side by side, with the error in texels; a tilt
   slider.
+- :class:`PixelInspector` -- choose a pixel and a sample pattern: every sample of the image,
+  and the pixel magnified with the triangle owning each sample and its edge values.
+- :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
+  chooser: the filtered image, the mip level per pixel and the error against the true
+  footprint average (lesson 09).
 
 Figures
 -------
@@ -37,14 +44,20 @@ Example
 
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
+from .filter_explorer import FilterExplorer
+from .inspector import PixelInspector
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer
+from .tiles import TileExplorer
 
 __all__ = [
     "BACKENDS",
     "FigureDisplay",
+    "FilterExplorer",
     "FillPlayer",
+    "PixelInspector",
     "TexturedPlaneViewer",
+    "TileExplorer",
     "TriangleEditor",
     "resolve_backend",
 ]

@@ -84,3 +84,24 @@ def close_tree(widget) -> None:
     for child in getattr(widget, "children", ()):
         close_tree(child)
     widget.close()
+
+
+#: The sample patterns the widgets offer: label -> (n, kind) of ``tr.sample_pattern``.
+SAMPLE_PATTERNS = {
+    "1 (centre)": (1, "standard"),
+    "2 standard": (2, "standard"),
+    "4 standard (rotated grid)": (4, "standard"),
+    "4 ordered grid": (4, "grid"),
+    "8 standard": (8, "standard"),
+    "16 standard": (16, "standard"),
+    "16 jittered": (16, "jittered"),
+    "16 random": (16, "random"),
+}
+
+
+def pattern_samples(label: str):
+    """``samples=`` for a chooser label: an int for the standard patterns, else offsets."""
+    from ..core.sample_patterns import sample_pattern
+
+    n, kind = SAMPLE_PATTERNS[label]
+    return n if kind == "standard" else sample_pattern(n, kind)

@@ -11,6 +11,7 @@ import numpy as np
 from ..core.fill import rasterize
 from ..core.span_tables import split_point
 from ..core.triangle import Triangle
+from ..core.validate import as_size
 from ..plotting import FillView, InterpolationView
 from .common import Holdable, close_tree, fill_axes, labelled, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
@@ -90,7 +91,7 @@ class TriangleEditor(Holdable):
         attrs = dict(tri.attrs)
         attrs.setdefault(attribute, [0.0, 1.0, 0.0])
         self.tri = Triangle(tri.xy, w=tri.w, z=tri.z, attrs=attrs)
-        self.width, self.height = width, height
+        self.width, self.height = as_size("width", width), as_size("height", height)
         self.attribute = attribute
         self.backend = resolve_backend(backend)
         self._dragging: int | None = None

@@ -8,8 +8,19 @@ import ipywidgets as widgets
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
-from ..plotting import COLORS, FillView, InterpolationView
-from .common import Holdable, close_tree, fill_axes, labelled, style_context, title_html
+from ..core.validate import as_int, as_size
+from ..plotting import COLORS, FillView, InterpolationView, plot_samples
+from ..plotting.blitting import STILL, LayeredBlit
+from .common import (
+    SAMPLE_PATTERNS,
+    Holdable,
+    close_tree,
+    fill_axes,
+    labelled,
+    pattern_samples,
+    style_context,
+    title_html,
+)
 from .display import (
     COMPARISON_DPI,
     FigureDisplay,
@@ -19,7 +30,7 @@ from .display import (
     resolve_backend,
 )
 
-METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane")]
+METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane"), ("tiles", "tiled")]
 INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspective")]
 
 
@@ -43,8 +54,9 @@ class FillPlayer(Holdable):
         The triangle to fill (screen space, pixels).
     width, height : int
         Image size in pixels (a 32 × 32 grid or smaller reads best).
-    method : {"span", "halfplane"}
-        Span tables or half-planes, as for :func:`teachraster.rasterize`.
+    method : {"span", "halfplane", "tiled"}
+        Span tables, half-planes or tiles (one step per classified block), as for
+        :func:`teachraster.rasterize`.
     interpolation : {"perspective", "affine"}
         How attributes are interpolated.
     attribute : str, optional
@@ -59,12 +71,17 @@ class FillPlayer(Holdable):
         ``"auto"`` picks ipympl when it is matplotlib's backend.
     style : str, optional
         Plotting style for this widget's figures (``"classroom"``); default the current one.
+    samples : str
+        Sample pattern, a key of :data:`~teachraster.widgets.common.SAMPLE_PATTERNS`. With
+        more than one sample the steps still follow the pixel centres, and every sample of
+        the finished fill is drawn on top (filled where covered): what MSAA adds.
 
     Attributes
     ----------
     widget : ipywidgets.VBox
         Everything, ready to display (the player also displays itself).
-    play, slider, speed, prev, next, first, last, method, interpolation, caption, step_info
+    play, slider, speed, prev, next, first, last, method, interpolation, samples, caption,
+    step_info
         The controls: ``Play`` (jslinked to ``slider``: it runs in the browser), the step
         ``IntSlider``, the Play interval in ms, the step buttons, the two
         ``ToggleButtons``, the ``HTML`` caption of the current step and the ``Label`` by the
@@ -101,27 +118,50 @@ class FillPlayer(Holdable):
         interval: int = 400,
         backend: str = "auto",
         style: str | None = None,
+        samples: str = "1 (centre)",
     ) -> None:
         if not isinstance(tri, Triangle):
             raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
-        self.tri, self.width, self.height = tri, width, height
+        self.tri = tri
+        self.width, self.height = as_size("width", width), as_size("height", height)
+        interval = as_int("interval", interval, minimum=1)
         self.backend = resolve_backend(backend)
-        self._fills: dict[tuple[str, str], object] = {}
+        self._fills: dict[tuple[str, str, str], object] = {}
+        self.samples = widgets.Dropdown(options=list(SAMPLE_PATTERNS), value=samples,
+                                        layout=widgets.Layout(width="220px"))  # fmt: skip
         self.fill = self._rasterize(method, interpolation)
         step = self.trace.index(step)
         with style_context(style):
             self._make_figures(attribute, step, interpolation)
+            self.sample_dots = None
+            self._show_samples()
         self._make_controls(step, interval, method, interpolation)
         self.widget = self._layout()
 
     # -- building ---------------------------------------------------------------------------
     def _rasterize(self, method: str, interpolation: str):
         """The traced fill for these options (each made once: toggling back costs nothing)."""
-        key = (method, interpolation)
+        key = (method, interpolation, self.samples.value)
         if key not in self._fills:
             self._fills[key] = rasterize(self.tri, self.width, self.height, method=method,
-                                         interpolation=interpolation, trace=True)  # fmt: skip
+                                         interpolation=interpolation, trace=True,
+                                         samples=pattern_samples(self.samples.value))  # fmt: skip
         return self._fills[key]
+
+    def _show_samples(self) -> None:
+        """Every sample of the fill on top of the steps (hidden for one sample per pixel)."""
+        if self.fill.sample_coverage is not None:
+            if self.sample_dots is None:
+                self.sample_dots = plot_samples(self.view.ax, self.fill, fraction=False)
+            else:
+                self.sample_dots.update(self.fill)
+        if self.sample_dots is not None:
+            self.sample_dots.set_visible(self.fill.sample_coverage is not None)
+            # a still layer above the pixels the steps fill (the view's plan is new after
+            # every set_fill, so the layer is added again each time)
+            blit = self.view.blit
+            self.view.blit = LayeredBlit(blit.fig, [*blit.plan, (STILL, list(self.sample_dots))])
+        self.view.blit.invalidate()
 
     def _make_figures(self, attribute, step: int, interpolation: str) -> None:
         self.fig = new_figure((8, 6), self.backend)
@@ -180,6 +220,7 @@ class FillPlayer(Holdable):
         self.slider.observe(self._on_step, "value")
         self.method.observe(self._on_fill_options, "value")
         self.interpolation.observe(self._on_fill_options, "value")
+        self.samples.observe(self._on_fill_options, "value")
 
     def _make_buttons(self) -> None:
         small = widgets.Layout(width="44px")
@@ -206,7 +247,8 @@ class FillPlayer(Holdable):
             widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last,
                           self.step_info]),
             widgets.HBox([labelled("method", self.method),
-                          labelled("interpolation", self.interpolation)]),
+                          labelled("interpolation", self.interpolation),
+                          labelled("samples", self.samples)]),
             self.speed,
             self.caption,
             *figures,
@@ -258,6 +300,7 @@ class FillPlayer(Holdable):
         # The view decides the step (a finished fill stays finished, else the same index);
         # the slider follows it.
         step = self.view.set_fill(self.fill, draw=False)
+        self._show_samples()
         last = len(self.trace) - 1
         with self._holding():
             # widen before moving, narrow after, so the value is never out of range

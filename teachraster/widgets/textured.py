@@ -7,6 +7,7 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
+from ..core.validate import as_size
 from ..pipeline.camera import Camera
 from ..pipeline.render_scenes import render
 from ..pipeline.texture import checkerboard, sample, texel_error
@@ -120,6 +121,7 @@ class TexturedPlaneViewer:
         backend: str = "auto",
         style: str | None = None,
     ) -> None:
+        width, height = as_size("width", width), as_size("height", height)
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
         self.texture = checkerboard(checks, texels)

@@ -7,6 +7,9 @@ from fractions import Fraction
 
 import numpy as np
 
+from ...core.snapping import check_bits
+from ...core.validate import as_size
+
 # -- exact coverage (the conventions' reference) ----------------------------------------------
 #: Bound on the rounding error of a float64 orient2d, relative to |t1| + |t2|. Shewchuk's
 #: bound is (3 + 16 eps) eps ~ 3.3e-16 (rounded differences included); 1e-15 is 3x that.
@@ -28,6 +31,8 @@ def exact_coverage(xy, width: int, height: int, bits: int | None = 8, origin=(0,
     (height, width) bool
         For the window of pixels ``origin + (j, i)``.
     """
+    width, height = as_size("width", width), as_size("height", height)
+    bits = check_bits(bits)
     ox, oy = (int(v) for v in origin)
     xy = np.asarray(xy, dtype=np.float64)
     if bits is None:

@@ -8,6 +8,7 @@ import numpy as np
 
 from ...core.fill import rasterize
 from ...core.triangle import Triangle
+from ...core.validate import as_int, as_size
 from ...pipeline.camera import perspective
 from ...pipeline.depth import linear_depth
 from ...pipeline.render_scenes import render
@@ -45,6 +46,7 @@ def floor_quad(size: int, roll: float = 25.0):
     -------
     xy (2, 3, 2), w (2, 3), uv (2, 3, 2)
     """
+    size = as_size("size", size)
     f = c = size / 2
     corners = np.array([[-4.0, 0.6], [4.0, 0.6], [4.0, 60.0], [-4.0, 60.0]])  # (X, Z)
     uv = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
@@ -113,6 +115,7 @@ def bench_interpolation(cfg: dict, repeat: int, progress: Progress) -> list[dict
 def random_triangles(size: int, seed: int = 6) -> np.ndarray:
     """Fixed triangles near the origin: 12 with arbitrary float vertices, 12 on the half-pixel
     grid (edges through pixel centres and corners: ties everywhere)."""
+    size, seed = as_size("size", size), as_int("seed", seed)
     rng = np.random.default_rng(seed)
     floats = rng.uniform(-0.1 * size, 1.1 * size, size=(12, 3, 2))
     ties = rng.integers(0, 2 * size, size=(12, 3, 2)) / 2.0
@@ -123,6 +126,8 @@ def jittered_mesh(size: int, cells: int = 4, seed: int = 3) -> np.ndarray:
     """A watertight mesh filling [1, size - 1]²: a grid of ``cells`` x ``cells`` quads with
     randomly moved inner vertices (border vertices slide along the border only), each quad
     split along alternating diagonals. Big triangles: long rows for stepping to drift on."""
+    size, cells = as_size("size", size), as_size("cells", cells)
+    seed = as_int("seed", seed)
     rng = np.random.default_rng(seed)
     step = (size - 2) / cells
     g = np.stack(np.meshgrid(np.arange(cells + 1), np.arange(cells + 1)), -1) * step

@@ -7,6 +7,7 @@ import sys
 import time
 from collections.abc import Callable
 
+from ...core.validate import as_size
 from .settings import ERROR_MEASURE
 
 
@@ -19,6 +20,7 @@ def time_interleaved(fns: list[Callable[[], object]], repeat: int) -> list[float
     ratios between variants stay fair on a busy machine. Two untimed warm-up rounds come
     first.
     """
+    repeat = as_size("repeat", repeat)
     for _ in range(2):
         for fn in fns:
             fn()

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...core.plane_equations import plane_equation
+from ...core.validate import as_size
 
 
 # -- naive helpers (numpy only; deliberately what the core does *not* do) -------------------
@@ -75,6 +76,7 @@ def naive_coverage(
 
 def naive_counts(triangles, width: int, height: int, **kwargs) -> np.ndarray:
     """Sum of :func:`naive_coverage` over triangles."""
+    width, height = as_size("width", width), as_size("height", height)
     counts = np.zeros((height, width), dtype=np.int64)
     for xy in triangles:
         counts += naive_coverage(xy, width, height, **kwargs)
@@ -83,6 +85,7 @@ def naive_counts(triangles, width: int, height: int, **kwargs) -> np.ndarray:
 
 def naive_window(clip, width: int, height: int) -> np.ndarray:
     """Divide by w *before* clipping: a vertex behind the eye is mirrored, w = 0 gives inf/NaN."""
+    width, height = as_size("width", width), as_size("height", height)
     c = np.asarray(clip, dtype=np.float64)
     with np.errstate(divide="ignore", invalid="ignore"):
         ndc = c[..., :3] / c[..., 3:4]
@@ -93,6 +96,7 @@ def naive_window(clip, width: int, height: int) -> np.ndarray:
 
 def naive_stepped32(xy, f, x0: float, y0: float, ncols: int, nrows: int) -> np.ndarray:
     """The plane-equation post's (*Triangle Rasterisation II - Interpolation*) incremental stepping (start, then ``+= dx`` per pixel) in float32."""
+    ncols, nrows = as_size("ncols", ncols), as_size("nrows", nrows)
     plane = plane_equation(xy, f)
     start = np.float32(plane(x0, y0))
     dx, dy = np.float32(plane.dx), np.float32(plane.dy)
@@ -105,6 +109,7 @@ def naive_stepped32(xy, f, x0: float, y0: float, ncols: int, nrows: int) -> np.n
 
 def naive_affine(xy, f, width: int, height: int) -> np.ndarray:
     """Screen-space (affine) interpolation everywhere in the image, ignoring w."""
+    width, height = as_size("width", width), as_size("height", height)
     v = np.asarray(xy, dtype=np.float64)
     ys, xs = np.mgrid[0:height, 0:width] + 0.5
     (ax, ay), (bx, by), (cx, cy) = v

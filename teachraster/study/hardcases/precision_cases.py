@@ -18,6 +18,7 @@ from ...core.interpolation import blend
 from ...core.plane_equations import attribute_plane, plane_equation
 from ...core.snapping import SUBPIXEL_BITS, snap
 from ...core.triangle import Triangle
+from ...core.validate import as_int, as_size
 from .case import Fills, HardCase, Naive, add_case, frozen_inputs
 from .checks import (
     check_finite,
@@ -54,6 +55,7 @@ def fill_window(xy, f, row0: int, col0: int, size: int, method: str):
     that is gigabytes, so this runs the same core steps (snap and set up edges, bounding box,
     fill, exact barycentrics, blend) on the window only.
     """
+    row0, col0, size = as_int("row0", row0), as_int("col0", col0), as_size("size", size)
     setup = setup_edges(np.asarray(xy, dtype=np.float64), SUBPIXEL_BITS)
     box = pixel_bbox(setup, col0 + size, row0 + size)
     assert box.row0 >= row0 and box.col0 >= col0, "triangle leaves the window"

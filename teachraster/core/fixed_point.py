@@ -1,0 +1,190 @@
+"""Fixed-point edge functions: how many bits the stepping needs, and what happens without them.
+
+On the snapped grid every coordinate is an integer number of internal units (``2**(s + 1)``
+per pixel for ``s`` sub-pixel bits: the extra bit puts pixel centres on the grid too). An
+edge function is a difference of two products of coordinate differences::
+
+    E = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x)
+
+If every difference that enters is at most ``L`` pixels (the *extent*: the triangle's
+bounding box together with the block pixels the walker evaluates, or the whole guard band
+when any vertex may lie anywhere in it), then in units ``|Δ| <= L·2**(s+1) < 2**d`` with
+``d = bit_length(L·2**(s+1))``, each product is below ``2**(2d)``, their difference below
+``2**(2d+1)``, and a signed register needs ``2d + 2`` bits. Stepping only adds increments
+between values that are themselves edge values inside the extent, so it needs no more.
+
+Mesa's llvmpipe makes the same count (``MAX_FIXED_LENGTH32`` in ``lp_rast.h``): with 8
+sub-pixel bits a triangle whose box spans at most 128 px is rasterised in 32-bit
+integers, any larger one in 64-bit. teachraster steps in int64: its coordinates stay
+below ``2**30`` units (:data:`.snapping.UNIT_LIMIT`), a guard band of ±2**21 px with 8 bits,
+so ``d <= 31`` and 64 bits suffice for every triangle it accepts.
+
+>>> budget = bit_budget(1024, subpixel_bits=8, int_bits=32)
+>>> budget.needed, budget.fits
+(42, False)
+>>> max_extent(8, 32), max_extent(8, 64)
+(63, 4194303)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import tiles
+from .bbox import pixel_bbox
+from .edges import setup_edges
+from .snapping import SUBPIXEL_BITS, check_bits
+from .triangle import Triangle
+from .validate import as_int, as_size, check_choice
+
+#: Register widths the narrow walk can use (numpy's signed integer types).
+INT_TYPES = {16: np.int16, 32: np.int32, 64: np.int64}
+
+
+@dataclass(frozen=True)
+class BitBudget:
+    """The integer width an edge-function walk needs, term by term.
+
+    Attributes
+    ----------
+    extent_px : int
+        Largest coordinate difference that enters, in pixels.
+    subpixel_bits, int_bits : int
+        Snapping precision and register width.
+    units_per_pixel : int
+        ``2**(subpixel_bits + 1)``.
+    delta_bits : int
+        Magnitude bits of a coordinate difference (``|Δ| < 2**delta_bits``).
+    product_bits, edge_bits : int
+        Magnitude bits of one product and of E (a difference of two products).
+    needed : int
+        ``edge_bits`` plus the sign bit.
+    """
+
+    extent_px: int
+    subpixel_bits: int
+    int_bits: int
+    units_per_pixel: int
+    delta_bits: int
+    product_bits: int
+    edge_bits: int
+    needed: int
+
+    @property
+    def fits(self) -> bool:
+        """True when every edge value fits a signed ``int_bits`` register."""
+        return self.needed <= self.int_bits
+
+    @property
+    def headroom(self) -> int:
+        """Spare bits (negative: bits missing)."""
+        return self.int_bits - self.needed
+
+    def lines(self) -> list[str]:
+        """The count in words, one line per term."""
+        u = self.units_per_pixel
+        verdict = (
+            f"fits int{self.int_bits} with {self.headroom} bits to spare"
+            if self.fits
+            else f"does NOT fit int{self.int_bits}: {-self.headroom} bits short, values wrap"
+        )
+        return [
+            f"coordinates: {self.subpixel_bits} sub-pixel bits + 1 for pixel centres = {u} "
+            "units per pixel",
+            f"differences: up to {self.extent_px} px = {self.extent_px * u} units "
+            f"< 2^{self.delta_bits}",
+            f"products of two differences: < 2^{self.product_bits}",
+            f"E = difference of two products: < 2^{self.edge_bits}, plus a sign bit = "
+            f"{self.needed} bits",
+            f"{self.needed} bits needed: {verdict}",
+        ]
+
+
+def bit_budget(extent_px, subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64) -> BitBudget:
+    """The bits edge functions need when coordinate differences reach ``extent_px`` pixels."""
+    extent = as_int("extent_px", extent_px, minimum=1)
+    bits = check_bits(subpixel_bits)
+    if bits is None:
+        raise ValueError("subpixel_bits: a fixed-point budget needs a number of bits, got None")
+    width = as_int("int_bits", int_bits, minimum=2)
+    unit = 2 ** (bits + 1)
+    delta = (extent * unit).bit_length()
+    return BitBudget(extent, bits, width, unit, delta, 2 * delta, 2 * delta + 1, 2 * delta + 2)
+
+
+def max_extent(subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64) -> int:
+    """The largest extent (px) whose edge values fit a signed ``int_bits`` register."""
+    bits = check_bits(subpixel_bits)
+    if bits is None:
+        raise ValueError("subpixel_bits: a fixed-point budget needs a number of bits, got None")
+    width = as_int("int_bits", int_bits, minimum=4)
+    delta = (width - 2) // 2  # 2 * delta + 2 <= width
+    return (2**delta - 1) // 2 ** (bits + 1)
+
+
+def fill_extent(xy, width: int, height: int, subpixel_bits=SUBPIXEL_BITS, block_sizes=None) -> int:
+    """Extent (px) of a tiled fill: the vertices and every pixel centre the walk evaluates.
+
+    The walk evaluates E at pixel centres of the top-level blocks over the bounding box, so
+    their pixels count as well as the triangle's own box.
+    """
+    sizes = tiles.check_block_sizes(tiles.BLOCK_SIZES if block_sizes is None else block_sizes)
+    setup = setup_edges(np.asarray(xy, dtype=np.float64), check_bits(subpixel_bits))
+    box = pixel_bbox(setup, as_size("width", width), as_size("height", height))
+    px = setup.p.astype(np.float64) / float(setup.unit)
+    lo, hi = px.min(axis=0), px.max(axis=0)
+    if box.size:
+        s = sizes[0]
+        lo = np.minimum(lo, [box.col0 // s * s, box.row0 // s * s])
+        hi = np.maximum(hi, [((box.col1 - 1) // s + 1) * s, ((box.row1 - 1) // s + 1) * s])
+    return max(1, int(np.ceil((hi - lo).max())))
+
+
+@dataclass(frozen=True)
+class NarrowFill:
+    """A tiled walk in a narrow register next to the exact one (:func:`narrow_fill`)."""
+
+    coverage: np.ndarray  # (H, W) bool, stepped in int_bits
+    exact: np.ndarray  # (H, W) bool, stepped in int64 (equal to the half-plane coverage)
+    budget: BitBudget
+
+    @property
+    def wrong(self) -> np.ndarray:
+        """(H, W) bool: pixels the overflow got wrong."""
+        return self.coverage != self.exact
+
+
+def narrow_fill(
+    tri: Triangle,
+    width: int,
+    height: int,
+    *,
+    int_bits: int = 32,
+    subpixel_bits: int = SUBPIXEL_BITS,
+    block_sizes=tiles.BLOCK_SIZES,
+) -> NarrowFill:
+    """Run the tiled walk with ``int_bits``-bit edge registers, and the exact walk beside it.
+
+    When :func:`bit_budget` says the extent does not fit, the stepped values wrap around and
+    whole blocks are accepted or rejected wrongly: the overflow demonstration.
+    """
+    if not isinstance(tri, Triangle):
+        raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
+    check_choice("int_bits", int_bits, tuple(INT_TYPES))
+    width, height = as_size("width", width), as_size("height", height)
+    bits = check_bits(subpixel_bits)
+    if bits is None:
+        raise ValueError("subpixel_bits: fixed-point stepping needs a number of bits, got None")
+    setup = setup_edges(tri.xy, bits)
+    box = pixel_bbox(setup, width, height)
+    out = {}
+    for name, dtype in (("narrow", INT_TYPES[int_bits]), ("exact", None)):
+        local, _ = tiles.fill(
+            setup, box, False, block_sizes=block_sizes, image=(height, width), dtype=dtype
+        )
+        out[name] = np.zeros((height, width), dtype=bool)
+        out[name][box.row0 : box.row1, box.col0 : box.col1] = local
+    extent = fill_extent(tri.xy, width, height, bits, block_sizes)
+    return NarrowFill(out["narrow"], out["exact"], bit_budget(extent, bits, int_bits))

@@ -1,0 +1,254 @@
+"""The record of a tiled fill: every classified block, its counters, visit orders, captions.
+
+Plain arrays and small frozen dataclasses, as every trace (see :mod:`.trace`); the walker
+that fills them in is :mod:`.tiles`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .bbox import BBox
+from .traversal import TRAVERSALS, traversal_rank
+from .validate import as_int, check_choice
+
+#: llvmpipe's block sizes, largest first.
+BLOCK_SIZES = (64, 16, 4)
+#: Block kinds, by their code in :attr:`TileTrace.kind_code`.
+KINDS = ("rejected", "accepted", "partial")
+REJECTED, ACCEPTED, PARTIAL = 0, 1, 2
+
+
+def check_block_sizes(block_sizes) -> tuple[int, ...]:
+    """``block_sizes`` as a tuple of positive ints, each dividing the one before.
+
+    >>> check_block_sizes([64, 16, 4])
+    (64, 16, 4)
+    >>> check_block_sizes((8, 3))
+    Traceback (most recent call last):
+    ...
+    ValueError: block_sizes: each size must divide the one before, got (8, 3)
+    """
+    if isinstance(block_sizes, str | bytes) or not hasattr(block_sizes, "__iter__"):
+        raise TypeError(f"block_sizes must be a sequence of ints, got {block_sizes!r}")
+    sizes = tuple(as_int("block_sizes", s, minimum=1) for s in block_sizes)
+    if not sizes:
+        raise ValueError("block_sizes must hold at least one size, got ()")
+    if any(a % b or a == b for a, b in zip(sizes, sizes[1:])):
+        raise ValueError(
+            f"block_sizes: each size must divide the one before, got {tuple(block_sizes)}"
+        )
+    return sizes
+
+
+@dataclass(frozen=True)
+class BlockCounters:
+    """llvmpipe-style counters (``nr_empty_64``, ``nr_fully_covered_16``, ...).
+
+    ``empty``, ``full``, ``partial`` hold one count per block size (largest first);
+    ``pixel_tests`` counts the pixel centres tested one by one (those of partial blocks of
+    the smallest size, inside the image), ``non_empty`` the smallest partial blocks with at
+    least one covered pixel (llvmpipe's ``nr_non_empty_4``) and ``pixels_accepted`` the
+    pixels filled by accepted blocks without any test.
+    """
+
+    sizes: tuple[int, ...]
+    empty: tuple[int, ...]
+    full: tuple[int, ...]
+    partial: tuple[int, ...]
+    pixel_tests: int
+    non_empty: int
+    pixels_accepted: int
+
+    @property
+    def blocks(self) -> int:
+        """Blocks classified, at all sizes."""
+        return sum(self.empty) + sum(self.full) + sum(self.partial)
+
+    def table(self) -> list[tuple[str, int, int, int]]:
+        """Rows ``(size label, empty, full, partial)``, largest size first."""
+        return [
+            (f"{s}×{s}", e, f, p)
+            for s, e, f, p in zip(self.sizes, self.empty, self.full, self.partial)
+        ]
+
+    def summary(self) -> str:
+        """One line, e.g. ``64×64: 2 empty / 1 full / 3 partial; ...; 96 pixel tests``."""
+        parts = [f"{lab}: {e} empty / {f} full / {p} partial" for lab, e, f, p in self.table()]
+        return "; ".join(parts) + f"; {self.pixel_tests} pixel tests"
+
+
+@dataclass(frozen=True)
+class TileTrace:
+    """What the tiled fill did: every classified block, in visit order (depth first).
+
+    Siblings (the top-level blocks over the bounding box, the children of a partial block)
+    are visited in scanline order; :meth:`visit_order` gives the other traversals.
+
+    Attributes
+    ----------
+    block_sizes : tuple of int
+        Block sizes, largest first.
+    size, row, col : (n,) int
+        Size of each block and its top-left pixel (image indices).
+    kind_code : (n,) int8
+        0 rejected, 1 accepted, 2 partial (see :attr:`kind`).
+    level : (n,) int8
+        Index of the block's size in ``block_sizes``.
+    parent : (n,) int64
+        Index (in these arrays) of the partial block it was split from, -1 at the top.
+    extent : (n, 2) int
+        Rows and columns of the block inside the image (smaller at the image border).
+    e_max, e_min : (n, 3) int64 or float64
+        Each edge's value at the block's largest and smallest corner (internal units²):
+        the values the reject and accept decisions were taken on.
+    covered : (n,) int
+        Covered pixels inside each block.
+    rejected_by : (n,) int8
+        Position (in test order) of the edge that rejected the block, -1 if not rejected.
+    crossing : (n, 3) bool
+        Edges that include one extreme corner and exclude the other (they cross a
+        block that no edge rejects: what makes it partial).
+    sibling : (n, 2) int
+        Row and column of each block in the grid of its siblings.
+    grids : tuple of (rows, cols)
+        Shape of the sibling grid at each level: the top-level blocks over the bounding
+        box, then q × q children (q = ratio of consecutive sizes).
+    counters : BlockCounters
+        Counted by the walker as it classified.
+    px2_per_unit2 : float
+        Converts ``e_max``/``e_min`` to px².
+    """
+
+    block_sizes: tuple[int, ...]
+    size: np.ndarray
+    row: np.ndarray
+    col: np.ndarray
+    kind_code: np.ndarray
+    level: np.ndarray
+    parent: np.ndarray
+    extent: np.ndarray
+    e_max: np.ndarray
+    e_min: np.ndarray
+    covered: np.ndarray
+    counters: BlockCounters
+    px2_per_unit2: float
+    rejected_by: np.ndarray
+    crossing: np.ndarray
+    sibling: np.ndarray
+    grids: tuple[tuple[int, int], ...]
+
+    def __len__(self) -> int:
+        return len(self.size)
+
+    @property
+    def kind(self) -> np.ndarray:
+        """(n,) str: "rejected", "accepted" or "partial"."""
+        return np.array(KINDS)[self.kind_code]
+
+    @property
+    def pixel_tests(self) -> np.ndarray:
+        """(n,) int: pixel centres tested one by one in each block (smallest partial only)."""
+        smallest = (self.level == len(self.block_sizes) - 1) & (self.kind_code == PARTIAL)
+        return np.where(smallest, self.extent[:, 0] * self.extent[:, 1], 0)
+
+    def at_level(self, level: int) -> np.ndarray:
+        """Indices (in visit order) of the blocks of size ``block_sizes[level]``."""
+        return np.flatnonzero(self.level == level)
+
+    def visit_order(self, traversal: str = "scanline") -> np.ndarray:
+        """Permutation of the blocks: depth first, siblings in the ``traversal`` order.
+
+        ``"tiled"`` groups siblings in 2 × 2 tiles. ``visit_order("scanline")`` is
+        ``arange(n)``: the order the arrays are stored in.
+        """
+        check_choice("traversal", traversal, TRAVERSALS)
+        rank = np.zeros(len(self), dtype=np.int64)
+        for lev, grid in enumerate(self.grids):  # one vectorised ranking per level
+            idx = self.at_level(lev)
+            i, j = self.sibling[idx, 0], self.sibling[idx, 1]
+            rank[idx] = traversal_rank(i, j, grid, traversal, tile=2)
+        return depth_first(self.parent, self.level, rank)
+
+    def leaf_steps(self, box: BBox, first: int) -> np.ndarray:
+        """(rows, cols) int32 over ``box``: the step of the block that decided each pixel.
+
+        Block ``b`` is step ``first + b``. Every pixel of the box lies in exactly one block
+        that is not split: rejected, accepted, or partial of the smallest size (its pixel
+        tests). -1 where no block was classified (empty box, zero area).
+        """
+        out = np.full(box.shape, -1, dtype=np.int32)
+        last = len(self.block_sizes) - 1
+        leaves = (self.kind_code != PARTIAL) | (self.level == last)
+        for b in np.flatnonzero(leaves):  # one slice per block (never per pixel)
+            r0, c0 = self.row[b] - box.row0, self.col[b] - box.col0
+            r1, c1 = r0 + self.extent[b, 0], c0 + self.extent[b, 1]
+            out[max(r0, 0) : max(r1, 0), max(c0, 0) : max(c1, 0)] = first + b
+        return out
+
+    def setup_caption(self) -> str:
+        """The set-up step: block sizes and the top-level blocks to classify."""
+        sizes = ", ".join(f"{s}×{s}" for s in self.block_sizes)
+        top = int((self.level == 0).sum())
+        if not top:
+            return f"blocks of {sizes} px: no block to classify (empty box or zero area)"
+        rows, cols = self.grids[0]
+        s = self.block_sizes[0]
+        blocks = f"{top} top-level {s}×{s} blocks ({rows} × {cols}) overlap"
+        if top == 1:
+            blocks = f"one top-level {s}×{s} block overlaps"
+        return (
+            f"blocks of {sizes} px: {blocks} the bounding box; each is classified by its "
+            "corners, partial ones are split"
+        )
+
+    def caption(self, b: int, edges: np.ndarray) -> str:
+        """One line on block ``b``: where it is, the deciding edge values, the verdict."""
+        s, kind = int(self.size[b]), int(self.kind_code[b])
+        rows, cols = (int(v) for v in self.extent[b])
+        where = f"{s}×{s} block at (row {self.row[b]}, col {self.col[b]})"
+        if (rows, cols) != (s, s):
+            where += f", {rows}×{cols} inside the image"
+        name = [f"E{a}{c}" for a, c in edges]
+        if kind == REJECTED:
+            k = int(self.rejected_by[b])
+            why = (
+                f"{name[k]} = {self.e_max[b, k] * self.px2_per_unit2:.3g} at its most inside "
+                f"corner fails: rejected, no pixel of it is covered"
+            )
+        elif kind == ACCEPTED:
+            low = ", ".join(
+                f"{n} = {v * self.px2_per_unit2:.3g}" for n, v in zip(name, self.e_min[b])
+            )
+            why = (
+                f"every edge passes at its least inside corner ({low}): accepted, "
+                f"{rows * cols} pixels filled with no pixel test"
+            )
+        else:
+            names = [n for n, c in zip(name, self.crossing[b]) if c]
+            crossing = " and ".join([", ".join(names[:-1]), names[-1]] if len(names) > 1 else names)
+            verb = "crosses" if self.crossing[b].sum() == 1 else "cross"
+            if self.level[b] < len(self.block_sizes) - 1:
+                child = self.block_sizes[self.level[b] + 1]
+                then = f"split into {child}×{child} blocks"
+            else:
+                then = f"{rows * cols} pixel tests, {int(self.covered[b])} covered"
+            why = f"{crossing} {verb} it: partial, {then}"
+        return f"{where}: {why}"
+
+
+def depth_first(parent: np.ndarray, level: np.ndarray, rank: np.ndarray) -> np.ndarray:
+    """Permutation listing every block before its children, siblings by ``rank``."""
+    n = len(parent)
+    if n == 0:
+        return np.zeros(0, dtype=np.int64)
+    depth = int(level.max()) + 1
+    keys = np.full((n, depth), -1, dtype=np.int64)
+    for lev in range(depth):  # parents come from the level above, already keyed
+        idx = np.flatnonzero(level == lev)
+        if lev:
+            keys[idx, :lev] = keys[parent[idx], :lev]
+        keys[idx, lev] = rank[idx]
+    return np.lexsort(keys.T[::-1])

@@ -1,0 +1,251 @@
+"""Early-z and hierarchical z (Hi-Z): how a GPU avoids interpolating hidden fragments.
+
+A GPU draws triangles in order. **Early-z** tests each fragment's depth against the buffer
+*before* shading it, so a hidden fragment costs a depth interpolation and a test, but no
+shading. **Hi-Z** goes one step further: it keeps, per screen tile, the *largest* depth
+stored in the tile (a conservative summary of the buffer), and before interpolating any
+depth of a triangle's block (its fragments in one tile) it compares the smallest depth the
+triangle can have there with that maximum. If the triangle is nowhere nearer, the whole
+block fails the depth test and is rejected at once: its fragments are never interpolated.
+
+Exactness. The block's smallest depth is the triangle's depth plane at the tile's extreme
+pixel centres (the corner trick of the tiled fill: the plane is affine, and the float
+expression that :meth:`Fragments.plane` evaluates is monotone along rows and columns), after
+the same quantisation as the buffer: no fragment of the block is stored nearer. The tile
+maximum is taken over the buffer *as it was when the triangle arrived* (a running minimum
+per pixel in drawing order). A rejected fragment is therefore one the depth test would
+have failed: Hi-Z changes the work, never the frame.
+
+The plan. A fragment on a pixel that no other fragment reaches (depth complexity one) can
+never be hidden, and a block holding one such fragment has a tile whose buffer was still
+empty somewhere when it arrived, so it cannot be rejected. The planned stage tests only
+blocks whose every fragment lies where the depth complexity is above one; ``force``
+tests every block; both reject the same blocks (tests/test_hierarchical_z.py).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from .batched_fill import Fragments
+from .depth import quantize
+from .render_plan import Effect
+
+#: Side of a Hi-Z tile, in pixels (hardware uses 8×8 or larger).
+HIZ_TILE = 8
+
+
+@dataclass(frozen=True)
+class HiZResult:
+    """What early-z and Hi-Z did, per block (a triangle's fragments in one tile) and per
+    fragment (drawing order, as ``Fragments``).
+
+    Attributes
+    ----------
+    tile : int
+        Tile side in pixels.
+    block_triangle : (b,) int64
+        The triangle (after clipping) of each block; blocks in drawing order.
+    block_row, block_col : (b,) int64
+        Top-left pixel of the block's tile.
+    block_tested : (b,) bool
+        Whether Hi-Z compared the block with its tile (all blocks when forced).
+    block_rejected : (b,) bool
+        Rejected whole: the triangle is nowhere nearer than the tile's farthest depth.
+    block_nearest : (b,) float64
+        Smallest depth the triangle can store in the tile (NaN where not tested).
+    tile_farthest : (b,) float64
+        The tile's largest stored depth when the triangle arrived (inf: not yet full);
+        NaN where not needed: untested, nearer than the tile's *final* maximum (the
+        buffer only gets nearer, so such a block can never be rejected), or arriving
+        while a pixel of the tile is still empty (the maximum is then inf).
+    fragment_block : (m,) int64
+        The block of every fragment.
+    fragment_passed : (m,) bool
+        Passed the depth test on arrival (early-z shades exactly these).
+    """
+
+    tile: int
+    block_triangle: np.ndarray
+    block_row: np.ndarray
+    block_col: np.ndarray
+    block_tested: np.ndarray
+    block_rejected: np.ndarray
+    block_nearest: np.ndarray
+    tile_farthest: np.ndarray
+    fragment_block: np.ndarray
+    fragment_passed: np.ndarray
+
+    @property
+    def fragment_rejected(self) -> np.ndarray:
+        """(m,) bool: killed by Hi-Z, before any depth was interpolated."""
+        return self.block_rejected[self.fragment_block]
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """Fragments: all, rejected by Hi-Z, depth-interpolated, killed by early-z, shaded."""
+        m = len(self.fragment_block)
+        hiz = int(self.fragment_rejected.sum())
+        shaded = int(self.fragment_passed.sum())
+        return {
+            "fragments": m,
+            "hiz_rejected": hiz,
+            "interpolated": m - hiz,
+            "early_z_killed": m - hiz - shaded,
+            "shaded": shaded,
+        }
+
+
+def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height: int,
+              depth_format: str, forced, tile: int = HIZ_TILE) -> tuple[HiZResult | None, Effect]:  # fmt: skip
+    """5b. Early-z and Hi-Z over the fragments the depth stage resolved.
+
+    ``visible`` is the depth stage's :class:`~teachraster.pipeline.stages.Visibility`
+    (stored depth and pixel of every fragment). Returns the record (None when the depth
+    test is off) and the "hi_z" plan effect.
+    """
+    force = "hi_z" in forced and visible.depth_test
+    m = len(frags.tri)
+    if not visible.depth_test:
+        why = "off (depth_test=False): nothing is hidden, so nothing is rejected early"
+        return None, Effect("hi_z", False, 0, m, "fragments", why)
+    count = np.bincount(visible.pixel, minlength=width * height)
+    contested = count[visible.pixel] > 1  # depth complexity above one at the fragment
+    tiles_x = -(-width // tile)
+    tile_id = (frags.row // tile) * tiles_x + frags.col // tile
+    keys, block = np.unique(frags.tri * (tiles_x * -(-height // tile)) + tile_id,
+                            return_inverse=True)  # fmt: skip
+    n_tiles = tiles_x * -(-height // tile)
+    block_tri, block_tile = keys // n_tiles, keys % n_tiles
+    b_row, b_col = (block_tile // tiles_x) * tile, (block_tile % tiles_x) * tile
+    open_pixels = np.bincount(block, weights=~contested, minlength=len(keys))
+    tested = np.ones(len(keys), bool) if force else open_pixels == 0
+    arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri, width * height)
+    nearest = np.full(len(keys), np.nan)
+    farthest = np.full(len(keys), np.nan)
+    idx = np.flatnonzero(tested)
+    if len(idx):
+        nearest[idx] = _corner_depths(frags, window, block_tri[idx], b_row[idx], b_col[idx],
+                                      (height, width), depth_format, tile)  # fmt: skip
+        # The buffer only ever gets nearer, so the tile's final maximum bounds its maximum
+        # at any arrival from below: a block nearer than that somewhere is never rejected,
+        # and only the others need the buffer as it was (the costly part).
+        final = _final_tile_max(visible, (height, width), tile)[block_tile[idx]]
+        ready = arrivals.tile_ready((height, width), tile)[block_tile[idx]]
+        # ... and a tile with a pixel no earlier triangle reached is still open (inf).
+        idx = idx[(nearest[idx] >= final) & (ready < block_tri[idx])]
+        farthest[idx] = arrivals.tile_farthest(block_tri[idx], b_row[idx], b_col[idx],
+                                               (height, width), tile)  # fmt: skip
+    rejected = tested & (nearest >= farthest)
+    result = HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
+                       block, arrivals.passed)  # fmt: skip
+    return result, hiz_effect(result, int((count > 1).sum()), force)
+
+
+def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> np.ndarray:
+    """Smallest stored depth of each triangle over its tile: the plane at the 4 corners."""
+    height, width = image
+    last_r = np.minimum(row + tile, height) - 1
+    last_c = np.minimum(col + tile, width) - 1
+    rows = np.stack([row, row, last_r, last_r], axis=1).ravel()
+    cols = np.stack([col, last_c, col, last_c], axis=1).ravel()
+    # The very expression the depth stage evaluates per fragment, at the corners.
+    probe = dataclasses.replace(frags, tri=np.repeat(tri, 4), row=rows, col=cols)
+    depth = quantize(probe.plane(window[:, :, 2]), depth_format)
+    return depth.reshape(-1, 4).min(axis=1)
+
+
+def _final_tile_max(visible, image, tile) -> np.ndarray:
+    """Largest final buffer depth of every tile (inf where a pixel stays empty)."""
+    height, width = image
+    ty, tx = -(-height // tile), -(-width // tile)
+    buffer = np.full((ty * tile, tx * tile), -np.inf)  # pixels beyond the image: ignored
+    buffer[:height, :width] = np.inf
+    flat = buffer[:height, :width].reshape(-1).copy()
+    np.minimum.at(flat, visible.pixel, visible.depth)
+    buffer[:height, :width] = flat.reshape(height, width)
+    return buffer.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
+
+
+class _Arrivals:
+    """The z-buffer as each fragment found it: fragments grouped by pixel (drawing order
+    kept inside a group) with the running minimum of their stored depths."""
+
+    def __init__(self, pixel: np.ndarray, depth: np.ndarray, tri: np.ndarray, n_pixels: int):
+        m = len(pixel)
+        # Fragments come in drawing order (by triangle), so a stable sort by pixel orders
+        # each pixel's fragments by triangle.
+        order = np.argsort(pixel, kind="stable")
+        self.tri = tri[order]
+        self.count = np.bincount(pixel, minlength=n_pixels)
+        self.start = np.cumsum(self.count) - self.count  # each pixel's first fragment
+        self.running = _running_min(pixel[order], depth[order], int(self.count.max(initial=0)))
+        first = np.zeros(m, dtype=bool)
+        first[self.start[self.count > 0]] = True
+        before = np.where(first, np.inf, np.r_[np.inf, self.running[:-1]])
+        self.passed = np.empty(m, dtype=bool)  # strictly nearer than all before it
+        self.passed[order] = depth[order] < before
+
+    def tile_ready(self, image, tile) -> np.ndarray:
+        """Per tile, the triangle after which every pixel of it holds a depth (the largest
+        first-arriving triangle over its pixels; beyond the last triangle if one stays
+        empty)."""
+        height, width = image
+        ty, tx = -(-height // tile), -(-width // tile)
+        first = np.full((ty * tile, tx * tile), -1, dtype=np.int64)  # beyond the image
+        reached = self.count > 0
+        arrival = np.full(height * width, np.iinfo(np.int64).max, dtype=np.int64)
+        arrival[reached] = self.tri[self.start[reached]]
+        first[:height, :width] = arrival.reshape(height, width)
+        return first.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
+
+    def tile_farthest(self, tri, row, col, image, tile) -> np.ndarray:
+        """Largest buffer depth over each tile just before triangle ``tri`` arrives (inf
+        while a pixel of the tile is still empty)."""
+        height, width = image
+        dr, dc = np.indices((tile, tile)).reshape(2, -1)
+        r, c = row[:, None] + dr, col[:, None] + dc  # (b, tile²) pixels of each tile
+        inside = (r < height) & (c < width)
+        p = np.where(inside, r * width + c, 0)
+        start, count = self.start[p], np.where(inside, self.count[p], 0)
+        before = np.full(p.shape, np.inf)  # the buffer at arrival
+        tri = np.broadcast_to(tri[:, None], p.shape)
+        for k in range(int(count.max(initial=0))):  # depth complexity: a few rounds
+            at = np.minimum(start + k, len(self.tri) - 1)
+            earlier = (k < count) & (self.tri[at] < tri)  # fragments of earlier triangles
+            before = np.where(earlier, self.running[at], before)  # running min: the last
+        return np.where(inside, before, -np.inf).max(axis=1)
+
+
+def _running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.ndarray:
+    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input) no
+    longer than ``longest``: log2(longest) doubling steps, each one pass over the array."""
+    out = values.copy()
+    step = 1
+    while step < longest:
+        same = group_key[step:] == group_key[:-step]
+        np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
+        step *= 2
+    return out
+
+
+def hiz_effect(result: HiZResult, n_contested: int, forced: bool) -> Effect:
+    """The plan's words for early-z and Hi-Z."""
+    c = result.counts
+    n_tested, n_rejected = int(result.block_tested.sum()), int(result.block_rejected.sum())
+    t = result.tile
+    if not n_contested and not forced:
+        why = "depth complexity is one everywhere: no fragment can be hidden, Hi-Z not run"
+        return Effect("hi_z", False, 0, c["fragments"], "fragments", why)
+    why = (
+        f"depth complexity above one on {n_contested:,} pixel(s): {n_tested:,} block(s) "
+        f"compared with their {t}×{t} tile's farthest depth, {n_rejected:,} rejected whole, "
+        f"saving {c['hiz_rejected']:,} fragment(s) their depth; early-z killed "
+        f"{c['early_z_killed']:,} more before shading; {c['shaded']:,} shaded"
+    )
+    if forced:
+        why = "every block tested; " + why
+    return Effect("hi_z", True, c["hiz_rejected"], c["fragments"], "fragments", why, forced)

@@ -1,0 +1,215 @@
+"""Antialiasing plots: sample positions and their coverage, coverage fractions, area errors.
+
+Every function takes an Axes and returns its artists (``update`` redraws them in place):
+
+- :func:`plot_samples` -- every sample of every pixel at its position, filled where covered
+  (coloured by triangle for a multisampled Frame), with the pixel's coverage fraction behind;
+- :func:`plot_pixel_samples` -- one pixel magnified: its samples, the triangle edges through
+  it, and at each sample which triangle owns it or the edge values E_k that decided it;
+- :func:`plot_coverage_fraction` -- the fraction of covered samples per pixel (the resolve of
+  a white triangle on black);
+- :func:`plot_area_error` -- coverage fraction minus the exact area of the triangle in the
+  pixel, signed (red: the samples saw too little of the triangle, blue: too much).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from matplotlib.lines import Line2D
+
+from ..core.fill import Fill
+from ..pipeline.render_triangles import Frame
+from .common import Artists, fs, label_box, lw, ms, show_image
+from .images import ImageArtists
+from .style import COLORS, OKABE_ITO, SIGNED_CMAP, VALUE_CMAP
+
+#: Colours of triangle ids 0, 1, 2, ... in per-sample plots (cycled).
+TRIANGLE_COLORS = [OKABE_ITO[k] for k in ("blue", "orange", "bluish_green", "vermillion",
+                                           "reddish_purple", "sky_blue", "yellow")]  # fmt: skip
+
+
+def sample_data(source):
+    """(H, W, S) per-sample triangle id (-1 none; 0 for a covered sample of a Fill) and the
+    (S, 2) offsets, from a multisampled Fill or Frame."""
+    if isinstance(source, Fill):
+        if source.sample_coverage is None:
+            raise ValueError("plot_samples needs a multisampled fill: rasterize(..., samples=4)")
+        return np.where(source.sample_coverage, 0, -1), source.samples
+    if isinstance(source, Frame):
+        if source.sample_triangle_id is None:
+            raise ValueError("plot_samples needs a multisampled frame: render(..., samples=4)")
+        return source.sample_triangle_id, source.samples
+    raise TypeError(f"expected a multisampled Fill or Frame, got {type(source).__name__}")
+
+
+def _positions(ids, offsets):
+    h, w, n_s = ids.shape
+    rows, cols, s = np.indices((h, w, n_s)).reshape(3, -1)
+    return cols + offsets[s, 0], rows + offsets[s, 1], ids.ravel()
+
+
+@dataclass
+class SampleArtists(Artists):
+    """Samples of :func:`plot_samples`: covered (coloured by triangle), uncovered (hollow),
+    and the coverage fraction image behind them (or None)."""
+
+    fraction: ImageArtists | None
+    covered: object
+    uncovered: Line2D
+
+    def update(self, source) -> None:
+        """Show another multisampled fill or frame (any size and pattern)."""
+        ids, offsets = sample_data(source)
+        x, y, t = _positions(ids, offsets)
+        hit = t >= 0
+        self.covered.set_offsets(np.column_stack([x[hit], y[hit]]))
+        self.covered.set_facecolor([TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit]])
+        self.uncovered.set_data(x[~hit], y[~hit])
+        if self.fraction is not None:
+            self.fraction.update((ids >= 0).mean(axis=2))
+
+
+def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
+    """Every sample of every pixel at ``(j + ox, i + oy)``: filled where covered.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+        Usually set up by :func:`~teachraster.plotting.plot_pixel_grid` (magnified pixels).
+    source : Fill or Frame
+        ``tr.rasterize(..., samples=S)`` (covered samples in the fill colour) or
+        ``tr.render(..., samples=S)`` (each sample in the colour of its triangle).
+    fraction : bool
+        Shade each pixel by the fraction of its samples covered (light = few).
+
+    Returns
+    -------
+    SampleArtists
+    """
+    ids, offsets = sample_data(source)
+    frac = None
+    if fraction:
+        frac = ImageArtists(show_image(ax, (ids >= 0).mean(axis=2), cmap="Greys", vmin=0,
+                                       vmax=2.5, zorder=0.4))  # fmt: skip
+    size = ms(0.55) if ids.shape[2] <= 4 else ms(0.35)
+    covered = ax.scatter([], [], s=size**2 * 1.6, zorder=4, edgecolors=COLORS["edge"],
+                         linewidths=max(0.5, lw(0.15)))  # fmt: skip
+    uncovered = ax.plot([], [], "o", ms=size, mfc="white", mec=COLORS["centre"],
+                        mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
+    result = SampleArtists(frac, covered, uncovered)
+    result.update(source)
+    return result
+
+
+def _value_image(ax, data, cmap, vmin, vmax, colorbar, label) -> ImageArtists:
+    im = show_image(ax, np.asarray(data, dtype=np.float64), cmap=cmap, vmin=vmin, vmax=vmax,
+                    zorder=0.5)  # fmt: skip
+    cbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label=label) if colorbar else None
+    return ImageArtists(im, cbar)
+
+
+def plot_coverage_fraction(ax, source, *, colorbar: bool = True, title: bool = True):
+    """The fraction of each pixel's samples covered: what the resolve shows for a white
+    triangle on black (``fill.coverage_fraction`` or ``frame.coverage_fraction``)."""
+    data = source.coverage_fraction if isinstance(source, Fill | Frame) else source
+    result = _value_image(ax, data, VALUE_CMAP, 0.0, 1.0, colorbar, "covered fraction")
+    if title:
+        ax.set_title("coverage fraction")
+    return result
+
+
+def plot_area_error(ax, fraction, area, *, colorbar: bool = True, title: bool = True):
+    """Signed error of a coverage fraction against the exact area in each pixel.
+
+    ``fraction`` is a multisampled Fill or Frame or an (H, W) array; ``area`` the exact area
+    of the triangle in each pixel (:func:`teachraster.study.antialiasing.pixel_area`). Red:
+    the samples saw too little of the triangle, blue: too much (the diverging map of the
+    edge values); pixels where both are 0 are transparent. The title gives the mean and maximum absolute error.
+    """
+    frac = fraction.coverage_fraction if isinstance(fraction, Fill | Frame) else fraction
+    err = np.asarray(frac, dtype=np.float64) - np.asarray(area, dtype=np.float64)
+    err = np.where((np.asarray(frac) > 0) | (np.asarray(area) > 0), err, np.nan)
+    bound = float(np.nanmax(np.abs(err), initial=0.0)) or 1.0
+    result = _value_image(ax, err, SIGNED_CMAP, -bound, bound, colorbar,
+                          "fraction − exact area")  # fmt: skip
+    if title:
+        e = np.abs(err[np.isfinite(err)])
+        mean, worst = (float(e.mean()), float(e.max())) if e.size else (0.0, 0.0)
+        ax.set_title(f"error vs exact area: mean {mean:.3f}, max {worst:.3f}")
+    return result
+
+
+# -- one pixel, magnified ----------------------------------------------------------------------
+@dataclass
+class PixelSampleArtists(Artists):
+    """One magnified pixel of :func:`plot_pixel_samples`; :meth:`update` moves it in place."""
+
+    square: Line2D
+    centre: Line2D
+    edges: list = field(default_factory=list)
+    dots: list = field(default_factory=list)
+    labels: list = field(default_factory=list)
+
+    def update(self, source, row: int, col: int, *, triangles=None) -> None:
+        """Show pixel (row, col) of ``source`` (the pattern may change: dots are redrawn)."""
+        ax = self.square.axes
+        for artist in [*self.edges, *self.dots, *self.labels]:
+            artist.remove()
+        self.edges, self.dots, self.labels = [], [], []
+        ids, offsets = sample_data(source)
+        ax.set_xlim(col - 0.15, col + 1.15)
+        ax.set_ylim(row + 1.15, row - 0.15)
+        self.square.set_data([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row])
+        self.centre.set_data([col + 0.5], [row + 0.5])
+        trace = getattr(getattr(source, "trace", None), "samples", None)
+        if triangles is None and trace is not None:
+            triangles = [source.trace.snapped]
+        frame = isinstance(source, Frame)
+        for t, tri in enumerate(np.asarray(triangles if triangles is not None else [])):
+            closed = np.vstack([tri, tri[:1]])
+            color = TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)] if frame else COLORS["edge"]
+            self.edges += ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw(0.8))
+        values = None if trace is None else trace.edge_values(row, col)
+        for s, (ox, oy) in enumerate(offsets):
+            t = int(ids[row, col, s])
+            color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
+            self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4), mfc=color,
+                                 mec=COLORS["edge"], zorder=5)  # fmt: skip
+            label = _label(s, t, None if values is None else values[s])
+            self.labels.append(ax.annotate(
+                label, (col + ox, row + oy), xytext=(6, 6), textcoords="offset points",
+                fontsize=fs(0.6), bbox=label_box(0.8), zorder=6,
+            ))  # fmt: skip
+        covered = int((ids[row, col] >= 0).sum())
+        ax.set_title(f"pixel (row {row}, col {col}): {covered} of {len(offsets)} samples covered")
+
+
+def _label(s, t, e) -> str:
+    head = f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
+    if e is None:
+        return head
+    return head + "\n" + " ".join(f"E{k}={v:+.3g}" for k, v in enumerate(e))
+
+
+def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> PixelSampleArtists:
+    """Pixel (row, col) magnified: its samples, who owns each, the edges that decided it.
+
+    Parameters
+    ----------
+    source : Fill or Frame
+        Multisampled. A Fill rasterised with ``trace=True`` also labels every sample with
+        its three edge values E_k (px², oriented edges in test order; positive = inside).
+    row, col : int
+        The pixel.
+    triangles : (N, 3, 2) array-like, optional
+        Window positions of the triangles, to draw their edges through the pixel (for a
+        Fill the traced snapped triangle is drawn by default).
+    """
+    ax.set_aspect("equal")
+    square = ax.plot([], [], color=COLORS["grid"], lw=lw(0.6))[0]
+    centre = ax.plot([], [], "+", color=COLORS["centre"], ms=ms(1.0))[0]
+    result = PixelSampleArtists(square, centre)
+    result.update(source, row, col, triangles=triangles)
+    return result

@@ -1,0 +1,337 @@
+"""Plots of the tiled fill: blocks by kind at each level, the counters, traversal orders.
+
+``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``; then
+
+- :func:`plot_blocks` -- the classified blocks over the pixel grid, coloured by kind
+  (rejected / accepted / partial): one level of the hierarchy (``level=``), or every block
+  visited up to a step of a traversal (``upto=``, ``traversal=``);
+- :func:`plot_hierarchy` -- one panel per block size, with the coverage and the triangle;
+- :func:`plot_block_counters` -- llvmpipe's counters as a small table;
+- :func:`plot_traversal` -- the visiting order of a grid's cells (scanline, serpentine,
+  tiled, Morton) as colours and a path.
+
+Every function takes an Axes (``plot_hierarchy`` a sequence of them) and returns artists.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from matplotlib.collections import PolyCollection
+from matplotlib.colors import to_rgba
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+from matplotlib.table import Table
+from matplotlib.text import Text
+
+from ..core.tile_trace import KINDS, TileTrace
+from ..core.trace import FillTrace
+from ..core.traversal import TRAVERSALS, traversal_order
+from ..core.validate import check_choice
+from .common import Artists, as_trace, fs, lw, pixel_axes, show_image
+from .plots import plot_coverage, plot_pixel_grid, plot_triangle
+from .style import COLORS, OKABE_ITO, VALUE_CMAP
+
+#: The colour of each block kind.
+BLOCK_COLORS = {
+    "rejected": "#BDBDBD",
+    "accepted": OKABE_ITO["bluish_green"],
+    "partial": OKABE_ITO["orange"],
+}
+#: Fill opacity of a block (its outline is opaque).
+BLOCK_ALPHA = 0.45
+
+
+def tile_trace(fill, what: str = "this plot") -> tuple[FillTrace, TileTrace]:
+    """The FillTrace and its TileTrace of a tiled fill (``method="tiled"``, ``trace=True``)."""
+    trace = as_trace(fill, what)
+    if trace.blocks is None:
+        raise ValueError(
+            f"{what} needs a tiled fill: tr.rasterize(..., method='tiled', trace=True)"
+        )
+    return trace, trace.blocks
+
+
+def block_mask(
+    blocks: TileTrace, *, level: int | None = None, upto: int | None = None, traversal="scanline"
+) -> np.ndarray:
+    """(n,) bool: the blocks a view shows.
+
+    ``level=L``: the hierarchy after classifying size ``block_sizes[L]``: accepted and
+    rejected blocks of the larger sizes and every block of size L. ``upto=k``: the first
+    ``k + 1`` blocks visited in ``traversal`` order. Neither: every block.
+    """
+    n = len(blocks)
+    if level is not None:
+        return ((blocks.level < level) & (blocks.kind_code != 2)) | (blocks.level == level)
+    if upto is not None:
+        shown = np.zeros(n, dtype=bool)
+        shown[blocks.visit_order(traversal)[: max(int(upto) + 1, 0)]] = True
+        return shown
+    return np.ones(n, dtype=bool)
+
+
+@dataclass
+class BlockArtists(Artists):
+    """Blocks of a :func:`plot_blocks` (one PolyCollection) and its legend handles."""
+
+    blocks: PolyCollection
+    legend: object | None = None
+    order: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    kinds: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+
+    def show(self, mask: np.ndarray) -> None:
+        """Show only the blocks where ``mask`` (indexed like the trace) is True, in place."""
+        visible = np.asarray(mask, dtype=bool)[self.order]
+        face = _colors(self.kinds, BLOCK_ALPHA)
+        edge = _colors(self.kinds, 1.0)
+        face[~visible, 3] = 0.0
+        edge[~visible, 3] = 0.0
+        self.blocks.set_facecolor(face)
+        self.blocks.set_edgecolor(edge)
+
+
+def _colors(kinds: np.ndarray, alpha: float) -> np.ndarray:
+    table = np.array([to_rgba(BLOCK_COLORS[k], alpha) for k in KINDS])
+    return table[kinds].reshape(-1, 4)
+
+
+def _rectangles(blocks: TileTrace, order: np.ndarray) -> np.ndarray:
+    r, c = blocks.row[order], blocks.col[order]
+    h, w = blocks.extent[order, 0], blocks.extent[order, 1]
+    return np.stack(
+        [np.stack([c, r], 1), np.stack([c + w, r], 1), np.stack([c + w, r + h], 1),
+         np.stack([c, r + h], 1)], axis=1,
+    ).astype(float)  # fmt: skip
+
+
+def plot_blocks(
+    ax,
+    fill,
+    *,
+    level: int | None = None,
+    upto: int | None = None,
+    traversal: str = "scanline",
+    legend: bool = True,
+) -> BlockArtists:
+    """Draw the classified blocks of a tiled fill, coloured by kind.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+        Pixel axes (e.g. from :func:`~teachraster.plotting.plot_pixel_grid`).
+    fill : Fill (``method="tiled"``, ``trace=True``) or its FillTrace
+    level : int, optional
+        Show the hierarchy down to ``block_sizes[level]`` (see :func:`block_mask`).
+    upto : int, optional
+        Show the blocks visited up to this block step (0 = the first block).
+    traversal : {"scanline", "serpentine", "tiled", "morton"}
+        Sibling order of the walk; blocks are drawn in visiting order, so a child lies on
+        top of its partial parent.
+    legend : bool
+        A legend of the three kinds.
+
+    Returns
+    -------
+    BlockArtists
+        ``blocks`` (PolyCollection); ``show(mask)`` changes which blocks are visible.
+    """
+    _, blocks = tile_trace(fill, "plot_blocks")
+    check_choice("traversal", traversal, TRAVERSALS)
+    order = blocks.visit_order(traversal)
+    coll = PolyCollection(_rectangles(blocks, order), linewidths=lw(0.5), zorder=2.5)
+    ax.add_collection(coll, autolim=False)
+    result = BlockArtists(coll, order=order, kinds=blocks.kind_code[order].astype(int))
+    result.show(block_mask(blocks, level=level, upto=upto, traversal=traversal))
+    if legend:
+        handles = [
+            Patch(facecolor=to_rgba(BLOCK_COLORS[k], BLOCK_ALPHA), edgecolor=BLOCK_COLORS[k],
+                  label=k) for k in KINDS
+        ]  # fmt: skip
+        result.legend = ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1),
+                                  fontsize=fs(0.7), frameon=False)  # fmt: skip
+    return result
+
+
+def plot_hierarchy(axes, fill, *, triangle: bool = True) -> list[BlockArtists]:
+    """One panel per block size: the hierarchy after classifying that size.
+
+    Each panel shows the pixel grid, the final coverage (light), the triangle and the
+    blocks; its title gives the size and that level's counts.
+    """
+    trace, blocks = tile_trace(fill, "plot_hierarchy")
+    axes = list(np.ravel(axes))
+    if len(axes) < len(blocks.block_sizes):
+        raise ValueError(f"plot_hierarchy needs {len(blocks.block_sizes)} Axes, got {len(axes)}")
+    out = []
+    c = blocks.counters
+    for lev, (ax, size) in enumerate(zip(axes, blocks.block_sizes)):
+        plot_pixel_grid(ax, trace.width, trace.height, ticks=4)
+        plot_coverage(ax, trace, alpha=0.35)
+        if triangle:
+            plot_triangle(ax, trace.snapped, arrows=False, labels=False)
+        out.append(plot_blocks(ax, trace, level=lev, legend=lev == len(axes) - 1))
+        ax.set_title(
+            f"{size}×{size}: {c.empty[lev]} rejected, {c.full[lev]} accepted, "
+            f"{c.partial[lev]} partial",
+            fontsize=fs(0.8),
+        )
+    return out
+
+
+@dataclass
+class CounterArtists(Artists):
+    """The table of a :func:`plot_block_counters` and its title."""
+
+    table: Table
+    title: Text | None = None
+
+
+def plot_block_counters(ax, fill, *, title: bool = True) -> CounterArtists:
+    """llvmpipe's counters as a table: empty / full / partial blocks per size, pixel tests.
+
+    Accepts a tiled Fill or FillTrace, or a :class:`~teachraster.core.tile_trace.BlockCounters`.
+    """
+    counters = getattr(fill, "counters", None)
+    if counters is None:
+        counters = tile_trace(fill, "plot_block_counters")[1].counters
+    rows = [[lab, str(e), str(f), str(p)] for lab, e, f, p in counters.table()]
+    rows.append(["pixels", "", str(counters.pixels_accepted), str(counters.pixel_tests)])
+    ax.set_axis_off()
+    table = ax.table(
+        cellText=rows,
+        colLabels=["block", "empty", "full", "partial"],
+        loc="center",
+        cellLoc="center",
+    )
+    table.auto_set_font_size(False)
+    table.set_fontsize(fs(0.8))
+    table.scale(1.0, 1.6)
+    for (r, c), cell in table.get_celld().items():
+        if r == 0 and c:
+            cell.set_facecolor(to_rgba(BLOCK_COLORS[KINDS[c - 1]], BLOCK_ALPHA))
+    result = CounterArtists(table)
+    if title:
+        result.title = ax.set_title(
+            "counters (last row: pixels filled without a test | pixel tests run)", fontsize=fs(0.7)
+        )
+    return result
+
+
+@dataclass
+class TraversalArtists(Artists):
+    """Visit-number colours, the path through the cells and the numbers of a traversal."""
+
+    image: object
+    path: Line2D | None = None
+    texts: list = field(default_factory=list)
+
+
+def plot_traversal(
+    ax, width: int, height: int, traversal: str = "scanline", *, tile: int = 4,
+    numbers: bool | None = None, path: bool = True,
+) -> TraversalArtists:  # fmt: skip
+    """Colour each cell of a ``height`` × ``width`` grid by when a traversal visits it.
+
+    The path joins the cell centres in visiting order: long jumps are where a walker
+    leaves the neighbourhood it just loaded (cache misses); Morton and tiled orders keep
+    nearby cells together at every scale.
+    """
+    check_choice("traversal", traversal, TRAVERSALS)
+    cells = traversal_order((height, width), traversal, tile)
+    index = np.empty((height, width))
+    index[cells[:, 0], cells[:, 1]] = np.arange(len(cells))
+    pixel_axes(ax, width, height, ticks=False)
+    im = show_image(ax, index, cmap=VALUE_CMAP, vmin=0, vmax=max(len(cells) - 1, 1), zorder=0.5)
+    result = TraversalArtists(im)
+    if path:
+        result.path = ax.plot(cells[:, 1] + 0.5, cells[:, 0] + 0.5, "-", color=COLORS["edge"],
+                              lw=lw(0.4), zorder=3)[0]  # fmt: skip
+    if numbers if numbers is not None else len(cells) <= 64:
+        colors = im.cmap(im.norm(np.arange(len(cells))))
+        for n, (r, c) in enumerate(cells):
+            ink = "black" if colors[n, :3] @ [0.299, 0.587, 0.114] > 0.5 else "white"
+            result.texts.append(ax.text(c + 0.5, r + 0.5, str(n), ha="center", va="center",
+                                        fontsize=fs(0.45), color=ink, zorder=4))  # fmt: skip
+    ax.set_title(traversal if traversal != "tiled" else f"tiled ({tile}×{tile})")
+    return result
+
+
+#: What :func:`plot_early_z` can count per pixel.
+EARLY_Z_KINDS = ("hi_z", "early_z", "shaded")
+
+
+@dataclass
+class EarlyZArtists(Artists):
+    """The per-pixel count image of a :func:`plot_early_z` and its colour bar."""
+
+    image: object
+    colorbar: object | None = None
+
+
+def early_z_counts(frame, kind: str = "hi_z") -> np.ndarray:
+    """(H, W) int: fragments per pixel that Hi-Z rejected (``"hi_z"``), early-z killed
+    (``"early_z"``) or that were shaded (``"shaded"``), from ``frame.trace.hiz``."""
+    check_choice("kind", kind, EARLY_Z_KINDS)
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "hiz", None) is None:
+        raise ValueError("early_z_counts needs tr.render(..., trace=True) with the depth test on")
+    hiz = trace.hiz
+    rejected, passed = hiz.fragment_rejected, hiz.fragment_passed
+    pick = {"hi_z": rejected, "early_z": ~passed & ~rejected, "shaded": passed}[kind]
+    height, width = frame.triangle_id.shape
+    flat = trace.fragment_row[pick] * width + trace.fragment_col[pick]
+    return np.bincount(flat, minlength=width * height).reshape(height, width)
+
+
+def plot_early_z(ax, frame, kind: str = "hi_z", *, colorbar: bool = True) -> EarlyZArtists:
+    """Per pixel, how many fragments Hi-Z rejected whole, early-z killed, or were shaded.
+
+    Zero is drawn transparent. The title gives the total.
+    """
+    counts = early_z_counts(frame, kind)
+    height, width = counts.shape
+    shown = np.where(counts > 0, counts.astype(float), np.nan)
+    pixel_axes(ax, width, height, ticks=False)
+    im = show_image(ax, shown, cmap=VALUE_CMAP, vmin=0, vmax=max(int(counts.max()), 1))
+    result = EarlyZArtists(im)
+    if colorbar:
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, label="fragments")
+    name = {"hi_z": "rejected by Hi-Z", "early_z": "killed by early-z", "shaded": "shaded"}[kind]
+    ax.set_title(f"{int(counts.sum()):,} fragments {name}")
+    return result
+
+
+@dataclass
+class BlockPathArtists(Artists):
+    """The path of a :func:`plot_block_path` and the numbers on its blocks."""
+
+    path: Line2D
+    texts: list = field(default_factory=list)
+
+
+def plot_block_path(
+    ax, fill, traversal: str = "scanline", *, level: int = -1, numbers: bool | None = None
+) -> BlockPathArtists:
+    """Join the centres of one level's blocks in the order the walk visits them.
+
+    The walk is depth first, so the blocks of a level are visited parent by parent; the
+    traversal orders the siblings. ``level`` indexes ``block_sizes`` (default: the smallest).
+    """
+    _, blocks = tile_trace(fill, "plot_block_path")
+    check_choice("traversal", traversal, TRAVERSALS)
+    level = range(len(blocks.block_sizes))[level]
+    order = blocks.visit_order(traversal)
+    order = order[blocks.level[order] == level]
+    x = blocks.col[order] + blocks.extent[order, 1] / 2
+    y = blocks.row[order] + blocks.extent[order, 0] / 2
+    (line,) = ax.plot(x, y, "-", color=COLORS["edge"], lw=lw(0.5), zorder=4)
+    result = BlockPathArtists(line)
+    if numbers if numbers is not None else len(order) <= 64:
+        for n, (u, v) in enumerate(zip(x, y)):
+            result.texts.append(ax.text(u, v, str(n), ha="center", va="center",
+                                        fontsize=fs(0.45), zorder=5))  # fmt: skip
+    size = blocks.block_sizes[level]
+    ax.set_title(f"{traversal}: {len(order)} blocks of {size}×{size}")
+    return result

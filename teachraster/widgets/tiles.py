@@ -1,0 +1,183 @@
+"""``TileExplorer``: walk the block hierarchy of a tiled fill, level by level or block by block."""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+
+from ..core.fill import rasterize
+from ..core.traversal import TRAVERSALS
+from ..core.triangle import Triangle
+from ..plotting import plot_blocks, plot_coverage, plot_pixel_grid, plot_triangle
+from ..plotting.tiles import block_mask
+from .common import Holdable, fill_axes, labelled, style_context, title_html
+from .display import FigureDisplay, html_escape, new_figure, resolve_backend
+
+#: Block-size choices: llvmpipe's, and smaller hierarchies that read on a small grid.
+SIZE_OPTIONS = [
+    ("64 / 16 / 4 (llvmpipe)", (64, 16, 4)),
+    ("16 / 4 / 1", (16, 4, 1)),
+    ("8 / 4 / 2", (8, 4, 2)),
+    ("16 / 4", (16, 4)),
+    ("8 / 2", (8, 2)),
+]
+
+
+class TileExplorer(Holdable):
+    """Step through the blocks of a tiled fill: one level at a time, or one block at a time.
+
+    The **level** slider shows the hierarchy after each block size is classified (rejected
+    grey, accepted green, partial orange; partial blocks are split at the next level). The
+    **block** slider walks the blocks in the chosen **traversal** order (depth first, the
+    children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
+    with the caption of the ``k``-th.
+    The **block sizes** and **traversal** menus fill the triangle again. The counters
+    (llvmpipe's empty / full / partial per size and the pixel tests run) are shown below.
+
+    Parameters
+    ----------
+    tri : Triangle
+    width, height : int
+        Image size (a 64 × 64 grid or smaller reads best).
+    block_sizes : tuple of int
+        Initial sizes (one of :data:`SIZE_OPTIONS`' values, or any valid hierarchy).
+    traversal : {"scanline", "serpentine", "tiled", "morton"}
+    backend : {"auto", "ipympl", "image"}
+    style : str, optional
+        ``"classroom"`` for projector-sized fonts (only inside the widget).
+
+    Examples
+    --------
+    >>> import teachraster as tr
+    >>> ex = TileExplorer(tr.Triangle([[1, 1], [30, 6], [9, 29]]), 32, 32,
+    ...                   block_sizes=(16, 4, 1), backend="image")
+    >>> ex.level.value = 1
+    >>> int(ex.shown.sum()) > 0
+    True
+    >>> ex.close()
+    """
+
+    def __init__(self, tri: Triangle, width: int = 64, height: int = 64, *,
+                 block_sizes=(16, 4, 1), traversal: str = "scanline", backend: str = "auto",
+                 style: str | None = None) -> None:  # fmt: skip
+        self.tri, self.width, self.height = tri, width, height
+        self.backend = resolve_backend(backend)
+        block_sizes = tuple(int(s) for s in block_sizes)
+        options = list(SIZE_OPTIONS)
+        if block_sizes not in [v for _, v in options]:
+            options.append((" / ".join(map(str, block_sizes)), block_sizes))
+        self.sizes = widgets.Dropdown(options=options, value=block_sizes)
+        self.traversal = widgets.Dropdown(options=list(TRAVERSALS), value=traversal)
+        self.level = widgets.IntSlider(value=0, min=0, max=len(block_sizes) - 1,
+                                       description="level", continuous_update=True)  # fmt: skip
+        self.block = widgets.IntSlider(value=0, min=0, max=0, description="block")
+        self.caption = widgets.HTML()
+        self.counters = widgets.HTML()
+        self._fill()
+        with style_context(style):
+            fig = new_figure((6, 6), self.backend)
+            ax = fill_axes(fig, width, height)
+            plot_pixel_grid(ax, width, height)
+            plot_coverage(ax, self.fill, alpha=0.35)
+            plot_triangle(ax, self.fill.trace.snapped, arrows=False, labels=False)
+            self.ax, self.fig = ax, fig
+            self.artists = None
+            self._draw_blocks()
+            self.display = FigureDisplay(fig, self.backend)
+        self.sizes.observe(self._on_refill, "value")
+        self.traversal.observe(self._on_refill, "value")
+        self.level.observe(lambda _: None if self._quiet else self.show_level(), "value")
+        self.block.observe(lambda _: None if self._quiet else self.show_block(), "value")
+        title = title_html(
+            "Tiles: accept or reject whole blocks, test pixels only where an edge passes",
+            "Level by level, or block by block in a traversal order.",
+        )
+        menus = widgets.HBox([labelled("block sizes", self.sizes),
+                              labelled("traversal", self.traversal)])  # fmt: skip
+        self.widget = widgets.VBox([title, menus, self.level, self.block, self.caption,
+                                    self.display.widget, self.counters])  # fmt: skip
+        self.show_level()
+
+    # -- state ----------------------------------------------------------------------------
+    def _fill(self) -> None:
+        self.fill = rasterize(self.tri, self.width, self.height, method="tiled",
+                              block_sizes=self.sizes.value, trace=True)  # fmt: skip
+        self.blocks = self.fill.trace.blocks
+        self.order = self.blocks.visit_order(self.traversal.value)
+        with self._holding():
+            self.level.max = len(self.sizes.value) - 1
+            self.block.max = len(self.blocks)
+        self.counters.value = _counter_table(self.blocks.counters)
+
+    def _draw_blocks(self) -> None:
+        if self.artists is not None:
+            for artist in self.artists:
+                artist.remove()
+        self.artists = plot_blocks(self.ax, self.fill, traversal=self.traversal.value)
+
+    def _on_refill(self, _change) -> None:
+        self._fill()
+        self._draw_blocks()
+        self.show_level()
+
+    # -- views ----------------------------------------------------------------------------
+    def show_level(self, level: int | None = None) -> None:
+        """Show the hierarchy down to block size ``block_sizes[level]``."""
+        level = self.level.value if level is None else int(level)
+        self.shown = block_mask(self.blocks, level=level)
+        c, size = self.blocks.counters, self.sizes.value[level]
+        text = (
+            f"level {level}: {size}×{size} blocks — {c.empty[level]} rejected, "
+            f"{c.full[level]} accepted, {c.partial[level]} partial"
+        )
+        if level == len(self.sizes.value) - 1:
+            text += f"; {c.pixel_tests} pixel tests in the partial ones"
+        self.caption_text = text
+        self._refresh()
+
+    def show_block(self, k: int | None = None) -> None:
+        """Show the first ``k`` blocks of the traversal (0: none yet), captioning the last."""
+        k = self.block.value if k is None else int(k)
+        self.shown = block_mask(self.blocks, upto=k - 1, traversal=self.traversal.value)
+        n = len(self.blocks)
+        if not n:
+            self.caption_text = "no block to classify (no pixel centre in the box, or zero area)"
+        elif k == 0:
+            self.caption_text = (
+                f"{n} blocks will be classified, depth first, siblings in "
+                f"{self.traversal.value} order: move the block slider"
+            )
+        else:
+            b = int(self.order[k - 1])
+            caption = self.blocks.caption(b, self.fill.trace.edges)
+            self.caption_text = f"block {k} of {n}: {caption}"
+        self._refresh()
+
+    def _refresh(self) -> None:
+        self.artists.show(self.shown)
+        self.caption.value = html_escape(self.caption_text)
+        self.display.refresh()
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the explorer (depth first)."""
+        self.display.close()
+        stack = [self.widget]
+        while stack:
+            widget = stack.pop()
+            stack.extend(getattr(widget, "children", ()))
+            widget.close()
+
+
+def _counter_table(counters) -> str:
+    rows = "".join(
+        f"<tr><td>{lab}</td><td>{e}</td><td>{f}</td><td>{p}</td></tr>"
+        for lab, e, f, p in counters.table()
+    )
+    return (
+        "<table><tr><th>block</th><th>empty</th><th>full</th><th>partial</th></tr>"
+        f"{rows}</table>"
+        f"pixel tests run: <b>{counters.pixel_tests}</b> · pixels filled with no test: "
+        f"<b>{counters.pixels_accepted}</b>"
+    )

@@ -1,0 +1,67 @@
+"""Exact pixel areas (the antialiasing ground truth) and the sample-count study."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import teachraster as tr
+from teachraster.study.antialiasing import (
+    coverage_error,
+    pixel_area,
+    sample_error_study,
+    study_triangles,
+)
+
+
+def test_float_area_equals_rational_area(rng):
+    for _ in range(10):
+        xy = rng.uniform(-3, 19, (3, 2))
+        fast, exact = pixel_area(xy, 16, 16), pixel_area(xy, 16, 16, exact=True)
+        np.testing.assert_allclose(fast, exact, rtol=0, atol=1e-12)
+        assert ((exact >= 0) & (exact <= 1)).all()
+
+
+def test_areas_add_up(rng):
+    for _ in range(10):
+        xy = rng.uniform(0, 16, (3, 2))  # inside the image: every bit of area lands somewhere
+        area = abs(tr.Triangle(tr.snap(xy)).signed_area)
+        assert pixel_area(xy, 16, 16).sum() == pytest.approx(area, abs=1e-9)
+    # a watertight grid of 2 triangles per cell: every pixel under it is covered exactly once
+    total = np.zeros((8, 8))
+    for x in range(0, 8, 2):
+        for y in range(0, 8, 2):
+            q = np.array([[x, y], [x + 2, y], [x + 2, y + 2], [x, y + 2]]) + 0.3
+            for tri in (q[[0, 1, 2]], q[[0, 2, 3]]):
+                total += pixel_area(tri, 8, 8, exact=True)
+    np.testing.assert_allclose(total[1:, 1:], 1.0, atol=1e-15)
+
+
+def test_dense_grid_of_samples_converges_to_the_area(rng):
+    """An independent estimate: 32 x 32 ordered samples per pixel."""
+    dense = tr.sample_pattern(1024, "grid")
+    for _ in range(5):
+        xy = rng.uniform(0, 12, (3, 2))
+        fill = tr.rasterize(tr.Triangle(xy), 12, 12, samples=dense)
+        # each edge crossing a pixel misplaces at most one row or column of 32 samples
+        assert np.abs(fill.coverage_fraction - pixel_area(xy, 12, 12)).max() <= 3 / 32
+
+
+def test_more_samples_less_error():
+    rows = sample_error_study(study_triangles(32, 6), size=32, counts=(1, 4, 16),
+                              kinds=("standard", "grid"), repeat=1)  # fmt: skip
+    err = {(r["kind"], r["samples"]): r["mean_error"] for r in rows}
+    assert err["standard", 16] < err["standard", 4] < err["standard", 1]
+    assert err["grid", 16] < err["grid", 4]
+    assert ("grid", 2) not in err and all(r["time_s"] > 0 for r in rows)
+    e = coverage_error(study_triangles(32, 6)[0], 32, 32, 4)
+    assert e.shape == (32, 32) and np.abs(e).max() <= 1
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="xy"):
+        pixel_area([[0, 0], [1, 1]], 4, 4)
+    with pytest.raises(ValueError, match="width"):
+        pixel_area([[0, 0], [1, 1], [0, 1]], 0, 4)
+    with pytest.raises(TypeError, match="exact"):
+        pixel_area([[0, 0], [1, 1], [0, 1]], 4, 4, exact="yes")

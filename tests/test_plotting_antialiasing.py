@@ -1,0 +1,77 @@
+"""Antialiasing plots: artists on the axes, data equal to the fill's samples, in-place updates."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster import plotting as tp  # noqa: E402
+from teachraster.study.antialiasing import pixel_area  # noqa: E402
+
+XY = np.array([[0.6, 0.4], [9.3, 2.1], [2.2, 7.7]])
+
+
+@pytest.fixture(autouse=True)
+def close_figures():
+    yield
+    plt.close("all")
+
+
+def on_axes(result, ax):
+    artists = list(result)
+    assert artists and all(a.axes is ax for a in artists)
+    return artists
+
+
+def test_plot_samples_shows_every_sample_where_it_is():
+    fill = tr.rasterize(tr.Triangle(XY), 10, 8, samples=4)
+    fig, ax = plt.subplots()
+    tp.plot_pixel_grid(ax, 10, 8)
+    result = tp.plot_samples(ax, fill)
+    on_axes(result, ax)
+    covered = result.covered.get_offsets()
+    assert len(covered) == fill.sample_coverage.sum()
+    i, j, s = np.nonzero(fill.sample_coverage)
+    want = np.column_stack([j + fill.samples[s, 0], i + fill.samples[s, 1]])
+    np.testing.assert_array_equal(np.asarray(covered), want)
+    x, _ = result.uncovered.get_data()
+    assert len(x) == (~fill.sample_coverage).sum()
+    # in place: another pattern and a frame with several triangles
+    clip = np.array([[[-1, 1, 0, 1], [1, 1, 0, 1], [-1, -1, 0, 1]],
+                     [[1, 1, 0.5, 1], [1, -1, 0.5, 1], [-1, -1, 0.5, 1]]], float)  # fmt: skip
+    frame = tr.render(clip, 10, 8, samples=16)
+    result.update(frame)
+    assert len(result.covered.get_offsets()) == 10 * 8 * 16  # watertight: every sample
+    assert len({tuple(c) for c in result.covered.get_facecolor()}) == 2  # two triangles
+    with pytest.raises(ValueError, match="samples"):
+        tp.plot_samples(ax, tr.rasterize(tr.Triangle(XY), 10, 8))
+
+
+def test_fraction_and_error_images():
+    fill = tr.rasterize(tr.Triangle(XY), 10, 8, samples=8)
+    fig, (a, b) = plt.subplots(1, 2)
+    frac = tp.plot_coverage_fraction(a, fill)
+    on_axes(frac, a)
+    area = pixel_area(XY, 10, 8)
+    err = tp.plot_area_error(b, fill, area)
+    on_axes(err, b)
+    shown = np.asarray(err.image.get_array()).reshape(8, 10)
+    want = fill.coverage_fraction - area
+    keep = (fill.coverage_fraction > 0) | (area > 0)
+    np.testing.assert_allclose(shown[keep], want[keep])
+    assert f"max {np.abs(want[keep]).max():.3f}" in b.get_title()
+
+
+def test_pixel_inspector_plot_labels_samples_with_edge_values():
+    fill = tr.rasterize(tr.Triangle(XY), 10, 8, samples=4, trace=True)
+    fig, ax = plt.subplots()
+    result = tp.plot_pixel_samples(ax, fill, 2, 6)
+    on_axes(result, ax)
+    assert len(result.dots) == 4 and len(result.labels) == 4
+    e = fill.trace.samples.edge_values(2, 6)
+    assert f"E0={e[0, 0]:+.3g}" in result.labels[0].get_text()
+    assert "4 of 4" in ax.get_title()

@@ -1,0 +1,397 @@
+"""The tiled fill (``method="tiled"``): exact coverage, block classification, counters, orders.
+
+Every classification is re-derived here from exact integer edge values at the four extreme
+pixel centres of each block (written from CONVENTIONS.md with conftest's reference helpers,
+not from the package code), and coverage is compared with the exact reference and with the
+half-plane fill.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import (
+    KINDS,
+    any_triangle,
+    edge_exact,
+    explain,
+    random_triangles,
+    raster,
+    reference_coverage,
+    snapped_vertices,
+    tie_coords,
+    top_left,
+    triangles,
+)
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import teachraster as tr
+from teachraster.core import fixed_point as fp
+from teachraster.core import traversal as tv
+from teachraster.study import hardcases as hc
+
+W, H = 13, 11
+SIZES = [(64, 16, 4), (8, 4, 2, 1), (4,), (6, 3), (16, 8)]
+
+
+def tiled(xy, width, height, **kwargs):
+    return tr.rasterize(tr.Triangle(xy), width, height, method="tiled", **kwargs)
+
+
+# -- coverage ------------------------------------------------------------------------------------
+@pytest.mark.parametrize("kind", KINDS)
+def test_bulk_random_triangles_match_reference(kind):
+    """600 seeded triangles per kind and block sizes: tiled == exact reference == half-plane."""
+    rng = np.random.default_rng(1300 + KINDS.index(kind))
+    for n, xy in enumerate(random_triangles(rng, kind, 600, W, H)):
+        want = reference_coverage(xy, W, H)
+        got = raster(xy, W, H, method="tiled", block_sizes=SIZES[n % len(SIZES)])
+        assert np.array_equal(got, want), explain(xy, got, want)
+
+
+@pytest.mark.parametrize("bits", [None, 0, 4, 16])
+def test_other_precisions_match_halfplane(bits):
+    """Raw floats and other grids: tiled == half-plane (== span), triangle after triangle."""
+    rng = np.random.default_rng(1400 + (bits or 99))
+    for kind in ("float", "tie", "outside", "huge"):
+        for n, xy in enumerate(random_triangles(rng, kind, 150, 37, 29)):
+            want = raster(xy, 37, 29, subpixel_bits=bits)
+            got = raster(xy, 37, 29, method="tiled", subpixel_bits=bits, block_sizes=SIZES[n % 5])
+            assert np.array_equal(got, want), explain(xy, got, want)
+
+
+def test_large_image_several_top_blocks_match():
+    """Images larger and not multiples of 64: blocks clipped at the border, still exact."""
+    rng = np.random.default_rng(15)
+    for xy in rng.uniform(-20, 220, size=(60, 3, 2)):
+        want = raster(xy, 203, 141)
+        assert np.array_equal(raster(xy, 203, 141, method="tiled"), want), xy.tolist()
+
+
+@settings(max_examples=300, deadline=None)
+@given(any_triangle, st.sampled_from(SIZES))
+def test_hypothesis_tiled_equals_reference(xy, sizes):
+    want = reference_coverage(xy, W, H)
+    got = raster(xy, W, H, method="tiled", block_sizes=sizes)
+    assert np.array_equal(got, want), explain(xy, got, want)
+
+
+@settings(max_examples=150, deadline=None)
+@given(triangles(tie_coords(7)), st.sampled_from([(4, 2, 1), (2, 1), (8, 2)]))
+def test_hypothesis_ties_on_block_corners(xy, sizes):
+    """Half-pixel lattice: edges run through block corners' centres all the time."""
+    want = reference_coverage(xy, 8, 8)
+    got = raster(xy, 8, 8, method="tiled", block_sizes=sizes)
+    assert np.array_equal(got, want), explain(xy, got, want)
+
+
+SCREEN_CASES = [name for name, case in hc.CASES.items() if case.triangles is not None]
+
+
+@pytest.mark.parametrize("name", SCREEN_CASES)
+def test_every_hard_case_triangle_matches_halfplane(name):
+    """Every triangle of every screen-space hard case fills the same pixels tiled."""
+    case = hc.get_case(name)
+    width, height = case.inputs["size"]
+    for xy in case.triangles:
+        for sizes in [(64, 16, 4), (2, 1)]:
+            want = raster(xy, width, height)
+            got = raster(xy, width, height, method="tiled", block_sizes=sizes)
+            assert np.array_equal(got, want), explain(xy, got, want)
+
+
+# -- blocks --------------------------------------------------------------------------------------
+def exact_classification(xy, trace, b, bits=8):
+    """Kind and (max, min) per edge of block ``b`` from exact integer corner values."""
+    scale = 2 ** (bits + 1)
+    v = [(int(x * scale), int(y * scale)) for x, y in snapped_vertices(xy, bits)]
+    if edge_exact(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    row, col = int(trace.row[b]), int(trace.col[b])
+    rows, cols = (int(n) for n in trace.extent[b])
+    corners = [
+        (c * scale + scale // 2, r * scale + scale // 2)
+        for r in (row, row + rows - 1)
+        for c in (col, col + cols - 1)
+    ]
+    passes, extremes = [], []
+    for k in range(3):
+        a, c = v[k], v[(k + 1) % 3]
+        values = [edge_exact(a, c, p) for p in corners]
+        bias = 0 if top_left(a, c) else 1
+        passes.append([e >= bias for e in values])
+        extremes.append((max(values), min(values)))
+    exact_classification.crossing = [any(p) and not all(p) for p in passes]
+    if any(not any(p) for p in passes):
+        return "rejected", extremes
+    if all(all(p) for p in passes):
+        return "accepted", extremes
+    return "partial", extremes
+
+
+def check_blocks(xy, width, height, sizes):
+    fill = tiled(xy, width, height, block_sizes=sizes, trace=True)
+    t, cov = fill.trace.blocks, fill.coverage
+    for b in range(len(t)):
+        kind, extremes = exact_classification(xy, t, b)
+        assert t.kind[b] == kind, (xy.tolist(), b)
+        assert t.crossing[b].tolist() == exact_classification.crossing
+        assert [tuple(e) for e in zip(t.e_max[b].tolist(), t.e_min[b].tolist())] == extremes
+        r, c = int(t.row[b]), int(t.col[b])
+        block = cov[r : r + t.extent[b, 0], c : c + t.extent[b, 1]]
+        assert block.shape == tuple(t.extent[b])
+        assert t.size[b] == sizes[t.level[b]]
+        assert r % t.size[b] == 0 and c % t.size[b] == 0  # on the image grid
+        if kind == "accepted":
+            assert block.all()
+        if kind == "rejected":
+            assert not block.any()
+        assert t.covered[b] == block.sum()
+    return fill
+
+
+def test_classification_rederived_exactly():
+    """Each block's kind and corner extremes equal the exact integer re-derivation."""
+    rng = np.random.default_rng(16)
+    for n, xy in enumerate(random_triangles(rng, "float", 40, 45, 37)):
+        check_blocks(xy, 45, 37, [(16, 4), (8, 4, 2, 1), (64, 16, 4)][n % 3])
+    for xy in random_triangles(rng, "tie", 40, 9, 9):
+        check_blocks(xy, 9, 9, (4, 2, 1))
+
+
+def test_hierarchy_is_complete_and_depth_first():
+    """Top blocks tile the box's block range; partial blocks (only) have all their children
+    inside the image; parents come before their children, children right after each other."""
+    xy = np.array([[3.3, 2.1], [140.2, 30.7], [40.9, 120.4]])
+    fill = tiled(xy, 150, 130, trace=True)
+    t, box = fill.trace.blocks, fill.trace.bbox
+    top = np.flatnonzero(t.level == 0)
+    want = {
+        (r, c)
+        for r in range(box.row0 // 64 * 64, box.row1, 64)
+        for c in range(box.col0 // 64 * 64, box.col1, 64)
+    }
+    assert {(int(t.row[b]), int(t.col[b])) for b in top} == want
+    for b in range(len(t)):
+        kids = np.flatnonzero(t.parent == b)
+        if t.kind[b] != "partial" or t.level[b] == 2:
+            assert len(kids) == 0
+            continue
+        s = t.block_sizes[t.level[b] + 1]
+        expected = {
+            (int(t.row[b]) + i, int(t.col[b]) + j)
+            for i in range(0, t.size[b], s)
+            for j in range(0, t.size[b], s)
+            if t.row[b] + i < 130 and t.col[b] + j < 150
+        }
+        assert {(int(t.row[k]), int(t.col[k])) for k in kids} == expected
+        assert kids.min() > b
+    assert (t.parent < np.arange(len(t))).all()
+    np.testing.assert_array_equal(t.visit_order("scanline"), np.arange(len(t)))
+
+
+def test_counters_consistent_with_blocks():
+    rng = np.random.default_rng(17)
+    for xy in random_triangles(rng, "outside", 30, 90, 70):
+        fill = tiled(xy, 90, 70, block_sizes=(32, 8, 2), trace=True)
+        t = fill.trace.blocks
+        c = t.counters
+        for lev, size in enumerate((32, 8, 2)):
+            at = t.level == lev
+            assert c.empty[lev] == np.sum(at & (t.kind == "rejected"))
+            assert c.full[lev] == np.sum(at & (t.kind == "accepted"))
+            assert c.partial[lev] == np.sum(at & (t.kind == "partial"))
+            assert (t.size[at] == size).all()
+        smallest = (t.level == 2) & (t.kind == "partial")
+        assert c.pixel_tests == int(np.prod(t.extent[smallest], axis=1).sum())
+        assert c.pixel_tests == t.pixel_tests.sum()
+        assert c.non_empty == int((t.covered[smallest] > 0).sum())
+        accepted = t.kind == "accepted"
+        assert c.pixels_accepted == int(np.prod(t.extent[accepted], axis=1).sum())
+        assert c.pixels_accepted + t.covered[smallest].sum() == fill.coverage.sum()
+        assert c.blocks == len(t)
+        # the pixel tests never exceed the half-plane fill's (the bounding box) by more than
+        # the smallest partial blocks' overhang
+        assert c.pixel_tests <= fill.trace.bbox.size + 4 * 2 * (90 + 70)
+
+
+def test_zero_area_and_empty_box_classify_no_block():
+    for xy in ([[1, 1], [5, 5], [9, 9]], [[2, 2], [2, 2], [2, 2]], [[-9, -9], [-5, -9], [-7, -2]]):
+        fill = tiled(np.array(xy, float), 16, 16, trace=True)
+        assert len(fill.trace.blocks) == 0 and fill.trace.blocks.counters.blocks == 0
+        assert not fill.coverage.any()
+        assert len(fill.trace) == len(fill.trace.setup) + 1
+
+
+def test_trace_steps_and_captions():
+    xy = np.array([[1.3, 2.2], [60.7, 10.1], [20.5, 50.9]])
+    fill = tiled(xy, 64, 64, trace=True)
+    trace, t = fill.trace, fill.trace.blocks
+    assert trace.method == "tiled" and trace.halfplane is None and trace.span is None
+    steps = list(trace)
+    work = [s for s in steps if s.kind == "block"]
+    assert len(work) == len(t) == trace.n_work
+    assert any(s.kind == "blocks" for s in steps)
+    for s, b in zip(work, range(len(t))):
+        assert (s.row, s.col) == (t.row[b], t.col[b])
+        assert t.kind[b] in s.caption and f"{t.size[b]}×{t.size[b]}" in s.caption
+    np.testing.assert_array_equal(trace.coverage_at(-1), fill.coverage)
+    # a pixel is filled at the step of its accepted block or its smallest partial block
+    filled = trace.filled_at[trace.covered]
+    for k in np.unique(filled):
+        b = int(k) - trace.first_work_step
+        assert t.kind[b] == "accepted" or (t.kind[b] == "partial" and t.level[b] == 2)
+    box = trace.bbox
+    local = fill.coverage[box.row0 : box.row1, box.col0 : box.col1]
+    np.testing.assert_array_equal(trace.filled_at >= 0, local)
+
+
+def test_recording_never_changes_the_result():
+    rng = np.random.default_rng(18)
+    for xy in random_triangles(rng, "float", 50, W, H):
+        tri = tr.Triangle(xy, attrs={"u": [0.0, 1.0, 2.0]})
+        a = tr.rasterize(tri, W, H, method="tiled")
+        b = tr.rasterize(tri, W, H, method="tiled", trace=True)
+        c = tr.rasterize(tri, W, H)
+        np.testing.assert_array_equal(a.coverage, b.coverage)
+        np.testing.assert_array_equal(a.attrs["u"], c.attrs["u"])
+
+
+# -- traversal orders ----------------------------------------------------------------------------
+@pytest.mark.parametrize("order", tv.TRAVERSALS)
+@pytest.mark.parametrize("shape", [(1, 1), (3, 5), (8, 8), (7, 12)])
+def test_traversals_are_permutations(order, shape):
+    cells = tv.traversal_order(shape, order)
+    assert len(cells) == shape[0] * shape[1]
+    assert len({tuple(c) for c in cells.tolist()}) == len(cells)
+    index = tv.visit_index(shape, order)
+    assert sorted(index.ravel().tolist()) == list(range(len(cells)))
+
+
+def test_traversal_properties():
+    serp = tv.traversal_order((5, 7), "serpentine")
+    assert (np.abs(np.diff(serp, axis=0)).sum(axis=1) == 1).all()  # always a 4-neighbour
+    tiles4 = tv.traversal_order((8, 8), "tiled", tile=4)
+    for t in range(4):  # each 4x4 tile is visited in one go
+        chunk = tiles4[16 * t : 16 * (t + 1)] // 4
+        assert (chunk == chunk[0]).all()
+    z = tv.traversal_order((4, 4), "morton")
+    assert z[:4].tolist() == [[0, 0], [0, 1], [1, 0], [1, 1]]
+    assert z[4:8].tolist() == [[0, 2], [0, 3], [1, 2], [1, 3]]
+    for k in (2, 4):  # every aligned k x k square is contiguous
+        chunks = z.reshape(-1, k * k, 2) // k
+        assert (chunks == chunks[:, :1]).all()
+
+
+@pytest.mark.parametrize("order", tv.TRAVERSALS)
+def test_block_visit_orders_are_depth_first_permutations(order):
+    xy = np.array([[3.3, 2.1], [140.2, 30.7], [40.9, 120.4]])
+    t = tiled(xy, 150, 130, trace=True).trace.blocks
+    perm = t.visit_order(order)
+    assert sorted(perm.tolist()) == list(range(len(t)))
+    position = np.empty(len(t), dtype=int)
+    position[perm] = np.arange(len(t))
+    has_parent = t.parent >= 0
+    assert (position[t.parent[has_parent]] < position[has_parent]).all()
+
+
+# -- fixed point ---------------------------------------------------------------------------------
+def test_bit_budget_terms():
+    b = fp.bit_budget(1024, 8, 32)
+    assert (b.units_per_pixel, b.delta_bits, b.product_bits, b.edge_bits, b.needed) == (
+        512, 20, 40, 41, 42,
+    )  # fmt: skip
+    assert not b.fits and b.headroom == -10 and "NOT fit" in b.lines()[-1]
+    assert fp.bit_budget(1024, 8, 64).fits
+    for bits in (0, 4, 8, 12):
+        for width in (16, 32, 64):
+            m = fp.max_extent(bits, width)
+            if m:
+                assert fp.bit_budget(m, bits, width).fits
+            assert not fp.bit_budget(m + 1, bits, width).fits
+    # teachraster's own guard band: |coordinate| < 2**30 units fits int64
+    assert fp.max_extent(8, 64) * 512 >= 2**31 - 512
+
+
+def test_exact_edge_values_fit_the_budget():
+    """Every edge value the walk produced is below the budget's bound."""
+    rng = np.random.default_rng(19)
+    for xy in random_triangles(rng, "outside", 40, 60, 50):
+        t = tiled(xy, 60, 50, trace=True).trace.blocks
+        b = fp.bit_budget(fp.fill_extent(xy, 60, 50), 8, 64)
+        for values in (t.e_max, t.e_min):
+            assert (np.abs(values.astype(object)) < 2**b.edge_bits).all()
+
+
+def test_narrow_registers_overflow_when_over_budget():
+    xy = np.array([[10.2, 20.3], [1000.1, 60.2], [200.7, 1000.4]])
+    tri = tr.Triangle(xy)
+    narrow = fp.narrow_fill(tri, 1024, 1024, int_bits=32)
+    assert not narrow.budget.fits
+    assert narrow.wrong.sum() > 1000  # wrapped values accept and reject the wrong blocks
+    np.testing.assert_array_equal(narrow.exact, tr.rasterize(tri, 1024, 1024).coverage)
+    wide = fp.narrow_fill(tri, 1024, 1024, int_bits=64)
+    assert wide.budget.fits and not wide.wrong.any()
+
+
+def test_narrow_registers_exact_within_budget():
+    rng = np.random.default_rng(20)
+    checked = 0
+    for xy in rng.uniform(0, 30, size=(200, 3, 2)):
+        tri = tr.Triangle(xy)
+        r = fp.narrow_fill(tri, 30, 30, int_bits=32, block_sizes=(16, 4))
+        assert r.budget.fits
+        np.testing.assert_array_equal(r.coverage, r.exact)
+        checked += 1
+    assert checked == 200
+
+
+# -- bad input -----------------------------------------------------------------------------------
+@pytest.mark.parametrize("sizes", [(64, 16, 5), (0,), (), (16, 16), (4, 8), (-4,)])
+def test_bad_block_sizes_name_the_argument(sizes):
+    with pytest.raises(ValueError, match="block_sizes"):
+        tiled([[0, 0], [4, 0], [0, 4]], 8, 8, block_sizes=sizes)
+
+
+@pytest.mark.parametrize("sizes", ["64", 4, (4.5,), (True,), None])
+def test_block_sizes_of_wrong_type(sizes):
+    with pytest.raises(TypeError, match="block_sizes"):
+        tiled([[0, 0], [4, 0], [0, 4]], 8, 8, block_sizes=sizes)
+
+
+def test_numpy_block_sizes_are_accepted():
+    xy = [[0.2, 0.1], [7.7, 0.4], [0.3, 6.6]]
+    np.testing.assert_array_equal(
+        raster(xy, 8, 8, method="tiled", block_sizes=np.array([4, 2])), raster(xy, 8, 8)
+    )
+
+
+def test_fixed_point_bad_input():
+    tri = tr.Triangle([[0, 0], [4, 0], [0, 4]])
+    with pytest.raises(ValueError, match="int_bits"):
+        fp.narrow_fill(tri, 8, 8, int_bits=24)
+    with pytest.raises(ValueError, match="subpixel_bits"):
+        fp.narrow_fill(tri, 8, 8, subpixel_bits=None)
+    with pytest.raises(TypeError, match="tri"):
+        fp.narrow_fill([[0, 0], [4, 0], [0, 4]], 8, 8)
+    with pytest.raises(ValueError, match="extent_px"):
+        fp.bit_budget(0)
+    with pytest.raises(ValueError, match="traversal"):
+        tv.traversal_order((2, 2), "hilbert")
+
+
+def test_tiles_benchmark_quick_run_succeeds(capsys):
+    """The benchmark script runs (speed itself is never asserted)."""
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_tiles.py"
+    spec = importlib.util.spec_from_file_location("bench_tiles", path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["bench_tiles"] = module
+    spec.loader.exec_module(module)
+    assert module.main(["--quick", "--repeat", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "counters: 64×64" in out and "tests per pixel" in out

@@ -1,0 +1,213 @@
+"""Plots and the widget of the tiled fill: what they draw matches the trace, in place."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib.colors import to_rgba  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster import plotting as tp  # noqa: E402
+from teachraster.core.traversal import TRAVERSALS, visit_index  # noqa: E402
+from teachraster.widgets import TileExplorer  # noqa: E402
+
+XY = [[3.3, 2.1], [60.2, 14.7], [20.9, 58.4]]
+
+
+@pytest.fixture
+def fill():
+    return tr.rasterize(tr.Triangle(XY), 64, 64, method="tiled", block_sizes=(16, 4, 1), trace=True)
+
+
+@pytest.fixture
+def ax():
+    fig, ax = plt.subplots()
+    yield ax
+    plt.close(fig)
+
+
+def visible(artists):
+    return artists.blocks.get_facecolor()[:, 3] > 0
+
+
+def test_plot_blocks_colours_every_block_by_kind(fill, ax):
+    blocks = fill.trace.blocks
+    art = tp.plot_blocks(ax, fill)
+    assert len(art.blocks.get_paths()) == len(blocks)
+    faces = art.blocks.get_facecolor()
+    for i, b in enumerate(art.order):
+        want = to_rgba(tp.BLOCK_COLORS[blocks.kind[b]], 0.45)
+        np.testing.assert_allclose(faces[i], want)
+        verts = art.blocks.get_paths()[i].vertices
+        assert verts[:, 0].min() == blocks.col[b] and verts[:, 1].min() == blocks.row[b]
+        assert verts[:, 0].max() - verts[:, 0].min() == blocks.extent[b, 1]
+
+
+def test_plot_blocks_levels_and_steps_update_in_place(fill, ax):
+    blocks = fill.trace.blocks
+    art = tp.plot_blocks(ax, fill, level=0)
+    coll = art.blocks
+    assert visible(art).sum() == (blocks.level == 0).sum()
+    for lev in range(3):
+        art.show(tp.block_mask(blocks, level=lev))
+        assert art.blocks is coll
+        shown = blocks.level[art.order][visible(art)]
+        assert (shown <= lev).all() and (shown == lev).sum() == (blocks.level == lev).sum()
+    art.show(tp.block_mask(blocks, upto=9, traversal="morton"))
+    assert visible(art).sum() == 10
+    assert set(art.order[visible(art)]) == set(blocks.visit_order("morton")[:10].tolist())
+
+
+def test_hierarchy_and_counters(fill):
+    fig, axes = plt.subplots(1, 4)
+    try:
+        arts = tp.plot_hierarchy(axes[:3], fill)
+        c = fill.trace.blocks.counters
+        assert len(arts) == 3
+        for lev, a in enumerate(axes[:3]):
+            assert f"{c.empty[lev]} rejected, {c.full[lev]} accepted" in a.get_title()
+        table = tp.plot_block_counters(axes[3], fill).table
+        cells = {k: v.get_text().get_text() for k, v in table.get_celld().items()}
+        for r, (lab, e, f, p) in enumerate(c.table(), start=1):
+            assert [cells[(r, j)] for j in range(4)] == [lab, str(e), str(f), str(p)]
+        with pytest.raises(ValueError, match="Axes"):
+            tp.plot_hierarchy(axes[:2], fill)
+    finally:
+        plt.close(fig)
+
+
+@pytest.mark.parametrize("traversal", TRAVERSALS)
+def test_plot_traversal_shows_the_visit_index(ax, traversal):
+    art = tp.plot_traversal(ax, 8, 6, traversal)
+    np.testing.assert_array_equal(np.asarray(art.image.get_array()).reshape(6, 8),
+                                  visit_index((6, 8), traversal))  # fmt: skip
+    assert len(art.texts) == 48
+
+
+def test_plots_refuse_other_fills(ax):
+    half = tr.rasterize(tr.Triangle(XY), 64, 64, trace=True)
+    with pytest.raises(ValueError, match="tiled"):
+        tp.plot_blocks(ax, half)
+    with pytest.raises(ValueError, match="trace"):
+        tp.plot_blocks(ax, tr.rasterize(tr.Triangle(XY), 64, 64, method="tiled"))
+
+
+# -- widget -------------------------------------------------------------------------------------
+@pytest.fixture
+def explorer():
+    ex = TileExplorer(tr.Triangle(XY), 64, 64, block_sizes=(16, 4, 1), backend="image")
+    yield ex
+    ex.close()
+
+
+def test_level_slider_walks_the_hierarchy(explorer):
+    blocks = explorer.blocks
+    pngs = set()
+    for lev in range(3):
+        explorer.level.value = lev
+        np.testing.assert_array_equal(explorer.shown, tp.block_mask(blocks, level=lev))
+        np.testing.assert_array_equal(
+            visible(explorer.artists), explorer.shown[explorer.artists.order]
+        )
+        assert f"level {lev}" in explorer.caption_text
+        pngs.add(bytes(explorer.display.widget.value))
+    assert len(pngs) == 3
+
+
+def test_block_slider_follows_the_traversal(explorer):
+    explorer.traversal.value = "serpentine"
+    order = explorer.blocks.visit_order("serpentine")
+    assert explorer.block.max == len(order)
+    for k in (1, 5, len(order), 0):
+        explorer.block.value = k
+        assert explorer.shown.sum() == k
+        if k:
+            assert explorer.caption_text.endswith(
+                explorer.blocks.caption(int(order[k - 1]), explorer.fill.trace.edges)
+            )
+    assert "serpentine order" in explorer.caption_text
+
+
+def test_block_sizes_menu_refills(explorer):
+    before = explorer.blocks.counters
+    explorer.sizes.value = (8, 2)
+    assert explorer.blocks.block_sizes == (8, 2) and explorer.level.max == 1
+    assert explorer.blocks.counters != before
+    assert len(explorer.artists.blocks.get_paths()) == len(explorer.blocks)
+    assert "pixel tests run" in explorer.counters.value
+
+
+def test_degenerate_triangle_never_raises():
+    ex = TileExplorer(tr.Triangle([[1, 1], [5, 5], [9, 9]]), 16, 16, backend="image")
+    try:
+        ex.show_block(0)
+        assert "no block" in ex.caption_text
+        ex.level.value = 2
+    finally:
+        ex.close()
+
+
+def test_plot_early_z_counts_per_pixel(ax):
+    from teachraster.pipeline.scenes import get_scene
+
+    clip = get_scene("cube").clip(80 / 60)
+    frame = tr.render(clip, 80, 60, trace=True)
+    c = frame.trace.hiz.counts
+    totals = {k: int(tp.early_z_counts(frame, k).sum()) for k in ("hi_z", "early_z", "shaded")}
+    assert totals == {
+        "hi_z": c["hiz_rejected"],
+        "early_z": c["early_z_killed"],
+        "shaded": c["shaded"],
+    }
+    art = tp.plot_early_z(ax, frame, "shaded")
+    assert f"{c['shaded']:,} fragments shaded" in ax.get_title()
+    assert art.colorbar is not None
+    with pytest.raises(ValueError, match="trace=True"):
+        tp.early_z_counts(tr.render(clip, 80, 60))
+    with pytest.raises(ValueError, match="kind"):
+        tp.early_z_counts(frame, "late_z")
+
+
+def test_fill_player_steps_through_blocks():
+    from teachraster.widgets import FillPlayer
+
+    player = FillPlayer(tr.Triangle(XY), 64, 64, method="tiled", backend="image")
+    try:
+        trace = player.trace
+        assert trace.blocks is not None
+        k = trace.first_work_step + 2
+        player.slider.value = k
+        assert player.caption_text == trace.caption(k) and "block" in player.caption_text
+        np.testing.assert_array_equal(
+            np.asarray(player.view.coverage.image.get_array()).astype(bool), trace.coverage_at(k)
+        )
+        player.method.value = "span"
+        assert player.trace.span is not None
+    finally:
+        player.close()
+
+
+def test_cli_fill_with_tiles(tmp_path):
+    from teachraster.cli import main
+
+    out = tmp_path / "tiles.png"
+    assert (
+        main(["fill", "--xy", "2.2,1.5 13.7,5.2 5.1,12.8", "--method", "tiled", "-o", str(out)])
+        == 0
+    )
+    assert out.read_bytes().startswith(b"\x89PNG")
+
+
+@pytest.mark.parametrize("traversal", TRAVERSALS)
+def test_plot_block_path_follows_the_visit_order(fill, ax, traversal):
+    blocks = fill.trace.blocks
+    art = tp.plot_block_path(ax, fill, traversal, level=1)
+    order = blocks.visit_order(traversal)
+    order = order[blocks.level[order] == 1]
+    x, y = art.path.get_data()
+    np.testing.assert_array_equal(x, blocks.col[order] + blocks.extent[order, 1] / 2)
+    np.testing.assert_array_equal(y, blocks.row[order] + blocks.extent[order, 0] / 2)
+    assert f"{len(order)} blocks of 4×4" in ax.get_title()

@@ -1,0 +1,74 @@
+"""PixelInspector: driven from code like a student would, its figure follows the controls."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.widgets import PixelInspector  # noqa: E402
+from teachraster.widgets.common import SAMPLE_PATTERNS as PATTERNS  # noqa: E402
+from teachraster.widgets.common import pattern_samples  # noqa: E402
+
+
+@pytest.fixture
+def scene():
+    return np.array([[[-1, 1, 0, 1], [1, 1, 0, 1], [-1, -1, 0, 1]],
+                     [[1, 1, 0.5, 1], [1, -1, 0.5, 1], [-1, -1, 0.5, 1]]], float)  # fmt: skip
+
+
+def test_every_pattern_and_pixel_of_a_scene(scene):
+    w = PixelInspector(scene, 8, 6, backend="image")
+    try:
+        for label in PATTERNS:
+            w.pattern.value = label
+            n = PATTERNS[label][0]
+            assert w.result.sample_triangle_id.shape == (6, 8, n)
+            assert len(w.pixel.dots) == n and len(w.samples.covered.get_offsets()) == 6 * 8 * n
+        w.row.value, w.col.value = 3, 5
+        x, y = w.marker.get_data()
+        assert (min(x), min(y)) == (5, 3)
+        ids = w.result.sample_triangle_id[3, 5]
+        for s, label in enumerate(w.pixel.labels):
+            assert f"triangle {ids[s]}" in label.get_text()
+    finally:
+        w.close()
+
+
+def test_single_triangle_labels_edge_values():
+    tri = tr.Triangle([[0.6, 0.4], [9.3, 2.1], [2.2, 7.7]])
+    w = PixelInspector(tri, 10, 8, row=2, col=1, backend="image")
+    try:
+        e = w.result.trace.samples.edge_values(2, 1)
+        assert all(f"E2={e[s, 2]:+.3g}" in lab.get_text() for s, lab in enumerate(w.pixel.labels))
+        w.pattern.value = "1 (centre)"
+        assert w.result.sample_coverage.shape[2] == 1
+        assert isinstance(pattern_samples("4 ordered grid"), np.ndarray)
+    finally:
+        w.close()
+
+
+def test_fill_player_samples_chooser():
+    from teachraster.widgets import FillPlayer
+
+    tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], attrs={"u": [0, 1, 0]})
+    p = FillPlayer(tri, 16, 16, backend="image")
+    try:
+        assert p.sample_dots is None and p.fill.sample_coverage is None
+        p.slider.value = 12
+        p.samples.value = "4 standard (rotated grid)"
+        cov = p.fill.sample_coverage
+        assert cov.shape == (16, 16, 4)
+        assert len(p.sample_dots.covered.get_offsets()) == cov.sum()
+        assert p.slider.value == 12 and p.caption_text == p.trace.caption(12)
+        p.method.value = "halfplane"  # the samples follow the method change
+        assert p.fill.sample_coverage.shape == (16, 16, 4)
+        p.samples.value = "16 jittered"
+        assert len(p.sample_dots.covered.get_offsets()) == p.fill.sample_coverage.sum()
+        p.samples.value = "1 (centre)"
+        assert not p.sample_dots.covered.get_visible()
+        assert p.display.draws > 0
+    finally:
+        p.close()
