@@ -20,17 +20,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import teachraster as tr
-from teachraster.core import interpolation
 from teachraster.pipeline.clipping import CLIPPED, DEFAULT_GUARD, clip_triangles
 from teachraster.pipeline.zbuffer import passed_on_arrival, resolve
 
 W, H = 20, 16
-# Perspective-correct attributes at extreme w ratios need the convex weights of issue 9's
-# "NaN inside coverage" fix (core.interpolation.convex_weights, branch robust-input); until
-# that is merged, the properties below check screen-space ("affine") attributes.
-ATTRIBUTE_MODE = "perspective" if hasattr(interpolation, "convex_weights") else "affine"
-
-
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
@@ -124,7 +117,7 @@ def test_coordinates_near_the_float_maximum(tris, attrs):
     big = np.full((len(clip), 3, 1), 1.7e308)
     big[:, 1] = -1.7e308
     big[:, 2] = attrs * 1.7e308
-    frame = _strict(tr.render, huge, W, H, attrs=big, interpolation=ATTRIBUTE_MODE)
+    frame = _strict(tr.render, huge, W, H, attrs=big)
     values = frame.attrs[frame.coverage]
     assert np.isfinite(values).all() and (np.abs(values) <= 1.7e308).all()
 
@@ -245,7 +238,6 @@ def test_planned_equals_everything_on_at_the_extremes(tris, tiny, depth_format, 
     clip = np.concatenate([clip, clip[:1]])  # a depth tie
     attrs = np.linspace(0, 1, len(clip) * 3 * 2).reshape(len(clip), 3, 2)
     kw = {"attrs": attrs, "depth_format": depth_format, "depth_test": depth_test}
-    kw["interpolation"] = ATTRIBUTE_MODE
     planned = _strict(tr.render, clip, W, H, **kw)
     forced = _strict(tr.render, clip, W, H, force="all", **kw)
     np.testing.assert_array_equal(planned.triangle_id, forced.triangle_id)
