@@ -209,3 +209,48 @@ def test_lesson_01_plays_and_steps_in_the_browser(lab, page, tmp_path):
     _wait_changed(caption.inner_text, text1, "the caption after Play")
     page.screenshot(path=str(tmp_path / "lesson01_played.png"), full_page=False)
     assert not page.errors, f"errors in the page: {page.errors[:3]}"
+
+
+NOTEBOOKS = sorted(
+    str(p.relative_to(ROOT / "notebooks")) for p in (ROOT / "notebooks").rglob("*.ipynb")
+)
+
+
+def _shut_down_kernels(base: str) -> None:
+    """Stop every kernel the server runs, so notebooks opened one after another do not pile up."""
+    try:
+        with urllib.request.urlopen(f"{base}/api/kernels", timeout=10) as r:
+            kernels = json.load(r)
+        for k in kernels:
+            req = urllib.request.Request(f"{base}/api/kernels/{k['id']}", method="DELETE")
+            urllib.request.urlopen(req, timeout=10).close()
+    except OSError:
+        pass  # best effort: the server stops them all at the end anyway
+
+
+@pytest.mark.parametrize("name", NOTEBOOKS)
+def test_every_notebook_runs_in_the_browser(lab, page, name):
+    """Every lesson and exercise notebook runs top to bottom in JupyterLab in Chromium, as a
+    student would run it (Run All Cells): no error output, and its figures are on the page."""
+    page.goto(f"{lab}/lab/tree/{name}")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
+    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+    n_code = page.locator(".jp-Notebook .jp-CodeCell").count()
+    # Done when every code cell has an execution count ("[12]:"), none is queued or running.
+    page.wait_for_function(
+        """n => {
+            const prompts = [...document.querySelectorAll('.jp-Notebook .jp-CodeCell .jp-InputPrompt')];
+            return prompts.length === n && prompts.every(p => /\\[\\d+\\]/.test(p.textContent));
+        }""",
+        arg=n_code,
+        timeout=240_000,
+    )
+    errors = page.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
+    if errors.count():
+        pytest.fail(f"{name}: error output in the browser:\n{errors.first.inner_text()[-2000:]}")
+    figures = page.locator(".jp-OutputArea-output img")
+    assert figures.count() > 0, f"{name}: no figure on the page"
+    assert not page.errors, f"{name}: errors in the page: {page.errors[:3]}"
+    _shut_down_kernels(lab)

@@ -50,12 +50,22 @@ triangle = st.one_of(
 
 def _same_frame(a, b):
     """Same pixels and plan; depth equal up to the rounding of a clipped vertex (the same
-    point on its ray, reached from a different scale)."""
-    np.testing.assert_array_equal(a.triangle_id, b.triangle_id)
-    np.testing.assert_allclose(a.depth, b.depth, rtol=0, atol=1e-12)
+    point on its ray, reached from a different scale). A pixel may change hands only
+    between two triangles at the same depth there (an exact tie, such as a duplicate
+    triangle, that this rounding can break either way)."""
+    # 1e-9: a vertex at infinity (w = 0) is cut at the guard band, a million pixels away,
+    # where the depth plane is good to ~1e-11 only.
+    np.testing.assert_array_equal(a.coverage, b.coverage)
+    np.testing.assert_allclose(a.depth, b.depth, rtol=0, atol=1e-9)
+    swapped = a.triangle_id != b.triangle_id
+    assert (np.abs(a.depth - b.depth)[swapped] <= 1e-9).all()
     for name in ("clipping", "culling", "depth_test"):
         ea, eb = a.plan[name], b.plan[name]
-        assert (ea.ran, ea.count, ea.total, ea.why) == (eb.ran, eb.count, eb.total, eb.why)
+        assert (ea.ran, ea.count, ea.why) == (eb.ran, eb.count, eb.why)
+        # Culling's total counts the pieces clipping made; a polygon that degenerates to a
+        # ray through the eye may fan into a different number of zero-area pieces (a new
+        # corner lands on the origin, or a rounding away from it), which draw nothing.
+        assert name == "culling" or ea.total == eb.total
 
 
 @SETTINGS
@@ -232,7 +242,9 @@ def test_planned_equals_everything_on_at_the_extremes(tris, tiny, depth_format, 
     forced = _strict(tr.render, clip, W, H, force="all", **kw)
     np.testing.assert_array_equal(planned.triangle_id, forced.triangle_id)
     np.testing.assert_array_equal(planned.depth, forced.depth)
-    np.testing.assert_allclose(planned.attrs, forced.attrs, rtol=0, atol=1e-12)
+    # Vertices thousands of pixels away make the barycentrics of a pixel accurate to ~1e-12
+    # only; the forced divide by equal w renormalises them, the planned affine path does not.
+    np.testing.assert_allclose(planned.attrs, forced.attrs, rtol=0, atol=1e-9)
 
 
 @pytest.mark.parametrize("layers", [16, 4096])
