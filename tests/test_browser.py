@@ -232,21 +232,29 @@ def _shut_down_kernels(base: str) -> None:
 def test_every_notebook_runs_in_the_browser(lab, page, name):
     """Every lesson and exercise notebook runs top to bottom in JupyterLab in Chromium, as a
     student would run it (Run All Cells): no error output, and its figures are on the page."""
-    page.goto(f"{lab}/lab/tree/{name}")
+    _shut_down_kernels(lab)
+    # ?reset: a fresh workspace, so no tab of an earlier test is restored beside this one
+    page.goto(f"{lab}/lab/tree/{name}?reset")
     page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     n_code = page.locator(".jp-Notebook .jp-CodeCell").count()
     # Done when every code cell has an execution count ("[12]:"), none is queued or running.
-    page.wait_for_function(
-        """n => {
-            const prompts = [...document.querySelectorAll('.jp-Notebook .jp-CodeCell .jp-InputPrompt')];
-            return prompts.length === n && prompts.every(p => /\\[\\d+\\]/.test(p.textContent));
-        }""",
-        arg=n_code,
-        timeout=240_000,
-    )
+    from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+    try:
+        page.wait_for_function(
+            """n => {
+                const prompts = [...document.querySelectorAll('.jp-Notebook .jp-CodeCell .jp-InputPrompt')];
+                return prompts.length === n && prompts.every(p => /\\[\\d+\\]/.test(p.textContent));
+            }""",
+            arg=n_code,
+            timeout=240_000,
+        )
+    except PlaywrightTimeout:
+        prompts = page.locator(".jp-Notebook .jp-CodeCell .jp-InputPrompt").all_inner_texts()
+        pytest.fail(f"{name}: not every cell ran within 240 s; prompts: {prompts}")
     errors = page.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
     if errors.count():
         pytest.fail(f"{name}: error output in the browser:\n{errors.first.inner_text()[-2000:]}")
