@@ -40,6 +40,7 @@ import numpy as np
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from . import bench
+from .bench.groups import triangulate_grid
 
 #: Rough cost of each operation in cycles on a early-1990s floating-point unit (an addition
 #: 1, a multiply 3, a divide 20-40): the weights of :func:`cycles`.
@@ -176,12 +177,7 @@ def tie_mesh(size: int = 24, cells: int = 3, seed: int = 5) -> np.ndarray:
     jitter[[0, -1], :, 1] = 0
     jitter[:, [0, -1], 0] = 0
     g = g + jitter
-    tris = []
-    for r in range(cells):
-        for c in range(cells):
-            a, b, cc, d = g[r, c], g[r, c + 1], g[r + 1, c + 1], g[r + 1, c]
-            tris += [[a, b, cc], [a, cc, d]] if (r + c) % 2 else [[a, b, d], [b, cc, d]]
-    return np.array(tris)
+    return triangulate_grid(g)
 
 
 def rule_coverage(xy, width: int, height: int, rule: str) -> np.ndarray:

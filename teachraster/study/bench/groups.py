@@ -122,6 +122,18 @@ def random_triangles(size: int, seed: int = 6) -> np.ndarray:
     return np.concatenate([floats, ties])
 
 
+def triangulate_grid(g: np.ndarray) -> np.ndarray:
+    """Two triangles per cell of a (k+1, k+1, 2) grid of points, the diagonals alternating
+    like a checkerboard (so both diagonal directions, and every edge kind, occur)."""
+    cells = g.shape[0] - 1
+    tris = []
+    for r in range(cells):
+        for c in range(cells):
+            a, b, cc, d = g[r, c], g[r, c + 1], g[r + 1, c + 1], g[r + 1, c]
+            tris += [[a, b, cc], [a, cc, d]] if (r + c) % 2 else [[a, b, d], [b, cc, d]]
+    return np.array(tris)
+
+
 def jittered_mesh(size: int, cells: int = 4, seed: int = 3) -> np.ndarray:
     """A watertight mesh filling [1, size - 1]²: a grid of ``cells`` x ``cells`` quads with
     randomly moved inner vertices (border vertices slide along the border only), each quad
@@ -135,12 +147,7 @@ def jittered_mesh(size: int, cells: int = 4, seed: int = 3) -> np.ndarray:
     jitter[[0, -1], :, 1] = 0  # top and bottom rows stay on their lines
     jitter[:, [0, -1], 0] = 0  # left and right columns too
     g = g + jitter + 1.0
-    tris = []
-    for r in range(cells):
-        for c in range(cells):
-            a, b, cc, d = g[r, c], g[r, c + 1], g[r + 1, c + 1], g[r + 1, c]
-            tris += [[a, b, cc], [a, cc, d]] if (r + c) % 2 else [[a, b, d], [b, cc, d]]
-    return np.array(tris)
+    return triangulate_grid(g)
 
 
 def _scale_label(offset: int) -> str:
