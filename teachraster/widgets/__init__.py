@@ -23,6 +23,8 @@ Widgets
 - :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
   chooser: the filtered image, the mip level per pixel and the error against the true
   footprint average (lesson 09).
+- :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
+  plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
 
 Figures
 -------
@@ -42,20 +44,26 @@ Example
 >>> player.close()
 """
 
+from .case_picker import CasePicker
+from .depth_explorer import DepthPrecisionExplorer
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
 from .inspector import PixelInspector
+from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .textured import TexturedPlaneViewer
 from .tiles import TileExplorer
 
 __all__ = [
     "BACKENDS",
+    "CasePicker",
+    "DepthPrecisionExplorer",
     "FigureDisplay",
     "FilterExplorer",
     "FillPlayer",
     "PixelInspector",
+    "PlaneExplorer",
     "TexturedPlaneViewer",
     "TileExplorer",
     "TriangleEditor",
