@@ -34,6 +34,8 @@ class BuildPyWithCourse(build_py):
         if not source.is_dir():  # building from an sdist without notebooks: nothing to add
             return
         target = Path(self.build_lib) / "teachraster" / "course" / "notebooks"
+        # A build directory left from an earlier build may hold lessons renamed since.
+        shutil.rmtree(target, ignore_errors=True)
         (target / "exercises").mkdir(parents=True, exist_ok=True)
         for lesson in sorted(source.glob("*.ipynb")):
             shutil.copyfile(lesson, target / lesson.name)
