@@ -56,7 +56,8 @@ def convex_weights(lam: np.ndarray) -> np.ndarray:
     lam = np.asarray(lam, dtype=np.float64)
     if lam.size == 0 or _plainly_convex(lam):
         return lam
-    ok = ((lam >= 0) & (lam < np.inf)).all(axis=-1)  # NaN fails both tests
+    fine = (lam >= 0) & (lam < np.inf)  # NaN fails both tests
+    ok = fine[..., 0] & fine[..., 1] & fine[..., 2]  # (faster than .all(axis=-1))
     with np.errstate(invalid="ignore", over="ignore"):  # inf - inf, 1e308 + 1e308: fixed below
         total = lam[..., 0] + lam[..., 1] + lam[..., 2]
     fix = ~ok | ~((total > 0) & (total < np.inf))
@@ -132,8 +133,9 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
         lam = convex_weights(lam)
     # λ_i / w_i is affine in screen space, like 1/w itself. Only the ratios of w matter,
     # so scale by each row's smallest w: 1/w alone overflows for tiny (even subnormal) w.
-    with np.errstate(under="ignore"):
-        q = lam * (w.min(axis=-1, keepdims=True) / w)
+    smallest = np.minimum(np.minimum(w[..., 0], w[..., 1]), w[..., 2])[..., None]
+    with np.errstate(under="ignore"):  # (a reduction over an axis of 3 is slow in numpy)
+        q = lam * (smallest / w)
     total = q[..., 0] + q[..., 1] + q[..., 2]
     if extrapolate:
         with np.errstate(divide="ignore", invalid="ignore"):

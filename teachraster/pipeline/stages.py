@@ -227,12 +227,14 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
     weights = frags.weights_at(tri, frags.col[shade] + 0.5, frags.row[shade] + 0.5)
-    # Weights from the unsnapped set-up can be slightly negative at a covered centre that
-    # snapping brought inside an edge: made convex, so every value stays within range.
-    weights = convex_weights(weights)
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
+    # Weights from the unsnapped set-up can be slightly negative at a covered centre that
+    # snapping brought inside an edge: made convex, so every value stays within range
+    # (weights_per_row does that itself, so the common all-perspective case does it once).
     if persp.all():  # f/w and 1/w are affine in screen space (no masking needed)
         weights = weights_per_row(weights, w[tri])
-    elif persp.any():
-        weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
+    else:
+        weights = convex_weights(weights)
+        if persp.any():
+            weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
     return blend_each(weights, attrs, index=tri)
