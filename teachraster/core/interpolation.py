@@ -56,11 +56,12 @@ def convex_weights(lam: np.ndarray) -> np.ndarray:
     lam = np.asarray(lam, dtype=np.float64)
     if lam.size == 0 or _plainly_convex(lam):
         return lam
-    fine = (lam >= 0) & (lam < np.inf)  # NaN fails both tests
-    ok = fine[..., 0] & fine[..., 1] & fine[..., 2]  # (faster than .all(axis=-1))
+    # A NaN or an infinite weight makes its row's total NaN or infinite, so negative weights
+    # and bad totals are all there is to find (written per column: faster than axis=-1).
+    negative = (lam[..., 0] < 0) | (lam[..., 1] < 0) | (lam[..., 2] < 0)
     with np.errstate(invalid="ignore", over="ignore"):  # inf - inf, 1e308 + 1e308: fixed below
         total = lam[..., 0] + lam[..., 1] + lam[..., 2]
-    fix = ~ok | ~((total > 0) & (total < np.inf))
+    fix = negative | ~((total > 0) & (total < np.inf))
     if not fix.any():
         return lam
     out = lam.copy()
