@@ -261,4 +261,3 @@ def test_every_notebook_runs_in_the_browser(lab, page, name):
     figures = page.locator(".jp-OutputArea-output img")
     assert figures.count() > 0, f"{name}: no figure on the page"
     assert not page.errors, f"{name}: errors in the page: {page.errors[:3]}"
-    _shut_down_kernels(lab)

@@ -119,8 +119,7 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
     if not visible.depth_test:
         why = "off (depth_test=False): nothing is hidden, so nothing is rejected early"
         return None, Effect("hi_z", False, 0, m, "fragments", why)
-    count = np.bincount(visible.pixel, minlength=width * height)
-    n_contested = int((count > 1).sum())
+    n_contested = visible.contested  # counted by the depth stage's resolve already
     if not (record or force) and n_contested:
         why = (
             f"depth complexity above one on {n_contested:,} pixel(s), but the frame is the "
@@ -128,6 +127,7 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
             "reports what early-z and Hi-Z would save a GPU"
         )
         return None, Effect("hi_z", False, 0, m, "fragments", why)
+    count = np.bincount(visible.pixel, minlength=width * height)
     contested = count[visible.pixel] > 1  # depth complexity above one at the fragment
     tiles_x = -(-width // tile)
     tile_id = (frags.row // tile) * tiles_x + frags.col // tile
@@ -157,7 +157,7 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
     rejected = tested & (nearest >= farthest)
     result = HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
                        block, arrivals.passed)  # fmt: skip
-    return result, hiz_effect(result, int((count > 1).sum()), force)
+    return result, hiz_effect(result, n_contested, force)
 
 
 def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> np.ndarray:

@@ -141,6 +141,8 @@ class Visibility:
         Flat indices of the covered pixels, ascending.
     winner : (v,) int64
         The fragment each covered pixel shows.
+    contested : int
+        Pixels that 2+ fragments reach (depth complexity above one), as the resolve counted.
 
     ``passed`` (m,) bool, whether each fragment passed the depth test when it arrived
     (always True without the test), is computed on first use (for the trace).
@@ -151,6 +153,7 @@ class Visibility:
     depth_test: bool
     pixels: np.ndarray
     winner: np.ndarray
+    contested: int = 0
 
     @cached_property
     def passed(self) -> np.ndarray:
@@ -186,7 +189,7 @@ def depth_stage(
     winner, tested = resolve(pixel, depth, width * height, depth_test)
     pixels = np.flatnonzero(winner >= 0)
     effect = depth_test_effect(depth_test, force, tested, len(pixels))
-    return Visibility(depth, pixel, depth_test, pixels, winner[pixels]), effect
+    return Visibility(depth, pixel, depth_test, pixels, winner[pixels], tested), effect
 
 
 def interpolate_stage(
