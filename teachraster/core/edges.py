@@ -96,7 +96,7 @@ class EdgeSetup:
 
     def inside(self, k: int, e: np.ndarray) -> np.ndarray:
         """The tie-aware test of edge k: E > 0, or E >= 0 on a top-left edge."""
-        return e >= 0 if self.top_left[k] else e > 0
+        return passes(e, self.top_left[k])
 
     def pixels_per_unit2(self) -> float:
         """Factor converting E (units²) to px²."""
@@ -114,6 +114,19 @@ def edge_function(a, b, p) -> np.ndarray:
     if p.shape[-1:] != (2,):
         raise ValueError(f"p must have shape (..., 2), got {p.shape}")
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
+
+
+def passes(e, top_left) -> np.ndarray:
+    """The top-left rule on edge values: E > 0, or E >= 0 where the edge is top-left.
+
+    ``top_left`` broadcasts against ``e`` (one flag, or one per edge in the last axis).
+
+    >>> passes(np.array([1, 0, 0, -1]), np.array([False, False, True, True])).tolist()
+    [True, False, True, False]
+    """
+    if np.ndim(top_left) == 0:  # one edge: one comparison (the hot path of the fills)
+        return e >= 0 if top_left else e > 0
+    return np.where(top_left, e >= 0, e > 0)
 
 
 def is_top_left(a, b) -> bool:

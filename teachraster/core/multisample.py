@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .bbox import BBox, pixel_bbox
-from .edges import EdgeSetup
+from .edges import EdgeSetup, passes
 from .interpolation import blend, interpolate
 
 
@@ -88,7 +88,7 @@ class SampleTrace:
         """(S, 3) bool: each edge's tie-aware test at each sample of a pixel."""
         pts = _points(self.unit, self.offsets * self.unit, row, col)
         e = _edge_values(self.vertices, pts)
-        return np.where(self.top_left, e >= 0, e > 0)
+        return passes(e, self.top_left)
 
 
 def _points(unit, offsets_units, row, col) -> np.ndarray:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .bbox import BBox
-from .edges import EdgeSetup
+from .edges import EdgeSetup, passes
 from .validate import as_finite
 
 
@@ -133,7 +133,7 @@ def edge_bounds(
         def inside(j):
             with np.errstate(over="ignore", invalid="ignore"):
                 e = K - dy * ((j * unit + half) - ax)
-            return np.where(top_left, e >= 0, e > 0)
+            return passes(e, top_left)
 
         shape = np.broadcast(K, dy, first_col, last_col).shape
         below = np.broadcast_to(np.asarray(first_col, dtype=np.int64) - 1, shape)
@@ -146,7 +146,7 @@ def edge_bounds(
             above = np.where(~if_inside & (above - below > 1), mid, above)
         hi = np.where(dy > 0, below, NO_BOUND)
         lo = np.where(dy < 0, above, -NO_BOUND)
-        ok = ~flat | np.where(top_left, K >= 0, K > 0)
+        ok = ~flat | passes(K, top_left)
     return lo, hi, ok, crossing
 
 
