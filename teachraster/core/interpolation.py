@@ -153,6 +153,33 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
     return q
 
 
+def normalised_weights(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Convex weights from unnormalised terms, in place: ``max(q_i, 0) / Σ_j max(q_j, 0)``.
+
+    ``q`` (n, 3) holds ``λ_i s_i`` for any positive per-row factors ``s_i``; with
+    ``s_i = min(w) / w_i`` the result is :func:`weights_per_row` of λ (ratios of 1/w,
+    Ek, *Triangles and Perspective Correct Interpolation*, eq. 19), computed without
+    normalising λ first: clamping λ_i to 0 and scaling its row by a constant are both
+    undone by the final division. That is why a renderer can fold ``s_i / area`` into the
+    barycentric pass and skip the per-pixel ``λ = E / area`` divide (see
+    ``Fragments.weights_at(..., scale=)``). Rows whose total is not in (0, inf) (every term
+    underflowed or was clamped, a NaN or an overflow from a degenerate set-up) are
+    returned as ``bad`` and left for the caller to redo with :func:`weights_per_row`,
+    which settles them; every other row is convex (each term in [0, total]).
+
+    >>> q, bad = normalised_weights(np.array([[-1.0, 1.0, 3.0], [0.0, 0.0, 0.0]]))
+    >>> q[0], bad
+    (array([0.  , 0.25, 0.75]), array([False,  True]))
+    """
+    np.maximum(q, 0.0, out=q)  # a NaN stays NaN, and its row is bad
+    with np.errstate(over="ignore", invalid="ignore"):
+        total = q[..., 0] + q[..., 1] + q[..., 2]
+    bad = ~((total > 0) & (total < np.inf))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        q *= (1.0 / total)[..., None]
+    return q, bad
+
+
 def blend(weights: np.ndarray, values: np.ndarray, *, extrapolate: bool = False) -> np.ndarray:
     """``Σ μ_i f_i`` clamped to the vertex values' range, for values (3,) or (3, k).
 

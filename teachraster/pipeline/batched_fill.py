@@ -68,14 +68,18 @@ class Fragments:
             return self.weights_at(self.tri, self.col + 0.5, self.row + 0.5)
         return self.weights_at(self.tri[index], self.col[index] + 0.5, self.row[index] + 0.5)
 
-    def weights_at(self, tri: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    def weights_at(self, tri: np.ndarray, x: np.ndarray, y: np.ndarray, scale=None) -> np.ndarray:
         """(len(tri), 3) barycentrics of triangles ``tri`` at points (x, y) in pixels.
 
         Weight k is E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding;
-        points outside the triangle get negative weights (extrapolation).
+        points outside the triangle get negative weights (extrapolation). With ``scale``
+        (n, 3), weight k is E(v_k+1, v_k+2, p) * scale[tri, k] instead (per-triangle factors
+        folded into the one pass, such as the perspective weights' 1/w, see
+        :func:`teachraster.core.interpolation.normalised_weights`). The result is the
+        transpose of a (3, len(tri)) array, so each weight's column is contiguous.
         """
-        lam = np.empty((len(tri), 3))
-        area = self.area2[tri]
+        lam = np.empty((3, len(tri)))
+        area = self.area2[tri] if scale is None else None
         for k, (ax, ay, dx, dy) in enumerate(self._edges):
             # E(a, b, p) = (b - a).x (p.y - a.y) - (b - a).y (p.x - a.x), for edge a = v_k+1,
             # b = v_k+2; one gather per per-triangle number (contiguous, cheap).
@@ -84,8 +88,11 @@ class Fragments:
             d = x - ax[tri]
             d *= dy[tri]
             e -= d
-            np.divide(e, area, out=lam[:, k])
-        return lam
+            if scale is None:
+                np.divide(e, area, out=lam[k])
+            else:
+                np.multiply(e, np.ascontiguousarray(scale[:, k])[tri], out=lam[k])
+        return lam.T
 
     @cached_property
     def _edges(self) -> tuple[tuple[np.ndarray, ...], ...]:
