@@ -108,9 +108,12 @@ class Fragments:
         """(m,) per-vertex ``values`` (n, 3) interpolated affinely at every fragment.
 
         The plane ``f = f0 + A (x - x0) + B (y - y0)`` of each triangle is set up once
-        (Fatahalian's matrix M, CMU 15-462 *Texture*) and evaluated per fragment, then
-        clamped to the vertex values' range (rounding cannot leave it, so depth stays in
-        [0, 1]). Cheaper than barycentrics when only one quantity, such as depth, is needed.
+        (Fatahalian's matrix M, CMU 15-462 *Texture*) and moved to the pixel grid, ``f = C +
+        A col + B row`` with ``C = f0 + A (0.5 - x0) + B (0.5 - y0)`` (as llvmpipe's set-up
+        moves its planes to the origin: three gathers and two multiply-adds per fragment),
+        then clamped to the vertex values' range (rounding cannot leave it, so depth stays
+        in [0, 1]). Cheaper than barycentrics when only one quantity, such as depth, is
+        needed.
         """
         v, f = self.vertices, np.asarray(values, dtype=np.float64)
         e1, e2 = v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]
@@ -118,17 +121,11 @@ class Fragments:
         with np.errstate(divide="ignore", invalid="ignore"):  # zero area: no fragments
             A = (d1 * e2[:, 1] - d2 * e1[:, 1]) / self.area2
             B = (d2 * e1[:, 0] - d1 * e2[:, 0]) / self.area2
+            C = f[:, 0] + A * (0.5 - v[:, 0, 0]) + B * (0.5 - v[:, 0, 1])
         t = self.tri
-        x0, y0, f0 = (np.ascontiguousarray(c) for c in (v[:, 0, 0], v[:, 0, 1], f[:, 0]))
-        # f0 + A (x - x0) + B (y - y0), in place on two fragment-sized arrays.
-        out = self.col + 0.5
-        out -= x0[t]
-        out *= A[t]
-        out += f0[t]
-        dy = self.row + 0.5
-        dy -= y0[t]
-        dy *= B[t]
-        out += dy
+        out = A[t] * self.col
+        out += B[t] * self.row
+        out += C[t]
         np.maximum(out, f.min(axis=1)[t], out=out)
         np.minimum(out, f.max(axis=1)[t], out=out)
         return out
