@@ -179,7 +179,7 @@ def normalised_weights(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     else:  # NaN fails both tests
         bad = ~((total > 0) & (total < np.inf))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        q *= (1.0 / total)[..., None]
+        q /= total[..., None]  # not * (1 / total): a subnormal total's reciprocal overflows
     return q, bad
 
 
