@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from .edges import EdgeSetup, edge_values_at
-from .validate import as_finite, as_real
+from .validate import as_finite
 
 
 def barycentric(xy, points) -> np.ndarray:
@@ -39,7 +39,7 @@ def barycentric(xy, points) -> np.ndarray:
            [1.  , 0.  , 0.  ]])
     """
     v = as_finite("xy", xy, (3, 2))
-    p = as_real("points", points)
+    p = as_finite("points", points, None)
     if p.shape[-1:] != (2,):
         raise ValueError(f"points must have shape (..., 2), got {p.shape}")
     (ax, ay), (bx, by), (cx, cy) = v
