@@ -11,8 +11,10 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
-   (:mod:`teachraster.pipeline.zbuffer`); where fragments overlap, what early-z and Hi-Z
-   would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
+   (:mod:`teachraster.pipeline.zbuffer`); before it, Hi-Z drops the blocks of raster
+   lines that a triangle covering their whole 8×8 tile hides, so their depth is never
+   interpolated (:mod:`teachraster.pipeline.hiz_tiles`); with ``trace=True``, what early-z
+   and Hi-Z would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
 6. perspective-correct interpolation of the attributes, at the visible pixels only;
 7. on request, their screen-space derivatives from 2×2 quads with helper pixels
    (:mod:`teachraster.pipeline.quad_derivatives`), for texture filtering.
@@ -20,17 +22,19 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
-from .hierarchical_z import HiZResult, hiz_stage
+from .hierarchical_z import HiZResult, replay_stage
+from .hiz_tiles import HiZCut, HiZTiles
 from .inputs import check_render
 from .multisampling import multisample_stage
 from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
-from .render_plan import Plan
+from .render_plan import Plan, depth_test_effect, hi_z_effect
 from .stages import (
     clip_stage,
     cull_stage,
@@ -70,7 +74,11 @@ class RenderTrace:
     quads : QuadTrace or None
         The 2×2 quads and helper pixels evaluated for derivatives, when they were.
     hiz : HiZResult or None
-        Early-z and Hi-Z per block and fragment (None without the depth test).
+        Early-z and Hi-Z of a GPU drawing in this order, per block and fragment (None
+        without the depth test).
+    hiz_tiles : HiZTiles or None
+        The renderer's own Hi-Z: tile bounds and, per fragment, whether it was rejected
+        (None without the depth test).
     """
 
     clip_status: np.ndarray
@@ -86,6 +94,7 @@ class RenderTrace:
     fragment_sample: np.ndarray | None = None
     quads: QuadTrace | None = None
     hiz: HiZResult | None = None
+    hiz_tiles: HiZTiles | None = None
 
 
 @dataclass(frozen=True)
@@ -261,21 +270,55 @@ def render(
         return _render_multisampled(clipped, window, culled, (clipping, culling), offsets,
                                     (width, height, subpixel_bits), (depth_test, depth_format,
                                     interpolation), forced, trace)  # fmt: skip
-    frags = fill_stage(window, width, height, subpixel_bits, culled)
+    cut = None
+    if depth_test:  # Hi-Z: hidden blocks never become fragments (the trace keeps them all)
+        cut = HiZCut(window[:, :, 2], (height, width), depth_format, "hi_z" in forced, trace)
+    frags = fill_stage(window, width, height, subpixel_bits, culled, cut)
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
-    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced, trace)
+    hiz = replay_stage(frags, window, visible, width, height, depth_format) if trace else None
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
+    )
+    hiz_tiles = None if cut is None else cut.result
+    hi_z, depth_testing, attributes = _hi_z_effects(
+        hiz_tiles, len(frags.tri), (depth_testing, attributes), visible, forced
     )
     ddx, ddy, quads, derivs = derivatives_stage(
         frags, visible, clipped, (width, height), mode,
         None if where is None else where[clipped.parent], interpolation, forced, trace,
     )  # fmt: skip
     plan = Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
-    record = _record(clipped, window, culled, frags, visible, quads, hiz) if trace else None
+    record = None
+    if trace:
+        record = _record(clipped, window, culled, frags, visible, quads, hiz, hiz_tiles)
     return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
+
+
+def _hi_z_effects(result, n_fragments, effects, visible, forced):
+    """The "hi_z" effect; the depth test and attributes told of what Hi-Z dropped.
+
+    The depth test then decides only among the fragments Hi-Z kept (a trace keeps every
+    fragment, so its count is taken over the kept ones too); the attributes count all
+    fragments, dropped ones included.
+    """
+    depth_testing, attributes = effects
+    hi_z = hi_z_effect(result is not None, n_fragments, result)
+    if result is None or not result.rejected:
+        return hi_z, depth_testing, attributes
+    contested = visible.contested
+    if result.fragment_rejected is not None:  # the trace: nothing was dropped, count as if
+        contested = int((np.bincount(visible.pixel[~result.fragment_rejected]) > 1).sum())
+    force = "depth_test" in forced
+    depth_testing = depth_test_effect(True, force, contested, len(visible.pixels))
+    depth_testing = dataclasses.replace(
+        depth_testing, why=depth_testing.why + f" (after Hi-Z dropped {result.rejected:,})"
+    )
+    if result.fragment_rejected is None:
+        why = f"{attributes.why} (Hi-Z dropped {result.rejected:,} hidden fragment(s) before)"
+        attributes = dataclasses.replace(attributes, total=result.fragments, why=why)
+    return hi_z, depth_testing, attributes
 
 
 def _render_multisampled(clipped, window, culled, effects, offsets, grid, options, forced,
@@ -369,7 +412,8 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     )
 
 
-def _record(clipped, window, culled, frags, visible, quads=None, hiz=None) -> RenderTrace:
+def _record(clipped, window, culled, frags, visible, quads=None, hiz=None,
+            hiz_tiles=None) -> RenderTrace:  # fmt: skip
     """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
     return RenderTrace(
         clip_status=clipped.status,
@@ -384,4 +428,5 @@ def _record(clipped, window, culled, frags, visible, quads=None, hiz=None) -> Re
         fragment_passed=visible.passed,
         quads=quads,
         hiz=hiz,
+        hiz_tiles=hiz_tiles,
     )
