@@ -44,7 +44,6 @@ from .batched_fill import Fragments, flat_ranges
 from .depth import quantize
 from .hierarchical_z import HIZ_TILE
 
-
 #: Hi-Z is planned only where it expects to reject at least this many fragments (and one
 #: per raster line): below that, its fixed cost (a few dozen numpy calls, ~1 ms) is more
 #: than the depth interpolation and test it saves (~20 ns a fragment; see
@@ -170,8 +169,12 @@ class HiZCut:
         if skipped:
             return self._unchanged(whole, dataclasses.replace(base, skipped=skipped))
         near = self._nearest(lines, which, lines.col[which], lines.col[which] + counts[which])
-        far = _range_max(farthest.reshape(grid), lines.row[which] // t,
-                         lines.col[which] // t, (lines.col[which] + counts[which] - 1) // t)
+        far = _range_max(
+            farthest.reshape(grid),
+            lines.row[which] // t,
+            lines.col[which] // t,
+            (lines.col[which] + counts[which] - 1) // t,
+        )
         gone = near > far  # strictly farther than every tile it crosses: all hidden
         rest = which[~gone]
         pieces, owner, rejected = self._blocks(lines, counts, rest, farthest, grid[1])
