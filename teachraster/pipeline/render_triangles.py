@@ -270,30 +270,42 @@ def render(
         return _render_multisampled(clipped, window, culled, (clipping, culling), offsets,
                                     (width, height, subpixel_bits), (depth_test, depth_format,
                                     interpolation), forced, trace)  # fmt: skip
-    cut = None
-    if depth_test:  # Hi-Z: hidden blocks never become fragments (the trace keeps them all)
-        cut = HiZCut(window[:, :, 2], (height, width), depth_format, "hi_z" in forced, trace)
-    frags = fill_stage(window, width, height, subpixel_bits, culled, cut)
+    frags, cut = _fill(window, culled, a)  # with Hi-Z: hidden blocks never become fragments
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
-    hiz = replay_stage(frags, window, visible, width, height, depth_format) if trace else None
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
-    )
-    hiz_tiles = None if cut is None else cut.result
-    hi_z, depth_testing, attributes = _hi_z_effects(
-        hiz_tiles, len(frags.tri), (depth_testing, attributes), visible, forced
     )
     ddx, ddy, quads, derivs = derivatives_stage(
         frags, visible, clipped, (width, height), mode,
         None if where is None else where[clipped.parent], interpolation, forced, trace,
     )  # fmt: skip
-    plan = Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
-    record = None
-    if trace:
-        record = _record(clipped, window, culled, frags, visible, quads, hiz, hiz_tiles)
+    effects = (clipping, culling, depth_testing, perspective, attributes, derivs)
+    plan = _plan(cut, frags, visible, effects, forced)
+    record = trace and _record(clipped, window, culled, frags, visible, quads, cut, a)
     return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
+
+
+def _fill(window, culled, a):
+    """The fill stage, with the Hi-Z hook when the depth test is on (nothing is hidden
+    otherwise): hidden blocks never become fragments; a trace keeps them all, marked.
+    ``a`` are the checked inputs. Returns the fragments and the hook (None without it)."""
+    cut = None
+    if a.depth_test:
+        image = (a.height, a.width)
+        cut = HiZCut(window[:, :, 2], image, a.depth_format, "hi_z" in a.forced, a.trace)
+    return fill_stage(window, a.width, a.height, a.subpixel_bits, culled, cut), cut
+
+
+def _plan(cut, frags, visible, effects, forced) -> Plan:
+    """The plan, with the "hi_z" effect after the depth test's."""
+    clipping, culling, depth_testing, perspective, attributes, derivs = effects
+    result = None if cut is None else cut.result
+    hi_z, depth_testing, attributes = _hi_z_effects(
+        result, len(frags.tri), (depth_testing, attributes), visible, forced
+    )
+    return Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
 
 
 def _hi_z_effects(result, n_fragments, effects, visible, forced):
@@ -368,7 +380,7 @@ def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=Non
         attrs=_image(visible, values, width, height),
         depth=depth.reshape(height, width),
         plan=plan,
-        trace=record,
+        trace=record or None,
         ddx=None if ddx is None else _image(visible, ddx, width, height),
         ddy=None if ddy is None else _image(visible, ddy, width, height),
     )
@@ -412,9 +424,10 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     )
 
 
-def _record(clipped, window, culled, frags, visible, quads=None, hiz=None,
-            hiz_tiles=None) -> RenderTrace:  # fmt: skip
-    """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
+def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTrace:
+    """The trace of every stage (plain arrays, see :class:`RenderTrace`), with the replay of
+    a GPU's early-z and Hi-Z in drawing order; ``a`` are the checked inputs."""
+    width, height, depth_format = a.width, a.height, a.depth_format
     return RenderTrace(
         clip_status=clipped.status,
         clip_polygons=clipped.polygons,
@@ -427,6 +440,6 @@ def _record(clipped, window, culled, frags, visible, quads=None, hiz=None,
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
         quads=quads,
-        hiz=hiz,
-        hiz_tiles=hiz_tiles,
+        hiz=replay_stage(frags, window, visible, width, height, depth_format),
+        hiz_tiles=None if cut is None else cut.result,
     )
