@@ -15,7 +15,9 @@ once, so it uses a bound that holds whatever the drawing order:
   nearest stored depth is the plane at one of its two ends. If that is *strictly* farther
   than ``farthest[tile]``, every fragment of the block is strictly farther than the
   occluder's fragment at its pixel and can never be shown, nor tie: the block is dropped
-  before it becomes fragments, and its depth is never interpolated nor tested.
+  before it becomes fragments, and its depth is never interpolated nor tested. A whole
+  line whose nearest end is farther than the bound of every tile it crosses goes at once,
+  without being cut.
 
 Exactness. Both bounds use the very expression the depth stage evaluates per fragment,
 :meth:`~teachraster.pipeline.batched_fill.Fragments.plane`, then the buffer's quantisation
@@ -26,11 +28,15 @@ dropped there (its nearest depth is at most its farthest), so the frame is ident
 and without Hi-Z (tests/test_hiz_tiles.py).
 
 The plan. Only blocks in a tile with an occluder can be rejected, and only where another
-triangle reaches it (depth complexity above one): a line that spans no 8 pixels cannot
-help cover a tile, so a scene of small triangles (the 20,000-triangle sphere) is decided
-by one comparison per raster line; the rest is split into blocks only where an occluded
-tile holds something besides its lone occluder. ``force="hi_z"`` splits and tests every
-line, and rejects exactly the same blocks.
+triangle reaches it (depth complexity above one). The occluders are read off the raster
+lines: a line shorter than 8 pixels cannot help cover a tile, so a scene of small
+triangles (the 20,000-triangle sphere) costs one comparison per raster line. Hi-Z then
+runs only where it pays for itself: where the occluders over one another hide at least
+:data:`MIN_SAVING` pixels, and :data:`LINE_COST` per raster line (comparing lines costs
+per line, a rejected fragment saves ~20 ns); it then cuts only the lines that reach a
+tile something besides its lone occluder covers. ``force="hi_z"`` compares every line
+and rejects a superset (the same blocks wherever the plan ran); the frame is identical
+either way.
 """
 
 from __future__ import annotations
@@ -44,13 +50,16 @@ from .batched_fill import Fragments, flat_ranges
 from .depth import quantize
 from .hierarchical_z import HIZ_TILE
 
-#: Hi-Z is planned only where it expects to reject at least this many fragments (and one
-#: per raster line): below that, its fixed cost (a few dozen numpy calls, ~1 ms) is more
-#: than the depth interpolation and test it saves (~20 ns a fragment; see
-#: benchmarks/bench_scenes.py, section 5).
-MIN_SAVING = 32_768
-#: ... and at least this many per raster line (a line costs ~150 ns to compare and cut).
-LINE_COST = 8
+#: Hi-Z is planned only where it expects to reject at least this many fragments ...
+#: (measured, benchmarks/bench_scenes.py section 5: a rejected fragment saves ~20 ns of
+#: depth interpolation and z-buffer work, while the depth stage's per-pixel passes and
+#: Hi-Z's own fixed cost, a few dozen numpy calls, stay; 128 Ki rejected fragments of the
+#: cube at 1920x1080 only break even)
+MIN_SAVING = 131_072
+#: ... and at least this many per raster line (comparing and cutting a line costs about
+#: as much as 16 rejected fragments save: 1,024 stacked layers of 32x32 pixels, 12 per
+#: line, are already slower with Hi-Z).
+LINE_COST = 16
 
 
 @dataclass(frozen=True)
@@ -73,7 +82,8 @@ class HiZTiles:
         Tile side in pixels.
     farthest : (ty, tx) float64
         Per tile, the farthest stored depth of its nearest occluder: no pixel of the tile
-        ends farther (inf where no triangle covers the whole tile).
+        ends farther (inf where no triangle covers the whole tile, and everywhere when the
+        plan skipped Hi-Z: then no depth was computed).
     occluders : (ty, tx) int64
         How many triangles cover each tile whole.
     fragments : int
@@ -160,7 +170,8 @@ class HiZCut:
         height, width = self.image
         t = self.tile
         grid = (-(-height // t), -(-width // t))
-        farthest, occluders, runs = self._occluders(lines, counts, grid)
+        runs, pairs, occluders = _occluder_tiles(lines, counts, self.image, t)
+        farthest = np.full(grid[0] * grid[1], np.inf)
         base = HiZTiles(t, farthest.reshape(grid), occluders.reshape(grid),
                         int(counts.sum()), raster_lines=int(np.count_nonzero(counts)),
                         forced=self.forced)  # fmt: skip
@@ -168,6 +179,8 @@ class HiZCut:
         which, skipped = self._lines_to_test(lines, counts, occluders, runs, grid, base)
         if skipped:
             return self._unchanged(whole, dataclasses.replace(base, skipped=skipped))
+        if pairs is not None:  # only now the depths: skipping costs no plane evaluation
+            self._farthest(lines, pairs, farthest)
         near = self._nearest(lines, which, lines.col[which], lines.col[which] + counts[which])
         far = _range_max(
             farthest.reshape(grid),
@@ -236,35 +249,22 @@ class HiZCut:
         """Nearest stored depth of lines ``which`` over columns start..stop-1: the plane is
         monotone along a row, so it is at one of the two ends."""
         tri, row = lines.tri[which], lines.row[which]
-        ends = self._plane(lines, np.r_[tri, tri], np.r_[row, row], np.r_[start, stop - 1])
+        twice = np.concatenate
+        ends = self._plane(lines, twice([tri, tri]), twice([row, row]), twice([start, stop - 1]))
         return np.minimum(ends[: len(which)], ends[len(which) :])
 
-    def _occluders(self, lines: Fragments, counts, grid):
-        """Per tile (flat), the farthest depth of its nearest occluder and the number of
-        occluders; and the runs of tiles each triangle covers whole, per tile row."""
-        height, width = self.image
+    def _farthest(self, lines: Fragments, pairs, farthest) -> None:
+        """Into ``farthest`` (flat tiles, inf), per tile the smallest over its occluders of
+        the occluder's farthest stored depth there: its plane at one of the 4 corners."""
+        tri, top, left, tile_id = pairs
         t = self.tile
-        ty, tx = grid
-        farthest = np.full(ty * tx, np.inf)
-        occluders = np.zeros(ty * tx, dtype=np.int64)
-        runs = _full_runs(lines, counts, (height // t, width // t), t)
-        if runs is None:
-            return farthest, occluders, None
-        r_tri, r_row, k_lo, k_hi = runs
-        owner, k = flat_ranges(k_lo, k_hi + 1)  # every (occluder, tile) pair
-        tri, row = r_tri[owner], r_row[owner]
-        top, left = row * t, k * t
-        # the farthest stored depth of the occluder over the tile: at one of its 4 corners
         corners = self._plane(
             lines,
             np.repeat(tri, 4),
             np.stack([top, top, top + t - 1, top + t - 1], axis=1).ravel(),
             np.stack([left, left + t - 1, left, left + t - 1], axis=1).ravel(),
         )
-        tile_id = row * tx + k
         np.minimum.at(farthest, tile_id, corners.reshape(-1, 4).max(axis=1))
-        occluders += np.bincount(tile_id, minlength=ty * tx)
-        return farthest, occluders, runs
 
     def _blocks(self, lines: Fragments, counts, which, farthest, tx):
         """Lines ``which`` cut at the tile borders: the pieces (drawing order, with their
@@ -308,6 +308,24 @@ def _range_max(grid, tile_row, first, last) -> np.ndarray:
     level = np.frexp((last - first + 1).astype(np.float64))[1] - 1  # floor(log2(length))
     at = level * (ty * tx) + tile_row * tx
     return np.maximum(table[at + first], table[at + last - (1 << level) + 1])
+
+
+def _occluder_tiles(lines: Fragments, counts, image, t):
+    """The runs of tiles each triangle covers whole (per tile row, see :func:`_full_runs`),
+    every (occluder, tile) pair as (triangle, top row, left column, flat tile), and the
+    number of occluders per flat tile (no depth yet: the plan decides on the counts)."""
+    height, width = image
+    tx = -(-width // t)
+    occluders = np.zeros(-(-height // t) * tx, dtype=np.int64)
+    runs = _full_runs(lines, counts, (height // t, width // t), t)
+    if runs is None:
+        return None, None, occluders
+    r_tri, r_row, k_lo, k_hi = runs
+    owner, k = flat_ranges(k_lo, k_hi + 1)  # every (occluder, tile) pair
+    row = r_row[owner]
+    tile_id = row * tx + k
+    occluders += np.bincount(tile_id, minlength=len(occluders))
+    return runs, (r_tri[owner], row * t, k * t, tile_id), occluders
 
 
 def _full_runs(lines: Fragments, counts, full, t):
