@@ -239,8 +239,14 @@ def test_stacked_layers_reject_all_but_the_nearest():
 def test_plan_words():
     small = clip_from_window([[[2, 2], [9, 3], [4, 9]], [[3, 2], [9, 4], [4, 8]]], 0.5, 1.0, W, H)
     effect = tr.render(small, W, H).plan["hi_z"]
+    assert not effect.ran and "could not pay" in effect.why  # a few fragments: not worth it
+    with always_planned():
+        effect = tr.render(small, W, H).plan["hi_z"]
     assert not effect.ran and "no triangle covers a whole 8x8 tile" in effect.why
     effect = tr.render(layers([0.5, 0.6]), W, H).plan["hi_z"]
+    assert not effect.ran and "could not pay" in effect.why
+    with mock.patch.object(hz, "MIN_SAVING", 0):  # long lines, but only 2 layers
+        effect = tr.render(layers([0.5, 0.6]), W, H).plan["hi_z"]
     assert not effect.ran and "too few" in effect.why
     with always_planned():
         effect = tr.render(layers([0.5]), W, H).plan["hi_z"]

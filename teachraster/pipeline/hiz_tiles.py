@@ -85,7 +85,8 @@ class HiZTiles:
         ends farther (inf where no triangle covers the whole tile, and everywhere when the
         plan skipped Hi-Z: then no depth was computed).
     occluders : (ty, tx) int64
-        How many triangles cover each tile whole.
+        How many triangles cover each tile whole (zeros when the plan did not look:
+        ``skipped == "short lines"``).
     fragments : int
         Covered pixel centres before Hi-Z (all triangles, after culling).
     raster_lines : int
@@ -101,7 +102,9 @@ class HiZTiles:
     ran : bool
         Whether lines were compared at all (False: skipped, see ``skipped``).
     skipped : str
-        Why not, when not: "no occluder", "lone occluders" or "too little to save".
+        Why not, when not: "short lines" (too few fragments per raster line, or in all,
+        for Hi-Z to pay even if it rejected every one), "no occluder", "too little to
+        save" (too few pixels of occluders behind others) or "lone occluders".
     forced : bool
         Every line was compared (``force="hi_z"``).
     fragment_rejected : (m,) bool or None
@@ -170,12 +173,18 @@ class HiZCut:
         height, width = self.image
         t = self.tile
         grid = (-(-height // t), -(-width // t))
-        runs, pairs, occluders = _occluder_tiles(lines, counts, self.image, t)
+        n_frags, n_lines = int(counts.sum()), int(np.count_nonzero(counts))
         farthest = np.full(grid[0] * grid[1], np.inf)
-        base = HiZTiles(t, farthest.reshape(grid), occluders.reshape(grid),
-                        int(counts.sum()), raster_lines=int(np.count_nonzero(counts)),
-                        forced=self.forced)  # fmt: skip
         whole = Spans(lines.tri, lines.row, lines.col, counts)
+        if not self.forced and n_frags < max(MIN_SAVING, LINE_COST * n_lines):
+            # Hi-Z saves at most every fragment (``layered`` <= fragments): with short
+            # lines, or few fragments, it cannot pay; decided before looking for occluders.
+            base = HiZTiles(t, farthest.reshape(grid), np.zeros(grid, dtype=np.int64),
+                            n_frags, raster_lines=n_lines, skipped="short lines")  # fmt: skip
+            return self._unchanged(whole, base)
+        runs, pairs, occluders = _occluder_tiles(lines, counts, self.image, t)
+        base = HiZTiles(t, farthest.reshape(grid), occluders.reshape(grid), n_frags,
+                        raster_lines=n_lines, forced=self.forced)  # fmt: skip
         which, skipped = self._lines_to_test(lines, counts, occluders, runs, grid, base)
         if skipped:
             return self._unchanged(whole, dataclasses.replace(base, skipped=skipped))

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .hiz_tiles import LINE_COST, MIN_SAVING
+
 #: Effects that ``force=`` can switch on everywhere, for comparison.
 FORCEABLE = (
     "clipping",
@@ -225,7 +227,14 @@ def hi_z_effect(depth_test: bool, n_fragments: int, result) -> Effect:
     r, t = result, result.tile
     n_occluded = int((r.occluders > 0).sum())
     tiles = f"{n_occluded:,} {t}x{t} tile(s) covered whole by a triangle"
-    if r.skipped == "no occluder":
+    if r.skipped == "short lines":
+        mean = r.fragments / max(r.raster_lines, 1)
+        why = (
+            f"{r.fragments:,} fragment(s) on {r.raster_lines:,} raster line(s), "
+            f"{mean:.1f} per line: even rejecting them all could not pay for Hi-Z (it needs "
+            f"{LINE_COST} per line and {MIN_SAVING:,} in all), not run"
+        )
+    elif r.skipped == "no occluder":
         why = (
             f"no triangle covers a whole {t}x{t} tile: no tile has a farthest depth to "
             "reject blocks against, Hi-Z not run"
