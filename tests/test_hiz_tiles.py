@@ -234,6 +234,19 @@ def test_stacked_layers_reject_all_but_the_nearest():
     diagonal = 4 * size * size - r.occluded_pixels * 4
     assert frame.plan["depth_test"].count <= diagonal
     assert_identical(render_without_hiz(clip, size, size), frame)
+    # the plan ran Hi-Z by itself here: forced, it rejects exactly the same fragments
+    forced = tr.render(clip, size, size, trace=True, force="hi_z")
+    np.testing.assert_array_equal(
+        forced.trace.hiz_tiles.fragment_rejected, frame.trace.hiz_tiles.fragment_rejected
+    )
+    untraced = tr.render(clip, size, size)  # recording changes neither frame nor plan
+    assert_identical(untraced, frame)
+    assert str(untraced.plan) == str(frame.plan)
+    attrs = np.ones((len(clip), 3, 2))
+    for force in ("all", "attributes"):
+        a = tr.render(clip, size, size, attrs=attrs, force=force)
+        b = tr.render(clip, size, size, attrs=attrs, force=force, trace=True)
+        assert str(a.plan) == str(b.plan)
 
 
 def test_plan_words():

@@ -327,9 +327,10 @@ def _hi_z_effects(result, n_fragments, effects, visible, forced):
     depth_testing = dataclasses.replace(
         depth_testing, why=depth_testing.why + f" (after Hi-Z dropped {result.rejected:,})"
     )
-    if result.fragment_rejected is None:
-        why = f"{attributes.why} (Hi-Z dropped {result.rejected:,} hidden fragment(s) before)"
-        attributes = dataclasses.replace(attributes, total=result.fragments, why=why)
+    if result.fragment_rejected is None:  # the trace's fragments are all of them already
+        attributes = dataclasses.replace(attributes, total=result.fragments)
+    elif "attributes" in forced and attributes.count:  # as without the trace: kept only
+        attributes = dataclasses.replace(attributes, count=attributes.count - result.rejected)
     return hi_z, depth_testing, attributes
 
 
