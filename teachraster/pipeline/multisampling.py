@@ -29,7 +29,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.edges import setup_edges
-from ..core.interpolation import weights_per_row
+from ..core.interpolation import blend_each, weights_per_row
 from ..core.multisample import offsets_in_units
 from .batched_fill import flat_ranges, line_bounds, weight_source
 from .depth import quantize
@@ -301,7 +301,7 @@ def shade(source, window, w, attrs, tri, pixel, won, offsets, width, perspective
 def _blend(weights, values, clamp):
     """``Σ μ_i f_i`` per row, values (n, 3, k); clamped to the vertex range where ``clamp``."""
     v0, v1, v2 = values[:, 0], values[:, 1], values[:, 2]
-    out = weights[:, 0:1] * v0 + weights[:, 1:2] * v1 + weights[:, 2:3] * v2
+    out = blend_each(weights, values, extrapolate=True)  # no inf - inf near the float max
     lo = np.minimum(np.minimum(v0, v1), v2)
     hi = np.maximum(np.maximum(v0, v1), v2)
     return np.where(clamp[:, None], np.minimum(np.maximum(out, lo), hi), out)
