@@ -157,6 +157,7 @@ def rasterize_batch(
     subpixel_bits: int | None = SUBPIXEL_BITS,
     skip: np.ndarray | None = None,
     snapped_weights: bool = True,
+    spans=None,
 ) -> Fragments:
     """Fragments of triangles ``xy`` (n, 3, 2) in window pixels; ``skip`` (n,) bool drops some.
 
@@ -164,6 +165,12 @@ def rasterize_batch(
     barycentrics from the unsnapped positions instead, as OpenGL implementations such as
     llvmpipe do for attribute set-up (a triangle whose unsnapped area has a different sign
     or is zero keeps its snapped weights, which always exist where it covers a pixel).
+
+    ``spans``, optional, sees the raster lines before they become fragments: called as
+    ``spans(lines, counts)`` with ``lines`` a :class:`Fragments` whose ``tri``, ``row``,
+    ``col`` are each line's triangle, row and first column and ``counts`` (L,) its pixels,
+    it returns pieces of them in drawing order (``.tri``, ``.row``, ``.col``, ``.counts``);
+    how :mod:`teachraster.pipeline.hiz_tiles` drops hidden blocks before they exist.
 
     Two triangles splitting a 2×2 square: the shared diagonal's centres go to the triangle
     for which it is a top-left edge, so each pixel is covered exactly once.
@@ -193,15 +200,18 @@ def rasterize_batch(
 
     lo, hi, ok = line_bounds(setup, owner, y, half, width)
     counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
+    src, src_area, _, _ = weight_source(xy, setup, snapped_weights)
+    fac, src_area = facing(area2), src_area.astype(np.float64)
+    if spans is not None:  # the caller cuts spans before they become fragments (Hi-Z)
+        cut = spans(Fragments(owner, rows, lo, fac, src, src_area), counts)
+        owner, rows, lo, counts = cut.tri, cut.row, cut.col, cut.counts
     # One fragment per covered centre, generated once: column = lo + position in the span.
     first = np.cumsum(counts) - counts  # where each line's span starts in the flat arrays
     cols = np.arange(first[-1] + counts[-1] if len(counts) else 0)
     cols += np.repeat(lo - first, counts)
     tri = np.repeat(owner, counts)
     rows = np.repeat(rows, counts)
-
-    src, src_area, _, _ = weight_source(xy, setup, snapped_weights)
-    return Fragments(tri, rows, cols, facing(area2), src, src_area.astype(np.float64))
+    return Fragments(tri, rows, cols, fac, src, src_area)
 
 
 def line_bounds(setup, owner: np.ndarray, y: np.ndarray, half, width: int):
