@@ -301,6 +301,7 @@ SMALL = {
     "sample_pattern": {"n": 4},
     "look_at": {"eye": [0, 0, 1], "target": [0, 0, 0]},
     "perspective": {"fov_y": 60, "aspect": 1.0, "near": 0.1, "far": 10},
+    "rasterize_batch": {"xy": [_XY, _XY], "width": 8, "height": 8},
 }
 SMALL_CASES = [(f, p) for f, args in SMALL.items() for p in args]
 
