@@ -29,9 +29,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.edges import setup_edges
-from ..core.interpolation import weights_per_row
 from ..core.multisample import offsets_in_units
-from .batched_fill import flat_ranges, line_bounds, weight_source
+from .batched_fill import weight_source
 from .depth import quantize
 from .render_plan import (
     attributes_effect,
@@ -39,93 +38,9 @@ from .render_plan import (
     multisampling_effect,
     perspective_effect,
 )
+from .sample_coverage import sample_fragments
+from .sample_shading import shade, shade_tables
 from .zbuffer import resolve
-
-
-@dataclass(frozen=True)
-class SampleFragments:
-    """Per-sample coverage of a batch, as whole pixels where possible.
-
-    Attributes
-    ----------
-    full_pixel, full_tri : (f,) int64
-        (pixel, triangle) pairs where the triangle covers every sample of the pixel (flat
-        pixel index, triangle index after clipping), in drawing order.
-    tri, pixel, sample : (m,) int64
-        Every covered sample of the other (pixel, triangle) pairs.
-    n_fragments : int
-        (pixel, triangle) pairs covering at least one sample.
-    """
-
-    full_pixel: np.ndarray
-    full_tri: np.ndarray
-    tri: np.ndarray
-    pixel: np.ndarray
-    sample: np.ndarray
-    n_fragments: int
-
-
-def _sample_lines(setup, live, units, width, height):
-    """Raster lines (owner, row) and each sample's column interval lo..hi (L, S)."""
-    p, unit = setup.p, setup.unit
-    ymin, ymax = p[:, :, 1].min(axis=1), p[:, :, 1].max(axis=1)
-    # pixel rows whose square [i, i + 1) meets the y-range: every sample row lies in one
-    if setup.exact:
-        r0, r1 = ymin // unit, ymax // unit + 1
-    else:
-        r0, r1 = np.floor(ymin / unit), np.floor(ymax / unit) + 1
-    r0 = np.clip(r0, 0, height).astype(np.int64)
-    r1 = np.clip(r1, 0, height).astype(np.int64)
-    r1 = np.where(live, np.maximum(r1, r0), r0)
-    owner, rows = flat_ranges(r0, r1)
-    lo = np.empty((len(rows), len(units)), dtype=np.int64)
-    hi = np.empty_like(lo)
-    for s, (ox, oy) in enumerate(units.tolist()):
-        y = rows * unit + oy
-        if not setup.exact:
-            y = y.astype(np.float64)
-        l_s, h_s, ok = line_bounds(setup, owner, y, ox, width)
-        ok &= (y >= ymin[owner]) & (y <= ymax[owner])  # the sample row crosses the triangle
-        lo[:, s], hi[:, s] = l_s, np.where(ok, h_s, l_s - 1)
-    return owner, rows, lo, hi
-
-
-def sample_fragments(setup, live, units, width: int, height: int, force: bool) -> SampleFragments:
-    """Per-sample coverage of a batch of triangles, whole pixels kept whole.
-
-    ``setup`` is the batch's edge set-up (window positions), ``live`` (M,) the triangles to
-    draw, ``units`` (S, 2) the sample offsets on the internal grid. The columns where every
-    sample's interval overlaps are *full* pixels; the rest of the union is expanded to
-    samples. With ``force`` no pixel is taken as full.
-    """
-    owner, rows, lo, hi = _sample_lines(setup, live, units, width, height)
-    covered = hi >= lo
-    union_lo = np.where(covered, lo, width).min(axis=1, initial=width)
-    union_hi = np.where(covered, hi, -1).max(axis=1, initial=-1)
-    if force:
-        full_lo, full_hi = np.zeros(len(rows), np.int64), np.full(len(rows), -1, np.int64)
-    else:  # columns where every sample is covered: the intersection of the intervals
-        full_lo, full_hi = lo.max(axis=1), hi.min(axis=1)
-    has_full = full_hi >= full_lo
-    f_line, f_col = flat_ranges(full_lo, np.where(has_full, full_hi + 1, full_lo))
-    # the rest of the union: left of the full part, and right of it
-    left_stop = np.where(has_full, full_lo, union_hi + 1)
-    right_lo = np.where(has_full, full_hi + 1, 0)
-    right_stop = np.where(has_full, union_hi + 1, 0)
-    l_line, l_col = flat_ranges(union_lo, np.maximum(left_stop, union_lo))
-    r_line, r_col = flat_ranges(right_lo, np.maximum(right_stop, right_lo))
-    p_line, p_col = np.concatenate([l_line, r_line]), np.concatenate([l_col, r_col])
-    mask = (lo[p_line] <= p_col[:, None]) & (p_col[:, None] <= hi[p_line])
-    e_frag, e_sample = np.nonzero(mask)  # the union may have gaps: empty rows drop out
-    tri, pix = owner[p_line[e_frag]], rows[p_line[e_frag]] * width + p_col[e_frag]
-    return SampleFragments(
-        full_pixel=rows[f_line] * width + f_col,
-        full_tri=owner[f_line],
-        tri=tri,
-        pixel=pix,
-        sample=e_sample.astype(np.int64),
-        n_fragments=len(f_line) + int(mask.any(axis=1).sum()),
-    )
 
 
 def depth_planes(source, window) -> np.ndarray:
@@ -173,33 +88,49 @@ def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
 
     A pixel qualifies when a triangle covers all its samples and either no other triangle
     reaches the pixel, or (depth test off, no partial coverage) it is the last drawn, or
-    (depth test on) its depth over the whole pixel square lies strictly below every other
-    triangle's there, partly covering ones included (bounded by the plane's slope, after
-    quantisation: every sample's test would agree). Returns the winner per pixel (-1: decide
-    sample by sample).
+    (depth test on) its stored depth at every sample is surely below every other
+    triangle's there, partly covering ones included. "Surely" first by each triangle's own
+    depth range (the plane is clamped to its vertices' depths, so no sample of it lies
+    outside them: one gather per fragment), then, where that does not settle it, by the
+    plane's range over the pixel square (bounded by its slope; a margin covers rounding).
+    Both bounds are quantised like the stored depth, so every sample's test would agree.
+
+    Returns the winner per pixel (-1: decide sample by sample) and, per pixel, how many
+    triangles reach it (the full ones, plus 1 if any covers it partly).
     """
     width, height = size
     n_pix = width * height
     f_pix, f_tri = frags.full_pixel, frags.full_tri
     count = np.bincount(f_pix, minlength=n_pix)
-    partial = np.bincount(frags.pixel, minlength=n_pix) > 0
+    partial = np.bincount(frags.part_pixel, minlength=n_pix) > 0
+    reached = count + partial
     winner = np.full(n_pix, -1, dtype=np.int64)
-    one = ~partial[f_pix] & (count[f_pix] == 1)
+    f_count, f_partial = count[f_pix], partial[f_pix]
+    one = ~f_partial & (f_count == 1)
     winner[f_pix[one]] = f_tri[one]
     if not depth_test:  # the last one drawn (highest index) wins at every sample
-        many = np.flatnonzero(~partial[f_pix] & (count[f_pix] > 1))
+        many = np.flatnonzero(~f_partial & (f_count > 1))
         last = np.full(n_pix, -1, dtype=np.int64)
         np.maximum.at(last, f_pix[many], many)
         done = np.flatnonzero(last >= 0)
         winner[done] = f_tri[last[done]]
-        return winner
-    contested = np.flatnonzero(partial[f_pix] | (count[f_pix] > 1))
-    if len(contested):  # per-pixel reductions by ufunc.at: no sort by pixel needed
-        hidden = np.flatnonzero(count[frags.pixel] > 0)  # partial entries beside a full one
-        _nearest_everywhere(planes, unit, (f_pix[contested], f_tri[contested]),
-                            (frags.pixel[hidden], frags.tri[hidden]), width, depth_format,
-                            winner)  # fmt: skip
-    return winner
+        return winner, reached
+    contested = np.flatnonzero(f_partial | (f_count > 1))
+    if len(contested) == 0:
+        return winner, reached
+    full = f_pix[contested], f_tri[contested]
+    beside = np.flatnonzero(count[frags.part_pixel] > 0)  # partial pairs beside a full one
+    part = frags.part_pixel[beside], frags.part_tri[beside]
+    z_lo, z_hi = quantize(planes[:, 5], depth_format), quantize(planes[:, 6], depth_format)
+    _nearest(full, (z_lo[full[1]], z_hi[full[1]]), part[0], z_lo[part[1]], winner)
+    # where the triangles' own depth ranges overlap: the planes over the pixel square
+    left, p_left = winner[full[0]] < 0, winner[part[0]] < 0
+    full, part = (full[0][left], full[1][left]), (part[0][p_left], part[1][p_left])
+    if len(full[0]):
+        lo, hi = _depth_range(planes, unit, *full, width, depth_format)
+        p_lo, _ = _depth_range(planes, unit, *part, width, depth_format)
+        _nearest(full, (lo, hi), part[0], p_lo, winner)
+    return winner, reached
 
 
 def _depth_range(planes, unit, pix, tri, width, depth_format):
@@ -215,19 +146,18 @@ def _depth_range(planes, unit, pix, tri, width, depth_format):
     return lo, hi
 
 
-def _nearest_everywhere(planes, unit, full, partial, width, depth_format, winner):
-    """Set ``winner`` where one whole triangle is nearer than all others over the pixel.
+def _nearest(full, bounds, part_pixel, part_lo, winner):
+    """Set ``winner`` where one whole triangle is surely nearer than all others in the pixel.
 
     ``full`` = (pixels, triangles) of fragments covering every sample of contested pixels,
-    in drawing order; ``partial`` = the same for entries covering only some samples there.
-    Each plane's range over the pixel square is its centre value ± half the slopes; a margin
-    covers the rounding of the per-sample evaluation; quantising both ends keeps the order
-    every sample's test would see. The candidate is the first full fragment (drawing order)
-    with the smallest upper end; it wins when that is below every other's lower end.
+    in drawing order, with lower and upper bounds ``bounds`` of their stored depths there;
+    ``part_lo`` the lower bounds of the fragments covering only some samples (at
+    ``part_pixel``). The candidate is the first full fragment (drawing order) with the
+    smallest upper bound; it wins when that is below every other's lower bound.
     """
     n_pix = len(winner)
     pix, tri = full
-    lo, hi = _depth_range(planes, unit, pix, tri, width, depth_format)
+    lo, hi = bounds
     best = np.full(n_pix, np.inf)
     np.minimum.at(best, pix, hi)
     index = np.arange(len(pix))
@@ -235,76 +165,10 @@ def _nearest_everywhere(planes, unit, full, partial, width, depth_format, winner
     np.minimum.at(first, pix, np.where(hi == best[pix], index, len(pix)))
     rest = np.full(n_pix, np.inf)
     np.minimum.at(rest, pix, np.where(first[pix] == index, np.inf, lo))
-    if len(partial[0]):
-        p_lo, _ = _depth_range(planes, unit, *partial, width, depth_format)
-        np.minimum.at(rest, partial[0], p_lo)
+    if len(part_pixel):
+        np.minimum.at(rest, part_pixel, part_lo)
     done = np.flatnonzero(best < rest)  # inf < inf is False for pixels not in this set
     winner[done] = tri[first[done]]
-
-
-def barycentrics_at(source, tri: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Barycentrics (n, 3) of triangles ``tri`` at points (x, y) in pixels, any point.
-
-    ``source`` is :func:`~teachraster.pipeline.batched_fill.weight_source`'s answer: the
-    same vertices and areas the batched fill uses, evaluated directly at the point.
-    """
-    src, src_area, src_unit, _ = source
-    px, py = x * src_unit, y * src_unit
-    lam = np.empty((len(tri), 3))
-    area = src_area[tri].astype(np.float64)
-    v = src[tri]  # one gather of the three vertices
-    for k in range(3):
-        a, b = v[:, (k + 1) % 3], v[:, (k + 2) % 3]
-        dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-        lam[:, k] = (dx * (py - a[:, 1]) - dy * (px - a[:, 0])) / area
-    return lam
-
-
-def shade(source, window, w, attrs, tri, pixel, won, offsets, width, perspective):
-    """Attributes (n, k) and depth (n,) of ``tri`` evaluated once for ``pixel``.
-
-    At the pixel centre, extrapolated on the triangle's planes when the centre lies
-    outside (values may leave the vertex range; inside they are clamped to it, as at
-    covered centres). Where the extrapolated 1/w would be <= 0, at the sample nearest the
-    centre among ``won`` (n, S) bool, the samples the triangle shows in that pixel (ties:
-    lower index). ``perspective`` (M,) bool: divide by w.
-    """
-    row, col = np.divmod(pixel, width)
-    x, y = col + 0.5, row + 0.5
-    lam = barycentrics_at(source, tri, x, y)
-    wt = w[tri]
-    persp = perspective[tri]
-    q = lam * (wt.min(axis=1, keepdims=True) / wt)
-    total = q[:, 0] + q[:, 1] + q[:, 2]
-    inside = (lam[:, 0] >= 0) & (lam[:, 1] >= 0) & (lam[:, 2] >= 0)
-    bad = persp & ~inside & ~(total > 0)
-    if bad.any():  # the plane of 1/w crosses zero before the centre: use a covered sample
-        d = offsets - 0.5
-        order = np.argsort(d[:, 0] ** 2 + d[:, 1] ** 2, kind="stable")
-        s = order[np.argmax(won[bad][:, order], axis=1)]
-        x, y = x.astype(np.float64), y.astype(np.float64)
-        x[bad], y[bad] = col[bad] + offsets[s, 0], row[bad] + offsets[s, 1]
-        lam[bad] = barycentrics_at(source, tri[bad], x[bad], y[bad])
-        q[bad] = lam[bad] * (wt[bad].min(axis=1, keepdims=True) / wt[bad])
-        total[bad] = q[bad, 0] + q[bad, 1] + q[bad, 2]
-        inside = (lam[:, 0] >= 0) & (lam[:, 1] >= 0) & (lam[:, 2] >= 0)
-    with np.errstate(divide="ignore", invalid="ignore"):  # rows fixed just below
-        weights = np.where(persp[:, None], q / total[:, None], lam)
-    under = persp & ~(total > 0)  # every term underflowed: the log-domain fallback
-    if under.any():
-        weights[under] = weights_per_row(np.maximum(lam[under], 0), wt[under])
-    values = _blend(weights, attrs[tri], inside)
-    depth = _blend(lam, window[tri, :, 2:3], inside)[:, 0]
-    return values, depth
-
-
-def _blend(weights, values, clamp):
-    """``Σ μ_i f_i`` per row, values (n, 3, k); clamped to the vertex range where ``clamp``."""
-    v0, v1, v2 = values[:, 0], values[:, 1], values[:, 2]
-    out = weights[:, 0:1] * v0 + weights[:, 1:2] * v1 + weights[:, 2:3] * v2
-    lo = np.minimum(np.minimum(v0, v1), v2)
-    hi = np.maximum(np.maximum(v0, v1), v2)
-    return np.where(clamp[:, None], np.minimum(np.maximum(out, lo), hi), out)
 
 
 def _distinct(sub: np.ndarray, i: np.ndarray, s: np.ndarray):
@@ -346,12 +210,67 @@ def owners(parents: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 @dataclass(frozen=True)
+class SampleDepths:
+    """The per-sample depth buffer (H, W, S), filled on first use (``Frame.sample_depth``).
+
+    ``slots`` (flat pixel * S + sample) and ``depth`` are what the per-sample test stored;
+    at the pixels decided whole (``whole_pixel``, ``whole_tri``) every sample holds its
+    triangle's plane at the sample, evaluated and quantised exactly as the test would have.
+    """
+
+    shape: tuple
+    slots: np.ndarray
+    depth: np.ndarray
+    whole_pixel: np.ndarray
+    whole_tri: np.ndarray
+    planes: np.ndarray
+    unit: float
+    offsets: np.ndarray
+    depth_format: str
+
+    def __call__(self) -> np.ndarray:
+        height, width, n_s = self.shape
+        out = np.full(height * width * n_s, np.nan)
+        out[self.slots] = self.depth
+        out = out.reshape(height * width, n_s)
+        wr, wc = np.divmod(self.whole_pixel, width)
+        x, y = wc[:, None] + self.offsets[:, 0], wr[:, None] + self.offsets[:, 1]
+        out[self.whole_pixel] = quantize(
+            plane_depth(self.planes, self.unit, self.whole_tri, x, y), self.depth_format
+        )
+        return out.reshape(self.shape)
+
+
+@dataclass(frozen=True)
+class SampleAttributes:
+    """The attributes every sample holds (H, W, S, k), filled on first use
+    (``Frame.sample_attrs``): one value per whole pixel for all its samples
+    (``whole_pixel``, ``whole_values``), and at the other covered samples (``pixel``,
+    ``sample``) the value of their (pixel, triangle) pair, ``values[pair]``."""
+
+    shape: tuple
+    whole_pixel: np.ndarray
+    whole_values: np.ndarray
+    pixel: np.ndarray
+    sample: np.ndarray
+    values: np.ndarray
+    pair: np.ndarray
+
+    def __call__(self) -> np.ndarray:
+        height, width, n_s, k = self.shape
+        out = np.full((height * width, n_s, k), np.nan)
+        out[self.whole_pixel] = self.whole_values[:, None, :]
+        out[self.pixel, self.sample] = self.values[self.pair]
+        return out.reshape(self.shape)
+
+
+@dataclass(frozen=True)
 class MultiFrame:
     """Per-sample and per-pixel results of a multisampled render (flat pixel arrays)."""
 
     sample_tri: np.ndarray  # (P, S) triangle after clipping, -1 none
-    sample_depth: np.ndarray  # (P, S)
-    sample_attrs: np.ndarray  # (P, S, k)
+    sample_depth: SampleDepths  # called: (H, W, S)
+    sample_attrs: SampleAttributes  # called: (H, W, S, k)
     owner: np.ndarray  # (P,) triangle after clipping owning most samples, -1 none
     attrs: np.ndarray  # (P, k)
     depth: np.ndarray  # (P,)
@@ -359,75 +278,71 @@ class MultiFrame:
     record: dict  # the per-sample depth-test entries and the whole pixels, for the trace
 
 
+def _sample_entries(frags, winner, n_s, n_tri):
+    """Every covered sample of the pixels not decided whole: (triangle, pixel, sample),
+    grouped by sample slot, drawing order (triangle index) inside each: the z-buffer's."""
+    rest = np.flatnonzero(winner[frags.full_pixel] < 0)  # full fragments count S times
+    pair, p_sample = frags.part_samples(np.flatnonzero(winner[frags.part_pixel] < 0))
+    tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.part_tri[pair]])
+    pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.part_pixel[pair]])
+    sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), p_sample])
+    order = np.argsort((pixel * n_s + sample) * n_tri + tri)
+    return tri[order], pixel[order], sample[order]
+
+
 def visibility(frags, planes, unit, offsets, size, options, forced):
-    """The depth buffer per sample: (P, S) triangle and stored depth, the whole pixels
-    (flat index, triangle) and the number of samples where 2+ triangles met."""
+    """The depth buffer per sample: (P, S) triangle, its depths (:class:`SampleDepths`),
+    the whole pixels (flat index, triangle), the number of samples where 2+ triangles met,
+    and the trace record."""
     depth_test, depth_format = options
     _, force_ms = forced  # the one-pass z-buffer does the same work forced or not
     width, height = size
     n_s, n_pix = len(offsets), width * height
     if force_ms:
-        winner = np.full(n_pix, -1, np.int64)
+        winner, reached = np.full(n_pix, -1, np.int64), None
     else:
-        winner = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
-    # every covered sample of the other pixels (full fragments count S times)
-    rest = np.flatnonzero(winner[frags.full_pixel] < 0)
-    keep = np.flatnonzero(winner[frags.pixel] < 0)
-    tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.tri[keep]])
-    pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.pixel[keep]])
-    sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), frags.sample[keep]])
-    # grouped by sample slot, drawing order (triangle index) inside each: the z-buffer's order
-    order = np.argsort((pixel * n_s + sample) * len(planes) + tri)
-    tri, pixel, sample = tri[order], pixel[order], sample[order]
+        winner, reached = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
+    tri, pixel, sample = _sample_entries(frags, winner, n_s, len(planes))
     row, col = np.divmod(pixel, width)
     x, y = col + offsets[sample, 0], row + offsets[sample, 1]
     depth = quantize(plane_depth(planes, unit, tri, x, y), depth_format)
     slot = pixel * n_s + sample
-    won, _ = resolve(slot, depth, n_pix * n_s, depth_test)
+    start = np.flatnonzero(np.r_[True, slot[1:] != slot[:-1]]) if len(slot) else slot[:0]
+    size_of = np.diff(np.r_[start, len(slot)])  # entries per sample slot
+    won, _ = resolve(np.repeat(np.arange(len(start)), size_of), depth, len(start), depth_test)
+    slots = slot[start]
     sample_tri = np.full(n_pix * n_s, -1, dtype=np.int64)
-    sample_depth = np.full(n_pix * n_s, np.nan)
-    hit = np.flatnonzero(won >= 0)
-    sample_tri[hit], sample_depth[hit] = tri[won[hit]], depth[won[hit]]
+    sample_tri[slots] = tri[won]
     # whole pixels: their one triangle at every sample, no per-sample test
     wp = np.flatnonzero(winner >= 0)
-    wr, wc = np.divmod(wp, width)
     sample_tri = sample_tri.reshape(n_pix, n_s)
-    sample_depth = sample_depth.reshape(n_pix, n_s)
     sample_tri[wp] = winner[wp][:, None]
-    sample_depth[wp] = quantize(
-        plane_depth(planes, unit, winner[wp], wc[:, None] + offsets[:, 0],
-                    wr[:, None] + offsets[:, 1]), depth_format,
-    )  # fmt: skip
-    met = int(np.count_nonzero(np.bincount(slot) > 1))
-    reached = np.bincount(frags.full_pixel, minlength=n_pix) + (
-        np.bincount(frags.pixel, minlength=n_pix) > 0
-    )  # a pixel decided whole that 2+ triangles reach: the test settled all its samples
-    met += n_s * int(np.count_nonzero(reached[wp] > 1))
+    met = int(np.count_nonzero(size_of > 1))
+    if len(wp):  # a pixel decided whole that 2+ triangles reach: the test settled all of it
+        met += n_s * int(np.count_nonzero(reached[wp] > 1))
+    depths = SampleDepths((height, width, n_s), slots, depth[won], wp, winner[wp], planes,
+                          unit, offsets, depth_format)  # fmt: skip
     record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "slot": slot,
               "depth_test": depth_test, "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
-    return sample_tri, sample_depth, (wp, winner[wp]), met, record
+    return sample_tri, depths, (wp, winner[wp]), (slots, tri[won]), met, record
 
 
-def shade_pixels(sample_tri, whole, frags, source, window, clipped, offsets, size, flags):
-    """Attributes per sample (once per pixel and triangle) and the owners' per-pixel values."""
-    force_ms, force_attrs, perspective = flags
-    width, _ = size
+def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size, flags):
+    """Attributes per sample (once per pixel and triangle, a :class:`SampleAttributes`) and
+    the owners' per-pixel values; ``slots`` are the samples the per-sample test decided."""
+    force_ms, force_attrs = flags
+    width, height = size
     n_pix, n_s = sample_tri.shape
-    w, attrs, parent = clipped.clip[:, :, 3], clipped.attrs, clipped.parent
-    k = attrs.shape[2]
-    out_attrs = np.full((n_pix, n_s, k), np.nan)
+    k = tables.value_lo.shape[1]
     owner = np.full(n_pix, -1, dtype=np.int64)
     pix_attrs, pix_depth = np.full((n_pix, k), np.nan), np.full(n_pix, np.nan)
-    args = (source, window, w, attrs)
     # simple pixels: one evaluation serves all samples
     sp, st = whole
-    vals, dep = shade(*args, st, sp, np.ones((len(sp), n_s), bool), offsets, width, perspective)
-    out_attrs[sp] = vals[:, None, :]
-    owner[sp], pix_attrs[sp], pix_depth[sp] = st, vals, dep
+    whole_vals, dep = shade(tables, st, sp, None, offsets, width)
+    owner[sp], pix_attrs[sp], pix_depth[sp] = st, whole_vals, dep
     # the other covered pixels: one evaluation per (pixel, triangle) seen at a sample
-    is_simple = np.zeros(n_pix, dtype=bool)
-    is_simple[sp] = True
-    others = np.flatnonzero((sample_tri >= 0).any(axis=1) & ~is_simple)
+    seen = slots // n_s  # ascending: the covered pixels decided sample by sample
+    others = seen[np.r_[True, seen[1:] != seen[:-1]]] if len(seen) else seen
     sub = sample_tri[others]
     i, s = np.nonzero(sub >= 0)
     pix, tri = others[i], sub[i, s]
@@ -436,8 +351,9 @@ def shade_pixels(sample_tri, whole, frags, source, window, clipped, offsets, siz
     else:
         first, inverse = _distinct(sub, i, s)
     won = sample_tri[pix[first]] == tri[first][:, None]
-    vals, dep = shade(*args, tri[first], pix[first], won, offsets, width, perspective)
-    out_attrs[pix, s] = vals[inverse]
+    vals, dep = shade(tables, tri[first], pix[first], won, offsets, width)
+    sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, pix, s, vals,
+                                    inverse)  # fmt: skip
     parents = np.where(sub >= 0, parent[np.maximum(sub, 0)], -1)
     _, own_sample = owners(parents)
     slot = np.full(sub.shape, -1, dtype=np.int64)
@@ -447,14 +363,14 @@ def shade_pixels(sample_tri, whole, frags, source, window, clipped, offsets, siz
     pix_attrs[others], pix_depth[others] = vals[at], dep[at]
     n_shaded = len(sp) + len(first)
     if force_attrs:  # also every hidden (pixel, triangle): evaluated, then discarded
-        keys = np.unique(
-            np.r_[frags.pixel * len(w) + frags.tri, frags.full_pixel * len(w) + frags.full_tri]
-        )
-        hidden_pix, hidden_tri = np.divmod(keys, len(w))
+        m = len(tables.area)
+        keys = np.unique(np.r_[frags.part_pixel * m + frags.part_tri,
+                               frags.full_pixel * m + frags.full_tri])  # fmt: skip
+        hidden_pix, hidden_tri = np.divmod(keys, m)
         won = sample_tri[hidden_pix] == hidden_tri[:, None]
-        shade(*args, hidden_tri, hidden_pix, won, offsets, width, perspective)
+        shade(tables, hidden_tri, hidden_pix, won, offsets, width)
         n_shaded += len(keys)
-    return out_attrs, owner, pix_attrs, pix_depth, n_shaded
+    return sample_attrs, owner, pix_attrs, pix_depth, n_shaded
 
 
 def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
@@ -475,7 +391,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     source = weight_source(xy, setup, snapped_weights=False)
     planes = depth_planes(source, window)
     force_test = "depth_test" in forced and depth_test
-    sample_tri, sample_depth, whole, contested, record = visibility(
+    sample_tri, depths, whole, decided, contested, record = visibility(
         frags, planes, source[2], px, size, (depth_test, depth_format), (force_test, force_ms)
     )
     w = clipped.clip[:, :, 3]
@@ -484,17 +400,27 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     perspective = np.ones(len(w), bool) if divide_all else unequal
     if interpolation == "affine":
         perspective = np.zeros(len(w), bool)
-    flags = (force_ms, "attributes" in forced, perspective)
+    tables = shade_tables(source, window, w, clipped.attrs, perspective)
     sample_attrs, owner, attrs, depth, n_shaded = shade_pixels(
-        sample_tri, whole, frags, source, window, clipped, px, size, flags
+        sample_tri,
+        whole,
+        decided[0],
+        tables,
+        frags,
+        clipped.parent,
+        px,
+        size,
+        (force_ms, "attributes" in forced),
     )
     depth = quantize(depth, depth_format)
     n_covered = int((owner >= 0).sum())
-    n_samples = int((sample_tri >= 0).sum())
+    n_samples = len(px) * len(whole[0]) + len(decided[0])
     n_per_sample = n_covered - len(whole[0])
     k = clipped.attrs.shape[2]
-    visible = np.unique(sample_tri[sample_tri >= 0])
-    n_persp = int(perspective[visible].sum())
+    shown = np.zeros(len(w), dtype=bool)  # the triangles some sample shows
+    shown[whole[1]] = True
+    shown[decided[1]] = True
+    n_persp = int(perspective[shown].sum())
     depth_effect = depth_test_effect(depth_test, force_test, contested, n_samples)
     why = depth_effect.why.replace("pixel(s)", "sample(s)").replace(
         "every fragment", "every sample"
@@ -502,8 +428,8 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     effects = (
         replace(depth_effect, unit="samples", why=why),
         multisampling_effect(len(px), n_per_sample, n_covered, force_ms),
-        perspective_effect(k, len(visible), n_persp, len(w), interpolation, divide_all),
+        perspective_effect(k, int(shown.sum()), n_persp, len(w), interpolation, divide_all),
         attributes_effect(k, n_shaded, frags.n_fragments, n_covered, "attributes" in forced),
     )
-    multi = MultiFrame(sample_tri, sample_depth, sample_attrs, owner, attrs, depth, px, record)
+    multi = MultiFrame(sample_tri, depths, sample_attrs, owner, attrs, depth, px, record)
     return multi, effects

@@ -88,6 +88,31 @@ class RenderTrace:
     hiz: HiZResult | None = None
 
 
+class _OnFirstUse:
+    """A :class:`Frame` field that may be given as a zero-argument callable, called (once)
+    when the field is first read: the large per-sample arrays of a multisampled frame
+    (S depths, S attribute vectors per pixel) are only built if someone looks at them.
+
+    A data descriptor as a dataclass default: the dataclass's ``__init__`` stores through
+    ``__set__``, and the class-level read (``instance is None``) gives the default, None.
+    """
+
+    def __set_name__(self, owner, name):
+        self.key = "_" + name
+
+    def __get__(self, instance, owner=None):
+        if instance is None:
+            return None
+        value = instance.__dict__[self.key]
+        if callable(value):
+            value = value()
+            instance.__dict__[self.key] = value
+        return value
+
+    def __set__(self, instance, value):
+        instance.__dict__[self.key] = value
+
+
 @dataclass(frozen=True)
 class Frame:
     """The result of :func:`render`.
@@ -109,10 +134,11 @@ class Frame:
         ``triangle_id``, ``depth`` and ``attrs`` then describe the triangle owning most of
         the pixel's samples (ties: the earlier), evaluated once for the pixel.
     sample_depth : (H, W, S) float64 or None
-        The depth buffer, one depth per sample, NaN where uncovered.
+        The depth buffer, one depth per sample, NaN where uncovered (built on first read).
     sample_attrs : (H, W, S, k) float64 or None
         The attributes each sample holds: those of its triangle, evaluated once per pixel
-        (at the centre, extrapolated when outside), NaN where uncovered.
+        (at the centre, extrapolated when outside), NaN where uncovered (built on first
+        read: pixels decided whole keep one value for all their samples until then).
     samples : (S, 2) float64 or None
         The sample offsets inside the pixel as tested, in px.
     ddx, ddy : (H, W, k) float64 or None
@@ -126,8 +152,8 @@ class Frame:
     plan: Plan
     trace: RenderTrace | None = None
     sample_triangle_id: np.ndarray | None = None
-    sample_depth: np.ndarray | None = None
-    sample_attrs: np.ndarray | None = None
+    sample_depth: np.ndarray | None = _OnFirstUse()
+    sample_attrs: np.ndarray | None = _OnFirstUse()
     samples: np.ndarray | None = None
     ddx: np.ndarray | None = None
     ddy: np.ndarray | None = None
@@ -337,6 +363,8 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     n_s, k = len(multi.offsets), clipped.attrs.shape[2]
 
     def ids(sub):  # input triangle ids (-1 stays -1; -1 also when nothing survived clipping)
+        if np.array_equal(clipped.parent, np.arange(len(clipped.parent))):
+            return sub  # nothing was clipped: the same ids
         parent = np.r_[clipped.parent, -1]  # index -1 reads the appended -1
         return parent[sub]
 
@@ -363,8 +391,8 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         plan=plan,
         trace=record,
         sample_triangle_id=ids(multi.sample_tri).reshape(height, width, n_s),
-        sample_depth=multi.sample_depth.reshape(height, width, n_s),
-        sample_attrs=multi.sample_attrs.reshape(height, width, n_s, k),
+        sample_depth=multi.sample_depth,  # built on first read
+        sample_attrs=multi.sample_attrs,
         samples=multi.offsets,
     )
 
