@@ -333,7 +333,7 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
     force_ms, force_attrs = flags
     width, height = size
     n_pix, n_s = sample_tri.shape
-    k = tables.value_lo.shape[1]
+    k = tables.value_lo.shape[0]
     owner = np.full(n_pix, -1, dtype=np.int64)
     pix_attrs, pix_depth = np.full((n_pix, k), np.nan), np.full(n_pix, np.nan)
     # simple pixels: one evaluation serves all samples

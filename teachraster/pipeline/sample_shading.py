@@ -21,40 +21,39 @@ import numpy as np
 from ..core.interpolation import weights_per_row
 
 
-def _columns(a: np.ndarray) -> tuple[np.ndarray, ...]:
-    """The columns of (M, c) ``a`` as contiguous (M,) arrays."""
-    return tuple(np.ascontiguousarray(a[:, c]) for c in range(a.shape[1]))
-
-
 @dataclass(frozen=True)
 class ShadeTables:
     """Per triangle, what evaluating its attributes and depth at a point needs.
 
+    Every table is (c, M), one contiguous row per number, so a gather of n triangles
+    (``np.take(table, tri, axis=1)``) gives (c, n) rows that the arithmetic runs along.
+
     Attributes
     ----------
-    edges : three tuples of (M,) arrays
-        For weight k, the opposite edge a → b (a = vertex k+1, b = vertex k+2):
-        a.x, a.y, dx, dy, in pixels (the barycentric source vertices).
+    edges : (3, 4, M) float64
+        For weight k, the opposite edge a → b (a = vertex k+1, b = vertex k+2): a.x, a.y,
+        dx, dy, in pixels (the barycentric source vertices).
     area : (M,) float64
         E(v0, v1, v2) of those vertices.
     w : (M, 3) float64
-        Clip w per vertex; ``ratio`` (M, 3) min(w) / w_i, the perspective weights' factors.
+        Clip w per vertex; ``ratio`` (3, M) min(w) / w_i, the perspective weights' factors.
     perspective : (M,) bool
         Whether a triangle's attributes are divided by w.
-    vertex_values, value_lo, value_hi : (M, k) arrays
-        The attribute of each vertex (a tuple of three), and their minimum and maximum.
-    vertex_depth, depth_lo, depth_hi : the same for window depth, as (M, 1).
+    values : (3, k, M)
+        The attributes of each vertex; ``value_lo``, ``value_hi`` (k, M) their range.
+    depth : (3, 1, M)
+        Window depth of each vertex; ``depth_lo``, ``depth_hi`` (1, M) its range.
     """
 
-    edges: tuple
+    edges: np.ndarray
     area: np.ndarray
     w: np.ndarray
     ratio: np.ndarray
     perspective: np.ndarray
-    vertex_values: tuple
+    values: np.ndarray
     value_lo: np.ndarray
     value_hi: np.ndarray
-    vertex_depth: tuple
+    depth: np.ndarray
     depth_lo: np.ndarray
     depth_hi: np.ndarray
 
@@ -67,40 +66,35 @@ def shade_tables(source, window, w, attrs, perspective) -> ShadeTables:
     ``attrs`` (M, 3, k), ``perspective`` (M,) bool.
     """
     src, src_area, _, _ = source
-    edges = []
+    edges = np.empty((3, 4, len(src)))
     for k in range(3):
         a, b = src[:, (k + 1) % 3], src[:, (k + 2) % 3]
-        edges.append(
-            _columns(np.stack([a[:, 0], a[:, 1], b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]], 1))
-        )
-    depth = window[:, :, 2:3]
-
-    def spread(v):  # per-vertex values and their range
-        return tuple(np.ascontiguousarray(v[:, i]) for i in range(3)), v.min(axis=1), v.max(axis=1)
-
-    values, lo, hi = spread(attrs)
-    z, z_lo, z_hi = spread(depth)
+        edges[k] = a[:, 0], a[:, 1], b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
+    values = np.ascontiguousarray(np.transpose(attrs, (1, 2, 0)))  # (3, k, M)
+    depth = np.ascontiguousarray(np.transpose(window[:, :, 2:3], (1, 2, 0)))
     return ShadeTables(
-        tuple(edges), src_area.astype(np.float64), w, w.min(axis=1, keepdims=True) / w,
-        np.asarray(perspective, dtype=bool), values, lo, hi, z, z_lo, z_hi,
+        edges, src_area.astype(np.float64), w, np.ascontiguousarray((w.min(axis=1)[:, None] / w).T),
+        np.asarray(perspective, dtype=bool), values, values.min(axis=0), values.max(axis=0),
+        depth, depth.min(axis=0), depth.max(axis=0),
     )  # fmt: skip
 
 
 def barycentrics_at(tables: ShadeTables, tri: np.ndarray, x, y) -> np.ndarray:
-    """Barycentrics (n, 3) of triangles ``tri`` at points (x, y) in pixels, any point.
+    """Barycentrics (3, n) of triangles ``tri`` at points (x, y) in pixels, any point.
 
     Weight k is E(v_k+1, v_k+2, p) / E(v0, v1, v2): the same vertices and areas the batched
     fill uses, evaluated directly at the point (negative outside: extrapolation).
     """
-    lam = np.empty((len(tri), 3))
+    lam = np.empty((3, len(tri)))
     area = np.take(tables.area, tri)
-    for k, (ax, ay, dx, dy) in enumerate(tables.edges):
-        e = y - np.take(ay, tri)
-        e *= np.take(dx, tri)
-        d = x - np.take(ax, tri)
-        d *= np.take(dy, tri)
+    for k in range(3):
+        ax, ay, dx, dy = np.take(tables.edges[k], tri, axis=1)
+        e = y - ay
+        e *= dx
+        d = x - ax
+        d *= dy
         e -= d
-        np.divide(e, area, out=lam[:, k])
+        np.divide(e, area, out=lam[k])
     return lam
 
 
@@ -117,12 +111,12 @@ def shade(tables: ShadeTables, tri, pixel, won, offsets, width):
     x, y = col + 0.5, row + 0.5
     lam = barycentrics_at(tables, tri, x, y)
     persp = np.take(tables.perspective, tri)
-    q = lam * np.take(tables.ratio, tri, axis=0)
-    total = q[:, 0] + q[:, 1]
-    total += q[:, 2]
-    inside = lam[:, 0] >= 0
-    inside &= lam[:, 1] >= 0
-    inside &= lam[:, 2] >= 0
+    q = lam * np.take(tables.ratio, tri, axis=1)
+    total = q[0] + q[1]
+    total += q[2]
+    inside = lam[0] >= 0
+    inside &= lam[1] >= 0
+    inside &= lam[2] >= 0
     bad = persp & ~inside & ~(total > 0)
     if bad.any():  # the plane of 1/w crosses zero before the centre: use a covered sample
         if won is None:
@@ -131,33 +125,34 @@ def shade(tables: ShadeTables, tri, pixel, won, offsets, width):
         order = np.argsort(d[:, 0] ** 2 + d[:, 1] ** 2, kind="stable")
         s = order[np.argmax(won[bad][:, order], axis=1)]
         x[bad], y[bad] = col[bad] + offsets[s, 0], row[bad] + offsets[s, 1]
-        lam[bad] = barycentrics_at(tables, tri[bad], x[bad], y[bad])
-        q[bad] = lam[bad] * tables.ratio[tri[bad]]
-        total[bad] = q[bad, 0] + q[bad, 1] + q[bad, 2]
-        inside = (lam[:, 0] >= 0) & (lam[:, 1] >= 0) & (lam[:, 2] >= 0)
+        lam[:, bad] = barycentrics_at(tables, tri[bad], x[bad], y[bad])
+        q[:, bad] = lam[:, bad] * tables.ratio[:, tri[bad]]
+        total[bad] = q[0, bad] + q[1, bad] + q[2, bad]
+        inside = (lam[0] >= 0) & (lam[1] >= 0) & (lam[2] >= 0)
     with np.errstate(divide="ignore", invalid="ignore"):  # rows fixed just below
         if persp.all():
-            weights = np.divide(q, total[:, None], out=q)
+            weights = np.divide(q, total, out=q)
         else:
-            weights = np.where(persp[:, None], q / total[:, None], lam)
+            weights = np.where(persp, q / total, lam)
     under = persp & ~(total > 0)  # every term underflowed: the log-domain fallback
     if under.any():
-        weights[under] = weights_per_row(np.maximum(lam[under], 0), tables.w[tri[under]])
-    values = _blend(weights, tri, tables.vertex_values, tables.value_lo, tables.value_hi, inside)
-    depth = _blend(lam, tri, tables.vertex_depth, tables.depth_lo, tables.depth_hi, inside)
-    return values, depth[:, 0]
+        fallback = weights_per_row(np.maximum(lam[:, under], 0).T, tables.w[tri[under]])
+        weights[:, under] = fallback.T
+    values = _blend(weights, tri, tables.values, tables.value_lo, tables.value_hi, inside)
+    depth = _blend(lam, tri, tables.depth, tables.depth_lo, tables.depth_hi, inside)
+    return values.T, depth[0]
 
 
 def _blend(weights, tri, vertex, lo, hi, clamp):
-    """``Σ μ_i f_i`` per row (n, k); clamped to the vertex range where ``clamp``."""
-    v0, v1, v2 = (np.take(v, tri, axis=0) for v in vertex)
-    out = weights[:, 0:1] * v0
-    out += weights[:, 1:2] * v1
-    out += weights[:, 2:3] * v2
-    if clamp.any():
-        at = np.flatnonzero(clamp)
-        c = out[at]
-        np.maximum(c, lo[tri[at]], out=c)
-        np.minimum(c, hi[tri[at]], out=c)
-        out[at] = c
+    """``Σ μ_i f_i`` (k, n) of weights (3, n); clamped to the vertex range where ``clamp``."""
+    out = weights[0] * np.take(vertex[0], tri, axis=1)
+    out += weights[1] * np.take(vertex[1], tri, axis=1)
+    out += weights[2] * np.take(vertex[2], tri, axis=1)
+    if clamp.all():
+        np.maximum(out, np.take(lo, tri, axis=1), out=out)
+        np.minimum(out, np.take(hi, tri, axis=1), out=out)
+    elif clamp.any():
+        at = tri[clamp]
+        c = np.minimum(np.maximum(out[:, clamp], lo[:, at]), hi[:, at])
+        out[:, clamp] = c
     return out
