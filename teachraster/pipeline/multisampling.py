@@ -89,11 +89,7 @@ def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
     A pixel qualifies when a triangle covers all its samples and either no other triangle
     reaches the pixel, or (depth test off, no partial coverage) it is the last drawn, or
     (depth test on) its stored depth at every sample is surely below every other
-    triangle's there, partly covering ones included. "Surely" first by each triangle's own
-    depth range (the plane is clamped to its vertices' depths, so no sample of it lies
-    outside them: one gather per fragment), then, where that does not settle it, by the
-    plane's range over the pixel square (bounded by its slope; a margin covers rounding).
-    Both bounds are quantised like the stored depth, so every sample's test would agree.
+    triangle's there, partly covering ones included (:func:`_nearest_whole`).
 
     Returns the winner per pixel (-1: decide sample by sample) and, per pixel, how many
     triangles reach it (the full ones, plus 1 if any covers it partly).
@@ -104,33 +100,55 @@ def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
     count = np.bincount(f_pix, minlength=n_pix)
     partial = np.bincount(frags.part_pixel, minlength=n_pix) > 0
     reached = count + partial
+    if depth_test:
+        return _nearest_whole(frags, planes, unit, width, n_pix, depth_format), reached
     winner = np.full(n_pix, -1, dtype=np.int64)
     f_count, f_partial = count[f_pix], partial[f_pix]
     one = ~f_partial & (f_count == 1)
     winner[f_pix[one]] = f_tri[one]
-    if not depth_test:  # the last one drawn (highest index) wins at every sample
-        many = np.flatnonzero(~f_partial & (f_count > 1))
-        last = np.full(n_pix, -1, dtype=np.int64)
-        np.maximum.at(last, f_pix[many], many)
-        done = np.flatnonzero(last >= 0)
-        winner[done] = f_tri[last[done]]
-        return winner, reached
-    contested = np.flatnonzero(f_partial | (f_count > 1))
-    if len(contested) == 0:
-        return winner, reached
-    full = f_pix[contested], f_tri[contested]
-    beside = np.flatnonzero(count[frags.part_pixel] > 0)  # partial pairs beside a full one
-    part = frags.part_pixel[beside], frags.part_tri[beside]
+    # without the depth test the last one drawn (highest index) wins at every sample
+    many = np.flatnonzero(~f_partial & (f_count > 1))
+    last = np.full(n_pix, -1, dtype=np.int64)
+    np.maximum.at(last, f_pix[many], many)
+    done = np.flatnonzero(last >= 0)
+    winner[done] = f_tri[last[done]]
+    return winner, reached
+
+
+def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
+    """With the depth test: per pixel, the full triangle surely nearest at every sample.
+
+    "Surely" first by each triangle's own depth range (the plane is clamped to its
+    vertices' depths, so no sample of it lies outside them: one gather per fragment); the
+    candidate is the full triangle with the smallest upper end (ties: the earlier), and it
+    wins when that is below every other triangle's lower end there. Where that does not
+    settle it, by the planes' ranges over the pixel square (:func:`_depth_range`). Both
+    bounds are quantised like the stored depth, so every sample's test would agree.
+    """
+    f_pix, f_tri = frags.full_pixel, frags.full_tri
+    m = len(planes)
     z_lo, z_hi = quantize(planes[:, 5], depth_format), quantize(planes[:, 6], depth_format)
-    _nearest(full, (z_lo[full[1]], z_hi[full[1]]), part[0], z_lo[part[1]], winner)
+    order = np.lexsort((np.arange(m), z_hi))  # by upper end, then drawing order
+    rank = np.empty(m, dtype=np.int64)
+    rank[order] = np.arange(m)
+    best = np.full(n_pix, m, dtype=np.int64)
+    np.minimum.at(best, f_pix, rank[f_tri])
+    has = best < m  # some triangle covers every sample
+    cand = np.where(has, order[np.minimum(best, m - 1)], -1)
+    rest = np.full(n_pix, np.inf)
+    np.minimum.at(rest, f_pix, np.where(f_tri == cand[f_pix], np.inf, z_lo[f_tri]))
+    np.minimum.at(rest, frags.part_pixel, z_lo[frags.part_tri])
+    winner = np.where(has & (z_hi[cand] < rest), cand, -1)
     # where the triangles' own depth ranges overlap: the planes over the pixel square
-    left, p_left = winner[full[0]] < 0, winner[part[0]] < 0
-    full, part = (full[0][left], full[1][left]), (part[0][p_left], part[1][p_left])
-    if len(full[0]):
+    left = has & (winner < 0)
+    sel, p_sel = np.flatnonzero(left[f_pix]), np.flatnonzero(left[frags.part_pixel])
+    if len(sel):
+        full = f_pix[sel], f_tri[sel]
+        part = frags.part_pixel[p_sel], frags.part_tri[p_sel]
         lo, hi = _depth_range(planes, unit, *full, width, depth_format)
         p_lo, _ = _depth_range(planes, unit, *part, width, depth_format)
         _nearest(full, (lo, hi), part[0], p_lo, winner)
-    return winner, reached
+    return winner
 
 
 def _depth_range(planes, unit, pix, tri, width, depth_format):
