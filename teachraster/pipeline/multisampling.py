@@ -91,17 +91,17 @@ def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
     (depth test on) its stored depth at every sample is surely below every other
     triangle's there, partly covering ones included (:func:`_nearest_whole`).
 
-    Returns the winner per pixel (-1: decide sample by sample) and, per pixel, how many
-    triangles reach it (the full ones, plus 1 if any covers it partly).
+    Returns the winner per pixel (-1: decide sample by sample) and whether 2+ triangles
+    reach each pixel (n_pix,) bool.
     """
     width, height = size
     n_pix = width * height
+    if depth_test:
+        return _nearest_whole(frags, planes, unit, width, n_pix, depth_format)
     f_pix, f_tri = frags.full_pixel, frags.full_tri
     count = np.bincount(f_pix, minlength=n_pix)
     partial = np.bincount(frags.part_pixel, minlength=n_pix) > 0
-    reached = count + partial
-    if depth_test:
-        return _nearest_whole(frags, planes, unit, width, n_pix, depth_format), reached
+    reached = (count + partial) > 1
     winner = np.full(n_pix, -1, dtype=np.int64)
     f_count, f_partial = count[f_pix], partial[f_pix]
     one = ~f_partial & (f_count == 1)
@@ -116,7 +116,9 @@ def whole_pixels(frags, planes, unit, size, depth_test, depth_format):
 
 
 def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
-    """With the depth test: per pixel, the full triangle surely nearest at every sample.
+    """With the depth test: per pixel, the full triangle surely nearest at every sample
+    (-1: decide sample by sample), and whether another triangle reaches it (bool, valid
+    where some triangle covers every sample).
 
     "Surely" first by each triangle's own depth range (the plane is clamped to its
     vertices' depths, so no sample of it lies outside them: one gather per fragment); the
@@ -139,6 +141,7 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
     np.minimum.at(rest, f_pix, np.where(f_tri == cand[f_pix], np.inf, z_lo[f_tri]))
     np.minimum.at(rest, frags.part_pixel, z_lo[frags.part_tri])
     winner = np.where(has & (z_hi[cand] < rest), cand, -1)
+    shared = rest < np.inf  # another triangle reaches the pixel (where one covers it all)
     # where the triangles' own depth ranges overlap: the planes over the pixel square
     left = has & (winner < 0)
     sel, p_sel = np.flatnonzero(left[f_pix]), np.flatnonzero(left[frags.part_pixel])
@@ -148,7 +151,7 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
         lo, hi = _depth_range(planes, unit, *full, width, depth_format)
         p_lo, _ = _depth_range(planes, unit, *part, width, depth_format)
         _nearest(full, (lo, hi), part[0], p_lo, winner)
-    return winner
+    return winner, shared
 
 
 def _depth_range(planes, unit, pix, tri, width, depth_format):
@@ -329,15 +332,14 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     size_of = np.diff(np.r_[start, len(slot)])  # entries per sample slot
     won, _ = resolve(np.repeat(np.arange(len(start)), size_of), depth, len(start), depth_test)
     slots = slot[start]
-    sample_tri = np.full(n_pix * n_s, -1, dtype=np.int64)
+    # whole pixels: their one triangle at every sample, no per-sample test (-1 elsewhere)
+    sample_tri = np.repeat(winner, n_s)
     sample_tri[slots] = tri[won]
-    # whole pixels: their one triangle at every sample, no per-sample test
-    wp = np.flatnonzero(winner >= 0)
     sample_tri = sample_tri.reshape(n_pix, n_s)
-    sample_tri[wp] = winner[wp][:, None]
+    wp = np.flatnonzero(winner >= 0)
     met = int(np.count_nonzero(size_of > 1))
     if len(wp):  # a pixel decided whole that 2+ triangles reach: the test settled all of it
-        met += n_s * int(np.count_nonzero(reached[wp] > 1))
+        met += n_s * int(np.count_nonzero(reached[wp]))
     depths = SampleDepths((height, width, n_s), slots, depth[won], wp, winner[wp], planes,
                           unit, offsets, depth_format)  # fmt: skip
     record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "slot": slot,
