@@ -19,6 +19,7 @@ from teachraster.core.interpolation import (
     blend,
     blend_each,
     convex_weights,
+    normalised_weights,
     perspective_weights,
     weights_per_row,
 )
@@ -29,6 +30,8 @@ BITS = st.sampled_from([None, *range(17)])
 LOG_W = st.one_of(st.sampled_from([-6.0, -4.0, 0.0, 4.0, 6.0]), st.floats(-6.0, 6.0))
 COORD = st.floats(-4.0, SIZE + 4.0)
 VALUE = st.floats(-1e3, 1e3)
+# For render: also ratios across the whole float range (subnormal weight totals).
+LOG_W_ANY = st.one_of(LOG_W, st.sampled_from([-300.0, 300.0]), st.floats(-300.0, 300.0))
 
 
 def strict(call):
@@ -92,7 +95,7 @@ NDC_Z = st.floats(-2.0, 2.0)  # beyond ±1: the vertex is cut by the near or far
         st.tuples(
             st.lists(st.tuples(NDC, NDC), min_size=3, max_size=3),
             st.lists(NDC_Z, min_size=3, max_size=3),
-            st.lists(LOG_W, min_size=3, max_size=3),
+            st.lists(LOG_W_ANY, min_size=3, max_size=3),
             st.lists(st.booleans(), min_size=3, max_size=3),  # behind the eye (w < 0)
             st.lists(st.tuples(VALUE, VALUE), min_size=3, max_size=3),
         ),
@@ -164,6 +167,35 @@ def test_issue_case_weights_sum_to_nothing():
     assert np.isfinite(mu).all() and (mu >= 0).all()
     assert mu.sum() == pytest.approx(1.0, abs=1e-15)
     np.testing.assert_array_equal(mu[:, 0], 0.0)
+
+
+def test_subnormal_weight_totals_stay_finite():
+    """w from 3.7e-22 to 3.6e289 (a ratio beyond the float range): the perspective terms of
+    some covered centres sum to a subnormal total, whose reciprocal overflows; the weights are
+    divided by the total itself, and rows whose every term underflowed are redone in logs."""
+    clip = np.array([[
+        [4.8422206510653815e-22, -9.9469583337623692e-23, 7.7460915712799127e-23,
+         3.7060558637015205e-22],
+        [-9.2623485211795792e286, 4.5143651238154359e286, 5.8879057147264721e286,
+         1.0866849519673419e287],
+        [2.5479094722906058e289, 3.2495904121176647e289, 3.1005333821363250e289,
+         3.6283158776430638e289],
+    ]])  # fmt: skip
+    attrs = np.array([[[-0.30186167875298198, 8.7599214511715161e299],
+                       [2.3855243875653766e299, 0.99077434092284267],
+                       [-0.63063034057752110, 5.7588632804911315e307]]])  # fmt: skip
+    frame = strict(lambda: tr.render(clip, 16, 12, attrs=attrs, subpixel_bits=1))
+    assert (frame.triangle_id >= 0).any()
+    check_frame(frame, attrs, "subnormal totals")
+
+
+def test_normalised_weights_divide_by_subnormal_totals():
+    q = np.array([[1e-310, 2e-310, 0.0], [-1.0, 0.0, 0.0], [np.inf, 1.0, 0.0]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        mu, bad = normalised_weights(q)
+    np.testing.assert_allclose(mu[0], [1 / 3, 2 / 3, 0.0], rtol=1e-3)  # subnormal precision
+    assert bad.tolist() == [False, True, True]
 
 
 # -- the interpolation functions themselves --------------------------------------------------------

@@ -153,6 +153,36 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
     return q
 
 
+def normalised_weights(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Convex weights from unnormalised terms, in place: ``max(q_i, 0) / Σ_j max(q_j, 0)``.
+
+    ``q`` (n, 3) holds ``λ_i s_i`` for any positive per-row factors ``s_i``; with
+    ``s_i = min(w) / w_i`` the result is :func:`weights_per_row` of λ (ratios of 1/w,
+    Ek, *Triangles and Perspective Correct Interpolation*, eq. 19), computed without
+    normalising λ first: clamping λ_i to 0 and scaling its row by a constant are both
+    undone by the final division. That is why a renderer can fold ``s_i / area`` into the
+    barycentric pass and skip the per-pixel ``λ = E / area`` divide (see
+    ``Fragments.weights_at(..., scale=)``). Rows whose total is not in (0, inf) (every term
+    underflowed or was clamped, a NaN or an overflow from a degenerate set-up) are
+    returned as ``bad`` and left for the caller to redo with :func:`weights_per_row`,
+    which settles them; every other row is convex (each term in [0, total]).
+
+    >>> q, bad = normalised_weights(np.array([[-1.0, 1.0, 3.0], [0.0, 0.0, 0.0]]))
+    >>> q[0], bad
+    (array([0.  , 0.25, 0.75]), array([False,  True]))
+    """
+    np.maximum(q, 0.0, out=q)  # a NaN stays NaN, and its row is bad
+    with np.errstate(over="ignore", invalid="ignore"):
+        total = q[..., 0] + q[..., 1] + q[..., 2]
+    if len(total) and total.min() > 0 and total.max() < np.inf:  # the usual case, two passes
+        bad = np.zeros(len(total), dtype=bool)
+    else:  # NaN fails both tests
+        bad = ~((total > 0) & (total < np.inf))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        q /= total[..., None]  # not * (1 / total): a subnormal total's reciprocal overflows
+    return q, bad
+
+
 def blend(weights: np.ndarray, values: np.ndarray, *, extrapolate: bool = False) -> np.ndarray:
     """``Σ μ_i f_i`` clamped to the vertex values' range, for values (3,) or (3, k).
 
@@ -187,25 +217,29 @@ def blend_each(
     array([[1.]])
     """
     n, k = len(weights), values.shape[2]
-    out = np.empty((n, k))
+    out = np.empty((k, n))  # returned transposed: each channel contiguous
     # One contiguous 1-D array per weight and per vertex value: written out per vertex and
     # per channel, because reductions over an axis of length 3, and arithmetic on strided
     # (n, 3, k) views, are slow in numpy.
     m0, m1, m2 = (np.ascontiguousarray(weights[:, i]) for i in range(3))
+    # Each block's range, gathered rather than recomputed per row (and not as a reduction
+    # over the axis of three, which is slow even on the small per-block array).
+    lo = np.minimum(np.minimum(values[:, 0], values[:, 1]), values[:, 2])
+    hi = np.maximum(np.maximum(values[:, 0], values[:, 1]), values[:, 2])
     for j in range(k):
-        if index is None:
-            v0, v1, v2 = (np.ascontiguousarray(values[:, i, j]) for i in range(3))
-        else:
-            v0, v1, v2 = (np.ascontiguousarray(values[:, i, j])[index] for i in range(3))
+        v0, v1, v2 = (np.ascontiguousarray(values[:, i, j]) for i in range(3))
+        low, high = np.ascontiguousarray(lo[:, j]), np.ascontiguousarray(hi[:, j])
+        if index is not None:
+            v0, v1, v2, low, high = v0[index], v1[index], v2[index], low[index], high[index]
         with np.errstate(over="ignore"):  # values near the float maximum: clamped below
             o = m0 * v0
             o += m1 * v1
             o += m2 * v2
         if not extrapolate:
-            np.maximum(o, np.minimum(np.minimum(v0, v1), v2), out=o)
-            np.minimum(o, np.maximum(np.maximum(v0, v1), v2), out=o)
-        out[:, j] = o
-    return out
+            np.maximum(o, low, out=o)
+            np.minimum(o, high, out=o)
+        out[j] = o
+    return out.T
 
 
 def interpolate(

@@ -68,14 +68,18 @@ class Fragments:
             return self.weights_at(self.tri, self.col + 0.5, self.row + 0.5)
         return self.weights_at(self.tri[index], self.col[index] + 0.5, self.row[index] + 0.5)
 
-    def weights_at(self, tri: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    def weights_at(self, tri: np.ndarray, x: np.ndarray, y: np.ndarray, scale=None) -> np.ndarray:
         """(len(tri), 3) barycentrics of triangles ``tri`` at points (x, y) in pixels.
 
         Weight k is E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding;
-        points outside the triangle get negative weights (extrapolation).
+        points outside the triangle get negative weights (extrapolation). With ``scale``
+        (n, 3), weight k is E(v_k+1, v_k+2, p) * scale[tri, k] instead (per-triangle factors
+        folded into the one pass, such as the perspective weights' 1/w, see
+        :func:`teachraster.core.interpolation.normalised_weights`). The result is the
+        transpose of a (3, len(tri)) array, so each weight's column is contiguous.
         """
-        lam = np.empty((len(tri), 3))
-        area = self.area2[tri]
+        lam = np.empty((3, len(tri)))
+        area = self.area2[tri] if scale is None else None
         for k, (ax, ay, dx, dy) in enumerate(self._edges):
             # E(a, b, p) = (b - a).x (p.y - a.y) - (b - a).y (p.x - a.x), for edge a = v_k+1,
             # b = v_k+2; one gather per per-triangle number (contiguous, cheap).
@@ -84,8 +88,11 @@ class Fragments:
             d = x - ax[tri]
             d *= dy[tri]
             e -= d
-            np.divide(e, area, out=lam[:, k])
-        return lam
+            if scale is None:
+                np.divide(e, area, out=lam[k])
+            else:
+                np.multiply(e, np.ascontiguousarray(scale[:, k])[tri], out=lam[k])
+        return lam.T
 
     @cached_property
     def _edges(self) -> tuple[tuple[np.ndarray, ...], ...]:
@@ -101,9 +108,12 @@ class Fragments:
         """(m,) per-vertex ``values`` (n, 3) interpolated affinely at every fragment.
 
         The plane ``f = f0 + A (x - x0) + B (y - y0)`` of each triangle is set up once
-        (Fatahalian's matrix M, CMU 15-462 *Texture*) and evaluated per fragment, then
-        clamped to the vertex values' range (rounding cannot leave it, so depth stays in
-        [0, 1]). Cheaper than barycentrics when only one quantity, such as depth, is needed.
+        (Fatahalian's matrix M, CMU 15-462 *Texture*) and moved to the pixel grid, ``f = C +
+        A col + B row`` with ``C = f0 + A (0.5 - x0) + B (0.5 - y0)`` (as llvmpipe's set-up
+        moves its planes to the origin: three gathers and two multiply-adds per fragment),
+        then clamped to the vertex values' range (rounding cannot leave it, so depth stays
+        in [0, 1]). Cheaper than barycentrics when only one quantity, such as depth, is
+        needed.
         """
         v, f = self.vertices, np.asarray(values, dtype=np.float64)
         e1, e2 = v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]
@@ -111,19 +121,14 @@ class Fragments:
         with np.errstate(divide="ignore", invalid="ignore"):  # zero area: no fragments
             A = (d1 * e2[:, 1] - d2 * e1[:, 1]) / self.area2
             B = (d2 * e1[:, 0] - d1 * e2[:, 0]) / self.area2
+            C = f[:, 0] + A * (0.5 - v[:, 0, 0]) + B * (0.5 - v[:, 0, 1])
         t = self.tri
-        x0, y0, f0 = (np.ascontiguousarray(c) for c in (v[:, 0, 0], v[:, 0, 1], f[:, 0]))
-        # f0 + A (x - x0) + B (y - y0), in place on two fragment-sized arrays.
-        out = self.col + 0.5
-        out -= x0[t]
-        out *= A[t]
-        out += f0[t]
-        dy = self.row + 0.5
-        dy -= y0[t]
-        dy *= B[t]
-        out += dy
-        np.maximum(out, f.min(axis=1)[t], out=out)
-        np.minimum(out, f.max(axis=1)[t], out=out)
+        out = A[t] * self.col
+        out += B[t] * self.row
+        out += C[t]
+        # (np.minimum of the columns: a reduction over an axis of three is slow in numpy)
+        np.maximum(out, np.minimum(np.minimum(f[:, 0], f[:, 1]), f[:, 2])[t], out=out)
+        np.minimum(out, np.maximum(np.maximum(f[:, 0], f[:, 1]), f[:, 2])[t], out=out)
         return out
 
 

@@ -333,10 +333,16 @@ def _check_where(where, n):
 
 
 def _image(visible, values, width, height) -> np.ndarray:
-    """(H, W, k) image of per-visible-pixel values, NaN elsewhere."""
-    out = np.full((width * height, values.shape[1]), np.nan)
-    out[visible.pixels] = values
-    return out.reshape(height, width, values.shape[1])
+    """(H, W, k) image of per-visible-pixel values, NaN elsewhere.
+
+    Stored channel by channel ((k, H, W) seen through a transpose): scattering one
+    contiguous plane per channel is about twice as fast as scattering k-wide rows.
+    """
+    k = values.shape[1]
+    out = np.full((k, width * height), np.nan)
+    for j in range(k):
+        out[j, visible.pixels] = values[:, j]
+    return out.reshape(k, height, width).transpose(1, 2, 0)
 
 
 def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=None,

@@ -42,7 +42,7 @@ import numpy as np
 
 from ..core.edges import culled as culled_by
 from ..core.edges import setup_edges
-from ..core.interpolation import blend_each, convex_weights, weights_per_row
+from ..core.interpolation import blend_each, convex_weights, normalised_weights, weights_per_row
 from .batched_fill import Fragments, rasterize_batch
 from .clipping import CLIPPED, DROPPED, INSIDE, ClipResult, classify, clip_triangles
 from .depth import quantize
@@ -229,15 +229,32 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
     tri = frags.tri[shade]
-    weights = frags.weights_at(tri, frags.col[shade] + 0.5, frags.row[shade] + 0.5)
+    x, y = frags.col[shade] + 0.5, frags.row[shade] + 0.5
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
     # Weights from the unsnapped set-up can be slightly negative at a covered centre that
-    # snapping brought inside an edge: made convex, so every value stays within range
-    # (weights_per_row does that itself, so the common all-perspective case does it once).
-    if persp.all():  # f/w and 1/w are affine in screen space (no masking needed)
-        weights = weights_per_row(weights, w[tri])
+    # snapping brought inside an edge: made convex, so every value stays within range.
+    if persp.all():  # the common case: 1/w folded into the barycentric pass
+        weights = _perspective_weights(frags, tri, x, y, w)
     else:
-        weights = convex_weights(weights)
+        weights = convex_weights(frags.weights_at(tri, x, y))
         if persp.any():
             weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
     return blend_each(weights, attrs, index=tri)
+
+
+def _perspective_weights(frags, tri, x, y, w):
+    """Perspective-correct convex weights at covered centres, in one barycentric pass.
+
+    Each triangle's ``(min(w) / w_i) / area`` is folded into its edge functions, so no
+    per-pixel ``λ = E / area`` divide is needed (:func:`normalised_weights` says why the
+    result equals :func:`weights_per_row` of the convex λ); the rare rows that fails
+    (underflow, a degenerate set-up) are redone by :func:`weights_per_row` itself.
+    """
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore", under="ignore"):
+        smallest = np.minimum(np.minimum(w[:, 0], w[:, 1]), w[:, 2])  # not min(axis=1): slow
+        scale = (smallest[:, None] / w) / frags.area2[:, None]
+    weights, bad = normalised_weights(frags.weights_at(tri, x, y, scale=scale))
+    if bad.any():
+        redo = tri[bad]
+        weights[bad] = weights_per_row(frags.weights_at(redo, x[bad], y[bad]), w[redo])
+    return weights
