@@ -266,8 +266,8 @@ class SampleDepths:
 class SampleAttributes:
     """The attributes every sample holds (H, W, S, k), filled on first use
     (``Frame.sample_attrs``): one value per whole pixel for all its samples
-    (``whole_pixel``, ``whole_values``), and at the other covered samples (``pixel``,
-    ``sample``) the value of their (pixel, triangle) pair, ``values[pair]``."""
+    (``whole_pixel``, ``whole_values`` (k, n)), and at the other covered samples
+    (``pixel``, ``sample``) the value of their (pixel, triangle) pair, ``values[:, pair]``."""
 
     shape: tuple
     whole_pixel: np.ndarray
@@ -280,8 +280,8 @@ class SampleAttributes:
     def __call__(self) -> np.ndarray:
         height, width, n_s, k = self.shape
         out = np.full((height * width, n_s, k), np.nan)
-        out[self.whole_pixel] = self.whole_values[:, None, :]
-        out[self.pixel, self.sample] = self.values[self.pair]
+        out[self.whole_pixel] = self.whole_values.T[:, None, :]
+        out[self.pixel, self.sample] = self.values.T[self.pair]
         return out.reshape(self.shape)
 
 
@@ -293,7 +293,7 @@ class MultiFrame:
     sample_depth: SampleDepths  # called: (H, W, S)
     sample_attrs: SampleAttributes  # called: (H, W, S, k)
     owner: np.ndarray  # (P,) triangle after clipping owning most samples, -1 none
-    attrs: np.ndarray  # (P, k)
+    attrs: np.ndarray  # (k, P): one contiguous row per channel
     depth: np.ndarray  # (P,)
     offsets: np.ndarray  # (S, 2) px as tested
     record: dict  # the per-sample depth-test entries and the whole pixels, for the trace
@@ -355,11 +355,11 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
     n_pix, n_s = sample_tri.shape
     k = tables.value_lo.shape[0]
     owner = np.full(n_pix, -1, dtype=np.int64)
-    pix_attrs, pix_depth = np.full((n_pix, k), np.nan), np.full(n_pix, np.nan)
+    pix_attrs, pix_depth = np.full((k, n_pix), np.nan), np.full(n_pix, np.nan)
     # simple pixels: one evaluation serves all samples
     sp, st = whole
     whole_vals, dep = shade(tables, st, sp, None, offsets, width)
-    owner[sp], pix_attrs[sp], pix_depth[sp] = st, whole_vals, dep
+    owner[sp], pix_attrs[:, sp], pix_depth[sp] = st, whole_vals, dep
     # the other covered pixels: one evaluation per (pixel, triangle) seen at a sample
     seen = slots // n_s  # ascending: the covered pixels decided sample by sample
     others = seen[np.r_[True, seen[1:] != seen[:-1]]] if len(seen) else seen
@@ -380,7 +380,7 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
     slot[i, s] = np.arange(len(i))
     at = inverse[slot[np.arange(len(others)), own_sample]]
     owner[others] = sub[np.arange(len(others)), own_sample]
-    pix_attrs[others], pix_depth[others] = vals[at], dep[at]
+    pix_attrs[:, others], pix_depth[others] = vals[:, at], dep[at]
     n_shaded = len(sp) + len(first)
     if force_attrs:  # also every hidden (pixel, triangle): evaluated, then discarded
         m = len(tables.area)
@@ -432,7 +432,8 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         size,
         (force_ms, "attributes" in forced),
     )
-    depth = quantize(depth, depth_format)
+    if depth_format != "float64":  # float64 stores the value as it is
+        depth = quantize(depth, depth_format)
     n_covered = int((owner >= 0).sum())
     n_samples = len(px) * len(whole[0]) + len(decided[0])
     n_per_sample = n_covered - len(whole[0])

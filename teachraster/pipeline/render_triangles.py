@@ -392,7 +392,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         )  # fmt: skip
     return Frame(
         triangle_id=ids(multi.owner).reshape(height, width),
-        attrs=multi.attrs.reshape(height, width, k),
+        attrs=multi.attrs.reshape(k, height, width).transpose(1, 2, 0),
         depth=multi.depth.reshape(height, width),
         plan=plan,
         trace=record,

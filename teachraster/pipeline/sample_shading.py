@@ -99,7 +99,7 @@ def barycentrics_at(tables: ShadeTables, tri: np.ndarray, x, y) -> np.ndarray:
 
 
 def shade(tables: ShadeTables, tri, pixel, won, offsets, width):
-    """Attributes (n, k) and depth (n,) of triangles ``tri`` evaluated once for ``pixel``.
+    """Attributes (k, n) and depth (n,) of triangles ``tri`` evaluated once for ``pixel``.
 
     At the pixel centre, extrapolated on the triangle's planes when the centre lies
     outside (values may leave the vertex range; inside they are clamped to it). Where the
@@ -140,7 +140,7 @@ def shade(tables: ShadeTables, tri, pixel, won, offsets, width):
         weights[:, under] = fallback.T
     values = _blend(weights, tri, tables.values, tables.value_lo, tables.value_hi, inside)
     depth = _blend(lam, tri, tables.depth, tables.depth_lo, tables.depth_hi, inside)
-    return values.T, depth[0]
+    return values, depth[0]
 
 
 def _blend(weights, tri, vertex, lo, hi, clamp):
