@@ -192,22 +192,36 @@ def _nearest(full, bounds, part_pixel, part_lo, winner):
     winner[done] = tri[first[done]]
 
 
-def _distinct(sub: np.ndarray, i: np.ndarray, s: np.ndarray):
+def _distinct(sub: np.ndarray, flat: np.ndarray):
     """One entry per distinct triangle of each row of ``sub`` (n, S).
 
-    ``(i, s)`` enumerate the entries ``sub >= 0`` row-major. Returns ``first`` (positions in
-    that enumeration of each row's first sample of a triangle) and ``inverse`` (for every
-    entry, the index in ``first`` of its triangle's first sample).
+    ``flat`` (ascending) enumerates the entries ``sub >= 0`` as flat indices into ``sub``.
+    Returns ``first`` (positions in that enumeration of each row's first sample of a
+    triangle) and ``inverse`` (for every entry, the index in ``first`` of its triangle's
+    first sample).
     """
-    lead = np.argmax(sub[:, :, None] == sub[:, None, :], axis=2)  # (n, S): first same sample
-    slot = np.full(sub.shape, -1, dtype=np.int64)
-    slot[i, s] = np.arange(len(i))
-    is_first = lead[i, s] == s
+    n_s = sub.shape[1]
+    lead = np.take(_first_equal(sub), flat)  # the first sample with the same triangle
+    row = flat // n_s
+    is_first = lead == flat - row * n_s
     first = np.flatnonzero(is_first)
-    number = np.full(len(i), -1, dtype=np.int64)
-    number[first] = np.arange(len(first))
-    inverse = number[slot[i, lead[i, s]]]
+    number = np.cumsum(is_first) - 1  # at a first entry: its index in ``first``
+    position = np.full(sub.size, -1, dtype=np.int64)
+    position[flat] = np.arange(len(flat))
+    inverse = number[position[row * n_s + lead]]
     return first, inverse
+
+
+def _first_equal(rows: np.ndarray) -> np.ndarray:
+    """(n, S): for each entry, the first column of its row holding the same value.
+
+    One pass per column, last to first (S comparisons of the whole block, no (n, S, S)
+    array): what ``argmax(rows[:, :, None] == rows[:, None, :], axis=2)`` gives.
+    """
+    lead = np.zeros(rows.shape, dtype=np.int64)
+    for t in range(rows.shape[1] - 1, -1, -1):
+        np.copyto(lead, t, where=rows == rows[:, t : t + 1])
+    return lead
 
 
 def owners(parents: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -219,8 +233,10 @@ def owners(parents: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     >>> owners(np.array([[3, 1, 1, 3], [2, -1, -1, -1], [-1, -1, -1, -1]]))
     (array([ 1,  2, -1]), array([1, 0, 0]))
     """
-    count = (parents[:, :, None] == parents[:, None, :]).sum(axis=2)
-    count = np.where(parents >= 0, count, 0)
+    count = np.zeros(parents.shape, dtype=np.int64)  # samples of the same triangle
+    for t in range(parents.shape[1]):
+        count += parents == parents[:, t : t + 1]
+    count[parents < 0] = 0
     best = count.max(axis=1, initial=0)
     big = np.iinfo(np.int64).max
     candidate = (count == best[:, None]) & (parents >= 0)
@@ -364,22 +380,24 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
     seen = slots // n_s  # ascending: the covered pixels decided sample by sample
     others = seen[np.r_[True, seen[1:] != seen[:-1]]] if len(seen) else seen
     sub = sample_tri[others]
-    i, s = np.nonzero(sub >= 0)
-    pix, tri = others[i], sub[i, s]
+    flat = np.flatnonzero(sub >= 0)  # the covered samples, row-major
+    i, s = np.divmod(flat, n_s)
+    pix, tri = others[i], np.take(sub, flat)
     if force_ms:  # every sample evaluates its own triangle: the same values, S times the work
         first, inverse = np.arange(len(pix)), np.arange(len(pix))
     else:
-        first, inverse = _distinct(sub, i, s)
+        first, inverse = _distinct(sub, flat)
     won = sample_tri[pix[first]] == tri[first][:, None]
     vals, dep = shade(tables, tri[first], pix[first], won, offsets, width)
     sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, pix, s, vals,
                                     inverse)  # fmt: skip
     parents = np.where(sub >= 0, parent[np.maximum(sub, 0)], -1)
     _, own_sample = owners(parents)
-    slot = np.full(sub.shape, -1, dtype=np.int64)
-    slot[i, s] = np.arange(len(i))
-    at = inverse[slot[np.arange(len(others)), own_sample]]
-    owner[others] = sub[np.arange(len(others)), own_sample]
+    own = np.arange(len(others)) * n_s + own_sample  # flat index of each owner's sample
+    position = np.full(sub.size, -1, dtype=np.int64)
+    position[flat] = np.arange(len(flat))
+    at = inverse[position[own]]
+    owner[others] = np.take(sub, own)
     pix_attrs[:, others], pix_depth[others] = vals[:, at], dep[at]
     n_shaded = len(sp) + len(first)
     if force_attrs:  # also every hidden (pixel, triangle): evaluated, then discarded

@@ -152,7 +152,7 @@ def _blend(weights, tri, vertex, lo, hi, clamp):
         np.maximum(out, np.take(lo, tri, axis=1), out=out)
         np.minimum(out, np.take(hi, tri, axis=1), out=out)
     elif clamp.any():
-        at = tri[clamp]
-        c = np.minimum(np.maximum(out[:, clamp], lo[:, at]), hi[:, at])
-        out[:, clamp] = c
+        c = np.maximum(out, np.take(lo, tri, axis=1))
+        np.minimum(c, np.take(hi, tri, axis=1), out=c)
+        np.copyto(out, c, where=clamp)
     return out
