@@ -150,7 +150,11 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
         part = frags.part_pixel[p_sel], frags.part_tri[p_sel]
         lo, hi = _depth_range(planes, unit, *full, width, depth_format)
         p_lo, _ = _depth_range(planes, unit, *part, width, depth_format)
-        _nearest(full, (lo, hi), part[0], p_lo, winner)
+        still = np.flatnonzero(left)  # these pixels, numbered 0.. for small work arrays
+        number = np.cumsum(left) - 1
+        decided = np.full(len(still), -1, dtype=np.int64)
+        _nearest((number[full[0]], full[1]), (lo, hi), number[part[0]], p_lo, decided)
+        winner[still] = decided
     return winner, shared
 
 
