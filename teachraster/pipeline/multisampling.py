@@ -251,6 +251,31 @@ def owners(parents: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 @dataclass(frozen=True)
+class SampleIds:
+    """The triangle each sample shows (H, W, S), built on first read
+    (``Frame.sample_triangle_id``).
+
+    Like a GPU's compressed multisample surface, the frame keeps one triangle per pixel
+    decided whole (``winner`` (P,), -1 elsewhere) and the per-sample test's answers only at
+    the samples it decided (``slots``: flat pixel * S + sample, ascending; ``tri``).
+    ``parent`` maps triangles after clipping to input ids (None: the same ids).
+    """
+
+    shape: tuple
+    winner: np.ndarray
+    slots: np.ndarray
+    tri: np.ndarray
+    parent: np.ndarray | None = None
+
+    def __call__(self) -> np.ndarray:
+        out = np.repeat(self.winner, self.shape[-1])
+        out[self.slots] = self.tri
+        if self.parent is not None:  # -1 stays -1: index -1 reads the appended -1
+            out = np.r_[self.parent, -1][out]
+        return out.reshape(self.shape)
+
+
+@dataclass(frozen=True)
 class SampleDepths:
     """The per-sample depth buffer (H, W, S), filled on first use (``Frame.sample_depth``).
 
@@ -309,7 +334,7 @@ class SampleAttributes:
 class MultiFrame:
     """Per-sample and per-pixel results of a multisampled render (flat pixel arrays)."""
 
-    sample_tri: np.ndarray  # (P, S) triangle after clipping, -1 none
+    sample_tri: SampleIds  # called: (H, W, S) triangle after clipping, -1 none
     sample_depth: SampleDepths  # called: (H, W, S)
     sample_attrs: SampleAttributes  # called: (H, W, S, k)
     owner: np.ndarray  # (P,) triangle after clipping owning most samples, -1 none
@@ -332,7 +357,8 @@ def _sample_entries(frags, winner, n_s, n_tri):
 
 
 def visibility(frags, planes, unit, offsets, size, options, forced):
-    """The depth buffer per sample: (P, S) triangle, its depths (:class:`SampleDepths`),
+    """The depth buffer per sample: its triangles (:class:`SampleIds`) and depths
+    (:class:`SampleDepths`),
     the whole pixels (flat index, triangle), the number of samples where 2+ triangles met,
     and the trace record."""
     depth_test, depth_format = options
@@ -353,9 +379,7 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     won, _ = resolve(np.repeat(np.arange(len(start)), size_of), depth, len(start), depth_test)
     slots = slot[start]
     # whole pixels: their one triangle at every sample, no per-sample test (-1 elsewhere)
-    sample_tri = np.repeat(winner, n_s)
-    sample_tri[slots] = tri[won]
-    sample_tri = sample_tri.reshape(n_pix, n_s)
+    sample_tri = SampleIds((height, width, n_s), winner, slots, tri[won])
     wp = np.flatnonzero(winner >= 0)
     met = int(np.count_nonzero(size_of > 1))
     if len(wp):  # a pixel decided whole that 2+ triangles reach: the test settled all of it
@@ -367,12 +391,13 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     return sample_tri, depths, (wp, winner[wp]), (slots, tri[won]), met, record
 
 
-def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size, flags):
+def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags):
     """Attributes per sample (once per pixel and triangle, a :class:`SampleAttributes`) and
-    the owners' per-pixel values; ``slots`` are the samples the per-sample test decided."""
+    the owners' per-pixel values, from the frame's :class:`SampleIds`."""
     force_ms, force_attrs = flags
     width, height = size
-    n_pix, n_s = sample_tri.shape
+    n_s, n_pix = len(offsets), width * height
+    slots = sample_tri.slots  # the samples the per-sample test decided, ascending
     k = tables.value_lo.shape[0]
     owner = np.full(n_pix, -1, dtype=np.int64)
     pix_attrs, pix_depth = np.full((k, n_pix), np.nan), np.full(n_pix, np.nan)
@@ -382,8 +407,10 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
     owner[sp], pix_attrs[:, sp], pix_depth[sp] = st, whole_vals, dep
     # the other covered pixels: one evaluation per (pixel, triangle) seen at a sample
     seen = slots // n_s  # ascending: the covered pixels decided sample by sample
-    others = seen[np.r_[True, seen[1:] != seen[:-1]]] if len(seen) else seen
-    sub = sample_tri[others]
+    new_pixel = np.r_[True, seen[1:] != seen[:-1]] if len(seen) else seen > 0
+    others = seen[new_pixel]
+    sub = np.full((len(others), n_s), -1, dtype=np.int64)  # their samples' triangles
+    sub.ravel()[(np.cumsum(new_pixel) - 1) * n_s + slots % n_s] = sample_tri.tri
     flat = np.flatnonzero(sub >= 0)  # the covered samples, row-major
     i, s = np.divmod(flat, n_s)
     pix, tri = others[i], np.take(sub, flat)
@@ -391,7 +418,7 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
         first, inverse = np.arange(len(pix)), np.arange(len(pix))
     else:
         first, inverse = _distinct(sub, flat)
-    won = sample_tri[pix[first]] == tri[first][:, None]
+    won = sub[i[first]] == tri[first][:, None]
     vals, dep = shade(tables, tri[first], pix[first], won, offsets, width)
     sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, pix, s, vals,
                                     inverse)  # fmt: skip
@@ -409,7 +436,7 @@ def shade_pixels(sample_tri, whole, slots, tables, frags, parent, offsets, size,
         keys = np.unique(np.r_[frags.part_pixel * m + frags.part_tri,
                                frags.full_pixel * m + frags.full_tri])  # fmt: skip
         hidden_pix, hidden_tri = np.divmod(keys, m)
-        won = sample_tri[hidden_pix] == hidden_tri[:, None]
+        won = sample_tri().reshape(n_pix, n_s)[hidden_pix] == hidden_tri[:, None]
         shade(tables, hidden_tri, hidden_pix, won, offsets, width)
         n_shaded += len(keys)
     return sample_attrs, owner, pix_attrs, pix_depth, n_shaded
@@ -446,7 +473,6 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     sample_attrs, owner, attrs, depth, n_shaded = shade_pixels(
         sample_tri,
         whole,
-        decided[0],
         tables,
         frags,
         clipped.parent,

@@ -20,7 +20,7 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -91,7 +91,7 @@ class RenderTrace:
 class _OnFirstUse:
     """A :class:`Frame` field that may be given as a zero-argument callable, called (once)
     when the field is first read: the large per-sample arrays of a multisampled frame
-    (S depths, S attribute vectors per pixel) are only built if someone looks at them.
+    (S ids, depths and attribute vectors per pixel) are only built if someone reads them.
 
     A data descriptor as a dataclass default: the dataclass's ``__init__`` stores through
     ``__set__``, and the class-level read (``instance is None``) gives the default, None.
@@ -134,11 +134,16 @@ class Frame:
         ``triangle_id``, ``depth`` and ``attrs`` then describe the triangle owning most of
         the pixel's samples (ties: the earlier), evaluated once for the pixel.
     sample_depth : (H, W, S) float64 or None
-        The depth buffer, one depth per sample, NaN where uncovered (built on first read).
+        The depth buffer, one depth per sample, NaN where uncovered.
     sample_attrs : (H, W, S, k) float64 or None
         The attributes each sample holds: those of its triangle, evaluated once per pixel
-        (at the centre, extrapolated when outside), NaN where uncovered (built on first
-        read: pixels decided whole keep one value for all their samples until then).
+        (at the centre, extrapolated when outside), NaN where uncovered.
+
+        The three per-sample arrays are kept compressed, as GPUs keep a multisampled
+        surface: one triangle (depth plane, attribute value) per pixel decided whole, and
+        single samples only where the per-sample test ran. Each array is expanded on
+        first read (then kept), so a render that only needs the per-pixel results, or
+        only the ids, never builds the others.
     samples : (S, 2) float64 or None
         The sample offsets inside the pixel as tested, in px.
     ddx, ddy : (H, W, k) float64 or None
@@ -151,7 +156,7 @@ class Frame:
     depth: np.ndarray
     plan: Plan
     trace: RenderTrace | None = None
-    sample_triangle_id: np.ndarray | None = None
+    sample_triangle_id: np.ndarray | None = _OnFirstUse()
     sample_depth: np.ndarray | None = _OnFirstUse()
     sample_attrs: np.ndarray | None = _OnFirstUse()
     samples: np.ndarray | None = None
@@ -366,13 +371,14 @@ def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=Non
 def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     """The :class:`Frame` of a multisampled render (input triangle ids, (H, W, ...) images)."""
     width, height = size
-    n_s, k = len(multi.offsets), clipped.attrs.shape[2]
+    k = clipped.attrs.shape[2]
+
+    parent = clipped.parent  # input ids (None: nothing was clipped, the same ids)
+    if np.array_equal(parent, np.arange(len(parent))):
+        parent = None
 
     def ids(sub):  # input triangle ids (-1 stays -1; -1 also when nothing survived clipping)
-        if np.array_equal(clipped.parent, np.arange(len(clipped.parent))):
-            return sub  # nothing was clipped: the same ids
-        parent = np.r_[clipped.parent, -1]  # index -1 reads the appended -1
-        return parent[sub]
+        return sub if parent is None else np.r_[parent, -1][sub]
 
     record = None
     if trace:  # the per-sample entries in drawing order, then the pixels decided whole
@@ -396,7 +402,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         depth=multi.depth.reshape(height, width),
         plan=plan,
         trace=record,
-        sample_triangle_id=ids(multi.sample_tri).reshape(height, width, n_s),
+        sample_triangle_id=replace(multi.sample_tri, parent=parent),  # built on first read
         sample_depth=multi.sample_depth,  # built on first read
         sample_attrs=multi.sample_attrs,
         samples=multi.offsets,
