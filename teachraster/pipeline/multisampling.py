@@ -346,14 +346,17 @@ class MultiFrame:
 
 def _sample_entries(frags, winner, n_s, n_tri):
     """Every covered sample of the pixels not decided whole: (triangle, pixel, sample),
-    grouped by sample slot, drawing order (triangle index) inside each: the z-buffer's."""
+    by pixel, then drawing order (triangle index), then sample: at each sample the
+    entries arrive in drawing order, as the z-buffer needs."""
     rest = np.flatnonzero(winner[frags.full_pixel] < 0)  # full fragments count S times
-    pair, p_sample = frags.part_samples(np.flatnonzero(winner[frags.part_pixel] < 0))
-    tri = np.concatenate([np.repeat(frags.full_tri[rest], n_s), frags.part_tri[pair]])
-    pixel = np.concatenate([np.repeat(frags.full_pixel[rest], n_s), frags.part_pixel[pair]])
-    sample = np.concatenate([np.tile(np.arange(n_s), len(rest)), p_sample])
-    order = np.argsort((pixel * n_s + sample) * n_tri + tri)
-    return tri[order], pixel[order], sample[order]
+    part = np.flatnonzero(winner[frags.part_pixel] < 0)
+    tri = np.concatenate([frags.full_tri[rest], frags.part_tri[part]])
+    pixel = np.concatenate([frags.full_pixel[rest], frags.part_pixel[part]])
+    mask = np.concatenate([np.full(len(rest), (1 << n_s) - 1), frags.part_mask[part]])
+    order = np.argsort(pixel * n_tri + tri)
+    pair, sample = np.nonzero((mask[order, None] >> np.arange(n_s)) & 1)
+    pair = order[pair]
+    return tri[pair], pixel[pair], sample
 
 
 def visibility(frags, planes, unit, offsets, size, options, forced):
@@ -372,21 +375,25 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     tri, pixel, sample = _sample_entries(frags, winner, n_s, len(planes))
     row, col = np.divmod(pixel, width)
     x, y = col + offsets[sample, 0], row + offsets[sample, 1]
-    depth = quantize(plane_depth(planes, unit, tri, x, y), depth_format)
-    slot = pixel * n_s + sample
-    start = np.flatnonzero(np.r_[True, slot[1:] != slot[:-1]]) if len(slot) else slot[:0]
-    size_of = np.diff(np.r_[start, len(slot)])  # entries per sample slot
-    won, _ = resolve(np.repeat(np.arange(len(start)), size_of), depth, len(start), depth_test)
-    slots = slot[start]
+    depth = plane_depth(planes, unit, tri, x, y)
+    if depth_format != "float64":  # float64 stores the value as it is
+        depth = quantize(depth, depth_format)
+    # the z-buffer over these pixels' samples only: pixels numbered 0.. in order
+    new_pixel = np.r_[True, pixel[1:] != pixel[:-1]] if len(pixel) else pixel > 0
+    still = pixel[new_pixel]
+    cell = (np.cumsum(new_pixel) - 1) * n_s + sample
+    won, met = resolve(cell, depth, len(still) * n_s, depth_test)
+    cells = np.flatnonzero(won >= 0)
+    slots = still[cells // n_s] * n_s + cells % n_s  # flat pixel * S + sample, ascending
+    won = won[cells]
     # whole pixels: their one triangle at every sample, no per-sample test (-1 elsewhere)
     sample_tri = SampleIds((height, width, n_s), winner, slots, tri[won])
     wp = np.flatnonzero(winner >= 0)
-    met = int(np.count_nonzero(size_of > 1))
     if len(wp):  # a pixel decided whole that 2+ triangles reach: the test settled all of it
         met += n_s * int(np.count_nonzero(reached[wp]))
     depths = SampleDepths((height, width, n_s), slots, depth[won], wp, winner[wp], planes,
                           unit, offsets, depth_format)  # fmt: skip
-    record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "slot": slot,
+    record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "n_tri": len(planes),
               "depth_test": depth_test, "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
     return sample_tri, depths, (wp, winner[wp]), (slots, tri[won]), met, record
 

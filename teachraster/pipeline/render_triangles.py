@@ -382,7 +382,12 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
 
     record = None
     if trace:  # the per-sample entries in drawing order, then the pixels decided whole
-        r = multi.record
+        r = dict(multi.record)
+        slot = r["pixel"] * len(multi.offsets) + r["sample"]
+        order = np.argsort(slot * r["n_tri"] + r["tri"])  # by sample, drawing order inside
+        for name in ("tri", "pixel", "sample", "depth"):
+            r[name] = r[name][order]
+        r["slot"] = slot[order]
         tri = np.concatenate([r["tri"], r["whole_tri"]])
         row, col = np.divmod(np.concatenate([r["pixel"], r["whole_pixel"]]), width)
         record = RenderTrace(
