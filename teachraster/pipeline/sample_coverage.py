@@ -173,14 +173,12 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     right_lo = np.where(has_full, full_hi + 1, 0)
     right_stop = np.where(has_full, union_hi + 1, 0)
     line = np.arange(len(rows))
-    l_line, l_col = _runs(union_lo, np.maximum(left_stop, union_lo), line)
-    r_line, r_col = _runs(right_lo, np.maximum(right_stop, right_lo), line)
-    p_line, p_col = np.concatenate([l_line, r_line]), np.concatenate([l_col, r_col])
-    mask = np.zeros(len(p_line), dtype=np.int64)
-    for s in range(len(units)):
-        inside = np.take(lo[s], p_line) <= p_col
-        inside &= p_col <= np.take(hi[s], p_line)
-        mask |= inside.astype(np.int64) << s
+    p_line, p_col = _runs(np.r_[union_lo, right_lo],
+                          np.r_[np.maximum(left_stop, union_lo), np.maximum(right_stop, right_lo)],
+                          np.r_[line, line])  # fmt: skip
+    inside = np.take(lo, p_line, axis=1) <= p_col  # (S, p): each sample's interval
+    inside &= p_col <= np.take(hi, p_line, axis=1)
+    mask = _bits(inside)
     keep = np.flatnonzero(mask)  # the union may have gaps: those columns drop out
     p_line, p_col = p_line[keep], p_col[keep]
     return SampleFragments(
@@ -200,3 +198,15 @@ def _runs(starts, stops, tags):
     values = np.arange(int(counts.sum()), dtype=np.int64)
     values += np.repeat(starts - first, counts)
     return np.repeat(tags, counts), values
+
+
+def _bits(inside: np.ndarray) -> np.ndarray:
+    """(S, p) bool to (p,) int64 masks, bit s set where row s is True (S <= 16).
+
+    >>> _bits(np.array([[True, False], [True, True]])).tolist()
+    [3, 2]
+    """
+    mask = inside[0].astype(np.uint16)  # narrow while building: less memory to stream
+    for s in range(1, len(inside)):
+        mask |= inside[s].astype(np.uint16) << np.uint16(s)
+    return mask.astype(np.int64)
