@@ -196,23 +196,20 @@ def _nearest(full, bounds, part_pixel, part_lo, winner):
     winner[done] = tri[first[done]]
 
 
-def _distinct(sub: np.ndarray, flat: np.ndarray):
+def _distinct(sub: np.ndarray, i: np.ndarray, s: np.ndarray, position: np.ndarray):
     """One entry per distinct triangle of each row of ``sub`` (n, S).
 
-    ``flat`` (ascending) enumerates the entries ``sub >= 0`` as flat indices into ``sub``.
-    Returns ``first`` (positions in that enumeration of each row's first sample of a
-    triangle) and ``inverse`` (for every entry, the index in ``first`` of its triangle's
-    first sample).
+    ``(i, s)`` enumerate the entries ``sub >= 0`` row-major; ``position`` (n * S,) is each
+    entry's index in that enumeration at its flat index (-1 elsewhere). Returns ``first``
+    (positions of each row's first sample of a triangle) and ``inverse`` (for every entry,
+    the index in ``first`` of its triangle's first sample).
     """
     n_s = sub.shape[1]
-    lead = np.take(_first_equal(sub), flat)  # the first sample with the same triangle
-    row = flat // n_s
-    is_first = lead == flat - row * n_s
+    lead = np.take(_first_equal(sub), i * n_s + s)  # the first sample with that triangle
+    is_first = lead == s
     first = np.flatnonzero(is_first)
     number = np.cumsum(is_first) - 1  # at a first entry: its index in ``first``
-    position = np.full(sub.size, -1, dtype=np.int64)
-    position[flat] = np.arange(len(flat))
-    inverse = number[position[row * n_s + lead]]
+    inverse = number[position[i * n_s + lead]]
     return first, inverse
 
 
@@ -421,10 +418,12 @@ def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags)
     flat = np.flatnonzero(sub >= 0)  # the covered samples, row-major
     i, s = np.divmod(flat, n_s)
     pix, tri = others[i], np.take(sub, flat)
+    position = np.full(sub.size, -1, dtype=np.int64)  # flat index -> entry
+    position[flat] = np.arange(len(flat))
     if force_ms:  # every sample evaluates its own triangle: the same values, S times the work
         first, inverse = np.arange(len(pix)), np.arange(len(pix))
     else:
-        first, inverse = _distinct(sub, flat)
+        first, inverse = _distinct(sub, i, s, position)
     won = sub[i[first]] == tri[first][:, None]
     vals, dep = shade(tables, tri[first], pix[first], won, offsets, width)
     sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, pix, s, vals,
@@ -432,8 +431,6 @@ def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags)
     parents = np.where(sub >= 0, parent[np.maximum(sub, 0)], -1)
     _, own_sample = owners(parents)
     own = np.arange(len(others)) * n_s + own_sample  # flat index of each owner's sample
-    position = np.full(sub.size, -1, dtype=np.int64)
-    position[flat] = np.arange(len(flat))
     at = inverse[position[own]]
     owner[others] = np.take(sub, own)
     pix_attrs[:, others], pix_depth[others] = vals[:, at], dep[at]
