@@ -128,6 +128,8 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
     bounds are quantised like the stored depth, so every sample's test would agree.
     """
     f_pix, f_tri = frags.full_pixel, frags.full_tri
+    if len(f_pix) == 0:  # no triangle covers every sample of any pixel
+        return np.full(n_pix, -1, dtype=np.int64), np.zeros(n_pix, dtype=bool)
     m = len(planes)
     z_lo, z_hi = quantize(planes[:, 5], depth_format), quantize(planes[:, 6], depth_format)
     order = np.lexsort((np.arange(m), z_hi))  # by upper end, then drawing order
