@@ -278,14 +278,15 @@ class SampleIds:
 class SampleDepths:
     """The per-sample depth buffer (H, W, S), filled on first use (``Frame.sample_depth``).
 
-    ``slots`` (flat pixel * S + sample) and ``depth`` are what the per-sample test stored;
-    at the pixels decided whole (``whole_pixel``, ``whole_tri``) every sample holds its
-    triangle's plane at the sample, evaluated and quantised exactly as the test would have.
+    At the samples the per-sample test decided (``slots``: flat pixel * S + sample) and at
+    every sample of the pixels decided whole (``whole_pixel``, ``whole_tri``), the depth of
+    the sample's triangle (``tri``) at the sample, evaluated and quantised exactly as the
+    test does.
     """
 
     shape: tuple
     slots: np.ndarray
-    depth: np.ndarray
+    tri: np.ndarray
     whole_pixel: np.ndarray
     whole_tri: np.ndarray
     planes: np.ndarray
@@ -296,7 +297,9 @@ class SampleDepths:
     def __call__(self) -> np.ndarray:
         height, width, n_s = self.shape
         out = np.full(height * width * n_s, np.nan)
-        out[self.slots] = self.depth
+        pixel, sample = np.divmod(self.slots, n_s)
+        args = (self.planes, self.unit, self.offsets, width, self.depth_format)
+        out[self.slots] = _entry_depths(*args, self.tri, pixel, sample)
         out = out.reshape(height * width, n_s)
         wr, wc = np.divmod(self.whole_pixel, width)
         x, y = wc[:, None] + self.offsets[:, 0], wr[:, None] + self.offsets[:, 1]
@@ -360,11 +363,15 @@ def _sample_entries(frags, winner, n_s, n_tri):
 
 def visibility(frags, planes, unit, offsets, size, options, forced):
     """The depth buffer per sample: its triangles (:class:`SampleIds`) and depths
-    (:class:`SampleDepths`),
-    the whole pixels (flat index, triangle), the number of samples where 2+ triangles met,
-    and the trace record."""
-    depth_test, depth_format = options
-    _, force_ms = forced  # the one-pass z-buffer does the same work forced or not
+    (:class:`SampleDepths`), the whole pixels (flat index, triangle), the decided samples
+    (slots, triangle), the number of samples where 2+ triangles met, and the trace record.
+
+    ``options`` is ``(depth_test, depth_format, trace)``: with ``trace`` every entry's
+    depth and test is computed (and recorded); without, a sample only one triangle still
+    reaches is decided without evaluating a depth (:func:`_decide_samples`).
+    """
+    depth_test, depth_format, trace = options
+    force_test, force_ms = forced
     width, height = size
     n_s, n_pix = len(offsets), width * height
     if force_ms:
@@ -372,16 +379,13 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     else:
         winner, reached = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
     tri, pixel, sample = _sample_entries(frags, winner, n_s, len(planes))
-    row, col = np.divmod(pixel, width)
-    x, y = col + offsets[sample, 0], row + offsets[sample, 1]
-    depth = plane_depth(planes, unit, tri, x, y)
-    if depth_format != "float64":  # float64 stores the value as it is
-        depth = quantize(depth, depth_format)
     # the z-buffer over these pixels' samples only: pixels numbered 0.. in order
     new_pixel = np.r_[True, pixel[1:] != pixel[:-1]] if len(pixel) else pixel > 0
     still = pixel[new_pixel]
     cell = (np.cumsum(new_pixel) - 1) * n_s + sample
-    won, met = resolve(cell, depth, len(still) * n_s, depth_test)
+    entries = (tri, pixel, sample, cell, len(still) * n_s)
+    every = (depth_test, depth_format, trace or force_test)  # forced: every entry tested
+    won, met, depth = _decide_samples(entries, planes, unit, offsets, width, every)
     cells = np.flatnonzero(won >= 0)
     slots = still[cells // n_s] * n_s + cells % n_s  # flat pixel * S + sample, ascending
     won = won[cells]
@@ -390,11 +394,61 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     wp = np.flatnonzero(winner >= 0)
     if len(wp):  # a pixel decided whole that 2+ triangles reach: the test settled all of it
         met += n_s * int(np.count_nonzero(reached[wp]))
-    depths = SampleDepths((height, width, n_s), slots, depth[won], wp, winner[wp], planes,
+    depths = SampleDepths((height, width, n_s), slots, tri[won], wp, winner[wp], planes,
                           unit, offsets, depth_format)  # fmt: skip
-    record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth, "n_tri": len(planes),
-              "depth_test": depth_test, "whole_pixel": wp, "whole_tri": winner[wp]}  # fmt: skip
+    record = None
+    if trace:
+        record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth,
+                  "n_tri": len(planes), "depth_test": depth_test, "whole_pixel": wp,
+                  "whole_tri": winner[wp]}  # fmt: skip
     return sample_tri, depths, (wp, winner[wp]), (slots, tri[won]), met, record
+
+
+def _entry_depths(planes, unit, offsets, width, depth_format, tri, pixel, sample):
+    """The stored depth of triangles ``tri`` at samples ``sample`` of pixels ``pixel``."""
+    row, col = np.divmod(pixel, width)
+    x, y = col + offsets[sample, 0], row + offsets[sample, 1]
+    depth = plane_depth(planes, unit, tri, x, y)
+    if depth_format != "float64":  # float64 stores the value as it is
+        depth = quantize(depth, depth_format)
+    return depth
+
+
+def _decide_samples(entries, planes, unit, offsets, width, options):
+    """The winning entry of every sample cell (-1: none), the cells 2+ entries reach, and
+    (with ``every``) every entry's stored depth (else None).
+
+    ``entries`` = (tri, pixel, sample, cell, n_cells), drawing order within each cell. The
+    rule is :func:`~teachraster.pipeline.zbuffer.resolve`'s. Without ``every`` it runs only
+    where it can matter: with the depth test, an entry whose triangle's lowest stored depth
+    lies above the highest of another entry's triangle in the same cell loses there for
+    sure (the planes are clamped to their vertices' depths), and a cell left with one entry
+    is that entry's, with no depth evaluated at all.
+    """
+    tri, pixel, sample, cell, n_cells = entries
+    depth_test, depth_format, every = options
+    args = (planes, unit, offsets, width, depth_format)
+    if every:  # every entry tested (the trace records each test)
+        depth = _entry_depths(*args, tri, pixel, sample)
+        won, met = resolve(cell, depth, n_cells, depth_test)
+        return won, met, depth
+    met = int(np.count_nonzero(np.bincount(cell, minlength=n_cells) > 1))
+    keep = np.arange(len(cell))
+    if depth_test:
+        z_lo, z_hi = quantize(planes[:, 5], depth_format), quantize(planes[:, 6], depth_format)
+        ceiling = np.full(n_cells, np.inf)
+        np.minimum.at(ceiling, cell, z_hi[tri])
+        keep = np.flatnonzero(z_lo[tri] <= ceiling[cell])
+    count = np.bincount(cell[keep], minlength=n_cells)
+    won = np.full(n_cells, -1, dtype=np.int64)
+    alone = count[cell[keep]] == 1
+    won[cell[keep[alone]]] = keep[alone]
+    test = keep[~alone]  # cells where 2+ entries may still win: the z-buffer decides
+    depth = _entry_depths(*args, tri[test], pixel[test], sample[test])
+    best, _ = resolve(cell[test], depth, n_cells, depth_test)
+    hit = np.flatnonzero(best >= 0)
+    won[hit] = test[best[hit]]
+    return won, met, None
 
 
 def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags):
@@ -451,10 +505,10 @@ def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags)
 def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
     """Fill, depth-test and shade a multisampled frame: a :class:`MultiFrame` and its effects.
 
-    ``options`` is ``(depth_test, depth_format, interpolation)``; ``forced`` the plan's
-    forced effects ("multisampling" expands every pixel to samples).
+    ``options`` is ``(depth_test, depth_format, interpolation, trace)``; ``forced`` the
+    plan's forced effects ("multisampling" expands every pixel to samples).
     """
-    depth_test, depth_format, interpolation = options
+    depth_test, depth_format, interpolation, trace = options
     width, height = size
     xy = window[:, :, :2]
     setup = setup_edges(xy, bits)
@@ -467,7 +521,13 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     planes = depth_planes(source, window)
     force_test = "depth_test" in forced and depth_test
     sample_tri, depths, whole, decided, contested, record = visibility(
-        frags, planes, source[2], px, size, (depth_test, depth_format), (force_test, force_ms)
+        frags,
+        planes,
+        source[2],
+        px,
+        size,
+        (depth_test, depth_format, trace),
+        (force_test, force_ms),
     )
     w = clipped.clip[:, :, 3]
     unequal = ~np.all(w == w[:, :1], axis=1)

@@ -314,7 +314,7 @@ def _render_multisampled(clipped, window, culled, effects, offsets, grid, option
     """The multisampled rest of :func:`render`, after clipping, the viewport and culling."""
     width, height, bits = grid
     multi, more = multisample_stage(
-        clipped, window, culled, (width, height), bits, offsets, options, forced
+        clipped, window, culled, (width, height), bits, offsets, (*options, trace), forced
     )
     plan = Plan((*effects, *more))
     return _multi_frame(multi, clipped, window, culled, (width, height), plan, trace)
