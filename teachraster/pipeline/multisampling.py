@@ -356,7 +356,8 @@ def _sample_entries(frags, winner, n_s, n_tri):
     pixel = np.concatenate([frags.full_pixel[rest], frags.part_pixel[part]])
     mask = np.concatenate([np.full(len(rest), (1 << n_s) - 1), frags.part_mask[part]])
     order = np.argsort(pixel * n_tri + tri)
-    pair, sample = np.nonzero((mask[order, None] >> np.arange(n_s)) & 1)
+    covered = (mask[order, None] & (1 << np.arange(n_s))) != 0  # (pairs, S) row-major
+    pair, sample = np.divmod(np.flatnonzero(covered), n_s)
     pair = order[pair]
     return tri[pair], pixel[pair], sample
 

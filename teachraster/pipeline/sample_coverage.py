@@ -173,9 +173,9 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     right_lo = np.where(has_full, full_hi + 1, 0)
     right_stop = np.where(has_full, union_hi + 1, 0)
     line = np.arange(len(rows))
-    p_line, p_col = _runs(np.r_[union_lo, right_lo],
-                          np.r_[np.maximum(left_stop, union_lo), np.maximum(right_stop, right_lo)],
-                          np.r_[line, line])  # fmt: skip
+    l_line, l_col = _runs(union_lo, np.maximum(left_stop, union_lo), line)
+    r_line, r_col = _runs(right_lo, np.maximum(right_stop, right_lo), line)
+    p_line, p_col = np.concatenate([l_line, r_line]), np.concatenate([l_col, r_col])
     inside = np.take(lo, p_line, axis=1) <= p_col  # (S, p): each sample's interval
     inside &= p_col <= np.take(hi, p_line, axis=1)
     mask = _bits(inside)
