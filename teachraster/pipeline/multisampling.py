@@ -153,7 +153,8 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
         lo, hi = _depth_range(planes, unit, *full, width, depth_format)
         p_lo, _ = _depth_range(planes, unit, *part, width, depth_format)
         still = np.flatnonzero(left)  # these pixels, numbered 0.. for small work arrays
-        number = np.cumsum(left) - 1
+        number = np.empty(len(left), dtype=np.int64)  # read only at these pixels
+        number[still] = np.arange(len(still))
         decided = np.full(len(still), -1, dtype=np.int64)
         _nearest((number[full[0]], full[1]), (lo, hi), number[part[0]], p_lo, decided)
         winner[still] = decided
