@@ -150,13 +150,23 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
     if len(sel):
         full = f_pix[sel], f_tri[sel]
         part = frags.part_pixel[p_sel], frags.part_tri[p_sel]
-        lo, hi = _depth_range(planes, unit, *full, width, depth_format)
-        p_lo, _ = _depth_range(planes, unit, *part, width, depth_format)
         still = np.flatnonzero(left)  # these pixels, numbered 0.. for small work arrays
         number = np.empty(len(left), dtype=np.int64)  # read only at these pixels
         number[still] = np.arange(len(still))
+        full, part = (number[full[0]], full[1]), (number[part[0]], part[1])
+        # a whole winner c needs every partial o with z_hi[o] >= (o's lower end over the
+        # square) > (c's upper end) >= z_lo[c]: pixels where a partial triangle's range
+        # lies below every full one's cannot be decided whole, and are left out here
+        f_min, p_min = np.full(len(still), np.inf), np.full(len(still), np.inf)
+        np.minimum.at(f_min, full[0], z_lo[full[1]])
+        np.minimum.at(p_min, part[0], z_hi[part[1]])
+        hope = p_min > f_min
+        full = tuple(a[hope[full[0]]] for a in full)
+        part = tuple(a[hope[part[0]]] for a in part)
+        lo, hi = _depth_range(planes, unit, still[full[0]], full[1], width, depth_format)
+        p_lo, _ = _depth_range(planes, unit, still[part[0]], part[1], width, depth_format)
         decided = np.full(len(still), -1, dtype=np.int64)
-        _nearest((number[full[0]], full[1]), (lo, hi), number[part[0]], p_lo, decided)
+        _nearest(full, (lo, hi), part[0], p_lo, decided)
         winner[still] = decided
     return winner, shared
 
