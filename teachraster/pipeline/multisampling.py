@@ -209,35 +209,6 @@ def _nearest(full, bounds, part_pixel, part_lo, winner):
     winner[done] = tri[first[done]]
 
 
-def _distinct(sub: np.ndarray, i: np.ndarray, s: np.ndarray, position: np.ndarray):
-    """One entry per distinct triangle of each row of ``sub`` (n, S).
-
-    ``(i, s)`` enumerate the entries ``sub >= 0`` row-major; ``position`` (n * S,) is each
-    entry's index in that enumeration at its flat index (-1 elsewhere). Returns ``first``
-    (positions of each row's first sample of a triangle) and ``inverse`` (for every entry,
-    the index in ``first`` of its triangle's first sample).
-    """
-    n_s = sub.shape[1]
-    lead = np.take(_first_equal(sub), i * n_s + s)  # the first sample with that triangle
-    is_first = lead == s
-    first = np.flatnonzero(is_first)
-    number = np.cumsum(is_first) - 1  # at a first entry: its index in ``first``
-    inverse = number[position[i * n_s + lead]]
-    return first, inverse
-
-
-def _first_equal(rows: np.ndarray) -> np.ndarray:
-    """(n, S): for each entry, the first column of its row holding the same value.
-
-    One pass per column, last to first (S comparisons of the whole block, no (n, S, S)
-    array): what ``argmax(rows[:, :, None] == rows[:, None, :], axis=2)`` gives.
-    """
-    lead = np.zeros(rows.shape, dtype=np.int64)
-    for t in range(rows.shape[1] - 1, -1, -1):
-        np.copyto(lead, t, where=rows == rows[:, t : t + 1])
-    return lead
-
-
 def owners(parents: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per pixel, the input triangle owning most samples (ties: the earlier) and a sample of it.
 
@@ -358,25 +329,28 @@ class MultiFrame:
 
 
 def _sample_entries(frags, winner, n_s, n_tri):
-    """Every covered sample of the pixels not decided whole: (triangle, pixel, sample),
-    by pixel, then drawing order (triangle index), then sample: at each sample the
-    entries arrive in drawing order, as the z-buffer needs."""
+    """Every covered sample of the pixels not decided whole: (triangle, pixel, sample,
+    pair) by pixel, then drawing order (triangle index), then sample, so at each sample
+    the entries arrive in drawing order, as the z-buffer needs; and the (pixel, triangle)
+    pairs they come from, (triangle, pixel) in that order (``pair`` indexes them)."""
     rest = np.flatnonzero(winner[frags.full_pixel] < 0)  # full fragments count S times
     part = np.flatnonzero(winner[frags.part_pixel] < 0)
     tri = np.concatenate([frags.full_tri[rest], frags.part_tri[part]])
     pixel = np.concatenate([frags.full_pixel[rest], frags.part_pixel[part]])
     mask = np.concatenate([np.full(len(rest), (1 << n_s) - 1), frags.part_mask[part]])
     order = np.argsort(pixel * n_tri + tri)
-    covered = (mask[order, None] & (1 << np.arange(n_s))) != 0  # (pairs, S) row-major
+    tri, pixel, mask = tri[order], pixel[order], mask[order]
+    covered = (mask[:, None] & (1 << np.arange(n_s))) != 0  # (pairs, S) row-major
     pair, sample = np.divmod(np.flatnonzero(covered), n_s)
-    pair = order[pair]
-    return tri[pair], pixel[pair], sample
+    return (tri[pair], pixel[pair], sample, pair), (tri, pixel)
 
 
 def visibility(frags, planes, unit, offsets, size, options, forced):
     """The depth buffer per sample: its triangles (:class:`SampleIds`) and depths
-    (:class:`SampleDepths`), the whole pixels (flat index, triangle), the decided samples
-    (slots, triangle), the number of samples where 2+ triangles met, and the trace record.
+    (:class:`SampleDepths`), the whole pixels (flat index, triangle), the (pixel, triangle)
+    pair that won each decided sample (an index into the pairs (triangle, pixel) of the
+    pixels decided sample by sample), the number of samples where 2+ triangles met, and
+    the trace record.
 
     ``options`` is ``(depth_test, depth_format, trace)``: with ``trace`` every entry's
     depth and test is computed (and recorded); without, a sample only one triangle still
@@ -390,7 +364,7 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
         winner, reached = np.full(n_pix, -1, np.int64), None
     else:
         winner, reached = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
-    tri, pixel, sample = _sample_entries(frags, winner, n_s, len(planes))
+    (tri, pixel, sample, pair), pairs = _sample_entries(frags, winner, n_s, len(planes))
     # the z-buffer over these pixels' samples only: pixels numbered 0.. in order
     new_pixel = np.r_[True, pixel[1:] != pixel[:-1]] if len(pixel) else pixel > 0
     still = pixel[new_pixel]
@@ -413,7 +387,7 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
         record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth,
                   "n_tri": len(planes), "depth_test": depth_test, "whole_pixel": wp,
                   "whole_tri": winner[wp]}  # fmt: skip
-    return sample_tri, depths, (wp, winner[wp]), (slots, tri[won]), met, record
+    return sample_tri, depths, (wp, winner[wp]), (pair[won], pairs), met, record
 
 
 def _entry_depths(planes, unit, offsets, width, depth_format, tri, pixel, sample):
@@ -463,13 +437,16 @@ def _decide_samples(entries, planes, unit, offsets, width, options):
     return won, met, None
 
 
-def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags):
+def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, size, flags):
     """Attributes per sample (once per pixel and triangle, a :class:`SampleAttributes`) and
-    the owners' per-pixel values, from the frame's :class:`SampleIds`."""
+    the owners' per-pixel values (owner, (k, P) attributes, depth) and the evaluations.
+
+    ``sample_tri`` is the frame's :class:`SampleIds`, ``decided`` = (the pair that won each
+    decided sample, the pairs (triangle, pixel)) from :func:`visibility`.
+    """
     force_ms, force_attrs = flags
     width, height = size
     n_s, n_pix = len(offsets), width * height
-    slots = sample_tri.slots  # the samples the per-sample test decided, ascending
     k = tables.value_lo.shape[0]
     owner = np.full(n_pix, -1, dtype=np.int64)
     pix_attrs, pix_depth = np.full((k, n_pix), np.nan), np.full(n_pix, np.nan)
@@ -477,32 +454,33 @@ def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags)
     sp, st = whole
     whole_vals, dep = shade(tables, st, sp, None, offsets, width)
     owner[sp], pix_attrs[:, sp], pix_depth[sp] = st, whole_vals, dep
-    # the other covered pixels: one evaluation per (pixel, triangle) seen at a sample
-    seen = slots // n_s  # ascending: the covered pixels decided sample by sample
-    new_pixel = np.r_[True, seen[1:] != seen[:-1]] if len(seen) else seen > 0
-    others = seen[new_pixel]
-    sub = np.full((len(others), n_s), -1, dtype=np.int64)  # their samples' triangles
-    sub.ravel()[(np.cumsum(new_pixel) - 1) * n_s + slots % n_s] = sample_tri.tri
-    flat = np.flatnonzero(sub >= 0)  # the covered samples, row-major
-    i, s = np.divmod(flat, n_s)
-    pix, tri = others[i], np.take(sub, flat)
-    position = np.full(sub.size, -1, dtype=np.int64)  # flat index -> entry
-    position[flat] = np.arange(len(flat))
+    # the other covered pixels: one evaluation per (pixel, triangle) that won a sample
+    won_pair, (pair_tri, pair_pixel) = decided
+    slots = sample_tri.slots  # ascending
+    bits = np.bincount(won_pair, weights=1 << (slots % n_s), minlength=len(pair_tri))
+    shown = np.flatnonzero(bits)  # (pixel, triangle) order
+    bits = bits[shown].astype(np.int64)  # the samples each shown pair won
+    number = np.empty(len(pair_tri), dtype=np.int64)
+    number[shown] = np.arange(len(shown))
+    inverse = number[won_pair]  # each decided sample's pair among the shown
+    tri, pix = pair_tri[shown], pair_pixel[shown]
+    won = (bits[:, None] & (1 << np.arange(n_s))) != 0
     if force_ms:  # every sample evaluates its own triangle: the same values, S times the work
-        first, inverse = np.arange(len(pix)), np.arange(len(pix))
+        vals, dep = shade(tables, sample_tri.tri, slots // n_s, won[inverse], offsets, width)
+        first = np.full(len(shown), len(slots), dtype=np.int64)
+        np.minimum.at(first, inverse, np.arange(len(slots)))
+        sample_attrs = (vals, np.arange(len(slots)))
+        vals, dep = vals[:, first], dep[first]
     else:
-        first, inverse = _distinct(sub, i, s, position)
-    won = sub[i[first]] == tri[first][:, None]
-    vals, dep = shade(tables, tri[first], pix[first], won, offsets, width)
-    sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, pix, s, vals,
-                                    inverse)  # fmt: skip
-    parents = np.where(sub >= 0, parent[np.maximum(sub, 0)], -1)
-    _, own_sample = owners(parents)
-    own = np.arange(len(others)) * n_s + own_sample  # flat index of each owner's sample
-    at = inverse[position[own]]
-    owner[others] = np.take(sub, own)
-    pix_attrs[:, others], pix_depth[others] = vals[:, at], dep[at]
-    n_shaded = len(sp) + len(first)
+        vals, dep = shade(tables, tri, pix, won, offsets, width)
+        sample_attrs = (vals, inverse)
+    sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, slots // n_s,
+                                    slots % n_s, *sample_attrs)  # fmt: skip
+    if len(shown):
+        others, own = _owners(pix, parent[tri], bits, n_s)
+        owner[others] = tri[own]
+        pix_attrs[:, others], pix_depth[others] = vals[:, own], dep[own]
+    n_shaded = len(sp) + (len(slots) if force_ms else len(shown))
     if force_attrs:  # also every hidden (pixel, triangle): evaluated, then discarded
         m = len(tables.area)
         keys = np.unique(np.r_[frags.part_pixel * m + frags.part_tri,
@@ -512,6 +490,38 @@ def shade_pixels(sample_tri, whole, tables, frags, parent, offsets, size, flags)
         shade(tables, hidden_tri, hidden_pix, won, offsets, width)
         n_shaded += len(keys)
     return sample_attrs, owner, pix_attrs, pix_depth, n_shaded
+
+
+def _owners(pixel, parent, bits, n_s):
+    """Per pixel, which (pixel, triangle) pair owns it: the input triangle (``parent``)
+    showing at most of its samples (ties: the earlier), and of its pieces after clipping
+    the one at its lowest sample, as :func:`owners` decides.
+
+    ``pixel``, ``parent`` and ``bits`` (the samples each pair shows) are per pair, sorted by
+    pixel and then triangle (so pieces of one input triangle are neighbours). Returns the
+    pixels (ascending) and the owning pair of each.
+    """
+    count = np.zeros(len(bits), dtype=np.int64)
+    low = np.full(len(bits), n_s, dtype=np.int64)  # lowest sample shown
+    for s in range(n_s - 1, -1, -1):
+        on = (bits >> s) & 1
+        count += on
+        low[on == 1] = s
+    # (pixel, input triangle) groups: samples shown, and the pair at the lowest one
+    starts = np.flatnonzero(np.r_[True, (pixel[1:] != pixel[:-1]) | (parent[1:] != parent[:-1])])
+    size = np.diff(np.r_[starts, len(bits)])
+    total = np.add.reduceat(count, starts)
+    lowest = np.minimum.reduceat(low, starts)
+    index = np.arange(len(bits))
+    at = np.minimum.reduceat(np.where(low == np.repeat(lowest, size), index, len(bits)), starts)
+    # per pixel, the group showing most samples; groups are in input-triangle order
+    g_pixel = pixel[starts]
+    firsts = np.flatnonzero(np.r_[True, g_pixel[1:] != g_pixel[:-1]])
+    most = np.maximum.reduceat(total, firsts)
+    group = np.arange(len(starts))
+    best = np.where(total == np.repeat(most, np.diff(np.r_[firsts, len(starts)])), group,
+                    len(starts))  # fmt: skip
+    return g_pixel[firsts], at[np.minimum.reduceat(best, firsts)]
 
 
 def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
@@ -551,6 +561,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     sample_attrs, owner, attrs, depth, n_shaded = shade_pixels(
         sample_tri,
         whole,
+        decided,
         tables,
         frags,
         clipped.parent,
@@ -566,7 +577,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     k = clipped.attrs.shape[2]
     shown = np.zeros(len(w), dtype=bool)  # the triangles some sample shows
     shown[whole[1]] = True
-    shown[decided[1]] = True
+    shown[sample_tri.tri] = True
     n_persp = int(perspective[shown].sum())
     depth_effect = depth_test_effect(depth_test, force_test, contested, n_samples)
     why = depth_effect.why.replace("pixel(s)", "sample(s)").replace(
