@@ -13,7 +13,7 @@ from test_plan import random_scene
 from test_render import H, W, clip_from_window, random_clip
 
 import teachraster as tr
-from teachraster.pipeline.multisampling import owners
+from teachraster.pipeline.multisampling import _owners, owners
 from teachraster.pipeline.render_plan import FORCEABLE
 from teachraster.pipeline.scenes import SCENES, get_scene
 
@@ -124,6 +124,24 @@ def test_owner_most_samples_ties_earlier():
             counts = np.bincount(ids[i, j], minlength=2)
             assert frame.triangle_id[i, j] == int(np.argmax(counts))
             assert frame.attrs[i, j, 0] == 1.0 + frame.triangle_id[i, j]
+
+
+def test_pair_owners_decide_like_sample_owners(rng):
+    """``_owners`` (per (pixel, triangle) pair and its sample mask, as the renderer keeps
+    them) picks the owner ``owners`` picks from the samples, and the piece at its lowest
+    sample when clipping split the input triangle."""
+    for _ in range(300):
+        n_s = int(rng.choice([2, 4, 8, 16]))
+        parent = np.sort(rng.integers(0, 4, 7))  # clipping keeps pieces in input order
+        sub = rng.integers(-1, 7, (int(rng.integers(1, 6)), n_s))
+        sub[:, 0] = np.maximum(sub[:, 0], 0)  # every pixel shows something
+        pixel, tri = np.nonzero((sub[:, :, None] == np.arange(7)).any(axis=1))
+        bits = ((sub[pixel] == tri[:, None]) << np.arange(n_s)).sum(axis=1)
+        pixels, own = _owners(pixel, parent[tri], bits, n_s)
+        want, first = owners(np.where(sub >= 0, parent[np.maximum(sub, 0)], -1))
+        np.testing.assert_array_equal(pixels, np.arange(len(sub)))
+        np.testing.assert_array_equal(parent[tri[own]], want)
+        np.testing.assert_array_equal(tri[own], sub[np.arange(len(sub)), first])
 
 
 def test_attributes_once_per_pixel_at_the_centre(rng):
