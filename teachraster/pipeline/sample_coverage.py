@@ -22,6 +22,9 @@ import numpy as np
 
 from .batched_fill import flat_ranges, line_bounds
 
+#: Raster lines per block in the per-sample span pass (see :func:`sample_lines`).
+BLOCK = 16384
+
 
 @dataclass(frozen=True)
 class SampleFragments:
@@ -102,8 +105,10 @@ def sample_lines(setup, live, units, width: int, height: int):
     for s, (_, oy) in enumerate(units.tolist()):  # the sample row crosses the triangle
         y = rows * setup.unit + oy
         ok[s] = (y >= ymin) & (y <= ymax)
-    for k in range(3):
-        _edge_samples(setup, k, owner, rows, units, (lo, hi, ok))
+    for a in range(0, len(rows), BLOCK):  # blocks of lines: the temporaries stay in cache
+        b = slice(a, a + BLOCK)
+        for k in range(3):
+            _edge_samples(setup, k, owner[b], rows[b], units, (lo[:, b], hi[:, b], ok[:, b]))
     np.putmask(hi, ~ok, lo - 1)
     return owner, rows, lo, hi
 
