@@ -137,7 +137,7 @@ def test_pair_owners_decide_like_sample_owners(rng):
         sub[:, 0] = np.maximum(sub[:, 0], 0)  # every pixel shows something
         pixel, tri = np.nonzero((sub[:, :, None] == np.arange(7)).any(axis=1))
         bits = ((sub[pixel] == tri[:, None]) << np.arange(n_s)).sum(axis=1)
-        pixels, own = _owners(pixel, parent[tri], bits, n_s)
+        pixels, own = _owners(pixel, parent[tri], bits)
         want, first = owners(np.where(sub >= 0, parent[np.maximum(sub, 0)], -1))
         np.testing.assert_array_equal(pixels, np.arange(len(sub)))
         np.testing.assert_array_equal(parent[tri[own]], want)

@@ -25,6 +25,7 @@ every pixel, with the same frame (tests/test_render_msaa.py).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cache
 
 import numpy as np
 
@@ -366,9 +367,10 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
         winner, reached = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
     (tri, pixel, sample, pair), pairs = _sample_entries(frags, winner, n_s, len(planes))
     # the z-buffer over these pixels' samples only: pixels numbered 0.. in order
-    new_pixel = np.r_[True, pixel[1:] != pixel[:-1]] if len(pixel) else pixel > 0
-    still = pixel[new_pixel]
-    cell = (np.cumsum(new_pixel) - 1) * n_s + sample
+    p_pixel = pairs[1]  # the pairs' pixels, ascending
+    new_pixel = np.r_[True, p_pixel[1:] != p_pixel[:-1]] if len(p_pixel) else p_pixel > 0
+    still = p_pixel[new_pixel]
+    cell = (np.cumsum(new_pixel) - 1)[pair] * n_s + sample
     entries = (tri, pixel, sample, cell, len(still) * n_s)
     every = (depth_test, depth_format, trace or force_test)  # forced: every entry tested
     won, met, depth = _decide_samples(entries, planes, unit, offsets, width, every)
@@ -477,7 +479,7 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
     sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, slots // n_s,
                                     slots % n_s, *sample_attrs)  # fmt: skip
     if len(shown):
-        others, own = _owners(pix, parent[tri], bits, n_s)
+        others, own = _owners(pix, parent[tri], bits)
         owner[others] = tri[own]
         pix_attrs[:, others], pix_depth[others] = vals[:, own], dep[own]
     n_shaded = len(sp) + (len(slots) if force_ms else len(shown))
@@ -492,7 +494,24 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
     return sample_attrs, owner, pix_attrs, pix_depth, n_shaded
 
 
-def _owners(pixel, parent, bits, n_s):
+@cache
+def _bit_tables() -> tuple[np.ndarray, np.ndarray]:
+    """For every 16-bit sample mask: how many bits are set, and the lowest one (16 if none).
+
+    >>> [table[[0, 1, 6, 8]].tolist() for table in _bit_tables()]
+    [[0, 1, 2, 1], [16, 0, 1, 3]]
+    """
+    masks = np.arange(1 << 16)
+    count = np.zeros(len(masks), dtype=np.int64)
+    low = np.full(len(masks), 16, dtype=np.int64)
+    for s in range(15, -1, -1):
+        on = (masks >> s) & 1 == 1
+        count += on
+        low[on] = s
+    return count, low
+
+
+def _owners(pixel, parent, bits):
     """Per pixel, which (pixel, triangle) pair owns it: the input triangle (``parent``)
     showing at most of its samples (ties: the earlier), and of its pieces after clipping
     the one at its lowest sample, as :func:`owners` decides.
@@ -501,12 +520,8 @@ def _owners(pixel, parent, bits, n_s):
     pixel and then triangle (so pieces of one input triangle are neighbours). Returns the
     pixels (ascending) and the owning pair of each.
     """
-    count = np.zeros(len(bits), dtype=np.int64)
-    low = np.full(len(bits), n_s, dtype=np.int64)  # lowest sample shown
-    for s in range(n_s - 1, -1, -1):
-        on = (bits >> s) & 1
-        count += on
-        low[on == 1] = s
+    count, low = _bit_tables()  # samples shown, and the lowest of them
+    count, low = count[bits], low[bits]
     # (pixel, input triangle) groups: samples shown, and the pair at the lowest one
     starts = np.flatnonzero(np.r_[True, (pixel[1:] != pixel[:-1]) | (parent[1:] != parent[:-1])])
     size = np.diff(np.r_[starts, len(bits)])
