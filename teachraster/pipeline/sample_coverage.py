@@ -181,9 +181,12 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     l_line, l_col = _runs(union_lo, np.maximum(left_stop, union_lo), line)
     r_line, r_col = _runs(right_lo, np.maximum(right_stop, right_lo), line)
     p_line, p_col = np.concatenate([l_line, r_line]), np.concatenate([l_col, r_col])
-    inside = np.take(lo, p_line, axis=1) <= p_col  # (S, p): each sample's interval
-    inside &= p_col <= np.take(hi, p_line, axis=1)
-    mask = _bits(inside)
+    mask = np.empty(len(p_line), dtype=np.int64)
+    for a in range(0, len(p_line), BLOCK):  # blocks: the (S, block) tests stay in cache
+        b = slice(a, a + BLOCK)
+        inside = np.take(lo, p_line[b], axis=1) <= p_col[b]  # each sample's interval
+        inside &= p_col[b] <= np.take(hi, p_line[b], axis=1)
+        mask[b] = _bits(inside)
     keep = np.flatnonzero(mask)  # the union may have gaps: those columns drop out
     p_line, p_col = p_line[keep], p_col[keep]
     return SampleFragments(
