@@ -87,6 +87,46 @@ def test_scaling_one_vertex_changes_nothing(tris, which, power, cull):
 
 
 @SETTINGS
+@given(
+    tris=st.lists(triangle, min_size=1, max_size=3),
+    powers=st.lists(st.integers(-690, 690), min_size=3, max_size=3),
+)
+def test_vertices_scaled_apart_beyond_the_float_range(tris, powers):
+    """Each vertex of every triangle times its own 2**power: vertices of one triangle then
+    differ in scale by up to 2**1400 (w = 1e-250 beside 1e121 used to underflow the
+    clipper's t and throw a crossing a million pixels off). Still the same frame."""
+    clip = np.array(tris, dtype=np.float64)
+    scaled = np.ldexp(clip, np.array(powers)[None, :, None])
+    _same_frame(_strict(tr.render, clip, W, H), _strict(tr.render, scaled, W, H))
+
+
+def test_vertices_further_apart_than_the_float_range_are_refused():
+    """Scales 2**-600 and 2**1000 in one triangle: bringing it within range would make the
+    small vertex vanish into the eye point, so render says so, naming ``clip``."""
+    tri = np.ldexp(np.array([[[0.0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]]]),
+                   np.array([0, -600, 1000])[None, :, None])  # fmt: skip
+    with pytest.raises(ValueError, match="clip: the vertices of triangle 0 differ in scale"):
+        tr.render(tri, W, H)
+
+
+def test_vertices_thirty_orders_of_magnitude_apart_regression():
+    """The case the fuzz found: w of -3e-239, 7e-251 and 3e121 in one triangle."""
+    clip = np.array([[
+        [9.9033305487542443e-240, 3.7861975860844152e-239, 1.8682019477760810e-240,
+         -3.0000097655875113e-239],
+        [7.8445586502810075e-251, -8.9277495702353799e-251, 4.6134264688193533e-251,
+         7.4152857272025200e-251],
+        [-3.0181198373034394e121, -7.5347012463339710e120, 2.5818282775837835e121,
+         2.6556187424717737e121],
+    ]])  # fmt: skip
+    moderate = np.ldexp(clip, -np.frexp(np.abs(clip[0, :, 3]))[1][None, :, None])
+    for bits in (8, 5, 0):
+        frame = _strict(tr.render, clip, 16, 12, subpixel_bits=bits)
+        assert frame.coverage.sum() > 0
+        _same_frame(frame, _strict(tr.render, moderate, 16, 12, subpixel_bits=bits))
+
+
+@SETTINGS
 @given(w0=st.floats(1e-307, 1e-300), factor=st.floats(1e-3, 1e3))
 def test_a_vertex_next_to_the_eye_is_not_a_crossing(w0, factor):
     """A vertex at (0, 0, 0, w) with w < 1e-300 is in front of the eye: nothing is clipped,
@@ -146,7 +186,10 @@ def scalar_clip(tri: np.ndarray, guard: float) -> list[np.ndarray]:
             if (da >= 0) != (db >= 0):
                 if abs(da) > abs(db):
                     a, b, da, db = b, a, db, da
-                out.append(np.array(onto(a + da / (da - db) * (b - a))))
+                with np.errstate(all="ignore"):  # the clipper's form, t's as the fallback
+                    v = a + da * ((b - a) / (da - db))
+                v = np.where(np.isfinite(v), v, a + da / (da - db) * (b - a))
+                out.append(np.array(onto(v)))
         poly = out
     return [v for v in poly if v[3] > 0]
 

@@ -197,11 +197,45 @@ def blend(weights: np.ndarray, values: np.ndarray, *, extrapolate: bool = False)
     array([0.])
     """
     flat = values.reshape(3, -1)
-    with np.errstate(over="ignore"):
-        out = weights @ flat
-    if not extrapolate:
+    if extrapolate:
+        out = _unclamped(weights, flat)
+    else:
+        with np.errstate(over="ignore"):
+            out = weights @ flat
         np.clip(out, flat.min(axis=0), flat.max(axis=0), out=out)
     return out.reshape(len(weights), *values.shape[1:])
+
+
+def _unclamped(weights: np.ndarray, flat: np.ndarray) -> np.ndarray:
+    """``weights @ flat`` for extrapolation, flat (3, m): columns of huge values first scaled
+    by a power of two (exact), so that the sum overflows only where its true value does
+    (then ±inf, as a GPU's float would), never ``inf - inf = NaN`` from two large terms."""
+    _, e = np.frexp(np.abs(flat).max(axis=0))
+    e = np.where(e > HUGE_EXP, e, 0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        if not e.any():
+            return weights @ flat
+        return np.ldexp(weights @ np.ldexp(flat, -e), e)
+
+
+#: Values whose binary exponent exceeds this are scaled down before an unclamped sum.
+HUGE_EXP = 512
+
+
+def huge_exponents(values: np.ndarray) -> np.ndarray:
+    """(n, k) powers of two that bring per-vertex values (n, 3, k) near the float maximum
+    down to magnitudes below 1, 0 for ordinary ones (|f| < 2**HUGE_EXP, left bit-identical).
+
+    Interpolation is linear in the values, so ``ldexp(values, -e)`` in and ``ldexp(result, e)``
+    out is exact; in between, differences and products that extrapolation or derivatives
+    take cannot overflow (callers: :func:`blend_each`, the quad derivatives).
+
+    >>> huge_exponents(np.array([[[1e308], [0.5], [-2.0]]])).tolist()
+    [[1024]]
+    """
+    peak = np.maximum(np.maximum(np.abs(values[:, 0]), np.abs(values[:, 1])), np.abs(values[:, 2]))
+    e = np.frexp(peak)[1]
+    return np.where(e > HUGE_EXP, e, 0)
 
 
 def blend_each(
@@ -221,6 +255,13 @@ def blend_each(
     # One contiguous 1-D array per weight and per vertex value: written out per vertex and
     # per channel, because reductions over an axis of length 3, and arithmetic on strided
     # (n, 3, k) views, are slow in numpy.
+    if extrapolate:
+        scale = huge_exponents(values)
+        if scale.any():
+            values = np.ldexp(values, -scale[:, None, :])
+            out = blend_each(weights, values, index, extrapolate=True)
+            with np.errstate(over="ignore"):
+                return np.ldexp(out, scale if index is None else scale[index])
     m0, m1, m2 = (np.ascontiguousarray(weights[:, i]) for i in range(3))
     # Each block's range, gathered rather than recomputed per row (and not as a reduction
     # over the axis of three, which is slow even on the small per-block array).
@@ -231,7 +272,7 @@ def blend_each(
         low, high = np.ascontiguousarray(lo[:, j]), np.ascontiguousarray(hi[:, j])
         if index is not None:
             v0, v1, v2, low, high = v0[index], v1[index], v2[index], low[index], high[index]
-        with np.errstate(over="ignore"):  # values near the float maximum: clamped below
+        with np.errstate(over="ignore", invalid="ignore"):  # near the float max: see above
             o = m0 * v0
             o += m1 * v1
             o += m2 * v2

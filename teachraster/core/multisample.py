@@ -206,8 +206,7 @@ def extrapolate(lam: np.ndarray, values: np.ndarray, w: np.ndarray, mode: str) -
     if mode == "perspective" and not np.all(w == w[0]):
         q = lam * (w.min() / w)
         lam = q / q.sum(axis=1, keepdims=True)
-    flat = values.reshape(3, -1)
-    return (lam @ flat).reshape(len(lam), *values.shape[1:])
+    return blend(lam, values, extrapolate=True)
 
 
 @dataclass(frozen=True)
@@ -253,10 +252,9 @@ def fill_samples(setup, offsets, size, fill, centre_cov, packed, tri, options) -
         sample_attrs[rows[si[0]], cols[si[0]], si[1]] = interpolate(
             lam_s, packed, tri.w, interpolation
         )
-        with np.errstate(invalid="ignore"):  # all-NaN slices never occur at covered pixels
-            attrs[rows, cols] = np.nanmean(sample_attrs[rows, cols], axis=1)
-            if depth is not None:
-                depth[rows, cols] = np.nanmean(sample_depth[rows, cols], axis=1)
+        attrs[rows, cols] = covered_mean(sample_attrs[rows, cols])
+        if depth is not None:
+            depth[rows, cols] = covered_mean(sample_depth[rows, cols])
         which = np.full(len(rows), -2, dtype=np.int8)
         where = np.stack([cols + 0.5, rows + 0.5], axis=1).astype(np.float64)
     else:
@@ -285,3 +283,19 @@ def fill_samples(setup, offsets, size, fill, centre_cov, packed, tri, options) -
         coverage=coverage, sample_coverage=sample_cov, attrs=attrs, depth=depth,
         sample_attrs=sample_attrs, sample_depth=sample_depth, offsets=px_offsets, trace=trace,
     )  # fmt: skip
+
+
+def covered_mean(values: np.ndarray) -> np.ndarray:
+    """Mean over axis 1 of the covered samples' values (NaN: uncovered), (n, S, ...) -> (n, ...).
+
+    Each value is divided by its pixel's count before summing, so values near the float
+    maximum average without overflow (``np.nanmean`` sums first); the mean is clamped to the
+    samples' own range, which rounding could otherwise leave by an ulp. Every pixel passed
+    has at least one covered sample.
+
+    >>> covered_mean(np.array([[1.5e308, 1.7e308, np.nan]]))
+    array([1.6e+308])
+    """
+    count = np.expand_dims((~np.isnan(values)).sum(axis=1), 1)
+    mean = np.nansum(values / count, axis=1)
+    return np.clip(mean, np.nanmin(values, axis=1), np.nanmax(values, axis=1))

@@ -80,14 +80,51 @@ def _normalised(clip: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     Returns the scaled triangles and e (N,) (0 for the ordinary ones, left bit-identical).
     A common power of two per triangle is exact and keeps every ratio of its coordinates,
-    so nothing the pipeline computes from it changes.
+    so nothing the pipeline computes from it changes. The shift is the smallest that brings
+    the largest |coordinate| within [2**-LIMIT_EXP, 2**LIMIT_EXP]: a vertex far smaller
+    than the triangle's largest (a spread of scales beyond the float range between its
+    vertices) keeps as many of its bits as it can.
     """
     peak = np.abs(clip).max(axis=(1, 2), initial=0.0)
     _, e = np.frexp(peak)
-    e = np.where((e > LIMIT_EXP) | ((e < -LIMIT_EXP) & (peak > 0)), e, 0)
+    e = np.where(e > LIMIT_EXP, e - LIMIT_EXP, np.where((e < -LIMIT_EXP) & (peak > 0),
+                                                       e + LIMIT_EXP, 0))  # fmt: skip
     if not e.any():
         return clip, e
-    return np.ldexp(clip, -e[:, None, None]), e
+    scaled = np.ldexp(clip, -e[:, None, None])
+    _check_spread(clip, scaled)
+    return scaled, e
+
+
+def _check_spread(clip: np.ndarray, scaled: np.ndarray) -> None:
+    """A ValueError naming ``clip`` where a shift made a normal vertex subnormal or zero.
+
+    Only a triangle whose vertices differ in scale by more than about 2**1400 (the float
+    range less the headroom the clipper's products need) can lose a vertex that way: it
+    would silently turn into the eye point, so it is refused instead.
+    """
+    tiny = np.finfo(np.float64).tiny
+    before, after = np.abs(clip).max(axis=-1), np.abs(scaled).max(axis=-1)
+    lost = (before >= tiny) & (after < tiny)
+    if lost.any():
+        t, v = np.argwhere(lost)[0]
+        raise ValueError(
+            f"clip: the vertices of triangle {t} differ in scale by more than the float range "
+            f"allows (vertex {v} would underflow); scale each vertex by a positive factor "
+            "(which changes nothing on screen) so that they are closer"
+        )
+
+
+def _per_vertex(clip: np.ndarray) -> np.ndarray:
+    """Every vertex scaled by its own power of two to a largest |coordinate| in [0.5, 1).
+
+    Exact, and it keeps the sign of every plane distance (a positive factor on a vertex
+    changes no side of a plane through the origin), so :func:`classify` decides the same for
+    any spread of scales between a triangle's vertices.
+    """
+    peak = np.abs(clip).max(axis=-1)
+    _, e = np.frexp(peak)
+    return np.ldexp(clip, -e[..., None])
 
 
 def classify(clip: np.ndarray, guard: float | None = None) -> np.ndarray:
@@ -101,7 +138,7 @@ def classify(clip: np.ndarray, guard: float | None = None) -> np.ndarray:
     ...                    [[0, 0, -3, 1], [1, 0, 0, 1], [0, 1, 0, 1]]]))
     array([0, 2, 1], dtype=int8)
     """
-    clip, _ = _normalised(np.asarray(clip, dtype=np.float64).reshape(-1, 3, 4))
+    clip = _per_vertex(np.asarray(clip, dtype=np.float64).reshape(-1, 3, 4))
     inside = distances(clip, guard) >= 0  # (N, 3 vertices, P planes)
     inside = np.concatenate([inside, (clip[:, :, 3] > 0)[:, :, None]], axis=2)
     status = np.full(len(clip), CLIPPED, dtype=np.int8)
@@ -150,7 +187,7 @@ def _cut(poly, attrs, count, d, k, guard):
     fa, fb = np.where(s3, a_next, attrs), np.where(s3, attrs, a_next)
     da, db = np.where(swap, d_next, d), np.where(swap, d, d_next)
     t = np.divide(da, da - db, out=np.zeros_like(da), where=cross)[:, :, None]
-    new_p = pa + t * (pb - pa)
+    new_p = _crossing(pa, pb, da, db, t, cross)
     _onto_plane(new_p, k, guard)
     with np.errstate(over="ignore", invalid="ignore"):  # attributes near the float limit
         new_a = fa + t * (fb - fa)
@@ -171,6 +208,25 @@ def _cut(poly, attrs, count, d, k, guard):
     new = np.zeros((n, cap + 1), dtype=bool)
     new[rows, dest] = slots % 2 == 1  # odd slots hold the crossings
     return out_p, out_a, mask.sum(axis=1), new
+
+
+def _crossing(pa, pb, da, db, t, cross):
+    """Where edge a -> b crosses the plane: ``pa + da (pb - pa) / (da - db)``, nearer end a.
+
+    Written with ``da`` applied last, not as ``pa + t (pb - pa)``: when the two endpoints'
+    scales differ by more than the float range (w = 1e-250 at a, 1e121 at b) t itself
+    underflows although the step ``t (pb - pa)`` is a perfectly ordinary number. Where the
+    quotient overflows instead (a on the plane, b tiny), t's form is the accurate one.
+    """
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        step = np.divide(pb - pa, (da - db)[:, :, None], out=np.zeros_like(pa),
+                         where=cross[:, :, None])  # fmt: skip
+        step *= da[:, :, None]
+        new_p = pa + step
+    bad = ~np.isfinite(new_p)
+    if bad.any():
+        new_p[bad] = (pa + t * (pb - pa))[bad]
+    return new_p
 
 
 def clip_polygons(poly, attrs, count, guard: float | None = None):

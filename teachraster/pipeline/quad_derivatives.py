@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.interpolation import huge_exponents
 from .render_plan import derivatives_effect
 
 #: ``derivatives=`` choices; ``True`` means "coarse".
@@ -286,6 +287,8 @@ def derivatives_stage(frags, visible, clipped, size, mode, where, interpolation,
         return None, None, None, derivatives_effect(None, 0, n_visible, 0, 0, 0, False)
     w, attrs = clipped.clip[:, :, 3], clipped.attrs
     k = attrs.shape[2]
+    scale = huge_exponents(attrs)  # (M, k): values near the float maximum, scaled exactly
+    attrs = np.ldexp(attrs, -scale[:, None, :]) if scale.any() else attrs
     tris = frags.tri[visible.winner]
     need = np.ones(len(tris), dtype=bool) if where is None or force else where[tris]
     sel = np.flatnonzero(need)
@@ -293,6 +296,9 @@ def derivatives_stage(frags, visible, clipped, size, mode, where, interpolation,
     planes = attribute_planes(frags.vertices, w, attrs, interpolation == "perspective")
     pairs = quad_pairs(rows, cols, tris[sel], width, height)
     dx, dy, moved = quad_derivatives(rows, cols, tris[sel], planes, mode, pairs)
+    if scale.any():  # back to the caller's scale: ±inf only where the true value overflows
+        with np.errstate(over="ignore"):
+            dx, dy = (np.ldexp(d, scale[tris[sel]]) for d in (dx, dy))
     if len(sel) == n_visible:
         ddx, ddy = dx, dy
     else:
@@ -304,6 +310,8 @@ def derivatives_stage(frags, visible, clipped, size, mode, where, interpolation,
     if trace:
         vals, dens = lane_values(planes, q_tri, q_row, q_col)
         vals, inv_w = np.stack(vals, axis=1), np.stack(dens, axis=1)
+        with np.errstate(over="ignore"):
+            vals = np.ldexp(vals, scale[q_tri][:, None, :]) if scale.any() else vals
         ok = inv_w > 0
         if mode == "coarse":
             fallback = ~(ok[:, 0] & ok[:, 1] & ok[:, 2])

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.interpolation import weights_per_row
+from ..core.interpolation import huge_exponents, weights_per_row
 
 
 @dataclass(frozen=True)
@@ -41,6 +41,11 @@ class ShadeTables:
         Whether a triangle's attributes are divided by w.
     values : (3, k, M)
         The attributes of each vertex; ``value_lo``, ``value_hi`` (k, M) their range.
+    value_scale : (k, M) int or None
+        Powers of two that bring values near the float maximum down (``values`` is stored
+        scaled by them, and sums scaled back, so extrapolation gives ±inf only where the
+        true value overflows; :func:`~teachraster.core.interpolation.huge_exponents`);
+        None when every value is ordinary.
     depth : (3, 1, M)
         Window depth of each vertex; ``depth_lo``, ``depth_hi`` (1, M) its range.
     """
@@ -53,6 +58,7 @@ class ShadeTables:
     values: np.ndarray
     value_lo: np.ndarray
     value_hi: np.ndarray
+    value_scale: np.ndarray | None
     depth: np.ndarray
     depth_lo: np.ndarray
     depth_hi: np.ndarray
@@ -71,10 +77,14 @@ def shade_tables(source, window, w, attrs, perspective) -> ShadeTables:
         a, b = src[:, (k + 1) % 3], src[:, (k + 2) % 3]
         edges[k] = a[:, 0], a[:, 1], b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
     values = np.ascontiguousarray(np.transpose(attrs, (1, 2, 0)))  # (3, k, M)
+    lo, hi = values.min(axis=0), values.max(axis=0)
+    scale = huge_exponents(attrs).T  # (k, M)
+    if scale.any():
+        values = np.ldexp(values, -scale)
     depth = np.ascontiguousarray(np.transpose(window[:, :, 2:3], (1, 2, 0)))
     return ShadeTables(
         edges, src_area.astype(np.float64), w, np.ascontiguousarray((w.min(axis=1)[:, None] / w).T),
-        np.asarray(perspective, dtype=bool), values, values.min(axis=0), values.max(axis=0),
+        np.asarray(perspective, dtype=bool), values, lo, hi, scale if scale.any() else None,
         depth, depth.min(axis=0), depth.max(axis=0),
     )  # fmt: skip
 
@@ -156,16 +166,23 @@ def _shade_block(tables: ShadeTables, tri, pixel, won, offsets, width):
     if under.any():
         fallback = weights_per_row(np.maximum(lam[:, under], 0).T, tables.w[tri[under]])
         weights[:, under] = fallback.T
-    values = _blend(weights, tri, tables.values, tables.value_lo, tables.value_hi, inside)
-    depth = _blend(lam, tri, tables.depth, tables.depth_lo, tables.depth_hi, inside)
+    values = _blend(weights, tri, tables.values, tables.value_scale, inside,
+                    (tables.value_lo, tables.value_hi))  # fmt: skip
+    depth = _blend(lam, tri, tables.depth, None, inside, (tables.depth_lo, tables.depth_hi))
     return values, depth[0]
 
 
-def _blend(weights, tri, vertex, lo, hi, clamp):
-    """``Σ μ_i f_i`` (k, n) of weights (3, n); clamped to the vertex range where ``clamp``."""
-    out = weights[0] * np.take(vertex[0], tri, axis=1)
-    out += weights[1] * np.take(vertex[1], tri, axis=1)
-    out += weights[2] * np.take(vertex[2], tri, axis=1)
+def _blend(weights, tri, vertex, scale, clamp, bounds):
+    """``Σ μ_i f_i`` (k, n) of weights (3, n) and per-vertex values ``vertex`` (3, k, M)
+    (stored divided by ``2**scale`` where ``scale`` is not None); clamped to the vertex
+    range ``bounds`` (lo, hi) where ``clamp``."""
+    lo, hi = bounds
+    with np.errstate(over="ignore", invalid="ignore"):  # near the float max: see ShadeTables
+        out = weights[0] * np.take(vertex[0], tri, axis=1)
+        out += weights[1] * np.take(vertex[1], tri, axis=1)
+        out += weights[2] * np.take(vertex[2], tri, axis=1)
+        if scale is not None:
+            out = np.ldexp(out, np.take(scale, tri, axis=1))
     if clamp.all():
         np.maximum(out, np.take(lo, tri, axis=1), out=out)
         np.minimum(out, np.take(hi, tri, axis=1), out=out)
