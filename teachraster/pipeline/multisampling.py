@@ -5,21 +5,31 @@ What a GPU does with MSAA, and what ``tr.render(..., samples=S)`` simulates:
 1. **coverage per sample**: every sample of every pixel is tested against every triangle
    exactly like a pixel centre (:mod:`teachraster.core.multisample`); here the span tables
    of :mod:`teachraster.pipeline.batched_fill` run once per sample, one raster line per
-   sample row, giving per (triangle, pixel row) one column interval per sample;
+   sample row, giving per (triangle, pixel row) one column interval per sample
+   (:mod:`teachraster.pipeline.sample_coverage`);
 2. **depth per sample**: each covered sample gets the triangle's depth at the sample point
    and is z-tested on its own (the buffer holds S depths per pixel);
 3. **shading once per pixel and triangle**: the attributes of a triangle are evaluated once
    per pixel it covers, at the pixel centre (extrapolated when the centre lies outside),
-   and written to every sample it wins;
+   and written to every sample it wins (:mod:`teachraster.pipeline.sample_shading`);
 4. **resolve**: the pixel's colour is the mean over its S samples, uncovered samples counting
    as the background (:meth:`~teachraster.pipeline.render_triangles.Frame.resolve`).
 
 *Simulate only what the scene calls for*: in a pixel covered wholly by one triangle and
 touched by no other, every sample has the same triangle, so no per-sample test is needed:
 the intersection of a line's S sample intervals is such "full" pixels, and only the rest
-(partly covered, or reached by two or more triangles) is expanded to samples. The
-``multisampling`` effect of the plan says for how many pixels that ran; ``force`` expands
-every pixel, with the same frame (tests/test_render_msaa.py).
+(partly covered, or reached by two or more triangles) is expanded to samples. A full
+triangle whose depth is surely below every other's over the pixel (first by the triangles'
+own depth ranges, then by the planes over the pixel square) also takes the whole pixel.
+Where samples are tested one by one, a triangle surely behind another at a sample is
+dropped there, and a sample left with one triangle needs no depth at all. The
+``multisampling`` effect of the plan says for how many pixels per-sample work ran;
+``force`` expands every pixel, with the same frame (tests/test_render_msaa.py).
+
+Like a GPU's compressed multisample surface, the frame keeps one triangle (and one
+attribute value) per pixel decided whole and single samples only where they were tested:
+:class:`SampleIds`, :class:`SampleDepths` and :class:`SampleAttributes` expand to the
+(H, W, S) arrays when ``frame.sample_*`` is first read.
 """
 
 from __future__ import annotations
