@@ -163,6 +163,53 @@ def test_attributes_once_per_pixel_at_the_centre(rng):
         np.testing.assert_allclose(frame.attrs[i, j], lam @ attrs[t], atol=1e-9)
 
 
+@pytest.mark.parametrize("samples", [4, 2, 8])
+def test_centroid_moves_uncovered_centres_like_rasterize(rng, samples):
+    """``centroid=True``: a pixel whose centre its triangle does not cover takes the
+    attributes at the covered sample nearest the centre (values in range), as
+    ``rasterize(..., centroid=True)`` does; covered centres keep their values."""
+    moved = 0
+    for index in range(30):
+        xy = rng.integers(-3, [W + 3, H + 3], (3, 2)).astype(np.float64)  # snapping is exact
+        w = rng.uniform(0.5, 3.0, 3) if index % 2 else np.ones(3)
+        attrs = rng.uniform(-1, 1, (1, 3, 2))
+        clip = clip_from_window(xy[None], rng.uniform(0.1, 0.9, 3), w)
+        frame = tr.render(clip, W, H, attrs=attrs, samples=samples, centroid=True)
+        plain = tr.render(clip, W, H, attrs=attrs, samples=samples)
+        tri = tr.Triangle(tr.to_window(clip, W, H)[0, :, :2], attrs={"a": attrs[0]}, w=w)
+        fill = tr.rasterize(tri, W, H, samples=samples, centroid=True)
+        centre = tr.rasterize(tri, W, H).coverage
+        np.testing.assert_array_equal(frame.coverage, fill.coverage)
+        np.testing.assert_allclose(frame.attrs[frame.coverage], fill.attrs["a"][fill.coverage],
+                                   rtol=0, atol=1e-9)  # fmt: skip
+        np.testing.assert_array_equal(frame.attrs[centre], plain.attrs[centre])
+        off = frame.coverage & ~centre
+        moved += off.sum()
+        lo, hi = attrs[0].min(axis=0) - 1e-12, attrs[0].max(axis=0) + 1e-12
+        assert ((frame.attrs[off] >= lo) & (frame.attrs[off] <= hi)).all()
+        assert_same(frame, tr.render(clip, W, H, attrs=attrs, samples=samples, centroid=True,
+                                     force="all"))  # fmt: skip
+    assert moved > 50
+
+
+def test_centroid_planned_equals_forced(rng):
+    for index in range(30):
+        clip, attrs, kw = random_scene(rng, index)
+        planned = tr.render(clip, W, H, attrs=attrs, samples=4, centroid=True, **kw)
+        for force in ("all", "multisampling", "attributes"):
+            forced = tr.render(clip, W, H, attrs=attrs, samples=4, centroid=True, force=force,
+                               **kw)  # fmt: skip
+            assert_same(planned, forced, f"scene {index} force={force}")
+
+
+def test_centroid_is_checked_and_ignored_with_one_sample():
+    clip = clip_from_window([[[0, 0], [4, 0], [0, 4]]], 0.5, 1.0, 4, 4)
+    with pytest.raises(TypeError, match="centroid"):
+        tr.render(clip, 4, 4, samples=4, centroid="yes")
+    one = tr.render(clip, 4, 4, attrs=np.ones((1, 3)), centroid=True)
+    np.testing.assert_array_equal(one.attrs, tr.render(clip, 4, 4, attrs=np.ones((1, 3))).attrs)
+
+
 def test_resolve_and_single_sample_frames():
     clip = clip_from_window([[[0, 0], [4, 0], [0, 4]]], 0.5, 1.0, 4, 4)
     frame = tr.render(clip, 4, 4, attrs=np.ones((1, 3, 3)), samples=4)

@@ -49,7 +49,7 @@ from .render_plan import (
     multisampling_effect,
     perspective_effect,
 )
-from .sample_coverage import sample_fragments
+from .sample_coverage import centre_covered, sample_fragments
 from .sample_shading import shade, shade_tables
 from .zbuffer import resolve
 
@@ -343,7 +343,8 @@ def _sample_entries(frags, winner, n_s, n_tri):
     """Every covered sample of the pixels not decided whole: (triangle, pixel, sample,
     pair) by pixel, then drawing order (triangle index), then sample, so at each sample
     the entries arrive in drawing order, as the z-buffer needs; and the (pixel, triangle)
-    pairs they come from, (triangle, pixel) in that order (``pair`` indexes them)."""
+    pairs they come from, (triangle, pixel, sample mask) in that order (``pair`` indexes
+    them)."""
     rest = np.flatnonzero(winner[frags.full_pixel] < 0)  # full fragments count S times
     part = np.flatnonzero(winner[frags.part_pixel] < 0)
     tri = np.concatenate([frags.full_tri[rest], frags.part_tri[part]])
@@ -353,14 +354,14 @@ def _sample_entries(frags, winner, n_s, n_tri):
     tri, pixel, mask = tri[order], pixel[order], mask[order]
     covered = (mask[:, None] & (1 << np.arange(n_s))) != 0  # (pairs, S) row-major
     pair, sample = np.divmod(np.flatnonzero(covered), n_s)
-    return (tri[pair], pixel[pair], sample, pair), (tri, pixel)
+    return (tri[pair], pixel[pair], sample, pair), (tri, pixel, mask)
 
 
 def visibility(frags, planes, unit, offsets, size, options, forced):
     """The depth buffer per sample: its triangles (:class:`SampleIds`) and depths
     (:class:`SampleDepths`), the whole pixels (flat index, triangle), the (pixel, triangle)
-    pair that won each decided sample (an index into the pairs (triangle, pixel) of the
-    pixels decided sample by sample), the number of samples where 2+ triangles met, and
+    pair that won each decided sample (an index into the pairs (triangle, pixel, sample
+    mask) of the pixels decided sample by sample), the number of samples where 2+ triangles met, and
     the trace record.
 
     ``options`` is ``(depth_test, depth_format, trace)``: with ``trace`` every entry's
@@ -454,9 +455,11 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
     the owners' per-pixel values (owner, (k, P) attributes, depth) and the evaluations.
 
     ``sample_tri`` is the frame's :class:`SampleIds`, ``decided`` = (the pair that won each
-    decided sample, the pairs (triangle, pixel)) from :func:`visibility`.
+    decided sample, the pairs (triangle, pixel, sample mask)) from :func:`visibility`.
+    ``flags`` = (force "multisampling", force "attributes", the edge set-up for centroid
+    sampling or None).
     """
-    force_ms, force_attrs = flags
+    force_ms, force_attrs, centroid = flags
     width, height = size
     n_s, n_pix = len(offsets), width * height
     k = tables.value_lo.shape[0]
@@ -464,10 +467,11 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
     pix_attrs, pix_depth = np.full((k, n_pix), np.nan), np.full(n_pix, np.nan)
     # simple pixels: one evaluation serves all samples
     sp, st = whole
-    whole_vals, dep = shade(tables, st, sp, None, offsets, width)
+    at_centroid = None if centroid is None else (centre_covered(centroid, st, sp, width), None)
+    whole_vals, dep = shade(tables, st, sp, None, offsets, width, at_centroid)
     owner[sp], pix_attrs[:, sp], pix_depth[sp] = st, whole_vals, dep
     # the other covered pixels: one evaluation per (pixel, triangle) that won a sample
-    won_pair, (pair_tri, pair_pixel) = decided
+    won_pair, (pair_tri, pair_pixel, pair_mask) = decided
     slots = sample_tri.slots  # ascending
     bits = np.bincount(won_pair, weights=1 << (slots % n_s), minlength=len(pair_tri))
     shown = np.flatnonzero(bits)  # (pixel, triangle) order
@@ -477,14 +481,21 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
     inverse = number[won_pair]  # each decided sample's pair among the shown
     tri, pix = pair_tri[shown], pair_pixel[shown]
     won = (bits[:, None] & (1 << np.arange(n_s))) != 0
+    at_centroid = None
+    if centroid is not None:  # the centre test, and the samples each triangle covers
+        covers = (pair_mask[shown, None] & (1 << np.arange(n_s))) != 0
+        at_centroid = (centre_covered(centroid, tri, pix, width), covers)
     if force_ms:  # every sample evaluates its own triangle: the same values, S times the work
-        vals, dep = shade(tables, sample_tri.tri, slots // n_s, won[inverse], offsets, width)
+        if at_centroid is not None:
+            at_centroid = (at_centroid[0][inverse], at_centroid[1][inverse])
+        vals, dep = shade(tables, sample_tri.tri, slots // n_s, won[inverse], offsets, width,
+                          at_centroid)  # fmt: skip
         first = np.full(len(shown), len(slots), dtype=np.int64)
         np.minimum.at(first, inverse, np.arange(len(slots)))
         sample_attrs = (vals, np.arange(len(slots)))
         vals, dep = vals[:, first], dep[first]
     else:
-        vals, dep = shade(tables, tri, pix, won, offsets, width)
+        vals, dep = shade(tables, tri, pix, won, offsets, width, at_centroid)
         sample_attrs = (vals, inverse)
     sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, slots // n_s,
                                     slots % n_s, *sample_attrs)  # fmt: skip
@@ -552,10 +563,10 @@ def _owners(pixel, parent, bits):
 def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
     """Fill, depth-test and shade a multisampled frame: a :class:`MultiFrame` and its effects.
 
-    ``options`` is ``(depth_test, depth_format, interpolation, trace)``; ``forced`` the
-    plan's forced effects ("multisampling" expands every pixel to samples).
+    ``options`` is ``(depth_test, depth_format, interpolation, trace, centroid)``;
+    ``forced`` the plan's forced effects ("multisampling" expands every pixel to samples).
     """
-    depth_test, depth_format, interpolation, trace = options
+    depth_test, depth_format, interpolation, trace, centroid = options
     width, height = size
     xy = window[:, :, :2]
     setup = setup_edges(xy, bits)
@@ -592,7 +603,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         clipped.parent,
         px,
         size,
-        (force_ms, "attributes" in forced),
+        (force_ms, "attributes" in forced, setup if centroid else None),
     )
     if depth_format != "float64":  # float64 stores the value as it is
         depth = quantize(depth, depth_format)

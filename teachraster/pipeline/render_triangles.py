@@ -26,6 +26,7 @@ import numpy as np
 
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
+from ..core.validate import as_bool
 from .hierarchical_z import HiZResult, hiz_stage
 from .inputs import check_render
 from .multisampling import multisample_stage
@@ -222,6 +223,7 @@ def render(
     subpixel_bits: int | None = SUBPIXEL_BITS,
     max_pixels: int | None = None,
     samples=1,
+    centroid: bool = False,
     derivatives=False,
     derivatives_where=None,
 ) -> Frame:
@@ -253,10 +255,10 @@ def render(
         Snapping precision, as in :func:`teachraster.rasterize`.
     max_pixels : int, optional
         Largest ``width * height`` (default 2**28): larger raises before allocating.
-    samples : int or (S, 2) array-like
+    samples, centroid : int or (S, 2) array-like, bool
         Multisampling (MSAA): 1, 2, 4, 8, 16 (standard patterns) or offsets in [0, 1)².
         Coverage and the depth test per sample, attributes once per pixel and triangle
-        (see :class:`Frame` and :mod:`teachraster.pipeline.multisampling`).
+        (:class:`Frame`), at the centre or (``centroid``) the covered sample nearest it.
     derivatives : bool or {"coarse", "fine"}
         Also compute ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True`` or ``"coarse"``
         (one pair per quad, as llvmpipe) or ``"fine"`` (per row / column); see
@@ -282,16 +284,15 @@ def render(
                      trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
     clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
     depth_test, trace, forced = a.depth_test, a.trace, a.forced
-    offsets = None if is_single(samples) else as_samples(samples)
+    offsets, centroid = _check_samples(samples, centroid)
     mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
 
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
     if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
-        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets,
-                                    (width, height, subpixel_bits), (depth_test, depth_format,
-                                    interpolation), forced, trace)  # fmt: skip
+        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
+                                    centroid)  # fmt: skip
     frags = fill_stage(window, width, height, subpixel_bits, culled)
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
@@ -309,15 +310,23 @@ def render(
     return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
 
 
-def _render_multisampled(clipped, window, culled, effects, offsets, grid, options, forced,
-                         trace) -> Frame:  # fmt: skip
-    """The multisampled rest of :func:`render`, after clipping, the viewport and culling."""
-    width, height, bits = grid
+def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid) -> Frame:
+    """The multisampled rest of :func:`render`, after clipping, the viewport and culling
+    (``a``: the checked arguments)."""
+    size = (a.width, a.height)
+    options = (a.depth_test, a.depth_format, a.interpolation, a.trace, centroid)
     multi, more = multisample_stage(
-        clipped, window, culled, (width, height), bits, offsets, (*options, trace), forced
+        clipped, window, culled, size, a.subpixel_bits, offsets, options, a.forced
     )
     plan = Plan((*effects, *more))
-    return _multi_frame(multi, clipped, window, culled, (width, height), plan, trace)
+    return _multi_frame(multi, clipped, window, culled, size, plan, a.trace)
+
+
+def _check_samples(samples, centroid):
+    """The sample offsets (S, 2), or None for one sample at the centre (``centroid``, a
+    bool, then changes nothing), and ``centroid``."""
+    centroid = as_bool("centroid", centroid)
+    return (None if is_single(samples) else as_samples(samples)), centroid
 
 
 def _check_derivatives(derivatives, where, n, offsets):

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.edges import passes
 from .batched_fill import flat_ranges, line_bounds
 
 #: Raster lines per block in the per-sample span pass (see :func:`sample_lines`).
@@ -218,3 +219,19 @@ def _bits(inside: np.ndarray) -> np.ndarray:
     for s in range(1, len(inside)):
         mask |= inside[s].astype(np.uint16) << np.uint16(s)
     return mask.astype(np.int64)
+
+
+def centre_covered(setup, tri: np.ndarray, pixel: np.ndarray, width: int) -> np.ndarray:
+    """(n,) bool: does triangle ``tri[i]`` cover the centre of flat pixel ``pixel[i]``?
+
+    The exact centre test of the 1-sample fill (snapped edge functions, the top-left
+    rule), for centroid sampling: a covered centre is where attributes are evaluated.
+    """
+    row, col = np.divmod(pixel, width)
+    x, y = col * setup.unit + setup.half, row * setup.unit + setup.half
+    covered = np.ones(len(tri), dtype=bool)
+    for k in range(3):
+        a, b = setup.p[tri, k], setup.p[tri, (k + 1) % 3]
+        e = (b[:, 0] - a[:, 0]) * (y - a[:, 1]) - (b[:, 1] - a[:, 1]) * (x - a[:, 0])
+        covered &= passes(e, setup.top_left[tri, k])
+    return covered

@@ -113,7 +113,7 @@ def barycentrics_at(tables: ShadeTables, tri: np.ndarray, x, y) -> np.ndarray:
 BLOCK = 16384
 
 
-def shade(tables: ShadeTables, tri, pixel, won, offsets, width):
+def shade(tables: ShadeTables, tri, pixel, won, offsets, width, centroid=None):
     """Attributes (k, n) and depth (n,) of triangles ``tri`` evaluated once for ``pixel``.
 
     At the pixel centre, extrapolated on the triangle's planes when the centre lies
@@ -122,21 +122,44 @@ def shade(tables: ShadeTables, tri, pixel, won, offsets, width):
     bool, the samples the triangle shows in that pixel (ties: lower index); ``won`` may be
     None when every triangle shows at all samples of its pixel. Runs in blocks of
     :data:`BLOCK` pixels (each row's values depend on that row alone).
+
+    ``centroid`` = (centre covered (n,) bool, covered samples (n, S) bool or None for all):
+    centroid sampling, where an uncovered centre moves to the covered sample nearest it
+    (ties: lower index), and the values there are clamped to the vertex range.
     """
     values = np.empty((tables.value_lo.shape[0], len(tri)))
     depth = np.empty(len(tri))
     for a in range(0, len(tri), BLOCK):
         b = slice(a, a + BLOCK)
+        part = None
+        if centroid is not None:
+            part = (centroid[0][b], None if centroid[1] is None else centroid[1][b])
         values[:, b], depth[b] = _shade_block(
-            tables, tri[b], pixel[b], None if won is None else won[b], offsets, width
+            tables, tri[b], pixel[b], None if won is None else won[b], offsets, width, part
         )
     return values, depth
 
 
-def _shade_block(tables: ShadeTables, tri, pixel, won, offsets, width):
+def _nearest_covered(offsets, covered):
+    """Per row of ``covered`` (n, S) bool, the covered sample nearest the pixel centre
+    (squared distance, ties to the lower index)."""
+    d = offsets - 0.5
+    order = np.argsort(d[:, 0] ** 2 + d[:, 1] ** 2, kind="stable")
+    return order[np.argmax(covered[:, order], axis=1)]
+
+
+def _shade_block(tables: ShadeTables, tri, pixel, won, offsets, width, centroid):
     """:func:`shade` of one block."""
     row, col = np.divmod(pixel, width)
     x, y = col + 0.5, row + 0.5
+    moved = None
+    if centroid is not None:  # uncovered centres move to the nearest covered sample
+        moved = ~centroid[0]
+        if moved.any():
+            cover = centroid[1]
+            cover = np.ones((len(tri), len(offsets)), bool) if cover is None else cover
+            s = _nearest_covered(offsets, cover[moved])
+            x[moved], y[moved] = col[moved] + offsets[s, 0], row[moved] + offsets[s, 1]
     lam = barycentrics_at(tables, tri, x, y)
     persp = np.take(tables.perspective, tri)
     q = lam * np.take(tables.ratio, tri, axis=1)
@@ -146,17 +169,19 @@ def _shade_block(tables: ShadeTables, tri, pixel, won, offsets, width):
     inside &= lam[1] >= 0
     inside &= lam[2] >= 0
     bad = persp & ~inside & ~(total > 0)
+    if moved is not None:  # already at a covered sample: clamped, like a covered centre
+        bad &= ~moved
     if bad.any():  # the plane of 1/w crosses zero before the centre: use a covered sample
         if won is None:
             won = np.ones((len(tri), len(offsets)), dtype=bool)
-        d = offsets - 0.5
-        order = np.argsort(d[:, 0] ** 2 + d[:, 1] ** 2, kind="stable")
-        s = order[np.argmax(won[bad][:, order], axis=1)]
+        s = _nearest_covered(offsets, won[bad])
         x[bad], y[bad] = col[bad] + offsets[s, 0], row[bad] + offsets[s, 1]
         lam[:, bad] = barycentrics_at(tables, tri[bad], x[bad], y[bad])
         q[:, bad] = lam[:, bad] * tables.ratio[:, tri[bad]]
         total[bad] = q[0, bad] + q[1, bad] + q[2, bad]
         inside = (lam[0] >= 0) & (lam[1] >= 0) & (lam[2] >= 0)
+    if moved is not None:
+        inside |= moved
     with np.errstate(divide="ignore", invalid="ignore"):  # rows fixed just below
         if persp.all():
             weights = np.divide(q, total, out=q)
