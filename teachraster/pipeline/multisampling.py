@@ -50,7 +50,7 @@ from .render_plan import (
     perspective_effect,
 )
 from .sample_coverage import centre_covered, sample_fragments
-from .sample_shading import shade, shade_tables
+from .sample_shading import BLOCK, shade, shade_tables
 from .zbuffer import resolve
 
 
@@ -289,16 +289,19 @@ class SampleDepths:
 
     def __call__(self) -> np.ndarray:
         height, width, n_s = self.shape
-        out = np.full(height * width * n_s, np.nan)
+        out = np.full((height * width, n_s), np.nan)
         pixel, sample = np.divmod(self.slots, n_s)
         args = (self.planes, self.unit, self.offsets, width, self.depth_format)
-        out[self.slots] = _entry_depths(*args, self.tri, pixel, sample)
-        out = out.reshape(height * width, n_s)
-        wr, wc = np.divmod(self.whole_pixel, width)
-        x, y = wc[:, None] + self.offsets[:, 0], wr[:, None] + self.offsets[:, 1]
-        out[self.whole_pixel] = quantize(
-            plane_depth(self.planes, self.unit, self.whole_tri, x, y), self.depth_format
-        )
+        out.reshape(-1)[self.slots] = _entry_depths(*args, self.tri, pixel, sample)
+        ox, oy = self.offsets[:, 0], self.offsets[:, 1]
+        for a in range(0, len(self.whole_pixel), BLOCK):  # blocks: temporaries stay in cache
+            b = slice(a, a + BLOCK)
+            wr, wc = np.divmod(self.whole_pixel[b], width)
+            d = plane_depth(self.planes, self.unit, self.whole_tri[b], wc[:, None] + ox,
+                            wr[:, None] + oy)  # fmt: skip
+            if self.depth_format != "float64":  # float64 stores the value as it is
+                d = quantize(d, self.depth_format)
+            out[self.whole_pixel[b]] = d
         return out.reshape(self.shape)
 
 
@@ -319,8 +322,10 @@ class SampleAttributes:
 
     def __call__(self) -> np.ndarray:
         height, width, n_s, k = self.shape
-        out = np.full((height * width, n_s, k), np.nan)
-        out[self.whole_pixel] = self.whole_values.T[:, None, :]
+        one = np.full((height * width, 1, k), np.nan)  # one value per pixel, then S copies
+        for j in range(k):
+            one[self.whole_pixel, 0, j] = self.whole_values[j]
+        out = np.repeat(one, n_s, axis=1)
         out[self.pixel, self.sample] = self.values.T[self.pair]
         return out.reshape(self.shape)
 
