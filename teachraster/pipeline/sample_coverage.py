@@ -161,9 +161,20 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     ``setup`` is the batch's edge set-up (window positions), ``live`` (M,) the triangles to
     draw, ``units`` (S, 2) the sample offsets on the internal grid. The columns where every
     sample's interval overlaps are *full* pixels; the rest of the union is kept with its
-    sample masks. With ``force`` no pixel is taken as full.
+    sample masks. With ``force`` no pixel is taken as full. Lines are handled in blocks of
+    :data:`BLOCK` (the work arrays stay in cache); full pixels stay in drawing order.
     """
     owner, rows, lo, hi = sample_lines(setup, live, units, width, height)
+    parts = [
+        _line_fragments(owner[b], rows[b], lo[:, b], hi[:, b], width, force)
+        for b in (slice(a, a + BLOCK) for a in range(0, len(rows), BLOCK))
+    ] or [_line_fragments(owner, rows, lo, hi, width, force)]
+    return SampleFragments(*(np.concatenate(field) for field in zip(*parts)), len(units))
+
+
+def _line_fragments(owner, rows, lo, hi, width: int, force: bool):
+    """:func:`sample_fragments` of some lines: full (pixel, triangle), then partial
+    (pixel, triangle, sample mask)."""
     covered = hi >= lo
     union_lo = np.where(covered, lo, width).min(axis=0, initial=width)
     union_hi = np.where(covered, hi, -1).max(axis=0, initial=-1)
@@ -182,22 +193,13 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     l_line, l_col = _runs(union_lo, np.maximum(left_stop, union_lo), line)
     r_line, r_col = _runs(right_lo, np.maximum(right_stop, right_lo), line)
     p_line, p_col = np.concatenate([l_line, r_line]), np.concatenate([l_col, r_col])
-    mask = np.empty(len(p_line), dtype=np.int64)
-    for a in range(0, len(p_line), BLOCK):  # blocks: the (S, block) tests stay in cache
-        b = slice(a, a + BLOCK)
-        inside = np.take(lo, p_line[b], axis=1) <= p_col[b]  # each sample's interval
-        inside &= p_col[b] <= np.take(hi, p_line[b], axis=1)
-        mask[b] = _bits(inside)
+    inside = np.take(lo, p_line, axis=1) <= p_col  # (S, p): each sample's interval
+    inside &= p_col <= np.take(hi, p_line, axis=1)
+    mask = _bits(inside)
     keep = np.flatnonzero(mask)  # the union may have gaps: those columns drop out
     p_line, p_col = p_line[keep], p_col[keep]
-    return SampleFragments(
-        full_pixel=full_pixel,
-        full_tri=full_tri,
-        part_pixel=np.take(start, p_line) + p_col,
-        part_tri=np.take(owner, p_line),
-        part_mask=mask[keep],
-        n_samples=len(units),
-    )
+    return (full_pixel, full_tri, np.take(start, p_line) + p_col, np.take(owner, p_line),
+            mask[keep])  # fmt: skip
 
 
 def _runs(starts, stops, tags):
