@@ -84,14 +84,15 @@ def _lines(setup, live, height):
     return owner, rows, ymin[owner], ymax[owner]
 
 
-def sample_lines(setup, live, units, width: int, height: int):
-    """Raster lines (owner, row) and each sample's column interval lo..hi (S, L).
+def line_samples(setup, lines, units, width: int):
+    """Each sample's column interval lo..hi (S, L) on ``lines`` (owner, row, ymin, ymax).
 
-    ``hi < lo`` where the sample row misses the triangle (one row per sample, contiguous). Identical to running
-    :func:`~teachraster.pipeline.batched_fill.line_bounds` once per sample (which the
-    unsnapped, float path does); on the exact grid the S passes share their gathers.
+    ``hi < lo`` where the sample row misses the triangle (one row per sample, contiguous).
+    Identical to running :func:`~teachraster.pipeline.batched_fill.line_bounds` once per
+    sample (which the unsnapped, float path does); on the exact grid the S passes share
+    their gathers.
     """
-    owner, rows, ymin, ymax = _lines(setup, live, height)
+    owner, rows, ymin, ymax = lines
     lo = np.empty((len(units), len(rows)), dtype=np.int64)
     hi = np.empty_like(lo)
     if not setup.exact:
@@ -100,18 +101,16 @@ def sample_lines(setup, live, units, width: int, height: int):
             l_s, h_s, ok = line_bounds(setup, owner, y, ox, width)
             ok &= (y >= ymin) & (y <= ymax)  # the sample row crosses the triangle
             lo[s], hi[s] = l_s, np.where(ok, h_s, l_s - 1)
-        return owner, rows, lo, hi
+        return lo, hi
     lo[:], hi[:] = 0, width - 1
     ok = np.ones(lo.shape, dtype=bool)
     for s, (_, oy) in enumerate(units.tolist()):  # the sample row crosses the triangle
         y = rows * setup.unit + oy
         ok[s] = (y >= ymin) & (y <= ymax)
-    for a in range(0, len(rows), BLOCK):  # blocks of lines: the temporaries stay in cache
-        b = slice(a, a + BLOCK)
-        for k in range(3):
-            _edge_samples(setup, k, owner[b], rows[b], units, (lo[:, b], hi[:, b], ok[:, b]))
+    for k in range(3):
+        _edge_samples(setup, k, owner, rows, units, (lo, hi, ok))
     np.putmask(hi, ~ok, lo - 1)
-    return owner, rows, lo, hi
+    return lo, hi
 
 
 def _edge_samples(setup, k, owner, rows, units, out):
@@ -164,11 +163,12 @@ def sample_fragments(setup, live, units, width: int, height: int, force: bool) -
     sample masks. With ``force`` no pixel is taken as full. Lines are handled in blocks of
     :data:`BLOCK` (the work arrays stay in cache); full pixels stay in drawing order.
     """
-    owner, rows, lo, hi = sample_lines(setup, live, units, width, height)
-    parts = [
-        _line_fragments(owner[b], rows[b], lo[:, b], hi[:, b], width, force)
-        for b in (slice(a, a + BLOCK) for a in range(0, len(rows), BLOCK))
-    ] or [_line_fragments(owner, rows, lo, hi, width, force)]
+    lines = _lines(setup, live, height)
+    parts = []
+    for a in range(0, max(len(lines[0]), 1), BLOCK):  # blocks: the work stays in cache
+        block = tuple(x[a : a + BLOCK] for x in lines)
+        lo, hi = line_samples(setup, block, units, width)
+        parts.append(_line_fragments(block[0], block[1], lo, hi, width, force))
     return SampleFragments(*(np.concatenate(field) for field in zip(*parts)), len(units))
 
 
