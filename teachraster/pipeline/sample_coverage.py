@@ -23,7 +23,7 @@ import numpy as np
 from ..core.edges import passes
 from .batched_fill import flat_ranges, line_bounds
 
-#: Raster lines per block in the per-sample span pass (see :func:`sample_lines`).
+#: Raster lines per block in the per-sample span pass (see :func:`sample_fragments`).
 BLOCK = 16384
 
 
