@@ -13,7 +13,7 @@ from test_plan import random_scene
 from test_render import H, W, clip_from_window, random_clip
 
 import teachraster as tr
-from teachraster.pipeline.multisampling import owners
+from teachraster.pipeline.multisampling import _owners, owners
 from teachraster.pipeline.render_plan import FORCEABLE
 from teachraster.pipeline.scenes import SCENES, get_scene
 
@@ -126,6 +126,24 @@ def test_owner_most_samples_ties_earlier():
             assert frame.attrs[i, j, 0] == 1.0 + frame.triangle_id[i, j]
 
 
+def test_pair_owners_decide_like_sample_owners(rng):
+    """``_owners`` (per (pixel, triangle) pair and its sample mask, as the renderer keeps
+    them) picks the owner ``owners`` picks from the samples, and the piece at its lowest
+    sample when clipping split the input triangle."""
+    for _ in range(300):
+        n_s = int(rng.choice([2, 4, 8, 16]))
+        parent = np.sort(rng.integers(0, 4, 7))  # clipping keeps pieces in input order
+        sub = rng.integers(-1, 7, (int(rng.integers(1, 6)), n_s))
+        sub[:, 0] = np.maximum(sub[:, 0], 0)  # every pixel shows something
+        pixel, tri = np.nonzero((sub[:, :, None] == np.arange(7)).any(axis=1))
+        bits = ((sub[pixel] == tri[:, None]) << np.arange(n_s)).sum(axis=1)
+        pixels, own = _owners(pixel, parent[tri], bits)
+        want, first = owners(np.where(sub >= 0, parent[np.maximum(sub, 0)], -1))
+        np.testing.assert_array_equal(pixels, np.arange(len(sub)))
+        np.testing.assert_array_equal(parent[tri[own]], want)
+        np.testing.assert_array_equal(tri[own], sub[np.arange(len(sub)), first])
+
+
 def test_attributes_once_per_pixel_at_the_centre(rng):
     clip = random_clip(rng, 6, equal_w=True)
     attrs = rng.uniform(0, 1, (6, 3, 2))
@@ -143,6 +161,53 @@ def test_attributes_once_per_pixel_at_the_centre(rng):
         t = frame.triangle_id[i, j]
         lam = tr.barycentric(win[t, :, :2], [j + 0.5, i + 0.5])
         np.testing.assert_allclose(frame.attrs[i, j], lam @ attrs[t], atol=1e-9)
+
+
+@pytest.mark.parametrize("samples", [4, 2, 8])
+def test_centroid_moves_uncovered_centres_like_rasterize(rng, samples):
+    """``centroid=True``: a pixel whose centre its triangle does not cover takes the
+    attributes at the covered sample nearest the centre (values in range), as
+    ``rasterize(..., centroid=True)`` does; covered centres keep their values."""
+    moved = 0
+    for index in range(30):
+        xy = rng.integers(-3, [W + 3, H + 3], (3, 2)).astype(np.float64)  # snapping is exact
+        w = rng.uniform(0.5, 3.0, 3) if index % 2 else np.ones(3)
+        attrs = rng.uniform(-1, 1, (1, 3, 2))
+        clip = clip_from_window(xy[None], rng.uniform(0.1, 0.9, 3), w)
+        frame = tr.render(clip, W, H, attrs=attrs, samples=samples, centroid=True)
+        plain = tr.render(clip, W, H, attrs=attrs, samples=samples)
+        tri = tr.Triangle(tr.to_window(clip, W, H)[0, :, :2], attrs={"a": attrs[0]}, w=w)
+        fill = tr.rasterize(tri, W, H, samples=samples, centroid=True)
+        centre = tr.rasterize(tri, W, H).coverage
+        np.testing.assert_array_equal(frame.coverage, fill.coverage)
+        np.testing.assert_allclose(frame.attrs[frame.coverage], fill.attrs["a"][fill.coverage],
+                                   rtol=0, atol=1e-9)  # fmt: skip
+        np.testing.assert_array_equal(frame.attrs[centre], plain.attrs[centre])
+        off = frame.coverage & ~centre
+        moved += off.sum()
+        lo, hi = attrs[0].min(axis=0) - 1e-12, attrs[0].max(axis=0) + 1e-12
+        assert ((frame.attrs[off] >= lo) & (frame.attrs[off] <= hi)).all()
+        assert_same(frame, tr.render(clip, W, H, attrs=attrs, samples=samples, centroid=True,
+                                     force="all"))  # fmt: skip
+    assert moved > 50
+
+
+def test_centroid_planned_equals_forced(rng):
+    for index in range(30):
+        clip, attrs, kw = random_scene(rng, index)
+        planned = tr.render(clip, W, H, attrs=attrs, samples=4, centroid=True, **kw)
+        for force in ("all", "multisampling", "attributes"):
+            forced = tr.render(clip, W, H, attrs=attrs, samples=4, centroid=True, force=force,
+                               **kw)  # fmt: skip
+            assert_same(planned, forced, f"scene {index} force={force}")
+
+
+def test_centroid_is_checked_and_ignored_with_one_sample():
+    clip = clip_from_window([[[0, 0], [4, 0], [0, 4]]], 0.5, 1.0, 4, 4)
+    with pytest.raises(TypeError, match="centroid"):
+        tr.render(clip, 4, 4, samples=4, centroid="yes")
+    one = tr.render(clip, 4, 4, attrs=np.ones((1, 3)), centroid=True)
+    np.testing.assert_array_equal(one.attrs, tr.render(clip, 4, 4, attrs=np.ones((1, 3))).attrs)
 
 
 def test_resolve_and_single_sample_frames():

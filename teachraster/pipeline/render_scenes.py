@@ -69,7 +69,7 @@ def render_scene(
     """Render ``scene`` through ``camera`` (default: the scene's own) and shade it.
 
     Other keyword arguments (``depth_test``, ``cull``, ``depth_format``, ``interpolation``,
-    ``trace``, ``subpixel_bits``, ``samples``) go to
+    ``trace``, ``subpixel_bits``, ``samples``, ``centroid``) go to
     :func:`teachraster.pipeline.render_triangles.render`; ``max_pixels`` (default 2**28) caps
     ``width * height`` there too, checked before the scene is projected. With ``samples`` > 1
     the image is the MSAA resolve: every sample shows its triangle's colour (shaded once per

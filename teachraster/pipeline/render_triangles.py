@@ -23,12 +23,13 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
+from ..core.validate import as_bool
 from .hierarchical_z import HiZResult, replay_stage
 from .hiz_tiles import HiZCut, HiZTiles
 from .inputs import check_render
@@ -97,6 +98,31 @@ class RenderTrace:
     hiz_tiles: HiZTiles | None = None
 
 
+class _OnFirstUse:
+    """A :class:`Frame` field that may be given as a zero-argument callable, called (once)
+    when the field is first read: the large per-sample arrays of a multisampled frame
+    (S ids, depths and attribute vectors per pixel) are only built if someone reads them.
+
+    A data descriptor as a dataclass default: the dataclass's ``__init__`` stores through
+    ``__set__``, and the class-level read (``instance is None``) gives the default, None.
+    """
+
+    def __set_name__(self, owner, name):
+        self.key = "_" + name
+
+    def __get__(self, instance, owner=None):
+        if instance is None:
+            return None
+        value = instance.__dict__[self.key]
+        if callable(value):
+            value = value()
+            instance.__dict__[self.key] = value
+        return value
+
+    def __set__(self, instance, value):
+        instance.__dict__[self.key] = value
+
+
 @dataclass(frozen=True)
 class Frame:
     """The result of :func:`render`.
@@ -122,6 +148,12 @@ class Frame:
     sample_attrs : (H, W, S, k) float64 or None
         The attributes each sample holds: those of its triangle, evaluated once per pixel
         (at the centre, extrapolated when outside), NaN where uncovered.
+
+        The three per-sample arrays are kept compressed, as GPUs keep a multisampled
+        surface: one triangle (depth plane, attribute value) per pixel decided whole, and
+        single samples only where the per-sample test ran. Each array is expanded on
+        first read (then kept), so a render that only needs the per-pixel results, or
+        only the ids, never builds the others.
     samples : (S, 2) float64 or None
         The sample offsets inside the pixel as tested, in px.
     ddx, ddy : (H, W, k) float64 or None
@@ -134,9 +166,9 @@ class Frame:
     depth: np.ndarray
     plan: Plan
     trace: RenderTrace | None = None
-    sample_triangle_id: np.ndarray | None = None
-    sample_depth: np.ndarray | None = None
-    sample_attrs: np.ndarray | None = None
+    sample_triangle_id: np.ndarray | None = _OnFirstUse()
+    sample_depth: np.ndarray | None = _OnFirstUse()
+    sample_attrs: np.ndarray | None = _OnFirstUse()
     samples: np.ndarray | None = None
     ddx: np.ndarray | None = None
     ddy: np.ndarray | None = None
@@ -200,6 +232,7 @@ def render(
     subpixel_bits: int | None = SUBPIXEL_BITS,
     max_pixels: int | None = None,
     samples=1,
+    centroid: bool = False,
     derivatives=False,
     derivatives_where=None,
 ) -> Frame:
@@ -231,10 +264,10 @@ def render(
         Snapping precision, as in :func:`teachraster.rasterize`.
     max_pixels : int, optional
         Largest ``width * height`` (default 2**28): larger raises before allocating.
-    samples : int or (S, 2) array-like
+    samples, centroid : int or (S, 2) array-like, bool
         Multisampling (MSAA): 1, 2, 4, 8, 16 (standard patterns) or offsets in [0, 1)².
         Coverage and the depth test per sample, attributes once per pixel and triangle
-        (see :class:`Frame` and :mod:`teachraster.pipeline.multisampling`).
+        (:class:`Frame`), at the centre or (``centroid``) the covered sample nearest it.
     derivatives : bool or {"coarse", "fine"}
         Also compute ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True`` or ``"coarse"``
         (one pair per quad, as llvmpipe) or ``"fine"`` (per row / column); see
@@ -260,16 +293,15 @@ def render(
                      trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
     clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
     depth_test, trace, forced = a.depth_test, a.trace, a.forced
-    offsets = None if is_single(samples) else as_samples(samples)
+    offsets, centroid = _check_samples(samples, centroid)
     mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
 
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
     if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
-        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets,
-                                    (width, height, subpixel_bits), (depth_test, depth_format,
-                                    interpolation), forced, trace)  # fmt: skip
+        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
+                                    centroid)  # fmt: skip
     frags, cut = _fill(window, culled, a)  # with Hi-Z: hidden blocks never become fragments
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
@@ -334,15 +366,23 @@ def _hi_z_effects(result, n_fragments, effects, visible, forced):
     return hi_z, depth_testing, attributes
 
 
-def _render_multisampled(clipped, window, culled, effects, offsets, grid, options, forced,
-                         trace) -> Frame:  # fmt: skip
-    """The multisampled rest of :func:`render`, after clipping, the viewport and culling."""
-    width, height, bits = grid
+def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid) -> Frame:
+    """The multisampled rest of :func:`render`, after clipping, the viewport and culling
+    (``a``: the checked arguments)."""
+    size = (a.width, a.height)
+    options = (a.depth_test, a.depth_format, a.interpolation, a.trace, centroid)
     multi, more = multisample_stage(
-        clipped, window, culled, (width, height), bits, offsets, options, forced
+        clipped, window, culled, size, a.subpixel_bits, offsets, options, a.forced
     )
     plan = Plan((*effects, *more))
-    return _multi_frame(multi, clipped, window, culled, (width, height), plan, trace)
+    return _multi_frame(multi, clipped, window, culled, size, plan, a.trace)
+
+
+def _check_samples(samples, centroid):
+    """The sample offsets (S, 2), or None for one sample at the centre (``centroid``, a
+    bool, then changes nothing), and ``centroid``."""
+    centroid = as_bool("centroid", centroid)
+    return (None if is_single(samples) else as_samples(samples)), centroid
 
 
 def _check_derivatives(derivatives, where, n, offsets):
@@ -396,15 +436,23 @@ def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=Non
 def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
     """The :class:`Frame` of a multisampled render (input triangle ids, (H, W, ...) images)."""
     width, height = size
-    n_s, k = len(multi.offsets), clipped.attrs.shape[2]
+    k = clipped.attrs.shape[2]
+
+    parent = clipped.parent  # input ids (None: nothing was clipped, the same ids)
+    if np.array_equal(parent, np.arange(len(parent))):
+        parent = None
 
     def ids(sub):  # input triangle ids (-1 stays -1; -1 also when nothing survived clipping)
-        parent = np.r_[clipped.parent, -1]  # index -1 reads the appended -1
-        return parent[sub]
+        return sub if parent is None else np.r_[parent, -1][sub]
 
     record = None
     if trace:  # the per-sample entries in drawing order, then the pixels decided whole
-        r = multi.record
+        r = dict(multi.record)
+        slot = r["pixel"] * len(multi.offsets) + r["sample"]
+        order = np.argsort(slot * r["n_tri"] + r["tri"])  # by sample, drawing order inside
+        for name in ("tri", "pixel", "sample", "depth"):
+            r[name] = r[name][order]
+        r["slot"] = slot[order]
         tri = np.concatenate([r["tri"], r["whole_tri"]])
         row, col = np.divmod(np.concatenate([r["pixel"], r["whole_pixel"]]), width)
         record = RenderTrace(
@@ -420,13 +468,13 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         )  # fmt: skip
     return Frame(
         triangle_id=ids(multi.owner).reshape(height, width),
-        attrs=multi.attrs.reshape(height, width, k),
+        attrs=multi.attrs.reshape(k, height, width).transpose(1, 2, 0),
         depth=multi.depth.reshape(height, width),
         plan=plan,
         trace=record,
-        sample_triangle_id=ids(multi.sample_tri).reshape(height, width, n_s),
-        sample_depth=multi.sample_depth.reshape(height, width, n_s),
-        sample_attrs=multi.sample_attrs.reshape(height, width, n_s, k),
+        sample_triangle_id=replace(multi.sample_tri, parent=parent),  # built on first read
+        sample_depth=multi.sample_depth,  # built on first read
+        sample_attrs=multi.sample_attrs,
         samples=multi.offsets,
     )
 
