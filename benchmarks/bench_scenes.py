@@ -20,6 +20,11 @@
 4. Depth complexity: the same number of fragments as L layers of quads stacked on one spot,
    L = 16 ... 4096 (256×256); the z-buffer resolves in one pass, so the time must stay flat
    (target: slowest / fastest <= 2×), with llvmpipe beside it.
+5. Hi-Z: the planned render against the same render with Hi-Z switched off (the hook
+   patched out), timed in turn, on the depth-complexity sweep, the overlap scenes at
+   640×480 and 1920×1080 and the sphere; with the fragments Hi-Z rejected (planned and
+   forced) and whether the plan ran it (target: faster wherever it runs, and no slower
+   where it is skipped).
 """
 
 from __future__ import annotations
@@ -245,17 +250,20 @@ def bench_depth_complexity(size: int, repeat: int, sweep) -> None:
         "stacked L deep"
     )
     print(
-        f"  {'layers':>7}{'triangles':>11}{'fragments':>12}{'ours':>10}{'(cpu)':>9}"
+        f"  {'layers':>7}{'triangles':>11}{'fragments':>12}{'ours':>10}{'(cpu)':>9}{'no Hi-Z':>10}"
         f"{'llvmpipe':>10}{'ratio':>8}"
     )
     # Every layer count (ours and llvmpipe) is timed in one rotation, so the load of a
     # shared machine falls on all of them alike and the spread measures the renderer.
     clips = [stacked_quads(layers, size) for layers in sweep]
     fns = [lambda c=c: tr.render(c, size, size) for c in clips]
+    fns += [lambda c=c: _without_hiz(c, size, size) for c in clips]
     if ok:
         fns += [lambda c=c: gl_render(c, size, size) for c in clips]
     times = in_turn(fns, repeat)
     ours = [statistics.median(t) for t in times[: len(clips)]]
+    no_hiz = [statistics.median(t) for t in times[len(clips) : 2 * len(clips)]]
+    times = times[: len(clips)] + times[2 * len(clips) :]
     cpu = [cpu_seconds(fn, repeat) for fn in fns[: len(clips)]]
     for i, (layers, clip) in enumerate(zip(sweep, clips)):
         fragments = len(tr.render(clip, size, size, trace=True).trace.fragment_row)
@@ -266,14 +274,70 @@ def bench_depth_complexity(size: int, repeat: int, sweep) -> None:
             ratio = f"{pair_ratio(times[i], gl_times):7.1f}x"
         print(
             f"  {layers:>7}{len(clip):>11,}{fragments:>12,}"
-            f"{ours[i] * 1e3:>8.1f}ms{cpu[i] * 1e3:>7.1f}ms{gl}{ratio}"
+            f"{ours[i] * 1e3:>8.1f}ms{cpu[i] * 1e3:>7.1f}ms{no_hiz[i] * 1e3:>8.1f}ms{gl}{ratio}"
         )
     spread = max(ours) / min(ours)
     verdict = "PASS" if spread <= FLAT_TARGET else "MISS"
     print(f"  slowest / fastest (ours)    {spread:8.2f}x   target <= {FLAT_TARGET}  {verdict}")
     print(f"  the same in CPU time        {max(cpu) / min(cpu):8.2f}x   (less sensitive to load)")
+    flat = max(no_hiz) / min(no_hiz)
+    print(
+        f"  the same without Hi-Z       {flat:8.2f}x   target <= {FLAT_TARGET}  "
+        f"{'PASS' if flat <= FLAT_TARGET else 'MISS'}  (the one-pass z-buffer alone: Hi-Z makes "
+        "the shallow stacks faster, see section 5)"
+    )
     if not ok:
         print(f"  llvmpipe                    skipped: {why}")
+
+
+def _without_hiz(clip, width, height, **kw):
+    """``tr.render`` with the Hi-Z hook patched out: the frame is the same, only the work
+    differs (what the render would cost without Hi-Z)."""
+    from unittest import mock
+
+    import teachraster.pipeline.render_triangles as rt
+
+    with mock.patch.object(rt, "HiZCut", lambda *a, **k: None):
+        return tr.render(clip, width, height, **kw)
+
+
+def hiz_cases(quick: bool):
+    """(name, clip, width, height, attrs) of section 5."""
+    sweep = (16, 256, 4096) if quick else (16, 64, 256, 1024, 4096)
+    cases = [(f"{n} stacked layers 256²", stacked_quads(n, 256), 256, 256, None) for n in sweep]
+    sizes = [(160, 120)] if quick else [(640, 480), (1920, 1080)]
+    for name in ("cube", "cyclic_overlap", "intersecting_triangles", "uv_sphere"):
+        scene = tr.get_scene(name)
+        for w, h in sizes:
+            cases.append((f"{name} {w}x{h}", scene.clip(w / h), w, h, None))
+    if not quick:
+        clip, uv = sphere_scene()
+        cases.append(("sphere 20k 1024²", clip, 1024, 1024, uv))
+    return cases
+
+
+def bench_hiz(repeat: int, quick: bool) -> None:
+    """Section 5: planned (with Hi-Z where the plan runs it) against Hi-Z switched off."""
+    print("\n5. Hi-Z: the planned render against Hi-Z switched off (timed in turn)")
+    print(
+        f"  {'scene':<34}{'fragments':>11}{'rejected':>10}{'(forced)':>10}"
+        f"{'planned':>10}{'off':>10}{'ratio':>7}  plan"
+    )
+    for name, clip, width, height, attrs in hiz_cases(quick):
+        plan = tr.render(clip, width, height, attrs=attrs).plan["hi_z"]
+        forced = tr.render(clip, width, height, attrs=attrs, force="hi_z").plan["hi_z"]
+        on, off = in_turn(
+            [
+                lambda c=clip, w=width, h=height, a=attrs: tr.render(c, w, h, attrs=a),
+                lambda c=clip, w=width, h=height, a=attrs: _without_hiz(c, w, h, attrs=a),
+            ],
+            repeat,
+        )
+        print(
+            f"  {name:<34}{plan.total:>11,}{plan.count:>10,}{forced.count:>10,}"
+            f"{statistics.median(on) * 1e3:>8.1f}ms{statistics.median(off) * 1e3:>8.1f}ms"
+            f"{pair_ratio(on, off):>7.2f}  {'ran' if plan.ran else 'skipped'}"
+        )
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -290,6 +354,7 @@ def main(argv: list[str] | None = None) -> int:
     bench_clipped(256, 2000 if args.quick else 20_000, repeat)
     sweep = (16, 256, 4096) if args.quick else (16, 64, 256, 1024, 4096)
     bench_depth_complexity(256, repeat, sweep)
+    bench_hiz(max(repeat, 3) if args.quick else repeat * 2, args.quick)
     return 0
 
 

@@ -11,7 +11,9 @@ per-round ratios, so a change of machine load during the run slows both alike):
 
 1. The 1024×1024 single-triangle fill of ``bench_fill.py`` (half the image covered, w = [1,
    2, 4], three attributes): the coverage walk alone (the core's ``fill`` of each method on
-   the same set-up), ``tr.rasterize`` without attributes, and ``tr.rasterize`` with them.
+   the same set-up), ``tr.rasterize`` without attributes, and ``tr.rasterize`` with them
+   (where the tiled fill also shades the cells its walk left whole as blocks,
+   :mod:`teachraster.core.block_shading`, while the others shade pixel by pixel).
    Target: ``method="tiled"`` faster than ``"halfplane"`` (accepted blocks skip their pixel
    tests). The block counters are printed next to the times.
 2. Other block sizes on the same triangle: how the hierarchy trades block tests for pixel

@@ -277,3 +277,41 @@ def test_fuzz_snap(xy, bits):
             finite = np.isfinite(out)
             assert (np.abs(out[finite] - np.asarray(xy if name == "xy" else XY, float)[finite])
                     <= 0.5).all()  # fmt: skip
+
+
+# -- the smaller public functions: one random argument each, the others valid ----------------
+_XY = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]
+_TEX = np.zeros((8, 8, 3))
+SMALL = {
+    "edge_function": {"a": [0, 0], "b": [4, 0], "p": [1, 1]},
+    "barycentric": {"xy": _XY, "points": [[1, 1]]},
+    "plane_equation": {"xy": _XY, "f": [1, 2, 3]},
+    "setup_matrix": {"xy": _XY},
+    "attribute_plane": {"xy": _XY, "f": [1, 2, 3]},
+    "perspective_weights": {"lam": [[0.2, 0.3, 0.5]], "w": [1, 2, 3]},
+    "quantize": {"depth": [0.5], "fmt": "unorm16"},
+    "window_depth": {"z_view": [2.0], "near": 1.0, "far": 10.0},
+    "depth_resolution": {"z": [2.0], "near": 1.0, "far": 10.0, "fmt": "unorm16"},
+    "fights": {"z_a": [2.0], "z_b": [2.1], "near": 1.0, "far": 10.0, "fmt": "unorm16"},
+    "mip_level": {"ddx": [[1.0, 0.0]], "ddy": [[0.0, 1.0]], "texture_shape": (8, 8)},
+    "texel_error": {"uv_a": [[0.5, 0.5]], "uv_b": [[0.5, 0.6]], "shape": (8, 8)},
+    "sample": {"texture": _TEX, "uv": [[0.5, 0.5]]},
+    "to_window": {"clip": [[[0, 0, 0, 1]] * 3], "width": 8, "height": 8},
+    "clip_triangles": {"clip": [[[0, 0, 0, 1.0]] * 3], "attrs": np.zeros((1, 3, 0))},
+    "sample_pattern": {"n": 4},
+    "look_at": {"eye": [0, 0, 1], "target": [0, 0, 0]},
+    "perspective": {"fov_y": 60, "aspect": 1.0, "near": 0.1, "far": 10},
+    "rasterize_batch": {"xy": [_XY, _XY], "width": 8, "height": 8},
+}
+SMALL_CASES = [(f, p) for f, args in SMALL.items() for p in args]
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data(), case=st.sampled_from(SMALL_CASES))
+def test_fuzz_small_public_functions(data, case):
+    """Every exported helper: a random value for one argument gives an error naming it (or a
+    result), never a raw numpy error, an OverflowError or a warning."""
+    func, name = case
+    kwargs = dict(SMALL[func])
+    kwargs[name] = data.draw(anything(np.shape(kwargs[name]), bound=1e308), label=name)
+    outcome(lambda: getattr(tr, func)(**kwargs), name)

@@ -165,6 +165,11 @@ def test_plot_early_z_counts_per_pixel(ax):
     art = tp.plot_early_z(ax, frame, "shaded")
     assert f"{c['shaded']:,} fragments shaded" in ax.get_title()
     assert art.colorbar is not None
+    forced = tr.render(get_scene("cube").clip(4 / 3), 160, 120, trace=True, force="hi_z")
+    dropped = tp.early_z_counts(forced, "dropped")
+    assert dropped.sum() == forced.plan["hi_z"].count > 0
+    tp.plot_early_z(ax, forced, "dropped")
+    assert "dropped by render's Hi-Z" in ax.get_title()
     with pytest.raises(ValueError, match="trace=True"):
         tp.early_z_counts(tr.render(clip, 80, 60))
     with pytest.raises(ValueError, match="kind"):

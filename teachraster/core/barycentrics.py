@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from .edges import EdgeSetup, edge_values_at
-from .validate import as_finite, as_real
+from .validate import as_finite
 
 
 def barycentric(xy, points) -> np.ndarray:
@@ -39,7 +39,7 @@ def barycentric(xy, points) -> np.ndarray:
            [1.  , 0.  , 0.  ]])
     """
     v = as_finite("xy", xy, (3, 2))
-    p = as_real("points", points)
+    p = as_finite("points", points, None)
     if p.shape[-1:] != (2,):
         raise ValueError(f"points must have shape (..., 2), got {p.shape}")
     (ax, ay), (bx, by), (cx, cy) = v
@@ -61,7 +61,16 @@ def barycentric_pixels(setup: EdgeSetup, rows: np.ndarray, cols: np.ndarray) -> 
     correctly-rounded division: weights are in [0, 1] inside coverage and sum to 1 within
     a few ulps.
     """
-    e = edge_values_at(setup, rows, cols).astype(np.float64)
+    return barycentric_from_edges(setup, edge_values_at(setup, rows, cols))
+
+
+def barycentric_from_edges(setup: EdgeSetup, e: np.ndarray) -> np.ndarray:
+    """Barycentrics (n, 3), original vertex order, from edge values E (n, 3) of ``setup``.
+
+    However E was obtained (evaluated per pixel, or stepped across a block), the same exact
+    integers give the same weights, bit for bit.
+    """
+    e = e.astype(np.float64)
     lam = np.empty_like(e)
     # The weight of oriented vertex k is the edge opposite it: E_{k+1} (p_{k+1} -> p_{k+2}).
     area2 = float(setup.area2)

@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .snapping import to_units, units_per_pixel
-from .validate import as_finite, as_real
+from .validate import as_finite
 
 
 @dataclass(frozen=True)
@@ -110,7 +110,7 @@ def edge_function(a, b, p) -> np.ndarray:
     12.0
     """
     a, b = as_finite("a", a, (2,)), as_finite("b", b, (2,))
-    p = as_real("p", p)
+    p = as_finite("p", p, None)
     if p.shape[-1:] != (2,):
         raise ValueError(f"p must have shape (..., 2), got {p.shape}")
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])

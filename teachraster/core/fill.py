@@ -10,6 +10,7 @@ import numpy as np
 from . import half_planes, span_tables, tiles
 from .barycentrics import barycentric_pixels
 from .bbox import BBox, pixel_bbox
+from .block_shading import cell_size, shade_blocks
 from .edges import culled as culled_by
 from .edges import setup_edges
 from .interpolation import FILL_MODES, MODES, blend, interpolate, subdivided
@@ -102,15 +103,15 @@ def rasterize(
     subdivision : int
         Pixels between exact evaluations for ``"subdivided"`` (1 = exact).
     trace : bool
-        Record every step (see :class:`~teachraster.core.trace.FillTrace`). Never changes
-        the pixels.
+        Record every step (:class:`~teachraster.core.trace.FillTrace`); never changes pixels.
     subpixel_bits : int or None
         Vertices are snapped to ``1 / 2**subpixel_bits`` px before coverage is decided
         (8, as in Direct3D). None keeps raw floats, to show what precision does.
     cull : {None, "back", "front"}
         Drop back-facing (clockwise on screen) or front-facing triangles.
     block_sizes : sequence of int
-        Tiles: block sizes, largest first, each dividing the one before (64, 16, 4).
+        Tiles: block sizes, largest first, each dividing the one before (64, 16, 4). Cells
+        the walk leaves whole are shaded as blocks (:mod:`.block_shading`), same values.
     max_pixels : int, optional
         Largest ``width * height`` (default 2**28): larger raises before allocating.
     samples : int or (S, 2) array-like
@@ -141,17 +142,18 @@ def rasterize(
     offsets = _check_samples(samples, method, interpolation, centroid, per_sample)
     setup = setup_edges(tri.xy, subpixel_bits)
     box, culled = pixel_bbox(setup, width, height), bool(culled_by(setup.original_area2, cull))
-    coverage, local, algo_trace = _fill_centres(
-        setup, box, method, culled, trace, width, height, block_sizes
-    )
+    coverage, local, algo_trace = _fill_centres(setup, box, method, culled, trace, width,
+                                                height, block_sizes)  # fmt: skip
     packed, layout = _pack(tri.attrs)  # one (3, K) block: per-pixel work once per fill
-    multi = None
-    if offsets is not None:  # the samples decide coverage; the centres still drive the trace
-        multi = fill_samples(setup, offsets, (width, height), METHODS[method], coverage,
-                             packed, tri, (interpolation, centroid, per_sample, trace, culled))  # fmt: skip
-    lam, values, depth_values = _interpolate_centres(
-        tri, setup, coverage, packed, interpolation, subdivision, trace
-    )
+    # With samples, they decide coverage; the centres still drive the trace.
+    multi = None if offsets is None else fill_samples(
+        setup, offsets, (width, height), METHODS[method], coverage, packed, tri,
+        (interpolation, centroid, per_sample, trace, culled))  # fmt: skip
+    if method == "tiled" and not trace and multi is None and interpolation in MODES:
+        return _shade_whole_blocks(tri, setup, coverage, (packed, layout), interpolation,
+                                   block_sizes)  # fmt: skip
+    lam, values, depth_values = _interpolate_centres(tri, setup, coverage, packed, interpolation,
+                                                     subdivision, trace)  # fmt: skip
     fill_trace = None
     if trace:
         fill_trace = _record(
@@ -166,6 +168,17 @@ def rasterize(
     attrs = _unpack(_place(coverage, values[interpolation]), layout)
     depth = None if depth_values is None else _place(coverage, depth_values)
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
+
+
+def _shade_whole_blocks(tri, setup, coverage, packing, interpolation, block_sizes):
+    """The tiled fill's :class:`Fill`, the cells its walk left whole shaded as blocks (the
+    same values, bit for bit: :mod:`.block_shading`)."""
+    packed, layout = packing
+    if packed.shape[1] == 0 and tri.z is None:  # coverage only: nothing to shade
+        return Fill(coverage=coverage, attrs={}, depth=None)
+    image, depth = shade_blocks(tri, setup, coverage, packed, interpolation,
+                                cell_size(block_sizes))  # fmt: skip
+    return Fill(coverage=coverage, attrs=_unpack(image, layout), depth=depth)
 
 
 def _interpolate_centres(tri, setup, coverage, packed, interpolation, subdivision, trace):

@@ -28,6 +28,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .validate import as_real
+
 MODES = ("perspective", "affine")
 
 #: Modes of :func:`teachraster.rasterize`: also the cheaper subdivided perspective.
@@ -105,10 +107,33 @@ def perspective_weights(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = F
 
     >>> perspective_weights(np.array([[0.5, 0.5, 0.0]]), np.array([1.0, 3.0, 1.0]))
     array([[0.75, 0.25, 0.  ]])
+    >>> perspective_weights([[0.5, 0.5, 0.0]], [1, -3, 1])
+    Traceback (most recent call last):
+    ...
+    ValueError: w must be > 0 and finite for every vertex (a vertex on or behind the eye has no perspective weight), got [1.0, -3.0, 1.0]
     """
+    lam, w = _checked_weights(lam, w)
     if np.all(w == w[0]):
         return lam if extrapolate else convex_weights(lam)
     return weights_per_row(lam, np.broadcast_to(w, lam.shape), extrapolate=extrapolate)
+
+
+def _checked_weights(lam, w) -> tuple[np.ndarray, np.ndarray]:
+    """``lam`` (..., 3) and ``w`` (3,) of :func:`perspective_weights`, or an error naming them.
+
+    Float64 arrays (the rasterisers' own, already checked) pass with O(1) shape tests only.
+    """
+    if not (isinstance(lam, np.ndarray) and lam.dtype == np.float64):
+        lam = as_real("lam", lam)
+    if lam.ndim < 1 or lam.shape[-1] != 3:
+        raise ValueError(f"lam must have shape (..., 3): three weights per point, got {lam.shape}")
+    w = as_real("w", w, (3,))
+    if not ((w > 0) & (w < np.inf)).all():
+        raise ValueError(
+            "w must be > 0 and finite for every vertex (a vertex on or behind the eye has no "
+            f"perspective weight), got {w.tolist()}"
+        )
+    return lam, w
 
 
 def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False) -> np.ndarray:

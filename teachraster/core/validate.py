@@ -128,8 +128,8 @@ def check_choice(name: str, value, choices) -> None:
     """Raise a ValueError naming ``name`` unless ``value`` is one of ``choices``."""
     try:
         ok = value in choices
-    except TypeError:  # unhashable values (a dict, a list) against a dict of choices
-        ok = False
+    except (TypeError, ValueError):  # unhashable values (a dict, a list) against a dict of
+        ok = False  # choices; an array compared element by element has no single truth value
     if not ok:
         raise ValueError(
             f"{name} must be one of {', '.join(map(repr, choices))}; got {short_repr(value)}"

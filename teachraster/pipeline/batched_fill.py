@@ -21,8 +21,9 @@ import numpy as np
 
 from ..core.bbox import centre_ranges
 from ..core.edges import facing, setup_edges
-from ..core.snapping import SUBPIXEL_BITS
+from ..core.snapping import SUBPIXEL_BITS, check_bits
 from ..core.span_tables import edge_bounds
+from ..core.validate import as_bool, as_finite, as_size, check_pixels
 
 
 @dataclass(frozen=True)
@@ -157,6 +158,8 @@ def rasterize_batch(
     subpixel_bits: int | None = SUBPIXEL_BITS,
     skip: np.ndarray | None = None,
     snapped_weights: bool = True,
+    spans=None,
+    max_pixels: int | None = None,
 ) -> Fragments:
     """Fragments of triangles ``xy`` (n, 3, 2) in window pixels; ``skip`` (n,) bool drops some.
 
@@ -165,6 +168,16 @@ def rasterize_batch(
     llvmpipe do for attribute set-up (a triangle whose unsnapped area has a different sign
     or is zero keeps its snapped weights, which always exist where it covers a pixel).
 
+    ``spans``, optional, sees the raster lines before they become fragments: called as
+    ``spans(lines, counts)`` with ``lines`` a :class:`Fragments` whose ``tri``, ``row``,
+    ``col`` are each line's triangle, row and first column and ``counts`` (L,) its pixels,
+    it returns pieces of them in drawing order (``.tri``, ``.row``, ``.col``, ``.counts``);
+    how :mod:`teachraster.pipeline.hiz_tiles` drops hidden blocks before they exist.
+
+    Arguments are checked as :func:`teachraster.rasterize` checks them (errors name the
+    argument; ``max_pixels`` bounds ``width * height``, 2**28 by default: a triangle
+    covering the image makes one fragment per pixel).
+
     Two triangles splitting a 2×2 square: the shared diagonal's centres go to the triangle
     for which it is a top-left edge, so each pixel is covered exactly once.
 
@@ -172,7 +185,9 @@ def rasterize_batch(
     >>> f.tri.tolist(), f.row.tolist(), f.col.tolist()
     ([0, 1, 1, 1], [0, 0, 1, 1], [0, 1, 0, 1])
     """
-    xy = np.asarray(xy, dtype=np.float64).reshape(-1, 3, 2)
+    xy, width, height, subpixel_bits, skip, snapped_weights = _checked(
+        xy, width, height, subpixel_bits, skip, snapped_weights, max_pixels
+    )
     # The same set-up as tr.rasterize, once for the whole batch: snapping, orientation
     # (inside on the positive side of every edge) and the top-left classification.
     setup = setup_edges(xy, subpixel_bits)
@@ -193,15 +208,34 @@ def rasterize_batch(
 
     lo, hi, ok = line_bounds(setup, owner, y, half, width)
     counts = np.where(ok, np.maximum(hi - lo + 1, 0), 0)  # pixels on each line's span
+    src, src_area, _, _ = weight_source(xy, setup, snapped_weights)
+    fac, src_area = facing(area2), src_area.astype(np.float64)
+    if spans is not None:  # the caller cuts spans before they become fragments (Hi-Z)
+        cut = spans(Fragments(owner, rows, lo, fac, src, src_area), counts)
+        owner, rows, lo, counts = cut.tri, cut.row, cut.col, cut.counts
     # One fragment per covered centre, generated once: column = lo + position in the span.
     first = np.cumsum(counts) - counts  # where each line's span starts in the flat arrays
     cols = np.arange(first[-1] + counts[-1] if len(counts) else 0)
     cols += np.repeat(lo - first, counts)
     tri = np.repeat(owner, counts)
     rows = np.repeat(rows, counts)
+    return Fragments(tri, rows, cols, fac, src, src_area)
 
-    src, src_area, _, _ = weight_source(xy, setup, snapped_weights)
-    return Fragments(tri, rows, cols, facing(area2), src, src_area.astype(np.float64))
+
+def _checked(xy, width, height, bits, skip, snapped_weights, max_pixels):
+    """The arguments of :func:`rasterize_batch`, validated (errors name the argument)."""
+    xy = as_finite("xy", xy, None)
+    if xy.ndim not in (2, 3) or xy.shape[-2:] != (3, 2):
+        raise ValueError(f"xy must have shape (n, 3, 2): three (x, y) per triangle, got {xy.shape}")
+    xy = xy.reshape(-1, 3, 2)  # one triangle (3, 2) is a batch of one
+    width, height = as_size("width", width), as_size("height", height)
+    check_pixels(width, height, max_pixels, 24)  # a fragment: triangle, row, column
+    if skip is not None:
+        skip = np.asarray(skip)
+        if skip.dtype != bool or skip.shape != (len(xy),):
+            raise ValueError(f"skip must be a bool array of shape ({len(xy)},), got {skip!r}")
+    return (xy, width, height, check_bits(bits), skip,
+            as_bool("snapped_weights", snapped_weights))  # fmt: skip
 
 
 def line_bounds(setup, owner: np.ndarray, y: np.ndarray, half, width: int):

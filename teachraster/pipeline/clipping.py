@@ -32,6 +32,8 @@ from functools import cached_property
 
 import numpy as np
 
+from ..core.validate import as_bool, as_finite, as_float
+
 #: A clipped vertex always has w > W_MIN (= 0): the eye plane has no margin, which keeps
 #: clipping invariant under scaling a vertex by a positive factor (see the module docstring).
 W_MIN = 0.0
@@ -426,6 +428,17 @@ def _fan(poly, attrs, count):
     return poly[owner[:, None], corners], attrs[owner[:, None], corners], owner
 
 
+def _checked(clip, attrs, guard, force):
+    """The arguments of :func:`clip_triangles`, validated (errors name the argument)."""
+    clip = as_finite("clip", clip, (None, 3, 4))
+    attrs = as_finite("attrs", attrs, (len(clip), 3, None))
+    if guard is not None:
+        guard = as_float("guard", guard)
+        if not guard >= 1.0:
+            raise ValueError(f"guard must be >= 1 (NDC units beyond the image), got {guard!r}")
+    return clip, attrs, guard, as_bool("force", force)
+
+
 def clip_triangles(
     clip: np.ndarray, attrs: np.ndarray, guard: float | None = DEFAULT_GUARD, force: bool = False
 ) -> ClipResult:
@@ -436,7 +449,7 @@ def clip_triangles(
     (``render`` sizes it to the image); ``None`` drops it, and then a vertex cut near the
     eye plane can project arbitrarily far.
     """
-    clip = np.asarray(clip, dtype=np.float64)
+    clip, attrs, guard, force = _checked(clip, attrs, guard, force)
     scaled, e = _normalised(clip)
     status = classify(scaled, guard)
     todo = np.flatnonzero(status != DROPPED) if force else np.flatnonzero(status == CLIPPED)

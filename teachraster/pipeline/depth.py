@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import as_float, as_real
+from ..core.validate import as_float, as_real, check_choice
 
 DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
 MAPPINGS = ("perspective", "linear", "reversed")
@@ -70,6 +70,7 @@ def quantize(depth, fmt: str) -> np.ndarray:
     >>> quantize([0.1], "float32") - 0.1
     array([1.49...e-09])
     """
+    check_choice("fmt (the depth_format)", fmt, DEPTH_FORMATS)
     if isinstance(depth, np.ndarray) and depth.dtype == np.float64:
         d = depth  # the z-buffer's own arrays: no check, no copy (runs per fragment batch)
     else:
@@ -78,8 +79,6 @@ def quantize(depth, fmt: str) -> np.ndarray:
         return d.copy() if d is depth else d
     if fmt == "float32":
         return d.astype(np.float32).astype(np.float64)
-    if fmt not in _UNORM_BITS:
-        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
     scale = float(2 ** _UNORM_BITS[fmt] - 1)
     # In place on one fresh array: this runs once per fragment batch in the z-buffer, so avoid
     # temporaries. rint rounds half to even; NaN passes through clip and rint unchanged.
@@ -242,8 +241,7 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
     map_depth, positive = _mapping(mapping)
     near, far = _planes(near, far, positive=positive)
     z = _distances("z", z, positive=positive)
-    if fmt not in DEPTH_FORMATS:
-        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    check_choice("fmt (the depth_format)", fmt, DEPTH_FORMATS)
     if mapping in ("perspective", "reversed"):
         slope = near / ((1.0 - near / far) * z * z)  # = f n / ((f - n) z**2), as window_depth
     else:
@@ -287,8 +285,7 @@ def fights(z_a, z_b, near: float, far: float, fmt: str, mapping: str = "perspect
         raise ValueError(
             f"z_a and z_b must broadcast together, got {a.shape} and {b.shape}"
         ) from None
-    if fmt not in DEPTH_FORMATS:
-        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    check_choice("fmt (the depth_format)", fmt, DEPTH_FORMATS)
     qa = quantize(map_depth(a, near, far), fmt)
     qb = quantize(map_depth(b, near, far), fmt)
     real = ~(np.isnan(a) | np.isnan(b)) & (a != b)
@@ -366,8 +363,7 @@ def depth_bias(depth, fmt: str, *, units: float = 1.0, slope: float = 0.0,
     >>> float(depth_bias(0.5, "float32", units=2.0)) == 2 * float(np.spacing(np.float32(0.5)))
     True
     """
-    if fmt not in DEPTH_FORMATS:
-        raise ValueError(f"depth_format must be one of {DEPTH_FORMATS}, got {fmt!r}")
+    check_choice("fmt (the depth_format)", fmt, DEPTH_FORMATS)
     d = _distances("depth", depth, positive=False)
     return np.asarray(float(units) * _step(d, fmt) + float(slope_factor) * np.asarray(slope, float))
 

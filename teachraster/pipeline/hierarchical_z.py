@@ -1,4 +1,4 @@
-"""Early-z and hierarchical z (Hi-Z): how a GPU avoids interpolating hidden fragments.
+"""Early-z and hierarchical z (Hi-Z) of a GPU drawing in order: a replay, for the trace.
 
 A GPU draws triangles in order. **Early-z** tests each fragment's depth against the buffer
 *before* shading it, so a hidden fragment costs a depth interpolation and a test, but no
@@ -8,19 +8,26 @@ depth of a triangle's block (its fragments in one tile) it compares the smallest
 triangle can have there with that maximum. If the triangle is nowhere nearer, the whole
 block fails the depth test and is rejected at once: its fragments are never interpolated.
 
+This module replays that on the fragments of a ``render(..., trace=True)`` and records,
+per block and fragment, what a GPU drawing in this order would reject and kill
+(``RenderTrace.hiz``). It changes no work of the renderer: ``render`` runs its own Hi-Z,
+with a bound that holds whatever the drawing order (:mod:`teachraster.pipeline.hiz_tiles`,
+the plan's ``hi_z`` entry), and really drops the hidden blocks before their depth exists.
+
 Exactness. The block's smallest depth is the triangle's depth plane at the tile's extreme
 pixel centres (the corner trick of the tiled fill: the plane is affine, and the float
 expression that :meth:`Fragments.plane` evaluates is monotone along rows and columns), after
 the same quantisation as the buffer: no fragment of the block is stored nearer. The tile
 maximum is taken over the buffer *as it was when the triangle arrived* (a running minimum
 per pixel in drawing order). A rejected fragment is therefore one the depth test would
-have failed: Hi-Z changes the work, never the frame.
+have failed.
 
-The plan. A fragment on a pixel that no other fragment reaches (depth complexity one) can
-never be hidden, and a block holding one such fragment has a tile whose buffer was still
-empty somewhere when it arrived, so it cannot be rejected. The planned stage tests only
-blocks whose every fragment lies where the depth complexity is above one; ``force``
-tests every block; both reject the same blocks (tests/test_hierarchical_z.py).
+Which blocks are compared. A fragment on a pixel that no other fragment reaches (depth
+complexity one) can never be hidden, and a block holding one such fragment has a tile
+whose buffer was still empty somewhere when it arrived, so it cannot be rejected. The
+replay compares only blocks whose every fragment lies where the depth complexity is above
+one; ``test_all`` compares every block; both reject the same blocks
+(tests/test_hierarchical_z.py).
 """
 
 from __future__ import annotations
@@ -32,7 +39,6 @@ import numpy as np
 
 from .batched_fill import Fragments
 from .depth import quantize
-from .render_plan import Effect
 
 #: Side of a Hi-Z tile, in pixels (hardware uses 8×8 or larger).
 HIZ_TILE = 8
@@ -99,34 +105,21 @@ class HiZResult:
         }
 
 
-def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height: int,
-              depth_format: str, forced, record: bool = True,
-              tile: int = HIZ_TILE) -> tuple[HiZResult | None, Effect]:  # fmt: skip
-    """5b. Early-z and Hi-Z over the fragments the depth stage resolved.
+def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, height: int,
+                 depth_format: str, test_all: bool = False,
+                 tile: int = HIZ_TILE) -> HiZResult | None:  # fmt: skip
+    """Early-z and Hi-Z of a GPU drawing the resolved fragments in order (for the trace).
 
     ``visible`` is the depth stage's :class:`~teachraster.pipeline.stages.Visibility`
-    (stored depth and pixel of every fragment). Returns the record (None when the depth
-    test is off, or when nothing asked for it) and the "hi_z" plan effect.
-
-    Early-z and Hi-Z never change the frame: they are what a GPU drawing in order would
-    save. This simulator resolves visibility in one pass and interpolates attributes at the
-    visible pixels only, so replaying the in-order tile bounds would cost it time (about
-    half of a large render) and save it none. It is therefore run only when it is looked
-    at: with ``record`` (``render(..., trace=True)``) or ``force="hi_z"``.
+    (stored depth and pixel of every fragment, all fragments kept). Returns None when the
+    depth test is off. Only blocks whose every fragment lies where the depth complexity is
+    above one are compared with their tile (``test_all``: every block; the same blocks are
+    rejected). This replay changes no work of the renderer, which runs its own,
+    order-independent Hi-Z (:mod:`teachraster.pipeline.hiz_tiles`): it shows what a GPU
+    drawing in this order would save, so it runs only with ``render(..., trace=True)``.
     """
-    force = "hi_z" in forced and visible.depth_test
-    m = len(frags.tri)
     if not visible.depth_test:
-        why = "off (depth_test=False): nothing is hidden, so nothing is rejected early"
-        return None, Effect("hi_z", False, 0, m, "fragments", why)
-    n_contested = visible.contested  # counted by the depth stage's resolve already
-    if not (record or force) and n_contested:
-        why = (
-            f"depth complexity above one on {n_contested:,} pixel(s), but the frame is the "
-            "same without Hi-Z: not simulated; render(..., trace=True) or force='hi_z' "
-            "reports what early-z and Hi-Z would save a GPU"
-        )
-        return None, Effect("hi_z", False, 0, m, "fragments", why)
+        return None
     count = np.bincount(visible.pixel, minlength=width * height)
     contested = count[visible.pixel] > 1  # depth complexity above one at the fragment
     tiles_x = -(-width // tile)
@@ -137,7 +130,7 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
     block_tri, block_tile = keys // n_tiles, keys % n_tiles
     b_row, b_col = (block_tile // tiles_x) * tile, (block_tile % tiles_x) * tile
     open_pixels = np.bincount(block, weights=~contested, minlength=len(keys))
-    tested = np.ones(len(keys), bool) if force else open_pixels == 0
+    tested = np.ones(len(keys), bool) if test_all else open_pixels == 0
     arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri, width * height)
     nearest = np.full(len(keys), np.nan)
     farthest = np.full(len(keys), np.nan)
@@ -155,9 +148,8 @@ def hiz_stage(frags: Fragments, window: np.ndarray, visible, width: int, height:
         farthest[idx] = arrivals.tile_farthest(block_tri[idx], b_row[idx], b_col[idx],
                                                (height, width), tile)  # fmt: skip
     rejected = tested & (nearest >= farthest)
-    result = HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
-                       block, arrivals.passed)  # fmt: skip
-    return result, hiz_effect(result, n_contested, force)
+    return HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
+                     block, arrivals.passed)  # fmt: skip
 
 
 def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> np.ndarray:
@@ -245,22 +237,3 @@ def _running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.
         np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
         step *= 2
     return out
-
-
-def hiz_effect(result: HiZResult, n_contested: int, forced: bool) -> Effect:
-    """The plan's words for early-z and Hi-Z."""
-    c = result.counts
-    n_tested, n_rejected = int(result.block_tested.sum()), int(result.block_rejected.sum())
-    t = result.tile
-    if not n_contested and not forced:
-        why = "depth complexity is one everywhere: no fragment can be hidden, Hi-Z not run"
-        return Effect("hi_z", False, 0, c["fragments"], "fragments", why)
-    why = (
-        f"depth complexity above one on {n_contested:,} pixel(s): {n_tested:,} block(s) "
-        f"compared with their {t}×{t} tile's farthest depth, {n_rejected:,} rejected whole, "
-        f"saving {c['hiz_rejected']:,} fragment(s) their depth; early-z killed "
-        f"{c['early_z_killed']:,} more before shading; {c['shaded']:,} shaded"
-    )
-    if forced:
-        why = "every block tested; " + why
-    return Effect("hi_z", True, c["hiz_rejected"], c["fragments"], "fragments", why, forced)

@@ -12,7 +12,6 @@ from ..core.validate import check_choice
 from .inputs import check_attrs, check_clip
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
-from .viewport import to_window
 
 KEYS = ("max", "mean", "min")
 
@@ -31,7 +30,10 @@ def painter_order(clip, key: str = "max") -> np.ndarray:
     if len(clip) == 0:
         return np.zeros(0, dtype=np.int64)
     front = clip[..., 3] > 0
-    z = np.where(front, to_window(np.where(front[..., None], clip, 1.0), 2, 2)[..., 2], np.nan)
+    # Window depth z/w / 2 + 1/2 (the viewport's); a vertex a hair in front of the eye may
+    # project to ±inf, which still sorts (no NaN: w > 0 and z finite).
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        z = np.where(front, clip[..., 2] / np.where(front, clip[..., 3], 1.0) * 0.5 + 0.5, np.nan)
     depth = {"max": np.nanmax, "mean": np.nanmean, "min": np.nanmin}[key](
         np.where(front.any(axis=1)[:, None], z, 0.0), axis=1
     )

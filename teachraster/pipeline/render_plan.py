@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .hiz_tiles import LINE_COST, MIN_SAVING
+
 #: Effects that ``force=`` can switch on everywhere, for comparison.
 FORCEABLE = (
     "clipping",
@@ -213,3 +215,46 @@ def derivatives_effect(
             why = "at every visible pixel; " + why
     ran = mode is not None and n_pixels > 0
     return Effect("derivatives", ran, n_pixels, n_visible, "pixels", why, forced)
+
+
+def hi_z_effect(depth_test: bool, n_fragments: int, result) -> Effect:
+    """Hi-Z: fragments rejected before their depth was interpolated, of all covered
+    fragments; ``result`` is the :class:`~teachraster.pipeline.hiz_tiles.HiZTiles` record
+    (None with the depth test off)."""
+    if not depth_test or result is None:
+        why = "off (depth_test=False): nothing is hidden, so nothing is rejected early"
+        return Effect("hi_z", False, 0, n_fragments, "fragments", why)
+    r, t = result, result.tile
+    n_occluded = int((r.occluders > 0).sum())
+    tiles = f"{n_occluded:,} {t}x{t} tile(s) covered whole by a triangle"
+    if r.skipped == "short lines":
+        mean = r.fragments / max(r.raster_lines, 1)
+        why = (
+            f"{r.fragments:,} fragment(s) on {r.raster_lines:,} raster line(s), "
+            f"{mean:.1f} per line: even rejecting them all could not pay for Hi-Z (it needs "
+            f"{LINE_COST} per line and {MIN_SAVING:,} in all), not run"
+        )
+    elif r.skipped == "no occluder":
+        why = (
+            f"no triangle covers a whole {t}x{t} tile: no tile has a farthest depth to "
+            "reject blocks against, Hi-Z not run"
+        )
+    elif r.skipped == "lone occluders":
+        why = f"{tiles}, each by a lone triangle nothing else reaches: nothing to reject"
+    elif r.skipped:
+        why = (
+            f"{tiles}, only {r.layered:,} pixel(s) of occluders behind others: too few, "
+            f"against {r.raster_lines:,} raster lines, to pay for comparing the lines with "
+            "the tiles, Hi-Z not run"
+        )
+    else:
+        why = (
+            f"{tiles}: {r.lines:,} raster line(s) reaching others' tiles compared with the "
+            f"tiles' farthest occluder depth, {r.lines_rejected:,} rejected whole, "
+            f"{r.blocks_rejected:,} of {r.blocks:,} tile block(s) of the rest; {r.rejected:,} "
+            f"fragment(s) dropped before their depth was interpolated, {r.interpolated:,} "
+            "interpolated"
+        )
+        if r.forced:
+            why = "every raster line compared; " + why.replace(" reaching others' tiles", "")
+    return Effect("hi_z", r.ran, r.rejected, r.fragments, "fragments", why, r.forced)

@@ -11,8 +11,10 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 5. the z-buffer (Ritschel, *Interpolation and z-buffering*): a fragment is kept when its
    stored depth is strictly smaller than the buffer's, so ties keep the earlier triangle;
    without the depth test later triangles overwrite earlier ones
-   (:mod:`teachraster.pipeline.zbuffer`); where fragments overlap, what early-z and Hi-Z
-   would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
+   (:mod:`teachraster.pipeline.zbuffer`); before it, Hi-Z drops the blocks of raster
+   lines that a triangle covering their whole 8×8 tile hides, so their depth is never
+   interpolated (:mod:`teachraster.pipeline.hiz_tiles`); with ``trace=True``, what early-z
+   and Hi-Z would save a GPU drawing in order (:mod:`teachraster.pipeline.hierarchical_z`);
 6. perspective-correct interpolation of the attributes, at the visible pixels only;
 7. on request, their screen-space derivatives from 2×2 quads with helper pixels
    (:mod:`teachraster.pipeline.quad_derivatives`), for texture filtering.
@@ -20,18 +22,20 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+import dataclasses
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
 from ..core.validate import as_bool
-from .hierarchical_z import HiZResult, hiz_stage
+from .hierarchical_z import HiZResult, replay_stage
+from .hiz_tiles import HiZCut, HiZTiles
 from .inputs import check_render
 from .multisampling import multisample_stage
 from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
-from .render_plan import Plan
+from .render_plan import Plan, depth_test_effect, hi_z_effect
 from .stages import (
     clip_stage,
     cull_stage,
@@ -71,7 +75,11 @@ class RenderTrace:
     quads : QuadTrace or None
         The 2×2 quads and helper pixels evaluated for derivatives, when they were.
     hiz : HiZResult or None
-        Early-z and Hi-Z per block and fragment (None without the depth test).
+        Early-z and Hi-Z of a GPU drawing in this order, per block and fragment (None
+        without the depth test).
+    hiz_tiles : HiZTiles or None
+        The renderer's own Hi-Z: tile bounds and, per fragment, whether it was rejected
+        (None without the depth test).
     """
 
     clip_status: np.ndarray
@@ -87,6 +95,7 @@ class RenderTrace:
     fragment_sample: np.ndarray | None = None
     quads: QuadTrace | None = None
     hiz: HiZResult | None = None
+    hiz_tiles: HiZTiles | None = None
 
 
 class _OnFirstUse:
@@ -293,11 +302,10 @@ def render(
     if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
         return _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
                                     centroid)  # fmt: skip
-    frags = fill_stage(window, width, height, subpixel_bits, culled)
+    frags, cut = _fill(window, culled, a)  # with Hi-Z: hidden blocks never become fragments
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
     )
-    hiz, hi_z = hiz_stage(frags, window, visible, width, height, depth_format, forced, trace)
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
@@ -305,9 +313,57 @@ def render(
         frags, visible, clipped, (width, height), mode,
         None if where is None else where[clipped.parent], interpolation, forced, trace,
     )  # fmt: skip
-    plan = Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
-    record = _record(clipped, window, culled, frags, visible, quads, hiz) if trace else None
+    effects = (clipping, culling, depth_testing, perspective, attributes, derivs)
+    plan = _plan(cut, frags, visible, effects, forced)
+    record = trace and _record(clipped, window, culled, frags, visible, quads, cut, a)
     return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
+
+
+def _fill(window, culled, a):
+    """The fill stage, with the Hi-Z hook when the depth test is on (nothing is hidden
+    otherwise): hidden blocks never become fragments; a trace keeps them all, marked.
+    ``a`` are the checked inputs. Returns the fragments and the hook (None without it)."""
+    cut = None
+    if a.depth_test:
+        image = (a.height, a.width)
+        cut = HiZCut(window[:, :, 2], image, a.depth_format, "hi_z" in a.forced, a.trace)
+    return fill_stage(window, a.width, a.height, a.subpixel_bits, culled, cut), cut
+
+
+def _plan(cut, frags, visible, effects, forced) -> Plan:
+    """The plan, with the "hi_z" effect after the depth test's."""
+    clipping, culling, depth_testing, perspective, attributes, derivs = effects
+    result = None if cut is None else cut.result
+    hi_z, depth_testing, attributes = _hi_z_effects(
+        result, len(frags.tri), (depth_testing, attributes), visible, forced
+    )
+    return Plan((clipping, culling, depth_testing, hi_z, perspective, attributes, derivs))
+
+
+def _hi_z_effects(result, n_fragments, effects, visible, forced):
+    """The "hi_z" effect; the depth test and attributes told of what Hi-Z dropped.
+
+    The depth test then decides only among the fragments Hi-Z kept (a trace keeps every
+    fragment, so its count is taken over the kept ones too); the attributes count all
+    fragments, dropped ones included.
+    """
+    depth_testing, attributes = effects
+    hi_z = hi_z_effect(result is not None, n_fragments, result)
+    if result is None or not result.rejected:
+        return hi_z, depth_testing, attributes
+    contested = visible.contested
+    if result.fragment_rejected is not None:  # the trace: nothing was dropped, count as if
+        contested = int((np.bincount(visible.pixel[~result.fragment_rejected]) > 1).sum())
+    force = "depth_test" in forced
+    depth_testing = depth_test_effect(True, force, contested, len(visible.pixels))
+    depth_testing = dataclasses.replace(
+        depth_testing, why=depth_testing.why + f" (after Hi-Z dropped {result.rejected:,})"
+    )
+    if result.fragment_rejected is None:  # the trace's fragments are all of them already
+        attributes = dataclasses.replace(attributes, total=result.fragments)
+    elif "attributes" in forced and attributes.count:  # as without the trace: kept only
+        attributes = dataclasses.replace(attributes, count=attributes.count - result.rejected)
+    return hi_z, depth_testing, attributes
 
 
 def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid) -> Frame:
@@ -371,7 +427,7 @@ def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=Non
         attrs=_image(visible, values, width, height),
         depth=depth.reshape(height, width),
         plan=plan,
-        trace=record,
+        trace=record or None,
         ddx=None if ddx is None else _image(visible, ddx, width, height),
         ddy=None if ddy is None else _image(visible, ddy, width, height),
     )
@@ -416,15 +472,19 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         depth=multi.depth.reshape(height, width),
         plan=plan,
         trace=record,
-        sample_triangle_id=replace(multi.sample_tri, parent=parent),  # built on first read
+        sample_triangle_id=dataclasses.replace(
+            multi.sample_tri, parent=parent
+        ),  # built on first read
         sample_depth=multi.sample_depth,  # built on first read
         sample_attrs=multi.sample_attrs,
         samples=multi.offsets,
     )
 
 
-def _record(clipped, window, culled, frags, visible, quads=None, hiz=None) -> RenderTrace:
-    """The trace of every stage (plain arrays, see :class:`RenderTrace`)."""
+def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTrace:
+    """The trace of every stage (plain arrays, see :class:`RenderTrace`), with the replay of
+    a GPU's early-z and Hi-Z in drawing order; ``a`` are the checked inputs."""
+    width, height, depth_format = a.width, a.height, a.depth_format
     return RenderTrace(
         clip_status=clipped.status,
         clip_polygons=clipped.polygons,
@@ -437,5 +497,6 @@ def _record(clipped, window, culled, frags, visible, quads=None, hiz=None) -> Re
         fragment_depth=visible.depth,
         fragment_passed=visible.passed,
         quads=quads,
-        hiz=hiz,
+        hiz=replay_stage(frags, window, visible, width, height, depth_format),
+        hiz_tiles=None if cut is None else cut.result,
     )

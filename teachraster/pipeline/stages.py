@@ -111,18 +111,20 @@ def cull_stage(window: np.ndarray, cull: str | None, bits: int | None) -> tuple[
 
 
 def fill_stage(
-    window: np.ndarray, width: int, height: int, bits: int | None, culled: np.ndarray
+    window: np.ndarray, width: int, height: int, bits: int | None, culled: np.ndarray, spans=None
 ) -> Fragments:
     """4. Every covered pixel centre of every triangle not culled, in drawing order.
 
     Coverage is decided on the snapped grid (identical to :func:`teachraster.rasterize`);
     the barycentrics ``Fragments.lam`` come from the unsnapped positions, as GPUs set up
     attributes (so the new vertices clipping creates interpolate exactly). Filling always
-    runs, so it has no plan entry.
+    runs, so it has no plan entry. ``spans`` (Hi-Z, :mod:`teachraster.pipeline.hiz_tiles`)
+    drops hidden blocks of raster lines before they become fragments.
     """
     return rasterize_batch(
-        window[:, :, :2], width, height, subpixel_bits=bits, skip=culled, snapped_weights=False
-    )
+        window[:, :, :2], width, height, subpixel_bits=bits, skip=culled, snapped_weights=False,
+        spans=spans,
+    )  # fmt: skip
 
 
 @dataclass(frozen=True)

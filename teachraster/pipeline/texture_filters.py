@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.validate import as_real
 from .texel_fetch import filtered, level_table, texture_size
 
 #: Filters that use the pyramid, each as (how levels are chosen, the filter within a level).
@@ -46,10 +47,7 @@ MIPMAP_FILTERS = {
 
 
 def _as_derivative(name: str, value) -> np.ndarray:
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a numeric array of shape (..., k), k >= 2") from None
+    arr = as_real(name, value)  # NaN passes: an uncovered pixel's derivative
     if arr.ndim < 1 or arr.shape[-1] < 2:
         raise ValueError(
             f"{name} must have shape (..., k) with k >= 2 (its first two channels are the "

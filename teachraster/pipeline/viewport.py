@@ -12,9 +12,11 @@ from ..core.validate import as_real, as_size
 
 
 def to_window(clip, width: int, height: int) -> np.ndarray:
-    """Window coordinates (x, y, z) of clip-space points (..., 4) with w > 0.
+    """Window coordinates (x, y, z) of clip-space points (..., 4).
 
-    The divide by w is only safe after clipping against the near plane (w > 0).
+    The divide by w is only meaningful after clipping against the near plane (w > 0): a
+    point behind the eye (w < 0) comes out mirrored through it (lesson 05 shows what that
+    would draw), and one on the eye plane (w = 0) has no image at all (a ValueError).
 
     >>> to_window([[0.0, 0.0, 0.0, 1.0], [-2.0, 2.0, 2.0, 2.0]], 640, 480)
     array([[320. , 240. ,   0.5],
@@ -25,7 +27,14 @@ def to_window(clip, width: int, height: int) -> np.ndarray:
         raise ValueError(f"clip must have shape (..., 4): (x, y, z, w) points, got {c.shape}")
     width, height = as_size("width", width), as_size("height", height)
     w = c[..., 3]
-    x = (c[..., 0] / w + 1.0) * (width / 2)
-    y = (1.0 - c[..., 1] / w) * (height / 2)
-    z = (c[..., 2] / w) * 0.5 + 0.5
-    return np.stack([x, y, z], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # refused below
+        x = (c[..., 0] / w + 1.0) * (width / 2)
+        y = (1.0 - c[..., 1] / w) * (height / 2)
+        z = (c[..., 2] / w) * 0.5 + 0.5
+        out = np.stack([x, y, z], axis=-1)
+    if not np.isfinite(out).all():
+        raise ValueError(
+            "clip: a point is infinite, on the eye plane (w = 0) or so close to it that it "
+            "projects beyond the float range; clip first (tr.clip_triangles)"
+        )
+    return out

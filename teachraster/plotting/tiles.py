@@ -259,7 +259,7 @@ def plot_traversal(
 
 
 #: What :func:`plot_early_z` can count per pixel.
-EARLY_Z_KINDS = ("hi_z", "early_z", "shaded")
+EARLY_Z_KINDS = ("hi_z", "early_z", "shaded", "dropped")
 
 
 @dataclass
@@ -271,22 +271,27 @@ class EarlyZArtists(Artists):
 
 
 def early_z_counts(frame, kind: str = "hi_z") -> np.ndarray:
-    """(H, W) int: fragments per pixel that Hi-Z rejected (``"hi_z"``), early-z killed
-    (``"early_z"``) or that were shaded (``"shaded"``), from ``frame.trace.hiz``."""
+    """(H, W) int: fragments per pixel that a GPU drawing in order would reject by Hi-Z
+    (``"hi_z"``), kill by early-z (``"early_z"``) or shade (``"shaded"``), from
+    ``frame.trace.hiz``; or that the renderer's own Hi-Z dropped before interpolating their
+    depth (``"dropped"``, from ``frame.trace.hiz_tiles``)."""
     check_choice("kind", kind, EARLY_Z_KINDS)
     trace = getattr(frame, "trace", None)
     if trace is None or getattr(trace, "hiz", None) is None:
         raise ValueError("early_z_counts needs tr.render(..., trace=True) with the depth test on")
-    hiz = trace.hiz
-    rejected, passed = hiz.fragment_rejected, hiz.fragment_passed
-    pick = {"hi_z": rejected, "early_z": ~passed & ~rejected, "shaded": passed}[kind]
+    if kind == "dropped":
+        pick = trace.hiz_tiles.fragment_rejected
+    else:
+        rejected, passed = trace.hiz.fragment_rejected, trace.hiz.fragment_passed
+        pick = {"hi_z": rejected, "early_z": ~passed & ~rejected, "shaded": passed}[kind]
     height, width = frame.triangle_id.shape
     flat = trace.fragment_row[pick] * width + trace.fragment_col[pick]
     return np.bincount(flat, minlength=width * height).reshape(height, width)
 
 
 def plot_early_z(ax, frame, kind: str = "hi_z", *, colorbar: bool = True) -> EarlyZArtists:
-    """Per pixel, how many fragments Hi-Z rejected whole, early-z killed, or were shaded.
+    """Per pixel, how many fragments Hi-Z rejected whole, early-z killed, or were shaded
+    (a GPU drawing in order), or the renderer's own Hi-Z dropped (see :func:`early_z_counts`).
 
     Zero is drawn transparent. The title gives the total.
     """
@@ -298,7 +303,12 @@ def plot_early_z(ax, frame, kind: str = "hi_z", *, colorbar: bool = True) -> Ear
     result = EarlyZArtists(im)
     if colorbar:
         result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, label="fragments")
-    name = {"hi_z": "rejected by Hi-Z", "early_z": "killed by early-z", "shaded": "shaded"}[kind]
+    name = {
+        "hi_z": "rejected by Hi-Z",
+        "early_z": "killed by early-z",
+        "shaded": "shaded",
+        "dropped": "dropped by render's Hi-Z",
+    }[kind]
     ax.set_title(f"{int(counts.sum()):,} fragments {name}")
     return result
 
