@@ -23,7 +23,7 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -472,9 +472,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         depth=multi.depth.reshape(height, width),
         plan=plan,
         trace=record,
-        sample_triangle_id=dataclasses.replace(
-            multi.sample_tri, parent=parent
-        ),  # built on first read
+        sample_triangle_id=replace(multi.sample_tri, parent=parent),  # built on first read
         sample_depth=multi.sample_depth,  # built on first read
         sample_attrs=multi.sample_attrs,
         samples=multi.offsets,
