@@ -148,15 +148,14 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
     rank[order] = np.arange(m)
     best = np.full(n_pix, m, dtype=np.int64)
     np.minimum.at(best, f_pix, rank[f_tri])
-    has = best < m  # some triangle covers every sample
-    cand = np.where(has, order[np.minimum(best, m - 1)], -1)
+    cand = np.r_[order, -1][best]  # -1: no triangle covers every sample
     rest = np.full(n_pix, np.inf)
     np.minimum.at(rest, f_pix, np.where(f_tri == cand[f_pix], np.inf, z_lo[f_tri]))
     np.minimum.at(rest, frags.part_pixel, z_lo[frags.part_tri])
-    winner = np.where(has & (z_hi[cand] < rest), cand, -1)
+    winner = np.where(np.r_[z_hi, np.inf][cand] < rest, cand, -1)  # index -1 reads inf
     shared = rest < np.inf  # another triangle reaches the pixel (where one covers it all)
     # where the triangles' own depth ranges overlap: the planes over the pixel square
-    left = has & (winner < 0)
+    left = (cand >= 0) & (winner < 0)
     sel, p_sel = np.flatnonzero(left[f_pix]), np.flatnonzero(left[frags.part_pixel])
     if len(sel):
         full = f_pix[sel], f_tri[sel]
