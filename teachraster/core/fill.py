@@ -165,7 +165,12 @@ def rasterize(
         )  # fmt: skip
     if multi is not None:
         return _multi_result(multi, layout, fill_trace)
-    attrs = _unpack(_place(coverage, values[interpolation]), layout)
+    return _centre_fill(coverage, values[interpolation], depth_values, layout, fill_trace)
+
+
+def _centre_fill(coverage, values, depth_values, layout, fill_trace) -> Fill:
+    """The :class:`Fill` of per-pixel values (row-major, None: nothing was interpolated)."""
+    attrs = {} if values is None else _unpack(_place(coverage, values), layout)
     depth = None if depth_values is None else _place(coverage, depth_values)
     return Fill(coverage=coverage, attrs=attrs, depth=depth, trace=fill_trace)
 
@@ -187,11 +192,11 @@ def _interpolate_centres(tri, setup, coverage, packed, interpolation, subdivisio
 
     A trace records both affine and perspective-correct values, whatever mode was asked.
     """
-    rows, cols = np.nonzero(coverage)
     if packed.shape[1] == 0 and tri.z is None and not trace:
         # Nothing to interpolate and nothing to record: weights would be computed for no one
         # (a coverage-only fill then costs what its algorithm costs, nothing more).
-        return None, {interpolation: np.zeros((len(rows), 0))}, None
+        return None, {interpolation: None}, None
+    rows, cols = np.nonzero(coverage)
     lam = barycentric_pixels(setup, rows, cols)
     width = coverage.shape[1]
     modes = MODES if trace else (interpolation,)
