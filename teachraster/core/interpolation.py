@@ -235,8 +235,7 @@ def _unclamped(weights: np.ndarray, flat: np.ndarray) -> np.ndarray:
     """``weights @ flat`` for extrapolation, flat (3, m): columns of huge values first scaled
     by a power of two (exact), so that the sum overflows only where its true value does
     (then ±inf, as a GPU's float would), never ``inf - inf = NaN`` from two large terms."""
-    _, e = np.frexp(np.abs(flat).max(axis=0))
-    e = np.where(e > HUGE_EXP, e, 0)
+    e = huge_exponents(flat[None])[0]
     with np.errstate(over="ignore", invalid="ignore"):
         if not e.any():
             return weights @ flat
