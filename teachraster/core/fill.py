@@ -180,7 +180,7 @@ def _shade_whole_blocks(tri, setup, coverage, packing, interpolation, block_size
     same values, bit for bit: :mod:`.block_shading`)."""
     packed, layout = packing
     if packed.shape[1] == 0 and tri.z is None:  # coverage only: nothing to shade
-        return Fill(coverage=coverage, attrs={}, depth=None)
+        return _centre_fill(coverage, None, None, layout, None)
     image, depth = shade_blocks(tri, setup, coverage, packed, interpolation,
                                 cell_size(block_sizes))  # fmt: skip
     return Fill(coverage=coverage, attrs=_unpack(image, layout), depth=depth)

@@ -23,7 +23,7 @@ from ..core.bbox import centre_ranges
 from ..core.edges import facing, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, check_bits
 from ..core.span_tables import edge_bounds
-from ..core.validate import as_bool, as_finite, as_size, check_pixels
+from ..core.validate import as_bool, as_finite, as_size, check_pixels, short_repr
 
 
 @dataclass(frozen=True)
@@ -233,7 +233,9 @@ def _checked(xy, width, height, bits, skip, snapped_weights, max_pixels):
     if skip is not None:
         skip = np.asarray(skip)
         if skip.dtype != bool or skip.shape != (len(xy),):
-            raise ValueError(f"skip must be a bool array of shape ({len(xy)},), got {skip!r}")
+            raise ValueError(
+                f"skip must be a bool array of shape ({len(xy)},), got {short_repr(skip)}"
+            )
     return (xy, width, height, check_bits(bits), skip,
             as_bool("snapped_weights", snapped_weights))  # fmt: skip
 
