@@ -75,6 +75,15 @@ class Report:
             lines.append(f"  ... and {len(self.failures) - SHOWN} more (see report.failures)")
         return "\n".join(lines)
 
+    def assert_passed(self) -> None:
+        """Do nothing when the report passed; else raise ``AssertionError`` with its summary.
+
+        This is what an nbgrader test cell calls: a failing exercise scores 0 and the
+        feedback carries the checker's explanation.
+        """
+        if not self.passed:
+            raise AssertionError(str(self))
+
     def _repr_pretty_(self, p, cycle) -> None:  # IPython shows the summary, not the fields
         p.text(str(self))
 
