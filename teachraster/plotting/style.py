@@ -64,10 +64,15 @@ SIGNED_CMAP = "RdBu"
 _CYCLE = cycler(color=[OKABE_ITO[k] for k in ("blue", "orange", "bluish_green", "vermillion",
                                                "reddish_purple", "sky_blue", "yellow", "black")])  # fmt: skip
 
+#: Widest figure, in pixels, that fits a JupyterLab notebook column at 1400 x 900 with the file
+#: browser open (about 970 px, less the output area's padding): a lesson figure is at most this
+#: wide at the classroom style's dpi, so its text is shown at the style's size, never shrunk.
+COLUMN_WIDTH_PX = 940
+
 #: rcParams of each named style ("default" is matplotlib's own defaults).
 STYLES: dict[str, Mapping[str, object]] = {
     "classroom": {
-        "figure.figsize": (10.0, 7.5),
+        "figure.figsize": (9.0, 6.0),  # fits COLUMN_WIDTH_PX at figure.dpi
         "figure.dpi": 100,
         "savefig.dpi": 150,
         "font.size": 18,
