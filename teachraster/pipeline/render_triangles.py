@@ -30,10 +30,12 @@ import numpy as np
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
 from ..core.validate import as_bool
+from .frame_history import DebugInputs, PixelHistory, pixel_history
 from .hierarchical_z import HiZResult, replay_stage
 from .hiz_tiles import HiZCut, HiZTiles
 from .inputs import check_render
 from .multisampling import multisample_stage
+from .overlays import overlay
 from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
 from .render_plan import Plan, depth_test_effect, hi_z_effect
 from .stages import (
@@ -80,6 +82,10 @@ class RenderTrace:
     hiz_tiles : HiZTiles or None
         The renderer's own Hi-Z: tile bounds and, per fragment, whether it was rejected
         (None without the depth test).
+    debug : DebugInputs or None
+        What :meth:`Frame.history` and :meth:`Frame.overlay` need beyond the fragments
+        (the checked inputs, the clipped triangles, the fill's fragments); references
+        only, nothing is copied.
     """
 
     clip_status: np.ndarray
@@ -96,6 +102,7 @@ class RenderTrace:
     quads: QuadTrace | None = None
     hiz: HiZResult | None = None
     hiz_tiles: HiZTiles | None = None
+    debug: DebugInputs | None = None
 
 
 class _OnFirstUse:
@@ -215,6 +222,18 @@ class Frame:
         covered = (ids >= 0).reshape(*ids.shape, *([1] * (values.ndim - 3)))
         bg = np.broadcast_to(np.asarray(background, dtype=np.float64), values.shape[3:])
         return np.where(covered, values, bg).mean(axis=2)
+
+    def history(self, row: int, col: int) -> PixelHistory:
+        """Every triangle on the way to pixel (``row``, ``col``), in submission order, with
+        the first test that stopped it (needs ``trace=True``; see
+        :mod:`teachraster.pipeline.frame_history`)."""
+        return pixel_history(self, row, col)
+
+    def overlay(self, kind: str) -> np.ndarray:
+        """(H, W) debug view: "overdraw", "depth_complexity", "quad_overshading",
+        "triangle_size", "hi_z" or "nan" (needs ``trace=True`` except "nan"; see
+        :mod:`teachraster.pipeline.overlays`)."""
+        return overlay(self, kind)
 
 
 def render(
@@ -375,7 +394,8 @@ def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid)
         clipped, window, culled, size, a.subpixel_bits, offsets, options, a.forced
     )
     plan = Plan((*effects, *more))
-    return _multi_frame(multi, clipped, window, culled, size, plan, a.trace)
+    debug = DebugInputs(a, clipped, multi.offsets, centroid, None) if a.trace else None
+    return _multi_frame(multi, clipped, window, culled, size, plan, debug)
 
 
 def _check_samples(samples, centroid):
@@ -433,7 +453,7 @@ def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=Non
     )
 
 
-def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
+def _multi_frame(multi, clipped, window, culled, size, plan, debug) -> Frame:
     """The :class:`Frame` of a multisampled render (input triangle ids, (H, W, ...) images)."""
     width, height = size
     k = clipped.attrs.shape[2]
@@ -446,7 +466,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
         return sub if parent is None else np.r_[parent, -1][sub]
 
     record = None
-    if trace:  # the per-sample entries in drawing order, then the pixels decided whole
+    if debug is not None:  # the per-sample entries in drawing order, then the pixels decided whole
         r = dict(multi.record)
         slot = r["pixel"] * len(multi.offsets) + r["sample"]
         order = np.argsort(slot * r["n_tri"] + r["tri"])  # by sample, drawing order inside
@@ -465,6 +485,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, trace) -> Frame:
                 np.ones(len(r["whole_tri"]), dtype=bool),
             ]),
             np.concatenate([r["sample"], np.full(len(r["whole_tri"]), -1)]),
+            debug=debug,
         )  # fmt: skip
     return Frame(
         triangle_id=ids(multi.owner).reshape(height, width),
@@ -483,6 +504,7 @@ def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTra
     """The trace of every stage (plain arrays, see :class:`RenderTrace`), with the replay of
     a GPU's early-z and Hi-Z in drawing order; ``a`` are the checked inputs."""
     width, height, depth_format = a.width, a.height, a.depth_format
+    hiz = replay_stage(frags, window, visible, width, height, depth_format)
     return RenderTrace(
         clip_status=clipped.status,
         clip_polygons=clipped.polygons,
@@ -493,8 +515,10 @@ def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTra
         fragment_row=frags.row,
         fragment_col=frags.col,
         fragment_depth=visible.depth,
-        fragment_passed=visible.passed,
+        # the replay already ran the test in drawing order: the same answers, once
+        fragment_passed=visible.passed if hiz is None else hiz.fragment_passed,
         quads=quads,
-        hiz=replay_stage(frags, window, visible, width, height, depth_format),
+        hiz=hiz,
         hiz_tiles=None if cut is None else cut.result,
+        debug=DebugInputs(a, clipped, None, False, frags),
     )

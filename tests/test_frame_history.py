@@ -1,0 +1,215 @@
+"""Pixel history and overlays (issue 21): exact, in submission order, free without a trace.
+
+The key property: replaying a pixel's history (its "passed" records, in order) gives the
+frame's triangle and depth at every sample bit for bit, on random scenes (overlaps, depth
+ties, clipping, culling, depth test off, quantised depth) and on every built-in scene, at 1×
+and 4× MSAA; the records' counts add up to the "overdraw" and "depth_complexity" overlays;
+and recording changes nothing (traced == untraced frames, bit for bit).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from test_plan import random_scene
+from test_render import H, W, clip_from_window
+
+import teachraster as tr
+from teachraster.pipeline.frame_history import OUTCOMES
+from teachraster.pipeline.overlays import KINDS
+from teachraster.pipeline.scenes import SCENES, get_scene
+
+
+def assert_identical(a, b, msg=""):
+    for name in ("triangle_id", "depth", "attrs"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=f"{msg} {name}")
+    if a.samples is not None:
+        for name in ("sample_triangle_id", "sample_depth"):
+            np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=msg)
+
+
+def check_every_pixel(frame, msg=""):
+    """Replay every pixel's history against the frame and the overlays."""
+    height, width = frame.triangle_id.shape
+    overdraw = frame.overlay("overdraw")
+    complexity = frame.overlay("depth_complexity")
+    ids = frame.sample_triangle_id
+    depths = frame.sample_depth
+    if ids is None:
+        ids, depths = frame.triangle_id[..., None], frame.depth[..., None]
+    for row in range(height):
+        for col in range(width):
+            h = frame.history(row, col)
+            where = f"{msg} pixel ({row}, {col})\n{h}"
+            tri, depth = h.replay()
+            np.testing.assert_array_equal(tri, ids[row, col], err_msg=where)
+            np.testing.assert_array_equal(depth, depths[row, col], err_msg=where)
+            assert set(h.outcomes) <= set(OUTCOMES), where
+            covered = sum(o in ("hi_z", "failed_depth", "passed") for o in h.outcomes)
+            assert covered == overdraw[row, col], where
+            assert h.outcomes.count("passed") == complexity[row, col], where
+            orders = [(r.piece, r.sample) for r in h.records]
+            assert orders == sorted(orders), where  # submission order, then sample
+            shown = [r for r in h.records if r.shown]
+            assert sorted(r.sample for r in shown) == np.flatnonzero(tri >= 0).tolist(), where
+            if frame.samples is None and shown:
+                np.testing.assert_allclose(shown[0].value, frame.attrs[row, col], rtol=0,
+                                           atol=1e-12, err_msg=where)  # fmt: skip
+
+
+@pytest.mark.parametrize("samples", [1, 4])
+def test_replay_reproduces_random_scenes(rng, samples):
+    for index in range(24):
+        clip, attrs, kw = random_scene(rng, index)
+        frame = tr.render(clip, W, H, attrs=attrs, samples=samples, trace=True, **kw)
+        plain = tr.render(clip, W, H, attrs=attrs, samples=samples, **kw)
+        msg = f"scene {index} {kw} samples={samples}"
+        assert_identical(frame, plain, msg)
+        check_every_pixel(frame, msg)
+
+
+@pytest.mark.parametrize("name", list(SCENES))
+@pytest.mark.parametrize("samples", [1, 4])
+def test_replay_reproduces_builtin_scenes(name, samples):
+    frame = tr.render(get_scene(name), None, 32, 24, samples=samples, trace=True)
+    plain = tr.render(get_scene(name), None, 32, 24, samples=samples)
+    assert_identical(frame, plain, name)
+    check_every_pixel(frame, name)
+
+
+@settings(max_examples=25)
+@given(
+    st.lists(st.tuples(st.integers(0, 12), st.integers(0, 10)), min_size=3, max_size=12),
+    st.lists(st.sampled_from([0.2, 0.4, 0.4, 0.6]), min_size=4, max_size=4),
+    st.sampled_from([1, 4]),
+    st.booleans(),
+)
+def test_replay_on_overlaps_and_ties(points, depths, samples, depth_test):
+    """Triangles on integer corners (shared edges, exact ties of depth) replay exactly."""
+    n = len(points) // 3
+    xy = np.array(points[: 3 * n], dtype=float).reshape(n, 3, 2)
+    z = np.array([depths[i % 4] for i in range(n)])[:, None].repeat(3, axis=1)
+    clip = clip_from_window(xy, z, width=12, height=10)
+    frame = tr.render(clip, 12, 10, samples=samples, depth_test=depth_test, trace=True)
+    check_every_pixel(frame)
+
+
+def test_history_records_say_why():
+    # 0: a far triangle, 1: a near one over it, 2: a sliver, 3: culled (clockwise on screen)
+    xy = np.array([[[1, 1], [1, 11], [15, 1]], [[2, 2], [2, 10], [14, 2]],
+                   [[0, 4.0], [0, 4.1], [16, 5.0]], [[1, 1], [15, 1], [1, 11]]], float)  # fmt: skip
+    clip = clip_from_window(xy, np.array([0.8, 0.3, 0.1, 0.05])[:, None], width=16, height=12)
+    frame = tr.render(clip, 16, 12, attrs=np.arange(12.0).reshape(4, 3), cull="back",
+                      trace=True)  # fmt: skip
+    h = frame.history(4, 4)
+    assert [r.triangle for r in h] == [0, 1, 2, 3]
+    assert h.outcomes == ["passed", "passed", "not_covered", "culled"]
+    assert h[0].hidden_by == 1 and not h[0].shown and h[1].shown
+    assert h[0].depth_before == np.inf and h[1].depth_before == h[0].depth == 0.8
+    assert h[1].depth_after == 0.3
+    assert h[2].edge is not None and h[2].outside > 0
+    text = str(h)
+    assert "hidden by 1" in text and "passed (shown)" in text and "outside edge" in text
+    assert "culled" in text and "row 4, col 4" in text
+    # with the far triangle drawn last it fails the depth test
+    late = tr.render(clip[[1, 0]], 16, 12, trace=True).history(4, 4)
+    assert late.outcomes == ["passed", "failed_depth"]
+    assert late[1].depth_before == 0.3
+
+
+def test_hi_z_outcome_matches_the_in_order_replay():
+    # a near square drawn first, then a far one: Hi-Z rejects the far one's blocks
+    quad = np.array([[[0, 0], [32, 0], [0, 32]], [[32, 0], [32, 32], [0, 32]]], float)
+    clip = np.concatenate([clip_from_window(quad, 0.2, width=32, height=32),
+                           clip_from_window(quad, 0.7, width=32, height=32)])  # fmt: skip
+    frame = tr.render(clip, 32, 32, trace=True)
+    assert frame.overlay("hi_z").sum() == frame.trace.hiz.counts["hiz_rejected"] > 0
+    h = frame.history(20, 20)
+    assert "hi_z" in h.outcomes and h.outcomes.count("passed") == 1
+    assert frame.overlay("hi_z")[20, 20] == h.outcomes.count("hi_z")
+
+
+def test_overlays_count_samples_and_depth_test_off():
+    clip = clip_from_window([[[-1, -1], [40, -1], [-1, 40]], [[-1, -1], [40, -1], [-1, 40]]],
+                            np.array([[0.5], [0.3]]), width=8, height=8)  # fmt: skip
+    one = tr.render(clip, 8, 8, trace=True)
+    four = tr.render(clip, 8, 8, samples=4, trace=True)
+    assert (one.overlay("overdraw") == 2).all() and (four.overlay("overdraw") == 8).all()
+    assert (one.overlay("depth_complexity") == 2).all()  # the second is nearer: passes too
+    assert (four.overlay("depth_complexity") == 8).all()
+    back = tr.render(clip[::-1], 8, 8, samples=4, trace=True)
+    assert (back.overlay("depth_complexity") == 4).all()
+    off = tr.render(clip[::-1], 8, 8, samples=4, trace=True, depth_test=False)
+    np.testing.assert_array_equal(off.overlay("depth_complexity"), off.overlay("overdraw"))
+    assert (one.overlay("triangle_size") == 64).all()
+    assert (one.overlay("quad_overshading") == 0).all()
+
+
+def test_overlays_are_zero_not_nan_where_nothing_arrives():
+    clip = clip_from_window([[[1, 1], [3, 1], [1, 3]]], 0.5, width=8, height=8)
+    for samples in (1, 4):
+        frame = tr.render(clip, 8, 8, trace=True, samples=samples)
+        for kind in KINDS:
+            out = frame.overlay(kind)
+            assert out.shape == (8, 8) and np.isfinite(out).all(), kind
+            assert out[7, 7] == 0, kind
+    small = tr.render(clip, 8, 8, trace=True)
+    assert small.overlay("quad_overshading")[1, 1] == 0.75  # one pixel shaded in its quad
+    assert small.overlay("triangle_size")[1, 1] == small.coverage.sum()
+
+
+def test_nan_overlay_counts_non_finite_values():
+    frame = tr.render(get_scene("textured_floor"), None, 32, 24)
+    assert frame.overlay("nan").sum() == 0  # no trace needed
+    frame.attrs[3, 4, 0] = np.nan  # a corrupted frame shows up
+    if frame.coverage[3, 4]:
+        assert frame.overlay("nan")[3, 4] == 1
+
+
+def test_overdraw_matches_an_independent_count(rng):
+    for index in range(10):
+        clip, attrs, kw = random_scene(rng, index)
+        frame = tr.render(clip, W, H, attrs=attrs, trace=True, samples=4, **kw)
+        count = np.zeros((H, W), dtype=np.int64)
+        t = frame.trace
+        for piece, v in enumerate(t.window):
+            if t.culled[piece]:
+                continue
+            fill = tr.rasterize(tr.Triangle(v[:, :2]), W, H, samples=4)
+            count += fill.sample_coverage.sum(axis=2)
+        np.testing.assert_array_equal(frame.overlay("overdraw"), count, err_msg=str(kw))
+
+
+def test_no_trace_no_history_and_bad_arguments():
+    clip = clip_from_window([[[1, 1], [7, 1], [1, 7]]], 0.5, width=8, height=8)
+    plain = tr.render(clip, 8, 8)
+    assert plain.trace is None
+    with pytest.raises(ValueError, match="trace=True"):
+        plain.history(1, 1)
+    with pytest.raises(ValueError, match="trace=True"):
+        plain.overlay("overdraw")
+    frame = tr.render(clip, 8, 8, trace=True)
+    with pytest.raises(ValueError, match="kind"):
+        frame.overlay("wireframe")
+    with pytest.raises(ValueError, match="row"):
+        frame.history(8, 0)
+    with pytest.raises(ValueError, match="col"):
+        frame.history(0, -1)
+    with pytest.raises(TypeError, match="row"):
+        frame.history(1.5, 0)
+    assert frame.history(np.int64(2), 2).row == 2
+    assert len(frame.history(7, 7)) == 0 and "no triangle" in str(frame.history(7, 7))
+
+
+def test_history_plot_returns_artists():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    frame = tr.render(get_scene("intersecting_triangles"), None, 32, 24, trace=True)
+    fig, ax = plt.subplots()
+    artists = frame.history(12, 16).plot(ax)
+    assert artists
+    plt.close(fig)
