@@ -213,3 +213,18 @@ def test_history_plot_returns_artists():
     artists = frame.history(12, 16).plot(ax)
     assert artists
     plt.close(fig)
+
+
+def test_history_benchmark_quick_run_succeeds(capsys):
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_history.py"
+    spec = importlib.util.spec_from_file_location("bench_history", path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["bench_history"] = module
+    spec.loader.exec_module(module)
+    assert module.main(["--quick", "--repeat", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "trace=True + all six overlays" in out and "pixel history" in out

@@ -28,7 +28,7 @@ the last one drawn shows.
 from __future__ import annotations
 
 import operator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -58,6 +58,8 @@ class DebugInputs:
     centroid : bool
     fragments : Fragments or None
         The single-sample fill's fragments (None with MSAA).
+    cache : dict
+        What the overlays computed once for this frame (filled on first use).
     """
 
     inputs: object
@@ -65,6 +67,7 @@ class DebugInputs:
     offsets: np.ndarray | None
     centroid: bool
     fragments: object
+    cache: dict = field(default_factory=dict, compare=False, repr=False)
 
 
 @dataclass(frozen=True)

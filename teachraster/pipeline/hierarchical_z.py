@@ -66,8 +66,9 @@ class HiZResult:
     tile_farthest : (b,) float64
         The tile's largest stored depth when the triangle arrived (inf: not yet full);
         NaN where not needed: untested, nearer than the tile's *final* maximum (the
-        buffer only gets nearer, so such a block can never be rejected), or arriving
-        while a pixel of the tile is still empty (the maximum is then inf).
+        buffer only gets nearer, so such a block can never be rejected), arriving
+        while a pixel of the tile is still empty (the maximum is then inf), or at least
+        as far as the largest *first* depth over the tile's pixels (rejected for sure).
     fragment_block : (m,) int64
         The block of every fragment.
     fragment_passed : (m,) bool
@@ -124,9 +125,8 @@ def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, heig
     contested = count[visible.pixel] > 1  # depth complexity above one at the fragment
     tiles_x = -(-width // tile)
     tile_id = (frags.row // tile) * tiles_x + frags.col // tile
-    keys, block = np.unique(frags.tri * (tiles_x * -(-height // tile)) + tile_id,
-                            return_inverse=True)  # fmt: skip
     n_tiles = tiles_x * -(-height // tile)
+    keys, block = _unique_runs(frags.tri * n_tiles + tile_id)
     block_tri, block_tile = keys // n_tiles, keys % n_tiles
     b_row, b_col = (block_tile // tiles_x) * tile, (block_tile % tiles_x) * tile
     open_pixels = np.bincount(block, weights=~contested, minlength=len(keys))
@@ -134,6 +134,7 @@ def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, heig
     arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri, width * height)
     nearest = np.full(len(keys), np.nan)
     farthest = np.full(len(keys), np.nan)
+    rejected = np.zeros(len(keys), dtype=bool)
     idx = np.flatnonzero(tested)
     if len(idx):
         nearest[idx] = _corner_depths(frags, window, block_tri[idx], b_row[idx], b_col[idx],
@@ -141,15 +142,33 @@ def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, heig
         # The buffer only ever gets nearer, so the tile's final maximum bounds its maximum
         # at any arrival from below: a block nearer than that somewhere is never rejected,
         # and only the others need the buffer as it was (the costly part).
-        final = _final_tile_max(visible, (height, width), tile)[block_tile[idx]]
+        final = arrivals.tile_final((height, width), tile)[block_tile[idx]]
         ready = arrivals.tile_ready((height, width), tile)[block_tile[idx]]
         # ... and a tile with a pixel no earlier triangle reached is still open (inf).
         idx = idx[(nearest[idx] >= final) & (ready < block_tri[idx])]
+        # Every pixel of such a tile holds a depth no farther than its first fragment's,
+        # so a block at least as far as the tile's largest first depth is rejected for
+        # sure, without the buffer as it was (most hidden blocks of a closed mesh).
+        sure = nearest[idx] >= arrivals.tile_first((height, width), tile)[block_tile[idx]]
+        rejected[idx[sure]] = True
+        idx = idx[~sure]
         farthest[idx] = arrivals.tile_farthest(block_tri[idx], b_row[idx], b_col[idx],
                                                (height, width), tile)  # fmt: skip
-    rejected = tested & (nearest >= farthest)
+    rejected |= tested & (nearest >= farthest)
     return HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
                      block, arrivals.passed)  # fmt: skip
+
+
+def _unique_runs(key: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(key, return_inverse=True)`` for keys that come in runs (the fragments of
+    one raster line in one tile): only the runs' first keys are sorted, a few times fewer."""
+    if len(key) == 0:
+        return key, np.zeros(0, dtype=np.int64)
+    new = np.empty(len(key), dtype=bool)
+    new[0] = True
+    np.not_equal(key[1:], key[:-1], out=new[1:])
+    keys, inverse = np.unique(key[new], return_inverse=True)
+    return keys, inverse.reshape(-1)[np.cumsum(new) - 1]
 
 
 def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> np.ndarray:
@@ -165,18 +184,6 @@ def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> n
     return depth.reshape(-1, 4).min(axis=1)
 
 
-def _final_tile_max(visible, image, tile) -> np.ndarray:
-    """Largest final buffer depth of every tile (inf where a pixel stays empty)."""
-    height, width = image
-    ty, tx = -(-height // tile), -(-width // tile)
-    buffer = np.full((ty * tile, tx * tile), -np.inf)  # pixels beyond the image: ignored
-    buffer[:height, :width] = np.inf
-    flat = buffer[:height, :width].reshape(-1).copy()
-    np.minimum.at(flat, visible.pixel, visible.depth)
-    buffer[:height, :width] = flat.reshape(height, width)
-    return buffer.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
-
-
 class _Arrivals:
     """The z-buffer as each fragment found it: fragments grouped by pixel (drawing order
     kept inside a group) with the running minimum of their stored depths."""
@@ -185,16 +192,19 @@ class _Arrivals:
         m = len(pixel)
         # Fragments come in drawing order (by triangle), so a stable sort by pixel orders
         # each pixel's fragments by triangle.
-        order = np.argsort(pixel, kind="stable")
+        # (32-bit keys sort faster, and pixel indices fit them: sizes stay below 2**28)
+        key = pixel.astype(np.int32) if n_pixels < 2**31 else pixel
+        order = np.argsort(key, kind="stable")
         self.tri = tri[order]
         self.count = np.bincount(pixel, minlength=n_pixels)
         self.start = np.cumsum(self.count) - self.count  # each pixel's first fragment
-        self.running = _running_min(pixel[order], depth[order], int(self.count.max(initial=0)))
+        sorted_depth = depth[order]
+        self.running = _running_min(key[order], sorted_depth, int(self.count.max(initial=0)))
         first = np.zeros(m, dtype=bool)
         first[self.start[self.count > 0]] = True
         before = np.where(first, np.inf, np.r_[np.inf, self.running[:-1]])
         self.passed = np.empty(m, dtype=bool)  # strictly nearer than all before it
-        self.passed[order] = depth[order] < before
+        self.passed[order] = sorted_depth < before
 
     def tile_ready(self, image, tile) -> np.ndarray:
         """Per tile, the triangle after which every pixel of it holds a depth (the largest
@@ -208,6 +218,31 @@ class _Arrivals:
         arrival[reached] = self.tri[self.start[reached]]
         first[:height, :width] = arrival.reshape(height, width)
         return first.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
+
+    def tile_final(self, image, tile) -> np.ndarray:
+        """Largest final buffer depth of every tile (inf where a pixel stays empty): the
+        running minimum at each pixel's last fragment."""
+        reached = self.count > 0
+        return self._tile_max(self.running[(self.start + self.count - 1)[reached]], reached,
+                              image, tile)  # fmt: skip
+
+    def tile_first(self, image, tile) -> np.ndarray:
+        """Per tile, the largest depth of the first fragment over its pixels (inf where a
+        pixel is never reached): a bound from above on the tile's maximum once every pixel
+        holds a depth, since each pixel only gets nearer."""
+        reached = self.count > 0
+        return self._tile_max(self.running[self.start[reached]], reached, image, tile)
+
+    @staticmethod
+    def _tile_max(values, reached, image, tile) -> np.ndarray:
+        """Per tile, the largest of ``values`` at the ``reached`` pixels (inf if one is not)."""
+        height, width = image
+        ty, tx = -(-height // tile), -(-width // tile)
+        grid = np.full((ty * tile, tx * tile), -np.inf)  # pixels beyond the image: ignored
+        depth = np.full(height * width, np.inf)
+        depth[reached] = values
+        grid[:height, :width] = depth.reshape(height, width)
+        return grid.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
 
     def tile_farthest(self, tri, row, col, image, tile) -> np.ndarray:
         """Largest buffer depth over each tile just before triangle ``tri`` arrives (inf

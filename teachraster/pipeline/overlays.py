@@ -100,6 +100,14 @@ class Work:
 
 
 def _work(frame) -> Work:
+    """The frame's :class:`Work`, built once per frame (kept in the trace's debug cache)."""
+    cache = frame.trace.debug.cache
+    if "work" not in cache:
+        cache["work"] = _build_work(frame)
+    return cache["work"]
+
+
+def _build_work(frame) -> Work:
     trace = frame.trace
     dbg = trace.debug
     if dbg.offsets is None:
@@ -125,13 +133,14 @@ def _sample_work(trace, dbg) -> Work:
     setup = setup_edges(window[:, :, :2], a.subpixel_bits)
     live = (np.asarray(setup.original_area2) != 0) & ~trace.culled
     units = offsets_in_units(dbg.offsets, setup)
-    n_s, m = len(dbg.offsets), len(window)
+    n_s = len(dbg.offsets)
     frags = sample_fragments(setup, live, units, a.width, a.height, False)
     full = np.full(len(frags.full_pixel), (1 << n_s) - 1, dtype=np.int64)
     pixel = np.concatenate([frags.full_pixel, frags.part_pixel])
     piece = np.concatenate([frags.full_tri, frags.part_tri])
     mask = np.concatenate([full, frags.part_mask])
-    order = np.argsort(pixel * m + piece, kind="stable")  # by pixel, drawing order inside
+    # drawing order: by triangle, then raster line and column (as the fill's fragments)
+    order = np.argsort(piece * (a.width * a.height) + pixel)
     pixel, piece, mask = pixel[order], piece[order], mask[order]
     bits = (mask[:, None] >> np.arange(n_s)) & 1
     pair, sample = np.nonzero(bits)
@@ -158,13 +167,31 @@ def quad_overshading(work: Work, width: int, height: int) -> np.ndarray:
     qw, qh = -(-width // 2), -(-height // 2)
     quad = (row // 2) * qw + col // 2
     n_q = qw * qh
-    groups = np.unique(piece.astype(np.int64) * n_q + quad)  # (triangle, quad) pairs
-    launched = 4 * np.bincount(groups % n_q, minlength=n_q)
+    launched = 4 * np.bincount(_quad_groups(piece * n_q + quad, row) % n_q, minlength=n_q)
     useful = np.bincount(quad, minlength=n_q)
     with np.errstate(invalid="ignore", divide="ignore"):
         frac = np.where(launched > 0, (launched - useful) / np.maximum(launched, 1), 0.0)
     grid = frac.reshape(qh, qw).repeat(2, axis=0).repeat(2, axis=1)
     return grid[:height, :width]
+
+
+def _quad_groups(key: np.ndarray, row: np.ndarray) -> np.ndarray:
+    """The distinct (triangle, quad) keys of fragments in drawing order, without sorting.
+
+    In drawing order (triangle, raster line, column) the keys of the even rows alone
+    ascend, and so do those of the odd rows, each key at most twice in a row (the quad's
+    two columns): each half is made unique by comparing neighbours, and the odd half's
+    keys already in the even half are dropped with one ``searchsorted``.
+    """
+    even = key[row % 2 == 0]
+    odd = key[row % 2 == 1]
+    if np.any(even[1:] < even[:-1]) or np.any(odd[1:] < odd[:-1]):
+        return np.unique(key)  # not in drawing order: sort
+    even = even[np.r_[True, even[1:] != even[:-1]]] if len(even) else even
+    odd = odd[np.r_[True, odd[1:] != odd[:-1]]] if len(odd) else odd
+    at = np.minimum(np.searchsorted(even, odd), max(len(even) - 1, 0))
+    seen = even[at] == odd if len(even) else np.zeros(len(odd), dtype=bool)
+    return np.concatenate([even, odd[~seen]])
 
 
 def non_finite(frame) -> np.ndarray:
