@@ -417,8 +417,14 @@ def draw_history(ax, h: PixelHistory):
     x = np.arange(n)
     depth = np.array([r.depth for r in h.records]) if n else np.zeros(0)
     colors = [OUTCOME_COLORS[r.outcome] for r in h.records]
-    shown = np.where(np.isnan(depth), 0.0, depth)
-    artists.append(ax.bar(x, shown, color=colors, edgecolor="k", linewidth=0.5))
+    every = [v for r in h.records for v in (r.depth, r.depth_before, r.depth_after)]
+    every = [v for v in every if np.isfinite(v)]
+    lo, hi = (min(every), max(every)) if every else (0.0, 1.0)
+    pad = max(hi - lo, 1e-6) * 0.25
+    bottom = lo - pad  # bars rise from below the nearest depth: differences show
+    shown = np.where(np.isnan(depth), 0.0, depth - bottom)
+    artists.append(ax.bar(x, shown, bottom=bottom, color=colors, edgecolor="k", linewidth=0.5))
+    ax.set_ylim(bottom, hi + pad)
     for name, key, marker in (("before", "depth_before", "o"), ("after", "depth_after", ".")):
         v = np.array([getattr(r, key) for r in h.records]) if n else np.zeros(0)
         v = np.where(np.isinf(v), np.nan, v)
@@ -431,7 +437,8 @@ def draw_history(ax, h: PixelHistory):
     ax.set_title(f"history of pixel (row {h.row}, col {h.col})", fontsize="small")
     for name, color in OUTCOME_COLORS.items():
         if name in h.outcomes:
-            artists.append(ax.bar([0], [0], color=color, edgecolor="k", linewidth=0.5, label=name))
+            artists.append(ax.bar([0], [0], bottom=bottom, color=color, edgecolor="k",
+                                  linewidth=0.5, label=name))  # fmt: skip
     if n:
         artists.append(ax.legend(fontsize="x-small", loc="best"))
     return artists

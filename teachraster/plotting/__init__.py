@@ -59,6 +59,13 @@ Texture filtering (lesson 09)
 - :func:`plot_pyramid` -- a mip pyramid, level 0 and the smaller levels beside it.
 - :func:`plot_filters` -- filtered renders side by side with their error against the truth.
 
+Frame debugging (``frame = tr.render(..., trace=True)``, :mod:`.frame_debug`)
+--------------------------------------------------------------------------
+- :func:`plot_overlay` -- ``frame.overlay(kind)``: overdraw, depth complexity, quad
+  overshading, triangle size, Hi-Z, NaN, with a colour bar in numbers.
+- :func:`plot_history` -- one pixel's history: a bar per fragment at its depth, coloured
+  by outcome, the depth buffer before and after.
+
 Views (draw once, then update in place; for widgets and animations)
 -------------------------------------------------------------------
 - :class:`FillView` -- step through a fill: ``show_step(k)``, ``set_fill(new_fill)``;
@@ -81,6 +88,7 @@ from .antialiasing import (
     plot_pixel_samples,
     plot_samples,
 )
+from .frame_debug import HistoryArtists, OverlayArtists, plot_history, plot_overlay
 from .images import (
     HeatmapArtists,
     ImageArtists,
@@ -224,4 +232,8 @@ __all__ = [
     "plot_visit_order",
     "use_style",
     "visit_order",
+    "HistoryArtists",
+    "OverlayArtists",
+    "plot_history",
+    "plot_overlay",
 ]

@@ -1,0 +1,125 @@
+"""Frame debugging views: an overlay of the whole frame and the history of one pixel.
+
+:func:`plot_overlay` draws ``frame.overlay(kind)`` (see
+:mod:`teachraster.pipeline.overlays`) with a colour bar that says what a colour means in
+numbers: counts get one colour per integer (0 light grey, never hidden), the quad
+overshading a fraction of helper lanes from 0 to 3/4, the triangle size a log scale of
+pixels. :func:`plot_history` draws ``frame.history(row, col)``: one bar per record at the
+fragment's depth, coloured by outcome, with the depth buffer before and after it.
+Both read the frame's trace; neither recomputes an algorithm.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import matplotlib as mpl
+import numpy as np
+from matplotlib.colors import BoundaryNorm, ListedColormap, LogNorm, Normalize
+
+from ..core.validate import check_choice
+from ..pipeline.overlays import KINDS
+from .common import Artists, pixel_axes, show_image
+from .style import ERROR_CMAP, VALUE_CMAP
+
+#: What one unit of each overlay is, for the colour bar.
+OVERLAY_LABELS = {
+    "overdraw": "fragments per pixel",
+    "depth_complexity": "passed depth test, per pixel",
+    "quad_overshading": "helper share of quad lanes",
+    "triangle_size": "px per triangle (log)",
+    "hi_z": "Hi-Z rejections per pixel",
+    "nan": "non-finite values per pixel",
+}
+
+#: The colour of "nothing arrived here" (a count of 0, or no triangle).
+NOTHING = (0.93, 0.93, 0.93)
+
+#: Counts up to this many get one colour per integer; beyond, a continuous scale.
+DISCRETE_LIMIT = 32
+
+
+@dataclass
+class OverlayArtists(Artists):
+    """The overlay image of :func:`plot_overlay` and its colour bar."""
+
+    image: object
+    colorbar: object | None = None
+
+
+@dataclass
+class HistoryArtists(Artists):
+    """The bars, buffer markers and legend of :func:`plot_history`."""
+
+    parts: list = field(default_factory=list)
+
+
+def overlay_style(kind: str, values: np.ndarray):
+    """(data to show, cmap, norm, colour-bar ticks) for an overlay's ``values``."""
+    if kind == "quad_overshading":
+        cmap = mpl.colormaps[ERROR_CMAP]
+        return values, cmap, Normalize(0.0, 0.75), [0, 0.25, 0.5, 0.75]
+        # (quads without work are made transparent by plot_overlay)
+    if kind == "triangle_size":
+        top = max(float(values.max(initial=1)), 2.0)
+        shown = np.where(values > 0, values.astype(float), np.nan)  # no triangle: transparent
+        ticks = [t for t in (1, 2, 4, 8, 16, 64, 256, 1024, 4096, 16384, 65536) if t <= top]
+        return shown, mpl.colormaps[VALUE_CMAP], LogNorm(1.0, top), ticks
+    top = int(values.max(initial=0))
+    base = mpl.colormaps[VALUE_CMAP if kind != "nan" else ERROR_CMAP]
+    if top <= DISCRETE_LIMIT:
+        n = max(top, 1)
+        colours = [(*NOTHING, 1.0)] + [base(0.15 + 0.85 * i / max(n - 1, 1))
+                                                for i in range(n)]  # fmt: skip
+        cmap = ListedColormap(colours[: n + 1])
+        norm = BoundaryNorm(np.arange(-0.5, n + 1.0), cmap.N)
+        step = max(1, -(-(n + 1) // 12))
+        return values.astype(float), cmap, norm, list(range(0, n + 1, step))
+    return values.astype(float), base, Normalize(0, top), None
+
+
+def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True) -> OverlayArtists:
+    """Draw ``frame.overlay(kind)`` on ``ax`` with a colour bar in numbers; the title
+    gives the total (or the range). ``frame`` needs ``trace=True`` except for "nan"."""
+    check_choice("kind", kind, KINDS)
+    values = frame.overlay(kind)
+    height, width = values.shape
+    shown, cmap, norm, ticks = overlay_style(kind, values)
+    if kind == "quad_overshading":  # no work in the quad: the background shows
+        shown = np.where(frame.overlay("overdraw") > 0, shown, np.nan)
+    pixel_axes(ax, width, height, ticks=max(width, height) <= 64)
+    ax.set_facecolor(NOTHING)
+    im = show_image(ax, shown, cmap=cmap, norm=norm)
+    result = OverlayArtists(im)
+    if colorbar:
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, ticks=ticks, format="%g")
+        result.colorbar.set_label(OVERLAY_LABELS[kind], fontsize="small")
+    ax.set_title(overlay_title(kind, values), fontsize="small")
+    return result
+
+
+def overlay_title(kind: str, values: np.ndarray) -> str:
+    """A one-line summary of an overlay in numbers."""
+    if kind == "quad_overshading":
+        busy = values > 0
+        mean = float(values[busy].mean()) if busy.any() else 0.0
+        return f"quad overshading: mean {mean:.0%} helpers"
+    if kind == "triangle_size":
+        seen = values[values > 0]
+        median = int(np.median(seen)) if len(seen) else 0
+        return f"triangle size: median {median:,} px"
+    total, top = int(values.sum()), int(values.max(initial=0))
+    name = kind.replace("_", " ").replace("hi z", "Hi-Z").replace("nan", "NaN")
+    return f"{name}: {total:,} (max {top}/px)"
+
+
+def plot_history(ax, frame_or_history, row=None, col=None) -> HistoryArtists:
+    """Draw a pixel's history (``frame.history(row, col)``, or a history itself): one bar
+    per record at its depth, coloured by outcome, the buffer before (○) and after (●)."""
+    h = frame_or_history
+    if row is not None or col is not None:
+        h = frame_or_history.history(row, col)
+    if not hasattr(h, "records"):
+        raise TypeError(f"frame_or_history must be a frame (with row, col) or a PixelHistory, "
+                        f"got {type(h).__name__}")  # fmt: skip
+    return HistoryArtists(list(h.plot(ax)))
