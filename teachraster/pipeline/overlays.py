@@ -82,6 +82,18 @@ def overlay(frame, kind: str) -> np.ndarray:
     return np.asarray(out).astype(np.int64).reshape(height, width)
 
 
+def passed_per_triangle(frame) -> np.ndarray:
+    """(N,) samples of each input triangle that passed the depth test on arrival, in
+    submission order: what an occlusion query (``GL_SAMPLES_PASSED``) around each draw
+    counts. Needs ``trace=True``."""
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "debug", None) is None:
+        raise ValueError("frame: the counts per triangle need a frame rendered with trace=True")
+    work = _work(frame)
+    n = len(trace.clip_status)
+    return np.bincount(work.triangle, weights=work.passed_samples, minlength=n).astype(np.int64)
+
+
 @dataclass(frozen=True)
 class Work:
     """Per (triangle, pixel) fragment of a frame, in drawing order within each pixel.

@@ -1,0 +1,284 @@
+"""A real GPU's own counters for the frame-debugging overlays: stencil counts and occlusion
+queries from OpenGL (Mesa's llvmpipe through moderngl, headless EGL).
+
+A GPU counts overdraw with its stencil buffer: every fragment that reaches the stencil
+stage increments the pixel's (sample's) stencil value. :func:`gl_counters` draws the same
+clip-space triangles as :func:`teachraster.pipeline.render_triangles.render` twice:
+
+1. **overdraw**: depth test off, stencil test always passing, ``glStencilOp(KEEP, INCR,
+   INCR)``: the stencil counts every covered sample (``frame.overlay("overdraw")``);
+2. **depth complexity**: depth test on (``GL_LESS``, float32 depth, as
+   :mod:`teachraster.study.opengl` sets it up), ``glStencilOp(KEEP, KEEP, INCR)``: the
+   stencil counts the samples that passed the depth test when they arrived, the triangles
+   drawn one by one in submission order (``frame.overlay("depth_complexity")``); each draw
+   is wrapped in an occlusion query (``GL_SAMPLES_PASSED``), the samples each triangle got
+   through the depth test.
+
+The stencil is read back sample by sample without stencil texturing: eight full-screen
+passes, one per stencil bit (``glStencilFunc(GL_EQUAL, 2**b, 2**b)``), each adding 2**b
+into a float colour target by additive blending, then ``texelFetch`` of every sample.
+Conventions as in :mod:`teachraster.study.opengl`: clip y negated (GL's rows and top-left
+rule are ours, unflipped), ``glFrontFace(GL_CW)``, depth range [0, 1/2].
+
+The context is the one :func:`teachraster.study.opengl.gl_available` creates (moderngl's
+current context); the few GL calls moderngl lacks (stencil state, a float32 depth with an
+8-bit stencil) are looked up through ``eglGetProcAddress``.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.validate import as_size
+from .opengl import gl_available
+
+__all__ = ["GLCounters", "gl_counters"]
+
+_GL = {
+    "RENDERBUFFER": 0x8D41,
+    "FRAMEBUFFER": 0x8D40,
+    "DEPTH_STENCIL_ATTACHMENT": 0x821A,
+    "DEPTH32F_STENCIL8": 0x8CAD,
+    "FRAMEBUFFER_COMPLETE": 0x8CD5,
+    "STENCIL_TEST": 0x0B90,
+    "ALWAYS": 0x0207,
+    "EQUAL": 0x0202,
+    "KEEP": 0x1E00,
+    "INCR": 0x1E02,
+    "STENCIL_BUFFER_BIT": 0x0400,
+    "DEPTH_BUFFER_BIT": 0x0100,
+}
+_STATE: dict = {}
+
+
+@dataclass(frozen=True)
+class GLCounters:
+    """What OpenGL counted for a scene.
+
+    Attributes
+    ----------
+    overdraw : (H, W) int64
+        Stencil incremented on every fragment, depth test off: covered samples per pixel,
+        summed over the pixel's samples.
+    depth_complexity : (H, W) int64
+        Stencil incremented on depth pass, triangles drawn in submission order.
+    samples_passed : (N,) int64
+        ``GL_SAMPLES_PASSED`` of each triangle's draw (depth test on).
+    """
+
+    overdraw: np.ndarray
+    depth_complexity: np.ndarray
+    samples_passed: np.ndarray
+
+
+class _StencilGL:
+    """The raw GL entry points for stencil state and a depth-stencil renderbuffer."""
+
+    def __init__(self) -> None:
+        egl = ctypes.CDLL(ctypes.util.find_library("EGL") or "libEGL.so.1")
+        egl.eglGetProcAddress.restype = ctypes.c_void_p
+        egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+        u, i, d = ctypes.c_uint, ctypes.c_int, ctypes.c_double
+
+        def fn(symbol, restype, *argtypes):
+            ptr = egl.eglGetProcAddress(symbol.encode())
+            if not ptr:
+                raise OSError(f"eglGetProcAddress({symbol!r}) returned NULL")
+            return ctypes.CFUNCTYPE(restype, *argtypes)(ptr)
+
+        self.enable = fn("glEnable", None, u)
+        self.disable = fn("glDisable", None, u)
+        self.stencil_func = fn("glStencilFunc", None, u, i, u)
+        self.stencil_op = fn("glStencilOp", None, u, u, u)
+        self.stencil_mask = fn("glStencilMask", None, u)
+        self.clear_stencil = fn("glClearStencil", None, i)
+        self.clear_depth = fn("glClearDepth", None, d)
+        self.clear = fn("glClear", None, u)
+        self.depth_range = fn("glDepthRange", None, d, d)
+        self.gen_renderbuffers = fn("glGenRenderbuffers", None, i, ctypes.POINTER(u))
+        self.delete_renderbuffers = fn("glDeleteRenderbuffers", None, i, ctypes.POINTER(u))
+        self.bind_renderbuffer = fn("glBindRenderbuffer", None, u, u)
+        self.storage = fn("glRenderbufferStorageMultisample", None, u, i, u, i, i)
+        self.attach = fn("glFramebufferRenderbuffer", None, u, u, u, u)
+        self.status = fn("glCheckFramebufferStatus", u, u)
+
+    def depth_stencil(self, width: int, height: int, samples: int) -> int:
+        """Attach a float32 depth + 8-bit stencil renderbuffer to the bound framebuffer."""
+        name = ctypes.c_uint(0)
+        self.gen_renderbuffers(1, ctypes.byref(name))
+        self.bind_renderbuffer(_GL["RENDERBUFFER"], name)
+        self.storage(_GL["RENDERBUFFER"], samples, _GL["DEPTH32F_STENCIL8"], width, height)
+        self.bind_renderbuffer(_GL["RENDERBUFFER"], 0)
+        self.attach(_GL["FRAMEBUFFER"], _GL["DEPTH_STENCIL_ATTACHMENT"], _GL["RENDERBUFFER"],
+                    name.value)  # fmt: skip
+        status = self.status(_GL["FRAMEBUFFER"])
+        if status != _GL["FRAMEBUFFER_COMPLETE"]:
+            self.release(name.value)
+            raise RuntimeError(f"framebuffer with a depth-stencil buffer incomplete: {status:#x}")
+        return name.value
+
+    def release(self, renderbuffer: int) -> None:
+        name = ctypes.c_uint(renderbuffer)
+        self.delete_renderbuffers(1, ctypes.byref(name))
+
+
+_DRAW_VS = """#version 330
+in vec4 in_pos;
+void main() { gl_Position = vec4(in_pos.x, -in_pos.y, in_pos.z, in_pos.w); }
+"""
+_DRAW_FS = """#version 330
+out vec4 o;
+void main() { o = vec4(0.0); }
+"""
+_QUAD_VS = """#version 330
+in vec2 in_corner;
+void main() { gl_Position = vec4(in_corner, 0.0, 1.0); }
+"""
+_BIT_FS = """#version 330
+uniform float weight;
+out vec4 o;
+void main() { o = vec4(weight, 0.0, 0.0, 1.0); }
+"""
+_FETCH_FS = """#version 330
+uniform sampler2DMS counts;
+uniform int sample_index;
+out vec4 o;
+void main() { o = texelFetch(counts, ivec2(gl_FragCoord.xy), sample_index); }
+"""
+
+
+def _setup():
+    """The shared context, the stencil entry points and the three programs (cached)."""
+    ok, why = gl_available()
+    if not ok:
+        raise RuntimeError(f"OpenGL is not available: {why}")
+    import moderngl
+
+    ctx = moderngl.get_context()
+    if _STATE.get("ctx") is not ctx:
+        _STATE.clear()
+        _STATE["ctx"], _STATE["gl"] = ctx, _StencilGL()
+        _STATE["draw"] = ctx.program(vertex_shader=_DRAW_VS, fragment_shader=_DRAW_FS)
+        _STATE["bit"] = ctx.program(vertex_shader=_QUAD_VS, fragment_shader=_BIT_FS)
+        _STATE["fetch"] = ctx.program(vertex_shader=_QUAD_VS, fragment_shader=_FETCH_FS)
+    return _STATE["ctx"], _STATE["gl"]
+
+
+def gl_counters(clip, width: int, height: int, *, samples: int = 1, depth_test: bool = True,
+                cull: str | None = None) -> GLCounters:  # fmt: skip
+    """Draw clip-space triangles (N, 3, 4) with OpenGL and read its stencil counts and
+    occlusion queries (see the module docstring). ``samples``: 1 or an MSAA count."""
+    width, height = as_size("width", width), as_size("height", height)
+    clip = np.asarray(clip, dtype=np.float64)
+    if clip.ndim != 3 or clip.shape[1:] != (3, 4) or not np.isfinite(clip).all():
+        raise ValueError(f"clip must be a finite (N, 3, 4) array, got shape {clip.shape}")
+    if cull not in (None, "back", "front"):
+        raise ValueError(f"cull must be None, 'back' or 'front'; got {cull!r}")
+    ctx, gl = _setup()
+    res, rb = [], None
+    try:
+        tex = ctx.texture((width, height), 4, dtype="f4", samples=0 if samples == 1 else samples)
+        res.append(tex)
+        fbo = ctx.framebuffer([tex])
+        res.append(fbo)
+        fbo.depth_mask = True  # moderngl masks depth writes of a colour-only framebuffer
+        fbo.use()
+        rb = gl.depth_stencil(width, height, 0 if samples == 1 else samples)
+        pos = ctx.buffer(clip.astype("f4").tobytes())
+        res.append(pos)
+        vao = ctx.vertex_array(_STATE["draw"], [(pos, "4f", "in_pos")])
+        res.append(vao)
+        corners = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype="f4").tobytes())
+        res.append(corners)
+        quads = [
+            ctx.vertex_array(_STATE[p], [(corners, "2f", "in_corner")]) for p in ("bit", "fetch")
+        ]
+        res += quads
+        passes = {}
+        for name, test in (("overdraw", False), ("depth_complexity", depth_test)):
+            passed = _draw(ctx, gl, vao, len(clip), test, cull, one_by_one=name != "overdraw")
+            passes[name] = _read_stencil(ctx, gl, fbo, tex, quads, (width, height), samples, res)
+            if name == "depth_complexity":
+                passes["samples_passed"] = passed
+    finally:
+        gl.disable(_GL["STENCIL_TEST"])
+        if rb is not None:
+            gl.release(rb)
+        for obj in reversed(res):
+            obj.release()
+    return GLCounters(passes["overdraw"], passes["depth_complexity"], passes["samples_passed"])
+
+
+def _draw(ctx, gl, vao, n, depth_test, cull, one_by_one):
+    """Clear and draw the triangles with the stencil counting; the samples each passed."""
+    import moderngl
+
+    gl.depth_range(0.0, 0.5)
+    flags = moderngl.DEPTH_TEST if depth_test else moderngl.NOTHING
+    if cull is not None:
+        flags |= moderngl.CULL_FACE
+        ctx.front_face, ctx.cull_face = "cw", cull
+    ctx.enable_only(flags)
+    ctx.depth_func = "<"
+    gl.stencil_mask(0xFF)
+    gl.clear_stencil(0)
+    gl.clear_depth(1.0)
+    gl.clear(_GL["STENCIL_BUFFER_BIT"] | _GL["DEPTH_BUFFER_BIT"])
+    gl.enable(_GL["STENCIL_TEST"])
+    gl.stencil_func(_GL["ALWAYS"], 0, 0xFF)
+    # depth fail keeps, depth pass (or no depth test at all) increments
+    gl.stencil_op(_GL["KEEP"], _GL["KEEP"], _GL["INCR"])
+    passed = np.zeros(n, dtype=np.int64)
+    if not one_by_one:
+        if n:
+            vao.render(moderngl.TRIANGLES, vertices=3 * n)
+        return passed
+    query = ctx.query(samples=True)  # (moderngl frees queries with the context)
+    for t in range(n):  # one draw per triangle, in submission order
+        with query:
+            vao.render(moderngl.TRIANGLES, vertices=3, first=3 * t)
+        passed[t] = query.samples
+    return passed
+
+
+def _read_stencil(ctx, gl, fbo, tex, quads, size, samples, res):
+    """(H, W) stencil summed over samples: one additive pass per stencil bit into the
+    colour target, then every sample read back."""
+    import moderngl
+
+    width, height = size
+    bit, fetch = quads
+    fbo.use()
+    fbo.clear(0.0, 0.0, 0.0, 0.0)
+    ctx.enable_only(moderngl.BLEND)
+    ctx.blend_func = moderngl.ONE, moderngl.ONE
+    gl.stencil_op(_GL["KEEP"], _GL["KEEP"], _GL["KEEP"])
+    for b in range(8):
+        gl.stencil_func(_GL["EQUAL"], 1 << b, 1 << b)
+        bit.program["weight"] = float(1 << b)
+        bit.render(moderngl.TRIANGLES, vertices=3)
+    gl.disable(_GL["STENCIL_TEST"])
+    ctx.enable_only(moderngl.NOTHING)
+    buf = np.empty((height, width, 4), dtype="f4")
+    if samples == 1:
+        fbo.read_into(buf, components=4, dtype="f4")  # GL row 0 is ours: no flip
+        return buf[..., 0].astype(np.int64)
+    target = ctx.renderbuffer(size, 4, dtype="f4")
+    res.append(target)
+    out = ctx.framebuffer([target])
+    res.append(out)
+    out.use()
+    tex.use(location=0)
+    fetch.program["counts"] = 0
+    total = np.zeros((height, width), dtype=np.int64)
+    for s in range(samples):
+        fetch.program["sample_index"] = s
+        fetch.render(moderngl.TRIANGLES, vertices=3)
+        out.read_into(buf, components=4, dtype="f4")
+        total += buf[..., 0].astype(np.int64)
+    fbo.use()
+    return total
