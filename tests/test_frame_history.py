@@ -228,3 +228,46 @@ def test_history_benchmark_quick_run_succeeds(capsys):
     assert module.main(["--quick", "--repeat", "1"]) == 0
     out = capsys.readouterr().out
     assert "trace=True + all six overlays" in out and "pixel history" in out
+
+
+# -- the widget ---------------------------------------------------------------------------------
+def test_frame_inspector_views_clicks_and_scenes():
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("cube", 32, 24, backend="image")
+    for view in ("image", *KINDS):
+        w.view.value = view
+    assert w.view.value == "nan"
+    w.row.value, w.col.value = 10, 14
+    assert (w.history.row, w.history.col) == (10, 14)
+    assert "row 10, col 14" in w.table.value
+    if w.clicker is not None:  # anywidget: a click arrives as fractions of the image
+        width, height = w.fig.canvas.get_width_height()
+        x, y = w.ax.transData.transform((5.5, 7.5))  # display pixels, y up
+        w.clicker.click = [x / width, 1 - y / height, 1]
+        assert (w.row.value, w.col.value) == (7, 5)
+        assert w.clicker.value[:4] == b"\x89PNG"
+    w.click_at(100.0, 100.0)  # outside the frame: nothing changes
+    assert (w.row.value, w.col.value) != (100, 100)
+    w.samples.value = 4
+    assert w.frame.samples is not None and w.history.n_samples == 4
+    w.depth_test.value = False
+    w.scene.value = "cyclic_overlap"
+    tri, _ = w.history.replay()
+    np.testing.assert_array_equal(tri, w.frame.sample_triangle_id[w.row.value, w.col.value])
+    w.close()
+
+
+def test_frame_inspector_under_ipympl_takes_mouse_clicks():
+    pytest.importorskip("ipympl")
+    from matplotlib.backend_bases import MouseEvent
+
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("fan", 32, 24, backend="ipympl")
+    x, y = w.ax.transData.transform((20.5, 3.5))
+    event = MouseEvent("button_press_event", w.fig.canvas, x, y, button=1)
+    w.fig.canvas.callbacks.process("button_press_event", event)
+    assert (w.row.value, w.col.value) == (3, 20)
+    w.close()

@@ -23,6 +23,8 @@ Widgets
 - :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
   chooser: the filtered image, the mip level per pixel and the error against the true
   footprint average (lesson 09).
+- :class:`FrameInspector` -- a built-in scene with a view chooser (the image or an overlay:
+  overdraw, depth complexity, quad overshading, ...); click a pixel for its history (lesson 11).
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
   plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
 
@@ -49,6 +51,7 @@ from .depth_explorer import DepthPrecisionExplorer
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
+from .frame_inspector import FrameInspector
 from .inspector import PixelInspector
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
@@ -56,6 +59,7 @@ from .textured import TexturedPlaneViewer
 from .tiles import TileExplorer
 
 __all__ = [
+    "FrameInspector",
     "BACKENDS",
     "CasePicker",
     "DepthPrecisionExplorer",

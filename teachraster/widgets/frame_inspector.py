@@ -1,0 +1,269 @@
+"""``FrameInspector``: a whole frame with its debug overlays; click a pixel for its history.
+
+What RenderDoc's texture viewer and pixel history do for a GPU frame, for a teachraster
+frame: choose a built-in scene and a view (the shaded image or an overlay of
+:mod:`teachraster.pipeline.overlays`), click a pixel (or move the row / column sliders),
+and see every triangle on the way to it in submission order, with the test that stopped
+each (:mod:`teachraster.pipeline.frame_history`): the table and the depth strip beside it.
+
+Clicks work under ipympl (the canvas' own mouse events) and with the image display, where
+the frame is shown by a small page-side widget (anywidget) that sends the clicked point
+back; without anywidget the image is a plain ``ipywidgets.Image`` and the sliders choose.
+"""
+
+from __future__ import annotations
+
+import html
+
+import ipywidgets as widgets
+import numpy as np
+
+from ..pipeline.overlays import KINDS
+from ..pipeline.render_scenes import render
+from ..pipeline.scenes import SCENES, get_scene
+from ..plotting import plot_history, plot_image, plot_overlay
+from .common import Holdable, close_tree, style_context, title_html
+from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
+
+#: The views the chooser offers: the shaded image, then every overlay.
+VIEWS = ("image", *KINDS)
+
+_CLICK_ESM = """
+function render({ model, el }) {
+  const img = document.createElement("img");
+  img.style.maxWidth = "100%";
+  img.style.cursor = "crosshair";
+  img.alt = model.get("alt");
+  img.className = "teachraster-figure teachraster-clickable";
+  let url = null, clicks = 0;
+  const show = () => {
+    const blob = new Blob([model.get("value")], { type: "image/png" });
+    if (url) URL.revokeObjectURL(url);
+    url = URL.createObjectURL(blob);
+    img.src = url;
+  };
+  show();
+  model.on("change:value", show);
+  img.addEventListener("click", (event) => {
+    const box = img.getBoundingClientRect();
+    clicks += 1;
+    model.set("click", [(event.clientX - box.left) / box.width,
+                        (event.clientY - box.top) / box.height, clicks]);
+    model.save_changes();
+  });
+  el.appendChild(img);
+  return () => { if (url) URL.revokeObjectURL(url); };
+}
+export default { render };
+"""
+
+
+def click_image(alt: str = ""):
+    """A PNG image widget that reports clicks as ``click`` = [x, y, n] (fractions of its
+    width and height from the top left, n counting clicks), or None without anywidget."""
+    try:
+        import anywidget
+        import traitlets
+    except ImportError:
+        return None
+
+    class ClickImage(anywidget.AnyWidget):
+        _esm = _CLICK_ESM
+        value = traitlets.Bytes(b"").tag(sync=True)
+        click = traitlets.List([]).tag(sync=True)
+        alt = traitlets.Unicode("").tag(sync=True)
+
+    return ClickImage(alt=alt)
+
+
+class FrameInspector(Holdable):
+    """A built-in scene rendered with ``trace=True``: a view chooser, a pixel's history.
+
+    Parameters
+    ----------
+    scene : str
+        A built-in scene (:data:`teachraster.pipeline.scenes.SCENES`).
+    width, height : int
+        Frame size (small frames keep each pixel clickable).
+    view : str
+        "image" or an overlay kind (:data:`VIEWS`).
+    row, col : int
+        The pixel whose history is shown first.
+    samples : {1, 4}
+    depth_test : bool
+    backend, style
+        As for the other widgets.
+
+    Attributes
+    ----------
+    frame : Frame
+        The current frame (traced).
+    history : PixelHistory
+        The chosen pixel's history; ``table.value`` shows it as text.
+
+    Examples
+    --------
+    >>> w = FrameInspector("intersecting_triangles", 32, 24, backend="image")
+    >>> w.view.value = "depth_complexity"
+    >>> w.row.value, w.col.value = 12, 16
+    >>> w.history.row, w.history.col
+    (12, 16)
+    >>> w.click_at(3.5, 5.5)      # a click at window (x, y): column 3, row 5
+    >>> (w.row.value, w.col.value)
+    (5, 3)
+    >>> w.close()
+    """
+
+    def __init__(self, scene: str = "intersecting_triangles", width: int = 64,
+                 height: int = 48, *, view: str = "image", row: int | None = None,
+                 col: int | None = None, samples: int = 1, depth_test: bool = True,
+                 backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
+        self.width, self.height = width, height
+        self.backend = resolve_backend(backend)
+        self.scene = widgets.Dropdown(options=list(SCENES), value=scene, description="scene")
+        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
+        self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
+        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test")
+        self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
+                                     max=height - 1, description="row")  # fmt: skip
+        self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
+                                     max=width - 1, description="col")  # fmt: skip
+        self.table = widgets.HTML()
+        self._render()
+        with style_context(style):
+            self.fig = new_figure((4.8, 4.0), self.backend)
+            self.ax = self.fig.add_axes((0.1, 0.06, 0.72, 0.8))
+            self.hist_fig = new_figure((4.8, 4.0), self.backend)
+            self.hist_ax = self.hist_fig.add_axes((0.16, 0.16, 0.8, 0.74))
+            self._draw_frame()
+            self._draw_history()
+            self._make_displays()
+        for control in (self.scene, self.samples, self.depth_test):
+            control.observe(self._rerender, "value")
+        self.view.observe(self._view_changed, "value")
+        for control in (self.row, self.col):
+            control.observe(self._pixel_changed, "value")
+        title = title_html(
+            "Frame inspector: why is this pixel what it is?",
+            "Choose a view; click a pixel (or move row and col) to see every triangle on the "
+            "way to it, in submission order, and the test that stopped each.",
+        )
+        controls = widgets.HBox([self.scene, self.view, self.samples, self.depth_test])
+        figures = widgets.HBox([self.frame_widget, self.hist_display.widget])
+        self.widget = widgets.VBox(
+            [title, controls, widgets.HBox([self.row, self.col]), figures, self.table]
+        )
+
+    # -- state ---------------------------------------------------------------------------
+    def _render(self) -> None:
+        self.frame = render(get_scene(self.scene.value), None, self.width, self.height,
+                            samples=self.samples.value, depth_test=self.depth_test.value,
+                            trace=True)  # fmt: skip
+        self._show_history()
+
+    def _show_history(self) -> None:
+        self.history = self.frame.history(self.row.value, self.col.value)
+        text = html.escape(str(self.history))
+        self.table.value = f"<pre style='font-size:0.8em;line-height:1.25'>{text}</pre>"
+
+    def _draw_frame(self) -> None:
+        fig, ax = self.fig, self.ax
+        for extra in fig.axes[1:]:  # the previous view's colour bar
+            extra.remove()
+        ax.clear()
+        if self.view.value == "image":
+            image = np.where(np.isnan(self.frame.image), 1.0, self.frame.image)
+            plot_image(ax, image)
+            ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
+        else:
+            plot_overlay(ax, self.frame, self.view.value)
+        r, c = self.row.value, self.col.value
+        self.marker = ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
+                              color="#D55E00", lw=2, zorder=6)[0]  # fmt: skip
+
+    def _draw_history(self) -> None:
+        self.hist_ax.clear()
+        plot_history(self.hist_ax, self.history)
+
+    # -- display -------------------------------------------------------------------------
+    def _make_displays(self) -> None:
+        self.hist_display = FigureDisplay(self.hist_fig, self.backend)
+        self.clicker = None
+        if self.backend == "ipympl":
+            self.frame_display = FigureDisplay(self.fig, "ipympl")
+            self.frame_widget = self.frame_display.widget
+            self.fig.canvas.mpl_connect("button_press_event", self._on_press)
+            return
+        self.frame_display = None
+        self.clicker = click_image(alt="the frame: click a pixel for its history")
+        if self.clicker is None:
+            self.frame_display = FigureDisplay(self.fig, "image")
+            self.frame_widget = self.frame_display.widget
+            return
+        self.clicker.observe(self._on_click, "click")
+        self.frame_widget = self.clicker
+        self._refresh_frame()
+
+    def _refresh_frame(self) -> None:
+        if self.frame_display is not None:
+            self.frame_display.refresh()
+            return
+        self.fig.canvas.draw()
+        self.clicker.value = png_bytes(self.fig)
+
+    def _refresh(self, frame: bool = True) -> None:
+        if frame:
+            self._refresh_frame()
+        self.hist_display.refresh()
+
+    # -- events --------------------------------------------------------------------------
+    def click_at(self, x: float, y: float) -> None:
+        """Choose the pixel under window point (x, y) (pixels, y down), as a click does."""
+        col, row = int(np.floor(x)), int(np.floor(y))
+        if 0 <= row < self.height and 0 <= col < self.width:
+            with self._holding():
+                self.row.value, self.col.value = row, col
+            self._pixel_changed(None)
+
+    def _on_press(self, event) -> None:
+        if event.inaxes is self.ax and event.xdata is not None:
+            self.click_at(event.xdata, event.ydata)
+
+    def _on_click(self, change) -> None:
+        value = change["new"]
+        if len(value) < 2:
+            return
+        width, height = self.fig.canvas.get_width_height()
+        # the image's fraction from its top left -> display pixels (y up) -> data
+        point = (value[0] * width, (1.0 - value[1]) * height)
+        x, y = self.ax.transData.inverted().transform(point)
+        self.click_at(x, y)
+
+    def _pixel_changed(self, change) -> None:
+        if self._quiet:
+            return
+        self._show_history()
+        r, c = self.row.value, self.col.value
+        self.marker.set_data([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r])
+        self._draw_history()
+        self._refresh()
+
+    def _view_changed(self, change) -> None:
+        self._draw_frame()
+        self._refresh_frame()
+
+    def _rerender(self, change) -> None:
+        self._render()
+        self._draw_frame()
+        self._draw_history()
+        self._refresh()
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the inspector."""
+        for display in (self.frame_display, self.hist_display):
+            if display is not None:
+                display.close()
+        close_tree(self.widget)
