@@ -271,3 +271,21 @@ def test_frame_inspector_under_ipympl_takes_mouse_clicks():
     w.fig.canvas.callbacks.process("button_press_event", event)
     assert (w.row.value, w.col.value) == (3, 20)
     w.close()
+
+
+# -- lesson 11 ------------------------------------------------------------------------------
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")
+def test_lesson_11_tells_each_story():
+    from test_lessons import lesson
+
+    ns = lesson("11_debugging_a_frame")
+    assert ns.shown[0] == ns.frame.triangle_id[ns.row, ns.col]
+    assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
+    assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
+    assert ns.tie[1].outcome == "failed_depth" and ns.tie[1].depth == ns.tie[1].depth_before
+    assert len(ns.ties) > 0 and ns.four.coverage.sum() > ns.one.coverage.sum()
+    quads = [f.overlay("quad_overshading") for f in (ns.sphere, ns.floor)]
+    assert quads[0][quads[0] > 0].mean() > quads[1][quads[1] > 0].mean()
+    assert ns.counts["hi_z"] >= 1
+    assert sum(ns.counts.values()) == ns.over[ns.hz.row, ns.hz.col]
+    assert ns.counts["passed"] == ns.passed[ns.hz.row, ns.hz.col]
