@@ -28,7 +28,7 @@ the last one drawn shows.
 from __future__ import annotations
 
 import operator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -90,6 +90,8 @@ class HistoryRecord:
         The depth buffer at this sample before and after it (inf: still empty).
     value : tuple of float
         The attributes it wrote ("passed"), else those interpolated there (covered), else ().
+        With MSAA, where attributes are evaluated once per pixel and triangle, only the
+        records a sample shows at the end carry them (the frame's ``sample_attrs``).
     edge : tuple of int or None
         "not_covered": the first edge that failed, as (from, to) input vertex indices.
     outside : float
@@ -181,6 +183,10 @@ def pixel_history(frame, row, col) -> PixelHistory:
         records = _multisampled(frame, dbg, row, col)
         n_samples = len(dbg.offsets)
     records = _replay_buffer(records, dbg.inputs.depth_test)
+    if dbg.offsets is not None:  # MSAA: the value a sample shows is the frame's own
+        values = frame.sample_attrs[row, col]
+        records = [replace(r, value=tuple(float(v) for v in values[r.sample])) if r.shown
+                   else r for r in records]  # fmt: skip
     return PixelHistory(row, col, tuple(records), n_samples, dbg.inputs.depth_test,
                         int(frame.triangle_id[row, col]))  # fmt: skip
 
@@ -337,8 +343,6 @@ def _replay_buffer(records, depth_test) -> list[HistoryRecord]:
     """Fill in the buffer before and after every record (per sample, in order), decide the
     depth test where it is still open ("covered": MSAA), and mark what each sample shows
     at the end and who hid the fragments that passed."""
-    from dataclasses import replace
-
     buffer: dict[int, float] = {}
     out = []
     for r in records:
