@@ -58,6 +58,8 @@ class DebugInputs:
     centroid : bool
     fragments : Fragments or None
         The single-sample fill's fragments (None with MSAA).
+    pixel : (m,) int64 or None
+        Their flat pixel indices (the depth stage's, kept rather than recomputed).
     cache : dict
         What the overlays computed once for this frame (filled on first use).
     """
@@ -67,6 +69,7 @@ class DebugInputs:
     offsets: np.ndarray | None
     centroid: bool
     fragments: object
+    pixel: np.ndarray | None = None
     cache: dict = field(default_factory=dict, compare=False, repr=False)
 
 

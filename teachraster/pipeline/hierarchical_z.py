@@ -194,17 +194,19 @@ class _Arrivals:
         # each pixel's fragments by triangle.
         # (32-bit keys sort faster, and pixel indices fit them: sizes stay below 2**28)
         key = pixel.astype(np.int32) if n_pixels < 2**31 else pixel
-        order = np.argsort(key, kind="stable")
-        self.tri = tri[order]
+        self.order = np.argsort(key, kind="stable")
+        self.source_tri = tri  # gathered through ``order`` only where needed (few places)
         self.count = np.bincount(pixel, minlength=n_pixels)
         self.start = np.cumsum(self.count) - self.count  # each pixel's first fragment
-        sorted_depth = depth[order]
-        self.running = _running_min(key[order], sorted_depth, int(self.count.max(initial=0)))
-        first = np.zeros(m, dtype=bool)
-        first[self.start[self.count > 0]] = True
-        before = np.where(first, np.inf, np.r_[np.inf, self.running[:-1]])
+        sorted_depth = depth[self.order]
+        longest = int(self.count.max(initial=0))
+        sorted_key = key[self.order] if longest > 1 else None
+        self.running = _running_min(sorted_key, sorted_depth, longest)
+        before = np.empty(m)  # the buffer each fragment found: the running minimum so far
+        before[1:] = self.running[:-1]
+        before[self.start[self.count > 0]] = np.inf  # a pixel's first fragment: empty
         self.passed = np.empty(m, dtype=bool)  # strictly nearer than all before it
-        self.passed[order] = sorted_depth < before
+        self.passed[self.order] = sorted_depth < before
 
     def tile_ready(self, image, tile) -> np.ndarray:
         """Per tile, the triangle after which every pixel of it holds a depth (the largest
@@ -215,7 +217,7 @@ class _Arrivals:
         first = np.full((ty * tile, tx * tile), -1, dtype=np.int64)  # beyond the image
         reached = self.count > 0
         arrival = np.full(height * width, np.iinfo(np.int64).max, dtype=np.int64)
-        arrival[reached] = self.tri[self.start[reached]]
+        arrival[reached] = self.source_tri[self.order[self.start[reached]]]
         first[:height, :width] = arrival.reshape(height, width)
         return first.reshape(ty, tile, tx, tile).max(axis=(1, 3)).ravel()
 
@@ -255,9 +257,10 @@ class _Arrivals:
         start, count = self.start[p], np.where(inside, self.count[p], 0)
         before = np.full(p.shape, np.inf)  # the buffer at arrival
         tri = np.broadcast_to(tri[:, None], p.shape)
+        last = len(self.order) - 1
         for k in range(int(count.max(initial=0))):  # depth complexity: a few rounds
-            at = np.minimum(start + k, len(self.tri) - 1)
-            earlier = (k < count) & (self.tri[at] < tri)  # fragments of earlier triangles
+            at = np.minimum(start + k, last)
+            earlier = (k < count) & (self.source_tri[self.order[at]] < tri)  # earlier triangles
             before = np.where(earlier, self.running[at], before)  # running min: the last
         return np.where(inside, before, -np.inf).max(axis=1)
 

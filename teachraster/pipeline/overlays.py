@@ -66,9 +66,15 @@ def overlay(frame, kind: str) -> np.ndarray:
     work = _work(frame)
     n_pix = width * height
     if kind == "overdraw":
-        out = np.bincount(work.pixel, weights=work.samples, minlength=n_pix)
+        if work.single:  # one sample per fragment: a plain count (no float weights)
+            out = np.bincount(work.pixel, minlength=n_pix)
+        else:
+            out = np.bincount(work.pixel, weights=work.samples, minlength=n_pix)
     elif kind == "depth_complexity":
-        out = np.bincount(work.pixel, weights=work.passed_samples, minlength=n_pix)
+        if work.single:
+            out = np.bincount(work.pixel[work.passed_samples > 0], minlength=n_pix)
+        else:
+            out = np.bincount(work.pixel, weights=work.passed_samples, minlength=n_pix)
     elif kind == "quad_overshading":
         return quad_overshading(work, width, height)
     elif kind == "triangle_size":
@@ -109,6 +115,8 @@ class Work:
     samples: np.ndarray
     passed_samples: np.ndarray
     rejected: np.ndarray | None
+    row: np.ndarray  # the pixel's row, for the quads
+    single: bool = False  # one sample per fragment (``samples`` all 1)
 
 
 def _work(frame) -> Work:
@@ -124,12 +132,12 @@ def _build_work(frame) -> Work:
     dbg = trace.debug
     if dbg.offsets is None:
         frags = dbg.fragments
-        width = dbg.inputs.width
+        pixel = dbg.pixel if dbg.pixel is not None else frags.row * dbg.inputs.width + frags.col
         passed = trace.fragment_passed
         rejected = None if trace.hiz is None else trace.hiz.fragment_rejected
         one = np.ones(len(frags.tri), dtype=np.int64)
-        return Work(frags.row * width + frags.col, frags.tri, trace.fragment_triangle, one,
-                    passed.astype(np.int64), rejected)  # fmt: skip
+        return Work(pixel, frags.tri, trace.fragment_triangle, one, passed.view(np.int8),
+                    rejected, frags.row, single=True)  # fmt: skip
     return _sample_work(trace, dbg)
 
 
@@ -168,16 +176,16 @@ def _sample_work(trace, dbg) -> Work:
         passed = passed_on_arrival(pixel[pair] * n_s + sample, depth)
     passed_samples = np.bincount(pair, weights=passed, minlength=len(pixel)).astype(np.int64)
     triangle = dbg.clipped.parent[piece]
-    return Work(pixel, piece, triangle, samples, passed_samples, None)
+    return Work(pixel, piece, triangle, samples, passed_samples, None, pixel // a.width)
 
 
 def quad_overshading(work: Work, width: int, height: int) -> np.ndarray:
     """(H, W) fraction of helper lanes among the lanes launched in each pixel's 2×2 quad."""
     shaded = work.passed_samples > 0
-    pixel, piece = work.pixel[shaded], work.piece[shaded]
-    row, col = np.divmod(pixel, width)
+    pixel, piece, row = work.pixel[shaded], work.piece[shaded], work.row[shaded]
     qw, qh = -(-width // 2), -(-height // 2)
-    quad = (row // 2) * qw + col // 2
+    # (row // 2) * qw + col // 2, with col = pixel - row * width
+    quad = (row >> 1) * qw + ((pixel - row * width) >> 1)
     n_q = qw * qh
     launched = 4 * np.bincount(_quad_groups(piece * n_q + quad, row) % n_q, minlength=n_q)
     useful = np.bincount(quad, minlength=n_q)
@@ -195,8 +203,8 @@ def _quad_groups(key: np.ndarray, row: np.ndarray) -> np.ndarray:
     two columns): each half is made unique by comparing neighbours, and the odd half's
     keys already in the even half are dropped with one ``searchsorted``.
     """
-    even = key[row % 2 == 0]
-    odd = key[row % 2 == 1]
+    parity = (row & 1).astype(bool)
+    even, odd = key[~parity], key[parity]
     if np.any(even[1:] < even[:-1]) or np.any(odd[1:] < odd[:-1]):
         return np.unique(key)  # not in drawing order: sort
     even = even[np.r_[True, even[1:] != even[:-1]]] if len(even) else even

@@ -520,5 +520,5 @@ def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTra
         quads=quads,
         hiz=hiz,
         hiz_tiles=None if cut is None else cut.result,
-        debug=DebugInputs(a, clipped, None, False, frags),
+        debug=DebugInputs(a, clipped, None, False, frags, visible.pixel),
     )
