@@ -289,3 +289,12 @@ def test_lesson_11_tells_each_story():
     assert ns.counts["hi_z"] >= 1
     assert sum(ns.counts.values()) == ns.over[ns.hz.row, ns.hz.col]
     assert ns.counts["passed"] == ns.passed[ns.hz.row, ns.hz.col]
+
+
+def test_history_mentions_triangles_clipped_away_whole():
+    visible = clip_from_window([[[1, 1], [1, 7], [7, 1]]], 0.5, width=8, height=8)
+    behind = np.array([[[0, 0, 0.5, -1.0], [1, 0, 0.5, -1.0], [0, 1, 0.5, -1.0]]])
+    frame = tr.render(np.concatenate([behind, visible]), 8, 8, trace=True)
+    h = frame.history(2, 2)
+    assert h.clipped_away == 1 and [r.triangle for r in h] == [1]
+    assert "clipped away whole" in str(h)

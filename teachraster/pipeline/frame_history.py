@@ -134,6 +134,7 @@ class PixelHistory:
     n_samples: int
     depth_test: bool
     shows: int  # the input triangle the frame shows at the pixel (-1 none)
+    clipped_away: int = 0  # input triangles clipping removed whole (no screen position)
 
     def __len__(self) -> int:
         return len(self.records)
@@ -190,8 +191,9 @@ def pixel_history(frame, row, col) -> PixelHistory:
         values = frame.sample_attrs[row, col]
         records = [replace(r, value=tuple(float(v) for v in values[r.sample])) if r.shown
                    else r for r in records]  # fmt: skip
+    dropped = int((np.asarray(frame.trace.clip_status) == 2).sum())
     return PixelHistory(row, col, tuple(records), n_samples, dbg.inputs.depth_test,
-                        int(frame.triangle_id[row, col]))  # fmt: skip
+                        int(frame.triangle_id[row, col]), dropped)  # fmt: skip
 
 
 def _pixel_index(name, value, size) -> int:
@@ -394,6 +396,9 @@ def history_table(h: PixelHistory) -> str:
         )
     if len(h.records) == 0:
         lines.append("  (no triangle's bounding box reaches this pixel)")
+    if h.clipped_away:
+        lines.append(f"  ({h.clipped_away} triangle(s) of the frame clipped away whole: behind "
+                     "the eye or beyond the far plane, they reach no pixel)")  # fmt: skip
     return "\n".join(lines)
 
 
