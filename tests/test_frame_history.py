@@ -61,7 +61,7 @@ def check_every_pixel(frame, msg=""):
 
 @pytest.mark.parametrize("samples", [1, 4])
 def test_replay_reproduces_random_scenes(rng, samples):
-    for index in range(24):
+    for index in range(14):  # every pixel of each; the hypothesis test below explores more
         clip, attrs, kw = random_scene(rng, index)
         frame = tr.render(clip, W, H, attrs=attrs, samples=samples, trace=True, **kw)
         plain = tr.render(clip, W, H, attrs=attrs, samples=samples, **kw)

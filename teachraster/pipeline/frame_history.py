@@ -196,6 +196,13 @@ def pixel_history(frame, row, col) -> PixelHistory:
                         int(frame.triangle_id[row, col]), dropped)  # fmt: skip
 
 
+def _setup(dbg, window):
+    """The edge set-up of every triangle after clipping (snapped), once per frame."""
+    if "setup" not in dbg.cache:
+        dbg.cache["setup"] = setup_edges(window[:, :, :2], dbg.inputs.subpixel_bits)
+    return dbg.cache["setup"]
+
+
 def _pixel_index(name, value, size) -> int:
     try:
         i = operator.index(value)
@@ -210,7 +217,7 @@ def _candidates(setup, points, extra) -> np.ndarray:
     """Pieces whose snapped bounding box contains one of ``points`` (n, 2) units, plus
     ``extra`` (pieces known to reach the pixel), ascending (drawing order)."""
     p = setup.p
-    lo, hi = p.min(axis=1), p.max(axis=1)  # (M, 2)
+    lo, hi = p.min(axis=1), p.max(axis=1)  # (M, 2): cheap beside a click
     inside = np.zeros(len(p), dtype=bool)
     for x, y in points:
         inside |= (lo[:, 0] <= x) & (x <= hi[:, 0]) & (lo[:, 1] <= y) & (y <= hi[:, 1])
@@ -261,7 +268,7 @@ def _single_sample(frame, dbg, row, col) -> list[HistoryRecord]:
     """Records of a one-sample frame: fragments, tests and Hi-Z from the trace."""
     trace, frags, a = frame.trace, dbg.fragments, dbg.inputs
     at = np.flatnonzero((frags.row == row) & (frags.col == col))  # drawing order
-    setup = setup_edges(trace.window[:, :, :2], a.subpixel_bits)
+    setup = _setup(dbg, trace.window)
     pts = _points(setup, None, row, col)
     pieces = _candidates(setup, pts, frags.tri[at])
     covered, failed, value = _edge_test(setup, pieces, pts)
@@ -309,12 +316,14 @@ def _multisampled(frame, dbg, row, col) -> list[HistoryRecord]:
     functions, depth per sample from the depth planes, as the renderer decides them."""
     trace, a = frame.trace, dbg.inputs
     window = trace.window
-    setup = setup_edges(window[:, :, :2], a.subpixel_bits)
+    setup = _setup(dbg, window)
     units = offsets_in_units(dbg.offsets, setup)
     pts = _points(setup, units, row, col)
     pieces = _candidates(setup, pts, np.zeros(0, np.int64))
     covered, failed, value = _edge_test(setup, pieces, pts)
-    planes = depth_planes(weight_source(window[:, :, :2], setup, False), window)
+    if "planes" not in dbg.cache:
+        dbg.cache["planes"] = depth_planes(weight_source(window[:, :, :2], setup, False), window)
+    planes = dbg.cache["planes"]
     n_s = len(dbg.offsets)
     tri = np.repeat(pieces, n_s)
     x, y = (
