@@ -266,7 +266,7 @@ def _miss(setup, piece, k, e) -> tuple[tuple[int, int], float]:
 
 def _single_sample(frame, dbg, row, col) -> list[HistoryRecord]:
     """Records of a one-sample frame: fragments, tests and Hi-Z from the trace."""
-    trace, frags, a = frame.trace, dbg.fragments, dbg.inputs
+    trace, frags = frame.trace, dbg.fragments
     at = np.flatnonzero((frags.row == row) & (frags.col == col))  # drawing order
     setup = _setup(dbg, trace.window)
     pts = _points(setup, None, row, col)
