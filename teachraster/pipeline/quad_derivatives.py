@@ -261,9 +261,10 @@ def quad_pairs(rows, cols, tris, width: int, height: int):
 
 def as_derivative_mode(derivatives) -> str | None:
     """``derivatives=`` as None (not asked), "coarse" or "fine"; ValueError naming it."""
-    if derivatives is False or derivatives is None:
+    # One rule for flags (core.validate.as_bool): numpy's bools are bools too.
+    if derivatives is None or (isinstance(derivatives, bool | np.bool_) and not derivatives):
         return None
-    if derivatives is True:
+    if isinstance(derivatives, bool | np.bool_):
         return "coarse"
     if isinstance(derivatives, str) and derivatives in DERIVATIVE_MODES:
         return derivatives

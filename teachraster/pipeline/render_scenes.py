@@ -81,7 +81,9 @@ def render_scene(
     quads only for the triangles the texture may be minified on (the plan's "derivatives"
     effect says how many; ``force="derivatives"`` computes them everywhere, with the same
     image); elsewhere the texture is magnified and level 0 is sampled.
-    With ``samples`` > 1 a mipmapped filter samples level 0 (no quad derivatives with MSAA).
+    With ``samples`` > 1 a mipmapped filter samples level 0 (2×2 quads are simulated with
+    one sample per pixel only), and the plan's "derivatives" entry says so: never a silent
+    downgrade.
 
     >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
@@ -120,6 +122,8 @@ def render_scene(
         replace(e, why=f"{why}; {e.why}") if e.name == "attributes" else e for e in frame.plan
     )
     effects = _derivatives_why(effects, scene, texture_filter, kwargs)
+    if not single and scene.shading == "texture" and texture_filter in MIPMAP_FILTERS:
+        effects = (*effects, _msaa_mip_effect(texture_filter, kwargs["samples"], frame))
     if not names:
         effects = tuple(
             Effect("attributes", False, 0, e.total, e.unit, why) if e.name == "attributes" else e
@@ -197,6 +201,18 @@ def _derivatives_why(effects, scene, texture_filter, kwargs):
     return tuple(
         replace(e, why=f"{why}; {e.why}") if e.name == "derivatives" else e for e in effects
     )
+
+
+def _msaa_mip_effect(texture_filter, samples, frame) -> Effect:
+    """The plan's word on a mipmapped filter under MSAA: no footprint, level 0 everywhere."""
+    n = samples if isinstance(samples, int | np.integer) else len(frame.samples)
+    total = int(frame.coverage.sum())
+    return Effect(
+        "derivatives", False, 0, total, "pixels",
+        f"samples={n}: 2x2 quads are simulated with samples=1 only, so no footprint is known "
+        f"and texture_filter={texture_filter!r} samples level 0 everywhere (as if magnified: "
+        "the image equals bilinear's); render with samples=1 to see the mip levels",
+    )  # fmt: skip
 
 
 def _shade(scene: Scene, attrs, ids, layout, texture_filter, ddx=None, ddy=None) -> np.ndarray:

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..core.sample_patterns import as_samples, is_single
 from ..core.snapping import SUBPIXEL_BITS
-from ..core.validate import as_bool
+from ..core.validate import as_bool, as_real
 from .hierarchical_z import HiZResult, replay_stage
 from .hiz_tiles import HiZCut, HiZTiles
 from .inputs import check_render
@@ -206,15 +206,36 @@ class Frame:
                [1. , 0.5]])
         """
         ids = self.sample_triangle_id
+        values = as_real("values", values)  # strings, complex, ragged: a named error
         if ids is None:
             ids = self.triangle_id[..., None]
-            values = np.asarray(values, dtype=np.float64)[:, :, None]
-        values = np.asarray(values, dtype=np.float64)
-        if values.shape[:3] != ids.shape:
-            raise ValueError(f"values must have shape {ids.shape} (+ channels), got {values.shape}")
+            if values.shape[:2] != ids.shape[:2]:
+                raise ValueError(
+                    f"values must have shape {ids.shape[:2]} (+ channels) for a one-sample "
+                    f"frame, got {values.shape}"
+                )
+            values = values[:, :, None]
+        if values.shape[:3] != ids.shape or values.ndim > 4:
+            raise ValueError(
+                f"values must have shape {ids.shape} or {ids.shape + ('c',)}, got {values.shape}"
+            )
+        bg = as_real("background", background)
+        if bg.shape not in ((), values.shape[3:]):
+            raise ValueError(
+                f"background must be a number or have shape {values.shape[3:]} (one value per "
+                f"channel of values), got {bg.shape}"
+            )
         covered = (ids >= 0).reshape(*ids.shape, *([1] * (values.ndim - 3)))
-        bg = np.broadcast_to(np.asarray(background, dtype=np.float64), values.shape[3:])
-        return np.where(covered, values, bg).mean(axis=2)
+        bg = np.broadcast_to(bg, values.shape[3:])
+        picked = np.where(covered, values, bg)
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = picked.mean(axis=2)
+        # Values near ±1.8e308: the sum overflows although the mean does not. Average those
+        # pixels scaled by 2**-5 (exact for normal numbers; S <= 32), then scale back.
+        bad = ~np.isfinite(out) & np.isfinite(picked).all(axis=2)
+        if bad.any():
+            out[bad] = (picked[bad] * 2.0**-5).mean(axis=1) * 2.0**5
+        return out
 
 
 def render(

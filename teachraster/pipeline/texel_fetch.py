@@ -104,6 +104,7 @@ def filtered(table, offset, h, w, u, v, filter: str, wrap: str) -> np.ndarray:
     def fetch(row, col):
         return np.take(table, offset + row * w + col, axis=0)
 
+    u, v = reduce_coordinates(u, wrap), reduce_coordinates(v, wrap)
     if filter == "nearest":
         # The texel whose square [c/W, (c+1)/W) contains u: floor(u * W), then wrap the index.
         return fetch(wrap_index(np.floor(v * h), h, wrap), wrap_index(np.floor(u * w), w, wrap))
@@ -116,5 +117,45 @@ def filtered(table, offset, h, w, u, v, filter: str, wrap: str) -> np.ndarray:
     r0, r1 = wrap_index(y0, h, wrap), wrap_index(y0 + 1, h, wrap)
     t00, t01 = fetch(r0, c0), fetch(r0, c1)
     t10, t11 = fetch(r1, c0), fetch(r1, c1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = _bilinear_blend(t00, t01, t10, t11, fx, fy)
+    bad = ~np.isfinite(out).all(axis=1)
+    if bad.any():
+        # Texels near ±1.8e308: a difference such as 1e308 - (-1e308) overflows although the
+        # blend (a convex combination) does not. Blend those samples scaled down by 2**-4
+        # (exact), then scale back: inf only where the true value overflows (it cannot).
+        s = 2.0**-4
+        tb = [t[bad] * s for t in (t00, t01, t10, t11)]
+        out[bad] = _bilinear_blend(*tb, fx[bad], fy[bad]) / s
+    return out
+
+
+def _bilinear_blend(t00, t01, t10, t11, fx, fy):
     top = t00 + fx * (t01 - t00)
     return top + fy * (t10 + fx * (t11 - t10) - top)
+
+
+#: Beyond this magnitude a coordinate has no fractional texel left (u W is an integer) and
+#: u W may even overflow: such coordinates are reduced first, exactly.
+HUGE_COORDINATE = 2.0**40
+
+
+def reduce_coordinates(u: np.ndarray, wrap: str) -> np.ndarray:
+    """``u`` with huge values brought into range without changing the texel they pick.
+
+    ``repeat`` tiles with period 1, so ``u mod 1`` (exact in floating point) reads the same
+    texels; ``clamp`` reads the border texel for anything beyond [0, 1], so such ``u`` are
+    clamped to [-1, 2]. Ordinary coordinates are returned untouched (the same bits as
+    before), so only values that would otherwise overflow ``u W`` change.
+
+    >>> reduce_coordinates(np.array([0.25, 1.7e308, -3e300]), "repeat")
+    array([0.25, 0.  , 0.  ])
+    >>> reduce_coordinates(np.array([0.25, 1.7e308, -3e300]), "clamp")
+    array([ 0.25,  2.  , -1.  ])
+    """
+    huge = np.abs(u) > HUGE_COORDINATE
+    if not huge.any():
+        return u
+    u = np.array(u, dtype=np.float64)
+    u[huge] = np.mod(u[huge], 1.0) if wrap == "repeat" else np.clip(u[huge], -1.0, 2.0)
+    return u

@@ -135,7 +135,8 @@ def sample(
         :func:`~teachraster.pipeline.texture_filters.mip_level` of them.
     max_anisotropy : number >= 1
         Most probes ``anisotropic`` takes along the footprint's major axis (GL's
-        ``TEXTURE_MAX_ANISOTROPY``).
+        ``TEXTURE_MAX_ANISOTROPY``); clamped to ``MAX_ANISOTROPY`` (16), as GL clamps it to
+        the implementation's maximum (16 on llvmpipe), so ``inf`` means 16.
 
     Returns
     -------
@@ -201,9 +202,10 @@ def _sample_mipmapped(levels, flat, ok, lead, filter, wrap, lod, ddx, ddy, max_a
         raise ValueError(f"filter={filter!r} needs lod, or ddx and ddy to compute it from")
     n = flat.shape[0]
     if lod is not None:
+        lam = _real_not_bool("lod", lod)
         try:
-            lam = np.broadcast_to(np.asarray(lod, dtype=np.float64), lead).reshape(n)
-        except (TypeError, ValueError):
+            lam = np.broadcast_to(lam, lead).reshape(n)
+        except ValueError:
             raise ValueError(f"lod must be a number or an array of shape {lead}") from None
     else:
         dx = _derivatives("ddx", ddx, lead)
@@ -217,11 +219,19 @@ def _sample_mipmapped(levels, flat, ok, lead, filter, wrap, lod, ddx, ddy, max_a
     return sample_levels(levels, u, v, lam[ok], how, within, wrap), ok
 
 
+def _real_not_bool(name, value) -> np.ndarray:
+    """``value`` as float64 (NaN and inf pass); strings, complex and booleans refused.
+
+    ``lod=True`` or ``lod="1"`` is a slip, never a level of detail (as in ``mip_level``).
+    """
+    arr = as_real(name, value)
+    if np.asarray(value).dtype.kind == "b":
+        raise TypeError(f"{name} must be numeric (real numbers), got {value!r}")
+    return arr
+
+
 def _derivatives(name, value, lead):
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a numeric array of shape (..., k), k >= 2") from None
+    arr = _real_not_bool(name, value)
     if arr.shape[:-1] != lead or arr.ndim < 1 or arr.shape[-1] < 2:
         raise ValueError(f"{name} must have shape {lead + ('k',)} with k >= 2, got {arr.shape}")
     return arr.reshape(-1, arr.shape[-1])[:, :2]

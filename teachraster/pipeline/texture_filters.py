@@ -46,8 +46,15 @@ MIPMAP_FILTERS = {
 }
 
 
+#: The most probes ``anisotropic`` takes (GL's ``MAX_TEXTURE_MAX_ANISOTROPY``, 16 on llvmpipe
+#: and on most GPUs): a larger ``max_anisotropy`` is clamped to it, as GL clamps the parameter.
+MAX_ANISOTROPY = 16
+
+
 def _as_derivative(name: str, value) -> np.ndarray:
     arr = as_real(name, value)  # NaN passes: an uncovered pixel's derivative
+    if np.asarray(value).dtype.kind == "b":
+        raise TypeError(f"{name} must be numeric (real numbers), got booleans")
     if arr.ndim < 1 or arr.shape[-1] < 2:
         raise ValueError(
             f"{name} must have shape (..., k) with k >= 2 (its first two channels are the "
@@ -62,7 +69,34 @@ def footprint_axes(ddx, ddy, texture_shape) -> tuple[np.ndarray, np.ndarray]:
     dx, dy = _as_derivative("ddx", ddx), _as_derivative("ddy", ddy)
     if dx.shape != dy.shape:
         raise ValueError(f"ddx and ddy must have the same shape, got {dx.shape} and {dy.shape}")
-    return np.hypot(dx[..., 0] * w, dx[..., 1] * h), np.hypot(dy[..., 0] * w, dy[..., 1] * h)
+    with np.errstate(over="ignore"):  # inf only where the true length overflows
+        return np.hypot(dx[..., 0] * w, dx[..., 1] * h), np.hypot(dy[..., 0] * w, dy[..., 1] * h)
+
+
+def log2_length(d: np.ndarray, w: int, h: int) -> np.ndarray:
+    """``log2 ‖(d_u W, d_v H)‖``, i.e. ``½ log2 ((d_u W)² + (d_v H)²)``, for any ``d``.
+
+    The squares are taken as they are where they cannot overflow or underflow (the GL
+    formula, bit for bit), and in a power-of-two-scaled form elsewhere, so derivatives of
+    1e±200 give their true λ instead of ±inf; ``inf`` for an infinite derivative, ``-inf``
+    for a zero one, NaN for NaN.
+
+    >>> float(log2_length(np.array([2.0**-600, 0.0]), 4, 4))
+    -598.0
+    >>> float(log2_length(np.array([1e200, 0.0]), 1, 1)) == float(np.log2(1e200))
+    True
+    """
+    with np.errstate(all="ignore"):
+        out = 0.5 * np.log2((d[..., 0] * w) ** 2 + (d[..., 1] * h) ** 2)
+        big = np.maximum(np.abs(d[..., 0]), np.abs(d[..., 1]))
+        # Outside about 2**±480 a square (times W² ≤ 2**62) may leave the float range.
+        far = np.isfinite(big) & (big > 0) & ((big > 2.0**480) | (big < 2.0**-480))
+        if far.any():
+            _, e = np.frexp(big[far])
+            su, sv = np.ldexp(d[..., 0][far], -e) * w, np.ldexp(d[..., 1][far], -e) * h
+            out = np.array(out, dtype=np.float64)
+            out[far] = 0.5 * np.log2(su * su + sv * sv) + e
+    return out
 
 
 def mip_level(ddx, ddy, texture_shape) -> np.ndarray:
@@ -91,12 +125,9 @@ def mip_level(ddx, ddy, texture_shape) -> np.ndarray:
     dx, dy = _as_derivative("ddx", ddx), _as_derivative("ddy", ddy)
     if dx.shape != dy.shape:
         raise ValueError(f"ddx and ddy must have the same shape, got {dx.shape} and {dy.shape}")
-    # log2 of the longer axis, from squared lengths: λ = ½ log2 max(|∂x|², |∂y|²) needs no
-    # square roots (the same number, and the cheapest part of trilinear filtering stays cheap).
-    sx = (dx[..., 0] * w) ** 2 + (dx[..., 1] * h) ** 2
-    sy = (dy[..., 0] * w) ** 2 + (dy[..., 1] * h) ** 2
-    with np.errstate(divide="ignore"):
-        return 0.5 * np.log2(np.maximum(sx, sy))
+    # log2 of the longer axis. Squared lengths would overflow for derivatives near 1e200
+    # (and underflow near 1e-200): each length is taken in a power-of-two-scaled form.
+    return np.maximum(log2_length(dx, w, h), log2_length(dy, w, h))
 
 
 def nearest_level(lam: np.ndarray, q: int) -> np.ndarray:
@@ -150,17 +181,29 @@ def sample_levels(levels, u, v, lam, how: str, within: str, wrap: str, table=Non
 def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray:
     """EXT_texture_filter_anisotropic at finite ``u``, ``v`` (n,) with derivatives (n, 2)."""
     h, w = levels[0].shape[:2]
-    px, py = np.hypot(dx[:, 0] * w, dx[:, 1] * h), np.hypot(dy[:, 0] * w, dy[:, 1] * h)
+    with np.errstate(over="ignore"):  # inf only where the true length overflows
+        px, py = np.hypot(dx[:, 0] * w, dx[:, 1] * h), np.hypot(dy[:, 0] * w, dy[:, 1] * h)
     pmax, pmin = np.maximum(px, py), np.minimum(px, py)
     major = np.where((px >= py)[:, None], dx, dy)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         ratio = np.ceil(pmax / pmin)
     # pmin = 0 is infinitely anisotropic. Where the texture is magnified (pmax <= 1, λ <= 0)
-    # there is nothing to average: one probe at the centre, i.e. bilinear on level 0.
-    n = np.where(pmax <= 1, 1, np.minimum(ratio, max_anisotropy))
+    # there is nothing to average: one probe at the centre, i.e. bilinear on level 0. The
+    # probe count is clamped to MAX_ANISOTROPY whatever max_anisotropy asks (GL clamps it).
+    cap = min(max_anisotropy, MAX_ANISOTROPY)
+    n = np.where(pmax <= 1, 1, np.fmin(np.nan_to_num(ratio, nan=cap), cap))
     n = np.maximum(n, 1).astype(np.intp)
     with np.errstate(divide="ignore"):
         lam = np.log2(pmax / n)
+    # Lengths that underflowed or overflowed in the product above: λ from the scaled form.
+    odd = (pmax == 0) | np.isinf(pmax)
+    if odd.any():
+        lam[odd] = np.maximum(log2_length(dx[odd], w, h), log2_length(dy[odd], w, h)) - np.log2(
+            n[odd]
+        )
+    # An infinite derivative has no finite probe offsets: its probes all sit at the centre,
+    # on the smallest level (λ = inf), like every other filter's infinite footprint.
+    major = np.where(np.isfinite(major), major, 0.0)
     table = level_table(levels)
     out = 0.0
     for i in range(1, int(n.max(initial=1)) + 1):
