@@ -176,7 +176,7 @@ def add_compare(sub) -> None:
 
 def add_scene(sub) -> None:
     """``teachraster scene NAME``: a built-in scene through the whole pipeline."""
-    from ..pipeline.scenes import SCENES
+    from ..pipeline.rendering.scenes import SCENES
 
     p = sub.add_parser(
         "scene",

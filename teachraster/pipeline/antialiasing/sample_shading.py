@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.interpolation import huge_exponents, weights_per_row
+from ...core.interpolation import huge_exponents, weights_per_row
 
 
 @dataclass(frozen=True)

@@ -19,11 +19,11 @@ from functools import cached_property
 
 import numpy as np
 
-from ..core.bbox import centre_ranges
-from ..core.edges import facing, setup_edges
-from ..core.snapping import SUBPIXEL_BITS, check_bits
-from ..core.span_tables import edge_bounds
-from ..core.validate import as_bool, as_finite, as_size, check_pixels, short_repr
+from ...core.bbox import centre_ranges
+from ...core.edges import facing, setup_edges
+from ...core.snapping import SUBPIXEL_BITS, check_bits
+from ...core.span_tables import edge_bounds
+from ...core.validate import as_bool, as_finite, as_size, check_pixels, short_repr
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.validate import as_finite, as_float, as_real
+from ...core.validate import as_finite, as_float, as_real
 
 PROJECTIONS = ("perspective", "orthographic")
 

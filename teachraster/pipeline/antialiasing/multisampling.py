@@ -39,19 +39,19 @@ from functools import cache
 
 import numpy as np
 
-from ..core.edges import setup_edges
-from ..core.multisample import offsets_in_units
-from .batched_fill import weight_source
-from .depth import quantize
-from .render_plan import (
+from ...core.edges import setup_edges
+from ...core.multisample import offsets_in_units
+from ..planning.render_plan import (
     attributes_effect,
     depth_test_effect,
     multisampling_effect,
     perspective_effect,
 )
-from .sample_coverage import centre_covered, sample_fragments
+from ..rasterization.batched_fill import weight_source
+from ..rasterization.sample_coverage import centre_covered, sample_fragments
+from ..visibility.depth import quantize
+from ..visibility.zbuffer import resolve
 from .sample_shading import BLOCK, shade, shade_tables
-from .zbuffer import resolve
 
 
 def depth_planes(source, window) -> np.ndarray:

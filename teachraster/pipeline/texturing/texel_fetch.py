@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import as_int, as_real
+from ...core.validate import as_int, as_real
 
 #: The filters within one level, and what lies outside [0, 1].
 LEVEL_FILTERS = ("nearest", "bilinear")

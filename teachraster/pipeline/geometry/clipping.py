@@ -32,7 +32,7 @@ from functools import cached_property
 
 import numpy as np
 
-from ..core.validate import as_bool, as_finite, as_float
+from ...core.validate import as_bool, as_finite, as_float
 
 #: A clipped vertex always has w > W_MIN (= 0): the eye plane has no margin, which keeps
 #: clipping invariant under scaling a vertex by a positive factor (see the module docstring).

@@ -40,13 +40,12 @@ from functools import cached_property
 
 import numpy as np
 
-from ..core.edges import culled as culled_by
-from ..core.edges import setup_edges
-from ..core.interpolation import blend_each, convex_weights, normalised_weights, weights_per_row
-from .batched_fill import Fragments, rasterize_batch
-from .clipping import CLIPPED, DROPPED, INSIDE, ClipResult, classify, clip_triangles
-from .depth import quantize
-from .render_plan import (
+from ...core.edges import culled as culled_by
+from ...core.edges import setup_edges
+from ...core.interpolation import blend_each, convex_weights, normalised_weights, weights_per_row
+from ..geometry.clipping import CLIPPED, DROPPED, INSIDE, ClipResult, classify, clip_triangles
+from ..geometry.viewport import to_window
+from ..planning.render_plan import (
     Effect,
     attributes_effect,
     clipping_effect,
@@ -54,8 +53,9 @@ from .render_plan import (
     depth_test_effect,
     perspective_effect,
 )
-from .viewport import to_window
-from .zbuffer import passed_on_arrival, resolve
+from ..rasterization.batched_fill import Fragments, rasterize_batch
+from ..visibility.depth import quantize
+from ..visibility.zbuffer import passed_on_arrival, resolve
 
 
 def guard_band(width: int, height: int, bits: int | None) -> float:

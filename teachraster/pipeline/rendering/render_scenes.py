@@ -12,17 +12,17 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..core.sample_patterns import is_single
-from ..core.validate import check_choice
-from .camera import Camera
-from .inputs import check_force, check_size
-from .quad_derivatives import may_minify
-from .render_plan import Effect, Plan
+from ...core.sample_patterns import is_single
+from ...core.validate import check_choice
+from ..geometry.camera import Camera
+from ..planning.inputs import check_force, check_size
+from ..planning.render_plan import Effect, Plan
+from ..texturing.quad_derivatives import may_minify
+from ..texturing.texture import TEXTURE_FILTERS, sample
+from ..texturing.texture_filters import MIPMAP_FILTERS
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 from .scenes import Scene
-from .texture import TEXTURE_FILTERS, sample
-from .texture_filters import MIPMAP_FILTERS
 
 
 @dataclass(frozen=True)

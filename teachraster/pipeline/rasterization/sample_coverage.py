@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.edges import passes
+from ...core.edges import passes
 from .batched_fill import flat_ranges, line_bounds
 
 #: Raster lines per block in the per-sample span pass (see :func:`sample_fragments`).

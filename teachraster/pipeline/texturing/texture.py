@@ -36,7 +36,7 @@ from numbers import Real
 
 import numpy as np
 
-from ..core.validate import as_int, as_real, check_choice
+from ...core.validate import as_int, as_real, check_choice
 from .mip_pyramid import as_pyramid, is_pyramid
 from .texel_fetch import LEVEL_FILTERS, WRAPS, as_texture, as_uv, lookup, texture_size
 from .texture_filters import MIPMAP_FILTERS, mip_level, sample_anisotropic, sample_levels

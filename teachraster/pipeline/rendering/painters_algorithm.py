@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import check_choice
-from .inputs import check_attrs, check_clip
+from ...core.validate import check_choice
+from ..planning.inputs import check_attrs, check_clip
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 

@@ -46,7 +46,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .batched_fill import Fragments, flat_ranges
+from ..rasterization.batched_fill import Fragments, flat_ranges
 from .depth import quantize
 from .hierarchical_z import HIZ_TILE
 

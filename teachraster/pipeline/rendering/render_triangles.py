@@ -27,15 +27,16 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core.sample_patterns import as_samples, is_single
-from ..core.snapping import SUBPIXEL_BITS
-from ..core.validate import as_bool, as_real
-from .hierarchical_z import HiZResult, replay_stage
-from .hiz_tiles import HiZCut, HiZTiles
-from .inputs import check_render
-from .multisampling import multisample_stage
-from .quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
-from .render_plan import Plan, depth_test_effect, hi_z_effect
+from ...core.sample_patterns import as_samples, is_single
+from ...core.snapping import SUBPIXEL_BITS
+from ...core.validate import as_bool, as_real
+from ..antialiasing.multisampling import multisample_stage
+from ..planning.inputs import check_render
+from ..planning.render_plan import Plan, depth_test_effect, hi_z_effect
+from ..texturing.quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
+from ..visibility.hierarchical_z import HiZResult, replay_stage
+from ..visibility.hiz_tiles import HiZCut, HiZTiles
+from ..visibility.zbuffer import passed_on_arrival
 from .stages import (
     clip_stage,
     cull_stage,
@@ -44,7 +45,6 @@ from .stages import (
     interpolate_stage,
     viewport_stage,
 )
-from .zbuffer import passed_on_arrival
 
 
 @dataclass(frozen=True)

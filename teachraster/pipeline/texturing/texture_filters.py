@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import as_real
+from ...core.validate import as_real
 from .texel_fetch import filtered, level_table, texture_size
 
 #: Filters that use the pyramid, each as (how levels are chosen, the filter within a level).

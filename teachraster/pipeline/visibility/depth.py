@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import as_float, as_real, check_choice
+from ...core.validate import as_float, as_real, check_choice
 
 DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
 MAPPINGS = ("perspective", "linear", "reversed")

@@ -37,7 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .batched_fill import Fragments
+from ..rasterization.batched_fill import Fragments
 from .depth import quantize
 
 #: Side of a Hi-Z tile, in pixels (hardware uses 8×8 or larger).

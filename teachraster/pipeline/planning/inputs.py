@@ -14,10 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.fill import CULL
-from ..core.interpolation import MODES
-from ..core.snapping import check_bits
-from ..core.validate import (
+from ...core.fill import CULL
+from ...core.interpolation import MODES
+from ...core.snapping import check_bits
+from ...core.validate import (
     as_bool,
     as_finite,
     as_size,
@@ -26,7 +26,7 @@ from ..core.validate import (
     check_shape,
     short_repr,
 )
-from .depth import DEPTH_FORMATS
+from ..visibility.depth import DEPTH_FORMATS
 from .render_plan import parse_force
 
 #: Bytes per pixel of render's frame-sized buffers without attributes (triangle id, depth,

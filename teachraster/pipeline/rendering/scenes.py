@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.validate import short_repr
-from .camera import Camera
-from .mesh import (
+from ...core.validate import short_repr
+from ..geometry.camera import Camera
+from ..geometry.mesh import (
     Mesh,
     cube_mesh,
     fan_mesh,
@@ -39,7 +39,7 @@ def _local_checkerboard(checks: int = 8, texels: int = 64) -> np.ndarray:
 
 
 try:  # the texture module's checkerboard, where it exists (it is written separately)
-    from .texture import checkerboard
+    from ..texturing.texture import checkerboard
 except ImportError:
     checkerboard = _local_checkerboard
 

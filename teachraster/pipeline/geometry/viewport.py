@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.validate import as_real, as_size
+from ...core.validate import as_real, as_size
 
 
 def to_window(clip, width: int, height: int) -> np.ndarray:

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core.validate import as_finite, as_float, as_int, check_shape
+from ...core.validate import as_finite, as_float, as_int, check_shape
 
 
 def _integral(arr: np.ndarray) -> bool:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .hiz_tiles import LINE_COST, MIN_SAVING
+from ..visibility.hiz_tiles import LINE_COST, MIN_SAVING
 
 #: Effects that ``force=`` can switch on everywhere, for comparison.
 FORCEABLE = (

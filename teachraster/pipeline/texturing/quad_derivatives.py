@@ -26,8 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.interpolation import huge_exponents
-from .render_plan import derivatives_effect
+from ...core.interpolation import huge_exponents
+from ..planning.render_plan import derivatives_effect
 
 #: ``derivatives=`` choices; ``True`` means "coarse".
 DERIVATIVE_MODES = ("coarse", "fine")
