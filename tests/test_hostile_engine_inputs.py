@@ -118,12 +118,36 @@ def test_numpy_booleans_are_flags_everywhere():
 
 
 def test_trilinear_under_msaa_is_never_a_silent_downgrade():
-    frame = tr.render(tr.get_scene("textured_floor"), None, 64, 48, samples=4,
-                      texture_filter="trilinear")  # fmt: skip
-    effect = frame.plan["derivatives"]
-    assert not effect.ran and "level 0" in effect.why and "samples=4" in effect.why
-    single = tr.render(tr.get_scene("textured_floor"), None, 64, 48, texture_filter="trilinear")
-    assert "level 0 everywhere" not in single.plan["derivatives"].why
+    scene = tr.get_scene("textured_floor")
+    msaa = tr.render(scene, None, 96, 72, samples=4, texture_filter="trilinear")
+    effect = msaa.plan["derivatives"]
+    assert effect.ran and "samples=4" in effect.why and "quad" in effect.why
+    bilinear = tr.render(scene, None, 96, 72, samples=4, texture_filter="bilinear")
+    assert np.nanmax(np.abs(msaa.image - bilinear.image)) > 0.1  # mip levels are used
+    # Where one triangle covers every sample of a pixel, the pixel shades exactly as in the
+    # one-sample render: same quad, same triangle, same differences.
+    single = tr.render(scene, None, 96, 72, texture_filter="trilinear")
+    ids = msaa.sample_triangle_id
+    whole = (ids == ids[..., :1]).all(axis=-1) & (ids[..., 0] >= 0)
+    np.testing.assert_allclose(msaa.image[whole], single.image[whole], rtol=0, atol=1e-12)
+
+
+def test_msaa_derivatives_match_the_one_sample_quads():
+    from teachraster.pipeline.rendering.msaa_derivatives import sample_derivatives
+
+    scene = tr.get_scene("textured_floor")
+    single = tr.render(scene, None, 64, 48, texture_filter="trilinear")
+    msaa = tr.render(scene, None, 64, 48, samples=4)
+    clip = scene.camera.clip(scene.mesh.corner_positions(), 64 / 48)
+    ddx, ddy, _ = sample_derivatives(
+        msaa.sample_triangle_id, clip, scene.mesh.corner("uv"), 8, True
+    )
+    ids = msaa.sample_triangle_id
+    whole = (ids == ids[..., :1]).all(axis=-1) & (ids[..., 0] >= 0)
+    uv = single.layout["uv"]
+    np.testing.assert_allclose(ddx[whole][:, 0], single.ddx[whole][:, uv], atol=1e-15)
+    np.testing.assert_allclose(ddy[whole][:, 0], single.ddy[whole][:, uv], atol=1e-15)
+    assert np.isnan(ddx[ids < 0]).all()
 
 
 @pytest.fixture(scope="module")

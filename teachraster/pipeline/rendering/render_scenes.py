@@ -13,6 +13,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ...core.sample_patterns import is_single
+from ...core.snapping import SUBPIXEL_BITS
 from ...core.validate import check_choice
 from ..geometry.camera import Camera
 from ..planning.inputs import check_force, check_size
@@ -20,6 +21,7 @@ from ..planning.render_plan import Effect, Plan
 from ..texturing.quad_derivatives import may_minify
 from ..texturing.texture import TEXTURE_FILTERS, sample
 from ..texturing.texture_filters import MIPMAP_FILTERS
+from .msaa_derivatives import sample_derivatives
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
 from .scenes import Scene
@@ -81,9 +83,9 @@ def render_scene(
     quads only for the triangles the texture may be minified on (the plan's "derivatives"
     effect says how many; ``force="derivatives"`` computes them everywhere, with the same
     image); elsewhere the texture is magnified and level 0 is sampled.
-    With ``samples`` > 1 a mipmapped filter samples level 0 (2×2 quads are simulated with
-    one sample per pixel only), and the plan's "derivatives" entry says so: never a silent
-    downgrade.
+    With ``samples`` > 1 a mipmapped filter gets its footprint as a GPU computes it under
+    MSAA: coarse differences in 2×2 quads of pixel centres, once per (pixel, triangle) pair
+    that a sample shows (:mod:`.msaa_derivatives`); the plan's "derivatives" entry counts them.
 
     >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
@@ -122,8 +124,15 @@ def render_scene(
         replace(e, why=f"{why}; {e.why}") if e.name == "attributes" else e for e in frame.plan
     )
     effects = _derivatives_why(effects, scene, texture_filter, kwargs)
+    sample_ddx = sample_ddy = None
     if not single and scene.shading == "texture" and texture_filter in MIPMAP_FILTERS:
-        effects = (*effects, _msaa_mip_effect(texture_filter, kwargs["samples"], frame))
+        uv = layout["uv"]
+        sample_ddx, sample_ddy, effect = sample_derivatives(
+            frame.sample_triangle_id, clip, attrs[..., uv],
+            kwargs.get("subpixel_bits", SUBPIXEL_BITS),
+            kwargs.get("interpolation", "perspective") == "perspective",
+        )  # fmt: skip
+        effects = (*(e for e in effects if e.name != "derivatives"), effect)
     if not names:
         effects = tuple(
             Effect("attributes", False, 0, e.total, e.unit, why) if e.name == "attributes" else e
@@ -135,7 +144,7 @@ def render_scene(
                        frame.ddx, frame.ddy)  # fmt: skip
     else:  # MSAA: each sample holds its triangle's colour (shaded once per pixel), resolved
         colours = _shade(scene, frame.sample_attrs, frame.sample_triangle_id, layout,
-                         texture_filter)  # fmt: skip
+                         texture_filter, sample_ddx, sample_ddy, full=False)  # fmt: skip
         image = frame.resolve(colours, background)
         image[~frame.coverage] = np.nan  # no sample covered: uncovered, as without MSAA
     return SceneFrame(
@@ -203,26 +212,18 @@ def _derivatives_why(effects, scene, texture_filter, kwargs):
     )
 
 
-def _msaa_mip_effect(texture_filter, samples, frame) -> Effect:
-    """The plan's word on a mipmapped filter under MSAA: no footprint, level 0 everywhere."""
-    n = samples if isinstance(samples, int | np.integer) else len(frame.samples)
-    total = int(frame.coverage.sum())
-    return Effect(
-        "derivatives", False, 0, total, "pixels",
-        f"samples={n}: 2x2 quads are simulated with samples=1 only, so no footprint is known "
-        f"and texture_filter={texture_filter!r} samples level 0 everywhere (as if magnified: "
-        "the image equals bilinear's); render with samples=1 to see the mip levels",
-    )  # fmt: skip
-
-
-def _shade(scene: Scene, attrs, ids, layout, texture_filter, ddx=None, ddy=None) -> np.ndarray:
+def _shade(scene: Scene, attrs, ids, layout, texture_filter, ddx=None, ddy=None,
+           full=True) -> np.ndarray:  # fmt: skip
     """The scene's colour from interpolated ``attrs`` (..., k) and triangle ``ids`` (...);
-    ``ddx``/``ddy`` (..., k) the quad derivatives a mipmapped texture filter needs."""
+    ``ddx``/``ddy`` the quad derivatives a mipmapped texture filter needs: of every channel
+    (``full``), or of the uv channels only."""
     if scene.shading == "texture":
         uv = layout["uv"]
         if ddx is None:
             return _texture(scene.texture, attrs[..., uv], texture_filter)
-        return _texture(scene.texture, attrs[..., uv], texture_filter, ddx[..., uv], ddy[..., uv])
+        if full:
+            ddx, ddy = ddx[..., uv], ddy[..., uv]
+        return _texture(scene.texture, attrs[..., uv], texture_filter, ddx, ddy)
     if scene.shading == "color":
         return attrs[..., layout["color"]]
     return _palette(ids)

@@ -259,6 +259,28 @@ def quad_pairs(rows, cols, tris, width: int, height: int):
     return (quad_id // qw) * 2, (quad_id % qw) * 2, tri, shaded, pixel_pair
 
 
+def shared_quad_pairs(rows, cols, tris, width: int, height: int):
+    """:func:`quad_pairs` for pixels that may show several triangles (MSAA: a pixel shades
+    once for every triangle that covers one of its samples).
+
+    Each (pixel, triangle) pair is a lane of that triangle's quad; the same tuple as
+    :func:`quad_pairs`, pairs sorted by quad then triangle.
+
+    >>> rows, cols, tris = np.array([0, 0, 1]), np.array([0, 0, 1]), np.array([3, 5, 3])
+    >>> q_row, q_col, q_tri, shaded, pixel_pair = shared_quad_pairs(rows, cols, tris, 4, 4)
+    >>> q_tri.tolist(), shaded.astype(int).tolist(), pixel_pair.tolist()
+    ([3, 5], [[1, 0, 0, 1], [1, 0, 0, 0]], [0, 1, 0])
+    """
+    qw = (width + 1) // 2
+    quad = (rows // 2) * qw + cols // 2
+    n_tri = int(tris.max()) + 1 if len(tris) else 1
+    keys, pixel_pair = np.unique(quad * n_tri + tris, return_inverse=True)
+    quad_id, tri = keys // n_tri, keys % n_tri
+    shaded = np.zeros((len(keys), 4), dtype=bool)
+    shaded[pixel_pair, (rows % 2) * 2 + cols % 2] = True
+    return (quad_id // qw) * 2, (quad_id % qw) * 2, tri, shaded, pixel_pair.ravel()
+
+
 def as_derivative_mode(derivatives) -> str | None:
     """``derivatives=`` as None (not asked), "coarse" or "fine"; ValueError naming it."""
     # One rule for flags (core.validate.as_bool): numpy's bools are bools too.
