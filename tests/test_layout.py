@@ -125,7 +125,9 @@ def test_pipeline_is_grouped_by_stage():
     """No module sits loose in pipeline/: each lives in the sub-package of its stage."""
     loose = [p.name for p in (PACKAGE / "pipeline").glob("*.py") if p.name != "__init__.py"]
     assert not loose, f"modules loose in pipeline/: {loose}"
-    groups = sorted(p.name for p in (PACKAGE / "pipeline").iterdir() if (p / "__init__.py").exists())
+    groups = sorted(
+        p.name for p in (PACKAGE / "pipeline").iterdir() if (p / "__init__.py").exists()
+    )
     assert set(groups) <= set(PIPELINE_STAGES), groups
 
 
