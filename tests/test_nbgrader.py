@@ -1,0 +1,135 @@
+"""nbgrader grades the exercises for real (issue 17): the whole pipeline, in a temporary course.
+
+``teachraster nbgrader DIR`` lays out the course; then nbgrader's own commands run there:
+``generate_assignment`` of every exercise notebook, ``autograde`` of three submissions per
+assignment — the teacher version (full marks), the release unchanged (0) and the release with
+its first exercise solved (that exercise's points) —, ``generate_feedback`` and ``export``,
+whose ``grades.csv`` is checked. Every ``notebooks/exercises/*.ipynb`` takes part, whatever its
+exercises: the solved exercise and its points are found from the nbgrader metadata.
+
+nbgrader is a test dependency (``teachraster[test]``). Where it is missing the round trip skips,
+saying so, unless TEACHRASTER_REQUIRE_NBGRADER is set (CI sets it): then it fails.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from teachraster.cli import main
+from teachraster.exercises.student_version import student_text
+
+ROOT = Path(__file__).resolve().parent.parent
+EXERCISES = sorted((ROOT / "notebooks" / "exercises").glob("*.ipynb"))
+#: nbgrader's command, from this environment first (the venv's bin may not be on PATH).
+BIN = str(Path(sys.executable).parent)
+NBGRADER = shutil.which("nbgrader", path=os.pathsep.join([BIN, os.environ.get("PATH", "")]))
+REQUIRED = bool(os.environ.get("TEACHRASTER_REQUIRE_NBGRADER"))
+STUDENTS = ("teacher", "untouched", "one_solved")
+
+
+def _nbgrader(root: Path, *args: str) -> str:
+    if NBGRADER is None:
+        if REQUIRED:
+            raise RuntimeError("TEACHRASTER_REQUIRE_NBGRADER is set but nbgrader is missing")
+        pytest.skip("nbgrader is not installed (pip install 'teachraster[test]')")
+    env = {**os.environ, "PATH": os.pathsep.join([BIN, os.environ.get("PATH", "")])}
+    env["MPLBACKEND"] = "Agg"
+    run = subprocess.run(
+        [NBGRADER, *args], cwd=root, env=env, capture_output=True, text=True, timeout=600
+    )
+    assert run.returncode == 0, f"nbgrader {' '.join(args)}:\n{run.stdout}\n{run.stderr[-4000:]}"
+    return run.stdout + run.stderr
+
+
+def _text(cell: dict) -> str:
+    return "".join(cell["source"])
+
+
+def _grading(cell: dict) -> dict:
+    return cell.get("metadata", {}).get("nbgrader", {})
+
+
+def first_exercise(nb: dict) -> tuple[int, int]:
+    """(index of the first solution cell, points of the graded cells checking it).
+
+    Its checks are the graded cells after it, up to the next solution cell.
+    """
+    cells = nb["cells"]
+    first = next(i for i, c in enumerate(cells) if _grading(c).get("solution"))
+    points = 0
+    for cell in cells[first + 1 :]:
+        if _grading(cell).get("solution"):
+            break
+        if _grading(cell).get("grade"):
+            points += _grading(cell)["points"]
+    return first, points
+
+
+def total_points(nb: dict) -> int:
+    return sum(_grading(c)["points"] for c in nb["cells"] if _grading(c).get("grade"))
+
+
+def _submit(root: Path, student: str, assignment: str, name: str, nb: dict) -> None:
+    folder = root / "submitted" / student / assignment
+    folder.mkdir(parents=True)
+    (folder / name).write_text(json.dumps(nb))
+
+
+@pytest.fixture(scope="module")
+def course(tmp_path_factory) -> Path:
+    """A course directory after the whole nbgrader round trip."""
+    root = tmp_path_factory.mktemp("nbgrader") / "course"
+    assert main(["nbgrader", str(root)]) == 0
+    _nbgrader(root, "generate_assignment", "*")  # every assignment of source/
+    for path in EXERCISES:
+        teacher = json.loads(path.read_text())
+        release = json.loads((root / "release" / path.stem / path.name).read_text())
+        solved = json.loads(json.dumps(release))
+        first, _ = first_exercise(teacher)
+        solved["cells"][first]["source"] = teacher["cells"][first]["source"]
+        for student, nb in zip(STUDENTS, (teacher, release, solved)):
+            _submit(root, student, path.stem, path.name, nb)
+    _nbgrader(root, "autograde", "*")
+    _nbgrader(root, "generate_feedback", "*")
+    _nbgrader(root, "export")
+    return root
+
+
+def test_every_exercise_notebook_is_released_as_its_student_version(course):
+    for path in EXERCISES:
+        release = json.loads((course / "release" / path.stem / path.name).read_text())
+        ours = json.loads(student_text(path))
+        assert [_text(c) for c in release["cells"]] == [_text(c) for c in ours["cells"]]
+        assert "BEGIN SOLUTION" not in json.dumps(release)
+        assert (course / "release" / path.stem / "CONVENTIONS.md").is_file()
+
+
+def test_grades_csv_gives_full_marks_zero_and_the_solved_exercises_points(course):
+    with open(course / "grades.csv", newline="") as f:
+        rows = {(r["assignment"], r["student_id"]): r for r in csv.DictReader(f)}
+    for path in EXERCISES:
+        teacher = json.loads(path.read_text())
+        full, (_, one) = total_points(teacher), first_exercise(teacher)
+        assert full >= one > 0, path.name
+        expected = {"teacher": full, "untouched": 0, "one_solved": one}
+        for student, score in expected.items():
+            row = rows[(path.stem, student)]
+            assert float(row["max_score"]) == full, (path.name, row)
+            assert float(row["score"]) == score, (path.name, student, row)
+
+
+def test_feedback_carries_the_checkers_explanation(course):
+    for path in EXERCISES:
+        name = path.with_suffix(".html").name
+        untouched = (course / "feedback" / "untouched" / path.stem / name).read_text()
+        teacher = (course / "feedback" / "teacher" / path.stem / name).read_text()
+        assert "not implemented yet" in untouched and "AssertionError" in untouched
+        assert "cases pass" in teacher and "AssertionError" not in teacher
