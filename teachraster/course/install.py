@@ -89,7 +89,8 @@ def atomic_write(path: Path, data: bytes) -> None:
         os.replace(tmp, path)
     except OSError as exc:
         _remove(tmp)
-        raise OSError(exc.errno, f"could not write {path} ({exc.strerror or exc}); it is as it was")
+        why = exc.strerror or exc
+        raise OSError(exc.errno, f"could not write {path} ({why}); it is as it was") from exc
     except BaseException:
         _remove(tmp)
         raise
@@ -162,7 +163,9 @@ def install(
     """
     root = _root(directory)
     targets = {name: _target(root, name) for name in files}
-    backup_root = None if backups is None else _target(root, str(PurePosixPath(backups)), folder=True)
+    backup_root = (
+        None if backups is None else _target(root, str(PurePosixPath(backups)), folder=True)
+    )
     outcome = Outcome()
     for name, path in targets.items():
         data = files[name]

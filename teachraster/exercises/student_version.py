@@ -129,15 +129,19 @@ def _cells(nb, name: str) -> list:
     if not isinstance(nb, dict) or not isinstance(nb.get("cells"), list):
         raise NotebookError(f"{name}: not a Jupyter notebook (a JSON object with a list 'cells')")
     if not isinstance(nb.get("nbformat", 4), int) or nb.get("nbformat", 4) < 4:
-        raise NotebookError(f"{name}: notebook format {nb.get('nbformat')!r}; need version 4")
+        raise NotebookError(
+            f"{name}: not a notebook this can read: format {nb.get('nbformat')!r}, not 4"
+        )
     for index, cell in enumerate(nb["cells"]):
         if not (isinstance(cell, dict) and isinstance(cell.get("cell_type"), str)):
-            raise NotebookError(f"{name}: cell {index} is not a notebook cell (no cell_type)")
+            raise NotebookError(f"{name}: not a Jupyter notebook: cell {index} has no cell_type")
         source = cell.get("source", "")
         if isinstance(source, list) and all(isinstance(s, str) for s in source):
             source = ""
         if not isinstance(source, str) or not isinstance(cell.get("metadata", {}), dict):
-            raise NotebookError(f"{name}: cell {index}: its source or metadata is malformed")
+            raise NotebookError(
+                f"{name}: not a Jupyter notebook: cell {index} has a malformed source or metadata"
+            )
     return nb["cells"]
 
 
@@ -146,7 +150,9 @@ def _stubbed(text: str, stub: str) -> bool:
     lines = [line.strip() for line in text.split("\n")]
     first, *rest = stub.split("\n")
     return any(
-        lines[i : i + len(rest) + 1] == [first, *rest] for i in range(len(lines)) if lines[i] == first
+        lines[i : i + len(rest) + 1] == [first, *rest]
+        for i in range(len(lines))
+        if lines[i] == first
     )
 
 
