@@ -133,3 +133,48 @@ def test_feedback_carries_the_checkers_explanation(course):
         teacher = (course / "feedback" / "teacher" / path.stem / name).read_text()
         assert "not implemented yet" in untouched and "AssertionError" in untouched
         assert "cases pass" in teacher and "AssertionError" not in teacher
+
+
+# -- the grading convention, read from the notebooks (no nbgrader needed) ----------------------
+LOCKED = {"grade": False, "locked": True, "schema_version": 3, "solution": False, "task": False}
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=[p.name for p in EXERCISES])
+def test_teacher_notebook_is_an_nbgrader_source(path):
+    """Solution cells, graded check cells worth points right after them, the rest locked."""
+    cells = json.loads(path.read_text())["cells"]
+    ids = [_grading(c).get("grade_id") for c in cells]
+    assert all(ids) and len(set(ids)) == len(ids), ids
+    solutions = [i for i, c in enumerate(cells) if _grading(c).get("solution")]
+    assert solutions
+    checked = set()
+    for i in solutions:
+        fn = ids[i].removesuffix("_solution")
+        assert ids[i] == f"{fn}_solution" and "### BEGIN SOLUTION" in _text(cells[i])
+        assert _grading(cells[i]) == {
+            "grade": False, "grade_id": ids[i], "locked": False, "schema_version": 3,
+            "solution": True, "task": False,
+        }  # fmt: skip
+        check = cells[i + 1]
+        assert _text(check) == (
+            f'report = ex.check("{fn}", {fn})\nshow(report)\nreport.assert_passed()'
+        )
+        meta = _grading(check)
+        assert meta["grade"] and meta["locked"] and not meta["solution"] and meta["points"] > 0
+        assert meta["grade_id"] == f"{fn}_check"
+        checked |= {i, i + 1}
+    for i, cell in enumerate(cells):
+        if i not in checked:
+            assert {k: v for k, v in _grading(cell).items() if k != "grade_id"} == LOCKED, i
+    assert "nbgrader" not in "".join(_text(c) for c in cells if c["cell_type"] == "code")
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=[p.name for p in EXERCISES])
+def test_stubs_state_the_task_in_words_not_the_formula_to_type(path):
+    """The markdown right above a solution states the task and the rule in words: no
+    displayed formula (``$$``) for the student to copy into the stub (issue 20)."""
+    cells = json.loads(path.read_text())["cells"]
+    for i, cell in enumerate(cells):
+        if _grading(cell).get("solution"):
+            task = next(c for c in reversed(cells[:i]) if c["cell_type"] == "markdown")
+            assert "$$" not in _text(task), (path.name, _text(task)[:200])
