@@ -109,8 +109,11 @@ def _remove(tmp: str | None) -> None:
 
 def _backup(path: Path, backups: Path | None, root: Path, now: datetime) -> Path:
     """Keep the current ``path`` under a new, never-used name; return that name."""
-    folder = path.parent if backups is None else backups / path.parent.relative_to(root)
-    folder.mkdir(parents=True, exist_ok=True)
+    folder = path.parent
+    if backups is not None:  # the same layout under backups/, checked as every target is
+        rel = backups.relative_to(root) / path.parent.relative_to(root)
+        folder = _target(root, rel.as_posix(), folder=True)
+        folder.mkdir(parents=True, exist_ok=True)
     stamp = now.strftime("%Y-%m-%dT%H-%M")
     for n in range(1, 1000):
         name = f"{path.stem}.{stamp}{'' if n == 1 else f'-{n}'}{path.suffix}"
@@ -121,10 +124,16 @@ def _backup(path: Path, backups: Path | None, root: Path, now: datetime) -> Path
         except FileExistsError:
             continue
         except OSError:  # no hard links here (some file systems): copy, never over a file
-            if os.path.lexists(backup):
+            try:
+                dst = open(backup, "xb")
+            except FileExistsError:
                 continue
-            with open(path, "rb") as src, open(backup, "xb") as dst:
-                shutil.copyfileobj(src, dst)
+            try:
+                with dst, open(path, "rb") as src:
+                    shutil.copyfileobj(src, dst)
+            except BaseException:
+                _remove(str(backup))  # ours, half written: the original is still whole
+                raise
             return backup
     raise CourseError(f"no free backup name for {path} in {folder}")
 
