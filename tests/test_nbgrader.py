@@ -42,6 +42,7 @@ def _nbgrader(root: Path, *args: str) -> str:
         pytest.skip("nbgrader is not installed (pip install 'teachraster[test]')")
     env = {**os.environ, "PATH": os.pathsep.join([BIN, os.environ.get("PATH", "")])}
     env["MPLBACKEND"] = "Agg"
+    env["JUPYTER_CONFIG_DIR"] = str(root / ".jupyter")  # no user or site nbgrader settings
     run = subprocess.run(
         [NBGRADER, *args], cwd=root, env=env, capture_output=True, text=True, timeout=600
     )
@@ -131,8 +132,15 @@ def test_feedback_carries_the_checkers_explanation(course):
         name = path.with_suffix(".html").name
         untouched = (course / "feedback" / "untouched" / path.stem / name).read_text()
         teacher = (course / "feedback" / "teacher" / path.stem / name).read_text()
-        assert "not implemented yet" in untouched and "AssertionError" in untouched
-        assert "cases pass" in teacher and "AssertionError" not in teacher
+        assert "not implemented yet" in untouched
+        assert "cases pass" in teacher and "not implemented yet" not in teacher
+        graded = sum(bool(_grading(c).get("grade")) for c in json.loads(path.read_text())["cells"])
+        for student, failures in (("teacher", 0), ("untouched", graded)):
+            nb = json.loads((course / "autograded" / student / path.stem / path.name).read_text())
+            errors = [o for c in nb["cells"] for o in c.get("outputs", [])]
+            errors = [o for o in errors if o["output_type"] == "error"]
+            assert [e["ename"] for e in errors] == ["AssertionError"] * failures, path.name
+            assert all("not implemented yet" in e["evalue"] for e in errors)
 
 
 # -- the grading convention, read from the notebooks (no nbgrader needed) ----------------------
