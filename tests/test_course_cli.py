@@ -428,4 +428,8 @@ def test_nbgrader_refuses_student_versions_and_malformed_markers(tmp_path, capsy
     bad.write_text(json.dumps(_nb(_code("### BEGIN SOLUTION\nx = 1"))))
     assert _status(["nbgrader", tmp_path / "c", bad]) == 2
     assert "line 2: BEGIN SOLUTION without an END" in capsys.readouterr().err
+    other = tmp_path / "ex.json"
+    other.write_bytes(EXERCISES[0].read_bytes())
+    assert _status(["nbgrader", tmp_path / "c", other]) == 2
+    assert "*.ipynb" in capsys.readouterr().err
     assert not (tmp_path / "c").exists()

@@ -185,6 +185,8 @@ def cmd_nbgrader(args, parser) -> int:
 
     sources = _sources(args.notebooks, parser)
     for s in sources:
+        if s.suffix != ".ipynb":  # nbgrader would skip it: say so rather than grade nothing
+            parser.error(f"argument NOTEBOOK: {s} is not named *.ipynb, so nbgrader skips it")
         nb = read_notebook(s)
         student_notebook(nb, str(s))  # malformed markers stop here, before any write
         if "BEGIN SOLUTION" not in "".join("".join(c.get("source", "")) for c in nb["cells"]):
