@@ -267,6 +267,19 @@ def test_student_version_refuses_malformed_markers_and_writes_nothing(tmp_path, 
     assert not out.exists()  # nothing written, not even the good notebook
 
 
+def test_words_that_only_contain_a_marker_are_text():
+    prose = "Send solutions by Friday; the legend: solution in blue.\nfriend solution"
+    assert strip_solutions(prose) == prose
+    for near_miss in [
+        "# Begin Solution",
+        "### END  SOLUTION",
+        "#BEGIN-SOLUTION",
+        "# end solutions",
+    ]:
+        with pytest.raises(NotebookError, match="stand alone"):
+            strip_solutions(near_miss)
+
+
 def test_marker_errors_name_the_line():
     source = "a = 1\nb = 2\n### END SOLUTION"
     with pytest.raises(NotebookError, match=r"nb: cell 0, line 3: END SOLUTION without"):

@@ -53,7 +53,7 @@ _MARKER = re.compile(
 )
 #: Anything that looks like a marker, in any spelling (case, '_' or '-' for the space).
 _LOOKALIKE = re.compile(
-    r"(begin|end)[\s_-]*(solution|hidden[\s_-]*tests?|mark[\s_-]*scheme)", re.IGNORECASE
+    r"\b(begin|end)[\s_-]*(solutions?|hidden[\s_-]*tests?|mark[\s_-]*schemes?)", re.IGNORECASE
 )
 
 
