@@ -174,7 +174,7 @@ def test_lessons_refuses_files_in_the_way(tmp_path, capsys):
 
 def _fail_halfway(monkeypatch):
     """Writes put half their bytes down, then fail as a full disk does."""
-    real = install_module.os.fdopen
+    real = open
 
     class Full:
         def __init__(self, f):
@@ -193,7 +193,7 @@ def _fail_halfway(monkeypatch):
         def __exit__(self, *exc):
             self.f.close()
 
-    monkeypatch.setattr(install_module.os, "fdopen", lambda *a, **k: Full(real(*a, **k)))
+    monkeypatch.setattr(install_module, "open", lambda *a, **k: Full(real(*a, **k)), raising=False)
 
 
 def test_a_full_disk_leaves_no_truncated_notebook(tmp_path, monkeypatch, capsys):
@@ -209,9 +209,20 @@ def test_a_full_disk_leaves_no_truncated_notebook(tmp_path, monkeypatch, capsys)
     assert not missing.exists()  # not half a notebook
     assert work.read_text() == "my work"  # the old file, whole
     assert not list(tmp_path.rglob(".*.tmp"))  # no temporary file left behind
+    assert list(tmp_path.rglob(f"{work.stem}.*")) == [work]  # no backup: nothing replaced
     monkeypatch.undo()
     assert main(["lessons", str(tmp_path), "--force"]) == 0  # and a later run completes it
     assert missing.read_bytes() == course.lessons()[0].read_bytes()
+
+
+def test_a_failed_replacement_keeps_the_old_file_and_makes_no_backup(tmp_path, monkeypatch):
+    assert main(["lessons", str(tmp_path)]) == 0
+    work = tmp_path / "exercises" / EXERCISES[-1].name
+    work.write_text("my work")
+    _fail_halfway(monkeypatch)
+    assert _status(["lessons", tmp_path, "--force"]) == 1
+    assert work.read_text() == "my work"
+    assert list(tmp_path.rglob(f"{work.stem}*")) == [work]  # no backup, no temporary file
 
 
 def test_lessons_refuses_to_write_onto_the_course_itself(capsys):

@@ -71,21 +71,26 @@ def _root(directory: Path) -> Path:
     return root.resolve() if root.exists() else root
 
 
-def atomic_write(path: Path, data: bytes) -> None:
+def atomic_write(path: Path, data: bytes, before=None) -> None:
     """Write ``data`` to ``path`` through a temporary file renamed into place.
 
-    On any failure (``OSError`` such as a full disk, or an interruption) the temporary file
-    is removed and ``path`` is as it was.
+    ``before()``, if given, runs once the data is safely on disk, just before the rename (a
+    backup of the old file is made then: never for a write that failed). On any failure
+    (``OSError`` such as a full disk, or an interruption) the temporary file is removed and
+    ``path`` is as it was.
     """
     tmp = None
     try:
         fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+        os.close(fd)
         # mkstemp makes the file private (0600): give it the mode a plain write would
         os.chmod(tmp, path.stat().st_mode & 0o7777 if path.exists() else _default_mode())
-        with os.fdopen(fd, "wb") as f:
+        with open(tmp, "wb") as f:
             f.write(data)
             f.flush()
             os.fsync(f.fileno())
+        if before is not None:
+            before()
         os.replace(tmp, path)
     except OSError as exc:
         _remove(tmp)
@@ -138,6 +143,13 @@ def _backup(path: Path, backups: Path | None, root: Path, now: datetime) -> Path
     raise CourseError(f"no free backup name for {path} in {folder}")
 
 
+def _replace(path: Path, data: bytes, backups: Path | None, root: Path, now: datetime) -> Path:
+    """Replace ``path`` by ``data``, its old content kept as a backup; return the backup."""
+    kept = []  # the backup is made once the new data is on disk: a failed write leaves none
+    atomic_write(path, data, lambda: kept.append(_backup(path, backups, root, now)))
+    return kept[0]
+
+
 def install(
     directory: Path,
     files: dict[str, bytes],
@@ -187,7 +199,6 @@ def install(
         elif not force:
             outcome.kept.append(path)
         else:
-            old = _backup(path, backup_root, root, now or datetime.now())
-            atomic_write(path, data)
+            old = _replace(path, data, backup_root, root, now or datetime.now())
             outcome.replaced.append((path, old))
     return outcome
