@@ -7,6 +7,9 @@ repository (an editable install) they are read from ``notebooks/`` itself, where
 are the teacher versions; :func:`teachraster.exercises.student_version.student_notebook` turns
 either into the student version (it leaves a student version unchanged).
 
+Writing them into a directory without losing anything is :mod:`teachraster.course.install`;
+the nbgrader course directory of the exercises is :mod:`teachraster.course.nbgrader_layout`.
+
 Standard library only: ``teachraster lessons`` needs no numpy to copy files.
 """
 
