@@ -355,5 +355,5 @@ COMMANDS = {
     "scene": cmd_scene,
     "case": cmd_case,
     "list": cmd_list,
-    **course.COMMANDS,  # lessons, student-version (teachraster/cli/course.py)
+    **course.COMMANDS,  # lessons, student-version, nbgrader (teachraster/cli/course.py)
 }

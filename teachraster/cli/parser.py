@@ -110,7 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for add in SUBCOMMANDS:
         add(sub)
-    course.add_parsers(sub)  # lessons, student-version (teachraster/cli/course.py)
+    course.add_parsers(sub)  # lessons, student-version, nbgrader (teachraster/cli/course.py)
     return parser
 
 
