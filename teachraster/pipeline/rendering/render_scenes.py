@@ -126,13 +126,8 @@ def render_scene(
     effects = _derivatives_why(effects, scene, texture_filter, kwargs)
     sample_ddx = sample_ddy = None
     if not single and scene.shading == "texture" and texture_filter in MIPMAP_FILTERS:
-        uv = layout["uv"]
-        sample_ddx, sample_ddy, effect = sample_derivatives(
-            frame.sample_triangle_id, clip, attrs[..., uv],
-            kwargs.get("subpixel_bits", SUBPIXEL_BITS),
-            kwargs.get("interpolation", "perspective") == "perspective",
-        )  # fmt: skip
-        effects = (*(e for e in effects if e.name != "derivatives"), effect)
+        sample_ddx, sample_ddy, effects = _msaa_footprint(frame, clip, attrs, layout, effects,
+                                                          kwargs)  # fmt: skip
     if not names:
         effects = tuple(
             Effect("attributes", False, 0, e.total, e.unit, why) if e.name == "attributes" else e
@@ -162,6 +157,16 @@ def render_scene(
         ddx=frame.ddx,
         ddy=frame.ddy,
     )
+
+
+def _msaa_footprint(frame, clip, attrs, layout, effects, kwargs):
+    """Per-sample uv derivatives of a multisampled scene, and the plan with their effect."""
+    sample_ddx, sample_ddy, effect = sample_derivatives(
+        frame.sample_triangle_id, clip, attrs[..., layout["uv"]],
+        kwargs.get("subpixel_bits", SUBPIXEL_BITS),
+        kwargs.get("interpolation", "perspective") == "perspective",
+    )  # fmt: skip
+    return sample_ddx, sample_ddy, (*(e for e in effects if e.name != "derivatives"), effect)
 
 
 def _corner_attributes(mesh, names):
