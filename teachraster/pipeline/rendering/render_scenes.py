@@ -83,9 +83,8 @@ def render_scene(
     quads only for the triangles the texture may be minified on (the plan's "derivatives"
     effect says how many; ``force="derivatives"`` computes them everywhere, with the same
     image); elsewhere the texture is magnified and level 0 is sampled.
-    With ``samples`` > 1 a mipmapped filter gets its footprint as a GPU computes it under
-    MSAA: coarse differences in 2×2 quads of pixel centres, once per (pixel, triangle) pair
-    that a sample shows (:mod:`.msaa_derivatives`); the plan's "derivatives" entry counts them.
+    With ``samples`` > 1 a mipmapped filter gets its footprint as a GPU does under MSAA: 2×2
+    quads once per (pixel, triangle) pair a sample shows (:mod:`.msaa_derivatives`).
 
     >>> from teachraster.pipeline.scenes import get_scene
     >>> frame = render_scene(get_scene("textured_floor"), width=64, height=48)
