@@ -34,9 +34,9 @@ class Segment:
 
     def __post_init__(self) -> None:
         for name in ("z0", "z1"):
-            if not float(getattr(self, name)) > 1.0:
+            if not float(getattr(self, name)) > 0.0:
                 raise ValueError(
-                    f"{name} must lie beyond the screen (> 1), got {getattr(self, name)!r}"
+                    f"{name} must be in front of the eye (> 0), got {getattr(self, name)!r}"
                 )
 
     def screen(self, q) -> np.ndarray:
@@ -129,7 +129,7 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
                                   ms=ms(1.3), label="affine guess: t = q")  # fmt: skip
     out.label = ax.set_title(" ", fontsize=fs(0.9))  # text set by update(), size fixed here
     ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")
-    ax.legend(loc="upper left", fontsize=fs(0.7), framealpha=0.9)
+    ax.legend(loc="lower right", fontsize=fs(0.7), framealpha=0.9)
     if curve_ax is not None:
         qq = np.linspace(0.0, 1.0, 200)
         curve_ax.plot(qq, segment.world_parameter(qq), color=COLORS["edge"], lw=lw(0.8),
