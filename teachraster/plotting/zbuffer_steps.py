@@ -67,6 +67,14 @@ def fragment_classes(frame, k: int) -> np.ndarray:
     return classes
 
 
+def fragment_counts(frame, k: int) -> tuple[int, int]:
+    """(passed, failed): how many fragments of triangle ``k`` passed and failed the depth test."""
+    trace = frame.trace
+    mine = trace.fragment_triangle == k
+    passed = int((mine & trace.fragment_passed).sum())
+    return passed, int(mine.sum()) - passed
+
+
 @dataclass
 class ZBufferStepView:
     """Two panels: triangle k's fragments (passed / failed) and the depth buffer after it.
