@@ -26,6 +26,9 @@ def test_choice_is_hidden_until_checked_then_judged():
     assert q.feedback.value == "" and q.output.outputs == ()
     q.control.value = "row 3"
     assert q.feedback.value == ""  # choosing does not reveal
+    assert (
+        q.control.get_state()["index"] == 1
+    )  # the answer is widget state, saved with the notebook
     q.check.click()
     assert q.revealed and q.correct is False
     assert "Not quite" in q.feedback.value and "row 3" in q.feedback.value
