@@ -123,6 +123,7 @@ def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
     saved = 100 * (1 - ns.with_bailout / ns.without)
     assert abs(saved - round(100 * (1 - ns.runs.sum() / (3 * ns.box.size)))) < 1
+    assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
 
 
 def test_03_quoted_drift_and_the_perspective_caveat():
