@@ -89,6 +89,10 @@ def test_bad_arguments_name_the_argument(kwargs, error, name):
 
 
 def test_headless_flag_from_environment(monkeypatch):
+    monkeypatch.setenv("TEACHRASTER_STATIC_PAGES", "1")
+    monkeypatch.delenv(HEADLESS_ENV, raising=False)
+    assert is_headless()
+    monkeypatch.delenv("TEACHRASTER_STATIC_PAGES")
     monkeypatch.setenv(HEADLESS_ENV, "1")
     assert is_headless() and Predict("Q?", answer=1).headless
     monkeypatch.setenv(HEADLESS_ENV, "0")
@@ -118,5 +122,6 @@ def test_headless_notebook_shows_answer_and_figure_without_waiting(monkeypatch):
     outputs = nb.cells[0].outputs
     text = " ".join(str(o.get("data", {}).get("text/html", "")) for o in outputs)
     assert "The answer: <b>row 3</b>" in text and "THE RULE" in text
-    assert sum("image/png" in o.get("data", {}) for o in outputs) == 1
+    assert "<details>" in text and text.count("src='data:image/png;base64,") == 1
+    assert len(outputs) == 1  # one HTML output, the figure folded inside it
     assert not any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in outputs)

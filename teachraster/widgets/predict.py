@@ -11,17 +11,20 @@ Where the answer is kept
     ``.ipynb`` whatever the widget settings are. A lecturer can use the questions as a poll.
 
 Headless runs
-    Executed with nobody looking (nbclient tests, ``nbconvert --execute``, plain Python), the
-    question shows its answer, explanation and figure at once and never waits: see
-    :func:`is_headless`.
+    Executed with nobody looking (nbclient tests, ``teachraster html`` exports, plain Python),
+    the question never waits: its output holds the answer, the explanation and the figure,
+    folded under "Show the answer" so that a reader of the exported page still predicts
+    first. See :func:`is_headless`.
 """
 
 from __future__ import annotations
 
+import base64
 import html
 import io
 import itertools
 import os
+import struct
 from collections.abc import Callable, Sequence
 
 import ipywidgets as widgets
@@ -39,7 +42,8 @@ def is_headless() -> bool:
     """True when no student can answer: show the answer at once instead of asking.
 
     ``TEACHRASTER_HEADLESS=1`` (or ``0``) decides when set. Otherwise a run is headless when
-    there is no IPython kernel (plain Python, a doctest) or when the kernel's matplotlib
+    it exports a static page (``TEACHRASTER_STATIC_PAGES=1``, set by ``teachraster html``),
+    when there is no IPython kernel (plain Python, a doctest) or when the kernel's matplotlib
     backend was forced to Agg by its environment (``MPLBACKEND=Agg``), as the test suite and
     batch exports do: a kernel a student uses draws inline or with ipympl instead.
     """
@@ -48,6 +52,8 @@ def is_headless() -> bool:
         return True
     if flag in ("0", "false", "no"):
         return False
+    if os.environ.get("TEACHRASTER_STATIC_PAGES") == "1":  # `teachraster html`: a static page
+        return True
     try:
         from IPython import get_ipython
     except ImportError:  # pragma: no cover - ipywidgets depends on IPython
@@ -250,18 +256,29 @@ class Predict:
         display(HTML(""), display_id=self._display_id)  # filled in by _record
 
     def _display_headless(self) -> None:
-        """Question, answer, explanation and figure as plain outputs: nothing waits."""
+        """One HTML output: the question, then the answer, explanation and figure folded.
+
+        Nothing waits for an answer. The answer sits in a ``<details>`` element, so a reader of
+        an exported page still predicts first and then unfolds it; the figure is embedded as a
+        PNG of its own size (inches × dpi).
+        """
         from IPython.display import HTML, display
 
+        figure = ""
+        if self.figure is not None:
+            png = self._figure_png().data
+            width = struct.unpack(">I", png[16:20])[0]  # the PNG header's width, in pixels
+            figure = (f"<img style='max-width:100%' width='{width}' "
+                      f"src='data:image/png;base64,{base64.b64encode(png).decode()}'>")  # fmt: skip
         display(
             HTML(
                 f"<div><b>Predict first.</b> {self.question}</div>"
+                f"<details><summary>Show the answer</summary>"
                 f"<div>The answer: <b>{self._answer_text()}</b>.</div><div>{self.explain}</div>"
+                f"{figure}</details>"
             )
         )
         self.revealed = True
-        if self.figure is not None:
-            display(self._figure_png())
 
     def close(self) -> None:
         """Close the widgets (and the comms behind them)."""
