@@ -160,7 +160,86 @@ def test_05b_quoted_distances_and_resolutions():
     assert ns.first_fight_16 == 10  # the predicted answer matches the renders
     assert ns.predicted["unorm24"][-1] > 10 * ns.delta  # "more than ten times δ" at z = 300
     assert round(float(ns.predicted["unorm16"][0]), 5) == 1.5e-4  # "1.5 × 10⁻⁴" at z = 1
-    assert ns.explorer_fights[("unorm16", 1.0, False)] > ns.explorer_fights[("unorm16", 0.1, False)]
+
+
+# -- the lessons' widgets, driven here (the lessons leave them to the student) ----------------
+
+
+def test_01_player_shows_the_trace_caption_and_coverage():
+    from teachraster.widgets import FillPlayer
+
+    ns = lesson("01_span_tables")
+    player = FillPlayer(ns.tri, ns.W, ns.H, method="span", backend="image")
+    step = ns.step_of_row[13]
+    player.slider.value = step
+    assert player.caption_text == ns.trace.caption(step)
+    shown = np.asarray(player.view.coverage.image.get_array())
+    assert np.array_equal(shown, ns.trace.coverage_at(step))
+    player.close()
+
+
+def test_02_player_and_editor():
+    from teachraster.widgets import FillPlayer, TriangleEditor
+
+    ns = lesson("02_half_planes")
+    box = ns.box
+    k = ns.trace.first_work_step + 5 * box.shape[1] + 6  # the 7th pixel of the box's 6th row
+    player = FillPlayer(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
+    player.slider.value = k
+    assert player.caption_text == ns.trace.caption(k)
+    assert (ns.trace.step(k).row, ns.trace.step(k).col) == (box.row0 + 5, box.col0 + 6)
+    player.close()
+    editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
+    editor.x[1].value = 1.0  # v1 dragged across the edge v2 -> v0: the winding flips
+    moved = tr.Triangle(editor.xy)
+    assert moved.front_facing and not ns.tri.front_facing
+    assert np.array_equal(editor.fill.coverage, tr.rasterize(moved, ns.W, ns.H).coverage)
+    editor.close()
+
+
+def test_03_plane_explorer_setup_follows_a_value():
+    from teachraster.widgets.plane_explorer import PlaneExplorer, plane_system
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    explorer = PlaneExplorer(ns.xy, ns.f, ns.W, ns.H, backend="image")
+    explorer.f[2].value = 2.0
+    moved = plane_system(explorer.xy, explorer.fvals)
+    assert np.allclose(moved["g"][:2], moved["g_recentred"])
+    explorer.close()
+
+
+def test_04_player_toggle_and_tilt():
+    from teachraster.widgets import FillPlayer, TexturedPlaneViewer
+
+    ns = lesson("04_perspective_correct_interpolation")
+    player = FillPlayer(ns.tri, ns.W, ns.H, method="halfplane", step=-1, backend="image")
+    player.interpolation.value = "affine"
+    assert np.array_equal(player.fill.attrs["u"], ns.affine.attrs["u"], equal_nan=True)
+    player.interpolation.value = "perspective"
+    assert np.array_equal(player.fill.attrs["u"], ns.persp.attrs["u"], equal_nan=True)
+    player.close()
+    viewer = TexturedPlaneViewer(tilt=60, backend="image")
+    maxima = {}
+    for tilt in (0, 30, 75):  # "at 0° the two renders agree exactly; the further, the larger"
+        viewer.tilt.value = tilt
+        maxima[tilt] = viewer.maximum
+    assert maxima[0] < 1e-9 and maxima[0] < maxima[30] < maxima[75]
+    viewer.close()
+
+
+def test_05b_explorer_near_plane_and_reverse_z():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ns = lesson("05b_depth_precision")
+    ex = DepthPrecisionExplorer("unorm16", near=ns.n_, far=ns.f_, delta=ns.delta, backend="image")
+    fights = {}
+    for fmt, near, reverse in [("unorm16", 0.1, False), ("unorm16", 1.0, False),
+                               ("float32", 0.1, False), ("float32", 0.1, True)]:  # fmt: skip
+        ex.format.value, ex.near.value, ex.reverse.value = fmt, near, reverse
+        fights[(fmt, near, reverse)] = ex.fight_from
+    assert fights[("unorm16", 1.0, False)] > fights[("unorm16", 0.1, False)]  # the classic fix
+    assert fights[("float32", 0.1, False)] is not None and fights[("float32", 0.1, True)] is None
+    ex.close()
 
 
 # -- the new pictures -------------------------------------------------------------------------
