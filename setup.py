@@ -39,6 +39,9 @@ class BuildPyWithCourse(build_py):
         (target / "exercises").mkdir(parents=True, exist_ok=True)
         for lesson in sorted(source.glob("*.ipynb")):
             shutil.copyfile(lesson, target / lesson.name)
+        # the conventions the exercises refer to (teachraster lessons copies them too)
+        if (ROOT / "CONVENTIONS.md").is_file():
+            shutil.copyfile(ROOT / "CONVENTIONS.md", target / "CONVENTIONS.md")
         student = _student_version_module()
         for exercise in sorted((source / "exercises").glob("*.ipynb")):
             student.write_student_version(exercise, target / "exercises" / exercise.name)

@@ -40,7 +40,7 @@ for path in (HERE.parent, HERE):
 from bench_scenes import sphere_scene  # noqa: E402
 
 import teachraster as tr  # noqa: E402
-from teachraster.pipeline.overlays import KINDS  # noqa: E402
+from teachraster.pipeline.debugging.overlays import KINDS  # noqa: E402
 
 TARGET = 2.0
 

@@ -17,8 +17,8 @@ from test_plan import random_scene
 from test_render import H, W, clip_from_window
 
 import teachraster as tr
-from teachraster.pipeline.frame_history import OUTCOMES
-from teachraster.pipeline.overlays import KINDS
+from teachraster.pipeline.debugging.frame_history import OUTCOMES
+from teachraster.pipeline.debugging.overlays import KINDS
 from teachraster.pipeline.scenes import SCENES, get_scene
 
 

@@ -19,7 +19,7 @@ except ImportError as exc:
     pytest.skip(f"needs moderngl: {exc}", allow_module_level=True)
 
 import teachraster as tr
-from teachraster.pipeline.overlays import passed_per_triangle
+from teachraster.pipeline.debugging.overlays import passed_per_triangle
 from teachraster.pipeline.scenes import SCENES, get_scene
 from teachraster.study.opengl import gl_available
 from teachraster.study.opengl_counters import gl_counters

@@ -99,7 +99,69 @@ def test_few_modules_at_the_top():
     assert len(top) <= MAX_TOP_LEVEL, top
 
 
-@pytest.mark.parametrize("package", ["teachraster", *(f"teachraster.{n}" for n in LAYERS)])
+#: The pipeline's sub-packages in pipeline order, lowest first: each imports only from itself
+#: and those before it (the same rule as the layers, one floor down).
+PIPELINE_STAGES = [
+    "geometry",
+    "rasterization",
+    "visibility",
+    "planning",
+    "texturing",
+    "antialiasing",
+    "blending",
+    "rendering",
+    "debugging",
+]
+
+
+def _stage(module: str) -> str | None:
+    parts = module.split(".")
+    if len(parts) > 2 and parts[1] == "pipeline" and parts[2] in PIPELINE_STAGES:
+        return parts[2]
+    return None
+
+
+def test_pipeline_is_grouped_by_stage():
+    """No module sits loose in pipeline/: each lives in the sub-package of its stage."""
+    loose = [p.name for p in (PACKAGE / "pipeline").glob("*.py") if p.name != "__init__.py"]
+    assert not loose, f"modules loose in pipeline/: {loose}"
+    groups = sorted(
+        p.name for p in (PACKAGE / "pipeline").iterdir() if (p / "__init__.py").exists()
+    )
+    assert set(groups) <= set(PIPELINE_STAGES), groups
+
+
+def test_pipeline_stages_import_down_only():
+    wrong = []
+    for path, module in _modules():
+        here = _stage(module)
+        if here is None:
+            continue
+        for line, target in _imports(path, module):
+            there = _stage(target)
+            if there is None and target.startswith("teachraster.pipeline."):
+                wrong.append(f"{module}:{line} imports the flat path {target}")
+            elif there is not None and PIPELINE_STAGES.index(there) > PIPELINE_STAGES.index(here):
+                wrong.append(f"{module}:{line} ({here}) imports {target} ({there})")
+    assert not wrong, "upward imports between pipeline stages:\n" + "\n".join(wrong)
+
+
+def test_flat_pipeline_paths_still_import():
+    """Code written before the grouping keeps working: ``teachraster.pipeline.<module>``."""
+    for path, module in _modules():
+        if _stage(module) is None or path.name == "__init__.py":
+            continue
+        flat = "teachraster.pipeline." + module.rsplit(".", 1)[1]
+        assert importlib.import_module(flat) is importlib.import_module(module), flat
+
+
+def _packages():
+    yield "teachraster"
+    yield from (f"teachraster.{n}" for n in LAYERS)
+    yield from (f"teachraster.pipeline.{n}" for n in PIPELINE_STAGES)
+
+
+@pytest.mark.parametrize("package", list(_packages()))
 def test_no_module_is_shadowed_by_a_name(package):
     """``import teachraster.x.y as m`` gives the module, never a function of the same name."""
     try:

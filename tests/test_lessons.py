@@ -95,8 +95,6 @@ def test_01_hand_written_span_loop_matches_the_package():
     assert cover[5, 5] and not cover[5, 11]  # left end owned, right end not
     assert cover[9, 6] and not cover[9, 18]
     assert not cover[1].any() and not cover[17].any()
-    assert ns.shown_caption == ns.trace.caption(ns.step_of_row[13])
-    assert np.array_equal(ns.shown_coverage, ns.trace.coverage_at(ns.step_of_row[13]))
 
 
 def test_01_flat_cases_follow_the_half_open_row_rule():
@@ -132,12 +130,9 @@ def test_02_bbox_edge_functions_and_bailout():
     assert np.array_equal(ns.trace.halfplane.edge_values, ns.F[b.row0 : b.row1, b.col0 : b.col1])
     assert np.array_equal(ns.runs, ns.by_hand)
     assert ns.with_bailout < ns.without
-    assert ns.shown_caption == ns.trace.caption(ns.k)
-    assert (ns.shown_step.row, ns.shown_step.col) == (box.row0 + 5, box.col0 + 6)
 
 
 def test_02_winding_culling_and_the_top_left_rule():
-    import teachraster as tr
 
     ns = lesson("02_half_planes")
     assert ns.front.front_facing and not ns.back.front_facing
@@ -157,8 +152,6 @@ def test_02_winding_culling_and_the_top_left_rule():
     assert not ns.row8["above (bottom edge)"].any()
     assert ns.row8["below (top edge)"].sum() == 12
     assert ns.row8["naive, above"].sum() == ns.row8["naive, below"].sum() == 13
-    assert np.array_equal(ns.editor_coverage, tr.rasterize(ns.moved, 16, 16).coverage)
-    assert ns.moved.front_facing
 
 
 # -- 03 barycentrics and plane equations --------------------------------------------------------
@@ -187,7 +180,6 @@ def test_03_three_views_of_one_plane():
     assert np.allclose([ns.g_x, ns.g_y], [plane.dx, plane.dy])
     assert np.allclose(ns.planes.A, ns.abcd.dx) and np.allclose(ns.planes.B, ns.abcd.dy)
     assert np.allclose(ns.planes(*ns.centres.T), ns.fill.trace.pixel_barycentric @ ns.F)
-    assert np.allclose(ns.moved["g"][:2], ns.moved["g_recentred"])
 
 
 def test_03_stepping_and_recentring_numbers_match_the_text():
@@ -224,13 +216,10 @@ def test_04_toggle_heatmap_floor_and_tilt():
     ns = lesson("04_perspective_correct_interpolation")
     assert np.array_equal(ns.affine.coverage, ns.persp.coverage)
     assert np.allclose(*ns.same, equal_nan=True, atol=1e-15)
-    assert np.array_equal(ns.player_affine, ns.affine.attrs["u"], equal_nan=True)
-    assert np.array_equal(ns.player_perspective, ns.persp.attrs["u"], equal_nan=True)
     assert 0.15 < np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)
     assert 1.0 < ns.floor_w.min() and ns.floor_w.max() < 8  # the readable floor
     assert np.nanmax(ns.texels) > 10
     assert ns.far_w.max() > 35  # the original floor, for the moiré
-    assert ns.maxima[0] < 1e-9 and ns.maxima[0] < ns.maxima[30] < ns.maxima[75]
 
 
 # -- 05a z-buffer ------------------------------------------------------------------------------
@@ -297,9 +286,6 @@ def test_05b_reverse_z_bias_and_explorer():
     assert not ns.fights_reversed["float32"].any()
     assert np.array_equal(ns.fights_reversed["unorm24"], ns.fights_window["unorm24"])
     assert ns.decal_shown["no bias"] < ns.decal_shown["depth bias"] == int(ns.decal_only.sum())
-    ef = ns.explorer_fights
-    assert ef[("unorm16", 1.0, False)] > ef[("unorm16", 0.1, False)]
-    assert ef[("float32", 0.1, False)] is not None and ef[("float32", 0.1, True)] is None
 
 
 # -- 06 what accuracy costs ---------------------------------------------------------------------

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import os
+import shlex
 import site
 import subprocess
 import sys
@@ -71,7 +72,8 @@ def test_installed_wheel_copies_the_course_and_lesson_00_runs(wheel, tmp_path):
     course = tmp_path / "my course"
     copy = _run([str(venv / "bin" / "teachraster"), "lessons", str(course)], cwd=tmp_path)
     assert copy.returncode == 0, copy.stderr
-    assert f"jupyter lab {course}" in copy.stdout
+    assert f"jupyter lab {shlex.quote(str(course))}" in copy.stdout  # shell-quoted (issue 17)
+    assert (course / "CONVENTIONS.md").is_file()
     assert sorted(p.name for p in course.glob("*.ipynb")) == LESSONS
     assert sorted(p.name for p in (course / "exercises").glob("*.ipynb")) == EXERCISES
 

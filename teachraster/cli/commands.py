@@ -114,8 +114,8 @@ def cmd_compare(args, parser) -> int:
 
 def cmd_scene(args, parser) -> int:
     """Render a built-in scene, save its image (or the comparison) and print its plan."""
-    from ..pipeline.render_scenes import render_scene
-    from ..pipeline.scenes import get_scene
+    from ..pipeline.rendering.render_scenes import render_scene
+    from ..pipeline.rendering.scenes import get_scene
     from ..plotting import ComparisonView, format_plan, plot_image, use_style
     from ..plotting.common import fs
 
@@ -139,7 +139,7 @@ def cmd_scene(args, parser) -> int:
             if textured:
                 # The colour difference of a two-tone texture is only stripes of 0 and 1:
                 # compare where the samples land instead, in texels (as lesson 04 does).
-                from ..pipeline.texture import texel_error
+                from ..pipeline.texturing.texture import texel_error
 
                 texels = texel_error(a.attr("uv"), b.attr("uv"), scene.texture.shape)
                 view.heatmap.update(texels, np.zeros_like(texels))
@@ -335,7 +335,7 @@ def cmd_case(args, parser) -> int:
 
 def cmd_list(args, parser) -> int:
     """Print the built-in scenes and hard cases, one a line with what they teach."""
-    from ..pipeline.scenes import SCENES
+    from ..pipeline.rendering.scenes import SCENES
     from ..study.hardcases import CASES
 
     say("scenes (teachraster scene NAME -o out.png):")
@@ -355,5 +355,5 @@ COMMANDS = {
     "scene": cmd_scene,
     "case": cmd_case,
     "list": cmd_list,
-    **course.COMMANDS,  # lessons, student-version (teachraster/cli/course.py)
+    **course.COMMANDS,  # lessons, student-version, nbgrader (teachraster/cli/course.py)
 }

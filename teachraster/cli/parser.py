@@ -110,7 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for add in SUBCOMMANDS:
         add(sub)
-    course.add_parsers(sub)  # lessons, student-version (teachraster/cli/course.py)
+    course.add_parsers(sub)  # lessons, student-version, nbgrader (teachraster/cli/course.py)
     return parser
 
 
@@ -176,7 +176,7 @@ def add_compare(sub) -> None:
 
 def add_scene(sub) -> None:
     """``teachraster scene NAME``: a built-in scene through the whole pipeline."""
-    from ..pipeline.scenes import SCENES
+    from ..pipeline.rendering.scenes import SCENES
 
     p = sub.add_parser(
         "scene",

@@ -103,7 +103,9 @@ def _points(unit, offsets_units, row, col) -> np.ndarray:
 def offsets_in_units(offsets: np.ndarray, setup: EdgeSetup) -> np.ndarray:
     """Sample offsets on the internal grid: int64 units when snapped, else float px.
 
-    Rounding is half to even, like vertex snapping.
+    Rounding is half to even, like vertex snapping; an offset that rounds up to the next
+    pixel (0.9999999 px -> 512/512) is kept on the pixel's last grid line instead, since
+    every offset lies in [0, 1): a sample is never tested outside its own pixel.
 
     >>> from teachraster.core.edges import setup_edges
     >>> setup = setup_edges(np.array([[0.0, 0], [4, 0], [0, 4]]), 8)
@@ -112,7 +114,8 @@ def offsets_in_units(offsets: np.ndarray, setup: EdgeSetup) -> np.ndarray:
     """
     if not setup.exact:
         return np.asarray(offsets, dtype=np.float64)
-    return np.rint(np.asarray(offsets, dtype=np.float64) * setup.unit).astype(np.int64)
+    units = np.rint(np.asarray(offsets, dtype=np.float64) * setup.unit)
+    return np.minimum(units, setup.unit - 1).astype(np.int64)
 
 
 def _edge_values(p: np.ndarray, pts: np.ndarray) -> np.ndarray:

@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from .validate import as_int, check_choice
+from .validate import as_int, as_real, check_choice
 
 KINDS = ("standard", "grid", "jittered", "random")
 
@@ -132,9 +132,13 @@ def as_samples(samples) -> np.ndarray:
             )
         return sample_pattern(n)
     try:
-        arr = np.array(samples, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise TypeError(f"samples must be an int or an (S, 2) array, got {samples!r}") from None
+        arr = np.array(as_real("samples", samples), dtype=np.float64)  # no strings, complex
+    except (TypeError, ValueError) as exc:
+        raise TypeError(
+            f"samples must be an int or an (S, 2) array of real offsets: {exc}"
+        ) from None
+    if np.asarray(samples).dtype.kind == "b":
+        raise TypeError("samples must be an int or an (S, 2) array of offsets, got booleans")
     if arr.ndim != 2 or arr.shape[1] != 2 or len(arr) == 0:
         raise ValueError(
             f"samples: an offset array must have shape (S, 2), S >= 1, got {arr.shape}"

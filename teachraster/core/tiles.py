@@ -90,7 +90,11 @@ class _Stepper:
     def direct(self, k: int, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
         """E_k at pixel centres (rows, cols), evaluated (broadcasting), no stepping."""
         row_term, col_term = self.terms[k]
-        return row_term[rows - self.base[0]] - col_term[cols - self.base[1]]
+        # Pixels past the image (in blocks cut by its border) are masked out by the caller;
+        # clamping keeps their index inside the terms, which stop at the image.
+        r = np.minimum(rows - self.base[0], len(row_term) - 1)
+        c = np.minimum(cols - self.base[1], len(col_term) - 1)
+        return row_term[r] - col_term[c]
 
     def steps(self, drow: np.ndarray, dcol: np.ndarray) -> np.ndarray:
         """(..., 3) table of increments from a centre to the centre ``(drow, dcol)`` away."""
@@ -131,7 +135,7 @@ def fill(
     grids: list[tuple[int, int]] = []
     if bbox.size and setup.area2 != 0:  # a zero-area triangle classifies no block
         top, grid, stepper = _top_level(setup, bbox, sizes[0], (height, width), dtype)
-        canvas = _Canvas(stepper.base, (grid[0] * sizes[0], grid[1] * sizes[0]), sizes[-1])
+        canvas = _Canvas(stepper.base, grid, sizes, (height, width))
         grids.append(grid)
         level = top
         for depth, size in enumerate(sizes):
@@ -157,7 +161,10 @@ def _top_level(setup: EdgeSetup, box: BBox, size: int, image: tuple[int, int], d
     """The blocks of the largest size on the image grid that overlap the bounding box."""
     gr0, gr1 = box.row0 // size, (box.row1 - 1) // size + 1
     gc0, gc1 = box.col0 // size, (box.col1 - 1) // size + 1
-    rows, cols = np.arange(gr0 * size, gr1 * size), np.arange(gc0 * size, gc1 * size)
+    # Only the rows and columns inside the image: a block larger than the image costs what
+    # the image costs, not size² (every corner and pixel the walk visits lies in the image).
+    rows = np.arange(gr0 * size, min(gr1 * size, image[0]))
+    cols = np.arange(gc0 * size, min(gc1 * size, image[1]))
     stepper = _Stepper(setup, rows, cols, dtype)
     bi, bj = np.indices((gr1 - gr0, gc1 - gc0)).reshape(2, -1)
     row, col = (gr0 + bi) * size, (gc0 + bj) * size
@@ -210,10 +217,13 @@ def _classify(level: _Level, stepper: _Stepper) -> None:
 def _children(level: _Level, partial: np.ndarray, size: int, image, stepper) -> _Level:
     """The next-size blocks of every partial block, dropping those outside the image."""
     q = level.size // size
-    di, dj = np.indices((q, q)).reshape(2, -1)
+    # Children beyond the image are dropped below; never make more than the image can hold
+    # (q² children of a block far larger than the image would cost size², not the image).
+    qr, qc = min(q, -(-image[0] // size)), min(q, -(-image[1] // size))
+    di, dj = np.indices((qr, qc)).reshape(2, -1)
     row = (level.row[partial, None] + di * size).ravel()
     col = (level.col[partial, None] + dj * size).ravel()
-    parent = np.repeat(partial, q * q)
+    parent = np.repeat(partial, qr * qc)
     sibling = np.tile(np.stack([di, dj], axis=1), (len(partial), 1))
     e0 = None
     if level.e0 is not None:  # child's first centre = parent's + a per-level table
@@ -227,22 +237,32 @@ def _children(level: _Level, partial: np.ndarray, size: int, image, stepper) -> 
 
 
 class _Canvas:
-    """Coverage over the top-level blocks: accepted blocks marked as cells of the smallest
-    size (one mark per cell, not per pixel), tested pixels as pixels; merged once."""
+    """Coverage over the top-level blocks, cut at the image: accepted blocks marked as cells
+    (one mark per cell, not per pixel), tested pixels as pixels; merged once."""
 
-    def __init__(self, base: tuple[int, int], shape: tuple[int, int], cell: int):
-        self.base, self.cell = base, cell
+    def __init__(self, base: tuple[int, int], grid, sizes, image: tuple[int, int]):
+        self.base = base
+        self.cell = _cell_size(sizes[-1])
+        c = self.cell
+        # The canvas ends at the image (rounded up to a whole cell), whatever the block size.
+        shape = [min(g * sizes[0], -(-n // c) * c - b) for g, n, b in zip(grid, image, base)]
         self.pixels = np.zeros(shape, dtype=bool)
-        self.cells = np.zeros((shape[0] // cell, shape[1] // cell), dtype=bool)
+        self.cells = np.zeros((shape[0] // c, shape[1] // c), dtype=bool)
 
     def accept(self, level: _Level) -> None:
-        """Mark every accepted block of the level (all its cells at once)."""
+        """Mark every accepted block of the level (all its cells inside the canvas at once)."""
         acc = level.kind == ACCEPTED
-        d = np.arange(level.size // self.cell)  # cells along a side of the block
+        if not acc.any():
+            return
+        reach = int(level.extent[acc].max())  # a block's cells beyond the image are not drawn
+        d = np.arange(min(level.size, -(-reach // self.cell) * self.cell) // self.cell)
         i0 = (level.row[acc] - self.base[0]) // self.cell
         j0 = (level.col[acc] - self.base[1]) // self.cell
-        # Whole blocks, also beyond the image at its border: crop() keeps only the box.
-        self.cells[i0[:, None, None] + d[:, None], j0[:, None, None] + d] = True
+        # Clamping to the canvas's last cell marks a cell of the same block (the block reaches
+        # the image border there), so blocks cut by the border stay exact.
+        ii = np.minimum(i0[:, None, None] + d[:, None], self.cells.shape[0] - 1)
+        jj = np.minimum(j0[:, None, None] + d, self.cells.shape[1] - 1)
+        self.cells[ii, jj] = True
 
     def set_pixels(self, rows: np.ndarray, cols: np.ndarray) -> None:
         self.pixels[rows - self.base[0], cols - self.base[1]] = True
@@ -259,11 +279,13 @@ class _Canvas:
 def _test_pixels(canvas: _Canvas, level: _Level, partial: np.ndarray, stepper) -> None:
     """Pixel by pixel in the partial blocks of the smallest size (per edge, all blocks)."""
     s, setup = level.size, stepper.setup
-    dr, dc = np.indices((s, s))
     ext = level.extent[partial]
+    # Pixels beyond the image are never tested: the table spans the largest extent only.
+    sr, sc = (min(s, int(ext[:, i].max(initial=1))) for i in (0, 1))
+    dr, dc = np.indices((sr, sc))
     covered = (dr < ext[:, :1, None]) & (dc < ext[:, 1:, None])  # (n, s, s) inside the image
-    rows = level.row[partial, None] + np.arange(s)  # (n, s)
-    cols = level.col[partial, None] + np.arange(s)
+    rows = level.row[partial, None] + np.arange(sr)  # (n, sr)
+    cols = level.col[partial, None] + np.arange(sc)
     table = stepper.steps(dr, dc)  # (s, s, 3) increments from the first centre, once
     for k in range(3):
         if level.e0 is not None:  # exact: one addition per pixel
@@ -274,6 +296,12 @@ def _test_pixels(canvas: _Canvas, level: _Level, partial: np.ndarray, stepper) -
     n, a, b = np.nonzero(covered)
     canvas.set_pixels(level.row[partial][n] + a, level.col[partial][n] + b)
     level.covered[partial] = covered.sum(axis=(1, 2))
+
+
+def _cell_size(smallest: int) -> int:
+    """The canvas's cell: the smallest block size, or its largest divisor up to 64 when it is
+    larger (cells only mark accepted blocks; any divisor of every size works)."""
+    return max(c for c in range(1, min(smallest, 64) + 1) if smallest % c == 0)
 
 
 def _counters(levels: list[_Level], sizes) -> BlockCounters:

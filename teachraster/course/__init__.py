@@ -1,10 +1,14 @@
 """Where the course is: the lesson notebooks and the exercise notebooks, as files.
 
 A wheel carries them as package data (``teachraster/course/notebooks/``, written by the build:
-see ``setup.py``), with the exercises already in their student version. In a checkout of the
+see ``setup.py``), with the exercises already in their student version (the teacher versions,
+with solutions, never travel in the wheel: they are in the repository), and ``CONVENTIONS.md``. In a checkout of the
 repository (an editable install) they are read from ``notebooks/`` itself, where the exercises
 are the teacher versions; :func:`teachraster.exercises.student_version.student_notebook` turns
 either into the student version (it leaves a student version unchanged).
+
+Writing them into a directory without losing anything is :mod:`teachraster.course.install`;
+the nbgrader course directory of the exercises is :mod:`teachraster.course.nbgrader_layout`.
 
 Standard library only: ``teachraster lessons`` needs no numpy to copy files.
 """
@@ -17,6 +21,8 @@ from pathlib import Path
 PACKAGED = Path(__file__).resolve().parent / "notebooks"
 #: In a checkout of the repository: teachraster/course -> the repository's notebooks/.
 CHECKOUT = Path(__file__).resolve().parents[2] / "notebooks"
+#: The conventions the exercises refer to: in the wheel beside the notebooks, else the checkout's.
+CONVENTIONS = "CONVENTIONS.md"
 
 
 def notebooks_dir() -> Path:
@@ -41,3 +47,14 @@ def lessons() -> list[Path]:
 def exercises() -> list[Path]:
     """The exercise notebooks, in course order (teacher versions in a checkout)."""
     return sorted((notebooks_dir() / "exercises").glob("*.ipynb"))
+
+
+def conventions() -> Path:
+    """``CONVENTIONS.md``, the rules the exercises refer to (packaged, else the checkout's).
+
+    Raises ``FileNotFoundError`` when it is missing.
+    """
+    for path in (PACKAGED / CONVENTIONS, CHECKOUT.parent / CONVENTIONS):
+        if path.is_file():
+            return path
+    raise FileNotFoundError(f"no {CONVENTIONS} in {PACKAGED} or {CHECKOUT.parent}")

@@ -1,6 +1,6 @@
 """The ``clip_near`` exercise: clip a clip-space triangle against the near plane z >= -w.
 
-The expected polygon is the core's Sutherland-Hodgman (:func:`teachraster.pipeline.clipping.
+The expected polygon is the core's Sutherland-Hodgman (:func:`teachraster.pipeline.geometry.clipping.
 clip_polygon`). Every case keeps its vertices inside the far plane (z <= w) and off the eye
 point, so that the near plane is the only one that cuts and the core's answer is exactly the
 near-clipped polygon.
@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..pipeline.clipping import clip_polygon, distances
+from ..pipeline.geometry.clipping import clip_polygon, distances
 from ..study.hardcases import CASES
 from .cases import SEED
 from .scalars import num, vec

@@ -1,14 +1,24 @@
-"""Student versions of exercise notebooks: solutions replaced by stubs, as nbgrader does.
+"""Student versions of exercise notebooks: solutions replaced by stubs, exactly as nbgrader does.
 
 The teacher version holds each solution between ``### BEGIN SOLUTION`` and ``### END SOLUTION``
-(nbgrader's markers). The student version replaces every such region by nbgrader's stub,
-indented like the markers::
+(nbgrader's markers, each on a line of its own). The student version is what nbgrader's
+``generate_assignment`` releases: every solution region replaced by the stub, indented like
+the marker (in a markdown cell, ``YOUR ANSWER HERE``)::
 
     # YOUR CODE HERE
     raise NotImplementedError()
 
-and clears outputs. The check cells stay: :func:`teachraster.exercises.check` reports a stub as
-"not implemented yet", so the student notebook runs top to bottom without a traceback.
+a solution cell without markers replaced whole by the stub, hidden tests (``### BEGIN HIDDEN
+TESTS`` ... ``### END HIDDEN TESTS``) and mark schemes removed, outputs cleared, and the cells
+nbgrader locks made read-only. The check cells stay: :func:`teachraster.exercises.check` reports
+a stub as "not implemented yet".
+
+nbgrader silently accepts markers it cannot pair (an END before any BEGIN) or finds anywhere in
+a line (``x = 1  # BEGIN SOLUTION``); here every such marker is an error naming the notebook,
+the cell and the line, so that no answer leaks into a student version through a typo: a second
+BEGIN before END, END before BEGIN, BEGIN without END, a marker sharing its line with code or
+text, a marker spelt another way (``### begin solution``, ``### BEGIN_SOLUTION``), a region in
+a cell that nbgrader metadata marks as no solution cell.
 
 Standard library only (json, re): the build (setup.py) loads this file directly to put student
 versions into the wheel, before teachraster or numpy can be imported.
@@ -26,48 +36,203 @@ from __future__ import annotations
 
 import copy
 import json
+import os
 import re
+import tempfile
 from pathlib import Path
 
 BEGIN, END = "BEGIN SOLUTION", "END SOLUTION"
 STUB = ("# YOUR CODE HERE", "raise NotImplementedError()")
-_REGION = re.compile(
-    r"^(?P<indent>[ \t]*)#+ *" + BEGIN + r"[^\n]*\n.*?^[ \t]*#+ *" + END + r"[^\n]*(\n|$)",
-    flags=re.M | re.S,
+TEXT_STUB = ("YOUR ANSWER HERE",)
+#: The regions nbgrader clears, with what replaces them (None: removed).
+REGIONS = {"SOLUTION": STUB, "HIDDEN TESTS": None, "MARK SCHEME": None}
+#: A well-formed marker: alone on its line, after an optional comment mark (nbgrader's docs
+#: write ``=== BEGIN MARK SCHEME ===`` in markdown).
+_MARKER = re.compile(
+    r"^[ \t]*(?:#+|=+)?[ \t]*(BEGIN|END) (SOLUTION|HIDDEN TESTS|MARK SCHEME)[ \t]*=*[ \t]*\r?$"
+)
+#: Anything that looks like a marker, in any spelling (case, '_' or '-' for the space).
+_LOOKALIKE = re.compile(
+    r"\b(begin|end)[\s_-]*(solutions?|hidden[\s_-]*tests?|mark[\s_-]*schemes?)", re.IGNORECASE
 )
 
 
+class NotebookError(ValueError):
+    """A notebook that cannot be turned into a student version; the message says where.
+
+    ``line`` is the line of the cell (from 1) when the error is a marker's, else None.
+    """
+
+    def __init__(self, message: str, line: int | None = None):
+        super().__init__(message)
+        self.line = line
+
+
+def _where(name: str, index: int, cell: dict, line: int | None = None) -> str:
+    grade_id = (cell.get("metadata") or {}).get("nbgrader", {}).get("grade_id")
+    place = f"{name}: cell {index}" + (f" ({grade_id})" if isinstance(grade_id, str) else "")
+    return place + (f", line {line}" if line is not None else "")
+
+
+def _marker(line: str, number: int) -> tuple[str, str] | None:
+    """``(BEGIN|END, region)`` for a marker line, None for other lines; malformed: raises."""
+    match = _MARKER.match(line)
+    if match:
+        return match.group(1), match.group(2)
+    if _LOOKALIKE.search(line):
+        raise NotebookError(
+            "a marker must stand alone on its line, spelt '### BEGIN SOLUTION' (or END, "
+            f"HIDDEN TESTS, MARK SCHEME): {line.strip()[:80]!r}",
+            number,
+        )
+    return None
+
+
+def strip_regions(source: str, cell_type: str = "code") -> tuple[str, set[str]]:
+    """``source`` with its regions cleared as nbgrader clears them, and the kinds it had.
+
+    Raises :class:`NotebookError` (with ``line`` set; the caller adds the place) at the first
+    malformed or unpaired marker.
+    """
+    stub = STUB if cell_type == "code" else TEXT_STUB
+    out, open_region, found, number = [], None, set(), 0
+    for number, line in enumerate(source.split("\n"), start=1):
+        marker = _marker(line, number)
+        if marker is None:
+            if open_region is None:
+                out.append(line)
+            continue
+        kind, region = marker
+        if kind == "BEGIN":
+            if open_region is not None:
+                raise NotebookError(f"a second BEGIN {region} before END {open_region}", number)
+            open_region = region
+            found.add(region)
+            indent = line[: len(line) - len(line.lstrip())]
+            if REGIONS[region] is not None:
+                out.extend(indent + s for s in (stub if region == "SOLUTION" else REGIONS[region]))
+        elif open_region != region:
+            raise NotebookError(f"END {region} without a BEGIN {region} before it", number)
+        else:
+            open_region = None
+    if open_region is not None:
+        raise NotebookError(f"BEGIN {open_region} without an END {open_region}", number)
+    return "\n".join(out), found
+
+
 def strip_solutions(source: str) -> str:
-    """``source`` with every solution region replaced by the stub."""
-
-    def stub(match: re.Match) -> str:
-        indent = match.group("indent")
-        return "".join(f"{indent}{line}\n" for line in STUB)
-
-    return _REGION.sub(stub, source)
+    """``source`` (a code cell's) with every solution region replaced by the stub."""
+    return strip_regions(source)[0]
 
 
-def student_notebook(nb: dict) -> dict:
-    """A copy of notebook ``nb`` (as parsed JSON) without solutions and outputs."""
-    nb = copy.deepcopy(nb)
-    for cell in nb.get("cells", []):
+def _cells(nb, name: str) -> list:
+    if not isinstance(nb, dict) or not isinstance(nb.get("cells"), list):
+        raise NotebookError(f"{name}: not a Jupyter notebook (a JSON object with a list 'cells')")
+    if not isinstance(nb.get("nbformat", 4), int) or nb.get("nbformat", 4) < 4:
+        raise NotebookError(
+            f"{name}: not a notebook this can read: format {nb.get('nbformat')!r}, not 4"
+        )
+    for index, cell in enumerate(nb["cells"]):
+        if not (isinstance(cell, dict) and isinstance(cell.get("cell_type"), str)):
+            raise NotebookError(f"{name}: not a Jupyter notebook: cell {index} has no cell_type")
         source = cell.get("source", "")
-        text = "".join(source) if isinstance(source, list) else source
-        if BEGIN in text:
-            if END not in text:
-                raise ValueError(f"a cell has {BEGIN!r} without {END!r}: {text[:80]!r}")
-            cell["source"] = strip_solutions(text)
-        if cell.get("cell_type") == "code":
-            cell["outputs"] = []
-            cell["execution_count"] = None
+        if isinstance(source, list) and all(isinstance(s, str) for s in source):
+            source = ""
+        if not isinstance(source, str) or not isinstance(cell.get("metadata", {}), dict):
+            raise NotebookError(
+                f"{name}: not a Jupyter notebook: cell {index} has a malformed source or metadata"
+            )
+    return nb["cells"]
+
+
+def _stubbed(text: str, stub: str) -> bool:
+    """Does ``text`` hold the stub already (a student version, to be left as it is)?"""
+    lines = [line.strip() for line in text.split("\n")]
+    first, *rest = stub.split("\n")
+    return any(
+        lines[i : i + len(rest) + 1] == [first, *rest]
+        for i in range(len(lines))
+        if lines[i] == first
+    )
+
+
+def _student_cell(cell: dict, name: str, index: int) -> None:
+    source = cell.get("source", "")
+    text = "".join(source) if isinstance(source, list) else source
+    meta = cell.setdefault("metadata", {})
+    grading = meta.get("nbgrader") if isinstance(meta.get("nbgrader"), dict) else {}
+    try:
+        text, found = strip_regions(text, cell["cell_type"])
+    except NotebookError as exc:
+        raise NotebookError(f"{_where(name, index, cell, exc.line)}: {exc}", exc.line) from None
+    # as nbgrader: a region in a cell its metadata does not mark for it is an error
+    for region, flag in (("SOLUTION", "solution"), ("HIDDEN TESTS", "grade")):
+        if grading and region in found and not grading.get(flag):
+            raise NotebookError(
+                f"{_where(name, index, cell)}: a {region} region in a cell whose nbgrader "
+                f"metadata does not say {flag!r}: true"
+            )
+    stub = "\n".join(STUB if cell["cell_type"] == "code" else TEXT_STUB)
+    if grading.get("solution") and "SOLUTION" not in found and not _stubbed(text, stub):
+        text = stub  # as nbgrader: a solution cell without markers is all solution
+    cell["source"] = text
+    if cell["cell_type"] == "code":
+        cell["outputs"], cell["execution_count"] = [], None
+    if grading.get("solution") or grading.get("grade") or grading.get("locked"):
+        meta["deletable"] = False  # as nbgrader's LockCells: the graded cells stay
+    if not grading.get("solution") and (grading.get("grade") or grading.get("locked")):
+        meta["editable"] = False
+
+
+def student_notebook(nb: dict, name: str = "notebook") -> dict:
+    """A copy of notebook ``nb`` (as parsed JSON) as nbgrader would release it.
+
+    ``name`` (the file, say) starts every error message. Raises :class:`NotebookError` for a
+    malformed marker or a JSON value that is not a notebook.
+    """
+    nb = copy.deepcopy(nb)
+    for index, cell in enumerate(_cells(nb, name)):
+        _student_cell(cell, name, index)
     return nb
 
 
+def read_notebook(path: Path) -> dict:
+    """Notebook ``path`` as parsed JSON; :class:`NotebookError` (naming it) if it is none."""
+    path = Path(path)
+    try:
+        nb = json.loads(path.read_bytes().decode("utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise NotebookError(f"{path}: not a Jupyter notebook (not UTF-8 JSON: {exc})") from None
+    _cells(nb, str(path))
+    return nb
+
+
+def notebook_text(nb: dict) -> str:
+    """``nb`` as Jupyter saves it (one-space indent, UTF-8 kept, a final newline)."""
+    return json.dumps(nb, indent=1, ensure_ascii=False) + "\n"
+
+
+def student_text(src: Path) -> str:
+    """The student version of notebook file ``src``, as the text of a notebook file."""
+    return notebook_text(student_notebook(read_notebook(src), str(src)))
+
+
 def write_student_version(src: Path, dst: Path) -> Path:
-    """Write the student version of notebook ``src`` to ``dst`` (a file or a directory)."""
+    """Write the student version of notebook ``src`` to ``dst`` (a file or a directory).
+
+    The text goes to a temporary file renamed over ``dst``: an interrupted write leaves no
+    truncated notebook. (The course commands add the checks against losing work.)
+    """
     src, dst = Path(src), Path(dst)
     if dst.is_dir():
         dst = dst / src.name
-    nb = json.loads(src.read_text(encoding="utf-8"))
-    dst.write_text(json.dumps(student_notebook(nb), indent=1, ensure_ascii=False) + "\n", "utf-8")
+    text = student_text(src)
+    fd, tmp = tempfile.mkstemp(dir=dst.parent, prefix=f".{dst.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(tmp, dst)
+    except BaseException:
+        os.unlink(tmp)
+        raise
     return dst

@@ -20,7 +20,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from ..core.fill import Fill
-from ..pipeline.render_triangles import Frame
+from ..pipeline.rendering.render_triangles import Frame
 from .common import Artists, fs, label_box, lw, ms, show_image
 from .images import ImageArtists
 from .style import COLORS, OKABE_ITO, SIGNED_CMAP, VALUE_CMAP

@@ -17,7 +17,7 @@ from matplotlib.transforms import IdentityTransform
 from ..core.fill import Fill
 from ..core.trace import FillTrace
 from ..core.validate import as_int, as_size
-from ..pipeline.render_triangles import Frame
+from ..pipeline.rendering.render_triangles import Frame
 
 
 @dataclass

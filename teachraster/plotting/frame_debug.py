@@ -1,7 +1,7 @@
 """Frame debugging views: an overlay of the whole frame and the history of one pixel.
 
 :func:`plot_overlay` draws ``frame.overlay(kind)`` (see
-:mod:`teachraster.pipeline.overlays`) with a colour bar that says what a colour means in
+:mod:`teachraster.pipeline.debugging.overlays`) with a colour bar that says what a colour means in
 numbers: counts get one colour per integer (0 light grey, never hidden), the quad
 overshading a fraction of helper lanes from 0 to 3/4, the triangle size a log scale of
 pixels. :func:`plot_history` draws ``frame.history(row, col)``: one bar per record at the
@@ -18,7 +18,7 @@ import numpy as np
 from matplotlib.colors import BoundaryNorm, ListedColormap, LogNorm, Normalize
 
 from ..core.validate import check_choice
-from ..pipeline.overlays import KINDS
+from ..pipeline.debugging.overlays import KINDS
 from .common import Artists, pixel_axes, show_image
 from .style import ERROR_CMAP, VALUE_CMAP
 

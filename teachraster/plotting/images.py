@@ -17,9 +17,9 @@ from matplotlib.text import Text
 
 from ..core.fill import Fill
 from ..core.trace import FillTrace
-from ..pipeline.render_plan import Plan
-from ..pipeline.render_scenes import SceneFrame
-from ..pipeline.render_triangles import Frame
+from ..pipeline.planning.render_plan import Plan
+from ..pipeline.rendering.render_scenes import SceneFrame
+from ..pipeline.rendering.render_triangles import Frame
 from .common import (
     Artists,
     as_trace,

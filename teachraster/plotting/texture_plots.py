@@ -14,8 +14,8 @@ from matplotlib.collections import LineCollection, PatchCollection
 from matplotlib.colors import BoundaryNorm, ListedColormap
 from matplotlib.patches import Rectangle
 
-from ..pipeline.render_triangles import Frame
-from ..pipeline.texture_filters import nearest_level
+from ..pipeline.rendering.render_triangles import Frame
+from ..pipeline.texturing.texture_filters import nearest_level
 from .common import Artists, fs, lw, pixel_axes, rgba_image, set_image, show_image
 from .style import ERROR_CMAP, OKABE_ITO
 

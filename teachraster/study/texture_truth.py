@@ -19,10 +19,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..pipeline.mip_pyramid import mipmap
-from ..pipeline.render_scenes import render_scene
-from ..pipeline.texel_fetch import lookup
-from ..pipeline.texture_filters import MIPMAP_FILTERS, footprint_axes, linear_levels, mip_level
+from ..pipeline.rendering.render_scenes import render_scene
+from ..pipeline.texturing.mip_pyramid import mipmap
+from ..pipeline.texturing.texel_fetch import lookup
+from ..pipeline.texturing.texture_filters import (
+    MIPMAP_FILTERS,
+    footprint_axes,
+    linear_levels,
+    mip_level,
+)
 from .bench import time_interleaved
 
 #: The filters the study compares by default, cheapest first.

@@ -23,6 +23,11 @@ Widgets
 - :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
   chooser: the filtered image, the mip level per pixel and the error against the true
   footprint average (lesson 09).
+- :class:`Predict` -- "predict, then see": a question that takes the student's answer (a
+  choice or a number) before it reveals the answer, the explanation and its figure; headless
+  runs show the answer at once.
+- :class:`ProjectionExplorer` (lesson 04: eye, screen and segment, a slider along the screen)
+  and :class:`ZBufferStepper` (lesson 05a: the z-buffer triangle by triangle).
 - :class:`FrameInspector` -- a built-in scene with a view chooser (the image or an overlay:
   overdraw, depth complexity, quad overshading, ...); click a pixel for its history (lesson 11).
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
@@ -55,8 +60,11 @@ from .frame_inspector import FrameInspector
 from .inspector import PixelInspector
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
+from .predict import Predict
+from .projection_explorer import ProjectionExplorer
 from .textured import TexturedPlaneViewer
 from .tiles import TileExplorer
+from .zbuffer_stepper import ZBufferStepper
 
 __all__ = [
     "FrameInspector",
@@ -68,8 +76,11 @@ __all__ = [
     "FillPlayer",
     "PixelInspector",
     "PlaneExplorer",
+    "Predict",
+    "ProjectionExplorer",
     "TexturedPlaneViewer",
     "TileExplorer",
     "TriangleEditor",
+    "ZBufferStepper",
     "resolve_backend",
 ]

@@ -13,7 +13,7 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
-from ..pipeline.depth import depth_resolution, fights
+from ..pipeline.visibility.depth import depth_resolution, fights
 from ..plotting import COLORS
 from .common import close_tree, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend

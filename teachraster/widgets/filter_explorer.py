@@ -6,10 +6,10 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
-from ..pipeline.camera import Camera
-from ..pipeline.render_scenes import render
-from ..pipeline.texture import TEXTURE_FILTERS, checkerboard, sample
-from ..pipeline.texture_filters import mip_level
+from ..pipeline.geometry.camera import Camera
+from ..pipeline.rendering.render_scenes import render
+from ..pipeline.texturing.texture import TEXTURE_FILTERS, checkerboard, sample
+from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html

@@ -2,9 +2,9 @@
 
 What RenderDoc's texture viewer and pixel history do for a GPU frame, for a teachraster
 frame: choose a built-in scene and a view (the shaded image or an overlay of
-:mod:`teachraster.pipeline.overlays`), click a pixel (or move the row / column sliders),
+:mod:`teachraster.pipeline.debugging.overlays`), click a pixel (or move the row / column sliders),
 and see every triangle on the way to it in submission order, with the test that stopped
-each (:mod:`teachraster.pipeline.frame_history`): the table and the depth strip beside it.
+each (:mod:`teachraster.pipeline.debugging.frame_history`): the table and the depth strip beside it.
 
 Clicks work under ipympl (the canvas' own mouse events) and with the image display, where
 the frame is shown by a small page-side widget (anywidget) that sends the clicked point
@@ -18,9 +18,9 @@ import html
 import ipywidgets as widgets
 import numpy as np
 
-from ..pipeline.overlays import KINDS
-from ..pipeline.render_scenes import render
-from ..pipeline.scenes import SCENES, get_scene
+from ..pipeline.debugging.overlays import KINDS
+from ..pipeline.rendering.render_scenes import render
+from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
 from .common import Holdable, close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
@@ -82,7 +82,7 @@ class FrameInspector(Holdable):
     Parameters
     ----------
     scene : str
-        A built-in scene (:data:`teachraster.pipeline.scenes.SCENES`).
+        A built-in scene (:data:`teachraster.pipeline.rendering.scenes.SCENES`).
     width, height : int
         Frame size (small frames keep each pixel clickable).
     view : str

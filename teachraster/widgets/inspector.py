@@ -7,8 +7,8 @@ import numpy as np
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
-from ..pipeline.render_triangles import render
-from ..pipeline.viewport import to_window
+from ..pipeline.geometry.viewport import to_window
+from ..pipeline.rendering.render_triangles import render
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
 from .common import (
     SAMPLE_PATTERNS,

@@ -8,9 +8,9 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..core.validate import as_size
-from ..pipeline.camera import Camera
-from ..pipeline.render_scenes import render
-from ..pipeline.texture import checkerboard, sample, texel_error
+from ..pipeline.geometry.camera import Camera
+from ..pipeline.rendering.render_scenes import render
+from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend

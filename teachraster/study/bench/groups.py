@@ -9,9 +9,9 @@ import numpy as np
 from ...core.fill import rasterize
 from ...core.triangle import Triangle
 from ...core.validate import as_int, as_size
-from ...pipeline.camera import perspective
-from ...pipeline.depth import linear_depth
-from ...pipeline.render_scenes import render
+from ...pipeline.geometry.camera import perspective
+from ...pipeline.rendering.render_scenes import render
+from ...pipeline.visibility.depth import linear_depth
 from .. import precision
 from .ground_truth import exact_coverage, uv_ground_truth
 from .settings import (

@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from ...core.fill import Fill
-from ...pipeline.render_triangles import Frame
+from ...pipeline.rendering.render_triangles import Frame
 
 #: Fill methods a screen-space case runs with.
 FILL_METHODS = ("halfplane", "span")

@@ -12,8 +12,8 @@ import numpy as np
 from ...core.fill import rasterize
 from ...core.snapping import snap
 from ...core.triangle import Triangle
-from ...pipeline.camera import perspective
-from ...pipeline.render_triangles import render as render_clip
+from ...pipeline.geometry.camera import perspective
+from ...pipeline.rendering.render_triangles import render as render_clip
 from .case import DEPTH_ORDER, Fills, HardCase, Naive, Rendered, add_case, frozen_inputs
 from .checks import check_finite, fill_all, first_pixels
 from .naive import naive_affine, naive_counts, naive_perspective32, naive_window

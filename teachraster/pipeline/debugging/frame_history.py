@@ -1,0 +1,435 @@
+"""Pixel history: why a pixel is what it is, told triangle by triangle.
+
+Graphics engineers answer "why is this pixel this colour?" with a frame debugger's *pixel
+history* (RenderDoc, PIX): every draw that touched the pixel, in order, with the test that
+killed each fragment and the depth before and after. ``frame.history(row, col)`` is that
+for a :func:`~teachraster.pipeline.render_triangles.render` made with ``trace=True``: one
+:class:`HistoryRecord` per (triangle, sample) for every triangle whose screen bounding box
+(after clipping) reaches the pixel, in submission order, with the *first* test of the
+pipeline's order that stopped it:
+
+    "culled" -> "not_covered" (which edge, how far outside) -> "hi_z" -> "failed_depth"
+    -> "passed"
+
+A fragment that passed may still be hidden by a later one (``hidden_by``); the one the
+pixel shows at the end has ``shown``. Nothing is stored per fragment for this: the
+history of one pixel is computed on demand from the trace's compact arrays (the fill's
+fragments, the depth test in drawing order, the in-order Hi-Z replay of
+:mod:`teachraster.pipeline.hierarchical_z`) and, for coverage that failed and for MSAA
+samples, from the triangles' edge functions and depth planes, with the very functions the
+renderer uses. Replaying the records (:meth:`PixelHistory.replay`) gives the frame's
+triangle and depth at every sample bit for bit (tests/test_frame_history.py).
+
+The depth test follows Ritschel, *Interpolation and z-buffering*: strictly nearer passes,
+so of equal depths the earlier triangle stays; without the test every fragment passes and
+the last one drawn shows.
+"""
+
+from __future__ import annotations
+
+import operator
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ...core.edges import passes, setup_edges
+from ...core.multisample import offsets_in_units
+from ..antialiasing.multisampling import depth_planes, plane_depth
+from ..rasterization.batched_fill import weight_source
+from ..rendering.stages import Visibility, interpolate_stage
+from ..visibility.depth import quantize
+
+#: The outcomes, in the pipeline's order of tests (the first that failed is reported).
+OUTCOMES = ("culled", "not_covered", "hi_z", "failed_depth", "passed")
+
+
+@dataclass(frozen=True)
+class HistoryRecord:
+    """One triangle (one clipped piece of it) at one sample of the pixel.
+
+    Attributes
+    ----------
+    triangle : int
+        Input triangle index (submission order).
+    piece : int
+        Index of the clipped piece it reached the pixel as (triangles after clipping).
+    sample : int
+        The sample (0 for the pixel centre of a single-sample frame).
+    outcome : str
+        The first test that stopped it, or "passed" (:data:`OUTCOMES`).
+    depth : float
+        The fragment's depth as the buffer stores it; NaN when there is no fragment.
+    depth_before, depth_after : float
+        The depth buffer at this sample before and after it (inf: still empty).
+    value : tuple of float
+        The attributes it wrote ("passed"), else those interpolated there (covered), else ().
+        With MSAA, where attributes are evaluated once per pixel and triangle, only the
+        records a sample shows at the end carry them (the frame's ``sample_attrs``).
+    edge : tuple of int or None
+        "not_covered": the first edge that failed, as (from, to) input vertex indices.
+    outside : float
+        "not_covered": how far outside that edge the point lies, in px (0 on the edge: the
+        top-left rule refused it). NaN otherwise.
+    shown : bool
+        The sample shows this triangle at the end.
+    hidden_by : int
+        "passed" but later overwritten: the input triangle that passed next (-1 none).
+    """
+
+    triangle: int
+    piece: int
+    sample: int
+    outcome: str
+    depth: float
+    depth_before: float
+    depth_after: float
+    value: tuple = ()
+    edge: tuple | None = None
+    outside: float = float("nan")
+    shown: bool = False
+    hidden_by: int = -1
+
+
+@dataclass(frozen=True)
+class PixelHistory:
+    """The story of one pixel: its records in submission order (then by sample).
+
+    ``print(h)`` is a table, ``h.plot(ax)`` a strip of fragments with the depth before and
+    after each, ``h.replay()`` the frame's pixel rebuilt from the records alone.
+    """
+
+    row: int
+    col: int
+    records: tuple
+    n_samples: int
+    depth_test: bool
+    shows: int  # the input triangle the frame shows at the pixel (-1 none)
+    clipped_away: int = 0  # input triangles clipping removed whole (no screen position)
+
+    def __len__(self) -> int:
+        return len(self.records)
+
+    def __iter__(self):
+        return iter(self.records)
+
+    def __getitem__(self, i):
+        return self.records[i]
+
+    @property
+    def outcomes(self) -> list[str]:
+        """The outcome of every record, in order."""
+        return [r.outcome for r in self.records]
+
+    def replay(self) -> tuple[np.ndarray, np.ndarray]:
+        """Rebuild the pixel from the records: per sample (S,) the triangle shown (-1 none)
+        and the depth in the buffer (NaN none). Passing records write in order; the
+        depth test itself is not redone (the records say who passed)."""
+        triangle = np.full(self.n_samples, -1, dtype=np.int64)
+        depth = np.full(self.n_samples, np.nan)
+        for r in self.records:
+            if r.outcome == "passed":
+                triangle[r.sample], depth[r.sample] = r.triangle, r.depth
+        return triangle, depth
+
+    def __str__(self) -> str:
+        return history_table(self)
+
+    def _repr_pretty_(self, p, cycle) -> None:  # IPython prints the table
+        p.text(str(self))
+
+    def plot(self, ax):
+        """Draw the pixel's story on ``ax`` (see :func:`draw_history`); returns artists."""
+        return draw_history(ax, self)
+
+
+def pixel_history(frame, row, col) -> PixelHistory:
+    """:meth:`Frame.history`: the :class:`PixelHistory` of pixel (``row``, ``col``)."""
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "debug", None) is None:
+        raise ValueError("frame: the pixel history needs a frame rendered with trace=True")
+    dbg = trace.debug
+    height, width = frame.triangle_id.shape
+    row, col = _pixel_index("row", row, height), _pixel_index("col", col, width)
+    if dbg.offsets is None:
+        records = _single_sample(frame, dbg, row, col)
+        n_samples = 1
+    else:
+        records = _multisampled(frame, dbg, row, col)
+        n_samples = len(dbg.offsets)
+    records = _replay_buffer(records, dbg.inputs.depth_test)
+    if dbg.offsets is not None:  # MSAA: the value a sample shows is the frame's own
+        values = frame.sample_attrs[row, col]
+        records = [replace(r, value=tuple(float(v) for v in values[r.sample])) if r.shown
+                   else r for r in records]  # fmt: skip
+    dropped = int((np.asarray(frame.trace.clip_status) == 2).sum())
+    return PixelHistory(row, col, tuple(records), n_samples, dbg.inputs.depth_test,
+                        int(frame.triangle_id[row, col]), dropped)  # fmt: skip
+
+
+def _setup(dbg, window):
+    """The edge set-up of every triangle after clipping (snapped), once per frame."""
+    if "setup" not in dbg.cache:
+        dbg.cache["setup"] = setup_edges(window[:, :, :2], dbg.inputs.subpixel_bits)
+    return dbg.cache["setup"]
+
+
+def _pixel_index(name, value, size) -> int:
+    try:
+        i = operator.index(value)
+    except TypeError:
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__}") from None
+    if not 0 <= i < size:
+        raise ValueError(f"{name} must be in [0, {size}), got {i}")
+    return i
+
+
+def _candidates(setup, points, extra) -> np.ndarray:
+    """Pieces whose snapped bounding box contains one of ``points`` (n, 2) units, plus
+    ``extra`` (pieces known to reach the pixel), ascending (drawing order)."""
+    p = setup.p
+    lo, hi = p.min(axis=1), p.max(axis=1)  # (M, 2): cheap beside a click
+    inside = np.zeros(len(p), dtype=bool)
+    for x, y in points:
+        inside |= (lo[:, 0] <= x) & (x <= hi[:, 0]) & (lo[:, 1] <= y) & (y <= hi[:, 1])
+    inside[extra] = True
+    return np.flatnonzero(inside)
+
+
+def _points(setup, units, row, col) -> np.ndarray:
+    """The tested points of pixel (row, col) in internal units: (S, 2)."""
+    base = np.array([col * setup.unit, row * setup.unit], dtype=setup.p.dtype)
+    if units is None:
+        return (base + setup.half)[None, :]
+    return base + units
+
+
+def _edge_test(setup, pieces, pts):
+    """Coverage of ``pts`` (S, 2) by ``pieces``: covered (n, S), the first failing edge
+    (n, S) (-1 none) and its value E (n, S) in units²."""
+    p, tl = setup.p[pieces], setup.top_left[pieces]
+    n, s = len(pieces), len(pts)
+    failed = np.full((n, s), -1, dtype=np.int64)
+    value = np.zeros((n, s))
+    for k in range(3):
+        a, b = p[:, k, None, :], p[:, (k + 1) % 3, None, :]
+        e = (b[..., 0] - a[..., 0]) * (pts[None, :, 1] - a[..., 1]) - (b[..., 1] - a[..., 1]) * (
+            pts[None, :, 0] - a[..., 0]
+        )
+        bad = ~passes(e, tl[:, k, None]) & (failed < 0)
+        failed[bad] = k
+        value[bad] = e[bad]
+    zero = (np.asarray(setup.area2)[pieces] == 0)[:, None]  # covers nothing: edge 0
+    failed[zero & (failed < 0)] = 0
+    return failed < 0, failed, value
+
+
+def _miss(setup, piece, k, e) -> tuple[tuple[int, int], float]:
+    """The failed edge as input vertex indices and the distance outside it in px."""
+    a, b = setup.p[piece, k], setup.p[piece, (k + 1) % 3]
+    length = float(np.hypot(float(b[0] - a[0]), float(b[1] - a[1])))
+    perm = setup.perm[piece]
+    edge = (int(perm[k]), int(perm[(k + 1) % 3]))
+    if length == 0:
+        return edge, 0.0
+    return edge, max(0.0, -float(e) / length / float(setup.unit))
+
+
+def _single_sample(frame, dbg, row, col) -> list[HistoryRecord]:
+    """Records of a one-sample frame: fragments, tests and Hi-Z from the trace."""
+    trace, frags = frame.trace, dbg.fragments
+    at = np.flatnonzero((frags.row == row) & (frags.col == col))  # drawing order
+    setup = _setup(dbg, trace.window)
+    pts = _points(setup, None, row, col)
+    pieces = _candidates(setup, pts, frags.tri[at])
+    covered, failed, value = _edge_test(setup, pieces, pts)
+    fragment_of = dict(zip(frags.tri[at].tolist(), at.tolist()))
+    rejected = None if trace.hiz is None else trace.hiz.fragment_rejected
+    values = _values(frags, at, dbg)
+    records = []
+    for i, piece in enumerate(pieces.tolist()):
+        base = dict(triangle=int(dbg.clipped.parent[piece]), piece=piece, sample=0)
+        f = fragment_of.get(piece)
+        if trace.culled[piece]:
+            records.append(HistoryRecord(**base, outcome="culled", depth=np.nan,
+                                         depth_before=np.nan, depth_after=np.nan))  # fmt: skip
+        elif f is None:
+            k = int(failed[i, 0]) if failed[i, 0] >= 0 else 0
+            edge, outside = _miss(setup, piece, k, value[i, 0])
+            records.append(HistoryRecord(**base, outcome="not_covered", depth=np.nan,
+                                         depth_before=np.nan, depth_after=np.nan,
+                                         edge=edge, outside=outside))  # fmt: skip
+        else:
+            if rejected is not None and rejected[f]:
+                outcome = "hi_z"
+            else:
+                outcome = "passed" if trace.fragment_passed[f] else "failed_depth"
+            records.append(HistoryRecord(**base, outcome=outcome,
+                                         depth=float(trace.fragment_depth[f]),
+                                         depth_before=np.nan, depth_after=np.nan,
+                                         value=values[f]))  # fmt: skip
+    return records
+
+
+def _values(frags, at, dbg) -> dict:
+    """Attributes interpolated at fragments ``at`` (the renderer's interpolation stage)."""
+    if len(at) == 0:
+        return {}
+    a = dbg.inputs
+    visible = Visibility(np.zeros(len(at)), np.zeros(len(at), np.int64), a.depth_test,
+                         np.arange(len(at)), at)  # fmt: skip
+    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, frozenset())
+    return {int(f): tuple(float(v) for v in values[i]) for i, f in enumerate(at)}
+
+
+def _multisampled(frame, dbg, row, col) -> list[HistoryRecord]:
+    """Records of an MSAA frame, one per (piece, sample): coverage per sample from the edge
+    functions, depth per sample from the depth planes, as the renderer decides them."""
+    trace, a = frame.trace, dbg.inputs
+    window = trace.window
+    setup = _setup(dbg, window)
+    units = offsets_in_units(dbg.offsets, setup)
+    pts = _points(setup, units, row, col)
+    pieces = _candidates(setup, pts, np.zeros(0, np.int64))
+    covered, failed, value = _edge_test(setup, pieces, pts)
+    if "planes" not in dbg.cache:
+        dbg.cache["planes"] = depth_planes(weight_source(window[:, :, :2], setup, False), window)
+    planes = dbg.cache["planes"]
+    n_s = len(dbg.offsets)
+    tri = np.repeat(pieces, n_s)
+    x, y = (
+        col + np.tile(dbg.offsets[:, 0], len(pieces)),
+        row + np.tile(dbg.offsets[:, 1], len(pieces)),
+    )
+    depth = plane_depth(planes, 1.0, tri, x, y) if len(tri) else np.zeros(0)
+    if a.depth_format != "float64":
+        depth = quantize(depth, a.depth_format)
+    depth = depth.reshape(len(pieces), n_s)
+    records = []
+    for i, piece in enumerate(pieces.tolist()):
+        base = dict(triangle=int(dbg.clipped.parent[piece]), piece=piece)
+        for s in range(n_s):
+            if trace.culled[piece]:
+                rec = HistoryRecord(**base, sample=s, outcome="culled", depth=np.nan,
+                                    depth_before=np.nan, depth_after=np.nan)  # fmt: skip
+            elif not covered[i, s]:
+                edge, outside = _miss(setup, piece, int(failed[i, s]), value[i, s])
+                rec = HistoryRecord(**base, sample=s, outcome="not_covered", depth=np.nan,
+                                    depth_before=np.nan, depth_after=np.nan, edge=edge,
+                                    outside=outside)  # fmt: skip
+            else:  # the depth test is replayed in _replay_buffer
+                rec = HistoryRecord(**base, sample=s, outcome="covered", depth=float(depth[i, s]),
+                                    depth_before=np.nan, depth_after=np.nan)  # fmt: skip
+            records.append(rec)
+    return records
+
+
+def _replay_buffer(records, depth_test) -> list[HistoryRecord]:
+    """Fill in the buffer before and after every record (per sample, in order), decide the
+    depth test where it is still open ("covered": MSAA), and mark what each sample shows
+    at the end and who hid the fragments that passed."""
+    buffer: dict[int, float] = {}
+    out = []
+    for r in records:
+        before = buffer.get(r.sample, np.inf)
+        outcome = r.outcome
+        if outcome == "covered":
+            outcome = "passed" if (not depth_test or r.depth < before) else "failed_depth"
+        if outcome == "passed":
+            buffer[r.sample] = r.depth
+        after = buffer.get(r.sample, np.inf)
+        out.append(replace(r, outcome=outcome, depth_before=before, depth_after=after))
+    last: dict[int, int] = {}  # per sample, the index of the last record that passed
+    for i, r in enumerate(out):
+        if r.outcome == "passed":
+            if r.sample in last:
+                j = last[r.sample]
+                out[j] = replace(out[j], hidden_by=r.triangle)
+            last[r.sample] = i
+    for i in last.values():
+        out[i] = replace(out[i], shown=True)
+    return out
+
+
+def history_table(h: PixelHistory) -> str:
+    """The readable table ``print(h)`` shows."""
+    head = (
+        f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
+        f"{'on' if h.depth_test else 'off'}: {len({r.triangle for r in h.records})} "
+        f"triangle(s) on the way; shows " + ("nothing" if h.shows < 0 else f"triangle {h.shows}")
+    )
+    cols = f"{'tri':>5} {'piece':>5} {'smp':>3}  {'outcome':<22} {'depth':>9} {'before':>9} {'after':>9}  value / why"  # noqa: E501
+    lines = [head, cols]
+    for r in h.records:
+        outcome = r.outcome
+        if r.outcome == "passed":
+            outcome += " (shown)" if r.shown else f" (hidden by {r.hidden_by})"
+        if r.outcome == "not_covered":
+            why = f"outside edge {r.edge[0]}->{r.edge[1]} by {r.outside:.4g} px"
+        elif r.value:
+            why = "(" + ", ".join(f"{v:.4g}" for v in r.value) + ")"
+        else:
+            why = ""
+        lines.append(
+            f"{r.triangle:>5} {r.piece:>5} {r.sample:>3}  {outcome:<22} {_num(r.depth)} "
+            f"{_num(r.depth_before)} {_num(r.depth_after)}  {why}"
+        )
+    if len(h.records) == 0:
+        lines.append("  (no triangle's bounding box reaches this pixel)")
+    if h.clipped_away:
+        lines.append(f"  ({h.clipped_away} triangle(s) of the frame clipped away whole: behind "
+                     "the eye or beyond the far plane, they reach no pixel)")  # fmt: skip
+    return "\n".join(lines)
+
+
+def _num(x: float) -> str:
+    if np.isnan(x):
+        return f"{'-':>9}"
+    if np.isinf(x):
+        return f"{'empty':>9}"
+    return f"{x:9.6f}"
+
+
+#: Colours of the outcomes in :func:`draw_history` (matplotlib names).
+OUTCOME_COLORS = {
+    "culled": "0.75",
+    "not_covered": "0.9",
+    "hi_z": "tab:purple",
+    "failed_depth": "tab:red",
+    "passed": "tab:green",
+}
+
+
+def draw_history(ax, h: PixelHistory):
+    """A strip of the pixel's records: one bar per record (colour = outcome) at the
+    fragment's depth, with the buffer before (○) and after (●) each. Uses only the
+    Axes' own methods, so the engine needs no plotting import. Returns the artists."""
+    artists = []
+    n = len(h.records)
+    x = np.arange(n)
+    depth = np.array([r.depth for r in h.records]) if n else np.zeros(0)
+    colors = [OUTCOME_COLORS[r.outcome] for r in h.records]
+    every = [v for r in h.records for v in (r.depth, r.depth_before, r.depth_after)]
+    every = [v for v in every if np.isfinite(v)]
+    lo, hi = (min(every), max(every)) if every else (0.0, 1.0)
+    pad = max(hi - lo, 1e-6) * 0.25
+    bottom = lo - pad  # bars rise from below the nearest depth: differences show
+    shown = np.where(np.isnan(depth), 0.0, depth - bottom)
+    artists.append(ax.bar(x, shown, bottom=bottom, color=colors, edgecolor="k", linewidth=0.5))
+    ax.set_ylim(bottom, hi + pad)
+    for name, key, marker in (("before", "depth_before", "o"), ("after", "depth_after", ".")):
+        v = np.array([getattr(r, key) for r in h.records]) if n else np.zeros(0)
+        v = np.where(np.isinf(v), np.nan, v)
+        artists += ax.plot(x, v, marker, color="k", mfc="none" if marker == "o" else "k",
+                           linestyle="none", label=f"buffer {name}")  # fmt: skip
+    labels = [f"{r.triangle}" + (f"·s{r.sample}" if h.n_samples > 1 else "") for r in h.records]
+    ax.set_xticks(x, labels, fontsize="small")
+    ax.set_xlabel("triangle" + ("·sample" if h.n_samples > 1 else "") + ", submission order")
+    ax.set_ylabel("depth (smaller is nearer)")
+    ax.set_title(f"history of pixel (row {h.row}, col {h.col})", fontsize="small")
+    for name, color in OUTCOME_COLORS.items():
+        if name in h.outcomes:
+            artists.append(ax.bar([0], [0], bottom=bottom, color=color, edgecolor="k",
+                                  linewidth=0.5, label=name))  # fmt: skip
+    if n:
+        artists.append(ax.legend(fontsize="x-small", loc="best"))
+    return artists

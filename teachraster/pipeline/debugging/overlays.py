@@ -1,0 +1,226 @@
+"""Debug views of a whole frame: overdraw, depth complexity, quad overshading and more.
+
+A frame debugger colours the frame by how much work each pixel cost. ``frame.overlay(kind)``
+returns that as an (H, W) array, 0 (never NaN) where nothing arrives:
+
+``"overdraw"``
+    Fragments per pixel *before* the depth test: covered (triangle, sample) pairs, summed
+    over the pixel's samples (a pixel covered whole by one triangle reads 4 at 4×). A GPU
+    counts this with a stencil buffer incremented on every fragment, depth test off.
+``"depth_complexity"``
+    Those that *passed* the depth test when they arrived, in submission order (GL: the
+    stencil incremented on depth pass). With the depth test off every fragment passes, so
+    it equals the overdraw.
+``"quad_overshading"``
+    Per 2×2 quad (aligned to even rows and columns), the fraction of the shader lanes
+    launched there that were helpers: each triangle that shades a pixel of a quad launches
+    all four lanes, so a triangle shading one pixel of a quad wastes 3 of 4. "Shades" is
+    early-z's rule: the fragments that passed the depth test on arrival (with MSAA, pixels
+    where one of the triangle's samples passed).
+``"triangle_size"``
+    Pixels per triangle: the number of pixels the visible triangle covers (with MSAA,
+    pixels where it covers a sample), over its whole area, hidden parts included.
+``"hi_z"``
+    Fragments per pixel that Hi-Z rejected in the in-order GPU replay
+    (:mod:`teachraster.pipeline.hierarchical_z`): one per rejected block over the pixel. 0
+    without the depth test, and with MSAA (not simulated there).
+``"nan"``
+    Non-finite values per covered pixel, over depth, attributes, derivatives and (scenes)
+    the shaded image: a frame debugger's NaN view; 0 on a healthy frame.
+
+All but "nan" need ``trace=True``; they are computed on demand from the trace's compact
+arrays (single sample: the fragment arrays; MSAA: the per-sample coverage recomputed by the
+renderer's own functions, :mod:`teachraster.pipeline.sample_coverage`), never per fragment
+in Python. tests/test_frame_history.py checks them against the pixel histories and
+tests/test_frame_history_gl.py against llvmpipe's stencil counts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core.edges import setup_edges
+from ...core.multisample import offsets_in_units
+from ...core.validate import check_choice
+from ..antialiasing.multisampling import depth_planes, plane_depth
+from ..rasterization.batched_fill import weight_source
+from ..rasterization.sample_coverage import sample_fragments
+from ..visibility.depth import quantize
+from ..visibility.zbuffer import passed_on_arrival
+
+#: The overlay kinds, in the order a chooser lists them.
+KINDS = ("overdraw", "depth_complexity", "quad_overshading", "triangle_size", "hi_z", "nan")
+
+
+def overlay(frame, kind: str) -> np.ndarray:
+    """:meth:`Frame.overlay`: the (H, W) debug view ``kind`` (see the module's list)."""
+    check_choice("kind", kind, KINDS)
+    height, width = frame.triangle_id.shape
+    if kind == "nan":
+        return non_finite(frame).astype(np.int64)
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "debug", None) is None:
+        raise ValueError(f"frame: the {kind!r} overlay needs a frame rendered with trace=True")
+    work = _work(frame)
+    n_pix = width * height
+    if kind == "overdraw":
+        if work.single:  # one sample per fragment: a plain count (no float weights)
+            out = np.bincount(work.pixel, minlength=n_pix)
+        else:
+            out = np.bincount(work.pixel, weights=work.samples, minlength=n_pix)
+    elif kind == "depth_complexity":
+        if work.single:
+            out = np.bincount(work.pixel[work.passed_samples > 0], minlength=n_pix)
+        else:
+            out = np.bincount(work.pixel, weights=work.passed_samples, minlength=n_pix)
+    elif kind == "quad_overshading":
+        return quad_overshading(work, width, height)
+    elif kind == "triangle_size":
+        size = np.bincount(work.triangle, minlength=len(trace.clip_status))
+        ids = frame.triangle_id
+        return np.where(ids >= 0, size[np.maximum(ids, 0)], 0).astype(np.int64)
+    else:  # hi_z
+        out = np.zeros(n_pix)
+        if work.rejected is not None:
+            out = np.bincount(work.pixel[work.rejected], minlength=n_pix)
+    return np.asarray(out).astype(np.int64).reshape(height, width)
+
+
+def passed_per_triangle(frame) -> np.ndarray:
+    """(N,) samples of each input triangle that passed the depth test on arrival, in
+    submission order: what an occlusion query (``GL_SAMPLES_PASSED``) around each draw
+    counts. Needs ``trace=True``."""
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "debug", None) is None:
+        raise ValueError("frame: the counts per triangle need a frame rendered with trace=True")
+    work = _work(frame)
+    n = len(trace.clip_status)
+    return np.bincount(work.triangle, weights=work.passed_samples, minlength=n).astype(np.int64)
+
+
+@dataclass(frozen=True)
+class Work:
+    """Per (triangle, pixel) fragment of a frame, in drawing order within each pixel.
+
+    ``pixel`` flat index, ``piece`` the triangle after clipping, ``triangle`` the input
+    index, ``samples`` covered samples (1 without MSAA), ``passed_samples`` those that
+    passed the depth test on arrival, ``rejected`` Hi-Z's in-order rejections (or None).
+    """
+
+    pixel: np.ndarray
+    piece: np.ndarray
+    triangle: np.ndarray
+    samples: np.ndarray
+    passed_samples: np.ndarray
+    rejected: np.ndarray | None
+    row: np.ndarray  # the pixel's row, for the quads
+    single: bool = False  # one sample per fragment (``samples`` all 1)
+
+
+def _work(frame) -> Work:
+    """The frame's :class:`Work`, built once per frame (kept in the trace's debug cache)."""
+    cache = frame.trace.debug.cache
+    if "work" not in cache:
+        cache["work"] = _build_work(frame)
+    return cache["work"]
+
+
+def _build_work(frame) -> Work:
+    trace = frame.trace
+    dbg = trace.debug
+    if dbg.offsets is None:
+        frags = dbg.fragments
+        pixel = dbg.pixel if dbg.pixel is not None else frags.row * dbg.inputs.width + frags.col
+        passed = trace.fragment_passed
+        rejected = None if trace.hiz is None else trace.hiz.fragment_rejected
+        one = np.ones(len(frags.tri), dtype=np.int64)
+        return Work(pixel, frags.tri, trace.fragment_triangle, one, passed.view(np.int8),
+                    rejected, frags.row, single=True)  # fmt: skip
+    return _sample_work(trace, dbg)
+
+
+def _sample_work(trace, dbg) -> Work:
+    """MSAA: every covered sample of every triangle, tested in drawing order per sample.
+
+    The coverage is the renderer's (:func:`sample_fragments`, every pixel expanded), the
+    depth its plane per sample (:func:`plane_depth`, quantised as stored), the test
+    :func:`passed_on_arrival` per sample: the z-buffer of a GPU drawing in order.
+    """
+    a = dbg.inputs
+    window = trace.window
+    setup = setup_edges(window[:, :, :2], a.subpixel_bits)
+    live = (np.asarray(setup.original_area2) != 0) & ~trace.culled
+    units = offsets_in_units(dbg.offsets, setup)
+    n_s = len(dbg.offsets)
+    frags = sample_fragments(setup, live, units, a.width, a.height, False)
+    full = np.full(len(frags.full_pixel), (1 << n_s) - 1, dtype=np.int64)
+    pixel = np.concatenate([frags.full_pixel, frags.part_pixel])
+    piece = np.concatenate([frags.full_tri, frags.part_tri])
+    mask = np.concatenate([full, frags.part_mask])
+    # drawing order: by triangle, then raster line and column (as the fill's fragments)
+    order = np.argsort(piece * (a.width * a.height) + pixel)
+    pixel, piece, mask = pixel[order], piece[order], mask[order]
+    bits = (mask[:, None] >> np.arange(n_s)) & 1
+    pair, sample = np.nonzero(bits)
+    samples = bits.sum(axis=1)
+    passed = np.ones(len(pair), dtype=bool)
+    if a.depth_test and len(pair):
+        planes = depth_planes(weight_source(window[:, :, :2], setup, False), window)
+        row, col = np.divmod(pixel[pair], a.width)
+        depth = plane_depth(planes, 1.0, piece[pair], col + dbg.offsets[sample, 0],
+                            row + dbg.offsets[sample, 1])  # fmt: skip
+        if a.depth_format != "float64":
+            depth = quantize(depth, a.depth_format)
+        passed = passed_on_arrival(pixel[pair] * n_s + sample, depth)
+    passed_samples = np.bincount(pair, weights=passed, minlength=len(pixel)).astype(np.int64)
+    triangle = dbg.clipped.parent[piece]
+    return Work(pixel, piece, triangle, samples, passed_samples, None, pixel // a.width)
+
+
+def quad_overshading(work: Work, width: int, height: int) -> np.ndarray:
+    """(H, W) fraction of helper lanes among the lanes launched in each pixel's 2×2 quad."""
+    shaded = work.passed_samples > 0
+    pixel, piece, row = work.pixel[shaded], work.piece[shaded], work.row[shaded]
+    qw, qh = -(-width // 2), -(-height // 2)
+    # (row // 2) * qw + col // 2, with col = pixel - row * width
+    quad = (row >> 1) * qw + ((pixel - row * width) >> 1)
+    n_q = qw * qh
+    launched = 4 * np.bincount(_quad_groups(piece * n_q + quad, row) % n_q, minlength=n_q)
+    useful = np.bincount(quad, minlength=n_q)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        frac = np.where(launched > 0, (launched - useful) / np.maximum(launched, 1), 0.0)
+    grid = frac.reshape(qh, qw).repeat(2, axis=0).repeat(2, axis=1)
+    return grid[:height, :width]
+
+
+def _quad_groups(key: np.ndarray, row: np.ndarray) -> np.ndarray:
+    """The distinct (triangle, quad) keys of fragments in drawing order, without sorting.
+
+    In drawing order (triangle, raster line, column) the keys of the even rows alone
+    ascend, and so do those of the odd rows, each key at most twice in a row (the quad's
+    two columns): each half is made unique by comparing neighbours, and the odd half's
+    keys already in the even half are dropped with one ``searchsorted``.
+    """
+    parity = (row & 1).astype(bool)
+    even, odd = key[~parity], key[parity]
+    if np.any(even[1:] < even[:-1]) or np.any(odd[1:] < odd[:-1]):
+        return np.unique(key)  # not in drawing order: sort
+    even = even[np.r_[True, even[1:] != even[:-1]]] if len(even) else even
+    odd = odd[np.r_[True, odd[1:] != odd[:-1]]] if len(odd) else odd
+    at = np.minimum(np.searchsorted(even, odd), max(len(even) - 1, 0))
+    seen = even[at] == odd if len(even) else np.zeros(len(odd), dtype=bool)
+    return np.concatenate([even, odd[~seen]])
+
+
+def non_finite(frame) -> np.ndarray:
+    """(H, W) count of non-finite values at covered pixels, over the per-pixel arrays."""
+    covered = frame.triangle_id >= 0
+    count = np.zeros(frame.triangle_id.shape, dtype=np.int64)
+    for arr in (frame.depth, frame.attrs, frame.ddx, frame.ddy, getattr(frame, "image", None)):
+        if arr is None:
+            continue
+        bad = ~np.isfinite(arr)
+        count += bad.reshape(*bad.shape[:2], -1).sum(axis=2) if bad.ndim == 3 else bad
+    return np.where(covered, count, 0)

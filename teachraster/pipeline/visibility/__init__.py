@@ -1,0 +1,5 @@
+"""Which fragment is seen: depth formats and precision, the z-buffer, hierarchical Z.
+
+Lessons 05a, 05b and 10 (Ritschel, *Interpolation and z-buffering*): window depth and its
+storage, the depth test for all fragments at once, and Hi-Z tiles that drop hidden work.
+"""

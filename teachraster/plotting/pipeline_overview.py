@@ -1,0 +1,120 @@
+"""The graphics pipeline as one picture: each stage, what it does, and the lessons that teach it.
+
+Lesson 00 opens with it, so that every later lesson has a place: rasterisation (this course)
+sits between vertex processing, which ends in window coordinates, and the per-fragment stages
+(depth test, shading, blending). The stages and their lessons are data
+(:data:`PIPELINE_STAGES`), so the notebook's list of links and the picture cannot disagree.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from matplotlib.patches import FancyArrowPatch, FancyBboxPatch, Patch
+
+from .common import fs, lw
+from .style import COLORS
+
+
+@dataclass(frozen=True)
+class Stage:
+    """One pipeline stage: its name, what it does, the lessons (notebook stems) teaching it."""
+
+    name: str
+    what: str
+    lessons: tuple[str, ...]
+    course: bool = False  # the rasterisation core this course is about
+
+
+#: The stages in order, with the lessons (notebook file stems) where each is taught.
+PIPELINE_STAGES: tuple[Stage, ...] = (
+    Stage(
+        "vertex processing",
+        "model → view → clip space",
+        ("04_perspective_correct_interpolation", "05a_zbuffer"),
+    ),  # fmt: skip
+    Stage("clipping", "cut at near / far planes, w > 0", ("05a_zbuffer",)),
+    Stage("viewport", "divide by w → window x, y, depth", ("05a_zbuffer", "05b_depth_precision")),
+    Stage(
+        "rasterisation",
+        "which pixels, with which λ",
+        (
+            "01_span_tables",
+            "02_half_planes",
+            "03_barycentric_and_plane_equations",
+            "04_perspective_correct_interpolation",
+            "07_hard_cases",
+            "08_antialiasing",
+            "10_tiles_and_hierarchical_z",
+            "12_lines_and_blending",
+        ),
+        course=True,
+    ),  # fmt: skip
+    Stage(
+        "depth test",
+        "keep the nearest fragment",
+        ("05a_zbuffer", "05b_depth_precision", "10_tiles_and_hierarchical_z"),
+    ),  # fmt: skip
+    Stage("shading", "colour, textures", ("09_texture_filtering",)),
+    Stage("blending", "combine with the image", ("12_lines_and_blending",)),
+)
+
+
+def lesson_number(stem: str) -> str:
+    """``"05a_zbuffer"`` -> ``"05a"``: the lesson's number as the picture shows it."""
+    return stem.split("_", 1)[0]
+
+
+@dataclass
+class PipelineArtists:
+    """The boxes, texts and arrows of :func:`plot_pipeline`, one entry per stage."""
+
+    boxes: list = field(default_factory=list)
+    texts: list = field(default_factory=list)
+    arrows: list = field(default_factory=list)
+    legend: object = None
+
+
+def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineArtists:
+    """Draw the stages top to bottom as boxes joined by arrows, each with its lessons.
+
+    One stage per row keeps the picture narrow enough for a notebook column at the classroom
+    font size (a left-to-right chain would need twice the width). The stages the course is
+    about are filled with the "fill" colour, the others grey; a legend says which is which.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    stages : sequence of Stage
+
+    Returns
+    -------
+    PipelineArtists
+    """
+    out = PipelineArtists()
+    n = len(stages)
+    ax.set(xlim=(0, 10), ylim=(n - 0.35, -0.65))
+    ax.set_axis_off()
+    for k, stage in enumerate(stages):
+        colour = COLORS["fill"] if stage.course else COLORS["rejected"]
+        box = FancyBboxPatch((0.05, k - 0.34), 9.9, 0.68, boxstyle="round,pad=0.02,rounding_size=0.12",
+                             fc=colour, ec=COLORS["edge"], lw=lw(0.5))  # fmt: skip
+        ax.add_patch(box)
+        out.boxes.append(box)
+        lessons = ", ".join(lesson_number(s) for s in stage.lessons)
+        out.texts.append(ax.text(0.3, k - 0.08, stage.name, fontsize=fs(1.0), fontweight="bold",
+                                 va="center"))  # fmt: skip
+        out.texts.append(ax.text(0.3, k + 0.2, stage.what, fontsize=fs(0.8), va="center"))
+        out.texts.append(ax.text(9.7, k, f"lessons {lessons}" if len(stage.lessons) > 1
+                                 else f"lesson {lessons}", fontsize=fs(0.8), ha="right",
+                                 va="center", style="italic"))  # fmt: skip
+        if k:
+            arrow = FancyArrowPatch((1.0, k - 1 + 0.34), (1.0, k - 0.34), arrowstyle="-|>",
+                                    mutation_scale=fs(1.0), color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
+            ax.add_patch(arrow)
+            out.arrows.append(arrow)
+    handles = [Patch(fc=COLORS["fill"], ec=COLORS["edge"], label="this course: rasterisation"),
+               Patch(fc=COLORS["rejected"], ec=COLORS["edge"], label="around it")]  # fmt: skip
+    out.legend = ax.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 1.0),
+                           ncols=2, frameon=False, fontsize=fs(0.8))  # fmt: skip
+    return out

@@ -1,0 +1,142 @@
+"""Ek's eye–screen–segment picture: equal steps on the screen are unequal steps in the world.
+
+Ek (*Triangles and Perspective Correct Interpolation*, §2, Figures 6 and 7) projects a 2-D world
+onto a 1-D screen: the eye at the origin, the screen the line z = 1 (a point (x, z) lands at
+s = x/z), a segment from (x0, z0) to (x1, z1). Stepping evenly along the screen (q = 0, 1/N,
+..., 1) and following each eye ray to the segment gives world points that are *not* evenly
+spaced: the far half of the segment is squeezed into less of the screen.
+
+Where a ray meets the segment is the perspective-correct weight of the engine
+(:func:`teachraster.core.interpolation.perspective_weights`, with screen weights (1 − q, q)
+and depths (z0, z1)); the picture only draws it, with the eye ray through the screen point, so
+a student sees that ray, screen point and world point line up.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..core.interpolation import perspective_weights
+from .common import fs, lw, ms
+from .style import COLORS, OKABE_ITO
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A world segment (x0, z0) -> (x1, z1) seen from the eye at the origin, screen at z = 1."""
+
+    x0: float = -1.0
+    z0: float = 1.5
+    x1: float = 2.0
+    z1: float = 6.0
+
+    def __post_init__(self) -> None:
+        for name in ("z0", "z1"):
+            if not float(getattr(self, name)) > 0.0:
+                raise ValueError(
+                    f"{name} must be in front of the eye (> 0), got {getattr(self, name)!r}"
+                )
+
+    def screen(self, q) -> np.ndarray:
+        """Screen position s of screen parameter q: s = s0 + q (s1 − s0), s_k = x_k / z_k."""
+        s0, s1 = self.x0 / self.z0, self.x1 / self.z1
+        return s0 + np.asarray(q, dtype=np.float64) * (s1 - s0)
+
+    def world_parameter(self, q) -> np.ndarray:
+        """World parameter t seen at screen parameter q (the engine's perspective weight)."""
+        q = np.atleast_1d(np.asarray(q, dtype=np.float64))
+        lam = np.column_stack([1.0 - q, q, np.zeros_like(q)])
+        return perspective_weights(lam, np.array([self.z0, self.z1, 1.0]))[:, 1]
+
+    def point(self, t) -> np.ndarray:
+        """(x, z) of world parameter t on the segment, shape (n, 2)."""
+        t = np.atleast_1d(np.asarray(t, dtype=np.float64))[:, None]
+        return np.array([self.x0, self.z0]) * (1 - t) + np.array([self.x1, self.z1]) * t
+
+
+@dataclass
+class ProjectionArtists:
+    """Artists of :func:`plot_projection`; ``update(q)`` moves the highlighted ray."""
+
+    segment: Segment
+    ray: object = None
+    screen_point: object = None
+    world_point: object = None
+    affine_point: object = None
+    label: object = None
+    curve_point: object = None
+    steps: list = field(default_factory=list)
+
+    def update(self, q: float) -> float:
+        """Highlight screen parameter ``q``; returns its world parameter t."""
+        q = float(q)
+        t = float(self.segment.world_parameter(q)[0])
+        (x, z) = self.segment.point(t)[0]
+        s = float(self.segment.screen(q))
+        far = 1.15 * max(self.segment.z0, self.segment.z1)
+        self.ray.set_data([0.0, s * far], [0.0, far])
+        self.screen_point.set_data([s], [1.0])
+        self.world_point.set_data([x], [z])
+        self.affine_point.set_data(*self.segment.point(q).T)
+        self.label.set_text(f"q = {q:.2f} on the screen  →  t = {t:.2f} on the segment")
+        if self.curve_point is not None:
+            self.curve_point.set_data([q], [t])
+        return t
+
+
+def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: float = 0.5,
+                    curve_ax=None) -> ProjectionArtists:  # fmt: skip
+    """Draw eye, screen, segment and the rays of ``n_steps`` equal screen steps.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+        The picture: x to the right, depth z upwards, the eye at the origin.
+    segment : Segment
+    n_steps : int
+        Equal steps of q on the screen; their rays mark unequal steps on the segment.
+    q : float
+        The highlighted screen parameter (``update(q)`` moves it).
+    curve_ax : matplotlib Axes, optional
+        Also plot t against q there (with t = q dashed), the highlighted point on it.
+
+    Returns
+    -------
+    ProjectionArtists
+    """
+    blue, orange = OKABE_ITO["blue"], OKABE_ITO["orange"]
+    qs = np.linspace(0.0, 1.0, int(n_steps) + 1)
+    ts = segment.world_parameter(qs)
+    pts, ss = segment.point(ts), segment.screen(qs)
+    far = 1.15 * max(segment.z0, segment.z1)
+    out = ProjectionArtists(segment)
+    for x, z in pts:
+        out.steps += ax.plot([0, x], [0, z], color=COLORS["grid"], lw=lw(0.3), zorder=1)
+    lo = min(ss.min(), segment.x0, segment.x1) - 0.25
+    hi = max(ss.max(), segment.x0, segment.x1) + 0.25
+    ax.plot([lo, hi], [1, 1], color=COLORS["edge"], lw=lw(0.6), label="screen (z = 1)")
+    ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6),
+            label=f"{n_steps} equal steps of q")  # fmt: skip
+    ax.plot(*pts.T, "-", color=COLORS["edge"], lw=lw(1.0), label="segment in the world")
+    ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), label="where those rays hit it")
+    ax.plot([0], [0], "^", color=COLORS["edge"], ms=ms(1.3), label="eye")
+    (out.ray,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8), label="the ray at q")
+    (out.screen_point,) = ax.plot([], [], "s", color=COLORS["current"], ms=ms(1.0))
+    (out.world_point,) = ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.3))
+    (out.affine_point,) = ax.plot([], [], "o", mfc="none", mec=COLORS["current"], mew=lw(0.5),
+                                  ms=ms(1.3), label="affine guess: t = q")  # fmt: skip
+    out.label = ax.set_title(" ", fontsize=fs(0.9))  # text set by update(), size fixed here
+    ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")
+    ax.legend(loc="lower right", fontsize=fs(0.7), framealpha=0.9)
+    if curve_ax is not None:
+        qq = np.linspace(0.0, 1.0, 200)
+        curve_ax.plot(qq, segment.world_parameter(qq), color=COLORS["edge"], lw=lw(0.8),
+                      label="t(q), perspective")  # fmt: skip
+        curve_ax.plot(qq, qq, "--", color=COLORS["grid"], lw=lw(0.6), label="t = q (affine)")
+        (out.curve_point,) = curve_ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.2))
+        curve_ax.set(xlabel="q (screen)", ylabel="t (world)", xlim=(0, 1), ylim=(0, 1))
+        curve_ax.legend(loc="upper left", fontsize=fs(0.7))
+    out.update(q)
+    return out

@@ -1,0 +1,310 @@
+"""Lessons 00-05b (issue 18): what their text says is what their cells compute.
+
+Every number or claim quoted in the markdown of these lessons is either printed by a cell (and
+the text refers to it) or checked here against the variables the executed lesson leaves
+behind (``lesson()`` of ``tests/test_lessons.py``, cached, so each lesson runs once per
+session). The static checks read the notebooks without running them: predict-first questions,
+links, and no cell that silently moves a widget the student is using. The new pictures
+(pipeline overview, eye-screen-segment, z-buffer steps) are tested on their own data.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from fractions import Fraction
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from test_lessons import lesson  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.plotting.pipeline_overview import PIPELINE_STAGES, plot_pipeline  # noqa: E402
+from teachraster.plotting.projection import Segment, plot_projection  # noqa: E402
+from teachraster.plotting.style import COLUMN_WIDTH_PX  # noqa: E402
+from teachraster.plotting.zbuffer_steps import (  # noqa: E402
+    ZBufferStepView,
+    buffer_after,
+    fragment_classes,
+    fragment_counts,
+)
+
+NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
+MINE = [
+    "00_tour",
+    "01_span_tables",
+    "02_half_planes",
+    "03_barycentric_and_plane_equations",
+    "04_perspective_correct_interpolation",
+    "05a_zbuffer",
+    "05b_depth_precision",
+]
+
+
+def _cells(name: str, kind: str) -> list[str]:
+    nb = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())
+    return ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == kind]
+
+
+# -- static: questions, widgets, links --------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", MINE)
+def test_each_lesson_asks_two_predict_first_questions(name):
+    asked = [c for c in _cells(name, "code") if "Predict(" in c]
+    assert len(asked) >= 2, f"{name}: {len(asked)} predict-first question(s)"
+
+
+@pytest.mark.parametrize("name", MINE)
+def test_no_cell_moves_a_widget_the_student_is_using(name):
+    """Cells driven from code use a second, hidden widget (``probe``), never the shown one."""
+    shown = re.compile(r"\b(player|editor|explorer|viewer|stepper)\.\w+\.value\s*=")
+    for cell in _cells(name, "code"):
+        assert not shown.search(cell), f"{name}: {cell[:80]!r}"
+
+
+@pytest.mark.parametrize("name", MINE)
+def test_notebooks_are_committed_without_outputs(name):
+    nb = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())
+    for cell in nb["cells"]:
+        if cell["cell_type"] == "code":
+            assert cell["outputs"] == [] and cell["execution_count"] is None
+
+
+def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
+    text = "\n".join(_cells("00_tour", "markdown"))
+    for n in range(1, 13):
+        assert re.search(rf"\]\({n:02d}[ab]?_\w+\.ipynb\)", text), f"lesson {n:02d} not linked"
+    for stem in ("01_coverage", "04_depth_and_clipping", "05_depth_precision", "08_tiles"):
+        assert f"(exercises/{stem}.ipynb)" in text
+    for stage in PIPELINE_STAGES:
+        line = next(ln for ln in text.splitlines() if ln.startswith(f"- **{stage.name}**"))
+        for stem in stage.lessons:
+            assert f"({stem}.ipynb)" in line, (stage.name, stem)
+    for stem in {s for stage in PIPELINE_STAGES for s in stage.lessons}:
+        assert stem[:2] in ("11", "12") or (NOTEBOOKS / f"{stem}.ipynb").exists(), stem
+
+
+# -- executed: the quoted numbers ---------------------------------------------------------------
+
+
+def test_00_facing_and_the_two_methods():
+    ns = lesson("00_tour")
+    assert not ns.tri.front_facing  # "clockwise on screen": back-facing in OpenGL's convention
+    assert ns.same  # the predict answer "none"
+    order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
+    assert list(order) == [0, 1, 2]  # "given top to bottom": names by height = input order + 1
+
+
+def test_01_float_crossing_is_no_tie_rule_and_stepping():
+    ns = lesson("01_span_tables")
+    heights = np.diff(ns.xy[ns.order][:, 1])
+    assert sorted([*heights, heights.sum()]) == [8, 8, 16]  # "edge heights 16, 8 and 8"
+    assert len(ns.wrong) > 0
+    v1, v2, v3 = (tuple(map(Fraction, p)) for p in ns.big[np.lexsort((ns.big[:, 0], ns.big[:, 1]))])
+    for i, j in ns.wrong:
+        x_right = ns.big_ends[i][1]
+        a, b = (v1, v2) if i + 0.5 < v2[1] else (v2, v3)
+        exact = [(Fraction(i) + Fraction(1, 2) - p[1]) / (q[1] - p[1]) * (q[0] - p[0]) + p[0]
+                 for p, q in [(v1, v3), (a, b)]]  # fmt: skip
+        assert Fraction(j) + Fraction(1, 2) in exact  # the centre lies exactly on an edge
+        assert x_right != j + 0.5  # and the float crossing missed it
+    assert np.array_equal(ns.stepped, ns.fill.coverage)
+    assert 0 < ns.drift < 1e-12  # "a hair"
+
+
+def test_02_bailout_prediction_is_the_printed_share():
+    ns = lesson("02_half_planes")
+    saved = 100 * (1 - ns.with_bailout / ns.without)
+    assert abs(saved - round(100 * (1 - ns.runs.sum() / (3 * ns.box.size)))) < 1
+    assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
+
+
+def test_03_quoted_drift_and_the_perspective_caveat():
+    ns = lesson("03_barycentric_and_plane_equations")
+    assert 0.01 < ns.err["stepped, float32"][-1] < 0.1  # "a few hundredths"
+    assert 1e-11 < ns.err["stepped, float64"][-1] < 1e-9  # "about 10^-10"
+    assert ns.misfits["u"] > 0.01 and ns.misfits["u/w"] < 1e-12  # f/w is the plane, f is not
+
+
+def test_04_ritschel_equals_ek_and_the_midpoint_answer():
+    ns = lesson("04_perspective_correct_interpolation")
+    assert np.allclose(ns.t_ritschel, ns.t, atol=1e-15)
+    assert (ns.z0, ns.z1) == (1.0, 4.0) and np.isclose(ns.t[5], 0.2)  # the predicted t = 0.2
+    seg = Segment(ns.x0, ns.z0, ns.x1, ns.z1)
+    assert np.allclose(seg.world_parameter(ns.q), ns.t_ray, atol=1e-15)
+    assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
+
+
+def test_05a_cases_and_the_cube_steps():
+    ns = lesson("05a_zbuffer")
+    assert len(ns.ids) == 4  # "the four cases"
+    assert len(ns.cube_steps) == 12
+    assert ns.passed_last == 0 < ns.failed_last  # the predicted answer "none"
+    assert sum(p + f for p, f in ns.cube_steps) == len(ns.cube.trace.fragment_triangle)
+
+
+def test_05b_quoted_distances_and_resolutions():
+    ns = lesson("05b_depth_precision")
+    assert ns.z_back_error < 1e-12  # the notes' 1/z = (n + f - z') / (f n) undoes z'
+    f, dists = ns.fights, list(ns.dists)
+    for fmt in ("float32", "unorm24"):  # "start to fight at z = 100"
+        assert not f[fmt][: dists.index(100)].any() and f[fmt][dists.index(100)] > 0
+    assert not f["unorm16"][: dists.index(10)].any() and f["unorm16"][dists.index(10)] > 0
+    assert ns.first_fight_16 == 10  # the predicted answer matches the renders
+    assert ns.predicted["unorm24"][-1] > 10 * ns.delta  # "more than ten times δ" at z = 300
+    assert round(float(ns.predicted["unorm16"][0]), 5) == 1.5e-4  # "1.5 × 10⁻⁴" at z = 1
+
+
+# -- the lessons' widgets, driven here (the lessons leave them to the student) ----------------
+
+
+def test_01_player_shows_the_trace_caption_and_coverage():
+    from teachraster.widgets import FillPlayer
+
+    ns = lesson("01_span_tables")
+    player = FillPlayer(ns.tri, ns.W, ns.H, method="span", backend="image")
+    step = ns.step_of_row[13]
+    player.slider.value = step
+    assert player.caption_text == ns.trace.caption(step)
+    shown = np.asarray(player.view.coverage.image.get_array())
+    assert np.array_equal(shown, ns.trace.coverage_at(step))
+    player.close()
+
+
+def test_02_player_and_editor():
+    from teachraster.widgets import FillPlayer, TriangleEditor
+
+    ns = lesson("02_half_planes")
+    box = ns.box
+    k = ns.trace.first_work_step + 5 * box.shape[1] + 6  # the 7th pixel of the box's 6th row
+    player = FillPlayer(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
+    player.slider.value = k
+    assert player.caption_text == ns.trace.caption(k)
+    assert (ns.trace.step(k).row, ns.trace.step(k).col) == (box.row0 + 5, box.col0 + 6)
+    player.close()
+    editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
+    editor.x[1].value = 1.0  # v1 dragged across the edge v2 -> v0: the winding flips
+    moved = tr.Triangle(editor.xy)
+    assert moved.front_facing and not ns.tri.front_facing
+    assert np.array_equal(editor.fill.coverage, tr.rasterize(moved, ns.W, ns.H).coverage)
+    editor.close()
+
+
+def test_03_plane_explorer_setup_follows_a_value():
+    from teachraster.widgets.plane_explorer import PlaneExplorer, plane_system
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    explorer = PlaneExplorer(ns.xy, ns.f, ns.W, ns.H, backend="image")
+    explorer.f[2].value = 2.0
+    moved = plane_system(explorer.xy, explorer.fvals)
+    assert np.allclose(moved["g"][:2], moved["g_recentred"])
+    explorer.close()
+
+
+def test_04_player_toggle_and_tilt():
+    from teachraster.widgets import FillPlayer, TexturedPlaneViewer
+
+    ns = lesson("04_perspective_correct_interpolation")
+    player = FillPlayer(ns.tri, ns.W, ns.H, method="halfplane", step=-1, backend="image")
+    player.interpolation.value = "affine"
+    assert np.array_equal(player.fill.attrs["u"], ns.affine.attrs["u"], equal_nan=True)
+    player.interpolation.value = "perspective"
+    assert np.array_equal(player.fill.attrs["u"], ns.persp.attrs["u"], equal_nan=True)
+    player.close()
+    viewer = TexturedPlaneViewer(tilt=60, backend="image")
+    maxima = {}
+    for tilt in (0, 30, 75):  # "at 0° the two renders agree exactly; the further, the larger"
+        viewer.tilt.value = tilt
+        maxima[tilt] = viewer.maximum
+    assert maxima[0] < 1e-9 and maxima[0] < maxima[30] < maxima[75]
+    viewer.close()
+
+
+def test_05b_explorer_near_plane_and_reverse_z():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ns = lesson("05b_depth_precision")
+    ex = DepthPrecisionExplorer("unorm16", near=ns.n_, far=ns.f_, delta=ns.delta, backend="image")
+    fights = {}
+    for fmt, near, reverse in [("unorm16", 0.1, False), ("unorm16", 1.0, False),
+                               ("float32", 0.1, False), ("float32", 0.1, True)]:  # fmt: skip
+        ex.format.value, ex.near.value, ex.reverse.value = fmt, near, reverse
+        fights[(fmt, near, reverse)] = ex.fight_from
+    assert fights[("unorm16", 1.0, False)] > fights[("unorm16", 0.1, False)]  # the classic fix
+    assert fights[("float32", 0.1, False)] is not None and fights[("float32", 0.1, True)] is None
+    ex.close()
+
+
+# -- the new pictures -------------------------------------------------------------------------
+
+
+def test_pipeline_overview_one_box_per_stage_and_fits_the_column():
+    with tr_style():
+        fig, ax = plt.subplots(figsize=(9, 7.5))
+        art = plot_pipeline(ax)
+    assert len(art.boxes) == len(PIPELINE_STAGES) and len(art.arrows) == len(PIPELINE_STAGES) - 1
+    assert fig.get_figwidth() * fig.dpi <= COLUMN_WIDTH_PX
+    plt.close(fig)
+
+
+def tr_style():
+    from teachraster.plotting import use_style
+
+    return use_style("classroom")
+
+
+def test_projection_world_points_lie_on_the_eye_rays():
+    seg = Segment(-1.0, 1.5, 2.0, 6.0)
+    q = np.linspace(0, 1, 9)
+    t = seg.world_parameter(q)
+    x, z = seg.point(t).T
+    assert np.allclose(x / z, seg.screen(q))  # the world point projects to the screen point
+    assert t[0] == 0 and t[-1] == 1 and (np.diff(t) > 0).all()
+    fig, (ax, cax) = plt.subplots(2, 1)
+    art = plot_projection(ax, seg, q=0.5, curve_ax=cax)
+    assert art.update(0.25) == pytest.approx(float(seg.world_parameter(0.25)[0]))
+    plt.close(fig)
+    with pytest.raises(ValueError, match="z0"):
+        Segment(0.0, -1.0, 1.0, 2.0)
+
+
+def test_zbuffer_replay_ends_in_the_frame_and_counts_add_up():
+    frame = tr.render(tr.get_scene("cube"), None, 64, 48, trace=True)
+    depth, tri = buffer_after(frame, 11)
+    assert np.array_equal(np.isnan(depth), ~frame.coverage)
+    assert np.array_equal(depth[frame.coverage], frame.depth[frame.coverage])
+    assert np.array_equal(tri, np.where(frame.coverage, frame.triangle_id, -1))
+    for k in range(12):
+        classes = fragment_classes(frame, k)
+        assert fragment_counts(frame, k) == ((classes == 2).sum(), (classes == 3).sum())
+    fig, (a, b) = plt.subplots(1, 2)
+    view = ZBufferStepView(frame, a, b)
+    assert view.n_triangles == 12 and view.show(3) == fragment_counts(frame, 3)
+    plt.close(fig)
+    with pytest.raises(ValueError, match="trace=True"):
+        buffer_after(tr.render(tr.get_scene("cube"), None, 8, 8), 0)
+
+
+def test_widgets_drive_from_code():
+    from teachraster.widgets import ProjectionExplorer, ZBufferStepper
+
+    ex = ProjectionExplorer(backend="image")
+    ex.q.value = 1.0
+    assert ex.t == pytest.approx(1.0)
+    ex.close()
+    frame = tr.render(tr.get_scene("cube"), None, 64, 48, trace=True)
+    st = ZBufferStepper(frame, backend="image")
+    st.previous.click()
+    assert st.triangle.value == 0
+    st.triangle.value = 11
+    st.next.click()
+    assert st.triangle.value == 11 and st.counts == fragment_counts(frame, 11)
+    assert st.fig.get_figwidth() * st.fig.dpi <= COLUMN_WIDTH_PX
+    st.close()

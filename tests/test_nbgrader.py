@@ -1,0 +1,188 @@
+"""nbgrader grades the exercises for real (issue 17): the whole pipeline, in a temporary course.
+
+``teachraster nbgrader DIR`` lays out the course; then nbgrader's own commands run there:
+``generate_assignment`` of every exercise notebook, ``autograde`` of three submissions per
+assignment — the teacher version (full marks), the release unchanged (0) and the release with
+its first exercise solved (that exercise's points) —, ``generate_feedback`` and ``export``,
+whose ``grades.csv`` is checked. Every ``notebooks/exercises/*.ipynb`` takes part, whatever its
+exercises: the solved exercise and its points are found from the nbgrader metadata.
+
+nbgrader is a test dependency (``teachraster[test]``). Where it is missing the round trip skips,
+saying so, unless TEACHRASTER_REQUIRE_NBGRADER is set (CI sets it): then it fails.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from teachraster.cli import main
+from teachraster.exercises.student_version import student_text
+
+ROOT = Path(__file__).resolve().parent.parent
+EXERCISES = sorted((ROOT / "notebooks" / "exercises").glob("*.ipynb"))
+#: nbgrader's command, from this environment first (the venv's bin may not be on PATH).
+BIN = str(Path(sys.executable).parent)
+NBGRADER = shutil.which("nbgrader", path=os.pathsep.join([BIN, os.environ.get("PATH", "")]))
+REQUIRED = bool(os.environ.get("TEACHRASTER_REQUIRE_NBGRADER"))
+STUDENTS = ("teacher", "untouched", "one_solved")
+
+
+def _nbgrader(root: Path, *args: str) -> str:
+    if NBGRADER is None:
+        if REQUIRED:
+            raise RuntimeError("TEACHRASTER_REQUIRE_NBGRADER is set but nbgrader is missing")
+        pytest.skip("nbgrader is not installed (pip install 'teachraster[test]')")
+    env = {**os.environ, "PATH": os.pathsep.join([BIN, os.environ.get("PATH", "")])}
+    env["MPLBACKEND"] = "Agg"
+    env["JUPYTER_CONFIG_DIR"] = str(root / ".jupyter")  # no user or site nbgrader settings
+    run = subprocess.run(
+        [NBGRADER, *args], cwd=root, env=env, capture_output=True, text=True, timeout=600
+    )
+    assert run.returncode == 0, f"nbgrader {' '.join(args)}:\n{run.stdout}\n{run.stderr[-4000:]}"
+    return run.stdout + run.stderr
+
+
+def _text(cell: dict) -> str:
+    return "".join(cell["source"])
+
+
+def _grading(cell: dict) -> dict:
+    return cell.get("metadata", {}).get("nbgrader", {})
+
+
+def first_exercise(nb: dict) -> tuple[int, int]:
+    """(index of the first solution cell, points of the graded cells checking it).
+
+    Its checks are the graded cells after it, up to the next solution cell.
+    """
+    cells = nb["cells"]
+    first = next(i for i, c in enumerate(cells) if _grading(c).get("solution"))
+    points = 0
+    for cell in cells[first + 1 :]:
+        if _grading(cell).get("solution"):
+            break
+        if _grading(cell).get("grade"):
+            points += _grading(cell)["points"]
+    return first, points
+
+
+def total_points(nb: dict) -> int:
+    return sum(_grading(c)["points"] for c in nb["cells"] if _grading(c).get("grade"))
+
+
+def _submit(root: Path, student: str, assignment: str, name: str, nb: dict) -> None:
+    folder = root / "submitted" / student / assignment
+    folder.mkdir(parents=True)
+    (folder / name).write_text(json.dumps(nb))
+
+
+@pytest.fixture(scope="module")
+def course(tmp_path_factory) -> Path:
+    """A course directory after the whole nbgrader round trip."""
+    root = tmp_path_factory.mktemp("nbgrader") / "course"
+    assert main(["nbgrader", str(root)]) == 0
+    _nbgrader(root, "generate_assignment", "*")  # every assignment of source/
+    for path in EXERCISES:
+        teacher = json.loads(path.read_text())
+        release = json.loads((root / "release" / path.stem / path.name).read_text())
+        solved = json.loads(json.dumps(release))
+        first, _ = first_exercise(teacher)
+        solved["cells"][first]["source"] = teacher["cells"][first]["source"]
+        for student, nb in zip(STUDENTS, (teacher, release, solved)):
+            _submit(root, student, path.stem, path.name, nb)
+    _nbgrader(root, "autograde", "*")
+    _nbgrader(root, "generate_feedback", "*")
+    _nbgrader(root, "export")
+    return root
+
+
+def test_every_exercise_notebook_is_released_as_its_student_version(course):
+    for path in EXERCISES:
+        release = json.loads((course / "release" / path.stem / path.name).read_text())
+        ours = json.loads(student_text(path))
+        assert [_text(c) for c in release["cells"]] == [_text(c) for c in ours["cells"]]
+        assert "BEGIN SOLUTION" not in json.dumps(release)
+        assert (course / "release" / path.stem / "CONVENTIONS.md").is_file()
+
+
+def test_grades_csv_gives_full_marks_zero_and_the_solved_exercises_points(course):
+    with open(course / "grades.csv", newline="") as f:
+        rows = {(r["assignment"], r["student_id"]): r for r in csv.DictReader(f)}
+    for path in EXERCISES:
+        teacher = json.loads(path.read_text())
+        full, (_, one) = total_points(teacher), first_exercise(teacher)
+        assert full >= one > 0, path.name
+        expected = {"teacher": full, "untouched": 0, "one_solved": one}
+        for student, score in expected.items():
+            row = rows[(path.stem, student)]
+            assert float(row["max_score"]) == full, (path.name, row)
+            assert float(row["score"]) == score, (path.name, student, row)
+
+
+def test_feedback_carries_the_checkers_explanation(course):
+    for path in EXERCISES:
+        name = path.with_suffix(".html").name
+        untouched = (course / "feedback" / "untouched" / path.stem / name).read_text()
+        teacher = (course / "feedback" / "teacher" / path.stem / name).read_text()
+        assert "not implemented yet" in untouched
+        assert "cases pass" in teacher and "not implemented yet" not in teacher
+        graded = sum(bool(_grading(c).get("grade")) for c in json.loads(path.read_text())["cells"])
+        for student, failures in (("teacher", 0), ("untouched", graded)):
+            nb = json.loads((course / "autograded" / student / path.stem / path.name).read_text())
+            errors = [o for c in nb["cells"] for o in c.get("outputs", [])]
+            errors = [o for o in errors if o["output_type"] == "error"]
+            assert [e["ename"] for e in errors] == ["AssertionError"] * failures, path.name
+            assert all("not implemented yet" in e["evalue"] for e in errors)
+
+
+# -- the grading convention, read from the notebooks (no nbgrader needed) ----------------------
+LOCKED = {"grade": False, "locked": True, "schema_version": 3, "solution": False, "task": False}
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=[p.name for p in EXERCISES])
+def test_teacher_notebook_is_an_nbgrader_source(path):
+    """Solution cells, graded check cells worth points right after them, the rest locked."""
+    cells = json.loads(path.read_text())["cells"]
+    ids = [_grading(c).get("grade_id") for c in cells]
+    assert all(ids) and len(set(ids)) == len(ids), ids
+    solutions = [i for i, c in enumerate(cells) if _grading(c).get("solution")]
+    assert solutions
+    checked = set()
+    for i in solutions:
+        fn = ids[i].removesuffix("_solution")
+        assert ids[i] == f"{fn}_solution" and "### BEGIN SOLUTION" in _text(cells[i])
+        assert _grading(cells[i]) == {
+            "grade": False, "grade_id": ids[i], "locked": False, "schema_version": 3,
+            "solution": True, "task": False,
+        }  # fmt: skip
+        check = cells[i + 1]
+        assert _text(check) == (
+            f'report = ex.check("{fn}", {fn})\nshow(report)\nreport.assert_passed()'
+        )
+        meta = _grading(check)
+        assert meta["grade"] and meta["locked"] and not meta["solution"] and meta["points"] > 0
+        assert meta["grade_id"] == f"{fn}_check"
+        checked |= {i, i + 1}
+    for i, cell in enumerate(cells):
+        if i not in checked:
+            assert {k: v for k, v in _grading(cell).items() if k != "grade_id"} == LOCKED, i
+    assert "nbgrader" not in "".join(_text(c) for c in cells if c["cell_type"] == "code")
+
+
+@pytest.mark.parametrize("path", EXERCISES, ids=[p.name for p in EXERCISES])
+def test_stubs_state_the_task_in_words_not_the_formula_to_type(path):
+    """The markdown right above a solution states the task and the rule in words: no
+    displayed formula (``$$``) for the student to copy into the stub (issue 20)."""
+    cells = json.loads(path.read_text())["cells"]
+    for i, cell in enumerate(cells):
+        if _grading(cell).get("solution"):
+            task = next(c for c in reversed(cells[:i]) if c["cell_type"] == "markdown")
+            assert "$$" not in _text(task), (path.name, _text(task)[:200])
