@@ -11,7 +11,9 @@ folder (lowest first: a sub-package imports only from those before it, which
 - :mod:`.texturing`: texels, mipmaps, filters, quad derivatives (09);
 - :mod:`.antialiasing`: the multisampled render (08);
 - :mod:`.rendering`: the stage functions, ``render`` of triangles and of scenes, the built-in
-  scenes, the painter's algorithm (05a).
+  scenes, the painter's algorithm (05a);
+- :mod:`.debugging`: a traced frame's pixel history and debug views, behind
+  ``frame.history(row, col)`` and ``frame.overlay(kind)`` (11).
 
 Every module keeps its old flat path as well (``teachraster.pipeline.texture`` is
 ``teachraster.pipeline.texturing.texture``), so code written before the grouping still imports.
