@@ -131,9 +131,9 @@ class FrameInspector(Holdable):
         self.table = widgets.HTML()
         self._render()
         with style_context(style):
-            self.fig = new_figure((4.8, 4.0), self.backend)
+            self.fig = new_figure((4.6, 3.9), self.backend)
             self.ax = self.fig.add_axes((0.1, 0.06, 0.72, 0.8))
-            self.hist_fig = new_figure((4.8, 4.0), self.backend)
+            self.hist_fig = new_figure((4.6, 3.9), self.backend)
             self.hist_ax = self.hist_fig.add_axes((0.16, 0.16, 0.8, 0.74))
             self._draw_frame()
             self._draw_history()
