@@ -158,15 +158,28 @@ def _line_units(ends: np.ndarray, subpixel_bits):
     return [tuple(int(v) for v in u) for u in to_units(ends, subpixel_bits)]
 
 
-def wide_line_triangles(p0, p1, line_width: float) -> np.ndarray:
-    """(2, 3, 2): the rectangle of ``line_width`` around p0 → p1 as two triangles sharing
-    the diagonal p0 + n → p1 - n (n the half-width normal); empty for a zero-length line."""
+def wide_line_triangles(p0, p1, line_width: float, shape: str = "rectangle") -> np.ndarray:
+    """(2, 3, 2): a wide line as two triangles sharing the diagonal p0 + n → p1 - n.
+
+    ``shape="rectangle"`` (CONVENTIONS, what ``rasterize_line`` fills): n is the half-width
+    normal of the segment. ``shape="gl"``: GL's aliased wide line (GL 4.6 §14.5.2.1), the
+    parallelogram offset by half the width along the *minor* axis only (n = (0, w/2) for an
+    x-major line), which is what llvmpipe fills. Empty for a zero-length line.
+    """
+    check_choice("shape", shape, ("rectangle", "gl"))
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
     d = p1 - p0
     length = float(np.hypot(*d))
     if length == 0:
         return np.zeros((0, 3, 2))
-    n = np.array([-d[1], d[0]]) * (line_width / 2 / length)
+    if shape == "gl":
+        n = (
+            np.array([0.0, line_width / 2])
+            if abs(d[0]) >= abs(d[1])
+            else np.array([line_width / 2, 0.0])
+        )
+    else:
+        n = np.array([-d[1], d[0]]) * (line_width / 2 / length)
     c = [p0 + n, p1 + n, p1 - n, p0 - n]
     return np.array([[c[0], c[1], c[2]], [c[0], c[2], c[3]]])
 
