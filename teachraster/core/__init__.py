@@ -14,11 +14,13 @@ One module per idea of the first four lessons, in the order the notes teach them
   per sample and where a multisampled pixel's attributes are evaluated (antialiasing);
 - :mod:`.lines`, :mod:`.line_rules`, :mod:`.line_trace`: line segments (the diamond-exit
   rule, Bresenham, DDA, wide lines as two triangles) and their steps;
+- :mod:`.blend_factors`: GL's blend factors and equations, the sRGB curve;
 - :mod:`.trace`: the recorded steps and their captions; :mod:`.fill`: ``rasterize`` itself.
 """
 
 from .barycentrics import barycentric
 from .bbox import BBox
+from .blend_factors import blend_equation, linear_to_srgb, srgb_to_linear
 from .edges import edge_function, is_top_left
 from .fill import Fill, rasterize
 from .half_planes import HalfPlaneTrace
@@ -54,8 +56,10 @@ __all__ = [
     "Triangle",
     "attribute_plane",
     "barycentric",
+    "blend_equation",
     "edge_function",
     "is_top_left",
+    "linear_to_srgb",
     "perspective_weights",
     "plane_equation",
     "rasterize",
@@ -64,4 +68,5 @@ __all__ = [
     "setup_matrix",
     "snap",
     "split_point",
+    "srgb_to_linear",
 ]

@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.validate import as_float, as_size, check_choice
-from .opengl import _context
+from .opengl import gl_context
 
 MODES = ("lines", "line_strip", "line_loop")
 
@@ -73,7 +73,7 @@ def gl_lines(points, width: int, height: int, *, mode: str = "lines", line_width
     pts = np.asarray(points, dtype=np.float64)
     if pts.ndim != 2 or pts.shape[1] != 2:
         raise ValueError(f"points must have shape (N, 2), got {pts.shape}")
-    ctx, _ = _context()
+    ctx, _ = gl_context()
     prog = ctx.program(vertex_shader=_VS, fragment_shader=_FS)
     prog["size"].value = (float(width), float(height))
     buf = ctx.buffer(pts.astype("f4").tobytes())
@@ -103,7 +103,7 @@ def gl_lines(points, width: int, height: int, *, mode: str = "lines", line_width
 
 def gl_version() -> str:
     """``GL_VERSION`` of the context (it names the Mesa release llvmpipe comes from)."""
-    ctx, _ = _context()
+    ctx, _ = gl_context()
     return str(ctx.info["GL_VERSION"])
 
 
