@@ -265,3 +265,29 @@ def test_bad_input_names_the_argument():
         tr.rasterize_line((0, 0), (1, 1), 4, 4, attrs={"u": [1, 2, 3]})
     with pytest.raises(TypeError, match="trace"):
         tr.rasterize_line((0, 0), (1, 1), 4, 4, trace="yes")
+
+
+# -- the line hard cases -------------------------------------------------------------------------
+from teachraster.study import hardcases as hc  # noqa: E402
+
+
+@pytest.mark.parametrize("name", hc.list_line_cases())
+def test_line_case_meets_expectation(name):
+    case = hc.get_line_case(name)
+    result = case.run()
+    case.check(result)
+    assert case.why and case.expect and "\n" not in case.why + case.expect
+
+
+@pytest.mark.parametrize("name", [n for n in hc.list_line_cases() if n != "line_very_long"])
+def test_line_case_matches_exact_reference(name):
+    case = hc.get_line_case(name)
+    width, height = case.size
+    for (p0, p1), fill in zip(case.segments, case.run().fills):
+        assert (fill.coverage == reference_line(p0, p1, width, height)).all()
+
+
+def test_line_case_registry():
+    assert "closed_polyline" in hc.LINE_CASES
+    with pytest.raises(ValueError, match="unknown line case"):
+        hc.get_line_case("nope")

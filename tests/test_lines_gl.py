@@ -143,3 +143,21 @@ def test_wide_lines_are_gls_parallelogram_in_llvmpipe(line_width):
         rect = tr.rasterize_line(p[0], p[1], W, H, line_width=line_width).coverage
         rect_differs += bool((gl != rect)[mask].any())
     assert rect_differs > 0
+
+
+@pytest.mark.parametrize(
+    "name", [n for n in __import__("teachraster.study.hardcases", fromlist=["x"]).LINE_CASES
+             if n != "line_very_long"],
+)  # fmt: skip
+def test_line_hard_cases_in_llvmpipe(name):
+    """Each segment of each line case: llvmpipe's pixels, up to the named deviations."""
+    from teachraster.study.hardcases import get_line_case
+
+    case = get_line_case(name)
+    width, height = case.size
+    for (p0, p1), fill in zip(case.segments, case.run().fills):
+        gl = gl_lines(np.array([p0, p1]), 64, 64)
+        assert not gl[height:].any() and not gl[:, width:].any()
+        ours = fill.coverage.astype(int)
+        for r, c in np.argwhere(gl[:height, :width] != ours):
+            assert llvmpipe_deviation(p0, p1, r, c), (name, p0.tolist(), p1.tolist(), r, c)
