@@ -104,15 +104,19 @@ def _sample_fragments(window, culled, offset, size, bits):
     return frags, shift
 
 
-def _colours(frags, shift, clipped, interpolation, msaa):
-    """RGBA at each fragment's pixel centre (MSAA: extrapolated where the centre is outside)."""
-    tri = frags.tri
-    x, y = frags.col + 0.5 + shift[0], frags.row + 0.5 + shift[1]
-    lam = frags.weights_at(tri, x, y)
+def _colours(frags, index, shift, clipped, interpolation, msaa):
+    """RGBA at fragments ``index``' pixel centres (MSAA: extrapolated where the centre is
+    outside); perspective-correct only for triangles whose w differ, as the attribute stage."""
+    tri = frags.tri[index]
+    x, y = frags.col[index] + 0.5 + shift[0], frags.row[index] + 0.5 + shift[1]
+    weights = frags.weights_at(tri, x, y)
+    if not msaa:
+        weights = convex_weights(weights)
+    w = clipped.clip[:, :, 3]
     if interpolation == "perspective":
-        weights = weights_per_row(lam, clipped.clip[tri, :, 3], extrapolate=msaa)
-    else:
-        weights = lam if msaa else convex_weights(lam)
+        unequal = ~np.all(w == w[:, :1], axis=1)[tri]
+        if unequal.any():
+            weights[unequal] = weights_per_row(weights[unequal], w[tri[unequal]], extrapolate=msaa)
     return blend_each(weights, clipped.attrs, index=tri, extrapolate=msaa)
 
 
@@ -125,10 +129,15 @@ def _layers(pixel, n_pixels, src, state, opaque):
     order = np.argsort(pixel, kind="stable")
     pix = pixel[order]
     start = np.r_[True, pix[1:] != pix[:-1]]
-    layer = np.arange(len(pix)) - np.maximum.accumulate(np.where(start, np.arange(len(pix)), 0))
+    index = np.arange(len(pix))
+    layer = index - np.maximum.accumulate(np.where(start, index, 0))
+    # Group by layer once (stable: pixels stay in order), then walk the groups in turn.
+    by_layer = np.argsort(layer, kind="stable")
+    frags = order[by_layer]
+    bounds = np.searchsorted(layer[by_layer], np.arange(int(layer.max(initial=-1)) + 2))
     blended = on_something = 0
-    for k in range(int(layer.max(initial=-1)) + 1):
-        here = order[layer == k]
+    for k in range(len(bounds) - 1):
+        here = frags[bounds[k] : bounds[k + 1]]
         p, colour = pixel[here], src[here]
         mix = ~opaque[here]
         if mix.any():
@@ -157,7 +166,8 @@ def blend_stage(clipped, window, culled, offsets, a, state: BlendState):
             if a.depth_format != "float64":
                 depth = quantize(depth, a.depth_format)
             passed = passed_with_writes(pixel, depth, writes[frags.tri])
-        src = _colours(frags, shift, clipped, a.interpolation, len(offsets) > 1)[passed]
+        src = _colours(frags, np.flatnonzero(passed), shift, clipped, a.interpolation,
+                       len(offsets) > 1)  # fmt: skip
         opaque = (src[:, 3] == 1.0) if replaces else np.zeros(len(src), dtype=bool)
         buffer, blended, on_something = _layers(pixel[passed], n_pixels, src, state, opaque)
         samples.append(buffer.reshape(a.height, a.width, 4))
