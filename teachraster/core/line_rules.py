@@ -81,23 +81,28 @@ def empty_steps() -> LineSteps:
     return LineSteps(True, none, none.astype(np.float64), none, none, none, none.astype(np.int8))
 
 
-def _candidates(a, b, unit, width, height):
-    """Steps (major indices) and candidate pixels near the line (the diamond rule)."""
+def _walk(a, b, unit, width, height):
+    """The major axis, the major-axis indices walked and the line's minor coordinate at each
+    one's centre (units, float64)."""
     d = (b[0] - a[0], b[1] - a[1])
     x_major = major_axis(d)
     axis = 0 if x_major else 1
     major = _major_range(a, b, unit, width if x_major else height, axis)
     centres = major * unit + unit // 2 if isinstance(unit, int) else major + 0.5
-    minor = _minor_at(a, d, centres, axis)
+    return x_major, major, _minor_at(a, d, centres, axis)
+
+
+def _candidates(x_major, major, minor, first_step, unit, limit):
+    """Candidate pixels near the line for steps ``first_step + k`` (the diamond rule): rows
+    (x-major) or columns floor(minor) - SPREAD .. + SPREAD, inside the image."""
     base = np.floor(minor / unit).astype(np.int64)
     offsets = np.arange(-SPREAD, SPREAD + 1)
     minor_idx = (base[:, None] + offsets).ravel()
-    step = np.repeat(np.arange(len(major)), len(offsets))
+    step = np.repeat(np.arange(first_step, first_step + len(major)), len(offsets))
     major_idx = np.repeat(major, len(offsets))
-    limit = height if x_major else width
     keep = (minor_idx >= 0) & (minor_idx < limit)
     rows, cols = (minor_idx, major_idx) if x_major else (major_idx, minor_idx)
-    return x_major, major, minor / unit, step[keep], rows[keep], cols[keep]
+    return step[keep], rows[keep], cols[keep]
 
 
 # -- the diamond-exit rule, exact ---------------------------------------------------------------
@@ -162,13 +167,31 @@ def diamond_states(a, b, unit, rows, cols) -> np.ndarray:
     return np.where(meets, np.where(ends, ENDS_INSIDE, LIT), MISSED).astype(np.int8)
 
 
-def diamond(a, b, unit, width, height) -> LineSteps:
-    """The diamond-exit rule (see the module docstring), exact on the snapped grid."""
+#: Major-axis steps decided together: bounds the temporaries of a very long line.
+CHUNK = 2**15
+
+
+def diamond(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
+    """The diamond-exit rule (see the module docstring), exact on the snapped grid.
+
+    ``keep_missed=False`` keeps only the candidates lit or ending inside (what the pixels
+    need; the trace keeps the rejected ones too, to draw them).
+    """
     if tuple(a) == tuple(b):
         return empty_steps()
-    x_major, major, minor, step, rows, cols = _candidates(a, b, unit, width, height)
-    state = diamond_states(a, b, unit, rows, cols)
-    return LineSteps(x_major, major, minor, step, rows, cols, state)
+    x_major, major, minor = _walk(a, b, unit, width, height)
+    limit = height if x_major else width
+    parts = []
+    for lo in range(0, len(major), CHUNK):
+        hi = lo + CHUNK
+        step, rows, cols = _candidates(x_major, major[lo:hi], minor[lo:hi], lo, unit, limit)
+        state = diamond_states(a, b, unit, rows, cols)
+        if not keep_missed:
+            keep = state != MISSED
+            step, rows, cols, state = step[keep], rows[keep], cols[keep], state[keep]
+        parts.append((step, rows, cols, state))
+    step, rows, cols, state = (np.concatenate(p) for p in zip(*parts, strict=True))
+    return LineSteps(x_major, major, minor / unit, step, rows, cols, state)
 
 
 # -- Bresenham and DDA --------------------------------------------------------------------------
@@ -187,7 +210,7 @@ def _centre_steps(a, b, unit, size, axis):
     return idx[(idx >= 0) & (idx < size)]
 
 
-def bresenham(a, b, unit, width, height) -> LineSteps:
+def bresenham(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
     """Bresenham's integer midpoint line between the pixels holding the end points.
 
     The end points are taken to the pixels they lie in (``floor``), then the classic loop
@@ -218,7 +241,7 @@ def bresenham(a, b, unit, width, height) -> LineSteps:
     )
 
 
-def dda(a, b, unit, width, height) -> LineSteps:
+def dda(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
     """The digital differential analyser: one step per major-axis pixel centre in [p0, p1),
     the minor coordinate advanced by adding the slope in float32 each step (as a naive
     shader or a 1980s loop would), the pixel taken where it lands (``floor``).

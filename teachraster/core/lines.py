@@ -102,7 +102,7 @@ def rasterize_line(
     else:
         units = _line_units(ends, subpixel_bits)
         unit = units_per_pixel(subpixel_bits)
-        steps = RULE_FUNCTIONS[rule](units[0], units[1], unit, width, height)
+        steps = RULE_FUNCTIONS[rule](units[0], units[1], unit, width, height, keep_missed=trace)
         coverage = np.zeros((height, width), bool)
         coverage[steps.rows[steps.lit], steps.cols[steps.lit]] = True
         line_trace = LineTrace(rule, _pair(snapped[0]), _pair(snapped[1]), (width, height), steps)

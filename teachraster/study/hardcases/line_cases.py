@@ -42,11 +42,12 @@ class LineCase:
     checker: Callable[[LineResult], None] = field(repr=False)
     rule: str = "diamond"
 
-    def run(self, rule: str | None = None) -> LineResult:
-        """Rasterise every segment (``rule`` default the case's) and count the hits."""
+    def run(self, rule: str | None = None, trace: bool = False) -> LineResult:
+        """Rasterise every segment (``rule`` default the case's) and count the hits; with
+        ``trace`` each fill keeps its steps (for the player)."""
         width, height = self.size
         fills = tuple(
-            rasterize_line(p0, p1, width, height, rule=rule or self.rule, trace=True)
+            rasterize_line(p0, p1, width, height, rule=rule or self.rule, trace=trace)
             for p0, p1 in self.segments
         )
         counts = sum((f.coverage.astype(np.int64) for f in fills), np.zeros((height, width), int))
