@@ -161,3 +161,30 @@ def test_line_hard_cases_in_llvmpipe(name):
         ours = fill.coverage.astype(int)
         for r, c in np.argwhere(gl[:height, :width] != ours):
             assert llvmpipe_deviation(p0, p1, r, c), (name, p0.tolist(), p1.tolist(), r, c)
+
+
+def test_line_attributes_llvmpipe_uses_the_major_axis_not_the_projection():
+    """GL's t projects the centre onto the segment (ours); llvmpipe's planes run along the
+    major axis only. With that t the 1/w rule agrees with llvmpipe to float32 accuracy."""
+    from teachraster.core.lines import line_parameter
+    from teachraster.study.opengl_lines import gl_line_attribute
+
+    rng = np.random.default_rng(21)
+    projection_differs = 0
+    for _ in range(20):
+        p = rng.integers(0, [W * 256, H * 256], (2, 2)) / 256
+        w = 2.0 ** rng.integers(0, 3, 2)
+        gl = gl_line_attribute(p[0], p[1], W, H, w=w, f=(0.0, 1.0))
+        ours = tr.rasterize_line(p[0], p[1], W, H, attrs={"f": [0.0, 1.0]}, w=w).attrs["f"]
+        rows, cols = np.nonzero(~np.isnan(gl) & ~np.isnan(ours))
+        d = p[1] - p[0]
+        axis = 0 if abs(d[0]) >= abs(d[1]) else 1
+        centre = (cols, rows)[axis] + 0.5
+        t_major = (centre - p[0, axis]) / d[axis]
+        inner = (t_major > 0) & (t_major < 1) & (line_parameter(p[0], p[1], rows, cols) > 0)
+        inner &= line_parameter(p[0], p[1], rows, cols) < 1
+        q = np.stack([(1 - t_major) / w[0], t_major / w[1]], axis=1)
+        major_value = q[:, 1] / q.sum(axis=1)
+        np.testing.assert_allclose(gl[rows, cols][inner], major_value[inner], atol=2e-6)
+        projection_differs += bool((np.abs(ours[rows, cols] - gl[rows, cols])[inner] > 1e-4).any())
+    assert projection_differs > 10

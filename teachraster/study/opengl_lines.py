@@ -21,6 +21,12 @@ GL's rule except at three kinds of place, which :func:`llvmpipe_deviation` names
     exactly on a pixel-centre row: llvmpipe drops the first pixel;
 (c) ``"half_way_centre"``: a pixel centre within 1/512 px of the half-way line of a line
     whose end llvmpipe moved (to the diamond it keeps), decided by the float32 parallelogram.
+
+Attributes along a line (:func:`gl_line_attribute`) are a fourth shortcut: GL's t is the
+projection of the pixel centre onto the segment, ``(p - pa)·(pb - pa) / |pb - pa|²``;
+llvmpipe sets up its planes along the major axis only, ``t = (x - xa) / (xb - xa)`` for an
+x-major line, so its values step evenly per column and ignore the minor offset (the 1/w rule
+on top is the same). ``tests/test_lines_gl.py`` checks both statements.
 """
 
 from __future__ import annotations
@@ -139,3 +145,50 @@ def llvmpipe_deviation(p0, p1, row: int, col: int) -> str | None:
     if abs(minor - np.round(minor)) <= 1 / 512:
         return "half_way_centre"
     return None
+
+
+_VS_ATTR = """#version 330
+uniform vec2 size;
+in vec4 in_pos;
+in float in_f;
+smooth out float f;
+void main() {
+    // in_pos = (x_win, y_win, 0, w): clip coordinates (x_ndc w, y_ndc w, 0, w), y negated
+    vec2 ndc = vec2(in_pos.x * 2.0 / size.x - 1.0, in_pos.y * 2.0 / size.y - 1.0);
+    gl_Position = vec4(ndc * in_pos.w, 0.0, in_pos.w);
+    f = in_f;
+}
+"""
+_FS_ATTR = """#version 330
+smooth in float f;
+layout(location = 0) out vec4 o_value;
+void main() { o_value = vec4(f, 1.0, 0.0, 1.0); }
+"""
+
+
+def gl_line_attribute(p0, p1, width: int, height: int, *, w=(1.0, 1.0), f=(0.0, 1.0)):
+    """A ``smooth`` (perspective-correct) attribute along one GL line: (height, width) float64,
+    NaN where GL produced no fragment. ``w`` is each end's clip w (the window positions stay
+    ``p0``, ``p1``), ``f`` the attribute at each end."""
+    import moderngl
+
+    width, height = as_size("width", width), as_size("height", height)
+    ctx, _ = gl_context()
+    prog = ctx.program(vertex_shader=_VS_ATTR, fragment_shader=_FS_ATTR)
+    prog["size"].value = (float(width), float(height))
+    verts = np.array([[*p0, 0.0, w[0], f[0]], [*p1, 0.0, w[1], f[1]]], dtype="f4")
+    buf = ctx.buffer(verts.tobytes())
+    vao = ctx.vertex_array(prog, [(buf, "4f 1f", "in_pos", "in_f")])
+    target = ctx.renderbuffer((width, height), 4, dtype="f4")
+    fbo = ctx.framebuffer([target])
+    try:
+        fbo.use()
+        ctx.enable_only(moderngl.NOTHING)
+        fbo.clear(0.0, 0.0, 0.0, 0.0)
+        vao.render(moderngl.LINES, vertices=2)
+        out = np.empty((height, width, 4), dtype="f4")
+        fbo.read_into(out, components=4, dtype="f4")
+    finally:
+        for obj in (vao, buf, fbo, target, prog):
+            obj.release()
+    return np.where(out[..., 1] > 0, out[..., 0].astype(np.float64), np.nan)
