@@ -17,6 +17,7 @@ import numpy as np
 from ..core.blend_factors import BLEND_MODES
 from .opengl import gl_context
 
+_PROGRAMS: dict = {}
 _GL_SRGB8_ALPHA8 = 0x8C43
 _GL_FRAMEBUFFER_SRGB = 0x8DB9
 
@@ -59,14 +60,16 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
     n = len(clip)
     writes = np.broadcast_to(np.asarray(depth_write, dtype=bool), (n,))
     ctx, gl = gl_context()
-    prog = ctx.program(vertex_shader=_VS, fragment_shader=_FS)
+    if id(ctx) not in _PROGRAMS:  # llvmpipe JIT-compiles a program: once per process
+        _PROGRAMS[id(ctx)] = ctx.program(vertex_shader=_VS, fragment_shader=_FS)
+    prog = _PROGRAMS[id(ctx)]
     pos = ctx.buffer(clip.astype("f4").tobytes())
     col = ctx.buffer(attrs.astype("f4").tobytes())
     vao = ctx.vertex_array(prog, [(pos, "4f", "in_pos"), (col, "4f", "in_col")])
     fmt = {"internal_format": _GL_SRGB8_ALPHA8, "dtype": "f1"} if srgb else {"dtype": "f4"}
     target = ctx.texture((width, height), 4, samples=samples, **fmt)
     fbo = ctx.framebuffer([target])
-    objects, depth_rb = [vao, pos, col, prog, fbo, target], None
+    objects, depth_rb = [vao, pos, col, fbo, target], None
     try:
         fbo.use()
         depth_rb = gl.float_depth_buffer(width, height, samples) if depth_test else None

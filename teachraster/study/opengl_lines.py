@@ -38,6 +38,21 @@ from .opengl import gl_context
 
 MODES = ("lines", "line_strip", "line_loop")
 
+#: Compiled programs, per (context, shaders): llvmpipe JIT-compiles each program, so it is
+#: compiled once per process, not once per line.
+_PROGRAMS: dict = {}
+
+
+def _program(ctx, vs: str, fs: str):
+    key = (id(ctx), vs, fs)
+    if key not in _PROGRAMS:
+        _PROGRAMS[key] = ctx.program(vertex_shader=vs, fragment_shader=fs)
+    return _PROGRAMS[key]
+
+
+#: Deviation (c): centres this close (px) to the half-way line between two pixels.
+HALF_WAY_BAND = 1 / 512
+
 _VS = """#version 330
 uniform vec2 size;
 in vec2 in_xy;
@@ -80,7 +95,7 @@ def gl_lines(points, width: int, height: int, *, mode: str = "lines", line_width
     if pts.ndim != 2 or pts.shape[1] != 2:
         raise ValueError(f"points must have shape (N, 2), got {pts.shape}")
     ctx, _ = gl_context()
-    prog = ctx.program(vertex_shader=_VS, fragment_shader=_FS)
+    prog = _program(ctx, _VS, _FS)
     prog["size"].value = (float(width), float(height))
     buf = ctx.buffer(pts.astype("f4").tobytes())
     vao = ctx.vertex_array(prog, [(buf, "2f", "in_xy")])
@@ -102,7 +117,7 @@ def gl_lines(points, width: int, height: int, *, mode: str = "lines", line_width
         ctx.line_width = 1.0
         ctx.blend_func = moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA
         ctx.enable_only(moderngl.NOTHING)
-        for obj in (vao, buf, fbo, target, prog):
+        for obj in (vao, buf, fbo, target):
             obj.release()
     return out[..., 0].astype(np.int64)
 
@@ -142,7 +157,7 @@ def llvmpipe_deviation(p0, p1, row: int, col: int) -> str | None:
     axis = 1 if y_major else 0  # the major axis: the pixel centre along it
     centre = (col if axis == 0 else row) + 0.5
     minor = p0[1 - axis] + (centre - p0[axis]) * d[1 - axis] / d[axis]
-    if abs(minor - np.round(minor)) <= 1 / 512:
+    if abs(minor - np.round(minor)) <= HALF_WAY_BAND:
         return "half_way_centre"
     return None
 
@@ -174,7 +189,7 @@ def gl_line_attribute(p0, p1, width: int, height: int, *, w=(1.0, 1.0), f=(0.0, 
 
     width, height = as_size("width", width), as_size("height", height)
     ctx, _ = gl_context()
-    prog = ctx.program(vertex_shader=_VS_ATTR, fragment_shader=_FS_ATTR)
+    prog = _program(ctx, _VS_ATTR, _FS_ATTR)
     prog["size"].value = (float(width), float(height))
     verts = np.array([[*p0, 0.0, w[0], f[0]], [*p1, 0.0, w[1], f[1]]], dtype="f4")
     buf = ctx.buffer(verts.tobytes())
@@ -189,6 +204,6 @@ def gl_line_attribute(p0, p1, width: int, height: int, *, w=(1.0, 1.0), f=(0.0, 
         out = np.empty((height, width, 4), dtype="f4")
         fbo.read_into(out, components=4, dtype="f4")
     finally:
-        for obj in (vao, buf, fbo, target, prog):
+        for obj in (vao, buf, fbo, target):
             obj.release()
     return np.where(out[..., 1] > 0, out[..., 0].astype(np.float64), np.nan)
