@@ -22,6 +22,7 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 from dataclasses import dataclass, replace
 
@@ -330,8 +331,13 @@ def with_colour(frame, blending, clipped, window, culled, offsets, a) -> Frame:
     if blending is None:
         return frame
     color, sample_color, effect = blend_stage(clipped, window, culled, offsets, a, blending)
-    plan = Plan((*frame.plan.effects, effect))
-    return replace(frame, color=color, sample_color=sample_color, plan=plan)
+    # A shallow copy, not dataclasses.replace: replace would read (and so build) the lazy
+    # per-sample arrays of a multisampled frame.
+    out = copy.copy(frame)
+    for name, value in (("color", color), ("sample_color", sample_color),
+                        ("plan", Plan((*frame.plan.effects, effect)))):  # fmt: skip
+        object.__setattr__(out, name, value)
+    return out
 
 
 def _fill(window, culled, a):
