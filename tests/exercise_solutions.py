@@ -252,3 +252,12 @@ ALTERNATIVES = {
     "clip_near": clip_near_rotated_with_duplicates,
     "depth_test": depth_test_numpy,
 }
+
+# lesson 12's exercises (line_pixels, over, over_premultiplied) live in their own file
+from lines_blending_solutions import ALTERNATIVES as _LB_ALTERNATIVES  # noqa: E402
+from lines_blending_solutions import CORRECT as _LB_CORRECT  # noqa: E402
+from lines_blending_solutions import MISTAKES as _LB_MISTAKES  # noqa: E402
+
+CORRECT.update(_LB_CORRECT)
+MISTAKES.update(_LB_MISTAKES)
+ALTERNATIVES.update(_LB_ALTERNATIVES)

@@ -25,6 +25,9 @@ def test_names_in_course_order():
         "perspective",
         "depth_test",
         "clip_near",
+        "line_pixels",
+        "over",
+        "over_premultiplied",
     ]
 
 

@@ -30,6 +30,8 @@ Widgets
   and :class:`ZBufferStepper` (lesson 05a: the z-buffer triangle by triangle).
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
   plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
+- :class:`LinePlayer` and :class:`BlendingExplorer` (lesson 12): a line step by step under the
+  diamond rule, Bresenham or DDA; transparent triangles reordered, premultiplied, sRGB.
 
 Figures
 -------
@@ -49,12 +51,14 @@ Example
 >>> player.close()
 """
 
+from .blending import BlendingExplorer
 from .case_picker import CasePicker
 from .depth_explorer import DepthPrecisionExplorer
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
 from .inspector import PixelInspector
+from .line_player import LinePlayer
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .predict import Predict
@@ -65,11 +69,13 @@ from .zbuffer_stepper import ZBufferStepper
 
 __all__ = [
     "BACKENDS",
+    "BlendingExplorer",
     "CasePicker",
     "DepthPrecisionExplorer",
     "FigureDisplay",
     "FilterExplorer",
     "FillPlayer",
+    "LinePlayer",
     "PixelInspector",
     "PlaneExplorer",
     "Predict",
