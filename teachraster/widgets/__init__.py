@@ -23,6 +23,9 @@ Widgets
 - :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
   chooser: the filtered image, the mip level per pixel and the error against the true
   footprint average (lesson 09).
+- :class:`Predict` -- "predict, then see": a question that takes the student's answer (a
+  choice or a number) before it reveals the answer, the explanation and its figure; headless
+  runs show the answer at once.
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
   plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
 
@@ -52,6 +55,7 @@ from .filter_explorer import FilterExplorer
 from .inspector import PixelInspector
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
+from .predict import Predict
 from .textured import TexturedPlaneViewer
 from .tiles import TileExplorer
 
@@ -64,6 +68,7 @@ __all__ = [
     "FillPlayer",
     "PixelInspector",
     "PlaneExplorer",
+    "Predict",
     "TexturedPlaneViewer",
     "TileExplorer",
     "TriangleEditor",

@@ -1,0 +1,269 @@
+"""``Predict``: a "predict, then see" question that takes the student's answer first.
+
+Students learn more from a result they predicted (and got wrong) than from one they were only
+shown. A ``Predict`` asks a question at the moment where intuition fails, takes a choice or a
+number, and only then reveals the answer, the explanation and the figure that shows why.
+
+Where the answer is kept
+    The choice or number is the value of an ipywidgets control, so it is saved with the
+    notebook's widget state; after "Check" a plain HTML line ("You predicted ...; the answer
+    is ...") is also written into the cell's output with a display id, which is saved in the
+    ``.ipynb`` whatever the widget settings are. A lecturer can use the questions as a poll.
+
+Headless runs
+    Executed with nobody looking (nbclient tests, ``nbconvert --execute``, plain Python), the
+    question shows its answer, explanation and figure at once and never waits: see
+    :func:`is_headless`.
+"""
+
+from __future__ import annotations
+
+import html
+import io
+import itertools
+import os
+from collections.abc import Callable, Sequence
+
+import ipywidgets as widgets
+import matplotlib.pyplot as plt
+
+from .common import style_context
+
+#: Environment variable that forces the headless behaviour ("1") or the interactive one ("0").
+HEADLESS_ENV = "TEACHRASTER_HEADLESS"
+
+_ids = itertools.count()
+
+
+def is_headless() -> bool:
+    """True when no student can answer: show the answer at once instead of asking.
+
+    ``TEACHRASTER_HEADLESS=1`` (or ``0``) decides when set. Otherwise a run is headless when
+    there is no IPython kernel (plain Python, a doctest) or when the kernel's matplotlib
+    backend was forced to Agg by its environment (``MPLBACKEND=Agg``), as the test suite and
+    batch exports do: a kernel a student uses draws inline or with ipympl instead.
+    """
+    flag = os.environ.get(HEADLESS_ENV, "").strip().lower()
+    if flag in ("1", "true", "yes"):
+        return True
+    if flag in ("0", "false", "no"):
+        return False
+    try:
+        from IPython import get_ipython
+    except ImportError:  # pragma: no cover - ipywidgets depends on IPython
+        return True
+    shell = get_ipython()
+    if shell is None or getattr(shell, "kernel", None) is None:
+        return True
+    return os.environ.get("MPLBACKEND", "").strip().lower() == "agg"
+
+
+def _check_arguments(question, choices, answer, tolerance):
+    """Validate the arguments; return the choices as a tuple (or None) and the tolerance."""
+    if not isinstance(question, str) or not question.strip():
+        raise TypeError(f"question must be a non-empty str, got {question!r}")
+    if choices is not None:
+        choices = tuple(str(c) for c in choices)
+        if len(choices) < 2:
+            raise ValueError(f"choices must list at least two answers, got {choices!r}")
+        if str(answer) not in choices:
+            raise ValueError(f"answer {answer!r} is not one of choices {choices!r}")
+        return choices, 0.0
+    if isinstance(answer, bool) or not isinstance(answer, int | float):
+        raise TypeError(f"answer must be a number when there are no choices, got {answer!r}")
+    tolerance = float(tolerance)
+    if not tolerance >= 0.0:
+        raise ValueError(f"tolerance must be >= 0, got {tolerance!r}")
+    return None, tolerance
+
+
+class Predict:
+    """Ask first, reveal after: a multiple-choice or numeric prediction question.
+
+    Parameters
+    ----------
+    question : str
+        The question (HTML allowed).
+    choices : list of str, optional
+        The possible answers; without them the student types a number.
+    answer : str or float
+        The right choice (one of ``choices``) or the right number.
+    explain : str
+        Why (HTML allowed), shown with the answer.
+    figure : callable, optional
+        Called without arguments when the answer is revealed; returns the matplotlib Figure
+        that explains the answer (or draws into the current figure and returns None).
+    tolerance : float
+        A number within ``tolerance`` of ``answer`` counts as right.
+    headless : bool, optional
+        Force the headless behaviour (answer shown at once) or the interactive one; by
+        default :func:`is_headless` decides.
+    style : str, optional
+        Plotting style the figure is drawn in ("classroom" by default).
+
+    Attributes
+    ----------
+    control : ipywidgets.ToggleButtons or ipywidgets.Text
+        Where the student answers (set ``.value`` to answer from code; a number is typed
+        as text, so that an empty box is not read as 0).
+    check : ipywidgets.Button
+        Reveals the answer (``check.click()`` from code).
+    feedback : ipywidgets.HTML
+        "Right" / "Not quite", the answer and the explanation, once revealed.
+    output : ipywidgets.Output
+        The explaining figure, once revealed.
+    revealed : bool
+    widget : ipywidgets.VBox
+
+    Examples
+    --------
+    >>> q = Predict("Which row?", ["row 2", "row 3"], answer="row 2", headless=False)
+    >>> q.control.value = "row 3"
+    >>> q.check.click()
+    >>> q.correct, q.revealed
+    (False, True)
+    """
+
+    def __init__(
+        self,
+        question: str,
+        choices: Sequence[str] | None = None,
+        answer: str | float = None,
+        explain: str = "",
+        figure: Callable[[], object] | None = None,
+        tolerance: float = 0.0,
+        *,
+        headless: bool | None = None,
+        style: str | None = "classroom",
+    ) -> None:
+        self.choices, self.tolerance = _check_arguments(question, choices, answer, tolerance)
+        if figure is not None and not callable(figure):
+            raise TypeError(f"figure must be callable or None, got {type(figure).__name__}")
+        self.question, self.explain, self.figure, self.style = question, explain, figure, style
+        self.answer = str(answer) if self.choices else float(answer)
+        self.headless = is_headless() if headless is None else bool(headless)
+        self.revealed = False
+        self._display_id = f"teachraster-predict-{os.getpid()}-{next(_ids)}"
+        self._build()
+
+    def _build(self) -> None:
+        """The controls: question, answer control, Check button, feedback, figure output."""
+        if self.choices:
+            self.control = widgets.ToggleButtons(
+                options=self.choices, value=None, style={"button_width": "auto"}
+            )
+        else:
+            self.control = widgets.Text(
+                placeholder="your number", layout=widgets.Layout(width="12em")
+            )
+        self.check = widgets.Button(description="Check", button_style="primary")
+        self.check.on_click(lambda _: self.reveal())
+        self.feedback = widgets.HTML()
+        self.output = widgets.Output()
+        prompt = widgets.HTML(f"<b>Predict first.</b> {self.question}")
+        row = widgets.HBox([self.control, self.check], layout=widgets.Layout(flex_flow="row wrap"))
+        self.widget = widgets.VBox([prompt, row, self.feedback, self.output])
+
+    @property
+    def given(self):
+        """The student's answer (a choice, a number), or None before a valid one is given."""
+        value = self.control.value
+        if self.choices:
+            return value
+        try:
+            return float(str(value).replace(",", "."))
+        except ValueError:  # empty or not a number yet
+            return None
+
+    @property
+    def correct(self) -> bool | None:
+        """Whether the given answer is right (None before an answer is given)."""
+        given = self.given
+        if given is None:
+            return None
+        if self.choices:
+            return given == self.answer
+        return abs(given - self.answer) <= self.tolerance
+
+    def _answer_text(self) -> str:
+        if self.choices:
+            return html.escape(self.answer)
+        tol = f" (± {self.tolerance:g})" if self.tolerance else ""
+        return f"{self.answer:g}{tol}"
+
+    def _verdict(self) -> str:
+        """One HTML line: what the student said against the answer."""
+        if self.given is None:
+            return f"The answer: <b>{self._answer_text()}</b>."
+        said = html.escape(self.given if self.choices else f"{self.given:g}")
+        word = "Right" if self.correct else "Not quite"
+        colour = "#009E73" if self.correct else "#D55E00"  # Okabe–Ito bluish green, vermillion
+        return (
+            f"<span style='color:{colour};font-weight:bold'>{word}.</span> You predicted "
+            f"<b>{said}</b>; the answer is <b>{self._answer_text()}</b>."
+        )
+
+    def reveal(self) -> None:
+        """Show the verdict, the explanation and the figure; record the answer in the cell."""
+        verdict = self._verdict()
+        self.feedback.value = f"<div>{verdict}</div><div>{self.explain}</div>"
+        if not self.revealed and self.figure is not None:
+            self.output.outputs = ()
+            self.output.append_display_data(self._figure_png())
+        self.revealed = True
+        if not self.headless:
+            self._record(verdict)
+
+    def _figure_png(self):
+        """Call ``figure`` in the style; its Figure as a PNG image at the figure's own size.
+
+        The PNG is made here (at the figure's dpi, so its width in pixels is inches × dpi)
+        rather than left to the inline backend, so it shows in the Output widget and in
+        headless runs alike; the figure is closed so the inline backend does not repeat it.
+        """
+        from IPython.display import Image
+
+        with style_context(self.style):
+            fig = self.figure()
+            fig = plt.gcf() if fig is None else fig
+            buffer = io.BytesIO()
+            fig.savefig(buffer, format="png", dpi=fig.dpi)
+        plt.close(fig)
+        return Image(data=buffer.getvalue(), format="png")
+
+    def _record(self, verdict: str) -> None:
+        """Write the verdict into the cell's saved output (through the display id)."""
+        from IPython import get_ipython
+        from IPython.display import HTML, update_display
+
+        if getattr(get_ipython(), "kernel", None) is None:
+            return  # no notebook to write into (plain Python, a test driving the widget)
+        update_display(HTML(f"<div><i>{verdict}</i></div>"), display_id=self._display_id)
+
+    def _ipython_display_(self) -> None:
+        from IPython.display import HTML, display
+
+        if self.headless:
+            self._display_headless()
+            return
+        display(self.widget)
+        display(HTML(""), display_id=self._display_id)  # filled in by _record
+
+    def _display_headless(self) -> None:
+        """Question, answer, explanation and figure as plain outputs: nothing waits."""
+        from IPython.display import HTML, display
+
+        display(
+            HTML(
+                f"<div><b>Predict first.</b> {self.question}</div>"
+                f"<div>The answer: <b>{self._answer_text()}</b>.</div><div>{self.explain}</div>"
+            )
+        )
+        self.revealed = True
+        if self.figure is not None:
+            display(self._figure_png())
+
+    def close(self) -> None:
+        """Close the widgets (and the comms behind them)."""
+        for w in (self.control, self.check, self.feedback, self.output, self.widget):
+            w.close()
