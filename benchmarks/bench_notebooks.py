@@ -50,7 +50,7 @@ PROBE_VARIABLE = "TEACHRASTER_NOTEBOOK_PROBE"
 # Runs in the kernel at start-up (an IPython profile start-up file). Records the size of every
 # figure when it is drawn (inline display, widget redraw, savefig: all go through Figure.draw,
 # at the dpi of that output) and the process's peak memory after every cell.
-PROBE_SOURCE = r'''
+PROBE_SOURCE = r"""
 import functools as _functools, json as _json, os as _os, resource as _resource
 
 def _teachraster_probe():
@@ -88,7 +88,7 @@ def _teachraster_probe():
 
 _teachraster_probe()
 del _teachraster_probe
-'''
+"""
 
 
 def probe_environment(directory: Path, log: Path) -> dict[str, str]:
@@ -152,7 +152,9 @@ def run_notebook(path: Path, timeout: int = 600) -> dict:
     figures = record["figures"]
     inside = path.resolve().is_relative_to(NOTEBOOKS)
     return {
-        "name": path.resolve().relative_to(NOTEBOOKS).with_suffix("").as_posix() if inside else path.stem,
+        "name": path.resolve().relative_to(NOTEBOOKS).with_suffix("").as_posix()
+        if inside
+        else path.stem,
         "seconds": seconds,
         "peak_mib": max(record["rss_mib"]),
         "widest_px": max((f["width"] for f in figures), default=0.0),
