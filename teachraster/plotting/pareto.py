@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from matplotlib.ticker import NullFormatter
 
 from ..study.bench.report import pareto_front
 from .style import COLORS
@@ -29,6 +30,12 @@ class ParetoArtists:
     labels: dict
     floor: float
     front: list
+    short: object = None
+
+
+def shown_y(row, y: str, art) -> float:
+    """Where ``row`` is drawn: its error, or the floor when it counts as exact."""
+    return art.floor if row[y] < EXACT_BELOW else row[y]
 
 
 def error_floor(rows, y: str = "error") -> float:
@@ -71,7 +78,8 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
             fontsize=12, color="gray")  # fmt: skip
     ax.set(xscale="log" if logx else "linear", yscale="log", xlabel=xlabel, ylabel=ylabel,
            title=title)  # fmt: skip
-    art = ParetoArtists(points, line, labels, floor, [])
+    art = ParetoArtists(points, line, labels, floor, [], short)
+    ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
     update_pareto(ax, art, rows, x, y=y)
     return art
 
@@ -81,14 +89,19 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
     front = pareto_front(rows, x=x, y=y)
     on = {r["variant"] for r in front}
     for r in rows:
-        yy = art.floor if r[y] < EXACT_BELOW else r[y]
+        yy = shown_y(r, y, art)
         p = art.points[r["variant"]]
         p.set_data([r[x]], [yy])
         front_member = r["variant"] in on
         p.set_color(COLORS["outside"] if front_member else COLORS["edge"])
         p.set_alpha(1.0 if front_member else 0.45)
-        art.labels[r["variant"]].xy = (r[x], yy)
-        art.labels[r["variant"]].set_alpha(1.0 if front_member else 0.6)
+        label = art.labels[r["variant"]]
+        label.xy = (r[x], yy)
+        label.set_alpha(1.0 if front_member else 0.6)
+        # points that coincide share one label: the first names them all
+        same = [q["variant"] for q in rows if (q[x], shown_y(q, y, art)) == (r[x], yy)]
+        label.set_visible(same[0] == r["variant"])
+        label.set_text(" = ".join(art.short(v) for v in same))
     xs = [r[x] for r in front]
     shown = [art.floor if r[y] < EXACT_BELOW else r[y] for r in front]
     art.front_line.set_data(xs, shown)
