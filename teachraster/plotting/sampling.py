@@ -156,6 +156,6 @@ def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:
     art.stems.set_data(result.sample_x, result.samples)
     art.reconstructed.set_ydata(result.reconstructed)
     art.ideal.set_ydata(result.ideal)
-    for span in art.spans:
-        x0 = result.alias_from
-        span.set_xy([[x0, 0], [x0, 1], [1, 1], [1, 0], [x0, 0]])
+    for span in art.spans:  # a Rectangle in axes-fraction y (matplotlib >= 3.9)
+        span.set_x(result.alias_from)
+        span.set_width(1.0 - result.alias_from)
