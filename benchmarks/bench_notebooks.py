@@ -4,6 +4,7 @@ Run from anywhere (the repository root is put on ``sys.path``)::
 
     python benchmarks/bench_notebooks.py                 # every lesson and exercise notebook
     python benchmarks/bench_notebooks.py --only 09 10    # notebooks whose name contains 09 or 10
+    python benchmarks/bench_notebooks.py --quick         # smoke run: one small notebook
     python benchmarks/bench_notebooks.py --server-gib 24 # the server size for the class count
 
 Each notebook runs top to bottom in a fresh ``python3`` kernel with nbclient, as a student's
@@ -170,6 +171,7 @@ def students_per_server(peak_mib: float, server_gib: float, overhead_mib: float)
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--only", nargs="*", help="run notebooks whose name contains one of these")
+    parser.add_argument("--quick", action="store_true", help="smoke run: one small notebook")
     parser.add_argument("--server-gib", type=float, default=24.0, help="server memory (GiB)")
     parser.add_argument("--overhead-mib", type=float, default=40.0,
                         help="per-student memory beside the kernel (notebook server session)")  # fmt: skip
@@ -179,7 +181,8 @@ def main(argv: list[str] | None = None) -> int:
 
     results, failed = [], []
     print(f"{'notebook':42s} {'peak MiB':>9s} {'seconds':>8s} {'widest px':>10s}  goals")
-    for path in notebook_paths(args.only):
+    only = args.only or (["02_span_split"] if args.quick else None)
+    for path in notebook_paths(only):
         try:
             r = run_notebook(path)
         except Exception as exc:  # a failing notebook is reported, the others still run
