@@ -10,8 +10,9 @@ Run from anywhere (the repository root is put on ``sys.path``)::
 Each notebook runs top to bottom in a fresh ``python3`` kernel with nbclient, as a student's
 "Run all" does, with the working directory its own folder. Measured per notebook:
 
-- **peak MiB**: the kernel process's peak resident memory (``getrusage(RUSAGE_SELF).ru_maxrss``
-  after every cell, read by a probe the kernel loads at start-up; see :func:`probe_environment`);
+- **peak MiB**: the kernel process's peak resident memory (``VmHWM`` of ``/proc/self/status``
+  after every cell, read by a probe the kernel loads at start-up, see :func:`probe_environment`;
+  ``getrusage``'s ``ru_maxrss`` where there is no ``/proc``);
 - **seconds**: the wall time of the whole run, kernel start-up included (``time.perf_counter``);
 - **widest figure**: the widest figure drawn, in pixels (inches × dpi at drawing time), against
   :data:`teachraster.plotting.style.COLUMN_WIDTH_PX`.
@@ -78,9 +79,20 @@ def _teachraster_probe():
 
     mfigure.Figure.draw = draw
 
+    def peak_kib():
+        # VmHWM: this process's own peak (ru_maxrss would also count the memory of the process
+        # that forked the kernel, kept across exec).
+        try:
+            with open("/proc/self/status") as fh:
+                for line in fh:
+                    if line.startswith("VmHWM:"):
+                        return float(line.split()[1])
+        except OSError:
+            pass
+        return float(_resource.getrusage(_resource.RUSAGE_SELF).ru_maxrss)
+
     def after_cell(result=None):
-        peak_kib = _resource.getrusage(_resource.RUSAGE_SELF).ru_maxrss
-        state["rss_mib"].append(peak_kib / 1024)
+        state["rss_mib"].append(peak_kib() / 1024)
         with open(log, "w") as fh:
             _json.dump({"rss_mib": state["rss_mib"],
                         "figures": list(state["figures"].values())}, fh)
