@@ -25,6 +25,14 @@ def test_names_in_course_order():
         "perspective",
         "depth_test",
         "clip_near",
+        # 05–08 (issue 20; tested in test_exercises_05_08.py)
+        "depth_to_unorm",
+        "coverage_fraction",
+        "resolve",
+        "mip_level",
+        "bilinear",
+        "trilinear",
+        "classify_block",
     ]
 
 

@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from . import coverage, near_clip, scalars
+from . import coverage, later, near_clip, scalars
 from .cases import CoverageCase, catalogue_coverage, random_coverage
 from .report import Failure, Report
 from .running import WrongAnswerType, run_case
@@ -254,6 +254,7 @@ EXERCISES: dict[str, Callable] = {
     "perspective": lambda fn: check_values("perspective", fn),
     "depth_test": lambda fn: check_values("depth_test", fn),
     "clip_near": lambda fn: check_values("clip_near", fn),
+    **later.EXERCISES,  # 05–08: depth precision, antialiasing, texture filtering, tiles
 }
 
 

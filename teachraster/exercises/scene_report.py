@@ -1,0 +1,111 @@
+"""Reports of exercises 05–08: the cases as every exercise checks them, plus a whole picture.
+
+:func:`check_cases` runs a student's function on ``(label, args, expected)`` cases as the
+first exercises do (each case under the time limit of :func:`.running.run_case`), with one
+difference: ``same(got, expected, args)`` sees the case's arguments too, so that an answer
+may be accepted for a reason that depends on them (either neighbour at an exact rounding
+tie). The :class:`SceneReport` it returns is a :class:`.Report` that can also draw the
+student's function plugged into a small scene beside the package's
+(:meth:`SceneReport.compare`, drawn by :mod:`.compare_scenes`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .report import Failure, Report
+from .running import run_case
+
+
+@dataclass(frozen=True)
+class SceneReport(Report):
+    """A :class:`.Report` with a scene: ``report.compare(axes)`` shows a whole picture.
+
+    ``scene`` is a :class:`teachraster.exercises.compare_scenes.Scene` (or None): it runs
+    the student's function over a small scene only when a comparison is drawn or asked for.
+    """
+
+    scene: object | None = field(default=None, repr=False, compare=False)
+
+    def compare(self, axes=None, pixel=None):
+        """Draw the student's picture, the package's, and their differences, side by side.
+
+        Parameters
+        ----------
+        axes : three matplotlib Axes, one Axes (split in three) or None (a new figure)
+        pixel : (row, col) or "first", optional
+            Mark this pixel (or the first that differs) in every panel and write the
+            explanation of its value under the middle panel (:meth:`explain_pixel`). With
+            an interactive backend a click on a pixel does the same.
+
+        Returns
+        -------
+        list of matplotlib artists
+        """
+        if self.scene is None:
+            raise ValueError(f"{self.exercise} has no picture to compare")
+        from .compare_scenes import draw_comparison
+
+        return draw_comparison(self.scene, axes, pixel)
+
+    def explain_pixel(self, row: int, col: int) -> str:
+        """Why pixel (``row``, ``col``) of the student's picture differs (or does not)."""
+        if self.scene is None:
+            raise ValueError(f"{self.exercise} has no picture to compare")
+        return self.scene.explain(row, col)
+
+    def differing_pixels(self) -> np.ndarray:
+        """(n, 2) rows and columns where the student's picture differs from the package's."""
+        if self.scene is None:
+            raise ValueError(f"{self.exercise} has no picture to compare")
+        return np.argwhere(self.scene.differs())
+
+
+def check_cases(name: str, fn: Callable, cases, convert, same, explain, draw, scene=None):
+    """Run ``fn(*args)`` on ``cases`` of (label, args, expected) and explain each failure.
+
+    ``convert`` turns the returned value into the answer's type (or raises
+    :class:`.running.WrongAnswerType`); ``same(got, expected, args)`` accepts it;
+    ``explain(args, expected, got)`` says why it is wrong; ``draw(ax, case, got)`` draws a
+    case. ``scene(fn)`` builds the whole-picture comparison.
+    """
+    failures = []
+    built = None if scene is None else scene(fn)
+    for label, args, expected in cases:
+        copies = tuple(_copy(a) for a in args)
+        outcome = run_case(lambda copies=copies: convert(fn(*copies)))
+        if outcome.not_implemented:
+            example = _drawer(draw, cases[0], None)
+            return SceneReport(
+                exercise=name, failures=[], n_cases=len(cases), not_implemented=True,
+                example=example, scene=built,
+            )  # fmt: skip
+        if outcome.error:
+            failures.append(Failure(label, outcome.error, expected, None))
+        elif not same(outcome.value, expected, args):
+            text = explain(args, expected, outcome.value)
+            drawing = _drawer(draw, (label, args, expected), outcome.value)
+            failures.append(Failure(label, text, expected, outcome.value, drawing))
+    example = _drawer(draw, cases[0], cases[0][2])
+    return SceneReport(
+        exercise=name, failures=failures, n_cases=len(cases), example=example, scene=built
+    )
+
+
+def _copy(value):
+    """A fresh copy of an argument (a student may write into it), lists of arrays included."""
+    if isinstance(value, np.ndarray):
+        return value.copy()
+    if isinstance(value, list):
+        return [_copy(v) for v in value]
+    return value
+
+
+def _drawer(draw, case, got):
+    def drawing(ax):
+        return draw(ax, case, got)
+
+    return drawing
