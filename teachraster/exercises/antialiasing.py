@@ -120,6 +120,8 @@ def coverage_cases():
          [[2.375 + 1 / 1024, -1], [2.375 + 1 / 1024, 5], [-2, 1.5]], (1, 2), four),
         ("off the grid: a left edge 1/1024 px right of sample 0",
          [[2.375 + 1 / 1024, -1], [6, 1.5], [2.375 + 1 / 1024, 5]], (1, 2), four),
+        ("off the grid: 3/1024 px right of sample 0 rounds up, away from it",
+         [[2.375 + 3 / 1024, -1], [6, 1.5], [2.375 + 3 / 1024, 5]], (1, 2), four),
         ("off the grid: a half step (1/512 px) rounds to even, onto sample 0",
          [[2.375 + 1 / 512, -1], [6, 1.5], [2.375 + 1 / 512, 5]], (1, 2), four),
         ("zero area through the samples", [[2.375, 1.125], [2.875, 1.375], [3.375, 1.625]], (1, 2), four),  # fmt: skip
@@ -185,6 +187,9 @@ def _coverage_mistake(xy, snapped, pixel, samples, got) -> str:
         half_up = np.floor(xy * 256 + 0.5) / 256
         if close(got, frac(covered_samples(half_up, points))):
             return ": snapping rounds half to even (np.rint), not half up (floor(x + ½))"
+        down = np.floor(xy * 256) / 256
+        if close(got, frac(covered_samples(down, points))):
+            return ": snapping rounds to the nearest 1/256 px (half to even), not down"
     for tie in ("both", "none", "bottom-right"):
         if close(got, frac(covered_samples(snapped, points, tie))):
             on = [(k, _edge_words(snapped, p)) for k, p in enumerate(points)]
@@ -206,6 +211,9 @@ def _coverage_mistake(xy, snapped, pixel, samples, got) -> str:
     ):
         if close(got, frac(covered_samples(snapped, points + shift))):
             return f": {words}"
+    flipped = np.asarray(samples) * [1, -1] + np.array([col, row + 1], dtype=float)
+    if close(got, frac(covered_samples(snapped, flipped))):
+        return ": the offsets are y down (like window coordinates): y = row + oy, not row + 1 − oy"
     swapped = np.asarray(samples) + np.array([row, col], dtype=float)
     if row != col and close(got, frac(covered_samples(snapped, swapped))):
         return ": pixel is (row, col): a sample lies at x = col + ox, y = row + oy"
@@ -245,6 +253,11 @@ def as_fraction(value) -> float:
 
 def same_number(got, expected, args) -> bool:
     return close(got, expected)
+
+
+def same_fraction(got, expected, args) -> bool:
+    """A fraction k/S: any answer nearer than 1e-6 (a wrong count is 1/S ≥ 1/16 away)."""
+    return abs(got - expected) <= 1e-6
 
 
 # -- resolve ----------------------------------------------------------------------------------

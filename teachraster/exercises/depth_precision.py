@@ -87,6 +87,12 @@ def explain_depth(args, expected, got) -> str:
     shown = repr(product) if product != round(product) else str(int(product))
     head = f"in float64 z·(2^{bits} − 1) = {z!r}·{s} = {shown}"
     rule = f"the buffer stores the nearest integer, {expected}"
+    f32 = float(np.rint(np.float32(z) * np.float32(s)))
+    if got == f32 and got == int(product) and bits > 16:
+        return (
+            f"{head}; {rule}. Your {num(got)} is what truncation (int()) gives, and also what "
+            "float32 arithmetic gives: round to the nearest integer, in float64"
+        )
     if got == int(product) and got != expected:
         return (
             f"{head}, which int() truncates to {num(got)}; {rule}: rounding by truncation "
@@ -106,7 +112,6 @@ def explain_depth(args, expected, got) -> str:
         )
     if got != round(got):
         return f"{head}; your {got!r} is not an integer: {rule}"
-    f32 = float(np.rint(np.float32(z) * np.float32(s)))
     if got == f32:
         gap = float(np.spacing(np.float32(product)))
         return (

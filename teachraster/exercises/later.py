@@ -24,7 +24,7 @@ SPECS = {
         scenes.depth_scene,
     ),
     "coverage_fraction": (
-        aa.coverage_cases, aa.as_fraction, aa.same_number, aa.explain_coverage,
+        aa.coverage_cases, aa.as_fraction, aa.same_fraction, aa.explain_coverage,
         aa.draw_coverage_case, scenes.coverage_scene,
     ),
     "resolve": (

@@ -50,16 +50,19 @@ def same_value(got, expected, args) -> bool:
     return all_close(got.reshape(np.shape(expected)), expected)
 
 
-def plain_bilinear(texture, uv, wrap, *, centre=0.5, floor=np.floor, swap=False, wrap_x=None):
+def plain_bilinear(
+    texture, uv, wrap, *, centre=0.5, floor=np.floor, swap=False, wrap_x=None, span=0
+):
     """A bilinear filter with knobs for the usual mistakes (explanations only).
 
     ``centre`` is subtracted from u·W (0.5 is right, 0 samples at texel corners), ``floor``
     finds the texel to the left (``np.trunc`` is the int() mistake), ``swap`` gives the left
-    texel the weight of the right one, ``wrap_x`` wraps with another mode.
+    texel the weight of the right one, ``wrap_x`` wraps with another mode, ``span=-1``
+    stretches u over W − 1 texels (first centre at u = 0, last at u = 1).
     """
     tex = np.asarray(texture, dtype=float)
     h, w = tex.shape[:2]
-    x, y = uv[0] * w - centre, uv[1] * h - centre
+    x, y = uv[0] * (w + span) - centre, uv[1] * (h + span) - centre
     x0, y0 = floor(x), floor(y)
     fx, fy = x - x0, y - y0
     if swap:
@@ -141,6 +144,9 @@ def _bilinear_mistake(tex, uv, wrap, x, y, got) -> str:
         (lambda: plain_bilinear(tex, uv, wrap, centre=0.0),
          f": you sampled at texel corners: texel centres are at (i + ½)/W, so x = u·W − ½ "
          f"(here {num(x)}), not u·W"),
+        (lambda: plain_bilinear(tex, uv, wrap, centre=0.0, span=-1),
+         f": u·(W − 1) puts the first and last texel centres at u = 0 and 1; texel centres are "
+         f"at (i + ½)/W, so x = u·W − ½ (here {num(x)})"),
         (lambda: plain_bilinear(tex, uv, wrap, floor=np.trunc),
          f": int() truncates toward zero: for {'x' if x < 0 else 'y'} = {num(min(x, y))} the "
          f"texel to the {'left' if x < 0 else 'top'} is ⌊{num(min(x, y))}⌋ = "
