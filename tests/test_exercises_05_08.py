@@ -275,3 +275,19 @@ def test_student_version_holds_no_answer_and_the_text_no_formula(path):
     for line in answers:
         assert line not in student, line
         assert line not in markdown, line
+
+
+def test_a_slow_function_spends_the_budget_and_no_more():
+    import time
+
+    from teachraster.exercises.later import EXERCISES
+
+    def slow(z, bits):
+        time.sleep(0.05)
+        return round(z * (2**bits - 1))
+
+    start = time.perf_counter()
+    report = EXERCISES["depth_to_unorm"](slow, budget=0.3)
+    assert time.perf_counter() - start < 2
+    assert not report.passed
+    assert "not run: the 0.3 s the check may take were spent" in report.failures[-1].explanation

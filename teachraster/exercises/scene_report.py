@@ -11,13 +11,18 @@ student's function plugged into a small scene beside the package's
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import running
 from .report import Failure, Report
 from .running import run_case
+
+#: Seconds all cases of one check may take together.
+BUDGET = 10.0
 
 
 @dataclass(frozen=True)
@@ -64,19 +69,30 @@ class SceneReport(Report):
         return np.argwhere(self.scene.differs())
 
 
-def check_cases(name: str, fn: Callable, cases, convert, same, explain, draw, scene=None):
+def check_cases(
+    name: str, fn: Callable, cases, convert, same, explain, draw, scene=None, budget=BUDGET
+):
     """Run ``fn(*args)`` on ``cases`` of (label, args, expected) and explain each failure.
 
     ``convert`` turns the returned value into the answer's type (or raises
     :class:`.running.WrongAnswerType`); ``same(got, expected, args)`` accepts it;
     ``explain(args, expected, got)`` says why it is wrong; ``draw(ax, case, got)`` draws a
-    case. ``scene(fn)`` builds the whole-picture comparison.
+    case. ``scene(fn)`` builds the whole-picture comparison. All cases together may take
+    ``budget`` seconds (each at most :data:`.running.CASE_LIMIT`); cases left when it is
+    spent fail as "not run", so a slow function can never hang the notebook.
     """
     failures = []
     built = None if scene is None else scene(fn)
+    start = time.perf_counter()
     for label, args, expected in cases:
+        left = budget - (time.perf_counter() - start)
+        if left <= 0:
+            text = f"not run: the {budget:g} s the check may take were spent on the cases before"
+            failures.append(Failure(label, text, expected, None))
+            continue
         copies = tuple(_copy(a) for a in args)
-        outcome = run_case(lambda copies=copies: convert(fn(*copies)))
+        limit = min(running.CASE_LIMIT, left)
+        outcome = run_case(lambda copies=copies: convert(fn(*copies)), limit)
         if outcome.not_implemented:
             example = _drawer(draw, cases[0], None)
             return SceneReport(
