@@ -235,14 +235,13 @@ def _source(cell):
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
 def test_notebook_follows_the_grading_convention(path):
     cells = _cells(path)
-    ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells if c["cell_type"] == "code"]
+    ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells]  # markdown cells too
     assert len(ids) == len(set(ids))
     solutions = 0
     for k, cell in enumerate(cells):
-        if cell["cell_type"] != "code":
-            continue
         meta, source = cell["metadata"]["nbgrader"], _source(cell)
-        assert not cell["outputs"] and cell["execution_count"] is None
+        if cell["cell_type"] == "code":
+            assert not cell["outputs"] and cell["execution_count"] is None
         if meta["solution"]:
             fn = meta["grade_id"].removesuffix("_solution")
             assert re.search(r"^ *### BEGIN SOLUTION$.*^ *### END SOLUTION$", source, re.M | re.S)
