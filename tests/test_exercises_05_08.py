@@ -290,3 +290,15 @@ def test_a_slow_function_spends_the_budget_and_no_more():
     assert time.perf_counter() - start < 2
     assert not report.passed
     assert "not run: the 0.3 s the check may take were spent" in report.failures[-1].explanation
+
+
+def test_not_implemented_on_some_cases_only_is_a_failure():
+    def half_done(z, bits):
+        if bits == 24:
+            raise NotImplementedError
+        return round(z * (2**bits - 1))
+
+    report = ex.check("depth_to_unorm", half_done)
+    assert not report.not_implemented and not report.passed
+    assert len(report.failures) == report.n_cases // 2
+    assert "NotImplementedError" in report.failures[0].explanation

@@ -15,7 +15,7 @@ from . import level_of_detail as lod
 from . import picture_scenes as scenes
 from . import texture_filtering as tf
 from . import tile_blocks as tb
-from .scene_report import BUDGET, check_cases
+from .scene_report import check_cases
 
 #: name: (cases, convert, same, explain, draw, scene)
 SPECS = {
@@ -53,7 +53,7 @@ SPECS = {
 def _checker(name: str) -> Callable:
     cases, convert, same, explain, draw, scene = SPECS[name]
 
-    def check(fn, budget=BUDGET):
+    def check(fn, budget=None):
         return check_cases(name, fn, cases(), convert, same, explain, draw, scene, budget)
 
     check.__name__ = f"check_{name}"
