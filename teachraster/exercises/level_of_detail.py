@@ -87,10 +87,9 @@ def _level_mistake(ddx, ddy, size, lx, ly, got) -> str:
             (rho, ": you returned ρ itself; λ = log2 ρ (each level halves the texels)"),
             (np.log2(rho**2), ": that is log2 of the squared length, twice λ: take the square "
              "root first (or halve the log)"),
-            (np.log2(lx), ": you used the x axis (ddx) only; GL takes the longer of both axes"),
-            (np.log2(ly), ": you used the y axis (ddy) only; GL takes the longer of both axes"),
-            (np.log2(min(lx, ly)), ": your λ uses the shorter of the two footprint axes; GL "
-             "takes the longer (ρ = max), so that no direction is undersampled"),
+            (np.log2(min(lx, ly)), f": your λ uses the shorter of the two footprint axes (here "
+             f"the {'x axis, ddx' if lx < ly else 'y axis, ddy'}); GL takes the longer (ρ = "
+             "max), so that no direction is undersampled"),
             (np.log2(lx + ly), ": your λ uses the sum of the derivatives; GL takes the longer "
              "of the two footprint axes"),
             (np.log2(scaled.sum()), ": your λ uses the sum of the derivatives; GL takes the "
