@@ -124,7 +124,7 @@ def test_explanations_quote_the_case():
 
 def test_a_wrong_type_is_named():
     report = ex.check("classify_block", lambda xy, x0, y0, size: "Partial")
-    assert "expected one of rejected, accepted, partial" in report.failures[0].explanation
+    assert "expected one of 'rejected', 'accepted', 'partial'" in report.failures[0].explanation
     report = ex.check("resolve", lambda c, i, b: 0.5)
     assert "expected one colour of 3 channels" in report.failures[0].explanation
 

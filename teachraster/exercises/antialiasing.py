@@ -14,6 +14,7 @@ decides, and compare the answer with what typical mistakes give.
 
 from __future__ import annotations
 
+from functools import cache
 from types import SimpleNamespace
 
 import numpy as np
@@ -27,6 +28,7 @@ from ..pipeline.render_triangles import Frame
 from .cases import SEED
 from .running import WrongAnswerType
 from .scalars import num, vec
+from .scene_report import refuse_non_answers
 from .tolerance import all_close, close
 
 
@@ -105,6 +107,7 @@ def _edge_words(xy, point) -> str:
     return ""
 
 
+@cache  # the same cases on every check: built once
 def coverage_cases():
     """Hard cases (samples on edges, off-grid vertices, ties of the snapping) then random."""
     four, out = sample_pattern(4), []
@@ -242,6 +245,7 @@ def draw_coverage_case(ax, case, got):
 
 
 def as_fraction(value) -> float:
+    refuse_non_answers(value, "a number")
     arr = np.asarray(value)
     if arr.size != 1 or arr.dtype.kind not in "uifb":
         try:
@@ -276,6 +280,7 @@ def _resolve_case(label, ids, colours, background):
     return (label, args, expected_resolve(*args))
 
 
+@cache  # the same cases on every check: built once
 def resolve_cases():
     red, green, blue = np.eye(3)
     white, grey = np.ones(3), np.array([0.2, 0.3, 0.4])
@@ -304,6 +309,11 @@ def resolve_cases():
 
 
 def as_colour(value) -> np.ndarray:
+    refuse_non_answers(value, "a colour")
+    if np.asarray(value, dtype=object).dtype.kind == "O" and any(
+        isinstance(v, str | bytes) for v in np.ravel(np.asarray(value, dtype=object))
+    ):
+        raise WrongAnswerType(f"returned {value!r:.60}: text, not a colour")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from functools import cache
 
 import numpy as np
 
@@ -21,6 +22,7 @@ from ..pipeline.depth import quantize
 from .cases import SEED
 from .running import WrongAnswerType
 from .scalars import num
+from .scene_report import refuse_non_answers
 
 #: The unorm depth formats of the package (GL_DEPTH_COMPONENT16 and 24).
 BITS = (16, 24)
@@ -46,6 +48,7 @@ def accepted(z: float, bits: int) -> tuple[int, ...]:
     return (low, low + 1) if near_tie else (stored(z, bits),)
 
 
+@cache  # the same cases on every check: built once
 def depth_cases():
     """Hard cases (0 and 1, exact ties, k/(2^bits − 1) just below an integer), then random."""
     zs = []
@@ -70,6 +73,7 @@ def depth_cases():
 
 def as_count(value) -> float:
     """The returned number (an int is expected; a float is judged by its value)."""
+    refuse_non_answers(value, "an integer")
     arr = np.asarray(value)
     if arr.size != 1 or arr.dtype.kind not in "uif":
         raise WrongAnswerType(f"returned {value!r:.60}, not an integer")

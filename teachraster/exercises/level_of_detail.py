@@ -11,6 +11,8 @@ answer the student's reproduces.
 
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
 
 from ..pipeline.texture_filters import footprint_axes, mip_level
@@ -23,6 +25,7 @@ def expected_level(ddx, ddy, size) -> float:
     return float(mip_level(np.asarray(ddx, dtype=float), np.asarray(ddy, dtype=float), size))
 
 
+@cache  # the same cases on every check: built once
 def level_cases():
     """Hard cases (λ = 0, between levels, either axis longer, non-square, magnified), random."""
     t = 1 / 64

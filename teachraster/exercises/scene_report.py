@@ -18,7 +18,31 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .report import Failure, Report
-from .running import run_case
+from .running import WrongAnswerType, run_case
+
+#: What a forgotten ``return`` gives, in the words of every exercise's checker.
+RETURNED_NONE = "returned None (a missing `return`?)"
+
+
+def refuse_non_answers(value, what: str) -> None:
+    """Raise :class:`.running.WrongAnswerType` for None, text and containers of names.
+
+    numpy would read the text "0.5" as a number; a student's function that returns text has
+    a bug worth naming, not an answer.
+    """
+    if value is None:
+        raise WrongAnswerType(RETURNED_NONE)
+    if isinstance(value, str | bytes | np.bytes_):
+        raise WrongAnswerType(f"returned the text {value!r:.40}, not {what}")
+    if isinstance(value, dict | set):
+        raise WrongAnswerType(f"returned a {type(value).__name__}, not {what}")
+
+
+def failure(case, explanation, expected, got, draw=None, kind="") -> Failure:
+    """A :class:`.Failure`, with its kind where the report sorts failures by kind."""
+    if kind and "kind" in getattr(Failure, "__dataclass_fields__", {}):
+        return Failure(case, explanation, expected, got, draw, kind=kind)
+    return Failure(case, explanation, expected, got, draw)
 
 
 @dataclass(frozen=True)
@@ -85,20 +109,21 @@ def check_cases(
         left = None if budget is None else budget - (time.perf_counter() - start)
         if left is not None and left <= 0:
             text = f"not run: the {budget:g} s the check may take were spent on the cases before"
-            failures.append(Failure(label, text, expected, None))
+            failures.append(failure(label, text, expected, None, kind="budget"))
             continue
         copies = tuple(_copy(a) for a in args)
         outcome = run_case(lambda copies=copies: convert(fn(*copies)), left)
         if outcome.not_implemented:
             unimplemented += 1
             text = outcome.error or "your function raised NotImplementedError on this case"
-            failures.append(Failure(label, text, expected, None))
+            failures.append(failure(label, text, expected, None, kind="not implemented"))
         elif outcome.error:
-            failures.append(Failure(label, outcome.error, expected, None))
+            kind = getattr(outcome, "kind", "") or _kind(outcome.error)
+            failures.append(failure(label, outcome.error, expected, None, kind=kind))
         elif not same(outcome.value, expected, args):
             text = explain(args, expected, outcome.value)
             drawing = _drawer(draw, (label, args, expected), outcome.value)
-            failures.append(Failure(label, text, expected, outcome.value, drawing))
+            failures.append(failure(label, text, expected, outcome.value, drawing))
     if unimplemented == len(cases):
         return SceneReport(
             exercise=name, failures=[], n_cases=len(cases), not_implemented=True,
@@ -108,6 +133,15 @@ def check_cases(
     return SceneReport(
         exercise=name, failures=failures, n_cases=len(cases), example=example, scene=built
     )
+
+
+def _kind(error: str) -> str:
+    """The kind of a failed run, from its words (where the runner does not say it)."""
+    if RETURNED_NONE in error:
+        return "none"
+    if error.startswith("your function returned"):
+        return "type"
+    return "timeout" if "stopped" in error else "raised"
 
 
 def _copy(value):

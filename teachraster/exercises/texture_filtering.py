@@ -16,6 +16,8 @@ floor, swapped weights...), and with the package's own filters on other levels.
 
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
 
 from ..pipeline.mip_pyramid import mipmap
@@ -23,6 +25,7 @@ from ..pipeline.texture import sample
 from .cases import SEED
 from .running import WrongAnswerType
 from .scalars import num, vec
+from .scene_report import refuse_non_answers
 from .tolerance import all_close
 
 
@@ -36,6 +39,9 @@ def expected_trilinear(pyramid, uv, lod, wrap) -> np.ndarray:
 
 
 def as_texel_value(value) -> np.ndarray:
+    refuse_non_answers(value, "a number or a colour")
+    if any(isinstance(v, str | bytes) for v in np.ravel(np.asarray(value, dtype=object))):
+        raise WrongAnswerType(f"returned {value!r:.60}: text, not a number or a colour")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -84,6 +90,7 @@ def _texture(rng, h, w, channels=0):
     return np.round(rng.uniform(0, 1, size=shape), 3)
 
 
+@cache  # the same cases on every check: built once
 def bilinear_cases():
     """Texel centres and corners, the border in both wrap modes, odd sizes; then random."""
     rng = np.random.default_rng(SEED + 80)
@@ -194,6 +201,7 @@ def draw_texture_case(ax, case, got):
 
 
 # -- trilinear --------------------------------------------------------------------------------
+@cache  # the same cases on every check: built once
 def trilinear_cases():
     """λ below, on, between and above the levels; square and non-square pyramids; random."""
     rng = np.random.default_rng(SEED + 90)

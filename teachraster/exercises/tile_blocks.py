@@ -18,6 +18,8 @@ classification the usual mistakes give.
 
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
 
 from ..core.edges import edge_values_at, passes, setup_edges
@@ -25,6 +27,7 @@ from ..core.snapping import SUBPIXEL_BITS, snap
 from .cases import SEED
 from .running import WrongAnswerType
 from .scalars import num, tri_words, vec
+from .scene_report import RETURNED_NONE
 
 KINDS = ("rejected", "accepted", "partial")
 
@@ -70,9 +73,14 @@ def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
 
 
 def as_kind(value) -> str:
-    if not isinstance(value, str) or value not in KINDS:
-        raise WrongAnswerType(f"returned {value!r:.60}; expected one of {', '.join(KINDS)}")
-    return value
+    names = ", ".join(repr(k) for k in KINDS)
+    if value is None:
+        raise WrongAnswerType(RETURNED_NONE)
+    if not isinstance(value, str):
+        raise WrongAnswerType(f"returned {value!r:.60}, not one of the texts {names}")
+    if value not in KINDS:
+        raise WrongAnswerType(f"returned the text {value!r:.40}; expected one of {names}")
+    return str(value)
 
 
 def same_kind(got, expected, args) -> bool:
@@ -106,6 +114,7 @@ def _hard_blocks():
     ]  # fmt: skip
 
 
+@cache  # the same cases on every check: built once
 def block_cases():
     """Hard blocks (vertices, edges through corners, tiny triangles, zero area), then random."""
     blocks = [
