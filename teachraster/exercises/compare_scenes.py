@@ -93,7 +93,7 @@ class Scene:
 def call(fn, convert, *args):
     """The student's ``fn(*args)`` on copies of the arguments, converted like a check does."""
     copies = [a.copy() if isinstance(a, np.ndarray) else a for a in args]
-    copies = [[c.copy() for c in a] if isinstance(a, list) else a for a in copies]
+    copies = [type(a)(c.copy() for c in a) if isinstance(a, list) else a for a in copies]
     return convert(fn(*copies))
 
 

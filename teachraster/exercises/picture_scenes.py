@@ -244,7 +244,12 @@ def _texel_explainer(uv, texture, reference, lam=None):
         if lam is None:
             args = (texture.copy(), uv[row, col].copy(), "repeat")
             return tf.explain_bilinear(args, reference[row, col], got[row, col])
-        args = ([lv.copy() for lv in texture], uv[row, col].copy(), float(lam[row, col]), "repeat")
+        args = (
+            tf.Pyramid(lv.copy() for lv in texture),
+            uv[row, col].copy(),
+            float(lam[row, col]),
+            "repeat",
+        )
         return tf.explain_trilinear(args, reference[row, col], got[row, col])
 
     return explain
@@ -252,7 +257,7 @@ def _texel_explainer(uv, texture, reference, lam=None):
 
 def trilinear_scene(fn) -> Scene:
     uv, ddx, ddy = floor()
-    pyramid = list(floor_texture(64)[1:])
+    pyramid = tf.Pyramid(floor_texture(64)[1:])
     lam = mip_level(ddx, ddy, pyramid[0].shape)
     reference = sample(pyramid, uv, "trilinear", "repeat", lod=lam)
 

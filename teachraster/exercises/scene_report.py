@@ -149,7 +149,7 @@ def _copy(value):
     if isinstance(value, np.ndarray):
         return value.copy()
     if isinstance(value, list):
-        return [_copy(v) for v in value]
+        return type(value)(_copy(v) for v in value)  # a Pyramid stays a Pyramid
     return value
 
 

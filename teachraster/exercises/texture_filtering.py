@@ -29,6 +29,20 @@ from .scene_report import refuse_non_answers
 from .tolerance import all_close
 
 
+class Pyramid(list):
+    """A mip pyramid as the trilinear cases pass it: the list of levels, level 0 first.
+
+    numpy sees it as what it is, a sequence of levels (``np.size`` is their number,
+    ``np.asarray`` an object array of them), instead of failing on their different shapes.
+    """
+
+    def __array__(self, dtype=None, copy=None):
+        out = np.empty(len(self), dtype=object)
+        for k, level in enumerate(self):
+            out[k] = level
+        return out
+
+
 def expected_bilinear(texture, uv, wrap) -> np.ndarray:
     return sample(texture, np.asarray(uv, dtype=float)[None], "bilinear", wrap)[0]
 
@@ -205,7 +219,7 @@ def draw_texture_case(ax, case, got):
 def trilinear_cases():
     """λ below, on, between and above the levels; square and non-square pyramids; random."""
     rng = np.random.default_rng(SEED + 90)
-    p8, p84, p3 = (mipmap(_texture(rng, *s)) for s in ((8, 8), (8, 4), (8, 8, 3)))
+    p8, p84, p3 = (Pyramid(mipmap(_texture(rng, *s))) for s in ((8, 8), (8, 4), (8, 8, 3)))
     hard = [
         ("λ = 0: level 0 only", p8, (0.3, 0.6), 0.0, "repeat"),
         ("λ = 1: level 1 only", p8, (0.3, 0.6), 1.0, "repeat"),
@@ -224,7 +238,7 @@ def trilinear_cases():
     out = [(label, (pyr, np.array(uv, float), lod, wrap)) for label, pyr, uv, lod, wrap in hard]
     for n in range(12):
         h, w = (int(2 ** rng.integers(0, 5)) for _ in range(2))
-        pyr = mipmap(_texture(rng, h, w, 3 if n % 4 == 1 else 0))
+        pyr = Pyramid(mipmap(_texture(rng, h, w, 3 if n % 4 == 1 else 0)))
         uv = np.round(rng.uniform(-0.5, 1.5, size=2), 4)
         lod = float(np.round(rng.uniform(-1, len(pyr)), 3))
         out.append((f"random {n + 1}: {h}×{w}", (pyr, uv, lod, ("repeat", "clamp")[n % 2])))
