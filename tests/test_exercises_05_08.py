@@ -302,3 +302,12 @@ def test_not_implemented_on_some_cases_only_is_a_failure():
     assert not report.not_implemented and not report.passed
     assert len(report.failures) == report.n_cases // 2
     assert "NotImplementedError" in report.failures[0].explanation
+
+
+def test_a_pixel_is_a_pair_of_ints_inside_the_picture():
+    report = ex.check("mip_level", CORRECT["mip_level"])
+    with pytest.raises(TypeError, match="pixel must be a pair of ints"):
+        report.explain_pixel(1.5, 2)
+    with pytest.raises(ValueError, match="pixel must lie in the"):
+        report.explain_pixel(0, 10_000)
+    assert report.explain_pixel(np.int64(20), 10).startswith("yours and the package's agree")

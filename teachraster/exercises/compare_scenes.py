@@ -19,6 +19,7 @@ matplotlib is imported only when a comparison is drawn.
 
 from __future__ import annotations
 
+import operator
 import textwrap
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -81,6 +82,7 @@ class Scene:
 
     def explain(self, row: int, col: int) -> str:
         """Why pixel (row, col) of the student's picture differs, in the checker's words."""
+        row, col = as_pixel((row, col))
         h, w = self.reference.shape[:2]
         if not (0 <= row < h and 0 <= col < w):
             raise ValueError(f"pixel must lie in the {h} × {w} picture, got ({row}, {col})")
@@ -88,6 +90,15 @@ class Scene:
         if got is None:
             return f"no picture of yours: {self.error}"
         return self.explain_at(got, row, col)
+
+
+def as_pixel(pixel) -> tuple[int, int]:
+    """``pixel`` as (row, col) Python ints, or a TypeError naming it."""
+    try:
+        row, col = pixel
+        return operator.index(row), operator.index(col)
+    except (TypeError, ValueError):
+        raise TypeError(f"pixel must be a pair of ints (row, col), got {pixel!r}") from None
 
 
 def call(fn, convert, *args):
@@ -177,7 +188,7 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
         differs = scene.differs() if got is not None else np.zeros(1, dtype=bool)
         pixel = tuple(np.argwhere(differs)[0]) if differs.any() else None
     if pixel is not None:
-        marks.show(*pixel)
+        marks.show(*as_pixel(pixel))
     if connect:
         # a function, not the bound method: the canvas keeps only weak references to methods
         axes[0].figure.canvas.mpl_connect("button_press_event", lambda e: marks.click(e))
