@@ -193,6 +193,15 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     assert len(fig.axes) == 3 and fig.axes[2].get_title() == "no pixel differs"
 
 
+@pytest.mark.parametrize("mistake", [m for m, (name, _, _) in MISTAKES.items() if name in LATER])
+def test_every_typical_mistake_shows_in_the_picture(mistake):
+    name, fn, _ = MISTAKES[mistake]
+    report = ex.check(name, fn)
+    differing = report.differing_pixels()
+    assert len(differing) > 0
+    assert "agree" not in report.explain_pixel(*differing[-1])
+
+
 def test_a_click_explains_the_clicked_pixel(plt):
     from types import SimpleNamespace
 

@@ -46,6 +46,9 @@ class Scene:
     explain_at: Callable[[np.ndarray, int, int], str]  # (student picture, row, col) -> words
     categories: tuple[tuple[str, str], ...] = ()  # (name, colour) per code; () = continuous
     parts: object = field(default=None, repr=False)  # the student's values behind the picture
+    #: The package's values behind the picture, (k, H, W), where a pixel's picture may agree
+    #: while its values do not (a wrong depth can still lose the same depth test): compared too.
+    reference_parts: np.ndarray | None = field(default=None, repr=False)
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
@@ -69,7 +72,10 @@ class Scene:
         if got is None:
             return np.ones(ref.shape[:2], dtype=bool)
         same = np.isclose(got, ref, rtol=1e-9, atol=1e-9) | (np.isnan(got) & np.isnan(ref))
-        return ~same.reshape(*ref.shape[:2], -1).all(axis=2)
+        differs = ~same.reshape(*ref.shape[:2], -1).all(axis=2)
+        if self.reference_parts is not None and self.parts is not None:
+            differs |= ~np.isclose(self.parts, self.reference_parts, rtol=0, atol=0).all(axis=0)
+        return differs
 
     def difference(self) -> np.ndarray:
         """(H, W) largest absolute difference per pixel (continuous pictures), NaN = none."""

@@ -136,8 +136,8 @@ def two_planes():
     xy = np.array([[-1.0, -1.0], [70.0, -1.0], [-1.0, 40.0]])
     za = rasterize(Triangle(xy, z=[0.7, 0.7 + 71 * 2e-6, 0.7 + 41 * 1e-6]), 32, 16).depth
     zb = rasterize(Triangle(xy, z=[0.70003, 0.70003 - 71 * 1e-6, 0.70003 - 41 * 2e-6]), 32, 16).depth  # fmt: skip
-    winner = _winner(_stored(za), _stored(zb))
-    return _frozen(za, zb, winner)
+    stored = np.stack([_stored(za), _stored(zb)])
+    return _frozen(za, zb, _winner(*stored), stored)
 
 
 def _stored(z):
@@ -150,7 +150,7 @@ def _winner(stored_a, stored_b):
 
 
 def depth_scene(fn) -> Scene:
-    za, zb, reference = two_planes()
+    za, zb, reference, stored = two_planes()
 
     def run():
         a = np.vectorize(lambda d: call(fn, dp.as_count, float(d), DEPTH_BITS))(za)
@@ -164,11 +164,12 @@ def depth_scene(fn) -> Scene:
         for name, z, yours in (("A", za[row, col], a), ("B", zb[row, col], b)):
             if not dp.same_depth(yours, dp.stored(z, DEPTH_BITS), (float(z), DEPTH_BITS)):
                 words.append(f"surface {name}: " + dp.explain_depth((float(z), DEPTH_BITS), dp.stored(z, DEPTH_BITS), yours))  # fmt: skip
-        head = f"A (drawn first) stores {num(a)}, B {num(b)} in your buffer; B wins only with a strictly smaller value"  # fmt: skip
+        head = f"A (drawn first) stores {num(a, b)}, B {num(b, a)} in your buffer; B wins only with a strictly smaller value"  # fmt: skip
         return "; ".join([head, *words])
 
     categories = (("nothing", "#ffffff"), ("A stays", "#2b7bba"), ("B passes", "#ff9f1c"))
-    scene = Scene("two nearly coplanar triangles, 16-bit depth", reference, run, explain, categories)  # fmt: skip
+    title = "two nearly coplanar triangles, 16-bit depth"
+    scene = Scene(title, reference, run, explain, categories, reference_parts=stored)
     return scene
 
 
@@ -269,7 +270,7 @@ def trilinear_scene(fn) -> Scene:
 
 # -- the tile walk (classify_block) -----------------------------------------------------------
 TILE_IMAGE, TILE_SIZES = 48, (16, 4)
-TILE_TRIANGLE = np.array([[2.5, 2.5], [46.0, 10.5], [10.5, 45.5]])
+TILE_TRIANGLE = np.array([[6.0, 6.0], [45.5, 17.5], [17.5, 45.5]])  # each classic mistake shows
 #: Pixel codes of the walk: the deepest verdict each pixel got.
 WALK = (
     ("rejected", "#ffffff"),
