@@ -244,6 +244,8 @@ def check_values(name: str, fn) -> Report:
     return _check_values(name, fn, cases(), convert, same, explain, draw)
 
 
+from . import later  # noqa: E402  (exercises 05–08: their own modules, registered below)
+
 #: The exercises in course order, and what checks each.
 EXERCISES: dict[str, Callable] = {
     "edge_function": lambda fn: check_values("edge_function", fn),
@@ -254,6 +256,7 @@ EXERCISES: dict[str, Callable] = {
     "perspective": lambda fn: check_values("perspective", fn),
     "depth_test": lambda fn: check_values("depth_test", fn),
     "clip_near": lambda fn: check_values("clip_near", fn),
+    **later.EXERCISES,  # 05–08: depth precision, antialiasing, texture filtering, tiles
     **lines_blending.EXERCISES,  # lesson 12: line_pixels, over, over_premultiplied
 }
 
