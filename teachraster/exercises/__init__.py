@@ -2,7 +2,7 @@
 
 >>> from teachraster import exercises as ex
 >>> ex.names()
-['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near', 'line_pixels', 'over', 'over_premultiplied']
+['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near', 'depth_to_unorm', 'coverage_fraction', 'resolve', 'mip_level', 'bilinear', 'trilinear', 'classify_block', 'line_pixels', 'over', 'over_premultiplied']
 >>> report = ex.check("depth_test", lambda incoming, stored: incoming <= stored)
 >>> report.passed
 False
