@@ -12,12 +12,18 @@ EDGE_COLOUR = "#ff9f1c"
 
 
 def draw_coverage(ax, case, xy, expected, got, edge, pixel):
-    """Pixels of the window coloured by state, the triangle, the deciding edge, the pixel."""
+    """Pixels of the window coloured by state, the triangle, the deciding edge, the pixel.
+
+    ``got`` None (the function gave no answer): the rule's pixels alone.
+    """
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
 
     h, w = expected.shape
-    state = np.where(expected == got, expected.astype(int), np.where(expected, 2, 3))
+    if got is None:
+        state = expected.astype(int)
+    else:
+        state = np.where(expected == got, expected.astype(int), np.where(expected, 2, 3))
     x0, y0 = case.origin
     artists = [
         ax.imshow(
@@ -43,6 +49,8 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
         i, j = pixel
         artists += ax.plot(x0 + j + 0.5, y0 + i + 0.5, "o", mfc="none", mec="black", ms=9)
     handles = [Patch(color=STATE_COLOURS[s], label=STATE_NAMES[s]) for s in (1, 2, 3)]
+    if got is None:
+        handles = [Patch(color=STATE_COLOURS[1], label="covered by the rule")]
     # outside the axes, to the right: the legend must never hide a pixel
     legend = ax.legend(
         handles=handles, fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)
