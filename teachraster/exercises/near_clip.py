@@ -14,7 +14,7 @@ from ..pipeline.clipping import clip_polygon, distances
 from ..study.hardcases import CASES
 from .cases import SEED
 from .scalars import num, vec
-from .tolerance import TOL, same_polygon
+from .tolerance import TOL, all_close, same_polygon
 
 
 def near_only(v: np.ndarray) -> bool:
@@ -130,4 +130,6 @@ def _poly(p: np.ndarray, other: np.ndarray) -> str:
     if not len(other):
         return "[" + ", ".join(vec(q) for q in p) + "]"
     near = [other[int(np.argmin(np.abs(other - q).sum(axis=1)))] for q in p]
+    # a vertex that matches (within the tolerance) needs no more digits than usual
+    near = [None if all_close(q, r) else r for q, r in zip(p, near)]
     return "[" + ", ".join(vec(q, r) for q, r in zip(p, near)) + "]"

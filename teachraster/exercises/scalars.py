@@ -44,6 +44,8 @@ def num(x: float, other: float | None = None) -> str:
     ('3.045', '1.0000001', '2', '100009.73828125')
     >>> num(0.8, 0.8000000000000002), num(0.8000000000000002, 0.8)
     ('0.8', '0.8000000000000002')
+    >>> num(25.0, 25.0000025), num(25.0000025, 25.0)
+    ('25', '25.0000025')
     """
     x = float(x)
     if not np.isfinite(x):
@@ -54,7 +56,9 @@ def num(x: float, other: float | None = None) -> str:
     o = float(other)
     if not np.isfinite(o) or x == o or text != _readable(o, False):
         return text
-    for digits in range(1, 18):
+    # at least the integer digits: 25.0000025 is never shortened to 3e+01
+    first = max(1, int(np.floor(np.log10(max(abs(x), abs(o), 1e-300)))) + 1)
+    for digits in range(min(first, 17), 18):
         text = f"{x:.{digits}g}"
         if text != f"{o:.{digits}g}":
             break

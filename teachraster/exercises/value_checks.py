@@ -106,20 +106,28 @@ def float32_note(text: str, got, expected) -> str:
     dtype = low_precision(got)
     if dtype is not None:
         digits = 7 if dtype == "float32" else 3
-        return (
-            f"{text} Your answer is a {dtype} (about {digits} significant digits): compute in "
-            "float64 and return that"
+        return _then(
+            text,
+            f"Your answer is a {dtype} (about {digits} significant digits): compute in float64 "
+            "and return that",
         )
     g, e = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
     if g.shape != e.shape or not (np.isfinite(g).all() and np.isfinite(e).all()):
         return text
     error = float(np.max(np.abs(g - e) / np.maximum(1.0, np.abs(e)), initial=0.0))
     if 0 < error < 1e-5:
-        return (
-            f"{text} The difference ({num(error)} relative) is about float32's rounding (6e-8 "
-            "relative per operation): did you compute in float32? Use float64"
+        return _then(
+            text,
+            f"The difference ({num(error)} relative) is about float32's rounding (6e-8 relative "
+            "per operation): did you compute in float32? Use float64",
         )
     return text
+
+
+def _then(text: str, sentence: str) -> str:
+    """``text`` followed by another sentence."""
+    text = text.rstrip()
+    return f"{text}{'' if text.endswith('.') else '.'} {sentence}"
 
 
 def _drawer(draw, case, got):
