@@ -45,7 +45,7 @@ def num(x: float, other: float | None = None) -> str:
     >>> num(0.8, 0.8000000000000002), num(0.8000000000000002, 0.8)
     ('0.8', '0.8000000000000002')
     >>> num(25.0, 25.0000025), num(25.0000025, 25.0)
-    ('25', '25.0000025')
+    ('25', '25.000003')
     """
     x = float(x)
     if not np.isfinite(x):
@@ -56,12 +56,16 @@ def num(x: float, other: float | None = None) -> str:
     o = float(other)
     if not np.isfinite(o) or x == o or text != _readable(o, False):
         return text
-    # at least the integer digits: 25.0000025 is never shortened to 3e+01
-    first = max(1, int(np.floor(np.log10(max(abs(x), abs(o), 1e-300)))) + 1)
-    for digits in range(min(first, 17), 18):
-        text = f"{x:.{digits}g}"
-        if text != f"{o:.{digits}g}":
+    # more digits than the readable form, never fewer: decimals, or significant digits for
+    # tiny and huge values (as the readable form has them)
+    decimals = 1e-3 <= abs(x) < 1e15
+    for digits in range(3, 21 if decimals else 18):
+        form = f".{digits}{'f' if decimals else 'g'}"
+        text = format(x, form)
+        if text != format(o, form):
             break
+    if decimals:
+        text = text.rstrip("0").rstrip(".")
     return min(text, repr(x), key=len)
 
 
