@@ -231,3 +231,22 @@ def test_depth_explanations_tell_near_ties_apart():
         m = re.search(r"incoming depth (\S+) .*the stored (\S+)", f.explanation)
         if m and "equals" not in f.explanation:
             assert m.group(1) != m.group(2), f.explanation
+
+
+def test_barycentric_sign_mistakes_are_told_apart():
+    def over_abs_area(xy, p):
+        a, b, c = (np.asarray(q, dtype=float) for q in xy)
+        w = np.array([E(b, c, p), E(c, a, p), E(a, b, p)])
+        return w / abs(E(a, b, c))
+
+    def edges_reversed(xy, p):
+        a, b, c = (np.asarray(q, dtype=float) for q in xy)
+        return np.array([E(c, b, p), E(a, c, p), E(b, a, p)]) / E(a, b, c)
+
+    report = ex.check("barycentric", over_abs_area)
+    assert report.failures and all(f.kind == "absolute area" for f in report.failures)
+    assert "not by its absolute value" in report.failures[0].explanation
+    report = ex.check("barycentric", edges_reversed)
+    assert len(report.failures) == report.n_cases
+    assert all(f.kind == "sign" for f in report.failures)
+    assert all("absolute value" not in f.explanation for f in report.failures)

@@ -51,7 +51,7 @@ def _array(value, what: str, max_size: int) -> np.ndarray:
     if size is None and isinstance(value, (list, tuple)) and len(value) > max_size:
         size = len(value)
     if size is not None and size > max_size:
-        raise WrongAnswerType(f"returned {short(value)}: far too many values for {what}")
+        raise WrongAnswerType(f"returned {short(value)}: {size} values where {what} is expected")
     try:
         return np.asarray(value)
     except (TypeError, ValueError) as exc:  # ragged lists and the like
@@ -82,7 +82,10 @@ def _to_float(arr: np.ndarray, value, what: str) -> np.ndarray:
                 raise WrongAnswerType(
                     f"returned {short(value)}, which holds a {type(item).__name__}, not {what}"
                 )
-        return np.array([float(x) for x in items], dtype=float).reshape(arr.shape)
+        try:
+            return np.array([float(x) for x in items], dtype=float).reshape(arr.shape)
+        except OverflowError:
+            raise WrongAnswerType(f"returned {short(value)}, too large for a float") from None
     raise WrongAnswerType(f"returned {short(value)}, not {what}")
 
 

@@ -98,7 +98,12 @@ VALUE_EXERCISES = {
         scalars.split_point_cases, as_number, close, scalars.explain_split_point, _draw_split
     ),
     "barycentric": ValueExercise(
-        scalars.barycentric_cases, _vector3, all_close, scalars.explain_barycentric, _draw_bary
+        scalars.barycentric_cases,
+        _vector3,
+        all_close,
+        scalars.explain_barycentric,
+        _draw_bary,
+        scalars.barycentric_pattern,
     ),
     "perspective": ValueExercise(
         scalars.perspective_cases, as_number, close, scalars.explain_perspective, _draw_persp

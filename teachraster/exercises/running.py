@@ -14,6 +14,7 @@ budget. A ``SystemExit`` (``exit()`` in the student's code) is a failure like an
 from __future__ import annotations
 
 import math
+import numbers
 import sys
 import threading
 import time
@@ -30,7 +31,7 @@ __all__ = ["CaseInterrupt", "Outcome", "WrongAnswerType", "budget", "run_case", 
 DEFAULT_BUDGET = 10.0
 #: The share of the budget one case may take: 2 s of the default 10 s.
 CASE_SHARE = 0.2
-#: Seconds the checker's own explanations may take even when the student used up the budget.
+#: Seconds the checker's own explanations may take after the budget (once, for all of them).
 GRACE = 0.5
 #: Explanation of a case that did not run because the check had stopped.
 SKIPPED = "not run: the check stopped at an earlier case"
@@ -105,7 +106,7 @@ class budget:  # noqa: N801 - used as a context manager, named like one
 
 def check_seconds(seconds, name: str = "budget") -> float:
     """A positive, finite number of seconds, or a ``TypeError``/``ValueError`` naming it."""
-    if isinstance(seconds, bool) or not isinstance(seconds, (int, float)):
+    if isinstance(seconds, bool) or not isinstance(seconds, numbers.Real):
         raise TypeError(f"{name} must be a number of seconds, got {type(seconds).__name__}")
     if not (math.isfinite(seconds) and seconds > 0):
         raise ValueError(f"{name} must be a positive, finite number of seconds, got {seconds!r}")
@@ -197,12 +198,15 @@ def describe_exception(exc: BaseException) -> Outcome:
 
 
 def run_checker(body: Callable[[], Any], fallback: Any) -> Any:
-    """Run the checker's own comparison or explanation within the budget (at least GRACE s).
+    """Run the checker's own comparison or explanation within the budget (plus GRACE s).
 
     Returns ``fallback`` when it runs out of time or fails (a huge or strange answer).
     """
     b = current()
-    alarm = Alarm(max(b.remaining(), GRACE), sys._getframe())
+    left = b.remaining() + GRACE  # the explanations' grace is counted once, not per call
+    if left <= 0:
+        return fallback
+    alarm = Alarm(left, sys._getframe())
     try:
         try:
             alarm.start()

@@ -117,9 +117,9 @@ def explain_edge_function(args, expected, got, absolute: bool = False):
     if absolute and close(got, -expected):
         return "abs", (
             f"for {where} your {num(got)} is |E|: {formula} = {num(expected)} is negative "
-            "here, and its sign carries the side of the edge p lies on (the interior is where "
-            "all three E share the sign of E(v1, v2, v3)): return E itself, not abs(E) (that "
-            "is right only where E ≥ 0)"
+            "here, because p lies to the left of a→b as seen on screen (y down). E's sign "
+            "carries the side (the interior is where all three E share the sign of "
+            "E(v1, v2, v3)): return E itself, not abs(E) (that is right only where E ≥ 0)"
         )
     if close(got, -expected):
         return "negated", (
@@ -180,16 +180,34 @@ def barycentric_cases():
     return out
 
 
-def explain_barycentric(args, expected, got) -> str:
+def barycentric_pattern(results) -> dict:
+    """``absolute_area=True`` when the answers are right on one winding and negated on the
+    other (divided by |E(v1, v2, v3)|), not negated on both (edges taken the other way)."""
+    flips = [
+        all_close(got, -e) and not all_close(got, e)
+        for (xy, _), e, got in results
+        if float(edge_function(xy[0], xy[1], xy[2])) > 0
+    ]
+    return {"absolute_area": not any(flips)}
+
+
+def explain_barycentric(args, expected, got, absolute_area: bool = True):
     xy, p = args
     got = np.asarray(got, dtype=float)
     head = f"at p={vec(p)} in {tri_words(xy)} your λ = {vec(got, expected)}"
     right = f"the weights are {vec(expected, got)}"
     area = float(edge_function(xy[0], xy[1], xy[2]))
-    if all_close(got, -expected):
-        return "sign", (
+    if all_close(got, -expected) and area < 0 and absolute_area:
+        return "absolute area", (
             f"{head}; {right}: divide by the signed area E(v1, v2, v3) = {num(area)} (negative: "
             "this triangle runs counter-clockwise on screen), not by its absolute value"
+        )
+    if all_close(got, -expected):
+        return "sign", (
+            f"{head}; {right}: every weight has the wrong sign. λ1 = E(v2, v3, p), λ2 = "
+            f"E(v3, v1, p), λ3 = E(v1, v2, p), each over E(v1, v2, v3) = {num(area)}: take "
+            "each edge in the triangle's order (you have the edges, or the products in E, the "
+            "other way round)"
         )
     for perm in ((0, 2, 1), (1, 0, 2), (2, 1, 0), (1, 2, 0), (2, 0, 1)):
         if all_close(got, expected[list(perm)]):
