@@ -22,16 +22,13 @@ def _vector3(value) -> np.ndarray:
 
 
 def _polygon(value) -> np.ndarray:
-    if isinstance(value, (list, tuple, np.ndarray)) and np.size(value) == 0:
-        return np.zeros((0, 4))
-    if (
-        isinstance(value, (list, tuple, np.ndarray))
-        and np.ndim(value[:1])
-        and len(value) > MAX_VERTICES
-    ):
+    sized = isinstance(value, (list, tuple)) or (isinstance(value, np.ndarray) and value.ndim)
+    if sized and len(value) > MAX_VERTICES:  # before any conversion: a huge answer costs nothing
         raise WrongAnswerType(
             f"returned {short(value)}: a triangle clipped by one plane has at most 4 vertices"
         )
+    if sized and np.size(value) == 0:
+        return np.zeros((0, 4))
     return as_numbers(value, (-1, 4), "an (n, 4) array of vertices (x, y, z, w)")
 
 

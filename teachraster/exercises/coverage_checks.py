@@ -128,4 +128,19 @@ def check_covers(fn) -> Report:
 def check_fill(fn) -> Report:
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
-    return _check_coverage("fill", fn, cases, _fill_body)
+    report = _check_coverage("fill", fn, cases, _fill_body)
+    return replace(report, comparison=_lazy_comparison(fn, current().seconds))
+
+
+def _lazy_comparison(fn, seconds: float):
+    """The whole-picture comparison, computed on the first ``report.compare`` only."""
+    done = []
+
+    def comparison():
+        from .compare import COMPARE_BUDGET, compare_fill
+
+        if not done:
+            done.append(compare_fill(fn, max(seconds, COMPARE_BUDGET)))
+        return done[0]
+
+    return comparison

@@ -121,3 +121,72 @@ def draw_clip(ax, v, expected, got):
     ax.set_ylabel("z + w (inside ≥ 0)")
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     return artists
+
+
+#: Colours of coverage counts 0, 1, 2, 3 or more (a watertight fill shows 0 and 1 only).
+COUNT_COLOURS = ("#ffffff", "#c8c8c8", "#d7301f", "#7f0000")
+#: Colours of count differences −1 (a hole), 0, +1 (covered once too often).
+DIFF_COLOURS = ("#2b7bba", "#ffffff", "#d7301f")
+
+
+def _scene_axes(ax, case, title):
+    w, h = case.size
+    artists = []
+    for xy in case.triangles:
+        ring = np.vstack([xy, xy[:1]])
+        artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=0.5)
+    ax.set_xlim(0, w)
+    ax.set_ylim(h, 0)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    artists.append(ax.set_title(title, fontsize="small"))
+    return artists
+
+
+def draw_counts(ax, case, counts, title):
+    """How many triangles cover each pixel of a scene, with the triangles' edges."""
+    from matplotlib.colors import ListedColormap
+
+    w, h = case.size
+    image = ax.imshow(
+        np.minimum(counts, 3),
+        cmap=ListedColormap(COUNT_COLOURS),
+        vmin=0,
+        vmax=3,
+        extent=(0, w, h, 0),
+        interpolation="nearest",
+    )
+    return [image] + _scene_axes(ax, case, title)
+
+
+def draw_differences(ax, case, diff):
+    """Pixels whose count differs: red where yours covers more, blue where less, with the
+    difference written in each."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    w, h = case.size
+    image = ax.imshow(
+        np.clip(diff, -1, 1),
+        cmap=ListedColormap(DIFF_COLOURS),
+        vmin=-1.5,
+        vmax=1.5,
+        extent=(0, w, h, 0),
+        interpolation="nearest",
+    )
+    n = int((diff != 0).sum())
+    artists = [image] + _scene_axes(ax, case, f"differences: {n} pixel(s)")
+    for i, j in np.argwhere(diff != 0):
+        artists.append(
+            ax.text(j + 0.5, i + 0.5, f"{int(diff[i, j]):+d}", ha="center", va="center", fontsize=5)
+        )
+    handles = [
+        Patch(color=DIFF_COLOURS[2], label="yours covers more"),
+        Patch(color=DIFF_COLOURS[0], label="yours covers less (a hole)"),
+    ]
+    # below the panel: the legend must never hide a pixel, nor leave the figure
+    artists.append(
+        ax.legend(handles=handles, fontsize="x-small", loc="upper right", bbox_to_anchor=(1, -0.02))
+    )
+    return artists

@@ -77,6 +77,7 @@ class Report:
     example: Callable | None = field(default=None, repr=False, compare=False)
     stopped: str | None = None
     n_run: int | None = None
+    comparison: Callable | None = field(default=None, repr=False, compare=False)
 
     @property
     def passed(self) -> bool:
@@ -167,6 +168,47 @@ class Report:
             artists.append(_note(ax, note))
         artists.append(ax.set_title(self.title(), fontsize="small"))
         return artists
+
+    def compare(self, ax, pixel=None):
+        """The student's whole picture beside the package's, and where they differ.
+
+        Renders a small scene (a fan of 16 triangles whose shared edges run through pixel
+        centres) with the student's function and with the package; ``ax`` is one Axes (split
+        into three panels) or three Axes. The third panel marks each pixel whose coverage
+        count differs, with the difference. ``pixel=(i, j)`` (default: the first differing
+        pixel), or a click on any panel, shows the explanation for that pixel. Exercises with
+        a picture only (``fill``); returns the artists.
+        """
+        if self.comparison is None:
+            raise ValueError(
+                f"report.compare draws a whole picture: {self.exercise} makes none (fill does)"
+            )
+        if pixel is not None:
+            pixel = _pixel(pixel)
+        from .compare import draw_comparison
+
+        return draw_comparison(_three_panels(ax), self.comparison(), pixel)
+
+
+def _pixel(pixel) -> tuple[int, int]:
+    import operator
+
+    try:
+        i, j = pixel
+        return operator.index(i), operator.index(j)
+    except (TypeError, ValueError):
+        raise TypeError(f"pixel must be a pair of ints (row, column), got {pixel!r}") from None
+
+
+def _three_panels(ax) -> list:
+    """Three Axes: the ones given, or three panels inset in one Axes."""
+    if hasattr(ax, "inset_axes"):
+        ax.set_axis_off()
+        return [ax.inset_axes([k / 3 + 0.01, 0.2, 0.29, 0.75]) for k in range(3)]
+    axes = list(ax.ravel() if hasattr(ax, "ravel") else ax)
+    if len(axes) != 3:
+        raise ValueError(f"ax must be one Axes or three, got {len(axes)}")
+    return axes
 
 
 def _note(ax, text: str, width: int = 60):
