@@ -102,3 +102,15 @@ def test_compare_is_for_pictures_and_checks_its_arguments(plt):
     with pytest.raises(ValueError, match="three"):
         report.compare([ax, ax])
     assert "outside" in pixel_explanation(compare_fill(CORRECT["fill"], 120), 99, 0)
+    with pytest.raises(ValueError, match="fill does"):
+        ex.check("depth_test", CORRECT["depth_test"]).explain_pixel(0, 0)
+
+
+def test_the_differing_pixels_and_their_explanations_without_a_figure(plt):
+    report = ex.check("fill", _fill_from(one_winding, 0.5), budget=60)
+    wrong = report.differing_pixels()
+    assert len(wrong)
+    i, j = (int(v) for v in wrong[0])
+    assert "handle both windings" in report.explain_pixel(i, j)
+    artists = report.compare(pixel="first")  # a new figure
+    assert f"pixel (row {i}, column {j})" in texts(artists)

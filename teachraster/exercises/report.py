@@ -169,25 +169,42 @@ class Report:
         artists.append(ax.set_title(self.title(), fontsize="small"))
         return artists
 
-    def compare(self, ax, pixel=None):
+    def compare(self, ax=None, pixel=None):
         """The student's whole picture beside the package's, and where they differ.
 
         Renders a small scene (a fan of 16 triangles whose shared edges run through pixel
-        centres) with the student's function and with the package; ``ax`` is one Axes (split
-        into three panels) or three Axes. The third panel marks each pixel whose coverage
-        count differs, with the difference. ``pixel=(i, j)`` (default: the first differing
-        pixel), or a click on any panel, shows the explanation for that pixel. Exercises with
-        a picture only (``fill``); returns the artists.
+        centres, wound both ways) with the student's function and with the package; ``ax``
+        is one Axes (split into three panels), three Axes, or None (a new figure). The third
+        panel marks each pixel whose coverage count differs, with the difference.
+        ``pixel=(row, col)`` (default, or "first": the first differing pixel), or a click on
+        any panel, shows the explanation for that pixel. Exercises with a picture only
+        (``fill``); returns the artists.
         """
+        if ax is None:
+            import matplotlib.pyplot as plt
+
+            ax = plt.subplots(1, 3, figsize=(10, 4))[1]
+        pixel = None if pixel is None or pixel == "first" else _pixel(pixel)
+        from .compare import draw_comparison
+
+        return draw_comparison(_three_panels(ax), self._comparison(), pixel)
+
+    def explain_pixel(self, row: int, col: int) -> str:
+        """Why pixel (``row``, ``col``) of the student's picture differs (or does not)."""
+        from .compare import pixel_explanation
+
+        return pixel_explanation(self._comparison(), *_pixel((row, col)))
+
+    def differing_pixels(self):
+        """(n, 2) rows and columns where the student's picture differs from the package's."""
+        return self._comparison().differing()
+
+    def _comparison(self):
         if self.comparison is None:
             raise ValueError(
                 f"report.compare draws a whole picture: {self.exercise} makes none (fill does)"
             )
-        if pixel is not None:
-            pixel = _pixel(pixel)
-        from .compare import draw_comparison
-
-        return draw_comparison(_three_panels(ax), self.comparison(), pixel)
+        return self.comparison()
 
 
 def _pixel(pixel) -> tuple[int, int]:

@@ -31,6 +31,8 @@ __all__ = ["CaseInterrupt", "Outcome", "WrongAnswerType", "budget", "run_case", 
 DEFAULT_BUDGET = 10.0
 #: The share of the budget one case may take: 2 s of the default 10 s.
 CASE_SHARE = 0.2
+#: Seconds one case may take under the default budget (kept for callers that pass a limit).
+CASE_LIMIT = DEFAULT_BUDGET * CASE_SHARE
 #: Seconds the checker's own explanations may take after the budget (once, for all of them).
 GRACE = 0.5
 #: Explanation of a case that did not run because the check had stopped.
