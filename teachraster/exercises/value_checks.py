@@ -65,14 +65,14 @@ def all_not_implemented(ran) -> bool:
 
 
 def check_value_exercise(name: str, fn, spec: ValueExercise) -> Report:
+    """Run, compare and explain (see the module docstring); the report of exercise ``name``."""
     cases = spec.cases()
     ran = run_all(fn, cases, spec.convert)
     first = _drawer(spec.draw, cases[0], None)
     if all_not_implemented(ran):
         return Report(name, [], len(cases), True, first)
     answered = [(case, o.value) for case, o in ran if o.error is None]
-    same = run_checker(lambda: [bool(spec.same(got, c[2])) for c, got in answered], None)
-    same = same if same is not None else [False] * len(answered)
+    same = [run_checker(lambda c=c, g=got: bool(spec.same(g, c[2])), False) for c, got in answered]
     wrong = [(c, got) for (c, got), ok in zip(answered, same) if not ok]
     results = [(c[1], c[2], got) for c, got in answered]
     pattern = run_checker(lambda: spec.pattern(results), {}) if spec.pattern else {}
