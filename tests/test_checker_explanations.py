@@ -250,3 +250,22 @@ def test_barycentric_sign_mistakes_are_told_apart():
     assert len(report.failures) == report.n_cases
     assert all(f.kind == "sign" for f in report.failures)
     assert all("absolute value" not in f.explanation for f in report.failures)
+
+
+def test_an_upside_down_fill_is_recognised():
+    def fill(xy, width, height):
+        return CORRECT["fill"](xy, width, height)[::-1]
+
+    report = ex.check("fill", fill, budget=120)
+    assert report.failures and all(f.kind == "upside down" for f in report.failures)
+    assert "upside down" in report.failures[0].explanation
+
+
+def test_covers_with_x_and_y_swapped_is_named():
+    def covers(xy, p):
+        return CORRECT["covers"](np.asarray(xy)[:, ::-1], np.asarray(p)[::-1])
+
+    report = ex.check("covers", covers, budget=120)
+    swapped = [f for f in report.failures if f.kind == "transposed"]
+    assert swapped and "x and y are swapped" in swapped[0].explanation
+    assert "np.zeros" not in swapped[0].explanation

@@ -53,13 +53,27 @@ def _fill_body(fn, case: CoverageCase):
     return body
 
 
-def _transposed(case, k: int, got: np.ndarray, expected: np.ndarray) -> Failure:
-    h, w = expected.shape
-    text = (
-        f"your image is transposed: its [i, j] holds the pixel in row j and column i. An image "
-        f"is indexed [row, column] = [y, x]: np.zeros((height, width)) = ({h}, {w}), and "
-        "out[i, j] is the pixel whose centre is (x, y) = (j + 0.5, i + 0.5)"
-    )
+#: What a mirrored answer means, by exercise and mirror.
+MIRRORED = {
+    ("fill", "transposed"): (
+        "your image is transposed: its [i, j] holds the pixel in row j and column i. An image "
+        "is indexed [row, column] = [y, x]: np.zeros((height, width)) = {shape}, and out[i, j] "
+        "is the pixel whose centre is (x, y) = (j + 0.5, i + 0.5)"
+    ),
+    ("covers", "transposed"): (
+        "your coverage is the rule's mirrored across the diagonal: x and y are swapped "
+        "somewhere. A point is (x, y) = (p[0], p[1]), x to the right, y down, and so is each "
+        "vertex"
+    ),
+    ("fill", "upside down"): (
+        "your image is upside down: row i holds the pixels whose centres have y = i + 0.5, with "
+        "y pointing down (row 0 at the top), so do not flip the rows (height − 1 − i)"
+    ),
+}
+
+
+def _mirrored(name: str, case, k: int, got: np.ndarray, expected: np.ndarray, how: str):
+    text = MIRRORED[name, how].format(shape=expected.shape)
     label = case.label + (f", triangle {k}" if len(case.triangles) > 1 else "")
     shown = got if got.shape == expected.shape else got.T
 
@@ -68,10 +82,10 @@ def _transposed(case, k: int, got: np.ndarray, expected: np.ndarray) -> Failure:
 
         return draw_coverage(ax, case, case.triangles[k], expected, shown, None, None)
 
-    return Failure(label, text, expected, got, draw, "transposed")
+    return Failure(label, text, expected, got, draw, how)
 
 
-def _compare(case: CoverageCase, got: list, expected: np.ndarray) -> Failure | None:
+def _compare(name: str, case: CoverageCase, got: list, expected: np.ndarray) -> Failure | None:
     """The first wrong triangle of ``case`` explained, or None when all are right."""
     for k, g in enumerate(got):
         e = expected[k]
@@ -79,7 +93,9 @@ def _compare(case: CoverageCase, got: list, expected: np.ndarray) -> Failure | N
         if not flipped and np.array_equal(g, e):
             continue
         if np.array_equal(g.T, e):
-            return _transposed(case, k, g, e)
+            return _mirrored(name, case, k, g, e, "transposed")
+        if name == "fill" and not flipped and np.array_equal(g[::-1], e):
+            return _mirrored(name, case, k, g, e, "upside down")
         fixed = np.array([x.T if x.shape != e.shape else x for x in got])
         failure = coverage.coverage_failure(case, k, fixed, expected)
         if flipped:
@@ -113,7 +129,7 @@ def _check_coverage(name: str, fn, cases: list[CoverageCase], body) -> Report:
             continue
         fallback = Failure(case.label, "your coverage differs from the rule's", expected, None)
         failure = run_checker(
-            lambda c=case, o=outcome, e=expected: _compare(c, o.value, e), fallback
+            lambda c=case, o=outcome, e=expected: _compare(name, c, o.value, e), fallback
         )
         if failure is not None:
             failures.append(failure)
