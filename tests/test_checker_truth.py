@@ -183,3 +183,23 @@ def test_the_untouched_stub_alone_is_not_implemented_yet(name):
     report = ex.check(name, raises(NotImplementedError()))
     assert report.not_implemented and report.failures == []
     assert "not implemented yet" in str(report)
+
+
+def test_exact_numbers_are_numbers_and_other_objects_are_named():
+    from decimal import Decimal
+    from fractions import Fraction
+
+    from exercise_solutions import CORRECT
+
+    E = CORRECT["edge_function"]
+    for kind in (Fraction, Decimal, np.float64, int):
+
+        def fn(a, b, p, kind=kind):
+            e = E(a, b, p)
+            return kind(e) if kind is not int or float(e).is_integer() else e
+
+        assert ex.check("edge_function", fn).passed, kind
+    report = ex.check("edge_function", returns(object()))
+    assert "of type object" in report.failures[0].explanation
+    report = ex.check("edge_function", returns(10**400))
+    assert "too large for a float" in report.failures[0].explanation

@@ -9,6 +9,7 @@ is done on it, so that a huge return value cannot eat the check's time budget.
 
 from __future__ import annotations
 
+import decimal
 import numbers
 import reprlib
 
@@ -78,10 +79,11 @@ def _to_float(arr: np.ndarray, value, what: str) -> np.ndarray:
                 raise WrongAnswerType(f"returned {short(value)}, which holds None, not {what}")
             if isinstance(item, (str, bytes)):
                 raise WrongAnswerType(f"returned {short(value)}, which holds text, not {what}")
-            if isinstance(item, bool) or not isinstance(item, numbers.Real):
-                raise WrongAnswerType(
-                    f"returned {short(value)}, which holds a {type(item).__name__}, not {what}"
-                )
+            real = isinstance(item, numbers.Real) or isinstance(item, decimal.Decimal)
+            if isinstance(item, bool) or not real:
+                of_type = f"of type {type(item).__name__}"
+                where = f"({of_type})," if arr.ndim == 0 else f"holding a value {of_type},"
+                raise WrongAnswerType(f"returned {short(value)} {where} not {what}")
         try:
             return np.array([float(x) for x in items], dtype=float).reshape(arr.shape)
         except OverflowError:
