@@ -70,21 +70,26 @@ class Budget:
     seconds: float
     start: float = field(default_factory=time.perf_counter)
     stopped: str | None = None
+    share: float = CASE_SHARE
 
     def remaining(self) -> float:
         return self.seconds - (time.perf_counter() - self.start)
 
     def case_limit(self) -> float:
-        return min(self.remaining(), self.seconds * CASE_SHARE)
+        return min(self.remaining(), self.seconds * self.share)
 
 
 _local = threading.local()
 
 
 def current() -> Budget:
-    """The budget of the check running in this thread (a fresh default one outside checks)."""
+    """The budget of the check running in this thread.
+
+    Outside a check (a comparison drawn later, a caller of :func:`run_case`), one call may
+    take the whole default budget.
+    """
     stack = getattr(_local, "stack", None)
-    return stack[-1] if stack else Budget(DEFAULT_BUDGET)
+    return stack[-1] if stack else Budget(DEFAULT_BUDGET, share=1.0)
 
 
 class budget:  # noqa: N801 - used as a context manager, named like one
