@@ -187,7 +187,7 @@ def test_the_budget_covers_every_exercise():
     for name in ex.names():
         report = ex.check(name, forever, budget=0.5)
         assert not report.passed and report.failures[0].kind == "timeout", name
-    assert time.perf_counter() - start < 8 * 0.5 + SLACK
+    assert time.perf_counter() - start < len(ex.names()) * 0.5 + SLACK
 
 
 @pytest.mark.parametrize("fn", LOOPS[:-1], ids=[f.__name__ for f in LOOPS[:-1]])
