@@ -11,6 +11,7 @@ from teachraster import exercises as ex
 
 NAMES = ex.names()
 
+
 def returns(value):
     def fn(*args):
         return value
