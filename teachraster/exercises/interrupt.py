@@ -183,7 +183,8 @@ class Alarm:
         _busy.alarm = None
         if mode == "signal":
             signal.setitimer(signal.ITIMER_REAL, 0)
-            signal.signal(signal.SIGALRM, self._previous)
+            # None: a handler not installed from Python, which cannot be put back
+            signal.signal(signal.SIGALRM, self._previous or signal.SIG_DFL)
             delay, interval = self._timer  # someone else's timer (pytest-timeout...): re-arm
             if delay > 0:
                 left = max(delay - (time.perf_counter() - self.begin), 1e-3)
