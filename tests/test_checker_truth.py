@@ -191,3 +191,26 @@ def test_exact_numbers_are_numbers_and_other_objects_are_named():
     assert "of type object" in report.failures[0].explanation
     report = ex.check("edge_function", returns(10**400))
     assert "too large for a float" in report.failures[0].explanation
+
+
+@pytest.mark.parametrize(
+    "name, values",
+    [
+        ("edge_function", [np.inf, np.nan, 1e308]),
+        ("split_point", [-np.inf, -1e308]),
+        ("perspective", [np.inf, 1e300]),
+        ("barycentric", [[np.inf, 0, 0], [1e308, -1e308, 1], [np.nan] * 3]),
+        ("clip_near", [np.full((4, 4), 1e308), np.full((3, 4), np.inf), np.full((3, 4), np.nan)]),
+    ],
+)
+def test_infinite_and_huge_answers_are_explained_and_drawn_without_warnings(name, values, axes):
+    import warnings
+
+    for value in values:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            report = ex.check(name, returns(value))
+            report.plot(axes)
+            axes.figure.canvas.draw()
+        assert not report.passed and report.failures[0].kind != "type"
+        axes.clear()

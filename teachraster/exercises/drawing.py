@@ -62,11 +62,32 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     return artists
 
 
+def drawable(values, reference) -> np.ndarray:
+    """``values`` with what cannot be drawn beside ``reference`` (inf, nan, or a million times
+    larger) replaced by nan: the bar or point is left out, the explanation quotes the value."""
+    v = np.asarray(values, dtype=float)
+    scale = 1e6 * max(1.0, float(np.nanmax(np.abs(np.asarray(reference, dtype=float)), initial=0)))
+    with np.errstate(invalid="ignore"):
+        return np.where(np.isfinite(v) & (np.abs(v) <= scale), v, np.nan)
+
+
+def _off_chart(ax, values, drawn) -> list:
+    """A note naming the values left out of the chart."""
+    left_out = np.asarray(values, dtype=float)[np.isnan(drawn) & ~np.isnan(values)]
+    if not left_out.size:
+        return []
+    text = "yours, off the chart: " + ", ".join(f"{v:.3g}" for v in left_out[:3])
+    return [ax.text(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize="x-small")]
+
+
 def draw_values(ax, labels, expected, got):
     """Expected and got side by side as bars (``got`` may be None: nothing to show yet)."""
     x = np.arange(len(labels))
     artists = list(ax.bar(x - 0.2, expected, width=0.4, color="#c8c8c8", label="expected"))
     if got is not None:
+        shown = drawable(got, expected)
+        artists += _off_chart(ax, got, shown)
+        got = shown
         ok = np.isclose(got, expected, rtol=1e-9, atol=1e-9)
         colours = np.where(ok, "#c8c8c8", STATE_COLOURS[3])
         artists += list(ax.bar(x + 0.2, got, width=0.4, color=colours, hatch="//", label="yours"))
@@ -79,7 +100,9 @@ def draw_values(ax, labels, expected, got):
 def draw_bars(ax, labels, values, wrong):
     """One bar per value; ``wrong[k]`` marks the student's bar that is wrong in red."""
     colours = [STATE_COLOURS[3] if bad else "#c8c8c8" for bad in wrong]
-    artists = list(ax.bar(np.arange(len(values)), values, color=colours))
+    shown = drawable(values, values[:2])
+    artists = _off_chart(ax, values, shown)
+    artists += list(ax.bar(np.arange(len(values)), shown, color=colours))
     ax.set_xticks(np.arange(len(values)), labels)
     ax.axhline(0, color="black", linewidth=0.5)
     return artists
@@ -92,7 +115,7 @@ def draw_split(ax, v, expected, got):
     artists += ax.plot([v[0, 0], v[2, 0]], [v[0, 1], v[2, 1]], color=EDGE_COLOUR, linewidth=3)
     artists.append(ax.axhline(v[1, 1], color="#888888", linestyle=":"))
     artists += ax.plot(expected, v[1, 1], "o", color="#2b7bba", label="v4 (expected)")
-    if got is not None and np.isfinite(got):
+    if got is not None and np.isfinite(drawable(got, v)):
         artists += ax.plot(got, v[1, 1], "x", color=STATE_COLOURS[3], ms=10, label="your u4")
     for k, p in enumerate(v):
         artists.append(ax.annotate(f"v{k + 1}", p, fontsize="x-small"))
@@ -113,8 +136,10 @@ def draw_clip(ax, v, expected, got):
     artists.append(ax.axhline(0, color=EDGE_COLOUR, linewidth=2, label="near plane z + w = 0"))
     if len(expected):
         artists += ax.plot(*ring(expected), "o-", color="#2b7bba", label="clipped (expected)")
-    if got is not None and len(got):
+    if got is not None and len(got) and np.isfinite(drawable(got, v)).all():
         artists += ax.plot(*ring(got), "x--", color=STATE_COLOURS[3], label="yours")
+    elif got is not None and len(got):
+        artists += _off_chart(ax, np.ravel(got), drawable(np.ravel(got), v))
     for k, p in enumerate(v):
         artists.append(ax.annotate(f"v{k + 1}", (p[0], p[2] + p[3]), fontsize="x-small"))
     ax.set_xlabel("x (clip space)")
