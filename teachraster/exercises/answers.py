@@ -62,8 +62,8 @@ def _array(value, what: str, max_size: int) -> np.ndarray:
 def _to_float(arr: np.ndarray, value, what: str) -> np.ndarray:
     """Numbers as float64, or float32/float16 kept as such; text, bools, complex refused."""
     kind = arr.dtype.kind
-    if kind == "f":
-        return arr if arr.dtype.itemsize < 8 else arr.astype(float)
+    if kind == "f":  # a copy: the student may reuse (and change) the array it returned
+        return arr.copy() if arr.dtype.itemsize < 8 else arr.astype(float)
     if kind in "iu":
         return arr.astype(float)
     if kind == "b":
