@@ -252,3 +252,446 @@ ALTERNATIVES = {
     "clip_near": clip_near_rotated_with_duplicates,
     "depth_test": depth_test_numpy,
 }
+
+# lesson 12's exercises (line_pixels, over, over_premultiplied) live in their own file
+from lines_blending_solutions import ALTERNATIVES as _LB_ALTERNATIVES  # noqa: E402
+from lines_blending_solutions import CORRECT as _LB_CORRECT  # noqa: E402
+from lines_blending_solutions import MISTAKES as _LB_MISTAKES  # noqa: E402
+
+CORRECT.update(_LB_CORRECT)
+MISTAKES.update(_LB_MISTAKES)
+ALTERNATIVES.update(_LB_ALTERNATIVES)
+
+# == exercises 05–08 (issue 20): independent solutions, other correct ones, typical mistakes ==
+# Written from the conventions only (no call into teachraster): exact Fractions where a rule
+# decides ties (rounding, coverage, block corners), plain float64 formulas elsewhere.
+import math  # noqa: E402
+
+
+def depth_to_unorm(z, bits):
+    return int(np.rint(z * (2**bits - 1)))
+
+
+def depth_to_unorm_exact_half_up(z, bits):
+    """Exact product, ties rounded up: the other neighbour at a tie must be accepted too."""
+    return math.floor(Fraction(z) * (2**bits - 1) + Fraction(1, 2))
+
+
+def _snap_exact(v):
+    return [Fraction(round(Fraction(float(c)) * 256), 256) for c in v]  # half to even
+
+
+def _covers_exact(v, p):
+    if edge_function(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    if edge_function(v[0], v[1], v[2]) == 0:
+        return False
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, p)
+        if e < 0 or (e == 0 and not _owns(a, b)):
+            return False
+    return True
+
+
+def coverage_fraction(xy, pixel, samples):
+    v = [_snap_exact(q) for q in xy]
+    row, col = pixel
+    hits = [_covers_exact(v, (col + Fraction(ox), row + Fraction(oy))) for ox, oy in samples]
+    return sum(hits) / len(hits)
+
+
+def coverage_fraction_integers(xy, pixel, samples):
+    """Vectorised in integer 1/512-px units: all samples at once."""
+    v = np.rint(np.asarray(xy, dtype=float) * 256).astype(np.int64) * 2
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    p = (np.asarray(samples, dtype=float) * 512).astype(np.int64) + np.array(pixel[::-1]) * 512
+    inside = np.ones(len(p), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0])
+        inside &= (e >= 0) if _owns(a, b) else (e > 0)
+    return float(inside.mean())
+
+
+def resolve(sample_colours, sample_ids, background):
+    covered = np.asarray(sample_ids)[:, None] >= 0
+    return np.where(covered, sample_colours, np.asarray(background, dtype=float)).mean(axis=0)
+
+
+def resolve_by_counting(sample_colours, sample_ids, background):
+    total, n = np.zeros(3), len(sample_ids)
+    for colour, i in zip(sample_colours, sample_ids):
+        total += colour if i >= 0 else np.asarray(background, dtype=float)
+    return total / n
+
+
+def mip_level(ddx, ddy, size):
+    h, w = size
+    rx = math.hypot(ddx[0] * w, ddx[1] * h)
+    ry = math.hypot(ddy[0] * w, ddy[1] * h)
+    return math.log2(max(rx, ry))
+
+
+def mip_level_squares(ddx, ddy, size):
+    h, w = size
+    sx = (ddx[0] * w) ** 2 + (ddx[1] * h) ** 2
+    sy = (ddy[0] * w) ** 2 + (ddy[1] * h) ** 2
+    return 0.5 * np.log2(max(sx, sy))
+
+
+def _wrap(i, n, wrap):
+    return i % n if wrap == "repeat" else min(max(i, 0), n - 1)
+
+
+def bilinear(texture, uv, wrap):
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    i, j = math.floor(y), math.floor(x)
+    fy, fx = y - i, x - j
+    out = 0.0
+    for di, wy in ((0, 1 - fy), (1, fy)):
+        for dj, wx in ((0, 1 - fx), (1, fx)):
+            out = out + wy * wx * tex[_wrap(i + di, h, wrap), _wrap(j + dj, w, wrap)]
+    return out
+
+
+def bilinear_lerp(texture, uv, wrap):
+    """Two lerps along x, one along y, indices wrapped with numpy."""
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    x0, y0 = np.floor(x), np.floor(y)
+    cols = np.array([x0, x0 + 1], dtype=int)
+    rows = np.array([y0, y0 + 1], dtype=int)
+    if wrap == "repeat":
+        cols, rows = cols % w, rows % h
+    else:
+        cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+    quad = tex[np.ix_(rows, cols)]
+    top = quad[0, 0] + (x - x0) * (quad[0, 1] - quad[0, 0])
+    bottom = quad[1, 0] + (x - x0) * (quad[1, 1] - quad[1, 0])
+    return top + (y - y0) * (bottom - top)
+
+
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    d = math.floor(lam)
+    t = lam - d
+    a = bilinear(pyramid[d], uv, wrap)
+    b = bilinear(pyramid[min(d + 1, q)], uv, wrap)
+    return (1 - t) * a + t * b
+
+
+def trilinear_ceil(pyramid, uv, lod, wrap="repeat"):
+    """Levels ⌊λ⌋ and ⌈λ⌉ (equal at integers): the same answer."""
+    lam = float(np.clip(lod, 0, len(pyramid) - 1))
+    lo, hi = math.floor(lam), math.ceil(lam)
+    a, b = bilinear_lerp(pyramid[lo], uv, wrap), bilinear_lerp(pyramid[hi], uv, wrap)
+    return a + (lam - lo) * (b - a)
+
+
+def _classify(xy, x0, y0, size, corner_trick=True):
+    v = [[Fraction(float(c)) for c in p] for p in xy]
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return "rejected"
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    xs = (x0 + Fraction(1, 2), x0 + size - Fraction(1, 2))
+    ys = (y0 + Fraction(1, 2), y0 + size - Fraction(1, 2))
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+
+        def ok(p, a=a, b=b):
+            e = edge_function(a, b, p)
+            return e > 0 or (e == 0 and _owns(a, b))
+
+        if corner_trick:  # E grows with y when b.x > a.x, with x when b.y < a.y
+            hi = (xs[1] if b[1] < a[1] else xs[0], ys[1] if b[0] > a[0] else ys[0])
+            lo = (xs[0] if b[1] < a[1] else xs[1], ys[0] if b[0] > a[0] else ys[1])
+            best, worst = ok(hi), ok(lo)
+        else:
+            passes = [ok((x, y)) for x in xs for y in ys]
+            best, worst = any(passes), all(passes)
+        if not best:
+            return "rejected"
+        accepted = accepted and worst
+    return "accepted" if accepted else "partial"
+
+
+def classify_block(xy, x0, y0, size):
+    return _classify(xy, x0, y0, size)
+
+
+def classify_block_four_corners(xy, x0, y0, size):
+    return _classify(xy, x0, y0, size, corner_trick=False)
+
+
+CORRECT.update(
+    depth_to_unorm=depth_to_unorm,
+    coverage_fraction=coverage_fraction,
+    resolve=resolve,
+    mip_level=mip_level,
+    bilinear=bilinear,
+    trilinear=trilinear,
+    classify_block=classify_block,
+)
+ALTERNATIVES.update(
+    depth_to_unorm=depth_to_unorm_exact_half_up,
+    coverage_fraction=coverage_fraction_integers,
+    resolve=resolve_by_counting,
+    mip_level=mip_level_squares,
+    bilinear=bilinear_lerp,
+    trilinear=trilinear_ceil,
+    classify_block=classify_block_four_corners,
+)
+
+
+# -- typical mistakes of 05–08 ------------------------------------------------------------------
+def _coverage_with(snap=True, tie=_owns, orient=True, shift=(0.0, 0.0), centre_only=False):
+    def fn(xy, pixel, samples):
+        v = [_snap_exact(q) if snap else [Fraction(float(c)) for c in q] for q in xy]
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return 0.0
+        if area < 0 and orient:
+            v = [v[0], v[2], v[1]]
+        row, col = pixel
+        pts = [(Fraction(1, 2), Fraction(1, 2))] if centre_only else samples
+        hits = 0
+        for ox, oy in pts:
+            p = (col + Fraction(ox) + Fraction(shift[0]), row + Fraction(oy) + Fraction(shift[1]))
+            ok = True
+            for k in range(3):
+                a, b = v[k], v[(k + 1) % 3]
+                e = edge_function(a, b, p)
+                ok &= e > 0 or (e == 0 and tie(a, b))
+            hits += ok
+        return hits / len(pts)
+
+    return fn
+
+
+def _level_with(rho, log=math.log2):
+    def fn(ddx, ddy, size):
+        h, w = size
+        ax = (ddx[0] * w, ddx[1] * h)
+        ay = (ddy[0] * w, ddy[1] * h)
+        return log(rho(ax, ay))
+
+    return fn
+
+
+def _bilinear_with(centre=0.5, floor=math.floor, wrap_as=None, swap=False):
+    def fn(texture, uv, wrap):
+        wrap = wrap_as or wrap
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        x, y = uv[0] * w - centre, uv[1] * h - centre
+        i, j = floor(y), floor(x)
+        fy, fx = y - i, x - j
+        if swap:
+            fx, fy = 1 - fx, 1 - fy
+        out = 0.0
+        for di, wy in ((0, 1 - fy), (1, fy)):
+            for dj, wx in ((0, 1 - fx), (1, fx)):
+                out = out + wy * wx * tex[_wrap(int(i) + di, h, wrap), _wrap(int(j) + dj, w, wrap)]
+        return out
+
+    return fn
+
+
+def bilinear_nearest(texture, uv, wrap):
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    return tex[_wrap(math.floor(uv[1] * h), h, wrap), _wrap(math.floor(uv[0] * w), w, wrap)]
+
+
+def trilinear_nearest_level(pyramid, uv, lod, wrap="repeat"):
+    d = min(max(round(lod), 0), len(pyramid) - 1)
+    return bilinear(pyramid[d], uv, wrap)
+
+
+def trilinear_swapped(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    d = math.floor(lam)
+    t = lam - d
+    return t * bilinear(pyramid[d], uv, wrap) + (1 - t) * bilinear(pyramid[min(d + 1, q)], uv, wrap)
+
+
+def trilinear_unclamped(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    d = min(math.floor(lod), q)
+    t = lod - d
+    return (1 - t) * bilinear(pyramid[d], uv, wrap) + t * bilinear(pyramid[min(d + 1, q)], uv, wrap)
+
+
+def classify_wrong_accept_corner(xy, x0, y0, size):
+    """Accepts when each edge's maximising corner passes (the minimising one is the test)."""
+    kind = classify_block(xy, x0, y0, size)
+    return "accepted" if kind == "partial" else kind
+
+
+def classify_corners_outside(xy, x0, y0, size):
+    """Rejects when all four corners lie outside the triangle (not one edge's verdict)."""
+    v = [[Fraction(float(c)) for c in p] for p in xy]
+    if edge_function(v[0], v[1], v[2]) == 0:
+        return "rejected"
+    xs = (x0 + Fraction(1, 2), x0 + size - Fraction(1, 2))
+    ys = (y0 + Fraction(1, 2), y0 + size - Fraction(1, 2))
+    inside = [covers(xy, (x, y)) for x in xs for y in ys]
+    if all(inside):
+        return "accepted"
+    if not any(inside):
+        return "rejected"
+    return "partial"
+
+
+def classify_outer_corners(xy, x0, y0, size):
+    """Tests the block's outer corners x0, x0 + size (pixel corners, not centres)."""
+    return _classify(xy, Fraction(x0) - Fraction(1, 2), Fraction(y0) - Fraction(1, 2), size + 1)
+
+
+def classify_loose(xy, x0, y0, size):
+    """E >= 0 on every edge, no zero-area test: ties and degenerate triangles go wrong."""
+    v = [[float(c) for c in p] for p in xy]
+    if edge_function(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    xs, ys = (x0 + 0.5, x0 + size - 0.5), (y0 + 0.5, y0 + size - 0.5)
+    verdicts = []
+    for k in range(3):
+        e = [edge_function(v[k], v[(k + 1) % 3], (x, y)) >= 0 for x in xs for y in ys]
+        verdicts.append((any(e), all(e)))
+    if not all(best for best, _ in verdicts):
+        return "rejected"
+    return "accepted" if all(worst for _, worst in verdicts) else "partial"
+
+
+MISTAKES.update(
+    {
+        "depth by truncation": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "truncation"),
+        "depth scaled by 2^bits": (
+            "depth_to_unorm",
+            lambda z, b: round(z * 2**b),
+            "must hold z = 1",
+        ),  # fmt: skip
+        "depth read back": (
+            "depth_to_unorm",
+            lambda z, b: round(z * (2**b - 1)) / (2**b - 1),
+            "the depth read back",
+        ),  # fmt: skip
+        "coverage without snapping": ("coverage_fraction", _coverage_with(snap=False), "snap them"),
+        "coverage, both edges own a sample": (
+            "coverage_fraction",
+            _coverage_with(tie=lambda a, b: True),
+            "lies exactly on edge",
+        ),  # fmt: skip
+        "coverage, one winding": (
+            "coverage_fraction",
+            _coverage_with(orient=False),
+            "both windings",
+        ),  # fmt: skip
+        "coverage at the centre only": (
+            "coverage_fraction",
+            _coverage_with(centre_only=True),
+            "pixel centre only",
+        ),  # fmt: skip
+        "coverage, offsets from the centre": (
+            "coverage_fraction",
+            _coverage_with(shift=(0.5, 0.5)),
+            "not its centre",
+        ),  # fmt: skip
+        "resolve of covered samples only": (
+            "resolve",
+            lambda c, i, b: (
+                np.asarray(c)[np.asarray(i) >= 0].mean(axis=0) if (np.asarray(i) >= 0).any() else b
+            ),
+            "covered sample",
+        ),  # fmt: skip
+        "resolve with black for uncovered": (
+            "resolve",
+            lambda c, i, b: np.where(np.asarray(i)[:, None] >= 0, c, 0.0).mean(axis=0),
+            "not as black",
+        ),  # fmt: skip
+        "resolve of every sample's colour": (
+            "resolve",
+            lambda c, i, b: np.mean(c, axis=0),
+            "hold NaN",
+        ),  # fmt: skip
+        "λ from the sum of the axes": (
+            "mip_level",
+            _level_with(lambda a, b: math.hypot(*a) + math.hypot(*b)),
+            "sum of the derivatives",
+        ),  # fmt: skip
+        "λ from the shorter axis": (
+            "mip_level",
+            _level_with(lambda a, b: min(math.hypot(*a), math.hypot(*b))),
+            "shorter of the two footprint axes",
+        ),  # fmt: skip
+        "λ without log2": (
+            "mip_level",
+            _level_with(lambda a, b: max(math.hypot(*a), math.hypot(*b)), log=lambda r: r),
+            "λ = log2 ρ",
+        ),  # fmt: skip
+        "λ from the largest component": (
+            "mip_level",
+            _level_with(lambda a, b: max(map(abs, (*a, *b)))),
+            "largest component",
+        ),  # fmt: skip
+        "λ in texture units": (
+            "mip_level",
+            lambda dx, dy, size: math.log2(max(math.hypot(*dx), math.hypot(*dy))),
+            "in texels",
+        ),  # fmt: skip
+        "λ clamped at 0": (
+            "mip_level",
+            lambda dx, dy, size: max(mip_level(dx, dy, size), 0.0),
+            "unclamped",
+        ),  # fmt: skip
+        "bilinear at texel corners": ("bilinear", _bilinear_with(centre=0.0), "texel corners"),
+        "bilinear with int()": ("bilinear", _bilinear_with(floor=int), "int() truncates"),
+        "bilinear ignoring repeat": (
+            "bilinear",
+            _bilinear_with(wrap_as="clamp"),
+            "tiles the texture",
+        ),  # fmt: skip
+        "bilinear with swapped weights": (
+            "bilinear",
+            _bilinear_with(swap=True),
+            "the weight of the right",
+        ),  # fmt: skip
+        "nearest instead of bilinear": ("bilinear", bilinear_nearest, "nearest texel"),
+        "trilinear from the nearest level": ("trilinear", trilinear_nearest_level, "(the nearest)"),
+        "trilinear with swapped weights": ("trilinear", trilinear_swapped, "the weight of level"),
+        "trilinear without clamping λ": ("trilinear", trilinear_unclamped, "clamp it to [0, q]"),
+        "accept by the maximising corner": (
+            "classify_block",
+            classify_wrong_accept_corner,
+            "you tested the maximising one",
+        ),  # fmt: skip
+        "reject when the corners lie outside": (
+            "classify_block",
+            classify_corners_outside,
+            "the test is per edge",
+        ),  # fmt: skip
+        "block corners for pixel centres": (
+            "classify_block",
+            classify_outer_corners,
+            "outer corners",
+        ),  # fmt: skip
+        "E >= 0 on every edge": (
+            "classify_block",
+            classify_loose,
+            "the top-left rule excludes it",
+        ),  # fmt: skip
+    }
+)

@@ -10,7 +10,6 @@ import pytest
 from exercise_solutions import ALTERNATIVES, CORRECT, MISTAKES
 
 from teachraster import exercises as ex
-from teachraster.exercises import running
 
 NAMES = ex.names()
 
@@ -25,12 +24,24 @@ def test_names_in_course_order():
         "perspective",
         "depth_test",
         "clip_near",
+        # 05–08 (issue 20; tested in test_exercises_05_08.py)
+        "depth_to_unorm",
+        "coverage_fraction",
+        "resolve",
+        "mip_level",
+        "bilinear",
+        "trilinear",
+        "classify_block",
+        "line_pixels",
+        "over",
+        "over_premultiplied",
     ]
 
 
 @pytest.mark.parametrize("name", NAMES)
 def test_independent_correct_solution_passes_every_case(name):
-    report = ex.check(name, CORRECT[name])
+    # exact Fractions make the reference slow: a generous budget keeps a loaded machine calm
+    report = ex.check(name, CORRECT[name], budget=120)
     assert report.passed, str(report)
     assert report.n_cases >= 20
     assert str(report) == f"{name}: all {report.n_cases} cases pass"
@@ -39,14 +50,14 @@ def test_independent_correct_solution_passes_every_case(name):
 @pytest.mark.parametrize("name", list(ALTERNATIVES))
 def test_another_correct_solution_passes_too(name):
     """Any algorithm, any starting vertex, repeated vertices: only the answer counts."""
-    report = ex.check(name, ALTERNATIVES[name])
+    report = ex.check(name, ALTERNATIVES[name], budget=120)
     assert report.passed, str(report)
 
 
 @pytest.mark.parametrize("mistake", list(MISTAKES))
 def test_typical_mistake_is_caught_and_explained(mistake):
     name, fn, words = MISTAKES[mistake]
-    report = ex.check(name, fn)
+    report = ex.check(name, fn, budget=120)
     assert not report.passed
     assert report.failures[0].explanation in str(report)
     explained = [f for f in report.failures if words in f.explanation]
@@ -95,7 +106,7 @@ def test_a_students_exception_is_a_failure_with_its_last_line():
 
 def test_a_wrong_type_is_a_failure():
     report = ex.check("covers", lambda xy, p: None)
-    assert "returned None, not a bool" in report.failures[0].explanation
+    assert "returned None (a missing `return`?)" in report.failures[0].explanation
     report = ex.check("fill", lambda xy, w, h: np.zeros((w + 1, h), bool))
     assert "expected a bool array of shape (height, width)" in report.failures[0].explanation
 
@@ -110,17 +121,15 @@ def test_not_implemented_is_reported_without_failures():
         assert "not implemented yet" in str(report)
 
 
-def test_each_case_has_a_time_limit(monkeypatch):
-    monkeypatch.setattr(running, "CASE_LIMIT", 0.05)
-
+def test_each_case_has_a_time_limit():
     def forever(incoming, stored):
         while True:
             pass
 
     start = time.perf_counter()
-    report = ex.check("depth_test", forever)
-    assert "stopped: it took longer than the limit of 0.05 s" in report.failures[0].explanation
-    assert time.perf_counter() - start < 0.05 * report.n_cases + 5
+    report = ex.check("depth_test", forever, budget=0.5)
+    assert "did not return within 0.1 s" in report.failures[0].explanation
+    assert time.perf_counter() - start < 0.5 + 2
 
 
 def test_a_student_mutating_its_input_does_not_change_the_expected_answer():
@@ -130,7 +139,7 @@ def test_a_student_mutating_its_input_does_not_change_the_expected_answer():
 
     report = ex.check("covers", mutating)
     assert not report.passed
-    assert ex.check("covers", CORRECT["covers"]).passed
+    assert ex.check("covers", CORRECT["covers"], budget=120).passed
 
 
 def test_bad_arguments_name_the_argument():
@@ -156,7 +165,7 @@ def test_reports_draw_failing_passing_and_missing(name):
 
     for fn in (CORRECT[name], wrong[name], stub):
         fig, ax = plt.subplots(figsize=(3, 3))
-        artists = ex.check(name, fn).plot(ax)
+        artists = ex.check(name, fn, budget=120).plot(ax)
         assert artists and ax.get_title().startswith(name)
         fig.canvas.draw()
         plt.close(fig)

@@ -379,5 +379,4 @@ def test_09_gpu_and_widget_agree_with_the_story():
     ns = lesson("09_texture_filtering")
     if ns.gl_agreement is not None:
         assert ns.gl_agreement >= 0.98
-    errors = ns.explorer_errors
-    assert errors["trilinear"] < errors["nearest"] and errors["anisotropic"] < errors["nearest"]
+    # the widget is driven in tests/test_lessons_b.py (the lesson no longer drives it)

@@ -12,15 +12,21 @@ One module per idea of the first four lessons, in the order the notes teach them
   setup matrix, affine vs perspective-correct values;
 - :mod:`.sample_patterns`, :mod:`.multisample`: sample positions inside the pixel, coverage
   per sample and where a multisampled pixel's attributes are evaluated (antialiasing);
+- :mod:`.lines`, :mod:`.line_rules`, :mod:`.line_trace`: line segments (the diamond-exit
+  rule, Bresenham, DDA, wide lines as two triangles) and their steps;
+- :mod:`.blend_factors`: GL's blend factors and equations, the sRGB curve;
 - :mod:`.trace`: the recorded steps and their captions; :mod:`.fill`: ``rasterize`` itself.
 """
 
 from .barycentrics import barycentric
 from .bbox import BBox
+from .blend_factors import blend_equation, linear_to_srgb, srgb_to_linear
 from .edges import edge_function, is_top_left
 from .fill import Fill, rasterize
 from .half_planes import HalfPlaneTrace
 from .interpolation import perspective_weights
+from .line_trace import LineTrace
+from .lines import rasterize_line
 from .multisample import SampleTrace
 from .plane_equations import (
     AttributePlane,
@@ -42,6 +48,7 @@ __all__ = [
     "Fill",
     "FillTrace",
     "HalfPlaneTrace",
+    "LineTrace",
     "PlaneEquation",
     "SampleTrace",
     "SpanTrace",
@@ -49,13 +56,17 @@ __all__ = [
     "Triangle",
     "attribute_plane",
     "barycentric",
+    "blend_equation",
     "edge_function",
     "is_top_left",
+    "linear_to_srgb",
     "perspective_weights",
     "plane_equation",
     "rasterize",
+    "rasterize_line",
     "sample_pattern",
     "setup_matrix",
     "snap",
     "split_point",
+    "srgb_to_linear",
 ]

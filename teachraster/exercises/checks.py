@@ -1,148 +1,35 @@
-"""``names()`` and ``check(name, fn)``: run an exercise's cases and build its report."""
+"""``names()`` and ``check(name, fn, budget=10.0)``: run an exercise's cases, build its report."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 
-from . import coverage, near_clip, scalars
-from .cases import CoverageCase, catalogue_coverage, random_coverage
-from .report import Failure, Report
-from .running import WrongAnswerType, run_case
+from . import lines_blending, near_clip, scalars
+from .answers import MAX_VERTICES, as_bool, as_number, as_numbers, short
+from .coverage_checks import check_covers, check_fill
+from .report import Report
+from .running import SKIPPED, WrongAnswerType, check_seconds
+from .running import budget as time_budget
 from .tolerance import all_close, close, same_polygon
-
-
-def _as_bool(value) -> bool:
-    arr = np.asarray(value)
-    if arr.size != 1 or arr.dtype.kind not in "bui":
-        raise WrongAnswerType(f"returned {value!r:.60}, not a bool")
-    return bool(arr.item())
-
-
-def _window(case: CoverageCase, xy: np.ndarray):
-    """Rows and columns of the window worth testing: the triangle's box and one more pixel."""
-    w, h = case.size
-    lo = np.floor(xy.min(axis=0) - case.origin).astype(int) - 1
-    hi = np.ceil(xy.max(axis=0) - case.origin).astype(int) + 1
-    return range(max(lo[1], 0), min(hi[1], h)), range(max(lo[0], 0), min(hi[0], w))
-
-
-def _covers_body(fn, case: CoverageCase):
-    def body():
-        w, h = case.size
-        out = np.zeros((len(case.triangles), h, w), dtype=bool)
-        x0, y0 = case.origin
-        for t, xy in enumerate(case.triangles):
-            rows, cols = _window(case, xy)
-            for i in rows:
-                for j in cols:
-                    p = np.array([x0 + j + 0.5, y0 + i + 0.5])
-                    out[t, i, j] = _as_bool(fn(xy.copy(), p))
-        return out
-
-    return body
-
-
-def _fill_body(fn, case: CoverageCase):
-    def body():
-        w, h = case.size
-        out = []
-        for xy in case.triangles:
-            got = np.asarray(fn(xy.copy(), w, h))
-            if got.shape != (h, w) or got.dtype.kind not in "bui":
-                raise WrongAnswerType(
-                    f"returned a {got.dtype} array of shape {got.shape}; expected a bool array "
-                    f"of shape (height, width) = {(h, w)}"
-                )
-            out.append(got.astype(bool))
-        return np.array(out)
-
-    return body
-
-
-def _check_coverage(name: str, fn, cases: list[CoverageCase], body) -> Report:
-    failures = []
-    for case in cases:
-        expected = np.array([coverage.expected_coverage(case, xy) for xy in case.triangles])
-        outcome = run_case(body(fn, case))
-        if outcome.not_implemented:
-            return Report(name, [], len(cases), True, coverage.example_drawing(cases[0]))
-        if outcome.error:
-            failures.append(Failure(case.label, outcome.error, expected, None))
-            continue
-        for k in range(len(case.triangles)):
-            if not np.array_equal(outcome.value[k], expected[k]):
-                failures.append(coverage.coverage_failure(case, k, outcome.value, expected))
-                break  # one failure per case keeps the report readable
-    return Report(name, failures, len(cases), False, coverage.example_drawing(cases[0]))
-
-
-def check_covers(fn) -> Report:
-    cases = catalogue_coverage() + random_coverage()
-    return _check_coverage("covers", fn, cases, _covers_body)
-
-
-def check_fill(fn) -> Report:
-    # fill draws the image from the origin: cases far from it have no pixel to show
-    cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
-    return _check_coverage("fill", fn, cases, _fill_body)
-
-
-def _check_values(name, fn, cases, convert, same, explain, draw) -> Report:
-    """Run ``fn(*args)`` on ``cases`` of (label, args, expected) and compare with ``same``."""
-    failures = []
-    for label, args, expected in cases:
-        copies = tuple(np.array(a, copy=True) if isinstance(a, np.ndarray) else a for a in args)
-        outcome = run_case(lambda copies=copies: convert(fn(*copies)))
-        if outcome.not_implemented:
-            return Report(name, [], len(cases), True, _drawer(draw, cases[0], None))
-        if outcome.error:
-            failures.append(Failure(label, outcome.error, expected, None))
-        elif not same(outcome.value, expected):
-            text = explain(args, expected, outcome.value)
-            case = (label, args, expected)
-            failures.append(
-                Failure(label, text, expected, outcome.value, _drawer(draw, case, outcome.value))
-            )
-    return Report(name, failures, len(cases), False, _drawer(draw, cases[0], cases[0][2]))
-
-
-def _drawer(draw, case, got):
-    def drawing(ax):
-        return draw(ax, case, got)
-
-    return drawing
-
-
-def _numbers(value) -> np.ndarray:
-    try:
-        return np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {value!r:.60}, not numbers") from None
-
-
-def _float(value) -> float:
-    arr = _numbers(value)
-    if arr.size != 1:
-        raise WrongAnswerType(f"returned {value!r:.60}, not one number")
-    return float(arr.item())
+from .value_checks import ValueExercise, check_value_exercise
 
 
 def _vector3(value) -> np.ndarray:
-    arr = _numbers(value)
-    if arr.shape != (3,):
-        raise WrongAnswerType(f"returned {value!r:.60}; expected 3 weights, shape (3,)")
-    return arr
+    return as_numbers(value, (3,), "3 weights, shape (3,)")
 
 
 def _polygon(value) -> np.ndarray:
-    arr = _numbers(value)
-    if arr.size == 0:
+    sized = isinstance(value, (list, tuple)) or (isinstance(value, np.ndarray) and value.ndim)
+    if sized and len(value) > MAX_VERTICES:  # before any conversion: a huge answer costs nothing
+        raise WrongAnswerType(
+            f"returned {short(value)}: a triangle clipped by one plane has at most 4 vertices"
+        )
+    if sized and np.size(value) == 0:
         return np.zeros((0, 4))
-    if arr.ndim != 2 or arr.shape[1] != 4:
-        raise WrongAnswerType(f"returned {value!r:.60}; expected an (n, 4) array of vertices")
-    return arr
+    return as_numbers(value, (-1, 4), "an (n, 4) array of vertices (x, y, z, w)")
 
 
 # -- drawings of the value exercises (matplotlib is imported only inside .drawing) ------------
@@ -194,55 +81,49 @@ def _draw_clip(ax, case, got):
     return draw_clip(ax, case[1][0], case[2], got)
 
 
+#: How each value exercise is checked (every exercise but covers and fill).
+VALUE_EXERCISES = {
+    "edge_function": ValueExercise(
+        scalars.edge_function_cases,
+        as_number,
+        close,
+        scalars.explain_edge_function,
+        _draw_edge,
+        scalars.edge_function_pattern,
+    ),
+    "split_point": ValueExercise(
+        scalars.split_point_cases, as_number, close, scalars.explain_split_point, _draw_split
+    ),
+    "barycentric": ValueExercise(
+        scalars.barycentric_cases,
+        _vector3,
+        all_close,
+        scalars.explain_barycentric,
+        _draw_bary,
+        scalars.barycentric_pattern,
+    ),
+    "perspective": ValueExercise(
+        scalars.perspective_cases, as_number, close, scalars.explain_perspective, _draw_persp
+    ),
+    "depth_test": ValueExercise(
+        scalars.depth_test_cases,
+        as_bool,
+        lambda a, b: a == b,
+        scalars.explain_depth_test,
+        _draw_depth,
+    ),
+    "clip_near": ValueExercise(
+        near_clip.clip_cases, _polygon, same_polygon, near_clip.explain_clip, _draw_clip
+    ),
+}
+
+
 def check_values(name: str, fn) -> Report:
     """Check one of the value exercises (every exercise but covers and fill)."""
-    spec = {
-        "edge_function": (
-            scalars.edge_function_cases,
-            _float,
-            close,
-            scalars.explain_edge_function,
-            _draw_edge,
-        ),
-        "split_point": (
-            scalars.split_point_cases,
-            _float,
-            close,
-            scalars.explain_split_point,
-            _draw_split,
-        ),
-        "barycentric": (
-            scalars.barycentric_cases,
-            _vector3,
-            all_close,
-            scalars.explain_barycentric,
-            _draw_bary,
-        ),
-        "perspective": (
-            scalars.perspective_cases,
-            _float,
-            close,
-            scalars.explain_perspective,
-            _draw_persp,
-        ),
-        "depth_test": (
-            scalars.depth_test_cases,
-            _as_bool,
-            lambda a, b: a == b,
-            scalars.explain_depth_test,
-            _draw_depth,
-        ),
-        "clip_near": (
-            near_clip.clip_cases,
-            _polygon,
-            same_polygon,
-            near_clip.explain_clip,
-            _draw_clip,
-        ),
-    }
-    cases, convert, same, explain, draw = spec[name]
-    return _check_values(name, fn, cases(), convert, same, explain, draw)
+    return check_value_exercise(name, fn, VALUE_EXERCISES[name])
 
+
+from . import later  # noqa: E402  (exercises 05–08: their own modules, registered below)
 
 #: The exercises in course order, and what checks each.
 EXERCISES: dict[str, Callable] = {
@@ -254,6 +135,8 @@ EXERCISES: dict[str, Callable] = {
     "perspective": lambda fn: check_values("perspective", fn),
     "depth_test": lambda fn: check_values("depth_test", fn),
     "clip_near": lambda fn: check_values("clip_near", fn),
+    **later.EXERCISES,  # 05–08: depth precision, antialiasing, texture filtering, tiles
+    **lines_blending.EXERCISES,  # lesson 12: line_pixels, over, over_premultiplied
 }
 
 
@@ -266,14 +149,24 @@ def names() -> list[str]:
     return list(EXERCISES)
 
 
-def check(name: str, fn: Callable) -> Report:
+def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
     """Run exercise ``name``'s cases on the student's ``fn`` and explain every failure.
 
-    Never raises because of ``fn``: its exceptions become failures, ``NotImplementedError``
-    marks the report "not implemented yet", and each case has a time limit.
+    Never raises and never hangs because of ``fn``: its exceptions (``SystemExit`` included)
+    become failures; ``NotImplementedError`` on every case marks the report "not implemented
+    yet"; the whole check, comparison and explanations included, takes about ``budget``
+    seconds at most, a case at most a fifth of it, and the check stops at the first case that
+    runs past its limit (an endless loop is reported after 2 s of the default 10).
     """
-    if name not in EXERCISES:
+    if not isinstance(name, str) or name not in EXERCISES:
         raise ValueError(f"name must be one of {names()}, got {name!r}")
     if not callable(fn):
         raise TypeError(f"fn must be a function, got {type(fn).__name__}")
-    return EXERCISES[name](fn)
+    seconds = check_seconds(budget)
+    with time_budget(seconds) as b:
+        report = EXERCISES[name](fn)
+    if b.stopped is not None and report.stopped is None:  # an exercise that does not say
+        kept = [f for f in report.failures if f.explanation != SKIPPED]
+        n_run = report.n_cases - (len(report.failures) - len(kept))
+        report = replace(report, failures=kept, stopped=b.stopped, n_run=n_run)
+    return report

@@ -18,12 +18,16 @@ from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from .cases import CoverageCase
 from .report import Failure
+from .scalars import num
 
 
 def fmt(x: float) -> str:
-    """A number as a student would write it: 5.5, 3.045, 100000.5 (at most 4 decimals)."""
-    x = float(x)
-    return f"{x:.4f}".rstrip("0").rstrip(".") if abs(x) < 1e15 else f"{x:.6g}"
+    """A position exactly (it is on the 1/256 grid), other numbers with 3 decimals or more.
+
+    >>> fmt(5.5), fmt(100000.00390625), fmt(2.5e-05)
+    ('5.5', '100000.00390625', '2.5e-05')
+    """
+    return num(x)
 
 
 def point(p) -> str:
@@ -65,8 +69,9 @@ def _values(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
     return np.array([s * float(edge_function(xy[k], xy[(k + 1) % 3], c)) for k in range(3)])
 
 
-def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, int | None]:
-    """Why the rule covers (``covered``) or leaves out centre ``c``, and the deciding edge."""
+def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, int | None, str]:
+    """Why the rule covers (``covered``) or leaves out centre ``c``, the deciding edge, and the
+    kind of pixel ("zero area", "outside", "on a top edge"..., "vertex", "inside")."""
     yours = "your function left it uncovered" if covered else "your function covered it"
     if area2(xy) == 0:
         return (
@@ -74,6 +79,7 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             f"(E(v1, v2, v3) = 0): a zero-area triangle covers nothing, not even a centre on "
             f"its line such as {point(c)}; {yours}",
             None,
+            "zero area",
         )
     e = _values(xy, c)
     zeros = [k for k in range(3) if e[k] == 0]
@@ -83,6 +89,7 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             f"centre {point(c)} is outside edge {edge_name(k)} (E = {fmt(-e[k])} px² on the "
             f"side away from the interior): it is not covered; {yours}",
             k,
+            "outside",
         )
     if len(zeros) == 1:
         k = zeros[0]
@@ -92,6 +99,7 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             f"centre {point(c)} lies exactly on edge {edge_name(k)}, a {kind} edge: the "
             f"top-left rule {rule}, {yours}",
             k,
+            f"on a {kind} edge",
         )
     if len(zeros) == 2:
         kinds = [f"{edge_name(k)} ({edge_kind(xy, k)})" for k in zeros]
@@ -99,13 +107,14 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             f"centre {point(c)} is a vertex, on edges {kinds[0]} and {kinds[1]}: the top-left "
             f"rule covers it only when both are top or left edges; {yours}",
             zeros[0],
+            "vertex",
         )
     k = int(np.argmin(e))
     text = (
         f"centre {point(c)} is strictly inside all three edges (E = "
         f"{', '.join(fmt(v) for v in e)} px², all on the interior side): it is covered; {yours}"
     )
-    return text, k
+    return text, k, "inside"
 
 
 def _rule_variants(case: CoverageCase, xy: np.ndarray) -> dict[str, np.ndarray]:
@@ -135,30 +144,31 @@ MISTAKES = {
 }
 
 
-def diagnose(case: CoverageCase, xy: np.ndarray, got: np.ndarray, expected: np.ndarray) -> str:
-    """One sentence naming the mistake when a typical wrong rule explains the whole case."""
+def diagnose(case: CoverageCase, xy: np.ndarray, got: np.ndarray, expected: np.ndarray):
+    """(kind, one sentence) naming the mistake when a typical wrong rule explains the case,
+    or ("", "")."""
     if area2(xy) < 0 and not got.any() and expected.any():
-        return (
+        return "one winding only", (
             f"you covered nothing of a triangle whose vertices run counter-clockwise on screen "
             f"(E(v1, v2, v3) = {fmt(area2(xy))} < 0): handle both windings (swap two vertices, "
             "or accept all-negative edge functions)"
         )
     matches = [
-        MISTAKES[name]
+        name
         for name, cov in _rule_variants(case, xy).items()
         if not np.array_equal(cov, expected) and np.array_equal(cov, got)
     ]
     if matches:  # several wrong rules can give the same pixels on one triangle: name each
-        return "; or ".join(matches)
+        return " or ".join(matches), "; or ".join(MISTAKES[name] for name in matches)
     far = max(case.origin)
     if far > 1e4:
         ulp = float(np.spacing(np.float32(far)))
-        return (
+        return "float32", (
             f"this triangle lies {fmt(far)} px from the origin, where float32 numbers are "
             f"{fmt(ulp)} px apart and cannot hold the 1/256-px grid: compute the edge functions "
             "in float64 (or exact integers), relative to a vertex"
         )
-    return ""
+    return "", ""
 
 
 def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray) -> Failure:
@@ -171,13 +181,13 @@ def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray
         for i, j in np.argwhere(got != expected)
     ]
     wrong = np.argwhere(got != expected)
-    mistake = diagnose(case, xy, got, expected)
+    mistake_kind, mistake = diagnose(case, xy, got, expected)
     zeros = [int((_values(xy, c) == 0).sum()) for c in centres] if area2(xy) else [0]
     # a winding mistake shows best inside the triangle, a tie rule on a single edge
     want = 0 if mistake.startswith("you covered nothing") else 1
     n = zeros.index(want) if want in zeros else 0
     (i, j), c = wrong[n], centres[n]
-    text, edge = explain_pixel(xy, c, bool(expected[i, j]))
+    text, edge, pixel_kind = explain_pixel(xy, c, bool(expected[i, j]))
     if case.mesh:
         times = int(got_all[:, i, j].sum())
         if times != 1:
@@ -196,17 +206,19 @@ def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray
 
         return draw_coverage(ax, case, xy, expected, got, edge, (i, j))
 
-    return Failure(label, explanation, expected, got, draw)
+    return Failure(label, explanation, expected, got, draw, mistake_kind or pixel_kind)
 
 
-def example_drawing(case: CoverageCase, got: np.ndarray | None = None):
-    """A drawing of the case's first triangle (a passing case, or "not implemented")."""
+def example_drawing(case: CoverageCase, expected_only: bool = False):
+    """A drawing of the case's first triangle: a passing case, or (``expected_only``) the
+    rule's pixels alone, for a function that gave no answer."""
     xy = case.triangles[0]
     expected = expected_coverage(case, xy)
 
     def draw(ax):
         from .drawing import draw_coverage
 
-        return draw_coverage(ax, case, xy, expected, expected if got is None else got, None, None)
+        got = None if expected_only else expected
+        return draw_coverage(ax, case, xy, expected, got, None, None)
 
     return draw

@@ -12,12 +12,18 @@ EDGE_COLOUR = "#ff9f1c"
 
 
 def draw_coverage(ax, case, xy, expected, got, edge, pixel):
-    """Pixels of the window coloured by state, the triangle, the deciding edge, the pixel."""
+    """Pixels of the window coloured by state, the triangle, the deciding edge, the pixel.
+
+    ``got`` None (the function gave no answer): the rule's pixels alone.
+    """
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
 
     h, w = expected.shape
-    state = np.where(expected == got, expected.astype(int), np.where(expected, 2, 3))
+    if got is None:
+        state = expected.astype(int)
+    else:
+        state = np.where(expected == got, expected.astype(int), np.where(expected, 2, 3))
     x0, y0 = case.origin
     artists = [
         ax.imshow(
@@ -43,6 +49,8 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
         i, j = pixel
         artists += ax.plot(x0 + j + 0.5, y0 + i + 0.5, "o", mfc="none", mec="black", ms=9)
     handles = [Patch(color=STATE_COLOURS[s], label=STATE_NAMES[s]) for s in (1, 2, 3)]
+    if got is None:
+        handles = [Patch(color=STATE_COLOURS[1], label="covered by the rule")]
     # outside the axes, to the right: the legend must never hide a pixel
     legend = ax.legend(
         handles=handles, fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)
@@ -54,11 +62,32 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     return artists
 
 
+def drawable(values, reference) -> np.ndarray:
+    """``values`` with what cannot be drawn beside ``reference`` (inf, nan, or a million times
+    larger) replaced by nan: the bar or point is left out, the explanation quotes the value."""
+    v = np.asarray(values, dtype=float)
+    scale = 1e6 * max(1.0, float(np.nanmax(np.abs(np.asarray(reference, dtype=float)), initial=0)))
+    with np.errstate(invalid="ignore"):
+        return np.where(np.isfinite(v) & (np.abs(v) <= scale), v, np.nan)
+
+
+def _off_chart(ax, values, drawn) -> list:
+    """A note naming the values left out of the chart."""
+    left_out = np.asarray(values, dtype=float)[np.isnan(drawn) & ~np.isnan(values)]
+    if not left_out.size:
+        return []
+    text = "yours, off the chart: " + ", ".join(f"{v:.3g}" for v in left_out[:3])
+    return [ax.text(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize="x-small")]
+
+
 def draw_values(ax, labels, expected, got):
     """Expected and got side by side as bars (``got`` may be None: nothing to show yet)."""
     x = np.arange(len(labels))
     artists = list(ax.bar(x - 0.2, expected, width=0.4, color="#c8c8c8", label="expected"))
     if got is not None:
+        shown = drawable(got, expected)
+        artists += _off_chart(ax, got, shown)
+        got = shown
         ok = np.isclose(got, expected, rtol=1e-9, atol=1e-9)
         colours = np.where(ok, "#c8c8c8", STATE_COLOURS[3])
         artists += list(ax.bar(x + 0.2, got, width=0.4, color=colours, hatch="//", label="yours"))
@@ -71,7 +100,9 @@ def draw_values(ax, labels, expected, got):
 def draw_bars(ax, labels, values, wrong):
     """One bar per value; ``wrong[k]`` marks the student's bar that is wrong in red."""
     colours = [STATE_COLOURS[3] if bad else "#c8c8c8" for bad in wrong]
-    artists = list(ax.bar(np.arange(len(values)), values, color=colours))
+    shown = drawable(values, values[:2])
+    artists = _off_chart(ax, values, shown)
+    artists += list(ax.bar(np.arange(len(values)), shown, color=colours))
     ax.set_xticks(np.arange(len(values)), labels)
     ax.axhline(0, color="black", linewidth=0.5)
     return artists
@@ -84,7 +115,7 @@ def draw_split(ax, v, expected, got):
     artists += ax.plot([v[0, 0], v[2, 0]], [v[0, 1], v[2, 1]], color=EDGE_COLOUR, linewidth=3)
     artists.append(ax.axhline(v[1, 1], color="#888888", linestyle=":"))
     artists += ax.plot(expected, v[1, 1], "o", color="#2b7bba", label="v4 (expected)")
-    if got is not None and np.isfinite(got):
+    if got is not None and np.isfinite(drawable(got, v)):
         artists += ax.plot(got, v[1, 1], "x", color=STATE_COLOURS[3], ms=10, label="your u4")
     for k, p in enumerate(v):
         artists.append(ax.annotate(f"v{k + 1}", p, fontsize="x-small"))
@@ -105,11 +136,82 @@ def draw_clip(ax, v, expected, got):
     artists.append(ax.axhline(0, color=EDGE_COLOUR, linewidth=2, label="near plane z + w = 0"))
     if len(expected):
         artists += ax.plot(*ring(expected), "o-", color="#2b7bba", label="clipped (expected)")
-    if got is not None and len(got):
+    if got is not None and len(got) and np.isfinite(drawable(got, v)).all():
         artists += ax.plot(*ring(got), "x--", color=STATE_COLOURS[3], label="yours")
+    elif got is not None and len(got):
+        artists += _off_chart(ax, np.ravel(got), drawable(np.ravel(got), v))
     for k, p in enumerate(v):
         artists.append(ax.annotate(f"v{k + 1}", (p[0], p[2] + p[3]), fontsize="x-small"))
     ax.set_xlabel("x (clip space)")
     ax.set_ylabel("z + w (inside ≥ 0)")
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    return artists
+
+
+#: Colours of coverage counts 0, 1, 2, 3 or more (a watertight fill shows 0 and 1 only).
+COUNT_COLOURS = ("#ffffff", "#c8c8c8", "#d7301f", "#7f0000")
+#: Colours of count differences −1 (a hole), 0, +1 (covered once too often).
+DIFF_COLOURS = ("#2b7bba", "#ffffff", "#d7301f")
+
+
+def _scene_axes(ax, case, title):
+    w, h = case.size
+    artists = []
+    for xy in case.triangles:
+        ring = np.vstack([xy, xy[:1]])
+        artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=0.5)
+    ax.set_xlim(0, w)
+    ax.set_ylim(h, 0)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    artists.append(ax.set_title(title, fontsize="small"))
+    return artists
+
+
+def draw_counts(ax, case, counts, title):
+    """How many triangles cover each pixel of a scene, with the triangles' edges."""
+    from matplotlib.colors import ListedColormap
+
+    w, h = case.size
+    image = ax.imshow(
+        np.minimum(counts, 3),
+        cmap=ListedColormap(COUNT_COLOURS),
+        vmin=0,
+        vmax=3,
+        extent=(0, w, h, 0),
+        interpolation="nearest",
+    )
+    return [image] + _scene_axes(ax, case, title)
+
+
+def draw_differences(ax, case, diff):
+    """Pixels whose count differs: red where yours covers more, blue where less, with the
+    difference written in each."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    w, h = case.size
+    image = ax.imshow(
+        np.clip(diff, -1, 1),
+        cmap=ListedColormap(DIFF_COLOURS),
+        vmin=-1.5,
+        vmax=1.5,
+        extent=(0, w, h, 0),
+        interpolation="nearest",
+    )
+    n = int((diff != 0).sum())
+    artists = [image] + _scene_axes(ax, case, f"differences: {n} pixel(s)")
+    for i, j in np.argwhere(diff != 0):
+        artists.append(
+            ax.text(j + 0.5, i + 0.5, f"{int(diff[i, j]):+d}", ha="center", va="center", fontsize=5)
+        )
+    handles = [
+        Patch(color=DIFF_COLOURS[2], label="yours covers more"),
+        Patch(color=DIFF_COLOURS[0], label="yours covers less (a hole)"),
+    ]
+    # below the panel: the legend must never hide a pixel, nor leave the figure
+    artists.append(
+        ax.legend(handles=handles, fontsize="x-small", loc="upper right", bbox_to_anchor=(1, -0.02))
+    )
     return artists

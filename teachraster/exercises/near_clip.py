@@ -14,7 +14,7 @@ from ..pipeline.geometry.clipping import clip_polygon, distances
 from ..study.hardcases import CASES
 from .cases import SEED
 from .scalars import num, vec
-from .tolerance import TOL, same_polygon
+from .tolerance import TOL, all_close, same_polygon
 
 
 def near_only(v: np.ndarray) -> bool:
@@ -82,15 +82,17 @@ def explain_clip(args, expected, got) -> str:
         )
         if set(outside) <= set(flipped):  # a test after the divide would also keep them all
             text += f". If you tested after the divide: {divide}"
-        return text
+        return "unclipped", text
     if divide:
-        return divide
+        return "after the divide", divide
     scale = max(1.0, float(np.abs(v).max()))
     bad = [p for p in got if p[2] + p[3] < -TOL * scale]
     if bad:
-        return f"your polygon keeps {vec(bad[0])}, whose z + w = {num(bad[0][2] + bad[0][3])} < 0"
+        return "keeps a vertex behind", (
+            f"your polygon keeps {vec(bad[0])}, whose z + w = {num(bad[0][2] + bad[0][3])} < 0"
+        )
     if len(got) and same_polygon(got[::-1], expected):
-        return (
+        return "reversed", (
             "your polygon has the right vertices in reverse order: keep the triangle's order "
             "(walk the edges v1→v2→v3→v1)"
         )
@@ -104,9 +106,10 @@ def explain_clip(args, expected, got) -> str:
                 f"{num(t)} (d = z + w), at {vec(v[i] + t * (v[j] - v[i]))}"
             )
     where = "; ".join(cuts) if cuts else "no edge crosses the near plane"
-    return (
-        f"your polygon {_poly(got)} should be {_poly(expected)}: {where}. Interpolate the new "
-        "vertices in clip space, before the divide, and keep the inside vertices in order"
+    return "value", (
+        f"your polygon {_poly(got, expected)} should be {_poly(expected, got)}: {where}. "
+        "Interpolate the new vertices in clip space, before the divide, and keep the inside "
+        "vertices in order"
     )
 
 
@@ -114,5 +117,19 @@ def _has(poly: np.ndarray, vertex: np.ndarray) -> bool:
     return any(np.allclose(p, vertex, rtol=TOL, atol=TOL) for p in poly)
 
 
-def _poly(p: np.ndarray) -> str:
-    return "[" + ", ".join(vec(q) for q in p) + "]" if len(p) else "empty"
+def _poly(p: np.ndarray, other: np.ndarray) -> str:
+    """The polygon's vertices, each with the digits that tell it from the nearest of ``other``.
+
+    >>> a = np.array([[0.0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]])
+    >>> b = a + np.array([0, 0, 0, 1e-7])
+    >>> _poly(a, b) != _poly(b, a)
+    True
+    """
+    if not len(p):
+        return "empty"
+    if not len(other):
+        return "[" + ", ".join(vec(q) for q in p) + "]"
+    near = [other[int(np.argmin(np.abs(other - q).sum(axis=1)))] for q in p]
+    # a vertex that matches (within the tolerance) needs no more digits than usual
+    near = [None if all_close(q, r) else r for q, r in zip(p, near)]
+    return "[" + ", ".join(vec(q, r) for q, r in zip(p, near)) + "]"

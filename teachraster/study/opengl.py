@@ -164,6 +164,12 @@ def _create_context() -> tuple[bool, str]:
     return True, str(ctx.info["GL_RENDERER"])
 
 
+def gl_context():
+    """The cached headless context and the raw GL calls, for the other cross-check modules
+    (:mod:`.opengl_lines`, :mod:`.opengl_blend`); RuntimeError when there is no OpenGL."""
+    return _context()
+
+
 def _context():
     ok, why = gl_available()
     if not ok:

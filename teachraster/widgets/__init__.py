@@ -32,6 +32,8 @@ Widgets
   overdraw, depth complexity, quad overshading, ...); click a pixel for its history (lesson 11).
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
   plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
+- :class:`LinePlayer` and :class:`BlendingExplorer` (lesson 12): a line step by step under the
+  diamond rule, Bresenham or DDA; transparent triangles reordered, premultiplied, sRGB.
 
 Figures
 -------
@@ -51,6 +53,7 @@ Example
 >>> player.close()
 """
 
+from .blending import BlendingExplorer
 from .case_picker import CasePicker
 from .depth_explorer import DepthPrecisionExplorer
 from .display import BACKENDS, FigureDisplay, resolve_backend
@@ -58,6 +61,7 @@ from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
 from .frame_inspector import FrameInspector
 from .inspector import PixelInspector
+from .line_player import LinePlayer
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .predict import Predict
@@ -69,11 +73,13 @@ from .zbuffer_stepper import ZBufferStepper
 __all__ = [
     "FrameInspector",
     "BACKENDS",
+    "BlendingExplorer",
     "CasePicker",
     "DepthPrecisionExplorer",
     "FigureDisplay",
     "FilterExplorer",
     "FillPlayer",
+    "LinePlayer",
     "PixelInspector",
     "PlaneExplorer",
     "Predict",

@@ -119,7 +119,7 @@ class CasePicker:
         self.method = widgets.ToggleButtons(options=hardcases.FILL_METHODS, value=method)
         self._style = style
         with style_context(style):
-            self.fig = new_figure((12.0, 5.5), self.backend)
+            self.fig = new_figure((9.0, 4.4), self.backend)  # fits the notebook column
             self.fig.set_layout_engine("constrained")
             self.axes = self.fig.subplots(1, 2)
         self._run()

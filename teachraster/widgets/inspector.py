@@ -62,7 +62,7 @@ class PixelInspector(Holdable):
         self.col = widgets.IntSlider(value=col, min=0, max=width - 1, description="col")
         self._compute()
         with style_context(style):
-            fig = new_figure((11, 5), self.backend)
+            fig = new_figure((9, 4.4), self.backend)  # fits the notebook column
             left, right = (
                 fig.add_axes((0.06, 0.08, 0.5, 0.8)),
                 fig.add_axes((0.62, 0.1, 0.36, 0.75)),

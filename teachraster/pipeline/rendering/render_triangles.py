@@ -22,6 +22,7 @@ simulated only where the scene needs it, see :mod:`teachraster.pipeline.render_p
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 from dataclasses import dataclass, field, replace
 
@@ -31,6 +32,7 @@ from ...core.sample_patterns import as_samples, is_single
 from ...core.snapping import SUBPIXEL_BITS
 from ...core.validate import as_bool, as_real
 from ..antialiasing.multisampling import multisample_stage
+from ..blending.colour_blending import blend_stage, check_blend
 from ..planning.inputs import check_render
 from ..planning.render_plan import Plan, depth_test_effect, hi_z_effect
 from ..texturing.quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
@@ -201,6 +203,9 @@ class Frame:
     ddx, ddy : (H, W, k) float64 or None
         Screen-space derivatives of the attributes from 2×2 quads (``derivatives=``): per
         pixel step right and per pixel step down; NaN where uncovered. None when not computed.
+    color, sample_color : (H, W, 4), (H, W, S, 4) float64 or None
+        With ``blend=``: the colour buffer (resolved under MSAA) and, with samples, per sample
+        (:mod:`teachraster.pipeline.blending`). None without blending.
     """
 
     triangle_id: np.ndarray
@@ -214,6 +219,8 @@ class Frame:
     samples: np.ndarray | None = None
     ddx: np.ndarray | None = None
     ddy: np.ndarray | None = None
+    color: np.ndarray | None = None
+    sample_color: np.ndarray | None = None
 
     @property
     def coverage(self) -> np.ndarray:
@@ -310,6 +317,9 @@ def render(
     centroid: bool = False,
     derivatives=False,
     derivatives_where=None,
+    blend=None,
+    depth_write=True,
+    clear_color=(0.0, 0.0, 0.0, 0.0),
 ) -> Frame:
     """Render clip-space triangles into a ``height`` × ``width`` frame (bad arguments raise
     a ValueError or TypeError naming them, see :mod:`teachraster.pipeline.inputs`).
@@ -329,27 +339,23 @@ def render(
     depth_format : {"float64", "float32", "unorm24", "unorm16"}
         What the depth buffer stores; fewer bits show z-fighting.
     interpolation : {"perspective", "affine"}
-        Perspective-correct attributes (GLSL ``smooth``, the default) or plain
-        screen-space ones (``noperspective``), to show the difference.
-    force : None, "all" or names from ``teachraster.pipeline.render_plan.FORCEABLE``
-        Run these effects everywhere, even where the plan says they change nothing.
-    trace : bool
-        Record every stage (see :class:`RenderTrace`).
-    subpixel_bits : int or None
-        Snapping precision, as in :func:`teachraster.rasterize`.
-    max_pixels : int, optional
-        Largest ``width * height`` (default 2**28): larger raises before allocating.
+        GLSL ``smooth`` (perspective-correct, the default) or ``noperspective``.
+    force, trace : None, "all" or names from ``render_plan.FORCEABLE``; bool
+        Run these effects everywhere (even where they change nothing); record every stage.
+    subpixel_bits, max_pixels : int or None, int (optional)
+        Snapping as in :func:`teachraster.rasterize`; the largest ``width * height`` (2**28).
     samples, centroid : int or (S, 2) array-like, bool
         Multisampling (MSAA): 1, 2, 4, 8, 16 (standard patterns) or offsets in [0, 1)².
         Coverage and the depth test per sample, attributes once per pixel and triangle
         (:class:`Frame`), at the centre or (``centroid``) the covered sample nearest it.
     derivatives : bool or {"coarse", "fine"}
-        Also compute ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True`` or ``"coarse"``
-        (one pair per quad, as llvmpipe) or ``"fine"`` (per row / column); see
-        :mod:`teachraster.pipeline.quad_derivatives`.
+        ``frame.ddx``, ``frame.ddy`` from 2×2 quads: ``True``/``"coarse"`` (one pair per
+        quad, as llvmpipe) or ``"fine"``; see :mod:`teachraster.pipeline.quad_derivatives`.
     derivatives_where : (N,) bool array-like, optional
-        Only the pixels of these input triangles get derivatives (NaN elsewhere); how
-        ``render(scene, ...)`` limits them to the triangles a texture filter minifies.
+        Only the pixels of these input triangles get derivatives (NaN elsewhere).
+    blend, depth_write, clear_color : None or "over", "premultiplied", "additive", "multiply"
+        (or a glBlendFunc pair), bool or (N,) bools, (4,): RGBA ``attrs`` blended into
+        ``frame.color`` in submission order (:mod:`teachraster.pipeline.blending`).
 
     Examples
     --------
@@ -360,8 +366,6 @@ def render(
            [ 0, -1, -1, -1],
            [ 0,  0, -1, -1],
            [ 0,  0,  0, -1]])
-    >>> print(frame.plan["clipping"].why)
-    no triangle crosses the near or far plane: nothing to clip
     """
     a = check_render(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull,
                      depth_format=depth_format, interpolation=interpolation, force=force,
@@ -370,13 +374,14 @@ def render(
     depth_test, trace, forced = a.depth_test, a.trace, a.forced
     offsets, centroid = _check_samples(samples, centroid)
     mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
-
+    blending = check_blend(blend, depth_write, clear_color, attrs)
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
     if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
-        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
-                                    centroid)  # fmt: skip
+        frame = _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
+                                     centroid)  # fmt: skip
+        return with_colour(frame, blending, clipped, window, culled, offsets, a)
     frags, cut = _fill(window, culled, a)  # with Hi-Z: hidden blocks never become fragments
     visible, depth_testing = depth_stage(
         frags, window, width, height, depth_test, depth_format, forced
@@ -391,7 +396,23 @@ def render(
     effects = (clipping, culling, depth_testing, perspective, attributes, derivs)
     plan = _plan(cut, frags, visible, effects, forced)
     record = trace and _record(clipped, window, culled, frags, visible, quads, cut, a)
-    return _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
+    frame = _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
+    return with_colour(frame, blending, clipped, window, culled, offsets, a)
+
+
+def with_colour(frame, blending, clipped, window, culled, offsets, a) -> Frame:
+    """The frame with its blended colour buffer and the plan's "blending" entry (the hook of
+    :mod:`.blending`); the frame itself when ``blend`` is None."""
+    if blending is None:
+        return frame
+    color, sample_color, effect = blend_stage(clipped, window, culled, offsets, a, blending)
+    # A shallow copy, not dataclasses.replace: replace would read (and so build) the lazy
+    # per-sample arrays of a multisampled frame.
+    out = copy.copy(frame)
+    for name, value in (("color", color), ("sample_color", sample_color),
+                        ("plan", Plan((*frame.plan.effects, effect)))):  # fmt: skip
+        object.__setattr__(out, name, value)
+    return out
 
 
 def _fill(window, culled, a):

@@ -38,8 +38,10 @@ fill
 depth
     ``tr.render`` with each ``depth_format`` storing either the window depth (the hyperbola
     ``z' = n + f - fn/z`` rescaled to [0, 1]) or a depth linear in view distance, on pairs of
-    nearly coplanar overlapping triangles at distances 1 to 500. Error: depth-order
-    inversions, pixels whose visible triangle differs from the true nearest one.
+    nearly coplanar overlapping triangles at distances 1 to 500, and on crossing pairs (a
+    camera-facing triangle pierced by a slanted one, :func:`slanted_pairs`) at distances 1 to
+    900. Error: depth-order inversions, pixels whose visible triangle differs from the true
+    nearest one, summed over both sets (``facing_wrong``, ``slanted_wrong``).
 
 The study is a package: :mod:`.settings` (groups, variants, sizes), :mod:`.timing`,
 :mod:`.ground_truth` (exact coverage, ray-traced texture coordinates), :mod:`.groups` (the four
@@ -69,6 +71,7 @@ from .groups import (
     floor_quad,
     jittered_mesh,
     random_triangles,
+    slanted_pairs,
 )
 from .measure import (
     run,
@@ -132,6 +135,7 @@ __all__ = [
     "columns",
     "depth_clip",
     "depth_pairs",
+    "slanted_pairs",
     "exact_coverage",
     "fill_triangle",
     "floor_quad",

@@ -23,6 +23,8 @@ from .settings import (
     FAR,
     MESH_OFFSETS,
     NEAR,
+    SLANT,
+    SLANTED_DISTANCES,
     SUBDIVISIONS,
     TEXELS,
 )
@@ -266,6 +268,36 @@ def depth_pairs(aspect: float = 1.0):
     return np.array(view), np.array(z_view)
 
 
+def slanted_pairs(aspect: float = 1.0):
+    """Pairs that cross: a camera-facing triangle pierced by a slanted one.
+
+    Pair k sits in cell k of a 3 x 3 layout, at view distance ``z`` = ``SLANTED_DISTANCES[k]``:
+    first a triangle whose depth runs from ``z (1 - SLANT)`` on its left to ``z (1 + SLANT)``
+    on its right, then a camera-facing one at ``z``. They intersect along a line; which one
+    is in front changes there. Window depth (affine in screen space, lesson 05b) puts that
+    line where it is; a depth *linear* in view distance, interpolated affinely over the
+    slanted triangle, does not (it is affine in screen space only when the triangle faces
+    the camera), at any number of bits.
+
+    Returns
+    -------
+    view (2K, 3, 3) view-space vertices, z_view (2K,) the distance of each pair.
+    """
+    proj = perspective(60.0, aspect, NEAR, FAR)
+    t = 1.0 / proj[1, 1]  # tan(fov / 2)
+    shape = np.array([[-0.28, -0.25], [0.28, -0.3], [-0.05, 0.28]])  # NDC, about the cell
+    view, z_view = [], []
+    for k, z in enumerate(SLANTED_DISTANCES):
+        centre = np.array([(k % 3 - 1) * 2 / 3, (1 - k // 3) * 2 / 3])
+        for slant, shift in ((SLANT, 0.0), (0.0, 0.05)):
+            ndc = centre + shape + [shift, 0.0]
+            d = z * (1 + slant * shape[:, 0] / 0.28)
+            pts = np.column_stack([ndc[:, 0] * d * t * aspect, ndc[:, 1] * d * t, -d])
+            view.append(pts)
+            z_view.append(z)
+    return np.array(view), np.array(z_view)
+
+
 def depth_clip(view: np.ndarray, mapping: str, aspect: float = 1.0) -> np.ndarray:
     """Clip coordinates storing the window depth, or ``linear_depth`` of the view distance."""
     proj = perspective(60.0, aspect, NEAR, FAR)
@@ -273,7 +305,7 @@ def depth_clip(view: np.ndarray, mapping: str, aspect: float = 1.0) -> np.ndarra
     clip = homo @ proj.T
     if mapping == "linear":
         # z_win = (z/w)/2 + 1/2 = linear_depth  <=>  z = w (2 linear_depth - 1); exact per
-        # vertex, and affine across these camera-facing triangles.
+        # vertex, and affine across camera-facing triangles (not across slanted ones).
         w = clip[..., 3]
         clip[..., 2] = w * (2 * linear_depth(-view[..., 2], NEAR, FAR) - 1)
     return clip
@@ -288,22 +320,30 @@ def bench_depth(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
     painted = render(depth_clip(view[order], "window"), size, size, depth_test=False)
     truth = np.where(painted.triangle_id >= 0, order[painted.triangle_id], -1)
     pair_of = np.where(truth >= 0, truth // 2, -1)
+    # Crossing pairs: window depth in float64 is exact to rounding (affine in screen space).
+    slanted, _ = slanted_pairs()
+    slanted_truth = render(depth_clip(slanted, "window"), size, size).triangle_id
     rows_out, timers = [], []
     for mapping in DEPTH_MAPPINGS:
         clip = depth_clip(view, mapping)
+        slanted_clip = depth_clip(slanted, mapping)
         for fmt in DEPTH_FORMATS:
 
             def draw(clip=clip, fmt=fmt):
                 return render(clip, size, size, depth_format=fmt)
 
             wrong = draw().triangle_id != truth
+            crossing = render(slanted_clip, size, size, depth_format=fmt).triangle_id
+            slanted_wrong = int((crossing != slanted_truth).sum())
             bad_pairs = sorted(set(pair_of[wrong].tolist()) - {-1})
             first = DEPTH_DISTANCES[bad_pairs[0]] if bad_pairs else ""
             rows_out.append(
                 {
                     "group": "depth",
                     "variant": f"{mapping} {fmt}",
-                    "error": int(wrong.sum()),
+                    "error": int(wrong.sum()) + slanted_wrong,
+                    "facing_wrong": int(wrong.sum()),
+                    "slanted_wrong": slanted_wrong,
                     "first_inverted_z": first,
                     "inverted_pairs": len(bad_pairs),
                 }

@@ -19,6 +19,11 @@ DEPTH_MAPPINGS = ("window", "linear")
 #: View distances of the depth pairs, and the gap between the two triangles of a pair.
 DEPTH_DISTANCES = (1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0)
 DEPTH_GAP = 0.01
+#: View distances of the slanted pairs (a camera-facing triangle pierced by a slanted one),
+#: out to near the far plane, where window depth has the least resolution.
+SLANTED_DISTANCES = (1.0, 5.0, 20.0, 50.0, 100.0, 200.0, 400.0, 700.0, 900.0)
+#: How far a slanted triangle's depth runs either side of its pair's distance (a fraction).
+SLANT = 0.4
 NEAR, FAR = 0.1, 1000.0
 
 #: What the ``error`` column means, per group (the y axis of the Pareto plot).
@@ -33,7 +38,7 @@ TABLE_COLUMNS = {
     "interpolation": ("mean_abs_texels", "divides_per_pixel"),
     "edge functions": ("gaps", "double_hits", "wrong_px_unsnapped_geometry"),
     "fill": (),
-    "depth": ("first_inverted_z",),
+    "depth": ("facing_wrong", "slanted_wrong", "first_inverted_z"),
 }
 COMMON_COLUMNS = (
     "group",

@@ -18,6 +18,7 @@ out below in a few lines of numpy so that lesson 07 can show "naive vs ours" sid
 The catalogue is a package: :mod:`.case` (the case, its results, the registry),
 :mod:`.naive` (the naive variants), :mod:`.checks` (shared runners and checks) and one module
 per family of cases (:mod:`.coverage_cases`, :mod:`.precision_cases`, :mod:`.clip_space_cases`).
+Line cases (:mod:`.line_cases`) have their own registry, :data:`LINE_CASES`.
 
 Results
 -------
@@ -47,6 +48,7 @@ from .case import (
     list_cases,
 )
 from .clip_space_cases import DepthResult
+from .line_cases import LINE_CASES, LineCase, LineResult, get_line_case, list_line_cases
 from .naive import (
     naive_affine,
     naive_counts,
@@ -64,13 +66,18 @@ __all__ = [
     "DepthResult",
     "DriftResult",
     "FarResult",
+    "LINE_CASES",
+    "LineCase",
+    "LineResult",
     "Fills",
     "HardCase",
     "Naive",
     "Rendered",
     "fill_window",
     "get_case",
+    "get_line_case",
     "list_cases",
+    "list_line_cases",
     "naive_affine",
     "naive_counts",
     "naive_coverage",

@@ -1,0 +1,152 @@
+"""The trace of one line: its steps, as plain arrays, with captions written on demand.
+
+Steps: 0 ``snap`` (the end points on the sub-pixel grid), 1 ``axis`` (the major axis and the
+range walked), then one ``column`` (x-major) or ``row`` (y-major) step per major-axis pixel
+the rule visited, in the order it walked them (for Bresenham and DDA, from p0 towards p1).
+Wide lines have two work steps, one per triangle of the rectangle. Presentation code asks
+the trace (``step``, ``caption``, ``coverage_at``, ``lit_at``) rather than re-deriving it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .line_rules import ENDS_INSIDE, LIT, LineSteps
+from .trace import Step
+from .validate import as_int
+
+SETUP = ("snap", "axis")
+
+_WHY = {
+    "diamond": {
+        LIT: "the segment meets its diamond and goes on out of it: lit",
+        ENDS_INSIDE: "the segment ends inside its diamond: left to the next segment",
+    },
+    "bresenham": {LIT: "lit"},
+    "dda": {LIT: "lit"},
+}
+
+
+@dataclass(frozen=True)
+class LineTrace:
+    """Every step of one line (see the module docstring).
+
+    ``p0``, ``p1`` the snapped end points (px); ``rule`` as asked; ``size`` (width, height);
+    ``steps`` the rule's :class:`~teachraster.core.line_rules.LineSteps` (None for a wide
+    line); ``wide`` the coverage of each of the two triangles of a wide line, else None.
+    """
+
+    rule: str
+    p0: tuple[float, float]
+    p1: tuple[float, float]
+    size: tuple[int, int]
+    steps: LineSteps | None
+    wide: tuple[np.ndarray, np.ndarray] | None = None
+
+    @property
+    def n_work(self) -> int:
+        """Number of work steps (visited columns or rows; 2 for a wide line)."""
+        return 2 if self.steps is None else len(self.steps.major)
+
+    def __len__(self) -> int:
+        return len(SETUP) + self.n_work
+
+    def index(self, k: int) -> int:
+        """Step ``k`` as a non-negative index (negative counts from the end)."""
+        k = as_int("k", k)
+        n = len(self)
+        if not -n <= k < n:
+            raise ValueError(f"k must be in [{-n}, {n}), got {k}")
+        return k % n
+
+    def step(self, k: int) -> Step:
+        """Step ``k`` as a :class:`~teachraster.core.trace.Step` (kind, caption, pixel)."""
+        k = self.index(k)
+        if k < len(SETUP):
+            return Step(index=k, kind=SETUP[k], caption=self.caption(k))
+        work = k - len(SETUP)
+        if self.steps is None:
+            return Step(index=k, kind="triangle", caption=self.caption(k), work=work)
+        major = int(self.steps.major[work])
+        row, col = (None, major) if self.steps.x_major else (major, None)
+        kind = "column" if self.steps.x_major else "row"
+        return Step(index=k, kind=kind, caption=self.caption(k), row=row, col=col, work=work)
+
+    def caption(self, k: int) -> str:
+        """Step ``k`` in words."""
+        k = self.index(k)
+        if k == 0:
+            return (f"snap: p0 = ({self.p0[0]:g}, {self.p0[1]:g}), "
+                    f"p1 = ({self.p1[0]:g}, {self.p1[1]:g}) on the sub-pixel grid")  # fmt: skip
+        if k == 1:
+            return self._axis_caption()
+        if self.steps is None:
+            half = ("first", "second")[k - len(SETUP)]
+            n = int(self.wide[k - len(SETUP)].sum())
+            return f"wide line, {half} triangle of the rectangle: {n} centres (top-left rule)"
+        return self._work_caption(k - len(SETUP))
+
+    def _axis_caption(self) -> str:
+        if self.steps is None:
+            return "wide line: the rectangle around the segment, split into two triangles"
+        axis = "x" if self.steps.x_major else "y"
+        name = "columns" if self.steps.x_major else "rows"
+        if len(self.steps.major) == 0:
+            return f"{axis}-major, nothing to walk"
+        lo, hi = int(self.steps.major.min()), int(self.steps.major.max())
+        return f"{axis}-major: walk {name} {lo}..{hi}, one step each"
+
+    def _work_caption(self, work: int) -> str:
+        s = self.steps
+        where = "column" if s.x_major else "row"
+        head = f"{where} {int(s.major[work])}"
+        value = float(s.value[work])
+        if self.rule == "bresenham":
+            head += f", error term D = {value:g} ({'step' if value > 0 else 'stay'} next)"
+        else:
+            other = "y" if s.x_major else "x"
+            label = "float32 sum" if self.rule == "dda" else "line at the centre"
+            head += f", {label}: {other} = {value:.6g}"
+        mine = (s.step == work) & (s.state != 0)
+        parts = [
+            f"pixel (row {r}, col {c}): {_WHY[self.rule][int(st)]}"
+            for r, c, st in zip(s.rows[mine], s.cols[mine], s.state[mine], strict=True)
+        ]
+        return head + ("; " + "; ".join(parts) if parts else "; no pixel lit")
+
+    def lit_at(self, k: int) -> np.ndarray:
+        """(height, width) bool: the pixels step ``k`` itself lit."""
+        k = self.index(k)
+        width, height = self.size
+        out = np.zeros((height, width), bool)
+        if k < len(SETUP):
+            return out
+        if self.steps is None:
+            return self.wide[k - len(SETUP)].copy()
+        mine = (self.steps.step == k - len(SETUP)) & (self.steps.state == LIT)
+        out[self.steps.rows[mine], self.steps.cols[mine]] = True
+        return out
+
+    def coverage_at(self, k: int) -> np.ndarray:
+        """(height, width) bool: the pixels lit after step ``k``."""
+        k = self.index(k)
+        width, height = self.size
+        out = np.zeros((height, width), bool)
+        if k < len(SETUP):
+            return out
+        if self.steps is None:
+            for done in self.wide[: k - len(SETUP) + 1]:
+                out |= done
+            return out
+        mine = (self.steps.step <= k - len(SETUP)) & (self.steps.state == LIT)
+        out[self.steps.rows[mine], self.steps.cols[mine]] = True
+        return out
+
+    def ends_inside(self) -> tuple[np.ndarray, np.ndarray]:
+        """(rows, cols) of the pixels whose diamond the line ends in (diamond rule)."""
+        if self.steps is None:
+            return np.zeros(0, np.int64), np.zeros(0, np.int64)
+        mine = self.steps.state == ENDS_INSIDE
+        return self.steps.rows[mine], self.steps.cols[mine]

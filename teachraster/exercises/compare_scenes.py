@@ -1,0 +1,231 @@
+"""Whole pictures for exercises 05–08: the student's function in a small scene, beside the package's.
+
+As CS184 and CS248 show a student's image beside the staff reference with a difference
+image, :meth:`.scene_report.SceneReport.compare` draws three panels: the scene rendered with
+the student's function plugged in, the same scene with the package's, and the pixels that
+differ (with the size of the difference where values are continuous). Each scene is small
+(a few hundred calls of the student's function) and runs only when it is drawn or asked for
+(the scenes are built in :mod:`.picture_scenes`):
+
+- ``depth_to_unorm``: two nearly coplanar triangles in a 16-bit depth buffer (z-fighting);
+- ``coverage_fraction``: a fan of triangles, the covered fraction of 4 samples per pixel;
+- ``resolve``: the same fan in colour, resolved over the samples;
+- ``mip_level``, ``bilinear``, ``trilinear``: a textured floor receding to the horizon
+  (λ per pixel; the texture filtered bilinearly; filtered trilinearly at the package's λ);
+- ``classify_block``: a tile walk (blocks of 16, then 4, then pixels) over a triangle.
+
+matplotlib is imported only when a comparison is drawn.
+"""
+
+from __future__ import annotations
+
+import operator
+import textwrap
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .running import run_case
+
+#: Colours of differing pixels and of the marked pixel.
+DIFF_COLOUR, MARK_COLOUR = "#d7301f", "#ff9f1c"
+
+
+@dataclass(eq=False)
+class Scene:
+    """A picture the package renders, and the same with the student's function.
+
+    ``student_image()`` runs the student's function once (under the checker's time limit)
+    and keeps the result; ``explain(row, col)`` says why one pixel differs.
+    """
+
+    title: str
+    reference: np.ndarray  # (H, W) values or codes, or (H, W, 3) colours; NaN = nothing
+    run: Callable[[], np.ndarray]  # the student's picture (calls the student's function)
+    explain_at: Callable[[np.ndarray, int, int], str]  # (student picture, row, col) -> words
+    categories: tuple[tuple[str, str], ...] = ()  # (name, colour) per code; () = continuous
+    parts: object = field(default=None, repr=False)  # the student's values behind the picture
+    #: The package's values behind the picture, (k, H, W), where a pixel's picture may agree
+    #: while its values do not (a wrong depth can still lose the same depth test): compared too.
+    reference_parts: np.ndarray | None = field(default=None, repr=False)
+    _outcome: object = field(default=None, repr=False)
+
+    def student_image(self) -> np.ndarray | None:
+        """The student's picture, or None when the function failed (see :attr:`error`)."""
+        if self._outcome is None:
+            self._outcome = run_case(self.run)
+        return self._outcome.value if self._outcome.ok else None
+
+    @property
+    def error(self) -> str | None:
+        """Why there is no student picture (an exception, the time limit, a stub)."""
+        self.student_image()
+        if self._outcome.not_implemented:
+            return "not implemented yet"
+        return self._outcome.error
+
+    def differs(self) -> np.ndarray:
+        """(H, W) bool: pixels where the student's picture is not the package's."""
+        got = self.student_image()
+        ref = self.reference
+        if got is None:
+            return np.ones(ref.shape[:2], dtype=bool)
+        same = np.isclose(got, ref, rtol=1e-9, atol=1e-9) | (np.isnan(got) & np.isnan(ref))
+        differs = ~same.reshape(*ref.shape[:2], -1).all(axis=2)
+        if self.reference_parts is not None and self.parts is not None:
+            differs |= ~np.isclose(self.parts, self.reference_parts, rtol=0, atol=0).all(axis=0)
+        return differs
+
+    def difference(self) -> np.ndarray:
+        """(H, W) largest absolute difference per pixel (continuous pictures), NaN = none."""
+        got = self.student_image()
+        if got is None or self.categories:
+            return np.full(self.reference.shape[:2], np.nan)
+        with np.errstate(invalid="ignore"):
+            d = np.abs(got - self.reference).reshape(*self.reference.shape[:2], -1)
+        return np.where(self.differs(), np.nanmax(np.where(np.isnan(d), np.inf, d), axis=2), np.nan)
+
+    def explain(self, row: int, col: int) -> str:
+        """Why pixel (row, col) of the student's picture differs, in the checker's words."""
+        row, col = as_pixel((row, col))
+        h, w = self.reference.shape[:2]
+        if not (0 <= row < h and 0 <= col < w):
+            raise ValueError(f"pixel must lie in the {h} × {w} picture, got ({row}, {col})")
+        got = self.student_image()
+        if got is None:
+            return f"no picture of yours: {self.error}"
+        return self.explain_at(got, row, col)
+
+
+def as_pixel(pixel) -> tuple[int, int]:
+    """``pixel`` as (row, col) Python ints, or a TypeError naming it."""
+    try:
+        row, col = pixel
+        return operator.index(row), operator.index(col)
+    except (TypeError, ValueError):
+        raise TypeError(f"pixel must be a pair of ints (row, col), got {pixel!r}") from None
+
+
+def call(fn, convert, *args):
+    """The student's ``fn(*args)`` on copies of the arguments, converted like a check does."""
+    copies = [a.copy() if isinstance(a, np.ndarray) else a for a in args]
+    copies = [type(a)(c.copy() for c in a) if isinstance(a, list) else a for a in copies]
+    return convert(fn(*copies))
+
+
+def _three_axes(axes):
+    import matplotlib.pyplot as plt
+
+    if axes is None:
+        return list(plt.subplots(1, 3, figsize=(9.4, 3.4), layout="constrained")[1])
+    if hasattr(axes, "get_subplotspec") and axes.get_subplotspec() is not None:
+        fig, spec = axes.figure, axes.get_subplotspec().subgridspec(1, 3)
+        axes.remove()
+        return [fig.add_subplot(spec[0, k]) for k in range(3)]
+    axes = list(np.ravel(axes))
+    if len(axes) != 3:
+        raise ValueError(f"axes must be three Axes (or one to split), got {len(axes)}")
+    return axes
+
+
+def _show(ax, scene: Scene, image):
+    from matplotlib.colors import ListedColormap
+
+    h, w = scene.reference.shape[:2]
+    extent = (0, w, h, 0)
+    if scene.categories:
+        cmap = ListedColormap([c for _, c in scene.categories]).with_extremes(bad="white")
+        n = len(scene.categories) - 1
+        return ax.imshow(image, cmap=cmap, vmin=0, vmax=n, extent=extent, interpolation="nearest")
+    if image.ndim == 3:
+        return ax.imshow(np.clip(np.nan_to_num(image, nan=1.0), 0, 1), extent=extent, interpolation="nearest")  # fmt: skip
+    finite = scene.reference[np.isfinite(scene.reference)]
+    lo, hi = (finite.min(), finite.max()) if finite.size else (0.0, 1.0)
+    return ax.imshow(image, cmap="viridis", vmin=lo, vmax=hi, extent=extent, interpolation="nearest")  # fmt: skip
+
+
+def _difference_panel(ax, scene: Scene):
+    h, w = scene.reference.shape[:2]
+    differs = scene.differs()
+    base = np.where(np.isnan(scene.reference.reshape(h, w, -1)).all(axis=2), 1.0, 0.85)
+    artists = [ax.imshow(base, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0), interpolation="nearest")]  # fmt: skip
+    d = scene.difference()
+    if not scene.categories and np.isfinite(d).any():
+        artists.append(ax.imshow(d, cmap="Reds", extent=(0, w, h, 0), interpolation="nearest"))
+        biggest = f"\nlargest {np.nanmax(d):.3g}"
+    else:
+        mask = np.zeros((h, w, 4))
+        mask[differs] = (0.84, 0.19, 0.12, 1.0)
+        artists.append(ax.imshow(mask, extent=(0, w, h, 0), interpolation="nearest"))
+        biggest = ""
+    n = int(differs.sum())
+    title = (
+        f"{n} pixel{'s' * (n != 1)} differ{'s' * (n == 1)}{biggest}" if n else "no pixel differs"
+    )
+    ax.set_title(title, fontsize="small")
+    return artists
+
+
+def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
+    """Yours, the package's, the differing pixels; ``pixel`` marked and explained.
+
+    ``pixel`` is (row, col), ``"first"`` (the first differing pixel, when there is one) or
+    None.
+    With ``connect`` a click on any panel marks and explains the clicked pixel (in place).
+    Returns the artists.
+    """
+    axes = _three_axes(axes)
+    got = scene.student_image()
+    artists = []
+    if got is None:
+        artists.append(axes[0].text(0.5, 0.5, textwrap.fill(str(scene.error), 30), ha="center", va="center", transform=axes[0].transAxes, fontsize="small"))  # fmt: skip
+    else:
+        artists.append(_show(axes[0], scene, got))
+    artists.append(_show(axes[1], scene, scene.reference))
+    artists += _difference_panel(axes[2], scene)
+    axes[0].set_title("yours", fontsize="small")
+    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 30), fontsize="small")
+    for ax in axes:
+        ax.set_xticks([])
+        ax.set_yticks([])
+    marks = _Marks(scene, axes)
+    if isinstance(pixel, str) and pixel == "first":  # the first differing pixel, if any
+        differs = scene.differs() if got is not None else np.zeros(1, dtype=bool)
+        pixel = tuple(np.argwhere(differs)[0]) if differs.any() else None
+    if pixel is not None:
+        marks.show(*as_pixel(pixel))
+    if connect:
+        # a function, not the bound method: the canvas keeps only weak references to methods
+        axes[0].figure.canvas.mpl_connect("button_press_event", lambda e: marks.click(e))
+    return artists + marks.artists
+
+
+class _Marks:
+    """The marked pixel in every panel and its explanation, updated in place on a click."""
+
+    def __init__(self, scene: Scene, axes):
+        self.scene, self.axes = scene, axes
+        self.boxes = [ax.plot([], [], color=MARK_COLOUR, linewidth=2)[0] for ax in axes]
+        # the figure's (or subfigure's) bottom label: constrained layout makes room for it
+        self.text = axes[0].figure.supxlabel("", fontsize="small")
+        self.artists = [*self.boxes, self.text]
+
+    def show(self, row: int, col: int) -> str:
+        words = self.scene.explain(int(row), int(col))
+        x, y = [col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row]
+        for box in self.boxes:
+            box.set_data(x, y)
+        self.text.set_text(textwrap.fill(f"pixel ({row}, {col}): {words}", 90))
+        return words
+
+    def click(self, event):
+        if event.inaxes in self.axes and event.xdata is not None:
+            h, w = self.scene.reference.shape[:2]
+            row, col = int(np.floor(event.ydata)), int(np.floor(event.xdata))
+            if 0 <= row < h and 0 <= col < w:
+                self.show(row, col)
+                event.canvas.draw_idle()
+
+
+__all__ = ["Scene", "call", "draw_comparison"]

@@ -1,0 +1,137 @@
+"""Exercise ``mip_level(ddx, ddy, size)``: the level of detail λ of one pixel, unclamped.
+
+Lesson 09 (Williams, *Pyramidal Parametrics*, 1983; the GL 4.6 spec, §8.14.1, eq. 8.7):
+the pixel's footprint on the texture has two axes, the screen-space derivatives of (u, v)
+scaled to texels, ``(du/dx · W, dv/dx · H)`` and ``(du/dy · W, dv/dy · H)``; GL's isotropic
+rule takes the longer one, ρ = max of the two Euclidean lengths, and λ = log2 ρ. ``size`` is
+the texture's (height, width), like ``texture.shape[:2]``. The expected answer is
+:func:`teachraster.mip_level`; explanations quote the two axes and name the mistake whose
+answer the student's reproduces.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+
+from ..pipeline.texture_filters import footprint_axes, mip_level
+from .cases import SEED
+from .scalars import num, vec
+from .tolerance import close
+
+
+def expected_level(ddx, ddy, size) -> float:
+    return float(mip_level(np.asarray(ddx, dtype=float), np.asarray(ddy, dtype=float), size))
+
+
+@cache  # the same cases on every check: built once
+def level_cases():
+    """Hard cases (λ = 0, between levels, either axis longer, non-square, magnified), random."""
+    t = 1 / 64
+    hard = [
+        ("one texel per pixel", (t, 0), (0, t), (64, 64)),
+        ("4 texels per pixel", (4 * t, 0), (0, 4 * t), (64, 64)),
+        ("λ between levels 1 and 2", (3 * t, 0), (0, 3 * t), (64, 64)),
+        ("the x axis longer", (8 * t, 0), (0, 2 * t), (64, 64)),
+        ("the y axis longer", (t, 0), (0, 16 * t), (64, 64)),
+        ("a diagonal axis", (3 * t, 4 * t), (-t, t), (64, 64)),
+        ("a rotated square footprint", (2 * t, 2 * t), (-2 * t, 2 * t), (64, 64)),
+        ("magnified: a quarter texel per pixel", (t / 4, 0), (0, t / 4), (64, 64)),
+        ("negative derivatives", (-2 * t, 0), (0, -2 * t), (64, 64)),
+        ("a wide texture (H = 32, W = 128)", (1 / 128, 0), (0, 2 / 32), (32, 128)),
+        (
+            "a tall texture (H = 256, W = 16), v changes along x",
+            (0, 4 / 256),
+            (1 / 16, 0),
+            (256, 16),
+        ),  # fmt: skip
+        ("a receding floor", (0.01, 0.0005), (0.002, 0.03), (256, 256)),
+    ]
+    out = [
+        (label, (np.array(dx, float), np.array(dy, float), size)) for label, dx, dy, size in hard
+    ]
+    rng = np.random.default_rng(SEED + 70)
+    for n in range(12):
+        size = (int(2 ** rng.integers(2, 9)), int(2 ** rng.integers(2, 9)))
+        if n % 4 == 3:
+            size = (int(rng.integers(3, 300)), int(rng.integers(3, 300)))
+        dx, dy = rng.normal(size=2) * 10 ** rng.uniform(-3, 0), rng.normal(size=2) * 10 ** rng.uniform(-3, 0)  # fmt: skip
+        out.append((f"random {n + 1}", (dx, dy, size)))
+    return [
+        (
+            f"{label}: ddx={vec(dx)}, ddy={vec(dy)}, size={size}",
+            (dx, dy, size),
+            expected_level(dx, dy, size),
+        )  # fmt: skip
+        for label, (dx, dy, size) in out
+    ]
+
+
+def explain_level(args, expected, got) -> str:
+    ddx, ddy, (h, w) = args
+    lx, ly = (float(a) for a in footprint_axes(ddx, ddy, (h, w)))
+    head = (
+        f"ddx={vec(ddx)}, ddy={vec(ddy)} on an H×W = {h}×{w} texture: the footprint's axes are "
+        f"‖(du/dx·W, dv/dx·H)‖ = {num(lx)} and ‖(du/dy·W, dv/dy·H)‖ = {num(ly)} texels, "
+        f"ρ = {num(max(lx, ly))}, λ = log2 ρ = {num(expected, got)}; yours is {num(got, expected)}"
+    )
+    return head + _level_mistake(ddx, ddy, (h, w), lx, ly, got)
+
+
+def _level_mistake(ddx, ddy, size, lx, ly, got) -> str:
+    h, w = size
+    scaled = np.abs(np.array([ddx[0] * w, ddx[1] * h, ddy[0] * w, ddy[1] * h]))
+    uv_units = max(np.hypot(*ddx), np.hypot(*ddy))
+    swapped = max(np.hypot(ddx[0] * h, ddx[1] * w), np.hypot(ddy[0] * h, ddy[1] * w))
+    rho = max(lx, ly)
+    with np.errstate(divide="ignore"):
+        guesses = [
+            (rho, ": you returned ρ itself; λ = log2 ρ (each level halves the texels)"),
+            (np.log2(rho**2), ": that is log2 of the squared length, twice λ: take the square "
+             "root first (or halve the log)"),
+            (np.log2(min(lx, ly)), f": your λ uses the shorter of the two footprint axes (here "
+             f"the {'x axis, ddx' if lx < ly else 'y axis, ddy'}); GL takes the longer (ρ = "
+             "max), so that no direction is undersampled"),
+            (np.log2(lx + ly), ": your λ uses the sum of the derivatives; GL takes the longer "
+             "of the two footprint axes"),
+            (np.log2(scaled.sum()), ": your λ uses the sum of the derivatives; GL takes the "
+             "longer of the two footprint axes, each a Euclidean length"),
+            (np.log2(max(scaled[:2].sum(), scaled[2:].sum())), ": each axis' length is "
+             "Euclidean, √(a² + b²), not |a| + |b|"),
+            (np.log2(scaled.max()), ": each axis' length is Euclidean, √(a² + b²), not its "
+             "largest component"),
+            (np.log2(uv_units), f": the derivatives are in texture units; measure them in "
+             f"texels (u times W = {w}, v times H = {h}) before taking lengths"),
+            (np.log2(swapped), f": u runs along the W = {w} columns and v along the H = {h} rows; "
+             "you scaled u by H and v by W"),
+            (np.log(rho), ": that is the natural log; λ = log2 ρ"),
+            (np.log10(rho), ": that is log10; λ = log2 ρ"),
+            (max(np.log2(rho), 0.0), ": λ is unclamped here: a magnified texture (ρ < 1) has λ < 0"),
+            (0.5 * np.log2(lx * ly), ": that is the log of the geometric mean of the axes; GL "
+             "takes the longer axis"),
+        ]  # fmt: skip
+    for value, words in guesses:
+        if np.isfinite(value) and close(got, value):
+            return words
+    return ": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)"
+
+
+def draw_level_case(ax, case, got):
+    """The footprint's two axes in texels, and the circle of radius ρ GL fits around them."""
+    ddx, ddy, (h, w) = case[1]
+    ax_x = np.array([ddx[0] * w, ddx[1] * h])
+    ax_y = np.array([ddy[0] * w, ddy[1] * h])
+    rho = max(np.hypot(*ax_x), np.hypot(*ax_y))
+    artists = [
+        ax.annotate("", ax_x, (0, 0), arrowprops={"arrowstyle": "->", "color": "#2b7bba"}),
+        ax.annotate("", ax_y, (0, 0), arrowprops={"arrowstyle": "->", "color": "#ff9f1c"}),
+    ]
+    angle = np.linspace(0, 2 * np.pi, 90)
+    artists += ax.plot(rho * np.cos(angle), rho * np.sin(angle), color="#888888", linestyle=":")
+    yours = "" if got is None else f", yours {num(got, case[2])}"
+    ax.set_xlabel(f"texels (blue ∂/∂x, orange ∂/∂y): λ = {num(case[2])}{yours}")
+    ax.set_xlim(-1.2 * rho, 1.2 * rho)
+    ax.set_ylim(1.2 * rho, -1.2 * rho)
+    ax.set_aspect("equal")
+    return artists

@@ -1,0 +1,325 @@
+"""The small scenes of :mod:`.compare_scenes`, one per exercise of 05–08.
+
+Every scene's inputs and the package's picture are computed once (cached) from the package's
+own functions (:func:`teachraster.rasterize`, :func:`teachraster.render`,
+:func:`teachraster.mip_level`, :func:`teachraster.sample`, the block verdicts of
+:mod:`.tile_blocks`); the student's picture calls the student's function for every pixel
+(or block) the scene needs, on copies of the arguments.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..core.fill import rasterize
+from ..core.sample_patterns import sample_pattern
+from ..core.triangle import Triangle
+from ..pipeline.mip_pyramid import mipmap
+from ..pipeline.render_triangles import Frame, render
+from ..pipeline.scenes import get_scene
+from ..pipeline.texture import checkerboard, sample
+from ..pipeline.texture_filters import mip_level
+from . import antialiasing as aa
+from . import depth_precision as dp
+from . import level_of_detail as lod
+from . import texture_filtering as tf
+from . import tile_blocks as tb
+from .compare_scenes import Scene, call
+from .scalars import num
+
+
+def _frozen(*arrays):
+    for a in arrays:
+        a.flags.writeable = False
+    return arrays if len(arrays) > 1 else arrays[0]
+
+
+# -- the fan (coverage_fraction, resolve) -----------------------------------------------------
+FAN_SIZE, FAN_SAMPLES = 20, 4
+
+
+@cache
+def fan():
+    """Eight triangles around a sample position, and their 4-sample coverage.
+
+    The centre is sample 0 of pixel (10, 10); the spokes run along the rows, the columns and
+    the diagonals, so that many samples lie exactly on shared edges (the top-left rule
+    decides them), every other rim vertex sits 1/1024 px off the grid (snapping decides) and
+    every other triangle runs the other way round.
+    """
+    centre = np.array([10.375, 10.125])
+    spokes = np.array([[8, 0], [6, 6], [0, 8], [-6, 6], [-8, 0], [-6, -6], [0, -8], [6, -6]])
+    rim = centre + spokes + np.array([[0.0, 1 / 1024], [0.0, 0.0]] * 4)
+    tris = np.array([[centre, rim[k], rim[(k + 1) % 8]] for k in range(8)])
+    tris[1::2] = tris[1::2, ::-1]  # every other triangle counter-clockwise: both windings
+    samples = sample_pattern(FAN_SAMPLES)
+    cov = np.array([rasterize(Triangle(t), FAN_SIZE, FAN_SIZE, samples=samples).sample_coverage for t in tris])  # fmt: skip
+    return _frozen(tris, cov)
+
+
+def _window(xy, size):
+    lo = np.clip(np.floor(xy.min(axis=0)).astype(int) - 1, 0, size)
+    hi = np.clip(np.ceil(xy.max(axis=0)).astype(int) + 1, 0, size)
+    return range(lo[1], hi[1]), range(lo[0], hi[0])
+
+
+def coverage_scene(fn) -> Scene:
+    tris, cov = fan()
+    samples = sample_pattern(FAN_SAMPLES)
+    reference = cov.mean(axis=3)  # (T, H, W): each triangle's fraction
+    scene = Scene("a fan, fraction of 4 samples covered", reference.sum(axis=0), None, None)
+
+    def run():
+        out = np.zeros_like(reference)
+        for t, xy in enumerate(tris):
+            rows, cols = _window(xy, FAN_SIZE)
+            for i in rows:
+                for j in cols:
+                    out[t, i, j] = call(fn, aa.as_fraction, xy, (i, j), samples)
+        scene.parts = out  # per triangle, for the explanations
+        return out.sum(axis=0)
+
+    def explain(got, row, col):
+        for t, xy in enumerate(tris):
+            expected, yours = reference[t, row, col], scene.parts[t, row, col]
+            if not np.isclose(yours, expected):
+                args = (np.array(xy), (row, col), np.array(samples))
+                return f"triangle {t + 1} of the fan: " + aa.explain_coverage(args, expected, yours)
+        return f"yours and the package's agree: {num(reference[:, row, col].sum())} covered"
+
+    scene.run, scene.explain_at = run, explain
+    return scene
+
+
+@cache
+def fan_colours():
+    tris, cov = fan()
+    ids = np.full(cov.shape[1:], -1)
+    for t in range(len(tris)):
+        ids[cov[t]] = t
+    palette = np.array([[0.85, 0.3, 0.2], [0.95, 0.7, 0.2], [0.3, 0.65, 0.3], [0.2, 0.5, 0.8], [0.5, 0.35, 0.7], [0.2, 0.2, 0.25], [0.6, 0.8, 0.9], [0.9, 0.5, 0.6]])  # fmt: skip
+    colours = np.where((ids >= 0)[..., None], palette[np.maximum(ids, 0)], np.nan)
+    background = np.ones(3)
+    resolved = Frame.resolve(SimpleNamespace(sample_triangle_id=ids), colours, background)
+    return _frozen(ids, colours, background, resolved)
+
+
+def resolve_scene(fn) -> Scene:
+    ids, colours, background, reference = fan_colours()
+
+    def run():
+        out = np.empty_like(reference)
+        for i in range(FAN_SIZE):
+            for j in range(FAN_SIZE):
+                out[i, j] = call(fn, aa.as_colour, colours[i, j], ids[i, j], background)
+        return out
+
+    def explain(got, row, col):
+        args = (colours[row, col].copy(), ids[row, col].copy(), background.copy())
+        if aa.same_colour(got[row, col], reference[row, col], args):
+            return "yours and the package's agree"
+        return aa.explain_resolve(args, reference[row, col], got[row, col])
+
+    return Scene("a fan in colour, 4 samples resolved", reference, run, explain)
+
+
+# -- z-fighting (depth_to_unorm) --------------------------------------------------------------
+DEPTH_BITS = 16
+
+
+@cache
+def two_planes():
+    """Depths of two nearly coplanar triangles over a 32 × 16 window, and the winner codes."""
+    xy = np.array([[-1.0, -1.0], [70.0, -1.0], [-1.0, 40.0]])
+    za = rasterize(Triangle(xy, z=[0.7, 0.7 + 71 * 2e-6, 0.7 + 41 * 1e-6]), 32, 16).depth
+    zb = rasterize(Triangle(xy, z=[0.70003, 0.70003 - 71 * 1e-6, 0.70003 - 41 * 2e-6]), 32, 16).depth  # fmt: skip
+    stored = np.stack([_stored(za), _stored(zb)])
+    return _frozen(za, zb, _winner(*stored), stored)
+
+
+def _stored(z):
+    return np.vectorize(lambda d: dp.stored(float(d), DEPTH_BITS))(z)
+
+
+def _winner(stored_a, stored_b):
+    """1 where A (drawn first) stays, 2 where B passes the test (strictly smaller)."""
+    return np.where(stored_b < stored_a, 2.0, 1.0)
+
+
+def depth_scene(fn) -> Scene:
+    za, zb, reference, stored = two_planes()
+
+    def run():
+        a = np.vectorize(lambda d: call(fn, dp.as_count, float(d), DEPTH_BITS))(za)
+        b = np.vectorize(lambda d: call(fn, dp.as_count, float(d), DEPTH_BITS))(zb)
+        scene.parts = np.stack([a, b])
+        return _winner(a, b)
+
+    def explain(got, row, col):
+        a, b = scene.parts[:, row, col]
+        words = []
+        for name, z, yours in (("A", za[row, col], a), ("B", zb[row, col], b)):
+            if not dp.same_depth(yours, dp.stored(z, DEPTH_BITS), (float(z), DEPTH_BITS)):
+                words.append(f"surface {name}: " + dp.explain_depth((float(z), DEPTH_BITS), dp.stored(z, DEPTH_BITS), yours))  # fmt: skip
+        head = f"A (drawn first) stores {num(a, b)}, B {num(b, a)} in your buffer; B wins only with a strictly smaller value"  # fmt: skip
+        return "; ".join([head, *words])
+
+    categories = (("nothing", "#ffffff"), ("A stays", "#2b7bba"), ("B passes", "#ff9f1c"))
+    title = "two nearly coplanar triangles, 16-bit depth"
+    scene = Scene(title, reference, run, explain, categories, reference_parts=stored)
+    return scene
+
+
+# -- the textured floor (mip_level, bilinear, trilinear) --------------------------------------
+FLOOR = (48, 40)  # width, height of the render (the rows of sky are cropped)
+TILES = 3  # the texture repeats 3 times across the floor
+
+
+@cache
+def floor():
+    """uv and its quad derivatives over the lesson's floor (uv scaled: the texture repeats)."""
+    scene = get_scene("textured_floor")
+    w, h = FLOOR
+    frame = render(scene.clip(w / h), w, h, attrs=scene.mesh.corner("uv"), derivatives=True)
+    rows = slice(np.flatnonzero(frame.coverage.any(axis=1))[0], h)  # the sky is left out
+    return _frozen(*(a[rows] * TILES for a in (frame.attrs, frame.ddx, frame.ddy)))
+
+
+@cache
+def floor_texture(texels: int):
+    texture = checkerboard(checks=4, texels=texels)
+    return _frozen(texture, *mipmap(texture))
+
+
+def _per_pixel(uv, value):
+    """``value(i, j)`` at every covered pixel of the floor; NaN elsewhere."""
+    covered = ~np.isnan(uv[..., 0])
+    out = None
+    for i, j in np.argwhere(covered):
+        v = np.asarray(value(i, j), dtype=float)
+        if out is None:
+            out = np.full(uv.shape[:2] + v.shape, np.nan)
+        out[i, j] = v
+    return out
+
+
+def level_scene(fn) -> Scene:
+    uv, ddx, ddy = floor()
+    size = (64, 64)
+    reference = mip_level(ddx, ddy, size)
+
+    def run():
+        return _per_pixel(uv, lambda i, j: call(fn, aa.as_fraction, ddx[i, j], ddy[i, j], size))
+
+    def explain(got, row, col):
+        if np.isnan(reference[row, col]):
+            return "no floor here"
+        args = (ddx[row, col].copy(), ddy[row, col].copy(), size)
+        if np.isclose(got[row, col], reference[row, col]):
+            return f"yours and the package's agree: λ = {num(reference[row, col])}"
+        return lod.explain_level(args, float(reference[row, col]), float(got[row, col]))
+
+    return Scene("λ over a floor, 64 × 64 texture", reference, run, explain)
+
+
+def bilinear_scene(fn) -> Scene:
+    uv, _, _ = floor()
+    texture = floor_texture(8)[0]
+    reference = sample(texture, uv, "bilinear", "repeat")
+
+    def run():
+        return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, texture, uv[i, j], "repeat"))
+
+    return Scene("a floor, 8 × 8 texture, bilinear", reference, run, _texel_explainer(uv, texture, reference))  # fmt: skip
+
+
+def _texel_explainer(uv, texture, reference, lam=None):
+    def explain(got, row, col):
+        if np.isnan(uv[row, col, 0]):
+            return "no floor here"
+        if tf.same_value(got[row, col], reference[row, col], None):
+            return "yours and the package's agree"
+        if lam is None:
+            args = (texture.copy(), uv[row, col].copy(), "repeat")
+            return tf.explain_bilinear(args, reference[row, col], got[row, col])
+        args = (
+            tf.Pyramid(lv.copy() for lv in texture),
+            uv[row, col].copy(),
+            float(lam[row, col]),
+            "repeat",
+        )
+        return tf.explain_trilinear(args, reference[row, col], got[row, col])
+
+    return explain
+
+
+def trilinear_scene(fn) -> Scene:
+    uv, ddx, ddy = floor()
+    pyramid = tf.Pyramid(floor_texture(64)[1:])
+    lam = mip_level(ddx, ddy, pyramid[0].shape)
+    reference = sample(pyramid, uv, "trilinear", "repeat", lod=lam)
+
+    def run():
+        return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, pyramid, uv[i, j], float(lam[i, j]), "repeat"))  # fmt: skip
+
+    return Scene("a floor, 64 × 64 texture, trilinear at the package's λ", reference, run, _texel_explainer(uv, pyramid, reference, lam))  # fmt: skip
+
+
+# -- the tile walk (classify_block) -----------------------------------------------------------
+TILE_IMAGE, TILE_SIZES = 48, (16, 4)
+TILE_TRIANGLE = np.array([[6.0, 6.0], [45.5, 17.5], [17.5, 45.5]])  # each classic mistake shows
+#: Pixel codes of the walk: the deepest verdict each pixel got.
+WALK = (
+    ("rejected", "#ffffff"),
+    ("accepted as a 16-block", "#1b7837"),
+    ("accepted as a 4-block", "#7fbf7b"),
+    ("tested: covered", "#2b7bba"),
+    ("tested: not covered", "#c6dbef"),
+)
+
+
+def walk(classify):
+    """Codes of the tile walk with ``classify(xy, x0, y0, size)``, and its verdicts."""
+    codes = np.zeros((TILE_IMAGE, TILE_IMAGE))
+    verdicts = {}
+    coverage = rasterize(Triangle(TILE_TRIANGLE), TILE_IMAGE, TILE_IMAGE).coverage
+    big, small = TILE_SIZES
+    for y0 in range(0, TILE_IMAGE, big):
+        for x0 in range(0, TILE_IMAGE, big):
+            kind = verdicts[(x0, y0, big)] = classify(TILE_TRIANGLE, x0, y0, big)
+            if kind == "accepted":
+                codes[y0 : y0 + big, x0 : x0 + big] = 1
+            if kind != "partial":
+                continue
+            for y1 in range(y0, y0 + big, small):
+                for x1 in range(x0, x0 + big, small):
+                    kind = verdicts[(x1, y1, small)] = classify(TILE_TRIANGLE, x1, y1, small)
+                    block = (slice(y1, y1 + small), slice(x1, x1 + small))
+                    if kind == "accepted":
+                        codes[block] = 2
+                    elif kind == "partial":
+                        codes[block] = np.where(coverage[block], 3, 4)
+    return codes, verdicts
+
+
+def tile_scene(fn) -> Scene:
+    reference, truth = walk(tb.expected_block)
+
+    def run():
+        codes, scene.parts = walk(lambda xy, x0, y0, s: call(fn, tb.as_kind, xy, x0, y0, s))
+        return codes
+
+    def explain(got, row, col):
+        for size in TILE_SIZES:
+            key = (col // size * size, row // size * size, size)
+            if key in scene.parts and scene.parts[key] != truth.get(key, scene.parts[key]):
+                return f"block ({key[0]}, {key[1]}) of size {size}: " + tb.explain_block((TILE_TRIANGLE.copy(), *key), truth[key], scene.parts[key])  # fmt: skip
+            if key in truth and key not in scene.parts:
+                return f"the package visits block ({key[0]}, {key[1]}) of size {size}, yours does not: its parent's verdict differs"  # fmt: skip
+        return f"yours and the package's agree: {WALK[int(reference[row, col])][0]}"
+
+    scene = Scene("a tile walk: blocks of 16, then 4, then pixels", reference, run, explain, WALK)
+    return scene

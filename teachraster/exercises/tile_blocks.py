@@ -1,0 +1,252 @@
+"""Exercise ``classify_block(xy, x0, y0, size)``: the corner trick of lesson 10.
+
+Pineda (*A Parallel Algorithm for Polygon Rasterization*, 1988) and llvmpipe's
+``lp_rast_tri.c`` (Mesa): an edge function is affine, so over the pixel centres of a block it
+is largest at one corner and smallest at the opposite one. A block (top-left pixel column x0,
+row y0, ``size`` × ``size`` pixels, no image border) is *rejected* when one edge excludes all
+four extreme centres, *accepted* when every edge includes all four, *partial* otherwise; each
+test is the one top-left rule (CONVENTIONS, *Tiles*); a zero-area triangle rejects every
+block. Vertices are on the 1/256 grid.
+
+The expected answer is computed from the package's pieces: the snapped, oriented set-up
+(:func:`teachraster.core.edges.setup_edges`), its edge values at the four centres
+(:func:`~teachraster.core.edges.edge_values_at`) and its tie-aware test
+(:meth:`~teachraster.core.edges.EdgeSetup.inside`). Explanations name the corner that
+maximises (minimises) each edge function, quote its value, and compare the answer with the
+classification the usual mistakes give.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+
+from ..core.edges import edge_values_at, passes, setup_edges
+from ..core.snapping import SUBPIXEL_BITS, snap
+from .cases import SEED
+from .running import WrongAnswerType
+from .scalars import num, tri_words, vec
+from .scene_report import RETURNED_NONE
+
+KINDS = ("rejected", "accepted", "partial")
+
+
+def _corners(x0: int, y0: int, size: int):
+    """Rows and columns of the four extreme pixel centres of a block."""
+    far_y, far_x = y0 + size - 1, x0 + size - 1
+    return np.array([y0, y0, far_y, far_y]), np.array([x0, far_x, x0, far_x])
+
+
+def expected_block(xy, x0, y0, size) -> str:
+    """The package's verdict for one block."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    if setup.area2 == 0:
+        return "rejected"
+    rows, cols = _corners(x0, y0, size)
+    e = edge_values_at(setup, rows, cols)  # (4 corners, 3 edges), exact, in units²
+    ok = np.stack([setup.inside(k, e[:, k]) for k in range(3)], axis=1)
+    if (~ok.any(axis=0)).any():
+        return "rejected"
+    return "accepted" if ok.all() else "partial"
+
+
+def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
+    """The verdict from the four points (xs[i], ys[i]) with a tie rule (mistakes included).
+
+    Edge functions in pixels (exact for vertices on the 1/256 grid and points on the
+    1/2 grid). ``tie``: "top-left", "strict" (E > 0) or "loose" (E >= 0).
+    """
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    if setup.area2 == 0:
+        return "rejected"
+    v = setup.p / setup.unit if orient else snap(np.asarray(xy, dtype=float))
+    pts = np.stack([xs, ys], axis=1).astype(float)
+    ok = np.empty((len(pts), 3), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (pts[:, 1] - a[1]) - (b[1] - a[1]) * (pts[:, 0] - a[0])
+        ok[:, k] = passes(e, {"strict": False, "loose": True}.get(tie, setup.top_left[k]))
+    if (~ok.any(axis=0)).any():
+        return "rejected"
+    return "accepted" if ok.all() else "partial"
+
+
+def as_kind(value) -> str:
+    names = ", ".join(repr(k) for k in KINDS)
+    if value is None:
+        raise WrongAnswerType(RETURNED_NONE)
+    if not isinstance(value, str):
+        raise WrongAnswerType(f"returned {value!r:.60}, not one of the texts {names}")
+    if value not in KINDS:
+        raise WrongAnswerType(f"returned the text {value!r:.40}; expected one of {names}")
+    return str(value)
+
+
+def same_kind(got, expected, args) -> bool:
+    return got == expected
+
+
+def _hard_blocks():
+    t = [[2.5, 2.5], [29.5, 6.5], [8.5, 27.5]]
+    left = [[8.5, 2.0], [8.5, 30.0], [26.0, 16.0]]  # a vertical left edge at x = 8.5
+    right = [[11.5, 2.0], [0.0, 16.0], [11.5, 30.0]]  # a vertical right edge at x = 11.5
+    top = [[0.0, 8.5], [30.0, 8.5], [15.0, 30.0]]  # a horizontal top edge at y = 8.5
+    sharp = [[8.0, 8.0], [24.0, 11.0], [11.0, 24.0]]
+    return [
+        ("a block inside", t, 8, 8, 4),
+        ("a block outside the bounding box", t, 24, 24, 4),
+        ("a block an edge crosses", t, 16, 4, 4),
+        ("a block holding a vertex", t, 0, 0, 4),
+        ("a block beyond a vertex, outside the triangle", sharp, 4, 4, 4),
+        ("a left edge through the left corners", left, 8, 12, 4),
+        ("a right edge through the right corners", right, 8, 12, 4),
+        ("a right edge through the left corners (nothing inside)", right, 11, 12, 4),
+        ("a top edge through the upper corners", top, 12, 8, 4),
+        ("one pixel, its centre on a left edge", left, 8, 20, 1),
+        ("one pixel, its centre on a right edge", right, 11, 20, 1),
+        ("a small triangle inside a big block", [[5.5, 5.25], [10.75, 7.5], [6.5, 11.0]], 0, 0, 16),
+        ("the whole triangle in one 64-block", t, 0, 0, 64),
+        ("counter-clockwise, a block inside", [t[0], t[2], t[1]], 8, 8, 4),
+        ("counter-clockwise, a right edge through the right corners", [right[0], right[2], right[1]], 8, 12, 4),  # fmt: skip
+        ("zero area", [[0.5, 0.5], [8.5, 8.5], [16.5, 16.5]], 0, 0, 16),
+        ("far from the origin", [[4098.5, 4098.5], [4125.5, 4102.5], [4104.5, 4123.5]], 4104, 4104, 4),  # fmt: skip
+    ]  # fmt: skip
+
+
+@cache  # the same cases on every check: built once
+def block_cases():
+    """Hard blocks (vertices, edges through corners, tiny triangles, zero area), then random."""
+    blocks = [
+        (label, np.array(xy, dtype=float), x0, y0, s) for label, xy, x0, y0, s in _hard_blocks()
+    ]
+    rng = np.random.default_rng(SEED + 100)
+    for n in range(18):
+        xy = snap(rng.uniform(0, 32, size=(3, 2)))
+        if n % 3 == 0:
+            xy = np.floor(xy) + 0.5  # vertices on pixel centres: edges through corner centres
+        size = (1, 4, 8, 16)[n % 4]
+        # a block around a random point of the bounding box (and a little beyond)
+        p = rng.uniform(xy.min(axis=0) - size, xy.max(axis=0) + size)
+        x0, y0 = (int(v) for v in np.floor(p / size) * size)
+        blocks.append((f"random {n + 1}", xy, x0, y0, size))
+    return [
+        (f"{label}: {tri_words(xy)}, block x0={x0}, y0={y0}, size={s}", (xy, x0, y0, s),
+         expected_block(xy, x0, y0, s))
+        for label, xy, x0, y0, s in blocks
+    ]  # fmt: skip
+
+
+def _edge_table(xy, x0, y0, size):
+    """Per oriented edge: its name, top-left flag, and the corners maximising / minimising E."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    v = setup.p / setup.unit
+    rows, cols = _corners(x0, y0, size)
+    e = edge_values_at(setup, rows, cols) / setup.unit**2  # in px²
+    out = []
+    for k in range(3):
+        a, b = setup.perm[k], setup.perm[(k + 1) % 3]
+        kmax, kmin = int(np.argmax(e[:, k])), int(np.argmin(e[:, k]))
+        d = v[(k + 1) % 3] - v[k]
+        kind = ("top" if d[0] > 0 else "bottom") if d[1] == 0 else ("left" if d[1] < 0 else "right")
+        out.append({
+            "name": f"v{a + 1}→v{b + 1}", "kind": kind, "owns": bool(setup.top_left[k]),
+            "max": (cols[kmax] + 0.5, rows[kmax] + 0.5, float(e[kmax, k])),
+            "min": (cols[kmin] + 0.5, rows[kmin] + 0.5, float(e[kmin, k])),
+            "pass": setup.inside(k, edge_values_at(setup, rows, cols)[:, k]),
+        })  # fmt: skip
+    return out
+
+
+def _corner(c) -> str:
+    return f"{vec(c[:2])} (E = {num(c[2])})"
+
+
+def explain_block(args, expected, got) -> str:
+    xy, x0, y0, size = args
+    head = (
+        f"the block x0={x0}, y0={y0}, size={size} (extreme centres x = {num(x0 + 0.5)}, "
+        f"{num(x0 + size - 0.5)}; y = {num(y0 + 0.5)}, {num(y0 + size - 0.5)}) is {expected}; "
+        f"yours says {got}"
+    )
+    if setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS).area2 == 0:
+        return (
+            f"{head}: {tri_words(xy)} are collinear, and a zero-area triangle rejects every block"
+        )
+    return head + _block_mistake(xy, x0, y0, size, expected, got)
+
+
+def _block_mistake(xy, x0, y0, size, expected, got) -> str:
+    edges = _edge_table(xy, x0, y0, size)
+    ys, xs = _corners(x0, y0, size)
+    for pts, words in (
+        ((xs + np.array([0, 1, 0, 1]), ys + np.array([0, 0, 1, 1])), "you tested the block's outer corners; the extreme pixel centres lie ½ px inside"),
+        ((xs + 0.5 + np.array([0, 1, 0, 1]), ys + 0.5 + np.array([0, 0, 1, 1])), f"the last pixel centre of the block is x0 + size − ½ = {num(x0 + size - 0.5)}, not x0 + size + ½"),
+    ):  # fmt: skip
+        if expected != got and classify_at(xy, *pts) == got and words:
+            return f": {words}"
+    centres = (xs + 0.5, ys + 0.5)
+    if classify_at(xy, *centres, orient=False) == got:
+        return ": this triangle runs counter-clockwise on screen: handle both windings (orient the edges so that the interior is positive)"  # fmt: skip
+    for tie in ("strict", "loose"):
+        if classify_at(xy, *centres, tie=tie) == got:
+            edge, c = _on_edge(edges)
+            if edge is not None:
+                rule = "includes" if edge["owns"] else "excludes"
+                return f": corner {vec(c)} lies exactly on edge {edge['name']}, a {edge['kind']} edge: the top-left rule {rule} it"  # fmt: skip
+    return _by_verdicts(edges, expected, got)
+
+
+def _on_edge(edges):
+    for edge in edges:
+        for key in ("max", "min"):
+            if edge[key][2] == 0:
+                return edge, edge[key][:2]
+    return None, None
+
+
+def _by_verdicts(edges, expected, got) -> str:
+    if expected == "rejected":
+        edge = next(e for e in edges if not e["pass"].any())
+        return (
+            f": edge {edge['name']} excludes all four: even the corner that maximises its E, "
+            f"{_corner(edge['max'])}, fails; one such edge rejects the block"
+        )
+    if expected == "accepted":
+        worst = min(edges, key=lambda e: e["min"][2])
+        return (
+            f": every edge includes all four centres; the lowest of the minimising corners is "
+            f"{_corner(worst['min'])} for edge {worst['name']}, which passes"
+        )
+    failing = next((e for e in edges if not e["pass"].all()), None)
+    if got == "accepted" and failing is not None:
+        return (
+            f": this corner, {_corner(failing['min'])}, is the one that minimises E for edge "
+            f"{failing['name']}, and it fails; you tested the maximising one, "
+            f"{_corner(failing['max'])}"
+        )
+    best = [f"{e['name']}: {_corner(e['max'])}" for e in edges]
+    return (
+        ": no edge excludes all four centres (each edge's maximising corner passes: "
+        + "; ".join(best)
+        + "). Corners outside the triangle do not reject a block: the test is per edge"
+    )
+
+
+def draw_block_case(ax, case, got):
+    """The snapped triangle, the block with its four extreme centres, and the verdicts."""
+    xy, x0, y0, size = case[1]
+    ring = np.vstack([snap(xy), snap(xy)[:1]])
+    artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
+    box = np.array([[x0, y0], [x0 + size, y0], [x0 + size, y0 + size], [x0, y0 + size], [x0, y0]])
+    artists += ax.plot(box[:, 0], box[:, 1], color="#ff9f1c", linewidth=2)
+    ys, xs = _corners(x0, y0, size)
+    artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
+    yours = "" if got is None else f", yours {got}"
+    ax.set_xlabel(f"{case[2]}{yours}")
+    lo = np.minimum(ring.min(axis=0), [x0, y0]) - 1
+    hi = np.maximum(ring.max(axis=0), [x0 + size, y0 + size]) + 1
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(hi[1], lo[1])
+    ax.set_aspect("equal")
+    return artists

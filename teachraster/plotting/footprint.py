@@ -1,0 +1,103 @@
+"""A pixel's footprint drawn in texture space, with what each filter reads of it (lesson 09).
+
+The pixel square maps onto the texture, to first order, as the parallelogram spanned by the
+two derivative vectors ``∂(uW, vH)/∂x`` and ``∂(uW, vH)/∂y`` (texels per pixel step), and the
+ellipse inscribed in it has those two vectors (halved) as conjugate semi-diameters. Beside it:
+
+- the square of side ρ = max of the two lengths: what an isotropic filter (trilinear) averages,
+  at level λ = log2 ρ, which covers the long axis and blurs across the short one;
+- the ``N`` anisotropic probes of ``EXT_texture_filter_anisotropic``, spaced along the major
+  axis at ``i / (N + 1) − ½`` (i = 1 … N), each a square of side ``P_max / N`` (their level
+  ``log2(P_max / N)``), as :func:`teachraster.pipeline.texture_filters.sample_anisotropic`
+  places them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.patches import Polygon, Rectangle
+
+from .style import COLORS, OKABE_ITO
+
+
+@dataclass(frozen=True)
+class Footprint:
+    """The numbers the figure shows for one pixel (lengths in texels of level 0)."""
+
+    centre: np.ndarray  # (2,) texel coordinates (u W, v H)
+    axis_x: np.ndarray  # ∂(uW, vH)/∂x
+    axis_y: np.ndarray  # ∂(uW, vH)/∂y
+    rho: float
+    lam: float
+    probes: int
+    probe_lam: float
+    probe_centres: np.ndarray  # (N, 2)
+
+
+def footprint(uv, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> Footprint:
+    """The footprint of one pixel with texture coordinate ``uv`` and derivatives ``ddx``, ``ddy``.
+
+    >>> f = footprint([0.5, 0.5], [8 / 64, 0.0], [0.0, 1 / 64], (64, 64))
+    >>> f.rho, f.lam, f.probes, f.probe_lam
+    (8.0, 3.0, 8, 0.0)
+    """
+    h, w = texture_shape[:2]
+    scale = np.array([w, h], dtype=float)
+    ax_, ay_ = np.asarray(ddx, float)[:2] * scale, np.asarray(ddy, float)[:2] * scale
+    px, py = float(np.hypot(*ax_)), float(np.hypot(*ay_))
+    pmax, pmin = max(px, py), min(px, py)
+    rho = pmax
+    if pmax <= 1:
+        n = 1
+    else:
+        n = int(min(np.ceil(pmax / pmin) if pmin > 0 else max_anisotropy, max_anisotropy))
+    major = ax_ if px >= py else ay_
+    centre = np.asarray(uv, float)[:2] * scale
+    offsets = np.array([i / (n + 1) - 0.5 for i in range(1, n + 1)])
+    return Footprint(centre, ax_, ay_, rho, float(np.log2(rho)), n, float(np.log2(pmax / n)),
+                     centre + offsets[:, None] * major)  # fmt: skip
+
+
+def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, legend: bool = True):
+    """Draw ``fp`` in texel coordinates of level 0, over ``texture`` (wrapped) if given.
+
+    Returns the dict of artists: ``parallelogram``, ``ellipse``, ``square``, ``probes``.
+    """
+    a, b, c = fp.axis_x, fp.axis_y, fp.centre
+    corners = c + np.array([-a - b, a - b, a + b, -a + b]) / 2
+    half = max(np.abs(corners - c).max(), fp.rho / 2) * margin
+    lo, hi = c - half, c + half
+    if texture is not None:
+        tex = np.asarray(texture)
+        th, tw = tex.shape[:2]
+        cols = np.arange(np.floor(lo[0]), np.ceil(hi[0])).astype(int)
+        rows = np.arange(np.floor(lo[1]), np.ceil(hi[1])).astype(int)
+        if len(cols) * len(rows) <= 512 * 512:  # a readable window of texels
+            patch = tex[np.ix_(rows % th, cols % tw)]
+            ax.imshow(patch, extent=(cols[0], cols[-1] + 1, rows[-1] + 1, rows[0]),
+                      cmap="gray", vmin=0, vmax=1, alpha=0.45, interpolation="nearest")  # fmt: skip
+    art = {}
+    art["parallelogram"] = ax.add_patch(Polygon(corners, closed=True, fill=False, lw=2,
+                                                ls="--", ec=COLORS["edge"],
+                                                label="pixel square, mapped"))  # fmt: skip
+    t = np.linspace(0, 2 * np.pi, 200)
+    ell = c + (np.outer(np.cos(t), a) + np.outer(np.sin(t), b)) / 2
+    (art["ellipse"],) = ax.plot(*ell.T, color=OKABE_ITO["blue"], lw=3,
+                                label="footprint ellipse")  # fmt: skip
+    art["square"] = ax.add_patch(Rectangle(c - fp.rho / 2, fp.rho, fp.rho, fill=False, lw=2.5,
+                                           ec=OKABE_ITO["orange"],
+                                           label=f"trilinear: ρ = {fp.rho:.1f}, λ = {fp.lam:.1f}"))  # fmt: skip
+    side = fp.rho / fp.probes
+    for k, p in enumerate(fp.probe_centres):
+        ax.add_patch(Rectangle(p - side / 2, side, side, fill=True, alpha=0.35, lw=1.5,
+                               ec=OKABE_ITO["bluish_green"], fc=OKABE_ITO["bluish_green"],
+                               label=(f"{fp.probes} anisotropic probes, λ = {fp.probe_lam:.1f}"
+                                      if k == 0 else None)))  # fmt: skip
+    art["probes"] = fp.probe_centres
+    ax.set(xlim=(lo[0], hi[0]), ylim=(hi[1], lo[1]), aspect="equal",
+           xlabel="u · W (texels)", ylabel="v · H (texels)")  # fmt: skip
+    if legend:
+        ax.legend(loc="upper left", fontsize=11, framealpha=0.9)
+    return art

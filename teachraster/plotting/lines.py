@@ -1,0 +1,182 @@
+"""Line plots: the diamond rule over the pixel grid, a line's steps, and colour buffers.
+
+Every function takes an Axes and returns its artists (lesson 12):
+
+- :func:`plot_diamonds` -- the diamonds |x - (j + ½)| + |y - (i + ½)| < ½ of the pixels a line
+  passes, lit ones filled, the one p1 ends in hatched (left to the next segment), the segment
+  itself with its snapped end points;
+- :class:`LineView` -- a traced line step by step: ``show_step(k)`` changes the data of the
+  existing artists (lit-so-far image, the current column or row, the caption), never redraws;
+- :func:`plot_rgba` -- an (H, W, 4) colour buffer over a checkerboard, so alpha shows.
+
+Everything drawn comes from the fill's :class:`~teachraster.core.line_trace.LineTrace`
+(the lit pixels, the candidates and their states); nothing is recomputed here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.collections import PolyCollection
+from matplotlib.patches import Rectangle
+
+from ..core.fill import Fill
+from ..core.line_rules import ENDS_INSIDE, LIT
+from ..core.line_trace import LineTrace
+from .common import Artists, fs, label_box, lw, ms, pixel_axes, set_image, show_image
+from .style import COLORS
+
+
+def as_line_trace(obj) -> LineTrace:
+    """The LineTrace of a line fill (``rasterize_line(..., trace=True)``) or the trace itself."""
+    if isinstance(obj, LineTrace):
+        return obj
+    if isinstance(obj, Fill) and isinstance(obj.trace, LineTrace):
+        return obj.trace
+    raise TypeError("needs tr.rasterize_line(..., trace=True) or its LineTrace")
+
+
+def _diamond(row: int, col: int) -> np.ndarray:
+    cx, cy = col + 0.5, row + 0.5
+    return np.array([[cx, cy - 0.5], [cx + 0.5, cy], [cx, cy + 0.5], [cx - 0.5, cy]])
+
+
+@dataclass
+class DiamondArtists(Artists):
+    """What :func:`plot_diamonds` drew."""
+
+    grid: list
+    lit: PolyCollection
+    ends: PolyCollection
+    missed: PolyCollection
+    segment: object
+    points: object
+
+
+def plot_diamonds(ax, line, *, grid: bool = True) -> DiamondArtists:
+    """The diamond-exit rule drawn: every candidate pixel's diamond (lit: filled; p1's own:
+    hatched; missed: outlined), the segment p0 → p1 and its end points.
+
+    ``line`` is a traced diamond-rule line (``tr.rasterize_line(..., trace=True)``).
+    """
+    trace = as_line_trace(line)
+    if trace.steps is None:
+        raise ValueError("plot_diamonds draws one-pixel lines (line_width=1)")
+    width, height = trace.size
+    pixel_axes(ax, width, height)
+    lines = []
+    if grid:
+        for x in range(width + 1):
+            lines.append(ax.axvline(x, color=COLORS["grid"], lw=lw(0.4), zorder=0))
+        for y in range(height + 1):
+            lines.append(ax.axhline(y, color=COLORS["grid"], lw=lw(0.4), zorder=0))
+    s = trace.steps
+    polys = {state: [_diamond(r, c) for r, c, st in zip(s.rows, s.cols, s.state) if st == state]
+             for state in (LIT, ENDS_INSIDE, 0)}  # fmt: skip
+    lit = PolyCollection(polys[LIT], facecolor=COLORS["fill"], edgecolor=COLORS["edge"],
+                         linewidth=lw(0.6), zorder=1)  # fmt: skip
+    ends = PolyCollection(polys[ENDS_INSIDE], facecolor="none", edgecolor=COLORS["current"],
+                          hatch="///", linewidth=lw(0.8), zorder=1)  # fmt: skip
+    missed = PolyCollection(polys[0], facecolor="none", edgecolor=COLORS["centre"],
+                            linewidth=lw(0.4), linestyle=":", zorder=1)  # fmt: skip
+    for coll in (lit, ends, missed):
+        ax.add_collection(coll)
+    xs, ys = (trace.p0[0], trace.p1[0]), (trace.p0[1], trace.p1[1])
+    (segment,) = ax.plot(xs, ys, color=COLORS["edge"], lw=lw(1.2), zorder=3)
+    (points,) = ax.plot(xs, ys, "o", color=COLORS["edge"], ms=ms(0.8), zorder=4)
+    return DiamondArtists(lines, lit, ends, missed, segment, points)
+
+
+@dataclass
+class LineView(Artists):
+    """A traced line shown step by step (``show_step(k)`` updates the artists in place).
+
+    Build it with :meth:`create`; ``image`` holds the pixels lit so far, ``current`` the
+    column (x-major) or row the step works on, ``segment`` the line, ``caption`` the step's
+    caption from the trace.
+    """
+
+    image: object
+    current: Rectangle
+    segment: object
+    caption: object
+    trace: LineTrace | None = None
+    step: int = -1
+
+    @classmethod
+    def create(cls, ax, line, step: int = -1) -> LineView:
+        """Draw ``line`` (a traced line fill) on ``ax`` at ``step``."""
+        trace = as_line_trace(line)
+        width, height = trace.size
+        pixel_axes(ax, width, height)
+        image = show_image(ax, np.where(trace.coverage_at(step), 1.0, np.nan),
+                           cmap=_one_colour(), vmin=0, vmax=1, zorder=1)  # fmt: skip
+        current = Rectangle((0, 0), 1, height, facecolor="none", edgecolor=COLORS["current"],
+                            linewidth=lw(1.5), zorder=2)  # fmt: skip
+        ax.add_patch(current)
+        xs, ys = (trace.p0[0], trace.p1[0]), (trace.p0[1], trace.p1[1])
+        (segment,) = ax.plot(xs, ys, color=COLORS["edge"], lw=lw(1.2), zorder=3)
+        caption = ax.text(0.0, -0.02, "", transform=ax.transAxes, va="top", ha="left",
+                          fontsize=fs(0.8), wrap=True, bbox=label_box())  # fmt: skip
+        view = cls(image, current, segment, caption, trace)
+        view.show_step(step)
+        return view
+
+    def show_step(self, k: int) -> None:
+        """Show the line after step ``k`` (negative counts from the end)."""
+        trace = self.trace
+        k = trace.index(k)
+        self.step = k
+        set_image(self.image, np.where(trace.coverage_at(k), 1.0, np.nan))
+        step = trace.step(k)
+        width, height = trace.size
+        if step.kind == "column":
+            self.current.set_bounds(step.col, 0, 1, height)
+        elif step.kind == "row":
+            self.current.set_bounds(0, step.row, width, 1)
+        self.current.set_visible(step.kind in ("column", "row"))
+        self.caption.set_text(step.caption)
+
+
+def _one_colour():
+    from matplotlib.colors import ListedColormap
+
+    return ListedColormap([COLORS["fill"]])
+
+
+@dataclass
+class RGBAArtists(Artists):
+    """What :func:`plot_rgba` drew: the checkerboard and the colour image over it."""
+
+    checker: object
+    image: object
+
+
+def plot_rgba(ax, color, *, premultiplied: bool = False, srgb: bool = False) -> RGBAArtists:
+    """An (H, W, 4) colour buffer (``frame.color``) over a grey checkerboard.
+
+    ``premultiplied``: the stored colour is already multiplied by alpha (divided out to show
+    it); ``srgb``: encode linear values with ``linear_to_srgb`` before showing them (what an
+    sRGB framebuffer stores); values are clipped to [0, 1] for display only.
+    """
+    from ..core.blend_factors import linear_to_srgb
+
+    color = np.asarray(color, dtype=np.float64)
+    if color.ndim != 3 or color.shape[2] != 4:
+        raise ValueError(f"color must have shape (H, W, 4), got {color.shape}")
+    height, width = color.shape[:2]
+    pixel_axes(ax, width, height)
+    rgb, alpha = color[..., :3], np.clip(color[..., 3:], 0, 1)
+    if premultiplied:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rgb = np.where(alpha > 0, rgb / alpha, 0.0)
+    rgb = np.clip(rgb, 0, 1)
+    if srgb:
+        rgb = linear_to_srgb(rgb)
+    ii, jj = np.indices((height, width))
+    board = np.where((ii // 2 + jj // 2) % 2 == 0, 0.8, 0.6)[..., None] * np.ones(3)
+    checker = ax.imshow(board, extent=(0, width, height, 0), interpolation="nearest", zorder=0)
+    image = ax.imshow(np.concatenate([rgb, alpha], axis=2), extent=(0, width, height, 0),
+                      interpolation="nearest", zorder=1)  # fmt: skip
+    return RGBAArtists(checker, image)

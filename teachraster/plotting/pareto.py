@@ -1,0 +1,113 @@
+"""Error against cost with its Pareto front: lesson 06's one chart, and its widget's.
+
+A variant is on the **Pareto front** when no other is both cheaper and more accurate. The plot
+puts each variant's error (down is better, log scale) against a cost (left is cheaper), joins
+the front with a step line and labels each point beside it. Exact variants (error 0, or below
+``EXACT_BELOW``: float64 rounding, not a method's error) cannot sit on a log axis: they are drawn
+on a dashed floor line labelled "0 (exact)".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.ticker import NullFormatter
+
+from ..study.bench.report import pareto_front
+from .style import COLORS
+
+#: Errors below this count as exact (float64 rounding of an exact method), drawn on the floor.
+EXACT_BELOW = 1e-9
+
+
+@dataclass
+class ParetoArtists:
+    """What :func:`plot_pareto` drew: one marker per variant, the front line, the labels."""
+
+    points: dict
+    front_line: object
+    labels: dict
+    floor: float
+    front: list
+    short: object = None
+
+
+def shown_y(row, y: str, art) -> float:
+    """Where ``row`` is drawn: its error, or the floor when it counts as exact."""
+    return art.floor if row[y] < EXACT_BELOW else row[y]
+
+
+def error_floor(rows, y: str = "error") -> float:
+    """Where exact (zero-error) rows are drawn: a tenth of the smallest non-zero error."""
+    nonzero = [r[y] for r in rows if r[y] >= EXACT_BELOW]
+    return min(nonzero) / 10 if nonzero else 1.0
+
+
+def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel: str = "",
+                title: str = "", short=None, logx: bool = True) -> ParetoArtists:  # fmt: skip
+    """Draw ``rows`` as error ``y`` against cost ``x`` with their Pareto front.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    rows : list of dict
+        One dict per variant, with ``"variant"``, ``x`` and ``y``.
+    x, y : str
+        Keys of the cost and the error.
+    short : callable, optional
+        Maps a variant name to the label drawn beside its point.
+    logx : bool
+        Log scale for the cost.
+
+    Returns
+    -------
+    ParetoArtists
+        Update it with :func:`update_pareto` when the costs change.
+    """
+    short = short or (lambda name: name)
+    floor = error_floor(rows, y)
+    points, labels = {}, {}
+    for r in rows:
+        (points[r["variant"]],) = ax.plot([], [], ls="none", ms=11, marker="o")
+        labels[r["variant"]] = ax.annotate(short(r["variant"]), (0, 0), textcoords="offset points",
+                                           xytext=(8, 6), fontsize=13)  # fmt: skip
+    (line,) = ax.step([], [], where="post", color=COLORS["outside"], lw=2.5, label="Pareto front")
+    ax.axhline(floor, color="gray", ls="--", lw=1)
+    ax.text(0.01, floor, " 0 (exact)", transform=ax.get_yaxis_transform(), va="bottom",
+            fontsize=12, color="gray")  # fmt: skip
+    ax.set(xscale="log" if logx else "linear", yscale="log", xlabel=xlabel, ylabel=ylabel,
+           title=title)  # fmt: skip
+    art = ParetoArtists(points, line, labels, floor, [], short)
+    ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
+    update_pareto(ax, art, rows, x, y=y)
+    return art
+
+
+def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> list:
+    """Move the points, labels and front of ``art`` to the costs ``x`` of ``rows``."""
+    front = pareto_front(rows, x=x, y=y)
+    on = {r["variant"] for r in front}
+    for r in rows:
+        yy = shown_y(r, y, art)
+        p = art.points[r["variant"]]
+        p.set_data([r[x]], [yy])
+        front_member = r["variant"] in on
+        p.set_color(COLORS["outside"] if front_member else COLORS["edge"])
+        p.set_alpha(1.0 if front_member else 0.45)
+        label = art.labels[r["variant"]]
+        label.xy = (r[x], yy)
+        label.set_alpha(1.0 if front_member else 0.6)
+        # points that coincide share one label: the first names them all
+        same = [q["variant"] for q in rows if (q[x], shown_y(q, y, art)) == (r[x], yy)]
+        label.set_visible(same[0] == r["variant"])
+        label.set_text(" = ".join(art.short(v) for v in same))
+    xs = [r[x] for r in front]
+    shown = [art.floor if r[y] < EXACT_BELOW else r[y] for r in front]
+    art.front_line.set_data(xs, shown)
+    allx = np.array([r[x] for r in rows], dtype=float)
+    ally = np.array([art.floor if r[y] < EXACT_BELOW else r[y] for r in rows], dtype=float)
+    ax.set_xlim(allx.min() / 1.6, allx.max() * 3.0)  # room on the right for the labels
+    ax.set_ylim(ally.min() / 3.0, ally.max() * 3.0)
+    art.front = front
+    return front

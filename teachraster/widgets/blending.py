@@ -1,0 +1,183 @@
+"""``BlendingExplorer``: reorder transparent triangles, toggle premultiplied alpha and sRGB.
+
+Lesson 12's blending widget. A few transparent triangles are drawn with ``render(...,
+blend=...)``; the list on the left is the submission order (select one, move it earlier or
+later, or sort back to front). The left panel shows the colour buffer in the chosen order,
+the right one the same triangles sorted back to front, with how many pixels differ. The
+checkboxes switch to premultiplied colours (``blend="premultiplied"``, colours multiplied
+by alpha first: the same picture, composed correctly in any grouping) and to showing the
+buffer as an sRGB framebuffer stores it (blending in linear light, then encoded) rather than
+blending the encoded numbers directly.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+
+from ..core.blend_factors import linear_to_srgb, srgb_to_linear
+from ..pipeline.render_triangles import render
+from ..plotting.lines import plot_rgba
+from .common import close_tree, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
+
+
+def default_scene():
+    """Three overlapping transparent triangles at different depths (clip (3, 3, 4), RGBA
+    (3, 3, 4) straight alpha, sRGB-encoded colours), the red one in front."""
+    clip = np.array([
+        [[-0.9, -0.7, 0.2, 1], [0.5, -0.8, 0.2, 1], [-0.3, 0.8, 0.2, 1]],
+        [[-0.5, 0.9, -0.4, 1], [-0.4, -0.6, -0.4, 1], [0.9, 0.3, -0.4, 1]],
+        [[0.0, -0.9, 0.6, 1], [0.9, 0.9, 0.6, 1], [-0.9, 0.2, 0.6, 1]],
+    ])  # fmt: skip
+    rgba = np.array([[0.0, 0.45, 0.7, 0.6], [0.85, 0.2, 0.1, 0.6], [0.95, 0.8, 0.1, 0.6]])
+    return clip, np.repeat(rgba[:, None, :], 3, axis=1)
+
+
+def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)):
+    """The (H, W, 4) colour buffer of triangles ``order`` blended *over* in that order.
+
+    ``rgba`` holds straight-alpha, sRGB-encoded colours. ``srgb``: decode to linear first,
+    blend, encode the result (an sRGB framebuffer); else blend the encoded numbers.
+    ``premultiplied``: multiply colour by alpha first and blend with (ONE, ONE_MINUS_SRC_ALPHA);
+    the result is returned un-premultiplied so the two look alike.
+    """
+    colours = np.array(rgba, dtype=np.float64)[list(order)]
+    if srgb:
+        colours[..., :3] = srgb_to_linear(colours[..., :3])
+    if premultiplied:
+        colours[..., :3] *= colours[..., 3:]
+    mode = "premultiplied" if premultiplied else "over"
+    color = render(np.asarray(clip)[list(order)], *size, attrs=colours, blend=mode,
+                   depth_write=False).color  # fmt: skip
+    if premultiplied:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            a = color[..., 3:]
+            color[..., :3] = np.where(a > 0, color[..., :3] / a, 0.0)
+    if srgb:
+        color[..., :3] = linear_to_srgb(np.clip(color[..., :3], 0, 1))
+    return color
+
+
+class BlendingExplorer:
+    """Submission order, premultiplied alpha and sRGB, with the colour buffer beside the sorted
+    back-to-front one.
+
+    Parameters
+    ----------
+    clip, rgba : (N, 3, 4), optional
+        Triangles and their straight-alpha colours; default :func:`default_scene`.
+    size : (width, height)
+    backend, style : as the other widgets.
+
+    Attributes
+    ----------
+    order : list of int
+        The current submission order; ``select``, ``earlier``, ``later``, ``sort`` change it.
+    premultiplied, srgb : Checkbox
+    color, sorted_color : (H, W, 4) what the two panels show; ``differ`` pixels that differ.
+
+    Examples
+    --------
+    >>> ex = BlendingExplorer(backend="image")
+    >>> ex.sort.click(); ex.differ
+    0
+    >>> ex.select.value = 0; ex.later.click(); ex.differ > 0
+    True
+    >>> ex.close()
+    """
+
+    def __init__(self, clip=None, rgba=None, *, size=(48, 48), backend="auto", style=None):
+        if clip is None:
+            clip, rgba = default_scene()
+        self.clip, self.rgba, self.size = np.asarray(clip, float), np.asarray(rgba, float), size
+        self.order = list(range(len(self.clip)))
+        self.backend = resolve_backend(backend)
+        self.select = widgets.Select(options=self._options(), value=0, rows=len(self.order))
+        self.earlier = widgets.Button(description="earlier ↑")
+        self.later = widgets.Button(description="later ↓")
+        self.sort = widgets.Button(description="sort back to front")
+        self.premultiplied = widgets.Checkbox(value=False, description="premultiplied")
+        self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer")
+        self._compute()
+        with style_context(style):
+            self.fig = new_figure((9.0, 4.6), self.backend)
+            self.fig.set_layout_engine("constrained")
+            axes = self.fig.subplots(1, 2)
+            self.artists = plot_rgba(axes[0], self.color)
+            self.sorted_artists = plot_rgba(axes[1], self.sorted_color)
+            axes[0].set_title("submission order")
+            axes[1].set_title("sorted back to front")
+            self.display = FigureDisplay(self.fig, self.backend)
+        self.info = widgets.HTML(self._info())
+        self.earlier.on_click(lambda _: self._move(-1))
+        self.later.on_click(lambda _: self._move(+1))
+        self.sort.on_click(lambda _: self._sort())
+        for box in (self.premultiplied, self.srgb):
+            box.observe(lambda change: self.update(), "value")
+        title = title_html(
+            "Blending: order, premultiplied alpha, sRGB",
+            "Move a triangle earlier or later: 'over' depends on the order.",
+        )
+        buttons = widgets.VBox([self.earlier, self.later, self.sort])
+        controls = widgets.HBox([self.select, buttons,
+                                 widgets.VBox([self.premultiplied, self.srgb])])  # fmt: skip
+        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+
+    def _options(self):
+        names = ("blue", "red", "yellow", "green", "purple")
+        return [(f"{k + 1}. triangle {t} ({names[t % len(names)]})", k)
+                for k, t in enumerate(self.order)]  # fmt: skip
+
+    def _depth_order(self):
+        """Back to front: the largest window depth (farthest) first."""
+        z = self.clip[:, :, 2].mean(axis=1) / self.clip[:, :, 3].mean(axis=1)
+        return list(np.argsort(-z, kind="stable"))
+
+    def _compute(self) -> None:
+        opts = {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
+                "size": self.size}  # fmt: skip
+        self.color = compose(self.clip, self.rgba, self.order, **opts)
+        self.sorted_color = compose(self.clip, self.rgba, self._depth_order(), **opts)
+        self.differ = int((np.abs(self.color - self.sorted_color) > 1e-9).any(axis=2).sum())
+
+    def _move(self, delta: int) -> None:
+        k = self.select.value
+        j = k + delta
+        if 0 <= j < len(self.order):
+            self.order[k], self.order[j] = self.order[j], self.order[k]
+            self.select.options = self._options()
+            self.select.value = j
+        self.update()
+
+    def _sort(self) -> None:
+        self.order = [int(i) for i in self._depth_order()]
+        self.select.options = self._options()
+        self.select.value = 0
+        self.update()
+
+    def update(self) -> None:
+        """Recompute both buffers and update the two images in place."""
+        self._compute()
+        for artists, color in (
+            (self.artists, self.color),
+            (self.sorted_artists, self.sorted_color),
+        ):
+            rgb = np.clip(color[..., :3], 0, 1)
+            artists.image.set_data(np.concatenate([rgb, np.clip(color[..., 3:], 0, 1)], axis=2))
+        self.info.value = self._info()
+        self.display.refresh()
+
+    def _info(self) -> str:
+        order = " → ".join(str(t) for t in self.order)
+        return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front"
+                f"{' (premultiplied)' if self.premultiplied.value else ''}"
+                f"{' (sRGB framebuffer)' if self.srgb.value else ''}")  # fmt: skip
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the explorer."""
+        self.display.close()
+        close_tree(self.widget)

@@ -1,0 +1,130 @@
+"""``DivideCostExplorer``: how the price of a divide re-ranks interpolation's accuracy/cost front.
+
+Lesson 06's widget. Perspective-correct interpolation needs a divide per pixel; subdivided
+interpolation (Quake's) divides every N pixels and is affine in between; affine never divides.
+Which of them is worth its cost depends on what a divide costs against a multiply and an
+addition: tens of cycles on an early-1990s FPU, about as much as a few multiplies on a GPU.
+The slider sets that price; the chart re-prices every variant from its operation counts
+(:mod:`teachraster.study.operation_counts`) and redraws the Pareto front.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+
+from ..plotting.pareto import plot_pareto, update_pareto
+from ..study.operation_counts import CYCLES_1990S
+from .common import close_tree, labelled, style_context, title_html
+from .display import FigureDisplay, new_figure, resolve_backend
+
+#: The two error measures offered: the study's largest error and its mean.
+ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
+
+
+def short_name(variant: str) -> str:
+    """``"subdivided N=16"`` -> ``"N=16"``; other names unchanged."""
+    return variant.replace("subdivided ", "")
+
+
+def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0) -> list[dict]:
+    """Copies of ``rows`` with ``cycles`` recomputed from their operation counts."""
+    out = []
+    for r in rows:
+        c = r["divides"] * divide + r["multiplies"] * multiply + r["additions"] * addition
+        out.append({**r, "cycles": float(c)})
+    return out
+
+
+class DivideCostExplorer:
+    """Accuracy against cost of the interpolation variants, with the divide's price a slider.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The study's interpolation rows with their operation counts
+        (``ops.with_counts(bench.run(...))`` filtered to ``group == "interpolation"``).
+    divide : float
+        Starting cost of a divide, in additions (a multiply costs 3).
+    error : {"max error", "mean error"}
+    backend : {"auto", "ipympl", "image"}
+    style : str, optional
+
+    Attributes
+    ----------
+    divide : ipywidgets.FloatLogSlider
+    error : ipywidgets.ToggleButtons
+    front : list of str
+        The variants on the front, cheapest first, for the current settings.
+    widget : ipywidgets.VBox
+    """
+
+    def __init__(self, rows, divide: float = CYCLES_1990S["divides"], *,
+                 error: str = "max error", backend: str = "auto",
+                 style: str | None = None) -> None:  # fmt: skip
+        self.rows = [r for r in rows if r.get("group", "interpolation") == "interpolation"]
+        if not self.rows:
+            raise ValueError("rows must hold the study's interpolation rows")
+        self.backend = resolve_backend(backend)
+        self.divide = widgets.FloatLogSlider(value=divide, base=2, min=0, max=7, step=0.25,
+                                             description="divide =", readout_format=".3g",
+                                             layout=widgets.Layout(width="420px"))  # fmt: skip
+        self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
+        with style_context(style):
+            self.fig = new_figure((9.0, 5.5), self.backend)
+            self.fig.set_layout_engine("constrained")
+            self.ax = self.fig.add_subplot()
+            self._plot()
+            self.display = FigureDisplay(self.fig, self.backend)
+        self.info = widgets.HTML(self._info_html())
+        self.divide.observe(lambda change: self.update(), "value")
+        self.error.observe(lambda change: self.update(replot=True), "value")
+        title = title_html(
+            "What a divide costs decides the front",
+            "Cost per pixel in additions (a multiply = 3). Red: the Pareto front, the variants "
+            "no other beats on both cost and error.",
+        )
+        controls = widgets.HBox([self.divide, labelled("error", self.error)])
+        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+
+    @property
+    def _ykey(self) -> str:
+        return ERRORS[self.error.value]
+
+    def _plot(self) -> None:
+        self.ax.clear()
+        self.art = plot_pareto(
+            self.ax, priced(self.rows, self.divide.value), "cycles", y=self._ykey,
+            xlabel="cost per pixel (additions)", ylabel=f"{self.error.value} (texels)",
+            short=short_name,
+        )  # fmt: skip
+        self.front = [r["variant"] for r in self.art.front]
+
+    def update(self, replot: bool = False) -> None:
+        """Re-price the variants and redraw (the same artists unless the error measure changed)."""
+        if replot:
+            self._plot()
+        else:
+            rows = priced(self.rows, self.divide.value)
+            self.front = [r["variant"] for r in update_pareto(self.ax, self.art, rows, "cycles",
+                                                               y=self._ykey)]  # fmt: skip
+        self.info.value = self._info_html()
+        self.display.refresh()
+
+    def _info_html(self) -> str:
+        rows = {r["variant"]: r for r in priced(self.rows, self.divide.value)}
+        names = " → ".join(short_name(v) for v in self.front)
+        ratio = rows["perspective"]["cycles"] / rows["affine"]["cycles"]
+        under = [r for r in rows.values() if r["mean_abs_texels"] < 1.0]
+        best = min(under, key=lambda r: r["cycles"])
+        return (f"divide = {self.divide.value:.3g} additions: perspective-correct costs "
+                f"<b>{ratio:.3g}×</b> affine; the cheapest variant with a mean error under a "
+                f"texel: <b>{short_name(best['variant'])}</b> ({best['cycles']:.3g}). "
+                f"Front, cheapest first: {names}")  # fmt: skip
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the explorer."""
+        self.display.close()
+        close_tree(self.widget)

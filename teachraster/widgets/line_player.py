@@ -1,0 +1,95 @@
+"""``LinePlayer``: step through a line like a fill, and switch its rule.
+
+Lesson 12's player: Play/Pause and a step slider over the steps of
+:func:`teachraster.rasterize_line` (``trace=True``): the snap, the major axis, then one step
+per column (or row) with the rule's decision in the caption: the diamond test, Bresenham's
+error term or the DDA's float32 sum. The figure is a :class:`~teachraster.plotting.lines.LineView`
+whose artists are updated in place.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+
+from ..core.line_rules import RULES
+from ..core.lines import rasterize_line
+from ..plotting.lines import LineView
+from .common import close_tree, labelled, style_context, title_html
+from .display import FigureDisplay, html_escape, new_figure, resolve_backend
+
+
+class LinePlayer:
+    """Play a traced line step by step; ``rule`` toggles diamond / Bresenham / DDA.
+
+    Parameters
+    ----------
+    p0, p1 : (2,) end points in window px; width, height : image size.
+    rule : {"diamond", "bresenham", "dda"}
+    step : int, the step shown first (-1: the finished line).
+    backend, style : as the other widgets.
+
+    Examples
+    --------
+    >>> player = LinePlayer((0.5, 0.5), (9.5, 4.5), 11, 6, backend="image")
+    >>> player.slider.value = 3
+    >>> player.caption.value.startswith("column 1")
+    True
+    >>> player.rule.value = "bresenham"
+    >>> "error term" in player.trace.caption(3)
+    True
+    >>> player.close()
+    """
+
+    def __init__(self, p0, p1, width, height, *, rule="diamond", step=-1, interval=400,
+                 backend="auto", style=None):  # fmt: skip
+        self.p0, self.p1, self.width, self.height = p0, p1, width, height
+        self.backend = resolve_backend(backend)
+        self.fill = rasterize_line(p0, p1, width, height, rule=rule, trace=True)
+        n = len(self.trace)
+        self.rule = widgets.ToggleButtons(options=list(RULES), value=rule)
+        self.slider = widgets.IntSlider(value=self.trace.index(step), min=0, max=n - 1,
+                                        description="step")  # fmt: skip
+        self.play = widgets.Play(value=self.slider.value, min=0, max=n - 1, interval=interval)
+        widgets.jslink((self.play, "value"), (self.slider, "value"))
+        with style_context(style):
+            self.fig = new_figure((9.0, 5.0), self.backend)
+            self.fig.set_layout_engine("constrained")
+            self.view = LineView.create(self.fig.add_subplot(), self.fill, self.slider.value)
+            self.display = FigureDisplay(self.fig, self.backend)
+        self.caption = widgets.HTML(html_escape(self.trace.caption(self.slider.value)))
+        self.slider.observe(lambda change: self.show(change["new"]), "value")
+        self.rule.observe(lambda change: self._rerun(), "value")
+        title = title_html(
+            "A line, step by step",
+            "One step per column (x-major) or row: which pixel is lit, and why.",
+        )
+        controls = widgets.HBox([self.play, self.slider, labelled("rule", self.rule)])
+        self.widget = widgets.VBox([title, controls, self.caption, self.display.widget])
+
+    @property
+    def trace(self):
+        """The line's :class:`~teachraster.core.line_trace.LineTrace`."""
+        return self.fill.trace
+
+    def show(self, k: int) -> None:
+        """Show step ``k`` (updates the artists and the caption in place)."""
+        self.view.show_step(k)
+        self.caption.value = html_escape(self.trace.caption(k))
+        self.display.refresh()
+
+    def _rerun(self) -> None:
+        self.fill = rasterize_line(self.p0, self.p1, self.width, self.height,
+                                   rule=self.rule.value, trace=True)  # fmt: skip
+        self.view.trace = self.trace
+        n = len(self.trace)
+        self.slider.max = self.play.max = n - 1
+        value = min(self.slider.value, n - 1)
+        self.show(value)
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close every widget of the player."""
+        self.display.close()
+        close_tree(self.widget)

@@ -1,0 +1,120 @@
+"""Independent solutions of lesson 12's exercises (no call into teachraster): the diamond rule
+in exact Fractions with GL's perturbation as a concrete tiny ε, the blend equations by hand;
+and the typical mistakes the checker must catch and explain."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+
+EPS = Fraction(1, 2**80)
+HALF = Fraction(1, 2)
+
+
+def _meets(a, b, cx, cy) -> bool:
+    """Does the closed segment a→b meet the open diamond around (cx, cy)? (Cyrus-Beck)"""
+    lo, hi, lo_open, hi_open = Fraction(0), Fraction(1), False, False
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    for sx, sy in ((1, 1), (1, -1), (-1, 1), (-1, -1)):
+        c = HALF - sx * (a[0] - cx) - sy * (a[1] - cy)
+        rate = sx * dx + sy * dy
+        if rate == 0:
+            if c <= 0:
+                return False
+            continue
+        t = c / rate
+        if rate > 0 and (t < hi or (t == hi and not hi_open)):
+            hi, hi_open = t, True
+        elif rate < 0 and (t > lo or (t == lo and not lo_open)):
+            lo, lo_open = t, True
+    return lo < hi or (lo == hi and not (lo_open or hi_open))
+
+
+def line_pixels(p0, p1):
+    a = (Fraction(p0[0]) - EPS, Fraction(p0[1]) - EPS * EPS)
+    b = (Fraction(p1[0]) - EPS, Fraction(p1[1]) - EPS * EPS)
+    out = []
+    for row in range(int(min(a[1], b[1])) - 1, int(max(a[1], b[1])) + 2):
+        for col in range(int(min(a[0], b[0])) - 1, int(max(a[0], b[0])) + 2):
+            cx, cy = col + HALF, row + HALF
+            inside_end = abs(b[0] - cx) + abs(b[1] - cy) < HALF
+            if row >= 0 and col >= 0 and _meets(a, b, cx, cy) and not inside_end:
+                out.append((row, col))
+    return out
+
+
+def over(src, dst):
+    a = src[3]
+    return [s * a + d * (1 - a) for s, d in zip(src, dst)]
+
+
+def over_premultiplied(src, dst):
+    a = src[3]
+    return [s + d * (1 - a) for s, d in zip(src, dst)]
+
+
+CORRECT = {"line_pixels": line_pixels, "over": over, "over_premultiplied": over_premultiplied}
+
+
+# -- typical mistakes -----------------------------------------------------------------------------
+def line_with_end(p0, p1):
+    """Lights p1's own pixel too (the closed segment)."""
+    out = line_pixels(p0, p1)
+    if tuple(p0) != tuple(p1):
+        out.append((int(p1[1]), int(p1[0])))
+    return list(set(out))
+
+
+def line_round_centres(p0, p1):
+    """One pixel per major-axis centre, rounding the line there (DDA-like, no diamond)."""
+    (x0, y0), (x1, y1) = p0, p1
+    dx, dy = x1 - x0, y1 - y0
+    if dx == dy == 0:
+        return []
+    out = []
+    if abs(dx) >= abs(dy):
+        for j in range(int(min(x0, x1)), int(max(x0, x1)) + 1):
+            x = j + 0.5
+            if min(x0, x1) <= x < max(x0, x1):
+                out.append((int(np.floor(y0 + (x - x0) * dy / dx)), j))
+    else:
+        for i in range(int(min(y0, y1)), int(max(y0, y1)) + 1):
+            y = i + 0.5
+            if min(y0, y1) <= y < max(y0, y1):
+                out.append((i, int(np.floor(x0 + (y - y0) * dx / dy))))
+    return out
+
+
+def over_dst_alpha(src, dst):
+    return [s * dst[3] + d * (1 - dst[3]) for s, d in zip(src, dst)]
+
+
+def over_porter_duff_alpha(src, dst):
+    a = src[3]
+    return [src[0] * a + dst[0] * (1 - a), src[1] * a + dst[1] * (1 - a),
+            src[2] * a + dst[2] * (1 - a), a + dst[3] * (1 - a)]  # fmt: skip
+
+
+def premultiplied_twice(src, dst):
+    a = src[3]
+    return [src[0] * a + dst[0] * (1 - a), src[1] * a + dst[1] * (1 - a),
+            src[2] * a + dst[2] * (1 - a), a + dst[3] * (1 - a)]  # fmt: skip
+
+
+#: (exercise, wrong function, words the explanation must contain)
+MISTAKES = {
+    "lighting the end pixel": ("line_pixels", line_with_end, "p1"),
+    "rounding at centres": ("line_pixels", line_round_centres, "diamond"),
+    "destination alpha": ("over", over_dst_alpha, "destination alpha"),
+    "Porter-Duff alpha in GL's over": ("over", over_porter_duff_alpha, "one factor pair"),
+    "premultiplying twice": ("over_premultiplied", premultiplied_twice, "dark fringe"),
+}
+
+
+def over_numpy(src, dst):
+    src, dst = np.asarray(src), np.asarray(dst)
+    return src * src[3] + dst * (1 - src[3])
+
+
+ALTERNATIVES = {"over": over_numpy}

@@ -1,0 +1,322 @@
+"""Exercises 05–08 (issue 20): principled references, explanations, pictures and notebooks.
+
+The generic promises (independent and other correct solutions pass, each typical mistake is
+caught and explained, reports draw) run for these exercises too in ``test_exercises.py``,
+from the solutions at the end of ``exercise_solutions.py``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+from exercise_solutions import CORRECT, MISTAKES
+
+from teachraster import exercises as ex
+from teachraster.exercises import (
+    antialiasing,
+    depth_precision,
+    level_of_detail,
+    texture_filtering,
+    tile_blocks,
+)
+from teachraster.exercises.student_version import student_notebook
+
+LATER = ["depth_to_unorm", "coverage_fraction", "resolve", "mip_level", "bilinear", "trilinear",
+         "classify_block"]  # fmt: skip
+NOTEBOOKS = sorted(
+    (Path(__file__).resolve().parent.parent / "notebooks" / "exercises").glob("0[5-8]_*.ipynb")
+)
+
+
+def test_the_new_exercises_follow_the_first_eight():
+    assert ex.names()[8:15] == LATER
+
+
+# -- references: exact, independent of the package's own arithmetic --------------------------
+def test_depth_reference_is_the_exactly_rounded_product_or_a_tie():
+    for _, (z, bits), expected in depth_precision.depth_cases():
+        exact = Fraction(z) * (2**bits - 1)
+        low = math.floor(exact)
+        nearest = low + (exact - low > Fraction(1, 2))
+        if exact - low != Fraction(1, 2) and abs(exact - low - Fraction(1, 2)) > 1e-6:
+            assert expected == nearest and depth_precision.accepted(z, bits) == (nearest,)
+        else:
+            assert set(depth_precision.accepted(z, bits)) == {low, low + 1}
+
+
+def test_at_an_exact_half_either_neighbour_passes_and_only_there():
+    assert ex.check("depth_to_unorm", lambda z, b: math.floor(z * (2**b - 1) + 0.5)).passed
+    assert ex.check("depth_to_unorm", lambda z, b: math.ceil(z * (2**b - 1) - 0.5)).passed
+    off_by_one = ex.check("depth_to_unorm", lambda z, b: round(z * (2**b - 1)) + (z == 0.25))
+    assert len(off_by_one.failures) == 2  # z = 0.25 with 16 and with 24 bits
+
+
+def test_coverage_cases_hold_the_hard_ones_and_snapping_decides_some():
+    cases = antialiasing.coverage_cases()
+    labels = " ".join(label for label, _, _ in cases)
+    for words in ("on a left edge", "on a right edge", "on a top edge", "on a bottom edge",
+                  "a vertex on sample", "off the grid", "rounds to even", "zero area",
+                  "counter-clockwise", "random"):  # fmt: skip
+        assert words in labels
+    decided_by_snapping = [
+        label
+        for label, (xy, pixel, samples), expected in cases
+        if not math.isclose(
+            antialiasing.covered_samples(xy, antialiasing.sample_points(pixel, samples)).mean(),
+            expected,
+        )
+    ]
+    assert len(decided_by_snapping) >= 3, decided_by_snapping
+
+
+def test_block_cases_hold_the_corner_tricks_pitfalls():
+    cases = {label.split(":")[0]: expected for label, _, expected in tile_blocks.block_cases()}
+    assert cases["a block beyond a vertex, outside the triangle"] == "partial"
+    assert cases["a small triangle inside a big block"] == "partial"
+    assert cases["a left edge through the left corners"] == "accepted"
+    assert cases["a right edge through the right corners"] == "partial"
+    assert cases["one pixel, its centre on a right edge"] == "rejected"
+    assert cases["zero area"] == "rejected"
+    assert set(cases.values()) == {"rejected", "accepted", "partial"}
+
+
+# -- explanations name the rule and quote the numbers ----------------------------------------
+def _first(mistake):
+    name, fn, words = MISTAKES[mistake]
+    return next(f.explanation for f in ex.check(name, fn).failures if words in f.explanation)
+
+
+def test_the_issues_three_explanations():
+    assert "you sampled at texel corners: texel centres are at (i + ½)/W" in _first(
+        "bilinear at texel corners"
+    )
+    assert (
+        "your λ uses the sum of the derivatives; GL takes the longer of the two footprint axes"
+        in _first("λ from the sum of the axes")
+    )
+    text = _first("accept by the maximising corner")
+    assert re.search(
+        r"this corner, \([\d.]+, [\d.]+\) \(E = -[\d.]+\), is the one that minimises E for edge "
+        r"v\d→v\d, and it fails; you tested the maximising one",
+        text,
+    ), text
+
+
+def test_explanations_quote_the_case():
+    assert _first("depth by truncation") == (
+        "in float64 z·(2^16 − 1) = 0.25·65535 = 16383.75, which int() truncates to 16383; the "
+        "buffer stores the nearest integer, 16384: rounding by truncation drops the fraction, "
+        "round to the nearest instead"
+    )
+    text = _first("resolve of covered samples only")
+    assert "ids [-1, 0, -1, -1] (1 of 4 samples covered)" in text
+    assert "you averaged the 1 covered sample only" in text
+    assert "the 3 uncovered ones counting as the background" in text
+    assert "(2.3759765625, -1) → (2.375, -1)" in _first("coverage without snapping")
+    assert "λ = -2 lies outside the pyramid" in _first("trilinear without clamping λ")
+
+
+def test_a_wrong_type_is_named():
+    report = ex.check("classify_block", lambda xy, x0, y0, size: "Partial")
+    assert "expected one of 'rejected', 'accepted', 'partial'" in report.failures[0].explanation
+    report = ex.check("resolve", lambda c, i, b: 0.5)
+    assert "expected one colour of 3 channels" in report.failures[0].explanation
+
+
+def test_a_student_writing_into_the_pyramid_changes_nothing():
+    def vandal(pyramid, uv, lod, wrap="repeat"):
+        for level in pyramid:
+            level[...] = 0
+        return CORRECT["trilinear"](pyramid, uv, lod, wrap)
+
+    report = ex.check("trilinear", vandal)
+    assert not report.passed
+    assert ex.check("trilinear", CORRECT["trilinear"]).passed
+
+
+def test_the_level_of_detail_is_the_packages():
+    for _, (dx, dy, size), expected in level_of_detail.level_cases():
+        assert math.isclose(expected, CORRECT["mip_level"](dx, dy, size), abs_tol=1e-12)
+
+
+def test_bilinear_at_a_texel_centre_is_the_texel():
+    tex = np.arange(12.0).reshape(3, 4)
+    assert texture_filtering.expected_bilinear(tex, (2.5 / 4, 1.5 / 3), "clamp") == 6.0
+
+
+# -- whole pictures, side by side -------------------------------------------------------------
+@pytest.fixture
+def plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    yield plt
+    plt.close("all")
+
+
+PICKS = {
+    "depth_to_unorm": "depth by truncation",
+    "coverage_fraction": "coverage, both edges own a sample",
+    "resolve": "resolve of covered samples only",
+    "mip_level": "λ from the shorter axis",
+    "bilinear": "bilinear at texel corners",
+    "trilinear": "trilinear from the nearest level",
+    "classify_block": "accept by the maximising corner",
+}
+
+
+@pytest.mark.parametrize("name", LATER)
+def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
+    wrong = ex.check(name, MISTAKES[PICKS[name]][1])
+    differing = wrong.differing_pixels()
+    assert len(differing) > 0
+    row, col = differing[0]
+    words = wrong.explain_pixel(row, col)
+    assert "agree" not in words and len(words) > 40
+    fig, axes = plt.subplots(1, 3)
+    artists = wrong.compare(axes, pixel="first")
+    assert artists and axes[2].get_title().startswith(f"{len(differing)} pixel")
+    assert words in fig.get_supxlabel().replace("\n", " ")
+    fig.canvas.draw()
+    right = ex.check(name, CORRECT[name])
+    assert len(right.differing_pixels()) == 0
+    fig, ax = plt.subplots()  # one Axes is split in three
+    right.compare(ax)
+    assert len(fig.axes) == 3 and fig.axes[2].get_title() == "no pixel differs"
+
+
+@pytest.mark.parametrize("mistake", [m for m, (name, _, _) in MISTAKES.items() if name in LATER])
+def test_every_typical_mistake_shows_in_the_picture(mistake):
+    name, fn, _ = MISTAKES[mistake]
+    report = ex.check(name, fn)
+    differing = report.differing_pixels()
+    assert len(differing) > 0
+    assert "agree" not in report.explain_pixel(*differing[-1])
+
+
+def test_a_click_explains_the_clicked_pixel(plt):
+    from types import SimpleNamespace
+
+    from teachraster.exercises.compare_scenes import draw_comparison
+
+    report = ex.check("resolve", MISTAKES["resolve of covered samples only"][1])
+    fig, axes = plt.subplots(1, 3)
+    draw_comparison(report.scene, axes)
+    row, col = report.differing_pixels()[0]
+    event = SimpleNamespace(
+        name="button_press_event", inaxes=axes[2], xdata=col + 0.5, ydata=row + 0.5,
+        canvas=fig.canvas, x=0, y=0, button=1, key=None, guiEvent=None, step=0, dblclick=False,
+    )  # fmt: skip
+    fig.canvas.callbacks.process("button_press_event", event)
+    assert fig.get_supxlabel().startswith(f"pixel ({row}, {col}):")
+
+
+def test_a_stub_or_a_crash_is_shown_not_raised(plt):
+    def stub(*args):
+        raise NotImplementedError
+
+    report = ex.check("bilinear", stub)
+    assert report.not_implemented
+    fig, axes = plt.subplots(1, 3)
+    report.compare(axes, pixel="first")
+    assert "not implemented yet" in axes[0].texts[0].get_text()
+    crash = ex.check("classify_block", lambda *a: 1 / 0)
+    assert "ZeroDivisionError" in crash.explain_pixel(0, 0)
+
+
+# -- notebooks: the grading convention --------------------------------------------------------
+def _cells(path):
+    return json.loads(path.read_text(encoding="utf-8"))["cells"]
+
+
+def _source(cell):
+    return "".join(cell["source"]) if isinstance(cell["source"], list) else cell["source"]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
+def test_notebook_follows_the_grading_convention(path):
+    cells = _cells(path)
+    ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells]  # markdown cells too
+    assert len(ids) == len(set(ids))
+    solutions = 0
+    for k, cell in enumerate(cells):
+        meta, source = cell["metadata"]["nbgrader"], _source(cell)
+        if cell["cell_type"] == "code":
+            assert not cell["outputs"] and cell["execution_count"] is None
+        if meta["solution"]:
+            fn = meta["grade_id"].removesuffix("_solution")
+            assert re.search(r"^ *### BEGIN SOLUTION$.*^ *### END SOLUTION$", source, re.M | re.S)
+            assert meta == {"grade": False, "grade_id": f"{fn}_solution", "locked": False,
+                            "schema_version": 3, "solution": True, "task": False}  # fmt: skip
+            check = cells[k + 1]
+            assert _source(check) == (
+                f'report = ex.check("{fn}", {fn})\nshow(report)\nreport.assert_passed()'
+            )
+            assert check["metadata"]["nbgrader"] == {
+                "grade": True, "grade_id": f"{fn}_check", "locked": True, "points": 1,
+                "schema_version": 3, "solution": False, "task": False,
+            }  # fmt: skip
+            solutions += 1
+        elif not meta["grade"]:
+            assert meta["locked"] and "BEGIN SOLUTION" not in source
+    assert solutions >= 1
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
+def test_student_version_holds_no_answer_and_the_text_no_formula(path):
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    answers = []
+    for cell in nb["cells"]:
+        body = re.search(r"### BEGIN SOLUTION\n(.*?)### END SOLUTION", _source(cell), re.S)
+        if body:
+            answers += [ln.strip() for ln in body.group(1).splitlines() if len(ln.strip()) > 12]
+    student = "\n".join(_source(c) for c in student_notebook(nb)["cells"])
+    markdown = "\n".join(_source(c) for c in nb["cells"] if c["cell_type"] == "markdown")
+    for line in answers:
+        assert line not in student, line
+        assert line not in markdown, line
+
+
+def test_a_slow_function_spends_the_budget_and_no_more():
+    import time
+
+    from teachraster.exercises.later import EXERCISES
+
+    def slow(z, bits):
+        time.sleep(0.05)
+        return round(z * (2**bits - 1))
+
+    start = time.perf_counter()
+    report = EXERCISES["depth_to_unorm"](slow, budget=0.3)
+    assert time.perf_counter() - start < 2
+    assert not report.passed
+    assert "not run: the 0.3 s the check may take were spent" in report.failures[-1].explanation
+
+
+def test_not_implemented_on_some_cases_only_is_a_failure():
+    def half_done(z, bits):
+        if bits == 24:
+            raise NotImplementedError
+        return round(z * (2**bits - 1))
+
+    report = ex.check("depth_to_unorm", half_done)
+    assert not report.not_implemented and not report.passed
+    assert len(report.failures) == report.n_cases // 2
+    assert "NotImplementedError" in report.failures[0].explanation
+
+
+def test_a_pixel_is_a_pair_of_ints_inside_the_picture():
+    report = ex.check("mip_level", CORRECT["mip_level"])
+    with pytest.raises(TypeError, match="pixel must be a pair of ints"):
+        report.explain_pixel(1.5, 2)
+    with pytest.raises(ValueError, match="pixel must lie in the"):
+        report.explain_pixel(0, 10_000)
+    assert report.explain_pixel(np.int64(20), 10).startswith("yours and the package's agree")

@@ -1,0 +1,234 @@
+"""Lessons 06-10: every number their text quotes or implies, checked against what they compute.
+
+The markdown of these lessons refers to the numbers its cells print ("the cell above prints …")
+instead of typing them; where the text still makes a claim about a number (a slope "between −1
+and −½", "tens of texels", "more than 32 bits"), it is checked here on the variables the
+executed lesson leaves behind (``tests/test_lessons.py``'s cached ``lesson()``, which
+``tests/test_figure_width.py`` runs with its probe first). The widgets that the lessons no
+longer drive in front of the class are driven here.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _lessons_module():
+    if "test_lessons" in sys.modules:
+        return sys.modules["test_lessons"]
+    spec = importlib.util.spec_from_file_location(
+        "test_lessons", ROOT / "tests" / "test_lessons.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["test_lessons"] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def lesson(name):
+    return _lessons_module().lesson(name)
+
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
+
+
+# -- 06 what accuracy costs ---------------------------------------------------------------------
+def test_06_quake_mean_versus_max_and_the_cost_model():
+    ns = lesson("06_what_accuracy_costs")
+    n16 = ns.subdivided[16]
+    assert n16["mean_abs_texels"] < 1.0  # "under a texel on average"
+    assert 10 <= n16["error"] < 100  # "tens of texels at the worst pixels"
+    ratios = [ns.mean_err[b] / ns.mean_err[a] for a, b in zip(ns.ns_, ns.ns_[1:])]
+    assert all(2.0 < r < 6.0 for r in ratios)  # about 4 per halving: error ∝ N²
+    cyc = ns.cyc
+    assert cyc["perspective"] > 10 * cyc["affine"]  # "tens of times what affine does"
+    assert cyc["affine"] < cyc["subdivided N=16"] < cyc["perspective"] / 5  # "buys most of it back"
+    rows = {(r["group"], r["variant"]): r for r in ns.rows}
+    assert rows[("interpolation", "affine")]["error"] >= 100  # "off by hundreds of texels"
+
+
+def test_06_edge_bits_and_depth_claims():
+    ns = lesson("06_what_accuracy_costs")
+    rows = {(r["group"], r["variant"]): r for r in ns.rows}
+    assert list(ns.needed.values()) == [37] * 3  # "the 37 the mesh needs"
+    assert rows[("edge functions", "fixed8 direct")]["bits"] == 63
+    assert rows[("edge functions", "float32 direct")]["bits"] == 24
+    # linear unorm16: one step is more than the gap, at every distance
+    assert ns.linear_step16 > 0.01 and round(ns.linear_step16, 4) == 0.0153
+    for fmt in ("float64", "float32", "unorm24", "unorm16"):
+        assert rows[("depth", f"linear {fmt}")]["slanted_wrong"] > 0  # wrong at any bits
+    assert rows[("depth", "window float64")]["error"] == 0
+    from teachraster.study import bench
+
+    depth_rows = [r for r in ns.rows if r["group"] == "depth"]
+    front = [r["variant"] for r in bench.pareto_front(depth_rows, x="bits")]
+    assert not any(v.startswith("linear") for v in front)
+    assert ns.channels == 3
+
+
+def test_06_divide_cost_slider_reprices_the_front():
+    from teachraster.widgets.divide_cost import DivideCostExplorer, priced
+
+    ns = lesson("06_what_accuracy_costs")
+    ex = DivideCostExplorer(ns.interp_rows, backend="image")
+    try:
+        assert ex.front[0] == "affine" and ex.front[-1] == "perspective"
+        cheap = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 1.0)}
+        ex.divide.value = 1.0
+        assert "subdivided N=2" not in ex.front  # as dear as perspective-correct, and worse
+        assert cheap["perspective"] / cheap["affine"] < 10 < ns.cyc["perspective"]
+        assert "6×" in ex.info.value
+        ex.error.value = "mean error"
+        assert ex.front[-1] == "perspective"
+    finally:
+        ex.close()
+
+
+# -- 07 hard cases ---------------------------------------------------------------------------
+def test_07_the_catalogue_still_passes():
+    ns = lesson("07_hard_cases")
+    assert not ns.failures and ns.fan_naive.max() == 16
+    assert not ns.wrong32.any()  # the predicted "nothing at all" at 1e6 px in float32
+
+
+def test_07_case_picker_driven_by_the_test():
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("fan_spokes_through_centres", backend="image")
+    try:
+        picker.case.value, picker.method.value = "d3d_split_square", "span"
+        assert picker.passed and picker.difference
+    finally:
+        picker.close()
+
+
+# -- 08 antialiasing -----------------------------------------------------------------------------
+def test_08_error_falls_slower_than_one_over_s():
+    ns = lesson("08_antialiasing")
+    slopes = ns.slopes
+    assert all(-1.0 < k < -0.5 for k in slopes.values()), slopes  # between 1/S and 1/sqrt(S)
+    assert max(slopes, key=slopes.get) == "random"  # nearest to -1/2
+    for kind in ("standard", "grid", "jittered"):
+        assert ns.err16[kind] > 2 * ns.err1 / 16  # not 1/S
+
+
+def test_08_levels_fan_hub_centroid_and_resolve():
+    ns = lesson("08_antialiasing")
+    assert ns.levels["rotated grid (standard)"] == [0.0, 0.25, 0.5, 0.75, 1.0]
+    assert 0.75 not in ns.levels["ordered grid"]
+    assert ns.hub_count == 1 and int((ns.count > 1).sum()) == 0
+    assert np.allclose(ns.centre, [10, 6] + ns.pattern16[0])
+    v_c, v_s = ns.at_centre.attrs["v"][ns.pr, ns.pc], ns.at_centroid.attrs["v"][ns.pr, ns.pc]
+    assert not 0 <= v_c <= 1 and 0 <= v_s <= 1  # extrapolated at the centre, inside at the sample
+    assert not ns.at_centre.coverage_fraction[ns.pr, ns.pc] == 1.0
+    assert ns.at_centre.sample_coverage[ns.pr, ns.pc, ns.nearest]
+    assert (ns.crop[0].stop - ns.crop[0].start) >= 20  # the crop shows the cube large
+
+
+def test_08_sampling_explorer_and_inspector():
+    import teachraster as tr
+    from teachraster.widgets import PixelInspector
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    ex = SamplingExplorer(rate=32, width=0.0, backend="image")
+    try:
+        none = ex.result.rms_error
+        ex.width.value = 1.0
+        box = ex.result.rms_error
+        assert box < none and ex.result.nyquist == 16
+        ex.rate.value = 64
+        assert ex.result.alias_from > 0.5
+    finally:
+        ex.close()
+    inspector = PixelInspector(tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]]), 20, 14,
+                               row=2, col=12, backend="image")  # fmt: skip
+    try:
+        inspector.pattern.value = "16 standard"
+        assert "16 samples" in inspector.pixel.square.axes.get_title()
+    finally:
+        inspector.close()
+
+
+# -- 09 texture filtering -----------------------------------------------------------------------
+def test_09_bilinear_footprint_seams_and_the_sampling_picture():
+    ns = lesson("09_texture_filtering")
+    assert ns.whole  # the quad the text differences is covered by one triangle
+    assert ns.bilinear_gap < 1e-12
+    near, far = ns.picked["near"], ns.picked["far"]
+    assert near[0] > far[0]
+    read = ns.level_read
+    steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
+    steps = steps[np.isfinite(steps)]
+    assert np.array_equal(steps, np.round(steps)) and len(set(steps.tolist())) >= 3
+    smooth = read["trilinear"][ns.rows_shown, ns.W // 2]
+    assert (np.abs(smooth - np.round(smooth)) > 0.1).any()  # blended between levels
+    assert len(ns.seam_rows) >= 3
+    sampled = ns.sampled
+    assert sampled[(1.0, "box")].rms_error < sampled[(0.0, "box")].rms_error
+    assert sampled[(2.0, "gaussian")].rms_error < sampled[(0.0, "box")].rms_error
+
+
+def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
+    ns = lesson("09_texture_filtering")
+    b, nmn = ns.b, ns.nmn
+    assert b["texel_reads"] > nmn["texel_reads"]
+    assert b["error_minified"] > nmn["error_minified"]
+    assert ns.aniso_error < ns.trilinear_error
+
+
+def test_09_filter_explorer_driven_by_the_test():
+    from teachraster.widgets import FilterExplorer
+
+    explorer = FilterExplorer(tilt=80, filter="trilinear", backend="image")
+    try:
+        errors = {}
+        for f in ["nearest", "trilinear", "anisotropic"]:
+            explorer.filter.value = f
+            errors[f] = explorer.rms
+        assert errors["trilinear"] < errors["nearest"] and errors["anisotropic"] < errors["nearest"]
+    finally:
+        explorer.close()
+
+
+# -- 10 tiles and hierarchical z ----------------------------------------------------------------
+def test_10_numbers_the_text_relies_on():
+    from teachraster.core import fixed_point
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    assert np.isclose(ns.values.max(), ns.corner_max) and np.isclose(ns.values.min(), ns.corner_min)
+    assert all(ns.same.values())
+    assert ns.per_pixel[0] > 10 * ns.per_pixel[-1]
+    assert 30 <= ns.tests[2] <= 100  # the predicted "about 50"
+    budget = ns.narrow.budget
+    assert not budget.fits and f"{budget.needed} bits needed" in "\n".join(budget.lines())
+    assert budget.needed > 32  # "more than 32"
+    assert ns.narrow.wrong.any() and not ns.small_ok.wrong.any()
+    assert ns.jumps["serpentine"] == 0
+    assert ns.tile_changes["tiled"] == ns.tile_changes["morton"] == 3  # "3 is the least"
+    assert min(ns.tile_changes.values()) == 3
+    assert 2**30 / 512 < fixed_point.max_extent(8, 64)  # the guard band fits int64
+    assert ns.front_first["hiz_rejected"] > 0 and ns.front_first["shaded"] == 96 * 64
+    assert ns.gpu["hiz_rejected"] == 0  # back to front (the last order drawn): "none"
+    assert ns.sphere["hiz_rejected"] > 0
+
+
+def test_10_tile_explorer_driven_by_the_test():
+    import teachraster as tr
+    from teachraster.widgets import TileExplorer
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    explorer = TileExplorer(tr.Triangle(ns.xy), 64, 64, block_sizes=(16, 4, 1), backend="image")
+    try:
+        explorer.level.value = 1
+        first = explorer.caption_text
+        explorer.block.value = 3
+        assert first and explorer.caption_text and explorer.caption_text != first
+    finally:
+        explorer.close()

@@ -1,0 +1,70 @@
+"""Lesson 12's numbers: the executed notebook's variables say what its text says."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_lessons import lesson
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
+
+
+@pytest.fixture(scope="module")
+def ns():
+    return lesson("12_lines_and_blending")
+
+
+def test_diamond_rule_and_its_tie(ns):
+    assert ns.lit[1] == (1, 1)  # the tie at column 1 goes to the lower pixel
+    assert int(np.flatnonzero(ns.up[:, 1])[0]) == 3
+
+
+def test_bresenham_differs_and_dda_drifts(ns):
+    assert len(ns.differ) > 0
+    assert len(ns.dda_wrong) > 0 and ns.first_column == int(ns.dda_wrong[0])
+    assert abs(ns.steps.value[ns.step_k] - ns.true_y) > abs(ns.true_y - round(ns.true_y))
+
+
+def test_wide_line_halves_share_nothing(ns):
+    assert not (ns.halves[0] & ns.halves[1]).any()
+    assert (ns.gl_shape != ns.wide.coverage).any()
+
+
+def test_blending_points(ns):
+    assert (ns.delta > 0).sum() > 0  # order dependence
+    assert ns.wrong_order.sum() > 0  # sorting whole triangles fails where they intersect
+    assert ns.fringe_straight < 0.8 and abs(ns.fringe_premult - 1.0) < 1e-12
+    assert ns.mix_encoded == 0.5 and abs(ns.mix_linear - 0.7353569830524495) < 1e-12
+
+
+def test_exercise_notebook_follows_the_grading_convention():
+    from pathlib import Path
+
+    import nbformat
+
+    path = (
+        Path(__file__).resolve().parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    )
+    nb = nbformat.read(path, as_version=4)
+    ids = [c.metadata["nbgrader"]["grade_id"] for c in nb.cells]
+    assert len(ids) == len(set(ids))
+    fns = ["line_pixels", "over", "over_premultiplied"]
+    for fn in fns:
+        (sol,) = [c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == f"{fn}_solution"]
+        assert sol.metadata["nbgrader"] == {"grade": False, "grade_id": f"{fn}_solution",
+                                            "locked": False, "schema_version": 3,
+                                            "solution": True, "task": False}  # fmt: skip
+        lines = sol.source.splitlines()
+        assert "    ### BEGIN SOLUTION" in lines and "    ### END SOLUTION" in lines
+        (chk,) = [c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == f"{fn}_check"]
+        assert chk.metadata["nbgrader"] == {"grade": True, "grade_id": f"{fn}_check",
+                                            "locked": True, "points": 1, "schema_version": 3,
+                                            "solution": False, "task": False}  # fmt: skip
+        assert (
+            chk.source == f'report = ex.check("{fn}", {fn})\nshow(report)\nreport.assert_passed()'
+        )
+    others = [c for c in nb.cells if not c.metadata["nbgrader"]["grade_id"].endswith(
+        ("_solution", "_check"))]  # fmt: skip
+    assert all(c.metadata["nbgrader"]["locked"] for c in others)
+    assert all(not c.metadata["nbgrader"]["grade"] and not c.metadata["nbgrader"]["solution"]
+               for c in others)  # fmt: skip

@@ -1,0 +1,91 @@
+"""Line and blending plots and widgets: they draw what the trace says and update in place."""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.plotting.lines import LineView, plot_diamonds, plot_rgba  # noqa: E402
+
+
+@pytest.fixture
+def ax():
+    fig, ax = plt.subplots()
+    yield ax
+    plt.close(fig)
+
+
+def test_plot_diamonds_draws_the_traces_candidates(ax):
+    fill = tr.rasterize_line((0.5, 0.5), (4.5, 2.5), 6, 4, trace=True)
+    art = plot_diamonds(ax, fill)
+    assert len(art.lit.get_paths()) == int(fill.coverage.sum())
+    assert len(art.ends.get_paths()) == 1  # p1's own diamond
+    assert art.segment in ax.lines
+
+
+def test_plot_diamonds_needs_a_trace(ax):
+    with pytest.raises(TypeError, match="trace=True"):
+        plot_diamonds(ax, tr.rasterize_line((0.5, 0.5), (4.5, 2.5), 6, 4))
+
+
+def test_line_view_updates_in_place(ax):
+    fill = tr.rasterize_line((0.5, 0.5), (9.5, 4.5), 11, 6, rule="bresenham", trace=True)
+    view = LineView.create(ax, fill, step=0)
+    before = list(ax.get_children())
+    for k in range(len(fill.trace)):
+        view.show_step(k)
+        assert view.caption.get_text() == fill.trace.caption(k)
+    assert list(ax.get_children()) == before
+    assert view.current.get_visible() and view.current.get_x() == fill.trace.step(-1).col
+
+
+def test_plot_rgba_shows_alpha_over_a_checkerboard(ax):
+    color = np.zeros((4, 5, 4))
+    color[1, 2] = [0.25, 0, 0, 0.5]
+    art = plot_rgba(ax, color, premultiplied=True)
+    shown = art.image.get_array()
+    np.testing.assert_allclose(shown[1, 2], [0.5, 0, 0, 0.5])
+    with pytest.raises(ValueError, match="color"):
+        plot_rgba(ax, color[..., :3])
+
+
+def test_blending_explorer_order_and_toggles():
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24))
+    try:
+        ex.sort.click()
+        assert ex.differ == 0
+        ex.select.value = 0
+        ex.later.click()
+        assert ex.differ > 0
+        straight = ex.color.copy()
+        ex.premultiplied.value = True
+        # premultiplied "over" into a transparent buffer gives Porter-Duff's alpha
+        # 1 - Π(1 - a) (three layers of 0.6 where all overlap); straight alpha squares it
+        assert np.isclose(ex.color[..., 3].max(), 1 - 0.4**3)
+        assert straight[..., 3].max() < ex.color[..., 3].max()
+        moved = ex.color.copy()
+        ex.srgb.value = True
+        assert not np.allclose(ex.color, moved)
+    finally:
+        ex.close()
+
+
+def test_line_player_switches_rule():
+    from teachraster.widgets.line_player import LinePlayer
+
+    player = LinePlayer((0.5, 0.5), (20.5, 3.5), 22, 5, backend="image")
+    try:
+        player.rule.value = "dda"
+        assert "float32" in player.caption.value or player.slider.value < 2
+        player.slider.value = 4
+        assert "float32 sum" in player.caption.value
+    finally:
+        player.close()
