@@ -566,3 +566,42 @@ def test_step_label_follows_the_slider(player):
     player.slider.value = player.trace.first_work_step
     assert player.step_info == f"of {len(player.trace) - 1} (pixel)"
     assert player.view.header.get_text() == "Half-planes"  # still: drawn once, not per step
+
+
+# -- dragging in the page ----------------------------------------------------------------------
+def test_page_drag_moves_the_vertex_and_answers_each_position(editor):
+    page = editor.display.widget
+    sent = []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    interp_draws = editor.interp_display.draws
+    for seq, (x, y) in enumerate([(10.0, 5.0), (10.5, 5.25), (11.0, 6.0)], start=1):
+        page._on_page_message(page, {"type": "move", "i": 1, "x": x, "y": y, "seq": seq}, [])
+        assert sent[-1][0]["seq"] == seq  # the answer the page waits for before sending more
+        assert sent[-1][1][0].startswith(b"\x89PNG")
+    assert editor.interp_display.draws == interp_draws  # the comparison waits for the release
+    page._on_page_message(
+        page, {"type": "move", "i": 1, "x": 11.25, "y": 6.5, "seq": 4, "final": True}, []
+    )
+    assert editor.fill.trace.snapped[1].tolist() == [11.25, 6.5]  # exactly where it let go
+    assert (editor.x[1].value, editor.y[1].value) == (11.25, 6.5)
+    assert editor.interp_display.draws == interp_draws + 1
+    assert editor.interp_view.trace is editor.fill.trace
+    # the page knows where the vertices are on the figure
+    x0, y0, sx, sy = page.transform
+    px, py = editor.view.ax.transData.transform(editor.xy[1])
+    assert x0 + sx * 11.25 == pytest.approx(px)
+    assert y0 + sy * 6.5 == pytest.approx(page.size[1] - py)
+    assert page.handles[1] == [11.25, 6.5]
+
+
+def test_editor_redraws_only_the_triangle(editor):
+    editor.set_vertex(1, x=9.0, y=4.0)
+    blit = editor._blits["fill"]
+    editor.set_vertex(1, x=9.5, y=4.5)
+    assert editor._blits["fill"] is blit  # same plan, cached background
+    assert not blit.draw()  # nothing left that needs a full draw
+    # the blitted picture is the figure's own drawing
+    blitted = np.asarray(editor.fig.canvas.buffer_rgba()).copy()
+    editor.fig.canvas.draw()
+    full = np.asarray(editor.fig.canvas.buffer_rgba())
+    assert (blitted != full).any(axis=2).mean() < 0.01  # up to anti-aliased edges
