@@ -605,3 +605,14 @@ def test_editor_redraws_only_the_triangle(editor):
     editor.fig.canvas.draw()
     full = np.asarray(editor.fig.canvas.buffer_rgba())
     assert (blitted != full).any(axis=2).mean() < 0.01  # up to anti-aliased edges
+
+
+def test_toggling_back_sends_the_frames_made_before_instead_of_a_poster(player):
+    frames = player.frames
+    sent = []
+    frames.send = lambda content, buffers=None: sent.append(content)
+    frames._on_page_message(frames, {"type": "group", "group": 0, "gen": frames.gen}, [])
+    player.method.value = "halfplane"
+    assert frames.poster  # a fill never shown: one full draw
+    player.method.value = "span"
+    assert frames.poster == b"" and sent[-1]["group"] == 0 and sent[-1]["gen"] == frames.gen

@@ -21,8 +21,9 @@ from pathlib import Path
 import numpy as np
 
 #: Steps per group: a key frame and KEY - 1 patches. Showing any step paints at most KEY
-#: images; a group of a 16 x 16 fill is about 40 KB.
-KEY = 16
+#: images; a group of a 16 x 16 fill is about 40 KB and takes the kernel about 0.1 s (which
+#: a toggle may have to wait for: groups are small for that reason).
+KEY = 8
 
 
 def frames_js() -> str:

@@ -55,6 +55,9 @@ class FramesWidget(anywidget.AnyWidget):
         if content.get("type") != "group" or content.get("gen") != self.gen:
             return  # a request for an earlier fill
         g = int(content["group"])
-        places, pngs = self.source(g)
+        self.send_group(g, *self.source(g))
+
+    def send_group(self, g: int, places: list, pngs: list) -> None:
+        """Send group ``g`` of the fill on show (``places`` and PNG bytes) to the page."""
         self.groups_sent += 1
         self.send({"type": "group", "group": g, "gen": self.gen, "places": places}, pngs)

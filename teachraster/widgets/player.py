@@ -184,7 +184,8 @@ class FillPlayer(Holdable):
 
     def _make_controls(self, step: int, interval: int, method: str, interpolation: str):
         self.frames = FramesWidget(self._group, interval=interval)
-        self._publish(step)
+        # made once per fill (method, interpolation, samples): toggling back costs nothing
+        self._groups, self._texts = {}, {}
         # Stepping runs in the page; these names keep the code that drives a player working.
         self.slider = self.play = self.frames
         self.first = StepButton(lambda: self._go(0))
@@ -204,6 +205,7 @@ class FillPlayer(Holdable):
         )  # fmt: skip
         for toggle in (self.method, self.interpolation):
             toggle.style.button_width = "auto"
+        self._publish(step)
         self.frames.observe(self._on_step, "value")
         self.method.observe(self._on_fill_options, "value")
         self.interpolation.observe(self._on_fill_options, "value")
@@ -227,27 +229,44 @@ class FillPlayer(Holdable):
     def _publish(self, step: int) -> None:
         """Send the fill on show to the page: its steps' texts and the picture of ``step``.
 
-        The poster (one full draw) is all the page needs to show the fill at once; the
-        groups of frames follow when the page asks for them.
+        A fill shown before (a toggle back) has the group of ``step`` made already: it goes
+        to the page at once, in place of a poster. Otherwise the poster (one full draw) is
+        all the page needs to show the fill; the groups follow when the page asks for them.
         """
-        captions, infos = step_texts(self.trace)
-        self.view.show_step(step, draw=False)
-        self.view.redraw()
-        rgba = frame_rgba(self.fig)
+        fill_key = self._fill_key()
+        if fill_key not in self._texts:
+            self._texts[fill_key] = step_texts(self.trace)
+        captions, infos = self._texts[fill_key]
+        group = step // self.frames.key
+        made = self._groups.get((fill_key, group))
+        poster, size = b"", (self.frames.frame_height, self.frames.frame_width)
+        if made is None:
+            self.view.show_step(step, draw=False)
+            self.view.redraw()
+            rgba = frame_rgba(self.fig)
+            poster, size = encode_png(rgba), rgba.shape[:2]
         with self.frames.hold_sync():
             self.frames.value = step
             self.frames.n_steps = len(self.trace)
             self.frames.captions, self.frames.infos = captions, infos
-            self.frames.frame_height, self.frames.frame_width = rgba.shape[:2]
-            self.frames.poster = encode_png(rgba)
+            self.frames.frame_height, self.frames.frame_width = size
+            self.frames.poster = poster
             self.frames.alt = f"the {self.trace.method} fill of a triangle, step by step"
             self.frames.gen += 1
+        if made is not None:
+            self.frames.send_group(group, *made)
+
+    def _fill_key(self) -> tuple[str, str, str]:
+        return (self.method.value, self.interpolation.value, self.samples.value)
 
     def _group(self, g: int):
-        """Frames of group ``g`` for the page; the view is put back on the step on show."""
-        out = render_group(self.view, g, self.frames.key)
-        self.view.show_step(self.frames.value, draw=False)
-        return out
+        """Frames of group ``g`` for the page (made once per fill); the view is put back on
+        the step on show."""
+        key = (self._fill_key(), g)
+        if key not in self._groups:
+            self._groups[key] = render_group(self.view, g, self.frames.key)
+            self.view.show_step(self.frames.value, draw=False)
+        return self._groups[key]
 
     # -- state ------------------------------------------------------------------------------
     @property

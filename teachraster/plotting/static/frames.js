@@ -129,6 +129,7 @@ export function mountFrames(el, opts) {
     for (let j = from; j <= k; j++) paint(group[j - k0]);
     s.shown = k;
     canvas.dataset.step = String(k);
+    canvas.dataset.gen = String(s.gen); // the fill on show (tests and benchmarks wait on it)
     label(k);
     return true;
   }
@@ -179,6 +180,7 @@ export function mountFrames(el, opts) {
     const frames = await decodeGroup(places, blobs);
     if (gen !== s.gen) return;
     s.groups.set(g, frames);
+    canvas.dataset.groups = String(s.groups.size); // for tests and benchmarks
     notice.textContent = "";
     if (s.inflight === g) s.inflight = null;
     if (s.priority === g) s.priority = undefined;
@@ -230,6 +232,7 @@ export function mountFrames(el, opts) {
     stop();
     s.gen = o.gen ?? s.gen + 1;
     s.groups.clear();
+    canvas.dataset.groups = "0";
     s.asked.clear();
     s.inflight = null;
     s.priority = undefined;
@@ -250,6 +253,7 @@ export function mountFrames(el, opts) {
       ctx.drawImage(bitmap, 0, 0);
       s.shown = s.want;
       canvas.dataset.step = String(s.want);
+      canvas.dataset.gen = String(s.gen);
       label(s.want);
     }
     for (const [g, group] of o.groups ?? []) {
