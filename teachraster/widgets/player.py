@@ -25,6 +25,7 @@ from .common import (
     title_html,
 )
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import comparison_edit_blit, same_or_new
 from .frames import FramesWidget
 
 METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane"), ("tiles", "tiled")]
@@ -180,7 +181,9 @@ class FillPlayer(Holdable):
             axes = comparison_axes(ifig, self.height, self.width, below=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
-            self.interp_display = FigureDisplay(ifig, self.backend)
+            # a toggle changes the images, outlines and colour bars: the rest stays cached
+            self._interp_blit = comparison_edit_blit(self.interp_view)
+            self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
 
     def _make_controls(self, step: int, interval: int, method: str, interpolation: str):
         self.frames = FramesWidget(self._group, interval=interval)
@@ -321,8 +324,14 @@ class FillPlayer(Holdable):
             self._publish(step.index)
         if self.interp_view is not None:
             self.interp_view.update(self.fill, draw=False)
-            self.interp_view.highlight(self.interpolation.value)
+            if change["owner"] is self.interpolation:
+                self.interp_view.highlight(self.interpolation.value)
+                self._interp_blit.invalidate()  # the highlight is in the background
             self.interp_display.refresh()
+
+    def _draw_interp(self) -> None:
+        self._interp_blit = same_or_new(self._interp_blit, comparison_edit_blit(self.interp_view))
+        self._interp_blit.draw()
 
     @property
     def in_use(self) -> list:
