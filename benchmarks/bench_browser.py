@@ -289,6 +289,7 @@ def bench_editor(page, tries, info):
             page.mouse.move(*at(hx - dx, hy + 0.25 * (t % 2)))
             page.wait_for_timeout(8)
         page.mouse.up()
+        hx, hy = hx - dx, hy + 0.25 * (t % 2)  # where the vertex is now: the next drag starts there
         page.wait_for_timeout(400)
         times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
         if page.evaluate(DONE):
