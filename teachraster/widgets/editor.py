@@ -180,12 +180,31 @@ class TriangleEditor(Holdable):
 
     def _draw_fill(self) -> None:
         self._blits["fill"] = same_or_new(self._blits["fill"], fill_edit_blit(self.view))
-        self._blits["fill"].draw()
+        if not self._dragging_in_page:
+            self._blits["fill"].draw()
+            return
+        # While dragging, the labels (boxed annotations: half the cost of a frame) wait for
+        # the release; the page's ring marks the vertex in hand meanwhile.
+        t = self.view.triangle
+        labels = [*t.labels, *t.edge_labels, self.view.split.label]
+        shown = [a.get_visible() for a in labels]
+        for a in labels:
+            a.set_visible(False)
+        try:
+            self._blits["fill"].draw()
+        finally:
+            for a, was in zip(labels, shown):
+                a.set_visible(was)
 
     def _draw_interp(self) -> None:
         fresh = comparison_edit_blit(self.interp_view)
         self._blits["interp"] = same_or_new(self._blits["interp"], fresh)
         self._blits["interp"].draw()
+
+    @property
+    def _dragging_in_page(self) -> bool:
+        """A drag in the page is under way (its positions are not the last)."""
+        return not getattr(getattr(self, "display", None), "final", True)
 
     def _handles(self) -> np.ndarray:
         """The vertices on show (the triangle's own until the sliders exist)."""
@@ -243,7 +262,7 @@ class TriangleEditor(Holdable):
         more to draw than the whole fill, follows at the release.
         """
         t0 = time.perf_counter()
-        dragging = not getattr(self.display, "final", True)
+        dragging = self._dragging_in_page
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)
