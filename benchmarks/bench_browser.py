@@ -299,6 +299,17 @@ def bench_editor(page, tries, info):
     return fps, firsts
 
 
+def shots(page, folder: Path) -> None:
+    """Screenshots of the player and the editor as a student sees them (1400 x 900)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for name in ("player", "editor"):
+        page.locator(f".bench-{name}").first.scroll_into_view_if_needed()
+        page.wait_for_timeout(300)
+        page.screenshot(path=str(folder / f"{name}.png"))
+        height = page.locator(f".bench-{name}").first.bounding_box()["height"]
+        print(f"{name}: {height:.0f} px high")
+
+
 def summary(label, ms, rt, target=""):
     med, top = statistics.median(ms), max(ms)
     print(f"{label:<46}{med:>8.1f}{top:>8.1f}{med / rt:>8.2f}  {target}")
@@ -308,6 +319,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="smoke run: 3 tries each")
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
+    parser.add_argument("--shots", type=Path, default=None,
+                        help="folder for screenshots of the player and the editor")  # fmt: skip
     args = parser.parse_args(argv)
     tries = 3 if args.quick else max(args.tries, 3)
     from playwright.sync_api import sync_playwright
@@ -325,6 +338,8 @@ def main(argv=None) -> int:
                 out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
                 text = out.inner_text()
                 info = json.loads(text.split("BENCH-EDITOR", 1)[1])
+                if args.shots:
+                    shots(page, args.shots)
                 rt, fig = bench_baselines(page, tries)
                 step, drag_fps, play_fps, toggles = bench_player(page, tries)
                 editor_fps, editor_first = bench_editor(page, max(2, tries // 4), info)

@@ -579,6 +579,7 @@ def test_page_drag_moves_the_vertex_and_answers_each_position(editor):
         assert sent[-1][0]["seq"] == seq  # the answer the page waits for before sending more
         assert sent[-1][1][0].startswith(b"\x89PNG")
     assert editor.interp_display.draws == interp_draws  # the comparison waits for the release
+    assert editor.view.triangle.labels[0].get_visible()  # hidden for the drag's frames only
     page._on_page_message(
         page, {"type": "move", "i": 1, "x": 11.25, "y": 6.5, "seq": 4, "final": True}, []
     )
