@@ -97,10 +97,13 @@ ARM = """([target, events, watch, attr]) => {
 }"""
 COUNT = """([watch, attr]) => {
   const el = document.querySelector(watch);
-  const c = window.__count = { n: 0, t: [], last: el.getAttribute(attr) };
+  const c = window.__count = { n: 0, t: [], k: [], rt: [], last: el.getAttribute(attr) };
   c.ob = new MutationObserver(() => {
     const now = el.getAttribute(attr);
-    if (now !== c.last) { c.n += 1; c.t.push(performance.now()); c.last = now; }
+    if (now !== c.last) {
+      c.n += 1; c.t.push(performance.now()); c.last = now;
+      c.k.push(Number(el.dataset.kernelMs)); c.rt.push(Number(el.dataset.roundTripMs));
+    }
   });
   c.ob.observe(el, { attributes: true });
 }"""
@@ -273,7 +276,7 @@ def bench_editor(page, tries, info):
     def at(x, y):
         return box["x"] + (x0 + sx * x) * scale, box["y"] + (y0 + sy * y) * scale
 
-    fps, firsts = [], []
+    fps, firsts, kernel, trips = [], [], [], []
     hx, hy = info["handles"][1]
     for t in range(tries):
         page.evaluate(COUNT, [".bench-editor .tr-drag img", "data-frames"])
@@ -292,10 +295,16 @@ def bench_editor(page, tries, info):
         hx, hy = hx - dx, hy + 0.25 * (t % 2)  # where the vertex is now: the next drag starts there
         page.wait_for_timeout(400)
         times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
+        kernel += page.evaluate("() => window.__count.k.filter(x => x > 0)")
+        trips += page.evaluate("() => window.__count.rt.filter(x => x > 0)")
         if page.evaluate(DONE):
             firsts.append(page.evaluate(DT))
         during = [x for x in times if x <= times[0] + 2000] if times else []
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
+    if kernel:
+        print(f"editor drag: kernel ms per position median {statistics.median(kernel):.0f}, "
+              f"position -> picture round trip median {statistics.median(trips):.0f} ms, "
+              f"{len(kernel)} frames")  # fmt: skip
     return fps, firsts
 
 

@@ -13,6 +13,7 @@ keep the pixel grid, tick labels, centres and legend in a cached background
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 import anywidget
@@ -76,6 +77,7 @@ class DragFigure(anywidget.AnyWidget):
         self.on_move = on_move
         self.moves = 0
         self._seq = 0
+        self._t0 = 0.0
         self.on_msg(self._on_page_message)
 
     def _on_page_message(self, _widget, content, _buffers) -> None:
@@ -83,6 +85,7 @@ class DragFigure(anywidget.AnyWidget):
             return
         self.moves += 1
         self._seq = int(content.get("seq", 0))
+        self._t0 = time.perf_counter()
         final = bool(content.get("final"))
         self.on_move(int(content["i"]), float(content["x"]), float(content["y"]), final)
 
@@ -103,7 +106,11 @@ class DragFigure(anywidget.AnyWidget):
             self.handles = [[float(x), float(y)] for x, y in handles]
             if final:
                 self.poster = png
-        self.send({"type": "frame", "seq": self._seq, "handles": self.handles}, [png])
+        # kernel_ms: from the position's arrival to this answer (for benchmarks)
+        kernel_ms = (time.perf_counter() - self._t0) * 1e3 if self._t0 else 0.0
+        self._t0 = 0.0
+        self.send({"type": "frame", "seq": self._seq, "handles": self.handles,
+                   "kernel_ms": kernel_ms}, [png])  # fmt: skip
 
 
 def same_or_new(old: LayeredBlit, new: LayeredBlit) -> LayeredBlit:

@@ -17,6 +17,23 @@ from .common import Holdable, close_tree, fill_axes, labelled, style_context, ti
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 from .dragging import PageDisplay, comparison_edit_blit, fill_edit_blit, same_or_new
 
+#: Step of the x and y sliders: the rasteriser's snapping grid (8 sub-pixel bits).
+GRID = 1 / 256
+
+
+def on_grid(value: float, direction: int = 0) -> float:
+    """``value`` on the 1/256 px grid: nearest, or rounded down (-1) or up (1).
+
+    >>> on_grid(10.6123), on_grid(-1.3, -1)
+    (10.61328125, -1.30078125)
+    """
+    scaled = float(value) / GRID
+    whole = (
+        round(scaled) if direction == 0 else (math.floor if direction < 0 else math.ceil)(scaled)
+    )
+    return whole * GRID
+
+
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
 #: ratios, which is what perspective depends on).
 W_RANGE = (0.2, 10.0)
@@ -115,12 +132,12 @@ class TriangleEditor(Holdable):
         layout = widgets.Layout(width="320px")
         self.x, self.y, self.w, columns = [], [], [], []
         for i in range(3):
-            x = widgets.FloatSlider(value=xy[i, 0], min=min(0.0, xy[i, 0]),
-                                    max=max(float(width), xy[i, 0]), step=0.05,
+            x = widgets.FloatSlider(value=on_grid(xy[i, 0]), min=on_grid(min(0.0, xy[i, 0]), -1),
+                                    max=on_grid(max(float(width), xy[i, 0]), 1), step=GRID,
                                     description=f"x{i} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
-            y = widgets.FloatSlider(value=xy[i, 1], min=min(0.0, xy[i, 1]),
-                                    max=max(float(height), xy[i, 1]), step=0.05,
+            y = widgets.FloatSlider(value=on_grid(xy[i, 1]), min=on_grid(min(0.0, xy[i, 1]), -1),
+                                    max=on_grid(max(float(height), xy[i, 1]), 1), step=GRID,
                                     description=f"y{i} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
             lo, hi = math.log10(min(W_RANGE[0], w[i])), math.log10(max(W_RANGE[1], w[i]))
@@ -236,8 +253,12 @@ class TriangleEditor(Holdable):
                    w: float | None = None) -> None:  # fmt: skip
         """Move vertex ``i`` (any of x, y, w) and re-render once.
 
-        Values beyond a slider's range are clipped to it (as a slider does).
+        Values beyond a slider's range are clipped to it (as a slider does); x and y are
+        taken on the 1/256 px grid, the rasteriser's snapping grid and the sliders' step
+        (off it, the page's slider would round the value and send it back: a second
+        render, and a vertex a little off where the pointer let go).
         """
+        x, y = (None if v is None else on_grid(v) for v in (x, y))
         with self._holding():
             for slider, value in ((self.x[i], x), (self.y[i], y), (self.w[i], w)):
                 if value is not None:

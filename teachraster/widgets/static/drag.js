@@ -138,6 +138,8 @@ function render({ model, el }) {
     showPng(buffers[0]);
     notice.textContent = "";
     img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
+    img.dataset.kernelMs = String(Math.round(msg.kernel_ms ?? 0)); // for benchmarks
+    if (s.since) img.dataset.roundTripMs = String(Math.round(performance.now() - s.since));
     if (msg.seq >= s.inflight) {
       s.inflight = 0;
       pump();
