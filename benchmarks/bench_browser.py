@@ -289,8 +289,9 @@ def bench_editor(page, tries, info):
         while time.perf_counter() - start < 2.0:
             k += 1  # 1 grid pixel per move, back and forth over 4 pixels
             dx = (k % 8) if (k % 8) < 4 else 8 - (k % 8)
-            page.mouse.move(*at(hx - dx, hy + 0.25 * (t % 2)))
-            page.wait_for_timeout(8)
+            # several pointer events per call, as a real drag sends (Playwright's calls alone
+            # come too slowly here): the page coalesces them
+            page.mouse.move(*at(hx - dx, hy + 0.25 * (t % 2)), steps=4)
         page.mouse.up()
         hx, hy = hx - dx, hy + 0.25 * (t % 2)  # where the vertex is now: the next drag starts there
         page.wait_for_timeout(400)
