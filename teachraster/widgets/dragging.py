@@ -2,9 +2,10 @@
 
 The page shows the figure as an ``<img>`` and draws the pointer feedback itself (a ring at
 the pointer); the kernel hears of positions through custom messages with their own flow
-control: one position in flight at a time, always the latest (positions that arrive while
-the kernel renders are coalesced, never queued), and the release position always, so the
-drag ends exactly where the pointer let go. Each answer is the re-rendered figure.
+control: at most two positions unanswered (one rendered, one waiting, so the kernel does
+not idle for a round trip), each the latest when sent (positions that arrive meanwhile are
+coalesced, never queued), and the release position always, so the drag ends exactly where
+the pointer let go. Each answer is the re-rendered figure.
 
 For the kernel to keep up, the editor redraws only what a move changes: the plans below
 keep the pixel grid, tick labels, centres and legend in a cached background

@@ -1,10 +1,14 @@
 // teachraster: drag the points of a kernel-drawn figure, in the page.
 //
 // The figure is an <img>; a canvas over it draws the pointer feedback (a ring where the
-// pointer holds a point) at once. Positions go to the kernel as custom messages, one in
-// flight at a time: while the kernel renders, newer positions replace older ones, so the
-// kernel always works on the latest and never on a queue. The release is always sent, so
-// the drag ends exactly where the pointer let go. Each answer carries the new picture.
+// pointer holds a point) at once. Positions go to the kernel as custom messages with their
+// own flow control: at most IN_FLIGHT unanswered (one being rendered, one waiting, so the
+// kernel never idles for a round trip), each the latest position when sent; positions that
+// come meanwhile replace each other, so the kernel never works through a queue. The release
+// is always sent, so the drag ends exactly where the pointer let go. Each answer carries
+// the new picture.
+
+const IN_FLIGHT = 2;
 
 const CSS = `
 .tr-drag { position: relative; display: inline-block; max-width: 100%; touch-action: none; }
@@ -56,7 +60,8 @@ function render({ model, el }) {
     return [((e.clientX - r.left) * w) / r.width, ((e.clientY - r.top) * h) / r.height];
   }
 
-  const s = { dragging: null, latest: null, sent: null, inflight: 0, seq: 0, since: 0 };
+  // pending: seq -> time sent, of the positions not answered yet
+  const s = { dragging: null, latest: null, sent: null, pending: new Map(), seq: 0 };
 
   function feedback(px) {
     const [w, h] = model.get("size");
@@ -77,19 +82,20 @@ function render({ model, el }) {
     s.seq += 1;
     s.sent = s.latest;
     if (!final) {
-      s.inflight = s.seq;
-      s.since = performance.now();
+      s.pending.set(s.seq, performance.now());
       setTimeout(() => checkAlive(s.seq), 6000);
     }
     model.send({ type: "move", i: s.dragging, x, y, seq: s.seq, final });
   }
 
   function pump() {
-    if (s.dragging !== null && s.latest && !s.inflight && s.latest !== s.sent) send(false);
+    if (s.dragging !== null && s.latest && s.pending.size < IN_FLIGHT && s.latest !== s.sent) {
+      send(false);
+    }
   }
 
   function checkAlive(seq) {
-    if (s.inflight === seq) {
+    if (s.pending.has(seq)) {
       notice.textContent =
         "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
         "the editor back.";
@@ -139,11 +145,10 @@ function render({ model, el }) {
     notice.textContent = "";
     img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
     img.dataset.kernelMs = String(Math.round(msg.kernel_ms ?? 0)); // for benchmarks
-    if (s.since) img.dataset.roundTripMs = String(Math.round(performance.now() - s.since));
-    if (msg.seq >= s.inflight) {
-      s.inflight = 0;
-      pump();
-    }
+    const sent = s.pending.get(msg.seq);
+    if (sent) img.dataset.roundTripMs = String(Math.round(performance.now() - sent));
+    for (const seq of [...s.pending.keys()]) if (seq <= msg.seq) s.pending.delete(seq);
+    pump();
   });
   const poster = model.get("poster");
   if (poster && poster.byteLength) showPng(poster);
