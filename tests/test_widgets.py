@@ -302,6 +302,10 @@ def test_ipympl_backend_puts_the_canvas_in_the_box():
     from ipympl.backend_nbagg import Canvas
 
     p = FillPlayer(triangle(), W, H, backend="ipympl")
+    from teachraster.plotting.style import COLUMN_WIDTH_PX
+
+    ifig = p.interp_view.fig
+    assert ifig.get_figwidth() * ifig.dpi <= COLUMN_WIDTH_PX + 1e-6  # fits the column
     # the steps are page frames; the interpolation figure is the live canvas
     assert isinstance(p.interp_view.fig.canvas, Canvas)
     assert any(c is p.interp_view.fig.canvas for c in walk(p.widget))

@@ -152,6 +152,7 @@ class FigureDisplay:
         self.draw = draw
         self.draws = 0
         if mode == "ipympl":
+            fit_column(fig)
             self.widget = fig.canvas
         else:
             width = int(round(fig.get_figwidth() * fig.dpi))
@@ -183,6 +184,19 @@ class FigureDisplay:
     def close(self) -> None:
         """Release the widget (and the browser-side canvas)."""
         self.widget.close()
+
+
+def fit_column(fig: Figure) -> None:
+    """Lower the figure's dpi so that it is at most as wide as the notebook column.
+
+    An ipympl canvas, unlike an image, does not scale down: a figure wider than the column
+    is cut off (its legend, its colour bars).
+    """
+    from ..plotting.style import COLUMN_WIDTH_PX
+
+    width = fig.get_figwidth() * fig.dpi
+    if width > COLUMN_WIDTH_PX:
+        fig.set_dpi(fig.dpi * COLUMN_WIDTH_PX / width)
 
 
 def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,
