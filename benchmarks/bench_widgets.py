@@ -97,18 +97,23 @@ def verdict(ms: float, target: float) -> str:
 
 
 def bench_steps(method: str, repeat: int) -> tuple[float, float, int]:
+    """Kernel ms per step of making the page's frames (a group drawn and encoded, per step).
+
+    Stepping itself runs in the page (frames.js); what the kernel does per step is draw it
+    once, blitted, and encode its patch. "drawn" and "+ PNG" are the same figure here.
+    """
     player = FillPlayer(TRI, SIZE, SIZE, method=method, backend="image")
-    clock = DrawClock(player.display)
-    n = player.slider.max + 1
-    # every step kind (set-up, work, interpolation), spread over the whole fill
-    values = [(i * 7 + 1) % n for i in range(repeat + 1)]
-
-    def set_step(k):
-        player.slider.value = k if k != player.slider.value else (k + 1) % n
-
-    drawn, total = time_changes(set_step, values, clock)
+    n, key = player.slider.max + 1, player.frames.key
+    groups = list(range(-(-n // key)))
+    per_step = []
+    for i in range(min(repeat, len(groups)) + 1):
+        g = groups[(i * 5) % len(groups)]
+        t0 = time.perf_counter()
+        _, pngs = player._group(g)
+        per_step.append((time.perf_counter() - t0) * 1e3 / len(pngs))
     player.close()
-    return statistics.median(drawn[1:]), statistics.median(total[1:]), n
+    ms = statistics.median(per_step[1:] or per_step)
+    return ms, ms, n
 
 
 def bench_vertex(repeat: int) -> tuple[float, float]:
@@ -159,20 +164,13 @@ def tick_player(backend: str):
 def bench_tick_ratio(jumps: int = TICK_JUMPS, *, path: str = "blit", seed: int = 8) -> dict:
     """Median ms of a random slider jump and of the reference draw, timed in turn.
 
-    ``path``: ``"blit"`` (the player as it is), ``"full"`` (a full Agg redraw per tick, as
-    before blitting) or ``"ipympl"`` (ipympl canvas: blit plus the PNG of the changed pixels
-    it sends to the browser, caught here instead of sent).
+    ``path``: ``"blit"`` (the player as it is: the step drawn blitted and its frame encoded
+    whole, what the kernel does for a step the page has no frame of yet) or ``"full"`` (a
+    full Agg redraw per tick, as before blitting).
     """
-    player = tick_player("ipympl" if path == "ipympl" else "image")
-    canvas = player.fig.canvas
-    if path == "ipympl":
-        # As once a browser shows the canvas: ipympl then stops re-encoding every frame as a
-        # data URL, and sends each frame's changed pixels, encoded in refresh (canvas.blit).
-        canvas.syncing_data_url = False
-        sent = []
-        canvas.send_binary = sent.append
-    if path == "full":
-        player.display.draw = None  # FigureDisplay then calls fig.canvas.draw()
+    from teachraster.plotting.frames import encode_png, frame_rgba
+
+    player = tick_player("image")
     ref = reference_figure()
     ref.canvas.draw()  # warm-up of both
     rng = random.Random(seed)
@@ -184,9 +182,12 @@ def bench_tick_ratio(jumps: int = TICK_JUMPS, *, path: str = "blit", seed: int =
         if k == player.slider.value:
             k = (k + 1) % n
         t0 = time.perf_counter()
+        # a jump the page has no frame for: the kernel draws the step and encodes it whole
         player.slider.value = k
-        # ipympl: the frame sent for this tick (None when none was sent)
-        png = (sent.pop() if sent else None) if path == "ipympl" else player.display.widget.value
+        if path == "full":
+            player.view.blit.invalidate()  # a full redraw, as before blitting
+        player.view.redraw()
+        png = encode_png(frame_rgba(player.fig))
         t1 = time.perf_counter()
         ref.canvas.draw()
         t2 = time.perf_counter()
@@ -205,13 +206,8 @@ def print_tick_ratios(jumps: int) -> None:
     print(f"\ntick ratio: median of {jumps} random slider jumps, {TICK_SIZE}x{TICK_SIZE} "
           "half-plane FillPlayer / full Agg draw of a 640x480 figure with one 128x128 image")  # fmt: skip
     print(f"{'path':<44}{'tick':>10}{'reference':>11}{'ratio':>8}  target")
-    paths = [("blit", "image display: blit + fast PNG"),
-             ("full", "image display: full redraw + fast PNG"),
-             ("ipympl", "ipympl canvas: blit + diff PNG")]  # fmt: skip
-    try:
-        import ipympl  # noqa: F401
-    except ImportError:
-        paths = paths[:2]
+    paths = [("blit", "page frame: blit + fast PNG"),
+             ("full", "page frame: full redraw + fast PNG")]  # fmt: skip
     for path, label in paths:
         r = bench_tick_ratio(jumps, path=path)
         note = f"<= {TICK_TARGET} {verdict(r['ratio'], TICK_TARGET + 1e-12)}"

@@ -13,7 +13,6 @@ from types import SimpleNamespace  # noqa: E402
 import ipywidgets as widgets  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
-from ipywidgets.widgets import widget_link  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster.widgets import (  # noqa: E402
@@ -51,6 +50,22 @@ def shown_coverage(view) -> np.ndarray:
     return np.asarray(view.coverage.image.get_array()).astype(bool)
 
 
+def page_picture(player, k: int) -> np.ndarray:
+    """What the page paints for step k: its group's key frame, then the patches up to k."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    key = player.frames.key
+    places, pngs = player._group(k // key)
+    picture = np.asarray(Image.open(BytesIO(pngs[0])).convert("RGBA")).copy()
+    for (x, y), png in list(zip(places, pngs))[1 : k % key + 1]:
+        if png:
+            patch = np.asarray(Image.open(BytesIO(png)).convert("RGBA"))
+            picture[y : y + patch.shape[0], x : x + patch.shape[1]] = patch
+    return picture
+
+
 def work_kinds(trace) -> set:
     return {s.kind for s in trace} - {"snap", "winding", "bbox", "sort", "split", "interpolate"}
 
@@ -67,19 +82,48 @@ def test_step_slider_sets_caption_and_coverage(method):
         assert player.step == k
         assert player.caption_text == trace.caption(k)
         assert np.array_equal(shown_coverage(player.view), trace.coverage_at(k))
-        png = bytes(player.display.widget.value)
-        assert png.startswith(b"\x89PNG")
-        pngs.add(png)
+        pngs.add(page_picture(player, k).tobytes())
     assert len(pngs) > 1  # the picture itself changes, not just the artists
     player.close()
 
 
-def test_caption_widget_escapes_html(player):
+@pytest.mark.parametrize("method", ["span", "halfplane"])
+def test_the_page_paints_exactly_the_step_the_view_draws(method):
+    """Key frame + patches (what frames.js paints) == the view's own drawing of that step."""
+    player = FillPlayer(triangle(), W, H, method=method, backend="image")
+    for k in sorted({0, 1, 15, 16, 17, len(player.trace) // 2, len(player.trace) - 1}):
+        picture = page_picture(player, k)
+        player.view.show_step(k, draw=False)
+        player.view.blit.invalidate()
+        player.view.redraw()
+        np.testing.assert_array_equal(picture, np.asarray(player.fig.canvas.buffer_rgba()))
+    player.close()
+
+
+def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     player.method.value = "halfplane"
-    k = next(s.index for s in player.trace if "<" in s.caption or ">" in s.caption)
-    player.slider.value = k
-    assert "<" not in player.caption.value.replace("&lt;", "")
-    assert player.caption_text == player.trace.caption(k)
+    frames = player.frames
+    assert frames.captions == [s.caption for s in player.trace]  # text: the page never parses it
+    assert frames.infos[0] == f"of {len(player.trace) - 1} (snap)"
+    sent = []
+    frames.send = lambda content, buffers=None: sent.append((content, buffers))
+    frames._on_page_message(frames, {"type": "group", "group": 1, "gen": frames.gen}, [])
+    frames._on_page_message(frames, {"type": "group", "group": 0, "gen": frames.gen - 1}, [])
+    assert len(sent) == 1  # a request for an earlier fill is dropped
+    content, pngs = sent[0]
+    assert content["group"] == 1 and len(pngs) == len(content["places"]) == frames.key
+    assert pngs[0].startswith(b"\x89PNG")  # the key frame
+    assert player.view.step == frames.value  # rendering a group leaves the view in place
+
+
+def test_static_fallback_is_a_poster_or_the_whole_offline_player(player, monkeypatch):
+    bundle = player._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" in bundle
+    assert "Run this cell" in bundle["text/html"] and "data:image/png" in bundle["text/html"]
+    monkeypatch.setenv("TEACHRASTER_STATIC_PAGES", "1")
+    page = player._repr_mimebundle_()["text/html"]
+    assert "mountStatic(" in page and '<script type="module">' in page
+    assert "http" not in page.split("<script", 1)[1].replace("http://www.w3.org", "")
 
 
 def test_step_buttons_move_the_slider(player):
@@ -144,20 +188,22 @@ def test_interpolation_view_follows_the_method_toggle(player):
     assert player.interp_view.trace is player.trace is not before
 
 
-def test_play_is_linked_to_the_slider_in_the_browser(player):
-    link = player.link
-    # jslink (not link): the Play drives the slider in the browser, no kernel round trip
-    assert isinstance(link, widget_link.Link)
-    assert link.source == (player.play, "value")
-    assert link.target == (player.slider, "value")
-    assert (player.play.min, player.play.max) == (player.slider.min, player.slider.max)
-    player.speed.value = 150
-    assert player.play.interval == 150
+def test_play_speed_is_set_from_code(player):
+    assert player.interval == player.frames.interval == 400
+    player.interval = 150
+    assert player.frames.interval == 150
+    fast = FillPlayer(triangle(), W, H, backend="image", interval=20)
+    assert fast.frames.interval == 20
+    with pytest.raises(ValueError, match="interval"):
+        fast.interval = 0
+    fast.close()
 
 
 def test_player_without_attributes_has_no_interpolation_view():
     p = FillPlayer(tr.Triangle(XY), W, H, backend="image")
     assert p.interp_view is None
+    # it would change nothing on show: not offered
+    assert not any(c is p.interpolation for c in walk(p.widget))
     p.interpolation.value = "affine"
     p.slider.value = p.slider.max
     assert "no attributes" in p.caption_text
@@ -204,18 +250,19 @@ def test_stepping_updates_artists_in_place(player):
     assert [len(a.get_children()) for a in ifig.axes] == n_interp
 
 
-def test_player_widget_holds_the_controls_and_displays(player):
-    def walk(w):
-        yield w
-        for c in getattr(w, "children", ()):
-            yield from walk(c)
+def walk(w):
+    yield w
+    for c in getattr(w, "children", ()):
+        yield from walk(c)
 
+
+def test_player_widget_holds_the_controls_and_displays(player):
     inside = list(walk(player.widget))
-    for control in (player.play, player.slider, player.prev, player.next, player.speed,
-                    player.method, player.interpolation, player.caption,
-                    player.display.widget):  # fmt: skip
+    for control in (player.frames, player.method, player.interpolation, player.samples,
+                    player.interp_display.widget):  # fmt: skip
         assert any(control is w for w in inside)
-    assert isinstance(player.display.widget, widgets.Image)
+    assert player.slider is player.play is player.frames
+    assert isinstance(player.interp_display.widget, widgets.Image)
     assert player.fig is player.view.fig
     assert "application/vnd.jupyter.widget-view+json" in player._repr_mimebundle_()
 
@@ -255,8 +302,13 @@ def test_ipympl_backend_puts_the_canvas_in_the_box():
     from ipympl.backend_nbagg import Canvas
 
     p = FillPlayer(triangle(), W, H, backend="ipympl")
-    assert isinstance(p.fig.canvas, Canvas)
-    assert any(c is p.fig.canvas for c in p.widget.children)
+    from teachraster.plotting.style import COLUMN_WIDTH_PX
+
+    ifig = p.interp_view.fig
+    assert ifig.get_figwidth() * ifig.dpi <= COLUMN_WIDTH_PX + 1e-6  # fits the column
+    # the steps are page frames; the interpolation figure is the live canvas
+    assert isinstance(p.interp_view.fig.canvas, Canvas)
+    assert any(c is p.interp_view.fig.canvas for c in walk(p.widget))
     p.slider.value = 4
     assert np.array_equal(shown_coverage(p.view), p.trace.coverage_at(4))
     p.close()
@@ -415,7 +467,7 @@ def test_far_away_vertices_render_without_their_labels():
         renderer = view.fig.canvas.get_renderer()
         drawn = [label._check_xy(renderer) for label in view.triangle.labels]
         assert drawn == [False, False, False]
-    assert player.display.widget.value and editor.interp_display.widget.value
+    assert player.frames.poster and editor.interp_display.widget.value
     player.close()
     editor.close()
 
@@ -436,9 +488,8 @@ def test_span_player_labels_vertices_in_span_order():
 def test_fast_png_decodes_to_the_figure():
     from PIL import Image
 
-    p = FillPlayer(triangle(), W, H, method="halfplane", backend="image")
-    p.slider.value = 40
-    png = bytes(p.display.widget.value)
+    p = FillPlayer(triangle(), W, H, method="halfplane", backend="image", step=40)
+    png = bytes(p.frames.poster)
     shown = np.asarray(Image.open(__import__("io").BytesIO(png)).convert("RGBA"))
     np.testing.assert_array_equal(shown, np.asarray(p.fig.canvas.buffer_rgba()))
     with pytest.raises(ValueError, match="RGBA"):
@@ -448,27 +499,24 @@ def test_fast_png_decodes_to_the_figure():
 
 @pytest.mark.parametrize("method", ["span", "halfplane"])
 def test_play_shows_every_step(method):
-    """Each step the Play reaches is drawn (blitted) and displayed; every work step (a raster
-    line, a pixel) changes the picture. (Set-up steps such as snap -> winding differ only in
-    the caption and the step label.)"""
+    """Every step has its frame in the page; every work step (a raster line, a pixel)
+    changes the picture. (Set-up steps such as snap -> winding differ only in the caption
+    and the step label.)"""
     p = FillPlayer(triangle(), W, H, method=method, backend="image")
     trace = p.trace
-    draws, last = p.display.draws, bytes(p.display.widget.value)
+    key = p.frames.key
     n = min(p.slider.max, trace.first_work_step + 40)
+    groups = [p._group(g) for g in range(n // key + 1)]
     for k in range(1, n + 1):
-        p.slider.value = k  # what the browser's Play does, one value at a time
-        png = bytes(p.display.widget.value)
+        pngs = groups[k // key][1]
         if trace.first_work_step <= k < trace.interpolation_step:
-            assert png != last, k
-        assert p.caption_text == trace.caption(k)
-        last = png
-    assert p.display.draws == draws + n
+            assert k % key == 0 or pngs[k % key], k  # a patch: the picture changed
     p.close()
 
 
 def test_player_blits_its_steps_and_keeps_its_fills(player):
-    assert player.display.draw == player.view.redraw
-    player.slider.value = 3
+    player._group(0)
+    player.view.show_step(3, draw=False)
     assert not player.view.redraw()  # the step was blitted: nothing left to draw fully
     span = player.fill
     player.method.value = "halfplane"
@@ -484,11 +532,24 @@ def test_ipympl_sends_one_fast_frame_per_step():
     from matplotlib.backends.backend_webagg_core import FigureCanvasWebAggCore
     from PIL import Image
 
-    p = FillPlayer(triangle(), W, H, method="halfplane", backend="ipympl")
-    canvas = p.fig.canvas
+    from teachraster.plotting import FillView
+    from teachraster.widgets.common import fill_axes
+
+    fig = display.new_figure((8, 6), "ipympl")
+    fill = tr.rasterize(triangle(), W, H, method="halfplane", trace=True)
+    view = FillView(fill, ax=fill_axes(fig, W, H), step=0, caption=False)
+    shown = display.FigureDisplay(fig, "ipympl", draw=view.redraw)
+    canvas = fig.canvas
     canvas.syncing_data_url = False  # as once a browser shows it
     sent = []
     canvas.send_binary = sent.append
+
+    class Step:  # what a widget does at each step
+        def __setattr__(self, name, k):
+            view.show_step(k, draw=False)
+            shown.refresh()
+
+    p = SimpleNamespace(slider=Step(), close=shown.close)
     for k in range(1, 6):
         p.slider.value = k
         assert len(sent) == k  # each step reaches the browser
@@ -504,8 +565,59 @@ def test_ipympl_sends_one_fast_frame_per_step():
 
 def test_step_label_follows_the_slider(player):
     player.slider.value = 0
-    assert player.step_info.value == f"of {len(player.trace) - 1} (snap)"
+    assert player.step_info == f"of {len(player.trace) - 1} (snap)"
     player.method.value = "halfplane"
     player.slider.value = player.trace.first_work_step
-    assert player.step_info.value == f"of {len(player.trace) - 1} (pixel)"
+    assert player.step_info == f"of {len(player.trace) - 1} (pixel)"
     assert player.view.header.get_text() == "Half-planes"  # still: drawn once, not per step
+
+
+# -- dragging in the page ----------------------------------------------------------------------
+def test_page_drag_moves_the_vertex_and_answers_each_position(editor):
+    page = editor.display.widget
+    sent = []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    interp_draws = editor.interp_display.draws
+    for seq, (x, y) in enumerate([(10.0, 5.0), (10.5, 5.25), (11.0, 6.0)], start=1):
+        page._on_page_message(page, {"type": "move", "i": 1, "x": x, "y": y, "seq": seq}, [])
+        assert sent[-1][0]["seq"] == seq  # the answer the page waits for before sending more
+        assert sent[-1][1][0].startswith(b"\x89PNG")
+    assert editor.interp_display.draws == interp_draws  # the comparison waits for the release
+    assert editor.view.triangle.labels[0].get_visible()  # hidden for the drag's frames only
+    page._on_page_message(
+        page, {"type": "move", "i": 1, "x": 11.25, "y": 6.5, "seq": 4, "final": True}, []
+    )
+    assert editor.fill.trace.snapped[1].tolist() == [11.25, 6.5]  # exactly where it let go
+    assert (editor.x[1].value, editor.y[1].value) == (11.25, 6.5)
+    assert editor.interp_display.draws == interp_draws + 1
+    assert editor.interp_view.trace is editor.fill.trace
+    # the page knows where the vertices are on the figure
+    x0, y0, sx, sy = page.transform
+    px, py = editor.view.ax.transData.transform(editor.xy[1])
+    assert x0 + sx * 11.25 == pytest.approx(px)
+    assert y0 + sy * 6.5 == pytest.approx(page.size[1] - py)
+    assert page.handles[1] == [11.25, 6.5]
+
+
+def test_editor_redraws_only_the_triangle(editor):
+    editor.set_vertex(1, x=9.0, y=4.0)
+    blit = editor._blits["fill"]
+    editor.set_vertex(1, x=9.5, y=4.5)
+    assert editor._blits["fill"] is blit  # same plan, cached background
+    assert not blit.draw()  # nothing left that needs a full draw
+    # the blitted picture is the figure's own drawing
+    blitted = np.asarray(editor.fig.canvas.buffer_rgba()).copy()
+    editor.fig.canvas.draw()
+    full = np.asarray(editor.fig.canvas.buffer_rgba())
+    assert (blitted != full).any(axis=2).mean() < 0.01  # up to anti-aliased edges
+
+
+def test_toggling_back_sends_the_frames_made_before_instead_of_a_poster(player):
+    frames = player.frames
+    sent = []
+    frames.send = lambda content, buffers=None: sent.append(content)
+    frames._on_page_message(frames, {"type": "group", "group": 0, "gen": frames.gen}, [])
+    player.method.value = "halfplane"
+    assert frames.poster  # a fill never shown: one full draw
+    player.method.value = "span"
+    assert frames.poster == b"" and sent[-1]["group"] == 0 and sent[-1]["gen"] == frames.gen

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
-#: Output formats by suffix: still image or animation.
-STILL, ANIMATED = (".png",), (".gif", ".mp4")
+#: Output formats by suffix: still image, animation, or a page that steps (fill only).
+STILL, ANIMATED, PAGE = (".png",), (".gif", ".mp4"), (".html",)
 #: Default resolutions: PNG for slides (crisp when scaled), animations small enough to embed.
 PNG_DPI, ANIMATION_DPI = 150, 80
 
@@ -112,14 +112,16 @@ def positive(kind, *, zero: bool = False):
     return parse
 
 
-def output_type(animated: bool):
-    """The ``-o`` type: a file whose suffix picks the format (.png; .gif, .mp4 if animated)."""
+def output_type(animated: bool, page: bool = False):
+    """The ``-o`` type: a file whose suffix picks the format (.png; .gif, .mp4 if animated;
+    .html if ``page``)."""
 
     def parse_output(text: str) -> Path:
         path = Path(text)
         suffix = path.suffix.lower()
-        if suffix not in (STILL + ANIMATED if animated else STILL):
+        if suffix not in (STILL + ANIMATED * animated + PAGE * page):
             formats = ".png (still), .gif or .mp4 (animation)" if animated else ".png"
+            formats += ", .html (a page that steps, offline)" if page else ""
             raise argparse.ArgumentTypeError(
                 f"the suffix picks the format: {formats}; got {text!r}"
             )

@@ -8,6 +8,9 @@ from . import course
 from .arguments import parse_attr
 from .export import (
     animate,
+    check_export_time,
+    check_fill_size,
+    export_notebook_html,
     fill_from_args,
     format_values,
     is_animation,
@@ -15,6 +18,7 @@ from .export import (
     pyplot,
     say,
     triangle_from_args,
+    write_fill_page,
 )
 
 
@@ -25,10 +29,15 @@ def cmd_fill(args, parser) -> int:
 
     if args.step is not None and is_animation(args):
         parser.error("argument --step: a .gif/.mp4 animates every step; --step is for a .png")
+    check_fill_size(args, parser)
     fill = fill_from_args(args, triangle_from_args(args))
     n = len(fill.trace)
     if args.step is not None and not -n <= args.step < n:
         parser.error(f"argument --step: this fill has steps 0..{n - 1}, got {args.step}")
+    if args.output.suffix.lower() == ".html":
+        steps = write_fill_page(args, fill)
+        say(f"wrote {args.output}: {steps} steps that step and play offline in a browser")
+        return 0
     plt = pyplot()
     with use_style(args.style):
         view = FillView(fill, step=0 if is_animation(args) else args.step)
@@ -37,6 +46,7 @@ def cmd_fill(args, parser) -> int:
                 steps = list(range(0, n, args.every))
                 if steps[-1] != n - 1:
                     steps.append(n - 1)  # always end on the finished fill
+                check_export_time(view, steps, args, parser)
                 count = animate(
                     view.fig,
                     args.output,
@@ -349,8 +359,19 @@ def cmd_list(args, parser) -> int:
     return 0
 
 
+def cmd_html(args, parser) -> int:
+    """Execute a notebook and write it as one HTML page whose fill players still step."""
+    if not args.notebook.is_file():
+        parser.error(f"argument NOTEBOOK: no file {str(args.notebook)!r}")
+    fallbacks = export_notebook_html(args.notebook, args.output, timeout=args.timeout,
+                                     quiet=args.quiet)  # fmt: skip
+    say(f"wrote {args.output}: {fallbacks} widget(s) shown by their offline HTML")
+    return 0
+
+
 COMMANDS = {
     "fill": cmd_fill,
+    "html": cmd_html,
     "compare": cmd_compare,
     "scene": cmd_scene,
     "case": cmd_case,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import shutil
 import sys
 from pathlib import Path
@@ -134,3 +135,113 @@ def format_values(values) -> str:
 
 def say(text: str) -> None:
     print(text, file=sys.stdout)
+
+
+# -- pages: a fill that steps offline, a lesson exported to HTML ------------------------------
+#: Pixels of the largest grid a fill export draws: every pixel has a centre marker and a cell
+#: of its own, and beyond this a step takes seconds to draw and nothing in it can be read.
+MAX_FILL_PIXELS = 128 * 128
+#: Longest export a fill is allowed to take, by the estimate from its first frames.
+MAX_EXPORT_SECONDS = 600.0
+
+
+def check_fill_size(args, parser) -> None:
+    """Refuse a grid too large to draw step by step, saying what would fit."""
+    width, height = args.size
+    if width * height > MAX_FILL_PIXELS:
+        parser.error(
+            f"argument --size: {width}x{height} is {width * height} pixels; a fill export draws "
+            f"every pixel's cell and centre, so it is limited to {MAX_FILL_PIXELS} pixels "
+            "(e.g. 128x128); teach large images with 'teachraster scene'"
+        )
+
+
+def estimate_seconds(draw_one, frames: int, *, probes: int = 3) -> float:
+    """Seconds ``frames`` frames will take, from the time of drawing a few of them."""
+    import time
+
+    probes = max(1, min(probes, frames))
+    t0 = time.perf_counter()
+    for k in range(probes):
+        draw_one(k)
+    return (time.perf_counter() - t0) / probes * frames
+
+
+def check_export_time(view, steps, args, parser) -> None:
+    """Estimate an animation's drawing time from its first frames; refuse one too long.
+
+    The estimate goes to stderr (with the progress bar) unless ``--quiet``.
+    """
+    seconds = estimate_seconds(lambda k: (view.show_step(steps[k], draw=False),
+                                          view.fig.canvas.draw()), len(steps))  # fmt: skip
+    if seconds > MAX_EXPORT_SECONDS:
+        parser.error(
+            f"argument --size: {len(steps)} frames would take about {seconds / 60:.0f} min to "
+            f"draw (limit {MAX_EXPORT_SECONDS / 60:.0f} min); use --every "
+            f"{math.ceil(seconds / MAX_EXPORT_SECONDS)} or more, or a smaller --size"
+        )
+    if not args.quiet:
+        print(f"{len(steps)} frames, about {seconds:.0f} s to draw", file=sys.stderr)
+
+
+def write_fill_page(args, fill) -> int:
+    """``teachraster fill ... -o fill.html``: one file that steps and plays with no Python.
+
+    Returns the number of steps in the page.
+    """
+    from ..plotting import FillView, use_style
+    from ..plotting.pages import page_data, page_figure, standalone_page
+
+    with use_style(args.style):
+        fig, ax = page_figure(fill.trace.width, fill.trace.height)
+        view = FillView(fill, ax=ax, step=0, caption=False, step_header=False)
+        data = page_data(view, step=args.step or 0, interval=round(1000 / args.fps))
+    title = f"{view.trace.method} fill of a triangle, step by step"
+    args.output.write_text(standalone_page(data, title), encoding="utf-8")
+    return data["n"]
+
+
+def export_notebook_html(notebook: Path, output: Path, *, timeout: int, quiet: bool) -> int:
+    """Execute ``notebook`` (a copy, in its folder) and write it as one HTML page.
+
+    Widgets need a kernel; the page has none, so every output that also carries HTML
+    (every FillPlayer carries an offline player) is shown by that HTML: the players still
+    step and play. Returns the number of outputs that fell back to their HTML.
+    """
+    import os
+
+    import nbformat
+    from nbclient import NotebookClient
+    from nbconvert import HTMLExporter
+
+    nb = nbformat.read(notebook, as_version=4)
+    # read by FillPlayer.static_fallback in the kernel: the whole offline player, not a poster
+    os.environ["TEACHRASTER_STATIC_PAGES"] = "1"
+    try:
+        client = NotebookClient(nb, timeout=timeout, kernel_name="python3",
+                                resources={"metadata": {"path": str(notebook.parent)}})  # fmt: skip
+        client.execute()
+    finally:
+        os.environ.pop("TEACHRASTER_STATIC_PAGES", None)
+    fallbacks = drop_widget_views(nb)
+    body, _ = HTMLExporter().from_notebook_node(nb)
+    output.write_text(body, encoding="utf-8")
+    return fallbacks
+
+
+def drop_widget_views(nb) -> int:
+    """Remove widget views that have an HTML stand-in, and the saved widget state.
+
+    Without its state a widget view cannot render in a page, and with it nbconvert's page
+    would load the widget manager from a CDN; the HTML stand-in needs neither.
+    """
+    view = "application/vnd.jupyter.widget-view+json"
+    nb.metadata.pop("widgets", None)
+    count = 0
+    for cell in nb.cells:
+        for out in cell.get("outputs", []):
+            data = out.get("data", {})
+            if view in data and "text/html" in data:
+                del data[view]
+                count += 1
+    return count

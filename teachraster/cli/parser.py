@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from . import course
 from .arguments import (
@@ -60,12 +61,13 @@ def _add_triangle(p: argparse.ArgumentParser, *, attr_default: str | None) -> No
     )
 
 
-def _add_output(p: argparse.ArgumentParser, *, animated: bool) -> None:
+def _add_output(p: argparse.ArgumentParser, *, animated: bool, page: bool = False) -> None:
     formats = ".png, .gif or .mp4" if animated else ".png"
+    formats += ", or .html (steps and plays offline)" if page else ""
     p.add_argument(
         "-o",
         "--output",
-        type=output_type(animated),
+        type=output_type(animated, page),
         required=True,
         help=f"output file; its suffix picks the format ({formats})",
     )
@@ -119,8 +121,9 @@ def add_fill(sub) -> None:
     p = sub.add_parser(
         "fill",
         help="animate a fill step by step (or a still of one step)",
-        description="Fill one triangle and export every step (.gif/.mp4) or "
-        "one step (.png; the finished fill unless --step).",
+        description="Fill one triangle and export every step (.gif/.mp4), "
+        "one step (.png; the finished fill unless --step), or a self-contained page "
+        "that steps and plays through the fill in any browser, offline (.html).",
     )
     _add_triangle(p, attr_default=None)
     p.add_argument(
@@ -135,7 +138,7 @@ def add_fill(sub) -> None:
         default=1,
         help="animate every N-th step (the last step is always shown)",
     )
-    _add_output(p, animated=True)
+    _add_output(p, animated=True, page=True)
 
 
 def add_compare(sub) -> None:
@@ -238,4 +241,21 @@ def add_list(sub) -> None:
 
 
 #: The sub-commands, in the order ``teachraster -h`` lists them.
-SUBCOMMANDS = [add_fill, add_compare, add_scene, add_case, add_list]
+def add_html(sub) -> None:
+    """``teachraster html``: a lesson, executed, as one page whose players still step."""
+    p = sub.add_parser(
+        "html",
+        help="execute a notebook and write it as one HTML page (fills still step offline)",
+        description="Execute NOTEBOOK (in its folder) and convert it to one HTML page. Each "
+        "FillPlayer becomes an offline player that steps and plays with no kernel; other "
+        "widgets show their last picture.",
+    )
+    p.add_argument("notebook", metavar="NOTEBOOK", type=Path, help="the .ipynb to export")
+    p.add_argument("-o", "--output", type=Path, required=True, help="the .html to write")
+    p.add_argument("--timeout", type=positive(int), default=600,
+                   help="seconds a cell may run (default 600)")  # fmt: skip
+    p.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
+    p.set_defaults(parser=p)
+
+
+SUBCOMMANDS = [add_fill, add_compare, add_scene, add_case, add_list, add_html]

@@ -12,8 +12,10 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, blend_equation
 from ..core.lines import rasterize_line
-from .report import Failure, Report
-from .running import WrongAnswerType, run_case
+from .answers import as_numbers, short
+from .report import Report
+from .running import WrongAnswerType
+from .value_checks import ValueExercise, check_value_exercise
 
 #: Lines live in a WINDOW × WINDOW image; end points on the 1/8 grid so ties happen.
 WINDOW = 12
@@ -49,12 +51,15 @@ def _expected_pixels(p0, p1) -> set[tuple[int, int]]:
 
 
 def _pixel_set(value) -> set[tuple[int, int]]:
-    try:
-        pairs = [tuple(int(v) for v in rc) for rc in value]
-    except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {value!r:.60}; expected (row, col) pairs") from None
-    if any(len(p) != 2 for p in pairs):
-        raise WrongAnswerType("returned something that is not a list of (row, col) pairs")
+    """The student's pixels as a set of (row, col); read as strictly as every answer."""
+    if isinstance(value, (set, frozenset)):
+        value = sorted(value, key=repr)
+    if isinstance(value, (list, tuple)) and len(value) == 0:
+        return set()
+    arr = as_numbers(value, (-1, 2), "a list of (row, col) pairs")
+    if not np.isfinite(arr).all() or (arr != np.round(arr)).any():
+        raise WrongAnswerType(f"returned {short(value)}: pixel indices are whole numbers")
+    pairs = [(int(r), int(c)) for r, c in arr]
     if len(set(pairs)) != len(pairs):
         raise WrongAnswerType("returned a pixel twice: a line lights each pixel at most once")
     return set(pairs)
@@ -89,20 +94,11 @@ def explain_line(args, expected: set, got: set) -> str:
 
 def check_line_pixels(fn) -> Report:
     """Run ``line_pixels(p0, p1)`` on every line case."""
-    cases = line_cases()
-    failures = []
-    for label, (p0, p1), expected in cases:
-        outcome = run_case(lambda p0=p0, p1=p1: _pixel_set(fn(p0, p1)))
-        if outcome.not_implemented:
-            return Report("line_pixels", [], len(cases), True, _line_drawing(cases[3], None))
-        if outcome.error:
-            failures.append(Failure(label, outcome.error, expected, None))
-        elif outcome.value != expected:
-            text = explain_line((p0, p1), expected, outcome.value)
-            case = (label, (p0, p1), expected)
-            failures.append(Failure(label, text, expected, outcome.value,
-                                    _line_drawing(case, outcome.value)))  # fmt: skip
-    return Report("line_pixels", failures, len(cases), False, _line_drawing(cases[3], None))
+    return check_value_exercise("line_pixels", fn, LINE_PIXELS)
+
+
+def _draw_line(ax, case, got):
+    return _line_drawing(case, got)(ax)
 
 
 def _line_drawing(case, got):
@@ -150,13 +146,7 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
 
 
 def _rgba(value) -> np.ndarray:
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {value!r:.60}, not numbers") from None
-    if arr.shape != (4,):
-        raise WrongAnswerType(f"returned shape {arr.shape}; expected RGBA, shape (4,)")
-    return arr
+    return as_numbers(value, (4,), "an RGBA colour, shape (4,)")
 
 
 def explain_blend(mode: str, args, expected, got) -> str:
@@ -187,21 +177,19 @@ def explain_blend(mode: str, args, expected, got) -> str:
             f"got {np.round(got, 4).tolist()}")  # fmt: skip
 
 
+def _blend_exercise(mode: str) -> ValueExercise:
+    return ValueExercise(
+        lambda: blend_cases(mode),
+        _rgba,
+        lambda got, expected: bool(np.allclose(got, expected, rtol=1e-9, atol=1e-12)),
+        lambda args, expected, got: explain_blend(mode, args, expected, got),
+        lambda ax, case, got: _blend_drawing(case[2], got)(ax),
+    )
+
+
 def check_blend(name: str, mode: str, fn) -> Report:
     """Run ``fn(src, dst)`` on the blend cases of ``mode``."""
-    cases = blend_cases(mode)
-    failures = []
-    for label, (src, dst), expected in cases:
-        outcome = run_case(lambda s=src, d=dst: _rgba(fn(s.copy(), d.copy())))
-        if outcome.not_implemented:
-            return Report(name, [], len(cases), True, _blend_drawing(cases[1][2], None))
-        if outcome.error:
-            failures.append(Failure(label, outcome.error, expected, None))
-        elif not np.allclose(outcome.value, expected, rtol=1e-9, atol=1e-12):
-            text = explain_blend(mode, (src, dst), expected, outcome.value)
-            failures.append(Failure(label, text, expected, outcome.value,
-                                    _blend_drawing(expected, outcome.value)))  # fmt: skip
-    return Report(name, failures, len(cases), False, _blend_drawing(cases[1][2], None))
+    return check_value_exercise(name, fn, _blend_exercise(mode))
 
 
 def _blend_drawing(expected, got):
@@ -220,6 +208,11 @@ def check_over(fn) -> Report:
 def check_over_premultiplied(fn) -> Report:
     return check_blend("over_premultiplied", "premultiplied", fn)
 
+
+#: How ``line_pixels`` is checked: the pixels as a set, compared whole, explained by the rule.
+LINE_PIXELS = ValueExercise(
+    line_cases, _pixel_set, lambda got, expected: got == expected, explain_line, _draw_line
+)
 
 #: The three exercises, for the registry in :mod:`.checks`.
 EXERCISES = {

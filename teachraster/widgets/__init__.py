@@ -7,12 +7,14 @@ from code by setting ``.value`` on its controls, so its logic is tested without 
 
 Widgets
 -------
-- :class:`FillPlayer` -- Play/Pause, step slider, previous/next, speed, method toggle (span
-  tables / half-planes), interpolation toggle (affine / perspective-correct), the caption of
-  the current step; a FillView (and an InterpolationView when the triangle has attributes).
-- :class:`TriangleEditor` -- move each vertex (x, y) and change its w; the fill, the split at
-  u4 and the affine-vs-perspective error heatmap follow. With ipympl the vertices can also be
-  dragged with the mouse.
+- :class:`FillPlayer` -- Play/Pause, step slider, first/previous/next/last and the caption of
+  the current step, all in the page (:class:`FramesWidget`: the steps are drawn once and
+  sent as frames); method toggle (span tables / half-planes / tiles), interpolation toggle
+  (affine / perspective-correct, when the triangle has attributes) and samples in the kernel;
+  a FillView (and an InterpolationView when the triangle has attributes).
+- :class:`TriangleEditor` -- drag a vertex in the figure (in the page: :class:`DragFigure`;
+  or under ipympl), move it and change its w with sliders; the fill, the split at u4 and the
+  affine-vs-perspective error heatmap follow.
 - :class:`TileExplorer` -- the block hierarchy of a tiled fill, level by level or block by
   block in a traversal order, with block sizes and traversal as menus and the counters.
 - :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
@@ -57,9 +59,11 @@ from .blending import BlendingExplorer
 from .case_picker import CasePicker
 from .depth_explorer import DepthPrecisionExplorer
 from .display import BACKENDS, FigureDisplay, resolve_backend
+from .dragging import DragFigure
 from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
 from .frame_inspector import FrameInspector
+from .frames import FramesWidget
 from .inspector import PixelInspector
 from .line_player import LinePlayer
 from .plane_explorer import PlaneExplorer
@@ -76,8 +80,10 @@ __all__ = [
     "BlendingExplorer",
     "CasePicker",
     "DepthPrecisionExplorer",
+    "DragFigure",
     "FigureDisplay",
     "FilterExplorer",
+    "FramesWidget",
     "FillPlayer",
     "LinePlayer",
     "PixelInspector",

@@ -11,14 +11,14 @@ the end of a cell, and it does not pile up in pyplot's list of open figures.
 from __future__ import annotations
 
 import functools
-import struct
 import sys
-import zlib
 
 import ipywidgets as widgets
 import matplotlib as mpl
 import numpy as np
 from matplotlib.figure import Figure
+
+from ..plotting.frames import encode_png
 
 BACKENDS = ("auto", "ipympl", "image")
 
@@ -125,29 +125,6 @@ def png_bytes(fig: Figure) -> bytes:
     return encode_png(np.asarray(fig.canvas.buffer_rgba()))
 
 
-def encode_png(rgba: np.ndarray) -> bytes:
-    """A (H, W, 4) uint8 image as PNG bytes: filter type 0 on every row, zlib level 1.
-
-    >>> png = encode_png(np.zeros((2, 3, 4), dtype=np.uint8))
-    >>> png[:8], png[12:16]
-    (b'\\x89PNG\\r\\n\\x1a\\n', b'IHDR')
-    """
-    rgba = np.asarray(rgba, dtype=np.uint8)
-    h, w, channels = rgba.shape
-    if channels != 4:
-        raise ValueError(f"expected an (H, W, 4) RGBA image, got shape {rgba.shape}")
-    rows = np.zeros((h, 1 + 4 * w), dtype=np.uint8)  # a leading 0 per row: no filter
-    rows[:, 1:] = rgba.reshape(h, 4 * w)
-    header = struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)  # 8-bit RGBA, not interlaced
-    return b"".join([b"\x89PNG\r\n\x1a\n", _chunk(b"IHDR", header),
-                     _chunk(b"IDAT", zlib.compress(rows, 1)), _chunk(b"IEND", b"")])  # fmt: skip
-
-
-def _chunk(kind: bytes, data: bytes) -> bytes:
-    crc = zlib.crc32(data, zlib.crc32(kind))
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", crc)
-
-
 class FigureDisplay:
     """A figure and the widget that shows it; :meth:`refresh` after changing its artists.
 
@@ -175,6 +152,7 @@ class FigureDisplay:
         self.draw = draw
         self.draws = 0
         if mode == "ipympl":
+            fit_column(fig)
             self.widget = fig.canvas
         else:
             width = int(round(fig.get_figwidth() * fig.dpi))
@@ -206,6 +184,19 @@ class FigureDisplay:
     def close(self) -> None:
         """Release the widget (and the browser-side canvas)."""
         self.widget.close()
+
+
+def fit_column(fig: Figure) -> None:
+    """Lower the figure's dpi so that it is at most as wide as the notebook column.
+
+    An ipympl canvas, unlike an image, does not scale down: a figure wider than the column
+    is cut off (its legend, its colour bars).
+    """
+    from ..plotting.style import COLUMN_WIDTH_PX
+
+    width = fig.get_figwidth() * fig.dpi
+    if width > COLUMN_WIDTH_PX:
+        fig.set_dpi(fig.dpi * COLUMN_WIDTH_PX / width)
 
 
 def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,

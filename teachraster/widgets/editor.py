@@ -15,6 +15,24 @@ from ..core.validate import as_size
 from ..plotting import FillView, InterpolationView
 from .common import Holdable, close_tree, fill_axes, labelled, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import PageDisplay, comparison_edit_blit, fill_edit_blit, same_or_new
+
+#: Step of the x and y sliders: the rasteriser's snapping grid (8 sub-pixel bits).
+GRID = 1 / 256
+
+
+def on_grid(value: float, direction: int = 0) -> float:
+    """``value`` on the 1/256 px grid: nearest, or rounded down (-1) or up (1).
+
+    >>> on_grid(10.6123), on_grid(-1.3, -1)
+    (10.61328125, -1.30078125)
+    """
+    scaled = float(value) / GRID
+    whole = (
+        round(scaled) if direction == 0 else (math.floor if direction < 0 else math.ceil)(scaled)
+    )
+    return whole * GRID
+
 
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
 #: ratios, which is what perspective depends on).
@@ -30,8 +48,11 @@ class TriangleEditor(Holdable):
     perspective-correct, with the heatmap of their difference. It grows where w changes
     fastest across the triangle, and vanishes when all three w are equal.
 
-    With the ipympl backend (``%matplotlib widget``) the vertices can also be dragged in the
-    fill figure with the mouse; the sliders follow.
+    The vertices can be dragged in the fill figure with the pointer: in the page
+    (:mod:`teachraster.widgets.dragging`: pointer feedback at once, positions coalesced so
+    the kernel renders the latest, the release exact), or under ipympl with matplotlib's
+    events; the sliders follow. Each move redraws only the triangle's artists over cached
+    backgrounds.
 
     Parameters
     ----------
@@ -59,7 +80,9 @@ class TriangleEditor(Holdable):
         Area and winding, pixels covered, u4 and the largest interpolation error in words.
     view, interp_view : FillView, InterpolationView
     fig : Figure
-        The FillView's figure.
+        The FillView's figure, shown whole in one ``<img>`` (or the ipympl canvas);
+        ``view.ax`` is its Axes and ``xy`` the vertices, so a vertex's place on the page
+        follows from ``view.ax.transData``.
     tri, fill : Triangle, Fill
         What is on show.
     last_update_s : float
@@ -101,15 +124,7 @@ class TriangleEditor(Holdable):
         self.fill = self._rasterize(self.tri, method)
 
         with style_context(style):
-            self.fig = new_figure((7, 5), self.backend)
-            ax = fill_axes(self.fig, width, height, side=4.0)
-            # a finished fill has no step to explain; the info line says what matters here
-            self.view = FillView(self.fill, ax=ax, step=-1, caption=False)
-            self.display = FigureDisplay(self.fig, self.backend)
-            ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = comparison_axes(ifig, height, width)
-            self.interp_view = InterpolationView(self.fill, attribute, axes=axes)
-            self.interp_display = FigureDisplay(ifig, self.backend)
+            self._make_figures()
 
         # -- controls ---------------------------------------------------------------------------
         xy, w = self.tri.xy, self.tri.w
@@ -117,12 +132,12 @@ class TriangleEditor(Holdable):
         layout = widgets.Layout(width="320px")
         self.x, self.y, self.w, columns = [], [], [], []
         for i in range(3):
-            x = widgets.FloatSlider(value=xy[i, 0], min=min(0.0, xy[i, 0]),
-                                    max=max(float(width), xy[i, 0]), step=0.05,
+            x = widgets.FloatSlider(value=on_grid(xy[i, 0]), min=on_grid(min(0.0, xy[i, 0]), -1),
+                                    max=on_grid(max(float(width), xy[i, 0]), 1), step=GRID,
                                     description=f"x{i} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
-            y = widgets.FloatSlider(value=xy[i, 1], min=min(0.0, xy[i, 1]),
-                                    max=max(float(height), xy[i, 1]), step=0.05,
+            y = widgets.FloatSlider(value=on_grid(xy[i, 1]), min=on_grid(min(0.0, xy[i, 1]), -1),
+                                    max=on_grid(max(float(height), xy[i, 1]), 1), step=GRID,
                                     description=f"y{i} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
             lo, hi = math.log10(min(W_RANGE[0], w[i])), math.log10(max(W_RANGE[1], w[i]))
@@ -139,14 +154,13 @@ class TriangleEditor(Holdable):
             options=[("span tables", "span"), ("half-planes", "halfplane")],
             value=method,
         )
-        self.method.style.button_width = "150px"
-        self.method.observe(self._on_slider, "value")
+        self.method.style.button_width = "auto"
+        self.method.observe(self._on_method, "value")
         self.info = widgets.HTML(layout=widgets.Layout(min_height="2.6em"))
         self._set_info()
 
-        hint = "Move a vertex or change its depth w"
+        hint = "Drag a vertex in the upper figure, or move it and change its depth w here"
         if self.backend == "ipympl":
-            hint += " (or drag a vertex in the upper figure)"
             self.fig.canvas.mpl_connect("button_press_event", self._on_press)
             self.fig.canvas.mpl_connect("motion_notify_event", self._on_motion)
             self.fig.canvas.mpl_connect("button_release_event", self._on_release)
@@ -159,6 +173,67 @@ class TriangleEditor(Holdable):
             title, widgets.HBox(columns), labelled("method", self.method), self.info,
             self.display.widget, self.interp_display.widget,
         ])  # fmt: skip
+
+    def _make_figures(self) -> None:
+        """The fill figure (dragged in the page, or an ipympl canvas) and the comparison."""
+        width, height = self.width, self.height
+        self.fig = new_figure((7, 5), self.backend)
+        ax = fill_axes(self.fig, width, height, side=4.0)
+        # a finished fill has no step to explain; the info line says what matters here
+        self.view = FillView(self.fill, ax=ax, step=-1, caption=False)
+        # a move changes the triangle's artists only: the grid, labels, centres and legend
+        # stay in a cached background (dragging.fill_edit_blit)
+        self._blits = {"fill": fill_edit_blit(self.view)}
+        if self.backend == "ipympl":
+            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw_fill)
+        else:
+            self.display = PageDisplay(self.fig, self.view.ax, self._draw_fill, self._handles,
+                                       on_move=self._on_page_move)  # fmt: skip
+        ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
+        axes = comparison_axes(ifig, height, width)
+        self.interp_view = InterpolationView(self.fill, self.attribute, axes=axes)
+        self._blits["interp"] = comparison_edit_blit(self.interp_view)
+        self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
+
+    def _draw_fill(self) -> None:
+        self._blits["fill"] = same_or_new(self._blits["fill"], fill_edit_blit(self.view))
+        if not self._dragging_in_page:
+            self._blits["fill"].draw()
+            return
+        # While dragging, the labels (boxed annotations: half the cost of a frame) wait for
+        # the release; the page's ring marks the vertex in hand meanwhile.
+        t = self.view.triangle
+        labels = [*t.labels, *t.edge_labels, self.view.split.label]
+        shown = [a.get_visible() for a in labels]
+        for a in labels:
+            a.set_visible(False)
+        try:
+            self._blits["fill"].draw()
+        finally:
+            for a, was in zip(labels, shown):
+                a.set_visible(was)
+
+    def _draw_interp(self) -> None:
+        fresh = comparison_edit_blit(self.interp_view)
+        self._blits["interp"] = same_or_new(self._blits["interp"], fresh)
+        self._blits["interp"].draw()
+
+    @property
+    def _dragging_in_page(self) -> bool:
+        """A drag in the page is under way (its positions are not the last)."""
+        return not getattr(getattr(self, "display", None), "final", True)
+
+    def _handles(self) -> np.ndarray:
+        """The vertices on show (the triangle's own until the sliders exist)."""
+        return self.tri.xy
+
+    def _on_page_move(self, i: int, x: float, y: float, final: bool) -> None:
+        """A position from the page (the latest of a drag, or where it ended)."""
+        self.display.final = final
+        try:
+            self.set_vertex(i, x=x, y=y)
+        finally:
+            self.display.final = True
 
     # -- geometry ---------------------------------------------------------------------------
     def _rasterize(self, tri: Triangle, method: str):
@@ -178,8 +253,12 @@ class TriangleEditor(Holdable):
                    w: float | None = None) -> None:  # fmt: skip
         """Move vertex ``i`` (any of x, y, w) and re-render once.
 
-        Values beyond a slider's range are clipped to it (as a slider does).
+        Values beyond a slider's range are clipped to it (as a slider does); x and y are
+        taken on the 1/256 px grid, the rasteriser's snapping grid and the sliders' step
+        (off it, the page's slider would round the value and send it back: a second
+        render, and a vertex a little off where the pointer let go).
         """
+        x, y = (None if v is None else on_grid(v) for v in (x, y))
         with self._holding():
             for slider, value in ((self.x[i], x), (self.y[i], y), (self.w[i], w)):
                 if value is not None:
@@ -190,16 +269,30 @@ class TriangleEditor(Holdable):
         if not self._quiet:
             self.update()
 
+    def _on_method(self, change) -> None:
+        # the key (legend) of the other method is new background
+        self.update()
+        self._blits["fill"].invalidate()
+        self.display.refresh()
+
     def update(self) -> None:
-        """Re-rasterise the triangle on the sliders and update both figures in place."""
+        """Re-rasterise the triangle on the sliders and update both figures in place.
+
+        While a vertex is being dragged in the page, only the fill figure follows each
+        position (what the pointer moves); the comparison figure, whose colour bars cost
+        more to draw than the whole fill, follows at the release.
+        """
         t0 = time.perf_counter()
+        dragging = self._dragging_in_page
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)
-        self.interp_view.update(self.fill, draw=False)
+        if not dragging:
+            self.interp_view.update(self.fill, draw=False)
         self._set_info()
         self.display.refresh()
-        self.interp_display.refresh()
+        if not dragging:
+            self.interp_display.refresh()
         self._last_done = time.perf_counter()
         self.last_update_s = self._last_done - t0
 

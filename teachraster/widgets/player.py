@@ -2,15 +2,18 @@
 
 from __future__ import annotations
 
-import html
+import base64
+import os
 
 import ipywidgets as widgets
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from ..core.validate import as_int, as_size
-from ..plotting import COLORS, FillView, InterpolationView, plot_samples
+from ..plotting import FillView, InterpolationView, plot_samples
 from ..plotting.blitting import STILL, LayeredBlit
+from ..plotting.frames import encode_png, frame_rgba, render_group, step_texts
+from ..plotting.pages import page_data, player_fragment
 from .common import (
     SAMPLE_PATTERNS,
     Holdable,
@@ -21,14 +24,9 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import (
-    COMPARISON_DPI,
-    FigureDisplay,
-    comparison_axes,
-    html_escape,
-    new_figure,
-    resolve_backend,
-)
+from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import comparison_edit_blit, same_or_new
+from .frames import FramesWidget
 
 METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane"), ("tiles", "tiled")]
 INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspective")]
@@ -37,16 +35,21 @@ INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspect
 class FillPlayer(Holdable):
     """Step through the fill of one triangle: Play/Pause, a step slider, the step in words.
 
-    The figure is a :class:`~teachraster.plotting.FillView`; moving the step slider calls
-    ``view.show_step(k)``, which changes the data of the existing artists (no redraw from
-    scratch). The method and interpolation toggles rasterise the triangle again
-    (``trace=True``) and hand the new fill to ``view.set_fill``; the slider's range follows
-    the new number of steps. When the triangle has attributes, a second figure (an
-    :class:`~teachraster.plotting.InterpolationView`) shows one of them interpolated both
-    ways and their difference, the interpolation in use highlighted.
+    Stepping runs in the page (:mod:`teachraster.plotting.frames`): the steps of the
+    :class:`~teachraster.plotting.FillView` are drawn once by matplotlib (blitted, as the view
+    draws them) and sent to the page in groups, the one on show first; the step slider, the
+    first / previous / next / last buttons and Play then change the picture and the caption
+    with no round trip, and the kernel hears of the step when the slider is released or Play
+    paused. The method, interpolation and samples controls rasterise the triangle again
+    (``trace=True``) and send the new fill. When the triangle has attributes, a second figure
+    (an :class:`~teachraster.plotting.InterpolationView`) shows one of them interpolated both
+    ways and their difference, the interpolation in use highlighted; without attributes
+    there is no interpolation toggle (it would change nothing on show).
 
     Everything can be driven from code: set ``player.slider.value``,
     ``player.method.value`` or ``player.interpolation.value``, or ``click()`` a button.
+    Where no kernel runs (an HTML export of the lesson) the player's output falls back to
+    an offline page that steps and plays by itself (:meth:`static_fallback`).
 
     Parameters
     ----------
@@ -64,11 +67,10 @@ class FillPlayer(Holdable):
     step : int
         Step shown first (0: the start; -1: the finished fill).
     interval : int
-        Milliseconds per step when playing.
+        Milliseconds per step when playing (``interval=20``: 50 steps a second).
     backend : {"auto", "ipympl", "image"}
-        ``"ipympl"`` puts the interactive canvas in the widget (``%matplotlib widget``);
-        ``"image"`` shows a PNG, redrawn at each step (any backend, also headless);
-        ``"auto"`` picks ipympl when it is matplotlib's backend.
+        How the interpolation figure is shown (see
+        :func:`~teachraster.widgets.resolve_backend`); the steps are always page frames.
     style : str, optional
         Plotting style for this widget's figures (``"classroom"``); default the current one.
     samples : str
@@ -80,12 +82,13 @@ class FillPlayer(Holdable):
     ----------
     widget : ipywidgets.VBox
         Everything, ready to display (the player also displays itself).
-    play, slider, speed, prev, next, first, last, method, interpolation, samples, caption,
-    step_info
-        The controls: ``Play`` (jslinked to ``slider``: it runs in the browser), the step
-        ``IntSlider``, the Play interval in ms, the step buttons, the two
-        ``ToggleButtons``, the ``HTML`` caption of the current step and the ``Label`` by the
-        slider with the last step number and the kind of step ("of 787 (pixel)").
+    frames : FramesWidget
+        The page-side player (buttons, step slider, caption, frames); ``frames.value`` is
+        the step, ``frames.interval`` the ms per step. ``slider`` and ``play`` name it too.
+    first, prev, next, last : StepButton
+        The page's step buttons, pressed from code with ``click()``.
+    method, interpolation, samples
+        The two ``ToggleButtons`` and the sample-pattern ``Dropdown`` (kernel side).
     view : FillView
     fig : matplotlib Figure
         The FillView's figure.
@@ -164,14 +167,13 @@ class FillPlayer(Holdable):
         self.view.blit.invalidate()
 
     def _make_figures(self, attribute, step: int, interpolation: str) -> None:
-        self.fig = new_figure((8, 6), self.backend)
+        # The steps are drawn by Agg and shown by the page (frames.js): the fill figure is
+        # never a live canvas, whatever the backend.
+        self.fig = new_figure((8, 6), "image")
         ax = fill_axes(self.fig, self.width, self.height)
-        # The caption is a widget below the controls, in full and selectable; drawing it in
-        # the figure as well would cost time at every step.
-        # The step number and kind go to a label by the slider for the same reason.
+        # The caption and the step number are shown by the page beside the frame, in full
+        # and selectable; drawing them in the figure as well would cost time at every step.
         self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False)
-        # Steps are blitted: only what moves is drawn again (see FillView.redraw).
-        self.display = FigureDisplay(self.fig, self.backend, draw=self.view.redraw)
         self.interp_view = self.interp_display = None
         if self.tri.attrs:
             name = attribute or next(iter(self.tri.attrs))
@@ -179,80 +181,95 @@ class FillPlayer(Holdable):
             axes = comparison_axes(ifig, self.height, self.width, below=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
-            self.interp_display = FigureDisplay(ifig, self.backend)
+            # a toggle changes the images, outlines and colour bars: the rest stays cached
+            self._interp_blit = comparison_edit_blit(self.interp_view)
+            self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
 
     def _make_controls(self, step: int, interval: int, method: str, interpolation: str):
-        n = len(self.trace)
-        self.play = widgets.Play(value=step, min=0, max=n - 1, interval=interval,
-                                 show_repeat=False, tooltip="play / pause")  # fmt: skip
-        self.slider = widgets.IntSlider(value=step, min=0, max=n - 1, description="step",
-                                        continuous_update=True,
-                                        layout=widgets.Layout(width="420px"))  # fmt: skip
-        # Linked in the browser, so playing needs no round trip through the kernel per tick;
-        # the kernel hears of each new slider value and redraws.
-        self.link = widgets.jslink((self.play, "value"), (self.slider, "value"))
-        self.speed = widgets.IntSlider(value=interval, min=50, max=2000, step=50,
-                                       description="ms / step",
-                                       layout=widgets.Layout(width="300px"))  # fmt: skip
-        # A kernel-side link: the interval rarely changes, and this way setting speed.value
-        # from code changes the Play too.
-        self.speed_link = widgets.link((self.speed, "value"), (self.play, "interval"))
-        self._make_buttons()
-        self.method = widgets.ToggleButtons(options=METHOD_OPTIONS, value=method,
+        self.frames = FramesWidget(self._group, interval=interval)
+        # made once per fill (method, interpolation, samples): toggling back costs nothing
+        self._groups, self._texts = {}, {}
+        # Stepping runs in the page; these names keep the code that drives a player working.
+        self.slider = self.play = self.frames
+        self.first = StepButton(lambda: self._go(0))
+        self.prev = StepButton(lambda: self._go(self.frames.value - 1))
+        self.next = StepButton(lambda: self._go(self.frames.value + 1))
+        self.last = StepButton(lambda: self._go(self.frames.max))
+        wide = widgets.Layout(width="auto")
+        self.method = widgets.ToggleButtons(options=METHOD_OPTIONS, value=method, layout=wide,
                                             tooltips=["sort, split at u4, fill row by row",
                                                       "test every pixel of the bounding box "
-                                                      "against the three edges"])  # fmt: skip
+                                                      "against the three edges",
+                                                      "classify blocks, then their pixels"])  # fmt: skip
         self.interpolation = widgets.ToggleButtons(
-            options=INTERPOLATION_OPTIONS, value=interpolation,
+            options=INTERPOLATION_OPTIONS, value=interpolation, layout=wide,
             tooltips=["screen-space blend of the vertex values (GLSL noperspective)",
                       "blend f/w and 1/w, then divide (GLSL smooth)"],
         )  # fmt: skip
         for toggle in (self.method, self.interpolation):
-            toggle.style.button_width = "150px"
-        self.caption = widgets.HTML(
-            html_escape(self.trace.caption(step)),
-            layout=widgets.Layout(min_height="3.2em", width="100%", padding="2px 6px",
-                                  border=f"1px solid {COLORS['grid']}"),
-        )  # fmt: skip
-        self.caption.style.font_size = "15px"
-        self.step_info = widgets.Label(self._step_info(self.trace.step(step)))
-        self.caption.add_class("teachraster-caption")  # a handle for styling and browser tests
-        self.slider.observe(self._on_step, "value")
+            toggle.style.button_width = "auto"
+        self._publish(step)
+        self.frames.observe(self._on_step, "value")
         self.method.observe(self._on_fill_options, "value")
         self.interpolation.observe(self._on_fill_options, "value")
         self.samples.observe(self._on_fill_options, "value")
 
-    def _make_buttons(self) -> None:
-        small = widgets.Layout(width="44px")
-        self.first = widgets.Button(icon="fast-backward", tooltip="first step", layout=small)
-        self.prev = widgets.Button(icon="step-backward", tooltip="previous step", layout=small)
-        self.next = widgets.Button(icon="step-forward", tooltip="next step", layout=small)
-        self.last = widgets.Button(icon="fast-forward", tooltip="last step", layout=small)
-        self.first.on_click(lambda _: self._go(0))
-        self.prev.on_click(lambda _: self._go(self.slider.value - 1))
-        self.next.on_click(lambda _: self._go(self.slider.value + 1))
-        self.last.on_click(lambda _: self._go(self.slider.max))
-
     def _layout(self) -> widgets.VBox:
         title = title_html(
             "How a GPU fills a triangle, step by step",
-            "Press play, drag the step slider or use the buttons; switch the method and the "
-            "interpolation to compare.",
+            "Press play, drag the step slider or use the buttons (all in the page); switching "
+            "the method, the interpolation or the samples asks the kernel.",
         )
-        figures = [self.display.widget]
-        if self.interp_display is not None:
-            figures.append(self.interp_display.widget)
-        return widgets.VBox([
-            title,
-            widgets.HBox([self.play, self.first, self.prev, self.slider, self.next, self.last,
-                          self.step_info]),
-            widgets.HBox([labelled("method", self.method),
-                          labelled("interpolation", self.interpolation),
-                          labelled("samples", self.samples)]),
-            self.speed,
-            self.caption,
-            *figures,
-        ])  # fmt: skip
+        options = [labelled("method", self.method)]
+        # Without attributes the interpolation changes nothing on show: no toggle for it.
+        if self.tri.attrs:
+            options.append(labelled("interpolation", self.interpolation))
+        options.append(labelled("samples", self.samples))
+        figures = [] if self.interp_display is None else [self.interp_display.widget]
+        row = widgets.Layout(flex_flow="row wrap", align_items="center")
+        return widgets.VBox([title, widgets.HBox(options, layout=row), self.frames, *figures])
+
+    def _publish(self, step: int) -> None:
+        """Send the fill on show to the page: its steps' texts and the picture of ``step``.
+
+        A fill shown before (a toggle back) has the group of ``step`` made already: it goes
+        to the page at once, in place of a poster. Otherwise the poster (one full draw) is
+        all the page needs to show the fill; the groups follow when the page asks for them.
+        """
+        fill_key = self._fill_key()
+        if fill_key not in self._texts:
+            self._texts[fill_key] = step_texts(self.trace)
+        captions, infos = self._texts[fill_key]
+        group = step // self.frames.key
+        made = self._groups.get((fill_key, group))
+        poster, size = b"", (self.frames.frame_height, self.frames.frame_width)
+        if made is None:
+            self.view.show_step(step, draw=False)
+            self.view.redraw()
+            rgba = frame_rgba(self.fig)
+            poster, size = encode_png(rgba), rgba.shape[:2]
+        with self.frames.hold_sync():
+            self.frames.value = step
+            self.frames.n_steps = len(self.trace)
+            self.frames.captions, self.frames.infos = captions, infos
+            self.frames.frame_height, self.frames.frame_width = size
+            self.frames.poster = poster
+            self.frames.alt = f"the {self.trace.method} fill of a triangle, step by step"
+            self.frames.gen += 1
+        if made is not None:
+            self.frames.send_group(group, *made)
+
+    def _fill_key(self) -> tuple[str, str, str]:
+        return (self.method.value, self.interpolation.value, self.samples.value)
+
+    def _group(self, g: int):
+        """Frames of group ``g`` for the page (made once per fill); the view is put back on
+        the step on show."""
+        key = (self._fill_key(), g)
+        if key not in self._groups:
+            self._groups[key] = render_group(self.view, g, self.frames.key)
+            self.view.show_step(self.frames.value, draw=False)
+        return self._groups[key]
 
     # -- state ------------------------------------------------------------------------------
     @property
@@ -263,56 +280,58 @@ class FillPlayer(Holdable):
     @property
     def step(self) -> int:
         """The step on show."""
-        return self.view.step
+        return self.frames.value
 
     @property
     def caption_text(self) -> str:
-        """The caption on show as plain text (equal to ``trace.caption(step)``)."""
-        return html.unescape(self.caption.value)
+        """The caption on show (equal to ``trace.caption(step)``; the page shows it too)."""
+        return self.trace.caption(self.frames.value)
+
+    @property
+    def step_info(self) -> str:
+        """``"of 787 (pixel)"``: what the page shows beside the step number."""
+        return f"of {len(self.trace) - 1} ({self.trace.step(self.frames.value).kind})"
 
     # -- driving ----------------------------------------------------------------------------
     def show_step(self, k: int) -> None:
         """Show step ``k`` (the same as setting ``slider.value``; negative counts from the end)."""
-        self.slider.value = self.trace.index(k)
+        self.frames.value = self.trace.index(k)
+
+    @property
+    def interval(self) -> int:
+        """Milliseconds per step when playing (the page plays; set it from code)."""
+        return self.frames.interval
+
+    @interval.setter
+    def interval(self, ms: int) -> None:
+        self.frames.interval = as_int("interval", ms, minimum=1)
 
     def _go(self, k: int) -> None:
-        self.slider.value = min(max(k, self.slider.min), self.slider.max)
+        self.frames.value = min(max(k, 0), self.frames.max)
 
     def _on_step(self, change) -> None:
+        # the page has drawn the step already; the kernel-side view follows for code that
+        # reads it (player.view, player.caption_text)
         if not self._quiet:
-            self._draw_step(change["new"])
-
-    def _draw_step(self, k: int) -> None:
-        step = self.view.show_step(k, draw=False)
-        self._show_caption(step)
-        self.display.refresh()
-
-    def _show_caption(self, step) -> None:
-        self.caption.value = html_escape(step.caption)
-        self.step_info.value = self._step_info(step)
-
-    def _step_info(self, step) -> str:
-        """``"of 787 (pixel)"``: beside the slider's own readout of the step number."""
-        return f"of {len(self.trace) - 1} ({step.kind})"
+            self.view.show_step(change["new"], draw=False)
 
     def _on_fill_options(self, change) -> None:
         self.fill = self._rasterize(self.method.value, self.interpolation.value)
-        # The view decides the step (a finished fill stays finished, else the same index);
-        # the slider follows it.
+        # The view decides the step (a finished fill stays finished, else the same index).
         step = self.view.set_fill(self.fill, draw=False)
         self._show_samples()
-        last = len(self.trace) - 1
         with self._holding():
-            # widen before moving, narrow after, so the value is never out of range
-            self.slider.max = self.play.max = max(last, self.slider.max)
-            self.slider.value = step.index
-            self.slider.max = self.play.max = last
-        self._show_caption(step)
-        self.display.refresh()
+            self._publish(step.index)
         if self.interp_view is not None:
             self.interp_view.update(self.fill, draw=False)
-            self.interp_view.highlight(self.interpolation.value)
+            if change["owner"] is self.interpolation:
+                self.interp_view.highlight(self.interpolation.value)
+                self._interp_blit.invalidate()  # the highlight is in the background
             self.interp_display.refresh()
+
+    def _draw_interp(self) -> None:
+        self._interp_blit = same_or_new(self._interp_blit, comparison_edit_blit(self.interp_view))
+        self._interp_blit.draw()
 
     @property
     def in_use(self) -> list:
@@ -321,13 +340,43 @@ class FillPlayer(Holdable):
 
     # -- display ----------------------------------------------------------------------------
     def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+        bundle = self.widget._repr_mimebundle_(**kwargs)
+        # What a page shows where no widget can live (an HTML export, a viewer): see
+        # static_fallback.
+        bundle["text/html"] = self.static_fallback()
+        return bundle
+
+    def static_fallback(self, *, full: bool | None = None) -> str:
+        """HTML standing in for the player where no kernel is running.
+
+        With ``full`` (default: when ``TEACHRASTER_STATIC_PAGES`` is set, as ``teachraster
+        html`` does) the whole offline player of :mod:`teachraster.widgets.page`, which
+        steps and plays with no kernel; else the picture on show and a hint to run the cell.
+        """
+        if full is None:
+            full = bool(os.environ.get("TEACHRASTER_STATIC_PAGES"))
+        if full:
+            data = page_data(self.view, step=self.frames.value, interval=self.interval)
+            self.view.show_step(self.frames.value, draw=False)
+            return player_fragment(data)
+        poster = base64.b64encode(self.frames.poster).decode("ascii")
+        return (f'<div class="teachraster-static"><p><i>Run this cell to bring the player '
+                f'back (no kernel is running it).</i></p><img alt="{self.frames.alt}" '
+                f'src="data:image/png;base64,{poster}" style="max-width:100%"></div>')  # fmt: skip
 
     def close(self) -> None:
         """Close every widget of the player (the figures are freed with it)."""
-        for d in (self.display, self.interp_display):
-            if d is not None:
-                d.close()
-        self.link.close()
-        self.speed_link.unlink()
+        if self.interp_display is not None:
+            self.interp_display.close()
         close_tree(self.widget)
+
+
+class StepButton:
+    """A step button of the page, pressed from code: ``player.next.click()``."""
+
+    def __init__(self, action) -> None:
+        self._action = action
+
+    def click(self) -> None:
+        """Do what the button does in the page."""
+        self._action()

@@ -1,0 +1,387 @@
+"""Benchmark the widgets in a real browser: JupyterLab in headless Chromium, driven by Playwright.
+
+Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
+
+    python benchmarks/bench_browser.py            # full run (a few minutes)
+    python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
+
+JupyterLab starts on a free loopback port with its own config, data, runtime and settings
+folders (in a temporary directory, removed afterwards) and opens a small notebook holding:
+two baselines, a do-nothing ``IntSlider`` -> ``Output`` round trip and a plain matplotlib
+figure redrawn from an ``IntSlider`` with the widgets' own display (a PNG in an
+``ipywidgets.Image``); a half-plane ``FillPlayer`` (16 x 16, ``interval=20``) and a
+``TriangleEditor`` (16 x 16). Chromium (1400 x 900) then drives them like a student:
+
+- latency: from the input event (key, click or pointer) to the change on the page (the
+  figure's ``src``, the canvas' step, the output's text), timed in the page;
+- frame rates: pictures changed per second while the step slider is dragged with the mouse,
+  while Play runs at 20 ms/step, and re-rendered fills per second while a vertex of the
+  editor is dragged continuously, 1 grid pixel per pointer move.
+
+Absolute times on these machines vary 2x from day to day: the figures to report are the
+ratios to the round trip measured in the same run. Every server and browser started here
+is stopped by its process id. The exit status is non-zero only on errors.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
+ARGS = ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
+        "--disable-background-networking", "--disable-component-update", "--disable-sync",
+        "--disable-quic"]  # fmt: skip
+
+CELLS = [
+    """import json
+import ipywidgets as w
+import numpy as np
+import teachraster as tr
+from teachraster.widgets import FillPlayer, TriangleEditor
+from teachraster.widgets.display import FigureDisplay, new_figure""",
+    # baseline 1: a do-nothing round trip
+    """rt = w.IntSlider(description="rt")
+rt_out = w.Output()
+rt_out.add_class("bench-rt-out")
+def _echo(change):
+    rt_out.outputs = ({"output_type": "stream", "name": "stdout", "text": str(change["new"])},)
+rt.observe(_echo, "value")
+box = w.VBox([rt, rt_out]); box.add_class("bench-rt"); box""",
+    # baseline 2: a plain figure redrawn from a slider, shown as the widgets show figures
+    """fig = new_figure((7.2, 5.4), "image")
+ax = fig.add_subplot()
+image = ax.imshow(np.random.default_rng(0).random((16, 16)))
+plain = FigureDisplay(fig, "image")
+fs = w.IntSlider(description="fig", max=100)
+def _redraw(change):
+    image.set_data(np.random.default_rng(change["new"]).random((16, 16)))
+    plain.refresh()
+fs.observe(_redraw, "value")
+box = w.VBox([fs, plain.widget]); box.add_class("bench-fig"); box""",
+    """tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], w=[1, 3, 6], attrs={"u": [0, 1, 0]})
+player = FillPlayer(tri, 16, 16, method="halfplane", interval=20)
+player.widget.add_class("bench-player")
+player""",
+    """editor = TriangleEditor(tri, 16, 16)
+editor.widget.add_class("bench-editor")
+editor""",
+    """page = editor.display.widget
+print("BENCH-EDITOR", json.dumps({"transform": page.transform, "size": page.size,
+                                  "handles": page.handles}))""",
+]
+
+# In-page timing: t0 at the first matching input event, t1 at the first change of what is
+# watched after it (a MutationObserver), both performance.now().
+ARM = """([target, events, watch, attr]) => {
+  const t = document.querySelector(target), el = document.querySelector(watch);
+  const b = window.__bench = { t0: null, t1: null, before: attr ? el.getAttribute(attr) : el.textContent };
+  const start = () => { if (b.t0 === null) b.t0 = performance.now(); };
+  for (const e of events) t.addEventListener(e, start, { capture: true, once: true });
+  const ob = new MutationObserver(() => {
+    const now = attr ? el.getAttribute(attr) : el.textContent;
+    if (b.t0 !== null && b.t1 === null && now !== b.before) { b.t1 = performance.now(); ob.disconnect(); }
+  });
+  ob.observe(el, { attributes: true, childList: true, subtree: true, characterData: true });
+}"""
+COUNT = """([watch, attr]) => {
+  const el = document.querySelector(watch);
+  const c = window.__count = { n: 0, t: [], k: [], rt: [], last: el.getAttribute(attr) };
+  c.ob = new MutationObserver(() => {
+    const now = el.getAttribute(attr);
+    if (now !== c.last) {
+      c.n += 1; c.t.push(performance.now()); c.last = now;
+      c.k.push(Number(el.dataset.kernelMs)); c.rt.push(Number(el.dataset.roundTripMs));
+    }
+  });
+  c.ob.observe(el, { attributes: true });
+}"""
+DRAG = """async (sel) => {
+  const r = document.querySelector(sel);
+  const t0 = performance.now();
+  let v = 0;
+  while (performance.now() - t0 < 1500) {
+    await new Promise(requestAnimationFrame);
+    v = (v + 1) % (Number(r.max) + 1);
+    r.value = String(v);
+    r.dispatchEvent(new Event("input", { bubbles: true }));
+  }
+  r.dispatchEvent(new Event("change", { bubbles: true }));
+}"""
+MOVES = """async ({sel, points, ms}) => {
+  const el = document.querySelector(sel);
+  const t0 = performance.now();
+  for (let k = 1; performance.now() - t0 < ms; k++) {
+    await new Promise(requestAnimationFrame);
+    const [x, y] = points[k % points.length];
+    el.dispatchEvent(new PointerEvent("pointermove", { clientX: x, clientY: y, pointerId: 1,
+      bubbles: true, isPrimary: true, pointerType: "mouse", buttons: 1 }));
+  }
+}"""
+DONE = "() => window.__bench.t1 !== null"
+DT = "() => window.__bench.t1 - window.__bench.t0"
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def write_notebook(folder: Path) -> str:
+    import nbformat
+
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS]
+    # a kernel named up front: JupyterLab would otherwise ask which one
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}  # fmt: skip
+    nbformat.write(nb, folder / "bench.ipynb")
+    return "bench.ipynb"
+
+
+def start_lab(work: Path):
+    """JupyterLab on a free port, state under ``work``; returns (process, base URL, log)."""
+    settings = work / "settings"
+    (settings / "@jupyterlab/apputils-extension").mkdir(parents=True)
+    (settings / "@jupyterlab/apputils-extension/notification.jupyterlab-settings").write_text(
+        json.dumps({"fetchNews": "false", "checkForUpdates": False}))  # fmt: skip
+    (settings / "@jupyterlab/notebook-extension").mkdir(parents=True)
+    (settings / "@jupyterlab/notebook-extension/tracker.jupyterlab-settings").write_text(
+        json.dumps({"windowingMode": "none"}))  # fmt: skip
+    env = dict(os.environ, JUPYTER_CONFIG_DIR=str(work / "config"),
+               JUPYTER_RUNTIME_DIR=str(work / "runtime"), JUPYTER_DATA_DIR=str(work / "data"),
+               IPYTHONDIR=str(work / "ipython"),
+               PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))  # fmt: skip
+    env.pop("MPLBACKEND", None)
+    port = free_port()
+    log = open(work / "lab.log", "w")  # noqa: SIM115 (closed by stop_lab)
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "jupyter", "lab", "--no-browser", "--allow-root",
+         "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}", "--ServerApp.port_retries=0",
+         "--IdentityProvider.token=", "--ServerApp.password=",
+         f"--ServerApp.root_dir={work / 'nb'}", f"--LabApp.user_settings_dir={settings}",
+         f"--LabApp.workspaces_dir={work / 'workspaces'}"],
+        stdout=log, stderr=subprocess.STDOUT, env=env, cwd=work,
+    )  # fmt: skip
+    base = f"http://127.0.0.1:{port}"
+    deadline = time.time() + 120
+    while True:
+        try:
+            urllib.request.urlopen(f"{base}/api/status", timeout=2).close()
+            return proc, base, log
+        except OSError:
+            if proc.poll() is not None or time.time() > deadline:
+                stop_lab(proc, log)
+                raise RuntimeError(
+                    "JupyterLab did not start:\n" + (work / "lab.log").read_text()[-2000:]
+                ) from None
+            time.sleep(0.5)
+
+
+def stop_lab(proc, log) -> None:
+    proc.terminate()  # by its PID; the server shuts its kernels down on SIGTERM
+    try:
+        proc.wait(timeout=20)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+    log.close()
+
+
+def run_all_cells(page, base: str, name: str) -> None:
+    page.goto(f"{base}/lab/tree/{name}?reset")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=120_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=120_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
+    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+    page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(timeout=300_000)
+    # every group of the player's frames in the page
+    wait_for_groups(page)
+
+
+def wait_for_groups(page) -> None:
+    """Until every group of the player's frames is in the page."""
+    page.wait_for_function(
+        "() => { const c = document.querySelector('.bench-player canvas.teachraster-figure');"
+        " const r = c && c.closest('.tr-frames').querySelector('input[type=range]');"
+        " return c && Number(c.dataset.groups) >= Math.ceil((Number(r.max) + 1) / 8); }",
+        timeout=300_000)  # fmt: skip
+
+
+def latency(page, target, events, watch, attr, act, tries: int) -> list[float]:
+    """ms from the input event on ``target`` to the change of ``watch`` (``attr`` or text)."""
+    out = []
+    for _ in range(tries):
+        page.evaluate(ARM, [target, events, watch, attr])
+        act()
+        page.wait_for_function(DONE, timeout=30_000)
+        out.append(page.evaluate(DT))
+        page.wait_for_timeout(60)
+    return out
+
+
+def bench_baselines(page, tries):
+    rt = latency(page, ".bench-rt .noUi-handle", ["keydown"], ".bench-rt-out", None,
+                 lambda: page.locator(".bench-rt .noUi-handle").press("ArrowRight"), tries)  # fmt: skip
+    fig = latency(page, ".bench-fig .noUi-handle", ["keydown"], ".bench-fig img", "src",
+                  lambda: page.locator(".bench-fig .noUi-handle").press("ArrowRight"), tries)  # fmt: skip
+    return rt, fig
+
+
+def bench_player(page, tries):
+    p = ".bench-player"
+    canvas = f"{p} canvas.teachraster-figure"
+    nxt = page.locator(f"{p} button[aria-label='next step']")
+    first = page.locator(f"{p} button[aria-label='first step']")
+    first.click()
+    step = latency(page, f"{p} button[aria-label='next step']", ["pointerdown", "mousedown"],
+                   canvas, "data-step", nxt.click, tries)  # fmt: skip
+    # drag the step slider for 1.5 s: a new value at every animation frame, as a pointer
+    # dragged along the track gives (Playwright's own mouse moves are slower than that here)
+    first.click()
+    page.evaluate(COUNT, [canvas, "data-step"])
+    page.evaluate(DRAG, f"{p} input[type=range]")
+    drag = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
+    drag_fps = (len(drag) - 1) / ((drag[-1] - drag[0]) / 1e3) if len(drag) > 2 else 0.0
+    # play at 20 ms/step for 2 s
+    first.click()
+    page.evaluate(COUNT, [canvas, "data-step"])
+    page.locator(f"{p} button[aria-label='play']").click()
+    page.wait_for_timeout(2000)
+    page.locator(f"{p} button[aria-label^='pause']").click()
+    played = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
+    play_fps = (len(played) - 1) / ((played[-1] - played[0]) / 1e3) if len(played) > 2 else 0.0
+    toggles = []
+    for i in range(tries):
+        label = "span tables" if i % 2 == 0 else "half-planes"
+        button = page.locator(f"{p} button", has_text=label).first
+        toggles += latency(page, f"{p} .widget-toggle-buttons", ["pointerdown", "mousedown"],
+                           canvas, "data-gen", button.click, 1)  # fmt: skip
+        wait_for_groups(page)  # as a student looks at the new fill before toggling again
+    wait_for_groups(page)  # the page fetches the new fill's frames: let it finish
+    return step, drag_fps, play_fps, toggles
+
+
+def bench_editor(page, tries, info):
+    img = page.locator(".bench-editor .tr-drag img").first
+    img.scroll_into_view_if_needed()
+    page.wait_for_timeout(300)
+    box = img.bounding_box()
+    w, h = info["size"]
+    x0, y0, sx, sy = info["transform"]
+    scale = box["width"] / w
+
+    def at(x, y):
+        return box["x"] + (x0 + sx * x) * scale, box["y"] + (y0 + sy * y) * scale
+
+    fps, firsts, kernel, trips = [], [], [], []
+    hx, hy = info["handles"][1]
+    for _ in range(tries):
+        page.evaluate(COUNT, [".bench-editor .tr-drag img", "data-frames"])
+        page.evaluate(ARM, [".bench-editor .tr-drag img", ["pointerdown"],
+                            ".bench-editor .tr-drag img", "data-frames"])  # fmt: skip
+        # The press is Playwright's (a real pointer event); the moves are synthesized in the
+        # page at display rate, as a mouse sends them (Playwright's own moves arrive at about
+        # 20 a second on this machine, too few for the frame rate to mean anything).
+        page.mouse.move(*at(hx, hy))
+        page.mouse.down()
+        page.evaluate(MOVES, {"sel": ".bench-editor .tr-drag img",
+                              "points": [at(hx - d, hy) for d in (0, 1, 2, 3, 4, 3, 2, 1)],
+                              "ms": 2000})  # fmt: skip
+        page.mouse.up()
+        page.wait_for_timeout(400)
+        times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
+        kernel += page.evaluate("() => window.__count.k.filter(x => x > 0)")
+        trips += page.evaluate("() => window.__count.rt.filter(x => x > 0)")
+        if page.evaluate(DONE):
+            firsts.append(page.evaluate(DT))
+        during = [x for x in times if x <= times[0] + 2000] if times else []
+        fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
+    if kernel:
+        print(f"editor drag: kernel ms per position median {statistics.median(kernel):.0f}, "
+              f"position -> picture round trip median {statistics.median(trips):.0f} ms, "
+              f"{len(kernel)} frames")  # fmt: skip
+    return fps, firsts
+
+
+def shots(page, folder: Path) -> None:
+    """Screenshots of the player and the editor as a student sees them (1400 x 900)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for name in ("player", "editor"):
+        page.locator(f".bench-{name}").first.scroll_into_view_if_needed()
+        page.wait_for_timeout(300)
+        page.screenshot(path=str(folder / f"{name}.png"))
+        height = page.locator(f".bench-{name}").first.bounding_box()["height"]
+        print(f"{name}: {height:.0f} px high")
+
+
+def summary(label, ms, rt, target=""):
+    med, top = statistics.median(ms), max(ms)
+    print(f"{label:<46}{med:>8.1f}{top:>8.1f}{med / rt:>8.2f}  {target}")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="smoke run: 3 tries each")
+    parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
+    parser.add_argument("--shots", type=Path, default=None,
+                        help="folder for screenshots of the player and the editor")  # fmt: skip
+    args = parser.parse_args(argv)
+    tries = 3 if args.quick else max(args.tries, 3)
+    from playwright.sync_api import sync_playwright
+
+    work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
+    (work / "nb").mkdir()
+    name = write_notebook(work / "nb")
+    proc, base, log = start_lab(work)
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
+            try:
+                page = browser.new_page(viewport={"width": 1400, "height": 900})
+                run_all_cells(page, base, name)
+                out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
+                text = out.inner_text()
+                info = json.loads(text.split("BENCH-EDITOR", 1)[1])
+                if args.shots:
+                    shots(page, args.shots)
+                rt, fig = bench_baselines(page, tries)
+                step, drag_fps, play_fps, toggles = bench_player(page, tries)
+                editor_fps, editor_first = bench_editor(page, max(2, tries // 4), info)
+            finally:
+                browser.close()
+    finally:
+        stop_lab(proc, log)
+        shutil.rmtree(work, ignore_errors=True)
+    r = statistics.median(rt)
+    print(f"teachraster in JupyterLab + headless Chromium, 1400x900; {tries} tries per latency")
+    print(f"{'latency (ms)':<46}{'median':>8}{'max':>8}{'/ rt':>8}  target")
+    summary("baseline: do-nothing IntSlider -> Output (rt)", rt, r)
+    summary("baseline: plain figure redrawn from a slider", fig, r)
+    summary("FillPlayer: next step (in the page)", step, r, "<= 20 ms")
+    summary("FillPlayer: method toggle (kernel)", toggles, r, f"<= 2 rt = {2 * r:.0f} ms")
+    if editor_first:
+        summary("TriangleEditor: first frame of a drag", editor_first, r,
+                f"<= rt + 30 = {r + 30:.0f} ms")  # fmt: skip
+    print(f"{'frame rates (fps)':<46}{'median':>8}{'min':>8}")
+    print(f"{'FillPlayer: step slider dragged':<46}{drag_fps:>8.1f}{drag_fps:>8.1f}  >= 50")
+    print(f"{'FillPlayer: play at 20 ms/step':<46}{play_fps:>8.1f}{play_fps:>8.1f}  >= 40")
+    print(f"{'TriangleEditor: vertex dragged (fills/s)':<46}"
+          f"{statistics.median(editor_fps):>8.1f}{min(editor_fps):>8.1f}  >= 20")  # fmt: skip
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

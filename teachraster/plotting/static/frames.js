@@ -1,0 +1,328 @@
+// teachraster's page-side frames player.
+//
+// A fill's steps are drawn once, by matplotlib in the kernel (or by the `teachraster fill`
+// command), and arrive here as groups of KEY steps: a key frame (the whole figure) and one
+// patch per later step (the rectangle of pixels that step changed, or nothing). Showing
+// step k paints the key frame of its group and the patches up to k on a canvas, so the
+// slider, the buttons and Play change the picture without asking the kernel; the kernel
+// hears of the step only when the slider is released or Play is paused.
+//
+// The same code runs as an anywidget module (the default export, in JupyterLab, Notebook 7,
+// VS Code, Colab) and inlined in an offline HTML page (teachraster.plotting.pages), where
+// every group is in the page and nothing is fetched.
+
+const CSS = `
+.tr-frames { font-family: var(--jp-ui-font-family, sans-serif); max-width: 100%; }
+.tr-frames .tr-bar { display: flex; align-items: center; gap: 4px; flex-wrap: nowrap;
+  margin: 4px 0; }
+.tr-frames button { min-width: 34px; height: 28px; padding: 0 6px; cursor: pointer;
+  border: 1px solid #bbb; border-radius: 3px; background: #f5f5f5; font-size: 14px; }
+.tr-frames button:focus-visible, .tr-frames input:focus-visible { outline: 2px solid #1976d2; }
+.tr-frames input[type=range] { flex: 1 1 320px; min-width: 160px; max-width: 460px; }
+.tr-frames .tr-info { white-space: nowrap; font-size: 13px; min-width: 9em; }
+.tr-frames .tr-caption { min-height: 3.2em; padding: 2px 6px; border: 1px solid #ddd;
+  font-size: 15px; margin: 2px 0 4px 0; }
+.tr-frames canvas { display: block; max-width: 100%; height: auto; }
+.tr-frames .tr-notice { color: #b00020; font-size: 13px; min-height: 0; }
+`;
+
+function makeButton(label, text) {
+  const b = document.createElement("button");
+  b.type = "button";
+  b.textContent = text;
+  b.title = label;
+  b.setAttribute("aria-label", label);
+  return b;
+}
+
+function b64Bytes(b64) {
+  const raw = atob(b64);
+  const out = new Uint8Array(raw.length);
+  for (let i = 0; i < raw.length; i++) out[i] = raw.charCodeAt(i);
+  return out;
+}
+
+// Decode one group: [[x, y], ...] with PNG bytes (or empty: the step changed nothing).
+async function decodeGroup(places, blobs) {
+  return Promise.all(
+    places.map(async ([x, y], i) => {
+      const bytes = blobs[i];
+      if (!bytes || bytes.byteLength === 0) return null;
+      const blob = new Blob([bytes], { type: "image/png" });
+      return { x, y, bitmap: await createImageBitmap(blob) };
+    }),
+  );
+}
+
+// Mount a player in `el`. `opts`: width, height (pixels of a frame), n (steps), key (steps
+// per group), step, interval (ms per step when playing), captions, infos (text per step),
+// poster (PNG bytes of the first picture, optional), request(g) (ask for group g; absent
+// in a static page), onStep(k) (the step settled: slider released, button, pause).
+export function mountFrames(el, opts) {
+  if (!document.getElementById("tr-frames-css")) {
+    const style = document.createElement("style");
+    style.id = "tr-frames-css";
+    style.textContent = CSS;
+    document.head.appendChild(style);
+  }
+  const root = document.createElement("div");
+  root.className = "tr-frames";
+  const bar = document.createElement("div");
+  bar.className = "tr-bar";
+  const first = makeButton("first step", "⏮");
+  const prev = makeButton("previous step", "◀");
+  const play = makeButton("play", "▶ play");
+  const next = makeButton("next step", "▶");
+  const last = makeButton("last step", "⏭");
+  const slider = document.createElement("input");
+  slider.type = "range";
+  slider.min = "0";
+  slider.setAttribute("aria-label", "step");
+  slider.title = "step";
+  const info = document.createElement("span");
+  info.className = "tr-info";
+  bar.append(first, prev, play, next, last, slider, info);
+  const caption = document.createElement("div");
+  caption.className = "tr-caption teachraster-caption";
+  caption.setAttribute("aria-live", "polite");
+  const notice = document.createElement("div");
+  notice.className = "tr-notice";
+  const canvas = document.createElement("canvas");
+  canvas.className = "teachraster-figure";
+  canvas.setAttribute("role", "img");
+  const ctx = canvas.getContext("2d");
+  root.append(bar, caption, canvas, notice);
+  el.appendChild(root);
+  // Keys pressed in the player (arrows on the slider, space on a button) are the player's:
+  // JupyterLab's command-mode shortcuts must not also see them.
+  root.addEventListener("keydown", (e) => e.stopPropagation());
+
+  const s = {
+    groups: new Map(), asked: new Set(), inflight: null, shown: -1, want: 0,
+    timer: null, n: 0, key: 16, captions: [], infos: [], interval: 400, gen: 0,
+  };
+
+  function label(k) {
+    caption.textContent = s.captions[k] ?? "";
+    info.textContent = `${k} ${s.infos[k] ?? ""}`;
+  }
+
+  function paint(p) {
+    if (p) ctx.drawImage(p.bitmap, p.x, p.y);
+  }
+
+  // Paint step k if its group is here; else ask for the group and paint when it comes.
+  function draw(k) {
+    const g = Math.floor(k / s.key);
+    const group = s.groups.get(g);
+    if (!group) {
+      need(g);
+      return false;
+    }
+    const k0 = g * s.key;
+    let from = k0 + 1;
+    if (s.shown >= k0 && s.shown <= k && Math.floor(s.shown / s.key) === g) {
+      from = s.shown + 1; // forward within the group: only the new patches
+    } else {
+      paint(group[0]);
+    }
+    for (let j = from; j <= k; j++) paint(group[j - k0]);
+    s.shown = k;
+    canvas.dataset.step = String(k);
+    canvas.dataset.gen = String(s.gen); // the fill on show (tests and benchmarks wait on it)
+    label(k);
+    return true;
+  }
+
+  function show(k) {
+    k = Math.max(0, Math.min(s.n - 1, k));
+    s.want = k;
+    slider.value = String(k);
+    if (k !== s.shown) draw(k);
+  }
+
+  // One request at a time: the kernel renders a group at a time, and the page always asks
+  // for the one it needs most (the step wanted, then ahead of it, then the rest).
+  function need(g) {
+    if (!opts.request || s.groups.has(g) || s.asked.has(g)) return;
+    if (s.inflight === null) {
+      s.inflight = g;
+      s.asked.add(g);
+      s.askedAt = performance.now();
+      opts.request(g, s.gen);
+      setTimeout(() => checkAlive(g), 8000);
+    } else {
+      s.priority = g;
+    }
+  }
+
+  function checkAlive(g) {
+    if (s.inflight === g && !s.groups.has(g)) {
+      notice.textContent =
+        "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
+        "the player back.";
+    }
+  }
+
+  function nextMissing() {
+    const count = Math.ceil(s.n / s.key);
+    const here = Math.floor(s.want / s.key);
+    if (s.priority !== undefined && !s.groups.has(s.priority)) return s.priority;
+    for (let i = 0; i < count; i++) {
+      const g = (here + i) % count;
+      if (!s.groups.has(g) && !s.asked.has(g)) return g;
+    }
+    return null;
+  }
+
+  async function addGroup(g, places, blobs, gen) {
+    if (gen !== s.gen) return;
+    const frames = await decodeGroup(places, blobs);
+    if (gen !== s.gen) return;
+    s.groups.set(g, frames);
+    canvas.dataset.groups = String(s.groups.size); // for tests and benchmarks
+    notice.textContent = "";
+    if (s.inflight === g) s.inflight = null;
+    if (s.priority === g) s.priority = undefined;
+    if (s.want !== s.shown) draw(s.want);
+    const more = nextMissing();
+    if (more !== null) need(more);
+  }
+
+  function settle() {
+    if (opts.onStep) opts.onStep(s.want);
+  }
+
+  function stop() {
+    if (s.timer !== null) {
+      clearInterval(s.timer);
+      s.timer = null;
+      play.textContent = "▶ play";
+      play.title = "play";
+      play.setAttribute("aria-label", "play");
+      settle();
+    }
+  }
+
+  function tick() {
+    if (s.want >= s.n - 1) return stop();
+    // wait for a group still on its way rather than skip its steps
+    if (s.shown === s.want) show(s.want + 1);
+    else draw(s.want);
+  }
+
+  function start() {
+    if (s.want >= s.n - 1) show(0);
+    play.textContent = "⏸ pause";
+    play.title = "pause (playing)";
+    play.setAttribute("aria-label", "pause (play is on)");
+    s.timer = setInterval(tick, s.interval);
+  }
+
+  play.addEventListener("click", () => (s.timer === null ? start() : stop()));
+  first.addEventListener("click", () => { stop(); show(0); settle(); });
+  prev.addEventListener("click", () => { stop(); show(s.want - 1); settle(); });
+  next.addEventListener("click", () => { stop(); show(s.want + 1); settle(); });
+  last.addEventListener("click", () => { stop(); show(s.n - 1); settle(); });
+  slider.addEventListener("input", () => { stop(); show(Number(slider.value)); });
+  slider.addEventListener("change", settle);
+
+  // A new fill (or the first): new steps, new captions, new groups.
+  async function reset(o) {
+    stop();
+    s.gen = o.gen ?? s.gen + 1;
+    s.groups.clear();
+    canvas.dataset.groups = "0";
+    s.asked.clear();
+    s.inflight = null;
+    s.priority = undefined;
+    s.n = o.n;
+    s.key = o.key;
+    s.captions = o.captions;
+    s.infos = o.infos;
+    s.shown = -1;
+    slider.max = String(o.n - 1);
+    canvas.width = o.width;
+    canvas.height = o.height;
+    canvas.style.width = `${o.width}px`;
+    canvas.setAttribute("aria-label", o.alt ?? "the fill, step by step");
+    s.want = Math.max(0, Math.min(o.n - 1, o.step));
+    slider.value = String(s.want);
+    if (o.poster && o.poster.byteLength) {
+      const bitmap = await createImageBitmap(new Blob([o.poster], { type: "image/png" }));
+      ctx.drawImage(bitmap, 0, 0);
+      s.shown = s.want;
+      canvas.dataset.step = String(s.want);
+      canvas.dataset.gen = String(s.gen);
+      label(s.want);
+    }
+    for (const [g, group] of o.groups ?? []) {
+      await addGroup(g, group.places, group.blobs, s.gen);
+    }
+    if (s.shown !== s.want) draw(s.want);
+    else need(Math.floor(s.want / s.key));
+  }
+
+  function setInterval_(ms) {
+    s.interval = ms;
+    if (s.timer !== null) {
+      clearInterval(s.timer);
+      s.timer = setInterval(tick, ms);
+    }
+  }
+
+  s.interval = opts.interval ?? 400;
+  return { root, reset, addGroup, show, stop, start, setInterval: setInterval_, state: s };
+}
+
+// -- an offline page: every group is in the page as base64 PNGs ----------------------------
+export async function mountStatic(el, data) {
+  const player = mountFrames(el, { interval: data.interval });
+  const groups = data.groups.map((g, i) => [
+    i, { places: g.places, blobs: g.pngs.map((b) => (b ? b64Bytes(b) : null)) },
+  ]);
+  await player.reset({ ...data, groups, gen: 0 });
+  return player;
+}
+
+// -- the anywidget side ---------------------------------------------------------------------
+function render({ model, el }) {
+  const player = mountFrames(el, {
+    interval: model.get("interval"),
+    request: (g, gen) => model.send({ type: "group", group: g, gen }),
+    onStep: (k) => {
+      if (model.get("value") !== k) {
+        model.set("value", k);
+        model.save_changes();
+      }
+    },
+  });
+  function fromModel() {
+    const poster = model.get("poster");
+    player.reset({
+      width: model.get("frame_width"), height: model.get("frame_height"),
+      n: model.get("n_steps"), key: model.get("key"), step: model.get("value"),
+      captions: model.get("captions"), infos: model.get("infos"), gen: model.get("gen"),
+      alt: model.get("alt"),
+      poster: poster ? new Uint8Array(poster.buffer ?? poster) : null,
+    });
+  }
+  model.on("change:gen", fromModel);
+  model.on("change:value", () => {
+    const k = model.get("value");
+    if (k !== player.state.want) {
+      player.stop();
+      player.show(k);
+    }
+  });
+  model.on("change:interval", () => player.setInterval(model.get("interval")));
+  model.on("msg:custom", (msg, buffers) => {
+    if (msg.type === "group") {
+      player.addGroup(msg.group, msg.places, buffers.map((b) => b.buffer ?? b), msg.gen);
+    }
+  });
+  fromModel();
+  return () => player.stop();
+}
+
+export default { render };

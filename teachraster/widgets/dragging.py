@@ -1,0 +1,146 @@
+"""Dragging in the page: a figure whose points are moved by pointer events (``static/drag.js``).
+
+The page shows the figure as an ``<img>`` and draws the pointer feedback itself (a ring at
+the pointer); the kernel hears of positions through custom messages with their own flow
+control: at most two positions unanswered (one rendered, one waiting, so the kernel does
+not idle for a round trip), each the latest when sent (positions that arrive meanwhile are
+coalesced, never queued), and the release position always, so the drag ends exactly where
+the pointer let go. Each answer is the re-rendered figure.
+
+For the kernel to keep up, the editor redraws only what a move changes: the plans below
+keep the pixel grid, tick labels, centres and legend in a cached background
+(:class:`~teachraster.plotting.blitting.LayeredBlit`) and draw only the triangle's artists.
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import anywidget
+import traitlets
+
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
+from ..plotting.frames import encode_png, frame_rgba
+
+
+def drag_js() -> str:
+    """The page-side module (ESM), read from the package (``static/drag.js``)."""
+    return (Path(__file__).parent / "static" / "drag.js").read_text(encoding="utf-8")
+
+
+def fill_edit_blit(view) -> LayeredBlit:
+    """A blit of a FillView whose triangle moves: only the grid and the centres stay."""
+    still = [view.grid.lines, *view.ax.spines.values()]
+    if view.centres is not None:
+        still += [view.centres.inside, view.centres.outside]
+    t, r, p, s, b = view.triangle, view.raster_line, view.pixel, view.split, view.bbox
+    parts = [view.rejected, view.coverage.image, r.band, b.outline, b.cells, s.line,
+             t.outline, *t.arrows, t.vertices, r.cells, p.box, r.span, p.centre, s.point,
+             s.label, *t.labels, *t.edge_labels, *getattr(s, "artists", [])]  # fmt: skip
+    moving = sorted({id(a): a for a in parts}.values(), key=lambda a: a.get_zorder())
+    level = min(a.get_zorder() for a in still)
+    below = [a for a in moving if a.get_zorder() < level]
+    above = [a for a in moving if a.get_zorder() >= level]
+    return LayeredBlit(view.fig, [(MOVING, below), (STILL, still), (MOVING, above)])
+
+
+def comparison_edit_blit(view) -> LayeredBlit:
+    """A blit of an InterpolationView whose fill changes: images, outlines, colour bars,
+    the heatmap's title move; the grids, panel titles and "in use" notes stay."""
+    images = [art.image for art in view.images] + [view.heatmap.image]
+    still = [g.lines for g in view.grids if g is not None]
+    bars = [art.colorbar.ax for art in [*view.images, view.heatmap]
+            if getattr(art, "colorbar", None) is not None]  # fmt: skip
+    tris = [a for tri in view.triangles for a in tri.artists]
+    return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
+                                  (MOVING, [*tris, view.heatmap.title, *bars])])  # fmt: skip
+
+
+class DragFigure(anywidget.AnyWidget):
+    """A figure in the page whose ``handles`` (data coordinates) can be dragged.
+
+    ``transform`` maps data to figure pixels from the top left: ``[x0, y0, sx, sy]`` with
+    ``px = x0 + sx * x`` and ``py = y0 + sy * y``. ``poster`` is the picture a new view
+    shows first; later pictures arrive as messages. ``on_move(i, x, y, final)`` is called
+    for each position the page sends and must re-render (then :meth:`show` the figure).
+    """
+
+    _esm = drag_js()
+    poster = traitlets.Bytes(b"").tag(sync=True)
+    handles = traitlets.List().tag(sync=True)
+    transform = traitlets.List([0.0, 0.0, 1.0, 1.0]).tag(sync=True)
+    size = traitlets.List([1, 1]).tag(sync=True)
+    alt = traitlets.Unicode("").tag(sync=True)
+
+    def __init__(self, on_move=None, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.on_move = on_move
+        self.moves = 0
+        self._seq = 0
+        self._t0 = 0.0
+        self.on_msg(self._on_page_message)
+
+    def _on_page_message(self, _widget, content, _buffers) -> None:
+        if content.get("type") != "move" or self.on_move is None:
+            return
+        self.moves += 1
+        self._seq = int(content.get("seq", 0))
+        self._t0 = time.perf_counter()
+        final = bool(content.get("final"))
+        self.on_move(int(content["i"]), float(content["x"]), float(content["y"]), final)
+
+    def show(self, fig, ax, handles, *, final: bool = True) -> None:
+        """Send the figure's current pixels (drawn already) and where the handles are now.
+
+        ``final``: also keep the picture as the poster (what a re-opened view shows).
+        """
+        rgba = frame_rgba(fig)
+        png = encode_png(rgba)
+        h, w = rgba.shape[:2]
+        box = ax.get_window_extent()
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        sx, sy = box.width / (x1 - x0), -box.height / (y1 - y0)
+        transform = [box.x0 - sx * x0, (h - box.y0) - sy * y0, sx, sy]
+        with self.hold_sync():
+            self.size, self.transform = [w, h], transform
+            self.handles = [[float(x), float(y)] for x, y in handles]
+            if final:
+                self.poster = png
+        # kernel_ms: from the position's arrival to this answer (for benchmarks)
+        kernel_ms = (time.perf_counter() - self._t0) * 1e3 if self._t0 else 0.0
+        self._t0 = 0.0
+        self.send({"type": "frame", "seq": self._seq, "handles": self.handles,
+                   "kernel_ms": kernel_ms}, [png])  # fmt: skip
+
+
+def same_or_new(old: LayeredBlit, new: LayeredBlit) -> LayeredBlit:
+    """``old`` (with its cached background) while it plans the same artists, else ``new``."""
+    if [(k, list(map(id, a))) for k, a in old.plan] == [(k, list(map(id, a))) for k, a in new.plan]:
+        return old
+    return new
+
+
+class PageDisplay:
+    """A figure shown by a :class:`DragFigure`, with FigureDisplay's ``refresh``/``close``.
+
+    ``draw`` renders the figure (a blit); ``handles()`` gives the draggable points;
+    ``on_move(i, x, y, final)`` is called with positions from the page. ``final`` is False
+    while a drag is under way (the picture is then not kept as the poster).
+    """
+
+    def __init__(self, fig, ax, draw, handles, *, on_move) -> None:
+        self.fig, self.ax, self.draw, self.handles = fig, ax, draw, handles
+        self.widget = DragFigure(on_move=on_move, alt="the triangle's fill; drag a vertex")
+        self.draws = 0
+        self.final = True
+        self.refresh()
+
+    def refresh(self) -> None:
+        """Draw and send the figure to the page."""
+        self.draws += 1
+        self.draw()
+        self.widget.show(self.fig, self.ax, self.handles(), final=self.final)
+
+    def close(self) -> None:
+        self.widget.close()

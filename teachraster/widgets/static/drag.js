@@ -1,0 +1,161 @@
+// teachraster: drag the points of a kernel-drawn figure, in the page.
+//
+// The figure is an <img>; a canvas over it draws the pointer feedback (a ring where the
+// pointer holds a point) at once. Positions go to the kernel as custom messages with their
+// own flow control: at most IN_FLIGHT unanswered (one being rendered, one waiting, so the
+// kernel never idles for a round trip), each the latest position when sent; positions that
+// come meanwhile replace each other, so the kernel never works through a queue. The release
+// is always sent, so the drag ends exactly where the pointer let go. Each answer carries
+// the new picture.
+
+const IN_FLIGHT = 2;
+
+const CSS = `
+.tr-drag { position: relative; display: inline-block; max-width: 100%; touch-action: none; }
+.tr-drag img { display: block; max-width: 100%; height: auto; user-select: none; }
+.tr-drag canvas { position: absolute; left: 0; top: 0; width: 100%; height: 100%;
+  pointer-events: none; }
+.tr-drag-notice { color: #b00020; font-size: 13px; }
+`;
+
+function render({ model, el }) {
+  if (!document.getElementById("tr-drag-css")) {
+    const style = document.createElement("style");
+    style.id = "tr-drag-css";
+    style.textContent = CSS;
+    document.head.appendChild(style);
+  }
+  const box = document.createElement("div");
+  box.className = "tr-drag";
+  const img = document.createElement("img");
+  img.className = "teachraster-figure";
+  img.draggable = false;
+  const overlay = document.createElement("canvas");
+  const notice = document.createElement("div");
+  notice.className = "tr-drag-notice";
+  box.append(img, overlay);
+  el.append(box, notice);
+  const ctx = overlay.getContext("2d");
+
+  let url = null;
+  function showPng(bytes) {
+    const next = URL.createObjectURL(new Blob([bytes], { type: "image/png" }));
+    img.src = next;
+    if (url) URL.revokeObjectURL(url);
+    url = next;
+  }
+
+  // figure pixels <-> data, and the pointer in figure pixels
+  const toPx = ([x, y]) => {
+    const [x0, y0, sx, sy] = model.get("transform");
+    return [x0 + sx * x, y0 + sy * y];
+  };
+  const toData = ([px, py]) => {
+    const [x0, y0, sx, sy] = model.get("transform");
+    return [(px - x0) / sx, (py - y0) / sy];
+  };
+  function pointer(e) {
+    const r = img.getBoundingClientRect();
+    const [w, h] = model.get("size");
+    return [((e.clientX - r.left) * w) / r.width, ((e.clientY - r.top) * h) / r.height];
+  }
+
+  // pending: seq -> time sent, of the positions not answered yet
+  const s = { dragging: null, latest: null, sent: null, pending: new Map(), seq: 0 };
+
+  function feedback(px) {
+    const [w, h] = model.get("size");
+    overlay.width = w;
+    overlay.height = h;
+    ctx.clearRect(0, 0, w, h);
+    if (px) {
+      ctx.lineWidth = 3;
+      ctx.strokeStyle = "rgba(213, 94, 0, 0.9)";
+      ctx.beginPath();
+      ctx.arc(px[0], px[1], 9, 0, 2 * Math.PI);
+      ctx.stroke();
+    }
+  }
+
+  function send(final) {
+    const [x, y] = s.latest;
+    s.seq += 1;
+    s.sent = s.latest;
+    if (!final) {
+      s.pending.set(s.seq, performance.now());
+      setTimeout(() => checkAlive(s.seq), 6000);
+    }
+    model.send({ type: "move", i: s.dragging, x, y, seq: s.seq, final });
+  }
+
+  function pump() {
+    if (s.dragging !== null && s.latest && s.pending.size < IN_FLIGHT && s.latest !== s.sent) {
+      send(false);
+    }
+  }
+
+  function checkAlive(seq) {
+    if (s.pending.has(seq)) {
+      notice.textContent =
+        "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
+        "the editor back.";
+    }
+  }
+
+  img.addEventListener("pointerdown", (e) => {
+    if (e.button !== 0) return;
+    const p = pointer(e);
+    const r = img.getBoundingClientRect();
+    const scale = model.get("size")[0] / r.width; // figure pixels per CSS pixel
+    let best = null;
+    let bestD = 16 * scale; // within 16 CSS pixels of a point
+    model.get("handles").forEach((h, i) => {
+      const [hx, hy] = toPx(h);
+      const d = Math.hypot(hx - p[0], hy - p[1]);
+      if (d <= bestD) [best, bestD] = [i, d];
+    });
+    if (best === null) return;
+    e.preventDefault();
+    img.setPointerCapture(e.pointerId);
+    s.dragging = best;
+    s.latest = toData(p);
+    feedback(p);
+    pump();
+  });
+  img.addEventListener("pointermove", (e) => {
+    if (s.dragging === null) return;
+    const p = pointer(e);
+    s.latest = toData(p);
+    feedback(p);
+    pump();
+  });
+  function release(e) {
+    if (s.dragging === null) return;
+    s.latest = toData(pointer(e));
+    send(true);
+    s.dragging = null;
+    feedback(null);
+  }
+  img.addEventListener("pointerup", release);
+  img.addEventListener("pointercancel", release);
+
+  model.on("msg:custom", (msg, buffers) => {
+    if (msg.type !== "frame") return;
+    showPng(buffers[0]);
+    notice.textContent = "";
+    img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
+    img.dataset.kernelMs = String(Math.round(msg.kernel_ms ?? 0)); // for benchmarks
+    const sent = s.pending.get(msg.seq);
+    if (sent) img.dataset.roundTripMs = String(Math.round(performance.now() - sent));
+    for (const seq of [...s.pending.keys()]) if (seq <= msg.seq) s.pending.delete(seq);
+    pump();
+  });
+  const poster = model.get("poster");
+  if (poster && poster.byteLength) showPng(poster);
+  img.alt = model.get("alt");
+  return () => {
+    if (url) URL.revokeObjectURL(url);
+  };
+}
+
+export default { render };

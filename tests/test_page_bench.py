@@ -1,0 +1,32 @@
+"""The browser benchmark runs (``benchmarks/bench_browser.py --quick``): JupyterLab, Chromium,
+every widget of its notebook driven once, every figure printed. Skipped, saying why, where
+Playwright, Chromium or JupyterLab is missing."""
+
+from __future__ import annotations
+
+import importlib.util
+import shutil
+import sys
+from pathlib import Path
+
+import pytest
+from test_page_offline import WHY
+
+BENCH = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_browser.py"
+
+pytestmark = pytest.mark.skipif(
+    WHY is not None or shutil.which("jupyter", path=str(Path(sys.executable).parent)) is None,
+    reason=f"browser benchmark skipped: {WHY or 'JupyterLab is not installed'}",
+)
+
+
+def test_browser_benchmark_quick_run_reports_every_figure(capsys):
+    spec = importlib.util.spec_from_file_location("bench_browser", BENCH)
+    bench = importlib.util.module_from_spec(spec)
+    sys.modules["bench_browser"] = bench
+    spec.loader.exec_module(bench)
+    assert bench.main(["--quick"]) == 0
+    out = capsys.readouterr().out
+    for line in ("do-nothing IntSlider", "plain figure", "next step", "method toggle",
+                 "step slider dragged", "play at 20 ms/step", "vertex dragged"):  # fmt: skip
+        assert line in out, line

@@ -1,0 +1,74 @@
+"""Offline pages from the command line: ``teachraster fill -o x.html`` and ``teachraster html``."""
+
+from __future__ import annotations
+
+import json
+import re
+import time
+
+import nbformat
+import pytest
+
+from teachraster.cli import main
+from teachraster.cli.export import drop_widget_views
+
+XY = ["--xy", "2.2,1.5 13.7,5.2 5.1,12.8"]
+
+
+def test_fill_page_is_one_file_with_every_step_and_no_address(tmp_path, capsys):
+    out = tmp_path / "fill.html"
+    assert main(["fill", *XY, "--method", "halfplane", "--size", "12x12", "-o", str(out)]) == 0
+    text = out.read_text()
+    data = json.loads(re.search(r"mountStatic\([^,]+, (\{.*\})\);", text).group(1))
+    assert data["n"] > 50 and len(data["captions"]) == data["n"]
+    assert sum(len(g["pngs"]) for g in data["groups"]) == data["n"]
+    assert not re.search(r"(src|href)=['\"]?(https?:)?//", text)  # nothing fetched
+    assert "steps that step and play offline" in capsys.readouterr().out
+
+
+def test_huge_fill_sizes_are_refused_at_once_with_a_reason(tmp_path, capsys):
+    t0 = time.perf_counter()
+    with pytest.raises(SystemExit) as exc:
+        main(["fill", *XY, "--size", "4096x4096", "-o", str(tmp_path / "x.gif")])
+    assert exc.value.code == 2 and time.perf_counter() - t0 < 5
+    assert "argument --size" in capsys.readouterr().err
+
+
+def test_an_animation_estimated_too_long_is_refused(tmp_path, capsys, monkeypatch):
+    from teachraster.cli import export
+
+    monkeypatch.setattr(export, "MAX_EXPORT_SECONDS", 0.001)
+    with pytest.raises(SystemExit):
+        main(["fill", *XY, "--size", "16x16", "-o", str(tmp_path / "x.gif")])
+    assert "--every" in capsys.readouterr().err
+
+
+def test_html_export_keeps_the_html_of_widgets_and_drops_their_state():
+    nb = nbformat.v4.new_notebook()
+    view = "application/vnd.jupyter.widget-view+json"
+    cell = nbformat.v4.new_code_cell("player")
+    cell.outputs = [nbformat.v4.new_output("display_data", data={
+        view: {"model_id": "x"}, "text/html": "<div>page</div>", "text/plain": "p"})]  # fmt: skip
+    other = nbformat.v4.new_code_cell("slider")
+    other.outputs = [nbformat.v4.new_output("display_data", data={view: {"model_id": "y"}})]
+    nb.cells = [cell, other]
+    nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": {}}}
+    assert drop_widget_views(nb) == 1
+    assert view not in cell.outputs[0]["data"] and view in other.outputs[0]["data"]
+    assert "widgets" not in nb.metadata
+
+
+@pytest.mark.filterwarnings("ignore")
+def test_teachraster_html_turns_a_player_into_an_offline_page(tmp_path):
+    pytest.importorskip("nbconvert")
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(
+        "import teachraster as tr\nfrom teachraster.widgets import FillPlayer\n"
+        "FillPlayer(tr.Triangle([[1, 1], [7, 2], [3, 7]]), 8, 8)")]  # fmt: skip
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}  # fmt: skip
+    src, out = tmp_path / "lesson.ipynb", tmp_path / "lesson.html"
+    nbformat.write(nb, src)
+    assert main(["html", str(src), "-o", str(out)]) == 0
+    text = out.read_text()
+    assert "mountStatic(" in text and "widget-view+json" not in text
