@@ -4,27 +4,14 @@ GL_FRAMEBUFFER_SRGB: within one 8-bit step. Skipped, with the reason, without Op
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
+from gl_required import require_gl
 
-try:
-    import moderngl  # noqa: F401
-except ImportError as exc:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise
-    pytest.skip(f"needs moderngl: {exc}", allow_module_level=True)
+require_gl()
 
 import teachraster as tr
-from teachraster.study.opengl import gl_available
 from teachraster.study.opengl_blend import gl_blend
-
-GL_OK, GL_WHY = gl_available()
-if not GL_OK:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise RuntimeError(f"TEACHRASTER_REQUIRE_GL is set but no OpenGL context: {GL_WHY}")
-    pytest.skip(f"no OpenGL context: {GL_WHY}", allow_module_level=True)
 
 W, H = 32, 32
 MODES = ["over", "premultiplied", "additive", "multiply"]

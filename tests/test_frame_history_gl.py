@@ -6,29 +6,16 @@ TEACHRASTER_REQUIRE_GL=1, which makes that an error)."""
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
+from gl_required import require_gl
 
-try:
-    import moderngl  # noqa: F401
-except ImportError as exc:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise
-    pytest.skip(f"needs moderngl: {exc}", allow_module_level=True)
+require_gl()
 
 import teachraster as tr
 from teachraster.pipeline.debugging.overlays import passed_per_triangle
 from teachraster.pipeline.scenes import SCENES, get_scene
-from teachraster.study.opengl import gl_available
 from teachraster.study.opengl_counters import gl_counters
-
-GL_OK, GL_WHY = gl_available()
-if not GL_OK:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise RuntimeError(f"TEACHRASTER_REQUIRE_GL is set but no OpenGL context: {GL_WHY}")
-    pytest.skip(f"no OpenGL context: {GL_WHY}", allow_module_level=True)
 
 W, H = 64, 32  # powers of two: the window positions survive float32 exactly
 

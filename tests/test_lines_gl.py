@@ -13,28 +13,16 @@ llvmpipe exactly, and the rectangle differs.
 from __future__ import annotations
 
 import collections
-import os
 
 import numpy as np
 import pytest
+from gl_required import require_gl
 
-try:
-    import moderngl  # noqa: F401
-except ImportError as exc:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise
-    pytest.skip(f"needs moderngl: {exc}", allow_module_level=True)
+require_gl()
 
 import teachraster as tr
 from teachraster.core.lines import wide_line_triangles
-from teachraster.study.opengl import gl_available
 from teachraster.study.opengl_lines import gl_lines, llvmpipe_deviation
-
-GL_OK, GL_WHY = gl_available()
-if not GL_OK:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise RuntimeError(f"TEACHRASTER_REQUIRE_GL is set but no OpenGL context: {GL_WHY}")
-    pytest.skip(f"no OpenGL context: {GL_WHY}", allow_module_level=True)
 
 W, H = 64, 32  # powers of two: the float32 viewport transform is exact on the 1/256 grid
 

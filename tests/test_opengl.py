@@ -29,40 +29,25 @@ on the 1/256 grid), so the window coordinates GL computes in float32 equal
 
 from __future__ import annotations
 
-import os
 import subprocess
 import sys
 import textwrap
 
 import numpy as np
 import pytest
+from gl_required import require_gl
 
-try:
-    import moderngl  # noqa: F401
-except ImportError as exc:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise
-    pytest.skip(
-        f"OpenGL cross-check needs moderngl (pip install moderngl): {exc}",
-        allow_module_level=True,
-    )
+require_gl()
 
 import teachraster as tr
 from teachraster.pipeline.viewport import to_window
 from teachraster.study.opengl import (
     GLFrame,
     GLRenderer,
-    gl_available,
     gl_render,
     gl_render_samples,
     gl_sample_positions,
 )
-
-GL_OK, GL_WHY = gl_available()
-if not GL_OK:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):  # set by .ci/run: in CI the check must run
-        raise RuntimeError(f"TEACHRASTER_REQUIRE_GL is set but no OpenGL context: {GL_WHY}")
-    pytest.skip(f"no OpenGL context can be created here: {GL_WHY}", allow_module_level=True)
 
 W, H = 64, 32
 EPS32 = float(np.finfo(np.float32).eps)

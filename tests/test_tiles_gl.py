@@ -3,26 +3,14 @@
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
+from gl_required import require_gl
 
-try:
-    import moderngl  # noqa: F401
-except ImportError as exc:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise
-    pytest.skip(f"needs moderngl: {exc}", allow_module_level=True)
+require_gl()
 
 import teachraster as tr
-from teachraster.study.opengl import gl_available, gl_render
-
-GL_OK, GL_WHY = gl_available()
-if not GL_OK:
-    if os.environ.get("TEACHRASTER_REQUIRE_GL"):
-        raise RuntimeError(f"TEACHRASTER_REQUIRE_GL is set but no OpenGL context: {GL_WHY}")
-    pytest.skip(f"no OpenGL context: {GL_WHY}", allow_module_level=True)
+from teachraster.study.opengl import gl_render
 
 W, H = 160, 96  # several 64-blocks, clipped at the right and bottom borders
 

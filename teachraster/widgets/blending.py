@@ -18,7 +18,7 @@ import numpy as np
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import render
 from ..plotting.lines import plot_rgba
-from .common import close_tree, style_context, title_html
+from .common import Shown, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
@@ -59,7 +59,7 @@ def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)
     return color
 
 
-class BlendingExplorer:
+class BlendingExplorer(Shown):
     """Submission order, premultiplied alpha and sRGB, with the colour buffer beside the sorted
     back-to-front one.
 
@@ -173,11 +173,3 @@ class BlendingExplorer:
         return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front"
                 f"{' (premultiplied)' if self.premultiplied.value else ''}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}")  # fmt: skip
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
-    def close(self) -> None:
-        """Close every widget of the explorer."""
-        self.display.close()
-        close_tree(self.widget)

@@ -105,3 +105,16 @@ def pattern_samples(label: str):
 
     n, kind = SAMPLE_PATTERNS[label]
     return n if kind == "standard" else sample_pattern(n, kind)
+
+
+class Shown:
+    """What every figure widget shares: it shows ``self.widget`` (its box of controls and
+    figure) and closes its figure display (``self.display``) with every control of the box."""
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def close(self) -> None:
+        """Close the figure and every widget of the box."""
+        self.display.close()
+        close_tree(self.widget)

@@ -14,7 +14,7 @@ import ipywidgets as widgets
 
 from ..plotting.pareto import plot_pareto, update_pareto
 from ..study.operation_counts import CYCLES_1990S
-from .common import close_tree, labelled, style_context, title_html
+from .common import Shown, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: The two error measures offered: the study's largest error and its mean.
@@ -35,7 +35,7 @@ def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0) ->
     return out
 
 
-class DivideCostExplorer:
+class DivideCostExplorer(Shown):
     """Accuracy against cost of the interpolation variants, with the divide's price a slider.
 
     Parameters
@@ -120,11 +120,3 @@ class DivideCostExplorer:
                 f"<b>{ratio:.3g}×</b> affine; the cheapest variant with a mean error under a "
                 f"texel: <b>{short_name(best['variant'])}</b> ({best['cycles']:.3g}). "
                 f"Front, cheapest first: {names}")  # fmt: skip
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
-    def close(self) -> None:
-        """Close every widget of the explorer."""
-        self.display.close()
-        close_tree(self.widget)

@@ -14,11 +14,11 @@ import ipywidgets as widgets
 from ..core.line_rules import RULES
 from ..core.lines import rasterize_line
 from ..plotting.lines import LineView
-from .common import close_tree, labelled, style_context, title_html
+from .common import Shown, labelled, style_context, title_html
 from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
 
-class LinePlayer:
+class LinePlayer(Shown):
     """Play a traced line step by step; ``rule`` toggles diamond / Bresenham / DDA.
 
     Parameters
@@ -85,11 +85,3 @@ class LinePlayer:
         self.slider.max = self.play.max = n - 1
         value = min(self.slider.value, n - 1)
         self.show(value)
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
-    def close(self) -> None:
-        """Close every widget of the player."""
-        self.display.close()
-        close_tree(self.widget)

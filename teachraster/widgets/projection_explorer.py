@@ -12,11 +12,11 @@ from __future__ import annotations
 import ipywidgets as widgets
 
 from ..plotting.projection import Segment, plot_projection
-from .common import close_tree, style_context, title_html
+from .common import Shown, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
-class ProjectionExplorer:
+class ProjectionExplorer(Shown):
     """The eye–screen–segment picture with a slider for the screen parameter q.
 
     Parameters
@@ -71,11 +71,3 @@ class ProjectionExplorer:
         """Move the ray to the slider's q and redraw."""
         self.t = self.artists.update(self.q.value)
         self.display.refresh()
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
-    def close(self) -> None:
-        """Close every widget of the explorer."""
-        self.display.close()
-        close_tree(self.widget)

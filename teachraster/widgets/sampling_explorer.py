@@ -11,11 +11,11 @@ from __future__ import annotations
 import ipywidgets as widgets
 
 from ..plotting.sampling import KERNELS, plot_sampling, sample_signal, update_sampling
-from .common import close_tree, labelled, style_context, title_html
+from .common import Shown, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
-class SamplingExplorer:
+class SamplingExplorer(Shown):
     """Sliders for the sample rate and the prefilter's width, a chooser for its shape.
 
     Parameters
@@ -85,11 +85,3 @@ class SamplingExplorer:
         return (f"{self.rate.value} samples per unit: Nyquist limit {r.nyquist:g} cycles, "
                 f"passed from x = {r.alias_from:.2f} on · RMS error of the reconstruction "
                 f"against an ideal low-pass: <b>{r.rms_error:.3f}</b>")  # fmt: skip
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
-    def close(self) -> None:
-        """Close every widget of the explorer."""
-        self.display.close()
-        close_tree(self.widget)

@@ -11,11 +11,11 @@ from __future__ import annotations
 import ipywidgets as widgets
 
 from ..plotting.zbuffer_steps import ZBufferStepView
-from .common import close_tree, style_context, title_html
+from .common import Shown, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
-class ZBufferStepper:
+class ZBufferStepper(Shown):
     """Triangle slider and previous/next buttons over a traced render.
 
     Parameters
@@ -82,11 +82,3 @@ class ZBufferStepper:
         """Show the slider's triangle and redraw."""
         self.counts = self.view.show(self.triangle.value)
         self.display.refresh()
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
-    def close(self) -> None:
-        """Close every widget of the stepper."""
-        self.display.close()
-        close_tree(self.widget)
