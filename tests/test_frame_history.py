@@ -298,3 +298,22 @@ def test_history_mentions_triangles_clipped_away_whole():
     h = frame.history(2, 2)
     assert h.clipped_away == 1 and [r.triangle for r in h] == [1]
     assert "clipped away whole" in str(h)
+
+
+def test_msaa_hidden_fragments_carry_the_values_their_pair_would_show():
+    """A fragment that passed at a sample and was hidden later carries the attributes of its
+    (pixel, triangle) pair, exactly those a render of that triangle alone shows there."""
+    scene = tr.get_scene("intersecting_triangles")
+    clip = scene.camera.clip(scene.mesh.corner_positions(), 64 / 48)
+    colours = scene.mesh.corner("color")
+    frame = tr.render(clip, 64, 48, attrs=colours, samples=4, trace=True)
+    checked = 0
+    for row, col in np.argwhere(frame.triangle_id >= 0)[::7]:
+        for rec in frame.history(row, col).records:
+            if rec.outcome != "passed" or rec.shown:
+                continue
+            alone = tr.render(clip[rec.triangle : rec.triangle + 1], 64, 48,
+                              attrs=colours[rec.triangle : rec.triangle + 1], samples=4)  # fmt: skip
+            np.testing.assert_array_equal(rec.value, alone.sample_attrs[row, col, rec.sample])
+            checked += 1
+    assert checked > 0

@@ -564,6 +564,35 @@ def _owners(pixel, parent, bits):
     return g_pixel[firsts], at[np.minimum.reduceat(best, firsts)]
 
 
+def _perspective_rows(w, interpolation: str, forced):
+    """(M,) bool: the triangles shaded perspective-correctly (w unequal, or all when the
+    plan forces "perspective"), none for affine interpolation; and whether it was forced."""
+    divide_all = "perspective" in forced and interpolation == "perspective"
+    perspective = np.ones(len(w), bool) if divide_all else ~np.all(w == w[:, :1], axis=1)
+    if interpolation == "affine":
+        perspective = np.zeros(len(w), bool)
+    return perspective, divide_all
+
+
+def pair_attributes(clipped, window, setup, options, tri, pixel, covers, width):
+    """Attributes (n, k) of triangles ``tri`` shaded once for ``pixel`` exactly as the
+    multisampled render shades a (pixel, triangle) pair; for frame debugging, which asks
+    for the pairs the render did not keep (fragments hidden later at every sample).
+
+    ``options`` = (interpolation, forced, offsets in px (S, 2), centroid); ``covers`` (n, S)
+    bool: the samples each triangle covers in its pixel (where it would have shown).
+    """
+    interpolation, forced, px, centroid = options
+    w = clipped.clip[:, :, 3]
+    source = weight_source(window[:, :, :2], setup, snapped_weights=False)
+    tables = shade_tables(
+        source, window, w, clipped.attrs, _perspective_rows(w, interpolation, forced)[0]
+    )
+    at_centroid = (centre_covered(setup, tri, pixel, width), covers) if centroid else None
+    values, _ = shade(tables, tri, pixel, covers, px, width, at_centroid)
+    return values.T
+
+
 def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
     """Fill, depth-test and shade a multisampled frame: a :class:`MultiFrame` and its effects.
 
@@ -592,11 +621,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         (force_test, force_ms),
     )
     w = clipped.clip[:, :, 3]
-    unequal = ~np.all(w == w[:, :1], axis=1)
-    divide_all = "perspective" in forced and interpolation == "perspective"
-    perspective = np.ones(len(w), bool) if divide_all else unequal
-    if interpolation == "affine":
-        perspective = np.zeros(len(w), bool)
+    perspective, divide_all = _perspective_rows(w, interpolation, forced)
     tables = shade_tables(source, window, w, clipped.attrs, perspective)
     sample_attrs, owner, attrs, depth, n_shaded = shade_pixels(
         sample_tri,

@@ -34,7 +34,7 @@ import numpy as np
 
 from ...core.edges import passes, setup_edges
 from ...core.multisample import offsets_in_units
-from ..antialiasing.multisampling import depth_planes, plane_depth
+from ..antialiasing.multisampling import depth_planes, pair_attributes, plane_depth
 from ..rasterization.batched_fill import weight_source
 from ..rendering.stages import Visibility, interpolate_stage
 from ..visibility.depth import quantize
@@ -63,8 +63,9 @@ class HistoryRecord:
         The depth buffer at this sample before and after it (inf: still empty).
     value : tuple of float
         The attributes it wrote ("passed"), else those interpolated there (covered), else ().
-        With MSAA, where attributes are evaluated once per pixel and triangle, only the
-        records a sample shows at the end carry them (the frame's ``sample_attrs``).
+        With MSAA, where attributes are evaluated once per pixel and triangle, the records
+        a sample shows at the end carry the frame's ``sample_attrs``; those hidden later
+        carry the same evaluation for their pair (at the centre, or the centroid sample).
     edge : tuple of int or None
         "not_covered": the first edge that failed, as (from, to) input vertex indices.
     outside : float
@@ -159,7 +160,9 @@ def pixel_history(frame, row, col) -> PixelHistory:
     records = _replay_buffer(records, dbg.inputs.depth_test)
     if dbg.offsets is not None:  # MSAA: the value a sample shows is the frame's own
         values = frame.sample_attrs[row, col]
+        hidden = _hidden_values(frame, dbg, row, col, records)
         records = [replace(r, value=tuple(float(v) for v in values[r.sample])) if r.shown
+                   else replace(r, value=hidden[r.piece]) if r.piece in hidden
                    else r for r in records]  # fmt: skip
     dropped = int((np.asarray(frame.trace.clip_status) == 2).sum())
     return PixelHistory(row, col, tuple(records), n_samples, dbg.inputs.depth_test,
@@ -321,6 +324,29 @@ def _multisampled(frame, dbg, row, col) -> list[HistoryRecord]:
                                     depth_before=np.nan, depth_after=np.nan)  # fmt: skip
             records.append(rec)
     return records
+
+
+def _hidden_values(frame, dbg, row, col, records) -> dict:
+    """MSAA: the attributes of the pieces that passed the depth test at some sample but show
+    none at the end, shaded once for the pixel as the render shades every pair it keeps."""
+    hidden = sorted({r.piece for r in records if r.outcome == "passed" and not r.shown})
+    if not hidden:
+        return {}
+    n_s = len(dbg.offsets)
+    covers = np.zeros((len(hidden), n_s), dtype=bool)
+    for r in records:
+        if r.piece in hidden and r.outcome not in ("culled", "not_covered"):
+            covers[hidden.index(r.piece), r.sample] = True
+    window = frame.trace.window
+    setup = _setup(dbg, window)
+    px = offsets_in_units(dbg.offsets, setup).astype(np.float64) / float(setup.unit)
+    a = dbg.inputs
+    width = frame.triangle_id.shape[1]
+    tri = np.asarray(hidden, dtype=np.int64)
+    pixel = np.full(len(tri), row * width + col, dtype=np.int64)
+    options = (a.interpolation, a.forced, px, dbg.centroid)
+    vals = pair_attributes(dbg.clipped, window, setup, options, tri, pixel, covers, width)
+    return {p: tuple(float(v) for v in vals[i]) for i, p in enumerate(hidden)}
 
 
 def _replay_buffer(records, depth_test) -> list[HistoryRecord]:
