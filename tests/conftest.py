@@ -182,3 +182,16 @@ any_triangle = st.one_of(
 @pytest.fixture
 def rng():
     return np.random.default_rng(20240611)
+
+
+@pytest.fixture(autouse=True)
+def _matplotlib_backend_left_alone():
+    """Importing ipympl (``pytest.importorskip("ipympl")``) makes it matplotlib's backend as
+    a side effect: put the setting back after each test, so no test sees another's backend."""
+    import sys
+
+    mpl = sys.modules.get("matplotlib")
+    raw = dict.__getitem__(mpl.rcParams, "backend") if mpl is not None else None
+    yield
+    if mpl is not None and dict.__getitem__(mpl.rcParams, "backend") != raw:
+        dict.__setitem__(mpl.rcParams, "backend", raw)

@@ -118,7 +118,7 @@ def _three_axes(axes):
     import matplotlib.pyplot as plt
 
     if axes is None:
-        return list(plt.subplots(1, 3, figsize=(9.4, 3.4), layout="constrained")[1])
+        return list(plt.subplots(1, 3, figsize=(9.0, 3.4), layout="constrained")[1])
     if hasattr(axes, "get_subplotspec") and axes.get_subplotspec() is not None:
         fig, spec = axes.figure, axes.get_subplotspec().subgridspec(1, 3)
         axes.remove()

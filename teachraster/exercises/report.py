@@ -183,7 +183,7 @@ class Report:
         if ax is None:
             import matplotlib.pyplot as plt
 
-            ax = plt.subplots(1, 3, figsize=(10, 4))[1]
+            ax = plt.subplots(1, 3, figsize=(9, 3.6))[1]
         pixel = None if pixel is None or pixel == "first" else _pixel(pixel)
         from .compare import draw_comparison
 

@@ -57,7 +57,7 @@ def resolve_backend(backend: str = "auto") -> str:
 def new_figure(figsize: tuple[float, float], mode: str, *, dpi: float | None = None) -> Figure:
     """A figure with a canvas suited to ``mode`` (``"ipympl"`` or ``"image"``), not in pyplot."""
     if mode == "ipympl":
-        from ipympl.backend_nbagg import FigureManager
+        FigureManager = ipympl_module().FigureManager  # noqa: N806 (ipympl's class)
 
         fig = Figure(figsize=figsize, dpi=dpi)
         canvas = fast_ipympl_canvas()(fig)
@@ -79,6 +79,21 @@ def new_figure(figsize: tuple[float, float], mode: str, *, dpi: float | None = N
 
 
 @functools.cache
+def ipympl_module():
+    """``ipympl.backend_nbagg``, imported without leaving it as pyplot's backend.
+
+    Importing it makes ipympl matplotlib's backend as a side effect; a widget that asks for
+    an ipympl canvas of its own must not change what ``plt.show()`` does in the student's
+    other cells (nor in the tests that run after it), so the backend setting is put back.
+    """
+    raw = dict.__getitem__(mpl.rcParams, "backend")  # as set, unresolved
+    import ipympl.backend_nbagg as module
+
+    dict.__setitem__(mpl.rcParams, "backend", raw)
+    return module
+
+
+@functools.cache
 def fast_ipympl_canvas():
     """ipympl's Canvas, encoding the frames it sends with :func:`encode_png`.
 
@@ -87,9 +102,8 @@ def fast_ipympl_canvas():
     a blitted step costs. This subclass encodes the same pixels the fast way; the browser
     side is ipympl's own.
     """
-    from ipympl.backend_nbagg import Canvas
 
-    class FastCanvas(Canvas):
+    class FastCanvas(ipympl_module().Canvas):
         def get_diff_image(self):
             # matplotlib's FigureCanvasWebAggCore.get_diff_image, but for the encoder
             if not self._png_is_old:
