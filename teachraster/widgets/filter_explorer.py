@@ -13,7 +13,7 @@ from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html
-from .display import COMPARISON_DPI, FigureDisplay, new_figure, resolve_backend
+from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 
@@ -89,7 +89,9 @@ class FilterExplorer:
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = self.fig.subplots(1, 3)
+            # as many panels per row as fit the notebook column (at the classroom style's
+            # fonts, two: the third goes below)
+            axes = comparison_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
                 "lod": plot_lod(axes[1], self.lod, 8),
