@@ -17,6 +17,7 @@ from ..pipeline.visibility.depth import depth_resolution, fights
 from ..plotting import COLORS
 from .common import close_tree, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
+from .live_slider import LiveSlider
 
 #: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
 FORMATS = ("unorm16", "unorm24", "float32")
@@ -61,7 +62,7 @@ class DepthPrecisionExplorer:
     ----------
     widget : ipywidgets.VBox
     format : ToggleButtons
-    near : FloatLogSlider
+    near : LiveSlider
     reverse : Checkbox
     z : ndarray
         Distances plotted, from ``near`` to ``far``.
@@ -87,8 +88,9 @@ class DepthPrecisionExplorer:
         self.far, self.delta = float(far), float(delta)
         self.backend = resolve_backend(backend)
         self.format = widgets.ToggleButtons(options=FORMATS, value=fmt)
-        self.near = widgets.FloatLogSlider(value=near, base=10, min=-2, max=1, step=0.05,
-                                           description="near", readout_format=".3g")  # fmt: skip
+        # in the page, coalesced: the kernel renders the latest value, never a queue
+        self.near = LiveSlider(value=near, base=10, min=-2, max=1, step=0.05,
+                               description="near", readout_format=".3g")  # fmt: skip
         self.reverse = widgets.Checkbox(value=reverse, description="reverse-Z")
         self._compute()
         with style_context(style):

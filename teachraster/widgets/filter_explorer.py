@@ -14,6 +14,7 @@ from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .live_slider import LiveSlider
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 
@@ -45,7 +46,7 @@ class FilterExplorer:
     Attributes
     ----------
     widget : ipywidgets.VBox
-    tilt : FloatSlider
+    tilt : LiveSlider
     filter : Dropdown
     image, truth, error : (H, W, 3), (H, W, 3), (H, W) arrays on show
     lod : (H, W) array
@@ -83,9 +84,10 @@ class FilterExplorer:
                              near=0.05, far=50.0)  # fmt: skip
         self.filter = widgets.Dropdown(options=list(TEXTURE_FILTERS), value=filter,
                                        description="filter")  # fmt: skip
-        self.tilt = widgets.FloatSlider(value=tilt, min=0.0, max=89.0, step=1.0,
-                                        description="tilt (°)", readout_format=".0f",
-                                        layout=widgets.Layout(width="420px"))  # fmt: skip
+        # in the page, coalesced: the kernel renders the latest angle, never a queue
+        self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
+                               description="tilt (°)", readout_format=".0f",
+                               layout=widgets.Layout(width="420px"))  # fmt: skip
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)

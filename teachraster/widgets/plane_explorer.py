@@ -22,6 +22,7 @@ from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from .common import close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
+from .live_slider import LiveSlider
 
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
@@ -116,7 +117,7 @@ class PlaneExplorer:
     Attributes
     ----------
     widget : ipywidgets.VBox
-    x, y, f : lists of three FloatSliders
+    x, y, f : lists of three LiveSliders
         Vertex positions and values; setting ``.value`` updates everything.
     values : (height, width) array
         The plane at every pixel centre inside the triangle (NaN outside): what the image
@@ -169,8 +170,9 @@ class PlaneExplorer:
 
     def _sliders(self, xy, f) -> None:
         def slider(value, lo, hi, name):
-            s = widgets.FloatSlider(value=value, min=lo, max=hi, step=0.25, description=name,
-                                    layout=widgets.Layout(width="260px"))  # fmt: skip
+            # in the page, coalesced: the kernel renders the latest value, never a queue
+            s = LiveSlider(value=value, min=lo, max=hi, step=0.25, description=name,
+                           layout=widgets.Layout(width="260px"))  # fmt: skip
             s.observe(lambda change: self.update(), "value")
             return s
 

@@ -14,6 +14,7 @@ from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .live_slider import LiveSlider
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -86,7 +87,7 @@ class TexturedPlaneViewer:
     Attributes
     ----------
     widget : ipywidgets.VBox
-    tilt : FloatSlider
+    tilt : LiveSlider
         Degrees the square is tilted away, 0 to 90 (also available as ``depth``).
     view : ComparisonView
         ``view.images`` the two renders, ``view.heatmap`` the texel error.
@@ -144,9 +145,10 @@ class TexturedPlaneViewer:
             self.display = FigureDisplay(fig, self.backend)
         self.fig = fig
 
-        self.tilt = widgets.FloatSlider(value=tilt, min=0.0, max=90.0, step=1.0,
-                                        description="tilt (°)", readout_format=".0f",
-                                        layout=widgets.Layout(width="420px"))  # fmt: skip
+        # in the page, coalesced: the kernel renders the latest angle, never a queue
+        self.tilt = LiveSlider(value=tilt, min=0.0, max=90.0, step=1.0,
+                               description="tilt (°)", readout_format=".0f",
+                               layout=widgets.Layout(width="420px"))  # fmt: skip
         self.depth = self.tilt  # the brief's name for it: how far the plane recedes
         self.tilt.observe(lambda change: self.update(change["new"]), "value")
         self.info = widgets.HTML()
