@@ -46,15 +46,17 @@ def fill_edit_blit(view) -> LayeredBlit:
 
 
 def comparison_edit_blit(view) -> LayeredBlit:
-    """A blit of an InterpolationView whose fill changes: images, outlines, colour bars,
-    the heatmap's title move; the grids, panel titles and "in use" notes stay."""
+    """A blit of an InterpolationView whose fill changes (or a ComparisonView whose images
+    change): images, outlines, colour bars, the heatmap's title and its marked maximum
+    move; the grids, panel titles and "in use" notes stay."""
     images = [art.image for art in view.images] + [view.heatmap.image]
     still = [g.lines for g in view.grids if g is not None]
     bars = [art.colorbar.ax for art in [*view.images, view.heatmap]
             if getattr(art, "colorbar", None) is not None]  # fmt: skip
-    tris = [a for tri in view.triangles for a in tri.artists]
+    tris = [a for tri in getattr(view, "triangles", []) for a in tri.artists]
     return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
-                                  (MOVING, [*tris, view.heatmap.title, *bars])])  # fmt: skip
+                                  (MOVING, [*tris, view.heatmap.marker, view.heatmap.note,
+                                            view.heatmap.title, *bars])])  # fmt: skip
 
 
 class DragFigure(anywidget.AnyWidget):

@@ -11,9 +11,11 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import TEXTURE_FILTERS, checkerboard, sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
+from ..plotting.blitting import MOVING, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import same_or_new
 from .live_slider import LiveSlider
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
@@ -108,7 +110,8 @@ class FilterExplorer:
                 ax.set_xlabel("")
                 ax.set_ylabel("")
             self.axes = axes
-            self.display = FigureDisplay(self.fig, self.backend)
+            self._blit = self._edit_blit()
+            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
         self.filter.observe(lambda change: self.update(), "value")
         self.tilt.observe(lambda change: self.update(), "value")
         self.info = widgets.HTML()
@@ -138,6 +141,19 @@ class FilterExplorer:
         self.error = np.abs(self.image - self.truth).mean(axis=-1)
         self.rms = float(np.sqrt(np.nanmean((self.image - self.truth) ** 2)))
         self.frame = frame
+
+    def _edit_blit(self) -> LayeredBlit:
+        """A new tilt or filter changes the three images, the error's marked maximum and
+        its colour bar; titles, frames and the level key stay in a cached background."""
+        error = self.panels["error"]
+        images = [self.panels["image"].image, self.panels["lod"].image, error.image]
+        bars = [] if error.colorbar is None else [error.colorbar.ax]
+        return LayeredBlit(self.fig, [(MOVING, images), (MOVING, [error.marker, error.note,
+                                                                  *bars])])  # fmt: skip
+
+    def _draw(self) -> None:
+        self._blit = same_or_new(self._blit, self._edit_blit())
+        self._blit.draw()
 
     def update(self) -> None:
         """Render again with the controls' values and update the panels in place."""

@@ -14,6 +14,7 @@ from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import comparison_edit_blit, same_or_new
 from .live_slider import LiveSlider
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
@@ -142,7 +143,10 @@ class TexturedPlaneViewer:
             if self.view.heatmap.colorbar is not None:
                 self.view.heatmap.colorbar.set_label("texels")
             self._show_error()
-            self.display = FigureDisplay(fig, self.backend)
+            # a new tilt changes the images, the heatmap's title and colour bar: the rest
+            # (tick labels, titles) stays in a cached background
+            self._blit = comparison_edit_blit(self.view)
+            self.display = FigureDisplay(fig, self.backend, draw=self._draw)
         self.fig = fig
 
         # in the page, coalesced: the kernel renders the latest angle, never a queue
@@ -174,6 +178,10 @@ class TexturedPlaneViewer:
         self.perspective = sample(self.texture, self.uv_perspective)
         self.error = texel_error(self.uv_affine, self.uv_perspective, self.texture.shape)
 
+    def _draw(self) -> None:
+        self._blit = same_or_new(self._blit, comparison_edit_blit(self.view))
+        self._blit.draw()
+
     def _show_error(self) -> None:
         # The heatmap shows texel error, not the colour difference ComparisonView computes:
         # the same artists, given |error - 0|.
@@ -187,7 +195,10 @@ class TexturedPlaneViewer:
     def update(self, tilt: float | None = None) -> None:
         """Render again at ``tilt`` (default: the slider's) and update the figure in place."""
         self._render(self.tilt.value if tilt is None else tilt)
-        self.view.update(self.affine, self.perspective, draw=False)
+        # the two colour images only: the heatmap shows texel error (_show_error), not the
+        # colour difference ComparisonView.update would compute first (a colour bar redraw)
+        for art, image in zip(self.view.images, (self.affine, self.perspective)):
+            art.update(image)
         self._show_error()
         self._set_info()
         self.display.refresh()
