@@ -121,17 +121,21 @@ class DragFigure(anywidget.AnyWidget):
         (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
         sx, sy = bbox.width / (x1 - x0), -bbox.height / (y1 - y0)
         transform = [bbox.x0 - sx * x0, (h - bbox.y0) - sy * y0, sx, sy]
-        with self.hold_sync():
-            self.size, self.transform = [w, h], transform
-            self.handles = [[float(x), float(y)] for x, y in handles]
-            if place is None:
-                self.poster, self.poster_frame = png, self._frame
+        moved = [[float(x), float(y)] for x, y in handles]
+        if place is None or [w, h] != self.size or transform != self.transform:
+            # the page needs the handles only to pick one at the next press: during a drag
+            # they travel in the frame message, and the traits (a second message per
+            # frame) follow at the release
+            with self.hold_sync():
+                self.size, self.transform, self.handles = [w, h], transform, moved
+                if place is None:
+                    self.poster, self.poster_frame = png, self._frame
         # kernel_ms: from the position's arrival to this answer (for benchmarks)
         kernel_ms = (time.perf_counter() - self._t0) * 1e3 if self._t0 else 0.0
         self._t0 = 0.0
         # a patch applies to the picture of frame n - 1 (a view that missed it waits for
         # the next whole picture)
-        self.send({"type": "frame", "seq": self._seq, "handles": self.handles, "n": self._frame,
+        self.send({"type": "frame", "seq": self._seq, "handles": moved, "n": self._frame,
                    "place": place, "kernel_ms": kernel_ms}, [png])  # fmt: skip
 
 

@@ -241,6 +241,8 @@ class FillPlayer(Holdable):
             children=[self.interp_display.widget], selected_index=None,
             titles=("affine / perspective-correct: both interpolations and their error",),
         )  # fmt: skip
+        self._interp_stale = False
+        self.comparison.observe(self._refresh_comparison, "selected_index")
         return [self.comparison]
 
     def _publish(self, step: int) -> None:
@@ -343,6 +345,14 @@ class FillPlayer(Holdable):
                 self._interp_blit.invalidate()  # the highlight is in the background
                 # the toggle's effect is in the folded figure: unfold it, or nothing shows
                 self.comparison.selected_index = 0
+            # folded, the figure is drawn when unfolded (a toggle answers sooner)
+            self._interp_stale = True
+            self._refresh_comparison()
+
+    def _refresh_comparison(self, change=None) -> None:
+        """Draw the interpolation figure if it is on show and out of date."""
+        if self._interp_stale and self.comparison.selected_index is not None:
+            self._interp_stale = False
             self.interp_display.refresh()
 
     def _draw_interp(self) -> None:
