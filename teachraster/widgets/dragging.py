@@ -50,7 +50,9 @@ def comparison_edit_blit(view) -> LayeredBlit:
     change): images, outlines, colour bars, the heatmap's title and its marked maximum
     move; the grids, panel titles and "in use" notes stay."""
     images = [art.image for art in view.images] + [view.heatmap.image]
+    # the frames too: the images are painted up to the Axes' edge, the frames drawn over them
     still = [g.lines for g in view.grids if g is not None]
+    still += [s for ax in view.axes for s in ax.spines.values()]
     bars = [art.colorbar.ax for art in [*view.images, view.heatmap]
             if getattr(art, "colorbar", None) is not None]  # fmt: skip
     tris = [a for tri in getattr(view, "triangles", []) for a in tri.artists]

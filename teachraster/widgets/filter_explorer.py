@@ -11,7 +11,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import TEXTURE_FILTERS, checkerboard, sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
-from ..plotting.blitting import MOVING, LayeredBlit
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
@@ -148,8 +148,9 @@ class FilterExplorer:
         error = self.panels["error"]
         images = [self.panels["image"].image, self.panels["lod"].image, error.image]
         bars = [] if error.colorbar is None else [error.colorbar.ax]
-        return LayeredBlit(self.fig, [(MOVING, images), (MOVING, [error.marker, error.note,
-                                                                  *bars])])  # fmt: skip
+        frames = [s for ax in self.axes for s in ax.spines.values()]  # drawn over the images
+        return LayeredBlit(self.fig, [(MOVING, images), (STILL, frames),
+                                      (MOVING, [error.marker, error.note, *bars])])  # fmt: skip
 
     def _draw(self) -> None:
         self._blit = same_or_new(self._blit, self._edit_blit())

@@ -25,8 +25,10 @@ function render({ model, el }) {
   input.style.cssText = "flex:1;min-width:120px;";
   const readout = document.createElement("span");
   readout.style.cssText = "min-width:4em;font-variant-numeric:tabular-nums;";
+  const notice = document.createElement("div");
+  notice.style.cssText = "color:#b00020;font-size:13px;";
   row.append(label, input, readout);
-  el.append(row);
+  el.append(row, notice);
 
   const base = () => model.get("base");
   const toValue = (p) => (base() > 0 ? Math.pow(base(), p) : p);
@@ -49,7 +51,15 @@ function render({ model, el }) {
     s.seq += 1;
     s.sent = value;
     s.pending.add(s.seq);
-    model.send({ type: "value", value, seq: s.seq });
+    const seq = s.seq;
+    setTimeout(() => {
+      if (s.pending.has(seq)) {
+        notice.textContent =
+          "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
+          "the widget back.";
+      }
+    }, 20000); // FilterExplorer takes a second or more per value on a loaded machine
+    model.send({ type: "value", value, seq });
   }
   function pump() {
     if (s.latest !== null && s.latest !== s.sent && s.pending.size < IN_FLIGHT) send(s.latest);
@@ -70,6 +80,7 @@ function render({ model, el }) {
   model.on("msg:custom", (msg) => {
     if (msg.type !== "done") return;
     s.pending.delete(msg.seq);
+    notice.textContent = "";
     pump();
   });
   for (const name of ["value", "min", "max", "step", "description", "readout_format"]) {
