@@ -201,10 +201,11 @@ class TriangleEditor(Holdable):
         if not self._dragging_in_page:
             self._blits["fill"].draw()
             return
-        # While dragging, the labels (boxed annotations: half the cost of a frame) wait for
-        # the release; the page's ring marks the vertex in hand meanwhile.
+        # While dragging, the labels (boxed annotations: half the cost of a frame) and the
+        # edges' arrows (fancy arrows: a sixth of what is left) wait for the release; the
+        # page's ring marks the vertex in hand meanwhile.
         t = self.view.triangle
-        labels = [*t.labels, *t.edge_labels, self.view.split.label]
+        labels = [*t.labels, *t.edge_labels, self.view.split.label, *t.arrows]
         shown = [a.get_visible() for a in labels]
         for a in labels:
             a.set_visible(False)
