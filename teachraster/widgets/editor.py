@@ -303,11 +303,10 @@ class TriangleEditor(Holdable):
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)
+        self.display.refresh()  # first: what the pointer moved (the comparison costs more)
         if not dragging:
             self.interp_view.update(self.fill, draw=False)
             self._set_info()
-        self.display.refresh()
-        if not dragging:
             self.interp_display.refresh()
         self._last_done = time.perf_counter()
         self.last_update_s = self._last_done - t0
