@@ -42,18 +42,9 @@ bench = _load("bench_notebooks", ROOT / "benchmarks" / "bench_notebooks.py")
 LESSONS = [p.stem for p in sorted(NOTEBOOKS.glob("*.ipynb"))]
 EXERCISES = [f"exercises/{p.stem}" for p in sorted((NOTEBOOKS / "exercises").glob("*.ipynb"))]
 
-#: Notebooks another helper is making fit (issue 18, lessons 00-05b and the exercises, helper
-#: ``lessons-a``): their width test is an expected failure until that branch is merged. Remove
-#: a name when its figures fit; a name whose figures already fit is reported as XPASS.
-PENDING_ELSEWHERE = {
-    "00_tour",
-    "01_span_tables",
-    "02_half_planes",
-    "03_barycentric_and_plane_equations",
-    "04_perspective_correct_interpolation",
-    "05a_zbuffer",
-    "05b_depth_precision",
-}
+#: Notebooks whose figures are being narrowed on another branch: their width test is an
+#: expected failure until it is merged (a name whose figures already fit is reported as XPASS).
+PENDING_ELSEWHERE: set[str] = set()
 
 
 @functools.cache
@@ -84,9 +75,9 @@ def probed(name: str) -> dict:
     return {"figures": record["figures"], "peak_mib": max(record["rss_mib"][:-1] or [0.0])}
 
 
-#: Widget figures another helper owns and is narrowing (the ``browser`` helper, issue 19): the
-#: titles of their panels. Their width is reported, not failed, until that branch is merged.
-PENDING_WIDGETS = {("filtered", "mip level", "error vs footprint mean"): "FilterExplorer"}
+#: Widget figures being narrowed on another branch, by the titles of their panels: their
+#: width is reported, not failed, until it is merged.
+PENDING_WIDGETS: dict[tuple[str, ...], str] = {}
 
 
 def _pending(figure: dict) -> bool:

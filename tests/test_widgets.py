@@ -621,3 +621,46 @@ def test_toggling_back_sends_the_frames_made_before_instead_of_a_poster(player):
     assert frames.poster  # a fill never shown: one full draw
     player.method.value = "span"
     assert frames.poster == b"" and sent[-1]["group"] == 0 and sent[-1]["gen"] == frames.gen
+
+
+def test_page_drag_sends_patches_during_the_drag_and_a_whole_frame_at_the_release(editor):
+    from teachraster.plotting.frames import frame_rgba
+
+    page = editor.display.widget
+    sent = []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    poster = page.poster
+    for seq, x in enumerate([10.0, 10.5, 11.0], start=1):
+        page._on_page_message(page, {"type": "move", "i": 1, "x": x, "y": 5.0, "seq": seq}, [])
+    patches = [c for c, _ in sent]
+    # each patch is the rectangle that changed, numbered after the frame it applies to
+    assert all(c["place"] is not None for c in patches)
+    assert [c["n"] for c in patches] == list(range(patches[0]["n"], patches[0]["n"] + 3))
+    w, h = page.size
+    for c, (png,) in sent:
+        pw, ph = int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+        assert pw * ph < w * h  # smaller than the figure
+        assert 0 <= c["place"][0] and c["place"][0] + pw <= w and c["place"][1] + ph <= h
+    assert page.poster == poster  # the poster is a whole frame: it waits for the release
+    page._on_page_message(page, {"type": "move", "i": 1, "x": 11.0, "y": 5.5, "seq": 4,
+                                 "final": True}, [])  # fmt: skip
+    content, (png,) = sent[-1]
+    assert content["place"] is None and page.poster == png and page.poster_frame == content["n"]
+    assert content["handles"][1] == [11.0, 5.5] == page.handles[1]
+    assert frame_rgba(editor.fig).shape[:2] == (h, w)
+
+
+def test_live_slider_applies_page_values_and_answers_each(monkeypatch):
+    from teachraster.widgets import LiveSlider
+
+    s = LiveSlider(value=30.0, min=0.0, max=90.0, step=1.0, description="tilt (°)")
+    seen, sent = [], []
+    s.observe(lambda change: seen.append(change["new"]), "value")
+    s.send = lambda content, buffers=None: sent.append(content)
+    for seq, v in enumerate([40.0, 55.0, 120.0], start=1):
+        s._on_page_message(s, {"type": "value", "value": v, "seq": seq}, [])
+    assert seen == [40.0, 55.0, 90.0] and s.value == 90.0  # clipped to the range
+    assert [c["seq"] for c in sent] == [1, 2, 3] and s.messages == 3
+    log = LiveSlider(value=0.1, base=10, min=-2, max=1, step=0.05)
+    log.value = 1e-5
+    assert log.value == pytest.approx(0.01)

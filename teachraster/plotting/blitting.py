@@ -160,7 +160,7 @@ class LayeredBlit:
     def _paint_pixels(self, run, renderer, gc) -> None:
         """Paint per-pixel images by nearest lookup (no resampling), clipped to their Axes."""
         artist, data = run[0]
-        x0, y0, rows, cols = self._lookup(artist.axes, data.shape)
+        x0, y0, rows, cols = self._lookup(artist.axes, data.shape[:2])
         if rows.size == 0 or cols.size == 0:
             return
         small = artist.to_rgba(data, alpha=artist.get_alpha(), bytes=True)
@@ -193,16 +193,21 @@ class LayeredBlit:
 
 
 def _pixel_data(artist):
-    """The 2-D data of a per-pixel image artist (QuadMesh or AxesImage), else None."""
+    """The data of a per-pixel image artist (QuadMesh or AxesImage), else None: values
+    (H, W) for its colour map, or colours (H, W, 3 or 4) in [0, 1] or bytes."""
     if isinstance(artist, QuadMesh | AxesImage) and artist.get_array() is not None:
-        data = np.asarray(artist.get_array())
+        data = artist.get_array()
         if data.ndim == 2:
-            return data
+            # masked where not a number: the colour map's "bad" colour, as Agg draws it
+            # (a norm such as BoundaryNorm would give NaN a colour of the map)
+            return np.ma.masked_invalid(data)
+        if data.ndim == 3 and data.shape[2] in (3, 4):
+            return np.asarray(data)
     return None
 
 
 def _same_grid(previous, artist, data) -> bool:
-    return previous[0].axes is artist.axes and previous[1].shape == data.shape
+    return previous[0].axes is artist.axes and previous[1].shape[:2] == data.shape[:2]
 
 
 def _over(top: np.ndarray, bottom: np.ndarray) -> np.ndarray:

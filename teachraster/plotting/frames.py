@@ -38,6 +38,10 @@ def frame_rgba(fig) -> np.ndarray:
 
 def changed_box(before: np.ndarray, after: np.ndarray):
     """(row0, row1, col0, col1) of the pixels that differ, or None when none does."""
+    if before.shape[-1] == 4 and before.dtype == np.uint8 and after.dtype == np.uint8:
+        # one 32-bit word per pixel: a quarter of the comparisons
+        before = np.ascontiguousarray(before).view(np.uint32)
+        after = np.ascontiguousarray(after).view(np.uint32)
     diff = (before != after).any(axis=2)
     rows, cols = np.flatnonzero(diff.any(axis=1)), np.flatnonzero(diff.any(axis=0))
     if rows.size == 0:

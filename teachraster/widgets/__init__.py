@@ -25,6 +25,9 @@ Widgets
 - :class:`FilterExplorer` -- a checkerboard square tilting to the horizon with a filter
   chooser: the filtered image, the mip level per pixel and the error against the true
   footprint average (lesson 09).
+- :class:`LiveSlider` -- a slider in the page whose values reach the kernel coalesced (the
+  explorers' tilt, near-plane and vertex sliders): the kernel renders the latest value,
+  never a queue.
 - :class:`Predict` -- "predict, then see": a question that takes the student's answer (a
   choice or a number) before it reveals the answer, the explanation and its figure; headless
   runs show the answer at once.
@@ -66,6 +69,7 @@ from .frame_inspector import FrameInspector
 from .frames import FramesWidget
 from .inspector import PixelInspector
 from .line_player import LinePlayer
+from .live_slider import LiveSlider
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .predict import Predict
@@ -86,6 +90,7 @@ __all__ = [
     "FramesWidget",
     "FillPlayer",
     "LinePlayer",
+    "LiveSlider",
     "PixelInspector",
     "PlaneExplorer",
     "Predict",

@@ -15,8 +15,11 @@ import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, fights
 from ..plotting import COLORS
+from ..plotting.blitting import MOVING, LayeredBlit
 from .common import close_tree, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
+from .dragging import same_or_new
+from .live_slider import LiveSlider
 
 #: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
 FORMATS = ("unorm16", "unorm24", "float32")
@@ -61,7 +64,7 @@ class DepthPrecisionExplorer:
     ----------
     widget : ipywidgets.VBox
     format : ToggleButtons
-    near : FloatLogSlider
+    near : LiveSlider
     reverse : Checkbox
     z : ndarray
         Distances plotted, from ``near`` to ``far``.
@@ -87,8 +90,9 @@ class DepthPrecisionExplorer:
         self.far, self.delta = float(far), float(delta)
         self.backend = resolve_backend(backend)
         self.format = widgets.ToggleButtons(options=FORMATS, value=fmt)
-        self.near = widgets.FloatLogSlider(value=near, base=10, min=-2, max=1, step=0.05,
-                                           description="near", readout_format=".3g")  # fmt: skip
+        # in the page, coalesced: the kernel renders the latest value, never a queue
+        self.near = LiveSlider(value=near, base=10, min=-2, max=1, step=0.05,
+                               description="near", readout_format=".3g")  # fmt: skip
         self.reverse = widgets.Checkbox(value=reverse, description="reverse-Z")
         self._compute()
         with style_context(style):
@@ -108,7 +112,10 @@ class DepthPrecisionExplorer:
             ax.legend(loc="upper left")
             self.ax = ax
             self._draw()
-            self.display = FigureDisplay(self.fig, self.backend)
+            self.fig.canvas.draw()  # the constrained layout, once: the blit keeps it
+            self.fig.set_layout_engine("none")
+            self._blit = self._edit_blit()
+            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw_figure)
         self.info = widgets.HTML(self._info_html())
         for control in (self.format, self.near, self.reverse):
             control.observe(lambda change: self.update(), "value")
@@ -141,7 +148,20 @@ class DepthPrecisionExplorer:
         self.curve.set_label(f"now: {self._label()}")
         x = np.nan if self.fight_from is None else self.fight_from
         self.marker.set_xdata([x, x])
-        self.ax.legend(loc="upper left")
+        legend = self.ax.get_legend()
+        if legend is None:
+            self.ax.legend(loc="upper left")
+        else:  # the same legend, its "now" entry renamed (a new one would be new background)
+            legend.get_texts()[1].set_text(self.curve.get_label())
+
+    def _edit_blit(self) -> LayeredBlit:
+        """A new value changes the curve, the z-fighting mark and the legend; the axes, the
+        reference curve and the gap line stay in a cached background."""
+        return LayeredBlit(self.fig, [(MOVING, [self.curve, self.marker, self.ax.get_legend()])])
+
+    def _draw_figure(self) -> None:
+        self._blit = same_or_new(self._blit, self._edit_blit())
+        self._blit.draw()
 
     def update(self) -> None:
         """Recompute from the controls and redraw the same artists."""

@@ -215,7 +215,7 @@ def fit_column(fig: Figure) -> None:
 
 def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,
                     below: bool = False) -> list:  # fmt: skip
-    """Three equal panels side by side for a ComparisonView / InterpolationView.
+    """Three equal panels for a ComparisonView / InterpolationView, as many per row as fit.
 
     The views add colour bars to the middle and right panels with ``fig.colorbar(ax=...)``,
     which takes 20% of the panel's width; those panels are made wider by as much here, so
@@ -225,7 +225,9 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
 
     Margins, gaps and the panels themselves grow with the font size (``font_scale``), as in
     ``fill_axes``: with ``use_style("classroom")`` the titles, the row labels and the colour
-    bars' labels keep their room instead of overlapping or being cut off.
+    bars' labels keep their room instead of overlapping or being cut off. Panels that would
+    make the figure wider than the notebook column (``COLUMN_WIDTH_PX`` at the figure's dpi)
+    wrap onto a second row: shrinking the figure instead would shrink its text.
     """
     from .common import font_scale
 
@@ -241,14 +243,38 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     bottom = 0.2 + (0.3 * s if below else 0.0)
     gaps = [0.35 * s] + [(0.75 * s if c else 0.35 * s) for c in colorbars]
     widths = [pw] + [pw / 0.8 + 0.3 if c else pw for c in colorbars]
-    fw = left + sum(widths) + sum(gaps)
-    fh = ph + top + bottom
+    rows = _wrap_panels(widths, gaps, left, column_inches(fig))
+    fw = max(left + sum(widths[i] + gaps[i] for i in row) for row in rows)
+    row_h = ph + top + bottom
+    fh = row_h * len(rows)
     fig.set_size_inches(fw, fh)
-    axes, x = [], left
-    for w, gap in zip(widths, gaps):
-        axes.append(fig.add_axes((x / fw, bottom / fh, w / fw, ph / fh)))
-        x += w + gap
+    axes = []
+    for r, row in enumerate(rows):
+        x, y = left, fh - (r + 1) * row_h + bottom
+        for i in row:
+            axes.append(fig.add_axes((x / fw, y / fh, widths[i] / fw, ph / fh)))
+            x += widths[i] + gaps[i]
     return axes
+
+
+def column_inches(fig: Figure) -> float:
+    """How many inches of ``fig`` fit the notebook column at the figure's dpi."""
+    from ..plotting.style import COLUMN_WIDTH_PX
+
+    return COLUMN_WIDTH_PX / fig.dpi
+
+
+def _wrap_panels(widths, gaps, left: float, limit: float) -> list[list[int]]:
+    """Panel indices per row: each row as wide as fits ``limit`` inches (at least one panel)."""
+    rows: list[list[int]] = [[]]
+    used = left
+    for i, (w, gap) in enumerate(zip(widths, gaps)):
+        if rows[-1] and used + w + gap > limit:
+            rows.append([])
+            used = left
+        rows[-1].append(i)
+        used += w + gap
+    return rows
 
 
 def html_escape(text: str) -> str:

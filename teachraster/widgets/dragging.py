@@ -21,7 +21,7 @@ import anywidget
 import traitlets
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.frames import encode_png, frame_rgba
+from ..plotting.frames import changed_box, encode_png, frame_rgba
 
 
 def drag_js() -> str:
@@ -46,15 +46,19 @@ def fill_edit_blit(view) -> LayeredBlit:
 
 
 def comparison_edit_blit(view) -> LayeredBlit:
-    """A blit of an InterpolationView whose fill changes: images, outlines, colour bars,
-    the heatmap's title move; the grids, panel titles and "in use" notes stay."""
+    """A blit of an InterpolationView whose fill changes (or a ComparisonView whose images
+    change): images, outlines, colour bars, the heatmap's title and its marked maximum
+    move; the grids, panel titles and "in use" notes stay."""
     images = [art.image for art in view.images] + [view.heatmap.image]
+    # the frames too: the images are painted up to the Axes' edge, the frames drawn over them
     still = [g.lines for g in view.grids if g is not None]
+    still += [s for ax in view.axes for s in ax.spines.values()]
     bars = [art.colorbar.ax for art in [*view.images, view.heatmap]
             if getattr(art, "colorbar", None) is not None]  # fmt: skip
-    tris = [a for tri in view.triangles for a in tri.artists]
+    tris = [a for tri in getattr(view, "triangles", []) for a in tri.artists]
     return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
-                                  (MOVING, [*tris, view.heatmap.title, *bars])])  # fmt: skip
+                                  (MOVING, [*tris, view.heatmap.marker, view.heatmap.note,
+                                            view.heatmap.title, *bars])])  # fmt: skip
 
 
 class DragFigure(anywidget.AnyWidget):
@@ -72,6 +76,8 @@ class DragFigure(anywidget.AnyWidget):
     transform = traitlets.List([0.0, 0.0, 1.0, 1.0]).tag(sync=True)
     size = traitlets.List([1, 1]).tag(sync=True)
     alt = traitlets.Unicode("").tag(sync=True)
+    #: the frame number of ``poster`` (the patches that follow it are numbered on)
+    poster_frame = traitlets.Int(0).tag(sync=True)
 
     def __init__(self, on_move=None, **kwargs) -> None:
         super().__init__(**kwargs)
@@ -79,6 +85,8 @@ class DragFigure(anywidget.AnyWidget):
         self.moves = 0
         self._seq = 0
         self._t0 = 0.0
+        self._last = None  # the last picture sent: patches are computed against it
+        self._frame = 0
         self.on_msg(self._on_page_message)
 
     def _on_page_message(self, _widget, content, _buffers) -> None:
@@ -93,25 +101,44 @@ class DragFigure(anywidget.AnyWidget):
     def show(self, fig, ax, handles, *, final: bool = True) -> None:
         """Send the figure's current pixels (drawn already) and where the handles are now.
 
-        ``final``: also keep the picture as the poster (what a re-opened view shows).
+        During a drag (``final`` False) only the rectangle of pixels that changed since the
+        last picture sent goes to the page (a move changes the triangle's part of the
+        figure: encoding a patch costs a fraction of a whole frame). ``final``: the whole
+        picture, also kept as the poster (what a re-opened view shows).
         """
         rgba = frame_rgba(fig)
-        png = encode_png(rgba)
         h, w = rgba.shape[:2]
-        box = ax.get_window_extent()
+        last, self._last = self._last, rgba
+        self._frame += 1
+        box = None if final or last is None or last.shape != rgba.shape else changed_box(
+            last, rgba)  # fmt: skip
+        if box is None and not final and last is not None and last.shape == rgba.shape:
+            place, png = [0, 0], b""  # nothing changed: an empty patch
+        elif box is None:
+            place, png = None, encode_png(rgba)
+        else:
+            r0, r1, c0, c1 = box
+            place, png = [c0, r0], encode_png(rgba[r0:r1, c0:c1])
+        bbox = ax.get_window_extent()
         (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-        sx, sy = box.width / (x1 - x0), -box.height / (y1 - y0)
-        transform = [box.x0 - sx * x0, (h - box.y0) - sy * y0, sx, sy]
-        with self.hold_sync():
-            self.size, self.transform = [w, h], transform
-            self.handles = [[float(x), float(y)] for x, y in handles]
-            if final:
-                self.poster = png
+        sx, sy = bbox.width / (x1 - x0), -bbox.height / (y1 - y0)
+        transform = [bbox.x0 - sx * x0, (h - bbox.y0) - sy * y0, sx, sy]
+        moved = [[float(x), float(y)] for x, y in handles]
+        if place is None or [w, h] != self.size or transform != self.transform:
+            # the page needs the handles only to pick one at the next press: during a drag
+            # they travel in the frame message, and the traits (a second message per
+            # frame) follow at the release
+            with self.hold_sync():
+                self.size, self.transform, self.handles = [w, h], transform, moved
+                if place is None:
+                    self.poster, self.poster_frame = png, self._frame
         # kernel_ms: from the position's arrival to this answer (for benchmarks)
         kernel_ms = (time.perf_counter() - self._t0) * 1e3 if self._t0 else 0.0
         self._t0 = 0.0
-        self.send({"type": "frame", "seq": self._seq, "handles": self.handles,
-                   "kernel_ms": kernel_ms}, [png])  # fmt: skip
+        # a patch applies to the picture of frame n - 1 (a view that missed it waits for
+        # the next whole picture)
+        self.send({"type": "frame", "seq": self._seq, "handles": moved, "n": self._frame,
+                   "place": place, "kernel_ms": kernel_ms}, [png])  # fmt: skip
 
 
 def same_or_new(old: LayeredBlit, new: LayeredBlit) -> LayeredBlit:

@@ -119,6 +119,7 @@ class TriangleEditor(Holdable):
         self.backend = resolve_backend(backend)
         self._dragging: int | None = None
         self._pending = None
+        self._drag_xy = None  # the vertices during a drag in the page (the sliders wait)
         self._last_done = 0.0
         self.last_update_s = 0.0
         self.fill = self._rasterize(self.tri, method)
@@ -200,10 +201,11 @@ class TriangleEditor(Holdable):
         if not self._dragging_in_page:
             self._blits["fill"].draw()
             return
-        # While dragging, the labels (boxed annotations: half the cost of a frame) wait for
-        # the release; the page's ring marks the vertex in hand meanwhile.
+        # While dragging, the labels (boxed annotations: half the cost of a frame) and the
+        # edges' arrows (fancy arrows: a sixth of what is left) wait for the release; the
+        # page's ring marks the vertex in hand meanwhile.
         t = self.view.triangle
-        labels = [*t.labels, *t.edge_labels, self.view.split.label]
+        labels = [*t.labels, *t.edge_labels, self.view.split.label, *t.arrows]
         shown = [a.get_visible() for a in labels]
         for a in labels:
             a.set_visible(False)
@@ -241,7 +243,10 @@ class TriangleEditor(Holdable):
 
     @property
     def xy(self) -> np.ndarray:
-        """(3, 2) vertex positions set on the sliders."""
+        """(3, 2) vertex positions set on the sliders (or where a drag in the page has them:
+        the sliders follow at the release)."""
+        if self._drag_xy is not None:
+            return self._drag_xy.copy()
         return np.array([[self.x[i].value, self.y[i].value] for i in range(3)])
 
     @property
@@ -259,6 +264,17 @@ class TriangleEditor(Holdable):
         render, and a vertex a little off where the pointer let go).
         """
         x, y = (None if v is None else on_grid(v) for v in (x, y))
+        if self._dragging_in_page and w is None:
+            # Mid-drag: the sliders (two more messages to the page per frame) and the info
+            # line wait for the release; the position is clipped to the sliders' range.
+            xy = self.xy
+            for k, (slider, value) in enumerate(((self.x[i], x), (self.y[i], y))):
+                if value is not None:
+                    xy[i, k] = min(max(value, slider.min), slider.max)
+            self._drag_xy = xy
+            self.update()
+            return
+        self._drag_xy = None
         with self._holding():
             for slider, value in ((self.x[i], x), (self.y[i], y), (self.w[i], w)):
                 if value is not None:
@@ -287,11 +303,10 @@ class TriangleEditor(Holdable):
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)
+        self.display.refresh()  # first: what the pointer moved (the comparison costs more)
         if not dragging:
             self.interp_view.update(self.fill, draw=False)
-        self._set_info()
-        self.display.refresh()
-        if not dragging:
+            self._set_info()
             self.interp_display.refresh()
         self._last_done = time.perf_counter()
         self.last_update_s = self._last_done - t0

@@ -11,9 +11,12 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import TEXTURE_FILTERS, checkerboard, sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html
-from .display import COMPARISON_DPI, FigureDisplay, new_figure, resolve_backend
+from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import same_or_new
+from .live_slider import LiveSlider
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 
@@ -45,7 +48,7 @@ class FilterExplorer:
     Attributes
     ----------
     widget : ipywidgets.VBox
-    tilt : FloatSlider
+    tilt : LiveSlider
     filter : Dropdown
     image, truth, error : (H, W, 3), (H, W, 3), (H, W) arrays on show
     lod : (H, W) array
@@ -83,13 +86,16 @@ class FilterExplorer:
                              near=0.05, far=50.0)  # fmt: skip
         self.filter = widgets.Dropdown(options=list(TEXTURE_FILTERS), value=filter,
                                        description="filter")  # fmt: skip
-        self.tilt = widgets.FloatSlider(value=tilt, min=0.0, max=89.0, step=1.0,
-                                        description="tilt (°)", readout_format=".0f",
-                                        layout=widgets.Layout(width="420px"))  # fmt: skip
+        # in the page, coalesced: the kernel renders the latest angle, never a queue
+        self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
+                               description="tilt (°)", readout_format=".0f",
+                               layout=widgets.Layout(width="420px"))  # fmt: skip
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = self.fig.subplots(1, 3)
+            # as many panels per row as fit the notebook column (at the classroom style's
+            # fonts, two: the third goes below)
+            axes = comparison_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
                 "lod": plot_lod(axes[1], self.lod, 8),
@@ -104,7 +110,8 @@ class FilterExplorer:
                 ax.set_xlabel("")
                 ax.set_ylabel("")
             self.axes = axes
-            self.display = FigureDisplay(self.fig, self.backend)
+            self._blit = self._edit_blit()
+            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
         self.filter.observe(lambda change: self.update(), "value")
         self.tilt.observe(lambda change: self.update(), "value")
         self.info = widgets.HTML()
@@ -134,6 +141,20 @@ class FilterExplorer:
         self.error = np.abs(self.image - self.truth).mean(axis=-1)
         self.rms = float(np.sqrt(np.nanmean((self.image - self.truth) ** 2)))
         self.frame = frame
+
+    def _edit_blit(self) -> LayeredBlit:
+        """A new tilt or filter changes the three images, the error's marked maximum and
+        its colour bar; titles, frames and the level key stay in a cached background."""
+        error = self.panels["error"]
+        images = [self.panels["image"].image, self.panels["lod"].image, error.image]
+        bars = [] if error.colorbar is None else [error.colorbar.ax]
+        frames = [s for ax in self.axes for s in ax.spines.values()]  # drawn over the images
+        return LayeredBlit(self.fig, [(MOVING, images), (STILL, frames),
+                                      (MOVING, [error.marker, error.note, *bars])])  # fmt: skip
+
+    def _draw(self) -> None:
+        self._blit = same_or_new(self._blit, self._edit_blit())
+        self._blit.draw()
 
     def update(self) -> None:
         """Render again with the controls' values and update the panels in place."""

@@ -20,8 +20,11 @@ from matplotlib.collections import LineCollection
 
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
+from .dragging import same_or_new
+from .live_slider import LiveSlider
 
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
@@ -116,7 +119,7 @@ class PlaneExplorer:
     Attributes
     ----------
     widget : ipywidgets.VBox
-    x, y, f : lists of three FloatSliders
+    x, y, f : lists of three LiveSliders
         Vertex positions and values; setting ``.value`` updates everything.
     values : (height, width) array
         The plane at every pixel centre inside the triangle (NaN outside): what the image
@@ -148,7 +151,7 @@ class PlaneExplorer:
             self.fig = new_figure((7.5, 6.0), self.backend)
             self.fig.set_layout_engine("constrained")
             self.ax = self.fig.add_subplot()
-            plot_pixel_grid(self.ax, width, height)
+            self.grid = plot_pixel_grid(self.ax, width, height)
             lo, hi = self._range()
             self.image = plot_attribute(self.ax, self.values, vmin=lo, vmax=hi,
                                         title="f at the pixel centres")  # fmt: skip
@@ -156,7 +159,12 @@ class PlaneExplorer:
                                            linewidths=1.5, linestyles="--")  # fmt: skip
             self.ax.add_collection(self.contours)
             self.triangle = plot_triangle(self.ax, self.xy, arrows=False)
-            self.display = FigureDisplay(self.fig, self.backend)
+            # the constrained layout once, then frozen: the blit's background and the
+            # artists drawn over it must agree on where the Axes are
+            self.fig.canvas.draw()
+            self.fig.set_layout_engine("none")
+            self._blit = self._edit_blit()
+            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
         self.info = widgets.HTML(self._info_html())
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
@@ -169,8 +177,9 @@ class PlaneExplorer:
 
     def _sliders(self, xy, f) -> None:
         def slider(value, lo, hi, name):
-            s = widgets.FloatSlider(value=value, min=lo, max=hi, step=0.25, description=name,
-                                    layout=widgets.Layout(width="260px"))  # fmt: skip
+            # in the page, coalesced: the kernel renders the latest value, never a queue
+            s = LiveSlider(value=value, min=lo, max=hi, step=0.25, description=name,
+                           layout=widgets.Layout(width="260px"))  # fmt: skip
             s.observe(lambda change: self.update(), "value")
             return s
 
@@ -211,6 +220,19 @@ class PlaneExplorer:
         f = self.fvals
         levels = np.linspace(f.min(), f.max(), LEVELS + 2)[1:-1]
         return level_segments(self.system["g"], levels, self.width, self.height)
+
+    def _edit_blit(self) -> LayeredBlit:
+        """A new value changes the image, its colour bar, the contours and the triangle; the
+        grid and the frame (above the image), ticks and title stay in a cached background."""
+        bar = getattr(self.image, "colorbar", None)
+        above = [self.contours, *self.triangle.artists, *([] if bar is None else [bar.ax])]
+        return LayeredBlit(self.fig, [(MOVING, [self.image.image]),
+                                      (STILL, [self.grid.lines, *self.ax.spines.values()]),
+                                      (MOVING, above)])  # fmt: skip
+
+    def _draw(self) -> None:
+        self._blit = same_or_new(self._blit, self._edit_blit())
+        self._blit.draw()
 
     def update(self) -> None:
         """Recompute from the sliders and redraw the same artists."""

@@ -94,6 +94,9 @@ class FillPlayer(Holdable):
         The FillView's figure.
     interp_view : InterpolationView or None
         None when the triangle has no attributes.
+    comparison : ipywidgets.Accordion
+        Folds the interpolation figure under the steps (only with attributes); the
+        interpolation toggle unfolds it.
     fill : Fill
         The fill on show.
 
@@ -225,9 +228,22 @@ class FillPlayer(Holdable):
         if self.tri.attrs:
             options.append(labelled("interpolation", self.interpolation))
         options.append(labelled("samples", self.samples))
-        figures = [] if self.interp_display is None else [self.interp_display.widget]
         row = widgets.Layout(flex_flow="row wrap", align_items="center")
-        return widgets.VBox([title, widgets.HBox(options, layout=row), self.frames, *figures])
+        return widgets.VBox([title, widgets.HBox(options, layout=row), self.frames,
+                             *self._comparison_section()])  # fmt: skip
+
+    def _comparison_section(self) -> list:
+        """The interpolation figure, folded under the steps: open, the player would no longer
+        fit a 900-px-high screen (the steps, their controls and the figure together)."""
+        if self.interp_display is None:
+            return []
+        self.comparison = widgets.Accordion(
+            children=[self.interp_display.widget], selected_index=None,
+            titles=("affine / perspective-correct: both interpolations and their error",),
+        )  # fmt: skip
+        self._interp_stale = False
+        self.comparison.observe(self._refresh_comparison, "selected_index")
+        return [self.comparison]
 
     def _publish(self, step: int) -> None:
         """Send the fill on show to the page: its steps' texts and the picture of ``step``.
@@ -327,6 +343,16 @@ class FillPlayer(Holdable):
             if change["owner"] is self.interpolation:
                 self.interp_view.highlight(self.interpolation.value)
                 self._interp_blit.invalidate()  # the highlight is in the background
+                # the toggle's effect is in the folded figure: unfold it, or nothing shows
+                self.comparison.selected_index = 0
+            # folded, the figure is drawn when unfolded (a toggle answers sooner)
+            self._interp_stale = True
+            self._refresh_comparison()
+
+    def _refresh_comparison(self, change=None) -> None:
+        """Draw the interpolation figure if it is on show and out of date."""
+        if self._interp_stale and self.comparison.selected_index is not None:
+            self._interp_stale = False
             self.interp_display.refresh()
 
     def _draw_interp(self) -> None:

@@ -14,6 +14,8 @@ from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .dragging import comparison_edit_blit, same_or_new
+from .live_slider import LiveSlider
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -86,7 +88,7 @@ class TexturedPlaneViewer:
     Attributes
     ----------
     widget : ipywidgets.VBox
-    tilt : FloatSlider
+    tilt : LiveSlider
         Degrees the square is tilted away, 0 to 90 (also available as ``depth``).
     view : ComparisonView
         ``view.images`` the two renders, ``view.heatmap`` the texel error.
@@ -141,12 +143,16 @@ class TexturedPlaneViewer:
             if self.view.heatmap.colorbar is not None:
                 self.view.heatmap.colorbar.set_label("texels")
             self._show_error()
-            self.display = FigureDisplay(fig, self.backend)
+            # a new tilt changes the images, the heatmap's title and colour bar: the rest
+            # (tick labels, titles) stays in a cached background
+            self._blit = comparison_edit_blit(self.view)
+            self.display = FigureDisplay(fig, self.backend, draw=self._draw)
         self.fig = fig
 
-        self.tilt = widgets.FloatSlider(value=tilt, min=0.0, max=90.0, step=1.0,
-                                        description="tilt (°)", readout_format=".0f",
-                                        layout=widgets.Layout(width="420px"))  # fmt: skip
+        # in the page, coalesced: the kernel renders the latest angle, never a queue
+        self.tilt = LiveSlider(value=tilt, min=0.0, max=90.0, step=1.0,
+                               description="tilt (°)", readout_format=".0f",
+                               layout=widgets.Layout(width="420px"))  # fmt: skip
         self.depth = self.tilt  # the brief's name for it: how far the plane recedes
         self.tilt.observe(lambda change: self.update(change["new"]), "value")
         self.info = widgets.HTML()
@@ -172,6 +178,10 @@ class TexturedPlaneViewer:
         self.perspective = sample(self.texture, self.uv_perspective)
         self.error = texel_error(self.uv_affine, self.uv_perspective, self.texture.shape)
 
+    def _draw(self) -> None:
+        self._blit = same_or_new(self._blit, comparison_edit_blit(self.view))
+        self._blit.draw()
+
     def _show_error(self) -> None:
         # The heatmap shows texel error, not the colour difference ComparisonView computes:
         # the same artists, given |error - 0|.
@@ -185,7 +195,10 @@ class TexturedPlaneViewer:
     def update(self, tilt: float | None = None) -> None:
         """Render again at ``tilt`` (default: the slider's) and update the figure in place."""
         self._render(self.tilt.value if tilt is None else tilt)
-        self.view.update(self.affine, self.perspective, draw=False)
+        # the two colour images only: the heatmap shows texel error (_show_error), not the
+        # colour difference ComparisonView.update would compute first (a colour bar redraw)
+        for art, image in zip(self.view.images, (self.affine, self.perspective)):
+            art.update(image)
         self._show_error()
         self._set_info()
         self.display.refresh()

@@ -6,13 +6,15 @@
 // kernel never idles for a round trip), each the latest position when sent; positions that
 // come meanwhile replace each other, so the kernel never works through a queue. The release
 // is always sent, so the drag ends exactly where the pointer let go. Each answer carries
-// the new picture.
+// the new picture: during a drag only the rectangle that changed (a patch, painted on a
+// canvas over the <img>), at the release the whole figure.
 
 const IN_FLIGHT = 2;
 
 const CSS = `
 .tr-drag { position: relative; display: inline-block; max-width: 100%; touch-action: none; }
 .tr-drag img { display: block; max-width: 100%; height: auto; user-select: none; }
+.tr-drag canvas.tr-drag-picture { pointer-events: none; }
 .tr-drag canvas { position: absolute; left: 0; top: 0; width: 100%; height: 100%;
   pointer-events: none; }
 .tr-drag-notice { color: #b00020; font-size: 13px; }
@@ -30,12 +32,23 @@ function render({ model, el }) {
   const img = document.createElement("img");
   img.className = "teachraster-figure";
   img.draggable = false;
+  const picture = document.createElement("canvas"); // the patches of a drag, over the <img>
+  picture.className = "tr-drag-picture";
   const overlay = document.createElement("canvas");
   const notice = document.createElement("div");
   notice.className = "tr-drag-notice";
-  box.append(img, overlay);
+  box.append(img, picture, overlay);
   el.append(box, notice);
   const ctx = overlay.getContext("2d");
+  const pctx = picture.getContext("2d");
+  // the number of the frame on show, and the queue that paints frames in order
+  let shown = model.get("poster_frame");
+  let painting = Promise.resolve();
+  function sizePicture() {
+    const [w, h] = model.get("size");
+    if (picture.width !== w || picture.height !== h) [picture.width, picture.height] = [w, h];
+  }
+  sizePicture();
 
   let url = null;
   function showPng(bytes) {
@@ -139,11 +152,33 @@ function render({ model, el }) {
   img.addEventListener("pointerup", release);
   img.addEventListener("pointercancel", release);
 
+  // A whole frame replaces the picture; a patch (the pixels a move changed) is painted at
+  // its place, only on the frame it was made against (a view that missed one waits for
+  // the next whole frame).
+  async function paint(msg, bytes) {
+    if (msg.place === null) {
+      sizePicture();
+      const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
+      pctx.clearRect(0, 0, picture.width, picture.height);
+      pctx.drawImage(bitmap, 0, 0);
+      bitmap.close();
+      showPng(bytes); // the <img> under the canvas holds the last whole frame
+    } else if (msg.n - 1 === shown && bytes.byteLength) {
+      const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
+      pctx.drawImage(bitmap, msg.place[0], msg.place[1]);
+      bitmap.close();
+    } else if (msg.n - 1 !== shown) {
+      return;
+    }
+    shown = msg.n;
+    img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
+  }
+
   model.on("msg:custom", (msg, buffers) => {
     if (msg.type !== "frame") return;
-    showPng(buffers[0]);
+    const bytes = buffers[0];
+    painting = painting.then(() => paint(msg, bytes)).catch(() => {});
     notice.textContent = "";
-    img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
     img.dataset.kernelMs = String(Math.round(msg.kernel_ms ?? 0)); // for benchmarks
     const sent = s.pending.get(msg.seq);
     if (sent) img.dataset.roundTripMs = String(Math.round(performance.now() - sent));

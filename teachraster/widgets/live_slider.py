@@ -1,0 +1,84 @@
+"""``LiveSlider``: a slider in the page whose values reach the kernel coalesced.
+
+An ipywidgets slider with ``continuous_update`` sends every value it passes through; a
+kernel that re-renders a figure per value falls behind and works through a queue of stale
+values long after the pointer stopped. This slider (``static/slider.js``) sends values as
+custom messages with their own flow control, as :class:`~teachraster.widgets.DragFigure`
+does for positions: at most two unanswered, each the latest when sent, values that come
+meanwhile replaced (never queued), and the value where the slider was released always.
+The kernel answers each once its observers have run (the new picture is sent first).
+
+It keeps the ipywidgets slider's interface that the explorers and lessons use: ``value``
+(observable, settable from code), ``min``, ``max``, ``step``, ``description``,
+``readout_format``, ``layout``; ``base`` makes it logarithmic like ``FloatLogSlider``
+(``min`` and ``max`` are then exponents).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import anywidget
+import traitlets
+
+
+def slider_js() -> str:
+    """The page-side module (ESM), read from the package (``static/slider.js``)."""
+    return (Path(__file__).parent / "static" / "slider.js").read_text(encoding="utf-8")
+
+
+class LiveSlider(anywidget.AnyWidget):
+    """A range input in the page; ``value`` follows it, coalesced (see the module).
+
+    Parameters
+    ----------
+    value, min, max, step : float
+        As for ``ipywidgets.FloatSlider``; with ``base``, ``min``, ``max`` and ``step`` are
+        exponents and ``value`` is ``base ** exponent``.
+    description : str
+        The label before the slider.
+    readout_format : str
+        How the value is shown beside the slider (``".0f"``, ``".2f"``, ``".3g"``).
+    base : float, optional
+        Logarithmic slider of this base (``FloatLogSlider``).
+
+    Examples
+    --------
+    >>> s = LiveSlider(value=30.0, min=0.0, max=90.0, step=1.0, description="tilt")
+    >>> s.value = 45.0
+    >>> s.value, s.messages
+    (45.0, 0)
+    """
+
+    _esm = slider_js()
+    value = traitlets.Float(0.0).tag(sync=True)
+    min = traitlets.Float(0.0).tag(sync=True)
+    max = traitlets.Float(100.0).tag(sync=True)
+    step = traitlets.Float(1.0).tag(sync=True)
+    description = traitlets.Unicode("").tag(sync=True)
+    readout_format = traitlets.Unicode(".2f").tag(sync=True)
+    base = traitlets.Float(0.0).tag(sync=True)  # 0: linear
+
+    def __init__(self, **kwargs) -> None:
+        if kwargs.get("base") is None:
+            kwargs.pop("base", None)
+        super().__init__(**kwargs)
+        self.messages = 0
+        self.on_msg(self._on_page_message)
+
+    @traitlets.validate("value")
+    def _clamp(self, proposal) -> float:
+        # as ipywidgets' sliders: a value beyond the range is clipped to it
+        lo, hi = (
+            (self.base**self.min, self.base**self.max) if self.base > 0 else (self.min, self.max)
+        )
+        return min(max(float(proposal["value"]), lo), hi)
+
+    def _on_page_message(self, _widget, content, _buffers) -> None:
+        if content.get("type") != "value":
+            return
+        self.messages += 1
+        try:
+            self.value = float(content["value"])  # the observers re-render here
+        finally:
+            self.send({"type": "done", "seq": int(content.get("seq", 0))})

@@ -1,0 +1,92 @@
+// teachraster: a slider in the page whose values reach the kernel coalesced.
+//
+// Values go to the kernel as custom messages with their own flow control: at most
+// IN_FLIGHT unanswered (one being rendered, one waiting, so the kernel never idles for a
+// round trip), each the latest value when sent; values that come meanwhile replace each
+// other, so the kernel never works through a queue. The value where the slider is released
+// is always sent. The readout follows the pointer at once.
+
+const IN_FLIGHT = 2;
+
+function format(v, spec) {
+  const m = /^\.(\d+)([fg])$/.exec(spec || "");
+  if (!m) return String(v);
+  return m[2] === "f" ? v.toFixed(Number(m[1])) : String(Number(v.toPrecision(Number(m[1]))));
+}
+
+function render({ model, el }) {
+  const row = document.createElement("div");
+  row.className = "tr-live-slider";
+  row.style.cssText = "display:flex;align-items:center;gap:8px;margin:2px 0;";
+  const label = document.createElement("label");
+  label.style.cssText = "min-width:5em;text-align:right;";
+  const input = document.createElement("input");
+  input.type = "range";
+  input.style.cssText = "flex:1;min-width:120px;";
+  const readout = document.createElement("span");
+  readout.style.cssText = "min-width:4em;font-variant-numeric:tabular-nums;";
+  const notice = document.createElement("div");
+  notice.style.cssText = "color:#b00020;font-size:13px;";
+  row.append(label, input, readout);
+  el.append(row, notice);
+
+  const base = () => model.get("base");
+  const toValue = (p) => (base() > 0 ? Math.pow(base(), p) : p);
+  const toPos = (v) => (base() > 0 ? Math.log(v) / Math.log(base()) : v);
+  const s = { pending: new Set(), seq: 0, latest: null, sent: null, held: false };
+
+  function show(v) {
+    readout.textContent = format(v, model.get("readout_format"));
+  }
+  function sync() {
+    label.textContent = model.get("description");
+    input.setAttribute("aria-label", model.get("description"));
+    input.min = model.get("min");
+    input.max = model.get("max");
+    input.step = model.get("step");
+    if (!s.held && s.pending.size === 0) input.value = toPos(model.get("value"));
+    show(s.held ? toValue(Number(input.value)) : model.get("value"));
+  }
+  function send(value) {
+    s.seq += 1;
+    s.sent = value;
+    s.pending.add(s.seq);
+    const seq = s.seq;
+    setTimeout(() => {
+      if (s.pending.has(seq)) {
+        notice.textContent =
+          "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
+          "the widget back.";
+      }
+    }, 20000); // FilterExplorer takes a second or more per value on a loaded machine
+    model.send({ type: "value", value, seq });
+  }
+  function pump() {
+    if (s.latest !== null && s.latest !== s.sent && s.pending.size < IN_FLIGHT) send(s.latest);
+  }
+  input.addEventListener("pointerdown", () => (s.held = true));
+  input.addEventListener("input", () => {
+    s.latest = toValue(Number(input.value));
+    show(s.latest);
+    pump();
+  });
+  input.addEventListener("change", () => {
+    s.held = false;
+    s.latest = toValue(Number(input.value));
+    if (s.latest !== s.sent) send(s.latest); // the release (unless sent already)
+  });
+  // arrow keys move the slider, not JupyterLab's notebook (command-mode shortcuts)
+  input.addEventListener("keydown", (e) => e.stopPropagation());
+  model.on("msg:custom", (msg) => {
+    if (msg.type !== "done") return;
+    s.pending.delete(msg.seq);
+    notice.textContent = "";
+    pump();
+  });
+  for (const name of ["value", "min", "max", "step", "description", "readout_format"]) {
+    model.on(`change:${name}`, sync);
+  }
+  sync();
+}
+
+export default { render };
