@@ -281,23 +281,11 @@ def _snap_exact(v):
     return [Fraction(round(Fraction(float(c)) * 256), 256) for c in v]  # half to even
 
 
-def _covers_exact(v, p):
-    if edge_function(v[0], v[1], v[2]) < 0:
-        v = [v[0], v[2], v[1]]
-    if edge_function(v[0], v[1], v[2]) == 0:
-        return False
-    for k in range(3):
-        a, b = v[k], v[(k + 1) % 3]
-        e = edge_function(a, b, p)
-        if e < 0 or (e == 0 and not _owns(a, b)):
-            return False
-    return True
-
-
 def coverage_fraction(xy, pixel, samples):
     v = [_snap_exact(q) for q in xy]
     row, col = pixel
-    hits = [_covers_exact(v, (col + Fraction(ox), row + Fraction(oy))) for ox, oy in samples]
+    # snapped vertices and sample points are dyadic, so covers' float round trip is exact
+    hits = [covers(v, (col + Fraction(ox), row + Fraction(oy))) for ox, oy in samples]
     return sum(hits) / len(hits)
 
 
