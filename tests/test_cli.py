@@ -212,7 +212,7 @@ def test_compare_gif_sweeps_w(tmp_path, capsys):
     frames, _ = gif_frames(out)
     assert frames == 5  # w changes every frame, so no two frames merge
     captured = capsys.readouterr()
-    assert "w1 from 1 to 8" in captured.out
+    assert "w2 from 1 to 8" in captured.out  # --vertex 1 is v2 (indices from 0)
     assert "frames" in captured.err
 
 

@@ -190,7 +190,7 @@ def test_02_player_and_editor():
     assert (ns.trace.step(k).row, ns.trace.step(k).col) == (box.row0 + 5, box.col0 + 6)
     player.close()
     editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
-    editor.x[1].value = 1.0  # v1 dragged across the edge v2 -> v0: the winding flips
+    editor.x[1].value = 1.0  # v2 dragged across the edge v3 -> v1: the winding flips
     moved = tr.Triangle(editor.xy)
     assert moved.front_facing and not ns.tri.front_facing
     assert np.array_equal(editor.fill.coverage, tr.rasterize(moved, ns.W, ns.H).coverage)

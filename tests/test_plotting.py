@@ -158,10 +158,10 @@ def test_triangle_labels_and_arrows():
     fig, ax = plt.subplots()
     xy = np.array([[1.0, 1.0], [9.0, 2.0], [3.0, 8.0]])
     result = tp.plot_triangle(ax, xy)
-    assert [t.get_text() for t in result.labels] == ["v0", "v1", "v2"]
+    assert [t.get_text() for t in result.labels] == ["v1", "v2", "v3"]
     assert len(result.arrows) == 3
     np.testing.assert_array_equal(result.vertices.get_xydata(), xy)
-    # arrows point along v0→v1, v1→v2, v2→v0
+    # arrows point along v1→v2, v2→v3, v3→v1
     for arrow, (a, b) in zip(result.arrows, [(0, 1), (1, 2), (2, 0)]):
         (x0, y0), (x1, y1) = arrow._posA_posB
         assert np.dot([x1 - x0, y1 - y0], xy[b] - xy[a]) > 0
@@ -481,23 +481,23 @@ def test_classroom_figures_draw():
         assert view.caption_text.get_fontsize() > 12
 
 
-def test_span_fill_view_labels_vertices_in_span_order():
-    # input order differs from the y order: v1 (top) is input vertex 1, v3 (bottom) input 0
+def test_fill_view_names_vertices_in_the_order_given_for_every_method():
+    # input order differs from the y order: the top vertex is v2, the bottom one v1, and
+    # still every method labels xy[0] v1 (the span captions give the roles instead)
     tri = tr.Triangle([[10.0, 13.0], [3.0, 1.0], [13.0, 6.0]])
     span = tr.rasterize(tri, W, H, method="span", trace=True)
-    order = list(span.trace.span.order)
-    assert order != [0, 1, 2]
+    assert list(span.trace.span.order) != [0, 1, 2]
     view = tp.FillView(span)
     labels = view.triangle.labels
-    assert [labels[i].get_text() for i in order] == ["v1", "v2", "v3"]
-    # half-planes name the vertices in input order; set_fill relabels the same artists
+    assert [label.get_text() for label in labels] == ["v1", "v2", "v3"]
+    assert "top v2 (3, 1), middle v3 (13, 6), bottom v1 (10, 13)" in span.trace.caption(3)
+    # set_fill relabels the same artists, with the same names
     view.set_fill(tr.rasterize(tri, W, H, method="halfplane", trace=True))
     assert view.triangle.labels is labels
-    assert [label.get_text() for label in labels] == ["v0", "v1", "v2"]
+    assert [label.get_text() for label in labels] == ["v1", "v2", "v3"]
     moved = tr.Triangle([[3.0, 12.0], [10.0, 2.0], [13.0, 7.0]])
-    fill = tr.rasterize(moved, W, H, method="span", trace=True)
-    view.set_fill(fill)
-    assert [labels[i].get_text() for i in fill.trace.span.order] == ["v1", "v2", "v3"]
+    view.set_fill(tr.rasterize(moved, W, H, method="span", trace=True))
+    assert [label.get_text() for label in labels] == ["v1", "v2", "v3"]
     view.fig.canvas.draw()
     plt.close(view.fig)
 

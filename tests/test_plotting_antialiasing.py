@@ -73,5 +73,6 @@ def test_pixel_inspector_plot_labels_samples_with_edge_values():
     on_axes(result, ax)
     assert len(result.dots) == 4 and len(result.labels) == 4
     e = fill.trace.samples.edge_values(2, 6)
-    assert f"E0={e[0, 0]:+.3g}" in result.labels[0].get_text()
+    a, b = fill.trace.edges[0]
+    assert f"E{a + 1}{b + 1}={e[0, 0]:+.3g}" in result.labels[0].get_text()
     assert "4 of 4" in ax.get_title()

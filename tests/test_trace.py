@@ -156,7 +156,7 @@ def test_span_trace_rows_split_and_spans():
 @pytest.mark.parametrize(
     ("xy", "flat_bottom_none", "flat_top_none"),
     [
-        ([[1.2, 1.5], [7.7, 1.5], [3.3, 8.1]], True, False),  # already flat-topped (v1.y == v2.y)
+        ([[1.2, 1.5], [7.7, 1.5], [3.3, 8.1]], True, False),  # already flat-topped (top, middle)
         ([[3.3, 0.4], [1.2, 8.5], [7.7, 8.5]], False, True),  # already flat-bottomed
         ([[1.0, 1.0], [8.0, 5.0], [3.0, 9.0]], False, False),  # general: split in two
     ],

@@ -27,14 +27,14 @@ def _floats(text: str, what: str) -> list[float]:
 
 
 def parse_xy(text: str) -> np.ndarray:
-    """Three vertices ``"x0,y0 x1,y1 x2,y2"`` (pixels, y down) as a (3, 2) array.
+    """Three vertices v1, v2, v3 ``"x1,y1 x2,y2 x3,y3"`` (pixels, y down) as a (3, 2) array.
 
     Vertices are separated by spaces or semicolons, coordinates by a comma.
     """
     groups = text.replace(";", " ").split()
     if len(groups) != 3 or any(g.count(",") != 1 for g in groups):
         raise argparse.ArgumentTypeError(
-            f"expected three vertices 'x0,y0 x1,y1 x2,y2', got {text!r}"
+            f"expected three vertices 'x1,y1 x2,y2 x3,y3', got {text!r}"
         )
     return np.array([_floats(g, "vertex") for g in groups], dtype=np.float64)
 
@@ -43,7 +43,7 @@ def parse_w(text: str) -> np.ndarray:
     """Clip-space w (view depth) of the three vertices, ``"1,2,4"``; each must be > 0."""
     w = _floats(text, "w")
     if len(w) != 3:
-        raise argparse.ArgumentTypeError(f"expected three depths 'w0,w1,w2', got {text!r}")
+        raise argparse.ArgumentTypeError(f"expected three depths 'w1,w2,w3', got {text!r}")
     if min(w) <= 0:
         # a vertex with w <= 0 is at or behind the eye: the 2-D fill cannot take it
         raise argparse.ArgumentTypeError(f"every w must be > 0 (in front of the eye), got {text!r}")
@@ -55,7 +55,9 @@ def parse_attr(text: str) -> tuple[str, np.ndarray]:
     name, sep, values = text.partition("=")
     name = name.strip()
     if not sep or not name.isidentifier():
-        raise argparse.ArgumentTypeError(f"expected NAME=v0,v1,v2, got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected NAME=f1,f2,f3 (a value per vertex), got {text!r}"
+        )
     groups = values.replace(";", " ").split()
     if len(groups) == 1:
         arr = np.array(_floats(groups[0], name))

@@ -100,7 +100,9 @@ def cmd_compare(args, parser) -> int:
                     view.update(
                         fill_from_args(args, Triangle(tri.xy, w=w, attrs=tri.attrs)), draw=False
                     )
-                    header.set_text(f"w = ({format_values(w)}): moving the depth of v{args.vertex}")
+                    header.set_text(
+                        f"w = ({format_values(w)}): moving the depth of v{args.vertex + 1}"
+                    )
 
                 frames = np.linspace(a, b, args.frames)
                 count = animate(
@@ -113,7 +115,7 @@ def cmd_compare(args, parser) -> int:
                     dpi=output_dpi(args),
                     quiet=args.quiet,
                 )
-                say(f"wrote {args.output}: w{args.vertex} from {a:g} to {b:g}, {count} frames")
+                say(f"wrote {args.output}: w{args.vertex + 1} from {a:g} to {b:g}, {count} frames")
             else:
                 fig.savefig(args.output, dpi=output_dpi(args))
                 say(f"wrote {args.output}: max |affine - perspective| = {view.maximum:.3g}")

@@ -25,20 +25,20 @@ def _add_triangle(p: argparse.ArgumentParser, *, attr_default: str | None) -> No
         "--xy",
         type=parse_xy,
         required=True,
-        help='three vertices in pixels, y down: "x0,y0 x1,y1 x2,y2"',
+        help='three vertices v1, v2, v3 in pixels, y down: "x1,y1 x2,y2 x3,y3"',
     )
     p.add_argument(
         "--w",
         type=parse_w,
         default=None,
-        help='clip-space w (view depth) per vertex, "w0,w1,w2" (default 1,1,1)',
+        help='clip-space w (view depth) per vertex, "w1,w2,w3" (default 1,1,1)',
     )
     p.add_argument(
         "--attr",
         type=parse_attr,
         action="append",
         default=None,
-        help="a vertex attribute NAME=v0,v1,v2 (repeatable)"
+        help="a vertex attribute NAME=f1,f2,f3, its values at v1, v2, v3 (repeatable)"
         + (f"; default {attr_default}" if attr_default else ""),
     )
     p.add_argument(
@@ -169,7 +169,7 @@ def add_compare(sub) -> None:
         type=int,
         choices=(0, 1, 2),
         default=2,
-        help="the vertex whose w the sweep moves (default 2)",
+        help="the vertex whose w the sweep moves, by index from 0: 0 is v1, 1 v2, 2 v3 (default 2)",
     )
     p.add_argument(
         "--frames", type=positive(int), default=24, help="frames of the sweep (default 24)"

@@ -21,6 +21,19 @@ KINDS = ("rejected", "accepted", "partial")
 REJECTED, ACCEPTED, PARTIAL = 0, 1, 2
 
 
+def edge_name(a, b) -> str:
+    """The name of the directed edge from vertex index ``a`` to ``b`` (indices from 0).
+
+    Vertices are v1, v2, v3 in the order given (index 0 is v1), and an edge is named by its
+    two vertices in walking order: ``edge_name(0, 1)`` is ``"E12"``, the edge v1→v2 whose edge
+    function is E(v1, v2, p); a triangle walked the other way has E13, E32, E21.
+
+    >>> [edge_name(a, b) for a, b in [(0, 1), (1, 2), (2, 0)]]
+    ['E12', 'E23', 'E31']
+    """
+    return f"E{int(a) + 1}{int(b) + 1}"
+
+
 def check_block_sizes(block_sizes) -> tuple[int, ...]:
     """``block_sizes`` as a tuple of positive ints, each dividing the one before.
 
@@ -211,7 +224,7 @@ class TileTrace:
         where = f"{s}×{s} block at (row {self.row[b]}, col {self.col[b]})"
         if (rows, cols) != (s, s):
             where += f", {rows}×{cols} inside the image"
-        name = [f"E{a}{c}" for a, c in edges]
+        name = [edge_name(a, c) for a, c in edges]
         if kind == REJECTED:
             k = int(self.rejected_by[b])
             why = (

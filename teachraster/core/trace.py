@@ -39,12 +39,14 @@ from .edges import setup_edges
 from .half_planes import HalfPlaneTrace
 from .multisample import SampleTrace
 from .span_tables import SpanTrace
-from .tile_trace import TileTrace
+from .tile_trace import TileTrace, edge_name
 from .validate import as_int
 
 SETUP_KINDS = ("snap", "winding", "bbox")
 SPAN_SETUP_KINDS = ("sort", "split")
 TILE_SETUP_KINDS = ("blocks",)
+#: The roles span tables give the vertices sorted by y (the notes' points 1, 2, 3).
+ROLES = ("top", "middle", "bottom")
 
 
 @dataclass(frozen=True)
@@ -90,7 +92,8 @@ class FillTrace:
     front_facing, culled : bool
         Counter-clockwise on screen; removed by back/front-face culling.
     edges : (3, 2) int
-        Original vertex indices (from, to) of the edges, in test order.
+        Original vertex indices (from, to) of the edges, in test order; indices count from 0
+        (index 0 is v1), and the captions name edge (a, b) ``E{a+1}{b+1}`` (:func:`edge_name`).
     top_left : (3,) bool
         Whether each edge is a top or left edge (decides centres exactly on it).
     bbox : BBox
@@ -384,7 +387,8 @@ class FillTrace:
             if area > 0:
                 turn += "clockwise on screen (back-facing)"
             else:
-                turn += "counter-clockwise on screen (front-facing); two vertices swapped so "
+                walk = "→".join(f"v{a + 1}" for a in self.edges[:, 0])
+                turn += f"counter-clockwise on screen (front-facing); walked {walk} instead, so "
                 turn += "the inside is on the positive side"
         return turn + ("; culled, nothing is filled" if self.culled else "")
 
@@ -397,25 +401,31 @@ class FillTrace:
                         f"({box.size} pixel centres)")  # fmt: skip
 
     def _sort_caption(self) -> str:
+        # The vertices keep their names (v1, v2, v3 as given); sorting gives them roles.
         s = self.span
         order = ", ".join(
-            f"v{i + 1} = vertex {o} ({x:g}, {y:g})"
-            for i, (o, (x, y)) in enumerate(zip(s.order, s.sorted_xy))
+            f"{role} v{o + 1} ({x:g}, {y:g})"
+            for role, o, (x, y) in zip(ROLES, s.order, s.sorted_xy)
         )
         return f"sorted by y: {order}"
 
     def _split_caption(self) -> str:
         s = self.span
+        top, mid, bot = (f"v{o + 1}" for o in s.order)
         if s.u4 is None:
             return "zero height: nothing to split"
         if s.flat_bottom is None:
-            return f"already flat-topped (v1.y = v2.y = {s.sorted_xy[0, 1]:g}): no split"
+            y = s.sorted_xy[0, 1]
+            return f"already flat-topped (top {top} and middle {mid} at y = {y:g}): no split"
         if s.flat_top is None:
-            return f"already flat-bottomed (v2.y = v3.y = {s.sorted_xy[1, 1]:g}): no split"
+            y = s.sorted_xy[1, 1]
+            return f"already flat-bottomed (middle {mid} and bottom {bot} at y = {y:g}): no split"
+        # Ek's formula, with roles for the notes' points 1, 2, 3, in (u, v) = (x, y)
         return (
-            f"split at y = {s.sorted_xy[1, 1]:g}: u4 = (v2-v1)/(v3-v1)*(u3-u1)+u1 = "
-            f"{s.u4:.3f}, giving a flat-bottom (v1, v2, v4) and a flat-top (v2, v4, v3) "
-            "triangle"
+            f"split at y = {s.sorted_xy[1, 1]:g} (middle {mid}): point 4 on the long edge "
+            f"{top}-{bot} has u4 = u_top + (v_mid-v_top)/(v_bot-v_top)*(u_bot-u_top) = "
+            f"{s.u4:.3f}; a flat-bottom ({top}, {mid}, point 4) and a flat-top "
+            f"({mid}, point 4, {bot}) part"
         )
 
     def _row_step(self, k: int, i: int) -> Step:
@@ -446,7 +456,7 @@ class FillTrace:
             rel = ">" if e > 0 else "<" if e < 0 else "="
             tie = " (on a top-left edge)" if e == 0 and passed else ""
             tie = " (on an edge that is not top-left)" if e == 0 and not passed else tie
-            parts.append(f"E{self.edges[t][0]}{self.edges[t][1]} = {e:.3g} {rel} 0{tie}")
+            parts.append(f"{edge_name(*self.edges[t])} = {e:.3g} {rel} 0{tie}")
             if not passed:
                 rejected = t
                 break  # a bail-out loop stops at the first failing test

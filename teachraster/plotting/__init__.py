@@ -17,7 +17,7 @@ Geometry of one fill (``fill = tr.rasterize(tri, W, H, trace=True)``)
 - :func:`plot_pixel_grid` -- pixel boundaries; sets up pixel axes (y down, ticks on centres).
 - :func:`plot_pixel_centres` -- the sample points, filled where covered.
 - :func:`plot_coverage` -- covered pixels of a Fill, Frame, trace or bool array.
-- :func:`plot_triangle` -- edges with direction arrows, vertex labels v0, v1, v2, edge names.
+- :func:`plot_triangle` -- edges with direction arrows, vertex labels v1, v2, v3, edge names.
 - :func:`plot_bbox` -- the bounding box and the pixels whose centres it holds.
 - :func:`plot_split` -- span tables: the split line at u4 with its value, the two flat parts.
 - :func:`plot_raster_line` -- span tables: the raster line of a step and its span.
@@ -38,7 +38,7 @@ Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
 
 Per-pixel values
 ----------------
-- :func:`plot_barycentric` -- λ0, λ1, λ2 as RGB, or one weight as a value map.
+- :func:`plot_barycentric` -- λ1, λ2, λ3 as RGB, or one weight as a value map.
 - :func:`plot_attribute` -- an interpolated attribute (affine or perspective-correct).
 - :func:`plot_error_heatmap` -- |a − b| with a colour bar; its maximum marked and in the title.
 - :func:`plot_depth` -- the depth buffer (window depth, 0 = near).

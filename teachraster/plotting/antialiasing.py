@@ -20,6 +20,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from ..core.fill import Fill
+from ..core.trace import edge_name
 from ..pipeline.rendering.render_triangles import Frame
 from .common import Artists, fs, label_box, lw, ms, show_image
 from .images import ImageArtists
@@ -172,12 +173,13 @@ class PixelSampleArtists(Artists):
             color = TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)] if frame else COLORS["edge"]
             self.edges += ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw(0.8))
         values = None if trace is None else trace.edge_values(row, col)
+        names = [] if trace is None else [edge_name(a, b) for a, b in source.trace.edges]
         for s, (ox, oy) in enumerate(offsets):
             t = int(ids[row, col, s])
             color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
             self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4), mfc=color,
                                  mec=COLORS["edge"], zorder=5)  # fmt: skip
-            label = _label(s, t, None if values is None else values[s])
+            label = _label(s, t, None if values is None else values[s], names)
             self.labels.append(ax.annotate(
                 label, (col + ox, row + oy), xytext=(6, 6), textcoords="offset points",
                 fontsize=fs(0.6), bbox=label_box(0.8), zorder=6,
@@ -186,11 +188,11 @@ class PixelSampleArtists(Artists):
         ax.set_title(f"pixel (row {row}, col {col}): {covered} of {len(offsets)} samples covered")
 
 
-def _label(s, t, e) -> str:
+def _label(s, t, e, names) -> str:
     head = f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
     if e is None:
         return head
-    return head + "\n" + " ".join(f"E{k}={v:+.3g}" for k, v in enumerate(e))
+    return head + "\n" + " ".join(f"{n}={v:+.3g}" for n, v in zip(names, e))
 
 
 def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> PixelSampleArtists:
@@ -200,7 +202,8 @@ def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> Pix
     ----------
     source : Fill or Frame
         Multisampled. A Fill rasterised with ``trace=True`` also labels every sample with
-        its three edge values E_k (px², oriented edges in test order; positive = inside).
+        its three edge values, named as in the captions (E12, E23, E31 for v1→v2→v3; px²,
+        oriented edges in test order; positive = inside).
     row, col : int
         The pixel.
     triangles : (N, 3, 2) array-like, optional

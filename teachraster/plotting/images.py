@@ -67,7 +67,7 @@ def show_values(ax, data, *, cmap=None, vmin=None, vmax=None, colorbar=True, lab
 def plot_barycentric(
     ax, fill, channel: int | None = None, *, colorbar: bool = True, title: bool = True
 ) -> ImageArtists:
-    """Screen-space barycentric weights λ0, λ1, λ2 at the covered pixel centres.
+    """Screen-space barycentric weights λ1, λ2, λ3 at the covered pixel centres (λk is 1 at vk).
 
     Parameters
     ----------
@@ -75,7 +75,8 @@ def plot_barycentric(
     fill : Fill (with trace) or FillTrace
     channel : {None, 0, 1, 2}
         None: all three at once as red, green and blue (each vertex its primary colour,
-        mixtures in between); 0, 1 or 2: that one weight as a value map with a colour bar.
+        mixtures in between); 0, 1 or 2: that one weight as a value map with a colour bar
+        (indices from 0: channel 0 is λ1, the weight of v1).
     colorbar : bool
         Colour bar for a single channel.
     title : bool
@@ -89,13 +90,13 @@ def plot_barycentric(
     lam = trace.image(trace.barycentric)
     if channel is None:
         result = show_values(ax, np.clip(lam, 0.0, 1.0))
-        name = "λ0, λ1, λ2 as red, green, blue"
+        name = "λ1, λ2, λ3 as red, green, blue"
     else:
         if channel not in (0, 1, 2):
             raise ValueError(f"channel must be None, 0, 1 or 2, got {channel!r}")
         result = show_values(ax, lam[..., channel], vmin=0, vmax=1, colorbar=colorbar,
-                       label=f"λ{channel}")  # fmt: skip
-        name = f"barycentric λ{channel}: 1 at v{channel}, 0 opposite"
+                       label=f"λ{channel + 1}")  # fmt: skip
+        name = f"barycentric λ{channel + 1}: 1 at v{channel + 1}, 0 opposite"
     if title:
         ax.set_title(name)
     return result

@@ -22,8 +22,7 @@ from matplotlib.text import Text
 
 from ..core.bbox import BBox
 from ..core.fill import Fill
-from ..core.span_tables import SpanTrace
-from ..core.trace import FillTrace, Step
+from ..core.trace import FillTrace, Step, edge_name
 from ..core.triangle import Triangle
 from ..core.validate import as_int, as_size
 from .common import (
@@ -220,21 +219,14 @@ def _default_edges(tri) -> np.ndarray:
 
 
 def vertex_names(tri) -> list[str]:
-    """Names of the vertices at input positions 0, 1, 2, as the captions of ``tri`` use them.
+    """Names of the vertices at input positions 0, 1, 2: ``["v1", "v2", "v3"]``.
 
-    Span tables name the vertices sorted by y (Ek, *Triangles and Perspective Correct Interpolation*): v1 top, v2 middle, v3 bottom, so
-    the vertex at input position ``span.order[k]`` is ``v{k+1}``. Everything else (half-plane
-    fills, bare triangles) names them in input order: v0, v1, v2.
+    One naming everywhere (captions, labels, lessons): vertices are v1, v2, v3 in the order
+    given, whatever the method; span tables name their sorted order by role (top, middle,
+    bottom) in the captions instead of renaming the vertices. ``tri`` is accepted so that
+    callers need not care what they draw.
     """
-    if isinstance(tri, Fill | FillTrace):
-        trace = as_trace(tri)
-        span = getattr(trace, "span", None)
-        if trace.method == "span" and isinstance(span, SpanTrace):
-            names = [""] * 3
-            for k, i in enumerate(np.asarray(span.order, dtype=int)):
-                names[i] = f"v{k + 1}"
-            return names
-    return ["v0", "v1", "v2"]
+    return [f"v{k + 1}" for k in range(3)]
 
 
 def _outward(points: np.ndarray, centre: np.ndarray, dist: float, ax) -> list:
@@ -282,7 +274,7 @@ class TriangleArtists(Artists):
         ):
             label.xy = tuple(p)
             label.set_position(off)
-            label.set_text(f"E{a}{b}")
+            label.set_text(edge_name(a, b))
 
 
 def plot_triangle(
@@ -297,9 +289,8 @@ def plot_triangle(
 ) -> TriangleArtists:
     """Draw a triangle's edges with direction arrows and the vertex labels.
 
-    Vertices are labelled as the captions name them: v0, v1, v2 in input order, except for a
-    span-table fill, whose captions name them sorted by y (v1 top, v2 middle, v3 bottom; see
-    :func:`vertex_names`). A label whose vertex lies far outside the Axes is not drawn.
+    Vertices are labelled as the captions name them, v1, v2, v3 in the order given (``xy[0]``
+    is v1), for every method. A label whose vertex lies far outside the Axes is not drawn.
 
     Parameters
     ----------
@@ -309,13 +300,13 @@ def plot_triangle(
     edges : (3, 2) int array, optional
         Directed edges as (from, to) vertex indices. Default: for a fill, the edges in the
         order and direction they are tested (``trace.edges``, interior on the right as seen on
-        screen); otherwise v0→v1→v2→v0, which shows the winding as given.
+        screen); otherwise v1→v2→v3→v1, which shows the winding as given.
     arrows : bool
         An arrowhead in the middle of each edge, pointing along it.
     labels : bool
-        Vertex labels (v0, v1, v2; v1, v2, v3 by y for span tables), pushed outwards.
+        Vertex labels v1, v2, v3, pushed outwards.
     edge_labels : bool
-        Label each edge with its edge function's name, e.g. ``E01`` (as in the captions).
+        Label each edge with its edge function's name, e.g. ``E12`` (as in the captions).
     color : colour, optional
         Default: the "edge" colour of :data:`~teachraster.plotting.style.COLORS`.
 
@@ -419,30 +410,32 @@ class SplitArtists(Artists):
         if s is None or s.u4 is None:
             self.set_visible(False)
             return
-        v2y = float(s.sorted_xy[1, 1])
+        v2y = float(s.sorted_xy[1, 1])  # the middle vertex's y
         for poly, part in ((self.flat_bottom, s.flat_bottom), (self.flat_top, s.flat_top)):
             poly.set_visible(part is not None)
             if part is not None:
                 poly.set_xy(part)
         self.line.set_data([0, trace.width], [v2y, v2y])
         self.point.set_data([s.u4], [v2y])
-        # The label sits just above the split line, on the side of v4 towards v2: that part
-        # of the line is inside the triangle, so the label stays within the image.
+        # The label sits just above the split line, on the side of point 4 towards the middle
+        # vertex: that part of the line is inside the triangle, so the label stays in the image.
         right = s.u4 <= s.sorted_xy[1, 0]
         self.label.xy = (s.u4, v2y)
         self.label.set_position((fs(0.5) if right else -fs(0.5), fs(0.5)))
         self.label.set_horizontalalignment("left" if right else "right")
-        self.label.set_text(f"v4: u4 = {s.u4:.2f}")
+        self.label.set_text(f"point 4: u4 = {s.u4:.2f}")
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
 
 
 def plot_split(ax, fill) -> SplitArtists:
-    """The span-table split: the line y = v2.y, the point v4 = (u4, v2.y), the flat triangles.
+    """The span-table split: the line through the middle vertex, point 4 on it, the flat parts.
 
-    Ek, *Triangles and Perspective Correct Interpolation*, §1.1: with the vertices sorted by y (v1 top, v3 bottom),
-    ``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` splits the triangle into a flat-bottom
-    (v1, v2, v4) and a flat-top (v2, v4, v3) triangle.
+    Ek, *Triangles and Perspective Correct Interpolation*, §1.1: with the vertices sorted by y
+    into top, middle and bottom (the notes' points 1, 2, 3; (u, v) = (x, y)), the line
+    v = v_mid meets the long edge at point 4, ``u4 = u_top + (v_mid - v_top) / (v_bot - v_top)
+    * (u_bot - u_top)``, which splits the triangle into a flat-bottom (top, middle, point 4)
+    and a flat-top (middle, point 4, bottom) triangle.
 
     Parameters
     ----------
@@ -455,7 +448,7 @@ def plot_split(ax, fill) -> SplitArtists:
     -------
     SplitArtists
         ``flat_bottom``, ``flat_top`` (Polygon), ``line`` (dashed Line2D across the image),
-        ``point`` (marker at v4) and ``label`` (Annotation with the value of u4).
+        ``point`` (marker at point 4) and ``label`` (Annotation with the value of u4).
     """
     # opaque tints rather than alpha: the same look on white, and cheaper to redraw
     flat_bottom = Polygon(np.zeros((3, 2)), closed=True, fc=tint(COLORS["flat_bottom"], 0.3),
@@ -632,7 +625,8 @@ def plot_edge_values(
     ax : matplotlib Axes
     fill : Fill (with trace) or FillTrace
     k : {0, 1, 2}
-        Edge in test order (``trace.edges[k]``, named ``E{a}{b}`` as in the captions).
+        Edge in test order (``trace.edges[k]`` = (a, b), indices from 0, named ``E{a+1}{b+1}``
+        as in the captions).
     signs : bool
         Show only the sign (+ inside, − outside, 0 on the edge) instead of the values.
     annotate : bool, optional
@@ -654,7 +648,7 @@ def plot_edge_values(
         raise ValueError(f"k must be 0, 1 or 2 (an edge in test order), got {k!r}")
     e = edge_images(trace)[..., k]
     a, b = trace.edges[k]
-    name = f"E{a}{b}"
+    name = edge_name(a, b)
     h, w = e.shape
     if annotate is None:  # values need bigger cells than signs to stay legible
         annotate = h * w <= (ANNOTATE_LIMIT if signs else ANNOTATE_LIMIT // 2)
@@ -690,7 +684,7 @@ def plot_edge_values(
     if title:
         what = "sign of " if signs else ""
         tl = "top-left" if trace.top_left[k] else "not top-left"
-        ax.set_title(f"{what}{name}: edge v{a} → v{b} ({tl})")
+        ax.set_title(f"{what}{name}: edge v{a + 1} → v{b + 1} ({tl})")
     return result
 
 
@@ -754,7 +748,7 @@ def plot_bailout(ax, fill, *, annotate: bool | None = None, title: bool = True) 
     if annotate and not trace.culled:
         result.texts = _cell_texts(ax, run.astype(float), lambda v: str(int(v)), rows=b.row0,
                                    cols=b.col0, scale=0.6)  # fmt: skip
-    names = [f"E{a}{c}" for a, c in trace.edges]
+    names = [edge_name(a, c) for a, c in trace.edges]
     handles = [Patch(fc=BAILOUT_COLORS[0], label="covered: 3 tests")] + [
         Patch(fc=BAILOUT_COLORS[t + 1],
               label=f"out at test {t + 1} ({names[t]}): {t + 1} test" + "s" * (t > 0))

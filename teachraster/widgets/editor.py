@@ -58,7 +58,7 @@ class TriangleEditor(Holdable):
     ----------
     tri : Triangle
         The starting triangle. If it has no attribute ``attribute``, ``u = [0, 1, 0]`` is
-        added (0 at v0 and v2, 1 at v1).
+        added (0 at v1 and v3, 1 at v2).
     width, height : int
         Image size in pixels.
     method : {"span", "halfplane"}
@@ -135,22 +135,22 @@ class TriangleEditor(Holdable):
         for i in range(3):
             x = widgets.FloatSlider(value=on_grid(xy[i, 0]), min=on_grid(min(0.0, xy[i, 0]), -1),
                                     max=on_grid(max(float(width), xy[i, 0]), 1), step=GRID,
-                                    description=f"x{i} (px)", readout_format=".2f",
+                                    description=f"x{i + 1} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
             y = widgets.FloatSlider(value=on_grid(xy[i, 1]), min=on_grid(min(0.0, xy[i, 1]), -1),
                                     max=on_grid(max(float(height), xy[i, 1]), 1), step=GRID,
-                                    description=f"y{i} (px)", readout_format=".2f",
+                                    description=f"y{i + 1} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
             lo, hi = math.log10(min(W_RANGE[0], w[i])), math.log10(max(W_RANGE[1], w[i]))
             wi = widgets.FloatLogSlider(value=w[i], base=10, min=lo, max=hi, step=0.01,
-                                        description=f"w{i} (depth)", readout_format=".2f",
+                                        description=f"w{i + 1} (depth)", readout_format=".2f",
                                         style=style_kw, layout=layout)  # fmt: skip
             for s in (x, y, wi):
                 s.observe(self._on_slider, "value")
             self.x.append(x)
             self.y.append(y)
             self.w.append(wi)
-            columns.append(widgets.VBox([widgets.HTML(f"<b>vertex v{i}</b>"), x, y, wi]))
+            columns.append(widgets.VBox([widgets.HTML(f"<b>vertex v{i + 1}</b>"), x, y, wi]))
         self.method = widgets.ToggleButtons(
             options=[("span tables", "span"), ("half-planes", "halfplane")],
             value=method,

@@ -6,10 +6,10 @@ lines, Fatahalian's 3 × 3 system and its set-up matrix M (CMU 15-462 *Texture*)
 coefficients A, B, C, D of *Triangle Rasterisation II - Interpolation* with its steps
 dx = −A/C, dy = −B/C.
 
-Symbols (lesson 00's table): vertices v0, v1, v2 (Fatahalian's **a**, **b**, **c**), vertex
-values f0, f1, f2 (his f1, f2, f3); the plane f(x, y) = g_x x + g_y y + g_0 (Fatahalian writes
-A, B, C for g_x, g_y, g_0; the other note's A, B, C, D are different numbers, C being twice
-the signed area).
+Symbols (lesson 00's table): vertices v1, v2, v3 (Fatahalian's **a**, **b**, **c**), vertex
+values f1, f2, f3 (his too; in code ``f[0]`` is f1); the plane f(x, y) = g_x x + g_y y + g_0
+(Fatahalian writes A, B, C for g_x, g_y, g_0; the other note's A, B, C, D are different
+numbers, C being twice the signed area).
 """
 
 from __future__ import annotations
@@ -36,16 +36,16 @@ def plane_system(xy, f) -> dict:
     Parameters
     ----------
     xy : (3, 2) array-like
-        Vertices v0, v1, v2 in pixels.
+        Vertices v1, v2, v3 in pixels.
     f : (3,) array-like
-        Vertex values f0, f1, f2.
+        Vertex values f1, f2, f3.
 
     Returns
     -------
     dict
-        ``system`` the 3 × 3 matrix with rows (x_k, y_k, 1) of v0, v1, v2;
+        ``system`` the 3 × 3 matrix with rows (x_k, y_k, 1) of v1, v2, v3;
         ``g`` (g_x, g_y, g_0) solving ``system @ g = f`` (f = g_x x + g_y y + g_0);
-        ``M`` the 2 × 2 set-up matrix; ``g_recentred`` ``M @ (f1 - f0, f2 - f0)``, which must
+        ``M`` the 2 × 2 set-up matrix; ``g_recentred`` ``M @ (f2 - f1, f3 - f1)``, which must
         equal (g_x, g_y); ``ABCD`` the other note's coefficients; ``area2`` = 2 × signed area.
         For a zero-area triangle only ``system`` and ``area2`` (0) are given.
 
@@ -108,9 +108,9 @@ class PlaneExplorer:
     Parameters
     ----------
     xy : (3, 2) array-like
-        Starting vertices v0, v1, v2 in pixels.
+        Starting vertices v1, v2, v3 in pixels.
     f : (3,) array-like
-        Starting vertex values f0, f1, f2.
+        Starting vertex values f1, f2, f3.
     width, height : int
         Pixel grid.
     backend : {"auto", "ipympl", "image"}
@@ -183,9 +183,9 @@ class PlaneExplorer:
             s.observe(lambda change: self.update(), "value")
             return s
 
-        self.x = [slider(xy[k, 0], 0.0, self.width, f"v{k} x") for k in range(3)]
-        self.y = [slider(xy[k, 1], 0.0, self.height, f"v{k} y") for k in range(3)]
-        self.f = [slider(f[k], -1.0, 2.0, f"f{k}") for k in range(3)]
+        self.x = [slider(xy[k, 0], 0.0, self.width, f"v{k + 1} x") for k in range(3)]
+        self.y = [slider(xy[k, 1], 0.0, self.height, f"v{k + 1} y") for k in range(3)]
+        self.f = [slider(f[k], -1.0, 2.0, f"f{k + 1}") for k in range(3)]
 
     @property
     def xy(self) -> np.ndarray:
@@ -251,7 +251,7 @@ class PlaneExplorer:
             f"<tr><td>[{x:.2f}</td><td>{y:.2f}</td><td>1]</td><td>&nbsp;=&nbsp;{v:.2f}</td></tr>"
             for (x, y), v in zip(xy, f)
         )
-        parts = ["<b>3 × 3 system</b> (rows v0, v1, v2) · (g_x, g_y, g_0) = f:",
+        parts = ["<b>3 × 3 system</b> (rows v1, v2, v3) · (g_x, g_y, g_0) = f:",
                  f"<table style='font-family:monospace'>{rows}</table>"]  # fmt: skip
         if "g" not in s:
             parts.append("<b>zero area</b>: the three points are on one line, no plane")
@@ -262,7 +262,7 @@ class PlaneExplorer:
         parts += [
             f"solution: g_x = {gx:.4f}, g_y = {gy:.4f}, g_0 = {g0:.4f}",
             f"<b>M</b> = [[{m00:.4f}, {m01:.4f}], [{m10:.4f}, {m11:.4f}]] (once per triangle)",
-            "M · (f1 − f0, f2 − f0) = "
+            "M · (f2 − f1, f3 − f1) = "
             f"({s['g_recentred'][0]:.4f}, {s['g_recentred'][1]:.4f}) = (g_x, g_y)",
             f"<b>A, B, C, D</b> = {A:.3f}, {B:.3f}, {C:.3f}, {D:.3f} "
             f"(C = 2 × signed area = {s['area2']:.3f})",
