@@ -80,14 +80,14 @@ def test_01_hand_written_span_loop_matches_the_package():
     assert list(span.order) == list(ns.order)
     assert np.array_equal(span.sorted_xy, ns.xy[ns.order])
     assert ns.u4 == 6.5 == span.u4
-    # v4 = (u4, v2) lies exactly on the long edge
+    # point 4 = (u4, v_mid) lies exactly on the long edge
     import teachraster as tr
 
-    assert tr.edge_function(ns.xy[ns.order][0], ns.xy[ns.order][2], [ns.u4, ns.v2]) == 0
-    assert span.flat_bottom[1, 1] == span.flat_bottom[2, 1] == ns.v2
-    assert span.flat_top[0, 1] == span.flat_top[1, 1] == ns.v2
+    assert tr.edge_function(ns.xy[ns.order][0], ns.xy[ns.order][2], [ns.u4, ns.v_mid]) == 0
+    assert span.flat_bottom[1, 1] == span.flat_bottom[2, 1] == ns.v_mid
+    assert span.flat_top[0, 1] == span.flat_top[1, 1] == ns.v_mid
     assert np.array_equal(ns.cover, ns.fill.coverage)
-    rows = [r for r in span.rows if r in ns.ends]  # the package also traces row v = v3
+    rows = [r for r in span.rows if r in ns.ends]  # the package also traces row v = v_bot
     assert set(span.rows) - set(rows) == {17}
     assert np.array_equal(span.x_left[: len(rows)], [ns.ends[i][0] for i in rows])
     assert np.array_equal(span.x_right[: len(rows)], [ns.ends[i][1] for i in rows])
@@ -123,7 +123,7 @@ def test_02_bbox_edge_functions_and_bailout():
         rows.stop,
     )
     assert box.size == len(rows) * len(cols) == 169
-    assert ns.cross_z == ns.cs148 == tr.edge_function(ns.v0, ns.v1, ns.p) > 0
+    assert ns.cross_z == ns.cs148 == tr.edge_function(ns.v1, ns.v2, ns.p) > 0
     assert (ns.F != 0).all()
     assert np.array_equal((ns.F > 0).all(axis=-1), ns.fill.coverage)
     b = box
@@ -166,15 +166,15 @@ def test_03_three_views_of_one_plane():
     lam_px = ns.lam_px
     assert np.allclose(lam_px, tr.barycentric(ns.fill.trace.snapped, ns.centres), atol=1e-15)
     assert ((lam_px >= 0) & (lam_px <= 1)).all()
-    # the contour lines drawn are lines of constant λ0 inside the triangle
-    assert np.nanmin(ns.lam0_fine) >= 0 and np.nanmax(ns.lam0_fine) <= 1
+    # the contour lines drawn are lines of constant λ1 inside the triangle
+    assert np.nanmin(ns.lam1_fine) >= 0 and np.nanmax(ns.lam1_fine) <= 1
     plane = ns.plane
     assert np.allclose(-(plane.A * xy[:, 0] + plane.B * xy[:, 1] + plane.D) / plane.C, f)
     assert plane.C == tr.edge_function(*xy)
     assert np.isclose(plane(*p), ns.lam @ f)
     ys, xs = np.mgrid[0:14, 0:16] + 0.5
     assert np.allclose(ns.grid, plane(xs, ys), atol=1e-13)
-    # Fatahalian's 3 x 3 system, and M recentred at v0, give the same gradient
+    # Fatahalian's 3 x 3 system, and M recentred at v1, give the same gradient
     assert np.allclose(ns.system @ [ns.g_x, ns.g_y, ns.g_0], f)
     assert np.allclose(ns.g_recentred, [ns.g_x, ns.g_y]) and np.allclose(ns.M, ns.M_by_hand)
     assert np.allclose([ns.g_x, ns.g_y], [plane.dx, plane.dy])

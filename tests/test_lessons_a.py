@@ -99,7 +99,7 @@ def test_00_facing_and_the_two_methods():
     assert not ns.tri.front_facing  # "clockwise on screen": back-facing in OpenGL's convention
     assert ns.same  # the predict answer "none"
     order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
-    assert list(order) == [0, 1, 2]  # "given top to bottom": names by height = input order + 1
+    assert list(order) == [0, 1, 2]  # "here also top to bottom"
 
 
 def test_01_float_crossing_is_no_tie_rule_and_stepping():
