@@ -5,7 +5,7 @@ product (b - a) × (p - a) (lesson: half-planes, Ek, *Triangles and Perspective 
 
     E(a, b, p) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x)
 
-With the vertices ordered so that the triangle's own area E(v0, v1, v2) is positive, a
+With the vertices ordered so that the triangle's own area E(v1, v2, v3) is positive, a
 point is inside when all three edge functions are positive. A centre exactly on an edge
 (E == 0) is inside only for a *top* or *left* edge, so a centre on an edge shared by two
 triangles belongs to exactly one of them.
@@ -39,7 +39,7 @@ class EdgeSetup:
     p: np.ndarray  # (..., 3, 2) oriented vertices, internal units
     perm: np.ndarray  # (..., 3) original vertex index of each oriented vertex
     area2: int | float | np.ndarray  # (...) E(p0, p1, p2) >= 0, in units²
-    original_area2: int | float | np.ndarray  # (...) E(v0, v1, v2) in the caller's order
+    original_area2: int | float | np.ndarray  # (...) E(v1, v2, v3) in the caller's order
     top_left: np.ndarray  # (..., 3) bool per edge
     unit: int | float  # internal units per pixel
     exact: bool  # True on the snapped integer grid
@@ -147,7 +147,7 @@ def top_left_edges(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def facing(area2) -> np.ndarray:
-    """Facing of triangles from their signed area E(v0, v1, v2): int8 +1, -1 or 0.
+    """Facing of triangles from their signed area E(v1, v2, v3): int8 +1, -1 or 0.
 
     +1 clockwise on screen (back-facing), -1 counter-clockwise (front-facing, CONVENTIONS'
     winding), 0 zero area.
@@ -161,7 +161,7 @@ def facing(area2) -> np.ndarray:
 def culled(area2, cull: str | None) -> np.ndarray:
     """The culling test, the one place it is written: which triangles ``cull`` removes.
 
-    ``area2`` is E(v0, v1, v2) of the *snapped* triangle in the caller's vertex order (the
+    ``area2`` is E(v1, v2, v3) of the *snapped* triangle in the caller's vertex order (the
     triangle that is actually filled); ``cull`` is None, "back" or "front". Zero-area
     triangles are never culled (they cover nothing anyway).
 

@@ -1,7 +1,7 @@
 """Half-plane fill: bounding box, then three edge tests per pixel (Ek, *Triangles and Perspective Correct Interpolation*, §1.2, the CS148 rasterisation notes (*Why Triangles?*)).
 
 Every pixel centre in the bounding box is tested against the three edges in turn
-(walking round the triangle: v0→v1, v1→v2, v2→v0 in positive winding). A scalar loop
+(walking round the triangle: v1→v2, v2→v3, v3→v1 in positive winding, the edges E12, E23, E31). A scalar loop
 would bail out at the first failing test; here all pixels are tested at once (as a GPU
 does, in lock-step) and the trace records, per pixel, how many tests the bail-out
 version would have run and which one rejected it.

@@ -1,15 +1,18 @@
 """Span tables: split at u4 into a flat-bottom and a flat-top triangle, fill row by row.
 
-Ek, *Triangles and Perspective Correct Interpolation*, §1.1: sort the vertices by y (v1 top, v3 bottom). The horizontal line through
-v2 meets the long edge v1-v3 at ``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` (similar
-triangles), which splits the triangle into a flat-bottom one (v1, v2, v4) and a flat-top
-one (v2, v4, v3). Each raster line of either is one span between a left and a right edge.
+Ek, *Triangles and Perspective Correct Interpolation*, §1.1: sort the vertices by y into top,
+middle and bottom (Ek's points 1, 2, 3; in this module's code ``v1, v2, v3`` and ``(u1, v1)``
+are those points, not the caller's v1, v2, v3, which keep their names in every caption). The
+horizontal line through the middle one meets the long edge at point 4,
+``u4 = (v2 - v1) / (v3 - v1) * (u3 - u1) + u1`` (similar triangles), which splits the
+triangle into a flat-bottom one (top, middle, point 4) and a flat-top one (middle, point 4,
+bottom). Each raster line of either is one span between a left and a right edge.
 
 To cover exactly the pixels the half-plane method covers, each span end is computed as
 the exact solution of that edge's test on the row: on the snapped grid the last covered
 column is an integer floor division, with the top-left tie rule folded in. A row applies
 the test of every edge whose y-range contains it: the two edges of its flat triangle,
-and on the split row itself also the other short edge (v2 lies on both); a horizontal
+and on the split row itself also the other short edge (the middle vertex lies on both); a horizontal
 edge keeps or drops its whole row by the top-edge rule.
 """
 
@@ -31,13 +34,14 @@ class SpanTrace:
     Attributes
     ----------
     order : (3,) int
-        Original indices of v1, v2, v3 (sorted by y, then x).
+        Original indices (from 0) of the top, middle and bottom vertex (sorted by y, then x).
     sorted_xy : (3, 2) float
-        v1, v2, v3 (snapped), in pixels.
+        Top, middle and bottom vertex (snapped), in pixels.
     u4 : float or None
-        x of the split point v4 = (u4, v2.y); None for a zero-height triangle.
+        x of the split point, point 4 = (u4, middle y); None for a zero-height triangle.
     flat_bottom, flat_top : (3, 2) float or None
-        (v1, v2, v4) and (v2, v4, v3); None when that part has zero height.
+        (top, middle, point 4) and (middle, point 4, bottom); None when that part has zero
+        height.
     rows : (n,) int
         Raster lines, top to bottom (every row whose centre is within the y-range).
     half : (n,) int8

@@ -75,7 +75,7 @@ class Triangle:
     def signed_area(self) -> float:
         """Signed area in px², positive when the vertices run clockwise on screen.
 
-        Computed relative to vertex 0 (y-down numbers), ``E(v0, v1, v2) / 2``. Front-facing
+        Computed relative to v1 (y-down numbers), ``E(v1, v2, v3) / 2``. Front-facing
         triangles (counter-clockwise on screen) have a negative value.
         """
         (ax, ay), (bx, by), (cx, cy) = self.xy

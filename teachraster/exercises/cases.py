@@ -151,5 +151,6 @@ def proper_triangles() -> list[tuple[str, np.ndarray]]:
 
 
 def sorted_by_y(xy: np.ndarray) -> np.ndarray:
-    """v1, v2, v3 sorted by y (stable, as the span-table fill sorts them)."""
+    """The vertices sorted by y: the notes' points 1, 2, 3 (stable, as the span-table fill sorts
+    them)."""
     return xy[np.argsort(xy[:, 1], kind="stable")]

@@ -109,16 +109,17 @@ def draw_bars(ax, labels, values, wrong):
 
 
 def draw_split(ax, v, expected, got):
-    """The sorted triangle, the line v = v2.y, the true v4 and the student's."""
+    """The sorted triangle (points 1, 2, 3 by height), the line through point 2, the true point 4
+    and the student's."""
     ring = np.vstack([v, v[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     artists += ax.plot([v[0, 0], v[2, 0]], [v[0, 1], v[2, 1]], color=EDGE_COLOUR, linewidth=3)
     artists.append(ax.axhline(v[1, 1], color="#888888", linestyle=":"))
-    artists += ax.plot(expected, v[1, 1], "o", color="#2b7bba", label="v4 (expected)")
+    artists += ax.plot(expected, v[1, 1], "o", color="#2b7bba", label="point 4 (expected)")
     if got is not None and np.isfinite(drawable(got, v)):
         artists += ax.plot(got, v[1, 1], "x", color=STATE_COLOURS[3], ms=10, label="your u4")
     for k, p in enumerate(v):
-        artists.append(ax.annotate(f"v{k + 1}", p, fontsize="x-small"))
+        artists.append(ax.annotate(f"point {k + 1}", p, fontsize="x-small"))
     ax.set_ylim(v[:, 1].max() + 1, v[:, 1].min() - 1)
     ax.set_aspect("equal", adjustable="datalim")
     artists.append(ax.legend(fontsize="x-small"))
