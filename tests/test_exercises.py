@@ -69,8 +69,8 @@ def test_the_mistakes_name_the_rule_and_quote_the_numbers():
     name, fn, _ = MISTAKES["u4 without its offset"]
     first = ex.check(name, fn).failures[0].explanation
     assert first == (
-        "your u4 is 0.545 for v1=(2.5, 1.5), v2=(9.5, 4.5), v3=(4.5, 12.5); the long edge "
-        "meets v = 4.5 at u = 3.045 (did you add u1?)"
+        "your u4 is 0.545 for points 1, 2, 3 = (2.5, 1.5), (9.5, 4.5), (4.5, 12.5); "
+        "the long edge meets v = 4.5 at u = 3.045 (did you add u1?)"
     )
     name, fn, _ = MISTAKES["affine instead of perspective"]
     first = ex.check(name, fn).failures[0].explanation

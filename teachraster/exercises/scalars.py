@@ -155,14 +155,16 @@ def split_point_cases():
 
 def explain_split_point(args, expected, got) -> str:
     (v,) = args
-    (u1, v1), (u2, v2), (u3, v3) = v
-    head = f"your u4 is {num(got, expected)} for {tri_words(v)}"
+    (u1, v1), (u2, v2), (u3, v3) = v  # the notes' points 1, 2, 3, sorted by height
+    points = ", ".join(vec(p) for p in v)
+    head = f"your u4 is {num(got, expected)} for points 1, 2, 3 = {points}"
     rule = f"the long edge meets v = {num(v2)} at u = {num(expected, got)}"
     if close(got, expected - u1) and not close(u1, 0):
         return "without u1", f"{head}; {rule} (did you add u1?)"
     if close(got, u1 + (v2 - v1) / (v3 - v1) * (u2 - u1)):
         return "short edge", (
-            f"{head}; {rule}: u4 lies on the long edge v1→v3, so use u3 − u1, not u2 − u1"
+            f"{head}; {rule}: u4 lies on the long edge from point 1 to point 3, so use u3 − u1, "
+            "not u2 − u1"
         )
     if close(got, u1 + (v3 - v1) / (v2 - v1) * (u3 - u1)) if v2 != v1 else False:
         return "inverse", f"{head}; {rule}: the fraction is (v2 − v1)/(v3 − v1), not its inverse"
