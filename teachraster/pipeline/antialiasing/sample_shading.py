@@ -34,7 +34,7 @@ class ShadeTables:
         For weight k, the opposite edge a → b (a = vertex k+1, b = vertex k+2): a.x, a.y,
         dx, dy, in pixels (the barycentric source vertices).
     area : (M,) float64
-        E(v0, v1, v2) of those vertices.
+        E(v1, v2, v3) of those vertices.
     w : (M, 3) float64
         Clip w per vertex; ``ratio`` (3, M) min(w) / w_i, the perspective weights' factors.
     perspective : (M,) bool
@@ -92,7 +92,8 @@ def shade_tables(source, window, w, attrs, perspective) -> ShadeTables:
 def barycentrics_at(tables: ShadeTables, tri: np.ndarray, x, y) -> np.ndarray:
     """Barycentrics (3, n) of triangles ``tri`` at points (x, y) in pixels, any point.
 
-    Weight k is E(v_k+1, v_k+2, p) / E(v0, v1, v2): the same vertices and areas the batched
+    Weight k (from 0: λ1, λ2, λ3) is E(a, b, p) / E(v1, v2, v3), a → b the edge opposite its
+    vertex (indices k+1, k+2 mod 3): the same vertices and areas the batched
     fill uses, evaluated directly at the point (negative outside: extrapolation).
     """
     lam = np.empty((3, len(tri)))

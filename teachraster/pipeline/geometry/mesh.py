@@ -6,7 +6,7 @@ different faces (a cube's corners, a sphere's texture seam) it is simply duplica
 
 Winding: every closed mesh here has its outward faces counter-clockwise when seen from
 outside (OpenGL's default front face). Seen through a camera, front faces then have a
-negative ``E(v0, v1, v2)`` in y-down window coordinates (see CONVENTIONS).
+negative ``E(v1, v2, v3)`` in y-down window coordinates (see CONVENTIONS).
 
 >>> m = cube_mesh()
 >>> m.positions.shape, m.triangles.shape, m.corner("uv").shape

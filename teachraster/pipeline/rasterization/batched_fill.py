@@ -43,7 +43,7 @@ class Fragments:
         The positions, in pixels, the weights are set up from (snapped, or the caller's
         unsnapped ones with ``snapped_weights=False``), in the caller's vertex order.
     area2 : (n,) float64
-        E(v0, v1, v2) of ``vertices`` (twice the signed area, px²).
+        E(v1, v2, v3) of ``vertices`` (twice the signed area, px²).
 
     ``lam`` (m, 3), the screen-space barycentrics of every fragment, is computed on first
     use; :meth:`weights` and :meth:`weights_at` evaluate them for a subset or at any
@@ -72,9 +72,10 @@ class Fragments:
     def weights_at(self, tri: np.ndarray, x: np.ndarray, y: np.ndarray, scale=None) -> np.ndarray:
         """(len(tri), 3) barycentrics of triangles ``tri`` at points (x, y) in pixels.
 
-        Weight k is E(v_k+1, v_k+2, p) / E(v0, v1, v2), which holds for either winding;
+        Weight k (from 0: λ1, λ2, λ3) is E(a, b, p) / E(v1, v2, v3), a → b the edge opposite
+        its vertex in walking order (vertex indices k+1, k+2 mod 3), for either winding;
         points outside the triangle get negative weights (extrapolation). With ``scale``
-        (n, 3), weight k is E(v_k+1, v_k+2, p) * scale[tri, k] instead (per-triangle factors
+        (n, 3), weight k is E(a, b, p) * scale[tri, k] instead (per-triangle factors
         folded into the one pass, such as the perspective weights' 1/w, see
         :func:`teachraster.core.interpolation.normalised_weights`). The result is the
         transpose of a (3, len(tri)) array, so each weight's column is contiguous.
