@@ -88,8 +88,13 @@ class BlockCounters:
         ]
 
     def summary(self) -> str:
-        """One line, e.g. ``64×64: 2 empty / 1 full / 3 partial; ...; 96 pixel tests``."""
-        parts = [f"{lab}: {e} empty / {f} full / {p} partial" for lab, e, f, p in self.table()]
+        """One line, e.g. ``64×64: 2 rejected / 1 accepted / 3 partial; ...; 96 pixel tests``.
+
+        The words are the lessons' (llvmpipe's counters call them empty / full / partial).
+        """
+        parts = [
+            f"{lab}: {e} rejected / {f} accepted / {p} partial" for lab, e, f, p in self.table()
+        ]
         return "; ".join(parts) + f"; {self.pixel_tests} pixel tests"
 
 

@@ -107,7 +107,46 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
     art.front_line.set_data(xs, shown)
     allx = np.array([r[x] for r in rows], dtype=float)
     ally = np.array([art.floor if r[y] < EXACT_BELOW else r[y] for r in rows], dtype=float)
-    ax.set_xlim(allx.min() / 1.6, allx.max() * 3.0)  # room on the right for the labels
+    if ax.get_xscale() == "log":
+        ax.set_xlim(allx.min() / 1.6, allx.max() * 3.0)  # room on the right for the labels
+    else:
+        span = float(allx.max() - allx.min()) or 1.0
+        ax.set_xlim(allx.min() - 0.08 * span, allx.max() + 0.6 * span)
     ax.set_ylim(ally.min() / 3.0, ally.max() * 3.0)
+    spread_labels(ax, [art.labels[r["variant"]] for r in rows])
     art.front = front
     return front
+
+
+#: Where a label may sit relative to its point, in points, tried in this order:
+#: up-right, down-right, up-left, down-left.
+LABEL_SPOTS = ((1, 1), (1, -1), (-1, 1), (-1, -1))
+
+
+def spread_labels(ax, labels, gap: float = 6.0) -> None:
+    """Move each visible label to the first spot beside its point that overlaps no label
+    placed before it (estimated text boxes, no renderer needed, so a widget can call it on
+    every update); a label that fits nowhere keeps the up-right spot."""
+    to_px = ax.figure.dpi / 72.0
+    placed = []
+    shown = [lab for lab in labels if lab.get_visible()]
+    anchors = {id(lab): ax.transData.transform(lab.xy) for lab in shown}
+    for lab in sorted(shown, key=lambda lab: -anchors[id(lab)][1]):  # top first
+        size = lab.get_fontsize()
+        w, h = 0.6 * size * len(lab.get_text()), 1.2 * size
+        x0, y0 = anchors[id(lab)] / to_px  # in points
+        for sx, sy in LABEL_SPOTS:
+            dx = gap + 2 if sx > 0 else -(gap + 2) - w
+            dy = gap if sy > 0 else -gap - h
+            box = (x0 + dx, y0 + dy, x0 + dx + w, y0 + dy + h)
+            if not any(_overlap(box, other) for other in placed):
+                break
+        else:
+            dx, dy = gap + 2, gap
+            box = (x0 + dx, y0 + dy, x0 + dx + w, y0 + dy + h)
+        placed.append(box)
+        lab.set_position((dx, dy))
+
+
+def _overlap(a, b) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]

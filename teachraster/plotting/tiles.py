@@ -17,9 +17,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import matplotlib as mpl
 import numpy as np
 from matplotlib.collections import PolyCollection
-from matplotlib.colors import to_rgba
+from matplotlib.colors import BoundaryNorm, ListedColormap, to_rgba
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.table import Table
@@ -29,7 +30,7 @@ from ..core.tile_trace import KINDS, TileTrace
 from ..core.trace import FillTrace
 from ..core.traversal import TRAVERSALS, traversal_order
 from ..core.validate import check_choice
-from .common import Artists, as_trace, fs, lw, pixel_axes, show_image
+from .common import Artists, as_trace, fs, lw, pixel_axes, show_image, tint
 from .plots import plot_coverage, plot_pixel_grid, plot_triangle
 from .style import COLORS, OKABE_ITO, VALUE_CMAP
 
@@ -189,7 +190,8 @@ class CounterArtists(Artists):
 
 
 def plot_block_counters(ax, fill, *, title: bool = True) -> CounterArtists:
-    """llvmpipe's counters as a table: empty / full / partial blocks per size, pixel tests.
+    """llvmpipe's counters as a table: rejected / accepted / partial blocks per size (llvmpipe:
+    empty / full / partial), pixel tests.
 
     Accepts a tiled Fill or FillTrace, or a :class:`~teachraster.core.tile_trace.BlockCounters`.
     """
@@ -201,7 +203,7 @@ def plot_block_counters(ax, fill, *, title: bool = True) -> CounterArtists:
     ax.set_axis_off()
     table = ax.table(
         cellText=rows,
-        colLabels=["block", "empty", "full", "partial"],
+        colLabels=["block", "rejected", "accepted", "partial"],
         loc="center",
         cellLoc="center",
     )
@@ -293,16 +295,28 @@ def plot_early_z(ax, frame, kind: str = "hi_z", *, colorbar: bool = True) -> Ear
     """Per pixel, how many fragments Hi-Z rejected whole, early-z killed, or were shaded
     (a GPU drawing in order), or the renderer's own Hi-Z dropped (see :func:`early_z_counts`).
 
-    Zero is drawn transparent. The title gives the total.
+    One discrete colour per count; zero is transparent over the covered pixels in light grey.
+    The title gives the total.
     """
     counts = early_z_counts(frame, kind)
     height, width = counts.shape
-    shown = np.where(counts > 0, counts.astype(float), np.nan)
     pixel_axes(ax, width, height, ticks=False)
-    im = show_image(ax, shown, cmap=VALUE_CMAP, vmin=0, vmax=max(int(counts.max()), 1))
+    # The covered pixels in light grey underneath, so that the scene's outline shows where
+    # the counts are zero.
+    covered = np.where(np.asarray(frame.coverage, dtype=bool), 1.0, np.nan)
+    show_image(
+        ax, covered, cmap=ListedColormap([tint(COLORS["grid"], 0.3)]), vmin=0, vmax=1, zorder=0.3
+    )
+    # Counts are small integers: one discrete colour per count, 0 transparent.
+    top = max(int(counts.max()), 1)
+    cmap = ListedColormap(mpl.colormaps[VALUE_CMAP](np.linspace(0.25, 1.0, top)))
+    norm = BoundaryNorm(np.arange(top + 1) + 0.5, top)
+    shown = np.where(counts > 0, counts.astype(float), np.nan)
+    im = show_image(ax, shown, cmap=cmap, norm=norm, zorder=0.5)
     result = EarlyZArtists(im)
     if colorbar:
-        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, label="fragments")
+        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, label="fragments",
+                                             ticks=np.arange(1, top + 1))  # fmt: skip
     name = {
         "hi_z": "rejected by Hi-Z",
         "early_z": "killed by early-z",

@@ -31,7 +31,7 @@ class TileExplorer(Holdable):
     children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
     with the caption of the ``k``-th.
     The **block sizes** and **traversal** menus fill the triangle again. The counters
-    (llvmpipe's empty / full / partial per size and the pixel tests run) are shown below.
+    (rejected / accepted / partial per size, llvmpipe's empty / full / partial, and the pixel tests run) are shown below.
 
     Parameters
     ----------
@@ -176,7 +176,7 @@ def _counter_table(counters) -> str:
         for lab, e, f, p in counters.table()
     )
     return (
-        "<table><tr><th>block</th><th>empty</th><th>full</th><th>partial</th></tr>"
+        "<table><tr><th>block</th><th>rejected</th><th>accepted</th><th>partial</th></tr>"
         f"{rows}</table>"
         f"pixel tests run: <b>{counters.pixel_tests}</b> · pixels filled with no test: "
         f"<b>{counters.pixels_accepted}</b>"

@@ -281,12 +281,14 @@ def cube_mesh(size: float = 1.0) -> Mesh:
     """An axis-aligned cube of edge ``size`` centred at the origin: 24 vertices, 12 triangles.
 
     Each face has its own 4 vertices, so uv (0..1 per face, upright on the side faces),
-    normal and colour can differ from face to face. Colours: +x red, -x cyan, +y green, -y magenta, +z blue,
-    -z yellow.
+    normal and colour can differ from face to face. Colours (Okabe and Ito's colour-blind-safe
+    set, as in every figure of the course): +x vermillion, -x sky blue, +y bluish green,
+    -y reddish purple, +z blue, -z yellow.
     """
     h = _positive("size", size) / 2
     normals = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
-    colors = np.array([[1, 0, 0], [0, 1, 1], [0, 1, 0], [1, 0, 1], [0, 0, 1], [1, 1, 0]])
+    hexes = ["D55E00", "56B4E9", "009E73", "CC79A7", "0072B2", "F0E442"]
+    colors = np.array([[int(h[i : i + 2], 16) / 255 for i in (0, 2, 4)] for h in hexes])
     corners = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]])  # counter-clockwise in (u, v)
     pos, uv, nrm, col = [], [], [], []
     for n, c in zip(normals, colors):
