@@ -206,6 +206,7 @@ def plot_block_counters(ax, fill, *, title: bool = True) -> CounterArtists:
         colLabels=["block", "rejected", "accepted", "partial"],
         loc="center",
         cellLoc="center",
+        colWidths=[0.22, 0.26, 0.26, 0.22],  # wide enough for "accepted" at this size
     )
     table.auto_set_font_size(False)
     table.set_fontsize(fs(0.8))
