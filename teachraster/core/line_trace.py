@@ -118,29 +118,26 @@ class LineTrace:
 
     def lit_at(self, k: int) -> np.ndarray:
         """(height, width) bool: the pixels step ``k`` itself lit."""
-        k = self.index(k)
-        width, height = self.size
-        out = np.zeros((height, width), bool)
-        if k < len(SETUP):
-            return out
-        if self.steps is None:
-            return self.wide[k - len(SETUP)].copy()
-        mine = (self.steps.step == k - len(SETUP)) & (self.steps.state == LIT)
-        out[self.steps.rows[mine], self.steps.cols[mine]] = True
-        return out
+        return self._lit(k, cumulative=False)
 
     def coverage_at(self, k: int) -> np.ndarray:
         """(height, width) bool: the pixels lit after step ``k``."""
+        return self._lit(k, cumulative=True)
+
+    def _lit(self, k: int, *, cumulative: bool) -> np.ndarray:
+        """Pixels lit by work step ``k`` (or by every work step up to it): none during set-up."""
         k = self.index(k)
         width, height = self.size
         out = np.zeros((height, width), bool)
         if k < len(SETUP):
             return out
-        if self.steps is None:
-            for done in self.wide[: k - len(SETUP) + 1]:
+        work = k - len(SETUP)
+        if self.steps is None:  # wide lines: one coverage image per step
+            for done in self.wide[0 if cumulative else work : work + 1]:
                 out |= done
             return out
-        mine = (self.steps.step <= k - len(SETUP)) & (self.steps.state == LIT)
+        step = self.steps.step
+        mine = ((step <= work) if cumulative else (step == work)) & (self.steps.state == LIT)
         out[self.steps.rows[mine], self.steps.cols[mine]] = True
         return out
 
