@@ -184,6 +184,17 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     assert ns.bilinear_gap < 1e-12
     near, far = ns.picked["near"], ns.picked["far"]
     assert near[0] > far[0]
+    # "near the viewer smaller than a texel and about twice as long as wide; towards the horizon
+    # many texels long and thin"
+    from teachraster.plotting.footprint import footprint
+
+    fps = {}
+    for name, (r, c) in ns.picked.items():
+        fps[name] = footprint(ns.frame.attrs[r, c], ns.frame.ddx[r, c], ns.frame.ddy[r, c],
+                              ns.levels[0].shape)  # fmt: skip
+    axes = {k: sorted([np.hypot(*fp.axis_x), np.hypot(*fp.axis_y)]) for k, fp in fps.items()}
+    assert axes["near"][1] < 1 and 1.5 < axes["near"][1] / axes["near"][0] < 2.5
+    assert axes["far"][1] > 5 and axes["far"][1] / axes["far"][0] > 5
     read = ns.level_read
     steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
     steps = steps[np.isfinite(steps)]
