@@ -73,6 +73,7 @@ def test_06_edge_bits_and_depth_claims():
     assert ns.channels == 3
     # "float32 keeps 24 bits, fewer than a position at 1e6 px on the 1/256 px grid needs"
     assert ns.position_bits == 28 > 24 and ns.float32_step == 1 / 16
+    assert np.isclose(ns.floor_w.max() / ns.floor_w.min(), 100)  # "w grows a hundredfold"
     # "the counts differ by a factor of twenty or more"
     assert all(r >= 20 for r in ns.fill_ratio.values()), ns.fill_ratio
 
