@@ -71,6 +71,11 @@ def test_06_edge_bits_and_depth_claims():
     front = [r["variant"] for r in bench.pareto_front(depth_rows, x="bits")]
     assert not any(v.startswith("linear") for v in front)
     assert ns.channels == 3
+    # "float32 keeps 24 bits, fewer than a position at 1e6 px on the 1/256 px grid needs"
+    assert ns.position_bits == 28 > 24 and ns.float32_step == 1 / 16
+    assert np.isclose(ns.floor_w.max() / ns.floor_w.min(), 100)  # "w grows a hundredfold"
+    # "the counts differ by a factor of twenty or more"
+    assert all(r >= 20 for r in ns.fill_ratio.values()), ns.fill_ratio
 
 
 def test_06_divide_cost_slider_reprices_the_front():
@@ -156,6 +161,23 @@ def test_08_sampling_explorer_and_inspector():
         inspector.close()
 
 
+# -- 11 debugging a frame ------------------------------------------------------------------------
+def test_11_helper_share_counts_every_lane_launched():
+    ns = lesson("11_debugging_a_frame")
+    # "Small triangles waste most of their quads' lanes on helpers": the sphere's median
+    # triangle is a few pixels, the floor's two triangles are huge and waste few lanes.
+    assert ns.share["uv_sphere"] > 0.5 > 0.2 > ns.share["textured_floor"]
+    # the same share from the overlay's per-quad fractions, weighted by the lanes launched
+    t = ns.floor.trace
+    passed = t.fragment_passed
+    quad = (t.fragment_row[passed] // 2) * ((ns.W + 1) // 2) + t.fragment_col[passed] // 2
+    useful = np.bincount(quad, minlength=((ns.W + 1) // 2) * ((ns.H + 1) // 2))
+    frac = ns.floor.overlay("quad_overshading")[::2, ::2].ravel()
+    with np.errstate(invalid="ignore", divide="ignore"):
+        launched = np.where(frac < 1, useful / (1 - frac), 0)
+    assert np.isclose(1 - useful.sum() / launched.sum(), ns.share["textured_floor"])
+
+
 # -- 09 texture filtering -----------------------------------------------------------------------
 def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     ns = lesson("09_texture_filtering")
@@ -163,6 +185,17 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     assert ns.bilinear_gap < 1e-12
     near, far = ns.picked["near"], ns.picked["far"]
     assert near[0] > far[0]
+    # "near the viewer smaller than a texel and about twice as long as wide; towards the horizon
+    # many texels long and thin"
+    from teachraster.plotting.footprint import footprint
+
+    fps = {}
+    for name, (r, c) in ns.picked.items():
+        fps[name] = footprint(ns.frame.attrs[r, c], ns.frame.ddx[r, c], ns.frame.ddy[r, c],
+                              ns.levels[0].shape)  # fmt: skip
+    axes = {k: sorted([np.hypot(*fp.axis_x), np.hypot(*fp.axis_y)]) for k, fp in fps.items()}
+    assert axes["near"][1] < 1 and 1.5 < axes["near"][1] / axes["near"][0] < 2.5
+    assert axes["far"][1] > 5 and axes["far"][1] / axes["far"][0] > 5
     read = ns.level_read
     steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
     steps = steps[np.isfinite(steps)]
