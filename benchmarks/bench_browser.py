@@ -293,7 +293,7 @@ def bench_editor(page, tries, info):
     def at(x, y):
         return box["x"] + (x0 + sx * x) * scale, box["y"] + (y0 + sy * y) * scale
 
-    fps, firsts, kernel, trips = [], [], [], []
+    fps, firsts, kernel, trips, parts = [], [], [], [], []
     hx, hy = info["handles"][1]
     for _ in range(tries):
         page.evaluate(COUNT, [".bench-editor .tr-drag img", "data-frames"])
@@ -314,12 +314,29 @@ def bench_editor(page, tries, info):
         trips += page.evaluate("() => window.__count.rt.filter(x => x > 0)")
         if page.evaluate(DONE):
             firsts.append(page.evaluate(DT))
+        timeline = img.get_attribute(
+            "data-first-frame"
+        )  # drag.js: where the first frame's time goes
+        if timeline:
+            parts.append(json.loads(timeline))
         during = [x for x in times if x <= times[0] + 2000] if times else []
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
     if kernel:
         print(f"editor drag: kernel ms per position median {statistics.median(kernel):.0f}, "
               f"position -> picture round trip median {statistics.median(trips):.0f} ms, "
               f"{len(kernel)} frames")  # fmt: skip
+    if parts:
+
+        def med(f):
+            return statistics.median(f(t) for t in parts)
+
+        print(
+            "editor drag, first frame (ms from the press, medians): position sent "
+            f"{med(lambda t: t['sent']):.1f}, answer in {med(lambda t: t['reply']):.1f} "
+            f"(kernel render {med(lambda t: (t['kernel'] or {}).get('render', 0)):.1f} + "
+            f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), painted "
+            f"{med(lambda t: t['painted']):.1f}; patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
+        )
     return fps, firsts
 
 

@@ -118,3 +118,36 @@ class Shown:
         """Close the figure and every widget of the box."""
         self.display.close()
         close_tree(self.widget)
+
+
+#: Shown with a widget's static fallback (JupyterLab's output classes; CSS ``:has``): while
+#: the widget renders, the fallback is hidden; where its model is gone (a saved notebook
+#: reopened, the kernel new), the widget's "Error displaying widget: model not found" is
+#: hidden and the fallback stays. A text-only output area is the manager's message
+#: ("Loading widget...", "Error ..."); a live view always holds elements.
+FALLBACK_CSS = (
+    "<style>"
+    ".jp-OutputArea-child:has(.teachraster-static) + .jp-OutputArea-child"
+    " .jp-OutputArea-output:not(:has(*)) {display: none}"
+    ".jp-OutputArea-child:has(.teachraster-static)"
+    ":has(+ .jp-OutputArea-child .jp-OutputArea-output *) {display: none}"
+    "</style>"
+)
+
+
+def display_with_fallback(widget, fallback_html: str) -> None:
+    """Display ``widget`` after an output holding ``fallback_html`` (IPython's display).
+
+    JupyterLab prefers the widget view of a display and shows "Error displaying widget:
+    model not found" once its kernel is gone: a ``text/html`` beside it in the same output
+    is never shown. In an output of its own the fallback is what a reopened notebook shows;
+    :data:`FALLBACK_CSS` hides it while the live widget is on show.
+    """
+    from IPython.display import publish_display_data
+
+    publish_display_data({"text/html": FALLBACK_CSS + fallback_html,
+                          "text/plain": "(the widget's picture: run the cell for the widget)"})  # fmt: skip
+    bundle = widget._repr_mimebundle_()
+    data = bundle[0] if isinstance(bundle, tuple) else bundle
+    data.pop("text/html", None)
+    publish_display_data(data)

@@ -18,6 +18,7 @@ from .common import (
     SAMPLE_PATTERNS,
     Holdable,
     close_tree,
+    display_with_fallback,
     fill_axes,
     labelled,
     pattern_samples,
@@ -371,6 +372,15 @@ class FillPlayer(Holdable):
         # static_fallback.
         bundle["text/html"] = self.static_fallback()
         return bundle
+
+    def _ipython_display_(self) -> None:
+        if os.environ.get("TEACHRASTER_STATIC_PAGES"):  # `teachraster html`: one output
+            from IPython.display import display
+
+            display(self._repr_mimebundle_(), raw=True)
+            return
+        # the picture and a hint in an output of their own: what a reopened notebook shows
+        display_with_fallback(self.widget, self.static_fallback(full=False))
 
     def static_fallback(self, *, full: bool | None = None) -> str:
         """HTML standing in for the player where no kernel is running.
