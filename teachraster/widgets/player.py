@@ -262,7 +262,9 @@ class FillPlayer(Holdable):
         poster, size = b"", (self.frames.frame_height, self.frames.frame_width)
         if made is None:
             self.view.show_step(step, draw=False)
-            self.view.redraw()
+            # one plain draw: the blit's background and layers (three draws) are built
+            # later, for the groups, after the page shows this poster
+            self.fig.canvas.draw()
             rgba = frame_rgba(self.fig)
             poster, size = encode_png(rgba), rgba.shape[:2]
         with self.frames.hold_sync():
