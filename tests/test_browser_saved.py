@@ -5,8 +5,8 @@ shut down, and opened again: the widgets' models are gone (a new kernel knows no
 them), so JupyterLab's widget manager would say "Error displaying widget: model not found"
 in place of each. What the student must see instead is each widget's picture and "Run this
 cell to bring ... back" (teachraster.widgets.common.display_with_fallback); while the
-widgets are live, that fallback is hidden. The editor, whose kernel is gone, says so when a
-vertex is dragged.
+widgets are live, that fallback is hidden. An editor whose kernel is gone says so when a
+vertex is dragged ("The kernel does not answer ...").
 
 Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
 Playwright or Chromium is missing (CI makes them required).
@@ -28,7 +28,10 @@ CELLS = [
     "import teachraster as tr\nfrom teachraster.widgets import FillPlayer, TriangleEditor\n"
     "tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], attrs={'u': [0, 1, 0]})",
     "FillPlayer(tri, 16, 16, interval=20)",
-    "TriangleEditor(tri, 16, 16)",
+    "editor = TriangleEditor(tri, 16, 16)\neditor",
+    "import json\npage = editor.display.widget\n"
+    "print('EDITOR', json.dumps({'transform': page.transform, 'size': page.size, "
+    "'handles': page.handles}))",
 ]
 
 
@@ -92,6 +95,23 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
     html = [o["data"].get("text/html", "") for c in saved["cells"] for o in c.get("outputs", [])
             if "data" in o]  # fmt: skip
     assert sum("teachraster-static" in h for h in html) == 2
+
+    # The kernel goes away under the open page: a vertex dragged says so (no silent editor).
+    out = page.locator(".jp-OutputArea-output", has_text="EDITOR").last
+    info = json.loads(out.inner_text().split("EDITOR", 1)[1])
+    _stop_kernels(page, lab)
+    editor.scroll_into_view_if_needed()
+    box = editor.bounding_box()
+    x0, y0, sx, sy = info["transform"]
+    scale = box["width"] / info["size"][0]
+    hx, hy = info["handles"][1]
+    px, py = box["x"] + (x0 + sx * hx) * scale, box["y"] + (y0 + sy * hy) * scale
+    page.mouse.move(px, py)
+    page.mouse.down()
+    page.mouse.move(px - 8, py, steps=4)
+    notice = page.locator(".tr-drag-notice").first
+    notice.filter(has_text="does not answer").wait_for(timeout=15_000)
+    page.mouse.up()
 
     # The next day: the notebook opened again (a new kernel, which knows no widget model).
     _stop_kernels(page, lab)
