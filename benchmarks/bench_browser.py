@@ -287,7 +287,11 @@ def bench_player(page, tries):
                 events = ["pointerdown", "mousedown"]
             # timed from the first input event anywhere in the player (each control's own)
             toggles[name] += latency(page, p, events, canvas, "data-gen", act, 1)
-            wait_for_groups(page)  # as a student looks at the new fill before toggling again
+            # as a student looks at the new fill before toggling again: its frames are in
+            # the page and the kernel is done (the comparison figure follows the picture)
+            wait_for_groups(page)
+            page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+            page.wait_for_timeout(300)
     return step, drag_fps, play_fps, toggles
 
 
@@ -407,13 +411,14 @@ def main(argv=None) -> int:
                 out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
                 text = out.inner_text()
                 info = json.loads(text.split("BENCH-EDITOR", 1)[1])
+                # as it first shows (the interpolation toggle unfolds its comparison below)
+                player_h = page.locator(".bench-player").first.bounding_box()["height"]
                 if args.shots:
                     shots(page, args.shots)
                 rt, fig = bench_baselines(page, tries)
                 step, drag_fps, play_fps, toggles = bench_player(page, tries)
                 editor_fps, editor_first = bench_editor(page, max(2, tries // 4), info)
                 tilt_key, tilt_fps, tilt_settle = bench_slider(page, tries)
-                player_h = page.locator(".bench-player").first.bounding_box()["height"]
             finally:
                 browser.close()
     finally:

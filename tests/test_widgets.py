@@ -624,6 +624,24 @@ def test_toggling_back_sends_the_frames_made_before_instead_of_a_poster(player):
     assert frames.poster == b"" and sent[-1]["group"] == 0 and sent[-1]["gen"] == frames.gen
 
 
+def test_pictures_drawn_ahead_are_the_ones_a_toggle_draws_and_leave_the_fill_as_it_was():
+    ahead = FillPlayer(triangle(), W, H, backend="image")
+    fresh = FillPlayer(triangle(), W, H, backend="image")
+    for p in (ahead, fresh):
+        p.frames.send = lambda content, buffers=None: None
+        p.frames.value = 5
+    for _ in range(3):  # one neighbouring fill per call (the kernel's event loop chains them)
+        ahead._draw_ahead()
+    assert {key for key, _ in ahead._posters} == set(ahead._neighbours())
+    # the fill on show is untouched: the same frames as a player that drew nothing ahead
+    assert ahead._group(0) == fresh._group(0) and ahead.step == fresh.step == 5
+    ahead.method.value = fresh.method.value = "halfplane"
+    assert ahead.frames.poster == fresh.frames.poster  # used, and what the toggle draws
+    assert not any(key[0] == "halfplane" for key, _ in ahead._posters)  # taken once
+    for p in (ahead, fresh):
+        p.close()
+
+
 def test_page_drag_sends_patches_during_the_drag_and_a_whole_frame_at_the_release(editor):
     from teachraster.plotting.frames import frame_rgba
 

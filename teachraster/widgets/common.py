@@ -151,3 +151,37 @@ def display_with_fallback(widget, fallback_html: str) -> None:
     data = bundle[0] if isinstance(bundle, tuple) else bundle
     data.pop("text/html", None)
     publish_display_data(data)
+
+
+#: Seconds a deferred redraw waits (see :func:`later`).
+LATER_S = 0.05
+_later: dict = {}
+
+
+def later(callback, *, idle_only: bool = False) -> None:
+    """Call ``callback`` once the kernel has answered what it is doing (soon, not now).
+
+    A toggle's new picture goes to the page first; a slower second figure (the player's
+    comparison: a few hundred ms of colour bars on a loaded machine) is drawn from the
+    kernel's event loop a moment later, so that a second toggle arriving meanwhile is
+    answered first, and the figure drawn once for both (a callback already waiting is not
+    scheduled again). Without a running event loop (plain Python, tests) it is called now,
+    or not at all with ``idle_only`` (work worth doing only while a kernel idles).
+    """
+    import asyncio
+
+    try:
+        loop = asyncio.get_running_loop()
+    except RuntimeError:
+        if not idle_only:
+            callback()
+        return
+    key = id(getattr(callback, "__self__", callback)), getattr(callback, "__name__", "")
+    if key in _later:
+        return
+
+    def run():
+        _later.pop(key, None)
+        callback()
+
+    _later[key] = loop.call_later(LATER_S, run)
