@@ -81,8 +81,9 @@ function render({ model, el }) {
 
   function feedback(px) {
     const [w, h] = model.get("size");
-    overlay.width = w;
-    overlay.height = h;
+    // resized only when the figure is (setting a canvas' size reallocates it: at every
+    // pointer move, work the page can do without)
+    if (overlay.width !== w || overlay.height !== h) [overlay.width, overlay.height] = [w, h];
     ctx.clearRect(0, 0, w, h);
     if (px) {
       ctx.lineWidth = 3;
