@@ -153,9 +153,20 @@ export function mountFrames(el, opts) {
       s.asked.add(g);
       s.askedAt = performance.now();
       opts.request(g, s.gen);
+      setTimeout(() => retry(g, s.gen), 3000);
       setTimeout(() => checkAlive(g), 8000);
     } else {
       s.priority = g;
+    }
+  }
+
+  // An answer that never came (dropped as one of an older fill while a toggle's state was
+  // on its way, say): ask again rather than wait forever.
+  function retry(g, gen) {
+    if (gen === s.gen && s.inflight === g && !s.groups.has(g)) {
+      s.inflight = null;
+      s.asked.delete(g);
+      need(g);
     }
   }
 
