@@ -5,7 +5,8 @@ An ipympl canvas does not scale down as an image does: a figure wider than the c
 off (its legend, its colour bars). A small notebook holds a figure as the lessons make them
 (the classroom style, ``plt.subplots`` 9.2 inches wide, a colour bar and a legend) and the
 widgets' own figures (the ``TriangleEditor``'s fill and comparison, the ``FillPlayer``'s
-comparison unfolded); every canvas must lie inside its output area.
+comparison unfolded); every canvas must lie inside its output area, and no label or toggle
+of the widgets may be clipped.
 
 Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
 Playwright, Chromium or ipympl is missing (CI makes the browser required).
@@ -75,3 +76,10 @@ def test_ipympl_figures_fit_the_column(lab, page):  # noqa: F811
             f"a canvas {b['width']:.0f} px wide is cut off by its column "
             f"({b['outRight'] - b['outLeft']:.0f} px): {b}"
         )
+    # no clipped label or toggle (ipywidgets' default widths cut "method" to "metho")
+    clipped = page.evaluate("""() => [...document.querySelectorAll(
+            '.jp-OutputArea-output .widget-toggle-button, .jp-OutputArea-output .widget-label,'
+            + ' .jp-OutputArea-output .widget-button, .jp-OutputArea-output select')]
+        .filter(e => e.offsetParent !== null && e.scrollWidth > e.clientWidth + 1)
+        .map(e => e.textContent.trim() || e.value)""")
+    assert not clipped, f"clipped at 1400 x 900 with the file browser open: {clipped}"
