@@ -624,6 +624,26 @@ def test_toggling_back_sends_the_frames_made_before_instead_of_a_poster(player):
     assert frames.poster == b"" and sent[-1]["group"] == 0 and sent[-1]["gen"] == frames.gen
 
 
+def test_player_and_editor_display_a_picture_output_before_the_widget(player, editor,
+                                                                      monkeypatch):  # fmt: skip
+    import IPython.display
+
+    shown = []
+    monkeypatch.setattr(IPython.display, "publish_display_data", shown.append)
+    view = "application/vnd.jupyter.widget-view+json"
+    for widget in (player, editor):
+        shown.clear()
+        widget._ipython_display_()
+        picture, live = shown
+        # what a reopened notebook shows (JupyterLab: the widget's output is an error then)
+        assert view not in picture and "teachraster-static" in picture["text/html"]
+        assert "Run this cell to bring the" in picture["text/html"]
+        assert (
+            "data:image/png;base64," in picture["text/html"] and "<style>" in picture["text/html"]
+        )
+        assert view in live and "teachraster-static" in live["text/html"]
+
+
 def test_pictures_drawn_ahead_are_the_ones_a_toggle_draws_and_leave_the_fill_as_it_was():
     ahead = FillPlayer(triangle(), W, H, backend="image")
     fresh = FillPlayer(triangle(), W, H, backend="image")

@@ -135,22 +135,21 @@ FALLBACK_CSS = (
 )
 
 
-def display_with_fallback(widget, fallback_html: str) -> None:
-    """Display ``widget`` after an output holding ``fallback_html`` (IPython's display).
+def display_with_fallback(bundle: dict, fallback_html: str) -> None:
+    """Display a widget's mime ``bundle`` after an output holding ``fallback_html``.
 
     JupyterLab prefers the widget view of a display and shows "Error displaying widget:
     model not found" once its kernel is gone: a ``text/html`` beside it in the same output
     is never shown. In an output of its own the fallback is what a reopened notebook shows;
-    :data:`FALLBACK_CSS` hides it while the live widget is on show.
+    :data:`FALLBACK_CSS` hides it while the live widget is on show. The bundle keeps its
+    own ``text/html`` (a converter without the widgets' state shows that one, in place of
+    the widget; the separate fallback is then hidden, as beside a live widget).
     """
     from IPython.display import publish_display_data
 
     publish_display_data({"text/html": FALLBACK_CSS + fallback_html,
                           "text/plain": "(the widget's picture: run the cell for the widget)"})  # fmt: skip
-    bundle = widget._repr_mimebundle_()
-    data = bundle[0] if isinstance(bundle, tuple) else bundle
-    data.pop("text/html", None)
-    publish_display_data(data)
+    publish_display_data(bundle[0] if isinstance(bundle, tuple) else bundle)
 
 
 #: Seconds a deferred redraw waits (see :func:`later`).

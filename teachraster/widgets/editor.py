@@ -385,10 +385,10 @@ class TriangleEditor(Holdable):
             display(self._repr_mimebundle_(), raw=True)
             return
         src = "data:image/png;base64," + base64.b64encode(poster).decode("ascii")
-        display_with_fallback(self.widget, (
-            '<div class="teachraster-static"><p><i>Run this cell to bring the editor back '
-            f'(no kernel is running it).</i></p><img alt="the triangle\'s fill" src="{src}" '
-            'style="max-width:100%"></div>'))  # fmt: skip
+        html = ('<div class="teachraster-static"><p><i>Run this cell to bring the editor back '
+                f'(no kernel is running it).</i></p><img alt="the triangle\'s fill" '
+                f'src="{src}" style="max-width:100%"></div>')  # fmt: skip
+        display_with_fallback({**self._repr_mimebundle_(), "text/html": html}, html)
 
     def close(self) -> None:
         """Close every widget of the editor."""

@@ -437,7 +437,7 @@ class FillPlayer(Holdable):
             display(self._repr_mimebundle_(), raw=True)
             return
         # the picture and a hint in an output of their own: what a reopened notebook shows
-        display_with_fallback(self.widget, self.static_fallback(full=False))
+        display_with_fallback(self._repr_mimebundle_(), self.static_fallback(full=False))
 
     def static_fallback(self, *, full: bool | None = None) -> str:
         """HTML standing in for the player where no kernel is running.
