@@ -28,6 +28,7 @@ def test_browser_benchmark_quick_run_reports_every_figure(capsys):
     assert bench.main(["--quick"]) == 0
     out = capsys.readouterr().out
     for line in ("do-nothing IntSlider", "plain figure", "next step", "method toggle",
+                 "interpolation toggle", "samples toggle", "first frame of a drag",
                  "step slider dragged", "play at 20 ms/step", "vertex dragged", "tilt dragged",
                  "tilt, one key", "height of the whole player"):  # fmt: skip
         assert line in out, line

@@ -581,7 +581,8 @@ def test_page_drag_moves_the_vertex_and_answers_each_position(editor):
     for seq, (x, y) in enumerate([(10.0, 5.0), (10.5, 5.25), (11.0, 6.0)], start=1):
         page._on_page_message(page, {"type": "move", "i": 1, "x": x, "y": y, "seq": seq}, [])
         assert sent[-1][0]["seq"] == seq  # the answer the page waits for before sending more
-        assert sent[-1][1][0].startswith(b"\x89PNG")
+        _, _, pw, ph = sent[-1][0]["place"]
+        assert len(sent[-1][1][0]) == 4 * pw * ph > 0  # the changed rectangle, raw RGBA
     assert editor.interp_display.draws == interp_draws  # the comparison waits for the release
     assert editor.view.triangle.labels[0].get_visible()  # hidden for the drag's frames only
     page._on_page_message(
@@ -623,6 +624,44 @@ def test_toggling_back_sends_the_frames_made_before_instead_of_a_poster(player):
     assert frames.poster == b"" and sent[-1]["group"] == 0 and sent[-1]["gen"] == frames.gen
 
 
+def test_player_and_editor_display_a_picture_output_before_the_widget(player, editor,
+                                                                      monkeypatch):  # fmt: skip
+    import IPython.display
+
+    shown = []
+    monkeypatch.setattr(IPython.display, "publish_display_data", shown.append)
+    view = "application/vnd.jupyter.widget-view+json"
+    for widget in (player, editor):
+        shown.clear()
+        widget._ipython_display_()
+        picture, live = shown
+        # what a reopened notebook shows (JupyterLab: the widget's output is an error then)
+        assert view not in picture and "teachraster-static" in picture["text/html"]
+        assert "Run this cell to bring the" in picture["text/html"]
+        assert (
+            "data:image/png;base64," in picture["text/html"] and "<style>" in picture["text/html"]
+        )
+        assert view in live and "teachraster-static" in live["text/html"]
+
+
+def test_pictures_drawn_ahead_are_the_ones_a_toggle_draws_and_leave_the_fill_as_it_was():
+    ahead = FillPlayer(triangle(), W, H, backend="image")
+    fresh = FillPlayer(triangle(), W, H, backend="image")
+    for p in (ahead, fresh):
+        p.frames.send = lambda content, buffers=None: None
+        p.frames.value = 5
+    for _ in range(3):  # one neighbouring fill per call (the kernel's event loop chains them)
+        ahead._draw_ahead()
+    assert {key for key, _ in ahead._posters} == set(ahead._neighbours())
+    # the fill on show is untouched: the same frames as a player that drew nothing ahead
+    assert ahead._group(0) == fresh._group(0) and ahead.step == fresh.step == 5
+    ahead.method.value = fresh.method.value = "halfplane"
+    assert ahead.frames.poster == fresh.frames.poster  # used, and what the toggle draws
+    assert not any(key[0] == "halfplane" for key, _ in ahead._posters)  # taken once
+    for p in (ahead, fresh):
+        p.close()
+
+
 def test_page_drag_sends_patches_during_the_drag_and_a_whole_frame_at_the_release(editor):
     from teachraster.plotting.frames import frame_rgba
 
@@ -637,10 +676,10 @@ def test_page_drag_sends_patches_during_the_drag_and_a_whole_frame_at_the_releas
     assert all(c["place"] is not None for c in patches)
     assert [c["n"] for c in patches] == list(range(patches[0]["n"], patches[0]["n"] + 3))
     w, h = page.size
-    for c, (png,) in sent:
-        pw, ph = int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
-        assert pw * ph < w * h  # smaller than the figure
-        assert 0 <= c["place"][0] and c["place"][0] + pw <= w and c["place"][1] + ph <= h
+    for c, (raw,) in sent:
+        px, py, pw, ph = c["place"]  # raw RGBA pixels of the rectangle (no decode in the page)
+        assert len(raw) == 4 * pw * ph and pw * ph < w * h  # smaller than the figure
+        assert 0 <= px and px + pw <= w and 0 <= py and py + ph <= h
     assert page.poster == poster  # the poster is a whole frame: it waits for the release
     page._on_page_message(page, {"type": "move", "i": 1, "x": 11.0, "y": 5.5, "seq": 4,
                                  "final": True}, [])  # fmt: skip

@@ -118,3 +118,69 @@ class Shown:
         """Close the figure and every widget of the box."""
         self.display.close()
         close_tree(self.widget)
+
+
+#: Shown with a widget's static fallback (JupyterLab's output classes; CSS ``:has``): while
+#: the widget renders, the fallback is hidden; where its model is gone (a saved notebook
+#: reopened, the kernel new), the widget's "Error displaying widget: model not found" is
+#: hidden and the fallback stays. A text-only output area is the manager's message
+#: ("Loading widget...", "Error ..."); a live view always holds elements.
+FALLBACK_CSS = (
+    "<style>"
+    ".jp-OutputArea-child:has(.teachraster-static) + .jp-OutputArea-child"
+    " .jp-OutputArea-output:not(:has(*)) {display: none}"
+    ".jp-OutputArea-child:has(.teachraster-static)"
+    ":has(+ .jp-OutputArea-child .jp-OutputArea-output *) {display: none}"
+    "</style>"
+)
+
+
+def display_with_fallback(bundle: dict, fallback_html: str) -> None:
+    """Display a widget's mime ``bundle`` after an output holding ``fallback_html``.
+
+    JupyterLab prefers the widget view of a display and shows "Error displaying widget:
+    model not found" once its kernel is gone: a ``text/html`` beside it in the same output
+    is never shown. In an output of its own the fallback is what a reopened notebook shows;
+    :data:`FALLBACK_CSS` hides it while the live widget is on show. The bundle keeps its
+    own ``text/html`` (a converter without the widgets' state shows that one, in place of
+    the widget; the separate fallback is then hidden, as beside a live widget).
+    """
+    from IPython.display import publish_display_data
+
+    publish_display_data({"text/html": FALLBACK_CSS + fallback_html,
+                          "text/plain": "(the widget's picture: run the cell for the widget)"})  # fmt: skip
+    publish_display_data(bundle[0] if isinstance(bundle, tuple) else bundle)
+
+
+#: Seconds a deferred redraw waits (see :func:`later`).
+LATER_S = 0.05
+_later: dict = {}
+
+
+def later(callback, *, idle_only: bool = False) -> None:
+    """Call ``callback`` once the kernel has answered what it is doing (soon, not now).
+
+    A toggle's new picture goes to the page first; a slower second figure (the player's
+    comparison: a few hundred ms of colour bars on a loaded machine) is drawn from the
+    kernel's event loop a moment later, so that a second toggle arriving meanwhile is
+    answered first, and the figure drawn once for both (a callback already waiting is not
+    scheduled again). Without a running event loop (plain Python, tests) it is called now,
+    or not at all with ``idle_only`` (work worth doing only while a kernel idles).
+    """
+    import asyncio
+
+    try:
+        loop = asyncio.get_running_loop()
+    except RuntimeError:
+        if not idle_only:
+            callback()
+        return
+    key = id(getattr(callback, "__self__", callback)), getattr(callback, "__name__", "")
+    if key in _later:
+        return
+
+    def run():
+        _later.pop(key, None)
+        callback()
+
+    _later[key] = loop.call_later(LATER_S, run)

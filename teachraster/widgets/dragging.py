@@ -103,9 +103,10 @@ class DragFigure(anywidget.AnyWidget):
 
         During a drag (``final`` False) only the rectangle of pixels that changed since the
         last picture sent goes to the page (a move changes the triangle's part of the
-        figure: encoding a patch costs a fraction of a whole frame). ``final``: the whole
+        figure), as raw RGBA bytes (``place`` = ``[x, y, width, height]``). ``final``: the whole
         picture, also kept as the poster (what a re-opened view shows).
         """
+        t_show = time.perf_counter()
         rgba = frame_rgba(fig)
         h, w = rgba.shape[:2]
         last, self._last = self._last, rgba
@@ -113,12 +114,16 @@ class DragFigure(anywidget.AnyWidget):
         box = None if final or last is None or last.shape != rgba.shape else changed_box(
             last, rgba)  # fmt: skip
         if box is None and not final and last is not None and last.shape == rgba.shape:
-            place, png = [0, 0], b""  # nothing changed: an empty patch
+            place, png = [0, 0, 0, 0], b""  # nothing changed: an empty patch
         elif box is None:
             place, png = None, encode_png(rgba)
         else:
+            # A patch travels as raw RGBA pixels: the page paints them at once
+            # (putImageData), where a PNG waits for an asynchronous decode that took 5-90 ms
+            # on a loaded machine; a few hundred kB over the loopback cost less.
             r0, r1, c0, c1 = box
-            place, png = [c0, r0], encode_png(rgba[r0:r1, c0:c1])
+            place, png = [c0, r0, c1 - c0, r1 - r0], rgba[r0:r1, c0:c1].tobytes()
+        t_encoded = time.perf_counter()
         bbox = ax.get_window_extent()
         (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
         sx, sy = bbox.width / (x1 - x0), -bbox.height / (y1 - y0)
@@ -133,12 +138,16 @@ class DragFigure(anywidget.AnyWidget):
                 if place is None:
                     self.poster, self.poster_frame = png, self._frame
         # kernel_ms: from the position's arrival to this answer (for benchmarks)
-        kernel_ms = (time.perf_counter() - self._t0) * 1e3 if self._t0 else 0.0
+        now = time.perf_counter()
+        kernel_ms = (now - self._t0) * 1e3 if self._t0 else 0.0
+        timing = {"render": round((t_show - self._t0) * 1e3, 1),
+                  "encode": round((t_encoded - t_show) * 1e3, 1),
+                  "send": round((now - t_encoded) * 1e3, 1)} if self._t0 else None  # fmt: skip
         self._t0 = 0.0
         # a patch applies to the picture of frame n - 1 (a view that missed it waits for
         # the next whole picture)
         self.send({"type": "frame", "seq": self._seq, "handles": moved, "n": self._frame,
-                   "place": place, "kernel_ms": kernel_ms}, [png])  # fmt: skip
+                   "place": place, "kernel_ms": kernel_ms, "timing": timing}, [png])  # fmt: skip
 
 
 def same_or_new(old: LayeredBlit, new: LayeredBlit) -> LayeredBlit:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import base64
 import math
 import time
 
@@ -13,7 +14,15 @@ from ..core.span_tables import split_point
 from ..core.triangle import Triangle
 from ..core.validate import as_size
 from ..plotting import FillView, InterpolationView
-from .common import Holdable, close_tree, fill_axes, labelled, style_context, title_html
+from .common import (
+    Holdable,
+    close_tree,
+    display_with_fallback,
+    fill_axes,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 from .dragging import PageDisplay, comparison_edit_blit, fill_edit_blit, same_or_new
 
@@ -367,6 +376,19 @@ class TriangleEditor(Holdable):
     # -- display ----------------------------------------------------------------------------
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    def _ipython_display_(self) -> None:
+        poster = getattr(self.display.widget, "poster", b"")  # the picture in the page
+        if not poster:  # ipympl: the canvas restores its own picture
+            from IPython.display import display
+
+            display(self._repr_mimebundle_(), raw=True)
+            return
+        src = "data:image/png;base64," + base64.b64encode(poster).decode("ascii")
+        html = ('<div class="teachraster-static"><p><i>Run this cell to bring the editor back '
+                f'(no kernel is running it).</i></p><img alt="the triangle\'s fill" '
+                f'src="{src}" style="max-width:100%"></div>')  # fmt: skip
+        display_with_fallback({**self._repr_mimebundle_(), "text/html": html}, html)
 
     def close(self) -> None:
         """Close every widget of the editor."""

@@ -19,7 +19,9 @@ class FramesWidget(anywidget.AnyWidget):
     pressed or Play paused (not at every step), and setting it from code moves the page.
     ``interval`` is milliseconds per step when playing. ``gen`` counts the fills shown:
     the page drops groups of an older one. Groups are made by ``source(g)``, a callable
-    returning ``(places, pngs)``, when the page asks.
+    returning ``(places, pngs)``, when the page asks. ``fill`` names the fill on show (its
+    method, interpolation and samples): the page keeps the decoded frames of the last few
+    fills by that name, so a toggle back shows its picture as soon as the name arrives.
     """
 
     _esm = frames_js()
@@ -34,6 +36,7 @@ class FramesWidget(anywidget.AnyWidget):
     frame_height = traitlets.Int(1).tag(sync=True)
     gen = traitlets.Int(0).tag(sync=True)
     alt = traitlets.Unicode("").tag(sync=True)
+    fill = traitlets.Unicode("").tag(sync=True)
 
     def __init__(self, source, **kwargs) -> None:
         super().__init__(**kwargs)

@@ -18,8 +18,10 @@ from .common import (
     SAMPLE_PATTERNS,
     Holdable,
     close_tree,
+    display_with_fallback,
     fill_axes,
     labelled,
+    later,
     pattern_samples,
     style_context,
     title_html,
@@ -133,6 +135,7 @@ class FillPlayer(Holdable):
         interval = as_int("interval", interval, minimum=1)
         self.backend = resolve_backend(backend)
         self._fills: dict[tuple[str, str, str], object] = {}
+        self._posters: dict = {}  # (fill key, step) -> (PNG, (h, w)) drawn ahead
         self.samples = widgets.Dropdown(options=list(SAMPLE_PATTERNS), value=samples,
                                         layout=widgets.Layout(width="220px"))  # fmt: skip
         self.fill = self._rasterize(method, interpolation)
@@ -145,13 +148,13 @@ class FillPlayer(Holdable):
         self.widget = self._layout()
 
     # -- building ---------------------------------------------------------------------------
-    def _rasterize(self, method: str, interpolation: str):
+    def _rasterize(self, method: str, interpolation: str, samples: str | None = None):
         """The traced fill for these options (each made once: toggling back costs nothing)."""
-        key = (method, interpolation, self.samples.value)
+        key = (method, interpolation, self.samples.value if samples is None else samples)
         if key not in self._fills:
             self._fills[key] = rasterize(self.tri, self.width, self.height, method=method,
                                          interpolation=interpolation, trace=True,
-                                         samples=pattern_samples(self.samples.value))  # fmt: skip
+                                         samples=pattern_samples(key[2]))  # fmt: skip
         return self._fills[key]
 
     def _show_samples(self) -> None:
@@ -259,9 +262,14 @@ class FillPlayer(Holdable):
         group = step // self.frames.key
         made = self._groups.get((fill_key, group))
         poster, size = b"", (self.frames.frame_height, self.frames.frame_width)
-        if made is None:
+        ahead = self._posters.pop((fill_key, step), None)  # drawn ahead (_draw_ahead)
+        if made is None and ahead is not None:
+            poster, size = ahead
+        elif made is None:
             self.view.show_step(step, draw=False)
-            self.view.redraw()
+            # one plain draw: the blit's background and layers (three draws) are built
+            # later, for the groups, after the page shows this poster
+            self.fig.canvas.draw()
             rgba = frame_rgba(self.fig)
             poster, size = encode_png(rgba), rgba.shape[:2]
         with self.frames.hold_sync():
@@ -271,6 +279,7 @@ class FillPlayer(Holdable):
             self.frames.frame_height, self.frames.frame_width = size
             self.frames.poster = poster
             self.frames.alt = f"the {self.trace.method} fill of a triangle, step by step"
+            self.frames.fill = "|".join(fill_key)
             self.frames.gen += 1
         if made is not None:
             self.frames.send_group(group, *made)
@@ -280,12 +289,60 @@ class FillPlayer(Holdable):
 
     def _group(self, g: int):
         """Frames of group ``g`` for the page (made once per fill); the view is put back on
-        the step on show."""
+        the step on show. Once the page has every group, the fills one toggle away are
+        drawn ahead (:meth:`_draw_ahead`)."""
         key = (self._fill_key(), g)
         if key not in self._groups:
             self._groups[key] = render_group(self.view, g, self.frames.key)
             self.view.show_step(self.frames.value, draw=False)
+            self._ahead_when_idle()
         return self._groups[key]
+
+    def _ahead_when_idle(self) -> None:
+        """Draw ahead (:meth:`_draw_ahead`) once the page has every group of the fill."""
+        fill_key, groups = self._fill_key(), -(-len(self.trace) // self.frames.key)
+        if all((fill_key, g) in self._groups for g in range(groups)):
+            later(self._draw_ahead, idle_only=True)
+
+    def _neighbours(self) -> list[tuple[str, str, str]]:
+        """The fills one toggle of the method or the interpolation away from the one on show."""
+        method, interpolation, samples = self._fill_key()
+        keys = [(m, interpolation, samples) for _, m in METHOD_OPTIONS if m != method]
+        if self.tri.attrs:
+            keys += [(method, i, samples) for _, i in INTERPOLATION_OPTIONS if i != interpolation]
+        return keys
+
+    def _draw_ahead(self) -> None:
+        """While the kernel idles, the picture a toggle would show first: one neighbouring
+        fill at a time (each a rasterisation and one draw), the view put back afterwards,
+        so a toggle answers with a picture drawn already. Never before the page has the
+        fill on show; a toggle arriving meanwhile waits for one draw at most."""
+        shown, current = self.frames.value, self.fill
+        for key in self._neighbours():
+            try:
+                fill = self._rasterize(*key)
+            except ValueError:  # e.g. tiles with several samples: not offered
+                continue
+            step = self.view.set_fill(fill, draw=False).index  # the step a toggle shows
+            if (key, step) in self._posters or (key, step // self.frames.key) in self._groups:
+                self.view.set_fill(current, step=shown, draw=False)
+                self._show_samples()  # a set_fill makes a new plan: the dots' layer again
+                continue
+            try:
+                self.fill = fill
+                self._show_samples()
+                self.view.show_step(step, draw=False)
+                self.fig.canvas.draw()
+                rgba = frame_rgba(self.fig)
+                if len(self._posters) >= 32:
+                    self._posters.clear()
+                self._posters[(key, step)] = (encode_png(rgba), rgba.shape[:2])
+            finally:
+                self.fill = current
+                self.view.set_fill(current, step=shown, draw=False)
+                self._show_samples()
+            later(self._draw_ahead, idle_only=True)  # the next after whatever is waiting
+            return
 
     # -- state ------------------------------------------------------------------------------
     @property
@@ -330,6 +387,7 @@ class FillPlayer(Holdable):
         # reads it (player.view, player.caption_text)
         if not self._quiet:
             self.view.show_step(change["new"], draw=False)
+            self._ahead_when_idle()  # a toggle here shows this step
 
     def _on_fill_options(self, change) -> None:
         self.fill = self._rasterize(self.method.value, self.interpolation.value)
@@ -347,7 +405,7 @@ class FillPlayer(Holdable):
                 self.comparison.selected_index = 0
             # folded, the figure is drawn when unfolded (a toggle answers sooner)
             self._interp_stale = True
-            self._refresh_comparison()
+            later(self._refresh_comparison)
 
     def _refresh_comparison(self, change=None) -> None:
         """Draw the interpolation figure if it is on show and out of date."""
@@ -371,6 +429,15 @@ class FillPlayer(Holdable):
         # static_fallback.
         bundle["text/html"] = self.static_fallback()
         return bundle
+
+    def _ipython_display_(self) -> None:
+        if os.environ.get("TEACHRASTER_STATIC_PAGES"):  # `teachraster html`: one output
+            from IPython.display import display
+
+            display(self._repr_mimebundle_(), raw=True)
+            return
+        # the picture and a hint in an output of their own: what a reopened notebook shows
+        display_with_fallback(self._repr_mimebundle_(), self.static_fallback(full=False))
 
     def static_fallback(self, *, full: bool | None = None) -> str:
         """HTML standing in for the player where no kernel is running.

@@ -100,7 +100,10 @@ export function mountFrames(el, opts) {
   const s = {
     groups: new Map(), asked: new Set(), inflight: null, shown: -1, want: 0,
     timer: null, n: 0, key: 16, captions: [], infos: [], interval: 400, gen: 0,
+    fill: "", cache: new Map(),
   };
+  // the decoded groups of the last few fills, by name (a toggle back paints at once)
+  const CACHED_FILLS = 6;
 
   function label(k) {
     caption.textContent = s.captions[k] ?? "";
@@ -150,9 +153,20 @@ export function mountFrames(el, opts) {
       s.asked.add(g);
       s.askedAt = performance.now();
       opts.request(g, s.gen);
+      setTimeout(() => retry(g, s.gen), 3000);
       setTimeout(() => checkAlive(g), 8000);
     } else {
       s.priority = g;
+    }
+  }
+
+  // An answer that never came (dropped as one of an older fill while a toggle's state was
+  // on its way, say): ask again rather than wait forever.
+  function retry(g, gen) {
+    if (gen === s.gen && s.inflight === g && !s.groups.has(g)) {
+      s.inflight = null;
+      s.asked.delete(g);
+      need(g);
     }
   }
 
@@ -177,7 +191,7 @@ export function mountFrames(el, opts) {
 
   async function addGroup(g, places, blobs, gen) {
     if (gen !== s.gen) return;
-    const frames = await decodeGroup(places, blobs);
+    const frames = s.groups.get(g) ?? (await decodeGroup(places, blobs));
     if (gen !== s.gen) return;
     s.groups.set(g, frames);
     canvas.dataset.groups = String(s.groups.size); // for tests and benchmarks
@@ -231,8 +245,14 @@ export function mountFrames(el, opts) {
   async function reset(o) {
     stop();
     s.gen = o.gen ?? s.gen + 1;
-    s.groups.clear();
-    canvas.dataset.groups = "0";
+    if (s.fill) {
+      s.cache.delete(s.fill);
+      s.cache.set(s.fill, s.groups);
+      if (s.cache.size > CACHED_FILLS) s.cache.delete(s.cache.keys().next().value);
+    }
+    s.fill = o.fill ?? "";
+    s.groups = (s.fill && s.cache.get(s.fill)) || new Map();
+    canvas.dataset.groups = String(s.groups.size);
     s.asked.clear();
     s.inflight = null;
     s.priority = undefined;
@@ -248,7 +268,9 @@ export function mountFrames(el, opts) {
     canvas.setAttribute("aria-label", o.alt ?? "the fill, step by step");
     s.want = Math.max(0, Math.min(o.n - 1, o.step));
     slider.value = String(s.want);
-    if (o.poster && o.poster.byteLength) {
+    if (s.groups.has(Math.floor(s.want / s.key))) {
+      draw(s.want); // a fill shown before: its frames are here, decoded
+    } else if (o.poster && o.poster.byteLength) {
       const bitmap = await createImageBitmap(new Blob([o.poster], { type: "image/png" }));
       ctx.drawImage(bitmap, 0, 0);
       s.shown = s.want;
@@ -260,7 +282,7 @@ export function mountFrames(el, opts) {
       await addGroup(g, group.places, group.blobs, s.gen);
     }
     if (s.shown !== s.want) draw(s.want);
-    else need(Math.floor(s.want / s.key));
+    else need(nextMissing() ?? Math.floor(s.want / s.key)); // the rest of a fill seen in part
   }
 
   function setInterval_(ms) {
@@ -303,7 +325,7 @@ function render({ model, el }) {
       width: model.get("frame_width"), height: model.get("frame_height"),
       n: model.get("n_steps"), key: model.get("key"), step: model.get("value"),
       captions: model.get("captions"), infos: model.get("infos"), gen: model.get("gen"),
-      alt: model.get("alt"),
+      alt: model.get("alt"), fill: model.get("fill"),
       poster: poster ? new Uint8Array(poster.buffer ?? poster) : null,
     });
   }

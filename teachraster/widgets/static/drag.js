@@ -6,8 +6,8 @@
 // kernel never idles for a round trip), each the latest position when sent; positions that
 // come meanwhile replace each other, so the kernel never works through a queue. The release
 // is always sent, so the drag ends exactly where the pointer let go. Each answer carries
-// the new picture: during a drag only the rectangle that changed (a patch, painted on a
-// canvas over the <img>), at the release the whole figure.
+// the new picture: during a drag only the rectangle that changed (a patch of raw RGBA
+// pixels, painted on a canvas over the <img>), at the release the whole figure (a PNG).
 
 const IN_FLIGHT = 2;
 
@@ -75,11 +75,15 @@ function render({ model, el }) {
 
   // pending: seq -> time sent, of the positions not answered yet
   const s = { dragging: null, latest: null, sent: null, pending: new Map(), seq: 0 };
+  // the first frame of a drag, timed (for benchmarks: data-first-frame on the <img>):
+  // press -> position sent -> answer received -> picture decoded -> painted, in ms
+  let first = null;
 
   function feedback(px) {
     const [w, h] = model.get("size");
-    overlay.width = w;
-    overlay.height = h;
+    // resized only when the figure is (setting a canvas' size reallocates it: at every
+    // pointer move, work the page can do without)
+    if (overlay.width !== w || overlay.height !== h) [overlay.width, overlay.height] = [w, h];
     ctx.clearRect(0, 0, w, h);
     if (px) {
       ctx.lineWidth = 3;
@@ -98,6 +102,7 @@ function render({ model, el }) {
       s.pending.set(s.seq, performance.now());
       setTimeout(() => checkAlive(s.seq), 6000);
     }
+    if (first && first.seq === undefined) [first.seq, first.sent] = [s.seq, performance.now()];
     model.send({ type: "move", i: s.dragging, x, y, seq: s.seq, final });
   }
 
@@ -128,6 +133,7 @@ function render({ model, el }) {
       if (d <= bestD) [best, bestD] = [i, d];
     });
     if (best === null) return;
+    first = { down: performance.now() };
     e.preventDefault();
     img.setPointerCapture(e.pointerId);
     s.dragging = best;
@@ -164,9 +170,20 @@ function render({ model, el }) {
       bitmap.close();
       showPng(bytes); // the <img> under the canvas holds the last whole frame
     } else if (msg.n - 1 === shown && bytes.byteLength) {
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
-      pctx.drawImage(bitmap, msg.place[0], msg.place[1]);
-      bitmap.close();
+      // raw RGBA: painted at once, no decode (a PNG's waits for a thread on a busy machine)
+      const [x, y, w, h] = msg.place;
+      const buf = bytes instanceof ArrayBuffer ? bytes : bytes.buffer;
+      const data = new Uint8ClampedArray(buf, bytes.byteOffset || 0, 4 * w * h);
+      const decoded = performance.now();
+      pctx.putImageData(new ImageData(data, w, h), x, y);
+      if (first && first.seq === msg.seq && first.decoded === undefined) {
+        first.decoded = decoded;
+        first.painted = performance.now();
+        const t = (k) => Math.round((first[k] - first.down) * 10) / 10;
+        img.dataset.firstFrame = JSON.stringify({ sent: t("sent"), reply: t("reply"),
+          decoded: t("decoded"), painted: t("painted"), bytes: bytes.byteLength,
+          kernel: msg.timing || null });
+      }
     } else if (msg.n - 1 !== shown) {
       return;
     }
@@ -177,6 +194,7 @@ function render({ model, el }) {
   model.on("msg:custom", (msg, buffers) => {
     if (msg.type !== "frame") return;
     const bytes = buffers[0];
+    if (first && first.seq === msg.seq && first.reply === undefined) first.reply = performance.now();
     painting = painting.then(() => paint(msg, bytes)).catch(() => {});
     notice.textContent = "";
     img.dataset.kernelMs = String(Math.round(msg.kernel_ms ?? 0)); // for benchmarks
