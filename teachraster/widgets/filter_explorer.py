@@ -19,6 +19,9 @@ from .dragging import same_or_new
 from .live_slider import LiveSlider
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
+#: Tilts whose footprint average is kept (0.5 MiB each at 160 x 120).
+TRUTH_CACHE = 32
+
 
 class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
@@ -90,6 +93,7 @@ class FilterExplorer:
         self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
                                description="tilt (°)", readout_format=".0f",
                                layout=widgets.Layout(width="420px"))  # fmt: skip
+        self._truths: dict = {}
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)
@@ -134,13 +138,23 @@ class FilterExplorer:
         else:
             self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy)
         self.lod = mip_level(frame.ddx, frame.ddy, self.texture.shape)
-        if getattr(self, "_truth_tilt", None) != self.tilt.value:  # the filter leaves it alone
-            self.truth = footprint_average(clip, uv, self.texture, frame.triangle_id,
-                                           samples=self.samples)  # fmt: skip
-            self._truth_tilt = self.tilt.value
+        self.truth = self._truth(clip, uv, frame.triangle_id)
         self.error = np.abs(self.image - self.truth).mean(axis=-1)
         self.rms = float(np.sqrt(np.nanmean((self.image - self.truth) ** 2)))
         self.frame = frame
+
+    def _truth(self, clip, uv, triangle_id) -> np.ndarray:
+        """The footprint average at the current tilt, kept for the last few tilts: the
+        filter leaves it alone, and a student drags the slider back and forth."""
+        key = self.tilt.value
+        truth = self._truths.pop(key, None)
+        if truth is None:
+            truth = footprint_average(clip, uv, self.texture, triangle_id, samples=self.samples)
+            truth.flags.writeable = False  # shared by every filter shown at this tilt
+        self._truths[key] = truth  # the most recent last
+        while len(self._truths) > TRUTH_CACHE:
+            self._truths.pop(next(iter(self._truths)))
+        return truth
 
     def _edit_blit(self) -> LayeredBlit:
         """A new tilt or filter changes the three images, the error's marked maximum and
