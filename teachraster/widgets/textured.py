@@ -6,16 +6,20 @@ import math
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.text import Text
+from matplotlib.transforms import Bbox
 
 from ..core.validate import as_size
 from ..pipeline.geometry.camera import Camera
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
-from .dragging import comparison_edit_blit, same_or_new
+from .dragging import same_or_new
 from .live_slider import LiveSlider
+from .sprites import CachedSprite
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -144,8 +148,11 @@ class TexturedPlaneViewer:
                 self.view.heatmap.colorbar.set_label("texels")
             self._show_error()
             # a new tilt changes the images, the heatmap's title and colour bar: the rest
-            # (tick labels, titles) stays in a cached background
-            self._blit = comparison_edit_blit(self.view)
+            # (tick labels, titles) stays in a cached background; the colour bar is drawn
+            # last, or put back as it was the last time its range came round
+            self._blit = self._edit_blit()
+            self._bar = CachedSprite(fig, self.view.heatmap.colorbar.ax)
+            self._bar_range = self._clim()
             self.display = FigureDisplay(fig, self.backend, draw=self._draw)
         self.fig = fig
 
@@ -155,6 +162,7 @@ class TexturedPlaneViewer:
                                layout=widgets.Layout(width="420px"))  # fmt: skip
         self.depth = self.tilt  # the brief's name for it: how far the plane recedes
         self.tilt.observe(lambda change: self.update(change["new"]), "value")
+        self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
         self.info = widgets.HTML()
         self._set_info()
         title = title_html(
@@ -178,14 +186,70 @@ class TexturedPlaneViewer:
         self.perspective = sample(self.texture, self.uv_perspective)
         self.error = texel_error(self.uv_affine, self.uv_perspective, self.texture.shape)
 
+    def _edit_blit(self) -> LayeredBlit:
+        """The images, the heatmap's marked maximum, note and title move; the grids, panel
+        titles and frames stay (the colour bar is left to :meth:`_draw`)."""
+        view = self.view
+        images = [art.image for art in view.images] + [view.heatmap.image]
+        still = [g.lines for g in view.grids if g is not None]
+        still += [s for ax in view.axes for s in ax.spines.values()]
+        hm = view.heatmap
+        return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
+                                      (MOVING, [hm.marker, hm.note, hm.title])])  # fmt: skip
+
     def _draw(self) -> None:
-        self._blit = same_or_new(self._blit, comparison_edit_blit(self.view))
-        self._blit.draw()
+        """Blit the figure, then the colour bar: drawn, put back from the sprite cache, or
+        (in a draft, for a range not seen before) left out."""
+        bar = self.view.heatmap.colorbar
+        draft = self._drafting()
+        bar.ax.set_visible(False)  # not in the blit's background: it is drawn over it
+        try:
+            self._blit = same_or_new(self._blit, self._edit_blit())
+            if self._blit.draw():
+                self._bar.clear()  # a new background
+        finally:
+            bar.ax.set_visible(True)
+        key = self._clim()
+        if not draft and self._bar_range != key:  # drafts left the colour bar behind
+            bar.update_normal(self.view.heatmap.image)
+            self._bar_range = key
+        self._bar.draw(key, others=self._moving_boxes(), new=not draft)
+
+    def _moving_boxes(self) -> list:
+        """Display boxes of what moves besides the colour bar (its pixels must not hide them)."""
+        hm = self.view.heatmap
+        boxes = [ax.bbox for ax in self.view.axes if ax is not hm.colorbar.ax]
+        renderer = self.view.fig.canvas.get_renderer()
+        for text in (hm.title, hm.note):
+            if text is not None and text.get_visible():
+                # the note's text and the point it marks (its line runs between the two)
+                box = Text.get_window_extent(text, renderer).padded(8)
+                boxes.append(box)
+        if hm.note.get_visible():
+            x, y = hm.note.axes.transData.transform(hm.note.xy)
+            boxes.append(Bbox.from_extents(x - 8, y - 8, x + 8, y + 8))
+        return boxes
+
+    def _clim(self) -> tuple[float, float]:
+        return tuple(float(v) for v in self.view.heatmap.image.get_clim())
+
+    def _drafting(self) -> bool:
+        """True while the tilt is being dragged: a draft leaves out what is slow to draw
+        (the note at the largest error, a colour bar for a range not drawn before)."""
+        return getattr(self, "tilt", None) is not None and self.tilt.dragging
 
     def _show_error(self) -> None:
         # The heatmap shows texel error, not the colour difference ComparisonView computes:
         # the same artists, given |error - 0|.
-        self.view.heatmap.update(self.error, np.zeros_like(self.error))
+        hm = self.view.heatmap
+        if not self._drafting():
+            hm.update(self.error, np.zeros_like(self.error))
+            return
+        # a draft: the image's colours at the new range, the colour bar left as it is
+        # (brought up to date by the full picture at the release)
+        with hm.image.callbacks.blocked(signal="changed"):
+            hm.update(self.error, np.zeros_like(self.error))
+        hm.note.set_visible(False)
 
     @property
     def maximum(self) -> float:

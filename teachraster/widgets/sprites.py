@@ -1,0 +1,100 @@
+"""``CachedSprite``: an artist drawn over a blitted figure, its pixels kept per state.
+
+A colour bar whose range has not changed looks the same as last time, yet drawing it again
+(ticks, tick labels, its label) costs more than the images it explains. Drawn once over the
+blit's background, its pixels are copied (``canvas.copy_from_bbox``) and put back the next
+time its state comes round (``restore_region``): the very same pixels, as long as nothing
+else that moves lies under them, which is checked at every draw (otherwise it is drawn).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Hashable, Sequence
+
+from matplotlib.transforms import Bbox
+
+#: Pixels of background kept round the artist's tight box (anti-aliased edges).
+PAD = 2
+
+
+class CachedSprite:
+    """``artist`` drawn, or put back from a cache of its pixels, for a state ``key``.
+
+    Parameters
+    ----------
+    fig : matplotlib Figure
+        With an Agg-based canvas (Agg, ipympl, inline).
+    artist : Artist
+        Drawn last, over the figure (e.g. a colour bar's Axes), outside the blit's plan.
+    limit : int
+        States kept (the oldest is forgotten first).
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> text = ax.text(0.5, 0.5, "hello")
+    >>> fig.canvas.draw()
+    >>> sprite = CachedSprite(fig, text)
+    >>> sprite.draw("hello"), sprite.draw("hello")    # drawn, then put back
+    ('drawn', 'cached')
+    >>> plt.close(fig)
+    """
+
+    def __init__(self, fig, artist, *, limit: int = 32) -> None:
+        self.fig, self.artist, self.limit = fig, artist, limit
+        self._cache: dict = {}
+
+    def clear(self) -> None:
+        """Forget every state (after the background under the artist changed)."""
+        self._cache.clear()
+
+    def has(self, key: Hashable) -> bool:
+        """Whether the pixels of state ``key`` are kept (for the canvas' current size)."""
+        return self._full_key(key) in self._cache
+
+    def draw(self, key: Hashable, *, others: Sequence[Bbox] = (), new: bool = True) -> str:
+        """Show the artist in state ``key``: ``"cached"``, ``"drawn"`` or ``"skipped"``.
+
+        ``others`` are the display boxes of whatever else was drawn this time (moving
+        artists): kept pixels are only put back where they do not overlap, and only pixels
+        that they do not overlap are kept. With ``new`` False a state not kept is skipped
+        (a draft leaves the artist out rather than pay for drawing it).
+        """
+        canvas = self.fig.canvas
+        full = self._full_key(key)
+        kept = self._cache.get(full)
+        if kept is not None and not _overlaps(kept[0], others):
+            canvas.restore_region(kept[1])
+            self._cache[full] = self._cache.pop(full)  # the most recent last
+            return "cached"
+        if not new:
+            return "skipped"
+        renderer = canvas.get_renderer()
+        self.artist.draw(renderer)
+        box = self.artist.get_tightbbox(renderer)
+        if box is not None and not _overlaps(box.padded(PAD), others):
+            box = _whole_pixels(box.padded(PAD), canvas.get_width_height())
+            self._cache[full] = (box, canvas.copy_from_bbox(box))
+            while len(self._cache) > self.limit:
+                self._cache.pop(next(iter(self._cache)))
+        return "drawn"
+
+    def _full_key(self, key: Hashable):
+        return (key, self.fig.canvas.get_width_height(), self.fig.dpi)
+
+
+def _overlaps(box: Bbox, others: Sequence[Bbox]) -> bool:
+    return any(box.overlaps(other) for other in others)
+
+
+def _whole_pixels(box: Bbox, size) -> Bbox:
+    """``box`` grown to whole pixels and clipped to the canvas."""
+    import math
+
+    w, h = size
+    x0, y0 = max(0, math.floor(box.x0)), max(0, math.floor(box.y0))
+    x1, y1 = min(w, math.ceil(box.x1)), min(h, math.ceil(box.y1))
+    return Bbox([[x0, y0], [x1, y1]])
