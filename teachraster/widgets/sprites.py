@@ -98,3 +98,65 @@ def _whole_pixels(box: Bbox, size) -> Bbox:
     x0, y0 = max(0, math.floor(box.x0)), max(0, math.floor(box.y0))
     x1, y1 = min(w, math.ceil(box.x1)), min(h, math.ceil(box.y1))
     return Bbox([[x0, y0], [x1, y1]])
+
+
+class ColourBarSprite:
+    """A colour bar drawn over a blit, kept per range; left behind by drafts.
+
+    The colour bar's Axes stays out of the blit's background (hidden while the blit draws)
+    and is drawn last by a :class:`CachedSprite` keyed by the mappable's range. A draft
+    changes the mappable's range without telling the colour bar (:meth:`quietly`) and shows
+    the bar only if that range was drawn before; the next full picture brings the colour
+    bar up to date first, so that it is exactly the picture a full update draws.
+
+    Parameters
+    ----------
+    fig : matplotlib Figure
+    mappable : callable
+        Returns the image the colour bar explains (views may replace the artist).
+    colorbar : matplotlib Colorbar
+    """
+
+    def __init__(self, fig, mappable, colorbar) -> None:
+        self.mappable, self.colorbar = mappable, colorbar
+        self.sprite = CachedSprite(fig, colorbar.ax)
+        self.range = self._range()
+
+    def _range(self) -> tuple[float, float]:
+        return tuple(float(v) for v in self.mappable().get_clim())
+
+    def quietly(self):
+        """A context in which range changes do not reach the colour bar (for drafts)."""
+        return self.mappable().callbacks.blocked(signal="changed")
+
+    def draw(self, blit, *, draft: bool, others=()) -> str:
+        """``blit.draw()`` without the colour bar, then the colour bar (see the class)."""
+        ax = self.colorbar.ax
+        ax.set_visible(False)  # not in the blit's background: it is drawn over it
+        try:
+            if blit.draw():
+                self.sprite.clear()  # a new background
+        finally:
+            ax.set_visible(True)
+        key = self._range()
+        if not draft and self.range != key:  # drafts left the colour bar behind
+            self.colorbar.update_normal(self.mappable())
+            self.range = key
+        return self.sprite.draw(key, others=others, new=not draft)
+
+
+def text_boxes(texts, pad: float = 8.0) -> list[Bbox]:
+    """Display boxes of the visible ``texts`` (an annotation: its text and its point)."""
+    from matplotlib.text import Annotation, Text
+
+    boxes = []
+    for text in texts:
+        if text is None or not text.get_visible():
+            continue
+        renderer = text.figure.canvas.get_renderer()
+        # Text's own box: an annotation's would lay out its arrow, which is slow
+        boxes.append(Text.get_window_extent(text, renderer).padded(pad))
+        if isinstance(text, Annotation):  # its line runs from the point to the text
+            x, y = text.axes.transData.transform(text.xy)
+            boxes.append(Bbox.from_extents(x - pad, y - pad, x + pad, y + pad))
+    return boxes

@@ -6,8 +6,6 @@ import math
 
 import ipywidgets as widgets
 import numpy as np
-from matplotlib.text import Text
-from matplotlib.transforms import Bbox
 
 from ..core.validate import as_size
 from ..pipeline.geometry.camera import Camera
@@ -19,7 +17,7 @@ from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider
-from .sprites import CachedSprite
+from .sprites import ColourBarSprite, text_boxes
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -151,8 +149,8 @@ class TexturedPlaneViewer:
             # (tick labels, titles) stays in a cached background; the colour bar is drawn
             # last, or put back as it was the last time its range came round
             self._blit = self._edit_blit()
-            self._bar = CachedSprite(fig, self.view.heatmap.colorbar.ax)
-            self._bar_range = self._clim()
+            hm = self.view.heatmap
+            self._bar = ColourBarSprite(fig, lambda: hm.image, hm.colorbar)
             self.display = FigureDisplay(fig, self.backend, draw=self._draw)
         self.fig = fig
 
@@ -200,38 +198,11 @@ class TexturedPlaneViewer:
     def _draw(self) -> None:
         """Blit the figure, then the colour bar: drawn, put back from the sprite cache, or
         (in a draft, for a range not seen before) left out."""
-        bar = self.view.heatmap.colorbar
-        draft = self._drafting()
-        bar.ax.set_visible(False)  # not in the blit's background: it is drawn over it
-        try:
-            self._blit = same_or_new(self._blit, self._edit_blit())
-            if self._blit.draw():
-                self._bar.clear()  # a new background
-        finally:
-            bar.ax.set_visible(True)
-        key = self._clim()
-        if not draft and self._bar_range != key:  # drafts left the colour bar behind
-            bar.update_normal(self.view.heatmap.image)
-            self._bar_range = key
-        self._bar.draw(key, others=self._moving_boxes(), new=not draft)
-
-    def _moving_boxes(self) -> list:
-        """Display boxes of what moves besides the colour bar (its pixels must not hide them)."""
+        self._blit = same_or_new(self._blit, self._edit_blit())
         hm = self.view.heatmap
-        boxes = [ax.bbox for ax in self.view.axes if ax is not hm.colorbar.ax]
-        renderer = self.view.fig.canvas.get_renderer()
-        for text in (hm.title, hm.note):
-            if text is not None and text.get_visible():
-                # the note's text and the point it marks (its line runs between the two)
-                box = Text.get_window_extent(text, renderer).padded(8)
-                boxes.append(box)
-        if hm.note.get_visible():
-            x, y = hm.note.axes.transData.transform(hm.note.xy)
-            boxes.append(Bbox.from_extents(x - 8, y - 8, x + 8, y + 8))
-        return boxes
-
-    def _clim(self) -> tuple[float, float]:
-        return tuple(float(v) for v in self.view.heatmap.image.get_clim())
+        others = [ax.bbox for ax in self.view.axes if ax is not hm.colorbar.ax]
+        self._bar.draw(self._blit, draft=self._drafting(),
+                       others=others + text_boxes([hm.title, hm.note]))  # fmt: skip
 
     def _drafting(self) -> bool:
         """True while the tilt is being dragged: a draft leaves out what is slow to draw
@@ -247,7 +218,7 @@ class TexturedPlaneViewer:
             return
         # a draft: the image's colours at the new range, the colour bar left as it is
         # (brought up to date by the full picture at the release)
-        with hm.image.callbacks.blocked(signal="changed"):
+        with self._bar.quietly():
             hm.update(self.error, np.zeros_like(self.error))
         hm.note.set_visible(False)
 
