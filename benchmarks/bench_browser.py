@@ -10,16 +10,18 @@ folders (in a temporary directory, removed afterwards) and opens a small noteboo
 two baselines, a do-nothing ``IntSlider`` -> ``Output`` round trip and a plain matplotlib
 figure redrawn from an ``IntSlider`` with the widgets' own display (a PNG in an
 ``ipywidgets.Image``); a half-plane ``FillPlayer`` (16 x 16, ``interval=20``) and a
-``TriangleEditor`` (16 x 16) and a ``TexturedPlaneViewer`` (its tilt is a page-side
-``LiveSlider``, coalesced). Chromium (1400 x 900) then drives them like a student:
+``TriangleEditor`` (16 x 16), and the four slider explorers whose sliders are page-side
+``LiveSlider``s (coalesced): ``TexturedPlaneViewer``, ``FilterExplorer``, ``PlaneExplorer``
+and ``DepthPrecisionExplorer``. Chromium (1400 x 900) then drives them like a student:
 
 - latency: from the input event (key, click or pointer) to the change on the page (the
   figure's ``src``, the canvas' step, the output's text), timed in the page;
 - frame rates: pictures changed per second while the step slider is dragged with the mouse,
   while Play runs at 20 ms/step, and re-rendered fills per second while a vertex of the
-  editor is dragged continuously, 1 grid pixel per pointer move, and while the viewer's
-  tilt is dragged (a new value at every animation frame); how long after the drag the last
-  picture comes (coalesced: about one render, never a queue).
+  editor is dragged continuously, 1 grid pixel per pointer move, and while each explorer's
+  slider is dragged (its next step at every animation frame, :func:`bench_slider`); how
+  long after the drag the last picture comes (coalesced: about one render, never a queue);
+  the kernel's time per slider value, as the page hears it.
 
 Absolute times on these machines vary 2x from day to day: the figures to report are the
 ratios to the round trip measured in the same run. Every server and browser started here

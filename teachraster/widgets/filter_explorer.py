@@ -60,6 +60,14 @@ class FilterExplorer:
     rms : float
         Root-mean-square error against the truth.
 
+    Notes
+    -----
+    While the tilt is dragged in the page, each value is shown as a draft: the filtered
+    image and the levels exact, the error only at tilts whose truth is kept (the last 32;
+    otherwise ``truth`` and ``error`` are None and ``rms`` NaN until the release), without
+    its note, and its colour bar only if that range was drawn before. The release always
+    brings the full picture, the same as setting ``tilt.value`` from code.
+
     Examples
     --------
     >>> ex = FilterExplorer(48, 36, tilt=80.0, filter="nearest", samples=3, backend="image")

@@ -101,6 +101,13 @@ class TexturedPlaneViewer:
     maximum : float
         Largest texel error on show.
 
+    Notes
+    -----
+    While the tilt is dragged in the page, each value is shown as a draft: the images and
+    the heatmap exact, without the note at the largest error, and the colour bar only if its
+    range was drawn before (kept per range). The release always brings the full picture,
+    the same as setting ``tilt.value`` from code.
+
     Examples
     --------
     >>> viewer = TexturedPlaneViewer(64, 48, tilt=0.0, backend="image")

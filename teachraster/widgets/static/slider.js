@@ -59,7 +59,7 @@ function render({ model, el }) {
           "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
           "the widget back.";
       }
-    }, 20000); // FilterExplorer takes a second or more per value on a loaded machine
+    }, 20000); // far beyond any render: the kernel is gone, not slow
     model.send({ type: "value", value, seq, final });
   }
   function pump() {
