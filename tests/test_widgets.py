@@ -730,6 +730,8 @@ def test_a_colour_bar_put_back_from_its_cache_is_the_one_drawn():
     first = viewer.display.widget.value
     viewer.tilt.value = 50.0
     viewer.tilt.value = 30.0  # the colour bar's range comes round again
-    assert viewer._bar.sprite.has(viewer._bar.range)
+    assert viewer._bar.last == "cached"
     assert viewer.display.widget.value == first
+    viewer.tilt.value = 31.0
+    assert viewer._bar.last == "drawn"
     viewer.close()

@@ -74,7 +74,7 @@ class CachedSprite:
             return "skipped"
         renderer = canvas.get_renderer()
         self.artist.draw(renderer)
-        box = self.artist.get_tightbbox(renderer)
+        box = drawn_box(self.artist, renderer)
         if box is not None and not _overlaps(box.padded(PAD), others):
             box = _whole_pixels(box.padded(PAD), canvas.get_width_height())
             self._cache[full] = (box, canvas.copy_from_bbox(box))
@@ -84,6 +84,30 @@ class CachedSprite:
 
     def _full_key(self, key: Hashable):
         return (key, self.fig.canvas.get_width_height(), self.fig.dpi)
+
+
+def drawn_box(artist, renderer) -> Bbox | None:
+    """Display box of what ``artist`` has just drawn.
+
+    For an Axes (a colour bar's): its frame and the extents of its tick labels, axis labels
+    and offset texts, whose layouts the draw has just cached; ``get_tightbbox`` would lay
+    out the ticks again, which costs half a draw. Tick marks lie between the frame and their
+    labels (or within the padding).
+    """
+    from matplotlib.axes import Axes
+
+    if not isinstance(artist, Axes):
+        return artist.get_tightbbox(renderer)
+    boxes, reach = [artist.bbox], 0.0
+    for axis in (artist.xaxis, artist.yaxis):
+        if not axis.get_visible():
+            continue
+        texts = [*axis.get_ticklabels(which="both"), axis.label, axis.offsetText]
+        boxes += [t.get_window_extent(renderer) for t in texts
+                  if t.get_visible() and t.get_text()]  # fmt: skip
+        for ticks in (axis.majorTicks, axis.minorTicks):  # how far a tick mark reaches out
+            reach = max(reach, ticks[0].get_tick_padding())
+    return Bbox.union(boxes).padded(renderer.points_to_pixels(reach))
 
 
 def _overlaps(box: Bbox, others: Sequence[Bbox]) -> bool:
@@ -121,6 +145,7 @@ class ColourBarSprite:
         self.mappable, self.colorbar = mappable, colorbar
         self.sprite = CachedSprite(fig, colorbar.ax)
         self.range = self._range()
+        self.last = ""  # what the last draw did (for tests)
 
     def _range(self) -> tuple[float, float]:
         return tuple(float(v) for v in self.mappable().get_clim())
@@ -142,7 +167,8 @@ class ColourBarSprite:
         if not draft and self.range != key:  # drafts left the colour bar behind
             self.colorbar.update_normal(self.mappable())
             self.range = key
-        return self.sprite.draw(key, others=others, new=not draft)
+        self.last = self.sprite.draw(key, others=others, new=not draft)
+        return self.last
 
 
 def text_boxes(texts, pad: float = 8.0) -> list[Bbox]:
