@@ -144,8 +144,13 @@ class ColourBarSprite:
     def __init__(self, fig, mappable, colorbar) -> None:
         self.mappable, self.colorbar = mappable, colorbar
         self.sprite = CachedSprite(fig, colorbar.ax)
-        self.range = self._range()
+        self.range = self._range()  # the range the colour bar shows
         self.last = ""  # what the last draw did (for tests)
+        # the colour bar follows every range change it hears of (all but a draft's)
+        mappable().callbacks.connect("changed", lambda *_: self._heard())
+
+    def _heard(self) -> None:
+        self.range = self._range()
 
     def _range(self) -> tuple[float, float]:
         return tuple(float(v) for v in self.mappable().get_clim())
