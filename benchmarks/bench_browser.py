@@ -10,16 +10,18 @@ folders (in a temporary directory, removed afterwards) and opens a small noteboo
 two baselines, a do-nothing ``IntSlider`` -> ``Output`` round trip and a plain matplotlib
 figure redrawn from an ``IntSlider`` with the widgets' own display (a PNG in an
 ``ipywidgets.Image``); a half-plane ``FillPlayer`` (16 x 16, ``interval=20``) and a
-``TriangleEditor`` (16 x 16) and a ``TexturedPlaneViewer`` (its tilt is a page-side
-``LiveSlider``, coalesced). Chromium (1400 x 900) then drives them like a student:
+``TriangleEditor`` (16 x 16), and the four slider explorers whose sliders are page-side
+``LiveSlider``s (coalesced): ``TexturedPlaneViewer``, ``FilterExplorer``, ``PlaneExplorer``
+and ``DepthPrecisionExplorer``. Chromium (1400 x 900) then drives them like a student:
 
 - latency: from the input event (key, click or pointer) to the change on the page (the
   figure's ``src``, the canvas' step, the output's text), timed in the page;
 - frame rates: pictures changed per second while the step slider is dragged with the mouse,
   while Play runs at 20 ms/step, and re-rendered fills per second while a vertex of the
-  editor is dragged continuously, 1 grid pixel per pointer move, and while the viewer's
-  tilt is dragged (a new value at every animation frame); how long after the drag the last
-  picture comes (coalesced: about one render, never a queue).
+  editor is dragged continuously, 1 grid pixel per pointer move, and while each explorer's
+  slider is dragged (its next step at every animation frame, :func:`bench_slider`); how
+  long after the drag the last picture comes (coalesced: about one render, never a queue);
+  the kernel's time per slider value, as the page hears it.
 
 Absolute times on these machines vary 2x from day to day: the figures to report are the
 ratios to the round trip measured in the same run. Every server and browser started here
@@ -80,6 +82,19 @@ player""",
     """viewer = TexturedPlaneViewer(tilt=60)
 viewer.widget.add_class("bench-viewer")
 viewer""",
+    # the other slider explorers (LiveSliders, coalesced), each with its lesson's settings
+    """from teachraster.widgets import FilterExplorer
+explorer = FilterExplorer(tilt=80, filter="trilinear")
+explorer.widget.add_class("bench-filter")
+explorer""",
+    """from teachraster.widgets import PlaneExplorer
+plane = PlaneExplorer()
+plane.widget.add_class("bench-plane")
+plane""",
+    """from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+depth = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0)
+depth.widget.add_class("bench-depth")
+depth""",
     """editor = TriangleEditor(tri, 16, 16)
 editor.widget.add_class("bench-editor")
 editor""",
@@ -121,6 +136,21 @@ DRAG = """async (sel) => {
     await new Promise(requestAnimationFrame);
     v = (v + 1) % (Number(r.max) + 1);
     r.value = String(v);
+    r.dispatchEvent(new Event("input", { bubbles: true }));
+  }
+  r.dispatchEvent(new Event("change", { bubbles: true }));
+  window.__dragEnd = performance.now();
+}"""
+# A slider dragged along its track: its next position at every animation frame, through
+# all its steps (min to max, then again from min), released at the end.
+DRAG_SLIDER = """async (sel) => {
+  const r = document.querySelector(sel);
+  const lo = Number(r.min), step = Number(r.step) || 1;
+  const n = Math.floor((Number(r.max) - lo) / step + 1e-9) + 1;
+  const t0 = performance.now();
+  for (let k = 1; performance.now() - t0 < 1500; k++) {
+    await new Promise(requestAnimationFrame);
+    r.value = String(lo + (k % n) * step);
     r.dispatchEvent(new Event("input", { bubbles: true }));
   }
   r.dispatchEvent(new Event("change", { bubbles: true }));
@@ -354,22 +384,65 @@ def bench_editor(page, tries, info):
     return fps, firsts
 
 
-def bench_slider(page, tries):
-    """The tilt of TexturedPlaneViewer (a LiveSlider): one key press, then dragged."""
-    v = ".bench-viewer"
-    target, img = f"{v} input[type=range]", f"{v} img"
+#: The slider explorers benchmarked: (CSS class of the widget, its name in the report, the
+#: slider dragged, a toggle (its options) or None).
+SLIDERS = [
+    ("bench-viewer", "TexturedPlaneViewer: tilt", "tilt", None),
+    ("bench-filter", "FilterExplorer: tilt", "tilt", ("nearest", "anisotropic")),
+    ("bench-plane", "PlaneExplorer: v0 x", "v0 x", None),
+    ("bench-depth", "DepthPrecisionExplorer: near", "near", None),
+]
+
+
+def bench_slider(page, tries, css_class, label="tilt", toggle=None):
+    """A page-side ``LiveSlider`` of the widget with ``css_class``: one key press, dragged.
+
+    Returns the key latencies (ms), the pictures per second while the slider is dragged
+    (a new position at every animation frame), the ms from the release to the last
+    picture, and the latencies of ``toggle``'s options chosen in turn in its dropdown
+    (empty without one).
+    """
+    v = f".{css_class}"
+    target, img = f"{v} input[type=range][aria-label^='{label}']", f"{v} img"
     page.locator(target).first.scroll_into_view_if_needed()
+    room = ("(r) => Number(r.value) + Number(r.step) <= Number(r.max) + 1e-9 ? 'ArrowRight'"
+            " : 'ArrowLeft'")  # fmt: skip
+    slider = page.locator(target).first
+    # up a step, or down one at the end of the range (a press that changes nothing is no try)
     key = latency(page, target, ["keydown"], img, "src",
-                  lambda: page.locator(target).first.press("ArrowRight"), tries)  # fmt: skip
+                  lambda: slider.press(slider.evaluate(room)), tries)  # fmt: skip
+    page.wait_for_timeout(300)
     page.evaluate(COUNT, [img, "src"])
-    page.evaluate(DRAG, target)
+    page.evaluate(DRAG_SLIDER, target)
     page.wait_for_timeout(2500)  # the kernel catches up: a value or two, never a queue
     times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
     end = page.evaluate("() => window.__dragEnd")
     during = [t for t in times if t <= end]
     fps = (len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0
     settle = (times[-1] - end) if times else float("nan")
-    return key, fps, settle
+    kernel = page.evaluate(f'() => document.querySelector("{target}").kernelMs || []')
+    if kernel:
+        print(f"{css_class}: kernel ms per value median {statistics.median(kernel):.1f} "
+              f"over {len(kernel)} values")  # fmt: skip
+    toggles = []
+    if toggle:
+        select = page.locator(f"{v} select").first
+        for i in range(tries):
+            option = toggle[i % len(toggle)]
+            toggles += latency(page, f"{v} select", ["change", "input"], img, "src",
+                               lambda o=option: select.select_option(o), 1)  # fmt: skip
+    return key, fps, settle, toggles
+
+
+def report_sliders(results, r) -> None:
+    """Print the latency rows of :func:`bench_slider`'s results (name -> its tuple)."""
+    for name, (key, _fps, settle, toggles) in results.items():
+        summary(f"{name}, one key (kernel)", key, r, f"<= rt + 30 = {r + 30:.0f} ms")
+        print(f"{name + ', last picture after a drag':<46}{settle:>8.1f}"
+              f"{'':>8}{settle / r:>8.2f}  coalesced: about one render")  # fmt: skip
+        if toggles:
+            summary(f"{name.split(':')[0]}: filter toggle (kernel)", toggles, r,
+                    f"<= 2 rt = {2 * r:.0f} ms")  # fmt: skip
 
 
 def shots(page, folder: Path) -> None:
@@ -418,7 +491,10 @@ def main(argv=None) -> int:
                 rt, fig = bench_baselines(page, tries)
                 step, drag_fps, play_fps, toggles = bench_player(page, tries)
                 editor_fps, editor_first = bench_editor(page, max(2, tries // 4), info)
-                tilt_key, tilt_fps, tilt_settle = bench_slider(page, tries)
+                sliders = {
+                    name: bench_slider(page, tries, cls, label, toggle)
+                    for cls, name, label, toggle in SLIDERS
+                }
             finally:
                 browser.close()
     finally:
@@ -435,10 +511,7 @@ def main(argv=None) -> int:
     if editor_first:
         summary("TriangleEditor: first frame of a drag", editor_first, r,
                 f"<= rt + 30 = {r + 30:.0f} ms")  # fmt: skip
-    summary("TexturedPlaneViewer: tilt, one key (kernel)", tilt_key, r,
-            f"<= rt + 30 = {r + 30:.0f} ms")  # fmt: skip
-    print(f"{'TexturedPlaneViewer: last picture after a drag':<46}{tilt_settle:>8.1f}"
-          f"{'':>8}{tilt_settle / r:>8.2f}  coalesced: about one render")  # fmt: skip
+    report_sliders(sliders, r)
     print(f"{'FillPlayer: height of the whole player (px)':<46}{player_h:>8.0f}{'':>8}"
           f"{'':>8}  <= 900")  # fmt: skip
     print(f"{'frame rates (fps)':<46}{'median':>8}{'min':>8}")
@@ -446,7 +519,8 @@ def main(argv=None) -> int:
     print(f"{'FillPlayer: play at 20 ms/step':<46}{play_fps:>8.1f}{play_fps:>8.1f}  >= 40")
     print(f"{'TriangleEditor: vertex dragged (fills/s)':<46}"
           f"{statistics.median(editor_fps):>8.1f}{min(editor_fps):>8.1f}  >= 20")  # fmt: skip
-    print(f"{'TexturedPlaneViewer: tilt dragged':<46}{tilt_fps:>8.1f}{tilt_fps:>8.1f}  >= 20")
+    for name, (_key, fps, _settle, _toggles) in sliders.items():
+        print(f"{name + ' dragged':<46}{fps:>8.1f}{fps:>8.1f}  >= 20")
     return 0
 
 

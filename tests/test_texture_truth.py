@@ -81,3 +81,72 @@ def test_truth_is_repeatable(samples):
     a = footprint_average(clip, uv, tex, ids, samples=samples, seed=5)
     b = footprint_average(clip, uv, tex, ids, samples=samples, seed=5)
     np.testing.assert_array_equal(a, b)
+
+
+def footprint_average_by_solving(clip, uv, texture, triangle_id, *, samples=16, seed=0):
+    """The first footprint_average, kept as a cross-check: one linear solve per point
+    (:func:`exact_uv`), the texel read by the engine's own ``lookup``."""
+    from teachraster.pipeline.texturing.texel_fetch import lookup
+
+    tex = np.asarray(texture, dtype=np.float64)
+    tex3 = tex.reshape(*tex.shape[:2], -1)
+    clip, uv = np.asarray(clip, dtype=np.float64), np.asarray(uv, dtype=np.float64)
+    height, width = triangle_id.shape
+    rows, cols = np.nonzero(triangle_id >= 0)
+    out = np.full((height, width, tex3.shape[2]), np.nan)
+    rng = np.random.default_rng(seed)
+    s = int(samples)
+    grid = (np.arange(s) + 0.0) / s
+    chunk = max(1, 100_000 // (s * s))
+    for start in range(0, len(rows), chunk):
+        r, c = rows[start : start + chunk], cols[start : start + chunk]
+        n = len(r)
+        jit = rng.uniform(0, 1 / s, size=(n, s, s, 2))
+        x = (c[:, None, None] + grid[None, None, :] + jit[..., 0]).reshape(-1)
+        y = (r[:, None, None] + grid[None, :, None] + jit[..., 1]).reshape(-1)
+        tri = np.repeat(triangle_id[r, c], s * s)
+        coords, w = exact_uv(clip[tri], uv[tri], x, y, width, height)
+        ok = w > 0
+        vals = lookup(tex3, coords[:, 0], coords[:, 1], "nearest", "repeat")
+        vals[~ok] = 0.0
+        count = ok.reshape(n, -1).sum(axis=1)
+        total = vals.reshape(n, s * s, -1).sum(axis=1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            out[r, c] = total / count[:, None]
+    return out if tex.ndim == 3 else out[..., 0]
+
+
+@pytest.mark.parametrize("trial", range(6))
+def test_footprint_average_equals_one_solve_per_point(trial):
+    # random triangles (some crossing w = 0: a horizon inside the image), random textures
+    # of odd and power-of-two sizes, one or three channels, several sample counts
+    rng = np.random.default_rng(100 + trial)
+    n = int(rng.integers(1, 4))
+    w = rng.uniform(-0.5 if trial % 2 else 0.3, 4.0, (n, 3))
+    xy = rng.uniform(-1.5, 1.5, (n, 3, 2)) * np.abs(w)[..., None]
+    clip = np.concatenate([xy, np.zeros((n, 3, 1)), w[..., None]], axis=2)
+    uv = rng.uniform(-3, 3, (n, 3, 2))
+    shape = [(16, 16, 3), (7, 5), (8, 13, 3)][trial % 3]
+    tex = rng.uniform(0, 1, shape)
+    ids = rng.integers(-1, n, (11, 14))
+    samples = int(rng.integers(1, 7))
+    new = footprint_average(clip, uv, tex, ids, samples=samples, seed=trial)
+    old = footprint_average_by_solving(clip, uv, tex, ids, samples=samples, seed=trial)
+    np.testing.assert_allclose(new, old, rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(np.isnan(new), np.isnan(old))
+
+
+def test_footprint_average_of_the_filter_explorers_floor_is_unchanged():
+    from teachraster.pipeline.geometry.camera import Camera
+    from teachraster.widgets.textured import CORNER_UV, TRIANGLES, plane_clip
+
+    camera = Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0, near=0.05,
+                    far=50.0)  # fmt: skip
+    tex = tr.checkerboard(8, 64)
+    uv = np.broadcast_to(CORNER_UV[TRIANGLES] * 8, (2, 3, 2))
+    for tilt in (20.0, 85.0):
+        clip = plane_clip(tilt, camera, 64 / 48)
+        ids = tr.render(clip, 64, 48, attrs=uv).triangle_id
+        new = footprint_average(clip, uv, tex, ids, samples=5)
+        old = footprint_average_by_solving(clip, uv, tex, ids, samples=5)
+        np.testing.assert_array_equal(new, old)

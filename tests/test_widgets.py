@@ -703,3 +703,74 @@ def test_live_slider_applies_page_values_and_answers_each(monkeypatch):
     log = LiveSlider(value=0.1, base=10, min=-2, max=1, step=0.05)
     log.value = 1e-5
     assert log.value == pytest.approx(0.01)
+
+
+# -- drafts while a LiveSlider is dragged --------------------------------------------------------
+def _page_value(slider, value, final, seq=[0]):  # noqa: B006 (a counter across calls)
+    seq[0] += 1
+    slider._on_page_message(slider, {"type": "value", "value": value, "final": final,
+                                     "seq": seq[0]}, [])  # fmt: skip
+
+
+def test_live_slider_marks_drafts_and_calls_back_on_release():
+    from teachraster.widgets import LiveSlider
+
+    s = LiveSlider(value=10.0, min=0.0, max=90.0, step=1.0)
+    s.send = lambda content, buffers=None: None
+    seen, released = [], []
+    s.observe(lambda change: seen.append((change["new"], s.dragging)), "value")
+    s.on_release(lambda: released.append(s.value))
+    for v in (11.0, 12.0):
+        _page_value(s, v, False)
+    _page_value(s, 12.0, True)  # released where the last draft was: the callback
+    assert seen == [(11.0, True), (12.0, True)] and released == [12.0] and not s.dragging
+    _page_value(s, 13.0, False)
+    _page_value(s, 14.0, True)  # released elsewhere: the observers, not a draft
+    assert seen[-1] == (14.0, False) and released == [12.0]
+    _page_value(s, 20.0, True)  # a key: final at once
+    assert seen[-1] == (20.0, False) and released == [12.0]
+
+
+@pytest.mark.parametrize("name", ["viewer", "filter", "plane"])
+def test_a_drag_ends_on_the_full_picture(name):
+    from teachraster.widgets import FilterExplorer, PlaneExplorer
+
+    def make():
+        if name == "viewer":
+            w = TexturedPlaneViewer(64, 48, tilt=60.0, backend="image")
+            return w, w.tilt, [61.0, 63.0, 70.0, 75.0], 30.0
+        if name == "filter":
+            w = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
+            return w, w.tilt, [61.0, 63.0, 70.0, 75.0], 30.0
+        w = PlaneExplorer(backend="image")
+        return w, w.f[1], [1.2, 1.5, 1.8], -0.5
+
+    dragged, slider, values, elsewhere = make()
+    direct, direct_slider, _, _ = make()
+    for s in (slider, direct_slider):
+        s.send = lambda content, buffers=None: None
+    for v in values:
+        _page_value(slider, v, False)
+    assert slider.dragging is False  # only while the observers run
+    draft = dragged.display.widget.value
+    _page_value(slider, values[-1], True)  # released on the last draft
+    direct_slider.value = values[-1]
+    assert dragged.display.widget.value == direct.display.widget.value != draft
+    _page_value(slider, values[0], False)
+    _page_value(slider, elsewhere, True)  # released on a new value
+    direct_slider.value = elsewhere
+    assert dragged.display.widget.value == direct.display.widget.value
+    dragged.close()
+    direct.close()
+
+
+def test_a_colour_bar_put_back_from_its_cache_is_the_one_drawn():
+    viewer = TexturedPlaneViewer(64, 48, tilt=30.0, backend="image")
+    first = viewer.display.widget.value
+    viewer.tilt.value = 50.0
+    viewer.tilt.value = 30.0  # the colour bar's range comes round again
+    assert viewer._bar.last == "cached"
+    assert viewer.display.widget.value == first
+    viewer.tilt.value = 31.0
+    assert viewer._bar.last == "drawn"
+    viewer.close()

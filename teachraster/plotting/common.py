@@ -184,10 +184,14 @@ def rgba_image(rgb: np.ndarray) -> np.ndarray:
     rgb = np.asarray(rgb, dtype=np.float64)
     if rgb.ndim != 3 or rgb.shape[2] not in (3, 4):
         raise ValueError(f"expected an (H, W, 3) colour image, got shape {rgb.shape}")
-    out = np.zeros((*rgb.shape[:2], 4))
-    ok = np.isfinite(rgb[..., :3]).all(axis=-1)
-    out[ok, :3] = np.clip(rgb[ok, :3], 0.0, 1.0)
-    out[ok, 3] = 1.0 if rgb.shape[2] == 3 else np.clip(rgb[ok, 3], 0.0, 1.0)
+    out = np.empty((*rgb.shape[:2], 4))
+    ok = np.isfinite(rgb[..., :3]).all(axis=-1)[..., None]
+    # np.where over the whole image, not boolean indexing: a widget does this per frame
+    with np.errstate(invalid="ignore"):
+        np.clip(rgb[..., :3], 0.0, 1.0, out=out[..., :3])
+        out[..., :3] = np.where(ok, out[..., :3], 0.0)
+        alpha = 1.0 if rgb.shape[2] == 3 else np.clip(rgb[..., 3:], 0.0, 1.0)
+        out[..., 3:] = np.where(ok, alpha, 0.0)
     return out
 
 

@@ -21,7 +21,6 @@ import numpy as np
 
 from ..pipeline.rendering.render_scenes import render_scene
 from ..pipeline.texturing.mip_pyramid import mipmap
-from ..pipeline.texturing.texel_fetch import lookup
 from ..pipeline.texturing.texture_filters import (
     MIPMAP_FILTERS,
     footprint_axes,
@@ -57,6 +56,26 @@ def exact_uv(clip, uv, x, y, width: int, height: int):
     return np.einsum("ni,nik->nk", b, uv), np.einsum("ni,ni->n", b, clip[:, :, 3])
 
 
+def window_to_uv(clip, uv, width: int, height: int) -> np.ndarray:
+    """Each triangle's projective map from window points to texture coordinates: (N, 3, 3).
+
+    Row ``k`` of triangle ``t``'s matrix ``P`` gives, for a window point (x, y),
+    ``P[k] @ (x, y, 1)``: the numerators of u (k = 0) and v (k = 1), and the denominator
+    (k = 2), so that ``u = P[0] @ p / P[2] @ p``. It is :func:`exact_uv` folded into one matrix
+    per triangle: the clip-space barycentrics ``b = A⁻¹ (x_n, y_n, 1)`` enter u, v and their
+    sum linearly, and the window-to-NDC map is affine. Since the last row of ``A`` holds the
+    w's, ``Σ b_i w_i = 1`` before normalising: the point's w is ``1 / (P[2] @ p)``, positive
+    exactly where the plane is seen.
+    """
+    clip = np.asarray(clip, dtype=np.float64)
+    uv = np.asarray(uv, dtype=np.float64)
+    a = np.stack([clip[:, :, 0], clip[:, :, 1], clip[:, :, 3]], axis=1)  # rows x, y, w
+    rows = np.concatenate([np.swapaxes(uv, 1, 2), np.ones((len(uv), 1, 3))], axis=1)
+    to_ndc = np.array([[2.0 / width, 0.0, -1.0], [0.0, -2.0 / height, 1.0], [0.0, 0.0, 1.0]])
+    # one 3 x 3 inverse per triangle (not one solve per point)
+    return rows @ np.linalg.inv(a) @ to_ndc
+
+
 def footprint_average(clip, uv, texture, triangle_id, *, samples: int = 16, seed: int = 0):
     """The texture's mean over each covered pixel's footprint: (H, W, C), NaN where uncovered.
 
@@ -75,35 +94,83 @@ def footprint_average(clip, uv, texture, triangle_id, *, samples: int = 16, seed
         ``samples`` × ``samples`` jittered points per pixel (one per stratum).
     seed : int
         Seed of the jitter, so the truth is repeatable.
+
+    Notes
+    -----
+    Each point is mapped by its triangle's projective map (:func:`window_to_uv`, one 3 × 3
+    matrix per triangle), the same numbers :func:`exact_uv` gives up to rounding, without a
+    linear solve per point; ``tests/test_texture_truth.py`` checks the two against each other
+    on random triangles. The texel is read here, not by the engine's filters.
     """
     tex = np.asarray(texture, dtype=np.float64)
-    tex3 = tex.reshape(*tex.shape[:2], -1)
-    clip, uv = np.asarray(clip, dtype=np.float64), np.asarray(uv, dtype=np.float64)
+    th, tw = tex.shape[:2]
+    table = tex.reshape(th * tw, -1)
     height, width = triangle_id.shape
+    maps = window_to_uv(clip, uv, width, height)
     rows, cols = np.nonzero(triangle_id >= 0)
-    out = np.full((height, width, tex3.shape[2]), np.nan)
-    rng = np.random.default_rng(seed)
+    out = np.full((height, width, table.shape[1]), np.nan)
     s = int(samples)
     grid = (np.arange(s) + 0.0) / s
-    # About 500 bytes of temporaries per point: 100,000 points keep this under 60 MiB, so a
+    jitter = _jitter(seed, s, len(rows))
+    # About 200 bytes of temporaries per point: 100,000 points keep this near 20 MiB, so a
     # classroom kernel stays small (lesson 09); larger chunks are no faster.
     chunk = max(1, 100_000 // (s * s))
     for start in range(0, len(rows), chunk):
         r, c = rows[start : start + chunk], cols[start : start + chunk]
-        n = len(r)
-        jit = rng.uniform(0, 1 / s, size=(n, s, s, 2))
-        x = (c[:, None, None] + grid[None, None, :] + jit[..., 0]).reshape(-1)
-        y = (r[:, None, None] + grid[None, :, None] + jit[..., 1]).reshape(-1)
-        tri = np.repeat(triangle_id[r, c], s * s)
-        coords, w = exact_uv(clip[tri], uv[tri], x, y, width, height)
-        ok = w > 0  # points beyond the horizon see nothing of the plane
-        vals = lookup(tex3, coords[:, 0], coords[:, 1], "nearest", "repeat")
-        vals[~ok] = 0.0
-        count = ok.reshape(n, -1).sum(axis=1)
-        total = vals.reshape(n, s * s, -1).sum(axis=1)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            out[r, c] = total / count[:, None]
+        jit = jitter[start : start + chunk]
+        x = c[:, None, None] + grid[None, None, :] + jit[..., 0]
+        y = r[:, None, None] + grid[None, :, None] + jit[..., 1]
+        m = maps[triangle_id[r, c]][:, :, :, None, None]  # (n, 3, 3, 1, 1)
+        u_num, v_num, den = (m[:, k, 0] * x + m[:, k, 1] * y + m[:, k, 2] for k in range(3))
+        out[r, c] = _box_mean(table, th, tw, u_num, v_num, den)
     return out if tex.ndim == 3 else out[..., 0]
+
+
+def _box_mean(table, th: int, tw: int, u_num, v_num, den) -> np.ndarray:
+    """Mean over each pixel's (s, s) points of the texel (nearest, repeat) each one sees."""
+    n = len(den)
+    # NaN, infinity and points beyond the horizon get some texel index (never used)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        u, v = u_num / den, v_num / den
+        index = _texel(v, th) * tw + _texel(u, tw)
+    ok = (den > 0) & np.isfinite(u) & np.isfinite(v)  # w = 1 / den > 0: the plane is seen
+    vals = np.take(table, index.reshape(n, -1), axis=0)  # (n, s * s, C)
+    vals[~ok.reshape(n, -1)] = 0.0
+    count = ok.reshape(n, -1).sum(axis=1)
+    total = vals.sum(axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return total / count[:, None]
+
+
+def _texel(u: np.ndarray, size: int) -> np.ndarray:
+    """Index of the box texel holding coordinate ``u`` along a side of ``size``, tiled."""
+    # A coordinate too large to keep a fraction of a texel (u * size overflowing) is reduced
+    # by whole periods first, which picks the same texel.
+    big = np.abs(u) > 2.0**40
+    if big.any():
+        u = np.where(big, np.mod(u, 1.0), u)
+    i = np.floor(u * size).astype(np.intp)
+    # floor-mod (-1 -> size - 1, like GL_REPEAT); for a power of two a mask, much faster
+    return i & (size - 1) if size & (size - 1) == 0 else np.mod(i, size)
+
+
+#: Jitter streams kept between calls (a widget asks for the truth at every new angle), up to
+#: this many numbers (32 MiB).
+JITTER_CACHE_LIMIT = 4_000_000
+_JITTER: dict = {}
+
+
+def _jitter(seed: int, s: int, n: int) -> np.ndarray:
+    """The (n, s, s, 2) jitter of the first n pixels: the seed's stream, cached (see below)."""
+    key = (seed, s)
+    have = _JITTER.get(key)
+    if have is None or len(have) < n:
+        if n * s * s * 2 > JITTER_CACHE_LIMIT:  # too big to keep: draw it afresh
+            return np.random.default_rng(seed).uniform(0, 1 / s, size=(n, s, s, 2))
+        _JITTER.clear()  # one stream at a time: a widget uses one seed and one s
+        have = np.random.default_rng(seed).uniform(0, 1 / s, size=(n, s, s, 2))
+        _JITTER[key] = have
+    return have[:n]
 
 
 def texel_reads(filter: str, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> float:

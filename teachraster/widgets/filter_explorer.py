@@ -17,7 +17,11 @@ from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider
+from .sprites import ColourBarSprite, text_boxes
 from .textured import CORNER_UV, TRIANGLES, plane_clip
+
+#: Tilts whose footprint average is kept (0.5 MiB each at 160 x 120).
+TRUTH_CACHE = 32
 
 
 class FilterExplorer:
@@ -56,6 +60,14 @@ class FilterExplorer:
     rms : float
         Root-mean-square error against the truth.
 
+    Notes
+    -----
+    While the tilt is dragged in the page, each value is shown as a draft: the filtered
+    image and the levels exact, the error only at tilts whose truth is kept (the last 32;
+    otherwise ``truth`` and ``error`` are None and ``rms`` NaN until the release), without
+    its note, and its colour bar only if that range was drawn before. The release always
+    brings the full picture, the same as setting ``tilt.value`` from code.
+
     Examples
     --------
     >>> ex = FilterExplorer(48, 36, tilt=80.0, filter="nearest", samples=3, backend="image")
@@ -90,6 +102,8 @@ class FilterExplorer:
         self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
                                description="tilt (°)", readout_format=".0f",
                                layout=widgets.Layout(width="420px"))  # fmt: skip
+        self._truths: dict = {}
+        self._read_counts: dict = {}
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)
@@ -111,9 +125,12 @@ class FilterExplorer:
                 ax.set_ylabel("")
             self.axes = axes
             self._blit = self._edit_blit()
+            error = self.panels["error"]
+            self._bar = ColourBarSprite(self.fig, lambda: error.image, error.colorbar)
             self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
         self.filter.observe(lambda change: self.update(), "value")
         self.tilt.observe(lambda change: self.update(), "value")
+        self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
         self.info = widgets.HTML()
         self._set_info()
         title = title_html(
@@ -134,49 +151,88 @@ class FilterExplorer:
         else:
             self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy)
         self.lod = mip_level(frame.ddx, frame.ddy, self.texture.shape)
-        if getattr(self, "_truth_tilt", None) != self.tilt.value:  # the filter leaves it alone
-            self.truth = footprint_average(clip, uv, self.texture, frame.triangle_id,
-                                           samples=self.samples)  # fmt: skip
-            self._truth_tilt = self.tilt.value
+        self.frame = frame
+        if self._drafting() and self.tilt.value not in self._truths:
+            # a draft leaves the error out rather than wait for a new truth (at the release)
+            self.truth, self.error, self.rms = None, None, float("nan")
+            return
+        self.truth = self._truth(clip, uv, frame.triangle_id)
         self.error = np.abs(self.image - self.truth).mean(axis=-1)
         self.rms = float(np.sqrt(np.nanmean((self.image - self.truth) ** 2)))
-        self.frame = frame
+
+    def _drafting(self) -> bool:
+        """True while the tilt is dragged: a draft shows the filtered image and the levels,
+        and the error only where its truth is at hand, without its note or a colour bar not
+        drawn before; the release brings the full picture."""
+        return self.tilt.dragging
+
+    def _truth(self, clip, uv, triangle_id) -> np.ndarray:
+        """The footprint average at the current tilt, kept for the last few tilts: the
+        filter leaves it alone, and a student drags the slider back and forth."""
+        key = self.tilt.value
+        truth = self._truths.pop(key, None)
+        if truth is None:
+            truth = footprint_average(clip, uv, self.texture, triangle_id, samples=self.samples)
+            truth.flags.writeable = False  # shared by every filter shown at this tilt
+        self._truths[key] = truth  # the most recent last
+        while len(self._truths) > TRUTH_CACHE:
+            self._truths.pop(next(iter(self._truths)))
+        return truth
 
     def _edit_blit(self) -> LayeredBlit:
-        """A new tilt or filter changes the three images, the error's marked maximum and
-        its colour bar; titles, frames and the level key stay in a cached background."""
+        """A new tilt or filter changes the three images and the error's marked maximum;
+        titles, frames and the level key stay in a cached background (the error's colour
+        bar is drawn over it, :class:`~teachraster.widgets.sprites.ColourBarSprite`)."""
         error = self.panels["error"]
         images = [self.panels["image"].image, self.panels["lod"].image, error.image]
-        bars = [] if error.colorbar is None else [error.colorbar.ax]
         frames = [s for ax in self.axes for s in ax.spines.values()]  # drawn over the images
         return LayeredBlit(self.fig, [(MOVING, images), (STILL, frames),
-                                      (MOVING, [error.marker, error.note, *bars])])  # fmt: skip
+                                      (MOVING, [error.marker, error.note])])  # fmt: skip
 
     def _draw(self) -> None:
         self._blit = same_or_new(self._blit, self._edit_blit())
-        self._blit.draw()
+        error = self.panels["error"]
+        others = [ax.bbox for ax in self.axes] + text_boxes([error.note])
+        self._bar.draw(self._blit, draft=self._drafting(), others=others)
 
     def update(self) -> None:
         """Render again with the controls' values and update the panels in place."""
         self._render()
         self.panels["image"].update(self.image)
         self.panels["lod"].update(self.lod)
-        self.panels["error"].update(self.image, self.truth)
+        error = self.panels["error"]
+        if self.truth is None:  # a draft without the truth: no error to show
+            for artist in (error.image, error.marker, error.note):
+                artist.set_visible(False)
+        elif self._drafting():
+            error.image.set_visible(True)
+            with self._bar.quietly():  # the colour bar follows at the release
+                error.update(self.image, self.truth)
+            error.note.set_visible(False)
+        else:
+            error.image.set_visible(True)
+            error.update(self.image, self.truth)
         self._set_info()
         self.display.refresh()
 
     def _set_info(self) -> None:
         reads = self._reads()
+        rms = "(on release)" if self.truth is None else f"{self.rms:.3f}"
         self.info.value = (
             f"filter <b>{self.filter.value}</b> · RMS error against the footprint mean "
-            f"<b>{self.rms:.3f}</b> · about {reads:.1f} texels read per pixel · largest λ "
+            f"<b>{rms}</b> · about {reads:.1f} texels read per pixel · largest λ "
             f"{np.nanmax(self.lod):.1f}"
         )
 
     def _reads(self) -> float:
-        cov = self.frame.coverage
-        return texel_reads(self.filter.value, self.frame.ddx[cov], self.frame.ddy[cov],
-                           self.texture.shape)  # fmt: skip
+        key = (self.tilt.value, self.filter.value)
+        if key not in self._read_counts:  # a few ms: kept, as the truth is
+            cov = self.frame.coverage
+            self._read_counts[key] = texel_reads(self.filter.value, self.frame.ddx[cov],
+                                                 self.frame.ddy[cov], self.texture.shape)  # fmt: skip
+            if len(self._read_counts) > 4 * TRUTH_CACHE:
+                self._read_counts.pop(next(iter(self._read_counts)))
+        return self._read_counts[key]
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

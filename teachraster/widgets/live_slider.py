@@ -7,6 +7,10 @@ custom messages with their own flow control, as :class:`~teachraster.widgets.Dra
 does for positions: at most two unanswered, each the latest when sent, values that come
 meanwhile replaced (never queued), and the value where the slider was released always.
 The kernel answers each once its observers have run (the new picture is sent first).
+Values sent while the pointer still holds the slider are marked as drafts
+(:attr:`LiveSlider.dragging` is True while their observers run), so that a widget may show
+a cheaper picture during the drag; the release is always sent, marked final, and brings the
+full picture.
 
 It keeps the ipywidgets slider's interface that the explorers and lessons use: ``value``
 (observable, settable from code), ``min``, ``max``, ``step``, ``description``,
@@ -16,6 +20,7 @@ It keeps the ipywidgets slider's interface that the explorers and lessons use: `
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 import anywidget
@@ -64,7 +69,21 @@ class LiveSlider(anywidget.AnyWidget):
             kwargs.pop("base", None)
         super().__init__(**kwargs)
         self.messages = 0
+        #: True while the value comes from a pointer still dragging the slider: observers may
+        #: show a cheaper draft; the release then brings the full picture (:meth:`on_release`).
+        self.dragging = False
+        self._drafted = False
+        self._release: list = []
         self.on_msg(self._on_page_message)
+
+    def on_release(self, callback) -> None:
+        """Call ``callback()`` when a drag ends on the value last shown as a draft.
+
+        When the release moves the value, the observers of ``value`` run as usual (with
+        ``dragging`` False); when it does not, they would not run again, so this callback
+        brings the full picture instead.
+        """
+        self._release.append(callback)
 
     @traitlets.validate("value")
     def _clamp(self, proposal) -> float:
@@ -78,7 +97,21 @@ class LiveSlider(anywidget.AnyWidget):
         if content.get("type") != "value":
             return
         self.messages += 1
+        start = time.perf_counter()
+        final = bool(content.get("final", True))
         try:
+            before = self.value
+            self.dragging = not final
             self.value = float(content["value"])  # the observers re-render here
+            if not final:
+                self._drafted = self._drafted or self.value != before
+            elif self._drafted:
+                self._drafted = False
+                if self.value == before:  # the last draft is at the final value
+                    for callback in self._release:
+                        callback()
         finally:
-            self.send({"type": "done", "seq": int(content.get("seq", 0))})
+            self.dragging = False
+            # how long the kernel took, for the page (benchmarks read it there)
+            ms = round((time.perf_counter() - start) * 1e3, 2)
+            self.send({"type": "done", "seq": int(content.get("seq", 0)), "kernel_ms": ms})

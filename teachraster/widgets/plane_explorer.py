@@ -17,6 +17,7 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.collections import LineCollection
+from matplotlib.text import Text
 
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
@@ -25,6 +26,7 @@ from .common import close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider
+from .sprites import ColourBarSprite, text_boxes
 
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
@@ -164,6 +166,9 @@ class PlaneExplorer:
             self.fig.canvas.draw()
             self.fig.set_layout_engine("none")
             self._blit = self._edit_blit()
+            image = self.image
+            self._bar = None if image.colorbar is None else ColourBarSprite(
+                self.fig, lambda: image.image, image.colorbar)  # fmt: skip
             self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
         self.info = widgets.HTML(self._info_html())
         title = title_html(
@@ -181,6 +186,7 @@ class PlaneExplorer:
             s = LiveSlider(value=value, min=lo, max=hi, step=0.25, description=name,
                            layout=widgets.Layout(width="260px"))  # fmt: skip
             s.observe(lambda change: self.update(), "value")
+            s.on_release(self.update)  # a drag ended on a draft: the full picture
             return s
 
         self.x = [slider(xy[k, 0], 0.0, self.width, f"v{k + 1} x") for k in range(3)]
@@ -222,23 +228,38 @@ class PlaneExplorer:
         return level_segments(self.system["g"], levels, self.width, self.height)
 
     def _edit_blit(self) -> LayeredBlit:
-        """A new value changes the image, its colour bar, the contours and the triangle; the
-        grid and the frame (above the image), ticks and title stay in a cached background."""
-        bar = getattr(self.image, "colorbar", None)
-        above = [self.contours, *self.triangle.artists, *([] if bar is None else [bar.ax])]
+        """A new value changes the image, the contours and the triangle; the grid and the
+        frame (above the image), ticks and title stay in a cached background. The colour
+        bar is drawn over it, kept per range (:class:`~.sprites.ColourBarSprite`): moving a
+        vertex leaves it as it was."""
+        above = [self.contours, *self.triangle.artists]
         return LayeredBlit(self.fig, [(MOVING, [self.image.image]),
                                       (STILL, [self.grid.lines, *self.ax.spines.values()]),
                                       (MOVING, above)])  # fmt: skip
 
+    def _drafting(self) -> bool:
+        """True while a slider is dragged: a draft leaves out a colour bar whose range was
+        not drawn before (the release brings the full picture)."""
+        return any(s.dragging for s in (*self.x, *self.y, *self.f))
+
     def _draw(self) -> None:
         self._blit = same_or_new(self._blit, self._edit_blit())
-        self._blit.draw()
+        if self._bar is None:
+            self._blit.draw()
+            return
+        labels = [a for a in self.triangle.artists if isinstance(a, Text)]
+        self._bar.draw(self._blit, draft=self._drafting(),
+                       others=[self.ax.bbox, *text_boxes(labels)])  # fmt: skip
 
     def update(self) -> None:
         """Recompute from the sliders and redraw the same artists."""
         self._compute()
         self.image.update(self.values)
-        self.image.image.set_clim(*self._range())
+        if self._bar is not None and self._drafting():
+            with self._bar.quietly():  # the colour bar follows at the release
+                self.image.image.set_clim(*self._range())
+        else:
+            self.image.image.set_clim(*self._range())
         self.contours.set_segments(self._segments())
         self.triangle.update(self.xy)
         self.info.value = self._info_html()

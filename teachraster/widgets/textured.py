@@ -12,10 +12,12 @@ from ..pipeline.geometry.camera import Camera
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
-from .dragging import comparison_edit_blit, same_or_new
+from .dragging import same_or_new
 from .live_slider import LiveSlider
+from .sprites import ColourBarSprite, text_boxes
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -99,6 +101,13 @@ class TexturedPlaneViewer:
     maximum : float
         Largest texel error on show.
 
+    Notes
+    -----
+    While the tilt is dragged in the page, each value is shown as a draft: the images and
+    the heatmap exact, without the note at the largest error, and the colour bar only if its
+    range was drawn before (kept per range). The release always brings the full picture,
+    the same as setting ``tilt.value`` from code.
+
     Examples
     --------
     >>> viewer = TexturedPlaneViewer(64, 48, tilt=0.0, backend="image")
@@ -144,8 +153,11 @@ class TexturedPlaneViewer:
                 self.view.heatmap.colorbar.set_label("texels")
             self._show_error()
             # a new tilt changes the images, the heatmap's title and colour bar: the rest
-            # (tick labels, titles) stays in a cached background
-            self._blit = comparison_edit_blit(self.view)
+            # (tick labels, titles) stays in a cached background; the colour bar is drawn
+            # last, or put back as it was the last time its range came round
+            self._blit = self._edit_blit()
+            hm = self.view.heatmap
+            self._bar = ColourBarSprite(fig, lambda: hm.image, hm.colorbar)
             self.display = FigureDisplay(fig, self.backend, draw=self._draw)
         self.fig = fig
 
@@ -155,6 +167,7 @@ class TexturedPlaneViewer:
                                layout=widgets.Layout(width="420px"))  # fmt: skip
         self.depth = self.tilt  # the brief's name for it: how far the plane recedes
         self.tilt.observe(lambda change: self.update(change["new"]), "value")
+        self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
         self.info = widgets.HTML()
         self._set_info()
         title = title_html(
@@ -178,14 +191,43 @@ class TexturedPlaneViewer:
         self.perspective = sample(self.texture, self.uv_perspective)
         self.error = texel_error(self.uv_affine, self.uv_perspective, self.texture.shape)
 
+    def _edit_blit(self) -> LayeredBlit:
+        """The images, the heatmap's marked maximum, note and title move; the grids, panel
+        titles and frames stay (the colour bar is left to :meth:`_draw`)."""
+        view = self.view
+        images = [art.image for art in view.images] + [view.heatmap.image]
+        still = [g.lines for g in view.grids if g is not None]
+        still += [s for ax in view.axes for s in ax.spines.values()]
+        hm = view.heatmap
+        return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
+                                      (MOVING, [hm.marker, hm.note, hm.title])])  # fmt: skip
+
     def _draw(self) -> None:
-        self._blit = same_or_new(self._blit, comparison_edit_blit(self.view))
-        self._blit.draw()
+        """Blit the figure, then the colour bar: drawn, put back from the sprite cache, or
+        (in a draft, for a range not seen before) left out."""
+        self._blit = same_or_new(self._blit, self._edit_blit())
+        hm = self.view.heatmap
+        others = [ax.bbox for ax in self.view.axes if ax is not hm.colorbar.ax]
+        self._bar.draw(self._blit, draft=self._drafting(),
+                       others=others + text_boxes([hm.title, hm.note]))  # fmt: skip
+
+    def _drafting(self) -> bool:
+        """True while the tilt is being dragged: a draft leaves out what is slow to draw
+        (the note at the largest error, a colour bar for a range not drawn before)."""
+        return getattr(self, "tilt", None) is not None and self.tilt.dragging
 
     def _show_error(self) -> None:
         # The heatmap shows texel error, not the colour difference ComparisonView computes:
         # the same artists, given |error - 0|.
-        self.view.heatmap.update(self.error, np.zeros_like(self.error))
+        hm = self.view.heatmap
+        if not self._drafting():
+            hm.update(self.error, np.zeros_like(self.error))
+            return
+        # a draft: the image's colours at the new range, the colour bar left as it is
+        # (brought up to date by the full picture at the release)
+        with self._bar.quietly():
+            hm.update(self.error, np.zeros_like(self.error))
+        hm.note.set_visible(False)
 
     @property
     def maximum(self) -> float:

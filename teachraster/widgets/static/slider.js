@@ -33,7 +33,8 @@ function render({ model, el }) {
   const base = () => model.get("base");
   const toValue = (p) => (base() > 0 ? Math.pow(base(), p) : p);
   const toPos = (v) => (base() > 0 ? Math.log(v) / Math.log(base()) : v);
-  const s = { pending: new Set(), seq: 0, latest: null, sent: null, held: false };
+  const s = { pending: new Set(), seq: 0, latest: null, sent: null, held: false,
+    drafted: false };
 
   function show(v) {
     readout.textContent = format(v, model.get("readout_format"));
@@ -47,7 +48,7 @@ function render({ model, el }) {
     if (!s.held && s.pending.size === 0) input.value = toPos(model.get("value"));
     show(s.held ? toValue(Number(input.value)) : model.get("value"));
   }
-  function send(value) {
+  function send(value, final) {
     s.seq += 1;
     s.sent = value;
     s.pending.add(s.seq);
@@ -58,28 +59,39 @@ function render({ model, el }) {
           "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
           "the widget back.";
       }
-    }, 20000); // FilterExplorer takes a second or more per value on a loaded machine
-    model.send({ type: "value", value, seq });
+    }, 20000); // far beyond any render: the kernel is gone, not slow
+    model.send({ type: "value", value, seq, final });
   }
   function pump() {
-    if (s.latest !== null && s.latest !== s.sent && s.pending.size < IN_FLIGHT) send(s.latest);
+    if (s.latest !== null && s.latest !== s.sent && s.pending.size < IN_FLIGHT) {
+      send(s.latest, false); // a draft: the pointer still holds the slider
+      s.drafted = true;
+    }
   }
   input.addEventListener("pointerdown", () => (s.held = true));
   input.addEventListener("input", () => {
     s.latest = toValue(Number(input.value));
     show(s.latest);
-    pump();
+    if (s.held) pump();
+    // a key (or a click on the track) is followed by its "change" at once: sent from there
+    // as final, not first as a draft
+    else setTimeout(pump, 0);
   });
   input.addEventListener("change", () => {
     s.held = false;
     s.latest = toValue(Number(input.value));
-    if (s.latest !== s.sent) send(s.latest); // the release (unless sent already)
+    // the release, marked final: the kernel shows the full picture (also when this value
+    // was sent already as a draft)
+    if (s.latest !== s.sent || s.drafted) send(s.latest, true);
+    s.drafted = false;
   });
   // arrow keys move the slider, not JupyterLab's notebook (command-mode shortcuts)
   input.addEventListener("keydown", (e) => e.stopPropagation());
   model.on("msg:custom", (msg) => {
     if (msg.type !== "done") return;
     s.pending.delete(msg.seq);
+    // the kernel's time per value, where a benchmark can read it
+    (input.kernelMs = input.kernelMs || []).push(msg.kernel_ms);
     notice.textContent = "";
     pump();
   });
