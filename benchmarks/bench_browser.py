@@ -389,7 +389,7 @@ def bench_editor(page, tries, info):
 SLIDERS = [
     ("bench-viewer", "TexturedPlaneViewer: tilt", "tilt", None),
     ("bench-filter", "FilterExplorer: tilt", "tilt", ("nearest", "anisotropic")),
-    ("bench-plane", "PlaneExplorer: v0 x", "v0 x", None),
+    ("bench-plane", "PlaneExplorer: v1 x", "v1 x", None),
     ("bench-depth", "DepthPrecisionExplorer: near", "near", None),
 ]
 

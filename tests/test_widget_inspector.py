@@ -8,6 +8,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import teachraster as tr  # noqa: E402
+from teachraster.core.tile_trace import edge_name  # noqa: E402
 from teachraster.widgets import PixelInspector  # noqa: E402
 from teachraster.widgets.common import SAMPLE_PATTERNS as PATTERNS  # noqa: E402
 from teachraster.widgets.common import pattern_samples  # noqa: E402
@@ -42,7 +43,10 @@ def test_single_triangle_labels_edge_values():
     w = PixelInspector(tri, 10, 8, row=2, col=1, backend="image")
     try:
         e = w.result.trace.samples.edge_values(2, 1)
-        assert all(f"E2={e[s, 2]:+.3g}" in lab.get_text() for s, lab in enumerate(w.pixel.labels))
+        name = edge_name(*w.result.trace.edges[2])  # the third edge tested, e.g. "E31"
+        assert all(
+            f"{name}={e[s, 2]:+.3g}" in lab.get_text() for s, lab in enumerate(w.pixel.labels)
+        )
         w.pattern.value = "1 (centre)"
         assert w.result.sample_coverage.shape[2] == 1
         assert isinstance(pattern_samples("4 ordered grid"), np.ndarray)
