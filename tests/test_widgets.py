@@ -731,6 +731,11 @@ def test_live_slider_marks_drafts_and_calls_back_on_release():
     assert seen[-1] == (20.0, False) and released == [12.0]
 
 
+def _shown(widget) -> bytes:
+    """The pixels a slider explorer sent the page last (its figure's Agg buffer)."""
+    return bytes(widget.display.widget._last)
+
+
 @pytest.mark.parametrize("name", ["viewer", "filter", "plane"])
 def test_a_drag_ends_on_the_full_picture(name):
     from teachraster.widgets import FilterExplorer, PlaneExplorer
@@ -752,25 +757,44 @@ def test_a_drag_ends_on_the_full_picture(name):
     for v in values:
         _page_value(slider, v, False)
     assert slider.dragging is False  # only while the observers run
-    draft = dragged.display.widget.value
+    draft = _shown(dragged)
     _page_value(slider, values[-1], True)  # released on the last draft
     direct_slider.value = values[-1]
-    assert dragged.display.widget.value == direct.display.widget.value != draft
+    assert _shown(dragged) == _shown(direct) != draft
     _page_value(slider, values[0], False)
     _page_value(slider, elsewhere, True)  # released on a new value
     direct_slider.value = elsewhere
-    assert dragged.display.widget.value == direct.display.widget.value
+    assert _shown(dragged) == _shown(direct)
     dragged.close()
     direct.close()
 
 
 def test_a_colour_bar_put_back_from_its_cache_is_the_one_drawn():
     viewer = TexturedPlaneViewer(64, 48, tilt=30.0, backend="image")
-    first = viewer.display.widget.value
+    first = _shown(viewer)
     viewer.tilt.value = 50.0
     viewer.tilt.value = 30.0  # the colour bar's range comes round again
     assert viewer._bar.last == "cached"
-    assert viewer.display.widget.value == first
+    assert _shown(viewer) == first
     viewer.tilt.value = 31.0
     assert viewer._bar.last == "drawn"
+    viewer.close()
+
+
+def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_poster():
+    from teachraster.plotting.frames import encode_png
+
+    viewer = TexturedPlaneViewer(64, 48, tilt=30.0, backend="image")
+    page, sent = viewer.display.widget, []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    viewer.tilt.send = lambda content, buffers=None: None
+    poster = page.poster
+    _page_value(viewer.tilt, 40.0, False)  # a draft: a patch, the poster as it was
+    _page_value(viewer.tilt, 45.0, True)  # a key (final): a patch too, then the poster
+    w, h = page.size
+    for content, (raw,) in sent:
+        px, py, pw, ph = content["place"]  # raw RGBA, painted at once by the page
+        assert len(raw) == 4 * pw * ph and 0 < pw * ph <= w * h
+    assert page.poster != poster and page.poster_frame == sent[-1][0]["n"]
+    assert page.poster == encode_png(page._last)  # a re-opened view shows the final picture
     viewer.close()

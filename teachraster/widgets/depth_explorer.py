@@ -17,9 +17,12 @@ from ..pipeline.visibility.depth import depth_resolution, fights
 from ..plotting import COLORS
 from ..plotting.blitting import MOVING, LayeredBlit
 from .common import close_tree, labelled, style_context, title_html
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider
+from .live_slider import LiveSlider, slider_display
+
+#: The picture's alternative text in the page
+ALT = "the smallest visible depth difference against view distance"
 
 #: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
 FORMATS = ("unorm16", "unorm24", "float32")
@@ -115,7 +118,13 @@ class DepthPrecisionExplorer:
             self.fig.canvas.draw()  # the constrained layout, once: the blit keeps it
             self.fig.set_layout_engine("none")
             self._blit = self._edit_blit()
-            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw_figure)
+            self.display = slider_display(
+                self.fig,
+                self.backend,
+                draw=self._draw_figure,
+                drafting=lambda: self.near.dragging,
+                alt=ALT,
+            )
         self.info = widgets.HTML(self._info_html())
         for control in (self.format, self.near, self.reverse):
             control.observe(lambda change: self.update(), "value")

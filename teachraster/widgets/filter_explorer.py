@@ -14,11 +14,14 @@ from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, style_context, title_html
-from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider
+from .live_slider import LiveSlider, slider_display
 from .sprites import ColourBarSprite, text_boxes
 from .textured import CORNER_UV, TRIANGLES, plane_clip
+
+#: The picture's alternative text in the page
+ALT = "the filtered texture, its mip levels and its error"
 
 #: Tilts whose footprint average is kept (0.5 MiB each at 160 x 120).
 TRUTH_CACHE = 32
@@ -127,7 +130,9 @@ class FilterExplorer:
             self._blit = self._edit_blit()
             error = self.panels["error"]
             self._bar = ColourBarSprite(self.fig, lambda: error.image, error.colorbar)
-            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
+            self.display = slider_display(
+                self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
+            )
         self.filter.observe(lambda change: self.update(), "value")
         self.tilt.observe(lambda change: self.update(), "value")
         self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
