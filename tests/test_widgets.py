@@ -798,3 +798,19 @@ def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_post
     assert page.poster != poster and page.poster_frame == sent[-1][0]["n"]
     assert page.poster == encode_png(page._last)  # a re-opened view shows the final picture
     viewer.close()
+
+
+def test_filter_truths_computed_ahead_are_the_truths_at_those_tilts():
+    from teachraster.widgets import FilterExplorer
+
+    ex = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
+    ex._truths_ahead()  # one step up, then (next call) one step down
+    ex._truths_ahead()
+    assert {79.0, 81.0} <= set(ex._truths)
+    ahead = ex._truths[81.0]
+    ex.tilt.value = 81.0  # an arrow key: the truth at hand
+    assert ex.truth is ahead
+    direct = FilterExplorer(48, 36, tilt=81.0, samples=3, backend="image")
+    np.testing.assert_array_equal(ahead, direct.truth)
+    ex.close()
+    direct.close()
