@@ -814,3 +814,22 @@ def test_filter_truths_computed_ahead_are_the_truths_at_those_tilts():
     np.testing.assert_array_equal(ahead, direct.truth)
     ex.close()
     direct.close()
+
+
+def test_depth_explorer_drafts_end_on_the_picture_set_from_code():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    dragged, direct = (DepthPrecisionExplorer(backend="image") for _ in range(2))
+    for w in (dragged, direct):
+        w.near.send = lambda content, buffers=None: None
+    for v in (0.5, 1.0, 3.0):
+        _page_value(dragged.near, v, False)
+    _page_value(dragged.near, 3.0, True)
+    direct.near.value = 3.0
+    assert _shown(dragged) == _shown(direct)
+    assert dragged.now.get_text() == direct.curve.get_label() == "now: unorm24, near 3"
+    for w in (dragged, direct):  # a new format lays the legend out again, the same way
+        w.reverse.value, w.format.value = True, "float32"
+    assert _shown(dragged) == _shown(direct)
+    dragged.close()
+    direct.close()

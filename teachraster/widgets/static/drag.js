@@ -44,6 +44,7 @@ function render({ model, el }) {
   // the number of the frame on show, and the queue that paints frames in order
   let shown = model.get("poster_frame");
   let painting = Promise.resolve();
+  let missed = false; // a patch came for a frame this view does not show
   function sizePicture() {
     const [w, h] = model.get("size");
     if (picture.width !== w || picture.height !== h) [picture.width, picture.height] = [w, h];
@@ -169,6 +170,7 @@ function render({ model, el }) {
       pctx.drawImage(bitmap, 0, 0);
       bitmap.close();
       showPng(bytes); // the <img> under the canvas holds the last whole frame
+      missed = false;
     } else if (msg.n - 1 === shown && bytes.byteLength) {
       // raw RGBA: painted at once, no decode (a PNG's waits for a thread on a busy machine)
       const [x, y, w, h] = msg.place;
@@ -185,6 +187,7 @@ function render({ model, el }) {
           kernel: msg.timing || null });
       }
     } else if (msg.n - 1 !== shown) {
+      missed = true; // a view opened meanwhile: it waits for a whole picture (or a poster)
       return;
     }
     shown = msg.n;
@@ -202,6 +205,18 @@ function render({ model, el }) {
     if (sent) img.dataset.roundTripMs = String(Math.round(performance.now() - sent));
     for (const seq of [...s.pending.keys()]) if (seq <= msg.seq) s.pending.delete(seq);
     pump();
+  });
+  // A widget that sends its final pictures as patches too (the slider explorers) keeps
+  // each as the poster after it: a view that missed a patch catches up there.
+  model.on("change:poster", () => {
+    painting = painting.then(() => {
+      if (!missed || model.get("poster_frame") <= shown) return;
+      missed = false;
+      sizePicture();
+      pctx.clearRect(0, 0, picture.width, picture.height);
+      showPng(model.get("poster"));
+      shown = model.get("poster_frame");
+    });
   });
   const poster = model.get("poster");
   if (poster && poster.byteLength) showPng(poster);
