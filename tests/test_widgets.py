@@ -7,6 +7,7 @@ matplotlib.use("Agg")
 
 import importlib.util  # noqa: E402
 import sys  # noqa: E402
+import zlib  # noqa: E402
 from pathlib import Path  # noqa: E402
 from types import SimpleNamespace  # noqa: E402
 
@@ -792,9 +793,10 @@ def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_post
     _page_value(viewer.tilt, 40.0, False)  # a draft: a patch, the poster as it was
     _page_value(viewer.tilt, 45.0, True)  # a key (final): a patch too, then the poster
     w, h = page.size
-    for content, (raw,) in sent:
-        px, py, pw, ph = content["place"]  # raw RGBA, painted at once by the page
-        assert len(raw) == 4 * pw * ph and 0 < pw * ph <= w * h
+    for content, (packed,) in sent:
+        px, py, pw, ph = content["place"]  # RGBA (zlib), painted at once by the page
+        assert content["deflate"] and len(zlib.decompress(packed)) == 4 * pw * ph
+        assert 0 < pw * ph <= w * h
     assert page.poster != poster and page.poster_frame == sent[-1][0]["n"]
     assert page.poster == encode_png(page._last)  # a re-opened view shows the final picture
     viewer.close()

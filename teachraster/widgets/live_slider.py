@@ -124,9 +124,10 @@ class SliderDisplay:
     """A slider explorer's figure in the page: :class:`~teachraster.widgets.DragFigure`'s
     pictures (nothing to drag), with ``FigureDisplay``'s ``refresh``/``close``.
 
-    Each refresh sends only the rectangle of pixels that changed, as raw RGBA that the page
-    paints at once: an ``ipywidgets.Image`` would send a whole PNG, which the page then
-    decodes asynchronously (5-90 ms on a loaded machine, more than the kernel's draft).
+    Each refresh sends only the rectangle of pixels that changed, as RGBA (zlib level 1)
+    that the page inflates and paints at once: an ``ipywidgets.Image`` would send a whole
+    PNG, which the page then decodes asynchronously (5-90 ms on a loaded machine, more than
+    the kernel's draft).
     A final picture (``drafting()`` False: a key, a release) also becomes the poster, the
     picture a re-opened or saved view shows.
     """
@@ -135,7 +136,7 @@ class SliderDisplay:
 
     def __init__(self, fig, draw, drafting, alt: str = "") -> None:
         self.fig, self.draw, self.drafting = fig, draw, drafting
-        self.widget = DragFigure(alt=alt, patch_final=True)
+        self.widget = DragFigure(alt=alt, patch_final=True, deflate=True)
         self.draws = 0
         self.refresh()
 
