@@ -7,6 +7,7 @@ matplotlib.use("Agg")
 
 import importlib.util  # noqa: E402
 import sys  # noqa: E402
+import zlib  # noqa: E402
 from pathlib import Path  # noqa: E402
 from types import SimpleNamespace  # noqa: E402
 
@@ -731,6 +732,11 @@ def test_live_slider_marks_drafts_and_calls_back_on_release():
     assert seen[-1] == (20.0, False) and released == [12.0]
 
 
+def _shown(widget) -> bytes:
+    """The pixels a slider explorer sent the page last (its figure's Agg buffer)."""
+    return bytes(widget.display.widget._last)
+
+
 @pytest.mark.parametrize("name", ["viewer", "filter", "plane"])
 def test_a_drag_ends_on_the_full_picture(name):
     from teachraster.widgets import FilterExplorer, PlaneExplorer
@@ -752,25 +758,80 @@ def test_a_drag_ends_on_the_full_picture(name):
     for v in values:
         _page_value(slider, v, False)
     assert slider.dragging is False  # only while the observers run
-    draft = dragged.display.widget.value
+    draft = _shown(dragged)
     _page_value(slider, values[-1], True)  # released on the last draft
     direct_slider.value = values[-1]
-    assert dragged.display.widget.value == direct.display.widget.value != draft
+    assert _shown(dragged) == _shown(direct) != draft
     _page_value(slider, values[0], False)
     _page_value(slider, elsewhere, True)  # released on a new value
     direct_slider.value = elsewhere
-    assert dragged.display.widget.value == direct.display.widget.value
+    assert _shown(dragged) == _shown(direct)
     dragged.close()
     direct.close()
 
 
 def test_a_colour_bar_put_back_from_its_cache_is_the_one_drawn():
     viewer = TexturedPlaneViewer(64, 48, tilt=30.0, backend="image")
-    first = viewer.display.widget.value
+    first = _shown(viewer)
     viewer.tilt.value = 50.0
     viewer.tilt.value = 30.0  # the colour bar's range comes round again
     assert viewer._bar.last == "cached"
-    assert viewer.display.widget.value == first
+    assert _shown(viewer) == first
     viewer.tilt.value = 31.0
     assert viewer._bar.last == "drawn"
     viewer.close()
+
+
+def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_poster():
+    from teachraster.plotting.frames import encode_png
+
+    viewer = TexturedPlaneViewer(64, 48, tilt=30.0, backend="image")
+    page, sent = viewer.display.widget, []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    viewer.tilt.send = lambda content, buffers=None: None
+    poster = page.poster
+    _page_value(viewer.tilt, 40.0, False)  # a draft: a patch, the poster as it was
+    _page_value(viewer.tilt, 45.0, True)  # a key (final): a patch too, then the poster
+    w, h = page.size
+    for content, (packed,) in sent:
+        px, py, pw, ph = content["place"]  # RGBA (zlib), painted at once by the page
+        assert content["deflate"] and len(zlib.decompress(packed)) == 4 * pw * ph
+        assert 0 < pw * ph <= w * h
+    assert page.poster != poster and page.poster_frame == sent[-1][0]["n"]
+    assert page.poster == encode_png(page._last)  # a re-opened view shows the final picture
+    viewer.close()
+
+
+def test_filter_truths_computed_ahead_are_the_truths_at_those_tilts():
+    from teachraster.widgets import FilterExplorer
+
+    ex = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
+    ex._truths_ahead()  # one step up, then (next call) one step down
+    ex._truths_ahead()
+    assert {79.0, 81.0} <= set(ex._truths)
+    ahead = ex._truths[81.0]
+    ex.tilt.value = 81.0  # an arrow key: the truth at hand
+    assert ex.truth is ahead
+    direct = FilterExplorer(48, 36, tilt=81.0, samples=3, backend="image")
+    np.testing.assert_array_equal(ahead, direct.truth)
+    ex.close()
+    direct.close()
+
+
+def test_depth_explorer_drafts_end_on_the_picture_set_from_code():
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    dragged, direct = (DepthPrecisionExplorer(backend="image") for _ in range(2))
+    for w in (dragged, direct):
+        w.near.send = lambda content, buffers=None: None
+    for v in (0.5, 1.0, 3.0):
+        _page_value(dragged.near, v, False)
+    _page_value(dragged.near, 3.0, True)
+    direct.near.value = 3.0
+    assert _shown(dragged) == _shown(direct)
+    assert dragged.now.get_text() == direct.curve.get_label() == "now: unorm24, near 3"
+    for w in (dragged, direct):  # a new format lays the legend out again, the same way
+        w.reverse.value, w.format.value = True, "float32"
+    assert _shown(dragged) == _shown(direct)
+    dragged.close()
+    direct.close()

@@ -15,11 +15,14 @@ import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, fights
 from ..plotting import COLORS
-from ..plotting.blitting import MOVING, LayeredBlit
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, labelled, style_context, title_html
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider
+from .live_slider import LiveSlider, slider_display
+
+#: The picture's alternative text in the page
+ALT = "the smallest visible depth difference against view distance"
 
 #: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
 FORMATS = ("unorm16", "unorm24", "float32")
@@ -111,11 +114,20 @@ class DepthPrecisionExplorer:
             ax.grid(True, which="major", alpha=0.3)
             ax.legend(loc="upper left")
             self.ax = ax
+            self.now = None  # the "now" entry's text, drawn alone (see _now_text)
             self._draw()
             self.fig.canvas.draw()  # the constrained layout, once: the blit keeps it
             self.fig.set_layout_engine("none")
+            self.now = self._now_text()
+            self._draw()
             self._blit = self._edit_blit()
-            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw_figure)
+            self.display = slider_display(
+                self.fig,
+                self.backend,
+                draw=self._draw_figure,
+                drafting=lambda: self.near.dragging,
+                alt=ALT,
+            )
         self.info = widgets.HTML(self._info_html())
         for control in (self.format, self.near, self.reverse):
             control.observe(lambda change: self.update(), "value")
@@ -150,14 +162,40 @@ class DepthPrecisionExplorer:
         self.marker.set_xdata([x, x])
         legend = self.ax.get_legend()
         if legend is None:
-            self.ax.legend(loc="upper left")
-        else:  # the same legend, its "now" entry renamed (a new one would be new background)
-            legend.get_texts()[1].set_text(self.curve.get_label())
+            legend = self.ax.legend(loc="upper left")
+        # The legend keeps room for the widest "now" label of this format (every near value
+        # has as many digits at most), its own text transparent: a new value then draws the
+        # label alone (_now_text), not the legend's boxes again (about 12 ms a value).
+        entry = legend.get_texts()[1]
+        if entry.get_text() != self._widest():
+            entry.set_text(self._widest())  # a new format: the legend is laid out again
+            if getattr(self, "_blit", None) is not None:
+                self._blit.invalidate()
+        if self.now is not None:
+            entry.set_color((0.0, 0.0, 0.0, 0.0))
+            self.now.set_text(self.curve.get_label())
+
+    def _widest(self) -> str:
+        """The "now" label of this format with the widest near value (same-width digits)."""
+        rz = ", reverse-Z" if self.reverse.value else ""
+        return f"now: {self.format.value}, near 0.0000{rz}"
+
+    def _now_text(self):
+        """A text over the legend's "now" entry, where the legend put that entry's text."""
+        entry = self.ax.get_legend().get_texts()[1]
+        x, y = entry.get_transform().transform(entry.get_position())  # pixels, baseline
+        dpi = self.fig.dpi
+        return self.fig.text(x / dpi, y / dpi, self.curve.get_label(), ha="left",
+                             va="baseline", color=entry.get_color(),
+                             fontproperties=entry.get_fontproperties(),
+                             transform=self.fig.dpi_scale_trans, zorder=6)  # fmt: skip
 
     def _edit_blit(self) -> LayeredBlit:
-        """A new value changes the curve, the z-fighting mark and the legend; the axes, the
-        reference curve and the gap line stay in a cached background."""
-        return LayeredBlit(self.fig, [(MOVING, [self.curve, self.marker, self.ax.get_legend()])])
+        """A new value changes the curve, the z-fighting mark and the "now" label; the axes,
+        the reference curve and the gap line stay in a cached background, the legend in a
+        still layer over the curve."""
+        return LayeredBlit(self.fig, [(MOVING, [self.curve, self.marker]),
+                                      (STILL, [self.ax.get_legend()]), (MOVING, [self.now])])  # fmt: skip
 
     def _draw_figure(self) -> None:
         self._blit = same_or_new(self._blit, self._edit_blit())

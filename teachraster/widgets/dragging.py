@@ -15,9 +15,11 @@ keep the pixel grid, tick labels, centres and legend in a cached background
 from __future__ import annotations
 
 import time
+import zlib
 from pathlib import Path
 
 import anywidget
+import numpy as np
 import traitlets
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
@@ -79,13 +81,22 @@ class DragFigure(anywidget.AnyWidget):
     #: the frame number of ``poster`` (the patches that follow it are numbered on)
     poster_frame = traitlets.Int(0).tag(sync=True)
 
-    def __init__(self, on_move=None, **kwargs) -> None:
+    def __init__(self, on_move=None, *, patch_final: bool = False, deflate: bool = False,
+                 **kwargs) -> None:  # fmt: skip
         super().__init__(**kwargs)
         self.on_move = on_move
+        #: also a final picture goes as a patch (painted at once), the poster following it
+        #: (the slider explorers: a key press is final and must show as soon as a draft)
+        self.patch_final = patch_final
+        #: patches zlib-compressed (level 1: 1-3 ms for 0.2-1.4 MB of figure, 20-40 times
+        #: smaller), inflated by the page at once (DecompressionStream, no image decoder):
+        #: a whole plot's changed pixels are megabytes a frame for the server and page
+        self.deflate = deflate
         self.moves = 0
         self._seq = 0
         self._t0 = 0.0
         self._last = None  # the last picture sent: patches are computed against it
+        self._posted = None  # the picture of the poster (patch_final: skip an unchanged one)
         self._frame = 0
         self.on_msg(self._on_page_message)
 
@@ -104,25 +115,15 @@ class DragFigure(anywidget.AnyWidget):
         During a drag (``final`` False) only the rectangle of pixels that changed since the
         last picture sent goes to the page (a move changes the triangle's part of the
         figure), as raw RGBA bytes (``place`` = ``[x, y, width, height]``). ``final``: the whole
-        picture, also kept as the poster (what a re-opened view shows).
+        picture, also kept as the poster (what a re-opened view shows); with ``patch_final``
+        a patch too, the poster following it.
         """
         t_show = time.perf_counter()
         rgba = frame_rgba(fig)
         h, w = rgba.shape[:2]
         last, self._last = self._last, rgba
         self._frame += 1
-        box = None if final or last is None or last.shape != rgba.shape else changed_box(
-            last, rgba)  # fmt: skip
-        if box is None and not final and last is not None and last.shape == rgba.shape:
-            place, png = [0, 0, 0, 0], b""  # nothing changed: an empty patch
-        elif box is None:
-            place, png = None, encode_png(rgba)
-        else:
-            # A patch travels as raw RGBA pixels: the page paints them at once
-            # (putImageData), where a PNG waits for an asynchronous decode that took 5-90 ms
-            # on a loaded machine; a few hundred kB over the loopback cost less.
-            r0, r1, c0, c1 = box
-            place, png = [c0, r0, c1 - c0, r1 - r0], rgba[r0:r1, c0:c1].tobytes()
+        place, png = self._patch(last, rgba, final)
         t_encoded = time.perf_counter()
         bbox = ax.get_window_extent()
         (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
@@ -137,6 +138,7 @@ class DragFigure(anywidget.AnyWidget):
                 self.size, self.transform, self.handles = [w, h], transform, moved
                 if place is None:
                     self.poster, self.poster_frame = png, self._frame
+                    self._posted = rgba
         # kernel_ms: from the position's arrival to this answer (for benchmarks)
         now = time.perf_counter()
         kernel_ms = (now - self._t0) * 1e3 if self._t0 else 0.0
@@ -147,7 +149,36 @@ class DragFigure(anywidget.AnyWidget):
         # a patch applies to the picture of frame n - 1 (a view that missed it waits for
         # the next whole picture)
         self.send({"type": "frame", "seq": self._seq, "handles": moved, "n": self._frame,
-                   "place": place, "kernel_ms": kernel_ms, "timing": timing}, [png])  # fmt: skip
+                   "place": place, "kernel_ms": kernel_ms, "timing": timing,
+                   "deflate": self.deflate and bool(place and png)}, [png])  # fmt: skip
+        if final and place is not None and self.patch_final:
+            self._post(rgba)
+
+    def _patch(self, last, rgba, final: bool) -> tuple:
+        """``(place, bytes)`` of the picture ``rgba`` for the page that shows ``last``.
+
+        A patch travels as raw RGBA pixels: the page paints them at once (putImageData),
+        where a PNG waits for an asynchronous decode that took 5-90 ms on a loaded machine;
+        a few hundred kB over the loopback cost less. ``place`` is ``[x, y, width, height]``
+        (all 0 with empty bytes: nothing changed), None for a whole PNG.
+        """
+        if last is None or last.shape != rgba.shape or (final and not self.patch_final):
+            return None, encode_png(rgba)
+        box = changed_box(last, rgba)
+        if box is None:
+            return [0, 0, 0, 0], b""
+        r0, r1, c0, c1 = box
+        raw = rgba[r0:r1, c0:c1].tobytes()
+        return [c0, r0, c1 - c0, r1 - r0], zlib.compress(raw, 1) if self.deflate else raw
+
+    def _post(self, rgba) -> None:
+        """Keep ``rgba`` (sent as a patch) as the poster, a PNG (what a re-opened view shows)."""
+        if self._posted is not None and np.array_equal(self._posted, rgba):
+            self.poster_frame = self._frame  # the same picture: only its number moves on
+        else:
+            with self.hold_sync():
+                self.poster, self.poster_frame = encode_png(rgba), self._frame
+        self._posted = rgba
 
 
 def same_or_new(old: LayeredBlit, new: LayeredBlit) -> LayeredBlit:

@@ -13,12 +13,15 @@ from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
-from .common import close_tree, style_context, title_html
-from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .common import close_tree, later, style_context, title_html
+from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider
+from .live_slider import LiveSlider, slider_display
 from .sprites import ColourBarSprite, text_boxes
 from .textured import CORNER_UV, TRIANGLES, plane_clip
+
+#: The picture's alternative text in the page
+ALT = "the filtered texture, its mip levels and its error"
 
 #: Tilts whose footprint average is kept (0.5 MiB each at 160 x 120).
 TRUTH_CACHE = 32
@@ -127,7 +130,9 @@ class FilterExplorer:
             self._blit = self._edit_blit()
             error = self.panels["error"]
             self._bar = ColourBarSprite(self.fig, lambda: error.image, error.colorbar)
-            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
+            self.display = slider_display(
+                self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
+            )
         self.filter.observe(lambda change: self.update(), "value")
         self.tilt.observe(lambda change: self.update(), "value")
         self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
@@ -174,10 +179,31 @@ class FilterExplorer:
         if truth is None:
             truth = footprint_average(clip, uv, self.texture, triangle_id, samples=self.samples)
             truth.flags.writeable = False  # shared by every filter shown at this tilt
-        self._truths[key] = truth  # the most recent last
+        self._keep_truth(key, truth)
+        return truth
+
+    def _keep_truth(self, tilt: float, truth: np.ndarray) -> None:
+        self._truths[tilt] = truth  # the most recent last
         while len(self._truths) > TRUTH_CACHE:
             self._truths.pop(next(iter(self._truths)))
-        return truth
+
+    def _truths_ahead(self) -> None:
+        """While the kernel idles, the truth one slider step either side of the tilt shown,
+        one per call (a value arriving meanwhile waits for one truth at most): an arrow key
+        then finds its truth at hand, as a drag back over seen tilts does."""
+        t, step = self.tilt.value, self.tilt.step
+        for ahead in (t + step, t - step):
+            if not self.tilt.min <= ahead <= self.tilt.max or ahead in self._truths:
+                continue
+            clip = plane_clip(ahead, self.camera, self.width / self.height)
+            uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
+            frame = render(clip, self.width, self.height, attrs=uv)
+            truth = footprint_average(clip, uv, self.texture, frame.triangle_id,
+                                      samples=self.samples)  # fmt: skip
+            truth.flags.writeable = False
+            self._keep_truth(ahead, truth)
+            later(self._truths_ahead, idle_only=True)  # the other side, next time
+            return
 
     def _edit_blit(self) -> LayeredBlit:
         """A new tilt or filter changes the three images and the error's marked maximum;
@@ -214,6 +240,8 @@ class FilterExplorer:
             error.update(self.image, self.truth)
         self._set_info()
         self.display.refresh()
+        if not self._drafting():
+            later(self._truths_ahead, idle_only=True)
 
     def _set_info(self) -> None:
         reads = self._reads()

@@ -26,6 +26,9 @@ from pathlib import Path
 import anywidget
 import traitlets
 
+from .display import FigureDisplay
+from .dragging import DragFigure
+
 
 def slider_js() -> str:
     """The page-side module (ESM), read from the package (``static/slider.js``)."""
@@ -115,3 +118,41 @@ class LiveSlider(anywidget.AnyWidget):
             # how long the kernel took, for the page (benchmarks read it there)
             ms = round((time.perf_counter() - start) * 1e3, 2)
             self.send({"type": "done", "seq": int(content.get("seq", 0)), "kernel_ms": ms})
+
+
+class SliderDisplay:
+    """A slider explorer's figure in the page: :class:`~teachraster.widgets.DragFigure`'s
+    pictures (nothing to drag), with ``FigureDisplay``'s ``refresh``/``close``.
+
+    Each refresh sends only the rectangle of pixels that changed, as RGBA (zlib level 1)
+    that the page inflates and paints at once: an ``ipywidgets.Image`` would send a whole
+    PNG, which the page then decodes asynchronously (5-90 ms on a loaded machine, more than
+    the kernel's draft).
+    A final picture (``drafting()`` False: a key, a release) also becomes the poster, the
+    picture a re-opened or saved view shows.
+    """
+
+    mode = "page"
+
+    def __init__(self, fig, draw, drafting, alt: str = "") -> None:
+        self.fig, self.draw, self.drafting = fig, draw, drafting
+        self.widget = DragFigure(alt=alt, patch_final=True, deflate=True)
+        self.draws = 0
+        self.refresh()
+
+    def refresh(self) -> None:
+        """Draw the figure and send what changed to the page."""
+        self.draws += 1
+        (self.fig.canvas.draw if self.draw is None else self.draw)()
+        self.widget.show(self.fig, self.fig.axes[0], [], final=not self.drafting())
+
+    def close(self) -> None:
+        self.widget.close()
+
+
+def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: str = ""):
+    """The display of a slider explorer's figure: a :class:`SliderDisplay`, or under ipympl
+    (``mode`` "ipympl") the canvas itself (``FigureDisplay``)."""
+    if mode == "ipympl":
+        return FigureDisplay(fig, mode, draw=draw)
+    return SliderDisplay(fig, draw, drafting, alt)

@@ -23,10 +23,13 @@ from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider
+from .live_slider import LiveSlider, slider_display
 from .sprites import ColourBarSprite, text_boxes
+
+#: The picture's alternative text in the page
+ALT = "the attribute plane over the pixel grid"
 
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
@@ -169,7 +172,9 @@ class PlaneExplorer:
             image = self.image
             self._bar = None if image.colorbar is None else ColourBarSprite(
                 self.fig, lambda: image.image, image.colorbar)  # fmt: skip
-            self.display = FigureDisplay(self.fig, self.backend, draw=self._draw)
+            self.display = slider_display(
+                self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
+            )
         self.info = widgets.HTML(self._info_html())
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",

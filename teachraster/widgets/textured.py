@@ -14,10 +14,13 @@ from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
-from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider
+from .live_slider import LiveSlider, slider_display
 from .sprites import ColourBarSprite, text_boxes
+
+#: The picture's alternative text in the page
+ALT = "affine and perspective-correct texture mapping and their texel error"
 
 #: Corners of the square in its own plane, (x, y): y = 0 is the hinge (the near edge), y = 1
 #: the edge that tilts away; and their texture coordinates (u right, v down the texture, so
@@ -158,7 +161,9 @@ class TexturedPlaneViewer:
             self._blit = self._edit_blit()
             hm = self.view.heatmap
             self._bar = ColourBarSprite(fig, lambda: hm.image, hm.colorbar)
-            self.display = FigureDisplay(fig, self.backend, draw=self._draw)
+            self.display = slider_display(
+                fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
+            )
         self.fig = fig
 
         # in the page, coalesced: the kernel renders the latest angle, never a queue

@@ -20,6 +20,13 @@ const CSS = `
 .tr-drag-notice { color: #b00020; font-size: 13px; }
 `;
 
+// A zlib-compressed patch (the slider explorers: megabytes of changed pixels a frame
+// otherwise), inflated natively: no image decoder to wait for.
+async function inflate(bytes) {
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+
 function render({ model, el }) {
   if (!document.getElementById("tr-drag-css")) {
     const style = document.createElement("style");
@@ -44,6 +51,7 @@ function render({ model, el }) {
   // the number of the frame on show, and the queue that paints frames in order
   let shown = model.get("poster_frame");
   let painting = Promise.resolve();
+  let missed = false; // a patch came for a frame this view does not show
   function sizePicture() {
     const [w, h] = model.get("size");
     if (picture.width !== w || picture.height !== h) [picture.width, picture.height] = [w, h];
@@ -169,11 +177,13 @@ function render({ model, el }) {
       pctx.drawImage(bitmap, 0, 0);
       bitmap.close();
       showPng(bytes); // the <img> under the canvas holds the last whole frame
+      missed = false;
     } else if (msg.n - 1 === shown && bytes.byteLength) {
       // raw RGBA: painted at once, no decode (a PNG's waits for a thread on a busy machine)
       const [x, y, w, h] = msg.place;
-      const buf = bytes instanceof ArrayBuffer ? bytes : bytes.buffer;
-      const data = new Uint8ClampedArray(buf, bytes.byteOffset || 0, 4 * w * h);
+      const raw = msg.deflate ? await inflate(bytes) : bytes;
+      const buf = raw instanceof ArrayBuffer ? raw : raw.buffer;
+      const data = new Uint8ClampedArray(buf, raw.byteOffset || 0, 4 * w * h);
       const decoded = performance.now();
       pctx.putImageData(new ImageData(data, w, h), x, y);
       if (first && first.seq === msg.seq && first.decoded === undefined) {
@@ -185,6 +195,7 @@ function render({ model, el }) {
           kernel: msg.timing || null });
       }
     } else if (msg.n - 1 !== shown) {
+      missed = true; // a view opened meanwhile: it waits for a whole picture (or a poster)
       return;
     }
     shown = msg.n;
@@ -202,6 +213,18 @@ function render({ model, el }) {
     if (sent) img.dataset.roundTripMs = String(Math.round(performance.now() - sent));
     for (const seq of [...s.pending.keys()]) if (seq <= msg.seq) s.pending.delete(seq);
     pump();
+  });
+  // A widget that sends its final pictures as patches too (the slider explorers) keeps
+  // each as the poster after it: a view that missed a patch catches up there.
+  model.on("change:poster", () => {
+    painting = painting.then(() => {
+      if (!missed || model.get("poster_frame") <= shown) return;
+      missed = false;
+      sizePicture();
+      pctx.clearRect(0, 0, picture.width, picture.height);
+      showPng(model.get("poster"));
+      shown = model.get("poster_frame");
+    });
   });
   const poster = model.get("poster");
   if (poster && poster.byteLength) showPng(poster);
