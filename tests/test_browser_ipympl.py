@@ -14,12 +14,9 @@ Playwright, Chromium or ipympl is missing (CI makes the browser required).
 
 from __future__ import annotations
 
-import json
-
-import nbformat
 import pytest
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
-from test_browser_saved import _api
+from test_browser_saved import _put_notebook
 
 pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
 
@@ -44,12 +41,7 @@ def test_ipympl_figures_fit_the_column(lab, page):  # noqa: F811
     _shut_down_kernels(lab)
     page.goto(f"{lab}/lab?reset")
     page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
-    nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS]
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}  # fmt: skip
-    body = json.dumps({"type": "notebook", "format": "json", "content": nb})
-    assert _api(page, "PUT", f"/api/contents/{NAME}", body) in (200, 201)
+    _put_notebook(page, CELLS, NAME)
     page.goto(f"{lab}/lab/tree/{NAME}?reset")
     page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)

@@ -48,13 +48,14 @@ def _api(tab, method: str, path: str, body: str | None = None) -> int:
     return tab.evaluate(API, [method, path, body])
 
 
-def _put_notebook(tab) -> None:
+def _put_notebook(tab, cells=CELLS, name=NAME) -> None:
+    """Write a notebook of ``cells`` (code) to the lab's folder as ``name``."""
     nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS]
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                  "language": "python"}  # fmt: skip
     body = json.dumps({"type": "notebook", "format": "json", "content": nb})
-    assert _api(tab, "PUT", f"/api/contents/{NAME}", body) in (200, 201)
+    assert _api(tab, "PUT", f"/api/contents/{name}", body) in (200, 201)
 
 
 def _stop_kernels(tab, base: str) -> None:
