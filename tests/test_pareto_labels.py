@@ -1,0 +1,34 @@
+"""The Pareto chart keeps its labels apart (lesson 06's depth chart had two on top of each other)."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from teachraster.plotting.pareto import LABEL_SPOTS, plot_pareto, spread_labels  # noqa: E402
+
+
+def test_labels_of_close_points_take_different_spots():
+    rows = [
+        {"variant": "linear unorm16", "bits": 16, "error": 2900.0},
+        {"variant": "window unorm16", "bits": 16, "error": 2500.0},
+        {"variant": "window float64", "bits": 53, "error": 0.0},
+    ]
+    fig, ax = plt.subplots(figsize=(9, 5))
+    art = plot_pareto(ax, rows, "bits", logx=False)
+    a, b = (art.labels[v].get_position() for v in ("linear unorm16", "window unorm16"))
+    assert a != b  # the second label moved to another spot beside its point
+    # a linear cost axis ends near the data (it ran to 3x the largest cost)
+    assert ax.get_xlim()[1] < 53 * 1.7
+    plt.close(fig)
+
+
+def test_a_lone_label_keeps_the_first_spot():
+    fig, ax = plt.subplots()
+    ax.plot([1.0], [1.0])
+    label = ax.annotate("alone", (1.0, 1.0), textcoords="offset points", xytext=(0, 0))
+    spread_labels(ax, [label])
+    sx, sy = LABEL_SPOTS[0]
+    x, y = label.get_position()
+    assert x * sx > 0 and y * sy > 0  # up and to the right
+    plt.close(fig)
