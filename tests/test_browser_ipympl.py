@@ -15,8 +15,8 @@ Playwright, Chromium or ipympl is missing (CI makes the browser required).
 from __future__ import annotations
 
 import pytest
-from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
-from test_browser_saved import _put_notebook
+from test_browser import WHY, lab, page  # noqa: F401
+from test_browser_saved import _run_all
 
 pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
 
@@ -38,16 +38,7 @@ CELLS = [
 
 def test_ipympl_figures_fit_the_column(lab, page):  # noqa: F811
     pytest.importorskip("ipympl")
-    _shut_down_kernels(lab)
-    page.goto(f"{lab}/lab?reset")
-    page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
-    _put_notebook(page, CELLS, NAME)
-    page.goto(f"{lab}/lab/tree/{NAME}?reset")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
-    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
-    assert page.locator(".jp-FileBrowser").first.is_visible()  # the file browser is open
-    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
-    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+    _run_all(lab, page, CELLS, NAME)
     # the lesson figure, the editor's two and the player's comparison
     canvases = page.locator(".jupyter-matplotlib-canvas-div")
     page.wait_for_function(

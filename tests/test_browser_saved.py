@@ -58,6 +58,20 @@ def _put_notebook(tab, cells=CELLS, name=NAME) -> None:
     assert _api(tab, "PUT", f"/api/contents/{name}", body) in (200, 201)
 
 
+def _run_all(base: str, tab, cells, name) -> None:
+    """A fresh kernel, a notebook of ``cells`` written as ``name``, opened, every cell run."""
+    _shut_down_kernels(base)
+    tab.goto(f"{base}/lab?reset")
+    tab.wait_for_selector("#jp-main-statusbar", timeout=90_000)
+    _put_notebook(tab, cells, name)
+    tab.goto(f"{base}/lab/tree/{name}?reset")
+    tab.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    assert tab.locator(".jp-FileBrowser").first.is_visible()  # the file browser is open
+    tab.click(".lm-MenuBar-itemLabel:text-is('Run')")
+    tab.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+
+
 def _stop_kernels(tab, base: str) -> None:
     with urllib.request.urlopen(f"{base}/api/kernels", timeout=10) as r:
         for k in json.load(r):

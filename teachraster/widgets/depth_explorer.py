@@ -19,7 +19,7 @@ from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, labelled, style_context, title_html
 from .display import new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider, slider_display
+from .live_slider import LiveSlider, info_line, slider_display
 
 #: The picture's alternative text in the page
 ALT = "the smallest visible depth difference against view distance"
@@ -128,16 +128,20 @@ class DepthPrecisionExplorer:
                 drafting=lambda: self.near.dragging,
                 alt=ALT,
             )
-        self.info = widgets.HTML(self._info_html())
-        for control in (self.format, self.near, self.reverse):
-            control.observe(lambda change: self.update(), "value")
+        self.info, info_widgets = info_line(self.display)
+        self.info.value = self._info_html()
+        self.near.observe(lambda change: self.update(), "value")
+        for control in (self.format, self.reverse):  # the pictures drawn ahead go stale
+            control.observe(lambda change: self.update(restart=True), "value")
         title = title_html(
             "Depth precision: bits, near plane, reverse-Z",
             "Where the curve rises above the dashed line, two surfaces δ apart store the same "
             "depth and z-fight. Move the near plane out, add bits, or reverse Z with float32.",
         )
         controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse])
-        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+        self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
+        if self.backend != "ipympl":
+            self._ahead = self.display.ahead(self.near, self)  # drawn while the kernel idles
 
     @property
     def mapping(self) -> str:
@@ -146,10 +150,14 @@ class DepthPrecisionExplorer:
 
     def _label(self) -> str:
         rz = ", reverse-Z" if self.reverse.value else ""
-        return f"{self.format.value}, near {self.near.value:.3g}{rz}"
+        return f"{self.format.value}, near {self.z_near:.3g}{rz}"
 
     def _compute(self) -> None:
-        near = float(self.near.value)
+        self._compute_at(self.near.value)
+
+    def _compute_at(self, near: float) -> None:
+        near = float(near)
+        self.z_near = near  # the near plane of the curve on show
         self.z = np.geomspace(near * 1.001, self.far, 400)
         fmt, mapping = self.format.value, self.mapping
         self.resolution = depth_resolution(self.z, near, self.far, fmt, mapping=mapping)
@@ -201,12 +209,18 @@ class DepthPrecisionExplorer:
         self._blit = same_or_new(self._blit, self._edit_blit())
         self._blit.draw()
 
-    def update(self) -> None:
-        """Recompute from the controls and redraw the same artists."""
+    def _set_artists(self) -> None:
+        self._draw()
+
+    def update(self, *, restart: bool = False) -> None:
+        """Recompute from the controls and redraw the same artists (``restart``: another
+        control than the near plane changed, the pictures drawn ahead are stale)."""
         self._compute()
         self._draw()
         self.info.value = self._info_html()
         self.display.refresh()
+        if restart and getattr(self, "_ahead", None) is not None:
+            self._ahead.restart()
 
     def _info_html(self) -> str:
         res = dict(zip(("1", "10", "100"), np.interp([1.0, 10.0, 100.0], self.z, self.resolution)))

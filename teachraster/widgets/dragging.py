@@ -70,6 +70,14 @@ class DragFigure(anywidget.AnyWidget):
     ``px = x0 + sx * x`` and ``py = y0 + sy * y``. ``poster`` is the picture a new view
     shows first; later pictures arrive as messages. ``on_move(i, x, y, final)`` is called
     for each position the page sends and must re-render (then :meth:`show` the figure).
+
+    With ``reference`` (the slider explorers) every picture after the first goes as a patch
+    against one *reference* picture the page keeps (frame ``ref_frame``): the page puts back
+    the reference where the last patch was, then paints the new one. A picture then never
+    depends on which came before it, so the page may also show pictures drawn ahead
+    (:meth:`send_ahead`, :class:`~teachraster.widgets.ahead.FramesAhead`) in any order,
+    without asking the kernel. ``caption`` is an HTML line the page shows above the picture
+    (each picture drawn ahead brings its own).
     """
 
     _esm = drag_js()
@@ -80,14 +88,19 @@ class DragFigure(anywidget.AnyWidget):
     alt = traitlets.Unicode("").tag(sync=True)
     #: the frame number of ``poster`` (the patches that follow it are numbered on)
     poster_frame = traitlets.Int(0).tag(sync=True)
+    #: reference mode: the frame number of the reference picture (0: none yet)
+    ref_frame = traitlets.Int(0).tag(sync=True)
+    #: what the page's slider that drives this figure names it by (pictures drawn ahead)
+    key = traitlets.Unicode("").tag(sync=True)
+    caption = traitlets.Unicode("").tag(sync=True)
 
-    def __init__(self, on_move=None, *, patch_final: bool = False, deflate: bool = False,
+    def __init__(self, on_move=None, *, reference: bool = False, deflate: bool = False,
                  **kwargs) -> None:  # fmt: skip
         super().__init__(**kwargs)
         self.on_move = on_move
-        #: also a final picture goes as a patch (painted at once), the poster following it
-        #: (the slider explorers: a key press is final and must show as soon as a draft)
-        self.patch_final = patch_final
+        #: patches against one reference picture, finals too (see the class); the poster
+        #: follows each final picture, for a view opened later
+        self.reference = reference
         #: patches zlib-compressed (level 1: 1-3 ms for 0.2-1.4 MB of figure, 20-40 times
         #: smaller), inflated by the page at once (DecompressionStream, no image decoder):
         #: a whole plot's changed pixels are megabytes a frame for the server and page
@@ -96,12 +109,24 @@ class DragFigure(anywidget.AnyWidget):
         self._seq = 0
         self._t0 = 0.0
         self._last = None  # the last picture sent: patches are computed against it
-        self._posted = None  # the picture of the poster (patch_final: skip an unchanged one)
+        self._ref = None  # reference mode: the picture patches are computed against
+        self._posted = None  # the picture of the poster (reference: skip an unchanged one)
         self._frame = 0
+        #: called when the page asks for a new reference (a view opened later): pictures
+        #: drawn ahead against the old one are then stale
+        self.on_reference = None
+        #: called when a page has the module loaded and hears messages (``ready``)
+        self.on_ready = None
         self.on_msg(self._on_page_message)
 
     def _on_page_message(self, _widget, content, _buffers) -> None:
-        if content.get("type") != "move" or self.on_move is None:
+        kind = content.get("type")
+        if kind == "ready" and self.on_ready is not None:
+            self.on_ready()
+        elif kind == "ref" and self.reference and self._last is not None:
+            if int(content.get("ref", -1)) == self.ref_frame:
+                self._send_reference()
+        if kind != "move" or self.on_move is None:
             return
         self.moves += 1
         self._seq = int(content.get("seq", 0))
@@ -115,8 +140,8 @@ class DragFigure(anywidget.AnyWidget):
         During a drag (``final`` False) only the rectangle of pixels that changed since the
         last picture sent goes to the page (a move changes the triangle's part of the
         figure), as raw RGBA bytes (``place`` = ``[x, y, width, height]``). ``final``: the whole
-        picture, also kept as the poster (what a re-opened view shows); with ``patch_final``
-        a patch too, the poster following it.
+        picture, also kept as the poster (what a re-opened view shows); in reference mode a
+        patch against the reference, the poster following it.
         """
         t_show = time.perf_counter()
         rgba = frame_rgba(fig)
@@ -147,29 +172,68 @@ class DragFigure(anywidget.AnyWidget):
                   "send": round((now - t_encoded) * 1e3, 1)} if self._t0 else None  # fmt: skip
         self._t0 = 0.0
         # a patch applies to the picture of frame n - 1 (a view that missed it waits for
-        # the next whole picture)
+        # the next whole picture); in reference mode to the reference picture
         self.send({"type": "frame", "seq": self._seq, "handles": moved, "n": self._frame,
                    "place": place, "kernel_ms": kernel_ms, "timing": timing,
+                   "ref": self.ref_frame if self.reference else None, "caption": self.caption,
                    "deflate": self.deflate and bool(place and png)}, [png])  # fmt: skip
-        if final and place is not None and self.patch_final:
+        if final and place is not None and self.reference:
             self._post(rgba)
 
     def _patch(self, last, rgba, final: bool) -> tuple:
-        """``(place, bytes)`` of the picture ``rgba`` for the page that shows ``last``.
+        """``(place, bytes)`` of the picture ``rgba`` for the page that shows ``last``
+        (in reference mode: the reference and one patch).
 
         A patch travels as raw RGBA pixels: the page paints them at once (putImageData),
         where a PNG waits for an asynchronous decode that took 5-90 ms on a loaded machine;
         a few hundred kB over the loopback cost less. ``place`` is ``[x, y, width, height]``
         (all 0 with empty bytes: nothing changed), None for a whole PNG.
         """
-        if last is None or last.shape != rgba.shape or (final and not self.patch_final):
+        if self.reference:
+            if self._ref is None or self._ref.shape != rgba.shape:
+                self._ref, self.ref_frame = rgba, self._frame
+                return None, encode_png(rgba)
+            return self._crop(self._ref, rgba)
+        if last is None or last.shape != rgba.shape or final:
             return None, encode_png(rgba)
-        box = changed_box(last, rgba)
+        return self._crop(last, rgba)
+
+    def _crop(self, base, rgba) -> tuple:
+        """``(place, bytes)``: the rectangle of ``rgba`` that differs from ``base``."""
+        box = changed_box(base, rgba)
         if box is None:
             return [0, 0, 0, 0], b""
         r0, r1, c0, c1 = box
         raw = rgba[r0:r1, c0:c1].tobytes()
         return [c0, r0, c1 - c0, r1 - r0], zlib.compress(raw, 1) if self.deflate else raw
+
+    def send_ahead(self, batch, generation: int) -> None:
+        """Send the page pictures drawn ahead, in one message: ``batch`` holds
+        ``(k, rgba, caption)``, the picture for position ``k`` of the slider that drives this
+        figure and its caption (reference mode only)."""
+        entries, buffers = [], []
+        for k, rgba, caption in batch:
+            place, data = self._crop(self._ref, rgba)
+            entries.append({"k": int(k), "place": place, "caption": caption,
+                            "deflate": self.deflate and bool(data)})  # fmt: skip
+            buffers.append(data)
+        self.send({"type": "ahead", "generation": int(generation), "ref": self.ref_frame,
+                   "entries": entries}, buffers)  # fmt: skip
+
+    def _send_reference(self) -> None:
+        """The last picture becomes the reference, sent whole (a view opened later asked)."""
+        self._ref = None
+        self._frame += 1
+        rgba = self._last
+        place, png = self._patch(None, rgba, True)
+        with self.hold_sync():
+            self.poster, self.poster_frame = png, self._frame
+            self._posted = rgba
+        self.send({"type": "frame", "seq": 0, "handles": self.handles, "n": self._frame,
+                   "place": place, "kernel_ms": 0.0, "timing": None, "ref": self.ref_frame,
+                   "caption": self.caption, "deflate": False}, [png])  # fmt: skip
+        if self.on_reference is not None:
+            self.on_reference()
 
     def _post(self, rgba) -> None:
         """Keep ``rgba`` (sent as a patch) as the poster, a PNG (what a re-opened view shows)."""

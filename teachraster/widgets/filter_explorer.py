@@ -16,7 +16,7 @@ from ..study.texture_truth import footprint_average, texel_reads
 from .common import close_tree, later, style_context, title_html
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider, slider_display
+from .live_slider import LiveSlider, info_line, slider_display
 from .sprites import ColourBarSprite, text_boxes
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
@@ -133,21 +133,27 @@ class FilterExplorer:
             self.display = slider_display(
                 self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
             )
-        self.filter.observe(lambda change: self.update(), "value")
+        self.filter.observe(lambda change: self.update(restart=True), "value")
         self.tilt.observe(lambda change: self.update(), "value")
         self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
-        self.info = widgets.HTML()
-        self._set_info()
+        self.info, info_widgets = info_line(self.display)
+        self.info.value = self._info_html()
         title = title_html(
             "Texture filtering: a floor tilting to the horizon",
             "Tilt the square until its checks are smaller than a pixel, then compare filters: "
             "moiré without mipmaps, blur with trilinear, detail kept by anisotropic filtering.",
         )
-        self.widget = widgets.VBox([title, widgets.HBox([self.tilt, self.filter]), self.info,
-                                    self.display.widget])  # fmt: skip
+        self.widget = widgets.VBox([title, widgets.HBox([self.tilt, self.filter]),
+                                    *info_widgets, self.display.widget])  # fmt: skip
+        self._ahead = None
+        if self.backend != "ipympl":
+            self._ahead = self.display.ahead(self.tilt, self)  # drawn while the kernel idles
 
     def _render(self) -> None:
-        clip = plane_clip(self.tilt.value, self.camera, self.width / self.height)
+        self._compute_at(self.tilt.value)
+
+    def _compute_at(self, tilt: float) -> None:
+        clip = plane_clip(tilt, self.camera, self.width / self.height)
         uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
         frame = render(clip, self.width, self.height, attrs=uv, derivatives=True)
         f = self.filter.value
@@ -156,12 +162,12 @@ class FilterExplorer:
         else:
             self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy)
         self.lod = mip_level(frame.ddx, frame.ddy, self.texture.shape)
-        self.frame = frame
-        if self._drafting() and self.tilt.value not in self._truths:
+        self.frame, self.shown_tilt = frame, tilt
+        if self._drafting() and tilt not in self._truths:
             # a draft leaves the error out rather than wait for a new truth (at the release)
             self.truth, self.error, self.rms = None, None, float("nan")
             return
-        self.truth = self._truth(clip, uv, frame.triangle_id)
+        self.truth = self._truth(clip, uv, frame.triangle_id, tilt)
         self.error = np.abs(self.image - self.truth).mean(axis=-1)
         self.rms = float(np.sqrt(np.nanmean((self.image - self.truth) ** 2)))
 
@@ -171,10 +177,9 @@ class FilterExplorer:
         drawn before; the release brings the full picture."""
         return self.tilt.dragging
 
-    def _truth(self, clip, uv, triangle_id) -> np.ndarray:
-        """The footprint average at the current tilt, kept for the last few tilts: the
+    def _truth(self, clip, uv, triangle_id, key: float) -> np.ndarray:
+        """The footprint average at tilt ``key``, kept for the last few tilts: the
         filter leaves it alone, and a student drags the slider back and forth."""
-        key = self.tilt.value
         truth = self._truths.pop(key, None)
         if truth is None:
             truth = footprint_average(clip, uv, self.texture, triangle_id, samples=self.samples)
@@ -221,9 +226,19 @@ class FilterExplorer:
         others = [ax.bbox for ax in self.axes] + text_boxes([error.note])
         self._bar.draw(self._blit, draft=self._drafting(), others=others)
 
-    def update(self) -> None:
-        """Render again with the controls' values and update the panels in place."""
+    def update(self, *, restart: bool = False) -> None:
+        """Render again with the controls' values and update the panels in place
+        (``restart``: the filter changed, the pictures drawn ahead are stale)."""
         self._render()
+        self._set_artists()
+        self.info.value = self._info_html()
+        self.display.refresh()
+        if not self._drafting():
+            later(self._truths_ahead, idle_only=True)
+        if restart and self._ahead is not None:
+            self._ahead.restart()
+
+    def _set_artists(self) -> None:
         self.panels["image"].update(self.image)
         self.panels["lod"].update(self.lod)
         error = self.panels["error"]
@@ -238,22 +253,18 @@ class FilterExplorer:
         else:
             error.image.set_visible(True)
             error.update(self.image, self.truth)
-        self._set_info()
-        self.display.refresh()
-        if not self._drafting():
-            later(self._truths_ahead, idle_only=True)
 
-    def _set_info(self) -> None:
+    def _info_html(self) -> str:
         reads = self._reads()
         rms = "(on release)" if self.truth is None else f"{self.rms:.3f}"
-        self.info.value = (
+        return (
             f"filter <b>{self.filter.value}</b> · RMS error against the footprint mean "
             f"<b>{rms}</b> · about {reads:.1f} texels read per pixel · largest λ "
             f"{np.nanmax(self.lod):.1f}"
         )
 
     def _reads(self) -> float:
-        key = (self.tilt.value, self.filter.value)
+        key = (self.shown_tilt, self.filter.value)
         if key not in self._read_counts:  # a few ms: kept, as the truth is
             cov = self.frame.coverage
             self._read_counts[key] = texel_reads(self.filter.value, self.frame.ddx[cov],

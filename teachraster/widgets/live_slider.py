@@ -21,9 +21,11 @@ It keeps the ipywidgets slider's interface that the explorers and lessons use: `
 from __future__ import annotations
 
 import time
+import uuid
 from pathlib import Path
 
 import anywidget
+import ipywidgets as widgets
 import traitlets
 
 from .display import FigureDisplay
@@ -66,6 +68,9 @@ class LiveSlider(anywidget.AnyWidget):
     description = traitlets.Unicode("").tag(sync=True)
     readout_format = traitlets.Unicode(".2f").tag(sync=True)
     base = traitlets.Float(0.0).tag(sync=True)  # 0: linear
+    #: the ``key`` of the figure in the page that keeps pictures drawn ahead for this
+    #: slider's positions (:mod:`~teachraster.widgets.ahead`); "" for none
+    link = traitlets.Unicode("").tag(sync=True)
 
     def __init__(self, **kwargs) -> None:
         if kwargs.get("base") is None:
@@ -124,20 +129,24 @@ class SliderDisplay:
     """A slider explorer's figure in the page: :class:`~teachraster.widgets.DragFigure`'s
     pictures (nothing to drag), with ``FigureDisplay``'s ``refresh``/``close``.
 
-    Each refresh sends only the rectangle of pixels that changed, as RGBA (zlib level 1)
-    that the page inflates and paints at once: an ``ipywidgets.Image`` would send a whole
-    PNG, which the page then decodes asynchronously (5-90 ms on a loaded machine, more than
-    the kernel's draft).
-    A final picture (``drafting()`` False: a key, a release) also becomes the poster, the
-    picture a re-opened or saved view shows.
+    Each refresh sends only the rectangle of pixels that differ from the figure's reference
+    picture, as RGBA (zlib level 1) that the page inflates and paints at once: an
+    ``ipywidgets.Image`` would send a whole PNG, which the page then decodes asynchronously
+    (5-90 ms on a loaded machine, more than the kernel's draft). Against one reference, a
+    picture never depends on the one before: the page may also show pictures drawn ahead
+    (:meth:`ahead`). A final picture (``drafting()`` False: a key, a release) also becomes
+    the poster, the picture a re-opened or saved view shows. :attr:`caption` is the line of
+    text above the picture.
     """
 
     mode = "page"
 
     def __init__(self, fig, draw, drafting, alt: str = "") -> None:
         self.fig, self.draw, self.drafting = fig, draw, drafting
-        self.widget = DragFigure(alt=alt, patch_final=True, deflate=True)
+        self.widget = DragFigure(alt=alt, reference=True, deflate=True, key=uuid.uuid4().hex)
+        self.caption = PageCaption(self.widget)
         self.draws = 0
+        self.frames_ahead = None
         self.refresh()
 
     def refresh(self) -> None:
@@ -146,8 +155,34 @@ class SliderDisplay:
         (self.fig.canvas.draw if self.draw is None else self.draw)()
         self.widget.show(self.fig, self.fig.axes[0], [], final=not self.drafting())
 
+    def ahead(self, slider, explorer):
+        """Draw ``explorer`` at every position of ``slider`` while the kernel idles, for the
+        page to show by itself (:class:`~teachraster.widgets.ahead.FramesAhead`)."""
+        from .ahead import FramesAhead
+
+        self.frames_ahead = FramesAhead(self, slider, explorer)
+        return self.frames_ahead
+
     def close(self) -> None:
+        if self.frames_ahead is not None:
+            self.frames_ahead.close()
         self.widget.close()
+
+
+class PageCaption:
+    """The line of text above a :class:`SliderDisplay`'s picture, with ``ipywidgets.HTML``'s
+    ``value`` (an explorer's ``info``): the page shows it with the picture it belongs to."""
+
+    def __init__(self, page: DragFigure) -> None:
+        self._page = page
+
+    @property
+    def value(self) -> str:
+        return self._page.caption
+
+    @value.setter
+    def value(self, html: str) -> None:
+        self._page.caption = html
 
 
 def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: str = ""):
@@ -156,3 +191,12 @@ def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: st
     if mode == "ipympl":
         return FigureDisplay(fig, mode, draw=draw)
     return SliderDisplay(fig, draw, drafting, alt)
+
+
+def info_line(display):
+    """An explorer's line of text over its figure, and the widgets that show it: the page
+    figure's own caption, or (ipympl) an ``ipywidgets.HTML`` to place above the canvas."""
+    if isinstance(display, SliderDisplay):
+        return display.caption, []
+    info = widgets.HTML()
+    return info, [info]

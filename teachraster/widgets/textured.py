@@ -16,7 +16,7 @@ from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider, slider_display
+from .live_slider import LiveSlider, info_line, slider_display
 from .sprites import ColourBarSprite, text_boxes
 
 #: The picture's alternative text in the page
@@ -173,14 +173,19 @@ class TexturedPlaneViewer:
         self.depth = self.tilt  # the brief's name for it: how far the plane recedes
         self.tilt.observe(lambda change: self.update(change["new"]), "value")
         self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
-        self.info = widgets.HTML()
-        self._set_info()
+        self.info, info_widgets = info_line(self.display)
+        self.info.value = self._info_html()
         title = title_html(
             "Texture mapping a receding square: affine vs perspective-correct",
             "Tilt the square away from the camera. Affine texture coordinates bend the "
             "checker lines and kink them along the diagonal where the two triangles meet.",
         )
-        self.widget = widgets.VBox([title, self.tilt, self.info, self.display.widget])
+        self.widget = widgets.VBox([title, self.tilt, *info_widgets, self.display.widget])
+        if self.backend != "ipympl":
+            self.display.ahead(self.tilt, self)  # every tilt drawn while the kernel idles
+
+    def _compute_at(self, tilt: float) -> None:
+        self._render(tilt)
 
     def _render(self, tilt: float) -> None:
         clip = plane_clip(tilt, self.camera, self.width / self.height,
@@ -242,20 +247,23 @@ class TexturedPlaneViewer:
     def update(self, tilt: float | None = None) -> None:
         """Render again at ``tilt`` (default: the slider's) and update the figure in place."""
         self._render(self.tilt.value if tilt is None else tilt)
+        self._set_artists()
+        self.info.value = self._info_html()
+        self.display.refresh()
+
+    def _set_artists(self) -> None:
         # the two colour images only: the heatmap shows texel error (_show_error), not the
         # colour difference ComparisonView.update would compute first (a colour bar redraw)
         for art, image in zip(self.view.images, (self.affine, self.perspective)):
             art.update(image)
         self._show_error()
-        self._set_info()
-        self.display.refresh()
 
-    def _set_info(self) -> None:
+    def _info_html(self) -> str:
         w = self.clip[..., 3]
         near, far = float(w.min()), float(w.max())
         m = self.maximum
         err = f"{m:.2f} texels" if np.isfinite(m) else "none"
-        self.info.value = (
+        return (
             f"w from {near:.2f} (near edge) to {far:.2f} (far edge), ratio {far / near:.2f} · "
             f"largest texture-coordinate error of affine interpolation: <b>{err}</b>"
         )

@@ -11,6 +11,79 @@
 
 const IN_FLIGHT = 2;
 
+// Reference mode (the slider explorers): every picture is the reference picture with one
+// patch painted over it, so pictures drawn ahead (kept per figure "key", below) can be shown
+// in any order: the page's slider asks the store of its figure (slider.js) and shows a
+// position it has a picture for without asking the kernel.
+const INFLATED = 8; // pictures drawn ahead kept inflated (a slider dragged back and forth)
+
+function stores() {
+  globalThis.__teachrasterAhead = globalThis.__teachrasterAhead || new Map();
+  return globalThis.__teachrasterAhead;
+}
+
+function storeFor(key) {
+  const all = stores();
+  if (!all.has(key)) {
+    all.set(key, { entries: new Map(), generation: 0, views: new Set(), raw: new Map(),
+      want: null, busy: false, show: null });
+    const store = all.get(key);
+    // show position k's picture drawn ahead in every view; false when there is none
+    store.show = (k) => {
+      const e = store.entries.get(k);
+      if (!e || e.generation !== store.generation) return false;
+      if (![...store.views].some((v) => v.canPaint(e))) return false;
+      store.want = e;
+      if (!store.busy) drain(store);
+      return true;
+    };
+  }
+  return all.get(key);
+}
+
+// paint the latest picture asked for (coalesced: pictures asked for meanwhile are skipped)
+async function drain(store) {
+  store.busy = true;
+  try {
+    while (store.want) {
+      const e = store.want;
+      store.want = null;
+      let raw = store.raw.get(e.k);
+      if (!raw) {
+        raw = e.bytes.byteLength && e.deflate ? await inflate(e.bytes) : e.bytes;
+        store.raw.set(e.k, raw);
+        if (store.raw.size > INFLATED) store.raw.delete(store.raw.keys().next().value);
+      }
+      for (const v of store.views) if (v.canPaint(e)) v.paintAhead(e, raw);
+    }
+  } finally {
+    store.busy = false;
+  }
+}
+
+// Once per model: keep the pictures drawn ahead, then tell the kernel the page listens.
+function initialize({ model }) {
+  const key = model.get("key");
+  if (!key) return;
+  const store = storeFor(key);
+  model.on("msg:custom", (msg, buffers) => {
+    if (msg.type === "ahead-clear") {
+      store.entries.clear();
+      store.raw.clear();
+      store.generation = msg.generation;
+    } else if (msg.type === "ahead" && msg.generation === store.generation) {
+      msg.entries.forEach((e, i) => {
+        store.entries.set(e.k, { ...e, generation: msg.generation, ref: msg.ref,
+          bytes: buffers[i] });
+      });
+    } else {
+      return;
+    }
+    for (const v of store.views) v.counted_ahead(store.entries.size);
+  });
+  model.send({ type: "ready" });
+}
+
 const CSS = `
 .tr-drag { position: relative; display: inline-block; max-width: 100%; touch-action: none; }
 .tr-drag img { display: block; max-width: 100%; height: auto; user-select: none; }
@@ -18,6 +91,8 @@ const CSS = `
 .tr-drag canvas { position: absolute; left: 0; top: 0; width: 100%; height: 100%;
   pointer-events: none; }
 .tr-drag-notice { color: #b00020; font-size: 13px; }
+.tr-drag-caption { font-size: var(--jp-widgets-font-size, 13px); line-height: 1.5;
+  margin: 2px 0 6px; }
 `;
 
 // A zlib-compressed patch (the slider explorers: megabytes of changed pixels a frame
@@ -44,8 +119,16 @@ function render({ model, el }) {
   const overlay = document.createElement("canvas");
   const notice = document.createElement("div");
   notice.className = "tr-drag-notice";
+  const caption = document.createElement("div"); // a line of text above the picture
+  caption.className = "tr-drag-caption";
   box.append(img, picture, overlay);
-  el.append(box, notice);
+  el.append(caption, box, notice);
+  function setCaption(html) {
+    caption.innerHTML = html || "";
+    caption.style.display = html ? "" : "none";
+  }
+  setCaption(model.get("caption"));
+  model.on("change:caption", () => setCaption(model.get("caption")));
   const ctx = overlay.getContext("2d");
   const pctx = picture.getContext("2d");
   // the number of the frame on show, and the queue that paints frames in order
@@ -166,10 +249,81 @@ function render({ model, el }) {
   img.addEventListener("pointerup", release);
   img.addEventListener("pointercancel", release);
 
+  // Reference mode: the reference picture (as a bitmap, to put back where the last patch
+  // was), its frame number and the rectangle painted over it.
+  const ref = { bitmap: null, frame: 0, dirty: null, asked: 0 };
+  function askRef() {
+    const frame = model.get("ref_frame");
+    if (ref.asked === frame) return; // asked once for this reference
+    ref.asked = frame;
+    model.send({ type: "ref", ref: frame });
+  }
+  function putPatch(place, raw) {
+    if (ref.dirty) {
+      const [x, y, w, h] = ref.dirty;
+      pctx.drawImage(ref.bitmap, x, y, w, h, x, y, w, h); // the reference, put back
+      ref.dirty = null;
+    }
+    if (!raw || !raw.byteLength) return;
+    const [x, y, w, h] = place;
+    const buf = raw instanceof ArrayBuffer ? raw : raw.buffer;
+    pctx.putImageData(new ImageData(new Uint8ClampedArray(buf, raw.byteOffset || 0, 4 * w * h),
+      w, h), x, y);
+    ref.dirty = place;
+  }
+  function counted() {
+    img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
+  }
+  async function paintRef(msg, bytes) {
+    if (msg.place === null) {
+      sizePicture();
+      const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
+      pctx.clearRect(0, 0, picture.width, picture.height);
+      pctx.drawImage(bitmap, 0, 0);
+      if (ref.bitmap) ref.bitmap.close();
+      Object.assign(ref, { bitmap, frame: msg.ref, dirty: null });
+      showPng(bytes);
+    } else if (ref.bitmap && msg.ref === ref.frame) {
+      putPatch(msg.place, msg.deflate ? await inflate(bytes) : bytes);
+    } else {
+      askRef(); // a view opened after the reference was sent: it asks for a new one
+      return;
+    }
+    if (msg.caption !== undefined) setCaption(msg.caption);
+    counted();
+  }
+  const view = {
+    canPaint: (e) => ref.bitmap !== null && e.ref === ref.frame,
+    // how many pictures drawn ahead the page keeps (for tests and benchmarks)
+    counted_ahead: (n) => (img.dataset.ahead = String(n)),
+    paintAhead(e, raw) {
+      putPatch(e.place, raw);
+      setCaption(e.caption);
+      counted();
+    },
+  };
+  const key = model.get("key");
+  if (key) storeFor(key).views.add(view);
+  const poster0 = model.get("poster");
+  if (model.get("ref_frame") && poster0 && poster0.byteLength) {
+    if (model.get("poster_frame") === model.get("ref_frame")) {
+      // the poster is the reference: kept as a bitmap to put back from
+      const frame = model.get("ref_frame");
+      painting = painting.then(async () => {
+        const bitmap = await createImageBitmap(new Blob([poster0], { type: "image/png" }));
+        if (ref.bitmap === null) Object.assign(ref, { bitmap, frame });
+        else bitmap.close();
+      });
+    } else {
+      askRef();
+    }
+  }
+
   // A whole frame replaces the picture; a patch (the pixels a move changed) is painted at
   // its place, only on the frame it was made against (a view that missed one waits for
   // the next whole frame).
   async function paint(msg, bytes) {
+    if (msg.ref !== undefined && msg.ref !== null) return paintRef(msg, bytes);
     if (msg.place === null) {
       sizePicture();
       const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
@@ -231,7 +385,9 @@ function render({ model, el }) {
   img.alt = model.get("alt");
   return () => {
     if (url) URL.revokeObjectURL(url);
+    if (key) storeFor(key).views.delete(view);
+    if (ref.bitmap) ref.bitmap.close();
   };
 }
 
-export default { render };
+export default { initialize, render };

@@ -5,6 +5,10 @@
 // round trip), each the latest value when sent; values that come meanwhile replace each
 // other, so the kernel never works through a queue. The value where the slider is released
 // is always sent. The readout follows the pointer at once.
+//
+// A slider linked to a figure that keeps pictures drawn ahead (drag.js: the figure's store,
+// by its "key") shows a position with a picture by itself and does not ask the kernel; the
+// kernel hears of the value where the slider is released (the full picture follows).
 
 const IN_FLIGHT = 2;
 
@@ -34,7 +38,16 @@ function render({ model, el }) {
   const toValue = (p) => (base() > 0 ? Math.pow(base(), p) : p);
   const toPos = (v) => (base() > 0 ? Math.log(v) / Math.log(base()) : v);
   const s = { pending: new Set(), seq: 0, latest: null, sent: null, held: false,
-    drafted: false };
+    drafted: false, ahead: false, shownAhead: null };
+
+  // the picture drawn ahead for the slider's position, shown; false when there is none
+  function showAhead() {
+    const link = model.get("link");
+    const store = link && globalThis.__teachrasterAhead && globalThis.__teachrasterAhead.get(link);
+    if (!store) return false;
+    const k = Math.round((Number(input.value) - Number(input.min)) / Number(input.step));
+    return store.show(k);
+  }
 
   function show(v) {
     readout.textContent = format(v, model.get("readout_format"));
@@ -63,7 +76,8 @@ function render({ model, el }) {
     model.send({ type: "value", value, seq, final });
   }
   function pump() {
-    if (s.latest !== null && s.latest !== s.sent && s.pending.size < IN_FLIGHT) {
+    if (s.latest !== null && s.latest !== s.sent && s.latest !== s.shownAhead &&
+        s.pending.size < IN_FLIGHT) {
       send(s.latest, false); // a draft: the pointer still holds the slider
       s.drafted = true;
     }
@@ -72,7 +86,9 @@ function render({ model, el }) {
   input.addEventListener("input", () => {
     s.latest = toValue(Number(input.value));
     show(s.latest);
-    if (s.held) pump();
+    // shown in the page: the kernel hears of it at the release
+    if (showAhead()) [s.ahead, s.shownAhead] = [true, s.latest];
+    else if (s.held) pump();
     // a key (or a click on the track) is followed by its "change" at once: sent from there
     // as final, not first as a draft
     else setTimeout(pump, 0);
@@ -82,8 +98,10 @@ function render({ model, el }) {
     s.latest = toValue(Number(input.value));
     // the release, marked final: the kernel shows the full picture (also when this value
     // was sent already as a draft)
-    if (s.latest !== s.sent || s.drafted) send(s.latest, true);
+    if (s.latest !== s.sent || s.drafted || s.ahead) send(s.latest, true);
     s.drafted = false;
+    s.ahead = false;
+    s.shownAhead = null;
   });
   // arrow keys move the slider, not JupyterLab's notebook (command-mode shortcuts)
   input.addEventListener("keydown", (e) => e.stopPropagation());

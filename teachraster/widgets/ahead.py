@@ -1,0 +1,154 @@
+"""Pictures drawn ahead: a slider explorer's figure at every position of its slider, kept by
+the page, so that dragging the slider or pressing an arrow key shows a picture at once,
+without asking the kernel.
+
+A slider explorer (one slider with a few dozen positions: the tilt of
+:class:`~teachraster.widgets.TexturedPlaneViewer` and :class:`~teachraster.widgets.FilterExplorer`,
+the near plane of ``DepthPrecisionExplorer``) draws, while the kernel idles, one position at
+a time (nearest to the one on show first) exactly as a draft at that position looks, and
+sends it to the page as a patch against the figure's reference picture
+(:meth:`~teachraster.widgets.dragging.DragFigure.send_ahead`) with its caption. The page's
+slider (``static/slider.js``) shows a position it has a picture for by itself and tells the
+kernel only where it is released (the full picture then follows, as after any drag);
+positions without one go to the kernel as drafts, coalesced, as before. When another control
+changes the picture (a filter, a depth format), the pictures kept are dropped and drawn
+again.
+
+Nothing is drawn until a page says it is listening (``ready``): a notebook run without a
+browser (nbclient, the tests) draws nothing ahead, and a page opened later asks again.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import time
+
+import numpy as np
+
+from ..plotting.frames import frame_rgba
+
+#: Sliders with more positions than this are not drawn ahead (pictures the page would keep).
+MOST_POSITIONS = 128
+#: Seconds between two batches of pictures drawn ahead: a message arriving meanwhile is
+#: answered first.
+STEP_S = 0.01
+#: Seconds of drawing in one batch (sent as one message: each costs the page and server
+#: about as much as a small picture does)
+BATCH_S = 0.03
+#: Seconds a restart waits before drawing (a student toggling a control twice in a row is
+#: answered first; the pictures are then drawn once)
+RESTART_S = 0.4
+
+
+def slider_positions(slider) -> np.ndarray:
+    """The values a :class:`~teachraster.widgets.LiveSlider` can take, position by position.
+
+    Examples
+    --------
+    >>> from teachraster.widgets import LiveSlider
+    >>> slider_positions(LiveSlider(value=1.0, min=0.0, max=2.0, step=0.5)).tolist()
+    [0.0, 0.5, 1.0, 1.5, 2.0]
+    """
+    n = int(np.floor((slider.max - slider.min) / slider.step + 1e-9)) + 1
+    # decimal positions, as the page's range input names them (min + k step, rounded)
+    positions = np.round(slider.min + slider.step * np.arange(n), 10)
+    return slider.base**positions if slider.base > 0 else positions
+
+
+class FramesAhead:
+    """Draw ``explorer``'s figure at every position of ``slider`` while the kernel idles.
+
+    Parameters
+    ----------
+    display : SliderDisplay
+        The explorer's figure in the page (reference mode).
+    slider : LiveSlider
+        The slider whose positions are drawn; linked to the figure in the page.
+    explorer : object
+        Has ``_compute_at(value)`` (its state at the slider value, attributes rebound, not
+        changed in place), ``_set_artists()`` (its artists from that state, nothing drawn)
+        and ``_info_html()`` (the caption); ``display.draw`` then draws the figure.
+    """
+
+    def __init__(self, display, slider, explorer) -> None:
+        self.display, self.slider, self.explorer = display, slider, explorer
+        self.values = slider_positions(slider)
+        self.generation = 0
+        self.todo: list[int] = []
+        self.drawn = 0
+        self._handle = None
+        self.closed = len(self.values) > MOST_POSITIONS
+        #: a page listens (it said ``ready``): nothing is drawn for nobody
+        self.listening = False
+        page = display.widget
+        slider.link = page.key
+        page.on_ready = page.on_reference = self._page_ready
+
+    def _page_ready(self) -> None:
+        self.listening = True
+        self.restart()
+
+    def restart(self) -> None:
+        """Drop the pictures drawn so far (the page does too) and draw them all again,
+        nearest to the slider's position first (another control changed the picture)."""
+        if self.closed or not self.listening:
+            return
+        self.generation += 1
+        self.display.widget.send({"type": "ahead-clear", "generation": self.generation})
+        here = int(np.argmin(np.abs(self.values - self.slider.value)))
+        self.todo = sorted(range(len(self.values)), key=lambda k: (abs(k - here), k))
+        if self._handle is not None:
+            self._handle.cancel()
+            self._handle = None
+        self._schedule(RESTART_S)
+
+    def _schedule(self, delay: float = STEP_S) -> None:
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:
+            return  # no kernel event loop (plain Python, tests): call step() by hand
+        if self._handle is None:
+            self._handle = loop.call_later(delay, self._run)
+
+    def _run(self) -> None:
+        self._handle = None
+        if self.step(BATCH_S):
+            self._schedule()
+
+    def step(self, seconds: float = 0.0) -> bool:
+        """Draw the next positions' pictures for about ``seconds`` (one at least) and send
+        them in one message; False when none is left."""
+        if self.closed or not self.todo:
+            return False
+        start, batch = time.perf_counter(), []
+        while self.todo and (not batch or time.perf_counter() - start < seconds):
+            k = self.todo.pop(0)
+            rgba, caption = self.picture_at(float(self.values[k]))
+            batch.append((k, rgba, caption))
+        self.display.widget.send_ahead(batch, self.generation)
+        self.drawn += len(batch)
+        return bool(self.todo)
+
+    def picture_at(self, value: float) -> tuple[np.ndarray, str]:
+        """The figure's pixels and caption at ``value``, as a draft there shows them; the
+        explorer's state and artists are put back as they were (nothing sent)."""
+        ex = self.explorer
+        saved = dict(vars(ex))
+        self.slider.dragging = True  # as a draft at that value looks
+        try:
+            ex._compute_at(value)
+            ex._set_artists()
+            self.display.draw()
+            rgba, caption = frame_rgba(self.display.fig), ex._info_html()
+        finally:
+            for name, kept in saved.items():
+                setattr(ex, name, kept)
+            ex._set_artists()  # the artists back at the value on show (drawn at the next)
+            self.slider.dragging = False
+        return rgba, caption
+
+    def close(self) -> None:
+        self.closed = True
+        self.todo = []
+        if self._handle is not None:
+            self._handle.cancel()

@@ -1,0 +1,143 @@
+"""Pictures drawn ahead (``teachraster.widgets.ahead``): a slider explorer's figure at every
+position of its slider, drawn while the kernel idles and sent to the page against the
+figure's reference picture. Each must be the draft the kernel draws at that position, with
+its caption; drawing them must leave the explorer as it was; nothing is drawn before a page
+listens; another control starts them again. (The page side: tests/test_browser_ahead.py.)"""
+
+from __future__ import annotations
+
+import zlib
+
+import numpy as np
+import pytest
+
+from teachraster.widgets import FilterExplorer, LiveSlider, TexturedPlaneViewer
+from teachraster.widgets.ahead import MOST_POSITIONS, slider_positions
+from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+
+def _make(name):
+    if name == "viewer":
+        ex = TexturedPlaneViewer(64, 48, tilt=30.0, backend="image")
+        return ex, ex.tilt
+    if name == "filter":
+        ex = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
+        return ex, ex.tilt
+    ex = DepthPrecisionExplorer(backend="image")
+    return ex, ex.near
+
+
+def _listen(ex, slider):
+    """The explorer's page messages, kept; the page says it listens."""
+    page, sent = ex.display.widget, []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    slider.send = lambda content, buffers=None: None
+    page._on_page_message(page, {"type": "ready"}, [])
+    return page, sent
+
+
+def _pictures(sent, ref) -> dict:
+    """Position -> (picture, caption) from the "ahead" messages, the reference patched."""
+    out = {}
+    for content, buffers in sent:
+        if content["type"] != "ahead":
+            continue
+        for entry, data in zip(content["entries"], buffers):
+            pic = ref.copy()
+            x, y, w, h = entry["place"]
+            if w:
+                raw = zlib.decompress(data) if entry["deflate"] else data
+                pic[y : y + h, x : x + w] = np.frombuffer(raw, np.uint8).reshape(h, w, 4)
+            out[entry["k"]] = pic, entry["caption"]
+    return out
+
+
+@pytest.mark.parametrize("name", ["viewer", "filter", "depth"])
+def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
+    ex, slider = _make(name)
+    page, sent = _listen(ex, slider)
+    ahead = ex.display.frames_ahead
+    shown, info = bytes(page._last), ex.info.value
+    state = {k: v for k, v in vars(ex).items() if isinstance(v, (np.ndarray, float))}
+    while ahead.step(seconds=0.05):
+        pass
+    assert ahead.drawn == len(ahead.values) == len(_pictures(sent, page._ref))
+    # the explorer as it was: the same state, caption and picture on show
+    assert bytes(page._last) == shown and ex.info.value == info
+    for key, value in state.items():
+        now = vars(ex)[key]
+        assert now is value or np.array_equal(now, value, equal_nan=True), key
+    pictures = _pictures(sent, page._ref)
+    for k in (0, len(ahead.values) // 3, len(ahead.values) - 1):
+        # the page drags there: the kernel's draft is the picture drawn ahead
+        slider._on_page_message(slider, {"type": "value", "value": float(ahead.values[k]),
+                                         "final": False, "seq": 1}, [])  # fmt: skip
+        picture, caption = pictures[k]
+        assert np.array_equal(picture, page._last), k
+        assert caption == ex.info.value, k
+    ex.close()
+
+
+def test_nothing_is_drawn_ahead_until_a_page_listens_and_a_new_filter_starts_again():
+    ex, slider = _make("filter")
+    page, sent = ex.display.widget, []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    ahead = ex.display.frames_ahead
+    ex.filter.value = "nearest"  # no page yet: nothing drawn, nothing to drop
+    assert not ahead.step() and ahead.drawn == 0
+    assert sent and all(c["type"] == "frame" for c, _ in sent)
+    page._on_page_message(page, {"type": "ready"}, [])
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 1}
+    assert ahead.step() and ahead.drawn == 1
+    # the nearest positions first
+    first = [c["entries"][0]["k"] for c, _ in sent if c["type"] == "ahead"]
+    assert ahead.values[first[0]] == slider.value
+    ex.filter.value = "bilinear"  # another picture at every position: drawn again
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2}
+    assert len(ahead.todo) == len(ahead.values)
+    ex.close()
+    assert not ahead.step()  # closed: nothing more
+
+
+def test_a_page_opened_later_asks_for_a_new_reference_and_the_pictures_are_drawn_again():
+    ex, slider = _make("depth")
+    page, sent = _listen(ex, slider)
+    ahead = ex.display.frames_ahead
+    ahead.step()
+    slider.value = 1.0  # a final picture: a patch against the reference, then the poster
+    old = page.ref_frame
+    assert page.poster_frame != old
+    page._on_page_message(page, {"type": "ref", "ref": old - 1}, [])  # stale: ignored
+    assert page.ref_frame == old
+    page._on_page_message(page, {"type": "ref", "ref": old}, [])
+    whole = [c for c, _ in sent if c["type"] == "frame"][-1]
+    assert whole["place"] is None and page.ref_frame == whole["ref"] == page.poster_frame > old
+    assert np.array_equal(page._ref, page._last)
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2}
+    ex.close()
+
+
+def test_patches_are_against_the_reference_picture():
+    ex, slider = _make("viewer")
+    page, sent = _listen(ex, slider)
+    for v in (40.0, 50.0, 45.0):
+        slider._on_page_message(slider, {"type": "value", "value": v, "final": False,
+                                         "seq": 1}, [])  # fmt: skip
+        content, (data,) = [(c, b) for c, b in sent if c["type"] == "frame"][-1]
+        assert content["ref"] == page.ref_frame and content["caption"] == ex.info.value
+        x, y, w, h = content["place"]
+        picture = page._ref.copy()  # the reference with this one patch: the picture
+        picture[y : y + h, x : x + w] = np.frombuffer(zlib.decompress(data), np.uint8).reshape(
+            h, w, 4
+        )
+        assert np.array_equal(picture, page._last)
+    ex.close()
+
+
+def test_slider_positions_are_the_pages():
+    s = LiveSlider(value=0.1, base=10, min=-2, max=1, step=0.05)
+    values = slider_positions(s)
+    assert len(values) == 61 and values[0] == pytest.approx(0.01) and values[-1] == 10.0
+    assert values[27] == 10 ** round(-2 + 27 * 0.05, 10)  # decimal positions
+    wide = LiveSlider(value=0.0, min=0.0, max=1000.0, step=1.0)
+    assert len(slider_positions(wide)) > MOST_POSITIONS  # too many: not drawn ahead
