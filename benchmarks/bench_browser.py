@@ -253,8 +253,8 @@ def run_all_cells(page, base: str, name: str) -> None:
     wait_for_ahead(page)
 
 
-#: The explorers whose slider positions are drawn ahead (PlaneExplorer's nine are not).
-AHEAD = ("bench-viewer", "bench-filter", "bench-depth")
+#: The explorers whose slider positions are drawn ahead (PlaneExplorer: its first slider, v1 x).
+AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth")
 
 
 def wait_for_ahead(page) -> None:

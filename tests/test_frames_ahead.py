@@ -87,13 +87,13 @@ def test_nothing_is_drawn_ahead_until_a_page_listens_and_a_new_filter_starts_aga
     assert not ahead.step() and ahead.drawn == 0
     assert sent and all(c["type"] == "frame" for c, _ in sent)
     page._on_page_message(page, {"type": "ready"}, [])
-    assert sent[-1][0] == {"type": "ahead-clear", "generation": 1}
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 1, "slider": 0}
     assert ahead.step() and ahead.drawn == 1
     # the nearest positions first
     first = [c["entries"][0]["k"] for c, _ in sent if c["type"] == "ahead"]
     assert ahead.values[first[0]] == slider.value
     ex.filter.value = "bilinear"  # another picture at every position: drawn again
-    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2}
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2, "slider": 0}
     assert len(ahead.todo) == len(ahead.values)
     ex.close()
     assert not ahead.step()  # closed: nothing more
@@ -113,7 +113,7 @@ def test_a_page_opened_later_asks_for_a_new_reference_and_the_pictures_are_drawn
     whole = [c for c, _ in sent if c["type"] == "frame"][-1]
     assert whole["place"] is None and page.ref_frame == whole["ref"] == page.poster_frame > old
     assert np.array_equal(page._ref, page._last)
-    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2}
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2, "slider": 0}
     ex.close()
 
 
@@ -141,3 +141,57 @@ def test_slider_positions_are_the_pages():
     assert values[27] == 10 ** round(-2 + 27 * 0.05, 10)  # decimal positions
     wide = LiveSlider(value=0.0, min=0.0, max=1000.0, step=1.0)
     assert len(slider_positions(wide)) > MOST_POSITIONS  # too many: not drawn ahead
+
+
+def test_filters_drawn_ahead_are_sent_at_a_toggle_and_are_the_filters_pictures():
+    ex, slider = _make("filter")
+    fresh, _ = _make("filter")
+    toggles = ex._toggles
+    ex.filter.value = "nearest"  # no page listens: nothing drawn ahead
+    assert not toggles.todo and not toggles.kept
+    page, _sent = _listen(ex, slider)
+    assert toggles.where == slider.value and "nearest" not in toggles.todo
+    while toggles.todo:
+        toggles.step()
+    draws = ex.display.draws
+    for f in ("anisotropic", "bilinear", "trilinear"):
+        ex.filter.value = fresh.filter.value = f
+        # the picture kept, sent without drawing; the explorer's state is the filter's
+        assert ex.display.draws == draws
+        assert np.array_equal(page._last, fresh.display.widget._last), f
+        assert ex.rms == fresh.rms and ex.info.value == fresh.info.value, f
+        np.testing.assert_array_equal(ex.image, fresh.image)
+        while toggles.todo:
+            toggles.step()
+    slider.value = 60.0  # a new tilt: the kept pictures are of the old one
+    assert toggles.take(80.0, "nearest") is None and toggles.where == 60.0
+    ex.close()
+    fresh.close()
+
+
+def test_plane_explorer_draws_the_positions_of_the_slider_moved_or_pressed_last():
+    from teachraster.widgets import PlaneExplorer
+
+    ex = PlaneExplorer(backend="image")
+    sliders = [*ex.x, *ex.y, *ex.f]
+    page, sent = _listen(ex, sliders[0])
+    for s in sliders:
+        s.send = lambda content, buffers=None: None
+    ahead = ex.display.frames_ahead
+    assert ahead.which == 0 and sliders[0].link == f"{page.key}/0"
+    sliders[7]._on_page_message(sliders[7], {"type": "touch"}, [])  # f2 pressed
+    assert ahead.which == 7 and sent[-1][0]["slider"] == 7
+    assert len(ahead.todo) == len(slider_positions(sliders[7])) == 13
+    while ahead.step(seconds=0.05):
+        pass
+    pictures = _pictures([m for m in sent if m[0].get("generation") != 1], page._ref)
+    for k in (0, 9):
+        value = float(ahead.values[k])
+        sliders[7]._on_page_message(sliders[7], {"type": "value", "value": value,
+                                                 "final": False, "seq": 1}, [])  # fmt: skip
+        assert np.array_equal(pictures[k][0], page._last) and pictures[k][1] == ex.info.value
+    sliders[7].value = 1.5  # the slider drawn moves: its pictures stay good
+    assert ahead.which == 7 and not ahead.todo
+    sliders[2].value = 9.0  # another one: its positions now
+    assert ahead.which == 2 and len(ahead.todo) == 65
+    ex.close()

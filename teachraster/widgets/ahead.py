@@ -26,6 +26,7 @@ import time
 import numpy as np
 
 from ..plotting.frames import frame_rgba
+from .common import later
 
 #: Sliders with more positions than this are not drawn ahead (pictures the page would keep).
 MOST_POSITIONS = 128
@@ -56,37 +57,66 @@ def slider_positions(slider) -> np.ndarray:
 
 
 class FramesAhead:
-    """Draw ``explorer``'s figure at every position of ``slider`` while the kernel idles.
+    """Draw ``explorer``'s figure at every position of a slider while the kernel idles.
 
     Parameters
     ----------
     display : SliderDisplay
         The explorer's figure in the page (reference mode).
-    slider : LiveSlider
-        The slider whose positions are drawn; linked to the figure in the page.
+    sliders : LiveSlider or list of LiveSlider
+        The sliders whose positions are drawn, each linked to the figure in the page. With
+        several (``PlaneExplorer``'s nine), the positions of the one moved last: the
+        pictures along a slider do not depend on where that slider is, only on the others.
     explorer : object
         Has ``_compute_at(value)`` (its state at the slider value, attributes rebound, not
-        changed in place), ``_set_artists()`` (its artists from that state, nothing drawn)
+        changed in place; with several sliders ``_compute_at(value, which)``, ``which`` the
+        slider's index), ``_set_artists()`` (its artists from that state, nothing drawn)
         and ``_info_html()`` (the caption); ``display.draw`` then draws the figure.
     """
 
-    def __init__(self, display, slider, explorer) -> None:
-        self.display, self.slider, self.explorer = display, slider, explorer
-        self.values = slider_positions(slider)
+    def __init__(self, display, sliders, explorer) -> None:
+        self.display, self.explorer = display, explorer
+        self.sliders = list(sliders) if isinstance(sliders, (list, tuple)) else [sliders]
+        self.which = 0  # the slider whose positions are drawn
         self.generation = 0
         self.todo: list[int] = []
         self.drawn = 0
         self._handle = None
-        self.closed = len(self.values) > MOST_POSITIONS
+        self.closed = any(len(slider_positions(s)) > MOST_POSITIONS for s in self.sliders)
         #: a page listens (it said ``ready``): nothing is drawn for nobody
         self.listening = False
+        #: called once a page listens (other pictures an explorer draws ahead for it)
+        self.on_listening: list = []
         page = display.widget
-        slider.link = page.key
+        for i, s in enumerate(self.sliders):
+            s.link = f"{page.key}/{i}"
+            if len(self.sliders) > 1:
+                s.observe(lambda change, i=i: self._moved(i), "value")
+                s.on_touch(lambda i=i: self._moved(i))
         page.on_ready = page.on_reference = self._page_ready
+
+    @property
+    def slider(self):
+        """The slider whose positions are drawn."""
+        return self.sliders[self.which]
+
+    @property
+    def values(self) -> np.ndarray:
+        """The values of its positions."""
+        return slider_positions(self.slider)
+
+    def _moved(self, i: int) -> None:
+        # another slider moved (or was pressed): the pictures along the one drawn are stale,
+        # and this one is the likelier to move
+        if i != self.which:
+            self.which = i
+            self.restart()
 
     def _page_ready(self) -> None:
         self.listening = True
         self.restart()
+        for callback in self.on_listening:
+            callback()
 
     def restart(self) -> None:
         """Drop the pictures drawn so far (the page does too) and draw them all again,
@@ -94,7 +124,8 @@ class FramesAhead:
         if self.closed or not self.listening:
             return
         self.generation += 1
-        self.display.widget.send({"type": "ahead-clear", "generation": self.generation})
+        self.display.widget.send({"type": "ahead-clear", "generation": self.generation,
+                                  "slider": self.which})  # fmt: skip
         here = int(np.argmin(np.abs(self.values - self.slider.value)))
         self.todo = sorted(range(len(self.values)), key=lambda k: (abs(k - here), k))
         if self._handle is not None:
@@ -136,7 +167,7 @@ class FramesAhead:
         saved = dict(vars(ex))
         self.slider.dragging = True  # as a draft at that value looks
         try:
-            ex._compute_at(value)
+            ex._compute_at(value, *([self.which] if len(self.sliders) > 1 else []))
             ex._set_artists()
             self.display.draw()
             rgba, caption = frame_rgba(self.display.fig), ex._info_html()
@@ -152,3 +183,64 @@ class FramesAhead:
         self.todo = []
         if self._handle is not None:
             self._handle.cancel()
+
+
+class TogglesAhead:
+    """The pictures a control's other options give where the figure is, drawn while the kernel
+    idles and kept by the kernel: choosing one then sends its picture at once.
+
+    ``FilterExplorer``'s filter: at the tilt on show, the picture of every other filter (the
+    full picture, error and colour bar included), one per idle call; a new tilt drops them.
+
+    Parameters
+    ----------
+    display : SliderDisplay
+        The explorer's figure in the page.
+    explorer : object
+        Has ``_compute_at(where, option)`` (its state there with that option, attributes
+        rebound), ``_set_artists()`` and ``_info_html()``, as for :class:`FramesAhead`.
+    options : sequence
+        The control's options.
+    """
+
+    def __init__(self, display, explorer, options) -> None:
+        self.display, self.explorer, self.options = display, explorer, list(options)
+        self.kept: dict = {}  # option -> (pixels, caption, the state it rebinds)
+        self.where = None
+        self.todo: list = []
+        self.closed = False
+
+    def start(self, where, option) -> None:
+        """The picture on show is at ``where`` with ``option``: draw the others there."""
+        if where != self.where:
+            self.kept.clear()
+        self.where = where
+        self.todo = [o for o in self.options if o != option and o not in self.kept]
+        later(self.step, idle_only=True)
+
+    def take(self, where, option):
+        """``(pixels, caption, state)`` of ``option`` at ``where`` when kept, else None."""
+        return self.kept.get(option) if where == self.where else None
+
+    def step(self) -> None:
+        """Draw one option's picture and keep it; the next at the next idle call."""
+        if self.closed or not self.todo:
+            return
+        option = self.todo.pop(0)
+        ex = self.explorer
+        saved = dict(vars(ex))
+        try:
+            ex._compute_at(self.where, option)
+            ex._set_artists()
+            self.display.draw()
+            state = {k: v for k, v in vars(ex).items() if saved.get(k, self) is not v}
+            self.kept[option] = frame_rgba(self.display.fig), ex._info_html(), state
+        finally:
+            for name, kept in saved.items():
+                setattr(ex, name, kept)
+            ex._set_artists()
+        later(self.step, idle_only=True)
+
+    def close(self) -> None:
+        self.closed = True
+        self.kept.clear()

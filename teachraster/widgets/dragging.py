@@ -93,6 +93,8 @@ class DragFigure(anywidget.AnyWidget):
     #: what the page's slider that drives this figure names it by (pictures drawn ahead)
     key = traitlets.Unicode("").tag(sync=True)
     caption = traitlets.Unicode("").tag(sync=True)
+    #: where the caption goes: "top" (a line above the picture) or "right" (beside it)
+    caption_side = traitlets.Unicode("top").tag(sync=True)
 
     def __init__(self, on_move=None, *, reference: bool = False, deflate: bool = False,
                  **kwargs) -> None:  # fmt: skip
@@ -134,17 +136,18 @@ class DragFigure(anywidget.AnyWidget):
         final = bool(content.get("final"))
         self.on_move(int(content["i"]), float(content["x"]), float(content["y"]), final)
 
-    def show(self, fig, ax, handles, *, final: bool = True) -> None:
+    def show(self, fig, ax, handles, *, final: bool = True, rgba=None) -> None:
         """Send the figure's current pixels (drawn already) and where the handles are now.
 
         During a drag (``final`` False) only the rectangle of pixels that changed since the
         last picture sent goes to the page (a move changes the triangle's part of the
         figure), as raw RGBA bytes (``place`` = ``[x, y, width, height]``). ``final``: the whole
         picture, also kept as the poster (what a re-opened view shows); in reference mode a
-        patch against the reference, the poster following it.
+        patch against the reference, the poster following it. ``rgba``: these pixels, drawn
+        before (a picture kept), instead of the figure's.
         """
         t_show = time.perf_counter()
-        rgba = frame_rgba(fig)
+        rgba = frame_rgba(fig) if rgba is None else rgba
         h, w = rgba.shape[:2]
         last, self._last = self._last, rgba
         self._frame += 1

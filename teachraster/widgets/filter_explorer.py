@@ -13,6 +13,7 @@ from ..pipeline.texturing.texture_filters import mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
+from .ahead import TogglesAhead
 from .common import close_tree, later, style_context, title_html
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
@@ -146,17 +147,20 @@ class FilterExplorer:
         self.widget = widgets.VBox([title, widgets.HBox([self.tilt, self.filter]),
                                     *info_widgets, self.display.widget])  # fmt: skip
         self._ahead = None
+        #: the other filters' pictures at the tilt on show, drawn while the kernel idles
+        self._toggles = TogglesAhead(self.display, self, TEXTURE_FILTERS)
         if self.backend != "ipympl":
             self._ahead = self.display.ahead(self.tilt, self)  # drawn while the kernel idles
+            self._ahead.on_listening.append(self._toggles_ahead)
 
     def _render(self) -> None:
         self._compute_at(self.tilt.value)
 
-    def _compute_at(self, tilt: float) -> None:
+    def _compute_at(self, tilt: float, filter: str | None = None) -> None:  # noqa: A002
         clip = plane_clip(tilt, self.camera, self.width / self.height)
         uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
         frame = render(clip, self.width, self.height, attrs=uv, derivatives=True)
-        f = self.filter.value
+        f = self.shown_filter = self.filter.value if filter is None else filter
         if f in ("nearest", "bilinear"):
             self.image = sample(self.texture, frame.attrs, f)
         else:
@@ -229,14 +233,28 @@ class FilterExplorer:
     def update(self, *, restart: bool = False) -> None:
         """Render again with the controls' values and update the panels in place
         (``restart``: the filter changed, the pictures drawn ahead are stale)."""
-        self._render()
-        self._set_artists()
-        self.info.value = self._info_html()
-        self.display.refresh()
+        kept = self._toggles.take(self.tilt.value, self.filter.value) if restart else None
+        if kept is not None:  # a filter drawn ahead at this tilt: its picture at once
+            rgba, caption, state = kept
+            vars(self).update(state)
+            self.info.value = caption
+            self.display.refresh(rgba)
+            self._set_artists()  # for the next picture drawn
+        else:
+            self._render()
+            self._set_artists()
+            self.info.value = self._info_html()
+            self.display.refresh()
         if not self._drafting():
             later(self._truths_ahead, idle_only=True)
+            if self._ahead is not None and self._ahead.listening:
+                self._toggles_ahead()
         if restart and self._ahead is not None:
             self._ahead.restart()
+
+    def _toggles_ahead(self) -> None:
+        """The other filters at the tilt on show, drawn while the kernel idles (for a page)."""
+        self._toggles.start(self.tilt.value, self.filter.value)
 
     def _set_artists(self) -> None:
         self.panels["image"].update(self.image)
@@ -258,16 +276,16 @@ class FilterExplorer:
         reads = self._reads()
         rms = "(on release)" if self.truth is None else f"{self.rms:.3f}"
         return (
-            f"filter <b>{self.filter.value}</b> · RMS error against the footprint mean "
+            f"filter <b>{self.shown_filter}</b> · RMS error against the footprint mean "
             f"<b>{rms}</b> · about {reads:.1f} texels read per pixel · largest λ "
             f"{np.nanmax(self.lod):.1f}"
         )
 
     def _reads(self) -> float:
-        key = (self.shown_tilt, self.filter.value)
+        key = (self.shown_tilt, self.shown_filter)
         if key not in self._read_counts:  # a few ms: kept, as the truth is
             cov = self.frame.coverage
-            self._read_counts[key] = texel_reads(self.filter.value, self.frame.ddx[cov],
+            self._read_counts[key] = texel_reads(self.shown_filter, self.frame.ddx[cov],
                                                  self.frame.ddy[cov], self.texture.shape)  # fmt: skip
             if len(self._read_counts) > 4 * TRUTH_CACHE:
                 self._read_counts.pop(next(iter(self._read_counts)))
@@ -278,5 +296,6 @@ class FilterExplorer:
 
     def close(self) -> None:
         """Close every widget of the explorer."""
+        self._toggles.close()
         self.display.close()
         close_tree(self.widget)

@@ -69,7 +69,8 @@ class LiveSlider(anywidget.AnyWidget):
     readout_format = traitlets.Unicode(".2f").tag(sync=True)
     base = traitlets.Float(0.0).tag(sync=True)  # 0: linear
     #: the ``key`` of the figure in the page that keeps pictures drawn ahead for this
-    #: slider's positions (:mod:`~teachraster.widgets.ahead`); "" for none
+    #: slider's positions and this slider's index among its sliders, ``"key/index"``
+    #: (:mod:`~teachraster.widgets.ahead`); "" for none
     link = traitlets.Unicode("").tag(sync=True)
 
     def __init__(self, **kwargs) -> None:
@@ -82,6 +83,7 @@ class LiveSlider(anywidget.AnyWidget):
         self.dragging = False
         self._drafted = False
         self._release: list = []
+        self._touch: list = []
         self.on_msg(self._on_page_message)
 
     def on_release(self, callback) -> None:
@@ -93,6 +95,10 @@ class LiveSlider(anywidget.AnyWidget):
         """
         self._release.append(callback)
 
+    def on_touch(self, callback) -> None:
+        """Call ``callback()`` when the page says the slider is pressed or focused."""
+        self._touch.append(callback)
+
     @traitlets.validate("value")
     def _clamp(self, proposal) -> float:
         # as ipywidgets' sliders: a value beyond the range is clipped to it
@@ -102,6 +108,9 @@ class LiveSlider(anywidget.AnyWidget):
         return min(max(float(proposal["value"]), lo), hi)
 
     def _on_page_message(self, _widget, content, _buffers) -> None:
+        if content.get("type") == "touch":
+            for callback in self._touch:
+                callback()
         if content.get("type") != "value":
             return
         self.messages += 1
@@ -149,18 +158,21 @@ class SliderDisplay:
         self.frames_ahead = None
         self.refresh()
 
-    def refresh(self) -> None:
-        """Draw the figure and send what changed to the page."""
-        self.draws += 1
-        (self.fig.canvas.draw if self.draw is None else self.draw)()
-        self.widget.show(self.fig, self.fig.axes[0], [], final=not self.drafting())
+    def refresh(self, rgba=None) -> None:
+        """Draw the figure and send what changed to the page (``rgba``: send these pixels,
+        a picture drawn before, instead)."""
+        if rgba is None:
+            self.draws += 1
+            (self.fig.canvas.draw if self.draw is None else self.draw)()
+        self.widget.show(self.fig, self.fig.axes[0], [], final=not self.drafting(), rgba=rgba)
 
-    def ahead(self, slider, explorer):
-        """Draw ``explorer`` at every position of ``slider`` while the kernel idles, for the
-        page to show by itself (:class:`~teachraster.widgets.ahead.FramesAhead`)."""
+    def ahead(self, sliders, explorer):
+        """Draw ``explorer`` at every position of a slider (of ``sliders``: the one moved
+        last) while the kernel idles, for the page to show by itself
+        (:class:`~teachraster.widgets.ahead.FramesAhead`)."""
         from .ahead import FramesAhead
 
-        self.frames_ahead = FramesAhead(self, slider, explorer)
+        self.frames_ahead = FramesAhead(self, sliders, explorer)
         return self.frames_ahead
 
     def close(self) -> None:
@@ -193,10 +205,12 @@ def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: st
     return SliderDisplay(fig, draw, drafting, alt)
 
 
-def info_line(display):
-    """An explorer's line of text over its figure, and the widgets that show it: the page
-    figure's own caption, or (ipympl) an ``ipywidgets.HTML`` to place above the canvas."""
+def info_line(display, side: str = "top"):
+    """An explorer's text by its figure (``side``: "top" or "right"), and the widgets that
+    show it: the page figure's own caption, or (ipympl) an ``ipywidgets.HTML`` to place
+    beside the canvas."""
     if isinstance(display, SliderDisplay):
+        display.widget.caption_side = side
         return display.caption, []
     info = widgets.HTML()
     return info, [info]

@@ -25,7 +25,7 @@ from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import close_tree, style_context, title_html
 from .display import new_figure, resolve_backend
 from .dragging import same_or_new
-from .live_slider import LiveSlider, slider_display
+from .live_slider import LiveSlider, info_line, slider_display
 from .sprites import ColourBarSprite, text_boxes
 
 #: The picture's alternative text in the page
@@ -151,7 +151,7 @@ class PlaneExplorer:
         xy = np.asarray(xy, dtype=np.float64).reshape(3, 2)
         f = np.asarray(f, dtype=np.float64).reshape(3)
         self._sliders(xy, f)
-        self._compute()
+        self._compute_at()
         with style_context(style):
             self.fig = new_figure((7.5, 6.0), self.backend)
             self.fig.set_layout_engine("constrained")
@@ -175,7 +175,8 @@ class PlaneExplorer:
             self.display = slider_display(
                 self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
             )
-        self.info = widgets.HTML(self._info_html())
+        self.info, info_widgets = info_line(self.display, side="right")
+        self.info.value = self._info_html()
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
             "Move a vertex or change its value. The contour lines (dashed, f in equal steps) "
@@ -183,7 +184,11 @@ class PlaneExplorer:
             "coefficients A, B, C, D follow.",
         )
         rows = [widgets.HBox([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
-        self.widget = widgets.VBox([title, *rows, widgets.HBox([self.display.widget, self.info])])
+        self.widget = widgets.VBox([title, *rows, widgets.HBox([self.display.widget,
+                                                                 *info_widgets])])  # fmt: skip
+        if self.backend != "ipympl":
+            # the positions of the slider moved last, drawn while the kernel idles
+            self.display.ahead([*self.x, *self.y, *self.f], self)
 
     def _sliders(self, xy, f) -> None:
         def slider(value, lo, hi, name):
@@ -208,8 +213,16 @@ class PlaneExplorer:
         """The current vertex values, (3,)."""
         return np.array([s.value for s in self.f])
 
-    def _compute(self) -> None:
+    def _compute_at(self, value: float | None = None, which: int | None = None) -> None:
+        """The plane and its values at the sliders' values, slider ``which`` (of x1-x3,
+        y1-y3, f1-f3) at ``value`` (pictures drawn ahead: ``widgets.ahead``)."""
         xy, f = self.xy, self.fvals
+        if which is not None:
+            if which < 6:  # x1, x2, x3, then y1, y2, y3
+                xy[which % 3, which // 3] = value
+            else:
+                f[which - 6] = value
+        self.shown_xy, self.shown_f = xy, f
         self.system = plane_system(xy, f)
         ys, xs = np.mgrid[0 : self.height, 0 : self.width] + 0.5
         values = np.full((self.height, self.width), np.nan)
@@ -221,14 +234,14 @@ class PlaneExplorer:
 
     def _range(self) -> tuple[float, float]:
         # The colour range: the vertex values (the plane's extremes on the triangle).
-        f = self.fvals
+        f = self.shown_f
         lo, hi = float(f.min()), float(f.max())
         return (lo, hi) if hi > lo else (lo - 0.5, hi + 0.5)
 
     def _segments(self) -> list:
         if "g" not in self.system:
             return []
-        f = self.fvals
+        f = self.shown_f
         levels = np.linspace(f.min(), f.max(), LEVELS + 2)[1:-1]
         return level_segments(self.system["g"], levels, self.width, self.height)
 
@@ -258,7 +271,12 @@ class PlaneExplorer:
 
     def update(self) -> None:
         """Recompute from the sliders and redraw the same artists."""
-        self._compute()
+        self._compute_at()
+        self._set_artists()
+        self.info.value = self._info_html()
+        self.display.refresh()
+
+    def _set_artists(self) -> None:
         self.image.update(self.values)
         if self._bar is not None and self._drafting():
             with self._bar.quietly():  # the colour bar follows at the release
@@ -266,13 +284,11 @@ class PlaneExplorer:
         else:
             self.image.image.set_clim(*self._range())
         self.contours.set_segments(self._segments())
-        self.triangle.update(self.xy)
-        self.info.value = self._info_html()
-        self.display.refresh()
+        self.triangle.update(self.shown_xy)
 
     def _info_html(self) -> str:
         s = self.system
-        xy, f = self.xy, self.fvals
+        xy, f = self.shown_xy, self.shown_f
         rows = "".join(
             f"<tr><td>[{x:.2f}</td><td>{y:.2f}</td><td>1]</td><td>&nbsp;=&nbsp;{v:.2f}</td></tr>"
             for (x, y), v in zip(xy, f)

@@ -25,11 +25,13 @@ function stores() {
 function storeFor(key) {
   const all = stores();
   if (!all.has(key)) {
-    all.set(key, { entries: new Map(), generation: 0, views: new Set(), raw: new Map(),
-      want: null, busy: false, show: null });
+    all.set(key, { entries: new Map(), generation: 0, slider: 0, views: new Set(),
+      raw: new Map(), want: null, busy: false, show: null });
     const store = all.get(key);
-    // show position k's picture drawn ahead in every view; false when there is none
-    store.show = (k) => {
+    // show the picture drawn ahead for position k of slider i (its index among the
+    // sliders linked to this figure) in every view; false when there is none
+    store.show = (i, k) => {
+      if (i !== store.slider) return false;
       const e = store.entries.get(k);
       if (!e || e.generation !== store.generation) return false;
       if (![...store.views].some((v) => v.canPaint(e))) return false;
@@ -71,6 +73,7 @@ function initialize({ model }) {
       store.entries.clear();
       store.raw.clear();
       store.generation = msg.generation;
+      store.slider = msg.slider || 0;
     } else if (msg.type === "ahead" && msg.generation === store.generation) {
       msg.entries.forEach((e, i) => {
         store.entries.set(e.k, { ...e, generation: msg.generation, ref: msg.ref,
@@ -93,6 +96,9 @@ const CSS = `
 .tr-drag-notice { color: #b00020; font-size: 13px; }
 .tr-drag-caption { font-size: var(--jp-widgets-font-size, 13px); line-height: 1.5;
   margin: 2px 0 6px; }
+.tr-drag-row { display: flex; align-items: flex-start; gap: 4px; }
+.tr-drag-row .tr-drag { flex: 0 1 auto; min-width: 0; }
+.tr-drag-row .tr-drag-caption { flex: 0 0 auto; max-width: 440px; }
 `;
 
 // A zlib-compressed patch (the slider explorers: megabytes of changed pixels a frame
@@ -122,7 +128,14 @@ function render({ model, el }) {
   const caption = document.createElement("div"); // a line of text above the picture
   caption.className = "tr-drag-caption";
   box.append(img, picture, overlay);
-  el.append(caption, box, notice);
+  if (model.get("caption_side") === "right") {
+    const row = document.createElement("div"); // the picture, its text beside it
+    row.className = "tr-drag-row";
+    row.append(box, caption);
+    el.append(row, notice);
+  } else {
+    el.append(caption, box, notice);
+  }
   function setCaption(html) {
     caption.innerHTML = html || "";
     caption.style.display = html ? "" : "none";

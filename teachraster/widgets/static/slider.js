@@ -42,11 +42,11 @@ function render({ model, el }) {
 
   // the picture drawn ahead for the slider's position, shown; false when there is none
   function showAhead() {
-    const link = model.get("link");
-    const store = link && globalThis.__teachrasterAhead && globalThis.__teachrasterAhead.get(link);
+    const [figure, i] = (model.get("link") || "").split("/"); // the figure's key, our index
+    const store = figure && globalThis.__teachrasterAhead && globalThis.__teachrasterAhead.get(figure);
     if (!store) return false;
     const k = Math.round((Number(input.value) - Number(input.min)) / Number(input.step));
-    return store.show(k);
+    return store.show(Number(i || 0), k);
   }
 
   function show(v) {
@@ -82,7 +82,19 @@ function render({ model, el }) {
       s.drafted = true;
     }
   }
-  input.addEventListener("pointerdown", () => (s.held = true));
+  // the kernel hears that this slider is about to move (pictures drawn ahead: the
+  // positions of the slider moved last; telling it at the press starts them sooner)
+  function touch() {
+    if (s.touched || !model.get("link")) return;
+    s.touched = true;
+    model.send({ type: "touch" });
+  }
+  input.addEventListener("focus", touch);
+  input.addEventListener("blur", () => (s.touched = false));
+  input.addEventListener("pointerdown", () => {
+    s.held = true;
+    touch();
+  });
   input.addEventListener("input", () => {
     s.latest = toValue(Number(input.value));
     show(s.latest);
