@@ -88,3 +88,17 @@ def test_the_same_frame_as_in_process():
         for field in ("triangle_id", "lod", "level", "color"):
             np.testing.assert_array_equal(getattr(apart, field), getattr(here, field))
         assert (apart.triangle_id >= 0).mean() > 0.3 and np.nanmax(apart.lod) > 3  # a trapezoid
+
+
+def test_no_notebook_starts_multiprocessing():
+    """A ``multiprocessing`` child (spawn or forkserver) starts a resource-tracker process that
+    outlives it; IPython's kernel then waits about two seconds for it at every shut-down or
+    restart (lesson 09 once took 2.2 s longer that way). A plain ``subprocess``, as
+    :func:`gl_texture_lod_subprocess` uses, leaves nothing behind."""
+    import nbformat
+
+    folder = Path(__file__).resolve().parent.parent / "notebooks"
+    for path in sorted(folder.glob("**/*.ipynb")):
+        source = "\n".join(c.source for c in nbformat.read(path, as_version=4).cells)
+        for word in ("multiprocessing", "ProcessPoolExecutor"):
+            assert word not in source, f"{path.name} uses {word}"
