@@ -238,6 +238,8 @@ def plot_filters(axes, images: dict, truth, *, vmax: float = 0.5) -> FilterArtis
     out = FilterArtists()
     for j, (name, img) in enumerate(images.items()):
         top, bottom = axes[0, j], axes[1, j]
+        for ax in (top, bottom):  # pictures, no ticks: set up first, so none are made (slow)
+            pixel_axes(ax, *np.shape(img)[1::-1], ticks=False)
         out.images.append(show_image(top, rgba_image(img), zorder=0.5))
         err = np.abs(np.asarray(img) - truth)
         rms = float(np.sqrt(np.nanmean(err**2)))
@@ -246,11 +248,6 @@ def plot_filters(axes, images: dict, truth, *, vmax: float = 0.5) -> FilterArtis
         out.errors.append(show_image(bottom, err.mean(axis=-1), cmap=ERROR_CMAP, vmin=0.0,
                                      vmax=vmax, zorder=0.5))  # fmt: skip
         bottom.set_title(f"error, RMS {rms:.3f}", fontsize=fs(0.7))
-        for ax in (top, bottom):
-            ax.set_xticks([])
-            ax.set_yticks([])
-            ax.set_xlabel("")
-            ax.set_ylabel("")
     if out.errors:
         out.colorbar = axes[1, -1].figure.colorbar(out.errors[-1], ax=list(axes[1]),
                                                    shrink=0.85, label="|error|")  # fmt: skip

@@ -63,6 +63,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.validate import as_size
+from .opengl_texture import GL_MIN_FILTERS, create_context, draw_texture_lod
 
 __all__ = [
     "GLFrame",
@@ -74,6 +75,7 @@ __all__ = [
     "gl_render_samples",
     "gl_sample_positions",
     "gl_texture_lod",
+    "gl_texture_lod_subprocess",
 ]
 
 #: Attribute components carried by one varying (a vec4).
@@ -144,17 +146,9 @@ def gl_available() -> tuple[bool, str]:
 
 
 def _create_context() -> tuple[bool, str]:
-    try:
-        import moderngl
-    except ImportError as exc:
-        return False, f"moderngl is not installed ({exc}); pip install moderngl"
-    try:
-        ctx = moderngl.create_standalone_context(backend="egl", require=330)
-    except Exception as exc:  # glcontext raises plain Exceptions for missing EGL/drivers
-        return False, (
-            f"no OpenGL 3.3 context through headless EGL: {exc} (on Debian: apt-get install "
-            "libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri libgbm1)"
-        )
+    ctx, why = create_context()
+    if ctx is None:
+        return False, why
     try:
         gl = _RawGL()
     except OSError as exc:
@@ -653,37 +647,6 @@ def _read_samples(ctx, program, tex, size, samples, res):
 
 
 # -- texture level of detail ------------------------------------------------------------------
-#: Minifying filters :func:`gl_texture_lod` can ask GL for, by teachraster's names.
-_GL_MIN_FILTERS = {
-    "nearest_mipmap_nearest": "NEAREST_MIPMAP_NEAREST",
-    "linear_mipmap_nearest": "LINEAR_MIPMAP_NEAREST",
-    "nearest_mipmap_linear": "NEAREST_MIPMAP_LINEAR",
-    "trilinear": "LINEAR_MIPMAP_LINEAR",
-}
-
-_LOD_VS = """#version 400
-in vec4 in_pos;
-in vec2 in_uv;
-smooth out vec2 uv;
-void main() {
-    gl_Position = vec4(in_pos.x, -in_pos.y, in_pos.z, in_pos.w);  // y negated, as above
-    uv = in_uv;
-}
-"""
-
-_LOD_FS = """#version 400
-uniform sampler2D tex;
-smooth in vec2 uv;
-layout(location = 0) out vec4 o_lod;
-layout(location = 1) out vec4 o_color;
-void main() {
-    vec2 q = textureQueryLod(tex, uv);  // x: the level(s) accessed, y: the computed lambda
-    o_lod = vec4(float(gl_PrimitiveID), q.x, q.y, 1.0);
-    o_color = texture(tex, uv);
-}
-"""
-
-
 @dataclass(frozen=True)
 class GLTextureFrame:
     """What OpenGL computed for a textured draw (row 0 at the top).
@@ -731,56 +694,87 @@ def gl_texture_lod(
         One of ``nearest_mipmap_nearest``, ``linear_mipmap_nearest``,
         ``nearest_mipmap_linear``, ``trilinear``.
     """
-    import moderngl
+    clip, uv, width, height, levels = _check_texture_inputs(clip, uv, width, height, levels, filter)
+    ctx, _ = _context()
+    lod, color = draw_texture_lod(ctx, _STATE["programs"], clip, uv, width, height, levels, filter)
+    return _texture_frame(lod, color)
 
+
+def gl_texture_lod_subprocess(
+    clip, uv, width: int, height: int, levels, *, filter: str = "nearest_mipmap_nearest",
+    timeout: float = 120.0,
+) -> tuple[bool, str, GLTextureFrame | None]:  # fmt: skip
+    """:func:`gl_texture_lod` in a fresh Python process, and whether OpenGL was there.
+
+    For a notebook kernel that lives for a whole class: the GPU driver (llvmpipe maps hundreds
+    of MiB) is loaded only in the child, and its memory is given back when the child exits.
+    The child runs :mod:`.opengl_texture` as a script, which imports numpy and moderngl but not
+    teachraster, so it starts in about a tenth of a second; it is a plain ``subprocess``, not
+    ``multiprocessing``, whose resource-tracker process would outlive the call (and make
+    IPython's kernel wait seconds for it at shut-down).
+
+    Parameters
+    ----------
+    clip, uv, width, height, levels, filter
+        As in :func:`gl_texture_lod` (checked here, before the child starts).
+    timeout : float
+        Seconds to wait for the child.
+
+    Returns
+    -------
+    (True, renderer, frame) or (False, reason, None)
+        ``renderer`` is ``GL_RENDERER``; ``reason`` says why there is no OpenGL (or how the
+        child failed).
+    """
+    import subprocess
+    import sys
+    import tempfile
+    from pathlib import Path
+
+    from . import opengl_texture
+
+    clip, uv, width, height, levels = _check_texture_inputs(clip, uv, width, height, levels, filter)
+    arrays = {f"level_{i}": lv for i, lv in enumerate(levels)}
+    with tempfile.TemporaryDirectory() as tmp:
+        given, got = Path(tmp) / "in.npz", Path(tmp) / "out.npz"
+        np.savez(given, clip=clip, uv=uv, width=width, height=height, filter=filter, **arrays)
+        child = subprocess.run(
+            [sys.executable, "-c", _RUN_SCRIPT, opengl_texture.__file__, str(given), str(got)],
+            capture_output=True, text=True, timeout=timeout, check=False,
+        )  # fmt: skip
+        if child.returncode != 0 or not got.exists():
+            last = (child.stderr.strip().splitlines() or ["no message"])[-1]
+            return False, f"the OpenGL process failed (exit code {child.returncode}): {last}", None
+        with np.load(got, allow_pickle=False) as out:
+            if not bool(out["ok"]):
+                return False, str(out["why"]), None
+            return True, str(out["why"]), _texture_frame(out["lod_target"], out["color_target"])
+
+
+# Runs a file as __main__ without putting its folder first on sys.path (where teachraster's own
+# module names could shadow others), as ``python path`` would.
+_RUN_SCRIPT = (
+    "import runpy, sys; sys.argv = sys.argv[1:]; runpy.run_path(sys.argv[0], run_name='__main__')"
+)
+
+
+def _check_texture_inputs(clip, uv, width, height, levels, filter):
     clip, width, height, uv = _check_inputs(clip, width, height, uv, None)
     if uv.shape[2] != 2:
         raise ValueError(f"uv must have shape (N, 3, 2), got {uv.shape}")
-    if filter not in _GL_MIN_FILTERS:
-        raise ValueError(f"filter must be one of {tuple(_GL_MIN_FILTERS)}; got {filter!r}")
-    ctx, _ = _context()
+    if filter not in GL_MIN_FILTERS:
+        raise ValueError(f"filter must be one of {tuple(GL_MIN_FILTERS)}; got {filter!r}")
     levels = [np.asarray(lv, dtype=np.float64) for lv in levels]
     levels = [lv[..., None] if lv.ndim == 2 else lv for lv in levels]
-    comps = levels[0].shape[2]
-    if "lod" not in _STATE["programs"]:
-        _STATE["programs"]["lod"] = ctx.program(vertex_shader=_LOD_VS, fragment_shader=_LOD_FS)
-    prog = _STATE["programs"]["lod"]
-    res = []
-    try:
-        h0, w0 = levels[0].shape[:2]
-        tex = ctx.texture((w0, h0), comps, levels[0].astype("f4").tobytes(), dtype="f4")
-        res.append(tex)
-        tex.build_mipmaps()  # allocates every level; overwritten with ours below
-        for i, lv in enumerate(levels[1:], start=1):
-            tex.write(np.ascontiguousarray(lv, dtype="f4").tobytes(), level=i)
-        tex.filter = (getattr(moderngl, _GL_MIN_FILTERS[filter]), moderngl.NEAREST)
-        tex.repeat_x = tex.repeat_y = True
-        pos = ctx.buffer(clip.astype("f4").tobytes())
-        tc = ctx.buffer(uv.astype("f4").tobytes())
-        res += [pos, tc]
-        vao = ctx.vertex_array(prog, [(pos, "4f", "in_pos"), (tc, "2f", "in_uv")])
-        res.append(vao)
-        targets = [ctx.renderbuffer((width, height), 4, dtype="f4") for _ in range(2)]
-        res += targets
-        fbo = ctx.framebuffer(targets)
-        res.append(fbo)
-        fbo.use()
-        ctx.enable_only(moderngl.NOTHING)
-        fbo.clear(-1.0, -1.0, -1.0, -1.0)
-        tex.use(0)
-        prog["tex"].value = 0
-        vao.render(moderngl.TRIANGLES, vertices=3 * len(clip))
-        out = []
-        for attachment in range(2):
-            buf = np.empty((height, width, 4), dtype="f4")
-            fbo.read_into(buf, components=4, attachment=attachment, dtype="f4")
-            out.append(buf.astype(np.float64))
-    finally:
-        for obj in reversed(res):
-            obj.release()
-    ids = out[0][..., 0].astype(np.int64)
+    return clip, uv, width, height, levels
+
+
+def _texture_frame(lod_target: np.ndarray, color_target: np.ndarray) -> GLTextureFrame:
+    """The two read-back render targets as a frame: NaN where nothing was drawn."""
+    out = lod_target.astype(np.float64)
+    ids = out[..., 0].astype(np.int64)
     uncovered = ids < 0
-    lod, level, color = out[0][..., 2], out[0][..., 1], out[1]
+    lod, level, color = out[..., 2], out[..., 1], color_target.astype(np.float64)
     for arr in (lod, level):
         arr[uncovered] = np.nan
     color[uncovered] = np.nan
