@@ -34,6 +34,6 @@ def test_browser_benchmark_quick_run_reports_every_figure(capsys):
         assert line in out, line
     # the other slider explorers: a key, a drag, the last picture after it
     for name in ("FilterExplorer: tilt", "PlaneExplorer: v1 x", "DepthPrecisionExplorer: near"):
-        for what in ("one key", "dragged", "last picture after a drag"):
+        for what in ("one key", "one key, full picture", "dragged", "last picture after a drag"):
             assert f"{name}{', ' if what != 'dragged' else ' '}{what}" in out, (name, what)
     assert "FilterExplorer: filter toggle" in out
