@@ -24,6 +24,7 @@ import traitlets
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.frames import changed_box, encode_png, frame_rgba
+from .common import later
 
 
 def drag_js() -> str:
@@ -113,6 +114,7 @@ class DragFigure(anywidget.AnyWidget):
         self._last = None  # the last picture sent: patches are computed against it
         self._ref = None  # reference mode: the picture patches are computed against
         self._posted = None  # the picture of the poster (reference: skip an unchanged one)
+        self._poster_rgba = None  # reference mode: the final picture waiting to be posted
         self._frame = 0
         #: called when the page asks for a new reference (a view opened later): pictures
         #: drawn ahead against the old one are then stale
@@ -181,7 +183,10 @@ class DragFigure(anywidget.AnyWidget):
                    "ref": self.ref_frame if self.reference else None, "caption": self.caption,
                    "deflate": self.deflate and bool(place and png)}, [png])  # fmt: skip
         if final and place is not None and self.reference:
-            self._post(rgba)
+            # the poster (a PNG: 10-15 ms to encode, 100+ kB to send) a moment later: the
+            # picture reaches the page first, and a second final meanwhile is posted once
+            self._poster_rgba = rgba
+            later(self._post_latest)
 
     def _patch(self, last, rgba, final: bool) -> tuple:
         """``(place, bytes)`` of the picture ``rgba`` for the page that shows ``last``
@@ -237,6 +242,11 @@ class DragFigure(anywidget.AnyWidget):
                    "caption": self.caption, "deflate": False}, [png])  # fmt: skip
         if self.on_reference is not None:
             self.on_reference()
+
+    def _post_latest(self) -> None:
+        rgba, self._poster_rgba = self._poster_rgba, None
+        if rgba is not None:
+            self._post(rgba)
 
     def _post(self, rgba) -> None:
         """Keep ``rgba`` (sent as a patch) as the poster, a PNG (what a re-opened view shows)."""
