@@ -37,3 +37,4 @@ def test_browser_benchmark_quick_run_reports_every_figure(capsys):
         for what in ("one key", "one key, full picture", "dragged", "last picture after a drag"):
             assert f"{name}{', ' if what != 'dragged' else ' '}{what}" in out, (name, what)
     assert "FilterExplorer: filter toggle" in out
+    assert "PlaneExplorer: f2, its first drag" in out

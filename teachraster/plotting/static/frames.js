@@ -241,6 +241,12 @@ export function mountFrames(el, opts) {
   slider.addEventListener("input", () => { stop(); show(Number(slider.value)); });
   slider.addEventListener("change", settle);
 
+  // The decoded frames of a fill no longer kept: their memory back at once (a bitmap's
+  // pixels otherwise wait for the garbage collector).
+  function release(groups) {
+    for (const frames of groups.values()) for (const f of frames) if (f) f.bitmap.close();
+  }
+
   // A new fill (or the first): new steps, new captions, new groups.
   async function reset(o) {
     stop();
@@ -248,7 +254,15 @@ export function mountFrames(el, opts) {
     if (s.fill) {
       s.cache.delete(s.fill);
       s.cache.set(s.fill, s.groups);
-      if (s.cache.size > CACHED_FILLS) s.cache.delete(s.cache.keys().next().value);
+      if (s.cache.size > CACHED_FILLS) {
+        const oldest = s.cache.keys().next().value;
+        if (oldest !== (o.fill ?? "")) {
+          release(s.cache.get(oldest));
+          s.cache.delete(oldest);
+        }
+      }
+    } else if (s.groups) {
+      release(s.groups);
     }
     s.fill = o.fill ?? "";
     s.groups = (s.fill && s.cache.get(s.fill)) || new Map();
@@ -273,6 +287,7 @@ export function mountFrames(el, opts) {
     } else if (o.poster && o.poster.byteLength) {
       const bitmap = await createImageBitmap(new Blob([o.poster], { type: "image/png" }));
       ctx.drawImage(bitmap, 0, 0);
+      bitmap.close();
       s.shown = s.want;
       canvas.dataset.step = String(s.want);
       canvas.dataset.gen = String(s.gen);

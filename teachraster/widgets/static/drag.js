@@ -82,7 +82,7 @@ function initialize({ model }) {
     } else {
       return;
     }
-    for (const v of store.views) v.counted_ahead(store.entries.size);
+    for (const v of store.views) v.showAheadCount(store.entries.size);
   });
   model.send({ type: "ready" });
 }
@@ -308,7 +308,7 @@ function render({ model, el }) {
   const view = {
     canPaint: (e) => ref.bitmap !== null && e.ref === ref.frame,
     // how many pictures drawn ahead the page keeps (for tests and benchmarks)
-    counted_ahead: (n) => (img.dataset.ahead = String(n)),
+    showAheadCount: (n) => (img.dataset.ahead = String(n)),
     paintAhead(e, raw) {
       putPatch(e.place, raw);
       setCaption(e.caption);
