@@ -27,7 +27,9 @@ Widgets
   footprint average (lesson 09).
 - :class:`LiveSlider` -- a slider in the page whose values reach the kernel coalesced (the
   explorers' tilt, near-plane and vertex sliders): the kernel renders the latest value,
-  never a queue.
+  never a queue; where the page has the picture of a position drawn ahead
+  (:mod:`teachraster.widgets.ahead`: every position, drawn while the kernel idles), it shows
+  it by itself and the kernel hears of the release only.
 - :class:`Predict` -- "predict, then see": a question that takes the student's answer (a
   choice or a number) before it reveals the answer, the explanation and its figure; headless
   runs show the answer at once.
