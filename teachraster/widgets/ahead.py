@@ -41,6 +41,27 @@ BATCH_S = 0.03
 RESTART_S = 0.4
 
 
+def draw_elsewhere(display, explorer, compute) -> tuple:
+    """Draw ``explorer``'s figure in the state ``compute()`` gives it, then put the explorer
+    back as it was (its attributes and artists; nothing is sent).
+
+    ``compute`` rebinds the explorer's attributes (``_compute_at``); the explorer has
+    ``_set_artists()`` and ``_info_html()``. Returns the figure's pixels, the caption and
+    the attributes ``compute`` rebound (the state those pixels show).
+    """
+    saved = dict(vars(explorer))
+    try:
+        compute()
+        explorer._set_artists()
+        display.draw()
+        state = {k: v for k, v in vars(explorer).items() if saved.get(k, saved) is not v}
+        return frame_rgba(display.fig), explorer._info_html(), state
+    finally:
+        for name, kept in saved.items():
+            setattr(explorer, name, kept)
+        explorer._set_artists()  # the artists back as on show (drawn at the next picture)
+
+
 def slider_positions(slider) -> np.ndarray:
     """The values a :class:`~teachraster.widgets.LiveSlider` can take, position by position.
 
@@ -163,18 +184,13 @@ class FramesAhead:
     def picture_at(self, value: float) -> tuple[np.ndarray, str]:
         """The figure's pixels and caption at ``value``, as a draft there shows them; the
         explorer's state and artists are put back as they were (nothing sent)."""
-        ex = self.explorer
-        saved = dict(vars(ex))
+        ex, which = self.explorer, [self.which] if len(self.sliders) > 1 else []
         self.slider.dragging = True  # as a draft at that value looks
         try:
-            ex._compute_at(value, *([self.which] if len(self.sliders) > 1 else []))
-            ex._set_artists()
-            self.display.draw()
-            rgba, caption = frame_rgba(self.display.fig), ex._info_html()
+            rgba, caption, _ = draw_elsewhere(
+                self.display, ex, lambda: ex._compute_at(value, *which)
+            )
         finally:
-            for name, kept in saved.items():
-                setattr(ex, name, kept)
-            ex._set_artists()  # the artists back at the value on show (drawn at the next)
             self.slider.dragging = False
         return rgba, caption
 
@@ -226,19 +242,9 @@ class TogglesAhead:
         """Draw one option's picture and keep it; the next at the next idle call."""
         if self.closed or not self.todo:
             return
-        option = self.todo.pop(0)
-        ex = self.explorer
-        saved = dict(vars(ex))
-        try:
-            ex._compute_at(self.where, option)
-            ex._set_artists()
-            self.display.draw()
-            state = {k: v for k, v in vars(ex).items() if saved.get(k, self) is not v}
-            self.kept[option] = frame_rgba(self.display.fig), ex._info_html(), state
-        finally:
-            for name, kept in saved.items():
-                setattr(ex, name, kept)
-            ex._set_artists()
+        option, ex = self.todo.pop(0), self.explorer
+        compute = lambda: ex._compute_at(self.where, option)  # noqa: E731
+        self.kept[option] = draw_elsewhere(self.display, ex, compute)
         later(self.step, idle_only=True)
 
     def close(self) -> None:
