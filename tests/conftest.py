@@ -37,6 +37,87 @@ settings.register_profile(
 settings.register_profile("ci", parent=settings.get_profile("teachraster"), derandomize=True)
 settings.load_profile("ci" if os.environ.get("CI") else "teachraster")
 
+# -- tiers ---------------------------------------------------------------------------------------
+#: ``python3 dev.py test --quick`` sets this: the edit loop, without the tiers below.
+QUICK = bool(os.environ.get("TEACHRASTER_QUICK"))
+#: What a test needs beyond Python and numpy, each a marker (declared in pyproject.toml) that
+#: the quick tier deselects. In the quick tier a test that starts one of these anyway fails
+#: at once, naming the marker it lacks (see ``_quick_tier_starts_nothing_heavy``).
+TIER_PROGRAMS = {
+    "notebook": ("ipykernel_launcher", "ipykernel"),
+    "browser": ("chromium", "playwright", "jupyter-lab", "jupyter-notebook", "jupyter_server"),
+    "nbgrader": ("nbgrader",),
+    "slow": (" -m venv", " -m pip", " wheel "),
+}
+
+
+def pytest_configure(config):
+    """One folder per test run, shared by its xdist workers (they inherit the environment):
+    the notebooks executed once per run keep their results there (``notebook_runs.py``)."""
+    import tempfile
+
+    if hasattr(config, "workerinput") or os.environ.get("TEACHRASTER_RUN_CACHE"):
+        return  # a worker: the controller made the folder
+    folder = tempfile.mkdtemp(prefix="teachraster-run-")
+    os.environ["TEACHRASTER_RUN_CACHE"] = folder
+    config._teachraster_run_cache = folder
+
+
+def pytest_unconfigure(config):
+    import shutil
+
+    folder = getattr(config, "_teachraster_run_cache", None)
+    if folder:
+        shutil.rmtree(folder, ignore_errors=True)
+        os.environ.pop("TEACHRASTER_RUN_CACHE", None)
+
+
+def examples(n: int) -> int:
+    """``max_examples`` for a hypothesis test: ``n`` in the full run, a quarter in the quick tier.
+
+    >>> examples(200) in (50, 200)
+    True
+    """
+    return max(5, n // 4) if QUICK else n
+
+
+def _tier_of(argv) -> str | None:
+    line = (
+        " " + " ".join(str(a) for a in (argv if isinstance(argv, (list, tuple)) else [argv])) + " "
+    )
+    for tier, needles in TIER_PROGRAMS.items():
+        if any(needle in line for needle in needles):
+            return tier
+    return None
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _quick_tier_starts_nothing_heavy():
+    """In the quick tier, starting a kernel, a browser, nbgrader, a venv or OpenGL is an error
+    that names the missing marker, so the quick tier stays quick as tests are added."""
+    if not QUICK:
+        yield
+        return
+    import subprocess
+
+    real_init = subprocess.Popen.__init__
+
+    def guarded_init(self, args, *rest, **kwargs):
+        tier = _tier_of(args)
+        if tier is not None:
+            raise RuntimeError(
+                f"this test starts {args!r}, which the quick tier does not run: "
+                f"mark it @pytest.mark.{tier}"
+            )
+        real_init(self, args, *rest, **kwargs)
+
+    subprocess.Popen.__init__ = guarded_init
+    try:
+        yield
+    finally:
+        subprocess.Popen.__init__ = real_init
+
+
 PERMUTATIONS = list(itertools.permutations(range(3)))
 METHODS = ("halfplane", "span")
 MODES = ("perspective", "affine")

@@ -6,21 +6,18 @@ that counts is the one the figure is drawn at (inches × dpi, measured when it i
 output, widget redraws and saved GIFs alike). The kernel-side probe of
 ``benchmarks/bench_notebooks.py`` records it, with the kernel's peak memory after every cell.
 
-The lessons are executed through ``tests/test_lessons.py``'s cached ``lesson()``, with the probe
-switched on by environment variables, so the suite runs each lesson once for both files (this
-module sorts first). Exercise notebooks run here, in their own folder.
+Every notebook is executed once per test run, with the probe on, by ``tests/notebook_runs.py``;
+this module, the lesson tests and the packaging tests all read that one execution.
 """
 
 from __future__ import annotations
 
-import functools
 import importlib.util
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 import pytest
+from notebook_runs import executed
 
 from teachraster.plotting.style import COLUMN_WIDTH_PX
 
@@ -45,34 +42,14 @@ EXERCISES = [f"exercises/{p.stem}" for p in sorted((NOTEBOOKS / "exercises").glo
 #: Notebooks whose figures are being narrowed on another branch: their width test is an
 #: expected failure until it is merged (a name whose figures already fit is reported as XPASS).
 PENDING_ELSEWHERE: set[str] = set()
+pytestmark = pytest.mark.notebook
 
 
-@functools.cache
 def probed(name: str) -> dict:
-    """Execute notebook ``name`` (relative to notebooks/, no suffix) once with the probe on."""
-    if name.startswith("exercises/"):
-        return bench.run_notebook(NOTEBOOKS / f"{name}.ipynb")
-    lessons_module = sys.modules.get("test_lessons") or _load(
-        "test_lessons", ROOT / "tests" / "test_lessons.py"
-    )
-    with tempfile.TemporaryDirectory() as tmp:
-        log = Path(tmp) / "probe.json"
-        env = bench.probe_environment(Path(tmp) / "ipython", log)
-        saved = {k: os.environ.get(k) for k in env}
-        os.environ.update(env)
-        try:
-            lessons_module.lesson(name)  # cached: test_lessons.py reuses this execution
-            if not log.exists():  # it ran earlier in this process, without the probe
-                lessons_module.lesson.__wrapped__(name)
-        finally:
-            for key, value in saved.items():
-                if value is None:
-                    os.environ.pop(key, None)
-                else:
-                    os.environ[key] = value
-        record = bench.read_probe(log)
-    # lesson() appends a cell that pickles the globals: its memory is the test's, not the class's
-    return {"figures": record["figures"], "peak_mib": max(record["rss_mib"][:-1] or [0.0])}
+    """Notebook ``name``'s probe record, from its one execution of this test run."""
+    run = executed(name)
+    assert not run.error, f"{name} failed to run:\n{run.error}"
+    return run.probe
 
 
 #: Widget figures being narrowed on another branch, by the titles of their panels: their

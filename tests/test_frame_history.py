@@ -274,6 +274,7 @@ def test_frame_inspector_under_ipympl_takes_mouse_clicks():
 
 
 # -- lesson 11 ------------------------------------------------------------------------------
+@pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")
 def test_lesson_11_tells_each_story():
     from test_lessons import lesson

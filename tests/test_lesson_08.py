@@ -6,6 +6,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
+pytestmark = pytest.mark.notebook
 NOTEBOOK = Path(__file__).resolve().parent.parent / "notebooks" / "08_antialiasing.ipynb"
 
 CHECKS = r"""

@@ -3,74 +3,23 @@
 The notebooks are written for a classroom, so they keep a visible check only where checking is
 the point of the cell. The facts a lesson relies on (our loop fills what the package fills,
 the formula gives the package's value, the figure shows what the text says) are asserted here,
-on the variables the executed notebook leaves behind. ``lesson(name)`` runs a notebook with
-nbclient, as ``tests/test_packaging.py`` does, then pickles every variable that can be pickled
-and hands them back as a namespace.
+on the variables the executed notebook leaves behind. ``lesson(name)``
+(``tests/notebook_runs.py``) hands back every variable that pickles, as a namespace, from the
+one execution of the notebook that every test of the run shares.
 """
 
 from __future__ import annotations
 
-import functools
-import pickle
-import tempfile
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from notebook_runs import lesson  # noqa: F401 (other test modules import it from here)
 
 ROOT = Path(__file__).resolve().parent.parent
 NOTEBOOK_DIR = ROOT / "notebooks"
 
-# Runs inside the kernel after the lesson: every global that pickles, each on its own, so one
-# unpicklable value (a widget, a figure) does not hide the others.
-_DUMP = """
-import pickle as _pickle, types as _types
-_kept = {}
-_SKIP = (_types.ModuleType, type, _types.FunctionType, _types.BuiltinFunctionType,
-         _types.MethodType)
-for _name, _value in list(globals().items()):
-    if _name.startswith("_") or isinstance(_value, _SKIP):
-        continue
-    try:
-        _kept[_name] = _pickle.dumps(_value)
-    except Exception:
-        pass
-with open(__PATH__, "wb") as _fh:
-    _pickle.dump(_kept, _fh)
-"""
-
-
-@functools.cache
-def lesson(name: str) -> SimpleNamespace:
-    """Execute ``notebooks/<name>.ipynb`` once and return its picklable globals."""
-    import os
-
-    import nbformat
-    from nbclient import NotebookClient
-
-    os.environ["MPLBACKEND"] = "Agg"  # the kernel inherits this environment
-    nb = nbformat.read(NOTEBOOK_DIR / f"{name}.ipynb", as_version=4)
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "globals.pickle"
-        nb.cells.append(nbformat.v4.new_code_cell(_DUMP.replace("__PATH__", repr(str(out)))))
-        NotebookClient(
-            nb,
-            timeout=600,
-            kernel_name="python3",
-            resources={"metadata": {"path": str(NOTEBOOK_DIR)}},
-        ).execute()
-        raw = pickle.loads(out.read_bytes())
-    values = {}
-    for key, blob in raw.items():
-        try:
-            values[key] = pickle.loads(blob)
-        except Exception:  # e.g. an instance of a class defined in the notebook
-            continue
-    return SimpleNamespace(**values)
-
-
-pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
+pytestmark = [pytest.mark.filterwarnings("ignore::DeprecationWarning"), pytest.mark.notebook]
 
 
 # -- 01 span tables ------------------------------------------------------------------------------

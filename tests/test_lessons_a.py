@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
-from test_lessons import lesson  # noqa: E402
+from notebook_runs import lesson  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster.plotting.pipeline_overview import PIPELINE_STAGES, plot_pipeline  # noqa: E402
@@ -94,6 +94,7 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
 # -- executed: the quoted numbers ---------------------------------------------------------------
 
 
+@pytest.mark.notebook
 def test_00_facing_and_the_two_methods():
     ns = lesson("00_tour")
     assert not ns.tri.front_facing  # "clockwise on screen": back-facing in OpenGL's convention
@@ -102,6 +103,7 @@ def test_00_facing_and_the_two_methods():
     assert list(order) == [0, 1, 2]  # "here also top to bottom"
 
 
+@pytest.mark.notebook
 def test_01_float_crossing_is_no_tie_rule_and_stepping():
     ns = lesson("01_span_tables")
     heights = np.diff(ns.xy[ns.order][:, 1])
@@ -119,6 +121,7 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
     assert 0 < ns.drift < 1e-12  # "a hair"
 
 
+@pytest.mark.notebook
 def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
     saved = 100 * (1 - ns.with_bailout / ns.without)
@@ -126,6 +129,7 @@ def test_02_bailout_prediction_is_the_printed_share():
     assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
 
 
+@pytest.mark.notebook
 def test_03_quoted_drift_and_the_perspective_caveat():
     ns = lesson("03_barycentric_and_plane_equations")
     assert 0.01 < ns.err["stepped, float32"][-1] < 0.1  # "a few hundredths"
@@ -133,6 +137,7 @@ def test_03_quoted_drift_and_the_perspective_caveat():
     assert ns.misfits["u"] > 0.01 and ns.misfits["u/w"] < 1e-12  # f/w is the plane, f is not
 
 
+@pytest.mark.notebook
 def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     ns = lesson("04_perspective_correct_interpolation")
     assert np.allclose(ns.t_ritschel, ns.t, atol=1e-15)
@@ -142,6 +147,7 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
 
 
+@pytest.mark.notebook
 def test_05a_cases_and_the_cube_steps():
     ns = lesson("05a_zbuffer")
     assert len(ns.ids) == 4  # "the four cases"
@@ -150,6 +156,7 @@ def test_05a_cases_and_the_cube_steps():
     assert sum(p + f for p, f in ns.cube_steps) == len(ns.cube.trace.fragment_triangle)
 
 
+@pytest.mark.notebook
 def test_05b_quoted_distances_and_resolutions():
     ns = lesson("05b_depth_precision")
     assert ns.z_back_error < 1e-12  # the notes' 1/z = (n + f - z') / (f n) undoes z'
@@ -165,6 +172,7 @@ def test_05b_quoted_distances_and_resolutions():
 # -- the lessons' widgets, driven here (the lessons leave them to the student) ----------------
 
 
+@pytest.mark.notebook
 def test_01_player_shows_the_trace_caption_and_coverage():
     from teachraster.widgets import FillPlayer
 
@@ -178,6 +186,7 @@ def test_01_player_shows_the_trace_caption_and_coverage():
     player.close()
 
 
+@pytest.mark.notebook
 def test_02_player_and_editor():
     from teachraster.widgets import FillPlayer, TriangleEditor
 
@@ -197,6 +206,7 @@ def test_02_player_and_editor():
     editor.close()
 
 
+@pytest.mark.notebook
 def test_03_plane_explorer_setup_follows_a_value():
     from teachraster.widgets.plane_explorer import PlaneExplorer, plane_system
 
@@ -208,6 +218,7 @@ def test_03_plane_explorer_setup_follows_a_value():
     explorer.close()
 
 
+@pytest.mark.notebook
 def test_04_player_toggle_and_tilt():
     from teachraster.widgets import FillPlayer, TexturedPlaneViewer
 
@@ -227,6 +238,7 @@ def test_04_player_toggle_and_tilt():
     viewer.close()
 
 
+@pytest.mark.notebook
 def test_05b_explorer_near_plane_and_reverse_z():
     from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
 

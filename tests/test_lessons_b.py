@@ -3,40 +3,23 @@
 The markdown of these lessons refers to the numbers its cells print ("the cell above prints …")
 instead of typing them; where the text still makes a claim about a number (a slope "between −1
 and −½", "tens of texels", "more than 32 bits"), it is checked here on the variables the
-executed lesson leaves behind (``tests/test_lessons.py``'s cached ``lesson()``, which
-``tests/test_figure_width.py`` runs with its probe first). The widgets that the lessons no
+executed lesson leaves behind (``tests/notebook_runs.py``'s ``lesson()``: one execution per
+test run, shared with every other test that reads the lesson). The widgets that the lessons no
 longer drive in front of the class are driven here.
 """
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from notebook_runs import lesson
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def _lessons_module():
-    if "test_lessons" in sys.modules:
-        return sys.modules["test_lessons"]
-    spec = importlib.util.spec_from_file_location(
-        "test_lessons", ROOT / "tests" / "test_lessons.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["test_lessons"] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-def lesson(name):
-    return _lessons_module().lesson(name)
-
-
-pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
+pytestmark = [pytest.mark.filterwarnings("ignore::DeprecationWarning"), pytest.mark.notebook]
 
 
 # -- 06 what accuracy costs ---------------------------------------------------------------------

@@ -8,6 +8,8 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from notebook_runs import NOTEBOOKS as NOTEBOOK_ROOT
+from notebook_runs import executed
 
 ROOT = Path(__file__).resolve().parent.parent
 NOTEBOOK_DIR = ROOT / "notebooks"
@@ -79,10 +81,12 @@ def execute(nb, cwd: Path, allow_errors: bool = False):
 
 
 # exercise notebooks run in test_exercise_teacher_version_passes_and_draws_every_check
+@pytest.mark.notebook
 @pytest.mark.parametrize("path", LESSONS, ids=LESSON_IDS)
-def test_notebook_runs_headless(path, monkeypatch):
-    monkeypatch.setenv("MPLBACKEND", "Agg")  # the kernel inherits this environment
-    execute(nbformat.read(path, as_version=4), path.parent)
+def test_notebook_runs_headless(path):
+    # the run every test of this session shares (tests/notebook_runs.py), in the lesson's folder
+    run = executed(path.relative_to(NOTEBOOK_ROOT).with_suffix("").as_posix())
+    assert not run.error, f"{path.name} failed:\n{run.error}"
 
 
 def _streams(nb) -> str:
@@ -121,16 +125,19 @@ def test_exercise_notebook_has_nbgrader_solutions_each_followed_by_a_check(path)
         assert nb.cells[i + 1].metadata["nbgrader"]["grade"] is True  # graded (issue 17)
 
 
+@pytest.mark.notebook
 @pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
-def test_exercise_teacher_version_passes_and_draws_every_check(path, monkeypatch):
-    monkeypatch.setenv("MPLBACKEND", "Agg")
-    nb = execute(nbformat.read(path, as_version=4), path.parent)
+def test_exercise_teacher_version_passes_and_draws_every_check(path):
+    run = executed(path.relative_to(NOTEBOOK_ROOT).with_suffix("").as_posix())
+    assert not run.error, f"{path.name} failed:\n{run.error}"
+    nb = run.notebook()
     n = len(_solution_cells(nb))
     text = _streams(nb)
     assert text.count("cases pass") == n and " fail" not in text, text
     assert _figures(nb) == n  # each check shows its report as a figure too
 
 
+@pytest.mark.notebook
 @pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
 def test_exercise_student_version_runs_and_says_not_implemented(path, tmp_path, monkeypatch):
     from teachraster.cli import main
