@@ -2,7 +2,9 @@
 """Developer commands for teachraster. Standard library only, so it runs on a fresh machine.
 
     python3 dev.py lab  [jupyter lab args...]   # e.g. --no-browser
-    python3 dev.py test [pytest args...]        # e.g. -k packaging
+    python3 dev.py test [pytest args...]        # everything CI runs, e.g. -k packaging
+    python3 dev.py test --quick [pytest args]   # the edit loop: no browser, kernel, nbgrader,
+                                                # OpenGL or build (a few minutes)
 
 Both create ./.venv if needed and `pip install -e` the project with the right extra. The
 install is skipped when pyproject.toml has not changed since the last one (a stamp file
@@ -66,13 +68,32 @@ def lab(args):
     os.execv(cmd[0], cmd)  # hand the terminal (and Ctrl-C) to JupyterLab
 
 
+#: The markers of the tiers the quick run leaves out (declared in pyproject.toml).
+HEAVY_TIERS = ("notebook", "browser", "nbgrader", "gl", "slow")
+
+
+def pytest_args(args):
+    """pytest's arguments: in parallel on every core unless asked otherwise; ``--quick``
+    deselects the heavy tiers and tells the tests so (fewer hypothesis examples)."""
+    args = list(args)
+    if "--quick" in args:
+        args.remove("--quick")
+        os.environ["TEACHRASTER_QUICK"] = "1"
+        args = ["-m", " and ".join(f"not {t}" for t in HEAVY_TIERS), *args]
+    if not any(a == "-n" or a.startswith(("-n=", "--numprocesses", "-p no:xdist")) for a in args):
+        # one worker per core, at least two: many tests wait on a kernel or a browser
+        args = ["-n", str(max(2, os.cpu_count() or 1)), "--dist", "loadgroup", *args]
+    return args
+
+
 def test(args):
     ensure_venv("dev")
     os.environ.setdefault("MPLBACKEND", "Agg")  # doctests and tests never open windows
     steps = {
         "ruff check": [PYTHON, "-m", "ruff", "check", "."],
         "ruff format": [PYTHON, "-m", "ruff", "format", "--check", "."],
-        "pytest": [PYTHON, "-m", "pytest", *args],  # last, so its summary closes the output
+        # last, so its summary closes the output
+        "pytest": [PYTHON, "-m", "pytest", *pytest_args(args)],
     }
     failed = [name for name, cmd in steps.items() if run(cmd) != 0]
     if failed:

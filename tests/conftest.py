@@ -35,7 +35,12 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow],
 )
 settings.register_profile("ci", parent=settings.get_profile("teachraster"), derandomize=True)
-settings.load_profile("ci" if os.environ.get("CI") else "teachraster")
+# The quick tier (``dev.py test --quick``): a quarter of the examples, for the edit loop.
+settings.register_profile("quick", parent=settings.get_profile("teachraster"), max_examples=25)
+if os.environ.get("TEACHRASTER_QUICK"):
+    settings.load_profile("quick")
+else:
+    settings.load_profile("ci" if os.environ.get("CI") else "teachraster")
 
 # -- tiers ---------------------------------------------------------------------------------------
 #: ``python3 dev.py test --quick`` sets this: the edit loop, without the tiers below.

@@ -13,6 +13,8 @@ require_gl()
 import teachraster as tr
 from teachraster.study.opengl_blend import gl_blend
 
+pytestmark = pytest.mark.gl
+
 W, H = 32, 32
 MODES = ["over", "premultiplied", "additive", "multiply"]
 CLEAR = (0.1, 0.2, 0.3, 0.4)

@@ -59,7 +59,10 @@ def _unavailable() -> str | None:
 WHY = _unavailable()
 if WHY and REQUIRED:
     raise RuntimeError(f"TEACHRASTER_REQUIRE_BROWSER is set but {WHY}")
-pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
 
 
 def _free_port() -> int:

@@ -18,7 +18,10 @@ import pytest
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_saved import _run_all
 
-pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
 
 NAME = "ipympl_fit.ipynb"
 CELLS = [

@@ -21,7 +21,10 @@ import nbformat
 import pytest
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 
-pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
 
 NAME = "saved_lesson.ipynb"
 CELLS = [

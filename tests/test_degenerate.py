@@ -9,7 +9,7 @@ import warnings
 
 import numpy as np
 import pytest
-from conftest import METHODS, MODES, explain, reference_coverage
+from conftest import METHODS, MODES, examples, explain, reference_coverage
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -140,7 +140,7 @@ def test_sliver_along_pixel_centres_takes_the_centres_of_its_left_edge():
     np.testing.assert_array_equal(cov, expected)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(
     st.lists(st.tuples(st.floats(1, 8), st.floats(1, 8)), min_size=3, max_size=3),
     st.integers(-6, 6),
@@ -238,7 +238,7 @@ def test_huge_coordinates_unsnapped_do_not_crash():
     assert cov.all()
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(
     st.lists(st.tuples(st.floats(-1e6, 1e6), st.floats(-1e6, 1e6)), min_size=3, max_size=3).map(
         np.array
@@ -252,7 +252,7 @@ def test_hypothesis_large_random_triangles_match_reference(xy):
         assert np.array_equal(got, want), explain(xy, got, want)
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=examples(80), deadline=None)
 @given(
     st.lists(st.tuples(st.floats(-20, 30), st.floats(-20, 30)), min_size=3, max_size=3).map(
         np.array

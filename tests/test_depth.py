@@ -6,6 +6,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -41,7 +42,7 @@ def gl_frustum(l, r, b, t, n, f) -> np.ndarray:
 
 
 # -- mappings ---------------------------------------------------------------------------------
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(nf=planes)
 def test_window_depth_endpoints_exact(nf):
     near, far = nf
@@ -49,7 +50,7 @@ def test_window_depth_endpoints_exact(nf):
     assert window_depth(far, near, far) == 1.0
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(nf=planes, seed=st.integers(0, 2**32 - 1))
 def test_window_depth_monotonic_even_in_floating_point(nf, seed):
     near, far = nf
@@ -84,7 +85,7 @@ def test_window_depth_outside_the_frustum_and_nan():
     assert np.isnan(window_depth([np.nan, 1.0], near, far)).tolist() == [True, False]
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(nf=planes, t=st.floats(0, 1))
 def test_seed_depth_is_the_seed_formula(nf, t):
     near, far = nf
@@ -116,7 +117,7 @@ def test_linear_depth():
 depths = st.lists(st.floats(0, 1), min_size=1, max_size=50).map(np.array)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(d=depths, fmt=st.sampled_from(DEPTH_FORMATS))
 def test_quantize_is_idempotent(d, fmt):
     q = quantize(d, fmt)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from test_plan import random_scene
@@ -79,7 +80,7 @@ def test_replay_reproduces_builtin_scenes(name, samples):
     check_every_pixel(frame, name)
 
 
-@settings(max_examples=25)
+@settings(max_examples=examples(25))
 @given(
     st.lists(st.tuples(st.integers(0, 12), st.integers(0, 10)), min_size=3, max_size=12),
     st.lists(st.sampled_from([0.2, 0.4, 0.4, 0.6]), min_size=4, max_size=4),

@@ -17,6 +17,8 @@ from teachraster.pipeline.debugging.overlays import passed_per_triangle
 from teachraster.pipeline.scenes import SCENES, get_scene
 from teachraster.study.opengl_counters import gl_counters
 
+pytestmark = pytest.mark.gl
+
 W, H = 64, 32  # powers of two: the window positions survive float32 exactly
 
 

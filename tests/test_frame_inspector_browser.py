@@ -13,7 +13,10 @@ import re
 import pytest
 from test_browser import WHY, _shut_down_kernels, _wait_changed, lab, page  # noqa: F401
 
-pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
 
 LESSON = "11_debugging_a_frame.ipynb"
 

@@ -11,13 +11,16 @@ import re
 import warnings
 
 import numpy as np
+from conftest import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
 import teachraster as tr
 
-FUZZ = settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FUZZ = settings(
+    max_examples=examples(120), deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
 
 INT_DTYPES = [np.int8, np.uint8, np.int16, np.uint16, np.int32, np.int64, np.uint64]
 DTYPES = [*INT_DTYPES, np.float16, np.float32, np.float64, np.longdouble, np.complex64,
@@ -231,7 +234,7 @@ SCENE = {
 }
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(data=st.data(), name=st.sampled_from(sorted(SCENE)))
 def test_fuzz_render_scene_arguments(data, name):
     """tr.render(scene, ...) with one random argument."""
@@ -252,7 +255,7 @@ PAINTER = {
 }
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(data=st.data(), name=st.sampled_from(sorted(PAINTER)))
 def test_fuzz_painter_arguments(data, name):
     """tr.painter with one random argument."""
@@ -266,7 +269,7 @@ def test_fuzz_painter_arguments(data, name):
         check_frame(frame, kwargs["attrs"])
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(xy=anything((3, 2), (4,), bound=1e308), bits=st.one_of(ints, st.none()))
 def test_fuzz_snap(xy, bits):
     """tr.snap: positions of any shape up to the float maximum, any sub-pixel precision."""
@@ -306,7 +309,7 @@ SMALL = {
 SMALL_CASES = [(f, p) for f, args in SMALL.items() for p in args]
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(300), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data(), case=st.sampled_from(SMALL_CASES))
 def test_fuzz_small_public_functions(data, case):
     """Every exported helper: a random value for one argument gives an error naming it (or a

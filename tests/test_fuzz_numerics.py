@@ -11,6 +11,7 @@ import warnings
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -49,7 +50,7 @@ def assert_within(values, lo, hi, where):
 
 
 # -- rasterize ---------------------------------------------------------------------------------
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(
     xy=st.lists(st.tuples(COORD, COORD), min_size=3, max_size=3),
     log_w=st.lists(LOG_W, min_size=3, max_size=3),
@@ -90,7 +91,7 @@ NDC = WIN.map(lambda x: 2 * x / SIZE - 1)  # x and y alike (the y flip changes n
 NDC_Z = st.floats(-2.0, 2.0)  # beyond ±1: the vertex is cut by the near or far plane
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(
     tris=st.lists(
         st.tuples(
@@ -200,7 +201,7 @@ def test_normalised_weights_divide_by_subnormal_totals():
 
 
 # -- the interpolation functions themselves --------------------------------------------------------
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(
     lam=st.lists(st.floats(-1e3, 1e3), min_size=3, max_size=3),
     log_w=st.lists(st.floats(-300.0, 300.0), min_size=3, max_size=3),
@@ -247,7 +248,7 @@ def test_extrapolate_keeps_the_unclamped_interpolation():
 HUGE = st.sampled_from([1.7e308, -1.7e308, 1e300, -1e-300, 0.0, 1.0])
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(
     xy=st.lists(st.tuples(COORD, COORD), min_size=3, max_size=3),
     values=st.lists(st.tuples(HUGE, HUGE), min_size=3, max_size=3),
@@ -269,7 +270,7 @@ def test_huge_values_extrapolate_and_average_without_warnings(xy, values, log_w,
         assert_within(got, values.min(axis=0), values.max(axis=0), (xy, values.tolist()))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(
     tris=st.lists(
         st.tuples(st.lists(st.tuples(NDC, NDC), min_size=3, max_size=3),

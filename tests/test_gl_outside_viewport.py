@@ -13,12 +13,15 @@ and agree everywhere when all vertices are inside the viewport.
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from gl_required import require_gl
 
 require_gl()
 
 import teachraster as tr  # noqa: E402
 from teachraster.study.opengl import gl_render  # noqa: E402
+
+pytestmark = pytest.mark.gl
 
 W, H = 64, 32
 

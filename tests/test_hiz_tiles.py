@@ -13,6 +13,7 @@ from unittest import mock
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from test_render import clip_from_window, random_clip
@@ -147,7 +148,7 @@ def test_random_scenes_identical_and_rejections_hidden(rng):
     assert rejected > 500  # the checks saw real rejections
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(
     seed=st.integers(0, 2**32 - 1),
     n=st.integers(1, 7),

@@ -13,6 +13,7 @@ from conftest import (
     MODES,
     centres,
     exact_barycentric,
+    examples,
     random_triangles,
     subpixel_coords,
     triangles,
@@ -153,7 +154,7 @@ def test_barycentric_reproduces_vertices():
         np.testing.assert_allclose(tr.barycentric(xy, xy.mean(axis=0)), [1 / 3] * 3, atol=1e-12)
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(
     st.lists(st.tuples(st.floats(-50, 50), st.floats(-50, 50)), min_size=4, max_size=4).map(
         np.array
@@ -398,7 +399,7 @@ def test_recentred_plane_is_accurate_far_from_the_origin():
     assert worst_absolute > 1e-7  # the lesson: the absolute form visibly loses precision
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(triangles(subpixel_coords(-1, 13)), st.sampled_from(MODES))
 def test_hypothesis_constant_vector_attribute_is_exact(xy, mode):
     """Hypothesis: any triangle, any mode, constant (3, k) attributes stay exactly constant."""

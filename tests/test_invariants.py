@@ -13,13 +13,15 @@ Example counts are kept small enough for the whole module to run in well under 3
 import itertools
 
 import numpy as np
-from conftest import METHODS, MODES, any_triangle, edge_exact, snapped_vertices
+from conftest import METHODS, MODES, any_triangle, edge_exact, examples, snapped_vertices
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import teachraster as tr
 
-FAST = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(
+    max_examples=examples(300), deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
 PERMUTATIONS = list(itertools.permutations(range(3)))
 SIZE = 16
 
@@ -87,7 +89,7 @@ def counts_of(tris, method, size):
     return counts
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(st.integers(0, 2**32 - 1), st.integers(2, 5), methods)
 def test_jittered_grid_covered_exactly_once(seed, n, method):
     """An n x n grid of quads, interior vertices jittered, each quad split on a random diagonal.
@@ -125,7 +127,7 @@ def test_jittered_grid_covered_exactly_once(seed, n, method):
     assert holes.size == 0, f"seed {seed}: cracks at {holes[:5].tolist()}"
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(
     st.integers(0, 2**32 - 1),
     st.integers(4, 9),

@@ -24,6 +24,8 @@ import teachraster as tr
 from teachraster.core.lines import wide_line_triangles
 from teachraster.study.opengl_lines import gl_lines, llvmpipe_deviation
 
+pytestmark = pytest.mark.gl
+
 W, H = 64, 32  # powers of two: the float32 viewport transform is exact on the 1/256 grid
 
 

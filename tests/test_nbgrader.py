@@ -26,6 +26,8 @@ import pytest
 from teachraster.cli import main
 from teachraster.exercises.student_version import student_text
 
+pytestmark = pytest.mark.nbgrader
+
 ROOT = Path(__file__).resolve().parent.parent
 EXERCISES = sorted((ROOT / "notebooks" / "exercises").glob("*.ipynb"))
 #: nbgrader's command, from this environment first (the venv's bin may not be on PATH).

@@ -49,6 +49,8 @@ from teachraster.study.opengl import (
     gl_sample_positions,
 )
 
+pytestmark = pytest.mark.gl
+
 W, H = 64, 32
 EPS32 = float(np.finfo(np.float32).eps)
 BAND = 1 / 256 + 1e-6  # px: pixel centres this close to an edge created by clipping may differ

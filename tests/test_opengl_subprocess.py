@@ -18,6 +18,8 @@ import teachraster as tr
 from teachraster.study import opengl_texture
 from teachraster.study.opengl import gl_texture_lod_subprocess
 
+pytestmark = pytest.mark.gl
+
 W, H = 48, 32
 CLIP = np.array(
     [

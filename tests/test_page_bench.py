@@ -14,10 +14,13 @@ from test_page_offline import WHY
 
 BENCH = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_browser.py"
 
-pytestmark = pytest.mark.skipif(
-    WHY is not None or shutil.which("jupyter", path=str(Path(sys.executable).parent)) is None,
-    reason=f"browser benchmark skipped: {WHY or 'JupyterLab is not installed'}",
-)
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(
+        WHY is not None or shutil.which("jupyter", path=str(Path(sys.executable).parent)) is None,
+        reason=f"browser benchmark skipped: {WHY or 'JupyterLab is not installed'}",
+    ),
+]
 
 
 def test_browser_benchmark_quick_run_reports_every_figure(capsys):

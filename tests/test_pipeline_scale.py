@@ -16,6 +16,7 @@ import warnings
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -24,7 +25,9 @@ from teachraster.pipeline.clipping import CLIPPED, DEFAULT_GUARD, clip_triangles
 from teachraster.pipeline.zbuffer import passed_on_arrival, resolve
 
 W, H = 20, 16
-SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(
+    max_examples=examples(60), deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
 
 
 def _strict(fn, *args, **kwargs):
@@ -234,7 +237,7 @@ def sequential(pixel, depth, depth_test):
     return winner, passed
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(
     frags=st.lists(
         st.tuples(st.integers(0, 5), st.sampled_from([0.0, 0.25, 0.5, 1.0])), max_size=40

@@ -9,6 +9,7 @@ from conftest import (
     METHODS,
     PERMUTATIONS,
     any_triangle,
+    examples,
     explain,
     float_coords,
     random_triangles,
@@ -104,7 +105,7 @@ def test_triangle_outside_image_covers_nothing():
             assert not raster(xy, W, H, method=method).any()
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=examples(300), deadline=None)
 @given(any_triangle)
 def test_hypothesis_span_equals_halfplane_equals_reference(xy):
     """Hypothesis (shrinks to a minimal counter-example): span == half-plane == reference."""
@@ -114,7 +115,7 @@ def test_hypothesis_span_equals_halfplane_equals_reference(xy):
         assert np.array_equal(got, want), f"{method}: " + explain(xy, got, want)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(triangles(tie_coords(5)), st.sampled_from(PERMUTATIONS))
 def test_hypothesis_ties_any_vertex_order(xy, perm):
     """On the half-pixel lattice every vertex order fills the reference pixels."""
@@ -124,7 +125,7 @@ def test_hypothesis_ties_any_vertex_order(xy, perm):
         assert np.array_equal(got, want), f"{method} {perm}: " + explain(xy, got, want)
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(triangles(subpixel_coords(-40, 50)))
 def test_hypothesis_partly_outside_subpixel_grid(xy):
     """Vertices on the 1/256 grid far beyond the image: clipping to the image is exact."""
@@ -134,7 +135,7 @@ def test_hypothesis_partly_outside_subpixel_grid(xy):
         assert np.array_equal(got, want), f"{method}: " + explain(xy, got, want)
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(triangles(float_coords(-5.0, 20.0)))
 def test_hypothesis_unsnapped_methods_agree(xy):
     """With subpixel_bits=None (raw floats) the two methods still agree with each other."""

@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -130,7 +131,7 @@ def test_level_sizes_follow_the_floor_rule():
 
 
 # -- level of detail --------------------------------------------------------------------------
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(
     d=st.lists(st.floats(-2, 2, allow_nan=False, allow_subnormal=False), min_size=4, max_size=4),
     h=st.integers(1, 512),
@@ -223,7 +224,7 @@ def test_a_pyramid_can_be_given_and_may_stop_early(rng):
     )
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(value=st.floats(-5, 5), lam=st.floats(-3, 10), filter=st.sampled_from(MIP))
 def test_constant_textures_stay_constant(value, lam, filter):
     tex = np.full((6, 10), value)

@@ -14,6 +14,7 @@ from conftest import (
     KINDS,
     any_triangle,
     edge_exact,
+    examples,
     explain,
     random_triangles,
     raster,
@@ -69,7 +70,7 @@ def test_large_image_several_top_blocks_match():
         assert np.array_equal(raster(xy, 203, 141, method="tiled"), want), xy.tolist()
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=examples(300), deadline=None)
 @given(any_triangle, st.sampled_from(SIZES))
 def test_hypothesis_tiled_equals_reference(xy, sizes):
     want = reference_coverage(xy, W, H)
@@ -77,7 +78,7 @@ def test_hypothesis_tiled_equals_reference(xy, sizes):
     assert np.array_equal(got, want), explain(xy, got, want)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(triangles(tie_coords(7)), st.sampled_from([(4, 2, 1), (2, 1), (8, 2)]))
 def test_hypothesis_ties_on_block_corners(xy, sizes):
     """Half-pixel lattice: edges run through block corners' centres all the time."""
@@ -94,7 +95,7 @@ def _shaded_pair(xy, w, z, values, size, interpolation, sizes, bits):
     return half, tr.rasterize(tri, *size, method="tiled", block_sizes=sizes, **kw)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(
     xy=st.lists(st.tuples(st.floats(-30, 110), st.floats(-30, 90)), min_size=3, max_size=3),
     log_w=st.lists(st.floats(-3, 3), min_size=3, max_size=3),

@@ -12,6 +12,8 @@ require_gl()
 import teachraster as tr
 from teachraster.study.opengl import gl_render
 
+pytestmark = pytest.mark.gl
+
 W, H = 160, 96  # several 64-blocks, clipped at the right and bottom borders
 
 

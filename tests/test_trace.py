@@ -11,6 +11,7 @@ from conftest import (
     MODES,
     any_triangle,
     edge_exact,
+    examples,
     random_triangles,
     snapped_vertices,
     top_left,
@@ -375,7 +376,7 @@ def test_trace_of_a_256_square_image_is_small(method):
     assert t.step(len(t) // 2).caption  # captions are made on demand, even here
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(any_triangle, st.sampled_from(METHODS), st.sampled_from([None, "back", "front"]))
 def test_hypothesis_trace_final_coverage_matches(xy, method, cull):
     """Hypothesis: for any triangle, method and culling, the trace ends at the fill's coverage."""

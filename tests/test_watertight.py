@@ -9,7 +9,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from conftest import METHODS, edge_exact, snapped_vertices
+from conftest import METHODS, edge_exact, examples, snapped_vertices
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -236,7 +236,7 @@ def test_jittered_grid_covers_every_pixel_once(grid, method):
         checked += 1
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(st.integers(0, 2**32 - 1), st.sampled_from(["subpixel", "centre"]))
 def test_hypothesis_jittered_grid_mixing_methods(seed, grid):
     """A jittered mesh filled with span and half-plane alternately is still watertight."""
@@ -252,7 +252,7 @@ def test_hypothesis_jittered_grid_mixing_methods(seed, grid):
     np.testing.assert_array_equal(counts, np.ones((10, 12), dtype=int))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(st.tuples(st.integers(-2, 18), st.integers(-2, 16)), st.integers(1, 4))
 def test_hypothesis_lattice_fan_shared_vertex_on_any_centre(cell, half):
     """The lattice fan around any pixel centre (spokes through centres) is watertight."""
