@@ -195,9 +195,10 @@ class Frame:
     sample_triangle_id : (H, W, S) int64 or None
         With ``samples`` other than 1: the input triangle each sample shows, -1 none.
         ``triangle_id``, ``depth`` and ``attrs`` then describe the triangle owning most of
-        the pixel's samples (ties: the earlier), evaluated once for the pixel.
+        the pixel's samples (ties: the earlier), evaluated once for the pixel (``depth``: of
+        the samples holding a written depth, which differ with ``depth_write=False``).
     sample_depth : (H, W, S) float64 or None
-        The depth buffer, one depth per sample, NaN where uncovered.
+        The depth buffer, one depth per sample, NaN where no depth was written.
     sample_attrs : (H, W, S, k) float64 or None
         The attributes each sample holds: those of its triangle, evaluated once per pixel
         (at the centre, extrapolated when outside), NaN where uncovered.
