@@ -482,16 +482,8 @@ class GLRenderer:
         self.release()
 
 
-def gl_render(
-    clip,
-    width: int,
-    height: int,
-    *,
-    attrs=None,
-    depth_test: bool = True,
-    cull: str | None = None,
-    depth_write=True,
-) -> GLFrame:
+def gl_render(clip, width: int, height: int, *, attrs=None, depth_test: bool = True,
+              cull: str | None = None, depth_write=True) -> GLFrame:  # fmt: skip
     """Draw clip-space triangles with OpenGL and read back ids, attributes and depth.
 
     The vertices go straight to ``gl_Position`` (with y negated, see the module docstring),
