@@ -574,7 +574,7 @@ def passed_colours(tables, tests: SampleTests, pairs, offsets, width, centroid):
     evaluated once per pair exactly as the frame's ``sample_attrs`` (the same function on
     the same pair: the same bits). ``centroid`` is the edge set-up, or None."""
     pair_tri, pair_pixel, pair_mask = pairs
-    used = np.unique(tests.pair[tests.passed])
+    used = np.flatnonzero(np.bincount(tests.pair[tests.passed], minlength=len(pair_tri)))
     tri, pix = pair_tri[used], pair_pixel[used]
     covers = _pair_covers(pair_mask[used], len(offsets))
     at_centroid = None

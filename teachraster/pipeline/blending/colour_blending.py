@@ -133,14 +133,23 @@ def write_colour(src: np.ndarray, dst: np.ndarray, state: BlendState) -> np.ndar
     fragments go through the blend equation. An 8-bit target clamps the source first
     and stores the result rounded (:func:`store_colour`).
     """
+    return _write(src, dst, state)[0]
+
+
+def _write(src, dst, state: BlendState):
+    """:func:`write_colour`, and how many of the fragments went through the equation."""
     if state.color_format != "float64":
         src = np.clip(src, 0.0, 1.0)  # GL clamps to a normalised target's range first
+    mixed = 0
     if state.blending:
         mix = ~_replaces(src, state)
-        if mix.any():
+        mixed = int(np.count_nonzero(mix))
+        if mixed == len(src):
+            src = apply_blend(src, dst, *state.factors)
+        elif mixed:
             src = src.copy()
             src[mix] = apply_blend(src[mix], dst[mix], *state.factors)
-    return store_colour(src, state.color_format)
+    return store_colour(src, state.color_format), mixed
 
 
 def _replaces(src: np.ndarray, state: BlendState) -> np.ndarray:
@@ -173,8 +182,7 @@ def blend_layers(slot: np.ndarray, n_slots: int, src: np.ndarray, state: BlendSt
     for k in range(len(bounds) - 1):
         here = frags[bounds[k] : bounds[k + 1]]
         p = slot[here]
-        buffer[p] = write_colour(src[here], buffer[p], state)
-        mixed = int((~_replaces(src[here], state)).sum())
+        buffer[p], mixed = _write(src[here], buffer[p], state)
         blended += mixed
         on_something += mixed if k else 0
     return buffer, blended, on_something

@@ -39,6 +39,7 @@ import numpy as np
 
 from ..rasterization.batched_fill import Fragments
 from .depth import quantize
+from .zbuffer import running_min
 
 #: Side of a Hi-Z tile, in pixels (hardware uses 8×8 or larger).
 HIZ_TILE = 8
@@ -206,7 +207,7 @@ class _Arrivals:
                                                                np.inf)  # fmt: skip
         longest = int(self.count.max(initial=0))
         sorted_key = key[self.order] if longest > 1 else None
-        self.running = _running_min(sorted_key, written, longest)
+        self.running = running_min(sorted_key, written, longest)
         before = np.empty(m)  # the buffer each fragment found: the running minimum so far
         before[1:] = self.running[:-1]
         before[self.start[self.count > 0]] = np.inf  # a pixel's first fragment: empty
@@ -268,15 +269,3 @@ class _Arrivals:
             earlier = (k < count) & (self.source_tri[self.order[at]] < tri)  # earlier triangles
             before = np.where(earlier, self.running[at], before)  # running min: the last
         return np.where(inside, before, -np.inf).max(axis=1)
-
-
-def _running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.ndarray:
-    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input) no
-    longer than ``longest``: log2(longest) doubling steps, each one pass over the array."""
-    out = values.copy()
-    step = 1
-    while step < longest:
-        same = group_key[step:] == group_key[:-step]
-        np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
-        step *= 2
-    return out

@@ -76,10 +76,9 @@ def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None) -> np.n
     ``glDepthMask``; None: all write). A fragment that does not write is still tested,
     and leaves the buffer as it was.
 
-    Fragments are grouped by pixel (a stable sort keeps drawing order within a pixel) and a
-    running maximum of integer keys is taken: larger key = nearer (depth *ranks*, so equal
-    depths tie), offset per pixel so that nothing leaks from one pixel into the next; a
-    fragment that does not write contributes its pixel's "nothing" key (the farthest).
+    Fragments are grouped by pixel (a stable sort keeps drawing order within a pixel) and
+    the buffer each one found is the running minimum of the depths written before it in
+    its group (:func:`running_min`; +inf for a fragment that writes nothing).
 
     >>> passed_on_arrival(np.array([0, 0, 0]), np.array([0.5, 0.7, 0.6]),
     ...                   np.array([False, True, True])).tolist()
@@ -90,16 +89,32 @@ def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None) -> np.n
         return np.ones(0, dtype=bool)
     order = np.argsort(pixel, kind="stable")
     pix = pixel[order]
-    group = np.cumsum(np.r_[False, pix[1:] != pix[:-1]]).astype(np.int64)
-    _, rank = np.unique(depth[order], return_inverse=True)  # equal depths, equal rank
-    base = group * (m + 1)
-    key = base + (m - rank.reshape(-1))  # in (base, base + m]: later groups always exceed
-    written = key if writes is None else np.where(np.asarray(writes)[order], key, base)
-    best = np.maximum.accumulate(written)
-    before = np.maximum(np.r_[-1, best[:-1]], base)  # the buffer this fragment found
+    ranked = depth[order]
+    written = ranked if writes is None else np.where(np.asarray(writes)[order], ranked, np.inf)
+    first = np.flatnonzero(np.r_[True, pix[1:] != pix[:-1]])
+    longest = int(np.diff(np.r_[first, m]).max())
+    buffer = np.empty(m)  # the buffer each fragment found: the running minimum before it
+    buffer[1:] = running_min(pix, written, longest)[:-1]
+    buffer[first] = np.inf  # a pixel's first fragment finds it empty
     passed = np.empty(m, dtype=bool)
-    passed[order] = key > before
+    passed[order] = ranked < buffer
     return passed
+
+
+def running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.ndarray:
+    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input) no
+    longer than ``longest``: log2(longest) doubling steps, each one pass over the array.
+
+    >>> running_min(np.array([0, 0, 0, 1, 1]), np.array([3.0, 1.0, 2.0, 5.0, 4.0]), 3).tolist()
+    [3.0, 1.0, 1.0, 5.0, 4.0]
+    """
+    out = values.copy()
+    step = 1
+    while step < longest:
+        same = group_key[step:] == group_key[:-step]
+        np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
+        step *= 2
+    return out
 
 
 def last_written(pixel: np.ndarray, passed: np.ndarray, writes, n_pixels: int):
