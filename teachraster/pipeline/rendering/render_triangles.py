@@ -394,7 +394,7 @@ def render(
                      depth_format=depth_format, interpolation=interpolation, force=force,
                      trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
     clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
-    depth_test, trace, forced = a.depth_test, a.trace, a.forced
+    forced = a.forced
     offsets, centroid = _check_samples(samples, centroid)
     mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
     blending = check_blend(blend, depth_write, clear_color, attrs, color_format)
@@ -406,28 +406,38 @@ def render(
     if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
         return _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
                                     centroid, (blending, writes))  # fmt: skip
+    derivatives = (mode, None if where is None else where[clipped.parent])
+    return _render_single(clipped, window, culled, (clipping, culling), a, derivatives,
+                          (blending, writes))  # fmt: skip
+
+
+def _render_single(clipped, window, culled, effects, a, derivatives, colour) -> Frame:
+    """The one-sample rest of :func:`render`, after clipping, the viewport and culling
+    (``a``: the checked arguments; ``derivatives``: the mode and the pieces that want them;
+    ``colour``: the blend state and the depth masks)."""
+    blending, writes = colour
+    width, height, forced, interpolation = a.width, a.height, a.forced, a.interpolation
     # with Hi-Z: hidden blocks never become fragments (blending keeps them all, marked)
     frags, cut = _fill(window, culled, a, writes, blending.blending)
     visible, depth_testing = depth_stage(
-        frags, window, width, height, depth_test, depth_format, forced, writes
+        frags, window, width, height, a.depth_test, a.depth_format, forced, writes
     )
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
     ddx, ddy, quads, derivs = derivatives_stage(
-        frags, visible, clipped, (width, height), mode,
-        None if where is None else where[clipped.parent], interpolation, forced, trace,
+        frags, visible, clipped, (width, height), *derivatives, interpolation, forced, a.trace,
     )  # fmt: skip
-    effects = (clipping, culling, depth_testing, perspective, attributes, derivs)
+    effects = (*effects, depth_testing, perspective, attributes, derivs)
     plan = _plan(cut, frags, visible, effects, forced)
-    record = trace and _record(clipped, window, culled, frags, visible, quads, cut, a,
-                               (writes, blending))  # fmt: skip
+    record = a.trace and _record(clipped, window, culled, frags, visible, quads, cut, a,
+                                 (writes, blending))  # fmt: skip
     frame = _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
     if not blending.blending:
         return with_colour(frame, blending)
     # the colour of every fragment that passed, evaluated as the attributes are
     passed = np.flatnonzero(visible.passed)
-    src = fragment_values(frags, passed, clipped, a.interpolation, forced)
+    src = fragment_values(frags, passed, clipped, interpolation, forced)
     return with_colour(frame, blending, *blend_stage(visible.pixel[passed], src,
                                                      (height, width), 1, blending))  # fmt: skip
 
