@@ -259,3 +259,17 @@ def test_srgb_to_linear_of_negative_values_does_not_warn():
         back = tr.linear_to_srgb([-0.5, 0.2])
     np.testing.assert_allclose(out[:3], np.array([-0.5, -0.06, -0.01]) / 12.92)
     assert np.isfinite(out).all() and np.isfinite(back).all()
+
+
+def test_frame_inspector_shows_a_scene_as_glass_with_its_colours():
+    from teachraster.widgets.frame_inspector import FrameInspector
+
+    w = FrameInspector("intersecting_triangles", 32, 24, backend="image", glass=True)
+    try:
+        w.row.value, w.col.value = 12, 16
+        assert w.history.blend is not None and "before -&gt; fragment" in w.table.value
+        np.testing.assert_array_equal(w.history.replay_color()[0], w.frame.color[12, 16])
+        w.glass.value = False  # back to the shaded scene: no colour buffer
+        assert w.history.blend is None
+    finally:
+        w.close()
