@@ -4,6 +4,7 @@ after in the pixel history, and the 8-bit sRGB target (issue 28)."""
 
 from __future__ import annotations
 
+import pickle
 import warnings
 
 import numpy as np
@@ -100,6 +101,9 @@ def test_blending_off_is_the_fragment_colour_over_the_clear_colour():
         np.testing.assert_array_equal(per_sample(frame, "color"), want)
         np.testing.assert_array_equal(frame.color, want.mean(axis=2))
         assert "blending" not in [e.name for e in frame.plan]  # nothing was blended
+        fresh = tr.render(clip, W, H, attrs=colour, samples=samples, clear_color=CLEAR)
+        again = pickle.loads(pickle.dumps(fresh))  # built on first read, still picklable
+        np.testing.assert_array_equal(again.color, frame.color)
         # the depth mask is independent of blending
         glass = tr.render(clip, W, H, attrs=colour, samples=samples, depth_write=False)
         assert np.isnan(glass.depth).all() and glass.color is not None

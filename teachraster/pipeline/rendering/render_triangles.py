@@ -453,20 +453,33 @@ def with_colour(frame, state, color=None, sample_color=None, effect=None) -> Fra
     # per-sample arrays of a multisampled frame.
     out = copy.copy(frame)
     if color is None:
-        ids, values = "triangle_id", "attrs"
-        if frame.samples is not None:
-            ids, values = "sample_triangle_id", "sample_attrs"
-
-        def written():  # the fragment each pixel (sample) shows, over the clear colour
-            return replaced_colour(getattr(out, ids) >= 0, getattr(out, values), state)
-
-        color = written if frame.samples is None else (lambda: out.sample_color.mean(axis=2))
+        written = _Written(out, state)
+        color = written if frame.samples is None else _Written(out, state, resolve=True)
         sample_color = None if frame.samples is None else written
     else:
         object.__setattr__(out, "plan", Plan((*frame.plan.effects, effect)))
     object.__setattr__(out, "color", color)
     object.__setattr__(out, "sample_color", sample_color)
     return out
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class _Written:
+    """The colour buffer without blending, built on first read (a callable the frame keeps,
+    picklable): each pixel (sample) the colour of the fragment it shows, over the clear
+    colour; ``resolve``: the mean of the samples."""
+
+    frame: Frame
+    state: object
+    resolve: bool = False
+
+    def __call__(self) -> np.ndarray:
+        f = self.frame
+        if self.resolve:
+            return f.sample_color.mean(axis=2)
+        if f.samples is None:
+            return replaced_colour(f.triangle_id >= 0, f.attrs, self.state)
+        return replaced_colour(f.sample_triangle_id >= 0, f.sample_attrs, self.state)
 
 
 def _fill(window, culled, a, writes=None, keep_all=False):
