@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import teachraster as tr
-from teachraster.pipeline.blending.colour_blending import passed_with_writes
+from teachraster.pipeline.visibility.zbuffer import passed_on_arrival
 
 RED, BLUE = [1.0, 0.0, 0.0, 0.5], [0.0, 0.0, 1.0, 0.5]
 
@@ -119,7 +119,7 @@ def test_passed_with_writes_matches_a_loop():
         want.append(ok)
         if ok and w:
             buffer[p] = d
-    assert passed_with_writes(pixel, depth, writes).tolist() == want
+    assert passed_on_arrival(pixel, depth, writes).tolist() == want
 
 
 def test_clear_color_and_uncovered_pixels():
@@ -154,9 +154,10 @@ def test_msaa_blending_per_sample_then_resolve():
     np.testing.assert_allclose(frame.color[..., 3], 0.25 * frac)
 
 
-def test_without_blend_there_is_no_colour_buffer():
-    frame = tr.render(quad(-1, -1, 1, 1), 2, 2, attrs=coloured(RED))
-    assert frame.color is None and "blending" not in [e.name for e in frame.plan]
+def test_without_rgba_attributes_there_is_no_colour_buffer():
+    frame = tr.render(quad(-1, -1, 1, 1), 2, 2, attrs=coloured(RED)[..., :3])
+    assert frame.color is None and frame.sample_color is None
+    assert "blending" not in [e.name for e in frame.plan]
 
 
 def test_bad_blend_arguments_name_themselves():
@@ -168,7 +169,9 @@ def test_bad_blend_arguments_name_themselves():
     with pytest.raises(ValueError, match="depth_write"):
         tr.render(clip, 2, 2, attrs=attrs, blend="over", depth_write=[True])
     with pytest.raises(ValueError, match="depth_write"):
-        tr.render(clip, 2, 2, attrs=attrs, depth_write=False)
+        tr.render(clip, 2, 2, attrs=attrs, depth_write=np.array([1, 0]))
+    with pytest.raises(ValueError, match="color_format"):
+        tr.render(clip, 2, 2, attrs=attrs, color_format="rgba16f")
     with pytest.raises(ValueError, match="clear_color"):
         tr.render(clip, 2, 2, attrs=attrs, blend="over", clear_color=(0, 0, 0))
     frame = tr.render(clip, 2, 2, attrs=attrs, blend=("ONE", "ZERO"))

@@ -282,6 +282,9 @@ def test_lesson_11_tells_each_story():
 
     ns = lesson("11_debugging_a_frame")
     assert ns.shown[0] == ns.frame.triangle_id[ns.row, ns.col]
+    glass = [r for r in ns.g if r.outcome == "passed"]  # the colour before and after
+    assert len(glass) == 2 and glass[0].color_before == (1.0, 1.0, 1.0, 1.0)
+    assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
     assert ns.tie[1].outcome == "failed_depth" and ns.tie[1].depth == ns.tie[1].depth_before

@@ -79,3 +79,21 @@ def test_depth_test_off_complexity_equals_overdraw_in_gl_too():
     clip = layered_scene(np.random.default_rng(7), 8)
     gl = gl_counters(clip, W, H, samples=4, depth_test=False)
     np.testing.assert_array_equal(gl.depth_complexity, gl.overdraw)
+
+
+@pytest.mark.parametrize("samples", [1, 4])
+def test_depth_writes_off_match_llvmpipe_counters(samples):
+    """glDepthMask(GL_FALSE) per triangle: a triangle that writes no depth is tested but
+    does not hide what follows, so the stencil (depth complexity) and GL_SAMPLES_PASSED
+    count the later fragments behind it too, as ``depth_write=False`` does."""
+    rng = np.random.default_rng(2300 + samples)
+    changed = 0
+    for index in range(12):
+        clip = layered_scene(rng, int(rng.integers(3, 10)))
+        writes = rng.random(len(clip)) < 0.5
+        frame = compare(clip, samples, f"scene {index} writes {writes.tolist()}",
+                        depth_write=writes)  # fmt: skip
+        written = tr.render(clip, W, H, samples=samples, depth_format="float32", trace=True)
+        changed += not np.array_equal(written.overlay("depth_complexity"),
+                                      frame.overlay("depth_complexity"))  # fmt: skip
+    assert changed >= 3  # the masks changed the counts, and GL agreed

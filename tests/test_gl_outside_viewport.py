@@ -3,11 +3,14 @@
 llvmpipe clips triangles against the viewport in x and y (Mesa's draw module, set up in
 ``llvmpipe_create_context`` with "clipping - enabled, with no guardband"). The new vertices
 are computed in float32 and snapped again, so a clipped edge moves by up to about 1/512 px, and
-a pixel centre lying *exactly* on such an edge may be decided the other way. teachraster clips
-only against the near and far planes and rasterises the rest of the triangle as it is (an
-unlimited guard band, as Direct3D's rules and hardware guard bands do): clipping never changes
-which centres are covered. So the two agree on every centre that is not exactly on an edge,
-and agree everywhere when all vertices are inside the viewport.
+a pixel centre or sample lying on such an edge, or within a snapping step of it, may be
+decided the other way: with vertices on half pixels that is exactly on an edge; with
+vertices anywhere on the 1/256 grid, or off it, samples up to 0.0015 px inside an edge were
+seen to differ. teachraster clips only against the near and far planes and rasterises the
+rest of the triangle as it is (an unlimited guard band, as Direct3D's rules and hardware
+guard bands do): clipping never changes which centres are covered. So the two agree on every
+centre and sample farther than 1/256 px from an edge, and agree everywhere when all vertices
+are inside the viewport.
 """
 
 from __future__ import annotations
@@ -19,7 +22,7 @@ from gl_required import require_gl
 require_gl()
 
 import teachraster as tr  # noqa: E402
-from teachraster.study.opengl import gl_render  # noqa: E402
+from teachraster.study.opengl import gl_render, gl_render_samples  # noqa: E402
 
 pytestmark = pytest.mark.gl
 
@@ -40,6 +43,15 @@ def differing(win: np.ndarray) -> np.ndarray:
     ours = tr.render(clip_space(win), W, H).coverage
     gl = gl_render(clip_space(win), W, H, depth_test=False).triangle_id >= 0
     return np.argwhere(ours != gl)
+
+
+def edge_distance(win: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """Distance (px) of each point (x, y) from the nearest of the triangle's edge lines."""
+    d = np.full(len(points), np.inf)
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        length = float(np.hypot(*(win[b] - win[a])))
+        d = np.minimum(d, np.abs(tr.edge_function(win[a], win[b], points)) / length)
+    return d
 
 
 def on_an_edge(win: np.ndarray, rows_cols: np.ndarray) -> np.ndarray:
@@ -74,3 +86,27 @@ def test_outside_the_viewport_only_centres_exactly_on_an_edge_differ():
         assert on_an_edge(win, d).all(), (win.tolist(), d.tolist())
         seen += len(d)
     assert seen > 0  # the case exists: llvmpipe's viewport clipping does move edges
+
+
+def test_outside_the_viewport_centres_and_samples_differ_only_within_a_snapping_step():
+    """Vertices anywhere (on the 1/256 grid, or off it), pixel centres and the 4 standard
+    samples: every difference lies within 1/256 px of an edge line, and some do not lie
+    exactly on one (the note used to say "only exactly on an edge")."""
+    rng = np.random.default_rng(5)
+    pattern = tr.sample_pattern(4)
+    near = []
+    for k in range(120):
+        lo, hi = (-40, -30), (W + 40, H + 30)
+        win = np.column_stack([rng.uniform(lo[0], hi[0], 3), rng.uniform(lo[1], hi[1], 3)])
+        if k % 2:
+            win = np.round(win * 256) / 256
+        clip = clip_space(win)
+        ours = tr.render(clip, W, H, samples=4, depth_test=False).sample_triangle_id >= 0
+        gl = gl_render_samples(clip, W, H, samples=4, depth_test=False).sample_triangle_id >= 0
+        r, c, s = np.nonzero(ours != gl)
+        near += edge_distance(win, np.c_[c + pattern[s, 0], r + pattern[s, 1]]).tolist()
+        r, c = differing(win).T
+        near += edge_distance(win, np.c_[c + 0.5, r + 0.5]).tolist()
+    near = np.array(near)
+    assert len(near) > 0 and (near <= 1 / 256).all(), near.max()
+    assert (near > 0).any()  # not only exactly on an edge

@@ -18,6 +18,11 @@ context can be created. What llvmpipe does that the tests must allow for (found 
   attributes, with the ratio of the vertex w. Tolerances are ``max(floor, c * eps32 * kappa ...)``
   with the floors of the issue (1e-5 of the attribute's size, 1e-6 in depth).
 
+- **Centroid.** With ``centroid`` llvmpipe evaluates a partly covered pixel's fragment at
+  its first covered sample even where the pixel centre is covered (GL allows any point of
+  the covered area); teachraster keeps a covered centre: they differ at about half the
+  partly covered pixels (``test_centroid_llvmpipe_takes_the_first_covered_sample``).
+
 - **Texture level of detail.** llvmpipe's λ (``textureQueryLod``) uses coarse quad
   derivatives aligned like ours and an approximate log2: within 0.05 of ours on random
   floors (the issue allows 0.15 at 98 % of the pixels).
@@ -617,6 +622,42 @@ def test_per_sample_ids_with_depth_test():
             ties += int(differ.sum())
         compared += int((frame.sample_triangle_id >= 0).sum())
     assert ties <= 1e-3 * compared, (ties, compared)
+
+
+def test_centroid_llvmpipe_takes_the_first_covered_sample():
+    """A known departure, measured: with ``centroid`` llvmpipe evaluates a partly covered
+    pixel's fragment at its *first* covered sample (lowest index) even where the centre is
+    covered; ours (like the conventions) stays at a covered centre and otherwise moves to the
+    nearest covered sample. GL leaves the point to the implementation, anywhere in the
+    covered area, so both are GL. Everywhere else (whole pixels, the centre uncovered; the
+    standard 4 samples are all equally far from the centre, so the nearest covered is the
+    first) the values agree to float32."""
+    rng = np.random.default_rng(93)
+    pattern = tr.sample_pattern(4)
+    partial = departs = 0
+    for xy in window_triangles(rng, "subpixel", 25):
+        a = rng.uniform(0, 1, 3)
+        clip = clip_from_window(xy, np.ones(3), np.full(3, 0.5))[None]
+        gl = gl_render_samples(clip, W, H, samples=4, attrs=a[None], centroid=True)
+        ours = tr.render(clip, W, H, attrs=a[None], samples=4, centroid=True)
+        covered = ours.sample_triangle_id >= 0
+        assert np.array_equal(covered, gl.sample_triangle_id >= 0)
+        gl_value = np.fmax.reduce(gl.sample_value, axis=2)  # NaN where uncovered
+        our_value = np.fmax.reduce(ours.sample_attrs[..., 0], axis=2)
+        n = covered.sum(axis=2)
+        rows, cols = np.nonzero((n > 0) & (n < 4))
+        first = np.argmax(covered[rows, cols], axis=1)
+        at_first = tr.barycentric(xy, np.c_[cols, rows] + pattern[first]) @ a
+        tol = 1e-5 + 1e-6 * kappa(xy)  # llvmpipe's float32 plane set-up (module docstring)
+        np.testing.assert_allclose(gl_value[rows, cols], at_first, atol=tol)
+        centre_covered = tr.rasterize(tr.Triangle(xy), W, H).coverage[rows, cols]
+        differ = np.abs(gl_value - our_value)[rows, cols] > tol
+        assert not (differ & ~centre_covered).any()  # only where the centre is covered
+        whole = n == 4
+        np.testing.assert_allclose(gl_value[whole], our_value[whole], atol=tol)
+        partial += len(rows)
+        departs += int(differ.sum())
+    assert partial > 200 and departs > 0.2 * partial, (departs, partial)
 
 
 # -- texture level of detail (issue 12) ---------------------------------------------------------

@@ -115,7 +115,9 @@ def srgb_to_linear(c) -> np.ndarray:
     array([0.      , 0.003131, 0.214041, 1.      ])
     """
     c = as_finite("c", c, None)
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+    # the power branch only where it is taken: a negative base would warn (and give NaN)
+    curve = ((np.maximum(c, 0.04045) + 0.055) / 1.055) ** 2.4
+    return np.where(c <= 0.04045, c / 12.92, curve)
 
 
 def linear_to_srgb(c) -> np.ndarray:

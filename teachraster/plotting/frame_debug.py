@@ -5,7 +5,8 @@
 numbers: counts get one colour per integer (0 light grey, never hidden), the quad
 overshading a fraction of helper lanes from 0 to 3/4, the triangle size a log scale of
 pixels. :func:`plot_history` draws ``frame.history(row, col)``: one bar per record at the
-fragment's depth, coloured by outcome, with the depth buffer before and after it.
+fragment's depth, coloured by outcome, with the depth buffer before and after it (and, with
+a colour buffer, the colour before and after it).
 Both read the frame's trace; neither recomputes an algorithm.
 """
 
@@ -115,7 +116,9 @@ def overlay_title(kind: str, values: np.ndarray) -> str:
 
 def plot_history(ax, frame_or_history, row=None, col=None) -> HistoryArtists:
     """Draw a pixel's history (``frame.history(row, col)``, or a history itself): one bar
-    per record at its depth, coloured by outcome, the buffer before (○) and after (●)."""
+    per record at its depth, coloured by outcome, the buffer before (○) and after (●); with a
+    colour buffer, above each record that reached it, swatches of the target's colour
+    before, the fragment's own and the target's after."""
     h = frame_or_history
     if row is not None or col is not None:
         h = frame_or_history.history(row, col)

@@ -111,9 +111,14 @@ class GLFrame:
     noperspective : (height, width, k) float64
         The same attributes as ``noperspective`` varyings (affine in screen space).
     depth : (height, width) float64
-        Window depth ``gl_FragCoord.z`` in [0, 1], NaN where uncovered.
+        Window depth ``gl_FragCoord.z`` in [0, 1] of the fragment that wrote the pixel,
+        NaN where uncovered.
     coverage : (height, width) bool
         ``triangle_id >= 0``.
+    depth_buffer : (height, width) float64 or None
+        The depth buffer itself (``glReadPixels`` of ``GL_DEPTH_COMPONENT``), NaN where
+        nothing was written: with ``depth_write`` off for some triangles it differs from
+        ``depth``. None when the depth test was off.
     """
 
     triangle_id: np.ndarray
@@ -121,6 +126,7 @@ class GLFrame:
     noperspective: np.ndarray
     depth: np.ndarray
     coverage: np.ndarray
+    depth_buffer: np.ndarray | None = None
 
 
 def gl_available() -> tuple[bool, str]:
@@ -203,6 +209,8 @@ class _RawGL:
             "glRenderbufferStorageMultisample", None, u, i, u, i, i
         )
         self.get_multisample = fn("glGetMultisamplefv", None, u, u, ctypes.POINTER(ctypes.c_float))
+        self.depth_mask = fn("glDepthMask", None, ctypes.c_ubyte)
+        self.read_pixels = fn("glReadPixels", None, i, i, i, i, u, u, ctypes.c_void_p)
 
     def float_depth_buffer(self, width: int, height: int, samples: int = 0) -> int:
         """Attach a new float32 depth renderbuffer (``samples`` per pixel when > 0) to the
@@ -253,9 +261,10 @@ def _shaders(n_chunks: int) -> tuple[str, str]:
         for c in chunks
     ]
     fs += [
+        "uniform int id_base;",  # the first triangle of the draw (one draw per depth mask)
         "void main() {",
         # The depth range is [0, 1/2] (module docstring); doubling is exact.
-        "    o_id_depth = vec4(float(gl_PrimitiveID), 2.0 * gl_FragCoord.z, 0.0, 1.0);",
+        "    o_id_depth = vec4(float(gl_PrimitiveID + id_base), 2.0 * gl_FragCoord.z, 0.0, 1.0);",
         *[f"    o_s{c} = s{c};\n    o_n{c} = n{c};" for c in chunks],
         "}",
     ]
@@ -302,7 +311,7 @@ class GLRenderer:
 
     Parameters
     ----------
-    clip, width, height, attrs, depth_test, cull
+    clip, width, height, attrs, depth_test, cull, depth_write
         As in :func:`gl_render`.
 
     Examples
@@ -318,10 +327,12 @@ class GLRenderer:
     [6, 6, 6]
     """
 
-    def __init__(self, clip, width, height, *, attrs=None, depth_test=True, cull=None):
+    def __init__(self, clip, width, height, *, attrs=None, depth_test=True, cull=None,
+                 depth_write=True):  # fmt: skip
         clip, self.width, self.height, attrs = _check_inputs(clip, width, height, attrs, cull)
         self.ctx, self._gl = _context()
         self.depth_test, self.cull, self.k = bool(depth_test), cull, attrs.shape[2]
+        self.depth_write = np.broadcast_to(np.asarray(depth_write, dtype=bool), (len(clip),))
         self._resources: list = []
         self._depth_rb: int | None = None
         try:
@@ -385,8 +396,15 @@ class GLRenderer:
         ctx.enable_only(flags)
         # -1 marks "no triangle" in the id target; the other targets are masked later.
         self.fbo.clear(-1.0, -1.0, -1.0, -1.0, depth=1.0)
-        if self._n_vertices:
-            vao.render(moderngl.TRIANGLES, vertices=self._n_vertices)
+        # one draw per run of triangles with the same depth mask (glDepthMask)
+        mask = self.depth_write
+        cuts = [0, *np.flatnonzero(mask[1:] != mask[:-1]) + 1, len(mask)]
+        for a, b in zip(cuts[:-1], cuts[1:]):
+            if b > a:
+                self._gl.depth_mask(int(mask[a]))
+                vao.program["id_base"] = int(a)
+                vao.render(moderngl.TRIANGLES, vertices=3 * (b - a), first=3 * a)
+        self._gl.depth_mask(1)
 
     def _read(self, attachment: int) -> np.ndarray:
         out = np.empty((self.height, self.width, 4), dtype="f4")
@@ -422,6 +440,7 @@ class GLRenderer:
                 lo, hi = c * _CHUNK, min(c * _CHUNK + _CHUNK, self.k)
                 smooth[..., lo:hi] = targets[1 + 2 * j][..., : hi - lo]
                 nopersp[..., lo:hi] = targets[2 + 2 * j][..., : hi - lo]
+        stored = self._depth_buffer() if self.depth_test else None
         coverage = ids >= 0  # the id target was cleared to -1
         # copyto with a broadcast mask: several times faster than boolean-index assignment
         uncovered = ~coverage
@@ -434,7 +453,18 @@ class GLRenderer:
             noperspective=nopersp,
             depth=depth,
             coverage=coverage,
+            depth_buffer=stored,
         )
+
+    def _depth_buffer(self) -> np.ndarray:
+        """The float32 depth buffer after the last draw, doubled (range [0, 1/2]), NaN where
+        it still holds the cleared 1.0 (no written depth reaches 1/2 beyond the far plane)."""
+        out = np.empty((self.height, self.width), dtype=np.float32)
+        self.fbo.use()
+        self._gl.read_pixels(0, 0, self.width, self.height, 0x1902, 0x1406,  # DEPTH, FLOAT
+                             out.ctypes.data)  # fmt: skip
+        depth = 2.0 * out.astype(np.float64)
+        return np.where(out == 1.0, np.nan, depth)
 
     def release(self) -> None:
         """Free the GL objects of this scene (the cached context and programs stay)."""
@@ -452,9 +482,8 @@ class GLRenderer:
         self.release()
 
 
-def gl_render(
-    clip, width: int, height: int, *, attrs=None, depth_test: bool = True, cull: str | None = None
-) -> GLFrame:
+def gl_render(clip, width: int, height: int, *, attrs=None, depth_test: bool = True,
+              cull: str | None = None, depth_write=True) -> GLFrame:  # fmt: skip
     """Draw clip-space triangles with OpenGL and read back ids, attributes and depth.
 
     The vertices go straight to ``gl_Position`` (with y negated, see the module docstring),
@@ -474,6 +503,8 @@ def gl_render(
         float32 depth buffer. Without it later triangles overwrite earlier ones.
     cull : {None, "back", "front"}
         Drop triangles that are back-facing (clockwise on screen) or front-facing.
+    depth_write : bool or (N,) bools
+        ``glDepthMask`` per triangle (the triangles are drawn in runs of equal masks).
 
     Returns
     -------
@@ -486,7 +517,8 @@ def gl_render(
     ValueError
         On malformed input.
     """
-    with GLRenderer(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull) as gl:
+    with GLRenderer(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull,
+                    depth_write=depth_write) as gl:  # fmt: skip
         return gl.render()
 
 
@@ -505,11 +537,16 @@ class GLSampleFrame:
         none did): GL's own coverage mask for the fragment.
     positions : (S, 2) float64
         The sample positions GL reports (``glGetMultisamplefv(GL_SAMPLE_POSITION, s)``).
+    sample_value : (height, width, S) float64 or None
+        With ``attrs``: the value of the scalar varying each sample holds, evaluated once
+        per fragment (no sample shading), at the centre or, ``centroid``, where the GL
+        implementation puts the centroid; NaN where no fragment wrote the sample.
     """
 
     sample_triangle_id: np.ndarray
     sample_mask: np.ndarray
     positions: np.ndarray
+    sample_value: np.ndarray | None = None
 
 
 _MS_DRAW_FS = """#version 400
@@ -518,6 +555,22 @@ void main() {
     // the depth range is [0, 1/2] (module docstring); the id and this fragment's mask
     o_id = vec4(float(gl_PrimitiveID), float(gl_SampleMaskIn[0]), 0.0, 1.0);
 }
+"""
+_MS_VALUE_VS = """#version 400
+in vec4 in_pos;
+in float in_a;
+{q} out float value;
+void main() {{
+    gl_Position = vec4(in_pos.x, -in_pos.y, in_pos.z, in_pos.w);
+    value = in_a;
+}}
+"""
+_MS_VALUE_FS = """#version 400
+{q} in float value;
+layout(location = 0) out vec4 o_id;
+void main() {{
+    o_id = vec4(float(gl_PrimitiveID), float(gl_SampleMaskIn[0]), value, 1.0);
+}}
 """
 _MS_RESOLVE_VS = """#version 330
 in vec2 in_corner;
@@ -554,16 +607,19 @@ def gl_sample_positions(samples: int = 4) -> np.ndarray:
 
 
 def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_test: bool = True,
-                      cull: str | None = None) -> GLSampleFrame:  # fmt: skip
+                      cull: str | None = None, attrs=None,
+                      centroid: bool = False) -> GLSampleFrame:  # fmt: skip
     """Draw clip-space triangles into an S-sample framebuffer and read every sample back.
 
     The triangles are drawn as in :func:`gl_render` (clip y negated, float32 depth in
     [0, 1/2], ``GL_LESS``), into a multisampled float texture; a second pass reads sample s
     of every pixel with ``texelFetch`` on a ``sampler2DMS`` into a plain float target.
+    ``attrs`` (N, 3): a scalar per vertex, a ``smooth`` varying (``centroid smooth`` with
+    ``centroid``) whose value every sample keeps (``sample_value``).
     """
     import moderngl
 
-    clip, width, height, _ = _check_inputs(clip, width, height, None, cull)
+    clip, width, height, values = _check_inputs(clip, width, height, attrs, cull)
     ctx, gl = _context()
     res, depth_rb = [], None
     try:
@@ -585,7 +641,13 @@ def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_
         draw, read = _STATE["programs"]["ms_draw"], _STATE["programs"]["ms_resolve"]
         pos = ctx.buffer(clip.astype("f4").tobytes())
         res.append(pos)
-        vao = ctx.vertex_array(draw, [(pos, "4f", "in_pos")])
+        content = [(pos, "4f", "in_pos")]
+        if attrs is not None:
+            draw = _value_program(ctx, centroid)
+            value_buffer = ctx.buffer(values[..., 0].astype("f4").tobytes())
+            res.append(value_buffer)
+            content.append((value_buffer, "1f", "in_a"))
+        vao = ctx.vertex_array(draw, content)
         res.append(vao)
         gl.depth_range(0.0, 0.5)
         flags = moderngl.NOTHING
@@ -600,7 +662,7 @@ def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_
         if len(clip):
             vao.render(moderngl.TRIANGLES, vertices=3 * len(clip))
         positions = gl_sample_positions(samples)
-        ids, masks = _read_samples(ctx, read, tex, (width, height), samples, res)
+        ids, masks, value = _read_samples(ctx, read, tex, (width, height), samples, res)
     finally:
         if depth_rb is not None:
             gl.delete(depth_rb)
@@ -614,11 +676,22 @@ def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_
         sample_mask=np.stack([mask[..., s, s] for s in range(samples)], axis=-1).astype(bool)
         & covered,
         positions=positions,
+        sample_value=None if attrs is None else np.where(covered, value, np.nan),
     )
 
 
+def _value_program(ctx, centroid: bool):
+    """The multisampled draw carrying one scalar varying (centroid-qualified or not)."""
+    key = ("ms_value", bool(centroid))
+    if key not in _STATE["programs"]:
+        q = "centroid" if centroid else ""
+        _STATE["programs"][key] = ctx.program(vertex_shader=_MS_VALUE_VS.format(q=q),
+                                              fragment_shader=_MS_VALUE_FS.format(q=q))  # fmt: skip
+    return _STATE["programs"][key]
+
+
 def _read_samples(ctx, program, tex, size, samples, res):
-    """(H, W, S) ids and masks: one full-screen pass per sample with ``texelFetch``."""
+    """(H, W, S) ids, masks and values: one full-screen pass per sample with ``texelFetch``."""
     import moderngl
 
     width, height = size
@@ -636,6 +709,7 @@ def _read_samples(ctx, program, tex, size, samples, res):
     program["samples"] = 0
     ids = np.empty((height, width, samples), dtype=np.int64)
     masks = np.empty((height, width, samples))
+    values = np.empty((height, width, samples))
     buf = np.empty((height, width, 4), dtype="f4")
     for s in range(samples):
         program["sample_index"] = s
@@ -643,7 +717,8 @@ def _read_samples(ctx, program, tex, size, samples, res):
         out_fbo.read_into(buf, components=4, dtype="f4")  # GL row 0 is ours: no flip
         ids[..., s] = buf[..., 0].astype(np.int64)
         masks[..., s] = buf[..., 1]
-    return ids, masks
+        values[..., s] = buf[..., 2]
+    return ids, masks, values
 
 
 # -- texture level of detail ------------------------------------------------------------------

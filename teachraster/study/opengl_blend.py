@@ -44,7 +44,8 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
     Parameters
     ----------
     clip : (N, 3, 4) clip-space vertices; attrs : (N, 3, 4) RGBA per vertex.
-    blend : a mode of ``render`` ("over", "premultiplied", "additive", "multiply").
+    blend : a mode of ``render`` ("over", "premultiplied", "additive", "multiply"), a
+        ``glBlendFunc`` pair, or None: ``GL_BLEND`` disabled (the fragment colour replaces).
     depth_write : bool or (N,) bools, ``glDepthMask`` per triangle.
     srgb : bool, an ``SRGB8_ALPHA8`` target with ``GL_FRAMEBUFFER_SRGB`` (else ``RGBA32F``).
     samples : int, 0 or 4: multisampled, resolved by ``glBlitFramebuffer``.
@@ -73,14 +74,17 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
     try:
         fbo.use()
         depth_rb = gl.float_depth_buffer(width, height, samples) if depth_test else None
-        flags = moderngl.BLEND | (moderngl.DEPTH_TEST if depth_test else 0)
+        flags = (moderngl.BLEND if blend is not None else 0) | (
+            moderngl.DEPTH_TEST if depth_test else 0
+        )
         ctx.enable_only(flags)
         if srgb:
             ctx.enable_direct(_GL_FRAMEBUFFER_SRGB)
         ctx.depth_func = "<"
-        src, dst = BLEND_MODES[blend]
-        ctx.blend_func = getattr(moderngl, src), getattr(moderngl, dst)
-        ctx.blend_equation = moderngl.FUNC_ADD
+        if blend is not None:
+            src, dst = blend if isinstance(blend, tuple) else BLEND_MODES[blend]
+            ctx.blend_func = getattr(moderngl, src), getattr(moderngl, dst)
+            ctx.blend_equation = moderngl.FUNC_ADD
         fbo.depth_mask = True
         fbo.clear(*clear_color, depth=1.0)
         for i in range(n):  # submission order, each with its own depth mask

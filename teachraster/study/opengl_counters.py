@@ -98,6 +98,7 @@ class _StencilGL:
         self.clear_stencil = fn("glClearStencil", None, i)
         self.clear_depth = fn("glClearDepth", None, d)
         self.clear = fn("glClear", None, u)
+        self.depth_mask = fn("glDepthMask", None, ctypes.c_ubyte)
         self.depth_range = fn("glDepthRange", None, d, d)
         self.gen_renderbuffers = fn("glGenRenderbuffers", None, i, ctypes.POINTER(u))
         self.delete_renderbuffers = fn("glDeleteRenderbuffers", None, i, ctypes.POINTER(u))
@@ -169,9 +170,11 @@ def _setup():
 
 
 def gl_counters(clip, width: int, height: int, *, samples: int = 1, depth_test: bool = True,
-                cull: str | None = None) -> GLCounters:  # fmt: skip
+                cull: str | None = None, depth_write=True) -> GLCounters:  # fmt: skip
     """Draw clip-space triangles (N, 3, 4) with OpenGL and read its stencil counts and
-    occlusion queries (see the module docstring). ``samples``: 1 or an MSAA count."""
+    occlusion queries (see the module docstring). ``samples``: 1 or an MSAA count;
+    ``depth_write``: ``glDepthMask`` per triangle (a bool or (N,) bools) in the
+    depth-complexity pass."""
     width, height = as_size("width", width), as_size("height", height)
     clip = np.asarray(clip, dtype=np.float64)
     if clip.ndim != 3 or clip.shape[1:] != (3, 4) or not np.isfinite(clip).all():
@@ -199,8 +202,10 @@ def gl_counters(clip, width: int, height: int, *, samples: int = 1, depth_test: 
         ]
         res += quads
         passes = {}
+        writes = np.broadcast_to(np.asarray(depth_write, dtype=bool), (len(clip),))
         for name, test in (("overdraw", False), ("depth_complexity", depth_test)):
-            passed = _draw(ctx, gl, vao, len(clip), test, cull, one_by_one=name != "overdraw")
+            passed = _draw(ctx, gl, vao, len(clip), test, cull,
+                           None if name == "overdraw" else writes)  # fmt: skip
             passes[name] = _read_stencil(ctx, gl, fbo, tex, quads, (width, height), samples, res)
             if name == "depth_complexity":
                 passes["samples_passed"] = passed
@@ -213,8 +218,10 @@ def gl_counters(clip, width: int, height: int, *, samples: int = 1, depth_test: 
     return GLCounters(passes["overdraw"], passes["depth_complexity"], passes["samples_passed"])
 
 
-def _draw(ctx, gl, vao, n, depth_test, cull, one_by_one):
-    """Clear and draw the triangles with the stencil counting; the samples each passed."""
+def _draw(ctx, gl, vao, n, depth_test, cull, writes):
+    """Clear and draw the triangles with the stencil counting; the samples each passed.
+    ``writes`` (N,) bool: one by one, each with its depth mask and occlusion query (None:
+    all in one draw)."""
     import moderngl
 
     gl.depth_range(0.0, 0.5)
@@ -233,15 +240,17 @@ def _draw(ctx, gl, vao, n, depth_test, cull, one_by_one):
     # depth fail keeps, depth pass (or no depth test at all) increments
     gl.stencil_op(_GL["KEEP"], _GL["KEEP"], _GL["INCR"])
     passed = np.zeros(n, dtype=np.int64)
-    if not one_by_one:
+    if writes is None:
         if n:
             vao.render(moderngl.TRIANGLES, vertices=3 * n)
         return passed
     query = ctx.query(samples=True)  # (moderngl frees queries with the context)
     for t in range(n):  # one draw per triangle, in submission order
+        gl.depth_mask(int(writes[t]))
         with query:
             vao.render(moderngl.TRIANGLES, vertices=3, first=3 * t)
         passed[t] = query.samples
+    gl.depth_mask(1)
     return passed
 
 

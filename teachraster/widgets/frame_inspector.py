@@ -20,6 +20,7 @@ import numpy as np
 
 from ..pipeline.debugging.overlays import KINDS
 from ..pipeline.rendering.render_scenes import render
+from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
 from .common import Holdable, close_tree, style_context, title_html
@@ -27,6 +28,27 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
 #: The views the chooser offers: the shaded image, then every overlay.
 VIEWS = ("image", *KINDS)
+
+#: Alpha of every triangle of a scene drawn as glass (``glass=True``).
+GLASS_ALPHA = 0.5
+
+
+def glass_frame(name: str, width: int, height: int, **kwargs):
+    """A built-in scene drawn as glass: its triangles with their colours (a grey per
+    triangle where the scene has none) at alpha :data:`GLASS_ALPHA`, blended "over" in
+    submission order onto white with depth writes off, traced: a frame whose pixel
+    histories carry the colour before and after every fragment."""
+    scene = get_scene(name)
+    clip = scene.clip(width / height)
+    n = len(clip)
+    if "color" in scene.mesh.attrs:
+        rgb = scene.mesh.corner("color")[..., :3]
+    else:  # one grey per triangle, so layers tell apart
+        rgb = np.repeat(np.linspace(0.25, 0.75, max(n, 1))[:n, None, None], 3, axis=1) * [1, 1, 1]
+    rgba = np.concatenate([rgb, np.full((n, 3, 1), GLASS_ALPHA)], axis=2)
+    return render_clip(clip, width, height, attrs=rgba, blend="over", depth_write=False,
+                       clear_color=(1.0, 1.0, 1.0, 1.0), trace=True, **kwargs)  # fmt: skip
+
 
 _CLICK_ESM = """
 function render({ model, el }) {
@@ -91,6 +113,9 @@ class FrameInspector(Holdable):
         The pixel whose history is shown first.
     samples : {1, 4}
     depth_test : bool
+    glass : bool
+        Draw the scene as glass (:func:`glass_frame`): the history then shows the colour
+        buffer before and after every fragment.
     backend, style
         As for the other widgets.
 
@@ -117,13 +142,15 @@ class FrameInspector(Holdable):
     def __init__(self, scene: str = "intersecting_triangles", width: int = 64,
                  height: int = 48, *, view: str = "image", row: int | None = None,
                  col: int | None = None, samples: int = 1, depth_test: bool = True,
-                 backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
+                 glass: bool = False, backend: str = "auto",
+                 style: str | None = None) -> None:  # fmt: skip
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
         self.scene = widgets.Dropdown(options=list(SCENES), value=scene, description="scene")
         self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
         self.depth_test = widgets.Checkbox(value=depth_test, description="depth test")
+        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)")
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
@@ -138,7 +165,7 @@ class FrameInspector(Holdable):
             self._draw_frame()
             self._draw_history()
             self._make_displays()
-        for control in (self.scene, self.samples, self.depth_test):
+        for control in (self.scene, self.samples, self.depth_test, self.glass):
             control.observe(self._rerender, "value")
         self.view.observe(self._view_changed, "value")
         for control in (self.row, self.col):
@@ -148,7 +175,8 @@ class FrameInspector(Holdable):
             "Choose a view; click a pixel (or move row and col) to see every triangle on the "
             "way to it, in submission order, and the test that stopped each.",
         )
-        controls = widgets.HBox([self.scene, self.view, self.samples, self.depth_test])
+        controls = widgets.HBox([self.scene, self.view, self.samples, self.depth_test,
+                                 self.glass])  # fmt: skip
         figures = widgets.HBox([self.frame_widget, self.hist_display.widget])
         self.widget = widgets.VBox(
             [title, controls, widgets.HBox([self.row, self.col]), figures, self.table]
@@ -156,9 +184,12 @@ class FrameInspector(Holdable):
 
     # -- state ---------------------------------------------------------------------------
     def _render(self) -> None:
-        self.frame = render(get_scene(self.scene.value), None, self.width, self.height,
-                            samples=self.samples.value, depth_test=self.depth_test.value,
-                            trace=True)  # fmt: skip
+        options = dict(samples=self.samples.value, depth_test=self.depth_test.value)
+        if self.glass.value:
+            self.frame = glass_frame(self.scene.value, self.width, self.height, **options)
+        else:
+            self.frame = render(get_scene(self.scene.value), None, self.width, self.height,
+                                trace=True, **options)  # fmt: skip
         self._show_history()
 
     def _show_history(self) -> None:
@@ -172,7 +203,8 @@ class FrameInspector(Holdable):
             extra.remove()
         ax.clear()
         if self.view.value == "image":
-            image = np.where(np.isnan(self.frame.image), 1.0, self.frame.image)
+            shown = self.frame.color[..., :3] if self.glass.value else self.frame.image
+            image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
             ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
         else:

@@ -50,7 +50,7 @@ from ..planning.render_plan import (
 from ..rasterization.batched_fill import weight_source
 from ..rasterization.sample_coverage import centre_covered, sample_fragments
 from ..visibility.depth import quantize
-from ..visibility.zbuffer import resolve
+from ..visibility.zbuffer import last_written, passed_on_arrival, resolve
 from .sample_shading import BLOCK, shade, shade_tables
 
 
@@ -341,6 +341,7 @@ class MultiFrame:
     depth: np.ndarray  # (P,)
     offsets: np.ndarray  # (S, 2) px as tested
     record: dict  # the per-sample depth-test entries and the whole pixels, for the trace
+    passed: tuple | None = None  # blending: (slot, colour) of every sample that passed
 
 
 def _sample_entries(frags, winner, n_s, n_tri):
@@ -361,7 +362,25 @@ def _sample_entries(frags, winner, n_s, n_tri):
     return (tri[pair], pixel[pair], sample, pair), (tri, pixel, mask)
 
 
-def visibility(frags, planes, unit, offsets, size, options, forced):
+@dataclass(frozen=True)
+class SampleTests:
+    """Every covered sample's depth test, in drawing order (kept when the frame blends or
+    some triangle does not write depth: then no pixel is decided whole, and the colour
+    stage reads these very decisions).
+
+    ``slot`` (e,) flat pixel * S + sample of each entry (by pixel, then drawing order, then
+    sample), ``pair`` (e,) its (pixel, triangle) pair, ``passed`` (e,) bool whether it
+    passed on arrival, ``stored`` the entries whose depth the buffer keeps in the end (the
+    last that passed and wrote, one per sample that holds a depth).
+    """
+
+    slot: np.ndarray
+    pair: np.ndarray
+    passed: np.ndarray
+    stored: np.ndarray
+
+
+def visibility(frags, planes, unit, offsets, size, options, forced, colour=(None, False)):
     """The depth buffer per sample: its triangles (:class:`SampleIds`) and depths
     (:class:`SampleDepths`), the whole pixels (flat index, triangle), the (pixel, triangle)
     pair that won each decided sample (an index into the pairs (triangle, pixel, sample
@@ -370,13 +389,19 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
 
     ``options`` is ``(depth_test, depth_format, trace)``: with ``trace`` every entry's
     depth and test is computed (and recorded); without, a sample only one triangle still
-    reaches is decided without evaluating a depth (:func:`_decide_samples`).
+    reaches is decided without evaluating a depth (:func:`_decide_samples`). ``colour`` =
+    (the triangles' depth masks (M,) or None for all writing, whether every sample's test
+    is kept, :class:`SampleTests`, for blending): with either no pixel is decided whole and
+    the last fragment that passed shows, the last that wrote keeps its depth. The last
+    value returned is the :class:`SampleTests` (None when not kept).
     """
     depth_test, depth_format, trace = options
     force_test, force_ms = forced
+    writes, keep = colour
+    expand = writes is not None or keep  # every sample's test, in drawing order
     width, height = size
     n_s, n_pix = len(offsets), width * height
-    if force_ms:
+    if force_ms or expand:
         winner, reached = np.full(n_pix, -1, np.int64), None
     else:
         winner, reached = whole_pixels(frags, planes, unit, size, depth_test, depth_format)
@@ -387,8 +412,10 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     still = p_pixel[new_pixel]
     cell = (np.cumsum(new_pixel) - 1)[pair] * n_s + sample
     entries = (tri, pixel, sample, cell, len(still) * n_s)
-    every = (depth_test, depth_format, trace or force_test)  # forced: every entry tested
-    won, met, depth = _decide_samples(entries, planes, unit, offsets, width, every)
+    every = (depth_test, depth_format, trace or force_test or expand)  # every entry tested
+    writes = None if writes is None else writes[tri]
+    won, met, depth, tests = _decide_samples(entries, planes, unit, offsets, width, every,
+                                             (writes, expand))  # fmt: skip
     cells = np.flatnonzero(won >= 0)
     slots = still[cells // n_s] * n_s + cells % n_s  # flat pixel * S + sample, ascending
     won = won[cells]
@@ -397,14 +424,19 @@ def visibility(frags, planes, unit, offsets, size, options, forced):
     wp = np.flatnonzero(winner >= 0)
     if len(wp):  # a pixel decided whole that 2+ triangles reach: the test settled all of it
         met += n_s * int(np.count_nonzero(reached[wp]))
-    depths = SampleDepths((height, width, n_s), slots, tri[won], wp, winner[wp], planes,
+    depth_slots, depth_tri = slots, tri[won]
+    if tests is not None:  # the buffer keeps the last written depth, not the last passed
+        passed, stored = tests
+        tests = SampleTests(pixel * n_s + sample, pair, passed, stored[stored >= 0])
+        depth_slots, depth_tri = tests.slot[tests.stored], tri[tests.stored]
+    depths = SampleDepths((height, width, n_s), depth_slots, depth_tri, wp, winner[wp], planes,
                           unit, offsets, depth_format)  # fmt: skip
     record = None
     if trace:
         record = {"tri": tri, "pixel": pixel, "sample": sample, "depth": depth,
                   "n_tri": len(planes), "depth_test": depth_test, "whole_pixel": wp,
                   "whole_tri": winner[wp]}  # fmt: skip
-    return sample_tri, depths, (wp, winner[wp]), (pair[won], pairs), met, record
+    return sample_tri, depths, (wp, winner[wp]), (pair[won], pairs), met, record, tests
 
 
 def _entry_depths(planes, unit, offsets, width, depth_format, tri, pixel, sample):
@@ -417,9 +449,12 @@ def _entry_depths(planes, unit, offsets, width, depth_format, tri, pixel, sample
     return depth
 
 
-def _decide_samples(entries, planes, unit, offsets, width, options):
-    """The winning entry of every sample cell (-1: none), the cells 2+ entries reach, and
-    (with ``every``) every entry's stored depth (else None).
+def _decide_samples(entries, planes, unit, offsets, width, options, colour=(None, False)):
+    """The winning entry of every sample cell (-1: none), the cells 2+ entries reach,
+    (with ``every``) every entry's stored depth (else None), and with ``colour`` = (depth
+    masks per entry or None, keep) where either is given: every entry's test on arrival
+    and per cell the entry whose depth the buffer keeps (``(passed, stored)``, else None;
+    the winner is then the last entry that passed).
 
     ``entries`` = (tri, pixel, sample, cell, n_cells), drawing order within each cell. The
     rule is :func:`~teachraster.pipeline.zbuffer.resolve`'s. Without ``every`` it runs only
@@ -431,10 +466,18 @@ def _decide_samples(entries, planes, unit, offsets, width, options):
     tri, pixel, sample, cell, n_cells = entries
     depth_test, depth_format, every = options
     args = (planes, unit, offsets, width, depth_format)
+    writes, keep = colour
     if every:  # every entry tested (the trace records each test)
         depth = _entry_depths(*args, tri, pixel, sample)
-        won, met = resolve(cell, depth, n_cells, depth_test)
-        return won, met, depth
+        if writes is None and not keep:
+            won, met = resolve(cell, depth, n_cells, depth_test)
+            return won, met, depth, None
+        met = int(np.count_nonzero(np.bincount(cell, minlength=n_cells) > 1))
+        passed = np.ones(len(cell), dtype=bool)
+        if depth_test:
+            passed = passed_on_arrival(cell, depth, writes)
+        won, stored = last_written(cell, passed, writes, n_cells)
+        return won, met, depth, (passed, stored)
     met = int(np.count_nonzero(np.bincount(cell, minlength=n_cells) > 1))
     keep = np.arange(len(cell))
     if depth_test:
@@ -451,7 +494,7 @@ def _decide_samples(entries, planes, unit, offsets, width, options):
     best, _ = resolve(cell[test], depth, n_cells, depth_test)
     hit = np.flatnonzero(best >= 0)
     won[hit] = test[best[hit]]
-    return won, met, None
+    return won, met, None, None
 
 
 def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, size, flags):
@@ -484,22 +527,23 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
     number[shown] = np.arange(len(shown))
     inverse = number[won_pair]  # each decided sample's pair among the shown
     tri, pix = pair_tri[shown], pair_pixel[shown]
-    won = (bits[:, None] & (1 << np.arange(n_s))) != 0
+    # the samples each triangle covers there: what its one evaluation may use (the pair's
+    # own coverage, so every consumer evaluating a pair gets the same value)
+    covers = _pair_covers(pair_mask[shown], n_s)
     at_centroid = None
     if centroid is not None:  # the centre test, and the samples each triangle covers
-        covers = (pair_mask[shown, None] & (1 << np.arange(n_s))) != 0
         at_centroid = (centre_covered(centroid, tri, pix, width), covers)
     if force_ms:  # every sample evaluates its own triangle: the same values, S times the work
         if at_centroid is not None:
             at_centroid = (at_centroid[0][inverse], at_centroid[1][inverse])
-        vals, dep = shade(tables, sample_tri.tri, slots // n_s, won[inverse], offsets, width,
+        vals, dep = shade(tables, sample_tri.tri, slots // n_s, covers[inverse], offsets, width,
                           at_centroid)  # fmt: skip
         first = np.full(len(shown), len(slots), dtype=np.int64)
         np.minimum.at(first, inverse, np.arange(len(slots)))
         sample_attrs = (vals, np.arange(len(slots)))
         vals, dep = vals[:, first], dep[first]
     else:
-        vals, dep = shade(tables, tri, pix, won, offsets, width, at_centroid)
+        vals, dep = shade(tables, tri, pix, covers, offsets, width, at_centroid)
         sample_attrs = (vals, inverse)
     sample_attrs = SampleAttributes((height, width, n_s, k), sp, whole_vals, slots // n_s,
                                     slots % n_s, *sample_attrs)  # fmt: skip
@@ -517,6 +561,56 @@ def shade_pixels(sample_tri, whole, decided, tables, frags, parent, offsets, siz
         shade(tables, hidden_tri, hidden_pix, won, offsets, width)
         n_shaded += len(keys)
     return sample_attrs, owner, pix_attrs, pix_depth, n_shaded
+
+
+def _pair_covers(pair_mask, n_s) -> np.ndarray:
+    """(n, S) bool: the samples each (pixel, triangle) pair covers, from its bit mask."""
+    return (pair_mask[:, None] & (1 << np.arange(n_s))) != 0
+
+
+def passed_colours(tables, tests: SampleTests, pairs, offsets, width, centroid):
+    """The colour stage's input under MSAA: every sample that passed the depth test (its
+    slot, in drawing order within each) and the attributes of its (pixel, triangle) pair,
+    evaluated once per pair exactly as the frame's ``sample_attrs`` (the same function on
+    the same pair: the same bits). ``centroid`` is the edge set-up, or None."""
+    pair_tri, pair_pixel, pair_mask = pairs
+    used = np.flatnonzero(np.bincount(tests.pair[tests.passed], minlength=len(pair_tri)))
+    tri, pix = pair_tri[used], pair_pixel[used]
+    covers = _pair_covers(pair_mask[used], len(offsets))
+    at_centroid = None
+    if centroid is not None:
+        at_centroid = (centre_covered(centroid, tri, pix, width), covers)
+    values, _ = shade(tables, tri, pix, covers, offsets, width, at_centroid)
+    number = np.empty(len(pair_tri), dtype=np.int64)
+    number[used] = np.arange(len(used))
+    entry = np.flatnonzero(tests.passed)
+    return tests.slot[entry], values.T[number[tests.pair[entry]]]
+
+
+def written_depth(tables, tests: SampleTests, pairs, parent, offsets, size, centroid):
+    """Per pixel (P,), the depth the frame shows when some triangle does not write depth:
+    of the triangles whose depth the pixel's samples keep, the one keeping most (ties: the
+    earlier, as :func:`owners`), evaluated once for the pixel like the attributes; NaN
+    where no sample holds a written depth."""
+    pair_tri, pair_pixel, pair_mask = pairs
+    n_s = len(offsets)
+    width, height = size
+    out = np.full(width * height, np.nan)
+    kept = tests.pair[tests.stored]
+    bits = np.bincount(kept, weights=1 << (tests.slot[tests.stored] % n_s),
+                       minlength=len(pair_tri))  # fmt: skip
+    held = np.flatnonzero(bits)  # (pixel, triangle) order
+    if not len(held):
+        return out
+    pixels, own = _owners(pair_pixel[held], parent[pair_tri[held]], bits[held].astype(np.int64))
+    pair = held[own]
+    tri, pix = pair_tri[pair], pair_pixel[pair]
+    covers = _pair_covers(pair_mask[pair], n_s)
+    at_centroid = None
+    if centroid is not None:
+        at_centroid = (centre_covered(centroid, tri, pix, width), covers)
+    _, out[pixels] = shade(tables, tri, pix, covers, offsets, width, at_centroid)
+    return out
 
 
 @cache
@@ -593,11 +687,14 @@ def pair_attributes(clipped, window, setup, options, tri, pixel, covers, width):
     return values.T
 
 
-def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced):
+def multisample_stage(clipped, window, culled, size, bits, offsets, options, forced,
+                      colour=(None, False)):  # fmt: skip
     """Fill, depth-test and shade a multisampled frame: a :class:`MultiFrame` and its effects.
 
     ``options`` is ``(depth_test, depth_format, interpolation, trace, centroid)``;
-    ``forced`` the plan's forced effects ("multisampling" expands every pixel to samples).
+    ``forced`` the plan's forced effects ("multisampling" expands every pixel to samples);
+    ``colour`` = (depth masks per triangle or None for all writing, blending): with
+    blending every sample that passed and its colour are handed on (``MultiFrame.passed``).
     """
     depth_test, depth_format, interpolation, trace, centroid = options
     width, height = size
@@ -611,7 +708,8 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
     source = weight_source(xy, setup, snapped_weights=False)
     planes = depth_planes(source, window)
     force_test = "depth_test" in forced and depth_test
-    sample_tri, depths, whole, decided, contested, record = visibility(
+    writes, blending = colour
+    sample_tri, depths, whole, decided, contested, record, tests = visibility(
         frags,
         planes,
         source[2],
@@ -619,6 +717,7 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         size,
         (depth_test, depth_format, trace),
         (force_test, force_ms),
+        colour,
     )
     w = clipped.clip[:, :, 3]
     perspective, divide_all = _perspective_rows(w, interpolation, forced)
@@ -634,6 +733,10 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         size,
         (force_ms, "attributes" in forced, setup if centroid else None),
     )
+    at = setup if centroid else None
+    if writes is not None:  # the depth a pixel shows is one that was written
+        depth = written_depth(tables, tests, decided[1], clipped.parent, px, size, at)
+    passed = passed_colours(tables, tests, decided[1], px, width, at) if blending else None
     if depth_format != "float64":  # float64 stores the value as it is
         depth = quantize(depth, depth_format)
     n_covered = int((owner >= 0).sum())
@@ -654,5 +757,5 @@ def multisample_stage(clipped, window, culled, size, bits, offsets, options, for
         perspective_effect(k, int(shown.sum()), n_persp, len(w), interpolation, divide_all),
         attributes_effect(k, n_shaded, frags.n_fragments, n_covered, "attributes" in forced),
     )
-    multi = MultiFrame(sample_tri, depths, sample_attrs, owner, attrs, depth, px, record)
+    multi = MultiFrame(sample_tri, depths, sample_attrs, owner, attrs, depth, px, record, passed)
     return multi, effects

@@ -114,14 +114,16 @@ def barycentrics_at(tables: ShadeTables, tri: np.ndarray, x, y) -> np.ndarray:
 BLOCK = 16384
 
 
-def shade(tables: ShadeTables, tri, pixel, won, offsets, width, centroid=None):
+def shade(tables: ShadeTables, tri, pixel, covers, offsets, width, centroid=None):
     """Attributes (k, n) and depth (n,) of triangles ``tri`` evaluated once for ``pixel``.
 
     At the pixel centre, extrapolated on the triangle's planes when the centre lies
     outside (values may leave the vertex range; inside they are clamped to it). Where the
-    extrapolated 1/w would be <= 0, at the sample nearest the centre among ``won`` (n, S)
-    bool, the samples the triangle shows in that pixel (ties: lower index); ``won`` may be
-    None when every triangle shows at all samples of its pixel. Runs in blocks of
+    extrapolated 1/w would be <= 0, at the sample nearest the centre among ``covers`` (n, S)
+    bool, the samples the triangle covers in that pixel (ties: lower index); ``covers`` may
+    be None when every triangle covers all samples of its pixel. The value depends on the
+    (pixel, triangle) pair alone, never on which samples it wins in the end, so the
+    colour stage, the frame and the pixel history evaluate a pair alike. Runs in blocks of
     :data:`BLOCK` pixels (each row's values depend on that row alone).
 
     ``centroid`` = (centre covered (n,) bool, covered samples (n, S) bool or None for all):
@@ -136,7 +138,7 @@ def shade(tables: ShadeTables, tri, pixel, won, offsets, width, centroid=None):
         if centroid is not None:
             part = (centroid[0][b], None if centroid[1] is None else centroid[1][b])
         values[:, b], depth[b] = _shade_block(
-            tables, tri[b], pixel[b], None if won is None else won[b], offsets, width, part
+            tables, tri[b], pixel[b], None if covers is None else covers[b], offsets, width, part
         )
     return values, depth
 
@@ -149,7 +151,7 @@ def _nearest_covered(offsets, covered):
     return order[np.argmax(covered[:, order], axis=1)]
 
 
-def _shade_block(tables: ShadeTables, tri, pixel, won, offsets, width, centroid):
+def _shade_block(tables: ShadeTables, tri, pixel, covers, offsets, width, centroid):
     """:func:`shade` of one block."""
     row, col = np.divmod(pixel, width)
     x, y = col + 0.5, row + 0.5
@@ -173,9 +175,9 @@ def _shade_block(tables: ShadeTables, tri, pixel, won, offsets, width, centroid)
     if moved is not None:  # already at a covered sample: clamped, like a covered centre
         bad &= ~moved
     if bad.any():  # the plane of 1/w crosses zero before the centre: use a covered sample
-        if won is None:
-            won = np.ones((len(tri), len(offsets)), dtype=bool)
-        s = _nearest_covered(offsets, won[bad])
+        if covers is None:
+            covers = np.ones((len(tri), len(offsets)), dtype=bool)
+        s = _nearest_covered(offsets, covers[bad])
         x[bad], y[bad] = col[bad] + offsets[s, 0], row[bad] + offsets[s, 1]
         lam[:, bad] = barycentrics_at(tables, tri[bad], x[bad], y[bad])
         q[:, bad] = lam[:, bad] * tables.ratio[:, tri[bad]]

@@ -7,9 +7,22 @@ depends on the order: every layer at a pixel is applied in turn. The layers are 
 pixels at once, one *layer* at a time (the first fragment at every pixel, then the second, ...),
 so the loop runs as often as the deepest pixel has layers, never once per fragment.
 
-Transparent geometry is drawn with ``depth_write=False``: it is tested against the depth
-buffer (opaque geometry hides it) but does not write it, so it never hides what comes after.
-A fragment passes when it is strictly nearer than every earlier fragment *that wrote depth*.
+This stage decides nothing about visibility: the fill (or, under MSAA, the per-sample
+coverage), the depth test in drawing order and the attribute evaluation hand it the
+fragments that passed and their colours (:func:`blend_layers`), the same decisions the
+frame's ids, depth, history and overlays read.
+
+Blending off is a state too: with ``blend=None`` a fragment that passes writes its colour
+over the target's, as GL does with ``GL_BLEND`` disabled. Transparent geometry is drawn
+with ``depth_write=False`` (``glDepthMask``, independent of blending): it is tested against
+the depth buffer (opaque geometry hides it) but does not write it, so it never hides what
+comes after. A fragment passes when it is strictly nearer than every earlier fragment *that
+wrote depth*.
+
+The target's format: ``"float64"`` keeps every value as computed (unclamped); ``"srgb8"``
+is GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``: the source and the target are clamped
+to [0, 1], the target is decoded to linear to blend, and the result is clamped, encoded and
+rounded to 8 bits after *every* layer (:func:`store_colour`), alpha stored linearly.
 
 The plan's "blending" effect: blending runs only for fragments whose result is not their own
 colour (``"over"``/``"premultiplied"`` with alpha 1 replace what is there: written as they
@@ -22,27 +35,51 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...core.blend_factors import BLEND_MODES, FACTORS, apply_blend
-from ...core.interpolation import blend_each, convex_weights, weights_per_row
+from ...core.blend_factors import BLEND_MODES, FACTORS, apply_blend, linear_to_srgb, srgb_to_linear
 from ...core.validate import as_bool, as_finite, check_choice, short_repr
 from ..planning.render_plan import Effect
-from ..rasterization.batched_fill import rasterize_batch
-from ..visibility.depth import quantize
+
+#: What the colour buffer stores: float64 as computed, or GL's ``SRGB8_ALPHA8``.
+COLOR_FORMATS = ("float64", "srgb8")
 
 
 @dataclass(frozen=True)
 class BlendState:
-    """Checked blend arguments of ``render``: the factor pair, per-triangle depth writes (N,)
-    and the clear colour (4,)."""
+    """Checked colour-buffer arguments of ``render``.
 
-    mode: str
-    factors: tuple[str, str]
+    Attributes
+    ----------
+    mode : str or None
+        The blend mode ("custom" for a factor pair); None: blending disabled, a fragment's
+        colour replaces the target's.
+    factors : (str, str) or None
+        The ``glBlendFunc`` pair (None without blending).
+    depth_write : (N,) bool
+        Per input triangle, its depth mask.
+    clear_color : (4,) float64
+        The colour the buffer starts at, as the format stores it.
+    color_format : str
+        :data:`COLOR_FORMATS`.
+    buffer : bool
+        Whether there is a colour buffer at all: the attributes are RGBA (k = 4).
+    """
+
+    mode: str | None
+    factors: tuple[str, str] | None
     depth_write: np.ndarray
     clear_color: np.ndarray
+    color_format: str = "float64"
+    buffer: bool = True
+
+    @property
+    def blending(self) -> bool:
+        """Whether fragments are blended (rather than written as they are)."""
+        return self.mode is not None
 
 
-def check_blend(blend, depth_write, clear_color, attrs: np.ndarray) -> BlendState | None:
-    """``render``'s blend arguments checked (naming them); None when ``blend`` is None."""
+def check_blend(blend, depth_write, clear_color, attrs: np.ndarray,
+                color_format="float64") -> BlendState:  # fmt: skip
+    """``render``'s colour-buffer arguments checked (naming them)."""
     n = len(attrs)
     if isinstance(depth_write, bool | np.bool_):
         writes = np.full(n, as_bool("depth_write", depth_write))
@@ -52,10 +89,7 @@ def check_blend(blend, depth_write, clear_color, attrs: np.ndarray) -> BlendStat
             raise ValueError(f"depth_write must be a bool or (N,) = ({n},) bools; "
                              f"got {short_repr(depth_write)}")  # fmt: skip
     clear = as_finite("clear_color", clear_color, (4,))
-    if blend is None:
-        if not writes.all():
-            raise ValueError("depth_write=False needs a blend mode (it concerns the colour buffer)")
-        return None
+    check_choice("color_format", color_format, COLOR_FORMATS)
     if isinstance(blend, tuple):
         if len(blend) != 2:
             raise ValueError(f"blend: a (src_factor, dst_factor) pair, got {short_repr(blend)}")
@@ -64,117 +98,117 @@ def check_blend(blend, depth_write, clear_color, attrs: np.ndarray) -> BlendStat
         mode, factors = "custom", (str(blend[0]), str(blend[1]))
     else:
         check_choice("blend", blend, (None, *BLEND_MODES))
-        mode, factors = blend, BLEND_MODES[blend]
-    if attrs.shape[2] != 4:
+        mode, factors = blend, (None if blend is None else BLEND_MODES[blend])
+    rgba = attrs.shape[2] == 4
+    if mode is not None and not rgba:
         raise ValueError(f"attrs: blending needs RGBA attributes (k = 4), got k = {attrs.shape[2]}")
-    return BlendState(mode, factors, writes, clear)
+    return BlendState(mode, factors, writes, store_colour(clear, color_format), color_format,
+                      rgba)  # fmt: skip
 
 
-def passed_with_writes(pixel: np.ndarray, depth: np.ndarray, writes: np.ndarray) -> np.ndarray:
-    """(m,) bool: each fragment (drawing order) is strictly nearer than every earlier fragment
-    at its pixel that wrote depth (``writes``); fragments that do not write are still tested.
+def store_colour(rgba: np.ndarray, color_format: str) -> np.ndarray:
+    """What a target of ``color_format`` stores for linear ``rgba`` (..., 4), as linear
+    float64: itself ("float64"), or ("srgb8") the value of the 8-bit code GL writes:
+    clamped to [0, 1], RGB encoded by the sRGB curve and alpha as it is, each rounded to
+    the nearest of 255 steps, RGB then decoded again.
 
-    As :func:`teachraster.pipeline.zbuffer.passed_on_arrival`: a stable sort by pixel and a
-    running maximum of integer keys, offset per pixel so nothing leaks between pixels; a
-    fragment that does not write contributes the key of "nothing" (rank m, the farthest).
+    >>> store_colour(np.array([0.5, 0.5, 0.5, 0.5]), "srgb8").round(6).tolist()
+    [0.502886, 0.502886, 0.502886, 0.501961]
     """
-    m = len(pixel)
-    if m == 0:
-        return np.ones(0, dtype=bool)
-    order = np.argsort(pixel, kind="stable")
-    pix = pixel[order]
-    group = np.cumsum(np.r_[False, pix[1:] != pix[:-1]]).astype(np.int64)
-    _, rank = np.unique(depth[order], return_inverse=True)
-    base = group * (m + 1)
-    key = base + (m - rank)  # larger key = nearer
-    written = np.where(writes[order], key, base)  # a non-writer leaves the buffer as it was
-    best = np.maximum.accumulate(written)
-    before = np.maximum(np.r_[-1, best[:-1]], base)
-    passed = np.empty(m, dtype=bool)
-    passed[order] = key > before
-    return passed
+    if color_format == "float64":
+        return rgba
+    c = np.clip(rgba, 0.0, 1.0)
+    out = np.empty_like(c)
+    out[..., :3] = srgb_to_linear(np.round(linear_to_srgb(c[..., :3]) * 255.0) / 255.0)
+    out[..., 3] = np.round(c[..., 3] * 255.0) / 255.0
+    return out
 
 
-def _sample_fragments(window, culled, offset, size, bits):
-    """Fragments whose *sample* at ``offset`` is covered: the triangles moved so that the
-    pixel centres fall where the samples are (exact for offsets on the 1/256 grid)."""
-    shift = 0.5 - np.asarray(offset, dtype=np.float64)
-    frags = rasterize_batch(window[:, :, :2] + shift, size[0], size[1], subpixel_bits=bits,
-                            skip=culled, snapped_weights=False)  # fmt: skip
-    return frags, shift
+def write_colour(src: np.ndarray, dst: np.ndarray, state: BlendState) -> np.ndarray:
+    """The target's colour (n, 4) after fragments of colour ``src`` (n, 4) pass onto
+    ``dst`` (n, 4): the one rule of the colour stage, and of the pixel history's replay.
+
+    Without blending the fragment's colour replaces the target's; "over" and
+    "premultiplied" with alpha 1 replace it too (written as they are); the other
+    fragments go through the blend equation. An 8-bit target clamps the source first
+    and stores the result rounded (:func:`store_colour`).
+    """
+    return _write(src, dst, state)[0]
 
 
-def _colours(frags, index, shift, clipped, interpolation, msaa):
-    """RGBA at fragments ``index``' pixel centres (MSAA: extrapolated where the centre is
-    outside); perspective-correct only for triangles whose w differ, as the attribute stage."""
-    tri = frags.tri[index]
-    x, y = frags.col[index] + 0.5 + shift[0], frags.row[index] + 0.5 + shift[1]
-    weights = frags.weights_at(tri, x, y)
-    if not msaa:
-        weights = convex_weights(weights)
-    w = clipped.clip[:, :, 3]
-    if interpolation == "perspective":
-        unequal = ~np.all(w == w[:, :1], axis=1)[tri]
-        if unequal.any():
-            weights[unequal] = weights_per_row(weights[unequal], w[tri[unequal]], extrapolate=msaa)
-    return blend_each(weights, clipped.attrs, index=tri, extrapolate=msaa)
+def _write(src, dst, state: BlendState):
+    """:func:`write_colour`, and how many of the fragments went through the equation."""
+    if state.color_format != "float64":
+        src = np.clip(src, 0.0, 1.0)  # GL clamps to a normalised target's range first
+    mixed = 0
+    if state.blending:
+        mix = ~_replaces(src, state)
+        mixed = int(np.count_nonzero(mix))
+        if mixed == len(src):
+            src = apply_blend(src, dst, *state.factors)
+        elif mixed:
+            src = src.copy()
+            src[mix] = apply_blend(src[mix], dst[mix], *state.factors)
+    return store_colour(src, state.color_format), mixed
 
 
-def _layers(pixel, n_pixels, src, state, opaque):
-    """Apply the passed fragments (drawing order) layer by layer onto the clear colour.
+def _replaces(src: np.ndarray, state: BlendState) -> np.ndarray:
+    """(n,) bool: fragments whose blended result is their own colour (alpha 1 "over" or
+    "premultiplied"), which GPUs write without reading the target."""
+    opaque = state.factors in (BLEND_MODES["over"], BLEND_MODES["premultiplied"])
+    if not state.blending or not opaque:
+        return np.full(len(src), not state.blending)
+    return src[:, 3] == 1.0
 
-    Returns the (n_pixels, 4) buffer, how many fragments were blended and how many of those
-    landed on an earlier fragment."""
-    buffer = np.broadcast_to(state.clear_color, (n_pixels, 4)).copy()
-    order = np.argsort(pixel, kind="stable")
-    pix = pixel[order]
+
+def blend_layers(slot: np.ndarray, n_slots: int, src: np.ndarray, state: BlendState):
+    """Apply the fragments that passed (drawing order within each slot) layer by layer onto
+    the clear colour: the colour buffer (n_slots, 4), how many fragments were blended and
+    how many of those landed on an earlier fragment.
+
+    A slot is a pixel (one sample) or a sample of a pixel (``pixel * S + sample``).
+    """
+    buffer = np.broadcast_to(state.clear_color, (n_slots, 4)).copy()
+    order = np.argsort(slot, kind="stable")
+    pix = slot[order]
     start = np.r_[True, pix[1:] != pix[:-1]]
     index = np.arange(len(pix))
     layer = index - np.maximum.accumulate(np.where(start, index, 0))
-    # Group by layer once (stable: pixels stay in order), then walk the groups in turn.
+    # Group by layer once (stable: slots stay in order), then walk the groups in turn.
     by_layer = np.argsort(layer, kind="stable")
     frags = order[by_layer]
     bounds = np.searchsorted(layer[by_layer], np.arange(int(layer.max(initial=-1)) + 2))
     blended = on_something = 0
     for k in range(len(bounds) - 1):
         here = frags[bounds[k] : bounds[k + 1]]
-        p, colour = pixel[here], src[here]
-        mix = ~opaque[here]
-        if mix.any():
-            colour = colour.copy()
-            colour[mix] = apply_blend(colour[mix], buffer[p[mix]], *state.factors)
-        buffer[p] = colour
-        blended += int(mix.sum())
-        on_something += int(mix.sum()) if k else 0
+        p = slot[here]
+        buffer[p], mixed = _write(src[here], buffer[p], state)
+        blended += mixed
+        on_something += mixed if k else 0
     return buffer, blended, on_something
 
 
-def blend_stage(clipped, window, culled, offsets, a, state: BlendState):
-    """The colour buffer of a render: (H, W, 4) resolved colour, (H, W, S, 4) per sample (None
-    for one sample), and the plan's "blending" effect. ``a`` are the checked render inputs."""
-    size, n_pixels = (a.width, a.height), a.width * a.height
-    offsets = np.array([[0.5, 0.5]]) if offsets is None else np.asarray(offsets)
-    writes = state.depth_write[clipped.parent]
-    replaces = state.factors == BLEND_MODES["over"] or state.factors == BLEND_MODES["premultiplied"]
-    samples, counts = [], np.zeros(3, dtype=np.int64)
-    for offset in offsets:
-        frags, shift = _sample_fragments(window, culled, offset, size, a.subpixel_bits)
-        pixel = frags.row * a.width + frags.col
-        passed = np.ones(len(pixel), dtype=bool)
-        if a.depth_test:
-            depth = frags.plane(window[:, :, 2])
-            if a.depth_format != "float64":
-                depth = quantize(depth, a.depth_format)
-            passed = passed_with_writes(pixel, depth, writes[frags.tri])
-        src = _colours(frags, np.flatnonzero(passed), shift, clipped, a.interpolation,
-                       len(offsets) > 1)  # fmt: skip
-        opaque = (src[:, 3] == 1.0) if replaces else np.zeros(len(src), dtype=bool)
-        buffer, blended, on_something = _layers(pixel[passed], n_pixels, src, state, opaque)
-        samples.append(buffer.reshape(a.height, a.width, 4))
-        counts += (int(passed.sum()), blended, on_something)
-    sample_color = np.stack(samples, axis=2)
-    color = sample_color.mean(axis=2)
-    return color, (sample_color if len(offsets) > 1 else None), _effect(state, counts, len(offsets))
+def blend_stage(slot, src, shape, n_samples: int, state: BlendState):
+    """The colour buffer of a render: (H, W, 4) resolved colour, (H, W, S, 4) per sample
+    (None for one sample), and the plan's "blending" effect.
+
+    ``slot`` (e,) and ``src`` (e, 4) are the fragments (samples) that passed the depth test,
+    in drawing order within each slot (pixel, or ``pixel * S + sample``), and their colours;
+    ``shape`` = (height, width).
+    """
+    height, width = shape
+    buffer, blended, on_something = blend_layers(slot, height * width * n_samples, src, state)
+    sample_color = buffer.reshape(height, width, n_samples, 4)
+    color = sample_color.mean(axis=2) if n_samples > 1 else sample_color[:, :, 0]
+    effect = _effect(state, (len(slot), blended, on_something), n_samples)
+    return color, (sample_color if n_samples > 1 else None), effect
+
+
+def replaced_colour(covered: np.ndarray, values: np.ndarray, state: BlendState) -> np.ndarray:
+    """The colour buffer without blending, (..., 4): each covered pixel (sample) holds the
+    colour of the fragment it shows (``values``), the others the clear colour."""
+    return store_colour(np.where(covered[..., None], values, state.clear_color),
+                        state.color_format)  # fmt: skip
 
 
 def _effect(state: BlendState, counts, n_samples: int) -> Effect:

@@ -35,8 +35,9 @@ import numpy as np
 from ...core.edges import passes, setup_edges
 from ...core.multisample import offsets_in_units
 from ..antialiasing.multisampling import depth_planes, pair_attributes, plane_depth
+from ..blending.colour_blending import write_colour
 from ..rasterization.batched_fill import weight_source
-from ..rendering.stages import Visibility, interpolate_stage
+from ..rendering.stages import Visibility, fragment_values, interpolate_stage
 from ..visibility.depth import quantize
 
 #: The outcomes, in the pipeline's order of tests (the first that failed is reported).
@@ -75,6 +76,14 @@ class HistoryRecord:
         The sample shows this triangle at the end.
     hidden_by : int
         "passed" but later overwritten: the input triangle that passed next (-1 none).
+    depth_write : bool
+        The triangle's depth mask: a "passed" record without it leaves the buffer as it was.
+    color : tuple of float
+        With a colour buffer (RGBA attributes): the fragment's own output colour, RGBA, for
+        the records that reached the buffer ("passed"), else ().
+    color_before, color_after : tuple of float
+        With a colour buffer: the target's colour at this sample before and after the
+        record (blended, or written over without blending), else ().
     """
 
     triangle: int
@@ -89,6 +98,10 @@ class HistoryRecord:
     outside: float = float("nan")
     shown: bool = False
     hidden_by: int = -1
+    depth_write: bool = True
+    color: tuple = ()
+    color_before: tuple = ()
+    color_after: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -106,6 +119,7 @@ class PixelHistory:
     depth_test: bool
     shows: int  # the input triangle the frame shows at the pixel (-1 none)
     clipped_away: int = 0  # input triangles clipping removed whole (no screen position)
+    blend: object = None  # the colour buffer's BlendState (None: no colour buffer)
 
     def __len__(self) -> int:
         return len(self.records)
@@ -123,14 +137,32 @@ class PixelHistory:
 
     def replay(self) -> tuple[np.ndarray, np.ndarray]:
         """Rebuild the pixel from the records: per sample (S,) the triangle shown (-1 none)
-        and the depth in the buffer (NaN none). Passing records write in order; the
-        depth test itself is not redone (the records say who passed)."""
+        and the depth in the buffer (NaN none). Passing records write in order (depth only
+        where they write it); the depth test itself is not redone (the records say who
+        passed). :meth:`replay_color` rebuilds the colour."""
         triangle = np.full(self.n_samples, -1, dtype=np.int64)
         depth = np.full(self.n_samples, np.nan)
         for r in self.records:
             if r.outcome == "passed":
-                triangle[r.sample], depth[r.sample] = r.triangle, r.depth
+                triangle[r.sample] = r.triangle
+                if r.depth_write:
+                    depth[r.sample] = r.depth
         return triangle, depth
+
+    def replay_color(self) -> np.ndarray | None:
+        """The colour buffer rebuilt from the records: (S, 4) per sample, from the clear
+        colour through every record's fragment colour in order, by the colour stage's own
+        rule (:func:`~teachraster.pipeline.blending.colour_blending.write_colour`): equal
+        bit for bit to ``frame.sample_color`` (``frame.color`` for one sample). None
+        without a colour buffer."""
+        if self.blend is None:
+            return None
+        buffer = np.tile(self.blend.clear_color, (self.n_samples, 1))
+        for r in self.records:
+            if r.outcome == "passed":
+                s = r.sample
+                buffer[s] = write_colour(np.array([r.color]), buffer[s : s + 1], self.blend)[0]
+        return buffer
 
     def __str__(self) -> str:
         return history_table(self)
@@ -157,6 +189,8 @@ def pixel_history(frame, row, col) -> PixelHistory:
     else:
         records = _multisampled(frame, dbg, row, col)
         n_samples = len(dbg.offsets)
+    if dbg.writes is not None:  # the depth masks, per piece
+        records = [replace(r, depth_write=bool(dbg.writes[r.piece])) for r in records]
     records = _replay_buffer(records, dbg.inputs.depth_test)
     if dbg.offsets is not None:  # MSAA: the value a sample shows is the frame's own
         values = frame.sample_attrs[row, col]
@@ -164,9 +198,11 @@ def pixel_history(frame, row, col) -> PixelHistory:
         records = [replace(r, value=tuple(float(v) for v in values[r.sample])) if r.shown
                    else replace(r, value=hidden[r.piece]) if r.piece in hidden
                    else r for r in records]  # fmt: skip
+    if dbg.blend is not None:
+        records = _colours(frame, dbg, row, col, records)
     dropped = int((np.asarray(frame.trace.clip_status) == 2).sum())
     return PixelHistory(row, col, tuple(records), n_samples, dbg.inputs.depth_test,
-                        int(frame.triangle_id[row, col]), dropped)  # fmt: skip
+                        int(frame.triangle_id[row, col]), dropped, dbg.blend)  # fmt: skip
 
 
 def _setup(dbg, window):
@@ -360,7 +396,7 @@ def _replay_buffer(records, depth_test) -> list[HistoryRecord]:
         outcome = r.outcome
         if outcome == "covered":
             outcome = "passed" if (not depth_test or r.depth < before) else "failed_depth"
-        if outcome == "passed":
+        if outcome == "passed" and r.depth_write:
             buffer[r.sample] = r.depth
         after = buffer.get(r.sample, np.inf)
         out.append(replace(r, outcome=outcome, depth_before=before, depth_after=after))
@@ -374,6 +410,38 @@ def _replay_buffer(records, depth_test) -> list[HistoryRecord]:
     for i in last.values():
         out[i] = replace(out[i], shown=True)
     return out
+
+
+def _colours(frame, dbg, row, col, records) -> list[HistoryRecord]:
+    """The records with the fragments' colours and the target's colour before and after
+    each, replayed from the clear colour by the colour stage's rule. The fragment colours
+    are the colour stage's own: with one sample the fill's fragments evaluated as the
+    render evaluates them, under MSAA the value of the record's (pixel, triangle) pair."""
+    state = dbg.blend
+    source = {r.piece: r.value for r in records if r.value}  # MSAA: the pairs' values
+    if dbg.offsets is None:  # the fragments at this pixel, by piece
+        frags = dbg.fragments
+        at = np.flatnonzero((frags.row == row) & (frags.col == col))
+        a = dbg.inputs
+        values = fragment_values(frags, at, dbg.clipped, a.interpolation, a.forced)
+        source = {int(frags.tri[f]): _tuple(values[i]) for i, f in enumerate(at)}
+    buffer: dict[int, np.ndarray] = {}
+    out = []
+    for r in records:
+        before = buffer.get(r.sample, state.clear_color)
+        if r.outcome != "passed":
+            out.append(replace(r, color_before=_tuple(before), color_after=_tuple(before)))
+            continue
+        src = source[r.piece]
+        after = write_colour(np.array([src]), before[None, :], state)[0]
+        buffer[r.sample] = after
+        out.append(replace(r, color=tuple(src), color_before=_tuple(before),
+                           color_after=_tuple(after)))  # fmt: skip
+    return out
+
+
+def _tuple(c) -> tuple:
+    return tuple(float(v) for v in c)
 
 
 def history_table(h: PixelHistory) -> str:
@@ -404,7 +472,28 @@ def history_table(h: PixelHistory) -> str:
     if h.clipped_away:
         lines.append(f"  ({h.clipped_away} triangle(s) of the frame clipped away whole: behind "
                      "the eye or beyond the far plane, they reach no pixel)")  # fmt: skip
+    lines += colour_lines(h)
     return "\n".join(lines)
+
+
+def colour_lines(h: PixelHistory) -> list[str]:
+    """The colour part of the table: per record that reached the colour buffer, the
+    target's RGBA before, the fragment's own and the target's after (none without a
+    colour buffer)."""
+    if h.blend is None:
+        return []
+    mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
+    out = [f"colour buffer ({mode}, {h.blend.color_format}), RGBA: before -> fragment -> after"]
+    for r in h.records:
+        if r.outcome == "passed":
+            smp = f" s{r.sample}" if h.n_samples > 1 else ""
+            out.append(f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
+                       f" -> {_rgba(r.color_after)}")  # fmt: skip
+    return out
+
+
+def _rgba(c) -> str:
+    return "(" + ", ".join(f"{v:.4g}" for v in c) + ")"
 
 
 def _num(x: float) -> str:
@@ -456,6 +545,31 @@ def draw_history(ax, h: PixelHistory):
         if name in h.outcomes:
             artists.append(ax.bar([0], [0], bottom=bottom, color=color, edgecolor="k",
                                   linewidth=0.5, label=name))  # fmt: skip
+    artists += _draw_colours(ax, h, x, (bottom, hi + pad))
     if n:
         artists.append(ax.legend(fontsize="x-small", loc="best"))
+    return artists
+
+
+def _draw_colours(ax, h: PixelHistory, x, limits):
+    """With a colour buffer: above each record that reached it, three swatches, the
+    target's colour before, the fragment's and the target's after (RGB clipped to [0, 1]
+    on white by alpha, for the eye); returns the artists (none without a colour buffer)."""
+    if h.blend is None or not len(x):
+        return []
+    lo, hi = limits
+    band = (hi - lo) * 0.18
+    ax.set_ylim(lo, hi + band * 1.9)
+    artists = []
+    on = [i for i, r in enumerate(h.records) if r.outcome == "passed"]
+    if not on:
+        return []
+    for key, dx in zip(("color_before", "color", "color_after"), (-0.27, 0.0, 0.27)):
+        rgba = np.array([getattr(h.records[i], key) for i in on])
+        a = np.clip(rgba[:, 3:], 0, 1)
+        shown = np.clip(rgba[:, :3], 0, 1) * a + (1 - a)  # over white, for the eye
+        artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=0.26,
+                              color=shown, edgecolor="k", linewidth=0.4))  # fmt: skip
+    artists.append(ax.text(x[0] - 0.45, hi + band * 1.2, "colour: before | fragment | after",
+                           fontsize="x-small", ha="left", va="bottom"))  # fmt: skip
     return artists

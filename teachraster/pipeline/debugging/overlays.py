@@ -9,8 +9,10 @@ returns that as an (H, W) array, 0 (never NaN) where nothing arrives:
     counts this with a stencil buffer incremented on every fragment, depth test off.
 ``"depth_complexity"``
     Those that *passed* the depth test when they arrived, in submission order (GL: the
-    stencil incremented on depth pass). With the depth test off every fragment passes, so
-    it equals the overdraw.
+    stencil incremented on depth pass, or ``GL_SAMPLES_PASSED``). With the depth test off
+    every fragment passes, so it equals the overdraw. A triangle drawn with
+    ``depth_write=False`` is tested but writes no depth, so what comes after it is tested
+    against the depth written before it.
 ``"quad_overshading"``
     Per 2×2 quad (aligned to even rows and columns), the fraction of the shader lanes
     launched there that were helpers: each triangle that shades a pixel of a quad launches
@@ -173,7 +175,8 @@ def _sample_work(trace, dbg) -> Work:
                             row + dbg.offsets[sample, 1])  # fmt: skip
         if a.depth_format != "float64":
             depth = quantize(depth, a.depth_format)
-        passed = passed_on_arrival(pixel[pair] * n_s + sample, depth)
+        writes = None if dbg.writes is None else dbg.writes[piece[pair]]  # depth masks
+        passed = passed_on_arrival(pixel[pair] * n_s + sample, depth, writes)
     passed_samples = np.bincount(pair, weights=passed, minlength=len(pixel)).astype(np.int64)
     triangle = dbg.clipped.parent[piece]
     return Work(pixel, piece, triangle, samples, passed_samples, None, pixel // a.width)

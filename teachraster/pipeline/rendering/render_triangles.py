@@ -32,7 +32,7 @@ from ...core.sample_patterns import as_samples, is_single
 from ...core.snapping import SUBPIXEL_BITS
 from ...core.validate import as_bool, as_real
 from ..antialiasing.multisampling import multisample_stage
-from ..blending.colour_blending import blend_stage, check_blend
+from ..blending.colour_blending import blend_stage, check_blend, replaced_colour
 from ..planning.inputs import check_render
 from ..planning.render_plan import Plan, depth_test_effect, hi_z_effect
 from ..texturing.quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
@@ -44,6 +44,7 @@ from .stages import (
     cull_stage,
     depth_stage,
     fill_stage,
+    fragment_values,
     interpolate_stage,
     viewport_stage,
 )
@@ -73,6 +74,10 @@ class DebugInputs:
         The single-sample fill's fragments (None with MSAA).
     pixel : (m,) int64 or None
         Their flat pixel indices (the depth stage's, kept rather than recomputed).
+    writes : (M,) bool or None
+        Per triangle after clipping, its depth mask (``depth_write``); None: all write.
+    blend : BlendState or None
+        The colour buffer's state (blend mode, clear colour, format), None without one.
     cache : dict
         What the overlays computed once for this frame (filled on first use).
     """
@@ -83,6 +88,8 @@ class DebugInputs:
     centroid: bool
     fragments: object
     pixel: np.ndarray | None = None
+    writes: np.ndarray | None = None
+    blend: object = None
     cache: dict = field(default_factory=dict, compare=False, repr=False)
 
 
@@ -174,11 +181,13 @@ class Frame:
     Attributes
     ----------
     triangle_id : (H, W) int64
-        Index of the input triangle that wrote each pixel, -1 where none did.
+        Index of the input triangle that wrote each pixel (the last fragment that passed
+        the depth test there), -1 where none did.
     attrs : (H, W, k) float64
         Perspective-correct attributes, NaN where uncovered.
     depth : (H, W) float64
-        Window depth as stored in the depth buffer, NaN where uncovered.
+        Window depth as stored in the depth buffer: only depth that was written, so NaN
+        where uncovered and where only triangles with ``depth_write=False`` passed.
     plan : Plan
         Which effects were simulated, for how much, and why.
     trace : RenderTrace or None
@@ -186,9 +195,10 @@ class Frame:
     sample_triangle_id : (H, W, S) int64 or None
         With ``samples`` other than 1: the input triangle each sample shows, -1 none.
         ``triangle_id``, ``depth`` and ``attrs`` then describe the triangle owning most of
-        the pixel's samples (ties: the earlier), evaluated once for the pixel.
+        the pixel's samples (ties: the earlier), evaluated once for the pixel (``depth``: of
+        the samples holding a written depth, which differ with ``depth_write=False``).
     sample_depth : (H, W, S) float64 or None
-        The depth buffer, one depth per sample, NaN where uncovered.
+        The depth buffer, one depth per sample, NaN where no depth was written.
     sample_attrs : (H, W, S, k) float64 or None
         The attributes each sample holds: those of its triangle, evaluated once per pixel
         (at the centre, extrapolated when outside), NaN where uncovered.
@@ -204,8 +214,12 @@ class Frame:
         Screen-space derivatives of the attributes from 2×2 quads (``derivatives=``): per
         pixel step right and per pixel step down; NaN where uncovered. None when not computed.
     color, sample_color : (H, W, 4), (H, W, S, 4) float64 or None
-        With ``blend=``: the colour buffer (resolved under MSAA) and, with samples, per sample
-        (:mod:`teachraster.pipeline.blending`). None without blending.
+        The colour buffer when ``attrs`` are RGBA (k = 4), resolved under MSAA, and with
+        samples per sample: starting at ``clear_color``, each fragment that passes the depth
+        test is blended in submission order (``blend=`` a mode) or, with ``blend=None``
+        (blending disabled, as in GL), written over what is there
+        (:mod:`teachraster.pipeline.blending`). None without RGBA attributes. Without
+        blending they are built on first read.
     """
 
     triangle_id: np.ndarray
@@ -219,8 +233,8 @@ class Frame:
     samples: np.ndarray | None = None
     ddx: np.ndarray | None = None
     ddy: np.ndarray | None = None
-    color: np.ndarray | None = None
-    sample_color: np.ndarray | None = None
+    color: np.ndarray | None = _OnFirstUse()
+    sample_color: np.ndarray | None = _OnFirstUse()
 
     @property
     def coverage(self) -> np.ndarray:
@@ -320,6 +334,7 @@ def render(
     blend=None,
     depth_write=True,
     clear_color=(0.0, 0.0, 0.0, 0.0),
+    color_format: str = "float64",
 ) -> Frame:
     """Render clip-space triangles into a ``height`` × ``width`` frame (bad arguments raise
     a ValueError or TypeError naming them, see :mod:`teachraster.pipeline.inputs`).
@@ -354,8 +369,16 @@ def render(
     derivatives_where : (N,) bool array-like, optional
         Only the pixels of these input triangles get derivatives (NaN elsewhere).
     blend, depth_write, clear_color : None or "over", "premultiplied", "additive", "multiply"
-        (or a glBlendFunc pair), bool or (N,) bools, (4,): RGBA ``attrs`` blended into
-        ``frame.color`` in submission order (:mod:`teachraster.pipeline.blending`).
+        (or a glBlendFunc pair), bool or (N,) bools, (4,): with RGBA ``attrs`` the colour
+        buffer ``frame.color`` starts at ``clear_color`` and every fragment that passes is
+        blended in submission order, or with ``blend=None`` (blending disabled) written over
+        it. ``depth_write`` (``glDepthMask``, per triangle, with or without blending): a
+        triangle that does not write depth is still tested, and leaves the depth buffer
+        (``frame.depth``, Hi-Z, the history) as it was.
+    color_format : {"float64", "srgb8"}
+        What the colour buffer stores: float64 as computed, or GL's ``SRGB8_ALPHA8`` with
+        ``GL_FRAMEBUFFER_SRGB`` (clamped and rounded to 8 bits after every layer;
+        :mod:`teachraster.pipeline.blending`).
 
     Examples
     --------
@@ -371,58 +394,105 @@ def render(
                      depth_format=depth_format, interpolation=interpolation, force=force,
                      trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
     clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
-    depth_test, trace, forced = a.depth_test, a.trace, a.forced
+    forced = a.forced
     offsets, centroid = _check_samples(samples, centroid)
     mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
-    blending = check_blend(blend, depth_write, clear_color, attrs)
+    blending = check_blend(blend, depth_write, clear_color, attrs, color_format)
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
+    writes = blending.depth_write[clipped.parent]
+    writes = None if writes.all() else writes  # None: every triangle writes depth
     if offsets is not None:  # MSAA: coverage, depth test and resolve per sample
-        frame = _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
-                                     centroid)  # fmt: skip
-        return with_colour(frame, blending, clipped, window, culled, offsets, a)
-    frags, cut = _fill(window, culled, a)  # with Hi-Z: hidden blocks never become fragments
+        return _render_multisampled(clipped, window, culled, (clipping, culling), offsets, a,
+                                    centroid, (blending, writes))  # fmt: skip
+    derivatives = (mode, None if where is None else where[clipped.parent])
+    return _render_single(clipped, window, culled, (clipping, culling), a, derivatives,
+                          (blending, writes))  # fmt: skip
+
+
+def _render_single(clipped, window, culled, effects, a, derivatives, colour) -> Frame:
+    """The one-sample rest of :func:`render`, after clipping, the viewport and culling
+    (``a``: the checked arguments; ``derivatives``: the mode and the pieces that want them;
+    ``colour``: the blend state and the depth masks)."""
+    blending, writes = colour
+    width, height, forced, interpolation = a.width, a.height, a.forced, a.interpolation
+    # with Hi-Z: hidden blocks never become fragments (blending keeps them all, marked)
+    frags, cut = _fill(window, culled, a, writes, blending.blending)
     visible, depth_testing = depth_stage(
-        frags, window, width, height, depth_test, depth_format, forced
+        frags, window, width, height, a.depth_test, a.depth_format, forced, writes
     )
     values, (perspective, attributes) = interpolate_stage(
         frags, visible, clipped, interpolation, forced
     )
     ddx, ddy, quads, derivs = derivatives_stage(
-        frags, visible, clipped, (width, height), mode,
-        None if where is None else where[clipped.parent], interpolation, forced, trace,
+        frags, visible, clipped, (width, height), *derivatives, interpolation, forced, a.trace,
     )  # fmt: skip
-    effects = (clipping, culling, depth_testing, perspective, attributes, derivs)
+    effects = (*effects, depth_testing, perspective, attributes, derivs)
     plan = _plan(cut, frags, visible, effects, forced)
-    record = trace and _record(clipped, window, culled, frags, visible, quads, cut, a)
+    record = a.trace and _record(clipped, window, culled, frags, visible, quads, cut, a,
+                                 (writes, blending))  # fmt: skip
     frame = _frame(visible, values, clipped, frags, width, height, plan, record, ddx, ddy)
-    return with_colour(frame, blending, clipped, window, culled, offsets, a)
+    if not blending.blending:
+        return with_colour(frame, blending)
+    # the colour of every fragment that passed, evaluated as the attributes are
+    passed = np.flatnonzero(visible.passed)
+    src = fragment_values(frags, passed, clipped, interpolation, forced)
+    return with_colour(frame, blending, *blend_stage(visible.pixel[passed], src,
+                                                     (height, width), 1, blending))  # fmt: skip
 
 
-def with_colour(frame, blending, clipped, window, culled, offsets, a) -> Frame:
-    """The frame with its blended colour buffer and the plan's "blending" entry (the hook of
-    :mod:`.blending`); the frame itself when ``blend`` is None."""
-    if blending is None:
+def with_colour(frame, state, color=None, sample_color=None, effect=None) -> Frame:
+    """The frame with its colour buffer (the hook of :mod:`.blending`): the blended
+    ``color`` and ``sample_color`` with the plan's "blending" ``effect``, or without
+    blending (``color`` None) the colour each pixel (sample) shows over the clear colour,
+    built on first read; the frame itself without RGBA attributes."""
+    if not state.buffer:
         return frame
-    color, sample_color, effect = blend_stage(clipped, window, culled, offsets, a, blending)
     # A shallow copy, not dataclasses.replace: replace would read (and so build) the lazy
     # per-sample arrays of a multisampled frame.
     out = copy.copy(frame)
-    for name, value in (("color", color), ("sample_color", sample_color),
-                        ("plan", Plan((*frame.plan.effects, effect)))):  # fmt: skip
-        object.__setattr__(out, name, value)
+    if color is None:
+        written = _Written(out, state)
+        color = written if frame.samples is None else _Written(out, state, resolve=True)
+        sample_color = None if frame.samples is None else written
+    else:
+        object.__setattr__(out, "plan", Plan((*frame.plan.effects, effect)))
+    object.__setattr__(out, "color", color)
+    object.__setattr__(out, "sample_color", sample_color)
     return out
 
 
-def _fill(window, culled, a):
+@dataclass(frozen=True, eq=False, repr=False)
+class _Written:
+    """The colour buffer without blending, built on first read (a callable the frame keeps,
+    picklable): each pixel (sample) the colour of the fragment it shows, over the clear
+    colour; ``resolve``: the mean of the samples."""
+
+    frame: Frame
+    state: object
+    resolve: bool = False
+
+    def __call__(self) -> np.ndarray:
+        f = self.frame
+        if self.resolve:
+            return f.sample_color.mean(axis=2)
+        if f.samples is None:
+            return replaced_colour(f.triangle_id >= 0, f.attrs, self.state)
+        return replaced_colour(f.sample_triangle_id >= 0, f.sample_attrs, self.state)
+
+
+def _fill(window, culled, a, writes=None, keep_all=False):
     """The fill stage, with the Hi-Z hook when the depth test is on (nothing is hidden
-    otherwise): hidden blocks never become fragments; a trace keeps them all, marked.
-    ``a`` are the checked inputs. Returns the fragments and the hook (None without it)."""
+    otherwise): hidden blocks never become fragments; a trace (and ``keep_all``, for
+    blending) keeps them all, marked. ``a`` are the checked inputs, ``writes`` the
+    triangles' depth masks (only writers hide anything). Returns the fragments and the
+    hook (None without it)."""
     cut = None
     if a.depth_test:
         image = (a.height, a.width)
-        cut = HiZCut(window[:, :, 2], image, a.depth_format, "hi_z" in a.forced, a.trace)
+        cut = HiZCut(window[:, :, 2], image, a.depth_format, "hi_z" in a.forced,
+                     a.trace or keep_all, writes=writes)  # fmt: skip
     return fill_stage(window, a.width, a.height, a.subpixel_bits, culled, cut), cut
 
 
@@ -462,17 +532,27 @@ def _hi_z_effects(result, n_fragments, effects, visible, forced):
     return hi_z, depth_testing, attributes
 
 
-def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid) -> Frame:
+def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid, colour) -> Frame:
     """The multisampled rest of :func:`render`, after clipping, the viewport and culling
-    (``a``: the checked arguments)."""
+    (``a``: the checked arguments; ``colour``: the blend state and the depth masks)."""
+    blending, writes = colour
     size = (a.width, a.height)
     options = (a.depth_test, a.depth_format, a.interpolation, a.trace, centroid)
     multi, more = multisample_stage(
-        clipped, window, culled, size, a.subpixel_bits, offsets, options, a.forced
-    )
+        clipped, window, culled, size, a.subpixel_bits, offsets, options, a.forced,
+        (writes, blending.blending),
+    )  # fmt: skip
     plan = Plan((*effects, *more))
-    debug = DebugInputs(a, clipped, multi.offsets, centroid, None) if a.trace else None
-    return _multi_frame(multi, clipped, window, culled, size, plan, debug)
+    debug = None
+    if a.trace:
+        debug = DebugInputs(a, clipped, multi.offsets, centroid, None, writes=writes,
+                            blend=blending if blending.buffer else None)  # fmt: skip
+    frame = _multi_frame(multi, clipped, window, culled, size, plan, debug)
+    if not blending.blending:
+        return with_colour(frame, blending)
+    slot, src = multi.passed  # every sample that passed, and its pair's colour
+    blended = blend_stage(slot, src, (a.height, a.width), len(multi.offsets), blending)
+    return with_colour(frame, blending, *blended)
 
 
 def _check_samples(samples, centroid):
@@ -518,7 +598,7 @@ def _frame(visible, values, clipped, frags, width, height, plan, record, ddx=Non
     triangle_id = np.full(width * height, -1, dtype=np.int64)
     triangle_id[visible.pixels] = clipped.parent[frags.tri[visible.winner]]
     depth = np.full(width * height, np.nan)
-    depth[visible.pixels] = visible.depth[visible.winner]
+    depth[visible.pixels] = visible.buffer_depth  # only depth that was written
     return Frame(
         triangle_id=triangle_id.reshape(height, width),
         attrs=_image(visible, values, width, height),
@@ -549,6 +629,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, debug) -> Frame:
         order = np.argsort(slot * r["n_tri"] + r["tri"])  # by sample, drawing order inside
         for name in ("tri", "pixel", "sample", "depth"):
             r[name] = r[name][order]
+        r["writes"] = None if debug.writes is None else debug.writes[r["tri"]]
         r["slot"] = slot[order]
         tri = np.concatenate([r["tri"], r["whole_tri"]])
         row, col = np.divmod(np.concatenate([r["pixel"], r["whole_pixel"]]), width)
@@ -557,7 +638,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, debug) -> Frame:
             clipped.parent[tri], row, col,
             np.concatenate([r["depth"], np.full(len(r["whole_tri"]), np.nan)]),
             np.concatenate([
-                passed_on_arrival(r["slot"], r["depth"]) if r["depth_test"]
+                passed_on_arrival(r["slot"], r["depth"], r["writes"]) if r["depth_test"]
                 else np.ones(len(r["slot"]), dtype=bool),
                 np.ones(len(r["whole_tri"]), dtype=bool),
             ]),
@@ -577,9 +658,11 @@ def _multi_frame(multi, clipped, window, culled, size, plan, debug) -> Frame:
     )
 
 
-def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTrace:
+def _record(clipped, window, culled, frags, visible, quads, cut, a, colour) -> RenderTrace:
     """The trace of every stage (plain arrays, see :class:`RenderTrace`), with the replay of
-    a GPU's early-z and Hi-Z in drawing order; ``a`` are the checked inputs."""
+    a GPU's early-z and Hi-Z in drawing order; ``a`` are the checked inputs, ``colour`` the
+    depth masks and the blend state."""
+    writes, blending = colour
     width, height, depth_format = a.width, a.height, a.depth_format
     hiz = replay_stage(frags, window, visible, width, height, depth_format)
     return RenderTrace(
@@ -597,5 +680,6 @@ def _record(clipped, window, culled, frags, visible, quads, cut, a) -> RenderTra
         quads=quads,
         hiz=hiz,
         hiz_tiles=None if cut is None else cut.result,
-        debug=DebugInputs(a, clipped, None, False, frags, visible.pixel),
-    )
+        debug=DebugInputs(a, clipped, None, False, frags, visible.pixel, writes,
+                          blending if blending.buffer else None),
+    )  # fmt: skip

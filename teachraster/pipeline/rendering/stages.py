@@ -55,7 +55,7 @@ from ..planning.render_plan import (
 )
 from ..rasterization.batched_fill import Fragments, rasterize_batch
 from ..visibility.depth import quantize
-from ..visibility.zbuffer import passed_on_arrival, resolve
+from ..visibility.zbuffer import last_written, passed_on_arrival, resolve
 
 
 def guard_band(width: int, height: int, bits: int | None) -> float:
@@ -142,9 +142,15 @@ class Visibility:
     pixels : (v,) int64
         Flat indices of the covered pixels, ascending.
     winner : (v,) int64
-        The fragment each covered pixel shows.
+        The fragment each covered pixel shows: the last that passed the depth test (its
+        colour and id are the ones kept).
     contested : int
         Pixels that 2+ fragments reach (depth complexity above one), as the resolve counted.
+    writes : (m,) bool or None
+        Each fragment's depth mask (``depth_write``); None: every fragment writes depth.
+    stored : (v,) int64 or None
+        With ``writes``: the fragment whose depth the buffer keeps at each covered pixel
+        (the last that passed and wrote), -1 where none wrote; None: the winner's.
 
     ``passed`` (m,) bool, whether each fragment passed the depth test when it arrived
     (always True without the test), is computed on first use (for the trace).
@@ -156,12 +162,22 @@ class Visibility:
     pixels: np.ndarray
     winner: np.ndarray
     contested: int = 0
+    writes: np.ndarray | None = None
+    stored: np.ndarray | None = None
 
     @cached_property
     def passed(self) -> np.ndarray:
         if not self.depth_test:
             return np.ones(len(self.pixel), dtype=bool)
-        return passed_on_arrival(self.pixel, self.depth)
+        return passed_on_arrival(self.pixel, self.depth, self.writes)
+
+    @property
+    def buffer_depth(self) -> np.ndarray:
+        """(v,) the depth buffer at the covered pixels: only depth that was written (NaN
+        where no fragment that passed there wrote depth)."""
+        if self.stored is None:
+            return self.depth[self.winner]
+        return np.where(self.stored >= 0, self.depth[self.stored], np.nan)
 
 
 def depth_stage(
@@ -172,6 +188,7 @@ def depth_stage(
     depth_test: bool,
     depth_format: str,
     forced,
+    writes=None,
 ) -> tuple[Visibility, Effect]:
     """5. The z-buffer (Ritschel, *Interpolation and z-buffering*): who is visible where.
 
@@ -182,16 +199,32 @@ def depth_stage(
     fragments of 2+ triangles reach (where the test decides anything); "depth_test" in
     ``forced`` reports every fragment as tested (the one-pass resolve does the same work
     either way; meaningless, and not reported, with the test off).
+
+    ``writes`` (M,) bool, per triangle, is its depth mask (``depth_write``; None: all
+    write): a triangle that does not write is tested but leaves the buffer as it was, so
+    the pixel shows the last fragment that passed and the buffer keeps the last written
+    depth (the test then runs in drawing order, :func:`passed_on_arrival`).
     """
     depth = frags.plane(window[:, :, 2])  # a fresh array: float64 needs no copy
     if depth_format != "float64":
         depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
     force = "depth_test" in forced and depth_test
-    winner, tested = resolve(pixel, depth, width * height, depth_test)
+    if writes is None:
+        winner, tested = resolve(pixel, depth, width * height, depth_test)
+        pixels = np.flatnonzero(winner >= 0)
+        effect = depth_test_effect(depth_test, force, tested, len(pixels))
+        return Visibility(depth, pixel, depth_test, pixels, winner[pixels], tested), effect
+    mask = writes[frags.tri]
+    passed = passed_on_arrival(pixel, depth, mask) if depth_test else np.ones(len(pixel), bool)
+    winner, stored = last_written(pixel, passed, mask, width * height)
+    tested = int((np.bincount(pixel, minlength=width * height) > 1).sum())
     pixels = np.flatnonzero(winner >= 0)
     effect = depth_test_effect(depth_test, force, tested, len(pixels))
-    return Visibility(depth, pixel, depth_test, pixels, winner[pixels], tested), effect
+    visible = Visibility(depth, pixel, depth_test, pixels, winner[pixels], tested, mask,
+                         stored[pixels])  # fmt: skip
+    visible.__dict__["passed"] = passed  # computed already (a cached_property's slot)
+    return visible, effect
 
 
 def interpolate_stage(
@@ -226,7 +259,11 @@ def interpolate_stage(
 
 
 def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
-    """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed."""
+    """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed.
+
+    Each row's value depends on its fragment alone (not on the others evaluated with it),
+    so the colour stage, the attributes and the pixel history get the same bits for the
+    same fragment whichever set they ask for."""
     k = attrs.shape[2]
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
@@ -240,8 +277,20 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     else:
         weights = convex_weights(frags.weights_at(tri, x, y))
         if persp.any():
-            weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
+            weights[persp] = _perspective_weights(frags, tri[persp], x[persp], y[persp], w)
     return blend_each(weights, attrs, index=tri)
+
+
+def fragment_values(frags, index, clipped: ClipResult, interpolation: str, forced) -> np.ndarray:
+    """Attributes (n, k) at fragments ``index``, exactly as :func:`interpolate_stage`
+    evaluates them (the same bits): for the colour of every fragment that reaches the
+    colour buffer, and for the pixel history."""
+    w = clipped.clip[:, :, 3]
+    unequal = ~np.all(w == w[:, :1], axis=1)
+    if interpolation == "affine":
+        unequal[:] = False
+    divide_all = "perspective" in forced and interpolation == "perspective"
+    return _interpolate(frags, np.asarray(index), w, clipped.attrs, unequal, divide_all)
 
 
 def _perspective_weights(frags, tri, x, y, w):

@@ -39,6 +39,7 @@ import numpy as np
 
 from ..rasterization.batched_fill import Fragments
 from .depth import quantize
+from .zbuffer import running_min
 
 #: Side of a Hi-Z tile, in pixels (hardware uses 8×8 or larger).
 HIZ_TILE = 8
@@ -131,7 +132,7 @@ def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, heig
     b_row, b_col = (block_tile // tiles_x) * tile, (block_tile % tiles_x) * tile
     open_pixels = np.bincount(block, weights=~contested, minlength=len(keys))
     tested = np.ones(len(keys), bool) if test_all else open_pixels == 0
-    arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri, width * height)
+    arrivals = _Arrivals(visible.pixel, visible.depth, frags.tri, width * height, visible.writes)
     nearest = np.full(len(keys), np.nan)
     farthest = np.full(len(keys), np.nan)
     rejected = np.zeros(len(keys), dtype=bool)
@@ -186,9 +187,12 @@ def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> n
 
 class _Arrivals:
     """The z-buffer as each fragment found it: fragments grouped by pixel (drawing order
-    kept inside a group) with the running minimum of their stored depths."""
+    kept inside a group) with the running minimum of the depths they wrote (``writes``,
+    per fragment: a fragment with depth writes off is tested but writes nothing, so it
+    neither lowers a tile's maximum nor fills an empty pixel)."""
 
-    def __init__(self, pixel: np.ndarray, depth: np.ndarray, tri: np.ndarray, n_pixels: int):
+    def __init__(self, pixel: np.ndarray, depth: np.ndarray, tri: np.ndarray, n_pixels: int,
+                 writes=None):  # fmt: skip
         m = len(pixel)
         # Fragments come in drawing order (by triangle), so a stable sort by pixel orders
         # each pixel's fragments by triangle.
@@ -199,9 +203,11 @@ class _Arrivals:
         self.count = np.bincount(pixel, minlength=n_pixels)
         self.start = np.cumsum(self.count) - self.count  # each pixel's first fragment
         sorted_depth = depth[self.order]
+        written = sorted_depth if writes is None else np.where(writes[self.order], sorted_depth,
+                                                               np.inf)  # fmt: skip
         longest = int(self.count.max(initial=0))
         sorted_key = key[self.order] if longest > 1 else None
-        self.running = _running_min(sorted_key, sorted_depth, longest)
+        self.running = running_min(sorted_key, written, longest)
         before = np.empty(m)  # the buffer each fragment found: the running minimum so far
         before[1:] = self.running[:-1]
         before[self.start[self.count > 0]] = np.inf  # a pixel's first fragment: empty
@@ -263,15 +269,3 @@ class _Arrivals:
             earlier = (k < count) & (self.source_tri[self.order[at]] < tri)  # earlier triangles
             before = np.where(earlier, self.running[at], before)  # running min: the last
         return np.where(inside, before, -np.inf).max(axis=1)
-
-
-def _running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.ndarray:
-    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input) no
-    longer than ``longest``: log2(longest) doubling steps, each one pass over the array."""
-    out = values.copy()
-    step = 1
-    while step < longest:
-        same = group_key[step:] == group_key[:-step]
-        np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
-        step *= 2
-    return out

@@ -160,13 +160,21 @@ class HiZCut:
     forced : bool
         Compare every line (same rejections, more work).
     keep_all : bool
-        Drop nothing, only mark (for the trace, which lists every fragment).
+        Drop nothing, only mark (for the trace, which lists every fragment, and for
+        blending, where a fragment hidden in the end may still have been blended into the
+        colour before its occluder arrived).
+    writes : (M,) bool or None
+        Each triangle's depth mask (``depth_write``): only triangles that write depth can
+        be occluders (None: all write). The bound still holds whatever the order: a
+        fragment strictly farther than a written depth at its pixel is never the last to
+        pass there.
     """
 
     def __init__(self, z, image, depth_format: str, forced: bool, keep_all: bool,
-                 tile: int = HIZ_TILE):  # fmt: skip
+                 tile: int = HIZ_TILE, writes=None):  # fmt: skip
         self.z, self.image, self.depth_format = z, image, depth_format
         self.forced, self.keep_all, self.tile = forced, keep_all, tile
+        self.writes = writes
         self.result: HiZTiles | None = None
 
     def __call__(self, lines: Fragments, counts: np.ndarray) -> Spans:
@@ -182,7 +190,8 @@ class HiZCut:
             base = HiZTiles(t, farthest.reshape(grid), np.zeros(grid, dtype=np.int64),
                             n_frags, raster_lines=n_lines, skipped="short lines")  # fmt: skip
             return self._unchanged(whole, base)
-        runs, pairs, occluders = _occluder_tiles(lines, counts, self.image, t)
+        writers = counts if self.writes is None else np.where(self.writes[lines.tri], counts, 0)
+        runs, pairs, occluders = _occluder_tiles(lines, writers, self.image, t)
         base = HiZTiles(t, farthest.reshape(grid), occluders.reshape(grid), n_frags,
                         raster_lines=n_lines, forced=self.forced)  # fmt: skip
         which, skipped = self._lines_to_test(lines, counts, occluders, runs, grid, base)

@@ -68,28 +68,72 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     return winner, tested
 
 
-def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray) -> np.ndarray:
+def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None) -> np.ndarray:
     """(m,) bool: did each fragment pass the depth test when it arrived (drawing order)?
 
-    A fragment passes when it is strictly nearer than every earlier fragment at its pixel.
-    Fragments are grouped by pixel (a stable sort keeps drawing order within a pixel) and a
-    running minimum of depth *ranks* is taken per group: ranks are integers, so the groups
-    can be offset to keep one running maximum from leaking across pixels.
+    A fragment passes when it is strictly nearer than every earlier fragment at its pixel
+    *that wrote depth*: ``writes`` (m,) bool is each fragment's depth mask (GL's
+    ``glDepthMask``; None: all write). A fragment that does not write is still tested,
+    and leaves the buffer as it was.
+
+    Fragments are grouped by pixel (a stable sort keeps drawing order within a pixel) and
+    the buffer each one found is the running minimum of the depths written before it in
+    its group (:func:`running_min`; +inf for a fragment that writes nothing).
+
+    >>> passed_on_arrival(np.array([0, 0, 0]), np.array([0.5, 0.7, 0.6]),
+    ...                   np.array([False, True, True])).tolist()
+    [True, True, True]
     """
     m = len(pixel)
     if m == 0:
         return np.ones(0, dtype=bool)
     order = np.argsort(pixel, kind="stable")
     pix = pixel[order]
-    group = np.cumsum(np.r_[False, pix[1:] != pix[:-1]])
-    _, rank = np.unique(depth[order], return_inverse=True)  # equal depths, equal rank
-    # Running minimum of rank within each group, as a running maximum of
-    # group * m + (m - 1 - rank): later groups always exceed earlier ones.
-    key = group * m + (m - 1 - rank)
-    best = np.maximum.accumulate(key)
-    before = np.r_[-1, best[:-1]]  # the best key before each fragment
-    new_group = np.r_[True, pix[1:] != pix[:-1]]
-    passed_sorted = new_group | (key > before)  # strictly smaller rank than all before
+    ranked = depth[order]
+    written = ranked if writes is None else np.where(np.asarray(writes)[order], ranked, np.inf)
+    first = np.flatnonzero(np.r_[True, pix[1:] != pix[:-1]])
+    longest = int(np.diff(np.r_[first, m]).max())
+    buffer = np.empty(m)  # the buffer each fragment found: the running minimum before it
+    buffer[1:] = running_min(pix, written, longest)[:-1]
+    buffer[first] = np.inf  # a pixel's first fragment finds it empty
     passed = np.empty(m, dtype=bool)
-    passed[order] = passed_sorted
+    passed[order] = ranked < buffer
     return passed
+
+
+def running_min(group_key: np.ndarray, values: np.ndarray, longest: int) -> np.ndarray:
+    """Running minimum of ``values`` within runs of equal ``group_key`` (sorted input) no
+    longer than ``longest``: log2(longest) doubling steps, each one pass over the array.
+
+    >>> running_min(np.array([0, 0, 0, 1, 1]), np.array([3.0, 1.0, 2.0, 5.0, 4.0]), 3).tolist()
+    [3.0, 1.0, 1.0, 5.0, 4.0]
+    """
+    out = values.copy()
+    step = 1
+    while step < longest:
+        same = group_key[step:] == group_key[:-step]
+        np.minimum(out[step:], np.where(same, out[:-step], np.inf), out=out[step:])
+        step *= 2
+    return out
+
+
+def last_written(pixel: np.ndarray, passed: np.ndarray, writes, n_pixels: int):
+    """Per pixel, the last fragment that passed (the one whose colour and id the pixel
+    keeps: later passes overwrite) and the last that passed *and* wrote depth (the one
+    whose depth the buffer keeps), -1 where none; fragments in drawing order.
+
+    With every fragment writing and the test on, both are :func:`resolve`'s winner.
+
+    >>> last_written(np.array([1, 1, 1]), np.array([True, True, False]),
+    ...              np.array([True, False, True]), 3)[1].tolist()
+    [-1, 0, -1]
+    """
+    index = np.arange(len(pixel))
+    shown = np.full(n_pixels, -1, dtype=np.int64)
+    np.maximum.at(shown, pixel[passed], index[passed])
+    if writes is None:
+        return shown, shown
+    stored = np.full(n_pixels, -1, dtype=np.int64)
+    keep = passed & np.asarray(writes)
+    np.maximum.at(stored, pixel[keep], index[keep])
+    return shown, stored
