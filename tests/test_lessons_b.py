@@ -45,8 +45,17 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     n16 = ns.subdivided[16]
     assert n16["mean_abs_texels"] < 1.0  # "under a texel on average"
     assert 10 <= n16["error"] < 100  # "tens of texels at the worst pixels"
-    ratios = [ns.mean_err[b] / ns.mean_err[a] for a, b in zip(ns.ns_, ns.ns_[1:])]
-    assert all(2.0 < r < 6.0 for r in ratios)  # about 4 per halving: error ∝ N²
+    # "the printed exponents start near 2 and fall as N grows" (spans end before their N-th pixel)
+    ex = ns.exponents
+    assert ex[0] > 1.9 and all(a > b for a, b in zip(ex, ex[1:])) and ex[-1] < 1.75, ex
+    # "tens of texels ... a pixel or more (a few pixels) on screen at the worst pixels"
+    k = int(np.argmax(ns.err_tex))
+    assert ns.err_tex[k] == pytest.approx(n16["error"]) and 1 <= ns.err_px[k] < 10
+    assert 1 <= ns.err_px.max() < 10 and ns.err_px.mean() < 1
+    # the cycle model puts every subdivided variant at a fraction of the exact divide's cost
+    assert all(r < 0.6 for r in ns.model_ratio.values()) and ns.model_ratio[16] < 0.15
+    # "about half the bytes differ, each by one level"
+    assert 0.4 < ns.differ < 0.6 and int(np.abs(ns.truncated - ns.rounded).max()) == 1
     cyc = ns.cyc
     assert cyc["perspective"] > 10 * cyc["affine"]  # "tens of times what affine does"
     assert cyc["affine"] < cyc["subdivided N=16"] < cyc["perspective"] / 5  # "buys most of it back"
@@ -70,7 +79,22 @@ def test_06_edge_bits_and_depth_claims():
     depth_rows = [r for r in ns.rows if r["group"] == "depth"]
     front = [r["variant"] for r in bench.pareto_front(depth_rows, x="bits")]
     assert not any(v.startswith("linear") for v in front)
-    assert ns.channels == 3
+    # "window float32 and window unorm24 get exactly the same pixels wrong": the same step near 1
+    assert (
+        rows[("depth", "window float32")]["facing_wrong"]
+        == rows[("depth", "window unorm24")]["facing_wrong"]
+    )
+    assert ns.spacing32 == pytest.approx(ns.step24, rel=1e-6)
+    stored_front = [r["variant"] for r in bench.pareto_front(depth_rows, x="stored_bits")]
+    assert "window unorm24" in stored_front and "window float32" not in stored_front
+    assert {r["variant"].split()[1]: r["stored_bits"] for r in depth_rows} == {
+        "float64": 64,
+        "float32": 32,
+        "unorm24": 24,
+        "unorm16": 16,
+    }
+    # the two naive tie rules fail on the same shared-edge centres, none on the outline
+    assert ns.cracks["E >= 0"]["double_hits"] == ns.cracks["E > 0"]["gaps"] > 0
     # "float32 keeps 24 bits, fewer than a position at 1e6 px on the 1/256 px grid needs"
     assert ns.position_bits == 28 > 24 and ns.float32_step == 1 / 16
     assert np.isclose(ns.floor_w.max() / ns.floor_w.min(), 100)  # "w grows a hundredfold"
@@ -90,6 +114,10 @@ def test_06_divide_cost_slider_reprices_the_front():
         assert "subdivided N=2" not in ex.front  # as dear as perspective-correct, and worse
         assert cheap["perspective"] / cheap["affine"] < 10 < ns.cyc["perspective"]
         assert "6×" in ex.info.value
+        cheap_text = ex.info.value
+        ex.divide.value = 128.0  # the slider's top: the headline moves with the price
+        assert ex.info.value != cheap_text and "N=16 costs <b>7%</b>" in ex.info.value
+        assert "N=16 costs <b>27%</b>" in cheap_text
         ex.error.value = "mean error"
         assert ex.front[-1] == "perspective"
     finally:
