@@ -131,6 +131,48 @@ def test_07_the_catalogue_still_passes():
     assert not ns.wrong32.any()  # the predicted "nothing at all" at 1e6 px in float32
 
 
+def test_07_predictions_and_the_numbers_the_text_quotes():
+    ns = lesson("07_hard_cases")
+    # the split square's diagonal runs through the centres (1, 1) .. (6, 6): 6 drawn twice
+    assert ns.twice == 6 == int((ns.split_square[1] > 1).sum())
+    # float32's gap near 1e12 dwarfs every value of E inside the triangle (its doubled area)
+    assert ns.spacing == 2.0**16 and ns.doubled_area < ns.spacing / 100
+    # the sliver below the shared edge owns the row, alone
+    assert ns.owners == [ns.below]
+    # float32 and unorm24 lose about the same pixels at the shallow slope (same step in [0.5, 1))
+    f32, u24 = ns.coplanar_wrong[("float32", 1e-06)], ns.coplanar_wrong[("unorm24", 1e-06)]
+    assert f32 > 0 and u24 > 0 and abs(f32 - u24) <= 0.25 * max(f32, u24)
+    assert float(np.spacing(np.float32(ns.near_depth))) == pytest.approx(1 / (2**24 - 1), rel=1e-6)
+
+
+def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    assert set(ns.my_wrong) == set(hardcases.list_cases("mesh"))
+    assert all(v > 0 for v in ns.my_wrong.values())  # E >= 0 differs on every mesh case
+
+    # ... and the change the text asks for (the top-left rule) brings every count to 0
+    def top_left_coverage(xy, width, height):
+        xy = np.asarray(xy, dtype=float)
+        a, b, c = xy
+        if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+            xy = xy[[0, 2, 1]]
+        x, y = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
+        inside = np.ones((height, width), dtype=bool)
+        for p, q in zip(xy, np.roll(xy, -1, axis=0)):
+            e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
+            top_left = q[1] < p[1] or (q[1] == p[1] and q[0] > p[0])
+            inside &= (e > 0) | ((e == 0) & top_left)
+        return inside
+
+    for name in hardcases.list_cases("mesh"):
+        case = hardcases.get_case(name)
+        w, h = case.inputs["size"]
+        mine = sum(top_left_coverage(t, w, h).astype(int) for t in case.triangles)
+        assert np.array_equal(mine, case.run().counts), name
+
+
 def test_07_case_picker_driven_by_the_test():
     from teachraster.widgets.case_picker import CasePicker
 
