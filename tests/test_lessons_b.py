@@ -301,6 +301,18 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     assert sampled[(2.0, "gaussian")].rms_error < sampled[(0.0, "box")].rms_error
 
 
+def test_09_quads_closed_form_and_predictions():
+    ns = lesson("09_texture_filtering")
+    # the title counts distinct quads, the plan (triangle, quad) shadings: one quad twice
+    assert ns.art.n_quads == 20 and ns.shadings == 21
+    assert f"{ns.shadings} 2x2 quad(s)" in str(ns.quads.plan["derivatives"])
+    # the closed form (N_x - f D_x) / D is the derivative at the step's middle
+    np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
+    # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
+    assert ns.level_q == 2 and abs(ns.lam_q - np.log2(3)) < 1e-12
+    assert ns.top > 0  # the figures start at the floor, not in the sky
+
+
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     ns = lesson("09_texture_filtering")
     b, nmn = ns.b, ns.nmn
@@ -318,6 +330,11 @@ def test_09_filter_explorer_driven_by_the_test():
         for f in ["nearest", "trilinear", "anisotropic"]:
             explorer.filter.value = f
             errors[f] = explorer.rms
+            read = explorer.levels_read[np.isfinite(explorer.levels_read)]
+            if f == "nearest":  # no mipmaps: the level panel shows level 0 everywhere
+                assert read.size and (read == 0).all()
+            else:
+                assert read.max() > 2  # the tilted square's far end reads small levels
         assert errors["trilinear"] < errors["nearest"] and errors["anisotropic"] < errors["nearest"]
     finally:
         explorer.close()
