@@ -255,6 +255,13 @@ def test_08_sampling_explorer_and_inspector():
 
 
 # -- 11 debugging a frame ------------------------------------------------------------------------
+def test_11_replay_and_the_sliver_between_centres():
+    ns = lesson("11_debugging_a_frame")
+    assert ns.replay_matches  # "replaying the records that passed rebuilds the pixel exactly"
+    covered_1, covered_4 = ns.covered[1], ns.covered[4]
+    assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
+
+
 def test_11_helper_share_counts_every_lane_launched():
     ns = lesson("11_debugging_a_frame")
     # "Small triangles waste most of their quads' lanes on helpers": the sphere's median
