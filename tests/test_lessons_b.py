@@ -198,6 +198,12 @@ def test_08_error_exponents_follow_mitchell_and_the_text():
     e = ns.edge_slopes
     assert abs(e["jittered"] + 0.75) < 0.08 and abs(e["random"] + 0.5) < 0.05, e
     assert abs(e["grid, axis edges"] + 0.5) < 0.05 and e["grid"] < -0.75, e
+    # "the standard 4-, 8- and 16-sample patterns" put every sample on its own row and column
+    import teachraster as tr
+
+    for n in (4, 8, 16):
+        p = tr.sample_pattern(n)
+        assert len(set(p[:, 0].tolist())) == len(set(p[:, 1].tolist())) == n
     # "on these triangles the ordered grid has the smallest mean error at S = 16"
     assert ns.best16 == "grid" == min(ns.err16, key=ns.err16.get)
 
