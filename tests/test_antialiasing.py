@@ -65,3 +65,25 @@ def test_bad_input():
         pixel_area([[0, 0], [1, 1], [0, 1]], 0, 4)
     with pytest.raises(TypeError, match="exact"):
         pixel_area([[0, 0], [1, 1], [0, 1]], 4, 4, exact="yes")
+
+
+def test_edge_error_study_follows_mitchell():
+    """Stratified (jittered) error ∝ S^-3/4, random ∝ S^-1/2, the ordered grid S^-1/2 on axis
+    edges and better than S^-3/4 over all angles (Mitchell, SIGGRAPH 1996)."""
+    from teachraster.study.antialiasing import _half_plane_area, edge_error_study
+
+    rows = edge_error_study(counts=(4, 16, 64), edges=1500)
+    slope = {}
+    for kind in ("grid", "jittered", "random", "grid, axis edges"):
+        r = [x for x in rows if x["kind"] == kind]
+        slope[kind] = np.polyfit(np.log([x["samples"] for x in r]),
+                                 np.log([x["mean_error"] for x in r]), 1)[0]  # fmt: skip
+    assert abs(slope["jittered"] + 0.75) < 0.08, slope
+    assert abs(slope["random"] + 0.5) < 0.08 and abs(slope["grid, axis edges"] + 0.5) < 0.05
+    assert slope["grid"] < slope["jittered"] + 0.02, slope
+    # the exact area: a half-plane through the square's centre at any angle halves it
+    th = np.linspace(0.1, 3.0, 7)
+    nx, ny = np.cos(th), np.sin(th)
+    assert np.allclose(_half_plane_area(nx, ny, 0.5 * (nx + ny)), 0.5)
+    with pytest.raises(ValueError, match="squares"):
+        edge_error_study(counts=(8,))

@@ -62,4 +62,4 @@ def test_lesson_08_shows_what_it_says(shown):
     assert 0 < shown["per_sample"] < shown["covered"]
     err = shown["errors"]
     assert err["standard16"] < err["standard4"] < err["standard1"]
-    assert "16 samples" in shown["inspected"]
+    assert "of 16 covered" in shown["inspected"]

@@ -68,3 +68,19 @@ def test_exercise_notebook_follows_the_grading_convention():
     assert all(c.metadata["nbgrader"]["locked"] for c in others)
     assert all(not c.metadata["nbgrader"]["grade"] and not c.metadata["nbgrader"]["solution"]
                for c in others)  # fmt: skip
+
+
+def test_predictions_and_standards_numbers(ns):
+    # "how many pixels does GL's diamond-exit rule light": 8, one per column 0..7, p1's left out
+    assert int(ns.count_line.coverage.sum()) == len(ns.lit) == 8
+    assert sorted(c for _, c in ns.lit) == list(range(8))
+    # MSAA with blending: the predicted blue component is the resolved one
+    assert ns.k in (1, 2, 3) and abs(ns.resolved[2] - ns.resolved_blue) < 1e-12
+    assert ns.resolved[3] < 1  # alpha blended with one factor pair: not 1 (the text says so)
+    # sRGB: half of white's light encodes to 0.735
+    assert abs(ns.mixed - 0.7353569830524495) < 1e-12
+    # the two crossing triangles' centres differ in depth: the sort is not an arbitrary tie
+    assert ns.centre_z[0] != ns.centre_z[1]
+    if getattr(ns, "allowed", None) is not None:  # an OpenGL context was there
+        # llvmpipe stays within GL 4.6 §14.5.1's conditions 1-3 on every random line
+        assert all(ns.allowed[k] == ns.n_lines for k in "123"), ns.allowed

@@ -63,3 +63,26 @@ def test_only_an_inconsistent_tie_rule_cracks_the_mesh():
     assert ops.crack_counts(mesh, 24, 24, "E > 0")["gaps"] > 0
     with pytest.raises(ValueError, match="rule"):
         ops.rule_coverage(mesh[0], 4, 4, "E != 0")
+
+
+def test_cracks_are_counted_inside_the_outline_only():
+    # The outline is decided by the neighbouring mesh: E > 0 leaves exactly the shared-edge
+    # centres open that E >= 0 draws twice, and neither count includes the outline.
+    mesh = ops.tie_mesh(24, cells=3)
+    ge, gt = ops.crack_counts(mesh, 24, 24, "E >= 0"), ops.crack_counts(mesh, 24, 24, "E > 0")
+    assert ge["double_hits"] == gt["gaps"] > 0 and ge["gaps"] == gt["double_hits"] == 0
+    outline = ops.outline_centres(mesh, 24, 24)
+    assert np.array_equal(outline, ge["outline"])
+    # the tie mesh is a square whose corners are on centres: its outline is the square's border
+    lo, hi = int(mesh.min()), int(mesh.max())
+    side = hi - lo + 1
+    assert outline.sum() == 4 * (side - 1)
+    assert (gt["counts"][outline] == 0).all()  # E > 0 leaves the outline to the neighbour
+
+
+def test_depth_rows_carry_the_bits_they_store():
+    rows = [{"group": "depth", "variant": f"window {f}"} for f in ops.DEPTH_STORED_BITS]
+    stored = {r["variant"].split()[1]: r["stored_bits"] for r in ops.with_counts(rows)}
+    assert stored == {"float64": 64, "float32": 32, "unorm24": 24, "unorm16": 16}
+    precision = {r["variant"].split()[1]: r["bits"] for r in ops.with_counts(rows)}
+    assert precision["float32"] == precision["unorm24"] == 24  # the same step near depth 1

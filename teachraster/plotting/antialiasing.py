@@ -162,6 +162,8 @@ class PixelSampleArtists(Artists):
         ids, offsets = sample_data(source)
         ax.set_xlim(col - 0.15, col + 1.15)
         ax.set_ylim(row + 1.15, row - 0.15)
+        ax.set_xticks([col, col + 0.5, col + 1])  # the pixel's sides and centre, uncrowded
+        ax.set_yticks([row, row + 0.5, row + 1])
         self.square.set_data([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row])
         self.centre.set_data([col + 0.5], [row + 0.5])
         trace = getattr(getattr(source, "trace", None), "samples", None)
@@ -174,25 +176,33 @@ class PixelSampleArtists(Artists):
             self.edges += ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw(0.8))
         values = None if trace is None else trace.edge_values(row, col)
         names = [] if trace is None else [edge_name(a, b) for a, b in source.trace.edges]
+        few = len(offsets) <= 4  # room for each sample's edge values; else its number only
         for s, (ox, oy) in enumerate(offsets):
             t = int(ids[row, col, s])
             color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
-            self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4), mfc=color,
-                                 mec=COLORS["edge"], zorder=5)  # fmt: skip
-            label = _label(s, t, None if values is None else values[s], names)
+            self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4 if few else 1.0),
+                                 mfc=color, mec=COLORS["edge"], zorder=5)  # fmt: skip
+            label = _label(s, t, None if values is None or not few else values[s], names)
+            inward = 1 if ox < 0.5 else -1  # labels point into the pixel, never off the panel
             self.labels.append(ax.annotate(
-                label, (col + ox, row + oy), xytext=(6, 6), textcoords="offset points",
-                fontsize=fs(0.6), bbox=label_box(0.8), zorder=6,
+                label if few else str(s), (col + ox, row + oy), xytext=(6 * inward, 6),
+                textcoords="offset points", ha="left" if inward > 0 else "right",
+                fontsize=fs(0.6 if few else 0.5), bbox=label_box(0.8) if few else None,
+                zorder=6,
             ))  # fmt: skip
         covered = int((ids[row, col] >= 0).sum())
-        ax.set_title(f"pixel (row {row}, col {col}): {covered} of {len(offsets)} samples covered")
+        key = f"\nbeside each sample: {' '.join(names)}" if few and values is not None else ""
+        ax.set_title(f"pixel ({row}, {col}): {covered} of {len(offsets)} covered{key}",
+                     fontsize=fs(0.7))  # fmt: skip
 
 
 def _label(s, t, e, names) -> str:
+    """A sample's label: its number, the triangle that covers it, and its edge values (in
+    the order ``names`` gives in the title)."""
     head = f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
     if e is None:
         return head
-    return head + "\n" + " ".join(f"{n}={v:+.3g}" for n, v in zip(names, e))
+    return head + "\n" + " ".join(f"{v:+.3g}" for v in e)
 
 
 def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> PixelSampleArtists:

@@ -153,3 +153,63 @@ def sample_error_study(triangles=None, size: int = 48, counts=(1, 2, 4, 8, 16),
             rows.append({"kind": kind, "samples": n, "mean_error": float(e.mean()),
                          "max_error": float(e.max()), "time_s": statistics.median(times)})  # fmt: skip
     return rows
+
+
+def _half_plane_area(nx, ny, c) -> np.ndarray:
+    """Exact area of {(x, y) in the unit square : nx·x + ny·y <= c}, vectorised.
+
+    Mirroring x (or y) makes both normal components non-negative; then the area is the
+    distribution function of a·x + b·y for x, y uniform: a piecewise quadratic in c.
+    """
+    a, b = np.abs(nx), np.abs(ny)
+    t = c - np.minimum(nx, 0.0) - np.minimum(ny, 0.0)
+    ramp = lambda s: np.maximum(s, 0.0) ** 2  # noqa: E731
+    area = (ramp(t) - ramp(t - a) - ramp(t - b) + ramp(t - a - b)) / (2 * a * b)
+    return np.clip(area, 0.0, 1.0)
+
+
+def edge_error_study(counts=(4, 16, 64, 256), edges: int = 4000, seed: int = 1) -> list[dict]:
+    """Mean |sampled − exact| coverage of one pixel crossed by a straight edge, per pattern.
+
+    Each of ``edges`` random half-planes (a uniform angle, and an offset uniform over the
+    lines that cross the pixel) cuts the unit pixel square; S samples estimate the area it
+    covers. Kinds: ``"grid"`` (√S × √S ordered grid), ``"jittered"`` (one random sample in
+    each grid cell, drawn anew for every edge: stratified sampling), ``"random"`` (S
+    independent uniform samples), and ``"grid, axis edges"`` (the ordered grid against
+    horizontal edges only: its worst case). Mitchell (*Consequences of stratified sampling in
+    graphics*, SIGGRAPH 1996) shows that in pixels crossed by an edge stratified sampling's
+    variance falls like S^-3/2, so its error like S^-3/4; independent samples fall like
+    S^-1/2.
+
+    Returns
+    -------
+    list of dict
+        ``kind``, ``samples``, ``mean_error`` per kind and count.
+    """
+    rng = np.random.default_rng(seed)
+    theta = rng.uniform(0.0, np.pi, edges)
+    nx, ny = np.cos(theta), np.sin(theta)
+    lo = np.minimum(nx, 0.0) + np.minimum(ny, 0.0)
+    c = lo + rng.uniform(0.0, 1.0, edges) * (np.abs(nx) + np.abs(ny))
+    area = _half_plane_area(nx, ny, c)
+    level = rng.uniform(0.0, 1.0, edges)  # horizontal edges: y <= level
+    rows = []
+    for s in counts:
+        n = int(round(np.sqrt(s)))
+        if n * n != s:
+            raise ValueError(f"counts must be perfect squares, got {s}")
+        cell = np.stack(np.meshgrid(np.arange(n), np.arange(n)), -1).reshape(-1, 2) / n
+        patterns = {
+            "grid": np.broadcast_to(cell + 0.5 / n, (edges, s, 2)),
+            "jittered": cell + rng.uniform(0.0, 1.0 / n, (edges, s, 2)),
+            "random": rng.uniform(0.0, 1.0, (edges, s, 2)),
+        }
+        for kind, p in patterns.items():
+            inside = (nx[:, None] * p[..., 0] + ny[:, None] * p[..., 1] <= c[:, None]).mean(1)
+            rows.append({"kind": kind, "samples": s,
+                         "mean_error": float(np.abs(inside - area).mean())})  # fmt: skip
+        grid_y = cell[:, 1] + 0.5 / n
+        inside = (grid_y[None, :] <= level[:, None]).mean(1)
+        rows.append({"kind": "grid, axis edges", "samples": s,
+                     "mean_error": float(np.abs(inside - level).mean())})  # fmt: skip
+    return rows

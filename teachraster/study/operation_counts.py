@@ -33,7 +33,7 @@ twice (double hits): the top-left rule gives none, ``E >= 0`` double hits, ``E >
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -48,6 +48,10 @@ CYCLES_1990S = {"divides": 30.0, "multiplies": 3.0, "additions": 1.0}
 #: Bits of precision the arithmetic keeps: the significand of a float, a whole int64.
 BITS_KEPT = {"fixed8": 63, "fixed4": 63, "float64": 53, "float32": 24, "unsnapped": 53}
 DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
+#: Bits each depth format stores per sample: a float's sign, exponent and significand, or the
+#: unorm's integer. (GPUs usually pack unorm24 with an 8-bit stencil into a 32-bit word, D24S8;
+#: no GPU offers float64 depth, the study's exact reference.)
+DEPTH_STORED_BITS = {"float64": 64, "float32": 32, "unorm24": 24, "unorm16": 16}
 RULES = ("top-left", "E >= 0", "E > 0")
 
 
@@ -60,6 +64,7 @@ class OpCount:
     additions: float
     bits: int | None = None
     per: str = "pixel"
+    stored: int | None = field(default=None, repr=False)  # depth: bits stored per sample
 
 
 def interpolation_count(variant: str) -> OpCount:
@@ -135,7 +140,8 @@ def count(row: dict) -> OpCount:
     if group == "fill":
         return fill_count(variant)
     if group == "depth":
-        return OpCount(0.0, 0.0, 1.0, DEPTH_BITS[variant.split()[1]], "fragment")
+        fmt = variant.split()[1]
+        return OpCount(0.0, 0.0, 1.0, DEPTH_BITS[fmt], "fragment", DEPTH_STORED_BITS[fmt])
     raise ValueError(f"unknown group {group!r}")
 
 
@@ -152,14 +158,15 @@ def cycles(op: OpCount, weights: dict | None = None) -> float:
 
 
 def with_counts(rows: list[dict], weights: dict | None = None) -> list[dict]:
-    """Copies of ``rows`` with ``divides``, ``multiplies``, ``additions``, ``bits``,
+    """Copies of ``rows`` with ``divides``, ``multiplies``, ``additions``, ``bits`` (of
+    precision kept), ``stored_bits`` (depth formats: bits stored per sample, else None),
     ``cycles`` and ``per`` added (the operation counts beside the measured time)."""
     out = []
     for row in rows:
         op = count(row)
         out.append({**row, "divides": op.divides, "multiplies": op.multiplies,
-                    "additions": op.additions, "bits": op.bits, "per": op.per,
-                    "cycles": cycles(op, weights)})  # fmt: skip
+                    "additions": op.additions, "bits": op.bits, "stored_bits": op.stored,
+                    "per": op.per, "cycles": cycles(op, weights)})  # fmt: skip
     return out
 
 
@@ -204,13 +211,47 @@ def rule_coverage(xy, width: int, height: int, rule: str) -> np.ndarray:
     return ok
 
 
-def crack_counts(mesh, width: int, height: int, rule: str) -> dict:
-    """Gaps and double hits of ``mesh`` under ``rule``, against the package's coverage.
+def outline_centres(mesh, width: int, height: int) -> np.ndarray:
+    """(height, width) bool: the pixel centres on the mesh's outline (edges of one triangle).
 
-    Returns ``{"gaps": ..., "double_hits": ..., "counts": (height, width) int array}``; a gap is
-    a pixel the package covers once and the rule leaves empty.
+    Whether such a centre is drawn depends on the mesh beside this one, which shares the edge:
+    it is neither a crack nor a double hit of this mesh.
+
+    >>> quad = [[[0.5, 0.5], [2.5, 0.5], [0.5, 2.5]], [[2.5, 0.5], [2.5, 2.5], [0.5, 2.5]]]
+    >>> int(outline_centres(quad, 4, 4).sum())   # the 3x3 centres but the middle one
+    8
     """
+    tris = np.asarray(mesh, dtype=np.float64)
+    uses: dict = {}
+    for t in tris:
+        for k in range(3):
+            key = tuple(sorted((tuple(t[k]), tuple(t[(k + 1) % 3]))))
+            uses[key] = uses.get(key, 0) + 1
+    px, py = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
+    on = np.zeros((height, width), dtype=bool)
+    for (a, b), n in uses.items():
+        if n != 1:
+            continue
+        (ax_, ay), (bx, by) = a, b
+        cross = (bx - ax_) * (py - ay) - (by - ay) * (px - ax_)
+        along = (px - ax_) * (bx - ax_) + (py - ay) * (by - ay)
+        on |= (cross == 0) & (along >= 0) & (along <= (bx - ax_) ** 2 + (by - ay) ** 2)
+    return on
+
+
+def crack_counts(mesh, width: int, height: int, rule: str) -> dict:
+    """Gaps and double hits of ``mesh`` under ``rule``, inside the mesh's outline.
+
+    Returns ``{"gaps": ..., "double_hits": ..., "counts": (height, width) int array,
+    "outline": (height, width) bool}``. A gap is a centre inside the outline (the package
+    covers it once) that the rule leaves empty; a double hit a centre inside the outline that
+    the rule covers twice or more. Centres on the outline itself (:func:`outline_centres`) are
+    counted in neither: the neighbouring mesh decides them.
+    """
+    outline = outline_centres(mesh, width, height)
     want = sum(rasterize(Triangle(t), width, height).coverage.astype(int) for t in mesh)
     counts = sum(rule_coverage(t, width, height, rule).astype(int) for t in mesh)
-    return {"gaps": int(((want == 1) & (counts == 0)).sum()),
-            "double_hits": int((counts > 1).sum()), "counts": counts}  # fmt: skip
+    inside = (want > 0) & ~outline
+    return {"gaps": int((inside & (counts == 0)).sum()),
+            "double_hits": int((~outline & (counts > 1)).sum()), "counts": counts,
+            "outline": outline}  # fmt: skip

@@ -32,7 +32,7 @@ class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
 
     Three panels: the filtered image, the mip level each pixel reads (GL's nearest-mip rule,
-    one colour per level) and the error against the texture averaged over each pixel's true
+    one colour per level; level 0 everywhere for ``nearest`` and ``bilinear``) and the error against the texture averaged over each pixel's true
     footprint (:func:`teachraster.study.texture_truth.footprint_average`). The square's
     texture repeats ``repeats`` times, so tilting it far makes its checks much smaller than a
     pixel: the moiré of ``nearest`` and ``bilinear``, the blur of ``trilinear``, the sharpness
@@ -61,6 +61,9 @@ class FilterExplorer:
     image, truth, error : (H, W, 3), (H, W, 3), (H, W) arrays on show
     lod : (H, W) array
         λ per pixel.
+    levels_read : (H, W) array
+        What the level panel shows: λ for the mipmapped filters, 0 where ``nearest`` and
+        ``bilinear`` read level 0 only.
     rms : float
         Root-mean-square error against the truth.
 
@@ -116,12 +119,12 @@ class FilterExplorer:
             axes = comparison_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
-                "lod": plot_lod(axes[1], self.lod, 8),
+                "lod": plot_lod(axes[1], self.levels_read, 8),
                 "error": plot_error_heatmap(
                     axes[2], self.image, self.truth, label="|error|", title=False
                 ),  # fmt: skip
             }
-            for ax, name in zip(axes, ("filtered", "mip level", "error vs footprint mean")):
+            for ax, name in zip(axes, ("filtered", "mip level read", "error vs footprint mean")):
                 ax.set_title(name)
                 ax.set_xticks([])
                 ax.set_yticks([])
@@ -166,6 +169,10 @@ class FilterExplorer:
         else:
             self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy)
         self.lod = mip_level(frame.ddx, frame.ddy, self.texture.shape)
+        if f in ("nearest", "bilinear"):  # no mipmaps: level 0 at every pixel, whatever λ is
+            self.levels_read = np.where(np.isfinite(self.lod), 0.0, np.nan)
+        else:  # GL's nearest level of λ (the mipmap-linear filters blend it with the next)
+            self.levels_read = self.lod
         self.frame, self.shown_tilt = frame, tilt
         if self._drafting() and tilt not in self._truths:
             # a draft leaves the error out rather than wait for a new truth (at the release)
@@ -258,7 +265,7 @@ class FilterExplorer:
 
     def _set_artists(self) -> None:
         self.panels["image"].update(self.image)
-        self.panels["lod"].update(self.lod)
+        self.panels["lod"].update(self.levels_read)
         error = self.panels["error"]
         if self.truth is None:  # a draft without the truth: no error to show
             for artist in (error.image, error.marker, error.note):

@@ -55,6 +55,7 @@ class PixelInspector(Holdable):
                  pattern: str = "4 standard (rotated grid)", row: int = 0, col: int = 0,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.source, self.width, self.height = source, width, height
+        self._style = style  # labels redrawn on a change keep the figure's sizes
         self.backend = resolve_backend(backend)
         self.pattern = widgets.Dropdown(options=list(SAMPLE_PATTERNS), value=pattern,
                                         description="samples")  # fmt: skip
@@ -119,8 +120,9 @@ class PixelInspector(Holdable):
         if change["owner"] is self.pattern:
             self._compute()
             self.samples.update(self.result)
-        self.pixel.update(self.result, self.row.value, self.col.value,
-                          triangles=self._pixel_triangles())  # fmt: skip
+        with style_context(self._style):
+            self.pixel.update(self.result, self.row.value, self.col.value,
+                              triangles=self._pixel_triangles())  # fmt: skip
         self._mark()
         self.display.refresh()
 

@@ -369,7 +369,7 @@ def _depth_cases():
             assert row["float64"] == 0, f"tilt {tilt}: float64 fights: {row}"
             assert row["unorm16"] > 0, f"tilt {tilt}: 16-bit depth should fight: {row}"
             assert max(row["float32"], row["unorm24"]) <= row["unorm16"], (
-                f"tilt {tilt}: fewer bits gave fewer wrong pixels: {row}"
+                f"tilt {tilt}: unorm16 gave fewer wrong pixels than 24 bits: {row}"
             )
         steep, shallow = inputs["tilts"]
         assert w[("unorm24", steep)] == 0 and w[("float32", steep)] == 0, (
@@ -386,8 +386,9 @@ def _depth_cases():
             "differ by less than one buffer step",
             "depth",
             "float64: no wrong pixel; unorm16: a band of wrong pixels beside the crossing "
-            "for both slopes; float32 and unorm24: none at slope 1e-4, a band at 1e-6; never "
-            "fewer wrong pixels with fewer bits (the first-drawn triangle keeps the ties). "
+            "for both slopes, never narrower than float32's or unorm24's; float32 and unorm24: "
+            "none at slope 1e-4, a band at 1e-6, about equally wide (at these depths, in "
+            "[0.5, 1), both step by 2^-24; the first-drawn triangle keeps the ties). "
             "Depth is linear here (w = 1); a perspective camera makes the step grow like z²",
             frozen_inputs(size=size, tilts=(1e-4, 1e-6)),
             _depth_run_factory(near_clip, lambda tilt, x: x < 0),
