@@ -96,8 +96,9 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
 
 def test_00_facing_and_the_two_methods():
     ns = lesson("00_tour")
-    assert not ns.tri.front_facing  # "clockwise on screen": back-facing in OpenGL's convention
-    assert ns.same  # the predict answer "none"
+    assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
+    assert ns.same  # the predicted answer: 0 pixels differ
+    assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
     order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
     assert list(order) == [0, 1, 2]  # "here also top to bottom"
 
@@ -251,7 +252,40 @@ def test_pipeline_overview_one_box_per_stage_and_fits_the_column():
         art = plot_pipeline(ax)
     assert len(art.boxes) == len(PIPELINE_STAGES) and len(art.arrows) == len(PIPELINE_STAGES) - 1
     assert fig.get_figwidth() * fig.dpi <= COLUMN_WIDTH_PX
+    assert art.bypass is not None  # early-z drawn as a (dashed) bypass
+    assert art.bypass.get_linestyle() == "--"
     plt.close(fig)
+
+
+def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
+    """GL 4.6 §14.9 / §17.3: the fragment shader runs before the depth and stencil tests."""
+    from teachraster.plotting.pipeline_overview import EARLY_Z
+
+    names = [stage.name for stage in PIPELINE_STAGES]
+    assert names.index("rasterisation") < names.index("fragment shading")
+    assert names.index("fragment shading") < names.index("depth test") < names.index("blending")
+    top, bottom = (names.index(n) for n in EARLY_Z)
+    assert names.index("fragment shading") in range(top + 1, bottom)  # what early-z skips
+    clipping = next(s for s in PIPELINE_STAGES if s.name == "clipping")
+    assert "x, y" in clipping.what and "guard band" in clipping.what
+
+
+@pytest.mark.parametrize("name", MINE)
+def test_no_phantom_sources_and_no_false_ipympl_claim(name):
+    """The notes are Ek, CS148, Triangle Rasterisation II, Ritschel and Fatahalian: no
+    'Hagen' or 'CS184' as a source; dragging works without ipympl (the review of 12-01)."""
+    text = "\n".join(_cells(name, "markdown"))
+    assert "Hagen" not in text and "CS184" not in text
+    assert not re.search(r"widget`[^.]*(drag|dragging)", text), "dragging needs no ipympl"
+
+
+def test_textured_viewer_subtitle_does_not_say_affine_bends_lines():
+    from teachraster.widgets import TexturedPlaneViewer
+
+    viewer = TexturedPlaneViewer(tilt=30, backend="image")
+    title = viewer.widget.children[0].value
+    assert "bend" not in title and "kink" not in title  # no answer to lesson 04's question
+    viewer.close()
 
 
 def tr_style():
