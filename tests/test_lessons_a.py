@@ -120,6 +120,20 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
     assert 0 < ns.drift < 1e-12  # "a hair"
 
 
+def test_01_predictions_and_the_stepping_failure_rates():
+    ns = lesson("01_span_tables")
+    assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
+    assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
+    assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
+    rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
+    assert rates["stepped, float (x += du/dv)"] > 0.2
+    assert rates["computed crossing (section 4)"] < 0.02
+    assert rates["stepped, fixed point"] == 0
+    # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
+    assert ns.times == {"exact (package)": 1, "stepped in float": 1}
+    assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
+
+
 def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
     saved = 100 * (1 - ns.with_bailout / ns.without)
