@@ -134,8 +134,23 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
 
 
+STANDARDS = {"02_half_planes": "a centre exactly on an edge", "05a_zbuffer": "guard band",
+             "05b_depth_precision": "bits stored"}  # fmt: skip
+
+
+@pytest.mark.parametrize("name", sorted(STANDARDS))
+def test_rules_come_with_a_standards_table(name):
+    """Issue 29: where a lesson states a rule, GL, D3D, Vulkan, llvmpipe and teachraster side
+    by side, with the specification section."""
+    table = next(c for c in _cells(name, "markdown") if STANDARDS[name] in c and "| Vulkan" in c)
+    for row in ("| OpenGL 4.6", "| Direct3D 11", "| Vulkan", "| llvmpipe", "| teachraster"):
+        assert row in table, (name, row)
+    assert "§" in table
+
+
 def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
+    assert (ns.counts["top-left rule"] > 0).sum() == 144  # the predicted answer
     saved = 100 * (1 - ns.with_bailout / ns.without)
     assert abs(saved - round(100 * (1 - ns.runs.sum() / (3 * ns.box.size)))) < 1
     assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
