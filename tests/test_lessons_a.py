@@ -163,6 +163,21 @@ def test_03_quoted_drift_and_the_perspective_caveat():
     assert ns.misfits["u"] > 0.01 and ns.misfits["u/w"] < 1e-12  # f/w is the plane, f is not
 
 
+def test_03_recentring_prediction_and_the_vertex_crossing_the_opposite_edge():
+    ns = lesson("03_barycentric_and_plane_equations")
+    assert ns.decades[-6] == "10⁻⁶" and 1e-6 <= ns.absolute[-1] < 1e-5  # the predicted decade
+    assert max(ns.recentred) < 1e-14  # "stays at one rounding"
+    assert abs(ns.crossing_x - 34 / 11) < 1e-12
+    rows = ns.gradient_by_x  # v2 x -> (C, g_x, g_y)
+    before = [x for x in rows if x > ns.crossing_x]
+    after = [x for x in rows if x < ns.crossing_x]
+    assert all(rows[x][0] > 0 for x in before) and all(rows[x][0] < 0 for x in after)  # C flips
+    near_b, near_a = min(before), max(after)  # nearest the line on either side
+    assert np.sign(rows[near_b][1]) == -np.sign(rows[near_a][1])  # the gradient flips too
+    sizes = [np.hypot(*rows[x][1:]) for x in sorted(before, reverse=True)]
+    assert sizes == sorted(sizes)  # and grows as C -> 0 (not "the gradient does not change")
+
+
 def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     ns = lesson("04_perspective_correct_interpolation")
     assert np.allclose(ns.t_ritschel, ns.t, atol=1e-15)
