@@ -217,7 +217,7 @@ def test_04_toggle_heatmap_floor_and_tilt():
     assert np.array_equal(ns.affine.coverage, ns.persp.coverage)
     assert np.allclose(*ns.same, equal_nan=True, atol=1e-15)
     assert 0.15 < np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)
-    assert 1.0 < ns.floor_w.min() and ns.floor_w.max() < 8  # the readable floor
+    assert 2 < ns.floor_w.max() / ns.floor_w.min() < 3  # the readable floor
     assert np.nanmax(ns.texels) > 10
     assert ns.far_w.max() > 35  # the original floor, for the moiré
 

@@ -187,6 +187,25 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
 
 
+def test_04_heatmap_edges_and_the_readable_floor():
+    ns = lesson("04_perspective_correct_interpolation")
+    peak = 3 - 2 * np.sqrt(2)
+    assert all(abs(v - peak) < 1e-4 for v in ns.edge_peak.values())  # "same peak on both edges"
+    assert 2 < ns.floor_w.max() / ns.floor_w.min() < 3  # "w more than doubles"
+    cover = ns.frames["perspective"].coverage
+    rows = np.nonzero(cover.any(axis=1))[0]  # the whole floor in view, none of it cut off
+    assert rows.min() > 0 and rows.max() < ns.FH - 1 and not cover[:, [0, -1]].any()
+    assert len(ns.diagonal) == 2  # the shared edge is drawn
+    (x0, y0), (x1, y1) = ns.diagonal
+    i, j = np.unravel_index(np.nanargmax(ns.texels), ns.texels.shape)
+    off_line = abs((x1 - x0) * (i + 0.5 - y0) - (y1 - y0) * (j + 0.5 - x0)) / np.hypot(
+        x1 - x0, y1 - y0
+    )
+    assert off_line < 2  # "largest on the diagonal"
+    near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
+    assert near_far < 0.1 * np.nanmax(ns.texels)  # "zero along the near and the far edge"
+
+
 def test_05a_cases_and_the_cube_steps():
     ns = lesson("05a_zbuffer")
     assert len(ns.ids) == 4  # "the four cases"
