@@ -210,7 +210,10 @@ def test_05a_cases_and_the_cube_steps():
     ns = lesson("05a_zbuffer")
     assert len(ns.ids) == 4  # "the four cases"
     assert len(ns.cube_steps) == 12
-    assert ns.passed_last == 0 < ns.failed_last  # the predicted answer "none"
+    assert ns.culled_failed == 0  # the predicted answer: culled, a convex cube fails nothing
+    assert len(ns.culled.trace.fragment_triangle) == int(ns.culled.coverage.sum())
+    assert sum(f for _, f in ns.cube_steps) > 0  # culling off: the back faces fail
+    assert 0.9 < np.nanmin(ns.frame.depth) < np.nanmax(ns.frame.depth) < 1  # "close to 1"
     assert sum(p + f for p, f in ns.cube_steps) == len(ns.cube.trace.fragment_triangle)
 
 
