@@ -229,6 +229,14 @@ def test_05b_quoted_distances_and_resolutions():
     assert round(float(ns.predicted["unorm16"][0]), 5) == 1.5e-4  # "1.5 × 10⁻⁴" at z = 1
 
 
+def test_05b_widget_fight_comes_a_little_after_the_crossing():
+    """Section 6: the explorer's first sampled fight lies a little beyond Δz = δ."""
+    ns = lesson("05b_depth_precision")
+    res = float(tr.depth_resolution(ns.crossing16, ns.n_, ns.f_, "unorm16"))
+    assert abs(res - ns.delta) < 1e-9 * ns.delta + 1e-12  # the crossing is where Δz = δ
+    assert ns.crossing16 < ns.found16 < 1.2 * ns.crossing16  # "a little after"
+
+
 # -- the lessons' widgets, driven here (the lessons leave them to the student) ----------------
 
 
