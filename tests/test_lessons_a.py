@@ -117,7 +117,7 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
         assert Fraction(j) + Fraction(1, 2) in exact  # the centre lies exactly on an edge
         assert x_right != j + 0.5  # and the float crossing missed it
     assert np.array_equal(ns.stepped, ns.fill.coverage)
-    assert 0 < ns.drift < 1e-12  # "a hair"
+    assert 0 < ns.drift < 1e-14  # "a few 10^-15 px"
 
 
 def test_01_predictions_and_the_stepping_failure_rates():
