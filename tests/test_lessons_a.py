@@ -120,6 +120,7 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
     assert 0 < ns.drift < 1e-14  # "a few 10^-15 px"
 
 
+@pytest.mark.notebook  # main's tier marker (registered there)
 def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
@@ -163,6 +164,7 @@ def test_03_quoted_drift_and_the_perspective_caveat():
     assert ns.misfits["u"] > 0.01 and ns.misfits["u/w"] < 1e-12  # f/w is the plane, f is not
 
 
+@pytest.mark.notebook  # main's tier marker (registered there)
 def test_03_recentring_prediction_and_the_vertex_crossing_the_opposite_edge():
     ns = lesson("03_barycentric_and_plane_equations")
     assert ns.decades[-6] == "10⁻⁶" and 1e-6 <= ns.absolute[-1] < 1e-5  # the predicted decade
@@ -187,6 +189,7 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
 
 
+@pytest.mark.notebook  # main's tier marker (registered there)
 def test_04_heatmap_edges_and_the_readable_floor():
     ns = lesson("04_perspective_correct_interpolation")
     peak = 3 - 2 * np.sqrt(2)
@@ -229,6 +232,7 @@ def test_05b_quoted_distances_and_resolutions():
     assert round(float(ns.predicted["unorm16"][0]), 5) == 1.5e-4  # "1.5 × 10⁻⁴" at z = 1
 
 
+@pytest.mark.notebook  # main's tier marker (registered there)
 def test_05b_widget_fight_comes_a_little_after_the_crossing():
     """Section 6: the explorer's first sampled fight lies a little beyond Δz = δ."""
     ns = lesson("05b_depth_precision")
