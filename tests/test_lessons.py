@@ -166,7 +166,7 @@ def test_04_toggle_heatmap_floor_and_tilt():
     assert np.array_equal(ns.affine.coverage, ns.persp.coverage)
     assert np.allclose(*ns.same, equal_nan=True, atol=1e-15)
     assert 0.15 < np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)
-    assert 1.0 < ns.floor_w.min() and ns.floor_w.max() < 8  # the readable floor
+    assert 2 < ns.floor_w.max() / ns.floor_w.min() < 3  # the readable floor
     assert np.nanmax(ns.texels) > 10
     assert ns.far_w.max() > 35  # the original floor, for the moiré
 
@@ -182,15 +182,15 @@ def test_05a_zbuffer_painter_plan_and_clipping():
     for r in ns.results.values():
         assert (r["zbuf"].triangle_id == r["truth"]).all()
         assert (r["paint"].triangle_id != r["truth"]).sum() > 0
-    assert min(ns.wrong_by_order.values()) > 0  # the cyclic overlap: no order is right
+    assert min(ns.wrong_by_order["cyclic_overlap"].values()) > 0  # no order is right
+    assert ns.orders_right == 0  # the predicted answer
+    assert min(ns.wrong_by_order["intersecting_triangles"].values()) > 0  # either order wrong
     frame = ns.frame
     assert np.array_equal(frame.depth.ravel()[ns.covered], ns.smallest[ns.covered])
     trace = frame.trace
     assert (trace.fragment_depth[ns.failed] >= ns.smallest[ns.pixel[ns.failed]]).all()
     assert trace.fragment_passed[trace.fragment_triangle == 0].all()
-    assert frame.plan["depth_test"].count == ns.contested < frame.coverage.sum()
-    assert not ns.single.plan["depth_test"].ran
-    assert np.array_equal(ns.failed_px, ns.painter_wrong)
+    assert np.array_equal(ns.failed_px, ns.painter_wrong) and ns.failed_px.any()
     # clipping, step by step: the near plane drops the vertex behind the eye, adds two on it
     near = ns.steps[0]
     assert near.plane.startswith("near") and near.new.sum() == 2 and len(near.polygon) == 4

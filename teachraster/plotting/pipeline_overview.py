@@ -1,8 +1,12 @@
 """The graphics pipeline as one picture: each stage, what it does, and the lessons that teach it.
 
 Lesson 00 opens with it, so that every later lesson has a place: rasterisation (this course)
-sits between vertex processing, which ends in window coordinates, and the per-fragment stages
-(depth test, shading, blending). The stages and their lessons are data
+sits between vertex processing, which ends in window coordinates, and the per-fragment stages.
+The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: the fragment
+(pixel) shader runs before the per-fragment depth and stencil tests, which run before blending.
+*Early-z*, running the depth test before the shader, is an optimisation a GPU may apply only
+when the result cannot change (the shader neither discards fragments nor writes depth); the
+picture draws it as a dashed bypass. The stages and their lessons are data
 (:data:`PIPELINE_STAGES`), so the notebook's list of links and the picture cannot disagree.
 """
 
@@ -30,10 +34,10 @@ class Stage:
 PIPELINE_STAGES: tuple[Stage, ...] = (
     Stage(
         "vertex processing",
-        "model → view → clip space",
+        "vertex shader: model → view → clip space",
         ("04_perspective_correct_interpolation", "05a_zbuffer"),
     ),  # fmt: skip
-    Stage("clipping", "cut at near / far planes, w > 0", ("05a_zbuffer",)),
+    Stage("clipping", "−w ≤ x, y, z ≤ w (x, y: guard band)", ("05a_zbuffer",)),
     Stage("viewport", "divide by w → window x, y, depth", ("05a_zbuffer", "05b_depth_precision")),
     Stage(
         "rasterisation",
@@ -50,14 +54,17 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
         ),
         course=True,
     ),  # fmt: skip
+    Stage("fragment shading", "colour, textures; may discard", ("09_texture_filtering",)),
     Stage(
         "depth test",
-        "keep the nearest fragment",
+        "keep the nearest fragment (and stencil)",
         ("05a_zbuffer", "05b_depth_precision", "10_tiles_and_hierarchical_z"),
     ),  # fmt: skip
-    Stage("shading", "colour, textures", ("09_texture_filtering",)),
     Stage("blending", "combine with the image", ("12_lines_and_blending",)),
 )
+
+#: The stages early-z jumps between: the depth test moved before the fragment shader.
+EARLY_Z = ("rasterisation", "depth test")
 
 
 def lesson_number(stem: str) -> str:
@@ -73,6 +80,21 @@ class PipelineArtists:
     texts: list = field(default_factory=list)
     arrows: list = field(default_factory=list)
     legend: object = None
+    bypass: object = None
+
+
+def _early_z_bypass(ax, names: list[str], right: float):
+    """The dashed early-z arrow from rasterisation to the depth test, past fragment shading."""
+    if not all(name in names for name in EARLY_Z):
+        return None
+    top, bottom = (names.index(name) for name in EARLY_Z)
+    arrow = FancyArrowPatch((right, top), (right, bottom), arrowstyle="-|>", ls="--",
+                            connectionstyle="bar,fraction=-0.12", mutation_scale=fs(1.0),
+                            color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
+    ax.add_patch(arrow)
+    ax.text(right + 0.95, (top + bottom) / 2, "early-z: only if the shader\nneither discards nor writes depth",
+            rotation=-90, ha="center", va="center", fontsize=fs(0.7), style="italic")  # fmt: skip
+    return arrow
 
 
 def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineArtists:
@@ -81,6 +103,8 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
     One stage per row keeps the picture narrow enough for a notebook column at the classroom
     font size (a left-to-right chain would need twice the width). The stages the course is
     about are filled with the "fill" colour, the others grey; a legend says which is which.
+    When both stages of :data:`EARLY_Z` are drawn, a dashed arrow on the right joins them: the
+    depth test run before the fragment shader, legal only when that cannot change the result.
 
     Parameters
     ----------
@@ -90,14 +114,16 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
     Returns
     -------
     PipelineArtists
+        ``bypass`` is the early-z arrow (None when the stages do not include both ends).
     """
     out = PipelineArtists()
     n = len(stages)
-    ax.set(xlim=(0, 10), ylim=(n - 0.35, -0.65))
+    right = 9.0  # the boxes end here; the early-z bypass runs to their right
+    ax.set(xlim=(0, 10.6), ylim=(n - 0.35, -0.65))
     ax.set_axis_off()
     for k, stage in enumerate(stages):
         colour = COLORS["fill"] if stage.course else COLORS["rejected"]
-        box = FancyBboxPatch((0.05, k - 0.34), 9.9, 0.68, boxstyle="round,pad=0.02,rounding_size=0.12",
+        box = FancyBboxPatch((0.05, k - 0.34), right - 0.05, 0.68, boxstyle="round,pad=0.02,rounding_size=0.12",
                              fc=colour, ec=COLORS["edge"], lw=lw(0.5))  # fmt: skip
         ax.add_patch(box)
         out.boxes.append(box)
@@ -105,7 +131,7 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
         out.texts.append(ax.text(0.3, k - 0.08, stage.name, fontsize=fs(1.0), fontweight="bold",
                                  va="center"))  # fmt: skip
         out.texts.append(ax.text(0.3, k + 0.2, stage.what, fontsize=fs(0.8), va="center"))
-        out.texts.append(ax.text(9.7, k, f"lessons {lessons}" if len(stage.lessons) > 1
+        out.texts.append(ax.text(right - 0.25, k, f"lessons {lessons}" if len(stage.lessons) > 1
                                  else f"lesson {lessons}", fontsize=fs(0.8), ha="right",
                                  va="center", style="italic"))  # fmt: skip
         if k:
@@ -113,6 +139,7 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
                                     mutation_scale=fs(1.0), color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
             ax.add_patch(arrow)
             out.arrows.append(arrow)
+    out.bypass = _early_z_bypass(ax, [s.name for s in stages], right)
     handles = [Patch(fc=COLORS["fill"], ec=COLORS["edge"], label="this course: rasterisation"),
                Patch(fc=COLORS["rejected"], ec=COLORS["edge"], label="around it")]  # fmt: skip
     out.legend = ax.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 1.0),

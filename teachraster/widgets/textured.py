@@ -28,7 +28,8 @@ ALT = "affine and perspective-correct texture mapping and their texel error"
 CORNERS = np.array([[-1.0, 1.0], [1.0, 1.0], [1.0, 0.0], [-1.0, 0.0]])
 CORNER_UV = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
 #: Two triangles sharing the diagonal from the far-left to the near-right corner: affine
-#: interpolation bends the checker lines differently on either side of it (the seam).
+#: interpolation maps each triangle with its own affine map, so a checker line, straight on
+#: either side, changes direction where it crosses the diagonal (the seam).
 TRIANGLES = np.array([[0, 3, 2], [0, 2, 1]])
 #: How much of the screen the square may fill, in NDC (a margin all round).
 FIT = 0.92
@@ -68,7 +69,8 @@ class TexturedPlaneViewer:
     once with ``interpolation="affine"`` (screen-space texture coordinates, as early
     software renderers and the PlayStation did) and once ``"perspective"``, then sampled from
     a checkerboard with :func:`teachraster.sample`. With affine coordinates the checker
-    lines bend and kink along the diagonal shared by the two triangles; the right panel
+    lines stay straight inside each triangle (an affine map keeps lines straight) but are
+    evenly spaced, and they kink along the diagonal shared by the two triangles; the panel
     measures the difference in texels (:func:`teachraster.texel_error`). At tilt 0 all
     w are equal and the two agree exactly.
 
@@ -177,8 +179,8 @@ class TexturedPlaneViewer:
         self.info.value = self._info_html()
         title = title_html(
             "Texture mapping a receding square: affine vs perspective-correct",
-            "Tilt the square away from the camera. Affine texture coordinates bend the "
-            "checker lines and kink them along the diagonal where the two triangles meet.",
+            "Tilt the square away from the camera and compare the two renders; the lower "
+            "panel is the difference of their texture coordinates, in texels.",
         )
         self.widget = widgets.VBox([title, self.tilt, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
