@@ -309,9 +309,13 @@ def _without_hiz(clip, width, height, **kw):
 
 def hiz_cases(quick: bool):
     """(name, clip, width, height, attrs) of section 5."""
-    sweep = (16, 256, 4096) if quick else (16, 64, 256, 1024, 4096)
-    cases = [(f"{n} stacked layers 256²", stacked_quads(n, 256), 256, 256, None) for n in sweep]
-    sizes = [(160, 120)] if quick else [(640, 480), (1920, 1080)]
+    # --quick is a smoke run (the tests run it): every section, at its smallest size
+    sweep = (4, 16) if quick else (16, 64, 256, 1024, 4096)
+    side = 64 if quick else 256
+    cases = [
+        (f"{n} stacked layers {side}²", stacked_quads(n, side), side, side, None) for n in sweep
+    ]
+    sizes = [(64, 48)] if quick else [(640, 480), (1920, 1080)]
     for name in ("cube", "cyclic_overlap", "intersecting_triangles", "uv_sphere"):
         scene = tr.get_scene(name)
         for w, h in sizes:
@@ -355,12 +359,13 @@ def main(argv: list[str] | None = None) -> int:
     repeat = args.repeat or (1 if args.quick else 5)
     print("teachraster scene benchmark" + (" (--quick)" if args.quick else ""))
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}; medians of {repeat}")
-    bench_plan(160 if args.quick else 640, 120 if args.quick else 480, repeat)
-    bench_sphere(256 if args.quick else 1024, repeat, args.profile)
-    bench_clipped(256, 2000 if args.quick else 20_000, repeat)
-    sweep = (16, 256, 4096) if args.quick else (16, 64, 256, 1024, 4096)
-    bench_depth_complexity(256, repeat, sweep)
-    bench_hiz(max(repeat, 3) if args.quick else repeat * 2, args.quick)
+    # --quick is a smoke run (the tests run it): every section, at its smallest size
+    bench_plan(64 if args.quick else 640, 48 if args.quick else 480, repeat)
+    bench_sphere(64 if args.quick else 1024, repeat, args.profile)
+    bench_clipped(64 if args.quick else 256, 200 if args.quick else 20_000, repeat)
+    sweep = (4, 16) if args.quick else (16, 64, 256, 1024, 4096)
+    bench_depth_complexity(64 if args.quick else 256, repeat, sweep)
+    bench_hiz(repeat if args.quick else repeat * 2, args.quick)
     return 0
 
 

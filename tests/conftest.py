@@ -117,6 +117,11 @@ def _quick_tier_starts_nothing_heavy():
         real_init(self, args, *rest, **kwargs)
 
     subprocess.Popen.__init__ = guarded_init
+    # no OpenGL context either (llvmpipe takes every core): the benchmarks' smoke runs and
+    # gl_available's doctest see "not available", as on a machine without Mesa
+    from teachraster.study import opengl
+
+    opengl._STATE["status"] = (False, "the quick tier runs without OpenGL")
     try:
         yield
     finally:
@@ -281,3 +286,26 @@ def _matplotlib_backend_left_alone():
     yield
     if mpl is not None and dict.__getitem__(mpl.rcParams, "backend") != raw:
         dict.__setitem__(mpl.rcParams, "backend", raw)
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item, nextitem):
+    """With TEACHRASTER_CPU_LOG set, append each test's CPU seconds (this process, set-up and
+    tear-down included) and wall seconds to that file: what a test costs on a quiet machine,
+    read on a busy one (``python3 dev.py test --quick`` with it set, then sum per file)."""
+    log = os.environ.get("TEACHRASTER_CPU_LOG")
+    if not log:
+        yield
+        return
+    import json
+    import time
+
+    cpu, wall = time.process_time(), time.perf_counter()
+    yield
+    row = {
+        "test": item.nodeid,
+        "cpu": time.process_time() - cpu,
+        "wall": time.perf_counter() - wall,
+    }
+    with open(log, "a") as fh:
+        fh.write(json.dumps(row) + "\n")

@@ -4,6 +4,8 @@ import importlib.util
 import sys
 from pathlib import Path
 
+import pytest
+
 BENCH = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_notebooks.py"
 
 
@@ -15,6 +17,7 @@ def _load():
     return module
 
 
+@pytest.mark.notebook
 def test_notebook_benchmark_smoke_run(capsys):
     bench = _load()
     assert bench.main(["--only", "02_span_split", "--server-gib", "24"]) == 0

@@ -42,6 +42,7 @@ print(json.dumps({"took": took, "kind": report.failures[0].kind, "text": str(rep
 """
 
 
+@pytest.mark.notebook
 def test_a_cell_checking_an_endless_loop_returns_within_the_budget_in_a_kernel(tmp_path):
     from nbclient import NotebookClient
 

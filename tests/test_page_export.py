@@ -58,6 +58,7 @@ def test_html_export_keeps_the_html_of_widgets_and_drops_their_state():
     assert "widgets" not in nb.metadata
 
 
+@pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore")
 def test_teachraster_html_turns_a_player_into_an_offline_page(tmp_path):
     pytest.importorskip("nbconvert")

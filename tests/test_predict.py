@@ -101,6 +101,7 @@ def test_headless_flag_from_environment(monkeypatch):
     assert is_headless()  # plain Python (pytest): no kernel, nobody to answer
 
 
+@pytest.mark.notebook
 def test_headless_notebook_shows_answer_and_figure_without_waiting(monkeypatch):
     """Run by nbclient (MPLBACKEND=Agg, as the lesson tests do): answer, explanation, figure."""
     from nbclient import NotebookClient
