@@ -72,9 +72,13 @@ def rasterize_line(
     trace : bool
         Record every step (:class:`~teachraster.core.line_trace.LineTrace`).
     subpixel_bits : int or None
-        End points are snapped to ``1 / 2**subpixel_bits`` px (8), as triangle vertices are.
+        End points are snapped to ``1 / 2**subpixel_bits`` px (8), as triangle vertices are,
+        and must then lie within ±2**20 px (8 bits; more with fewer bits; a ValueError names
+        p0 or p1). None keeps raw floats: the segment is first clipped exactly to a box just
+        around the image (GL clips lines too), so ends as far as the float maximum work.
     w : (2,) array-like, optional
-        Clip-space w of each end (> 0), for perspective-correct attributes; default 1.
+        Clip-space w of each end (> 0, subnormal included), for perspective-correct
+        attributes; default 1.
     z : (2,) array-like, optional
         Window depth of each end (affine along the line).
     attrs : mapping of str to (2,) or (2, k) array-like, optional
