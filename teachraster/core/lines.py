@@ -73,7 +73,7 @@ def rasterize_line(
         Record every step (:class:`~teachraster.core.line_trace.LineTrace`).
     subpixel_bits : int or None
         End points are snapped to ``1 / 2**subpixel_bits`` px (8), as triangle vertices are,
-        and must then lie within ±2**20 px (8 bits; more with fewer bits; a ValueError names
+        and must then lie within ±2**20 px (8 bits; wide lines 2**21; a ValueError names
         p0 or p1). None keeps raw floats: the segment is first clipped exactly to a box just
         around the image (GL clips lines too), so ends as far as the float maximum work.
     w : (2,) array-like, optional
