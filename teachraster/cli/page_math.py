@@ -63,7 +63,26 @@ def markdown_renderer_class():
         def latex_environment(self, name: str, body: str) -> str:
             return tex_to_mathml(f"\\begin{{{name}}}{body}\\end{{{name}}}", display=True)
 
+        def heading(self, text: str, level: int, **attrs) -> str:
+            return plain_mathml(super().heading(text, level, **attrs))
+
     return MathMLRenderer
+
+
+def plain_mathml(fragment: str) -> str:
+    """MathML as HTML writes it: nbconvert's heading anchors go through ElementTree, which
+    writes ``<ns0:math xmlns:ns0="...">``, a tag no browser renders as mathematics.
+
+    >>> plain_mathml('<h2 xmlns:ns0="http://www.w3.org/1998/Math/MathML">'
+    ...              '<ns0:math display="inline"><ns0:mi>u</ns0:mi></ns0:math></h2>')
+    '<h2><math display="inline"><mi>u</mi></math></h2>'
+    """
+    match = re.search(r' xmlns:(\w+)="http://www.w3.org/1998/Math/MathML"', fragment)
+    if match is None:
+        return fragment
+    prefix = match.group(1)
+    fragment = fragment.replace(match.group(0), "")
+    return re.sub(rf"<(/?){prefix}:", r"<\1", fragment)
 
 
 def markdown_to_html(source: str, **renderer_options) -> str:
