@@ -8,6 +8,7 @@ Skipped, saying why, where Playwright or Chromium is missing.
 
 from __future__ import annotations
 
+import contextlib
 import os
 from pathlib import Path
 
@@ -32,6 +33,36 @@ WHY = _unavailable()
 if WHY and os.environ.get("TEACHRASTER_REQUIRE_BROWSER"):
     raise RuntimeError(f"TEACHRASTER_REQUIRE_BROWSER is set but {WHY}")
 pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+
+
+@contextlib.contextmanager
+def opened_offline(path: Path):
+    """``path`` in headless Chromium with every request but the file itself aborted; on
+    leaving, no request may have been made and no error raised in the page."""
+    from playwright.sync_api import sync_playwright
+
+    asked: list[str] = []
+    errors: list[str] = []
+
+    def route(request_route):
+        if request_route.request.url.startswith("file:"):
+            request_route.continue_()
+        else:
+            asked.append(request_route.request.url)
+            request_route.abort()
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
+        try:
+            page = browser.new_page(viewport={"width": 1400, "height": 900})
+            page.on("pageerror", lambda exc: errors.append(str(exc)))
+            page.route("**/*", route)
+            page.goto(path.as_uri())
+            yield page
+            assert not errors, f"errors in the page: {errors[:3]}"
+            assert not asked, f"the page asked the network for {asked[:3]}"
+        finally:
+            browser.close()
 
 
 def _picture(page) -> str:
@@ -68,58 +99,39 @@ def offline_page(tmp_path_factory):
 
 
 def test_the_offline_page_steps_and_plays_with_the_network_blocked(offline_page):
-    from playwright.sync_api import sync_playwright
-
-    asked: list[str] = []
-
-    def block(route):
-        asked.append(route.request.url)
-        route.abort()
-
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
-        try:
-            page = browser.new_page(viewport={"width": 1400, "height": 900})
-            errors: list[str] = []
-            page.on("pageerror", lambda exc: errors.append(str(exc)))
-            page.route("http*://**/*", block)
-            page.goto(offline_page.as_uri())
-            page.wait_for_selector("canvas.teachraster-figure[data-step]", timeout=20_000)
-            caption = page.locator(".teachraster-caption")
-            seen = {_picture(page)}
-            captions = {caption.inner_text()}
-            nxt = page.get_by_role("button", name="next step")
-            for _ in range(3):
-                nxt.click()
-                page.wait_for_timeout(100)
-                seen.add(_picture(page))
-                captions.add(caption.inner_text())
-            assert len(seen) >= 3, "the next button did not show 3 distinct pictures"
-            assert len(captions) >= 3, "the caption did not follow the steps"
-            slider = page.get_by_role("slider", name="step")
-            slider.focus()
-            before = _picture(page)
-            for _ in range(3):
-                page.keyboard.press("ArrowRight")
-            assert _picture(page) != before, "the arrow keys on the slider changed nothing"
-            assert slider.input_value() == "6"
-            page.get_by_role("button", name="first step").click()
-            changes, last = 0, _picture(page)
-            page.get_by_role("button", name="play").click()
-            for _ in range(20):
-                page.wait_for_timeout(100)
-                now = _picture(page)
-                changes += now != last
-                last = now
-            assert changes >= 3, f"play changed the picture only {changes} times in 2 s"
-            page.get_by_role("button", name="pause").click()
-            paused = _picture(page)
-            page.wait_for_timeout(300)
-            assert _picture(page) == paused, "the picture changed after pause"
-            assert not errors, f"errors in the page: {errors[:3]}"
-            assert not asked, f"the page asked the network for {asked[:3]}"
-        finally:
-            browser.close()
+    with opened_offline(offline_page) as page:
+        page.wait_for_selector("canvas.teachraster-figure[data-step]", timeout=20_000)
+        caption = page.locator(".teachraster-caption")
+        seen = {_picture(page)}
+        captions = {caption.inner_text()}
+        nxt = page.get_by_role("button", name="next step")
+        for _ in range(3):
+            nxt.click()
+            page.wait_for_timeout(100)
+            seen.add(_picture(page))
+            captions.add(caption.inner_text())
+        assert len(seen) >= 3, "the next button did not show 3 distinct pictures"
+        assert len(captions) >= 3, "the caption did not follow the steps"
+        slider = page.get_by_role("slider", name="step")
+        slider.focus()
+        before = _picture(page)
+        for _ in range(3):
+            page.keyboard.press("ArrowRight")
+        assert _picture(page) != before, "the arrow keys on the slider changed nothing"
+        assert slider.input_value() == "6"
+        page.get_by_role("button", name="first step").click()
+        changes, last = 0, _picture(page)
+        page.get_by_role("button", name="play").click()
+        for _ in range(20):
+            page.wait_for_timeout(100)
+            now = _picture(page)
+            changes += now != last
+            last = now
+        assert changes >= 3, f"play changed the picture only {changes} times in 2 s"
+        page.get_by_role("button", name="pause").click()
+        paused = _picture(page)
+        page.wait_for_timeout(300)
+        assert _picture(page) == paused, "the picture changed after pause"
 
 
 # -- a lesson exported with `teachraster html`: formulas and every kind of widget -----------
@@ -163,34 +175,14 @@ def lesson_page(tmp_path_factory):
 
 
 def test_a_lesson_page_is_whole_with_the_network_blocked(lesson_page):
-    from playwright.sync_api import sync_playwright
-
     out, printed, n_formulas = lesson_page
     assert f"4 widget(s): 3 live, 1 pictured, 0 missing; {n_formulas} formula(s)" in printed
     assert n_formulas >= 75
-    asked: list[str] = []
-
-    def block(route):
-        asked.append(route.request.url)
-        route.abort()
-
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
-        try:
-            page = browser.new_page(viewport={"width": 1400, "height": 900})
-            errors: list[str] = []
-            page.on("pageerror", lambda exc: errors.append(str(exc)))
-            page.route("**/*", lambda route: route.continue_()
-                       if route.request.url.startswith("file:") else block(route))  # fmt: skip
-            page.goto(out.as_uri())
-            page.wait_for_load_state("load")
-            _formulas_are_rendered(page, n_formulas)
-            _every_widget_shows_its_picture(page)
-            _players_step(page)
-            assert not errors, f"errors in the page: {errors[:3]}"
-            assert not asked, f"the page asked the network for {asked[:3]}"
-        finally:
-            browser.close()
+    with opened_offline(out) as page:
+        page.wait_for_load_state("load")
+        _formulas_are_rendered(page, n_formulas)
+        _every_widget_shows_its_picture(page)
+        _players_step(page)
 
 
 def _formulas_are_rendered(page, n_formulas: int) -> None:
