@@ -2,7 +2,7 @@
 
 The list of widget classes comes from the package itself (every module of
 ``teachraster.widgets``), and each needs an example in ``tests/widget_examples.py``: a new
-widget cannot be forgotten. Positions are cut to a few here (the page keeps up to 64).
+widget cannot be forgotten. Positions are cut to a few here (the page keeps up to 32).
 """
 
 from __future__ import annotations

@@ -44,9 +44,9 @@ from ..plotting.frames import encode_png, frame_rgba
 KINDS = ("live", "pictured", "missing")
 
 #: Most positions a slider is shown at (a picture each, in the page): a longer range keeps
-#: every second (third, ...) position, and its last. 64 pictures of a notebook-wide figure
-#: are 2-4 MB of page and 10-60 s of drawing on a loaded 2-core machine.
-MOST_POSITIONS = 64
+#: every second (third, ...) position, and its last. At 64 a lesson's page reached 10 MB
+#: (lesson 04: two slider explorers, 46 and 51 pictures of a notebook-wide figure each).
+MOST_POSITIONS = 32
 
 #: Classes of the package that are parts of other widgets, not widgets of a lesson.
 PARTS = ("DragFigure", "FramesWidget", "LiveSlider")
@@ -219,7 +219,7 @@ def thin(values: list) -> list:
     """About :data:`MOST_POSITIONS` of ``values`` (one more at most): every k-th, and the last.
 
     >>> thin(list(range(91)))[:3], len(thin(list(range(91))))
-    ([0, 2, 4], 46)
+    ([0, 3, 6], 31)
     """
     stride = max(1, -(-(len(values) - 1) // (MOST_POSITIONS - 1)))
     kept = values[::stride]
