@@ -35,6 +35,7 @@ def lesson_widget_classes() -> list[type]:
 @pytest.fixture
 def few_positions(monkeypatch):
     monkeypatch.setattr(offline, "MOST_POSITIONS", 3)
+    monkeypatch.setattr(offline, "MOST_STEPS", 3)
 
 
 def test_every_widget_class_has_an_example():
@@ -166,3 +167,14 @@ def test_a_displayed_widget_class_without_init_is_a_base():
     for name in bases - set(offline.PARTS):
         cls = next(c for c in offline.widget_classes() if c.__name__ == name)
         assert inspect.isclass(cls) and "__init__" not in vars(cls)
+
+
+def test_positions_of_each_kind_of_control():
+    import ipywidgets as w
+
+    assert offline.control_positions(w.IntSlider(min=0, max=300)) == offline.thin(
+        list(range(301)), offline.MOST_STEPS)  # fmt: skip
+    assert offline.control_positions(w.FloatSlider(min=0, max=90, step=1))[:3] == [0, 3, 6]
+    assert offline.control_positions(w.FloatLogSlider(base=2, min=0, max=2, step=1)) == [1, 2, 4]
+    assert offline.control_positions(w.Dropdown(options=[("a", 1), ("b", 2)])) == [1, 2]
+    assert offline.nearest([0.0, 3.0, 6.0], 4.0) == 1 and offline.nearest(["x", "y"], "z") == 0

@@ -47,6 +47,9 @@ KINDS = ("live", "pictured", "missing")
 #: every second (third, ...) position, and its last. At 64 a lesson's page reached 10 MB
 #: (lesson 04: two slider explorers, 46 and 51 pictures of a notebook-wide figure each).
 MOST_POSITIONS = 32
+#: Most positions of an integer control (a step, a triangle, a block: a player's steps,
+#: whose pictures differ by a patch): 128 (lesson 10's 864 blocks then go 7 at a time).
+MOST_STEPS = 128
 
 #: Classes of the package that are parts of other widgets, not widgets of a lesson.
 PARTS = ("DragFigure", "FramesWidget", "LiveSlider")
@@ -197,8 +200,9 @@ def swept_page(obj) -> OfflinePage | None:
 
 
 def control_positions(control) -> list:
-    """Every value a slider (int, float, log or selection) or a menu can take, in order, at
-    most :data:`MOST_POSITIONS` (:func:`thin`)."""
+    """Every value a slider (int, float, log or selection) or a menu can take, in order,
+    thinned (:func:`thin`) to :data:`MOST_STEPS` for an integer slider, else to
+    :data:`MOST_POSITIONS`."""
     if hasattr(control, "options") and not hasattr(control, "step"):
         values = [v for _, v in _labelled_options(control)]
     else:
@@ -209,19 +213,21 @@ def control_positions(control) -> list:
         if isinstance(control, widgets.FloatLogSlider) and base:
             values = [float(base**v) for v in values]
         elif isinstance(control, widgets.IntSlider):
-            values = [int(v) for v in values]
+            return thin([int(v) for v in values], MOST_STEPS)
         else:
             values = [float(v) for v in values]
     return thin(values)
 
 
-def thin(values: list) -> list:
-    """About :data:`MOST_POSITIONS` of ``values`` (one more at most): every k-th, and the last.
+def thin(values: list, most: int | None = None) -> list:
+    """About ``most`` (:data:`MOST_POSITIONS`) of ``values``, one more at most: every k-th,
+    and the last.
 
     >>> thin(list(range(91)))[:3], len(thin(list(range(91))))
     ([0, 3, 6], 31)
     """
-    stride = max(1, -(-(len(values) - 1) // (MOST_POSITIONS - 1)))
+    most = MOST_POSITIONS if most is None else most
+    stride = max(1, -(-(len(values) - 1) // (most - 1)))
     kept = values[::stride]
     return kept if kept[-1] == values[-1] else [*kept, values[-1]]
 
