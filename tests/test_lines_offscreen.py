@@ -246,6 +246,7 @@ def test_huge_wide_line_names_its_argument(p0, p1, line_width, name, bits):
     assert "xy" not in str(info.value)
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # no overflow on the way either
 @settings(max_examples=60)
 @given(
     st.floats(-1e30, 1e30), st.floats(-1e30, 1e30), st.floats(1.0, 1e30),
@@ -256,3 +257,10 @@ def test_any_line_lights_or_refuses_naming_an_argument(x, y, line_width, bits):
         tr.rasterize_line((x, y), (4.0, 3.0), 9, 7, line_width=line_width, subpixel_bits=bits)
     except ValueError as error:
         assert str(error).split(":")[0] in ("p0", "p1", "line_width")
+
+
+@pytest.mark.filterwarnings("error::RuntimeWarning")
+def test_an_unsnapped_triangle_far_left_of_the_image_fills_nothing_quietly():
+    """What a wide line's rectangle hands the fill: bounds beyond int64 once in pixels."""
+    tri = tr.Triangle([[-1e28, 0.0], [-1e28, 5.0], [-2e28, 3.0]])
+    assert not tr.rasterize(tri, 8, 8, subpixel_bits=None).coverage.any()
