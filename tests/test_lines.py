@@ -229,6 +229,7 @@ def test_trace_steps_and_captions(rule):
     total = np.zeros_like(fill.coverage)
     for k in range(len(trace)):
         assert isinstance(trace.caption(k), str) and trace.caption(k)
+        assert not (total & trace.lit_at(k)).any()  # each pixel lit by one step only
         total |= trace.lit_at(k)
     assert (total == fill.coverage).all()
     if rule == "bresenham":

@@ -10,7 +10,7 @@ import nbformat
 import pytest
 
 from teachraster.cli import main
-from teachraster.cli.export import drop_widget_views
+from teachraster.cli.lesson_pages import count_widgets
 
 XY = ["--xy", "2.2,1.5 13.7,5.2 5.1,12.8"]
 
@@ -43,33 +43,48 @@ def test_an_animation_estimated_too_long_is_refused(tmp_path, capsys, monkeypatc
     assert "--every" in capsys.readouterr().err
 
 
-def test_html_export_keeps_the_html_of_widgets_and_drops_their_state():
+def test_html_export_counts_widgets_by_kind_and_drops_their_state():
     nb = nbformat.v4.new_notebook()
     view = "application/vnd.jupyter.widget-view+json"
-    cell = nbformat.v4.new_code_cell("player")
-    cell.outputs = [nbformat.v4.new_output("display_data", data={
-        view: {"model_id": "x"}, "text/html": "<div>page</div>", "text/plain": "p"})]  # fmt: skip
+    ours = nbformat.v4.new_code_cell("player")
+    ours.outputs = [nbformat.v4.new_output("display_data", data={"text/html": "<div>page</div>"},
+                    metadata={"teachraster": {"widget": "FillPlayer", "kind": "live"}})]  # fmt: skip
     other = nbformat.v4.new_code_cell("slider")
     other.outputs = [nbformat.v4.new_output("display_data", data={view: {"model_id": "y"}})]
-    nb.cells = [cell, other]
+    nb.cells = [ours, other]
     nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": {}}}
-    assert drop_widget_views(nb) == 1
-    assert view not in cell.outputs[0]["data"] and view in other.outputs[0]["data"]
+    assert count_widgets(nb) == {"live": 1, "pictured": 0, "missing": 1}
+    assert view not in other.outputs[0]["data"] and "run the notebook" in other.outputs[0][
+        "data"]["text/html"]  # fmt: skip
     assert "widgets" not in nb.metadata
+
+
+def _lesson(path, source):
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_markdown_cell("Area $A = \\frac{1}{2}$."),
+                nbformat.v4.new_code_cell(source)]  # fmt: skip
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}  # fmt: skip
+    nbformat.write(nb, path)
+    return path
 
 
 @pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore")
-def test_teachraster_html_turns_a_player_into_an_offline_page(tmp_path):
+def test_teachraster_html_writes_each_lesson_and_counts_its_widgets(tmp_path, capsys):
     pytest.importorskip("nbconvert")
-    nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(
-        "import teachraster as tr\nfrom teachraster.widgets import FillPlayer\n"
-        "FillPlayer(tr.Triangle([[1, 1], [7, 2], [3, 7]]), 8, 8)")]  # fmt: skip
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}  # fmt: skip
-    src, out = tmp_path / "lesson.ipynb", tmp_path / "lesson.html"
-    nbformat.write(nb, src)
-    assert main(["html", str(src), "-o", str(out)]) == 0
-    text = out.read_text()
-    assert "mountStatic(" in text and "widget-view+json" not in text
+    player = _lesson(tmp_path / "a.ipynb",
+                     "import teachraster as tr\nfrom teachraster.widgets import FillPlayer\n"
+                     "FillPlayer(tr.Triangle([[1, 1], [7, 2], [3, 7]]), 8, 8)")  # fmt: skip
+    plain = _lesson(tmp_path / "b.ipynb", "import ipywidgets\nipywidgets.IntSlider()")
+    out = tmp_path / "pages"
+    assert main(["html", str(player), str(plain), "-o", str(out)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].endswith("a.html: 1 widget(s): 1 live, 0 pictured, 0 missing; "
+                             "1 formula(s) as MathML")  # fmt: skip
+    assert "b.html: 1 widget(s): 0 live, 0 pictured, 1 missing" in lines[1]
+    text = (out / "a.html").read_text()
+    assert "mountStatic(" in text and "widget-view+json" not in text and "<math" in text
+    assert "_offline" not in text  # the set-up cell is gone, and the lesson counts from 1
+    assert re.findall(r"jp-InputPrompt[^>]*>In\W*\[(\d+)\]", text) == ["1"]
+    assert not re.search(r"<script[^>]*\ssrc=", text)  # no script is fetched

@@ -50,6 +50,7 @@ def test_the_wheel_holds_the_lessons_and_only_student_exercises(wheel):
         names = set(zf.namelist())
         course = "teachraster/course/notebooks/"
         assert {course + name for name in LESSONS} <= names
+        assert "teachraster/cli/templates/offline_lesson.html.j2" in names  # teachraster html
         assert {course + "exercises/" + name for name in EXERCISES} <= names
         for name in EXERCISES:
             text = zf.read(course + "exercises/" + name).decode()

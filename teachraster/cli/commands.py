@@ -10,7 +10,6 @@ from .export import (
     animate,
     check_export_time,
     check_fill_size,
-    export_notebook_html,
     fill_from_args,
     format_values,
     is_animation,
@@ -362,12 +361,24 @@ def cmd_list(args, parser) -> int:
 
 
 def cmd_html(args, parser) -> int:
-    """Execute a notebook and write it as one HTML page whose fill players still step."""
-    if not args.notebook.is_file():
-        parser.error(f"argument NOTEBOOK: no file {str(args.notebook)!r}")
-    fallbacks = export_notebook_html(args.notebook, args.output, timeout=args.timeout,
-                                     quiet=args.quiet)  # fmt: skip
-    say(f"wrote {args.output}: {fallbacks} widget(s) shown by their offline HTML")
+    """Execute lessons and write each as one self-contained HTML page; say, per lesson, how
+    many widgets are live, pictured or missing in it."""
+    from .lesson_pages import export_notebook_html
+
+    notebooks = args.notebook
+    for nb in notebooks:
+        if not nb.is_file():
+            parser.error(f"argument NOTEBOOK: no file {str(nb)!r}")
+    several = len(notebooks) > 1 or args.output.is_dir()
+    if several:
+        if args.output.suffix.lower() == ".html":
+            parser.error("argument -o/--output: several notebooks are written into a folder")
+        args.output.mkdir(parents=True, exist_ok=True)
+    for nb in notebooks:
+        out = args.output / f"{nb.stem}.html" if several else args.output
+        page = export_notebook_html(nb, out, timeout=args.timeout, quiet=args.quiet)
+        if not args.quiet:
+            say(page.summary())
     return 0
 
 

@@ -242,16 +242,19 @@ def add_list(sub) -> None:
 
 #: The sub-commands, in the order ``teachraster -h`` lists them.
 def add_html(sub) -> None:
-    """``teachraster html``: a lesson, executed, as one page whose players still step."""
+    """``teachraster html``: lessons, executed, as whole pages that work offline."""
     p = sub.add_parser(
         "html",
-        help="execute a notebook and write it as one HTML page (fills still step offline)",
-        description="Execute NOTEBOOK (in its folder) and convert it to one HTML page. Each "
-        "FillPlayer becomes an offline player that steps and plays with no kernel; other "
-        "widgets show their last picture.",
+        help="execute notebooks and write each as one self-contained HTML page",
+        description="Execute each NOTEBOOK (in its folder) and convert it to one HTML page "
+        "that needs no kernel and no network: formulas are rendered to MathML, players step "
+        "and play, sliders move over pictures drawn at export, other widgets show their "
+        "picture. Prints, per lesson, how many widgets are live, pictured or missing.",
     )
-    p.add_argument("notebook", metavar="NOTEBOOK", type=Path, help="the .ipynb to export")
-    p.add_argument("-o", "--output", type=Path, required=True, help="the .html to write")
+    p.add_argument("notebook", metavar="NOTEBOOK", type=Path, nargs="+",
+                   help="the .ipynb to export")  # fmt: skip
+    p.add_argument("-o", "--output", type=Path, required=True,
+                   help="the .html to write, or a folder (one NAME.html per notebook)")  # fmt: skip
     p.add_argument("--timeout", type=positive(int), default=600,
                    help="seconds a cell may run (default 600)")  # fmt: skip
     p.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")

@@ -59,7 +59,9 @@ def centre_ranges(lo, hi, setup: EdgeSetup, n: int, half=None) -> tuple[np.ndarr
         first = np.ceil((lo - half) / unit)
         last = np.floor((hi - half) / unit)
     first = np.clip(first, 0, n).astype(np.int64)
-    stop = np.maximum(first, np.minimum(last, n - 1).astype(np.int64) + 1)
+    # clipped from below too: an unsnapped bound far left of the image (-1e28) would not fit
+    # an int64 (numpy then warns and wraps)
+    stop = np.maximum(first, np.clip(last, -1, n - 1).astype(np.int64) + 1)
     return first, stop
 
 

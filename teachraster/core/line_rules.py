@@ -75,10 +75,11 @@ def _minor_at(a, d, centres, axis):
     return a[other] + (centres - a[axis]) * (float(d[other]) / float(d[axis]))
 
 
-def empty_steps() -> LineSteps:
-    """No step at all: a zero-length line lights nothing (its end's diamond is its start's)."""
+def empty_steps(x_major: bool = True) -> LineSteps:
+    """No step at all: a zero-length line lights nothing (its end's diamond is its start's),
+    nor does one whose major-axis range misses the image."""
     none = np.zeros(0, np.int64)
-    return LineSteps(True, none, none.astype(np.float64), none, none, none, none.astype(np.int8))
+    return LineSteps(x_major, none, none.astype(np.float64), none, none, none, none.astype(np.int8))
 
 
 def _walk(a, b, unit, width, height):
@@ -180,6 +181,8 @@ def diamond(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
     if tuple(a) == tuple(b):
         return empty_steps()
     x_major, major, minor = _walk(a, b, unit, width, height)
+    if len(major) == 0:  # the walk's range misses the image: no column (row) to decide
+        return empty_steps(x_major)
     limit = height if x_major else width
     parts = []
     for lo in range(0, len(major), CHUNK):
@@ -201,13 +204,13 @@ def _centre_steps(a, b, unit, size, axis):
     segment as the diamond rule does."""
     half = unit // 2 if isinstance(unit, int) else 0.5
     s, e = a[axis], b[axis]
+    # Only the indices inside the image are made: a line from far off screen walks no more.
     if e >= s:  # centres c with s <= c < e
         first, last = -((half - s) // unit), -((half - e) // unit) - 1
-        idx = np.arange(first, last + 1, dtype=np.int64)
-    else:  # centres c with e < c <= s, walked downwards
-        first, last = (s - half) // unit, (e - half) // unit + 1
-        idx = np.arange(first, last - 1, -1, dtype=np.int64)
-    return idx[(idx >= 0) & (idx < size)]
+        return np.arange(max(first, 0), min(last, size - 1) + 1, dtype=np.int64)
+    # centres c with e < c <= s, walked downwards
+    first, last = (s - half) // unit, (e - half) // unit + 1
+    return np.arange(min(first, size - 1), max(last, 0) - 1, -1, dtype=np.int64)
 
 
 def bresenham(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
@@ -225,7 +228,7 @@ def bresenham(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
     n_major = abs(q[axis] - p[axis])
     n_minor = q[1 - axis] - p[1 - axis]
     sign_major = 1 if q[axis] >= p[axis] else -1
-    k = np.arange(n_major, dtype=np.int64)
+    k = _steps_inside(p[axis], sign_major, n_major, width if x_major else height)
     dm, dn = n_major, abs(n_minor)
     offset = (2 * k * dn + dm - 1) // (2 * dm) if dm else 0 * k
     error = 2 * dn * (k + 1) - dm - 2 * dm * offset
@@ -239,6 +242,16 @@ def bresenham(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
     return LineSteps(
         x_major, major, error.astype(np.float64), steps[keep], rows[keep], cols[keep], state[keep]
     )
+
+
+def _steps_inside(start: int, sign: int, n: int, size: int) -> np.ndarray:
+    """The steps k in [0, n) whose major index ``start + sign·k`` lies in [0, size): each
+    step's pixel has a closed form, so a line from far off screen makes only these."""
+    if sign > 0:
+        lo, hi = max(0, -start), min(n, size - start)
+    else:
+        lo, hi = max(0, start - size + 1), min(n, start + 1)
+    return np.arange(lo, max(lo, hi), dtype=np.int64)
 
 
 def dda(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:

@@ -116,30 +116,29 @@ class LineTrace:
         ]
         return head + ("; " + "; ".join(parts) if parts else "; no pixel lit")
 
-    def lit_at(self, k: int) -> np.ndarray:
-        """(height, width) bool: the pixels step ``k`` itself lit."""
-        return self._lit(k, cumulative=False)
-
     def coverage_at(self, k: int) -> np.ndarray:
-        """(height, width) bool: the pixels lit after step ``k``."""
-        return self._lit(k, cumulative=True)
-
-    def _lit(self, k: int, *, cumulative: bool) -> np.ndarray:
-        """Pixels lit by work step ``k`` (or by every work step up to it): none during set-up."""
+        """(height, width) bool: the pixels lit once steps 0..k have run (none in set-up)."""
         k = self.index(k)
         width, height = self.size
         out = np.zeros((height, width), bool)
-        if k < len(SETUP):
-            return out
         work = k - len(SETUP)
+        if work < 0:
+            return out
         if self.steps is None:  # wide lines: one coverage image per step
-            for done in self.wide[0 if cumulative else work : work + 1]:
+            for done in self.wide[: work + 1]:
                 out |= done
             return out
-        step = self.steps.step
-        mine = ((step <= work) if cumulative else (step == work)) & (self.steps.state == LIT)
+        mine = (self.steps.step <= work) & (self.steps.state == LIT)
         out[self.steps.rows[mine], self.steps.cols[mine]] = True
         return out
+
+    def lit_at(self, k: int) -> np.ndarray:
+        """(height, width) bool: the pixels step ``k`` itself lit, what it added to
+        :meth:`coverage_at` (each pixel is decided in one step only: its column or row, or
+        one triangle of a wide line, which the top-left rule keeps apart)."""
+        k = self.index(k)
+        now = self.coverage_at(k)
+        return now & ~self.coverage_at(k - 1) if k > 0 else now
 
     def ends_inside(self) -> tuple[np.ndarray, np.ndarray]:
         """(rows, cols) of the pixels whose diamond the line ends in (diamond rule)."""

@@ -64,22 +64,34 @@ def render_group(view, g: int, key: int = KEY) -> tuple[list, list]:
     stop = min(k0 + key, view.n_steps)
     if not 0 <= k0 < stop:
         raise ValueError(f"group {g} is outside the {view.n_steps} steps")
-    view.show_step(k0, draw=False)
-    view.redraw()
-    before = frame_rgba(view.fig)
-    places, pngs = [[0, 0]], [encode_png(before)]
-    for k in range(k0 + 1, stop):
-        view.show_step(k, draw=False)
-        view.redraw()
-        after = frame_rgba(view.fig)
-        box = changed_box(before, after)
-        if box is None:
+
+    def pictures():
+        for k in range(k0, stop):
+            view.show_step(k, draw=False)
+            view.redraw()
+            yield frame_rgba(view.fig)
+
+    return encode_group(pictures())
+
+
+def encode_group(pictures) -> tuple[list, list]:
+    """A group from its pictures ((H, W, 4) uint8 each, all one size), in order: the first
+    whole, then for each later one the rectangle of pixels that differ from the one before
+    (``(places, pngs)`` as :func:`render_group` returns them)."""
+    places, pngs, before = [], [], None
+    for after in pictures:
+        if before is None:
             places.append([0, 0])
-            pngs.append(b"")
+            pngs.append(encode_png(after))
         else:
-            r0, r1, c0, c1 = box
-            places.append([c0, r0])
-            pngs.append(encode_png(after[r0:r1, c0:c1]))
+            box = changed_box(before, after)
+            if box is None:
+                places.append([0, 0])
+                pngs.append(b"")
+            else:
+                r0, r1, c0, c1 = box
+                places.append([c0, r0])
+                pngs.append(encode_png(after[r0:r1, c0:c1]))
         before = after
     return places, pngs
 

@@ -15,7 +15,9 @@ import html
 import itertools
 import json
 
-from .frames import KEY, all_groups, frame_rgba, frames_js, step_texts
+import numpy as np
+
+from .frames import KEY, all_groups, encode_group, frame_rgba, frames_js, step_texts
 
 _ids = itertools.count()
 
@@ -33,6 +35,33 @@ def page_data(view, *, step: int = 0, interval: int = 400, key: int = KEY) -> di
             "step": trace.index(step), "interval": interval, "captions": captions,
             "infos": infos, "groups": groups,
             "alt": f"the {trace.method} fill of a triangle, step by step"}  # fmt: skip
+
+
+def sequence_data(pictures, captions, infos, *, step: int = 0, interval: int = 400,
+                  alt: str = "", key: int = KEY) -> dict:  # fmt: skip
+    """:func:`page_data` for any sequence of pictures ((H, W, 4) uint8 each) with a caption
+    and an info text each: a slider explorer's figure at every position of its slider, a
+    player's at every step. Smaller pictures are padded with white to the largest.
+    """
+    pictures = [np.asarray(p, dtype=np.uint8) for p in pictures]
+    if not pictures or not len(pictures) == len(captions) == len(infos):
+        raise ValueError(
+            f"need as many captions and infos as pictures (at least one), got "
+            f"{len(pictures)}, {len(captions)}, {len(infos)}"
+        )
+    height = max(p.shape[0] for p in pictures)
+    width = max(p.shape[1] for p in pictures)
+    pictures = [np.pad(p, ((0, height - p.shape[0]), (0, width - p.shape[1]), (0, 0)),
+                       constant_values=255) for p in pictures]  # fmt: skip
+    groups = []
+    for g in range(0, len(pictures), key):
+        places, pngs = encode_group(pictures[g : g + key])
+        groups.append({"places": places,
+                       "pngs": [base64.b64encode(p).decode("ascii") for p in pngs]})  # fmt: skip
+    return {"width": width, "height": height, "n": len(pictures), "key": key,
+            "step": int(step) % len(pictures), "interval": interval,
+            "captions": list(captions), "infos": list(infos), "groups": groups,
+            "alt": alt}  # fmt: skip
 
 
 def player_fragment(data: dict) -> str:

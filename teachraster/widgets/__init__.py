@@ -42,6 +42,14 @@ Widgets
 - :class:`LinePlayer` and :class:`BlendingExplorer` (lesson 12): a line step by step under the
   diamond rule, Bresenham or DDA; transparent triangles reordered, premultiplied, sRGB.
 
+Offline pages
+-------------
+``teachraster html`` shows every widget class of this package through
+:func:`teachraster.widgets.offline.offline_page`: a slider over the pictures a slider
+explorer draws ahead, or over the positions of the control a class names in
+``_offline_sweep_`` (players step, explorers slide), else a snapshot of its widget tree with
+its picture; a class that knows better implements ``_offline_page_()``.
+
 Figures
 -------
 ``backend="auto"`` (the default) puts an interactive ipympl canvas in the widget under

@@ -108,6 +108,9 @@ class CasePicker:
     >>> picker.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every hard case (:mod:`.offline`)
+    _offline_sweep_ = "case"
+
     def __init__(self, case: str = "fan_spokes_through_centres", method: str = "halfplane", *,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         names = screen_cases()

@@ -58,6 +58,9 @@ class DivideCostExplorer(Shown):
     widget : ipywidgets.VBox
     """
 
+    #: ``teachraster html``: the offline page steps through every divide cost (:mod:`.offline`)
+    _offline_sweep_ = "divide"
+
     def __init__(self, rows, divide: float = CYCLES_1990S["divides"], *,
                  error: str = "max error", backend: str = "auto",
                  style: str | None = None) -> None:  # fmt: skip

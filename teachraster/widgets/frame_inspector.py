@@ -139,6 +139,9 @@ class FrameInspector(Holdable):
     >>> w.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every view (the image and each overlay) (:mod:`.offline`)
+    _offline_sweep_ = "view"
+
     def __init__(self, scene: str = "intersecting_triangles", width: int = 64,
                  height: int = 48, *, view: str = "image", row: int | None = None,
                  col: int | None = None, samples: int = 1, depth_test: bool = True,

@@ -51,6 +51,9 @@ class PixelInspector(Holdable):
     >>> w.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every sample pattern (:mod:`.offline`)
+    _offline_sweep_ = "pattern"
+
     def __init__(self, source, width: int = 12, height: int = 10, *,
                  pattern: str = "4 standard (rotated grid)", row: int = 0, col: int = 0,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip

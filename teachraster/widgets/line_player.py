@@ -40,6 +40,9 @@ class LinePlayer(Shown):
     >>> player.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every step of the line (:mod:`.offline`)
+    _offline_sweep_ = "slider"
+
     def __init__(self, p0, p1, width, height, *, rule="diamond", step=-1, interval=400,
                  backend="auto", style=None):  # fmt: skip
         self.p0, self.p1, self.width, self.height = p0, p1, width, height

@@ -457,6 +457,12 @@ class FillPlayer(Holdable):
                 f'back (no kernel is running it).</i></p><img alt="{self.frames.alt}" '
                 f'src="data:image/png;base64,{poster}" style="max-width:100%"></div>')  # fmt: skip
 
+    def _offline_page_(self):
+        """``teachraster html``: every step of the fill, stepping and playing in the page."""
+        from .offline import OfflinePage
+
+        return OfflinePage(self.static_fallback(full=True), "live")
+
     def close(self) -> None:
         """Close every widget of the player (the figures are freed with it)."""
         if self.interp_display is not None:

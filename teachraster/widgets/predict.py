@@ -264,21 +264,30 @@ class Predict:
         """
         from IPython.display import HTML, display
 
+        display(HTML(self._headless_html()))
+        self.revealed = True
+
+    def _offline_page_(self):
+        """``teachraster html``: the question, with its answer folded away (it still works
+        there: the reader predicts, then unfolds)."""
+        from .offline import OfflinePage
+
+        self.revealed = True
+        return OfflinePage(self._headless_html(), "live")
+
+    def _headless_html(self) -> str:
         figure = ""
         if self.figure is not None:
             png = self._figure_png().data
             width = struct.unpack(">I", png[16:20])[0]  # the PNG header's width, in pixels
             figure = (f"<img style='max-width:100%' width='{width}' "
                       f"src='data:image/png;base64,{base64.b64encode(png).decode()}'>")  # fmt: skip
-        display(
-            HTML(
-                f"<div><b>Predict first.</b> {self.question}</div>"
-                f"<details><summary>Show the answer</summary>"
-                f"<div>The answer: <b>{self._answer_text()}</b>.</div><div>{self.explain}</div>"
-                f"{figure}</details>"
-            )
+        return (
+            f"<div><b>Predict first.</b> {self.question}</div>"
+            f"<details><summary>Show the answer</summary>"
+            f"<div>The answer: <b>{self._answer_text()}</b>.</div><div>{self.explain}</div>"
+            f"{figure}</details>"
         )
-        self.revealed = True
 
     def close(self) -> None:
         """Close the widgets (and the comms behind them)."""

@@ -46,6 +46,9 @@ class ProjectionExplorer(Shown):
     >>> ex.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every point along the screen (:mod:`.offline`)
+    _offline_sweep_ = "q"
+
     def __init__(self, segment: Segment | None = None, q: float = 0.5, *, n_steps: int = 8,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.segment = Segment() if segment is None else segment

@@ -48,6 +48,9 @@ class SamplingExplorer(Shown):
     >>> ex.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every sample rate (:mod:`.offline`)
+    _offline_sweep_ = "rate"
+
     def __init__(self, rate: int = 32, width: float = 0.0, kernel: str = "box", *,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.backend = resolve_backend(backend)

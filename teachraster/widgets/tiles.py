@@ -56,6 +56,9 @@ class TileExplorer(Holdable):
     >>> ex.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every block of the traversal (:mod:`.offline`)
+    _offline_sweep_ = "block"
+
     def __init__(self, tri: Triangle, width: int = 64, height: int = 64, *,
                  block_sizes=(16, 4, 1), traversal: str = "scanline", backend: str = "auto",
                  style: str | None = None) -> None:  # fmt: skip

@@ -46,6 +46,9 @@ class ZBufferStepper(Shown):
     >>> st.close()
     """
 
+    #: ``teachraster html``: the offline page steps through every triangle's z-buffer (:mod:`.offline`)
+    _offline_sweep_ = "triangle"
+
     def __init__(self, frame, k: int = 0, *, backend: str = "auto",
                  style: str | None = None) -> None:  # fmt: skip
         if getattr(frame, "trace", None) is None:
