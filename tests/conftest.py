@@ -86,6 +86,16 @@ def examples(n: int) -> int:
     return max(5, n // 4) if QUICK else n
 
 
+def cases(n: int) -> int:
+    """How many random cases a loop runs: ``n`` in the full run, a quarter in the quick tier
+    (the same seeds, so the quick tier's cases are the full run's first ones).
+
+    >>> cases(300) in (75, 300)
+    True
+    """
+    return max(2, n // 4) if QUICK else n
+
+
 def _tier_of(argv) -> str | None:
     line = (
         " " + " ".join(str(a) for a in (argv if isinstance(argv, (list, tuple)) else [argv])) + " "

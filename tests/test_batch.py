@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import random_triangles, reference_coverage, signed_area_exact
+from conftest import cases, random_triangles, reference_coverage, signed_area_exact
 
 import teachraster as tr
 from teachraster.pipeline.batched_fill import rasterize_batch
@@ -35,7 +35,7 @@ def _per_triangle(frags, n):
 @pytest.mark.parametrize("bits", [8, 4, None])
 def test_batch_equals_rasterize_per_triangle(rng, bits):
     """Each triangle's fragments are exactly tr.rasterize's coverage, with its barycentrics."""
-    xy = _batch_of(rng, 120)  # 6 kinds x 120 x 2 windings = 1440 triangles per bit depth
+    xy = _batch_of(rng, cases(120))  # 6 kinds x 120 x 2 windings = 1440 triangles per bit depth
     frags = rasterize_batch(xy, W, H, subpixel_bits=bits)
     assert frags.lam.shape == (len(frags.tri), 3)
     assert len(np.unique(frags.tri)) > len(xy) // 2  # most triangles do cover pixels

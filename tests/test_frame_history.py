@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import examples
+from conftest import cases, examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from test_plan import random_scene
@@ -62,7 +62,7 @@ def check_every_pixel(frame, msg=""):
 
 @pytest.mark.parametrize("samples", [1, 4])
 def test_replay_reproduces_random_scenes(rng, samples):
-    for index in range(14):  # every pixel of each; the hypothesis test below explores more
+    for index in range(cases(14)):  # every pixel of each; the hypothesis test below explores more
         clip, attrs, kw = random_scene(rng, index)
         frame = tr.render(clip, W, H, attrs=attrs, samples=samples, trace=True, **kw)
         plain = tr.render(clip, W, H, attrs=attrs, samples=samples, **kw)

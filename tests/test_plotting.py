@@ -112,7 +112,7 @@ CALL_NAMES = list(_calls(make_fill()))
 @pytest.mark.parametrize("name", CALL_NAMES)
 def test_plot_functions_return_their_artists_on_the_axes(method, name):
     fill = make_fill(method)
-    fig, ax = plt.subplots()
+    fig, ax = plt.subplots(figsize=(2, 2), dpi=40)  # a small canvas: what is drawn, not how big
     result = _calls(fill)[name](ax)
     if name in ("split", "raster_line") and method == "halfplane":
         # created hidden, so that a view can reuse them for span tables
@@ -128,12 +128,13 @@ def test_plot_functions_return_their_artists_on_the_axes(method, name):
 def test_plot_functions_survive_odd_triangles(case, name):
     method = "span" if name in ("split", "raster_line") else "halfplane"
     fill = make_fill(method, **ODD[case])
-    fig, ax = plt.subplots()
+    fig, ax = plt.subplots(figsize=(2, 2), dpi=40)  # a small canvas: what is drawn, not how big
     result = _calls(fill)[name](ax)
     assert all(a.axes is ax for a in result)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # no all-NaN or divide warnings while drawing
         fig.canvas.draw()
+    plt.close(fig)
 
 
 def test_plot_coverage_data_is_the_coverage():

@@ -9,6 +9,7 @@ from conftest import (
     METHODS,
     PERMUTATIONS,
     any_triangle,
+    cases,
     examples,
     explain,
     float_coords,
@@ -33,7 +34,7 @@ def test_bulk_random_triangles_match_reference(kind):
     rng = np.random.default_rng(
         ["float", "centre", "subpixel", "tie", "outside", "huge"].index(kind)
     )
-    for xy in random_triangles(rng, kind, 1000, W, H):
+    for xy in random_triangles(rng, kind, cases(1000), W, H):
         want = reference_coverage(xy, W, H)
         for method in METHODS:
             got = raster(xy, W, H, method=method)

@@ -13,6 +13,7 @@ import pytest
 from conftest import (
     KINDS,
     any_triangle,
+    cases,
     edge_exact,
     examples,
     explain,
@@ -45,7 +46,7 @@ def tiled(xy, width, height, **kwargs):
 def test_bulk_random_triangles_match_reference(kind):
     """600 seeded triangles per kind and block sizes: tiled == exact reference == half-plane."""
     rng = np.random.default_rng(1300 + KINDS.index(kind))
-    for n, xy in enumerate(random_triangles(rng, kind, 600, W, H)):
+    for n, xy in enumerate(random_triangles(rng, kind, cases(600), W, H)):
         want = reference_coverage(xy, W, H)
         got = raster(xy, W, H, method="tiled", block_sizes=SIZES[n % len(SIZES)])
         assert np.array_equal(got, want), explain(xy, got, want)
@@ -56,7 +57,7 @@ def test_other_precisions_match_halfplane(bits):
     """Raw floats and other grids: tiled == half-plane (== span), triangle after triangle."""
     rng = np.random.default_rng(1400 + (bits or 99))
     for kind in ("float", "tie", "outside", "huge"):
-        for n, xy in enumerate(random_triangles(rng, kind, 150, 37, 29)):
+        for n, xy in enumerate(random_triangles(rng, kind, cases(150), 37, 29)):
             want = raster(xy, 37, 29, subpixel_bits=bits)
             got = raster(xy, 37, 29, method="tiled", subpixel_bits=bits, block_sizes=SIZES[n % 5])
             assert np.array_equal(got, want), explain(xy, got, want)

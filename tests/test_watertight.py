@@ -9,7 +9,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from conftest import METHODS, edge_exact, examples, snapped_vertices
+from conftest import METHODS, cases, edge_exact, examples, snapped_vertices
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -146,7 +146,7 @@ def test_random_convex_fans(kind, method):
     """Seeded random convex fans: interior pixels exactly once, nothing twice, nothing outside."""
     rng = np.random.default_rng(["centre", "subpixel", "float"].index(kind) + 10)
     checked = 0
-    while checked < 25:
+    while checked < cases(25):
         shared, rim = random_convex_fan(rng, kind, 20, 18)
         if not fan_is_valid(shared, rim):
             continue
