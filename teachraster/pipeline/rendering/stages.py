@@ -226,7 +226,11 @@ def interpolate_stage(
 
 
 def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
-    """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed."""
+    """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed.
+
+    Each row's value depends on its fragment alone (not on the others evaluated with it),
+    so the colour stage, the attributes and the pixel history get the same bits for the
+    same fragment whichever set they ask for."""
     k = attrs.shape[2]
     if k == 0 or len(shade) == 0:
         return np.zeros((len(shade), k))
@@ -240,7 +244,7 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     else:
         weights = convex_weights(frags.weights_at(tri, x, y))
         if persp.any():
-            weights[persp] = weights_per_row(weights[persp], w[tri[persp]])
+            weights[persp] = _perspective_weights(frags, tri[persp], x[persp], y[persp], w)
     return blend_each(weights, attrs, index=tri)
 
 
