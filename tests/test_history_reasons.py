@@ -60,8 +60,11 @@ def on_triangle(clip, p):
     return alpha, float(alpha @ clip[:, 2])
 
 
-def check_reasons(frame, clip, tol=0.02):
-    """Every not_covered record of every pixel against the input triangles (module doc)."""
+def check_reasons(frame, clip, tol=0.02, bits=8):
+    """Every not_covered record of every pixel against the input triangles (module doc).
+
+    Where a triangle has a vertex behind the eye (w <= 0) it has no window position: the
+    claims are checked on the barycentrics of the point of its plane seen at the point."""
     offsets = np.array([[0.5, 0.5]]) if frame.samples is None else frame.samples
     counts = dict.fromkeys(REASONS, 0)
     for row in range(H):
@@ -75,32 +78,48 @@ def check_reasons(frame, clip, tol=0.02):
                     continue
                 counts[r.reason] += 1
                 p = np.array([col, row]) + offsets[r.sample]
-                tri = clip[r.triangle]
-                xy, _ = window_of(tri)
-                backwards = cross(*xy) < 0
-                if r.reason in ("outside_edge", "top_left"):
-                    assert r.edge in (BACKWARD if backwards else FORWARD), where
-                    d = edge_distance(xy, int(r.edge[1]) - 1, int(r.edge[2]) - 1, p)
-                    assert d <= tol and abs(-d - r.outside) <= tol, where
-                    assert (r.outside == 0) == (r.reason == "top_left"), where
-                elif r.reason == "seam":
-                    assert SEAM.match(r.edge), where
-                    inside = [edge_distance(xy, a, (a + 1) % 3, p) * (-1 if backwards else 1)
-                              for a in range(3)]  # fmt: skip
-                    z = on_triangle(tri, p)[1]
-                    assert min(inside) >= -tol and -1 - 1e-3 <= z <= 1 + 1e-3, where
-                    other = by_key[(r.across, r.sample)]
-                    assert other.outcome in ("hi_z", "failed_depth", "passed"), where
-                    assert frame.trace.parent[r.across] == r.triangle, where
-                elif r.reason == "clipped_away":
-                    assert r.edge in PLANES, where
-                    alpha, z = on_triangle(tri, p)
-                    assert not ((alpha > 1e-9).all() and -1 < z < 1), where
-                else:
-                    assert r.reason == "zero_area" and r.edge is None, where
-                    v = np.round(frame.trace.window[r.piece, :, :2] * 256)  # half to even
-                    assert cross(*v) == 0, where
+                check_record(frame, r, clip[r.triangle], p, by_key, tol, bits, where)
     return counts
+
+
+def check_record(frame, r, tri, p, by_key, tol, bits, where):
+    """One not_covered record ``r`` at window point ``p`` against its input triangle."""
+    seen = tri[:, 3] > 0  # every vertex in front of the eye: window positions exist
+    xy = window_of(tri)[0] if seen.all() else None
+    if r.reason in ("outside_edge", "top_left"):
+        a, b = int(r.edge[1]) - 1, int(r.edge[2]) - 1
+        if xy is None:  # outside (or on) ab, up to snapping
+            alpha = on_triangle(tri, p)[0]
+            assert alpha[3 - a - b] <= 1e-2 * np.abs(alpha).max(), where
+        else:
+            backwards = cross(*xy) < 0
+            assert r.edge in (BACKWARD if backwards else FORWARD), where
+            d = edge_distance(xy, a, b, p)
+            assert d <= tol and abs(-d - r.outside) <= tol, where
+        assert (r.outside == 0) == (r.reason == "top_left"), where
+    elif r.reason == "seam":
+        assert SEAM.match(r.edge), where
+        alpha, z = on_triangle(tri, p)  # the input triangle covers p (up to snapping)
+        assert -1 - 1e-2 <= z <= 1 + 1e-2, where
+        if xy is None:
+            assert alpha.min() >= -1e-2 * np.abs(alpha).max(), where
+        else:
+            backwards = cross(*xy) < 0
+            inside = [edge_distance(xy, *((a + 1) % 3, a)[:: 1 if backwards else -1], p)
+                      for a in range(3)]  # fmt: skip
+            assert min(inside) >= -tol, where
+        other = by_key[(r.across, r.sample)]
+        assert other.outcome in ("hi_z", "failed_depth", "passed"), where
+        assert frame.trace.parent[r.across] == r.triangle, where
+    elif r.reason == "clipped_away":
+        assert r.edge in PLANES, where
+        alpha, z = on_triangle(tri, p)  # beyond near or far, or outside the triangle
+        assert r.outside <= tol or not ((alpha > 1e-9).all() and -1 < z < 1), where
+    else:
+        assert r.reason == "zero_area" and r.edge is None, where
+        v = frame.trace.window[r.piece, :, :2]
+        v = v if bits is None else np.round(v * 2**bits)  # snapped: half to even
+        assert cross(*v) == 0, where
 
 
 def near_clipped_scene(rng, n=3):
@@ -260,3 +279,36 @@ def test_history_refuses_bools_naming_the_argument(row, col, name):
     with pytest.raises(TypeError, match=name):
         frame.history(row, col)
     assert frame.history(np.int8(1), np.uint16(1)).row == 1
+
+
+@pytest.mark.parametrize("samples", [1, 4])
+def test_behind_the_eye_forced_clipping_and_other_snapping(rng, samples):
+    """Vertices behind the eye (no window position), every triangle through the clipper,
+    4 sub-pixel bits and unsnapped floats: the same true reasons."""
+    from test_render import random_clip
+
+    total = dict.fromkeys(REASONS, 0)
+    for bits, force in ((8, "all"), (4, None), (None, "clipping")):
+        clip = random_clip(rng, 3, cross=True)
+        frame = tr.render(clip, W, H, trace=True, samples=samples, subpixel_bits=bits,
+                          force=force)  # fmt: skip
+        for reason, n in check_reasons(
+            frame, clip, tol=0.02 + 2.0 ** -(bits or 30), bits=bits
+        ).items():
+            total[reason] += n
+    assert total["outside_edge"] > 0
+
+
+def test_a_vertex_on_the_near_plane_makes_a_zero_area_piece():
+    """The clipper keeps a vertex lying exactly on the near plane and adds the crossing at
+    that very vertex: a second piece of zero area. The diagonal of the first piece then lies
+    along the near plane: a clip edge (nothing lies beyond it), not a seam."""
+    xy = np.array([[[2.0, 2.0], [22.0, 4.0], [6.0, 16.0]]])
+    clip = clip_from_window(xy, [[0.0, 0.5, -0.5]], 1.0, W, H)  # v1 on near, v3 beyond it
+    frame = tr.render(clip, W, H, trace=True)
+    assert len(frame.trace.window) == 2
+    counts = check_reasons(frame, clip)
+    assert counts["seam"] == 0 and counts["zero_area"] > 0 and counts["clipped_away"] > 0
+    first, second = frame.history(9, 5)
+    assert (first.reason, first.edge, second.reason) == ("clipped_away", "near", "zero_area")
+    assert "beyond the near clip edge by 4.299 px" in str(frame.history(9, 5))

@@ -17,8 +17,10 @@ Which one is decided exactly, by clipping the triangles again with their vertice
 barycentric coordinates as attributes (the clipper's own code, so the very same polygons):
 a new corner on the input edge opposite vk gets λk = 0 *exactly* (it is interpolated
 between two corners that both have λk = 0), and a corner the clipper made lies exactly on
-its plane (the clipper puts it there). A corner is named by what it lies on: "v2", or
-"E23∩near" for the near plane's crossing of E23.
+its plane (the clipper puts it there). An edge with both ends on an input edge is that
+edge; else, with both ends on one plane, a clip edge (also a diagonal of a polygon whose
+pieces beyond it have zero area: a vertex exactly on the plane); else a seam. A corner is
+named by what it lies on: "v2", or "E23∩near" for the near plane's crossing of E23.
 """
 
 from __future__ import annotations
@@ -135,8 +137,10 @@ def _polygon_edges(dbg):
         u, v = lam[:, e], lam[:, (e + 1) % 3]
         on_edge = (u == 0) & (v == 0)  # (P, 3): both ends have λc = 0: the edge opposite vc
         plane = on_plane[:, e] & on_plane[:, (e + 1) % 3]
-        lab = np.where(plane.any(axis=1), 3 + np.argmax(plane, axis=1), 3 + len(PLANES))
+        lab = np.full(len(pieces), 3 + len(PLANES))
         lab = np.where(((e == 0) & (j > 0)) | ((e == 2) & (j < n - 1)), -1, lab)  # fan
+        # a diagonal along a plane (the pieces beyond it have zero area) bounds the polygon
+        lab = np.where(plane.any(axis=1), 3 + np.argmax(plane, axis=1), lab)
         lab = np.where(on_edge.any(axis=1), (np.argmax(on_edge, axis=1) + 1) % 3, lab)
         label[pieces, e] = lab
         across[pieces, e] = np.where(lab == -1, pieces + (-1 if e == 0 else 1), -1)
