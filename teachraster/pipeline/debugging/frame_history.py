@@ -345,8 +345,11 @@ def _values(frags, at, dbg) -> dict:
     a = dbg.inputs
     visible = Visibility(np.zeros(len(at)), np.zeros(len(at), np.int64), a.depth_test,
                          np.arange(len(at)), at)  # fmt: skip
-    # the render's own evaluation, with what it forced ("perspective" divides every row)
-    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, a.forced)
+    # The render's own evaluation, with what it forced: "perspective" divides every row (a
+    # value depends on its fragment alone, so forcing "attributes", which evaluates every
+    # fragment of the frame, would give the same values here at the cost of the frame's).
+    forced = a.forced - {"attributes"}
+    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, forced)
     return {int(f): tuple(float(v) for v in values[i]) for i, f in enumerate(at)}
 
 
