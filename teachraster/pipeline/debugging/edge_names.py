@@ -54,6 +54,7 @@ class PieceEdges:
     label: np.ndarray  # (M, 3) per tested edge: input edge 0..2, 3 + plane, -1 seam
     ends: np.ndarray  # (M, 3, 2) the piece's corners at the two ends of each tested edge
     backwards: np.ndarray  # (M,) bool: the input triangle is walked the other way round
+    turned: np.ndarray  # (M,) bool: snapping turned the piece over (it runs the other way)
     corners: dict  # piece -> ((3, 3) λ, (3, P) on plane) of its corners (clipped only)
 
     def name(self, piece: int, k: int) -> str:
@@ -88,6 +89,7 @@ def _piece_edges(dbg, setup) -> PieceEdges:
     area = np.asarray(setup.original_area2, dtype=np.float64).reshape(m)
     vote = np.bincount(clipped.parent, weights=np.sign(area), minlength=len(clipped.status))
     backwards = vote[clipped.parent] < 0
+    turned = (area != 0) & ((area < 0) != backwards)  # a thin piece snapping turned over
     perm = np.asarray(setup.perm).reshape(m, 3)
     rows = np.arange(m)
     tested = np.empty((m, 3), dtype=np.int64)
@@ -99,7 +101,7 @@ def _piece_edges(dbg, setup) -> PieceEdges:
         tested[:, k], over[:, k] = label[rows, edge], across[rows, edge]
         ends[:, k] = np.stack([a, b], axis=1)
     kind = np.where(tested >= 3, CLIP_EDGE, np.where(tested < 0, SEAM, INPUT_EDGE))
-    return PieceEdges(kind.astype(np.int8), over, tested, ends, backwards, corners)
+    return PieceEdges(kind.astype(np.int8), over, tested, ends, backwards, turned, corners)
 
 
 def input_edge_name(i: int, backwards: bool = False) -> str:

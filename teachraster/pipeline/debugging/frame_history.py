@@ -16,7 +16,8 @@ A centre a triangle does not cover is refused for a reason (``HistoryRecord.reas
 order given (:mod:`.edge_names`): outside one of its edges E12, E23, E31 (E13, E32, E21 walked
 the other way), on such an edge and refused by the top-left rule, beyond an edge that
 clipping made (that part of the triangle was clipped away), across the seam between two
-pieces of a clipped triangle (the neighbouring piece's side), or the triangle has zero area.
+pieces of a clipped triangle (the neighbouring piece's side), or the triangle (piece) has
+zero area; rarely, a thin piece that snapping turned over (its corners run the other way).
 
 A fragment that passed may still be hidden by a later one (``hidden_by``); the one the
 pixel shows at the end has ``shown``. Nothing is stored per fragment for this: the
@@ -50,10 +51,10 @@ from .edge_names import CLIP_EDGE, INPUT_EDGE, SEAM, piece_edges
 #: The outcomes, in the pipeline's order of tests (the first that failed is reported).
 OUTCOMES = ("culled", "not_covered", "hi_z", "failed_depth", "passed")
 
-#: Why a centre (sample) was "not_covered", most fundamental first: when several edges of a
-#: piece refuse it, the history names one of the triangle's own edges before an edge
-#: clipping made, and that before a seam between pieces.
-REASONS = ("zero_area", "outside_edge", "top_left", "clipped_away", "seam")
+#: Why a centre (sample) was "not_covered". The reason is the triangle's: where several
+#: edges of its pieces refuse the point, one of the triangle's own edges comes before an
+#: edge clipping made, and that before a seam between pieces.
+REASONS = ("zero_area", "outside_edge", "top_left", "clipped_away", "seam", "turned_over")
 
 
 @dataclass(frozen=True)
@@ -91,7 +92,8 @@ class HistoryRecord:
     reason : str
         "not_covered": why, one of :data:`REASONS`; "" otherwise.
     across : int
-        reason "seam": the piece on the other side of the seam (-1 otherwise).
+        reasons "seam" and "turned_over": the piece of the same triangle that covers the
+        point (-1: none does).
     shown : bool
         The sample shows this triangle at the end.
     hidden_by : int
@@ -257,6 +259,12 @@ class _Misses:
         self.family = np.unique(np.concatenate([np.arange(a, b) for a, b in zip(lo, hi)]
                                                or [np.zeros(0, np.int64)]))  # fmt: skip
         self.covered, self.refused, self.value = _edge_test(setup, self.family, pts)
+        # A zero-area piece has no sides. A piece snapping turned over has its interior on
+        # the other side of its edges from the triangle's: for the triangle, a point is
+        # outside such an edge where the piece's own test would call it inside.
+        turned = self.names.turned[self.family][:, None, None]
+        self.refused = np.where(turned, self.value > 0, self.refused)
+        self.value = np.where(turned, -self.value, self.value)  # E on the triangle's side
         self.refused &= (np.asarray(setup.area2)[self.family] != 0)[:, None, None]
         self.ranges = dict(zip(pieces.tolist(), zip(lo.tolist(), hi.tolist())))
 
@@ -268,7 +276,8 @@ class _Misses:
         the pieces clipping made of it: the first of its own edges E12, E23, E31 that
         refuses the point, else the first edge a clip plane made (that part was clipped
         away), else the point is inside the clipped triangle, on another piece's side of a
-        seam (``across``: the piece that covers it)."""
+        seam (``across``: the piece that covers it, -1 if none does: snapping turned a thin
+        piece over, leaving a gap), or the piece is that turned piece."""
         setup, names = self.setup, self.names
         if np.asarray(setup.area2)[piece] == 0:
             return dict(reason="zero_area")
@@ -280,12 +289,17 @@ class _Misses:
             if len(hit):
                 (i, k), *_ = hit
                 return _refusal(setup, names, lo + i, k, value[i, k], kind)
-        own = np.flatnonzero(refused[piece - lo])
-        if len(own) == 0:  # covered after all (never, for a record without a fragment)
-            return {}
-        k, cover = int(own[0]), np.flatnonzero(self.covered[rows, s]) + lo
-        out = _refusal(setup, names, piece, k, value[piece - lo, k], SEAM)
-        return out | dict(across=int(cover[0]) if len(cover) else int(names.across[piece, k]))
+        cover = np.flatnonzero(self.covered[rows, s]) + lo
+        across = int(cover[0]) if len(cover) else -1
+        own = np.flatnonzero(refused[piece - lo])  # seams: the other edges let the point in
+        if len(own):
+            k = int(own[0])
+            return _refusal(setup, names, piece, k, value[piece - lo, k], SEAM) | dict(
+                across=across
+            )
+        if names.turned[piece]:  # on its side of every edge, yet the turned piece refused it
+            return dict(reason="turned_over", across=across)
+        return {}  # covered after all (never, for a record without a fragment)
 
 
 def _refusal(setup, names, piece, k, e, kind) -> dict:
@@ -484,9 +498,13 @@ def reason_text(r: HistoryRecord) -> str:
         return f"on {r.edge}, which is neither a top nor a left edge (top-left rule)"
     if r.reason == "clipped_away":
         return f"beyond the {r.edge} clip edge by {r.outside:.4g} px: that part was clipped away"
+    covers = f"piece {r.across} of the same triangle covers it" if r.across >= 0 else ""
     if r.reason == "seam":
-        return (f"across the clipping seam {r.edge[5:]} by {r.outside:.4g} px: piece "
-                f"{r.across} of the same triangle covers it")  # fmt: skip
+        covers = covers or "no piece of the triangle covers it (snapping turned a thin piece over)"
+        return f"across the clipping seam {r.edge[5:]} by {r.outside:.4g} px: {covers}"
+    if r.reason == "turned_over":
+        covers = covers or "no piece of the triangle covers it"
+        return f"snapping turned this thin piece over (its corners run the other way): {covers}"
     return f"outside {r.edge} by {r.outside:.4g} px"
 
 
