@@ -184,21 +184,36 @@ def _sample_work(trace, dbg) -> Work:
 def triangle_sizes(work: Work, n: int, n_pix: int) -> np.ndarray:
     """(n,) pixels each input triangle covers (a sample of, with MSAA): the pieces clipping
     made of one triangle are one triangle, so a pixel two pieces share counts once."""
-    pairs = np.unique(work.triangle.astype(np.int64) * n_pix + work.pixel)
-    return np.bincount(pairs // n_pix, minlength=n)
+    triangle = distinct_pairs(work, np.ones(len(work.pixel), dtype=bool), n_pix)[0]
+    return np.bincount(triangle, minlength=n)
+
+
+def distinct_pairs(work: Work, keep: np.ndarray, n_pix: int):
+    """The (input triangle, pixel) pairs of the ``keep`` entries, each once, in drawing
+    order: (triangle, pixel, row) arrays. Only MSAA entries of a triangle that clipping cut
+    into pieces can repeat a pair (with one sample every centre is in one piece), so only
+    those are sorted."""
+    triangle, pixel, row = work.triangle[keep], work.pixel[keep], work.row[keep]
+    if work.single or len(pixel) == 0:
+        return triangle, pixel, row
+    piece = work.piece[keep]
+    starts = np.flatnonzero(np.r_[True, triangle[1:] != triangle[:-1]])  # drawing order
+    split = np.minimum.reduceat(piece, starts) != np.maximum.reduceat(piece, starts)
+    if not split.any():
+        return triangle, pixel, row
+    cut = np.flatnonzero(np.repeat(split, np.diff(np.r_[starts, len(piece)])))
+    key = triangle[cut].astype(np.int64) * n_pix + pixel[cut]
+    order = np.argsort(key, kind="stable")
+    again = np.zeros(len(pixel), dtype=bool)  # a pair an earlier piece already had
+    again[cut[order[1:][key[order[1:]] == key[order[:-1]]]]] = True
+    return triangle[~again], pixel[~again], row[~again]
 
 
 def quad_overshading(work: Work, width: int, height: int) -> np.ndarray:
     """(H, W) fraction of helper lanes among the lanes launched in each pixel's 2×2 quad."""
-    shaded = work.passed_samples > 0
     # per input triangle: the pieces clipping made of one triangle launch their quads as
     # one triangle, and a pixel is one lane whichever pieces cover its samples
-    pixel, piece, row = work.pixel[shaded], work.triangle[shaded], work.row[shaded]
-    if not work.single and len(pixel):  # MSAA: two pieces may share a pixel
-        n_pix = width * height
-        key = np.unique(piece.astype(np.int64) * n_pix + pixel)
-        piece, pixel = np.divmod(key, n_pix)
-        row = pixel // width
+    piece, pixel, row = distinct_pairs(work, work.passed_samples > 0, width * height)
     qw, qh = -(-width // 2), -(-height // 2)
     # (row // 2) * qw + col // 2, with col = pixel - row * width
     quad = (row >> 1) * qw + ((pixel - row * width) >> 1)
