@@ -95,7 +95,9 @@ def check_record(frame, r, tri, p, by_key, tol, bits, where):
             backwards = cross(*xy) < 0
             assert r.edge in (BACKWARD if backwards else FORWARD), where
             d = edge_distance(xy, a, b, p)
-            assert d <= tol and abs(-d - r.outside) <= tol, where
+            # (a clipped piece's edge may end at a snapped new corner: a short one turns a
+            # little, which moves it more far from its ends)
+            assert d <= tol and abs(-d - r.outside) <= tol + 0.3 * abs(d), where
         assert (r.outside == 0) == (r.reason == "top_left"), where
     elif r.reason == "seam":
         assert SEAM.match(r.edge), where

@@ -108,7 +108,7 @@ class HistoryRecord:
     depth_before: float
     depth_after: float
     value: tuple = ()
-    edge: tuple | None = None
+    edge: str | None = None
     outside: float = float("nan")
     reason: str = ""
     across: int = -1
@@ -256,8 +256,8 @@ class _Misses:
         parent = dbg.clipped.parent
         lo = np.searchsorted(parent, parent[pieces], "left")
         hi = np.searchsorted(parent, parent[pieces], "right")
-        self.family = np.unique(np.concatenate([np.arange(a, b) for a, b in zip(lo, hi)]
-                                               or [np.zeros(0, np.int64)]))  # fmt: skip
+        ranges = [np.arange(a, b) for a, b in zip(lo, hi)]  # the pieces of their triangles
+        self.family = np.unique(np.concatenate(ranges)) if ranges else np.zeros(0, np.int64)
         self.covered, self.refused, self.value = _edge_test(setup, self.family, pts)
         # A zero-area piece has no sides. A piece snapping turned over has its interior on
         # the other side of its edges from the triangle's: for the triangle, a point is
