@@ -102,7 +102,8 @@ def check_record(frame, r, tri, p, by_key, tol, bits, where):
     elif r.reason == "seam":
         assert SEAM.match(r.edge), where
         alpha, z = on_triangle(tri, p)  # the input triangle covers p (up to snapping)
-        assert -1 - 1e-2 <= z <= 1 + 1e-2, where
+        slack = 1e-2 if tol < 0.1 else 0.5  # coarse snapping moves a seam's ends in depth too
+        assert -1 - slack <= z <= 1 + slack, where
         if xy is None:
             assert alpha.min() >= -1e-2 * np.abs(alpha).max(), where
         else:

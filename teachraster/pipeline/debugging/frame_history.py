@@ -273,9 +273,9 @@ class _Misses:
         ``piece`` at point ``s``.
 
         A zero-area piece covers nothing. Otherwise the reason is the triangle's, over all
-        the pieces clipping made of it: the first of its own edges E12, E23, E31 that
-        refuses the point, else the first edge a clip plane made (that part was clipped
-        away), else the point is inside the clipped triangle, on another piece's side of a
+        the pieces clipping made of it: of its own edges E12, E23, E31 that refuse the
+        point the one it is farthest outside, else such an edge a clip plane made (that
+        part was clipped away), else the point is inside the clipped triangle, on another piece's side of a
         seam (``across``: the piece that covers it, -1 if none does: snapping turned a thin
         piece over, leaving a gap), or the piece is that turned piece."""
         setup, names = self.setup, self.names
@@ -286,8 +286,9 @@ class _Misses:
         refused, value = self.refused[rows, s], self.value[rows, s]  # (n, 3)
         for kind in (INPUT_EDGE, CLIP_EDGE):
             hit = np.argwhere(refused & (names.kind[lo:hi] == kind))
-            if len(hit):
-                (i, k), *_ = hit
+            if len(hit):  # the edge the point is farthest outside (robust to snapping)
+                i, k = max(hit.tolist(), key=lambda ik: _outside(setup, lo + ik[0], ik[1],
+                                                                   value[ik[0], ik[1]]))  # fmt: skip
                 return _refusal(setup, names, lo + i, k, value[i, k], kind)
         cover = np.flatnonzero(self.covered[rows, s]) + lo
         across = int(cover[0]) if len(cover) else -1
@@ -302,12 +303,17 @@ class _Misses:
         return {}  # covered after all (never, for a record without a fragment)
 
 
+def _outside(setup, piece, k, e) -> float:
+    """How far (px) outside edge ``k`` of ``piece`` a point with edge value ``e`` lies."""
+    a, b = setup.p[piece, k], setup.p[piece, (k + 1) % 3]
+    length = float(np.hypot(float(b[0] - a[0]), float(b[1] - a[1])))
+    return max(0.0, -float(e) / length / float(setup.unit)) if length else 0.0
+
+
 def _refusal(setup, names, piece, k, e, kind) -> dict:
     """The record fields for edge ``k`` of ``piece`` refusing a point where its value is
     ``e`` (units²): the edge's name and how far outside it the point lies (px)."""
-    a, b = setup.p[piece, k], setup.p[piece, (k + 1) % 3]
-    length = float(np.hypot(float(b[0] - a[0]), float(b[1] - a[1])))
-    outside = max(0.0, -float(e) / length / float(setup.unit)) if length else 0.0
+    outside = _outside(setup, piece, k, e)
     if kind == SEAM:
         reason = "seam"
     elif kind == CLIP_EDGE:
