@@ -112,7 +112,7 @@ def test_history_records_say_why():
     assert h[1].depth_after == 0.3
     assert h[2].edge is not None and h[2].outside > 0
     text = str(h)
-    assert "hidden by 1" in text and "passed (shown)" in text and "outside edge" in text
+    assert "hidden by 1" in text and "passed (shown)" in text and "outside E32" in text
     assert "culled" in text and "row 4, col 4" in text
     # with the far triangle drawn last it fails the depth test
     late = tr.render(clip[[1, 0]], 16, 12, trace=True).history(4, 4)

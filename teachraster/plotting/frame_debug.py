@@ -79,9 +79,12 @@ def overlay_style(kind: str, values: np.ndarray):
     return values.astype(float), base, Normalize(0, top), None
 
 
-def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True) -> OverlayArtists:
+def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> OverlayArtists:
     """Draw ``frame.overlay(kind)`` on ``ax`` with a colour bar in numbers; the title
-    gives the total (or the range). ``frame`` needs ``trace=True`` except for "nan"."""
+    gives the total (or the range). ``frame`` needs ``trace=True`` except for "nan".
+
+    The colour bar takes its room from ``ax`` unless ``cax`` is given: an Axes of its own
+    (cleared and reused), so a figure that redraws overlays keeps ``ax`` where it is."""
     check_choice("kind", kind, KINDS)
     values = frame.overlay(kind)
     height, width = values.shape
@@ -93,7 +96,10 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True) -> OverlayArtis
     im = show_image(ax, shown, cmap=cmap, norm=norm)
     result = OverlayArtists(im)
     if colorbar:
-        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.8, ticks=ticks, format="%g")
+        room = dict(ax=ax, shrink=0.8) if cax is None else dict(cax=cax)
+        if cax is not None:
+            cax.clear()
+        result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g")
         result.colorbar.set_label(OVERLAY_LABELS[kind], fontsize="small")
     ax.set_title(overlay_title(kind, values), fontsize="small")
     return result

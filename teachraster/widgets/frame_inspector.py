@@ -163,6 +163,9 @@ class FrameInspector(Holdable):
         with style_context(style):
             self.fig = new_figure((4.6, 3.9), self.backend)
             self.ax = self.fig.add_axes((0.1, 0.06, 0.72, 0.8))
+            # the overlays' colour bar: one Axes of its own, reused, so that changing the
+            # view never takes room from the frame (a colour bar made with ax= would)
+            self.cax = self.fig.add_axes((0.86, 0.14, 0.03, 0.64))
             self.hist_fig = new_figure((4.6, 3.9), self.backend)
             self.hist_ax = self.hist_fig.add_axes((0.16, 0.16, 0.8, 0.74))
             self._draw_frame()
@@ -201,17 +204,16 @@ class FrameInspector(Holdable):
         self.table.value = f"<pre style='font-size:0.8em;line-height:1.25'>{text}</pre>"
 
     def _draw_frame(self) -> None:
-        fig, ax = self.fig, self.ax
-        for extra in fig.axes[1:]:  # the previous view's colour bar
-            extra.remove()
+        ax = self.ax
         ax.clear()
+        self.cax.set_visible(self.view.value != "image")
         if self.view.value == "image":
             shown = self.frame.color[..., :3] if self.glass.value else self.frame.image
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
             ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
         else:
-            plot_overlay(ax, self.frame, self.view.value)
+            plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
         r, c = self.row.value, self.col.value
         self.marker = ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
                               color="#D55E00", lw=2, zorder=6)[0]  # fmt: skip

@@ -11,6 +11,14 @@ pipeline's order that stopped it:
     "culled" -> "not_covered" (which edge, how far outside) -> "hi_z" -> "failed_depth"
     -> "passed"
 
+A centre a triangle does not cover is refused for a reason (``HistoryRecord.reason``,
+:data:`REASONS`) that names the edges as a student reads the triangle, v1, v2, v3 in the
+order given (:mod:`.edge_names`): outside one of its edges E12, E23, E31 (E13, E32, E21 walked
+the other way), on such an edge and refused by the top-left rule, beyond an edge that
+clipping made (that part of the triangle was clipped away), across the seam between two
+pieces of a clipped triangle (the neighbouring piece's side), or the triangle (piece) has
+zero area; rarely, a thin piece that snapping turned over (its corners run the other way).
+
 A fragment that passed may still be hidden by a later one (``hidden_by``); the one the
 pixel shows at the end has ``shown``. Nothing is stored per fragment for this: the
 history of one pixel is computed on demand from the trace's compact arrays (the fill's
@@ -27,21 +35,27 @@ the last one drawn shows.
 
 from __future__ import annotations
 
-import operator
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ...core.edges import passes, setup_edges
 from ...core.multisample import offsets_in_units
+from ...core.validate import as_int
 from ..antialiasing.multisampling import depth_planes, pair_attributes, plane_depth
 from ..blending.colour_blending import write_colour
 from ..rasterization.batched_fill import weight_source
 from ..rendering.stages import Visibility, fragment_values, interpolate_stage
 from ..visibility.depth import quantize
+from .edge_names import CLIP_EDGE, INPUT_EDGE, SEAM, piece_edges
 
 #: The outcomes, in the pipeline's order of tests (the first that failed is reported).
 OUTCOMES = ("culled", "not_covered", "hi_z", "failed_depth", "passed")
+
+#: Why a centre (sample) was "not_covered". The reason is the triangle's: where several
+#: edges of its pieces refuse the point, one of the triangle's own edges comes before an
+#: edge clipping made, and that before a seam between pieces.
+REASONS = ("zero_area", "outside_edge", "top_left", "clipped_away", "seam", "turned_over")
 
 
 @dataclass(frozen=True)
@@ -63,15 +77,24 @@ class HistoryRecord:
     depth_before, depth_after : float
         The depth buffer at this sample before and after it (inf: still empty).
     value : tuple of float
-        The attributes it wrote ("passed"), else those interpolated there (covered), else ().
+        The attributes it wrote ("passed"), else those interpolated there ("failed_depth"),
+        else () (Hi-Z rejects a fragment before it is interpolated).
         With MSAA, where attributes are evaluated once per pixel and triangle, the records
         a sample shows at the end carry the frame's ``sample_attrs``; those hidden later
         carry the same evaluation for their pair (at the centre, or the centroid sample).
-    edge : tuple of int or None
-        "not_covered": the first edge that failed, as (from, to) input vertex indices.
+    edge : str or None
+        "not_covered": the edge that refused the point: "E12", "E23", "E31" (or E13, E32,
+        E21) for the input triangle's own edges (v1, v2, v3 in the order given), "near",
+        "far" or "guard left/right/bottom/top" for an edge a clip plane made, "seam v1–E23∩near"
+        for the diagonal between two pieces of a clipped triangle; None for zero area.
     outside : float
         "not_covered": how far outside that edge the point lies, in px (0 on the edge: the
         top-left rule refused it). NaN otherwise.
+    reason : str
+        "not_covered": why, one of :data:`REASONS`; "" otherwise.
+    across : int
+        reasons "seam" and "turned_over": the piece of the same triangle that covers the
+        point (-1: none does).
     shown : bool
         The sample shows this triangle at the end.
     hidden_by : int
@@ -94,8 +117,10 @@ class HistoryRecord:
     depth_before: float
     depth_after: float
     value: tuple = ()
-    edge: tuple | None = None
+    edge: str | None = None
     outside: float = float("nan")
+    reason: str = ""
+    across: int = -1
     shown: bool = False
     hidden_by: int = -1
     depth_write: bool = True
@@ -213,10 +238,8 @@ def _setup(dbg, window):
 
 
 def _pixel_index(name, value, size) -> int:
-    try:
-        i = operator.index(value)
-    except TypeError:
-        raise TypeError(f"{name} must be an integer, got {type(value).__name__}") from None
+    """``value`` as a pixel index (an integer, not a bool) in [0, size)."""
+    i = as_int(name, value)
     if not 0 <= i < size:
         raise ValueError(f"{name} must be in [0, {size}), got {i}")
     return i
@@ -243,34 +266,97 @@ def _points(setup, units, row, col) -> np.ndarray:
 
 
 def _edge_test(setup, pieces, pts):
-    """Coverage of ``pts`` (S, 2) by ``pieces``: covered (n, S), the first failing edge
-    (n, S) (-1 none) and its value E (n, S) in units²."""
+    """Coverage of ``pts`` (S, 2) by ``pieces``: covered (n, S), and per edge whether it
+    refuses the point (n, S, 3) and its value E (n, S, 3) in units²."""
     p, tl = setup.p[pieces], setup.top_left[pieces]
     n, s = len(pieces), len(pts)
-    failed = np.full((n, s), -1, dtype=np.int64)
-    value = np.zeros((n, s))
+    refused = np.zeros((n, s, 3), dtype=bool)
+    value = np.zeros((n, s, 3))
     for k in range(3):
         a, b = p[:, k, None, :], p[:, (k + 1) % 3, None, :]
         e = (b[..., 0] - a[..., 0]) * (pts[None, :, 1] - a[..., 1]) - (b[..., 1] - a[..., 1]) * (
             pts[None, :, 0] - a[..., 0]
         )
-        bad = ~passes(e, tl[:, k, None]) & (failed < 0)
-        failed[bad] = k
-        value[bad] = e[bad]
-    zero = (np.asarray(setup.area2)[pieces] == 0)[:, None]  # covers nothing: edge 0
-    failed[zero & (failed < 0)] = 0
-    return failed < 0, failed, value
+        refused[..., k] = ~passes(e, tl[:, k, None])
+        value[..., k] = e
+    zero = (np.asarray(setup.area2)[pieces] == 0)[:, None]  # covers nothing
+    return ~refused.any(axis=2) & ~zero, refused, value
 
 
-def _miss(setup, piece, k, e) -> tuple[tuple[int, int], float]:
-    """The failed edge as input vertex indices and the distance outside it in px."""
+class _Misses:
+    """Why the pieces reaching a pixel do not cover its points: the edge tests of every
+    piece of their triangles at every point, once per history (:meth:`why` per record)."""
+
+    def __init__(self, dbg, setup, pieces, pts):
+        self.setup, self.names = setup, piece_edges(dbg, setup)
+        parent = dbg.clipped.parent
+        lo = np.searchsorted(parent, parent[pieces], "left")
+        hi = np.searchsorted(parent, parent[pieces], "right")
+        ranges = [np.arange(a, b) for a, b in zip(lo, hi)]  # the pieces of their triangles
+        self.family = np.unique(np.concatenate(ranges)) if ranges else np.zeros(0, np.int64)
+        self.covered, self.refused, self.value = _edge_test(setup, self.family, pts)
+        # A zero-area piece has no sides. A piece snapping turned over has its interior on
+        # the other side of its edges from the triangle's: for the triangle, a point is
+        # outside such an edge where the piece's own test would call it inside.
+        turned = self.names.turned[self.family][:, None, None]
+        self.refused = np.where(turned, self.value > 0, self.refused)
+        self.value = np.where(turned, -self.value, self.value)  # E on the triangle's side
+        self.refused &= (np.asarray(setup.area2)[self.family] != 0)[:, None, None]
+        self.ranges = dict(zip(pieces.tolist(), zip(lo.tolist(), hi.tolist())))
+
+    def why(self, piece: int, s: int) -> dict:
+        """The fields ``reason``, ``edge``, ``outside``, ``across`` of the record of
+        ``piece`` at point ``s``.
+
+        A zero-area piece covers nothing. Otherwise the reason is the triangle's, over all
+        the pieces clipping made of it: of its own edges E12, E23, E31 that refuse the
+        point the one it is farthest outside, else such an edge a clip plane made (that
+        part was clipped away), else the point is inside the clipped triangle, on another piece's side of a
+        seam (``across``: the piece that covers it, -1 if none does: snapping turned a thin
+        piece over, leaving a gap), or the piece is that turned piece."""
+        setup, names = self.setup, self.names
+        if np.asarray(setup.area2)[piece] == 0:
+            return dict(reason="zero_area")
+        lo, hi = self.ranges[piece]
+        rows = np.searchsorted(self.family, np.arange(lo, hi))
+        refused, value = self.refused[rows, s], self.value[rows, s]  # (n, 3)
+        for kind in (INPUT_EDGE, CLIP_EDGE):
+            hit = np.argwhere(refused & (names.kind[lo:hi] == kind))
+            if len(hit):  # the edge the point is farthest outside (robust to snapping)
+                i, k = max(hit.tolist(), key=lambda ik: _outside(setup, lo + ik[0], ik[1],
+                                                                   value[ik[0], ik[1]]))  # fmt: skip
+                return _refusal(setup, names, lo + i, k, value[i, k], kind)
+        cover = np.flatnonzero(self.covered[rows, s]) + lo
+        across = int(cover[0]) if len(cover) else -1
+        own = np.flatnonzero(refused[piece - lo])  # seams: the other edges let the point in
+        if len(own):
+            k = int(own[0])
+            return _refusal(setup, names, piece, k, value[piece - lo, k], SEAM) | dict(
+                across=across
+            )
+        if names.turned[piece]:  # on its side of every edge, yet the turned piece refused it
+            return dict(reason="turned_over", across=across)
+        return {}  # covered after all (never, for a record without a fragment)
+
+
+def _outside(setup, piece, k, e) -> float:
+    """How far (px) outside edge ``k`` of ``piece`` a point with edge value ``e`` lies."""
     a, b = setup.p[piece, k], setup.p[piece, (k + 1) % 3]
     length = float(np.hypot(float(b[0] - a[0]), float(b[1] - a[1])))
-    perm = setup.perm[piece]
-    edge = (int(perm[k]), int(perm[(k + 1) % 3]))
-    if length == 0:
-        return edge, 0.0
-    return edge, max(0.0, -float(e) / length / float(setup.unit))
+    return max(0.0, -float(e) / length / float(setup.unit)) if length else 0.0
+
+
+def _refusal(setup, names, piece, k, e, kind) -> dict:
+    """The record fields for edge ``k`` of ``piece`` refusing a point where its value is
+    ``e`` (units²): the edge's name and how far outside it the point lies (px)."""
+    outside = _outside(setup, piece, k, e)
+    if kind == SEAM:
+        reason = "seam"
+    elif kind == CLIP_EDGE:
+        reason = "clipped_away"
+    else:
+        reason = "top_left" if e == 0 else "outside_edge"
+    return dict(reason=reason, edge=names.name(piece, k), outside=outside)
 
 
 def _single_sample(frame, dbg, row, col) -> list[HistoryRecord]:
@@ -280,32 +366,31 @@ def _single_sample(frame, dbg, row, col) -> list[HistoryRecord]:
     setup = _setup(dbg, trace.window)
     pts = _points(setup, None, row, col)
     pieces = _candidates(setup, pts, frags.tri[at])
-    covered, failed, value = _edge_test(setup, pieces, pts)
+    misses = _Misses(dbg, setup, pieces, pts)
     fragment_of = dict(zip(frags.tri[at].tolist(), at.tolist()))
     rejected = None if trace.hiz is None else trace.hiz.fragment_rejected
-    values = _values(frags, at, dbg)
+    values = _values(frags, at if rejected is None else at[~rejected[at]], dbg)
     records = []
-    for i, piece in enumerate(pieces.tolist()):
+    for piece in pieces.tolist():
         base = dict(triangle=int(dbg.clipped.parent[piece]), piece=piece, sample=0)
         f = fragment_of.get(piece)
         if trace.culled[piece]:
             records.append(HistoryRecord(**base, outcome="culled", depth=np.nan,
                                          depth_before=np.nan, depth_after=np.nan))  # fmt: skip
         elif f is None:
-            k = int(failed[i, 0]) if failed[i, 0] >= 0 else 0
-            edge, outside = _miss(setup, piece, k, value[i, 0])
+            why = misses.why(piece, 0)
             records.append(HistoryRecord(**base, outcome="not_covered", depth=np.nan,
                                          depth_before=np.nan, depth_after=np.nan,
-                                         edge=edge, outside=outside))  # fmt: skip
+                                         **why))  # fmt: skip
         else:
             if rejected is not None and rejected[f]:
-                outcome = "hi_z"
+                outcome = "hi_z"  # rejected before interpolation: no value
             else:
                 outcome = "passed" if trace.fragment_passed[f] else "failed_depth"
             records.append(HistoryRecord(**base, outcome=outcome,
                                          depth=float(trace.fragment_depth[f]),
                                          depth_before=np.nan, depth_after=np.nan,
-                                         value=values[f]))  # fmt: skip
+                                         value=values.get(f, ())))  # fmt: skip
     return records
 
 
@@ -316,7 +401,11 @@ def _values(frags, at, dbg) -> dict:
     a = dbg.inputs
     visible = Visibility(np.zeros(len(at)), np.zeros(len(at), np.int64), a.depth_test,
                          np.arange(len(at)), at)  # fmt: skip
-    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, frozenset())
+    # The render's own evaluation, with what it forced: "perspective" divides every row (a
+    # value depends on its fragment alone, so forcing "attributes", which evaluates every
+    # fragment of the frame, would give the same values here at the cost of the frame's).
+    forced = a.forced - {"attributes"}
+    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, forced)
     return {int(f): tuple(float(v) for v in values[i]) for i, f in enumerate(at)}
 
 
@@ -329,7 +418,8 @@ def _multisampled(frame, dbg, row, col) -> list[HistoryRecord]:
     units = offsets_in_units(dbg.offsets, setup)
     pts = _points(setup, units, row, col)
     pieces = _candidates(setup, pts, np.zeros(0, np.int64))
-    covered, failed, value = _edge_test(setup, pieces, pts)
+    misses = _Misses(dbg, setup, pieces, pts)
+    covered = misses.covered[np.searchsorted(misses.family, pieces)]
     if "planes" not in dbg.cache:
         dbg.cache["planes"] = depth_planes(weight_source(window[:, :, :2], setup, False), window)
     planes = dbg.cache["planes"]
@@ -351,10 +441,9 @@ def _multisampled(frame, dbg, row, col) -> list[HistoryRecord]:
                 rec = HistoryRecord(**base, sample=s, outcome="culled", depth=np.nan,
                                     depth_before=np.nan, depth_after=np.nan)  # fmt: skip
             elif not covered[i, s]:
-                edge, outside = _miss(setup, piece, int(failed[i, s]), value[i, s])
+                why = misses.why(piece, s)
                 rec = HistoryRecord(**base, sample=s, outcome="not_covered", depth=np.nan,
-                                    depth_before=np.nan, depth_after=np.nan, edge=edge,
-                                    outside=outside)  # fmt: skip
+                                    depth_before=np.nan, depth_after=np.nan, **why)  # fmt: skip
             else:  # the depth test is replayed in _replay_buffer
                 rec = HistoryRecord(**base, sample=s, outcome="covered", depth=float(depth[i, s]),
                                     depth_before=np.nan, depth_after=np.nan)  # fmt: skip
@@ -458,7 +547,7 @@ def history_table(h: PixelHistory) -> str:
         if r.outcome == "passed":
             outcome += " (shown)" if r.shown else f" (hidden by {r.hidden_by})"
         if r.outcome == "not_covered":
-            why = f"outside edge {r.edge[0]}->{r.edge[1]} by {r.outside:.4g} px"
+            why = reason_text(r)
         elif r.value:
             why = "(" + ", ".join(f"{v:.4g}" for v in r.value) + ")"
         else:
@@ -494,6 +583,24 @@ def colour_lines(h: PixelHistory) -> list[str]:
 
 def _rgba(c) -> str:
     return "(" + ", ".join(f"{v:.4g}" for v in c) + ")"
+
+
+def reason_text(r: HistoryRecord) -> str:
+    """Why a "not_covered" record's point is not covered, in words (the table's column)."""
+    if r.reason == "zero_area":
+        return "zero area: its snapped corners are collinear, it covers nothing"
+    if r.reason == "top_left":
+        return f"on {r.edge}, which is neither a top nor a left edge (top-left rule)"
+    if r.reason == "clipped_away":
+        return f"beyond the {r.edge} clip edge by {r.outside:.4g} px: that part was clipped away"
+    covers = f"piece {r.across} of the same triangle covers it" if r.across >= 0 else ""
+    if r.reason == "seam":
+        covers = covers or "no piece of the triangle covers it (snapping turned a thin piece over)"
+        return f"across the clipping seam {r.edge[5:]} by {r.outside:.4g} px: {covers}"
+    if r.reason == "turned_over":
+        covers = covers or "no piece of the triangle covers it"
+        return f"snapping turned this thin piece over (its corners run the other way): {covers}"
+    return f"outside {r.edge} by {r.outside:.4g} px"
 
 
 def _num(x: float) -> str:

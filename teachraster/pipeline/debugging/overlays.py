@@ -18,10 +18,12 @@ returns that as an (H, W) array, 0 (never NaN) where nothing arrives:
     launched there that were helpers: each triangle that shades a pixel of a quad launches
     all four lanes, so a triangle shading one pixel of a quad wastes 3 of 4. "Shades" is
     early-z's rule: the fragments that passed the depth test on arrival (with MSAA, pixels
-    where one of the triangle's samples passed).
+    where one of the triangle's samples passed). The pieces clipping made of one input
+    triangle count as that one triangle.
 ``"triangle_size"``
     Pixels per triangle: the number of pixels the visible triangle covers (with MSAA,
-    pixels where it covers a sample), over its whole area, hidden parts included.
+    pixels where it covers a sample), over its whole area, hidden parts included; a pixel
+    two pieces of a clipped triangle share counts once.
 ``"hi_z"``
     Fragments per pixel that Hi-Z rejected in the in-order GPU replay
     (:mod:`teachraster.pipeline.hierarchical_z`): one per rejected block over the pixel. 0
@@ -80,9 +82,9 @@ def overlay(frame, kind: str) -> np.ndarray:
     elif kind == "quad_overshading":
         return quad_overshading(work, width, height)
     elif kind == "triangle_size":
-        size = np.bincount(work.triangle, minlength=len(trace.clip_status))
+        size = triangle_sizes(work, len(trace.clip_status), n_pix)
         ids = frame.triangle_id
-        return np.where(ids >= 0, size[np.maximum(ids, 0)], 0).astype(np.int64)
+        return np.where(ids >= 0, size[np.maximum(ids, 0)] if len(size) else 0, 0).astype(np.int64)
     else:  # hi_z
         out = np.zeros(n_pix)
         if work.rejected is not None:
@@ -182,10 +184,39 @@ def _sample_work(trace, dbg) -> Work:
     return Work(pixel, piece, triangle, samples, passed_samples, None, pixel // a.width)
 
 
+def triangle_sizes(work: Work, n: int, n_pix: int) -> np.ndarray:
+    """(n,) pixels each input triangle covers (a sample of, with MSAA): the pieces clipping
+    made of one triangle are one triangle, so a pixel two pieces share counts once."""
+    triangle = distinct_pairs(work, np.ones(len(work.pixel), dtype=bool), n_pix)[0]
+    return np.bincount(triangle, minlength=n)
+
+
+def distinct_pairs(work: Work, keep: np.ndarray, n_pix: int):
+    """The (input triangle, pixel) pairs of the ``keep`` entries, each once, in drawing
+    order: (triangle, pixel, row) arrays. Only MSAA entries of a triangle that clipping cut
+    into pieces can repeat a pair (with one sample every centre is in one piece), so only
+    those are sorted."""
+    triangle, pixel, row = work.triangle[keep], work.pixel[keep], work.row[keep]
+    if work.single or len(pixel) == 0:
+        return triangle, pixel, row
+    piece = work.piece[keep]
+    starts = np.flatnonzero(np.r_[True, triangle[1:] != triangle[:-1]])  # drawing order
+    split = np.minimum.reduceat(piece, starts) != np.maximum.reduceat(piece, starts)
+    if not split.any():
+        return triangle, pixel, row
+    cut = np.flatnonzero(np.repeat(split, np.diff(np.r_[starts, len(piece)])))
+    key = triangle[cut].astype(np.int64) * n_pix + pixel[cut]
+    order = np.argsort(key, kind="stable")
+    again = np.zeros(len(pixel), dtype=bool)  # a pair an earlier piece already had
+    again[cut[order[1:][key[order[1:]] == key[order[:-1]]]]] = True
+    return triangle[~again], pixel[~again], row[~again]
+
+
 def quad_overshading(work: Work, width: int, height: int) -> np.ndarray:
     """(H, W) fraction of helper lanes among the lanes launched in each pixel's 2×2 quad."""
-    shaded = work.passed_samples > 0
-    pixel, piece, row = work.pixel[shaded], work.piece[shaded], work.row[shaded]
+    # per input triangle: the pieces clipping made of one triangle launch their quads as
+    # one triangle, and a pixel is one lane whichever pieces cover its samples
+    piece, pixel, row = distinct_pairs(work, work.passed_samples > 0, width * height)
     qw, qh = -(-width // 2), -(-height // 2)
     # (row // 2) * qw + col // 2, with col = pixel - row * width
     quad = (row >> 1) * qw + ((pixel - row * width) >> 1)

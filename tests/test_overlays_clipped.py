@@ -1,0 +1,153 @@
+"""Overlays on empty frames and on clipped triangles, and the FrameInspector's frame size
+(issue 28).
+
+The pieces clipping makes of one triangle are one triangle: "triangle_size" counts a pixel
+two pieces share once and "quad_overshading" launches one quad per triangle, checked
+against references built here from ``tr.rasterize`` of each piece (the 2-D fill, not the
+renderer's batch) and from the pixel histories; every overlay of a frame where nothing
+arrives is zeros, at 1 and 4 samples.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_render import clip_from_window
+
+import teachraster as tr
+from teachraster.pipeline.debugging.overlays import KINDS
+
+W, H = 24, 18
+
+
+def covered_pixels(frame, samples):
+    """(N, H, W) bool: input triangle n covers a sample of the pixel, from ``tr.rasterize``
+    of each of its pieces (after clipping), OR-ed."""
+    t = frame.trace
+    out = np.zeros((len(t.clip_status), H, W), dtype=bool)
+    for piece, v in enumerate(t.window):
+        if t.culled[piece]:
+            continue
+        fill = tr.rasterize(tr.Triangle(v[:, :2]), W, H, samples=samples)
+        cov = fill.coverage if samples == 1 else fill.sample_coverage.any(axis=2)
+        out[t.parent[piece]] |= cov
+    return out
+
+
+def shaded_pixels(frame):
+    """(N, H, W) bool: triangle n passed the depth test at a sample of the pixel on arrival,
+    from the pixel histories."""
+    out = np.zeros((len(frame.trace.clip_status), H, W), dtype=bool)
+    for row in range(H):
+        for col in range(W):
+            for r in frame.history(row, col):
+                out[r.triangle, row, col] |= r.outcome == "passed"
+    return out
+
+
+def quad_reference(shaded):
+    """(H, W) helper share per quad: 4 lanes per triangle shading a pixel of the quad."""
+    out = np.zeros((H, W))
+    for qr in range(0, H, 2):
+        for qc in range(0, W, 2):
+            block = shaded[:, qr : qr + 2, qc : qc + 2]
+            launched = 4 * int(block.any(axis=(1, 2)).sum())
+            if launched:
+                out[qr : qr + 2, qc : qc + 2] = 1 - block.sum() / launched
+    return out
+
+
+def near_clipped(rng, n):
+    xy = rng.uniform(-4, 28, (n, 3, 2))
+    return clip_from_window(xy, rng.uniform(-0.9, 0.9, (n, 3)), rng.uniform(0.4, 3, (n, 3)), W, H)
+
+
+@pytest.mark.parametrize("samples", [1, 4])
+def test_clipped_triangles_are_one_triangle_in_the_overlays(rng, samples):
+    split = 0
+    for _ in range(4):
+        clip = near_clipped(rng, 3)
+        frame = tr.render(clip, W, H, trace=True, samples=samples)
+        pieces = np.bincount(frame.trace.parent, minlength=len(clip))
+        split += int((pieces > 1).sum())
+        sizes = covered_pixels(frame, samples).sum(axis=(1, 2))
+        ids = frame.triangle_id
+        expected = np.where(ids >= 0, sizes[np.maximum(ids, 0)], 0)
+        np.testing.assert_array_equal(frame.overlay("triangle_size"), expected)
+        np.testing.assert_allclose(frame.overlay("quad_overshading"),
+                                   quad_reference(shaded_pixels(frame)), atol=1e-12)  # fmt: skip
+    assert split >= 3  # the scenes do clip triangles into pieces
+
+
+def test_the_issue_case_seam_pixels_count_once_at_4x():
+    """One near-clipped triangle at 4x: its size is the pixels it covers a sample of, the
+    same at 1x and 4x whether or not clipping cut it (the same triangle, unclipped)."""
+    xy = np.array([[2.0, 3.0], [21.0, 5.0], [9.0, 16.0]])
+    cut = clip_from_window(xy[None], [[0.5, 0.5, -0.8]], [[1.0, 1.5, 2.0]], W, H)
+    whole = clip_from_window(xy[None], [[0.5, 0.5, 0.6]], [[1.0, 1.5, 2.0]], W, H)
+    for samples in (1, 4):
+        a = tr.render(cut, W, H, trace=True, samples=samples)
+        assert len(a.trace.window) == 2  # two pieces with a seam across the image
+        size = int(a.coverage.sum())
+        assert (a.overlay("triangle_size")[a.coverage] == size).all()
+        b = tr.render(whole, W, H, trace=True, samples=samples)
+        assert int(b.overlay("triangle_size").max()) == int(b.coverage.sum())
+
+
+def empty_frames():
+    behind = np.array([[[0, 0, 0.5, -1.0], [1, 0, 0.5, -1.0], [0, 1, 0.5, -1.0]]])
+    front = clip_from_window([[[1, 1], [1, 9], [12, 1]]], 0.5, 1.0, W, H)  # culled as front
+    return {
+        "no triangles": (np.zeros((0, 3, 4)), {}),
+        "clipped away whole": (behind, {}),
+        "culled": (front, {"cull": "front"}),
+        "zero area": (clip_from_window([[[1, 1], [5, 5], [9, 9]]], 0.5, 1.0, W, H), {}),
+        "off screen": (clip_from_window([[[-9, -9], [-5, -9], [-9, -5]]], 0.5, 1.0, W, H), {}),
+        "depth test off": (np.zeros((0, 3, 4)), {"depth_test": False}),
+    }
+
+
+@pytest.mark.parametrize("samples", [1, 4])
+@pytest.mark.parametrize("case", list(empty_frames()))
+def test_every_overlay_of_an_empty_frame_is_zeros(case, samples):
+    clip, kw = empty_frames()[case]
+    frame = tr.render(clip, W, H, trace=True, samples=samples, **kw)
+    for kind in KINDS:
+        out = frame.overlay(kind)
+        assert out.shape == (H, W) and not out.any(), (case, kind)
+
+
+def test_overlays_of_an_empty_frame_plot():
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_overlay
+
+    frame = tr.render(np.zeros((0, 3, 4)), W, H, trace=True)
+    for kind in KINDS:
+        fig, ax = plt.subplots()
+        assert plot_overlay(ax, frame, kind).image is not None
+        plt.close(fig)
+
+
+# -- the inspector keeps its frame's size ---------------------------------------------------
+def test_frame_inspector_view_changes_keep_the_frame_axes():
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    # a tiny frame and no PNG per change: each change still redraws the view and its colour
+    # bar (what took the room), at a fifth of the cost
+    w = FrameInspector("intersecting_triangles", 2, 2, backend="image")
+    drawn = w._refresh_frame
+    w._refresh_frame = lambda: None
+    try:
+        position = w.ax.get_position().bounds  # the image view, before any colour bar
+        n_axes = len(w.fig.axes)
+        views = [*KINDS, "image"]
+        for i in range(200):
+            w.view.value = views[i % len(views)]
+            assert w.ax.get_position().bounds == position, (i, w.view.value)
+            assert len(w.fig.axes) == n_axes, (i, w.view.value)
+        drawn()  # still draws (it failed with LinAlgError after 164 changes)
+    finally:
+        w.close()
