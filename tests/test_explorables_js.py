@@ -10,6 +10,7 @@ test, small grids.
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from explorables_node import call_js
 
 import teachraster as tr
@@ -115,3 +116,148 @@ def test_edge_labels_name_the_given_edges():
             pair = {k, (k + 1) % 3}
             j = next(m for m in range(3) if {int(s.perm[m]), int(s.perm[(m + 1) % 3])} == pair)
             assert (js[k]["bias"] == 0) == bool(s.top_left[j])
+
+
+CRACKS = ("raster_rules", "explore_cracks")
+
+
+def test_naive_span_fills_as_lesson_01s():
+    from teachraster.study.naive_spans import naive_span_fill
+
+    rng = np.random.default_rng(10)
+    tris = np.concatenate([rng.integers(0, 30, (60, 3, 2)) + 0.5, rng.uniform(-2, 32, (30, 3, 2))])
+    tris[0] = [[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]]  # lesson 01's triangle
+    tris[1] = [[0.5, 19.5], [1.5, 107.5], [84.5, 103.5]]  # and its 4b (float crossings off)
+    calls = [("spanFill", [t.tolist(), 30, 120, stepped]) for t in tris for stepped in (False, True)]
+    got = iter(call_js(RULES, calls))
+    for t in tris:
+        for stepped in (False, True):
+            want = naive_span_fill(t, 30, 120, stepped=stepped)
+            assert np.array_equal(np.array(next(got), bool).reshape(120, 30), want)
+
+
+def test_cracks_and_double_draws_as_the_reference():
+    from teachraster.study.naive_spans import shared_edge_faults
+
+    pairs = call_js(CRACKS, [("rolls", [7, 150, 12, 12])])[0]
+    calls = [("faults", [a, b, 12, 12, m]) for a, b in pairs for m in ("crossing", "dda", "integer")]
+    got = iter(call_js(CRACKS, calls))
+    seen = {"crossing": 0, "dda": 0, "integer": 0}
+    for a, b in pairs:
+        assert tr.edge_function(a[0], a[1], a[2]) * tr.edge_function(a[0], a[1], b[2]) < 0
+        for m in ("crossing", "dda", "integer"):
+            js, want = next(got), shared_edge_faults(a, b, 12, 12, m)
+            assert js["cracks"] == want["cracks"].tolist()
+            assert js["doubles"] == want["doubles"].tolist()
+            assert js["wrong"] == want["wrong"]
+            seen[m] += bool(js["cracks"] or js["doubles"] or any(js["wrong"]))
+    assert seen["integer"] == 0 and seen["dda"] > 0  # the float DDA does fail on these
+
+
+def test_tally_counts_every_pair_as_the_reference():
+    from teachraster.study.naive_spans import shared_edge_faults
+
+    pairs = call_js(CRACKS, [("rolls", [11, 40, 12, 12])])[0]
+    js = call_js(CRACKS, [("tallyOver", [pairs, 12, 12])])[0]
+    for m in ("crossing", "dda", "integer"):
+        found = [shared_edge_faults(a, b, 12, 12, m) for a, b in pairs]
+        assert js[m]["pairs"] == 40 and js[m]["triangles"] == 80
+        assert js[m]["cracks"] == sum(len(f["cracks"]) for f in found)
+        assert js[m]["doubles"] == sum(len(f["doubles"]) for f in found)
+        assert js[m]["faulty"] == sum(bool(len(f["cracks"]) or len(f["doubles"])) for f in found)
+        assert js[m]["wrongTriangles"] == sum((w > 0) for f in found for w in f["wrong"])
+
+
+DEPTH = ("explore_depth",)
+
+
+def test_stored_depth_values_and_their_neighbours_as_quantize():
+    from teachraster.pipeline.visibility.depth import quantize, reversed_depth, window_depth
+
+    rng = np.random.default_rng(12)
+    calls, cases = [], []
+    for near, far in [(0.1, 1000.0), (1.0, 1000.0), (0.01, 50.0)]:
+        zs = np.concatenate([np.geomspace(near, far, 40), rng.uniform(near, far, 20), [near, far]])
+        for fmt in ("unorm16", "unorm24", "float32", "reversed"):
+            for z in zs:
+                calls.append(("neighbours", [float(z), near, far, fmt]))
+                cases.append((float(z), near, far, fmt))
+    got = call_js(DEPTH, calls)
+    for (z, near, far, fmt), js in zip(cases, got, strict=True):
+        if fmt == "reversed":
+            value = quantize(reversed_depth(z, near, far), "float32")
+            v32 = np.float32(value)  # larger is nearer
+            farther = float(np.nextafter(v32, np.float32(0)))
+            nearer = float(np.nextafter(v32, np.float32(2)))
+        else:
+            value = quantize(window_depth(z, near, far), fmt)
+            if fmt == "float32":
+                v32 = np.float32(value)
+                farther = float(np.nextafter(v32, np.float32(2)))
+                nearer = float(np.nextafter(v32, np.float32(0)))
+            else:
+                scale = 2 ** (16 if fmt == "unorm16" else 24) - 1
+                k = np.rint(value * scale)
+                farther, nearer = (k + 1) / scale, max(k - 1, 0) / scale
+        assert js["value"] == float(value), (z, near, far, fmt)
+        assert (js["farther"], js["nearer"]) == (farther, nearer), (z, near, far, fmt)
+        # the z each value stands for maps back onto that value (a float value within two
+        # steps: the inverse mapping rounds too)
+        for key, d in (("z", "value"), ("zFarther", "farther")):
+            if np.isfinite(js[key]) and js[key] <= far:
+                mapped = (reversed_depth(js[key], near, far) if fmt == "reversed"
+                          else window_depth(js[key], near, far))  # fmt: skip
+                back = quantize(mapped, "float32" if fmt == "reversed" else fmt)
+                if fmt.startswith("unorm"):
+                    assert back == js[d]
+                else:
+                    ulps = abs(int(np.float32(back).view(np.uint32))
+                               - int(np.float32(js[d]).view(np.uint32)))  # fmt: skip
+                    assert ulps <= 2, (z, near, far, fmt, key)
+
+
+def test_depth_steps_match_depth_resolution():
+    from teachraster.pipeline.visibility.depth import depth_resolution
+
+    zs = [0.5, 2.0, 30.0, 500.0]
+    calls = [("neighbours", [z, 0.1, 1000.0, fmt]) for fmt in ("unorm16", "unorm24", "reversed")
+             for z in zs]  # fmt: skip
+    got = iter(call_js(DEPTH, calls))
+    for fmt, mapping in (("unorm16", "perspective"), ("unorm24", "perspective"),
+                         ("float32", "reversed")):  # fmt: skip
+        want = depth_resolution(zs, 0.1, 1000.0, fmt, mapping=mapping)
+        for z, w in zip(zs, want, strict=True):
+            js = next(got)
+            step = js["zFarther"] - js["z"]
+            assert step == pytest.approx(w, rel=0.05), (fmt, z)  # first order vs exact
+
+
+def test_values_counted_and_listed_as_numpy_counts_them():
+    from teachraster.pipeline.visibility.depth import window_depth
+
+    near, far = 0.1, 1000.0
+    scale = 2**16 - 1
+    stored = np.arange(scale + 1) / scale
+    ranges = [(0.1, 0.2), (1.0, 1.5), (200.0, 230.0), (900.0, 1000.0)]
+    calls = [("countBetween", [a, b, near, far, "unorm16"]) for a, b in ranges]
+    calls += [("valuesIn", [a, b, near, far, "unorm16", 10**6]) for a, b in ranges]
+    got = call_js(DEPTH, calls)
+    for (a, b), count, zs in zip(ranges, got[:4], got[4:], strict=True):
+        da, db = window_depth([a, b], near, far)
+        inside = stored[(stored >= da) & (stored < db)]
+        assert abs(count - len(inside)) <= 1  # boundaries: d * scale rounds
+        assert abs(len(zs) - len(inside)) <= 1
+        assert np.all(np.diff(zs) > 0)
+        assert a * (1 - 1e-9) <= zs[0] and zs[-1] <= b * (1 + 1e-9)  # the inverse rounds
+    # float32 and reverse-Z: counts of floats by their bits
+    for fmt in ("float32", "reversed"):
+        (count,) = call_js(DEPTH, [("countBetween", [200.0, 230.0, near, far, fmt])])
+        d = window_depth([200.0, 230.0], near, far) if fmt == "float32" else None
+        if d is None:
+            from teachraster.pipeline.visibility.depth import reversed_depth
+
+            lo, hi = np.float32(reversed_depth(230.0, near, far)), np.float32(reversed_depth(200.0, near, far))
+        else:
+            lo, hi = np.float32(d[0]), np.float32(d[1])
+        bits = int(np.array(hi).view(np.uint32)) - int(np.array(lo).view(np.uint32))
+        assert abs(count - bits) <= 1

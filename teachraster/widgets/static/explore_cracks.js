@@ -78,6 +78,11 @@ export function tallied(tally, pair, W, H) {
   return out;
 }
 
+// the tally over a list of pairs, from nothing
+export function tallyOver(pairs, W, H) {
+  return pairs.reduce((t, pair) => tallied(t, pair, W, H), emptyTally());
+}
+
 const pct = (k, n) => (n ? `${((100 * k) / n).toFixed(1)} %` : "–");
 
 export function tallyTable(tally) {

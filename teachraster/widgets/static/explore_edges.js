@@ -25,6 +25,8 @@ export function edgeScene(xy, width, height, bits = SUBPIXEL_BITS) {
     for (let c = 0; c < width; c++) {
       const centre = centreUnits(A, r, c);
       if (edgeValue(p, q, centre) !== 0) continue;
+      const within = [0, 1].every((k) => Math.min(p[k], q[k]) <= centre[k] && centre[k] <= Math.max(p[k], q[k]));
+      if (!within) continue; // on the line beyond the edge's ends
       const i = r * width + c;
       const owner = covA[i] && covB[i] ? "both" : covA[i] ? "A" : covB[i] ? "B" : "none";
       shared.push({ row: r, col: c, owner });
@@ -65,12 +67,13 @@ function mount(el, data, host) {
   addCss("tr-edges-css", EDGES_CSS);
   const W = data.width;
   const H = data.height;
-  let state = { vertices: data.vertices, chosen: "A", planes: false, snap: 0.25,
+  let state = { vertices: data.vertices, chosen: "A", planes: false, snap: 0.25, tint: "none",
     ...host.state() };
   const root = frame(el, "Edge functions, live",
     "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
     "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
-    "their edges' colours. A centre exactly on the shared edge v2–v3 is ringed in the " +
+    "their edges' colours; tint a half-plane to see where its E keeps one sign. A centre " +
+    "exactly on the shared edge v2–v3 is ringed in the " +
     "colour of the triangle that owns it.");
   const cell = Math.max(22, Math.min(40, Math.floor(Math.min(600 / W, 520 / H))));
   const m = { left: 30, top: 26 };
@@ -96,8 +99,12 @@ function mount(el, data, host) {
   }, Boolean(state.snap));
   const [view3d, ctx3] = makeCanvas(560, 400, "the three edge functions as planes over the grid");
   view3d.style.display = "none";
+  const tints = ["none", "E12", "E23", "E31", "all"].map((t) => button(
+    t === "none" ? "no half-plane" : t === "all" ? "all three" : `${t}'s`, (e) => tint(t, e),
+    state.tint === t));
   root.append(element("div", { class: "tr-x-row" }, [chooseA, chooseB, planes, snapBtn]),
-    canvas, readout, table, view3d);
+    element("div", { class: "tr-x-row" }, [element("span", { text: "tint the half-plane:" }),
+      ...tints]), canvas, readout, table, view3d);
   const cam = camera3d({ centre: [W / 2, H / 2, 0], scale: Math.min(380 / W, 300 / H),
     at: [280, 210] });
   let scene = null;
@@ -113,6 +120,14 @@ function mount(el, data, host) {
     paint3d.request();
   }
 
+  function tint(which, e) {
+    state.tint = which;
+    tints.forEach((b, k) => b.setAttribute("aria-pressed",
+      String(["none", "E12", "E23", "E31", "all"][k] === which)));
+    host.setState({ tint: which });
+    paint.request(e);
+  }
+
   function recompute() {
     scene = edgeScene(state.vertices, W, H, data.bits);
   }
@@ -122,7 +137,7 @@ function mount(el, data, host) {
     ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
     drawCells(ctx, scene, W, H, cell, m, data.colors);
     const chosen = state.chosen === "A" ? scene.A : scene.B;
-    drawHalfPlanes(ctx, chosen, W, H, toPx, cell);
+    drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
     drawGrid(ctx, W, H, cell, m, data.colors);
     drawSigns(ctx, chosen, W, H, cell, m);
     drawShared(ctx, scene, cell, m, data.colors);
@@ -210,8 +225,8 @@ function drawCells(ctx, scene, W, H, cell, m, colors) {
 
 // each edge's half-plane on the triangle's side (E > 0 for a clockwise triangle, E < 0 for a
 // counter-clockwise one), tinted in its colour and clipped to the grid
-function drawHalfPlanes(ctx, setup, W, H, toPx, cell) {
-  if (setup.area2 === 0) return;
+function drawHalfPlanes(ctx, setup, W, H, toPx, cell, which) {
+  if (setup.area2 === 0 || which === "none") return;
   const u = setup.unit;
   const far = 4 * (W + H);
   ctx.save();
@@ -221,6 +236,7 @@ function drawHalfPlanes(ctx, setup, W, H, toPx, cell) {
   ctx.clip();
   const given = setup.given;
   for (let k = 0; k < 3; k++) {
+    if (which !== "all" && which !== ["E12", "E23", "E31"][k]) continue;
     const a = given[k].map((t) => t / u);
     const b = given[(k + 1) % 3].map((t) => t / u);
     const d = [b[0] - a[0], b[1] - a[1]];
@@ -235,7 +251,7 @@ function drawHalfPlanes(ctx, setup, W, H, toPx, cell) {
     ctx.beginPath();
     pts.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
     ctx.closePath();
-    ctx.globalAlpha = 0.1;
+    ctx.globalAlpha = which === "all" ? 0.12 : 0.22;
     ctx.fillStyle = EDGE_HUES[k];
     ctx.fill();
   }
@@ -364,7 +380,8 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
     const out = [mid[0] - centroid[0], mid[1] - centroid[1]];
     const len = Math.hypot(out[0], out[1]) || 1;
     const at = [mid[0] + (out[0] / len) * 22, mid[1] + (out[1] / len) * 22];
-    const text = `${e.kind}, bias ${e.bias}`;
+    const name = state.chosen === "A" ? `${e.name}: ` : "";
+    const text = `${name}${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const w = ctx.measureText(text).width;
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - w / 2 - 3, at[1] - 11, w + 6, 16);
