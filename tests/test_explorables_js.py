@@ -261,3 +261,55 @@ def test_values_counted_and_listed_as_numpy_counts_them():
             lo, hi = np.float32(d[0]), np.float32(d[1])
         bits = int(np.array(hi).view(np.uint32)) - int(np.array(lo).view(np.uint32))
         assert abs(count - bits) <= 1
+
+
+LINES = ("raster_rules", "explore_lines")
+
+
+def test_diamond_pixels_as_the_engines_on_ties():
+    from teachraster.core.line_rules import diamond
+    from teachraster.core.snapping import units_per_pixel
+
+    rng = np.random.default_rng(13)
+    # end points on centres, diamond corners, pixel corners and quarter pixels: ties galore
+    ends = np.concatenate([rng.integers(0, 24, (150, 2, 2)) / 2.0,
+                           rng.integers(0, 48, (100, 2, 2)) / 4.0,
+                           rng.uniform(0, 12, (50, 2, 2))])  # fmt: skip
+    ends[0] = [[0.5, 0.5], [4.5, 2.5]]  # the engine's docstring: column 1 is a tie
+    calls = [("diamondSteps", [e[0].tolist(), e[1].tolist(), 12, 10]) for e in ends]
+    got = call_js(LINES, calls)
+    unit = units_per_pixel(8)
+    ties = 0
+    for e, js in zip(ends, got, strict=True):
+        want = tr.rasterize_line(e[0], e[1], 12, 10).coverage
+        lit = np.zeros((10, 12), bool)
+        states = {}
+        for s in js["steps"]:
+            for c in s["cands"]:
+                lit[c["row"], c["col"]] |= c["state"] == 1
+                states[(s["major"], c["row"], c["col"])] = c["state"]
+                ties += c["tie"] and c["state"] != 0
+        assert np.array_equal(lit, want), e.tolist()
+        steps = diamond(tuple(js["a"]), tuple(js["b"]), unit, 12, 10)
+        engine = {(int(steps.major[s]), int(r), int(c)): int(st)
+                  for s, r, c, st in zip(steps.step, steps.rows, steps.cols, steps.state,
+                                         strict=True)}  # fmt: skip
+        assert states == engine
+    assert ties > 20  # the inputs do exercise GL's perturbation
+
+
+def test_step_caption_says_what_the_trace_says():
+    walk = call_js(LINES, [("diamondSteps", [[0.5, 0.5], [4.5, 2.5], 5, 3])])[0]
+    captions = call_js(LINES, [("stepCaption", [walk, k]) for k in range(len(walk["steps"]))])
+    trace = tr.rasterize_line((0.5, 0.5), (4.5, 2.5), 5, 3, trace=True).trace
+    assert "tie" in captions[1].lower() and "(row 1, col 1)" in captions[1]
+    assert "ends inside the diamond of (row 2, col 4)" in captions[-1]
+    rows, cols = trace.ends_inside()
+    assert list(zip(rows.tolist(), cols.tolist(), strict=True)) == [(2, 4)]
+    # each work step of the trace names the same pixels lit as the page's caption
+    first = len(trace) - trace.n_work  # after the set-up steps (snap, axis)
+    assert len(captions) == trace.n_work
+    for k, caption in enumerate(captions):
+        lit = trace.lit_at(first + k)
+        for r, c in zip(*np.nonzero(lit), strict=True):
+            assert f"(row {r}, col {c})" in caption

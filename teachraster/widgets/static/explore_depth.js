@@ -318,7 +318,7 @@ function drawLegend(ctx, g, W) {
     ctx.fillStyle = densityColour(10 ** k);
     ctx.fillRect(x0 + k * 42, 4, 40, 12);
     ctx.fillStyle = "#111";
-    ctx.fillText(k ? `10^${k}` : "1", x0 + k * 42 + 4, 28);
+    ctx.fillText(k ? `10${"⁰¹²³⁴⁵⁶"[k]}` : "1", x0 + k * 42 + 4, 28);
   }
 }
 
@@ -369,8 +369,9 @@ export function depthTable(z, n, f) {
   const rows = FORMATS.map(([fmtName, name]) => {
     const nb = neighbours(z, n, f, fmtName);
     const step = nb.zFarther - nb.z;
-    const beyond = countBetween(Math.max(z, n), f, n, f, fmtName);
-    const all = countBetween(n, f, n, f, fmtName);
+    // [z, far) and the value at far itself
+    const beyond = countBetween(Math.max(z, n), f, n, f, fmtName) + 1;
+    const all = countBetween(n, f, n, f, fmtName) + 1;
     return `<tr><td>${name}</td><td>${nb.value.toPrecision(9)}</td><td>${fmt(step, 3)}</td>` +
       `<td>${beyond.toLocaleString()} of ${all.toLocaleString()} (${(100 * beyond / all).toPrecision(3)} %)</td></tr>`;
   });

@@ -6,7 +6,8 @@
 // centres exactly on the shared edge marked with the triangle that owns them. "3-D" shows
 // each E as a plane over the grid, cutting z = 0 along its edge.
 
-const EDGE_HUES = ["#CC79A7", "#E69F00", "#009E73"]; // E12, E23, E31 (Okabe-Ito)
+// E12, E23, E31 (Okabe-Ito; blue and orange are the triangles A and B)
+const EDGE_HUES = ["#CC79A7", "#009E73", "#D55E00"];
 const SIGN_COLOURS = { "+": "#0072B2", "−": "#D55E00", "0": "#000000" };
 
 // The picture's numbers for vertices `xy` (four, px): both set-ups, their coverage, the
@@ -83,6 +84,10 @@ function mount(el, data, host) {
   const toGrid = ([px, py]) => [(px - m.left) / cell, (py - m.top) / cell];
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
+  const key = element("div", { html: "Fill: <b style='color:#3a8fc4'>A</b>, " +
+    "<b style='color:#c98a1c'>B</b>, grey where they overlap (drawn twice). Ring on a centre of " +
+    "the shared edge: <b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> " +
+    "owns it, grey: neither (a shared vertex, left to a third triangle)." });
   const chooseA = button("signs of A (v1 v2 v3)", () => choose("A"), true);
   const chooseB = button("signs of B (v3 v2 v4)", () => choose("B"), false);
   const planes = button("3-D: E as planes", () => {
@@ -217,7 +222,7 @@ function drawCells(ctx, scene, W, H, cell, m, colors) {
       const a = scene.covA[i];
       const b = scene.covB[i];
       if (!a && !b) continue;
-      ctx.fillStyle = a && b ? OKABE.vermillion : a ? "#9fd3f3" : "#f3d79c";
+      ctx.fillStyle = a && b ? "#b0b0b0" : a ? "#9fd3f3" : "#f3d79c";
       ctx.fillRect(m.left + c * cell, m.top + r * cell, cell, cell);
     }
   }
@@ -306,7 +311,7 @@ function drawShared(ctx, scene, cell, m, colors) {
     const cy = m.top + (row + 0.5) * cell;
     ctx.lineWidth = 3;
     ctx.strokeStyle = owner === "A" ? OKABE.blue : owner === "B" ? OKABE.orange
-      : owner === "both" ? OKABE.vermillion : "#777";
+      : owner === "both" ? "#000" : "#777";
     ctx.beginPath();
     ctx.arc(cx, cy, cell * 0.42, 0, 2 * Math.PI);
     ctx.stroke();
@@ -398,7 +403,7 @@ export function edgeTable(scene) {
     if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
     const cells = edgeLabels(s, names).map((e, k) =>
       `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${e.name}</b> ${e.kind}, ` +
-      `bias ${e.bias}</td>`).join("");
+      `bias ${e.bias < 0 ? "−1" : "0"}</td>`).join("");
     const wind = s.originalArea2 > 0 ? "clockwise on screen" : "counter-clockwise on screen";
     return `<tr><td><b>${name}</b>, ${wind}</td>${cells}</tr>`;
   });
