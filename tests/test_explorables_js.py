@@ -313,3 +313,57 @@ def test_step_caption_says_what_the_trace_says():
         lit = trace.lit_at(first + k)
         for r, c in zip(*np.nonzero(lit), strict=True):
             assert f"(row {r}, col {c})" in caption
+
+
+FOOTPRINT = ("explore_footprint",)
+
+
+def test_footprint_level_and_probes_as_the_engine():
+    from teachraster.pipeline.texturing.texture_filters import (
+        linear_levels,
+        mip_level,
+        nearest_level,
+    )
+    from teachraster.plotting.footprint import footprint
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    data = floor_scene(32, 24, 80.0, 1)
+    pixels = [i for i, uv in enumerate(data["uv"]) if uv is not None]
+    calls = [("footprintOf", [data["uv"][i], data["ddx"][i], data["ddy"][i], 64, 64, data["q"]])
+             for i in pixels]  # fmt: skip
+    got = call_js(FOOTPRINT, calls)
+    levels = set()
+    for i, js in zip(pixels, got, strict=True):
+        uv, dx, dy = (np.array(data[k][i]) for k in ("uv", "ddx", "ddy"))
+        lam = float(mip_level(dx[None], dy[None], (64, 64))[0])
+        assert js["lam"] == pytest.approx(lam, abs=1e-12)
+        assert js["nearest"] == int(nearest_level(np.array([lam]), data["q"])[0])
+        first, second, t = linear_levels(np.array([lam]), data["q"])
+        assert js["linear"][:2] == [int(first[0]), int(second[0])]
+        assert js["linear"][2] == pytest.approx(float(t[0]), abs=1e-12)
+        fp = footprint(uv, dx, dy, (64, 64))
+        assert js["probes"] == fp.probes and js["rho"] == pytest.approx(fp.rho, rel=1e-15)
+        assert np.allclose(js["probeCentres"], fp.probe_centres, rtol=0, atol=1e-9)
+        levels.add(js["nearest"])
+    assert len(levels) >= 3  # near and far pixels read different levels
+
+
+def test_pixels_reading_a_texel_point_as_footprint_contains():
+    from teachraster.plotting.footprint import footprint_contains, trilinear_reads
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    data = floor_scene(24, 18, 78.0, 2)
+    covered = np.array([uv is not None for uv in data["uv"]]).reshape(18, 24)
+    fill = lambda k: np.array([v if v is not None else [np.nan, np.nan] for v in data[k]])  # noqa: E731
+    uv, dx, dy = fill("uv"), fill("ddx"), fill("ddy")
+    rng = np.random.default_rng(14)
+    points = [(float(uv[i, 0] * 64), float(uv[i, 1] * 64))
+              for i in rng.choice(np.flatnonzero(covered.ravel()), 12)]  # fmt: skip
+    points += rng.uniform(0, 512, (8, 2)).tolist()
+    for how, reference in (("ellipse", footprint_contains), ("trilinear", trilinear_reads)):
+        got = call_js(FOOTPRINT, [("pixelsReading", [data, list(p), how]) for p in points])
+        for p, js in zip(points, got, strict=True):
+            want = reference(uv, dx, dy, (64, 64), p).reshape(18, 24) & covered
+            assert sorted(map(tuple, js)) == sorted(map(tuple, np.argwhere(want).tolist()))
+        assert sum(len(js) for js in got) >= len(points) // 2
+    assert any(len(js) > 1 for js in got)  # trilinear: pixels share the texels they fetch

@@ -237,8 +237,25 @@ export function slider(label, { min, max, step, value, format = (v) => String(v)
 
 // -- the host: where the state lives ------------------------------------------------------------
 // In a notebook the model keeps the state (the kernel hears of it at each release); offline
-// the page keeps it. `picture(canvas)` sends the kernel the picture the stand-in keeps: a
-// saved notebook reopened without a kernel shows it.
+// the page keeps it. `picture(...canvases)` sends the kernel the picture the stand-in keeps
+// (the canvases side by side, at their CSS size): a saved notebook reopened without a kernel
+// shows it.
+export function composite(canvases) {
+  const w = canvases.reduce((s, c) => s + c.logical.w, 0) + 8 * (canvases.length - 1);
+  const h = Math.max(...canvases.map((c) => c.logical.h));
+  const out = document.createElement("canvas");
+  [out.width, out.height] = [w, h];
+  const ctx = out.getContext("2d");
+  ctx.fillStyle = "#fff";
+  ctx.fillRect(0, 0, w, h);
+  let x = 0;
+  for (const c of canvases) {
+    ctx.drawImage(c, x, 0, c.logical.w, c.logical.h);
+    x += c.logical.w + 8;
+  }
+  return out;
+}
+
 function modelHost(model) {
   let timer = null;
   return {
@@ -249,11 +266,11 @@ function modelHost(model) {
       model.save_changes();
     },
     send: (msg) => model.send(msg),
-    picture(canvas) {
+    picture(...canvases) {
       clearTimeout(timer);
       timer = setTimeout(() => {
         try {
-          model.send({ type: "picture", png: canvas.toDataURL("image/png") });
+          model.send({ type: "picture", png: composite(canvases).toDataURL("image/png") });
         } catch (_e) {
           // a canvas the page may not read back (never ours): no picture, no harm
         }
