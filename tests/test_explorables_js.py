@@ -367,3 +367,40 @@ def test_pixels_reading_a_texel_point_as_footprint_contains():
             assert sorted(map(tuple, js)) == sorted(map(tuple, np.argwhere(want).tolist()))
         assert sum(len(js) for js in got) >= len(points) // 2
     assert any(len(js) > 1 for js in got)  # trilinear: pixels share the texels they fetch
+
+
+def test_attribute_surfaces_as_the_engine():
+    from teachraster.core.interpolation import perspective_weights
+
+    xy = np.array([[2.0, 2.0], [14.0, 4.0], [5.0, 14.0]])
+    rng = np.random.default_rng(15)
+    lam = rng.dirichlet([1, 1, 1], 30)
+    points = lam @ xy
+    for w in ([1.0, 1.0, 1.0], [1.0, 2.0, 6.0]):
+        f = [0.2, 1.0, 0.0]
+        got = call_js(("raster_rules", "view3d", "explore_attributes"),
+                      [("surfaceValues", [xy.tolist(), w, f, p.tolist()]) for p in points])  # fmt: skip
+        want_lam = tr.barycentric(xy, points)
+        mu = perspective_weights(want_lam, np.array(w), extrapolate=True)
+        for k, js in enumerate(got):
+            assert np.allclose(js["lam"], want_lam[k], rtol=0, atol=1e-13)
+            assert js["correct"] == pytest.approx(float(mu[k] @ f), abs=1e-13)
+            assert js["affine"] == pytest.approx(float(want_lam[k] @ f), abs=1e-13)
+            assert js["inv"] == pytest.approx(float(want_lam[k] @ (1 / np.array(w))), abs=1e-13)
+
+
+def test_eye_ray_t_of_q_and_the_peak_for_ratio_2():
+    from teachraster.plotting.projection import Segment
+
+    seg = Segment(x0=-1.0, z0=1.5, x1=2.0, z1=3.0)  # depth ratio 2
+    qs = np.linspace(0, 1, 41)
+    got = call_js(("explore_projection",), [("worldParameter", [float(q), 1.5, 3.0]) for q in qs]
+                  + [("peakGap", [1.5, 3.0]), ("peakGap", [1.0, 5.0])])  # fmt: skip
+    assert np.allclose(got[:41], seg.world_parameter(qs), rtol=0, atol=1e-15)
+    peak = got[41]
+    assert peak["gap"] == pytest.approx(3 - 2 * np.sqrt(2), abs=1e-15)
+    assert peak["formula"] == pytest.approx(3 - 2 * np.sqrt(2), abs=1e-15)
+    dense = np.linspace(0, 1, 200001)
+    assert peak["gap"] >= (dense - Segment(0, 1.0, 1, 2.0).world_parameter(dense)).max() - 1e-12
+    other = got[42]
+    assert other["gap"] == pytest.approx(other["formula"], abs=1e-14)

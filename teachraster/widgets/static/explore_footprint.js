@@ -293,19 +293,19 @@ function drawTexture(ctx, texImage, data, v, T, fromTex) {
   ctx.fillText(`texels ${fmt(v.cx - v.half, 4)}…${fmt(v.cx + v.half, 4)} across`, 6, T - 8);
 }
 
-// the texels the trilinear filter fetches, per level
+// the texels the trilinear filter fetches: level ⌊λ⌋ in purple, ⌊λ⌋ + 1 in green
 function drawTaps(ctx, taps, v, fromTex) {
+  const first = Math.min(...taps.map((t) => t[3]));
+  ctx.save();
+  ctx.setLineDash([7, 4]);
+  ctx.lineWidth = 2.5;
   for (const [x, y, s, level] of taps) {
     const [x0, y0] = fromTex(v, [x, y]);
     const [x1, y1] = fromTex(v, [x + s, y + s]);
-    ctx.fillStyle = LEVEL_COLOURS[level % LEVEL_COLOURS.length];
-    ctx.globalAlpha = 0.18;
-    ctx.fillRect(x0, y0, x1 - x0, y1 - y0);
-    ctx.globalAlpha = 1;
-    ctx.strokeStyle = LEVEL_COLOURS[level % LEVEL_COLOURS.length];
-    ctx.lineWidth = 1.5;
+    ctx.strokeStyle = level === first ? OKABE.purple : OKABE.green;
     ctx.strokeRect(x0, y0, x1 - x0, y1 - y0);
   }
+  ctx.restore();
 }
 
 function drawFootprint(ctx, fp, v, fromTex, main) {
@@ -369,7 +369,8 @@ export function footprintText(state, fp, reading) {
       `λ = log₂ ρ = ${fmt(fp.lam, 3)}: GL's nearest mip level is <b>${fp.nearest}</b> ` +
       `(its texel grid in blue); trilinear blends levels ${l0} and ${l1}` +
       `${t > 0 ? ` (weight ${fmt(t, 2)} on ${l1})` : " (one level)"} over the orange square of ` +
-      `side ρ, fetching the 2 × 2 texels shaded per level; anisotropic takes ${fp.probes} probe${fp.probes > 1 ? "s" : ""} at ` +
+      `side ρ, fetching 2 × 2 texels of each (dashed: <span style="color:#CC79A7">level ` +
+      `${l0}</span>${t > 0 ? `, <span style="color:#009E73">level ${l1}</span>` : ""}); anisotropic takes ${fp.probes} probe${fp.probes > 1 ? "s" : ""} at ` +
       `λ = ${fmt(fp.probeLam, 3)}.`);
   } else if (state.pixel) {
     parts.push(`Pixel (row ${state.pixel[0]}, col ${state.pixel[1]}) is not on the floor.`);
