@@ -404,3 +404,35 @@ def test_eye_ray_t_of_q_and_the_peak_for_ratio_2():
     assert peak["gap"] >= (dense - Segment(0, 1.0, 1, 2.0).world_parameter(dense)).max() - 1e-12
     other = got[42]
     assert other["gap"] == pytest.approx(other["formula"], abs=1e-14)
+
+
+def test_pipeline_map_shows_the_engines_tour_triangle():
+    from teachraster.pipeline.geometry.viewport import to_window
+    from teachraster.widgets.pipeline_map import TOUR_XY, tour_clip, tour_stages
+
+    data = tour_stages()
+    # the clip coordinates are a projection of lesson 00's triangle: the viewport gives it back
+    assert np.allclose(to_window(np.array(data["clip"]), 16, 16)[:, :2], TOUR_XY, atol=1e-12)
+    assert np.allclose(data["clip"], tour_clip(TOUR_XY, [1, 2, 4], 16, 16, 0.5, 10.0))
+    tour = tr.rasterize(tr.Triangle(TOUR_XY, w=[1, 2, 4], attrs={"u": [0, 1, 0]}), 16, 16)
+    assert np.array_equal(np.array(data["coverage"], bool).reshape(16, 16), tour.coverage)
+    assert data["fragments"] == int(tour.coverage.sum()) == data["passed"]
+    u = np.array([np.nan if v is None else v for v in data["attr"]]).reshape(16, 16)
+    # tr.render sets its weights up from the unsnapped vertices, tr.rasterize from the
+    # snapped ones (1/256 px apart at most)
+    assert np.allclose(u, tour.attrs["u"], equal_nan=True, atol=1e-3)
+    # the snapped triangle's area (it differs from the unsnapped one in the 4th digit)
+    assert data["area"] == setup_edges(np.array(TOUR_XY), 8).original_area2 / 512**2 / 2
+    keys = ["vertex", "assembly", "clip", "divide", "viewport", "setup", "rasterize",
+            "fragment", "depth", "blend"]  # fmt: skip
+    got = call_js(("explore_pipeline",), [("stageHtml", [data, k]) for k in keys]
+                  + [("stageImage", [data, k]) for k in keys])  # fmt: skip
+    html, images = dict(zip(keys, got[:10], strict=True)), dict(zip(keys, got[10:], strict=True))
+    assert all(html.values())  # every stage says something
+    for k in range(3):  # the numbers each stage shows are the engine's
+        assert f"{data['clip'][k][3]:g}" in html["vertex"]
+        assert str(float(f"{data['window'][k][0]:.5g}")).rstrip("0").rstrip(".") in html["viewport"]
+    assert f"{data['fragments']} pixel centres" in html["rasterize"]
+    assert "only allowed when the shader neither discards nor writes depth" in html["depth"]
+    assert sum(c != [245, 245, 245] for c in images["rasterize"]) == data["fragments"]
+    assert images["vertex"] is None and images["blend"] == data["colour"]

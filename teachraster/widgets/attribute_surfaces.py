@@ -16,6 +16,8 @@ the values are those of :func:`teachraster.barycentric` and
 
 from __future__ import annotations
 
+import numpy as np
+
 from ..core.validate import as_finite, as_float, as_size
 from .explorable import Explorable, esm_source
 
@@ -66,7 +68,7 @@ class EyeRayExplorer(Explorable):
     Parameters
     ----------
     ends : ((x0, z0), (x1, z1))
-        The segment's ends, in front of the eye (z > 0).
+        The segment's ends, in front of the eye (0.3 <= z <= 4.4, |x| <= 3.4: the picture).
     q : float
         The screen parameter shown first.
 
@@ -83,8 +85,9 @@ class EyeRayExplorer(Explorable):
 
     def __init__(self, ends=((-1.0, 1.5), (2.0, 3.0)), q: float = 0.5) -> None:
         ends = as_finite("ends", ends, (2, 2))
-        if (ends[:, 1] <= 0).any():
-            raise ValueError(f"ends must be in front of the eye (z > 0), got {ends.tolist()}")
+        if not ((ends[:, 1] >= 0.3) & (ends[:, 1] <= 4.4) & (np.abs(ends[:, 0]) <= 3.4)).all():
+            raise ValueError("ends must lie in the picture: 0.3 <= z <= 4.4 (in front of the eye) "
+                             f"and |x| <= 3.4, got {ends.tolist()}")
         q = as_float("q", q)
         if not 0.0 <= q <= 1.0:
             raise ValueError(f"q must lie in [0, 1], got {q}")

@@ -22,6 +22,8 @@ export function peakGap(z0, z1) {
     formula: (Math.sqrt(r) - 1) / (Math.sqrt(r) + 1) };
 }
 
+const ZMAX = 4.4; // the deepest end the picture holds
+
 function mount(el, data, host) {
   let state = { ends: data.ends, q: data.q, ...host.state() };
   const root = frame(el, "Equal steps on the screen, unequal steps in the world",
@@ -39,16 +41,18 @@ function mount(el, data, host) {
   const ratio = () => state.ends[1][1] / state.ends[0][1];
   const rSlider = slider("depth ratio z1/z0", { min: 0.25, max: 8, step: 0.05,
     value: ratio(), format: (v) => v.toFixed(2) }, (v, e) => {
-    // keep z0 and both screen positions: only the depth of the far end changes
+    // keep both screen positions (x = s z): only depths change, z1 = v z0 (z0 made smaller
+    // where z1 would leave the picture)
     const [[x0, z0], [x1, z1]] = state.ends;
-    const s1 = x1 / z1;
-    state.ends = [[x0, z0], [s1 * v * z0, v * z0]];
+    const [s0, s1] = [x0 / z0, x1 / z1];
+    const n0 = Math.min(z0, ZMAX / v);
+    state.ends = [[s0 * n0, n0], [s1 * v * n0, v * n0]];
     paint.request(e);
   });
   rSlider.input.addEventListener("change", () => host.setState({ ends: state.ends }));
   root.append(element("div", { class: "tr-x-row" }, [qSlider, rSlider]), canvas, readout);
   // the world picture: x right, depth z up, in the top 330 px
-  const world = { x0: 60, y0: 310, sx: 70, sz: 38 };
+  const world = { x0: 60, y0: 330, sx: 70, sz: 62 };
   const toPx = ([x, z]) => [world.x0 + 250 + x * world.sx, world.y0 - z * world.sz];
   const fromPx = ([px, py]) => [(px - world.x0 - 250) / world.sx, (world.y0 - py) / world.sz];
   const plot = { x0: 70, y0: 530, w: 520, h: 170 };
@@ -76,7 +80,7 @@ function mount(el, data, host) {
     handles: () => state.ends.map(toPx),
     onDrag(i, px, e) {
       let [x, z] = fromPx(px);
-      z = Math.max(0.3, Math.min(7.5, z));
+      z = Math.max(0.3, Math.min(ZMAX, z));
       x = Math.max(-3.4, Math.min(3.4, x));
       state.ends = state.ends.map((end, k) => (k === i ? [Number(x.toFixed(2)), Number(z.toFixed(2))] : end));
       rSlider.set(Number(ratio().toFixed(2)));
