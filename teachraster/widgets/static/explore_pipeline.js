@@ -5,14 +5,14 @@
 
 export const STAGES = [
   ["vertex", "vertex shader", "04, 05a", "model → clip space"],
-  ["assembly", "primitive assembly", "02", "vertices → triangles"],
-  ["clip", "clipping (guard band)", "05a", "near/far; x, y only beyond the guard band"],
+  ["assembly", "primitive|assembly", "02", "vertices → triangles"],
+  ["clip", "clipping|(guard band)", "05a", "near/far; x, y only beyond the guard band"],
   ["divide", "divide by w", "04, 05a", "clip → NDC"],
   ["viewport", "viewport", "05a, 05b", "NDC → window x, y, depth"],
   ["setup", "triangle set-up", "01, 02, 03", "edges, facing, culling, bounding box"],
-  ["rasterize", "rasterisation", "01 02 03 04 07 08 10 12", "which centres: fragments"],
+  ["rasterize", "rasterisation", "01–04 07 08 10 12", "the pixel centres inside become fragments"],
   ["fragment", "fragment shader", "04, 09", "interpolated attributes → colour"],
-  ["depth", "depth / stencil test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
+  ["depth", "depth / stencil|test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
   ["blend", "blending", "12", "colour → the colour target"],
 ];
 
@@ -125,7 +125,7 @@ function svg(tag, attrs, text) {
 
 // two rows of five boxes; the second row continues from the first
 function layout() {
-  const [bw, bh, gx, gy, x0, y0] = [150, 64, 28, 74, 10, 34];
+  const [bw, bh, gx, gy, x0, y0] = [160, 70, 24, 74, 6, 34];
   return STAGES.map(([key], k) => {
     const r = Math.floor(k / 5);
     const c = k % 5;
@@ -135,7 +135,7 @@ function layout() {
 
 function diagram(onPick) {
   const boxes = layout();
-  const root = svg("svg", { viewBox: "0 0 900 260", width: 900, role: "group",
+  const root = svg("svg", { viewBox: "0 0 900 300", width: 900, role: "group",
     "aria-label": "the pipeline stages; pick one" });
   root.append(svg("defs", {}));
   root.firstChild.innerHTML = '<marker id="tr-arrow" viewBox="0 0 10 10" refX="9" refY="5" ' +
@@ -158,15 +158,17 @@ function diagram(onPick) {
     "font-size": 13, fill: "#333" }, "early-z: only if no discard or depth write"));
   const groups = boxes.map((b, k) => {
     const [, name, lessons] = STAGES[k];
-    const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name,
+    const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name.replace("|", " "),
       "data-stage": b.key });
     const main = b.key === "rasterize";
     g.append(svg("rect", { x: b.x, y: b.y, width: b.w, height: b.h, rx: 8,
       fill: main ? "#d6ecf8" : "#f6f6f6", stroke: main ? "#0072B2" : "#777", "stroke-width": main ? 2.5 : 1.5 }));
-    g.append(svg("text", { x: b.x + b.w / 2, y: b.y + 27, "text-anchor": "middle", "font-size": 15,
-      "font-weight": "bold" }, name));
-    g.append(svg("text", { x: b.x + b.w / 2, y: b.y + 48, "text-anchor": "middle", "font-size": 12,
-      fill: "#555" }, `lesson ${lessons}`));
+    const lines = name.split("|");
+    lines.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
+      y: b.y + (lines.length > 1 ? 22 : 30) + 17 * i, "text-anchor": "middle", "font-size": 15,
+      "font-weight": "bold" }, line)));
+    g.append(svg("text", { x: b.x + b.w / 2, y: b.y + b.h - 9, "text-anchor": "middle",
+      "font-size": 12, fill: "#555" }, `lesson ${lessons}`));
     g.addEventListener("click", (e) => onPick(b.key, e));
     g.addEventListener("keydown", (e) => {
       if (e.key === "Enter" || e.key === " ") {
@@ -200,7 +202,7 @@ function mount(el, data, host) {
     const k = STAGES.findIndex(([key]) => key === state.stage);
     groups.forEach((g, i) => g.querySelector("rect").setAttribute("fill",
       i === k ? "#fde9c8" : STAGES[i][0] === "rasterize" ? "#d6ecf8" : "#f6f6f6"));
-    title.textContent = `${STAGES[k][1]}: ${STAGES[k][3]}`;
+    title.textContent = `${STAGES[k][1].replace("|", " ")}: ${STAGES[k][3]}`;
     text.innerHTML = stageHtml(data, state.stage);
     const img = stageImage(data, state.stage);
     canvas.style.display = img ? "" : "none";
