@@ -128,30 +128,35 @@ def test_naive_span_fills_as_lesson_01s():
     tris = np.concatenate([rng.integers(0, 30, (60, 3, 2)) + 0.5, rng.uniform(-2, 32, (30, 3, 2))])
     tris[0] = [[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]]  # lesson 01's triangle
     tris[1] = [[0.5, 19.5], [1.5, 107.5], [84.5, 103.5]]  # and its 4b (float crossings off)
-    calls = [("spanFill", [t.tolist(), 30, 120, stepped]) for t in tris for stepped in (False, True)]
+    modes = [(stepped, listed) for stepped in (False, True) for listed in (False, True)]
+    calls = [("spanFill", [t.tolist(), 30, 120, *mode]) for t in tris for mode in modes]
     got = iter(call_js(RULES, calls))
     for t in tris:
-        for stepped in (False, True):
-            want = naive_span_fill(t, 30, 120, stepped=stepped)
+        for stepped, listed in modes:
+            want = naive_span_fill(t, 30, 120, stepped=stepped, as_listed=listed)
             assert np.array_equal(np.array(next(got), bool).reshape(120, 30), want)
 
 
 def test_cracks_and_double_draws_as_the_reference():
     from teachraster.study.naive_spans import shared_edge_faults
 
-    pairs = call_js(CRACKS, [("rolls", [7, 150, 12, 12])])[0]
-    calls = [("faults", [a, b, 12, 12, m]) for a, b in pairs for m in ("crossing", "dda", "integer")]
+    pairs = call_js(CRACKS, [("rolls", [7, 150, 16, 16])])[0]
+    ways = [(m, listed) for m in ("crossing", "dda", "integer") for listed in (False, True)]
+    calls = [("faults", [a, b, 16, 16, m, listed]) for a, b in pairs for m, listed in ways]
     got = iter(call_js(CRACKS, calls))
-    seen = {"crossing": 0, "dda": 0, "integer": 0}
+    seen = {way: 0 for way in ways}
     for a, b in pairs:
         assert tr.edge_function(a[0], a[1], a[2]) * tr.edge_function(a[0], a[1], b[2]) < 0
-        for m in ("crossing", "dda", "integer"):
-            js, want = next(got), shared_edge_faults(a, b, 12, 12, m)
-            assert js["cracks"] == want["cracks"].tolist()
-            assert js["doubles"] == want["doubles"].tolist()
+        for m, listed in ways:
+            js, want = next(got), shared_edge_faults(a, b, 16, 16, m, as_listed=listed)
+            for key in ("cracks", "doubles", "swapped"):
+                assert js[key] == want[key].tolist()
             assert js["wrong"] == want["wrong"]
-            seen[m] += bool(js["cracks"] or js["doubles"] or any(js["wrong"]))
-    assert seen["integer"] == 0 and seen["dda"] > 0  # the float DDA does fail on these
+            seen[m, listed] += bool(js["swapped"] or any(js["wrong"]))
+            if not listed:  # evaluated alike, the shared edge never cracks nor doubles
+                assert not js["cracks"] and not js["doubles"]
+    assert seen["integer", False] == seen["integer", True] == 0
+    assert seen["dda", False] > 0  # the float DDA does fail on these
 
 
 def test_tally_counts_every_pair_as_the_reference():
@@ -165,6 +170,8 @@ def test_tally_counts_every_pair_as_the_reference():
         assert js[m]["cracks"] == sum(len(f["cracks"]) for f in found)
         assert js[m]["doubles"] == sum(len(f["doubles"]) for f in found)
         assert js[m]["faulty"] == sum(bool(len(f["cracks"]) or len(f["doubles"])) for f in found)
+        assert js[m]["swapped"] == sum(len(f["swapped"]) for f in found)
+        assert js[m]["swappedPairs"] == sum(bool(len(f["swapped"])) for f in found)
         assert js[m]["wrongTriangles"] == sum((w > 0) for f in found for w in f["wrong"])
 
 

@@ -10,10 +10,11 @@ right as those crossings:
 - ``stepped=True`` walks each edge by ``Δu/Δv`` per raster line (a float DDA), so rounding
   accumulates.
 
-A crossing that should be exactly ``j + 0.5`` can come out a hair to either side, and the
-pixel goes to the wrong triangle: two triangles sharing the edge then both draw it, or neither
-does. :func:`shared_edge_faults` counts those against the engine's integer edge functions.
-The page-side crack explorer (``teachraster.widgets.CrackExplorer``) runs the same fills in
+A crossing that should be exactly ``j + 0.5`` can come out a hair to either side. When the
+two triangles sharing that edge evaluate it alike (as lesson 01's loops do: both from its
+upper end), they agree on the hair: the tie pixel is drawn once, but by the wrong one of the
+two. When they evaluate it differently, both may draw it or neither. :func:`shared_edge_faults`
+counts those against the engine's integer edge functions. The page-side crack explorer (``teachraster.widgets.CrackExplorer``) runs the same fills in
 JavaScript; the tests compare the two exactly.
 """
 
@@ -37,7 +38,8 @@ def _rows(top, bot, height: int) -> list[int]:
     return [i for i in range(height) if top[1] <= i + 0.5 < bot[1]]
 
 
-def naive_span_fill(xy, width: int, height: int, *, stepped: bool = False) -> np.ndarray:
+def naive_span_fill(xy, width: int, height: int, *, stepped: bool = False,
+                    as_listed: bool = False) -> np.ndarray:  # fmt: skip
     """(height, width) bool: lesson 01's float span fill (``stepped``: its float DDA).
 
     Parameters
@@ -47,6 +49,10 @@ def naive_span_fill(xy, width: int, height: int, *, stepped: bool = False) -> np
     width, height : int
     stepped : bool
         Walk each edge by ``Δu/Δv`` per raster line instead of computing each crossing.
+    as_listed : bool
+        Evaluate each edge from the end the triangle lists first (v1 → v2 → v3 → v1)
+        instead of from its upper end: two triangles sharing an edge then evaluate it from
+        opposite ends, and round differently.
 
     Examples
     --------
@@ -55,23 +61,29 @@ def naive_span_fill(xy, width: int, height: int, *, stepped: bool = False) -> np
     """
     v = as_finite("xy", xy, (3, 2))
     width, height = as_size("width", width), as_size("height", height)
-    top, mid, bot = v[np.lexsort((v[:, 0], v[:, 1]))]  # by v, then by u
+    t, m, b = np.lexsort((v[:, 0], v[:, 1]))  # by v, then by u
+    top, mid, bot = v[t], v[m], v[b]
+
+    def edge(i, j):  # the two ends of an edge, in the order they are evaluated from
+        return (v[j], v[i]) if as_listed and (j + 1) % 3 == i else (v[i], v[j])
+
     cover = np.zeros((height, width), dtype=bool)
     rows = _rows(top, bot, height)
     if not rows:
         return cover
     long_is_left = _crossing(top, bot, mid[1]) < mid[0]
-    x_long, step_long = _walker(top, bot, rows[0] + 0.5)
+    long = edge(t, b)
+    x_long, step_long = _walker(*long, rows[0] + 0.5)
     upper = None
     for i in rows:
         y = i + 0.5
-        short = (top, mid) if y < mid[1] else (mid, bot)
+        short = edge(t, m) if y < mid[1] else edge(m, b)
         if stepped:
             if upper is not (y < mid[1]):  # start (or switch to) the short edge of this part
                 upper = y < mid[1]
                 x_short, step_short = _walker(*short, y)
         else:
-            x_long, x_short = _crossing(top, bot, y), _crossing(*short, y)
+            x_long, x_short = _crossing(*long, y), _crossing(*short, y)
         x_left, x_right = (x_long, x_short) if long_is_left else (x_short, x_long)
         first, stop = int(np.ceil(x_left - 0.5)), int(np.ceil(x_right - 0.5))
         cover[i, max(first, 0) : max(min(stop, width), 0)] = True
@@ -90,20 +102,21 @@ def _walker(a, b, v):
 FILLS = ("crossing", "dda", "integer")
 
 
-def fill_by(name: str, xy, width: int, height: int) -> np.ndarray:
+def fill_by(name: str, xy, width: int, height: int, as_listed: bool = False) -> np.ndarray:
     """Coverage of ``xy`` by one of :data:`FILLS` (``integer``: the engine's fill)."""
     if name == "integer":
         return rasterize(Triangle(xy), width, height).coverage
     if name not in FILLS:
         raise ValueError(f"name must be one of {FILLS}, got {name!r}")
-    return naive_span_fill(xy, width, height, stepped=name == "dda")
+    return naive_span_fill(xy, width, height, stepped=name == "dda", as_listed=as_listed)
 
 
-def shared_edge_faults(first, second, width: int, height: int, name: str) -> dict:
+def shared_edge_faults(first, second, width: int, height: int, name: str,
+                       as_listed: bool = False) -> dict:  # fmt: skip
     """Cracks and double draws of two triangles that share their first two vertices' edge.
 
     ``first`` and ``second`` are (3, 2) vertex lists whose edge from vertex 0 to vertex 1 (in
-    either direction) is shared. A *double* is a pixel both fill; a *crack* a pixel whose
+    either direction) is shared; ``as_listed`` as in :func:`naive_span_fill`. A *double* is a pixel both fill; a *crack* a pixel whose
     centre lies exactly on the shared edge's line, inside the pair (the engine gives it to
     one of them), but that neither fills. ``wrong`` counts the pixels where each differs from the
     engine.
@@ -113,8 +126,8 @@ def shared_edge_faults(first, second, width: int, height: int, name: str) -> dic
     dict
         ``cracks``, ``doubles`` (int arrays of (row, col)), ``wrong`` (two ints).
     """
-    a = fill_by(name, first, width, height)
-    b = fill_by(name, second, width, height)
+    a = fill_by(name, first, width, height, as_listed)
+    b = fill_by(name, second, width, height, as_listed)
     exact_a = fill_by("integer", first, width, height)
     exact_b = fill_by("integer", second, width, height)
     # on the edge exactly: integer edge functions on the snapped grid (pixel centres are
@@ -126,5 +139,7 @@ def shared_edge_faults(first, second, width: int, height: int, name: str) -> dic
     on_edge = (q[0] - p[0]) * (rows - p[1]) - (q[1] - p[1]) * (cols - p[0]) == 0
     doubles = a & b
     cracks = on_edge & (exact_a | exact_b) & ~a & ~b
+    swapped = on_edge & (a ^ b) & (a != exact_a)  # drawn once, by the other triangle
     wrong = [int((a != exact_a).sum()), int((b != exact_b).sum())]
-    return {"cracks": np.argwhere(cracks), "doubles": np.argwhere(doubles), "wrong": wrong}
+    return {"cracks": np.argwhere(cracks), "doubles": np.argwhere(doubles),
+            "swapped": np.argwhere(swapped), "wrong": wrong}

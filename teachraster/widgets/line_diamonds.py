@@ -45,7 +45,7 @@ class DiamondExplorer(Explorable):
     noun = "diamond explorer"
     title = "Which pixels a line lights: the diamonds"
 
-    def __init__(self, p0=(1.5, 1.5), p1=(10.5, 5.0), width: int = 12, height: int = 7) -> None:
+    def __init__(self, p0=(1.5, 1.5), p1=(10.4, 4.6), width: int = 12, height: int = 7) -> None:
         width, height = as_size("width", width), as_size("height", height)
         if width > 40 or height > 30:
             raise ValueError(f"width and height must be at most 40 and 30, got {width}x{height}")

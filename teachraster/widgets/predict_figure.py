@@ -59,7 +59,7 @@ import numpy as np
 
 from ..core.validate import as_finite, as_float
 from ..plotting.frames import encode_png, frame_rgba
-from .common import fill_axes, style_context
+from .common import font_scale, style_context
 from .explorable import Explorable, esm_source
 
 
@@ -77,6 +77,17 @@ def _check_draw(draw) -> Callable | None:
     return draw
 
 
+def grid_axes(fig, width: int, height: int, side: float):
+    """Size ``fig`` for a ``width`` x ``height`` pixel grid (longer side ``side`` inches) with
+    room for the row and column labels only, and add its Axes."""
+    s = font_scale()
+    aw, ah = (side, side * height / width) if width >= height else (side * width / height, side)
+    left, top, right, bottom = 0.75 * s, 0.75 * s, 0.15, 0.15
+    fw, fh = left + aw + right, top + ah + bottom
+    fig.set_size_inches(fw, fh)
+    return fig.add_axes((left / fw, bottom / fh, aw / fw, ah / fh))
+
+
 def figure_picture(draw, axes_for, figsize, style) -> dict:
     """Draw a figure once: ``axes_for(fig)`` makes and sets up its Axes, ``draw(ax)`` adds the
     lesson's artists. Returns the PNG (base64), its size in pixels and the transform from
@@ -87,7 +98,7 @@ def figure_picture(draw, axes_for, figsize, style) -> dict:
     with style_context(style):
         fig = Figure(figsize=figsize, dpi=96)
         FigureCanvasAgg(fig)
-        ax = axes_for(fig)
+        ax = axes_for(fig)  # in the style: its fonts size the margins
         if draw is not None:
             draw(ax)
         fig.canvas.draw()
@@ -204,7 +215,7 @@ class PredictPixels(FigurePrediction):
         def axes_for(fig):
             from ..plotting import plot_pixel_centres, plot_pixel_grid
 
-            ax = fill_axes(fig, width, height, side=side, legend=False)
+            ax = grid_axes(fig, width, height, side)
             plot_pixel_grid(ax, width, height)
             if centres:
                 plot_pixel_centres(ax, width, height)

@@ -34,15 +34,16 @@ export function rolls(seed, n, W, H) {
 
 // Cracks, double draws and pixels differing from the integer fill, for one method: as
 // teachraster.study.naive_spans.shared_edge_faults.
-export function faults(first, second, W, H, method) {
-  const a = FILLS[method](first, W, H);
-  const b = FILLS[method](second, W, H);
+export function faults(first, second, W, H, method, asListed = false) {
+  const a = FILLS[method](first, W, H, asListed);
+  const b = FILLS[method](second, W, H, asListed);
   const ea = edgeFunctionFill(first, W, H);
   const eb = edgeFunctionFill(second, W, H);
   const setup = setupTriangle(first);
   const [p, q] = [setup.given[0], setup.given[1]];
   const cracks = [];
   const doubles = [];
+  const swapped = [];
   const wrong = [0, 0];
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
@@ -50,23 +51,25 @@ export function faults(first, second, W, H, method) {
       if (a[i] && b[i]) doubles.push([r, c]);
       const onEdge = edgeValue(p, q, centreUnits(setup, r, c)) === 0;
       if (onEdge && (ea[i] || eb[i]) && !a[i] && !b[i]) cracks.push([r, c]);
+      if (onEdge && a[i] !== b[i] && a[i] !== ea[i]) swapped.push([r, c]);
       wrong[0] += a[i] !== ea[i] ? 1 : 0;
       wrong[1] += b[i] !== eb[i] ? 1 : 0;
     }
   }
-  return { cracks, doubles, wrong, a: Array.from(a), b: Array.from(b) };
+  return { cracks, doubles, swapped, wrong, a: Array.from(a), b: Array.from(b) };
 }
 
 export function emptyTally() {
-  const per = () => ({ pairs: 0, faulty: 0, triangles: 0, wrongTriangles: 0, cracks: 0, doubles: 0 });
+  const per = () => ({ pairs: 0, faulty: 0, triangles: 0, wrongTriangles: 0, cracks: 0,
+    doubles: 0, swapped: 0, swappedPairs: 0 });
   return { crossing: per(), dda: per(), integer: per() };
 }
 
 // add one pair's faults to the running tally (pure: returns a new tally)
-export function tallied(tally, pair, W, H) {
+export function tallied(tally, pair, W, H, asListed = false) {
   const out = JSON.parse(JSON.stringify(tally));
   for (const [m] of METHODS) {
-    const f = faults(pair[0], pair[1], W, H, m);
+    const f = faults(pair[0], pair[1], W, H, m, asListed);
     const t = out[m];
     t.pairs += 1;
     t.triangles += 2;
@@ -74,13 +77,15 @@ export function tallied(tally, pair, W, H) {
     t.wrongTriangles += (f.wrong[0] ? 1 : 0) + (f.wrong[1] ? 1 : 0);
     t.cracks += f.cracks.length;
     t.doubles += f.doubles.length;
+    t.swapped += f.swapped.length;
+    t.swappedPairs += f.swapped.length ? 1 : 0;
   }
   return out;
 }
 
 // the tally over a list of pairs, from nothing
-export function tallyOver(pairs, W, H) {
-  return pairs.reduce((t, pair) => tallied(t, pair, W, H), emptyTally());
+export function tallyOver(pairs, W, H, asListed = false) {
+  return pairs.reduce((t, pair) => tallied(t, pair, W, H, asListed), emptyTally());
 }
 
 const pct = (k, n) => (n ? `${((100 * k) / n).toFixed(1)} %` : "–");
@@ -89,23 +94,26 @@ export function tallyTable(tally) {
   const rows = METHODS.map(([m, name]) => {
     const t = tally[m];
     return `<tr><td>${name}</td><td>${t.faulty} of ${t.pairs} (${pct(t.faulty, t.pairs)})</td>` +
-      `<td>${t.cracks}</td><td>${t.doubles}</td>` +
+      `<td>${t.cracks} / ${t.doubles}</td>` +
+      `<td>${t.swappedPairs} (${pct(t.swappedPairs, t.pairs)}), ${t.swapped} px</td>` +
       `<td>${t.wrongTriangles} of ${t.triangles} (${pct(t.wrongTriangles, t.triangles)})</td></tr>`;
   });
-  return "<table><tr><th>fill</th><th>pairs with a crack or double draw</th><th>cracked px</th>" +
-    `<th>double px</th><th>triangles unlike the integer fill</th></tr>${rows.join("")}</table>`;
+  return "<table><tr><th>fill</th><th>pairs cracked or drawn twice</th><th>cracked / double px</th>" +
+    "<th>pairs with a tie given to the wrong triangle</th><th>triangles unlike the integer fill</th>" +
+    `</tr>${rows.join("")}</table>`;
 }
 
 function mount(el, data, host) {
   const W = data.width;
   const H = data.height;
-  let state = { seed: data.seed, roll: 0, tally: emptyTally(), ...host.state() };
-  const root = frame(el, "Cracks and double draws",
+  let state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false,
+    ...host.state() };
+  const root = frame(el, "Ties on a shared edge: stolen pixels, cracks and double draws",
     "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
-    "panel fills both, A in blue and B in orange: <b style='color:#D55E00'>2</b> marks a " +
-    "pixel drawn twice, <b style='color:#D55E00'>✕</b> a centre on the shared edge that " +
-    "neither draws (a crack), a dashed box a pixel unlike the integer fill. Reroll for a new " +
-    "pair; the tally counts every pair drawn.");
+    "panel fills both, A in blue and B in orange. <b>⇄</b>: a centre on the shared edge drawn " +
+    "by the wrong one of the two; <b style='color:#D55E00'>2</b>: drawn twice; " +
+    "<b style='color:#D55E00'>✕</b>: drawn by neither (a crack); dashed box: unlike the " +
+    "integer fill. Reroll for a new pair; the tally counts every pair drawn.");
   const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
   const gap = 26;
   const m = { left: 8, top: 30 };
@@ -116,22 +124,35 @@ function mount(el, data, host) {
   const table = element("div");
   const reroll = button("Reroll", (e) => roll(1, e));
   const many = button("Roll 1000 more", (e) => roll(1000, e));
+  const listedBtn = button("evaluate each edge from the end its triangle lists first", (e) => {
+    state.asListed = !state.asListed;
+    listedBtn.setAttribute("aria-pressed", String(state.asListed));
+    state.tally = emptyTally();
+    paint.request(e);
+    host.setState({ asListed: state.asListed, tally: state.tally });
+  }, Boolean(state.asListed));
   const reset = button("Reset the tally", (e) => {
     state.tally = emptyTally();
     paint.request(e);
     host.setState({ tally: state.tally });
   });
-  root.append(element("div", { class: "tr-x-row" }, [reroll, many, reset]), canvas, readout, table);
+  root.append(element("div", { class: "tr-x-row" }, [reroll, many, reset, listedBtn]), canvas,
+    readout, table, element("div", { class: "tr-x-sub", html: "Both triangles walk the shared " +
+      "edge from its upper end, as lesson 01's loops do: they round alike, so a tie goes to " +
+      "one of them, sometimes the wrong one, and the edge never cracks. Evaluated from the " +
+      "end each triangle lists first, the two round differently: then (rarely) it can." }));
   let rand = randomStream(state.seed);
   let pair = null;
   for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H); // the pair on show
-  if (!state.roll && !state.tally.integer.pairs) state.tally = tallied(state.tally, pair, W, H);
+  if (!state.roll && !state.tally.integer.pairs) {
+    state.tally = tallied(state.tally, pair, W, H, state.asListed);
+  }
   let hover = null;
 
   function roll(n, e) {
     for (let k = 0; k < n; k++) {
       pair = randomPair(rand, W, H);
-      state.tally = tallied(state.tally, pair, W, H);
+      state.tally = tallied(state.tally, pair, W, H, state.asListed);
     }
     state.roll += n;
     paint.request(e);
@@ -140,7 +161,7 @@ function mount(el, data, host) {
 
   function draw() {
     ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
-    const found = METHODS.map(([meth]) => faults(pair[0], pair[1], W, H, meth));
+    const found = METHODS.map(([meth]) => faults(pair[0], pair[1], W, H, meth, state.asListed));
     const exact = found[2];
     METHODS.forEach(([, name], k) => {
       const x0 = m.left + k * (panelW + gap);
@@ -150,7 +171,7 @@ function mount(el, data, host) {
       ctx.fillText(name, x0, m.top - 16);
     });
     table.innerHTML = tallyTable(state.tally);
-    readout.innerHTML = explainPixel(pair, hover, W, H, found);
+    readout.innerHTML = explainPixel(pair, hover, W, H, found, state.asListed);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);
@@ -216,6 +237,16 @@ function drawPanel(ctx, f, exact, pair, g) {
     ctx.lineTo(x0 + W * cell, y0 + r * cell + 0.5);
   }
   ctx.stroke();
+  // the pixel centres, those exactly on the shared edge larger: where the ties are
+  const setup = setupTriangle(pair[0]);
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const on = edgeValue(setup.given[0], setup.given[1], centreUnits(setup, r, c)) === 0;
+      ctx.fillStyle = on ? "#000" : "#999";
+      const d = on ? 5 : 2;
+      ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
+    }
+  }
   // pixels unlike the integer fill: dashed boxes
   ctx.setLineDash([3, 2]);
   ctx.strokeStyle = "#000";
@@ -247,10 +278,13 @@ function drawPanel(ctx, f, exact, pair, g) {
   ctx.fillStyle = OKABE.vermillion;
   for (const [r, c] of f.doubles) ctx.fillText("2", x0 + (c + 0.5) * cell, y0 + (r + 0.78) * cell);
   for (const [r, c] of f.cracks) ctx.fillText("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+  ctx.fillStyle = "#000";
+  for (const [r, c] of f.swapped) ctx.fillText("⇄", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
   ctx.textAlign = "left";
   ctx.fillStyle = "#111";
   ctx.font = "13px sans-serif";
-  const said = `${f.cracks.length} cracked, ${f.doubles.length} doubled`;
+  const said = `${f.swapped.length} given to the wrong triangle, ${f.cracks.length} cracked, ` +
+    `${f.doubles.length} doubled`;
   ctx.fillText(said, x0, y0 + H * cell + 16);
 }
 
@@ -258,13 +292,13 @@ function drawPanel(ctx, f, exact, pair, g) {
 const full = (x) => x.toPrecision(17).replace(/\.?0+$/, "");
 
 // the spans of the pixel's row, as each fill computed them
-export function explainPixel(pair, at, W, H, found) {
+export function explainPixel(pair, at, W, H, found, asListed = false) {
   if (!at) return "Point at a pixel for its row's span ends in each fill.";
   const { panel, row, col } = at;
   const meth = METHODS[panel][0];
   const ends = (t) => {
     if (meth === "integer") return null;
-    const hit = spanRows(t, H, meth === "dda").find(([i]) => i === row);
+    const hit = spanRows(t, H, meth === "dda", asListed).find(([i]) => i === row);
     return hit ? `${full(hit[1])} … ${full(hit[2])}` : "no span";
   };
   const f = found[panel];

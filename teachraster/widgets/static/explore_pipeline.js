@@ -125,7 +125,7 @@ function svg(tag, attrs, text) {
 
 // two rows of five boxes; the second row continues from the first
 function layout() {
-  const [bw, bh, gx, gy, x0, y0] = [160, 70, 24, 74, 6, 34];
+  const [bw, bh, gx, gy, x0, y0] = [160, 70, 22, 74, 4, 34];
   return STAGES.map(([key], k) => {
     const r = Math.floor(k / 5);
     const c = k % 5;

@@ -107,11 +107,21 @@ export function crossing(a, b, v) {
   return ((v - a[1]) / (b[1] - a[1])) * (b[0] - a[0]) + a[0];
 }
 
+// an edge's ends in the order the triangle lists them (a before b when b follows a)
+function listed(xy, a, b) {
+  const ia = xy.indexOf(a);
+  const ib = xy.indexOf(b);
+  return (ia + 1) % 3 === ib ? [a, b] : [b, a];
+}
+
 // The spans of lesson 01's float span fill: [row, x_left, x_right] for each raster line
 // v_top <= v < v_bot, each crossing computed with the u4 formula or, `stepped`, walked by
-// du/dv per raster line (a float DDA). As teachraster.study.naive_spans.naive_span_fill.
-export function spanRows(xy, height, stepped = false) {
+// du/dv per raster line (a float DDA). Each edge is evaluated from its upper end, or with
+// `asListed` from the end the triangle lists first (then two triangles sharing an edge
+// evaluate it from opposite ends). As teachraster.study.naive_spans.naive_span_fill.
+export function spanRows(xy, height, stepped = false, asListed = false) {
   const [TOP, MID, BOT] = sortedByHeight(xy);
+  const edge = (a, b) => (asListed ? listed(xy, a, b) : [a, b]);
   const rows = [];
   for (let i = 0; i < height; i++) if (TOP[1] <= i + 0.5 && i + 0.5 < BOT[1]) rows.push(i);
   if (!rows.length) return [];
@@ -120,19 +130,20 @@ export function spanRows(xy, height, stepped = false) {
     return [a[0] + (v - a[1]) * step, step];
   };
   const longIsLeft = crossing(TOP, BOT, MID[1]) < MID[0];
-  let [xLong, stepLong] = walker(TOP, BOT, rows[0] + 0.5);
+  const long = edge(TOP, BOT);
+  let [xLong, stepLong] = walker(long[0], long[1], rows[0] + 0.5);
   let [xShort, stepShort, upper] = [0, 0, null];
   const out = [];
   for (const i of rows) {
     const v = i + 0.5;
-    const short = v < MID[1] ? [TOP, MID] : [MID, BOT];
+    const short = v < MID[1] ? edge(TOP, MID) : edge(MID, BOT);
     if (stepped) {
       if (upper !== (v < MID[1])) {
         upper = v < MID[1];
         [xShort, stepShort] = walker(short[0], short[1], v);
       }
     } else {
-      [xLong, xShort] = [crossing(TOP, BOT, v), crossing(short[0], short[1], v)];
+      [xLong, xShort] = [crossing(long[0], long[1], v), crossing(short[0], short[1], v)];
     }
     out.push(longIsLeft ? [i, xLong, xShort] : [i, xShort, xLong]);
     if (stepped) [xLong, xShort] = [xLong + stepLong, xShort + stepShort];
@@ -141,9 +152,9 @@ export function spanRows(xy, height, stepped = false) {
 }
 
 // the pixels of those spans: ceil(x_left - 0.5) <= j < ceil(x_right - 0.5)
-export function spanFill(xy, width, height, stepped = false) {
+export function spanFill(xy, width, height, stepped = false, asListed = false) {
   const cover = new Uint8Array(width * height);
-  for (const [i, xl, xr] of spanRows(xy, height, stepped)) {
+  for (const [i, xl, xr] of spanRows(xy, height, stepped, asListed)) {
     const first = Math.ceil(xl - 0.5);
     const stop = Math.ceil(xr - 0.5);
     for (let j = Math.max(first, 0); j < Math.max(Math.min(stop, width), 0); j++) cover[i * width + j] = 1;
@@ -157,7 +168,7 @@ export function edgeFunctionFill(xy, width, height) {
 }
 
 export const FILLS = {
-  crossing: (xy, w, h) => spanFill(xy, w, h, false),
-  dda: (xy, w, h) => spanFill(xy, w, h, true),
+  crossing: (xy, w, h, asListed) => spanFill(xy, w, h, false, asListed),
+  dda: (xy, w, h, asListed) => spanFill(xy, w, h, true, asListed),
   integer: edgeFunctionFill,
 };
