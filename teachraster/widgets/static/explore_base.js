@@ -129,9 +129,9 @@ export function pointerAt(canvas, e) {
 
 // Draw at the next animation frame, once however often asked (pointer moves coalesce).
 // Each picture painted counts on the canvas (data-frames) and says how long it took and,
-// when an input asked for it, how long after that input it was painted (data-latency-ms):
-// what the benchmarks and browser tests read.
-export function painter(canvas, draw) {
+// when an input asked for it, how long after that input it was painted (data-latency-ms);
+// `handles()` (canvas px) go to data-handles: what the benchmarks and browser tests read.
+export function painter(canvas, draw, handles) {
   let asked = false;
   let since = null;
   const paint = () => {
@@ -142,6 +142,7 @@ export function painter(canvas, draw) {
     canvas.dataset.frames = String(Number(canvas.dataset.frames || 0) + 1);
     canvas.dataset.paintMs = (t1 - t0).toFixed(2);
     if (since !== null) canvas.dataset.latencyMs = (t1 - since).toFixed(1);
+    if (handles) canvas.dataset.handles = JSON.stringify(handles().map((h) => h.map((v) => Math.round(v * 10) / 10)));
     since = null;
   };
   return {

@@ -217,7 +217,7 @@ function mount(el, data, host) {
     readout.innerHTML = depthTable(hover ?? state.z0, n, far);
     host.picture(canvas);
   }
-  const paint = painter(canvas, draw);
+  const paint = painter(canvas, draw, () => [[xOf(state.near), g.top - 12]]);
   pointerInput(canvas, {
     handles: () => [[xOf(state.near), g.top - 12]],
     radius: 16,

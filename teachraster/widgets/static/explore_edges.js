@@ -152,7 +152,7 @@ function mount(el, data, host) {
     readout.innerHTML = describe(scene, hover, state.chosen, W, H);
     host.picture(canvas);
   }
-  const paint = painter(canvas, draw);
+  const paint = painter(canvas, draw, () => state.vertices.map(toPx));
   const paint3d = painter(view3d, () => drawPlanes(ctx3, cam, scene || edgeScene(
     state.vertices, W, H, data.bits), state.chosen, W, H, view3d));
   orbitDrag(view3d, cam, (e) => paint3d.request(e));

@@ -187,7 +187,7 @@ function mount(el, data, host) {
       : "All steps. Pick a step to see its diamonds and what the rule decided there.";
     host.picture(canvas);
   }
-  const paint = painter(canvas, draw);
+  const paint = painter(canvas, draw, () => [toPx(state.p0), toPx(state.p1)]);
 
   function place(i, p) {
     let [x, y] = toGrid(p);

@@ -75,7 +75,7 @@ function mount(el, data, host) {
       `${Math.abs(z1 / z0 - 2) < 1e-9 ? " = 3 − 2√2" : ""}.`;
     host.picture(canvas);
   }
-  const paint = painter(canvas, draw);
+  const paint = painter(canvas, draw, () => state.ends.map(toPx));
   pointerInput(canvas, {
     handles: () => state.ends.map(toPx),
     onDrag(i, px, e) {
