@@ -169,15 +169,16 @@ class Explorable(anywidget.AnyWidget):
         return bundle
 
     def _ipython_display_(self) -> None:
-        from IPython.display import display, publish_display_data
+        from IPython.display import publish_display_data
 
         bundle = self._repr_mimebundle_()
+        data = bundle[0] if isinstance(bundle, tuple) else bundle
         if static_pages():  # `teachraster html`: one output, shown by its offline HTML
-            display(bundle, raw=True)
+            publish_display_data(data)
             return
         # the stand-in in an output of its own, before the widget: what a reopened notebook
         # shows (hidden by FALLBACK_CSS while the widget is live)
         self._standin_id = f"teachraster-standin-{uuid.uuid4().hex}"
         publish_display_data({"text/html": self._standin(), "text/plain": self.title},
                              transient={"display_id": self._standin_id})  # fmt: skip
-        publish_display_data(bundle[0] if isinstance(bundle, tuple) else bundle)
+        publish_display_data(data)

@@ -185,7 +185,7 @@ function mount(el, data, host) {
       paint.request(e);
     },
   });
-  canvas.addEventListener("keydown", (e) => {
+  onKeys(canvas, (e) => {
     if (e.key === "r" || e.key === "Enter" || e.key === " ") {
       e.preventDefault();
       roll(1, e);

@@ -244,7 +244,7 @@ function mount(el, data, host) {
       paint.request(e);
     },
   });
-  canvas.addEventListener("keydown", (e) => {
+  onKeys(canvas, (e) => {
     const k = { "+": 1, "=": 1, "-": -1, "_": -1 }[e.key];
     if (k) {
       e.preventDefault();

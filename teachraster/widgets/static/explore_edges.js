@@ -181,7 +181,7 @@ function mount(el, data, host) {
       paint.request(e);
     },
   });
-  canvas.addEventListener("keydown", (e) => {
+  onKeys(canvas, (e) => {
     if ("1234".includes(e.key) && e.key.length === 1) {
       picked = Number(e.key) - 1;
       return;

@@ -216,7 +216,7 @@ function mount(el, data, host) {
       paint.request(e);
     },
   });
-  screen.addEventListener("keydown", (e) => {
+  onKeys(screen, (e) => {
     const d = { ArrowLeft: [0, -1], ArrowRight: [0, 1], ArrowUp: [-1, 0], ArrowDown: [1, 0] }[e.key];
     if (!d) return;
     e.preventDefault();

@@ -208,7 +208,7 @@ function mount(el, data, host) {
       host.setState({ p0: state.p0, p1: state.p1, step: state.step });
     },
   });
-  canvas.addEventListener("keydown", (e) => {
+  onKeys(canvas, (e) => {
     const d = { ArrowLeft: -1, ArrowRight: 1, ArrowDown: -1, ArrowUp: 1 }[e.key];
     if (!d) return;
     e.preventDefault();

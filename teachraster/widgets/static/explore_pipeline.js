@@ -170,7 +170,7 @@ function diagram(onPick) {
     g.append(svg("text", { x: b.x + b.w / 2, y: b.y + b.h - 9, "text-anchor": "middle",
       "font-size": 12, fill: "#555" }, `lesson ${lessons}`));
     g.addEventListener("click", (e) => onPick(b.key, e));
-    g.addEventListener("keydown", (e) => {
+    onKeys(g, (e) => {
       if (e.key === "Enter" || e.key === " ") {
         e.preventDefault();
         onPick(b.key, e);

@@ -283,7 +283,7 @@ function mountPoint(root, data, host) {
       host.setState({ given: state.given });
     },
   });
-  canvas.addEventListener("keydown", (e) => {
+  onKeys(canvas, (e) => {
     const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key];
     if (!d || state.revealed) return;
     e.preventDefault();
@@ -335,7 +335,7 @@ function mountOrder(root, data, host) {
     order.forEach((item, k) => {
       const chip = element("div", { class: "tr-chip", tabindex: 0, role: "listitem", html: item });
       if (v && v.places) chip.classList.add(v.places[k] ? "right" : "wrong");
-      chip.addEventListener("keydown", (e) => {
+      onKeys(chip, (e) => {
         const d = { ArrowLeft: -1, ArrowUp: -1, ArrowRight: 1, ArrowDown: 1 }[e.key];
         if (!d || state.revealed) return;
         e.preventDefault();

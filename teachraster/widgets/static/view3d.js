@@ -100,7 +100,7 @@ export function orbitDrag(canvas, cam, onChange) {
   const up = () => (last = null);
   canvas.addEventListener("pointerup", up);
   canvas.addEventListener("pointercancel", up);
-  canvas.addEventListener("keydown", (e) => {
+  onKeys(canvas, (e) => {
     const turn = { ArrowLeft: [-0.08, 0], ArrowRight: [0.08, 0], ArrowUp: [0, 0.06],
       ArrowDown: [0, -0.06] }[e.key];
     if (!turn) return;
