@@ -77,21 +77,33 @@ function mount(el, data, host) {
   const cam = camera3d({ centre: [W / 2, H / 2, zScale / 2], scale: 330 / Math.max(W, H),
     at: [320, 250], yaw: -0.5, elevation: 0.45 });
 
-  function draw() {
-    ctx.clearRect(0, 0, 640, 470);
+  // the surfaces and the largest gap depend on w and on what is shown, not on the view:
+  // computed once per change, only projected again while the picture turns
+  let cached = { key: null };
+  function scene() {
+    const key = JSON.stringify([state.w, state.show]);
+    if (cached.key === key) return cached;
     const { xy, f } = data;
     const w = state.w;
     const polys = surfacePieces([[0, 0], [W, 0], [W, H], [0, H]], () => 0, 6,
       { fill: "#eee", alpha: 1, stroke: "#ccc", bias: -1e6 });
     polys.push({ pts: xy.map(([x, y]) => [x, y, 0]), fill: "#bbb", alpha: 0.8, stroke: "#555",
       bias: -1e5 });
-    for (const [key, , colour] of SURFACES) {
-      if (!state.show[key]) continue;
-      polys.push(...surfacePieces(xy, (x, y) => surfaceValues(xy, w, f, [x, y])[key] * zScale,
-        14, { fill: colour, alpha: 0.55, stroke: "rgba(255,255,255,0.25)" }));
+    for (const [name, , colour] of SURFACES) {
+      if (!state.show[name]) continue;
+      polys.push(...surfacePieces(xy, (x, y) => surfaceValues(xy, w, f, [x, y])[name] * zScale,
+        12, { fill: colour, alpha: 0.55, stroke: "rgba(255,255,255,0.25)" }));
     }
+    cached = { key, polys, gap: largestGap(xy, w, f) };
+    return cached;
+  }
+
+  function draw() {
+    ctx.clearRect(0, 0, 640, 470);
+    const { xy, f } = data;
+    const w = state.w;
+    const { polys, gap } = scene();
     drawPolygons(ctx, cam, polys);
-    const gap = largestGap(xy, w, f);
     if (state.show.correct && state.show.affine && gap.gap > 1e-9) {
       const [x, y] = gap.p;
       line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale], OKABE.vermillion, 3);

@@ -184,6 +184,16 @@ export function painter(canvas, draw, handles) {
   };
 }
 
+// Keep the pointer's moves coming to `el` while it is pressed (a pointer that is not a real
+// one, as a test's, has nothing to capture: the drag then goes on without)
+export function capture(el, e) {
+  try {
+    el.setPointerCapture(e.pointerId);
+  } catch (_err) {
+    // no active pointer of that id
+  }
+}
+
 // Pointer handling: press near one of `handles()` (canvas px) to drag it, else a click.
 // onDrag(i, p, e) at each move, onRelease(i) once; onClick(p, e) for a press that moved
 // less than 4 px and held no handle; onHover(p) while nothing is pressed.
@@ -203,7 +213,7 @@ export function pointerInput(canvas, { handles = () => [], radius = 14, onDrag, 
     });
     down = p;
     held = best;
-    canvas.setPointerCapture(e.pointerId);
+    capture(canvas, e);
     e.preventDefault();
     canvas.focus({ preventScroll: true });
     if (onPress) onPress(p, e, held);

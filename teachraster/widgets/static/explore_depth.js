@@ -138,14 +138,35 @@ export function valuesIn(za, zb, n, f, fmt, limit = 400) {
 }
 
 // a sequential colour for log10(count) in [0, 7] (light to dark, viridis-like end points)
-function densityColour(count) {
+function densityRgb(count) {
   const t = Math.min(Math.log10(count) / 7, 1);
   const stops = [[253, 231, 37], [94, 201, 98], [33, 145, 140], [59, 82, 139], [68, 1, 84]];
   const x = t * (stops.length - 1);
   const i = Math.min(Math.floor(x), stops.length - 2);
   const u = x - i;
-  const c = stops[i].map((v, k) => Math.round(v + (stops[i + 1][k] - v) * u));
+  return stops[i].map((v, k) => Math.round(v + (stops[i + 1][k] - v) * u));
+}
+
+function densityColour(count) {
+  const c = densityRgb(count);
   return `rgb(${c[0]},${c[1]},${c[2]})`;
+}
+
+// the four strips for one near plane, as one picture (pw x 4 rows of columns, drawn once and
+// stretched: one putImageData instead of thousands of rectangles)
+function stripsPicture(zmin, far, pw, near) {
+  const img = new ImageData(pw, FORMATS.length);
+  FORMATS.forEach(([fmtName], k) => {
+    const counts = columnCounts(zmin, far, pw, near, far, fmtName);
+    for (let c = 0; c < pw; c++) {
+      const [r, g, b] = counts[c] ? densityRgb(counts[c]) : [255, 255, 255];
+      img.data.set([r, g, b, 255], 4 * (k * pw + c));
+    }
+  });
+  const canvas = document.createElement("canvas");
+  [canvas.width, canvas.height] = [pw, FORMATS.length];
+  canvas.getContext("2d").putImageData(img, 0, 0);
+  return canvas;
 }
 
 function mount(el, data, host) {
@@ -184,17 +205,15 @@ function mount(el, data, host) {
     paint.request(e);
   }
 
+  let strips = { near: null };
   function draw() {
     ctx.clearRect(0, 0, W, Hc);
     const n = state.near;
-    FORMATS.forEach(([fmt, name], k) => {
+    if (strips.near !== n) strips = { near: n, picture: stripsPicture(zmin, far, pw, n) };
+    ctx.imageSmoothingEnabled = false;
+    FORMATS.forEach(([, name], k) => {
       const y = g.top + k * (g.strip + g.gap);
-      const counts = columnCounts(zmin, far, pw, n, far, fmt);
-      for (let c = 0; c < pw; c++) {
-        if (!counts[c]) continue;
-        ctx.fillStyle = densityColour(counts[c]);
-        ctx.fillRect(g.left + c, y, 1, g.strip);
-      }
+      ctx.drawImage(strips.picture, 0, k, pw, 1, g.left, y, pw, g.strip);
       ctx.strokeStyle = "#999";
       ctx.strokeRect(g.left + 0.5, y + 0.5, pw, g.strip);
       ctx.fillStyle = "#111";

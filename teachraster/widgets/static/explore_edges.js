@@ -285,10 +285,30 @@ function drawGrid(ctx, W, H, cell, m, colors) {
   ctx.textAlign = "left";
 }
 
+// A glyph drawn once as a small picture (drawImage is many times cheaper than fillText, and a
+// grid shows hundreds of them at every frame of a drag)
+const SPRITES = new Map();
+function sprite(text, colour, size, dpr) {
+  const key = `${text}|${colour}|${size}|${dpr}`;
+  if (!SPRITES.has(key)) {
+    const c = document.createElement("canvas");
+    [c.width, c.height] = [Math.ceil(size * dpr), Math.ceil(size * 1.3 * dpr)];
+    const x = c.getContext("2d");
+    x.scale(dpr, dpr);
+    x.font = `bold ${size}px monospace`;
+    x.textAlign = "center";
+    x.textBaseline = "middle";
+    x.fillStyle = colour;
+    x.fillText(text, size / 2, size * 0.65);
+    SPRITES.set(key, c);
+  }
+  return SPRITES.get(key);
+}
+
 // three sign glyphs per centre: E12, E23, E31 of the chosen triangle, in their colours
 function drawSigns(ctx, setup, W, H, cell, m) {
-  ctx.font = `bold ${Math.max(10, Math.round(cell * 0.32))}px monospace`;
-  ctx.textAlign = "center";
+  const size = Math.max(10, Math.round(cell * 0.32));
+  const dpr = ctx.canvas.logical ? ctx.canvas.logical.dpr : 1;
   const gap = cell * 0.26;
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
@@ -297,12 +317,11 @@ function drawSigns(ctx, setup, W, H, cell, m) {
       const cy = m.top + (r + 0.5) * cell + cell * 0.12;
       for (let k = 0; k < 3; k++) {
         const s = signOf(e[k]);
-        ctx.fillStyle = s === "0" ? "#000" : EDGE_HUES[k];
-        ctx.fillText(s, cx + (k - 1) * gap, cy);
+        const img = sprite(s, s === "0" ? "#000" : EDGE_HUES[k], size, dpr);
+        ctx.drawImage(img, cx + (k - 1) * gap - size / 2, cy - size * 0.9, size, size * 1.3);
       }
     }
   }
-  ctx.textAlign = "left";
 }
 
 function drawShared(ctx, scene, cell, m, colors) {

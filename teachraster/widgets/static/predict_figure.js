@@ -184,7 +184,7 @@ function mountPixels(root, data, host) {
     if (!rc) return;
     painting = !has(...rc);
     setCell(rc, painting);
-    canvas.setPointerCapture(e.pointerId);
+    capture(canvas, e);
     paint.request(e);
   });
   canvas.addEventListener("pointermove", (e) => {
@@ -358,7 +358,7 @@ function mountOrder(root, data, host) {
     if (state.revealed) return;
     e.preventDefault();
     const target = e.currentTarget;
-    target.setPointerCapture(e.pointerId);
+    capture(target, e);
     const onUp = (ev) => {
       target.removeEventListener("pointerup", onUp);
       const rects = [...chips.children].map((c) => c.getBoundingClientRect());

@@ -86,7 +86,7 @@ export function orbitDrag(canvas, cam, onChange) {
   canvas.addEventListener("pointerdown", (e) => {
     if (e.button !== 0) return;
     last = [e.clientX, e.clientY];
-    canvas.setPointerCapture(e.pointerId);
+    capture(canvas, e);
     e.preventDefault();
     canvas.focus({ preventScroll: true });
   });
