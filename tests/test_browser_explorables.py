@@ -18,7 +18,6 @@ import json
 import subprocess
 import sys
 import urllib.request
-from pathlib import Path
 
 import pytest
 from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
@@ -264,7 +263,10 @@ def test_predictions_wait_for_an_answer_then_show_it(lesson):
 
 
 def test_layout_fits_a_small_screen(lesson):
-    for size in ({"width": 1024, "height": 768}, {"width": 933, "height": 600}):  # 1400x900 at 150 %
+    for size in (
+        {"width": 1024, "height": 768},
+        {"width": 933, "height": 600},
+    ):  # 1400x900 at 150 %
         lesson.set_viewport_size(size)
         lesson.wait_for_timeout(500)
         wide = lesson.evaluate("""() => [...document.querySelectorAll('.jp-OutputArea-output .tr-x')]

@@ -263,7 +263,10 @@ def test_values_counted_and_listed_as_numpy_counts_them():
         if d is None:
             from teachraster.pipeline.visibility.depth import reversed_depth
 
-            lo, hi = np.float32(reversed_depth(230.0, near, far)), np.float32(reversed_depth(200.0, near, far))
+            lo, hi = (
+                np.float32(reversed_depth(230.0, near, far)),
+                np.float32(reversed_depth(200.0, near, far)),
+            )
         else:
             lo, hi = np.float32(d[0]), np.float32(d[1])
         bits = int(np.array(hi).view(np.uint32)) - int(np.array(lo).view(np.uint32))

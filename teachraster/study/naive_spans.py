@@ -141,5 +141,9 @@ def shared_edge_faults(first, second, width: int, height: int, name: str,
     cracks = on_edge & (exact_a | exact_b) & ~a & ~b
     swapped = on_edge & (a ^ b) & (a != exact_a)  # drawn once, by the other triangle
     wrong = [int((a != exact_a).sum()), int((b != exact_b).sum())]
-    return {"cracks": np.argwhere(cracks), "doubles": np.argwhere(doubles),
-            "swapped": np.argwhere(swapped), "wrong": wrong}
+    return {
+        "cracks": np.argwhere(cracks),
+        "doubles": np.argwhere(doubles),
+        "swapped": np.argwhere(swapped),
+        "wrong": wrong,
+    }

@@ -89,8 +89,8 @@ from .inspector import PixelInspector
 from .line_diamonds import DiamondExplorer
 from .line_player import LinePlayer
 from .live_slider import LiveSlider
-from .plane_explorer import PlaneExplorer
 from .pipeline_map import PipelineMap
+from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .predict import Predict
 from .predict_figure import PredictOrder, PredictPixels, PredictPoint

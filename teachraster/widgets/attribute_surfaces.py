@@ -86,8 +86,10 @@ class EyeRayExplorer(Explorable):
     def __init__(self, ends=((-1.0, 1.5), (2.0, 3.0)), q: float = 0.5) -> None:
         ends = as_finite("ends", ends, (2, 2))
         if not ((ends[:, 1] >= 0.3) & (ends[:, 1] <= 4.4) & (np.abs(ends[:, 0]) <= 3.4)).all():
-            raise ValueError("ends must lie in the picture: 0.3 <= z <= 4.4 (in front of the eye) "
-                             f"and |x| <= 3.4, got {ends.tolist()}")
+            raise ValueError(
+                "ends must lie in the picture: 0.3 <= z <= 4.4 (in front of the eye) "
+                f"and |x| <= 3.4, got {ends.tolist()}"
+            )
         q = as_float("q", q)
         if not 0.0 <= q <= 1.0:
             raise ValueError(f"q must lie in [0, 1], got {q}")
