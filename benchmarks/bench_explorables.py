@@ -34,18 +34,14 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_browser import ARGS, CHROMIUM, latency, start_lab, stop_lab, summary  # noqa: E402
+from bench_browser import CELLS as BROWSER_CELLS  # noqa: E402
+
+RT_CELL = next(c for c in BROWSER_CELLS if "bench-rt" in c)
 
 CELLS = [
     "import ipywidgets as w\nimport teachraster as tr\nfrom teachraster.plotting import "
     "plot_triangle\nfrom teachraster.widgets import *",
-    # the baseline: a do-nothing round trip
-    """rt = w.IntSlider(description="rt")
-rt_out = w.Output()
-rt_out.add_class("bench-rt-out")
-def _echo(change):
-    rt_out.outputs = ({"output_type": "stream", "name": "stdout", "text": str(change["new"])},)
-rt.observe(_echo, "value")
-box = w.VBox([rt, rt_out]); box.add_class("bench-rt"); box""",
+    RT_CELL,  # the baseline: bench_browser.py's do-nothing round trip
     "PipelineMap()",
     "CrackExplorer()",
     "EdgeFunctionExplorer()",
@@ -59,12 +55,19 @@ box = w.VBox([rt, rt_out]); box.add_class("bench-rt"); box""",
     "answer=tr.rasterize(tri, 12, 10).coverage, draw=lambda ax: plot_triangle(ax, tri))",
 ]
 
-#: How each explorable is found: a text only its live view holds.
-FIND = {"pipeline": "rasterisation", "cracks": "Ties on a shared edge",
-        "edges": "Edge functions, live", "surfaces": "The attribute over the triangle",
-        "eye": "Equal steps on the screen", "depth": "Where the depth values are",
-        "footprint": "A pixel and its footprint", "diamonds": "Which pixels a line lights",
-        "pixels": "Click the pixels this triangle covers"}  # fmt: skip
+#: How each explorable is found: a text only its live view holds (its title, the question).
+FIND = {"pipeline": "PipelineMap", "cracks": "CrackExplorer", "edges": "EdgeFunctionExplorer",
+        "surfaces": "AttributeSurfaces", "eye": "EyeRayExplorer", "depth": "DepthValuesExplorer",
+        "footprint": "FootprintExplorer", "diamonds": "DiamondExplorer"}  # fmt: skip
+
+
+def find_texts() -> dict:
+    """``FIND``'s keys -> the title each explorable's live view shows, and the question's."""
+    import teachraster.widgets as widgets
+
+    texts = {key: getattr(widgets, name).title for key, name in FIND.items()}
+    return {**texts, "pixels": "Click the pixels this triangle covers"}
+
 
 COUNT = """(sel) => {
   const el = document.querySelector(sel);
@@ -84,7 +87,7 @@ def mark(page) -> None:
           .find(x => x.textContent.includes(text));
         if (el) el.classList.add(`bench-x-${key}`);
       }
-    }""", FIND)  # fmt: skip
+    }""", find_texts())  # fmt: skip
 
 
 def open_notebook(page, base: str, name: str) -> None:
@@ -93,7 +96,7 @@ def open_notebook(page, base: str, name: str) -> None:
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     page.wait_for_function("n => document.querySelectorAll('.jp-OutputArea-output .tr-x').length >= n",
-                           arg=len(FIND), timeout=300_000)  # fmt: skip
+                           arg=len(FIND) + 1, timeout=300_000)  # fmt: skip
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=120_000)
     page.wait_for_timeout(1500)
     mark(page)

@@ -23,6 +23,17 @@ import pytest
 from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _put_notebook, _stop_kernels
 
+from teachraster.widgets import (
+    AttributeSurfaces,
+    CrackExplorer,
+    DepthValuesExplorer,
+    DiamondExplorer,
+    EdgeFunctionExplorer,
+    EyeRayExplorer,
+    FootprintExplorer,
+    PipelineMap,
+)
+
 pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
 
 NAME = "explorables.ipynb"
@@ -43,11 +54,12 @@ CELLS = [
     "order = PredictOrder('Order the sticks.', ['a', 'b', 'c'], answer=None, "
     "allow_impossible=True)\norder",
 ]
-TITLES = {"pipeline": "rasterisation", "cracks": "Ties on a shared edge",
-          "edges": "Edge functions, live", "surfaces": "The attribute over the triangle",
-          "eye": "Equal steps on the screen", "depth": "Where the depth values are",
-          "footprint": "A pixel and its footprint", "diamonds": "Which pixels a line lights",
-          "pixels": "Click the pixels this triangle covers", "order": "Order the sticks"}  # fmt: skip
+#: What each live view shows first: its title (the class's), or its question
+TITLES = {key: cls.title for key, cls in [
+    ("pipeline", PipelineMap), ("cracks", CrackExplorer), ("edges", EdgeFunctionExplorer),
+    ("surfaces", AttributeSurfaces), ("eye", EyeRayExplorer), ("depth", DepthValuesExplorer),
+    ("footprint", FootprintExplorer), ("diamonds", DiamondExplorer)]}  # fmt: skip
+TITLES.update(pixels="Click the pixels this triangle covers", order="Order the sticks")
 
 
 @pytest.fixture(scope="module")

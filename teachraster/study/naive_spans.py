@@ -56,8 +56,8 @@ def naive_span_fill(xy, width: int, height: int, *, stepped: bool = False,
 
     Examples
     --------
-    >>> int(naive_span_fill([[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]], 20, 20).sum())
-    120
+    >>> int(naive_span_fill([[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]], 20, 20).sum())  # lesson 01
+    96
     """
     v = as_finite("xy", xy, (3, 2))
     width, height = as_size("width", width), as_size("height", height)

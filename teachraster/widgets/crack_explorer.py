@@ -53,7 +53,7 @@ class CrackExplorer(Explorable):
 
     _esm = esm_source("raster_rules", "explore_cracks")
     noun = "crack explorer"
-    title = "Cracks and double draws"
+    title = "Ties on a shared edge: stolen pixels, cracks and double draws"
 
     def __init__(self, width: int = 12, height: int = 12, *, seed: int = 9) -> None:
         width, height = as_size("width", width), as_size("height", height)

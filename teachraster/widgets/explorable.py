@@ -112,7 +112,7 @@ class Explorable(anywidget.AnyWidget):
     Attributes
     ----------
     data : dict
-        What the page computes from (sent once; JSON-ready).
+        What the page computes from (sent once; JSON-ready); ``title`` is added.
     state : dict
         What the student changed, as of the last release in the page (set it from code to
         move the page).
@@ -126,6 +126,11 @@ class Explorable(anywidget.AnyWidget):
     noun = "explorable"
     #: the stand-in's title
     title = "An explorable"
+
+    @traitlets.validate("data")
+    def _titled(self, proposal) -> dict:
+        """The page shows the class's title: one place for it."""
+        return {"title": self.title, **proposal["value"]}
 
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)

@@ -48,7 +48,7 @@ const SURFACES = [
 function mount(el, data, host) {
   let state = { w: data.w, show: { correct: true, affine: true, fw: false, inv: false },
     ...host.state() };
-  const root = frame(el, "The attribute over the triangle, in 3-D",
+  const root = frame(el, data.title,
     "Height is the value. Drag the picture to turn it. With every w equal the triangle is " +
     "flat on the screen and f is one plane; move v3 away (its w) and f/w and 1/w stay " +
     "planes, but f, their ratio, becomes a curved sheet that the affine plane misses.");

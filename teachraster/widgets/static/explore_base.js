@@ -247,6 +247,44 @@ export function pointerInput(canvas, { handles = () => [], radius = 14, onDrag, 
   });
 }
 
+// the boundaries of a W x H pixel grid of `cell` px from (x0, y0), and optionally the row and
+// column numbers beside it (every second one beyond 20)
+export function drawGrid(ctx, x0, y0, W, H, cell, colour, labels = false) {
+  ctx.strokeStyle = colour;
+  ctx.lineWidth = 1;
+  ctx.beginPath();
+  for (let c = 0; c <= W; c++) {
+    ctx.moveTo(x0 + c * cell + 0.5, y0);
+    ctx.lineTo(x0 + c * cell + 0.5, y0 + H * cell);
+  }
+  for (let r = 0; r <= H; r++) {
+    ctx.moveTo(x0, y0 + r * cell + 0.5);
+    ctx.lineTo(x0 + W * cell, y0 + r * cell + 0.5);
+  }
+  ctx.stroke();
+  if (!labels) return;
+  ctx.fillStyle = "#555";
+  ctx.font = "11px sans-serif";
+  ctx.textAlign = "center";
+  for (let c = 0; c < W; c += W > 20 ? 2 : 1) ctx.fillText(String(c), x0 + (c + 0.5) * cell, y0 - 8);
+  ctx.textAlign = "right";
+  for (let r = 0; r < H; r += H > 20 ? 2 : 1) ctx.fillText(String(r), x0 - 6, y0 + (r + 0.5) * cell + 4);
+  ctx.textAlign = "left";
+}
+
+// a straight line from p to q (canvas px)
+export function strokeLine(ctx, p, q, colour, width = 1, dash = []) {
+  ctx.save();
+  ctx.setLineDash(dash);
+  ctx.strokeStyle = colour;
+  ctx.lineWidth = width;
+  ctx.beginPath();
+  ctx.moveTo(p[0], p[1]);
+  ctx.lineTo(q[0], q[1]);
+  ctx.stroke();
+  ctx.restore();
+}
+
 export function button(text, onClick, pressed) {
   const b = element("button", { type: "button", text });
   if (pressed !== undefined) b.setAttribute("aria-pressed", String(Boolean(pressed)));

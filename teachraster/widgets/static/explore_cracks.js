@@ -108,7 +108,7 @@ function mount(el, data, host) {
   const H = data.height;
   let state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false,
     ...host.state() };
-  const root = frame(el, "Ties on a shared edge: stolen pixels, cracks and double draws",
+  const root = frame(el, data.title,
     "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
     "panel fills both, A in blue and B in orange. <b>⇄</b>: a centre on the shared edge drawn " +
     "by the wrong one of the two; <b style='color:#D55E00'>2</b>: drawn twice; " +
@@ -225,18 +225,7 @@ function drawPanel(ctx, f, exact, pair, g) {
       ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
     }
   }
-  ctx.strokeStyle = "#bbb";
-  ctx.lineWidth = 1;
-  ctx.beginPath();
-  for (let c = 0; c <= W; c++) {
-    ctx.moveTo(x0 + c * cell + 0.5, y0);
-    ctx.lineTo(x0 + c * cell + 0.5, y0 + H * cell);
-  }
-  for (let r = 0; r <= H; r++) {
-    ctx.moveTo(x0, y0 + r * cell + 0.5);
-    ctx.lineTo(x0 + W * cell, y0 + r * cell + 0.5);
-  }
-  ctx.stroke();
+  drawGrid(ctx, x0, y0, W, H, cell, "#bbb");
   // the pixel centres, those exactly on the shared edge larger: where the ties are
   const setup = setupTriangle(pair[0]);
   for (let r = 0; r < H; r++) {

@@ -173,7 +173,7 @@ function mount(el, data, host) {
   let state = { near: data.near, z0: data.z0, zoom: 0, ...host.state() };
   const far = data.far;
   const zmin = data.zmin;
-  const root = frame(el, "Where the depth values are",
+  const root = frame(el, data.title,
     "Each strip shows where a depth buffer's values fall along the view distance z (log " +
     "scale): dark where a pixel's range of z holds many, single ticks where they are few. " +
     "Drag the near plane (the orange handle); point at a distance to magnify it in the lens " +

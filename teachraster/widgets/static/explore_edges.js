@@ -70,7 +70,7 @@ function mount(el, data, host) {
   const H = data.height;
   let state = { vertices: data.vertices, chosen: "A", planes: false, snap: 0.25, tint: "none",
     ...host.state() };
-  const root = frame(el, "Edge functions, live",
+  const root = frame(el, data.title,
     "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
     "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
     "their edges' colours; tint a half-plane to see where its E keeps one sign. A centre " +
@@ -143,7 +143,7 @@ function mount(el, data, host) {
     drawCells(ctx, scene, W, H, cell, m, data.colors);
     const chosen = state.chosen === "A" ? scene.A : scene.B;
     drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
-    drawGrid(ctx, W, H, cell, m, data.colors);
+    drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
     drawSigns(ctx, chosen, W, H, cell, m);
     drawShared(ctx, scene, cell, m, data.colors);
     drawTriangles(ctx, state, toPx, data.colors);
@@ -263,27 +263,6 @@ function drawHalfPlanes(ctx, setup, W, H, toPx, cell, which) {
   ctx.restore();
 }
 
-function drawGrid(ctx, W, H, cell, m, colors) {
-  ctx.strokeStyle = colors.grid;
-  ctx.lineWidth = 1;
-  ctx.beginPath();
-  for (let c = 0; c <= W; c++) {
-    ctx.moveTo(m.left + c * cell + 0.5, m.top);
-    ctx.lineTo(m.left + c * cell + 0.5, m.top + H * cell);
-  }
-  for (let r = 0; r <= H; r++) {
-    ctx.moveTo(m.left, m.top + r * cell + 0.5);
-    ctx.lineTo(m.left + W * cell, m.top + r * cell + 0.5);
-  }
-  ctx.stroke();
-  ctx.fillStyle = "#555";
-  ctx.font = "11px sans-serif";
-  ctx.textAlign = "center";
-  for (let c = 0; c < W; c += W > 20 ? 2 : 1) ctx.fillText(String(c), m.left + (c + 0.5) * cell, m.top - 8);
-  ctx.textAlign = "right";
-  for (let r = 0; r < H; r += H > 20 ? 2 : 1) ctx.fillText(String(r), m.left - 6, m.top + (r + 0.5) * cell + 4);
-  ctx.textAlign = "left";
-}
 
 // A glyph drawn once as a small picture (drawImage is many times cheaper than fillText, and a
 // grid shows hundreds of them at every frame of a drag)

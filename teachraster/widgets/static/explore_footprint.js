@@ -123,7 +123,7 @@ function mount(el, data, host) {
     half: (data.repeats * data.texW) / 2 + 4 };
   let state = { pixel: data.pixel, point: null, view: whole, follow: true, how: "trilinear",
     ...host.state() };
-  const root = frame(el, "A pixel and its footprint",
+  const root = frame(el, data.title,
     "Left, the floor on the screen; right, the same floor in texture space, with every pixel " +
     "centre as a dot. Click a pixel (or move it with the arrow keys): its footprint appears " +
     "in texture space, the ellipse the filters approximate, with λ and the level chosen. " +
@@ -237,19 +237,7 @@ function mount(el, data, host) {
 function drawScreen(ctx, small, W, H, cell, pixel, reading) {
   ctx.imageSmoothingEnabled = false;
   ctx.drawImage(small, 0, 0, W * cell, H * cell);
-  if (cell >= 8) {
-    ctx.strokeStyle = "rgba(120,120,120,0.35)";
-    ctx.beginPath();
-    for (let c = 0; c <= W; c++) {
-      ctx.moveTo(c * cell + 0.5, 0);
-      ctx.lineTo(c * cell + 0.5, H * cell);
-    }
-    for (let r = 0; r <= H; r++) {
-      ctx.moveTo(0, r * cell + 0.5);
-      ctx.lineTo(W * cell, r * cell + 0.5);
-    }
-    ctx.stroke();
-  }
+  if (cell >= 8) drawGrid(ctx, 0, 0, W, H, cell, "rgba(120,120,120,0.35)");
   ctx.fillStyle = "rgba(213,94,0,0.75)";
   for (const [r, c] of reading) ctx.fillRect(c * cell + 1, r * cell + 1, cell - 2, cell - 2);
   if (pixel) {

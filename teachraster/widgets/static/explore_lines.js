@@ -145,7 +145,7 @@ function mount(el, data, host) {
   const W = data.width;
   const H = data.height;
   let state = { p0: data.p0, p1: data.p1, step: -1, ...host.state() };
-  const root = frame(el, "Which pixels a line lights: the diamonds",
+  const root = frame(el, data.title,
     "Each pixel owns the open diamond around its centre. The line lights a pixel when it " +
     "meets its diamond and goes on out of it; the diamond it ends in is left to the next " +
     "segment. Drag p0 or p1: near a pixel centre, a diamond corner or a pixel corner they " +
@@ -228,18 +228,7 @@ function mount(el, data, host) {
 }
 
 function drawLineGrid(ctx, W, H, cell, m, toPx) {
-  ctx.strokeStyle = "#c8c8c8";
-  ctx.lineWidth = 1;
-  ctx.beginPath();
-  for (let c = 0; c <= W; c++) {
-    ctx.moveTo(m.left + c * cell + 0.5, m.top);
-    ctx.lineTo(m.left + c * cell + 0.5, m.top + H * cell);
-  }
-  for (let r = 0; r <= H; r++) {
-    ctx.moveTo(m.left, m.top + r * cell + 0.5);
-    ctx.lineTo(m.left + W * cell, m.top + r * cell + 0.5);
-  }
-  ctx.stroke();
+  drawGrid(ctx, m.left, m.top, W, H, cell, "#c8c8c8", true);
   // every pixel's diamond, faint, and its centre
   ctx.strokeStyle = "#e0e0e0";
   ctx.beginPath();
@@ -254,13 +243,6 @@ function drawLineGrid(ctx, W, H, cell, m, toPx) {
       ctx.fillRect(x - 1.5, y - 1.5, 3, 3);
     }
   }
-  ctx.fillStyle = "#555";
-  ctx.font = "11px sans-serif";
-  ctx.textAlign = "center";
-  for (let c = 0; c < W; c++) ctx.fillText(String(c), m.left + (c + 0.5) * cell, m.top - 7);
-  ctx.textAlign = "right";
-  for (let r = 0; r < H; r++) ctx.fillText(String(r), m.left - 5, m.top + (r + 0.5) * cell + 4);
-  ctx.textAlign = "left";
 }
 
 function diamondPath(ctx, toPx, r, c) {

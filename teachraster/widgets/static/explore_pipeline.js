@@ -187,7 +187,7 @@ function diagram(onPick) {
 function mount(el, data, host) {
   addCss("tr-pipe-css", PIPE_CSS);
   let state = { stage: "rasterize", ...host.state() };
-  const root = frame(el, "", "");
+  const root = frame(el, data.title, "");
   root.classList.add("tr-pipe");
   const { root: map, groups } = diagram((key, e) => pick(key, e));
   const title = element("div", { class: "tr-x-title" });
@@ -230,17 +230,7 @@ function drawPixels(ctx, data, img, cell, key) {
     ctx.fillStyle = `rgb(${c[0]},${c[1]},${c[2]})`;
     ctx.fillRect(1 + (i % W) * cell, 1 + Math.floor(i / W) * cell, cell, cell);
   });
-  ctx.strokeStyle = "rgba(0,0,0,0.15)";
-  ctx.beginPath();
-  for (let c = 0; c <= W; c++) {
-    ctx.moveTo(1 + c * cell, 1);
-    ctx.lineTo(1 + c * cell, 1 + H * cell);
-  }
-  for (let r = 0; r <= H; r++) {
-    ctx.moveTo(1, 1 + r * cell);
-    ctx.lineTo(1 + W * cell, 1 + r * cell);
-  }
-  ctx.stroke();
+  drawGrid(ctx, 0.5, 0.5, W, H, cell, "rgba(0,0,0,0.15)");
   if (key === "rasterize") {
     const [r0, r1, c0, c1] = data.bbox;
     ctx.strokeStyle = OKABE.orange;

@@ -26,7 +26,7 @@ const ZMAX = 4.4; // the deepest end the picture holds
 
 function mount(el, data, host) {
   let state = { ends: data.ends, q: data.q, ...host.state() };
-  const root = frame(el, "Equal steps on the screen, unequal steps in the world",
+  const root = frame(el, data.title,
     "Drag the segment's ends (or set their depth ratio with the slider) and slide q along " +
     "the screen: the eye ray through q meets the segment at t. Below, t(q) against the " +
     "affine guess t = q, with the largest gap marked.");
@@ -123,17 +123,7 @@ function drawWorld(ctx, toPx, g) {
     ctx.fillStyle = OKABE.blue;
     ctx.fillRect(sp[0] - 1, sp[1] - 7, 2, 14);
   }
-  const line = (a, b, colour, width, dash = []) => {
-    const [p, q] = [toPx(a), toPx(b)];
-    ctx.setLineDash(dash);
-    ctx.strokeStyle = colour;
-    ctx.lineWidth = width;
-    ctx.beginPath();
-    ctx.moveTo(p[0], p[1]);
-    ctx.lineTo(q[0], q[1]);
-    ctx.stroke();
-    ctx.setLineDash([]);
-  };
+  const line = (a, b, colour, width, dash = []) => strokeLine(ctx, toPx(a), toPx(b), colour, width, dash);
   line([-3.5, 1], [3.5, 1], "#000", 2);
   line([0, 0], [g.s * far, far], OKABE.vermillion, 2);
   line([g.x0, g.z0], [g.x1, g.z1], "#000", 3);

@@ -96,20 +96,34 @@ function overlaid(canvas) {
   return out;
 }
 
-function checkRow(root, onCheck) {
+// Check (disabled until an answer is given) and, once pressed, the verdict and the
+// explanation: show(correct, text)
+function checkRow(root, data, onCheck) {
   const check = button("Check", onCheck);
   check.disabled = true;
   check.title = "give your answer first";
   const verdict = element("div", { class: "tr-predict-verdict", "aria-live": "polite" });
   const explain = element("div");
   root.append(element("div", { class: "tr-x-row" }, [check]), verdict, explain);
-  return { check, verdict, explain };
+  const show = (correct, text) => {
+    verdict.innerHTML = verdictHtml(correct, text);
+    explain.innerHTML = data.explain || "";
+  };
+  return { check, show };
+}
+
+// the figure shows the answer: repainted, the kernel told (a Check pressed here), and the
+// picture kept for the saved notebook
+function revealOnFigure(host, canvas, paint, given, byClick) {
+  paint.request();
+  if (byClick) host.setState({ revealed: true, given });
+  host.picture(overlaid(canvas));
 }
 
 function mountPixels(root, data, host) {
   let state = { given: [], revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
-  const { check, verdict, explain } = checkRow(root, () => reveal(true));
+  const { check, show } = checkRow(root, data, () => reveal(true));
   const note = element("div", { text: "Click the pixels you expect lit (drag to paint several)." });
   root.insertBefore(note, canvas.parentElement);
   const W = data.width;
@@ -159,14 +173,11 @@ function mountPixels(root, data, host) {
     if (!state.given.length) return;
     state.revealed = true;
     const v = pixelVerdict(data.answer, state.given, W);
-    verdict.innerHTML = verdictHtml(v.correct, `You marked ${state.given.length} pixel` +
+    show(v.correct, `You marked ${state.given.length} pixel` +
       `${state.given.length === 1 ? "" : "s"}: ${v.right} right, ${v.extra} too many, ${v.missed} ` +
       `missed. The answer lights <b>${v.total}</b>: outlined green where you had them, dashed ` +
       "orange where you missed them; crossed: yours that are not lit.");
-    explain.innerHTML = data.explain || "";
-    paint.request();
-    if (byClick) host.setState({ revealed: true, given: state.given });
-    host.picture(overlaid(canvas));
+    revealOnFigure(host, canvas, paint, state.given, byClick);
   }
 
   function cellAt(p) {
@@ -213,7 +224,7 @@ function mountPixels(root, data, host) {
 function mountPoint(root, data, host) {
   let state = { given: null, revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
-  const { check, verdict, explain } = checkRow(root, () => reveal(true));
+  const { check, show } = checkRow(root, data, () => reveal(true));
   root.insertBefore(element("div", { text: "Drag the orange marker to your answer." }), canvas.parentElement);
   const start = data.start;
 
@@ -264,12 +275,9 @@ function mountPoint(root, data, host) {
     if (state.given === null) return;
     state.revealed = true;
     const v = pointVerdict(data.answer, state.given, data.tolerance);
-    verdict.innerHTML = verdictHtml(v.correct, `Your marker is ${fmt(v.gap, 3)} ${data.units} ` +
-      `from the answer (green)${data.tolerance ? `; within ${fmt(data.tolerance, 3)} counts` : ""}.`);
-    explain.innerHTML = data.explain || "";
-    paint.request();
-    if (byClick) host.setState({ revealed: true, given: state.given });
-    host.picture(overlaid(canvas));
+    show(v.correct, `Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
+      `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} counts` : ""}.`);
+    revealOnFigure(host, canvas, paint, state.given, byClick);
   }
   pointerInput(canvas, {
     handles: () => [toPx(state.given || start)],
@@ -322,7 +330,7 @@ function mountOrder(root, data, host) {
     });
     root.append(element("label", {}, [impossible, element("span", { text: data.impossibleLabel })]));
   }
-  const { check, verdict, explain } = checkRow(root, () => reveal(true));
+  const { check, show } = checkRow(root, data, () => reveal(true));
   const given = () => (impossible && impossible.checked ? null : order);
   function act() {
     state.acted = true;
@@ -374,8 +382,7 @@ function mountOrder(root, data, host) {
     state.revealed = true;
     const v = orderVerdict(data.answer, given());
     const right = data.answer === null ? data.impossibleLabel : data.answer.join(" → ");
-    verdict.innerHTML = verdictHtml(v.correct, `The answer: <b>${right}</b>.`);
-    explain.innerHTML = data.explain || "";
+    show(v.correct, `The answer: <b>${right}</b>.`);
     render_();
     if (byClick) host.setState({ revealed: true, given: given(), acted: true });
   }

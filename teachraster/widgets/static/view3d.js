@@ -113,16 +113,7 @@ export function orbitDrag(canvas, cam, onChange) {
 
 // a line in 3-D, drawn on top (labels, axes)
 export function line3d(ctx, cam, a, b, stroke, width = 1, dash = []) {
-  const [p, q] = [cam.project(a), cam.project(b)];
-  ctx.save();
-  ctx.setLineDash(dash);
-  ctx.strokeStyle = stroke;
-  ctx.lineWidth = width;
-  ctx.beginPath();
-  ctx.moveTo(p[0], p[1]);
-  ctx.lineTo(q[0], q[1]);
-  ctx.stroke();
-  ctx.restore();
+  strokeLine(ctx, cam.project(a), cam.project(b), stroke, width, dash);
 }
 
 export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-serif") {
