@@ -285,6 +285,18 @@ export function strokeLine(ctx, p, q, colour, width = 1, dash = []) {
   ctx.restore();
 }
 
+// buttons of which one is pressed: [value, label] options; onPick(value, event)
+export function choiceButtons(options, current, onPick) {
+  const buttons = options.map(([value, label]) => button(label, (e) => {
+    set(value);
+    onPick(value, e);
+  }, value === current));
+  function set(value) {
+    buttons.forEach((b, k) => b.setAttribute("aria-pressed", String(options[k][0] === value)));
+  }
+  return { buttons, set };
+}
+
 export function button(text, onClick, pressed) {
   const b = element("button", { type: "button", text });
   if (pressed !== undefined) b.setAttribute("aria-pressed", String(Boolean(pressed)));

@@ -106,7 +106,7 @@ export function tallyTable(tally) {
 function mount(el, data, host) {
   const W = data.width;
   const H = data.height;
-  let state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false,
+  const state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false,
     ...host.state() };
   const root = frame(el, data.title,
     "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
@@ -122,32 +122,15 @@ function mount(el, data, host) {
     "the same pair of triangles filled three ways, cracks and double draws marked");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div");
-  const reroll = button("Reroll", (e) => roll(1, e));
-  const many = button("Roll 1000 more", (e) => roll(1000, e));
-  const listedBtn = button("evaluate each edge from the end its triangle lists first", (e) => {
-    state.asListed = !state.asListed;
-    listedBtn.setAttribute("aria-pressed", String(state.asListed));
-    state.tally = emptyTally();
-    paint.request(e);
-    host.setState({ asListed: state.asListed, tally: state.tally });
-  }, Boolean(state.asListed));
-  const reset = button("Reset the tally", (e) => {
-    state.tally = emptyTally();
-    paint.request(e);
-    host.setState({ tally: state.tally });
-  });
-  root.append(element("div", { class: "tr-x-row" }, [reroll, many, reset, listedBtn]), canvas,
-    readout, table, element("div", { class: "tr-x-sub", html: "Both triangles walk the shared " +
-      "edge from its upper end, as lesson 01's loops do: they round alike, so a tie goes to " +
-      "one of them, sometimes the wrong one, and the edge never cracks. Evaluated from the " +
-      "end each triangle lists first, the two round differently: then (rarely) it can." }));
+  root.append(crackControls(state, host, (n, e) => roll(n, e), (e) => paint.request(e)), canvas,
+    readout, table, element("div", { class: "tr-x-sub", html: CRACKS_NOTE }));
   let rand = randomStream(state.seed);
   let pair = null;
   for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H); // the pair on show
   if (!state.roll && !state.tally.integer.pairs) {
     state.tally = tallied(state.tally, pair, W, H, state.asListed);
   }
-  let hover = null;
+  const ui = { hover: null };
 
   function roll(n, e) {
     for (let k = 0; k < n; k++) {
@@ -171,20 +154,15 @@ function mount(el, data, host) {
       ctx.fillText(name, x0, m.top - 16);
     });
     table.innerHTML = tallyTable(state.tally);
-    readout.innerHTML = explainPixel(pair, hover, W, H, found, state.asListed);
+    readout.innerHTML = explainPixel(pair, ui.hover, W, H, found, state.asListed);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);
-  pointerInput(canvas, {
-    onHover(p, e) {
-      hover = p ? pixelUnder(p, m, cell, panelW, gap, W, H) : null;
-      paint.request(e);
-    },
-    onClick(p, e) {
-      hover = pixelUnder(p, m, cell, panelW, gap, W, H);
-      paint.request(e);
-    },
-  });
+  const point = (p, e) => {
+    ui.hover = p ? pixelUnder(p, m, cell, panelW, gap, W, H) : null;
+    paint.request(e);
+  };
+  pointerInput(canvas, { onHover: point, onClick: point });
   onKeys(canvas, (e) => {
     if (e.key === "r" || e.key === "Enter" || e.key === " ") {
       e.preventDefault();
@@ -194,15 +172,40 @@ function mount(el, data, host) {
   paint.now();
   return {
     setState(s) {
-      const reseed = s.seed !== undefined && s.seed !== state.seed;
-      state = { ...state, ...s };
-      if (reseed || s.roll !== undefined) {
+      // the pair on show again only when the kernel moved it (not at the echo of our roll)
+      const moved = (s.seed !== undefined && s.seed !== state.seed)
+        || (s.roll !== undefined && s.roll !== state.roll);
+      Object.assign(state, s);
+      if (moved) {
         rand = randomStream(state.seed);
         for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H);
       }
       paint.request();
     },
   };
+}
+
+const CRACKS_NOTE = "Both triangles walk the shared edge from its upper end, as lesson 01's " +
+  "loops do: they round alike, so a tie goes to one of them, sometimes the wrong one, and the " +
+  "edge never cracks. Evaluated from the end each triangle lists first, the two round " +
+  "differently: then (rarely) it can.";
+
+// Reroll, a thousand more, the tally reset, and the edges evaluated as listed
+function crackControls(state, host, roll, repaint) {
+  const listed = button("evaluate each edge from the end its triangle lists first", (e) => {
+    state.asListed = !state.asListed;
+    listed.setAttribute("aria-pressed", String(state.asListed));
+    state.tally = emptyTally();
+    repaint(e);
+    host.setState({ asListed: state.asListed, tally: state.tally });
+  }, Boolean(state.asListed));
+  const reset = button("Reset the tally", (e) => {
+    state.tally = emptyTally();
+    repaint(e);
+    host.setState({ tally: state.tally });
+  });
+  return element("div", { class: "tr-x-row" }, [button("Reroll", (e) => roll(1, e)),
+    button("Roll 1000 more", (e) => roll(1000, e)), reset, listed]);
 }
 
 function pixelUnder(p, m, cell, panelW, gap, W, H) {

@@ -170,7 +170,7 @@ function stripsPicture(zmin, far, pw, near) {
 }
 
 function mount(el, data, host) {
-  let state = { near: data.near, z0: data.z0, zoom: 0, ...host.state() };
+  const state = { near: data.near, z0: data.z0, zoom: 0, ...host.state() };
   const far = data.far;
   const zmin = data.zmin;
   const root = frame(el, data.title,
@@ -191,7 +191,7 @@ function mount(el, data, host) {
   const lz = (z) => Math.log(z);
   const xOf = (z) => g.left + ((lz(z) - lz(zmin)) / (lz(far) - lz(zmin))) * pw;
   const zOf = (x) => Math.exp(lz(zmin) + ((x - g.left) / pw) * (lz(far) - lz(zmin)));
-  let hover = null;
+  const ui = { hover: null };
 
   // the lens' width: 30 steps of unorm16 at z0, divided by 10 per zoom step
   function lensWidth() {
@@ -223,20 +223,29 @@ function mount(el, data, host) {
     drawLogAxis(ctx, g, zmin, far, xOf, g.top + 4 * (g.strip + g.gap));
     drawNear(ctx, g, xOf(n), n, 4 * (g.strip + g.gap));
     drawLegend(ctx, g, W);
-    if (hover !== null) {
-      ctx.strokeStyle = "#000";
-      ctx.setLineDash([4, 3]);
-      ctx.beginPath();
-      ctx.moveTo(xOf(hover) + 0.5, g.top - 6);
-      ctx.lineTo(xOf(hover) + 0.5, g.top + 4 * (g.strip + g.gap));
-      ctx.stroke();
-      ctx.setLineDash([]);
+    if (ui.hover !== null) {
+      const x = xOf(ui.hover) + 0.5;
+      strokeLine(ctx, [x, g.top - 6], [x, g.top + 4 * (g.strip + g.gap)], "#000", 1, [4, 3]);
     }
     drawLens(ctx, g, W, state.z0, lensWidth(), n, far);
-    readout.innerHTML = depthTable(hover ?? state.z0, n, far);
+    readout.innerHTML = depthTable(ui.hover ?? state.z0, n, far);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw, () => [[xOf(state.near), g.top - 12]]);
+  nearInput(canvas, { state, host, ui, g, pw, xOf, zOf, zmin, far, paint, zoom });
+  paint.now();
+  return {
+    setState(s) {
+      Object.assign(state, s);
+      paint.request();
+    },
+  };
+}
+
+// the near plane dragged (or moved with the arrow keys), the lens moved by pointing, zoomed
+// with + and -
+function nearInput(canvas, v) {
+  const { state, host, ui, g, pw, xOf, zOf, zmin, far, paint, zoom } = v;
   pointerInput(canvas, {
     handles: () => [[xOf(state.near), g.top - 12]],
     radius: 16,
@@ -251,8 +260,8 @@ function mount(el, data, host) {
     },
     onHover(p, e) {
       const inside = p && p[0] >= g.left && p[0] <= g.left + pw && p[1] < g.lensTop - 30;
-      hover = inside ? Math.max(zOf(p[0]), state.near) : null;
-      if (hover !== null) state.z0 = hover;
+      ui.hover = inside ? Math.max(zOf(p[0]), state.near) : null;
+      if (ui.hover !== null) state.z0 = ui.hover;
       paint.request(e);
     },
     onClick(p, e) {
@@ -278,13 +287,6 @@ function mount(el, data, host) {
     host.setState({ near: state.near, z0: state.z0 });
     paint.request(e);
   });
-  paint.now();
-  return {
-    setState(s) {
-      state = { ...state, ...s };
-      paint.request();
-    },
-  };
 }
 
 function drawLogAxis(ctx, g, zmin, far, xOf, y) {

@@ -68,14 +68,13 @@ function mount(el, data, host) {
   addCss("tr-edges-css", EDGES_CSS);
   const W = data.width;
   const H = data.height;
-  let state = { vertices: data.vertices, chosen: "A", planes: false, snap: 0.25, tint: "none",
+  const state = { vertices: data.vertices, chosen: "A", planes: false, snap: 0.25, tint: "none",
     ...host.state() };
   const root = frame(el, data.title,
     "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
     "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
     "their edges' colours; tint a half-plane to see where its E keeps one sign. A centre " +
-    "exactly on the shared edge v2–v3 is ringed in the " +
-    "colour of the triangle that owns it.");
+    "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it.");
   const cell = Math.max(22, Math.min(40, Math.floor(Math.min(600 / W, 520 / H))));
   const m = { left: 30, top: 26 };
   const [canvas, ctx] = makeCanvas(m.left + W * cell + 12, m.top + H * cell + 12,
@@ -84,61 +83,13 @@ function mount(el, data, host) {
   const toGrid = ([px, py]) => [(px - m.left) / cell, (py - m.top) / cell];
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
-  const key = element("div", { html: "Fill: <b style='color:#3a8fc4'>A</b>, " +
-    "<b style='color:#c98a1c'>B</b>, grey where they overlap (drawn twice). Ring on a centre of " +
-    "the shared edge: <b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> " +
-    "owns it, grey: neither (a shared vertex, left to a third triangle)." });
-  const chooseA = button("signs of A (v1 v2 v3)", () => choose("A"), true);
-  const chooseB = button("signs of B (v3 v2 v4)", () => choose("B"), false);
-  const planes = button("3-D: E as planes", () => {
-    state.planes = !state.planes;
-    planes.setAttribute("aria-pressed", String(state.planes));
-    view3d.style.display = state.planes ? "" : "none";
-    paint3d.request();
-    host.setState({ planes: state.planes });
-  }, false);
-  const snapBtn = button("snap to ¼ px", () => {
-    state.snap = state.snap ? 0 : 0.25;
-    snapBtn.setAttribute("aria-pressed", String(Boolean(state.snap)));
-    host.setState({ snap: state.snap });
-  }, Boolean(state.snap));
   const [view3d, ctx3] = makeCanvas(560, 400, "the three edge functions as planes over the grid");
-  view3d.style.display = "none";
-  const tints = ["none", "E12", "E23", "E31", "all"].map((t) => button(
-    t === "none" ? "no half-plane" : t === "all" ? "all three" : `${t}'s`, (e) => tint(t, e),
-    state.tint === t));
-  root.append(element("div", { class: "tr-x-row" }, [chooseA, chooseB, planes, snapBtn]),
-    element("div", { class: "tr-x-row" }, [element("span", { text: "tint the half-plane:" }),
-      ...tints]), canvas, readout, table, view3d);
   const cam = camera3d({ centre: [W / 2, H / 2, 0], scale: Math.min(380 / W, 300 / H),
     at: [280, 210] });
-  let scene = null;
-  let hover = null;
-  let picked = 0;
-
-  function choose(which) {
-    state.chosen = which;
-    chooseA.setAttribute("aria-pressed", String(which === "A"));
-    chooseB.setAttribute("aria-pressed", String(which === "B"));
-    host.setState({ chosen: which });
-    paint.request();
-    paint3d.request();
-  }
-
-  function tint(which, e) {
-    state.tint = which;
-    tints.forEach((b, k) => b.setAttribute("aria-pressed",
-      String(["none", "E12", "E23", "E31", "all"][k] === which)));
-    host.setState({ tint: which });
-    paint.request(e);
-  }
-
-  function recompute() {
-    scene = edgeScene(state.vertices, W, H, data.bits);
-  }
+  const ui = { scene: null, hover: null, picked: 0 };
 
   function draw() {
-    recompute();
+    const scene = (ui.scene = edgeScene(state.vertices, W, H, data.bits));
     ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
     drawCells(ctx, scene, W, H, cell, m, data.colors);
     const chosen = state.chosen === "A" ? scene.A : scene.B;
@@ -149,70 +100,114 @@ function mount(el, data, host) {
     drawTriangles(ctx, state, toPx, data.colors);
     drawEdgeLabels(ctx, chosen, state, toPx);
     table.innerHTML = edgeTable(scene);
-    readout.innerHTML = describe(scene, hover, state.chosen, W, H);
+    readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw, () => state.vertices.map(toPx));
-  const paint3d = painter(view3d, () => drawPlanes(ctx3, cam, scene || edgeScene(
+  const paint3d = painter(view3d, () => drawPlanes(ctx3, cam, ui.scene || edgeScene(
     state.vertices, W, H, data.bits), state.chosen, W, H, view3d));
+  const both = (e) => {
+    paint.request(e);
+    if (state.planes) paint3d.request(e);
+  };
   orbitDrag(view3d, cam, (e) => paint3d.request(e));
+  const controls = edgeControls(state, host, both, view3d);
+  root.append(...controls.rows, canvas, element("div", { html: EDGES_KEY }), readout, table, view3d);
+  vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
+  paint.now();
+  controls.sync();
+  return {
+    setState(s) {
+      Object.assign(state, s);
+      controls.sync();
+      both();
+    },
+  };
+}
 
-  function place(i, p) {
-    let [x, y] = toGrid(p);
-    x = Math.max(0, Math.min(W, x));
-    y = Math.max(0, Math.min(H, y));
-    if (state.snap) [x, y] = [Math.round(x / state.snap) * state.snap, Math.round(y / state.snap) * state.snap];
-    state.vertices = state.vertices.map((v, k) => (k === i ? [x, y] : v));
+const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c'>B</b>, grey " +
+  "where they overlap (drawn twice). Ring on a centre of the shared edge: " +
+  "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, grey: " +
+  "neither (a shared vertex, left to a third triangle).";
+
+// the explorer's buttons: whose signs, the 3-D planes, the snapping, the half-plane tinted
+function edgeControls(state, host, repaint, view3d) {
+  const chosen = choiceButtons([["A", "signs of A (v1 v2 v3)"], ["B", "signs of B (v3 v2 v4)"]],
+    state.chosen, (which, e) => {
+      state.chosen = which;
+      host.setState({ chosen: which });
+      repaint(e);
+    });
+  const planes = button("3-D: E as planes", (e) => {
+    state.planes = !state.planes;
+    sync();
+    host.setState({ planes: state.planes });
+    repaint(e);
+  }, state.planes);
+  const snap = button("snap to ¼ px", () => {
+    state.snap = state.snap ? 0 : 0.25;
+    sync();
+    host.setState({ snap: state.snap });
+  }, Boolean(state.snap));
+  const tints = choiceButtons([["none", "no half-plane"], ["E12", "E12's"], ["E23", "E23's"],
+    ["E31", "E31's"], ["all", "all three"]], state.tint, (which, e) => {
+    state.tint = which;
+    host.setState({ tint: which });
+    repaint(e);
+  });
+  function sync() {
+    chosen.set(state.chosen);
+    tints.set(state.tint);
+    planes.setAttribute("aria-pressed", String(state.planes));
+    snap.setAttribute("aria-pressed", String(Boolean(state.snap)));
+    view3d.style.display = state.planes ? "" : "none";
   }
+  const rows = [element("div", { class: "tr-x-row" }, [...chosen.buttons, planes, snap]),
+    element("div", { class: "tr-x-row" }, [element("span", { text: "tint the half-plane:" }),
+      ...tints.buttons])];
+  return { rows, sync };
+}
+
+// dragging a vertex (snapped to the grid of state.snap px), or moving it with the keys
+function vertexInput(canvas, v) {
+  const { state, host, ui, toPx, toGrid, W, H, repaint } = v;
+  const clampX = (x) => Math.max(0, Math.min(W, x));
+  const clampY = (y) => Math.max(0, Math.min(H, y));
+  const move = (i, x, y) => {
+    state.vertices = state.vertices.map((w, k) => (k === i ? [clampX(x), clampY(y)] : w));
+  };
   pointerInput(canvas, {
     handles: () => state.vertices.map(toPx),
     onDrag(i, p, e) {
-      picked = i;
-      place(i, p);
-      hover = toGrid(p);
-      paint.request(e);
-      if (state.planes) paint3d.request(e);
+      ui.picked = i;
+      let [x, y] = toGrid(p);
+      const s = state.snap;
+      if (s) [x, y] = [Math.round(x / s) * s, Math.round(y / s) * s];
+      move(i, x, y);
+      ui.hover = toGrid(p);
+      repaint(e);
     },
-    onRelease() {
-      host.setState({ vertices: state.vertices });
-    },
+    onRelease: () => host.setState({ vertices: state.vertices }),
     onHover(p, e) {
-      hover = p ? toGrid(p) : null;
-      paint.request(e);
+      ui.hover = p ? toGrid(p) : null;
+      repaint(e);
     },
   });
   onKeys(canvas, (e) => {
-    if ("1234".includes(e.key) && e.key.length === 1) {
-      picked = Number(e.key) - 1;
+    if (e.key.length === 1 && "1234".includes(e.key)) {
+      ui.picked = Number(e.key) - 1;
       return;
     }
     const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key];
     if (!d) return;
     e.preventDefault();
     const step = e.shiftKey ? 1 : state.snap || 1 / 256;
-    const v = state.vertices[picked];
-    state.vertices = state.vertices.map((w, k) => (k === picked
-      ? [Math.max(0, Math.min(W, v[0] + d[0] * step)), Math.max(0, Math.min(H, v[1] + d[1] * step))]
-      : w));
-    hover = state.vertices[picked];
-    paint.request(e);
-    if (state.planes) paint3d.request(e);
+    const [x, y] = state.vertices[ui.picked];
+    move(ui.picked, x + d[0] * step, y + d[1] * step);
+    ui.hover = state.vertices[ui.picked];
+    repaint(e);
     host.setState({ vertices: state.vertices });
   });
-  paint.now();
-  if (state.planes) {
-    view3d.style.display = "";
-    planes.setAttribute("aria-pressed", "true");
-    paint3d.now();
-  }
-  if (state.chosen === "B") choose("B");
-  return {
-    setState(s) {
-      state = { ...state, ...s };
-      paint.request();
-      paint3d.request();
-    },
-  };
 }
 
 function drawCells(ctx, scene, W, H, cell, m, colors) {

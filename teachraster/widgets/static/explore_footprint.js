@@ -121,7 +121,7 @@ function mount(el, data, host) {
   const H = data.height;
   const whole = { cx: (data.repeats * data.texW) / 2, cy: (data.repeats * data.texH) / 2,
     half: (data.repeats * data.texW) / 2 + 4 };
-  let state = { pixel: data.pixel, point: null, view: whole, follow: true, how: "trilinear",
+  const state = { pixel: data.pixel, point: null, view: whole, follow: true, how: "trilinear",
     ...host.state() };
   const root = frame(el, data.title,
     "Left, the floor on the screen; right, the same floor in texture space, with every pixel " +
@@ -134,33 +134,11 @@ function mount(el, data, host) {
   const [tex, tctx] = makeCanvas(T, T, "the texture: footprints in texels");
   const texImage = textureCanvas(data);
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
-  const wholeBtn = button("whole floor", (e) => {
-    state.view = whole;
-    state.follow = false;
-    host.setState({ view: state.view, follow: false });
-    paint.request(e);
-  });
-  const zoomBtn = button("zoom to the footprint", (e) => {
-    state.follow = true;
-    host.setState({ follow: true });
-    paint.request(e);
-  });
-  const hows = [["trilinear", "read by trilinear (its texels)"], ["ellipse", "in the footprint ellipse"]]
-    .map(([how, text]) => button(text, (e) => {
-      state.how = how;
-      hows.forEach((b, k) => b.setAttribute("aria-pressed", String(k === (how === "ellipse" ? 1 : 0))));
-      host.setState({ how });
-      paint.request(e);
-    }, state.how === how));
+  const repaint = (e) => paint.request(e);
   const row = element("div", { class: "tr-x-row" }, [screen, tex]);
   row.style.alignItems = "flex-start";
-  root.append(element("div", { class: "tr-x-row" }, [wholeBtn, zoomBtn,
-    element("span", { text: "a texel point is" }), ...hows]), row, readout);
-  const image = sctx.createImageData(W, H);
-  data.image.forEach((v, i) => image.data.set([v[0], v[1], v[2], 255], 4 * i));
-  const small = document.createElement("canvas");
-  [small.width, small.height] = [W, H];
-  small.getContext("2d").putImageData(image, 0, 0);
+  root.append(footprintControls(state, host, whole, repaint), row, readout);
+  const small = screenPicture(data);
 
   const fpOf = ([r, c]) => {
     const i = r * W + c;
@@ -200,11 +178,58 @@ function mount(el, data, host) {
     host.picture(screen, tex);
   }
   const paint = painter(screen, draw);
+  footprintInput(screen, tex, { state, host, W, H, cell, view, toTex, repaint });
+  paint.now();
+  return {
+    setState(s) {
+      Object.assign(state, s);
+      paint.request();
+    },
+  };
+}
+
+// the floor as the kernel rendered it, one canvas pixel per pixel (drawn scaled up)
+function screenPicture(data) {
+  const small = document.createElement("canvas");
+  [small.width, small.height] = [data.width, data.height];
+  const x = small.getContext("2d");
+  const image = x.createImageData(data.width, data.height);
+  data.image.forEach((v, i) => image.data.set([v[0], v[1], v[2], 255], 4 * i));
+  x.putImageData(image, 0, 0);
+  return small;
+}
+
+// the texture view's window (the whole floor, or following the footprint) and what a click
+// in texture space stands for
+function footprintControls(state, host, whole, repaint) {
+  const wholeBtn = button("whole floor", (e) => {
+    Object.assign(state, { view: whole, follow: false });
+    host.setState({ view: state.view, follow: false });
+    repaint(e);
+  });
+  const zoomBtn = button("zoom to the footprint", (e) => {
+    state.follow = true;
+    host.setState({ follow: true });
+    repaint(e);
+  });
+  const hows = choiceButtons([["trilinear", "read by trilinear (its texels)"],
+    ["ellipse", "in the footprint ellipse"]], state.how, (how, e) => {
+    state.how = how;
+    host.setState({ how });
+    repaint(e);
+  });
+  return element("div", { class: "tr-x-row" }, [wholeBtn, zoomBtn,
+    element("span", { text: "a texel point is" }), ...hows.buttons]);
+}
+
+// a screen pixel picked (click, arrow keys); a texel point picked (click in texture space)
+function footprintInput(screen, tex, v) {
+  const { state, host, W, H, cell, view, toTex, repaint } = v;
   pointerInput(screen, {
     onClick(p, e) {
       state.pixel = [Math.min(H - 1, Math.floor(p[1] / cell)), Math.min(W - 1, Math.floor(p[0] / cell))];
       host.setState({ pixel: state.pixel });
-      paint.request(e);
+      repaint(e);
     },
   });
   pointerInput(tex, {
@@ -213,7 +238,7 @@ function mount(el, data, host) {
       state.view = view();
       state.follow = false;
       host.setState({ point: state.point, view: state.view, follow: false });
-      paint.request(e);
+      repaint(e);
     },
   });
   onKeys(screen, (e) => {
@@ -223,15 +248,8 @@ function mount(el, data, host) {
     const [r, c] = state.pixel || [0, 0];
     state.pixel = [Math.max(0, Math.min(H - 1, r + d[0])), Math.max(0, Math.min(W - 1, c + d[1]))];
     host.setState({ pixel: state.pixel });
-    paint.request(e);
+    repaint(e);
   });
-  paint.now();
-  return {
-    setState(s) {
-      state = { ...state, ...s };
-      paint.request();
-    },
-  };
 }
 
 function drawScreen(ctx, small, W, H, cell, pixel, reading) {
