@@ -32,11 +32,17 @@ Pixels: the answer is a (height, width) bool mask; ``draw(ax)`` adds to the pixe
 Point: the answer is (x, y) in the data coordinates of ``draw``'s Axes (``xlim``, ``ylim``
 set by the widget); ``along`` keeps the marker on a segment; within ``tolerance`` is right::
 
+    from teachraster.plotting.projection import Segment, plot_projection
+    from teachraster.widgets import PredictPoint
+
+    seg = Segment(x0=-1.0, z0=1.5, x1=2.0, z1=3.0)
     PredictPoint(
-        "Drag the marker to where the screen midpoint q = 0.5 lands on the segment.",
-        answer=segment.point(segment.world_parameter(0.5))[0],
-        draw=lambda ax: plot_projection(ax, segment, n_steps=0), xlim=(-1.5, 2.5),
-        ylim=(-0.2, 4), along=((-1.0, 1.5), (2.0, 3.0)), tolerance=0.1,
+        "The eye ray through the middle of the screen (q = 0.5) meets the segment where? "
+        "Drag the marker there.",
+        answer=seg.point(seg.world_parameter(0.5))[0],
+        draw=lambda ax: plot_projection(ax, seg, n_steps=1),  # the ends' rays only
+        xlim=(-1.5, 2.5), ylim=(-0.2, 3.5), along=((-1.0, 1.5), (2.0, 3.0)), tolerance=0.1,
+        explain="Equal steps on the screen are unequal steps on the segment: t = 1/3.",
     )
 
 Order: ``answer`` lists the items in the right order, or is None when no order works
