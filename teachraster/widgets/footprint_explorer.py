@@ -27,7 +27,8 @@ from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 def floor_scene(width: int, height: int, tilt: float, repeats: int, texels: int = 64) -> dict:
     """The data the page needs: the rendered floor, per pixel uv and derivatives (None where
-    the floor is not), the texture's grey values and its number of levels."""
+    the floor is not; 8 significant digits), the texture's grey values and its number of
+    levels."""
     camera = Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0, near=0.05,
                     far=50.0)  # fmt: skip
     texture = checkerboard(8, texels)
@@ -39,8 +40,9 @@ def floor_scene(width: int, height: int, tilt: float, repeats: int, texels: int 
     covered = frame.coverage.ravel()
     per_pixel = [frame.attrs.reshape(-1, 2), frame.ddx[..., :2].reshape(-1, 2),
                  frame.ddy[..., :2].reshape(-1, 2)]  # fmt: skip
-    uv_, dx, dy = ([p.tolist() if ok else None for p, ok in zip(a, covered, strict=True)]
-                   for a in per_pixel)  # fmt: skip
+    # 8 significant digits: the picture's precision, half the bytes of a double's 17
+    uv_, dx, dy = ([[float(f"{v:.8g}") for v in p] if ok else None
+                    for p, ok in zip(a, covered, strict=True)] for a in per_pixel)  # fmt: skip
     return {"width": width, "height": height, "repeats": repeats, "texW": texels,
             "texH": texels, "q": len(mipmap(texture)) - 1, "tilt": tilt,
             "texture": np.round(texture.mean(axis=-1), 4).ravel().tolist(),
