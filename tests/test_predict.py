@@ -126,3 +126,35 @@ def test_headless_notebook_shows_answer_and_figure_without_waiting(monkeypatch):
     assert "<details>" in text and text.count("src='data:image/png;base64,") == 1
     assert len(outputs) == 1  # one HTML output, the figure folded inside it
     assert not any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in outputs)
+
+
+def test_check_waits_for_an_answer():
+    q = Predict("How many?", answer=10, tolerance=1, headless=False)
+    assert q.check.disabled  # nothing given yet
+    q.check.click()  # even from code: no answer, nothing revealed
+    assert not q.revealed and q.feedback.value == ""
+    q.control.value = "abc"
+    assert q.check.disabled
+    q.control.value = "9.5"
+    assert not q.check.disabled
+    q.check.click()
+    assert q.revealed and q.correct is True
+    q.control.value = ""
+    assert q.check.disabled
+    q.close()
+    c = Predict("Which?", ["a", "b"], answer="a", headless=False)
+    assert c.check.disabled
+    c.control.value = "b"
+    assert not c.check.disabled
+    c.close()
+
+
+def test_numbers_are_read_as_students_type_them():
+    q = Predict("What fraction?", answer=0.75, tolerance=0.01, headless=False)
+    for typed, value in [("3/4", 0.75), ("0,75", 0.75), ("75 %", 75.0), ("1e-1", 0.1)]:
+        q.control.value = typed
+        assert q.given == pytest.approx(value)
+    for typed in ["", "3/0", "nan", "inf", "three"]:
+        q.control.value = typed
+        assert q.given is None and q.check.disabled
+    q.close()

@@ -101,3 +101,76 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     if legend:
         ax.legend(loc="upper left", fontsize=11, framealpha=0.9)
     return art
+
+
+def footprint_contains(uv, ddx, ddy, texture_shape, point) -> np.ndarray:
+    """Which pixels' footprint ellipses (as :func:`plot_footprint` draws them) hold ``point``.
+
+    The ellipse of a pixel has the derivative vectors (halved, in texels) as conjugate
+    semi-diameters: ``c + (cos t · a + sin t · b) / 2``; ``point`` (texels of level 0) lies in
+    it when ``2 (point - c) = s a + t b`` has ``s² + t² <= 1``. Pixels with a NaN
+    coordinate (not covered) or a degenerate footprint hold nothing.
+
+    Parameters
+    ----------
+    uv, ddx, ddy : (..., k) array-like, k >= 2
+        Texture coordinates and their screen-space derivatives per pixel.
+    texture_shape : tuple
+        ``(H, W)`` or ``(H, W, C)`` of level 0.
+    point : (2,) array-like
+        A point in texels of level 0, ``(u W, v H)``.
+
+    Returns
+    -------
+    (...) bool
+
+    Examples
+    --------
+    >>> footprint_contains([[0.5, 0.5]], [[4 / 64, 0]], [[0, 2 / 64]], (64, 64), [33.9, 32.0])
+    array([ True])
+    """
+    h, w = texture_shape[:2]
+    scale = np.array([w, h], dtype=float)
+    c = np.asarray(uv, float)[..., :2] * scale
+    a = np.asarray(ddx, float)[..., :2] * scale
+    b = np.asarray(ddy, float)[..., :2] * scale
+    r = 2.0 * (np.asarray(point, float) - c)
+    det = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = (r[..., 0] * b[..., 1] - r[..., 1] * b[..., 0]) / det
+        t = (a[..., 0] * r[..., 1] - a[..., 1] * r[..., 0]) / det
+        return (det != 0) & (s * s + t * t <= 1.0)
+
+
+def trilinear_reads(uv, ddx, ddy, texture_shape, point) -> np.ndarray:
+    """Which pixels' trilinear filter fetches a texel holding ``point`` (texels of level 0).
+
+    A pixel reads, at each level L it uses (⌊λ⌋, and ⌊λ⌋ + 1 where the blend weight is not
+    0; level 0 where the texture is magnified), the 2 × 2 texels around ``u W_L - ½``,
+    ``v H_L - ½`` (:func:`teachraster.pipeline.texturing.texel_fetch.filtered`); a texel of
+    level L covers ``2**L`` texels of level 0 each way. Positions are unwrapped: the floor's
+    repeats are told apart.
+
+    Examples
+    --------
+    >>> trilinear_reads([[0.5, 0.5]], [[1 / 64, 0]], [[0, 1 / 64]], (64, 64), [31.2, 32.9])
+    array([ True])
+    """
+    from ..pipeline.texturing.mip_pyramid import level_sizes
+    from ..pipeline.texturing.texture_filters import linear_levels, mip_level
+
+    h, w = texture_shape[:2]
+    q = len(level_sizes(h, w)) - 1
+    uv = np.asarray(uv, float)[..., :2]
+    lam = mip_level(ddx, ddy, texture_shape)
+    first, second, t = linear_levels(np.nan_to_num(lam, nan=0.0), q)
+    p = np.asarray(point, float)
+    out = np.zeros(uv.shape[:-1], dtype=bool)
+    for level, use in ((first, np.ones_like(t, bool)), (second, t > 0)):
+        size = 2.0**level
+        x0 = np.floor(uv[..., 0] * (w / size) - 0.5)  # the level's width is w / 2**L
+        y0 = np.floor(uv[..., 1] * (h / size) - 0.5)
+        inside = ((p[0] >= x0 * size) & (p[0] < (x0 + 2) * size)
+                  & (p[1] >= y0 * size) & (p[1] < (y0 + 2) * size))  # fmt: skip
+        out |= use & inside
+    return out & np.isfinite(uv).all(axis=-1)

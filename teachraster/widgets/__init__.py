@@ -50,6 +50,17 @@ explorer draws ahead, or over the positions of the control a class names in
 ``_offline_sweep_`` (players step, explorers slide), else a snapshot of its widget tree with
 its picture; a class that knows better implements ``_offline_page_()``.
 
+Explorables computed in the page
+--------------------------------
+These carry their rules to the page (:mod:`teachraster.widgets.explorable`: plain JavaScript,
+each rule cross-checked against the engine by the tests), so they drag at the screen's frame
+rate with no kernel in the loop and stay live in ``teachraster html`` pages:
+:class:`PipelineMap` (00), :class:`CrackExplorer` (01), :class:`EdgeFunctionExplorer` (02),
+:class:`AttributeSurfaces` and :class:`EyeRayExplorer` (03/04), :class:`DepthValuesExplorer`
+(05b), :class:`FootprintExplorer` (09), :class:`DiamondExplorer` (12); and the predictions
+answered on a figure, :class:`PredictPixels`, :class:`PredictPoint`, :class:`PredictOrder`
+(:mod:`teachraster.widgets.predict_figure`).
+
 Figures
 -------
 ``backend="auto"`` (the default) puts an interactive ipympl canvas in the widget under
@@ -68,21 +79,29 @@ Example
 >>> player.close()
 """
 
+from .attribute_surfaces import AttributeSurfaces, EyeRayExplorer
 from .blending import BlendingExplorer
 from .case_picker import CasePicker
+from .crack_explorer import CrackExplorer
 from .depth_explorer import DepthPrecisionExplorer
+from .depth_values import DepthValuesExplorer
 from .display import BACKENDS, FigureDisplay, resolve_backend
 from .dragging import DragFigure
+from .edge_explorer import EdgeFunctionExplorer
 from .editor import TriangleEditor
 from .filter_explorer import FilterExplorer
+from .footprint_explorer import FootprintExplorer
 from .frame_inspector import FrameInspector
 from .frames import FramesWidget
 from .inspector import PixelInspector
+from .line_diamonds import DiamondExplorer
 from .line_player import LinePlayer
 from .live_slider import LiveSlider
+from .pipeline_map import PipelineMap
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .predict import Predict
+from .predict_figure import PredictOrder, PredictPixels, PredictPoint
 from .projection_explorer import ProjectionExplorer
 from .textured import TexturedPlaneViewer
 from .tiles import TileExplorer
@@ -90,20 +109,31 @@ from .zbuffer_stepper import ZBufferStepper
 
 __all__ = [
     "FrameInspector",
+    "AttributeSurfaces",
     "BACKENDS",
     "BlendingExplorer",
     "CasePicker",
+    "CrackExplorer",
     "DepthPrecisionExplorer",
+    "DepthValuesExplorer",
+    "DiamondExplorer",
     "DragFigure",
+    "EdgeFunctionExplorer",
+    "EyeRayExplorer",
     "FigureDisplay",
     "FilterExplorer",
+    "FootprintExplorer",
     "FramesWidget",
     "FillPlayer",
     "LinePlayer",
     "LiveSlider",
+    "PipelineMap",
     "PixelInspector",
     "PlaneExplorer",
     "Predict",
+    "PredictOrder",
+    "PredictPixels",
+    "PredictPoint",
     "ProjectionExplorer",
     "TexturedPlaneViewer",
     "TileExplorer",

@@ -64,6 +64,24 @@ def is_headless() -> bool:
     return os.environ.get("MPLBACKEND", "").strip().lower() == "agg"
 
 
+def parse_number(text) -> float | None:
+    """A typed number, or None: ``"0,25"`` (a decimal comma), ``"3/4"``, ``"20 %"`` (the
+    number 20: the question says what it counts), ``"1e-3"``; None for anything else.
+
+    >>> parse_number("3/4"), parse_number(" 20 % "), parse_number("0,5"), parse_number("")
+    (0.75, 20.0, 0.5, None)
+    """
+    t = str(text).strip().replace(",", ".").removesuffix("%").strip()
+    try:
+        if t.count("/") == 1:
+            num, den = (float(p) for p in t.split("/"))
+            return num / den if den != 0 else None
+        value = float(t)
+    except ValueError:  # empty or not a number yet
+        return None
+    return value if value == value and abs(value) != float("inf") else None
+
+
 def _check_arguments(question, choices, answer, tolerance):
     """Validate the arguments; return the choices as a tuple (or None) and the tolerance."""
     if not isinstance(question, str) or not question.strip():
@@ -162,13 +180,27 @@ class Predict:
             self.control = widgets.Text(
                 placeholder="your number", layout=widgets.Layout(width="12em")
             )
-        self.check = widgets.Button(description="Check", button_style="primary")
-        self.check.on_click(lambda _: self.reveal())
+        # Check waits for an answer: a prediction revealed without one is no prediction
+        self.check = widgets.Button(description="Check", button_style="primary", disabled=True,
+                                    tooltip="give your answer first")  # fmt: skip
+        self.check.on_click(lambda _: self._checked())
+        self.control.observe(self._answer_changed, "value")
         self.feedback = widgets.HTML()
         self.output = widgets.Output()
         prompt = widgets.HTML(f"<b>Predict first.</b> {self.question}")
         row = widgets.HBox([self.control, self.check], layout=widgets.Layout(flex_flow="row wrap"))
         self.widget = widgets.VBox([prompt, row, self.feedback, self.output])
+
+    def _answer_changed(self, _change=None) -> None:
+        """Check is enabled exactly while a valid answer is given."""
+        self.check.disabled = self.given is None
+        self.check.tooltip = "" if self.given is not None else "give your answer first"
+
+    def _checked(self) -> None:
+        """The Check button: reveal, but only once an answer is given (a click from code on
+        the disabled button does nothing either)."""
+        if self.given is not None:
+            self.reveal()
 
     @property
     def given(self):
@@ -176,10 +208,7 @@ class Predict:
         value = self.control.value
         if self.choices:
             return value
-        try:
-            return float(str(value).replace(",", "."))
-        except ValueError:  # empty or not a number yet
-            return None
+        return parse_number(value)
 
     @property
     def correct(self) -> bool | None:

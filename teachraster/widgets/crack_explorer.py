@@ -1,0 +1,72 @@
+"""``CrackExplorer``: lesson 01's cracks and double draws, on random pairs of triangles.
+
+Ek (*Triangles and Perspective Correct Interpolation*, §1.1) fills span by span between edge
+crossings. In floating point a crossing that should be exactly a pixel centre can land a hair
+to either side: the two triangles sharing that edge then both draw the pixel, or neither does.
+The explorer fills a random pair (vertices on pixel centres, sharing an edge) three ways side
+by side, the float crossing + ceil, the float DDA (x += Δu/Δv) and the integer edge functions,
+marks the tie pixels each gives to the wrong triangle, the cracked and the doubly drawn ones,
+rerolls, and keeps a running tally. (Measured: when both triangles evaluate the shared edge
+alike, as lesson 01's loops do, rounding never cracks it or draws a pixel twice; it gives the
+tie to the wrong triangle. Evaluated from opposite ends, it can crack, rarely.)
+
+Computed in the page (``static/raster_rules.js``, ``static/explore_cracks.js``); the tests
+compare it with :mod:`teachraster.study.naive_spans` and :func:`teachraster.rasterize`.
+"""
+
+from __future__ import annotations
+
+import operator
+
+from ..core.validate import as_size
+from .explorable import Explorable, esm_source
+
+
+class CrackExplorer(Explorable):
+    """Random pairs of triangles sharing an edge, filled three ways in the page.
+
+    Parameters
+    ----------
+    width, height : int
+        The grid of each panel (at most 40 each: three panels share a notebook column).
+    seed : int
+        Seed of the page's random pairs (the same seed draws the same pairs; the default's
+        first pair shows the float DDA giving a tie to the wrong triangle).
+
+    Attributes
+    ----------
+    state : dict
+        ``seed``, ``roll`` (how many rerolls since the first pair), ``asListed`` (edges
+        evaluated from the end each triangle lists first) and ``tally`` (per fill: ``pairs``,
+        ``faulty`` pairs with a crack or double draw, ``swappedPairs`` with a tie given to the
+        wrong triangle, ``triangles``, ``wrongTriangles`` unlike the integer fill, ``cracks``,
+        ``doubles`` and ``swapped`` in pixels), as of the page's last change.
+
+    Examples
+    --------
+    >>> ex = CrackExplorer(seed=3)
+    >>> ex.state["roll"], ex.data["width"]
+    (0, 12)
+    >>> ex.state["asListed"]
+    False
+    """
+
+    _esm = esm_source("raster_rules", "explore_cracks")
+    noun = "crack explorer"
+    title = "Ties on a shared edge: stolen pixels, cracks and double draws"
+
+    def __init__(self, width: int = 12, height: int = 12, *, seed: int = 9) -> None:
+        width, height = as_size("width", width), as_size("height", height)
+        if max(width, height) > 40:
+            raise ValueError(f"width and height must be at most 40, got {width}x{height}")
+        seed = operator.index(seed)
+        if not 0 <= seed < 2**32:
+            raise ValueError(f"seed must be in [0, 2**32), got {seed}")
+        super().__init__()
+        self.data = {"width": width, "height": height, "seed": seed}
+        self.state = {"seed": seed, "roll": 0, "asListed": False}
+
+    @property
+    def tally(self) -> dict:
+        """The page's running tally (empty until a page has shown the explorer)."""
+        return dict(self.state.get("tally", {}))

@@ -1,0 +1,426 @@
+"""Predictions answered by acting on a figure, revealed by the figure itself.
+
+A :class:`~teachraster.widgets.Predict` takes a choice or a number. These take an action on
+the lesson's own picture, where the geometry is: click the pixels you expect lit, drag a
+marker to where a point lands, put items in order. Check stays disabled until an answer is
+given; then the figure itself shows the answer over the student's (the true pixels outlined,
+the true point beside the marker, each item's place marked), with a verdict and the
+explanation.
+
+The picture is drawn once by the kernel (matplotlib: the lesson's ``draw(ax)``); marking,
+checking and revealing happen in the page (``static/predict_figure.js``), so a question also
+works in a ``teachraster html`` page with no kernel. The student's answer reaches the kernel
+(``q.given``, ``q.correct``, ``q.revealed``), and a notebook saved and reopened keeps the
+question, its picture and, once checked, the verdict.
+
+API for lessons (one example each)
+----------------------------------
+Pixels: the answer is a (height, width) bool mask; ``draw(ax)`` adds to the pixel grid
+(whose data coordinates are pixels, y down)::
+
+    from teachraster.plotting import plot_triangle
+    from teachraster.widgets import PredictPixels
+
+    tri = tr.Triangle([[1.5, 1.5], [9.5, 3.5], [3.5, 8.5]])
+    PredictPixels(
+        "Click the pixels this triangle covers.",
+        answer=tr.rasterize(tri, 12, 10).coverage,
+        draw=lambda ax: plot_triangle(ax, tri, arrows=False),
+        explain="A pixel is covered when its centre is inside (top-left rule on ties).",
+    )
+
+Point: the answer is (x, y) in the data coordinates of ``draw``'s Axes (``xlim``, ``ylim``
+set by the widget); ``along`` keeps the marker on a segment; within ``tolerance`` is right::
+
+    from teachraster.plotting.projection import Segment, plot_projection
+    from teachraster.widgets import PredictPoint
+
+    seg = Segment(x0=-1.0, z0=1.5, x1=2.0, z1=3.0)
+    PredictPoint(
+        "The eye ray through the middle of the screen (q = 0.5) meets the segment where? "
+        "Drag the marker there.",
+        answer=seg.point(seg.world_parameter(0.5))[0],
+        draw=lambda ax: plot_projection(ax, seg, n_steps=1),  # the ends' rays only
+        xlim=(-1.5, 2.5), ylim=(-0.2, 3.5), along=((-1.0, 1.5), (2.0, 3.0)), tolerance=0.1,
+        explain="Equal steps on the screen are unequal steps on the segment: t = 1/3.",
+    )
+
+Order: ``answer`` lists the items in the right order, or is None when no order works
+(``allow_impossible=True`` offers "no order works")::
+
+    PredictOrder(
+        "Order the three sticks from nearest to farthest.",
+        items=["red", "green", "blue"], answer=None, allow_impossible=True,
+        explain="Each stick is in front of one and behind the other: a cycle.",
+    )
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+from ..core.validate import as_finite, as_float
+from ..plotting.frames import encode_png, frame_rgba
+from .common import font_scale, style_context
+from .explorable import Explorable, esm_source
+
+
+def _check_question(question, explain) -> tuple[str, str]:
+    if not isinstance(question, str) or not question.strip():
+        raise TypeError(f"question must be a non-empty str, got {question!r}")
+    if not isinstance(explain, str):
+        raise TypeError(f"explain must be a str (HTML), got {type(explain).__name__}")
+    return question, explain
+
+
+def _check_draw(draw) -> Callable | None:
+    if draw is not None and not callable(draw):
+        raise TypeError(f"draw must be callable (it draws on an Axes) or None, got {draw!r}")
+    return draw
+
+
+def grid_axes(fig, width: int, height: int, side: float):
+    """Size ``fig`` for a ``width`` x ``height`` pixel grid (longer side ``side`` inches) with
+    room for the row and column labels only, and add its Axes."""
+    s = font_scale()
+    aw, ah = (side, side * height / width) if width >= height else (side * width / height, side)
+    left, top, right, bottom = 0.75 * s, 0.75 * s, 0.15, 0.15
+    fw, fh = left + aw + right, top + ah + bottom
+    fig.set_size_inches(fw, fh)
+    return fig.add_axes((left / fw, bottom / fh, aw / fw, ah / fh))
+
+
+def figure_picture(draw, axes_for, figsize, style) -> dict:
+    """Draw a figure once: ``axes_for(fig)`` makes and sets up its Axes, ``draw(ax)`` adds the
+    lesson's artists. Returns the PNG (base64), its size in pixels and the transform from
+    data coordinates to picture pixels from the top left, ``[x0, y0, sx, sy]``."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    with style_context(style):
+        fig = Figure(figsize=figsize, dpi=96)
+        FigureCanvasAgg(fig)
+        ax = axes_for(fig)  # in the style: its fonts size the margins
+        if draw is not None:
+            draw(ax)
+        fig.canvas.draw()
+        rgba = frame_rgba(fig)
+    h, w = rgba.shape[:2]
+    bbox = ax.get_window_extent()
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    sx, sy = bbox.width / (x1 - x0), -bbox.height / (y1 - y0)
+    return {"png": base64.b64encode(encode_png(rgba)).decode("ascii"), "size": [w, h],
+            "transform": [bbox.x0 - sx * x0, (h - bbox.y0) - sy * y0, sx, sy]}  # fmt: skip
+
+
+class FigurePrediction(Explorable):
+    """What the three kinds share: the question, Check, the verdict, the stand-in."""
+
+    _esm = esm_source("predict_figure")
+    noun = "question"
+    title = "Predict first"
+
+    def __init__(self, question: str, explain: str, data: dict) -> None:
+        super().__init__()
+        self.question, self.explain = _check_question(question, explain)
+        self.data = {"question": question, "explain": explain, **data}
+        self.state = {"given": None, "revealed": False}
+        self.observe(self._on_state, "state")
+
+    def _on_state(self, change) -> None:
+        if change["new"].get("revealed") and not change["old"].get("revealed"):
+            self._update_standin()  # the verdict goes into the saved notebook
+
+    @property
+    def given(self):
+        """The student's answer (None before one is given)."""
+        return self.state.get("given")
+
+    @property
+    def revealed(self) -> bool:
+        """Whether Check was pressed (in the page, or :meth:`check` from code)."""
+        return bool(self.state.get("revealed"))
+
+    def check(self) -> None:
+        """Reveal, as the page's Check does: only once an answer is given."""
+        if self.given is not None or self._answered():
+            self.state = {**self.state, "revealed": True}
+
+    def _answered(self) -> bool:
+        return False
+
+    def verdict(self) -> str:
+        """The verdict in words (HTML), as the page says it."""
+        raise NotImplementedError
+
+    def standin_text(self) -> str:
+        text = f"<b>Predict first.</b> {self.question}"
+        if self.revealed:
+            text += f"<div><i>{self.verdict()}</i></div>"
+        return text
+
+    def _standin(self) -> str:
+        if not self.picture and self.data.get("png"):
+            self.picture = base64.b64decode(self.data["png"])  # the question's own picture
+        return super()._standin()
+
+
+class PredictPixels(FigurePrediction):
+    """Click the pixels you expect lit on a pixel grid; Check outlines the true ones.
+
+    Parameters
+    ----------
+    question : str
+        The question (HTML).
+    answer : (height, width) bool array-like
+        The pixels that are lit (e.g. ``tr.rasterize(...).coverage``).
+    draw : callable, optional
+        ``draw(ax)`` adds the lesson's artists (a triangle, a line) to the grid's Axes,
+        whose data coordinates are pixels (x right, y down).
+    explain : str
+        Shown with the verdict (HTML).
+    centres : bool
+        Mark the pixel centres (where coverage is decided).
+    side : float
+        The grid's longer side in inches.
+    style : str, optional
+        The plotting style of the picture.
+
+    Attributes
+    ----------
+    given : list of [row, col] or None
+        The pixels the student marked.
+    correct : bool or None
+        Whether they are exactly the lit ones (None before an answer).
+
+    Examples
+    --------
+    >>> q = PredictPixels("Which?", answer=np.eye(3, dtype=bool))
+    >>> q.correct is None
+    True
+    >>> q.given = [[0, 0], [1, 1], [2, 2]]
+    >>> q.correct, q.counts()
+    (True, {'right': 3, 'extra': 0, 'missed': 0, 'total': 3})
+    """
+
+    def __init__(self, question: str, answer, *, draw=None, explain: str = "",
+                 centres: bool = True, side: float = 5.0, style: str | None = "classroom") -> None:  # fmt: skip
+        mask = np.asarray(answer)
+        if mask.dtype != bool or mask.ndim != 2 or not mask.size:
+            raise TypeError(f"answer must be a (height, width) bool array, got {mask.dtype} "
+                            f"{mask.shape}")  # fmt: skip
+        height, width = mask.shape
+        if width * height > 64 * 64:
+            raise ValueError(f"answer: at most 64 x 64 pixels to click, got {width}x{height}")
+        draw = _check_draw(draw)
+
+        def axes_for(fig):
+            from ..plotting import plot_pixel_centres, plot_pixel_grid
+
+            ax = grid_axes(fig, width, height, side)
+            plot_pixel_grid(ax, width, height)
+            if centres:
+                plot_pixel_centres(ax, width, height)
+            return ax
+
+        picture = figure_picture(draw, axes_for, (side, side), style)
+        self.answer = mask.copy()
+        super().__init__(question, explain, {"kind": "pixels", "width": width, "height": height,
+                                             "answer": np.argwhere(mask).tolist(), **picture})  # fmt: skip
+        self.state = {"given": [], "revealed": False}
+
+    @property
+    def given(self):
+        """The marked pixels as [row, col] pairs (None before any is marked)."""
+        given = self.state.get("given") or []
+        return [list(map(int, rc)) for rc in given] or None
+
+    @given.setter
+    def given(self, pixels) -> None:
+        rows = [[int(r), int(c)] for r, c in (pixels or [])]
+        self.state = {**self.state, "given": rows}
+
+    def counts(self) -> dict | None:
+        """``right``, ``extra`` (marked, not lit), ``missed`` and ``total`` lit."""
+        if self.given is None:
+            return None
+        mine = {tuple(rc) for rc in self.given}
+        truth = {tuple(rc) for rc in np.argwhere(self.answer).tolist()}
+        right = len(mine & truth)
+        return {"right": right, "extra": len(mine) - right, "missed": len(truth) - right,
+                "total": len(truth)}  # fmt: skip
+
+    @property
+    def correct(self) -> bool | None:
+        c = self.counts()
+        return None if c is None else c["extra"] == 0 and c["missed"] == 0
+
+    def verdict(self) -> str:
+        c = self.counts() or {"right": 0, "extra": 0, "missed": 0, "total": int(self.answer.sum())}
+        word = "Right." if self.correct else "Not quite."
+        return (f"{word} You marked {c['right'] + c['extra']}: {c['right']} right, {c['extra']} "
+                f"too many, {c['missed']} missed; the answer lights {c['total']}.")  # fmt: skip
+
+
+class PredictPoint(FigurePrediction):
+    """Drag a marker to where you expect a point; Check shows the true point beside it.
+
+    Parameters
+    ----------
+    question : str
+    answer : (2,) array-like
+        The true point, in the data coordinates of the figure.
+    draw : callable
+        ``draw(ax)`` draws the figure (the widget sets ``xlim`` and ``ylim`` afterwards).
+    xlim, ylim : (2,) floats
+        The Axes' limits (``ylim`` may run downwards, as pixel grids do).
+    start : (2,) array-like, optional
+        Where the marker starts (default: the middle of the Axes, or of ``along``).
+    along : ((x0, y0), (x1, y1)), optional
+        Keep the marker on this segment.
+    tolerance : float
+        A marker this close to the answer (data units) is right.
+    units : str
+        What the distance is measured in, for the verdict ("px", "units").
+    explain, figsize, style : as above.
+
+    Examples
+    --------
+    >>> q = PredictPoint("Where?", answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4),
+    ...                  tolerance=0.25)
+    >>> q.given = (1.1, 2.1)
+    >>> q.correct
+    True
+    """
+
+    def __init__(self, question: str, answer, *, draw, xlim, ylim, start=None, along=None,
+                 tolerance: float = 0.0, units: str = "units", explain: str = "",
+                 figsize=(7.0, 5.0), style: str | None = "classroom") -> None:  # fmt: skip
+        answer = as_finite("answer", answer, (2,))
+        xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
+        if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
+            raise ValueError(f"xlim and ylim must span a range, got {xlim}, {ylim}")
+        tolerance = as_float("tolerance", tolerance)
+        if not tolerance >= 0:
+            raise ValueError(f"tolerance must be >= 0, got {tolerance}")
+        if along is not None:
+            along = as_finite("along", along, (2, 2))
+        if start is None:
+            start = along.mean(axis=0) if along is not None else [xlim.mean(), ylim.mean()]
+        start = as_finite("start", start, (2,))
+        draw = _check_draw(draw)
+
+        def axes_for(fig):
+            ax = fig.add_subplot()
+            fig.set_layout_engine("constrained")
+            return ax
+
+        def drawn(ax):
+            if draw is not None:
+                draw(ax)
+            ax.set(xlim=tuple(xlim), ylim=tuple(ylim))
+
+        picture = figure_picture(drawn, axes_for, figsize, style)
+        self.answer, self.tolerance = answer, tolerance
+        span = min(abs(xlim[1] - xlim[0]), abs(ylim[1] - ylim[0]))
+        super().__init__(question, explain, {
+            "kind": "point", "answer": answer.tolist(), "start": start.tolist(),
+            "along": None if along is None else along.tolist(), "tolerance": tolerance,
+            "units": html.escape(units), "keyStep": span / 100, **picture})  # fmt: skip
+
+    @FigurePrediction.given.setter
+    def given(self, point) -> None:
+        self.state = {**self.state, "given": as_finite("point", point, (2,)).tolist()}
+
+    @property
+    def gap(self) -> float | None:
+        """Distance from the marker to the answer (None before the marker is moved)."""
+        if self.given is None:
+            return None
+        return float(np.hypot(*(np.asarray(self.given) - self.answer)))
+
+    @property
+    def correct(self) -> bool | None:
+        return None if self.gap is None else self.gap <= self.tolerance
+
+    def verdict(self) -> str:
+        word = "Right." if self.correct else "Not quite."
+        return (f"{word} Your marker is {self.gap:.3g} {self.data['units']} from the answer "
+                f"({self.answer[0]:.3g}, {self.answer[1]:.3g}).")  # fmt: skip
+
+
+class PredictOrder(FigurePrediction):
+    """Put items in order (or say no order works); Check marks each place.
+
+    Parameters
+    ----------
+    question : str
+    items : list of str
+        The items (HTML), in the order shown first.
+    answer : list of str or None
+        The items in the right order, or None when no order is right.
+    allow_impossible : bool
+        Offer "no order works" (``impossible_label``); needed when ``answer`` is None.
+    draw : callable, optional
+        ``draw(ax)`` draws a picture of the items above them.
+    explain, figsize, style : as above.
+
+    Examples
+    --------
+    >>> q = PredictOrder("Nearest first?", ["a", "b", "c"], answer=["b", "a", "c"])
+    >>> q.given = ["b", "a", "c"]
+    >>> q.correct
+    True
+    """
+
+    def __init__(self, question: str, items: Sequence[str], answer: Sequence[str] | None, *,
+                 allow_impossible: bool = False, impossible_label: str = "no order works",
+                 draw=None, explain: str = "", figsize=(7.0, 3.5),
+                 style: str | None = "classroom") -> None:  # fmt: skip
+        items = [str(i) for i in items]
+        if len(items) < 2 or len(set(items)) != len(items):
+            raise ValueError(f"items must be at least two different items, got {items!r}")
+        if answer is None:
+            if not allow_impossible:
+                raise ValueError("answer is None (no order works): set allow_impossible=True")
+        elif sorted(map(str, answer)) != sorted(items):
+            raise ValueError(f"answer must order the items {items!r}, got {answer!r}")
+        picture = {}
+        if draw is not None:
+            _check_draw(draw)
+            picture = figure_picture(draw, lambda fig: fig.add_subplot(), figsize, style)
+        self.items = items
+        self.answer = None if answer is None else [str(a) for a in answer]
+        super().__init__(question, explain, {
+            "kind": "order", "items": items, "answer": self.answer,
+            "allowImpossible": bool(allow_impossible), "impossibleLabel": impossible_label,
+            "hint": "Drag the items into order (or focus one and use the arrow keys).",
+            **picture})  # fmt: skip
+        self.state = {"given": None, "acted": False, "revealed": False}
+
+    @FigurePrediction.given.setter
+    def given(self, order) -> None:
+        if order is not None:
+            order = [str(i) for i in order]
+            if sorted(order) != sorted(self.items):
+                raise ValueError(f"order must hold the items {self.items!r}, got {order!r}")
+        self.state = {**self.state, "given": order, "acted": True}
+
+    def _answered(self) -> bool:
+        return bool(self.state.get("acted"))
+
+    @property
+    def correct(self) -> bool | None:
+        if not self._answered():
+            return None
+        return self.given == self.answer
+
+    def verdict(self) -> str:
+        word = "Right." if self.correct else "Not quite."
+        right = (self.data["impossibleLabel"] if self.answer is None
+                 else " → ".join(self.answer))  # fmt: skip
+        return f"{word} The answer: {right}."

@@ -1,0 +1,143 @@
+// Lessons 03/04: an attribute f over the screen triangle, in 3-D (drag to turn it).
+//
+// Over a flat triangle (every w equal) f is a plane: the affine interpolation Σ λ_k f_k. Over
+// a perspective one, f/w and 1/w are still planes over the screen (Ek, eq. 19), and the
+// perspective-correct f is their ratio, a curved sheet; the affine plane misses it. The
+// w slider moves one vertex away from the eye. The values are those of
+// teachraster.core.barycentrics.barycentric and core.interpolation.perspective_weights
+// (the tests compare them).
+
+// screen barycentrics λ of point p in the triangle xy (λ_k is 1 at vertex k)
+export function barycentrics(xy, p) {
+  const [a, b, c] = xy;
+  const area = edgeValue(a, b, c);
+  return [edgeValue(b, c, p) / area, edgeValue(c, a, p) / area, edgeValue(a, b, p) / area];
+}
+
+// every surface at p: λ, f/w, 1/w, their ratio (perspective-correct f) and the affine f
+export function surfaceValues(xy, w, f, p) {
+  const lam = barycentrics(xy, p);
+  const fw = lam[0] * (f[0] / w[0]) + lam[1] * (f[1] / w[1]) + lam[2] * (f[2] / w[2]);
+  const inv = lam[0] / w[0] + lam[1] / w[1] + lam[2] / w[2];
+  const affine = lam[0] * f[0] + lam[1] * f[1] + lam[2] * f[2];
+  return { lam, fw, inv, correct: fw / inv, affine };
+}
+
+// the largest |affine - correct| over the triangle, on an n-step barycentric grid
+export function largestGap(xy, w, f, n = 48) {
+  let best = { gap: 0, p: xy[0] };
+  for (let i = 0; i <= n; i++) {
+    for (let j = 0; i + j <= n; j++) {
+      const l = [i / n, j / n, (n - i - j) / n];
+      const p = [0, 1].map((k) => l[0] * xy[0][k] + l[1] * xy[1][k] + l[2] * xy[2][k]);
+      const s = surfaceValues(xy, w, f, p);
+      const gap = Math.abs(s.affine - s.correct);
+      if (gap > best.gap) best = { gap, p, s };
+    }
+  }
+  return best;
+}
+
+const SURFACES = [
+  ["correct", "f, perspective-correct = (f/w) / (1/w)", OKABE.blue],
+  ["affine", "f, affine (screen-space plane)", OKABE.orange],
+  ["fw", "f/w (a plane)", OKABE.purple],
+  ["inv", "1/w (a plane)", OKABE.green],
+];
+
+function mount(el, data, host) {
+  let state = { w: data.w, show: { correct: true, affine: true, fw: false, inv: false },
+    ...host.state() };
+  const root = frame(el, data.title,
+    "Height is the value. Drag the picture to turn it. With every w equal the triangle is " +
+    "flat on the screen and f is one plane; move v3 away (its w) and f/w and 1/w stay " +
+    "planes, but f, their ratio, becomes a curved sheet that the affine plane misses.");
+  const [canvas, ctx] = makeCanvas(640, 470, "the attribute surfaces over the screen triangle");
+  const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
+  const toggles = SURFACES.map(([key, name, colour]) => {
+    const b = button(name, (e) => {
+      state.show = { ...state.show, [key]: !state.show[key] };
+      b.setAttribute("aria-pressed", String(state.show[key]));
+      host.setState({ show: state.show });
+      paint.request(e);
+    }, state.show[key]);
+    b.style.borderLeft = `6px solid ${colour}`;
+    return b;
+  });
+  const wSlider = slider("w of v3", { min: 1, max: 8, step: 0.1, value: state.w[2],
+    format: (v) => v.toFixed(1) }, (v, e) => {
+    state.w = [state.w[0], state.w[1], v];
+    paint.request(e);
+  });
+  wSlider.input.addEventListener("change", () => host.setState({ w: state.w }));
+  root.append(element("div", { class: "tr-x-row" }, toggles),
+    element("div", { class: "tr-x-row" }, [wSlider]), canvas, readout);
+  const [W, H] = [data.width, data.height];
+  const zScale = 0.55 * Math.max(W, H); // a value of 1 stands this many pixels high
+  const cam = camera3d({ centre: [W / 2, H / 2, zScale / 2], scale: 330 / Math.max(W, H),
+    at: [320, 250], yaw: -0.5, elevation: 0.45 });
+
+  // the surfaces and the largest gap depend on w and on what is shown, not on the view:
+  // computed once per change, only projected again while the picture turns
+  let cached = { key: null };
+  function scene() {
+    const key = JSON.stringify([state.w, state.show]);
+    if (cached.key === key) return cached;
+    const { xy, f } = data;
+    const w = state.w;
+    const polys = surfacePieces([[0, 0], [W, 0], [W, H], [0, H]], () => 0, 6,
+      { fill: "#eee", alpha: 1, stroke: "#ccc", bias: -1e6 });
+    polys.push({ pts: xy.map(([x, y]) => [x, y, 0]), fill: "#bbb", alpha: 0.8, stroke: "#555",
+      bias: -1e5 });
+    for (const [name, , colour] of SURFACES) {
+      if (!state.show[name]) continue;
+      polys.push(...surfacePieces(xy, (x, y) => surfaceValues(xy, w, f, [x, y])[name] * zScale,
+        12, { fill: colour, alpha: 0.55, stroke: "rgba(255,255,255,0.25)" }));
+    }
+    cached = { key, polys, gap: largestGap(xy, w, f) };
+    return cached;
+  }
+
+  function draw() {
+    ctx.clearRect(0, 0, 640, 470);
+    const { xy, f } = data;
+    const w = state.w;
+    const { polys, gap } = scene();
+    drawPolygons(ctx, cam, polys);
+    if (state.show.correct && state.show.affine && gap.gap > 1e-9) {
+      const [x, y] = gap.p;
+      line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale], OKABE.vermillion, 3);
+      label3d(ctx, cam, [x, y, Math.max(gap.s.correct, gap.s.affine) * zScale],
+        ` gap ${fmt(gap.gap, 3)}`, OKABE.vermillion, "bold 14px sans-serif");
+    }
+    // the value axis at the screen's corner: 0, ½, 1
+    line3d(ctx, cam, [0, 0, 0], [0, 0, zScale], "#555", 1.5);
+    for (const v of [0, 0.5, 1]) label3d(ctx, cam, [0, 0, v * zScale], ` ${v}`, "#333");
+    xy.forEach(([x, y], k) => {
+      line3d(ctx, cam, [x, y, 0], [x, y, f[k] * zScale], "#444", 1, [3, 3]);
+      label3d(ctx, cam, [x, y, 0], ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, "#111",
+        "bold 13px sans-serif");
+    });
+    ctx.fillStyle = "#333";
+    ctx.font = "13px sans-serif";
+    ctx.fillText("grey: the screen and the triangle on it; height: the value (axis at the " +
+      "screen's corner)", 8, 462);
+    readout.innerHTML = gap.gap > 1e-9
+      ? `Largest |affine − perspective-correct| over the triangle: <b>${fmt(gap.gap, 3)}</b> ` +
+        `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)}), where f = ${fmt(gap.s.correct, 3)} ` +
+        `but the affine plane gives ${fmt(gap.s.affine, 3)}.`
+      : "Every w is equal: f/w and 1/w are scaled copies, their ratio is the affine plane " +
+        "itself (the two sheets coincide).";
+    host.picture(canvas);
+  }
+  const paint = painter(canvas, draw);
+  orbitDrag(canvas, cam, (e) => paint.request(e));
+  paint.now();
+  return {
+    setState(s) {
+      state = { ...state, ...s };
+      wSlider.set(state.w[2]);
+      paint.request();
+    },
+  };
+}

@@ -1,0 +1,303 @@
+// Lesson 01's cracks and double draws: two triangles sharing an edge, filled three ways.
+//
+// A pair of random triangles with their vertices on pixel centres share the edge p-q:
+// A = (p, q, r) and B = (q, p, s), r and s on either side. Each is filled by the float span
+// fill with computed crossings + ceil, by the float DDA (x += du/dv per raster line) and by
+// the integer edge functions of the engine. A pixel both fill is drawn twice; a centre on the
+// shared edge that the integer fill gives to one of them and that neither fills is a crack.
+// Reroll draws a new pair; the tally counts over every pair drawn.
+
+export const METHODS = [
+  ["crossing", "float crossing + ceil"],
+  ["dda", "float DDA: x += Δu/Δv"],
+  ["integer", "integer edge functions"],
+];
+
+// A random pair: four distinct pixel centres, r and s strictly on either side of p-q.
+export function randomPair(rand, W, H) {
+  const pick = () => [Math.floor(rand() * W) + 0.5, Math.floor(rand() * H) + 0.5];
+  for (;;) {
+    const [p, q, r, s] = [pick(), pick(), pick(), pick()];
+    if (p[0] === q[0] && p[1] === q[1]) continue;
+    const er = edgeValue(p, q, r);
+    const es = edgeValue(p, q, s);
+    if (er > 0 && es < 0) return [[p, q, r], [q, p, s]];
+    if (er < 0 && es > 0) return [[p, q, s], [q, p, r]];
+  }
+}
+
+// the pairs rolled from `seed`, `n` of them (the page's rolls, for the tests)
+export function rolls(seed, n, W, H) {
+  const rand = randomStream(seed);
+  return Array.from({ length: n }, () => randomPair(rand, W, H));
+}
+
+// Cracks, double draws and pixels differing from the integer fill, for one method: as
+// teachraster.study.naive_spans.shared_edge_faults.
+export function faults(first, second, W, H, method, asListed = false) {
+  const a = FILLS[method](first, W, H, asListed);
+  const b = FILLS[method](second, W, H, asListed);
+  const ea = edgeFunctionFill(first, W, H);
+  const eb = edgeFunctionFill(second, W, H);
+  const setup = setupTriangle(first);
+  const [p, q] = [setup.given[0], setup.given[1]];
+  const cracks = [];
+  const doubles = [];
+  const swapped = [];
+  const wrong = [0, 0];
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const i = r * W + c;
+      if (a[i] && b[i]) doubles.push([r, c]);
+      const onEdge = edgeValue(p, q, centreUnits(setup, r, c)) === 0;
+      if (onEdge && (ea[i] || eb[i]) && !a[i] && !b[i]) cracks.push([r, c]);
+      if (onEdge && a[i] !== b[i] && a[i] !== ea[i]) swapped.push([r, c]);
+      wrong[0] += a[i] !== ea[i] ? 1 : 0;
+      wrong[1] += b[i] !== eb[i] ? 1 : 0;
+    }
+  }
+  return { cracks, doubles, swapped, wrong, a: Array.from(a), b: Array.from(b) };
+}
+
+export function emptyTally() {
+  const per = () => ({ pairs: 0, faulty: 0, triangles: 0, wrongTriangles: 0, cracks: 0,
+    doubles: 0, swapped: 0, swappedPairs: 0 });
+  return { crossing: per(), dda: per(), integer: per() };
+}
+
+// add one pair's faults to the running tally (pure: returns a new tally)
+export function tallied(tally, pair, W, H, asListed = false) {
+  const out = JSON.parse(JSON.stringify(tally));
+  for (const [m] of METHODS) {
+    const f = faults(pair[0], pair[1], W, H, m, asListed);
+    const t = out[m];
+    t.pairs += 1;
+    t.triangles += 2;
+    t.faulty += f.cracks.length || f.doubles.length ? 1 : 0;
+    t.wrongTriangles += (f.wrong[0] ? 1 : 0) + (f.wrong[1] ? 1 : 0);
+    t.cracks += f.cracks.length;
+    t.doubles += f.doubles.length;
+    t.swapped += f.swapped.length;
+    t.swappedPairs += f.swapped.length ? 1 : 0;
+  }
+  return out;
+}
+
+// the tally over a list of pairs, from nothing
+export function tallyOver(pairs, W, H, asListed = false) {
+  return pairs.reduce((t, pair) => tallied(t, pair, W, H, asListed), emptyTally());
+}
+
+const pct = (k, n) => (n ? `${((100 * k) / n).toFixed(1)} %` : "–");
+
+export function tallyTable(tally) {
+  const rows = METHODS.map(([m, name]) => {
+    const t = tally[m];
+    return `<tr><td>${name}</td><td>${t.faulty} of ${t.pairs} (${pct(t.faulty, t.pairs)})</td>` +
+      `<td>${t.cracks} / ${t.doubles}</td>` +
+      `<td>${t.swappedPairs} (${pct(t.swappedPairs, t.pairs)}), ${t.swapped} px</td>` +
+      `<td>${t.wrongTriangles} of ${t.triangles} (${pct(t.wrongTriangles, t.triangles)})</td></tr>`;
+  });
+  return "<table><tr><th>fill</th><th>pairs cracked or drawn twice</th><th>cracked / double px</th>" +
+    "<th>pairs with a tie given to the wrong triangle</th><th>triangles unlike the integer fill</th>" +
+    `</tr>${rows.join("")}</table>`;
+}
+
+function mount(el, data, host) {
+  const W = data.width;
+  const H = data.height;
+  const state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false,
+    ...host.state() };
+  const root = frame(el, data.title,
+    "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
+    "panel fills both, A in blue and B in orange. <b>⇄</b>: a centre on the shared edge drawn " +
+    "by the wrong one of the two; <b style='color:#D55E00'>2</b>: drawn twice; " +
+    "<b style='color:#D55E00'>✕</b>: drawn by neither (a crack); dashed box: unlike the " +
+    "integer fill. Reroll for a new pair; the tally counts every pair drawn.");
+  const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
+  const gap = 26;
+  const m = { left: 8, top: 30 };
+  const panelW = W * cell;
+  const [canvas, ctx] = makeCanvas(m.left + 3 * panelW + 2 * gap + 8, m.top + H * cell + 26,
+    "the same pair of triangles filled three ways, cracks and double draws marked");
+  const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
+  const table = element("div");
+  root.append(crackControls(state, host, (n, e) => roll(n, e), (e) => paint.request(e)), canvas,
+    readout, table, element("div", { class: "tr-x-sub", html: CRACKS_NOTE }));
+  let rand = randomStream(state.seed);
+  let pair = null;
+  for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H); // the pair on show
+  if (!state.roll && !state.tally.integer.pairs) {
+    state.tally = tallied(state.tally, pair, W, H, state.asListed);
+  }
+  const ui = { hover: null };
+
+  function roll(n, e) {
+    for (let k = 0; k < n; k++) {
+      pair = randomPair(rand, W, H);
+      state.tally = tallied(state.tally, pair, W, H, state.asListed);
+    }
+    state.roll += n;
+    paint.request(e);
+    host.setState({ roll: state.roll, tally: state.tally });
+  }
+
+  function draw() {
+    ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
+    const found = METHODS.map(([meth]) => faults(pair[0], pair[1], W, H, meth, state.asListed));
+    const exact = found[2];
+    METHODS.forEach(([, name], k) => {
+      const x0 = m.left + k * (panelW + gap);
+      drawPanel(ctx, found[k], exact, pair, { x0, y0: m.top, cell, W, H });
+      ctx.fillStyle = "#111";
+      ctx.font = "bold 14px sans-serif";
+      ctx.fillText(name, x0, m.top - 16);
+    });
+    table.innerHTML = tallyTable(state.tally);
+    readout.innerHTML = explainPixel(pair, ui.hover, W, H, found, state.asListed);
+    host.picture(canvas);
+  }
+  const paint = painter(canvas, draw);
+  const point = (p, e) => {
+    ui.hover = p ? pixelUnder(p, m, cell, panelW, gap, W, H) : null;
+    paint.request(e);
+  };
+  pointerInput(canvas, { onHover: point, onClick: point });
+  onKeys(canvas, (e) => {
+    if (e.key === "r" || e.key === "Enter" || e.key === " ") {
+      e.preventDefault();
+      roll(1, e);
+    }
+  });
+  paint.now();
+  return {
+    setState(s) {
+      // the pair on show again only when the kernel moved it (not at the echo of our roll)
+      const moved = (s.seed !== undefined && s.seed !== state.seed)
+        || (s.roll !== undefined && s.roll !== state.roll);
+      Object.assign(state, s);
+      if (moved) {
+        rand = randomStream(state.seed);
+        for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H);
+      }
+      paint.request();
+    },
+  };
+}
+
+const CRACKS_NOTE = "Both triangles walk the shared edge from its upper end, as lesson 01's " +
+  "loops do: they round alike, so a tie goes to one of them, sometimes the wrong one, and the " +
+  "edge never cracks. Evaluated from the end each triangle lists first, the two round " +
+  "differently: then (rarely) it can.";
+
+// Reroll, a thousand more, the tally reset, and the edges evaluated as listed
+function crackControls(state, host, roll, repaint) {
+  const listed = button("evaluate each edge from the end its triangle lists first", (e) => {
+    state.asListed = !state.asListed;
+    listed.setAttribute("aria-pressed", String(state.asListed));
+    state.tally = emptyTally();
+    repaint(e);
+    host.setState({ asListed: state.asListed, tally: state.tally });
+  }, Boolean(state.asListed));
+  const reset = button("Reset the tally", (e) => {
+    state.tally = emptyTally();
+    repaint(e);
+    host.setState({ tally: state.tally });
+  });
+  return element("div", { class: "tr-x-row" }, [button("Reroll", (e) => roll(1, e)),
+    button("Roll 1000 more", (e) => roll(1000, e)), reset, listed]);
+}
+
+function pixelUnder(p, m, cell, panelW, gap, W, H) {
+  const k = Math.floor((p[0] - m.left) / (panelW + gap));
+  const x = p[0] - m.left - k * (panelW + gap);
+  const col = Math.floor(x / cell);
+  const row = Math.floor((p[1] - m.top) / cell);
+  if (k < 0 || k > 2 || col < 0 || col >= W || row < 0 || row >= H) return null;
+  return { panel: k, row, col };
+}
+
+function drawPanel(ctx, f, exact, pair, g) {
+  const { x0, y0, cell, W, H } = g;
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const i = r * W + c;
+      const [a, b] = [f.a[i], f.b[i]];
+      if (!a && !b) continue;
+      ctx.fillStyle = a && b ? "#f0a27a" : a ? "#9fd3f3" : "#f3d79c";
+      ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
+    }
+  }
+  drawGrid(ctx, x0, y0, W, H, cell, "#bbb");
+  // the pixel centres, those exactly on the shared edge larger: where the ties are
+  const setup = setupTriangle(pair[0]);
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const on = edgeValue(setup.given[0], setup.given[1], centreUnits(setup, r, c)) === 0;
+      ctx.fillStyle = on ? "#000" : "#999";
+      const d = on ? 5 : 2;
+      ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
+    }
+  }
+  // pixels unlike the integer fill: dashed boxes
+  ctx.setLineDash([3, 2]);
+  ctx.strokeStyle = "#000";
+  ctx.lineWidth = 1.5;
+  for (let i = 0; i < W * H; i++) {
+    if (f.a[i] === exact.a[i] && f.b[i] === exact.b[i]) continue;
+    const [r, c] = [Math.floor(i / W), i % W];
+    ctx.strokeRect(x0 + c * cell + 2, y0 + r * cell + 2, cell - 4, cell - 4);
+  }
+  ctx.setLineDash([]);
+  const px = ([x, y]) => [x0 + x * cell, y0 + y * cell];
+  const [A, B] = pair.map((t) => t.map(px));
+  for (const [t, colour] of [[A, "#0072B2"], [B, "#b86e00"]]) {
+    ctx.strokeStyle = colour;
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    t.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
+    ctx.closePath();
+    ctx.stroke();
+  }
+  ctx.strokeStyle = "#000";
+  ctx.lineWidth = 3;
+  ctx.beginPath();
+  ctx.moveTo(A[0][0], A[0][1]);
+  ctx.lineTo(A[1][0], A[1][1]);
+  ctx.stroke();
+  ctx.font = `bold ${Math.round(cell * 0.7)}px sans-serif`;
+  ctx.textAlign = "center";
+  ctx.fillStyle = OKABE.vermillion;
+  for (const [r, c] of f.doubles) ctx.fillText("2", x0 + (c + 0.5) * cell, y0 + (r + 0.78) * cell);
+  for (const [r, c] of f.cracks) ctx.fillText("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+  ctx.fillStyle = "#000";
+  for (const [r, c] of f.swapped) ctx.fillText("⇄", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+  ctx.textAlign = "left";
+  ctx.fillStyle = "#111";
+  ctx.font = "13px sans-serif";
+  const said = `${f.swapped.length} given to the wrong triangle, ${f.cracks.length} cracked, ` +
+    `${f.doubles.length} doubled`;
+  ctx.fillText(said, x0, y0 + H * cell + 16);
+}
+
+// every digit of a double that matters (17 significant), trailing zeros dropped
+const full = (x) => x.toPrecision(17).replace(/\.?0+$/, "");
+
+// the spans of the pixel's row, as each fill computed them
+export function explainPixel(pair, at, W, H, found, asListed = false) {
+  if (!at) return "Point at a pixel for its row's span ends in each fill.";
+  const { panel, row, col } = at;
+  const meth = METHODS[panel][0];
+  const ends = (t) => {
+    if (meth === "integer") return null;
+    const hit = spanRows(t, H, meth === "dda", asListed).find(([i]) => i === row);
+    return hit ? `${full(hit[1])} … ${full(hit[2])}` : "no span";
+  };
+  const f = found[panel];
+  const i = row * W + col;
+  const who = f.a[i] && f.b[i] ? "both (drawn twice)" : f.a[i] ? "A" : f.b[i] ? "B" : "neither";
+  const spans = meth === "integer" ? "decided by exact integer edge functions, no span ends"
+    : `A's span x = ${ends(pair[0])}; B's span x = ${ends(pair[1])}`;
+  return `<b>${METHODS[panel][1]}</b>, pixel row ${row}, column ${col} (centre x = ${col + 0.5}): ` +
+    `drawn by ${who}. Row ${row}: ${spans}.`;
+}

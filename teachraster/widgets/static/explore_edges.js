@@ -1,0 +1,458 @@
+// Lesson 02's edge functions, live: drag the vertices of two triangles that share an edge.
+//
+// Triangle A is v1 v2 v3, triangle B is v3 v2 v4 (it shares A's edge v2-v3, walked the other
+// way). At every pixel centre: the signs of the chosen triangle's E12, E23, E31; each
+// half-plane E > 0 tinted; each edge labelled top, left, right or bottom with its bias; the
+// centres exactly on the shared edge marked with the triangle that owns them. "3-D" shows
+// each E as a plane over the grid, cutting z = 0 along its edge.
+
+// E12, E23, E31 (Okabe-Ito; blue and orange are the triangles A and B)
+const EDGE_HUES = ["#CC79A7", "#009E73", "#D55E00"];
+const SIGN_COLOURS = { "+": "#0072B2", "−": "#D55E00", "0": "#000000" };
+
+// The picture's numbers for vertices `xy` (four, px): both set-ups, their coverage, the
+// signs at every centre and the owner of every centre on the shared edge. Pure: node checks
+// it against the engine (tests/test_explorables_js.py).
+export function edgeScene(xy, width, height, bits = SUBPIXEL_BITS) {
+  const triA = [xy[0], xy[1], xy[2]];
+  const triB = [xy[2], xy[1], xy[3]];
+  const A = setupTriangle(triA, bits);
+  const B = setupTriangle(triB, bits);
+  const covA = coverageGrid(A, width, height);
+  const covB = coverageGrid(B, width, height);
+  const shared = [];
+  const [p, q] = [A.given[1], A.given[2]];
+  for (let r = 0; r < height; r++) {
+    for (let c = 0; c < width; c++) {
+      const centre = centreUnits(A, r, c);
+      if (edgeValue(p, q, centre) !== 0) continue;
+      const within = [0, 1].every((k) => Math.min(p[k], q[k]) <= centre[k] && centre[k] <= Math.max(p[k], q[k]));
+      if (!within) continue; // on the line beyond the edge's ends
+      const i = r * width + c;
+      const owner = covA[i] && covB[i] ? "both" : covA[i] ? "A" : covB[i] ? "B" : "none";
+      shared.push({ row: r, col: c, owner });
+    }
+  }
+  return { A, B, covA: Array.from(covA), covB: Array.from(covB), shared };
+}
+
+// the sign glyph of an edge value
+export function signOf(e) {
+  return e > 0 ? "+" : e < 0 ? "−" : "0";
+}
+
+// the edges of a set-up as the labels say them: for edge k of the vertices as given
+// (E12, E23, E31), its kind and bias once oriented
+export function edgeLabels(setup, names) {
+  return [0, 1, 2].map((k) => {
+    // given edge k runs given[k] -> given[k+1]; oriented, it is the edge that joins the same
+    // two vertices
+    const a = k;
+    const b = (k + 1) % 3;
+    const j = [0, 1, 2].find((m) => {
+      const i0 = setup.perm[m];
+      const i1 = setup.perm[(m + 1) % 3];
+      return (i0 === a && i1 === b) || (i0 === b && i1 === a);
+    });
+    return { name: names[k], kind: setup.kinds[j], bias: setup.topLeft[j] ? 0 : -1,
+      flipped: setup.perm[j] !== a };
+  });
+}
+
+const EDGES_CSS = `
+.tr-edges-legend span { display: inline-block; margin-right: 12px; }
+.tr-edges-table td { padding: 1px 6px; }
+`;
+
+function mount(el, data, host) {
+  addCss("tr-edges-css", EDGES_CSS);
+  const W = data.width;
+  const H = data.height;
+  const state = { vertices: data.vertices, chosen: "A", planes: false, snap: 0.25, tint: "none",
+    ...host.state() };
+  const root = frame(el, data.title,
+    "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
+    "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
+    "their edges' colours; tint a half-plane to see where its E keeps one sign. A centre " +
+    "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it.");
+  const cell = Math.max(22, Math.min(40, Math.floor(Math.min(600 / W, 520 / H))));
+  const m = { left: 30, top: 26 };
+  const [canvas, ctx] = makeCanvas(m.left + W * cell + 12, m.top + H * cell + 12,
+    "two triangles over the pixel grid with the edge-function signs at every centre");
+  const toPx = ([x, y]) => [m.left + x * cell, m.top + y * cell];
+  const toGrid = ([px, py]) => [(px - m.left) / cell, (py - m.top) / cell];
+  const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
+  const table = element("div", { class: "tr-edges-table" });
+  const [view3d, ctx3] = makeCanvas(560, 400, "the three edge functions as planes over the grid");
+  const cam = camera3d({ centre: [W / 2, H / 2, 0], scale: Math.min(380 / W, 300 / H),
+    at: [280, 210] });
+  const ui = { scene: null, hover: null, picked: 0 };
+
+  function draw() {
+    const scene = (ui.scene = edgeScene(state.vertices, W, H, data.bits));
+    ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
+    drawCells(ctx, scene, W, H, cell, m, data.colors);
+    const chosen = state.chosen === "A" ? scene.A : scene.B;
+    drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
+    drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
+    drawSigns(ctx, chosen, W, H, cell, m);
+    drawShared(ctx, scene, cell, m, data.colors);
+    drawTriangles(ctx, state, toPx, data.colors);
+    drawEdgeLabels(ctx, chosen, state, toPx);
+    table.innerHTML = edgeTable(scene);
+    readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
+    host.picture(canvas);
+  }
+  const paint = painter(canvas, draw, () => state.vertices.map(toPx));
+  const paint3d = painter(view3d, () => drawPlanes(ctx3, cam, ui.scene || edgeScene(
+    state.vertices, W, H, data.bits), state.chosen, W, H, view3d));
+  const both = (e) => {
+    paint.request(e);
+    if (state.planes) paint3d.request(e);
+  };
+  orbitDrag(view3d, cam, (e) => paint3d.request(e));
+  const controls = edgeControls(state, host, both, view3d);
+  root.append(...controls.rows, canvas, element("div", { html: EDGES_KEY }), readout, table, view3d);
+  vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
+  paint.now();
+  controls.sync();
+  return {
+    setState(s) {
+      Object.assign(state, s);
+      controls.sync();
+      both();
+    },
+  };
+}
+
+const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c'>B</b>, grey " +
+  "where they overlap (drawn twice). Ring on a centre of the shared edge: " +
+  "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, grey: " +
+  "neither (a shared vertex, left to a third triangle).";
+
+// the explorer's buttons: whose signs, the 3-D planes, the snapping, the half-plane tinted
+function edgeControls(state, host, repaint, view3d) {
+  const chosen = choiceButtons([["A", "signs of A (v1 v2 v3)"], ["B", "signs of B (v3 v2 v4)"]],
+    state.chosen, (which, e) => {
+      state.chosen = which;
+      host.setState({ chosen: which });
+      repaint(e);
+    });
+  const planes = button("3-D: E as planes", (e) => {
+    state.planes = !state.planes;
+    sync();
+    host.setState({ planes: state.planes });
+    repaint(e);
+  }, state.planes);
+  const snap = button("snap to ¼ px", () => {
+    state.snap = state.snap ? 0 : 0.25;
+    sync();
+    host.setState({ snap: state.snap });
+  }, Boolean(state.snap));
+  const tints = choiceButtons([["none", "no half-plane"], ["E12", "E12's"], ["E23", "E23's"],
+    ["E31", "E31's"], ["all", "all three"]], state.tint, (which, e) => {
+    state.tint = which;
+    host.setState({ tint: which });
+    repaint(e);
+  });
+  function sync() {
+    chosen.set(state.chosen);
+    tints.set(state.tint);
+    planes.setAttribute("aria-pressed", String(state.planes));
+    snap.setAttribute("aria-pressed", String(Boolean(state.snap)));
+    view3d.style.display = state.planes ? "" : "none";
+  }
+  const rows = [element("div", { class: "tr-x-row" }, [...chosen.buttons, planes, snap]),
+    element("div", { class: "tr-x-row" }, [element("span", { text: "tint the half-plane:" }),
+      ...tints.buttons])];
+  return { rows, sync };
+}
+
+// dragging a vertex (snapped to the grid of state.snap px), or moving it with the keys
+function vertexInput(canvas, v) {
+  const { state, host, ui, toPx, toGrid, W, H, repaint } = v;
+  const clampX = (x) => Math.max(0, Math.min(W, x));
+  const clampY = (y) => Math.max(0, Math.min(H, y));
+  const move = (i, x, y) => {
+    state.vertices = state.vertices.map((w, k) => (k === i ? [clampX(x), clampY(y)] : w));
+  };
+  pointerInput(canvas, {
+    handles: () => state.vertices.map(toPx),
+    onDrag(i, p, e) {
+      ui.picked = i;
+      let [x, y] = toGrid(p);
+      const s = state.snap;
+      if (s) [x, y] = [Math.round(x / s) * s, Math.round(y / s) * s];
+      move(i, x, y);
+      ui.hover = toGrid(p);
+      repaint(e);
+    },
+    onRelease: () => host.setState({ vertices: state.vertices }),
+    onHover(p, e) {
+      ui.hover = p ? toGrid(p) : null;
+      repaint(e);
+    },
+  });
+  onKeys(canvas, (e) => {
+    if (e.key.length === 1 && "1234".includes(e.key)) {
+      ui.picked = Number(e.key) - 1;
+      return;
+    }
+    const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key];
+    if (!d) return;
+    e.preventDefault();
+    const step = e.shiftKey ? 1 : state.snap || 1 / 256;
+    const [x, y] = state.vertices[ui.picked];
+    move(ui.picked, x + d[0] * step, y + d[1] * step);
+    ui.hover = state.vertices[ui.picked];
+    repaint(e);
+    host.setState({ vertices: state.vertices });
+  });
+}
+
+function drawCells(ctx, scene, W, H, cell, m, colors) {
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const i = r * W + c;
+      const a = scene.covA[i];
+      const b = scene.covB[i];
+      if (!a && !b) continue;
+      ctx.fillStyle = a && b ? "#b0b0b0" : a ? "#9fd3f3" : "#f3d79c";
+      ctx.fillRect(m.left + c * cell, m.top + r * cell, cell, cell);
+    }
+  }
+}
+
+// each edge's half-plane on the triangle's side (E > 0 for a clockwise triangle, E < 0 for a
+// counter-clockwise one), tinted in its colour and clipped to the grid
+function drawHalfPlanes(ctx, setup, W, H, toPx, cell, which) {
+  if (setup.area2 === 0 || which === "none") return;
+  const u = setup.unit;
+  const far = 4 * (W + H);
+  ctx.save();
+  const [x0, y0] = toPx([0, 0]);
+  ctx.beginPath();
+  ctx.rect(x0, y0, W * cell, H * cell);
+  ctx.clip();
+  const given = setup.given;
+  for (let k = 0; k < 3; k++) {
+    if (which !== "all" && which !== ["E12", "E23", "E31"][k]) continue;
+    const a = given[k].map((t) => t / u);
+    const b = given[(k + 1) % 3].map((t) => t / u);
+    const d = [b[0] - a[0], b[1] - a[1]];
+    const len = Math.hypot(d[0], d[1]) || 1;
+    // E > 0 lies to the left of a -> b walking with y down: normal (-dy, dx)
+    const n = [(-d[1] / len) * far, (d[0] / len) * far];
+    const s = Math.sign(setup.originalArea2) || 1; // the inside's side (orientation)
+    const ext = [d[0] / len * far, d[1] / len * far];
+    const pts = [[a[0] - ext[0], a[1] - ext[1]], [a[0] + ext[0], a[1] + ext[1]],
+      [a[0] + ext[0] + s * n[0], a[1] + ext[1] + s * n[1]],
+      [a[0] - ext[0] + s * n[0], a[1] - ext[1] + s * n[1]]].map(toPx);
+    ctx.beginPath();
+    pts.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
+    ctx.closePath();
+    ctx.globalAlpha = which === "all" ? 0.12 : 0.22;
+    ctx.fillStyle = EDGE_HUES[k];
+    ctx.fill();
+  }
+  ctx.restore();
+}
+
+
+// A glyph drawn once as a small picture (drawImage is many times cheaper than fillText, and a
+// grid shows hundreds of them at every frame of a drag)
+const SPRITES = new Map();
+function sprite(text, colour, size, dpr) {
+  const key = `${text}|${colour}|${size}|${dpr}`;
+  if (!SPRITES.has(key)) {
+    const c = document.createElement("canvas");
+    [c.width, c.height] = [Math.ceil(size * dpr), Math.ceil(size * 1.3 * dpr)];
+    const x = c.getContext("2d");
+    x.scale(dpr, dpr);
+    x.font = `bold ${size}px monospace`;
+    x.textAlign = "center";
+    x.textBaseline = "middle";
+    x.fillStyle = colour;
+    x.fillText(text, size / 2, size * 0.65);
+    SPRITES.set(key, c);
+  }
+  return SPRITES.get(key);
+}
+
+// three sign glyphs per centre: E12, E23, E31 of the chosen triangle, in their colours
+function drawSigns(ctx, setup, W, H, cell, m) {
+  const size = Math.max(10, Math.round(cell * 0.32));
+  const dpr = ctx.canvas.logical ? ctx.canvas.logical.dpr : 1;
+  const gap = cell * 0.26;
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const e = givenValues(setup, r, c);
+      const cx = m.left + (c + 0.5) * cell;
+      const cy = m.top + (r + 0.5) * cell + cell * 0.12;
+      for (let k = 0; k < 3; k++) {
+        const s = signOf(e[k]);
+        const img = sprite(s, s === "0" ? "#000" : EDGE_HUES[k], size, dpr);
+        ctx.drawImage(img, cx + (k - 1) * gap - size / 2, cy - size * 0.9, size, size * 1.3);
+      }
+    }
+  }
+}
+
+function drawShared(ctx, scene, cell, m, colors) {
+  for (const { row, col, owner } of scene.shared) {
+    const cx = m.left + (col + 0.5) * cell;
+    const cy = m.top + (row + 0.5) * cell;
+    ctx.lineWidth = 3;
+    ctx.strokeStyle = owner === "A" ? OKABE.blue : owner === "B" ? OKABE.orange
+      : owner === "both" ? "#000" : "#777";
+    ctx.beginPath();
+    ctx.arc(cx, cy, cell * 0.42, 0, 2 * Math.PI);
+    ctx.stroke();
+    ctx.fillStyle = ctx.strokeStyle;
+    ctx.font = `bold ${Math.round(cell * 0.3)}px sans-serif`;
+    ctx.fillText(owner === "both" ? "AB" : owner === "none" ? "–" : owner,
+      m.left + col * cell + 2, m.top + row * cell + cell * 0.3);
+  }
+}
+
+function arrowLine(ctx, p, q, colour, width) {
+  ctx.strokeStyle = colour;
+  ctx.fillStyle = colour;
+  ctx.lineWidth = width;
+  ctx.beginPath();
+  ctx.moveTo(p[0], p[1]);
+  ctx.lineTo(q[0], q[1]);
+  ctx.stroke();
+  const t = 0.55;
+  const mid = [p[0] + (q[0] - p[0]) * t, p[1] + (q[1] - p[1]) * t];
+  const ang = Math.atan2(q[1] - p[1], q[0] - p[0]);
+  ctx.beginPath();
+  ctx.moveTo(mid[0] + 9 * Math.cos(ang), mid[1] + 9 * Math.sin(ang));
+  ctx.lineTo(mid[0] + 9 * Math.cos(ang + 2.5), mid[1] + 9 * Math.sin(ang + 2.5));
+  ctx.lineTo(mid[0] + 9 * Math.cos(ang - 2.5), mid[1] + 9 * Math.sin(ang - 2.5));
+  ctx.closePath();
+  ctx.fill();
+}
+
+function drawTriangles(ctx, state, toPx, colors) {
+  const v = state.vertices.map(toPx);
+  const chosen = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
+  const other = state.chosen === "A" ? [2, 1, 3] : [0, 1, 2];
+  ctx.setLineDash([6, 4]);
+  ctx.strokeStyle = "#222";
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  other.forEach((i, k) => (k ? ctx.lineTo(v[i][0], v[i][1]) : ctx.moveTo(v[i][0], v[i][1])));
+  ctx.closePath();
+  ctx.stroke();
+  ctx.setLineDash([]);
+  for (let k = 0; k < 3; k++) arrowLine(ctx, v[chosen[k]], v[chosen[(k + 1) % 3]], EDGE_HUES[k], 3);
+  ctx.font = "bold 15px sans-serif";
+  v.forEach((p, i) => {
+    ctx.fillStyle = "#000";
+    ctx.beginPath();
+    ctx.arc(p[0], p[1], 6, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.fillStyle = "#fff";
+    ctx.beginPath();
+    ctx.arc(p[0], p[1], 3, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.fillStyle = "#000";
+    ctx.fillText(`v${i + 1}`, p[0] + 8, p[1] - 8);
+  });
+}
+
+// each edge of the chosen triangle labelled with its kind and bias, outside the triangle
+function drawEdgeLabels(ctx, setup, state, toPx) {
+  if (setup.area2 === 0) return;
+  const idx = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
+  const v = idx.map((i) => toPx(state.vertices[i]));
+  const centroid = [(v[0][0] + v[1][0] + v[2][0]) / 3, (v[0][1] + v[1][1] + v[2][1]) / 3];
+  const labels = edgeLabels(setup, ["E12", "E23", "E31"]);
+  ctx.font = "bold 13px sans-serif";
+  ctx.textAlign = "center";
+  labels.forEach((e, k) => {
+    const a = v[k];
+    const b = v[(k + 1) % 3];
+    const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+    const out = [mid[0] - centroid[0], mid[1] - centroid[1]];
+    const len = Math.hypot(out[0], out[1]) || 1;
+    const at = [mid[0] + (out[0] / len) * 22, mid[1] + (out[1] / len) * 22];
+    const name = state.chosen === "A" ? `${e.name}: ` : "";
+    const text = `${name}${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
+    const w = ctx.measureText(text).width;
+    ctx.fillStyle = "rgba(255,255,255,0.85)";
+    ctx.fillRect(at[0] - w / 2 - 3, at[1] - 11, w + 6, 16);
+    ctx.fillStyle = EDGE_HUES[k];
+    ctx.fillText(text, at[0], at[1] + 2);
+  });
+  ctx.textAlign = "left";
+}
+
+// the edges of both triangles: kind and bias of each
+export function edgeTable(scene) {
+  const rows = [["A", scene.A, ["E12 (v1→v2)", "E23 (v2→v3)", "E31 (v3→v1)"]],
+    ["B", scene.B, ["v3→v2", "v2→v4", "v4→v3"]]].map(([name, s, names]) => {
+    if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
+    const cells = edgeLabels(s, names).map((e, k) =>
+      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${e.name}</b> ${e.kind}, ` +
+      `bias ${e.bias < 0 ? "−1" : "0"}</td>`).join("");
+    const wind = s.originalArea2 > 0 ? "clockwise on screen" : "counter-clockwise on screen";
+    return `<tr><td><b>${name}</b>, ${wind}</td>${cells}</tr>`;
+  });
+  return `<table>${rows.join("")}</table>`;
+}
+
+// what the pointer is over: the centre's three edge values and who covers it
+export function describe(scene, at, chosen, W, H) {
+  if (!at) return "Point at a pixel centre for its edge values (px²).";
+  const col = Math.floor(at[0]);
+  const row = Math.floor(at[1]);
+  if (col < 0 || row < 0 || col >= W || row >= H) return "";
+  const setup = chosen === "A" ? scene.A : scene.B;
+  const names = chosen === "A" ? ["E12", "E23", "E31"] : ["E(v3,v2)", "E(v2,v4)", "E(v4,v3)"];
+  const px2 = setup.unit * setup.unit;
+  const e = givenValues(setup, row, col).map((v) => v / px2);
+  const i = row * W + col;
+  const who = scene.covA[i] && scene.covB[i] ? "both A and B (they overlap)"
+    : scene.covA[i] ? "A" : scene.covB[i] ? "B" : "neither";
+  const vals = e.map((v, k) => `<b>${names[k]}</b> = ${v > 0 ? "+" : ""}${fmt(v, 6)}`).join(", ");
+  const onShared = scene.shared.find((s) => s.row === row && s.col === col);
+  const tie = onShared ? ` It lies exactly on the shared edge: ${onShared.owner === "none"
+    ? "neither owns it" : `${onShared.owner} owns it`} (top-left rule).` : "";
+  return `Centre (${col + 0.5}, ${row + 0.5}), pixel row ${row}, column ${col}, ${chosen}: ` +
+    `${vals}. Covered by ${who}.${tie}`;
+}
+
+// the three edge functions of the chosen triangle as planes z = E(x, y) over the grid
+function drawPlanes(ctx, cam, scene, chosen, W, H, canvas) {
+  ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
+  const setup = chosen === "A" ? scene.A : scene.B;
+  const u = setup.unit;
+  const corners = [[0, 0], [W, 0], [W, H], [0, H]];
+  const fns = [0, 1, 2].map((k) => {
+    const a = setup.given[k].map((t) => t / u);
+    const b = setup.given[(k + 1) % 3].map((t) => t / u);
+    return (x, y) => edgeValue(a, b, [x, y]);
+  });
+  let top = 1;
+  for (const f of fns) for (const [x, y] of corners) top = Math.max(top, Math.abs(f(x, y)));
+  const zs = (0.45 * Math.max(W, H)) / top; // the largest |E| stands 0.45 grid-widths high
+  const polys = surfacePieces(corners, () => 0, 8, { fill: "#ddd", alpha: 0.55, stroke: "#bbb" });
+  fns.forEach((f, k) => polys.push(...surfacePieces(corners, (x, y) => f(x, y) * zs, 8,
+    { fill: EDGE_HUES[k], alpha: 0.45 })));
+  drawPolygons(ctx, cam, polys);
+  // each plane cuts z = 0 along its edge's line: drawn on top
+  fns.forEach((f, k) => {
+    const a = setup.given[k].map((t) => t / u);
+    const b = setup.given[(k + 1) % 3].map((t) => t / u);
+    line3d(ctx, cam, [a[0], a[1], 0], [b[0], b[1], 0], EDGE_HUES[k], 4);
+    const name = chosen === "A" ? ["E12", "E23", "E31"][k] : ["E(v3,v2)", "E(v2,v4)", "E(v4,v3)"][k];
+    const far = corners.reduce((best, c) => (Math.abs(f(...c)) > Math.abs(f(...best)) ? c : best));
+    label3d(ctx, cam, [far[0], far[1], f(...far) * zs], `${name} = ${fmt(f(...far), 3)} px²`,
+      EDGE_HUES[k], "bold 13px sans-serif");
+  });
+  ctx.fillStyle = "#333";
+  ctx.font = "13px sans-serif";
+  ctx.fillText("grey: z = 0 (the screen). Drag to turn; arrow keys too.", 8, canvas.logical.h - 10);
+}

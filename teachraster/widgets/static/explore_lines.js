@@ -1,0 +1,304 @@
+// Lesson 12's diamond-exit rule, live: the diamonds a line's caption talks about, with end
+// points that snap onto ties.
+//
+// Pixel (row i, col j) owns the open diamond |x - (j + 1/2)| + |y - (i + 1/2)| < 1/2; a line
+// lights the pixels whose diamond the segment p0 -> p1 meets and goes on out of, not the one
+// it ends in (GL 4.6 §14.5.1, Direct3D). GL removes ties by moving both end points by
+// -(ε, ε²); here, as in teachraster.core.line_rules, that perturbation is carried exactly:
+// values n0 + n1 ε + n2 ε² compared lexicographically, on the snapped grid. The tests
+// compare every decision with the engine's.
+
+export const MISSED = 0;
+export const LIT = 1;
+export const ENDS_INSIDE = 2;
+const SPREAD = 2;
+
+// t = (c - a') / d for the perturbed start a' = a - ε - tie ε²: [n0, n1, n2, den], den > 0
+function bound(c, a, d, tie) {
+  const s = Math.sign(d);
+  return [(c - a) * s, s, s * tie, Math.abs(d)];
+}
+
+// x < y for perturbed values, lexicographic in powers of ε; also whether ε decided it
+function less(x, y) {
+  for (let k = 0; k < 3; k++) {
+    const lhs = x[k] * y[3];
+    const rhs = y[k] * x[3];
+    if (lhs !== rhs) return [lhs < rhs, k > 0];
+  }
+  return [false, true];
+}
+
+// open bounds (lo, hi) on t for |u(t) - centre| < half along one diagonal axis
+function axisBounds(centre, a, d, half, tie) {
+  if (d === 0) {
+    const off = a - centre; // the perturbed start is inside iff -h < off <= h
+    return [[-1, 0, 0, 1], [2, 0, 0, 1], off > -half && off <= half, off === half || off === -half];
+  }
+  const [near, far] = d > 0 ? [centre - half, centre + half] : [centre + half, centre - half];
+  return [bound(near, a, d, tie), bound(far, a, d, tie), true, false];
+}
+
+// Whether the perturbed segment a -> b (units) meets the open diamond of pixel (row, col)
+// and whether it ends inside: [state, tie], tie when GL's perturbation (or the half-open
+// diamond) decided it. As teachraster.core.line_rules.diamond_states.
+export function diamondState(a, b, unit, row, col) {
+  const half = unit / 2;
+  const [cx, cy] = [col * unit + half, row * unit + half];
+  const [au, av, bu, bv] = [a[0] + a[1], a[0] - a[1], b[0] + b[1], b[0] - b[1]];
+  const [loU, hiU, okU, tieU] = axisBounds(cx + cy, au, bu - au, half, 1);
+  const [loV, hiV, okV, tieV] = axisBounds(cx - cy, av, bv - av, half, -1);
+  const [uFirst, t1] = less(loU, loV);
+  const lo = uFirst ? loV : loU;
+  const [hFirst, t2] = less(hiU, hiV);
+  const hi = hFirst ? hiU : hiV;
+  const [c1, t3] = less(lo, hi);
+  const [c2, t4] = less(lo, [1, 0, 0, 1]);
+  const [c3, t5] = less([0, 0, 0, 1], hi);
+  const meets = okU && okV && c1 && c2 && c3;
+  const [du, dv] = [bu - (cx + cy), bv - (cx - cy)];
+  const ends = du > -half && du <= half && dv > -half && dv <= half;
+  const onEdge = Math.abs(du) + Math.abs(dv) <= 2 * half && (Math.abs(du) === half || Math.abs(dv) === half);
+  const tie = tieU || tieV || (okU && okV && (t1 || t2 || t3 || t4 || t5)) || onEdge;
+  return [meets ? (ends ? ENDS_INSIDE : LIT) : MISSED, tie];
+}
+
+// The walk of teachraster.core.line_rules.diamond: one step per major-axis column (or row)
+// the segment's diamonds can meet, each with its candidate pixels and their states.
+export function diamondSteps(p0, p1, width, height, bits = SUBPIXEL_BITS) {
+  const unit = unitsPerPixel(bits);
+  const a = [toUnits(p0[0], bits), toUnits(p0[1], bits)];
+  const b = [toUnits(p1[0], bits), toUnits(p1[1], bits)];
+  const d = [b[0] - a[0], b[1] - a[1]];
+  const xMajor = Math.abs(d[0]) >= Math.abs(d[1]);
+  if (a[0] === b[0] && a[1] === b[1]) return { xMajor, a, b, unit, steps: [] };
+  const axis = xMajor ? 0 : 1;
+  const other = 1 - axis;
+  const size = xMajor ? width : height;
+  const limit = xMajor ? height : width;
+  const [lo, hi] = [Math.min(a[axis], b[axis]), Math.max(a[axis], b[axis])];
+  const first = Math.max(Math.floor(lo / unit) - 1, 0);
+  const last = Math.min(Math.floor(hi / unit) + 1, size - 1);
+  const ratio = d[other] / d[axis];
+  const steps = [];
+  for (let major = first; major <= last; major++) {
+    const centre = major * unit + unit / 2;
+    const minor = a[other] + (centre - a[axis]) * ratio;
+    const base = Math.floor(minor / unit);
+    const cands = [];
+    for (let k = -SPREAD; k <= SPREAD; k++) {
+      const m = base + k;
+      if (m < 0 || m >= limit) continue;
+      const [row, col] = xMajor ? [m, major] : [major, m];
+      const [state, tie] = diamondState(a, b, unit, row, col);
+      cands.push({ row, col, state, tie });
+    }
+    steps.push({ major, minor: minor / unit, cands });
+  }
+  return { xMajor, a, b, unit, steps };
+}
+
+// the lit pixels (row, col), in walking order
+export function litPixels(p0, p1, width, height, bits = SUBPIXEL_BITS) {
+  const out = [];
+  for (const s of diamondSteps(p0, p1, width, height, bits).steps) {
+    for (const c of s.cands) if (c.state === LIT) out.push([c.row, c.col]);
+  }
+  return out;
+}
+
+// What one step decided, in the words of the LinePlayer's captions.
+export function stepCaption(walk, k) {
+  const s = walk.steps[k];
+  if (!s) return "";
+  const name = walk.xMajor ? "column" : "row";
+  const lit = s.cands.filter((c) => c.state === LIT);
+  const ends = s.cands.filter((c) => c.state === ENDS_INSIDE);
+  const ties = s.cands.filter((c) => c.tie && c.state !== MISSED);
+  const where = (c) => `(row ${c.row}, col ${c.col})`;
+  let text = `${name} ${s.major}: the line is at ${walk.xMajor ? "y" : "x"} = ${fmt(s.minor, 6)} ` +
+    "at the centre. ";
+  if (lit.length) text += `It meets the diamond of ${lit.map(where).join(" and ")} and goes on out of it: lit. `;
+  if (ends.length) text += `It ends inside the diamond of ${ends.map(where).join(", ")}: left to the next segment. `;
+  if (!lit.length && !ends.length) text += "It meets no diamond here: nothing lit. ";
+  if (ties.length) text += "A tie: GL's perturbation of the end points by −(ε, ε²) decided it.";
+  return text;
+}
+
+// points a dragged end snaps to: pixel centres, diamond corners (edge midpoints), corners
+export function snapTarget(x, y, reach) {
+  let best = null;
+  let bestD = reach;
+  const [fx, fy] = [Math.floor(x), Math.floor(y)];
+  for (const [ox, oy, kind] of [[0.5, 0.5, "a pixel centre"], [0.5, 0, "a diamond corner"],
+    [0, 0.5, "a diamond corner"], [0, 0, "a pixel corner"], [1, 0.5, "a diamond corner"],
+    [0.5, 1, "a diamond corner"], [1, 1, "a pixel corner"], [1, 0, "a pixel corner"],
+    [0, 1, "a pixel corner"]]) {
+    const [px, py] = [fx + ox, fy + oy];
+    const dd = Math.hypot(px - x, py - y);
+    if (dd < bestD) [best, bestD] = [[px, py, kind], dd];
+  }
+  return best;
+}
+
+function mount(el, data, host) {
+  const W = data.width;
+  const H = data.height;
+  let state = { p0: data.p0, p1: data.p1, step: -1, ...host.state() };
+  const root = frame(el, data.title,
+    "Each pixel owns the open diamond around its centre. The line lights a pixel when it " +
+    "meets its diamond and goes on out of it; the diamond it ends in is left to the next " +
+    "segment. Drag p0 or p1: near a pixel centre, a diamond corner or a pixel corner they " +
+    "snap onto it, where ties are. Step along the line with the slider or the arrow keys.");
+  const cell = Math.max(30, Math.min(64, Math.floor(Math.min(760 / W, 480 / H))));
+  const m = { left: 30, top: 24 };
+  const [canvas, ctx] = makeCanvas(m.left + W * cell + 14, m.top + H * cell + 14,
+    "a line over the pixel grid with every pixel's diamond");
+  const toPx = ([x, y]) => [m.left + x * cell, m.top + y * cell];
+  const toGrid = ([px, py]) => [(px - m.left) / cell, (py - m.top) / cell];
+  const caption = element("div", { class: "tr-x-readout", "aria-live": "polite" });
+  let walk = diamondSteps(state.p0, state.p1, W, H, data.bits);
+  const stepper = slider("step", { min: -1, max: Math.max(walk.steps.length - 1, 0), step: 1,
+    value: state.step, format: (v) => (v < 0 ? "all" : String(v)) }, (v, e) => {
+    state.step = v;
+    paint.request(e);
+    host.setState({ step: v });
+  });
+  const count = element("div");
+  root.append(element("div", { class: "tr-x-row" }, [stepper, count]), canvas, caption);
+  let snapped = [null, null];
+
+  function draw() {
+    walk = diamondSteps(state.p0, state.p1, W, H, data.bits);
+    stepper.input.max = String(Math.max(walk.steps.length - 1, 0));
+    if (state.step > walk.steps.length - 1) state.step = walk.steps.length - 1;
+    ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
+    drawLineGrid(ctx, W, H, cell, m, toPx);
+    const shown = state.step < 0 ? walk.steps : walk.steps.slice(0, state.step + 1);
+    shown.forEach((s, k) => {
+      const current = state.step >= 0 && k === state.step;
+      for (const c of s.cands) drawDiamond(ctx, c, toPx, cell, current);
+    });
+    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped);
+    const lit = walk.steps.reduce((n, s) => n + s.cands.filter((c) => c.state === LIT).length, 0);
+    count.textContent = `${lit} pixel${lit === 1 ? "" : "s"} lit, ${walk.steps.length} ` +
+      `${walk.xMajor ? "columns" : "rows"} walked (${walk.xMajor ? "x" : "y"}-major)`;
+    caption.innerHTML = state.step >= 0 ? escapeHtml(stepCaption(walk, state.step))
+      : "All steps. Pick a step to see its diamonds and what the rule decided there.";
+    host.picture(canvas);
+  }
+  const paint = painter(canvas, draw, () => [toPx(state.p0), toPx(state.p1)]);
+
+  function place(i, p) {
+    let [x, y] = toGrid(p);
+    x = Math.max(0, Math.min(W, x));
+    y = Math.max(0, Math.min(H, y));
+    const target = snapTarget(x, y, 10 / cell);
+    snapped[i] = target ? target[2] : null;
+    const q = target ? [target[0], target[1]] : [Math.round(x * 64) / 64, Math.round(y * 64) / 64];
+    state[i ? "p1" : "p0"] = q;
+  }
+  pointerInput(canvas, {
+    handles: () => [toPx(state.p0), toPx(state.p1)],
+    onDrag(i, p, e) {
+      place(i, p);
+      paint.request(e);
+    },
+    onRelease() {
+      host.setState({ p0: state.p0, p1: state.p1, step: state.step });
+    },
+  });
+  onKeys(canvas, (e) => {
+    const d = { ArrowLeft: -1, ArrowRight: 1, ArrowDown: -1, ArrowUp: 1 }[e.key];
+    if (!d) return;
+    e.preventDefault();
+    state.step = Math.max(-1, Math.min(walk.steps.length - 1, state.step + d));
+    stepper.set(state.step);
+    paint.request(e);
+    host.setState({ step: state.step });
+  });
+  paint.now();
+  return {
+    setState(s) {
+      state = { ...state, ...s };
+      stepper.set(state.step);
+      paint.request();
+    },
+  };
+}
+
+function drawLineGrid(ctx, W, H, cell, m, toPx) {
+  drawGrid(ctx, m.left, m.top, W, H, cell, "#c8c8c8", true);
+  // every pixel's diamond, faint, and its centre
+  ctx.strokeStyle = "#e0e0e0";
+  ctx.beginPath();
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) diamondPath(ctx, toPx, r, c);
+  }
+  ctx.stroke();
+  ctx.fillStyle = "#888";
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      const [x, y] = toPx([c + 0.5, r + 0.5]);
+      ctx.fillRect(x - 1.5, y - 1.5, 3, 3);
+    }
+  }
+}
+
+function diamondPath(ctx, toPx, r, c) {
+  const pts = [[c + 0.5, r], [c + 1, r + 0.5], [c + 0.5, r + 1], [c, r + 0.5]].map(toPx);
+  ctx.moveTo(pts[0][0], pts[0][1]);
+  for (const p of pts.slice(1)) ctx.lineTo(p[0], p[1]);
+  ctx.closePath();
+}
+
+function drawDiamond(ctx, c, toPx, cell, current) {
+  const [x, y] = toPx([c.col, c.row]);
+  if (c.state === LIT) {
+    ctx.fillStyle = "rgba(86,180,233,0.45)";
+    ctx.fillRect(x, y, cell, cell);
+  }
+  ctx.beginPath();
+  diamondPath(ctx, toPx, c.row, c.col);
+  if (c.state === LIT) {
+    ctx.fillStyle = "#0072B2";
+    ctx.globalAlpha = 0.55;
+    ctx.fill();
+    ctx.globalAlpha = 1;
+  }
+  ctx.lineWidth = current ? 3 : 1.5;
+  ctx.strokeStyle = c.state === ENDS_INSIDE ? OKABE.orange : c.state === LIT ? "#0072B2"
+    : current ? "#666" : "#aaa";
+  if (c.state === ENDS_INSIDE) ctx.setLineDash([5, 3]);
+  ctx.stroke();
+  ctx.setLineDash([]);
+  if (c.tie && c.state !== MISSED) {
+    ctx.fillStyle = OKABE.vermillion;
+    ctx.font = `bold ${Math.round(cell * 0.28)}px sans-serif`;
+    ctx.fillText("tie", x + 3, y + cell * 0.28);
+  }
+  if (current) {
+    ctx.strokeStyle = OKABE.vermillion;
+    ctx.lineWidth = 2;
+    ctx.strokeRect(x + 1.5, y + 1.5, cell - 3, cell - 3);
+  }
+}
+
+function drawSegment(ctx, p, q, snapped) {
+  ctx.strokeStyle = "#000";
+  ctx.lineWidth = 2.5;
+  ctx.beginPath();
+  ctx.moveTo(p[0], p[1]);
+  ctx.lineTo(q[0], q[1]);
+  ctx.stroke();
+  [p, q].forEach((e, i) => {
+    ctx.fillStyle = i ? OKABE.vermillion : "#000";
+    ctx.beginPath();
+    ctx.arc(e[0], e[1], 7, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.fillStyle = "#111";
+    ctx.font = "bold 15px sans-serif";
+    const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
+    ctx.fillText(text, e[0] + 9, e[1] - 9);
+  });
+}

@@ -1,0 +1,248 @@
+// Lesson 00's map: the pipeline in the logical GL / Direct3D order, in the style of the
+// WebGL state diagram. Click a stage (or Tab to it and press Enter) to see the tour
+// triangle's data there. Every number is the engine's (teachraster.widgets.pipeline_map
+// computes them); this file only lays them out.
+
+export const STAGES = [
+  ["vertex", "vertex shader", "04, 05a", "model → clip space"],
+  ["assembly", "primitive|assembly", "02", "vertices → triangles"],
+  ["clip", "clipping|(guard band)", "05a", "near/far; x, y only beyond the guard band"],
+  ["divide", "divide by w", "04, 05a", "clip → NDC"],
+  ["viewport", "viewport", "05a, 05b", "NDC → window x, y, depth"],
+  ["setup", "triangle set-up", "01, 02, 03", "edges, facing, culling, bounding box"],
+  ["rasterize", "rasterisation", "01–04 07 08 10 12", "the pixel centres inside become fragments"],
+  ["fragment", "fragment shader", "04, 09", "interpolated attributes → colour"],
+  ["depth", "depth / stencil|test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
+  ["blend", "blending", "12", "colour → the colour target"],
+];
+
+const num = (x, d = 4) => (x === null || x === undefined ? "–" : fmt(x, d));
+const row = (cells, head = false) =>
+  `<tr>${cells.map((c) => (head ? `<th>${c}</th>` : `<td>${c}</td>`)).join("")}</tr>`;
+const vertexRows = (data, f) => data.clip.map((_, k) => row([`v${k + 1}`, ...f(k)])).join("");
+
+// The tour triangle at stage `key`, as HTML: what the stage receives and what it makes.
+export function stageHtml(data, key) {
+  const V = (k) => data.window[k];
+  switch (key) {
+    case "vertex":
+      return "<p>The vertex shader outputs clip coordinates (x, y, z, w) per vertex. The tour " +
+        `triangle's are those of GL's perspective projection (near ${num(data.near)}, far ` +
+        `${num(data.far)}; w is the view distance) and carry the attribute u.</p><table>` +
+        row(["", "x", "y", "z", "w", "u"], true) +
+        vertexRows(data, (k) => [...data.clip[k].map((v) => num(v, 5)), num(data.u[k])]) + "</table>";
+    case "assembly":
+      return "<p>Primitive assembly groups the vertices three by three, in the order given: " +
+        "one triangle, v1 → v2 → v3. Nothing is known yet of where it lands on the screen.</p>";
+    case "clip":
+      return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w. Real GPUs clip " +
+        "only against the near and far planes (and w &gt; 0): x and y are clipped only beyond " +
+        `a guard band (here ${num(data.guard)} × the viewport), the rasteriser's bounding box ` +
+        "does the rest.</p><table>" + row(["", "x / w", "y / w", "z / w", "inside?"], true) +
+        vertexRows(data, (k) => {
+          const n = data.ndc[k];
+          return [...n.map((v) => num(v, 5)), n.every((v) => v >= -1 && v <= 1) ? "yes" : "no"];
+        }) + `</table><p>${data.inside[0] ? "No plane cuts the triangle: it goes on whole." :
+        "A plane cuts it: it is clipped into a polygon."}</p>`;
+    case "divide":
+      return "<p>Dividing by w gives normalised device coordinates, each in [−1, 1] inside " +
+        "the view volume. This is where perspective happens: far vertices (large w) move " +
+        "towards the centre.</p><table>" + row(["", "x_ndc", "y_ndc", "z_ndc"], true) +
+        vertexRows(data, (k) => data.ndc[k].map((v) => num(v, 5))) + "</table>";
+    case "viewport":
+      return `<p>The viewport maps NDC to the ${data.width} × ${data.height} window: ` +
+        "x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2 (y down), depth z = z_ndc/2 + 1/2.</p><table>" +
+        row(["", "x (px)", "y (px)", "depth"], true) +
+        vertexRows(data, (k) => V(k).map((v) => num(v, 5))) + "</table>";
+    case "setup":
+      return setupHtml(data);
+    case "rasterize":
+      return `<p>${data.fragments} pixel centres are inside (the top-left rule decides the ` +
+        "ties): each becomes a fragment with its barycentric weights. Outlined: the bounding " +
+        "box the rasteriser tests.</p>";
+    case "fragment":
+      return "<p>The fragment shader runs once per fragment on the interpolated attributes: " +
+        "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
+        "could discard the fragment or write its own depth, which is why the depth test " +
+        "normally comes <i>after</i> it.</p>";
+    case "depth":
+      return `<p>Each fragment's depth (interpolated window depth) is compared with the ` +
+        `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
+        "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed) runs this test " +
+        "before the shader, to skip hidden fragments: only allowed when the shader neither " +
+        "discards nor writes depth.</p>";
+    case "blend":
+      return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
+        "colour target was cleared to dark grey). That is the final image.</p>";
+    default:
+      return "";
+  }
+}
+
+function setupHtml(data) {
+  const names = ["E12", "E23", "E31"];
+  const snapped = data.snapped.map((p, k) => `v${k + 1} = (${num(p[0], 6)}, ${num(p[1], 6)})`);
+  const [r0, r1, c0, c1] = data.bbox;
+  return "<p>Once per triangle: the vertices snapped to the 1/256 px grid " +
+    `(${snapped.join(", ")}); the signed area ${num(data.area, 5)} px², ` +
+    `${data.area > 0 ? "clockwise on screen: back-facing" : "counter-clockwise: front-facing"} ` +
+    `in GL's default; culling is off, so it is ${data.culled ? "culled" : "kept"}. ` +
+    `The three edge functions and the top-left rule: ${names.map((n, k) =>
+      `${n} ${data.topLeft[k] ? "top/left (owns its centres)" : "not top-left"}`).join(", ")} ` +
+    `(oriented order v${data.oriented.map((k) => k + 1).join(" v")}). Bounding box: rows ` +
+    `${r0}–${r1 - 1}, columns ${c0}–${c1 - 1}.</p>`;
+}
+
+// the per-pixel picture of a stage (null: none)
+export function stageImage(data, key) {
+  const n = data.width * data.height;
+  const grey = (v) => [v, v, v];
+  if (key === "rasterize") return Array.from({ length: n }, (_, i) => (data.coverage[i] ? [86, 180, 233] : grey(245)));
+  if (key === "fragment") return data.colour.map((c, i) => (data.coverage[i] ? c : grey(245)));
+  if (key === "depth") {
+    return data.depth.map((d) => (d === null ? grey(245) : grey(Math.round(40 + 200 * d))));
+  }
+  if (key === "blend") return data.colour;
+  return null;
+}
+
+const PIPE_CSS = `
+.tr-pipe svg { max-width: 100%; height: auto; display: block; }
+.tr-pipe .stage { cursor: pointer; }
+.tr-pipe .stage:focus { outline: none; }
+.tr-pipe .stage:focus rect, .tr-pipe .stage:hover rect { stroke-width: 3; }
+.tr-pipe-detail { display: flex; flex-wrap: wrap; gap: 14px; align-items: flex-start; }
+.tr-pipe-detail > div { flex: 1 1 380px; max-width: 640px; }
+`;
+
+const SVG = "http://www.w3.org/2000/svg";
+function svg(tag, attrs, text) {
+  const e = document.createElementNS(SVG, tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+// two rows of five boxes; the second row continues from the first
+function layout() {
+  const [bw, bh, gx, gy, x0, y0] = [160, 70, 22, 74, 4, 34];
+  return STAGES.map(([key], k) => {
+    const r = Math.floor(k / 5);
+    const c = k % 5;
+    return { key, x: x0 + c * (bw + gx), y: y0 + r * (bh + gy), w: bw, h: bh };
+  });
+}
+
+function diagram(onPick) {
+  const boxes = layout();
+  const root = svg("svg", { viewBox: "0 0 900 300", width: 900, role: "group",
+    "aria-label": "the pipeline stages; pick one" });
+  root.append(svg("defs", {}));
+  root.firstChild.innerHTML = '<marker id="tr-arrow" viewBox="0 0 10 10" refX="9" refY="5" ' +
+    'markerWidth="7" markerHeight="7" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill="#333"/></marker>';
+  const arrow = (d, dash) => root.append(svg("path", { d, fill: "none", stroke: "#333",
+    "stroke-width": 2, "marker-end": "url(#tr-arrow)", "stroke-dasharray": dash || "" }));
+  boxes.forEach((b, k) => {
+    if (k === 4 || k === 9) return;
+    const n = boxes[k + 1];
+    arrow(`M${b.x + b.w},${b.y + b.h / 2} L${n.x - 2},${n.y + n.h / 2}`);
+  });
+  const [a, z] = [boxes[4], boxes[5]];
+  arrow(`M${a.x + a.w / 2},${a.y + a.h} C${a.x + a.w / 2},${a.y + a.h + 40} ${z.x + z.w / 2},` +
+    `${z.y - 40} ${z.x + z.w / 2},${z.y - 2}`);
+  // early-z: rasterise -> depth test, around the fragment shader
+  const [r, d] = [boxes[6], boxes[8]];
+  arrow(`M${r.x + r.w / 2},${r.y + r.h} C${r.x + r.w / 2},${r.y + r.h + 46} ${d.x + d.w / 2},` +
+    `${d.y + d.h + 46} ${d.x + d.w / 2},${d.y + d.h + 2}`, "7 5");
+  root.append(svg("text", { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 46, "text-anchor": "middle",
+    "font-size": 13, fill: "#333" }, "early-z: only if no discard or depth write"));
+  const groups = boxes.map((b, k) => {
+    const [, name, lessons] = STAGES[k];
+    const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name.replace("|", " "),
+      "data-stage": b.key });
+    const main = b.key === "rasterize";
+    g.append(svg("rect", { x: b.x, y: b.y, width: b.w, height: b.h, rx: 8,
+      fill: main ? "#d6ecf8" : "#f6f6f6", stroke: main ? "#0072B2" : "#777", "stroke-width": main ? 2.5 : 1.5 }));
+    const lines = name.split("|");
+    lines.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
+      y: b.y + (lines.length > 1 ? 22 : 30) + 17 * i, "text-anchor": "middle", "font-size": 15,
+      "font-weight": "bold" }, line)));
+    g.append(svg("text", { x: b.x + b.w / 2, y: b.y + b.h - 9, "text-anchor": "middle",
+      "font-size": 12, fill: "#555" }, `lesson ${lessons}`));
+    g.addEventListener("click", (e) => onPick(b.key, e));
+    onKeys(g, (e) => {
+      if (e.key === "Enter" || e.key === " ") {
+        e.preventDefault();
+        onPick(b.key, e);
+      }
+    });
+    root.append(g);
+    return g;
+  });
+  root.append(svg("text", { x: 10, y: 20, "font-size": 13, fill: "#333" },
+    "The logical order of OpenGL and Direct3D. Click a stage for the tour triangle there."));
+  return { root, groups };
+}
+
+function mount(el, data, host) {
+  addCss("tr-pipe-css", PIPE_CSS);
+  let state = { stage: "rasterize", ...host.state() };
+  const root = frame(el, data.title, "");
+  root.classList.add("tr-pipe");
+  const { root: map, groups } = diagram((key, e) => pick(key, e));
+  const title = element("div", { class: "tr-x-title" });
+  const text = element("div", { "aria-live": "polite" });
+  const cell = Math.max(8, Math.min(18, Math.floor(300 / Math.max(data.width, data.height))));
+  const [canvas, ctx] = makeCanvas(data.width * cell + 2, data.height * cell + 2,
+    "the tour triangle's pixels at this stage");
+  const detail = element("div", { class: "tr-pipe-detail" }, [element("div", {}, [title, text]), canvas]);
+  root.append(map, detail);
+
+  function draw() {
+    const k = STAGES.findIndex(([key]) => key === state.stage);
+    groups.forEach((g, i) => g.querySelector("rect").setAttribute("fill",
+      i === k ? "#fde9c8" : STAGES[i][0] === "rasterize" ? "#d6ecf8" : "#f6f6f6"));
+    title.textContent = `${STAGES[k][1].replace("|", " ")}: ${STAGES[k][3]}`;
+    text.innerHTML = stageHtml(data, state.stage);
+    const img = stageImage(data, state.stage);
+    canvas.style.display = img ? "" : "none";
+    if (img) drawPixels(ctx, data, img, cell, state.stage);
+    host.picture(canvas);
+  }
+  const paint = painter(canvas, draw);
+  function pick(key, e) {
+    state.stage = key;
+    paint.request(e);
+    host.setState({ stage: key });
+  }
+  paint.now();
+  return {
+    setState(s) {
+      state = { ...state, ...s };
+      paint.request();
+    },
+  };
+}
+
+function drawPixels(ctx, data, img, cell, key) {
+  const [W, H] = [data.width, data.height];
+  img.forEach((c, i) => {
+    ctx.fillStyle = `rgb(${c[0]},${c[1]},${c[2]})`;
+    ctx.fillRect(1 + (i % W) * cell, 1 + Math.floor(i / W) * cell, cell, cell);
+  });
+  drawGrid(ctx, 0.5, 0.5, W, H, cell, "rgba(0,0,0,0.15)");
+  if (key === "rasterize") {
+    const [r0, r1, c0, c1] = data.bbox;
+    ctx.strokeStyle = OKABE.orange;
+    ctx.lineWidth = 2;
+    ctx.strokeRect(1 + c0 * cell, 1 + r0 * cell, (c1 - c0) * cell, (r1 - r0) * cell);
+    ctx.lineWidth = 1;
+  }
+  ctx.strokeStyle = "#000";
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  data.window.forEach(([x, y], k) => (k ? ctx.lineTo(1 + x * cell, 1 + y * cell) : ctx.moveTo(1 + x * cell, 1 + y * cell)));
+  ctx.closePath();
+  ctx.stroke();
+  ctx.lineWidth = 1;
+}

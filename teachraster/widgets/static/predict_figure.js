@@ -1,0 +1,400 @@
+// Predictions answered by acting on a figure, and revealed by the figure itself.
+//
+// Three kinds share this module (data.kind):
+// - "pixels": click (or drag across) the pixels you expect lit; Check draws the true pixels
+//   over yours: right ones ticked, missed ones outlined, extra ones crossed;
+// - "point": drag the marker to where you expect the point; Check draws the true point, the
+//   gap and whether it is within the tolerance;
+// - "order": put the items in order (drag a chip, or focus it and use the arrow keys), or
+//   say that no order works; Check marks each place and shows the right order.
+// Check stays disabled until an answer is given. The picture behind is the kernel's
+// (matplotlib, drawn once); the verdicts are teachraster.widgets.predict_figure's, and the
+// tests compare the two (node).
+
+// -- verdicts (pure) ----------------------------------------------------------------------------
+export function pixelVerdict(answer, given, width) {
+  const key = ([r, c]) => r * width + c;
+  const truth = new Set(answer.map(key));
+  const mine = new Set(given.map(key));
+  const right = [...mine].filter((k) => truth.has(k)).length;
+  return { right, extra: mine.size - right, missed: truth.size - right, total: truth.size,
+    correct: right === truth.size && mine.size === truth.size };
+}
+
+export function pointVerdict(answer, given, tolerance) {
+  const gap = Math.hypot(given[0] - answer[0], given[1] - answer[1]);
+  return { gap, correct: gap <= tolerance };
+}
+
+export function orderVerdict(answer, given) {
+  // answer null: no order works; given null: the student said so
+  if (answer === null || given === null) return { places: null, correct: answer === given };
+  const places = given.map((item, k) => item === answer[k]);
+  return { places, correct: places.every(Boolean) };
+}
+
+const PRED_CSS = `
+.tr-predict { border-left: 4px solid #0072B2; padding: 4px 0 4px 12px; margin: 6px 0; }
+.tr-predict-q { font-size: 1.05em; margin: 2px 0 6px; }
+.tr-predict-box { position: relative; display: inline-block; max-width: 100%; }
+.tr-predict-box img { display: block; max-width: 100%; height: auto; user-select: none; }
+.tr-predict-box canvas { position: absolute; left: 0; top: 0; width: 100%; height: 100%; }
+.tr-predict-verdict { margin: 6px 0; }
+.tr-chips { display: flex; flex-wrap: wrap; gap: 8px; margin: 6px 0; min-height: 40px; }
+.tr-chip { padding: 6px 12px; border: 2px solid #0072B2; border-radius: 18px; background: #eef6fb;
+  cursor: grab; user-select: none; touch-action: none; }
+.tr-chip:focus { outline: 3px solid #E69F00; }
+.tr-chip.right { border-color: #009E73; background: #e3f5ee; }
+.tr-chip.wrong { border-color: #D55E00; background: #fbe9e0; }
+`;
+
+function verdictHtml(right, text) {
+  const colour = right ? "#009E73" : "#D55E00";
+  return `<span style="color:${colour};font-weight:bold">${right ? "Right." : "Not quite."}` +
+    `</span> ${text}`;
+}
+
+function mount(el, data, host) {
+  addCss("tr-predict-css", PRED_CSS);
+  const root = frame(el, "", "");
+  root.classList.add("tr-predict");
+  root.append(element("div", { class: "tr-predict-q", html: `<b>Predict first.</b> ${data.question}` }));
+  const kinds = { pixels: mountPixels, point: mountPoint, order: mountOrder };
+  return kinds[data.kind](root, data, host);
+}
+
+// the picture (the kernel's PNG) with a canvas over it, in the picture's own pixels
+function pictureBox(root, data) {
+  const box = element("div", { class: "tr-predict-box" });
+  const img = element("img", { alt: data.alt || "the figure of the question", draggable: "false" });
+  img.src = `data:image/png;base64,${data.png}`;
+  const [w, h] = data.size;
+  img.width = w;
+  const canvas = document.createElement("canvas");
+  canvas.width = w;
+  canvas.height = h;
+  canvas.logical = { w, h, dpr: 1 };
+  canvas.tabIndex = 0;
+  canvas.setAttribute("aria-label", data.alt || "the figure: answer on it");
+  box.append(img, canvas);
+  root.append(box);
+  const [x0, y0, sx, sy] = data.transform;
+  const toPx = ([x, y]) => [x0 + sx * x, y0 + sy * y];
+  const toData = ([px, py]) => [(px - x0) / sx, (py - y0) / sy];
+  return { canvas, ctx: canvas.getContext("2d"), toPx, toData };
+}
+
+// the picture and the marks over it, as one canvas (what the saved notebook keeps)
+function overlaid(canvas) {
+  const img = canvas.parentElement.querySelector("img");
+  const out = document.createElement("canvas");
+  [out.width, out.height] = [canvas.width, canvas.height];
+  out.logical = { w: canvas.width, h: canvas.height, dpr: 1 };
+  const ctx = out.getContext("2d");
+  if (img.complete) ctx.drawImage(img, 0, 0, canvas.width, canvas.height);
+  ctx.drawImage(canvas, 0, 0);
+  return out;
+}
+
+// Check (disabled until an answer is given) and, once pressed, the verdict and the
+// explanation: show(correct, text)
+function checkRow(root, data, onCheck) {
+  const check = button("Check", onCheck);
+  check.disabled = true;
+  check.title = "give your answer first";
+  const verdict = element("div", { class: "tr-predict-verdict", "aria-live": "polite" });
+  const explain = element("div");
+  root.append(element("div", { class: "tr-x-row" }, [check]), verdict, explain);
+  const show = (correct, text) => {
+    verdict.innerHTML = verdictHtml(correct, text);
+    explain.innerHTML = data.explain || "";
+  };
+  return { check, show };
+}
+
+// the figure shows the answer: repainted, the kernel told (a Check pressed here), and the
+// picture kept for the saved notebook
+function revealOnFigure(host, canvas, paint, given, byClick) {
+  paint.request();
+  if (byClick) host.setState({ revealed: true, given });
+  host.picture(overlaid(canvas));
+}
+
+function mountPixels(root, data, host) {
+  let state = { given: [], revealed: false, ...host.state() };
+  const { canvas, ctx, toPx, toData } = pictureBox(root, data);
+  const { check, show } = checkRow(root, data, () => reveal(true));
+  const note = element("div", { text: "Click the pixels you expect lit (drag to paint several)." });
+  root.insertBefore(note, canvas.parentElement);
+  const W = data.width;
+  const H = data.height;
+  const has = (r, c) => state.given.some(([a, b]) => a === r && b === c);
+  let painting = null;
+
+  function draw() {
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    const cell = (r, c) => {
+      const [x, y] = toPx([c, r]);
+      const [x1, y1] = toPx([c + 1, r + 1]);
+      return [x, y, x1 - x, y1 - y];
+    };
+    for (const [r, c] of state.given) {
+      const [x, y, w, h] = cell(r, c);
+      ctx.fillStyle = "rgba(0,114,178,0.45)";
+      ctx.fillRect(x + 1, y + 1, w - 2, h - 2);
+    }
+    if (state.revealed) {
+      const truth = new Set(data.answer.map(([r, c]) => r * W + c));
+      ctx.lineWidth = 3;
+      for (const [r, c] of data.answer) {
+        const [x, y, w, h] = cell(r, c);
+        ctx.strokeStyle = has(r, c) ? "#009E73" : OKABE.orange;
+        ctx.setLineDash(has(r, c) ? [] : [5, 3]);
+        ctx.strokeRect(x + 2.5, y + 2.5, w - 5, h - 5);
+      }
+      ctx.setLineDash([]);
+      ctx.strokeStyle = OKABE.vermillion;
+      for (const [r, c] of state.given) {
+        if (truth.has(r * W + c)) continue;
+        const [x, y, w, h] = cell(r, c);
+        ctx.beginPath();
+        ctx.moveTo(x + 5, y + 5);
+        ctx.lineTo(x + w - 5, y + h - 5);
+        ctx.moveTo(x + w - 5, y + 5);
+        ctx.lineTo(x + 5, y + h - 5);
+        ctx.stroke();
+      }
+    }
+    check.disabled = state.given.length === 0;
+  }
+  const paint = painter(canvas, draw);
+
+  function reveal(byClick) {
+    if (!state.given.length) return;
+    state.revealed = true;
+    const v = pixelVerdict(data.answer, state.given, W);
+    show(v.correct, `You marked ${state.given.length} pixel` +
+      `${state.given.length === 1 ? "" : "s"}: ${v.right} right, ${v.extra} too many, ${v.missed} ` +
+      `missed. The answer lights <b>${v.total}</b>: outlined green where you had them, dashed ` +
+      "orange where you missed them; crossed: yours that are not lit.");
+    revealOnFigure(host, canvas, paint, state.given, byClick);
+  }
+
+  function cellAt(p) {
+    const [x, y] = toData(p);
+    const [c, r] = [Math.floor(x), Math.floor(y)];
+    return r >= 0 && r < H && c >= 0 && c < W ? [r, c] : null;
+  }
+  function setCell(rc, on) {
+    if (!rc || has(...rc) === on) return;
+    state.given = on ? [...state.given, rc] : state.given.filter(([a, b]) => a !== rc[0] || b !== rc[1]);
+  }
+  canvas.addEventListener("pointerdown", (e) => {
+    if (state.revealed) return;
+    const rc = cellAt(pointerAt(canvas, e));
+    if (!rc) return;
+    painting = !has(...rc);
+    setCell(rc, painting);
+    capture(canvas, e);
+    paint.request(e);
+  });
+  canvas.addEventListener("pointermove", (e) => {
+    if (painting === null) return;
+    setCell(cellAt(pointerAt(canvas, e)), painting);
+    paint.request(e);
+  });
+  const up = () => {
+    if (painting === null) return;
+    painting = null;
+    host.setState({ given: state.given });
+  };
+  canvas.addEventListener("pointerup", up);
+  canvas.addEventListener("pointercancel", up);
+  paint.now();
+  if (state.revealed) reveal(false);
+  return {
+    setState(s) {
+      state = { ...state, ...s };
+      if (state.revealed) reveal(false);
+      paint.request();
+    },
+  };
+}
+
+function mountPoint(root, data, host) {
+  let state = { given: null, revealed: false, ...host.state() };
+  const { canvas, ctx, toPx, toData } = pictureBox(root, data);
+  const { check, show } = checkRow(root, data, () => reveal(true));
+  root.insertBefore(element("div", { text: "Drag the orange marker to your answer." }), canvas.parentElement);
+  const start = data.start;
+
+  // the pointer's point, onto the segment `along` when the question says so
+  function constrain(p) {
+    if (!data.along) return p;
+    const [a, b] = data.along;
+    const d = [b[0] - a[0], b[1] - a[1]];
+    const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] ** 2 + d[1] ** 2)));
+    return [a[0] + t * d[0], a[1] + t * d[1]];
+  }
+  function draw() {
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    const mine = toPx(state.given || start);
+    if (state.revealed) {
+      const truth = toPx(data.answer);
+      ctx.strokeStyle = "#333";
+      ctx.setLineDash([4, 3]);
+      ctx.beginPath();
+      ctx.moveTo(...mine);
+      ctx.lineTo(...truth);
+      ctx.stroke();
+      ctx.setLineDash([]);
+      ctx.fillStyle = "#009E73";
+      ctx.beginPath();
+      ctx.arc(truth[0], truth[1], 9, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.fillStyle = "#111";
+      ctx.font = "bold 14px sans-serif";
+      ctx.fillText("the answer", truth[0] + 12, truth[1] + 5);
+    }
+    ctx.lineWidth = 3.5;
+    ctx.strokeStyle = OKABE.orange;
+    ctx.beginPath();
+    ctx.arc(mine[0], mine[1], 10, 0, 2 * Math.PI);
+    ctx.stroke();
+    ctx.beginPath();
+    ctx.moveTo(mine[0] - 14, mine[1]);
+    ctx.lineTo(mine[0] + 14, mine[1]);
+    ctx.moveTo(mine[0], mine[1] - 14);
+    ctx.lineTo(mine[0], mine[1] + 14);
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    check.disabled = state.given === null;
+  }
+  const paint = painter(canvas, draw);
+  function reveal(byClick) {
+    if (state.given === null) return;
+    state.revealed = true;
+    const v = pointVerdict(data.answer, state.given, data.tolerance);
+    show(v.correct, `Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
+      `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} counts` : ""}.`);
+    revealOnFigure(host, canvas, paint, state.given, byClick);
+  }
+  pointerInput(canvas, {
+    handles: () => [toPx(state.given || start)],
+    radius: 22,
+    onDrag(_i, p, e) {
+      if (state.revealed) return;
+      state.given = constrain(toData(p)).map((v) => Number(v.toFixed(4)));
+      paint.request(e);
+    },
+    onRelease() {
+      host.setState({ given: state.given });
+    },
+  });
+  onKeys(canvas, (e) => {
+    const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key];
+    if (!d || state.revealed) return;
+    e.preventDefault();
+    const g = state.given || start;
+    const step = data.keyStep;
+    state.given = constrain([g[0] + d[0] * step, g[1] + d[1] * step * Math.sign(data.transform[3])])
+      .map((v) => Number(v.toFixed(4)));
+    paint.request(e);
+    host.setState({ given: state.given });
+  });
+  paint.now();
+  if (state.revealed) reveal(false);
+  return {
+    setState(s) {
+      state = { ...state, ...s };
+      if (state.revealed) reveal(false);
+      paint.request();
+    },
+  };
+}
+
+function mountOrder(root, data, host) {
+  let state = { given: null, acted: false, revealed: false, ...host.state() };
+  if (data.png) pictureBox(root, data);
+  const chips = element("div", { class: "tr-chips", role: "list",
+    "aria-label": "the items: drag to reorder, or focus one and use the arrow keys" });
+  root.append(element("div", { text: data.hint }), chips);
+  let order = state.given ? [...state.given] : [...data.items];
+  let impossible = null;
+  if (data.allowImpossible) {
+    impossible = element("input", { type: "checkbox" });
+    impossible.checked = state.given === null && state.acted;
+    impossible.addEventListener("change", () => {
+      act();
+      render_();
+    });
+    root.append(element("label", {}, [impossible, element("span", { text: data.impossibleLabel })]));
+  }
+  const { check, show } = checkRow(root, data, () => reveal(true));
+  const given = () => (impossible && impossible.checked ? null : order);
+  function act() {
+    state.acted = true;
+    state.given = given();
+    host.setState({ given: state.given, acted: true });
+  }
+  function render_() {
+    chips.innerHTML = "";
+    const v = state.revealed ? orderVerdict(data.answer, given()) : null;
+    order.forEach((item, k) => {
+      const chip = element("div", { class: "tr-chip", tabindex: 0, role: "listitem", html: item });
+      if (v && v.places) chip.classList.add(v.places[k] ? "right" : "wrong");
+      onKeys(chip, (e) => {
+        const d = { ArrowLeft: -1, ArrowUp: -1, ArrowRight: 1, ArrowDown: 1 }[e.key];
+        if (!d || state.revealed) return;
+        e.preventDefault();
+        move(k, k + d);
+        chips.children[Math.max(0, Math.min(order.length - 1, k + d))].focus();
+      });
+      chip.addEventListener("pointerdown", (e) => startDrag(e, k));
+      chips.append(chip);
+    });
+    check.disabled = !state.acted;
+  }
+  function move(from, to) {
+    if (to < 0 || to >= order.length || from === to) return;
+    const [item] = order.splice(from, 1);
+    order.splice(to, 0, item);
+    act();
+    render_();
+  }
+  function startDrag(e, k) {
+    if (state.revealed) return;
+    e.preventDefault();
+    const target = e.currentTarget;
+    capture(target, e);
+    const onUp = (ev) => {
+      target.removeEventListener("pointerup", onUp);
+      const rects = [...chips.children].map((c) => c.getBoundingClientRect());
+      let to = rects.findIndex((r) => ev.clientX < r.left + r.width / 2 && ev.clientY < r.bottom);
+      if (to === -1) to = order.length - 1;
+      else if (to > k) to -= 1;
+      move(k, to);
+    };
+    target.addEventListener("pointerup", onUp);
+  }
+  function reveal(byClick) {
+    if (!state.acted) return;
+    state.revealed = true;
+    const v = orderVerdict(data.answer, given());
+    const right = data.answer === null ? data.impossibleLabel : data.answer.join(" → ");
+    show(v.correct, `The answer: <b>${right}</b>.`);
+    render_();
+    if (byClick) host.setState({ revealed: true, given: given(), acted: true });
+  }
+  render_();
+  if (state.revealed) reveal(false);
+  return {
+    setState(s) {
+      state = { ...state, ...s };
+      if (state.given) order = [...state.given];
+      if (impossible) impossible.checked = state.given === null && state.acted;
+      if (state.revealed) reveal(false);
+      render_();
+    },
+  };
+}

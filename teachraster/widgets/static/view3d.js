@@ -1,0 +1,124 @@
+// A small 3-D view on a 2-D canvas: an orbit camera (drag to rotate), orthographic, and
+// polygons drawn far to near (the painter's algorithm, per polygon: surfaces are cut into
+// small pieces so that sorting their centres is close enough for a picture).
+//
+// World axes: x right and y down as on the screen (pixels), z up (a value over the screen).
+
+// the camera: `yaw` turns about z, `elevation` looks down from above the horizon (90°: the
+// top view, the 2-D picture); `scale` px per world unit, `centre` the world point at `at`
+export function camera3d({ yaw = -0.45, elevation = 0.6, scale = 20, centre = [0, 0, 0],
+  at = [300, 250] } = {}) {
+  const cam = { yaw, elevation, scale, centre, at };
+  cam.project = (p) => {
+    const x = p[0] - cam.centre[0];
+    const y = p[1] - cam.centre[1];
+    const z = p[2] - cam.centre[2];
+    const ca = Math.cos(cam.yaw);
+    const sa = Math.sin(cam.yaw);
+    const x1 = x * ca - y * sa;
+    const y1 = x * sa + y * ca;
+    const se = Math.sin(cam.elevation);
+    const ce = Math.cos(cam.elevation);
+    return [cam.at[0] + cam.scale * x1, cam.at[1] + cam.scale * (y1 * se - z * ce),
+      y1 * ce + z * se];
+  };
+  return cam;
+}
+
+// Draw polygons {pts: [[x, y, z], ...], fill, alpha, stroke, width} far to near.
+export function drawPolygons(ctx, cam, polys) {
+  const items = polys.map((poly) => {
+    const s = poly.pts.map(cam.project);
+    const depth = s.reduce((acc, q) => acc + q[2], 0) / s.length + (poly.bias || 0);
+    return { poly, s, depth };
+  });
+  items.sort((a, b) => a.depth - b.depth);
+  for (const { poly, s } of items) {
+    ctx.beginPath();
+    s.forEach((q, i) => (i ? ctx.lineTo(q[0], q[1]) : ctx.moveTo(q[0], q[1])));
+    if (s.length > 2) ctx.closePath();
+    if (poly.fill) {
+      ctx.globalAlpha = poly.alpha ?? 1;
+      ctx.fillStyle = poly.fill;
+      ctx.fill();
+      ctx.globalAlpha = 1;
+    }
+    if (poly.stroke) {
+      ctx.strokeStyle = poly.stroke;
+      ctx.lineWidth = poly.width || 1;
+      ctx.stroke();
+    }
+  }
+}
+
+// a surface z = f(x, y) over the quadrilateral or triangle `corners` (bilinear in its
+// parameters), cut into n x n pieces: polygons for drawPolygons
+export function surfacePieces(corners, f, n, style) {
+  const at = (s, t) => {
+    if (corners.length === 3) {
+      // s, t in the triangle's parameters: (1 - s) a + s ((1 - t) b + t c)
+      const [a, b, c] = corners;
+      const x = (1 - s) * a[0] + s * ((1 - t) * b[0] + t * c[0]);
+      const y = (1 - s) * a[1] + s * ((1 - t) * b[1] + t * c[1]);
+      return [x, y];
+    }
+    const [a, b, c, d] = corners;
+    const x = (1 - t) * ((1 - s) * a[0] + s * b[0]) + t * ((1 - s) * d[0] + s * c[0]);
+    const y = (1 - t) * ((1 - s) * a[1] + s * b[1]) + t * ((1 - s) * d[1] + s * c[1]);
+    return [x, y];
+  };
+  const out = [];
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) {
+      const q = [[i, j], [i + 1, j], [i + 1, j + 1], [i, j + 1]].map(([a, b]) => {
+        const [x, y] = at(a / n, b / n);
+        return [x, y, f(x, y)];
+      });
+      out.push({ ...style, pts: q });
+    }
+  }
+  return out;
+}
+
+// Rotate the camera by dragging on the canvas; onChange() after each move.
+export function orbitDrag(canvas, cam, onChange) {
+  let last = null;
+  canvas.addEventListener("pointerdown", (e) => {
+    if (e.button !== 0) return;
+    last = [e.clientX, e.clientY];
+    capture(canvas, e);
+    e.preventDefault();
+    canvas.focus({ preventScroll: true });
+  });
+  canvas.addEventListener("pointermove", (e) => {
+    if (!last) return;
+    cam.yaw += (e.clientX - last[0]) * 0.01;
+    cam.elevation = Math.max(0.05, Math.min(Math.PI / 2, cam.elevation + (e.clientY - last[1]) * 0.01));
+    last = [e.clientX, e.clientY];
+    onChange(e);
+  });
+  const up = () => (last = null);
+  canvas.addEventListener("pointerup", up);
+  canvas.addEventListener("pointercancel", up);
+  onKeys(canvas, (e) => {
+    const turn = { ArrowLeft: [-0.08, 0], ArrowRight: [0.08, 0], ArrowUp: [0, 0.06],
+      ArrowDown: [0, -0.06] }[e.key];
+    if (!turn) return;
+    e.preventDefault();
+    cam.yaw += turn[0];
+    cam.elevation = Math.max(0.05, Math.min(Math.PI / 2, cam.elevation + turn[1]));
+    onChange(e);
+  });
+}
+
+// a line in 3-D, drawn on top (labels, axes)
+export function line3d(ctx, cam, a, b, stroke, width = 1, dash = []) {
+  strokeLine(ctx, cam.project(a), cam.project(b), stroke, width, dash);
+}
+
+export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-serif") {
+  const q = cam.project(p);
+  ctx.fillStyle = color;
+  ctx.font = font;
+  ctx.fillText(text, q[0], q[1]);
+}

@@ -1,0 +1,355 @@
+"""The explorables computed in the page, in JupyterLab in headless Chromium, used as a student would.
+
+One notebook holds every explorable and prediction; it runs once (one server, one browser for
+the module), then each test acts on one of them with the pointer or the keys and checks that
+the page answered by itself (a new picture, counted on the canvas' ``data-frames``) and that
+the kernel heard of the result at the release (a cell printing the widget's state). Further:
+a saved notebook reopened with no kernel shows each one's stand-in with its last picture, a
+``teachraster html`` export keeps them live with no kernel, Notebook 7 leaves their keys to
+them, and at 1024 x 768 (and a 150 % zoom) each fits its column.
+
+Uses the JupyterLab server and page of tests/test_browser.py (skipped, saying why, where
+Playwright or Chromium is missing).
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import urllib.request
+
+import pytest
+from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
+from test_browser_saved import _put_notebook, _stop_kernels
+
+from teachraster.widgets import (
+    AttributeSurfaces,
+    CrackExplorer,
+    DepthValuesExplorer,
+    DiamondExplorer,
+    EdgeFunctionExplorer,
+    EyeRayExplorer,
+    FootprintExplorer,
+    PipelineMap,
+)
+
+pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+
+NAME = "explorables.ipynb"
+TRIANGLE = "tri = tr.Triangle([[1.5, 1.5], [9.5, 3.5], [3.5, 8.5]])"
+CELLS = [
+    "import json\nimport teachraster as tr\nfrom teachraster.plotting import plot_triangle\n"
+    "from teachraster.widgets import *\n" + TRIANGLE,
+    "pipeline = PipelineMap()\npipeline",
+    "cracks = CrackExplorer()\ncracks",
+    "edges = EdgeFunctionExplorer()\nedges",
+    "surfaces = AttributeSurfaces()\nsurfaces",
+    "eye = EyeRayExplorer()\neye",
+    "depth = DepthValuesExplorer()\ndepth",
+    "footprint = FootprintExplorer()\nfootprint",
+    "diamonds = DiamondExplorer()\ndiamonds",
+    "pixels = PredictPixels('Click the pixels this triangle covers.', "
+    "answer=tr.rasterize(tri, 12, 10).coverage, draw=lambda ax: plot_triangle(ax, tri))\npixels",
+    "order = PredictOrder('Order the sticks.', ['a', 'b', 'c'], answer=None, "
+    "allow_impossible=True)\norder",
+]
+#: What each live view shows first: its title (the class's), or its question
+TITLES = {key: cls.title for key, cls in [
+    ("pipeline", PipelineMap), ("cracks", CrackExplorer), ("edges", EdgeFunctionExplorer),
+    ("surfaces", AttributeSurfaces), ("eye", EyeRayExplorer), ("depth", DepthValuesExplorer),
+    ("footprint", FootprintExplorer), ("diamonds", DiamondExplorer)]}  # fmt: skip
+TITLES.update(pixels="Click the pixels this triangle covers", order="Order the sticks")
+
+
+@pytest.fixture(scope="module")
+def lesson(lab, page):  # noqa: F811
+    """The notebook of every explorable, run (Run All) in a fresh kernel."""
+    _shut_down_kernels(lab)
+    page.set_viewport_size({"width": 1400, "height": 900})
+    page.goto(f"{lab}/lab?reset")
+    page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
+    _put_notebook(page, CELLS, NAME)
+    page.goto(f"{lab}/lab/tree/{NAME}?reset")
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
+    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+    page.wait_for_function("n => document.querySelectorAll('.jp-OutputArea-output .tr-x').length >= n",
+                           arg=len(TITLES), timeout=180_000)  # fmt: skip
+    _wait_idle(page)
+    return page
+
+
+def _wait_idle(tab) -> None:
+    tab.wait_for_function(
+        """() => [...document.querySelectorAll('.jp-CodeCell .jp-InputPrompt')]
+                 .every(p => /\\[\\d+\\]/.test(p.textContent) || p.textContent.trim() === '')""",
+        timeout=120_000,
+    )
+    tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+
+
+def _widget(tab, key: str):
+    """The live view (not a stand-in) of the explorable ``key``."""
+    return tab.locator(".jp-OutputArea-output .tr-x", has_text=TITLES[key]).first
+
+
+def _kernel(tab, code: str) -> str:
+    """Run ``code`` (one line) in a new cell at the end; its printed output."""
+    tab.locator(".jp-Notebook .jp-Cell").last.click()
+    tab.keyboard.press("Escape")
+    n = tab.locator(".jp-Notebook .jp-CodeCell").count()
+    tab.keyboard.press("b")
+    tab.wait_for_function("n => document.querySelectorAll('.jp-Notebook .jp-CodeCell').length > n",
+                          arg=n, timeout=10_000)  # fmt: skip
+    tab.keyboard.press("Enter")
+    tab.keyboard.type(f"print('OUT' + json.dumps({code}))")
+    tab.keyboard.press("Shift+Enter")
+    out = tab.locator(".jp-OutputArea-output", has_text="OUT").last
+    out.wait_for(timeout=60_000)
+    return json.loads(out.inner_text().split("OUT", 1)[1])
+
+
+def _frames(canvas) -> int:
+    return int(canvas.get_attribute("data-frames") or 0)
+
+
+def _drag(tab, canvas, start, delta, steps: int = 12) -> None:
+    """Drag from ``start`` (canvas px at its natural size) by ``delta`` (the same px)."""
+    canvas.scroll_into_view_if_needed()
+    box = canvas.bounding_box()
+    scale = box["width"] / float(canvas.evaluate("c => c.logical.w"))
+    x, y = box["x"] + start[0] * scale, box["y"] + start[1] * scale
+    tab.mouse.move(x, y)
+    tab.mouse.down()
+    tab.mouse.move(x + delta[0] * scale, y + delta[1] * scale, steps=steps)
+    tab.mouse.up()
+
+
+def _handles(canvas) -> list:
+    return json.loads(canvas.get_attribute("data-handles"))
+
+
+def test_edges_drag_in_the_page_and_the_kernel_hears_the_release(lesson):
+    w = _widget(lesson, "edges")
+    canvas = w.locator("canvas").first
+    before, text = _frames(canvas), w.locator(".tr-x-readout").inner_text()
+    _drag(lesson, canvas, _handles(canvas)[3], (-40, -40))  # v4 up and left
+    assert _frames(canvas) >= before + 3  # the page drew the drag by itself
+    assert w.locator(".tr-x-readout").inner_text() != text
+    moved = _kernel(lesson, "edges.state['vertices'][3]")
+    assert moved != [14.5, 12.5] and all(abs(v * 4 - round(v * 4)) < 1e-9 for v in moved)
+    w.get_by_role("button", name="3-D: E as planes").click()
+    planes = w.locator("canvas").nth(1)
+    assert planes.is_visible()
+    before = _frames(planes)
+    _drag(lesson, planes, (280, 200), (60, 20))
+    assert _frames(planes) > before
+    assert not lesson.errors, lesson.errors[:3]
+
+
+def test_cracks_reroll_and_tally(lesson):
+    w = _widget(lesson, "cracks")
+    w.get_by_role("button", name="Reroll").click()
+    w.get_by_text("of 2 (").first.wait_for(timeout=5_000)  # the tally counts two pairs
+    w.get_by_role("button", name="Roll 1000 more").click()
+    w.get_by_text("of 1002 (").first.wait_for(timeout=10_000)
+    state = _kernel(lesson, "cracks.state")
+    assert state["roll"] == 1001 and state["tally"]["integer"]["pairs"] == 1002
+    assert state["tally"]["integer"]["swapped"] == 0 and state["tally"]["dda"]["swapped"] > 0
+
+
+def test_depth_near_plane_dragged(lesson):
+    w = _widget(lesson, "depth")
+    canvas = w.locator("canvas").first
+    handle = _handles(canvas)[0]
+    _drag(lesson, canvas, handle, (120, 0))
+    near = _kernel(lesson, "depth.near")
+    assert near > 0.2
+    assert f"(near {near:g}," in w.locator(".tr-x-readout").inner_text()
+
+
+def test_diamonds_end_snaps_onto_a_tie_and_keys_step(lesson):
+    w = _widget(lesson, "diamonds")
+    canvas = w.locator("canvas").first
+    p1 = _handles(canvas)[1]
+    cell = (_handles(canvas)[1][0] - _handles(canvas)[0][0]) / (10.4 - 1.5)
+    _drag(lesson, canvas, p1, (cell * 0.1 - 1, -cell * 0.1 + 1))  # near (10.5, 4.5): a centre
+    assert _kernel(lesson, "diamonds.state['p1']") == [10.5, 4.5]
+    _keys_stay(lesson, canvas, w.get_by_role("slider", name="step"))
+
+
+ACTIVE = "() => [...document.querySelectorAll('.jp-Cell')].findIndex(c => c.classList.contains('jp-mod-active'))"
+
+
+def _keys_stay(tab, canvas, slider) -> None:
+    """Arrow keys on the focused canvas step it (all -> 0 -> 1 -> 2), and the notebook's
+    shortcuts do not take them (the active cell stays)."""
+    canvas.focus()
+    active = tab.evaluate(ACTIVE)
+    for _ in range(3):
+        canvas.press("ArrowRight")
+    assert slider.input_value() == "2"
+    assert tab.evaluate(ACTIVE) == active
+
+
+def test_footprint_both_ways(lesson):
+    w = _widget(lesson, "footprint")
+    screen, texture = w.locator("canvas").nth(0), w.locator("canvas").nth(1)
+    screen.scroll_into_view_if_needed()
+    box = screen.bounding_box()
+    lesson.mouse.click(box["x"] + box["width"] * 0.5, box["y"] + box["height"] * 0.8)  # near
+    readout = w.locator(".tr-x-readout")
+    readout.get_by_text("Pixel (row ").wait_for(timeout=5_000)
+    pixel = _kernel(lesson, "footprint.state['pixel']")
+    assert pixel[0] >= 24  # the lower part of the 48 x 36 image: near the camera
+    texture.scroll_into_view_if_needed()
+    box = texture.bounding_box()
+    lesson.mouse.click(box["x"] + box["width"] * 0.5, box["y"] + box["height"] * 0.5)
+    readout.get_by_text("is fetched by the trilinear filter of").wait_for(timeout=5_000)
+    n = int(readout.inner_text().split("trilinear filter of ")[1].split(" pixel")[0])
+    assert n >= 1  # the footprint's own centre is read at least by its pixel
+    assert _kernel(lesson, "footprint.state['point'] is not None") is True
+
+
+def test_surfaces_turn_and_w(lesson):
+    w = _widget(lesson, "surfaces")
+    canvas = w.locator("canvas").first
+    before = _frames(canvas)
+    _drag(lesson, canvas, (320, 250), (80, 30))
+    assert _frames(canvas) >= before + 3
+    text = w.locator(".tr-x-readout").inner_text()
+    slider = w.get_by_role("slider", name="w of v3")
+    slider.fill("1")
+    slider.dispatch_event("change")
+    w.get_by_text("Every w is equal").wait_for(timeout=5_000)
+    assert w.locator(".tr-x-readout").inner_text() != text
+    assert _kernel(lesson, "surfaces.state['w']") == [1.0, 1.0, 1.0]
+
+
+def test_eye_ray_peak_and_dragged_end(lesson):
+    w = _widget(lesson, "eye")
+    readout = w.locator(".tr-x-readout")
+    assert "3 − 2√2" in readout.inner_text()  # depth ratio 2 at first
+    canvas = w.locator("canvas").first
+    _drag(lesson, canvas, _handles(canvas)[1], (0, -40))  # the far end farther
+    assert "3 − 2√2" not in readout.inner_text()
+    ends = _kernel(lesson, "eye.state['ends']")
+    assert ends[1][1] > 3.0
+
+
+def test_pipeline_stage_clicked(lesson):
+    w = _widget(lesson, "pipeline")
+    w.locator("[data-stage=depth]").click()
+    w.get_by_text("Early-z", exact=True).wait_for(timeout=5_000)
+    w.locator("[data-stage=vertex]").click()
+    assert "perspective projection" in w.inner_text()
+    assert _kernel(lesson, "pipeline.state['stage']") == "vertex"
+
+
+def test_predictions_wait_for_an_answer_then_show_it(lesson):
+    w = _widget(lesson, "pixels")
+    check = w.get_by_role("button", name="Check")
+    assert check.is_disabled()
+    (x0, y0, sx, sy), width = _kernel(lesson, "[pixels.data['transform'], pixels.data['size'][0]]")
+    canvas = w.locator("canvas").first
+    canvas.scroll_into_view_if_needed()
+    box = canvas.bounding_box()
+    scale = box["width"] / width
+    for row, col in [(2, 2), (2, 3), (4, 4)]:
+        lesson.mouse.click(box["x"] + (x0 + sx * (col + 0.5)) * scale,
+                           box["y"] + (y0 + sy * (row + 0.5)) * scale)  # fmt: skip
+    from playwright.sync_api import expect
+
+    expect(check).to_be_enabled(timeout=5_000)
+    check.click()
+    w.get_by_text("You marked 3 pixels").wait_for(timeout=5_000)
+    assert _kernel(lesson, "[pixels.revealed, pixels.given]") == [True, [[2, 2], [2, 3], [4, 4]]]
+    o = _widget(lesson, "order")
+    ocheck = o.get_by_role("button", name="Check")
+    assert ocheck.is_disabled()
+    o.get_by_text("no order works").click()
+    ocheck.click()
+    o.get_by_text("Right.").wait_for(timeout=5_000)
+    assert _kernel(lesson, "order.correct") is True
+
+
+def test_layout_fits_a_small_screen(lesson):
+    for size in (
+        {"width": 1024, "height": 768},
+        {"width": 933, "height": 600},
+    ):  # 1400x900 at 150 %
+        lesson.set_viewport_size(size)
+        lesson.wait_for_timeout(500)
+        wide = lesson.evaluate("""() => [...document.querySelectorAll('.jp-OutputArea-output .tr-x')]
+            .filter(x => x.scrollWidth > x.parentElement.getBoundingClientRect().width + 2
+                    || x.getBoundingClientRect().right > document.documentElement.clientWidth)
+            .map(x => x.textContent.slice(0, 40))""")
+        assert not wide, f"{size}: wider than the column: {wide}"
+    lesson.set_viewport_size({"width": 1400, "height": 900})
+
+
+def test_saved_notebook_reopened_shows_each_last_picture(lesson, lab):  # noqa: F811
+    lesson.wait_for_timeout(1500)  # the pictures of the last changes reach the kernel
+    lesson.keyboard.press("Escape")
+    lesson.keyboard.press("Control+s")
+    lesson.wait_for_function("() => !document.querySelector('.jp-mod-current.jp-mod-dirty')",
+                             timeout=30_000)  # fmt: skip
+    with urllib.request.urlopen(f"{lab}/api/contents/{NAME}", timeout=30) as r:
+        saved = json.load(r)["content"]
+    standins = [o["data"]["text/html"] for c in saved["cells"] for o in c.get("outputs", [])
+                if "teachraster-static" in o.get("data", {}).get("text/html", "")]  # fmt: skip
+    assert len(standins) == len(TITLES)
+    # every page sent its last picture to the kernel (the order question has no figure)
+    without = [h for h in standins if "data:image/png;base64," not in h]
+    assert len(without) == 1 and "Order the sticks." in without[0]
+    _stop_kernels(lesson, lab)
+    lesson.goto(f"{lab}/lab/tree/{NAME}?reset")
+    lesson.wait_for_selector(".teachraster-static", timeout=90_000)
+    lesson.wait_for_timeout(2000)  # the widget manager has given up on the models
+    shown = [f for f in lesson.locator(".teachraster-static").all() if f.is_visible()]
+    assert len(shown) == len(TITLES)
+    for f in shown:
+        assert "Run this cell to bring the" in f.inner_text()
+    assert "Click the pixels this triangle covers." in " ".join(f.inner_text() for f in shown)
+
+
+def test_html_export_stays_live(page, tmp_path):  # noqa: F811
+    import nbformat
+
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(CELLS[0]), nbformat.v4.new_code_cell(CELLS[3]),
+                nbformat.v4.new_code_cell(CELLS[9])]  # fmt: skip
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}  # fmt: skip
+    src, out = tmp_path / "x.ipynb", tmp_path / "x.html"
+    nbformat.write(nb, src)
+    subprocess.run([sys.executable, "-m", "teachraster", "html", str(src), "-o", str(out)],
+                   check=True, capture_output=True, timeout=300)  # fmt: skip
+    assert out.read_text().count("mountStatic(document.getElementById(") == 2  # inline
+    page.goto(out.as_uri())
+    page.wait_for_selector(".tr-x canvas", timeout=30_000)
+    w = page.locator(".tr-x", has_text="Edge functions, live").first
+    canvas = w.locator("canvas").first
+    before = _frames(canvas)
+    _drag(page, canvas, _handles(canvas)[0], (30, 30))
+    assert _frames(canvas) > before  # live with no kernel
+    q = page.locator(".tr-x", has_text="Click the pixels").first
+    assert q.get_by_role("button", name="Check").is_disabled()
+    assert not page.errors, page.errors[:3]
+
+
+def test_notebook_7_leaves_the_keys_to_the_explorables(lab, page):  # noqa: F811
+    _shut_down_kernels(lab)
+    page.goto(f"{lab}/lab?reset")  # the REST calls go from a page of the server
+    page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
+    _put_notebook(page, [CELLS[0], CELLS[8]], "nb7.ipynb")
+    page.goto(f"{lab}/notebooks/nb7.ipynb")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_timeout(3000)
+    page.keyboard.press("Escape")
+    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
+    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+    w = page.locator(".jp-OutputArea-output .tr-x", has_text=TITLES["diamonds"]).first
+    w.wait_for(timeout=120_000)
+    _keys_stay(page, w.locator("canvas").first, w.get_by_role("slider", name="step"))

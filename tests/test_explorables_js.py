@@ -1,0 +1,448 @@
+"""The explorables' page-side rules against the engine, exactly (node runs the JavaScript).
+
+Every rule an explorable computes in the page exists in the engine too; these tests feed both
+the same inputs and compare the answers: snapping and the top-left rule, edge values,
+coverage, the owner of the centres on a shared edge, the naive span fills of lesson 01, depth
+values, mip levels and footprints, and the diamond rule's pixels. Quick: one node process per
+test, small grids.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from explorables_node import call_js
+
+import teachraster as tr
+from teachraster.core.edges import edge_values_at, setup_edges
+from teachraster.core.snapping import to_units
+
+RULES = ("raster_rules",)
+EDGES = ("raster_rules", "view3d", "explore_edges")
+
+
+def _triangles(seed: int, n: int, size: int, step: float) -> np.ndarray:
+    """n random triangles on a grid of ``step`` px inside size x size (ties are frequent)."""
+    rng = np.random.default_rng(seed)
+    return rng.integers(0, int(size / step) + 1, (n, 3, 2)) * step
+
+
+def test_snapping_rounds_half_to_even_as_the_engine():
+    rng = np.random.default_rng(1)
+    xs = np.concatenate([np.arange(-40, 41) / 512.0, rng.uniform(-70, 70, 200),
+                         np.arange(0, 64) / 512.0 + 3.0])  # fmt: skip
+    got = call_js(RULES, [("toUnits", [float(x)]) for x in xs])
+    assert got == to_units(xs, 8).tolist()
+
+
+def test_set_up_top_left_and_kinds_as_the_engine():
+    tris = np.concatenate([_triangles(2, 60, 12, 0.5), _triangles(3, 20, 12, 1 / 256)])
+    tris[0] = [[1, 1], [1, 1], [4, 4]]  # zero area
+    got = call_js(RULES, [("setupTriangle", [t.tolist()]) for t in tris])
+    for t, js in zip(tris, got, strict=True):
+        s = setup_edges(t, 8)
+        assert js["p"] == s.p.tolist()
+        assert js["perm"] == s.perm.tolist()
+        assert js["area2"] == int(s.area2) and js["originalArea2"] == int(s.original_area2)
+        assert js["topLeft"] == s.top_left.tolist()
+        for k, kind in enumerate(js["kinds"]):
+            a, b = s.p[k], s.p[(k + 1) % 3]
+            assert (kind in ("top", "left")) == bool(tr.is_top_left(a, b))
+            want = ("left" if b[1] < a[1] else "right" if b[1] > a[1]
+                    else "top" if b[0] > a[0] else "bottom")  # fmt: skip
+            assert kind == want
+
+
+def test_edge_values_at_centres_as_the_engine():
+    tris = _triangles(4, 12, 10, 0.25)
+    rows, cols = np.mgrid[0:10, 0:10]
+    rows, cols = rows.ravel(), cols.ravel()
+    calls = [("orientedValues", [setup, int(r), int(c)])
+             for setup in call_js(RULES, [("setupTriangle", [t.tolist()]) for t in tris])
+             for r, c in zip(rows, cols, strict=True)]  # fmt: skip
+    got = np.array(call_js(RULES, calls)).reshape(len(tris), len(rows), 3)
+    for t, js in zip(tris, got, strict=True):
+        assert np.array_equal(js, edge_values_at(setup_edges(t, 8), rows, cols))
+
+
+def test_coverage_as_the_engine_on_ties():
+    # vertices on pixel centres, quarter pixels and the 1/256 grid: every kind of tie
+    tris = np.concatenate([_triangles(5, 80, 14, 0.5) + 0.0, _triangles(6, 80, 14, 0.25),
+                           _triangles(7, 40, 14, 1 / 256)])  # fmt: skip
+    got = call_js(RULES, [("edgeFunctionFill", [t.tolist(), 14, 12]) for t in tris])
+    for t, js in zip(tris, got, strict=True):
+        want = tr.rasterize(tr.Triangle(t), 14, 12).coverage
+        assert np.array_equal(np.array(js, bool).reshape(12, 14), want), t.tolist()
+
+
+def test_owner_of_every_centre_on_the_shared_edge_is_the_engines():
+    rng = np.random.default_rng(8)
+    quads = rng.integers(0, 14, (60, 4, 2)) + 0.5  # on centres: the shared edge has ties
+    quads[:, :, 1] = np.clip(quads[:, :, 1], 0.5, 11.5)
+    got = call_js(EDGES, [("edgeScene", [q.tolist(), 14, 12]) for q in quads])
+    checked = 0
+    for q, js in zip(quads, got, strict=True):
+        a = tr.rasterize(tr.Triangle(q[[0, 1, 2]]), 14, 12).coverage
+        b = tr.rasterize(tr.Triangle(q[[2, 1, 3]]), 14, 12).coverage
+        assert np.array_equal(np.array(js["covA"], bool).reshape(12, 14), a)
+        assert np.array_equal(np.array(js["covB"], bool).reshape(12, 14), b)
+        for s in js["shared"]:
+            r, c = s["row"], s["col"]
+            want = {(True, True): "both", (True, False): "A", (False, True): "B",
+                    (False, False): "none"}[(bool(a[r, c]), bool(b[r, c]))]  # fmt: skip
+            assert s["owner"] == want
+            centre = np.array([c + 0.5, r + 0.5])
+            assert tr.edge_function(q[1], q[2], centre) == 0  # exactly on v2-v3
+            checked += 1
+    assert checked > 50  # the inputs do exercise the ties
+
+
+def test_edge_labels_name_the_given_edges():
+    # v1 v2 v3 counter-clockwise on screen: oriented, the edges run the other way
+    setup = call_js(RULES, [("setupTriangle", [[[2, 2], [2, 8], [8, 2]]])])[0]
+    labels = call_js(EDGES, [("edgeLabels", [setup, ["E12", "E23", "E31"]])])[0]
+    # E12 runs v1 (2,2) -> v2 (2,8): oriented v2 -> v1 goes up: a left edge, bias 0
+    assert labels[0] == {"name": "E12", "kind": "left", "bias": 0, "flipped": True}
+    # E31 runs v3 (8,2) -> v1 (2,2): oriented v1 -> v3 is horizontal going right: top
+    assert labels[2]["kind"] == "top" and labels[2]["bias"] == 0
+    assert labels[1]["kind"] == "right" and labels[1]["bias"] == -1
+    # and on random triangles: bias 0 exactly where the engine's oriented edge is top-left
+    tris = _triangles(9, 40, 10, 0.5)
+    setups = call_js(RULES, [("setupTriangle", [t.tolist()]) for t in tris])
+    got = call_js(EDGES, [("edgeLabels", [s, ["a", "b", "c"]]) for s in setups])
+    for t, js in zip(tris, got, strict=True):
+        s = setup_edges(t, 8)
+        for k in range(3):
+            pair = {k, (k + 1) % 3}
+            j = next(m for m in range(3) if {int(s.perm[m]), int(s.perm[(m + 1) % 3])} == pair)
+            assert (js[k]["bias"] == 0) == bool(s.top_left[j])
+
+
+CRACKS = ("raster_rules", "explore_cracks")
+
+
+def test_naive_span_fills_as_lesson_01s():
+    from teachraster.study.naive_spans import naive_span_fill
+
+    rng = np.random.default_rng(10)
+    tris = np.concatenate([rng.integers(0, 30, (60, 3, 2)) + 0.5, rng.uniform(-2, 32, (30, 3, 2))])
+    tris[0] = [[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]]  # lesson 01's triangle
+    tris[1] = [[0.5, 19.5], [1.5, 107.5], [84.5, 103.5]]  # and its 4b (float crossings off)
+    modes = [(stepped, listed) for stepped in (False, True) for listed in (False, True)]
+    calls = [("spanFill", [t.tolist(), 30, 120, *mode]) for t in tris for mode in modes]
+    got = iter(call_js(RULES, calls))
+    for t in tris:
+        for stepped, listed in modes:
+            want = naive_span_fill(t, 30, 120, stepped=stepped, as_listed=listed)
+            assert np.array_equal(np.array(next(got), bool).reshape(120, 30), want)
+
+
+def test_cracks_and_double_draws_as_the_reference():
+    from teachraster.study.naive_spans import shared_edge_faults
+
+    pairs = call_js(CRACKS, [("rolls", [7, 150, 16, 16])])[0]
+    ways = [(m, listed) for m in ("crossing", "dda", "integer") for listed in (False, True)]
+    calls = [("faults", [a, b, 16, 16, m, listed]) for a, b in pairs for m, listed in ways]
+    got = iter(call_js(CRACKS, calls))
+    seen = {way: 0 for way in ways}
+    for a, b in pairs:
+        assert tr.edge_function(a[0], a[1], a[2]) * tr.edge_function(a[0], a[1], b[2]) < 0
+        for m, listed in ways:
+            js, want = next(got), shared_edge_faults(a, b, 16, 16, m, as_listed=listed)
+            for key in ("cracks", "doubles", "swapped"):
+                assert js[key] == want[key].tolist()
+            assert js["wrong"] == want["wrong"]
+            seen[m, listed] += bool(js["swapped"] or any(js["wrong"]))
+            if not listed:  # evaluated alike, the shared edge never cracks nor doubles
+                assert not js["cracks"] and not js["doubles"]
+    assert seen["integer", False] == seen["integer", True] == 0
+    assert seen["dda", False] > 0  # the float DDA does fail on these
+
+
+def test_tally_counts_every_pair_as_the_reference():
+    from teachraster.study.naive_spans import shared_edge_faults
+
+    pairs = call_js(CRACKS, [("rolls", [11, 40, 12, 12])])[0]
+    js = call_js(CRACKS, [("tallyOver", [pairs, 12, 12])])[0]
+    for m in ("crossing", "dda", "integer"):
+        found = [shared_edge_faults(a, b, 12, 12, m) for a, b in pairs]
+        assert js[m]["pairs"] == 40 and js[m]["triangles"] == 80
+        assert js[m]["cracks"] == sum(len(f["cracks"]) for f in found)
+        assert js[m]["doubles"] == sum(len(f["doubles"]) for f in found)
+        assert js[m]["faulty"] == sum(bool(len(f["cracks"]) or len(f["doubles"])) for f in found)
+        assert js[m]["swapped"] == sum(len(f["swapped"]) for f in found)
+        assert js[m]["swappedPairs"] == sum(bool(len(f["swapped"])) for f in found)
+        assert js[m]["wrongTriangles"] == sum((w > 0) for f in found for w in f["wrong"])
+
+
+DEPTH = ("explore_depth",)
+
+
+def test_stored_depth_values_and_their_neighbours_as_quantize():
+    from teachraster.pipeline.visibility.depth import quantize, reversed_depth, window_depth
+
+    rng = np.random.default_rng(12)
+    calls, cases = [], []
+    for near, far in [(0.1, 1000.0), (1.0, 1000.0), (0.01, 50.0)]:
+        zs = np.concatenate([np.geomspace(near, far, 40), rng.uniform(near, far, 20), [near, far]])
+        for fmt in ("unorm16", "unorm24", "float32", "reversed"):
+            for z in zs:
+                calls.append(("neighbours", [float(z), near, far, fmt]))
+                cases.append((float(z), near, far, fmt))
+    got = call_js(DEPTH, calls)
+    for (z, near, far, fmt), js in zip(cases, got, strict=True):
+        if fmt == "reversed":
+            value = quantize(reversed_depth(z, near, far), "float32")
+            v32 = np.float32(value)  # larger is nearer
+            farther = float(np.nextafter(v32, np.float32(0)))
+            nearer = float(np.nextafter(v32, np.float32(2)))
+        else:
+            value = quantize(window_depth(z, near, far), fmt)
+            if fmt == "float32":
+                v32 = np.float32(value)
+                farther = float(np.nextafter(v32, np.float32(2)))
+                nearer = float(np.nextafter(v32, np.float32(0)))
+            else:
+                scale = 2 ** (16 if fmt == "unorm16" else 24) - 1
+                k = np.rint(value * scale)
+                farther, nearer = (k + 1) / scale, max(k - 1, 0) / scale
+        assert js["value"] == float(value), (z, near, far, fmt)
+        assert (js["farther"], js["nearer"]) == (farther, nearer), (z, near, far, fmt)
+        # the z each value stands for maps back onto that value (a float value within two
+        # steps: the inverse mapping rounds too)
+        for key, d in (("z", "value"), ("zFarther", "farther")):
+            if np.isfinite(js[key]) and js[key] <= far:
+                mapped = (reversed_depth(js[key], near, far) if fmt == "reversed"
+                          else window_depth(js[key], near, far))  # fmt: skip
+                back = quantize(mapped, "float32" if fmt == "reversed" else fmt)
+                if fmt.startswith("unorm"):
+                    assert back == js[d]
+                else:
+                    ulps = abs(int(np.float32(back).view(np.uint32))
+                               - int(np.float32(js[d]).view(np.uint32)))  # fmt: skip
+                    assert ulps <= 2, (z, near, far, fmt, key)
+
+
+def test_depth_steps_match_depth_resolution():
+    from teachraster.pipeline.visibility.depth import depth_resolution
+
+    zs = [0.5, 2.0, 30.0, 500.0]
+    calls = [("neighbours", [z, 0.1, 1000.0, fmt]) for fmt in ("unorm16", "unorm24", "reversed")
+             for z in zs]  # fmt: skip
+    got = iter(call_js(DEPTH, calls))
+    for fmt, mapping in (("unorm16", "perspective"), ("unorm24", "perspective"),
+                         ("float32", "reversed")):  # fmt: skip
+        want = depth_resolution(zs, 0.1, 1000.0, fmt, mapping=mapping)
+        for z, w in zip(zs, want, strict=True):
+            js = next(got)
+            step = js["zFarther"] - js["z"]
+            assert step == pytest.approx(w, rel=0.05), (fmt, z)  # first order vs exact
+
+
+def test_values_counted_and_listed_as_numpy_counts_them():
+    from teachraster.pipeline.visibility.depth import window_depth
+
+    near, far = 0.1, 1000.0
+    scale = 2**16 - 1
+    stored = np.arange(scale + 1) / scale
+    ranges = [(0.1, 0.2), (1.0, 1.5), (200.0, 230.0), (900.0, 1000.0)]
+    calls = [("countBetween", [a, b, near, far, "unorm16"]) for a, b in ranges]
+    calls += [("valuesIn", [a, b, near, far, "unorm16", 10**6]) for a, b in ranges]
+    got = call_js(DEPTH, calls)
+    for (a, b), count, zs in zip(ranges, got[:4], got[4:], strict=True):
+        da, db = window_depth([a, b], near, far)
+        inside = stored[(stored >= da) & (stored < db)]
+        assert abs(count - len(inside)) <= 1  # boundaries: d * scale rounds
+        assert abs(len(zs) - len(inside)) <= 1
+        assert np.all(np.diff(zs) > 0)
+        assert a * (1 - 1e-9) <= zs[0] and zs[-1] <= b * (1 + 1e-9)  # the inverse rounds
+    # float32 and reverse-Z: counts of floats by their bits
+    for fmt in ("float32", "reversed"):
+        (count,) = call_js(DEPTH, [("countBetween", [200.0, 230.0, near, far, fmt])])
+        d = window_depth([200.0, 230.0], near, far) if fmt == "float32" else None
+        if d is None:
+            from teachraster.pipeline.visibility.depth import reversed_depth
+
+            lo, hi = (
+                np.float32(reversed_depth(230.0, near, far)),
+                np.float32(reversed_depth(200.0, near, far)),
+            )
+        else:
+            lo, hi = np.float32(d[0]), np.float32(d[1])
+        bits = int(np.array(hi).view(np.uint32)) - int(np.array(lo).view(np.uint32))
+        assert abs(count - bits) <= 1
+
+
+LINES = ("raster_rules", "explore_lines")
+
+
+def test_diamond_pixels_as_the_engines_on_ties():
+    from teachraster.core.line_rules import diamond
+    from teachraster.core.snapping import units_per_pixel
+
+    rng = np.random.default_rng(13)
+    # end points on centres, diamond corners, pixel corners and quarter pixels: ties galore
+    ends = np.concatenate([rng.integers(0, 24, (150, 2, 2)) / 2.0,
+                           rng.integers(0, 48, (100, 2, 2)) / 4.0,
+                           rng.uniform(0, 12, (50, 2, 2))])  # fmt: skip
+    ends[0] = [[0.5, 0.5], [4.5, 2.5]]  # the engine's docstring: column 1 is a tie
+    calls = [("diamondSteps", [e[0].tolist(), e[1].tolist(), 12, 10]) for e in ends]
+    got = call_js(LINES, calls)
+    unit = units_per_pixel(8)
+    ties = 0
+    for e, js in zip(ends, got, strict=True):
+        want = tr.rasterize_line(e[0], e[1], 12, 10).coverage
+        lit = np.zeros((10, 12), bool)
+        states = {}
+        for s in js["steps"]:
+            for c in s["cands"]:
+                lit[c["row"], c["col"]] |= c["state"] == 1
+                states[(s["major"], c["row"], c["col"])] = c["state"]
+                ties += c["tie"] and c["state"] != 0
+        assert np.array_equal(lit, want), e.tolist()
+        steps = diamond(tuple(js["a"]), tuple(js["b"]), unit, 12, 10)
+        engine = {(int(steps.major[s]), int(r), int(c)): int(st)
+                  for s, r, c, st in zip(steps.step, steps.rows, steps.cols, steps.state,
+                                         strict=True)}  # fmt: skip
+        assert states == engine
+    assert ties > 20  # the inputs do exercise GL's perturbation
+
+
+def test_step_caption_says_what_the_trace_says():
+    walk = call_js(LINES, [("diamondSteps", [[0.5, 0.5], [4.5, 2.5], 5, 3])])[0]
+    captions = call_js(LINES, [("stepCaption", [walk, k]) for k in range(len(walk["steps"]))])
+    trace = tr.rasterize_line((0.5, 0.5), (4.5, 2.5), 5, 3, trace=True).trace
+    assert "tie" in captions[1].lower() and "(row 1, col 1)" in captions[1]
+    assert "ends inside the diamond of (row 2, col 4)" in captions[-1]
+    rows, cols = trace.ends_inside()
+    assert list(zip(rows.tolist(), cols.tolist(), strict=True)) == [(2, 4)]
+    # each work step of the trace names the same pixels lit as the page's caption
+    first = len(trace) - trace.n_work  # after the set-up steps (snap, axis)
+    assert len(captions) == trace.n_work
+    for k, caption in enumerate(captions):
+        lit = trace.lit_at(first + k)
+        for r, c in zip(*np.nonzero(lit), strict=True):
+            assert f"(row {r}, col {c})" in caption
+
+
+FOOTPRINT = ("explore_footprint",)
+
+
+def test_footprint_level_and_probes_as_the_engine():
+    from teachraster.pipeline.texturing.texture_filters import (
+        linear_levels,
+        mip_level,
+        nearest_level,
+    )
+    from teachraster.plotting.footprint import footprint
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    data = floor_scene(32, 24, 80.0, 1)
+    pixels = [i for i, uv in enumerate(data["uv"]) if uv is not None]
+    calls = [("footprintOf", [data["uv"][i], data["ddx"][i], data["ddy"][i], 64, 64, data["q"]])
+             for i in pixels]  # fmt: skip
+    got = call_js(FOOTPRINT, calls)
+    levels = set()
+    for i, js in zip(pixels, got, strict=True):
+        uv, dx, dy = (np.array(data[k][i]) for k in ("uv", "ddx", "ddy"))
+        lam = float(mip_level(dx[None], dy[None], (64, 64))[0])
+        assert js["lam"] == pytest.approx(lam, abs=1e-12)
+        assert js["nearest"] == int(nearest_level(np.array([lam]), data["q"])[0])
+        first, second, t = linear_levels(np.array([lam]), data["q"])
+        assert js["linear"][:2] == [int(first[0]), int(second[0])]
+        assert js["linear"][2] == pytest.approx(float(t[0]), abs=1e-12)
+        fp = footprint(uv, dx, dy, (64, 64))
+        assert js["probes"] == fp.probes and js["rho"] == pytest.approx(fp.rho, rel=1e-15)
+        assert np.allclose(js["probeCentres"], fp.probe_centres, rtol=0, atol=1e-9)
+        levels.add(js["nearest"])
+    assert len(levels) >= 3  # near and far pixels read different levels
+
+
+def test_pixels_reading_a_texel_point_as_footprint_contains():
+    from teachraster.plotting.footprint import footprint_contains, trilinear_reads
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    data = floor_scene(24, 18, 78.0, 2)
+    covered = np.array([uv is not None for uv in data["uv"]]).reshape(18, 24)
+    fill = lambda k: np.array([v if v is not None else [np.nan, np.nan] for v in data[k]])  # noqa: E731
+    uv, dx, dy = fill("uv"), fill("ddx"), fill("ddy")
+    rng = np.random.default_rng(14)
+    points = [(float(uv[i, 0] * 64), float(uv[i, 1] * 64))
+              for i in rng.choice(np.flatnonzero(covered.ravel()), 12)]  # fmt: skip
+    points += rng.uniform(0, 512, (8, 2)).tolist()
+    for how, reference in (("ellipse", footprint_contains), ("trilinear", trilinear_reads)):
+        got = call_js(FOOTPRINT, [("pixelsReading", [data, list(p), how]) for p in points])
+        for p, js in zip(points, got, strict=True):
+            want = reference(uv, dx, dy, (64, 64), p).reshape(18, 24) & covered
+            assert sorted(map(tuple, js)) == sorted(map(tuple, np.argwhere(want).tolist()))
+        assert sum(len(js) for js in got) >= len(points) // 2
+    assert any(len(js) > 1 for js in got)  # trilinear: pixels share the texels they fetch
+
+
+def test_attribute_surfaces_as_the_engine():
+    from teachraster.core.interpolation import perspective_weights
+
+    xy = np.array([[2.0, 2.0], [14.0, 4.0], [5.0, 14.0]])
+    rng = np.random.default_rng(15)
+    lam = rng.dirichlet([1, 1, 1], 30)
+    points = lam @ xy
+    for w in ([1.0, 1.0, 1.0], [1.0, 2.0, 6.0]):
+        f = [0.2, 1.0, 0.0]
+        got = call_js(("raster_rules", "view3d", "explore_attributes"),
+                      [("surfaceValues", [xy.tolist(), w, f, p.tolist()]) for p in points])  # fmt: skip
+        want_lam = tr.barycentric(xy, points)
+        mu = perspective_weights(want_lam, np.array(w), extrapolate=True)
+        for k, js in enumerate(got):
+            assert np.allclose(js["lam"], want_lam[k], rtol=0, atol=1e-13)
+            assert js["correct"] == pytest.approx(float(mu[k] @ f), abs=1e-13)
+            assert js["affine"] == pytest.approx(float(want_lam[k] @ f), abs=1e-13)
+            assert js["inv"] == pytest.approx(float(want_lam[k] @ (1 / np.array(w))), abs=1e-13)
+
+
+def test_eye_ray_t_of_q_and_the_peak_for_ratio_2():
+    from teachraster.plotting.projection import Segment
+
+    seg = Segment(x0=-1.0, z0=1.5, x1=2.0, z1=3.0)  # depth ratio 2
+    qs = np.linspace(0, 1, 41)
+    got = call_js(("explore_projection",), [("worldParameter", [float(q), 1.5, 3.0]) for q in qs]
+                  + [("peakGap", [1.5, 3.0]), ("peakGap", [1.0, 5.0])])  # fmt: skip
+    assert np.allclose(got[:41], seg.world_parameter(qs), rtol=0, atol=1e-15)
+    peak = got[41]
+    assert peak["gap"] == pytest.approx(3 - 2 * np.sqrt(2), abs=1e-15)
+    assert peak["formula"] == pytest.approx(3 - 2 * np.sqrt(2), abs=1e-15)
+    dense = np.linspace(0, 1, 200001)
+    assert peak["gap"] >= (dense - Segment(0, 1.0, 1, 2.0).world_parameter(dense)).max() - 1e-12
+    other = got[42]
+    assert other["gap"] == pytest.approx(other["formula"], abs=1e-14)
+
+
+def test_pipeline_map_shows_the_engines_tour_triangle():
+    from teachraster.pipeline.geometry.viewport import to_window
+    from teachraster.widgets.pipeline_map import TOUR_XY, tour_clip, tour_stages
+
+    data = tour_stages()
+    # the clip coordinates are a projection of lesson 00's triangle: the viewport gives it back
+    assert np.allclose(to_window(np.array(data["clip"]), 16, 16)[:, :2], TOUR_XY, atol=1e-12)
+    assert np.allclose(data["clip"], tour_clip(TOUR_XY, [1, 2, 4], 16, 16, 0.5, 10.0))
+    tour = tr.rasterize(tr.Triangle(TOUR_XY, w=[1, 2, 4], attrs={"u": [0, 1, 0]}), 16, 16)
+    assert np.array_equal(np.array(data["coverage"], bool).reshape(16, 16), tour.coverage)
+    assert data["fragments"] == int(tour.coverage.sum()) == data["passed"]
+    u = np.array([np.nan if v is None else v for v in data["attr"]]).reshape(16, 16)
+    # tr.render sets its weights up from the unsnapped vertices, tr.rasterize from the
+    # snapped ones (1/256 px apart at most)
+    assert np.allclose(u, tour.attrs["u"], equal_nan=True, atol=1e-3)
+    # the snapped triangle's area (it differs from the unsnapped one in the 4th digit)
+    assert data["area"] == setup_edges(np.array(TOUR_XY), 8).original_area2 / 512**2 / 2
+    keys = ["vertex", "assembly", "clip", "divide", "viewport", "setup", "rasterize",
+            "fragment", "depth", "blend"]  # fmt: skip
+    got = call_js(("explore_pipeline",), [("stageHtml", [data, k]) for k in keys]
+                  + [("stageImage", [data, k]) for k in keys])  # fmt: skip
+    html, images = dict(zip(keys, got[:10], strict=True)), dict(zip(keys, got[10:], strict=True))
+    assert all(html.values())  # every stage says something
+    for k in range(3):  # the numbers each stage shows are the engine's
+        assert f"{data['clip'][k][3]:g}" in html["vertex"]
+        assert str(float(f"{data['window'][k][0]:.5g}")).rstrip("0").rstrip(".") in html["viewport"]
+    assert f"{data['fragments']} pixel centres" in html["rasterize"]
+    assert "only allowed when the shader neither discards nor writes depth" in html["depth"]
+    assert sum(c != [245, 245, 245] for c in images["rasterize"]) == data["fragments"]
+    assert images["vertex"] is None and images["blend"] == data["colour"]

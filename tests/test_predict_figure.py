@@ -1,0 +1,129 @@
+"""Predictions answered on a figure: the kernel's side (the page's side: test_explorables_js)."""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from explorables_node import call_js  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.plotting import plot_triangle  # noqa: E402
+from teachraster.widgets import PredictOrder, PredictPixels, PredictPoint  # noqa: E402
+
+TRI = tr.Triangle([[1.5, 1.5], [9.5, 3.5], [3.5, 8.5]])
+
+
+def _pixels():
+    return PredictPixels("Click the pixels this triangle covers.",
+                         answer=tr.rasterize(TRI, 12, 10).coverage,
+                         draw=lambda ax: plot_triangle(ax, TRI, arrows=False),
+                         explain="centres inside")  # fmt: skip
+
+
+def test_pixels_are_judged_and_revealed_only_once_answered():
+    q = _pixels()
+    truth = np.argwhere(tr.rasterize(TRI, 12, 10).coverage).tolist()
+    assert q.data["answer"] == truth and q.data["kind"] == "pixels"
+    assert q.given is None and q.correct is None
+    q.check()  # no answer: nothing revealed
+    assert not q.revealed
+    q.given = truth[:-1] + [[0, 11]]
+    assert q.counts() == {"right": len(truth) - 1, "extra": 1, "missed": 1, "total": len(truth)}
+    assert q.correct is False
+    q.check()
+    assert q.revealed and "1 too many, 1 missed" in q.verdict()
+    q.given = truth
+    assert q.correct is True
+
+
+def test_the_picture_maps_pixels_where_the_grid_is():
+    from PIL import Image
+
+    q = _pixels()
+    import base64
+    import io
+
+    img = np.asarray(Image.open(io.BytesIO(base64.b64decode(q.data["png"]))).convert("L"))
+    assert list(img.shape[::-1]) == q.data["size"]
+    x0, y0, sx, sy = q.data["transform"]
+    assert sx == pytest.approx(sy) and sx > 20  # pixels are square, y runs down
+    # the grid's lines (grey) lie where the transform puts the pixel boundaries
+    for col in (2, 5, 8):
+        px = round(x0 + sx * col)
+        column = img[round(y0 + sy * 0.5) : round(y0 + sy * 9.5), px - 1 : px + 2]
+        assert (column < 200).any(axis=1).mean() > 0.9
+
+
+def test_point_and_order_verdicts():
+    p = PredictPoint("Where?", answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4),
+                     along=((0, 0), (4, 4)), tolerance=0.25)  # fmt: skip
+    assert p.data["start"] == [2.0, 2.0] and p.correct is None
+    p.given = (1.5, 2.0)
+    assert p.gap == pytest.approx(0.5) and p.correct is False
+    p.check()
+    assert p.revealed and "0.5 units" in p.verdict()
+    o = PredictOrder("Order?", ["a", "b", "c"], answer=None, allow_impossible=True)
+    assert o.correct is None
+    o.check()
+    assert not o.revealed
+    o.given = ["c", "b", "a"]
+    assert o.correct is False
+    o.given = None  # "no order works"
+    assert o.correct is True
+    o.check()
+    assert o.revealed and "no order works" in o.verdict()
+
+
+@pytest.mark.parametrize(
+    ("make", "error", "name"),
+    [
+        (lambda: PredictPixels("", answer=np.eye(2, dtype=bool)), TypeError, "question"),
+        (lambda: PredictPixels("Q?", answer=np.eye(2)), TypeError, "answer"),
+        (lambda: PredictPixels("Q?", answer=np.eye(2, dtype=bool), draw="x"), TypeError, "draw"),
+        (lambda: PredictPoint("Q?", answer=(1, 2, 3), draw=None, xlim=(0, 1), ylim=(0, 1)),
+         ValueError, "answer"),
+        (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
+                              tolerance=-1), ValueError, "tolerance"),
+        (lambda: PredictOrder("Q?", ["a", "a"], answer=None), ValueError, "items"),
+        (lambda: PredictOrder("Q?", ["a", "b"], answer=None), ValueError, "allow_impossible"),
+        (lambda: PredictOrder("Q?", ["a", "b"], answer=["a", "c"]), ValueError, "answer"),
+    ],
+)  # fmt: skip
+def test_bad_arguments_name_the_argument(make, error, name):
+    with pytest.raises(error, match=name):
+        make()
+
+
+def test_the_page_judges_as_the_kernel():
+    q = _pixels()
+    truth = q.data["answer"]
+    cases = [truth, truth[:-2], truth + [[0, 0]], [[9, 9]]]
+    got = call_js(("predict_figure",), [("pixelVerdict", [truth, g, 12]) for g in cases]
+                  + [("pointVerdict", [[1, 2], [1.1, 2.1], 0.25]),
+                     ("pointVerdict", [[1, 2], [1.5, 2.0], 0.25]),
+                     ("orderVerdict", [None, None]), ("orderVerdict", [["a", "b"], ["b", "a"]]),
+                     ("orderVerdict", [["a", "b"], ["a", "b"]])])  # fmt: skip
+    for g, js in zip(cases, got[:4], strict=True):
+        q.given = g
+        c = q.counts()
+        assert {k: js[k] for k in c} == c and js["correct"] == q.correct
+    p = PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 4), ylim=(0, 4), tolerance=0.25)
+    for g, js in zip([(1.1, 2.1), (1.5, 2.0)], got[4:6], strict=True):
+        p.given = g
+        assert js["correct"] == p.correct and js["gap"] == pytest.approx(p.gap)
+    assert [js["correct"] for js in got[6:]] == [True, False, True]
+    assert got[7]["places"] == [False, False]
+
+
+def test_the_saved_notebook_keeps_the_question_its_picture_and_the_verdict():
+    q = _pixels()
+    standin = q._standin()
+    assert "Click the pixels this triangle covers." in standin
+    assert "data:image/png;base64," in standin and "Run this cell" in standin
+    q.given = q.data["answer"]
+    q.check()
+    assert "Right." in q._standin()
