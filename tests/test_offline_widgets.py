@@ -23,6 +23,12 @@ LIVE = {"FillPlayer", "LinePlayer", "ZBufferStepper", "TileExplorer", "TexturedP
         "FilterExplorer", "DepthPrecisionExplorer", "PlaneExplorer", "ProjectionExplorer",
         "SamplingExplorer", "DivideCostExplorer", "PixelInspector", "CasePicker",
         "FrameInspector", "Predict"}  # fmt: skip
+#: Widgets that compute in the page (teachraster.widgets.explorable): live everywhere.
+COMPUTED_IN_THE_PAGE = {"PipelineMap", "CrackExplorer", "EdgeFunctionExplorer",
+                        "AttributeSurfaces", "EyeRayExplorer", "DepthValuesExplorer",
+                        "FootprintExplorer", "DiamondExplorer", "PredictPixels", "PredictPoint",
+                        "PredictOrder"}  # fmt: skip
+LIVE |= COMPUTED_IN_THE_PAGE
 
 
 def lesson_widget_classes() -> list[type]:
@@ -71,6 +77,8 @@ def test_every_widget_shows_its_picture_offline(name, few_positions):
     data = _player_data(page.html)
     if name == "Predict":
         assert "<details>" in page.html and "The answer" in page.html
+    elif name in COMPUTED_IN_THE_PAGE:  # its own module and data, inline: live with no kernel
+        assert '<script type="module">' in page.html and "mountStatic(" in page.html
     elif data is not None:  # a player: as many pictures as captions, each group decodable
         assert data["n"] >= 2 and len(data["captions"]) == len(data["infos"]) == data["n"]
         assert sum(len(g["pngs"]) for g in data["groups"]) == data["n"]

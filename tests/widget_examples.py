@@ -51,4 +51,20 @@ def examples():
         "BlendingExplorer": lambda: w.BlendingExplorer(size=(16, 16), backend="image"),
         "SamplingExplorer": lambda: SamplingExplorer(backend="image"),
         "DivideCostExplorer": lambda: DivideCostExplorer(_rows(), backend="image"),
+        # computed in the page (teachraster.widgets.explorable): live in an offline page
+        "PipelineMap": lambda: w.PipelineMap(),
+        "CrackExplorer": lambda: w.CrackExplorer(8, 8),
+        "EdgeFunctionExplorer": lambda: w.EdgeFunctionExplorer(),
+        "AttributeSurfaces": lambda: w.AttributeSurfaces(),
+        "EyeRayExplorer": lambda: w.EyeRayExplorer(),
+        "DepthValuesExplorer": lambda: w.DepthValuesExplorer(),
+        "FootprintExplorer": lambda: w.FootprintExplorer(24, 18),
+        "DiamondExplorer": lambda: w.DiamondExplorer((1.5, 1.5), (6.4, 3.6), 8, 5),
+        "PredictPixels": lambda: w.PredictPixels(
+            "Which pixels?", answer=tr.rasterize(tr.Triangle(TRI), 8, 8).coverage
+        ),
+        "PredictPoint": lambda: w.PredictPoint(
+            "Where?", answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4)
+        ),
+        "PredictOrder": lambda: w.PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"]),
     }

@@ -154,6 +154,13 @@ class Explorable(anywidget.AnyWidget):
         """This explorable as an offline page fragment (live with no kernel)."""
         return offline_html(self._esm, self.data, self.state)
 
+    def _offline_page_(self):
+        """``teachraster html``'s hook (:mod:`.offline`): the page computes this explorable
+        itself, so it is live there, as it is in a notebook."""
+        from .offline import OfflinePage
+
+        return OfflinePage(self.offline_html(), "live")
+
     def _standin(self) -> str:
         return FALLBACK_CSS + standin_html(self.title, self.noun, self.picture,
                                            self.standin_text())  # fmt: skip

@@ -51,8 +51,9 @@ MOST_POSITIONS = 32
 #: whose pictures differ by a patch): 128 (lesson 10's 864 blocks then go 7 at a time).
 MOST_STEPS = 128
 
-#: Classes of the package that are parts of other widgets, not widgets of a lesson.
-PARTS = ("DragFigure", "FramesWidget", "LiveSlider")
+#: Classes of the package that are parts of other widgets, or bases of them, not widgets of a
+#: lesson.
+PARTS = ("DragFigure", "FramesWidget", "LiveSlider", "Explorable", "FigurePrediction")
 
 _PNG = b"\x89PNG\r\n\x1a\n"
 
