@@ -9,9 +9,14 @@ test, small grids.
 
 from __future__ import annotations
 
+import json
+import subprocess
+import tempfile
+from pathlib import Path
+
 import numpy as np
 import pytest
-from explorables_node import call_js
+from explorables_node import NODE, call_js
 
 import teachraster as tr
 from teachraster.core.edges import edge_values_at, setup_edges
@@ -446,3 +451,20 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     assert "only allowed when the shader neither discards nor writes depth" in html["depth"]
     assert sum(c != [245, 245, 245] for c in images["rasterize"]) == data["fragments"]
     assert images["vertex"] is None and images["blend"] == data["colour"]
+
+
+def test_every_explorables_module_loads_as_shipped():
+    """Each explorable's whole module (its mount code too, which only the browser tests run)
+    parses and runs its top level in node: a syntax slip fails here, in the quick tier."""
+    from teachraster.widgets.explorable import Explorable
+    from teachraster.widgets.offline import widget_classes
+
+    shipped = {c._esm for c in widget_classes() if issubclass(c, Explorable) and "_esm" in vars(c)}
+    assert len(shipped) >= 9
+    with tempfile.TemporaryDirectory(prefix="tr-node-") as tmp:
+        for k, source in enumerate(sorted(shipped)):
+            path = Path(tmp, f"m{k}.mjs")
+            path.write_text(source, encoding="utf-8")
+            done = subprocess.run([NODE, "--input-type=module", "-e", f"await import({json.dumps(path.as_uri())})"],
+                                  capture_output=True, text=True, timeout=120)  # fmt: skip
+            assert done.returncode == 0, done.stderr[-2000:]

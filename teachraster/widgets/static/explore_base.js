@@ -147,6 +147,18 @@ export function makeCanvas(w, h, label) {
   return [c, ctx];
 }
 
+// A W x H pixel grid on a canvas: the cell size in CSS pixels (between minCell and maxCell,
+// the grid fitting fitW x fitH), the margin left and top for labels and `pad` right and below;
+// toPx maps grid coordinates (pixels, y down) to the canvas and toGrid back.
+export function pixelCanvas(W, H, { minCell, maxCell, fitW, fitH, margin, pad, label }) {
+  const cell = Math.max(minCell, Math.min(maxCell, Math.floor(Math.min(fitW / W, fitH / H))));
+  const [canvas, ctx] = makeCanvas(margin.left + W * cell + pad, margin.top + H * cell + pad,
+    label);
+  const toPx = ([x, y]) => [margin.left + x * cell, margin.top + y * cell];
+  const toGrid = ([px, py]) => [(px - margin.left) / cell, (py - margin.top) / cell];
+  return { canvas, ctx, cell, toPx, toGrid };
+}
+
 // the pointer in the canvas' CSS pixels at its natural size (whatever it is scaled to)
 export function pointerAt(canvas, e) {
   const r = canvas.getBoundingClientRect();

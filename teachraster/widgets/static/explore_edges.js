@@ -75,12 +75,10 @@ function mount(el, data, host) {
     "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
     "their edges' colours; tint a half-plane to see where its E keeps one sign. A centre " +
     "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it.");
-  const cell = Math.max(22, Math.min(40, Math.floor(Math.min(600 / W, 520 / H))));
   const m = { left: 30, top: 26 };
-  const [canvas, ctx] = makeCanvas(m.left + W * cell + 12, m.top + H * cell + 12,
-    "two triangles over the pixel grid with the edge-function signs at every centre");
-  const toPx = ([x, y]) => [m.left + x * cell, m.top + y * cell];
-  const toGrid = ([px, py]) => [(px - m.left) / cell, (py - m.top) / cell];
+  const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 22, maxCell: 40,
+    fitW: 600, fitH: 520, margin: m, pad: 12,
+    label: "two triangles over the pixel grid with the edge-function signs at every centre" });
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
   const [view3d, ctx3] = makeCanvas(560, 400, "the three edge functions as planes over the grid");
@@ -316,13 +314,8 @@ function drawShared(ctx, scene, cell, m, colors) {
 }
 
 function arrowLine(ctx, p, q, colour, width) {
-  ctx.strokeStyle = colour;
+  strokeLine(ctx, p, q, colour, width);
   ctx.fillStyle = colour;
-  ctx.lineWidth = width;
-  ctx.beginPath();
-  ctx.moveTo(p[0], p[1]);
-  ctx.lineTo(q[0], q[1]);
-  ctx.stroke();
   const t = 0.55;
   const mid = [p[0] + (q[0] - p[0]) * t, p[1] + (q[1] - p[1]) * t];
   const ang = Math.atan2(q[1] - p[1], q[0] - p[0]);

@@ -150,12 +150,10 @@ function mount(el, data, host) {
     "meets its diamond and goes on out of it; the diamond it ends in is left to the next " +
     "segment. Drag p0 or p1: near a pixel centre, a diamond corner or a pixel corner they " +
     "snap onto it, where ties are. Step along the line with the slider or the arrow keys.");
-  const cell = Math.max(30, Math.min(64, Math.floor(Math.min(760 / W, 480 / H))));
   const m = { left: 30, top: 24 };
-  const [canvas, ctx] = makeCanvas(m.left + W * cell + 14, m.top + H * cell + 14,
-    "a line over the pixel grid with every pixel's diamond");
-  const toPx = ([x, y]) => [m.left + x * cell, m.top + y * cell];
-  const toGrid = ([px, py]) => [(px - m.left) / cell, (py - m.top) / cell];
+  const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 30, maxCell: 64,
+    fitW: 760, fitH: 480, margin: m, pad: 14,
+    label: "a line over the pixel grid with every pixel's diamond" });
   const caption = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   let walk = diamondSteps(state.p0, state.p1, W, H, data.bits);
   const stepper = slider("step", { min: -1, max: Math.max(walk.steps.length - 1, 0), step: 1,
