@@ -156,7 +156,7 @@ def _create_context() -> tuple[bool, str]:
     if ctx is None:
         return False, why
     try:
-        gl = _RawGL()
+        gl = RawGL()
     except OSError as exc:
         ctx.release()
         return False, f"OpenGL context created but raw GL entry points not found: {exc}"
@@ -177,8 +177,22 @@ def _context():
     return _STATE["ctx"], _STATE["gl"]
 
 
-class _RawGL:
-    """The few GL calls moderngl does not offer, looked up through ``eglGetProcAddress``.
+def egl_function(symbol: str, restype, *argtypes):
+    """A GL entry point that moderngl does not offer, looked up through ``eglGetProcAddress``
+    (the one lookup every llvmpipe cross-check uses)."""
+    if "egl" not in _STATE:
+        egl = ctypes.CDLL(ctypes.util.find_library("EGL") or "libEGL.so.1")
+        egl.eglGetProcAddress.restype = ctypes.c_void_p
+        egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+        _STATE["egl"] = egl
+    ptr = _STATE["egl"].eglGetProcAddress(symbol.encode())
+    if not ptr:
+        raise OSError(f"eglGetProcAddress({symbol!r}) returned NULL")
+    return ctypes.CFUNCTYPE(restype, *argtypes)(ptr)
+
+
+class RawGL:
+    """The few GL calls moderngl does not offer (through :func:`egl_function`).
 
     moderngl's depth buffers are 24-bit fixed point; the depth test must run on float32 like
     the depth we compare against, so we attach a ``GL_DEPTH_COMPONENT32F`` renderbuffer
@@ -186,53 +200,49 @@ class _RawGL:
     """
 
     def __init__(self) -> None:
-        name = ctypes.util.find_library("EGL") or "libEGL.so.1"
-        egl = ctypes.CDLL(name)
-        egl.eglGetProcAddress.restype = ctypes.c_void_p
-        egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
         u, i, d = ctypes.c_uint, ctypes.c_int, ctypes.c_double
-
-        def fn(symbol: str, restype, *argtypes):
-            ptr = egl.eglGetProcAddress(symbol.encode())
-            if not ptr:
-                raise OSError(f"eglGetProcAddress({symbol!r}) returned NULL")
-            return ctypes.CFUNCTYPE(restype, *argtypes)(ptr)
-
-        self.gen_renderbuffers = fn("glGenRenderbuffers", None, i, ctypes.POINTER(u))
-        self.delete_renderbuffers = fn("glDeleteRenderbuffers", None, i, ctypes.POINTER(u))
-        self.bind_renderbuffer = fn("glBindRenderbuffer", None, u, u)
-        self.renderbuffer_storage = fn("glRenderbufferStorage", None, u, u, i, i)
-        self.framebuffer_renderbuffer = fn("glFramebufferRenderbuffer", None, u, u, u, u)
-        self.check_framebuffer_status = fn("glCheckFramebufferStatus", u, u)
-        self.depth_range = fn("glDepthRange", None, d, d)
-        self.renderbuffer_storage_multisample = fn(
+        self.gen_renderbuffers = egl_function("glGenRenderbuffers", None, i, ctypes.POINTER(u))
+        self.delete_renderbuffers = egl_function(
+            "glDeleteRenderbuffers", None, i, ctypes.POINTER(u)
+        )
+        self.bind_renderbuffer = egl_function("glBindRenderbuffer", None, u, u)
+        self.renderbuffer_storage_multisample = egl_function(
             "glRenderbufferStorageMultisample", None, u, i, u, i, i
         )
-        self.get_multisample = fn("glGetMultisamplefv", None, u, u, ctypes.POINTER(ctypes.c_float))
-        self.depth_mask = fn("glDepthMask", None, ctypes.c_ubyte)
-        self.read_pixels = fn("glReadPixels", None, i, i, i, i, u, u, ctypes.c_void_p)
+        self.framebuffer_renderbuffer = egl_function("glFramebufferRenderbuffer", None, u, u, u, u)
+        self.check_framebuffer_status = egl_function("glCheckFramebufferStatus", u, u)
+        self.depth_range = egl_function("glDepthRange", None, d, d)
+        self.get_multisample = egl_function(
+            "glGetMultisamplefv", None, u, u, ctypes.POINTER(ctypes.c_float)
+        )
+        self.depth_mask = egl_function("glDepthMask", None, ctypes.c_ubyte)
+        self.read_pixels = egl_function("glReadPixels", None, i, i, i, i, u, u, ctypes.c_void_p)
 
-    def float_depth_buffer(self, width: int, height: int, samples: int = 0) -> int:
-        """Attach a new float32 depth renderbuffer (``samples`` per pixel when > 0) to the
-        bound framebuffer; return its name."""
+    def renderbuffer(self, internal_format: int, attachment: int, width: int, height: int,
+                     samples: int = 0) -> int:  # fmt: skip
+        """Attach a new renderbuffer (``samples`` per pixel; 0 = single-sampled, which
+        ``glRenderbufferStorageMultisample`` takes as ``glRenderbufferStorage``) to the bound
+        framebuffer; return its name."""
         name = ctypes.c_uint(0)
         self.gen_renderbuffers(1, ctypes.byref(name))
         self.bind_renderbuffer(_GL_RENDERBUFFER, name)
-        if samples:
-            self.renderbuffer_storage_multisample(
-                _GL_RENDERBUFFER, samples, _GL_DEPTH_COMPONENT32F, width, height
-            )
-        else:
-            self.renderbuffer_storage(_GL_RENDERBUFFER, _GL_DEPTH_COMPONENT32F, width, height)
-        self.bind_renderbuffer(_GL_RENDERBUFFER, 0)
-        self.framebuffer_renderbuffer(
-            _GL_FRAMEBUFFER, _GL_DEPTH_ATTACHMENT, _GL_RENDERBUFFER, name.value
+        self.renderbuffer_storage_multisample(
+            _GL_RENDERBUFFER, samples, internal_format, width, height
         )
+        self.bind_renderbuffer(_GL_RENDERBUFFER, 0)
+        self.framebuffer_renderbuffer(_GL_FRAMEBUFFER, attachment, _GL_RENDERBUFFER, name.value)
         status = self.check_framebuffer_status(_GL_FRAMEBUFFER)
         if status != _GL_FRAMEBUFFER_COMPLETE:
             self.delete(name.value)
-            raise RuntimeError(f"framebuffer with a float32 depth buffer incomplete: {status:#x}")
+            raise RuntimeError(
+                f"framebuffer with renderbuffer {internal_format:#x} incomplete: {status:#x}"
+            )
         return name.value
+
+    def float_depth_buffer(self, width: int, height: int, samples: int = 0) -> int:
+        """Attach a new float32 depth renderbuffer to the bound framebuffer; its name."""
+        return self.renderbuffer(_GL_DEPTH_COMPONENT32F, _GL_DEPTH_ATTACHMENT, width, height,
+                                 samples)  # fmt: skip
 
     def delete(self, renderbuffer: int) -> None:
         name = ctypes.c_uint(renderbuffer)

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.validate import as_size
-from .opengl import gl_available
+from .opengl import RawGL, egl_function, gl_available
 
 __all__ = ["GLCounters", "gl_counters"]
 
@@ -75,56 +75,25 @@ class GLCounters:
     samples_passed: np.ndarray
 
 
-class _StencilGL:
-    """The raw GL entry points for stencil state and a depth-stencil renderbuffer."""
+class _StencilGL(RawGL):
+    """The raw GL entry points for stencil state, beside :class:`RawGL`'s renderbuffers."""
 
     def __init__(self) -> None:
-        egl = ctypes.CDLL(ctypes.util.find_library("EGL") or "libEGL.so.1")
-        egl.eglGetProcAddress.restype = ctypes.c_void_p
-        egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+        super().__init__()
         u, i, d = ctypes.c_uint, ctypes.c_int, ctypes.c_double
-
-        def fn(symbol, restype, *argtypes):
-            ptr = egl.eglGetProcAddress(symbol.encode())
-            if not ptr:
-                raise OSError(f"eglGetProcAddress({symbol!r}) returned NULL")
-            return ctypes.CFUNCTYPE(restype, *argtypes)(ptr)
-
-        self.enable = fn("glEnable", None, u)
-        self.disable = fn("glDisable", None, u)
-        self.stencil_func = fn("glStencilFunc", None, u, i, u)
-        self.stencil_op = fn("glStencilOp", None, u, u, u)
-        self.stencil_mask = fn("glStencilMask", None, u)
-        self.clear_stencil = fn("glClearStencil", None, i)
-        self.clear_depth = fn("glClearDepth", None, d)
-        self.clear = fn("glClear", None, u)
-        self.depth_mask = fn("glDepthMask", None, ctypes.c_ubyte)
-        self.depth_range = fn("glDepthRange", None, d, d)
-        self.gen_renderbuffers = fn("glGenRenderbuffers", None, i, ctypes.POINTER(u))
-        self.delete_renderbuffers = fn("glDeleteRenderbuffers", None, i, ctypes.POINTER(u))
-        self.bind_renderbuffer = fn("glBindRenderbuffer", None, u, u)
-        self.storage = fn("glRenderbufferStorageMultisample", None, u, i, u, i, i)
-        self.attach = fn("glFramebufferRenderbuffer", None, u, u, u, u)
-        self.status = fn("glCheckFramebufferStatus", u, u)
+        self.enable = egl_function("glEnable", None, u)
+        self.disable = egl_function("glDisable", None, u)
+        self.stencil_func = egl_function("glStencilFunc", None, u, i, u)
+        self.stencil_op = egl_function("glStencilOp", None, u, u, u)
+        self.stencil_mask = egl_function("glStencilMask", None, u)
+        self.clear_stencil = egl_function("glClearStencil", None, i)
+        self.clear_depth = egl_function("glClearDepth", None, d)
+        self.clear = egl_function("glClear", None, u)
 
     def depth_stencil(self, width: int, height: int, samples: int) -> int:
         """Attach a float32 depth + 8-bit stencil renderbuffer to the bound framebuffer."""
-        name = ctypes.c_uint(0)
-        self.gen_renderbuffers(1, ctypes.byref(name))
-        self.bind_renderbuffer(_GL["RENDERBUFFER"], name)
-        self.storage(_GL["RENDERBUFFER"], samples, _GL["DEPTH32F_STENCIL8"], width, height)
-        self.bind_renderbuffer(_GL["RENDERBUFFER"], 0)
-        self.attach(_GL["FRAMEBUFFER"], _GL["DEPTH_STENCIL_ATTACHMENT"], _GL["RENDERBUFFER"],
-                    name.value)  # fmt: skip
-        status = self.status(_GL["FRAMEBUFFER"])
-        if status != _GL["FRAMEBUFFER_COMPLETE"]:
-            self.release(name.value)
-            raise RuntimeError(f"framebuffer with a depth-stencil buffer incomplete: {status:#x}")
-        return name.value
-
-    def release(self, renderbuffer: int) -> None:
-        name = ctypes.c_uint(renderbuffer)
-        self.delete_renderbuffers(1, ctypes.byref(name))
+        return self.renderbuffer(_GL["DEPTH32F_STENCIL8"], _GL["DEPTH_STENCIL_ATTACHMENT"],
+                                 width, height, samples)  # fmt: skip
 
 
 _DRAW_VS = """#version 330
@@ -212,7 +181,7 @@ def gl_counters(clip, width: int, height: int, *, samples: int = 1, depth_test: 
     finally:
         gl.disable(_GL["STENCIL_TEST"])
         if rb is not None:
-            gl.release(rb)
+            gl.delete(rb)
         for obj in reversed(res):
             obj.release()
     return GLCounters(passes["overdraw"], passes["depth_complexity"], passes["samples_passed"])
