@@ -44,6 +44,40 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     assert cyc["affine"] < cyc["subdivided N=16"] < cyc["perspective"] / 5  # "buys most of it back"
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
     assert rows[("interpolation", "affine")]["error"] >= 100  # "off by hundreds of texels"
+    # the Predict's givens: the far end of the floor a few tens of pixels wide, texels per pixel
+    assert 10 < ns.far_px < 30 and ns.floor_w.min() == 0.6 and ns.floor_w.max() == 60
+    # "the study counts a few more divides than 1/N ... the longer N, the more"
+    extra = list(ns.extra_divides.values())
+    assert all(e > 0 for e in extra) and extra == sorted(extra)
+
+
+def test_06_doom_level_floor_is_exact_and_the_rolled_floor_is_not():
+    import inspect
+
+    from teachraster.study import bench
+
+    ns = lesson("06_what_accuracy_costs")
+    assert inspect.signature(bench.floor_quad).parameters["roll"].default == 25.0  # "rolled 25°"
+    level, rolled = ns.worst_by_roll[0.0], ns.worst_by_roll[25.0]
+    assert level[16] < 1e-9 and level["span ends"] < 1e-9  # "both exact to rounding"
+    assert rolled[16] == pytest.approx(ns.subdivided[16]["error"])  # the table's N = 16
+    assert rolled["span ends"] > 100  # "over a hundred texels off"
+
+
+def test_06_edge_table_gaps_and_incremental_lists():
+    ns = lesson("06_what_accuracy_costs")
+    edges = [r for r in ns.rows if r["group"] == "edge functions"]
+    # "the gaps and double columns of the edge-function table are 0 in every row"
+    assert all(r["gaps"] == 0 and r["double_hits"] == 0 for r in edges)
+    assert set(ns.incremental_ratio) == {"fixed8", "fixed4", "float64", "float32", "unsnapped"}
+    # the edge chart's front is one point (no step line): cheapest and exact
+    from teachraster.study import bench
+
+    assert [r["variant"] for r in bench.pareto_front(edges, x="cycles")] == ["fixed8 incremental"]
+    # the time chart prints each variant's spread and the front of this run
+    for r in ns.timed:
+        assert r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
+    assert ns.time_front and ns.time_front[-1] == "perspective"
 
 
 def test_06_edge_bits_and_depth_claims():
@@ -103,8 +137,21 @@ def test_06_divide_cost_slider_reprices_the_front():
         assert "N=16 costs <b>27%</b>" in cheap_text
         ex.error.value = "mean error"
         assert ex.front[-1] == "perspective"
+        # one unit with the lesson's tables: cycles of the op-count model, not "additions"
+        assert "cycles" in ex.info.value and "additions" not in ex.info.value
+        assert ex.ax.get_xlabel() == "cycles per pixel (op-count model)"
     finally:
         ex.close()
+    # "the staircase keeps its order at every price; N = 2 leaves only when a divide costs no
+    # more than an addition" (the closed forms d + 5 and 1 + (d + 9) / N)
+    fronts = ns.front_at
+    assert "N=2" not in fronts[1] and fronts[1] == [v for v in fronts[2] if v != "N=2"]
+    assert all(fronts[d] == fronts[2] for d in (9, 30, 128))
+    for d in (1, 9, 128):
+        priced_rows = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
+        assert priced_rows["perspective"] == pytest.approx(d + 5)
+        for n in (2, 16):
+            assert priced_rows[f"subdivided N={n}"] == pytest.approx(1 + (d + 9) / n)
 
 
 # -- 07 hard cases ---------------------------------------------------------------------------
