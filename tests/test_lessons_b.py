@@ -175,6 +175,23 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     assert float(np.spacing(np.float32(ns.near_depth))) == pytest.approx(1 / (2**24 - 1), rel=1e-6)
 
 
+def test_07_case_texts_match_what_the_lesson_prints():
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    # stepping_drift: "drifts by a few hundredths of the attribute" beside the printed value
+    assert "a few hundredths" in hardcases.get_case("stepping_drift").naive_does
+    assert 0.01 < ns.drift[1] < 0.1
+    # sliver_pair: "the 60 centres of row 1 ... columns 0..59 ... covered exactly once";
+    # naive: "the whole row twice ... (columns 0..60)"
+    ours, naive = ns.slivers
+    assert "60 centres" in hardcases.get_case("sliver_pair").expect
+    assert np.flatnonzero(ours[1]).tolist() == list(range(60)) and ours.max() == 1
+    assert np.flatnonzero(naive[1] > 1).tolist() == list(range(61))
+    # the fan: the hub's owner is labelled and named in the key
+    assert ns.hub_owner == int(ns.fan_owner[ns.hub])
+
+
 def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     from teachraster.study import hardcases
 
@@ -210,6 +227,7 @@ def test_07_case_picker_driven_by_the_test():
     try:
         picker.case.value, picker.method.value = "d3d_split_square", "span"
         assert picker.passed and picker.difference
+        assert "covered twice or more" in picker.info.value  # the key, under the case's text
     finally:
         picker.close()
 
