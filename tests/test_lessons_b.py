@@ -254,6 +254,25 @@ def test_08_error_exponents_follow_mitchell_and_the_text():
         assert len(set(p[:, 0].tolist())) == len(set(p[:, 1].tolist())) == n
     # "on these triangles the ordered grid has the smallest mean error at S = 16"
     assert ns.best16 == "grid" == min(ns.err16, key=ns.err16.get)
+    # the standard patterns on axis edges: slope -1 over S = 2..8 (1/(4S)); the 16-sample
+    # pattern's rows start at the pixel's edge: 1/(2S), no better than 8 samples
+    assert abs(e["standard, axis edges (S = 2-8)"] + 1) < 0.05, e
+    std = ns.standard_axis
+    assert all(abs(std[s] * s - 0.25) < 0.02 for s in (2, 4, 8)), std
+    assert abs(std[16] * 16 - 0.5) < 0.03 and abs(std[16] / std[8] - 1) < 0.1, std
+
+
+def test_08_centroid_llvmpipe_rule_and_teachraster_differ_where_the_centre_is_covered():
+    ns = lesson("08_antialiasing")
+    rr, cc = ns.rr, ns.cc
+    centre = ns.centre_in[rr, cc]
+    # "the partly covered pixels whose centre is covered": there, and only there, they differ
+    assert centre.any() and np.array_equal(ns.differ_centroid, centre)
+    # llvmpipe's rule really is "lowest-numbered covered sample" on a partly covered pixel
+    assert all(ns.samples_in[r, c, ns.lowest[r, c]] for r, c in zip(rr, cc))
+    assert not ns.samples_in[rr, cc].all(axis=-1).any()  # partly covered: not every sample
+    # teachraster keeps a covered centre: its value there is the centre's
+    np.testing.assert_allclose(ns.v_ours[centre], ns.v_plane(cc[centre] + 0.5, rr[centre] + 0.5))
 
 
 def test_08_predictions_are_answered_by_what_the_lesson_computes():
