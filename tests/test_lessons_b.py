@@ -385,7 +385,20 @@ def test_09_quads_closed_form_and_predictions():
     ns = lesson("09_texture_filtering")
     # the title counts distinct quads, the plan (triangle, quad) shadings: one quad twice
     assert ns.art.n_quads == 20 and ns.shadings == 21
-    assert f"{ns.shadings} 2x2 quad(s)" in str(ns.quads.plan["derivatives"])
+    assert f"{ns.shadings} 2x2 quad shading(s)" in str(ns.quads.plan["derivatives"])
+    # the Predict of §6, before the EXT formula: 8.2 x 8 texels takes 2 probes, a level finer
+    from teachraster.plotting.footprint import footprint
+
+    fp = footprint(np.array([0.5, 0.5]), np.array([8.2 / 64, 0]), np.array([0, 8 / 64]), (64, 64))
+    assert fp.probes == 2 and abs(fp.probe_lam - np.log2(4.1)) < 1e-9
+    assert abs(fp.lam - np.log2(8.2)) < 1e-9
+    # the jump the cell measures: exactly square, one probe at trilinear's level and the same
+    # value; a hair longer, two probes a level finer and a different value
+    square, longer = ns.jump["square"], ns.jump["1e-6 longer"]
+    assert square[0] == 1 and square[1] == square[2] and square[3] < 1e-12
+    assert longer[0] == 2 and abs(longer[2] - longer[1] - 1) < 1e-5 and longer[3] > 0.05
+    # the box and the Gaussian: the Gaussian aliases less but is further from the ideal
+    assert ns.gauss_rms > ns.box_rms
     # the closed form (N_x - f D_x) / D is the derivative at the step's middle
     np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
@@ -399,6 +412,26 @@ def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     assert b["texel_reads"] > nmn["texel_reads"]
     assert b["error_minified"] > nmn["error_minified"]
     assert ns.aniso_error < ns.trilinear_error
+
+
+def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
+    from teachraster.widgets import FilterExplorer
+
+    ns = lesson("09_texture_filtering")
+    # "facing you a pixel covers about one texel ... nothing aliases" (level 0 everywhere)
+    assert ns.start_lod.max() <= 0.5
+    explorer = FilterExplorer(tilt=0, filter="nearest", repeats=2, backend="image")
+    try:
+        explorer.tilt.value = 89
+        assert np.nanmax(explorer.lod) > 2  # the far end now minified four times and more
+        errors = {}
+        for f in ("trilinear", "anisotropic"):
+            explorer.filter.value = f
+            errors[f] = explorer.rms
+        # "anisotropic keeps a little more of them at the largest tilts ... the two stay close"
+        assert errors["anisotropic"] < errors["trilinear"] < 1.25 * errors["anisotropic"]
+    finally:
+        explorer.close()
 
 
 def test_09_filter_explorer_driven_by_the_test():
