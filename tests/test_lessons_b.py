@@ -473,6 +473,18 @@ def test_10_numbers_the_text_relies_on():
     assert ns.front_first["hiz_rejected"] > 0 and ns.front_first["shaded"] == 96 * 64
     assert ns.gpu["hiz_rejected"] == 0  # back to front (the last order drawn): "none"
     assert ns.sphere["hiz_rejected"] > 0
+    # the counters of 16/4/1: the 1x1 block tests are the pixel tests, so "filled with no
+    # test" is the same 1184 as with llvmpipe's 64/16/4 (not all 1492 covered pixels)
+    tiny, llvm = ns.counters, ns.llvm.trace.blocks.counters
+    assert tiny.pixel_tests == tiny.empty[-1] + tiny.full[-1] > 0
+    assert tiny.pixels_accepted == llvm.pixels_accepted < int(ns.fill.coverage.sum())
+    assert tiny.pixels_accepted + tiny.full[-1] == int(ns.fill.coverage.sum())
+    assert len(ns.frames) == 4  # "the built-in overlap scenes": four of them
+    # llvmpipe's binner: every 64x64 tile of the box is empty, fully or partially covered
+    bins = ns.bins
+    assert bins.full[0] > 0 and bins.partial[0] > 0 and bins.empty[0] > 0
+    tiles_of_box = ns.binned.trace.blocks.level == 0
+    assert bins.empty[0] + bins.full[0] + bins.partial[0] == int(tiles_of_box.sum())
 
 
 def test_10_tile_explorer_driven_by_the_test():
@@ -486,5 +498,11 @@ def test_10_tile_explorer_driven_by_the_test():
         first = explorer.caption_text
         explorer.block.value = 3
         assert first and explorer.caption_text and explorer.caption_text != first
+        explorer.level.value = 2  # 1x1 blocks: each is a pixel test, and the counters say so
+        assert "each is a pixel test" in explorer.caption_text
+        assert f"pixel tests run: <b>{explorer.blocks.counters.pixel_tests}</b>" in (
+            explorer.counters.value
+        )
+        assert explorer.blocks.counters.pixel_tests > 0
     finally:
         explorer.close()
