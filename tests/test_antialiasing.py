@@ -81,6 +81,14 @@ def test_edge_error_study_follows_mitchell():
     assert abs(slope["jittered"] + 0.75) < 0.08, slope
     assert abs(slope["random"] + 0.5) < 0.08 and abs(slope["grid, axis edges"] + 0.5) < 0.05
     assert slope["grid"] < slope["jittered"] + 0.02, slope
+    # the standard patterns (every sample on a row of its own) fall like 1/S on axis edges:
+    # 1/(4S) with rows centred in their strips (2, 4, 8); the 16-sample rows run 0, 1/16, ...
+    # 15/16 from the pixel's top edge, a one-sided quantiser: 1/(2S), no better than 8
+    std = {x["samples"]: x["mean_error"] for x in rows if x["kind"] == "standard, axis edges"}
+    assert sorted(std) == [2, 4, 8, 16]
+    for s in (2, 4, 8):
+        assert abs(std[s] * 4 * s - 1) < 0.1, (s, std[s])
+    assert abs(std[16] * 2 * 16 - 1) < 0.1 and abs(std[16] / std[8] - 1) < 0.1
     # the exact area: a half-plane through the square's centre at any angle halves it
     th = np.linspace(0.1, 3.0, 7)
     nx, ny = np.cos(th), np.sin(th)

@@ -141,3 +141,18 @@ def test_progress_bar_writes_to_stderr(capsys):
 def test_main_rejects_a_bad_repeat(tmp_path):
     with pytest.raises(SystemExit):
         bench.main(["--repeat", "0", "--out", str(tmp_path)])
+
+
+def test_time_rows_record_the_spread_beside_the_median():
+    # lesson 06 prints each variant's fastest and slowest run beside the median
+    calls = {"a": 0, "b": 0}
+
+    def fn(name):
+        calls[name] += 1
+
+    rows = [{"group": "interpolation", "variant": v} for v in ("perspective", "affine")]
+    out = bench.time_rows(rows, [lambda: fn("a"), lambda: fn("b")], 3,
+                          bench.Progress(1, enabled=False), "perspective")  # fmt: skip
+    for r in out:
+        assert 0 <= r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
+    assert calls == {"a": 5, "b": 5}  # two warm-up rounds, three timed

@@ -130,6 +130,45 @@ def test_owner_image_marks_double_hits_and_gaps():
     assert owner[0].tolist() == [0, SEVERAL, 1] and (owner[1:] == NONE).all()
 
 
+def test_case_picker_copies_are_not_drawn_as_double_hits():
+    # six_vertex_orders and translation_invariance are separate copies of one triangle: the
+    # picker lays them onto the first instead of painting their overlap "covered twice", and
+    # draws the naive coverage the lesson draws (it said "no naive coverage" for both)
+    from teachraster.widgets.case_picker import CasePicker, copy_offsets
+
+    picker = CasePicker("six_vertex_orders", backend="image")
+    try:
+        assert picker.offsets == [(0, 0)] * 6
+        assert set(np.unique(picker.copies)) == {0, 6}  # every order: the same pixels
+        assert int(((picker.naive_copies > 0) & (picker.naive_copies < 6)).sum()) == 63
+        titles = [ax.get_title() for ax in picker.axes]
+        assert "0 px differ" in titles[0] and "63 px differ" in titles[1]
+        assert "no naive coverage" not in " ".join(titles) and "key" in picker.info.value
+        picker.case.value = "translation_invariance"
+        assert picker.offsets[1:] == [(1, 0), (0, 3), (10, 3), (17, 29), (31, 5)]
+        assert set(np.unique(picker.copies)) == {0, 6}
+        assert ((picker.naive_copies > 0) & (picker.naive_copies < 6)).any()
+        picker.case.value = "fan_spokes_through_centres"  # a mesh: owners again
+        assert picker.offsets is None and picker.copies is None
+        assert copy_offsets([[[0, 0], [1, 0], [0, 1]], [[0, 0], [2, 0], [0, 1]]]) is None
+    finally:
+        picker.close()
+
+
+def test_owner_colours_hold_no_red_or_orange():
+    # vermillion means "covered twice" everywhere in the course: no owner may look like it
+    import colorsys
+
+    from matplotlib.colors import to_rgb
+
+    from teachraster.widgets.case_picker import OWNER_COLORS
+
+    assert len(set(OWNER_COLORS)) == len(OWNER_COLORS) >= 16  # the fan's 16 triangles differ
+    for color in OWNER_COLORS:
+        h, _, s = colorsys.rgb_to_hls(*to_rgb(color))
+        assert s < 0.2 or 0.12 < h < 0.9, color  # grey, or a hue away from red and orange
+
+
 def test_case_picker_shows_every_screen_case_with_both_methods():
     from teachraster.study import hardcases
     from teachraster.widgets.case_picker import SEVERAL, CasePicker, owner_image, screen_cases

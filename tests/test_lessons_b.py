@@ -44,6 +44,40 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     assert cyc["affine"] < cyc["subdivided N=16"] < cyc["perspective"] / 5  # "buys most of it back"
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
     assert rows[("interpolation", "affine")]["error"] >= 100  # "off by hundreds of texels"
+    # the Predict's givens: the far end of the floor a few tens of pixels wide, texels per pixel
+    assert 10 < ns.far_px < 30 and ns.floor_w.min() == 0.6 and ns.floor_w.max() == 60
+    # "the study counts a few more divides than 1/N ... the longer N, the more"
+    extra = list(ns.extra_divides.values())
+    assert all(e > 0 for e in extra) and extra == sorted(extra)
+
+
+def test_06_doom_level_floor_is_exact_and_the_rolled_floor_is_not():
+    import inspect
+
+    from teachraster.study import bench
+
+    ns = lesson("06_what_accuracy_costs")
+    assert inspect.signature(bench.floor_quad).parameters["roll"].default == 25.0  # "rolled 25°"
+    level, rolled = ns.worst_by_roll[0.0], ns.worst_by_roll[25.0]
+    assert level[16] < 1e-9 and level["span ends"] < 1e-9  # "both exact to rounding"
+    assert rolled[16] == pytest.approx(ns.subdivided[16]["error"])  # the table's N = 16
+    assert rolled["span ends"] > 100  # "over a hundred texels off"
+
+
+def test_06_edge_table_gaps_and_incremental_lists():
+    ns = lesson("06_what_accuracy_costs")
+    edges = [r for r in ns.rows if r["group"] == "edge functions"]
+    # "the gaps and double columns of the edge-function table are 0 in every row"
+    assert all(r["gaps"] == 0 and r["double_hits"] == 0 for r in edges)
+    assert set(ns.incremental_ratio) == {"fixed8", "fixed4", "float64", "float32", "unsnapped"}
+    # the edge chart's front is one point (no step line): cheapest and exact
+    from teachraster.study import bench
+
+    assert [r["variant"] for r in bench.pareto_front(edges, x="cycles")] == ["fixed8 incremental"]
+    # the time chart prints each variant's spread and the front of this run
+    for r in ns.timed:
+        assert r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
+    assert ns.time_front and ns.time_front[-1] == "perspective"
 
 
 def test_06_edge_bits_and_depth_claims():
@@ -103,8 +137,21 @@ def test_06_divide_cost_slider_reprices_the_front():
         assert "N=16 costs <b>27%</b>" in cheap_text
         ex.error.value = "mean error"
         assert ex.front[-1] == "perspective"
+        # one unit with the lesson's tables: cycles of the op-count model, not "additions"
+        assert "cycles" in ex.info.value and "additions" not in ex.info.value
+        assert ex.ax.get_xlabel() == "cycles per pixel (op-count model)"
     finally:
         ex.close()
+    # "the staircase keeps its order at every price; N = 2 leaves only when a divide costs no
+    # more than an addition" (the closed forms d + 5 and 1 + (d + 9) / N)
+    fronts = ns.front_at
+    assert "N=2" not in fronts[1] and fronts[1] == [v for v in fronts[2] if v != "N=2"]
+    assert all(fronts[d] == fronts[2] for d in (9, 30, 128))
+    for d in (1, 9, 128):
+        priced_rows = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
+        assert priced_rows["perspective"] == pytest.approx(d + 5)
+        for n in (2, 16):
+            assert priced_rows[f"subdivided N={n}"] == pytest.approx(1 + (d + 9) / n)
 
 
 # -- 07 hard cases ---------------------------------------------------------------------------
@@ -126,6 +173,23 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     f32, u24 = ns.coplanar_wrong[("float32", 1e-06)], ns.coplanar_wrong[("unorm24", 1e-06)]
     assert f32 > 0 and u24 > 0 and abs(f32 - u24) <= 0.25 * max(f32, u24)
     assert float(np.spacing(np.float32(ns.near_depth))) == pytest.approx(1 / (2**24 - 1), rel=1e-6)
+
+
+def test_07_case_texts_match_what_the_lesson_prints():
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    # stepping_drift: "drifts by a few hundredths of the attribute" beside the printed value
+    assert "a few hundredths" in hardcases.get_case("stepping_drift").naive_does
+    assert 0.01 < ns.drift[1] < 0.1
+    # sliver_pair: "the 60 centres of row 1 ... columns 0..59 ... covered exactly once";
+    # naive: "the whole row twice ... (columns 0..60)"
+    ours, naive = ns.slivers
+    assert "60 centres" in hardcases.get_case("sliver_pair").expect
+    assert np.flatnonzero(ours[1]).tolist() == list(range(60)) and ours.max() == 1
+    assert np.flatnonzero(naive[1] > 1).tolist() == list(range(61))
+    # the fan: the hub's owner is labelled and named in the key
+    assert ns.hub_owner == int(ns.fan_owner[ns.hub])
 
 
 def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
@@ -163,6 +227,7 @@ def test_07_case_picker_driven_by_the_test():
     try:
         picker.case.value, picker.method.value = "d3d_split_square", "span"
         assert picker.passed and picker.difference
+        assert "covered twice or more" in picker.info.value  # the key, under the case's text
     finally:
         picker.close()
 
@@ -189,6 +254,25 @@ def test_08_error_exponents_follow_mitchell_and_the_text():
         assert len(set(p[:, 0].tolist())) == len(set(p[:, 1].tolist())) == n
     # "on these triangles the ordered grid has the smallest mean error at S = 16"
     assert ns.best16 == "grid" == min(ns.err16, key=ns.err16.get)
+    # the standard patterns on axis edges: slope -1 over S = 2..8 (1/(4S)); the 16-sample
+    # pattern's rows start at the pixel's edge: 1/(2S), no better than 8 samples
+    assert abs(e["standard, axis edges (S = 2-8)"] + 1) < 0.05, e
+    std = ns.standard_axis
+    assert all(abs(std[s] * s - 0.25) < 0.02 for s in (2, 4, 8)), std
+    assert abs(std[16] * 16 - 0.5) < 0.03 and abs(std[16] / std[8] - 1) < 0.1, std
+
+
+def test_08_centroid_llvmpipe_rule_and_teachraster_differ_where_the_centre_is_covered():
+    ns = lesson("08_antialiasing")
+    rr, cc = ns.rr, ns.cc
+    centre = ns.centre_in[rr, cc]
+    # "the partly covered pixels whose centre is covered": there, and only there, they differ
+    assert centre.any() and np.array_equal(ns.differ_centroid, centre)
+    # llvmpipe's rule really is "lowest-numbered covered sample" on a partly covered pixel
+    assert all(ns.samples_in[r, c, ns.lowest[r, c]] for r, c in zip(rr, cc))
+    assert not ns.samples_in[rr, cc].all(axis=-1).any()  # partly covered: not every sample
+    # teachraster keeps a covered centre: its value there is the centre's
+    np.testing.assert_allclose(ns.v_ours[centre], ns.v_plane(cc[centre] + 0.5, rr[centre] + 0.5))
 
 
 def test_08_predictions_are_answered_by_what_the_lesson_computes():
@@ -301,7 +385,20 @@ def test_09_quads_closed_form_and_predictions():
     ns = lesson("09_texture_filtering")
     # the title counts distinct quads, the plan (triangle, quad) shadings: one quad twice
     assert ns.art.n_quads == 20 and ns.shadings == 21
-    assert f"{ns.shadings} 2x2 quad(s)" in str(ns.quads.plan["derivatives"])
+    assert f"{ns.shadings} 2x2 quad shading(s)" in str(ns.quads.plan["derivatives"])
+    # the Predict of §6, before the EXT formula: 8.2 x 8 texels takes 2 probes, a level finer
+    from teachraster.plotting.footprint import footprint
+
+    fp = footprint(np.array([0.5, 0.5]), np.array([8.2 / 64, 0]), np.array([0, 8 / 64]), (64, 64))
+    assert fp.probes == 2 and abs(fp.probe_lam - np.log2(4.1)) < 1e-9
+    assert abs(fp.lam - np.log2(8.2)) < 1e-9
+    # the jump the cell measures: exactly square, one probe at trilinear's level and the same
+    # value; a hair longer, two probes a level finer and a different value
+    square, longer = ns.jump["square"], ns.jump["1e-6 longer"]
+    assert square[0] == 1 and square[1] == square[2] and square[3] < 1e-12
+    assert longer[0] == 2 and abs(longer[2] - longer[1] - 1) < 1e-5 and longer[3] > 0.05
+    # the box and the Gaussian: the Gaussian aliases less but is further from the ideal
+    assert ns.gauss_rms > ns.box_rms
     # the closed form (N_x - f D_x) / D is the derivative at the step's middle
     np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
@@ -315,6 +412,26 @@ def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     assert b["texel_reads"] > nmn["texel_reads"]
     assert b["error_minified"] > nmn["error_minified"]
     assert ns.aniso_error < ns.trilinear_error
+
+
+def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
+    from teachraster.widgets import FilterExplorer
+
+    ns = lesson("09_texture_filtering")
+    # "facing you a pixel covers about one texel ... nothing aliases" (level 0 everywhere)
+    assert ns.start_lod.max() <= 0.5
+    explorer = FilterExplorer(tilt=0, filter="nearest", repeats=2, backend="image")
+    try:
+        explorer.tilt.value = 89
+        assert np.nanmax(explorer.lod) > 2  # the far end now minified four times and more
+        errors = {}
+        for f in ("trilinear", "anisotropic"):
+            explorer.filter.value = f
+            errors[f] = explorer.rms
+        # "anisotropic keeps a little more of them at the largest tilts ... the two stay close"
+        assert errors["anisotropic"] < errors["trilinear"] < 1.25 * errors["anisotropic"]
+    finally:
+        explorer.close()
 
 
 def test_09_filter_explorer_driven_by_the_test():
@@ -356,6 +473,18 @@ def test_10_numbers_the_text_relies_on():
     assert ns.front_first["hiz_rejected"] > 0 and ns.front_first["shaded"] == 96 * 64
     assert ns.gpu["hiz_rejected"] == 0  # back to front (the last order drawn): "none"
     assert ns.sphere["hiz_rejected"] > 0
+    # the counters of 16/4/1: the 1x1 block tests are the pixel tests, so "filled with no
+    # test" is the same 1184 as with llvmpipe's 64/16/4 (not all 1492 covered pixels)
+    tiny, llvm = ns.counters, ns.llvm.trace.blocks.counters
+    assert tiny.pixel_tests == tiny.empty[-1] + tiny.full[-1] > 0
+    assert tiny.pixels_accepted == llvm.pixels_accepted < int(ns.fill.coverage.sum())
+    assert tiny.pixels_accepted + tiny.full[-1] == int(ns.fill.coverage.sum())
+    assert len(ns.frames) == 4  # "the built-in overlap scenes": four of them
+    # llvmpipe's binner: every 64x64 tile of the box is empty, fully or partially covered
+    bins = ns.bins
+    assert bins.full[0] > 0 and bins.partial[0] > 0 and bins.empty[0] > 0
+    tiles_of_box = ns.binned.trace.blocks.level == 0
+    assert bins.empty[0] + bins.full[0] + bins.partial[0] == int(tiles_of_box.sum())
 
 
 def test_10_tile_explorer_driven_by_the_test():
@@ -369,5 +498,11 @@ def test_10_tile_explorer_driven_by_the_test():
         first = explorer.caption_text
         explorer.block.value = 3
         assert first and explorer.caption_text and explorer.caption_text != first
+        explorer.level.value = 2  # 1x1 blocks: each is a pixel test, and the counters say so
+        assert "each is a pixel test" in explorer.caption_text
+        assert f"pixel tests run: <b>{explorer.blocks.counters.pixel_tests}</b>" in (
+            explorer.counters.value
+        )
+        assert explorer.blocks.counters.pixel_tests > 0
     finally:
         explorer.close()

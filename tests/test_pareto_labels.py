@@ -32,3 +32,17 @@ def test_a_lone_label_keeps_the_first_spot():
     x, y = label.get_position()
     assert x * sx > 0 and y * sy > 0  # up and to the right
     plt.close(fig)
+
+
+def test_a_front_point_is_drawn_above_the_points_it_beats():
+    # lesson 06's edge chart: the one-point front sat under grey points at the same place
+    rows = [
+        {"variant": "front", "cycles": 3.0, "error": 0.0},
+        {"variant": "worse", "cycles": 3.0, "error": 1.0},
+        {"variant": "dearer", "cycles": 27.0, "error": 0.0},
+    ]
+    fig, ax = plt.subplots()
+    art = plot_pareto(ax, rows, "cycles", logx=False)
+    assert art.points["front"].get_zorder() > art.points["dearer"].get_zorder()
+    assert [r["variant"] for r in art.front] == ["front"]
+    plt.close(fig)

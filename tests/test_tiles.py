@@ -267,6 +267,25 @@ def test_counters_consistent_with_blocks():
         assert c.pixel_tests <= fill.trace.bbox.size + 4 * 2 * (90 + 70)
 
 
+def test_one_pixel_blocks_are_pixel_tests_not_untested_fills():
+    # lesson 10 (hierarchy 16/4/1): the corner test of a 1x1 block *is* the pixel test, so the
+    # counters count those blocks as pixel tests and their pixels as tested (1184 untested of
+    # 1492 covered, not 1492 and 0 tests)
+    rng = np.random.default_rng(19)
+    for xy in random_triangles(rng, "outside", 20, 64, 64):
+        fill = tiled(xy, 64, 64, block_sizes=(16, 4, 1), trace=True)
+        t, c = fill.trace.blocks, fill.trace.blocks.counters
+        ones = t.level == 2
+        assert c.pixel_tests == int(ones.sum()) == t.pixel_tests.sum()
+        assert not (ones & (t.kind == "partial")).any()
+        accepted_one = int((ones & (t.kind == "accepted")).sum())
+        assert c.pixels_accepted + accepted_one == fill.coverage.sum()
+        assert c.tests == c.blocks - int(ones.sum()) + c.pixel_tests
+    # the same triangle with llvmpipe's sizes: tests are blocks plus pixel tests
+    c = tiled(xy, 64, 64, block_sizes=(64, 16, 4), trace=True).trace.blocks.counters
+    assert c.tests == c.blocks + c.pixel_tests
+
+
 def test_zero_area_and_empty_box_classify_no_block():
     for xy in ([[1, 1], [5, 5], [9, 9]], [[2, 2], [2, 2], [2, 2]], [[-9, -9], [-5, -9], [-7, -2]]):
         fill = tiled(np.array(xy, float), 16, 16, trace=True)

@@ -39,7 +39,8 @@ def test_plot_blocks_colours_every_block_by_kind(fill, ax):
     assert len(art.blocks.get_paths()) == len(blocks)
     faces = art.blocks.get_facecolor()
     for i, b in enumerate(art.order):
-        want = to_rgba(tp.BLOCK_COLORS[blocks.kind[b]], 0.45)
+        # opaque: a child over its partial parent shows its own colour, never a mixture
+        want = to_rgba(tp.BLOCK_COLORS[blocks.kind[b]], 1.0)
         np.testing.assert_allclose(faces[i], want)
         verts = art.blocks.get_paths()[i].vertices
         assert verts[:, 0].min() == blocks.col[b] and verts[:, 1].min() == blocks.row[b]

@@ -62,9 +62,10 @@ class BlockCounters:
 
     ``empty``, ``full``, ``partial`` hold one count per block size (largest first);
     ``pixel_tests`` counts the pixel centres tested one by one (those of partial blocks of
-    the smallest size, inside the image), ``non_empty`` the smallest partial blocks with at
-    least one covered pixel (llvmpipe's ``nr_non_empty_4``) and ``pixels_accepted`` the
-    pixels filled by accepted blocks without any test.
+    the smallest size, inside the image; when the smallest size is 1, every 1×1 block, whose
+    corner test is the pixel test), ``non_empty`` the smallest partial blocks with at least
+    one covered pixel (llvmpipe's ``nr_non_empty_4``) and ``pixels_accepted`` the pixels
+    filled by accepted blocks larger than 1×1, without any test of their own.
     """
 
     sizes: tuple[int, ...]
@@ -77,8 +78,15 @@ class BlockCounters:
 
     @property
     def blocks(self) -> int:
-        """Blocks classified, at all sizes."""
+        """Blocks classified, at all sizes (1×1 blocks included, which are also pixel tests)."""
         return sum(self.empty) + sum(self.full) + sum(self.partial)
+
+    @property
+    def tests(self) -> int:
+        """Every test the walk ran, each once: block tests above 1×1 and pixel tests."""
+        ones = [e + f + p for s, e, f, p in zip(self.sizes, self.empty, self.full, self.partial)
+                if s == 1]  # fmt: skip
+        return self.blocks - sum(ones) + self.pixel_tests
 
     def table(self) -> list[tuple[str, int, int, int]]:
         """Rows ``(size label, empty, full, partial)``, largest size first."""
@@ -168,8 +176,11 @@ class TileTrace:
 
     @property
     def pixel_tests(self) -> np.ndarray:
-        """(n,) int: pixel centres tested one by one in each block (smallest partial only)."""
-        smallest = (self.level == len(self.block_sizes) - 1) & (self.kind_code == PARTIAL)
+        """(n,) int: pixel centres tested one by one in each block (smallest partial only, or
+        every 1×1 block: its corner test is the pixel test)."""
+        smallest = self.level == len(self.block_sizes) - 1
+        if self.block_sizes[-1] > 1:
+            smallest &= self.kind_code == PARTIAL
         return np.where(smallest, self.extent[:, 0] * self.extent[:, 1], 0)
 
     def at_level(self, level: int) -> np.ndarray:

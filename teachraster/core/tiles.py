@@ -305,20 +305,26 @@ def _cell_size(smallest: int) -> int:
 
 
 def _counters(levels: list[_Level], sizes) -> BlockCounters:
-    """The walker's own counts, per size (a size never reached counts zero)."""
+    """The walker's own counts, per size (a size never reached counts zero).
+
+    A 1×1 block's corner test *is* the pixel test: when the smallest size is 1, every block
+    of that size counts as a pixel test, and the pixels it accepts are not "filled with no
+    test"."""
     counts = [np.bincount(lv.kind, minlength=3) for lv in levels]
     counts += [np.zeros(3, dtype=np.int64)] * (len(sizes) - len(levels))
     last = levels[-1] if len(levels) == len(sizes) else None
     smallest = np.zeros(0, dtype=bool) if last is None else last.kind == PARTIAL
+    tested = smallest if last is None or sizes[-1] > 1 else np.ones(len(last.kind), dtype=bool)
+    untested = [lv for lv in levels if lv.size > 1]
     return BlockCounters(
         sizes=sizes,
         empty=tuple(int(c[REJECTED]) for c in counts),
         full=tuple(int(c[ACCEPTED]) for c in counts),
         partial=tuple(int(c[PARTIAL]) for c in counts),
-        pixel_tests=0 if last is None else int(np.prod(last.extent[smallest], axis=1).sum()),
+        pixel_tests=0 if last is None else int(np.prod(last.extent[tested], axis=1).sum()),
         non_empty=0 if last is None else int((last.covered[smallest] > 0).sum()),
         pixels_accepted=int(
-            sum(np.prod(lv.extent[lv.kind == ACCEPTED], axis=1).sum() for lv in levels)
+            sum(np.prod(lv.extent[lv.kind == ACCEPTED], axis=1).sum() for lv in untested)
         ),
     )
 

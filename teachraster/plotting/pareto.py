@@ -95,6 +95,7 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
         front_member = r["variant"] in on
         p.set_color(COLORS["outside"] if front_member else COLORS["edge"])
         p.set_alpha(1.0 if front_member else 0.45)
+        p.set_zorder(3 if front_member else 2)  # a front point is never overprinted in grey
         label = art.labels[r["variant"]]
         label.xy = (r[x], yy)
         label.set_alpha(1.0 if front_member else 0.6)

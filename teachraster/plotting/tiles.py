@@ -31,7 +31,7 @@ from ..core.trace import FillTrace
 from ..core.traversal import TRAVERSALS, traversal_order
 from ..core.validate import check_choice
 from .common import Artists, as_trace, fs, lw, pixel_axes, show_image, tint
-from .plots import plot_coverage, plot_pixel_grid, plot_triangle
+from .plots import plot_pixel_grid, plot_triangle
 from .style import COLORS, OKABE_ITO, VALUE_CMAP
 
 #: The colour of each block kind.
@@ -40,8 +40,13 @@ BLOCK_COLORS = {
     "accepted": OKABE_ITO["bluish_green"],
     "partial": OKABE_ITO["orange"],
 }
-#: Fill opacity of a block (its outline is opaque).
-BLOCK_ALPHA = 0.45
+#: Fill opacity of a block: opaque, so that a child drawn over its partial parent (and a
+#: block over the coverage) shows its own colour, never a mixture with no key.
+BLOCK_ALPHA = 1.0
+#: Block outlines: white, so that neighbouring blocks of one kind stay apart.
+BLOCK_EDGE = "white"
+#: What a view shows where no block is (yet): the white page and its pixel grid.
+UNCLASSIFIED = "not classified (yet)"
 
 
 def tile_trace(fill, what: str = "this plot") -> tuple[FillTrace, TileTrace]:
@@ -81,12 +86,15 @@ class BlockArtists(Artists):
     legend: object | None = None
     order: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     kinds: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    sizes: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
 
     def show(self, mask: np.ndarray) -> None:
         """Show only the blocks where ``mask`` (indexed like the trace) is True, in place."""
         visible = np.asarray(mask, dtype=bool)[self.order]
         face = _colors(self.kinds, BLOCK_ALPHA)
-        edge = _colors(self.kinds, 1.0)
+        edge = np.tile(to_rgba(BLOCK_EDGE), (len(self.kinds), 1))
+        ones = np.asarray(self.sizes) == 1  # a white outline would hide a 1×1 block's colour
+        edge[ones] = face[ones]
         face[~visible, 3] = 0.0
         edge[~visible, 3] = 0.0
         self.blocks.set_facecolor(face)
@@ -131,7 +139,8 @@ def plot_blocks(
         Sibling order of the walk; blocks are drawn in visiting order, so a child lies on
         top of its partial parent.
     legend : bool
-        A legend of the three kinds.
+        A legend of the three kinds and of the white page where no block is
+        (:func:`block_legend_handles`).
 
     Returns
     -------
@@ -143,23 +152,31 @@ def plot_blocks(
     order = blocks.visit_order(traversal)
     coll = PolyCollection(_rectangles(blocks, order), linewidths=lw(0.5), zorder=2.5)
     ax.add_collection(coll, autolim=False)
-    result = BlockArtists(coll, order=order, kinds=blocks.kind_code[order].astype(int))
+    result = BlockArtists(
+        coll, order=order, kinds=blocks.kind_code[order].astype(int), sizes=blocks.size[order]
+    )
     result.show(block_mask(blocks, level=level, upto=upto, traversal=traversal))
     if legend:
-        handles = [
-            Patch(facecolor=to_rgba(BLOCK_COLORS[k], BLOCK_ALPHA), edgecolor=BLOCK_COLORS[k],
-                  label=k) for k in KINDS
-        ]  # fmt: skip
-        result.legend = ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1),
-                                  fontsize=fs(0.7), frameon=False)  # fmt: skip
+        result.legend = ax.legend(handles=block_legend_handles(), loc="upper left",
+                                  bbox_to_anchor=(1.02, 1), fontsize=fs(0.7),
+                                  frameon=False)  # fmt: skip
     return result
+
+
+def block_legend_handles() -> list[Patch]:
+    """The key of :func:`plot_blocks`: one patch per kind, and the page where no block is."""
+    handles = [Patch(facecolor=BLOCK_COLORS[k], edgecolor=BLOCK_COLORS[k], label=k)
+               for k in KINDS]  # fmt: skip
+    handles.append(Patch(facecolor="white", edgecolor=COLORS["grid"], label=UNCLASSIFIED))
+    return handles
 
 
 def plot_hierarchy(axes, fill, *, triangle: bool = True) -> list[BlockArtists]:
     """One panel per block size: the hierarchy after classifying that size.
 
-    Each panel shows the pixel grid, the final coverage (light), the triangle and the
-    blocks; its title gives the size and that level's counts.
+    Each panel shows the pixel grid, the triangle and the blocks (opaque: at every level they
+    tile the bounding box, so the coverage is theirs to show); its title gives the size and
+    that level's counts.
     """
     trace, blocks = tile_trace(fill, "plot_hierarchy")
     axes = list(np.ravel(axes))
@@ -169,7 +186,6 @@ def plot_hierarchy(axes, fill, *, triangle: bool = True) -> list[BlockArtists]:
     c = blocks.counters
     for lev, (ax, size) in enumerate(zip(axes, blocks.block_sizes)):
         plot_pixel_grid(ax, trace.width, trace.height, ticks=4)
-        plot_coverage(ax, trace, alpha=0.35)
         if triangle:
             plot_triangle(ax, trace.snapped, arrows=False, labels=False)
         out.append(plot_blocks(ax, trace, level=lev, legend=lev == len(axes) - 1))
@@ -203,21 +219,21 @@ def plot_block_counters(ax, fill, *, title: bool = True) -> CounterArtists:
     ax.set_axis_off()
     table = ax.table(
         cellText=rows,
-        colLabels=["block", "rejected", "accepted", "partial"],
+        colLabels=["block", "rej.", "acc.", "part."],  # short: they fit a half-width panel
         loc="center",
         cellLoc="center",
-        colWidths=[0.22, 0.26, 0.26, 0.22],  # wide enough for "accepted" at this size
+        colWidths=[0.28, 0.24, 0.24, 0.24],
     )
     table.auto_set_font_size(False)
     table.set_fontsize(fs(0.8))
     table.scale(1.0, 1.6)
     for (r, c), cell in table.get_celld().items():
         if r == 0 and c:
-            cell.set_facecolor(to_rgba(BLOCK_COLORS[KINDS[c - 1]], BLOCK_ALPHA))
+            cell.set_facecolor(to_rgba(BLOCK_COLORS[KINDS[c - 1]], 0.45))
     result = CounterArtists(table)
     if title:
         result.title = ax.set_title(
-            "counters (last row: pixels filled without a test | pixel tests run)", fontsize=fs(0.7)
+            "counters; last row, pixels:\nfilled untested | tested one by one", fontsize=fs(0.7)
         )
     return result
 

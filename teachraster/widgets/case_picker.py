@@ -1,10 +1,15 @@
 """``CasePicker``: browse the hard-case catalogue, ours beside the naive rasteriser.
 
 Lesson 07's widget. Pick a screen-space case of :mod:`teachraster.study.hardcases` and a fill
-method: the left panel colours every pixel by the triangle that owns it (red where a pixel is
-covered twice), the right panel shows what the case's naive implementation covers, and the text
-gives the case's *why*, what a correct rasteriser *must* do, whether ours passes its check, and
-how the naive version differs.
+method: the left panel colours every pixel by the triangle that owns it (vermillion where a
+pixel is covered twice), the right panel shows what the case's naive implementation covers, and
+the text gives the case's *why*, what a correct rasteriser *must* do, whether ours passes its
+check, and how the naive version differs.
+
+Some cases are not meshes but separate copies of one triangle (every vertex order, whole-pixel
+shifts): their copies overlap by design, and a pixel covered by two of them is no error. For
+those both panels move every copy back onto the first (:func:`copy_offsets`,
+:func:`aligned_counts`) and show where the copies agree and where they do not.
 """
 
 from __future__ import annotations
@@ -13,7 +18,6 @@ import html
 
 import ipywidgets as widgets
 import numpy as np
-from matplotlib import colormaps
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
@@ -22,6 +26,14 @@ from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
 NONE, SEVERAL = -1, -2
+#: One colour per owning triangle: blues, greens, purples, olives and greys, light and dark
+#: alternating so that neighbours differ, and no red or orange (vermillion means "covered
+#: twice" in every figure of the course).
+OWNER_COLORS = ("#1f77b4", "#98df8a", "#9467bd", "#dbdb8d", "#17becf", "#c7c7c7", "#393b79",
+                "#8ca252", "#aec7e8", "#2ca02c", "#c5b0d5", "#7f7f7f", "#9edae5", "#637939",
+                "#6b6ecf", "#bcbd22")  # fmt: skip
+#: Separate copies of one triangle: pixels every copy covers, and pixels only some cover.
+EVERY_COPY, SOME_COPIES = COLORS["fill"], COLORS["inside"]
 
 
 def owner_image(fills) -> np.ndarray:
@@ -47,25 +59,93 @@ def owner_image(fills) -> np.ndarray:
     return owner
 
 
+def owner_color(k: int) -> str:
+    """The colour of triangle ``k`` in :func:`plot_owners` (:data:`OWNER_COLORS`, cycled)."""
+    return OWNER_COLORS[k % len(OWNER_COLORS)]
+
+
 def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True) -> list:
-    """Pixels coloured by owning triangle (a qualitative palette), red where covered twice.
+    """Pixels coloured by owning triangle (:data:`OWNER_COLORS`), vermillion where covered twice.
 
     Returns the artists drawn (coverage images, then triangle outlines).
     """
     h, w = owner.shape
-    palette = colormaps["tab20"].colors
     artists = [plot_pixel_grid(ax, w, h, ticks=False)]
     for k in range(int(owner.max()) + 1):
         if (owner == k).any():
-            artists.append(
-                plot_coverage(ax, owner == k, color=palette[(2 * k) % 20 + (k // 10) % 2])
-            )
+            artists.append(plot_coverage(ax, owner == k, color=owner_color(k)))
     if (owner == SEVERAL).any():
         artists.append(plot_coverage(ax, owner == SEVERAL, color=COLORS["outside"]))
     if outlines and triangles is not None:
         for xy in triangles:
             artists.append(plot_triangle(ax, xy, labels=False, arrows=False))
     return artists
+
+
+def copy_offsets(triangles) -> list | None:
+    """Whole-pixel offsets (dx, dy) of each triangle from the first, when every triangle is a
+    copy of the first (any vertex order, moved by whole pixels); None otherwise.
+
+    >>> t = np.array([[0.5, 0.5], [4.5, 0.5], [0.5, 3.5]])
+    >>> copy_offsets([t, t[::-1] + [3, 1]])
+    [(0, 0), (3, 1)]
+    >>> copy_offsets([t, t * 2]) is None
+    True
+    """
+    tris = np.asarray(triangles, dtype=float)
+    if len(tris) < 2:
+        return None
+
+    def vertex_set(t):
+        return np.array(sorted(map(tuple, t)))
+
+    first = vertex_set(tris[0])
+    offsets = []
+    for t in tris:
+        shift = t.min(axis=0) - tris[0].min(axis=0)
+        if not np.allclose(shift, np.round(shift)) or not np.allclose(vertex_set(t - shift), first):
+            return None
+        offsets.append((int(round(shift[0])), int(round(shift[1]))))
+    return offsets
+
+
+def aligned_counts(masks, offsets, box) -> np.ndarray:
+    """How many of the copies cover each pixel of ``box`` (rows r0:r1, columns c0:c1 around the
+    first copy), each copy's coverage ``mask`` moved back by its offset (dx, dy).
+
+    >>> a = np.zeros((4, 6), bool); a[1, 1] = True
+    >>> b = np.roll(a, 3, axis=1)                  # the same pixel, 3 columns to the right
+    >>> aligned_counts([a, b], [(0, 0), (3, 0)], (0, 3, 0, 3)).tolist()
+    [[0, 0, 0], [0, 2, 0], [0, 0, 0]]
+    """
+    r0, r1, c0, c1 = box
+    total = np.zeros((r1 - r0, c1 - c0), dtype=np.int64)
+    for mask, (dx, dy) in zip(masks, offsets):
+        padded = np.pad(np.asarray(mask, dtype=bool), 1)  # a box one pixel past the image
+        total += padded[r0 + dy + 1 : r1 + dy + 1, c0 + dx + 1 : c1 + dx + 1]
+    return total
+
+
+def copies_box(triangle, shape) -> tuple[int, int, int, int]:
+    """Rows r0:r1 and columns c0:c1 of ``triangle``'s bounding box and one pixel around it,
+    within an image of ``shape``."""
+    xy = np.asarray(triangle, dtype=float)
+    h, w = shape
+    c0, r0 = (max(int(np.floor(v)) - 1, 0) for v in xy.min(axis=0))
+    c1, r1 = int(min(np.ceil(xy[:, 0].max()) + 1, w)), int(min(np.ceil(xy[:, 1].max()) + 1, h))
+    return r0, r1, c0, c1
+
+
+def plot_copies(ax, counts: np.ndarray, n: int, triangle, box) -> int:
+    """``counts`` of :func:`aligned_counts` on ``ax``: sky blue where all ``n`` copies cover a
+    pixel, dark blue where only some do; the first copy's outline on top. Returns the number
+    of pixels where the copies disagree."""
+    r0, r1, c0, c1 = box
+    plot_pixel_grid(ax, c1 - c0, r1 - r0, ticks=False)
+    plot_coverage(ax, counts == n, color=EVERY_COPY)
+    plot_coverage(ax, (counts > 0) & (counts < n), color=SOME_COPIES)
+    plot_triangle(ax, np.asarray(triangle, dtype=float) - [c0, r0], labels=False, arrows=False)
+    return int(((counts > 0) & (counts < n)).sum())
 
 
 def screen_cases() -> list[str]:
@@ -95,6 +175,12 @@ class CasePicker:
         The naive implementation's coverage counts (right panel), if the case has them.
     passed : bool
         Whether our result passes the case's check.
+    offsets : list of (dx, dy) or None
+        :func:`copy_offsets` of the case's triangles: set when they are separate copies of one
+        triangle, and then both panels show :func:`aligned_counts` instead of owners.
+    copies, naive_copies : (h, w) int or None
+        How many copies cover each pixel around the first copy: ours, and the naive version's
+        (None when it has no per-copy coverage).
     info : ipywidgets.HTML
 
     Examples
@@ -133,8 +219,8 @@ class CasePicker:
             control.observe(lambda change: self.update(), "value")
         title = title_html(
             "Hard cases: who owns each pixel?",
-            "Left: our fill, each pixel in the colour of the triangle that covers it (red: "
-            "covered twice). Right: what a naive rasteriser covers (red: twice).",
+            "Left: our fill, each pixel in the colour of the triangle that covers it. Right: "
+            "what a naive rasteriser covers. The key is under the case's text.",
         )
         controls = widgets.HBox([self.case, labelled("method", self.method)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
@@ -153,12 +239,28 @@ class CasePicker:
         self.naive_counts = None if naive is None else naive.counts
         diff = c.naive_difference(result, naive) if naive is not None else None
         self.difference = diff or ""
+        self._copies(result, naive)
+
+    def _copies(self, result, naive) -> None:
+        # Separate copies of one triangle (not a mesh): every copy moved back onto the first.
+        self.offsets = copy_offsets(self._case.triangles)
+        self.copies = self.naive_copies = None
+        if self.offsets is None:
+            return
+        self._box = copies_box(self._case.triangles[0], self.owner.shape)
+        self.copies = aligned_counts([f.coverage for f in result.fills], self.offsets, self._box)
+        masks = None if naive is None else (naive.values or {}).get("coverage")
+        if masks is not None and len(masks) == len(self.offsets):
+            self.naive_copies = aligned_counts(masks, self.offsets, self._box)
 
     def _draw(self) -> None:
         with style_context(self._style):
             for ax in self.axes:
                 ax.clear()
             tris = self._case.triangles
+            if self.copies is not None:
+                self._draw_copies()
+                return
             plot_owners(self.axes[0], self.owner, tris)
             self.axes[0].set_title(f"ours ({self.method.value}): pixel → triangle")
             ax = self.axes[1]
@@ -174,6 +276,19 @@ class CasePicker:
                 for xy in tris:
                     plot_triangle(ax, xy, labels=False, arrows=False)
                 ax.set_title(f"naive: max {int(n.max())} hit(s) per pixel")
+
+    def _draw_copies(self) -> None:
+        n, first = len(self.offsets), self._case.triangles[0]
+        differ = plot_copies(self.axes[0], self.copies, n, first, self._box)
+        self.axes[0].set_title(f"ours ({self.method.value}), {n} copies:\n{differ} px differ")
+        ax = self.axes[1]
+        if self.naive_copies is None:
+            r0, r1, c0, c1 = self._box
+            plot_pixel_grid(ax, c1 - c0, r1 - r0, ticks=False)
+            ax.set_title("naive:\nno coverage for this case")
+        else:
+            differ = plot_copies(ax, self.naive_copies, n, first, self._box)
+            ax.set_title(f"naive, {n} copies:\n{differ} px differ")
 
     def update(self) -> None:
         """Run the chosen case with the chosen method and redraw."""
@@ -192,7 +307,23 @@ class CasePicker:
             lines.append(f"<b>naive</b>: {html.escape(c.naive_does)}")
         if self.difference:
             lines.append(f"→ {html.escape(self.difference)}")
+        lines.append(self._key_html())
         return "<br>".join(lines)
+
+    def _key_html(self) -> str:
+        """The figure's key: what each colour means for this case."""
+
+        def swatch(color, text):
+            return f"<span style='color:{color}'>■</span> {text}"
+
+        if self.copies is not None:
+            return (f"<b>key</b>: separate copies of one triangle (not a mesh), each moved back "
+                    f"onto the first: {swatch(EVERY_COPY, 'covered by every copy')}, "
+                    f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}")  # fmt: skip
+        return (f"<b>key</b>: left, one colour per triangle "
+                f"({swatch(owner_color(0), '')}{swatch(owner_color(1), '')}"
+                f"{swatch(owner_color(2), '')}…); right, {swatch(COLORS['fill'], 'covered once')}"
+                f"; both, {swatch(COLORS['outside'], 'covered twice or more')}")  # fmt: skip
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

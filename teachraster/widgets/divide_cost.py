@@ -44,7 +44,8 @@ class DivideCostExplorer(Shown):
         The study's interpolation rows with their operation counts
         (``ops.with_counts(bench.run(...))`` filtered to ``group == "interpolation"``).
     divide : float
-        Starting cost of a divide, in additions (a multiply costs 3).
+        Starting cost of a divide in cycles of the operation-count model (an addition costs 1,
+        a multiply 3: :data:`~teachraster.study.operation_counts.CYCLES_1990S`).
     error : {"max error", "mean error"}
     backend : {"auto", "ipympl", "image"}
     style : str, optional
@@ -83,8 +84,8 @@ class DivideCostExplorer(Shown):
         self.error.observe(lambda change: self.update(replot=True), "value")
         title = title_html(
             "What a divide costs decides the front",
-            "Cost per pixel in additions (a multiply = 3). Vermillion: the Pareto front, the "
-            "variants no other beats on both cost and error.",
+            "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
+            "Vermillion: the Pareto front, the variants no other beats on both cost and error.",
         )
         controls = widgets.HBox([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
@@ -97,7 +98,7 @@ class DivideCostExplorer(Shown):
         self.ax.clear()
         self.art = plot_pareto(
             self.ax, priced(self.rows, self.divide.value), "cycles", y=self._ykey,
-            xlabel="cost per pixel (additions)", ylabel=f"{self.error.value} (texels)",
+            xlabel="cycles per pixel (op-count model)", ylabel=f"{self.error.value} (texels)",
             short=short_name,
         )  # fmt: skip
         self.front = [r["variant"] for r in self.art.front]
@@ -122,11 +123,11 @@ class DivideCostExplorer(Shown):
         ratio = exact / rows["affine"]["cycles"]
         share = self.divide.value * rows["perspective"]["divides"] / exact
         quake = rows.get("subdivided N=16")
-        saving = (
-            ""
-            if quake is None
-            else (f"; Quake's N=16 costs <b>{quake['cycles'] / exact:.0%}</b> of it")
-        )
-        return (f"divide = {self.divide.value:.3g} additions: the divide is <b>{share:.0%}</b> of "
-                f"perspective-correct's cost, which is <b>{ratio:.3g}×</b> affine's{saving}. "
+        saving = ""
+        if quake is not None:
+            saving = (f"; Quake's N=16 costs <b>{quake['cycles'] / exact:.0%}</b> of "
+                      "perspective-correct")  # fmt: skip
+        return (f"divide = {self.divide.value:.3g} cycles: the divide is <b>{share:.0%}</b> of "
+                f"perspective-correct's cost; perspective-correct costs <b>{ratio:.3g}×</b> "
+                f"affine{saving}. "
                 f"Front, cheapest first: {names}")  # fmt: skip

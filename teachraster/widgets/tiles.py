@@ -7,7 +7,7 @@ import ipywidgets as widgets
 from ..core.fill import rasterize
 from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
-from ..plotting import plot_blocks, plot_coverage, plot_pixel_grid, plot_triangle
+from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.tiles import block_mask
 from .common import Holdable, fill_axes, labelled, style_context, title_html
 from .display import FigureDisplay, html_escape, new_figure, resolve_backend
@@ -29,7 +29,8 @@ class TileExplorer(Holdable):
     grey, accepted green, partial orange; partial blocks are split at the next level). The
     **block** slider walks the blocks in the chosen **traversal** order (depth first, the
     children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
-    with the caption of the ``k``-th.
+    with the caption of the ``k``-th; the page stays white where no block has been classified
+    yet, and a child covers its partial parent (opaque colours: each one in the key).
     The **block sizes** and **traversal** menus fill the triangle again. The counters
     (rejected / accepted / partial per size, llvmpipe's empty / full / partial, and the pixel tests run) are shown below.
 
@@ -80,7 +81,6 @@ class TileExplorer(Holdable):
             fig = new_figure((6, 6), self.backend)
             ax = fill_axes(fig, width, height)
             plot_pixel_grid(ax, width, height)
-            plot_coverage(ax, self.fill, alpha=0.35)
             plot_triangle(ax, self.fill.trace.snapped, arrows=False, labels=False)
             self.ax, self.fig = ax, fig
             self.artists = None
@@ -132,7 +132,9 @@ class TileExplorer(Holdable):
             f"level {level}: {size}×{size} blocks — {c.empty[level]} rejected, "
             f"{c.full[level]} accepted, {c.partial[level]} partial"
         )
-        if level == len(self.sizes.value) - 1:
+        if level == len(self.sizes.value) - 1 and size == 1:
+            text += f": each is a pixel test ({c.pixel_tests} in all)"
+        elif level == len(self.sizes.value) - 1:
             text += f"; {c.pixel_tests} pixel tests in the partial ones"
         self.caption_text = text
         self._refresh()

@@ -206,8 +206,9 @@ def derivatives_effect(
         why = "not asked (derivatives=False): no quads evaluated"
     else:
         why = (
-            f"{mode} differences in {n_quads:,} 2x2 quad(s), {n_helpers:,} helper pixel(s) "
-            "evaluated on their triangle's extrapolated interpolation"
+            f"{mode} differences in {n_quads:,} 2x2 quad shading(s) (a quad is shaded once "
+            f"per triangle it touches), {n_helpers:,} helper pixel(s) evaluated on their "
+            "triangle's extrapolated interpolation"
         )
         if n_fallback:
             why += f"; {n_fallback} pixel(s) avoided a helper beyond the horizon"

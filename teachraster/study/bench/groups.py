@@ -38,11 +38,13 @@ def floor_quad(size: int, roll: float = 25.0):
     A pinhole camera of focal length ``size / 2`` px, 1 unit above the floor and rolled by
     ``roll`` degrees about its view axis. Without the roll every raster line of a level
     floor has one depth, so perspective is affine along each span and subdivided
-    interpolation would be exact (why Quake drew floors along lines of constant depth); the
-    roll makes w change along the rows, the general case. A camera-space point (X, Y, Z)
-    lands at ``(c + f X / Z, c + f Y / Z)`` (y down) with w = Z. Positions are put on the
-    1/256 px grid, so the rasteriser's snapped triangle *is* the geometry and the only error
-    left is interpolation's. u runs 0..1 across, v 0..1 from near to far.
+    interpolation is exact (why Doom, whose camera only turned, drew floors row by row with
+    one depth per row); the roll makes w change along the rows, the general case for a
+    polygon of any orientation (Quake's spans, which divide every 8 or 16 pixels). A
+    camera-space point (X, Y, Z) lands at ``(c + f X / Z, c + f Y / Z)`` (y down) with
+    w = Z. Positions are put on the 1/256 px grid, so the rasteriser's snapped triangle *is*
+    the geometry and the only error left is interpolation's. u runs 0..1 across, v 0..1
+    from near to far.
 
     Returns
     -------

@@ -20,6 +20,12 @@ def time_interleaved(fns: list[Callable[[], object]], repeat: int) -> list[float
     ratios between variants stay fair on a busy machine. Two untimed warm-up rounds come
     first.
     """
+    return [statistics.median(t) for t in time_samples(fns, repeat)]
+
+
+def time_samples(fns: list[Callable[[], object]], repeat: int) -> list[list[float]]:
+    """Every timed call of :func:`time_interleaved`: one list of ``repeat`` wall times per
+    ``fn``, so a report can print the spread beside the median."""
     repeat = as_size("repeat", repeat)
     for _ in range(2):
         for fn in fns:
@@ -30,13 +36,17 @@ def time_interleaved(fns: list[Callable[[], object]], repeat: int) -> list[float
             t0 = time.perf_counter()
             fn()
             record.append(time.perf_counter() - t0)
-    return [statistics.median(t) for t in times]
+    return times
 
 
 def time_rows(rows: list[dict], fns: list, repeat: int, progress: Progress, baseline: str):
-    """Time a group's variants together (:func:`time_interleaved`), then add the ratios."""
-    for row, t in zip(rows, time_interleaved(fns, repeat)):
-        row["time_median_s"] = t
+    """Time a group's variants together (:func:`time_interleaved`), then add the ratios.
+
+    Each row gets the median (``time_median_s``) and the fastest and slowest run
+    (``time_min_s``, ``time_max_s``): on a busy machine the spread says how far to trust it.
+    """
+    for row, t in zip(rows, time_samples(fns, repeat)):
+        row.update(time_median_s=statistics.median(t), time_min_s=min(t), time_max_s=max(t))
     progress.step(f"{rows[0]['group']}: timing")
     return _ratios(rows, baseline)
 

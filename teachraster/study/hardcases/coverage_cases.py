@@ -291,8 +291,10 @@ def _slivers():
             "two slivers (60 px long, 1/256 px high, area 0.12 px²) sharing an edge along "
             "a row of centres",
             "mesh",
-            "the 59 centres (1, 1..59) on the shared edge covered exactly once (by the "
-            "sliver below it: a top edge), none twice",
+            "the 60 centres of row 1 on the shared edge, columns 0..59 (the shared left "
+            "vertex's centre included), covered exactly once (by the sliver below it: a top "
+            "edge), none twice; the right vertex's centre (1, 60) lies on both slivers' "
+            "right edge and belongs to the neighbour",
             frozen_inputs(
                 triangles=tris,
                 size=(64, 4),
@@ -301,7 +303,8 @@ def _slivers():
             ),  # fmt: skip
             fill_all,
             check_watertight,
-            "raw floats with E >= 0 draw the whole row twice",
+            "raw floats with E >= 0 draw the whole row twice, both vertices' centres "
+            "included (columns 0..60)",
             naive_mesh("inclusive"),
             naive_double_hits,
         )
