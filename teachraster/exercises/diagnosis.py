@@ -31,6 +31,7 @@ import numpy as np
 from .answers import short
 from .exercise import Exercise, Mistake, copies
 from .running import run_checker
+from .scalars import num, vec
 
 #: Relative rounding of one float32 operation, and how many operations' worth counts as float32.
 FLOAT32_EPS, FLOAT32_OPS = 2.0**-24, 8
@@ -96,8 +97,14 @@ def compose(head: str, words: str) -> str:
 
 # -- the engine's own mistakes ----------------------------------------------------------------
 def constant_words(value) -> str:
+    shown = short(value)
+    x = None if isinstance(value, _EXACT) else _numbers(value)
+    if x is not None and x.size == 1:
+        shown = num(float(x.ravel()[0]))
+    elif x is not None and 1 < x.size <= 6 and x.ndim == 1:
+        shown = vec(x)
     return (
-        f"your function returns {short(value)} on every case, whatever its arguments: a "
+        f"your function returns {shown} on every case, whatever its arguments: a "
         "placeholder (such as `return 0`) left in, or a `return` reached too early?"
     )
 
@@ -137,6 +144,8 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
     """float32 (or float16) named only when the error is within its rounding on this case."""
 
     def fits(args, expected, got):
+        if _outside_float32(args):
+            return True
         g, e = _numbers(got), _numbers(expected)
         if g is None or e is None or g.size != e.size or not np.isfinite(g).all():
             return False
@@ -148,9 +157,16 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
         return error <= FLOAT32_OPS * eps * max(float(scale), 1.0)
 
     def words(args, expected, got):
+        outside = _outside_float32(args)
         special = spec.float32_words(args, expected, got) if spec.float32_words else None
-        if special:
+        if special and outside is None:
             return special
+        if outside is not None:
+            return (
+                f": {num(outside)} lies outside float32's range (its smallest normal number "
+                f"is {F32.tiny:.3g}, its largest {F32.max:.3g}): in float32 it becomes 0 or "
+                "infinity. Compute in float64 (plain Python floats or np.float64)"
+            )
         name, eps = precision_of(got)
         digits = 7 if name == "float32" else 3
         return (
@@ -160,6 +176,22 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
         )
 
     return Mistake("float32", words, fits=fits, only_whole=True)
+
+
+F32 = np.finfo(np.float32)
+
+
+def _outside_float32(args) -> float | None:
+    """A number of the case that float32 cannot hold (it would become 0 or inf), or None."""
+    for a in args:
+        x = _numbers(a)
+        if x is None or x.dtype == object:
+            continue
+        x = np.abs(x[np.isfinite(x)])
+        bad = x[(x > F32.max) | ((x > 0) & (x < F32.tiny))]
+        if bad.size:
+            return float(bad.ravel()[0])
+    return None
 
 
 def _nan_words(args, expected, got) -> str | None:
@@ -197,7 +229,10 @@ def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
     """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
     if m.fits is not None:  # a description of failures: a passing case neither fits nor not
         return bool(m.fits(r.args, r.expected, r.got)) if not r.ok else None
-    value = m.gives(*copies(r.args))
+    try:
+        value = m.gives(*copies(r.args))
+    except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
+        return None
     if value is None:
         return None
     return spec.match(r.got, value, r.args) if spec.match is not None else near(value, r.got)

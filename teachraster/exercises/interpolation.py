@@ -217,6 +217,13 @@ def persp_float32(args) -> float:
     return float(np.abs(f).max()) * 4
 
 
+def persp_float32_words(args, expected, got) -> str:
+    return (
+        f"; {_right(expected, got)}: the difference is about float32's rounding (float32 keeps "
+        "about 7 significant digits): did you compute in float32? Compute in float64"
+    )
+
+
 def _draw_persp(ax, case, got):
     from .drawing import draw_bars
 
@@ -233,5 +240,6 @@ def _draw_persp(ax, case, got):
 PERSPECTIVE = Exercise(
     "perspective", perspective_cases, as_number, lambda g, e, a: close(g, e),
     explain_perspective, _persp_rule, PERSPECTIVE_MISTAKES, float32=persp_float32,
+    float32_words=persp_float32_words,
     answers=(PackageAnswer(perspective_weights),), draw=_draw_persp,
 )  # fmt: skip

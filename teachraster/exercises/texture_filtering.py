@@ -75,9 +75,9 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
     last texel centres at u = 0 and 1 (x = u·(W − 1)); ``floor="trunc"`` finds the texel to the
     left with int(); ``swap`` gives the left texel the weight of the right one; ``wrap_as``
-    wraps with another mode whatever the case says; ``clamp`` "uv" clamps (u, v) to [0, 1] and
-    "x" clamps x, y to the texels' centres before anything else; ``transpose`` swaps the
-    texture's rows and columns.
+    wraps with another mode whatever the case says (clamping x and y to the texel centres
+    first is the same as ``wrap_as="clamp"``); ``clamp="uv"`` clamps (u, v) to [0, 1] first;
+    ``transpose`` swaps the texture's rows and columns.
     """
     tex = np.asarray(texture, dtype=float)
     if transpose:
@@ -86,8 +86,6 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     centre, span = ORIGINS[origin]
     u, v = np.clip(uv, 0.0, 1.0) if clamp == "uv" else np.asarray(uv, dtype=float)
     x, y = u * (w + span) - centre, v * (h + span) - centre
-    if clamp == "x":
-        x, y = np.clip(x, 0, w - 1), np.clip(y, 0, h - 1)
     x0, y0 = (np.trunc if floor == "trunc" else np.floor)(np.array([x, y]))
     fx, fy = x - x0, y - y0
     if swap:
@@ -226,9 +224,6 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
         Slip("clamped (u, v) first", "you clamped (u, v) to [0, 1] first: with wrap 'repeat' a "
              "coordinate outside [0, 1] tiles, and near the border the texels beyond wrap "
              "around", "uv"),
-        Slip("clamped x first", "you clamped x and y to the texel centres [0, W − 1] before "
-             "finding the texels: the wrap mode decides the texels beyond the border (with "
-             "'repeat' they come from the other side)", "x"),
     ],
     "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
                        f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
