@@ -107,13 +107,17 @@ def waits_for_an_event(*args):
     threading.Event().wait()
 
 
-def recursion_catching_everything(*args, depth=0):
-    """Each level catches the interrupt and recurses again: no exception ever unwinds it."""
-    while True:
+def recursion_catching_everything(*args, _until=None):
+    """Each level catches the interrupt and recurses again: no exception ever unwinds it, so
+    the checker must abandon it. (It gives up by itself 8 s after it began, so that an abandoned
+    one does not spin for the rest of the test session.)"""
+    until = time.monotonic() + 8 if _until is None else _until
+    while time.monotonic() < until:
         try:
-            recursion_catching_everything(*args, depth=depth + 1)
+            recursion_catching_everything(*args, _until=until)
         except BaseException:
             pass
+    return False
 
 
 #: Loops that compute (stopped by the CPU limit).

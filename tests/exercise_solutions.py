@@ -566,7 +566,7 @@ def classify_loose(xy, x0, y0, size):
 
 MISTAKES.update(
     {
-        "depth by truncation": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "truncation"),
+        "depth by truncation": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "truncates"),
         "depth scaled by 2^bits": (
             "depth_to_unorm",
             lambda z, b: round(z * 2**b),

@@ -28,7 +28,15 @@ import sys
 import threading
 import time
 
-from .interrupt import TICK, CaseInterrupt, _busy, _ThreadInterrupt, escapes, send_async
+from .interrupt import (
+    TICK,
+    CaseInterrupt,
+    _busy,
+    _ThreadInterrupt,
+    drain_async,
+    escapes,
+    send_async,
+)
 
 #: A case that has run ``wait`` seconds while computing less than this share of them waits.
 WAITING = 0.05
@@ -150,7 +158,7 @@ class Alarm:
             with self._lock:
                 self._done.set()
                 if mode == "watchdog":
-                    send_async(self._thread_id, None)  # drop an interrupt not yet delivered
+                    drain_async()  # drop an interrupt not yet delivered
         if mode == "signal":
             # None: a handler not installed from Python, which cannot be put back
             signal.signal(signal.SIGALRM, self._previous or signal.SIG_DFL)
@@ -202,6 +210,7 @@ class Alarm:
             while (why := self.due()) is None:
                 if self._done.wait(self._next_look()):
                     return
+            last = None if why == "cpu" else self.cpu()
             while True:
                 with self._lock:
                     if self._done.is_set():
@@ -209,8 +218,14 @@ class Alarm:
                     if not self.fired:
                         self.why, self.fired_at = why, time.perf_counter()
                     self.fired = True
-                    self.fires += 1
-                    self._send()
+                    now = self.cpu()
+                    # an asynchronous exception reaches a thread only while it runs Python: one
+                    # left pending on a thread blocked in a call keeps every other thread's
+                    # interpreter loop on its slow path, so a blocked thread is not sent one
+                    if self.mode == "signal" or last is None or now > last:
+                        self.fires += 1
+                        self._send()
+                    last = now
                 if self._done.wait(TICK):
                     return
 

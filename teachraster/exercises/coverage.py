@@ -89,11 +89,11 @@ def covered(xy, points, owns=TOP_LEFT, winding: str = "both", vertices: str = "s
     nothing); ``vertices`` "snapped" (to 1/256 px, the rule), "rounded" (to whole pixels),
     "truncated" (int()) or "exact" (as given, not snapped).
 
-    >>> xy = np.array([[0.0, 0], [4, 0], [0, 4]])
+    >>> xy = np.array([[0.0, 0], [4, 0], [0, 4]])   # on its top, left and right edge:
     >>> covered(xy, np.array([[1.0, 0], [0, 1], [2, 2]])).tolist()
-    [True, True, True]
-    >>> covered(xy, np.array([[2.0, 2]]), owns=frozenset()).tolist()
-    [False]
+    [True, True, False]
+    >>> covered(xy, np.array([[1.0, 0], [2, 2]]), owns=frozenset(KINDS)).tolist()
+    [True, True]
     """
     points = np.asarray(points, dtype=float).reshape(-1, 2)
     return _apply(_edge_data(np.asarray(xy, dtype=float), points, vertices), owns, winding)

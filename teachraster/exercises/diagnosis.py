@@ -140,33 +140,36 @@ def precision_of(got) -> tuple[str, float]:
     return "float32", FLOAT32_EPS
 
 
+def _within_rounding(spec: Exercise, args, expected, got) -> bool:
+    """The answer is off by no more than float32 (float16) rounding of this case."""
+    g, e = _numbers(got), _numbers(expected)
+    if g is None or e is None or g.size != e.size or not np.isfinite(g).all():
+        return False
+    error = float(np.max(np.abs(g.ravel() - e.ravel()), initial=0.0))
+    _, eps = precision_of(got)
+    scale = spec.float32(args) if spec.float32 is not None else None
+    if scale is None:
+        scale = float(np.max(np.abs(e), initial=0.0))
+    return error <= FLOAT32_OPS * eps * max(float(scale), 1.0)
+
+
 def low_precision_mistake(spec: Exercise) -> Mistake:
-    """float32 (or float16) named only when the error is within its rounding on this case."""
+    """float32 (or float16) named only when the error is within its rounding on this case, or
+    the case holds a number float32 cannot hold (1e-300 becomes 0)."""
 
     def fits(args, expected, got):
-        if _outside_float32(args):
-            return True
-        g, e = _numbers(got), _numbers(expected)
-        if g is None or e is None or g.size != e.size or not np.isfinite(g).all():
-            return False
-        error = float(np.max(np.abs(g.ravel() - e.ravel()), initial=0.0))
-        _, eps = precision_of(got)
-        scale = spec.float32(args) if spec.float32 is not None else None
-        if scale is None:
-            scale = float(np.max(np.abs(e), initial=0.0))
-        return error <= FLOAT32_OPS * eps * max(float(scale), 1.0)
+        return _within_rounding(spec, args, expected, got) or _outside_float32(args) is not None
 
     def words(args, expected, got):
-        outside = _outside_float32(args)
-        special = spec.float32_words(args, expected, got) if spec.float32_words else None
-        if special and outside is None:
-            return special
-        if outside is not None:
+        if not _within_rounding(spec, args, expected, got):
             return (
-                f": {num(outside)} lies outside float32's range (its smallest normal number "
-                f"is {F32.tiny:.3g}, its largest {F32.max:.3g}): in float32 it becomes 0 or "
-                "infinity. Compute in float64 (plain Python floats or np.float64)"
+                f": {num(_outside_float32(args))} lies outside float32's range (its smallest "
+                f"normal number is {F32.tiny:.3g}, its largest {F32.max:.3g}): in float32 it "
+                "becomes 0 or infinity. Compute in float64 (plain Python floats or np.float64)"
             )
+        special = spec.float32_words(args, expected, got) if spec.float32_words else None
+        if special:
+            return special
         name, eps = precision_of(got)
         digits = 7 if name == "float32" else 3
         return (

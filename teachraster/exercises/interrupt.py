@@ -154,3 +154,26 @@ def _make_async_exc():
 
 #: ``send_async(thread_id, exc)``, or None where Python offers no asynchronous exceptions.
 send_async = _make_async_exc()
+
+
+class _Drained(BaseException):
+    """Replaces an interrupt not yet delivered, to be caught at once (:func:`drain_async`)."""
+
+
+def drain_async() -> None:
+    """Drop an asynchronous exception pending on this thread, and the flag it sets.
+
+    CPython keeps one flag for the whole interpreter while any thread has an exception
+    pending, and clears it only when that thread raises it: ``send_async(thread, None)``
+    would leave it set (every thread's interpreter loop then takes its slow path for good).
+    So the pending interrupt is replaced by :class:`_Drained`, raised here at the next
+    backward jump of this loop, and caught.
+    """
+    if send_async is None:
+        return
+    send_async(threading.get_ident(), _Drained)
+    try:
+        for _ in range(1_000_000):
+            pass
+    except _Drained:
+        pass
