@@ -559,7 +559,10 @@ DIFFERENT = {
     "all four corners": ("classify_block", lambda *a: _classify(*a, corner_trick=False)),
     "half-plane clipping against the diamond": ("line_pixels", line_half_planes),
     "float32 over": ("over", over_float32),
-    "numpy over_premultiplied": ("over_premultiplied", lambda s, d: np.asarray(s) + np.asarray(d) * (1 - s[3])),  # fmt: skip
+    "numpy over_premultiplied": (
+        "over_premultiplied",
+        lambda s, d: np.asarray(s) + np.asarray(d) * (1 - s[3]),
+    ),  # fmt: skip
 }
 
 #: Wrong: (exercise, function, words the FIRST explanation must contain).
@@ -590,10 +593,18 @@ WRONG = {
     "fill with rounded vertices": ("fill", fill_vertices_rounded, "rounded the vertices"),
     "fill with int() vertices": ("fill", fill_vertices_int, "truncated the vertices"),
     "fill returns zeros": ("fill", lambda xy, w, h: np.zeros((h, w)), "never covers anything"),
-    "fill, one winding": ("fill", _fill_from(_covers_with(_owns, orient=False), 0.5), "both windings"),  # fmt: skip
+    "fill, one winding": (
+        "fill",
+        _fill_from(_covers_with(_owns, orient=False), 0.5),
+        "both windings",
+    ),  # fmt: skip
     # split_point
     "split with u and v swapped": ("split_point", split_uv_swapped, "other way round"),
-    "split without u1": ("split_point", lambda v: CORRECT["split_point"](v) - v[0][0], "did you add u1?"),  # fmt: skip
+    "split without u1": (
+        "split_point",
+        lambda v: CORRECT["split_point"](v) - v[0][0],
+        "did you add u1?",
+    ),  # fmt: skip
     "split on the short edge": ("split_point", split_short_edge, "u3 − u1, not u2 − u1"),
     "split with the inverse fraction": ("split_point", split_inverse, "not its inverse"),
     "split returns 0": ("split_point", returns(0), "returns 0 on every case"),
@@ -605,7 +616,11 @@ WRONG = {
     "barycentric over |area|": ("barycentric", bary_over_abs_area, "not by its absolute value"),
     "barycentric returns zeros": ("barycentric", returns([0.0, 0.0, 0.0]), "on every case"),
     # perspective
-    "perspective affine": ("perspective", lambda lam, w, f: float(np.dot(lam, f)), "the affine Σλf"),  # fmt: skip
+    "perspective affine": (
+        "perspective",
+        lambda lam, w, f: float(np.dot(lam, f)),
+        "the affine Σλf",
+    ),  # fmt: skip
     "perspective numerator only": ("perspective", persp_numerator, "divide it by Σλ/w"),
     "perspective times w": ("perspective", persp_times_w, "multiplied by w"),
     "perspective in float32": ("perspective", persp_float32, "float32"),
@@ -614,7 +629,11 @@ WRONG = {
     "depth test <=": ("depth_test", lambda a, b: a <= b, "use <, not <="),
     "depth test >": ("depth_test", lambda a, b: a > b, "other way round"),
     "depth test returns True": ("depth_test", returns(True), "returns True on every case"),
-    "depth test in float32": ("depth_test", lambda a, b: np.float32(a) < np.float32(b), "float32"),  # fmt: skip
+    "depth test in float32": (
+        "depth_test",
+        lambda a, b: np.float32(a) < np.float32(b),
+        "float32",
+    ),  # fmt: skip
     # clip_near
     "clip after the divide": ("clip_near", None, "before dividing by w"),
     "clip with t from z": ("clip_near", clip_t_from_z, "t from z alone"),
@@ -630,12 +649,24 @@ WRONG = {
     "unorm rounded up": ("depth_to_unorm", unorm_ceil, "rounded up"),
     "unorm returns 0": ("depth_to_unorm", returns(0), "returns 0 on every case"),
     # coverage_fraction
-    "coverage, offsets from the centre": ("coverage_fraction", _coverage_with(shift=(0.5, 0.5)), "not its centre"),  # fmt: skip
+    "coverage, offsets from the centre": (
+        "coverage_fraction",
+        _coverage_with(shift=(0.5, 0.5)),
+        "not its centre",
+    ),  # fmt: skip
     "coverage, (col, row)": ("coverage_fraction", coverage_row_col, "pixel is (row, col)"),
     "coverage without snapping": ("coverage_fraction", _coverage_with(snap=False), "unsnapped"),
     "coverage as a count": ("coverage_fraction", coverage_count, "number of samples covered"),
-    "coverage at the centre": ("coverage_fraction", _coverage_with(centre_only=True), "pixel centre only"),  # fmt: skip
-    "coverage, E >= 0": ("coverage_fraction", _coverage_with(tie=lambda a, b: True), "every centre on an edge"),  # fmt: skip
+    "coverage at the centre": (
+        "coverage_fraction",
+        _coverage_with(centre_only=True),
+        "pixel centre only",
+    ),  # fmt: skip
+    "coverage, E >= 0": (
+        "coverage_fraction",
+        _coverage_with(tie=lambda a, b: True),
+        "every centre on an edge",
+    ),  # fmt: skip
     "coverage, one winding": ("coverage_fraction", _coverage_with(orient=False), "both windings"),
     "coverage returns 0": ("coverage_fraction", returns(0), "returns 0 on every case"),
     # resolve
@@ -645,7 +676,11 @@ WRONG = {
     "resolve in RGBA": ("resolve", resolve_rgba, "3 channels"),
     "resolve returns black": ("resolve", returns([0.0, 0.0, 0.0]), "on every case"),
     # mip_level
-    "λ in texture units, largest component": ("mip_level", level_units_and_max_component, "texture units"),  # fmt: skip
+    "λ in texture units, largest component": (
+        "mip_level",
+        level_units_and_max_component,
+        "texture units",
+    ),  # fmt: skip
     "λ with W and H swapped": ("mip_level", level_w_h_swapped, "scaled u by H and v by W"),
     "λ of the squared length": ("mip_level", level_squared, "squared length"),
     "λ of the geometric mean": ("mip_level", level_geometric, "geometric mean"),
@@ -653,7 +688,11 @@ WRONG = {
     "λ returns 0": ("mip_level", returns(0), "returns 0 on every case"),
     # bilinear
     "bilinear without −½": ("bilinear", _bilinear_with(centre=0.0), "texel corners"),
-    "bilinear, weights reversed": ("bilinear", _bilinear_with(swap=True), "the weight of the right"),  # fmt: skip
+    "bilinear, weights reversed": (
+        "bilinear",
+        _bilinear_with(swap=True),
+        "the weight of the right",
+    ),  # fmt: skip
     "bilinear, always clamp": ("bilinear", _bilinear_with(wrap_as="clamp"), "tiles the texture"),
     "bilinear transposed": ("bilinear", _bilinear_with(transpose=True), "texture[row, col]"),
     "bilinear clamping first": ("bilinear", _bilinear_with(clamp_x=True), "you clamped"),
@@ -665,11 +704,19 @@ WRONG = {
     "trilinear, lower level only": ("trilinear", trilinear_lower_only, "alone"),
     # classify_block
     "blocks by their outer corners": ("classify_block", None, "outer corners"),
-    "blocks rejected by corners outside": ("classify_block", None, "the test is per edge"),  # fmt: skip
+    "blocks rejected by corners outside": (
+        "classify_block",
+        None,
+        "the test is per edge",
+    ),  # fmt: skip
     "blocks by two corners": ("classify_block", classify_two_corners, "only 2 of the 4"),
     "blocks without the top-left rule": ("classify_block", classify_strict, "top-left rule"),
     "blocks of one winding": ("classify_block", classify_one_winding, "both windings"),
-    "blocks always partial": ("classify_block", returns("partial"), "returns 'partial' on every case"),  # fmt: skip
+    "blocks always partial": (
+        "classify_block",
+        returns("partial"),
+        "returns 'partial' on every case",
+    ),  # fmt: skip
     # line_pixels
     "line without ε": ("line_pixels", _line_with(0, 0), "did not perturb"),
     "line with +ε²": ("line_pixels", _line_with(-EPS, EPS * EPS), "+ε²"),
@@ -683,7 +730,11 @@ WRONG = {
     "over returns dst": ("over", lambda s, d: d, "destination"),
     # over_premultiplied
     "premultiplied twice": ("over_premultiplied", premultiplied_twice_all, "premultiplied already"),
-    "premultiplied without (1 − a)": ("over_premultiplied", premultiplied_no_one_minus, "not scaled by (1 − α)"),  # fmt: skip
+    "premultiplied without (1 − a)": (
+        "over_premultiplied",
+        premultiplied_no_one_minus,
+        "not scaled by (1 − α)",
+    ),  # fmt: skip
 }
 
 
@@ -710,9 +761,15 @@ _fill_in_from_exercise_solutions()
 #: Two mistakes at once: (exercise, function, words each in the summary).
 TWO_MISTAKES = {
     "bilinear without −½, always clamped": (
-        "bilinear", _bilinear_with(centre=0.0, wrap_as="clamp"), ("texel corners", "tiles the texture")),  # fmt: skip
+        "bilinear",
+        _bilinear_with(centre=0.0, wrap_as="clamp"),
+        ("texel corners", "tiles the texture"),
+    ),  # fmt: skip
     "λ in texture units, largest component": (
-        "mip_level", level_units_and_max_component, ("texture units", "largest component")),  # fmt: skip
+        "mip_level",
+        level_units_and_max_component,
+        ("texture units", "largest component"),
+    ),  # fmt: skip
 }
 
 
@@ -724,9 +781,12 @@ def _package():
         "mip_level": lambda ddx, ddy, size: tr.mip_level(ddx, ddy, size),
         "bilinear": lambda texture, uv, wrap: tr.sample(texture, [uv], "bilinear", wrap)[0],
         "trilinear": lambda pyramid, uv, lod, wrap="repeat": tr.sample(
-            pyramid, [uv], "trilinear", wrap, lod=[lod])[0],  # fmt: skip
+            pyramid, [uv], "trilinear", wrap, lod=[lod]
+        )[0],  # fmt: skip
         "over": lambda src, dst: tr.blend_equation(src, dst),
-        "over_premultiplied": lambda src, dst: tr.blend_equation(src, dst, "ONE", "ONE_MINUS_SRC_ALPHA"),  # fmt: skip
+        "over_premultiplied": lambda src, dst: tr.blend_equation(
+            src, dst, "ONE", "ONE_MINUS_SRC_ALPHA"
+        ),  # fmt: skip
         "fill": lambda xy, w, h: tr.rasterize(tr.Triangle(xy), w, h).coverage,
         "split_point": lambda v: tr.split_point(v),
     }

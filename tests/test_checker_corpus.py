@@ -61,7 +61,10 @@ def test_a_package_function_as_a_tool_counts():
 
     def barycentric(xy, p):
         area = tr.edge_function(xy[0], xy[1], xy[2])
-        return np.array([tr.edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], p) for k in range(3)]) / area
+        return (
+            np.array([tr.edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], p) for k in range(3)])
+            / area
+        )
 
     assert ex.check("barycentric", barycentric, budget=BUDGET).passed
 

@@ -19,20 +19,26 @@ pytest.importorskip("ipykernel")
 
 SETUP = "import time\nfrom teachraster import exercises as ex"
 
-LOOP = inspect.getsource(forever) + """
+LOOP = (
+    inspect.getsource(forever)
+    + """
 start, cpu = time.perf_counter(), time.process_time()
 report = ex.check("depth_test", forever)  # the default budget
 took, cpu = time.perf_counter() - start, time.process_time() - cpu
 print(json.dumps({"took": took, "cpu": cpu, "kind": report.failures[0].kind, "text": str(report)}))
 """
+)
 
-LOOP_WITH_PICTURE = inspect.getsource(forever) + """
+LOOP_WITH_PICTURE = (
+    inspect.getsource(forever)
+    + """
 start, cpu = time.perf_counter(), time.process_time()
 report = ex.check("bilinear", forever)  # the default budget, then the picture (show does it)
 words = report.explain_pixel(15, 20)
 took, cpu = time.perf_counter() - start, time.process_time() - cpu
 print(json.dumps({"took": took, "cpu": cpu, "words": words}))
 """
+)
 
 SLEEP_AND_EXIT = """\
 def depth_test(incoming, stored):

@@ -43,7 +43,18 @@ def _nb(*cells) -> dict:
 
 
 def _code(source: str, **nbgrader) -> dict:
-    meta = {"nbgrader": {"grade_id": "x", "schema_version": 3, **nbgrader}} if nbgrader else {}
+    """A code cell; nbgrader flags as given, completed as nbgrader's metadata must be."""
+    full = {
+        "grade": False,
+        "solution": False,
+        "locked": False,
+        "grade_id": "x",
+        "schema_version": 3,
+    }
+    full.update(nbgrader)
+    if full["grade"]:
+        full.setdefault("points", 1)
+    meta = {"nbgrader": full} if nbgrader else {}
     return {"cell_type": "code", "source": source, "metadata": meta, "outputs": [],
             "execution_count": None}  # fmt: skip
 
@@ -299,7 +310,7 @@ def test_marker_errors_name_the_line():
 
 def test_student_version_clears_as_nbgrader_does():
     nb = _nb(
-        _code("def f():\n    return 42", solution=True),  # a solution cell without markers
+        _code("def f():\n    return 42", solution=True, grade_id="f"),  # no markers: all solution
         {
             "cell_type": "markdown",
             "metadata": {},
@@ -457,3 +468,100 @@ def test_nbgrader_refuses_student_versions_and_malformed_markers(tmp_path, capsy
     assert _status(["nbgrader", tmp_path / "c", other]) == 2
     assert "*.ipynb" in capsys.readouterr().err
     assert not (tmp_path / "c").exists()
+
+
+def test_a_misspelt_but_consistent_marker_pair_is_an_error_never_a_leak(tmp_path, capsys):
+    for spelling in ("SOLUTON", "SOLUTIONS", "SOLUTION_"):
+        src = f"def f():\n    ### BEGIN {spelling}\n    return 42\n    ### END {spelling}\n"
+        with pytest.raises(NotebookError, match="spelt '### BEGIN SOLUTION'"):
+            student_notebook(_nb(_code(src, solution=True)))
+    src = "x = 1\n### BEGN SOLUTION\nsecret = 42\n### ED SOLUTION\n"
+    with pytest.raises(NotebookError, match="line 2"):
+        student_notebook(_nb(_code(src, solution=True)))
+    # comments that merely mention the words stay comments
+    fine = "# end of solution loop\n# begin drawing\n### BEGIN SOLUTION\nx = 1\n### END SOLUTION"
+    student_notebook(_nb(_code(fine, solution=True)))
+
+
+@pytest.mark.parametrize(
+    "meta, words",
+    [
+        (
+            {
+                "grade": True,
+                "solution": False,
+                "locked": True,
+                "schema_version": 3,
+                "grade_id": "c",
+            },
+            "without points",
+        ),  # fmt: skip
+        (
+            {"grade": False, "solution": True, "locked": False, "schema_version": 3},
+            "without a grade_id",
+        ),  # fmt: skip
+        (
+            {
+                "grade": False,
+                "solution": True,
+                "locked": False,
+                "schema_version": 3,
+                "grade_id": "",
+            },
+            "without a grade_id",
+        ),  # fmt: skip
+        (
+            {"grade": False, "solution": True, "schema_version": 3, "grade_id": "a"},
+            "without locked",
+        ),
+        (
+            {
+                "grade": False,
+                "solution": True,
+                "locked": False,
+                "schema_version": 1,
+                "grade_id": "a",
+            },
+            "schema version 1",
+        ),  # fmt: skip
+        (
+            {
+                "grade": False,
+                "solution": False,
+                "locked": True,
+                "task": True,
+                "schema_version": 3,
+                "grade_id": "t",
+            },
+            "must be markdown",
+        ),  # fmt: skip
+    ],
+)
+def test_student_version_refuses_what_nbgrader_refuses(meta, words):
+    cell = {"cell_type": "code", "source": "x = 1", "metadata": {"nbgrader": meta},
+            "outputs": [], "execution_count": None}  # fmt: skip
+    with pytest.raises(NotebookError, match=words):
+        student_notebook(_nb(cell))
+
+
+def test_student_version_refuses_a_duplicate_grade_id_and_a_half_graded_markdown_cell():
+    with pytest.raises(NotebookError, match="duplicate grade id"):
+        student_notebook(_nb(_code("x = 1", locked=True), _code("y = 2", locked=True)))
+    md = {"cell_type": "markdown", "source": "Why?", "metadata": {"nbgrader": {
+        "grade": True, "solution": False, "locked": False, "points": 1, "grade_id": "why",
+        "schema_version": 3}}}  # fmt: skip
+    with pytest.raises(NotebookError, match="both a grade and a solution"):
+        student_notebook(_nb(md))
+
+
+def test_the_attachments_of_solution_cells_are_stripped():
+    answer = {"image.png": {"image/png": "iVBORw0KGgo="}}
+    md = {"cell_type": "markdown", "source": "Why?\n### BEGIN SOLUTION\n![](attachment:image.png)\n"
+          "### END SOLUTION", "metadata": {"nbgrader": {
+              "grade": True, "solution": True, "locked": False, "points": 1, "grade_id": "why",
+              "schema_version": 3}}, "attachments": answer}  # fmt: skip
+    task = {"cell_type": "markdown", "source": "![](attachment:figure.png)", "metadata": {},
+            "attachments": {"figure.png": {"image/png": "iVBORw0KGgo="}}}  # fmt: skip
+    cells = student_notebook(_nb(md, task))["cells"]
+    assert "attachments" not in cells[0] and "attachment:" not in cells[0]["source"]
+    assert cells[1]["attachments"]  # a figure of the question stays

@@ -372,8 +372,27 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     return (1 - t) * a + t * b
 
 
+#: How a mistaken trilinear filters one level: a bilinear mistake (of 7.2) as plain_bilinear's knob.
+LEVEL_FILTERS = {
+    "corners": {"origin": "corners"},
+    "clamp": {"wrap_as": "clamp"},
+    "swapped": {"swap": True},
+    "transposed": {"transpose": True},
+}
+
+
 def _filter(level, uv, wrap, texels):
-    return (_nearest if texels == "nearest" else expected_bilinear)(level, uv, wrap)
+    if texels == "nearest":
+        return _nearest(level, uv, wrap)
+    if texels in LEVEL_FILTERS:
+        return plain_bilinear(level, uv, wrap, **LEVEL_FILTERS[texels])
+    return expected_bilinear(level, uv, wrap)
+
+
+_BILINEAR_FIRST = (
+    ": each level is filtered with that mistake of bilinear (7.2); get bilinear's check to "
+    "pass first, then build trilinear on it"
+)
 
 
 def _tri_words(text):
@@ -406,8 +425,18 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
     ],
-    "texels": [Slip("nearest texels", "you took the nearest texel of each level; trilinear "
-                    "filters each level bilinearly, with its own size", "nearest")],
+    "texels": [
+        Slip("nearest texels", "you took the nearest texel of each level; trilinear filters "
+             "each level bilinearly, with its own size", "nearest"),
+        Slip("bilinear: texel corners", "the levels are sampled at texel corners (x = u·W, "
+             "not u·W − ½)" + _BILINEAR_FIRST, "corners"),
+        Slip("bilinear: always clamp", "the levels are clamped at the border whatever the wrap "
+             "mode" + _BILINEAR_FIRST, "clamp"),
+        Slip("bilinear: weights swapped", "within each level the texel weights are swapped"
+             + _BILINEAR_FIRST, "swapped"),
+        Slip("bilinear: rows and columns swapped", "each level's rows and columns are swapped"
+             + _BILINEAR_FIRST, "transposed"),
+    ],
 })  # fmt: skip
 
 
