@@ -385,7 +385,10 @@ def trilinear_ceil(pyramid, uv, lod, wrap="repeat"):
     return a + (lam - lo) * (b - a)
 
 
-def _classify(xy, x0, y0, size, corner_trick=True):
+def _classify(xy, x0, y0, size, corner_trick=True, points=None, owns=None):
+    """The corner trick, or (``corner_trick=False``) every one of ``points`` (default: the four
+    extreme centres) tested; ``owns(a, b)`` decides a point on an edge (default: top-left)."""
+    owns = owns or _owns
     v = [[Fraction(float(c)) for c in p] for p in xy]
     area = edge_function(v[0], v[1], v[2])
     if area == 0:
@@ -400,14 +403,14 @@ def _classify(xy, x0, y0, size, corner_trick=True):
 
         def ok(p, a=a, b=b):
             e = edge_function(a, b, p)
-            return e > 0 or (e == 0 and _owns(a, b))
+            return e > 0 or (e == 0 and owns(a, b))
 
         if corner_trick:  # E grows with y when b.x > a.x, with x when b.y < a.y
             hi = (xs[1] if b[1] < a[1] else xs[0], ys[1] if b[0] > a[0] else ys[0])
             lo = (xs[0] if b[1] < a[1] else xs[1], ys[0] if b[0] > a[0] else ys[1])
             best, worst = ok(hi), ok(lo)
         else:
-            passes = [ok((x, y)) for x in xs for y in ys]
+            passes = [ok(p) for p in (points or [(x, y) for x in xs for y in ys])]
             best, worst = any(passes), all(passes)
         if not best:
             return "rejected"
@@ -478,12 +481,20 @@ def _level_with(rho, log=math.log2):
     return fn
 
 
-def _bilinear_with(centre=0.5, floor=math.floor, wrap_as=None, swap=False):
+def _bilinear_with(
+    centre=0.5, floor=math.floor, wrap_as=None, swap=False, clamp_x=False, transpose=False
+):
+    """A bilinear filter with a student's mistakes: ``clamp_x`` clamps x and y to the texel
+    centres first, ``transpose`` swaps the texture's rows and columns."""
+
     def fn(texture, uv, wrap):
         wrap = wrap_as or wrap
         tex = np.asarray(texture, dtype=float)
+        tex = np.swapaxes(tex, 0, 1) if transpose else tex
         h, w = tex.shape[:2]
         x, y = uv[0] * w - centre, uv[1] * h - centre
+        if clamp_x:
+            x, y = min(max(x, 0), w - 1), min(max(y, 0), h - 1)
         i, j = floor(y), floor(x)
         fy, fx = y - i, x - j
         if swap:

@@ -14,19 +14,19 @@ from fractions import Fraction
 import numpy as np
 from exercise_solutions import (
     CORRECT,
+    _bilinear_with,
     _classify,
     _coverage_with,
     _covers_with,
     _fill_from,
     _owns,
     _snap_exact,
-    _wrap,
     bilinear,
     covers,
     edge_function,
     trilinear,
 )
-from lines_blending_solutions import EPS, HALF, _meets
+from lines_blending_solutions import EPS, line_with
 
 # == edge_function ===============================================================================
 
@@ -372,29 +372,6 @@ def bilinear_float32(texture, uv, wrap):
     return np.asarray(bilinear(np.asarray(texture, dtype=np.float32), uv, wrap), dtype=np.float32)
 
 
-def _bilinear_with(centre=0.5, wrap_as=None, clamp_x=False, transpose=False, swap=False):
-    def fn(texture, uv, wrap):
-        tex = np.asarray(texture, dtype=float)
-        if transpose:
-            tex = np.swapaxes(tex, 0, 1)
-        mode = wrap_as or wrap
-        h, w = tex.shape[:2]
-        x, y = uv[0] * w - centre, uv[1] * h - centre
-        if clamp_x:
-            x, y = min(max(x, 0), w - 1), min(max(y, 0), h - 1)
-        i, j = math.floor(y), math.floor(x)
-        fy, fx = y - i, x - j
-        if swap:
-            fx, fy = 1 - fx, 1 - fy
-        out = 0.0
-        for di, wy in ((0, 1 - fy), (1, fy)):
-            for dj, wx in ((0, 1 - fx), (1, fx)):
-                out = out + wy * wx * tex[_wrap(i + di, h, mode), _wrap(j + dj, w, mode)]
-        return out
-
-    return fn
-
-
 def trilinear_explicit(pyramid, uv, lod, wrap="repeat"):
     q = len(pyramid) - 1
     if lod <= 0:
@@ -429,41 +406,14 @@ def trilinear_lower_only(pyramid, uv, lod, wrap="repeat"):
 
 def classify_two_corners(xy, x0, y0, size):
     """Tests two opposite extreme centres only."""
-    v = [[Fraction(float(c)) for c in p] for p in xy]
-    area = edge_function(v[0], v[1], v[2])
-    if area == 0:
-        return "rejected"
-    if area < 0:
-        v = [v[0], v[2], v[1]]
-    pts = [(x0 + Fraction(1, 2), y0 + Fraction(1, 2)),
-           (x0 + size - Fraction(1, 2), y0 + size - Fraction(1, 2))]  # fmt: skip
-    accepted = True
-    for k in range(3):
-        a, b = v[k], v[(k + 1) % 3]
-        ok = [(e := edge_function(a, b, p)) > 0 or (e == 0 and _owns(a, b)) for p in pts]
-        if not any(ok):
-            return "rejected"
-        accepted = accepted and all(ok)
-    return "accepted" if accepted else "partial"
+    half = Fraction(1, 2)
+    pts = [(x0 + half, y0 + half), (x0 + size - half, y0 + size - half)]
+    return _classify(xy, x0, y0, size, corner_trick=False, points=pts)
 
 
 def classify_strict(xy, x0, y0, size):
     """E > 0 on every edge: no top-left rule."""
-    v = [[Fraction(float(c)) for c in p] for p in xy]
-    area = edge_function(v[0], v[1], v[2])
-    if area == 0:
-        return "rejected"
-    if area < 0:
-        v = [v[0], v[2], v[1]]
-    xs = (x0 + Fraction(1, 2), x0 + size - Fraction(1, 2))
-    ys = (y0 + Fraction(1, 2), y0 + size - Fraction(1, 2))
-    verdicts = []
-    for k in range(3):
-        e = [edge_function(v[k], v[(k + 1) % 3], (x, y)) > 0 for x in xs for y in ys]
-        verdicts.append((any(e), all(e)))
-    if not all(best for best, _ in verdicts):
-        return "rejected"
-    return "accepted" if all(worst for _, worst in verdicts) else "partial"
+    return _classify(xy, x0, y0, size, corner_trick=False, owns=lambda a, b: False)
 
 
 def classify_one_winding(xy, x0, y0, size):
@@ -476,25 +426,10 @@ def classify_one_winding(xy, x0, y0, size):
 # == line_pixels ===================================================================================
 
 
-def _line_with(eps_x, eps_y, order="row col"):
-    def fn(p0, p1):
-        a = (Fraction(p0[0]) + eps_x, Fraction(p0[1]) + eps_y)
-        b = (Fraction(p1[0]) + eps_x, Fraction(p1[1]) + eps_y)
-        out = []
-        for row in range(int(min(a[1], b[1])) - 1, int(max(a[1], b[1])) + 2):
-            for col in range(int(min(a[0], b[0])) - 1, int(max(a[0], b[0])) + 2):
-                cx, cy = col + HALF, row + HALF
-                inside_end = abs(b[0] - cx) + abs(b[1] - cy) < HALF
-                if row >= 0 and col >= 0 and _meets(a, b, cx, cy) and not inside_end:
-                    out.append((row, col) if order == "row col" else (col, row))
-        return out
-
-    return fn
-
-
 def line_half_planes(p0, p1):
-    """The segment clipped against the diamond's four half-planes, in exact Fractions."""
-    return _line_with(-EPS, -EPS * EPS)(p0, p1)
+    """The segment clipped against the diamond's four half-planes, in exact Fractions (the
+    pixels in another order)."""
+    return line_with(-EPS, -EPS * EPS)(p0, p1)[::-1]
 
 
 # == over ========================================================================================
@@ -718,10 +653,10 @@ WRONG = {
         "returns 'partial' on every case",
     ),  # fmt: skip
     # line_pixels
-    "line without ε": ("line_pixels", _line_with(0, 0), "did not perturb"),
-    "line with +ε²": ("line_pixels", _line_with(-EPS, EPS * EPS), "+ε²"),
-    "line without ε² in y": ("line_pixels", _line_with(-EPS, 0), "left y as it is"),
-    "line in (col, row)": ("line_pixels", _line_with(-EPS, -EPS * EPS, "col row"), "(col, row)"),
+    "line without ε": ("line_pixels", line_with(0, 0), "did not perturb"),
+    "line with +ε²": ("line_pixels", line_with(-EPS, EPS * EPS), "+ε²"),
+    "line without ε² in y": ("line_pixels", line_with(-EPS, 0), "left y as it is"),
+    "line in (col, row)": ("line_pixels", line_with(-EPS, -EPS * EPS, "col row"), "(col, row)"),
     "line returns nothing": ("line_pixels", returns([]), "for every line"),
     # over
     "over, Porter-Duff alpha": ("over", None, "one factor pair"),
