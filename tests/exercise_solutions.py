@@ -213,15 +213,18 @@ MISTAKES = {
 
 
 # -- other correct solutions: a different algorithm, order or form must pass as well -----------
-def fill_vectorised(xy, width, height):
-    """Half-planes over the whole image at once, in exact integers (1/512-px units)."""
+def fill_vectorised(xy, width, height, centre=256, orient=True):
+    """Half-planes over the whole image at once, in exact integers (1/512-px units); a
+    student's mistakes: ``centre=0`` samples pixel corners, ``orient=False`` one winding."""
     v = np.rint(np.asarray(xy, dtype=float) * 512).astype(np.int64)
     area = edge_function(v[0], v[1], v[2])
     if area == 0:
         return np.zeros((height, width), dtype=bool)
+    if area < 0 and not orient:
+        return np.zeros((height, width), dtype=bool)
     if area < 0:
         v = v[[0, 2, 1]]
-    y, x = np.mgrid[0:height, 0:width] * 512 + 256
+    y, x = np.mgrid[0:height, 0:width] * 512 + centre
     out = np.ones((height, width), dtype=bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]

@@ -18,12 +18,12 @@ from exercise_solutions import (
     _classify,
     _coverage_with,
     _covers_with,
-    _fill_from,
     _owns,
     _snap_exact,
     bilinear,
     covers,
     edge_function,
+    fill_vectorised,
     trilinear,
 )
 from lines_blending_solutions import EPS, line_with
@@ -90,19 +90,19 @@ def _owns_bottom_left(a, b):
 
 
 def fill_vertices_rounded(xy, width, height):
-    return CORRECT["fill"](np.round(np.asarray(xy, dtype=float)), width, height)
+    return fill_vectorised(np.round(np.asarray(xy, dtype=float)), width, height)
 
 
 def fill_vertices_int(xy, width, height):
-    return CORRECT["fill"](np.trunc(np.asarray(xy, dtype=float)), width, height)
+    return fill_vectorised(np.trunc(np.asarray(xy, dtype=float)), width, height)
 
 
 def fill_transposed(xy, width, height):
-    return CORRECT["fill"](xy, width, height).T
+    return fill_vectorised(xy, width, height).T
 
 
 def fill_upside_down(xy, width, height):
-    return CORRECT["fill"](xy, width, height)[::-1]
+    return fill_vectorised(xy, width, height)[::-1]
 
 
 def covers_xy_swapped(xy, p):
@@ -473,7 +473,7 @@ DIFFERENT = {
     "shoelace edge function": ("edge_function", edge_shoelace),
     "np.cross edge function": ("edge_function", edge_cross_numpy),
     "sign-multiplied covers": ("covers", covers_sign_multiplied),
-    "vectorised fill": ("fill", CORRECT["fill"]),
+    "vectorised fill": ("fill", fill_vectorised),
     "np.interp split point": ("split_point", split_interp),
     "2×2 solve for barycentrics": ("barycentric", bary_solve),
     "CS148's α for perspective": ("perspective", persp_alpha),
@@ -522,7 +522,11 @@ WRONG = {
     "covers in float32": ("covers", _covers_with(_owns, dtype=np.float32), "float32"),
     "covers with x and y swapped": ("covers", covers_xy_swapped, "x and y are swapped"),
     # fill
-    "fill with centres at (j, i)": ("fill", _fill_from(covers, 0.0), "pixel corners"),
+    "fill with centres at (j, i)": (
+        "fill",
+        lambda xy, w, h: fill_vectorised(xy, w, h, 0),
+        "pixel corners",
+    ),  # fmt: skip
     "fill transposed": ("fill", fill_transposed, "transposed"),
     "fill upside down": ("fill", fill_upside_down, "upside down"),
     "fill with rounded vertices": ("fill", fill_vertices_rounded, "rounded the vertices"),
@@ -530,7 +534,7 @@ WRONG = {
     "fill returns zeros": ("fill", lambda xy, w, h: np.zeros((h, w)), "never covers anything"),
     "fill, one winding": (
         "fill",
-        _fill_from(_covers_with(_owns, orient=False), 0.5),
+        lambda xy, w, h: fill_vectorised(xy, w, h, orient=False),
         "both windings",
     ),  # fmt: skip
     # split_point
