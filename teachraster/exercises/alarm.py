@@ -31,8 +31,8 @@ import time
 from .interrupt import (
     TICK,
     CaseInterrupt,
-    _busy,
-    _ThreadInterrupt,
+    ThreadInterrupt,
+    busy,
     drain_async,
     escapes,
     send_async,
@@ -128,10 +128,10 @@ class Alarm:
         self._clock = cpu_clock()
         self._cpu_start = self._clock()
         self._cpu_now = 0.0
-        if getattr(_busy, "on", False):
+        if getattr(busy, "on", False):
             return  # a check inside a checked function: the outer alarm governs
-        _busy.on = True
-        _busy.alarm = self
+        busy.on = True
+        busy.alarm = self
         self.active = True
         in_main = threading.current_thread() is threading.main_thread()
         if in_main and hasattr(signal, "pthread_kill"):
@@ -152,8 +152,8 @@ class Alarm:
         mode, self.mode = self.mode, None
         if mode is None:
             return
-        _busy.on = False
-        _busy.alarm = None
+        busy.on = False
+        busy.alarm = None
         if mode in ("signal", "watchdog"):
             with self._lock:
                 self._done.set()
@@ -199,7 +199,7 @@ class Alarm:
         if self.mode == "signal":
             signal.pthread_kill(self._thread_id, signal.SIGALRM)
         else:
-            send_async(self._thread_id, _ThreadInterrupt)
+            send_async(self._thread_id, ThreadInterrupt)
 
     def _start_watchdog(self) -> None:
         self._lock = threading.Lock()

@@ -201,7 +201,7 @@ def owns_variants() -> list[frozenset]:
 
 
 # -- one wrong pixel, explained by the rules ------------------------------------------------------
-def _values(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
+def values_at(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
     """Edge functions at centre ``c``, signed so that inside is positive (exact)."""
     s = 1.0 if area2(xy) >= 0 else -1.0
     return np.array([s * float(edge_function(xy[k], xy[(k + 1) % 3], c)) for k in range(3)])
@@ -219,7 +219,7 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             None,
             "zero area",
         )
-    e = _values(xy, c)
+    e = values_at(xy, c)
     zeros = [k for k in range(3) if e[k] == 0]
     if (e < 0).any():
         k = int(np.argmin(e))
@@ -263,8 +263,8 @@ def example_pixel(case: CoverageCase, k: int, got: np.ndarray, expected: np.ndar
     centres = [np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5]) for i, j in wrong]
     if area2(xy) == 0:
         return tuple(wrong[0]), centres[0]
-    zeros = [int((_values(xy, c) == 0).sum()) for c in centres]
-    inside = [bool((_values(xy, c) > 0).all()) for c in centres]
+    zeros = [int((values_at(xy, c) == 0).sum()) for c in centres]
+    inside = [bool((values_at(xy, c) > 0).all()) for c in centres]
     n = zeros.index(1) if 1 in zeros else (inside.index(True) if True in inside else 0)
     return tuple(int(v) for v in wrong[n]), centres[n]
 

@@ -120,7 +120,7 @@ def _float32_fits(args, expected, got) -> bool:
         tol = 8 * FLOAT32_EPS * far * extent
         for i, j in np.argwhere(got[k] != expected[k]):
             c = np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5])
-            if np.abs(cov._values(xy, c)).min() > tol:
+            if np.abs(cov.values_at(xy, c)).min() > tol:
                 return False
     return True
 

@@ -43,7 +43,7 @@ class CaseInterrupt(BaseException):
     """
 
 
-class _ThreadInterrupt(CaseInterrupt):
+class ThreadInterrupt(CaseInterrupt):
     """The interrupt a watchdog sends to another thread.
 
     Python builds it in the interrupted thread, where the exception is raised: from the second
@@ -52,7 +52,7 @@ class _ThreadInterrupt(CaseInterrupt):
 
     def __init__(self, *args):
         super().__init__(*args)
-        alarm = getattr(_busy, "alarm", None)
+        alarm = getattr(busy, "alarm", None)
         if alarm is not None and alarm.active and alarm.fires > 1 and sys.version_info >= (3, 11):
             alarm._trace_frames(sys._getframe(1))
 
@@ -133,7 +133,7 @@ def escapes(frame, guard) -> bool:
     return frame is guard
 
 
-_busy = threading.local()
+busy = threading.local()
 
 
 def _make_async_exc():

@@ -36,7 +36,7 @@ import numpy as np
 
 from . import output
 from .alarm import LONGEST, Alarm
-from .interrupt import CaseInterrupt, _busy
+from .interrupt import CaseInterrupt, busy
 
 __all__ = ["CaseInterrupt", "Outcome", "WrongAnswerType", "budget", "run_case", "run_checker"]
 
@@ -245,7 +245,7 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
     if limit <= 0:
         return _timeout(None, b, case)
     alarm = Alarm(limit, None, WAIT_FACTOR * limit, max(min(20 * limit, b.wall_left()), 0.0))
-    in_place = threading.current_thread() is threading.main_thread() or getattr(_busy, "on", False)
+    in_place = threading.current_thread() is threading.main_thread() or getattr(busy, "on", False)
     if in_place:
         outcome, stuck = _run_here(body, alarm), False
     else:
