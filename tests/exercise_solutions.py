@@ -70,17 +70,25 @@ def depth_test(incoming, stored):
     return incoming < stored
 
 
-def clip_near(v):
+def clip_against(v, distance=lambda p: p[2] + p[3], t=None, new=True):
+    """Sutherland-Hodgman against one plane: ``distance`` (z + w: the near plane), the crossing
+    parameter ``t(a, b)`` (default d_a / (d_a − d_b)); ``new=False`` adds no crossing vertex
+    (the last two are a student's mistakes)."""
     v = np.asarray(v, dtype=float)
     out = []
     for i in range(3):
         a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0:
-            out.append(a)
-        if (da >= 0) != (db >= 0):
-            out.append(a + da / (da - db) * (b - a))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            da, db = distance(a), distance(b)
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0) and new:
+                out.append(a + (da / (da - db) if t is None else t(a, b)) * (b - a))
     return np.array(out).reshape(-1, 4)
+
+
+def clip_near(v):
+    return clip_against(v)
 
 
 CORRECT = {
@@ -180,17 +188,7 @@ def clip_nothing(v):
 
 def clip_after_divide(v):
     """Tests z/w >= -1 after the divide (wrong for w < 0) and cuts there."""
-    v = np.asarray(v, dtype=float)
-    out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            da, db = a[2] / a[3] + 1, b[2] / b[3] + 1
-            if da >= 0:
-                out.append(a)
-            if (da >= 0) != (db >= 0):
-                out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
+    return clip_against(v, lambda p: p[2] / p[3] + 1)
 
 
 #: (exercise, wrong function, words the explanation of its first failure must contain)

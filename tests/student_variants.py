@@ -21,6 +21,7 @@ from exercise_solutions import (
     _owns,
     _snap_exact,
     bilinear,
+    clip_against,
     covers,
     edge_function,
     fill_vectorised,
@@ -203,22 +204,8 @@ def clip_from_v3_as_list(v):
     return poly.tolist()
 
 
-def _clip(v, distance, t=None, new=True):
-    v = np.asarray(v, dtype=float)
-    out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = distance(a), distance(b)
-        if da >= 0:
-            out.append(a)
-        if (da >= 0) != (db >= 0) and new:
-            tt = da / (da - db) if t is None else t(a, b)
-            out.append(a + tt * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-
 def clip_t_from_z(v):
-    return _clip(v, lambda p: p[2] + p[3], t=lambda a, b: a[2] / (a[2] - b[2]))
+    return clip_against(v, t=lambda a, b: a[2] / (a[2] - b[2]))
 
 
 def clip_reversed(v):
@@ -226,11 +213,11 @@ def clip_reversed(v):
 
 
 def clip_no_new_vertices(v):
-    return _clip(v, lambda p: p[2] + p[3], new=False)
+    return clip_against(v, new=False)
 
 
 def clip_z_zero(v):
-    return _clip(v, lambda p: p[2])
+    return clip_against(v, lambda p: p[2])
 
 
 # == depth_to_unorm ================================================================================
