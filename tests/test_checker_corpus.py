@@ -98,3 +98,41 @@ def test_two_colours_never_print_alike():
     for f in report.failures:
         m = re.search(r"the blend is (\(.*?\)); yours is (\(.*?\))", f.explanation)
         assert m and m.group(1) != m.group(2), f.explanation
+
+
+def _random_answers(name):
+    import random
+
+    rng = random.Random(7)
+    return {
+        "classify_block": lambda *a: rng.choice(["rejected", "accepted", "partial"]),
+        "depth_test": lambda *a: rng.random() < 0.5,
+        "covers": lambda *a: rng.random() < 0.5,
+        "coverage_fraction": lambda xy, pixel, samples: (
+            rng.randrange(len(samples) + 1) / len(samples)
+        ),  # fmt: skip
+        "depth_to_unorm": lambda z, bits: rng.randrange(2**bits),
+        "line_pixels": lambda p0, p1: [(rng.randrange(12), rng.randrange(12))],
+    }[name]
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "classify_block",
+        "depth_test",
+        "covers",
+        "coverage_fraction",
+        "depth_to_unorm",
+        "line_pixels",
+    ],
+)
+def test_random_answers_get_the_rule_not_an_invented_cause(name):
+    """Where answers are few (three verdicts, a bool, k/S), some wrong solution agrees with a
+    random answer on some cases: that coincidence is never named as the cause."""
+    report = ex.check(name, _random_answers(name), budget=BUDGET)
+    assert not report.passed
+    kinds = {f.kind for f in report.failures}
+    assert kinds <= {"value", "outside", "inside", "vertex", "zero area"} | {
+        k for k in kinds if k.startswith("on a ")
+    }, kinds

@@ -11,8 +11,9 @@ explain it, in this order:
    included) is the cause, named on every failure it explains. A single mistake is preferred
    to a combination, an earlier one in the exercise's table to a later one.
 3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
-   its answer and agrees with the most answers overall; symptoms ("keeps a vertex behind the
-   plane") only when no cause fits.
+   its answer and agrees with the most answers overall, provided it agrees with four answers
+   in five (else its answer here is a coincidence, frequent where answers are few: three
+   verdicts, a bool); symptoms ("keeps a vertex behind the plane") only when no cause fits.
 4. **Low precision**, only when the error is within the rounding of the precision named
    (float32: ``8 · 2**-24`` of the case's scale, see :attr:`.exercise.Exercise.float32`), and
    **NaN or infinity** in the answer.
@@ -39,6 +40,8 @@ FLOAT16_EPS = 2.0**-11
 #: Tolerance of "this mistake gives the student's answer" (two codings of one mistake may round
 #: differently).
 MATCH_TOL = 1e-6
+#: A mistake named on some cases only must agree with at least this share of all its answers.
+COINCIDENCE = 0.8
 
 
 @dataclass(frozen=True)
@@ -226,6 +229,13 @@ class _Fit:
     failing: set  # indices of the failing cases it explains
     agrees: int  # answered cases it agrees with (passing ones included)
     whole: bool  # it agrees with every answered case it speaks about
+    spoken: int = 0  # answered cases it says something about
+
+    @property
+    def coincidence(self) -> bool:
+        """A wrong solution that gives this answer but disagrees with most of the others: a
+        coincidence (frequent where answers are few: three verdicts, a bool), not a cause."""
+        return self.mistake.gives is not None and self.agrees < COINCIDENCE * self.spoken
 
 
 def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
@@ -254,7 +264,8 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
             said = [_fits(spec, m, r) for r in results if r.ok]
             agrees = len(hits) + sum(1 for s in said if s)
             whole = False not in verdicts.values() and False not in said
-            return _Fit(m, order, hits, agrees, whole)
+            spoken = sum(v is not None for v in [*verdicts.values(), *said])
+            return _Fit(m, order, hits, agrees, whole, spoken)
 
         fit = run_checker(run, None)
         if fit is not None:
@@ -309,7 +320,7 @@ def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]
     for r in failing:
         chosen = next((f for f in whole if r.index in f.failing), None)
         if chosen is None:
-            here = [f for f in fits if r.index in f.failing]
+            here = [f for f in fits if r.index in f.failing and not f.coincidence]
             here.sort(key=lambda f: (f.mistake.symptom, -f.agrees, len(f.mistake.parts), f.order))
             chosen = here[0] if here else None
         if chosen is not None:
