@@ -68,6 +68,10 @@ def _colour_only(src, dst, alpha):
 
 
 COMMON = [
+    ("destination unchanged", "that is the destination unchanged: the source is blended over "
+     "it, weighted by its alpha", lambda s, d: np.asarray(d, dtype=float)),
+    ("source unchanged", "that is the source unchanged: it is blended over the destination, "
+     "weighted by its alpha", lambda s, d: np.asarray(s, dtype=float)),
     ("destination alpha", "the destination alpha was used instead of the source alpha",
      lambda s, d: _scaled(s, d, d[3], 1 - d[3])),
     ("weights swapped", "you gave the source the weight 1 − α and the destination α: the "
