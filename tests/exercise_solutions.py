@@ -70,17 +70,25 @@ def depth_test(incoming, stored):
     return incoming < stored
 
 
-def clip_near(v):
+def clip_against(v, distance=lambda p: p[2] + p[3], t=None, new=True):
+    """Sutherland-Hodgman against one plane: ``distance`` (z + w: the near plane), the crossing
+    parameter ``t(a, b)`` (default d_a / (d_a − d_b)); ``new=False`` adds no crossing vertex
+    (the last two are a student's mistakes)."""
     v = np.asarray(v, dtype=float)
     out = []
     for i in range(3):
         a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0:
-            out.append(a)
-        if (da >= 0) != (db >= 0):
-            out.append(a + da / (da - db) * (b - a))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            da, db = distance(a), distance(b)
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0) and new:
+                out.append(a + (da / (da - db) if t is None else t(a, b)) * (b - a))
     return np.array(out).reshape(-1, 4)
+
+
+def clip_near(v):
+    return clip_against(v)
 
 
 CORRECT = {
@@ -180,17 +188,7 @@ def clip_nothing(v):
 
 def clip_after_divide(v):
     """Tests z/w >= -1 after the divide (wrong for w < 0) and cuts there."""
-    v = np.asarray(v, dtype=float)
-    out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            da, db = a[2] / a[3] + 1, b[2] / b[3] + 1
-            if da >= 0:
-                out.append(a)
-            if (da >= 0) != (db >= 0):
-                out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
+    return clip_against(v, lambda p: p[2] / p[3] + 1)
 
 
 #: (exercise, wrong function, words the explanation of its first failure must contain)
@@ -213,15 +211,18 @@ MISTAKES = {
 
 
 # -- other correct solutions: a different algorithm, order or form must pass as well -----------
-def fill_vectorised(xy, width, height):
-    """Half-planes over the whole image at once, in exact integers (1/512-px units)."""
+def fill_vectorised(xy, width, height, centre=256, orient=True):
+    """Half-planes over the whole image at once, in exact integers (1/512-px units); a
+    student's mistakes: ``centre=0`` samples pixel corners, ``orient=False`` one winding."""
     v = np.rint(np.asarray(xy, dtype=float) * 512).astype(np.int64)
     area = edge_function(v[0], v[1], v[2])
     if area == 0:
         return np.zeros((height, width), dtype=bool)
+    if area < 0 and not orient:
+        return np.zeros((height, width), dtype=bool)
     if area < 0:
         v = v[[0, 2, 1]]
-    y, x = np.mgrid[0:height, 0:width] * 512 + 256
+    y, x = np.mgrid[0:height, 0:width] * 512 + centre
     out = np.ones((height, width), dtype=bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
@@ -385,7 +386,10 @@ def trilinear_ceil(pyramid, uv, lod, wrap="repeat"):
     return a + (lam - lo) * (b - a)
 
 
-def _classify(xy, x0, y0, size, corner_trick=True):
+def _classify(xy, x0, y0, size, corner_trick=True, points=None, owns=None):
+    """The corner trick, or (``corner_trick=False``) every one of ``points`` (default: the four
+    extreme centres) tested; ``owns(a, b)`` decides a point on an edge (default: top-left)."""
+    owns = owns or _owns
     v = [[Fraction(float(c)) for c in p] for p in xy]
     area = edge_function(v[0], v[1], v[2])
     if area == 0:
@@ -400,14 +404,14 @@ def _classify(xy, x0, y0, size, corner_trick=True):
 
         def ok(p, a=a, b=b):
             e = edge_function(a, b, p)
-            return e > 0 or (e == 0 and _owns(a, b))
+            return e > 0 or (e == 0 and owns(a, b))
 
         if corner_trick:  # E grows with y when b.x > a.x, with x when b.y < a.y
             hi = (xs[1] if b[1] < a[1] else xs[0], ys[1] if b[0] > a[0] else ys[0])
             lo = (xs[0] if b[1] < a[1] else xs[1], ys[0] if b[0] > a[0] else ys[1])
             best, worst = ok(hi), ok(lo)
         else:
-            passes = [ok((x, y)) for x in xs for y in ys]
+            passes = [ok(p) for p in (points or [(x, y) for x in xs for y in ys])]
             best, worst = any(passes), all(passes)
         if not best:
             return "rejected"
@@ -478,12 +482,20 @@ def _level_with(rho, log=math.log2):
     return fn
 
 
-def _bilinear_with(centre=0.5, floor=math.floor, wrap_as=None, swap=False):
+def _bilinear_with(
+    centre=0.5, floor=math.floor, wrap_as=None, swap=False, clamp_x=False, transpose=False
+):
+    """A bilinear filter with a student's mistakes: ``clamp_x`` clamps x and y to the texel
+    centres first, ``transpose`` swaps the texture's rows and columns."""
+
     def fn(texture, uv, wrap):
         wrap = wrap_as or wrap
         tex = np.asarray(texture, dtype=float)
+        tex = np.swapaxes(tex, 0, 1) if transpose else tex
         h, w = tex.shape[:2]
         x, y = uv[0] * w - centre, uv[1] * h - centre
+        if clamp_x:
+            x, y = min(max(x, 0), w - 1), min(max(y, 0), h - 1)
         i, j = floor(y), floor(x)
         fy, fx = y - i, x - j
         if swap:
@@ -566,7 +578,7 @@ def classify_loose(xy, x0, y0, size):
 
 MISTAKES.update(
     {
-        "depth by truncation": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "truncation"),
+        "depth by truncation": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "truncates"),
         "depth scaled by 2^bits": (
             "depth_to_unorm",
             lambda z, b: round(z * 2**b),

@@ -31,17 +31,26 @@ def _meets(a, b, cx, cy) -> bool:
     return lo < hi or (lo == hi and not (lo_open or hi_open))
 
 
-def line_pixels(p0, p1):
-    a = (Fraction(p0[0]) - EPS, Fraction(p0[1]) - EPS * EPS)
-    b = (Fraction(p1[0]) - EPS, Fraction(p1[1]) - EPS * EPS)
-    out = []
-    for row in range(int(min(a[1], b[1])) - 1, int(max(a[1], b[1])) + 2):
-        for col in range(int(min(a[0], b[0])) - 1, int(max(a[0], b[0])) + 2):
-            cx, cy = col + HALF, row + HALF
-            inside_end = abs(b[0] - cx) + abs(b[1] - cy) < HALF
-            if row >= 0 and col >= 0 and _meets(a, b, cx, cy) and not inside_end:
-                out.append((row, col))
-    return out
+def line_with(eps_x, eps_y, order="row col"):
+    """The diamond-exit rule with the end points moved by (eps_x, eps_y) (GL: (−ε, −ε²)),
+    pairs as (row, col), or (col, row) for the mistake."""
+
+    def fn(p0, p1):
+        a = (Fraction(p0[0]) + eps_x, Fraction(p0[1]) + eps_y)
+        b = (Fraction(p1[0]) + eps_x, Fraction(p1[1]) + eps_y)
+        out = []
+        for row in range(int(min(a[1], b[1])) - 1, int(max(a[1], b[1])) + 2):
+            for col in range(int(min(a[0], b[0])) - 1, int(max(a[0], b[0])) + 2):
+                cx, cy = col + HALF, row + HALF
+                inside_end = abs(b[0] - cx) + abs(b[1] - cy) < HALF
+                if row >= 0 and col >= 0 and _meets(a, b, cx, cy) and not inside_end:
+                    out.append((row, col) if order == "row col" else (col, row))
+        return out
+
+    return fn
+
+
+line_pixels = line_with(-EPS, -EPS * EPS)
 
 
 def over(src, dst):

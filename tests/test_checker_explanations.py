@@ -10,7 +10,8 @@ import pytest
 from exercise_solutions import CORRECT, _covers_with, _owns, covers_float32, edge_function_float32
 
 from teachraster import exercises as ex
-from teachraster.exercises.scalars import depth_test_cases, num
+from teachraster.exercises.depth_clipping import depth_test_cases
+from teachraster.exercises.scalars import num
 
 E = CORRECT["edge_function"]
 NOISE = re.compile(r"\d(0{9}|9{9})\d*[1-9]")  # 0.80000000000000004, 0.29999999999999999

@@ -43,7 +43,18 @@ def _nb(*cells) -> dict:
 
 
 def _code(source: str, **nbgrader) -> dict:
-    meta = {"nbgrader": {"grade_id": "x", "schema_version": 3, **nbgrader}} if nbgrader else {}
+    """A code cell; nbgrader flags as given, completed as nbgrader's metadata must be."""
+    full = {
+        "grade": False,
+        "solution": False,
+        "locked": False,
+        "grade_id": "x",
+        "schema_version": 3,
+    }
+    full.update(nbgrader)
+    if full["grade"]:
+        full.setdefault("points", 1)
+    meta = {"nbgrader": full} if nbgrader else {}
     return {"cell_type": "code", "source": source, "metadata": meta, "outputs": [],
             "execution_count": None}  # fmt: skip
 
@@ -299,7 +310,7 @@ def test_marker_errors_name_the_line():
 
 def test_student_version_clears_as_nbgrader_does():
     nb = _nb(
-        _code("def f():\n    return 42", solution=True),  # a solution cell without markers
+        _code("def f():\n    return 42", solution=True, grade_id="f"),  # no markers: all solution
         {
             "cell_type": "markdown",
             "metadata": {},
@@ -457,3 +468,234 @@ def test_nbgrader_refuses_student_versions_and_malformed_markers(tmp_path, capsy
     assert _status(["nbgrader", tmp_path / "c", other]) == 2
     assert "*.ipynb" in capsys.readouterr().err
     assert not (tmp_path / "c").exists()
+
+
+def test_a_misspelt_but_consistent_marker_pair_is_an_error_never_a_leak(tmp_path, capsys):
+    for spelling in ("SOLUTON", "SOLUTIONS", "SOLUTION_"):
+        src = f"def f():\n    ### BEGIN {spelling}\n    return 42\n    ### END {spelling}\n"
+        with pytest.raises(NotebookError, match="spelt '### BEGIN SOLUTION'"):
+            student_notebook(_nb(_code(src, solution=True)))
+    src = "x = 1\n### BEGN SOLUTION\nsecret = 42\n### ED SOLUTION\n"
+    with pytest.raises(NotebookError, match="line 2"):
+        student_notebook(_nb(_code(src, solution=True)))
+    # comments that merely mention the words stay comments
+    fine = "# end of solution loop\n# begin drawing\n### BEGIN SOLUTION\nx = 1\n### END SOLUTION"
+    student_notebook(_nb(_code(fine, solution=True)))
+
+
+@pytest.mark.parametrize(
+    "meta, words",
+    [
+        (
+            {
+                "grade": True,
+                "solution": False,
+                "locked": True,
+                "schema_version": 3,
+                "grade_id": "c",
+            },
+            "without points",
+        ),  # fmt: skip
+        (
+            {"grade": False, "solution": True, "locked": False, "schema_version": 3},
+            "without a grade_id",
+        ),  # fmt: skip
+        (
+            {
+                "grade": False,
+                "solution": True,
+                "locked": False,
+                "schema_version": 3,
+                "grade_id": "",
+            },
+            "without a grade_id",
+        ),  # fmt: skip
+        (
+            {"grade": False, "solution": True, "schema_version": 3, "grade_id": "a"},
+            "without locked",
+        ),
+        (
+            {
+                "grade": False,
+                "solution": True,
+                "locked": False,
+                "schema_version": 1,
+                "grade_id": "a",
+            },
+            "schema version 1",
+        ),  # fmt: skip
+        (
+            {
+                "grade": False,
+                "solution": False,
+                "locked": True,
+                "task": True,
+                "schema_version": 3,
+                "grade_id": "t",
+            },
+            "must be markdown",
+        ),  # fmt: skip
+    ],
+)
+def test_student_version_refuses_what_nbgrader_refuses(meta, words):
+    cell = {"cell_type": "code", "source": "x = 1", "metadata": {"nbgrader": meta},
+            "outputs": [], "execution_count": None}  # fmt: skip
+    with pytest.raises(NotebookError, match=words):
+        student_notebook(_nb(cell))
+
+
+def test_student_version_refuses_a_duplicate_grade_id_and_a_half_graded_markdown_cell():
+    with pytest.raises(NotebookError, match="duplicate grade id"):
+        student_notebook(_nb(_code("x = 1", locked=True), _code("y = 2", locked=True)))
+    md = {"cell_type": "markdown", "source": "Why?", "metadata": {"nbgrader": {
+        "grade": True, "solution": False, "locked": False, "points": 1, "grade_id": "why",
+        "schema_version": 3}}}  # fmt: skip
+    with pytest.raises(NotebookError, match="both a grade and a solution"):
+        student_notebook(_nb(md))
+
+
+def test_the_attachments_of_solution_cells_are_stripped():
+    answer = {"image.png": {"image/png": "iVBORw0KGgo="}}
+    md = {"cell_type": "markdown", "source": "Why?\n### BEGIN SOLUTION\n![](attachment:image.png)\n"
+          "### END SOLUTION", "metadata": {"nbgrader": {
+              "grade": True, "solution": True, "locked": False, "points": 1, "grade_id": "why",
+              "schema_version": 3}}, "attachments": answer}  # fmt: skip
+    task = {"cell_type": "markdown", "source": "![](attachment:figure.png)", "metadata": {},
+            "attachments": {"figure.png": {"image/png": "iVBORw0KGgo="}}}  # fmt: skip
+    cells = student_notebook(_nb(md, task))["cells"]
+    assert "attachments" not in cells[0] and "attachment:" not in cells[0]["source"]
+    assert cells[1]["attachments"]  # a figure of the question stays
+
+
+# -- an upgrade: what the student never edited is refreshed ------------------------------------
+def _as_an_older_version_shipped_it(root: Path, name: str) -> dict:
+    """Make ``name`` hold what an earlier version shipped (other wording), and record that in
+    the manifest as that version would have."""
+    from teachraster.course import manifest
+
+    path = root / name
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    markdown = next(c for c in nb["cells"] if c["cell_type"] == "markdown")
+    markdown["source"] = "".join(markdown["source"]) + "\n\n(the wording of an older version)"
+    data = (json.dumps(nb, indent=1, ensure_ascii=False) + "\n").encode()
+    path.write_bytes(data)
+    recorded = manifest.read(root)
+    recorded[name] = manifest.fingerprint(name, data)
+    (root / manifest.NAME).write_bytes(manifest.text(recorded, "0.0.old"))
+    return nb
+
+
+def test_an_upgrade_refreshes_the_notebooks_the_student_never_edited(tmp_path, capsys):
+    root = tmp_path / "course"
+    main(["lessons", str(root)])
+    lesson = sorted(p.name for p in root.glob("*.ipynb"))[0]
+    exercise = "exercises/" + EXERCISES[0].name
+    other = "exercises/" + EXERCISES[1].name
+    new = {n: (root / n).read_bytes() for n in (lesson, exercise, other)}
+    # the older version's lesson, run by the student (outputs: not an edit)
+    nb = _as_an_older_version_shipped_it(root, lesson)
+    code = next(c for c in nb["cells"] if c["cell_type"] == "code")
+    code["outputs"] = [{"output_type": "stream", "name": "stdout", "text": "ran\n"}]
+    code["execution_count"] = 1
+    (root / lesson).write_text(json.dumps(nb, indent=1), encoding="utf-8")
+    # the older version's exercise, left as it was; another exercise the student worked in
+    _as_an_older_version_shipped_it(root, exercise)
+    nb = _as_an_older_version_shipped_it(root, other)
+    solution = next(c for c in nb["cells"] if c["metadata"].get("nbgrader", {}).get("solution"))
+    solution["source"] = "def covers(xy, p):\n    return True  # my work"
+    (root / other).write_text(json.dumps(nb, indent=1), encoding="utf-8")
+    capsys.readouterr()
+    main(["lessons", str(root)])
+    said = capsys.readouterr().out
+    assert (root / lesson).read_bytes() == new[lesson]
+    assert (root / exercise).read_bytes() == new[exercise]
+    assert "my work" in (root / other).read_text(encoding="utf-8")  # kept
+    assert "refreshed 2 file(s) you had not edited" in said and "kept 1 file(s)" in said
+    assert not list(root.rglob("*.20*.ipynb"))  # refreshing an untouched notebook keeps no copy
+    # the kept exercise still counts as the older version's: an edit is never refreshed away
+    main(["lessons", str(root)])
+    assert "my work" in (root / other).read_text(encoding="utf-8")
+
+
+def test_without_a_manifest_every_notebook_that_differs_is_kept(tmp_path, capsys):
+    from teachraster.course import manifest
+
+    root = tmp_path / "course"
+    main(["lessons", str(root)])
+    (root / manifest.NAME).unlink()  # a course copied by an older version
+    lesson = sorted(root.glob("*.ipynb"))[0]
+    lesson.write_text(lesson.read_text(encoding="utf-8").replace("#", "##", 1), encoding="utf-8")
+    capsys.readouterr()
+    main(["lessons", str(root)])
+    assert "kept 1 file(s)" in capsys.readouterr().out
+
+
+def test_the_printed_nbgrader_commands_quote_names(tmp_path, capsys):
+    odd = tmp_path / "my ex's" / "01 the coverage.ipynb"
+    odd.parent.mkdir()
+    odd.write_bytes(EXERCISES[0].read_bytes())
+    root = tmp_path / "a class; rm -rf"
+    assert main(["nbgrader", str(root), str(odd)]) == 0
+    out = capsys.readouterr().out
+    assert f"nbgrader generate_assignment {shlex.quote('01 the coverage')}" in out
+    assert f"teachraster nbgrader {shlex.quote(str(root))} --check-submissions" in out
+    for line in out.splitlines():
+        if line.startswith("    ") and "#" not in line.split("nbgrader", 1)[0]:
+            shlex.split(line.split("#")[0])  # every command line parses as the shell would
+
+
+def test_check_submissions_lists_what_nbgrader_would_score_0_silently(tmp_path, capsys):
+    root = tmp_path / "class"
+    assert main(["nbgrader", str(root), str(EXERCISES[0])]) == 0
+    name, stem = EXERCISES[0].name, EXERCISES[0].stem
+    release = json.loads(student_text(EXERCISES[0]))
+    graded = [c for c in release["cells"] if c["metadata"].get("nbgrader", {}).get("grade")]
+
+    def submit(student: str, nb: dict | None):
+        folder = root / "submitted" / student / stem
+        folder.mkdir(parents=True)
+        if nb is not None:
+            (folder / name).write_text(json.dumps(nb), encoding="utf-8")
+
+    submit("ada", release)  # as released: fine
+    stripped = json.loads(json.dumps(release))
+    for cell in stripped["cells"]:
+        cell["metadata"] = {}  # an editor that drops cell metadata
+    submit("bob", stripped)
+    deleted = json.loads(json.dumps(release))
+    deleted["cells"].remove(next(c for c in deleted["cells"] if c["metadata"].get("nbgrader", {}).get("grade")))  # fmt: skip
+    submit("cy", deleted)
+    submit("dee", None)  # an empty folder
+    capsys.readouterr()
+    assert main(["nbgrader", str(root), "--check-submissions"]) == 1
+    out = capsys.readouterr().out
+    assert "submitted/ada/" not in out
+    assert out.count("submitted/bob/") >= len(graded) and "metadata stripped" in out
+    assert out.count("submitted/cy/") == 1 and "check cell" in out
+    assert f"submitted/dee/{stem}/{name}: missing" in out
+    assert "scores it 0 without a word" in out
+    assert not (root / "source" / stem / "x").exists()  # it wrote nothing
+    (root / "submitted").rename(tmp_path / "elsewhere")
+    assert main(["nbgrader", str(root), "--check-submissions"]) == 0
+
+
+def test_the_nbgrader_config_lets_a_lecturer_raise_every_checks_budget(tmp_path, monkeypatch):
+    from teachraster.course.nbgrader_layout import CONFIG
+    from teachraster.exercises.running import BUDGET_VARIABLE, effective_budget
+
+    monkeypatch.setenv(BUDGET_VARIABLE, "")  # restored (unset) after the test, whatever exec sets
+    monkeypatch.delenv(BUDGET_VARIABLE)
+    raised = CONFIG.replace('setdefault("TEACHRASTER_CHECK_BUDGET", "10")', 'setdefault("TEACHRASTER_CHECK_BUDGET", "30")')  # fmt: skip
+    assert raised != CONFIG
+    exec(compile(raised, "nbgrader_config.py", "exec"), {"get_config": lambda: _Anything()})
+    assert effective_budget(10.0) == 30.0  # what a kernel started by nbgrader then sees
+
+
+class _Anything:
+    """nbgrader's config object, as far as the config file uses it."""
+
+    def __getattr__(self, name):
+        return self
+
+    def __setattr__(self, name, value):
+        pass

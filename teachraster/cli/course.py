@@ -2,9 +2,11 @@
 
 ``teachraster lessons [DIR]`` copies the lesson notebooks into DIR, the student versions of the
 exercise notebooks into DIR/exercises/ and ``CONVENTIONS.md`` into DIR, then says how to open
-them. It adds what is missing and never loses a student's work: a notebook that differs from
-the shipped one is kept, unless ``--force``, which replaces it and keeps the old file beside
-it (``name.2026-11-26T10-00.ipynb``). See :mod:`teachraster.course.install`.
+them. It adds what is missing and never loses a student's work: after an upgrade, a notebook
+the student never edited (its cells as an earlier version shipped them, as recorded in
+``DIR/.teachraster-course.json``: :mod:`teachraster.course.manifest`) is refreshed to the new
+version; a notebook that differs is kept, unless ``--force``, which replaces it and keeps the
+old file beside it (``name.2026-11-26T10-00.ipynb``). See :mod:`teachraster.course.install`.
 
 ``teachraster student-version [NOTEBOOK ...] -o DIR`` writes the student version of exercise
 notebooks (default: the course's), as nbgrader releases them
@@ -13,7 +15,8 @@ written, with the notebook, the cell and the line.
 
 ``teachraster nbgrader DIR [NOTEBOOK ...]`` lays out an nbgrader course directory: the teacher
 versions under ``source/<assignment>/`` and ``nbgrader_config.py``
-(:mod:`teachraster.course.nbgrader_layout`).
+(:mod:`teachraster.course.nbgrader_layout`). ``teachraster nbgrader DIR --check-submissions``
+lists the submissions nbgrader would score 0 without a word (:mod:`teachraster.course.submissions`).
 
 >>> import argparse
 >>> sub = argparse.ArgumentParser().add_subparsers(dest="command")
@@ -28,7 +31,8 @@ import os
 import shlex
 from pathlib import Path
 
-from ..course.install import CourseError, Outcome, install
+from ..course import manifest
+from ..course.install import CourseError, Outcome, atomic_write, install
 
 DEFAULT_DIR = Path("teachraster-course")
 #: Where ``teachraster nbgrader --force`` keeps replaced files: outside source/, so that an
@@ -75,6 +79,12 @@ def add_parsers(subparsers) -> None:
     p.add_argument("directory", metavar="DIR", type=Path, help="the course directory")
     _add_notebooks(p, "teacher versions (default: the course's exercise notebooks)")
     _add_force(p, f"replace files that differ (old ones kept under DIR/{NBGRADER_BACKUPS}/)")
+    p.add_argument(
+        "--check-submissions",
+        action="store_true",
+        help="write nothing: list the submissions in DIR/submitted/ that nbgrader would score "
+        "0 without a word (a check or solution cell deleted, or its metadata stripped)",
+    )
 
 
 def _add_notebooks(p, help: str) -> None:
@@ -121,6 +131,11 @@ def _say(outcome: Outcome, directory: Path) -> None:
         print(f"added {len(outcome.added)} files: {names(outcome.added)}")
     if outcome.unchanged:
         print(f"{len(outcome.unchanged)} already there, unchanged")
+    if outcome.refreshed:
+        print(
+            f"refreshed {len(outcome.refreshed)} file(s) you had not edited to this version: "
+            f"{names(outcome.refreshed)}"
+        )
     for path, old in outcome.replaced:
         print(f"replaced {path}; the old file is kept as {old}")
     if outcome.kept:
@@ -140,7 +155,9 @@ def cmd_lessons(args, parser) -> int:
     files.update({f"exercises/{p.name}": student_text(p).encode() for p in exercises})
     files[course.CONVENTIONS] = course.conventions().read_bytes()
     _refuse_own_inputs(args.directory, list(files), [*lessons, *exercises])
-    outcome = install(args.directory, files, force=args.force)
+    recorded = manifest.read(args.directory)
+    outcome = install(args.directory, files, force=args.force, shipped=recorded)
+    _record(args.directory, files, recorded, outcome)
     _say(outcome, args.directory)
     where = args.directory
     print(f"the course is in {where}: {len(lessons)} lessons, {len(exercises)} exercises")
@@ -151,6 +168,25 @@ def cmd_lessons(args, parser) -> int:
         "'YOUR CODE HERE' and run the check cell below it"
     )
     return 0
+
+
+def _record(directory: Path, files: dict, recorded: dict, outcome: Outcome) -> None:
+    """Write the manifest: what this version shipped, except for the files the student edited
+    (kept: they still come from the version recorded before, or from none)."""
+    root = Path(os.path.abspath(directory))
+    kept = {p.relative_to(root.resolve()).as_posix() for p in outcome.kept}
+    shipped = {n: manifest.fingerprint(n, data) for n, data in files.items() if n not in kept}
+    shipped.update({n: recorded[n] for n in kept if n in recorded})
+    atomic_write(root / manifest.NAME, manifest.text(shipped, _version()))
+
+
+def _version() -> str:
+    try:
+        from importlib.metadata import version
+
+        return version("teachraster")
+    except Exception:  # noqa: BLE001 - a checkout without metadata
+        return "unknown"
 
 
 def cmd_student_version(args, parser) -> int:
@@ -177,8 +213,30 @@ def _differs(path: Path, data: bytes) -> bool:
     return path.is_file() and not path.is_symlink() and path.read_bytes() != data
 
 
+def cmd_check_submissions(args, parser) -> int:
+    """List what nbgrader would silently score 0 in DIR's submissions; 1 when there is any."""
+    from ..course.submissions import problems
+
+    if not (args.directory / "source").is_dir():
+        parser.error(f"{args.directory} holds no source/: not an nbgrader course directory")
+    found = problems(args.directory)
+    for line in found:
+        print(line)
+    if found:
+        print(
+            f"{len(found)} problem(s): nbgrader would score these checks 0 without saying so. "
+            "Ask for the notebook again, or restore its cells from release/ (nbgrader's own "
+            "cells, metadata included), before `nbgrader autograde`"
+        )
+        return 1
+    print("every submitted notebook holds its check and solution cells, metadata included")
+    return 0
+
+
 def cmd_nbgrader(args, parser) -> int:
     """Lay out DIR as an nbgrader course of the (given or the course's) exercise notebooks."""
+    if args.check_submissions:
+        return cmd_check_submissions(args, parser)
     from .. import course
     from ..course.nbgrader_layout import assignment_name, layout
     from ..exercises.student_version import read_notebook, student_notebook
@@ -204,7 +262,10 @@ def cmd_nbgrader(args, parser) -> int:
     print(f"an nbgrader course of {len(sources)} assignments is in {args.directory}; grade with:")
     print(f"    cd {where}")
     for s in sources[:1]:
-        print(f"    nbgrader generate_assignment {assignment_name(s)}   # and so on for each")
+        name = shlex.quote(assignment_name(s))
+        print(f"    nbgrader generate_assignment {name}   # and so on for each")
+    print("    # collect the submissions, then, before grading, list those nbgrader would score 0")
+    print(f"    teachraster nbgrader {where} --check-submissions")
     print("    nbgrader autograde ASSIGNMENT && nbgrader generate_feedback ASSIGNMENT")
     print("    nbgrader export    # grades.csv")
     return 0

@@ -6,8 +6,10 @@ through :func:`install`, which promises:
 - nothing is written until every target has been checked: a target that is a symbolic link
   (or lies under one), that is not a regular file, or whose name would leave the directory
   stops the whole run with :class:`CourseError`, naming it;
-- a missing file is added; a file equal to the shipped one is left alone; a file that differs
-  (a student's work) is kept, unless ``force``: then it is replaced and the old file kept as a
+- a missing file is added; a file equal to the shipped one is left alone; a file the student
+  never edited since an earlier version shipped it (its fingerprint is still the one recorded
+  in ``shipped``, :mod:`.manifest`) is refreshed to the new version; a file that differs (a
+  student's work) is kept, unless ``force``: then it is replaced and the old file kept as a
   backup (``name.2026-11-26T10-00.ipynb`` beside it, or under ``backups``), never overwritten;
 - every write goes to a temporary file in the target's directory, renamed into place: a full
   disk or an interrupted run leaves the old file or the new one, never a truncated one.
@@ -24,6 +26,8 @@ from dataclasses import dataclass, field
 from datetime import datetime
 from pathlib import Path, PurePosixPath
 
+from .manifest import fingerprint
+
 
 class CourseError(ValueError):
     """A course command refused to write: the message names the file and says why."""
@@ -35,6 +39,8 @@ class Outcome:
 
     added: list[Path] = field(default_factory=list)
     unchanged: list[Path] = field(default_factory=list)
+    #: files the student never edited, replaced by the new version
+    refreshed: list[Path] = field(default_factory=list)
     kept: list[Path] = field(default_factory=list)
     #: (replaced file, where its old content now is)
     replaced: list[tuple[Path, Path]] = field(default_factory=list)
@@ -157,6 +163,7 @@ def install(
     force: bool = False,
     backups: Path | None = None,
     now: datetime | None = None,
+    shipped: dict[str, str] | None = None,
 ) -> Outcome:
     """Write ``files`` (relative POSIX name -> content) into ``directory``, losing nothing.
 
@@ -173,6 +180,9 @@ def install(
         Where backups go (the same relative layout); default: beside each file.
     now : datetime, optional
         The time in backup names (default: now, local time).
+    shipped : dict, optional
+        Fingerprints (:func:`.manifest.fingerprint`) of what an earlier version shipped, by
+        name: a file still holding that content was never edited and is refreshed.
 
     Raises
     ------
@@ -194,8 +204,13 @@ def install(
             path.parent.mkdir(parents=True, exist_ok=True)
             atomic_write(path, data)
             outcome.added.append(path)
-        elif path.read_bytes() == data:
-            outcome.unchanged.append(path)
+        elif (old := path.read_bytes()) == data or fingerprint(name, old) == fingerprint(
+            name, data
+        ):
+            outcome.unchanged.append(path)  # (outputs of a run are not an edit)
+        elif shipped is not None and shipped.get(name) == fingerprint(name, old):
+            atomic_write(path, data)
+            outcome.refreshed.append(path)
         elif not force:
             outcome.kept.append(path)
         else:

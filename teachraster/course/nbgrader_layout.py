@@ -19,20 +19,31 @@ CONFIG = '''"""nbgrader settings of the teachraster exercises (written by ``teac
 
     cd THIS_DIRECTORY
     nbgrader generate_assignment 01_coverage    # release/01_coverage/: the student version
+    teachraster nbgrader . --check-submissions  # submissions nbgrader would score 0 silently
     nbgrader autograde 01_coverage              # grades submitted/<student>/01_coverage/
     nbgrader generate_feedback 01_coverage      # feedback/<student>/01_coverage/*.html
     nbgrader export                             # grades.csv
 """
 
+import os
+
 c = get_config()  # noqa: F821 (nbgrader defines it)
+
+# Every check gives a student's code 10 s of CPU time in all, a case 2 s of it (an endless
+# loop is stopped after 2 s of CPU). The check cells are locked, so their budget cannot be
+# raised there: to raise every check's budget for the whole class (a slow grading machine,
+# a course that welcomes slow but correct code), set the seconds here. The kernels nbgrader
+# starts inherit this environment variable.
+os.environ.setdefault("TEACHRASTER_CHECK_BUDGET", "10")
 
 c.CourseDirectory.course_id = "teachraster"
 # The stub nbgrader writes for a solution (its default for Python, named here because
 # `teachraster student-version` writes the same one).
 c.ClearSolutions.code_stub = {"python": "# YOUR CODE HERE\\nraise NotImplementedError()"}
-# Each check stops a student's endless loop within its own time budget; this only bounds a
+# Each check stops a student's endless loop within its own budget of CPU time; on a busy
+# machine the wall-clock time is longer (up to 20 times a case's limit). This only bounds a
 # cell that hangs outside a check (nbgrader's default is 30 s per cell).
-c.Execute.timeout = 120
+c.Execute.timeout = 600
 '''
 
 

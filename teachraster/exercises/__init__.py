@@ -7,14 +7,25 @@
 >>> report.passed
 False
 >>> print(report.failures[0].explanation)      # doctest: +ELLIPSIS
-the incoming depth 0.5 equals the stored 0.5: a tie keeps the fragment already stored ...
+the incoming depth 0.5 equals the stored 0.5: it must fail; your function let it pass: a tie ...
 
-``check(name, fn, budget=10.0)`` never raises or hangs because of ``fn``: the whole check
-takes about ``budget`` seconds at most, a case a fifth of it (an endless loop is reported after
-2 s, whatever it catches), and its comparisons and explanations count against the budget too
-(:mod:`.running`, :mod:`.interrupt`). Answers are read strictly (:mod:`.answers`): ``None`` is a
-missing ``return``, text is not a number. ``report.compare(ax)`` shows the student's ``fill`` of
-a whole scene beside the package's (:mod:`.compare`).
+How it is built (one engine for every exercise):
+
+- :mod:`.exercise` says what an exercise is: its cases (the hard-case catalogue, then seeded
+  random ones), how its answer is read (:mod:`.answers`: ``None`` is a missing ``return``,
+  text is not a number), the rule in words with the case's numbers, and a table of typical
+  mistakes, each a wrong solution the checker runs itself.
+- :mod:`.value_checks` runs the cases, compares, and builds the :class:`Report`;
+  :mod:`.diagnosis` names the mistake behind the failures: a constant answer first, then a
+  mistake that gives every answer, then one that gives this answer; float32 only within its
+  rounding. Every failure has a kind, and the summary shows one failure of each kind first.
+- :mod:`.running`, :mod:`.alarm` and :mod:`.interrupt` bound the time: ``check(name, fn,
+  budget=10.0)`` gives the student's code 10 s of CPU (a lecturer raises it for a class with
+  ``TEACHRASTER_CHECK_BUDGET``), a case a fifth of it, and stop an endless loop whatever it
+  catches; :mod:`.output` keeps what the function prints aside.
+- :mod:`.package_answers` tells when the answer is the package's own function (it does not
+  count); :mod:`.scenes` and :mod:`.picture_scenes` draw the student's function in a whole
+  picture beside the package's (``report.compare(ax)``).
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one

@@ -106,9 +106,12 @@ def as_number(value):
     return _to_float(arr, value, what).reshape(())[()]
 
 
-def as_numbers(value, shape: tuple, what: str) -> np.ndarray:
-    """An array of numbers of ``shape`` (-1 for any length), float32 kept as given."""
-    arr = _array(value, what, MAX_VERTICES * 4)
+def as_numbers(value, shape: tuple | None, what: str, max_size: int = MAX_VERTICES * 4):
+    """An array of numbers of ``shape`` (-1 for any length; None: any shape, at most
+    ``max_size`` values), float32 kept as given."""
+    arr = _array(value, what, max_size)
+    if shape is None:
+        return _to_float(arr, value, what)
     fits = arr.ndim == len(shape) and all(s in (-1, n) for s, n in zip(shape, arr.shape))
     if not fits:
         raise WrongAnswerType(f"returned {short(value)} of shape {arr.shape}; expected {what}")

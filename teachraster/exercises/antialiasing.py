@@ -19,17 +19,18 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.edges import edge_function, passes, top_left_edges
+from ..core.edges import edge_function
 from ..core.fill import rasterize
 from ..core.sample_patterns import sample_pattern
 from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..pipeline.render_triangles import Frame
+from .answers import as_number, as_numbers
 from .cases import SEED
-from .running import WrongAnswerType
+from .coverage import TOP_LEFT, covered, kind_of, owns_kind, owns_variants, owns_words
+from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
-from .scene_report import refuse_non_answers
-from .tolerance import all_close, close
+from .tolerance import all_close
 
 
 # -- coverage_fraction ------------------------------------------------------------------------
@@ -55,28 +56,10 @@ def sample_points(pixel, samples) -> np.ndarray:
     return np.asarray(samples, dtype=float) + np.array([col, row], dtype=float)
 
 
-def covered_samples(xy, points, tie: str = "top-left", orient: bool = True) -> np.ndarray:
-    """Which ``points`` the triangle covers with exact edge functions and a tie rule.
-
-    ``tie`` decides a point exactly on an edge: ``"top-left"`` (the rule), ``"both"`` (every
-    edge owns it), ``"none"``, ``"bottom-right"``. ``orient=False`` skips re-orienting a
-    counter-clockwise triangle (the one-winding mistake).
-    """
-    v = np.asarray(xy, dtype=float)
-    area = float(edge_function(v[0], v[1], v[2]))
-    if area == 0:
-        return np.zeros(len(points), dtype=bool)
-    if area < 0 and orient:
-        v = v[[0, 2, 1]]
-    out = np.ones(len(points), dtype=bool)
-    for k in range(3):
-        a, b = v[k], v[(k + 1) % 3]
-        e = edge_function(a, b, points)
-        owns = {"top-left": top_left_edges(a, b), "both": True, "none": False}.get(
-            tie, not top_left_edges(a, b)
-        )
-        out &= passes(e, owns)
-    return out
+def covered_samples(xy, points) -> np.ndarray:
+    """Which ``points`` the triangle covers by the rule (snapped vertices, exact edge functions,
+    the top-left rule): :func:`.coverage.covered`."""
+    return covered(xy, points)
 
 
 def _edge_words(xy, point) -> str:
@@ -87,12 +70,8 @@ def _edge_words(xy, point) -> str:
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
         if float(edge_function(a, b, point)) == 0:
-            ra, rb = (b, a) if flip else (a, b)
-            owns = bool(top_left_edges(ra, rb))
-            kind = (
-                ("top" if owns else "bottom") if ra[1] == rb[1] else ("left" if owns else "right")
-            )
-            found.append((f"v{k + 1}→v{(k + 1) % 3 + 1}", kind, owns))
+            kind = kind_of(*((b, a) if flip else (a, b)))
+            found.append((f"v{k + 1}→v{(k + 1) % 3 + 1}", kind, kind in TOP_LEFT))
     if len(found) == 1:
         name, kind, owns = found[0]
         verdict = "covers it" if owns else "leaves it uncovered"
@@ -163,63 +142,111 @@ def explain_coverage(args, expected, got) -> str:
     points = sample_points(pixel, samples)
     inside = covered_samples(snapped, points)
     which = ", ".join(str(k) for k in np.flatnonzero(inside)) or "none"
-    head = (
+    return (
         f"pixel (row {pixel[0]}, col {pixel[1]}) of {tri_words(xy)} with {s} samples: the rule "
         f"covers {int(inside.sum())} of {s} (samples {which}), {num(expected)}; yours is "
         f"{num(got, expected)}"
     )
-    return head + _coverage_mistake(xy, snapped, pixel, samples, got)
 
 
-def _coverage_mistake(xy, snapped, pixel, samples, got) -> str:
-    points = sample_points(pixel, samples)
-    frac = lambda cov: float(np.mean(cov))  # noqa: E731
-    if float(edge_function(*snapped)) == 0:
-        return (
-            ": its vertices are collinear once snapped, and a zero-area triangle covers no sample"
-        )
-    if not (snapped == xy).all():
-        if close(got, frac(covered_samples(xy, points))):
-            return (
-                ": you tested the unsnapped vertices; snap them to the 1/256 grid first "
-                "(round half to even): "
-                + ", ".join(
-                    f"{exact(a)} → {exact(b)}" for a, b in zip(xy, snapped) if (a != b).any()
-                )
-            )
-        half_up = np.floor(xy * 256 + 0.5) / 256
-        if close(got, frac(covered_samples(half_up, points))):
-            return ": snapping rounds half to even (np.rint), not half up (floor(x + ½))"
-        down = np.floor(xy * 256) / 256
-        if close(got, frac(covered_samples(down, points))):
-            return ": snapping rounds to the nearest 1/256 px (half to even), not down"
-    for tie in ("both", "none", "bottom-right"):
-        if close(got, frac(covered_samples(snapped, points, tie))):
-            on = [(k, _edge_words(snapped, p)) for k, p in enumerate(points)]
-            k, words = next(((k, w) for k, w in on if w), (None, ""))
-            if words:
-                return f": sample {k} at {vec(points[k])} {words}"
-    if close(got, frac(covered_samples(snapped, points, orient=False))):
-        return (
-            ": this triangle runs counter-clockwise on screen (E(v1, v2, v3) < 0): handle both "
-            "windings (flip the signs, or swap two vertices)"
-        )
-    row, col = pixel
-    centre = covered_samples(snapped, np.array([[col + 0.5, row + 0.5]]))
-    if close(got, float(centre[0])):
-        return ": you tested the pixel centre only; test each of the samples"
-    for shift, words in (
-        ((0.5, 0.5), "the offsets are from the pixel's top-left corner (col, row), not its centre"),
-        ((-0.5, -0.5), "sample s lies at (col + ox, row + oy), offsets from the top-left corner"),
-    ):
-        if close(got, frac(covered_samples(snapped, points + shift))):
-            return f": {words}"
-    flipped = np.asarray(samples) * [1, -1] + np.array([col, row + 1], dtype=float)
-    if close(got, frac(covered_samples(snapped, flipped))):
-        return ": the offsets are y down (like window coordinates): y = row + oy, not row + 1 − oy"
-    swapped = np.asarray(samples) + np.array([row, col], dtype=float)
-    if row != col and close(got, frac(covered_samples(snapped, swapped))):
-        return ": pixel is (row, col): a sample lies at x = col + ox, y = row + oy"
+#: Where a mistaken coverage_fraction puts the points it tests, from (pixel, samples).
+POINTS = {
+    "samples": lambda pixel, samples: sample_points(pixel, samples),
+    "centre": lambda pixel, samples: np.array([[pixel[1] + 0.5, pixel[0] + 0.5]]),
+    "from the centre": lambda pixel, samples: sample_points(pixel, samples) + 0.5,
+    "minus a half": lambda pixel, samples: sample_points(pixel, samples) - 0.5,
+    "y up": lambda pixel, samples: np.asarray(samples, float) * [1, -1] + [pixel[1], pixel[0] + 1],
+    "(row, col)": lambda pixel, samples: np.asarray(samples, float) + [pixel[0], pixel[1]],
+}
+SNAPPING = {
+    "even": snap,
+    "none": lambda xy: np.asarray(xy, dtype=float),
+    "half up": lambda xy: np.floor(np.asarray(xy, float) * 256 + 0.5) / 256,
+    "down": lambda xy: np.floor(np.asarray(xy, float) * 256) / 256,
+}
+
+
+def fraction_with(
+    xy, pixel, samples, *, snapping="even", owns=TOP_LEFT, winding="both", points="samples",
+    count=False,
+):  # fmt: skip
+    """coverage_fraction with the usual mistakes as knobs (the defaults are the rule)."""
+    pts = POINTS[points](pixel, samples)
+    inside = covered(SNAPPING[snapping](xy), pts, owns, winding, vertices="exact")
+    return float(inside.sum()) if count else float(inside.mean())
+
+
+def _snap_words(args, expected, got) -> str:
+    xy = args[0]
+    moved = ", ".join(f"{exact(a)} → {exact(b)}" for a, b in zip(xy, snap(xy)) if (a != b).any())
+    return (
+        "you tested the unsnapped vertices; snap them to the 1/256 grid first (round half to "
+        f"even): {moved or 'here they are on the grid already'}"
+    )
+
+
+def _tie_words(owns):
+    def words(args, expected, got):
+        xy, pixel, samples = args
+        snapped = snap(xy)
+        points = sample_points(pixel, samples)
+        on = next(((k, w) for k, p in enumerate(points) if (w := _edge_words(snapped, p))), None)
+        where = f"; here sample {on[0]} at {vec(points[on[0]])} {on[1]}" if on else ""
+        return owns_words(owns) + where
+
+    return words
+
+
+_WINDING = (
+    "this triangle runs {which} on screen (E(v1, v2, v3) {sign} 0) and you covered none of its "
+    "samples: handle both windings (flip the signs, or swap two vertices)"
+)
+
+COVERAGE_KNOBS = Knobs(fraction_with, {
+    "snapping": [
+        Slip("no snapping", _snap_words, "none"),
+        Slip("snapping half up", "snapping rounds half to even (np.rint), not half up "
+             "(floor(x + ½))", "half up"),
+        Slip("snapping down", "snapping rounds to the nearest 1/256 px (half to even), not down",
+             "down"),
+    ],
+    "winding": [
+        Slip("one winding only", _WINDING.format(which="counter-clockwise", sign="<"),
+             "clockwise only"),
+        Slip("one winding only", _WINDING.format(which="clockwise", sign=">"),
+             "counter-clockwise only"),
+    ],
+    "points": [
+        Slip("centre only", "you tested the pixel centre only; test each of the samples",
+             "centre"),
+        Slip("offsets from the centre", "the offsets are from the pixel's top-left corner "
+             "(col, row), not its centre: sample s lies at (col + ox, row + oy)",
+             "from the centre"),
+        Slip("offsets minus a half", "sample s lies at (col + ox, row + oy): the offsets are "
+             "from the top-left corner, do not subtract ½", "minus a half"),
+        Slip("offsets y up", "the offsets are y down (like window coordinates): y = row + oy, "
+             "not row + 1 − oy", "y up"),
+        Slip("(row, col) order", "pixel is (row, col): a sample lies at x = col + ox, "
+             "y = row + oy", "(row, col)"),
+    ],
+    "count": [
+        Slip("count, not fraction", "that is the number of samples covered; the fraction is "
+             "(samples covered) / S", True),
+    ],
+})  # fmt: skip
+TIE_KNOBS = Knobs(
+    fraction_with,
+    {"owns": [Slip(owns_kind(o), _tie_words(o), o) for o in owns_variants()]},
+    most=1,
+)
+
+COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS]
+
+
+def _coverage_rule(args, expected, got) -> str:
+    xy = args[0]
+    if float(edge_function(*snap(xy))) == 0:
+        return ": its vertices are collinear once snapped, and a zero-area triangle covers no sample"  # fmt: skip
     return "; the fraction is (samples covered) / S, each sample decided like a pixel centre"
 
 
@@ -245,23 +272,23 @@ def draw_coverage_case(ax, case, got):
 
 
 def as_fraction(value) -> float:
-    refuse_non_answers(value, "a number")
-    arr = np.asarray(value)
-    if arr.size != 1 or arr.dtype.kind not in "uifb":
-        try:
-            return float(value)  # a Fraction, say
-        except (TypeError, ValueError):
-            raise WrongAnswerType(f"returned {value!r:.60}, not one number") from None
-    return float(arr.item())
-
-
-def same_number(got, expected, args) -> bool:
-    return close(got, expected)
+    """A number (a bool counts as 0 or 1: one sample covered, or not)."""
+    if isinstance(value, (bool, np.bool_)):
+        return float(value)
+    return float(as_number(value))
 
 
 def same_fraction(got, expected, args) -> bool:
     """A fraction k/S: any answer nearer than 1e-6 (a wrong count is 1/S ≥ 1/16 away)."""
     return abs(got - expected) <= 1e-6
+
+
+def coverage_exercise(scene) -> Exercise:
+    return Exercise(
+        "coverage_fraction", coverage_cases, as_fraction, same_fraction, explain_coverage,
+        _coverage_rule, COVERAGE_MISTAKES, answers=(PackageAnswer(rasterize),),
+        draw=draw_coverage_case, scene=scene,
+    )  # fmt: skip
 
 
 # -- resolve ----------------------------------------------------------------------------------
@@ -271,9 +298,9 @@ def expected_resolve(colours, ids, background) -> np.ndarray:
     return Frame.resolve(pixel, np.asarray(colours, dtype=float)[None, None], background)[0, 0]
 
 
-def _resolve_case(label, ids, colours, background):
+def _resolve_case(label, ids, colours, background, dtype=float):
     ids = np.asarray(ids, dtype=np.int64)
-    colours = np.asarray(colours, dtype=float).copy()
+    colours = np.asarray(colours, dtype=dtype).copy()
     colours[ids < 0] = np.nan  # no triangle wrote these samples (CONVENTIONS: NaN outside)
     background = np.asarray(background, dtype=float)
     args = (colours, ids, background)
@@ -305,54 +332,92 @@ def resolve_cases():
         out.append(
             _resolve_case(f"random {n + 1}: {s} samples", ids, colours, rng.uniform(0, 1, 3))
         )
+    # colours as matplotlib's imread gives them: float32 (a float32 mean is right, too)
+    ids, colours = rng.integers(-1, 3, size=8), rng.uniform(0, 1, size=(8, 3))
+    label = "8 samples, float32 colours (as from imread)"
+    out.append(_resolve_case(label, ids, colours, rng.uniform(0, 1, 3), np.float32))
     return out
 
 
 def as_colour(value) -> np.ndarray:
-    refuse_non_answers(value, "a colour")
-    if np.asarray(value, dtype=object).dtype.kind == "O" and any(
-        isinstance(v, str | bytes) for v in np.ravel(np.asarray(value, dtype=object))
-    ):
-        raise WrongAnswerType(f"returned {value!r:.60}: text, not a colour")
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {value!r:.60}, not a colour") from None
-    if arr.size != 3:
-        raise WrongAnswerType(f"returned {value!r:.60}; expected one colour of 3 channels")
-    return arr.reshape(3)
+    return as_numbers(value, (3,), "one colour of 3 channels (R, G, B)")
 
 
 def same_colour(got, expected, args) -> bool:
-    return all_close(got, expected)
+    """Within 1e-6: a colour computed in float32 (an image from imread) is right."""
+    return all_close(got, expected, 1e-6)
 
 
 def explain_resolve(args, expected, got) -> str:
     colours, ids, background = args
-    s, covered = len(ids), ids >= 0
-    k = int(covered.sum())
-    head = (
+    s, k = len(ids), int((ids >= 0).sum())
+    return (
         f"ids {ids.tolist()} ({k} of {s} samples covered), background {vec(background)}: the "
         f"resolve is {vec(expected, got)}; yours is {vec(got, expected)}"
     )
-    rule = (
+
+
+def _mean_rule(args) -> str:
+    _, ids, _ = args
+    s, k = len(ids), int((ids >= 0).sum())
+    return (
         f"the mean over all {s} samples, the {s - k} uncovered one{'s' * (s - k != 1)} "
         "counting as the background"
     )
-    if np.isnan(got).any():
-        return f"{head}: uncovered samples hold NaN (no triangle wrote them); {rule}"
-    if k and all_close(got, colours[covered].mean(axis=0)):
-        return f"{head}: you averaged the {k} covered sample{'s' * (k > 1)} only; {rule}"
-    if all_close(got, np.where(covered[:, None], colours, 0.0).mean(axis=0)):
-        return f"{head}: the uncovered samples count as the background {vec(background)}, not as black; {rule}"
-    if k:
-        owner = np.bincount(ids[covered]).argmax()
-        if all_close(got, colours[ids == owner][0]):
-            return (
-                f"{head}: that is the colour of the triangle owning most samples; the resolve "
-                f"mixes them all: {rule}"
-            )
-    return f"{head}; {rule}: (Σ covered colours + {s - k}·background) / {s}"
+
+
+def _covered_mean(colours, ids, background):
+    c = ids >= 0
+    return colours[c].mean(axis=0) if c.any() else None
+
+
+def _majority(colours, ids, background):
+    c = ids >= 0
+    return colours[ids == np.bincount(ids[c]).argmax()][0] if c.any() else None
+
+
+def _resolve_words(text: str):
+    def words(args, expected, got):
+        _, ids, background = args
+        k = int((ids >= 0).sum())
+        return (
+            ": " + text.format(k=k, s="s" * (k != 1), bg=vec(background)) + "; " + _mean_rule(args)
+        )
+
+    return words
+
+
+def _with_background(colours, ids, background):
+    return np.where((ids >= 0)[:, None], colours, background)
+
+
+RESOLVE_MISTAKES = [
+    Mistake("covered only", _resolve_words("you averaged the {k} covered sample{s} only"),
+            gives=_covered_mean),
+    Mistake("uncovered as black", _resolve_words("the uncovered samples count as the background "
+            "{bg}, not as black"),
+            gives=lambda c, i, b: np.where((i >= 0)[:, None], c, 0.0).mean(axis=0)),
+    Mistake("NaN samples", _resolve_words("uncovered samples hold NaN (no triangle wrote "
+            "them), and a mean with NaN is NaN"), gives=lambda c, i, b: c.mean(axis=0)),
+    Mistake("majority", _resolve_words("that is the colour of the triangle owning most "
+            "samples; the resolve mixes them all"), gives=_majority),
+    Mistake("background once", _resolve_words("the background counts once for every uncovered "
+            "sample, not once in all"),
+            gives=lambda c, i, b: (np.nansum(c[i >= 0], axis=0) + b) / ((i >= 0).sum() + 1)),
+    Mistake("sum", _resolve_words("that is the sum of the samples; the resolve is their mean"),
+            gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
+    Mistake("first sample", _resolve_words("that is sample 0 alone"),
+            gives=lambda c, i, b: _with_background(c, i, b)[0]),
+]  # fmt: skip
+
+
+def resolve_exercise(scene) -> Exercise:
+    return Exercise(
+        "resolve", resolve_cases, as_colour, same_colour, explain_resolve,
+        lambda args, e, g: f"; {_mean_rule(args)}: (Σ covered colours + (S − k)·background) / S",
+        RESOLVE_MISTAKES, answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case,
+        scene=scene,
+    )  # fmt: skip
 
 
 def draw_resolve_case(ax, case, got):

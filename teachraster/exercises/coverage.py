@@ -1,24 +1,33 @@
-"""Coverage exercises (``covers``, ``fill``): run them, and explain each wrong pixel by the rules.
+"""Coverage by the rules and by the typical wrong rules; a wrong pixel explained by the rules.
 
 The expected coverage is the core's (:func:`teachraster.rasterize`: snapped edge functions and
-the one top-left rule). A wrong pixel is explained from the exact edge functions at its centre:
-on an edge (which kind, and what the top-left rule says), on a vertex, outside an edge, or
-strictly inside. A whole case is also compared with the coverage a typical mistake would give
-(sampling at pixel corners, a bottom-right rule, every edge or no edge owning its centres, one
-winding only), each computed with the core on a moved or mirrored triangle, so that the
-explanation can name the mistake.
+the one top-left rule). A mistake is reproduced by :func:`covered` with a knob turned: which
+kinds of edge own a centre lying exactly on them (:data:`TOP_LEFT` is the rule: top and left
+edges; a student's rule may own every edge, none, or the bottom and right ones), which winding
+is handled, where the pixel is sampled (its corner instead of its centre), how the vertices are
+rounded. Kinds of edges come from the core's :func:`~teachraster.core.edges.top_left_edges`;
+edge functions are the core's :func:`~teachraster.core.edges.edge_function` on snapped
+vertices (exact on the 1/256 grid). A wrong pixel is explained from the exact edge functions at
+its centre (:func:`explain_pixel`): on an edge (which kind, and what the top-left rule says),
+on a vertex, outside an edge, or strictly inside.
 """
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
-from ..core.edges import edge_function, edge_values_at, is_top_left, setup_edges
+from ..core.edges import edge_function, passes, top_left_edges
 from ..core.fill import rasterize
+from ..core.snapping import snap
 from ..core.triangle import Triangle
 from .cases import CoverageCase
-from .report import Failure
 from .scalars import num
+
+#: The kinds of edge, and those the top-left rule lets own a centre lying exactly on them.
+KINDS = ("top", "bottom", "left", "right")
+TOP_LEFT = frozenset({"top", "left"})
 
 
 def fmt(x: float) -> str:
@@ -49,21 +58,150 @@ def expected_coverage(case: CoverageCase, xy: np.ndarray) -> np.ndarray:
     return rasterize(Triangle(local(case, xy)), w, h).coverage
 
 
+def kind_of(a, b) -> str:
+    """ "top", "left", "bottom" or "right" for the directed edge a→b, interior on its
+    positive side (y down), by the core's top-left test."""
+    owns = bool(top_left_edges(np.asarray(a, dtype=float), np.asarray(b, dtype=float)))
+    if a[1] == b[1]:
+        return "top" if owns else "bottom"
+    return "left" if owns else "right"
+
+
 def edge_kind(xy: np.ndarray, k: int) -> str:
-    """ "top", "bottom", "left" or "right" for edge v_k -> v_{k+1}, by the top-left rule."""
+    """The kind of edge v_k → v_{k+1} of a triangle given in any winding."""
     a, b = xy[k], xy[(k + 1) % 3]
     if area2(xy) < 0:  # the interior is on the negative side: the rule sees the edge b -> a
         a, b = b, a
-    if a[1] == b[1]:
-        return "top" if is_top_left(a, b) else "bottom"
-    return "left" if is_top_left(a, b) else "right"
+    return kind_of(a, b)
 
 
 def edge_name(k: int) -> str:
     return f"v{k + 1}→v{(k + 1) % 3 + 1}"
 
 
-def _values(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
+# -- coverage under a rule, right or wrong ------------------------------------------------------
+def covered(xy, points, owns=TOP_LEFT, winding: str = "both", vertices: str = "snapped"):
+    """Which ``points`` (n, 2) triangle ``xy`` covers under a rule, right or wrong.
+
+    ``owns`` is the set of edge kinds that own a point exactly on them (:data:`TOP_LEFT`);
+    ``winding`` "both" (the rule), "clockwise only" or "counter-clockwise only" (a student
+    testing E ≥ 0, or E ≤ 0, without orienting the triangle: the other winding covers
+    nothing); ``vertices`` "snapped" (to 1/256 px, the rule), "rounded" (to whole pixels),
+    "truncated" (int()) or "exact" (as given, not snapped).
+
+    >>> xy = np.array([[0.0, 0], [4, 0], [0, 4]])   # on its top, left and right edge:
+    >>> covered(xy, np.array([[1.0, 0], [0, 1], [2, 2]])).tolist()
+    [True, True, False]
+    >>> covered(xy, np.array([[1.0, 0], [2, 2]]), owns=frozenset(KINDS)).tolist()
+    [True, True]
+    """
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
+    return _apply(_edge_data(np.asarray(xy, dtype=float), points, vertices), owns, winding)
+
+
+def _edge_data(xy: np.ndarray, points: np.ndarray, vertices: str):
+    """(E of each oriented edge at the points (3, n), the edges' kinds, the signed area)."""
+    v = {"rounded": np.round, "truncated": np.trunc, "exact": np.asarray}.get(vertices, snap)(xy)
+    area = float(edge_function(v[0], v[1], v[2]))
+    if area < 0:
+        v = v[[0, 2, 1]]
+    e = np.array([edge_function(v[k], v[(k + 1) % 3], points) for k in range(3)])
+    return e, tuple(kind_of(v[k], v[(k + 1) % 3]) for k in range(3)), area
+
+
+def _apply(data, owns, winding: str) -> np.ndarray:
+    e, kinds, area = data
+    n = e.shape[1]
+    wrong_side = (winding == "clockwise only" and area < 0) or (
+        winding == "counter-clockwise only" and area > 0
+    )
+    if area == 0 or wrong_side:
+        return np.zeros(n, dtype=bool)
+    inside = np.ones(n, dtype=bool)
+    for k in range(3):
+        inside &= passes(e[k], kinds[k] in owns)
+    return inside
+
+
+@lru_cache(maxsize=512)
+def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap: bool, vertices: str):
+    w, h = size
+    rows, cols = np.indices((h, w))
+    offset = 0.0 if at == "corners" else 0.5
+    points = np.stack([cols + origin[0] + offset, rows + origin[1] + offset], axis=-1)
+    points = points.reshape(-1, 2)
+    v = np.frombuffer(xy, dtype=float).reshape(3, 2)
+    if swap:
+        v, points = v[:, ::-1], points[:, ::-1]
+    return _edge_data(v, points, vertices)
+
+
+def rule_image(
+    case: CoverageCase, xy, *, at="centres", swap=False, vertices="snapped", **rule
+) -> np.ndarray:
+    """(h, w) coverage of one triangle on the case's window under a rule (:func:`covered`);
+    ``at="corners"`` samples pixel (i, j) at (j, i) instead of its centre, ``swap`` swaps x
+    and y in the vertices and the points (a student's p[1], p[0])."""
+    w, h = case.size
+    key = np.ascontiguousarray(xy, dtype=float).tobytes()
+    data = _cached_edges(key, tuple(case.origin), (w, h), at, swap, vertices)
+    return _apply(data, rule.get("owns", TOP_LEFT), rule.get("winding", "both")).reshape(h, w)
+
+
+def rule_images(case: CoverageCase, **rule) -> np.ndarray:
+    """(n, h, w): :func:`rule_image` of every triangle of the case."""
+    return np.array([rule_image(case, xy, **rule) for xy in case.triangles])
+
+
+def owns_words(owns) -> str:
+    """Words for a tie rule given by the kinds of edges that own the centres on them."""
+    owns = frozenset(owns)
+    named = {
+        frozenset(): "you cover no centre on an edge (E > 0 on all three edges): a centre on "
+        "an edge shared by two triangles is then covered by neither",
+        frozenset(KINDS): "you cover every centre on an edge (E ≥ 0 on all three edges): a "
+        "centre on an edge shared by two triangles is then covered twice",
+        frozenset({"bottom", "right"}): "your coverage follows a bottom-right rule (centres on "
+        "bottom and right edges covered, on top and left edges left out)",
+        frozenset({"top", "right"}): "your coverage follows a top-right rule (centres on top "
+        "and right edges covered, on bottom and left edges left out)",
+        frozenset({"bottom", "left"}): "your coverage follows a bottom-left rule (centres on "
+        "bottom and left edges covered, on top and right edges left out)",
+    }
+    text = named.get(owns)
+    if text is None:
+        yes = " and ".join(k for k in KINDS if k in owns) or "no"
+        no = " and ".join(k for k in KINDS if k not in owns) or "no"
+        text = f"you cover the centres lying on {yes} edges and leave out those on {no} edges"
+    if owns and owns != frozenset(KINDS):
+        text += ": the conventions use the top-left rule (top and left edges own their centres)"
+    return text
+
+
+def owns_kind(owns) -> str:
+    """A few words for a tie rule: "bottom-right rule", "no edge owns its centres"..."""
+    owns = frozenset(owns)
+    if not owns:
+        return "no edge owns its centres"
+    if owns == frozenset(KINDS):
+        return "every edge owns its centres"
+    return "-".join(k for k in KINDS if k in owns) + " rule"
+
+
+def owns_variants() -> list[frozenset]:
+    """Every wrong tie rule, the named ones first."""
+    first = [frozenset(), frozenset(KINDS), frozenset({"bottom", "right"}),
+             frozenset({"top", "right"}), frozenset({"bottom", "left"})]  # fmt: skip
+    rest = [
+        frozenset(k for bit, k in enumerate(KINDS) if n >> bit & 1)
+        for n in range(16)
+        if frozenset(k for bit, k in enumerate(KINDS) if n >> bit & 1) not in first
+    ]
+    return [o for o in first + rest if o != TOP_LEFT]
+
+
+# -- one wrong pixel, explained by the rules ------------------------------------------------------
+def values_at(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
     """Edge functions at centre ``c``, signed so that inside is positive (exact)."""
     s = 1.0 if area2(xy) >= 0 else -1.0
     return np.array([s * float(edge_function(xy[k], xy[(k + 1) % 3], c)) for k in range(3)])
@@ -81,7 +219,7 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             None,
             "zero area",
         )
-    e = _values(xy, c)
+    e = values_at(xy, c)
     zeros = [k for k in range(3) if e[k] == 0]
     if (e < 0).any():
         k = int(np.argmin(e))
@@ -117,108 +255,50 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
     return text, k, "inside"
 
 
-def _rule_variants(case: CoverageCase, xy: np.ndarray) -> dict[str, np.ndarray]:
-    """Coverage under the typical wrong rules, each computed with the core."""
-    w, h = case.size
-    xy_local = local(case, xy)
-    out = {"corners": rasterize(Triangle(xy_local + 0.5), w, h).coverage}
-    mirrored = np.array([w, h], dtype=float) - xy_local  # 180° turn: top-left -> bottom-right
-    out["bottom-right"] = rasterize(Triangle(mirrored), w, h).coverage[::-1, ::-1]
-    setup = setup_edges(xy_local, 8)
-    rows, cols = np.indices((h, w)).reshape(2, -1)
-    e = edge_values_at(setup, rows, cols)
-    out["closed"] = (e >= 0).all(axis=1).reshape(h, w)
-    out["open"] = (e > 0).all(axis=1).reshape(h, w) & (setup.area2 != 0)
-    return out
-
-
-MISTAKES = {
-    "corners": "your coverage is the triangle sampled at pixel corners (j, i) instead of "
-    "the pixel centres (j + 0.5, i + 0.5)",
-    "bottom-right": "your coverage follows a bottom-right rule (centres on bottom and right "
-    "edges covered, on top and left edges left out): the conventions use the top-left rule",
-    "closed": "you cover every centre on an edge (E ≥ 0 on all three edges): a centre on an "
-    "edge shared by two triangles is then covered twice",
-    "open": "you cover no centre on an edge (E > 0 on all three edges): a centre on an edge "
-    "shared by two triangles is then covered by neither",
-}
-
-
-def diagnose(case: CoverageCase, xy: np.ndarray, got: np.ndarray, expected: np.ndarray):
-    """(kind, one sentence) naming the mistake when a typical wrong rule explains the case,
-    or ("", "")."""
-    if area2(xy) < 0 and not got.any() and expected.any():
-        return "one winding only", (
-            f"you covered nothing of a triangle whose vertices run counter-clockwise on screen "
-            f"(E(v1, v2, v3) = {fmt(area2(xy))} < 0): handle both windings (swap two vertices, "
-            "or accept all-negative edge functions)"
-        )
-    matches = [
-        name
-        for name, cov in _rule_variants(case, xy).items()
-        if not np.array_equal(cov, expected) and np.array_equal(cov, got)
-    ]
-    if matches:  # several wrong rules can give the same pixels on one triangle: name each
-        return " or ".join(matches), "; or ".join(MISTAKES[name] for name in matches)
-    far = max(case.origin)
-    if far > 1e4:
-        ulp = float(np.spacing(np.float32(far)))
-        return "float32", (
-            f"this triangle lies {fmt(far)} px from the origin, where float32 numbers are "
-            f"{fmt(ulp)} px apart and cannot hold the 1/256-px grid: compute the edge functions "
-            "in float64 (or exact integers), relative to a vertex"
-        )
-    return "", ""
-
-
-def coverage_failure(case, k: int, got_all: np.ndarray, expected_all: np.ndarray) -> Failure:
-    """The failure of triangle ``k`` of ``case`` (got_all, expected_all: (n, h, w) bool)."""
-    xy = case.triangles[k]
-    got, expected = got_all[k], expected_all[k]
-    # the example pixel: preferably one exactly on a single edge (the top-left rule's case)
-    centres = [
-        np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5])
-        for i, j in np.argwhere(got != expected)
-    ]
+def example_pixel(case: CoverageCase, k: int, got: np.ndarray, expected: np.ndarray):
+    """((i, j), centre) of a wrong pixel of triangle ``k`` that shows the rule best: one
+    exactly on a single edge (a tie), else one strictly inside, else the first."""
     wrong = np.argwhere(got != expected)
-    mistake_kind, mistake = diagnose(case, xy, got, expected)
-    zeros = [int((_values(xy, c) == 0).sum()) for c in centres] if area2(xy) else [0]
-    # a winding mistake shows best inside the triangle, a tie rule on a single edge
-    want = 0 if mistake.startswith("you covered nothing") else 1
-    n = zeros.index(want) if want in zeros else 0
-    (i, j), c = wrong[n], centres[n]
-    text, edge, pixel_kind = explain_pixel(xy, c, bool(expected[i, j]))
+    xy = case.triangles[k]
+    centres = [np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5]) for i, j in wrong]
+    if area2(xy) == 0:
+        return tuple(wrong[0]), centres[0]
+    zeros = [int((values_at(xy, c) == 0).sum()) for c in centres]
+    inside = [bool((values_at(xy, c) > 0).all()) for c in centres]
+    n = zeros.index(1) if 1 in zeros else (inside.index(True) if True in inside else 0)
+    return tuple(int(v) for v in wrong[n]), centres[n]
+
+
+def wrong_triangle(got, expected) -> int:
+    """The first triangle of a case whose image differs (a transposed one, transposed back)."""
+    for k, (g, e) in enumerate(zip(got, expected)):
+        g = np.asarray(g)
+        if g.shape != e.shape:
+            g = g.T
+        if g.shape != e.shape or not np.array_equal(g, e):
+            return k
+    return 0
+
+
+def head(case: CoverageCase, got, expected) -> tuple[str, int, tuple, int | None]:
+    """The example of a failing case: (text, triangle, pixel (i, j), deciding edge)."""
+    k = wrong_triangle(got, expected)
+    g, e = np.asarray(got[k]), expected[k]
+    if g.shape != e.shape:
+        g = g.T
+    (i, j), c = example_pixel(case, k, g, e)
+    xy = case.triangles[k]
+    text, edge, _ = explain_pixel(xy, c, bool(e[i, j]))
+    if len(case.triangles) > 1:
+        text = f"triangle {k}: {text}"
     if case.mesh:
-        times = int(got_all[:, i, j].sum())
+        times = sum(
+            int(np.asarray(x if np.shape(x) == e.shape else np.asarray(x).T)[i, j]) for x in got
+        )
         if times != 1:
             text += (
                 f"; over this mesh your function covers {point(c)} {times} times, a watertight "
                 "mesh must cover it exactly once"
             )
-    n_missing = int((expected & ~got).sum())
-    n_extra = int((got & ~expected).sum())
-    counts = f" ({n_missing} pixel(s) missing, {n_extra} extra)"
-    explanation = (f"{mistake}. For example, " if mistake else "") + text + counts
-    label = case.label + (f", triangle {k}" if len(case.triangles) > 1 else "")
-
-    def draw(ax):
-        from .drawing import draw_coverage
-
-        return draw_coverage(ax, case, xy, expected, got, edge, (i, j))
-
-    return Failure(label, explanation, expected, got, draw, mistake_kind or pixel_kind)
-
-
-def example_drawing(case: CoverageCase, expected_only: bool = False):
-    """A drawing of the case's first triangle: a passing case, or (``expected_only``) the
-    rule's pixels alone, for a function that gave no answer."""
-    xy = case.triangles[0]
-    expected = expected_coverage(case, xy)
-
-    def draw(ax):
-        from .drawing import draw_coverage
-
-        got = None if expected_only else expected
-        return draw_coverage(ax, case, xy, expected, got, None, None)
-
-    return draw
+    missing, extra = int((e & ~g).sum()), int((g & ~e).sum())
+    return f"{text} ({missing} pixel(s) missing, {extra} extra)", k, (i, j), edge

@@ -1,162 +1,273 @@
-"""Check the coverage exercises, ``covers`` (one centre) and ``fill`` (a whole image).
+"""The coverage exercises, ``covers`` (one centre) and ``fill`` (a whole image), as exercises.
 
-As for the value exercises (:mod:`.value_checks`): every case runs within the budget and the
-check stops at the first case past its limit; then each answer is compared with the core's
-coverage and each failure explained (:mod:`.coverage`), within the budget too. ``fill`` may
-return bools or 0/1 numbers (``np.zeros((h, w))`` filled with 1.0 is a correct answer); a
-transposed image is recognised as such.
+A case is a window of pixels with one triangle or more (:mod:`.cases`); its answer is one
+(h, w) bool image per triangle. ``covers`` is called once per pixel of a window around each
+triangle; ``fill`` once per triangle, and may return bools or 0/1 numbers
+(``np.zeros((h, w))`` filled with 1.0 is a correct answer). The mistakes are the rule with a
+knob turned (:func:`.coverage.rule_images`): the tie rule by the kinds of edges that own their
+centres, one winding only, sampling at pixel corners, vertices rounded to whole pixels; and an
+empty answer, a transposed or upside-down image, x and y swapped, float32 far from the origin.
+An explanation names the mistake, then shows it on one wrong pixel, the most telling one.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from functools import cache
 
 import numpy as np
 
-from . import coverage
+from ..core.fill import rasterize
+from . import coverage as cov
 from .answers import as_bool, as_coverage
 from .cases import CoverageCase, catalogue_coverage, random_coverage
-from .report import Failure, Report
-from .running import SKIPPED, current, run_case, run_checker
-from .value_checks import STOPS, all_not_implemented
+from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
+
+FLOAT32_EPS = 2.0**-24
 
 
-def _window(case: CoverageCase, xy: np.ndarray):
-    """Rows and columns of the window worth testing: the triangle's box and one more pixel."""
+def tested(case: CoverageCase, xy: np.ndarray) -> np.ndarray:
+    """(h, w) bool: the pixels ``covers`` is asked about, the triangle's box and one more."""
     w, h = case.size
     lo = np.floor(xy.min(axis=0) - case.origin).astype(int) - 1
     hi = np.ceil(xy.max(axis=0) - case.origin).astype(int) + 1
-    return range(max(lo[1], 0), min(hi[1], h)), range(max(lo[0], 0), min(hi[0], w))
+    mask = np.zeros((h, w), dtype=bool)
+    mask[max(lo[1], 0) : min(hi[1], h), max(lo[0], 0) : min(hi[0], w)] = True
+    return mask
 
 
-def _covers_body(fn, case: CoverageCase):
-    def body():
-        w, h = case.size
-        out = np.zeros((len(case.triangles), h, w), dtype=bool)
-        x0, y0 = case.origin
-        for t, xy in enumerate(case.triangles):
-            rows, cols = _window(case, xy)
-            for i in rows:
-                for j in cols:
-                    p = np.array([x0 + j + 0.5, y0 + i + 0.5])
-                    out[t, i, j] = as_bool(fn(xy.copy(), p))
-        return out
-
-    return body
+def _masks(case: CoverageCase) -> np.ndarray:
+    return np.array([tested(case, xy) for xy in case.triangles])
 
 
-def _fill_body(fn, case: CoverageCase):
-    def body():
-        w, h = case.size
-        return [as_coverage(fn(xy.copy(), w, h), h, w) for xy in case.triangles]
-
-    return body
-
-
-#: What a mirrored answer means, by exercise and mirror.
-MIRRORED = {
-    ("fill", "transposed"): (
-        "your image is transposed: its [i, j] holds the pixel in row j and column i. An image "
-        "is indexed [row, column] = [y, x]: np.zeros((height, width)) = {shape}, and out[i, j] "
-        "is the pixel whose centre is (x, y) = (j + 0.5, i + 0.5)"
-    ),
-    ("covers", "transposed"): (
-        "your coverage is the rule's mirrored across the diagonal: x and y are swapped "
-        "somewhere. A point is (x, y) = (p[0], p[1]), x to the right, y down, and so is each "
-        "vertex"
-    ),
-    ("fill", "upside down"): (
-        "your image is upside down: row i holds the pixels whose centres have y = i + 0.5, with "
-        "y pointing down (row 0 at the top), so do not flip the rows (height − 1 − i)"
-    ),
-}
+def call_covers(fn, args) -> np.ndarray:
+    """The student's covers at every tested centre of every triangle: (n, h, w) bool."""
+    (case,) = args
+    w, h = case.size
+    out = np.zeros((len(case.triangles), h, w), dtype=bool)
+    x0, y0 = case.origin
+    for t, xy in enumerate(case.triangles):
+        for i, j in np.argwhere(tested(case, xy)):
+            p = np.array([x0 + j + 0.5, y0 + i + 0.5])
+            out[t, i, j] = as_bool(fn(xy.copy(), p))
+    return out
 
 
-def _mirrored(name: str, case, k: int, got: np.ndarray, expected: np.ndarray, how: str):
-    text = MIRRORED[name, how].format(shape=expected.shape)
-    label = case.label + (f", triangle {k}" if len(case.triangles) > 1 else "")
-    shown = got if got.shape == expected.shape else got.T
-
-    def draw(ax):
-        from .drawing import draw_coverage
-
-        return draw_coverage(ax, case, case.triangles[k], expected, shown, None, None)
-
-    return Failure(label, text, expected, got, draw, how)
+def call_fill(fn, args):
+    """The student's fill of every triangle: (n, h, w) (or (n, w, h), transposed) bool."""
+    (case,) = args
+    w, h = case.size
+    images = [as_coverage(fn(xy.copy(), w, h), h, w) for xy in case.triangles]
+    if len({im.shape for im in images}) == 1:
+        return np.array(images)
+    return tuple(images)
 
 
-def _compare(name: str, case: CoverageCase, got: list, expected: np.ndarray) -> Failure | None:
-    """The first wrong triangle of ``case`` explained, or None when all are right."""
-    for k, g in enumerate(got):
-        e = expected[k]
-        flipped = g.shape != e.shape
-        if not flipped and np.array_equal(g, e):
-            continue
-        if np.array_equal(g.T, e):
-            return _mirrored(name, case, k, g, e, "transposed")
-        if name == "fill" and not flipped and np.array_equal(g[::-1], e):
-            return _mirrored(name, case, k, g, e, "upside down")
-        fixed = np.array([x.T if x.shape != e.shape else x for x in got])
-        failure = coverage.coverage_failure(case, k, fixed, expected)
-        if flipped:
-            text = (
-                f"your image has shape {g.shape} = (width, height), transposed: an image is "
-                f"(height, width) = {e.shape}. Even transposed back it is wrong: "
-            )
-            failure = replace(failure, explanation=text + failure.explanation, kind="transposed")
-        return failure
-    return None
+def same_coverage(got, expected, args) -> bool:
+    return (
+        isinstance(got, np.ndarray)
+        and got.shape == expected.shape
+        and bool(np.array_equal(got, expected))
+    )
 
 
-def _check_coverage(name: str, fn, cases: list[CoverageCase], body) -> Report:
-    ran = []
-    for k, case in enumerate(cases):
-        outcome = run_case(body(fn, case), case=f"{k + 1} of {len(cases)}")
-        if outcome.error == SKIPPED:
-            break
-        ran.append((case, outcome))
-        if outcome.kind in STOPS:
-            break
-    example = coverage.example_drawing(cases[0])
-    if all_not_implemented(ran):
-        return Report(name, [], len(cases), True, example)
-    failures = []
-    for case, outcome in ran:
-        expected = np.array([coverage.expected_coverage(case, xy) for xy in case.triangles])
-        if outcome.error is not None:
-            draw = coverage.example_drawing(case, expected_only=True)
-            failures.append(Failure(case.label, outcome.error, expected, None, draw, outcome.kind))
-            continue
-        fallback = Failure(case.label, "your coverage differs from the rule's", expected, None)
-        failure = run_checker(
-            lambda c=case, o=outcome, e=expected: _compare(name, c, o.value, e), fallback
-        )
-        if failure is not None:
-            failures.append(failure)
-    return Report(name, failures, len(cases), False, example, current().stopped, len(ran))
+def _expected(case: CoverageCase) -> np.ndarray:
+    return np.array([cov.expected_coverage(case, xy) for xy in case.triangles])
 
 
-def check_covers(fn) -> Report:
-    cases = catalogue_coverage() + random_coverage()
-    return _check_coverage("covers", fn, cases, _covers_body)
+@cache
+def covers_cases():
+    return [(c.label, (c,), _expected(c)) for c in catalogue_coverage() + random_coverage()]
 
 
-def check_fill(fn) -> Report:
+@cache
+def fill_cases():
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
-    report = _check_coverage("fill", fn, cases, _fill_body)
-    return replace(report, comparison=_lazy_comparison(fn, current().seconds))
+    return [(c.label, (c,), _expected(c)) for c in cases]
 
 
-def _lazy_comparison(fn, seconds: float):
-    """The whole-picture comparison, computed on the first ``report.compare`` only."""
-    done = []
+# -- the mistakes -------------------------------------------------------------------------------
+def _winding_words(args, expected, got, which="counter-clockwise") -> str:
+    (case,) = args
+    sign = -1 if which == "counter-clockwise" else 1
+    xy = next((t for t in case.triangles if np.sign(cov.area2(t)) == sign), case.triangles[0])
+    return (
+        f"you covered nothing of a triangle whose vertices run {which} on screen "
+        f"(E(v1, v2, v3) = {cov.fmt(cov.area2(xy))}): handle both windings (swap two vertices, "
+        "or accept all-negative edge functions)"
+    )
 
-    def comparison():
-        from .compare import COMPARE_BUDGET, compare_fill
 
-        if not done:
-            done.append(compare_fill(fn, max(seconds, COMPARE_BUDGET)))
-        return done[0]
+def _far_words(args, expected, got) -> str:
+    (case,) = args
+    far = max(case.origin)
+    ulp = float(np.spacing(np.float32(far)))
+    return (
+        f"this triangle lies {cov.fmt(far)} px from the origin, where float32 numbers are "
+        f"{cov.fmt(ulp)} px apart and cannot hold the 1/256-px grid: compute the edge functions "
+        "in float64 (or exact integers), relative to a vertex"
+    )
 
-    return comparison
+
+def _float32_fits(args, expected, got) -> bool:
+    """Far from the origin, every wrong centre lies within float32's rounding of an edge."""
+    (case,) = args
+    far = float(np.abs(case.triangles).max())
+    if far < 1e4 or not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return False
+    for k, xy in enumerate(case.triangles):
+        extent = float(np.abs(xy - xy[0]).max()) + 1.0
+        tol = 8 * FLOAT32_EPS * far * extent
+        for i, j in np.argwhere(got[k] != expected[k]):
+            c = np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5])
+            if np.abs(cov.values_at(xy, c)).min() > tol:
+                return False
+    return True
+
+
+def _constant_mistakes(name: str, masked: bool) -> list[Mistake]:
+    def nothing(case):
+        return np.zeros((len(case.triangles), case.size[1], case.size[0]), dtype=bool)
+
+    def everything(case):
+        return _masks(case) if masked else ~nothing(case)
+
+    what = "returns False for every centre" if name == "covers" else "returns an empty image"
+    return [
+        Mistake("covers nothing", f"your function never covers anything: it {what} of every "
+                "triangle (a placeholder such as `return False` left in, or a test that no "
+                "centre can pass?)", gives=nothing),
+        Mistake("covers everything", "your function covers every pixel it is asked about, "
+                "inside the triangle or not (a placeholder such as `return True` left in?)",
+                gives=everything),
+    ]  # fmt: skip
+
+
+def _rule(masked: bool):
+    def gives(case, owns=cov.TOP_LEFT, winding="both", at="centres", vertices="snapped"):
+        images = cov.rule_images(case, owns=owns, winding=winding, at=at, vertices=vertices)
+        return images & _masks(case) if masked else images
+
+    return gives
+
+
+def _rule_knobs(masked: bool, corners: bool) -> Knobs:
+    knobs = {
+        "owns": [Slip(cov.owns_kind(o), cov.owns_words(o), o) for o in cov.owns_variants()],
+        "winding": [
+            Slip("one winding only", _winding_words, "clockwise only"),
+            Slip("one winding only", lambda *a: _winding_words(*a, which="clockwise"),
+                 "counter-clockwise only"),
+        ],
+        "vertices": [
+            Slip("vertices rounded", "you rounded the vertices to whole pixels: a vertex keeps "
+                 "its position, snapped to the 1/256-px grid only", "rounded"),
+            Slip("vertices truncated", "you truncated the vertices to whole pixels (int()): a "
+                 "vertex keeps its position, snapped to the 1/256-px grid only", "truncated"),
+        ],
+    }  # fmt: skip
+    if corners:
+        knobs["at"] = [Slip("pixel corners", "your coverage is the triangle sampled at pixel "
+                            "corners (j, i) instead of the pixel centres (j + 0.5, i + 0.5)",
+                            "corners")]  # fmt: skip
+    return Knobs(_rule(masked), knobs, most=2)
+
+
+def _mirrored(kind: str, words: str, flip) -> Mistake:
+    return Mistake(kind, words, gives=lambda case: np.array([flip(e) for e in _expected(case)]))
+
+
+TRANSPOSED = (
+    "your image is transposed: its [i, j] holds the pixel in row j and column i. An image is "
+    "indexed [row, column] = [y, x]: np.zeros((height, width)), and out[i, j] is the pixel "
+    "whose centre is (x, y) = (j + 0.5, i + 0.5)"
+)
+UPSIDE_DOWN = (
+    "your image is upside down: row i holds the pixels whose centres have y = i + 0.5, with y "
+    "pointing down (row 0 at the top), so do not flip the rows (height − 1 − i)"
+)
+SWAPPED = (
+    "your coverage is the rule's mirrored across the diagonal: x and y are swapped somewhere. A "
+    "point is (x, y) = (p[0], p[1]), x to the right, y down, and so is each vertex"
+)
+
+
+def _transposed_and_wrong(args, expected, got) -> bool:
+    g = got if isinstance(got, np.ndarray) else None
+    return g is not None and g.shape == expected.shape[:1] + expected.shape[:0:-1] != expected.shape
+
+
+def _transposed_words(args, expected, got) -> str:
+    shape = expected.shape[1:]
+    return (
+        f"your image has shape {shape[::-1]} = (width, height), transposed: an image is "
+        f"(height, width) = {shape}. Even transposed back it is wrong"
+    )
+
+
+def mistakes(name: str) -> list:
+    """The mistakes table of ``covers`` or ``fill``, most specific first."""
+    masked = name == "covers"
+    table = _constant_mistakes(name, masked)
+    if name == "fill":
+        table += [
+            _mirrored("transposed", TRANSPOSED, lambda e: e.T),
+            _mirrored("upside down", UPSIDE_DOWN, lambda e: e[::-1]),
+        ]
+    else:
+        table.append(
+            Mistake("transposed", SWAPPED, gives=lambda case: rule_swapped(case) & _masks(case))
+        )
+    table.append(_rule_knobs(masked, corners=name == "fill"))
+    table.append(Mistake("float32", _far_words, fits=_float32_fits, only_whole=True))
+    if name == "fill":
+        table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
+    return table
+
+
+def rule_swapped(case: CoverageCase) -> np.ndarray:
+    return cov.rule_images(case, swap=True)
+
+
+# -- words and drawings -------------------------------------------------------------------------
+def explain(args, expected, got) -> str:
+    (case,) = args
+    text, *_ = cov.head(case, got, expected)
+    return text
+
+
+def compose(head: str, words: str) -> str:
+    """The mistake first, then the pixel that shows it."""
+    return f"{words}. For example, {head}" if words else head
+
+
+def draw(ax, case, got):
+    from .drawing import draw_coverage
+
+    _, (c,), expected = case
+    if got is None:
+        return draw_coverage(ax, c, c.triangles[0], expected[0], None, None, None)
+    if same_coverage(got, expected, None):
+        return draw_coverage(ax, c, c.triangles[0], expected[0], expected[0], None, None)
+    _, k, pixel, edge = cov.head(c, got, expected)
+    g = np.asarray(got[k])
+    g = g if g.shape == expected[k].shape else g.T
+    return draw_coverage(ax, c, c.triangles[k], expected[k], g, edge, pixel)
+
+
+def _exercise(name: str, cases, call, scene=None) -> Exercise:
+    return Exercise(
+        name, cases, convert=None, same=same_coverage, explain=explain,
+        rule=lambda *a: "", mistakes=mistakes(name), draw=draw, scene=scene, call=call,
+        answers=(PackageAnswer(rasterize),), compose=compose,
+    )  # fmt: skip
+
+
+def covers_exercise() -> Exercise:
+    return _exercise("covers", covers_cases, call_covers)
+
+
+def fill_exercise() -> Exercise:
+    from .picture_scenes import fill_scene
+
+    return _exercise("fill", fill_cases, call_fill, fill_scene)

@@ -19,10 +19,10 @@ from functools import cache
 import numpy as np
 
 from ..pipeline.depth import quantize
+from .answers import as_number
 from .cases import SEED
-from .running import WrongAnswerType
+from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import num
-from .scene_report import refuse_non_answers
 
 #: The unorm depth formats of the package (GL_DEPTH_COMPONENT16 and 24).
 BITS = (16, 24)
@@ -73,11 +73,7 @@ def depth_cases():
 
 def as_count(value) -> float:
     """The returned number (an int is expected; a float is judged by its value)."""
-    refuse_non_answers(value, "an integer")
-    arr = np.asarray(value)
-    if arr.size != 1 or arr.dtype.kind not in "uif":
-        raise WrongAnswerType(f"returned {value!r:.60}, not an integer")
-    return float(arr.item())
+    return float(as_number(value))
 
 
 def same_depth(got: float, expected: int, args) -> bool:
@@ -89,40 +85,61 @@ def explain_depth(args, expected, got) -> str:
     s = 2**bits - 1
     product = z * s
     shown = repr(product) if product != round(product) else str(int(product))
-    head = f"in float64 z·(2^{bits} − 1) = {z!r}·{s} = {shown}"
-    rule = f"the buffer stores the nearest integer, {expected}"
-    f32 = float(np.rint(np.float32(z) * np.float32(s)))
-    if got == f32 and got == int(product) and bits > 16:
-        return (
-            f"{head}; {rule}. Your {num(got)} is what truncation (int()) gives, and also what "
-            "float32 arithmetic gives: round to the nearest integer, in float64"
-        )
-    if got == int(product) and got != expected:
-        return (
-            f"{head}, which int() truncates to {num(got)}; {rule}: rounding by truncation "
-            "drops the fraction, round to the nearest instead"
-        )
-    if got == math.ceil(product) and got != expected:
-        return f"{head}; {rule}, not the next integer up (you rounded up)"
-    if got in (round(z * 2**bits), math.floor(z * 2**bits)):
-        return (
-            f"{head}; {rule}. Your {num(got)} multiplies by 2^{bits} = {2**bits}: the largest "
-            f"stored integer, 2^{bits} − 1 = {s}, must hold z = 1 exactly, so scale by 2^{bits} − 1"
-        )
-    if abs(got - expected / s) <= 1e-9:
-        return (
-            f"{head}; {rule}. Your {num(got)} is the depth read back, {expected}/{s}: return "
-            "the stored integer itself"
-        )
-    if got != round(got):
-        return f"{head}; your {got!r} is not an integer: {rule}"
-    if got == f32:
-        gap = float(np.spacing(np.float32(product)))
-        return (
-            f"{head}; {rule}. Yours, {num(got)}, is what float32 arithmetic gives: float32 "
-            f"numbers near {num(product)} are {num(gap)} apart. Compute in float64"
-        )
-    return f"{head}; {rule} (round(z·(2^{bits} − 1))); yours is {num(got)}"
+    return (
+        f"in float64 z·(2^{bits} − 1) = {z!r}·{s} = {shown}; the buffer stores the nearest "
+        f"integer, {expected}; yours is {num(got, expected)}"
+    )
+
+
+def _float32_words(args, expected, got) -> str:
+    z, bits = args
+    product = z * (2**bits - 1)
+    gap = float(np.spacing(np.float32(product)))
+    return (
+        f": that is what float32 arithmetic gives: float32 numbers near {num(product)} are "
+        f"{num(gap)} apart. Compute in float64"
+    )
+
+
+def _scaled(scale, rounding=round):
+    def gives(z, bits):
+        value = z * scale(bits)
+        return float(rounding(value)) if np.isfinite(value) else None
+
+    return gives
+
+
+DEPTH_MISTAKES = [
+    Mistake("truncation", ": int() truncates (it drops the fraction); round to the nearest "
+            "integer instead", gives=_scaled(lambda b: 2**b - 1, math.trunc)),
+    Mistake("rounded up", ": you rounded up; the buffer stores the nearest integer",
+            gives=_scaled(lambda b: 2**b - 1, math.ceil)),
+    Mistake("2^bits", lambda a, e, g: f": you multiplied by 2^{a[1]} = {2**a[1]}: the largest "
+            f"stored integer, 2^{a[1]} − 1 = {2**a[1] - 1}, must hold z = 1 exactly, so scale "
+            f"by 2^{a[1]} − 1", gives=_scaled(lambda b: 2**b)),
+    Mistake("2^bits", lambda a, e, g: f": you multiplied by 2^{a[1]} = {2**a[1]} and "
+            f"truncated: scale by 2^{a[1]} − 1 = {2**a[1] - 1} and round to the nearest",
+            gives=_scaled(lambda b: 2**b, math.floor)),
+    Mistake("xor", lambda a, e, g: f": `^` is exclusive or in Python: 2 ^ {a[1]} = {2 ^ a[1]}; "
+            f"the power is 2**{a[1]}, so the scale is 2**{a[1]} − 1",
+            gives=_scaled(lambda b: (2 ^ b) - 1)),
+    Mistake("2·bits", lambda a, e, g: f": that scales by 2·{a[1]} − 1 = {2 * a[1] - 1}; the "
+            f"scale is 2**{a[1]} − 1 = {2**a[1] - 1}", gives=_scaled(lambda b: 2 * b - 1)),
+    Mistake("read back", lambda a, e, g: f": that is the depth read back, {e}/{2**a[1] - 1}: "
+            "return the stored integer itself", gives=lambda z, b: stored(z, b) / (2**b - 1)),
+    Mistake("float32", _float32_words,
+            gives=lambda z, b: float(np.rint(np.float32(z) * np.float32(2**b - 1)))),
+    Mistake("float32", lambda a, e, g: ": that is what truncation gives, computed in float32: "
+            "round to the nearest integer, in float64",
+            gives=lambda z, b: float(np.trunc(np.float32(z) * np.float32(2**b - 1)))),
+    Mistake("not an integer", lambda a, e, g: f": {g!r} is not an integer; the buffer stores "
+            "whole numbers", fits=lambda a, e, g: g != round(g), symptom=True),
+]  # fmt: skip
+
+
+def _rule(args, expected, got) -> str:
+    z, bits = args
+    return f": round(z·(2^{bits} − 1))"
 
 
 def draw_depth(ax, case, got):
@@ -141,3 +158,11 @@ def draw_depth(ax, case, got):
     ax.ticklabel_format(useOffset=False, style="plain", axis="x")
     artists.append(ax.legend(fontsize="x-small"))
     return artists
+
+
+def exercise(scene) -> Exercise:
+    return Exercise(
+        "depth_to_unorm", depth_cases, as_count, same_depth, explain_depth, _rule,
+        DEPTH_MISTAKES, float32=lambda args: 0.0, answers=(PackageAnswer(quantize),),
+        draw=draw_depth, scene=scene,
+    )  # fmt: skip

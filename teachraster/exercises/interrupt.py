@@ -1,24 +1,21 @@
-"""Stop a student's function that runs past its time limit, even one that catches everything.
+"""Unwind a student's function that runs past its time limit, even one that catches everything.
 
-An :class:`Alarm` raises :class:`CaseInterrupt` in the running code once the limit has passed,
-and again every ``TICK`` seconds until the case unwinds to the checker: a loop around
-``try: ... except: pass`` catches one interrupt, not all of them. In the main thread (where a
-Jupyter kernel runs its cells) the interrupt comes from ``SIGALRM``, which also cuts
-``time.sleep`` short; from the second interrupt on, a tracer watches the student's frames
-instruction by instruction and raises at the first instruction from which the exception
-cannot be caught before it reaches the checker (Python 3.11+ exception tables), so that even a
-bare ``except:`` inside a loop inside a ``try`` lets it through. In another thread the
-interrupt is an asynchronous exception sent by a watchdog thread; where neither exists, the
-time is measured afterwards and an overrun reported all the same.
+:class:`CaseInterrupt` is what stops a case: a ``BaseException`` (as ``KeyboardInterrupt`` is),
+so that ``except Exception`` cannot swallow it. :class:`.alarm.Alarm` raises it once the case's
+limit has passed and again every ``TICK`` seconds until the case unwinds to the checker: a loop
+around ``try: ... except: pass`` catches one interrupt, not all of them. From the second
+interrupt on, a tracer watches the student's frames instruction by instruction and raises at
+the first instruction from which the exception cannot be caught before it reaches the checker
+(:func:`escapes`, reading Python 3.11+ exception tables), so that even a bare ``except:``
+inside a loop inside a ``try`` lets it through. In a thread other than the main one the
+interrupt is an asynchronous exception (:func:`send_async`).
 """
 
 from __future__ import annotations
 
 import dis
-import signal
 import sys
 import threading
-import time
 
 #: Seconds between two interrupts once a case is past its limit.
 TICK = 0.05
@@ -46,7 +43,7 @@ class CaseInterrupt(BaseException):
     """
 
 
-class _ThreadInterrupt(CaseInterrupt):
+class ThreadInterrupt(CaseInterrupt):
     """The interrupt a watchdog sends to another thread.
 
     Python builds it in the interrupted thread, where the exception is raised: from the second
@@ -55,7 +52,7 @@ class _ThreadInterrupt(CaseInterrupt):
 
     def __init__(self, *args):
         super().__init__(*args)
-        alarm = getattr(_busy, "alarm", None)
+        alarm = getattr(busy, "alarm", None)
         if alarm is not None and alarm.active and alarm.fires > 1 and sys.version_info >= (3, 11):
             alarm._trace_frames(sys._getframe(1))
 
@@ -136,122 +133,7 @@ def escapes(frame, guard) -> bool:
     return frame is guard
 
 
-class Alarm:
-    """Interrupts the calling thread ``seconds`` after :meth:`start` until :meth:`stop`.
-
-    ``guard`` is the checker's frame that catches :class:`CaseInterrupt`. ``fired`` tells
-    afterwards whether the limit passed (then the case is a timeout, whatever it returned).
-    """
-
-    def __init__(self, seconds: float, guard):
-        self.seconds = seconds
-        self.guard = guard
-        self.active = False
-        self.fired = False
-        self.fires = 0
-        self.mode = None
-        self._previous = None
-        self._trace = None
-        self._traced = False
-
-    # -- start and stop ------------------------------------------------------------------------
-    def start(self) -> None:
-        self.begin = time.perf_counter()
-        if getattr(_busy, "on", False):
-            return  # a check inside a checked function: the outer alarm governs
-        _busy.on = True
-        _busy.alarm = self
-        self.active = True
-        in_main = threading.current_thread() is threading.main_thread()
-        if in_main and hasattr(signal, "setitimer"):
-            self.mode = "signal"
-            self._previous = signal.signal(signal.SIGALRM, self._on_signal)
-            self._timer = signal.setitimer(signal.ITIMER_REAL, self.seconds, TICK)
-        elif _async_exc is not None:
-            self.mode = "watchdog"
-            self._start_watchdog()
-        else:
-            self.mode = "measured"
-
-    def stop(self) -> None:
-        """Idempotent: disarm, restore the previous handler, timer and trace function."""
-        self.active = False
-        mode, self.mode = self.mode, None
-        if mode is None:
-            return
-        _busy.on = False
-        _busy.alarm = None
-        if mode == "signal":
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            # None: a handler not installed from Python, which cannot be put back
-            signal.signal(signal.SIGALRM, self._previous or signal.SIG_DFL)
-            delay, interval = self._timer  # someone else's timer (pytest-timeout...): re-arm
-            if delay > 0:
-                left = max(delay - (time.perf_counter() - self.begin), 1e-3)
-                signal.setitimer(signal.ITIMER_REAL, left, interval)
-        elif mode == "watchdog":
-            with self._lock:
-                self._done.set()
-                _async_exc(self._thread_id, None)  # drop an interrupt not yet delivered
-        if self._traced:
-            self._traced = False
-            sys.settrace(self._trace)
-
-    def overran(self) -> bool:
-        """The case took longer than its limit (where nothing could interrupt it)."""
-        return time.perf_counter() - self.begin > self.seconds
-
-    # -- the interrupt -------------------------------------------------------------------------
-    def _on_signal(self, signum, frame):
-        if not self.active:
-            return
-        self.fired = True
-        self.fires += 1
-        if self.fires > 1 and sys.version_info >= (3, 11):
-            self._trace_frames(frame)
-        raise CaseInterrupt(f"stopped after {self.seconds:g} s")
-
-    def _trace_frames(self, frame) -> None:
-        """Watch every frame between ``frame`` and the guard instruction by instruction."""
-        if not self._traced:
-            self._trace = sys.gettrace()
-            self._traced = True
-        f = frame
-        while f is not None and f is not self.guard:
-            f.f_trace = self._tracer
-            f.f_trace_opcodes = True
-            f = f.f_back
-        sys.settrace(self._tracer)
-
-    def _tracer(self, frame, event, arg):
-        if event == "call":
-            frame.f_trace_opcodes = True
-        elif self.active and escapes(frame, self.guard):
-            raise CaseInterrupt(f"stopped after {self.seconds:g} s")
-        return self._tracer
-
-    def _start_watchdog(self) -> None:
-        self._lock = threading.Lock()
-        self._done = threading.Event()
-        self._thread_id = threading.get_ident()
-
-        def watch():
-            if self._done.wait(self.seconds):
-                return
-            while True:
-                with self._lock:
-                    if self._done.is_set():
-                        return
-                    self.fired = True
-                    self.fires += 1
-                    _async_exc(self._thread_id, _ThreadInterrupt)
-                if self._done.wait(TICK):
-                    return
-
-        threading.Thread(target=watch, daemon=True, name="teachraster-check-watchdog").start()
-
-
-_busy = threading.local()
+busy = threading.local()
 
 
 def _make_async_exc():
@@ -270,4 +152,28 @@ def _make_async_exc():
     return send
 
 
-_async_exc = _make_async_exc()
+#: ``send_async(thread_id, exc)``, or None where Python offers no asynchronous exceptions.
+send_async = _make_async_exc()
+
+
+class _Drained(BaseException):
+    """Replaces an interrupt not yet delivered, to be caught at once (:func:`drain_async`)."""
+
+
+def drain_async() -> None:
+    """Drop an asynchronous exception pending on this thread, and the flag it sets.
+
+    CPython keeps one flag for the whole interpreter while any thread has an exception
+    pending, and clears it only when that thread raises it: ``send_async(thread, None)``
+    would leave it set (every thread's interpreter loop then takes its slow path for good).
+    So the pending interrupt is replaced by :class:`_Drained`, raised here at the next
+    backward jump of this loop, and caught.
+    """
+    if send_async is None:
+        return
+    send_async(threading.get_ident(), _Drained)
+    try:
+        for _ in range(1_000_000):
+            pass
+    except _Drained:
+        pass

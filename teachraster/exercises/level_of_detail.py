@@ -11,12 +11,15 @@ answer the student's reproduces.
 
 from __future__ import annotations
 
+import math
 from functools import cache
 
 import numpy as np
 
 from ..pipeline.texture_filters import footprint_axes, mip_level
+from .answers import as_number
 from .cases import SEED
+from .exercise import Exercise, Knobs, PackageAnswer, Slip
 from .scalars import num, vec
 from .tolerance import close
 
@@ -71,50 +74,107 @@ def level_cases():
 def explain_level(args, expected, got) -> str:
     ddx, ddy, (h, w) = args
     lx, ly = (float(a) for a in footprint_axes(ddx, ddy, (h, w)))
-    head = (
+    return (
         f"ddx={vec(ddx)}, ddy={vec(ddy)} on an H×W = {h}×{w} texture: the footprint's axes are "
         f"‖(du/dx·W, dv/dx·H)‖ = {num(lx)} and ‖(du/dy·W, dv/dy·H)‖ = {num(ly)} texels, "
         f"ρ = {num(max(lx, ly))}, λ = log2 ρ = {num(expected, got)}; yours is {num(got, expected)}"
     )
-    return head + _level_mistake(ddx, ddy, (h, w), lx, ly, got)
 
 
-def _level_mistake(ddx, ddy, size, lx, ly, got) -> str:
+_NORMS = {
+    "euclid": lambda a: math.hypot(*a),
+    "max": lambda a: max(abs(a[0]), abs(a[1])),
+    "sum": lambda a: abs(a[0]) + abs(a[1]),
+    "squared": lambda a: a[0] ** 2 + a[1] ** 2,
+}
+_COMBINE = {
+    "max": max,
+    "min": min,
+    "sum": lambda x, y: x + y,
+    "root": lambda x, y: math.sqrt(x * x + y * y),
+    "geometric": lambda x, y: math.sqrt(x * y),
+    "mean": lambda x, y: (x + y) / 2,
+}
+_LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r}
+
+
+def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False):  # fmt: skip
+    """mip_level with the usual mistakes as knobs (the defaults are GL's rule)."""
     h, w = size
-    scaled = np.abs(np.array([ddx[0] * w, ddx[1] * h, ddy[0] * w, ddy[1] * h]))
-    uv_units = max(np.hypot(*ddx), np.hypot(*ddy))
-    swapped = max(np.hypot(ddx[0] * h, ddx[1] * w), np.hypot(ddy[0] * h, ddy[1] * w))
-    rho = max(lx, ly)
-    with np.errstate(divide="ignore"):
-        guesses = [
-            (rho, ": you returned ρ itself; λ = log2 ρ (each level halves the texels)"),
-            (np.log2(rho**2), ": that is log2 of the squared length, twice λ: take the square "
-             "root first (or halve the log)"),
-            (np.log2(min(lx, ly)), f": your λ uses the shorter of the two footprint axes (here "
-             f"the {'x axis, ddx' if lx < ly else 'y axis, ddy'}); GL takes the longer (ρ = "
-             "max), so that no direction is undersampled"),
-            (np.log2(lx + ly), ": your λ uses the sum of the derivatives; GL takes the longer "
-             "of the two footprint axes"),
-            (np.log2(scaled.sum()), ": your λ uses the sum of the derivatives; GL takes the "
-             "longer of the two footprint axes, each a Euclidean length"),
-            (np.log2(max(scaled[:2].sum(), scaled[2:].sum())), ": each axis' length is "
-             "Euclidean, √(a² + b²), not |a| + |b|"),
-            (np.log2(scaled.max()), ": each axis' length is Euclidean, √(a² + b²), not its "
-             "largest component"),
-            (np.log2(uv_units), f": the derivatives are in texture units; measure them in "
-             f"texels (u times W = {w}, v times H = {h}) before taking lengths"),
-            (np.log2(swapped), f": u runs along the W = {w} columns and v along the H = {h} rows; "
-             "you scaled u by H and v by W"),
-            (np.log(rho), ": that is the natural log; λ = log2 ρ"),
-            (np.log10(rho), ": that is log10; λ = log2 ρ"),
-            (max(np.log2(rho), 0.0), ": λ is unclamped here: a magnified texture (ρ < 1) has λ < 0"),
-            (0.5 * np.log2(lx * ly), ": that is the log of the geometric mean of the axes; GL "
-             "takes the longer axis"),
-        ]  # fmt: skip
-    for value, words in guesses:
-        if np.isfinite(value) and close(got, value):
-            return words
+    sx, sy = {"texels": (w, h), "units": (1, 1), "swapped": (h, w)}[scale]
+    ax = (float(ddx[0]) * sx, float(ddx[1]) * sy)
+    ay = (float(ddy[0]) * sx, float(ddy[1]) * sy)
+    rho = _COMBINE[combine](_NORMS[norm](ax), _NORMS[norm](ay))
+    if rho <= 0 and log != "none":
+        return None
+    lam = _LOG[log](rho)
+    return max(lam, 0.0) if clamp else lam
+
+
+def _shorter(args, expected, got) -> str:
+    ddx, ddy, size = args
+    lx, ly = (float(a) for a in footprint_axes(ddx, ddy, size))
+    which = "x axis, ddx" if lx < ly else "y axis, ddy"
+    return (
+        f"your λ uses the shorter of the two footprint axes (here the {which}); GL takes the "
+        "longer (ρ = max), so that no direction is undersampled"
+    )
+
+
+LEVEL_KNOBS = Knobs(level_with, {
+    "scale": [
+        Slip("texture units", lambda a, e, g: f"the derivatives are in texture units; measure "
+             f"them in texels (u times W = {a[2][1]}, v times H = {a[2][0]}) before taking "
+             "lengths", "units"),
+        Slip("W and H swapped", lambda a, e, g: f"u runs along the W = {a[2][1]} columns and v "
+             f"along the H = {a[2][0]} rows; you scaled u by H and v by W", "swapped"),
+    ],
+    "norm": [
+        Slip("largest component", "each axis' length is Euclidean, √(a² + b²), not its largest "
+             "component", "max"),
+        Slip("|a| + |b|", "each axis' length is Euclidean, √(a² + b²), not |a| + |b|", "sum"),
+        Slip("squared length", "that is log2 of the squared length, twice λ: take the square "
+             "root first (or halve the log)", "squared"),
+    ],
+    "combine": [
+        Slip("shorter axis", _shorter, "min"),
+        Slip("sum of the axes", "your λ uses the sum of the derivatives; GL takes the longer of "
+             "the two footprint axes", "sum"),
+        Slip("summed before the root", "you summed the squares of both axes before the root, "
+             "√(|∂/∂x|² + |∂/∂y|²); GL takes the longer axis, ρ = max(|∂/∂x|, |∂/∂y|), each "
+             "axis its own length", "root"),
+        Slip("geometric mean", "that is the log of the geometric mean of the axes; GL takes the "
+             "longer axis", "geometric"),
+        Slip("mean of the axes", "that is the mean of the two axes; GL takes the longer axis "
+             "(ρ = max)", "mean"),
+    ],
+    "log": [
+        Slip("ρ itself", "you returned ρ itself; λ = log2 ρ (each level halves the texels)",
+             "none"),
+        Slip("natural log", "that is the natural log; λ = log2 ρ", "ln"),
+        Slip("log10", "that is log10; λ = log2 ρ", "log10"),
+    ],
+    "clamp": [
+        Slip("clamped", "λ is unclamped here: a magnified texture (ρ < 1) has λ < 0", True),
+    ],
+})  # fmt: skip
+
+
+def _level_rule(args, expected, got) -> str:
     return ": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)"
+
+
+def same_level(got, expected, args) -> bool:
+    """Within 1e-6: GPUs compute λ with far fewer bits; float32 is right."""
+    return close(got, expected, 1e-6)
+
+
+def exercise(scene) -> Exercise:
+    return Exercise(
+        "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
+        _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
+        scene=scene,
+    )  # fmt: skip
 
 
 def draw_level_case(ax, case, got):

@@ -1,4 +1,4 @@
-"""The small scenes of :mod:`.compare_scenes`, one per exercise of 05–08.
+"""The small scenes of :mod:`.scenes`: ``fill``'s fan and one per exercise of 05–08.
 
 Every scene's inputs and the package's picture are computed once (cached) from the package's
 own functions (:func:`teachraster.rasterize`, :func:`teachraster.render`,
@@ -9,6 +9,7 @@ own functions (:func:`teachraster.rasterize`, :func:`teachraster.render`,
 
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import cache
 from types import SimpleNamespace
 
@@ -27,14 +28,74 @@ from . import depth_precision as dp
 from . import level_of_detail as lod
 from . import texture_filtering as tf
 from . import tile_blocks as tb
-from .compare_scenes import Scene, call
+from .answers import as_coverage
+from .cases import catalogue_coverage
+from .coverage import edge_name, expected_coverage, explain_pixel, point
+from .running import WrongAnswerType
 from .scalars import num
+from .scenes import Scene, call
 
 
 def _frozen(*arrays):
     for a in arrays:
         a.flags.writeable = False
     return arrays if len(arrays) > 1 else arrays[0]
+
+
+# -- fill: a fan of 16 triangles ----------------------------------------------------------------
+#: The catalogue case drawn for fill.
+FILL_FAN = "fan_spokes_through_centres"
+#: Codes of the fill picture: how many triangles cover a pixel.
+COUNTS = (("not covered", "#ffffff"), ("covered once", "#2b7bba"), ("covered twice or more", "#ff9f1c"))  # fmt: skip
+
+
+@cache
+def fill_fan():
+    """The fan (its shared edges through pixel centres), every other triangle wound the other
+    way round (a fill handles both windings), and the package's coverage of each triangle."""
+    fan = next(c for c in catalogue_coverage() if c.label == FILL_FAN)
+    triangles = fan.triangles.copy()
+    triangles[1::2] = triangles[1::2][:, [0, 2, 1]]
+    label = f"{FILL_FAN}, every other triangle wound the other way"
+    case = replace(fan, label=label, triangles=triangles)
+    return case, _frozen(np.array([expected_coverage(case, xy) for xy in case.triangles]))
+
+
+def fill_scene(fn) -> Scene:
+    case, expected = fill_fan()
+    w, h = case.size
+
+    def run():
+        images = []
+        for xy in case.triangles:
+            image = call(fn, lambda v: as_coverage(v, h, w), xy, w, h)
+            images.append(image if image.shape == (h, w) else image.T)
+        scene.parts = np.array(images)
+        return np.minimum(scene.parts.sum(axis=0), 2).astype(float)
+
+    def explain(got, row, col):
+        return fill_pixel(case, expected, scene.parts, row, col)
+
+    reference = np.minimum(expected.sum(axis=0), 2).astype(float)
+    title = "a fan of 16 triangles, wound both ways: how many cover each pixel"
+    scene = Scene(title, reference, run, explain, COUNTS)
+    return scene
+
+
+def fill_pixel(case, expected, got, i: int, j: int) -> str:
+    """Why pixel (row i, column j) of the fan is covered as it is, and what yours did."""
+    centre = np.array([j + 0.5, i + 0.5])
+    want = np.flatnonzero(expected[:, i, j])
+    head = f"centre {point(centre)}: "
+    wrong = np.flatnonzero(expected[:, i, j] != got[:, i, j])
+    if not len(wrong):
+        which = f"triangle {want[0]}" if len(want) else "no triangle"
+        return head + f"covered by {which}, in yours as in the package's"
+    k = int(wrong[0])
+    text, edge, _ = explain_pixel(case.triangles[k], centre, bool(expected[k, i, j]))
+    where = f" (edge {edge_name(edge)})" if edge is not None else ""
+    times = int(got[:, i, j].sum())
+    return head + f"the rule covers it {len(want)} time(s), yours {times}. Triangle {k}{where}: {text}"  # fmt: skip
 
 
 # -- the fan (coverage_fraction, resolve) -----------------------------------------------------
@@ -194,15 +255,21 @@ def floor_texture(texels: int):
     return _frozen(texture, *mipmap(texture))
 
 
-def _per_pixel(uv, value):
-    """``value(i, j)`` at every covered pixel of the floor; NaN elsewhere."""
+def _per_pixel(uv, value, reference):
+    """``value(i, j)`` at every covered pixel of the floor; NaN elsewhere. An answer of
+    another size than the package's (channels) is explained, never a crash."""
     covered = ~np.isnan(uv[..., 0])
-    out = None
+    out = np.full(reference.shape, np.nan)
+    want = reference.shape[2:]
     for i, j in np.argwhere(covered):
         v = np.asarray(value(i, j), dtype=float)
-        if out is None:
-            out = np.full(uv.shape[:2] + v.shape, np.nan)
-        out[i, j] = v
+        if v.size != int(np.prod(want)):
+            n = int(np.prod(want))
+            raise WrongAnswerType(
+                f"returned {v.size} value(s) at pixel ({i}, {j}); the texture has "
+                f"{n} channel{'s' * (n != 1)}, so the answer is {n} value{'s' * (n != 1)}"
+            )
+        out[i, j] = v.reshape(want)
     return out
 
 
@@ -212,7 +279,9 @@ def level_scene(fn) -> Scene:
     reference = mip_level(ddx, ddy, size)
 
     def run():
-        return _per_pixel(uv, lambda i, j: call(fn, aa.as_fraction, ddx[i, j], ddy[i, j], size))
+        return _per_pixel(
+            uv, lambda i, j: call(fn, aa.as_fraction, ddx[i, j], ddy[i, j], size), reference
+        )
 
     def explain(got, row, col):
         if np.isnan(reference[row, col]):
@@ -231,7 +300,9 @@ def bilinear_scene(fn) -> Scene:
     reference = sample(texture, uv, "bilinear", "repeat")
 
     def run():
-        return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, texture, uv[i, j], "repeat"))
+        return _per_pixel(
+            uv, lambda i, j: call(fn, tf.as_texel_value, texture, uv[i, j], "repeat"), reference
+        )
 
     return Scene("a floor, 8 × 8 texture, bilinear", reference, run, _texel_explainer(uv, texture, reference))  # fmt: skip
 
@@ -263,7 +334,7 @@ def trilinear_scene(fn) -> Scene:
     reference = sample(pyramid, uv, "trilinear", "repeat", lod=lam)
 
     def run():
-        return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, pyramid, uv[i, j], float(lam[i, j]), "repeat"))  # fmt: skip
+        return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, pyramid, uv[i, j], float(lam[i, j]), "repeat"), reference)  # fmt: skip
 
     return Scene("a floor, 64 × 64 texture, trilinear at the package's λ", reference, run, _texel_explainer(uv, pyramid, reference, lam))  # fmt: skip
 

@@ -68,6 +68,13 @@ class Report:
         Why the check stopped before its last case (a case ran past its time limit), if it did.
     n_run : int or None
         How many cases ran (``n_cases`` unless the check stopped).
+    package : str or None
+        Why the answer does not count although it may be right: the function calls the
+        package's own answer (``tr.mip_level`` in ``mip_level``).
+    printed : str or None
+        How much the function printed during the check (the output is kept aside).
+    scene : Scene or None
+        The student's function in a whole picture beside the package's (:meth:`compare`).
     """
 
     exercise: str
@@ -77,11 +84,18 @@ class Report:
     example: Callable | None = field(default=None, repr=False, compare=False)
     stopped: str | None = None
     n_run: int | None = None
-    comparison: Callable | None = field(default=None, repr=False, compare=False)
+    package: str | None = None
+    printed: str | None = None
+    scene: object | None = field(default=None, repr=False, compare=False)
 
     @property
     def passed(self) -> bool:
-        return not self.failures and not self.not_implemented and self.stopped is None
+        return (
+            not self.failures
+            and not self.not_implemented
+            and self.stopped is None
+            and self.package is None
+        )
 
     def shown(self) -> list[Failure]:
         """The failures the summary spells out: one of each kind first, then the others."""
@@ -101,7 +115,12 @@ class Report:
                 "then run this cell again)"
             )
         if self.passed:
-            return f"{self.exercise}: all {self.n_cases} cases pass"
+            return self._with_printed(f"{self.exercise}: all {self.n_cases} cases pass")
+        if self.package is not None and not self.failures and self.stopped is None:
+            text = (
+                f"{self.exercise}: all {self.n_cases} cases pass, but not counted: {self.package}"
+            )
+            return self._with_printed(text)
         head = f"{self.exercise}: {len(self.failures)} of {self.n_cases} cases fail"
         if self.stopped is not None:
             n_run = self.n_cases if self.n_run is None else self.n_run
@@ -114,7 +133,12 @@ class Report:
             lines.append(f"  ... and {len(self.failures) - len(shown)} more (see report.failures)")
         if self.stopped is not None and not self.failures:
             lines.append(f"- {self.stopped}")
-        return "\n".join(lines)
+        if self.package is not None:
+            lines.append(f"- not counted: {self.package}")
+        return self._with_printed("\n".join(lines))
+
+    def _with_printed(self, text: str) -> str:
+        return text if self.printed is None else f"{text}\n({self.printed})"
 
     def assert_passed(self) -> None:
         """Do nothing when the report passed; else raise ``AssertionError`` with its summary.
@@ -134,6 +158,8 @@ class Report:
             return f"{self.exercise}: all {self.n_cases} cases pass"
         if self.not_implemented:
             return f"{self.exercise}: not implemented yet"
+        if self.package is not None and not self.failures and self.stopped is None:
+            return f"{self.exercise}: the package's own function (not counted)"
         if not self.failures:
             return f"{self.exercise}: {HEADLINES['budget']}"
         f = self.failures[0]
@@ -163,69 +189,36 @@ class Report:
         if f is not None and (f.got is None or drawing is None):
             note = f.explanation
         elif f is None and not self.passed and not self.not_implemented:
-            note = self.stopped or str(self)
+            note = self.stopped or self.package or str(self)
         if note is not None:
             artists.append(_note(ax, note))
         artists.append(ax.set_title(self.title(), fontsize="small"))
         return artists
 
-    def compare(self, ax=None, pixel=None):
-        """The student's whole picture beside the package's, and where they differ.
+    def compare(self, axes=None, pixel=None):
+        """The student's function in a whole picture, beside the package's, and where they differ.
 
-        Renders a small scene (a fan of 16 triangles whose shared edges run through pixel
-        centres, wound both ways) with the student's function and with the package; ``ax``
-        is one Axes (split into three panels), three Axes, or None (a new figure). The third
-        panel marks each pixel whose coverage count differs, with the difference.
-        ``pixel=(row, col)`` (default, or "first": the first differing pixel), or a click on
-        any panel, shows the explanation for that pixel. Exercises with a picture only
-        (``fill``); returns the artists.
+        Draws three panels on ``axes`` (three Axes, one Axes split in three, or None: a new
+        figure): yours, the package's and the differing pixels; ``pixel=(row, col)`` or
+        ``"first"`` (the first differing pixel) is marked in every panel and explained below
+        them; with an interactive backend a click explains the clicked pixel. The picture runs
+        the student's function once, within the time a case may take, and not at all when the
+        check stopped on a time limit. Exercises with a picture only; returns the artists.
         """
-        if ax is None:
-            import matplotlib.pyplot as plt
-
-            ax = plt.subplots(1, 3, figsize=(9, 3.6))[1]
-        pixel = None if pixel is None or pixel == "first" else _pixel(pixel)
-        from .compare import draw_comparison
-
-        return draw_comparison(_three_panels(ax), self._comparison(), pixel)
+        return self._picture().draw(axes, pixel)
 
     def explain_pixel(self, row: int, col: int) -> str:
         """Why pixel (``row``, ``col``) of the student's picture differs (or does not)."""
-        from .compare import pixel_explanation
-
-        return pixel_explanation(self._comparison(), *_pixel((row, col)))
+        return self._picture().explain(row, col)
 
     def differing_pixels(self):
         """(n, 2) rows and columns where the student's picture differs from the package's."""
-        return self._comparison().differing()
+        return self._picture().differing()
 
-    def _comparison(self):
-        if self.comparison is None:
-            raise ValueError(
-                f"report.compare draws a whole picture: {self.exercise} makes none (fill does)"
-            )
-        return self.comparison()
-
-
-def _pixel(pixel) -> tuple[int, int]:
-    import operator
-
-    try:
-        i, j = pixel
-        return operator.index(i), operator.index(j)
-    except (TypeError, ValueError):
-        raise TypeError(f"pixel must be a pair of ints (row, column), got {pixel!r}") from None
-
-
-def _three_panels(ax) -> list:
-    """Three Axes: the ones given, or three panels inset in one Axes."""
-    if hasattr(ax, "inset_axes"):
-        ax.set_axis_off()
-        return [ax.inset_axes([k / 3 + 0.01, 0.2, 0.29, 0.75]) for k in range(3)]
-    axes = list(ax.ravel() if hasattr(ax, "ravel") else ax)
-    if len(axes) != 3:
-        raise ValueError(f"ax must be one Axes or three, got {len(axes)}")
-    return axes
+    def _picture(self):
+        if self.scene is None:
+            raise ValueError(f"report.compare draws a whole picture: {self.exercise} makes none")
+        return self.scene
 
 
 def _note(ax, text: str, width: int = 60):

@@ -1,20 +1,29 @@
-"""Call a student's function safely: within a time budget, its exceptions become messages.
+"""Call a student's function safely: within a CPU-time budget, its exceptions become messages.
 
 A check must never crash on a student's bug, and an endless loop must not hang the notebook.
-:func:`budget` opens the time budget of one check (10 s unless told); :func:`run_case` runs one
-case within a limit derived from what remains (at most a fifth of the budget: 2 s of 10), so
-that a loop is reported after 2 s, not after the whole budget. A case past its limit is stopped
-by :class:`CaseInterrupt`, a ``BaseException`` (as ``KeyboardInterrupt`` is) so that
-``except Exception`` cannot swallow it; :mod:`.interrupt` re-fires it until the case unwinds.
-The checker's own comparison and explanation run through :func:`run_checker`, inside the same
-budget. A ``SystemExit`` (``exit()`` in the student's code) is a failure like any other;
-``KeyboardInterrupt`` (the notebook's stop button) still stops everything.
+:func:`budget` opens the time budget of one check: ``seconds`` of **CPU time of the student's
+code** (10 unless told; a lecturer raises it for a whole class with the environment variable
+``TEACHRASTER_CHECK_BUDGET``, see :func:`check_seconds`). :func:`run_case` runs one case
+within a limit derived from what remains (at most a fifth of the budget: 2 s of CPU of 10), so
+that a loop is reported after 2 s, not after the whole budget; a case that waits without
+computing, and a whole check on a machine too busy to give it CPU, are bounded in wall-clock
+time too (:mod:`.alarm`). A case past its limit is stopped by :class:`CaseInterrupt`, a
+``BaseException`` (as ``KeyboardInterrupt`` is), so that ``except Exception`` cannot swallow it
+(:mod:`.interrupt`). Outside the main thread a case runs in a thread of its own, which the
+check abandons if it cannot be stopped (a ``time.sleep`` there cannot be cut short), so that
+the check still returns in time.
+
+The checker's own comparisons and explanations run through :func:`run_checker`, with limits of
+their own (they do not eat the student's budget). A ``SystemExit`` (``exit()`` in the student's
+code) is a failure like any other; ``KeyboardInterrupt`` (the notebook's stop button) still
+stops everything.
 """
 
 from __future__ import annotations
 
 import math
 import numbers
+import os
 import sys
 import threading
 import time
@@ -25,17 +34,27 @@ from typing import Any
 
 import numpy as np
 
-from .interrupt import Alarm, CaseInterrupt
+from . import output
+from .alarm import LONGEST, Alarm
+from .interrupt import CaseInterrupt, busy
 
 __all__ = ["CaseInterrupt", "Outcome", "WrongAnswerType", "budget", "run_case", "run_checker"]
 
-#: Seconds of a check's budget when ``check`` is not told otherwise.
+#: CPU seconds of a check's budget when ``check`` is not told otherwise.
 DEFAULT_BUDGET = 10.0
-#: The share of the budget one case may take: 2 s of the default 10 s.
+#: The environment variable that raises every check's budget (a lecturer's, for a class).
+BUDGET_VARIABLE = "TEACHRASTER_CHECK_BUDGET"
+#: The share of the budget one case may take: 2 s of CPU of the default 10 s.
 CASE_SHARE = 0.2
 #: Seconds one case may take under the default budget (kept for callers that pass a limit).
 CASE_LIMIT = DEFAULT_BUDGET * CASE_SHARE
-#: Seconds the checker's own explanations may take after the budget (once, for all of them).
+#: A case that has run this many times its CPU limit on the wall without computing waits.
+WAIT_FACTOR = 5.0
+#: Wall-clock seconds a whole check may take, per CPU second of its budget (a busy machine).
+WALL_FACTOR = 10.0
+#: CPU seconds one comparison or explanation of the checker may take, and all of them together.
+CHECKER_CALL, CHECKER_TOTAL = 2.0, 10.0
+#: Seconds a case that could not be stopped is given to unwind before the check abandons it.
 GRACE = 0.5
 #: Explanation of a case that did not run because the check had stopped.
 SKIPPED = "not run: the check stopped at an earlier case"
@@ -67,18 +86,23 @@ class Outcome:
 
 @dataclass
 class Budget:
-    """The time one check may take, and why it stopped early (``stopped``), if it did."""
+    """The CPU time one check's student code may take, and why it stopped early, if it did."""
 
     seconds: float
     start: float = field(default_factory=time.perf_counter)
     stopped: str | None = None
     share: float = CASE_SHARE
+    used: float = 0.0  # CPU seconds of the student's code so far
+    checker: float = 0.0  # CPU seconds of the checker's own explanations so far
 
     def remaining(self) -> float:
-        return self.seconds - (time.perf_counter() - self.start)
+        return self.seconds - self.used
 
     def case_limit(self) -> float:
         return min(self.remaining(), self.seconds * self.share)
+
+    def wall_left(self) -> float:
+        return min(WALL_FACTOR * self.seconds, LONGEST) - (time.perf_counter() - self.start)
 
 
 _local = threading.local()
@@ -95,15 +119,15 @@ def current() -> Budget:
 
 
 class budget:  # noqa: N801 - used as a context manager, named like one
-    """``with budget(seconds) as b:`` every :func:`run_case` inside shares ``seconds``.
+    """``with budget(seconds) as b:`` every :func:`run_case` inside shares ``seconds`` of CPU.
 
     >>> with budget(5.0) as b:
     ...     run_case(lambda: 2).value, b.stopped
     (2, None)
     """
 
-    def __init__(self, seconds: float = DEFAULT_BUDGET):
-        self.budget = Budget(check_seconds(seconds))
+    def __init__(self, seconds: float = DEFAULT_BUDGET, share: float = CASE_SHARE):
+        self.budget = Budget(check_seconds(seconds), share=share)
 
     def __enter__(self) -> Budget:
         _local.stack = getattr(_local, "stack", []) + [self.budget]
@@ -122,6 +146,34 @@ def check_seconds(seconds, name: str = "budget") -> float:
     return float(seconds)
 
 
+def class_budget() -> float | None:
+    """The lecturer's minimum budget from ``TEACHRASTER_CHECK_BUDGET``, or None when unset.
+
+    A value that is not a positive number of seconds is a ``ValueError`` naming the variable:
+    a typo must not silently leave the limits where they were.
+    """
+    text = os.environ.get(BUDGET_VARIABLE, "").strip()
+    if not text:
+        return None
+    try:
+        seconds = float(text)
+    except ValueError:
+        seconds = float("nan")
+    if not (math.isfinite(seconds) and seconds > 0):
+        raise ValueError(
+            f"the environment variable {BUDGET_VARIABLE} must be a positive number of seconds "
+            f"(of CPU, for each check), got {text!r}"
+        )
+    return seconds
+
+
+def effective_budget(seconds) -> float:
+    """``seconds`` checked, raised to the lecturer's ``TEACHRASTER_CHECK_BUDGET`` if lower."""
+    seconds = check_seconds(seconds)
+    floor = class_budget()
+    return seconds if floor is None else max(seconds, floor)
+
+
 def last_line(exc: BaseException) -> str:
     """The exception as Python's last traceback line says it: ``ValueError: ...``."""
     return traceback.format_exception_only(type(exc), exc)[-1].strip()
@@ -131,19 +183,45 @@ def seconds_words(s: float) -> str:
     return f"{s:.2g} s" if s < 1 else f"{s:.3g} s"
 
 
-def _timeout(limit: float, b: Budget, case: str | None) -> Outcome:
+def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = False) -> Outcome:
+    """The outcome of a case stopped by its limits (``alarm``) or by the budget (None)."""
     where = f" on case {case}" if case else ""
-    if b.remaining() > 0.05 and limit < b.seconds:
+    why = "budget" if alarm is None else (alarm.why or alarm.due() or "cpu")
+    if why == "cpu" and alarm.seconds < b.seconds * b.share * (1 - 1e-9):
+        why = "budget"  # the case's limit was what remained of the budget
+    if why == "budget":
         text = (
-            f"your function did not return within {seconds_words(limit)}{where}: an endless loop?"
+            f"the check's budget of {seconds_words(b.seconds)} of CPU ran out{where}: your "
+            "function is far slower than needed (a Python call per pixel?). "
+            "check(..., budget=30) gives it more time; a lecturer raises it for a class with "
+            f"the environment variable {BUDGET_VARIABLE}"
+        )
+        kind = "budget"
+    elif why == "cpu":
+        text = (
+            f"your function did not finish within {seconds_words(alarm.seconds)} of CPU{where}: "
+            "an endless loop, or far slower than needed (a Python call per pixel?)"
+        )
+        kind = "timeout"
+    elif why == "wait":
+        text = (
+            f"your function did not finish within {seconds_words(alarm.wait)}{where}, and "
+            f"computed for only {seconds_words(alarm.cpu())} of it: it waits (time.sleep, "
+            "input(), a lock, a thread it joins?)"
         )
         kind = "timeout"
     else:
         text = (
-            f"the check's budget of {seconds_words(b.seconds)} ran out{where}: is your function "
-            "very slow, or an endless loop? (check(..., budget=30) gives it more time)"
+            f"the check ran for {seconds_words(alarm.cap)} of wall-clock time{where}, and "
+            f"your function computed for {seconds_words(alarm.cpu())} of it: the machine is "
+            f"too busy; try again later (or raise the budget: check(..., budget=30))"
         )
         kind = "budget"
+    if stuck:
+        text += (
+            ". It could not be stopped and still runs in the background (a blocking call, or "
+            "code that catches every exception): restart the kernel if the notebook slows down"
+        )
     b.stopped = f"{text} (the check stopped there)"
     return Outcome(error=text, kind=kind)
 
@@ -151,7 +229,7 @@ def _timeout(limit: float, b: Budget, case: str | None) -> Outcome:
 def run_case(body: Callable[[], Any], limit: float | None = None, case: str | None = None):
     """Run ``body`` (which calls the student's function) and capture what happens.
 
-    ``limit`` caps the case's seconds (default: the current budget's per-case limit);
+    ``limit`` caps the case's CPU seconds (default: the current budget's per-case limit);
     ``case`` (e.g. "3 of 30") is quoted when the case runs out of time. Once a case has run
     out of time the check has stopped, and later cases are not run.
 
@@ -165,8 +243,22 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
         return Outcome(error=SKIPPED, kind="skipped")
     limit = b.case_limit() if limit is None else min(limit, b.remaining())
     if limit <= 0:
-        return _timeout(0.0, b, case)
-    alarm = Alarm(limit, sys._getframe())
+        return _timeout(None, b, case)
+    alarm = Alarm(limit, None, WAIT_FACTOR * limit, max(min(20 * limit, b.wall_left()), 0.0))
+    in_place = threading.current_thread() is threading.main_thread() or getattr(busy, "on", False)
+    if in_place:
+        outcome, stuck = _run_here(body, alarm), False
+    else:
+        outcome, stuck = _run_in_thread(body, alarm)
+    b.used += alarm.cpu()
+    if outcome is None:  # past a limit
+        return _timeout(alarm, b, case, stuck)
+    return outcome
+
+
+def _run_here(body, alarm: Alarm) -> Outcome | None:
+    """The outcome of ``body`` run in this thread under ``alarm``; None when past a limit."""
+    alarm.guard = sys._getframe()
     try:
         try:
             alarm.start()
@@ -175,18 +267,43 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
             alarm.active = False  # first: an interrupt already on its way is now ignored
             alarm.stop()
     except CaseInterrupt:
-        alarm.stop()
-        return _timeout(limit, b, case)
+        return None
     except KeyboardInterrupt:
         raise  # the notebook's stop button stops the check too
     except BaseException as exc:  # a student's bug of any kind is a failed case, never a crash
-        alarm.stop()
-        if alarm.fired:
-            return _timeout(limit, b, case)
-        return describe_exception(exc)
+        return None if alarm.fired else describe_exception(exc)
     if alarm.fired or alarm.overran():  # it caught the interrupt, or nothing could interrupt it
-        return _timeout(limit, b, case)
+        return None
     return Outcome(value=value)
+
+
+def _run_in_thread(body, alarm: Alarm) -> tuple[Outcome | None, bool]:
+    """(outcome, abandoned) of ``body`` run in a thread of its own, waited for here.
+
+    The thread is abandoned (left to end in the background) when it has not unwound
+    ``GRACE`` s after its first interrupt: an asynchronous exception cannot cut a blocking
+    call short, and code that catches everything in a recursion may never unwind.
+    """
+    box: dict = {}
+
+    def target():
+        box["outcome"] = _run_here(body, alarm)
+
+    worker = threading.Thread(target=target, daemon=True, name="teachraster-check-case")
+    capture = output.current()
+    worker.start()
+    if capture is not None:
+        capture.adopt(worker.ident)
+    begin = time.perf_counter()
+    while worker.is_alive():
+        worker.join(0.05)
+        fired = alarm.fired_at
+        late = fired is not None and time.perf_counter() - fired > GRACE
+        never = alarm.mode == "measured" and time.perf_counter() - begin > alarm.cap + GRACE
+        if worker.is_alive() and (late or never):
+            alarm.active = False
+            return None, True
+    return box.get("outcome"), False
 
 
 def describe_exception(exc: BaseException) -> Outcome:
@@ -207,15 +324,17 @@ def describe_exception(exc: BaseException) -> Outcome:
 
 
 def run_checker(body: Callable[[], Any], fallback: Any) -> Any:
-    """Run the checker's own comparison or explanation within the budget (plus GRACE s).
+    """Run the checker's own comparison or explanation within limits of its own.
 
-    Returns ``fallback`` when it runs out of time or fails (a huge or strange answer).
+    Each call may take ``CHECKER_CALL`` s of CPU and all of one check's together
+    ``CHECKER_TOTAL`` s (the student's budget is not touched). Returns ``fallback`` when it
+    runs out of time or fails (a huge or strange answer: its ``__eq__``, its ``__float__``...).
     """
     b = current()
-    left = b.remaining() + GRACE  # the explanations' grace is counted once, not per call
+    left = min(CHECKER_CALL, CHECKER_TOTAL - b.checker)
     if left <= 0:
         return fallback
-    alarm = Alarm(left, sys._getframe())
+    alarm = Alarm(left, sys._getframe(), WAIT_FACTOR * left, 20 * left)
     try:
         try:
             alarm.start()
@@ -224,8 +343,8 @@ def run_checker(body: Callable[[], Any], fallback: Any) -> Any:
         finally:
             alarm.active = False
             alarm.stop()
+            b.checker += alarm.cpu()
     except KeyboardInterrupt:
         raise
-    except BaseException:  # the student's value may misbehave (its __eq__, its __float__...)
-        alarm.stop()
+    except BaseException:
         return fallback

@@ -35,6 +35,7 @@ def f(x):
 from __future__ import annotations
 
 import copy
+import difflib
 import json
 import os
 import re
@@ -42,6 +43,8 @@ import tempfile
 from pathlib import Path
 
 BEGIN, END = "BEGIN SOLUTION", "END SOLUTION"
+#: The nbgrader metadata schema nbgrader accepts.
+SCHEMA = 3
 STUB = ("# YOUR CODE HERE", "raise NotImplementedError()")
 TEXT_STUB = ("YOUR ANSWER HERE",)
 #: The regions nbgrader clears, with what replaces them (None: removed).
@@ -54,6 +57,11 @@ _MARKER = re.compile(
 #: Anything that looks like a marker, in any spelling (case, '_' or '-' for the space).
 _LOOKALIKE = re.compile(
     r"\b(begin|end)[\s_-]*(solutions?|hidden[\s_-]*tests?|mark[\s_-]*schemes?)", re.IGNORECASE
+)
+#: A comment line of two or three words, the first like BEGIN or END: a candidate misspelt
+#: marker ("### BEGIN SOLUTON", "### BEGN SOLUTION"), compared with the real ones.
+_SHORT_COMMENT = re.compile(
+    r"^[ \t]*(?:#+|=+)[ \t]*([A-Za-z]+)[ \t_-]+([A-Za-z]+(?:[ \t_-]+[A-Za-z]+)?)[ \t=]*\r?$"
 )
 
 
@@ -74,12 +82,26 @@ def _where(name: str, index: int, cell: dict, line: int | None = None) -> str:
     return place + (f", line {line}" if line is not None else "")
 
 
+def _misspelt(line: str) -> bool:
+    """A comment line spelt nearly like a marker: a pair of them would hide an answer."""
+    match = _SHORT_COMMENT.match(line)
+    if not match:
+        return False
+    first, rest = match.group(1).upper(), " ".join(re.split(r"[ \t_-]+", match.group(2).upper()))
+
+    def like(a: str, b: str) -> bool:  # one or two letters off, same first letter, same words
+        same_shape = a[0] == b[0] and a.count(" ") == b.count(" ")
+        return same_shape and difflib.SequenceMatcher(None, a, b).ratio() >= 0.75
+
+    return any(like(first, k) for k in ("BEGIN", "END")) and any(like(rest, r) for r in REGIONS)
+
+
 def _marker(line: str, number: int) -> tuple[str, str] | None:
     """``(BEGIN|END, region)`` for a marker line, None for other lines; malformed: raises."""
     match = _MARKER.match(line)
     if match:
         return match.group(1), match.group(2)
-    if _LOOKALIKE.search(line):
+    if _LOOKALIKE.search(line) or _misspelt(line):
         raise NotebookError(
             "a marker must stand alone on its line, spelt '### BEGIN SOLUTION' (or END, "
             f"HIDDEN TESTS, MARK SCHEME): {line.strip()[:80]!r}",
@@ -156,17 +178,50 @@ def _stubbed(text: str, stub: str) -> bool:
     )
 
 
+def _check_grading(grading: dict, cell: dict, where: str) -> None:
+    """Refuse what nbgrader's metadata validator refuses (nbgrader/nbgraderformat/v3.py)."""
+    missing = [key for key in ("grade", "solution", "locked") if key not in grading]
+    if missing:
+        raise NotebookError(f"{where}: nbgrader metadata without {', '.join(missing)}")
+    if grading.get("schema_version") != SCHEMA:
+        raise NotebookError(
+            f"{where}: nbgrader metadata of schema version {grading.get('schema_version')!r}, "
+            f"not {SCHEMA} (run 'nbgrader update' on the notebook)"
+        )
+    grade, solution, task = grading["grade"], grading["solution"], grading.get("task", False)
+    if grade or solution or grading["locked"]:
+        if not isinstance(grading.get("grade_id"), str) or not grading["grade_id"]:
+            raise NotebookError(f"{where}: an nbgrader cell without a grade_id")
+    if grade and "points" not in grading:
+        raise NotebookError(f"{where}: a graded cell without points")
+    markdown = cell.get("cell_type") == "markdown"
+    if task and not markdown:
+        raise NotebookError(f"{where}: a task cell must be markdown")
+    if not task and markdown and grade != solution:
+        raise NotebookError(
+            f"{where}: a markdown cell graded by hand must be both a grade and a solution cell"
+        )
+
+
 def _student_cell(cell: dict, name: str, index: int) -> None:
     source = cell.get("source", "")
     text = "".join(source) if isinstance(source, list) else source
     meta = cell.setdefault("metadata", {})
     grading = meta.get("nbgrader") if isinstance(meta.get("nbgrader"), dict) else {}
+    if "nbgrader" in meta:
+        if not isinstance(meta["nbgrader"], dict):
+            raise NotebookError(f"{_where(name, index, cell)}: its nbgrader metadata is not a dict")
+        _check_grading(grading, cell, _where(name, index, cell))
     try:
         text, found = strip_regions(text, cell["cell_type"])
     except NotebookError as exc:
         raise NotebookError(f"{_where(name, index, cell, exc.line)}: {exc}", exc.line) from None
     # as nbgrader: a region in a cell its metadata does not mark for it is an error
-    for region, flag in (("SOLUTION", "solution"), ("HIDDEN TESTS", "grade")):
+    for region, flag in (
+        ("SOLUTION", "solution"),
+        ("HIDDEN TESTS", "grade"),
+        ("MARK SCHEME", "task"),
+    ):
         if grading and region in found and not grading.get(flag):
             raise NotebookError(
                 f"{_where(name, index, cell)}: a {region} region in a cell whose nbgrader "
@@ -175,6 +230,8 @@ def _student_cell(cell: dict, name: str, index: int) -> None:
     stub = "\n".join(STUB if cell["cell_type"] == "code" else TEXT_STUB)
     if grading.get("solution") and "SOLUTION" not in found and not _stubbed(text, stub):
         text = stub  # as nbgrader: a solution cell without markers is all solution
+    if grading.get("solution") or found:
+        cell.pop("attachments", None)  # a pasted picture of the answer goes with it
     cell["source"] = text
     if cell["cell_type"] == "code":
         cell["outputs"], cell["execution_count"] = [], None
@@ -191,8 +248,18 @@ def student_notebook(nb: dict, name: str = "notebook") -> dict:
     malformed marker or a JSON value that is not a notebook.
     """
     nb = copy.deepcopy(nb)
+    ids: dict[str, int] = {}
     for index, cell in enumerate(_cells(nb, name)):
         _student_cell(cell, name, index)
+        grading = cell["metadata"].get("nbgrader") or {}
+        if grading.get("grade") or grading.get("solution") or grading.get("locked"):
+            grade_id = grading["grade_id"]
+            if grade_id in ids:
+                raise NotebookError(
+                    f"{_where(name, index, cell)}: grade_id {grade_id!r} is also cell "
+                    f"{ids[grade_id]}'s (nbgrader refuses a duplicate grade id)"
+                )
+            ids[grade_id] = index
     return nb
 
 

@@ -22,10 +22,10 @@ import numpy as np
 
 from ..pipeline.mip_pyramid import mipmap
 from ..pipeline.texture import sample
+from .answers import as_numbers
 from .cases import SEED
-from .running import WrongAnswerType
+from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
-from .scene_report import refuse_non_answers
 from .tolerance import all_close
 
 
@@ -53,49 +53,65 @@ def expected_trilinear(pyramid, uv, lod, wrap) -> np.ndarray:
 
 
 def as_texel_value(value) -> np.ndarray:
-    refuse_non_answers(value, "a number or a colour")
-    if any(isinstance(v, str | bytes) for v in np.ravel(np.asarray(value, dtype=object))):
-        raise WrongAnswerType(f"returned {value!r:.60}: text, not a number or a colour")
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {value!r:.60}, not a number or a colour") from None
-    return arr
+    """A number or one value per channel (at most 4)."""
+    return as_numbers(value, None, "a number, or one value per channel", max_size=16)
 
 
 def same_value(got, expected, args) -> bool:
+    """Within 1e-6 (of the values' size): a texture filtered in float32 (imread's) is right."""
     got = np.asarray(got, dtype=float)
     if got.size != np.size(expected):
         return False
-    return all_close(got.reshape(np.shape(expected)), expected)
+    return all_close(got.reshape(np.shape(expected)), expected, 1e-6)
 
 
-def plain_bilinear(
-    texture, uv, wrap, *, centre=0.5, floor=np.floor, swap=False, wrap_x=None, span=0
-):
-    """A bilinear filter with knobs for the usual mistakes (explanations only).
+ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1)}
 
-    ``centre`` is subtracted from u·W (0.5 is right, 0 samples at texel corners), ``floor``
-    finds the texel to the left (``np.trunc`` is the int() mistake), ``swap`` gives the left
-    texel the weight of the right one, ``wrap_x`` wraps with another mode, ``span=-1``
-    stretches u over W − 1 texels (first centre at u = 0, last at u = 1).
+
+def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=False,
+                   wrap_as=None, clamp=None, transpose=False):  # fmt: skip
+    """A bilinear filter with knobs for the usual mistakes (the defaults are GL's LINEAR).
+
+    ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
+    last texel centres at u = 0 and 1 (x = u·(W − 1)); ``floor="trunc"`` finds the texel to the
+    left with int(); ``swap`` gives the left texel the weight of the right one; ``wrap_as``
+    wraps with another mode whatever the case says (clamping x and y to the texel centres
+    first is the same as ``wrap_as="clamp"``); ``clamp="uv"`` clamps (u, v) to [0, 1] first;
+    ``transpose`` swaps the texture's rows and columns.
     """
     tex = np.asarray(texture, dtype=float)
+    if transpose:
+        tex = np.swapaxes(tex, 0, 1)
     h, w = tex.shape[:2]
-    x, y = uv[0] * (w + span) - centre, uv[1] * (h + span) - centre
-    x0, y0 = floor(x), floor(y)
+    centre, span = ORIGINS[origin]
+    u, v = np.clip(uv, 0.0, 1.0) if clamp == "uv" else np.asarray(uv, dtype=float)
+    x, y = u * (w + span) - centre, v * (h + span) - centre
+    x0, y0 = (np.trunc if floor == "trunc" else np.floor)(np.array([x, y]))
     fx, fy = x - x0, y - y0
     if swap:
         fx, fy = 1 - fx, 1 - fy
+    mode = wrap_as or wrap
 
     def index(i, n):
-        mode = wrap if wrap_x is None else wrap_x
         return int(np.mod(i, n)) if mode == "repeat" else int(np.clip(i, 0, n - 1))
 
     c0, c1, r0, r1 = index(x0, w), index(x0 + 1, w), index(y0, h), index(y0 + 1, h)
     top = tex[r0, c0] * (1 - fx) + tex[r0, c1] * fx
     bottom = tex[r1, c0] * (1 - fx) + tex[r1, c1] * fx
     return top * (1 - fy) + bottom * fy
+
+
+def _channels_fit(args, expected, got) -> bool:
+    return np.size(got) != np.size(expected)
+
+
+def _channels_words(args, expected, got) -> str:
+    n = np.size(expected)
+    want = "one number (the texture has one channel)" if n == 1 else f"{n} values, one per channel"
+    return f": your answer has {np.size(got)} value(s); here the answer is {want}"
+
+
+CHANNELS = Mistake("channels", _channels_words, fits=_channels_fit)
 
 
 # -- bilinear ---------------------------------------------------------------------------------
@@ -126,6 +142,13 @@ def bilinear_cases():
         ("one row (H = 1)", _texture(rng, 1, 4), (0.4, 0.1), "repeat"),
         ("three channels", _texture(rng, 4, 4, 3), (0.3, 0.7), "repeat"),
         ("8-bit values", np.round(t4 * 255), (0.45, 0.55), "clamp"),
+        (
+            "a float32 image (as from imread)",
+            _texture(rng, 4, 6, 3).astype(np.float32),
+            (0.37, 0.61),
+            "repeat",
+        ),  # fmt: skip
+        ("a float32 image, v past the border", t4.astype(np.float32), (0.62, 1.2), "repeat"),
     ]
     out = [(label, (tex, np.array(uv, dtype=float), wrap)) for label, tex, uv, wrap in hard]
     for n in range(14):
@@ -143,58 +166,100 @@ def explain_bilinear(args, expected, got) -> str:
     tex, uv, wrap = args
     h, w = tex.shape[:2]
     x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
-    head = (
+    return (
         f"uv={vec(uv)} on an H×W = {h}×{w} texture, wrap {wrap!r}: x = u·W − ½ = {num(x)}, "
         f"y = v·H − ½ = {num(y)}, the filtered value is {_value(expected, got)}; yours is "
         f"{_value(got, expected)}"
     )
-    return head + _bilinear_mistake(tex, uv, wrap, x, y, got)
 
 
 def _value(a, b=None) -> str:
     a = np.asarray(a, dtype=float)
-    if a.ndim == 0:
-        return num(float(a), None if b is None or np.size(b) != 1 else float(np.ravel(b)[0]))
+    if a.size == 1:
+        other = None if b is None or np.size(b) != 1 else float(np.ravel(b)[0])
+        return num(float(a.ravel()[0]), other)
     return vec(a, b if b is not None and np.size(b) == a.size else None)
 
 
-def _bilinear_mistake(tex, uv, wrap, x, y, got) -> str:
+def _xy(args):
+    tex, uv, wrap = args
     h, w = tex.shape[:2]
-    other = "clamp" if wrap == "repeat" else "repeat"
-    tries = [
-        (lambda: plain_bilinear(tex, uv, wrap, centre=0.0),
-         f": you sampled at texel corners: texel centres are at (i + ½)/W, so x = u·W − ½ "
-         f"(here {num(x)}), not u·W"),
-        (lambda: plain_bilinear(tex, uv, wrap, centre=0.0, span=-1),
-         f": u·(W − 1) puts the first and last texel centres at u = 0 and 1; texel centres are "
-         f"at (i + ½)/W, so x = u·W − ½ (here {num(x)})"),
-        (lambda: plain_bilinear(tex, uv, wrap, floor=np.trunc),
-         f": int() truncates toward zero: for {'x' if x < 0 else 'y'} = {num(min(x, y))} the "
-         f"texel to the {'left' if x < 0 else 'top'} is ⌊{num(min(x, y))}⌋ = "
-         f"{num(np.floor(min(x, y)))}, and the fraction stays in [0, 1)"),
-        (lambda: plain_bilinear(tex, uv, wrap, swap=True),
-         ": the weight of the right (lower) texel is the fraction x − ⌊x⌋ (y − ⌊y⌋); you "
-         "gave it to the left (upper) one"),
-        (lambda: sample(tex, uv[None], "nearest", wrap)[0],
-         ": that is the nearest texel; bilinear blends the four texels around (x, y)"),
-        (lambda: plain_bilinear(tex, uv, wrap, wrap_x=other),
-         f": wrap {wrap!r} " + ("tiles the texture: column −1 is column W − 1, column W is "
-         "column 0" if wrap == "repeat" else "repeats the border texels outwards, it does not "
-         "tile")),
-        (lambda: plain_bilinear(np.swapaxes(tex, 0, 1), uv, wrap),
-         f": u runs along the W = {w} columns, v along the H = {h} rows: texture[row, col] "
-         "is texture[y, x]"),
-    ]  # fmt: skip
-    for value, words in tries:
-        try:
-            if same_value(got, value(), None):
-                return words
-        except (IndexError, ValueError):
-            continue
+    return uv[0] * w - 0.5, uv[1] * h - 0.5
+
+
+def _trunc_words(args, expected, got) -> str:
+    x, y = _xy(args)
+    axis, value = ("x", x) if x < 0 else ("y", y)
+    side = "left" if axis == "x" else "top"
+    return (
+        f"int() truncates toward zero: for {axis} = {num(value)} the texel to the {side} is "
+        f"⌊{num(value)}⌋ = {num(np.floor(value))}, and the fraction stays in [0, 1)"
+    )
+
+
+def _wrap_words(mode):
+    def words(args, expected, got):
+        if mode == "clamp":
+            return ("wrap 'repeat' tiles the texture: column −1 is column W − 1, column W is "
+                    "column 0; you clamped to the border")  # fmt: skip
+        return "wrap 'clamp' repeats the border texels outwards, it does not tile"
+
+    return words
+
+
+BILINEAR_KNOBS = Knobs(plain_bilinear, {
+    "origin": [
+        Slip("texel corners", lambda a, e, g: f"you sampled at texel corners: texel centres are "
+             f"at (i + ½)/W, so x = u·W − ½ (here {num(_xy(a)[0])}), not u·W", "corners"),
+        Slip("u·(W − 1)", lambda a, e, g: "u·(W − 1) puts the first and last texel centres at "
+             f"u = 0 and 1; texel centres are at (i + ½)/W, so x = u·W − ½ (here "
+             f"{num(_xy(a)[0])})", "stretched"),
+    ],
+    "floor": [Slip("int() for floor", _trunc_words, "trunc")],
+    "swap": [Slip("weights swapped", "the weight of the right (lower) texel is the fraction "
+                  "x − ⌊x⌋ (y − ⌊y⌋); you gave it to the left (upper) one", True)],
+    "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
+                Slip("always repeat", _wrap_words("repeat"), "repeat")],
+    "clamp": [
+        Slip("clamped (u, v) first", "you clamped (u, v) to [0, 1] first: with wrap 'repeat' a "
+             "coordinate outside [0, 1] tiles, and near the border the texels beyond wrap "
+             "around", "uv"),
+    ],
+    "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
+                       f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
+                       "texture[row, col] is texture[y, x]", True)],
+})  # fmt: skip
+
+
+def _nearest(tex, uv, wrap):
+    return sample(tex, np.asarray(uv, dtype=float)[None], "nearest", wrap)[0]
+
+
+BILINEAR_MISTAKES = [
+    CHANNELS,
+    Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
+            "around (x, y)", gives=_nearest),
+    BILINEAR_KNOBS,
+]  # fmt: skip
+
+
+def _bilinear_rule(args, expected, got) -> str:
     return (
         ": blend the four texels around (⌊x⌋, ⌊y⌋) (indices wrapped) with weights from "
         "x − ⌊x⌋ and y − ⌊y⌋"
     )
+
+
+def _answers(filter_name):
+    return (PackageAnswer(sample, when=lambda a: a.get("filter") == filter_name),)
+
+
+def bilinear_exercise(scene) -> Exercise:
+    return Exercise(
+        "bilinear", bilinear_cases, as_texel_value, same_value, explain_bilinear,
+        _bilinear_rule, BILINEAR_MISTAKES, answers=_answers("bilinear"),
+        draw=draw_texture_case, scene=scene,
+    )  # fmt: skip
 
 
 def draw_texture_case(ax, case, got):
@@ -220,6 +285,7 @@ def trilinear_cases():
     """λ below, on, between and above the levels; square and non-square pyramids; random."""
     rng = np.random.default_rng(SEED + 90)
     p8, p84, p3 = (Pyramid(mipmap(_texture(rng, *s))) for s in ((8, 8), (8, 4), (8, 8, 3)))
+    p32 = Pyramid(level.astype(np.float32) for level in mipmap(_texture(rng, 8, 8, 3)))
     hard = [
         ("λ = 0: level 0 only", p8, (0.3, 0.6), 0.0, "repeat"),
         ("λ = 1: level 1 only", p8, (0.3, 0.6), 1.0, "repeat"),
@@ -227,8 +293,14 @@ def trilinear_cases():
         ("λ = 0.25", p8, (0.71, 0.12), 0.25, "repeat"),
         ("λ = 2.75", p8, (0.71, 0.12), 2.75, "clamp"),
         ("λ < 0 (magnified): clamped to 0", p8, (0.4, 0.45), -2.0, "repeat"),
+        ("λ = −0.5: clamped to 0", p8, (0.3, 0.6), -0.5, "repeat"),
+        ("λ = −0.25: clamped to 0", p8, (0.71, 0.12), -0.25, "clamp"),
+        ("λ = −1.75: clamped to 0", p8, (0.55, 0.85), -1.75, "repeat"),
+        ("λ = −3.4: clamped to 0", p84, (0.2, 0.4), -3.4, "clamp"),
         ("λ = q, the 1×1 level", p8, (0.4, 0.45), 3.0, "repeat"),
         ("λ above the pyramid: clamped to q", p8, (0.4, 0.45), 7.0, "repeat"),
+        ("λ = q + 0.5: clamped to q", p8, (0.6, 0.3), 3.5, "repeat"),
+        ("a float32 pyramid (from imread), λ = 1.3", p32, (0.35, 0.65), 1.3, "repeat"),
         ("between the last two levels, at the border", p8, (0.02, 0.98), 2.5, "repeat"),
         ("between the last two levels, clamped at the border", p8, (0.02, 0.98), 2.5, "clamp"),
         ("a non-square pyramid (8×4, 4×2, 2×1, 1×1)", p84, (0.3, 0.8), 1.5, "repeat"),
@@ -248,47 +320,136 @@ def trilinear_cases():
     ]
 
 
-def explain_trilinear(args, expected, got) -> str:
-    pyramid, uv, lod, wrap = args
+def _split(pyramid, lod):
     q = len(pyramid) - 1
     lam = min(max(lod, 0.0), q)
-    d0, d1 = int(np.floor(lam)), min(int(np.floor(lam)) + 1, q)
-    t = lam - d0
+    d0 = int(np.floor(lam))
+    return q, lam, d0, min(d0 + 1, q), lam - d0
+
+
+def explain_trilinear(args, expected, got) -> str:
+    pyramid, uv, lod, wrap = args
+    q, lam, d0, d1, t = _split(pyramid, lod)
     a, b = (expected_bilinear(pyramid[d], uv, wrap) for d in (d0, d1))
     sizes = [f"{lv.shape[0]}×{lv.shape[1]}" for lv in pyramid]
-    head = (
+    return (
         f"uv={vec(uv)}, λ = {num(lod)} on a pyramid of {', '.join(sizes)} (q = {q}): λ "
         f"clamped to [0, {q}] is {num(lam)}, levels {d0} and {d1} blended by {num(t)}: "
         f"{_value(a)} and {_value(b)} give {_value(expected, got)}; yours is {_value(got, expected)}"
     )
-    return head + _trilinear_mistake(pyramid, uv, lod, wrap, (d0, d1, t, a, b), got)
 
 
-def _trilinear_mistake(pyramid, uv, lod, wrap, split, got) -> str:
-    d0, d1, t, a, b = split
+def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="right",
+                   levels="two", texels="bilinear"):  # fmt: skip
+    """trilinear with the usual mistakes as knobs (the defaults are GL's LINEAR_MIPMAP_LINEAR).
+
+    ``clamp`` "weight" clamps the levels but weighs them by the raw λ − ⌊λ⌋, "extrapolate"
+    weighs by λ minus the clamped lower level, "index" uses ⌊λ⌋ as a Python index (level −1
+    is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone) or "lower"
+    (⌊λ⌋ alone); ``texels="nearest"`` filters each level with its nearest texel.
+    """
     q = len(pyramid) - 1
-    near = int(np.clip(round(lod), 0, q))
-    tries = [
-        (
-            t * a + (1 - t) * b,
-            f": the weight of level {d1} is the fraction λ − ⌊λ⌋ = {num(t)}; "
-            f"you gave it to level {d0}",
-        ),
-        (
-            expected_bilinear(pyramid[near], uv, wrap),
-            f": that is level {near} alone (the nearest); trilinear blends levels {d0} and {d1}",
-        ),
-        (a, f": that is level {d0} alone; trilinear blends it with level {d1} by {num(t)}"),
-    ]
-    for value, words in tries:
-        if same_value(got, value, None):
-            return words
-    if lod < 0 or lod > q:
-        return (
-            f": λ = {num(lod)} lies outside the pyramid: clamp it to [0, q] = [0, {q}] first "
-            "(below 0 the texture is magnified and level 0 is filtered)"
-        )
+    if clamp == "lambda":
+        lam = min(max(lod, 0.0), q)
+        lower = int(np.floor(lam))
+        t = lam - lower
+    else:
+        lower = int(np.floor(lod))
+        t = lod - lower
+        if clamp in ("weight", "extrapolate"):
+            lower = min(max(lower, 0), q)
+            t = lod - lower if clamp == "extrapolate" else t
+        elif not -len(pyramid) <= lower <= q:
+            return None
+    upper = min(lower + 1, q) if lower >= 0 else lower + 1
+    if levels == "nearest":
+        return _filter(pyramid[int(np.clip(round(lod), 0, q))], uv, wrap, texels)
+    if levels == "lower":
+        return _filter(pyramid[lower], uv, wrap, texels)
+    a, b = _filter(pyramid[lower], uv, wrap, texels), _filter(pyramid[upper], uv, wrap, texels)
+    if weights == "swapped":
+        t = 1 - t
+    return (1 - t) * a + t * b
+
+
+#: How a mistaken trilinear filters one level: a bilinear mistake (of 7.2) as plain_bilinear's knob.
+LEVEL_FILTERS = {
+    "corners": {"origin": "corners"},
+    "clamp": {"wrap_as": "clamp"},
+    "swapped": {"swap": True},
+    "transposed": {"transpose": True},
+}
+
+
+def _filter(level, uv, wrap, texels):
+    if texels == "nearest":
+        return _nearest(level, uv, wrap)
+    if texels in LEVEL_FILTERS:
+        return plain_bilinear(level, uv, wrap, **LEVEL_FILTERS[texels])
+    return expected_bilinear(level, uv, wrap)
+
+
+_BILINEAR_FIRST = (
+    ": each level is filtered with that mistake of bilinear (7.2); get bilinear's check to "
+    "pass first, then build trilinear on it"
+)
+
+
+def _tri_words(text):
+    def words(args, expected, got):
+        pyramid, uv, lod, wrap = args
+        q, lam, d0, d1, t = _split(pyramid, lod)
+        near = int(np.clip(round(lod), 0, q))
+        return text.format(d0=d0, d1=d1, t=num(t), near=near, lod=num(lod), q=q)
+
+    return words
+
+
+TRILINEAR_KNOBS = Knobs(trilinear_with, {
+    "clamp": [
+        Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
+             "[0, q] = [0, {q}] first, then take its levels and the weight (below 0 the texture "
+             "is magnified and level 0 alone is filtered)"), "weight"),
+        Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
+             "[0, q] = [0, {q}] first; the weight λ − ⌊λ⌋ then stays in [0, 1]"),
+             "extrapolate"),
+        Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
+             "[0, q] = [0, {q}] first (⌊λ⌋ = −1 is not a level: Python's pyramid[-1] is the last "
+             "one)"), "index"),
+    ],
+    "weights": [Slip("weights swapped", _tri_words("the weight of level {d1} is the fraction "
+                     "λ − ⌊λ⌋ = {t}; you gave it to level {d0}"), "swapped")],
+    "levels": [
+        Slip("nearest level", _tri_words("that is level {near} alone (the nearest); trilinear "
+             "blends levels {d0} and {d1}"), "nearest"),
+        Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
+             "level {d1} by {t}"), "lower"),
+    ],
+    "texels": [
+        Slip("nearest texels", "you took the nearest texel of each level; trilinear filters "
+             "each level bilinearly, with its own size", "nearest"),
+        Slip("bilinear: texel corners", "the levels are sampled at texel corners (x = u·W, "
+             "not u·W − ½)" + _BILINEAR_FIRST, "corners"),
+        Slip("bilinear: always clamp", "the levels are clamped at the border whatever the wrap "
+             "mode" + _BILINEAR_FIRST, "clamp"),
+        Slip("bilinear: weights swapped", "within each level the texel weights are swapped"
+             + _BILINEAR_FIRST, "swapped"),
+        Slip("bilinear: rows and columns swapped", "each level's rows and columns are swapped"
+             + _BILINEAR_FIRST, "transposed"),
+    ],
+})  # fmt: skip
+
+
+def _trilinear_rule(args, expected, got) -> str:
     return (
         ": filter each level bilinearly with its own size (texel centres at (i + ½)/W_level), "
         "then (1 − t)·level ⌊λ⌋ + t·level ⌊λ⌋+1"
     )
+
+
+def trilinear_exercise(scene) -> Exercise:
+    return Exercise(
+        "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
+        _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
+        draw=draw_texture_case, scene=scene,
+    )  # fmt: skip

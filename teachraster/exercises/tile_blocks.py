@@ -24,10 +24,12 @@ import numpy as np
 
 from ..core.edges import edge_values_at, passes, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, snap
+from .answers import short
 from .cases import SEED
+from .coverage import covered
+from .exercise import Exercise, Knobs, Slip
 from .running import WrongAnswerType
 from .scalars import num, tri_words, vec
-from .scene_report import RETURNED_NONE
 
 KINDS = ("rejected", "accepted", "partial")
 
@@ -75,16 +77,112 @@ def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
 def as_kind(value) -> str:
     names = ", ".join(repr(k) for k in KINDS)
     if value is None:
-        raise WrongAnswerType(RETURNED_NONE)
+        raise WrongAnswerType("returned None (a missing `return`?)")
     if not isinstance(value, str):
-        raise WrongAnswerType(f"returned {value!r:.60}, not one of the texts {names}")
+        raise WrongAnswerType(f"returned {short(value)}, not one of the texts {names}")
     if value not in KINDS:
-        raise WrongAnswerType(f"returned the text {value!r:.40}; expected one of {names}")
+        raise WrongAnswerType(f"returned the text {short(value)}; expected one of {names}")
     return str(value)
 
 
 def same_kind(got, expected, args) -> bool:
     return got == expected
+
+
+#: The points a mistaken classify_block tests, from the block (x0, y0, size): (xs, ys).
+POINTS = {
+    "centres": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s - 1),
+    "outer corners": lambda x0, y0, s: _xs_ys(x0, y0, s),
+    "beyond": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s),
+    "two corners": lambda x0, y0, s: (
+        np.array([x0 + 0.5, x0 + s - 0.5]),
+        np.array([y0 + 0.5, y0 + s - 0.5]),
+    ),  # fmt: skip
+}
+
+
+def _xs_ys(x, y, d):
+    return np.array([x, x + d, x, x + d]), np.array([y, y, y + d, y + d])
+
+
+def classify_with(xy, x0, y0, size, *, points="centres", tie="top-left", orient=True, logic="per edge"):  # fmt: skip
+    """classify_block with the usual mistakes as knobs (the defaults are the corner trick).
+
+    ``logic`` "inside" rejects a block whose tested points all lie outside the triangle and
+    accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
+    accepts a block every edge's maximising corner passes.
+    """
+    xs, ys = POINTS[points](x0, y0, size)
+    if logic == "inside":
+        inside = covered(np.asarray(xy, dtype=float), np.stack([xs, ys], axis=1))
+        return "accepted" if inside.all() else ("rejected" if not inside.any() else "partial")
+    kind = classify_at(xy, xs, ys, tie, orient)
+    return "accepted" if logic == "accept by the best corner" and kind == "partial" else kind
+
+
+def _two_corners(args, expected, got) -> str:
+    xy, x0, y0, size = args
+    return (
+        f"you tested only 2 of the 4 extreme centres, ({num(x0 + 0.5)}, {num(y0 + 0.5)}) and "
+        f"({num(x0 + size - 0.5)}, {num(y0 + size - 0.5)}): an edge can pass both and fail "
+        "the other two; test all four (or, per edge, the one its signs pick)"
+    )
+
+
+def _tie_words(args, expected, got) -> str:
+    xy, x0, y0, size = args
+    edge, c = _on_edge(_edge_table(xy, x0, y0, size))
+    if edge is None:
+        return "a centre on an edge is decided by the top-left rule, as every pixel centre is"
+    rule = "includes" if edge["owns"] else "excludes"
+    return f"corner {vec(c)} lies exactly on edge {edge['name']}, a {edge['kind']} edge: the top-left rule {rule} it"  # fmt: skip
+
+
+BLOCK_KNOBS = Knobs(classify_with, {
+    "points": [
+        Slip("outer corners", "you tested the block's outer corners; the extreme pixel centres "
+             "lie ½ px inside", "outer corners"),
+        Slip("one pixel too far", lambda a, e, g: f"the last pixel centre of the block is x0 + "
+             f"size − ½ = {num(a[1] + a[3] - 0.5)}, not x0 + size + ½", "beyond"),
+        Slip("two corners only", _two_corners, "two corners"),
+    ],
+    "tie": [
+        Slip("no top-left rule (E > 0)", _tie_words, "strict"),
+        Slip("no top-left rule (E ≥ 0)", _tie_words, "loose"),
+    ],
+    "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
+                    "both windings (orient the edges so that the interior is positive)", False)],
+    "logic": [
+        Slip("corners inside", lambda a, e, g: "corners outside the triangle do not reject a "
+             "block (nor do corners inside accept it): the test is per edge; "
+             + _by_verdicts(_edge_table(*a), e, g)[2:], "inside"),
+        Slip("best corner accepts", lambda a, e, g: _by_verdicts(_edge_table(*a), e, "accepted")[2:],
+             "accept by the best corner"),
+    ],
+})  # fmt: skip
+
+
+def explain_block(args, expected, got) -> str:
+    xy, x0, y0, size = args
+    return (
+        f"the block x0={x0}, y0={y0}, size={size} (extreme centres x = {num(x0 + 0.5)}, "
+        f"{num(x0 + size - 0.5)}; y = {num(y0 + 0.5)}, {num(y0 + size - 0.5)}) is {expected}; "
+        f"yours says {got}"
+    )
+
+
+def _block_rule(args, expected, got) -> str:
+    xy, x0, y0, size = args
+    if setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS).area2 == 0:
+        return f": {tri_words(xy)} are collinear, and a zero-area triangle rejects every block"
+    return _by_verdicts(_edge_table(xy, x0, y0, size), expected, got)
+
+
+def exercise(scene) -> Exercise:
+    return Exercise(
+        "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
+        [BLOCK_KNOBS], draw=draw_block_case, scene=scene,
+    )  # fmt: skip
 
 
 def _hard_blocks():
@@ -160,41 +258,6 @@ def _edge_table(xy, x0, y0, size):
 
 def _corner(c) -> str:
     return f"{vec(c[:2])} (E = {num(c[2])})"
-
-
-def explain_block(args, expected, got) -> str:
-    xy, x0, y0, size = args
-    head = (
-        f"the block x0={x0}, y0={y0}, size={size} (extreme centres x = {num(x0 + 0.5)}, "
-        f"{num(x0 + size - 0.5)}; y = {num(y0 + 0.5)}, {num(y0 + size - 0.5)}) is {expected}; "
-        f"yours says {got}"
-    )
-    if setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS).area2 == 0:
-        return (
-            f"{head}: {tri_words(xy)} are collinear, and a zero-area triangle rejects every block"
-        )
-    return head + _block_mistake(xy, x0, y0, size, expected, got)
-
-
-def _block_mistake(xy, x0, y0, size, expected, got) -> str:
-    edges = _edge_table(xy, x0, y0, size)
-    ys, xs = _corners(x0, y0, size)
-    for pts, words in (
-        ((xs + np.array([0, 1, 0, 1]), ys + np.array([0, 0, 1, 1])), "you tested the block's outer corners; the extreme pixel centres lie ½ px inside"),
-        ((xs + 0.5 + np.array([0, 1, 0, 1]), ys + 0.5 + np.array([0, 0, 1, 1])), f"the last pixel centre of the block is x0 + size − ½ = {num(x0 + size - 0.5)}, not x0 + size + ½"),
-    ):  # fmt: skip
-        if expected != got and classify_at(xy, *pts) == got and words:
-            return f": {words}"
-    centres = (xs + 0.5, ys + 0.5)
-    if classify_at(xy, *centres, orient=False) == got:
-        return ": this triangle runs counter-clockwise on screen: handle both windings (orient the edges so that the interior is positive)"  # fmt: skip
-    for tie in ("strict", "loose"):
-        if classify_at(xy, *centres, tie=tie) == got:
-            edge, c = _on_edge(edges)
-            if edge is not None:
-                rule = "includes" if edge["owns"] else "excludes"
-                return f": corner {vec(c)} lies exactly on edge {edge['name']}, a {edge['kind']} edge: the top-left rule {rule} it"  # fmt: skip
-    return _by_verdicts(edges, expected, got)
 
 
 def _on_edge(edges):

@@ -1,59 +1,39 @@
-"""Check an exercise whose answer is a value (a number, a few numbers, a bool, a polygon).
+"""Check one exercise: run its cases, compare, explain, and build the report.
 
-Three steps, all inside the check's time budget: run every case (the student's function and the
-conversion of its answer, :func:`~.running.run_case`), stopping at the first case past its
-limit; compare each answer with the expected one; explain each failure, knowing the answers to
-all cases (a pattern such as ``abs(E)`` shows only across cases). Comparisons and explanations
-run through :func:`~.running.run_checker`: a strange answer costs a plain explanation, never
-the budget.
+Four steps, all within the check's time budget (:mod:`.running`): run every case (the
+student's function and the strict reading of its answer), stopping at the first case past its
+time limit; compare each answer with the package's; name the mistake behind the failures,
+knowing every answer (:mod:`.diagnosis`); and look whether the function merely calls the
+package's own answer (:mod:`.package_answers`). The report's picture (the exercise's scene)
+is built here and run only when it is drawn. The same steps check every exercise, described
+by an :class:`~.exercise.Exercise`.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
-
-import numpy as np
-
-from .answers import low_precision, short
+from .diagnosis import Result, diagnose
+from .exercise import Exercise, copies
+from .package_answers import package_note
 from .report import Failure, Report
 from .running import SKIPPED, current, run_case, run_checker
-from .scalars import num
 
 #: Outcome kinds after which the check stops (the time is spent).
 STOPS = ("timeout", "budget")
 
 
-@dataclass(frozen=True)
-class ValueExercise:
-    """How to check one value exercise.
-
-    ``cases()`` gives (label, args, expected); ``convert`` reads the student's answer (raising
-    :class:`~.running.WrongAnswerType`); ``same(got, expected)`` compares;
-    ``explain(args, expected, got, **pattern)`` returns the explanation, or (kind, explanation);
-    ``draw(ax, case, got)`` draws a case; ``pattern(results)`` (optional) looks at every
-    (args, expected, got) and returns keyword arguments for ``explain``.
-    """
-
-    cases: Callable
-    convert: Callable
-    same: Callable
-    explain: Callable
-    draw: Callable
-    pattern: Callable | None = None
-
-
-def run_all(fn, cases, convert) -> list:
+def run_all(spec: Exercise, fn, cases) -> list:
     """(case, outcome) of each case run, in order, until the check stops."""
     ran = []
-    for k, (label, args, expected) in enumerate(cases):
-        copies = tuple(np.array(a, copy=True) if isinstance(a, np.ndarray) else a for a in args)
-        outcome = run_case(
-            lambda copies=copies: convert(fn(*copies)), case=f"{k + 1} of {len(cases)}"
-        )
+    for k, case in enumerate(cases):
+        args = case[1]
+        if spec.call is not None:
+            body = lambda args=args: spec.call(fn, copies(args))  # noqa: E731
+        else:
+            body = lambda args=args: spec.convert(fn(*copies(args)))  # noqa: E731
+        outcome = run_case(body, case=f"{k + 1} of {len(cases)}")
         if outcome.error == SKIPPED:
             break
-        ran.append(((label, args, expected), outcome))
+        ran.append((case, outcome))
         if outcome.kind in STOPS:
             break
     return ran
@@ -64,74 +44,57 @@ def all_not_implemented(ran) -> bool:
     return bool(ran) and all(outcome.not_implemented for _, outcome in ran)
 
 
-def check_value_exercise(name: str, fn, spec: ValueExercise) -> Report:
-    """Run, compare and explain (see the module docstring); the report of exercise ``name``."""
+def check_exercise(spec: Exercise, fn) -> Report:
+    """Run, compare, explain (see the module docstring): the report of exercise ``spec``."""
     cases = spec.cases()
-    ran = run_all(fn, cases, spec.convert)
-    first = _drawer(spec.draw, cases[0], None)
+    ran = run_all(spec, fn, cases)
+    scene = _scene(spec, fn)
     if all_not_implemented(ran):
-        return Report(name, [], len(cases), True, first)
-    answered = [(case, o.value) for case, o in ran if o.error is None]
-    same = [run_checker(lambda c=c, g=got: bool(spec.same(g, c[2])), False) for c, got in answered]
-    wrong = [(c, got) for (c, got), ok in zip(answered, same) if not ok]
-    results = [(c[1], c[2], got) for c, got in answered]
-    pattern = run_checker(lambda: spec.pattern(results), {}) if spec.pattern else {}
-    explained = {id(c): _failure(spec, c, got, pattern) for c, got in wrong}
+        return Report(spec.name, [], len(cases), True, _drawer(spec, cases[0], None), scene=scene)
+    results = []
+    for k, (case, outcome) in enumerate(ran):
+        if outcome.error is None:
+            label, args, expected = case
+            value = outcome.value
+            ok = run_checker(lambda v=value, e=expected, a=args: bool(spec.same(v, e, a)), False)
+            results.append(Result(k, args, expected, outcome.value, ok))
+    said = diagnose(spec, results)
+    answers = {r.index: r.got for r in results}
     failures = []
-    for case, outcome in ran:
+    for k, (case, outcome) in enumerate(ran):
+        label, _, expected = case
         if outcome.error is not None:
-            draw = _drawer(spec.draw, case, None)
-            failures.append(Failure(case[0], outcome.error, case[2], None, draw, outcome.kind))
-        elif id(case) in explained:
-            failures.append(explained[id(case)])
-    example = _drawer(spec.draw, cases[0], cases[0][2])
-    return Report(name, failures, len(cases), False, example, current().stopped, len(ran))
+            draw = _drawer(spec, case, None)
+            failures.append(Failure(label, outcome.error, expected, None, draw, outcome.kind))
+        elif k in said:
+            kind, text = said[k]
+            got = answers[k]
+            failures.append(Failure(label, text, expected, got, _drawer(spec, case, got), kind))
+    stopped = current().stopped
+    if scene is not None and stopped is not None:
+        scene.blocked = f"not run: {stopped}"
+    package = None
+    if stopped is None and spec.answers:
+        package = package_note(spec, fn, cases[0])
+    example = _drawer(spec, cases[0], cases[0][2])
+    return Report(
+        spec.name, failures, len(cases), False, example, stopped, len(ran), package, scene=scene
+    )
 
 
-def _failure(spec: ValueExercise, case, got, pattern: dict) -> Failure:
-    label, args, expected = case
-    fallback = ("value", f"yours is {short(got)}, expected {short(expected)}")
-    said = run_checker(lambda: spec.explain(args, expected, got, **pattern), fallback)
-    kind, text = said if isinstance(said, tuple) else ("value", said)
-    text = run_checker(lambda: float32_note(text, got, expected), text)
-    if "float32" in text and kind == "value":
-        kind = "float32"
-    return Failure(label, text, expected, got, _drawer(spec.draw, case, got), kind)
+def _scene(spec: Exercise, fn):
+    if spec.scene is None:
+        return None
+    scene = spec.scene(fn)
+    scene.seconds = current().seconds
+    return scene
 
 
-def float32_note(text: str, got, expected) -> str:
-    """Add that float32 is the cause, where the answer is a float32 or off by its rounding."""
-    if "float32" in text or "float16" in text:
-        return text
-    dtype = low_precision(got)
-    if dtype is not None:
-        digits = 7 if dtype == "float32" else 3
-        return _then(
-            text,
-            f"Your answer is a {dtype} (about {digits} significant digits): compute in float64 "
-            "and return that",
-        )
-    g, e = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
-    if g.shape != e.shape or not (np.isfinite(g).all() and np.isfinite(e).all()):
-        return text
-    error = float(np.max(np.abs(g - e) / np.maximum(1.0, np.abs(e)), initial=0.0))
-    if 0 < error < 1e-5:
-        return _then(
-            text,
-            f"The difference ({num(error)} relative) is about float32's rounding (6e-8 relative "
-            "per operation): did you compute in float32? Use float64",
-        )
-    return text
+def _drawer(spec: Exercise, case, got):
+    if spec.draw is None:
+        return None
 
-
-def _then(text: str, sentence: str) -> str:
-    """``text`` followed by another sentence."""
-    text = text.rstrip()
-    return f"{text}{'' if text.endswith('.') else '.'} {sentence}"
-
-
-def _drawer(draw, case, got):
     def drawing(ax):
-        return draw(ax, case, got)
+        return spec.draw(ax, case, got)
 
     return drawing

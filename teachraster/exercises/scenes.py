@@ -1,12 +1,15 @@
-"""Whole pictures for exercises 05–08: the student's function in a small scene, beside the package's.
+"""Whole pictures: the student's function in a small scene, beside the package's.
 
 As CS184 and CS248 show a student's image beside the staff reference with a difference
-image, :meth:`.scene_report.SceneReport.compare` draws three panels: the scene rendered with
-the student's function plugged in, the same scene with the package's, and the pixels that
-differ (with the size of the difference where values are continuous). Each scene is small
-(a few hundred calls of the student's function) and runs only when it is drawn or asked for
-(the scenes are built in :mod:`.picture_scenes`):
+image, :meth:`.report.Report.compare` draws three panels: the scene rendered with the
+student's function plugged in, the same scene with the package's, and the pixels that differ
+(with the size of the difference where values are continuous). Each scene is small (a few
+hundred calls of the student's function), runs only when it is drawn or asked for, within the
+CPU time one case of the check may take, and not at all when the check stopped on a time limit
+(:attr:`Scene.blocked`: an endless loop is not run a second time). The scenes themselves are
+built in :mod:`.picture_scenes`:
 
+- ``fill``: a fan of 16 triangles wound both ways, how many cover each pixel;
 - ``depth_to_unorm``: two nearly coplanar triangles in a 16-bit depth buffer (z-fighting);
 - ``coverage_fraction``: a fan of triangles, the covered fraction of 4 samples per pixel;
 - ``resolve``: the same fan in colour, resolved over the samples;
@@ -26,7 +29,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .running import run_case
+from . import output
+from .running import CASE_SHARE, DEFAULT_BUDGET, Outcome, budget, run_case
 
 #: Colours of differing pixels and of the marked pixel.
 DIFF_COLOUR, MARK_COLOUR = "#d7301f", "#ff9f1c"
@@ -49,12 +53,21 @@ class Scene:
     #: The package's values behind the picture, (k, H, W), where a pixel's picture may agree
     #: while its values do not (a wrong depth can still lose the same depth test): compared too.
     reference_parts: np.ndarray | None = field(default=None, repr=False)
+    #: CPU seconds of the check's budget: the picture may take what one of its cases may.
+    seconds: float = DEFAULT_BUDGET
+    #: Why the student's function is not run for the picture (the check stopped on a time
+    #: limit: a loop is not run twice), or None.
+    blocked: str | None = None
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
         """The student's picture, or None when the function failed (see :attr:`error`)."""
         if self._outcome is None:
-            self._outcome = run_case(self.run)
+            if self.blocked is not None:
+                self._outcome = Outcome(error=self.blocked, kind="timeout")
+            else:
+                with budget(self.seconds, share=CASE_SHARE), output.captured():
+                    self._outcome = run_case(self.run, case="the picture")
         return self._outcome.value if self._outcome.ok else None
 
     @property
@@ -85,6 +98,14 @@ class Scene:
         with np.errstate(invalid="ignore"):
             d = np.abs(got - self.reference).reshape(*self.reference.shape[:2], -1)
         return np.where(self.differs(), np.nanmax(np.where(np.isnan(d), np.inf, d), axis=2), np.nan)
+
+    def differing(self) -> np.ndarray:
+        """(n, 2) rows and columns of the pixels that differ, in raster order."""
+        return np.argwhere(self.differs())
+
+    def draw(self, axes=None, pixel=None, connect: bool = True):
+        """:func:`draw_comparison` of this scene."""
+        return draw_comparison(self, axes, pixel, connect)
 
     def explain(self, row: int, col: int) -> str:
         """Why pixel (row, col) of the student's picture differs, in the checker's words."""

@@ -1,0 +1,232 @@
+"""When a case has run too long, and the delivery of the interrupt that stops it.
+
+A case is measured in **CPU time of the thread that runs it**, not in wall-clock time: a busy
+server, a first call that imports something, or output that the kernel is slow to send does not
+count against the student. An :class:`Alarm`'s watchdog thread reads the case's thread CPU
+clock (``time.pthread_getcpuclockid``; the process's CPU time where there is none) and wakes
+only when the limit could have been reached. It fires when
+
+- the case has used ``seconds`` of CPU (an endless loop, or code far slower than needed), or
+- it has run ``wait`` seconds while computing less than ``WAITING`` of the time (it waits:
+  ``time.sleep``, ``input()``, a lock), or
+- it has run ``cap`` seconds of wall-clock time in all (a machine too busy to give it CPU).
+
+Firing sends :class:`.interrupt.CaseInterrupt` to the case's thread, again every ``TICK``
+seconds until the case unwinds: in the main thread (where a Jupyter kernel runs its cells) by
+``SIGALRM`` sent to that thread (which also cuts ``time.sleep`` short), in another thread as an
+asynchronous exception. Someone else's ``SIGALRM`` timer is never touched, and a signal of
+theirs arriving during a case is passed on to their handler.
+
+What cannot be interrupted: one long call into C that holds the interpreter (``sum(range(10**12))``,
+a huge numpy operation). Its case is reported as past its limit once the call returns.
+"""
+
+from __future__ import annotations
+
+import signal
+import sys
+import threading
+import time
+
+from .interrupt import (
+    TICK,
+    CaseInterrupt,
+    ThreadInterrupt,
+    busy,
+    drain_async,
+    escapes,
+    send_async,
+)
+
+#: A case that has run ``wait`` seconds while computing less than this share of them waits.
+WAITING = 0.05
+#: No wait is ever longer than this (threading refuses larger timeouts).
+LONGEST = 1e6
+
+
+def cpu_clock(thread_id: int | None = None):
+    """A function returning the CPU seconds of thread ``thread_id`` (default: this one).
+
+    Readable from any thread while that thread lives; the process's CPU time where the
+    platform has no per-thread clock.
+    """
+    try:
+        clock = time.pthread_getcpuclockid(thread_id or threading.get_ident())
+        time.clock_gettime(clock)
+    except (AttributeError, OSError):
+        return time.process_time
+    return lambda: time.clock_gettime(clock)
+
+
+class Alarm:
+    """Interrupts the calling thread once it has run too long, from :meth:`start` to :meth:`stop`.
+
+    ``seconds`` is the case's CPU limit; ``wait`` and ``cap`` its wall-clock limits (see the
+    module docstring); ``guard`` is the checker's frame that catches
+    :class:`~.interrupt.CaseInterrupt`. Afterwards ``fired`` tells whether a limit passed,
+    ``why`` which ("cpu", "wait" or "wall"), and :meth:`cpu` how much CPU the case used.
+    """
+
+    def __init__(self, seconds: float, guard, wait: float | None = None, cap: float | None = None):
+        self.seconds = min(seconds, LONGEST)
+        self.wait = min(5 * seconds if wait is None else wait, LONGEST)
+        self.cap = min(20 * seconds if cap is None else cap, LONGEST)
+        self.guard = guard
+        self.active = False
+        self.fired = False
+        self.fired_at = None
+        self.why = None
+        self.fires = 0
+        self.mode = None
+        self._previous = None
+        self._trace = None
+        self._traced = False
+        self._end = None
+
+    # -- measuring -------------------------------------------------------------------------------
+    def cpu(self) -> float:
+        """CPU seconds the case has used (until :meth:`stop`, then frozen)."""
+        if self._end is not None:
+            return self._end[0]
+        try:
+            self._cpu_now = self._clock() - self._cpu_start
+        except OSError:  # the thread has ended: its clock is gone
+            pass
+        return self._cpu_now
+
+    def wall(self) -> float:
+        """Wall-clock seconds since :meth:`start` (until :meth:`stop`, then frozen)."""
+        return self._end[1] if self._end is not None else time.perf_counter() - self.begin
+
+    def due(self) -> str | None:
+        """ "cpu", "wait" or "wall" once a limit has passed, else None."""
+        cpu, wall = self.cpu(), self.wall()
+        if cpu > self.seconds:
+            return "cpu"
+        if wall > self.cap:
+            return "wall"
+        if wall > self.wait and cpu < WAITING * wall:
+            return "wait"
+        return None
+
+    def overran(self) -> bool:
+        """A limit passed (also where nothing could interrupt the case)."""
+        return self.due() is not None
+
+    def _next_look(self) -> float:
+        """Seconds until a limit could first be reached (one thread's CPU runs no faster than
+        the clock on the wall; the process's CPU, summed over threads, may)."""
+        cpu, wall = self.cpu(), self.wall()
+        soonest = [self.seconds - cpu, self.cap - wall, max(self.wait - wall, TICK)]
+        if self._clock is time.process_time:
+            soonest.append(TICK)
+        return min(max(min(soonest), 0.005), LONGEST)
+
+    # -- start and stop ------------------------------------------------------------------------
+    def start(self) -> None:
+        self.begin = time.perf_counter()
+        self._clock = cpu_clock()
+        self._cpu_start = self._clock()
+        self._cpu_now = 0.0
+        if getattr(busy, "on", False):
+            return  # a check inside a checked function: the outer alarm governs
+        busy.on = True
+        busy.alarm = self
+        self.active = True
+        in_main = threading.current_thread() is threading.main_thread()
+        if in_main and hasattr(signal, "pthread_kill"):
+            self.mode = "signal"
+            self._previous = signal.signal(signal.SIGALRM, self._on_signal)
+        elif send_async is not None:
+            self.mode = "watchdog"
+        else:
+            self.mode = "measured"
+            return
+        self._start_watchdog()
+
+    def stop(self) -> None:
+        """Idempotent: disarm, restore the previous handler and trace function."""
+        if self._end is None:
+            self._end = (self.cpu(), self.wall())
+        self.active = False
+        mode, self.mode = self.mode, None
+        if mode is None:
+            return
+        busy.on = False
+        busy.alarm = None
+        if mode in ("signal", "watchdog"):
+            with self._lock:
+                self._done.set()
+                if mode == "watchdog":
+                    drain_async()  # drop an interrupt not yet delivered
+        if mode == "signal":
+            # None: a handler not installed from Python, which cannot be put back
+            signal.signal(signal.SIGALRM, self._previous or signal.SIG_DFL)
+        if self._traced:
+            self._traced = False
+            sys.settrace(self._trace)
+
+    # -- the interrupt -------------------------------------------------------------------------
+    def _on_signal(self, signum, frame):
+        if not (self.active and self.fired):  # someone else's alarm: theirs to handle
+            if callable(self._previous):
+                return self._previous(signum, frame)
+            return None
+        if self.fires > 1 and sys.version_info >= (3, 11):
+            self._trace_frames(frame)
+        raise CaseInterrupt(f"stopped after {self.seconds:g} s")
+
+    def _trace_frames(self, frame) -> None:
+        """Watch every frame between ``frame`` and the guard instruction by instruction."""
+        if not self._traced:
+            self._trace = sys.gettrace()
+            self._traced = True
+        f = frame
+        while f is not None and f is not self.guard:
+            f.f_trace = self._tracer
+            f.f_trace_opcodes = True
+            f = f.f_back
+        sys.settrace(self._tracer)
+
+    def _tracer(self, frame, event, arg):
+        if event == "call":
+            frame.f_trace_opcodes = True
+        elif self.active and escapes(frame, self.guard):
+            raise CaseInterrupt(f"stopped after {self.seconds:g} s")
+        return self._tracer
+
+    def _send(self) -> None:
+        if self.mode == "signal":
+            signal.pthread_kill(self._thread_id, signal.SIGALRM)
+        else:
+            send_async(self._thread_id, ThreadInterrupt)
+
+    def _start_watchdog(self) -> None:
+        self._lock = threading.Lock()
+        self._done = threading.Event()
+        self._thread_id = threading.get_ident()
+
+        def watch():
+            while (why := self.due()) is None:
+                if self._done.wait(self._next_look()):
+                    return
+            last = None if why == "cpu" else self.cpu()
+            while True:
+                with self._lock:
+                    if self._done.is_set():
+                        return
+                    if not self.fired:
+                        self.why, self.fired_at = why, time.perf_counter()
+                    self.fired = True
+                    now = self.cpu()
+                    # an asynchronous exception reaches a thread only while it runs Python: one
+                    # left pending on a thread blocked in a call keeps every other thread's
+                    # interpreter loop on its slow path, so a blocked thread is not sent one
+                    if self.mode == "signal" or last is None or now > last:
+                        self.fires += 1
+                        self._send()
+                    last = now
+                if self._done.wait(TICK):
+                    return
+
+        threading.Thread(target=watch, daemon=True, name="teachraster-check-watchdog").start()

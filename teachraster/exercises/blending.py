@@ -1,0 +1,125 @@
+"""Exercises ``over(src, dst)`` and ``over_premultiplied(src, dst)`` of lesson 12: the blend
+equation.
+
+The expected colours come from the core: :func:`teachraster.blend_equation` with the factor
+pairs of ``render(..., blend="over" | "premultiplied")``. Each mistake is a wrong blend the
+checker computes itself; a colour computed in float32 is right (within 1e-6).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.blend_factors import BLEND_MODES, blend_equation
+from .answers import as_numbers
+from .exercise import Exercise, Mistake, PackageAnswer
+from .scalars import vec
+from .tolerance import all_close
+
+SEED = 20241126
+
+
+def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
+    """(label, (src, dst), expected) for ``mode`` "over" or "premultiplied"."""
+    pairs = [
+        ("opaque red over blue", [1, 0, 0, 1], [0, 0, 1, 1]),
+        ("half red over blue", [1, 0, 0, 0.5], [0, 0, 1, 1]),
+        ("half red over transparent black", [1, 0, 0, 0.5], [0, 0, 0, 0]),
+        ("transparent over grey", [0.3, 0.6, 0.9, 0.0], [0.5, 0.5, 0.5, 1]),
+        ("quarter green over half grey", [0, 1, 0, 0.25], [0.5, 0.5, 0.5, 0.5]),
+    ]
+    rng = np.random.default_rng(SEED + 1)
+    for k in range(20):
+        pairs.append((f"random colours {k}", *rng.uniform(0, 1, (2, 4)).round(3)))
+    out = []
+    for label, src, dst in pairs:
+        src, dst = np.asarray(src, float), np.asarray(dst, float)
+        if mode == "premultiplied":
+            src = np.r_[src[:3] * src[3], src[3]]  # these cases hold premultiplied colours
+            dst = np.r_[dst[:3] * dst[3], dst[3]]
+        out.append((label, (src, dst), blend_equation(src, dst, *BLEND_MODES[mode])))
+    return out
+
+
+def _rgba(value) -> np.ndarray:
+    return as_numbers(value, (4,), "an RGBA colour, shape (4,)")
+
+
+def explain_blend(args, expected, got) -> str:
+    src, dst = args
+    return (
+        f"src = {vec(src)}, dst = {vec(dst)}: the blend is {vec(expected, got)}; yours is "
+        f"{vec(got, expected)}"
+    )
+
+
+def _rule(mode: str):
+    s, d = BLEND_MODES[mode]
+    return lambda *a: f": src·{s} + dst·{d} (glBlendFunc({s}, {d})), on all four channels"
+
+
+def _scaled(src, dst, s, d):
+    """src·s + dst·d, with s and d one factor or one per channel."""
+    return np.asarray(src, float) * s + np.asarray(dst, float) * d
+
+
+def _colour_only(src, dst, alpha):
+    return np.r_[src[:3] * src[3] + dst[:3] * (1 - src[3]), alpha]
+
+
+COMMON = [
+    ("destination unchanged", "that is the destination unchanged: the source is blended over "
+     "it, weighted by its alpha", lambda s, d: np.asarray(d, dtype=float)),
+    ("source unchanged", "that is the source unchanged: it is blended over the destination, "
+     "weighted by its alpha", lambda s, d: np.asarray(s, dtype=float)),
+    ("destination alpha", "the destination alpha was used instead of the source alpha",
+     lambda s, d: _scaled(s, d, d[3], 1 - d[3])),
+    ("weights swapped", "you gave the source the weight 1 − α and the destination α: the "
+     "source alpha weighs the source", lambda s, d: _scaled(s, d, 1 - s[3], s[3])),
+    ("kept source alpha", "the alpha channel blends too: the result's alpha is not the "
+     "source's", lambda s, d: _colour_only(s, d, s[3])),
+    ("kept destination alpha", "the alpha channel blends too: the result's alpha is not the "
+     "destination's", lambda s, d: _colour_only(s, d, d[3])),
+]  # fmt: skip
+OVER = [
+    ("destination not scaled", "the destination was not scaled by (1 − α)",
+     lambda s, d: _scaled(s, d, s[3], 1)),
+    ("source not multiplied", "the source was not multiplied by its alpha (that is the "
+     "premultiplied rule)", lambda s, d: _scaled(s, d, 1, 1 - s[3])),
+    ("Porter-Duff alpha", "alpha was composed as Porter-Duff's a + (1 − a)·b; GL's 'over' uses "
+     "one factor pair, SRC_ALPHA, for all four channels (alpha a² + (1 − a)·b)",
+     lambda s, d: _colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
+]  # fmt: skip
+PREMULTIPLIED = [
+    ("destination not scaled", "the destination was not scaled by (1 − α)",
+     lambda s, d: _scaled(s, d, 1, 1)),
+    ("premultiplied twice", "you multiplied the source by its alpha again, but it is "
+     "premultiplied already (that darkens the edges: the dark fringe); a premultiplied source "
+     "is added as it is: src + dst·(1 − α)", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
+    ("premultiplied twice", "you multiplied the source colour by its alpha again, but it is "
+     "premultiplied already (the dark fringe): src + dst·(1 − α)",
+     lambda s, d: _colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
+]  # fmt: skip
+
+
+def _mistakes(mode: str) -> list[Mistake]:
+    table = (OVER if mode == "over" else PREMULTIPLIED) + COMMON
+    return [Mistake(kind, words, gives=gives) for kind, words, gives in table]
+
+
+def _exercise(name: str, mode: str) -> Exercise:
+    return Exercise(
+        name, lambda: blend_cases(mode), _rgba, lambda g, e, a: all_close(g, e, 1e-6),
+        explain_blend, _rule(mode), _mistakes(mode), answers=(PackageAnswer(blend_equation),),
+        draw=_draw_blend,
+    )  # fmt: skip
+
+
+def _draw_blend(ax, case, got):
+    from .drawing import draw_values
+
+    return draw_values(ax, ["R", "G", "B", "A"], case[2], got)
+
+
+OVER_EXERCISE = _exercise("over", "over")
+PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")

@@ -1,0 +1,305 @@
+"""Exercises ``depth_test(incoming, stored)`` and ``clip_near(v)`` (lesson 05a).
+
+``depth_test``: the conventions' test, strictly smaller depth passes (ties keep the fragment
+already stored). ``clip_near`` clips a clip-space triangle against the near plane z >= -w; the
+expected polygon is the core's Sutherland-Hodgman
+(:func:`teachraster.pipeline.geometry.clipping.clip_polygon`). Every clip case keeps its
+vertices inside the far plane (z <= w) and off the eye point, so that the near plane is the
+only one that cuts and the core's answer is exactly the near-clipped polygon. The mistakes are
+wrong solutions the checker runs itself: a test after the divide, t taken from z alone, the
+plane z = 0, the new vertices forgotten... (:func:`clip_with`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..pipeline.geometry.clipping import clip_polygon, distances
+from ..study.hardcases import CASES
+from .answers import MAX_VERTICES, as_bool, as_numbers, short
+from .cases import SEED
+from .exercise import Exercise, Mistake, PackageAnswer
+from .running import WrongAnswerType
+from .scalars import num, vec
+from .tolerance import TOL, all_close, same_polygon
+
+
+# -- depth_test -------------------------------------------------------------------------------
+def depth_test_cases():
+    rng = np.random.default_rng(SEED + 3)
+    pairs = [(0.5, 0.5), (0.3, 0.7), (0.7, 0.3), (0.0, 0.0), (1.0, 1.0), (0.0, 1.0), (1.0, 0.0)]
+    pairs += [(np.nextafter(0.5, 0.0), 0.5), (np.nextafter(0.5, 1.0), 0.5), (-0.0, 0.0)]
+    for a, b in rng.uniform(0, 1, size=(10, 2)):
+        pairs += [(a, b), (a, a)]
+    # the catalogue's coplanar_overlap: two triangles in one plane give equal depths
+    label = "coplanar_overlap: equal depths of two coplanar triangles"
+    return [
+        (
+            label if a == b and n == 0 else f"incoming {num(a, b)}, stored {num(b, a)}",
+            (float(a), float(b)),
+            bool(a < b),
+        )
+        for n, (a, b) in enumerate(pairs)
+    ]
+
+
+def explain_depth(args, expected, got) -> str:
+    a, b = args
+    if a == b:
+        where = f"the incoming depth {num(a)} equals the stored {num(b)}"
+    else:
+        side = "nearer" if a < b else "farther"
+        where = f"the incoming depth {num(a, b)} is {side} than the stored {num(b, a)} (smaller depth is nearer)"  # fmt: skip
+    verdict = "it passes" if expected else "it must fail"
+    yours = "your function let it pass" if got else "your function rejected it"
+    return f"{where}: {verdict}; {yours}"
+
+
+def _float32_words(args, expected, got) -> str:
+    a, b = args
+    return (
+        f": in float32 both are {num(float(np.float32(a)))}. Compare the depths as given "
+        "(float64), without converting them to float32"
+    )
+
+
+DEPTH_MISTAKES = [
+    Mistake("tie", ": a tie keeps the fragment already stored (the conventions: strictly "
+            "smaller depth passes, ties keep the earlier triangle): use <, not <=",
+            gives=lambda a, b: a <= b),
+    Mistake("reversed", ": you test the other way round (incoming > stored); smaller depth is "
+            "nearer, and the nearer fragment passes: use incoming < stored",
+            gives=lambda a, b: a > b),
+    Mistake("reversed", ": you test the other way round (incoming >= stored); smaller depth is "
+            "nearer, and the nearer fragment passes: use incoming < stored",
+            gives=lambda a, b: a >= b),
+    Mistake("equality", ": you test equality; the fragment passes when it is strictly nearer "
+            "(incoming < stored)",
+            gives=lambda a, b: a == b),
+    Mistake("float32", _float32_words,
+            gives=lambda a, b: bool(np.float32(a) < np.float32(b))),
+]  # fmt: skip
+
+
+def _draw_depth(ax, case, got):
+    from .drawing import draw_bars
+
+    a, b = case[1]
+    passes = "passes" if case[2] else "fails"
+    artists = draw_bars(ax, ["incoming", "stored"], [a, b], [False, False])
+    yours = "" if got is None else f", yours {'passes' if got else 'fails'}"
+    artists.append(ax.set_xlabel(f"depth (smaller is nearer): it {passes}{yours}"))
+    return artists
+
+
+DEPTH_TEST = Exercise(
+    "depth_test", depth_test_cases, as_bool, lambda g, e, a: g == e, explain_depth,
+    lambda *a: ": the fragment passes only when its depth is strictly smaller than the stored one",
+    DEPTH_MISTAKES, draw=_draw_depth,
+)  # fmt: skip
+
+
+# -- clip_near --------------------------------------------------------------------------------
+def near_only(v: np.ndarray) -> bool:
+    """True when only the near plane can cut ``v`` (see the module docstring)."""
+    d = distances(v)
+    return bool((d[:, 1] >= 0).all() and not ((v[:, 2] == 0) & (v[:, 3] == 0)).any())
+
+
+def clip_cases():
+    out = []
+    for name in ("behind_camera", "eye_plane_vertex", "hair_in_front_of_eye"):
+        for v in CASES[name].inputs["clip"]:
+            if near_only(v):
+                out.append((name, (np.array(v, dtype=float),)))
+    rng = np.random.default_rng(SEED + 4)
+    counts = [0, 0, 0, 0]  # random cases by how many vertices lie behind the plane
+    while min(counts[:3]) < 5:
+        lo, hi = ((0.5, 3.0), (-2.0, 3.0), (-3.0, -0.5))[rng.integers(0, 3)]
+        w = np.round(rng.uniform(lo, hi, 3), 3)
+        z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
+        v = np.column_stack([np.round(rng.uniform(-2, 2, (3, 2)), 3), z, w])
+        behind = int((z + w < 0).sum())
+        if near_only(v) and counts[behind] < 5:
+            counts[behind] += 1
+            out.append((f"random, {_BEHIND[behind]} the near plane", (v,)))
+    # one vertex exactly on the plane, the others on either side
+    v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
+    out.append(("a vertex on the near plane", (v,)))
+    return [
+        (
+            f"{label}: v={vec(a[0][0])}, {vec(a[0][1])}, {vec(a[0][2])}",
+            a,
+            clip_polygon(a[0], np.zeros((3, 0)))[0],
+        )
+        for label, a in out
+    ]
+
+
+_BEHIND = ("no vertex behind", "one vertex behind", "two vertices behind", "all behind")
+
+
+def as_polygon(value) -> np.ndarray:
+    sized = isinstance(value, (list, tuple)) or (isinstance(value, np.ndarray) and value.ndim)
+    if sized and len(value) > MAX_VERTICES:  # before any conversion: a huge answer costs nothing
+        raise WrongAnswerType(
+            f"returned {short(value)}: a triangle clipped by one plane has at most 4 vertices"
+        )
+    if sized and np.size(value) == 0:
+        return np.zeros((0, 4))
+    return as_numbers(value, (-1, 4), "an (n, 4) array of vertices (x, y, z, w)")
+
+
+def clip_with(v, distance=None, t_from=None, new=True, from_end=False) -> np.ndarray:
+    """Sutherland-Hodgman against one plane, with the usual mistakes as knobs.
+
+    ``distance(vertex)`` is the signed distance (z + w: the right one); ``t_from(a, b)`` the
+    crossing parameter (default d_a / (d_a − d_b)); ``new=False`` adds no vertex where an edge
+    crosses; ``from_end`` measures t from the other end of the edge. None where undefined.
+    """
+    v = np.asarray(v, dtype=float)
+    distance = distance or (lambda p: p[2] + p[3])
+    out = []
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            da, db = distance(a), distance(b)
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0) and new:
+                t = da / (da - db) if t_from is None else t_from(a, b)
+                t = 1 - t if from_end else t
+                out.append(a + t * (b - a))
+    poly = np.array(out).reshape(-1, 4)
+    return poly if np.isfinite(poly).all() else None
+
+
+def _crossing(v) -> str:
+    """Where the first crossing edge meets the plane, and the t that says it."""
+    d = v[:, 2] + v[:, 3]
+    for i in range(3):
+        j = (i + 1) % 3
+        if (d[i] >= 0) != (d[j] >= 0):
+            t = d[i] / (d[i] - d[j])
+            zt = v[i, 2] / (v[i, 2] - v[j, 2]) if v[i, 2] != v[j, 2] else float("nan")
+            return (
+                f"edge v{i + 1}→v{j + 1} crosses the near plane at t = d{i + 1}/(d{i + 1} − "
+                f"d{j + 1}) = {num(t)} with d = z + w, at {vec(v[i] + t * (v[j] - v[i]))}; "
+                f"z alone gives z{i + 1}/(z{i + 1} − z{j + 1}) = {num(zt)}"
+            )
+    return "no edge crosses the near plane"
+
+
+def _divide_words(args, expected, got) -> str:
+    (v,) = args
+    d = v[:, 2] + v[:, 3]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        after = v[:, 2] / v[:, 3] >= -1
+    flipped = [k for k in range(3) if after[k] != (d[k] >= 0)]
+    if not flipped:
+        return "you tested z/w >= -1 after the divide: test z + w >= 0 in clip space, before dividing by w"  # fmt: skip
+    k = flipped[0]
+    return (
+        f"you tested after the divide: v{k + 1} = {vec(v[k])} has w = {num(v[k, 3])} < 0: after "
+        f"the divide its z/w = {num(v[k, 2] / v[k, 3])} looks "
+        f"{'inside' if after[k] else 'outside'}, but z + w = {num(d[k])} says it is "
+        f"{'inside' if d[k] >= 0 else 'behind the near plane'}: test z + w >= 0 in clip space, "
+        "before dividing by w"
+    )
+
+
+def _unclipped_words(args, expected, got) -> str:
+    (v,) = args
+    d = v[:, 2] + v[:, 3]
+    k = int(np.argmin(d))
+    return (
+        f"you returned the triangle unclipped: v{k + 1} = {vec(v[k])} has z + w = {num(d[k])} "
+        "< 0, it is behind the near plane z = −w"
+    )
+
+
+def _words_with_crossing(text: str):
+    return lambda args, expected, got: f"{text}: {_crossing(args[0])}"
+
+
+def _behind(args, expected, got) -> bool:
+    (v,) = args
+    scale = max(1.0, float(np.abs(v).max()))
+    return any(p[2] + p[3] < -TOL * scale for p in np.asarray(got, dtype=float).reshape(-1, 4))
+
+
+def _behind_words(args, expected, got) -> str:
+    bad = next(p for p in np.asarray(got, dtype=float).reshape(-1, 4) if p[2] + p[3] < 0)
+    return f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
+
+
+def _divided(a) -> float:
+    return a[2] / a[3] + 1
+
+
+CLIP_MISTAKES = [
+    Mistake("unclipped", _unclipped_words, gives=lambda v: np.asarray(v, dtype=float)),
+    Mistake("after the divide", _divide_words, gives=lambda v: clip_with(v, _divided)),
+    Mistake("t from z only", _words_with_crossing("the new vertex lies where z + w = 0, at t = "
+            "d1/(d1 − d2) with d = z + w (the signed distance to the plane z = −w); you took t "
+            "from z alone"), gives=lambda v: clip_with(v, t_from=lambda a, b: a[2] / (a[2] - b[2]))),
+    Mistake("t from the divide", _words_with_crossing("you took t from z/w after the divide; "
+            "the new vertex is interpolated in clip space, at t = d1/(d1 − d2) with d = z + w"),
+            gives=lambda v: clip_with(v, t_from=lambda a, b: _divided(a) / (_divided(a) - _divided(b)))),
+    Mistake("t from the other end", _words_with_crossing("you measured t from the other end "
+            "of the edge: the new vertex is a + t·(b − a) with t = d_a/(d_a − d_b)"),
+            gives=lambda v: clip_with(v, from_end=True)),
+    Mistake("plane z = 0", "you clipped against z = 0 (Direct3D's near plane); GL's clip space "
+            "keeps z ≥ −w: the distance to the near plane is z + w",
+            gives=lambda v: clip_with(v, lambda p: p[2])),
+    Mistake("no new vertices", "you dropped the vertices behind the near plane but added none "
+            "where the edges cross it: each crossing edge gives a new vertex, on the plane",
+            gives=lambda v: clip_with(v, new=False)),
+    Mistake("reversed", "your polygon has the right vertices in reverse order: keep the "
+            "triangle's order (walk the edges v1→v2→v3→v1)",
+            fits=lambda args, e, g: len(g) > 0 and same_polygon(np.asarray(g)[::-1], e)),
+    Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
+]  # fmt: skip
+
+
+def explain_clip(args, expected, got) -> str:
+    return f"your polygon {_poly(np.asarray(got, float).reshape(-1, 4), expected)} should be {_poly(expected, np.asarray(got, float).reshape(-1, 4))}"  # fmt: skip
+
+
+def _clip_rule(args, expected, got) -> str:
+    return (
+        f": {_crossing(args[0])}. Interpolate the new vertices in clip space, before the divide, "
+        "and keep the inside vertices in order"
+    )
+
+
+def _poly(p: np.ndarray, other: np.ndarray) -> str:
+    """The polygon's vertices, each with the digits that tell it from the nearest of ``other``.
+
+    >>> a = np.array([[0.0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]])
+    >>> b = a + np.array([0, 0, 0, 1e-7])
+    >>> _poly(a, b) != _poly(b, a)
+    True
+    """
+    if not len(p):
+        return "empty"
+    if not len(other):
+        return "[" + ", ".join(vec(q) for q in p) + "]"
+    near = [other[int(np.argmin(np.abs(other - q).sum(axis=1)))] for q in p]
+    # a vertex that matches (within the tolerance) needs no more digits than usual
+    near = [None if all_close(q, r) else r for q, r in zip(p, near)]
+    return "[" + ", ".join(vec(q, r) for q, r in zip(p, near)) + "]"
+
+
+def _draw_clip(ax, case, got):
+    from .drawing import draw_clip
+
+    return draw_clip(ax, case[1][0], case[2], got)
+
+
+CLIP_NEAR = Exercise(
+    "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e), explain_clip,
+    _clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
+    answers=(PackageAnswer(clip_polygon),), draw=_draw_clip,
+    match=lambda got, answer, args: same_polygon(np.asarray(got, float).reshape(-1, 4), answer, 1e-6),
+)  # fmt: skip

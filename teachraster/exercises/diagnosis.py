@@ -1,0 +1,349 @@
+"""Name the mistake behind wrong answers, only where it is the cause.
+
+Given every answer of a check, :func:`diagnose` decides, for each failing case, which words
+explain it, in this order:
+
+1. **A constant answer.** When every answer is the same while the expected answers differ,
+   the function ignores its arguments (``return 0`` left in): that is said first, and nothing
+   else is invented.
+2. **A mistake that gives every answer.** Each :class:`~.exercise.Mistake` is run on every
+   answered case; one that gives the student's answer on all of them (passing cases
+   included) is the cause, named on every failure it explains. A single mistake is preferred
+   to a combination, an earlier one in the exercise's table to a later one.
+3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
+   its answer and agrees with the most answers overall, provided it agrees with four answers
+   in five (else its answer here is a coincidence, frequent where answers are few: three
+   verdicts, a bool); symptoms ("keeps a vertex behind the plane") only when no cause fits.
+4. **Low precision**, only when the error is within the rounding of the precision named
+   (float32: ``8 · 2**-24`` of the case's scale, see :attr:`.exercise.Exercise.float32`), and
+   **NaN or infinity** in the answer.
+5. Otherwise the rule, with the case's numbers.
+
+Each failure's kind is the kind of the mistake named (for a combination, of the parts that
+change this case's answer), so that one failure of each kind can be shown first.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .answers import short
+from .exercise import Exercise, Mistake, copies
+from .running import run_checker
+from .scalars import num, vec
+
+#: Relative rounding of one float32 operation, and how many operations' worth counts as float32.
+FLOAT32_EPS, FLOAT32_OPS = 2.0**-24, 8
+FLOAT16_EPS = 2.0**-11
+#: Tolerance of "this mistake gives the student's answer" (two codings of one mistake may round
+#: differently).
+MATCH_TOL = 1e-6
+#: A mistake named on some cases only must agree with at least this share of all its answers.
+COINCIDENCE = 0.8
+
+
+@dataclass(frozen=True)
+class Result:
+    """One answered case: its index in the check, arguments, expected answer and the student's."""
+
+    index: int
+    args: tuple
+    expected: object
+    got: object
+    ok: bool
+
+
+_EXACT = (str, bytes, bool, np.bool_, set, frozenset)
+
+
+def near(a, b, tol: float = MATCH_TOL) -> bool:
+    """The same answer: numbers within ``tol`` relative (NaN equals NaN), others equal.
+
+    >>> near(1.0, 1.0 + 1e-9), near([1, 2], (1.0, 2.0)), near(True, 1.0), near("a", "a")
+    (True, True, False, True)
+    """
+    if isinstance(a, _EXACT) or isinstance(b, _EXACT):
+        if type(a) is not type(b) and not (
+            isinstance(a, (bool, np.bool_)) and isinstance(b, (bool, np.bool_))
+        ):
+            return False
+        try:
+            return bool(a == b)
+        except Exception:  # noqa: BLE001 - an odd answer simply does not match
+            return False
+    x, y = _numbers(a), _numbers(b)
+    if x is None or y is None:
+        try:
+            return bool(np.all(a == b))
+        except Exception:  # noqa: BLE001
+            return False
+    if x.shape != y.shape:
+        if x.size != 1 or y.size != 1:
+            return False
+        x, y = x.reshape(()), y.reshape(())
+    with np.errstate(invalid="ignore", over="ignore"):
+        scale = np.maximum(1.0, np.maximum(np.abs(x), np.abs(y)))
+        ok = (x == y) | (np.abs(x - y) <= tol * scale) | (np.isnan(x) & np.isnan(y))
+    return bool(np.all(ok))
+
+
+def compose(head: str, words: str) -> str:
+    """The case's numbers, then the reason (after ": ", or directly after punctuation)."""
+    if not words:
+        return head
+    if words[0] in " ;:.,(":
+        return head.rstrip() + words
+    return f"{head}: {words}"
+
+
+# -- the engine's own mistakes ----------------------------------------------------------------
+def constant_words(value) -> str:
+    shown = short(value)
+    x = None if isinstance(value, _EXACT) else _numbers(value)
+    if x is not None and x.size == 1:
+        shown = num(float(x.ravel()[0]))
+    elif x is not None and 1 < x.size <= 6 and x.ndim == 1:
+        shown = vec(x)
+    return (
+        f"your function returns {shown} on every case, whatever its arguments: a "
+        "placeholder (such as `return 0`) left in, or a `return` reached too early?"
+    )
+
+
+def _numbers(x) -> np.ndarray | None:
+    """``x`` as a float array, or None (text, objects, sets)."""
+    if isinstance(x, _EXACT):
+        return None
+    try:
+        a = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        return None
+    return a
+
+
+def _constant(results: list[Result]) -> object | None:
+    """The one answer every case got, when the expected answers differ; else None."""
+    if len(results) < 3:
+        return None
+    first = results[0].got
+    if not all(near(r.got, first, 0.0) for r in results[1:]):
+        return None
+    if all(near(r.expected, results[0].expected, 0.0) for r in results[1:]):
+        return None
+    return first
+
+
+def precision_of(got) -> tuple[str, float]:
+    """("float16" or "float32", its relative rounding) for the answer's precision."""
+    dtype = getattr(got, "dtype", None)
+    if dtype is not None and dtype.kind == "f" and dtype.itemsize <= 2:
+        return "float16", FLOAT16_EPS
+    return "float32", FLOAT32_EPS
+
+
+def _within_rounding(spec: Exercise, args, expected, got) -> bool:
+    """The answer is off by no more than float32 (float16) rounding of this case."""
+    g, e = _numbers(got), _numbers(expected)
+    if g is None or e is None or g.size != e.size or not np.isfinite(g).all():
+        return False
+    error = float(np.max(np.abs(g.ravel() - e.ravel()), initial=0.0))
+    _, eps = precision_of(got)
+    scale = spec.float32(args) if spec.float32 is not None else None
+    if scale is None:
+        scale = float(np.max(np.abs(e), initial=0.0))
+    return error <= FLOAT32_OPS * eps * max(float(scale), 1.0)
+
+
+def low_precision_mistake(spec: Exercise) -> Mistake:
+    """float32 (or float16) named only when the error is within its rounding on this case, or
+    the case holds a number float32 cannot hold (1e-300 becomes 0)."""
+
+    def fits(args, expected, got):
+        return _within_rounding(spec, args, expected, got) or _outside_float32(args) is not None
+
+    def words(args, expected, got):
+        if not _within_rounding(spec, args, expected, got):
+            return (
+                f": {num(_outside_float32(args))} lies outside float32's range (its smallest "
+                f"normal number is {F32.tiny:.3g}, its largest {F32.max:.3g}): in float32 it "
+                "becomes 0 or infinity. Compute in float64 (plain Python floats or np.float64)"
+            )
+        special = spec.float32_words(args, expected, got) if spec.float32_words else None
+        if special:
+            return special
+        name, eps = precision_of(got)
+        digits = 7 if name == "float32" else 3
+        return (
+            f". The difference is about {name}'s rounding ({name} keeps about {digits} "
+            f"significant digits): did you compute in {name} (np.{name}, or an array of that "
+            "type)? Compute in float64 (plain Python floats or np.float64)"
+        )
+
+    return Mistake("float32", words, fits=fits, only_whole=True)
+
+
+F32 = np.finfo(np.float32)
+
+
+def _outside_float32(args) -> float | None:
+    """A number of the case that float32 cannot hold (it would become 0 or inf), or None."""
+    for a in args:
+        x = _numbers(a)
+        if x is None or x.dtype == object:
+            continue
+        x = np.abs(x[np.isfinite(x)])
+        bad = x[(x > F32.max) | ((x > 0) & (x < F32.tiny))]
+        if bad.size:
+            return float(bad.ravel()[0])
+    return None
+
+
+def _nan_words(args, expected, got) -> str | None:
+    g = _numbers(got)
+    if g is None or np.isfinite(g).all():
+        return None
+    what = "NaN" if np.isnan(g).any() else "infinity"
+    cause = "a 0/0, or a NaN input passed on?" if what == "NaN" else "a division by zero?"
+    return f"your answer holds {what} ({cause})"
+
+
+def _shape_words(expected, got) -> str | None:
+    g, e = np.shape(got), np.shape(expected)
+    if g == e or np.size(got) == np.size(expected) == 1:
+        return None
+    try:
+        if isinstance(got, (str, set)) or isinstance(expected, (str, set)):
+            return None
+    except TypeError:
+        return None
+    return f"your answer has {np.size(got)} value(s), shape {g}; the answer here has shape {e}"
+
+
+# -- the choice ---------------------------------------------------------------------------------
+@dataclass
+class _Fit:
+    mistake: Mistake
+    order: int
+    failing: set  # indices of the failing cases it explains
+    agrees: int  # answered cases it agrees with (passing ones included)
+    whole: bool  # it agrees with every answered case it speaks about
+    spoken: int = 0  # answered cases it says something about
+
+    @property
+    def coincidence(self) -> bool:
+        """A wrong solution that gives this answer but disagrees with most of the others: a
+        coincidence (frequent where answers are few: three verdicts, a bool), not a cause."""
+        return self.mistake.gives is not None and self.agrees < COINCIDENCE * self.spoken
+
+
+def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
+    """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
+    if m.fits is not None:  # a description of failures: a passing case neither fits nor not
+        return bool(m.fits(r.args, r.expected, r.got)) if not r.ok else None
+    try:
+        value = m.gives(*copies(r.args))
+    except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
+        return None
+    if value is None:
+        return None
+    return spec.match(r.got, value, r.args) if spec.match is not None else near(value, r.got)
+
+
+def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) -> list[_Fit]:
+    failing = [r for r in results if not r.ok]
+    fits = []
+    for order, m in enumerate(mistakes):
+
+        def run(m=m, order=order):
+            verdicts = {r.index: _fits(spec, m, r) for r in failing}
+            hits = {i for i, v in verdicts.items() if v}
+            if not hits:
+                return None
+            said = [_fits(spec, m, r) for r in results if r.ok]
+            agrees = len(hits) + sum(1 for s in said if s)
+            whole = False not in verdicts.values() and False not in said
+            spoken = sum(v is not None for v in [*verdicts.values(), *said])
+            return _Fit(m, order, hits, agrees, whole, spoken)
+
+        fit = run_checker(run, None)
+        if fit is not None:
+            fits.append(fit)
+    return fits
+
+
+def _same_answer(spec: Exercise, value, r: Result) -> bool:
+    return spec.match(r.got, value, r.args) if spec.match is not None else near(value, r.got)
+
+
+def _active_parts(spec: Exercise, m: Mistake, r: Result) -> list[Mistake]:
+    """The parts of a combination that change this case's answer (all of them if none alone)."""
+    if not m.parts:
+        return [m]
+    active = []
+    for part in m.parts:
+        other = m.without(part)(*copies(r.args))
+        if other is None or not _same_answer(spec, other, r):
+            active.append(part)
+    return active or list(m.parts)
+
+
+def _named(spec: Exercise, m: Mistake, r: Result) -> tuple[str, str]:
+    parts = run_checker(lambda: _active_parts(spec, m, r), list(m.parts) or [m])
+    if not m.parts:
+        return m.kind, run_checker(lambda: m.say(r.args, r.expected, r.got), "")
+    kind = " and ".join(p.kind for p in parts)
+    words = run_checker(lambda: "; and ".join(p.say(r.args, r.expected, r.got) for p in parts), "")
+    return kind, words
+
+
+def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]]:
+    """(kind, explanation) for each failing case of ``results``, by index (module docstring)."""
+    failing = [r for r in results if not r.ok]
+    if not failing:
+        return {}
+    out = {}
+    value = run_checker(lambda: _constant(results), None)
+    if value is not None:
+        words = (spec.constant or constant_words)(value)
+        for r in failing:
+            out[r.index] = ("constant", _say(spec, r, words))
+        return out
+    mistakes = spec.all_mistakes() + [low_precision_mistake(spec)]
+    fits = _evaluate(spec, mistakes, results)
+    fits = [f for f in fits if f.whole or not f.mistake.only_whole]
+    whole = sorted(
+        (f for f in fits if f.whole and not f.mistake.symptom),
+        key=lambda f: (len(f.mistake.parts), f.order),
+    )
+    for r in failing:
+        chosen = next((f for f in whole if r.index in f.failing), None)
+        if chosen is None:
+            here = [f for f in fits if r.index in f.failing and not f.coincidence]
+            here.sort(key=lambda f: (f.mistake.symptom, -f.agrees, len(f.mistake.parts), f.order))
+            chosen = here[0] if here else None
+        if chosen is not None:
+            kind, words = _named(spec, chosen.mistake, r)
+        else:
+            kind, words = _generic(spec, r)
+        out[r.index] = (kind, _say(spec, r, words))
+    return out
+
+
+def _generic(spec: Exercise, r: Result) -> tuple[str, str]:
+    """The shape, NaN or the rule, when no mistake fits."""
+    shape = run_checker(lambda: _shape_words(r.expected, r.got), None)
+    if shape:
+        return "shape", shape
+    nan = run_checker(lambda: _nan_words(r.args, r.expected, r.got), None)
+    if nan:
+        return "nan", nan
+    rule = run_checker(lambda: spec.rule(r.args, r.expected, r.got), "")
+    return "value", rule
+
+
+def _say(spec: Exercise, r: Result, words: str) -> str:
+    fallback = f"yours is {short(r.got)}, expected {short(r.expected)}"
+    head = run_checker(lambda: spec.explain(r.args, r.expected, r.got), fallback)
+    return (spec.compose or compose)(head, words)

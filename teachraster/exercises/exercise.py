@@ -1,0 +1,211 @@
+"""What an exercise is, for the checker: its cases, how an answer is read, and its mistakes.
+
+Adding an exercise function is writing one :class:`Exercise`: cases with the package's answers,
+a converter that reads the student's answer strictly, the rule in words with the case's numbers
+(``explain``), and a table of typical :class:`Mistake` s, each a *wrong solution* the checker
+runs itself (``gives``) with the words that name it. The checker never guesses a cause: it
+names a mistake only where that mistake gives the student's very answer, and prefers the one
+that gives it on every case (:mod:`.diagnosis`). A family of mistakes that can combine (a
+bilinear filter sampling at texel corners *and* ignoring the wrap mode) is one function with
+knobs (:class:`Knobs`); the checker tries them alone and in pairs. The registry in
+:mod:`.checks` lists the exercises in course order.
+
+>>> wrong = Mistake("doubled", "you doubled it", gives=lambda x: 2 * x)
+>>> wrong.gives(3), wrong.say((3,), 3, 6)
+(6, 'you doubled it')
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """A typical mistake: what it gives, and the words that name it.
+
+    Attributes
+    ----------
+    kind : str
+        A few words ("texel corners"): the report shows one failure of each kind first.
+    words : str or callable
+        Why the answer is wrong, in the rules' terms; ``words(args, expected, got)`` when the
+        sentence quotes the case's numbers. It follows the case's numbers after ": " (or
+        directly, when it starts with " (", ":", ";" or ".").
+    gives : callable, optional
+        ``gives(*args)``: the answer a student with this mistake returns (None: the mistake
+        says nothing about this case).
+    fits : callable, optional
+        ``fits(args, expected, got) -> bool`` for a mistake no formula reproduces (float32
+        rounding, a symptom such as "keeps a vertex behind the plane").
+    symptom : bool
+        The words describe what is wrong, not why: named only when no cause fits.
+    only_whole : bool
+        Named only when it fits every answer of the check (float32 rounding: an answer off by
+        more elsewhere has another cause).
+    parts : tuple of Mistake
+        For a combination of mistakes (:class:`Knobs`): the single mistakes it combines.
+    """
+
+    kind: str
+    words: str | Callable[..., str]
+    gives: Callable | None = None
+    fits: Callable | None = None
+    symptom: bool = False
+    only_whole: bool = False
+    parts: tuple = ()
+    without: Callable | None = field(default=None, repr=False)  # (part) -> gives without it
+
+    def say(self, args, expected, got) -> str:
+        return self.words(args, expected, got) if callable(self.words) else self.words
+
+
+@dataclass(frozen=True)
+class Slip:
+    """One knob of a :class:`Knobs` family turned the wrong way: its value, kind and words."""
+
+    kind: str
+    words: str | Callable[..., str]
+    value: Any
+
+
+@dataclass(frozen=True)
+class Knobs:
+    """Mistakes that can combine: ``gives(*args, **settings)`` with some knobs turned.
+
+    ``knobs`` maps each keyword of ``gives`` to the wrong settings it may take (its default is
+    the right one); ``most`` is the most mistakes combined (1: alone only).
+    """
+
+    gives: Callable
+    knobs: dict[str, Sequence[Slip]]
+    most: int = 2
+
+    def mistakes(self) -> list[Mistake]:
+        """Every single slip, then every combination of up to ``most`` slips of different knobs."""
+        singles = [(name, slip) for name, slips in self.knobs.items() for slip in slips]
+        out = []
+        for n in range(1, self.most + 1):
+            for combo in itertools.combinations(singles, n):
+                if len({name for name, _ in combo}) == n:
+                    out.append(self._mistake(combo))
+        return out
+
+    def _mistake(self, combo) -> Mistake:
+        settings = {name: slip.value for name, slip in combo}
+        parts = tuple(Mistake(slip.kind, slip.words) for _, slip in combo)
+
+        def gives(*args, settings=settings):
+            return self.gives(*args, **settings)
+
+        def without(part, combo=combo):
+            rest = {name: slip.value for name, slip in combo if slip.kind != part.kind}
+            return lambda *args: self.gives(*args, **rest)
+
+        kind = " and ".join(p.kind for p in parts)
+        if len(parts) == 1:
+            return Mistake(kind, parts[0].words, gives)
+        return Mistake(kind, "", gives, parts=parts, without=without)
+
+
+@dataclass(frozen=True)
+class PackageAnswer:
+    """A package function that *is* an exercise's answer (``when(arguments)`` narrows it: the
+    same ``tr.sample`` is bilinear's answer with ``filter="bilinear"`` only)."""
+
+    function: Callable
+    when: Callable[[dict], bool] | None = None
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """How one exercise is checked (see the module docstring).
+
+    Attributes
+    ----------
+    name : str
+        The function's name, as the notebook defines it.
+    cases : callable
+        ``cases()`` -> list of (label, args, expected): the catalogue's hard cases, then seeded
+        random ones.
+    convert : callable
+        Reads the answer strictly (raising :class:`~.running.WrongAnswerType`, whose message
+        says what was returned and what is expected).
+    same : callable
+        ``same(got, expected, args)``: is the answer right?
+    explain : callable
+        ``explain(args, expected, got)``: the case's numbers, the rule's answer and the
+        student's ("for a=(1, 2), ... E = 25; yours is -25").
+    rule : callable
+        ``rule(args, expected, got)``: how the answer is found, said when no mistake fits.
+    mistakes : sequence of Mistake or Knobs
+        The typical mistakes, most specific first.
+    float32 : callable, optional
+        ``float32(args)``: the magnitude whose float32 rounding bounds the error of a float32
+        computation of this case (coordinates squared for an edge function far from the
+        origin). float32 is named only for an answer within that rounding.
+    float32_words : callable, optional
+        ``float32_words(args, expected, got)``: words for float32 on this case (None: the
+        general words).
+    constant : callable, optional
+        ``constant(value)``: the words for an answer that never changes, if not the default.
+    answers : sequence of PackageAnswer
+        The package's functions that are this exercise's answer (their use is reported and not
+        counted).
+    draw : callable
+        ``draw(ax, case, got)`` draws one case (matplotlib imported there only).
+    scene : callable, optional
+        ``scene(fn)`` -> a :class:`~.scenes.Scene`: the student's function in a whole picture.
+    call : callable, optional
+        ``call(fn, args)`` runs the student's function on a case and converts its answer, when
+        that is more than ``convert(fn(*args))`` (``covers`` is called once per pixel).
+    match : callable, optional
+        ``match(got, answer, args)``: does the student's answer equal what a mistake gives?
+        (default: numbers within 1e-6 relative, others equal; ``clip_near`` compares polygons
+        up to their starting vertex).
+    compose : callable, optional
+        ``compose(head, words)``: the explanation from the case's numbers and the mistake's
+        words (default: the numbers first, see :func:`.diagnosis.compose`).
+    """
+
+    name: str
+    cases: Callable[[], list]
+    convert: Callable
+    same: Callable
+    explain: Callable
+    rule: Callable
+    mistakes: Sequence = ()
+    float32: Callable | None = None
+    float32_words: Callable | None = None
+    constant: Callable | None = None
+    answers: Sequence[PackageAnswer] = ()
+    draw: Callable | None = None
+    scene: Callable | None = None
+    call: Callable | None = None
+    match: Callable | None = None
+    compose: Callable | None = None
+
+    def all_mistakes(self) -> list[Mistake]:
+        """The mistakes table with every :class:`Knobs` family expanded."""
+        out = []
+        for m in self.mistakes:
+            out.extend(m.mistakes() if isinstance(m, Knobs) else [m])
+        return out
+
+
+def copies(args) -> tuple:
+    """Fresh copies of a case's arguments (a student may write into them), lists included."""
+    return tuple(_copy(a) for a in args)
+
+
+def _copy(value):
+    if isinstance(value, np.ndarray):
+        return value.copy()
+    if isinstance(value, list):
+        return type(value)(_copy(v) for v in value)  # a Pyramid stays a Pyramid
+    return value

@@ -1,0 +1,245 @@
+"""Exercises ``barycentric(xy, p)`` and ``perspective(lam, w, f)`` (lesson 03).
+
+Expected values come from the core (:func:`~teachraster.core.barycentrics.barycentric`;
+:func:`~teachraster.core.interpolation.perspective_weights` with
+:func:`~teachraster.core.interpolation.blend`). Every mistake below is a wrong solution the
+checker runs itself (:mod:`.diagnosis`).
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from ..core.barycentrics import barycentric
+from ..core.edges import edge_function
+from ..core.interpolation import blend, perspective_weights
+from ..study.hardcases import CASES
+from .answers import as_number, as_numbers
+from .cases import SEED, proper_triangles
+from .exercise import Exercise, Mistake, PackageAnswer
+from .scalars import centre_near, num, tri_words, vec
+from .tolerance import all_close, close
+
+
+# -- barycentric ------------------------------------------------------------------------------
+def barycentric_cases():
+    rng = np.random.default_rng(SEED + 1)
+    out = []
+    for label, xy in proper_triangles():
+        lo, hi = xy.min(axis=0), xy.max(axis=0)
+        for p in (centre_near(xy.mean(axis=0)), centre_near(rng.uniform(lo, hi))):
+            out.append((f"{label}, p={vec(p)}", (xy, p), barycentric(xy, p)))
+    return out
+
+
+def _areas(xy, p) -> np.ndarray:
+    """E of the edge opposite each vertex at p: E(v2, v3, p), E(v3, v1, p), E(v1, v2, p)."""
+    return np.array([float(edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], p)) for k in range(3)])
+
+
+def _area(xy) -> float:
+    return float(edge_function(xy[0], xy[1], xy[2]))
+
+
+def explain_barycentric(args, expected, got) -> str:
+    xy, p = args
+    got = np.asarray(got, dtype=float)
+    return f"at p={vec(p)} in {tri_words(xy)} your λ = {vec(got, expected)}; the weights are {vec(expected, got)}"
+
+
+def _sum_words(what: str):
+    def words(args, expected, got):
+        xy, _ = args
+        return f", which sum to {num(np.sum(got))}: {what.format(area=num(_area(xy)))}"
+
+    return words
+
+
+def _absolute_area_words(args, expected, got) -> str:
+    xy, _ = args
+    return (
+        f": divide by the signed area E(v1, v2, v3) = {num(_area(xy))} (negative: this triangle "
+        "runs counter-clockwise on screen), not by its absolute value"
+    )
+
+
+ORDER = (
+    ": the same numbers in another order. λ_i belongs to v_i: the area of the sub-triangle "
+    "opposite v_i (p with the other two) over the whole"
+)
+
+
+def barycentric_mistakes() -> list[Mistake]:
+    out = [
+        Mistake("absolute area", _absolute_area_words,
+                gives=lambda xy, p: _areas(xy, p) / abs(_area(xy))),
+        Mistake("sign", ": every weight has the wrong sign. λ1 = E(v2, v3, p), λ2 = E(v3, v1, p), "
+                "λ3 = E(v1, v2, p), each over E(v1, v2, v3): take each edge in the triangle's "
+                "order (you have the edges, or the products in E, the other way round)",
+                gives=lambda xy, p: -_areas(xy, p) / _area(xy)),
+        Mistake("not divided", _sum_words("you did not divide by E(v1, v2, v3) = {area}; the "
+                                          "weights always sum to 1"),
+                gives=lambda xy, p: _areas(xy, p)),
+        Mistake("divided by the area", _sum_words("you divided by the triangle's area, "
+                                                  "E(v1, v2, v3)/2; divide by E(v1, v2, v3) = "
+                                                  "{area} itself: each weight is a ratio of two "
+                                                  "edge functions"),
+                gives=lambda xy, p: 2 * _areas(xy, p) / _area(xy)),
+        Mistake("unsigned areas", _sum_words("the sub-triangle areas are signed: where p lies "
+                                             "outside an edge its weight is negative, so take "
+                                             "E(...) itself, not its absolute value"),
+                gives=lambda xy, p: np.abs(_areas(xy, p)) / abs(_area(xy))),
+    ]  # fmt: skip
+    for perm in itertools.permutations(range(3)):
+        if perm != (0, 1, 2):
+            out.append(Mistake("order", ORDER, gives=lambda xy, p, perm=perm: (_areas(xy, p) / _area(xy))[list(perm)]))  # fmt: skip
+    return out
+
+
+def _far(args) -> tuple[float, float]:
+    xy, p = (np.asarray(a, dtype=float) for a in args)
+    far = float(np.abs(np.vstack([xy, p])).max())
+    return far, float(np.abs(np.vstack([xy, p]) - xy[0]).max())
+
+
+def bary_float32_words(args, expected, got) -> str | None:
+    """Far from the origin: the cancellation of planes in absolute coordinates."""
+    far, _ = _far(args)
+    if far < 1e4:
+        return None
+    return (
+        f". {num(far)} px from the origin float32 numbers are "
+        f"{num(float(np.spacing(np.float32(far))))} px apart, and a plane A·x + B·y + C evaluated "
+        "in absolute coordinates cancels catastrophically (C is about x², the answer far "
+        "smaller): compute differences p − v to a vertex first, in float64"
+    )
+
+
+def bary_float32(args) -> float:
+    """Float32 rounding of λ: a plane A·x + B·y + C in absolute coordinates rounds C (about
+    far²); over the area."""
+    far, extent = _far(args)
+    return max(far * far, far * extent) / abs(_area(args[0])) + 1.0
+
+
+def _bary_rule(args, expected, got) -> str:
+    xy, _ = args
+    return f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}"
+
+
+def _draw_bary(ax, case, got):
+    from .drawing import draw_values
+
+    return draw_values(ax, ["λ1", "λ2", "λ3"], case[2], got)
+
+
+BARYCENTRIC = Exercise(
+    "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
+    lambda g, e, a: all_close(g, e), explain_barycentric, _bary_rule, barycentric_mistakes(),
+    float32=bary_float32, float32_words=bary_float32_words, answers=(PackageAnswer(barycentric),),
+    draw=_draw_bary,
+)  # fmt: skip
+
+
+# -- perspective ------------------------------------------------------------------------------
+def _perspective(lam, w, f) -> float:
+    return float(blend(perspective_weights(np.asarray(lam)[None], np.asarray(w)), np.asarray(f))[0])
+
+
+def perspective_cases():
+    rng = np.random.default_rng(SEED + 2)
+    ws = [np.array([1.0, 2.0, 4.0])]
+    for name in ("perspective_w_ratio_1e6", "perspective_w_scale"):
+        # subnormal w (1e-310) is left to the catalogue's own test: there 1/w overflows and a
+        # straightforward correct formula would fail for a reason the exercise does not teach
+        ws += [w for w in CASES[name].inputs["ws"] if w.min() >= np.finfo(float).tiny]
+    ws += list(np.exp(rng.uniform(np.log(0.1), np.log(100.0), size=(8, 3))))
+    lams = [np.array([0.2, 0.3, 0.5]), np.array([1.0, 0, 0]), np.array([0, 0.5, 0.5])]
+    out = []
+    for n, w in enumerate(ws):
+        f = np.array([0.0, 1.0, 2.0]) if n == 0 else np.round(rng.uniform(-5, 5, 3), 2)
+        for lam in lams + [rng.dirichlet(np.ones(3))]:
+            args = (lam, np.asarray(w, dtype=float), f)
+            out.append((f"λ={vec(lam)}, w={vec(w)}, f={vec(f)}", args, _perspective(*args)))
+    return out
+
+
+def explain_perspective(args, expected, got) -> str:
+    lam, w, f = args
+    return f"at λ={vec(lam)}, w={vec(w)}, f={vec(f)} your {num(got, expected)}"
+
+
+def _right(expected, got) -> str:
+    return f"the perspective-correct value is {num(expected, got)}"
+
+
+def _persp(words):
+    """Words after "your X" that also quote the right value."""
+
+    def say(args, expected, got):
+        lam, w, f = args
+        return " " + words.format(right=_right(expected, got), inv=num(lam @ (1 / w)))
+
+    return say
+
+
+PERSPECTIVE_MISTAKES = [
+    Mistake("affine", _persp("is the affine Σλf; {right}: divide by w"),
+            gives=lambda lam, w, f: float(lam @ f)),
+    Mistake("times w", _persp("is Σλ·f·w / Σλ·w: you multiplied by w; {right}: divide by w "
+                              "instead"),
+            gives=lambda lam, w, f: float((lam * w) @ f / (lam @ w))),
+    Mistake("unnormalised", _persp("is Σλf/w; {right}: divide it by Σλ/w = {inv} (the "
+                                   "interpolated 1/w)"),
+            gives=lambda lam, w, f: float((lam / w) @ f)),
+    Mistake("times w, unnormalised", _persp("is Σλ·f·w: you multiplied by w and did not "
+                                            "normalise; {right}: Σλf/w ÷ Σλ/w"),
+            gives=lambda lam, w, f: float((lam * w) @ f)),
+    Mistake("divided by the interpolated w", _persp("is Σλf ÷ Σλw: the affine value divided by "
+                                                    "the interpolated w; {right}: interpolate "
+                                                    "f/w and 1/w, then divide (Σλf/w ÷ Σλ/w)"),
+            gives=lambda lam, w, f: float(lam @ f / (lam @ w))),
+    Mistake("times the interpolated w", _persp("is Σλf/w · Σλw; {right}: divide Σλf/w by the "
+                                               "interpolated 1/w, Σλ/w = {inv}"),
+            gives=lambda lam, w, f: float((lam / w) @ f * (lam @ w))),
+]  # fmt: skip
+
+
+def _persp_rule(args, expected, got) -> str:
+    lam, w, f = args
+    return f"; {_right(expected, got)} = Σλf/w ÷ Σλ/w = {num((lam / w) @ f)} ÷ {num(lam @ (1 / w))}"
+
+
+def persp_float32(args) -> float:
+    lam, w, f = args
+    return float(np.abs(f).max()) * 4
+
+
+def persp_float32_words(args, expected, got) -> str:
+    return (
+        f"; {_right(expected, got)}: the difference is about float32's rounding (float32 keeps "
+        "about 7 significant digits): did you compute in float32? Compute in float64"
+    )
+
+
+def _draw_persp(ax, case, got):
+    from .drawing import draw_bars
+
+    lam, w, f = case[1]
+    labels = ["perspective-\ncorrect", "affine Σλf"]
+    values = [case[2], float(lam @ f)]
+    if got is not None:
+        labels.append("yours")
+        values.append(got)
+    wrong = [False, False, got is not None and not close(got, case[2])]
+    return draw_bars(ax, labels, values, wrong[: len(values)])
+
+
+PERSPECTIVE = Exercise(
+    "perspective", perspective_cases, as_number, lambda g, e, a: close(g, e),
+    explain_perspective, _persp_rule, PERSPECTIVE_MISTAKES, float32=persp_float32,
+    float32_words=persp_float32_words,
+    answers=(PackageAnswer(perspective_weights),), draw=_draw_persp,
+)  # fmt: skip

@@ -1,0 +1,206 @@
+"""Exercise ``line_pixels(p0, p1)`` of lesson 12: the diamond-exit rule.
+
+The expected pixels come from the core: :func:`teachraster.rasterize_line` (exact, with GL's
+tie perturbation (x, y) − (ε, ε²)). The mistakes are the rule with a knob turned
+(:func:`diamond_pixels`, here in floats with ε = 2⁻²⁰ and ε² = 2⁻⁴⁰, far above float64's
+rounding of these coordinates and far below their 1/8 grid): the end pixel lit, no
+perturbation or one in another direction, pairs given as (col, row), and a DDA that rounds
+the line at each column instead of testing diamonds. The cases hold ties of every kind:
+horizontal and vertical lines on pixel boundaries (both directions), 45° lines along diamond
+edges, lines through diamond corners.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.lines import rasterize_line
+from .answers import as_numbers, short
+from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
+from .running import WrongAnswerType
+
+#: Lines live in a WINDOW × WINDOW image; end points on the 1/8 grid so ties happen.
+WINDOW = 12
+SEED = 20241126
+#: The perturbation of the knobs' diamond rule.
+EPS = 2.0**-20
+
+
+def line_cases() -> list[tuple[str, tuple, set]]:
+    """(label, (p0, p1), expected set of (row, col)) for the hard lines, then random ones."""
+    named = [
+        ("horizontal through centres", (1.5, 2.5), (8.5, 2.5)),
+        ("vertical on a pixel boundary (x = 3)", (3.0, 0.25), (3.0, 7.25)),
+        ("vertical on a pixel boundary, upwards", (5.0, 9.25), (5.0, 1.75)),
+        ("horizontal on a pixel boundary (y = 3)", (0.25, 3.0), (7.25, 3.0)),
+        ("horizontal on a pixel boundary, leftwards", (9.75, 6.0), (1.25, 6.0)),
+        ("horizontal on a boundary from a centre column", (1.5, 8.0), (10.5, 8.0)),
+        ("45° through centres", (0.5, 0.5), (7.5, 7.5)),
+        ("45° along diamond edges (x + y = 7.5)", (0.5, 7.0), (7.0, 0.5)),
+        ("45° along diamond edges, downwards", (2.0, 1.5), (8.0, 7.5)),
+        ("x-major, a half-pixel tie (dy/dx > 0)", (0.5, 0.5), (8.5, 4.5)),
+        ("x-major, a half-pixel tie (dy/dx < 0)", (0.5, 4.5), (8.5, 0.5)),
+        ("y-major, a half-pixel tie", (0.5, 0.5), (4.5, 8.5)),
+        ("start inside its diamond, off centre", (1.7, 1.6), (9.2, 4.1)),
+        ("end on a diamond corner", (1.25, 1.25), (6.5, 4.0)),
+        ("running left and up", (10.4, 9.3), (1.6, 2.2)),
+        ("zero length", (4.5, 4.5), (4.5, 4.5)),
+        ("shorter than a pixel", (2.2, 2.3), (2.9, 2.6)),
+    ]
+    rng = np.random.default_rng(SEED)
+    for k in range(24):
+        p0, p1 = (tuple(rng.integers(0, WINDOW * 8, 2) / 8) for _ in range(2))
+        named.append((f"random line {k}", p0, p1))
+    return [(label, (p0, p1), _expected_pixels(p0, p1)) for label, p0, p1 in named]
+
+
+def _expected_pixels(p0, p1) -> frozenset[tuple[int, int]]:
+    cov = rasterize_line(p0, p1, WINDOW, WINDOW).coverage
+    return frozenset((int(r), int(c)) for r, c in np.argwhere(cov))
+
+
+def as_pixels(value) -> frozenset[tuple[int, int]]:
+    """The student's pixels as a set of (row, col); read as strictly as every answer."""
+    if isinstance(value, (set, frozenset)):
+        value = sorted(value, key=repr)
+    if isinstance(value, (list, tuple)) and len(value) == 0:
+        return frozenset()
+    arr = as_numbers(value, (-1, 2), "a list of (row, col) pairs")
+    if not np.isfinite(arr).all() or (arr != np.round(arr)).any():
+        raise WrongAnswerType(f"returned {short(value)}: pixel indices are whole numbers")
+    pairs = [(int(r), int(c)) for r, c in arr]
+    if len(set(pairs)) != len(pairs):
+        raise WrongAnswerType("returned a pixel twice: a line lights each pixel at most once")
+    return frozenset(pairs)
+
+
+def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col"):
+    """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points,
+    ``end=True`` also lights the pixel whose diamond holds p1, ``order="col row"`` gives
+    pairs the other way round."""
+    a, b = np.asarray(p0, float) + eps, np.asarray(p1, float) + eps
+    lo, hi = np.floor(np.minimum(a, b)) - 1, np.floor(np.maximum(a, b)) + 2
+    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), min(hi[0], WINDOW)),
+                             np.arange(max(lo[1], 0), min(hi[1], WINDOW)))  # fmt: skip
+    cx, cy = cols.ravel() + 0.5, rows.ravel() + 0.5
+    d = b - a
+    t_lo, t_hi = np.zeros(cx.shape), np.ones(cx.shape)
+    lo_open, hi_open = np.zeros(cx.shape, bool), np.zeros(cx.shape, bool)
+    ok = np.ones(cx.shape, bool)
+    for sx, sy in ((1, 1), (1, -1), (-1, 1), (-1, -1)):  # sx(x − cx) + sy(y − cy) < ½
+        c = 0.5 - sx * (a[0] - cx) - sy * (a[1] - cy)
+        rate = sx * d[0] + sy * d[1]
+        if rate == 0:
+            ok &= c > 0
+            continue
+        t = c / rate
+        if rate > 0:
+            tighter = t <= t_hi
+            t_hi, hi_open = np.where(tighter, t, t_hi), hi_open | tighter
+        else:
+            tighter = t >= t_lo
+            t_lo, lo_open = np.where(tighter, t, t_lo), lo_open | tighter
+    ok &= (t_lo < t_hi) | ((t_lo == t_hi) & ~lo_open & ~hi_open)
+    if not end:
+        ok &= np.abs(b[0] - cx) + np.abs(b[1] - cy) >= 0.5
+    pixels = zip(rows.ravel()[ok].astype(int), cols.ravel()[ok].astype(int))
+    return frozenset((c, r) if order == "col row" else (r, c) for r, c in pixels)
+
+
+def dda_pixels(p0, p1):
+    """One pixel per major-axis centre, the line rounded there (no diamond)."""
+    (x0, y0), (x1, y1) = p0, p1
+    dx, dy = x1 - x0, y1 - y0
+    out = set()
+    if abs(dx) >= abs(dy) and dx:
+        for j in range(int(min(x0, x1)), int(max(x0, x1)) + 1):
+            x = j + 0.5
+            if min(x0, x1) <= x < max(x0, x1):
+                out.add((int(np.floor(y0 + (x - x0) * dy / dx)), j))
+    elif dy:
+        for i in range(int(min(y0, y1)), int(max(y0, y1)) + 1):
+            y = i + 0.5
+            if min(y0, y1) <= y < max(y0, y1):
+                out.add((i, int(np.floor(x0 + (y - y0) * dx / dy))))
+    return frozenset(p for p in out if 0 <= p[0] < WINDOW and 0 <= p[1] < WINDOW)
+
+
+_TIE = (
+    "at a tie (a segment along a diamond's edge, or through its corner) GL moves the segment "
+    "by (x, y) − (ε, ε²), ε tiny: x by −ε, y by −ε², so that a horizontal line on a pixel "
+    "boundary y = k lights row k − 1 and a vertical one on x = k column k − 1"
+)
+
+LINE_KNOBS = Knobs(diamond_pixels, {
+    "eps": [
+        Slip("no perturbation", _TIE + "; you did not perturb the segment", (0.0, 0.0)),
+        Slip("+ε² in y", _TIE + "; you moved y by +ε² (the other way)", (-EPS, EPS * EPS)),
+        Slip("no ε² in y", _TIE + "; you moved x by −ε but left y as it is", (-EPS, 0.0)),
+        Slip("+ε in x", _TIE + "; you moved x by +ε (the other way)", (EPS, -EPS * EPS)),
+        Slip("ε in y, ε² in x", _TIE + "; you swapped the two: x moves by −ε, y by −ε²",
+             (-EPS * EPS, -EPS)),
+    ],
+    "end": [Slip("end pixel lit", lambda a, e, g: f"you lit the pixel whose diamond p1 = "
+                 f"{a[1]} lies in: the segment ends there without exiting it, so GL leaves it "
+                 "to the next segment (a polyline then lights each shared vertex once)", True)],
+    "order": [Slip("(col, row) order", "your pairs are (col, row): return (row, col), the row "
+                   "first, as an image is indexed [row, col]", "col row")],
+})  # fmt: skip
+
+LINE_MISTAKES = [
+    LINE_KNOBS,
+    Mistake(
+        "DDA",
+        "you rounded the line at each column (or row) centre, a DDA; GL lights the "
+        "pixels whose diamond |x − (col + ½)| + |y − (row + ½)| < ½ the segment exits",
+        gives=dda_pixels,
+    ),
+]
+
+
+def explain_line(args, expected, got) -> str:
+    """The first wrong pixel, what the rule says of it."""
+    p0, p1 = args
+    extra, missing = sorted(got - expected), sorted(expected - got)
+    if extra:
+        r, c = extra[0]
+        return (f"for the segment {p0} → {p1} you lit (row {r}, col {c}), which the rule leaves "
+                f"dark ({len(extra)} extra, {len(missing)} missing)")  # fmt: skip
+    r, c = missing[0]
+    return (f"for the segment {p0} → {p1} the rule lights (row {r}, col {c}), which you left "
+            f"dark ({len(missing)} missing)")  # fmt: skip
+
+
+def _line_rule(args, expected, got) -> str:
+    p0, p1 = args
+    return (
+        ": a pixel is lit when the segment passes through its diamond |x − (col + ½)| + "
+        "|y − (row + ½)| < ½ and leaves it (p1's own diamond stays dark); " + _TIE
+    )
+
+
+def draw_line(ax, case, got):
+    from matplotlib.colors import ListedColormap
+
+    from .drawing import STATE_COLOURS
+
+    _, (p0, p1), expected = case
+    state = np.zeros((WINDOW, WINDOW), int)
+    for r, c in expected:
+        state[r, c] = 1
+    for r, c in (got or set()) ^ (expected if got is not None else set()):
+        if 0 <= r < WINDOW and 0 <= c < WINDOW:
+            state[r, c] = 2 if (r, c) in expected else 3
+    artists = [ax.imshow(state, cmap=ListedColormap(STATE_COLOURS), vmin=0, vmax=3,
+                         extent=(0, WINDOW, WINDOW, 0), interpolation="nearest")]  # fmt: skip
+    artists += ax.plot([p0[0], p1[0]], [p0[1], p1[1]], "k-o", ms=4)
+    ax.set_aspect("equal")
+    return artists
+
+
+LINE_PIXELS = Exercise(
+    "line_pixels", line_cases, as_pixels, lambda g, e, a: g == e, explain_line, _line_rule,
+    LINE_MISTAKES, constant=lambda v: f"your function returns {short(set(v))} for every line, "
+    "whatever its end points: a placeholder left in?",
+    answers=(PackageAnswer(rasterize_line),), draw=draw_line,
+)  # fmt: skip

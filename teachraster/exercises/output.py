@@ -1,0 +1,145 @@
+"""What a student's function prints during a check: kept aside, capped, shown once afterwards.
+
+A debug ``print`` left in a function runs on every case: ten thousand lines through a Jupyter
+kernel take longer than the function itself, and would bury the report. While a check runs,
+:func:`captured` replaces ``sys.stdout`` and ``sys.stderr`` by a :class:`Capture` that keeps the
+first ``KEEP`` lines written from the checking threads (the thread calling ``check`` and the
+threads running its cases), counts the rest, and passes every other thread's output through.
+Afterwards :meth:`Capture.summary` says how much was printed and :meth:`Capture.replay` writes
+the lines kept, under a heading, to the real output.
+
+>>> import sys
+>>> with captured() as out:
+...     for k in range(500):
+...         print("x =", k)
+>>> out.lines, out.kept[:2]
+(500, ['x = 0', 'x = 1'])
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+from contextlib import contextmanager
+
+#: Lines kept (and shown after the check); the others are counted only.
+KEEP = 20
+#: Characters kept of one line.
+WIDTH = 200
+
+
+class Capture:
+    """Output of the checking threads, capped; :attr:`lines` counts every line written."""
+
+    def __init__(self):
+        self.kept: list[str] = []
+        self.lines = 0
+        self._partial = ""
+        self._threads = {threading.get_ident()}
+        self._lock = threading.Lock()
+
+    def adopt(self, thread_id: int) -> None:
+        """Capture what thread ``thread_id`` writes too (a thread running a case)."""
+        self._threads.add(thread_id)
+
+    def owns(self) -> bool:
+        return threading.get_ident() in self._threads
+
+    def write(self, text: str) -> None:
+        with self._lock:
+            if len(self.kept) >= KEEP:  # the cap reached: count lines, keep nothing
+                self.lines += text.count("\n")
+                return
+            text = self._partial + text
+            *done, self._partial = text.split("\n")
+            self._partial = self._partial[: WIDTH * 4]
+            self.lines += len(done)
+            room = KEEP - len(self.kept)
+            self.kept += [line[:WIDTH] for line in done[:room]]
+
+    def finish(self) -> None:
+        if self._partial:
+            self.write("\n")
+
+    def summary(self) -> str | None:
+        """A sentence for the report, or None when nothing was printed."""
+        if not self.lines:
+            return None
+        shown = min(self.lines, len(self.kept))
+        rest = f"; the first {shown} are shown below the report" if shown else ""
+        return (
+            f"your function printed {self.lines} line{'s' * (self.lines != 1)} during the "
+            f"check{rest} (printing is slow in a notebook: remove debug prints once done)"
+        )
+
+    def replay(self, stream) -> None:
+        """Write the lines kept to ``stream``, under a heading."""
+        if not self.kept:
+            return
+        more = self.lines - len(self.kept)
+        stream.write(
+            f"--- your function printed (first {len(self.kept)} of {self.lines} lines) ---\n"
+        )
+        stream.write("\n".join(self.kept) + "\n")
+        if more > 0:
+            stream.write(f"--- ... and {more} more lines, not shown ---\n")
+
+
+class _Stream:
+    """``sys.stdout`` or ``sys.stderr`` during a check: the checking threads' text is captured,
+    other threads' goes where it went before."""
+
+    def __init__(self, capture: Capture, original):
+        self._capture = capture
+        self._original = original
+
+    def write(self, text) -> int:
+        if not self._capture.owns():
+            return self._original.write(text)
+        self._capture.write(str(text))
+        return len(text)
+
+    def writelines(self, lines) -> None:
+        for line in lines:
+            self.write(line)
+
+    def flush(self) -> None:
+        if not self._capture.owns():
+            self._original.flush()
+
+    def isatty(self) -> bool:
+        return False
+
+    def __getattr__(self, name):  # encoding, fileno, ... as the original stream has them
+        return getattr(self._original, name)
+
+
+_state = threading.local()
+
+
+def current() -> Capture | None:
+    """The capture of the check running in this thread, if any."""
+    return getattr(_state, "capture", None)
+
+
+@contextmanager
+def captured():
+    """Capture the output of the checking threads while the block runs (nested: the outer
+    capture keeps it)."""
+    outer = current()
+    if outer is not None:
+        yield outer
+        return
+    capture = Capture()
+    out, err = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = _Stream(capture, out), _Stream(capture, err)
+    _state.capture = capture
+    try:
+        yield capture
+    finally:
+        _state.capture = None
+        if isinstance(sys.stdout, _Stream) and sys.stdout._capture is capture:
+            sys.stdout = out
+        if isinstance(sys.stderr, _Stream) and sys.stderr._capture is capture:
+            sys.stderr = err
+        capture.finish()

@@ -1,0 +1,722 @@
+"""The students' corpus of review B (2026-12-01, §1b), as test data: for every exercise
+function, solutions that are correct but different (they must pass), wrong ones with the
+mistake their FIRST explanation must name, and package answers (they must not count).
+
+Written from the conventions only, with no call into teachraster (except where a student hands
+in the package's own function). ``exercise_solutions.CORRECT`` are the plain correct ones.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+from exercise_solutions import (
+    CORRECT,
+    _bilinear_with,
+    _classify,
+    _coverage_with,
+    _covers_with,
+    _owns,
+    _snap_exact,
+    bilinear,
+    clip_against,
+    covers,
+    edge_function,
+    fill_vectorised,
+    trilinear,
+)
+from lines_blending_solutions import EPS, line_with
+
+# == edge_function ===============================================================================
+
+
+def edge_shoelace(a, b, p):
+    return a[0] * (b[1] - p[1]) + b[0] * (p[1] - a[1]) + p[0] * (a[1] - b[1])
+
+
+def edge_cross_numpy(a, b, p):
+    return float(np.cross(np.subtract(b, a), np.subtract(p, a)))
+
+
+def edge_y_up(a, b, p):
+    return (b[1] - a[1]) * (p[0] - a[0]) - (b[0] - a[0]) * (p[1] - a[1])
+
+
+def edge_float32(a, b, p):
+    a, b, p = (np.asarray(x, dtype=np.float32) for x in (a, b, p))
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+
+def edge_added(a, b, p):
+    return (b[0] - a[0]) * (p[1] - a[1]) + (b[1] - a[1]) * (p[0] - a[0])
+
+
+# == covers and fill =============================================================================
+
+
+def covers_sign_multiplied(xy, p):
+    """E of each edge times the sign of the area: inside where all are positive."""
+    v = [[Fraction(float(c)) for c in q] for q in xy]
+    p = [Fraction(float(c)) for c in p]
+    s = edge_function(v[0], v[1], v[2])
+    if s == 0:
+        return False
+    sign = 1 if s > 0 else -1
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = sign * edge_function(a, b, p)
+        tl = _owns(a, b) if sign > 0 else _owns(b, a)
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+def _owns_y_up(a, b):
+    """The top-left test written for y up: 'going up' and 'top' read the other way."""
+    return b[1] > a[1] or (b[1] == a[1] and b[0] > a[0])
+
+
+def _owns_y_up_both(a, b):
+    return b[1] > a[1] or (b[1] == a[1] and b[0] < a[0])
+
+
+def _owns_top_right(a, b):
+    return b[1] > a[1] or (b[1] == a[1] and b[0] > a[0])
+
+
+def _owns_bottom_left(a, b):
+    return b[1] < a[1] or (b[1] == a[1] and b[0] < a[0])
+
+
+def fill_vertices_rounded(xy, width, height):
+    return fill_vectorised(np.round(np.asarray(xy, dtype=float)), width, height)
+
+
+def fill_vertices_int(xy, width, height):
+    return fill_vectorised(np.trunc(np.asarray(xy, dtype=float)), width, height)
+
+
+def fill_transposed(xy, width, height):
+    return fill_vectorised(xy, width, height).T
+
+
+def fill_upside_down(xy, width, height):
+    return fill_vectorised(xy, width, height)[::-1]
+
+
+def covers_xy_swapped(xy, p):
+    return covers(np.asarray(xy)[:, ::-1], np.asarray(p)[::-1])
+
+
+# == split_point ===================================================================================
+
+
+def split_interp(v):
+    (u1, v1), (_, v2), (u3, v3) = v
+    return float(np.interp(v2, [v1, v3], [u1, u3]))
+
+
+def split_uv_swapped(v):
+    (v1, u1), (v2, u2), (v3, u3) = v  # the student read (v, u): the formula on the wrong axes
+    return u1 + (v2 - v1) / (v3 - v1) * (u3 - u1) if v3 != v1 else u1
+
+
+def split_short_edge(v):
+    (u1, v1), (u2, v2), (u3, v3) = v
+    return u1 + (v2 - v1) / (v3 - v1) * (u2 - u1)
+
+
+def split_inverse(v):
+    (u1, v1), (u2, v2), (u3, v3) = v
+    return u1 + (v3 - v1) / (v2 - v1) * (u3 - u1) if v2 != v1 else u1
+
+
+# == barycentric ===================================================================================
+
+
+def bary_solve(xy, p):
+    """Solve [v2 − v1, v3 − v1]·(λ2, λ3) = p − v1."""
+    a, b, c = (np.asarray(q, dtype=float) for q in xy)
+    m = np.column_stack([b - a, c - a])
+    l2, l3 = np.linalg.solve(m, np.asarray(p, dtype=float) - a)
+    return np.array([1 - l2 - l3, l2, l3])
+
+
+def _sub_areas(xy, p):
+    a, b, c = (np.asarray(q, dtype=float) for q in xy)
+    return np.array([edge_function(b, c, p), edge_function(c, a, p), edge_function(a, b, p)])
+
+
+def bary_rotated(xy, p):
+    return np.roll(CORRECT["barycentric"](xy, p), 1)
+
+
+def bary_not_divided(xy, p):
+    return _sub_areas(xy, p)
+
+
+def bary_unsigned(xy, p):
+    a, b, c = (np.asarray(q, dtype=float) for q in xy)
+    return np.abs(_sub_areas(xy, p)) / abs(edge_function(a, b, c))
+
+
+def bary_float32(xy, p):
+    return CORRECT["barycentric"](xy, p).astype(np.float32)
+
+
+def bary_over_abs_area(xy, p):
+    a, b, c = (np.asarray(q, dtype=float) for q in xy)
+    return _sub_areas(xy, p) / abs(edge_function(a, b, c))
+
+
+# == perspective ===================================================================================
+
+
+def persp_alpha(lam, w, f):
+    """CS148: screen-space weights turned into perspective-correct ones, α_i ∝ λ_i / w_i."""
+    alpha = [l / wi for l, wi in zip(lam, w)]
+    total = sum(alpha)
+    return sum(a * fi for a, fi in zip(alpha, f)) / total
+
+
+def persp_numerator(lam, w, f):
+    return float(np.sum(np.asarray(lam) / np.asarray(w) * np.asarray(f)))
+
+
+def persp_times_w(lam, w, f):
+    lam, w, f = (np.asarray(x, dtype=float) for x in (lam, w, f))
+    return float((lam * w) @ f / (lam @ w))
+
+
+def persp_float32(lam, w, f):
+    lam, w, f = (np.asarray(x, dtype=np.float32) for x in (lam, w, f))
+    q = lam / w
+    return (q @ f) / q.sum()
+
+
+# == clip_near =====================================================================================
+
+
+def clip_from_v3_as_list(v):
+    poly = CORRECT["clip_near"](np.roll(np.asarray(v, dtype=float), -2, axis=0))
+    return poly.tolist()
+
+
+def clip_t_from_z(v):
+    return clip_against(v, t=lambda a, b: a[2] / (a[2] - b[2]))
+
+
+def clip_reversed(v):
+    return CORRECT["clip_near"](v)[::-1]
+
+
+def clip_no_new_vertices(v):
+    return clip_against(v, new=False)
+
+
+def clip_z_zero(v):
+    return clip_against(v, lambda p: p[2])
+
+
+# == depth_to_unorm ================================================================================
+
+
+def unorm_floor_half(z, bits):
+    return math.floor(z * (2**bits - 1) + 0.5)
+
+
+def unorm_float(z, bits):
+    return float(round(z * (2**bits - 1)))
+
+
+def unorm_times_2_bits(z, bits):
+    return round(z * 2**bits)
+
+
+def unorm_xor(z, bits):
+    return round(z * ((2 ^ bits) - 1))
+
+
+def unorm_float32(z, bits):
+    return int(np.rint(np.float32(z) * np.float32(2**bits - 1)))
+
+
+def unorm_ceil(z, bits):
+    return math.ceil(z * (2**bits - 1))
+
+
+# == coverage_fraction =============================================================================
+
+
+def coverage_per_sample_covers(xy, pixel, samples):
+    v = [_snap_exact(q) for q in xy]
+    row, col = pixel
+    hits = [covers(v, (col + Fraction(ox), row + Fraction(oy))) for ox, oy in samples]
+    return float(np.mean(hits))
+
+
+def coverage_row_col(xy, pixel, samples):
+    col, row = pixel  # the student read (col, row)
+    return CORRECT["coverage_fraction"](xy, (row, col), samples)
+
+
+def coverage_count(xy, pixel, samples):
+    return CORRECT["coverage_fraction"](xy, pixel, samples) * len(samples)
+
+
+# == resolve =======================================================================================
+
+
+def resolve_loop(sample_colours, sample_ids, background):
+    total = [0.0, 0.0, 0.0]
+    for colour, i in zip(sample_colours, sample_ids):
+        src = colour if i >= 0 else background
+        total = [t + float(c) for t, c in zip(total, src)]
+    return [t / len(sample_ids) for t in total]
+
+
+def resolve_float32(sample_colours, sample_ids, background):
+    c = np.asarray(sample_colours, dtype=np.float32)
+    bg = np.asarray(background, dtype=np.float32)
+    return np.where(np.asarray(sample_ids)[:, None] >= 0, c, bg).mean(axis=0)
+
+
+def resolve_background_once(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    covered = np.asarray(sample_colours, dtype=float)[ids >= 0]
+    return (covered.sum(axis=0) + np.asarray(background)) / (len(covered) + 1)
+
+
+def resolve_rgba(sample_colours, sample_ids, background):
+    return np.r_[CORRECT["resolve"](sample_colours, sample_ids, background), 1.0]
+
+
+# == mip_level =====================================================================================
+
+
+def _axes(ddx, ddy, size, scale=True):
+    h, w = size
+    sx, sy = (w, h) if scale else (1, 1)
+    return (ddx[0] * sx, ddx[1] * sy), (ddy[0] * sx, ddy[1] * sy)
+
+
+def level_half_log_squares(ddx, ddy, size):
+    ax, ay = _axes(ddx, ddy, size)
+    return 0.5 * math.log2(max(ax[0] ** 2 + ax[1] ** 2, ay[0] ** 2 + ay[1] ** 2))
+
+
+def level_float32(ddx, ddy, size):
+    h, w = size
+    ax = np.array([ddx[0] * w, ddx[1] * h], dtype=np.float32)
+    ay = np.array([ddy[0] * w, ddy[1] * h], dtype=np.float32)
+    return np.log2(max(np.hypot(*ax), np.hypot(*ay)))
+
+
+def level_sum_before_root(ddx, ddy, size):
+    ax, ay = _axes(ddx, ddy, size)
+    return math.log2(math.sqrt(ax[0] ** 2 + ax[1] ** 2 + ay[0] ** 2 + ay[1] ** 2))
+
+
+def level_units_and_max_component(ddx, ddy, size):
+    ax, ay = _axes(ddx, ddy, size, scale=False)
+    return math.log2(max(map(abs, (*ax, *ay))))
+
+
+def level_w_h_swapped(ddx, ddy, size):
+    return CORRECT["mip_level"](ddx, ddy, size[::-1])
+
+
+def level_geometric(ddx, ddy, size):
+    ax, ay = _axes(ddx, ddy, size)
+    return 0.5 * math.log2(math.hypot(*ax) * math.hypot(*ay))
+
+
+def level_squared(ddx, ddy, size):
+    ax, ay = _axes(ddx, ddy, size)
+    return math.log2(max(ax[0] ** 2 + ax[1] ** 2, ay[0] ** 2 + ay[1] ** 2))
+
+
+# == bilinear and trilinear ========================================================================
+
+
+def bilinear_take_wrap(texture, uv, wrap):
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    x0, y0 = math.floor(x), math.floor(y)
+    fx, fy = x - x0, y - y0
+    mode = "wrap" if wrap == "repeat" else "clip"
+    rows = np.take(np.arange(h), [y0, y0 + 1], mode=mode)
+    cols = np.take(np.arange(w), [x0, x0 + 1], mode=mode)
+    quad = tex[np.ix_(rows, cols)]
+    wy, wx = np.array([1 - fy, fy]), np.array([1 - fx, fx])
+    return np.tensordot(wy, np.tensordot(wx, quad, axes=([0], [1])), axes=([0], [0]))
+
+
+def bilinear_float32(texture, uv, wrap):
+    return np.asarray(bilinear(np.asarray(texture, dtype=np.float32), uv, wrap), dtype=np.float32)
+
+
+def trilinear_explicit(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    if lod <= 0:
+        return bilinear(pyramid[0], uv, wrap)
+    if lod >= q:
+        return bilinear(pyramid[q], uv, wrap)
+    lower = int(lod)
+    t = lod - lower
+    return bilinear(pyramid[lower], uv, wrap) * (1 - t) + bilinear(pyramid[lower + 1], uv, wrap) * t
+
+
+def trilinear_float32(pyramid, uv, lod, wrap="repeat"):
+    return np.asarray(trilinear([np.float32(lv) for lv in pyramid], uv, lod, wrap), np.float32)
+
+
+def trilinear_unclamped_weight(pyramid, uv, lod, wrap="repeat"):
+    """Levels clamped, but weighted by the raw λ − ⌊λ⌋ (right at integer λ only)."""
+    q = len(pyramid) - 1
+    lower = min(max(math.floor(lod), 0), q)
+    upper = min(lower + 1, q)
+    t = lod - math.floor(lod)
+    return (1 - t) * bilinear(pyramid[lower], uv, wrap) + t * bilinear(pyramid[upper], uv, wrap)
+
+
+def trilinear_lower_only(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    return bilinear(pyramid[int(min(max(math.floor(lod), 0), q))], uv, wrap)
+
+
+# == classify_block ================================================================================
+
+
+def classify_two_corners(xy, x0, y0, size):
+    """Tests two opposite extreme centres only."""
+    half = Fraction(1, 2)
+    pts = [(x0 + half, y0 + half), (x0 + size - half, y0 + size - half)]
+    return _classify(xy, x0, y0, size, corner_trick=False, points=pts)
+
+
+def classify_strict(xy, x0, y0, size):
+    """E > 0 on every edge: no top-left rule."""
+    return _classify(xy, x0, y0, size, corner_trick=False, owns=lambda a, b: False)
+
+
+def classify_one_winding(xy, x0, y0, size):
+    v = [[Fraction(float(c)) for c in p] for p in xy]
+    if edge_function(v[0], v[1], v[2]) < 0:
+        return "rejected"
+    return _classify(xy, x0, y0, size)
+
+
+# == line_pixels ===================================================================================
+
+
+def line_half_planes(p0, p1):
+    """The segment clipped against the diamond's four half-planes, in exact Fractions (the
+    pixels in another order)."""
+    return line_with(-EPS, -EPS * EPS)(p0, p1)[::-1]
+
+
+# == over ========================================================================================
+
+
+def over_float32(src, dst):
+    src, dst = np.asarray(src, np.float32), np.asarray(dst, np.float32)
+    return src * src[3] + dst * (1 - src[3])
+
+
+def over_weights_swapped(src, dst):
+    a = src[3]
+    return [s * (1 - a) + d * a for s, d in zip(src, dst)]
+
+
+def over_as_premultiplied(src, dst):
+    return [s + d * (1 - src[3]) for s, d in zip(src, dst)]
+
+
+def premultiplied_twice_all(src, dst):
+    a = src[3]
+    return [s * a + d * (1 - a) for s, d in zip(src, dst)]
+
+
+def premultiplied_no_one_minus(src, dst):
+    return [s + d for s, d in zip(src, dst)]
+
+
+# == the tables ====================================================================================
+
+
+def returns(value):
+    def fn(*args):
+        return value
+
+    return fn
+
+
+#: Correct but different: (exercise, function); every one must pass.
+DIFFERENT = {
+    "shoelace edge function": ("edge_function", edge_shoelace),
+    "np.cross edge function": ("edge_function", edge_cross_numpy),
+    "sign-multiplied covers": ("covers", covers_sign_multiplied),
+    "vectorised fill": ("fill", fill_vectorised),
+    "np.interp split point": ("split_point", split_interp),
+    "2×2 solve for barycentrics": ("barycentric", bary_solve),
+    "CS148's α for perspective": ("perspective", persp_alpha),
+    "depth test with 0/1 ints": ("depth_test", lambda a, b: int(a < b)),
+    "clip starting at v3, a list": ("clip_near", clip_from_v3_as_list),
+    "floor(x + 0.5) unorm": ("depth_to_unorm", unorm_floor_half),
+    "a float for depth_to_unorm": ("depth_to_unorm", unorm_float),
+    "per-sample covers for coverage": ("coverage_fraction", coverage_per_sample_covers),
+    "loop resolve": ("resolve", resolve_loop),
+    "float32 resolve": ("resolve", resolve_float32),
+    "½·log₂ of the squared length": ("mip_level", level_half_log_squares),
+    "float32 mip_level": ("mip_level", level_float32),
+    "np.take(mode='wrap') bilinear": ("bilinear", bilinear_take_wrap),
+    "float32 bilinear": ("bilinear", bilinear_float32),
+    "explicit trilinear": ("trilinear", trilinear_explicit),
+    "float32 trilinear": ("trilinear", trilinear_float32),
+    "corner trick by step signs": ("classify_block", CORRECT["classify_block"]),
+    "all four corners": ("classify_block", lambda *a: _classify(*a, corner_trick=False)),
+    "half-plane clipping against the diamond": ("line_pixels", line_half_planes),
+    "float32 over": ("over", over_float32),
+    "numpy over_premultiplied": (
+        "over_premultiplied",
+        lambda s, d: np.asarray(s) + np.asarray(d) * (1 - s[3]),
+    ),  # fmt: skip
+}
+
+#: Wrong: (exercise, function, words the FIRST explanation must contain).
+WRONG = {
+    # edge_function
+    "E with y up": ("edge_function", edge_y_up, "other way round"),
+    "E in float32": ("edge_function", edge_float32, "float32"),
+    "E returns 0": ("edge_function", returns(0), "returns 0 on every case"),
+    "abs(E)": ("edge_function", lambda a, b, p: abs(edge_function(a, b, p)), "|E|"),
+    "E with the products added": ("edge_function", edge_added, "added the two products"),
+    "E/2": ("edge_function", lambda a, b, p: edge_function(a, b, p) / 2, "E/2"),
+    # covers
+    "covers with E >= 0": ("covers", _covers_with(lambda a, b: True), "every centre on an edge"),
+    "covers with E > 0": ("covers", _covers_with(lambda a, b: False), "no centre on an edge"),
+    "covers, top-left read with y up": ("covers", _covers_with(_owns_y_up), "top-right rule"),
+    "covers, y up both ways": ("covers", _covers_with(_owns_y_up_both), "bottom-right rule"),
+    "covers, top-right rule": ("covers", _covers_with(_owns_top_right), "top-right rule"),
+    "covers, bottom-left rule": ("covers", _covers_with(_owns_bottom_left), "bottom-left rule"),
+    "covers, one winding": ("covers", _covers_with(_owns, orient=False), "handle both windings"),
+    "covers returns False": ("covers", returns(False), "never covers anything"),
+    "covers returns True": ("covers", returns(True), "covers every pixel it is asked about"),
+    "covers in float32": ("covers", _covers_with(_owns, dtype=np.float32), "float32"),
+    "covers with x and y swapped": ("covers", covers_xy_swapped, "x and y are swapped"),
+    # fill
+    "fill with centres at (j, i)": (
+        "fill",
+        lambda xy, w, h: fill_vectorised(xy, w, h, 0),
+        "pixel corners",
+    ),  # fmt: skip
+    "fill transposed": ("fill", fill_transposed, "transposed"),
+    "fill upside down": ("fill", fill_upside_down, "upside down"),
+    "fill with rounded vertices": ("fill", fill_vertices_rounded, "rounded the vertices"),
+    "fill with int() vertices": ("fill", fill_vertices_int, "truncated the vertices"),
+    "fill returns zeros": ("fill", lambda xy, w, h: np.zeros((h, w)), "never covers anything"),
+    "fill, one winding": (
+        "fill",
+        lambda xy, w, h: fill_vectorised(xy, w, h, orient=False),
+        "both windings",
+    ),  # fmt: skip
+    # split_point
+    "split with u and v swapped": ("split_point", split_uv_swapped, "other way round"),
+    "split without u1": (
+        "split_point",
+        lambda v: CORRECT["split_point"](v) - v[0][0],
+        "did you add u1?",
+    ),  # fmt: skip
+    "split on the short edge": ("split_point", split_short_edge, "u3 − u1, not u2 − u1"),
+    "split with the inverse fraction": ("split_point", split_inverse, "not its inverse"),
+    "split returns 0": ("split_point", returns(0), "returns 0 on every case"),
+    # barycentric
+    "barycentric rotated": ("barycentric", bary_rotated, "another order"),
+    "barycentric not divided": ("barycentric", bary_not_divided, "did not divide"),
+    "barycentric unsigned areas": ("barycentric", bary_unsigned, "signed"),
+    "barycentric in float32": ("barycentric", bary_float32, "float32"),
+    "barycentric over |area|": ("barycentric", bary_over_abs_area, "not by its absolute value"),
+    "barycentric returns zeros": ("barycentric", returns([0.0, 0.0, 0.0]), "on every case"),
+    # perspective
+    "perspective affine": (
+        "perspective",
+        lambda lam, w, f: float(np.dot(lam, f)),
+        "the affine Σλf",
+    ),  # fmt: skip
+    "perspective numerator only": ("perspective", persp_numerator, "divide it by Σλ/w"),
+    "perspective times w": ("perspective", persp_times_w, "multiplied by w"),
+    "perspective in float32": ("perspective", persp_float32, "float32"),
+    "perspective returns 0": ("perspective", returns(0.0), "returns 0 on every case"),
+    # depth_test
+    "depth test <=": ("depth_test", lambda a, b: a <= b, "use <, not <="),
+    "depth test >": ("depth_test", lambda a, b: a > b, "other way round"),
+    "depth test returns True": ("depth_test", returns(True), "returns True on every case"),
+    "depth test in float32": (
+        "depth_test",
+        lambda a, b: np.float32(a) < np.float32(b),
+        "float32",
+    ),  # fmt: skip
+    # clip_near
+    "clip after the divide": ("clip_near", None, "before dividing by w"),
+    "clip with t from z": ("clip_near", clip_t_from_z, "t from z alone"),
+    "clip unclipped": ("clip_near", lambda v: np.asarray(v, dtype=float), "unclipped"),
+    "clip reversed": ("clip_near", clip_reversed, "reverse order"),
+    "clip without new vertices": ("clip_near", clip_no_new_vertices, "added none"),
+    "clip against z = 0": ("clip_near", clip_z_zero, "z = 0"),
+    # depth_to_unorm
+    "unorm times 2^bits": ("depth_to_unorm", unorm_times_2_bits, "must hold z = 1"),
+    "unorm truncated": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "int() truncates"),
+    "unorm in float32": ("depth_to_unorm", unorm_float32, "float32"),
+    "unorm with 2 ^ bits": ("depth_to_unorm", unorm_xor, "exclusive or"),
+    "unorm rounded up": ("depth_to_unorm", unorm_ceil, "rounded up"),
+    "unorm returns 0": ("depth_to_unorm", returns(0), "returns 0 on every case"),
+    # coverage_fraction
+    "coverage, offsets from the centre": (
+        "coverage_fraction",
+        _coverage_with(shift=(0.5, 0.5)),
+        "not its centre",
+    ),  # fmt: skip
+    "coverage, (col, row)": ("coverage_fraction", coverage_row_col, "pixel is (row, col)"),
+    "coverage without snapping": ("coverage_fraction", _coverage_with(snap=False), "unsnapped"),
+    "coverage as a count": ("coverage_fraction", coverage_count, "number of samples covered"),
+    "coverage at the centre": (
+        "coverage_fraction",
+        _coverage_with(centre_only=True),
+        "pixel centre only",
+    ),  # fmt: skip
+    "coverage, E >= 0": (
+        "coverage_fraction",
+        _coverage_with(tie=lambda a, b: True),
+        "every centre on an edge",
+    ),  # fmt: skip
+    "coverage, one winding": ("coverage_fraction", _coverage_with(orient=False), "both windings"),
+    "coverage returns 0": ("coverage_fraction", returns(0), "returns 0 on every case"),
+    # resolve
+    "resolve of the covered samples": ("resolve", None, "covered sample"),
+    "resolve with NaN": ("resolve", lambda c, i, b: np.mean(c, axis=0), "hold NaN"),
+    "resolve, background once": ("resolve", resolve_background_once, "once for every uncovered"),
+    "resolve in RGBA": ("resolve", resolve_rgba, "3 channels"),
+    "resolve returns black": ("resolve", returns([0.0, 0.0, 0.0]), "on every case"),
+    # mip_level
+    "λ in texture units, largest component": (
+        "mip_level",
+        level_units_and_max_component,
+        "texture units",
+    ),  # fmt: skip
+    "λ with W and H swapped": ("mip_level", level_w_h_swapped, "scaled u by H and v by W"),
+    "λ of the squared length": ("mip_level", level_squared, "squared length"),
+    "λ of the geometric mean": ("mip_level", level_geometric, "geometric mean"),
+    "λ summed before the root": ("mip_level", level_sum_before_root, "summed the squares"),
+    "λ returns 0": ("mip_level", returns(0), "returns 0 on every case"),
+    # bilinear
+    "bilinear without −½": ("bilinear", _bilinear_with(centre=0.0), "texel corners"),
+    "bilinear, weights reversed": (
+        "bilinear",
+        _bilinear_with(swap=True),
+        "the weight of the right",
+    ),  # fmt: skip
+    "bilinear, always clamp": ("bilinear", _bilinear_with(wrap_as="clamp"), "tiles the texture"),
+    "bilinear transposed": ("bilinear", _bilinear_with(transpose=True), "texture[row, col]"),
+    "bilinear clamping first": ("bilinear", _bilinear_with(clamp_x=True), "you clamped"),
+    "bilinear returns 0": ("bilinear", returns(0.0), "returns 0 on every case"),
+    # trilinear
+    "trilinear, weights swapped": ("trilinear", None, "the weight of level"),
+    "trilinear, nearest level": ("trilinear", None, "(the nearest)"),
+    "trilinear, unclamped weight": ("trilinear", trilinear_unclamped_weight, "clamp it to [0, q]"),
+    "trilinear, lower level only": ("trilinear", trilinear_lower_only, "alone"),
+    # classify_block
+    "blocks by their outer corners": ("classify_block", None, "outer corners"),
+    "blocks rejected by corners outside": (
+        "classify_block",
+        None,
+        "the test is per edge",
+    ),  # fmt: skip
+    "blocks by two corners": ("classify_block", classify_two_corners, "only 2 of the 4"),
+    "blocks without the top-left rule": ("classify_block", classify_strict, "top-left rule"),
+    "blocks of one winding": ("classify_block", classify_one_winding, "both windings"),
+    "blocks always partial": (
+        "classify_block",
+        returns("partial"),
+        "returns 'partial' on every case",
+    ),  # fmt: skip
+    # line_pixels
+    "line without ε": ("line_pixels", line_with(0, 0), "did not perturb"),
+    "line with +ε²": ("line_pixels", line_with(-EPS, EPS * EPS), "+ε²"),
+    "line without ε² in y": ("line_pixels", line_with(-EPS, 0), "left y as it is"),
+    "line in (col, row)": ("line_pixels", line_with(-EPS, -EPS * EPS, "col row"), "(col, row)"),
+    "line returns nothing": ("line_pixels", returns([]), "for every line"),
+    # over
+    "over, Porter-Duff alpha": ("over", None, "one factor pair"),
+    "over as premultiplied": ("over", over_as_premultiplied, "not multiplied by its alpha"),
+    "over, weights swapped": ("over", over_weights_swapped, "weight 1 − α"),
+    "over returns dst": ("over", lambda s, d: d, "destination"),
+    # over_premultiplied
+    "premultiplied twice": ("over_premultiplied", premultiplied_twice_all, "premultiplied already"),
+    "premultiplied without (1 − a)": (
+        "over_premultiplied",
+        premultiplied_no_one_minus,
+        "not scaled by (1 − α)",
+    ),  # fmt: skip
+}
+
+
+def _fill_in_from_exercise_solutions():
+    from exercise_solutions import MISTAKES
+
+    picks = {
+        "clip after the divide": "testing after the divide",
+        "resolve of the covered samples": "resolve of covered samples only",
+        "trilinear, weights swapped": "trilinear with swapped weights",
+        "trilinear, nearest level": "trilinear from the nearest level",
+        "blocks by their outer corners": "block corners for pixel centres",
+        "blocks rejected by corners outside": "reject when the corners lie outside",
+        "over, Porter-Duff alpha": "Porter-Duff alpha in GL's over",
+    }
+    for label, source in picks.items():
+        name, _, words = WRONG[label]
+        WRONG[label] = (name, MISTAKES[source][1], words)
+
+
+_fill_in_from_exercise_solutions()
+
+
+#: Two mistakes at once: (exercise, function, words each in the summary).
+TWO_MISTAKES = {
+    "bilinear without −½, always clamped": (
+        "bilinear",
+        _bilinear_with(centre=0.0, wrap_as="clamp"),
+        ("texel corners", "tiles the texture"),
+    ),  # fmt: skip
+    "λ in texture units, largest component": (
+        "mip_level",
+        level_units_and_max_component,
+        ("texture units", "largest component"),
+    ),  # fmt: skip
+}
+
+
+def _package():
+    import teachraster as tr
+
+    return {
+        "edge_function": tr.edge_function,
+        "mip_level": lambda ddx, ddy, size: tr.mip_level(ddx, ddy, size),
+        "bilinear": lambda texture, uv, wrap: tr.sample(texture, [uv], "bilinear", wrap)[0],
+        "trilinear": lambda pyramid, uv, lod, wrap="repeat": tr.sample(
+            pyramid, [uv], "trilinear", wrap, lod=[lod]
+        )[0],  # fmt: skip
+        "over": lambda src, dst: tr.blend_equation(src, dst),
+        "over_premultiplied": lambda src, dst: tr.blend_equation(
+            src, dst, "ONE", "ONE_MINUS_SRC_ALPHA"
+        ),  # fmt: skip
+        "fill": lambda xy, w, h: tr.rasterize(tr.Triangle(xy), w, h).coverage,
+        "split_point": lambda v: tr.split_point(v),
+    }
+
+
+#: The package's own function handed in: exercise -> function (must not count).
+PACKAGE = _package()

@@ -1,0 +1,138 @@
+"""Review B's students (§1b), replayed: correct but different solutions pass, each wrong one is
+named right in its FIRST explanation (never float32 unless float32 is the cause), two mistakes
+are both named, stubs are told so, and the package's own function does not count.
+
+The corpus is ``student_variants.py``; the mistakes there are written independently of the
+checker's own tables, so a misdiagnosis of the class (not of one string) fails here.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from student_variants import DIFFERENT, PACKAGE, TWO_MISTAKES, WRONG
+
+from teachraster import exercises as ex
+
+BUDGET = 120  # exact Fractions in some references: slow on a loaded machine, never a timeout
+
+
+@pytest.mark.parametrize("label", list(DIFFERENT))
+def test_a_correct_but_different_solution_passes(label):
+    name, fn = DIFFERENT[label]
+    report = ex.check(name, fn, budget=BUDGET)
+    assert report.passed, str(report)
+
+
+@pytest.mark.parametrize("label", list(WRONG))
+def test_the_first_explanation_names_the_mistake(label):
+    name, fn, words = WRONG[label]
+    report = ex.check(name, fn, budget=BUDGET)
+    assert not report.passed
+    first = report.failures[0]
+    assert words in first.explanation, f"{label}: {first.explanation}"
+    assert all(f.kind for f in report.failures), "every failure has a kind"
+    if "float32" not in words:
+        assert "float32" not in first.explanation, first.explanation
+
+
+@pytest.mark.parametrize("label", list(TWO_MISTAKES))
+def test_two_mistakes_are_both_named_in_the_summary(label):
+    name, fn, words = TWO_MISTAKES[label]
+    report = ex.check(name, fn, budget=BUDGET)
+    text = str(report)
+    for w in words:
+        assert w in text, text
+    assert len({f.kind for f in report.shown()}) >= 2
+
+
+@pytest.mark.parametrize("name", list(PACKAGE))
+def test_the_packages_own_function_is_named_and_not_counted(name):
+    report = ex.check(name, PACKAGE[name], budget=BUDGET)
+    assert not report.passed and report.package is not None
+    assert "does not count" in report.package and "teachraster" in report.package
+    with pytest.raises(AssertionError, match="not counted"):
+        report.assert_passed()
+
+
+def test_a_package_function_as_a_tool_counts():
+    """edge_function is the answer of its exercise only: inside barycentric it is a tool."""
+    import teachraster as tr
+
+    def barycentric(xy, p):
+        area = tr.edge_function(xy[0], xy[1], xy[2])
+        return (
+            np.array([tr.edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], p) for k in range(3)])
+            / area
+        )
+
+    assert ex.check("barycentric", barycentric, budget=BUDGET).passed
+
+
+@pytest.mark.parametrize("name", ex.names())
+def test_a_stub_is_told_so(name):
+    def stub(*args):
+        raise NotImplementedError()
+
+    def forgot(*args):
+        pass
+
+    report = ex.check(name, stub)
+    assert report.not_implemented and "not implemented yet" in str(report)
+    report = ex.check(name, forgot)
+    assert report.failures[0].explanation == "your function returned None (a missing `return`?)"
+
+
+def test_two_colours_never_print_alike():
+    """A blend off by 1e-5 is wrong (colours match within 1e-6): it prints with the digits that
+    tell it from the right one."""
+    import re
+
+    from exercise_solutions import CORRECT
+
+    def off(src, dst):
+        return np.asarray(CORRECT["over"](src, dst)) + 1e-5
+
+    report = ex.check("over", off)
+    assert report.failures
+    for f in report.failures:
+        m = re.search(r"the blend is (\(.*?\)); yours is (\(.*?\))", f.explanation)
+        assert m and m.group(1) != m.group(2), f.explanation
+
+
+def _random_answers(name):
+    import random
+
+    rng = random.Random(7)
+    return {
+        "classify_block": lambda *a: rng.choice(["rejected", "accepted", "partial"]),
+        "depth_test": lambda *a: rng.random() < 0.5,
+        "covers": lambda *a: rng.random() < 0.5,
+        "coverage_fraction": lambda xy, pixel, samples: (
+            rng.randrange(len(samples) + 1) / len(samples)
+        ),  # fmt: skip
+        "depth_to_unorm": lambda z, bits: rng.randrange(2**bits),
+        "line_pixels": lambda p0, p1: [(rng.randrange(12), rng.randrange(12))],
+    }[name]
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "classify_block",
+        "depth_test",
+        "covers",
+        "coverage_fraction",
+        "depth_to_unorm",
+        "line_pixels",
+    ],
+)
+def test_random_answers_get_the_rule_not_an_invented_cause(name):
+    """Where answers are few (three verdicts, a bool, k/S), some wrong solution agrees with a
+    random answer on some cases: that coincidence is never named as the cause."""
+    report = ex.check(name, _random_answers(name), budget=BUDGET)
+    assert not report.passed
+    kinds = {f.kind for f in report.failures}
+    assert kinds <= {"value", "outside", "inside", "vertex", "zero area"} | {
+        k for k in kinds if k.startswith("on a ")
+    }, kinds
