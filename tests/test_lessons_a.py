@@ -61,6 +61,32 @@ def test_each_lesson_asks_two_predict_first_questions(name):
     assert len(asked) >= 2, f"{name}: {len(asked)} predict-first question(s)"
 
 
+#: Every lesson notebook, 00 to 12: the prediction rule is the course's, not one lesson's.
+ALL_LESSONS = sorted(p.stem for p in NOTEBOOKS.glob("*.ipynb"))
+ASKS = re.compile(r"\bPredict\w*\(")
+
+
+@pytest.mark.parametrize("name", ALL_LESSONS)
+def test_every_predict_cell_hides_its_source_and_no_shown_cell_holds_an_answer(name):
+    """A student must not read the answer in the code cell that asks the question: each
+    Predict cell is collapsed (``jupyter.source_hidden``: JupyterLab and Notebook 7) and
+    tagged ``hide-input`` (``teachraster html`` leaves its source out), and no cell left
+    open passes ``answer=`` to anything."""
+    nb = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())
+    asked = 0
+    for cell in nb["cells"]:
+        source, meta = "".join(cell["source"]), cell["metadata"]
+        if cell["cell_type"] != "code":
+            continue
+        hidden = meta.get("jupyter", {}).get("source_hidden") is True
+        if ASKS.search(source):
+            asked += 1
+            assert hidden and "hide-input" in meta.get("tags", []), (name, cell.get("id"))
+        elif not hidden:
+            assert not re.search(r"\banswer\s*=", source), (name, cell.get("id"))
+    assert asked >= 2, name
+
+
 @pytest.mark.parametrize("name", MINE)
 def test_no_cell_moves_a_widget_the_student_is_using(name):
     """Cells driven from code use a second, hidden widget (``probe``), never the shown one."""
