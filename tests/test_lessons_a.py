@@ -126,6 +126,13 @@ def test_00_facing_and_the_two_methods():
     assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
     assert ns.same  # the predicted answer: 0 pixels differ
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
+    # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
+    assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
+    lam = tr.barycentric(ns.tri.xy, np.array([[x + 0.5, y + 0.5] for y in range(16)
+                                              for x in range(16)]))  # fmt: skip
+    inside = (lam >= 0).all(axis=1)
+    on_band = np.abs(lam @ ns.inv_w - ns.inv_w[1]) < 0.02
+    assert np.nanmax(ns.err.ravel()[inside & on_band]) < 0.02  # dark next to the 0.152 maximum
     order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
     assert list(order) == [0, 1, 2]  # "here also top to bottom"
 
@@ -384,6 +391,8 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert names.index("fragment shading") in range(top + 1, bottom)  # what early-z skips
     clipping = next(s for s in PIPELINE_STAGES if s.name == "clipping")
     assert "x, y" in clipping.what and "guard band" in clipping.what
+    # the z range is the API's: GL's default −w, Direct3D's and Vulkan's 0 (review a1, 00)
+    assert "−w (GL)" in clipping.what and "0 (D3D, Vulkan)" in clipping.what
 
 
 @pytest.mark.parametrize("name", MINE)
