@@ -151,6 +151,12 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
                  for p, q in [(v1, v3), (a, b)]]  # fmt: skip
         assert Fraction(j) + Fraction(1, 2) in exact  # the centre lies exactly on an edge
         assert x_right != j + 0.5  # and the float crossing missed it
+        # ... to the right: the harmful side ("rounded a hair to the right ... fills the pixel")
+        assert x_right > j + 0.5
+    # "off the centres ... no tie to get wrong": the Try-it's expectation (review a1: it
+    # promised mismatches), on 300 random triangles off the centres
+    assert ns.off_wrong == 0 and len(ns.off_fills) == 300
+    assert "no box" in ns.trace.caption(ns.trace.bbox_step)  # span tables test no box
     assert np.array_equal(ns.stepped, ns.fill.coverage)
     assert 0 < ns.drift < 1e-14  # "a few 10^-15 px"
 
