@@ -339,6 +339,10 @@ def test_split_point_follows_the_middle_vertex(editor):
     new = editor.fill.trace.span.u4
     assert new != u4
     assert editor.view.split.label.get_text() == f"point 4: u4 = {new:.2f}"
+    # half-planes split nothing: the line names the centres they test instead (review a1, 02)
+    editor.method.value = "halfplane"
+    assert "u4" not in editor.info.value and "split" not in editor.info.value
+    assert f"{editor.fill.trace.bbox.size} centres of the bounding box tested" in editor.info.value
 
 
 def test_depth_sliders_drive_the_error_heatmap(editor):
