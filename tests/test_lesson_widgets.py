@@ -38,6 +38,16 @@ def test_plane_system_three_ways_agree():
         assert np.allclose(tr.attribute_plane(xy, f)(*xy.T), f)
 
 
+def test_plane_explorer_reads_positions_as_lesson_03_does(explorer):
+    """Ticks at whole screen coordinates (v1 = (2, 1) on its ticks, as lesson 03's figure),
+    and a colour bar that says what it measures (review a1, 03)."""
+    ax = explorer.ax
+    assert ax.get_xlabel() == "x" and ax.get_ylabel() == "y"
+    assert 2.0 in ax.get_xticks() and 0.5 not in ax.get_xticks()
+    assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["0", "2"]
+    assert explorer.image.colorbar.ax.get_ylabel() == "f, the attribute"
+
+
 def test_plane_system_zero_area_has_no_plane():
     s = plane_system([[0, 0], [1, 1], [2, 2]], [0, 1, 2])
     assert s["area2"] == 0 and "g" not in s and "M" not in s

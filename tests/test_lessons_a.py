@@ -401,6 +401,20 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert "−w (GL)" in clipping.what and "0 (D3D, Vulkan)" in clipping.what
 
 
+def test_notes_are_cited_where_they_say_it():
+    """Review a1: CS148's implicit line equation is in its *Rasterization* section, not *Why
+    Triangles?*; Fatahalian's perspective caveat opens his comment and points to the next
+    slide; lesson 03 prints the gradient as g_x (the package's .A is Fatahalian's A, which the
+    lesson's table renames, not Triangle Rasterisation II's A)."""
+    intro = _cells("02_half_planes", "markdown")[0]
+    assert "(*Rasterization*, \"Implicit Equation for a\nline\")" in intro
+    assert "(*Why Triangles?*) call" not in intro
+    lesson_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "markdown"))
+    assert "right after the matrix" not in lesson_03 and "next slide" in lesson_03
+    code_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "code"))
+    assert "planes.g_x" in code_03 and "planes.A" not in code_03
+
+
 @pytest.mark.parametrize("name", MINE)
 def test_no_phantom_sources_and_no_false_ipympl_claim(name):
     """The notes are Ek, CS148, Triangle Rasterisation II, Ritschel and Fatahalian: no
