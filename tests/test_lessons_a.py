@@ -407,7 +407,7 @@ def test_notes_are_cited_where_they_say_it():
     slide; lesson 03 prints the gradient as g_x (the package's .A is Fatahalian's A, which the
     lesson's table renames, not Triangle Rasterisation II's A)."""
     intro = _cells("02_half_planes", "markdown")[0]
-    assert "(*Rasterization*, \"Implicit Equation for a\nline\")" in intro
+    assert '(*Rasterization*, "Implicit Equation for a\nline")' in intro
     assert "(*Why Triangles?*) call" not in intro
     lesson_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "markdown"))
     assert "right after the matrix" not in lesson_03 and "next slide" in lesson_03
