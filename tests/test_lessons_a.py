@@ -249,6 +249,16 @@ def test_04_heatmap_edges_and_the_readable_floor():
         x1 - x0, y1 - y0
     )
     assert off_line < 2  # "largest on the diagonal"
+    # ... because both u and v change along it: √2 times a side edge's error, the sides
+    # running between the same depths (review a1: it said "farthest apart in depth")
+    e = ns.edge_texels
+    assert (
+        max(e["near edge"], e["far edge"]) < 1e-9 and abs(e["side u = 0"] - e["side u = 1"]) < 1e-9
+    )
+    assert abs(e["diagonal"] / e["side u = 0"] - np.sqrt(2)) < 1e-3
+    assert abs(e["diagonal"] - np.nanmax(ns.texels)) < 0.5  # the render's maximum is on it
+    # the heatmap's dark band: Δu = 0 on v2's depth line, v2 to v1 + 2/3 (v3 - v1)
+    assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
     assert near_far < 0.1 * np.nanmax(ns.texels)  # "zero along the near and the far edge"
 
@@ -449,6 +459,11 @@ def test_projection_world_points_lie_on_the_eye_rays():
     fig, (ax, cax) = plt.subplots(2, 1)
     art = plot_projection(ax, seg, q=0.5, curve_ax=cax)
     assert art.update(0.25) == pytest.approx(float(seg.world_parameter(0.25)[0]))
+    # every marker in the key, and the key beside the picture, off the rays (review a1, 04)
+    assert art.screen_point.get_label() == "screen point q" and "t" in art.world_point.get_label()
+    fig.canvas.draw()
+    key, frame = ax.get_legend().get_window_extent(), ax.get_window_extent()
+    assert key.x0 >= frame.x1  # right of the Axes, covering nothing in them
     plt.close(fig)
     with pytest.raises(ValueError, match="z0"):
         Segment(0.0, -1.0, 1.0, 2.0)
