@@ -411,6 +411,16 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert "−w (GL)" in clipping.what and "0 (D3D, Vulkan)" in clipping.what
 
 
+def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_listed():
+    cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "orders is every pixel right" in t)
+    assert not any("C over A" in t or "cycle" in t for t in text[:ask])  # review a1, 05a
+    table = next(t for t in text if "| teachraster |" in t)
+    row = next(line for line in table.splitlines() if line.startswith("| teachraster |"))
+    assert "$w > 0$ (the eye plane)" in row and "guard band" in row
+
+
 def test_notes_are_cited_where_they_say_it():
     """Review a1: CS148's implicit line equation is in its *Rasterization* section, not *Why
     Triangles?*; Fatahalian's perspective caveat opens his comment and points to the next
@@ -478,9 +488,15 @@ def test_zbuffer_replay_ends_in_the_frame_and_counts_add_up():
     for k in range(12):
         classes = fragment_classes(frame, k)
         assert fragment_counts(frame, k) == ((classes == 2).sum(), (classes == 3).sum())
-    fig, (a, b) = plt.subplots(1, 2)
+    fig, (a, b) = plt.subplots(1, 2, figsize=(9, 5.6), layout="constrained")
     view = ZBufferStepView(frame, a, b)
     assert view.n_triangles == 12 and view.show(3) == fragment_counts(frame, 3)
+    # the colour bar's label inside the figure (it was cut off below it), and the scene's
+    # outline on the fragment panel, so that triangle 0 is seen in its place (review a1, 05a)
+    fig.canvas.draw()
+    label = view.colorbar.ax.yaxis.label.get_window_extent()
+    assert label.y0 >= 0 and label.x1 <= fig.bbox.width and label.y1 <= fig.bbox.height
+    assert len(view.outline.allsegs[0]) >= 1
     plt.close(fig)
     with pytest.raises(ValueError, match="trace=True"):
         buffer_after(tr.render(tr.get_scene("cube"), None, 8, 8), 0)
