@@ -161,3 +161,19 @@ def test_case_picker_shows_every_screen_case_with_both_methods():
             CasePicker("behind_camera", backend="image")
     finally:
         picker.close()
+
+
+def test_depth_explorer_quotes_no_distance_in_front_of_the_near_plane():
+    """Review a1, 05b: near 10 quoted 'Δz at z = 1, 10, 100', z = 1 in front of the near
+    plane (nothing drawn there; the value was the curve's first, clamped)."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("float32", near=0.1, far=1000.0, backend="image")
+    try:
+        assert "Δz at z = 1, 10, 100:" in ex.info.value
+        ex.near.value = 10.0
+        assert "Δz at z = 100:" in ex.info.value and "z = 1," not in ex.info.value
+        res = tr.depth_resolution(100.0, 10.0, 1000.0, "float32")
+        assert f"{float(res):.2g}" in ex.info.value.split("Δz at z = 100:")[1]
+    finally:
+        ex.close()

@@ -289,6 +289,36 @@ def test_05b_quoted_distances_and_resolutions():
 
 
 @pytest.mark.notebook
+def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_one():
+    """Review a1, 05b: the decal text promised flips 'from pixel to pixel' above a render where
+    the decal showed at 0 pixels; the float32 model shows them. And why reverse-Z in GL needs
+    glClipControl(GL_ZERO_TO_ONE); the float32 uptick at the far plane."""
+    ns = lesson("05b_depth_precision")
+    n_px = len(ns.rows_d)
+    assert ns.decal_shown["no bias"] == 0 and ns.decal_shown["depth bias"] == n_px  # float64
+    assert 0.05 * n_px < ns.gpu_shown["no bias"] < 0.5 * n_px  # streaks: shown at some pixels
+    assert ns.gpu_shown["depth bias"] == n_px  # "wins everywhere ... in the float32 model alike"
+    assert set(np.unique(ns.apart)) <= {-2, -1, 0, 1, 2}  # "a rounding or so apart"
+    assert (ns.apart == 0).mean() > 0.5  # "most pixels"
+    assert len(ns.shown_after - ns.shown_before) > 0.5 * len(ns.shown_after)  # "most ... elsewhere"
+    # GL's [-1, 1] NDC: the far squares fight again, though less than unorm24's
+    assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
+    assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
+    assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 2.0  # 2^-23 against 2^-24
+
+
+def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
+    table = next(c for c in _cells("05b_depth_precision", "markdown") if "| Vulkan" in c)
+    rows = {
+        line.split("|")[1].strip(): line for line in table.splitlines() if line.startswith("| ")
+    }
+    assert "at least the internal component sizes" in rows["OpenGL 4.6"]
+    assert "may vary its allocation" not in rows["OpenGL 4.6"]
+    assert "must not substitute a different depth or stencil precision" in rows["Vulkan"]
+    assert "no less precision" not in rows["Vulkan"]
+
+
+@pytest.mark.notebook
 def test_05b_widget_fight_comes_a_little_after_the_crossing():
     """Section 6: the explorer's first sampled fight lies a little beyond Δz = δ."""
     ns = lesson("05b_depth_precision")
