@@ -305,6 +305,7 @@ def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_
     assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
     assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
     assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 2.0  # 2^-23 against 2^-24
+    assert ns.w_row.tolist() == [0.0, 0.0, -1.0, 0.0]  # "w = -z_eye ... with no +1"
 
 
 def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
