@@ -359,6 +359,8 @@ def test_attribute_plane_agrees_with_plane_equation():
             np.testing.assert_allclose(ap.B, plane.dy, rtol=1e-9, atol=1e-12)
             np.testing.assert_array_equal(reused.A, ap.A)
             np.testing.assert_array_equal(reused.B, ap.B)
+            # the lessons' names for Fatahalian's A, B (lesson 03 prints g_x beside dx)
+            assert ap.g_x is ap.A and ap.g_y is ap.B
             pts = rng.uniform(-30, 30, (10, 2))
             np.testing.assert_allclose(
                 ap(pts[:, 0], pts[:, 1]), plane(pts[:, 0], pts[:, 1]), atol=1e-9

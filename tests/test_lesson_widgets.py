@@ -38,6 +38,16 @@ def test_plane_system_three_ways_agree():
         assert np.allclose(tr.attribute_plane(xy, f)(*xy.T), f)
 
 
+def test_plane_explorer_reads_positions_as_lesson_03_does(explorer):
+    """Ticks at whole screen coordinates (v1 = (2, 1) on its ticks, as lesson 03's figure),
+    and a colour bar that says what it measures (review a1, 03)."""
+    ax = explorer.ax
+    assert ax.get_xlabel() == "x" and ax.get_ylabel() == "y"
+    assert 2.0 in ax.get_xticks() and 0.5 not in ax.get_xticks()
+    assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["0", "2"]
+    assert explorer.image.colorbar.ax.get_ylabel() == "f, the attribute"
+
+
 def test_plane_system_zero_area_has_no_plane():
     s = plane_system([[0, 0], [1, 1], [2, 2]], [0, 1, 2])
     assert s["area2"] == 0 and "g" not in s and "M" not in s
@@ -190,3 +200,19 @@ def test_case_picker_shows_every_screen_case_with_both_methods():
             CasePicker("behind_camera", backend="image")
     finally:
         picker.close()
+
+
+def test_depth_explorer_quotes_no_distance_in_front_of_the_near_plane():
+    """Review a1, 05b: near 10 quoted 'Δz at z = 1, 10, 100', z = 1 in front of the near
+    plane (nothing drawn there; the value was the curve's first, clamped)."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("float32", near=0.1, far=1000.0, backend="image")
+    try:
+        assert "Δz at z = 1, 10, 100:" in ex.info.value
+        ex.near.value = 10.0
+        assert "Δz at z = 100:" in ex.info.value and "z = 1," not in ex.info.value
+        res = tr.depth_resolution(100.0, 10.0, 1000.0, "float32")
+        assert f"{float(res):.2g}" in ex.info.value.split("Δz at z = 100:")[1]
+    finally:
+        ex.close()

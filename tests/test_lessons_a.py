@@ -61,6 +61,32 @@ def test_each_lesson_asks_two_predict_first_questions(name):
     assert len(asked) >= 2, f"{name}: {len(asked)} predict-first question(s)"
 
 
+#: Every lesson notebook, 00 to 12: the prediction rule is the course's, not one lesson's.
+ALL_LESSONS = sorted(p.stem for p in NOTEBOOKS.glob("*.ipynb"))
+ASKS = re.compile(r"\bPredict\w*\(")
+
+
+@pytest.mark.parametrize("name", ALL_LESSONS)
+def test_every_predict_cell_hides_its_source_and_no_shown_cell_holds_an_answer(name):
+    """A student must not read the answer in the code cell that asks the question: each
+    Predict cell is collapsed (``jupyter.source_hidden``: JupyterLab and Notebook 7) and
+    tagged ``hide-input`` (``teachraster html`` leaves its source out), and no cell left
+    open passes ``answer=`` to anything."""
+    nb = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())
+    asked = 0
+    for cell in nb["cells"]:
+        source, meta = "".join(cell["source"]), cell["metadata"]
+        if cell["cell_type"] != "code":
+            continue
+        hidden = meta.get("jupyter", {}).get("source_hidden") is True
+        if ASKS.search(source):
+            asked += 1
+            assert hidden and "hide-input" in meta.get("tags", []), (name, cell.get("id"))
+        elif not hidden:
+            assert not re.search(r"\banswer\s*=", source), (name, cell.get("id"))
+    assert asked >= 2, name
+
+
 @pytest.mark.parametrize("name", MINE)
 def test_no_cell_moves_a_widget_the_student_is_using(name):
     """Cells driven from code use a second, hidden widget (``probe``), never the shown one."""
@@ -100,6 +126,13 @@ def test_00_facing_and_the_two_methods():
     assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
     assert ns.same  # the predicted answer: 0 pixels differ
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
+    # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
+    assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
+    lam = tr.barycentric(ns.tri.xy, np.array([[x + 0.5, y + 0.5] for y in range(16)
+                                              for x in range(16)]))  # fmt: skip
+    inside = (lam >= 0).all(axis=1)
+    on_band = np.abs(lam @ ns.inv_w - ns.inv_w[1]) < 0.02
+    assert np.nanmax(ns.err.ravel()[inside & on_band]) < 0.02  # dark next to the 0.152 maximum
     order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
     assert list(order) == [0, 1, 2]  # "here also top to bottom"
 
@@ -118,6 +151,12 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
                  for p, q in [(v1, v3), (a, b)]]  # fmt: skip
         assert Fraction(j) + Fraction(1, 2) in exact  # the centre lies exactly on an edge
         assert x_right != j + 0.5  # and the float crossing missed it
+        # ... to the right: the harmful side ("rounded a hair to the right ... fills the pixel")
+        assert x_right > j + 0.5
+    # "off the centres ... no tie to get wrong": the Try-it's expectation (review a1: it
+    # promised mismatches), on 300 random triangles off the centres
+    assert ns.off_wrong == 0 and len(ns.off_fills) == 300
+    assert "no box" in ns.trace.caption(ns.trace.bbox_step)  # span tables test no box
     assert np.array_equal(ns.stepped, ns.fill.coverage)
     assert 0 < ns.drift < 1e-14  # "a few 10^-15 px"
 
@@ -210,6 +249,16 @@ def test_04_heatmap_edges_and_the_readable_floor():
         x1 - x0, y1 - y0
     )
     assert off_line < 2  # "largest on the diagonal"
+    # ... because both u and v change along it: √2 times a side edge's error, the sides
+    # running between the same depths (review a1: it said "farthest apart in depth")
+    e = ns.edge_texels
+    assert (
+        max(e["near edge"], e["far edge"]) < 1e-9 and abs(e["side u = 0"] - e["side u = 1"]) < 1e-9
+    )
+    assert abs(e["diagonal"] / e["side u = 0"] - np.sqrt(2)) < 1e-3
+    assert abs(e["diagonal"] - np.nanmax(ns.texels)) < 0.5  # the render's maximum is on it
+    # the heatmap's dark band: Δu = 0 on v2's depth line, v2 to v1 + 2/3 (v3 - v1)
+    assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
     assert near_far < 0.1 * np.nanmax(ns.texels)  # "zero along the near and the far edge"
 
@@ -237,6 +286,37 @@ def test_05b_quoted_distances_and_resolutions():
     assert ns.first_fight_16 == 10  # the predicted answer matches the renders
     assert ns.predicted["unorm24"][-1] > 10 * ns.delta  # "more than ten times δ" at z = 300
     assert round(float(ns.predicted["unorm16"][0]), 5) == 1.5e-4  # "1.5 × 10⁻⁴" at z = 1
+
+
+@pytest.mark.notebook
+def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_one():
+    """Review a1, 05b: the decal text promised flips 'from pixel to pixel' above a render where
+    the decal showed at 0 pixels; the float32 model shows them. And why reverse-Z in GL needs
+    glClipControl(GL_ZERO_TO_ONE); the float32 uptick at the far plane."""
+    ns = lesson("05b_depth_precision")
+    n_px = len(ns.rows_d)
+    assert ns.decal_shown["no bias"] == 0 and ns.decal_shown["depth bias"] == n_px  # float64
+    assert 0.05 * n_px < ns.gpu_shown["no bias"] < 0.5 * n_px  # streaks: shown at some pixels
+    assert ns.gpu_shown["depth bias"] == n_px  # "wins everywhere ... in the float32 model alike"
+    assert set(np.unique(ns.apart)) <= {-2, -1, 0, 1, 2}  # "a rounding or so apart"
+    assert (ns.apart == 0).mean() > 0.5  # "most pixels"
+    assert len(ns.shown_after - ns.shown_before) > 0.5 * len(ns.shown_after)  # "most ... elsewhere"
+    # GL's [-1, 1] NDC: the far squares fight again, though less than unorm24's
+    assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
+    assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
+    assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 2.0  # 2^-23 against 2^-24
+    assert ns.w_row.tolist() == [0.0, 0.0, -1.0, 0.0]  # "w = -z_eye ... with no +1"
+
+
+def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
+    table = next(c for c in _cells("05b_depth_precision", "markdown") if "| Vulkan" in c)
+    rows = {
+        line.split("|")[1].strip(): line for line in table.splitlines() if line.startswith("| ")
+    }
+    assert "at least the internal component sizes" in rows["OpenGL 4.6"]
+    assert "may vary its allocation" not in rows["OpenGL 4.6"]
+    assert "must not substitute a different depth or stencil precision" in rows["Vulkan"]
+    assert "no less precision" not in rows["Vulkan"]
 
 
 @pytest.mark.notebook
@@ -358,6 +438,32 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert names.index("fragment shading") in range(top + 1, bottom)  # what early-z skips
     clipping = next(s for s in PIPELINE_STAGES if s.name == "clipping")
     assert "x, y" in clipping.what and "guard band" in clipping.what
+    # the z range is the API's: GL's default −w, Direct3D's and Vulkan's 0 (review a1, 00)
+    assert "−w (GL)" in clipping.what and "0 (D3D, Vulkan)" in clipping.what
+
+
+def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_listed():
+    cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "orders is every pixel right" in t)
+    assert not any("C over A" in t or "cycle" in t for t in text[:ask])  # review a1, 05a
+    table = next(t for t in text if "| teachraster |" in t)
+    row = next(line for line in table.splitlines() if line.startswith("| teachraster |"))
+    assert "$w > 0$ (the eye plane)" in row and "guard band" in row
+
+
+def test_notes_are_cited_where_they_say_it():
+    """Review a1: CS148's implicit line equation is in its *Rasterization* section, not *Why
+    Triangles?*; Fatahalian's perspective caveat opens his comment and points to the next
+    slide; lesson 03 prints the gradient as g_x (the package's .A is Fatahalian's A, which the
+    lesson's table renames, not Triangle Rasterisation II's A)."""
+    intro = _cells("02_half_planes", "markdown")[0]
+    assert '(*Rasterization*, "Implicit Equation for a\nline")' in intro
+    assert "(*Why Triangles?*) call" not in intro
+    lesson_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "markdown"))
+    assert "right after the matrix" not in lesson_03 and "next slide" in lesson_03
+    code_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "code"))
+    assert "planes.g_x" in code_03 and "planes.A" not in code_03
 
 
 @pytest.mark.parametrize("name", MINE)
@@ -394,6 +500,11 @@ def test_projection_world_points_lie_on_the_eye_rays():
     fig, (ax, cax) = plt.subplots(2, 1)
     art = plot_projection(ax, seg, q=0.5, curve_ax=cax)
     assert art.update(0.25) == pytest.approx(float(seg.world_parameter(0.25)[0]))
+    # every marker in the key, and the key beside the picture, off the rays (review a1, 04)
+    assert art.screen_point.get_label() == "screen point q" and "t" in art.world_point.get_label()
+    fig.canvas.draw()
+    key, frame = ax.get_legend().get_window_extent(), ax.get_window_extent()
+    assert key.x0 >= frame.x1  # right of the Axes, covering nothing in them
     plt.close(fig)
     with pytest.raises(ValueError, match="z0"):
         Segment(0.0, -1.0, 1.0, 2.0)
@@ -408,9 +519,15 @@ def test_zbuffer_replay_ends_in_the_frame_and_counts_add_up():
     for k in range(12):
         classes = fragment_classes(frame, k)
         assert fragment_counts(frame, k) == ((classes == 2).sum(), (classes == 3).sum())
-    fig, (a, b) = plt.subplots(1, 2)
+    fig, (a, b) = plt.subplots(1, 2, figsize=(9, 5.6), layout="constrained")
     view = ZBufferStepView(frame, a, b)
     assert view.n_triangles == 12 and view.show(3) == fragment_counts(frame, 3)
+    # the colour bar's label inside the figure (it was cut off below it), and the scene's
+    # outline on the fragment panel, so that triangle 0 is seen in its place (review a1, 05a)
+    fig.canvas.draw()
+    label = view.colorbar.ax.yaxis.label.get_window_extent()
+    assert label.y0 >= 0 and label.x1 <= fig.bbox.width and label.y1 <= fig.bbox.height
+    assert len(view.outline.allsegs[0]) >= 1
     plt.close(fig)
     with pytest.raises(ValueError, match="trace=True"):
         buffer_after(tr.render(tr.get_scene("cube"), None, 8, 8), 0)

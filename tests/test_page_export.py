@@ -88,3 +88,24 @@ def test_teachraster_html_writes_each_lesson_and_counts_its_widgets(tmp_path, ca
     assert "_offline" not in text  # the set-up cell is gone, and the lesson counts from 1
     assert re.findall(r"jp-InputPrompt[^>]*>In\W*\[(\d+)\]", text) == ["1"]
     assert not re.search(r"<script[^>]*\ssrc=", text)  # no script is fetched
+
+
+def test_html_page_leaves_out_the_source_of_hidden_and_tagged_cells(tmp_path):
+    """A Predict cell's source holds its answer: collapsed (``source_hidden``) or tagged
+    ``hide-input``, the page shows its outputs only; other cells keep their source."""
+    pytest.importorskip("nbconvert")
+    from teachraster.cli.lesson_pages import drop_hidden_inputs, lesson_html
+
+    nb = nbformat.v4.new_notebook()
+    sources = ["answer_collapsed = 6", "answer_tagged = 7", "shown_code = 8"]
+    nb.cells = [nbformat.v4.new_code_cell(s) for s in sources]
+    nb.cells[0].metadata["jupyter"] = {"source_hidden": True}
+    nb.cells[1].metadata["tags"] = ["hide-input"]
+    for k, cell in enumerate(nb.cells):
+        cell.outputs = [nbformat.v4.new_output("display_data",
+                                               data={"text/html": f"<p>output {k}</p>"})]  # fmt: skip
+    text = lesson_html(nb, tmp_path / "x.ipynb")
+    assert "answer_collapsed" not in text and "answer_tagged" not in text
+    assert "shown_code" in text  # (highlighted, so the name is whole but the "=" is not)
+    assert all(f"output {k}" in text for k in range(3))  # the outputs stay
+    assert drop_hidden_inputs(nbformat.v4.new_notebook()) == 0

@@ -282,11 +282,18 @@ def test_fill_view_shows_the_current_raster_line_and_split():
     assert not view.bbox.outline.get_visible()
     k = t.first_work_step + 3
     view.show_step(k, draw=False)
-    assert view.split.line.get_visible() and view.bbox.outline.get_visible()
+    # span tables test no box of pixels (Ek §1.1): no box drawn, none in the key or caption
+    assert view.split.line.get_visible() and not view.bbox.outline.get_visible()
+    keyed = [text.get_text() for text in view.legend.texts if text.get_visible()]
+    assert "bounding box" not in keyed and "flat-top part" in keyed
+    assert "no box" in t.caption(t.bbox_step) and "raster lines" in t.caption(t.bbox_step)
     row = t.step(k).row
     assert view.raster_line.band.get_visible()
     assert view.raster_line.band.get_y() == row
     assert not view.pixel.box.get_visible()
+    view.set_fill(make_fill("halfplane"), draw=False)  # the methods that test the box show it
+    assert view.bbox.outline.get_visible()
+    assert "bounding box" in [text.get_text() for text in view.legend.texts]
 
 
 def test_fill_view_shows_the_current_pixel_and_rejected_pixels():

@@ -217,3 +217,33 @@ def test_plot_block_path_follows_the_visit_order(fill, ax, traversal):
     np.testing.assert_array_equal(x, blocks.col[order] + blocks.extent[order, 1] / 2)
     np.testing.assert_array_equal(y, blocks.row[order] + blocks.extent[order, 0] / 2)
     assert f"{len(order)} blocks of 4×4" in ax.get_title()
+
+
+def test_fill_player_tiles_with_several_samples_shows_one_and_says_so():
+    """Tiles fill pixel centres only: choosing them with a multi-sample pattern (either
+    order) shows the one-sample tile fill with a note, never a kernel error with the
+    controls naming a fill that is not on show."""
+    from teachraster.widgets import FillPlayer
+    from teachraster.widgets.player import TILES_NOTE
+
+    player = FillPlayer(tr.Triangle(XY), 24, 24, backend="image")
+    try:
+        player.samples.value = "4 standard (rotated grid)"
+        assert player.fill.sample_coverage is not None and player.samples_note.value == ""
+        player.method.value = "tiled"  # raised ValueError in the observer before
+        assert player.trace.method == "tiled" and player.fill.sample_coverage is None
+        assert player.samples_note.value == TILES_NOTE
+        assert player.frames.fill == "tiled|perspective|1 (centre)"
+        player.samples.value = "16 random"  # the other order
+        assert player.trace.method == "tiled" and player.samples_note.value == TILES_NOTE
+        player.method.value = "halfplane"  # back to a method with samples: the menu's 16
+        assert player.fill.sample_coverage.shape[-1] == 16 and player.samples_note.value == ""
+        player.samples.value = "1 (centre)"
+        player.method.value = "tiled"
+        assert player.samples_note.value == ""  # one sample asked, one shown: nothing to say
+    finally:
+        player.close()
+    with_menu = FillPlayer(tr.Triangle(XY), 24, 24, method="tiled", samples="2 standard",
+                           backend="image")  # fmt: skip
+    assert with_menu.trace.method == "tiled" and with_menu.samples_note.value == TILES_NOTE
+    with_menu.close()

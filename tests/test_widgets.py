@@ -124,7 +124,10 @@ def test_static_fallback_is_a_poster_or_the_whole_offline_player(player, monkeyp
     monkeypatch.setenv("TEACHRASTER_STATIC_PAGES", "1")
     page = player._repr_mimebundle_()["text/html"]
     assert "mountStatic(" in page and '<script type="module">' in page
-    assert "http" not in page.split("<script", 1)[1].replace("http://www.w3.org", "")
+    # no address: "http:"/"https:" (a colon is never in base64, so the embedded PNGs cannot
+    # match by chance, as a bare "http" did once a picture changed)
+    script = page.split("<script", 1)[1].replace("http://www.w3.org", "")
+    assert "http:" not in script and "https:" not in script
 
 
 def test_step_buttons_move_the_slider(player):
@@ -339,6 +342,10 @@ def test_split_point_follows_the_middle_vertex(editor):
     new = editor.fill.trace.span.u4
     assert new != u4
     assert editor.view.split.label.get_text() == f"point 4: u4 = {new:.2f}"
+    # half-planes split nothing: the line names the centres they test instead (review a1, 02)
+    editor.method.value = "halfplane"
+    assert "u4" not in editor.info.value and "split" not in editor.info.value
+    assert f"{editor.fill.trace.bbox.size} centres of the bounding box tested" in editor.info.value
 
 
 def test_depth_sliders_drive_the_error_heatmap(editor):

@@ -89,10 +89,35 @@ def lesson_html(nb, notebook: Path) -> str:
             )  # fmt: skip
             return MarkdownWithMath(renderer=renderer).render(source)
 
+    drop_hidden_inputs(nb)
     exporter = OfflineLessonExporter(template_file=str(TEMPLATE), embed_images=True)
     resources = {"metadata": {"name": notebook.stem, "path": str(notebook.parent)}}
     body, _ = exporter.from_notebook_node(nb, resources=resources)
     return body
+
+
+#: A code cell tagged so (as Jupyter Book and nbconvert's TagRemovePreprocessor read it), or
+#: collapsed in the notebook, shows only its outputs in the page.
+HIDE_INPUT_TAG = "hide-input"
+
+
+def drop_hidden_inputs(nb) -> int:
+    """Leave out the source of the cells a student is not meant to read first; return how many.
+
+    A ``Predict`` cell holds its answer: its input is collapsed in the notebook
+    (``metadata.jupyter.source_hidden``, which JupyterLab and Notebook 7 honour) and tagged
+    ``hide-input``. nbconvert's HTML templates read neither, only ``metadata.transient
+    .remove_source`` (what its TagRemovePreprocessor sets): the page would print the answer
+    above the question. Each such cell gets that flag, so only its outputs are shown.
+    """
+    dropped = 0
+    for cell in nb.cells:
+        meta = cell.get("metadata", {})
+        hidden = meta.get("jupyter", {}).get("source_hidden", False)
+        if cell.cell_type == "code" and (hidden or HIDE_INPUT_TAG in meta.get("tags", [])):
+            meta["transient"] = {"remove_source": True}
+            dropped += 1
+    return dropped
 
 
 def count_widgets(nb) -> dict:

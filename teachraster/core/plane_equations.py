@@ -120,12 +120,31 @@ def setup_matrix(xy) -> np.ndarray:
 
 @dataclass(frozen=True)
 class AttributePlane:
-    """``f(x, y) = value + A (x - origin_x) + B (y - origin_y)``: the plane recentred at a."""
+    """``f(x, y) = value + A (x - origin_x) + B (y - origin_y)``: the plane recentred at a.
+
+    ``A`` and ``B`` are Fatahalian's names (*Texture*, CMU 15-462) for the gradient; the
+    lessons write it ``g_x, g_y`` (aliases below), because *Triangle Rasterisation II* uses
+    ``A, B`` for other numbers (:class:`PlaneEquation`, where ``g_x = -A/C``).
+    """
 
     origin: tuple[float, float]
     value: np.ndarray
     A: np.ndarray
     B: np.ndarray
+
+    @property
+    def g_x(self) -> np.ndarray:
+        """∂f/∂x, the lessons' name for ``A``.
+
+        >>> float(attribute_plane([[10, 10], [14, 10], [10, 14]], [1.0, 3.0, 5.0]).g_x)
+        0.5
+        """
+        return self.A
+
+    @property
+    def g_y(self) -> np.ndarray:
+        """∂f/∂y, the lessons' name for ``B``."""
+        return self.B
 
     def __call__(self, x, y) -> np.ndarray:
         dx = np.asarray(x, dtype=np.float64) - self.origin[0]

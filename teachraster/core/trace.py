@@ -394,6 +394,11 @@ class FillTrace:
 
     def _bbox_caption(self) -> str:
         box = self.bbox
+        if self.span is not None:  # span tables test no box: only the rows they will visit
+            if not box.size:
+                return "no raster line of the image meets the triangle"
+            return (f"raster lines {box.row0}-{box.row1 - 1} meet the triangle (top to bottom "
+                    "vertex, within the image); span tables test no box of pixels")  # fmt: skip
         where = f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
         if not box.size:
             return where + "no pixel centre of the image inside"

@@ -109,6 +109,19 @@ def pixel_axes(ax, width: int, height: int, *, ticks: bool = True, most: int = 8
     ax.xaxis.set_label_position("top")
 
 
+def screen_ticks(ax, width: int, height: int, *, most: int = 8) -> None:
+    """Label ``ax`` (set up by :func:`pixel_axes`) in screen coordinates x, y instead.
+
+    The ticks sit at whole coordinates, on pixel corners, so that a vertex at (2, 1) sits on
+    its ticks; :func:`pixel_axes` labels pixel indices at the pixel centres instead. A
+    figure about positions (vertices, planes over the screen) reads better this way.
+    """
+    for axis, n, label in ((ax.xaxis, width, "x"), (ax.yaxis, height, "y")):
+        ticks = np.arange(0, n + 1, nice_step(n, most))
+        axis.set_ticks(ticks, labels=[str(t) for t in ticks])
+        axis.set_label_text(label)
+
+
 def image_extent(width: int, height: int) -> tuple[float, float, float, float]:
     """imshow extent placing pixel (i, j) on [j, j+1] × [i, i+1], row 0 at the top."""
     width, height = as_size("width", width), as_size("height", height)

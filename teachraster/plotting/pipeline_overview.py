@@ -37,7 +37,13 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
         "vertex shader: model → view → clip space",
         ("04_perspective_correct_interpolation", "05a_zbuffer"),
     ),  # fmt: skip
-    Stage("clipping", "−w ≤ x, y, z ≤ w (x, y: guard band)", ("05a_zbuffer",)),
+    # the z range is the API's: GL 4.6 §13.7 (default NEGATIVE_ONE_TO_ONE), D3D11.3 §15.4
+    # "0 <= z <= w", Vulkan's z_m = 0 unless depthClipControl's negativeOneToOne
+    Stage(
+        "clipping",
+        "x, y in ±w (guard band); z from −w (GL) or 0 (D3D, Vulkan) to w",
+        ("05a_zbuffer",),
+    ),  # fmt: skip
     Stage("viewport", "divide by w → window x, y, depth", ("05a_zbuffer", "05b_depth_precision")),
     Stage(
         "rasterisation",

@@ -123,13 +123,19 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), label="where those rays hit it")
     ax.plot([0], [0], "^", color=COLORS["edge"], ms=ms(1.3), label="eye")
     (out.ray,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8), label="the ray at q")
-    (out.screen_point,) = ax.plot([], [], "s", color=COLORS["current"], ms=ms(1.0))
-    (out.world_point,) = ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.3))
+    (out.screen_point,) = ax.plot([], [], "s", color=COLORS["current"], ms=ms(1.0),
+                                  label="screen point q")  # fmt: skip
+    (out.world_point,) = ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.3),
+                                 label="what it shows: t")  # fmt: skip
     (out.affine_point,) = ax.plot([], [], "o", mfc="none", mec=COLORS["current"], mew=lw(0.5),
                                   ms=ms(1.3), label="affine guess: t = q")  # fmt: skip
-    out.label = ax.set_title(" ", fontsize=fs(0.9))  # text set by update(), size fixed here
+    # text set by update(), size fixed here; from the left edge, as the key takes the right
+    out.label = ax.set_title(" ", fontsize=fs(0.9), loc="left")
     ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")
-    ax.legend(loc="lower right", fontsize=fs(0.7), framealpha=0.9)
+    # the key beside the picture: inside, nine entries cover part of the rays whatever
+    # corner they take
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+              fontsize=fs(0.7))  # fmt: skip
     if curve_ax is not None:
         qq = np.linspace(0.0, 1.0, 200)
         curve_ax.plot(qq, segment.world_parameter(qq), color=COLORS["edge"], lw=lw(0.8),

@@ -204,7 +204,9 @@ class FillView:
             # nothing rejected yet: skip drawing the layer at all
             self.rejected.set_visible(bool(rejected.any()))
         boxed = k >= trace.bbox_step
-        self.bbox.outline.set_visible(boxed)
+        # span tables test no box of pixels (Ek §1.1: the sort gives the rows, each span its
+        # columns): the box is drawn for the methods that test it
+        self.bbox.outline.set_visible(boxed and trace.span is None)
         # the pixels of the box are work only for half-planes, which test every one of them
         self.bbox.cells.set_visible(boxed and trace.halfplane is not None)
         split = trace.split_step is not None and k >= trace.split_step
@@ -312,7 +314,8 @@ class FillView:
         entries = [("filled", c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
-        entries.append(("bounding box", "none", c["bbox"]))
+        if method != "span":  # span tables draw no box (see show_step)
+            entries.append(("bounding box", "none", c["bbox"]))
         if method == "span":
             entries += [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
                         ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from matplotlib.colors import BoundaryNorm, ListedColormap
+from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import MaxNLocator
 
@@ -93,19 +94,29 @@ class ZBufferStepView:
         norm = BoundaryNorm(np.arange(-0.5, 4.0), cmap.N)
         self.classes = self.ax_fragments.imshow(np.zeros((height, width)), cmap=cmap, norm=norm,
                                                 extent=extent, interpolation="nearest")  # fmt: skip
+        # the whole scene's outline, so that the first triangles are seen in their place
+        ys, xs = np.mgrid[0:height, 0:width] + 0.5
+        self.outline = self.ax_fragments.contour(
+            xs, ys, self.frame.coverage.astype(float), levels=[0.5], colors=COLORS["grid"],
+            linewidths=1.5, linestyles="--")  # fmt: skip
         handles = [Patch(fc=c, ec=COLORS["grid"], label=t)
                    for c, t in zip(FRAGMENT_COLORS[1:], FRAGMENT_CLASSES[1:])]  # fmt: skip
+        handles.append(Line2D([], [], color=COLORS["grid"], lw=1.5, ls="--",
+                              label="the whole scene, when drawn"))  # fmt: skip
         self.ax_fragments.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02),
                                  fontsize=fs(0.7), ncols=1, frameon=False)  # fmt: skip
         final = self.frame.depth[np.isfinite(self.frame.depth)]
         self.depth = self.ax_depth.imshow(np.full((height, width), np.nan), cmap=VALUE_CMAP,
                                           vmin=final.min(), vmax=final.max(), extent=extent,
                                           interpolation="nearest")  # fmt: skip
-        bar = self.ax_depth.figure.colorbar(self.depth, ax=self.ax_depth, location="bottom",
-                                            shrink=0.9)  # fmt: skip
+        # beside the panel: below it, constrained layout left its label cut off by the
+        # fragment panel's key, which sets the height of that row
+        bar = self.ax_depth.figure.colorbar(self.depth, ax=self.ax_depth, location="right",
+                                            shrink=0.8)  # fmt: skip
         bar.locator = MaxNLocator(3)
         bar.update_ticks()
         bar.set_label("stored depth (dark = near)")
+        self.colorbar = bar
         rows, cols = np.nonzero(self.frame.coverage)
         pad = 0.08 * max(width, height)
         for ax in (self.ax_fragments, self.ax_depth):  # zoom on the scene: it fills the panel

@@ -223,13 +223,17 @@ class DepthPrecisionExplorer:
             self._ahead.restart()
 
     def _info_html(self) -> str:
-        res = dict(zip(("1", "10", "100"), np.interp([1.0, 10.0, 100.0], self.z, self.resolution)))
+        # only distances beyond the near plane: nothing nearer is drawn (np.interp would
+        # quote the curve's first value for them)
+        at = [d for d in (1.0, 10.0, 100.0) if self.z[0] <= d <= self.z[-1]]
+        res = np.interp(at, self.z, self.resolution)
         where = ("<b>no z-fighting</b> up to the far plane" if self.fight_from is None
                  else f"z-fighting from <b>z ≈ {self.fight_from:.3g}</b>")  # fmt: skip
-        return (
-            f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart · "
-            f"Δz at z = 1, 10, 100: {res['1']:.2g}, {res['10']:.2g}, {res['100']:.2g}"
-        )
+        text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
+        if at:
+            text += (f" · Δz at z = {', '.join(f'{d:g}' for d in at)}: "
+                     f"{', '.join(f'{r:.2g}' for r in res)}")  # fmt: skip
+        return text
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

@@ -10,7 +10,6 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..core.fill import rasterize
-from ..core.span_tables import split_point
 from ..core.triangle import Triangle
 from ..core.validate import as_size
 from ..plotting import FillView, InterpolationView
@@ -330,13 +329,11 @@ class TriangleEditor(Holdable):
             facing = "front-facing (counter-clockwise" if area < 0 else "back-facing (clockwise"
             parts = [f"area {abs(area):.2f} px², {facing} on screen)",
                      f"{covered} pixel{'s' * (covered != 1)} covered"]  # fmt: skip
-        if trace.span is not None:
-            u4 = trace.span.u4
-        else:
-            snapped = trace.snapped[np.lexsort((trace.snapped[:, 0], trace.snapped[:, 1]))]
-            u4 = split_point(snapped)
-        if u4 is not None and area != 0:  # a zero-area triangle has nothing to split
-            parts.append(f"split at u4 = {u4:.2f}")
+        if trace.span is not None:  # only span tables split (half-planes test the box)
+            if trace.span.u4 is not None and area != 0:  # zero area: nothing to split
+                parts.append(f"split at u4 = {trace.span.u4:.2f}")
+        elif trace.halfplane is not None:
+            parts.append(f"{trace.bbox.size} centres of the bounding box tested")
         m = self.interp_view.maximum
         if np.isfinite(m):
             parts.append(f"largest |affine − perspective| of {self.attribute} = {m:.3g}")

@@ -22,6 +22,7 @@ from matplotlib.text import Text
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
+from ..plotting.common import screen_ticks
 from .common import close_tree, style_context, title_html
 from .display import new_figure, resolve_backend
 from .dragging import same_or_new
@@ -164,6 +165,10 @@ class PlaneExplorer:
                                            linewidths=1.5, linestyles="--")  # fmt: skip
             self.ax.add_collection(self.contours)
             self.triangle = plot_triangle(self.ax, self.xy, arrows=False)
+            # positions as the lesson's figures read them: v1 = (2, 1) on its ticks
+            screen_ticks(self.ax, width, height)
+            if self.image.colorbar is not None:
+                self.image.colorbar.set_label("f, the attribute")
             # the constrained layout once, then frozen: the blit's background and the
             # artists drawn over it must agree on where the Axes are
             self.fig.canvas.draw()

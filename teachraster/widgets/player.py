@@ -32,6 +32,19 @@ from .frames import FramesWidget
 
 METHOD_OPTIONS = [("span tables", "span"), ("half-planes", "halfplane"), ("tiles", "tiled")]
 INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspective")]
+#: The tile fill tests pixel centres only (``rasterize`` refuses ``method="tiled"`` with
+#: several samples): with tiles chosen the player shows one sample and says so.
+ONE_SAMPLE = "1 (centre)"
+TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
+
+
+def shown_samples(method: str, samples: str) -> str:
+    """The sample pattern the player fills with: the menu's, or one sample for tiles.
+
+    >>> shown_samples("tiled", "4 standard (rotated grid)"), shown_samples("span", "2 standard")
+    ('1 (centre)', '2 standard')
+    """
+    return ONE_SAMPLE if method == "tiled" else samples
 
 
 class FillPlayer(Holdable):
@@ -78,7 +91,9 @@ class FillPlayer(Holdable):
     samples : str
         Sample pattern, a key of :data:`~teachraster.widgets.common.SAMPLE_PATTERNS`. With
         more than one sample the steps still follow the pixel centres, and every sample of
-        the finished fill is drawn on top (filled where covered): what MSAA adds.
+        the finished fill is drawn on top (filled where covered): what MSAA adds. Tiles
+        test pixel centres only: with ``method="tiled"`` the fill has one sample per pixel
+        whatever the menu says, and a note beside the menu says so (``samples_note``).
 
     Attributes
     ----------
@@ -150,7 +165,8 @@ class FillPlayer(Holdable):
     # -- building ---------------------------------------------------------------------------
     def _rasterize(self, method: str, interpolation: str, samples: str | None = None):
         """The traced fill for these options (each made once: toggling back costs nothing)."""
-        key = (method, interpolation, self.samples.value if samples is None else samples)
+        samples = self.samples.value if samples is None else samples
+        key = (method, interpolation, shown_samples(method, samples))
         if key not in self._fills:
             self._fills[key] = rasterize(self.tri, self.width, self.height, method=method,
                                          interpolation=interpolation, trace=True,
@@ -219,6 +235,13 @@ class FillPlayer(Holdable):
         self.method.observe(self._on_fill_options, "value")
         self.interpolation.observe(self._on_fill_options, "value")
         self.samples.observe(self._on_fill_options, "value")
+        self.samples_note = widgets.HTML()
+        self._note_samples()
+
+    def _note_samples(self) -> None:
+        """Say why the picture has one sample when the menu asks for more (tiles chosen)."""
+        fewer = self.samples.value != shown_samples(self.method.value, self.samples.value)
+        self.samples_note.value = TILES_NOTE if fewer else ""
 
     def _layout(self) -> widgets.VBox:
         title = title_html(
@@ -230,7 +253,7 @@ class FillPlayer(Holdable):
         # Without attributes the interpolation changes nothing on show: no toggle for it.
         if self.tri.attrs:
             options.append(labelled("interpolation", self.interpolation))
-        options.append(labelled("samples", self.samples))
+        options += [labelled("samples", self.samples), self.samples_note]
         row = widgets.Layout(flex_flow="row wrap", align_items="center")
         return widgets.VBox([title, widgets.HBox(options, layout=row), self.frames,
                              *self._comparison_section()])  # fmt: skip
@@ -285,7 +308,8 @@ class FillPlayer(Holdable):
             self.frames.send_group(group, *made)
 
     def _fill_key(self) -> tuple[str, str, str]:
-        return (self.method.value, self.interpolation.value, self.samples.value)
+        method = self.method.value
+        return (method, self.interpolation.value, shown_samples(method, self.samples.value))
 
     def _group(self, g: int):
         """Frames of group ``g`` for the page (made once per fill); the view is put back on
@@ -307,7 +331,8 @@ class FillPlayer(Holdable):
     def _neighbours(self) -> list[tuple[str, str, str]]:
         """The fills one toggle of the method or the interpolation away from the one on show."""
         method, interpolation, samples = self._fill_key()
-        keys = [(m, interpolation, samples) for _, m in METHOD_OPTIONS if m != method]
+        keys = [(m, interpolation, shown_samples(m, self.samples.value))
+                for _, m in METHOD_OPTIONS if m != method]  # fmt: skip
         if self.tri.attrs:
             keys += [(method, i, samples) for _, i in INTERPOLATION_OPTIONS if i != interpolation]
         return keys
@@ -391,6 +416,7 @@ class FillPlayer(Holdable):
 
     def _on_fill_options(self, change) -> None:
         self.fill = self._rasterize(self.method.value, self.interpolation.value)
+        self._note_samples()
         # The view decides the step (a finished fill stays finished, else the same index).
         step = self.view.set_fill(self.fill, draw=False)
         self._show_samples()
