@@ -322,3 +322,42 @@ def test_msaa_hidden_fragments_carry_the_values_their_pair_would_show():
             np.testing.assert_array_equal(rec.value, alone.sample_attrs[row, col, rec.sample])
             checked += 1
     assert checked > 0
+
+
+def test_history_plot_marks_depths_on_a_written_out_axis():
+    """The strip draws each fragment as a tile of one height at its depth (a bar from the
+    foot of a zoomed axis would draw 0.9665 against 0.9686 as 1 : 5), labels the depth axis
+    with the depths written out (no "1e-7+9.67634e-1" offset) and only where depths are,
+    not beside the colour swatches."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    scene = get_scene("intersecting_triangles")
+    plain = tr.render(scene, None, 64, 48, trace=True)
+    fan4 = tr.render(get_scene("fan"), None, 64, 48, trace=True, samples=4)
+    clip = scene.clip(64 / 48)
+    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.5)], axis=2)
+    glass = tr.render(clip, 64, 48, attrs=rgba, blend="over", clear_color=(1, 1, 1, 1),
+                      trace=True)  # fmt: skip
+    for h in (plain.history(24, 34), fan4.history(24, 32), glass.history(24, 34)):
+        fig, ax = plt.subplots()
+        h.plot(ax)
+        fig.canvas.draw()
+        depths = {i: r.depth for i, r in enumerate(h) if np.isfinite(r.depth)}
+        tiles = [
+            p for p in ax.patches if isinstance(p, Rectangle) and np.isclose(p.get_width(), 0.7)
+        ]
+        assert len(tiles) == len(depths) and len({round(t.get_height(), 15) for t in tiles}) == 1
+        for t in tiles:  # centred on its record, at its depth
+            assert np.isclose(t.get_y() + t.get_height() / 2, depths[round(t.get_x() + 0.35)])
+        depths = list(depths.values())
+        assert ax.yaxis.get_offset_text().get_text() == ""
+        ticks = ax.get_yticks()
+        assert len(ticks) >= 2
+        for tick, label in zip(ticks, ax.get_yticklabels()):
+            assert float(label.get_text()) == pytest.approx(tick, abs=1e-12)
+        lo, hi = min(depths), max(depths)
+        assert ticks.max() <= hi + 1.2 * max(hi - lo, 2e-4)  # none beside the swatches
+        plt.close(fig)
