@@ -5,8 +5,8 @@
 numbers: counts get one colour per integer (0 light grey, never hidden), the quad
 overshading a fraction of helper lanes from 0 to 3/4, the triangle size a log scale of
 pixels. :func:`plot_history` draws ``frame.history(row, col)``: one tile per fragment at its
-depth on a written-out depth axis, coloured by outcome, with the depth buffer before and after it (and, with
-a colour buffer, the colour before and after it).
+depth on a written-out depth axis, coloured by outcome, with the depth buffer before and
+after it (and, with a colour buffer, the colour before and after it).
 Both read the frame's trace; neither recomputes an algorithm.
 """
 
