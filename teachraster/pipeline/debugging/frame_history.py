@@ -19,8 +19,9 @@ clipping made (that part of the triangle was clipped away), across the seam betw
 pieces of a clipped triangle (the neighbouring piece's side), or the triangle (piece) has
 zero area; rarely, a thin piece that snapping turned over (its corners run the other way).
 
-A fragment that passed may still be hidden by a later one (``hidden_by``); the one the
-pixel shows at the end has ``shown``. Nothing is stored per fragment for this: the
+A fragment that passed may still be hidden by a later one (``hidden_by``; with blending
+the table says "under": the later one is blended over it); the one the pixel shows at the
+end (the last to pass, in the triangle-id buffer) has ``shown``. Nothing is stored per fragment for this: the
 history of one pixel is computed on demand from the trace's compact arrays (the fill's
 fragments, the depth test in drawing order, the in-order Hi-Z replay of
 :mod:`teachraster.pipeline.hierarchical_z`) and, for coverage that failed and for MSAA
@@ -542,10 +543,13 @@ def history_table(h: PixelHistory) -> str:
     )
     cols = f"{'tri':>5} {'piece':>5} {'smp':>3}  {'outcome':<22} {'depth':>9} {'before':>9} {'after':>9}  value / why"  # noqa: E501
     lines = [head, cols]
+    # Blending, a later fragment that passes is blended over this one, which is not hidden:
+    # its colour is in the result (the colour lines say how much).
+    later = "under" if h.blend is not None and h.blend.mode is not None else "hidden by"
     for r in h.records:
         outcome = r.outcome
         if r.outcome == "passed":
-            outcome += " (shown)" if r.shown else f" (hidden by {r.hidden_by})"
+            outcome += " (shown)" if r.shown else f" ({later} {r.hidden_by})"
         if r.outcome == "not_covered":
             why = reason_text(r)
         elif r.value:
