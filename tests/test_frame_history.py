@@ -294,6 +294,31 @@ def test_lesson_11_tells_each_story():
     assert ns.counts["hi_z"] >= 1
     assert sum(ns.counts.values()) == ns.over[ns.hz.row, ns.hz.col]
     assert ns.counts["passed"] == ns.passed[ns.hz.row, ns.hz.col]
+    # §1: the Hi-Z-rejected fragment carries no values, and its depth is farther than before
+    (rejected,) = [r for r in ns.h if r.outcome == "hi_z"]
+    assert rejected.value == () and rejected.depth > rejected.depth_before
+    assert all(r.value == () for r in ns.hz if r.outcome == "hi_z")
+    # §2's prediction: the far triangle wins where triangle 1 covers a pixel triangle 0 showed
+    on, off = ns.coarse_on.triangle_id, ns.coarse_off.triangle_id
+    assert np.array_equal(ns.far_wins, (on == 0) & (off == 1)) and 5 <= ns.far_wins.sum() <= 15
+    assert (ns.coarse_on.trace.clip_status == 0).all()  # pieces 0, 1 are the two triangles
+    # §3: the sliver is counter-clockwise on screen, so its edges are E13, E32, E21
+    assert tr.Triangle(ns.sliver_xy).front_facing
+    assert all(r.edge in ("E13", "E32", "E21") for r in ns.one.history(ns.r, ns.c)
+               if r.outcome == "not_covered")  # fmt: skip
+    assert ns.reasons[(28, 37)] == [(1, "clipped_away", "near")]
+    assert ns.reasons[(39, 35)] == [(0, "seam", "seam v1–E32∩near")]
+    assert ns.reasons[(11, 40)] == [(2, "zero_area", None)]
+    # §4's prediction: every pixel of every quad with a covered centre
+    assert ns.tiny_shaded.sum() == 4 * ns.tiny_quads.sum() and ns.lanes == 16 and ns.useful == 7
+    # §6: glass, depth writes off: the farther triangle 1 passes and is blended over the red
+    assert ns.glass.color[ns.row, ns.col, 0] == pytest.approx(0.575)
+    assert ns.back_first[0] == pytest.approx(0.75)
+    assert ns.written.color[ns.row, ns.col, 0] == pytest.approx(0.95)
+    assert ns.written.history(ns.row, ns.col).outcomes[1] in ("hi_z", "failed_depth")
+    assert "passed (under 1)" in str(ns.g) and all(np.isinf(r.depth_after) for r in ns.g)
+    assert ns.glass_counts["hi_z"] == 0 < ns.opaque_hiz
+    assert ns.glass_counts["depth_complexity"] == ns.glass_counts["overdraw"]
 
 
 def test_history_mentions_triangles_clipped_away_whole():
