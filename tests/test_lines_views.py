@@ -99,6 +99,9 @@ def test_blending_explorer_order_and_toggles():
         moved = ex.color.copy()
         ex.srgb.value = True
         assert not np.allclose(ex.color, moved)
+        ex.premultiplied.value = False
+        codes = ex.color[..., :3] * 255  # an 8-bit sRGB target: whole codes after every layer
+        assert np.allclose(codes, np.round(codes), atol=1e-9)
     finally:
         ex.close()
 
