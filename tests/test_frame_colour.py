@@ -217,6 +217,10 @@ def test_history_shows_the_colour_before_and_after_each_fragment():
     assert passed[1].color == (1.0, 0.0, 0.0, 0.5)
     assert passed[1].color_after == (0.5, 0.5, 0.0, 0.75)  # red glass over the wall
     assert "before -> fragment -> after" in str(h)
+    # blended over, not hidden: the wall's colour is in the result
+    assert "passed (under 3)" in str(h) and "hidden by" not in str(h)
+    off = tr.render(clip, 8, 8, attrs=colour, blend=None, depth_write=writes, trace=True)
+    assert "passed (hidden by 3)" in str(off.history(3, 1))  # blending off: written over
     fig, ax = plt.subplots()
     plain = tr.render(clip, 8, 8, attrs=colour[..., :3], depth_write=writes, trace=True)
     assert len(tp.plot_history(ax, h).parts) > len(tp.plot_history(ax, plain.history(3, 1)).parts)

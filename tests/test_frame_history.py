@@ -294,6 +294,31 @@ def test_lesson_11_tells_each_story():
     assert ns.counts["hi_z"] >= 1
     assert sum(ns.counts.values()) == ns.over[ns.hz.row, ns.hz.col]
     assert ns.counts["passed"] == ns.passed[ns.hz.row, ns.hz.col]
+    # §1: the Hi-Z-rejected fragment carries no values, and its depth is farther than before
+    (rejected,) = [r for r in ns.h if r.outcome == "hi_z"]
+    assert rejected.value == () and rejected.depth > rejected.depth_before
+    assert all(r.value == () for r in ns.hz if r.outcome == "hi_z")
+    # §2's prediction: the far triangle wins where triangle 1 covers a pixel triangle 0 showed
+    on, off = ns.coarse_on.triangle_id, ns.coarse_off.triangle_id
+    assert np.array_equal(ns.far_wins, (on == 0) & (off == 1)) and 5 <= ns.far_wins.sum() <= 15
+    assert (ns.coarse_on.trace.clip_status == 0).all()  # pieces 0, 1 are the two triangles
+    # §3: the sliver is counter-clockwise on screen, so its edges are E13, E32, E21
+    assert tr.Triangle(ns.sliver_xy).front_facing
+    assert all(r.edge in ("E13", "E32", "E21") for r in ns.one.history(ns.r, ns.c)
+               if r.outcome == "not_covered")  # fmt: skip
+    assert ns.reasons[(28, 37)] == [(1, "clipped_away", "near")]
+    assert ns.reasons[(39, 35)] == [(0, "seam", "seam v1–E32∩near")]
+    assert ns.reasons[(11, 40)] == [(2, "zero_area", None)]
+    # §4's prediction: every pixel of every quad with a covered centre
+    assert ns.tiny_shaded.sum() == 4 * ns.tiny_quads.sum() and ns.lanes == 16 and ns.useful == 7
+    # §6: glass, depth writes off: the farther triangle 1 passes and is blended over the red
+    assert ns.glass.color[ns.row, ns.col, 0] == pytest.approx(0.575)
+    assert ns.back_first[0] == pytest.approx(0.75)
+    assert ns.written.color[ns.row, ns.col, 0] == pytest.approx(0.95)
+    assert ns.written.history(ns.row, ns.col).outcomes[1] in ("hi_z", "failed_depth")
+    assert "passed (under 1)" in str(ns.g) and all(np.isinf(r.depth_after) for r in ns.g)
+    assert ns.glass_counts["hi_z"] == 0 < ns.opaque_hiz
+    assert ns.glass_counts["depth_complexity"] == ns.glass_counts["overdraw"]
 
 
 def test_history_mentions_triangles_clipped_away_whole():
@@ -322,3 +347,42 @@ def test_msaa_hidden_fragments_carry_the_values_their_pair_would_show():
             np.testing.assert_array_equal(rec.value, alone.sample_attrs[row, col, rec.sample])
             checked += 1
     assert checked > 0
+
+
+def test_history_plot_marks_depths_on_a_written_out_axis():
+    """The strip draws each fragment as a tile of one height at its depth (a bar from the
+    foot of a zoomed axis would draw 0.9665 against 0.9686 as 1 : 5), labels the depth axis
+    with the depths written out (no "1e-7+9.67634e-1" offset) and only where depths are,
+    not beside the colour swatches."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    scene = get_scene("intersecting_triangles")
+    plain = tr.render(scene, None, 64, 48, trace=True)
+    fan4 = tr.render(get_scene("fan"), None, 64, 48, trace=True, samples=4)
+    clip = scene.clip(64 / 48)
+    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.5)], axis=2)
+    glass = tr.render(clip, 64, 48, attrs=rgba, blend="over", clear_color=(1, 1, 1, 1),
+                      trace=True)  # fmt: skip
+    for h in (plain.history(24, 34), fan4.history(24, 32), glass.history(24, 34)):
+        fig, ax = plt.subplots()
+        h.plot(ax)
+        fig.canvas.draw()
+        depths = {i: r.depth for i, r in enumerate(h) if np.isfinite(r.depth)}
+        tiles = [
+            p for p in ax.patches if isinstance(p, Rectangle) and np.isclose(p.get_width(), 0.7)
+        ]
+        assert len(tiles) == len(depths) and len({round(t.get_height(), 15) for t in tiles}) == 1
+        for t in tiles:  # centred on its record, at its depth
+            assert np.isclose(t.get_y() + t.get_height() / 2, depths[round(t.get_x() + 0.35)])
+        depths = list(depths.values())
+        assert ax.yaxis.get_offset_text().get_text() == ""
+        ticks = ax.get_yticks()
+        assert len(ticks) >= 2
+        for tick, label in zip(ticks, ax.get_yticklabels()):
+            assert float(label.get_text()) == pytest.approx(tick, abs=1e-12)
+        lo, hi = min(depths), max(depths)
+        assert ticks.max() <= hi + 1.2 * max(hi - lo, 2e-4)  # none beside the swatches
+        plt.close(fig)

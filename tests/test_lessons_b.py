@@ -327,6 +327,26 @@ def test_08_sampling_explorer_and_inspector():
         inspector.close()
 
 
+# -- 11 and 12: predictions -------------------------------------------------------------------------
+@pytest.mark.parametrize("name", ["11_debugging_a_frame", "12_lines_and_blending"])
+def test_11_12_predictions_hide_their_answer_and_some_are_answered_on_a_figure(name):
+    """A prediction's cell holds its answer: collapsed in the saved notebook (and tagged
+    hide-input for the html page); at least one question is answered by acting on a figure."""
+    import json
+    import re
+
+    cells = json.loads((ROOT / "notebooks" / f"{name}.ipynb").read_text())["cells"]
+    asked = [c for c in cells if c["cell_type"] == "code"
+             and re.search(r"\bPredict\w*\(", "".join(c["source"]))]  # fmt: skip
+    assert len(asked) >= 3
+    for cell in asked:
+        meta = cell["metadata"]
+        assert meta["jupyter"]["source_hidden"] is True and "hide-input" in meta["tags"]
+    on_figure = [c for c in asked if re.search(r"\bPredict(Pixels|Point|Order)\(",
+                                               "".join(c["source"]))]  # fmt: skip
+    assert on_figure, name
+
+
 # -- 11 debugging a frame ------------------------------------------------------------------------
 def test_11_replay_and_the_sliver_between_centres():
     ns = lesson("11_debugging_a_frame")

@@ -71,9 +71,16 @@ def test_exercise_notebook_follows_the_grading_convention():
 
 
 def test_predictions_and_standards_numbers(ns):
-    # "how many pixels does GL's diamond-exit rule light": 8, one per column 0..7, p1's left out
-    assert int(ns.count_line.coverage.sum()) == len(ns.lit) == 8
-    assert sorted(c for _, c in ns.lit) == list(range(8))
+    # the figure of the tie: 8 pixels, one per column 0..7, p1's left out
+    assert len(ns.lit) == 8 and sorted(c for _, c in ns.lit) == list(range(8))
+    # "click the pixels GL lights": 6, one per column 2 to 7; p0's pixel (1, 1) is not lit (p0
+    # lies outside its diamond and the segment never enters it); p1 ends inside (4, 8)'s
+    lit = np.argwhere(ns.count_line.coverage)
+    assert len(lit) == 6 and sorted(lit[:, 1].tolist()) == list(range(2, 8))
+    assert int(ns.q0[0]) == 1 and int(ns.q0[1]) == 1 and not ns.count_line.coverage[1, 1]
+    assert [int(v[0]) for v in ns.count_ends] == [4, 8]
+    # the 8-bit sRGB target stores the code the prediction computes from the curve
+    assert ns.srgb_code == ns.stored_code == 188
     # MSAA with blending: the predicted blue component is the resolved one
     assert ns.k in (1, 2, 3) and abs(ns.resolved[2] - ns.resolved_blue) < 1e-12
     assert ns.resolved[3] < 1  # alpha blended with one factor pair: not 1 (the text says so)
@@ -84,3 +91,21 @@ def test_predictions_and_standards_numbers(ns):
     if getattr(ns, "allowed", None) is not None:  # an OpenGL context was there
         # llvmpipe stays within GL 4.6 §14.5.1's conditions 1-3 on every random line
         assert all(ns.allowed[k] == ns.n_lines for k in "123"), ns.allowed
+        # SRGB8_ALPHA8 blending within the bounds the text states, llvmpipe brighter additively
+        assert all(worst <= bound for worst, bound, _ in ns.srgb_steps.values()), ns.srgb_steps
+        assert ns.srgb_steps[("additive", 40)][2] > 1
+
+
+def test_srgb8_resolve_averages_the_samples_linear_values():
+    """The lesson's table: under color_format="srgb8" every sample stores an 8-bit code and
+    frame.color, the resolve, is the mean of the samples' linear values (not rounded again)."""
+    import teachraster as tr
+
+    tri = np.array([[[-1, -1, 0, 1], [0.9, -0.7, 0, 1], [-0.6, 0.95, 0, 1]]])
+    f = tr.render(tri, 8, 8, attrs=np.array([[[0.9, 0.4, 0.1, 0.6]] * 3]), blend="over",
+                  samples=4, color_format="srgb8", clear_color=(0.1, 0.2, 0.3, 1))  # fmt: skip
+    codes = tr.linear_to_srgb(f.sample_color[..., :3]) * 255
+    assert np.allclose(codes, np.round(codes), atol=1e-9)
+    assert np.array_equal(f.color, f.sample_color.mean(axis=2))
+    mixed = np.ptp(f.sample_color[..., 0], axis=2) > 0
+    assert mixed.any()  # edge pixels whose mean is no 8-bit code

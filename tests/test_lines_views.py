@@ -45,6 +45,31 @@ def test_line_view_updates_in_place(ax):
     assert view.current.get_visible() and view.current.get_x() == fill.trace.step(-1).col
 
 
+def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
+    """Diamond rule: step k shows the diamonds of its own column thick, and every diamond the
+    steps so far tested, lit or ended in; at the end they are plot_diamonds' own. Other
+    rules (and the set-up steps) draw none."""
+    fill = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, trace=True)
+    s = fill.trace.steps
+    view = LineView.create(ax, fill, step=0)
+    assert all(len(c.get_paths()) == 0 for c in view.diamonds.values())
+    view.show_step(3)  # column 1: the tie
+    now = {tuple(p.vertices[0]) for p in view.diamonds["now"].get_paths()}
+    assert (
+        now == {(1.5, r + 0.0) for r in s.rows[s.step == 1]}
+        and "column 1" in view.caption.get_text()
+    )
+    lit = view.diamonds["lit"].get_paths()
+    assert len(lit) == int(fill.trace.coverage_at(3).sum()) == 2
+    view.show_step(-1)
+    whole = plot_diamonds(ax, fill)
+    for name, drawn in (("lit", whole.lit), ("ends", whole.ends), ("tested", whole.missed)):
+        assert len(view.diamonds[name].get_paths()) == len(drawn.get_paths()), name
+    view.trace = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, rule="dda", trace=True).trace
+    view.show_step(-1)
+    assert all(len(c.get_paths()) == 0 for c in view.diamonds.values())
+
+
 def test_plot_rgba_shows_alpha_over_a_checkerboard(ax):
     color = np.zeros((4, 5, 4))
     color[1, 2] = [0.25, 0, 0, 0.5]
@@ -74,6 +99,9 @@ def test_blending_explorer_order_and_toggles():
         moved = ex.color.copy()
         ex.srgb.value = True
         assert not np.allclose(ex.color, moved)
+        ex.premultiplied.value = False
+        codes = ex.color[..., :3] * 255  # an 8-bit sRGB target: whole codes after every layer
+        assert np.allclose(codes, np.round(codes), atol=1e-9)
     finally:
         ex.close()
 

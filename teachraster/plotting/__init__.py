@@ -63,7 +63,7 @@ Frame debugging (``frame = tr.render(..., trace=True)``, :mod:`.frame_debug`)
 --------------------------------------------------------------------------
 - :func:`plot_overlay` -- ``frame.overlay(kind)``: overdraw, depth complexity, quad
   overshading, triangle size, Hi-Z, NaN, with a colour bar in numbers.
-- :func:`plot_history` -- one pixel's history: a bar per fragment at its depth, coloured
+- :func:`plot_history` -- one pixel's history: a tile per fragment at its depth, coloured
   by outcome, the depth buffer before and after.
 
 Views (draw once, then update in place; for widgets and animations)

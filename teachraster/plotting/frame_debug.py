@@ -4,9 +4,9 @@
 :mod:`teachraster.pipeline.debugging.overlays`) with a colour bar that says what a colour means in
 numbers: counts get one colour per integer (0 light grey, never hidden), the quad
 overshading a fraction of helper lanes from 0 to 3/4, the triangle size a log scale of
-pixels. :func:`plot_history` draws ``frame.history(row, col)``: one bar per record at the
-fragment's depth, coloured by outcome, with the depth buffer before and after it (and, with
-a colour buffer, the colour before and after it).
+pixels. :func:`plot_history` draws ``frame.history(row, col)``: one tile per fragment at its
+depth on a written-out depth axis, coloured by outcome, with the depth buffer before and
+after it (and, with a colour buffer, the colour before and after it).
 Both read the frame's trace; neither recomputes an algorithm.
 """
 
@@ -121,8 +121,9 @@ def overlay_title(kind: str, values: np.ndarray) -> str:
 
 
 def plot_history(ax, frame_or_history, row=None, col=None) -> HistoryArtists:
-    """Draw a pixel's history (``frame.history(row, col)``, or a history itself): one bar
-    per record at its depth, coloured by outcome, the buffer before (○) and after (●); with a
+    """Draw a pixel's history (``frame.history(row, col)``, or a history itself): one tile
+    per fragment at its depth, coloured by outcome (a cross for a record without one), on a
+    depth axis written out in full; the buffer before (○) and after (●); with a
     colour buffer, above each record that reached it, swatches of the target's colour
     before, the fragment's own and the target's after."""
     h = frame_or_history

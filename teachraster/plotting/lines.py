@@ -22,8 +22,8 @@ from matplotlib.collections import PolyCollection
 from matplotlib.patches import Rectangle
 
 from ..core.fill import Fill
-from ..core.line_rules import ENDS_INSIDE, LIT
-from ..core.line_trace import LineTrace
+from ..core.line_rules import ENDS_INSIDE, LIT, MISSED
+from ..core.line_trace import SETUP, LineTrace
 from .common import Artists, fs, label_box, lw, ms, pixel_axes, set_image, show_image
 from .style import COLORS
 
@@ -94,7 +94,9 @@ class LineView(Artists):
 
     Build it with :meth:`create`; ``image`` holds the pixels lit so far, ``current`` the
     column (x-major) or row the step works on, ``segment`` the line, ``caption`` the step's
-    caption from the trace.
+    caption from the trace. Under the diamond rule ``diamonds`` draws the diamonds the
+    caption speaks of: those the steps so far tested (dotted), lit (outlined) or ended in
+    (hatched), and the current step's (thick); other rules draw none.
     """
 
     image: object
@@ -103,6 +105,7 @@ class LineView(Artists):
     caption: object
     trace: LineTrace | None = None
     step: int = -1
+    diamonds: dict | None = None
 
     @classmethod
     def create(cls, ax, line, step: int = -1) -> LineView:
@@ -119,7 +122,12 @@ class LineView(Artists):
         (segment,) = ax.plot(xs, ys, color=COLORS["edge"], lw=lw(1.2), zorder=3)
         caption = ax.text(0.0, -0.02, "", transform=ax.transAxes, va="top", ha="left",
                           fontsize=fs(0.8), wrap=True, bbox=label_box())  # fmt: skip
-        view = cls(image, current, segment, caption, trace)
+        diamonds = {name: PolyCollection([], facecolor="none", zorder=2,
+                                         **{**style, "linewidth": lw(style["linewidth"])})
+                    for name, style in _DIAMOND_STYLES.items()}  # fmt: skip
+        for coll in diamonds.values():
+            ax.add_collection(coll)
+        view = cls(image, current, segment, caption, trace, diamonds=diamonds)
         view.show_step(step)
         return view
 
@@ -137,6 +145,36 @@ class LineView(Artists):
             self.current.set_bounds(0, step.row, width, 1)
         self.current.set_visible(step.kind in ("column", "row"))
         self.caption.set_text(step.caption)
+        if self.diamonds is not None:
+            for name, polys in _diamonds_at(trace, k).items():
+                self.diamonds[name].set_verts(polys)
+
+
+#: How :class:`LineView` draws the diamonds of the diamond rule (line widths in units of the
+#: style's line width).
+_DIAMOND_STYLES = {
+    "tested": dict(edgecolor=COLORS["centre"], linewidth=0.4, linestyle=":"),
+    "lit": dict(edgecolor=COLORS["edge"], linewidth=0.9),
+    "ends": dict(edgecolor=COLORS["current"], linewidth=0.8, hatch="///"),
+    "now": dict(edgecolor=COLORS["current"], linewidth=1.8),
+}
+
+
+def _diamonds_at(trace: LineTrace, k: int) -> dict:
+    """The diamonds to draw once steps 0..k have run, by :data:`_DIAMOND_STYLES` name: every
+    candidate a finished step tested, by its state, and the candidates of step k itself."""
+    out = {name: [] for name in _DIAMOND_STYLES}
+    s = trace.steps
+    if trace.rule != "diamond" or s is None:
+        return out
+    work = trace.index(k) - len(SETUP)
+    names = {MISSED: "tested", LIT: "lit", ENDS_INSIDE: "ends"}
+    for r, c, st, at in zip(s.rows, s.cols, s.state, s.step):
+        if at <= work:
+            out[names[int(st)]].append(_diamond(r, c))
+            if at == work:
+                out["now"].append(_diamond(r, c))
+    return out
 
 
 def _one_colour():

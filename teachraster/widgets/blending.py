@@ -6,8 +6,9 @@ later, or sort back to front). The left panel shows the colour buffer in the cho
 the right one the same triangles sorted back to front, with how many pixels differ. The
 checkboxes switch to premultiplied colours (``blend="premultiplied"``, colours multiplied
 by alpha first: the same picture, composed correctly in any grouping) and to showing the
-buffer as an sRGB framebuffer stores it (blending in linear light, then encoded) rather than
-blending the encoded numbers directly.
+buffer as an 8-bit sRGB framebuffer stores it (``color_format="srgb8"``: blending in linear
+light, encoded and rounded to 8 bits after every layer) rather than blending the encoded
+numbers directly.
 """
 
 from __future__ import annotations
@@ -37,8 +38,10 @@ def default_scene():
 def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)):
     """The (H, W, 4) colour buffer of triangles ``order`` blended *over* in that order.
 
-    ``rgba`` holds straight-alpha, sRGB-encoded colours. ``srgb``: decode to linear first,
-    blend, encode the result (an sRGB framebuffer); else blend the encoded numbers.
+    ``rgba`` holds straight-alpha, sRGB-encoded colours. ``srgb``: an 8-bit sRGB framebuffer
+    (``color_format="srgb8"``, GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``): decode to
+    linear first, blend in linear light, encode and round to 8 bits after every layer; the
+    result is returned encoded. Else blend the encoded numbers.
     ``premultiplied``: multiply colour by alpha first and blend with (ONE, ONE_MINUS_SRC_ALPHA);
     the result is returned un-premultiplied so the two look alike.
     """
@@ -49,7 +52,8 @@ def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)
         colours[..., :3] *= colours[..., 3:]
     mode = "premultiplied" if premultiplied else "over"
     color = render(np.asarray(clip)[list(order)], *size, attrs=colours, blend=mode,
-                   depth_write=False).color  # fmt: skip
+                   depth_write=False,
+                   color_format="srgb8" if srgb else "float64").color  # fmt: skip
     if premultiplied:
         with np.errstate(invalid="ignore", divide="ignore"):
             a = color[..., 3:]

@@ -167,7 +167,8 @@ class FrameInspector(Holdable):
             # view never takes room from the frame (a colour bar made with ax= would)
             self.cax = self.fig.add_axes((0.86, 0.14, 0.03, 0.64))
             self.hist_fig = new_figure((4.6, 3.9), self.backend)
-            self.hist_ax = self.hist_fig.add_axes((0.16, 0.16, 0.8, 0.74))
+            # room for written-out depths (0.9676) and two-line sample labels under MSAA
+            self.hist_ax = self.hist_fig.add_axes((0.26, 0.24, 0.71, 0.66))
             self._draw_frame()
             self._draw_history()
             self._make_displays()

@@ -19,8 +19,9 @@ clipping made (that part of the triangle was clipped away), across the seam betw
 pieces of a clipped triangle (the neighbouring piece's side), or the triangle (piece) has
 zero area; rarely, a thin piece that snapping turned over (its corners run the other way).
 
-A fragment that passed may still be hidden by a later one (``hidden_by``); the one the
-pixel shows at the end has ``shown``. Nothing is stored per fragment for this: the
+A fragment that passed may still be hidden by a later one (``hidden_by``; with blending
+the table says "under": the later one is blended over it); the one the pixel shows at the
+end (the last to pass, in the triangle-id buffer) has ``shown``. Nothing is stored per fragment for this: the
 history of one pixel is computed on demand from the trace's compact arrays (the fill's
 fragments, the depth test in drawing order, the in-order Hi-Z replay of
 :mod:`teachraster.pipeline.hierarchical_z`) and, for coverage that failed and for MSAA
@@ -542,10 +543,13 @@ def history_table(h: PixelHistory) -> str:
     )
     cols = f"{'tri':>5} {'piece':>5} {'smp':>3}  {'outcome':<22} {'depth':>9} {'before':>9} {'after':>9}  value / why"  # noqa: E501
     lines = [head, cols]
+    # Blending, a later fragment that passes is blended over this one, which is not hidden:
+    # its colour is in the result (the colour lines say how much).
+    later = "under" if h.blend is not None and h.blend.mode is not None else "hidden by"
     for r in h.records:
         outcome = r.outcome
         if r.outcome == "passed":
-            outcome += " (shown)" if r.shown else f" (hidden by {r.hidden_by})"
+            outcome += " (shown)" if r.shown else f" ({later} {r.hidden_by})"
         if r.outcome == "not_covered":
             why = reason_text(r)
         elif r.value:
@@ -621,41 +625,90 @@ OUTCOME_COLORS = {
 }
 
 
+#: The smallest depth range the strip spans: depths closer than the table prints (6 decimals)
+#: are not spread apart on the axis.
+MIN_DEPTH_SPAN = 2e-4
+
+
+def depth_ticks(lo: float, hi: float, most: int = 4) -> tuple[list, list]:
+    """Round depths in [lo, hi], a step of 1, 2 or 5 times a power of ten (at most
+    ``most`` + 1 of them), and their labels, written with just the decimals that step needs
+    and no offset.
+
+    >>> depth_ticks(0.9661, 0.9692)
+    ([0.967, 0.968, 0.969], ['0.967', '0.968', '0.969'])
+    """
+    raw = (hi - lo) / most
+    power = 10.0 ** np.floor(np.log10(raw))
+    step = next(m * power for m in (1, 2, 5, 10) if m * power >= raw)
+    decimals = max(0, int(-np.floor(np.log10(step) + 1e-9)))
+    ticks = np.arange(np.ceil(lo / step - 1e-9), np.floor(hi / step + 1e-9) + 1) * step
+    ticks = [round(float(t), decimals) + 0.0 for t in ticks]  # (+ 0.0: no "-0")
+    return ticks, [f"{t:.{decimals}f}" for t in ticks]
+
+
 def draw_history(ax, h: PixelHistory):
-    """A strip of the pixel's records: one bar per record (colour = outcome) at the
-    fragment's depth, with the buffer before (○) and after (●) each. Uses only the
-    Axes' own methods, so the engine needs no plotting import. Returns the artists."""
+    """A strip of the pixel's records: each fragment a short tile at its depth (colour =
+    outcome; a record without a fragment a cross at the foot), the buffer before (○) and
+    after (●) each. The depth axis spans the depths there are, so tiles mark depths, never
+    lengths; its ticks are written out (no offset). Uses only the Axes' own methods, so the
+    engine needs no plotting import. Returns the artists."""
     artists = []
     n = len(h.records)
     x = np.arange(n)
     depth = np.array([r.depth for r in h.records]) if n else np.zeros(0)
-    colors = [OUTCOME_COLORS[r.outcome] for r in h.records]
     every = [v for r in h.records for v in (r.depth, r.depth_before, r.depth_after)]
     every = [v for v in every if np.isfinite(v)]
     lo, hi = (min(every), max(every)) if every else (0.0, 1.0)
-    pad = max(hi - lo, 1e-6) * 0.25
-    bottom = lo - pad  # bars rise from below the nearest depth: differences show
-    shown = np.where(np.isnan(depth), 0.0, depth - bottom)
-    artists.append(ax.bar(x, shown, bottom=bottom, color=colors, edgecolor="k", linewidth=0.5))
-    ax.set_ylim(bottom, hi + pad)
-    for name, key, marker in (("before", "depth_before", "o"), ("after", "depth_after", ".")):
+    mid, span = (lo + hi) / 2, max(hi - lo, MIN_DEPTH_SPAN)
+    bottom, top = mid - 0.85 * span, mid + 1.15 * span  # room above for the legend
+    tile = span * 0.05
+    foot = bottom + 0.12 * span  # where a record without a fragment is marked
+    shown = []  # (handle, label) for the legend
+    for name, color in OUTCOME_COLORS.items():
+        mine = [i for i, r in enumerate(h.records) if r.outcome == name]
+        if not mine:
+            continue
+        if name in ("culled", "not_covered"):  # no fragment, no depth
+            (mark,) = ax.plot(x[mine], [foot] * len(mine), "x", mew=2, linestyle="none",
+                              color="0.45" if name == "culled" else "0.6")  # fmt: skip
+        else:
+            mark = ax.bar(x[mine], tile, bottom=depth[mine] - tile / 2, width=0.7, color=color,
+                          edgecolor="k", linewidth=0.5)  # fmt: skip
+        artists.append(mark)
+        shown.append((mark, name))
+    ax.set_ylim(bottom, top)
+    buffer = []
+    for key, marker in (("depth_before", "o"), ("depth_after", ".")):
         v = np.array([getattr(r, key) for r in h.records]) if n else np.zeros(0)
         v = np.where(np.isinf(v), np.nan, v)
-        artists += ax.plot(x, v, marker, color="k", mfc="none" if marker == "o" else "k",
-                           linestyle="none", label=f"buffer {name}")  # fmt: skip
-    labels = [f"{r.triangle}" + (f"·s{r.sample}" if h.n_samples > 1 else "") for r in h.records]
-    ax.set_xticks(x, labels, fontsize="small")
-    ax.set_xlabel("triangle" + ("·sample" if h.n_samples > 1 else "") + ", submission order")
-    ax.set_ylabel("depth (smaller is nearer)")
-    ax.set_title(f"history of pixel (row {h.row}, col {h.col})", fontsize="small")
-    for name, color in OUTCOME_COLORS.items():
-        if name in h.outcomes:
-            artists.append(ax.bar([0], [0], bottom=bottom, color=color, edgecolor="k",
-                                  linewidth=0.5, label=name))  # fmt: skip
-    artists += _draw_colours(ax, h, x, (bottom, hi + pad))
-    if n:
-        artists.append(ax.legend(fontsize="x-small", loc="best"))
+        buffer += ax.plot(x, v, marker, color="k", mfc="none" if marker == "o" else "k",
+                          linestyle="none")  # fmt: skip
+    artists += buffer
+    if any(np.isfinite(line.get_ydata()).any() for line in buffer):  # (writes off: none)
+        shown.append((tuple(buffer), "buffer before, after"))
+    ax.set_yticks(*depth_ticks(bottom, top))
+    ax.set_xticks(x, _record_labels(h), fontsize="small")
+    ax.set_xlim(-0.6, max(n, 1) - 0.4)
+    ax.set_xlabel("triangle and sample" if h.n_samples > 1 else "triangle, in drawing order")
+    ax.set_ylabel("depth (nearer ↓)")
+    ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
+    artists += _draw_colours(ax, h, x, (bottom, top))
+    if n:  # in the depth part of the Axes (the colours, if any, are above it)
+        handles, labels = zip(*shown)
+        depth_part = (top - bottom) / (ax.get_ylim()[1] - bottom)
+        artists.append(ax.legend(handles, labels, fontsize="x-small", loc="best",
+                                 bbox_to_anchor=(0, 0, 1, depth_part), framealpha=0.85))  # fmt: skip
     return artists
+
+
+def _record_labels(h: PixelHistory) -> list[str]:
+    """The records' tick labels: the triangle; under MSAA the sample above it, the triangle
+    only at its first sample (twelve records stay legible)."""
+    if h.n_samples == 1:
+        return [str(r.triangle) for r in h.records]
+    first = [i == 0 or r.triangle != h.records[i - 1].triangle for i, r in enumerate(h.records)]
+    return [f"s{r.sample}\n{r.triangle if f else ''}" for r, f in zip(h.records, first)]
 
 
 def _draw_colours(ax, h: PixelHistory, x, limits):
@@ -667,10 +720,10 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
     lo, hi = limits
     band = (hi - lo) * 0.18
     ax.set_ylim(lo, hi + band * 1.9)
-    artists = []
     on = [i for i, r in enumerate(h.records) if r.outcome == "passed"]
     if not on:
         return []
+    artists = [ax.axhline(hi, color="0.6", linewidth=0.8)]  # depths below, colours above
     for key, dx in zip(("color_before", "color", "color_after"), (-0.27, 0.0, 0.27)):
         rgba = np.array([getattr(h.records[i], key) for i in on])
         a = np.clip(rgba[:, 3:], 0, 1)
