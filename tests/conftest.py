@@ -77,6 +77,33 @@ def pytest_unconfigure(config):
         os.environ.pop("TEACHRASTER_RUN_CACHE", None)
 
 
+#: The tiers in the order a run starts them: the longest first, so that no worker is left with
+#: a long pole (an nbgrader round trip, a wheel built) while the other has finished.
+HEAVY_FIRST = ("nbgrader", "slow", "browser", "notebook", "gl")
+#: Tiers whose module shares one expensive fixture among its tests (the nbgrader course, the
+#: built wheel): the module goes to one worker whole (``--dist loadgroup``), so it is built once.
+ONE_WORKER = ("nbgrader", "slow")
+
+
+def _tier_rank(item) -> int:
+    return next(
+        (k for k, tier in enumerate(HEAVY_FIRST) if item.get_closest_marker(tier)),
+        len(HEAVY_FIRST),
+    )
+
+
+def pytest_collection_modifyitems(config, items):
+    """Modules of the heavy tiers first (a module keeps its tests together and in order, so its
+    fixtures are set up once per worker); those of ``ONE_WORKER`` each on a single worker."""
+    rank: dict = {}
+    for item in items:
+        rank[item.path] = min(rank.get(item.path, len(HEAVY_FIRST)), _tier_rank(item))
+    items.sort(key=lambda item: rank[item.path])  # stable: collection order within a rank
+    for item in items:
+        if rank[item.path] < len(HEAVY_FIRST) and HEAVY_FIRST[rank[item.path]] in ONE_WORKER:
+            item.add_marker(pytest.mark.xdist_group(item.path.stem))
+
+
 def examples(n: int) -> int:
     """``max_examples`` for a hypothesis test: ``n`` in the full run, a quarter in the quick tier.
 

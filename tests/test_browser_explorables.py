@@ -34,7 +34,10 @@ from teachraster.widgets import (
     PipelineMap,
 )
 
-pytestmark = pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}")
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
 
 NAME = "explorables.ipynb"
 TRIANGLE = "tri = tr.Triangle([[1.5, 1.5], [9.5, 3.5], [3.5, 8.5]])"
