@@ -67,6 +67,12 @@ class NotebookRun:
     #: the error a failing cell raised (its traceback as text), or "" when every cell ran
     error: str
     seconds: float
+    #: run in JupyterLab in Chromium (``notebook_browser``), not headless under nbclient
+    in_browser: bool = False
+    #: the figures (``img`` elements) on the page after Run All Cells (browser runs only)
+    figures_on_page: int = 0
+    #: errors the page raised while the notebook ran (browser runs only)
+    page_errors: tuple = ()
 
     def notebook(self):
         import nbformat
@@ -100,7 +106,35 @@ def _path(name: str) -> Path:
     return NOTEBOOKS / f"{name}.ipynb"
 
 
+def in_browser() -> bool:
+    """Whether notebooks run in the browser in this test run: in the full run wherever Chromium,
+    Playwright and JupyterLab are here (CI requires them), so each notebook runs once, as a
+    student runs it; headless under nbclient otherwise (the quick tier never runs notebooks)."""
+    import notebook_browser
+
+    if os.environ.get("TEACHRASTER_QUICK") or os.environ.get("TEACHRASTER_HEADLESS_NOTEBOOKS"):
+        return False
+    return notebook_browser.unavailable() is None
+
+
+def _run_in_browser(name: str) -> NotebookRun:
+    import notebook_browser
+
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "globals.pickle"
+        run = notebook_browser.run_all(name, _DUMP.replace("__PATH__", repr(str(out))))
+        blobs = pickle.loads(out.read_bytes()) if out.exists() else {}
+    record = run.probe_record or {"figures": [], "rss_mib": [0.0]}
+    peak = max(record["rss_mib"][:-1] or [0.0]) if not run.error else max(record["rss_mib"] or [0])
+    probe = {"figures": record["figures"], "peak_mib": peak}
+    return NotebookRun(
+        name, run.text, blobs, probe, run.error, run.seconds, True, run.figures, run.page_errors
+    )
+
+
 def _run(name: str) -> NotebookRun:
+    if in_browser():
+        return _run_in_browser(name)
     import nbformat
     from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError

@@ -14,47 +14,20 @@ sets TEACHRASTER_REQUIRE_BROWSER so that in CI this test runs.
 
 from __future__ import annotations
 
-import json
 import os
-import shutil
-import socket
-import subprocess
-import sys
 import time
-import urllib.request
 from pathlib import Path
 
 import pytest
+from notebook_browser import CHROMIUM as CHROMIUM  # the other browser tests read these here
+from notebook_browser import CHROMIUM_ARGS as CHROMIUM_ARGS
+from notebook_browser import _shut_down_kernels as _shut_down_kernels  # for the other files
+from notebook_browser import unavailable
 
 ROOT = Path(__file__).resolve().parents[1]
 LESSON = "01_span_tables.ipynb"
-CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
-# Playwright adds --headless itself; without the networking flags Chromium keeps trying to
-# reach the internet, which this machine does not have.
-CHROMIUM_ARGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-dev-shm-usage",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--disable-quic",
-]
 REQUIRED = bool(os.environ.get("TEACHRASTER_REQUIRE_BROWSER"))
-
-
-def _unavailable() -> str | None:
-    try:
-        import playwright.sync_api  # noqa: F401
-    except ImportError as exc:
-        return f"playwright is not installed ({exc})"
-    if not Path(CHROMIUM).exists():
-        return f"no Chromium at {CHROMIUM} (Debian: apt-get install chromium)"
-    if shutil.which("jupyter", path=str(Path(sys.executable).parent)) is None:
-        return "JupyterLab is not installed in this environment"
-    return None
-
+_unavailable = unavailable
 
 WHY = _unavailable()
 if WHY and REQUIRED:
@@ -65,85 +38,24 @@ pytestmark = [
 ]
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture(scope="module")
-def lab(tmp_path_factory):
-    """A JupyterLab server on a copy of notebooks/, stopped by its PID at the end."""
-    work = tmp_path_factory.mktemp("lab")
-    shutil.copytree(ROOT / "notebooks", work / "notebooks")
-    settings = work / "settings"
-    # No news toast over the page; every cell attached to the DOM (no virtual scrolling).
-    (settings / "@jupyterlab/apputils-extension").mkdir(parents=True)
-    (settings / "@jupyterlab/apputils-extension/notification.jupyterlab-settings").write_text(
-        json.dumps({"fetchNews": "false", "checkForUpdates": False})
-    )
-    (settings / "@jupyterlab/notebook-extension").mkdir(parents=True)
-    (settings / "@jupyterlab/notebook-extension/tracker.jupyterlab-settings").write_text(
-        json.dumps({"windowingMode": "none"})
-    )
-    env = dict(
-        os.environ,
-        JUPYTER_CONFIG_DIR=str(work / "config"),
-        JUPYTER_RUNTIME_DIR=str(work / "runtime"),
-        JUPYTER_DATA_DIR=str(work / "data"),
-        IPYTHONDIR=str(work / "ipython"),
-    )
-    env.pop("MPLBACKEND", None)  # the notebook chooses its own backend
-    port = _free_port()
-    log = open(work / "lab.log", "w")  # noqa: SIM115 (closed in the finaliser below)
-    proc = subprocess.Popen(
-        [
-            sys.executable, "-m", "jupyter", "lab", "--no-browser", "--allow-root",
-            "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}",
-            "--ServerApp.port_retries=0", "--IdentityProvider.token=", "--ServerApp.password=",
-            f"--ServerApp.root_dir={work / 'notebooks'}",
-            f"--LabApp.user_settings_dir={settings}",
-            f"--LabApp.workspaces_dir={work / 'workspaces'}",
-        ],
-        stdout=log, stderr=subprocess.STDOUT, env=env, cwd=work,
-    )  # fmt: skip
-    base = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.time() + 90
-        while True:
-            try:
-                urllib.request.urlopen(f"{base}/api/status", timeout=2)
-                break
-            except OSError:
-                if proc.poll() is not None or time.time() > deadline:
-                    raise RuntimeError(
-                        "JupyterLab did not start:\n" + (work / "lab.log").read_text()[-3000:]
-                    ) from None
-                time.sleep(0.5)
-        yield base
-    finally:
-        proc.terminate()  # the server shuts its kernels down on SIGTERM
-        try:
-            proc.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-        log.close()
+def lab():
+    """This worker's JupyterLab server on a copy of notebooks/ (``notebook_browser``: one per
+    worker, shared with the notebooks' runs, stopped at exit)."""
+    from notebook_browser import lab as running
+
+    return running().base
 
 
 @pytest.fixture(scope="module")
 def page(lab):
-    from playwright.sync_api import sync_playwright
+    """This worker's Chromium page, its error list emptied."""
+    from notebook_browser import lab as running
 
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        context = browser.new_context(viewport={"width": 1400, "height": 1000})
-        page = context.new_page()
-        errors: list[str] = []
-        page.on("pageerror", lambda exc: errors.append(str(exc)))
-        page.errors = errors
-        yield page
-        browser.close()
+    page = running().page
+    page.errors = running().errors
+    del page.errors[:]
+    return page
 
 
 def _wait_changed(read, before, what: str, timeout: float = 30.0):
@@ -212,48 +124,19 @@ NOTEBOOKS = sorted(
 )
 
 
-def _shut_down_kernels(base: str) -> None:
-    """Stop every kernel the server runs, so notebooks opened one after another do not pile up."""
-    try:
-        with urllib.request.urlopen(f"{base}/api/kernels", timeout=10) as r:
-            kernels = json.load(r)
-        for k in kernels:
-            req = urllib.request.Request(f"{base}/api/kernels/{k['id']}", method="DELETE")
-            urllib.request.urlopen(req, timeout=10).close()
-    except OSError:
-        pass  # best effort: the server stops them all at the end anyway
-
-
 @pytest.mark.parametrize("name", NOTEBOOKS)
-def test_every_notebook_runs_in_the_browser(lab, page, name):
+def test_every_notebook_runs_in_the_browser(name):
     """Every lesson and exercise notebook runs top to bottom in JupyterLab in Chromium, as a
-    student would run it (Run All Cells): no error output, and its figures are on the page."""
-    _shut_down_kernels(lab)
-    # ?reset: a fresh workspace, so no tab of an earlier test is restored beside this one
-    page.goto(f"{lab}/lab/tree/{name}?reset")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
-    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
-    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
-    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
-    n_code = page.locator(".jp-Notebook .jp-CodeCell").count()
-    # Done when every code cell has an execution count ("[12]:"), none is queued or running.
-    from playwright.sync_api import TimeoutError as PlaywrightTimeout
+    student would run it (Run All Cells): no error output, and its figures are on the page.
 
-    try:
-        page.wait_for_function(
-            """n => {
-                const prompts = [...document.querySelectorAll('.jp-Notebook .jp-CodeCell .jp-InputPrompt')];
-                return prompts.length === n && prompts.every(p => /\\[\\d+\\]/.test(p.textContent));
-            }""",
-            arg=n_code,
-            timeout=240_000,
-        )
-    except PlaywrightTimeout:
-        prompts = page.locator(".jp-Notebook .jp-CodeCell .jp-InputPrompt").all_inner_texts()
-        pytest.fail(f"{name}: not every cell ran within 240 s; prompts: {prompts}")
-    errors = page.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
-    if errors.count():
-        pytest.fail(f"{name}: error output in the browser:\n{errors.first.inner_text()[-2000:]}")
-    figures = page.locator(".jp-OutputArea-output img")
-    assert figures.count() > 0, f"{name}: no figure on the page"
-    assert not page.errors, f"{name}: errors in the page: {page.errors[:3]}"
+    This is the run every other test of the notebook reads (``notebook_runs``): each notebook
+    is executed once per test run, here."""
+    from notebook_runs import executed, in_browser
+
+    assert in_browser(), "notebooks run headless although the browser is here"
+    run = executed(name.removesuffix(".ipynb"))
+    assert run.in_browser
+    if run.error:
+        pytest.fail(f"{name}: error output in the browser:\n{run.error[-2000:]}")
+    assert run.figures_on_page > 0, f"{name}: no figure on the page"
+    assert not run.page_errors, f"{name}: errors in the page: {list(run.page_errors)[:3]}"

@@ -1,0 +1,248 @@
+"""Run a notebook as a student does: Run All Cells in JupyterLab, in headless Chromium.
+
+``notebook_runs.executed`` uses this in the full run, so that each notebook is executed once
+per run *in the browser* and every test reads that one execution: the browser test (no error
+output, figures on the page, no error in the page) and the tests that read what a lesson
+printed, drew and kept in its globals. Before, each notebook ran twice, once headless under
+nbclient and once in the browser.
+
+One JupyterLab server and one Chromium per process (an xdist worker), started on first use on a
+private copy of ``notebooks/`` and stopped when the process exits. The server's kernels start
+with the probe of ``benchmarks/bench_notebooks.py`` (figure sizes, memory after every cell);
+a worker runs one notebook at a time, so one probe log serves them all in turn.
+"""
+
+from __future__ import annotations
+
+import atexit
+import functools
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
+# Playwright adds --headless itself; without the networking flags Chromium keeps trying to
+# reach the internet, which this machine does not have.
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-dev-shm-usage",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--disable-quic",
+]
+#: Longest a notebook may take to run all its cells in the browser.
+RUN_SECONDS = 300
+
+
+def unavailable() -> str | None:
+    """Why notebooks cannot run in the browser here, or None."""
+    try:
+        import playwright.sync_api  # noqa: F401
+    except ImportError as exc:
+        return f"playwright is not installed ({exc})"
+    if not Path(CHROMIUM).exists():
+        return f"no Chromium at {CHROMIUM} (Debian: apt-get install chromium)"
+    if shutil.which("jupyter", path=str(Path(sys.executable).parent)) is None:
+        return "JupyterLab is not installed in this environment"
+    return None
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _settings(folder: Path) -> None:
+    """No news toast over the page; every cell attached to the DOM (no virtual scrolling)."""
+    news = folder / "@jupyterlab/apputils-extension"
+    news.mkdir(parents=True)
+    (news / "notification.jupyterlab-settings").write_text(
+        json.dumps({"fetchNews": "false", "checkForUpdates": False})
+    )
+    cells = folder / "@jupyterlab/notebook-extension"
+    cells.mkdir(parents=True)
+    (cells / "tracker.jupyterlab-settings").write_text(json.dumps({"windowingMode": "none"}))
+
+
+@dataclass
+class Lab:
+    """A JupyterLab server on a copy of ``notebooks/`` and a Chromium page open on it."""
+
+    base: str
+    root: Path
+    probe_log: Path
+    process: subprocess.Popen
+    page: object
+    errors: list
+    stop_browser: object
+
+    def stop(self) -> None:
+        try:
+            self.stop_browser()
+        finally:
+            self.process.terminate()  # the server shuts its kernels down on SIGTERM
+            try:
+                self.process.wait(timeout=20)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+
+
+def _start_server(work: Path, env: dict) -> tuple[str, subprocess.Popen]:
+    port = _free_port()
+    log = open(work / "lab.log", "w")  # noqa: SIM115 (the server writes it until it stops)
+    process = subprocess.Popen(
+        [
+            sys.executable, "-m", "jupyter", "lab", "--no-browser", "--allow-root",
+            "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}",
+            "--ServerApp.port_retries=0", "--IdentityProvider.token=", "--ServerApp.password=",
+            f"--ServerApp.root_dir={work / 'notebooks'}",
+            f"--LabApp.user_settings_dir={work / 'settings'}",
+            f"--LabApp.workspaces_dir={work / 'workspaces'}",
+        ],
+        stdout=log, stderr=subprocess.STDOUT, env=env, cwd=work,
+    )  # fmt: skip
+    base = f"http://127.0.0.1:{port}"
+    deadline = time.time() + 90
+    while True:
+        try:
+            urllib.request.urlopen(f"{base}/api/status", timeout=2).close()
+            return base, process
+        except OSError:
+            if process.poll() is not None or time.time() > deadline:
+                process.kill()
+                raise RuntimeError(
+                    "JupyterLab did not start:\n" + (work / "lab.log").read_text()[-3000:]
+                ) from None
+            time.sleep(0.5)
+
+
+@functools.cache
+def lab() -> Lab:
+    """This process's server and browser (started once, stopped at exit)."""
+    import notebook_runs
+    from playwright.sync_api import sync_playwright
+
+    work = Path(tempfile.mkdtemp(prefix="teachraster-lab-"))
+    shutil.copytree(ROOT / "notebooks", work / "notebooks")
+    _settings(work / "settings")
+    env = dict(
+        os.environ,
+        JUPYTER_CONFIG_DIR=str(work / "config"),
+        JUPYTER_RUNTIME_DIR=str(work / "runtime"),
+        JUPYTER_DATA_DIR=str(work / "data"),
+    )
+    env.pop("MPLBACKEND", None)  # the notebook chooses its own backend, as a student's does
+    log = work / "probe.json"
+    env.update(notebook_runs._bench().probe_environment(work / "ipython", log))
+    base, process = _start_server(work, env)
+    driver = sync_playwright().start()
+    browser = driver.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+    page = browser.new_context(viewport={"width": 1400, "height": 1000}).new_page()
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+
+    def stop_browser():
+        browser.close()
+        driver.stop()
+
+    running = Lab(base, work / "notebooks", log, process, page, errors, stop_browser)
+    atexit.register(running.stop)
+    return running
+
+
+def _shut_down_kernels(base: str) -> None:
+    """Stop every kernel, so notebooks run one after another do not pile up in memory."""
+    try:
+        with urllib.request.urlopen(f"{base}/api/kernels", timeout=10) as r:
+            kernels = json.load(r)
+        for k in kernels:
+            req = urllib.request.Request(f"{base}/api/kernels/{k['id']}", method="DELETE")
+            urllib.request.urlopen(req, timeout=10).close()
+    except OSError:
+        pass  # best effort: the server stops them all at exit anyway
+
+
+#: Done when no cell is queued or running and the last cell (the test's, never collapsed) ran,
+#: or a cell raised (Run All stops there, as it does for a student). A collapsed cell
+#: (``source_hidden``: the Predict cells) shows no prompt, so the last one is the witness.
+_FINISHED = """n => {
+    const prompts = [...document.querySelectorAll('.jp-Notebook .jp-CodeCell .jp-InputPrompt')];
+    if (prompts.length !== n || prompts.some(p => p.textContent.includes('*'))) return false;
+    const failed = document.querySelector(
+        '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]');
+    return failed !== null || /\\[\\d+\\]/.test(prompts[n - 1].textContent);
+}"""
+
+
+@dataclass(frozen=True)
+class BrowserRun:
+    """What the page showed after Run All Cells, and the notebook as JupyterLab saved it."""
+
+    text: str
+    error: str
+    figures: int
+    page_errors: tuple
+    probe_record: dict | None
+    seconds: float
+
+
+def run_all(name: str, extra_source: str) -> BrowserRun:
+    """Run notebook ``name`` (relative to ``notebooks/``, no suffix) with ``extra_source`` as a
+    last cell, in JupyterLab, and save it; the notebook's own copy is never touched."""
+    import nbformat
+
+    running = lab()
+    page, path = running.page, running.root / f"{name}.ipynb"
+    nb = nbformat.read(ROOT / "notebooks" / f"{name}.ipynb", as_version=4)
+    nb.cells.append(nbformat.v4.new_code_cell(extra_source))
+    nbformat.write(nb, path)
+    running.probe_log.unlink(missing_ok=True)
+    _shut_down_kernels(running.base)
+    del running.errors[:]
+    start = time.perf_counter()
+    # ?reset: a fresh workspace, so no tab of an earlier notebook is restored beside this one
+    page.goto(f"{running.base}/lab/tree/{name}.ipynb?reset")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('Run')")
+    page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
+    n_code = page.locator(".jp-Notebook .jp-CodeCell").count()
+    page.wait_for_function(_FINISHED, arg=n_code, timeout=RUN_SECONDS * 1000)
+    seconds = time.perf_counter() - start
+    failed = page.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
+    error = failed.first.inner_text()[-4000:] if failed.count() else ""
+    figures = page.locator(".jp-OutputArea-output img").count()
+    _save(page, path)
+    saved = nbformat.read(path, as_version=4)
+    shutil.copyfile(ROOT / "notebooks" / f"{name}.ipynb", path)  # as it was, for the next test
+    saved.cells.pop()  # the extra cell is the test's, not the notebook's
+    record = json.loads(running.probe_log.read_text()) if running.probe_log.exists() else None
+    _shut_down_kernels(running.base)
+    return BrowserRun(
+        nbformat.writes(saved), error, figures, tuple(running.errors), record, seconds
+    )
+
+
+def _save(page, path: Path) -> None:
+    """Save the notebook (its outputs are what the tests read) and wait until it is on disk."""
+    before = path.stat().st_mtime_ns
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")  # the menu: no widget takes the keys
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    deadline = time.time() + 60
+    while path.stat().st_mtime_ns == before or page.locator(".jp-mod-dirty").count():
+        if time.time() > deadline:
+            raise RuntimeError(f"JupyterLab did not save {path.name} within 60 s")
+        time.sleep(0.2)
