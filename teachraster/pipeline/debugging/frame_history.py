@@ -316,7 +316,8 @@ def _values(frags, at, dbg) -> dict:
     a = dbg.inputs
     visible = Visibility(np.zeros(len(at)), np.zeros(len(at), np.int64), a.depth_test,
                          np.arange(len(at)), at)  # fmt: skip
-    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, frozenset())
+    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, frozenset(),
+                                  a.overrides)  # fmt: skip
     return {int(f): tuple(float(v) for v in values[i]) for i, f in enumerate(at)}
 
 
@@ -423,7 +424,7 @@ def _colours(frame, dbg, row, col, records) -> list[HistoryRecord]:
         frags = dbg.fragments
         at = np.flatnonzero((frags.row == row) & (frags.col == col))
         a = dbg.inputs
-        values = fragment_values(frags, at, dbg.clipped, a.interpolation, a.forced)
+        values = fragment_values(frags, at, dbg.clipped, a.interpolation, a.forced, a.overrides)
         source = {int(frags.tri[f]): _tuple(values[i]) for i, f in enumerate(at)}
     buffer: dict[int, np.ndarray] = {}
     out = []
