@@ -10,6 +10,16 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from reasoning_solutions import (
+    barycentric,
+    bilinear,
+    covers,
+    depth_passes,
+    over,
+    perspective_weights,
+    resolve,
+    trilinear,
+)
 
 import teachraster as tr
 from teachraster.pipeline.planning.overrides import StageOverrides, check_overrides
@@ -19,66 +29,6 @@ W, H = 24, 18
 
 def _e(a, b, p):
     return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-
-
-def covers(xy, p):
-    v1, v2, v3 = xy
-    if _e(v1, v2, v3) < 0:
-        v2, v3 = v3, v2
-    if _e(v1, v2, v3) == 0:
-        return False
-    for a, b in ((v1, v2), (v2, v3), (v3, v1)):
-        e = _e(a, b, p)
-        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
-        if e < 0 or (e == 0 and not top_left):
-            return False
-    return True
-
-
-def barycentric(xy, p):
-    v1, v2, v3 = xy
-    return np.array([_e(v2, v3, p), _e(v3, v1, p), _e(v1, v2, p)]) / _e(v1, v2, v3)
-
-
-def perspective_weights(lam, w):
-    q = lam * (w.min() / w)
-    return q / q.sum()
-
-
-def depth_passes(depths, writes):
-    stored, out = np.inf, []
-    for d, write in zip(depths, writes):
-        out.append(d < stored)
-        if d < stored and write:
-            stored = d
-    return out
-
-
-def over(src, dst):
-    return src * src[3] + dst * (1 - src[3])
-
-
-def bilinear(texture, uv, wrap):
-    h, w = texture.shape[:2]
-    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
-    x0, y0 = int(np.floor(x)), int(np.floor(y))
-    fx, fy = x - x0, y - y0
-    cols, rows = [x0 % w, (x0 + 1) % w], [y0 % h, (y0 + 1) % h]
-    top = (1 - fx) * texture[rows[0], cols[0]] + fx * texture[rows[0], cols[1]]
-    bottom = (1 - fx) * texture[rows[1], cols[0]] + fx * texture[rows[1], cols[1]]
-    return (1 - fy) * top + fy * bottom
-
-
-def trilinear(pyramid, uv, lod, wrap):
-    q = len(pyramid) - 1
-    lam = min(max(lod, 0.0), q)
-    lower = int(np.floor(lam))
-    upper, t = min(lower + 1, q), lam - lower
-    return (1 - t) * bilinear(pyramid[lower], uv, wrap) + t * bilinear(pyramid[upper], uv, wrap)
-
-
-def resolve(colours, ids, background):
-    return np.where((ids >= 0)[:, None], colours, background).mean(axis=0)
 
 
 def _same(a, b):

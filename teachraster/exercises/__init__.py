@@ -1,8 +1,8 @@
 """Exercises with a checker that explains every wrong answer by the rules.
 
 >>> from teachraster import exercises as ex
->>> ex.names()
-['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near', 'depth_to_unorm', 'coverage_fraction', 'resolve', 'mip_level', 'bilinear', 'trilinear', 'classify_block', 'line_pixels', 'over', 'over_premultiplied']
+>>> ex.names()[:8]
+['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near']
 >>> report = ex.check("depth_test", lambda incoming, stored: incoming <= stored)
 >>> report.passed
 False
@@ -14,7 +14,10 @@ takes about ``budget`` seconds at most, a case a fifth of it (an endless loop is
 2 s, whatever it catches), and its comparisons and explanations count against the budget too
 (:mod:`.running`, :mod:`.interrupt`). Answers are read strictly (:mod:`.answers`): ``None`` is a
 missing ``return``, text is not a number. ``report.compare(ax)`` shows the student's ``fill`` of
-a whole scene beside the package's (:mod:`.compare`).
+a whole scene beside the package's (:mod:`.compare`). ``capstone(scene, covers=...)``
+renders a built-in scene with the student's own functions beside the package's
+(:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames lesson 11's exercises diagnose
+(:mod:`.broken_frames`).
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one
@@ -22,7 +25,9 @@ top-left rule and one reference for every answer. matplotlib is imported only wh
 is drawn (:meth:`Report.plot`).
 """
 
+from .broken_frames import CAUSES, broken_frame
+from .capstone_render import capstone
 from .checks import check, names
 from .report import Failure, Report
 
-__all__ = ["Failure", "Report", "check", "names"]
+__all__ = ["CAUSES", "Failure", "Report", "broken_frame", "capstone", "check", "names"]

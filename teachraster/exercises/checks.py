@@ -7,7 +7,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from . import lines_blending, near_clip, scalars
+from . import lines_blending, near_clip, reasoning_tasks, scalars
 from .answers import MAX_VERTICES, as_bool, as_number, as_numbers, short
 from .coverage_checks import check_covers, check_fill
 from .report import Report
@@ -137,6 +137,7 @@ EXERCISES: dict[str, Callable] = {
     "clip_near": lambda fn: check_values("clip_near", fn),
     **later.EXERCISES,  # 05–08: depth precision, antialiasing, texture filtering, tiles
     **lines_blending.EXERCISES,  # lesson 12: line_pixels, over, over_premultiplied
+    **reasoning_tasks.EXERCISES,  # issue 30: reasoning tasks, lessons 07-12, broken frames
 }
 
 
