@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 import reasoning_solutions as sol
 
+import teachraster as tr
 from teachraster import exercises as ex
 from teachraster.exercises import broken_frames as bf
 from teachraster.study.hardcases import naive_coverage
@@ -300,3 +301,25 @@ def test_broken_frame_answers_are_read_strictly():
     assert report.failures[0].kind == "type"
     report = ex.check("broken_frame_1", lambda: ("depth function", (99, 4)))
     assert "outside" in str(report)
+
+
+def test_the_frame_inspector_shows_the_broken_frames():
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    frames = {f"frame {b.number}": b.frame for b in bf.broken_frames()}
+    w = FrameInspector(frames=frames, backend="image")
+    try:
+        assert list(w.scene.options) == list(frames) and w.frame is frames["frame 1"]
+        assert w.samples.disabled and w.glass.disabled and not w.scene.disabled
+        w.scene.value = "frame 2"
+        w.click_at(30.5, 20.5)
+        assert w.history.outcomes == frames["frame 2"].history(20, 30).outcomes
+        assert "culled" in w.table.value
+    finally:
+        w.close()
+    untraced = tr.render(tr.get_scene("cube").clip(4 / 3), 8, 6)
+    with pytest.raises(ValueError, match="trace=True"):
+        FrameInspector(frames={"a": untraced})
+    with pytest.raises(TypeError, match="non-empty dict"):
+        FrameInspector(frames={})
