@@ -45,8 +45,8 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
     red, blue, green = _premultiplied([1, 0, 0], 0.5), _premultiplied([0, 0, 1], 0.5), \
         _premultiplied([0, 1, 0], 0.25)  # fmt: skip
     named = [
-        ("one half-transparent red layer", [red]),
         ("red in front of blue", [red, blue]),
+        ("one half-transparent red layer", [red]),
         ("blue in front of red", [blue, red]),
         ("an opaque layer in front hides the rest", [_premultiplied([1, 1, 0], 1.0), red, blue]),
         ("an opaque layer at the back", [green, red, _premultiplied([0.2, 0.2, 0.2], 1.0)]),

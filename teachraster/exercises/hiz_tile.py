@@ -168,12 +168,15 @@ def draw_hiz(ax, case, got):
     artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
                          vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
     ring = np.vstack([xyz[:, :2], xyz[:1, :2]])
-    artists += ax.plot(ring[:, 0], ring[:, 1], color="white", linewidth=1.5)
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="#d7301f", linewidth=1.5)
     rows, cols = _corners(row0, col0, size)
     artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
+    nearest = plane_at(xyz, rows, cols).min()
     verdict = "rejected" if expected else "kept"
-    yours = "" if got is None else f", yours: {'rejected' if got else 'kept'}"
-    ax.set_title(f"tile at row {row0}, col {col0}: {verdict}{yours}", fontsize="small")
+    yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
+    artists.append(ax.set_xlabel(f"nearest of the triangle {num(nearest)}, farthest stored "
+                                 f"{num(np.max(buffer))}:\n{verdict}{yours}",
+                                 fontsize="x-small"))  # fmt: skip
     ax.set_xlim(col0 - 2, col0 + size + 2)
     ax.set_ylim(row0 + size + 2, row0 - 2)
     ax.set_aspect("equal")

@@ -119,7 +119,8 @@ def draw_near(ax, case, got):
     artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
     artists.append(ax.axvline(expected, color="#2b7bba", label="smallest n (expected)"))
     if got is not None and np.isfinite(got) and 0 < got < z:
-        artists.append(ax.axvline(got, color="#d7301f", linestyle="--", label="your n"))
+        colour = "#7fbf7f" if close(got, expected) else "#d7301f"
+        artists.append(ax.axvline(got, color=colour, linestyle="--", label="your n"))
     ax.set_xlabel("near plane n")
     ax.set_ylabel("depth resolution Δz")
     artists.append(ax.legend(fontsize="x-small"))

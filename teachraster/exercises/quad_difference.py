@@ -21,7 +21,7 @@ from ..core.interpolation import perspective_weights
 from ..pipeline.texturing.quad_derivatives import attribute_planes, lane_values
 from .answers import as_numbers
 from .cases import SEED
-from .scalars import num, vec
+from .scalars import vec
 from .tolerance import all_close
 
 #: Floor-like triangles: the far edge at w = 8 against 1 near, as on textured_floor.
@@ -51,8 +51,8 @@ def quad_cases() -> list[tuple[str, tuple, np.ndarray]]:
     columns, next to its edges (helper lanes), and seeded random triangles."""
     rng = np.random.default_rng(SEED + 70)
     xy, w, f = FLOOR
-    pixels = [(28, 14, "inside, upper-left lane"), (29, 15, "inside, lower-right lane"),
-              (27, 3, "next to the left edge: helpers outside"),
+    pixels = [(27, 3, "next to the left edge: helpers outside"),
+              (28, 14, "inside, upper-left lane"), (29, 15, "inside, lower-right lane"),
               (5, 14, "at the far tip: helpers beyond the edges"),
               (20, 25, "next to the right edge"), (29, 29, "the near right corner")]  # fmt: skip
     out = [(f"floor, pixel ({r}, {c}): {why}", (xy, w, f, r, c)) for r, c, why in pixels]
@@ -141,29 +141,37 @@ def explain_quad(args, expected, got):
 
 
 def draw_quad(ax, case, got):
-    """The triangle, the quad's four pixels (helpers hatched) with their values, and the
-    expected and your (ddx, ddy)."""
-    from matplotlib.patches import Rectangle
+    """Close up on the pixel's quad: its four pixels (helpers hatched) with the value of f at
+    each centre, the triangle's edges, the expected (ddx, ddy) and yours."""
+    from matplotlib.patches import Patch, Rectangle
 
     _, (xy, w, f, row, col), expected = case
     r0, c0 = row - row % 2, col - col % 2
     q = lanes(xy, w, f, r0, c0)
     ring = np.vstack([xy, xy[:1]])
-    artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
     for k, (dr, dc) in enumerate(((0, 0), (0, 1), (1, 0), (1, 1))):
         x, y = c0 + dc, r0 + dr
         inside = _inside(xy, x + 0.5, y + 0.5)
         artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside
-                                              else "white", edgecolor="#2b7bba",
+                                              else "white", edgecolor="#2b7bba", lw=1.5,
                                               hatch=None if inside else "//")))  # fmt: skip
-        artists.append(ax.text(x + 0.5, y + 0.5, f"{q[k]:.3g}", ha="center", va="center",
-                               fontsize="x-small"))  # fmt: skip
-    yours = "" if got is None else f"\nyours {vec(got)}"
-    ax.set_title(f"pixel ({row}, {col}): (ddx, ddy) = {vec(expected)}{yours}", fontsize="small")
-    ax.set_xlim(min(xy[:, 0].min(), c0) - 1, max(xy[:, 0].max(), c0 + 2) + 1)
-    ax.set_ylim(max(xy[:, 1].max(), r0 + 2) + 1, min(xy[:, 1].min(), r0) - 1)
+        artists.append(ax.text(x + 0.5, y + 0.5, f"{q[k]:.2g}", ha="center", va="center",
+                               fontsize="x-small", color="black"))  # fmt: skip
+    artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
+                                          lw=3)))  # fmt: skip
+    ax.set_xlim(c0 - 1.5, c0 + 3.5)
+    ax.set_ylim(r0 + 3.5, r0 - 1.5)
     ax.set_aspect("equal")
-    ax.set_xlabel(f"hatched: helper pixels; values: f at the lanes ({num(f[0])} … at the vertices)")
+    yours = "" if got is None else f"\nyours: {vec(got, expected)}"
+    artists.append(ax.text(0.02, 0.02, f"(ddx, ddy) = {vec(expected, got)}{yours}",
+                           transform=ax.transAxes, fontsize="x-small", va="bottom",
+                           bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
+    handles = [Patch(facecolor="#c8c8c8", edgecolor="#2b7bba", label="covered"),
+               Patch(facecolor="white", edgecolor="#2b7bba", hatch="//", label="helper"),
+               Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
+    artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
+                             bbox_to_anchor=(1.02, 1)))  # fmt: skip
     return artists
 
 

@@ -37,7 +37,9 @@ def span_cases() -> list[tuple[str, tuple, frozenset]]:
     for label, xy in triangles[:40] + flat:
         for row, why in _rows(xy):
             out.append((f"{label}, row {row} ({why})", (xy.copy(), row), covered_columns(xy, row)))
-    return out
+    # first (the drawing of a passing check): a row with covered centres on a vertex's line
+    first = next(k for k, case in enumerate(out) if case[2] and "vertex" in case[0])
+    return [out[first]] + out[:first] + out[first + 1 :]
 
 
 def _rows(xy: np.ndarray) -> list[tuple[int, str]]:
@@ -231,8 +233,8 @@ def draw_span(ax, case, got):
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo, hi)
     ax.set_ylim(max(float(xy[:, 1].max()), y) + 1, min(float(xy[:, 1].min()), y) - 1)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(f"x (px); row {row}, centre line y = {num(y)}")
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
     return artists
 
 
