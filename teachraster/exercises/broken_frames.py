@@ -299,7 +299,7 @@ def _draw(ax, case, got):
     number = case[2][1]
     b = broken_frame(number)
     artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest")]
-    if got is not None:
+    if got is not None and isinstance(got[0], str) and got[0] in CAUSES:  # an answer
         _, (row, col) = got
         artists += ax.plot([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row],
                            color="#D55E00", lw=2)  # fmt: skip

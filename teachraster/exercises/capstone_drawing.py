@@ -36,7 +36,7 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     wrong = report.differing_pixels()
     h, w = ref.shape[:2]
     artists = []
-    titles = (f"yours ({', '.join(spec.uses)})", "the package's", f"{len(wrong)} pixel(s) differ")
+    titles = (f"{spec.name}: yours", "the package's", f"{len(wrong)} pixel(s) differ")
     for ax, title in zip(axes, titles):
         ax.set_title(title, fontsize="small")
         ax.set_xticks([])

@@ -123,7 +123,19 @@ MISTAKES = {
 }
 
 
-def explain_fill(args, expected, got):
+def fill_pattern(results) -> dict:
+    """``plausible``: the missing repairs that agree with every answer they would change: a
+    mistake is named only if, on every case it breaks, the student's fill breaks the same
+    way (a variant that matches one case by coincidence is not a diagnosis)."""
+    plausible = set(MISTAKES)
+    for args, expected, got in results:
+        for name, cov in _variants(*args).items():
+            if not np.array_equal(cov, expected) and not np.array_equal(cov, got):
+                plausible.discard(name)
+    return {"plausible": plausible}
+
+
+def explain_fill(args, expected, got, plausible=None):
     """(kind, explanation): the repair still missing, then the first wrong pixel."""
     xy, width, height, origin = args
     s = snap(np.asarray(xy, float))
@@ -131,7 +143,8 @@ def explain_fill(args, expected, got):
         return "shape", (f"your image has shape {got.shape}; the window is {expected.shape} "
                          "(height, width)")  # fmt: skip
     named = [k for k, cov in _variants(*args).items()
-             if np.array_equal(cov, got) and not np.array_equal(cov, expected)]  # fmt: skip
+             if np.array_equal(cov, got) and not np.array_equal(cov, expected)
+             and (plausible is None or k in plausible)]  # fmt: skip
     if _area(s) == 0 and got.any():
         named = ["zero area"]
     i, j = np.argwhere(got != expected)[0]

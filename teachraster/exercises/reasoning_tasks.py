@@ -43,7 +43,7 @@ SPECS = {
     "safe_near": ValueExercise(npl.near_cases, as_number, npl.same_near, npl.explain_near,
                                npl.draw_near),
     "robust_fill": ValueExercise(hf.fill_cases, hf.as_image, hf.same_image, hf.explain_fill,
-                                 hf.draw_fill),
+                                 hf.draw_fill, hf.fill_pattern),
     "quad_derivatives": ValueExercise(qd.quad_cases, qd.as_pair, qd.same_pair, qd.explain_quad,
                                       qd.draw_quad),
     "hiz_rejects": ValueExercise(hz.hiz_cases, as_bool, hz.same_verdict, hz.explain_hiz,

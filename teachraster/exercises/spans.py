@@ -122,13 +122,14 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
 
 
 def span_pattern(results) -> dict:
-    """``mistake``: the wrong rounding that gives every answer (if exactly one does)."""
-    fits = None
-    for (xy, row), _, got in results:
-        variants = _variants(xy, row)
-        names = {k for k, cols in variants.items() if cols == got}
-        fits = names if fits is None else fits & names
-    return {"mistake": sorted(fits)[0]} if fits and len(fits) == 1 else {}
+    """``plausible``: the wrong roundings that agree with every answer they would change (a
+    rounding that matches one case by coincidence is not named)."""
+    plausible = set(MISTAKES)
+    for (xy, row), expected, got in results:
+        for name, cols in _variants(xy, row).items():
+            if cols != expected and cols != got:
+                plausible.discard(name)
+    return {"plausible": plausible}
 
 
 MISTAKES = {
@@ -146,7 +147,7 @@ MISTAKES = {
 }
 
 
-def explain_span(args, expected: frozenset, got: frozenset, mistake=None):
+def explain_span(args, expected: frozenset, got: frozenset, plausible=None):
     """(kind, explanation) of a wrong span, quoting the exact crossings."""
     xy, row = args
     y = row + 0.5
@@ -161,9 +162,8 @@ def explain_span(args, expected: frozenset, got: frozenset, mistake=None):
     facts = (f"the centre line y = {num(y)} crosses the triangle ({_vertices(xy)}) from "
              f"x_l = {_frac(xl)} to x_r = {_frac(xr)}, so the covered centres are "
              f"{_span_words(expected)}; yours: {where}")  # fmt: skip
-    named = [k for k, cols in _variants(xy, row).items() if cols == got and cols != expected]
-    if mistake in named:
-        named = [mistake]
+    named = [k for k, cols in _variants(xy, row).items()
+             if cols == got and cols != expected and (plausible is None or k in plausible)]  # fmt: skip
     if named:
         return named[0], f"{'; or '.join(MISTAKES[k] for k in named)}. Here {facts}"
     horizontal = _horizontal_edge(xy, y)
