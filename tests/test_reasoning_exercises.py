@@ -323,3 +323,11 @@ def test_the_frame_inspector_shows_the_broken_frames():
         FrameInspector(frames={"a": untraced})
     with pytest.raises(TypeError, match="non-empty dict"):
         FrameInspector(frames={})
+
+
+def test_broken_frame_numbers_are_checked():
+    assert ex.broken_frame(np.int64(3)).number == 3
+    with pytest.raises(TypeError, match="number must be an integer"):
+        ex.broken_frame(True)
+    with pytest.raises(ValueError, match="1 to 6"):
+        ex.broken_frame(7)

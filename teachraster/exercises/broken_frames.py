@@ -16,6 +16,7 @@ mistake did not change is refused.
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from functools import cache
 
@@ -159,8 +160,14 @@ def broken_frames() -> tuple[BrokenFrame, ...]:
 def broken_frame(number: int) -> BrokenFrame:
     """Frame ``number`` (1 to 6)."""
     frames = broken_frames()
-    if not isinstance(number, int) or not 1 <= number <= len(frames):
-        raise ValueError(f"number must be 1 to {len(frames)}, got {number!r}")
+    if isinstance(number, bool | np.bool_):
+        raise TypeError(f"number must be an integer, got {number!r}")
+    try:
+        number = operator.index(number)
+    except TypeError:
+        raise TypeError(f"number must be an integer, got {type(number).__name__}") from None
+    if not 1 <= number <= len(frames):
+        raise ValueError(f"number must be 1 to {len(frames)}, got {number}")
     return frames[number - 1]
 
 
