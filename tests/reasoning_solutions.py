@@ -121,3 +121,24 @@ from lines_blending_solutions import over  # noqa: E402
 CAPSTONE = dict(covers=covers, barycentric=barycentric, perspective_weights=perspective_weights,
                 depth_passes=depth_passes, over=over, bilinear=bilinear, trilinear=trilinear,
                 resolve=resolve)  # fmt: skip
+
+#: A correct answer to each of issue 30's exercises, by name.
+BROKEN_FRAMES = {
+    1: ("depth function", (24, 28)),
+    2: ("culled winding", (24, 28)),
+    3: ("z-fighting", (24, 16)),
+    4: ("missing premultiplication", (21, 18)),
+    5: ("blend order", (19, 28)),
+    6: ("sliver", (25, 42)),
+}
+CORRECT = {
+    "span": span,
+    "perspective_weights": perspective_weights,
+    "depth_passes": depth_passes,
+    "safe_near": safe_near,
+    "robust_fill": robust_fill,
+    "quad_derivatives": quad_derivatives,
+    "hiz_rejects": hiz_rejects,
+    **{f"broken_frame_{n}": (lambda a=a: a) for n, a in BROKEN_FRAMES.items()},
+    "front_to_back": front_to_back,
+}

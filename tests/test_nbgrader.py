@@ -47,7 +47,7 @@ def _nbgrader(root: Path, *args: str) -> str:
     env["MPLBACKEND"] = "Agg"
     env["JUPYTER_CONFIG_DIR"] = str(root / ".jupyter")  # no user or site nbgrader settings
     run = subprocess.run(
-        [NBGRADER, *args], cwd=root, env=env, capture_output=True, text=True, timeout=600
+        [NBGRADER, *args], cwd=root, env=env, capture_output=True, text=True, timeout=1800
     )
     assert run.returncode == 0, f"nbgrader {' '.join(args)}:\n{run.stdout}\n{run.stderr[-4000:]}"
     return run.stdout + run.stderr

@@ -331,3 +331,30 @@ def test_broken_frame_numbers_are_checked():
         ex.broken_frame(True)
     with pytest.raises(ValueError, match="1 to 6"):
         ex.broken_frame(7)
+
+
+WRONG = {name: fn for name, fn, _, _ in MISTAKES}
+WRONG["broken_frame_1"] = lambda: ("z-fighting", (24, 28))
+RIGHT = {name: fn for name, fn in CORRECT}
+RIGHT["broken_frame_1"] = lambda: ("depth function", (24, 28))
+
+
+@pytest.mark.parametrize("name", list(RIGHT))
+def test_reports_draw_passing_failing_and_missing(name):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def stub(*args):
+        raise NotImplementedError
+
+    for fn in (RIGHT[name], WRONG[name], stub):
+        report = ex.check(name, fn)
+        if fn is stub:
+            assert report.not_implemented and "not implemented yet" in str(report)
+        fig, ax = plt.subplots(figsize=(3, 3))
+        artists = report.plot(ax)
+        assert artists and ax.get_title().startswith(name)
+        fig.canvas.draw()
+        plt.close(fig)

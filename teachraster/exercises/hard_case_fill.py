@@ -16,6 +16,8 @@ one of its options), then explained at its first wrong pixel with the top-left r
 
 from __future__ import annotations
 
+import copy
+from functools import cache
 from types import SimpleNamespace
 
 import numpy as np
@@ -35,6 +37,12 @@ KINDS = ("triangle", "triangles", "mesh")
 
 
 def fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """The cases (built once, then copied): see :func:`_fill_cases`."""
+    return copy.deepcopy(_fill_cases())
+
+
+@cache
+def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     """(label, (xy, width, height, origin), coverage) with raw vertices; origin = (row, col)."""
     out = []
     for name, case in CASES.items():

@@ -17,11 +17,14 @@ largest stored depth.
 
 from __future__ import annotations
 
-import dataclasses
+import copy
+from functools import cache
 
 import numpy as np
 
-from ..pipeline.rasterization.batched_fill import rasterize_batch
+from ..core.edges import setup_edges
+from ..core.snapping import SUBPIXEL_BITS
+from ..pipeline.rasterization.batched_fill import Fragments, weight_source
 from .cases import SEED
 from .scalars import num
 
@@ -38,10 +41,11 @@ def plane_at(xyz: np.ndarray, rows, cols, clamp: bool = True) -> np.ndarray:
     """The triangle's depth plane at pixel centres (rows, cols), as the renderer evaluates it
     (``clamp``: within its vertices' depths, the renderer's own; else the bare plane)."""
     xyz = np.asarray(xyz, dtype=float)
-    if clamp:
-        w, h = int(max(cols.max(), xyz[:, 0].max())) + 2, int(max(rows.max(), xyz[:, 1].max())) + 2
-        frags = rasterize_batch(xyz[None, :, :2], w, h, snapped_weights=False)
-        probe = dataclasses.replace(frags, tri=np.zeros(len(rows), np.int64), row=rows, col=cols)
+    if clamp:  # the renderer's set-up (its weights from the unsnapped positions) and plane
+        xy = xyz[None, :, :2]
+        src, area, _, _ = weight_source(xy, setup_edges(xy, SUBPIXEL_BITS), False)
+        probe = Fragments(np.zeros(len(rows), np.int64), np.asarray(rows), np.asarray(cols),
+                          np.zeros(1, np.int8), src, area)  # fmt: skip
         return probe.plane(xyz[None, :, 2])
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
@@ -56,7 +60,13 @@ def expected_reject(xyz, row0, col0, size, buffer) -> bool:
 
 
 def hiz_cases() -> list[tuple[str, tuple, bool]]:
-    """(label, (xyz, row0, col0, size, buffer), rejected): named tiles and seeded random ones."""
+    """(label, (xyz, row0, col0, size, buffer), rejected): named tiles and seeded random ones
+    (built once, then copied)."""
+    return copy.deepcopy(_hiz_cases())
+
+
+@cache
+def _hiz_cases() -> list[tuple[str, tuple, bool]]:
     rng = np.random.default_rng(SEED + 60)
     slope = np.array([[0.0, 0.0, 0.30], [40.0, 0.0, 0.70], [0.0, 40.0, 0.50]])
     flat = np.array([[0.0, 0.0, 0.5], [40.0, 0.0, 0.5], [0.0, 40.0, 0.5]])
@@ -75,24 +85,22 @@ def hiz_cases() -> list[tuple[str, tuple, bool]]:
         ("the tile's farthest pixel decides", (slope, 8, 16, TILE,
                                                _with(np.full((TILE, TILE), 0.2), (7, 7), 0.6))),
     ]  # fmt: skip
-    while len(named) < 25:
-        xyz = np.column_stack([np.round(rng.uniform(-8, 40, (3, 2)) * 256) / 256,
-                               rng.uniform(0.1, 0.9, 3)])  # fmt: skip
+    for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
-        if not _reaches(xyz, row0, col0, TILE):  # Hi-Z only tests blocks with fragments
-            continue
-        k = len(named) - 7
+        # vertices around the tile's middle, less than half a turn apart: the middle (a pixel
+        # centre of the tile) is inside, so the triangle has a block here
+        centre = np.array([col0 + TILE / 2 - 0.5, row0 + TILE / 2 - 0.5])
+        turn = (
+            rng.uniform(0, 2 * np.pi) + np.array([0, 2, 4]) * np.pi / 3 + rng.uniform(-0.4, 0.4, 3)
+        )
+        reach = rng.uniform(5, 30, 3)
+        xy = centre + reach[:, None] * np.column_stack([np.cos(turn), np.sin(turn)])
+        xyz = np.column_stack([np.round(xy * 256) / 256, rng.uniform(0.1, 0.9, 3)])
         near = plane_at(xyz, *_corners(row0, col0, TILE)).min()
         buffer = near + rng.uniform(-0.05, 0.05, (TILE, TILE)) * (k % 3 != 0)
         buffer[rng.integers(0, TILE), rng.integers(0, TILE)] += rng.choice([-0.01, 0.0, 0.01])
         named.append((f"random {k + 1}", (xyz, row0, col0, TILE, buffer)))
     return [(label, args, expected_reject(*args)) for label, args in named]
-
-
-def _reaches(xyz, row0: int, col0: int, size: int) -> bool:
-    """Whether the triangle covers a pixel centre of the tile (a block exists there)."""
-    frags = rasterize_batch(np.asarray(xyz, float)[None, :, :2], col0 + size, row0 + size)
-    return bool(((frags.row >= row0) & (frags.col >= col0)).any())
 
 
 def _with(buffer: np.ndarray, at, value) -> np.ndarray:

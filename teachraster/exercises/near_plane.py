@@ -12,6 +12,9 @@ package's own) equals ``gap``, found by bisection on it, so no second formula de
 
 from __future__ import annotations
 
+import copy
+from functools import cache
+
 import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution
@@ -48,6 +51,12 @@ def expected_near(z: float, gap: float, far: float, bits: int) -> float:
 
 
 def near_cases() -> list[tuple[str, tuple, float]]:
+    """The cases (built once, then copied): see :func:`_near_cases`."""
+    return copy.deepcopy(_near_cases())
+
+
+@cache
+def _near_cases() -> list[tuple[str, tuple, float]]:
     out = []
     for z, gap, far, bits in SETTINGS:
         n = expected_near(z, gap, far, bits)

@@ -14,8 +14,10 @@ the 1/256-px grid, so :class:`fractions.Fraction` holds every number exactly).
 
 from __future__ import annotations
 
+import copy
 import math
 from fractions import Fraction
+from functools import cache
 
 import numpy as np
 
@@ -29,14 +31,22 @@ from .scalars import num
 
 # -- cases ------------------------------------------------------------------------------------
 def span_cases() -> list[tuple[str, tuple, frozenset]]:
-    """(label, (xy, row), covered columns) for rows that decide: ties, the split, the ends."""
+    """(label, (xy, row), covered columns) for rows that decide: ties, the split, the ends
+    (built once, then copied)."""
+    return copy.deepcopy(_span_cases())
+
+
+@cache
+def _span_cases() -> list[tuple[str, tuple, frozenset]]:
     triangles = proper_triangles()
     flat = [(c.label, c.triangles[0]) for c in catalogue_coverage()
             if c.label in ("collinear", "coincident_vertices")]  # fmt: skip
     out = []
     for label, xy in triangles[:40] + flat:
-        for row, why in _rows(xy):
-            out.append((f"{label}, row {row} ({why})", (xy.copy(), row), covered_columns(xy, row)))
+        rows = _rows(xy)
+        covered = _covered_rows(xy, [row for row, _ in rows])
+        for row, why in rows:
+            out.append((f"{label}, row {row} ({why})", (xy.copy(), row), covered[row]))
     # first (the drawing of a passing check): a row with covered centres on a vertex's line
     first = next(k for k, case in enumerate(out) if case[2] and "vertex" in case[0])
     return [out[first]] + out[:first] + out[first + 1 :]
@@ -58,14 +68,15 @@ def _rows(xy: np.ndarray) -> list[tuple[int, str]]:
     return sorted(picks.items())[:4]
 
 
-def covered_columns(xy: np.ndarray, row: int) -> frozenset:
-    """The package's covered columns of ``row`` (its fill, on a window around the triangle)."""
+def _covered_rows(xy: np.ndarray, rows: list[int]) -> dict[int, frozenset]:
+    """The package's covered columns of each of ``rows`` (its fill, once, on a window around
+    the triangle: an integer shift leaves the snapped grid, and so the coverage, as it is)."""
     c0 = math.floor(float(xy[:, 0].min())) - 2
-    r0 = min(math.floor(float(xy[:, 1].min())) - 2, row)
+    r0 = min(math.floor(float(xy[:, 1].min())) - 2, *rows)
     w = math.ceil(float(xy[:, 0].max())) + 3 - c0
-    h = max(math.ceil(float(xy[:, 1].max())) + 3, row + 1) - r0
+    h = max(math.ceil(float(xy[:, 1].max())) + 3, *(r + 1 for r in rows)) - r0
     cov = rasterize(Triangle(xy - np.array([c0, r0], dtype=float)), w, h).coverage
-    return frozenset((np.flatnonzero(cov[row - r0]) + c0).tolist())
+    return {r: frozenset((np.flatnonzero(cov[r - r0]) + c0).tolist()) for r in rows}
 
 
 # -- reading and comparing the answer ---------------------------------------------------------
