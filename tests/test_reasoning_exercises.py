@@ -4,11 +4,11 @@ are true and never give the answer away."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 import reasoning_solutions as sol
+from exercise_solutions import CORRECT
+from student_variants import DIFFERENT, KINDS, WRONG, _hiz_with
 
 import teachraster as tr
 from teachraster import exercises as ex
@@ -28,74 +28,6 @@ def _named(name, fn, kind, words):
     assert first.kind == kind, (kind, str(report))
     assert words in first.explanation, (words, first.explanation)
     return report
-
-
-# -- span ---------------------------------------------------------------------------------------
-def _span_by_testing(xy, row):
-    """Another correct span: test every candidate centre with exact fractions."""
-    from fractions import Fraction
-
-    v = [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
-    area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0])
-    if area == 0:
-        return (0, 0)
-    if area < 0:
-        v = [v[0], v[2], v[1]]
-    y, cols = Fraction(2 * row + 1, 2), []
-    lo = math.floor(min(float(x) for x, _ in xy)) - 1
-    for col in range(lo, math.ceil(max(float(x) for x, _ in xy)) + 2):
-        x, ok = Fraction(2 * col + 1, 2), True
-        for (ax, ay), (bx, by) in zip(v, v[1:] + v[:1]):
-            e = (bx - ax) * (y - ay) - (by - ay) * (x - ax)
-            top_left = by < ay or (by == ay and bx > ax)
-            ok &= e > 0 or (e == 0 and top_left)
-        if ok:
-            cols.append(col)
-    return (cols[0], cols[-1] + 1) if cols else (5, 5)
-
-
-def _span_variant(change):
-    def span(xy, row):
-        y = row + (0.0 if change == "top" else 0.5)
-        xs = []
-        for k in range(3):
-            (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
-            if ay != by and min(ay, by) <= y <= max(ay, by):
-                xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
-        if not xs:
-            return (0, 0)
-        left, right = min(xs), max(xs)
-        if change == "corners":
-            return math.ceil(left), math.ceil(right)
-        if change == "right":
-            return math.ceil(left - 0.5), math.floor(right - 0.5) + 1
-        return math.ceil(left - 0.5), math.ceil(right - 0.5)
-
-    return span
-
-
-# -- perspective_weights ---------------------------------------------------------------------
-
-
-# -- depth_passes ----------------------------------------------------------------------------
-def _depths(ties=False, mask=True, test_all=True, previous=False):
-    def depth_passes(depths, writes):
-        stored = last = math.inf
-        out = []
-        for d, w in zip(depths, writes):
-            against = last if previous else stored
-            ok = (d <= against) if ties else (d < against)
-            ok = ok or (not test_all and not w)
-            out.append(ok)
-            if ok and (w or not mask):
-                stored = d
-            last = d
-        return out
-
-    return depth_passes
-
-
-# -- safe_near -------------------------------------------------------------------------------
 
 
 # -- robust_fill -----------------------------------------------------------------------------
@@ -128,47 +60,6 @@ def _quad(change):
     return quad_derivatives
 
 
-# -- hiz_rejects -----------------------------------------------------------------------------
-def _hiz(change):
-    def hiz_rejects(xyz, row0, col0, size, buffer):
-        xyz = np.asarray(xyz, float)
-        if change == "vertex":
-            return bool(xyz[:, 2].min() >= buffer.max())
-        rows, cols = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
-        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
-        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
-        lam2 = ((x3 - x1) * (rows - y1) - (y3 - y1) * (cols - x1)) / -area
-        lam3 = ((x2 - x1) * (rows - y1) - (y2 - y1) * (cols - x1)) / area
-        plane = z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1)  # every centre: brute force
-        nearest = plane.min() if change == "no clamp" else max(plane.min(), xyz[:, 2].min())
-        if change == "strict":
-            return bool(nearest > buffer.max())
-        if change == "tile min":
-            return bool(nearest >= buffer.min())
-        return bool(nearest >= buffer.max())
-
-    return hiz_rejects
-
-
-# -- front_to_back ---------------------------------------------------------------------------
-def _layers(change):
-    def front_to_back(layers):
-        acc = np.zeros(4)
-        for c in np.asarray(layers, float).reshape(-1, 4):
-            t = 1 - acc[3]
-            if change == "reversed":
-                acc = c + acc * (1 - c[3])
-            elif change == "sum":
-                acc = acc + c
-            elif change == "double":
-                acc = np.r_[acc[:3] + t * c[3] * c[:3], acc[3] + t * c[3]]
-            else:
-                acc = acc + t * c
-        return acc
-
-    return front_to_back
-
-
 def step(bits):
     return 1 / (2**bits - 1)
 
@@ -178,63 +69,18 @@ def solve(s, z, gap, far):
     return s * far * z * z / (gap * far + s * z * z)
 
 
-# -- the tables: correct solutions written differently, typical mistakes --------------------
-CORRECT = [
-    ("span", sol.span),
-    ("span", _span_by_testing),
-    ("perspective_weights", sol.perspective_weights),
-    ("perspective_weights", lambda lam, w: (q := lam * (w[0] / w)) / q.sum()),
-    ("depth_passes", sol.depth_passes),
-    ("depth_passes", lambda d, w: np.array(_depths()(d, w), dtype=int)),
-    ("safe_near", sol.safe_near),
-    ("safe_near", lambda z, gap, far, bits: 1 / (gap * (2**bits - 1) / z**2 + 1 / far)),
-    ("robust_fill", sol.robust_fill),
-    ("quad_derivatives", sol.quad_derivatives),
-    ("quad_derivatives", _quad(None)),
-    ("hiz_rejects", sol.hiz_rejects),
-    ("hiz_rejects", _hiz(None)),
-    ("front_to_back", sol.front_to_back),
-    ("front_to_back", _layers(None)),
-]
-
-MISTAKES = [
-    ("span", _span_variant("corners"), "corners", "x = col"),
-    ("span", _span_variant("right"), "right inclusive", "right edge"),
-    ("span", _span_variant("top"), "row top", "y = row"),
-    ("perspective_weights", lambda lam, w: lam, "affine", "affine"),
-    ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "times w", "multiplied"),
-    ("perspective_weights", lambda lam, w: lam / w, "unnormalised", "sum to 1"),
-    ("depth_passes", _depths(ties=True), "ties", "use <, not <="),
-    ("depth_passes", _depths(mask=False), "glass writes", "leaves the buffer"),
-    ("depth_passes", _depths(test_all=False), "glass untested", "still tested"),
-    ("depth_passes", _depths(previous=True), "previous", "just before"),
-    ("depth_passes", lambda d, w: [True] * len(d), "all pass", "every fragment pass, always"),
-    ("depth_passes", lambda d, w: [False] * len(d), "none pass", "no fragment pass, ever"),
-    ("safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "2^bits − 1"),
-    ("safe_near", lambda z, g, f, b: solve(2 * step(b), z, g, f), "ndc", "NDC"),
-    ("safe_near", lambda z, g, f, b: step(b) * z * z / g, "infinite far", "(f − n)/f"),
-    ("robust_fill", _fill(raw=True), "no snapping", "snap them"),
-    ("robust_fill", _fill(rule="inclusive"), "E >= 0", "covered twice"),
-    ("quad_derivatives", _quad("unaligned"), "unaligned", "even rows"),
-    ("quad_derivatives", _quad("affine"), "affine", "perspective-correct"),
-    ("quad_derivatives", _quad("up"), "y up", "wrong sign"),
-    ("hiz_rejects", _hiz("vertex"), "vertex", "nearest vertex"),
-    ("hiz_rejects", _hiz("strict"), "strict", "use ≥"),
-    ("hiz_rejects", _hiz("tile min"), "tile min", "farthest depth bounds"),
-    ("front_to_back", _layers("reversed"), "reversed", "nearest"),
-    ("front_to_back", _layers("sum"), "no transmittance", "transmittance"),
-    ("front_to_back", _layers("double"), "double premultiplication", "premultiplied already"),
-]
+# Correct solutions written differently and typical mistakes (their words and kinds) are in
+# student_variants.py (DIFFERENT, WRONG, KINDS), run by test_checker_corpus.py.
 
 
-@pytest.mark.parametrize("name, fn", CORRECT, ids=[f"{n}-{k}" for k, (n, _) in enumerate(CORRECT)])
-def test_correct_solutions_written_differently_pass(name, fn):
-    _passes(name, fn)
-
-
-@pytest.mark.parametrize("name, fn, kind, words", MISTAKES, ids=[m[2] for m in MISTAKES])
-def test_each_typical_mistake_is_named_in_the_first_explanation(name, fn, kind, words):
-    _named(name, fn, kind, words)
+def test_every_issue_30_exercise_has_correct_variants_and_named_mistakes():
+    issue_30 = set(ex.names()) - set(CORRECT)
+    assert issue_30 == set(sol.CORRECT)
+    wrong = {name for name, _, _ in WRONG.values()}
+    different = {name for name, _ in DIFFERENT.values()}
+    frames = {f"broken_frame_{n}" for n in range(1, 7)}
+    assert issue_30 - frames <= wrong & different
+    assert {label for label, (name, _, _) in WRONG.items() if name in issue_30} <= set(KINDS)
 
 
 def test_perspective_weights_that_overflow_are_told_only_ratios_matter():
@@ -261,7 +107,7 @@ def test_quad_derivatives_clamped_at_helpers():
 
 
 def test_hiz_rejects_without_the_vertex_clamp():
-    report = ex.check("hiz_rejects", _hiz("no clamp"))
+    report = ex.check("hiz_rejects", _hiz_with(clamp=False))
     assert "no clamp" in {f.kind for f in report.failures}, str(report)
 
 
@@ -333,10 +179,14 @@ def test_broken_frame_numbers_are_checked():
         ex.broken_frame(7)
 
 
-WRONG = {name: fn for name, fn, _, _ in MISTAKES}
-WRONG["broken_frame_1"] = lambda: ("z-fighting", (24, 28))
-RIGHT = {name: fn for name, fn in CORRECT}
-RIGHT["broken_frame_1"] = lambda: ("depth function", (24, 28))
+RIGHT = dict(sol.CORRECT)
+FIRST_WRONG = {}
+for _name, _fn, _ in WRONG.values():
+    FIRST_WRONG.setdefault(_name, _fn)
+for _n in range(1, 7):  # a cause that is not the frame's
+    FIRST_WRONG.setdefault(
+        f"broken_frame_{_n}", lambda n=_n: ("sliver" if n != 6 else "z-fighting", (24, 28))
+    )
 
 
 @pytest.mark.parametrize("name", list(RIGHT))
@@ -349,7 +199,7 @@ def test_reports_draw_passing_failing_and_missing(name):
     def stub(*args):
         raise NotImplementedError
 
-    for fn in (RIGHT[name], WRONG[name], stub):
+    for fn in (RIGHT[name], FIRST_WRONG[name], stub):
         report = ex.check(name, fn)
         if fn is stub:
             assert report.not_implemented and "not implemented yet" in str(report)

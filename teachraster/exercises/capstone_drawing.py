@@ -14,6 +14,13 @@ import numpy as np
 from .scenes import DIFF_COLOUR, MARK_COLOUR
 
 
+def picture(spec, frame) -> np.ndarray:
+    """(H, W, 3) what the scene looks like (NaN where nothing was drawn)."""
+    if spec.glass:
+        return np.clip(frame.color[..., :3], 0, 1)
+    return np.clip(frame.image, 0, 1)
+
+
 def _axes(axes):
     import matplotlib.pyplot as plt
 
@@ -27,8 +34,6 @@ def _axes(axes):
 
 def draw_capstone(report, axes=None, pixel="first") -> list:
     """Draw ``report`` (a :class:`.capstone_render.CapstoneReport`) on three Axes; returns artists."""
-    from .capstone_render import picture
-
     axes = _axes(axes)
     spec = report.spec
     ref = picture(spec, report.reference)

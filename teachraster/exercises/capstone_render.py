@@ -82,13 +82,6 @@ def render_with(spec: CapstoneScene, overrides=None):
                   clear_color=(1.0, 1.0, 1.0, 1.0), trace=True, overrides=overrides)  # fmt: skip
 
 
-def picture(spec: CapstoneScene, frame) -> np.ndarray:
-    """(H, W, 3) what the scene looks like (NaN where nothing was drawn)."""
-    if spec.glass:
-        return np.clip(frame.color[..., :3], 0, 1)
-    return np.clip(frame.image, 0, 1)
-
-
 def _parts(spec: CapstoneScene, frame) -> list[np.ndarray]:
     out = []
     for name in spec.compare:

@@ -211,9 +211,7 @@ def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake
     def gives(kind):
         return lambda *args: variants(*args).get(kind)
 
-    return [Mistake(kind, text, gives=gives(kind)) for kind, text in words.items()] + list(
-        symptoms
-    )
+    return [Mistake(kind, text, gives=gives(kind)) for kind, text in words.items()] + list(symptoms)
 
 
 def copies(args) -> tuple:
