@@ -92,3 +92,27 @@ def test_compare_draws_three_panels_with_the_first_pixel_marked():
     fig, axes = plt.subplots(1, 3)
     stub.compare(axes)
     plt.close(fig)
+
+
+def test_the_time_limit_is_the_classes_and_prints_are_kept_aside(monkeypatch, capsys):
+    """An endless covers stops within the budget (raised by the lecturer's variable); a
+    debug print per pixel is kept aside, not sent line by line."""
+    from endless_loops import forever
+
+    from teachraster.exercises.running import BUDGET_VARIABLE
+
+    report = ex.capstone("grid", covers=forever, budget=0.2)
+    assert report.failures[0].kind == "timeout" and "0.2 s" in str(report), str(report)
+    monkeypatch.setenv(BUDGET_VARIABLE, "0.4")
+    report = ex.capstone("grid", covers=forever, budget=0.2)
+    assert "0.4 s" in str(report), str(report)
+    monkeypatch.delenv(BUDGET_VARIABLE)
+    capsys.readouterr()
+
+    def chatty(xy, p):
+        print("pixel", p)
+        return sol.covers(xy, p)
+
+    report = ex.capstone("grid", covers=chatty)
+    assert report.passed and report.printed is not None and "printed" in str(report)
+    assert capsys.readouterr().out.count("\n") < 100

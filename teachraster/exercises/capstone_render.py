@@ -18,17 +18,19 @@ yet"; an exception, a wrong type or an endless loop is reported with the functio
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import sys
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.scenes import get_scene
+from . import output
 from .capstone_explain import explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules
 from .report import Failure, Report
 from .running import budget as time_budget
-from .running import check_seconds, run_case
+from .running import effective_budget, run_case
 
 #: Frame size of every scene.
 W, H = 48, 36
@@ -104,8 +106,9 @@ def capstone(scene: str, *, budget: float = 30.0, **functions) -> CapstoneReport
     """Render capstone scene ``scene`` (:data:`SCENES`) with the student's ``functions``.
 
     Never raises or hangs because of a student's function: the render runs within
-    ``budget`` seconds; an exception, a wrong answer type or running out of time is a
-    failure naming the function.
+    ``budget`` seconds of CPU (raised to ``TEACHRASTER_CHECK_BUDGET`` where a lecturer sets
+    it higher); an exception, a wrong answer type or running out of time is a failure naming
+    the function. What the functions print is kept aside and shown, capped, after the report.
     """
     if not isinstance(scene, str) or scene not in SCENES:
         raise ValueError(f"scene must be one of {list(SCENES)}, got {scene!r}")
@@ -121,10 +124,14 @@ def capstone(scene: str, *, budget: float = 30.0, **functions) -> CapstoneReport
     used = {name: functions[name] for name in spec.uses}
     reference = render_with(spec)
     tracker = Tracker()
-    seconds = check_seconds(budget)
-    with time_budget(seconds):
+    seconds = effective_budget(budget)
+    with time_budget(seconds), output.captured() as printed:
         outcome = run_case(lambda: render_with(spec, rules(used, tracker)), seconds)
-    return _report(spec, used, reference, outcome, tracker)
+    report = _report(spec, used, reference, outcome, tracker)
+    if printed.lines:  # kept aside during the render (a print per pixel), shown capped
+        report = replace(report, printed=printed.summary())
+        printed.replay(sys.stdout)
+    return report
 
 
 def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
@@ -184,6 +191,9 @@ class CapstoneReport(Report):
     unfinished: str | None = None
 
     def __str__(self) -> str:
+        return self._with_printed(self._summary())
+
+    def _summary(self) -> str:
         uses = ", ".join(self.spec.uses)
         head = f"{self.exercise} ({self.spec.words}; your {uses})"
         if self.not_implemented:
