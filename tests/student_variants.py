@@ -445,6 +445,170 @@ def premultiplied_no_one_minus(src, dst):
     return [s + d for s, d in zip(src, dst)]
 
 
+# == issue 30's exercises =========================================================================
+
+
+def _span_with(y_offset=0.5, left=lambda x: math.ceil(x - 0.5), right=lambda x: math.ceil(x - 0.5)):
+    """The span from the crossings of y = row + y_offset with the three edges."""
+
+    def span(xy, row):
+        y = row + y_offset
+        xs = []
+        for k in range(3):
+            (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
+            if ay != by and min(ay, by) <= y <= max(ay, by):
+                xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+        if not xs:
+            return (0, 0)
+        return left(min(xs)), right(max(xs))
+
+    return span
+
+
+def span_by_testing(xy, row):
+    """Every candidate centre of the row tested with exact fractions and the top-left rule."""
+    v = [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
+    if edge_function(*v) == 0:
+        return (0, 0)
+    if edge_function(*v) < 0:
+        v = [v[0], v[2], v[1]]
+    y, cols = Fraction(2 * row + 1, 2), []
+    for col in range(math.floor(min(x for x, _ in v)) - 1, math.ceil(max(x for x, _ in v)) + 2):
+        p = (Fraction(2 * col + 1, 2), y)
+        if all(
+            edge_function(a, b, p) > 0 or (edge_function(a, b, p) == 0 and _owns(a, b))
+            for a, b in zip(v, v[1:] + v[:1])
+        ):
+            cols.append(col)
+    return (cols[0], cols[-1] + 1) if cols else (7, 7)
+
+
+def weights_ratios(lam, w):
+    """λ_i · (w_1 / w_i): only ratios of w, so nothing overflows; then normalised."""
+    q = np.asarray(lam, float) * (w[0] / np.asarray(w, float))
+    return q / q.sum()
+
+
+def weights_overflowing(lam, w):
+    """Right, except that 1/w overflows for the catalogue's w near 1e-310."""
+    q = np.asarray(lam, float) / np.asarray(w, float)
+    return q / q.sum()
+
+
+def _passes_with(ties=False, mask=True, test_all=True, previous=False):
+    def depth_passes(depths, writes):
+        stored = last = math.inf
+        out = []
+        for d, w in zip(depths, writes):
+            against = last if previous else stored
+            ok = (d <= against) if ties else (d < against)
+            ok = ok or (not test_all and not w)
+            out.append(ok)
+            if ok and (w or not mask):
+                stored = d
+            last = d
+        return out
+
+    return depth_passes
+
+
+def _near_with(step, infinite_far=False):
+    def safe_near(z, gap, far, bits):
+        s = step(bits)
+        if infinite_far:
+            return s * z * z / gap
+        return s * far * z * z / (gap * far + s * z * z)  # step (f − n) z² / (f n) = gap
+
+    return safe_near
+
+
+def _fill_with(snap=True, tie=_owns, dtype=np.float64, absolute=False):
+    """A vectorised fill of a window at ``origin`` (row, col) with knobs: raw vertices, another
+    tie rule, float32, the absolute form A x + B y + C."""
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        v = np.asarray(xy, dtype=float)
+        v = np.rint(v * 256) / 256 if snap else v
+        if edge_function(*v) == 0:
+            return np.zeros((height, width), dtype=bool)
+        if edge_function(*v) < 0:
+            v = v[[0, 2, 1]]
+        y = (origin[0] + np.arange(height)[:, None] + 0.5).astype(dtype)
+        x = (origin[1] + np.arange(width)[None, :] + 0.5).astype(dtype)
+        inside = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k].astype(dtype), v[(k + 1) % 3].astype(dtype)
+            if absolute:
+                e = (b[0] - a[0]) * y - (b[1] - a[1]) * x + (b[1] * a[0] - b[0] * a[1])
+            else:
+                e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+            inside &= (e > 0) | ((e == 0) & tie(a, b))
+        return inside
+
+    return robust_fill
+
+
+def _quad_with(aligned=True, perspective=True, y_down=True, clamp=False):
+    def quad_derivatives(xy, w, f, row, col):
+        xy, w, f = (np.asarray(a, dtype=float) for a in (xy, w, f))
+
+        def value(x, y):
+            lam = np.array([edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], (x, y))
+                            for k in range(3)]) / edge_function(*xy)  # fmt: skip
+            if not perspective:
+                return float(lam @ f)
+            q = np.clip(lam, 0, 1) / w if clamp else lam / w
+            return float(q @ f / q.sum())
+
+        r0, c0 = (row - row % 2, col - col % 2) if aligned else (row, col)
+        ul = value(c0 + 0.5, r0 + 0.5)
+        dy = value(c0 + 0.5, r0 + 1.5) - ul
+        return value(c0 + 1.5, r0 + 0.5) - ul, dy if y_down else -dy
+
+    return quad_derivatives
+
+
+def _hiz_with(compare=lambda near, buffer: near >= np.max(buffer), vertex_only=False, clamp=True):
+    """Brute force: the depth plane at every pixel centre of the tile (its smallest value is
+    the nearest), no nearer than the nearest vertex unless ``clamp`` is off."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+        if vertex_only:
+            return bool(compare(min(z1, z2, z3), buffer))
+        rows, cols = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        lam2 = ((cols - x1) * (y3 - y1) - (rows - y1) * (x3 - x1)) / area
+        lam3 = ((x2 - x1) * (rows - y1) - (y2 - y1) * (cols - x1)) / area
+        plane = z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1)
+        nearest = max(plane.min(), min(z1, z2, z3)) if clamp else plane.min()
+        return bool(compare(nearest, buffer))
+
+    return hiz_rejects
+
+
+def _under_with(step):
+    def front_to_back(layers):
+        acc = np.zeros(4)
+        for c in np.asarray(layers, dtype=float).reshape(-1, 4):
+            acc = step(acc, c)
+        return acc
+
+    return front_to_back
+
+
+def _under(acc, c):
+    return acc + (1 - acc[3]) * c
+
+
+def front_to_back_by_reversing(layers):
+    """Over, from the farthest layer to the nearest, onto transparent black."""
+    out = np.zeros(4)
+    for c in np.asarray(layers, dtype=float).reshape(-1, 4)[::-1]:
+        out = c + (1 - c[3]) * out
+    return out
+
+
 # == the tables ====================================================================================
 
 
@@ -481,6 +645,22 @@ DIFFERENT = {
     "all four corners": ("classify_block", lambda *a: _classify(*a, corner_trick=False)),
     "half-plane clipping against the diamond": ("line_pixels", line_half_planes),
     "float32 over": ("over", over_float32),
+    # issue 30
+    "span by testing every centre": ("span", span_by_testing),
+    "perspective weights from ratios of w": ("perspective_weights", weights_ratios),
+    "depth passes as 0/1 ints": (
+        "depth_passes",
+        lambda d, w: np.array(_passes_with()(d, w), dtype=int),
+    ),  # fmt: skip
+    "safe near from 1/n": (
+        "safe_near",
+        lambda z, gap, far, bits: 1 / (gap * (2**bits - 1) / z**2 + 1 / far),
+    ),  # fmt: skip
+    "robust fill, vectorised": ("robust_fill", _fill_with()),
+    "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
+    "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
+    "front to back by reversing": ("front_to_back", front_to_back_by_reversing),
+    "front to back, under": ("front_to_back", _under_with(_under)),
     "numpy over_premultiplied": (
         "over_premultiplied",
         lambda s, d: np.asarray(s) + np.asarray(d) * (1 - s[3]),
@@ -661,6 +841,87 @@ WRONG = {
         premultiplied_no_one_minus,
         "not scaled by (1 − α)",
     ),  # fmt: skip
+    # span (issue 30)
+    "span at pixel corners": (
+        "span",
+        _span_with(left=math.ceil, right=math.ceil),
+        "x = col",
+    ),  # fmt: skip
+    "span, right edge included": (
+        "span",
+        _span_with(right=lambda x: math.floor(x - 0.5) + 1),
+        "exactly on the right edge",
+    ),  # fmt: skip
+    "span at the pixels' top": ("span", _span_with(y_offset=0.0), "y = row"),
+    # perspective_weights
+    "weights affine": ("perspective_weights", lambda lam, w: lam, "affine"),
+    "weights times w": ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "multiplied"),
+    "weights unnormalised": ("perspective_weights", lambda lam, w: lam / w, "sum to 1"),
+    # depth_passes
+    "passes with <=": ("depth_passes", _passes_with(ties=True), "use <, not <="),
+    "glass writes depth": ("depth_passes", _passes_with(mask=False), "leaves the buffer"),
+    "glass untested": ("depth_passes", _passes_with(test_all=False), "still tested"),
+    "against the previous fragment": ("depth_passes", _passes_with(previous=True), "just before"),
+    "every fragment passes": (
+        "depth_passes",
+        lambda d, w: [True] * len(d),
+        "every fragment pass, always",
+    ),  # fmt: skip
+    # safe_near
+    "near with 1/2^bits": ("safe_near", _near_with(lambda b: 1 / 2**b), "2^bits − 1"),
+    "near with NDC's step": ("safe_near", _near_with(lambda b: 2 / (2**b - 1)), "NDC"),
+    "near for an infinite far": (
+        "safe_near",
+        _near_with(lambda b: 1 / (2**b - 1), infinite_far=True),
+        "(f − n)/f",
+    ),  # fmt: skip
+    # robust_fill
+    "fill of raw vertices": ("robust_fill", _fill_with(snap=False), "snap them"),
+    "fill with E >= 0": ("robust_fill", _fill_with(tie=lambda a, b: True), "covered twice"),
+    # quad_derivatives
+    "quad of this pixel": ("quad_derivatives", _quad_with(aligned=False), "even rows"),
+    "quad affine": ("quad_derivatives", _quad_with(perspective=False), "perspective-correct"),
+    "quad with y up": ("quad_derivatives", _quad_with(y_down=False), "wrong sign"),
+    # hiz_rejects
+    "Hi-Z by the nearest vertex": ("hiz_rejects", _hiz_with(vertex_only=True), "nearest vertex"),
+    "Hi-Z strictly behind": (
+        "hiz_rejects",
+        _hiz_with(lambda near, buffer: near > np.max(buffer)),
+        "use ≥",
+    ),  # fmt: skip
+    "Hi-Z against the tile's nearest": (
+        "hiz_rejects",
+        _hiz_with(lambda near, buffer: near >= np.min(buffer)),
+        "farthest depth bounds",
+    ),  # fmt: skip
+    # front_to_back
+    "layers, each new one on top": (
+        "front_to_back",
+        _under_with(lambda acc, c: c + (1 - c[3]) * acc),
+        "nearest",
+    ),  # fmt: skip
+    "layers added up": ("front_to_back", _under_with(lambda acc, c: acc + c), "transmittance"),
+    "layers premultiplied twice": (
+        "front_to_back",
+        _under_with(lambda acc, c: acc + (1 - acc[3]) * np.r_[c[:3] * c[3], c[3]]),
+        "premultiplied already",
+    ),  # fmt: skip
+    # broken frames (lesson 11): a wrong cause gets a hint, never the answer
+    "frame 1 blamed on z-fighting": (
+        "broken_frame_1",
+        lambda: ("z-fighting", (24, 28)),
+        "distinct stored depths",
+    ),  # fmt: skip
+    "frame 2 blamed on the depth function": (
+        "broken_frame_2",
+        lambda: ("depth function", (24, 28)),
+        "no fragment failed the depth test",
+    ),  # fmt: skip
+    "frame 4, a pixel the mistake left alone": (
+        "broken_frame_4",
+        lambda: ("missing premultiplication", (0, 0)),
+        "is the same in this frame as in the intended one",
+    ),  # fmt: skip
 }
 
 
@@ -682,6 +943,40 @@ def _fill_in_from_exercise_solutions():
 
 
 _fill_in_from_exercise_solutions()
+
+
+#: The kind the first failure of each of issue 30's wrong variants has (the summary shows one
+#: failure of each kind first).
+KINDS = {
+    "span at pixel corners": "corners",
+    "span, right edge included": "right inclusive",
+    "span at the pixels' top": "row top",
+    "weights affine": "affine",
+    "weights times w": "times w",
+    "weights unnormalised": "unnormalised",
+    "passes with <=": "ties",
+    "glass writes depth": "glass writes",
+    "glass untested": "glass untested",
+    "against the previous fragment": "previous",
+    "every fragment passes": "all pass",
+    "near with 1/2^bits": "2^bits",
+    "near with NDC's step": "ndc",
+    "near for an infinite far": "infinite far",
+    "fill of raw vertices": "no snapping",
+    "fill with E >= 0": "E >= 0",
+    "quad of this pixel": "unaligned",
+    "quad affine": "affine",
+    "quad with y up": "y up",
+    "Hi-Z by the nearest vertex": "vertex",
+    "Hi-Z strictly behind": "strict",
+    "Hi-Z against the tile's nearest": "tile min",
+    "layers, each new one on top": "reversed",
+    "layers added up": "no transmittance",
+    "layers premultiplied twice": "double premultiplication",
+    "frame 1 blamed on z-fighting": "cause",
+    "frame 2 blamed on the depth function": "cause",
+    "frame 4, a pixel the mistake left alone": "pixel",
+}
 
 
 #: Two mistakes at once: (exercise, function, words each in the summary).
@@ -715,6 +1010,10 @@ def _package():
         ),  # fmt: skip
         "fill": lambda xy, w, h: tr.rasterize(tr.Triangle(xy), w, h).coverage,
         "split_point": lambda v: tr.split_point(v),
+        "perspective_weights": lambda lam, w: tr.perspective_weights(np.asarray(lam)[None], w)[0],
+        "robust_fill": lambda xy, w, h, origin=(0, 0): (
+            tr.rasterize(tr.Triangle(np.asarray(xy) - [origin[1], origin[0]]), w, h).coverage
+        ),  # fmt: skip
     }
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from student_variants import DIFFERENT, PACKAGE, TWO_MISTAKES, WRONG
+from student_variants import DIFFERENT, KINDS, PACKAGE, TWO_MISTAKES, WRONG
 
 from teachraster import exercises as ex
 
@@ -32,6 +32,8 @@ def test_the_first_explanation_names_the_mistake(label):
     first = report.failures[0]
     assert words in first.explanation, f"{label}: {first.explanation}"
     assert all(f.kind for f in report.failures), "every failure has a kind"
+    if label in KINDS:
+        assert first.kind == KINDS[label], (label, first.kind)
     if "float32" not in words:
         assert "float32" not in first.explanation, first.explanation
 

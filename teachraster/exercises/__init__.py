@@ -1,8 +1,8 @@
 """Exercises with a checker that explains every wrong answer by the rules.
 
 >>> from teachraster import exercises as ex
->>> ex.names()
-['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near', 'depth_to_unorm', 'coverage_fraction', 'resolve', 'mip_level', 'bilinear', 'trilinear', 'classify_block', 'line_pixels', 'over', 'over_premultiplied']
+>>> ex.names()[:8]
+['edge_function', 'covers', 'fill', 'split_point', 'barycentric', 'perspective', 'depth_test', 'clip_near']
 >>> report = ex.check("depth_test", lambda incoming, stored: incoming <= stored)
 >>> report.passed
 False
@@ -26,6 +26,9 @@ How it is built (one engine for every exercise):
 - :mod:`.package_answers` tells when the answer is the package's own function (it does not
   count); :mod:`.scenes` and :mod:`.picture_scenes` draw the student's function in a whole
   picture beside the package's (``report.compare(ax)``).
+- ``capstone(scene, covers=...)`` renders a built-in scene with the student's own functions
+  beside the package's (:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames
+  lesson 11's exercises diagnose (:mod:`.broken_frames`).
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one
@@ -33,7 +36,9 @@ top-left rule and one reference for every answer. matplotlib is imported only wh
 is drawn (:meth:`Report.plot`).
 """
 
+from .broken_frames import CAUSES, broken_frame
+from .capstone_render import capstone
 from .checks import check, names
 from .report import Failure, Report
 
-__all__ = ["Failure", "Report", "check", "names"]
+__all__ = ["CAUSES", "Failure", "Report", "broken_frame", "capstone", "check", "names"]

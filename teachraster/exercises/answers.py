@@ -45,6 +45,14 @@ def _refuse_none_and_text(value, what: str) -> None:
         )
 
 
+def refuse_non_answers(value, what: str) -> None:
+    """Refuse None, text, dicts and sets (:class:`~.running.WrongAnswerType`), for answers
+    read by an exercise's own converter."""
+    _refuse_none_and_text(value, what)
+    if isinstance(value, (dict, set, frozenset)):
+        raise WrongAnswerType(f"returned a {type(value).__name__}, not {what}")
+
+
 def _array(value, what: str, max_size: int) -> np.ndarray:
     """``value`` as an array of at most ``max_size`` elements, after the common refusals."""
     _refuse_none_and_text(value, what)

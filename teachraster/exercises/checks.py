@@ -22,7 +22,7 @@ from .value_checks import check_exercise
 
 def _registry() -> dict[str, Callable[[], Exercise]]:
     """Each exercise's name, in course order, and how to build its description."""
-    from . import blending, later, lines
+    from . import blending, later, lines, reasoning_tasks
     from . import coverage_checks as cc
     from . import depth_clipping as dc
     from . import edges_spans as es
@@ -41,6 +41,7 @@ def _registry() -> dict[str, Callable[[], Exercise]]:
         "line_pixels": lambda: lines.LINE_PIXELS,  # 09 (lesson 12): lines and blending
         "over": lambda: blending.OVER_EXERCISE,
         "over_premultiplied": lambda: blending.PREMULTIPLIED_EXERCISE,
+        **reasoning_tasks.EXERCISES,  # issue 30: reasoning tasks, lessons 07-12, broken frames
     }
 
 

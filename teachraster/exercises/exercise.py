@@ -198,6 +198,22 @@ class Exercise:
         return out
 
 
+def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake] = ()) -> list:
+    """A mistakes table from a function ``variants(*args) -> {kind: wrong answer}`` and the
+    words of each kind, in ``words``' order (a variant missing from a case says nothing
+    there), then ``symptoms``.
+
+    >>> table = variant_mistakes(lambda x: {"doubled": 2 * x}, {"doubled": "you doubled it"})
+    >>> table[0].kind, table[0].gives(3)
+    ('doubled', 6)
+    """
+
+    def gives(kind):
+        return lambda *args: variants(*args).get(kind)
+
+    return [Mistake(kind, text, gives=gives(kind)) for kind, text in words.items()] + list(symptoms)
+
+
 def copies(args) -> tuple:
     """Fresh copies of a case's arguments (a student may write into them), lists included."""
     return tuple(_copy(a) for a in args)

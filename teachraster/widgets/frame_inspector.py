@@ -98,6 +98,24 @@ def click_image(alt: str = ""):
     return ClickImage(alt=alt)
 
 
+def _checked_frames(frames) -> dict | None:
+    """``frames`` (name: traced Frame, all one size) or None; errors name the argument."""
+    if frames is None:
+        return None
+    if not isinstance(frames, dict) or not frames:
+        raise TypeError(f"frames must be a non-empty dict of name: Frame, got {frames!r:.60}")
+    shapes = set()
+    for name, frame in frames.items():
+        if getattr(getattr(frame, "trace", None), "debug", None) is None:
+            raise ValueError(f"frames[{name!r}] must be a Frame rendered with trace=True")
+        if getattr(frame, "image", None) is None and frame.color is None:
+            raise ValueError(f"frames[{name!r}] has no picture: render RGBA attributes")
+        shapes.add(frame.triangle_id.shape)
+    if len(shapes) != 1:
+        raise ValueError(f"frames must all have one size, got {sorted(shapes)}")
+    return dict(frames)
+
+
 class FrameInspector(Holdable):
     """A built-in scene rendered with ``trace=True``: a view chooser, a pixel's history.
 
@@ -116,6 +134,9 @@ class FrameInspector(Holdable):
     glass : bool
         Draw the scene as glass (:func:`glass_frame`): the history then shows the colour
         buffer before and after every fragment.
+    frames : dict of str to Frame, optional
+        Traced frames to inspect instead of the built-in scenes (lesson 11's broken frames):
+        the chooser offers their names; samples, depth test and glass then do nothing.
     backend, style
         As for the other widgets.
 
@@ -145,11 +166,16 @@ class FrameInspector(Holdable):
     def __init__(self, scene: str = "intersecting_triangles", width: int = 64,
                  height: int = 48, *, view: str = "image", row: int | None = None,
                  col: int | None = None, samples: int = 1, depth_test: bool = True,
-                 glass: bool = False, backend: str = "auto",
+                 glass: bool = False, frames: dict | None = None, backend: str = "auto",
                  style: str | None = None) -> None:  # fmt: skip
+        self.frames = _checked_frames(frames)
+        if self.frames:
+            scene = scene if scene in self.frames else next(iter(self.frames))
+            height, width = next(iter(self.frames.values())).triangle_id.shape
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
-        self.scene = widgets.Dropdown(options=list(SCENES), value=scene, description="scene")
+        choices = list(self.frames) if self.frames else list(SCENES)
+        self.scene = widgets.Dropdown(options=choices, value=scene, description="scene")
         self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
         self.depth_test = widgets.Checkbox(value=depth_test, description="depth test")
@@ -174,6 +200,7 @@ class FrameInspector(Holdable):
             self._make_displays()
         for control in (self.scene, self.samples, self.depth_test, self.glass):
             control.observe(self._rerender, "value")
+            control.disabled = bool(self.frames) and control is not self.scene
         self.view.observe(self._view_changed, "value")
         for control in (self.row, self.col):
             control.observe(self._pixel_changed, "value")
@@ -192,7 +219,9 @@ class FrameInspector(Holdable):
     # -- state ---------------------------------------------------------------------------
     def _render(self) -> None:
         options = dict(samples=self.samples.value, depth_test=self.depth_test.value)
-        if self.glass.value:
+        if self.frames:
+            self.frame = self.frames[self.scene.value]
+        elif self.glass.value:
             self.frame = glass_frame(self.scene.value, self.width, self.height, **options)
         else:
             self.frame = render(get_scene(self.scene.value), None, self.width, self.height,
@@ -209,7 +238,9 @@ class FrameInspector(Holdable):
         ax.clear()
         self.cax.set_visible(self.view.value != "image")
         if self.view.value == "image":
-            shown = self.frame.color[..., :3] if self.glass.value else self.frame.image
+            shown = getattr(self.frame, "image", None)
+            if shown is None or self.glass.value:
+                shown = self.frame.color[..., :3]
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
             ax.set_title(f"{self.scene.value}: the frame", fontsize="small")

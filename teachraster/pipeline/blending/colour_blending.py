@@ -31,7 +31,8 @@ are), and says how many of those landed on an earlier fragment rather than the c
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -62,6 +63,10 @@ class BlendState:
         :data:`COLOR_FORMATS`.
     buffer : bool
         Whether there is a colour buffer at all: the attributes are RGBA (k = 4).
+    equation : callable or None
+        A caller's blend rule ``equation(src (4,), dst (4,)) -> (4,)`` replacing the
+        factors' equation for every fragment blended (``overrides``, see
+        :mod:`teachraster.pipeline.planning.overrides`); None: the package's.
     """
 
     mode: str | None
@@ -70,6 +75,7 @@ class BlendState:
     clear_color: np.ndarray
     color_format: str = "float64"
     buffer: bool = True
+    equation: Callable | None = field(default=None, compare=False)
 
     @property
     def blending(self) -> bool:
@@ -78,8 +84,9 @@ class BlendState:
 
 
 def check_blend(blend, depth_write, clear_color, attrs: np.ndarray,
-                color_format="float64") -> BlendState:  # fmt: skip
-    """``render``'s colour-buffer arguments checked (naming them)."""
+                color_format="float64", equation=None) -> BlendState:  # fmt: skip
+    """``render``'s colour-buffer arguments checked (naming them); ``equation`` a caller's
+    blend rule (it needs a blend mode: it replaces that mode's equation)."""
     n = len(attrs)
     if isinstance(depth_write, bool | np.bool_):
         writes = np.full(n, as_bool("depth_write", depth_write))
@@ -100,10 +107,13 @@ def check_blend(blend, depth_write, clear_color, attrs: np.ndarray,
         check_choice("blend", blend, (None, *BLEND_MODES))
         mode, factors = blend, (None if blend is None else BLEND_MODES[blend])
     rgba = attrs.shape[2] == 4
+    if equation is not None and mode is None:
+        raise ValueError("overrides: the blend rule replaces a blend equation; give blend= a "
+                         "mode (such as 'over') for it to replace")  # fmt: skip
     if mode is not None and not rgba:
         raise ValueError(f"attrs: blending needs RGBA attributes (k = 4), got k = {attrs.shape[2]}")
     return BlendState(mode, factors, writes, store_colour(clear, color_format), color_format,
-                      rgba)  # fmt: skip
+                      rgba, equation)  # fmt: skip
 
 
 def store_colour(rgba: np.ndarray, color_format: str) -> np.ndarray:
@@ -141,7 +151,10 @@ def _write(src, dst, state: BlendState):
     if state.color_format != "float64":
         src = np.clip(src, 0.0, 1.0)  # GL clamps to a normalised target's range first
     mixed = 0
-    if state.blending:
+    if state.equation is not None:  # a caller's rule blends every fragment, one by one
+        src = _by_rule(src, dst, state.equation)
+        mixed = len(src)
+    elif state.blending:
         mix = ~_replaces(src, state)
         mixed = int(np.count_nonzero(mix))
         if mixed == len(src):
@@ -150,6 +163,17 @@ def _write(src, dst, state: BlendState):
             src = src.copy()
             src[mix] = apply_blend(src[mix], dst[mix], *state.factors)
     return store_colour(src, state.color_format), mixed
+
+
+def _by_rule(src: np.ndarray, dst: np.ndarray, equation: Callable) -> np.ndarray:
+    """(n, 4): ``equation(src[i], dst[i])`` row by row (ValueError unless 4 values each)."""
+    out = np.empty((len(src), 4))
+    for i in range(len(src)):
+        value = np.asarray(equation(src[i].copy(), dst[i].copy()), dtype=np.float64)
+        if value.shape != (4,):
+            raise ValueError(f"the blend rule must return 4 values (RGBA), got shape {value.shape}")
+        out[i] = value
+    return out
 
 
 def _replaces(src: np.ndarray, state: BlendState) -> np.ndarray:

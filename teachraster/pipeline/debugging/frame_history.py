@@ -406,7 +406,8 @@ def _values(frags, at, dbg) -> dict:
     # value depends on its fragment alone, so forcing "attributes", which evaluates every
     # fragment of the frame, would give the same values here at the cost of the frame's).
     forced = a.forced - {"attributes"}
-    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, forced)
+    values, _ = interpolate_stage(frags, visible, dbg.clipped, a.interpolation, forced,
+                                  a.overrides)  # fmt: skip
     return {int(f): tuple(float(v) for v in values[i]) for i, f in enumerate(at)}
 
 
@@ -513,7 +514,7 @@ def _colours(frame, dbg, row, col, records) -> list[HistoryRecord]:
         frags = dbg.fragments
         at = np.flatnonzero((frags.row == row) & (frags.col == col))
         a = dbg.inputs
-        values = fragment_values(frags, at, dbg.clipped, a.interpolation, a.forced)
+        values = fragment_values(frags, at, dbg.clipped, a.interpolation, a.forced, a.overrides)
         source = {int(frags.tri[f]): _tuple(values[i]) for i, f in enumerate(at)}
     buffer: dict[int, np.ndarray] = {}
     out = []

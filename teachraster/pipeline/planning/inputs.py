@@ -27,6 +27,7 @@ from ...core.validate import (
     short_repr,
 )
 from ..visibility.depth import DEPTH_FORMATS
+from .overrides import StageOverrides, check_overrides
 from .render_plan import parse_force
 
 #: Bytes per pixel of render's frame-sized buffers without attributes (triangle id, depth,
@@ -39,7 +40,8 @@ class RenderInputs:
     """Checked arguments of :func:`teachraster.pipeline.render_triangles.render`.
 
     ``clip`` is (N, 3, 4) float64, ``attrs`` (N, 3, k) float64 (k = 0 without attributes),
-    ``forced`` the set of effect names ``force`` asked for; the rest are plain Python values.
+    ``forced`` the set of effect names ``force`` asked for; ``overrides`` the rules that
+    replace the package's own (:mod:`.overrides`; None: none); the rest are plain Python values.
     """
 
     clip: np.ndarray
@@ -54,6 +56,7 @@ class RenderInputs:
     trace: bool
     subpixel_bits: int | None
     max_pixels: int
+    overrides: StageOverrides | None = None
 
 
 def check_force(force) -> frozenset[str]:
@@ -103,7 +106,7 @@ def check_size(width, height, max_pixels, bytes_per_pixel: int = FRAME_BYTES):
 
 def check_render(
     clip, width, height, *, attrs, depth_test, cull, depth_format, interpolation, force,
-    trace, subpixel_bits, max_pixels,
+    trace, subpixel_bits, max_pixels, overrides=None,
 ) -> RenderInputs:  # fmt: skip
     """Check every argument of ``render`` (same names and meanings) and return them clean.
 
@@ -121,11 +124,12 @@ def check_render(
     check_choice("interpolation", interpolation, MODES)
     subpixel_bits = check_bits(subpixel_bits)
     forced = check_force(force)
+    overrides = check_overrides(overrides)
     clip = check_clip(clip)
     attrs = check_attrs(attrs, len(clip))
     # Now that k is known, the frame's true cost (the size check above used k = 0).
     check_pixels(width, height, max_pixels, FRAME_BYTES + 8 * attrs.shape[2])
     return RenderInputs(
         clip, attrs, width, height, depth_test, cull, depth_format, interpolation, forced,
-        trace, subpixel_bits, max_pixels,
+        trace, subpixel_bits, max_pixels, overrides,
     )  # fmt: skip

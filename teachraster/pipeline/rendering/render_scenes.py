@@ -17,6 +17,7 @@ from ...core.snapping import SUBPIXEL_BITS
 from ...core.validate import check_choice
 from ..geometry.camera import Camera
 from ..planning.inputs import check_force, check_size
+from ..planning.overrides import check_overrides, rule
 from ..planning.render_plan import Effect, Plan
 from ..texturing.quad_derivatives import may_minify
 from ..texturing.texture import TEXTURE_FILTERS, sample
@@ -24,6 +25,7 @@ from ..texturing.texture_filters import MIPMAP_FILTERS
 from .msaa_derivatives import sample_derivatives
 from .render_triangles import Frame
 from .render_triangles import render as render_clip
+from .rule_shading import resolve_by_rule, texture_by_rule
 from .scenes import Scene
 
 
@@ -77,6 +79,7 @@ def render_scene(
     the image is the MSAA resolve: every sample shows its triangle's colour (shaded once per
     pixel and triangle), and uncovered samples count as ``background`` (default white, the
     figure background an uncovered pixel shows); pixels with no covered sample stay NaN.
+    ``overrides`` may also replace the filters and the resolve (:mod:`.rule_shading`).
 
     ``texture_filter`` is any filter of :func:`teachraster.pipeline.texture.sample`. The
     mipmapped ones need the screen-space derivatives of ``uv``: they are computed from 2×2
@@ -99,6 +102,7 @@ def render_scene(
     width, height, max_pixels = check_size(width, height, max_pixels)
     check_choice("texture_filter", texture_filter, TEXTURE_FILTERS)
     forced = check_force(force)
+    overrides = kwargs["overrides"] = check_overrides(kwargs.get("overrides"))
     mesh = scene.mesh
     names = sorted(mesh.attrs) if "attributes" in forced else list(scene.uses)
     skipped = sorted(set(mesh.attrs) - set(names))
@@ -135,12 +139,10 @@ def render_scene(
 
     if frame.sample_triangle_id is None:
         image = _shade(scene, frame.attrs, frame.triangle_id, layout, texture_filter,
-                       frame.ddx, frame.ddy)  # fmt: skip
+                       frame.ddx, frame.ddy, overrides=overrides)  # fmt: skip
     else:  # MSAA: each sample holds its triangle's colour (shaded once per pixel), resolved
-        colours = _shade(scene, frame.sample_attrs, frame.sample_triangle_id, layout,
-                         texture_filter, sample_ddx, sample_ddy, full=False)  # fmt: skip
-        image = frame.resolve(colours, background)
-        image[~frame.coverage] = np.nan  # no sample covered: uncovered, as without MSAA
+        shading = (layout, texture_filter, sample_ddx, sample_ddy, overrides)
+        image = _resolved(scene, frame, shading, background)
     return SceneFrame(
         triangle_id=frame.triangle_id,
         attrs=frame.attrs,
@@ -156,6 +158,21 @@ def render_scene(
         ddx=frame.ddx,
         ddy=frame.ddy,
     )
+
+
+def _resolved(scene, frame, shading, background) -> np.ndarray:
+    """The MSAA image: every sample's colour (shaded once per pixel and triangle) resolved,
+    by the package or by a caller's rule; NaN where no sample is covered."""
+    layout, texture_filter, ddx, ddy, overrides = shading
+    colours = _shade(scene, frame.sample_attrs, frame.sample_triangle_id, layout,
+                     texture_filter, ddx, ddy, full=False, overrides=overrides)  # fmt: skip
+    own = rule(overrides, "resolve")
+    if own is None:
+        image = frame.resolve(colours, background)
+    else:
+        image = resolve_by_rule(colours, frame.sample_triangle_id, background, own)
+    image[~frame.coverage] = np.nan  # no sample covered: uncovered, as without MSAA
+    return image
 
 
 def _msaa_footprint(frame, clip, attrs, layout, effects, kwargs):
@@ -180,8 +197,12 @@ def _corner_attributes(mesh, names):
     return (np.concatenate(blocks, axis=2) if blocks else None), layout
 
 
-def _texture(texture, uv, texture_filter, ddx=None, ddy=None) -> np.ndarray:
-    """The textured image; where a mipmapped filter has no derivatives, level 0 (λ = −∞)."""
+def _texture(texture, uv, texture_filter, ddx=None, ddy=None, overrides=None) -> np.ndarray:
+    """The textured image; where a mipmapped filter has no derivatives, level 0 (λ = −∞);
+    a caller's "bilinear" or "trilinear" rule (``overrides``) filters pixel by pixel."""
+    own = rule(overrides, texture_filter) if texture_filter in ("bilinear", "trilinear") else None
+    if own is not None:
+        return texture_by_rule(texture, uv, texture_filter, ddx, ddy, own)
     if texture_filter not in MIPMAP_FILTERS:
         return sample(texture, uv, filter=texture_filter)
     if ddx is None:
@@ -217,17 +238,17 @@ def _derivatives_why(effects, scene, texture_filter, kwargs):
 
 
 def _shade(scene: Scene, attrs, ids, layout, texture_filter, ddx=None, ddy=None,
-           full=True) -> np.ndarray:  # fmt: skip
+           full=True, overrides=None) -> np.ndarray:  # fmt: skip
     """The scene's colour from interpolated ``attrs`` (..., k) and triangle ``ids`` (...);
     ``ddx``/``ddy`` the quad derivatives a mipmapped texture filter needs: of every channel
     (``full``), or of the uv channels only."""
     if scene.shading == "texture":
         uv = layout["uv"]
         if ddx is None:
-            return _texture(scene.texture, attrs[..., uv], texture_filter)
+            return _texture(scene.texture, attrs[..., uv], texture_filter, overrides=overrides)
         if full:
             ddx, ddy = ddx[..., uv], ddy[..., uv]
-        return _texture(scene.texture, attrs[..., uv], texture_filter, ddx, ddy)
+        return _texture(scene.texture, attrs[..., uv], texture_filter, ddx, ddy, overrides)
     if scene.shading == "color":
         return attrs[..., layout["color"]]
     return _palette(ids)

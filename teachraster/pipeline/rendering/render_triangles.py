@@ -34,6 +34,7 @@ from ...core.validate import as_bool, as_real
 from ..antialiasing.multisampling import multisample_stage
 from ..blending.colour_blending import blend_stage, check_blend, replaced_colour
 from ..planning.inputs import check_render
+from ..planning.overrides import SINGLE_SAMPLE_RULES, rule
 from ..planning.render_plan import Plan, depth_test_effect, hi_z_effect
 from ..texturing.quad_derivatives import QuadTrace, as_derivative_mode, derivatives_stage
 from ..visibility.hierarchical_z import HiZResult, replay_stage
@@ -335,6 +336,7 @@ def render(
     depth_write=True,
     clear_color=(0.0, 0.0, 0.0, 0.0),
     color_format: str = "float64",
+    overrides=None,
 ) -> Frame:
     """Render clip-space triangles into a ``height`` × ``width`` frame (bad arguments raise
     a ValueError or TypeError naming them, see :mod:`teachraster.pipeline.inputs`).
@@ -379,6 +381,8 @@ def render(
         What the colour buffer stores: float64 as computed, or GL's ``SRGB8_ALPHA8`` with
         ``GL_FRAMEBUFFER_SRGB`` (clamped and rounded to 8 bits after every layer;
         :mod:`teachraster.pipeline.blending`).
+    overrides : StageOverrides or dict, optional
+        Rules replacing the package's own, element by element: :mod:`.overrides`.
 
     Examples
     --------
@@ -392,12 +396,13 @@ def render(
     """
     a = check_render(clip, width, height, attrs=attrs, depth_test=depth_test, cull=cull,
                      depth_format=depth_format, interpolation=interpolation, force=force,
-                     trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels)  # fmt: skip
+                     trace=trace, subpixel_bits=subpixel_bits, max_pixels=max_pixels,
+                     overrides=overrides)  # fmt: skip
     clip, attrs, width, height, subpixel_bits = a.clip, a.attrs, a.width, a.height, a.subpixel_bits
-    forced = a.forced
-    offsets, centroid = _check_samples(samples, centroid)
+    forced, own_blend = a.forced, rule(a.overrides, "blend")
+    offsets, centroid = _check_samples(samples, centroid, a.overrides)
     mode, where = _check_derivatives(derivatives, derivatives_where, len(clip), offsets)
-    blending = check_blend(blend, depth_write, clear_color, attrs, color_format)
+    blending = check_blend(blend, depth_write, clear_color, attrs, color_format, own_blend)
     clipped, clipping = clip_stage(clip, attrs, width, height, subpixel_bits, forced)
     window = viewport_stage(clipped, width, height)
     culled, culling = cull_stage(window, cull, subpixel_bits)
@@ -419,11 +424,11 @@ def _render_single(clipped, window, culled, effects, a, derivatives, colour) -> 
     width, height, forced, interpolation = a.width, a.height, a.forced, a.interpolation
     # with Hi-Z: hidden blocks never become fragments (blending keeps them all, marked)
     frags, cut = _fill(window, culled, a, writes, blending.blending)
-    visible, depth_testing = depth_stage(
-        frags, window, width, height, a.depth_test, a.depth_format, forced, writes
-    )
+    visible, depth_testing = depth_stage(frags, window, width, height, a.depth_test,
+                                         a.depth_format, forced, writes,
+                                         rule(a.overrides, "depth"))  # fmt: skip
     values, (perspective, attributes) = interpolate_stage(
-        frags, visible, clipped, interpolation, forced
+        frags, visible, clipped, interpolation, forced, a.overrides
     )
     ddx, ddy, quads, derivs = derivatives_stage(
         frags, visible, clipped, (width, height), *derivatives, interpolation, forced, a.trace,
@@ -437,7 +442,7 @@ def _render_single(clipped, window, culled, effects, a, derivatives, colour) -> 
         return with_colour(frame, blending)
     # the colour of every fragment that passed, evaluated as the attributes are
     passed = np.flatnonzero(visible.passed)
-    src = fragment_values(frags, passed, clipped, interpolation, forced)
+    src = fragment_values(frags, passed, clipped, interpolation, forced, a.overrides)
     return with_colour(frame, blending, *blend_stage(visible.pixel[passed], src,
                                                      (height, width), 1, blending))  # fmt: skip
 
@@ -489,11 +494,13 @@ def _fill(window, culled, a, writes=None, keep_all=False):
     triangles' depth masks (only writers hide anything). Returns the fragments and the
     hook (None without it)."""
     cut = None
-    if a.depth_test:
+    coverage = rule(a.overrides, "coverage")
+    # Hi-Z drops blocks by the package's coverage and depth test: not when either is replaced
+    if a.depth_test and coverage is None and rule(a.overrides, "depth") is None:
         image = (a.height, a.width)
         cut = HiZCut(window[:, :, 2], image, a.depth_format, "hi_z" in a.forced,
                      a.trace or keep_all, writes=writes)  # fmt: skip
-    return fill_stage(window, a.width, a.height, a.subpixel_bits, culled, cut), cut
+    return fill_stage(window, a.width, a.height, a.subpixel_bits, culled, cut, coverage), cut
 
 
 def _plan(cut, frags, visible, effects, forced) -> Plan:
@@ -555,11 +562,17 @@ def _render_multisampled(clipped, window, culled, effects, offsets, a, centroid,
     return with_colour(frame, blending, *blended)
 
 
-def _check_samples(samples, centroid):
+def _check_samples(samples, centroid, overrides=None):
     """The sample offsets (S, 2), or None for one sample at the centre (``centroid``, a
-    bool, then changes nothing), and ``centroid``."""
+    bool, then changes nothing), and ``centroid``; the one-sample rules of ``overrides``
+    need one sample (ValueError)."""
     centroid = as_bool("centroid", centroid)
-    return (None if is_single(samples) else as_samples(samples)), centroid
+    offsets = None if is_single(samples) else as_samples(samples)
+    single = [n for n in overrides.given if n in SINGLE_SAMPLE_RULES] if overrides else []
+    if offsets is not None and single:
+        raise ValueError(f"overrides: the {', '.join(single)} rule(s) replace one-sample stages; "
+                         "render with samples=1 (under MSAA only blend and resolve apply)")  # fmt: skip
+    return offsets, centroid
 
 
 def _check_derivatives(derivatives, where, n, offsets):
@@ -664,7 +677,9 @@ def _record(clipped, window, culled, frags, visible, quads, cut, a, colour) -> R
     depth masks and the blend state."""
     writes, blending = colour
     width, height, depth_format = a.width, a.height, a.depth_format
-    hiz = replay_stage(frags, window, visible, width, height, depth_format)
+    hiz = None  # with a replaced depth rule there is no package early-z to replay
+    if rule(a.overrides, "depth") is None:
+        hiz = replay_stage(frags, window, visible, width, height, depth_format)
     return RenderTrace(
         clip_status=clipped.status,
         clip_polygons=clipped.polygons,

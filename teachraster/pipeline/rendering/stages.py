@@ -45,6 +45,7 @@ from ...core.edges import setup_edges
 from ...core.interpolation import blend_each, convex_weights, normalised_weights, weights_per_row
 from ..geometry.clipping import CLIPPED, DROPPED, INSIDE, ClipResult, classify, clip_triangles
 from ..geometry.viewport import to_window
+from ..planning.overrides import rule
 from ..planning.render_plan import (
     Effect,
     attributes_effect,
@@ -54,7 +55,9 @@ from ..planning.render_plan import (
     perspective_effect,
 )
 from ..rasterization.batched_fill import Fragments, rasterize_batch
+from ..rasterization.rule_coverage import fill_by_rule
 from ..visibility.depth import quantize
+from ..visibility.rule_depth import passed_by_rule
 from ..visibility.zbuffer import last_written, passed_on_arrival, resolve
 
 
@@ -111,16 +114,21 @@ def cull_stage(window: np.ndarray, cull: str | None, bits: int | None) -> tuple[
 
 
 def fill_stage(
-    window: np.ndarray, width: int, height: int, bits: int | None, culled: np.ndarray, spans=None
-) -> Fragments:
+    window: np.ndarray, width: int, height: int, bits: int | None, culled: np.ndarray, spans=None,
+    coverage=None,
+) -> Fragments:  # fmt: skip
     """4. Every covered pixel centre of every triangle not culled, in drawing order.
 
     Coverage is decided on the snapped grid (identical to :func:`teachraster.rasterize`);
     the barycentrics ``Fragments.lam`` come from the unsnapped positions, as GPUs set up
     attributes (so the new vertices clipping creates interpolate exactly). Filling always
     runs, so it has no plan entry. ``spans`` (Hi-Z, :mod:`teachraster.pipeline.hiz_tiles`)
-    drops hidden blocks of raster lines before they become fragments.
+    drops hidden blocks of raster lines before they become fragments. ``coverage``, a
+    caller's rule (:mod:`teachraster.pipeline.planning.overrides`), decides instead, centre
+    by centre (:func:`~teachraster.pipeline.rasterization.rule_coverage.fill_by_rule`).
     """
+    if coverage is not None:
+        return fill_by_rule(window[:, :, :2], width, height, bits, culled, coverage)
     return rasterize_batch(
         window[:, :, :2], width, height, subpixel_bits=bits, skip=culled, snapped_weights=False,
         spans=spans,
@@ -189,6 +197,7 @@ def depth_stage(
     depth_format: str,
     forced,
     writes=None,
+    depth_rule=None,
 ) -> tuple[Visibility, Effect]:
     """5. The z-buffer (Ritschel, *Interpolation and z-buffering*): who is visible where.
 
@@ -203,20 +212,28 @@ def depth_stage(
     ``writes`` (M,) bool, per triangle, is its depth mask (``depth_write``; None: all
     write): a triangle that does not write is tested but leaves the buffer as it was, so
     the pixel shows the last fragment that passed and the buffer keeps the last written
-    depth (the test then runs in drawing order, :func:`passed_on_arrival`).
+    depth (the test then runs in drawing order, :func:`passed_on_arrival`). ``depth_rule``,
+    a caller's rule (:mod:`teachraster.pipeline.planning.overrides`), decides instead which
+    of each pixel's fragments pass
+    (:func:`~teachraster.pipeline.visibility.rule_depth.passed_by_rule`).
     """
     depth = frags.plane(window[:, :, 2])  # a fresh array: float64 needs no copy
     if depth_format != "float64":
         depth = quantize(depth, depth_format)
     pixel = frags.row * width + frags.col
     force = "depth_test" in forced and depth_test
-    if writes is None:
+    if writes is None and (depth_rule is None or not depth_test):
         winner, tested = resolve(pixel, depth, width * height, depth_test)
         pixels = np.flatnonzero(winner >= 0)
         effect = depth_test_effect(depth_test, force, tested, len(pixels))
         return Visibility(depth, pixel, depth_test, pixels, winner[pixels], tested), effect
-    mask = writes[frags.tri]
-    passed = passed_on_arrival(pixel, depth, mask) if depth_test else np.ones(len(pixel), bool)
+    mask = np.ones(len(frags.tri), dtype=bool) if writes is None else writes[frags.tri]
+    if depth_test and depth_rule is not None:
+        passed = passed_by_rule(pixel, depth, mask, depth_rule)
+    elif depth_test:
+        passed = passed_on_arrival(pixel, depth, mask)
+    else:
+        passed = np.ones(len(pixel), bool)
     winner, stored = last_written(pixel, passed, mask, width * height)
     tested = int((np.bincount(pixel, minlength=width * height) > 1).sum())
     pixels = np.flatnonzero(winner >= 0)
@@ -228,14 +245,17 @@ def depth_stage(
 
 
 def interpolate_stage(
-    frags: Fragments, visible: Visibility, clipped: ClipResult, interpolation: str, forced
-) -> tuple[np.ndarray, tuple[Effect, Effect]]:
+    frags: Fragments, visible: Visibility, clipped: ClipResult, interpolation: str, forced,
+    overrides=None,
+) -> tuple[np.ndarray, tuple[Effect, Effect]]:  # fmt: skip
     """6. Attributes at the visible pixels: (v, k) values, and the perspective and
     attributes effects.
 
     Perspective-correct (f/w over 1/w, Ek, *Triangles and Perspective Correct
     Interpolation*, eq. 19) only for triangles whose three w differ, where affine
-    interpolation would be wrong; at visible pixels only, unless forced.
+    interpolation would be wrong; at visible pixels only, unless forced. ``overrides``
+    (:mod:`teachraster.pipeline.planning.overrides`) may replace the weights and the
+    perspective weights (:func:`_weights_by_rule`).
     """
     w, attrs = clipped.clip[:, :, 3], clipped.attrs
     k = attrs.shape[2]
@@ -245,7 +265,7 @@ def interpolate_stage(
     every = "attributes" in forced
     shade = np.arange(len(frags.tri)) if every else visible.winner
     divide_all = "perspective" in forced and interpolation == "perspective"
-    values = _interpolate(frags, shade, w, attrs, unequal, divide_all)
+    values = _interpolate(frags, shade, w, attrs, unequal, divide_all, overrides)
     if every:
         values = values[visible.winner]
     # Count the triangles whose visible (or, forced, all) fragments were really divided.
@@ -258,7 +278,7 @@ def interpolate_stage(
     return values, (perspective, attributes)
 
 
-def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
+def _interpolate(frags, shade, w, attrs, unequal, force_perspective, overrides=None):
     """Attributes (len(shade), k) at fragments ``shade``, perspective-correct where needed.
 
     Each row's value depends on its fragment alone (not on the others evaluated with it),
@@ -270,6 +290,9 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     tri = frags.tri[shade]
     x, y = frags.col[shade] + 0.5, frags.row[shade] + 0.5
     persp = np.ones(len(tri), dtype=bool) if force_perspective else unequal[tri]
+    if rule(overrides, "weights") or rule(overrides, "perspective"):
+        weights = _weights_by_rule(frags, tri, x, y, w, persp, overrides)
+        return blend_each(weights, attrs, index=tri)
     # Weights from the unsnapped set-up can be slightly negative at a covered centre that
     # snapping brought inside an edge: made convex, so every value stays within range.
     if persp.all():  # the common case: 1/w folded into the barycentric pass
@@ -281,7 +304,8 @@ def _interpolate(frags, shade, w, attrs, unequal, force_perspective):
     return blend_each(weights, attrs, index=tri)
 
 
-def fragment_values(frags, index, clipped: ClipResult, interpolation: str, forced) -> np.ndarray:
+def fragment_values(frags, index, clipped: ClipResult, interpolation: str, forced,
+                    overrides=None) -> np.ndarray:  # fmt: skip
     """Attributes (n, k) at fragments ``index``, exactly as :func:`interpolate_stage`
     evaluates them (the same bits): for the colour of every fragment that reaches the
     colour buffer, and for the pixel history."""
@@ -290,7 +314,8 @@ def fragment_values(frags, index, clipped: ClipResult, interpolation: str, force
     if interpolation == "affine":
         unequal[:] = False
     divide_all = "perspective" in forced and interpolation == "perspective"
-    return _interpolate(frags, np.asarray(index), w, clipped.attrs, unequal, divide_all)
+    return _interpolate(frags, np.asarray(index), w, clipped.attrs, unequal, divide_all,
+                        overrides)  # fmt: skip
 
 
 def _perspective_weights(frags, tri, x, y, w):
@@ -309,3 +334,41 @@ def _perspective_weights(frags, tri, x, y, w):
         redo = tri[bad]
         weights[bad] = weights_per_row(frags.weights_at(redo, x[bad], y[bad]), w[redo])
     return weights
+
+
+def _weights_by_rule(frags, tri, x, y, w, persp, overrides) -> np.ndarray:
+    """The weights of the vertex values (n, 3) with a caller's rules, row by row.
+
+    ``weights(xy, p)`` gives the barycentrics at (x, y) from the positions the package sets
+    its weights up from (else the package's); they are made convex as the package makes its
+    own (:func:`convex_weights`: only rows with a negative weight change, a centre snapping
+    brought inside an edge). ``perspective(lam, w)`` then gives the weights of the values
+    wherever the package would divide by w (``persp``; else the package's
+    :func:`weights_per_row`); elsewhere the barycentrics are the weights.
+    """
+    own_weights, own_perspective = rule(overrides, "weights"), rule(overrides, "perspective")
+    if own_weights is None:
+        lam = frags.weights_at(tri, x, y)
+    else:
+        xy = frags.vertices
+        lam = np.array([_three("weights", own_weights(xy[t].copy(), np.array([px, py])))
+                        for t, px, py in zip(tri.tolist(), x.tolist(), y.tolist())])  # fmt: skip
+        lam = lam.reshape(len(tri), 3)
+    lam = convex_weights(lam)
+    out = lam.copy()
+    rows = np.flatnonzero(persp)
+    if own_perspective is None:
+        if len(rows):
+            out[rows] = weights_per_row(lam[rows], w[tri[rows]])
+        return out
+    for i in rows.tolist():
+        out[i] = _three("perspective", own_perspective(lam[i].copy(), w[tri[i]].copy()))
+    return out
+
+
+def _three(name: str, value) -> np.ndarray:
+    """A rule's answer as three float64 weights (ValueError naming the rule otherwise)."""
+    arr = np.asarray(value, dtype=np.float64)
+    if arr.shape != (3,):
+        raise ValueError(f"the {name} rule must return 3 weights, got shape {arr.shape}")
+    return arr

@@ -1,0 +1,85 @@
+"""The capstone's three panels: your frame, the package's, and where they differ.
+
+As CS184 and CS248 show a student's render beside the reference with a difference image; the
+first differing pixel (or the one asked for) is outlined in all three. matplotlib is imported
+only here, when a report is drawn.
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+
+from .scenes import DIFF_COLOUR, MARK_COLOUR
+
+
+def picture(spec, frame) -> np.ndarray:
+    """(H, W, 3) what the scene looks like (NaN where nothing was drawn)."""
+    if spec.glass:
+        return np.clip(frame.color[..., :3], 0, 1)
+    return np.clip(frame.image, 0, 1)
+
+
+def _axes(axes):
+    import matplotlib.pyplot as plt
+
+    if axes is None:
+        return list(plt.subplots(1, 3, figsize=(10, 3.6), layout="constrained")[1])
+    axes = list(np.ravel(axes))
+    if len(axes) != 3:
+        raise ValueError(f"axes must be three Axes, got {len(axes)}")
+    return axes
+
+
+def draw_capstone(report, axes=None, pixel="first") -> list:
+    """Draw ``report`` (a :class:`.capstone_render.CapstoneReport`) on three Axes; returns artists."""
+    axes = _axes(axes)
+    spec = report.spec
+    ref = picture(spec, report.reference)
+    mine = None if report.mine is None else picture(spec, report.mine)
+    wrong = report.differing_pixels()
+    h, w = ref.shape[:2]
+    artists = []
+    titles = (f"{spec.name}: yours", "the package's", f"{len(wrong)} pixel(s) differ")
+    for ax, title in zip(axes, titles):
+        ax.set_title(title, fontsize="small")
+        ax.set_xticks([])
+        ax.set_yticks([])
+    artists += _image(axes[1], ref)
+    if mine is None:
+        artists += _image(axes[0], np.ones_like(ref))
+        why = report.failures[0].explanation if report.failures else "not implemented yet"
+        artists.append(axes[0].text(0.5, 0.5, "\n".join(textwrap.wrap(why, 30)[:8]),
+                                    transform=axes[0].transAxes, ha="center", va="center",
+                                    fontsize="x-small", color=DIFF_COLOUR))  # fmt: skip
+    else:
+        artists += _image(axes[0], mine)
+    grey = np.nan_to_num(ref, nan=1.0).mean(axis=2, keepdims=True) * 0.35 + 0.65
+    diff = np.repeat(grey, 3, axis=2)
+    if len(wrong):
+        diff[wrong[:, 0], wrong[:, 1]] = (0.84, 0.19, 0.12)  # DIFF_COLOUR
+    artists.append(axes[2].imshow(diff, extent=(0, w, h, 0), interpolation="nearest"))
+    mark = _mark(report, wrong, pixel)
+    if mark is not None:
+        r, c = mark
+        for ax in axes:
+            artists += ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
+                               color=MARK_COLOUR, lw=2)  # fmt: skip
+        axes[2].set_xlabel(f"pixel ({r}, {c}) outlined", fontsize="x-small")
+    return artists
+
+
+def _image(ax, rgb):
+    h, w = rgb.shape[:2]
+    shown = np.where(np.isnan(rgb), 1.0, rgb)
+    return [ax.imshow(shown, extent=(0, w, h, 0), interpolation="nearest")]
+
+
+def _mark(report, wrong, pixel):
+    if pixel is None:
+        return None
+    if isinstance(pixel, str):
+        return None if not len(wrong) else (int(wrong[0][0]), int(wrong[0][1]))
+    r, c = pixel
+    return int(r), int(c)

@@ -1,0 +1,183 @@
+"""Why one pixel of the student's capstone frame differs: the stage where the histories part.
+
+Both frames are traced, so ``frame.history(row, col)`` tells each pixel's story in
+submission order (:mod:`teachraster.pipeline.debugging.frame_history`). The records are
+walked side by side; the first pair that disagrees names the stage:
+
+- one covers the centre and the other does not: **coverage** (the student's ``covers`` is
+  asked again, and the top-left rule says why the package decides otherwise);
+- both cover it but one passes the depth test: the **depth test** (the pixel's fragments,
+  their depths and depth writes, the student's ``depth_passes`` against the package's);
+- both pass with other values: **interpolation** (``barycentric``, then
+  ``perspective_weights``, against the package's weights at that centre);
+- the same fragment leaves other colours behind: **blending** (``over``).
+
+When every record agrees, the difference lies after the pipeline: **texture filtering**
+(``bilinear``, ``trilinear``) or the MSAA **resolve**. The student's functions are called
+again only through :func:`.running.run_checker` (a strange answer costs a plain sentence).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.barycentrics import barycentric
+from ..core.interpolation import convex_weights, weights_per_row
+from ..core.snapping import snap
+from ..pipeline.texturing.mip_pyramid import mipmap
+from ..pipeline.texturing.texture import sample
+from ..pipeline.texturing.texture_filters import mip_level
+from ..pipeline.visibility.zbuffer import passed_on_arrival
+from .coverage import explain_pixel as explain_coverage
+from .running import last_line, run_checker
+from .scalars import vec
+
+#: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
+COVERED = ("hi_z", "failed_depth", "passed")
+
+
+def explain_pixel(spec, used, mine, reference, pixel) -> tuple[str, str]:
+    """(stage, explanation) of why ``pixel`` of ``mine`` differs from ``reference``."""
+    row, col = pixel
+    if spec.uses != ("resolve",):
+        ours = {(r.piece, r.sample): r for r in reference.history(row, col).records}
+        for rm in mine.history(row, col).records:
+            rr = ours.get((rm.piece, rm.sample))
+            if rr is None:
+                continue
+            said = _record_difference(used, reference, pixel, rm, rr)
+            if said is not None:
+                return said
+    return _shading(spec, used, reference, pixel)
+
+
+def _record_difference(used, reference, pixel, rm, rr):
+    covered_m, covered_r = rm.outcome in COVERED, rr.outcome in COVERED
+    if covered_m != covered_r:
+        return "coverage", _coverage(used, reference, pixel, rr, covered_r)
+    if (rm.outcome == "passed") != (rr.outcome == "passed"):
+        return "depth test", _depth(used, reference, pixel)
+    if rm.value and rr.value and not np.allclose(rm.value, rr.value, rtol=1e-9, atol=1e-9):
+        return "interpolation", _interpolation(used, reference, pixel, rr)
+    if rm.color_after and not np.allclose(rm.color_after, rr.color_after, rtol=1e-9, atol=1e-9):
+        return "blending", _blending(used, pixel, rr)
+    return None
+
+
+def _call(used, name, *args):
+    """The student's ``name`` on copies of ``args``: (value, "") or (None, why not)."""
+    fn = used.get(name)
+    if fn is None:
+        return None, ""
+
+    def body():
+        try:
+            return fn(*(a.copy() if isinstance(a, np.ndarray) else a for a in args)), ""
+        except Exception as exc:  # noqa: BLE001 - a student's bug is reported, not raised
+            return None, f"your {name} raised {last_line(exc)} here"
+
+    return run_checker(body, (None, f"your {name} did not answer here in time"))
+
+
+def _coverage(used, reference, pixel, rr, covered) -> str:
+    row, col = pixel
+    xy = snap(reference.trace.window[rr.piece, :, :2])
+    p = np.array([col + 0.5, row + 0.5])
+    yours, error = _call(used, "covers", xy, p)
+    asked = f"covers({_points(xy)}, {vec(p)})"
+    said = error or f"your {asked} returned {yours!r}"
+    why, _, _ = explain_coverage(xy, p, covered)
+    return f"triangle {rr.triangle}: {said}; the package: {why}"
+
+
+def _points(xy) -> str:
+    return "[" + ", ".join(vec(v) for v in xy) + "]"
+
+
+def _depth(used, reference, pixel) -> str:
+    row, col = pixel
+    records = [r for r in reference.history(row, col).records if r.outcome in COVERED]
+    depths = np.array([r.depth for r in records])
+    writes = np.array([r.depth_write for r in records])
+    expected = passed_on_arrival(np.zeros(len(depths), np.int64), depths, writes)
+    yours, error = _call(used, "depth_passes", depths, writes)
+    said = error or f"your depth_passes returned {_bools(yours)}"
+    return (f"the fragments of triangles {[r.triangle for r in records]} reach it in drawing "
+            f"order with depths {vec(depths)} and depth writes {_bools(writes)}: {said}, the "
+            f"package's test passes {_bools(expected)} (strictly nearer than the depth last "
+            "written)")  # fmt: skip
+
+
+def _bools(values) -> str:
+    try:
+        return "[" + ", ".join("True" if bool(v) else "False" for v in values) + "]"
+    except TypeError:
+        return repr(values)
+
+
+def _interpolation(used, reference, pixel, rr) -> str:
+    row, col = pixel
+    debug = reference.trace.debug
+    xy = debug.fragments.vertices[rr.piece]
+    w = debug.clipped.clip[rr.piece, :, 3]
+    p = np.array([col + 0.5, row + 0.5])
+    ours = convex_weights(barycentric(xy, p[None]))[0]
+    head = f"triangle {rr.triangle} at {vec(p)}, vertices {_points(xy)}"
+    if "barycentric" in used:
+        yours, error = _call(used, "barycentric", xy, p)
+        if error or yours is None or not np.allclose(yours, ours, rtol=1e-9, atol=1e-9):
+            said = error or f"your barycentric returned {vec(yours, ours)}"
+            return f"{head}: {said}; the package's weights are {vec(ours, yours)}"
+    mu = ours if np.all(w == w[0]) else weights_per_row(ours[None], w[None])[0]
+    yours, error = _call(used, "perspective_weights", ours, w)
+    said = error or f"your perspective_weights(λ, w) returned {vec(yours, mu)}"
+    return (f"{head}: λ = {vec(ours)} and w = {vec(w)}; {said}, the package's are "
+            f"{vec(mu, yours)}")  # fmt: skip
+
+
+def _blending(used, pixel, rr) -> str:
+    src, dst = np.array(rr.color), np.array(rr.color_before)
+    yours, error = _call(used, "over", src, dst)
+    said = error or f"your over(src, dst) returned {vec(yours, rr.color_after)}"
+    return (f"triangle {rr.triangle}'s fragment src = {vec(src)} lands on dst = {vec(dst)}: "
+            f"{said}, the package's blend gives {vec(rr.color_after, yours)}")  # fmt: skip
+
+
+def _shading(spec, used, reference, pixel) -> tuple[str, str]:
+    """Every record agrees: the texture filter or the resolve after the pipeline differs."""
+    row, col = pixel
+    if "bilinear" in used or "trilinear" in used:
+        return "texture filtering", _texture(spec, used, reference, row, col)
+    if "resolve" in used:
+        return "resolve", _resolve(used, reference, row, col)
+    return "frame", "your frame differs here, yet every record of the pixel's history agrees"
+
+
+def _texture(spec, used, reference, row, col) -> str:
+    from ..pipeline.rendering.scenes import get_scene
+
+    tex = get_scene(spec.scene).texture
+    uv = reference.attr("uv")[row, col]
+    head = f"every record of its history agrees; at uv = {vec(uv)}"
+    if "bilinear" in used:
+        ours = sample(tex, uv[None], "bilinear")[0]
+        yours, error = _call(used, "bilinear", tex, uv, "repeat")
+        said = error or f"your bilinear(texture, uv, 'repeat') returned {vec(yours, ours)}"
+        return f"{head} {said}, the package's bilinear filter gives {vec(ours, yours)}"
+    uvs = reference.layout["uv"]
+    lod = float(mip_level(reference.ddx[row, col, uvs], reference.ddy[row, col, uvs], tex.shape))
+    ours = reference.image[row, col]
+    yours, error = _call(used, "trilinear", mipmap(tex), uv, lod, "repeat")
+    said = error or f"your trilinear(pyramid, uv, {lod:.4g}, 'repeat') returned {vec(yours, ours)}"
+    return f"{head} {said}, the package's trilinear filter gives {vec(ours, yours)}"
+
+
+def _resolve(used, reference, row, col) -> str:
+    colours = reference.sample_attrs[row, col]
+    ids = reference.sample_triangle_id[row, col]
+    ours = reference.image[row, col]
+    yours, error = _call(used, "resolve", colours, ids, np.ones(3))
+    said = error or f"your resolve returned {vec(yours, ours)}"
+    return (f"its samples show triangles {ids.tolist()} with colours "
+            f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
+            f"{said}, the package's resolve gives {vec(ours, yours)}")  # fmt: skip

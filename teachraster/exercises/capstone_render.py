@@ -1,0 +1,222 @@
+"""The capstone: the student's own functions render the built-in scenes.
+
+``capstone(scene, covers=..., barycentric=..., ...)`` plugs the functions the exercises asked
+for into the pipeline through its stage overrides
+(:mod:`teachraster.pipeline.planning.overrides`: one place per stage, no monkeypatching),
+renders the scene with them and without them (the package's own rules: the reference), and
+compares the two frames pixel by pixel. Each differing pixel is explained through its pixel
+history (:mod:`.capstone_explain`): the first record where the two histories part says which
+stage diverged (coverage, the depth test, interpolation, blending) and the student's function
+is called again there, beside the package's answer; where every record agrees, the shading
+after the pipeline (texture filtering, the MSAA resolve) is compared.
+
+Each scene is small (48 × 36) and uses only the functions of its section of the course
+(:data:`SCENES`), except the last, which uses them all: a student earns each scene's point
+on its own. An unfinished function (``NotImplementedError``) makes the scene "not implemented
+yet"; an exception, a wrong type or an endless loop is reported with the function's name.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from ..pipeline.rendering.render_scenes import render
+from ..pipeline.rendering.scenes import get_scene
+from . import output
+from .capstone_explain import explain_pixel
+from .capstone_rules import FUNCTIONS, Tracker, rules
+from .report import Failure, Report
+from .running import budget as time_budget
+from .running import effective_budget, run_case
+
+#: Frame size of every scene.
+W, H = 48, 36
+
+
+@dataclass(frozen=True)
+class CapstoneScene:
+    """One scene of the capstone: what is rendered, with which functions, what is compared."""
+
+    name: str
+    words: str
+    uses: tuple[str, ...]
+    scene: str
+    options: dict = field(default_factory=dict)
+    compare: tuple[str, ...] = ("image",)
+    glass: bool = False
+
+
+SCENES = {s.name: s for s in (
+    CapstoneScene("grid", "a grid of quads: every centre covered once, both windings",
+                  ("covers",), "grid", compare=("triangle_id", "overdraw")),
+    CapstoneScene("single_triangle", "one triangle with red, green and blue corners",
+                  ("barycentric",), "single_triangle", compare=("attrs",)),
+    CapstoneScene("textured_floor", "a floor to the horizon: perspective-correct uv",
+                  ("barycentric", "perspective_weights"), "textured_floor", compare=("attrs",)),
+    CapstoneScene("intersecting_triangles", "two triangles piercing each other",
+                  ("depth_passes",), "intersecting_triangles", compare=("triangle_id", "depth")),
+    CapstoneScene("glass", "the two triangles as glass: blended over, no depth writes",
+                  ("depth_passes", "over"), "intersecting_triangles", compare=("color",),
+                  glass=True),
+    CapstoneScene("floor_bilinear", "the floor's checkerboard filtered bilinearly",
+                  ("bilinear",), "textured_floor", {"texture_filter": "bilinear"}),
+    CapstoneScene("floor_trilinear", "the floor's checkerboard filtered trilinearly",
+                  ("trilinear",), "textured_floor", {"texture_filter": "trilinear"}),
+    CapstoneScene("cube_msaa", "a cube with 4 samples per pixel, resolved",
+                  ("resolve",), "cube", {"samples": 4}),
+    CapstoneScene("sphere", "a textured sphere: all of your rasteriser at once",
+                  ("covers", "barycentric", "perspective_weights", "depth_passes", "bilinear"),
+                  "uv_sphere", {"texture_filter": "bilinear"}, ("triangle_id", "image")),
+)}  # fmt: skip
+
+
+def render_with(spec: CapstoneScene, overrides=None):
+    """The scene's traced frame, with ``overrides`` (None: the package's own rules)."""
+    scene = get_scene(spec.scene)
+    if not spec.glass:
+        return render(scene, None, W, H, trace=True, overrides=overrides, **spec.options)
+    clip = scene.clip(W / H)
+    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.6)], axis=2)
+    return render(clip, W, H, attrs=rgba, blend="over", depth_write=False,
+                  clear_color=(1.0, 1.0, 1.0, 1.0), trace=True, overrides=overrides)  # fmt: skip
+
+
+def _parts(spec: CapstoneScene, frame) -> list[np.ndarray]:
+    out = []
+    for name in spec.compare:
+        value = frame.overlay("overdraw") if name == "overdraw" else getattr(frame, name)
+        value = np.asarray(value, dtype=float)
+        out.append(value.reshape(H, W, -1))
+    return out
+
+
+def differing(spec: CapstoneScene, mine, reference) -> np.ndarray:
+    """(H, W) bool: pixels whose compared values differ (beyond 1e-9; NaN equals NaN)."""
+    out = np.zeros((H, W), dtype=bool)
+    for a, b in zip(_parts(spec, mine), _parts(spec, reference)):
+        same = np.isclose(a, b, rtol=1e-9, atol=1e-9) | (np.isnan(a) & np.isnan(b))
+        out |= ~same.all(axis=2)
+    return out
+
+
+def capstone(scene: str, *, budget: float = 30.0, **functions) -> CapstoneReport:
+    """Render capstone scene ``scene`` (:data:`SCENES`) with the student's ``functions``.
+
+    Never raises or hangs because of a student's function: the render runs within
+    ``budget`` seconds of CPU (raised to ``TEACHRASTER_CHECK_BUDGET`` where a lecturer sets
+    it higher); an exception, a wrong answer type or running out of time is a failure naming
+    the function. What the functions print is kept aside and shown, capped, after the report.
+    """
+    if not isinstance(scene, str) or scene not in SCENES:
+        raise ValueError(f"scene must be one of {list(SCENES)}, got {scene!r}")
+    spec = SCENES[scene]
+    missing = [name for name in spec.uses if name not in functions]
+    unknown = [name for name in functions if name not in FUNCTIONS]
+    if missing or unknown:
+        raise TypeError(f"capstone({scene!r}) takes {', '.join(spec.uses)}; "
+                        f"missing {missing}, unknown {unknown}")  # fmt: skip
+    for name, fn in functions.items():
+        if not callable(fn):
+            raise TypeError(f"{name} must be a function, got {type(fn).__name__}")
+    used = {name: functions[name] for name in spec.uses}
+    reference = render_with(spec)
+    tracker = Tracker()
+    seconds = effective_budget(budget)
+    with time_budget(seconds), output.captured() as printed:
+        outcome = run_case(lambda: render_with(spec, rules(used, tracker)), seconds)
+    report = _report(spec, used, reference, outcome, tracker)
+    if printed.lines:  # kept aside during the render (a print per pixel), shown capped
+        report = replace(report, printed=printed.summary())
+        printed.replay(sys.stdout)
+    return report
+
+
+def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
+    title = f"capstone {spec.name}"
+    base = dict(exercise=title, spec=spec, functions=used, reference=reference)
+    n = H * W
+    if outcome.not_implemented:
+        return CapstoneReport(failures=[], n_cases=n, not_implemented=True,
+                              unfinished=tracker.name, **base)  # fmt: skip
+    if outcome.error is not None:
+        text = outcome.error.replace("your function", f"your {tracker.name}", 1)
+        return CapstoneReport(failures=[Failure(spec.name, text, None, None, kind=outcome.kind)],
+                              n_cases=n, **base)  # fmt: skip
+    mine = outcome.value
+    wrong = np.argwhere(differing(spec, mine, reference))
+    failures = [_pixel_failure(spec, used, mine, reference, (int(r), int(c)))
+                for r, c in _spread(wrong)]  # fmt: skip
+    failures = _one_per_stage(failures)
+    return CapstoneReport(failures=failures, n_cases=n, mine=mine, n_wrong=len(wrong), **base)
+
+
+def _spread(wrong: np.ndarray, most: int = 12) -> list:
+    """The first differing pixel and up to ``most`` - 1 more spread over the rest."""
+    if len(wrong) <= most:
+        return list(wrong)
+    picks = np.unique(np.linspace(0, len(wrong) - 1, most).astype(int))
+    return list(wrong[picks])
+
+
+def _pixel_failure(spec, used, mine, reference, pixel) -> Failure:
+    stage, text = explain_pixel(spec, used, mine, reference, pixel)
+    return Failure(f"pixel {pixel}", text, None, None, kind=stage)
+
+
+def _one_per_stage(failures: list[Failure]) -> list[Failure]:
+    """The first failure of each stage first (one mistake must not hide another)."""
+    seen, first, rest = set(), [], []
+    for f in failures:
+        (rest if f.kind in seen else first).append(f)
+        seen.add(f.kind)
+    return first + rest
+
+
+@dataclass(frozen=True)
+class CapstoneReport(Report):
+    """A :class:`.Report` of one capstone scene: its pixels are its cases.
+
+    ``compare(axes)`` draws the student's frame, the package's and the differing pixels,
+    the first one marked.
+    """
+
+    spec: CapstoneScene | None = field(default=None, repr=False)
+    functions: dict = field(default_factory=dict, repr=False)
+    reference: object = field(default=None, repr=False)
+    mine: object = field(default=None, repr=False)
+    n_wrong: int = 0
+    unfinished: str | None = None
+
+    def __str__(self) -> str:
+        return self._with_printed(self._summary())
+
+    def _summary(self) -> str:
+        uses = ", ".join(self.spec.uses)
+        head = f"{self.exercise} ({self.spec.words}; your {uses})"
+        if self.not_implemented:
+            return (f"{head}: not implemented yet ({self.unfinished} raises "
+                    "NotImplementedError: replace `raise NotImplementedError()` with your "
+                    "code, then run its cell and this one again)")  # fmt: skip
+        if self.passed:
+            return f"{head}: all {self.n_cases} pixels match the package's (all cases pass)"
+        if self.mine is None:
+            return f"{head}: no frame: {self.failures[0].explanation}"
+        lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]
+        lines += [f"- {f.case}, {f.kind}: {f.explanation}" for f in self.shown()]
+        return "\n".join(lines)
+
+    def differing_pixels(self) -> np.ndarray:
+        """(n, 2) rows and columns where the student's frame differs."""
+        if self.mine is None:
+            return np.zeros((0, 2), dtype=int)
+        return np.argwhere(differing(self.spec, self.mine, self.reference))
+
+    def compare(self, axes=None, pixel="first"):
+        """Three panels: your frame, the package's, the differing pixels (``pixel``, or the
+        first differing one, marked); returns the artists."""
+        from .capstone_drawing import draw_capstone
+
+        return draw_capstone(self, axes, pixel)

@@ -1,0 +1,199 @@
+"""Exercise ``robust_fill`` (lesson 07): make a naive rasteriser pass the hard-case catalogue.
+
+The notebook gives a naive fill (raw floats, E ≥ 0, the edge functions in the absolute form
+A x + B y + C in float32: the catalogue's :func:`~teachraster.study.hardcases.naive_coverage`)
+and runs it against the catalogue; the student repairs it until every case passes: snap the
+vertices to the 1/256-px grid, orient the *snapped* triangle, give a snapped zero-area
+triangle nothing, decide ties by the top-left rule, and compute the edge functions from
+differences in float64, so that a triangle 10⁶ px from the origin is filled as at the origin.
+
+The cases are the catalogue's screen-space triangles with their raw (unsnapped) vertices,
+``far_from_origin`` at 10⁴, 10⁵ and 10⁶ px, and seeded random off-grid triangles; expected
+answers are the package's fill (:func:`teachraster.rasterize`). Each failure is named by the
+naive variant that reproduces it (:func:`~teachraster.study.hardcases.naive_coverage` with
+one of its options), then explained at its first wrong pixel with the top-left rule.
+"""
+
+from __future__ import annotations
+
+import copy
+from functools import cache
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..core.fill import rasterize
+from ..core.snapping import snap
+from ..core.triangle import Triangle
+from ..study.hardcases import CASES, naive_coverage
+from .answers import refuse_non_answers, short
+from .cases import SEED
+from .coverage import explain_pixel
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .running import WrongAnswerType
+
+#: Kinds of catalogue case the exercise runs (screen-space triangles).
+KINDS = ("triangle", "triangles", "mesh")
+
+
+def fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """The cases (built once, then copied): see :func:`_fill_cases`."""
+    return copy.deepcopy(_fill_cases())
+
+
+@cache
+def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """(label, (xy, width, height, origin), coverage) with raw vertices; origin = (row, col)."""
+    out = []
+    for name, case in CASES.items():
+        if case.kind not in KINDS or "triangles" not in case.inputs:
+            continue
+        w, h = (int(v) for v in case.inputs["size"])
+        tris = np.asarray(case.inputs["triangles"], dtype=float)
+        for k, xy in enumerate(tris):
+            label = name + (f", triangle {k}" if len(tris) > 1 else "")
+            out.append((label, (xy.copy(), w, h, (0, 0))))
+    local = np.asarray(CASES["far_from_origin"].inputs["local"], dtype=float)
+    for offset in CASES["far_from_origin"].inputs["offsets"]:
+        o = int(offset)
+        if o:
+            out.append((f"far_from_origin at {o} px", (local + o, 16, 16, (o, o))))
+    out += _random_cases()
+    return [(label, args, expected_fill(*args)) for label, args in out]
+
+
+def _random_cases() -> list[tuple[str, tuple]]:
+    """Off-grid triangles: anywhere, within 1/512 px of a pixel centre (snapping decides
+    ties), tiny ones (snapping flips or flattens them)."""
+    rng = np.random.default_rng(SEED + 50)
+    out = []
+    for k in range(10):
+        xy = rng.uniform(0.5, 11.5, (3, 2))
+        out.append((f"random {k + 1}: anywhere, off the 1/256 grid", (xy, 12, 12, (0, 0))))
+    for k in range(6):
+        xy = rng.integers(1, 11, (3, 2)) + 0.5 + rng.uniform(-1, 1, (3, 2)) / 512
+        out.append((f"random {k + 11}: within 1/512 px of centres", (xy, 12, 12, (0, 0))))
+    for k in range(4):
+        xy = 5.5 + rng.uniform(-1, 1, (3, 2)) / 300
+        out.append((f"random {k + 17}: a few 1/256 px across", (xy, 12, 12, (0, 0))))
+    return out
+
+
+def expected_fill(xy, width: int, height: int, origin) -> np.ndarray:
+    """The package's coverage of the window at ``origin`` (row, col)."""
+    shift = np.array([origin[1], origin[0]], dtype=float)  # integer shift: snapping commutes
+    return rasterize(Triangle(np.asarray(xy, float) - shift), width, height).coverage
+
+
+def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
+    """Coverage under the naive rasteriser with one repair missing (each its own mistake)."""
+    s = snap(np.asarray(xy, float))
+    kw = dict(origin=tuple(origin))
+    raw_area = _area(xy)
+    flipped = s if raw_area >= 0 else s[[0, 2, 1]]  # oriented by the unsnapped area
+    return {
+        "no snapping": naive_coverage(xy, width, height, rule="top_left", **kw),
+        "E >= 0": naive_coverage(s, width, height, rule="inclusive", **kw),
+        "E > 0": naive_coverage(s, width, height, rule="strict", **kw),
+        "one winding": naive_coverage(s, width, height, rule="top_left", orient="none", **kw),
+        "oriented before snapping": naive_coverage(
+            flipped, width, height, rule="top_left", orient="none", **kw
+        ),  # fmt: skip
+        "absolute form": naive_coverage(
+            s, width, height, rule="top_left", absolute=True, dtype=np.float32, **kw
+        ),  # fmt: skip
+        "float32": naive_coverage(s, width, height, rule="top_left", dtype=np.float32, **kw),
+    }
+
+
+def _area(xy) -> float:
+    (ax, ay), (bx, by), (cx, cy) = np.asarray(xy, float)
+    return float((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+
+
+MISTAKES = {
+    "no snapping": "you decide on the raw vertices: snap them to the 1/256-px grid first "
+    "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
+    "its neighbour agree on every tie",
+    "E >= 0": "you cover every centre on an edge (E ≥ 0): a centre on an edge shared by two "
+    "triangles is covered twice; the top-left rule gives it to one of them",
+    "E > 0": "you cover no centre on an edge (E > 0): a centre on a shared edge is covered by "
+    "neither triangle, and a sliver whose edge runs through centres vanishes",
+    "one winding": "you assume one winding: orient the triangle first (swap two vertices when "
+    "its edge function E(v1, v2, v3) is negative)",
+    "oriented before snapping": "you oriented the triangle by its unsnapped area: snapping can "
+    "flip a tiny triangle's winding, so orient the snapped one",
+    "absolute form": "you evaluate E = A x + B y + C from absolute coordinates in float32: far "
+    "from the origin C ~ x·y cancels catastrophically; compute E from differences to a vertex, "
+    "in float64",
+    "float32": "you compute in float32: 10⁵ px from the origin its numbers are 1/128 px apart "
+    "and cannot hold the 1/256-px grid; use float64",
+}
+
+
+def explain_fill(args, expected, got) -> str:
+    """The first wrong pixel, by the top-left rule on the snapped triangle, and the counts."""
+    xy, width, height, origin = args
+    if got.shape != expected.shape:
+        return f"your image has shape {got.shape}; the window is {expected.shape} (height, width)"
+    s = snap(np.asarray(xy, float))
+    i, j = np.argwhere(got != expected)[0]
+    centre = np.array([origin[1] + j + 0.5, origin[0] + i + 0.5])
+    text, _, _ = explain_pixel(s, centre, bool(expected[i, j]))
+    counts = f"{int((expected & ~got).sum())} missing, {int((got & ~expected).sum())} extra"
+    return f"{text} (snapped vertices; {counts})"
+
+
+def _rule(args, expected, got) -> str:
+    return ""
+
+
+def compose(head: str, words: str) -> str:
+    """The missing repair first, then the first wrong pixel as its example."""
+    words = words.lstrip(" .:;")
+    return f"{words}. For example, {head}" if words else head
+
+
+def _zero_area(args, expected, got) -> bool:
+    return _area(snap(np.asarray(args[0], float))) == 0 and bool(got.any())
+
+
+ZERO_AREA = Mistake("zero area", "snapped, this triangle has zero area (its vertices land on "
+                    "one line or one point): it covers nothing", fits=_zero_area)  # fmt: skip
+
+
+def draw_fill(ax, case, got):
+    """The window's pixels by state (covered, missing, extra) and the snapped triangle."""
+    from .drawing import draw_coverage
+
+    _, (xy, width, height, origin), expected = case
+    window = SimpleNamespace(origin=(origin[1], origin[0]))
+    answer = None if got is None or got.shape != expected.shape else got
+    return draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
+
+
+def as_image(value) -> np.ndarray:
+    """A 2-D image of True/False (or 1/0) values, as bools; its shape is compared later."""
+    refuse_non_answers(value, "a (height, width) image of True/False")
+    if isinstance(value, np.ndarray) and value.size > 1 << 16:
+        raise WrongAnswerType(f"returned {short(value)}: far larger than the window")
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        raise WrongAnswerType(f"returned {short(value)}, not an image") from None
+    if arr.ndim != 2 or arr.dtype.kind not in "biuf" or not np.isin(arr, (0, 1)).all():
+        raise WrongAnswerType(
+            f"returned {short(value)}: expected a (height, width) image of True/False"
+        )
+    return arr.astype(bool)
+
+
+def same_image(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
+    return got.shape == expected.shape and bool(np.array_equal(got, expected))
+
+
+ROBUST_FILL = Exercise(
+    "robust_fill", fill_cases, as_image, same_image, explain_fill, _rule,
+    variant_mistakes(_variants, MISTAKES, (ZERO_AREA,)), answers=(PackageAnswer(rasterize),),
+    draw=draw_fill, compose=compose,
+)  # fmt: skip

@@ -1,0 +1,204 @@
+"""Exercise ``hiz_rejects`` (lesson 10): may Hi-Z reject a triangle's block in one tile?
+
+Hi-Z keeps, per tile, the farthest depth stored there. Before interpolating a triangle's
+depth in a tile it compares the *nearest* depth the triangle can have in the tile with that
+farthest one: when even the nearest is no nearer (≥), every fragment of the block fails the
+depth test (strictly nearer passes) and the block is rejected whole. The triangle's depth is
+affine in screen space (lesson 05b), so over the tile's pixel centres its plane is smallest
+at one of the four *extreme pixel centres* (the corner trick of exercise 8.1), and no
+fragment is nearer than the triangle's nearest vertex: the nearest depth is the larger of
+the two bounds. A tile with an empty pixel (depth +inf, nothing drawn yet) rejects nothing.
+
+Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
+uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`
+(clamped to the vertices' depth range) at the extreme pixel centres, against the tile's
+largest stored depth.
+"""
+
+from __future__ import annotations
+
+import copy
+from functools import cache
+
+import numpy as np
+
+from ..core.edges import setup_edges
+from ..core.snapping import SUBPIXEL_BITS
+from ..pipeline.rasterization.batched_fill import Fragments, weight_source
+from .answers import as_bool
+from .cases import SEED
+from .exercise import Exercise, variant_mistakes
+from .scalars import num
+
+#: Tile side of the cases (hardware Hi-Z uses 8 × 8).
+TILE = 8
+
+
+def _corners(row0: int, col0: int, size: int):
+    last_r, last_c = row0 + size - 1, col0 + size - 1
+    return np.array([row0, row0, last_r, last_r]), np.array([col0, last_c, col0, last_c])
+
+
+def plane_at(xyz: np.ndarray, rows, cols, clamp: bool = True) -> np.ndarray:
+    """The triangle's depth plane at pixel centres (rows, cols), as the renderer evaluates it
+    (``clamp``: within its vertices' depths, the renderer's own; else the bare plane)."""
+    xyz = np.asarray(xyz, dtype=float)
+    if clamp:  # the renderer's set-up (its weights from the unsnapped positions) and plane
+        xy = xyz[None, :, :2]
+        src, area, _, _ = weight_source(xy, setup_edges(xy, SUBPIXEL_BITS), False)
+        probe = Fragments(np.zeros(len(rows), np.int64), np.asarray(rows), np.asarray(cols),
+                          np.zeros(1, np.int8), src, area)  # fmt: skip
+        return probe.plane(xyz[None, :, 2])
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    return z1 + a * (cols + 0.5 - x1) + b * (rows + 0.5 - y1)
+
+
+def expected_reject(xyz, row0, col0, size, buffer) -> bool:
+    nearest = plane_at(xyz, *_corners(row0, col0, size)).min()
+    return bool(nearest >= np.max(buffer))
+
+
+def hiz_cases() -> list[tuple[str, tuple, bool]]:
+    """(label, (xyz, row0, col0, size, buffer), rejected): named tiles and seeded random ones
+    (built once, then copied)."""
+    return copy.deepcopy(_hiz_cases())
+
+
+@cache
+def _hiz_cases() -> list[tuple[str, tuple, bool]]:
+    rng = np.random.default_rng(SEED + 60)
+    slope = np.array([[0.0, 0.0, 0.30], [40.0, 0.0, 0.70], [0.0, 40.0, 0.50]])
+    flat = np.array([[0.0, 0.0, 0.5], [40.0, 0.0, 0.5], [0.0, 40.0, 0.5]])
+    full = np.full((TILE, TILE), 0.45)
+    named = [
+        ("a flat triangle behind a full tile", (flat, 8, 8, TILE, full)),
+        ("the same triangle at exactly the tile's farthest depth", (flat, 8, 8, TILE,
+                                                                    np.full((TILE, TILE), 0.5))),
+        ("in front of the tile", (flat - [0, 0, 0.2], 8, 8, TILE, full)),
+        ("behind, but one pixel of the tile is still empty", (flat, 8, 8, TILE,
+                                                              _with(full, (3, 4), np.inf))),
+        ("a sloped triangle, nearest vertex in front, the tile's part behind",
+         (slope, 16, 16, TILE, np.full((TILE, TILE), 0.45))),
+        ("a sloped triangle reaching in front at the tile's near corner",
+         (slope, 0, 0, TILE, np.full((TILE, TILE), 0.33))),
+        ("the tile's farthest pixel decides", (slope, 8, 16, TILE,
+                                               _with(np.full((TILE, TILE), 0.2), (7, 7), 0.6))),
+    ]  # fmt: skip
+    for k in range(18):
+        row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
+        # vertices around the tile's middle, less than half a turn apart: the middle (a pixel
+        # centre of the tile) is inside, so the triangle has a block here
+        centre = np.array([col0 + TILE / 2 - 0.5, row0 + TILE / 2 - 0.5])
+        turn = (
+            rng.uniform(0, 2 * np.pi) + np.array([0, 2, 4]) * np.pi / 3 + rng.uniform(-0.4, 0.4, 3)
+        )
+        reach = rng.uniform(5, 30, 3)
+        xy = centre + reach[:, None] * np.column_stack([np.cos(turn), np.sin(turn)])
+        xyz = np.column_stack([np.round(xy * 256) / 256, rng.uniform(0.1, 0.9, 3)])
+        near = plane_at(xyz, *_corners(row0, col0, TILE)).min()
+        buffer = near + rng.uniform(-0.05, 0.05, (TILE, TILE)) * (k % 3 != 0)
+        buffer[rng.integers(0, TILE), rng.integers(0, TILE)] += rng.choice([-0.01, 0.0, 0.01])
+        named.append((f"random {k + 1}", (xyz, row0, col0, TILE, buffer)))
+    return [(label, args, expected_reject(*args)) for label, args in named]
+
+
+def _with(buffer: np.ndarray, at, value) -> np.ndarray:
+    out = buffer.copy()
+    out[at] = value
+    return out
+
+
+def same_verdict(got: bool, expected: bool, args=None) -> bool:
+    return got == expected
+
+
+def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
+    rows, cols = _corners(row0, col0, size)
+    finite = buffer[np.isfinite(buffer)]
+    outer_r, outer_c = np.array([row0, row0, row0 + size, row0 + size]) - 0.5, \
+        np.array([col0, col0 + size, col0, col0 + size]) - 0.5  # fmt: skip
+    near = plane_at(xyz, rows, cols).min()
+    with np.errstate(all="ignore"):
+        return {
+            "vertex": bool(xyz[:, 2].min() >= buffer.max()),
+            "no clamp": bool(plane_at(xyz, rows, cols, clamp=False).min() >= buffer.max()),
+            "outer corners": bool(
+                max(plane_at(xyz, outer_r, outer_c, clamp=False).min(), xyz[:, 2].min())
+                >= buffer.max()
+            ),  # fmt: skip
+            "tile min": bool(near >= buffer.min()),
+            "strict": bool(near > buffer.max()),
+            "empty ignored": bool(len(finite) and near >= finite.max()),
+        }
+
+
+MISTAKES = {
+    "vertex": "you compared the triangle's nearest vertex: in this tile its depth plane is "
+    "farther than that vertex; evaluate the plane at the tile's extreme pixel centres",
+    "no clamp": "you took the bare plane at the corners: where it runs nearer than the "
+    "triangle's nearest vertex (a corner outside the triangle), no fragment can be that near; "
+    "the nearest depth is the larger of the two bounds",
+    "outer corners": "you evaluated the plane at the tile's outer corners; fragments sit at "
+    "pixel centres, the extreme ones ½ px inside",
+    "tile min": "you compared with the nearest depth stored in the tile: a fragment is hidden "
+    "only if it is behind the depth at its own pixel, and only the tile's farthest depth "
+    "bounds all of them",
+    "strict": "a fragment exactly at the stored depth fails the test (strictly nearer "
+    "passes), so a block at exactly the tile's farthest depth is rejected too: use ≥",
+    "empty ignored": "a pixel of the tile is still empty (+inf): a fragment there passes "
+    "whatever its depth, so nothing in this tile may be rejected",
+}
+
+
+def explain_hiz(args, expected, got) -> str:
+    """The extreme centres, the triangle's nearest depth there, the tile's farthest, verdicts."""
+    xyz, row0, col0, size, buffer = args
+    rows, cols = _corners(row0, col0, size)
+    corner = plane_at(xyz, rows, cols)
+    nearest, farthest = corner.min(), np.max(buffer)
+    k = int(np.argmin(corner))
+    return (f"the tile's extreme centres are ({cols[0] + 0.5}, {rows[0] + 0.5}) to "
+            f"({cols[3] + 0.5}, {rows[3] + 0.5}); the triangle's depth is nearest at "
+            f"({cols[k] + 0.5}, {rows[k] + 0.5}), {num(nearest)}; the tile's farthest stored "
+            f"depth is {num(farthest)}: the block is "
+            f"{'rejected' if expected else 'kept'}, you {'rejected' if got else 'kept'} it")  # fmt: skip
+
+
+def _rule(args, expected, got) -> str:
+    return (
+        ". The block is rejected when the nearest depth the triangle can have in the tile (its "
+        "plane at the extreme pixel centres, no nearer than its nearest vertex) is at or "
+        "behind the farthest depth stored there"
+    )
+
+
+def draw_hiz(ax, case, got):
+    """The tile's stored depths, the triangle, the extreme centres and the verdicts."""
+    _, (xyz, row0, col0, size, buffer), expected = case
+    shown = np.where(np.isfinite(buffer), buffer, np.nan)
+    artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
+                         vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
+    ring = np.vstack([xyz[:, :2], xyz[:1, :2]])
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="#d7301f", linewidth=1.5)
+    rows, cols = _corners(row0, col0, size)
+    artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
+    nearest = plane_at(xyz, rows, cols).min()
+    verdict = "rejected" if expected else "kept"
+    yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
+    artists.append(ax.set_xlabel(f"nearest of the triangle {num(nearest)}, farthest stored "
+                                 f"{num(np.max(buffer))}:\n{verdict}{yours}",
+                                 fontsize="x-small"))  # fmt: skip
+    ax.set_xlim(col0 - 2, col0 + size + 2)
+    ax.set_ylim(row0 + size + 2, row0 - 2)
+    ax.set_aspect("equal")
+    artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
+    return artists
+
+
+HIZ_REJECTS = Exercise(
+    "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
+    variant_mistakes(_variants, MISTAKES), draw=draw_hiz,
+)  # fmt: skip

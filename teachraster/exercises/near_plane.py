@@ -1,0 +1,155 @@
+"""Exercise ``safe_near`` (lesson 05b): how far out must the near plane go?
+
+Two surfaces ``gap`` apart at view distance z are told apart by a ``bits``-bit unorm depth
+buffer when its resolution there, Δz = step / |d z_win / dz| (lesson 05b, §2; Ritschel,
+*Interpolation and z-buffering*, depth aliasing), is at most ``gap``. With window depth
+z_win = (f / (f − n)) (1 − n / z) and step = 1 / (2^bits − 1), the student solves for the
+smallest near-plane distance n: the classic advice "push the near plane out", quantified.
+
+Expected answers: the near plane at which :func:`teachraster.depth_resolution` (the
+package's own) equals ``gap``, found by bisection on it, so no second formula decides.
+"""
+
+from __future__ import annotations
+
+import copy
+from functools import cache
+
+import numpy as np
+
+from ..pipeline.visibility.depth import depth_resolution
+from .answers import as_number
+from .exercise import Exercise, Mistake, variant_mistakes
+from .scalars import num
+from .tolerance import close
+
+#: (z, gap, far, bits) of the cases: near and far objects, thin and thick gaps, 16 and 24 bits.
+SETTINGS = (
+    (10.0, 0.01, 1000.0, 16), (100.0, 0.5, 1000.0, 16), (500.0, 1.0, 1000.0, 16),
+    (2.0, 0.001, 100.0, 16), (50.0, 0.05, 100.0, 16), (100.0, 0.005, 1000.0, 24),
+    (300.0, 0.005, 1000.0, 24), (1000.0, 0.1, 10000.0, 24), (30.0, 0.001, 50.0, 24),
+    (5.0, 0.0001, 1000.0, 24), (20.0, 2.0, 25.0, 16), (900.0, 50.0, 1000.0, 16),
+)  # fmt: skip
+
+
+def resolution(z, near, far, bits) -> float:
+    """The package's Δz at distance z (first order)."""
+    return float(depth_resolution([z], near, far, f"unorm{bits}")[0])
+
+
+def expected_near(z: float, gap: float, far: float, bits: int) -> float:
+    """The near plane n with resolution(z, n) == gap: bisection on the package's Δz, which
+    falls as n grows."""
+    lo, hi = 1e-12 * z, z
+    for _ in range(200):
+        mid = (lo * hi) ** 0.5 if hi / lo > 4 else (lo + hi) / 2
+        if resolution(z, mid, far, bits) > gap:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo <= 1e-15 * hi:
+            break
+    return hi
+
+
+def near_cases() -> list[tuple[str, tuple, float]]:
+    """The cases (built once, then copied): see :func:`_near_cases`."""
+    return copy.deepcopy(_near_cases())
+
+
+@cache
+def _near_cases() -> list[tuple[str, tuple, float]]:
+    out = []
+    for z, gap, far, bits in SETTINGS:
+        n = expected_near(z, gap, far, bits)
+        label = f"z = {num(z)}, gap = {num(gap)}, far = {num(far)}, {bits} bits"
+        out.append((label, (z, gap, far, bits), n))
+    return out
+
+
+def same_near(got, expected, args=None) -> bool:
+    return close(got, expected)
+
+
+def _variants(z, gap, far, bits) -> dict[str, float]:
+    """The near plane typical slips give (each one formula change)."""
+    step = 1.0 / (2**bits - 1)
+
+    def solve(step, f):  # exact solution of step (f - n) z² / (f n) = gap
+        return step * f * z * z / (gap * f + step * z * z)
+
+    with np.errstate(all="ignore"):
+        return {
+            "2^bits": solve(1.0 / 2**bits, far),
+            "ndc": solve(2 * step, far),
+            "infinite far": step * z * z / gap,
+            "linear": far - gap / step,
+            "squared": solve(step, far) ** 0.5,
+            "resolution": gap,
+        }
+
+
+MISTAKES = {
+    "2^bits": "you took the buffer's step as 1/2^bits; a unorm buffer's largest value is "
+    "2^bits − 1, which stores depth 1, so the step is 1/(2^bits − 1)",
+    "ndc": "you took a step of 2/(2^bits − 1), as if the buffer stored NDC depth in [−1, 1]: "
+    "it stores window depth in [0, 1]",
+    "infinite far": "you dropped the factor (f − n)/f: your n is right only for a far plane "
+    "at infinity; solve step (f − n) z² / (f n) ≤ gap for n exactly",
+    "linear": "you used linear depth, (z − n)/(f − n), whose resolution is the same "
+    "everywhere: the buffer stores window depth, which is affine in 1/z",
+    "squared": "your n is the square root of the answer: Δz grows like z² / n, so n grows like z²",
+    "resolution": "you returned the gap; return the near-plane distance n",
+}
+
+
+def explain_near(args, expected, got) -> str:
+    """The case, the smallest near plane and yours, with the resolution yours gives."""
+    z, gap, far, bits = args
+    head = (f"at z = {num(z)} with far = {num(far)} and {bits} bits, surfaces {num(gap)} apart "
+            f"need n ≥ {num(expected, got)}; yours is {num(got, expected)}")  # fmt: skip
+    if not np.isfinite(got) or not 0 < got < z:
+        return head
+    yours = resolution(z, got, far, bits)
+    verdict = "too coarse: they would z-fight" if yours > gap else "finer than needed"
+    return f"{head}, where the buffer resolves Δz = {num(yours)} ({verdict})"
+
+
+def _rule(args, expected, got) -> str:
+    return (
+        ". The step of a bits-bit unorm buffer is 1/(2^bits − 1) in window depth; solve "
+        "step · (f − n) z² / (f n) ≤ gap for n"
+    )
+
+
+def _out_of_range(args, expected, got) -> bool:
+    z = args[0]
+    return not np.isfinite(got) or not 0 < got < z
+
+
+RANGE = Mistake("range", ": a near plane lies between the eye and the surfaces, 0 < n < z",
+                fits=_out_of_range, symptom=True)  # fmt: skip
+
+
+def draw_near(ax, case, got):
+    """Δz at the case's distance against the near plane (log-log), the gap, the expected
+    near plane and yours."""
+    _, (z, gap, far, bits), expected = case
+    ns = np.geomspace(expected / 30, min(expected * 30, z * 0.999), 200)
+    dz = np.array([resolution(z, n, far, bits) for n in ns])
+    artists = ax.loglog(ns, dz, color="black", label=f"Δz at z = {num(z)}")
+    artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
+    artists.append(ax.axvline(expected, color="#2b7bba", label="smallest n (expected)"))
+    if got is not None and np.isfinite(got) and 0 < got < z:
+        colour = "#7fbf7f" if close(got, expected) else "#d7301f"
+        artists.append(ax.axvline(got, color=colour, linestyle="--", label="your n"))
+    ax.set_xlabel("near plane n")
+    ax.set_ylabel("depth resolution Δz")
+    artists.append(ax.legend(fontsize="x-small"))
+    return artists
+
+
+SAFE_NEAR = Exercise(
+    "safe_near", near_cases, as_number, same_near, explain_near, _rule,
+    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_near,
+)  # fmt: skip

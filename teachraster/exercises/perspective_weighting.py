@@ -1,0 +1,137 @@
+"""Exercise ``perspective_weights`` (lesson 04): the 3-D weights behind screen weights λ.
+
+A point of the screen triangle with barycentrics λ is the image of a point of the 3-D
+triangle with barycentrics μ. Its clip position is Σ μ_i P_i with w = Σ μ_i w_i, and the
+divide by w gives λ_i = μ_i w_i / Σ_j μ_j w_j, so μ_i ∝ λ_i / w_i (Ek, *Triangles and
+Perspective Correct Interpolation*, §2): the student derives that and then makes it robust,
+since only ratios of w matter and 1/w alone overflows for w near 1e-310 (the catalogue's
+``perspective_w_scale``). Any value f then interpolates as Σ μ_i f_i.
+
+Expected answers: :func:`teachraster.core.interpolation.weights_per_row`, the renderer's own.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.interpolation import perspective_weights, weights_per_row
+from ..study.hardcases import CASES
+from .answers import as_numbers
+from .cases import SEED
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .scalars import vec
+from .tolerance import all_close
+
+
+def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """(label, (lam, w), μ): equal and unequal w, the catalogue's extreme ratios and scales."""
+    rng = np.random.default_rng(SEED + 30)
+    ws = [np.array([1.0, 2.0, 4.0]), np.array([3.0, 3.0, 3.0])]
+    for name in ("perspective_w_ratio_1e6", "perspective_w_scale"):
+        ws += [np.asarray(w, dtype=float) for w in CASES[name].inputs["ws"]]
+    ws += list(np.exp(rng.uniform(np.log(0.1), np.log(100.0), size=(5, 3))))
+    lams = [np.array([0.2, 0.3, 0.5]), np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.5, 0.5])]
+    out = []
+    for w in ws:
+        for lam in lams + [rng.dirichlet(np.ones(3))]:
+            mu = weights_per_row(lam[None], w[None])[0]
+            out.append((f"λ = {vec(lam)}, w = {_ws(w)}", (lam.copy(), w.copy()), mu))
+    return out
+
+
+def _ws(w) -> str:
+    return "(" + ", ".join(f"{x:.3g}" for x in w) + ")"
+
+
+def as_weights(value) -> np.ndarray:
+    return as_numbers(value, (3,), "3 weights, shape (3,)")
+
+
+def same_weights(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
+    return bool(np.isfinite(got).all()) and all_close(got, expected)
+
+
+def _variants(lam, w) -> dict[str, np.ndarray]:
+    with np.errstate(all="ignore"):
+        return {
+            "affine": lam,
+            "times w": lam * w / (lam @ w),
+            "unnormalised": lam / w,
+            "unnormalised times w": lam * w,
+        }
+
+
+MISTAKES = {
+    "affine": "these are the screen weights λ themselves: that is affine interpolation, "
+    "right only when the three w are equal",
+    "times w": "you multiplied λ by w: the screen position divides by w, so the 3-D "
+    "weights go as λ_i / w_i, not λ_i · w_i",
+    "unnormalised": "these are λ_i / w_i, not yet weights: they must sum to 1 (divide by "
+    "their sum Σ λ_j / w_j, the interpolated 1/w)",
+    "unnormalised times w": "these are λ_i · w_i, neither divided by w nor summing to 1",
+}
+
+
+def explain_weights(args, expected, got) -> str:
+    """The case, the student's weights and the 3-D ones."""
+    lam, w = args
+    return (
+        f"at λ = {vec(lam)} and w = {_ws(w)} your weights are {vec(got, expected)}; the 3-D "
+        f"weights are μ = {vec(expected, got)}"
+    )
+
+
+def _rule(args, expected, got) -> str:
+    return " (μ_i ∝ λ_i / w_i, normalised to sum to 1)"
+
+
+def _overflow_words(args, expected, got) -> str:
+    lam, w = args
+    small = w.min() < 1
+    return (
+        f": not finite. With w this {'small' if small else 'large'}, 1/w "
+        f"{'overflows to inf' if small else 'underflows'} (and inf/inf or 0/0 is nan), yet "
+        "only the ratios of the w matter: scale them first (divide every w by the smallest "
+        "one, for instance)"
+    )
+
+
+def _extreme(w) -> bool:
+    """w so small or large that 1/w, or a product of two, leaves float64's range."""
+    return bool(w.min() < 1e-150 or w.max() > 1e150)
+
+
+def _sum_words(args, expected, got) -> str:
+    return f": they sum to {float(np.sum(got)):.6g}, and weights sum to 1"
+
+
+SYMPTOMS = (
+    Mistake("overflow", _overflow_words, fits=lambda a, e, g: _extreme(a[1]) and not np.isfinite(g).all()),
+    Mistake("sum", _sum_words, fits=lambda a, e, g: abs(float(np.sum(g)) - 1) > 1e-9,
+            symptom=True),
+)  # fmt: skip
+
+
+def draw_weights(ax, case, got):
+    """Three groups of bars: λ, the expected μ and yours."""
+    _, (lam, w), expected = case
+    x = np.arange(3)
+    artists = list(ax.bar(x - 0.27, lam, width=0.25, color="#c8c8c8", label="screen λ"))
+    artists += list(ax.bar(x, expected, width=0.25, color="#2b7bba", label="3-D μ (expected)"))
+    if got is not None and np.isfinite(got).all():
+        wrong = not all_close(np.asarray(got, dtype=float), expected)
+        artists += list(ax.bar(x + 0.27, np.clip(got, -2, 2), width=0.25,
+                               color="#d7301f" if wrong else "#7fbf7f", label="yours"))  # fmt: skip
+    ax.set_xticks(x, [f"v{k + 1}\nw = {w[k]:.3g}" for k in range(3)], fontsize="x-small")
+    ax.set_ylabel("weight")
+    ax.axhline(0, color="black", linewidth=0.5)
+    artists.append(ax.legend(fontsize="x-small"))
+    return artists
+
+
+PERSPECTIVE_WEIGHTS = Exercise(
+    "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
+    variant_mistakes(_variants, MISTAKES, SYMPTOMS),
+    answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row)),
+    draw=draw_weights,
+)  # fmt: skip

@@ -1,0 +1,189 @@
+"""Exercise ``quad_derivatives`` (lesson 09): a pixel's derivatives from its 2×2 quad.
+
+A GPU shades pixels in 2×2 quads aligned to even rows and columns, and takes a texture
+coordinate's screen-space derivatives as differences between the quad's lanes. Coarse
+derivatives (llvmpipe's, and ``render(..., derivatives=True)``'s) are one pair per quad:
+ddx = f(upper right) − f(upper left), ddy = f(lower left) − f(upper left), y down. Lanes the
+triangle does not cover are *helper* pixels: the value there is the triangle's perspective-
+correct interpolation extrapolated (barycentrics outside [0, 1], never clamped), since the
+difference across the edge is what the derivative needs.
+
+Expected answers: the renderer's own quad lanes
+(:func:`teachraster.pipeline.texturing.quad_derivatives.lane_values` of
+:func:`~teachraster.pipeline.texturing.quad_derivatives.attribute_planes`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.interpolation import perspective_weights
+from ..pipeline.texturing.quad_derivatives import attribute_planes, lane_values
+from .answers import as_numbers
+from .cases import SEED
+from .exercise import Exercise, PackageAnswer, variant_mistakes
+from .scalars import vec
+from .tolerance import all_close
+
+#: Floor-like triangles: the far edge at w = 8 against 1 near, as on textured_floor.
+FLOOR = (
+    np.array([[2.0, 30.0], [30.0, 30.0], [14.0, 4.0]]),
+    np.array([1.0, 1.0, 8.0]),
+    np.array([0.0, 1.0, 0.5]),
+)
+
+
+def lanes(xy, w, f, row0: int, col0: int) -> np.ndarray:
+    """The renderer's values at the quad's four lanes (upper left, upper right, lower left,
+    lower right) whose upper-left pixel is (row0, col0); extrapolated, unclamped."""
+    planes = attribute_planes(np.asarray(xy, float)[None], np.asarray(w, float)[None],
+                              np.asarray(f, float)[None, :, None], True)  # fmt: skip
+    vals, _ = lane_values(planes, np.array([0]), np.array([row0]), np.array([col0]))
+    return np.array([v[0, 0] for v in vals])
+
+
+def expected_pair(xy, w, f, row: int, col: int) -> np.ndarray:
+    q = lanes(xy, w, f, row - row % 2, col - col % 2)
+    return np.array([q[1] - q[0], q[2] - q[0]])
+
+
+def quad_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """(label, (xy, w, f, row, col), (ddx, ddy)): the floor's pixels at even and odd rows and
+    columns, next to its edges (helper lanes), and seeded random triangles."""
+    rng = np.random.default_rng(SEED + 70)
+    xy, w, f = FLOOR
+    pixels = [(27, 3, "next to the left edge: helpers outside"),
+              (28, 14, "inside, upper-left lane"), (29, 15, "inside, lower-right lane"),
+              (5, 14, "at the far tip: helpers beyond the edges"),
+              (20, 25, "next to the right edge"), (29, 29, "the near right corner")]  # fmt: skip
+    out = [(f"floor, pixel ({r}, {c}): {why}", (xy, w, f, r, c)) for r, c, why in pixels]
+    for k in range(10):
+        txy = np.round(rng.uniform(0, 24, (3, 2)) * 256) / 256
+        tw = np.exp(rng.uniform(0, np.log(10), 3))
+        tf = np.round(rng.uniform(-2, 2, 3), 2)
+        r, c = (int(v) for v in txy.mean(axis=0))
+        out.append((f"random {k + 1}, pixel ({r}, {c})", (txy, tw, tf, r, c)))
+    return [(label, args, expected_pair(*args)) for label, args in out]
+
+
+def as_pair(value) -> np.ndarray:
+    return as_numbers(value, (2,), "a pair (ddx, ddy)")
+
+
+def same_pair(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
+    return bool(np.isfinite(got).all()) and all_close(got, expected)
+
+
+def _at(xy, w, f, x, y, clamp=False, affine=False) -> float:
+    """f at point (x, y): perspective-correct (or affine), extrapolated unless ``clamp``."""
+    (x1, y1), (x2, y2), (x3, y3) = xy
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    lam = np.array([(x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
+                    (x3 - x) * (y1 - y) - (y3 - y) * (x1 - x),
+                    (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x)]) / area  # fmt: skip
+    if affine:
+        return float(lam @ f)
+    mu = perspective_weights(lam[None], w, extrapolate=not clamp)[0]
+    return float(mu @ f)
+
+
+def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
+    r0, c0 = row - row % 2, col - col % 2
+
+    def pair(r, c, **kw):
+        a = _at(xy, w, f, c + 0.5, r + 0.5, **kw)
+        return np.array([_at(xy, w, f, c + 1.5, r + 0.5, **kw) - a,
+                         _at(xy, w, f, c + 0.5, r + 1.5, **kw) - a])  # fmt: skip
+
+    right = pair(r0, c0)
+    fine_x = _at(xy, w, f, c0 + 1.5, row + 0.5) - _at(xy, w, f, c0 + 0.5, row + 0.5)
+    fine_y = _at(xy, w, f, col + 0.5, r0 + 1.5) - _at(xy, w, f, col + 0.5, r0 + 0.5)
+    return {
+        "unaligned": pair(row, col),
+        "clamped": pair(r0, c0, clamp=True),
+        "affine": pair(r0, c0, affine=True),
+        "fine": np.array([fine_x, fine_y]),
+        "y up": right * [1, -1],
+        "swapped": right[::-1],
+    }
+
+
+MISTAKES = {
+    "unaligned": "you took the quad whose upper-left pixel is this pixel: quads are aligned "
+    "to even rows and columns, so pixel (row, col) belongs to the quad starting at "
+    "(row − row mod 2, col − col mod 2)",
+    "clamped": "you clamped the interpolation at a helper pixel (outside the triangle): a "
+    "helper extrapolates the triangle's values, weights outside [0, 1] and all",
+    "affine": "you interpolated affinely at the lanes: the values are perspective-correct "
+    "(the divide by w), and so are their differences",
+    "fine": "these are fine derivatives (each pixel's own row and column of the quad); "
+    "coarse ones use the quad's upper row and left column for all four pixels",
+    "y up": "your ddy has the wrong sign: y grows downwards, so ddy is the lower lane minus "
+    "the upper one",
+    "swapped": "you returned (ddy, ddx): ddx is the step right, along the row",
+}
+
+
+def explain_quad(args, expected, got) -> str:
+    """The pixel's quad, the values at its lanes, the derivatives and yours."""
+    xy, w, f, row, col = args
+    r0, c0 = row - row % 2, col - col % 2
+    q = lanes(xy, w, f, r0, c0)
+    return (f"pixel ({row}, {col}) is in the quad at rows {r0}–{r0 + 1}, columns {c0}–{c0 + 1}, "
+            f"whose lanes hold f = {vec(q[:3])} (upper left, upper right, lower left), so "
+            f"(ddx, ddy) = {vec(expected, got)}; yours is {vec(got, expected)}")  # fmt: skip
+
+
+def _rule(args, expected, got) -> str:
+    return (
+        ": ddx = f(upper right) − f(upper left), ddy = f(lower left) − f(upper left), with f "
+        "perspective-correct (and extrapolated at helper lanes)"
+    )
+
+
+def draw_quad(ax, case, got):
+    """Close up on the pixel's quad: its four pixels (helpers hatched) with the value of f at
+    each centre, the triangle's edges, the expected (ddx, ddy) and yours."""
+    from matplotlib.patches import Patch, Rectangle
+
+    _, (xy, w, f, row, col), expected = case
+    r0, c0 = row - row % 2, col - col % 2
+    q = lanes(xy, w, f, r0, c0)
+    ring = np.vstack([xy, xy[:1]])
+    artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
+    for k, (dr, dc) in enumerate(((0, 0), (0, 1), (1, 0), (1, 1))):
+        x, y = c0 + dc, r0 + dr
+        inside = _inside(xy, x + 0.5, y + 0.5)
+        artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside
+                                              else "white", edgecolor="#2b7bba", lw=1.5,
+                                              hatch=None if inside else "//")))  # fmt: skip
+        artists.append(ax.text(x + 0.5, y + 0.5, f"{q[k]:.2g}", ha="center", va="center",
+                               fontsize="x-small", color="black"))  # fmt: skip
+    artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
+                                          lw=3)))  # fmt: skip
+    ax.set_xlim(c0 - 1.5, c0 + 3.5)
+    ax.set_ylim(r0 + 3.5, r0 - 1.5)
+    ax.set_aspect("equal")
+    yours = "" if got is None else f"\nyours: {vec(got, expected)}"
+    artists.append(ax.text(0.02, 0.02, f"(ddx, ddy) = {vec(expected, got)}{yours}",
+                           transform=ax.transAxes, fontsize="x-small", va="bottom",
+                           bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
+    handles = [Patch(facecolor="#c8c8c8", edgecolor="#2b7bba", label="covered"),
+               Patch(facecolor="white", edgecolor="#2b7bba", hatch="//", label="helper"),
+               Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
+    artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
+                             bbox_to_anchor=(1.02, 1)))  # fmt: skip
+    return artists
+
+
+def _inside(xy, x, y) -> bool:
+    e = [(xy[(k + 1) % 3, 0] - xy[k, 0]) * (y - xy[k, 1])
+         - (xy[(k + 1) % 3, 1] - xy[k, 1]) * (x - xy[k, 0]) for k in range(3)]  # fmt: skip
+    return all(v >= 0 for v in e) or all(v <= 0 for v in e)
+
+
+QUAD_DERIVATIVES = Exercise(
+    "quad_derivatives", quad_cases, as_pair, same_pair, explain_quad, _rule,
+    variant_mistakes(_variants, MISTAKES), answers=(PackageAnswer(lane_values),),
+    draw=draw_quad,
+)  # fmt: skip

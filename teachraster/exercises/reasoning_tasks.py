@@ -1,0 +1,44 @@
+"""The exercises that replace the course's one-line tasks, and those of lessons 07, 09-12
+(issue 30), as the registry runs them.
+
+Each is an :class:`~.exercise.Exercise` (its cases, its answer's reading, its table of
+typical mistakes), defined in its own module:
+
+- ``span`` (lesson 01, :mod:`.spans`), ``perspective_weights`` (04,
+  :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
+  ``safe_near`` (05b, :mod:`.near_plane`): reasoning in place of ``split_point``,
+  ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
+  earlier versions);
+- ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
+- ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
+  ``front_to_back`` (12, :mod:`.front_to_back`);
+- ``broken_frame_1`` … ``broken_frame_6`` (11, :mod:`.broken_frames`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from . import broken_frames as bf
+from . import front_to_back as fb
+from . import hard_case_fill as hf
+from . import hiz_tile as hz
+from . import near_plane as npl
+from . import perspective_weighting as pw
+from . import quad_difference as qd
+from . import spans
+from . import zbuffer_pixel as zb
+from .exercise import Exercise
+
+#: The exercises in course order, and how to build each (for :func:`.checks._registry`).
+EXERCISES: dict[str, Callable[[], Exercise]] = {
+    "span": lambda: spans.SPAN,
+    "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
+    "depth_passes": lambda: zb.DEPTH_PASSES,
+    "safe_near": lambda: npl.SAFE_NEAR,
+    "robust_fill": lambda: hf.ROBUST_FILL,
+    "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
+    "hiz_rejects": lambda: hz.HIZ_REJECTS,
+    **bf.EXERCISES,
+    "front_to_back": lambda: fb.FRONT_TO_BACK,
+}

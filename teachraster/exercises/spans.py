@@ -1,0 +1,272 @@
+"""Exercise ``span`` (lesson 01): one raster line of a triangle, from its edges' crossings.
+
+The span-table fill never tests a pixel: on raster line ``row`` it intersects the centre line
+y = row + ½ with the triangle's edges (the two edges that bound it there change at the
+middle vertex, the split) and turns the crossings x_l ≤ x_r into a range of columns. The
+top-left rule becomes a rounding choice: a centre exactly on the left edge is covered, one
+on the right edge is not, so the covered columns are ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉; a row
+whose centre line runs along a horizontal edge is covered only if that edge is a top edge.
+
+The expected columns come from the package's fill (:func:`teachraster.rasterize`, on a
+window around the triangle); the crossings that explain them are exact (the vertices are on
+the 1/256-px grid, so :class:`fractions.Fraction` holds every number exactly).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from fractions import Fraction
+from functools import cache
+
+import numpy as np
+
+from ..core.fill import rasterize
+from ..core.triangle import Triangle
+from .answers import as_numbers, short
+from .cases import catalogue_coverage, proper_triangles, winding
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .running import WrongAnswerType
+from .scalars import num
+
+
+# -- cases ------------------------------------------------------------------------------------
+def span_cases() -> list[tuple[str, tuple, frozenset]]:
+    """(label, (xy, row), covered columns) for rows that decide: ties, the split, the ends
+    (built once, then copied)."""
+    return copy.deepcopy(_span_cases())
+
+
+@cache
+def _span_cases() -> list[tuple[str, tuple, frozenset]]:
+    triangles = proper_triangles()
+    flat = [(c.label, c.triangles[0]) for c in catalogue_coverage()
+            if c.label in ("collinear", "coincident_vertices")]  # fmt: skip
+    out = []
+    chosen = [(label, xy) for label, xy in triangles if not label.startswith("random")
+              or any(w in label for w in ("horizontal", "100000 px", "smaller than"))]  # fmt: skip
+    for label, xy in chosen + flat:
+        rows = _rows(xy)
+        covered = _covered_rows(xy, [row for row, _ in rows])
+        for row, why in rows:
+            out.append((f"{label}, row {row} ({why})", (xy.copy(), row), covered[row]))
+    # first (the drawing of a passing check): a row with covered centres on a vertex's line
+    first = next(k for k, case in enumerate(out) if case[2] and "vertex" in case[0])
+    return [out[first]] + out[:first] + out[first + 1 :]
+
+
+def _rows(xy: np.ndarray) -> list[tuple[int, str]]:
+    """The rows worth asking about: one through a vertex or along a horizontal edge, the row
+    just below the middle vertex (the split), the first covered one and one outside."""
+    ys = sorted(xy[:, 1])
+    picks = {}
+    on_line = [y for y in ys if (y - 0.5).is_integer()]
+    if on_line:
+        picks[int(on_line[0] - 0.5)] = "a vertex on the centre line"
+    mid = math.floor(ys[1] - 0.5) + 1
+    picks.setdefault(mid, "just below the middle vertex: the split")
+    first = math.ceil(ys[0] - 0.5)
+    picks.setdefault(first, "the first centre line inside the y-range")
+    picks.setdefault(math.floor(ys[0] - 0.5) - 1, "above the triangle")
+    return sorted(picks.items())[:4]
+
+
+def _covered_rows(xy: np.ndarray, rows: list[int]) -> dict[int, frozenset]:
+    """The package's covered columns of each of ``rows`` (its fill, once, on a window around
+    the triangle: an integer shift leaves the snapped grid, and so the coverage, as it is)."""
+    c0 = math.floor(float(xy[:, 0].min())) - 2
+    r0 = min(math.floor(float(xy[:, 1].min())) - 2, *rows)
+    w = math.ceil(float(xy[:, 0].max())) + 3 - c0
+    h = max(math.ceil(float(xy[:, 1].max())) + 3, *(r + 1 for r in rows)) - r0
+    cov = rasterize(Triangle(xy - np.array([c0, r0], dtype=float)), w, h).coverage
+    return {r: frozenset((np.flatnonzero(cov[r - r0]) + c0).tolist()) for r in rows}
+
+
+# -- reading and comparing the answer ---------------------------------------------------------
+def as_span(value) -> frozenset:
+    """The columns first <= col < stop of a returned (first, stop) pair of whole numbers."""
+    arr = as_numbers(value, (2,), "a pair (first, stop) of column numbers")
+    if not np.isfinite(arr).all() or (arr != np.round(arr)).any():
+        raise WrongAnswerType(f"returned {short(value)}: columns are whole numbers")
+    first, stop = (int(v) for v in arr)
+    if stop - first > 10**6:
+        raise WrongAnswerType(f"returned {short(value)}: a span of {stop - first} columns")
+    return frozenset(range(first, stop))
+
+
+def same_span(got: frozenset, expected: frozenset, args=None) -> bool:
+    return got == expected
+
+
+# -- why a span is wrong ----------------------------------------------------------------------
+def crossings(xy: np.ndarray, y) -> tuple[Fraction, Fraction] | None:
+    """Exact x_l <= x_r where the horizontal line at ``y`` meets the closed triangle (None:
+    it misses it, or the triangle has zero area)."""
+    v = [(Fraction(float(p[0])), Fraction(float(p[1]))) for p in xy]
+    y = Fraction(y)
+    xs = []
+    for (ax, ay), (bx, by) in zip(v, v[1:] + v[:1]):
+        if ay == by:
+            if ay == y:
+                xs += [ax, bx]
+        elif min(ay, by) <= y <= max(ay, by):
+            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+    area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0])
+    return (min(xs), max(xs)) if xs and area != 0 else None
+
+
+def _columns(lo, hi) -> frozenset:
+    return frozenset(range(lo, hi))
+
+
+def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
+    """The columns typical wrong roundings give on ``row`` (exact crossings)."""
+    out = {}
+    centre, top = crossings(xy, Fraction(2 * row + 1, 2)), crossings(xy, row)
+    half = Fraction(1, 2)
+    if centre is not None:
+        xl, xr = centre
+        out["corners"] = _columns(math.ceil(xl), math.ceil(xr))
+        out["right inclusive"] = _columns(math.ceil(xl - half), math.floor(xr - half) + 1)
+        out["left exclusive"] = _columns(math.floor(xl - half) + 1, math.ceil(xr - half))
+        out["rounded"] = _columns(round(xl), round(xr))
+    out["row top"] = frozenset() if top is None else _columns(math.ceil(top[0] - half),
+                                                               math.ceil(top[1] - half))  # fmt: skip
+    return out
+
+
+MISTAKES = {
+    "corners": "you rounded the crossings to columns as if pixel col were sampled at x = col "
+    "(its left edge): its centre is at x = col + ½, so the first column is ⌈x_l − ½⌉",
+    "right inclusive": "you covered the centre that lies exactly on the right edge: by the "
+    "top-left rule it belongs to the triangle on the other side (the span stops before it, "
+    "⌈x_r − ½⌉ is the first column *not* covered)",
+    "left exclusive": "you left out the centre that lies exactly on the left edge: a left edge "
+    "owns its centres under the top-left rule (⌈x_l − ½⌉, not ⌊x_l − ½⌋ + 1)",
+    "rounded": "you rounded the crossings to the nearest integer: a column is covered when "
+    "its centre col + ½ lies between them, so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉",
+    "row top": "you intersected the edges with y = row, the top of the pixels, not with the "
+    "line of their centres, y = row + ½",
+}
+
+
+def explain_span(args, expected: frozenset, got: frozenset) -> str:
+    """The exact crossings of the row's centre line, the covered columns and yours."""
+    xy, row = args
+    y = row + 0.5
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    if cross is None:
+        return (
+            f"the centre line y = {num(y)} of row {row} does not cross this {winding(xy)} "
+            f"triangle ({_vertices(xy)}), so no column is covered; yours covers {_span_words(got)}"
+        )
+    xl, xr = cross
+    return (
+        f"the centre line y = {num(y)} crosses the triangle ({_vertices(xy)}) from x_l = "
+        f"{_frac(xl)} to x_r = {_frac(xr)}, so the covered centres are "
+        f"{_span_words(expected)}; yours: {_span_words(got)}"
+    )
+
+
+def _rule(args, expected, got) -> str:
+    return (
+        ": a column is covered when its centre col + ½ lies between the crossings, a centre "
+        "on the left edge included and one on the right edge not: ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉"
+    )
+
+
+def _horizontal_fits(args, expected, got) -> bool:
+    xy, row = args
+    return bool(_horizontal_edge(xy, row + 0.5)) and bool(got) != bool(expected)
+
+
+def _horizontal_words(args, expected, got) -> str:
+    xy, row = args
+    kind = _horizontal_edge(xy, row + 0.5)
+    rule = "covered (a top edge)" if kind == "top" else "not covered (a bottom edge)"
+    return f"row {row}'s centre line runs along a horizontal {kind} edge: its centres are {rule}"
+
+
+def _ends_fits(args, expected, got) -> bool:
+    return bool(expected) and (
+        got == expected - {min(expected)} or got == expected | {max(expected) + 1}
+    )
+
+
+SYMPTOMS = (
+    Mistake("horizontal edge", _horizontal_words, fits=_horizontal_fits, symptom=True),
+    Mistake("ends", "one end of your span is off by one column", fits=_ends_fits, symptom=True),
+)
+
+
+def _horizontal_edge(xy: np.ndarray, y: float) -> str:
+    """ "top" or "bottom" when a horizontal edge lies on the line at ``y``, else ""."""
+    for k in range(3):
+        a, b, c = xy[k], xy[(k + 1) % 3], xy[(k + 2) % 3]
+        if a[1] == b[1] == y:
+            return "top" if c[1] > y else "bottom"
+    return ""
+
+
+def _frac(x: Fraction) -> str:
+    return num(float(x))
+
+
+def _vertices(xy) -> str:
+    return ", ".join(f"({num(p[0])}, {num(p[1])})" for p in xy)
+
+
+def _span_words(cols: frozenset) -> str:
+    if not cols:
+        return "none"
+    lo, hi = min(cols), max(cols)
+    return f"columns {lo} to {hi}" if hi > lo else f"column {lo} only"
+
+
+# -- drawing ----------------------------------------------------------------------------------
+def draw_span(ax, case, got):
+    """The triangle, the row's centre line, its centres coloured by state (covered, missing,
+    extra) and the crossings."""
+    from matplotlib.patches import Rectangle
+
+    _, (xy, row), expected = case
+    y = row + 0.5
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    got_set = set() if got is None else set(got)
+    lo = math.floor(min(float(xy[:, 0].min()), min(expected | got_set, default=0))) - 1
+    hi = math.ceil(max(float(xy[:, 0].max()), max(expected | got_set, default=0) + 1)) + 1
+    hi = min(hi, lo + 40)
+    ring = np.vstack([xy, xy[:1]])
+    artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    artists.append(ax.axhline(y, color="#888888", linestyle=":", linewidth=1))
+    colours = {"covered": "#c8c8c8", "missing": "#2b7bba", "extra": "#d7301f"}
+    for col in range(lo, hi):
+        state = _state(col in expected, col in got_set, got is None)
+        if state:
+            artists.append(ax.add_patch(Rectangle((col, row), 1, 1, color=colours[state],
+                                                  alpha=0.8)))  # fmt: skip
+        artists += ax.plot(col + 0.5, y, ".", color="black", ms=3)
+    if cross is not None:
+        xs = [float(cross[0]), float(cross[1])]
+        artists += ax.plot(xs, [y, y], "|", color="#ff9f1c", ms=14, mew=3, label="x_l, x_r")
+    for name, colour in colours.items():
+        artists.append(ax.add_patch(Rectangle((0, 0), 0, 0, color=colour, label=name)))
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    ax.set_xlim(lo, hi)
+    ax.set_ylim(max(float(xy[:, 1].max()), y) + 1, min(float(xy[:, 1].min()), y) - 1)
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
+    return artists
+
+
+def _state(rule: bool, yours: bool, no_answer: bool) -> str:
+    if no_answer or rule == yours:
+        return "covered" if rule else ""
+    return "missing" if rule else "extra"
+
+
+SPAN = Exercise(
+    "span", span_cases, as_span, same_span, explain_span, _rule,
+    variant_mistakes(_variants, MISTAKES, SYMPTOMS), answers=(PackageAnswer(rasterize),),
+    draw=draw_span,
+)  # fmt: skip

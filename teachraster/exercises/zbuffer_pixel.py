@@ -1,0 +1,175 @@
+"""Exercise ``depth_passes`` (lesson 05a): the z-buffer of one pixel, fragment by fragment.
+
+The fragments that reach one pixel arrive in drawing order, each with its depth and its
+depth mask (``depth_write``: glass is drawn without writing depth). The buffer starts empty;
+a fragment passes when it is strictly nearer than the depth the buffer holds (Ritschel,
+*Interpolation and z-buffering*; CONVENTIONS: ties keep the earlier fragment), and only a
+fragment that passes *and* writes changes what the buffer holds. The student returns which
+fragments pass: that also says which one the pixel shows (the last that passed).
+
+Expected answers: :func:`teachraster.pipeline.visibility.zbuffer.passed_on_arrival`, the
+renderer's own test in drawing order.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..pipeline.visibility.zbuffer import passed_on_arrival
+from .answers import refuse_non_answers, short
+from .cases import SEED
+from .exercise import Exercise, Mistake, PackageAnswer
+from .running import WrongAnswerType
+from .scalars import num
+
+#: Named sequences: (label, depths, writes).
+NAMED = (
+    ("a wall, glass in front of it, then a nearer wall", [0.4, 0.3, 0.35], [True, False, True]),
+    ("one fragment", [0.6], [True]),
+    ("each nearer than the last", [0.7, 0.5, 0.3], [True, True, True]),
+    ("each farther than the last", [0.3, 0.5, 0.7], [True, True, True]),
+    ("a tie: two coplanar triangles", [0.5, 0.5], [True, True]),
+    ("a tie after a nearer fragment", [0.6, 0.4, 0.4, 0.5], [True, True, True, True]),
+    ("nearer, farther, then between", [0.5, 0.2, 0.8, 0.3], [True, True, True, True]),
+    ("glass in front, then the wall behind it", [0.3, 0.6], [False, True]),
+    ("a wall, then glass behind it", [0.4, 0.6], [True, False]),
+    ("two panes of glass, then a wall between them", [0.2, 0.6, 0.4], [False, False, True]),
+    ("glass, then a wall at the same depth", [0.5, 0.5], [False, True]),
+    ("nothing drawn", [], []),
+)
+
+
+def depth_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """(label, (depths, writes), passed) for the named sequences and seeded random ones
+    (depths on a coarse grid so that ties happen, a third of them glass)."""
+    rng = np.random.default_rng(SEED + 40)
+    seqs = [(label, np.array(d, float), np.array(w, bool)) for label, d, w in NAMED]
+    for k in range(16):
+        n = int(rng.integers(2, 8))
+        depths = rng.integers(1, 10, n) / 10
+        writes = rng.uniform(size=n) > (0.35 if k % 2 else 0.0)
+        seqs.append((f"random {k + 1}: {n} fragments", depths, writes))
+    out = []
+    for label, depths, writes in seqs:
+        passed = passed_on_arrival(np.zeros(len(depths), np.int64), depths, writes)
+        out.append((label, (depths.copy(), writes.copy()), passed))
+    return out
+
+
+def as_passes(value) -> np.ndarray:
+    """One truth value per fragment (True/False, or 1/0), as a bool array."""
+    refuse_non_answers(value, "one True/False per fragment")
+    if isinstance(value, (list, tuple, np.ndarray)) and len(value) > 64:
+        raise WrongAnswerType(f"returned {short(value)}: far more values than fragments")
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        raise WrongAnswerType(f"returned {short(value)}, not one True/False per fragment") from None
+    if arr.ndim != 1:
+        raise WrongAnswerType(
+            f"returned {short(value)}: return a list with one True/False per fragment"
+        )
+    if arr.size and arr.dtype.kind not in "biuf":
+        raise WrongAnswerType(f"returned {short(value)}: not True/False values")
+    if arr.size and not np.isin(arr, (0, 1)).all():
+        raise WrongAnswerType(f"returned {short(value)}: only True and False (or 1 and 0)")
+    return arr.astype(bool)
+
+
+def same_passes(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
+    return got.shape == expected.shape and bool(np.array_equal(got, expected))
+
+
+def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=True,
+              previous=False) -> np.ndarray:  # fmt: skip
+    """The z-buffer with one rule changed (each keyword is one typical mistake)."""
+    stored, last, out = np.inf, np.inf, []
+    for d, write in zip(depths.tolist(), writes.tolist()):
+        against = last if previous else stored
+        ok = d <= against if ties else d < against
+        if not test_all and not write:
+            ok = True
+        out.append(ok)
+        if (ok or not update) and (write or not mask):
+            stored = d
+        last = d
+    return np.array(out, dtype=bool)
+
+
+def explain_depth(args, expected, got) -> str:
+    """The first fragment decided wrongly: its depth, what the buffer holds, both verdicts."""
+    depths, writes = args
+    if len(got) != len(expected):
+        return f"{len(depths)} fragment(s) arrive; you returned {len(got)} value(s)"
+    k = int(np.flatnonzero(got != expected)[0])
+    glass = ", glass: no depth write" if not writes[k] else ""
+    return (
+        f"fragment {k} (depth {num(depths[k])}{glass}) meets a buffer holding "
+        f"{_held(depths, writes, expected, k)}: it {'passes' if expected[k] else 'fails'}, you "
+        f"said it {'passes' if got[k] else 'fails'}"
+    )
+
+
+def _rule(args, expected, got) -> str:
+    return (
+        ". A fragment passes when it is strictly nearer than the depth the buffer holds, and "
+        "only one that passes and writes depth changes what the buffer holds"
+    )
+
+
+def _mistake(kind: str, words: str, **change) -> Mistake:
+    return Mistake(kind, words, gives=lambda d, w: _simulate(d, w, **change))
+
+
+DEPTH_MISTAKES = [
+    _mistake("ties", "a tie keeps the fragment already stored (strictly nearer passes): use "
+             "<, not <=", ties=True),
+    _mistake("glass writes", "a fragment that does not write depth (glass) is tested but "
+             "leaves the buffer as it was: later fragments are compared with the last depth "
+             "*written*", mask=False),
+    _mistake("glass untested", "a fragment that does not write depth is still tested: glass "
+             "behind a wall is hidden by it", test_all=False),
+    _mistake("failed writes", "a fragment that fails the test changes nothing: only a "
+             "fragment that passes (and writes) sets the buffer", update=False),
+    _mistake("previous", "you compared each fragment with the one just before it; compare "
+             "with the depth the buffer holds (the nearest written so far)", previous=True),
+    Mistake("all pass", "your function lets every fragment pass, always",
+            gives=lambda d, w: np.ones(len(d), dtype=bool)),
+    Mistake("none pass", "your function lets no fragment pass, ever",
+            gives=lambda d, w: np.zeros(len(d), dtype=bool)),
+]  # fmt: skip
+
+
+def _held(depths, writes, passed, k) -> str:
+    written = [d for d, w, p in zip(depths[:k], writes[:k], passed[:k]) if w and p]
+    return "nothing yet (empty)" if not written else f"{num(written[-1])}"
+
+
+def draw_depth_passes(ax, case, got):
+    """The fragments in drawing order as bars at their depths (hatched: glass, no depth
+    write), green where they pass and red where they fail; each tick says yours."""
+    _, (depths, writes), expected = case
+    n = len(depths)
+    if n == 0:
+        ax.set_axis_off()
+        return [ax.text(0.5, 0.5, "no fragments", ha="center", transform=ax.transAxes)]
+    x = np.arange(n)
+    colours = ["#7fbf7f" if p else "#d7301f" for p in expected]
+    artists = list(ax.bar(x, depths, color=colours, edgecolor="black",
+                          hatch=[None if w else "//" for w in writes]))  # fmt: skip
+    if got is not None and len(got) == n:
+        for i in range(n):
+            artists.append(ax.text(i, depths[i] + 0.02, "yours:\n" + ("passes" if got[i] else "fails"),
+                                   ha="center", va="bottom", fontsize="x-small"))  # fmt: skip
+    ax.set_xticks(x, [f"{i}" + ("" if writes[i] else "\nglass") for i in range(n)],
+                  fontsize="x-small")  # fmt: skip
+    ax.set_ylim(0, 1)
+    ax.set_xlabel("fragment, in drawing order (green: passes, red: fails)")
+    ax.set_ylabel("depth (smaller is nearer)")
+    return artists
+
+
+DEPTH_PASSES = Exercise(
+    "depth_passes", depth_cases, as_passes, same_passes, explain_depth, _rule, DEPTH_MISTAKES,
+    answers=(PackageAnswer(passed_on_arrival),), draw=draw_depth_passes,
+)  # fmt: skip

@@ -1,0 +1,144 @@
+"""Solutions of issue 30's exercises, as the teacher notebooks hold them (and as the capstone
+uses them): imported by tests/test_reasoning_exercises.py and tests/test_capstone.py."""
+
+import math
+
+import numpy as np
+
+
+def span(xy, row):
+    y = row + 0.5
+    xs = []
+    for k in range(3):
+        (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
+        if ay == by:
+            if ay == y:
+                xs += [ax, bx]
+        elif min(ay, by) <= y <= max(ay, by):
+            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+    (ax, ay), (bx, by), (cx, cy) = xy
+    if not xs or (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0:
+        return 0, 0
+    left, right = min(xs), max(xs)
+    for k in range(3):  # a horizontal edge on this line: covered only if it is a top edge
+        (ax, ay), (bx, by), (cx, cy) = xy[k], xy[(k + 1) % 3], xy[(k + 2) % 3]
+        if ay == by == y and cy < y:
+            return 0, 0
+    return math.ceil(left - 0.5), math.ceil(right - 0.5)
+
+
+def perspective_weights(lam, w):
+    lam, w = np.asarray(lam, float), np.asarray(w, float)
+    q = lam * (w.min() / w)
+    return q / q.sum()
+
+
+def depth_passes(depths, writes):
+    stored, out = math.inf, []
+    for d, write in zip(depths, writes):
+        passes = d < stored
+        out.append(passes)
+        if passes and write:
+            stored = d
+    return out
+
+
+def safe_near(z, gap, far, bits):
+    step = 1 / (2**bits - 1)
+    return step * far * z**2 / (gap * far + step * z**2)
+
+
+def robust_fill(xy, width, height, origin=(0, 0)):
+    v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
+
+    def e(a, b, x, y):
+        return (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+
+    area = e(v[0], v[1], v[2][0], v[2][1])
+    if area == 0:
+        return np.zeros((height, width), dtype=bool)
+    if area < 0:
+        v = v[[0, 2, 1]]
+    rows = origin[0] + np.arange(height)[:, None] + 0.5
+    cols = origin[1] + np.arange(width)[None, :] + 0.5
+    inside = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        ek = e(a, b, cols, rows)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (ek >= 0) if top_left else (ek > 0)
+    return inside
+
+
+def quad_derivatives(xy, w, f, row, col):
+    xy, w, f = (np.asarray(a, float) for a in (xy, w, f))
+
+    def value(x, y):
+        (x1, y1), (x2, y2), (x3, y3) = xy
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        lam = (
+            np.array(
+                [
+                    (x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
+                    (x3 - x) * (y1 - y) - (y3 - y) * (x1 - x),
+                    (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x),
+                ]
+            )
+            / area
+        )
+        q = lam / w
+        return float(q @ f / q.sum())
+
+    r0, c0 = row - row % 2, col - col % 2
+    ul = value(c0 + 0.5, r0 + 0.5)
+    return value(c0 + 1.5, r0 + 0.5) - ul, value(c0 + 0.5, r0 + 1.5) - ul
+
+
+def hiz_rejects(xyz, row0, col0, size, buffer):
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, float)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    xs = np.array([col0 + 0.5, col0 + size - 0.5])
+    ys = np.array([row0 + 0.5, row0 + size - 0.5])
+    corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)
+    nearest = max(corners.min(), min(z1, z2, z3))
+    return bool(nearest >= np.max(buffer))
+
+
+def front_to_back(layers):
+    colour, alpha = np.zeros(3), 0.0
+    for layer in np.asarray(layers, dtype=float).reshape(-1, 4):
+        colour += (1 - alpha) * layer[:3]
+        alpha += (1 - alpha) * layer[3]
+    return np.array([*colour, alpha])
+
+
+# -- the capstone's functions: exercises 1, 3, 6, 7 and 9 as their solutions hold them ------
+from exercise_solutions import barycentric, bilinear, covers, resolve, trilinear  # noqa: E402
+from lines_blending_solutions import over  # noqa: E402
+
+CAPSTONE = dict(covers=covers, barycentric=barycentric, perspective_weights=perspective_weights,
+                depth_passes=depth_passes, over=over, bilinear=bilinear, trilinear=trilinear,
+                resolve=resolve)  # fmt: skip
+
+#: A correct answer to each of issue 30's exercises, by name.
+BROKEN_FRAMES = {
+    1: ("depth function", (24, 28)),
+    2: ("culled winding", (24, 28)),
+    3: ("z-fighting", (24, 16)),
+    4: ("missing premultiplication", (21, 18)),
+    5: ("blend order", (19, 28)),
+    6: ("sliver", (25, 42)),
+}
+CORRECT = {
+    "span": span,
+    "perspective_weights": perspective_weights,
+    "depth_passes": depth_passes,
+    "safe_near": safe_near,
+    "robust_fill": robust_fill,
+    "quad_derivatives": quad_derivatives,
+    "hiz_rejects": hiz_rejects,
+    **{f"broken_frame_{n}": (lambda a=a: a) for n, a in BROKEN_FRAMES.items()},
+    "front_to_back": front_to_back,
+}

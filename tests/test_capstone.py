@@ -1,0 +1,118 @@
+"""The capstone (issue 30): the student's functions render the built-in scenes through the
+pipeline's stage overrides; every scene passes with correct functions, and a wrong one is
+explained at its first differing pixel by the stage where the pixel histories part."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import reasoning_solutions as sol
+
+from teachraster import exercises as ex
+from teachraster.exercises.capstone_render import SCENES
+
+
+def _mine(scene, **changed):
+    return {name: changed.get(name, sol.CAPSTONE[name]) for name in SCENES[scene].uses}
+
+
+@pytest.mark.parametrize("scene", list(SCENES))
+def test_every_scene_passes_with_correct_functions(scene):
+    report = ex.capstone(scene, **_mine(scene))
+    assert report.passed, str(report)
+    assert "all 1728 pixels match" in str(report) and "cases pass" in str(report)
+
+
+def _top_right(xy, p):  # covers centres on right edges instead of left ones
+    return sol.covers(np.array(xy) * [-1, 1], np.array(p) * [-1, 1])
+
+
+WRONG = [
+    ("grid", {"covers": _top_right}, "coverage", "the top-left rule"),
+    ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
+     "interpolation", "your barycentric returned"),
+    ("textured_floor", {"perspective_weights": lambda lam, w: lam}, "interpolation",
+     "your perspective_weights(λ, w) returned"),
+    ("intersecting_triangles", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test",
+     "your depth_passes returned [True, True]"),
+    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending", "your over(src, dst)"),
+    ("floor_trilinear", {"trilinear": lambda p, uv, lod, w: sol.bilinear(p[0], uv, w)},
+     "texture filtering", "your trilinear"),
+    ("cube_msaa", {"resolve": lambda c, i, b: np.nanmean(c, axis=0)}, "resolve",
+     "your resolve returned"),
+    ("sphere", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test", "depth_passes"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("scene, changed, stage, words", WRONG, ids=[w[0] for w in WRONG])
+def test_a_wrong_function_is_found_at_its_stage(scene, changed, stage, words):
+    report = ex.capstone(scene, **_mine(scene, **changed))
+    assert not report.passed and report.n_wrong > 0
+    first = report.failures[0]
+    assert first.kind == stage and words in first.explanation, str(report)
+    assert report.differing_pixels().shape == (report.n_wrong, 2)
+
+
+def test_unfinished_raising_and_wrong_types_name_the_function():
+    def stub(*args):
+        raise NotImplementedError()
+
+    report = ex.capstone("sphere", **_mine("sphere", perspective_weights=stub))
+    assert report.not_implemented and "perspective_weights raises" in str(report)
+    report = ex.capstone("grid", covers=lambda xy, p: None)
+    assert report.failures[0].kind == "none" and "your covers returned None" in str(report)
+    report = ex.capstone("grid", covers=lambda xy, p: 1 / 0)
+    assert "your covers raised ZeroDivisionError" in str(report)
+    report = ex.capstone("intersecting_triangles", depth_passes=lambda d, w: [True])
+    assert "one True/False per fragment" in str(report)
+
+
+def test_bad_calls_are_errors_naming_the_argument():
+    with pytest.raises(ValueError, match="scene must be one of"):
+        ex.capstone("teapot", covers=sol.covers)
+    with pytest.raises(TypeError, match="missing"):
+        ex.capstone("grid")
+    with pytest.raises(TypeError, match="covers must be a function"):
+        ex.capstone("grid", covers=3)
+
+
+def test_compare_draws_three_panels_with_the_first_pixel_marked():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.capstone("grid", covers=_top_right)
+    fig, axes = plt.subplots(1, 3)
+    artists = report.compare(axes)
+    assert artists and "differ" in axes[2].get_title()
+    assert axes[2].get_xlabel().startswith("pixel (")
+    plt.close(fig)
+    stub = ex.capstone("grid", covers=lambda xy, p: None)
+    fig, axes = plt.subplots(1, 3)
+    stub.compare(axes)
+    plt.close(fig)
+
+
+def test_the_time_limit_is_the_classes_and_prints_are_kept_aside(monkeypatch, capsys):
+    """An endless covers stops within the budget (raised by the lecturer's variable); a
+    debug print per pixel is kept aside, not sent line by line."""
+    from endless_loops import forever
+
+    from teachraster.exercises.running import BUDGET_VARIABLE
+
+    report = ex.capstone("grid", covers=forever, budget=0.2)
+    assert report.failures[0].kind == "timeout" and "0.2 s" in str(report), str(report)
+    monkeypatch.setenv(BUDGET_VARIABLE, "0.4")
+    report = ex.capstone("grid", covers=forever, budget=0.2)
+    assert "0.4 s" in str(report), str(report)
+    monkeypatch.delenv(BUDGET_VARIABLE)
+    capsys.readouterr()
+
+    def chatty(xy, p):
+        print("pixel", p)
+        return sol.covers(xy, p)
+
+    report = ex.capstone("grid", covers=chatty)
+    assert report.passed and report.printed is not None and "printed" in str(report)
+    assert capsys.readouterr().out.count("\n") < 100

@@ -1,0 +1,210 @@
+"""Issue 30's exercises: correct solutions written differently pass, each typical mistake is
+named right in the first explanation (its kind and its words), and the broken frames' hints
+are true and never give the answer away."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import reasoning_solutions as sol
+from exercise_solutions import CORRECT
+from student_variants import DIFFERENT, KINDS, WRONG, _hiz_with
+
+import teachraster as tr
+from teachraster import exercises as ex
+from teachraster.exercises import broken_frames as bf
+from teachraster.study.hardcases import naive_coverage
+
+
+def _passes(name, fn):
+    report = ex.check(name, fn)
+    assert report.passed, str(report)
+
+
+def _named(name, fn, kind, words):
+    report = ex.check(name, fn)
+    assert not report.passed
+    first = report.failures[0]
+    assert first.kind == kind, (kind, str(report))
+    assert words in first.explanation, (words, first.explanation)
+    return report
+
+
+# -- robust_fill -----------------------------------------------------------------------------
+def _fill(**kw):
+    def fill(xy, width, height, origin=(0, 0)):
+        v = np.asarray(xy, float) if kw.get("raw") else np.rint(np.asarray(xy, float) * 256) / 256
+        return naive_coverage(v, width, height, origin=tuple(origin),
+                              rule=kw.get("rule", "top_left"), dtype=kw.get("dtype", np.float64),
+                              absolute=kw.get("absolute", False))  # fmt: skip
+
+    return fill
+
+
+# -- quad_derivatives ------------------------------------------------------------------------
+def _quad(change):
+    from teachraster import barycentric, perspective_weights
+
+    def quad_derivatives(xy, w, f, row, col):
+        def value(x, y):
+            lam = barycentric(xy, [x, y])
+            if change == "affine":
+                return float(lam @ f)
+            return float(perspective_weights(lam[None], w, extrapolate=change != "clamp")[0] @ f)
+
+        r0, c0 = (row, col) if change == "unaligned" else (row - row % 2, col - col % 2)
+        ul = value(c0 + 0.5, r0 + 0.5)
+        dx, dy = value(c0 + 1.5, r0 + 0.5) - ul, value(c0 + 0.5, r0 + 1.5) - ul
+        return (dx, -dy) if change == "up" else (dx, dy)
+
+    return quad_derivatives
+
+
+def step(bits):
+    return 1 / (2**bits - 1)
+
+
+def solve(s, z, gap, far):
+    """The near plane where step (f - n) z² / (f n) = gap."""
+    return s * far * z * z / (gap * far + s * z * z)
+
+
+# Correct solutions written differently and typical mistakes (their words and kinds) are in
+# student_variants.py (DIFFERENT, WRONG, KINDS), run by test_checker_corpus.py.
+
+
+def test_every_issue_30_exercise_has_correct_variants_and_named_mistakes():
+    issue_30 = set(ex.names()) - set(CORRECT)
+    assert issue_30 == set(sol.CORRECT)
+    wrong = {name for name, _, _ in WRONG.values()}
+    different = {name for name, _ in DIFFERENT.values()}
+    frames = {f"broken_frame_{n}" for n in range(1, 7)}
+    assert issue_30 - frames <= wrong & different
+    assert {label for label, (name, _, _) in WRONG.items() if name in issue_30} <= set(KINDS)
+
+
+def test_perspective_weights_that_overflow_are_told_only_ratios_matter():
+    report = ex.check("perspective_weights", lambda lam, w: (lam / w) / (lam / w).sum())
+    assert {f.kind for f in report.failures} == {"overflow"}, str(report)
+    assert "only the ratios" in report.failures[0].explanation
+
+
+def test_safe_near_never_blames_float32_for_a_named_mistake():
+    report = _named("safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "step")
+    assert all("float32's rounding" not in f.explanation for f in report.failures)
+
+
+def test_robust_fill_names_the_absolute_form_and_fails_the_naive_fill_often():
+    report = ex.check("robust_fill", _fill(rule="top_left", absolute=True, dtype=np.float32))
+    assert "absolute form" in {f.kind for f in report.failures}, str(report)
+    naive = ex.check("robust_fill", _fill(raw=True, rule="inclusive"))
+    assert len(naive.failures) >= 5  # the naive fill fails the catalogue in many places
+
+
+def test_quad_derivatives_clamped_at_helpers():
+    report = ex.check("quad_derivatives", _quad("clamp"))
+    assert report.failures and report.failures[0].kind == "clamped", str(report)
+
+
+def test_hiz_rejects_without_the_vertex_clamp():
+    report = ex.check("hiz_rejects", _hiz_with(clamp=False))
+    assert "no clamp" in {f.kind for f in report.failures}, str(report)
+
+
+# -- broken frames ---------------------------------------------------------------------------
+ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
+           4: "missing premultiplication", 5: "blend order", 6: "sliver"}  # fmt: skip
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
+    b = ex.broken_frame(number)
+    assert b.cause == ANSWERS[number]
+    row, col = (int(v) for v in np.argwhere(b.differs())[0])
+    _passes(f"broken_frame_{number}", lambda: (ANSWERS[number].upper(), (row, col)))
+    for cause in bf.CAUSES:
+        if cause == b.cause:
+            continue
+        report = ex.check(f"broken_frame_{number}", lambda c=cause: (c, (row, col)))
+        assert [f.kind for f in report.failures] == ["cause"], str(report)
+        hint = report.failures[0].explanation
+        assert b.cause not in hint and "does not explain" not in hint, (cause, hint)
+    same = np.argwhere(~b.differs())[0]
+    report = ex.check(f"broken_frame_{number}", lambda: (b.cause, tuple(same)))
+    assert [f.kind for f in report.failures] == ["pixel"]
+
+
+def test_broken_frames_one_and_two_look_alike_and_their_histories_differ():
+    one, two = ex.broken_frame(1), ex.broken_frame(2)
+    assert np.array_equal(bf._rgb(one.frame), bf._rgb(two.frame))
+    assert not one.frame.trace.culled.any() and two.frame.trace.culled.any()
+
+
+def test_broken_frame_answers_are_read_strictly():
+    report = ex.check("broken_frame_1", lambda: ("the depth", (3, 4)))
+    assert report.failures[0].kind == "type" and "not one of the causes" in str(report)
+    report = ex.check("broken_frame_1", lambda: "depth function")
+    assert report.failures[0].kind == "type"
+    report = ex.check("broken_frame_1", lambda: ("depth function", (99, 4)))
+    assert "outside" in str(report)
+
+
+def test_the_frame_inspector_shows_the_broken_frames():
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    frames = {f"frame {b.number}": b.frame for b in bf.broken_frames()}
+    w = FrameInspector(frames=frames, backend="image")
+    try:
+        assert list(w.scene.options) == list(frames) and w.frame is frames["frame 1"]
+        assert w.samples.disabled and w.glass.disabled and not w.scene.disabled
+        w.scene.value = "frame 2"
+        w.click_at(30.5, 20.5)
+        assert w.history.outcomes == frames["frame 2"].history(20, 30).outcomes
+        assert "culled" in w.table.value
+    finally:
+        w.close()
+    untraced = tr.render(tr.get_scene("cube").clip(4 / 3), 8, 6)
+    with pytest.raises(ValueError, match="trace=True"):
+        FrameInspector(frames={"a": untraced})
+    with pytest.raises(TypeError, match="non-empty dict"):
+        FrameInspector(frames={})
+
+
+def test_broken_frame_numbers_are_checked():
+    assert ex.broken_frame(np.int64(3)).number == 3
+    with pytest.raises(TypeError, match="number must be an integer"):
+        ex.broken_frame(True)
+    with pytest.raises(ValueError, match="1 to 6"):
+        ex.broken_frame(7)
+
+
+RIGHT = dict(sol.CORRECT)
+FIRST_WRONG = {}
+for _name, _fn, _ in WRONG.values():
+    FIRST_WRONG.setdefault(_name, _fn)
+for _n in range(1, 7):  # a cause that is not the frame's
+    FIRST_WRONG.setdefault(
+        f"broken_frame_{_n}", lambda n=_n: ("sliver" if n != 6 else "z-fighting", (24, 28))
+    )
+
+
+@pytest.mark.parametrize("name", list(RIGHT))
+def test_reports_draw_passing_failing_and_missing(name):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def stub(*args):
+        raise NotImplementedError
+
+    for fn in (RIGHT[name], FIRST_WRONG[name], stub):
+        report = ex.check(name, fn)
+        if fn is stub:
+            assert report.not_implemented and "not implemented yet" in str(report)
+        fig, ax = plt.subplots(figsize=(3, 3))
+        artists = report.plot(ax)
+        assert artists and ax.get_title().startswith(name)
+        fig.canvas.draw()
+        plt.close(fig)
