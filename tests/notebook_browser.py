@@ -130,10 +130,20 @@ def _start_server(work: Path, env: dict) -> tuple[str, subprocess.Popen]:
 
 
 @functools.cache
+def driver():
+    """This process's Playwright (sync API), started once and stopped at exit: one thread can
+    hold only one, so every browser test of a worker launches its browsers from this one."""
+    from playwright.sync_api import sync_playwright
+
+    running = sync_playwright().start()
+    atexit.register(running.stop)
+    return running
+
+
+@functools.cache
 def lab() -> Lab:
     """This process's server and browser (started once, stopped at exit)."""
     import notebook_runs
-    from playwright.sync_api import sync_playwright
 
     work = Path(tempfile.mkdtemp(prefix="teachraster-lab-"))
     shutil.copytree(ROOT / "notebooks", work / "notebooks")
@@ -148,17 +158,11 @@ def lab() -> Lab:
     log = work / "probe.json"
     env.update(notebook_runs._bench().probe_environment(work / "ipython", log))
     base, process = _start_server(work, env)
-    driver = sync_playwright().start()
-    browser = driver.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+    browser = driver().chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
     page = browser.new_context(viewport={"width": 1400, "height": 1000}).new_page()
     errors: list[str] = []
     page.on("pageerror", lambda exc: errors.append(str(exc)))
-
-    def stop_browser():
-        browser.close()
-        driver.stop()
-
-    running = Lab(base, work / "notebooks", log, process, page, errors, stop_browser)
+    running = Lab(base, work / "notebooks", log, process, page, errors, browser.close)
     atexit.register(running.stop)
     return running
 

@@ -42,7 +42,7 @@ pytestmark = [
 def opened_offline(path: Path):
     """``path`` in headless Chromium with every request but the file itself aborted; on
     leaving, no request may have been made and no error raised in the page."""
-    from playwright.sync_api import sync_playwright
+    from notebook_browser import driver
 
     asked: list[str] = []
     errors: list[str] = []
@@ -54,18 +54,17 @@ def opened_offline(path: Path):
             asked.append(request_route.request.url)
             request_route.abort()
 
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
-        try:
-            page = browser.new_page(viewport={"width": 1400, "height": 900})
-            page.on("pageerror", lambda exc: errors.append(str(exc)))
-            page.route("**/*", route)
-            page.goto(path.as_uri())
-            yield page
-            assert not errors, f"errors in the page: {errors[:3]}"
-            assert not asked, f"the page asked the network for {asked[:3]}"
-        finally:
-            browser.close()
+    browser = driver().chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
+    try:
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        page.on("pageerror", lambda exc: errors.append(str(exc)))
+        page.route("**/*", route)
+        page.goto(path.as_uri())
+        yield page
+        assert not errors, f"errors in the page: {errors[:3]}"
+        assert not asked, f"the page asked the network for {asked[:3]}"
+    finally:
+        browser.close()
 
 
 def _picture(page) -> str:
