@@ -113,6 +113,17 @@ def examples(n: int) -> int:
     return max(5, n // 4) if QUICK else n
 
 
+def sample(values, keep: int = 3) -> list:
+    """The parameters a test runs over: all of them in the full run; in the quick tier every
+    ``keep``-th, the first included (the same ones each time), so each test still runs.
+
+    >>> len(sample(range(9))) in (3, 9)
+    True
+    """
+    values = list(values)
+    return values[::keep] if QUICK else values
+
+
 def cases(n: int) -> int:
     """How many random cases a loop runs: ``n`` in the full run, a quarter in the quick tier
     (the same seeds, so the quick tier's cases are the full run's first ones).

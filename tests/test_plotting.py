@@ -5,6 +5,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 
+import itertools  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
 import warnings  # noqa: E402
@@ -12,6 +13,7 @@ import warnings  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
+from conftest import sample  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster import plotting as tp  # noqa: E402
@@ -123,8 +125,7 @@ def test_plot_functions_return_their_artists_on_the_axes(method, name):
     fig.canvas.draw()
 
 
-@pytest.mark.parametrize("case", list(ODD))
-@pytest.mark.parametrize("name", CALL_NAMES)
+@pytest.mark.parametrize("case, name", sample(itertools.product(ODD, CALL_NAMES), keep=4))
 def test_plot_functions_survive_odd_triangles(case, name):
     method = "span" if name in ("split", "raster_line") else "halfplane"
     fill = make_fill(method, **ODD[case])
@@ -343,8 +344,7 @@ def test_fill_view_new_image_size():
     view.fig.canvas.draw()
 
 
-@pytest.mark.parametrize("case", list(ODD))
-@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("case, method", sample(itertools.product(ODD, METHODS), keep=4))
 def test_fill_view_odd_triangles(case, method):
     fill = make_fill(method, **ODD[case])
     view = tp.FillView(fill)
@@ -545,7 +545,7 @@ def rendered(fig):
 
 
 @pytest.mark.parametrize("method", METHODS)
-@pytest.mark.parametrize("size", [16, 40])
+@pytest.mark.parametrize("size", sample([16, 40], keep=2))
 def test_blitted_steps_equal_a_full_redraw(method, size):
     """redraw() (background, still layers, moving artists) matches fig.canvas.draw()."""
     s = size / W
