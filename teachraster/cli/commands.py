@@ -7,7 +7,7 @@ import numpy as np
 from . import course
 from .arguments import parse_attr
 from .export import (
-    animate,
+    animate_from_args,
     check_export_time,
     check_fill_size,
     fill_from_args,
@@ -46,15 +46,8 @@ def cmd_fill(args, parser) -> int:
                 if steps[-1] != n - 1:
                     steps.append(n - 1)  # always end on the finished fill
                 check_export_time(view, steps, args, parser)
-                count = animate(
-                    view.fig,
-                    args.output,
-                    steps,
-                    lambda k: view.show_step(k, draw=False),
-                    fps=args.fps,
-                    hold=args.hold,
-                    dpi=output_dpi(args),
-                    quiet=args.quiet,
+                count = animate_from_args(
+                    view.fig, steps, lambda k: view.show_step(k, draw=False), args
                 )
                 say(f"wrote {args.output}: {len(steps)} of {n} steps, {count} frames")
             else:
@@ -104,16 +97,7 @@ def cmd_compare(args, parser) -> int:
                     )
 
                 frames = np.linspace(a, b, args.frames)
-                count = animate(
-                    fig,
-                    args.output,
-                    frames,
-                    update,
-                    fps=args.fps,
-                    hold=args.hold,
-                    dpi=output_dpi(args),
-                    quiet=args.quiet,
-                )
+                count = animate_from_args(fig, frames, update, args)
                 say(f"wrote {args.output}: w{args.vertex + 1} from {a:g} to {b:g}, {count} frames")
             else:
                 fig.savefig(args.output, dpi=output_dpi(args))

@@ -103,6 +103,20 @@ def animate(
     return total
 
 
+def animate_from_args(fig, frames, update, args) -> int:
+    """:func:`animate` to ``args.output`` with the command line's fps, hold, dpi and quiet."""
+    return animate(
+        fig,
+        args.output,
+        frames,
+        update,
+        fps=args.fps,
+        hold=args.hold,
+        dpi=output_dpi(args),
+        quiet=args.quiet,
+    )
+
+
 def triangle_from_args(args, *, attrs_default=None):
     from ..core.triangle import Triangle
 
