@@ -173,8 +173,10 @@ def test_the_frame_inspector_shows_the_broken_frames():
 
 def test_broken_frame_numbers_are_checked():
     assert ex.broken_frame(np.int64(3)).number == 3
-    with pytest.raises(TypeError, match="number must be an integer"):
+    with pytest.raises(TypeError, match="number must be an int"):
         ex.broken_frame(True)
+    with pytest.raises(TypeError, match="number must be an int"):
+        ex.broken_frame(3.0)
     with pytest.raises(ValueError, match="1 to 6"):
         ex.broken_frame(7)
 

@@ -16,12 +16,12 @@ mistake did not change is refused.
 
 from __future__ import annotations
 
-import operator
 from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
 
+from ..core.validate import as_int
 from ..pipeline.rendering.render_triangles import Frame, render
 from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
@@ -159,12 +159,7 @@ def broken_frames() -> tuple[BrokenFrame, ...]:
 def broken_frame(number: int) -> BrokenFrame:
     """Frame ``number`` (1 to 6)."""
     frames = broken_frames()
-    if isinstance(number, bool | np.bool_):
-        raise TypeError(f"number must be an integer, got {number!r}")
-    try:
-        number = operator.index(number)
-    except TypeError:
-        raise TypeError(f"number must be an integer, got {type(number).__name__}") from None
+    number = as_int("number", number)  # the one integer rule: no bools, operator.index
     if not 1 <= number <= len(frames):
         raise ValueError(f"number must be 1 to {len(frames)}, got {number}")
     return frames[number - 1]
