@@ -582,11 +582,15 @@ void main() {{
     o_id = vec4(float(gl_PrimitiveID), float(gl_SampleMaskIn[0]), value, 1.0);
 }}
 """
-_MS_RESOLVE_VS = """#version 330
+#: One triangle over the whole viewport (corners (-1, -1), (3, -1), (-1, 3) in clip space),
+#: for the passes that read a multisampled target back pixel by pixel.
+FULL_SCREEN_CORNERS = np.array([-1, -1, 3, -1, -1, 3], dtype="f4")
+FULL_SCREEN_VS = """#version 330
 in vec2 in_corner;
 void main() { gl_Position = vec4(in_corner, 0.0, 1.0); }
 """
-_MS_RESOLVE_FS = """#version 330
+#: Sample ``sample_index`` of the multisampled texture ``samples``, at this fragment's pixel.
+SAMPLE_FETCH_FS = """#version 330
 uniform sampler2DMS samples;
 uniform int sample_index;
 out vec4 o;
@@ -646,7 +650,7 @@ def gl_render_samples(clip, width: int, height: int, *, samples: int = 4, depth_
                 vertex_shader=vs, fragment_shader=_MS_DRAW_FS
             )
             _STATE["programs"]["ms_resolve"] = ctx.program(
-                vertex_shader=_MS_RESOLVE_VS, fragment_shader=_MS_RESOLVE_FS
+                vertex_shader=FULL_SCREEN_VS, fragment_shader=SAMPLE_FETCH_FS
             )
         draw, read = _STATE["programs"]["ms_draw"], _STATE["programs"]["ms_resolve"]
         pos = ctx.buffer(clip.astype("f4").tobytes())
@@ -705,7 +709,7 @@ def _read_samples(ctx, program, tex, size, samples, res):
     import moderngl
 
     width, height = size
-    corners = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype="f4").tobytes())
+    corners = ctx.buffer(FULL_SCREEN_CORNERS.tobytes())
     res.append(corners)
     vao = ctx.vertex_array(program, [(corners, "2f", "in_corner")])
     res.append(vao)

@@ -34,7 +34,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.validate import as_size
-from .opengl import RawGL, egl_function, gl_available
+from .opengl import (
+    FULL_SCREEN_CORNERS,
+    FULL_SCREEN_VS,
+    SAMPLE_FETCH_FS,
+    RawGL,
+    egl_function,
+    gl_available,
+)
 
 __all__ = ["GLCounters", "gl_counters"]
 
@@ -104,20 +111,10 @@ _DRAW_FS = """#version 330
 out vec4 o;
 void main() { o = vec4(0.0); }
 """
-_QUAD_VS = """#version 330
-in vec2 in_corner;
-void main() { gl_Position = vec4(in_corner, 0.0, 1.0); }
-"""
 _BIT_FS = """#version 330
 uniform float weight;
 out vec4 o;
 void main() { o = vec4(weight, 0.0, 0.0, 1.0); }
-"""
-_FETCH_FS = """#version 330
-uniform sampler2DMS counts;
-uniform int sample_index;
-out vec4 o;
-void main() { o = texelFetch(counts, ivec2(gl_FragCoord.xy), sample_index); }
 """
 
 
@@ -133,8 +130,8 @@ def _setup():
         _STATE.clear()
         _STATE["ctx"], _STATE["gl"] = ctx, _StencilGL()
         _STATE["draw"] = ctx.program(vertex_shader=_DRAW_VS, fragment_shader=_DRAW_FS)
-        _STATE["bit"] = ctx.program(vertex_shader=_QUAD_VS, fragment_shader=_BIT_FS)
-        _STATE["fetch"] = ctx.program(vertex_shader=_QUAD_VS, fragment_shader=_FETCH_FS)
+        _STATE["bit"] = ctx.program(vertex_shader=FULL_SCREEN_VS, fragment_shader=_BIT_FS)
+        _STATE["fetch"] = ctx.program(vertex_shader=FULL_SCREEN_VS, fragment_shader=SAMPLE_FETCH_FS)
     return _STATE["ctx"], _STATE["gl"]
 
 
@@ -164,7 +161,7 @@ def gl_counters(clip, width: int, height: int, *, samples: int = 1, depth_test: 
         res.append(pos)
         vao = ctx.vertex_array(_STATE["draw"], [(pos, "4f", "in_pos")])
         res.append(vao)
-        corners = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype="f4").tobytes())
+        corners = ctx.buffer(FULL_SCREEN_CORNERS.tobytes())
         res.append(corners)
         quads = [
             ctx.vertex_array(_STATE[p], [(corners, "2f", "in_corner")]) for p in ("bit", "fetch")
@@ -251,7 +248,7 @@ def _read_stencil(ctx, gl, fbo, tex, quads, size, samples, res):
     res.append(out)
     out.use()
     tex.use(location=0)
-    fetch.program["counts"] = 0
+    fetch.program["samples"] = 0
     total = np.zeros((height, width), dtype=np.int64)
     for s in range(samples):
         fetch.program["sample_index"] = s
