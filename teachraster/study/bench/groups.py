@@ -255,17 +255,12 @@ def depth_pairs(aspect: float = 1.0):
     -------
     view (2K, 3, 3) view-space vertices, z_view (2K,) their distances.
     """
-    proj = perspective(60.0, aspect, NEAR, FAR)
-    t = 1.0 / proj[1, 1]  # tan(fov / 2)
     shape = np.array([[-0.28, -0.25], [0.25, -0.3], [-0.05, 0.28]])  # NDC, about the cell
     view, z_view = [], []
     for k, z in enumerate(DEPTH_DISTANCES):
-        centre = np.array([(k % 3 - 1) * 2 / 3, (1 - k // 3) * 2 / 3])
         for dz, shift in ((DEPTH_GAP, 0.0), (0.0, 0.06)):
-            ndc = centre + shape + [shift, 0.0]
             d = z + dz
-            pts = np.column_stack([ndc[:, 0] * d * t * aspect, ndc[:, 1] * d * t, -np.full(3, d)])
-            view.append(pts)
+            view.append(_in_cell(k, shape, shift, d, aspect))
             z_view.append(d)
     return np.array(view), np.array(z_view)
 
@@ -285,19 +280,24 @@ def slanted_pairs(aspect: float = 1.0):
     -------
     view (2K, 3, 3) view-space vertices, z_view (2K,) the distance of each pair.
     """
-    proj = perspective(60.0, aspect, NEAR, FAR)
-    t = 1.0 / proj[1, 1]  # tan(fov / 2)
     shape = np.array([[-0.28, -0.25], [0.28, -0.3], [-0.05, 0.28]])  # NDC, about the cell
     view, z_view = [], []
     for k, z in enumerate(SLANTED_DISTANCES):
-        centre = np.array([(k % 3 - 1) * 2 / 3, (1 - k // 3) * 2 / 3])
         for slant, shift in ((SLANT, 0.0), (0.0, 0.05)):
-            ndc = centre + shape + [shift, 0.0]
             d = z * (1 + slant * shape[:, 0] / 0.28)
-            pts = np.column_stack([ndc[:, 0] * d * t * aspect, ndc[:, 1] * d * t, -d])
-            view.append(pts)
+            view.append(_in_cell(k, shape, shift, d, aspect))
             z_view.append(z)
     return np.array(view), np.array(z_view)
+
+
+def _in_cell(k: int, shape: np.ndarray, shift: float, d, aspect: float) -> np.ndarray:
+    """(3, 3) view-space vertices that project to ``shape`` (NDC, about the cell's centre)
+    moved ``shift`` to the right in cell k of a 3 x 3 layout of the screen, at view
+    distance ``d`` (one for all three vertices, or one each)."""
+    t = 1.0 / perspective(60.0, aspect, NEAR, FAR)[1, 1]  # tan(fov / 2)
+    ndc = np.array([(k % 3 - 1) * 2 / 3, (1 - k // 3) * 2 / 3]) + shape + [shift, 0.0]
+    d = np.broadcast_to(np.asarray(d, dtype=np.float64), (len(ndc),))
+    return np.column_stack([ndc[:, 0] * d * t * aspect, ndc[:, 1] * d * t, -d])
 
 
 def depth_clip(view: np.ndarray, mapping: str, aspect: float = 1.0) -> np.ndarray:
