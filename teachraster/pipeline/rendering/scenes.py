@@ -102,17 +102,19 @@ def _facing(distance: float = 3.0, **kw) -> Camera:
     return Camera(eye=(0, 0, distance), target=(0, 0, 0), **kw)
 
 
+def _rgb_triangle(positions, uv) -> Mesh:
+    """A one-triangle mesh with red, green and blue corners and texture coordinates ``uv``."""
+    return Mesh(positions, [[0, 1, 2]], {"color": np.eye(3), "uv": uv})
+
+
 def single_triangle() -> Scene:
     """One front-facing triangle with red, green and blue corners."""
-    mesh = Mesh(
-        [[-1.0, -0.8, 0], [1.0, -0.6, 0], [-0.1, 0.9, 0]],
-        [[0, 1, 2]],
-        {"color": np.eye(3), "uv": [[0, 1], [1, 1], [0.5, 0]]},
-    )
     return Scene(
         "single_triangle",
         "one triangle: coverage, edge functions and barycentric colour interpolation",
-        mesh,
+        _rgb_triangle(
+            [[-1.0, -0.8, 0], [1.0, -0.6, 0], [-0.1, 0.9, 0]], [[0, 1], [1, 1], [0.5, 0]]
+        ),
         _facing(),
     )
 
@@ -228,10 +230,8 @@ def behind_camera() -> Scene:
     """A floor triangle with one vertex behind the camera (clip w < 0 there)."""
     # Projecting the vertex behind the eye without clipping first would mirror it to the
     # other side of the image; clipping against the near plane in clip space avoids that.
-    mesh = Mesh(
-        [[-1.5, -0.5, -1.0], [0.0, -0.5, 4.0], [1.5, -0.5, -1.0]],
-        [[0, 1, 2]],
-        {"color": np.eye(3), "uv": [[0, 0], [0.5, 1], [1, 0]]},
+    mesh = _rgb_triangle(
+        [[-1.5, -0.5, -1.0], [0.0, -0.5, 4.0], [1.5, -0.5, -1.0]], [[0, 0], [0.5, 1], [1, 0]]
     )
     return Scene(
         "behind_camera",
