@@ -128,6 +128,17 @@ def _setup(xy: np.ndarray, arithmetic: str) -> _Setup:
     return _Setup(p=p, top_left=top_left, empty=bool(area2 == 0), unit=unit, dtype=dtype)
 
 
+def _checked_setup(xy, width, height, arithmetic, evaluation, origin):
+    """Every argument checked (in this order), then the triangle set up: how the public
+    functions (through :func:`_local_coverage`, or :func:`edge_values` directly) start.
+
+    Returns ``(setup, width, height, ox, oy)``.
+    """
+    _check(arithmetic, evaluation)
+    width, height, ox, oy = _check_window(width, height, origin)
+    return _setup(_as_xy(xy), arithmetic), width, height, ox, oy
+
+
 def _centres(setup: _Setup, index: np.ndarray) -> np.ndarray:
     """Absolute pixel-centre coordinates of pixel indices, in the arithmetic's type."""
     if setup.dtype is np.int64:
@@ -177,9 +188,7 @@ def _bbox(setup: _Setup, width: int, height: int, ox: int, oy: int):
 
 def _local_coverage(xy, width, height, arithmetic, evaluation, origin):
     """Coverage of the bounding box and where it sits in the window (row0, col0)."""
-    _check(arithmetic, evaluation)
-    width, height, ox, oy = _check_window(width, height, origin)
-    setup = _setup(_as_xy(xy), arithmetic)
+    setup, width, height, ox, oy = _checked_setup(xy, width, height, arithmetic, evaluation, origin)
     rows, cols = _bbox(setup, width, height, ox, oy)
     covered = np.zeros((len(rows), len(cols)), dtype=bool)
     if setup.empty or covered.size == 0:
@@ -265,9 +274,7 @@ def edge_values(
     >>> e[:, 0, 0]                      # at (0.5, 0.5): 4 * 0.5, 4 * 3, 4 * 0.5
     array([ 2., 12.,  2.])
     """
-    _check(arithmetic, evaluation)
-    width, height, ox, oy = _check_window(width, height, origin)
-    setup = _setup(_as_xy(xy), arithmetic)
+    setup, width, height, ox, oy = _checked_setup(xy, width, height, arithmetic, evaluation, origin)
     out = np.zeros((3, height, width))
     if setup.empty:
         return out
