@@ -53,6 +53,11 @@ def _add_triangle(p: argparse.ArgumentParser, *, attr_default: str | None) -> No
         default="span",
         help="span tables, half-plane tests or tiles (default span)",
     )
+    _add_interpolation(p)
+
+
+def _add_interpolation(p: argparse.ArgumentParser) -> None:
+    """``--interpolation``, as fill, compare and scene take it."""
     p.add_argument(
         "--interpolation",
         choices=("perspective", "affine"),
@@ -196,12 +201,7 @@ def add_scene(sub) -> None:
         default=(320, 240),
         help="image size WIDTHxHEIGHT (default 320x240)",
     )
-    p.add_argument(
-        "--interpolation",
-        choices=("perspective", "affine"),
-        default="perspective",
-        help="attribute interpolation (default perspective)",
-    )
+    _add_interpolation(p)
     p.add_argument(
         "--compare", action="store_true", help="affine | perspective-correct | error, side by side"
     )
