@@ -292,7 +292,7 @@ def test_05b_quoted_distances_and_resolutions():
 def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_one():
     """Review a1, 05b: the decal text promised flips 'from pixel to pixel' above a render where
     the decal showed at 0 pixels; the float32 model shows them. And why reverse-Z in GL needs
-    glClipControl(GL_ZERO_TO_ONE); the float32 uptick at the far plane."""
+    glClipControl(GL_ZERO_TO_ONE); float32 at the far plane; too much bias."""
     ns = lesson("05b_depth_precision")
     n_px = len(ns.rows_d)
     assert ns.decal_shown["no bias"] == 0 and ns.decal_shown["depth bias"] == n_px  # float64
@@ -304,8 +304,23 @@ def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_
     # GL's [-1, 1] NDC: the far squares fight again, though less than unorm24's
     assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
     assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
-    assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 2.0  # 2^-23 against 2^-24
+    # Review r2, 05b: at the far plane float32's neighbour is 1 - 2^-24, as unorm24's (no uptick)
+    assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 1.0
+    share = ns.share_far  # "0.3 apart fight as often ...; 0.9 apart never fight in either"
+    assert share[(0.3, "float32")] == share[(0.3, "unorm24")] > 0.2
+    assert share[(0.9, "float32")] == share[(0.9, "unorm24")] == 0.0
+    assert ns.at_far["float32"] < 0.9 < 2 * ns.at_far["float32"]  # 2^-23's 1.19 would say fight
+    # the too-much-bias case: thousands of steps, more than δ in view distance at z = 1
+    assert ns.dists[0] == 1 and ns.bias[:2].max() * (2**24 - 1) > 1000
+    assert ns.bias_dz[:2].max() > ns.delta
     assert ns.w_row.tolist() == [0.0, 0.0, -1.0, 0.0]  # "w = -z_eye ... with no +1"
+
+
+def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
+    """Review r2, 05b: the δ line on the resolution chart let the Predict be read off the chart."""
+    code = _cells("05b_depth_precision", "code")
+    ask = next(i for i, c in enumerate(code) if "Predict(" in c and "z-fight" in c)
+    assert not any("axhline" in c for c in code[:ask])
 
 
 def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
