@@ -233,6 +233,22 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
 
 
+def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_vertices():
+    """Review r2, 04: the dashed diagonal is named after the Predict, two choices mention the
+    diagonal; the heatmap panels label v1-v3; the formula cites GL 4.6 eqs. 14.9/14.10."""
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, c in enumerate(cells) if "Predict(" in c and "checker lines" in c)
+    assert not any("diagonal" in c for c in cells[ask - 1 : ask] if "Predict(" not in c)
+    assert (
+        sum("diagonal" in line for line in cells[ask].splitlines() if line.strip().startswith('"'))
+        >= 2
+    )
+    assert "dashed line is the diagonal" in cells[ask + 2]
+    assert any("plot_triangle(ax, tri" in c for c in cells)
+    assert any("§14.6.1" in c and "(14.9)" in c and "(14.10)" in c for c in cells)
+
+
 @pytest.mark.notebook
 def test_04_heatmap_edges_and_the_readable_floor():
     ns = lesson("04_perspective_correct_interpolation")
