@@ -483,6 +483,25 @@ def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_lis
     assert "$w > 0$ (the eye plane)" in row and "guard band" in row
 
 
+@pytest.mark.notebook
+def test_05a_sticks_figure_labels_a_cycle_of_crossings():
+    """Review r2, 05a: each crossing of the sticks is labelled with the stick on top; the three
+    labels form the cycle the Predict is about (each stick on top once, under once)."""
+    ns = lesson("05a_zbuffer")
+    tops, unders = zip(*ns.crossings)
+    assert len(ns.crossings) == 3 and sorted(tops) == sorted(unders) == sorted(set(tops))
+
+
+def test_05a_early_z_splits_test_from_write_and_names_prepass_and_write_mask():
+    """Review r2, 05a: discard alone does not force late z (early test, late write);
+    conservative depth, the depth pre-pass and the depth write mask are named."""
+    text = next(t for t in _cells("05a_zbuffer", "markdown") if "Early-z" in t)
+    assert "neither discards fragments nor writes its own depth" not in text
+    for needed in ("early *test* is still safe", "depth_greater", "SV_DepthGreaterEqual",
+                   "depth pre-pass", "glDepthMask(GL_FALSE)", "D3D11_DEPTH_WRITE_MASK_ZERO"):  # fmt: skip
+        assert needed in text, needed
+
+
 def test_notes_are_cited_where_they_say_it():
     """Review a1: CS148's implicit line equation is in its *Rasterization* section, not *Why
     Triangles?*; Fatahalian's perspective caveat opens his comment and points to the next
