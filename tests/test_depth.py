@@ -195,6 +195,19 @@ def test_resolution_grows_roughly_as_z_squared_for_float32():
     np.testing.assert_allclose(res[-1], depth_resolution(400.0, near, far, "unorm24"), rtol=1e-6)
 
 
+def test_float32_resolution_at_the_far_plane_is_the_step_below_one():
+    """Depth 1 has no float32 neighbour inside [0, 1] above it: the step is 2**-24, as unorm24's.
+
+    A gap of 0.9 at the far plane (below the 2**-23 step's 1.19) never fights, as `fights` says.
+    """
+    near, far = 0.1, 1000.0
+    res = depth_resolution([far, far - 1e-4], near, far, "float32")
+    np.testing.assert_allclose(res, depth_resolution(far, near, far, "unorm24"), rtol=1e-6)
+    z = np.linspace(far - 1.0, far, 2001)
+    assert not fights(z - 0.9, z, near, far, "float32").any()
+    assert fights(z - res[0] / 4, z, near, far, "float32").mean() > 0.5
+
+
 def test_resolution_counts_the_distinct_stored_values():
     """About (interval length) / resolution distinct depths are stored across a short interval."""
     near, far = 0.1, 1000.0

@@ -233,6 +233,22 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
 
 
+def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_vertices():
+    """Review r2, 04: the dashed diagonal is named after the Predict, two choices mention the
+    diagonal; the heatmap panels label v1-v3; the formula cites GL 4.6 eqs. 14.9/14.10."""
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, c in enumerate(cells) if "Predict(" in c and "checker lines" in c)
+    assert not any("diagonal" in c for c in cells[ask - 1 : ask] if "Predict(" not in c)
+    assert (
+        sum("diagonal" in line for line in cells[ask].splitlines() if line.strip().startswith('"'))
+        >= 2
+    )
+    assert "dashed line is the diagonal" in cells[ask + 2]
+    assert any("plot_triangle(ax, tri" in c for c in cells)
+    assert any("§14.6.1" in c and "(14.9)" in c and "(14.10)" in c for c in cells)
+
+
 @pytest.mark.notebook
 def test_04_heatmap_edges_and_the_readable_floor():
     ns = lesson("04_perspective_correct_interpolation")
@@ -292,7 +308,7 @@ def test_05b_quoted_distances_and_resolutions():
 def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_one():
     """Review a1, 05b: the decal text promised flips 'from pixel to pixel' above a render where
     the decal showed at 0 pixels; the float32 model shows them. And why reverse-Z in GL needs
-    glClipControl(GL_ZERO_TO_ONE); the float32 uptick at the far plane."""
+    glClipControl(GL_ZERO_TO_ONE); float32 at the far plane; too much bias."""
     ns = lesson("05b_depth_precision")
     n_px = len(ns.rows_d)
     assert ns.decal_shown["no bias"] == 0 and ns.decal_shown["depth bias"] == n_px  # float64
@@ -304,8 +320,23 @@ def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_
     # GL's [-1, 1] NDC: the far squares fight again, though less than unorm24's
     assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
     assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
-    assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 2.0  # 2^-23 against 2^-24
+    # Review r2, 05b: at the far plane float32's neighbour is 1 - 2^-24, as unorm24's (no uptick)
+    assert round(ns.at_far["float32"] / ns.at_far["unorm24"], 2) == 1.0
+    share = ns.share_far  # "0.3 apart fight as often ...; 0.9 apart never fight in either"
+    assert share[(0.3, "float32")] == share[(0.3, "unorm24")] > 0.2
+    assert share[(0.9, "float32")] == share[(0.9, "unorm24")] == 0.0
+    assert ns.at_far["float32"] < 0.9 < 2 * ns.at_far["float32"]  # 2^-23's 1.19 would say fight
+    # the too-much-bias case: thousands of steps, more than δ in view distance at z = 1
+    assert ns.dists[0] == 1 and ns.bias[:2].max() * (2**24 - 1) > 1000
+    assert ns.bias_dz[:2].max() > ns.delta
     assert ns.w_row.tolist() == [0.0, 0.0, -1.0, 0.0]  # "w = -z_eye ... with no +1"
+
+
+def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
+    """Review r2, 05b: the δ line on the resolution chart let the Predict be read off the chart."""
+    code = _cells("05b_depth_precision", "code")
+    ask = next(i for i, c in enumerate(code) if "Predict(" in c and "z-fight" in c)
+    assert not any("axhline" in c for c in code[:ask])
 
 
 def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
@@ -445,11 +476,31 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
 def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_listed():
     cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
-    ask = next(i for i, t in enumerate(text) if "orders is every pixel right" in t)
+    ask = next(i for i, t in enumerate(text) if "<b>best</b> of the six orders" in t)
     assert not any("C over A" in t or "cycle" in t for t in text[:ask])  # review a1, 05a
     table = next(t for t in text if "| teachraster |" in t)
     row = next(line for line in table.splitlines() if line.startswith("| teachraster |"))
     assert "$w > 0$ (the eye plane)" in row and "guard band" in row
+
+
+@pytest.mark.notebook
+def test_05a_sticks_figure_labels_a_cycle_of_crossings():
+    """Review r2, 05a: each crossing of the sticks is labelled with the stick on top; the three
+    labels form the cycle the Predict is about (each stick on top once, under once)."""
+    ns = lesson("05a_zbuffer")
+    tops, unders = zip(*ns.crossings)
+    assert len(ns.crossings) == 3 and sorted(tops) == sorted(unders) == sorted(set(tops))
+
+
+def test_05a_early_z_splits_test_from_write_and_names_prepass_and_write_mask():
+    """Review r2, 05a: discard alone does not force late z (early test, late write);
+    conservative depth, the depth pre-pass and the depth write mask are named."""
+    text = next(t for t in _cells("05a_zbuffer", "markdown") if "Early-z" in t)
+    assert "neither discards fragments nor writes its own depth" not in text
+    assert not any("neither discards" in t for t in _cells("05a_zbuffer", "markdown"))
+    for needed in ("early *test* is still safe", "depth_greater", "SV_DepthGreaterEqual",
+                   "depth pre-pass", "glDepthMask(GL_FALSE)", "D3D11_DEPTH_WRITE_MASK_ZERO"):  # fmt: skip
+        assert needed in text, needed
 
 
 def test_notes_are_cited_where_they_say_it():

@@ -154,6 +154,31 @@ def test_06_divide_cost_slider_reprices_the_front():
             assert priced_rows[f"subdivided N={n}"] == pytest.approx(1 + (d + 9) / n)
 
 
+def test_06_review_r2_prediction_error_split_and_shared_reciprocal():
+    """Review r2, 06: the tie-rule Predict asks what lesson 02 does not answer (gaps of E > 0
+    given the double hits of E >= 0); the float32 error is split by scene; k attributes share
+    one reciprocal."""
+    ns = lesson("06_what_accuracy_costs")
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    asked = next(
+        "".join(c["source"]) for c in nb["cells"] if "q_rule = Predict(" in "".join(c["source"])
+    )
+    assert "\n    [" not in asked and "choices" not in asked  # a number to type, no choice list
+    assert 'answer=tie_counts["E > 0"]["gaps"]' in asked and "extra operations" not in asked
+    counts = ns.tie_counts  # the double hits the question quotes equal the gaps it asks for
+    assert counts["E > 0"]["gaps"] == counts["E >= 0"]["double_hits"] == 38
+    assert counts["E >= 0"]["double_hits"] == ns.cracks["E >= 0"]["double_hits"]
+    parts = ns.error_parts["float32"]  # "0 and 0 ... its whole error is the mesh far away"
+    assert parts["random"] == 0 and parts["mesh @0"] == 0
+    f32 = next(r for r in ns.rows if r["variant"] == "float32 direct")
+    assert parts["mesh @1e5"] + parts["mesh @1e6"] == f32["error"]
+    per, share = ns.shared[1]
+    assert per == pytest.approx(ns.cyc["perspective"])  # k = 1 is the model's one attribute
+    assert ns.shared[128][1] < 0.1 < share  # the divide's share shrinks with k
+
+
 # -- 07 hard cases ---------------------------------------------------------------------------
 def test_07_the_catalogue_still_passes():
     ns = lesson("07_hard_cases")

@@ -209,8 +209,9 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
     - ``reversed`` (:func:`reversed_depth`): the same slope as ``perspective``, but the stored
       values of far points are near 0, where a float's step is small.
 
-    The step is ``1 / (2**B - 1)`` for ``unormB`` and the gap to the next float
-    (``np.spacing``) at the stored value for ``float32`` / ``float64``, so floats resolve more
+    The step is ``1 / (2**B - 1)`` for ``unormB`` and, for ``float32`` / ``float64``, the gap
+    from the stored value to its nearer neighbouring float (below it at a power of two, so
+    ``2**-24`` for float32 at the far plane's depth 1, like unorm24), so floats resolve more
     finely near depth 0 than near 1.
 
     Parameters
@@ -246,7 +247,7 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
         slope = near / ((1.0 - near / far) * z * z)  # = f n / ((f - n) z**2), as window_depth
     else:
         slope = np.full_like(z, 1.0 / (far - near))
-    return _step(map_depth(z, near, far), fmt) / slope
+    return _step(map_depth(z, near, far), fmt, nearer=True) / slope
 
 
 def fights(z_a, z_b, near: float, far: float, fmt: str, mapping: str = "perspective"):
@@ -398,13 +399,23 @@ def offset_clip_depth(clip, offset) -> np.ndarray:
 
 
 # -- helpers ----------------------------------------------------------------------------------
-def _step(d: np.ndarray, fmt: str) -> np.ndarray:
-    """One step of the stored depth at ``d``: the gap between neighbouring storable values."""
+def _step(d: np.ndarray, fmt: str, *, nearer: bool = False) -> np.ndarray:
+    """One step of the stored depth at ``d``: the gap between neighbouring storable values.
+
+    For floats, the gap up to the next float (the ``2**(e - 23)`` of glPolygonOffset's ``r``),
+    or with ``nearer`` the gap to the nearer neighbour, below ``d`` at a power of two.
+    """
     if fmt in _UNORM_BITS:
         return np.full_like(d, 1.0 / (2 ** _UNORM_BITS[fmt] - 1))
     dtype = np.float32 if fmt == "float32" else np.float64
+    x = d.astype(dtype)
     # np.spacing is signed (negative below 0); the step size is its magnitude.
-    return np.abs(np.spacing(d.astype(dtype))).astype(np.float64)
+    above = np.abs(np.spacing(x))
+    if nearer:
+        # At d = 1 (the far plane) the float above lies outside the depth range [0, 1]: a
+        # surface just in front of the far plane rounds to 1 - 2**-24, not to 1 + 2**-23.
+        above = np.minimum(above, np.abs(x - np.nextafter(x, dtype(-np.inf))))
+    return above.astype(np.float64)
 
 
 def _mapping(mapping: str):
