@@ -526,6 +526,9 @@ def test_10_numbers_the_text_relies_on():
     assert tiny.pixels_accepted == llvm.pixels_accepted < int(ns.fill.coverage.sum())
     assert tiny.pixels_accepted + tiny.full[-1] == int(ns.fill.coverage.sum())
     assert len(ns.frames) == 4  # "the built-in overlap scenes": four of them
+    # the timing section: "the tiled walk a few thousand blocks", "a fraction of the tests"
+    assert 1000 <= ns.walk.blocks < 10_000 and ns.walk_tests < 0.1 * ns.half_tests
+    assert ns.walk_tests == ns.walk.blocks + ns.walk.pixel_tests
     # llvmpipe's binner: every 64x64 tile of the box is empty, fully or partially covered
     bins = ns.bins
     assert bins.full[0] > 0 and bins.partial[0] > 0 and bins.empty[0] > 0
