@@ -165,6 +165,38 @@ def test_case_picker_copies_are_not_drawn_as_double_hits():
         picker.close()
 
 
+def test_case_picker_titles_fit_and_a_long_sliver_stays_visible():
+    """Review r2, 07: the two panel titles ran into each other ("…pixel → triangle" into
+    "naive: max 16 hit(s) per pixel"), and diagonal_sliver's 62 owned pixels lay under a thick
+    outline, two blank grids for a case whose point is 62 against 0."""
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("fan_spokes_through_centres", backend="image")
+    try:
+        for name, method in [("fan_spokes_through_centres", "halfplane"),
+                             ("d3d_split_square", "span"), ("six_vertex_orders", "halfplane")]:  # fmt: skip
+            picker.case.value, picker.method.value = name, method
+            picker.fig.canvas.draw()
+            renderer = picker.fig.canvas.get_renderer()
+            left, right = (ax.title.get_window_extent(renderer) for ax in picker.axes)
+            assert not left.overlaps(right) and left.x0 >= 0, name
+            assert right.x1 <= picker.fig.bbox.width, name
+            assert f"{name}, {method} fill" == picker.fig.get_suptitle()
+        picker.case.value = "diagonal_sliver"
+        titles = [ax.get_title() for ax in picker.axes]
+        assert "62 px" in titles[0] and "0 px" in titles[1]  # the case's point, in the titles
+
+        def outline_widths():
+            return [line.get_linewidth() for ax in picker.axes for line in ax.lines
+                    if line.get_linestyle() == "-"]  # fmt: skip
+
+        assert outline_widths() and max(outline_widths()) < 1  # thin on the 64 x 64 grid
+        picker.case.value = "d3d_split_square"  # an 8 x 8 grid keeps the classroom line width
+        assert min(outline_widths()) > 1
+    finally:
+        picker.close()
+
+
 def test_owner_colours_hold_no_red_or_orange():
     # vermillion means "covered twice" everywhere in the course: no owner may look like it
     import colorsys

@@ -192,6 +192,13 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     assert ns.twice == 6 == int((ns.split_square[1] > 1).sum())
     # float32's gap near 1e12 dwarfs every value of E inside the triangle (its doubled area)
     assert ns.spacing == 2.0**16 and ns.doubled_area < ns.spacing / 100
+    # "the difference of two products of size x y, about 10^12 at 10^6 px, that cancel to a C of
+    # about 10^7": each product rounded in float32 leaves C off by far more than the doubled area
+    assert all(1e12 <= p < 1.1e12 for p in ns.exact_products)
+    assert 1e6 < abs(ns.c_exact) < 1e8 and abs(ns.c_f32 - ns.c_exact) > 10 * ns.doubled_area
+    from teachraster.study import hardcases
+
+    assert "cancelling to ~1e7" in hardcases.get_case("far_from_origin").naive_does
     # the sliver below the shared edge owns the row, alone
     assert ns.owners == [ns.below]
     # float32 and unorm24 lose about the same pixels at the shallow slope (same step in [0.5, 1))
@@ -414,6 +421,11 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     axes = {k: sorted([np.hypot(*fp.axis_x), np.hypot(*fp.axis_y)]) for k, fp in fps.items()}
     assert axes["near"][1] < 1 and 1.5 < axes["near"][1] / axes["near"][0] < 2.5
     assert axes["far"][1] > 5 and axes["far"][1] / axes["far"][0] > 5
+    # the probe rule cell 27 states and cell 18 prints: a magnified footprint (P_max <= 1 texel)
+    # takes one probe, a minified one ⌈P_max / P_min⌉
+    assert axes["near"][1] <= 1 and fps["near"].probes == 1
+    for k in ("middle", "far"):
+        assert fps[k].probes == int(np.ceil(axes[k][1] / axes[k][0])), k
     read = ns.level_read
     steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
     steps = steps[np.isfinite(steps)]
@@ -463,20 +475,34 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     from teachraster.widgets import FilterExplorer
 
     ns = lesson("09_texture_filtering")
-    # "facing you a pixel covers about one texel ... nothing aliases" (level 0 everywhere)
-    assert ns.start_lod.max() <= 0.5
-    explorer = FilterExplorer(tilt=0, filter="nearest", repeats=2, backend="image")
+    # "facing you a pixel covers about 3.5 texels, so a check is more than two pixels wide"
+    assert 3 < 2 ** ns.start_lod.max() < 4 and ns.check_px > 2
+    # the onset of moiré (λ > 3) and of the seam to grey level 4 (λ > 3.5) both lie inside the
+    # slider's range, the seam after the moiré
+    assert 0 < ns.moire_tilt < ns.seam_tilt < 89
+    explorer = FilterExplorer(tilt=0, filter="nearest", repeats=int(ns.uv_x6.max()),
+                              samples=2, backend="image")  # fmt: skip
     try:
         explorer.tilt.value = 89
-        assert np.nanmax(explorer.lod) > 2  # the far end now minified four times and more
-        errors = {}
-        for f in ("trilinear", "anisotropic"):
-            explorer.filter.value = f
-            errors[f] = explorer.rms
-        # "anisotropic keeps a little more of them at the largest tilts ... the two stay close"
-        assert errors["anisotropic"] < errors["trilinear"] < 1.25 * errors["anisotropic"]
+        plain = explorer.image.copy()
+        lod = explorer.lod[np.isfinite(explorer.lod)]
+        assert lod.max() > 3.5  # the far end reads level 4 and beyond
+        explorer.filter.value = "nearest_mipmap_nearest"
+        seam = explorer.image
+        # the seam is in the image, not only in the level panel: the nearest-mip filter shows
+        # grey where nearest shows (aliased) checks
+        differ = np.abs(np.nan_to_num(plain) - np.nan_to_num(seam)).max(axis=-1) > 0.1
+        assert differ.mean() > 0.01
+        explorer.tilt.value = 0  # facing you the same filter reads level 2: no seam, same image
+        explorer.filter.value = "nearest"
+        facing = explorer.image.copy()
+        explorer.filter.value = "nearest_mipmap_nearest"
+        assert np.array_equal(np.nan_to_num(facing), np.nan_to_num(explorer.image))
     finally:
         explorer.close()
+    # "anisotropic keeps a little more of the far checks ... the two stay close here"
+    rms = ns.far_rms
+    assert rms["anisotropic"] < rms["trilinear"] < 1.25 * rms["anisotropic"]
 
 
 def test_09_filter_explorer_driven_by_the_test():
@@ -525,6 +551,9 @@ def test_10_numbers_the_text_relies_on():
     assert tiny.pixels_accepted == llvm.pixels_accepted < int(ns.fill.coverage.sum())
     assert tiny.pixels_accepted + tiny.full[-1] == int(ns.fill.coverage.sum())
     assert len(ns.frames) == 4  # "the built-in overlap scenes": four of them
+    # the timing section: "the tiled walk a few thousand blocks", "a fraction of the tests"
+    assert 1000 <= ns.walk.blocks < 10_000 and ns.walk_tests < 0.1 * ns.half_tests
+    assert ns.walk_tests == ns.walk.blocks + ns.walk.pixel_tests
     # llvmpipe's binner: every 64x64 tile of the box is empty, fully or partially covered
     bins = ns.bins
     assert bins.full[0] > 0 and bins.partial[0] > 0 and bins.empty[0] > 0

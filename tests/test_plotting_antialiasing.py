@@ -74,6 +74,6 @@ def test_pixel_inspector_plot_labels_samples_with_edge_values():
     assert len(result.dots) == 4 and len(result.labels) == 4
     e = fill.trace.samples.edge_values(2, 6)
     a, b = fill.trace.edges[0]
-    assert f"E{a + 1}{b + 1}" in ax.get_title().split("\n")[1]  # the names, in order
+    assert f"E{a + 1}{b + 1}" in ax.get_title().split("\n")[-1]  # the names, in order
     assert result.labels[0].get_text().split("\n")[1].split()[0] == f"{e[0, 0]:+.3g}"
     assert "4 of 4" in ax.get_title()

@@ -79,3 +79,31 @@ def test_fill_player_samples_chooser():
         assert p.frames.gen > 0  # each fill shown was sent to the page
     finally:
         p.close()
+
+
+def test_inspector_legible_at_16_samples_and_at_the_last_pixel():
+    """Review r2, 08: at 16 samples the left panel was a field of overlapping dots, the last
+    pixel's marker was half clipped, the right panel's labels were 8-9 pt."""
+    import matplotlib as mpl
+
+    tri = tr.Triangle([[1.3, 0.6], [19.4, 4.2], [5.1, 13.7]])
+    w = PixelInspector(tri, 20, 14, row=13, col=19, backend="image")
+    try:
+        assert not w.marker.get_clip_on()  # the last row's and column's marker drawn whole
+        assert w.samples.covered.get_visible()  # 4 samples: every sample drawn
+        size = float(mpl.rcParams["font.size"])
+        assert all(lab.get_fontsize() >= 0.75 * size for lab in w.pixel.labels)
+        w.pattern.value = "16 standard"
+        assert not w.samples.covered.get_visible() and not w.samples.uncovered.get_visible()
+        assert "covered fraction" in w._left_note.get_text()
+        assert all(lab.get_fontsize() >= 0.75 * size for lab in w.pixel.labels)
+        w.pattern.value = "4 ordered grid"  # back to few samples: the dots return
+        assert w.samples.covered.get_visible() and "every sample" in w._left_note.get_text()
+        # the ordered grid's edge-value labels do not overlap (they point out of the pixel)
+        w.row.value, w.col.value = 3, 13
+        w.fig.canvas.draw()
+        r = w.fig.canvas.get_renderer()
+        boxes = [lab.get_window_extent(r) for lab in w.pixel.labels]
+        assert not any(a.overlaps(b) for i, a in enumerate(boxes) for b in boxes[i + 1 :])
+    finally:
+        w.close()

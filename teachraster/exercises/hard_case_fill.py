@@ -124,8 +124,8 @@ MISTAKES = {
     "oriented before snapping": "you oriented the triangle by its unsnapped area: snapping can "
     "flip a tiny triangle's winding, so orient the snapped one",
     "absolute form": "you evaluate E = A x + B y + C from absolute coordinates in float32: far "
-    "from the origin C ~ x·y cancels catastrophically; compute E from differences to a vertex, "
-    "in float64",
+    "from the origin C = x_a y_b - y_a x_b cancels two products of size x·y; compute E from "
+    "differences to a vertex, in float64",
     "float32": "you compute in float32: 10⁵ px from the origin its numbers are 1/128 px apart "
     "and cannot hold the 1/256-px grid; use float64",
 }

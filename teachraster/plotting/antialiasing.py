@@ -176,33 +176,39 @@ class PixelSampleArtists(Artists):
             self.edges += ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw(0.8))
         values = None if trace is None else trace.edge_values(row, col)
         names = [] if trace is None else [edge_name(a, b) for a, b in source.trace.edges]
-        few = len(offsets) <= 4  # room for each sample's edge values; else its number only
+        # room for each sample's edge values; else its number only (labels at least 0.75 of the
+        # style's font size: classroom-legible in a panel a third of the column wide)
+        few = len(offsets) <= 4
         for s, (ox, oy) in enumerate(offsets):
             t = int(ids[row, col, s])
             color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
             self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4 if few else 1.0),
                                  mfc=color, mec=COLORS["edge"], zorder=5)  # fmt: skip
             label = _label(s, t, None if values is None or not few else values[s], names)
-            inward = 1 if ox < 0.5 else -1  # labels point into the pixel, never off the panel
+            # numbers point into the pixel; edge values (a narrow column, one value per line,
+            # centred on the dot) point out of it, into the panel's margin, so that the
+            # labels of the standard and the ordered 4-sample patterns clear each other
+            side = (1 if ox < 0.5 else -1) * (1 if not few else -1)
             self.labels.append(ax.annotate(
-                label if few else str(s), (col + ox, row + oy), xytext=(6 * inward, 6),
-                textcoords="offset points", ha="left" if inward > 0 else "right",
-                fontsize=fs(0.6 if few else 0.5), bbox=label_box(0.8) if few else None,
+                label if few else str(s), (col + ox, row + oy), xytext=(7 * side, 0 if few else 6),
+                textcoords="offset points", ha="left" if side > 0 else "right",
+                va="center" if few else "baseline",
+                fontsize=fs(0.75), bbox=label_box(0.8) if few else None,
                 zorder=6,
             ))  # fmt: skip
         covered = int((ids[row, col] >= 0).sum())
-        key = f"\nbeside each sample: {' '.join(names)}" if few and values is not None else ""
-        ax.set_title(f"pixel ({row}, {col}): {covered} of {len(offsets)} covered{key}",
-                     fontsize=fs(0.7))  # fmt: skip
+        key = f"\nbeside each: {', '.join(names)}" if few and values is not None else ""
+        ax.set_title(f"pixel ({row}, {col})\n{covered} of {len(offsets)} covered{key}",
+                     fontsize=fs(0.85))  # fmt: skip
 
 
 def _label(s, t, e, names) -> str:
-    """A sample's label: its number, the triangle that covers it, and its edge values (in
-    the order ``names`` gives in the title)."""
-    head = f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
+    """A sample's label: its number and the triangle that covers it (a scene), or its number
+    and its edge values one per line, in the order ``names`` gives in the title (one triangle:
+    the dot's fill already says whether it is covered)."""
     if e is None:
-        return head
-    return head + "\n" + " ".join(f"{v:+.3g}" for v in e)
+        return f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
+    return f"s{s}\n" + "\n".join(f"{v:+.3g}" for v in e)
 
 
 def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> PixelSampleArtists:

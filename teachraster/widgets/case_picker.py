@@ -64,10 +64,32 @@ def owner_color(k: int) -> str:
     return OWNER_COLORS[k % len(OWNER_COLORS)]
 
 
-def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True) -> list:
+#: Grids wider than this many pixels get thin outlines: at the classroom line width an outline
+#: covers a whole pixel there, and a sliver's owned pixels vanish under it.
+THIN_ABOVE = 32
+
+
+def thin_lines(shape) -> bool:
+    """Whether a grid of ``shape`` (rows, columns) gets thin outlines (see :data:`THIN_ABOVE`)."""
+    return max(shape) > THIN_ABOVE
+
+
+def outline(ax, xy, *, thin: bool = False):
+    """A triangle's outline without arrows or labels; ``thin``: a fine line and small vertex
+    dots, so that the pixels under it stay visible on a large grid."""
+    art = plot_triangle(ax, xy, labels=False, arrows=False)
+    if thin:
+        art.outline.set(linewidth=0.6, alpha=0.6)
+        art.vertices.set(markersize=3, alpha=0.6)
+    return art
+
+
+def plot_owners(
+    ax, owner: np.ndarray, triangles=None, *, outlines: bool = True, thin: bool = False
+) -> list:
     """Pixels coloured by owning triangle (:data:`OWNER_COLORS`), vermillion where covered twice.
 
-    Returns the artists drawn (coverage images, then triangle outlines).
+    Returns the artists drawn (coverage images, then triangle outlines, thin if ``thin``).
     """
     h, w = owner.shape
     artists = [plot_pixel_grid(ax, w, h, ticks=False)]
@@ -78,7 +100,7 @@ def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True)
         artists.append(plot_coverage(ax, owner == SEVERAL, color=COLORS["outside"]))
     if outlines and triangles is not None:
         for xy in triangles:
-            artists.append(plot_triangle(ax, xy, labels=False, arrows=False))
+            artists.append(outline(ax, xy, thin=thin))
     return artists
 
 
@@ -258,29 +280,33 @@ class CasePicker:
             for ax in self.axes:
                 ax.clear()
             tris = self._case.triangles
+            # the case and the method above both panels; short two-line titles under it, so
+            # that the two panels' titles never run into each other
+            self.fig.suptitle(f"{self.case.value}, {self.method.value} fill")
             if self.copies is not None:
                 self._draw_copies()
                 return
-            plot_owners(self.axes[0], self.owner, tris)
-            self.axes[0].set_title(f"ours ({self.method.value}): pixel → triangle")
+            thin = thin_lines(self.owner.shape)
+            plot_owners(self.axes[0], self.owner, tris, thin=thin)
+            self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
             ax = self.axes[1]
             if self.naive_counts is None:
                 h, w = self.owner.shape
                 plot_pixel_grid(ax, w, h, ticks=False)
-                ax.set_title("no naive coverage for this case")
+                ax.set_title("naive:\nno coverage for this case")
             else:
                 n = self.naive_counts
                 plot_pixel_grid(ax, n.shape[1], n.shape[0], ticks=False)
                 plot_coverage(ax, n == 1)
                 plot_coverage(ax, n >= 2, color=COLORS["outside"])
                 for xy in tris:
-                    plot_triangle(ax, xy, labels=False, arrows=False)
-                ax.set_title(f"naive: max {int(n.max())} hit(s) per pixel")
+                    outline(ax, xy, thin=thin)
+                ax.set_title(f"naive:\n{int((n > 0).sum())} px, max {int(n.max())} hit(s)")
 
     def _draw_copies(self) -> None:
         n, first = len(self.offsets), self._case.triangles[0]
         differ = plot_copies(self.axes[0], self.copies, n, first, self._box)
-        self.axes[0].set_title(f"ours ({self.method.value}), {n} copies:\n{differ} px differ")
+        self.axes[0].set_title(f"ours, {n} copies:\n{differ} px differ")
         ax = self.axes[1]
         if self.naive_copies is None:
             r0, r1, c0, c1 = self._box

@@ -10,6 +10,7 @@ from ..core.triangle import Triangle
 from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
+from ..plotting.antialiasing import sample_data
 from .common import (
     SAMPLE_PATTERNS,
     Holdable,
@@ -67,19 +68,26 @@ class PixelInspector(Holdable):
         self._compute()
         with style_context(style):
             fig = new_figure((9, 4.4), self.backend)  # fits the notebook column
+            # room on the left for the "row i" label; the right panel's labels at classroom size
             left, right = (
-                fig.add_axes((0.06, 0.08, 0.5, 0.8)),
-                fig.add_axes((0.62, 0.1, 0.36, 0.75)),
+                fig.add_axes((0.09, 0.13, 0.43, 0.73)),
+                fig.add_axes((0.6, 0.1, 0.39, 0.66)),
             )
             plot_pixel_grid(left, width, height)
             self.samples = plot_samples(left, self.result)
             for tri in self._triangles():
                 closed = np.vstack([tri, tri[:1]])
                 left.plot(closed[:, 0], closed[:, 1], color="k", lw=1.2)
-            self.marker = left.plot([], [], color="#D55E00", lw=2.5, zorder=6)[0]
+            # not clipped: the last row's and column's pixels are marked whole
+            self.marker = left.plot([], [], color="#D55E00", lw=2.5, zorder=6, clip_on=False)[0]
+            self._left = left
+            # what the left panel shows, under it (its column label sits on top)
+            self._left_note = left.text(0.5, -0.03, "", transform=left.transAxes, ha="center",
+                                        va="top", fontsize=14)  # fmt: skip
             self.pixel = plot_pixel_samples(right, self.result, row, col,
                                             triangles=self._pixel_triangles())  # fmt: skip
             self._mark()
+            self._few_or_fraction()
             self.display = FigureDisplay(fig, self.backend)
         self.fig = fig
         for control in (self.pattern, self.row, self.col):
@@ -113,6 +121,19 @@ class PixelInspector(Holdable):
     def _pixel_triangles(self):
         return None if isinstance(self.source, Triangle) else self._triangles()
 
+    def _few_or_fraction(self) -> None:
+        """Up to 4 samples per pixel the left panel draws every sample; with more they are a
+        field of overlapping dots, so it shows each pixel's covered fraction (grey) and leaves
+        the samples to the magnified pixel on the right."""
+        n = len(sample_data(self.result)[1])
+        few = n <= 4
+        self.samples.covered.set_visible(few)
+        self.samples.uncovered.set_visible(few)
+        if self.samples.fraction is not None:  # darker greys when they are all there is
+            self.samples.fraction.image.set_clim(0, 2.5 if few else 1.25)
+        self._left_note.set_text("every sample (filled = covered)" if few
+                                 else f"{n} samples: grey = covered fraction")  # fmt: skip
+
     def _mark(self) -> None:
         r, c = self.row.value, self.col.value
         self.marker.set_data([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r])
@@ -123,6 +144,7 @@ class PixelInspector(Holdable):
         if change["owner"] is self.pattern:
             self._compute()
             self.samples.update(self.result)
+            self._few_or_fraction()
         with style_context(self._style):
             self.pixel.update(self.result, self.row.value, self.col.value,
                               triangles=self._pixel_triangles())  # fmt: skip

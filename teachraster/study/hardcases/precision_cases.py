@@ -131,7 +131,8 @@ def _far_case():
             frozen_inputs(local=local, f=f, offsets=offsets),
             run,
             check,
-            "float32 edge functions in absolute form (A x + B y + C with C ~ x·y) lose the "
+            "float32 edge functions in absolute form (A x + B y + C, C = x_a y_b - y_a x_b: two "
+            "products of size x·y, ~1e12 at 1e6 px, cancelling to ~1e7) lose the "
             "bits that decide coverage (wrong pixels from 1e5); *Triangle Rasterisation II - Interpolation*'s absolute plane "
             "equation in float64 is off by ~3e-6 at 1e6",
             naive,
