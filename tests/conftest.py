@@ -92,6 +92,7 @@ def _tier_rank(item) -> int:
     )
 
 
+@pytest.hookimpl(tryfirst=True)  # before xdist's worker reads the groups (it registers later)
 def pytest_collection_modifyitems(config, items):
     """Modules of the heavy tiers first (a module keeps its tests together and in order, so its
     fixtures are set up once per worker); those of ``ONE_WORKER`` each on a single worker."""
