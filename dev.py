@@ -81,8 +81,11 @@ def pytest_args(args):
         os.environ["TEACHRASTER_QUICK"] = "1"
         args = ["-m", " and ".join(f"not {t}" for t in HEAVY_TIERS), *args]
     if not any(a == "-n" or a.startswith(("-n=", "--numprocesses", "-p no:xdist")) for a in args):
-        # one worker per core, at least two: many tests wait on a kernel or a browser
-        args = ["-n", str(max(2, os.cpu_count() or 1)), "--dist", "loadgroup", *args]
+        # one worker per core, at least two: many tests wait on a kernel or a browser. Each
+        # module on one worker (loadscope), so its shared fixtures are built once. (loadgroup's
+        # xdist_group does nothing under pytest 9: xdist 3.8 renames item._nodeid, pytest 9
+        # reads item._id.)
+        args = ["-n", str(max(2, os.cpu_count() or 1)), "--dist", "loadscope", *args]
     return args
 
 

@@ -80,9 +80,6 @@ def pytest_unconfigure(config):
 #: The tiers in the order a run starts them: the longest first, so that no worker is left with
 #: a long pole (an nbgrader round trip, a wheel built) while the other has finished.
 HEAVY_FIRST = ("nbgrader", "slow", "browser", "notebook", "gl")
-#: Tiers whose module shares one expensive fixture among its tests (the nbgrader course, the
-#: built wheel): the module goes to one worker whole (``--dist loadgroup``), so it is built once.
-ONE_WORKER = ("nbgrader", "slow")
 
 
 def _tier_rank(item) -> int:
@@ -92,17 +89,15 @@ def _tier_rank(item) -> int:
     )
 
 
-@pytest.hookimpl(tryfirst=True)  # before xdist's worker reads the groups (it registers later)
 def pytest_collection_modifyitems(config, items):
     """Modules of the heavy tiers first (a module keeps its tests together and in order, so its
-    fixtures are set up once per worker); those of ``ONE_WORKER`` each on a single worker."""
+    fixtures are set up once). ``dev.py`` runs with ``--dist loadscope``: each module goes to
+    one worker whole, so a module's shared fixture (the nbgrader course, the built wheel, a
+    JupyterLab server) is built once, not once per worker."""
     rank: dict = {}
     for item in items:
         rank[item.path] = min(rank.get(item.path, len(HEAVY_FIRST)), _tier_rank(item))
     items.sort(key=lambda item: rank[item.path])  # stable: collection order within a rank
-    for item in items:
-        if rank[item.path] < len(HEAVY_FIRST) and HEAVY_FIRST[rank[item.path]] in ONE_WORKER:
-            item.add_marker(pytest.mark.xdist_group(item.path.stem))
 
 
 def examples(n: int) -> int:
