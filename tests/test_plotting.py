@@ -266,7 +266,7 @@ def test_fill_view_follows_the_trace_in_place(method):
         assert view.caption == trace.caption(k)
         shown = view.caption_text.get_text()
         assert " ".join(shown.split()) == " ".join(trace.caption(k).split())
-        assert f"step {k} of {len(trace) - 1}" in view.header.get_text()
+        assert f"step {k} of 0–{len(trace) - 1}" in view.header.get_text()
         view.fig.canvas.draw()
         assert len(view.ax.get_children()) == n_children
         assert len(view.fig.get_children()) == n_fig
