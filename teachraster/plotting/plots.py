@@ -843,8 +843,9 @@ def plot_visit_order(
                     zorder=0.5)  # fmt: skip
     result = VisitArtists(im)
     if path and len(rows):
-        result.path = ax.plot(cols + 0.5, rows + 0.5, "-", color=COLORS["edge"], lw=lw(0.3),
-                              alpha=0.6, zorder=3)[0]  # fmt: skip
+        # thick enough to follow on a projector (review r2: the thin path was lost)
+        result.path = ax.plot(cols + 0.5, rows + 0.5, "-", color=COLORS["edge"], lw=lw(0.55),
+                              alpha=0.75, zorder=3)[0]  # fmt: skip
     numbers = len(rows) <= 100 if numbers is None else numbers
     if numbers:
         colors = im.cmap(im.norm(np.arange(len(rows))))

@@ -435,7 +435,10 @@ class ComparisonView:
                 cb_kw = {"cax": cax} if cax is not None else {"ax": ax, "shrink": 0.85}
                 self.images[-1].colorbar = self.fig.colorbar(self.images[-1].image, **cb_kw)
             ax.set_title(title, y=1.0, pad=fs(3.4))
-        self.axes[2].set_title("", y=1.0, pad=fs(3.4))  # fixed position: no per-draw layout
+        # fixed position: no per-draw layout. The pad leaves room for the first panel's column
+        # labels; a heatmap wrapped onto a row of its own has none, and its title sits close.
+        beside = abs(self.axes[2].get_position().y0 - self.axes[0].get_position().y0) < 1e-9
+        self.axes[2].set_title("", y=1.0, pad=fs(3.4) if beside else fs(0.5))
         own_figure = caxes[2] is not None
         self.heatmap = plot_error_heatmap(self.axes[2], a, b, label=label,
                                           colorbar=not own_figure)  # fmt: skip
@@ -546,11 +549,12 @@ class InterpolationView(ComparisonView):
         return self._trace
 
     def highlight(self, interpolation: str | None) -> None:
-        """Mark the panel of the interpolation in use ("affine" or "perspective") and fade
-        the other one; None shows both alike.
+        """Mark the panel of the interpolation in use ("affine" or "perspective"); None shows
+        both alike.
 
         The mark is an "in use" note under the panel (in its title it would not fit at large
-        fonts) and a thick frame in the colour of the current step.
+        fonts) and a thick frame in the colour of the current step. The other panel keeps its
+        full colours: faded, its values could not be read against the colour bar.
         """
         if self.in_use is None:
             self.in_use = [
@@ -564,8 +568,6 @@ class InterpolationView(ComparisonView):
             for spine in ax.spines.values():
                 spine.set_edgecolor(COLORS["current"] if used else "black")
                 spine.set_linewidth(3.0 if used else 0.8)
-            faded = interpolation is not None and not used
-            self.images[i].image.set_alpha(0.4 if faded else 1.0)
 
     def update(self, fill, *, draw: bool = True) -> None:  # type: ignore[override]
         """Show another fill (e.g. after a vertex or its w moved) in the same artists."""
