@@ -135,6 +135,12 @@ def test_00_facing_and_the_two_methods():
     assert np.nanmax(ns.err.ravel()[inside & on_band]) < 0.02  # dark next to the 0.152 maximum
     order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
     assert list(order) == [0, 1, 2]  # "here also top to bottom"
+    # the sign of the affine error changes at the dashed line: too large nearer, too small
+    # farther (review r2 00-2); the cell prints both
+    assert np.nanmax(ns.signed[ns.nearer]) > 0.1 and np.nanmin(ns.signed[~ns.nearer]) < -0.01
+    assert np.nanmin(ns.signed[ns.nearer]) > -1e-12 and np.nanmax(ns.signed[~ns.nearer]) < 1e-12
+    # the split caption names the split height by both names (review r2 00-3)
+    assert "split at y = v_mid = " in ns.span.trace.caption(4)
 
 
 @pytest.mark.notebook
@@ -174,6 +180,25 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
     assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
+    # "reflected through the midpoint of the shared edge, a + b - c" (review r2: not a mirror
+    # image across the edge line); the printout says when its third vertex leaves the image
+    assert np.array_equal(ns.N[2], ns.a + ns.b - ns.c)
+    assert np.allclose((ns.N[2] + ns.c) / 2, (ns.a + ns.b) / 2)
+    assert ns.outside == (not ((ns.N[2] >= 0) & (ns.N[2] <= ns.S)).all())
+
+
+@pytest.mark.notebook
+def test_01_step_figure_shows_the_row_5_tie():
+    """Review r2 01-2: the step figure marks row 5's centres filled (5.5) and hollow (11.5)."""
+    ns = lesson("01_span_tables")
+    line = ns.view.raster_line
+    assert ns.view.step == ns.step_of_row[5]
+    assert list(line.covered.get_xdata()) == [j + 0.5 for j in range(5, 11)]
+    assert 11.5 in list(line.missed.get_xdata()) and 5.5 not in list(line.missed.get_xdata())
+    assert list(line.span.get_xdata()) == [5.5, 11.5]
+    keyed = [t.get_text() for t in ns.view.legend.texts if t.get_visible()]
+    assert "span x_left .. x_right" in keyed and "its centre not" in keyed
+    assert "step 9 of 0–22" in ns.view.header.get_text()  # numbered from 0, not a count
 
 
 STANDARDS = {"02_half_planes": "a centre exactly on an edge", "05a_zbuffer": "guard band",
@@ -200,6 +225,21 @@ def test_02_bailout_prediction_is_the_printed_share():
 
 
 @pytest.mark.notebook
+def test_02_reordered_triangle_and_the_shared_row():
+    ns = lesson("02_half_planes")
+    # review r2 02-1: the reordered triangle's caption uses its own names, as the text says
+    caption = tr.rasterize(ns.front, ns.W, ns.H, trace=True).trace.caption(1)
+    assert "walked v1→v3→v2" in caption and np.array_equal(ns.front.xy, ns.xy[[0, 2, 1]])
+    text = "\n".join(_cells("02_half_planes", "markdown"))
+    assert "its own" in text and "our original" in text
+    # review r2 02-5: the row-8 figure; the rule gives row 8 to the triangle below, once
+    up, low = ns.stacked["top-left rule"]
+    assert not (up & low).any() and low[8].sum() == 12 and not up[8].any()
+    up, low = ns.stacked["naive E >= 0"]
+    assert (up & low)[8].sum() == 13
+
+
+@pytest.mark.notebook
 def test_03_quoted_drift_and_the_perspective_caveat():
     ns = lesson("03_barycentric_and_plane_equations")
     assert 0.01 < ns.err["stepped, float32"][-1] < 0.1  # "a few hundredths"
@@ -212,6 +252,9 @@ def test_03_recentring_prediction_and_the_vertex_crossing_the_opposite_edge():
     ns = lesson("03_barycentric_and_plane_equations")
     assert ns.decades[-6] == "10⁻⁶" and 1e-6 <= ns.absolute[-1] < 1e-5  # the predicted decade
     assert max(ns.recentred) < 1e-14  # "stays at one rounding"
+    # the choice "10⁻¹⁵ (rounding only)" is the recentred form's decade (review r2 03-3)
+    assert min(ns.decades, key=lambda d: abs(d - np.log10(max(ns.recentred)))) == -15
+    assert "rounding only" in ns.decades[-15]
     assert abs(ns.crossing_x - 34 / 11) < 1e-12
     rows = ns.gradient_by_x  # v2 x -> (C, g_x, g_y)
     before = [x for x in rows if x > ns.crossing_x]
@@ -405,6 +448,10 @@ def test_03_plane_explorer_setup_follows_a_value():
     explorer.f[2].value = 2.0
     moved = plane_system(explorer.xy, explorer.fvals)
     assert np.allclose(moved["g"][:2], moved["g_recentred"])
+    # the contour lines' values are written out (review r2 03-4): six equal steps of f
+    levels = explorer.levels
+    assert len(levels) == 6 and np.allclose(np.diff(levels), np.diff(levels)[0])
+    assert "contour lines (dashed) at f = " + f"{levels[0]:.2f}" in explorer.info.value
     explorer.close()
 
 

@@ -267,7 +267,7 @@ def test_fill_view_follows_the_trace_in_place(method):
         assert view.caption == trace.caption(k)
         shown = view.caption_text.get_text()
         assert " ".join(shown.split()) == " ".join(trace.caption(k).split())
-        assert f"step {k} of {len(trace) - 1}" in view.header.get_text()
+        assert f"step {k} of 0–{len(trace) - 1}" in view.header.get_text()
         view.fig.canvas.draw()
         assert len(view.ax.get_children()) == n_children
         assert len(view.fig.get_children()) == n_fig
@@ -611,11 +611,23 @@ def test_interpolation_view_highlights_the_mode_in_use():
     view.highlight("affine")
     affine, persp = view.in_use
     assert affine.get_visible() and not persp.get_visible()
-    assert view.images[1].image.get_alpha() < 1.0 == view.images[0].image.get_alpha()
+    # marked by its frame, not by fading the other panel (review r2 00-4: washed out)
+    assert {im.image.get_alpha() for im in view.images[:2]} <= {None, 1.0}
+    assert view.axes[0].spines["top"].get_linewidth() > view.axes[1].spines["top"].get_linewidth()
     n = len(view.axes[0].get_children())
     view.highlight("perspective")
     assert persp.get_visible() and not affine.get_visible()
     view.highlight(None)
     assert not (affine.get_visible() or persp.get_visible())
-    assert view.images[0].image.get_alpha() == view.images[1].image.get_alpha() == 1.0
+    assert {im.image.get_alpha() for im in view.images[:2]} <= {None, 1.0}
     assert len(view.axes[0].get_children()) == n  # the same notes, reused
+
+
+def test_visit_order_path_is_thick_enough_for_a_projector():
+    """Review r2 (lesson 02): the visit path was a hairline, lost on a projector."""
+    import matplotlib as mpl
+
+    fig, ax = plt.subplots()
+    art = tp.plot_visit_order(ax, make_fill("halfplane"))
+    assert art.path.get_linewidth() >= 0.5 * float(mpl.rcParams["lines.linewidth"])
+    plt.close(fig)

@@ -33,6 +33,10 @@ def test_choice_is_hidden_until_checked_then_judged():
     assert q.revealed and q.correct is False
     assert "Not quite" in q.feedback.value and "row 3" in q.feedback.value
     assert "row 2" in q.feedback.value and "why" in q.feedback.value
+    # the line saved in the cell's output records the prediction, not the verdict again
+    # (review r2 02-3: the verdict was shown twice, in the widget and below it)
+    assert "row 3" in q.record_html() and "Not quite" not in q.record_html()
+    assert "row 2" not in q.record_html()
     q.control.value = "row 2"
     q.check.click()
     assert q.correct is True and "Right" in q.feedback.value

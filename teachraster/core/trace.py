@@ -427,7 +427,7 @@ class FillTrace:
             return f"already flat-bottomed (middle {mid} and bottom {bot} at y = {y:g}): no split"
         # Ek's formula, with roles for the notes' points 1, 2, 3, in (u, v) = (x, y)
         return (
-            f"split at y = {s.sorted_xy[1, 1]:g} (middle {mid}): point 4 on the long edge "
+            f"split at y = v_mid = {s.sorted_xy[1, 1]:g} (middle {mid}): point 4 on the long edge "
             f"{top}-{bot} has u4 = u_top + (v_mid-v_top)/(v_bot-v_top)*(u_bot-u_top) = "
             f"{s.u4:.3f}; a flat-bottom ({top}, {mid}, point 4) and a flat-top "
             f"({mid}, point 4, {bot}) part"

@@ -477,6 +477,9 @@ class RasterLineArtists(Artists):
     band: Rectangle
     span: Line2D
     cells: Rectangle
+    covered: Line2D
+    missed: Line2D
+    width: int = 0
 
     def update(self, step: Step) -> None:
         """Show the raster line of ``step`` (hidden unless it fills a raster line)."""
@@ -491,7 +494,15 @@ class RasterLineArtists(Artists):
         start, stop = step.columns
         self.cells.set_bounds(start, row, stop - start, 1)
         self.cells.set_visible(stop > start)
-        self.band.set_visible(True)
+        # the row's centres on top of the span: filled where the step covers them, hollow
+        # where not, so a centre exactly on a span end shows which side of the rule it is on
+        cols = np.arange(self.width)
+        inside = (cols >= start) & (cols < stop)
+        y = np.full(self.width, row + 0.5)
+        self.covered.set_data(cols[inside] + 0.5, y[inside])
+        self.missed.set_data(cols[~inside] + 0.5, y[~inside])
+        for artist in (self.band, self.covered, self.missed):
+            artist.set_visible(True)
 
 
 def plot_raster_line(ax, fill, k: int) -> RasterLineArtists:
@@ -507,10 +518,13 @@ def plot_raster_line(ax, fill, k: int) -> RasterLineArtists:
     Returns
     -------
     RasterLineArtists
-        ``band``: the whole raster line, lightly shaded; ``span``: a thick segment along
-        y = row + 0.5 from where the line crosses the left edge to the right edge;
-        ``cells``: outline of the covered pixels of that row.
+        ``band``: the whole raster line, lightly shaded; ``span``: a thin segment along
+        y = row + 0.5 from where the line crosses the left edge to the right edge, under the
+        centres, with a tick at each end taller than a centre; ``cells``: outline of the covered pixels of that row;
+        ``covered``, ``missed``: the row's pixel centres on top of the span, filled where
+        covered and hollow where not.
     """
+    trace = as_trace(fill, "plot_raster_line")
     c = COLORS["current"]
     # the whole width of the Axes: x in Axes coordinates, y in data (pixel rows)
     band = Rectangle((0, 0), 1, 1, fc=c, ec="none", alpha=0.15, zorder=0.6,
@@ -518,10 +532,15 @@ def plot_raster_line(ax, fill, k: int) -> RasterLineArtists:
     cells = Rectangle((0, 0), 0, 1, fill=False, ec=c, lw=lw(0.8), zorder=4.8)
     ax.add_patch(band)
     ax.add_patch(cells)
-    span = ax.plot([], [], "-", color=c, lw=lw(0.9), marker="|", ms=ms(1.6), mew=lw(0.8),
+    span = ax.plot([], [], "-", color=c, lw=lw(0.6), marker="|", ms=ms(2.4), mew=lw(0.7),
                    solid_capstyle="butt", zorder=4.9)[0]  # fmt: skip
-    result = RasterLineArtists(band, span, cells)
-    result.update(as_trace(fill, "plot_raster_line").step(k))
+    size = ms(0.8) if max(trace.width, trace.height) <= 48 else ms(0.45)
+    covered = ax.plot([], [], "o", ms=size, color=COLORS["edge"], mec="white", mew=1.0,
+                      zorder=4.95)[0]  # fmt: skip
+    missed = ax.plot([], [], "o", ms=size, mfc="white", mec=COLORS["edge"], mew=lw(0.35),
+                     zorder=4.95)[0]  # fmt: skip
+    result = RasterLineArtists(band, span, cells, covered, missed, trace.width)
+    result.update(trace.step(k))
     return result
 
 
@@ -824,8 +843,9 @@ def plot_visit_order(
                     zorder=0.5)  # fmt: skip
     result = VisitArtists(im)
     if path and len(rows):
-        result.path = ax.plot(cols + 0.5, rows + 0.5, "-", color=COLORS["edge"], lw=lw(0.3),
-                              alpha=0.6, zorder=3)[0]  # fmt: skip
+        # thick enough to follow on a projector (review r2: the thin path was lost)
+        result.path = ax.plot(cols + 0.5, rows + 0.5, "-", color=COLORS["edge"], lw=lw(0.55),
+                              alpha=0.75, zorder=3)[0]  # fmt: skip
     numbers = len(rows) <= 100 if numbers is None else numbers
     if numbers:
         colors = im.cmap(im.norm(np.arange(len(rows))))

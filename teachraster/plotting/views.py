@@ -135,7 +135,7 @@ class FillView:
         self.caption_text.set_visible(caption)
         self._step_header = step_header
         self._caption = ""
-        self.legend = Key(ax, 5) if legend else None
+        self.legend = Key(ax, 7) if legend else None
         self._trace: FillTrace | None = None
         self._step = -1
         self.set_fill(fill, step=step, draw=False)
@@ -219,7 +219,8 @@ class FillView:
         self.pixel.update(step)
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
-            self.header.set_text(f"{method}: step {k} of {len(trace) - 1} ({step.kind})")
+            # the steps are numbered from 0: "of 0-22" rather than "of 22", which reads as a count
+            self.header.set_text(f"{method}: step {k} of 0–{len(trace) - 1} ({step.kind})")
         else:
             self.header.set_text(method)
         self._caption = step.caption
@@ -262,6 +263,7 @@ class FillView:
         self._trace = trace
         if trace.halfplane is None:
             self.rejected.set_visible(False)
+        self.raster_line.width = W
         self.triangle.update(trace)
         # the edge names are what half-plane captions talk about; span captions do not
         for label in self.triangle.edge_labels:
@@ -284,7 +286,7 @@ class FillView:
         return LayeredBlit(self.fig, [
             (MOVING, [self.rejected, self.coverage.image, r.band]),
             (STILL, middle),
-            (MOVING, [r.cells, p.box, r.span, p.centre]),
+            (MOVING, [r.cells, p.box, r.span, r.covered, r.missed, p.centre]),
             (STILL, [split.point, split.label, *t.labels, *t.edge_labels]),
             # text costs more to draw than the pixels: the header moves only with the step
             (MOVING, [self.header] if self._step_header else []),
@@ -319,7 +321,10 @@ class FillView:
         if method == "span":
             entries += [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
                         ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),
-                        ("current raster line", "none", c["current"])]  # fmt: skip
+                        ("raster line, its pixels", to_rgba(c["current"], 0.15), c["current"]),
+                        ("span x_left .. x_right", c["current"], c["current"], "|"),
+                        ("its centre covered", c["edge"], "white", "o"),
+                        ("its centre not", "white", c["edge"], "o")]  # fmt: skip
         else:
             entries.append(("current pixel", "none", c["current"]))
         self.legend.set_entries(entries)
@@ -350,13 +355,15 @@ class Key(Artists):
         return self.swatches + self.texts
 
     def set_entries(self, entries) -> None:
-        """``entries``: (label, face colour, edge colour) per line; the rest are hidden."""
+        """``entries``: (label, face colour, edge colour[, marker]) per line (marker default a
+        square swatch); the rest are hidden."""
         for i, (swatch, text) in enumerate(zip(self.swatches, self.texts)):
             on = i < len(entries)
             swatch.set_visible(on)
             text.set_visible(on)
             if on:
-                label, face, edge = entries[i]
+                label, face, edge, *marker = entries[i]
+                swatch.set_marker(marker[0] if marker else "s")
                 swatch.set_markerfacecolor(face)
                 swatch.set_markeredgecolor(edge)
                 text.set_text(label)
@@ -428,7 +435,10 @@ class ComparisonView:
                 cb_kw = {"cax": cax} if cax is not None else {"ax": ax, "shrink": 0.85}
                 self.images[-1].colorbar = self.fig.colorbar(self.images[-1].image, **cb_kw)
             ax.set_title(title, y=1.0, pad=fs(3.4))
-        self.axes[2].set_title("", y=1.0, pad=fs(3.4))  # fixed position: no per-draw layout
+        # fixed position: no per-draw layout. The pad leaves room for the first panel's column
+        # labels; a heatmap wrapped onto a row of its own has none, and its title sits close.
+        beside = abs(self.axes[2].get_position().y0 - self.axes[0].get_position().y0) < 1e-9
+        self.axes[2].set_title("", y=1.0, pad=fs(3.4) if beside else fs(0.5))
         own_figure = caxes[2] is not None
         self.heatmap = plot_error_heatmap(self.axes[2], a, b, label=label,
                                           colorbar=not own_figure)  # fmt: skip
@@ -539,11 +549,12 @@ class InterpolationView(ComparisonView):
         return self._trace
 
     def highlight(self, interpolation: str | None) -> None:
-        """Mark the panel of the interpolation in use ("affine" or "perspective") and fade
-        the other one; None shows both alike.
+        """Mark the panel of the interpolation in use ("affine" or "perspective"); None shows
+        both alike.
 
         The mark is an "in use" note under the panel (in its title it would not fit at large
-        fonts) and a thick frame in the colour of the current step.
+        fonts) and a thick frame in the colour of the current step. The other panel keeps its
+        full colours: faded, its values could not be read against the colour bar.
         """
         if self.in_use is None:
             self.in_use = [
@@ -557,8 +568,6 @@ class InterpolationView(ComparisonView):
             for spine in ax.spines.values():
                 spine.set_edgecolor(COLORS["current"] if used else "black")
                 spine.set_linewidth(3.0 if used else 0.8)
-            faded = interpolation is not None and not used
-            self.images[i].image.set_alpha(0.4 if faded else 1.0)
 
     def update(self, fill, *, draw: bool = True) -> None:  # type: ignore[override]
         """Show another fill (e.g. after a vertex or its w moved) in the same artists."""

@@ -245,14 +245,17 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     widths = [pw] + [pw / 0.8 + 0.3 if c else pw for c in colorbars]
     rows = _wrap_panels(widths, gaps, left, column_inches(fig))
     fw = max(left + sum(widths[i] + gaps[i] for i in row) for row in rows)
-    row_h = ph + top + bottom
-    fh = row_h * len(rows)
+    # only the first row has the first panel's column labels above it: a wrapped row needs
+    # room for its title alone
+    tops = [top] + [0.45 * s] * (len(rows) - 1)
+    fh = sum(ph + t + bottom for t in tops)
     fig.set_size_inches(fw, fh)
     axes = []
-    for r, row in enumerate(rows):
-        x, y = left, fh - (r + 1) * row_h + bottom
+    y = fh
+    for row, t in zip(rows, tops):
+        x, y = left, y - (ph + t + bottom)
         for i in row:
-            axes.append(fig.add_axes((x / fw, y / fh, widths[i] / fw, ph / fh)))
+            axes.append(fig.add_axes((x / fw, (y + bottom) / fh, widths[i] / fw, ph / fh)))
             x += widths[i] + gaps[i]
     return axes
 

@@ -184,7 +184,8 @@ class PlaneExplorer:
         self.info.value = self._info_html()
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
-            "Move a vertex or change its value. The contour lines (dashed, f in equal steps) "
+            "Move a vertex or change its value. The contour lines (dashed, f in equal steps, "
+            "their values listed on the right) "
             "stay straight and parallel; the 3 × 3 system, the set-up matrix M and the "
             "coefficients A, B, C, D follow.",
         )
@@ -243,12 +244,16 @@ class PlaneExplorer:
         lo, hi = float(f.min()), float(f.max())
         return (lo, hi) if hi > lo else (lo - 0.5, hi + 0.5)
 
+    @property
+    def levels(self) -> np.ndarray:
+        """The values of f on the contour lines: LEVELS equal steps between the vertex values."""
+        f = self.shown_f
+        return np.linspace(f.min(), f.max(), LEVELS + 2)[1:-1]
+
     def _segments(self) -> list:
         if "g" not in self.system:
             return []
-        f = self.shown_f
-        levels = np.linspace(f.min(), f.max(), LEVELS + 2)[1:-1]
-        return level_segments(self.system["g"], levels, self.width, self.height)
+        return level_segments(self.system["g"], self.levels, self.width, self.height)
 
     def _edit_blit(self) -> LayeredBlit:
         """A new value changes the image, the contours and the triangle; the grid and the
@@ -306,7 +311,15 @@ class PlaneExplorer:
         (m00, m01), (m10, m11) = s["M"]
         gx, gy, g0 = s["g"]
         A, B, C, D = s["ABCD"]
+        levels = self.levels
+        step = levels[1] - levels[0] if len(levels) > 1 else 0.0
         parts += [
+            (
+                f"contour lines (dashed) at f = {', '.join(f'{v:.2f}' for v in levels)} "
+                f"(steps of {step:.3f})"
+            )
+            if step > 0
+            else "contour lines: none (f is constant)",
             f"solution: g_x = {gx:.4f}, g_y = {gy:.4f}, g_0 = {g0:.4f}",
             f"<b>M</b> = [[{m00:.4f}, {m01:.4f}], [{m10:.4f}, {m11:.4f}]] (once per triangle)",
             "M · (f2 − f1, f3 − f1) = "

@@ -6,9 +6,11 @@ number, and only then reveals the answer, the explanation and the figure that sh
 
 Where the answer is kept
     The choice or number is the value of an ipywidgets control, so it is saved with the
-    notebook's widget state; after "Check" a plain HTML line ("You predicted ...; the answer
-    is ...") is also written into the cell's output with a display id, which is saved in the
-    ``.ipynb`` whatever the widget settings are. A lecturer can use the questions as a poll.
+    notebook's widget state; after "Check" a plain HTML line ("Saved with the notebook: you
+    predicted ...") is also written into the cell's output with a display id, which is saved
+    in the ``.ipynb`` whatever the widget settings are. A lecturer can use the questions as a
+    poll. The line records the prediction only: the verdict and the answer are the widget's,
+    so a student reading the live notebook sees them once, not twice.
 
 Headless runs
     Executed with nobody looking (nbclient tests, ``teachraster html`` exports, plain Python),
@@ -247,7 +249,7 @@ class Predict:
             self.output.append_display_data(self._figure_png())
         self.revealed = True
         if not self.headless:
-            self._record(verdict)
+            self._record()
 
     def _figure_png(self):
         """Call ``figure`` in the style; its Figure as a PNG image at the figure's own size.
@@ -266,14 +268,22 @@ class Predict:
         plt.close(fig)
         return Image(data=buffer.getvalue(), format="png")
 
-    def _record(self, verdict: str) -> None:
-        """Write the verdict into the cell's saved output (through the display id)."""
+    def record_html(self) -> str:
+        """The line saved in the cell's output after "Check": the prediction, not the verdict
+        (the widget shows that; repeated below it, a student read it twice)."""
+        said = html.escape(self.given if self.choices else f"{self.given:g}")
+        return (
+            f"<div style='color:#555'><i>Saved with the notebook: you predicted {said}.</i></div>"
+        )
+
+    def _record(self) -> None:
+        """Write the prediction into the cell's saved output (through the display id)."""
         from IPython import get_ipython
         from IPython.display import HTML, update_display
 
         if getattr(get_ipython(), "kernel", None) is None:
             return  # no notebook to write into (plain Python, a test driving the widget)
-        update_display(HTML(f"<div><i>{verdict}</i></div>"), display_id=self._display_id)
+        update_display(HTML(self.record_html()), display_id=self._display_id)
 
     def _ipython_display_(self) -> None:
         from IPython.display import HTML, display
