@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import reasoning_solutions as sol
+import student_variants as sv
 
 from teachraster import exercises as ex
 from teachraster.exercises.capstone_render import SCENES
@@ -33,18 +34,25 @@ WRONG = [
      "interpolation", "your barycentric returned"),
     ("textured_floor", {"perspective_weights": lambda lam, w: lam}, "interpolation",
      "your perspective_weights(λ, w) returned"),
-    ("intersecting_triangles", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test",
-     "your depth_passes returned [True, True]"),
     ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending", "your over(src, dst)"),
     ("floor_trilinear", {"trilinear": lambda p, uv, lod, w: sol.bilinear(p[0], uv, w)},
      "texture filtering", "your trilinear"),
     ("cube_msaa", {"resolve": lambda c, i, b: np.nanmean(c, axis=0)}, "resolve",
      "your resolve returned"),
     ("sphere", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test", "depth_passes"),
+    # the green copy of triangle 0 ties it bit for bit: a wrong tie rule shows it, and is named
+    ("intersecting_triangles", {"depth_passes": sv.WRONG["passes with <="][1]}, "depth test",
+     "use <, not <="),
+    ("intersecting_triangles", {"depth_passes": sv.WRONG["against the previous fragment"][1]},
+     "depth test", "the one just before it"),
+    ("intersecting_triangles", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test",
+     "returned [True, True, True], the package's test passes [True, True, False] (strictly "
+     "nearer than the depth last written): your function lets every fragment pass, always"),
 ]  # fmt: skip
 
 
-@pytest.mark.parametrize("scene, changed, stage, words", WRONG, ids=[w[0] for w in WRONG])
+@pytest.mark.parametrize("scene, changed, stage, words", WRONG,
+                         ids=[f"{w[0]}-{w[3][:12]}" for w in WRONG])  # fmt: skip
 def test_a_wrong_function_is_found_at_its_stage(scene, changed, stage, words):
     report = ex.capstone(scene, **_mine(scene, **changed))
     assert not report.passed and report.n_wrong > 0

@@ -29,8 +29,9 @@ from ..pipeline.texturing.texture import sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
 from .coverage import explain_pixel as explain_coverage
-from .running import last_line, run_checker
+from .running import WrongAnswerType, last_line, run_checker
 from .scalars import vec
+from .zbuffer_pixel import DEPTH_MISTAKES, as_passes, depth_cases
 
 #: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
 COVERED = ("hi_z", "failed_depth", "passed")
@@ -105,7 +106,30 @@ def _depth(used, reference, pixel) -> str:
     return (f"the fragments of triangles {[r.triangle for r in records]} reach it in drawing "
             f"order with depths {vec(depths)} and depth writes {_bools(writes)}: {said}, the "
             f"package's test passes {_bools(expected)} (strictly nearer than the depth last "
-            "written)")  # fmt: skip
+            f"written){_depth_mistake(used, depths, writes, yours, expected)}")  # fmt: skip
+
+
+def _depth_mistake(used, depths, writes, yours, expected) -> str:
+    """Exercise 4's name for the mistake that gives ``yours`` here and the student's answers
+    to exercise 4's named sequences (or nothing when none, or several, fit)."""
+    try:
+        got = as_passes(yours)
+    except WrongAnswerType:
+        return ""
+    if got.shape != expected.shape or np.array_equal(got, expected):
+        return ""
+    fits = [m for m in DEPTH_MISTAKES if np.array_equal(m.gives(depths, writes), got)]
+    if len(fits) > 1:
+        fits = run_checker(lambda: _fit_everywhere(used["depth_passes"], fits), fits)
+    return f": {fits[0].words}" if len(fits) == 1 and isinstance(fits[0].words, str) else ""
+
+
+def _fit_everywhere(fn, mistakes) -> list:
+    """The ``mistakes`` that give what ``fn`` gives on every named sequence of exercise 4."""
+    cases = [args for label, args, _ in depth_cases() if not label.startswith("random")]
+    answers = [as_passes(fn(d.copy(), w.copy())) for d, w in cases]
+    return [m for m in mistakes
+            if all(np.array_equal(m.gives(d, w), a) for (d, w), a in zip(cases, answers))]  # fmt: skip
 
 
 def _bools(values) -> str:
