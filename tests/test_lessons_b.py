@@ -355,6 +355,13 @@ def test_11_replay_and_the_sliver_between_centres():
     assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
 
 
+def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
+    ns = lesson("11_debugging_a_frame")
+    # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
+    assert ns.glass_counts["nan"] == 0
+    assert np.isnan(ns.see_through.depth[ns.see_through.coverage]).all()
+
+
 def test_11_helper_share_counts_every_lane_launched():
     ns = lesson("11_debugging_a_frame")
     # "Small triangles waste most of their quads' lanes on helpers": the sphere's median
