@@ -9,6 +9,7 @@ import pytest
 import reasoning_solutions as sol
 import student_variants as sv
 
+from teachraster import edge_function
 from teachraster import exercises as ex
 from teachraster.exercises.capstone_render import SCENES
 
@@ -28,6 +29,25 @@ def _top_right(xy, p):  # covers centres on right edges instead of left ones
     return sol.covers(np.array(xy) * [-1, 1], np.array(p) * [-1, 1])
 
 
+def _one_winding(xy, p):  # covers only triangles whose E(v1, v2, v3) > 0
+    return bool(edge_function(*np.asarray(xy, float)) > 0 and sol.covers(xy, p))
+
+
+def _texel_corners(tex, uv, wrap):  # bilinear at x = u·W (no −½)
+    t = np.asarray(tex, float)
+    h, w = t.shape[:2]
+    x, y = uv[0] * w, uv[1] * h
+    x0, y0 = int(np.floor(x)), int(np.floor(y))
+    fx, fy = x - x0, y - y0
+    at = lambda r, c: t[r % h, c % w]  # noqa: E731
+    return (at(y0, x0) * (1 - fx) * (1 - fy) + at(y0, x0 + 1) * fx * (1 - fy)
+            + at(y0 + 1, x0) * (1 - fx) * fy + at(y0 + 1, x0 + 1) * fx * fy)  # fmt: skip
+
+
+def _nearest_level(pyramid, uv, lod, wrap):  # trilinear reading the nearest level only
+    return sol.bilinear(pyramid[int(np.clip(np.round(lod), 0, len(pyramid) - 1))], uv, wrap)
+
+
 WRONG = [
     ("grid", {"covers": _top_right}, "coverage", "the top-left rule"),
     ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
@@ -40,6 +60,18 @@ WRONG = [
     ("cube_msaa", {"resolve": lambda c, i, b: np.nanmean(c, axis=0)}, "resolve",
      "your resolve returned"),
     ("sphere", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test", "depth_passes"),
+    # each stage also names the mistake, as the function's own exercise names it
+    ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
+     "interpolation", "the barycentric exercise's check names the mistake: the same numbers in "
+     "another order"),
+    ("textured_floor", {"perspective_weights": lambda lam, w: lam * w / (lam @ w)},
+     "interpolation", "names the mistake: you multiplied λ by w"),
+    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending",
+     "names the mistake: the source was not multiplied by its alpha"),
+    ("grid", {"covers": _one_winding}, "coverage", "whose vertices run counter-clockwise"),
+    ("floor_bilinear", {"bilinear": _texel_corners}, "texture filtering",
+     "you sampled at texel corners"),
+    ("floor_trilinear", {"trilinear": _nearest_level}, "texture filtering", "(the nearest)"),
     # the green copy of triangle 0 ties it bit for bit: a wrong tie rule shows it, and is named
     ("intersecting_triangles", {"depth_passes": sv.WRONG["passes with <="][1]}, "depth test",
      "use <, not <="),
