@@ -23,6 +23,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
+from ..plotting.frame_debug import fit_title
 from .common import Holdable, close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
@@ -188,10 +189,11 @@ class FrameInspector(Holdable):
         self._render()
         with style_context(style):
             self.fig = new_figure((4.6, 3.9), self.backend)
-            self.ax = self.fig.add_axes((0.1, 0.06, 0.72, 0.8))
+            self.ax = self.fig.add_axes((0.07, 0.06, 0.66, 0.8))
             # the overlays' colour bar: one Axes of its own, reused, so that changing the
-            # view never takes room from the frame (a colour bar made with ax= would)
-            self.cax = self.fig.add_axes((0.86, 0.14, 0.03, 0.64))
+            # view never takes room from the frame (a colour bar made with ax= would); the
+            # room right of it holds its ticks and its label at the classroom style's sizes
+            self.cax = self.fig.add_axes((0.75, 0.14, 0.03, 0.64))
             self.hist_fig = new_figure((4.6, 3.9), self.backend)
             # room for written-out depths (0.9676) and two-line sample labels under MSAA
             self.hist_ax = self.hist_fig.add_axes((0.26, 0.24, 0.71, 0.66))
@@ -246,6 +248,7 @@ class FrameInspector(Holdable):
             ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
+        fit_title(ax)
         r, c = self.row.value, self.col.value
         self.marker = ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
                               color="#D55E00", lw=2, zorder=6)[0]  # fmt: skip
