@@ -251,6 +251,8 @@ def test_frame_inspector_views_clicks_and_scenes():
     from teachraster.widgets import FrameInspector
 
     w = FrameInspector("cube", 32, 24, backend="image")
+    # the control row fits a 1400-px window: the checkboxes are not indented
+    assert not w.depth_test.indent and not w.glass.indent
     for view in ("image", *KINDS):
         w.view.value = view
     assert w.view.value == "nan"

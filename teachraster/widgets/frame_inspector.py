@@ -179,8 +179,8 @@ class FrameInspector(Holdable):
         self.scene = widgets.Dropdown(options=choices, value=scene, description="scene")
         self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
-        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test")
-        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)")
+        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test", indent=False)
+        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)", indent=False)
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
