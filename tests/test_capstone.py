@@ -128,6 +128,10 @@ def test_compare_draws_three_panels_with_the_first_pixel_marked():
     assert artists and "differ" in axes[2].get_title()
     assert axes[2].get_xlabel().startswith("pixel (")
     plt.close(fig)
+    ties = ex.capstone("intersecting_triangles", depth_passes=sv.WRONG["passes with <="][1])
+    fig, axes = plt.subplots(1, 3)
+    assert ties.compare(axes) and "differ" in axes[2].get_title()  # the tie scene draws too
+    plt.close(fig)
     stub = ex.capstone("grid", covers=lambda xy, p: None)
     fig, axes = plt.subplots(1, 3)
     stub.compare(axes)
