@@ -528,7 +528,7 @@ def _fill_with(snap=True, tie=_owns, dtype=np.float64, absolute=False):
 
     def robust_fill(xy, width, height, origin=(0, 0)):
         v = np.asarray(xy, dtype=float)
-        v = np.rint(v * 256) / 256 if snap else v
+        v = (np.floor if snap == "floor" else np.rint)(v * 256) / 256 if snap else v
         if edge_function(*v) == 0:
             return np.zeros((height, width), dtype=bool)
         if edge_function(*v) < 0:
@@ -878,6 +878,15 @@ WRONG = {
     # robust_fill
     "fill of raw vertices": ("robust_fill", _fill_with(snap=False), "snap them"),
     "fill with E >= 0": ("robust_fill", _fill_with(tie=lambda a, b: True), "covered twice"),
+    "fill snapped with floor": ("robust_fill", _fill_with(snap="floor"), "truncating"),
+    **{
+        label: ("robust_fill", _fill_with(tie=tie), words)
+        for label, tie, words in (
+            ("fill with y-up tie directions", _owns_bottom_left, "top edges are the bottom ones"),
+            ("fill with top-right ties", _owns_top_right, "left edges are the right ones"),
+            ("fill with bottom-right ties", _owns_y_up_both, "reverse of the top-left rule"),
+        )
+    },
     # quad_derivatives
     "quad of this pixel": ("quad_derivatives", _quad_with(aligned=False), "even rows"),
     "quad affine": ("quad_derivatives", _quad_with(perspective=False), "perspective-correct"),
@@ -964,6 +973,10 @@ KINDS = {
     "near for an infinite far": "infinite far",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
+    "fill snapped with floor": "floor snapping",
+    "fill with y-up tie directions": "top edge reversed",
+    "fill with top-right ties": "left edge reversed",
+    "fill with bottom-right ties": "both reversed",
     "quad of this pixel": "unaligned",
     "quad affine": "affine",
     "quad with y up": "y up",

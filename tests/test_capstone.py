@@ -7,7 +7,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import reasoning_solutions as sol
+import student_variants as sv
 
+from teachraster import edge_function
 from teachraster import exercises as ex
 from teachraster.exercises.capstone_render import SCENES
 
@@ -27,24 +29,62 @@ def _top_right(xy, p):  # covers centres on right edges instead of left ones
     return sol.covers(np.array(xy) * [-1, 1], np.array(p) * [-1, 1])
 
 
+def _one_winding(xy, p):  # covers only triangles whose E(v1, v2, v3) > 0
+    return bool(edge_function(*np.asarray(xy, float)) > 0 and sol.covers(xy, p))
+
+
+def _texel_corners(tex, uv, wrap):  # bilinear at x = u·W (no −½)
+    t = np.asarray(tex, float)
+    h, w = t.shape[:2]
+    x, y = uv[0] * w, uv[1] * h
+    x0, y0 = int(np.floor(x)), int(np.floor(y))
+    fx, fy = x - x0, y - y0
+    at = lambda r, c: t[r % h, c % w]  # noqa: E731
+    return (at(y0, x0) * (1 - fx) * (1 - fy) + at(y0, x0 + 1) * fx * (1 - fy)
+            + at(y0 + 1, x0) * (1 - fx) * fy + at(y0 + 1, x0 + 1) * fx * fy)  # fmt: skip
+
+
+def _nearest_level(pyramid, uv, lod, wrap):  # trilinear reading the nearest level only
+    return sol.bilinear(pyramid[int(np.clip(np.round(lod), 0, len(pyramid) - 1))], uv, wrap)
+
+
 WRONG = [
     ("grid", {"covers": _top_right}, "coverage", "the top-left rule"),
     ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
      "interpolation", "your barycentric returned"),
     ("textured_floor", {"perspective_weights": lambda lam, w: lam}, "interpolation",
      "your perspective_weights(λ, w) returned"),
-    ("intersecting_triangles", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test",
-     "your depth_passes returned [True, True]"),
     ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending", "your over(src, dst)"),
     ("floor_trilinear", {"trilinear": lambda p, uv, lod, w: sol.bilinear(p[0], uv, w)},
      "texture filtering", "your trilinear"),
     ("cube_msaa", {"resolve": lambda c, i, b: np.nanmean(c, axis=0)}, "resolve",
      "your resolve returned"),
     ("sphere", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test", "depth_passes"),
+    # each stage also names the mistake, as the function's own exercise names it
+    ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
+     "interpolation", "the barycentric exercise's check names the mistake: the same numbers in "
+     "another order"),
+    ("textured_floor", {"perspective_weights": lambda lam, w: lam * w / (lam @ w)},
+     "interpolation", "names the mistake: you multiplied λ by w"),
+    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending",
+     "names the mistake: the source was not multiplied by its alpha"),
+    ("grid", {"covers": _one_winding}, "coverage", "whose vertices run counter-clockwise"),
+    ("floor_bilinear", {"bilinear": _texel_corners}, "texture filtering",
+     "you sampled at texel corners"),
+    ("floor_trilinear", {"trilinear": _nearest_level}, "texture filtering", "(the nearest)"),
+    # the green copy of triangle 0 ties it bit for bit: a wrong tie rule shows it, and is named
+    ("intersecting_triangles", {"depth_passes": sv.WRONG["passes with <="][1]}, "depth test",
+     "use <, not <="),
+    ("intersecting_triangles", {"depth_passes": sv.WRONG["against the previous fragment"][1]},
+     "depth test", "the one just before it"),
+    ("intersecting_triangles", {"depth_passes": lambda d, w: [True] * len(d)}, "depth test",
+     "returned [True, True, True], the package's test passes [True, True, False] (strictly "
+     "nearer than the depth last written): your function lets every fragment pass, always"),
 ]  # fmt: skip
 
 
-@pytest.mark.parametrize("scene, changed, stage, words", WRONG, ids=[w[0] for w in WRONG])
+@pytest.mark.parametrize("scene, changed, stage, words", WRONG,
+                         ids=[f"{w[0]}-{w[3][:12]}" for w in WRONG])  # fmt: skip
 def test_a_wrong_function_is_found_at_its_stage(scene, changed, stage, words):
     report = ex.capstone(scene, **_mine(scene, **changed))
     assert not report.passed and report.n_wrong > 0
@@ -87,6 +127,10 @@ def test_compare_draws_three_panels_with_the_first_pixel_marked():
     artists = report.compare(axes)
     assert artists and "differ" in axes[2].get_title()
     assert axes[2].get_xlabel().startswith("pixel (")
+    plt.close(fig)
+    ties = ex.capstone("intersecting_triangles", depth_passes=sv.WRONG["passes with <="][1])
+    fig, axes = plt.subplots(1, 3)
+    assert ties.compare(axes) and "differ" in axes[2].get_title()  # the tie scene draws too
     plt.close(fig)
     stub = ex.capstone("grid", covers=lambda xy, p: None)
     fig, axes = plt.subplots(1, 3)

@@ -313,6 +313,16 @@ def test_diamond_pixels_as_the_engines_on_ties():
     assert ties > 20  # the inputs do exercise GL's perturbation
 
 
+def test_end_point_labels_stay_inside_the_canvas():
+    """p1 in the last column: its label goes left of the point instead of past the border."""
+    middle, last, top = call_js(LINES, [("labelAt", [100, 100, 60, 400]),
+                                        ("labelAt", [380, 100, 60, 400]),
+                                        ("labelAt", [100, 5, 60, 400])])  # fmt: skip
+    assert middle == [109, 91]
+    assert last[0] + 60 <= 400 and last[0] < 380
+    assert top[1] > 5
+
+
 def test_step_caption_says_what_the_trace_says():
     walk = call_js(LINES, [("diamondSteps", [[0.5, 0.5], [4.5, 2.5], 5, 3])])[0]
     captions = call_js(LINES, [("stepCaption", [walk, k]) for k in range(len(walk["steps"]))])

@@ -169,6 +169,20 @@ def test_nan_overlay_counts_non_finite_values():
         assert frame.overlay("nan")[3, 4] == 1
 
 
+def test_nan_overlay_does_not_count_depth_glass_never_wrote():
+    """Glass (depth_write=False) leaves the depth buffer empty (NaN): not a NaN to hunt;
+    an infinite depth still is."""
+    scene = get_scene("intersecting_triangles")
+    clip = scene.clip(32 / 24)
+    rgba = np.concatenate([scene.mesh.corner("color"), np.full((2, 3, 1), 0.6)], axis=2)
+    glass = tr.render(clip, 32, 24, attrs=rgba, blend="over", depth_write=False)
+    assert glass.coverage.sum() > 0 and np.isnan(glass.depth[glass.coverage]).all()
+    assert glass.overlay("nan").sum() == 0
+    row, col = np.argwhere(glass.coverage)[0]
+    glass.depth[row, col] = np.inf
+    assert glass.overlay("nan")[row, col] == 1
+
+
 def test_overdraw_matches_an_independent_count(rng):
     for index in range(10):
         clip, attrs, kw = random_scene(rng, index)
@@ -237,6 +251,8 @@ def test_frame_inspector_views_clicks_and_scenes():
     from teachraster.widgets import FrameInspector
 
     w = FrameInspector("cube", 32, 24, backend="image")
+    # the control row fits a 1400-px window: the checkboxes are not indented
+    assert not w.depth_test.indent and not w.glass.indent
     for view in ("image", *KINDS):
         w.view.value = view
     assert w.view.value == "nan"

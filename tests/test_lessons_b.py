@@ -387,6 +387,25 @@ def test_11_replay_and_the_sliver_between_centres():
     assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
 
 
+def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
+    ns = lesson("11_debugging_a_frame")
+    # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
+    assert ns.glass_counts["nan"] == 0
+    assert np.isnan(ns.see_through.depth[ns.see_through.coverage]).all()
+
+
+def test_11_overdraw_comes_from_drawing_without_culling():
+    ns = lesson("11_debugging_a_frame")
+    # "overdraw is 2 at every pixel it covers"; with cull="back": 1, no Hi-Z, same picture
+    covered = ns.sphere.coverage
+    assert (ns.over[covered] == 2).all() and (ns.over[~covered] == 0).all()
+    assert ns.culled.overlay("overdraw").max() == 1 and ns.culled.overlay("hi_z").sum() == 0
+    assert np.array_equal(ns.culled.triangle_id, ns.sphere.triangle_id)
+    # the z-fight: triangle 1 is nearer everywhere but at v3, where both are at 0.4
+    z = ns.fight[:, :, 2]
+    assert z[1, 2] == z[0, 2] and (z[1, :2] < z[0, :2]).all()
+
+
 def test_11_helper_share_counts_every_lane_launched():
     ns = lesson("11_debugging_a_frame")
     # "Small triangles waste most of their quads' lanes on helpers": the sphere's median

@@ -17,6 +17,10 @@ def ns():
 def test_diamond_rule_and_its_tie(ns):
     assert ns.lit[1] == (1, 1)  # the tie at column 1 goes to the lower pixel
     assert int(np.flatnonzero(ns.up[:, 1])[0]) == 3
+    # "a horizontal line on a row boundary: teachraster lights the upper row" (y down)
+    assert ns.flat_rows == [0] and ns.flat.sum() == 8
+    # the Bresenham captions start at column 0 after the set-up steps
+    assert ns.setup == 2 and "column 0" in ns.bres.trace.caption(ns.setup)
 
 
 def test_bresenham_differs_and_dda_drifts(ns):

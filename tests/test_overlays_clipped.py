@@ -151,3 +151,32 @@ def test_frame_inspector_view_changes_keep_the_frame_axes():
         drawn()  # still draws (it failed with LinAlgError after 164 changes)
     finally:
         w.close()
+
+
+def test_frame_inspector_overlay_titles_and_colour_bars_fit_in_the_classroom_style():
+    """The classroom style's large fonts: every overlay's title, colour-bar ticks and label lie
+    inside the figure, and the label does not sit on the ticks."""
+    pytest.importorskip("ipywidgets")
+    import matplotlib
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets import FrameInspector
+
+    with matplotlib.rc_context():
+        use_style("classroom")
+        w = FrameInspector("uv_sphere", 64, 48, backend="image")
+        try:
+            renderer = w.fig.canvas.get_renderer()
+            width = w.fig.bbox.width
+            for view in KINDS:
+                w.view.value = view
+                w.fig.canvas.draw()
+                ticks = [t for t in w.cax.get_yticklabels() if t.get_text()]
+                label = w.cax.yaxis.label
+                for text in [w.ax.title, *ticks, label]:
+                    box = text.get_window_extent(renderer)
+                    assert 0 <= box.x0 and box.x1 <= width, (view, text.get_text())
+                right = max(t.get_window_extent(renderer).x1 for t in ticks)
+                assert label.get_window_extent(renderer).x0 >= right, view
+        finally:
+            w.close()

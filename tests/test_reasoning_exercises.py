@@ -134,6 +134,28 @@ def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
     assert [f.kind for f in report.failures] == ["pixel"]
 
 
+def test_broken_frame_5_draws_its_glass_without_depth_writes_as_lesson_11_teaches():
+    """The glass writes no depth (lesson 11 §6): the wall drawn after it passes, nothing is
+    rejected, and the order alone hides the glass."""
+    b = ex.broken_frame(5)
+    row, col = (int(v) for v in np.argwhere(b.differs())[len(np.argwhere(b.differs())) // 2])
+    records = [r for r in b.frame.history(row, col).records if r.outcome != "not_covered"]
+    glass = [r for r in records if r.value and r.value[3] < 1]
+    assert glass and not any(r.depth_write for r in glass)
+    assert all(r.outcome == "passed" for r in records)
+    assert (
+        b.frame.overlay("hi_z").sum() == 0
+        and (b.frame.overlay("depth_complexity") == b.frame.overlay("overdraw")).all()
+    )
+
+
+@pytest.mark.parametrize("number", [3, 4, 5, 6])
+def test_broken_frame_symptoms_do_not_give_the_cause_away(number):
+    symptom = ex.broken_frame(number).symptom.lower()
+    for word in ("stripe", "glow", "bright", "dash", "vanish", "thin", "fight", "order"):
+        assert word not in symptom, (number, symptom)
+
+
 def test_broken_frames_one_and_two_look_alike_and_their_histories_differ():
     one, two = ex.broken_frame(1), ex.broken_frame(2)
     assert np.array_equal(bf._rgb(one.frame), bf._rgb(two.frame))

@@ -116,6 +116,9 @@ def _glass(premultiply: bool) -> Frame:
 
 
 def _wall_and_glass(glass_first: bool) -> Frame:
+    """An opaque wall and a pane of glass in front of it, the glass drawn as lesson 11 §6
+    teaches, with depth writes off (so only the order decides): drawn first, the wall that
+    comes after it passes (the buffer holds no depth of the glass) and covers it."""
     wall, glass = _quad(4, 4, 44, 32), [[[10, 2], [40, 10], [20, 34]]]
     parts = [(glass, 0.3, [0.2, 0.5, 0.9], 0.4), (wall, 0.7, [0.55, 0.5, 0.45], 1.0)]
     if not glass_first:
@@ -123,8 +126,9 @@ def _wall_and_glass(glass_first: bool) -> Frame:
     xy = [t for tris, *_ in parts for t in tris]
     z = [[d] * 3 for tris, d, *_ in parts for _ in tris]
     rgba = np.concatenate([_rgba([c] * len(tris), a) for tris, _, c, a in parts])
+    writes = np.concatenate([np.full(len(tris), a == 1.0) for tris, _, _, a in parts])
     return render(window_triangles(xy, z), W, H, attrs=rgba, blend="over", trace=True,
-                  clear_color=(1, 1, 1, 1))  # fmt: skip
+                  depth_write=writes, clear_color=(1, 1, 1, 1))  # fmt: skip
 
 
 def _wire(samples: int) -> Frame:
@@ -143,13 +147,13 @@ def broken_frames() -> tuple[BrokenFrame, ...]:
          lambda: _cube(reverse_depth=True), _cube),
         ("The cube shows the wrong faces here too.", "culled winding",
          lambda: _cube(cull="front"), lambda: _cube(cull="back")),
-        ("The orange sticker on the wall shows only in thin stripes.", "z-fighting",
+        ("The orange sticker on the wall does not look as intended.", "z-fighting",
          lambda: _decal("unorm16"), lambda: _decal("float64")),
-        ("The two panes of coloured glass glow: brighter than their own colours.",
+        ("The two panes of coloured glass do not have the intended colours.",
          "missing premultiplication", lambda: _glass(False), lambda: _glass(True)),
-        ("Through the blue glass, the wall behind it has vanished.", "blend order",
-         lambda: _wall_and_glass(True), lambda: _wall_and_glass(False)),
-        ("The wire from the post is drawn as dashes.", "sliver", lambda: _wire(1),
+        ("Where the blue glass lies over the wall, the frame is not the intended one.",
+         "blend order", lambda: _wall_and_glass(True), lambda: _wall_and_glass(False)),
+        ("The wire from the post does not look as intended.", "sliver", lambda: _wire(1),
          lambda: _wire(16)),
     ]  # fmt: skip
     return tuple(BrokenFrame(k + 1, symptom, cause, broken(), intended())

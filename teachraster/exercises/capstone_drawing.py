@@ -18,6 +18,8 @@ def picture(spec, frame) -> np.ndarray:
     """(H, W, 3) what the scene looks like (NaN where nothing was drawn)."""
     if spec.glass:
         return np.clip(frame.color[..., :3], 0, 1)
+    if spec.tie:  # triangles given in clip space: their colour is their attribute
+        return np.clip(frame.attrs[..., :3], 0, 1)
     return np.clip(frame.image, 0, 1)
 
 

@@ -12,12 +12,19 @@ walked side by side; the first pair that disagrees names the stage:
   ``perspective_weights``, against the package's weights at that centre);
 - the same fragment leaves other colours behind: **blending** (``over``).
 
+Where the function's own exercise (or, for the depth test, exercise 4's table) recognises a
+typical mistake in it, the explanation names that mistake too (:func:`named_mistake`: the
+exercise's check, run once per function, over all its cases).
+
 When every record agrees, the difference lies after the pipeline: **texture filtering**
 (``bilinear``, ``trilinear``) or the MSAA **resolve**. The student's functions are called
 again only through :func:`.running.run_checker` (a strange answer costs a plain sentence).
 """
 
 from __future__ import annotations
+
+import warnings
+from functools import lru_cache
 
 import numpy as np
 
@@ -28,9 +35,16 @@ from ..pipeline.texturing.mip_pyramid import mipmap
 from ..pipeline.texturing.texture import sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
+from . import output
 from .coverage import explain_pixel as explain_coverage
-from .running import last_line, run_checker
+from .exercise import Knobs
+from .running import WrongAnswerType, last_line, run_checker
 from .scalars import vec
+from .zbuffer_pixel import DEPTH_MISTAKES, as_passes, depth_cases
+
+#: Capstone functions whose exercise's table of mistakes can name what is wrong with them.
+CHECKED_BY = ("covers", "barycentric", "perspective_weights", "over", "bilinear", "trilinear",
+              "resolve")  # fmt: skip
 
 #: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
 COVERED = ("hi_z", "failed_depth", "passed")
@@ -64,6 +78,50 @@ def _record_difference(used, reference, pixel, rm, rr):
     return None
 
 
+def named_mistake(used, name) -> str:
+    """ ": <words>" of the typical mistake exercise ``name``'s own check finds in the student's
+    function (over all its cases, :mod:`.diagnosis`), or "" when it names none."""
+    fn = used.get(name)
+    if name not in CHECKED_BY or fn is None:
+        return ""
+    try:
+        return _mistake_words(name, fn)
+    except TypeError:  # an unhashable callable: no cache, no name
+        return ""
+
+
+@lru_cache(maxsize=32)
+def _mistake_words(name, fn) -> str:
+    from .checks import check, exercise
+
+    table = _words_by_kind(exercise(name).mistakes)
+    with output.captured(), warnings.catch_warnings():  # a second run: its warnings were shown
+        warnings.simplefilter("ignore")
+        report = check(name, fn)
+    head = f"; the {name} exercise's check names the mistake: "
+    for failure in report.failures:
+        parts = [failure.kind] if failure.kind in table else failure.kind.split(" and ")
+        if not all(kind in table for kind in parts):
+            continue
+        words = [table[kind] for kind in parts]
+        if all(isinstance(w, str) for w in words):
+            return head + "; and ".join(words)
+        return head + failure.explanation  # words that quote the case: the case's sentence
+    return ""
+
+
+def _words_by_kind(mistakes) -> dict:
+    """Each single typical mistake's words (a table's combinations are named by their parts)."""
+    out = {}
+    for m in mistakes:
+        for single in m.mistakes() if isinstance(m, Knobs) else [m]:
+            if single.parts or not single.words:
+                continue
+            words = single.words
+            out[single.kind] = words.lstrip(" .:;") if isinstance(words, str) else words
+    return out
+
+
 def _call(used, name, *args):
     """The student's ``name`` on copies of ``args``: (value, "") or (None, why not)."""
     fn = used.get(name)
@@ -87,7 +145,7 @@ def _coverage(used, reference, pixel, rr, covered) -> str:
     asked = f"covers({_points(xy)}, {vec(p)})"
     said = error or f"your {asked} returned {yours!r}"
     why, _, _ = explain_coverage(xy, p, covered)
-    return f"triangle {rr.triangle}: {said}; the package: {why}"
+    return f"triangle {rr.triangle}: {said}; the package: {why}{named_mistake(used, 'covers')}"
 
 
 def _points(xy) -> str:
@@ -105,7 +163,30 @@ def _depth(used, reference, pixel) -> str:
     return (f"the fragments of triangles {[r.triangle for r in records]} reach it in drawing "
             f"order with depths {vec(depths)} and depth writes {_bools(writes)}: {said}, the "
             f"package's test passes {_bools(expected)} (strictly nearer than the depth last "
-            "written)")  # fmt: skip
+            f"written){_depth_mistake(used, depths, writes, yours, expected)}")  # fmt: skip
+
+
+def _depth_mistake(used, depths, writes, yours, expected) -> str:
+    """Exercise 4's name for the mistake that gives ``yours`` here and the student's answers
+    to exercise 4's named sequences (or nothing when none, or several, fit)."""
+    try:
+        got = as_passes(yours)
+    except WrongAnswerType:
+        return ""
+    if got.shape != expected.shape or np.array_equal(got, expected):
+        return ""
+    fits = [m for m in DEPTH_MISTAKES if np.array_equal(m.gives(depths, writes), got)]
+    if len(fits) > 1:
+        fits = run_checker(lambda: _fit_everywhere(used["depth_passes"], fits), fits)
+    return f": {fits[0].words}" if len(fits) == 1 and isinstance(fits[0].words, str) else ""
+
+
+def _fit_everywhere(fn, mistakes) -> list:
+    """The ``mistakes`` that give what ``fn`` gives on every named sequence of exercise 4."""
+    cases = [args for label, args, _ in depth_cases() if not label.startswith("random")]
+    answers = [as_passes(fn(d.copy(), w.copy())) for d, w in cases]
+    return [m for m in mistakes
+            if all(np.array_equal(m.gives(d, w), a) for (d, w), a in zip(cases, answers))]  # fmt: skip
 
 
 def _bools(values) -> str:
@@ -127,12 +208,13 @@ def _interpolation(used, reference, pixel, rr) -> str:
         yours, error = _call(used, "barycentric", xy, p)
         if error or yours is None or not np.allclose(yours, ours, rtol=1e-9, atol=1e-9):
             said = error or f"your barycentric returned {vec(yours, ours)}"
-            return f"{head}: {said}; the package's weights are {vec(ours, yours)}"
+            return (f"{head}: {said}; the package's weights are {vec(ours, yours)}"
+                    f"{named_mistake(used, 'barycentric')}")  # fmt: skip
     mu = ours if np.all(w == w[0]) else weights_per_row(ours[None], w[None])[0]
     yours, error = _call(used, "perspective_weights", ours, w)
     said = error or f"your perspective_weights(λ, w) returned {vec(yours, mu)}"
     return (f"{head}: λ = {vec(ours)} and w = {vec(w)}; {said}, the package's are "
-            f"{vec(mu, yours)}")  # fmt: skip
+            f"{vec(mu, yours)}{named_mistake(used, 'perspective_weights')}")  # fmt: skip
 
 
 def _blending(used, pixel, rr) -> str:
@@ -140,7 +222,8 @@ def _blending(used, pixel, rr) -> str:
     yours, error = _call(used, "over", src, dst)
     said = error or f"your over(src, dst) returned {vec(yours, rr.color_after)}"
     return (f"triangle {rr.triangle}'s fragment src = {vec(src)} lands on dst = {vec(dst)}: "
-            f"{said}, the package's blend gives {vec(rr.color_after, yours)}")  # fmt: skip
+            f"{said}, the package's blend gives {vec(rr.color_after, yours)}"
+            f"{named_mistake(used, 'over')}")  # fmt: skip
 
 
 def _shading(spec, used, reference, pixel) -> tuple[str, str]:
@@ -163,13 +246,15 @@ def _texture(spec, used, reference, row, col) -> str:
         ours = sample(tex, uv[None], "bilinear")[0]
         yours, error = _call(used, "bilinear", tex, uv, "repeat")
         said = error or f"your bilinear(texture, uv, 'repeat') returned {vec(yours, ours)}"
-        return f"{head} {said}, the package's bilinear filter gives {vec(ours, yours)}"
+        return (f"{head} {said}, the package's bilinear filter gives {vec(ours, yours)}"
+                f"{named_mistake(used, 'bilinear')}")  # fmt: skip
     uvs = reference.layout["uv"]
     lod = float(mip_level(reference.ddx[row, col, uvs], reference.ddy[row, col, uvs], tex.shape))
     ours = reference.image[row, col]
     yours, error = _call(used, "trilinear", mipmap(tex), uv, lod, "repeat")
     said = error or f"your trilinear(pyramid, uv, {lod:.4g}, 'repeat') returned {vec(yours, ours)}"
-    return f"{head} {said}, the package's trilinear filter gives {vec(ours, yours)}"
+    return (f"{head} {said}, the package's trilinear filter gives {vec(ours, yours)}"
+            f"{named_mistake(used, 'trilinear')}")  # fmt: skip
 
 
 def _resolve(used, reference, row, col) -> str:
@@ -180,4 +265,5 @@ def _resolve(used, reference, row, col) -> str:
     said = error or f"your resolve returned {vec(yours, ours)}"
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
-            f"{said}, the package's resolve gives {vec(ours, yours)}")  # fmt: skip
+            f"{said}, the package's resolve gives {vec(ours, yours)}"
+            f"{named_mistake(used, 'resolve')}")  # fmt: skip

@@ -47,6 +47,7 @@ class CapstoneScene:
     options: dict = field(default_factory=dict)
     compare: tuple[str, ...] = ("image",)
     glass: bool = False
+    tie: bool = False
 
 
 SCENES = {s.name: s for s in (
@@ -56,8 +57,9 @@ SCENES = {s.name: s for s in (
                   ("barycentric",), "single_triangle", compare=("attrs",)),
     CapstoneScene("textured_floor", "a floor to the horizon: perspective-correct uv",
                   ("barycentric", "perspective_weights"), "textured_floor", compare=("attrs",)),
-    CapstoneScene("intersecting_triangles", "two triangles piercing each other",
-                  ("depth_passes",), "intersecting_triangles", compare=("triangle_id", "depth")),
+    CapstoneScene("intersecting_triangles", "two triangles piercing each other and a green copy "
+                  "of the red one drawn last: equal depths, ties", ("depth_passes",),
+                  "intersecting_triangles", compare=("triangle_id", "depth"), tie=True),
     CapstoneScene("glass", "the two triangles as glass: blended over, no depth writes",
                   ("depth_passes", "over"), "intersecting_triangles", compare=("color",),
                   glass=True),
@@ -73,9 +75,19 @@ SCENES = {s.name: s for s in (
 )}  # fmt: skip
 
 
+#: The colour of the tie scene's copy of triangle 0 (drawn last, at exactly its depths).
+TIE_COLOR = (0.2, 0.75, 0.3)
+
+
 def render_with(spec: CapstoneScene, overrides=None):
     """The scene's traced frame, with ``overrides`` (None: the package's own rules)."""
     scene = get_scene(spec.scene)
+    if spec.tie:  # the same vertices again, so every depth ties bit for bit with triangle 0's
+        clip = scene.clip(W / H)
+        colour = scene.mesh.corner("color")
+        return render(np.concatenate([clip, clip[:1]]), W, H, trace=True, overrides=overrides,
+                      attrs=np.concatenate([colour, np.full((1, 3, 3), TIE_COLOR)]),
+                      **spec.options)  # fmt: skip
     if not spec.glass:
         return render(scene, None, W, H, trace=True, overrides=overrides, **spec.options)
     clip = scene.clip(W / H)

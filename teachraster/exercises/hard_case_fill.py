@@ -93,8 +93,14 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     flipped = s if raw_area >= 0 else s[[0, 2, 1]]  # oriented by the unsnapped area
     return {
         "no snapping": naive_coverage(xy, width, height, rule="top_left", **kw),
+        "floor snapping": naive_coverage(
+            np.floor(np.asarray(xy, float) * 256) / 256, width, height, rule="top_left", **kw
+        ),  # fmt: skip
         "E >= 0": naive_coverage(s, width, height, rule="inclusive", **kw),
         "E > 0": naive_coverage(s, width, height, rule="strict", **kw),
+        "top edge reversed": naive_coverage(s, width, height, rule="bottom_left", **kw),
+        "left edge reversed": naive_coverage(s, width, height, rule="top_right", **kw),
+        "both reversed": naive_coverage(s, width, height, rule="bottom_right", **kw),
         "one winding": naive_coverage(s, width, height, rule="top_left", orient="none", **kw),
         "oriented before snapping": naive_coverage(
             flipped, width, height, rule="top_left", orient="none", **kw
@@ -115,10 +121,21 @@ MISTAKES = {
     "no snapping": "you decide on the raw vertices: snap them to the 1/256-px grid first "
     "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
     "its neighbour agree on every tie",
+    "floor snapping": "you snap by truncating (np.floor): every vertex moves up to 1/256 px "
+    "left and up, always the same way, so centres near an edge change sides; round to the "
+    "nearest grid point, np.rint(xy * 256) / 256",
     "E >= 0": "you cover every centre on an edge (E ≥ 0): a centre on an edge shared by two "
     "triangles is covered twice; the top-left rule gives it to one of them",
     "E > 0": "you cover no centre on an edge (E > 0): a centre on a shared edge is covered by "
     "neither triangle, and a sliver whose edge runs through centres vanishes",
+    "top edge reversed": "your top edges are the bottom ones: on screen (y down), with the "
+    "triangle oriented so that E(v1, v2, v3) > 0, a top edge is horizontal and runs right "
+    "(b.x > a.x); the rule written for y up reads it the other way",
+    "left edge reversed": "your left edges are the right ones: on screen (y down), with the "
+    "triangle oriented so that E(v1, v2, v3) > 0, a left edge runs up (b.y < a.y)",
+    "both reversed": "you give ties to bottom and right edges, the reverse of the top-left "
+    "rule: on screen (y down), with the triangle oriented so that E(v1, v2, v3) > 0, a left "
+    "edge runs up (b.y < a.y) and a top edge is horizontal and runs right (b.x > a.x)",
     "one winding": "you assume one winding: orient the triangle first (swap two vertices when "
     "its edge function E(v1, v2, v3) is negative)",
     "oriented before snapping": "you oriented the triangle by its unsnapped area: snapping can "

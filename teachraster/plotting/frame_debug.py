@@ -101,8 +101,26 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> Ov
             cax.clear()
         result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g")
         result.colorbar.set_label(OVERLAY_LABELS[kind], fontsize="small")
+        result.colorbar.minorticks_off()  # a log bar's minor labels ("6 × 10⁰") crowd it
     ax.set_title(overlay_title(kind, values), fontsize="small")
     return result
+
+
+def fit_title(ax, margin: float = 4.0):
+    """Shrink ``ax``'s title until it lies inside its figure (a fixed-size widget figure in the
+    classroom style's large fonts); returns the title."""
+    title = ax.title
+    canvas = ax.figure.canvas
+    renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
+    if renderer is None or not title.get_text():
+        return title
+    width = ax.figure.bbox.width
+    for _ in range(8):
+        box = title.get_window_extent(renderer)
+        if box.x0 >= margin and box.x1 <= width - margin:
+            break
+        title.set_fontsize(title.get_fontsize() * 0.9)
+    return title
 
 
 def overlay_title(kind: str, values: np.ndarray) -> str:

@@ -23,6 +23,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
+from ..plotting.frame_debug import fit_title
 from .common import Holdable, close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
@@ -178,8 +179,8 @@ class FrameInspector(Holdable):
         self.scene = widgets.Dropdown(options=choices, value=scene, description="scene")
         self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
-        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test")
-        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)")
+        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test", indent=False)
+        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)", indent=False)
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
@@ -188,10 +189,11 @@ class FrameInspector(Holdable):
         self._render()
         with style_context(style):
             self.fig = new_figure((4.6, 3.9), self.backend)
-            self.ax = self.fig.add_axes((0.1, 0.06, 0.72, 0.8))
+            self.ax = self.fig.add_axes((0.07, 0.06, 0.66, 0.8))
             # the overlays' colour bar: one Axes of its own, reused, so that changing the
-            # view never takes room from the frame (a colour bar made with ax= would)
-            self.cax = self.fig.add_axes((0.86, 0.14, 0.03, 0.64))
+            # view never takes room from the frame (a colour bar made with ax= would); the
+            # room right of it holds its ticks and its label at the classroom style's sizes
+            self.cax = self.fig.add_axes((0.75, 0.14, 0.03, 0.64))
             self.hist_fig = new_figure((4.6, 3.9), self.backend)
             # room for written-out depths (0.9676) and two-line sample labels under MSAA
             self.hist_ax = self.hist_fig.add_axes((0.26, 0.24, 0.71, 0.66))
@@ -246,6 +248,7 @@ class FrameInspector(Holdable):
             ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
+        fit_title(ax)
         r, c = self.row.value, self.col.value
         self.marker = ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
                               color="#D55E00", lw=2, zorder=6)[0]  # fmt: skip

@@ -30,7 +30,9 @@ returns that as an (H, W) array, 0 (never NaN) where nothing arrives:
     without the depth test, and with MSAA (not simulated there).
 ``"nan"``
     Non-finite values per covered pixel, over depth, attributes, derivatives and (scenes)
-    the shaded image: a frame debugger's NaN view; 0 on a healthy frame.
+    the shaded image: a frame debugger's NaN view; 0 on a healthy frame. An empty depth
+    (NaN: no depth was written there, as under glass drawn with ``depth_write=False``) is not
+    counted; an infinite one is (a NaN depth never passes the test, so it is never written).
 
 All but "nan" need ``trace=True``; they are computed on demand from the trace's compact
 arrays (single sample: the fragment arrays; MSAA: the per-sample coverage recomputed by the
@@ -249,10 +251,14 @@ def _quad_groups(key: np.ndarray, row: np.ndarray) -> np.ndarray:
 
 
 def non_finite(frame) -> np.ndarray:
-    """(H, W) count of non-finite values at covered pixels, over the per-pixel arrays."""
+    """(H, W) count of non-finite values at covered pixels, over the per-pixel arrays.
+
+    The depth buffer's NaN means "nothing written" (glass writes no depth), not an error.
+    """
     covered = frame.triangle_id >= 0
     count = np.zeros(frame.triangle_id.shape, dtype=np.int64)
-    for arr in (frame.depth, frame.attrs, frame.ddx, frame.ddy, getattr(frame, "image", None)):
+    count += np.isinf(frame.depth)
+    for arr in (frame.attrs, frame.ddx, frame.ddy, getattr(frame, "image", None)):
         if arr is None:
             continue
         bad = ~np.isfinite(arr)

@@ -31,9 +31,10 @@ def naive_coverage(
         Vertices in pixels.
     width, height : int
         Size of the window of pixels tested.
-    rule : {"inclusive", "strict", "top_left"}
+    rule : {"inclusive", "strict", "top_left", "top_right", "bottom_left", "bottom_right"}
         A centre on an edge is inside (``E >= 0``: shared edges are drawn twice), outside
-        (``E > 0``: shared edges are drawn by nobody), or decided by the top-left rule.
+        (``E > 0``: shared edges are drawn by nobody), or decided by the top-left rule (the
+        other three: the rule with the top or the left direction reversed, a typical mistake).
     dtype : numpy float type
         Arithmetic of the edge functions (float32 as on old GPUs and in shaders).
     orient : {"unsnapped", "none"}
@@ -67,9 +68,11 @@ def naive_coverage(
             ok = e >= 0
         elif rule == "strict":
             ok = e > 0
-        else:
-            top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
-            ok = e >= 0 if top_left else e > 0
+        else:  # "top_left" (or, a mistake, the rule with a direction reversed)
+            vertical, horizontal = rule.split("_")
+            side = b[1] < a[1] if horizontal == "left" else b[1] > a[1]
+            flat = b[1] == a[1] and (b[0] > a[0] if vertical == "top" else b[0] < a[0])
+            ok = e >= 0 if side or flat else e > 0
         inside &= ok
     return inside
 

@@ -297,6 +297,16 @@ function drawSegment(ctx, p, q, snapped) {
     ctx.fillStyle = "#111";
     ctx.font = "bold 15px sans-serif";
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
-    ctx.fillText(text, e[0] + 9, e[1] - 9);
+    const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
+    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide);
+    ctx.fillText(text, x, y);
   });
+}
+
+// Where an end point's label goes: right of and above the point, or left of it where the
+// text would run past the canvas's right border (p1 in the last column), below it at the top.
+export function labelAt(x, y, textWidth, canvasWidth) {
+  const lx = x + 9 + textWidth <= canvasWidth - 2 ? x + 9 : Math.max(2, x - 9 - textWidth);
+  const ly = y - 9 >= 15 ? y - 9 : y + 22;
+  return [lx, ly];
 }
