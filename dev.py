@@ -81,11 +81,10 @@ def pytest_args(args):
         os.environ["TEACHRASTER_QUICK"] = "1"
         args = ["-m", " and ".join(f"not {t}" for t in HEAVY_TIERS), *args]
     if not any(a == "-n" or a.startswith(("-n=", "--numprocesses", "-p no:xdist")) for a in args):
-        # one worker per core, at least two: many tests wait on a kernel or a browser. Each
-        # module on one worker (loadscope), so its shared fixtures are built once. (loadgroup's
-        # xdist_group does nothing under pytest 9: xdist 3.8 renames item._nodeid, pytest 9
-        # reads item._id.)
-        args = ["-n", str(max(2, os.cpu_count() or 1)), "--dist", "loadscope", *args]
+        # one worker per core, at least two: many tests wait on a kernel or a browser. Tests
+        # go out one by one in collection order (heavy tiers first, conftest); what several
+        # workers need is built once per run (tests/run_once.py, tests/notebook_runs.py).
+        args = ["-n", str(max(2, os.cpu_count() or 1)), "--dist", "load", *args]
     return args
 
 

@@ -91,9 +91,8 @@ def _tier_rank(item) -> int:
 
 def pytest_collection_modifyitems(config, items):
     """Modules of the heavy tiers first (a module keeps its tests together and in order, so its
-    fixtures are set up once). ``dev.py`` runs with ``--dist loadscope``: each module goes to
-    one worker whole, so a module's shared fixture (the nbgrader course, the built wheel, a
-    JupyterLab server) is built once, not once per worker."""
+    fixtures are set up once per worker). Expensive fixtures several workers need are built
+    once per run: ``run_once.py`` (the nbgrader course, the wheel), ``notebook_runs.py``."""
     rank: dict = {}
     for item in items:
         rank[item.path] = min(rank.get(item.path, len(HEAVY_FIRST)), _tier_rank(item))

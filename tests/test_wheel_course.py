@@ -20,6 +20,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
+import run_once
 
 ROOT = Path(__file__).resolve().parent.parent
 LESSONS = sorted(p.name for p in (ROOT / "notebooks").glob("*.ipynb"))
@@ -34,14 +35,17 @@ def _run(cmd, **kwargs):
     return subprocess.run(cmd, capture_output=True, text=True, env=env, **kwargs)
 
 
-@pytest.fixture(scope="module")
-def wheel(tmp_path_factory) -> Path:
-    out = tmp_path_factory.mktemp("wheel")
+def _build_wheel(out: Path) -> None:
     build = _run([sys.executable, "-m", "pip", "wheel", str(ROOT), "--no-deps", "-w", str(out)])
     if build.returncode and "setuptools" in build.stderr and "No matching" in build.stderr:
         pytest.skip("no setuptools>=77 to build with (no package index reachable)")
     assert build.returncode == 0, build.stderr[-3000:]
-    (path,) = out.glob("teachraster-*.whl")
+
+
+@pytest.fixture(scope="module")
+def wheel() -> Path:
+    """The wheel, built once per run (whichever worker asks first)."""
+    (path,) = run_once.shared_folder("wheel", _build_wheel).glob("teachraster-*.whl")
     return path
 
 
