@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import itertools
 import os
+import sys
 from fractions import Fraction
 
 import numpy as np
@@ -97,6 +98,20 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         rank[item.path] = min(rank.get(item.path, len(HEAVY_FIRST)), _tier_rank(item))
     items.sort(key=lambda item: rank[item.path])  # stable: collection order within a rank
+
+
+@pytest.hookimpl(trylast=True)  # after the fixtures' own teardown (their pages close first)
+def pytest_runtest_teardown(item, nextitem):
+    """After the last browser or notebook test of a worker's run of them, stop its Playwright,
+    JupyterLab and Chromium (``notebook_browser.stop``): the tests after them expect a thread
+    with no event loop marked running. A later browser test starts them again."""
+    if nextitem is not None and (
+        nextitem.get_closest_marker("browser") or nextitem.get_closest_marker("notebook")
+    ):
+        return
+    running = sys.modules.get("notebook_browser")
+    if running is not None:
+        running.stop()
 
 
 def examples(n: int) -> int:

@@ -250,3 +250,19 @@ def _save(page, path: Path) -> None:
         if time.time() > deadline:
             raise RuntimeError(f"JupyterLab did not save {path.name} within 60 s")
         time.sleep(0.2)
+
+
+def stop() -> None:
+    """Stop this process's server, browser and Playwright, if started (``conftest`` calls it
+    when the browser tests are through: a started Playwright marks the thread's asyncio loop as
+    running between its calls, and code that schedules work on a running loop, like the
+    widgets' ``later``, would wait for it forever)."""
+    import asyncio
+
+    if lab.cache_info().currsize:
+        lab().stop()
+        lab.cache_clear()
+    if driver.cache_info().currsize:
+        driver().stop()
+        driver.cache_clear()
+    asyncio._set_running_loop(None)

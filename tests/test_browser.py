@@ -38,7 +38,7 @@ pytestmark = [
 ]
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def lab():
     """This worker's JupyterLab server on a copy of notebooks/ (``notebook_browser``: one per
     worker, shared with the notebooks' runs, stopped at exit)."""
@@ -47,7 +47,7 @@ def lab():
     return running().base
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def page(lab):
     """This worker's Chromium page, its error list emptied."""
     from notebook_browser import lab as running
