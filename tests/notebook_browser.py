@@ -135,9 +135,7 @@ def driver():
     hold only one, so every browser test of a worker launches its browsers from this one."""
     from playwright.sync_api import sync_playwright
 
-    running = sync_playwright().start()
-    atexit.register(running.stop)
-    return running
+    return sync_playwright().start()
 
 
 @functools.cache
@@ -162,9 +160,7 @@ def lab() -> Lab:
     page = browser.new_context(viewport={"width": 1400, "height": 1000}).new_page()
     errors: list[str] = []
     page.on("pageerror", lambda exc: errors.append(str(exc)))
-    running = Lab(base, work / "notebooks", log, process, page, errors, browser.close)
-    atexit.register(running.stop)
-    return running
+    return Lab(base, work / "notebooks", log, process, page, errors, browser.close)
 
 
 def _shut_down_kernels(base: str) -> None:
@@ -266,3 +262,6 @@ def stop() -> None:
         driver().stop()
         driver.cache_clear()
     asyncio._set_running_loop(None)
+
+
+atexit.register(stop)
