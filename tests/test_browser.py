@@ -38,16 +38,18 @@ pytestmark = [
 ]
 
 
-@pytest.fixture
+@pytest.fixture(scope="module")
 def lab():
     """This worker's JupyterLab server on a copy of notebooks/ (``notebook_browser``: one per
-    worker, shared with the notebooks' runs, stopped at exit)."""
+    worker, shared with the notebooks' runs). Module scope is safe: a worker runs its tests in
+    collection order, browser and notebook tests first, and stops the server only after them
+    (``conftest.pytest_runtest_teardown``)."""
     from notebook_browser import lab as running
 
     return running().base
 
 
-@pytest.fixture
+@pytest.fixture(scope="module")
 def page(lab):
     """This worker's Chromium page, its error list emptied."""
     from notebook_browser import lab as running

@@ -155,7 +155,10 @@ def test_the_budget_covers_every_exercise():
     for name in ex.names():
         report = ex.check(name, forever, budget=0.5)
         assert not report.passed and report.failures[0].kind == "timeout", name
-    assert took.stop().within(len(ex.names()) * 0.1 + SLACK)  # a fifth of the budget each
+    # an endless loop is stopped at once, case building included: 5.6 s for all 32 on a quiet
+    # machine (the capstone's and reasoning exercises build scenes first), never the budget
+    # each (16 s)
+    assert took.stop().within(len(ex.names()) * 0.2 + SLACK)
 
 
 @pytest.mark.parametrize("name", ["depth_to_unorm", "bilinear", "classify_block", "fill"])

@@ -27,7 +27,7 @@ def _axes(axes):
     import matplotlib.pyplot as plt
 
     if axes is None:
-        return list(plt.subplots(1, 3, figsize=(9.2, 3.3), layout="constrained")[1])
+        return list(plt.subplots(1, 3, figsize=(8.8, 3.2), layout="constrained")[1])
     axes = list(np.ravel(axes))
     if len(axes) != 3:
         raise ValueError(f"axes must be three Axes, got {len(axes)}")
