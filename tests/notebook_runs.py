@@ -106,6 +106,13 @@ def _path(name: str) -> Path:
     return NOTEBOOKS / f"{name}.ipynb"
 
 
+def _probe(record: dict, error: str) -> dict:
+    """The probe's figures and peak memory; the last cell (the dump) is the test's, so its
+    memory is left out unless a cell failed before it."""
+    peak = max(record["rss_mib"][:-1] or [0.0]) if not error else max(record["rss_mib"] or [0])
+    return {"figures": record["figures"], "peak_mib": peak}
+
+
 def in_browser() -> bool:
     """Whether notebooks run in the browser in this test run: in the full run wherever Chromium,
     Playwright and JupyterLab are here (CI requires them), so each notebook runs once, as a
@@ -124,9 +131,7 @@ def _run_in_browser(name: str) -> NotebookRun:
         out = Path(tmp) / "globals.pickle"
         run = notebook_browser.run_all(name, _DUMP.replace("__PATH__", repr(str(out))))
         blobs = pickle.loads(out.read_bytes()) if out.exists() else {}
-    record = run.probe_record or {"figures": [], "rss_mib": [0.0]}
-    peak = max(record["rss_mib"][:-1] or [0.0]) if not run.error else max(record["rss_mib"] or [0])
-    probe = {"figures": record["figures"], "peak_mib": peak}
+    probe = _probe(run.probe_record or {"figures": [], "rss_mib": [0.0]}, run.error)
     return NotebookRun(
         name, run.text, blobs, probe, run.error, run.seconds, True, run.figures, run.page_errors
     )
@@ -160,9 +165,7 @@ def _run(name: str) -> NotebookRun:
         blobs = pickle.loads(out.read_bytes()) if out.exists() else {}
         record = bench.read_probe(log) if log.exists() else {"figures": [], "rss_mib": [0.0]}
     nb.cells.pop()  # the dump cell is the test's, not the notebook's
-    # its memory is the test's too: the peak is taken over the notebook's own cells
-    peak = max(record["rss_mib"][:-1] or [0.0]) if not error else max(record["rss_mib"] or [0])
-    probe = {"figures": record["figures"], "peak_mib": peak}
+    probe = _probe(record, error)
     return NotebookRun(name, nbformat.writes(nb), blobs, probe, error, seconds)
 
 
