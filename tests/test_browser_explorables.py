@@ -15,6 +15,7 @@ Playwright or Chromium is missing).
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import urllib.request
@@ -106,11 +107,14 @@ def _kernel(tab, code: str) -> str:
     tab.wait_for_function("n => document.querySelectorAll('.jp-Notebook .jp-CodeCell').length > n",
                           arg=n, timeout=10_000)  # fmt: skip
     tab.keyboard.press("Enter")
-    tab.keyboard.type(f"print('OUT' + json.dumps({code}))")
+    # a marker no other output holds, matched case-sensitively (Playwright's has_text string
+    # is a case-insensitive substring: "OUT" matched an older output saying "without")
+    marker = f"KERNEL-SAYS-{n}:"
+    tab.keyboard.type(f"print({marker!r} + json.dumps({code}))")
     tab.keyboard.press("Shift+Enter")
-    out = tab.locator(".jp-OutputArea-output", has_text="OUT").last
+    out = tab.locator(".jp-OutputArea-output", has_text=re.compile(re.escape(marker))).last
     out.wait_for(timeout=60_000)
-    return json.loads(out.inner_text().split("OUT", 1)[1])
+    return json.loads(out.inner_text().split(marker, 1)[1])
 
 
 def _frames(canvas) -> int:
