@@ -136,7 +136,8 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
                    label="samples")[0]  # fmt: skip
     b.plot(result.x, result.filtered, color=OKABE_ITO["blue"], lw=1, alpha=0.35)
     b.set_title("2. sample")
-    (ideal,) = c.plot(result.x, result.ideal, color="#BBBBBB", lw=1.5,
+    # dashed and darker: in a shared key it must not look like the signal's grey line
+    (ideal,) = c.plot(result.x, result.ideal, color="0.3", lw=1.5, ls="--",
                       label="ideal (nothing above Nyquist)")  # fmt: skip
     (rec,) = c.plot(result.x, result.reconstructed, color=OKABE_ITO["bluish_green"], lw=2.5,
                     label="reconstructed")  # fmt: skip
