@@ -325,6 +325,8 @@ def test_08_levels_fan_hub_centroid_and_resolve():
     assert ns.levels["rotated grid (standard)"] == [0.0, 0.25, 0.5, 0.75, 1.0]
     assert 0.75 not in ns.levels["ordered grid"]
     assert ns.hub_count == 1 and int((ns.count > 1).sum()) == 0
+    # "no sample inside the fan is left uncovered"
+    assert ns.inside_ring.sum() > 1000 and not (ns.inside_ring & (ns.count == 0)).any()
     assert np.allclose(ns.centre, [10, 6] + ns.pattern16[0])
     v_c, v_s = ns.at_centre.attrs["v"][ns.pr, ns.pc], ns.at_centroid.attrs["v"][ns.pr, ns.pc]
     assert not 0 <= v_c <= 1 and 0 <= v_s <= 1  # extrapolated at the centre, inside at the sample
@@ -479,6 +481,9 @@ def test_09_quads_closed_form_and_predictions():
     np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
     assert ns.level_q == 2 and abs(ns.lam_q - np.log2(3)) < 1e-12
+    assert ns.strip.shape == (1, len(ns.numbered)) and np.flatnonzero(ns.strip[0]).tolist() == [2]
+    # the probes question: its answer is the measured gap, "0.1 or more"
+    assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer >= 0.05
     assert ns.top > 0  # the figures start at the floor, not in the sky
 
 
@@ -545,13 +550,18 @@ def test_09_filter_explorer_driven_by_the_test():
 
 # -- 10 tiles and hierarchical z ----------------------------------------------------------------
 def test_10_numbers_the_text_relies_on():
+    import teachraster as tr
     from teachraster.core import fixed_point
 
     ns = lesson("10_tiles_and_hierarchical_z")
     assert np.isclose(ns.values.max(), ns.corner_max) and np.isclose(ns.values.min(), ns.corner_min)
     assert all(ns.same.values())
     assert ns.per_pixel[0] > 10 * ns.per_pixel[-1]
-    assert 30 <= ns.tests[2] <= 100  # the predicted "about 50"
+    assert ns.tiny_tests == ns.tests[2] == 1 + 16 + 16 + 16  # the predicted count
+    # the Hi-Z question: exactly the tiles whose 64 centres the near triangle covers
+    near = tr.rasterize(tr.Triangle(ns.near_xy), ns.hw, ns.hh).coverage
+    full = near.reshape(ns.hh // 8, 8, ns.hw // 8, 8).all(axis=(1, 3))
+    assert np.array_equal(ns.rejected_tiles, full) and 10 < full.sum() < full.size
     budget = ns.narrow.budget
     assert not budget.fits and f"{budget.needed} bits needed" in "\n".join(budget.lines())
     assert budget.needed > 32  # "more than 32"

@@ -160,7 +160,8 @@ class PixelSampleArtists(Artists):
             artist.remove()
         self.edges, self.dots, self.labels = [], [], []
         ids, offsets = sample_data(source)
-        ax.set_xlim(col - 0.15, col + 1.15)
+        # wider than tall: a sample near a side has its edge values beside it, in the margin
+        ax.set_xlim(col - 0.28, col + 1.28)
         ax.set_ylim(row + 1.15, row - 0.15)
         ax.set_xticks([col, col + 0.5, col + 1])  # the pixel's sides and centre, uncrowded
         ax.set_yticks([row, row + 0.5, row + 1])

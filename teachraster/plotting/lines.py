@@ -113,6 +113,11 @@ class LineView(Artists):
         trace = as_line_trace(line)
         width, height = trace.size
         pixel_axes(ax, width, height)
+        # the pixel grid, over the lit pixels: every rule's steps are counted in pixels
+        for x in range(width + 1):
+            ax.axvline(x, color=COLORS["grid"], lw=lw(0.4), zorder=1.5)
+        for y in range(height + 1):
+            ax.axhline(y, color=COLORS["grid"], lw=lw(0.4), zorder=1.5)
         image = show_image(ax, np.where(trace.coverage_at(step), 1.0, np.nan),
                            cmap=_one_colour(), vmin=0, vmax=1, zorder=1)  # fmt: skip
         current = Rectangle((0, 0), 1, height, facecolor="none", edgecolor=COLORS["current"],

@@ -48,7 +48,9 @@ def prefilter(values, spacing: float, width: float, kernel: str = "box"):
     """Convolve fine-grid ``values`` (grid step 1/FINE) with a kernel ``width`` samples wide.
 
     ``width`` is in sample spacings (1 = one pixel's box); 0 means no prefilter. The Gaussian
-    has standard deviation ``width / 2`` spacings. Edges are padded with the end values.
+    has standard deviation ``width / 2`` spacings. Edges are padded by mirroring the values:
+    the chirp goes on at its local frequency, so a wide filter averages it to its mean there
+    too (padding with the end value bent the filtered curve towards that value).
     """
     if kernel not in KERNELS:
         raise ValueError(f"kernel must be one of {KERNELS}, got {kernel!r}")
@@ -63,7 +65,7 @@ def prefilter(values, spacing: float, width: float, kernel: str = "box"):
         half = int(np.ceil(4 * sigma))
         k = np.exp(-0.5 * (np.arange(-half, half + 1) / sigma) ** 2)
     k /= k.sum()
-    padded = np.pad(values, half, mode="edge")
+    padded = np.pad(values, half, mode="symmetric")
     return np.convolve(padded, k, mode="valid")
 
 
@@ -134,7 +136,8 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
                    label="samples")[0]  # fmt: skip
     b.plot(result.x, result.filtered, color=OKABE_ITO["blue"], lw=1, alpha=0.35)
     b.set_title("2. sample")
-    (ideal,) = c.plot(result.x, result.ideal, color="#BBBBBB", lw=1.5,
+    # dashed and darker: in a shared key it must not look like the signal's grey line
+    (ideal,) = c.plot(result.x, result.ideal, color="0.3", lw=1.5, ls="--",
                       label="ideal (nothing above Nyquist)")  # fmt: skip
     (rec,) = c.plot(result.x, result.reconstructed, color=OKABE_ITO["bluish_green"], lw=2.5,
                     label="reconstructed")  # fmt: skip

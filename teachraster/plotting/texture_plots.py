@@ -180,6 +180,7 @@ def plot_pyramid(ax, levels, *, gap: float = 0.04) -> PyramidArtists:
     pad = gap * w0
     out = PyramidArtists()
     x, y = w0 + pad, 0.0
+    small = []  # levels too small for a label of their own: one label for them all
     for i, lv in enumerate(levels):
         h, w = lv.shape[:2]
         x0, y0 = (0.0, 0.0) if i == 0 else (x, y)
@@ -194,8 +195,16 @@ def plot_pyramid(ax, levels, *, gap: float = 0.04) -> PyramidArtists:
             else:
                 where = {"x": x0 + w + pad * 0.5, "y": y0 + h / 2, "ha": "left", "va": "center"}
             out.labels.append(ax.text(s=label, fontsize=fs(0.7), **where))
+        elif not small:
+            small.append((i, x0 + w + pad * 0.5, y0, w, h))
         if i > 0:
             y += h + pad * 1.2
+    if small:
+        first, sx, sy, w, h = small[0]
+        last = levels[-1].shape[:2]
+        out.labels.append(ax.text(sx, sy, f"{first}–{len(levels) - 1}: {w}×{h} … "
+                                  f"{last[1]}×{last[0]}", fontsize=fs(0.7), ha="left",
+                                  va="top"))  # fmt: skip
     ax.set_xlim(-pad, x + w0 * 0.95)
     ax.set_ylim(max(h0 + 3 * pad, y) + 2 * pad, -pad)
     ax.set_aspect("equal")

@@ -105,9 +105,11 @@ class BlendingExplorer(Shown):
         self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer")
         self._compute()
         with style_context(style):
-            self.fig = new_figure((9.0, 4.6), self.backend)
-            self.fig.set_layout_engine("constrained")
-            axes = self.fig.subplots(1, 2)
+            self.fig = new_figure((9.0, 5.0), self.backend)
+            # Fixed margins: the constrained layout let the titles above the top column labels
+            # run off the picture once the square panels were fitted to the width.
+            axes = self.fig.subplots(1, 2, gridspec_kw=dict(left=0.08, right=0.99, top=0.8,
+                                                            bottom=0.02, wspace=0.22))  # fmt: skip
             self.artists = plot_rgba(axes[0], self.color)
             self.sorted_artists = plot_rgba(axes[1], self.sorted_color)
             axes[0].set_title("submission order")

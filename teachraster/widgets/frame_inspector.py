@@ -188,12 +188,13 @@ class FrameInspector(Holdable):
         self.table = widgets.HTML()
         self._render()
         with style_context(style):
-            self.fig = new_figure((4.6, 3.9), self.backend)
-            self.ax = self.fig.add_axes((0.07, 0.06, 0.66, 0.8))
+            # room on the left for the row labels and "row i" at the classroom style's size
+            self.fig = new_figure((5.0, 3.9), self.backend)
+            self.ax = self.fig.add_axes((0.17, 0.06, 0.6, 0.8))
             # the overlays' colour bar: one Axes of its own, reused, so that changing the
             # view never takes room from the frame (a colour bar made with ax= would); the
             # room right of it holds its ticks and its label at the classroom style's sizes
-            self.cax = self.fig.add_axes((0.75, 0.14, 0.03, 0.64))
+            self.cax = self.fig.add_axes((0.8, 0.14, 0.028, 0.64))
             self.hist_fig = new_figure((4.6, 3.9), self.backend)
             # room for written-out depths (0.9676) and two-line sample labels under MSAA
             self.hist_ax = self.hist_fig.add_axes((0.26, 0.24, 0.71, 0.66))

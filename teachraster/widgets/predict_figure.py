@@ -88,7 +88,8 @@ def grid_axes(fig, width: int, height: int, side: float):
     room for the row and column labels only, and add its Axes."""
     s = font_scale()
     aw, ah = (side, side * height / width) if width >= height else (side * width / height, side)
-    left, top, right, bottom = 0.75 * s, 0.75 * s, 0.15, 0.15
+    # above: the column labels and "column j" only (0.75 * s left an empty band there)
+    left, top, right, bottom = 0.75 * s, 0.42 * s + 0.1, 0.15, 0.15
     fw, fh = left + aw + right, top + ah + bottom
     fig.set_size_inches(fw, fh)
     return fig.add_axes((left / fw, bottom / fh, aw / fw, ah / fh))
@@ -227,7 +228,14 @@ class PredictPixels(FigurePrediction):
                 plot_pixel_centres(ax, width, height)
             return ax
 
-        picture = figure_picture(draw, axes_for, (side, side), style)
+        def drawn(ax):
+            if draw is not None:
+                draw(ax)
+            # The whole grid, whatever the drawing did to the limits (a line or a fill
+            # autoscales them, and cut off the last row).
+            ax.set(xlim=(0, width), ylim=(height, 0))
+
+        picture = figure_picture(drawn, axes_for, (side, side), style)
         self.answer = mask.copy()
         super().__init__(question, explain, {"kind": "pixels", "width": width, "height": height,
                                              "answer": np.argwhere(mask).tolist(), **picture})  # fmt: skip

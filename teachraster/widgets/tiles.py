@@ -85,6 +85,7 @@ class TileExplorer(Holdable):
             self.ax, self.fig = ax, fig
             self.artists = None
             self._draw_blocks()
+            _fit_margins(fig, ax)
             self.display = FigureDisplay(fig, self.backend)
         self.sizes.observe(self._on_refill, "value")
         self.traversal.observe(self._on_refill, "value")
@@ -173,6 +174,28 @@ class TileExplorer(Holdable):
             widget = stack.pop()
             stack.extend(getattr(widget, "children", ()))
             widget.close()
+
+
+def _fit_margins(fig, ax, pad: float = 0.12) -> None:
+    """Shrink ``fig`` to the Axes, its tick labels and its legend, ``pad`` inches around.
+
+    :func:`~.common.fill_axes` leaves room for a FillView's header and colour key; the
+    explorer has neither (its caption is HTML), and the fixed margins left a wide empty band
+    right of the key. Measured once: the key is the same for every size and traversal.
+    """
+    renderer = fig.canvas.get_renderer()
+    dpi = fig.dpi
+    fw, fh = fig.get_size_inches()
+    box = ax.get_position()  # figure fraction
+    tight = ax.get_tightbbox(renderer)  # pixels: the Axes with its labels and the legend
+    left = box.x0 * fw - tight.x0 / dpi + pad  # inches outside the Axes on each side
+    right = tight.x1 / dpi - box.x1 * fw + pad
+    bottom = box.y0 * fh - tight.y0 / dpi + pad
+    top = tight.y1 / dpi - box.y1 * fh + pad
+    aw, ah = box.width * fw, box.height * fh
+    nw, nh = left + aw + right, bottom + ah + top
+    fig.set_size_inches(nw, nh)
+    ax.set_position((left / nw, bottom / nh, aw / nw, ah / nh))
 
 
 def _counter_table(counters) -> str:

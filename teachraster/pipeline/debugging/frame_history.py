@@ -78,11 +78,13 @@ class HistoryRecord:
     depth_before, depth_after : float
         The depth buffer at this sample before and after it (inf: still empty).
     value : tuple of float
-        The attributes it wrote ("passed"), else those interpolated there ("failed_depth"),
-        else () (Hi-Z rejects a fragment before it is interpolated).
+        The attributes it wrote ("passed"), else (): a fragment Hi-Z rejected or that
+        failed the depth test is never interpolated (the render shades only the fragments
+        it keeps), and its outcome says why.
         With MSAA, where attributes are evaluated once per pixel and triangle, the records
-        a sample shows at the end carry the frame's ``sample_attrs``; those hidden later
-        carry the same evaluation for their pair (at the centre, or the centroid sample).
+        a sample shows at the end carry the frame's ``sample_attrs``; those that passed and
+        were hidden later carry the same evaluation for their pair (at the centre, or the
+        centroid sample); a sample of the pair that failed carries none.
     edge : str or None
         "not_covered": the edge that refused the point: "E12", "E23", "E31" (or E13, E32,
         E21) for the input triangle's own edges (v1, v2, v3 in the order given), "near",
@@ -222,7 +224,8 @@ def pixel_history(frame, row, col) -> PixelHistory:
         values = frame.sample_attrs[row, col]
         hidden = _hidden_values(frame, dbg, row, col, records)
         records = [replace(r, value=tuple(float(v) for v in values[r.sample])) if r.shown
-                   else replace(r, value=hidden[r.piece]) if r.piece in hidden
+                   else replace(r, value=hidden[r.piece])
+                   if r.piece in hidden and r.outcome == "passed"
                    else r for r in records]  # fmt: skip
     if dbg.blend is not None:
         records = _colours(frame, dbg, row, col, records)
@@ -370,7 +373,12 @@ def _single_sample(frame, dbg, row, col) -> list[HistoryRecord]:
     misses = _Misses(dbg, setup, pieces, pts)
     fragment_of = dict(zip(frags.tri[at].tolist(), at.tolist()))
     rejected = None if trace.hiz is None else trace.hiz.fragment_rejected
-    values = _values(frags, at if rejected is None else at[~rejected[at]], dbg)
+    # Only a fragment that passed is interpolated (the render shades the pairs it keeps): one
+    # Hi-Z rejected or that failed the depth test has no value, its outcome says why.
+    kept = np.asarray(trace.fragment_passed[at], dtype=bool)
+    if rejected is not None:
+        kept = kept & ~rejected[at]
+    values = _values(frags, at[kept], dbg)
     records = []
     for piece in pieces.tolist():
         base = dict(triangle=int(dbg.clipped.parent[piece]), piece=piece, sample=0)
@@ -662,7 +670,9 @@ def draw_history(ax, h: PixelHistory):
     every = [v for v in every if np.isfinite(v)]
     lo, hi = (min(every), max(every)) if every else (0.0, 1.0)
     mid, span = (lo + hi) / 2, max(hi - lo, MIN_DEPTH_SPAN)
-    bottom, top = mid - 0.85 * span, mid + 1.15 * span  # room above for the legend
+    # Room above the depths for the legend, two rows across the top: it never covers a
+    # tile (a legend placed "best" sat on the Hi-Z tile, the highest depth).
+    bottom, top = mid - 0.85 * span, mid + 1.3 * span
     tile = span * 0.05
     foot = bottom + 0.12 * span  # where a record without a fragment is marked
     shown = []  # (handle, label) for the legend
@@ -696,10 +706,18 @@ def draw_history(ax, h: PixelHistory):
     ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
     artists += _draw_colours(ax, h, x, (bottom, top))
     if n:  # in the depth part of the Axes (the colours, if any, are above it)
-        handles, labels = zip(*shown)
+        # The longest labels share the first column (filled first), so that two columns
+        # stay within the Axes' width.
+        half = (len(shown) + 1) // 2
+        ranked = sorted(range(len(shown)), key=lambda i: -len(shown[i][1]))
+        first = sorted(ranked[:half])
+        order = first + [i for i in range(len(shown)) if i not in first]
+        handles, labels = zip(*(shown[i] for i in order))
         depth_part = (top - bottom) / (ax.get_ylim()[1] - bottom)
-        artists.append(ax.legend(handles, labels, fontsize="x-small", loc="best",
-                                 bbox_to_anchor=(0, 0, 1, depth_part), framealpha=0.85))  # fmt: skip
+        artists.append(ax.legend(handles, labels, fontsize="x-small", loc="upper center",
+                                 ncols=2, bbox_to_anchor=(0, 0, 1, depth_part),
+                                 framealpha=0.85, columnspacing=0.8, handlelength=1.0,
+                                 handletextpad=0.4, borderaxespad=0.2))  # fmt: skip
     return artists
 
 
