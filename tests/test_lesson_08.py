@@ -1,65 +1,42 @@
-"""Lesson 08 (antialiasing): run it headless and check what it shows, through its variables."""
+"""Lesson 08 (antialiasing): what it shows, read from the one execution every notebook test
+shares (``tests/notebook_runs.py``; it used to execute the lesson a second time here)."""
 
-import json
-from pathlib import Path
-
-import nbformat
 import pytest
+from notebook_runs import lesson
+
+import teachraster as tr
 
 pytestmark = pytest.mark.notebook
-NOTEBOOK = Path(__file__).resolve().parent.parent / "notebooks" / "08_antialiasing.ipynb"
-
-CHECKS = r"""
-import json
-# The tests drive the widget (the lesson no longer does it in front of the class).
-inspector.pattern.value = "16 standard"
-inspector.row.value, inspector.col.value = 3, 16
-print(json.dumps({
-    "area_sum": float(area.sum()),
-    "triangle_area": float(abs(tr.Triangle(tr.snap(xy)).signed_area)),
-    "sliver_1": int(sliver_1.coverage.sum()),
-    "sliver_4": int(sliver_4.coverage.sum()),
-    "shaded": [shaded_msaa, shaded_ssaa],
-    "levels": levels,
-    "twice": int((count > 1).sum()),
-    "once": int((count == 1).sum()),
-    "v_centre": [float(v_centre.min()), float(v_centre.max())],
-    "v_centroid": [float(v_centroid.min()), float(v_centroid.max())],
-    "gif": gif.stat().st_size,
-    "per_sample": frames[4].plan["multisampling"].count,
-    "covered": frames[4].plan["multisampling"].total,
-    "errors": {f"{r['kind']}{r['samples']}": r["mean_error"] for r in rows},
-    "inspected": inspector.pixel.square.axes.get_title(),
-}))
-"""
 
 
 @pytest.fixture(scope="module")
-def shown(tmp_path_factory):
-    from nbclient import NotebookClient
-
-    nb = nbformat.read(NOTEBOOK, as_version=4)
-    nb.cells.append(nbformat.v4.new_code_cell(CHECKS))
-    NotebookClient(nb, timeout=300, kernel_name="python3",
-                   resources={"metadata": {"path": str(NOTEBOOK.parent)}}).execute()  # fmt: skip
-    text = "".join(o.get("text", "") for o in nb.cells[-1].outputs)
-    return json.loads(text)
+def ns():
+    return lesson("08_antialiasing")
 
 
-def test_lesson_08_shows_what_it_says(shown):
-    assert shown["area_sum"] == pytest.approx(shown["triangle_area"], abs=1e-9)
-    assert shown["sliver_1"] == 0 < shown["sliver_4"]  # the sliver vanishes, then appears
-    msaa, ssaa = shown["shaded"]
-    assert ssaa > 2 * msaa  # supersampling shades per sample
-    assert 0.75 not in shown["levels"]["ordered grid"]
-    assert shown["levels"]["rotated grid (standard)"] == [0.0, 0.25, 0.5, 0.75, 1.0]
-    assert shown["twice"] == 0 and shown["once"] > 100  # watertight per sample
-    lo, hi = shown["v_centre"]
-    assert lo < 0 or hi > 1  # extrapolated at the centres
-    lo, hi = shown["v_centroid"]
-    assert 0 <= lo and hi <= 1  # centroid stays inside
-    assert shown["gif"] > 1000
-    assert 0 < shown["per_sample"] < shown["covered"]
-    err = shown["errors"]
+def test_lesson_08_shows_what_it_says(ns):
+    assert float(ns.area.sum()) == pytest.approx(
+        abs(tr.Triangle(tr.snap(ns.xy)).signed_area), abs=1e-9
+    )
+    assert ns.sliver_1.coverage.sum() == 0 < ns.sliver_4.coverage.sum()  # vanishes, appears
+    assert ns.shaded_ssaa > 2 * ns.shaded_msaa  # supersampling shades per sample
+    assert 0.75 not in ns.levels["ordered grid"]
+    assert ns.levels["rotated grid (standard)"] == [0.0, 0.25, 0.5, 0.75, 1.0]
+    assert (ns.count > 1).sum() == 0 and (ns.count == 1).sum() > 100  # watertight per sample
+    assert ns.v_centre.min() < 0 or ns.v_centre.max() > 1  # extrapolated at the centres
+    assert 0 <= ns.v_centroid.min() and ns.v_centroid.max() <= 1  # centroid stays inside
+    assert ns.gif.stat().st_size > 1000
+    plan = ns.frames[4].plan["multisampling"]
+    assert 0 < plan.count < plan.total
+    err = {f"{r['kind']}{r['samples']}": r["mean_error"] for r in ns.rows}
     assert err["standard16"] < err["standard4"] < err["standard1"]
-    assert "of 16 covered" in shown["inspected"]
+
+
+def test_lesson_08_inspector_reads_sixteen_samples(ns):
+    # the lesson's inspector, driven as a student would (the lesson no longer does it)
+    from teachraster.widgets import PixelInspector
+
+    inspector = PixelInspector(ns.tri, ns.W, ns.H, row=3, col=13)
+    inspector.pattern.value = "16 standard"
+    inspector.row.value, inspector.col.value = 3, 16
+    assert "of 16 covered" in inspector.pixel.square.axes.get_title()
