@@ -178,10 +178,8 @@ class DragFigure(anywidget.AnyWidget):
         self._t0 = 0.0
         # a patch applies to the picture of frame n - 1 (a view that missed it waits for
         # the next whole picture); in reference mode to the reference picture
-        self.send({"type": "frame", "seq": self._seq, "handles": moved, "n": self._frame,
-                   "place": place, "kernel_ms": kernel_ms, "timing": timing,
-                   "ref": self.ref_frame if self.reference else None, "caption": self.caption,
-                   "deflate": self.deflate and bool(place and png)}, [png])  # fmt: skip
+        self._send_frame(self._seq, moved, place, png, kernel_ms, timing,
+                         self.deflate and bool(place and png))  # fmt: skip
         if final and place is not None and self.reference:
             # the poster (a PNG: 10-15 ms to encode, 100+ kB to send) a moment later: the
             # picture reaches the page first, and a second final meanwhile is posted once
@@ -228,6 +226,14 @@ class DragFigure(anywidget.AnyWidget):
         self.send({"type": "ahead", "generation": int(generation), "ref": self.ref_frame,
                    "entries": entries}, buffers)  # fmt: skip
 
+    def _send_frame(self, seq, handles, place, data, kernel_ms, timing, deflate) -> None:
+        """The one "frame" message (a drag's picture, a final one, a new reference): the
+        page's pump reads ``n``, ``place`` and ``ref`` the same way for all of them."""
+        self.send({"type": "frame", "seq": seq, "handles": handles, "n": self._frame,
+                   "place": place, "kernel_ms": kernel_ms, "timing": timing,
+                   "ref": self.ref_frame if self.reference else None, "caption": self.caption,
+                   "deflate": deflate}, [data])  # fmt: skip
+
     def _send_reference(self) -> None:
         """The last picture becomes the reference, sent whole (a view opened later asked)."""
         self._ref = None
@@ -237,9 +243,7 @@ class DragFigure(anywidget.AnyWidget):
         with self.hold_sync():
             self.poster, self.poster_frame = png, self._frame
             self._posted = rgba
-        self.send({"type": "frame", "seq": 0, "handles": self.handles, "n": self._frame,
-                   "place": place, "kernel_ms": 0.0, "timing": None, "ref": self.ref_frame,
-                   "caption": self.caption, "deflate": False}, [png])  # fmt: skip
+        self._send_frame(0, self.handles, place, png, 0.0, None, False)
         if self.on_reference is not None:
             self.on_reference()
 
