@@ -44,6 +44,38 @@ def _texel_corners(tex, uv, wrap):  # bilinear at x = u·W (no −½)
             + at(y0 + 1, x0) * (1 - fx) * fy + at(y0 + 1, x0 + 1) * fx * fy)  # fmt: skip
 
 
+def _straight_over(src, dst):  # GL's SRC_ALPHA over: premultiplies the glass a second time
+    src, dst = np.asarray(src, float), np.asarray(dst, float)
+    return src * src[3] + dst * (1 - src[3])
+
+
+def _a_buffer_onto(depths, colours, background, order=None, step=sol.over_premultiplied):
+    result = np.asarray(background, float)
+    for k in np.argsort(-np.asarray(depths)) if order is None else order:
+        result = np.asarray(step(colours[k], result))
+    return result
+
+
+def _drawing_order(depths, colours, background):  # what the GPU's blending gives
+    return _a_buffer_onto(depths, colours, background, range(len(depths)))
+
+
+def _nearest_first(depths, colours, background):  # sorted the wrong way round
+    return _a_buffer_onto(depths, colours, background, np.argsort(depths))
+
+
+def _under(depths, colours, background):  # correct: nearest first with the under step
+    acc = np.zeros(4)
+    for k in np.argsort(depths):
+        acc = acc + (1 - acc[3]) * np.asarray(colours[k])
+    return acc + (1 - acc[3]) * np.asarray(background)
+
+
+def test_a_buffer_passes_nearest_first_with_under_too():
+    """A correct resolve that goes the other way (exercise 9's under step) passes."""
+    assert ex.capstone("glass_sorted", over=sol.over_premultiplied, a_buffer=_under).passed
+
+
 def _nearest_level(pyramid, uv, lod, wrap):  # trilinear reading the nearest level only
     return sol.bilinear(pyramid[int(np.clip(np.round(lod), 0, len(pyramid) - 1))], uv, wrap)
 
@@ -54,7 +86,7 @@ WRONG = [
      "interpolation", "your barycentric returned"),
     ("textured_floor", {"perspective_weights": lambda lam, w: lam}, "interpolation",
      "your perspective_weights(λ, w) returned"),
-    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending", "your over(src, dst)"),
+    ("glass", {"over": _straight_over}, "blending", "your over(src, dst)"),
     ("floor_trilinear", {"trilinear": lambda p, uv, lod, w: sol.bilinear(p[0], uv, w)},
      "texture filtering", "your trilinear"),
     ("cube_msaa", {"resolve": lambda c, i, b: np.nanmean(c, axis=0)}, "resolve",
@@ -66,8 +98,19 @@ WRONG = [
      "another order"),
     ("textured_floor", {"perspective_weights": lambda lam, w: lam * w / (lam @ w)},
      "interpolation", "names the mistake: you multiplied λ by w"),
-    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending",
-     "names the mistake: the source was not multiplied by its alpha"),
+    ("glass", {"over": _straight_over}, "blending",
+     "over_premultiplied exercise's check names the mistake: you multiplied the source colour "
+     "by its alpha again"),
+    # the A-buffer: each order mistake named in words, not only the numbers
+    ("glass_sorted", {"a_buffer": _drawing_order}, "sorting",
+     "the likely mistake: you composited in drawing order"),
+    ("glass_sorted", {"a_buffer": _nearest_first}, "sorting",
+     "the likely mistake: you laid each fragment over the result in order of increasing depth"),
+    ("glass_sorted", {"a_buffer": lambda d, c, b: _a_buffer_onto(d, c, np.zeros(4))},
+     "sorting", "the likely mistake: you composited the fragments onto transparent black"),
+    # a_buffer calls the student's own over: a wrong over shows first, at the blending stage
+    ("glass_sorted", {"over": _straight_over, "a_buffer": lambda d, c, b: _a_buffer_onto(
+        d, c, b, step=_straight_over)}, "blending", "you multiplied the source colour by its alpha again"),
     ("grid", {"covers": _one_winding}, "coverage", "whose vertices run counter-clockwise"),
     ("floor_bilinear", {"bilinear": _texel_corners}, "texture filtering",
      "you sampled at texel corners"),

@@ -17,7 +17,8 @@ typical mistake in it, the explanation names that mistake too (:func:`named_mist
 exercise's check, run once per function, over all its cases).
 
 When every record agrees, the difference lies after the pipeline: **texture filtering**
-(``bilinear``, ``trilinear``) or the MSAA **resolve**. The student's functions are called
+(``bilinear``, ``trilinear``), the MSAA **resolve** or the A-buffer's **sorting**
+(``a_buffer``, :mod:`.capstone_glass`). The student's functions are called
 again only through :func:`.running.run_checker` (a strange answer costs a plain sentence).
 """
 
@@ -35,6 +36,7 @@ from ..pipeline.texturing.mip_pyramid import mipmap
 from ..pipeline.texturing.texture import sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
+from . import capstone_glass as glass
 from . import output
 from .coverage import explain_pixel as explain_coverage
 from .exercise import Knobs
@@ -45,6 +47,10 @@ from .zbuffer_pixel import DEPTH_MISTAKES, as_passes, depth_cases
 #: Capstone functions whose exercise's table of mistakes can name what is wrong with them.
 CHECKED_BY = ("covers", "barycentric", "perspective_weights", "over", "bilinear", "trilinear",
               "resolve")  # fmt: skip
+
+#: The exercise whose check names a capstone function's mistakes, where it is not its own
+#: name (the capstone's glass is premultiplied).
+CHECKED_AS = {"over": "over_premultiplied"}
 
 #: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
 COVERED = ("hi_z", "failed_depth", "passed")
@@ -94,11 +100,12 @@ def named_mistake(used, name) -> str:
 def _mistake_words(name, fn) -> str:
     from .checks import check, exercise
 
-    table = _words_by_kind(exercise(name).mistakes)
+    checked = CHECKED_AS.get(name, name)
+    table = _words_by_kind(exercise(checked).mistakes)
     with output.captured(), warnings.catch_warnings():  # a second run: its warnings were shown
         warnings.simplefilter("ignore")
-        report = check(name, fn)
-    head = f"; the {name} exercise's check names the mistake: "
+        report = check(checked, fn)
+    head = f"; the {checked} exercise's check names the mistake: "
     for failure in report.failures:
         parts = [failure.kind] if failure.kind in table else failure.kind.split(" and ")
         if not all(kind in table for kind in parts):
@@ -229,6 +236,8 @@ def _blending(used, pixel, rr) -> str:
 def _shading(spec, used, reference, pixel) -> tuple[str, str]:
     """Every record agrees: the texture filter or the resolve after the pipeline differs."""
     row, col = pixel
+    if "a_buffer" in used:
+        return "sorting", glass.explain(used["a_buffer"], reference, row, col)
     if "bilinear" in used or "trilinear" in used:
         return "texture filtering", _texture(spec, used, reference, row, col)
     if "resolve" in used:

@@ -25,9 +25,10 @@ import numpy as np
 
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.scenes import get_scene
+from . import capstone_glass as glass
 from . import output
 from .capstone_explain import explain_pixel
-from .capstone_rules import FUNCTIONS, Tracker, rules
+from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
 from .report import Failure, Report
 from .running import budget as time_budget
 from .running import effective_budget, run_case
@@ -48,6 +49,7 @@ class CapstoneScene:
     compare: tuple[str, ...] = ("image",)
     glass: bool = False
     tie: bool = False
+    sort: bool = False
 
 
 SCENES = {s.name: s for s in (
@@ -60,9 +62,12 @@ SCENES = {s.name: s for s in (
     CapstoneScene("intersecting_triangles", "two triangles piercing each other and a green copy "
                   "of the red one drawn last: equal depths, ties", ("depth_passes",),
                   "intersecting_triangles", compare=("triangle_id", "depth"), tie=True),
-    CapstoneScene("glass", "the two triangles as glass: blended over, no depth writes",
-                  ("depth_passes", "over"), "intersecting_triangles", compare=("color",),
-                  glass=True),
+    CapstoneScene("glass", "the two triangles as glass: premultiplied colour blended over in "
+                  "drawing order, no depth writes", ("depth_passes", "over"),
+                  "intersecting_triangles", compare=("color",), glass=True),
+    CapstoneScene("glass_sorted", "the glass resolved per pixel from an A-buffer: every "
+                  "fragment seen through those in front of it", ("over", "a_buffer"),
+                  "intersecting_triangles", compare=("color",), glass=True, sort=True),
     CapstoneScene("floor_bilinear", "the floor's checkerboard filtered bilinearly",
                   ("bilinear",), "textured_floor", {"texture_filter": "bilinear"}),
     CapstoneScene("floor_trilinear", "the floor's checkerboard filtered trilinearly",
@@ -75,6 +80,8 @@ SCENES = {s.name: s for s in (
 )}  # fmt: skip
 
 
+#: The glass scenes' alpha (their colours are premultiplied by it).
+GLASS_ALPHA = 0.6
 #: The colour of the tie scene's copy of triangle 0 (drawn last, at exactly its depths).
 TIE_COLOR = (0.2, 0.75, 0.3)
 
@@ -91,9 +98,23 @@ def render_with(spec: CapstoneScene, overrides=None):
     if not spec.glass:
         return render(scene, None, W, H, trace=True, overrides=overrides, **spec.options)
     clip = scene.clip(W / H)
-    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.6)], axis=2)
-    return render(clip, W, H, attrs=rgba, blend="over", depth_write=False,
-                  clear_color=(1.0, 1.0, 1.0, 1.0), trace=True, overrides=overrides)  # fmt: skip
+    alpha = np.full((len(clip), 3, 1), GLASS_ALPHA)  # premultiplied: the colour times alpha
+    rgba = np.concatenate([scene.mesh.corner("color") * alpha, alpha], axis=2)
+    return render(clip, W, H, attrs=rgba, blend="premultiplied", depth_write=False,
+                  clear_color=tuple(glass.BACKGROUND), trace=True, overrides=overrides)  # fmt: skip
+
+
+def _frame(spec: CapstoneScene, functions=None, tracker=None):
+    """The frame compared: the scene rendered with ``functions`` (None: the package's rules),
+    and, for an A-buffer scene, every pixel resolved by ``a_buffer`` (or the package)."""
+    overrides = None if functions is None else rules(functions, tracker)
+    frame = render_with(spec, overrides)
+    if not spec.sort:
+        return frame
+    if functions is None:
+        return glass.resolved(frame, glass.package_resolve)
+    a_buffer = wrapped("a_buffer", functions["a_buffer"], tracker)
+    return glass.resolved(frame, a_buffer)
 
 
 def _parts(spec: CapstoneScene, frame) -> list[np.ndarray]:
@@ -134,11 +155,11 @@ def capstone(scene: str, *, budget: float = 30.0, **functions) -> CapstoneReport
         if not callable(fn):
             raise TypeError(f"{name} must be a function, got {type(fn).__name__}")
     used = {name: functions[name] for name in spec.uses}
-    reference = render_with(spec)
+    reference = _frame(spec)
     tracker = Tracker()
     seconds = effective_budget(budget)
     with time_budget(seconds), output.captured() as printed:
-        outcome = run_case(lambda: render_with(spec, rules(used, tracker)), seconds)
+        outcome = run_case(lambda: _frame(spec, used, tracker), seconds)
     report = _report(spec, used, reference, outcome, tracker)
     if printed.lines:  # kept aside during the render (a print per pixel), shown capped
         report = replace(report, printed=printed.summary())

@@ -30,7 +30,8 @@ def _weights(value) -> np.ndarray:
     return as_numbers(value, (3,), "3 weights, shape (3,)")
 
 
-#: The functions the capstone takes: the stage rule each replaces, how its answer is read.
+#: The functions the capstone takes: the stage rule each replaces (None: none, it runs after
+#: the pipeline), how its answer is read.
 FUNCTIONS = {
     "covers": ("coverage", as_bool),
     "barycentric": ("weights", _weights),
@@ -40,6 +41,7 @@ FUNCTIONS = {
     "bilinear": ("bilinear", _colour),
     "trilinear": ("trilinear", _colour),
     "resolve": ("resolve", _colour),
+    "a_buffer": (None, as_rgba),  # the A-buffer's resolve of one pixel, after the pipeline
 }
 
 
@@ -68,6 +70,8 @@ def wrapped(name: str, fn, tracker: Tracker):
 
 
 def rules(functions: dict, tracker: Tracker) -> StageOverrides:
-    """The stage overrides that plug ``functions`` (name: function) into the pipeline."""
+    """The stage overrides that plug ``functions`` (name: function) into the pipeline (those
+    that run after it, such as ``a_buffer``, are called by the capstone itself)."""
     return StageOverrides(**{FUNCTIONS[name][0]: wrapped(name, fn, tracker)
-                             for name, fn in functions.items()})  # fmt: skip
+                             for name, fn in functions.items()
+                             if FUNCTIONS[name][0] is not None})  # fmt: skip
