@@ -116,6 +116,16 @@ WRONG = [
      "you sampled at texel corners"),
     ("floor_trilinear", {"trilinear": _nearest_level}, "texture filtering", "(the nearest)"),
     # the green copy of triangle 0 ties it bit for bit: a wrong tie rule shows it, and is named
+    # no typical mistake fits: the function's own check still says what is wrong, in words
+    ("single_triangle", {"barycentric": lambda xy, p: np.abs(sol.barycentric(xy, p)) + 0.1},
+     "interpolation", "the barycentric exercise's check, on its own cases, says: at p="),
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: np.zeros(3)}, "texture filtering",
+     "your function returns (0, 0, 0) on every case"),
+    ("cube_msaa", {"resolve": lambda c, i, b: np.asarray(c)[0]}, "resolve",
+     "your answer holds NaN"),
+    ("glass_sorted", {"a_buffer": lambda d, c, b: np.ones(4)}, "sorting",
+     "your a_buffer returns (1, 1, 1, 1) whatever the fragments"),
+    ("grid", {"covers": lambda xy, p: False}, "coverage", "your function never covers anything"),
     ("intersecting_triangles", {"depth_passes": sv.WRONG["passes with <="][1]}, "depth test",
      "use <, not <="),
     ("intersecting_triangles", {"depth_passes": sv.WRONG["against the previous fragment"][1]},

@@ -45,8 +45,8 @@ from .scalars import vec
 from .zbuffer_pixel import DEPTH_MISTAKES, as_passes, depth_cases
 
 #: Capstone functions whose exercise's table of mistakes can name what is wrong with them.
-CHECKED_BY = ("covers", "barycentric", "perspective_weights", "over", "bilinear", "trilinear",
-              "resolve")  # fmt: skip
+CHECKED_BY = ("covers", "barycentric", "perspective_weights", "depth_passes", "over",
+              "bilinear", "trilinear", "resolve")  # fmt: skip
 
 #: The exercise whose check names a capstone function's mistakes, where it is not its own
 #: name (the capstone's glass is premultiplied).
@@ -114,7 +114,19 @@ def _mistake_words(name, fn) -> str:
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
         return head + failure.explanation  # words that quote the case: the case's sentence
-    return ""
+    return _unnamed(checked, report)
+
+
+def _unnamed(checked: str, report) -> str:
+    """What the exercise's check says when no typical mistake of its table fits: its first
+    explanation (the rule in words with the case's numbers, or its constant-answer or float32
+    diagnosis), or, when the function passes there, that the scene asks what the cases do not."""
+    if report.passed:
+        return (f"; your function passes the {checked} exercise's own cases, so the scene asks "
+                "it something they do not: compare its answer here with the rule")  # fmt: skip
+    if report.stopped is not None or not report.failures:
+        return ""
+    return f"; the {checked} exercise's check, on its own cases, says: {report.failures[0].explanation}"
 
 
 def _words_by_kind(mistakes) -> dict:
@@ -167,10 +179,13 @@ def _depth(used, reference, pixel) -> str:
     expected = passed_on_arrival(np.zeros(len(depths), np.int64), depths, writes)
     yours, error = _call(used, "depth_passes", depths, writes)
     said = error or f"your depth_passes returned {_bools(yours)}"
+    why = _depth_mistake(used, depths, writes, yours, expected) or (
+        "" if error else named_mistake(used, "depth_passes")
+    )
     return (f"the fragments of triangles {[r.triangle for r in records]} reach it in drawing "
             f"order with depths {vec(depths)} and depth writes {_bools(writes)}: {said}, the "
             f"package's test passes {_bools(expected)} (strictly nearer than the depth last "
-            f"written){_depth_mistake(used, depths, writes, yours, expected)}")  # fmt: skip
+            f"written){why}")  # fmt: skip
 
 
 def _depth_mistake(used, depths, writes, yours, expected) -> str:

@@ -154,9 +154,22 @@ def _mistake(fn, depths, colours, yours, ours) -> str:
     fits = [k for k, v in here.items() if np.allclose(v, yours, rtol=1e-6, atol=1e-6)]
     if len(fits) > 1:
         fits = run_checker(lambda: _fit_on_stacks(fn, fits), fits)
-    if len(fits) != 1:
-        return ""
-    return f"; the likely mistake: {MISTAKES[fits[0]]}"
+    if len(fits) == 1:
+        return f"; the likely mistake: {MISTAKES[fits[0]]}"
+    if run_checker(lambda: _constant(fn, yours), False):
+        return (f"; the likely mistake: your a_buffer returns {vec(yours)} whatever the "
+                "fragments (a placeholder such as `return background` left in, or a `return` "
+                "reached too early?)")  # fmt: skip
+    return ""
+
+
+def _constant(fn, yours) -> bool:
+    """Does ``fn`` give ``yours`` on every stack of :data:`STACKS` too?"""
+    for depths, colours in STACKS:
+        got, error = _answer(fn, np.array(depths, float), np.array(colours, float))
+        if error or not np.allclose(got, yours, rtol=1e-9, atol=1e-9):
+            return False
+    return True
 
 
 def _fit_on_stacks(fn, fits) -> list[str]:
