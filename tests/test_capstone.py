@@ -115,6 +115,12 @@ WRONG = [
     ("floor_bilinear", {"bilinear": _texel_corners}, "texture filtering",
      "you sampled at texel corners"),
     ("floor_trilinear", {"trilinear": _nearest_level}, "texture filtering", "(the nearest)"),
+    # the capstone's floor is tinted by ramps and tiled past [0, 1]: a transposed or clamping
+    # filter no longer draws the package's frame
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: sol.bilinear(t, uv[::-1], w)},
+     "texture filtering", "your bilinear(texture, uv, 'repeat') returned"),
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: sol.bilinear(t, uv, "clamp")},
+     "texture filtering", "your bilinear(texture, uv, 'repeat') returned"),
     # the green copy of triangle 0 ties it bit for bit: a wrong tie rule shows it, and is named
     # no typical mistake fits: the function's own check still says what is wrong, in words
     ("single_triangle", {"barycentric": lambda xy, p: np.abs(sol.barycentric(xy, p)) + 0.1},
@@ -144,6 +150,34 @@ def test_a_wrong_function_is_found_at_its_stage(scene, changed, stage, words):
     first = report.failures[0]
     assert first.kind == stage and words in first.explanation, str(report)
     assert report.differing_pixels().shape == (report.n_wrong, 2)
+
+
+def _float32(fn):  # the student's function computing in float32 (imread's type)
+    def in_float32(*args):
+        args = [np.asarray(a, np.float32) if isinstance(a, np.ndarray) and a.dtype.kind == "f"
+                else a for a in args]  # fmt: skip
+        return np.asarray(fn(*args), dtype=np.float32)
+
+    return in_float32
+
+
+FLOAT32 = [
+    ("single_triangle", "barycentric"),
+    ("textured_floor", "perspective_weights"),
+    ("floor_bilinear", "bilinear"),
+    ("cube_msaa", "resolve"),
+    ("glass", "over"),
+    ("glass_sorted", "a_buffer"),
+]
+
+
+@pytest.mark.parametrize("scene, name", FLOAT32)
+def test_a_float32_function_passes_and_is_named(scene, name):
+    """float32 within its rounding is right in the capstone too (not failed, and said)."""
+    report = ex.capstone(scene, **_mine(scene, **{name: _float32(sol.CAPSTONE[name])}))
+    assert report.passed, str(report)
+    assert f"your {name} answers are float32" in str(report), str(report)
+    assert "float32" not in str(ex.capstone(scene, **_mine(scene)))
 
 
 def test_unfinished_raising_and_wrong_types_name_the_function():

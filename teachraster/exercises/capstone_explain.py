@@ -38,6 +38,7 @@ from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
 from . import capstone_glass as glass
 from . import output
+from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
 from .exercise import Knobs
 from .running import WrongAnswerType, last_line, run_checker
@@ -51,6 +52,9 @@ CHECKED_BY = ("covers", "barycentric", "perspective_weights", "depth_passes", "o
 #: The exercise whose check names a capstone function's mistakes, where it is not its own
 #: name (the capstone's glass is premultiplied).
 CHECKED_AS = {"over": "over_premultiplied"}
+
+#: The capstone's tolerance (float32's rounding passes), as :mod:`.capstone_render` compares.
+TOL = 1e-6
 
 #: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
 COVERED = ("hi_z", "failed_depth", "passed")
@@ -77,9 +81,9 @@ def _record_difference(used, reference, pixel, rm, rr):
         return "coverage", _coverage(used, reference, pixel, rr, covered_r)
     if (rm.outcome == "passed") != (rr.outcome == "passed"):
         return "depth test", _depth(used, reference, pixel)
-    if rm.value and rr.value and not np.allclose(rm.value, rr.value, rtol=1e-9, atol=1e-9):
+    if rm.value and rr.value and not np.allclose(rm.value, rr.value, rtol=TOL, atol=TOL):
         return "interpolation", _interpolation(used, reference, pixel, rr)
-    if rm.color_after and not np.allclose(rm.color_after, rr.color_after, rtol=1e-9, atol=1e-9):
+    if rm.color_after and not np.allclose(rm.color_after, rr.color_after, rtol=TOL, atol=TOL):
         return "blending", _blending(used, pixel, rr)
     return None
 
@@ -228,7 +232,7 @@ def _interpolation(used, reference, pixel, rr) -> str:
     head = f"triangle {rr.triangle} at {vec(p)}, vertices {_points(xy)}"
     if "barycentric" in used:
         yours, error = _call(used, "barycentric", xy, p)
-        if error or yours is None or not np.allclose(yours, ours, rtol=1e-9, atol=1e-9):
+        if error or yours is None or not np.allclose(yours, ours, rtol=TOL, atol=TOL):
             said = error or f"your barycentric returned {vec(yours, ours)}"
             return (f"{head}: {said}; the package's weights are {vec(ours, yours)}"
                     f"{named_mistake(used, 'barycentric')}")  # fmt: skip
@@ -261,9 +265,7 @@ def _shading(spec, used, reference, pixel) -> tuple[str, str]:
 
 
 def _texture(spec, used, reference, row, col) -> str:
-    from ..pipeline.rendering.scenes import get_scene
-
-    tex = get_scene(spec.scene).texture
+    tex = capstone_scene(spec.scene, spec.tiled).texture
     uv = reference.attr("uv")[row, col]
     head = f"every record of its history agrees; at uv = {vec(uv)}"
     if "bilinear" in used:

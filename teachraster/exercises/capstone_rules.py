@@ -19,6 +19,7 @@ from .answers import as_bool, as_numbers
 from .front_to_back import as_rgba
 from .perspective_weighting import as_weights
 from .running import WrongAnswerType
+from .value_checks import float_type
 from .zbuffer_pixel import as_passes
 
 
@@ -50,6 +51,8 @@ class Tracker:
     """Which of the student's functions ran last (the one to blame when something fails)."""
 
     name: str = ""
+    #: (function, "are float32") when some answer of a function was float32 (or float16).
+    precision: tuple[str, str] | None = None
 
 
 def wrapped(name: str, fn, tracker: Tracker):
@@ -58,7 +61,10 @@ def wrapped(name: str, fn, tracker: Tracker):
 
     def rule(*args):
         tracker.name = name
-        value = convert(fn(*args))
+        raw = fn(*args)
+        if tracker.precision is None and (low := float_type(raw)) is not None:
+            tracker.precision = (name, f"are {low}")
+        value = convert(raw)
         if name == "depth_passes" and len(value) != len(args[0]):
             raise WrongAnswerType(
                 f"returned {len(value)} value(s) for {len(args[0])} fragment(s): one "
