@@ -1241,3 +1241,26 @@ WRONG.update({
         "your function returned pixel (100, 100), outside",
     ),  # fmt: skip
 })  # fmt: skip
+
+KINDS.update(
+    {
+        "near with one bit fewer": "bits - 1",
+        "near with z not squared": "z not squared",
+        "near with z and gap swapped": "z and gap swapped",
+        "quad negated": "negated",
+        "quad at (col, row)": "row col swapped",
+        "quad centred difference": "centred",
+        "Hi-Z by the farthest vertex": "farthest vertex",
+        "Hi-Z against the tile's mean": "tile mean",
+        "Hi-Z with row and column swapped": "row col swapped",
+        "layers, the farthest alone": "farthest only",
+        "layers weighed by their own alpha": "own alpha",
+        "robust fill returns zeros": "nothing covered",
+        "robust fill with origin as (x, y)": "origin swapped",
+        "robust fill ignoring origin": "origin ignored",
+        "robust fill at pixel corners": "pixel corners",
+        "frame 5 pixel given as (x, y)": "pixel (col, row)",
+        "frame 1 cause misspelt": "type",
+        "frame 1 pixel off the frame": "type",
+    }
+)
