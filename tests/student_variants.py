@@ -1242,8 +1242,14 @@ WRONG.update({
     ),  # fmt: skip
 })  # fmt: skip
 
+WRONG["passes when farther"] = (
+    "depth_passes",
+    lambda d, w: _passes_with()(-np.asarray(d, dtype=float), w),
+    "(>, not <)",
+)
 KINDS.update(
     {
+        "passes when farther": "farther passes",
         "near with one bit fewer": "bits - 1",
         "near with z not squared": "z not squared",
         "near with z and gap swapped": "z and gap swapped",
