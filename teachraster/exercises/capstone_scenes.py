@@ -11,7 +11,6 @@ and the wrap mode shows).
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import cache
 
 import numpy as np
 
@@ -22,9 +21,9 @@ from ..pipeline.rendering.scenes import Scene, get_scene
 UV_SCALE, UV_SHIFT = 1.5, -0.25
 
 
-@cache
 def capstone_scene(name: str, tiled: bool = False) -> Scene:
-    """Built-in scene ``name``; ``tiled``: its texture tinted by ramps and its (u, v) widened."""
+    """Built-in scene ``name``, built afresh (a student's function may write into what it is
+    given); ``tiled``: its texture tinted by ramps and its (u, v) widened."""
     scene = get_scene(name)
     if not tiled:
         return scene
