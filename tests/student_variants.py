@@ -1032,3 +1032,241 @@ def _package():
 
 #: The package's own function handed in: exercise -> function (must not count).
 PACKAGE = _package()
+
+
+# == the adversarial run of 2026-12-02 (reviews/exercises-adversarial-r3.md): 05–12 ===============
+# Each wrong variant is one class of slip (float32 within rounding, swapped arguments, off by
+# one, a wrong sign, a constant answer, another rule on ties); each must be named first.
+import reasoning_solutions as _rs  # noqa: E402
+from exercise_solutions import coverage_fraction as _coverage  # noqa: E402
+from lines_blending_solutions import line_pixels as _line  # noqa: E402
+from lines_blending_solutions import over as _over  # noqa: E402
+from lines_blending_solutions import over_premultiplied as _over_pm  # noqa: E402
+
+
+def near_float32(z, gap, far, bits):
+    z, gap, far = np.float32(z), np.float32(gap), np.float32(far)
+    step = np.float32(1) / np.float32(2**bits - 1)
+    return step * far * z**2 / (gap * far + step * z**2)
+
+
+def quad_float32(xy, w, f, row, col):
+    args = (np.asarray(a, np.float32) for a in (xy, w, f))
+    return np.asarray(_rs.quad_derivatives(*args, row, col), dtype=np.float32)
+
+
+def layers_float32(layers):
+    acc = np.zeros(4, dtype=np.float32)
+    for c in np.asarray(layers, dtype=np.float32).reshape(-1, 4):
+        acc = acc + (np.float32(1) - acc[3]) * c
+    return acc
+
+
+def layers_vectorised(layers):
+    c = np.asarray(layers, dtype=float).reshape(-1, 4)
+    seen = np.concatenate([[1.0], np.cumprod(1 - c[:, 3])[:-1]])  # transmittance in front
+    return (seen[:, None] * c).sum(axis=0) if len(c) else np.zeros(4)
+
+
+def _quad_lane(xy, w, f, x, y):
+    lam = np.array([edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], (x, y)) for k in range(3)])
+    q = lam / edge_function(*xy) / w
+    return float(q @ f / q.sum())
+
+
+def quad_centred(xy, w, f, row, col):
+    xy, w, f = (np.asarray(a, dtype=float) for a in (xy, w, f))
+    x, y = col + 0.5, row + 0.5
+    at = lambda x, y: _quad_lane(xy, w, f, x, y)  # noqa: E731
+    return (at(x + 1, y) - at(x - 1, y)) / 2, (at(x, y + 1) - at(x, y - 1)) / 2
+
+
+def trilinear_level(pick):
+    def fn(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q)
+        return bilinear(pyramid[pick(lam, q)], uv, wrap)
+
+    return fn
+
+
+def line_start_dark(p0, p1):
+    return [p for p in _line(p0, p1) if p != (math.floor(p0[1]), math.floor(p0[0]))]
+
+
+#: Correct but different (vectorised, float32 within its rounding, another formula): must pass.
+DIFFERENT.update({
+    "safe near in float32": ("safe_near", near_float32),
+    "quad derivatives in float32": ("quad_derivatives", quad_float32),
+    "front to back in float32": ("front_to_back", layers_float32),
+    "front to back, vectorised transmittance": ("front_to_back", layers_vectorised),
+    "line pixels as a set": ("line_pixels", lambda p0, p1: set(_line(p0, p1))),
+    "Hi-Z as np.bool_": ("hiz_rejects", lambda *a: np.bool_(_rs.hiz_rejects(*a))),
+    "robust fill as 0/1 ints": ("robust_fill", lambda *a: _rs.robust_fill(*a).astype(int)),
+    "over in float32": (
+        "over",
+        lambda s, d: np.asarray(_over(np.float32(s), np.float32(d)), dtype=np.float32),
+    ),  # fmt: skip
+})  # fmt: skip
+
+#: Passing float32 answers: the report names float32 (not failed, not silent).
+FLOAT32 = {label: DIFFERENT[label] for label in (
+    "safe near in float32", "quad derivatives in float32", "front to back in float32",
+    "float32 resolve", "float32 bilinear", "float32 trilinear", "over in float32",
+)}  # fmt: skip
+
+WRONG.update({
+    # safe_near: off by one bit, a missing square, swapped arguments
+    "near with one bit fewer": (
+        "safe_near",
+        lambda z, gap, far, bits: _rs.safe_near(z, gap, far, bits - 1),
+        "one bit fewer",
+    ),  # fmt: skip
+    "near with z not squared": (
+        "safe_near",
+        lambda z, gap, far, bits: far * z / ((2**bits - 1) * gap * far + z),
+        "not like z",
+    ),  # fmt: skip
+    "near with z and gap swapped": (
+        "safe_near",
+        lambda z, gap, far, bits: _rs.safe_near(gap, z, far, bits),
+        "swapped z and gap",
+    ),  # fmt: skip
+    # coverage_fraction, resolve, mip_level: swapped offsets, the background alone, off by one
+    "coverage with offsets (oy, ox)": (
+        "coverage_fraction",
+        lambda xy, pixel, samples: _coverage(xy, pixel, [(oy, ox) for ox, oy in samples]),
+        "x first",
+    ),  # fmt: skip
+    "resolve returns the background": ("resolve", lambda c, i, b: b, "the background alone"),
+    "λ one too many": ("mip_level", lambda *a: CORRECT["mip_level"](*a) + 1, "one more than"),
+    # trilinear: one level whatever λ
+    "trilinear, level 0 only": ("trilinear", trilinear_level(lambda lam, q: 0), "level 0 alone"),
+    "trilinear, upper level only": (
+        "trilinear",
+        trilinear_level(lambda lam, q: min(math.floor(lam) + 1, q)),
+        "alone; trilinear blends it with level",
+    ),  # fmt: skip
+    # quad_derivatives: wrong sign, (col, row), a centred difference
+    "quad negated": (
+        "quad_derivatives",
+        lambda *a: tuple(-v for v in _rs.quad_derivatives(*a)),
+        "wrong sign: ddx is the right lane",
+    ),  # fmt: skip
+    "quad at (col, row)": (
+        "quad_derivatives",
+        lambda xy, w, f, row, col: _rs.quad_derivatives(xy, w, f, col, row),
+        "(col, row)",
+    ),  # fmt: skip
+    "quad centred difference": ("quad_derivatives", quad_centred, "centred difference"),
+    # classify_block: a swapped block origin was blamed on "corners outside" before
+    "blocks with x0 and y0 swapped": (
+        "classify_block",
+        lambda xy, x0, y0, size: CORRECT["classify_block"](xy, y0, x0, size),
+        "swapped x0 and y0",
+    ),  # fmt: skip
+    # hiz_rejects: the farthest vertex, the tile's mean, row and column swapped
+    "Hi-Z by the farthest vertex": (
+        "hiz_rejects",
+        lambda xyz, r0, c0, s, buffer: bool(max(p[2] for p in xyz) >= np.max(buffer)),
+        "farthest vertex",
+    ),  # fmt: skip
+    "Hi-Z against the tile's mean": (
+        "hiz_rejects",
+        _hiz_with(lambda near, buffer: near >= np.mean(buffer)),
+        "mean depth",
+    ),  # fmt: skip
+    "Hi-Z with row and column swapped": (
+        "hiz_rejects",
+        lambda xyz, r0, c0, s, buffer: _rs.hiz_rejects(xyz, c0, r0, s, buffer),
+        "swapped the tile's row and column",
+    ),  # fmt: skip
+    # line_pixels: the segment reversed, the start pixel left dark
+    "line drawn from p1 to p0": ("line_pixels", lambda p0, p1: _line(p1, p0), "from p1 to p0"),
+    "line without its start pixel": ("line_pixels", line_start_dark, "p0 lies in dark"),
+    # front_to_back: the farthest layer alone, each layer's own alpha
+    "layers, the farthest alone": (
+        "front_to_back",
+        lambda layers: np.asarray(layers, float).reshape(-1, 4)[-1]
+        if len(layers) else np.zeros(4),
+        "farthest layer",
+    ),  # fmt: skip
+    "layers weighed by their own alpha": (
+        "front_to_back",
+        _under_with(lambda acc, c: acc + (1 - c[3]) * c),
+        "1 − its own alpha",
+    ),  # fmt: skip
+    # robust_fill: a constant image, origin read as (x, y), ignored, centres at corners
+    "robust fill returns zeros": (
+        "robust_fill",
+        lambda xy, w, h, origin=(0, 0): np.zeros((h, w), dtype=bool),
+        "never covers anything",
+    ),  # fmt: skip
+    "robust fill with origin as (x, y)": (
+        "robust_fill",
+        lambda xy, w, h, origin=(0, 0): _rs.robust_fill(xy, w, h, origin[::-1]),
+        "you read origin as (x, y)",
+    ),  # fmt: skip
+    "robust fill ignoring origin": (
+        "robust_fill",
+        lambda xy, w, h, origin=(0, 0): _rs.robust_fill(xy, w, h),
+        "you ignored origin",
+    ),  # fmt: skip
+    "robust fill at pixel corners": (
+        "robust_fill",
+        lambda xy, w, h, origin=(0, 0): _rs.robust_fill(np.asarray(xy) + 0.5, w, h, origin),
+        "pixel corners",
+    ),  # fmt: skip
+    # over and over_premultiplied: src and dst swapped
+    "over with src and dst swapped": ("over", lambda s, d: _over(d, s), "dst over src"),
+    "premultiplied with src and dst swapped": (
+        "over_premultiplied",
+        lambda s, d: _over_pm(d, s),
+        "dst over src",
+    ),  # fmt: skip
+    # broken frames: (x, y) for (row, col), a misspelt cause, a pixel off the frame
+    "frame 5 pixel given as (x, y)": (
+        "broken_frame_5",
+        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1]),
+        "did you give (x, y)?",
+    ),  # fmt: skip
+    "frame 1 cause misspelt": (
+        "broken_frame_1",
+        lambda: ("depth functio", _rs.BROKEN_FRAMES[1][1]),
+        "your function returned the cause 'depth functio', which is not one of the causes",
+    ),  # fmt: skip
+    "frame 1 pixel off the frame": (
+        "broken_frame_1",
+        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100)),
+        "your function returned pixel (100, 100), outside",
+    ),  # fmt: skip
+})  # fmt: skip
+
+WRONG["passes when farther"] = (
+    "depth_passes",
+    lambda d, w: _passes_with()(-np.asarray(d, dtype=float), w),
+    "(>, not <)",
+)
+KINDS.update(
+    {
+        "passes when farther": "farther passes",
+        "near with one bit fewer": "bits - 1",
+        "near with z not squared": "z not squared",
+        "near with z and gap swapped": "z and gap swapped",
+        "quad negated": "negated",
+        "quad at (col, row)": "row col swapped",
+        "quad centred difference": "centred",
+        "Hi-Z by the farthest vertex": "farthest vertex",
+        "Hi-Z against the tile's mean": "tile mean",
+        "Hi-Z with row and column swapped": "row col swapped",
+        "layers, the farthest alone": "farthest only",
+        "layers weighed by their own alpha": "own alpha",
+        "robust fill returns zeros": "nothing covered",
+        "robust fill with origin as (x, y)": "origin swapped",
+        "robust fill ignoring origin": "origin ignored",
+        "robust fill at pixel corners": "pixel corners",
+        "frame 5 pixel given as (x, y)": "pixel (col, row)",
+        "frame 1 cause misspelt": "type",
+        "frame 1 pixel off the frame": "type",
+    }
+)

@@ -44,6 +44,38 @@ def _texel_corners(tex, uv, wrap):  # bilinear at x = u·W (no −½)
             + at(y0 + 1, x0) * (1 - fx) * fy + at(y0 + 1, x0 + 1) * fx * fy)  # fmt: skip
 
 
+def _straight_over(src, dst):  # GL's SRC_ALPHA over: premultiplies the glass a second time
+    src, dst = np.asarray(src, float), np.asarray(dst, float)
+    return src * src[3] + dst * (1 - src[3])
+
+
+def _a_buffer_onto(depths, colours, background, order=None, step=sol.over_premultiplied):
+    result = np.asarray(background, float)
+    for k in np.argsort(-np.asarray(depths)) if order is None else order:
+        result = np.asarray(step(colours[k], result))
+    return result
+
+
+def _drawing_order(depths, colours, background):  # what the GPU's blending gives
+    return _a_buffer_onto(depths, colours, background, range(len(depths)))
+
+
+def _nearest_first(depths, colours, background):  # sorted the wrong way round
+    return _a_buffer_onto(depths, colours, background, np.argsort(depths))
+
+
+def _under(depths, colours, background):  # correct: nearest first with the under step
+    acc = np.zeros(4)
+    for k in np.argsort(depths):
+        acc = acc + (1 - acc[3]) * np.asarray(colours[k])
+    return acc + (1 - acc[3]) * np.asarray(background)
+
+
+def test_a_buffer_passes_nearest_first_with_under_too():
+    """A correct resolve that goes the other way (exercise 9's under step) passes."""
+    assert ex.capstone("glass_sorted", over=sol.over_premultiplied, a_buffer=_under).passed
+
+
 def _nearest_level(pyramid, uv, lod, wrap):  # trilinear reading the nearest level only
     return sol.bilinear(pyramid[int(np.clip(np.round(lod), 0, len(pyramid) - 1))], uv, wrap)
 
@@ -54,7 +86,7 @@ WRONG = [
      "interpolation", "your barycentric returned"),
     ("textured_floor", {"perspective_weights": lambda lam, w: lam}, "interpolation",
      "your perspective_weights(λ, w) returned"),
-    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending", "your over(src, dst)"),
+    ("glass", {"over": _straight_over}, "blending", "your over(src, dst)"),
     ("floor_trilinear", {"trilinear": lambda p, uv, lod, w: sol.bilinear(p[0], uv, w)},
      "texture filtering", "your trilinear"),
     ("cube_msaa", {"resolve": lambda c, i, b: np.nanmean(c, axis=0)}, "resolve",
@@ -66,13 +98,40 @@ WRONG = [
      "another order"),
     ("textured_floor", {"perspective_weights": lambda lam, w: lam * w / (lam @ w)},
      "interpolation", "names the mistake: you multiplied λ by w"),
-    ("glass", {"over": lambda s, d: s + d * (1 - s[3])}, "blending",
-     "names the mistake: the source was not multiplied by its alpha"),
+    ("glass", {"over": _straight_over}, "blending",
+     "over_premultiplied exercise's check names the mistake: you multiplied the source colour "
+     "by its alpha again"),
+    # the A-buffer: each order mistake named in words, not only the numbers
+    ("glass_sorted", {"a_buffer": _drawing_order}, "sorting",
+     "the likely mistake: you composited in drawing order"),
+    ("glass_sorted", {"a_buffer": _nearest_first}, "sorting",
+     "the likely mistake: you laid each fragment over the result in order of increasing depth"),
+    ("glass_sorted", {"a_buffer": lambda d, c, b: _a_buffer_onto(d, c, np.zeros(4))},
+     "sorting", "the likely mistake: you composited the fragments onto transparent black"),
+    # a_buffer calls the student's own over: a wrong over shows first, at the blending stage
+    ("glass_sorted", {"over": _straight_over, "a_buffer": lambda d, c, b: _a_buffer_onto(
+        d, c, b, step=_straight_over)}, "blending", "you multiplied the source colour by its alpha again"),
     ("grid", {"covers": _one_winding}, "coverage", "whose vertices run counter-clockwise"),
     ("floor_bilinear", {"bilinear": _texel_corners}, "texture filtering",
      "you sampled at texel corners"),
     ("floor_trilinear", {"trilinear": _nearest_level}, "texture filtering", "(the nearest)"),
+    # the capstone's floor is tinted by ramps and tiled past [0, 1]: a transposed or clamping
+    # filter no longer draws the package's frame
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: sol.bilinear(t, uv[::-1], w)},
+     "texture filtering", "your bilinear(texture, uv, 'repeat') returned"),
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: sol.bilinear(t, uv, "clamp")},
+     "texture filtering", "your bilinear(texture, uv, 'repeat') returned"),
     # the green copy of triangle 0 ties it bit for bit: a wrong tie rule shows it, and is named
+    # no typical mistake fits: the function's own check still says what is wrong, in words
+    ("single_triangle", {"barycentric": lambda xy, p: np.abs(sol.barycentric(xy, p)) + 0.1},
+     "interpolation", "the barycentric exercise's check, on its own cases, says: at p="),
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: np.zeros(3)}, "texture filtering",
+     "your function returns (0, 0, 0) on every case"),
+    ("cube_msaa", {"resolve": lambda c, i, b: np.asarray(c)[0]}, "resolve",
+     "your answer holds NaN"),
+    ("glass_sorted", {"a_buffer": lambda d, c, b: np.ones(4)}, "sorting",
+     "your a_buffer returns (1, 1, 1, 1) whatever the fragments"),
+    ("grid", {"covers": lambda xy, p: False}, "coverage", "your function never covers anything"),
     ("intersecting_triangles", {"depth_passes": sv.WRONG["passes with <="][1]}, "depth test",
      "use <, not <="),
     ("intersecting_triangles", {"depth_passes": sv.WRONG["against the previous fragment"][1]},
@@ -91,6 +150,34 @@ def test_a_wrong_function_is_found_at_its_stage(scene, changed, stage, words):
     first = report.failures[0]
     assert first.kind == stage and words in first.explanation, str(report)
     assert report.differing_pixels().shape == (report.n_wrong, 2)
+
+
+def _float32(fn):  # the student's function computing in float32 (imread's type)
+    def in_float32(*args):
+        args = [np.asarray(a, np.float32) if isinstance(a, np.ndarray) and a.dtype.kind == "f"
+                else a for a in args]  # fmt: skip
+        return np.asarray(fn(*args), dtype=np.float32)
+
+    return in_float32
+
+
+FLOAT32 = [
+    ("single_triangle", "barycentric"),
+    ("textured_floor", "perspective_weights"),
+    ("floor_bilinear", "bilinear"),
+    ("cube_msaa", "resolve"),
+    ("glass", "over"),
+    ("glass_sorted", "a_buffer"),
+]
+
+
+@pytest.mark.parametrize("scene, name", FLOAT32)
+def test_a_float32_function_passes_and_is_named(scene, name):
+    """float32 within its rounding is right in the capstone too (not failed, and said)."""
+    report = ex.capstone(scene, **_mine(scene, **{name: _float32(sol.CAPSTONE[name])}))
+    assert report.passed, str(report)
+    assert f"your {name} answers are float32" in str(report), str(report)
+    assert "float32" not in str(ex.capstone(scene, **_mine(scene)))
 
 
 def test_unfinished_raising_and_wrong_types_name_the_function():

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from conftest import sample
-from student_variants import DIFFERENT, KINDS, PACKAGE, TWO_MISTAKES, WRONG
+from student_variants import DIFFERENT, FLOAT32, KINDS, PACKAGE, TWO_MISTAKES, WRONG
 
 from teachraster import exercises as ex
 
@@ -23,6 +23,22 @@ def test_a_correct_but_different_solution_passes(label):
     name, fn = DIFFERENT[label]
     report = ex.check(name, fn, budget=BUDGET)
     assert report.passed, str(report)
+
+
+@pytest.mark.parametrize("label", sample(FLOAT32))
+def test_a_float32_answer_within_its_rounding_passes_and_is_named(label):
+    """float32 (imread's type, or np.float32 arithmetic) is right within its rounding: the
+    check passes and says float32, never fails it nor stays silent."""
+    name, fn = FLOAT32[label]
+    report = ex.check(name, fn, budget=BUDGET)
+    assert report.passed, str(report)
+    assert "float32" in str(report) and "pass" in str(report), str(report)
+
+
+def test_a_float64_answer_is_not_called_float32():
+    from exercise_solutions import CORRECT
+
+    assert "float32" not in str(ex.check("resolve", CORRECT["resolve"], budget=BUDGET))
 
 
 @pytest.mark.parametrize("label", sample(WRONG))

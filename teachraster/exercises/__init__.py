@@ -18,7 +18,8 @@ How it is built (one engine for every exercise):
 - :mod:`.value_checks` runs the cases, compares, and builds the :class:`Report`;
   :mod:`.diagnosis` names the mistake behind the failures: a constant answer first, then a
   mistake that gives every answer, then one that gives this answer; float32 only within its
-  rounding. Every failure has a kind, and the summary shows one failure of each kind first.
+  rounding (an answer within float32's rounding passes, and the report says float32). Every
+  failure has a kind, and the summary shows one failure of each kind first.
 - :mod:`.running`, :mod:`.alarm` and :mod:`.interrupt` bound the time: ``check(name, fn,
   budget=10.0)`` gives the student's code 10 s of CPU (a lecturer raises it for a class with
   ``TEACHRASTER_CHECK_BUDGET``), a case a fifth of it, and stop an endless loop whatever it

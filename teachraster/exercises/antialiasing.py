@@ -157,6 +157,7 @@ POINTS = {
     "minus a half": lambda pixel, samples: sample_points(pixel, samples) - 0.5,
     "y up": lambda pixel, samples: np.asarray(samples, float) * [1, -1] + [pixel[1], pixel[0] + 1],
     "(row, col)": lambda pixel, samples: np.asarray(samples, float) + [pixel[0], pixel[1]],
+    "(oy, ox)": lambda pixel, samples: np.asarray(samples, float)[:, ::-1] + [pixel[1], pixel[0]],
 }
 SNAPPING = {
     "even": snap,
@@ -226,6 +227,8 @@ COVERAGE_KNOBS = Knobs(fraction_with, {
              "from the top-left corner, do not subtract ½", "minus a half"),
         Slip("offsets y up", "the offsets are y down (like window coordinates): y = row + oy, "
              "not row + 1 − oy", "y up"),
+        Slip("offsets (oy, ox)", "each offset is (ox, oy), x first: sample s lies at "
+             "(col + ox, row + oy); you added them the other way round", "(oy, ox)"),
         Slip("(row, col) order", "pixel is (row, col): a sample lies at x = col + ox, "
              "y = row + oy", "(row, col)"),
     ],
@@ -408,6 +411,8 @@ RESOLVE_MISTAKES = [
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
     Mistake("first sample", _resolve_words("that is sample 0 alone"),
             gives=lambda c, i, b: _with_background(c, i, b)[0]),
+    Mistake("background only", _resolve_words("that is the background alone: the covered "
+            "samples' colours count too"), gives=lambda c, i, b: np.asarray(b, dtype=float)),
 ]  # fmt: skip
 
 

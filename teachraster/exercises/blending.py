@@ -104,7 +104,11 @@ PREMULTIPLIED = [
 
 def _mistakes(mode: str) -> list[Mistake]:
     table = (OVER if mode == "over" else PREMULTIPLIED) + COMMON
-    return [Mistake(kind, words, gives=gives) for kind, words, gives in table]
+    factors = BLEND_MODES[mode]
+    swapped = ("arguments swapped", "you blended dst over src: the first argument, src, is "
+               "the incoming fragment, the second, dst, what the buffer holds",
+               lambda s, d: blend_equation(d, s, *factors))  # fmt: skip
+    return [Mistake(kind, words, gives=gives) for kind, words, gives in table + [swapped]]
 
 
 def _exercise(name: str, mode: str) -> Exercise:

@@ -181,16 +181,20 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int]]:
             f'returned {short(value)}: return a pair such as ("depth test off", (12, 30))'
         ) from None
     if not isinstance(cause, str):
-        raise WrongAnswerType(f"the cause {short(cause)} is not a text: one of {list(CAUSES)}")
+        raise WrongAnswerType(f"returned the cause {short(cause)}, not a text: one of "
+                              f"{list(CAUSES)}")  # fmt: skip
     key = " ".join(cause.lower().replace("_", " ").split())
     if key not in CAUSES:
-        raise WrongAnswerType(f"{cause!r} is not one of the causes: {', '.join(CAUSES)}")
+        raise WrongAnswerType(f"returned the cause {cause!r}, which is not one of the causes "
+                              f"(spell it as listed): {', '.join(CAUSES)}")  # fmt: skip
     try:
         row, col = int(row), int(col)
     except (TypeError, ValueError):
-        raise WrongAnswerType(f"the pixel {short(pixel)} is not a pair of integers") from None
+        raise WrongAnswerType(f"returned the pixel {short(pixel)}, not a pair of integers "
+                              "(row, col)") from None  # fmt: skip
     if not (0 <= row < H and 0 <= col < W):
-        raise WrongAnswerType(f"pixel ({row}, {col}) is outside the {H} × {W} frame")
+        raise WrongAnswerType(f"returned pixel ({row}, {col}), outside the {H} × {W} frame "
+                              f"(rows 0–{H - 1}, columns 0–{W - 1})")  # fmt: skip
     return key, (row, col)
 
 
@@ -206,6 +210,12 @@ def _same(got, expected, args=None) -> bool:
     if part == "cause":
         return cause == b.cause
     return bool(b.differs()[row, col])
+
+
+def _changed(number: int, row: int, col: int) -> bool:
+    """Did the mistake of frame ``number`` change pixel (row, col) (False outside it)?"""
+    d = broken_frame(number).differs()
+    return bool(0 <= row < d.shape[0] and 0 <= col < d.shape[1] and d[row, col])
 
 
 def _explain(args, expected, got) -> str:
@@ -229,6 +239,9 @@ def _cause_words(args, expected, got) -> str:
 #: pixel (one the mistake did not change).
 DIAGNOSIS_MISTAKES = (
     Mistake("cause", _cause_words, fits=lambda a, e, g: e[0] == "cause"),
+    Mistake("pixel (col, row)", "a pixel is (row, col), the row first, and (col, row) = "
+            "(x, y) is one the mistake changed: did you give (x, y)?", fits=lambda a, e, g:
+            e[0] == "pixel" and _changed(e[1], g[1][1], g[1][0])),
     Mistake("pixel", "choose a pixel the mistake changed (compare the two pictures), then "
             "read its history", fits=lambda a, e, g: e[0] == "pixel"),
 )  # fmt: skip

@@ -17,7 +17,8 @@ typical mistake in it, the explanation names that mistake too (:func:`named_mist
 exercise's check, run once per function, over all its cases).
 
 When every record agrees, the difference lies after the pipeline: **texture filtering**
-(``bilinear``, ``trilinear``) or the MSAA **resolve**. The student's functions are called
+(``bilinear``, ``trilinear``), the MSAA **resolve** or the A-buffer's **sorting**
+(``a_buffer``, :mod:`.capstone_glass`). The student's functions are called
 again only through :func:`.running.run_checker` (a strange answer costs a plain sentence).
 """
 
@@ -35,7 +36,9 @@ from ..pipeline.texturing.mip_pyramid import mipmap
 from ..pipeline.texturing.texture import sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
+from . import capstone_glass as glass
 from . import output
+from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
 from .exercise import Knobs
 from .running import WrongAnswerType, last_line, run_checker
@@ -43,8 +46,15 @@ from .scalars import vec
 from .zbuffer_pixel import DEPTH_MISTAKES, as_passes, depth_cases
 
 #: Capstone functions whose exercise's table of mistakes can name what is wrong with them.
-CHECKED_BY = ("covers", "barycentric", "perspective_weights", "over", "bilinear", "trilinear",
-              "resolve")  # fmt: skip
+CHECKED_BY = ("covers", "barycentric", "perspective_weights", "depth_passes", "over",
+              "bilinear", "trilinear", "resolve")  # fmt: skip
+
+#: The exercise whose check names a capstone function's mistakes, where it is not its own
+#: name (the capstone's glass is premultiplied).
+CHECKED_AS = {"over": "over_premultiplied"}
+
+#: The capstone's tolerance (float32's rounding passes), as :mod:`.capstone_render` compares.
+TOL = 1e-6
 
 #: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
 COVERED = ("hi_z", "failed_depth", "passed")
@@ -71,9 +81,9 @@ def _record_difference(used, reference, pixel, rm, rr):
         return "coverage", _coverage(used, reference, pixel, rr, covered_r)
     if (rm.outcome == "passed") != (rr.outcome == "passed"):
         return "depth test", _depth(used, reference, pixel)
-    if rm.value and rr.value and not np.allclose(rm.value, rr.value, rtol=1e-9, atol=1e-9):
+    if rm.value and rr.value and not np.allclose(rm.value, rr.value, rtol=TOL, atol=TOL):
         return "interpolation", _interpolation(used, reference, pixel, rr)
-    if rm.color_after and not np.allclose(rm.color_after, rr.color_after, rtol=1e-9, atol=1e-9):
+    if rm.color_after and not np.allclose(rm.color_after, rr.color_after, rtol=TOL, atol=TOL):
         return "blending", _blending(used, pixel, rr)
     return None
 
@@ -94,11 +104,12 @@ def named_mistake(used, name) -> str:
 def _mistake_words(name, fn) -> str:
     from .checks import check, exercise
 
-    table = _words_by_kind(exercise(name).mistakes)
+    checked = CHECKED_AS.get(name, name)
+    table = _words_by_kind(exercise(checked).mistakes)
     with output.captured(), warnings.catch_warnings():  # a second run: its warnings were shown
         warnings.simplefilter("ignore")
-        report = check(name, fn)
-    head = f"; the {name} exercise's check names the mistake: "
+        report = check(checked, fn)
+    head = f"; the {checked} exercise's check names the mistake: "
     for failure in report.failures:
         parts = [failure.kind] if failure.kind in table else failure.kind.split(" and ")
         if not all(kind in table for kind in parts):
@@ -107,7 +118,19 @@ def _mistake_words(name, fn) -> str:
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
         return head + failure.explanation  # words that quote the case: the case's sentence
-    return ""
+    return _unnamed(checked, report)
+
+
+def _unnamed(checked: str, report) -> str:
+    """What the exercise's check says when no typical mistake of its table fits: its first
+    explanation (the rule in words with the case's numbers, or its constant-answer or float32
+    diagnosis), or, when the function passes there, that the scene asks what the cases do not."""
+    if report.passed:
+        return (f"; your function passes the {checked} exercise's own cases, so the scene asks "
+                "it something they do not: compare its answer here with the rule")  # fmt: skip
+    if report.stopped is not None or not report.failures:
+        return ""
+    return f"; the {checked} exercise's check, on its own cases, says: {report.failures[0].explanation}"
 
 
 def _words_by_kind(mistakes) -> dict:
@@ -160,10 +183,13 @@ def _depth(used, reference, pixel) -> str:
     expected = passed_on_arrival(np.zeros(len(depths), np.int64), depths, writes)
     yours, error = _call(used, "depth_passes", depths, writes)
     said = error or f"your depth_passes returned {_bools(yours)}"
+    why = _depth_mistake(used, depths, writes, yours, expected) or (
+        "" if error else named_mistake(used, "depth_passes")
+    )
     return (f"the fragments of triangles {[r.triangle for r in records]} reach it in drawing "
             f"order with depths {vec(depths)} and depth writes {_bools(writes)}: {said}, the "
             f"package's test passes {_bools(expected)} (strictly nearer than the depth last "
-            f"written){_depth_mistake(used, depths, writes, yours, expected)}")  # fmt: skip
+            f"written){why}")  # fmt: skip
 
 
 def _depth_mistake(used, depths, writes, yours, expected) -> str:
@@ -206,7 +232,7 @@ def _interpolation(used, reference, pixel, rr) -> str:
     head = f"triangle {rr.triangle} at {vec(p)}, vertices {_points(xy)}"
     if "barycentric" in used:
         yours, error = _call(used, "barycentric", xy, p)
-        if error or yours is None or not np.allclose(yours, ours, rtol=1e-9, atol=1e-9):
+        if error or yours is None or not np.allclose(yours, ours, rtol=TOL, atol=TOL):
             said = error or f"your barycentric returned {vec(yours, ours)}"
             return (f"{head}: {said}; the package's weights are {vec(ours, yours)}"
                     f"{named_mistake(used, 'barycentric')}")  # fmt: skip
@@ -229,6 +255,8 @@ def _blending(used, pixel, rr) -> str:
 def _shading(spec, used, reference, pixel) -> tuple[str, str]:
     """Every record agrees: the texture filter or the resolve after the pipeline differs."""
     row, col = pixel
+    if "a_buffer" in used:
+        return "sorting", glass.explain(used["a_buffer"], reference, row, col)
     if "bilinear" in used or "trilinear" in used:
         return "texture filtering", _texture(spec, used, reference, row, col)
     if "resolve" in used:
@@ -237,9 +265,7 @@ def _shading(spec, used, reference, pixel) -> tuple[str, str]:
 
 
 def _texture(spec, used, reference, row, col) -> str:
-    from ..pipeline.rendering.scenes import get_scene
-
-    tex = get_scene(spec.scene).texture
+    tex = capstone_scene(spec.scene, spec.tiled).texture
     uv = reference.attr("uv")[row, col]
     head = f"every record of its history agrees; at uv = {vec(uv)}"
     if "bilinear" in used:

@@ -24,16 +24,24 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..pipeline.rendering.render_scenes import render
-from ..pipeline.rendering.scenes import get_scene
+from . import capstone_glass as glass
 from . import output
 from .capstone_explain import explain_pixel
-from .capstone_rules import FUNCTIONS, Tracker, rules
+from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
+from .capstone_scenes import capstone_scene
 from .report import Failure, Report
 from .running import budget as time_budget
 from .running import effective_budget, run_case
 
 #: Frame size of every scene.
 W, H = 48, 36
+
+
+#: How close a compared value must be: float32's rounding (a function computing in float32,
+#: or on imread's float32 texture, is right), far below any mistake's difference; a texture
+#: filter rounds (u, v) too, and float32's 2^-24 of u·W becomes up to W·2^-24 of a texel's
+#: contrast (1e-4 for the scenes' 128-texel checkerboard; a mistake moves colours by 1e-2).
+TOL, TEXTURE_TOL = 1e-6, 1e-4
 
 
 @dataclass(frozen=True)
@@ -48,6 +56,9 @@ class CapstoneScene:
     compare: tuple[str, ...] = ("image",)
     glass: bool = False
     tie: bool = False
+    sort: bool = False
+    tol: float = TOL
+    tiled: bool = False
 
 
 SCENES = {s.name: s for s in (
@@ -60,28 +71,36 @@ SCENES = {s.name: s for s in (
     CapstoneScene("intersecting_triangles", "two triangles piercing each other and a green copy "
                   "of the red one drawn last: equal depths, ties", ("depth_passes",),
                   "intersecting_triangles", compare=("triangle_id", "depth"), tie=True),
-    CapstoneScene("glass", "the two triangles as glass: blended over, no depth writes",
-                  ("depth_passes", "over"), "intersecting_triangles", compare=("color",),
-                  glass=True),
+    CapstoneScene("glass", "the two triangles as glass: premultiplied colour blended over in "
+                  "drawing order, no depth writes", ("depth_passes", "over"),
+                  "intersecting_triangles", compare=("color",), glass=True),
+    CapstoneScene("glass_sorted", "the glass resolved per pixel from an A-buffer: every "
+                  "fragment seen through those in front of it", ("over", "a_buffer"),
+                  "intersecting_triangles", compare=("color",), glass=True, sort=True),
     CapstoneScene("floor_bilinear", "the floor's checkerboard filtered bilinearly",
-                  ("bilinear",), "textured_floor", {"texture_filter": "bilinear"}),
+                  ("bilinear",), "textured_floor", {"texture_filter": "bilinear"}, tol=TEXTURE_TOL,
+                  tiled=True),
     CapstoneScene("floor_trilinear", "the floor's checkerboard filtered trilinearly",
-                  ("trilinear",), "textured_floor", {"texture_filter": "trilinear"}),
+                  ("trilinear",), "textured_floor", {"texture_filter": "trilinear"},
+                  tol=TEXTURE_TOL, tiled=True),
     CapstoneScene("cube_msaa", "a cube with 4 samples per pixel, resolved",
                   ("resolve",), "cube", {"samples": 4}),
     CapstoneScene("sphere", "a textured sphere: all of your rasteriser at once",
                   ("covers", "barycentric", "perspective_weights", "depth_passes", "bilinear"),
-                  "uv_sphere", {"texture_filter": "bilinear"}, ("triangle_id", "image")),
+                  "uv_sphere", {"texture_filter": "bilinear"}, ("triangle_id", "image"),
+                  tol=TEXTURE_TOL),
 )}  # fmt: skip
 
 
+#: The glass scenes' alpha (their colours are premultiplied by it).
+GLASS_ALPHA = 0.6
 #: The colour of the tie scene's copy of triangle 0 (drawn last, at exactly its depths).
 TIE_COLOR = (0.2, 0.75, 0.3)
 
 
 def render_with(spec: CapstoneScene, overrides=None):
     """The scene's traced frame, with ``overrides`` (None: the package's own rules)."""
-    scene = get_scene(spec.scene)
+    scene = capstone_scene(spec.scene, spec.tiled)
     if spec.tie:  # the same vertices again, so every depth ties bit for bit with triangle 0's
         clip = scene.clip(W / H)
         colour = scene.mesh.corner("color")
@@ -91,9 +110,23 @@ def render_with(spec: CapstoneScene, overrides=None):
     if not spec.glass:
         return render(scene, None, W, H, trace=True, overrides=overrides, **spec.options)
     clip = scene.clip(W / H)
-    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.6)], axis=2)
-    return render(clip, W, H, attrs=rgba, blend="over", depth_write=False,
-                  clear_color=(1.0, 1.0, 1.0, 1.0), trace=True, overrides=overrides)  # fmt: skip
+    alpha = np.full((len(clip), 3, 1), GLASS_ALPHA)  # premultiplied: the colour times alpha
+    rgba = np.concatenate([scene.mesh.corner("color") * alpha, alpha], axis=2)
+    return render(clip, W, H, attrs=rgba, blend="premultiplied", depth_write=False,
+                  clear_color=tuple(glass.BACKGROUND), trace=True, overrides=overrides)  # fmt: skip
+
+
+def _frame(spec: CapstoneScene, functions=None, tracker=None):
+    """The frame compared: the scene rendered with ``functions`` (None: the package's rules),
+    and, for an A-buffer scene, every pixel resolved by ``a_buffer`` (or the package)."""
+    overrides = None if functions is None else rules(functions, tracker)
+    frame = render_with(spec, overrides)
+    if not spec.sort:
+        return frame
+    if functions is None:
+        return glass.resolved(frame, glass.package_resolve)
+    a_buffer = wrapped("a_buffer", functions["a_buffer"], tracker)
+    return glass.resolved(frame, a_buffer)
 
 
 def _parts(spec: CapstoneScene, frame) -> list[np.ndarray]:
@@ -106,10 +139,11 @@ def _parts(spec: CapstoneScene, frame) -> list[np.ndarray]:
 
 
 def differing(spec: CapstoneScene, mine, reference) -> np.ndarray:
-    """(H, W) bool: pixels whose compared values differ (beyond 1e-9; NaN equals NaN)."""
+    """(H, W) bool: pixels whose compared values differ (beyond the scene's tolerance; NaN
+    equals NaN)."""
     out = np.zeros((H, W), dtype=bool)
     for a, b in zip(_parts(spec, mine), _parts(spec, reference)):
-        same = np.isclose(a, b, rtol=1e-9, atol=1e-9) | (np.isnan(a) & np.isnan(b))
+        same = np.isclose(a, b, rtol=spec.tol, atol=spec.tol) | (np.isnan(a) & np.isnan(b))
         out |= ~same.all(axis=2)
     return out
 
@@ -134,12 +168,15 @@ def capstone(scene: str, *, budget: float = 30.0, **functions) -> CapstoneReport
         if not callable(fn):
             raise TypeError(f"{name} must be a function, got {type(fn).__name__}")
     used = {name: functions[name] for name in spec.uses}
-    reference = render_with(spec)
+    reference = _frame(spec)
     tracker = Tracker()
     seconds = effective_budget(budget)
     with time_budget(seconds), output.captured() as printed:
-        outcome = run_case(lambda: render_with(spec, rules(used, tracker)), seconds)
+        outcome = run_case(lambda: _frame(spec, used, tracker), seconds)
     report = _report(spec, used, reference, outcome, tracker)
+    if report.passed and tracker.precision is not None:
+        report = replace(report, precision=f"your {tracker.precision[0]} answers "
+                         f"{tracker.precision[1]}: right within its rounding, so they pass")  # fmt: skip
     if printed.lines:  # kept aside during the render (a print per pixel), shown capped
         report = replace(report, printed=printed.summary())
         printed.replay(sys.stdout)
@@ -213,7 +250,9 @@ class CapstoneReport(Report):
                     "NotImplementedError: replace `raise NotImplementedError()` with your "
                     "code, then run its cell and this one again)")  # fmt: skip
         if self.passed:
-            return f"{head}: all {self.n_cases} pixels match the package's (all cases pass)"
+            note = "" if self.precision is None else f" ({self.precision})"
+            return (f"{head}: all {self.n_cases} pixels match the package's (all cases "
+                    f"pass){note}")  # fmt: skip
         if self.mine is None:
             return f"{head}: no frame: {self.failures[0].explanation}"
         lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]

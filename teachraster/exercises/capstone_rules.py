@@ -19,6 +19,7 @@ from .answers import as_bool, as_numbers
 from .front_to_back import as_rgba
 from .perspective_weighting import as_weights
 from .running import WrongAnswerType
+from .value_checks import float_type
 from .zbuffer_pixel import as_passes
 
 
@@ -30,7 +31,8 @@ def _weights(value) -> np.ndarray:
     return as_numbers(value, (3,), "3 weights, shape (3,)")
 
 
-#: The functions the capstone takes: the stage rule each replaces, how its answer is read.
+#: The functions the capstone takes: the stage rule each replaces (None: none, it runs after
+#: the pipeline), how its answer is read.
 FUNCTIONS = {
     "covers": ("coverage", as_bool),
     "barycentric": ("weights", _weights),
@@ -40,6 +42,7 @@ FUNCTIONS = {
     "bilinear": ("bilinear", _colour),
     "trilinear": ("trilinear", _colour),
     "resolve": ("resolve", _colour),
+    "a_buffer": (None, as_rgba),  # the A-buffer's resolve of one pixel, after the pipeline
 }
 
 
@@ -48,6 +51,8 @@ class Tracker:
     """Which of the student's functions ran last (the one to blame when something fails)."""
 
     name: str = ""
+    #: (function, "are float32") when some answer of a function was float32 (or float16).
+    precision: tuple[str, str] | None = None
 
 
 def wrapped(name: str, fn, tracker: Tracker):
@@ -56,7 +61,10 @@ def wrapped(name: str, fn, tracker: Tracker):
 
     def rule(*args):
         tracker.name = name
-        value = convert(fn(*args))
+        raw = fn(*args)
+        if tracker.precision is None and (low := float_type(raw)) is not None:
+            tracker.precision = (name, f"are {low}")
+        value = convert(raw)
         if name == "depth_passes" and len(value) != len(args[0]):
             raise WrongAnswerType(
                 f"returned {len(value)} value(s) for {len(args[0])} fragment(s): one "
@@ -68,6 +76,8 @@ def wrapped(name: str, fn, tracker: Tracker):
 
 
 def rules(functions: dict, tracker: Tracker) -> StageOverrides:
-    """The stage overrides that plug ``functions`` (name: function) into the pipeline."""
+    """The stage overrides that plug ``functions`` (name: function) into the pipeline (those
+    that run after it, such as ``a_buffer``, are called by the capstone itself)."""
     return StageOverrides(**{FUNCTIONS[name][0]: wrapped(name, fn, tracker)
-                             for name, fn in functions.items()})  # fmt: skip
+                             for name, fn in functions.items()
+                             if FUNCTIONS[name][0] is not None})  # fmt: skip

@@ -72,7 +72,8 @@ def as_rgba(value) -> np.ndarray:
 
 
 def same_rgba(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
-    return bool(np.isfinite(got).all()) and all_close(got, expected)
+    """Within 1e-6: a composite computed in float32 is right."""
+    return bool(np.isfinite(got).all()) and all_close(got, expected, 1e-6)
 
 
 def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
@@ -94,6 +95,8 @@ def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
         "double premultiplication": loop(straight),
         "alpha summed": loop(lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], acc[3] + c[3]]),
         "nearest only": layers[0] if len(layers) else CLEAR,
+        "farthest only": layers[-1] if len(layers) else CLEAR,
+        "own alpha": loop(lambda acc, c: acc + (1 - c[3]) * c),
     }
 
 
@@ -109,6 +112,11 @@ MISTAKES = {
     "alpha summed": "you added the alphas: coverage composes like colour, A ← A + (1 − A)·α",
     "nearest only": "you returned the nearest layer: the layers behind show through it where "
     "its alpha is below 1",
+    "farthest only": "you returned the farthest layer (the last one): the layers in front of "
+    "it cover it, each by its alpha",
+    "own alpha": "you weighed each layer by 1 − its own alpha: a layer is seen through the "
+    "layers in front of it, so weigh it by the transmittance 1 − A they leave (A: the alpha "
+    "accumulated so far)",
 }
 
 

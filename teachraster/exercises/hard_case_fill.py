@@ -58,6 +58,10 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
         o = int(offset)
         if o:
             out.append((f"far_from_origin at {o} px", (local + o, 16, 16, (o, o))))
+    # a window whose row and column differ: origin is (row, col), not (x, y)
+    o = int(max(CASES["far_from_origin"].inputs["offsets"]))
+    out.append((f"far_from_origin at row {o}, column {o // 2 + 7}",
+                (local + [o // 2 + 7, o], 16, 16, (o, o // 2 + 7))))  # fmt: skip
     out += _random_cases()
     return [(label, args, expected_fill(*args)) for label, args in out]
 
@@ -91,7 +95,12 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     kw = dict(origin=tuple(origin))
     raw_area = _area(xy)
     flipped = s if raw_area >= 0 else s[[0, 2, 1]]  # oriented by the unsnapped area
+    o = np.asarray(origin)
     return {
+        "nothing covered": np.zeros((height, width), dtype=bool),
+        "origin swapped": expected_fill(xy, width, height, (o[1], o[0])),
+        "origin ignored": expected_fill(xy, width, height, (0, 0)),
+        "pixel corners": expected_fill(np.asarray(xy, float) + 0.5, width, height, origin),
         "no snapping": naive_coverage(xy, width, height, rule="top_left", **kw),
         "floor snapping": naive_coverage(
             np.floor(np.asarray(xy, float) * 256) / 256, width, height, rule="top_left", **kw
@@ -118,6 +127,14 @@ def _area(xy) -> float:
 
 
 MISTAKES = {
+    "nothing covered": "your function never covers anything: it returns an image of False "
+    "for every triangle (a placeholder left in, or a test that no centre can pass?)",
+    "origin swapped": "you read origin as (x, y): it is (row, col), the window's first row "
+    "and first column, so pixel [i, j] has its centre at x = col + j + ½, y = row + i + ½",
+    "origin ignored": "you ignored origin: the window's pixel [i, j] has its centre at "
+    "x = origin[1] + j + ½, y = origin[0] + i + ½, not at (j + ½, i + ½)",
+    "pixel corners": "you tested the pixel corners (j, i): a pixel's centre is at "
+    "(j + ½, i + ½) (plus the window's origin)",
     "no snapping": "you decide on the raw vertices: snap them to the 1/256-px grid first "
     "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
     "its neighbour agree on every tie",

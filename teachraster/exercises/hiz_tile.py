@@ -132,6 +132,11 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "tile min": bool(near >= buffer.min()),
             "strict": bool(near > buffer.max()),
             "empty ignored": bool(len(finite) and near >= finite.max()),
+            "farthest vertex": bool(xyz[:, 2].max() >= buffer.max()),
+            "tile mean": bool(len(finite) and near >= finite.mean()),
+            "row col swapped": bool(
+                plane_at(xyz, *_corners(col0, row0, size)).min() >= buffer.max()
+            ),  # fmt: skip
         }
 
 
@@ -150,6 +155,13 @@ MISTAKES = {
     "passes), so a block at exactly the tile's farthest depth is rejected too: use ≥",
     "empty ignored": "a pixel of the tile is still empty (+inf): a fragment there passes "
     "whatever its depth, so nothing in this tile may be rejected",
+    "farthest vertex": "you compared the triangle's farthest vertex: the block is hidden only "
+    "if even the triangle's nearest possible depth in the tile lies at or behind the tile's "
+    "farthest stored depth",
+    "tile mean": "you compared with the tile's mean depth: only its farthest stored depth "
+    "bounds every pixel of the tile",
+    "row col swapped": "you swapped the tile's row and column: its pixel centres lie at "
+    "x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size − ½",
 }
 
 

@@ -95,7 +95,8 @@ _COMBINE = {
     "geometric": lambda x, y: math.sqrt(x * y),
     "mean": lambda x, y: (x + y) / 2,
 }
-_LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r}
+_LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r,
+        "plus one": lambda r: math.log2(r) + 1}  # fmt: skip
 
 
 def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False):  # fmt: skip
@@ -153,6 +154,8 @@ LEVEL_KNOBS = Knobs(level_with, {
              "none"),
         Slip("natural log", "that is the natural log; λ = log2 ρ", "ln"),
         Slip("log10", "that is log10; λ = log2 ρ", "log10"),
+        Slip("one too many", "your λ is one more than log2 ρ: level 0 is the full texture, so "
+             "one texel per pixel (ρ = 1) is λ = 0", "plus one"),
     ],
     "clamp": [
         Slip("clamped", "λ is unclamped here: a magnified texture (ρ < 1) has λ < 0", True),

@@ -147,8 +147,26 @@ LINE_KNOBS = Knobs(diamond_pixels, {
                    "first, as an image is indexed [row, col]", "col row")],
 })  # fmt: skip
 
+
+def _start_dark(p0, p1):
+    start = (int(np.floor(p0[1])), int(np.floor(p0[0])))
+    return diamond_pixels(p0, p1) - {start}
+
+
 LINE_MISTAKES = [
     LINE_KNOBS,
+    Mistake(
+        "reversed",
+        "you drew the segment from p1 to p0: its direction matters, GL leaves p1's own diamond "
+        "dark (not p0's) and the −(ε, ε²) perturbation is not symmetric",
+        gives=lambda p0, p1: diamond_pixels(p1, p0),
+    ),
+    Mistake(
+        "start pixel dark",
+        "you left the pixel p0 lies in dark: the segment starts inside its diamond and exits "
+        "it, so it is lit (only p1's own diamond stays dark)",
+        gives=_start_dark,
+    ),
     Mistake(
         "DDA",
         "you rounded the line at each column (or row) centre, a DDA; GL lights the "

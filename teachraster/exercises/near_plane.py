@@ -68,7 +68,8 @@ def _near_cases() -> list[tuple[str, tuple, float]]:
 
 
 def same_near(got, expected, args=None) -> bool:
-    return close(got, expected)
+    """Within 1e-6: an n computed in float32 is right (a slip is off by far more)."""
+    return close(got, expected, 1e-6)
 
 
 def _variants(z, gap, far, bits) -> dict[str, float]:
@@ -86,6 +87,9 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             "linear": far - gap / step,
             "squared": solve(step, far) ** 0.5,
             "resolution": gap,
+            "bits - 1": solve(1.0 / (2 ** (bits - 1) - 1), far),
+            "z not squared": step * far * z / (gap * far + step * z),
+            "z and gap swapped": step * far * gap * gap / (z * far + step * gap * gap),
         }
 
 
@@ -100,6 +104,12 @@ MISTAKES = {
     "everywhere: the buffer stores window depth, which is affine in 1/z",
     "squared": "your n is the square root of the answer: Δz grows like z² / n, so n grows like z²",
     "resolution": "you returned the gap; return the near-plane distance n",
+    "bits - 1": "you used one bit fewer than the buffer has (2^(bits − 1) − 1 steps): the "
+    "step is 1/(2^bits − 1)",
+    "z not squared": "you used z where the resolution grows with z²: Δz ≈ step · z² / n "
+    "(for f ≫ n), so n grows like z², not like z",
+    "z and gap swapped": "you swapped z and gap: z is the distance of the surfaces, gap "
+    "their separation (the arguments are safe_near(z, gap, far, bits))",
 }
 
 

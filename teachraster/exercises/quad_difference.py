@@ -71,7 +71,8 @@ def as_pair(value) -> np.ndarray:
 
 
 def same_pair(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
-    return bool(np.isfinite(got).all()) and all_close(got, expected)
+    """Within 1e-6 (of the values' size): differences computed in float32 are right."""
+    return bool(np.isfinite(got).all()) and all_close(got, expected, 1e-6)
 
 
 def _at(xy, w, f, x, y, clamp=False, affine=False) -> float:
@@ -105,6 +106,15 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         "fine": np.array([fine_x, fine_y]),
         "y up": right * [1, -1],
         "swapped": right[::-1],
+        "negated": -right,
+        "row col swapped": pair(col - col % 2, row - row % 2),
+        "centred": np.array(
+            [
+                _at(xy, w, f, col + 1.5, row + 0.5) - _at(xy, w, f, col - 0.5, row + 0.5),
+                _at(xy, w, f, col + 0.5, row + 1.5) - _at(xy, w, f, col + 0.5, row - 0.5),
+            ]
+        )
+        / 2,  # fmt: skip
     }
 
 
@@ -121,6 +131,12 @@ MISTAKES = {
     "y up": "your ddy has the wrong sign: y grows downwards, so ddy is the lower lane minus "
     "the upper one",
     "swapped": "you returned (ddy, ddx): ddx is the step right, along the row",
+    "negated": "both your differences have the wrong sign: ddx is the right lane minus the "
+    "left one, ddy the lower minus the upper",
+    "row col swapped": "you took the pixel as (col, row): pixel (row, col) lies at x = col + ½, "
+    "y = row + ½",
+    "centred": "you took a centred difference around the pixel, (f(x + 1) − f(x − 1))/2: the "
+    "GPU differences the lanes of the pixel's 2×2 quad, right minus left, lower minus upper",
 }
 
 

@@ -73,6 +73,9 @@ class Report:
         package's own answer (``tr.mip_level`` in ``mip_level``).
     printed : str or None
         How much the function printed during the check (the output is kept aside).
+    precision : str or None
+        A note that the answers were computed in float32 (or float16) and pass within its
+        rounding: named, not failed.
     scene : Scene or None
         The student's function in a whole picture beside the package's (:meth:`compare`).
     """
@@ -86,6 +89,7 @@ class Report:
     n_run: int | None = None
     package: str | None = None
     printed: str | None = None
+    precision: str | None = None
     scene: object | None = field(default=None, repr=False, compare=False)
 
     @property
@@ -115,7 +119,8 @@ class Report:
                 "then run this cell again)"
             )
         if self.passed:
-            return self._with_printed(f"{self.exercise}: all {self.n_cases} cases pass")
+            note = "" if self.precision is None else f" ({self.precision})"
+            return self._with_printed(f"{self.exercise}: all {self.n_cases} cases pass{note}")
         if self.package is not None and not self.failures and self.stopped is None:
             text = (
                 f"{self.exercise}: all {self.n_cases} cases pass, but not counted: {self.package}"

@@ -366,6 +366,10 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
         return _filter(pyramid[int(np.clip(round(lod), 0, q))], uv, wrap, texels)
     if levels == "lower":
         return _filter(pyramid[lower], uv, wrap, texels)
+    if levels == "finest":
+        return _filter(pyramid[0], uv, wrap, texels)
+    if levels == "upper":
+        return _filter(pyramid[upper], uv, wrap, texels)
     a, b = _filter(pyramid[lower], uv, wrap, texels), _filter(pyramid[upper], uv, wrap, texels)
     if weights == "swapped":
         t = 1 - t
@@ -424,6 +428,10 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "blends levels {d0} and {d1}"), "nearest"),
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
+        Slip("upper level only", _tri_words("that is level {d1} alone; trilinear blends it with "
+             "level {d0}, level {d1} weighted by λ − ⌊λ⌋ = {t}"), "upper"),
+        Slip("level 0 only", _tri_words("that is level 0 alone, whatever λ: λ = {lod} picks "
+             "levels {d0} and {d1} (the texture is minified, level 0 would alias)"), "finest"),
     ],
     "texels": [
         Slip("nearest texels", "you took the nearest texel of each level; trilinear filters "

@@ -94,6 +94,7 @@ POINTS = {
     "centres": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s - 1),
     "outer corners": lambda x0, y0, s: _xs_ys(x0, y0, s),
     "beyond": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s),
+    "x0 y0 swapped": lambda x0, y0, s: POINTS["centres"](y0, x0, s),
     "two corners": lambda x0, y0, s: (
         np.array([x0 + 0.5, x0 + s - 0.5]),
         np.array([y0 + 0.5, y0 + s - 0.5]),
@@ -145,6 +146,9 @@ BLOCK_KNOBS = Knobs(classify_with, {
         Slip("one pixel too far", lambda a, e, g: f"the last pixel centre of the block is x0 + "
              f"size − ½ = {num(a[1] + a[3] - 0.5)}, not x0 + size + ½", "beyond"),
         Slip("two corners only", _two_corners, "two corners"),
+        Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 is the block's first column (x), "
+             "y0 its first row (y); its extreme centres lie at x = x0 + ½, x0 + size − ½ and "
+             "y = y0 + ½, y0 + size − ½", "x0 y0 swapped"),
     ],
     "tie": [
         Slip("no top-left rule (E > 0)", _tie_words, "strict"),

@@ -77,9 +77,31 @@ def check_exercise(spec: Exercise, fn) -> Report:
     if stopped is None and spec.answers:
         package = package_note(spec, fn, cases[0])
     example = _drawer(spec, cases[0], cases[0][2])
+    precision = None if failures else _low_precision(results)
     return Report(
-        spec.name, failures, len(cases), False, example, stopped, len(ran), package, scene=scene
-    )
+        spec.name, failures, len(cases), False, example, stopped, len(ran), package,
+        precision=precision, scene=scene,
+    )  # fmt: skip
+
+
+def _low_precision(results) -> str | None:
+    """The note for answers computed in float32 (float16) that pass within its rounding."""
+    for r in results:
+        name = float_type(r.got)
+        if name is not None:
+            return (f"your answers are {name}: right within {name}'s rounding, so they pass; "
+                    "in float64 they would match to the last digit")  # fmt: skip
+    return None
+
+
+def float_type(value) -> str | None:
+    """ "float32" or "float16" when ``value`` (or a number in it) has that type, else None."""
+    dtype = getattr(value, "dtype", None)
+    if dtype is not None and dtype.kind == "f" and dtype.itemsize <= 4:
+        return f"float{dtype.itemsize * 8}"
+    if isinstance(value, tuple | list):
+        return next((t for t in map(float_type, value) if t is not None), None)
+    return None
 
 
 def _scene(spec: Exercise, fn):

@@ -133,6 +133,9 @@ DEPTH_MISTAKES = [
              "fragment that passes (and writes) sets the buffer", update=False),
     _mistake("previous", "you compared each fragment with the one just before it; compare "
              "with the depth the buffer holds (the nearest written so far)", previous=True),
+    Mistake("farther passes", "you let the farther fragment pass (>, not <): smaller depth "
+            "is nearer, and a fragment passes when it is strictly nearer than the depth the "
+            "buffer holds", gives=lambda d, w: _simulate(-np.asarray(d, dtype=float), w)),
     Mistake("all pass", "your function lets every fragment pass, always",
             gives=lambda d, w: np.ones(len(d), dtype=bool)),
     Mistake("none pass", "your function lets no fragment pass, ever",

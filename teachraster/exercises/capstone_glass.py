@@ -1,0 +1,184 @@
+"""The capstone's sorted glass: an A-buffer resolved by the student's ``a_buffer``.
+
+A GPU blends transparent fragments in drawing order. The glass scene's two triangles pierce
+each other, so no order of the two triangles is right at every pixel: where the one drawn
+first is the nearer, drawing order lays the farther one over it. An A-buffer (Carpenter,
+*The A-buffer, an Antialiased Hidden Surface Method*, 1984; today's per-pixel fragment
+lists) keeps every fragment of a pixel and resolves the list after the frame: the student's
+``a_buffer(depths, colours, background)`` gets one pixel's fragments in drawing order
+(premultiplied RGBA) and returns what the pixel shows, each fragment seen through those in
+front of it. The reference composites farthest first with the package's premultiplied over
+(:func:`teachraster.blend_equation`, ``render(..., blend="premultiplied")``), onto the
+background.
+
+The fragments are read from the frame's pixel histories (the trace), so they are the ones the
+pipeline produced; only the resolve is the student's.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.blend_factors import BLEND_MODES, apply_blend
+from .front_to_back import as_rgba
+from .running import run_checker
+from .scalars import vec
+
+PREMULTIPLIED = BLEND_MODES["premultiplied"]
+#: The glass scene's clear colour (premultiplied white: opaque).
+BACKGROUND = np.ones(4)
+
+
+class Sorted:
+    """A traced frame whose colour buffer is the A-buffer's resolve (``color``); everything
+    else, the pixel histories included, is the frame's."""
+
+    def __init__(self, frame, color: np.ndarray):
+        self.frame, self.color = frame, color
+
+    def __getattr__(self, name):
+        return getattr(self.frame, name)
+
+
+def fragments(frame, row: int, col: int) -> tuple[np.ndarray, np.ndarray]:
+    """(depths (n,), premultiplied RGBA (n, 4)) of the fragments that reached pixel (row,
+    col), in drawing order."""
+    records = [r for r in frame.history(row, col).records if r.outcome == "passed"]
+    depths = np.array([r.depth for r in records], dtype=float)
+    return depths, np.array([r.color for r in records], dtype=float).reshape(-1, 4)
+
+
+def package_resolve(depths, colours, background) -> np.ndarray:
+    """Premultiplied over from the farthest fragment to the nearest, onto ``background``
+    (a stable sort: equal depths keep drawing order, the later drawn on top)."""
+    out = np.asarray(background, dtype=float)
+    for k in np.argsort(-np.asarray(depths), kind="stable"):
+        out = apply_blend(colours[k], out, *PREMULTIPLIED)
+    return out
+
+
+def resolved(frame, resolve) -> Sorted:
+    """``frame`` with every pixel some fragment reached resolved by ``resolve(depths,
+    colours, background)`` (read as an RGBA colour); the rest keep the background."""
+    color = np.array(frame.color, dtype=float)
+    for row, col in np.argwhere(frame.triangle_id >= 0):
+        depths, colours = fragments(frame, row, col)
+        color[row, col] = as_rgba(resolve(depths.copy(), colours.copy(), BACKGROUND.copy()))
+    return Sorted(frame, color)
+
+
+def _fold(colours, order, background, step):
+    out = np.asarray(background, dtype=float)
+    for k in order:
+        out = step(colours[k], out)
+    return out
+
+
+def _over(src, dst):
+    return apply_blend(src, dst, *PREMULTIPLIED)
+
+
+def _straight(src, dst):  # the premultiplied colour multiplied by its alpha again
+    return np.r_[src[:3] * src[3] + dst[:3] * (1 - src[3]), src[3] + dst[3] * (1 - src[3])]
+
+
+def variants(depths, colours, background) -> dict[str, np.ndarray]:
+    """What the typical wrong resolves give for one pixel's fragments."""
+    n = len(depths)
+    far_first = np.argsort(-np.asarray(depths), kind="stable")
+    near_first = np.argsort(np.asarray(depths), kind="stable")
+    clear = np.zeros(4)
+    return {
+        "drawing order": _fold(colours, range(n), background, _over),
+        "nearest first": _fold(colours, near_first, background, _over),
+        "no background": _fold(colours, far_first, clear, _over),
+        "premultiplied twice": _fold(colours, far_first, background, _straight),
+        "nearest only": (_over(colours[near_first[0]], background) if n else background),
+    }
+
+
+MISTAKES = {
+    "drawing order": "you composited in drawing order, as the GPU blends: at this pixel the "
+    "fragment drawn later lies behind the one drawn first, so sort by depth and start from the "
+    "farthest (each nearer one is laid over what lies behind it)",
+    "nearest first": "you laid each fragment over the result in order of increasing depth: "
+    "the nearest then ends at the bottom; lay them on farthest first (or go nearest first "
+    "with the under step of exercise 9, weighting each by the transmittance left in front)",
+    "no background": "you composited the fragments onto transparent black: the background "
+    "shows through them, so it is the farthest layer, the one to start from",
+    "premultiplied twice": "you multiplied each fragment's colour by its alpha again: the "
+    "fragments are premultiplied already (your over with straight alpha?)",
+    "nearest only": "you kept the nearest fragment alone: the fragments behind it show "
+    "through it where its alpha is below 1",
+}
+
+#: Stacks on which two mistakes that agree at one pixel part (depth, premultiplied RGBA).
+STACKS = [
+    ([0.5, 0.2, 0.8], [[0.6, 0.0, 0.0, 0.6], [0.0, 0.3, 0.0, 0.3], [0.0, 0.0, 0.5, 0.5]]),
+    ([0.2, 0.7], [[0.0, 0.4, 0.0, 0.4], [0.7, 0.0, 0.0, 0.7]]),
+    ([0.9, 0.1], [[0.0, 0.0, 0.8, 0.8], [0.5, 0.5, 0.0, 0.5]]),
+]
+
+
+def explain(fn, frame, row: int, col: int) -> str:
+    """Why the student's ``a_buffer`` resolves pixel (row, col) of ``frame`` wrongly."""
+    depths, colours = fragments(frame, row, col)
+    ours = package_resolve(depths, colours, BACKGROUND)
+    yours, error = run_checker(lambda: _answer(fn, depths, colours),
+                               (None, "your a_buffer did not answer here in time"))  # fmt: skip
+    said = error or f"your a_buffer returned {vec(yours, ours)}"
+    head = (f"its fragments in drawing order have depths {vec(depths)} and premultiplied "
+            f"colours {', '.join(vec(c) for c in colours)} over the background "
+            f"{vec(BACKGROUND)}: {said}, the A-buffer's resolve gives {vec(ours, yours)} "
+            "(farthest first, each nearer fragment laid over what lies behind it)")  # fmt: skip
+    if yours is None:
+        return head
+    return head + _mistake(fn, depths, colours, yours, ours)
+
+
+def _answer(fn, depths, colours):
+    try:
+        return as_rgba(fn(depths.copy(), colours.copy(), BACKGROUND.copy())), ""
+    except Exception as exc:  # noqa: BLE001 - a student's bug is reported, not raised
+        from .running import last_line
+
+        return None, f"your a_buffer raised {last_line(exc)} here"
+
+
+def _mistake(fn, depths, colours, yours, ours) -> str:
+    """ ": words" of the one typical mistake that gives ``yours`` here (and, where several
+    do, on :data:`STACKS` too), or ""."""
+    if np.allclose(yours, ours, rtol=1e-6, atol=1e-6):
+        return ""
+    here = variants(depths, colours, BACKGROUND)
+    fits = [k for k, v in here.items() if np.allclose(v, yours, rtol=1e-6, atol=1e-6)]
+    if len(fits) > 1:
+        fits = run_checker(lambda: _fit_on_stacks(fn, fits), fits)
+    if len(fits) == 1:
+        return f"; the likely mistake: {MISTAKES[fits[0]]}"
+    if run_checker(lambda: _constant(fn, yours), False):
+        return (f"; the likely mistake: your a_buffer returns {vec(yours)} whatever the "
+                "fragments (a placeholder such as `return background` left in, or a `return` "
+                "reached too early?)")  # fmt: skip
+    return ""
+
+
+def _constant(fn, yours) -> bool:
+    """Does ``fn`` give ``yours`` on every stack of :data:`STACKS` too?"""
+    for depths, colours in STACKS:
+        got, error = _answer(fn, np.array(depths, float), np.array(colours, float))
+        if error or not np.allclose(got, yours, rtol=1e-9, atol=1e-9):
+            return False
+    return True
+
+
+def _fit_on_stacks(fn, fits) -> list[str]:
+    keep = list(fits)
+    for depths, colours in STACKS:
+        d, c = np.array(depths, float), np.array(colours, float)
+        got, error = _answer(fn, d, c)
+        if error:
+            return fits
+        wrong = variants(d, c, BACKGROUND)
+        keep = [k for k in keep if np.allclose(wrong[k], got, rtol=1e-6, atol=1e-6)]
+    return keep

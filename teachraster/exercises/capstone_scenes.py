@@ -1,0 +1,40 @@
+"""The built-in scenes as the capstone renders them: the texture scenes made able to tell
+a filter's mistakes apart.
+
+The floor's checkerboard is symmetric (its transpose is itself) and its (u, v) stay inside
+[0, 1], so a filter that swaps u and v, or clamps where it should repeat, would draw the same
+frame. The capstone's floor is tinted by two ramps, red along the columns and green along the
+rows (so the transpose shows), and its (u, v) run from −¼ to 1¼ (so every border is crossed
+and the wrap mode shows).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from ..pipeline.geometry.mesh import Mesh
+from ..pipeline.rendering.scenes import Scene, get_scene
+
+#: The capstone's (u, v) range on the tiled floor: u' = UV_SCALE · u + UV_SHIFT.
+UV_SCALE, UV_SHIFT = 1.5, -0.25
+
+
+def capstone_scene(name: str, tiled: bool = False) -> Scene:
+    """Built-in scene ``name``, built afresh (a student's function may write into what it is
+    given); ``tiled``: its texture tinted by ramps and its (u, v) widened."""
+    scene = get_scene(name)
+    if not tiled:
+        return scene
+    tex = np.asarray(scene.texture, dtype=float)
+    h, w = tex.shape[:2]
+    ramp_x = 0.55 + 0.45 * (np.arange(w) + 0.5) / w  # red grows along the columns (u)
+    ramp_y = 0.55 + 0.45 * (np.arange(h) + 0.5) / h  # green grows along the rows (v)
+    tinted = tex.copy()
+    tinted[..., 0] *= ramp_x[None, :]
+    tinted[..., 1] *= ramp_y[:, None]
+    attrs = dict(scene.mesh.attrs)
+    attrs["uv"] = attrs["uv"] * UV_SCALE + UV_SHIFT
+    mesh = Mesh(scene.mesh.positions, scene.mesh.triangles, attrs)
+    return replace(scene, mesh=mesh, texture=tinted)
