@@ -4,7 +4,7 @@
     python3 dev.py lab  [jupyter lab args...]   # e.g. --no-browser
     python3 dev.py test [pytest args...]        # everything CI runs, e.g. -k packaging
     python3 dev.py test --quick [pytest args]   # the edit loop: no browser, kernel, nbgrader,
-                                                # OpenGL or build (a few minutes)
+                                                # OpenGL, build or benchmark (a few minutes)
 
 Both create ./.venv if needed and `pip install -e` the project with the right extra. The
 install is skipped when pyproject.toml has not changed since the last one (a stamp file
@@ -69,7 +69,7 @@ def lab(args):
 
 
 #: The markers of the tiers the quick run leaves out (declared in pyproject.toml).
-HEAVY_TIERS = ("notebook", "browser", "nbgrader", "gl", "slow")
+HEAVY_TIERS = ("notebook", "browser", "nbgrader", "gl", "slow", "bench")
 
 
 def pytest_args(args):

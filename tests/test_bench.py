@@ -20,6 +20,7 @@ def quick_run(tmp_path_factory):
     return out
 
 
+@pytest.mark.bench
 def test_quick_run_writes_csv_with_every_group_and_variant(quick_run, capsys):
     with (quick_run / "bench.csv").open() as fh:
         rows = list(csv.DictReader(fh))
@@ -41,6 +42,7 @@ def test_quick_run_writes_csv_with_every_group_and_variant(quick_run, capsys):
     assert float(by_variant[("depth", "window unorm16")]["error"]) > 0
 
 
+@pytest.mark.bench
 def test_quick_run_writes_the_plots(quick_run):
     for name in ("pareto.png", "subdivision.png"):
         data = (quick_run / name).read_bytes()

@@ -4,9 +4,12 @@ import importlib.util
 import sys
 from pathlib import Path
 
+import pytest
+
 BENCH = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_fill.py"
 
 
+@pytest.mark.bench
 def test_fill_benchmark_quick_run_succeeds(capsys):
     spec = importlib.util.spec_from_file_location("bench_fill", BENCH)
     bench = importlib.util.module_from_spec(spec)
@@ -26,6 +29,7 @@ def _load(name: str):
     return module
 
 
+@pytest.mark.bench
 def test_scene_benchmark_quick_run_succeeds(capsys):
     assert _load("bench_scenes").main(["--quick", "--repeat", "1"]) == 0
     out = capsys.readouterr().out
@@ -35,12 +39,14 @@ def test_scene_benchmark_quick_run_succeeds(capsys):
 # bench_widgets' smoke run is tests/test_widgets.py::test_widget_benchmark_quick_run_succeeds
 
 
+@pytest.mark.bench
 def test_antialiasing_benchmark_quick_run_succeeds(capsys):
     assert _load("bench_antialiasing").main(["--quick", "--repeat", "1"]) == 0
     out = capsys.readouterr().out
     assert "exact pixel area" in out and "samples=4" in out
 
 
+@pytest.mark.bench
 def test_texture_benchmark_quick_run_succeeds(capsys):
     assert _load("bench_texture").main(["--quick", "--repeat", "1"]) == 0
     assert "trilinear / bilinear" in capsys.readouterr().out

@@ -230,6 +230,7 @@ def test_history_plot_returns_artists():
     plt.close(fig)
 
 
+@pytest.mark.bench
 def test_history_benchmark_quick_run_succeeds(capsys):
     import importlib.util
     import sys

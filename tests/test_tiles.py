@@ -451,6 +451,7 @@ def test_fixed_point_bad_input():
         tv.traversal_order((2, 2), "hilbert")
 
 
+@pytest.mark.bench
 def test_tiles_benchmark_quick_run_succeeds(capsys):
     """The benchmark script runs (speed itself is never asserted)."""
     import importlib.util

@@ -470,6 +470,7 @@ def test_textured_viewer_shows_texel_error_in_place():
 
 
 # -- benchmark script --------------------------------------------------------------------------
+@pytest.mark.bench
 def test_widget_benchmark_quick_run_succeeds(capsys):
     path = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_widgets.py"
     spec = importlib.util.spec_from_file_location("bench_widgets", path)
