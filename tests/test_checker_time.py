@@ -291,3 +291,39 @@ def test_a_check_off_the_main_thread_leaves_the_checker_at_full_speed():
     thread.join(30)
     after = min(cpu_of_a_check() for _ in range(2))
     assert after < 4 * before + 0.2, (before, after)
+
+
+def _alarm_after(wall: float, cpu: float, queued: float | None):
+    """An Alarm (not started: nothing is armed) as it stands ``wall`` seconds into a case that
+    computed ``cpu`` seconds and was queued for a core ``queued`` seconds (None: unknown)."""
+    from teachraster.exercises.alarm import Alarm
+
+    alarm = Alarm(0.2, None)
+    alarm.begin = time.perf_counter() - wall
+    alarm._clock, alarm._cpu_start, alarm._cpu_now = (lambda: cpu), 0.0, 0.0
+    if queued is not None:
+        alarm._queued, alarm._queued_start = (lambda: queued), 0.0
+    return alarm
+
+
+def test_a_loop_starved_by_a_busy_machine_is_not_told_it_waits():
+    # CI once saw an endless loop computing 0.057 s of its first second at load 13 on 2
+    # cores, told "it waits (time.sleep, input() ...)": queued for a core is not waiting
+    assert _alarm_after(1.5, 0.06, None).due() == "wait"  # no scheduler figures: as before
+    assert _alarm_after(1.5, 0.06, 1.2).due() is None  # ready to run all along: keep going
+    assert _alarm_after(1.5, 0.01, 0.02).due() == "wait"  # asleep: waits
+    assert _alarm_after(5.0, 0.06, 4.5).due() == "wall"  # the wall-clock cap still holds
+
+
+def test_the_queue_is_read_from_the_scheduler_where_linux_keeps_it():
+    from teachraster.exercises.alarm import queued_clock
+
+    queued = queued_clock(threading.get_native_id())
+    if not sys.platform.startswith("linux"):
+        assert queued is None or queued() >= 0
+        return
+    assert queued is not None
+    first = queued()
+    burn(0.05)
+    assert 0 <= first <= queued()
+    assert queued_clock(2**31 - 7) is None  # no such thread

@@ -8,7 +8,9 @@ only when the limit could have been reached. It fires when
 
 - the case has used ``seconds`` of CPU (an endless loop, or code far slower than needed), or
 - it has run ``wait`` seconds while computing less than ``WAITING`` of the time (it waits:
-  ``time.sleep``, ``input()``, a lock), or
+  ``time.sleep``, ``input()``, a lock; time the thread was ready to compute but queued for
+  a core, Linux's per-thread ``schedstat``, counts as computing: on a machine busier than
+  its cores a loop is starved, not waiting), or
 - it has run ``cap`` seconds of wall-clock time in all (a machine too busy to give it CPU).
 
 Firing sends :class:`.interrupt.CaseInterrupt` to the case's thread, again every ``TICK``
@@ -42,6 +44,23 @@ from .interrupt import (
 WAITING = 0.05
 #: No wait is ever longer than this (threading refuses larger timeouts).
 LONGEST = 1e6
+
+
+def queued_clock(native_id: int):
+    """A function returning the seconds thread ``native_id`` of this process has spent ready
+    to run but waiting for a core (the second field of Linux's ``schedstat``), or None where
+    the platform does not say."""
+    path = f"/proc/self/task/{native_id}/schedstat"
+
+    def queued() -> float:
+        with open(path) as fh:
+            return int(fh.read().split()[1]) * 1e-9
+
+    try:
+        queued()
+    except (OSError, ValueError, IndexError):
+        return None
+    return queued
 
 
 def cpu_clock(thread_id: int | None = None):
@@ -82,6 +101,7 @@ class Alarm:
         self._trace = None
         self._traced = False
         self._end = None
+        self._queued = None
 
     # -- measuring -------------------------------------------------------------------------------
     def cpu(self) -> float:
@@ -94,6 +114,15 @@ class Alarm:
             pass
         return self._cpu_now
 
+    def queued(self) -> float:
+        """Seconds the case was ready to compute but queued for a core (0 where unknown)."""
+        if self._queued is None:
+            return 0.0
+        try:
+            return self._queued() - self._queued_start
+        except (OSError, ValueError, IndexError):  # the thread has ended
+            return 0.0
+
     def wall(self) -> float:
         """Wall-clock seconds since :meth:`start` (until :meth:`stop`, then frozen)."""
         return self._end[1] if self._end is not None else time.perf_counter() - self.begin
@@ -105,7 +134,7 @@ class Alarm:
             return "cpu"
         if wall > self.cap:
             return "wall"
-        if wall > self.wait and cpu < WAITING * wall:
+        if wall > self.wait and cpu + self.queued() < WAITING * wall:
             return "wait"
         return None
 
@@ -128,6 +157,8 @@ class Alarm:
         self._clock = cpu_clock()
         self._cpu_start = self._clock()
         self._cpu_now = 0.0
+        self._queued = queued_clock(threading.get_native_id())
+        self._queued_start = self._queued() if self._queued is not None else 0.0
         if getattr(busy, "on", False):
             return  # a check inside a checked function: the outer alarm governs
         busy.on = True
