@@ -18,8 +18,7 @@ One module, three places
     data the kernel computed, so the exported page stays live. A notebook saved with its
     outputs and reopened without running keeps a stand-in (:func:`standin_html`): the title,
     the last picture the page drew (sent by the page a moment after each change) and a hint
-    to run the cell, which works because the cell is self-contained (it imports what it
-    uses).
+    that works: Run All (the cell's names come from the cells above it).
 
 Writing one
     Subclass :class:`Explorable`, set ``_esm = esm_source("lib", ..., "explore_x")`` and
@@ -32,7 +31,6 @@ from __future__ import annotations
 
 import base64
 import binascii
-import html
 import json
 import os
 import uuid
@@ -41,7 +39,7 @@ from pathlib import Path
 import anywidget
 import traitlets
 
-from .common import FALLBACK_CSS
+from .common import FALLBACK_CSS, standin_html
 
 STATIC = Path(__file__).parent / "static"
 
@@ -77,23 +75,6 @@ def offline_html(esm: str, data: dict, state: dict, *, css_class: str = "") -> s
     )
 
 
-def standin_html(title: str, noun: str, picture: bytes = b"", text: str = "") -> str:
-    """What a saved notebook shows once the kernel is gone: the title, ``text`` (HTML, e.g.
-    a question), the last picture the page drew and a hint that works (the cell imports
-    what it uses)."""
-    img = ""
-    if picture:
-        src = "data:image/png;base64," + base64.b64encode(picture).decode("ascii")
-        img = (f'<img alt="the {html.escape(noun)} as it was last drawn" src="{src}" '
-               'style="max-width:100%">')  # fmt: skip
-    body = f"<div>{text}</div>" if text else ""
-    return (
-        f'<div class="teachraster-static"><div><b>{html.escape(title)}</b></div>{body}'
-        f"<p><i>Run this cell to bring the {html.escape(noun)} back (no kernel is running "
-        f"it).</i></p>{img}</div>"
-    )
-
-
 def png_from_data_url(url: str) -> bytes:
     """The PNG bytes of a ``data:image/png;base64,...`` URL (empty if it is not one)."""
     prefix = "data:image/png;base64,"
@@ -122,7 +103,7 @@ class Explorable(anywidget.AnyWidget):
 
     data = traitlets.Dict().tag(sync=True)
     state = traitlets.Dict().tag(sync=True)
-    #: how the stand-in's hint names it: "Run this cell to bring the <noun> back"
+    #: how the stand-in's hint names it (:func:`~teachraster.widgets.common.standin_hint`)
     noun = "explorable"
     #: the stand-in's title
     title = "An explorable"

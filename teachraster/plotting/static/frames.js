@@ -173,8 +173,8 @@ export function mountFrames(el, opts) {
   function checkAlive(g) {
     if (s.inflight === g && !s.groups.has(g)) {
       notice.textContent =
-        "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
-        "the player back.";
+        "The kernel does not answer (stopped or restarted?): Run All (Run \u25b8 Run All Cells) " +
+        "to bring the player back.";
     }
   }
 

@@ -219,8 +219,8 @@ function render({ model, el }) {
   function checkAlive(seq) {
     if (s.pending.has(seq)) {
       notice.textContent =
-        "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
-        "the editor back.";
+        "The kernel does not answer (stopped or restarted?): Run All (Run \u25b8 Run All Cells) " +
+        "to bring the editor back.";
     }
   }
 

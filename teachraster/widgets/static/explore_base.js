@@ -403,7 +403,7 @@ function render({ model, el }) {
 // An offline page: the explorable computes everything itself (no kernel).
 export function mountStatic(el, data, state) {
   const hint = el.parentElement && el.parentElement.querySelector(".tr-x-hint-static");
-  if (hint) hint.style.display = "none"; // the stand-in's "run this cell": not needed now
+  if (hint) hint.style.display = "none"; // the stand-in's hint to run the lesson: not needed now
   const view = mount(el, data, pageHost(state || data.state));
   if (el.dataset) el.dataset.mounted = "1";
   return view;
