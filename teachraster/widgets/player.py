@@ -404,7 +404,8 @@ class FillPlayer(Holdable):
 
     @property
     def interval(self) -> int:
-        """Milliseconds per step when playing (the page plays; set it from code)."""
+        """Milliseconds per step when playing (the page plays; its speed menu sets it, and
+        setting it from code moves the menu)."""
         return self.frames.interval
 
     @interval.setter
