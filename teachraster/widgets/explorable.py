@@ -39,20 +39,24 @@ from pathlib import Path
 import anywidget
 import traitlets
 
+from ..plotting.frames import keys_js
 from .common import FALLBACK_CSS, standin_html
 
 STATIC = Path(__file__).parent / "static"
 
 
 def esm_source(*parts: str) -> str:
-    """The page-side module of an explorable: ``explore_base.js``, then ``parts`` in order.
+    """The page-side module of an explorable: ``keys.js`` (the package's key guard, from
+    ``teachraster/plotting/static``), ``explore_base.js``, then ``parts`` in order.
 
     Each part is a file of ``static/`` without its ``.js``. They are joined into one module
     (anywidget loads one ESM; an offline page inlines it), so they share one scope: names
     must not repeat across parts.
     """
     names = ("explore_base", *parts)
-    text = "\n".join(f"// ---- {n}.js\n" + (STATIC / f"{n}.js").read_text("utf-8") for n in names)
+    text = keys_js() + "\n".join(
+        f"// ---- {n}.js\n" + (STATIC / f"{n}.js").read_text("utf-8") for n in names
+    )
     if "</script" in text.lower():  # would end an offline page's inline script early
         raise ValueError(f"{names}: a module may not contain '</script'")
     return text

@@ -128,6 +128,7 @@ async function decodeGroup(places, blobs) {
 // poster (PNG bytes of the first picture, optional), request(g) (ask for group g; absent
 // in a static page), onStep(k) (the step settled: slider released, button, pause).
 export function mountFrames(el, opts) {
+  installKeyGuard(); // keys.js: the arrow keys move the step in Notebook 7 too
   if (!document.getElementById("tr-frames-css")) {
     const style = document.createElement("style");
     style.id = "tr-frames-css";

@@ -109,6 +109,7 @@ async function inflate(bytes) {
 }
 
 function render({ model, el }) {
+  installKeyGuard(); // keys.js: keys on the controls beside it are theirs in Notebook 7 too
   if (!document.getElementById("tr-drag-css")) {
     const style = document.createElement("style");
     style.id = "tr-drag-css";

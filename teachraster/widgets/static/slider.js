@@ -19,6 +19,7 @@ function format(v, spec) {
 }
 
 function render({ model, el }) {
+  installKeyGuard(); // keys.js: the arrow keys move this slider in Notebook 7 too
   const row = document.createElement("div");
   row.className = "tr-live-slider";
   row.style.cssText = "display:flex;align-items:center;gap:8px;margin:2px 0;";
