@@ -20,7 +20,7 @@ import nbformat
 import pytest
 from widget_examples import examples
 
-from teachraster.widgets.common import Shown
+from teachraster.widgets.common import Shown, _pictures
 
 VIEW = "application/vnd.jupyter.widget-view+json"
 HINT = "Run All (Run ▸ Run All Cells) to bring it back"
@@ -150,3 +150,28 @@ def test_saved_outputs_carry_a_standin_before_each_widget_view(monkeypatch, tmp_
     for i in views[2:]:
         now, then = (_pngs(outputs[j]["data"]["text/html"]) for j in (i - 1, i))
         assert now and then and now != then
+
+
+@pytest.mark.parametrize("name", sorted(OWN_DISPLAY - {"TriangleEditor"}))
+def test_the_widgets_with_a_display_of_their_own_can_borrow_shown(name, shown, monkeypatch):
+    """How their modules adopt it: ``Shown``'s display gives each its title and picture."""
+    import numpy as np
+
+    from teachraster.plotting.frames import encode_png
+
+    updates = []
+    monkeypatch.setattr(IPython.display, "update_display",
+                        lambda data, **kw: updates.append((data, kw)))  # fmt: skip
+    widget = examples()[name]()
+    Shown._ipython_display_(widget)
+    standin, view = shown
+    assert VIEW in view and HINT in standin["text/html"]
+    assert any(p.startswith(b"\x89PNG") for p in _pngs(standin["text/html"]))
+    title = widget.widget.children[0].value  # the box's title line (common.title_html)
+    assert re.sub("<[^>]+>", "", title)[:20] in standin["text/html"]
+    # it follows the picture too (no event loop here: at once)
+    w, trait = _pictures(widget.widget)[0]
+    png = encode_png(np.full((2, 3, 4), 200, np.uint8))
+    setattr(w, trait, png)
+    data, kw = updates[-1]
+    assert png in _pngs(data["text/html"]) and kw["display_id"] == widget._standin_id

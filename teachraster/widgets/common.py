@@ -117,6 +117,8 @@ class Shown:
     title, text and picture), which a notebook saved and reopened without a kernel shows in
     place of "model not found"; the stand-in follows the picture once it settles
     (:data:`SETTLE_S` after the last change, so a drag sends no second copy of each frame).
+    A widget with a box in ``self.widget`` but a base class of its own gets the same with
+    ``_ipython_display_ = Shown._ipython_display_``.
     """
 
     #: how the stand-in's hint names the widget: "... to bring the <noun> back"
@@ -127,6 +129,7 @@ class Shown:
 
     def _ipython_display_(self) -> None:
         import os
+        import types
         import uuid
 
         if os.environ.get("TEACHRASTER_STATIC_PAGES") == "1":  # `teachraster html`: one output
@@ -134,17 +137,20 @@ class Shown:
 
             display(self._repr_mimebundle_(), raw=True)
             return
-        standin = box_standin(self.widget, self.noun)
+        noun = getattr(self, "noun", Shown.noun)  # also for a class that borrows this method
+        standin = box_standin(self.widget, noun)
         self._standin_id = f"teachraster-standin-{uuid.uuid4().hex}"
         display_with_fallback({**self._repr_mimebundle_(), "text/html": standin}, standin,
                               display_id=self._standin_id)  # fmt: skip
+        follow = types.MethodType(Shown._update_standin, self)  # also where borrowed
         for w, name in _pictures(self.widget):
-            w.observe(lambda _change: settle(self._update_standin), name)
+            w.observe(lambda _change: settle(follow), name)
 
     def _update_standin(self) -> None:
         from IPython.display import update_display
 
-        update_display({"text/html": FALLBACK_CSS + box_standin(self.widget, self.noun),
+        noun = getattr(self, "noun", Shown.noun)
+        update_display({"text/html": FALLBACK_CSS + box_standin(self.widget, noun),
                         "text/plain": STANDIN_PLAIN}, raw=True,
                        display_id=self._standin_id)  # fmt: skip
 
