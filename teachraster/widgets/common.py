@@ -75,7 +75,10 @@ def labelled(text: str, control) -> widgets.HBox:
     ToggleButtons put their own ``description`` on a line of its own when space is short;
     a separate Label keeps label and buttons on one line.
     """
-    label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0"))
+    # the label never shrinks below its text (a crowded row cut "format" to "forma"); in a
+    # row too narrow for all, the buttons wrap instead (a row that wraps keeps them on one line)
+    label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0",
+                                                      flex="0 0 auto"))  # fmt: skip
     return widgets.HBox(
         [label, control], layout=widgets.Layout(align_items="center", margin="0 24px 0 0")
     )
