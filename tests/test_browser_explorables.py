@@ -317,7 +317,7 @@ def test_saved_notebook_reopened_shows_each_last_picture(lesson, lab):  # noqa: 
     shown = [f for f in lesson.locator(".teachraster-static").all() if f.is_visible()]
     assert len(shown) == len(TITLES)
     for f in shown:
-        assert "Run this cell to bring the" in f.inner_text()
+        assert "Run All (Run ▸ Run All Cells) to bring it back" in f.inner_text()
     assert "Click the pixels this triangle covers." in " ".join(f.inner_text() for f in shown)
 
 

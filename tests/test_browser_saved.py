@@ -3,9 +3,10 @@
 A notebook with a FillPlayer and a TriangleEditor is run, saved with its outputs, its kernel
 shut down, and opened again: the widgets' models are gone (a new kernel knows none of
 them), so JupyterLab's widget manager would say "Error displaying widget: model not found"
-in place of each. What the student must see instead is each widget's picture and "Run this
-cell to bring ... back" (teachraster.widgets.common.display_with_fallback); while the
-widgets are live, that fallback is hidden. An editor whose kernel is gone says so when a
+in place of each. What the student must see instead is each widget's stand-in (a Predict's
+question and choices, a picture) and a hint that works, "Run All (Run ▸ Run All Cells) to
+bring it back" (teachraster.widgets.common.display_with_fallback); while the widgets are
+live, that stand-in is hidden. An editor whose kernel is gone says so when a
 vertex is dragged ("The kernel does not answer ...").
 
 Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
@@ -35,7 +36,12 @@ CELLS = [
     "import json\npage = editor.display.widget\n"
     "print('EDITOR', json.dumps({'transform': page.transform, 'size': page.size, "
     "'handles': page.handles}))",
+    "from teachraster.widgets import Predict\n"
+    "Predict('Which way does it wind?', ['clockwise', 'counter-clockwise'], 'clockwise')",
+    "from teachraster.widgets import BlendingExplorer\nBlendingExplorer(size=(16, 16))",
 ]
+#: The stand-ins' hint (the editor's own words are its module's: teachraster/widgets/editor.py)
+HINT = "Run All (Run \u25b8 Run All Cells) to bring it back"
 
 
 API = """async ([method, path, body]) => {
@@ -99,8 +105,10 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
     canvas.wait_for(state="visible", timeout=120_000)
     editor = page.locator(".tr-drag img").first
     editor.wait_for(state="visible", timeout=60_000)
+    for text in ("Which way does it wind?", "Blending: order"):  # the last cells ran
+        page.locator(".jupyter-widgets", has_text=text).first.wait_for(timeout=60_000)
     fallbacks = page.locator(".teachraster-static")
-    assert fallbacks.count() == 2  # one per widget, in the page but hidden while they live
+    assert fallbacks.count() == 4  # one per widget, in the page but hidden while they live
     assert not any(f.is_visible() for f in fallbacks.all())
     # saved with its outputs, as a student's Ctrl+S does
     page.click(".lm-MenuBar-itemLabel:text-is('File')")
@@ -114,7 +122,7 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
             if "data" in o]  # fmt: skip
     # each widget: an output with the picture, and the widget's own (its text/html the same
     # stand-in, for converters that have no widget state)
-    assert sum("teachraster-static" in h for h in html) == 4
+    assert sum("teachraster-static" in h for h in html) == 8
 
     # The kernel goes away under the open page: a vertex dragged says so (no silent editor).
     out = page.locator(".jp-OutputArea-output", has_text="EDITOR").last
@@ -140,10 +148,14 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
     fallbacks.first.wait_for(state="visible", timeout=60_000)
     page.wait_for_timeout(2000)  # the widget manager has given up on the models by now
     shown = [f for f in fallbacks.all() if f.is_visible()]
-    assert len(shown) == 2
-    for f in shown:
-        assert "Run this cell to bring the" in f.inner_text()
-        img = f.locator("img")
+    assert len(shown) == 4
+    player, editor, question, explorer = (f.inner_text() for f in shown)
+    assert HINT in player and HINT in question and HINT in explorer
+    assert "to bring the editor back" in editor
+    assert "Which way does it wind?" in question and "counter-clockwise" in question
+    assert "Blending" in explorer  # its title
+    for f in (shown[0], shown[1], shown[3]):
+        img = f.locator("img").first
         assert img.evaluate("i => i.complete && i.naturalWidth > 100")
     errors = page.get_by_text("Error displaying widget")
     assert not any(e.is_visible() for e in errors.all()), "the manager's error is on show"

@@ -123,7 +123,7 @@ def test_the_saved_notebook_keeps_the_question_its_picture_and_the_verdict():
     q = _pixels()
     standin = q._standin()
     assert "Click the pixels this triangle covers." in standin
-    assert "data:image/png;base64," in standin and "Run this cell" in standin
+    assert "data:image/png;base64," in standin and "Run All (Run ▸ Run All Cells)" in standin
     q.given = q.data["answer"]
     q.check()
     assert "Right." in q._standin()

@@ -26,9 +26,15 @@ import numpy as np
 KEY = 8
 
 
+def keys_js() -> str:
+    """``static/keys.js``: keys pressed in a widget are the widget's, in JupyterLab and in
+    Notebook 7. Every page-side module of the package starts with it."""
+    return (Path(__file__).parent / "static" / "keys.js").read_text(encoding="utf-8")
+
+
 def frames_js() -> str:
     """The page-side module (ESM), read from the package (``static/frames.js``)."""
-    return (Path(__file__).parent / "static" / "frames.js").read_text(encoding="utf-8")
+    return keys_js() + (Path(__file__).parent / "static" / "frames.js").read_text(encoding="utf-8")
 
 
 def frame_rgba(fig) -> np.ndarray:

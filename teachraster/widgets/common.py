@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import base64
 import contextlib
+import html
 
 import ipywidgets as widgets
 import matplotlib as mpl
@@ -73,7 +75,10 @@ def labelled(text: str, control) -> widgets.HBox:
     ToggleButtons put their own ``description`` on a line of its own when space is short;
     a separate Label keeps label and buttons on one line.
     """
-    label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0"))
+    # the label never shrinks below its text (a crowded row cut "format" to "forma"); in a
+    # row too narrow for all, the buttons wrap instead (a row that wraps keeps them on one line)
+    label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0",
+                                                      flex="0 0 auto"))  # fmt: skip
     return widgets.HBox(
         [label, control], layout=widgets.Layout(align_items="center", margin="0 24px 0 0")
     )
@@ -109,10 +114,48 @@ def pattern_samples(label: str):
 
 class Shown:
     """What every figure widget shares: it shows ``self.widget`` (its box of controls and
-    figure) and closes its figure display (``self.display``) with every control of the box."""
+    figure) and closes its figure display (``self.display``) with every control of the box.
+
+    Displayed in a notebook, it leaves a stand-in before the widget (:func:`box_standin`: its
+    title, text and picture), which a notebook saved and reopened without a kernel shows in
+    place of "model not found"; the stand-in follows the picture once it settles
+    (:data:`SETTLE_S` after the last change, so a drag sends no second copy of each frame).
+    A widget with a box in ``self.widget`` but a base class of its own gets the same with
+    ``_ipython_display_ = Shown._ipython_display_``.
+    """
+
+    #: how the stand-in's hint names the widget: "... to bring the <noun> back"
+    noun = "explorer"
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    def _ipython_display_(self) -> None:
+        import os
+        import types
+        import uuid
+
+        if os.environ.get("TEACHRASTER_STATIC_PAGES") == "1":  # `teachraster html`: one output
+            from IPython.display import display
+
+            display(self._repr_mimebundle_(), raw=True)
+            return
+        noun = getattr(self, "noun", Shown.noun)  # also for a class that borrows this method
+        standin = box_standin(self.widget, noun)
+        self._standin_id = f"teachraster-standin-{uuid.uuid4().hex}"
+        display_with_fallback({**self._repr_mimebundle_(), "text/html": standin}, standin,
+                              display_id=self._standin_id)  # fmt: skip
+        follow = types.MethodType(Shown._update_standin, self)  # also where borrowed
+        for w, name in _pictures(self.widget):
+            w.observe(lambda _change: settle(follow), name)
+
+    def _update_standin(self) -> None:
+        from IPython.display import update_display
+
+        noun = getattr(self, "noun", Shown.noun)
+        update_display({"text/html": FALLBACK_CSS + box_standin(self.widget, noun),
+                        "text/plain": STANDIN_PLAIN}, raw=True,
+                       display_id=self._standin_id)  # fmt: skip
 
     def close(self) -> None:
         """Close the figure and every widget of the box."""
@@ -135,7 +178,12 @@ FALLBACK_CSS = (
 )
 
 
-def display_with_fallback(bundle: dict, fallback_html: str) -> None:
+#: The text/plain beside a stand-in (a front end without HTML).
+STANDIN_PLAIN = "(the widget's last picture: Run All to bring the widget back)"
+
+
+def display_with_fallback(bundle: dict, fallback_html: str, *, display_id: str | None = None
+                          ) -> None:  # fmt: skip
     """Display a widget's mime ``bundle`` after an output holding ``fallback_html``.
 
     JupyterLab prefers the widget view of a display and shows "Error displaying widget:
@@ -143,13 +191,114 @@ def display_with_fallback(bundle: dict, fallback_html: str) -> None:
     is never shown. In an output of its own the fallback is what a reopened notebook shows;
     :data:`FALLBACK_CSS` hides it while the live widget is on show. The bundle keeps its
     own ``text/html`` (a converter without the widgets' state shows that one, in place of
-    the widget; the separate fallback is then hidden, as beside a live widget).
+    the widget; the separate fallback is then hidden, as beside a live widget). With
+    ``display_id`` the fallback can be replaced later (``update_display``), as the picture
+    changes.
     """
     from IPython.display import publish_display_data
 
-    publish_display_data({"text/html": FALLBACK_CSS + fallback_html,
-                          "text/plain": "(the widget's picture: run the cell for the widget)"})  # fmt: skip
+    transient = {"display_id": display_id} if display_id else None
+    publish_display_data({"text/html": FALLBACK_CSS + fallback_html, "text/plain": STANDIN_PLAIN},
+                         transient=transient)  # fmt: skip
     publish_display_data(bundle[0] if isinstance(bundle, tuple) else bundle)
+
+
+def standin_hint(noun: str) -> str:
+    """The hint of every stand-in: what brings the widget back once its kernel is gone.
+
+    Run All, not "run this cell": in a reopened notebook the cell's names (the imports, the
+    triangle) come from the cells above it, so running it alone fails with ``NameError``.
+    """
+    return (f"<p><i>No kernel is running this {html.escape(noun)}: Run All (Run ▸ Run All "
+            f"Cells) to bring it back (this cell needs the cells above it).</i></p>")  # fmt: skip
+
+
+def standin_html(title: str, noun: str, picture: bytes = b"", text: str = "",
+                 pictures: tuple = ()) -> str:  # fmt: skip
+    """What a saved notebook shows once the kernel is gone: the ``title``, ``text`` (HTML,
+    e.g. a question), the hint (:func:`standin_hint`), then ``picture`` and ``pictures``
+    (PNG bytes: the last pictures the widget showed)."""
+    imgs = "".join(
+        f'<img alt="the {html.escape(noun)} as it was last drawn" '
+        f'src="data:image/png;base64,{base64.b64encode(png).decode("ascii")}" '
+        'style="max-width:100%">'
+        for png in (picture, *pictures)
+        if png
+    )
+    head = f"<div><b>{html.escape(title)}</b></div>" if title else ""
+    body = f"<div>{text}</div>" if text else ""
+    return f'<div class="teachraster-static">{head}{body}{standin_hint(noun)}{imgs}</div>'
+
+
+def choices_html(labels) -> str:
+    """``labels`` (HTML) as a row of boxes that look like the widget's buttons: a stand-in's
+    choices, which a reader of the saved notebook can still answer in their head."""
+    return "".join(
+        "<span style='display:inline-block;border:1px solid #999;border-radius:3px;"
+        f"padding:1px 8px;margin:2px 6px 2px 0'>{label}</span>"
+        for label in labels
+    )
+
+
+def _pictures(box) -> list:
+    """``(widget, trait)`` of every picture in ``box``'s tree, depth first: an
+    ``ipywidgets.Image``'s ``value``, a page figure's ``poster``."""
+    found = []
+    for child in getattr(box, "children", ()):
+        found += _pictures(child)
+    if isinstance(box, widgets.Image):
+        found.append((box, "value"))
+    elif hasattr(box, "has_trait") and box.has_trait("poster"):
+        found.append((box, "poster"))
+    return found
+
+
+def box_standin(box, noun: str) -> str:
+    """A stand-in for any widget box: the text of its HTML widgets (the title, the info
+    lines) and its pictures as they are now, with the hint."""
+    texts = []
+
+    def walk(w):
+        if isinstance(w, widgets.HTML) and w.value:
+            texts.append(w.value)
+        for child in getattr(w, "children", ()):
+            walk(child)
+
+    walk(box)
+    pngs = []
+    for w, name in _pictures(box):
+        value = getattr(w, name)  # an Image's value is a memoryview
+        png = bytes(value) if isinstance(value, bytes | bytearray | memoryview) else b""
+        if png.startswith(b"\x89PNG"):
+            pngs.append(png)
+    return standin_html("", noun, text="".join(texts), pictures=tuple(pngs))
+
+
+#: Seconds a stand-in waits after the last change of a picture before it follows it.
+SETTLE_S = 1.0
+_settling: dict = {}
+
+
+def settle(callback) -> None:
+    """Call ``callback`` once nothing has asked for it for :data:`SETTLE_S` seconds (each
+    call restarts the wait); without a running event loop (plain Python, tests), now."""
+    import asyncio
+
+    try:
+        loop = asyncio.get_running_loop()
+    except RuntimeError:
+        callback()
+        return
+    key = id(getattr(callback, "__self__", callback)), getattr(callback, "__name__", "")
+    waiting = _settling.pop(key, None)
+    if waiting is not None:
+        waiting.cancel()
+
+    def run():
+        _settling.pop(key, None)
+        callback()
+
+    _settling[key] = loop.call_later(SETTLE_S, run)
 
 
 #: Seconds a deferred redraw waits (see :func:`later`).

@@ -23,13 +23,13 @@ import numpy as np
 import traitlets
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.frames import changed_box, encode_png, frame_rgba
+from ..plotting.frames import changed_box, encode_png, frame_rgba, keys_js
 from .common import later
 
 
 def drag_js() -> str:
     """The page-side module (ESM), read from the package (``static/drag.js``)."""
-    return (Path(__file__).parent / "static" / "drag.js").read_text(encoding="utf-8")
+    return keys_js() + (Path(__file__).parent / "static" / "drag.js").read_text(encoding="utf-8")
 
 
 def fill_edit_blit(view) -> LayeredBlit:

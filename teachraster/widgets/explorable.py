@@ -18,8 +18,7 @@ One module, three places
     data the kernel computed, so the exported page stays live. A notebook saved with its
     outputs and reopened without running keeps a stand-in (:func:`standin_html`): the title,
     the last picture the page drew (sent by the page a moment after each change) and a hint
-    to run the cell, which works because the cell is self-contained (it imports what it
-    uses).
+    that works: Run All (the cell's names come from the cells above it).
 
 Writing one
     Subclass :class:`Explorable`, set ``_esm = esm_source("lib", ..., "explore_x")`` and
@@ -32,7 +31,6 @@ from __future__ import annotations
 
 import base64
 import binascii
-import html
 import json
 import os
 import uuid
@@ -41,20 +39,24 @@ from pathlib import Path
 import anywidget
 import traitlets
 
-from .common import FALLBACK_CSS
+from ..plotting.frames import keys_js
+from .common import FALLBACK_CSS, standin_html
 
 STATIC = Path(__file__).parent / "static"
 
 
 def esm_source(*parts: str) -> str:
-    """The page-side module of an explorable: ``explore_base.js``, then ``parts`` in order.
+    """The page-side module of an explorable: ``keys.js`` (the package's key guard, from
+    ``teachraster/plotting/static``), ``explore_base.js``, then ``parts`` in order.
 
     Each part is a file of ``static/`` without its ``.js``. They are joined into one module
     (anywidget loads one ESM; an offline page inlines it), so they share one scope: names
     must not repeat across parts.
     """
     names = ("explore_base", *parts)
-    text = "\n".join(f"// ---- {n}.js\n" + (STATIC / f"{n}.js").read_text("utf-8") for n in names)
+    text = keys_js() + "\n".join(
+        f"// ---- {n}.js\n" + (STATIC / f"{n}.js").read_text("utf-8") for n in names
+    )
     if "</script" in text.lower():  # would end an offline page's inline script early
         raise ValueError(f"{names}: a module may not contain '</script'")
     return text
@@ -74,23 +76,6 @@ def offline_html(esm: str, data: dict, state: dict, *, css_class: str = "") -> s
         f'<script type="module">\n{esm}\n'
         f"const [DATA, STATE] = {payload};\n"
         f'mountStatic(document.getElementById("{element}"), DATA, STATE);\n</script>\n'
-    )
-
-
-def standin_html(title: str, noun: str, picture: bytes = b"", text: str = "") -> str:
-    """What a saved notebook shows once the kernel is gone: the title, ``text`` (HTML, e.g.
-    a question), the last picture the page drew and a hint that works (the cell imports
-    what it uses)."""
-    img = ""
-    if picture:
-        src = "data:image/png;base64," + base64.b64encode(picture).decode("ascii")
-        img = (f'<img alt="the {html.escape(noun)} as it was last drawn" src="{src}" '
-               'style="max-width:100%">')  # fmt: skip
-    body = f"<div>{text}</div>" if text else ""
-    return (
-        f'<div class="teachraster-static"><div><b>{html.escape(title)}</b></div>{body}'
-        f"<p><i>Run this cell to bring the {html.escape(noun)} back (no kernel is running "
-        f"it).</i></p>{img}</div>"
     )
 
 
@@ -122,7 +107,7 @@ class Explorable(anywidget.AnyWidget):
 
     data = traitlets.Dict().tag(sync=True)
     state = traitlets.Dict().tag(sync=True)
-    #: how the stand-in's hint names it: "Run this cell to bring the <noun> back"
+    #: how the stand-in's hint names it (:func:`~teachraster.widgets.common.standin_hint`)
     noun = "explorable"
     #: the stand-in's title
     title = "An explorable"

@@ -28,13 +28,14 @@ import anywidget
 import ipywidgets as widgets
 import traitlets
 
+from ..plotting.frames import keys_js
 from .display import FigureDisplay
 from .dragging import DragFigure
 
 
 def slider_js() -> str:
     """The page-side module (ESM), read from the package (``static/slider.js``)."""
-    return (Path(__file__).parent / "static" / "slider.js").read_text(encoding="utf-8")
+    return keys_js() + (Path(__file__).parent / "static" / "slider.js").read_text(encoding="utf-8")
 
 
 class LiveSlider(anywidget.AnyWidget):

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import base64
 import os
+import uuid
 
 import ipywidgets as widgets
 
@@ -15,7 +15,9 @@ from ..plotting.blitting import STILL, LayeredBlit
 from ..plotting.frames import encode_png, frame_rgba, render_group, step_texts
 from ..plotting.pages import page_data, player_fragment
 from .common import (
+    FALLBACK_CSS,
     SAMPLE_PATTERNS,
+    STANDIN_PLAIN,
     Holdable,
     close_tree,
     display_with_fallback,
@@ -23,6 +25,8 @@ from .common import (
     labelled,
     later,
     pattern_samples,
+    settle,
+    standin_html,
     style_context,
     title_html,
 )
@@ -151,6 +155,8 @@ class FillPlayer(Holdable):
         self.backend = resolve_backend(backend)
         self._fills: dict[tuple[str, str, str], object] = {}
         self._posters: dict = {}  # (fill key, step) -> (PNG, (h, w)) drawn ahead
+        self._poster_key = None  # (fill key, step) of frames.poster
+        self._standin_png = (None, b"")  # (fill key, step), PNG: the stand-in's picture
         self.samples = widgets.Dropdown(options=list(SAMPLE_PATTERNS), value=samples,
                                         layout=widgets.Layout(width="220px"))  # fmt: skip
         self.fill = self._rasterize(method, interpolation)
@@ -301,6 +307,7 @@ class FillPlayer(Holdable):
             self.frames.captions, self.frames.infos = captions, infos
             self.frames.frame_height, self.frames.frame_width = size
             self.frames.poster = poster
+            self._poster_key = (fill_key, step) if poster else None
             self.frames.alt = f"the {self.trace.method} fill of a triangle, step by step"
             self.frames.fill = "|".join(fill_key)
             self.frames.gen += 1
@@ -397,7 +404,8 @@ class FillPlayer(Holdable):
 
     @property
     def interval(self) -> int:
-        """Milliseconds per step when playing (the page plays; set it from code)."""
+        """Milliseconds per step when playing (the page plays; its speed menu sets it, and
+        setting it from code moves the menu)."""
         return self.frames.interval
 
     @interval.setter
@@ -462,15 +470,27 @@ class FillPlayer(Holdable):
 
             display(self._repr_mimebundle_(), raw=True)
             return
-        # the picture and a hint in an output of their own: what a reopened notebook shows
-        display_with_fallback(self._repr_mimebundle_(), self.static_fallback(full=False))
+        # the picture and a hint in an output of their own: what a reopened notebook shows;
+        # it follows the step on show once the student stops (settle: no copy per step)
+        self._standin_id = f"teachraster-standin-{uuid.uuid4().hex}"
+        display_with_fallback(self._repr_mimebundle_(), self.static_fallback(full=False),
+                              display_id=self._standin_id)  # fmt: skip
+        self.frames.observe(lambda _change: settle(self._update_standin), ("value", "gen"))
+
+    def _update_standin(self) -> None:
+        from IPython.display import update_display
+
+        update_display({"text/html": FALLBACK_CSS + self.static_fallback(full=False),
+                        "text/plain": STANDIN_PLAIN}, raw=True,
+                       display_id=self._standin_id)  # fmt: skip
 
     def static_fallback(self, *, full: bool | None = None) -> str:
         """HTML standing in for the player where no kernel is running.
 
         With ``full`` (default: when ``TEACHRASTER_STATIC_PAGES`` is set, as ``teachraster
         html`` does) the whole offline player of :mod:`teachraster.widgets.page`, which
-        steps and plays with no kernel; else the picture on show and a hint to run the cell.
+        steps and plays with no kernel; else the picture on show and the hint that brings
+        the player back (:func:`~teachraster.widgets.common.standin_html`).
         """
         if full is None:
             full = bool(os.environ.get("TEACHRASTER_STATIC_PAGES"))
@@ -478,10 +498,18 @@ class FillPlayer(Holdable):
             data = page_data(self.view, step=self.frames.value, interval=self.interval)
             self.view.show_step(self.frames.value, draw=False)
             return player_fragment(data)
-        poster = base64.b64encode(self.frames.poster).decode("ascii")
-        return (f'<div class="teachraster-static"><p><i>Run this cell to bring the player '
-                f'back (no kernel is running it).</i></p><img alt="{self.frames.alt}" '
-                f'src="data:image/png;base64,{poster}" style="max-width:100%"></div>')  # fmt: skip
+        return standin_html("", "player", self._picture_on_show())
+
+    def _picture_on_show(self) -> bytes:
+        """The PNG of the step on show: the poster when it is that step's, else one draw."""
+        key = (self._fill_key(), self.frames.value)
+        if self._poster_key == key and self.frames.poster:
+            return self.frames.poster
+        if self._standin_png[0] != key:  # drawn once per step the student stops at
+            self.view.show_step(self.frames.value, draw=False)
+            self.fig.canvas.draw()
+            self._standin_png = (key, encode_png(frame_rgba(self.fig)))
+        return self._standin_png[1]
 
     def _offline_page_(self):
         """``teachraster html``: every step of the fill, stepping and playing in the page."""

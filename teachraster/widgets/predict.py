@@ -32,7 +32,7 @@ from collections.abc import Callable, Sequence
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
 
-from .common import style_context
+from .common import choices_html, display_with_fallback, standin_html, style_context
 
 #: Environment variable that forces the headless behaviour ("1") or the interactive one ("0").
 HEADLESS_ENV = "TEACHRASTER_HEADLESS"
@@ -285,13 +285,26 @@ class Predict:
             return  # no notebook to write into (plain Python, a test driving the widget)
         update_display(HTML(self.record_html()), display_id=self._display_id)
 
+    def standin_html(self) -> str:
+        """What a notebook saved and reopened without a kernel shows in place of the widget:
+        the question and its choices (or "a number"), and the hint that brings it back."""
+        if self.choices:
+            boxes = choices_html([html.escape(c) for c in self.choices])
+        else:
+            boxes = "<span style='color:#555'>(your answer: a number)</span>"
+        return standin_html("", "question", text=f"<b>Predict first.</b> {self.question}"
+                            f"<div>{boxes}</div>")  # fmt: skip
+
     def _ipython_display_(self) -> None:
         from IPython.display import HTML, display
 
         if self.headless:
             self._display_headless()
             return
-        display(self.widget)
+        # the question in an output of its own, before the widget: what a reopened notebook
+        # shows where JupyterLab would say "model not found" (hidden while the widget lives)
+        standin = self.standin_html()
+        display_with_fallback({**self.widget._repr_mimebundle_(), "text/html": standin}, standin)
         display(HTML(""), display_id=self._display_id)  # filled in by _record
 
     def _display_headless(self) -> None:

@@ -65,7 +65,7 @@ import numpy as np
 
 from ..core.validate import as_finite, as_float
 from ..plotting.frames import encode_png, frame_rgba
-from .common import font_scale, style_context
+from .common import choices_html, font_scale, style_context
 from .explorable import Explorable, esm_source
 
 
@@ -159,7 +159,9 @@ class FigurePrediction(Explorable):
         raise NotImplementedError
 
     def standin_text(self) -> str:
-        text = f"<b>Predict first.</b> {self.question}"
+        text = self.question  # under the title "Predict first"
+        if self.data.get("items"):  # an order question: its items, in the order shown first
+            text += f"<div>{choices_html(self.data['items'])}</div>"
         if self.revealed:
             text += f"<div><i>{self.verdict()}</i></div>"
         return text

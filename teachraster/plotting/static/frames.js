@@ -13,7 +13,7 @@
 
 const CSS = `
 .tr-frames { font-family: var(--jp-ui-font-family, sans-serif); max-width: 100%; }
-.tr-frames .tr-bar { display: flex; align-items: center; gap: 4px; flex-wrap: nowrap;
+.tr-frames .tr-bar { display: flex; align-items: center; gap: 4px; flex-wrap: wrap;
   margin: 4px 0; }
 .tr-frames button { min-width: 34px; height: 28px; padding: 0 6px; cursor: pointer;
   border: 1px solid #bbb; border-radius: 3px; background: #f5f5f5; font-size: 14px; }
@@ -24,15 +24,84 @@ const CSS = `
   font-size: 15px; margin: 2px 0 4px 0; }
 .tr-frames canvas { display: block; max-width: 100%; height: auto; }
 .tr-frames .tr-notice { color: #b00020; font-size: 13px; min-height: 0; }
+.tr-frames button { display: inline-flex; align-items: center; justify-content: center;
+  gap: 4px; white-space: nowrap; }
+.tr-frames .tr-icon { width: 12px; height: 12px; fill: currentColor; flex: none; }
+.tr-frames .tr-speed { white-space: nowrap; font-size: 13px; }
+.tr-frames .tr-speed select { font-size: 13px; height: 26px; margin-left: 4px; }
 `;
 
-function makeButton(label, text) {
+// The buttons' icons, drawn (SVG paths in a 16 x 16 box): the symbols U+23EE/U+23ED are
+// missing from the fonts of many machines, where they showed as empty boxes.
+const ICONS = {
+  first: "M2 2h2.5v12H2z M14 2v12L5 8z",
+  prev: "M12 2v12L4 8z",
+  play: "M4 2v12l10-6z",
+  pause: "M3 2h3.5v12H3z M9.5 2H13v12H9.5z",
+  next: "M4 2v12l8-6z",
+  last: "M11.5 2H14v12h-2.5z M2 2v12l9-6z",
+};
+const SVG = "http://www.w3.org/2000/svg";
+
+function icon(name) {
+  const svg = document.createElementNS(SVG, "svg");
+  svg.setAttribute("viewBox", "0 0 16 16");
+  svg.setAttribute("class", "tr-icon");
+  svg.setAttribute("aria-hidden", "true");
+  svg.dataset.icon = name;
+  const path = document.createElementNS(SVG, "path");
+  path.setAttribute("d", ICONS[name]);
+  svg.appendChild(path);
+  return svg;
+}
+
+// Speeds offered when playing, in steps per second (the player's interval is 1000 / speed
+// ms): a 172-step fill takes 69 s at 2.5 steps a second, 7 s at 25.
+const SPEEDS = [1, 2.5, 5, 10, 25, 50];
+
+function speedText(ms) {
+  const v = 1000 / ms;
+  const n = Number.isInteger(v) ? v : Number(v.toPrecision(2));
+  return `${n} ${n === 1 ? "step" : "steps"}/s`;
+}
+
+// A button showing icon `name` and `text` (optional), named `label` for screen readers.
+function makeButton(label, name, text = "") {
   const b = document.createElement("button");
   b.type = "button";
-  b.textContent = text;
+  setButton(b, label, name, text);
+  return b;
+}
+
+function setButton(b, label, name, text = "") {
+  b.replaceChildren(icon(name));
+  if (text) b.append(text);
   b.title = label;
   b.setAttribute("aria-label", label);
-  return b;
+}
+
+// The speed menu: SPEEDS, and the player's own interval when it is none of them.
+function speedMenu() {
+  const wrap = document.createElement("label");
+  wrap.className = "tr-speed";
+  wrap.append("speed");
+  const select = document.createElement("select");
+  select.setAttribute("aria-label", "speed");
+  select.title = "speed when playing";
+  wrap.appendChild(select);
+  function choose(ms) {
+    const values = new Set(SPEEDS.map((v) => 1000 / v));
+    values.add(ms);
+    const sorted = [...values].sort((a, b) => b - a); // slow to fast
+    select.replaceChildren(...sorted.map((v) => {
+      const o = document.createElement("option");
+      o.value = String(v);
+      o.textContent = speedText(v);
+      return o;
+    }));
+    select.value = String(ms);
+  }
+  return { wrap, select, choose };
 }
 
 function b64Bytes(b64) {
@@ -59,6 +128,7 @@ async function decodeGroup(places, blobs) {
 // poster (PNG bytes of the first picture, optional), request(g) (ask for group g; absent
 // in a static page), onStep(k) (the step settled: slider released, button, pause).
 export function mountFrames(el, opts) {
+  installKeyGuard(); // keys.js: the arrow keys move the step in Notebook 7 too
   if (!document.getElementById("tr-frames-css")) {
     const style = document.createElement("style");
     style.id = "tr-frames-css";
@@ -69,11 +139,12 @@ export function mountFrames(el, opts) {
   root.className = "tr-frames";
   const bar = document.createElement("div");
   bar.className = "tr-bar";
-  const first = makeButton("first step", "⏮");
-  const prev = makeButton("previous step", "◀");
-  const play = makeButton("play", "▶ play");
-  const next = makeButton("next step", "▶");
-  const last = makeButton("last step", "⏭");
+  const first = makeButton("first step", "first");
+  const prev = makeButton("previous step", "prev");
+  const play = makeButton("play", "play", "play");
+  const next = makeButton("next step", "next");
+  const last = makeButton("last step", "last");
+  const speed = speedMenu();
   const slider = document.createElement("input");
   slider.type = "range";
   slider.min = "0";
@@ -81,7 +152,7 @@ export function mountFrames(el, opts) {
   slider.title = "step";
   const info = document.createElement("span");
   info.className = "tr-info";
-  bar.append(first, prev, play, next, last, slider, info);
+  bar.append(first, prev, play, next, last, slider, info, speed.wrap);
   const caption = document.createElement("div");
   caption.className = "tr-caption teachraster-caption";
   caption.setAttribute("aria-live", "polite");
@@ -173,8 +244,8 @@ export function mountFrames(el, opts) {
   function checkAlive(g) {
     if (s.inflight === g && !s.groups.has(g)) {
       notice.textContent =
-        "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
-        "the player back.";
+        "The kernel does not answer (stopped or restarted?): Run All (Run \u25b8 Run All Cells) " +
+        "to bring the player back.";
     }
   }
 
@@ -211,9 +282,7 @@ export function mountFrames(el, opts) {
     if (s.timer !== null) {
       clearInterval(s.timer);
       s.timer = null;
-      play.textContent = "▶ play";
-      play.title = "play";
-      play.setAttribute("aria-label", "play");
+      setButton(play, "play", "play", "play");
       settle();
     }
   }
@@ -227,9 +296,7 @@ export function mountFrames(el, opts) {
 
   function start() {
     if (s.want >= s.n - 1) show(0);
-    play.textContent = "⏸ pause";
-    play.title = "pause (playing)";
-    play.setAttribute("aria-label", "pause (play is on)");
+    setButton(play, "pause (play is on)", "pause", "pause");
     s.timer = setInterval(tick, s.interval);
   }
 
@@ -302,13 +369,20 @@ export function mountFrames(el, opts) {
 
   function setInterval_(ms) {
     s.interval = ms;
+    speed.choose(ms);
+    root.dataset.interval = String(ms); // for tests and benchmarks
     if (s.timer !== null) {
       clearInterval(s.timer);
       s.timer = setInterval(tick, ms);
     }
   }
 
-  s.interval = opts.interval ?? 400;
+  speed.select.addEventListener("change", () => {
+    const ms = Number(speed.select.value);
+    setInterval_(ms);
+    if (opts.onInterval) opts.onInterval(ms);
+  });
+  setInterval_(opts.interval ?? 400);
   return { root, reset, addGroup, show, stop, start, setInterval: setInterval_, state: s };
 }
 
@@ -332,6 +406,10 @@ function render({ model, el }) {
         model.set("value", k);
         model.save_changes();
       }
+    },
+    onInterval: (ms) => {
+      model.set("interval", ms); // the kernel's player.interval follows the menu
+      model.save_changes();
     },
   });
   function fromModel() {

@@ -109,6 +109,7 @@ async function inflate(bytes) {
 }
 
 function render({ model, el }) {
+  installKeyGuard(); // keys.js: keys on the controls beside it are theirs in Notebook 7 too
   if (!document.getElementById("tr-drag-css")) {
     const style = document.createElement("style");
     style.id = "tr-drag-css";
@@ -219,8 +220,8 @@ function render({ model, el }) {
   function checkAlive(seq) {
     if (s.pending.has(seq)) {
       notice.textContent =
-        "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
-        "the editor back.";
+        "The kernel does not answer (stopped or restarted?): Run All (Run \u25b8 Run All Cells) " +
+        "to bring the editor back.";
     }
   }
 

@@ -90,39 +90,17 @@ export function element(tag, attrs = {}, children = []) {
   return e;
 }
 
-// Keys pressed inside an explorable are its own. Notebook 7 (and JupyterLab in some modes)
-// handles shortcuts in a keydown listener on the document's capture phase, which stops the
-// event before it reaches the element (an arrow moves to the next cell instead). A listener on
-// the window's capture phase runs before it: for a target inside an explorable it calls the
-// element's own handler (set with onKeys) and stops the event there; a native control (a
-// slider, a button) keeps its default action. Escape, Tab, Shift+Enter and the keys with
-// Ctrl, Alt or Meta stay the notebook's.
-function installKeyGuard() {
-  if (typeof window === "undefined" || window.__trKeyGuard) return;
-  window.__trKeyGuard = true;
-  window.addEventListener("keydown", (e) => {
-    const t = e.target;
-    if (!(t instanceof Element) || !t.closest(".tr-x")) return;
-    if (e.key === "Escape" || e.key === "Tab" || (e.key === "Enter" && e.shiftKey)) return;
-    if (e.ctrlKey || e.metaKey || e.altKey) return;
-    if (t.__trKeydown) t.__trKeydown(e);
-    e.stopPropagation();
-  }, true);
-}
-
-// `handler(event)` for the keys pressed on `el` (see installKeyGuard)
-export function onKeys(el, handler) {
-  installKeyGuard();
-  el.__trKeydown = handler;
-}
+// installKeyGuard, onKeys: keys.js (teachraster/plotting/static), joined before this file.
 
 // The frame of every explorable: a title, its explanation, then its parts. Keys pressed
 // inside are the explorable's (installKeyGuard): Jupyter's shortcuts (arrows move between
-// cells in command mode, in JupyterLab and Notebook 7) do not take them.
+// cells in command mode, in JupyterLab and Notebook 7) do not take them. Escape, Shift+Enter
+// and Ctrl+S still do: the frame is not marked `data-lm-suppress-shortcuts`, which would
+// hide every shortcut from the notebook while the focus is inside.
 export function frame(el, title, subtitle) {
   addCss("tr-x-base-css", BASE_CSS);
   installKeyGuard();
-  const root = element("div", { class: "tr-x", "data-lm-suppress-shortcuts": "true" });
+  const root = element("div", { class: "tr-x" });
   if (title) root.append(element("div", { class: "tr-x-title", text: title }));
   if (subtitle) root.append(element("div", { class: "tr-x-sub", html: subtitle }));
   root.addEventListener("keydown", (e) => e.stopPropagation());
@@ -403,7 +381,7 @@ function render({ model, el }) {
 // An offline page: the explorable computes everything itself (no kernel).
 export function mountStatic(el, data, state) {
   const hint = el.parentElement && el.parentElement.querySelector(".tr-x-hint-static");
-  if (hint) hint.style.display = "none"; // the stand-in's "run this cell": not needed now
+  if (hint) hint.style.display = "none"; // the stand-in's hint to run the lesson: not needed now
   const view = mount(el, data, pageHost(state || data.state));
   if (el.dataset) el.dataset.mounted = "1";
   return view;

@@ -19,6 +19,7 @@ function format(v, spec) {
 }
 
 function render({ model, el }) {
+  installKeyGuard(); // keys.js: the arrow keys move this slider in Notebook 7 too
   const row = document.createElement("div");
   row.className = "tr-live-slider";
   row.style.cssText = "display:flex;align-items:center;gap:8px;margin:2px 0;";
@@ -69,8 +70,8 @@ function render({ model, el }) {
     setTimeout(() => {
       if (s.pending.has(seq)) {
         notice.textContent =
-          "The kernel does not answer (stopped or restarted?): run this cell again to bring " +
-          "the widget back.";
+          "The kernel does not answer (stopped or restarted?): Run All (Run \u25b8 Run All Cells) " +
+          "to bring the widget back.";
       }
     }, 20000); // far beyond any render: the kernel is gone, not slow
     model.send({ type: "value", value, seq, final });
