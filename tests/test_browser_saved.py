@@ -150,8 +150,7 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
     shown = [f for f in fallbacks.all() if f.is_visible()]
     assert len(shown) == 4
     player, editor, question, explorer = (f.inner_text() for f in shown)
-    assert HINT in player and HINT in question and HINT in explorer
-    assert "to bring the editor back" in editor
+    assert all(HINT in t for t in (player, editor, question, explorer))  # one hint for all
     assert "Which way does it wind?" in question and "counter-clockwise" in question
     assert "Blending" in explorer  # its title
     for f in (shown[0], shown[1], shown[3]):

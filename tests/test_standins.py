@@ -25,16 +25,19 @@ from teachraster.widgets.common import Shown, _pictures
 VIEW = "application/vnd.jupyter.widget-view+json"
 HINT = "Run All (Run ▸ Run All Cells) to bring it back"
 
-#: Widgets whose display is their own module's (owned with their lessons): they leave a
-#: stand-in once they display through ``Shown`` (or ``display_with_fallback``) too.
-OWN_DISPLAY = {"TriangleEditor", "TileExplorer", "TexturedPlaneViewer", "PixelInspector",
-               "FilterExplorer", "FrameInspector", "PlaneExplorer", "DepthPrecisionExplorer",
-               "CasePicker"}  # fmt: skip
+#: Widgets that display through ``Shown`` without inheriting it (each borrows its
+#: ``_ipython_display_``; a base class of their own): the explorers of lessons 03 to 11.
+BORROWS_SHOWN = {"TileExplorer", "TexturedPlaneViewer", "PixelInspector", "FilterExplorer",
+                 "FrameInspector", "PlaneExplorer", "DepthPrecisionExplorer",
+                 "CasePicker"}  # fmt: skip
 
 
 def _in_scope():
-    made = examples()
-    return sorted(n for n in made if n not in OWN_DISPLAY)
+    return sorted(examples())
+
+
+def _shows_like_shown(widget) -> bool:
+    return isinstance(widget, Shown) or type(widget)._ipython_display_ is Shown._ipython_display_
 
 
 @pytest.fixture
@@ -52,8 +55,8 @@ def _pngs(html: str) -> list[bytes]:
     ]
 
 
-def test_the_widgets_left_out_are_widgets():
-    assert OWN_DISPLAY <= set(examples())  # a renamed widget is noticed here
+def test_the_widgets_that_borrow_shown_are_widgets():
+    assert BORROWS_SHOWN <= set(examples())  # a renamed widget is noticed here
 
 
 @pytest.mark.parametrize("name", _in_scope())
@@ -71,7 +74,8 @@ def test_each_widget_view_follows_a_standin_with_a_hint_that_works(name, shown):
         assert "<style>" in standin  # hides it while the widget lives
     # the picture drawn by the kernel (an explorable's comes from its page, once drawn there;
     # the PredictOrder example has no picture)
-    if isinstance(widget, Shown) or name in ("FillPlayer", "PredictPixels", "PredictPoint"):
+    drawn = ("FillPlayer", "PredictPixels", "PredictPoint", "TriangleEditor")
+    if _shows_like_shown(widget) or name in drawn:
         assert any(p.startswith(b"\x89PNG") for p in _pngs(shown[views[0] - 1]["text/html"]))
 
 
@@ -152,9 +156,12 @@ def test_saved_outputs_carry_a_standin_before_each_widget_view(monkeypatch, tmp_
         assert now and then and now != then
 
 
-@pytest.mark.parametrize("name", sorted(OWN_DISPLAY - {"TriangleEditor"}))
-def test_the_widgets_with_a_display_of_their_own_can_borrow_shown(name, shown, monkeypatch):
-    """How their modules adopt it: ``Shown``'s display gives each its title and picture."""
+@pytest.mark.parametrize("name", sorted(BORROWS_SHOWN))
+def test_the_explorers_that_borrow_shown_show_their_title_and_follow_their_picture(
+    name, shown, monkeypatch
+):
+    """Each class displays through ``Shown`` (its own ``_ipython_display_``, called as a
+    notebook would): its title and picture, then the picture it is left on."""
     import numpy as np
 
     from teachraster.plotting.frames import encode_png
@@ -163,7 +170,8 @@ def test_the_widgets_with_a_display_of_their_own_can_borrow_shown(name, shown, m
     monkeypatch.setattr(IPython.display, "update_display",
                         lambda data, **kw: updates.append((data, kw)))  # fmt: skip
     widget = examples()[name]()
-    Shown._ipython_display_(widget)
+    assert _shows_like_shown(widget)
+    widget._ipython_display_()
     standin, view = shown
     assert VIEW in view and HINT in standin["text/html"]
     assert any(p.startswith(b"\x89PNG") for p in _pngs(standin["text/html"]))

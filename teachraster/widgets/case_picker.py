@@ -21,7 +21,7 @@ import numpy as np
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
-from .common import close_tree, labelled, style_context, title_html
+from .common import Shown, close_tree, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
@@ -353,6 +353,10 @@ class CasePicker:
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
+    noun = "case picker"  # the stand-in's hint: "No kernel is running this case picker"
 
     def close(self) -> None:
         """Close every widget of the picker."""

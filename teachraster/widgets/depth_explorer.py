@@ -16,7 +16,7 @@ import numpy as np
 from ..pipeline.visibility.depth import depth_resolution, fights
 from ..plotting import COLORS
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from .common import close_tree, labelled, style_context, title_html
+from .common import Shown, close_tree, labelled, style_context, title_html
 from .display import new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -237,6 +237,9 @@ class DepthPrecisionExplorer:
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
 
     def close(self) -> None:
         """Close every widget of the explorer."""

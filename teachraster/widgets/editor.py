@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import base64
 import math
 import time
 
@@ -19,6 +18,7 @@ from .common import (
     display_with_fallback,
     fill_axes,
     labelled,
+    standin_html,
     style_context,
     title_html,
 )
@@ -381,10 +381,7 @@ class TriangleEditor(Holdable):
 
             display(self._repr_mimebundle_(), raw=True)
             return
-        src = "data:image/png;base64," + base64.b64encode(poster).decode("ascii")
-        html = ('<div class="teachraster-static"><p><i>Run this cell to bring the editor back '
-                f'(no kernel is running it).</i></p><img alt="the triangle\'s fill" '
-                f'src="{src}" style="max-width:100%"></div>')  # fmt: skip
+        html = standin_html("", "editor", poster)  # the hint every stand-in gives
         display_with_fallback({**self._repr_mimebundle_(), "text/html": html}, html)
 
     def close(self) -> None:

@@ -14,7 +14,7 @@ from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .ahead import TogglesAhead
-from .common import close_tree, later, style_context, title_html
+from .common import Shown, close_tree, later, style_context, title_html
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -300,6 +300,9 @@ class FilterExplorer:
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
 
     def close(self) -> None:
         """Close every widget of the explorer."""

@@ -24,7 +24,7 @@ from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
 from ..plotting.frame_debug import fit_title
-from .common import Holdable, close_tree, style_context, title_html
+from .common import Holdable, Shown, close_tree, style_context, title_html
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
 #: The views the chooser offers: the shaded image, then every overlay.
@@ -333,6 +333,10 @@ class FrameInspector(Holdable):
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
+    noun = "inspector"  # the stand-in's hint: "No kernel is running this inspector"
 
     def close(self) -> None:
         """Close every widget of the inspector."""

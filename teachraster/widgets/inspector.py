@@ -14,6 +14,7 @@ from ..plotting.antialiasing import sample_data
 from .common import (
     SAMPLE_PATTERNS,
     Holdable,
+    Shown,
     close_tree,
     pattern_samples,
     style_context,
@@ -153,6 +154,10 @@ class PixelInspector(Holdable):
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
+    noun = "inspector"  # the stand-in's hint: "No kernel is running this inspector"
 
     def close(self) -> None:
         """Close every widget of the inspector."""

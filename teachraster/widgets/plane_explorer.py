@@ -23,7 +23,7 @@ from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.common import screen_ticks
-from .common import close_tree, style_context, title_html
+from .common import Shown, close_tree, style_context, title_html
 from .display import new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -332,6 +332,9 @@ class PlaneExplorer:
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
 
     def close(self) -> None:
         """Close every widget of the explorer."""

@@ -13,7 +13,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from .common import close_tree, style_context, title_html
+from .common import Shown, close_tree, style_context, title_html
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -272,6 +272,10 @@ class TexturedPlaneViewer:
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
+    noun = "viewer"  # the stand-in's hint: "No kernel is running this viewer"
 
     def close(self) -> None:
         """Close every widget of the viewer."""

@@ -9,7 +9,7 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.tiles import block_mask
-from .common import Holdable, fill_axes, labelled, style_context, title_html
+from .common import Holdable, Shown, fill_axes, labelled, style_context, title_html
 from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
 #: Block-size choices: llvmpipe's, and smaller hierarchies that read on a small grid.
@@ -165,6 +165,9 @@ class TileExplorer(Holdable):
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
+
+    # a saved notebook reopened without a kernel shows its last picture, not "model not found"
+    _ipython_display_ = Shown._ipython_display_
 
     def close(self) -> None:
         """Close every widget of the explorer (depth first)."""
