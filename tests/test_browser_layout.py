@@ -33,6 +33,11 @@ WIDE = """() => [...document.querySelectorAll('.jp-OutputArea-output .widget-hbo
     .filter(r => r.offsetWidth > 0 && r.scrollWidth > r.clientWidth + 1)
     .map(r => [r.textContent.slice(0, 30), r.clientWidth, r.scrollWidth])"""
 
+#: how many lines each group of toggle buttons takes
+TOGGLE_ROWS = """() => [...document.querySelectorAll('.jp-OutputArea-output .widget-toggle-buttons')]
+    .filter(g => g.offsetWidth > 0)
+    .map(g => new Set([...g.querySelectorAll('button')].map(b => b.offsetTop)).size)"""
+
 
 def test_labels_are_not_cut(lab, page):  # noqa: F811
     _run(page, lab, CELLS, "labels.ipynb")
@@ -41,8 +46,8 @@ def test_labels_are_not_cut(lab, page):  # noqa: F811
         page.set_viewport_size(size)
         page.wait_for_timeout(500)
         assert page.evaluate(CUT) == [], size
-        if size["width"] == 1400:  # the label's room is not taken from the column
-            # (at 1024 x 768 the explorer's row of three controls is too wide whatever the
-            # label does: that row must wrap, in depth_explorer.py)
-            assert page.evaluate(WIDE) == [], size
+        # the label's room is not taken from the column: a row too wide wraps (at
+        # 1024 x 768 the explorer's row showed 203 px in a 127 px box)
+        assert page.evaluate(WIDE) == [], size
+        assert page.evaluate(TOGGLE_ROWS) == [1], size  # the format's toggles on one line
     page.set_viewport_size({"width": 1400, "height": 900})

@@ -138,7 +138,10 @@ class DepthPrecisionExplorer:
             "Where the curve rises above the dashed line, two surfaces δ apart store the same "
             "depth and z-fight. Move the near plane out, add bits, or reverse Z with float32.",
         )
-        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse])
+        # a narrow column (1024 x 768) moves whole controls to a second line; a row that
+        # shrank them instead cut the label and wrapped the format's toggles
+        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse],
+                                layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
         self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
             self._ahead = self.display.ahead(self.near, self)  # drawn while the kernel idles
