@@ -27,9 +27,11 @@ KEY = 8
 
 
 def keys_js() -> str:
-    """``static/keys.js``: keys pressed in a widget are the widget's, in JupyterLab and in
-    Notebook 7. Every page-side module of the package starts with it."""
-    return (Path(__file__).parent / "static" / "keys.js").read_text(encoding="utf-8")
+    """``static/keys.js`` then ``static/page.js``: keys pressed in a widget are the widget's,
+    in JupyterLab and in Notebook 7; what every module shares besides (its CSS added once per
+    page). Every page-side module of the package starts with it."""
+    static = Path(__file__).parent / "static"
+    return "".join((static / f).read_text(encoding="utf-8") for f in ("keys.js", "page.js"))
 
 
 def frames_js() -> str:

@@ -129,12 +129,7 @@ async function decodeGroup(places, blobs) {
 // in a static page), onStep(k) (the step settled: slider released, button, pause).
 export function mountFrames(el, opts) {
   installKeyGuard(); // keys.js: the arrow keys move the step in Notebook 7 too
-  if (!document.getElementById("tr-frames-css")) {
-    const style = document.createElement("style");
-    style.id = "tr-frames-css";
-    style.textContent = CSS;
-    document.head.appendChild(style);
-  }
+  addCss("tr-frames-css", CSS); // page.js
   const root = document.createElement("div");
   root.className = "tr-frames";
   const bar = document.createElement("div");

@@ -110,12 +110,7 @@ async function inflate(bytes) {
 
 function render({ model, el }) {
   installKeyGuard(); // keys.js: keys on the controls beside it are theirs in Notebook 7 too
-  if (!document.getElementById("tr-drag-css")) {
-    const style = document.createElement("style");
-    style.id = "tr-drag-css";
-    style.textContent = CSS;
-    document.head.appendChild(style);
-  }
+  addCss("tr-drag-css", CSS); // page.js
   const box = document.createElement("div");
   box.className = "tr-drag";
   const img = document.createElement("img");

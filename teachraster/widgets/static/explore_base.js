@@ -69,15 +69,6 @@ const BASE_CSS = `
 .tr-x td:first-child, .tr-x th:first-child { text-align: left; }
 `;
 
-// CSS once per document, by id (every explorable module carries its own part)
-export function addCss(id, text) {
-  if (typeof document === "undefined" || document.getElementById(id)) return;
-  const style = document.createElement("style");
-  style.id = id;
-  style.textContent = text;
-  document.head.appendChild(style);
-}
-
 export function element(tag, attrs = {}, children = []) {
   const e = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs)) {
@@ -90,7 +81,9 @@ export function element(tag, attrs = {}, children = []) {
   return e;
 }
 
-// installKeyGuard, onKeys: keys.js (teachraster/plotting/static), joined before this file.
+// installKeyGuard, onKeys: keys.js; addCss (CSS once per document, by id; every explorable
+// module carries its own part): page.js. Both from teachraster/plotting/static, joined
+// before this file.
 
 // The frame of every explorable: a title, its explanation, then its parts. Keys pressed
 // inside are the explorable's (installKeyGuard): Jupyter's shortcuts (arrows move between
