@@ -123,3 +123,38 @@ def test_the_arrow_keys_move_the_sliders_not_the_notebook(lab, page, app):  # no
     # 2026-12-01 saw it too, with nothing visible); any other is a widget's
     errors = [e for e in page.errors if "reading 'schema'" not in e]
     assert not errors, errors[:3]
+
+
+COMPARED = [
+    "import numpy as np\nimport teachraster as tr\nfrom teachraster.plotting import use_style\n"
+    "from teachraster.widgets import FillPlayer\n"
+    "style = use_style('classroom')  # as the lessons run it (large fonts: larger figures)",
+    "tri = tr.Triangle([[1.5, 2.25], [14.75, 5.5], [4.25, 14.5]], w=[1.0, 2.0, 4.0],\n"
+    "                  attrs={'u': [0.0, 1.0, 0.0]})  # lesson 04's\n"
+    "player = FillPlayer(tri, 16, 16, method='halfplane', step=-1)\nplayer",
+]
+#: the height of the output holding the player (its title, controls, steps and comparison)
+PLAYER_HEIGHT = """() => [...document.querySelectorAll('.jp-OutputArea-output')]
+    .filter(o => o.querySelector('.tr-frames'))
+    .map(o => Math.round(o.getBoundingClientRect().height))"""
+
+
+def test_the_player_with_its_comparison_open_fits_the_screen(lab, page):  # noqa: F811
+    """Issue 31: with its comparison open the player was 1,758 px tall at 1400 x 900 (its
+    sliders and the figures they change never on screen together)."""
+    _run(page, lab, COMPARED, "player_compared.ipynb")
+    player = page.locator(".tr-frames").first
+    player.locator("canvas[data-step]").wait_for(timeout=120_000)
+    header = page.get_by_text("affine / perspective-correct", exact=False).first
+    header.click()
+    figure = page.locator(".jupyter-widget-Collapse-contents img.teachraster-figure").first
+    page.wait_for_function("i => i.complete && i.naturalWidth > 100",
+                           arg=figure.element_handle(), timeout=60_000)  # fmt: skip
+    assert figure.bounding_box()["height"] > 300  # scaled to fit, not to a thumbnail
+    assert not player.is_visible()  # the steps fold meanwhile
+    heights = page.evaluate(PLAYER_HEIGHT)
+    assert len(heights) == 1 and heights[0] <= 900 - 40, heights  # 40: the notebook's toolbar
+    header.click()  # closed: the steps are back, the player as tall as before
+    player.locator("canvas[data-step]").wait_for(state="visible", timeout=10_000)
+    assert page.evaluate(PLAYER_HEIGHT)[0] <= 900 - 40
+    assert not page.errors, page.errors[:3]

@@ -40,6 +40,9 @@ INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspect
 #: several samples): with tiles chosen the player shows one sample and says so.
 ONE_SAMPLE = "1 (centre)"
 TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
+#: The comparison's greatest height on screen (px): with the title and the controls above it,
+#: the open comparison fits a 900-px-high screen (the steps fold meanwhile).
+COMPARISON_MAX_PX = 680
 
 
 def shown_samples(method: str, samples: str) -> str:
@@ -265,17 +268,30 @@ class FillPlayer(Holdable):
                              *self._comparison_section()])  # fmt: skip
 
     def _comparison_section(self) -> list:
-        """The interpolation figure, folded under the steps: open, the player would no longer
-        fit a 900-px-high screen (the steps, their controls and the figure together)."""
+        """The interpolation figure, folded under the steps; open, it takes the steps' place
+        (they fold) and is no taller than :data:`COMPARISON_MAX_PX`: the steps and the figure
+        together were 1,708 px at 1400 x 900, the player now fits a 900-px-high screen."""
         if self.interp_display is None:
             return []
+        figure = self.interp_display.widget
+        if isinstance(figure, widgets.Image):  # an ipympl canvas keeps its own size
+            # scaled down whole, the picture's shape kept (two rows of panels: 899 px)
+            figure.layout.max_height = f"{COMPARISON_MAX_PX}px"
+            figure.layout.object_fit = "contain"
+            figure.layout.object_position = "left top"
         self.comparison = widgets.Accordion(
-            children=[self.interp_display.widget], selected_index=None,
-            titles=("affine / perspective-correct: both interpolations and their error",),
+            children=[figure], selected_index=None,
+            titles=("affine / perspective-correct: both interpolations and their error "
+                    "(in place of the steps)",),
         )  # fmt: skip
         self._interp_stale = False
         self.comparison.observe(self._refresh_comparison, "selected_index")
+        self.comparison.observe(self._fold_steps, "selected_index")
         return [self.comparison]
+
+    def _fold_steps(self, change=None) -> None:
+        """The steps fold while the comparison is open, and come back as it closes."""
+        self.frames.layout.display = "none" if self.comparison.selected_index is not None else ""
 
     def _publish(self, step: int) -> None:
         """Send the fill on show to the page: its steps' texts and the picture of ``step``.
