@@ -520,6 +520,28 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert "−w (GL)" in clipping.what and "0 (D3D, Vulkan)" in clipping.what
 
 
+def test_early_z_in_00_and_its_picture_agrees_with_05a():
+    """Lesson 05a: early-z splits the early depth test from the late write. A shader that
+    writes depth loses the early test (conservative depth excepted); one that may discard keeps
+    it and delays only the write. Lesson 00 and the pipeline picture said "neither discards nor
+    writes depth"."""
+    from teachraster.plotting import pipeline_overview
+
+    tour = next(t for t in _cells("00_tour", "markdown") if "early-z" in t)
+    picture = pipeline_overview.EARLY_Z_LABEL + (pipeline_overview.__doc__ or "")
+    for text in (tour, picture):
+        assert "neither discards" not in " ".join(text.split())
+        assert "only the" in text and "write" in text
+    assert "keeps the early test" in " ".join(tour.split())
+    assert "conservative depth" in tour and "gl_FragDepth" in tour
+    with tr_style():
+        fig, ax = plt.subplots(figsize=(9, 7.5))
+        plot_pipeline(ax)
+    drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
+    assert "not if the shader writes depth; discard delays only the write" in drawn
+    plt.close(fig)
+
+
 def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_listed():
     cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
