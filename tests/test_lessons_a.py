@@ -431,12 +431,46 @@ def test_02_player_and_editor():
     assert player.caption_text == ns.trace.caption(k)
     assert (ns.trace.step(k).row, ns.trace.step(k).col) == (box.row0 + 5, box.col0 + 6)
     player.close()
-    editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
+    editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image",
+                            probe=ns.inside_point, comparison=False)  # fmt: skip
+    # the lesson's text: E12, E23, E31 at the cross, live; no interpolation figure here
+    assert editor.interp_display.widget not in editor.widget.children
+    edges = [(ns.v1, ns.v2), (ns.v2, ns.v3), (ns.v3, ns.v1)]
+    assert np.allclose(editor.edge_values(), [tr.edge_function(a, b, ns.inside_point)
+                                              for a, b in edges])  # fmt: skip
+    assert "E12 = +46.81, E23 = +46.81, E31 = +46.81" in editor.info.value
+    before = editor.edge_values()
+    editor.x[1].value = 13.0  # v2 moved a little: E31 (v3 -> v1) stays, E12 and E23 change
+    after = editor.edge_values()
+    assert after[2] == before[2] and after[0] != before[0] and after[1] != before[1]
     editor.x[1].value = 1.0  # v2 dragged across the edge v3 -> v1: the winding flips
     moved = tr.Triangle(editor.xy)
     assert moved.front_facing and not ns.tri.front_facing
     assert np.array_equal(editor.fill.coverage, tr.rasterize(moved, ns.W, ns.H).coverage)
+    inside = tr.barycentric(moved.xy, [2.5, 7.5])
+    assert (inside > 0).all()  # a centre inside the flipped triangle: all three negative
+    editor._on_page_move(3, 2.5, 7.5, True)  # the cross dragged there in the page
+    assert (editor.edge_values() < 0).all() and "all negative: inside" in editor.info.value
+    assert np.array_equal(editor._handles()[3], [2.5, 7.5])
     editor.close()
+
+
+@pytest.mark.notebook
+def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
+    """Review a1 02 c13: the Predict was answered by the rule above it. Now the student clicks
+    the diagonal centres the upper triangle owns, before the rule is spelled out."""
+    ns = lesson("02_half_planes")
+    cells = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "PredictPixels(" in t)
+    rule = next(i for i, t in enumerate(text) if "(interior to its right)" in t)
+    assert ask < rule
+    assert "left** edge" not in "".join(text[:ask]) and "upper_owns" in text[ask]
+    k = np.arange(2, 14)
+    expected = np.zeros((ns.H, ns.W), bool)
+    expected[k, k] = True  # (2.5, 2.5) .. (13.5, 13.5); the corner (14.5, 14.5) to neither
+    assert np.array_equal(ns.upper_owns, expected)
+    assert ns.diagonal_all.sum() == 13
 
 
 @pytest.mark.notebook
