@@ -124,7 +124,9 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
 def test_00_facing_and_the_two_methods():
     ns = lesson("00_tour")
     assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
-    assert ns.same  # the predicted answer: 0 pixels differ
+    assert ns.same  # "they fill the same pixels (the next cell checks)"
+    # the predicted answer: the bounding box's centres, 12 x 12 (review r3 00-2: not a guess)
+    assert ns.box.size == 144 == ns.halfplane.trace.n_work and ns.span.trace.n_work == 12
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
     # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
@@ -172,6 +174,10 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
+    assert ns.ends5 == [5.5, 11.5]  # the ticks of the row-5 question: the package's ends
+    # the clicked answers: row 5's columns 5-10, row 2's columns 2-11, nothing else
+    assert np.flatnonzero(ns.row5[5]).tolist() == list(range(5, 11)) and ns.row5.sum() == 6
+    assert np.flatnonzero(ns.row2[2]).tolist() == list(range(2, 12)) and ns.row2.sum() == 10
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
@@ -185,6 +191,23 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert np.array_equal(ns.N[2], ns.a + ns.b - ns.c)
     assert np.allclose((ns.N[2] + ns.c) / 2, (ns.a + ns.b) / 2)
     assert ns.outside == (not ((ns.N[2] >= 0) & (ns.N[2] <= ns.S)).all())
+
+
+FIGURE_PREDICTIONS = ("PredictPixels(", "PredictPoint(", "PredictOrder(")
+
+
+def test_lessons_00_to_03_answer_predictions_on_figures():
+    """Issue 29: at least a third of the predictions are answered by acting on a figure; in
+    lessons 00-03, 3 or more, each answer a variable computed in the cell (never typed)."""
+    found = 0
+    for name in MINE[:4]:
+        for cell in _cells(name, "code"):
+            if any(kind in cell for kind in FIGURE_PREDICTIONS):
+                found += 1
+                answer = re.search(r"answer=([^,\n]+)", cell).group(1).strip()
+                assert re.fullmatch(r"[A-Za-z_][A-Za-z_0-9]*", answer), (name, answer)
+                assert re.search(rf"^{answer}\b.*=|^{answer}\[", cell, re.M), (name, answer)
+    assert found >= 3
 
 
 @pytest.mark.notebook
