@@ -636,6 +636,12 @@ def test_notes_are_cited_where_they_say_it():
     lesson's table renames, not Triangle Rasterisation II's A)."""
     intro = _cells("02_half_planes", "markdown")[0]
     assert '(*Rasterization*, "Implicit Equation for a\nline")' in intro
+    # review r3 02-1/2: the bias trick is in Giesen's "Triangle rasterization in practice";
+    # the edge-function method is Pineda's (SIGGRAPH 1988)
+    lesson_02 = "\n".join(_cells("02_half_planes", "markdown"))
+    assert "*Triangle rasterization in practice*" in lesson_02
+    assert "Optimizing the basic rasterizer" not in lesson_02
+    assert "Pineda" in intro and "SIGGRAPH 1988" in intro
     assert "(*Why Triangles?*) call" not in intro
     lesson_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "markdown"))
     assert "right after the matrix" not in lesson_03 and "next slide" in lesson_03
