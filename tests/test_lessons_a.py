@@ -211,6 +211,24 @@ def test_lessons_00_to_03_answer_predictions_on_figures():
 
 
 @pytest.mark.notebook
+def test_03_predictions_point_and_drift_are_the_packages():
+    """Review r3 03-1: 'about 1e-7 (one rounding)' was float32's relative precision, not one
+    rounding near 1000 (3e-5); the answer is now chosen from the computed drift. The
+    barycentric point is placed on the figure (PredictPoint) before any formula."""
+    ns = lesson("03_barycentric_and_plane_equations")
+    assert ns.one_rounding == 2.0**-15  # half of float32's step 2^-14 near 1000
+    assert any("3e-05" in label for label in ns.drift)
+    chosen = [k for k, (lo, hi) in ns.drift.items() if lo < ns.end32 <= hi]
+    assert chosen == ["a few hundredths (10⁻³ to 10⁻¹)"]
+    assert np.allclose(tr.barycentric(ns.xy, ns.target), ns.weights)
+    cells = json.loads((NOTEBOOKS / "03_barycentric_and_plane_equations.ipynb").read_text())
+    text = ["".join(c["source"]) for c in cells["cells"]]
+    ask = next(i for i, t in enumerate(text) if "PredictPoint(" in t)
+    formula = next(i for i, t in enumerate(text) if "\\lambda_1 \\mathbf{v}_1 +" in t)
+    assert ask < formula
+
+
+@pytest.mark.notebook
 def test_01_step_figure_shows_the_row_5_tie():
     """Review r2 01-2: the step figure marks row 5's centres filled (5.5) and hollow (11.5)."""
     ns = lesson("01_span_tables")
