@@ -229,6 +229,16 @@ def test_03_predictions_point_and_drift_are_the_packages():
 
 
 @pytest.mark.notebook
+def test_01_gouraud_spans_match_the_package():
+    """Review r3 01-2: the span loop carries a colour down the edges and across each span."""
+    ns = lesson("01_span_tables")
+    assert np.array_equal(~np.isnan(ns.ours_c), ns.shaded.coverage)
+    assert np.nanmax(np.abs(ns.ours_c - ns.shaded.attrs["c"])) < 1e-12
+    assert np.ptp(ns.slopes) < 1e-14 and abs(ns.slopes[0]) > 0.01  # one slope, not zero
+    assert len(ns.slopes) == len(np.flatnonzero(ns.shaded.coverage.any(axis=1)))
+
+
+@pytest.mark.notebook
 def test_01_step_figure_shows_the_row_5_tie():
     """Review r2 01-2: the step figure marks row 5's centres filled (5.5) and hollow (11.5)."""
     ns = lesson("01_span_tables")
