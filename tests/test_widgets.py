@@ -364,6 +364,7 @@ def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
         e._on_page_move(3, 0.5, 0.5, True)
         assert e.probe.tolist() == [0.5, 0.5] and "outside" in e.info.value
         assert e.probe_marker.get_xydata().tolist() == [[0.5, 0.5]]
+        assert e.view.header.get_text() == "Span tables"  # a finished fill: no step count
     finally:
         e.close()
     plain = TriangleEditor(triangle(), W, H, backend="image")

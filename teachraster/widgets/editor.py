@@ -208,7 +208,8 @@ class TriangleEditor(Holdable):
         self.fig = new_figure((7, 5), self.backend)
         ax = fill_axes(self.fig, width, height, side=4.0)
         # a finished fill has no step to explain; the info line says what matters here
-        self.view = FillView(self.fill, ax=ax, step=-1, caption=False)
+        # no steps here: the header names the method only, not "step 172 of 0–172"
+        self.view = FillView(self.fill, ax=ax, step=-1, caption=False, step_header=False)
         self.probe_marker = None
         if self.probe is not None:  # marked, over the fill: the point the info line reads
             # not the current pixel's vermillion, nor the split's purple (span tables)
