@@ -365,6 +365,13 @@ def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
         assert e.probe.tolist() == [0.5, 0.5] and "outside" in e.info.value
         assert e.probe_marker.get_xydata().tolist() == [[0.5, 0.5]]
         assert e.view.header.get_text() == "Span tables"  # a finished fill: no step count
+        keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
+        assert "raster line, its pixels" not in keyed and "E12, E23, E31 here" in keyed
+        e.method.value = "halfplane"
+        keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
+        assert keyed == ["filled", "tested, rejected", "bounding box", "E12, E23, E31 here"]
+        e.x[1].value = 9.0  # a move keeps the key as it is (one cross, once)
+        assert [t.get_text() for t in e.view.legend.texts if t.get_visible()] == keyed
     finally:
         e.close()
     plain = TriangleEditor(triangle(), W, H, backend="image")

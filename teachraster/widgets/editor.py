@@ -44,6 +44,10 @@ def on_grid(value: float, direction: int = 0) -> float:
     return whole * GRID
 
 
+#: Key entries of a fill's steps, not of a finished fill (the editor has no current step).
+STEP_ONLY = {"current pixel", "raster line, its pixels", "span x_left .. x_right",
+             "its centre covered", "its centre not"}  # fmt: skip
+
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
 #: ratios, which is what perspective depends on).
 W_RANGE = (0.2, 10.0)
@@ -215,6 +219,7 @@ class TriangleEditor(Holdable):
             # not the current pixel's vermillion, nor the split's purple (span tables)
             (self.probe_marker,) = ax.plot(*self.probe, "X", ms=15, mfc=COLORS["edge"],
                                            mec="white", mew=1.5, zorder=7)  # fmt: skip
+        self._tidy_key()
         # a move changes the triangle's artists only: the grid, labels, centres and legend
         # stay in a cached background (dragging.fill_edit_blit)
         self._blits = {"fill": self._fill_blit()}
@@ -228,6 +233,26 @@ class TriangleEditor(Holdable):
         self.interp_view = InterpolationView(self.fill, self.attribute, axes=axes)
         self._blits["interp"] = comparison_edit_blit(self.interp_view)
         self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
+
+    def _tidy_key(self) -> None:
+        """The key of a finished fill: the step-only entries hidden, the probe's cross named.
+
+        The FillView's key lists the current pixel and raster line of a step; the editor
+        shows no step, so those lines go, and a free line below the rest names the cross.
+        """
+        key = self.view.legend
+        if key is None:
+            return
+        label = "E12, E23, E31 here"
+        shown = [text.get_visible() and text.get_text() not in {*STEP_ONLY, label}
+                 for text in key.texts]  # fmt: skip
+        for swatch, text, on in zip(key.swatches, key.texts, shown):
+            swatch.set_visible(on)
+            text.set_visible(on)
+        if self.probe_marker is not None and sum(shown) < len(key.texts):
+            k = sum(shown)  # the step-only entries come last: the first hidden line is free
+            key.swatches[k].set(visible=True, marker="X", mfc=COLORS["edge"], mec="white")
+            key.texts[k].set(visible=True, text=label)
 
     def _fill_blit(self):
         """The fill figure's blit, the probe's cross drawn over everything (it moves too)."""
@@ -358,6 +383,7 @@ class TriangleEditor(Holdable):
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)
+        self._tidy_key()  # a new method's key is made afresh
         self.display.refresh()  # first: what the pointer moved (the comparison costs more)
         if not dragging:
             self.interp_view.update(self.fill, draw=False)
