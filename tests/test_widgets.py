@@ -353,6 +353,41 @@ def test_vertex_sliders_move_the_triangle(editor):
     assert editor.fill.trace.snapped[0, 0] == 2.0
 
 
+def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
+    """Lesson 02: the editor's info line gives E12, E23, E31 at a marked point (the cross),
+    which the page drags as a fourth handle; bad arguments are named."""
+    e = TriangleEditor(triangle(), W, H, backend="image", probe=(7.5, 7.5), comparison=False)
+    try:
+        v = e.fill.trace.snapped
+        want = [tr.edge_function(v[k], v[(k + 1) % 3], (7.5, 7.5)) for k in range(3)]
+        assert np.allclose(e.edge_values(), want)
+        assert "E12 = " in e.info.value and "E31 = " in e.info.value
+        assert "largest |affine" not in e.info.value  # no comparison figure, no error quoted
+        assert len(e._handles()) == 4
+        e._on_page_move(3, 0.5, 0.5, True)
+        assert e.probe.tolist() == [0.5, 0.5] and "outside" in e.info.value
+        assert e.probe_marker.get_xydata().tolist() == [[0.5, 0.5]]
+        assert e.view.header.get_text() == "Span tables"  # a finished fill: no step count
+        keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
+        assert "raster line, its pixels" not in keyed and "E12, E23, E31 here" in keyed
+        e.method.value = "halfplane"
+        keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
+        assert keyed == ["filled", "tested, rejected", "bounding box", "E12, E23, E31 here"]
+        e.x[1].value = 9.0  # a move keeps the key as it is (one cross, once)
+        assert [t.get_text() for t in e.view.legend.texts if t.get_visible()] == keyed
+    finally:
+        e.close()
+    plain = TriangleEditor(triangle(), W, H, backend="image")
+    assert plain.edge_values() is None and len(plain._handles()) == 3
+    with pytest.raises(ValueError, match="no probe"):
+        plain.set_probe(1, 1)
+    plain.close()
+    with pytest.raises(ValueError, match="probe"):
+        TriangleEditor(triangle(), W, H, backend="image", probe=(1, 2, 3))
+    with pytest.raises(TypeError, match="comparison"):
+        TriangleEditor(triangle(), W, H, backend="image", comparison="no")
+
+
 def test_split_point_follows_the_middle_vertex(editor):
     u4 = editor.fill.trace.span.u4
     assert f"u4 = {u4:.2f}" in editor.info.value

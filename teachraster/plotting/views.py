@@ -326,7 +326,8 @@ class FillView:
                         ("its centre covered", c["edge"], "white", "o"),
                         ("its centre not", "white", c["edge"], "o")]  # fmt: skip
         else:
-            entries.append(("current pixel", "none", c["current"]))
+            # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
+            entries.append(("pixel under test, × centre", "none", c["current"]))
         self.legend.set_entries(entries)
 
 
