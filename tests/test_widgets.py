@@ -507,6 +507,10 @@ def test_textured_viewer_draws_v_down_the_middle_column():
     assert steps_p.max() > 3 * steps_p.min()  # perspective: bunched towards the far edge
     viewer.tilt.value = 0.0  # facing the camera: the two curves are one
     np.testing.assert_allclose(prof.lines[0].get_xdata(), prof.lines[1].get_xdata(), atol=1e-12)
+    # no error anywhere: no marker pointing at an arbitrary pixel (review r3 04-5)
+    hm = viewer.view.heatmap
+    assert not hm.marker.get_visible() and not hm.note.get_visible()
+    assert "0 everywhere" in hm.title.get_text()
     viewer.close()
 
 

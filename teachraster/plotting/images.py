@@ -254,9 +254,12 @@ class HeatmapArtists(Artists):
                                     fs(1.2) if i > h / 2 else -fs(1.2)))  # fmt: skip
             self.note.set_horizontalalignment("right" if j > w / 2 else "left")
             self.note.set_text(f"max {m:.3g}")
-            self.marker.set_visible(True)
-            self.note.set_visible(True)
-            self._set_title(f"{self.label}: max {m:.3g}")
+            # a zero maximum has no pixel to point at: every pixel is one (all w equal)
+            self.marker.set_visible(m > 0)
+            self.note.set_visible(m > 0)
+            self._set_title(
+                f"{self.label}: max {m:.3g}" if m > 0 else f"{self.label}: 0 everywhere"
+            )
         else:
             self.marker.set_visible(False)
             self.note.set_visible(False)

@@ -4,7 +4,7 @@ A variant is on the **Pareto front** when no other is both cheaper and more accu
 puts each variant's error (down is better, log scale) against a cost (left is cheaper), joins
 the front with a step line and labels each point beside it. Exact variants (error 0, or below
 ``EXACT_BELOW``: float64 rounding, not a method's error) cannot sit on a log axis: they are drawn
-on a dashed floor line labelled "0 (exact)".
+on a dashed floor line labelled "0 (exact)", and no error tick is labelled at or below it.
 """
 
 from __future__ import annotations
@@ -80,8 +80,32 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
            title=title)  # fmt: skip
     art = ParetoArtists(points, line, labels, floor, [], short)
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
+    floor_ticks(ax, floor)
     update_pareto(ax, art, rows, x, y=y)
     return art
+
+
+def floor_ticks(ax, floor: float, formatter=None) -> None:
+    """Label the error axis above the "0 (exact)" floor only (``formatter``: the major tick
+    labels' format, default the axis' own).
+
+    The floor is a stand-in for zero on a log axis: a tick labelled 20 below a floor drawn at
+    45 would read as "less than exact", and points on the floor as 45 wrong pixels. Ticks at
+    or below 1.5 times the floor keep their marks but lose their labels.
+    """
+    from matplotlib.ticker import FuncFormatter
+
+    yaxis = ax.yaxis
+    major = formatter if formatter is not None else yaxis.get_major_formatter()
+    minor = yaxis.get_minor_formatter()
+    if formatter is not None:
+        major.set_axis(yaxis)
+
+    def above(base):
+        return FuncFormatter(lambda v, pos: "" if v <= 1.5 * floor else base(v, pos))
+
+    yaxis.set_major_formatter(above(major))
+    yaxis.set_minor_formatter(above(minor))
 
 
 def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> list:
