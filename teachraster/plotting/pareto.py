@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from matplotlib.ticker import NullFormatter
+from matplotlib.ticker import Formatter, NullFormatter
 
 from ..study.bench.report import pareto_front
 from .style import COLORS
@@ -90,22 +90,32 @@ def floor_ticks(ax, floor: float, formatter=None) -> None:
     labels' format, default the axis' own).
 
     The floor is a stand-in for zero on a log axis: a tick labelled 20 below a floor drawn at
-    45 would read as "less than exact", and points on the floor as 45 wrong pixels. Ticks at
-    or below 1.5 times the floor keep their marks but lose their labels.
+    45 would read as "less than exact", and points on the floor as 45 wrong pixels. Ticks up
+    to twice the floor keep their marks but lose their labels.
     """
-    from matplotlib.ticker import FuncFormatter
-
     yaxis = ax.yaxis
     major = formatter if formatter is not None else yaxis.get_major_formatter()
     minor = yaxis.get_minor_formatter()
-    if formatter is not None:
-        major.set_axis(yaxis)
+    yaxis.set_major_formatter(_AboveFloor(major, floor))
+    yaxis.set_minor_formatter(_AboveFloor(minor, floor))
 
-    def above(base):
-        return FuncFormatter(lambda v, pos: "" if v <= 1.5 * floor else base(v, pos))
 
-    yaxis.set_major_formatter(above(major))
-    yaxis.set_minor_formatter(above(minor))
+class _AboveFloor(Formatter):
+    """``base``'s tick labels above 1.5 times ``floor``, none at or below it. Delegates
+    ``set_locs``, so a log formatter still chooses which minor ticks to label."""
+
+    def __init__(self, base, floor: float) -> None:
+        self.base, self.floor = base, floor
+
+    def set_axis(self, axis) -> None:
+        super().set_axis(axis)
+        self.base.set_axis(axis)
+
+    def set_locs(self, locs) -> None:
+        self.base.set_locs(locs)
+
+    def __call__(self, x, pos=None) -> str:
+        return "" if x <= 2.0 * self.floor else self.base(x, pos)
 
 
 def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> list:
