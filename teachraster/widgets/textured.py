@@ -190,8 +190,7 @@ class TexturedPlaneViewer:
             "Texture mapping a receding square: affine vs perspective-correct",
             "Tilt the square away from the camera and compare the two renders. Below: how "
             "far apart their texture coordinates are, in texels, and the texture's v down the "
-            "middle column (dashed): in even steps (affine, a straight line), or bunching up "
-            "with distance (perspective-correct).",
+            "middle column (dashed), both ways.",
         )
         self.widget = widgets.VBox([title, self.tilt, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
