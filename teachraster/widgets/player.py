@@ -206,7 +206,7 @@ class FillPlayer(Holdable):
         if self.tri.attrs:
             name = attribute or next(iter(self.tri.attrs))
             ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = comparison_axes(ifig, self.height, self.width, below=True)
+            axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
             # a toggle changes the images, outlines and colour bars: the rest stays cached
@@ -271,7 +271,8 @@ class FillPlayer(Holdable):
             return []
         self.comparison = widgets.Accordion(
             children=[self.interp_display.widget], selected_index=None,
-            titles=("affine / perspective-correct: both interpolations and their error",),
+            titles=("affine / perspective-correct: both interpolations, their error, and both "
+                    "along the row of the largest error",),
         )  # fmt: skip
         self._interp_stale = False
         self.comparison.observe(self._refresh_comparison, "selected_index")
