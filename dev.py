@@ -98,6 +98,11 @@ def pytest_args(args):
 def test(args):
     ensure_venv("dev")
     os.environ.setdefault("MPLBACKEND", "Agg")  # doctests and tests never open windows
+    # A run starts a hundred Python processes (kernels, nbgrader, the CLI) and a pytest
+    # worker per core: with PYTHONDONTWRITEBYTECODE (set on some machines, this one too)
+    # each compiles teachraster again and each worker rewrites every test module's asserts
+    # (16 s of CPU a worker where cached ones take 7); the caches go to __pycache__/, ignored.
+    os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
     steps = {
         "ruff check": [PYTHON, "-m", "ruff", "check", "."],
         "ruff format": [PYTHON, "-m", "ruff", "format", "--check", "."],

@@ -162,7 +162,7 @@ def test_not_implemented_on_some_inputs_beside_a_wrong_answer():
     assert "not implemented" in shown and len(shown) > 1
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", sample(NAMES, keep=2))
 def test_the_untouched_stub_alone_is_not_implemented_yet(name):
     report = ex.check(name, raises(NotImplementedError()))
     assert report.not_implemented and report.failures == []

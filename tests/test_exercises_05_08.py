@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import sample
 from exercise_solutions import CORRECT, MISTAKES
 
 from teachraster import exercises as ex
@@ -194,7 +195,9 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     assert len(fig.axes) == 3 and fig.axes[2].get_title() == "no pixel differs"
 
 
-@pytest.mark.parametrize("mistake", [m for m, (name, _, _) in MISTAKES.items() if name in LATER])
+@pytest.mark.parametrize(
+    "mistake", sample([m for m, (name, _, _) in MISTAKES.items() if name in LATER])
+)
 def test_every_typical_mistake_shows_in_the_picture(mistake):
     name, fn, _ = MISTAKES[mistake]
     report = ex.check(name, fn)
@@ -295,9 +298,9 @@ def test_a_slow_function_spends_the_budget_and_no_more():
             pass
         return round(z * (2**bits - 1))
 
-    start = time.perf_counter()
+    start = time.process_time()  # CPU, not the wall: a loaded machine stretches the wall
     report = ex.check("depth_to_unorm", slow, budget=0.3)
-    assert time.perf_counter() - start < 2 + 2
+    assert time.process_time() - start < 0.3 + 2
     assert not report.passed and report.stopped is not None
     assert "the check's budget of 0.3 s of CPU ran out" in report.failures[-1].explanation
 

@@ -458,7 +458,12 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
         assert f"{data['clip'][k][3]:g}" in html["vertex"]
         assert str(float(f"{data['window'][k][0]:.5g}")).rstrip("0").rstrip(".") in html["viewport"]
     assert f"{data['fragments']} pixel centres" in html["rasterize"]
-    assert "only allowed when the shader neither discards nor writes depth" in html["depth"]
+    # early-z as lesson 05a teaches it: a depth-writing shader loses the early test, a
+    # discarding one keeps it and delays only the write (not "neither discards nor writes")
+    assert "writes its own depth turns the early test off" in html["depth"]
+    assert "may discard keeps the early test" in html["depth"]
+    assert "only the depth write waits" in html["depth"]
+    assert "neither" not in html["depth"] and "discard" in html["fragment"]
     assert sum(c != [245, 245, 245] for c in images["rasterize"]) == data["fragments"]
     assert images["vertex"] is None and images["blend"] == data["colour"]
 

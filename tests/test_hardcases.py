@@ -166,3 +166,15 @@ def test_depth_cases_show_fighting_as_bits_drop(results):
     for tilt in hc.get_case("nearly_coplanar_overlap").inputs["tilts"]:
         counts = [result.wrong[(fmt, tilt)] for fmt in hc.DEPTH_ORDER]
         assert counts[0] == 0 and counts[-1] > 0, (tilt, counts)
+
+
+@pytest.mark.parametrize("name", ["collinear", "coincident_vertices"])
+def test_zero_area_naive_fills_the_whole_line_as_it_says(name):
+    """Review r3 07-1: the naive fill of a zero-area triangle has no bounding box, so it lights
+    centres on the line beyond the vertices; the case's text says so (not "the 7 centres")."""
+    case = hc.get_case(name)
+    lit = np.argwhere(case.naive().counts > 0)[:, ::-1] + 0.5  # (x, y) of the lit centres
+    xy = np.unique(np.asarray(case.triangles)[0], axis=0)
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    beyond = ((lit < lo) | (lit > hi)).any(axis=1)
+    assert beyond.any() and "beyond" in case.naive_does and "no bounding box" in case.naive_does

@@ -248,3 +248,24 @@ def test_depth_explorer_quotes_no_distance_in_front_of_the_near_plane():
         assert f"{float(res):.2g}" in ex.info.value.split("Δz at z = 100:")[1]
     finally:
         ex.close()
+
+
+def test_projection_explorer_ratio_moves_the_far_end_along_its_ray():
+    """Review r3 04: |t - q| depends on the depth ratio only; the explorer's z1 / z0 slider
+    moves the far end along its own eye ray (the screen picture stays) and prints the peak,
+    3 - 2 sqrt(2) at a ratio of 2, none at 1."""
+    from teachraster.plotting.projection import Segment
+    from teachraster.widgets import ProjectionExplorer
+
+    ex = ProjectionExplorer(Segment(-1.0, 1.0, 2.0, 4.0), backend="image")
+    screen_before = ex.segment.screen([0.0, 1.0])
+    ex.ratio.value = 2.0
+    assert ex.segment.z1 == pytest.approx(2.0 * ex.segment.z0)
+    np.testing.assert_allclose(ex.segment.screen([0.0, 1.0]), screen_before, atol=1e-15)
+    assert ex.largest_gap == pytest.approx(3 - 2 * np.sqrt(2), abs=1e-4)
+    assert f"{ex.largest_gap:.3f}" in ex.info.value
+    ex.q.value = 0.5
+    assert ex.t == pytest.approx(float(ex.segment.world_parameter(0.5)[0]))
+    ex.ratio.value = 1.0
+    assert ex.largest_gap == pytest.approx(0.0, abs=1e-12)
+    ex.close()

@@ -124,7 +124,9 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
 def test_00_facing_and_the_two_methods():
     ns = lesson("00_tour")
     assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
-    assert ns.same  # the predicted answer: 0 pixels differ
+    assert ns.same  # "they fill the same pixels (the next cell checks)"
+    # the predicted answer: the bounding box's centres, 12 x 12 (review r3 00-2: not a guess)
+    assert ns.box.size == 144 == ns.halfplane.trace.n_work and ns.span.trace.n_work == 12
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
     # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
@@ -172,6 +174,10 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
+    assert ns.ends5 == [5.5, 11.5]  # the ticks of the row-5 question: the package's ends
+    # the clicked answers: row 5's columns 5-10, row 2's columns 2-11, nothing else
+    assert np.flatnonzero(ns.row5[5]).tolist() == list(range(5, 11)) and ns.row5.sum() == 6
+    assert np.flatnonzero(ns.row2[2]).tolist() == list(range(2, 12)) and ns.row2.sum() == 10
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
@@ -185,6 +191,51 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert np.array_equal(ns.N[2], ns.a + ns.b - ns.c)
     assert np.allclose((ns.N[2] + ns.c) / 2, (ns.a + ns.b) / 2)
     assert ns.outside == (not ((ns.N[2] >= 0) & (ns.N[2] <= ns.S)).all())
+
+
+FIGURE_PREDICTIONS = ("PredictPixels(", "PredictPoint(", "PredictOrder(")
+
+
+def test_lessons_00_to_03_answer_predictions_on_figures():
+    """Issue 29: at least a third of the predictions are answered by acting on a figure; in
+    lessons 00-03, 3 or more, each answer a variable computed in the cell (never typed)."""
+    found = 0
+    for name in MINE[:4]:
+        for cell in _cells(name, "code"):
+            if any(kind in cell for kind in FIGURE_PREDICTIONS):
+                found += 1
+                answer = re.search(r"answer=([^,\n]+)", cell).group(1).strip()
+                assert re.fullmatch(r"[A-Za-z_][A-Za-z_0-9]*", answer), (name, answer)
+                assert re.search(rf"^{answer}\b.*=|^{answer}\[", cell, re.M), (name, answer)
+    assert found >= 3
+
+
+@pytest.mark.notebook
+def test_03_predictions_point_and_drift_are_the_packages():
+    """Review r3 03-1: 'about 1e-7 (one rounding)' was float32's relative precision, not one
+    rounding near 1000 (3e-5); the answer is now chosen from the computed drift. The
+    barycentric point is placed on the figure (PredictPoint) before any formula."""
+    ns = lesson("03_barycentric_and_plane_equations")
+    assert ns.one_rounding == 2.0**-15  # half of float32's step 2^-14 near 1000
+    assert any("3e-05" in label for label in ns.drift)
+    chosen = [k for k, (lo, hi) in ns.drift.items() if lo < ns.end32 <= hi]
+    assert chosen == ["a few hundredths (10⁻³ to 10⁻¹)"]
+    assert np.allclose(tr.barycentric(ns.xy, ns.target), ns.weights)
+    cells = json.loads((NOTEBOOKS / "03_barycentric_and_plane_equations.ipynb").read_text())
+    text = ["".join(c["source"]) for c in cells["cells"]]
+    ask = next(i for i, t in enumerate(text) if "PredictPoint(" in t)
+    formula = next(i for i, t in enumerate(text) if "\\lambda_1 \\mathbf{v}_1 +" in t)
+    assert ask < formula
+
+
+@pytest.mark.notebook
+def test_01_gouraud_spans_match_the_package():
+    """Review r3 01-2: the span loop carries a colour down the edges and across each span."""
+    ns = lesson("01_span_tables")
+    assert np.array_equal(~np.isnan(ns.ours_c), ns.shaded.coverage)
+    assert np.nanmax(np.abs(ns.ours_c - ns.shaded.attrs["c"])) < 1e-12
+    assert np.ptp(ns.slopes) < 1e-14 and abs(ns.slopes[0]) > 0.01  # one slope, not zero
+    assert len(ns.slopes) == len(np.flatnonzero(ns.shaded.coverage.any(axis=1)))
 
 
 @pytest.mark.notebook
@@ -274,6 +325,22 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     seg = Segment(ns.x0, ns.z0, ns.x1, ns.z1)
     assert np.allclose(seg.world_parameter(ns.q), ns.t_ray, atol=1e-15)
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
+    # review r3 04-1: the first question is answered by dragging a marker on the segment
+    assert np.isclose(ns.t_mid, ns.t[5]) and np.allclose(ns.segment.point(ns.t_mid)[0],
+                                                         [ns.x[5], ns.z[5]])  # fmt: skip
+
+
+def test_04_to_07_ask_at_least_three_questions_on_a_figure():
+    """Issue 29: at least a third of the predictions are answered by acting on a figure, and
+    04's introduction does not say which half of the segment is squeezed before it asks."""
+    asked = []
+    for name in ("04_perspective_correct_interpolation", "05a_zbuffer", "05b_depth_precision",
+                 "06_what_accuracy_costs", "07_hard_cases"):  # fmt: skip
+        asked += [c for c in _cells(name, "code") if re.search(r"\bPredict\w*\(", c)]
+    on_figure = [c for c in asked if re.search(r"\bPredict(Pixels|Point|Order)\(", c)]
+    assert len(asked) == 10 and len(on_figure) >= 3
+    intro = _cells("04_perspective_correct_interpolation", "markdown")[0]
+    assert "squeezed" not in intro
 
 
 def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_vertices():
@@ -431,12 +498,46 @@ def test_02_player_and_editor():
     assert player.caption_text == ns.trace.caption(k)
     assert (ns.trace.step(k).row, ns.trace.step(k).col) == (box.row0 + 5, box.col0 + 6)
     player.close()
-    editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image")
+    editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image",
+                            probe=ns.inside_point, comparison=False)  # fmt: skip
+    # the lesson's text: E12, E23, E31 at the cross, live; no interpolation figure here
+    assert editor.interp_display.widget not in editor.widget.children
+    edges = [(ns.v1, ns.v2), (ns.v2, ns.v3), (ns.v3, ns.v1)]
+    assert np.allclose(editor.edge_values(), [tr.edge_function(a, b, ns.inside_point)
+                                              for a, b in edges])  # fmt: skip
+    assert "E12 = +46.81, E23 = +46.81, E31 = +46.81" in editor.info.value
+    before = editor.edge_values()
+    editor.x[1].value = 13.0  # v2 moved a little: E31 (v3 -> v1) stays, E12 and E23 change
+    after = editor.edge_values()
+    assert after[2] == before[2] and after[0] != before[0] and after[1] != before[1]
     editor.x[1].value = 1.0  # v2 dragged across the edge v3 -> v1: the winding flips
     moved = tr.Triangle(editor.xy)
     assert moved.front_facing and not ns.tri.front_facing
     assert np.array_equal(editor.fill.coverage, tr.rasterize(moved, ns.W, ns.H).coverage)
+    inside = tr.barycentric(moved.xy, [2.5, 7.5])
+    assert (inside > 0).all()  # a centre inside the flipped triangle: all three negative
+    editor._on_page_move(3, 2.5, 7.5, True)  # the cross dragged there in the page
+    assert (editor.edge_values() < 0).all() and "all negative: inside" in editor.info.value
+    assert np.array_equal(editor._handles()[3], [2.5, 7.5])
     editor.close()
+
+
+@pytest.mark.notebook
+def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
+    """Review a1 02 c13: the Predict was answered by the rule above it. Now the student clicks
+    the diagonal centres the upper triangle owns, before the rule is spelled out."""
+    ns = lesson("02_half_planes")
+    cells = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "PredictPixels(" in t)
+    rule = next(i for i, t in enumerate(text) if "(interior to its right)" in t)
+    assert ask < rule
+    assert "left** edge" not in "".join(text[:ask]) and "upper_owns" in text[ask]
+    k = np.arange(2, 14)
+    expected = np.zeros((ns.H, ns.W), bool)
+    expected[k, k] = True  # (2.5, 2.5) .. (13.5, 13.5); the corner (14.5, 14.5) to neither
+    assert np.array_equal(ns.upper_owns, expected)
+    assert ns.diagonal_all.sum() == 13
 
 
 @pytest.mark.notebook
@@ -520,11 +621,35 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert "−w (GL)" in clipping.what and "0 (D3D, Vulkan)" in clipping.what
 
 
+def test_early_z_in_00_and_its_picture_agrees_with_05a():
+    """Lesson 05a: early-z splits the early depth test from the late write. A shader that
+    writes depth loses the early test (conservative depth excepted); one that may discard keeps
+    it and delays only the write. Lesson 00 and the pipeline picture said "neither discards nor
+    writes depth"."""
+    from teachraster.plotting import pipeline_overview
+
+    tour = next(t for t in _cells("00_tour", "markdown") if "early-z" in t)
+    picture = pipeline_overview.EARLY_Z_LABEL + (pipeline_overview.__doc__ or "")
+    for text in (tour, picture):
+        assert "neither discards" not in " ".join(text.split())
+        assert "only the" in text and "write" in text
+    assert "keeps the early test" in " ".join(tour.split())
+    assert "conservative depth" in tour and "gl_FragDepth" in tour
+    with tr_style():
+        fig, ax = plt.subplots(figsize=(9, 7.5))
+        plot_pipeline(ax)
+    drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
+    assert "not if the shader writes depth; discard delays only the write" in drawn
+    plt.close(fig)
+
+
 def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_listed():
     cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
-    ask = next(i for i, t in enumerate(text) if "<b>best</b> of the six orders" in t)
-    assert not any("C over A" in t or "cycle" in t for t in text[:ask])  # review a1, 05a
+    ask = next(i for i, t in enumerate(text) if "PredictOrder(" in t and "no order" in t)
+    said = [t for c, t in zip(cells, text[:ask]) if c["cell_type"] == "markdown"]
+    assert not any(re.search(r"\b(red|green|blue) over|\bcycle\b|no order", t)
+                   for t in said)  # review a1, 05a  # fmt: skip
     table = next(t for t in text if "| teachraster |" in t)
     row = next(line for line in table.splitlines() if line.startswith("| teachraster |"))
     assert "$w > 0$ (the eye plane)" in row and "guard band" in row
@@ -537,6 +662,8 @@ def test_05a_sticks_figure_labels_a_cycle_of_crossings():
     ns = lesson("05a_zbuffer")
     tops, unders = zip(*ns.crossings)
     assert len(ns.crossings) == 3 and sorted(tops) == sorted(unders) == sorted(set(tops))
+    # review r3 05a-1: the question is the order, answered on the sticks' picture
+    assert ns.right_orders == [] and ns.orders_right == 0
 
 
 def test_05a_early_z_splits_test_from_write_and_names_prepass_and_write_mask():
@@ -557,6 +684,12 @@ def test_notes_are_cited_where_they_say_it():
     lesson's table renames, not Triangle Rasterisation II's A)."""
     intro = _cells("02_half_planes", "markdown")[0]
     assert '(*Rasterization*, "Implicit Equation for a\nline")' in intro
+    # review r3 02-1/2: the bias trick is in Giesen's "Triangle rasterization in practice";
+    # the edge-function method is Pineda's (SIGGRAPH 1988)
+    lesson_02 = "\n".join(_cells("02_half_planes", "markdown"))
+    assert "*Triangle rasterization in practice*" in lesson_02
+    assert "Optimizing the basic rasterizer" not in lesson_02
+    assert "Pineda" in intro and "SIGGRAPH 1988" in intro
     assert "(*Why Triangles?*) call" not in intro
     lesson_03 = "\n".join(_cells("03_barycentric_and_plane_equations", "markdown"))
     assert "right after the matrix" not in lesson_03 and "next slide" in lesson_03

@@ -163,13 +163,16 @@ def test_06_review_r2_prediction_error_split_and_shared_reciprocal():
 
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     asked = next(
-        "".join(c["source"]) for c in nb["cells"] if "q_rule = Predict(" in "".join(c["source"])
+        "".join(c["source"])
+        for c in nb["cells"]
+        if "q_rule = PredictPixels(" in "".join(c["source"])
     )
-    assert "\n    [" not in asked and "choices" not in asked  # a number to type, no choice list
-    assert 'answer=tie_counts["E > 0"]["gaps"]' in asked and "extra operations" not in asked
-    counts = ns.tie_counts  # the double hits the question quotes equal the gaps it asks for
+    # review r3 06-2: the gaps are clicked on the mesh, their number not given by the question
+    assert "answer=small_gaps" in asked and "double_hits']}" not in asked.split("explain")[0]
+    small = ns.small  # the gaps asked for are the centres E >= 0 draws twice
+    assert ns.small_gaps.sum() == small["E > 0"]["gaps"] == small["E >= 0"]["double_hits"] > 0
+    counts = ns.cracks  # the larger mesh of the figure: the same equality
     assert counts["E > 0"]["gaps"] == counts["E >= 0"]["double_hits"] == 38
-    assert counts["E >= 0"]["double_hits"] == ns.cracks["E >= 0"]["double_hits"]
     parts = ns.error_parts["float32"]  # "0 and 0 ... its whole error is the mesh far away"
     assert parts["random"] == 0 and parts["mesh @0"] == 0
     f32 = next(r for r in ns.rows if r["variant"] == "float32 direct")
@@ -205,6 +208,18 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     f32, u24 = ns.coplanar_wrong[("float32", 1e-06)], ns.coplanar_wrong[("unorm24", 1e-06)]
     assert f32 > 0 and u24 > 0 and abs(f32 - u24) <= 0.25 * max(f32, u24)
     assert float(np.spacing(np.float32(ns.near_depth))) == pytest.approx(1 / (2**24 - 1), rel=1e-6)
+
+
+def test_07_t_junction_cracks_overlaps_and_the_split_seals_it():
+    """Review r3 07-2: the T-junction, the crack no tie rule closes; splitting A-B seals it.
+    The split square is asked on the grid (click the centres drawn twice)."""
+    ns = lesson("07_hard_cases")
+    names = list(ns.t_counts)
+    outside, inside, split = (ns.t_counts[n] for n in names)
+    assert ns.t_gaps[names[0]] > 0 and (outside >= 2).sum() == 0
+    assert ns.t_gaps[names[1]] == 0 and (inside >= 2).sum() > 0
+    assert ns.t_gaps[names[2]] == 0 and (split >= 2).sum() == 0
+    assert np.array_equal(ns.drawn_twice, ns.split_square[1] > 1)  # the clicked answer
 
 
 def test_07_case_texts_match_what_the_lesson_prints():

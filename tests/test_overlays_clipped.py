@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import cases
 from test_render import clip_from_window
 
 import teachraster as tr
@@ -144,7 +145,7 @@ def test_frame_inspector_view_changes_keep_the_frame_axes():
         position = w.ax.get_position().bounds  # the image view, before any colour bar
         n_axes = len(w.fig.axes)
         views = [*KINDS, "image"]
-        for i in range(200):
+        for i in range(cases(200)):  # the edit loop: 50 (it failed after 164 in CI's 200)
             w.view.value = views[i % len(views)]
             assert w.ax.get_position().bounds == position, (i, w.view.value)
             assert len(w.fig.axes) == n_axes, (i, w.view.value)

@@ -46,3 +46,42 @@ def test_a_front_point_is_drawn_above_the_points_it_beats():
     assert art.points["front"].get_zorder() > art.points["dearer"].get_zorder()
     assert [r["variant"] for r in art.front] == ["front"]
     plt.close(fig)
+
+
+def test_no_error_tick_is_labelled_at_or_below_the_exact_floor():
+    """Review r3 06-4: on a log axis the "0 (exact)" floor stands for zero; a tick labelled 20
+    under a floor drawn at 45 read as fewer wrong pixels than exact."""
+    from matplotlib.ticker import FormatStrFormatter, LogLocator
+
+    from teachraster.plotting.pareto import floor_ticks
+
+    rows = [
+        {"variant": "exact", "bits": 64, "error": 0.0},
+        {"variant": "coarse", "bits": 16, "error": 450.0},
+        {"variant": "fine", "bits": 24, "error": 3000.0},
+    ]
+    fig, ax = plt.subplots(figsize=(9, 5))
+    art = plot_pareto(ax, rows, "bits", logx=False)
+    ax.yaxis.set_major_locator(LogLocator(subs=(1, 2, 5)))
+    floor_ticks(ax, art.floor, FormatStrFormatter("%g"))
+    fig.canvas.draw()
+    labelled = [float(t.get_text()) for t in ax.get_yticklabels() if t.get_text()]
+    assert labelled and min(labelled) > 2 * art.floor
+    assert any(t.get_text() == "" for t in ax.get_yticklabels())  # the ones below the floor
+    plt.close(fig)
+
+
+def test_the_floor_keeps_a_log_axis_from_labelling_every_minor_tick():
+    """Wrapping the formatters must keep the log formatter's choice of labelled minor ticks
+    (a first version labelled 2x10^1 ... 9x10^2 over three decades, one on top of another)."""
+    rows = [
+        {"variant": "exact", "cycles": 3, "error": 0.0},
+        {"variant": "a", "cycles": 27, "error": 50.0},
+        {"variant": "b", "cycles": 3, "error": 470.0},
+    ]
+    fig, ax = plt.subplots(figsize=(9, 5))
+    plot_pareto(ax, rows, "cycles", logx=False)
+    fig.canvas.draw()
+    labelled = [t for t in ax.get_yticklabels(minor=True) if t.get_text()]
+    assert len(labelled) <= 2
+    plt.close(fig)

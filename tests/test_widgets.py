@@ -184,6 +184,40 @@ def test_a_wrapped_heatmap_has_its_title_close_above_it():
     player.close()
 
 
+def _empty_quarters(fig) -> list:
+    """The quarters of ``fig`` (2 x 2) that no visible Axes reaches into."""
+    boxes = [ax.get_position() for ax in fig.axes if ax.get_visible() and ax.axison]
+    empty = []
+    for qx in (0, 1):
+        for qy in (0, 1):
+            x0, y0 = 0.5 * qx, 0.5 * qy
+            if not any(b.x1 > x0 + 0.05 and b.x0 < x0 + 0.45 and b.y1 > y0 + 0.05
+                       and b.y0 < y0 + 0.45 for b in boxes):  # fmt: skip
+                empty.append((qx, qy))
+    return empty
+
+
+def test_the_interpolation_comparison_leaves_no_quarter_empty():
+    """Review r3 00/04: the wrapped heatmap left the lower right quarter empty; the values
+    along the row of the largest error fill it, dashed on the heatmap, read from the trace."""
+    player = FillPlayer(triangle(), W, H, backend="image", style="classroom")
+    view = player.interp_view
+    assert _empty_quarters(view.fig) == []
+    assert view.fig.get_figwidth() * view.fig.dpi <= 940 + 1e-6
+    row = view.heatmap.worst[0]
+    affine, persp = (np.asarray(line.get_ydata()) for line in view.profile.lines)
+    np.testing.assert_array_equal(affine, view.images[0].image.get_array()[row].filled(np.nan))
+    np.testing.assert_array_equal(persp, view.images[1].image.get_array()[row].filled(np.nan))
+    assert f"row {row}" in view.profile.title.get_text()
+    assert np.nanmax(np.abs(affine - persp)) == pytest.approx(view.maximum)
+    # a new fill moves the row with the largest error
+    other = tr.Triangle([[1.0, 14.0], [15.0, 12.0], [3.0, 1.0]], w=[4.0, 1.0, 1.0],
+                        attrs={"u": [1.0, 0.0, 0.0]})  # fmt: skip
+    view.update(tr.rasterize(other, W, H, trace=True))
+    assert view.profile.index == view.heatmap.worst[0] != row
+    player.close()
+
+
 def test_interpolation_toggle_changes_the_interpolation_view(player):
     view = player.interp_view
     assert view is not None
@@ -353,6 +387,41 @@ def test_vertex_sliders_move_the_triangle(editor):
     assert editor.fill.trace.snapped[0, 0] == 2.0
 
 
+def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
+    """Lesson 02: the editor's info line gives E12, E23, E31 at a marked point (the cross),
+    which the page drags as a fourth handle; bad arguments are named."""
+    e = TriangleEditor(triangle(), W, H, backend="image", probe=(7.5, 7.5), comparison=False)
+    try:
+        v = e.fill.trace.snapped
+        want = [tr.edge_function(v[k], v[(k + 1) % 3], (7.5, 7.5)) for k in range(3)]
+        assert np.allclose(e.edge_values(), want)
+        assert "E12 = " in e.info.value and "E31 = " in e.info.value
+        assert "largest |affine" not in e.info.value  # no comparison figure, no error quoted
+        assert len(e._handles()) == 4
+        e._on_page_move(3, 0.5, 0.5, True)
+        assert e.probe.tolist() == [0.5, 0.5] and "outside" in e.info.value
+        assert e.probe_marker.get_xydata().tolist() == [[0.5, 0.5]]
+        assert e.view.header.get_text() == "Span tables"  # a finished fill: no step count
+        keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
+        assert "raster line, its pixels" not in keyed and "E12, E23, E31 here" in keyed
+        e.method.value = "halfplane"
+        keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
+        assert keyed == ["filled", "tested, rejected", "bounding box", "E12, E23, E31 here"]
+        e.x[1].value = 9.0  # a move keeps the key as it is (one cross, once)
+        assert [t.get_text() for t in e.view.legend.texts if t.get_visible()] == keyed
+    finally:
+        e.close()
+    plain = TriangleEditor(triangle(), W, H, backend="image")
+    assert plain.edge_values() is None and len(plain._handles()) == 3
+    with pytest.raises(ValueError, match="no probe"):
+        plain.set_probe(1, 1)
+    plain.close()
+    with pytest.raises(ValueError, match="probe"):
+        TriangleEditor(triangle(), W, H, backend="image", probe=(1, 2, 3))
+    with pytest.raises(TypeError, match="comparison"):
+        TriangleEditor(triangle(), W, H, backend="image", comparison="no")
+
+
 def test_split_point_follows_the_middle_vertex(editor):
     u4 = editor.fill.trace.span.u4
     assert f"u4 = {u4:.2f}" in editor.info.value
@@ -457,6 +526,29 @@ def test_the_square_is_fully_on_screen(tilt):
     clip = plane_clip(tilt, viewer.camera, 64 / 48)
     ndc = clip[..., :2] / clip[..., 3:]
     assert np.abs(ndc).max() <= 0.92 + 1e-9
+    viewer.close()
+
+
+def test_textured_viewer_draws_v_down_the_middle_column():
+    """The fourth panel (review r3 00/04: the quarter was empty): v down the middle column,
+    evenly stepped for affine (a straight line in the row), bunched for perspective-correct."""
+    viewer = TexturedPlaneViewer(tilt=60, checks=4, backend="image", style="classroom")
+    assert _empty_quarters(viewer.fig) == []
+    prof = viewer.profile
+    v_affine, rows = (np.asarray(d, dtype=float) for d in prof.lines[0].get_data())
+    v_persp = np.asarray(prof.lines[1].get_xdata(), dtype=float)
+    np.testing.assert_array_equal(v_affine, viewer.uv_affine[:, viewer.width // 2, 1])
+    np.testing.assert_array_equal(v_persp, viewer.uv_perspective[:, viewer.width // 2, 1])
+    ok = np.isfinite(v_affine)
+    steps_a, steps_p = np.diff(v_affine[ok]), np.diff(v_persp[ok])
+    assert np.ptp(steps_a) < 1e-9  # affine: equal steps
+    assert steps_p.max() > 3 * steps_p.min()  # perspective: bunched towards the far edge
+    viewer.tilt.value = 0.0  # facing the camera: the two curves are one
+    np.testing.assert_allclose(prof.lines[0].get_xdata(), prof.lines[1].get_xdata(), atol=1e-12)
+    # no error anywhere: no marker pointing at an arbitrary pixel (review r3 04-5)
+    hm = viewer.view.heatmap
+    assert not hm.marker.get_visible() and not hm.note.get_visible()
+    assert "0 everywhere" in hm.title.get_text()
     viewer.close()
 
 

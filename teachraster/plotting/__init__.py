@@ -41,6 +41,7 @@ Per-pixel values
 - :func:`plot_barycentric` -- λ1, λ2, λ3 as RGB, or one weight as a value map.
 - :func:`plot_attribute` -- an interpolated attribute (affine or perspective-correct).
 - :func:`plot_error_heatmap` -- |a − b| with a colour bar; its maximum marked and in the title.
+- :func:`plot_profile` -- two images' values along one row or column, as two curves.
 - :func:`plot_depth` -- the depth buffer (window depth, 0 = near).
 - :func:`plot_image` -- a colour image such as a texture-mapped SceneFrame.
 - :func:`plot_plan` / :func:`format_plan` -- a render plan as a text table.
@@ -93,6 +94,7 @@ from .images import (
     HeatmapArtists,
     ImageArtists,
     PlanArtists,
+    ProfileArtists,
     abs_error,
     attribute_image,
     format_plan,
@@ -102,6 +104,7 @@ from .images import (
     plot_error_heatmap,
     plot_image,
     plot_plan,
+    plot_profile,
 )
 from .plots import (
     BailoutArtists,
@@ -189,6 +192,7 @@ __all__ = [
     "LodArtists",
     "PixelArtists",
     "PlanArtists",
+    "ProfileArtists",
     "PyramidArtists",
     "QuadArtists",
     "RasterLineArtists",
@@ -223,6 +227,7 @@ __all__ = [
     "plot_pixel_centres",
     "plot_pixel_grid",
     "plot_plan",
+    "plot_profile",
     "plot_pyramid",
     "plot_quads",
     "plot_raster_line",

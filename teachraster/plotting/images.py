@@ -25,6 +25,7 @@ from .common import (
     as_trace,
     fs,
     label_box,
+    lw,
     ms,
     quiet_nanmax,
     rgba_image,
@@ -229,12 +230,14 @@ class HeatmapArtists(Artists):
     label: str = "|a − b|"
     maximum: float = float("nan")
     colorbar: object = None
+    worst: tuple[int, int] | None = None  # (row, col) of the marked maximum
 
     def update(self, a, b) -> None:
         """Show the error of new images (same artists; the colour bar follows)."""
         err = abs_error(a, b)
         m = quiet_nanmax(err)
         self.maximum = m
+        self.worst = None
         self.image = set_image(self.image, err)
         if self.colorbar is not None and self.colorbar.mappable is not self.image:
             self.colorbar.update_normal(self.image)
@@ -243,6 +246,7 @@ class HeatmapArtists(Artists):
         self.image.set_clim(0.0, m if np.isfinite(m) and m > 0 else 1.0)
         if np.isfinite(m):
             i, j = np.unravel_index(np.nanargmax(err), err.shape)
+            self.worst = (int(i), int(j))
             self.marker.set_data([j + 0.5], [i + 0.5])
             self.note.xy = (j + 0.5, i + 0.5)
             # keep the note inside the image: it points left in the right half, and so on
@@ -250,9 +254,12 @@ class HeatmapArtists(Artists):
                                     fs(1.2) if i > h / 2 else -fs(1.2)))  # fmt: skip
             self.note.set_horizontalalignment("right" if j > w / 2 else "left")
             self.note.set_text(f"max {m:.3g}")
-            self.marker.set_visible(True)
-            self.note.set_visible(True)
-            self._set_title(f"{self.label}: max {m:.3g}")
+            # a zero maximum has no pixel to point at: every pixel is one (all w equal)
+            self.marker.set_visible(m > 0)
+            self.note.set_visible(m > 0)
+            self._set_title(
+                f"{self.label}: max {m:.3g}" if m > 0 else f"{self.label}: 0 everywhere"
+            )
         else:
             self.marker.set_visible(False)
             self.note.set_visible(False)
@@ -309,6 +316,95 @@ def plot_error_heatmap(
 
 
 # -- depth and colour --------------------------------------------------------------------------
+@dataclass
+class ProfileArtists(Artists):
+    """Artists of :func:`plot_profile`: two images' values along one row or column."""
+
+    lines: list  # the two curves, ``a`` first
+    guides: list  # the dashed row (column) drawn on the images it runs across
+    title: Text
+    axis: str = "row"
+    index: int = 0
+    vlim: tuple | None = None  # fixed value range, or None (the values' own)
+
+    def update(self, a, b, index: int | None = None) -> None:
+        """Show new images (and, with ``index``, another row or column) in the same artists."""
+        a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+        if index is not None:
+            self.index = int(index)
+        along_row = self.axis == "row"
+        pick = (lambda im: im[self.index, :]) if along_row else (lambda im: im[:, self.index])
+        pos = np.arange(a.shape[1 if along_row else 0]) + 0.5  # the pixel centres
+        for line, image in zip(self.lines, (a, b)):
+            values = pick(image)
+            line.set_data((pos, values) if along_row else (values, pos))
+            line.set_marker("o" if pos.size <= 40 else "")  # dots only where they stay apart
+        for guide in self.guides:
+            guide.set_data(([0, a.shape[1]], [self.index + 0.5] * 2) if along_row
+                           else ([self.index + 0.5] * 2, [0, a.shape[0]]))  # fmt: skip
+        ax = self.title.axes
+        lo, hi = self.vlim or _value_range(pick(a), pick(b))
+        (ax.set_ylim if along_row else ax.set_xlim)(lo, hi)
+        self.title.set_text(f"{'row' if along_row else 'column'} {self.index} (dashed)")
+
+
+def _value_range(a, b) -> tuple[float, float]:
+    both = np.concatenate([a[np.isfinite(a)], b[np.isfinite(b)]])
+    if not both.size:
+        return 0.0, 1.0
+    lo, hi = float(both.min()), float(both.max())
+    pad = 0.06 * (hi - lo) if hi > lo else 0.5
+    return lo - pad, hi + pad
+
+
+def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b"),
+                 value: str = "value", guides=(), vlim=None) -> ProfileArtists:  # fmt: skip
+    """The values of two images along one row (or column), as two curves over the pixel centres.
+
+    Beside an affine/perspective comparison it shows what the colours only suggest: along
+    any line of the screen the affine values change by equal steps (a straight line), the
+    perspective-correct ones do not (Ek, *Triangles and Perspective Correct Interpolation*,
+    §2).
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    a, b : (H, W) arrays
+        The two images (NaN where not covered: a gap in the curve).
+    axis : {"row", "column"}
+        Along a row, the curves run left to right (x = column j); along a column they run
+        downwards like the image (y = row i, increasing downwards; x = the value).
+    index : int
+        Which row (column).
+    labels : (str, str)
+        Legend entries of ``a`` and ``b``.
+    value : str
+        What the values are (the value axis' label).
+    guides : Axes
+        Axes showing the images, on which the row (column) is drawn dashed.
+    vlim : (float, float), optional
+        Fixed value range (default: the values on show, renewed at every update).
+    """
+    if axis not in ("row", "column"):
+        raise ValueError(f"axis must be 'row' or 'column', got {axis!r}")
+    styles = [dict(ls="-", marker="o", mfc="white"), dict(ls="-", marker="o")]
+    lines = [ax.plot([], [], label=label, lw=lw(0.8), ms=ms(0.7), color=color, **kw)[0]
+             for label, color, kw in zip(labels, (COLORS["bbox"], COLORS["inside"]), styles)]  # fmt: skip
+    guide_lines = [g.plot([], [], ls=(0, (4, 3)), color=COLORS["fill"], lw=lw(0.8))[0]
+                   for g in guides]  # fmt: skip
+    h, w = np.shape(a)[:2]
+    if axis == "row":
+        ax.set(xlim=(0, w), xlabel="column j", ylabel=value)
+    else:
+        ax.set(ylim=(h, 0), ylabel="row i", xlabel=value)
+    title = ax.set_title("", fontsize=fs(0.9))
+    result = ProfileArtists(lines, guide_lines, title, axis, int(index),
+                            None if vlim is None else tuple(vlim))  # fmt: skip
+    result.update(a, b)
+    ax.legend(loc="best", fontsize=fs(0.75), handlelength=1.2, borderpad=0.3)  # as drawn
+    return result
+
+
 def plot_depth(
     ax, source, *, cmap=None, vmin=None, vmax=None, colorbar: bool = True, title: bool = True
 ) -> ImageArtists:

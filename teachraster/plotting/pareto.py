@@ -4,7 +4,7 @@ A variant is on the **Pareto front** when no other is both cheaper and more accu
 puts each variant's error (down is better, log scale) against a cost (left is cheaper), joins
 the front with a step line and labels each point beside it. Exact variants (error 0, or below
 ``EXACT_BELOW``: float64 rounding, not a method's error) cannot sit on a log axis: they are drawn
-on a dashed floor line labelled "0 (exact)".
+on a dashed floor line labelled "0 (exact)", and no error tick is labelled at or below it.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from matplotlib.ticker import NullFormatter
+from matplotlib.ticker import Formatter, NullFormatter
 
 from ..study.bench.report import pareto_front
 from .style import COLORS
@@ -80,8 +80,42 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
            title=title)  # fmt: skip
     art = ParetoArtists(points, line, labels, floor, [], short)
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
+    floor_ticks(ax, floor)
     update_pareto(ax, art, rows, x, y=y)
     return art
+
+
+def floor_ticks(ax, floor: float, formatter=None) -> None:
+    """Label the error axis above the "0 (exact)" floor only (``formatter``: the major tick
+    labels' format, default the axis' own).
+
+    The floor is a stand-in for zero on a log axis: a tick labelled 20 below a floor drawn at
+    45 would read as "less than exact", and points on the floor as 45 wrong pixels. Ticks up
+    to twice the floor keep their marks but lose their labels.
+    """
+    yaxis = ax.yaxis
+    major = formatter if formatter is not None else yaxis.get_major_formatter()
+    minor = yaxis.get_minor_formatter()
+    yaxis.set_major_formatter(_AboveFloor(major, floor))
+    yaxis.set_minor_formatter(_AboveFloor(minor, floor))
+
+
+class _AboveFloor(Formatter):
+    """``base``'s tick labels above 1.5 times ``floor``, none at or below it. Delegates
+    ``set_locs``, so a log formatter still chooses which minor ticks to label."""
+
+    def __init__(self, base, floor: float) -> None:
+        self.base, self.floor = base, floor
+
+    def set_axis(self, axis) -> None:
+        super().set_axis(axis)
+        self.base.set_axis(axis)
+
+    def set_locs(self, locs) -> None:
+        self.base.set_locs(locs)
+
+    def __call__(self, x, pos=None) -> str:
+        return "" if x <= 2.0 * self.floor else self.base(x, pos)
 
 
 def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> list:

@@ -5,8 +5,11 @@ sits between vertex processing, which ends in window coordinates, and the per-fr
 The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: the fragment
 (pixel) shader runs before the per-fragment depth and stencil tests, which run before blending.
 *Early-z*, running the depth test before the shader, is an optimisation a GPU may apply only
-when the result cannot change (the shader neither discards fragments nor writes depth); the
-picture draws it as a dashed bypass. The stages and their lessons are data
+where the result cannot change, and it splits the test from the write: a shader that writes its
+own depth (``gl_FragDepth``, ``SV_Depth``) turns the early test off (conservative depth
+excepted), while a shader that may discard keeps it and only delays the depth write until it
+has kept the fragment (GL 4.6 §14.9, §15.2; lesson 05a). The picture draws it as a dashed
+bypass. The stages and their lessons are data
 (:data:`PIPELINE_STAGES`), so the notebook's list of links and the picture cannot disagree.
 """
 
@@ -63,7 +66,7 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
     Stage("fragment shading", "colour, textures; may discard", ("09_texture_filtering",)),
     Stage(
         "depth test",
-        "keep the nearest fragment (and stencil)",
+        "keep the nearest fragment, write its depth (and stencil)",
         ("05a_zbuffer", "05b_depth_precision", "10_tiles_and_hierarchical_z"),
     ),  # fmt: skip
     Stage("blending", "combine with the image", ("12_lines_and_blending",)),
@@ -71,6 +74,13 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
 
 #: The stages early-z jumps between: the depth test moved before the fragment shader.
 EARLY_Z = ("rasterisation", "depth test")
+
+#: The bypass's label: the early test is lost only to a depth-writing shader; a discard delays
+#: only the depth write (lesson 05a).
+EARLY_Z_LABEL = (
+    "early-z: depth tested before shading,\nnot if the shader writes depth;\n"
+    "discard delays only the write"
+)
 
 
 def lesson_number(stem: str) -> str:
@@ -98,8 +108,8 @@ def _early_z_bypass(ax, names: list[str], right: float):
                             connectionstyle="bar,fraction=-0.12", mutation_scale=fs(1.0),
                             color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
     ax.add_patch(arrow)
-    ax.text(right + 0.95, (top + bottom) / 2, "early-z: only if the shader\nneither discards nor writes depth",
-            rotation=-90, ha="center", va="center", fontsize=fs(0.7), style="italic")  # fmt: skip
+    ax.text(right + 0.95, (top + bottom) / 2, EARLY_Z_LABEL, rotation=-90, ha="center",
+            va="center", fontsize=fs(0.7), style="italic")  # fmt: skip
     return arrow
 
 

@@ -33,7 +33,7 @@ from .common import (
     show_image,
     two_colour,
 )
-from .images import ImageArtists, attribute_image, plot_error_heatmap, show_values
+from .images import ImageArtists, attribute_image, plot_error_heatmap, plot_profile, show_values
 from .plots import (
     plot_bbox,
     plot_coverage,
@@ -326,7 +326,8 @@ class FillView:
                         ("its centre covered", c["edge"], "white", "o"),
                         ("its centre not", "white", c["edge"], "o")]  # fmt: skip
         else:
-            entries.append(("current pixel", "none", c["current"]))
+            # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
+            entries.append(("pixel under test, × centre", "none", c["current"]))
         self.legend.set_entries(entries)
 
 
@@ -496,7 +497,10 @@ class InterpolationView(ComparisonView):
         Attribute to show; may be left out when the triangle has only one.
     channel : int, optional
         One channel of a vector attribute (a 3-channel one is otherwise shown as colour).
-    axes : three matplotlib Axes, optional
+    axes : three (or four) matplotlib Axes, optional
+        A fourth Axes (not None) shows the two interpolations along the row of the largest
+        error (:func:`~teachraster.plotting.plot_profile`), dashed on the heatmap: a straight
+        line for affine, a curve for perspective-correct.
     vmin, vmax : float, optional
         Fixed colour range of the values (default: their range, renewed at every update).
 
@@ -519,12 +523,22 @@ class InterpolationView(ComparisonView):
         self.channel = channel
         a, b = self._images(trace)
         label = self.name + ("" if channel is None else f"[{channel}]")
+        axes = None if axes is None else list(axes)
+        profile_ax = axes.pop(3) if axes is not None and len(axes) > 3 else None
         # Short titles, so that they fit their panels at classroom font sizes too; the
         # attribute's name labels the colour bar of the values.
         super().__init__(
             a, b, titles=("affine", "perspective-correct"), label="|error|", axes=axes,
             vmin=vmin, vmax=vmax,
         )  # fmt: skip
+        self.profile = None
+        if profile_ax is not None and a.ndim == 3:
+            profile_ax.set_axis_off()  # colours have no single value to draw along a row
+        elif profile_ax is not None:
+            self.profile = plot_profile(
+                profile_ax, a, b, index=self._profile_row(a), labels=("affine", "perspective"),
+                value=label, guides=[self.axes[2]], vlim=None if vmin is None else (vmin, vmax),
+            )  # fmt: skip
         colorbar = self.images[1].colorbar
         if colorbar is not None:
             colorbar.set_label(label)
@@ -543,6 +557,11 @@ class InterpolationView(ComparisonView):
         a = attribute_image(trace, self.name, mode="affine", channel=self.channel)
         b = attribute_image(trace, self.name, mode="perspective", channel=self.channel)
         return a, b
+
+    def _profile_row(self, a) -> int:
+        """The row of the marked largest error (the middle row when nothing is covered)."""
+        worst = self.heatmap.worst
+        return worst[0] if worst is not None else a.shape[0] // 2
 
     @property
     def trace(self) -> FillTrace:
@@ -576,4 +595,8 @@ class InterpolationView(ComparisonView):
         self._trace = trace
         for tri in self.triangles:
             tri.update(trace)
-        super().update(a, b, draw=draw)
+        super().update(a, b, draw=False)
+        if self.profile is not None:
+            self.profile.update(a, b, self._profile_row(a))
+        if draw:
+            self.fig.canvas.draw_idle()

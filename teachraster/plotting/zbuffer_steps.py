@@ -14,7 +14,7 @@ import numpy as np
 from matplotlib.colors import BoundaryNorm, ListedColormap
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
-from matplotlib.ticker import MaxNLocator
+from matplotlib.ticker import FormatStrFormatter, MaxNLocator
 
 from .common import fs, image_extent
 from .style import COLORS, OKABE_ITO, VALUE_CMAP
@@ -113,9 +113,10 @@ class ZBufferStepView:
         # fragment panel's key, which sets the height of that row
         bar = self.ax_depth.figure.colorbar(self.depth, ax=self.ax_depth, location="right",
                                             shrink=0.8)  # fmt: skip
-        bar.locator = MaxNLocator(3)
+        bar.locator = MaxNLocator(4)  # at least three labelled ticks over the short range
+        bar.formatter = FormatStrFormatter("%.3f")
         bar.update_ticks()
-        bar.set_label("stored depth (dark = near)")
+        bar.set_label("window depth z (0 = near)")  # the name plot_depth gives it
         self.colorbar = bar
         rows, cols = np.nonzero(self.frame.coverage)
         pad = 0.08 * max(width, height)

@@ -214,7 +214,7 @@ def fit_column(fig: Figure) -> None:
 
 
 def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,
-                    below: bool = False) -> list:  # fmt: skip
+                    below: bool = False, profile: bool = False) -> list:  # fmt: skip
     """Three equal panels for a ComparisonView / InterpolationView, as many per row as fit.
 
     The views add colour bars to the middle and right panels with ``fig.colorbar(ax=...)``,
@@ -228,6 +228,10 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     bars' labels keep their room instead of overlapping or being cut off. Panels that would
     make the figure wider than the notebook column (``COLUMN_WIDTH_PX`` at the figure's dpi)
     wrap onto a second row: shrinking the figure instead would shrink its text.
+
+    With ``profile`` a fourth Axes (for :func:`~teachraster.plotting.plot_profile`) fills the
+    rest of a row the heatmap has to itself, so that no quarter of the figure stays empty;
+    it is None when the three panels share one row (there is no empty room to fill).
     """
     from .common import font_scale
 
@@ -248,15 +252,27 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     # only the first row has the first panel's column labels above it: a wrapped row needs
     # room for its title alone
     tops = [top] + [0.45 * s] * (len(rows) - 1)
-    fh = sum(ph + t + bottom for t in tops)
+    # the profile's row needs room under it for its tick labels and axis label
+    alone = profile and len(rows) > 1 and len(rows[-1]) == 1
+    bottoms = [bottom] * (len(rows) - 1) + [max(bottom, 0.2 + 0.6 * s) if alone else bottom]
+    fh = sum(ph + t + b for t, b in zip(tops, bottoms))
+    if alone:  # the profile as wide as a panel, if the column has room for it
+        start = left + widths[rows[-1][0]] + gaps[rows[-1][0]] + 0.85 * s
+        fw = min(max(fw, start + pw + 0.25), max(fw, column_inches(fig)))
     fig.set_size_inches(fw, fh)
     axes = []
     y = fh
-    for row, t in zip(rows, tops):
-        x, y = left, y - (ph + t + bottom)
+    for row, t, b in zip(rows, tops, bottoms):
+        x, y = left, y - (ph + t + b)
         for i in row:
-            axes.append(fig.add_axes((x / fw, (y + bottom) / fh, widths[i] / fw, ph / fh)))
+            axes.append(fig.add_axes((x / fw, (y + b) / fh, widths[i] / fw, ph / fh)))
             x += widths[i] + gaps[i]
+    if profile:
+        # the rest of the heatmap's row, less room for the profile's value labels on its left
+        x += 0.85 * s
+        room = fw - x - 0.25
+        axes.append(fig.add_axes((x / fw, (y + bottoms[-1]) / fh, room / fw, ph / fh))
+                    if alone and room > 0.5 * pw else None)  # fmt: skip
     return axes
 
 

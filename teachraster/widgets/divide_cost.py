@@ -83,7 +83,7 @@ class DivideCostExplorer(Shown):
         self.divide.observe(lambda change: self.update(), "value")
         self.error.observe(lambda change: self.update(replot=True), "value")
         title = title_html(
-            "What a divide costs decides the front",
+            "What a divide costs decides the price of exactness",
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
             "Vermillion: the Pareto front, the variants no other beats on both cost and error.",
         )

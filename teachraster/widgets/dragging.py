@@ -51,7 +51,8 @@ def fill_edit_blit(view) -> LayeredBlit:
 def comparison_edit_blit(view) -> LayeredBlit:
     """A blit of an InterpolationView whose fill changes (or a ComparisonView whose images
     change): images, outlines, colour bars, the heatmap's title and its marked maximum
-    move; the grids, panel titles and "in use" notes stay."""
+    move (and an InterpolationView's profile); the grids, panel titles and "in use" notes
+    stay."""
     images = [art.image for art in view.images] + [view.heatmap.image]
     # the frames too: the images are painted up to the Axes' edge, the frames drawn over them
     still = [g.lines for g in view.grids if g is not None]
@@ -59,9 +60,11 @@ def comparison_edit_blit(view) -> LayeredBlit:
     bars = [art.colorbar.ax for art in [*view.images, view.heatmap]
             if getattr(art, "colorbar", None) is not None]  # fmt: skip
     tris = [a for tri in getattr(view, "triangles", []) for a in tri.artists]
+    profile = getattr(view, "profile", None)  # an InterpolationView's values along a row
+    along = [] if profile is None else [*profile.guides, profile.title.axes]
     return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
                                   (MOVING, [*tris, view.heatmap.marker, view.heatmap.note,
-                                            view.heatmap.title, *bars])])  # fmt: skip
+                                            view.heatmap.title, *bars, *along])])  # fmt: skip
 
 
 class DragFigure(anywidget.AnyWidget):

@@ -8,10 +8,12 @@ import time
 import ipywidgets as widgets
 import numpy as np
 
+from ..core.edges import edge_function
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
-from ..core.validate import as_size
-from ..plotting import FillView, InterpolationView
+from ..core.validate import as_finite, as_size
+from ..plotting import COLORS, FillView, InterpolationView
+from ..plotting.blitting import MOVING
 from .common import (
     Holdable,
     close_tree,
@@ -41,6 +43,10 @@ def on_grid(value: float, direction: int = 0) -> float:
     )
     return whole * GRID
 
+
+#: Key entries of a fill's steps, not of a finished fill (the editor has no current step).
+STEP_ONLY = {"pixel under test, × centre", "raster line, its pixels", "span x_left .. x_right",
+             "its centre covered", "its centre not"}  # fmt: skip
 
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
 #: ratios, which is what perspective depends on).
@@ -77,6 +83,14 @@ class TriangleEditor(Holdable):
         As for :class:`~teachraster.widgets.FillPlayer`.
     style : str, optional
         Plotting style for this widget's figures.
+    probe : (2,) array-like, optional
+        A point (x, y) in pixels, marked in the fill figure, at which the info line gives the
+        three edge functions E12, E23, E31 of the vertices as given (lesson 02): all three
+        positive inside a clockwise triangle, all negative inside a counter-clockwise one.
+        The cross is dragged like a vertex (in the page; :meth:`set_probe` from code).
+    comparison : bool
+        Show the interpolation figure (affine vs perspective-correct, lesson 04). Lesson 02,
+        whose w are all 1, leaves it out.
 
     Attributes
     ----------
@@ -116,6 +130,8 @@ class TriangleEditor(Holdable):
         attribute: str = "u",
         backend: str = "auto",
         style: str | None = None,
+        probe=None,
+        comparison: bool = True,
     ) -> None:
         if not isinstance(tri, Triangle):
             raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
@@ -124,6 +140,10 @@ class TriangleEditor(Holdable):
         self.tri = Triangle(tri.xy, w=tri.w, z=tri.z, attrs=attrs)
         self.width, self.height = as_size("width", width), as_size("height", height)
         self.attribute = attribute
+        self.probe = None if probe is None else as_finite("probe", probe, (2,))
+        if not isinstance(comparison, bool):
+            raise TypeError(f"comparison must be True or False, got {comparison!r}")
+        self.comparison = comparison
         self.backend = resolve_backend(backend)
         self._dragging: int | None = None
         self._pending = None
@@ -173,14 +193,17 @@ class TriangleEditor(Holdable):
             self.fig.canvas.mpl_connect("button_press_event", self._on_press)
             self.fig.canvas.mpl_connect("motion_notify_event", self._on_motion)
             self.fig.canvas.mpl_connect("button_release_event", self._on_release)
-        title = title_html(
-            "Edit a triangle: fill, split point and interpolation error",
-            hint + ". The error heatmap is |affine − perspective-correct| of "
-            f"<i>{attribute}</i>: zero when all three w are equal.",
-        )
+        if comparison:
+            title = title_html(
+                "Edit a triangle: fill, split point and interpolation error",
+                hint + ". The error heatmap is |affine − perspective-correct| of "
+                f"<i>{attribute}</i>: zero when all three w are equal.",
+            )
+        else:
+            title = title_html("Edit a triangle: its fill and its edge functions", hint + ".")
+        figures = [self.display.widget, *([self.interp_display.widget] * comparison)]
         self.widget = widgets.VBox([
-            title, widgets.HBox(columns), labelled("method", self.method), self.info,
-            self.display.widget, self.interp_display.widget,
+            title, widgets.HBox(columns), labelled("method", self.method), self.info, *figures,
         ])  # fmt: skip
 
     def _make_figures(self) -> None:
@@ -189,10 +212,17 @@ class TriangleEditor(Holdable):
         self.fig = new_figure((7, 5), self.backend)
         ax = fill_axes(self.fig, width, height, side=4.0)
         # a finished fill has no step to explain; the info line says what matters here
-        self.view = FillView(self.fill, ax=ax, step=-1, caption=False)
+        # no steps here: the header names the method only, not "step 172 of 0–172"
+        self.view = FillView(self.fill, ax=ax, step=-1, caption=False, step_header=False)
+        self.probe_marker = None
+        if self.probe is not None:  # marked, over the fill: the point the info line reads
+            # not the current pixel's vermillion, nor the split's purple (span tables)
+            (self.probe_marker,) = ax.plot(*self.probe, "X", ms=15, mfc=COLORS["edge"],
+                                           mec="white", mew=1.5, zorder=7)  # fmt: skip
+        self._tidy_key()
         # a move changes the triangle's artists only: the grid, labels, centres and legend
         # stay in a cached background (dragging.fill_edit_blit)
-        self._blits = {"fill": fill_edit_blit(self.view)}
+        self._blits = {"fill": self._fill_blit()}
         if self.backend == "ipympl":
             self.display = FigureDisplay(self.fig, self.backend, draw=self._draw_fill)
         else:
@@ -204,8 +234,35 @@ class TriangleEditor(Holdable):
         self._blits["interp"] = comparison_edit_blit(self.interp_view)
         self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
 
+    def _tidy_key(self) -> None:
+        """The key of a finished fill: the step-only entries hidden, the probe's cross named.
+
+        The FillView's key lists the current pixel and raster line of a step; the editor
+        shows no step, so those lines go, and a free line below the rest names the cross.
+        """
+        key = self.view.legend
+        if key is None:
+            return
+        label = "E12, E23, E31 here"
+        shown = [text.get_visible() and text.get_text() not in {*STEP_ONLY, label}
+                 for text in key.texts]  # fmt: skip
+        for swatch, text, on in zip(key.swatches, key.texts, shown):
+            swatch.set_visible(on)
+            text.set_visible(on)
+        if self.probe_marker is not None and sum(shown) < len(key.texts):
+            k = sum(shown)  # the step-only entries come last: the first hidden line is free
+            key.swatches[k].set(visible=True, marker="X", mfc=COLORS["edge"], mec="white")
+            key.texts[k].set(visible=True, text=label)
+
+    def _fill_blit(self):
+        """The fill figure's blit, the probe's cross drawn over everything (it moves too)."""
+        blit = fill_edit_blit(self.view)
+        if self.probe_marker is not None:
+            blit.plan.append((MOVING, [self.probe_marker]))
+        return blit
+
     def _draw_fill(self) -> None:
-        self._blits["fill"] = same_or_new(self._blits["fill"], fill_edit_blit(self.view))
+        self._blits["fill"] = same_or_new(self._blits["fill"], self._fill_blit())
         if not self._dragging_in_page:
             self._blits["fill"].draw()
             return
@@ -234,11 +291,26 @@ class TriangleEditor(Holdable):
         return not getattr(getattr(self, "display", None), "final", True)
 
     def _handles(self) -> np.ndarray:
-        """The vertices on show (the triangle's own until the sliders exist)."""
-        return self.tri.xy
+        """The vertices on show (the triangle's own until the sliders exist), then the
+        probe's cross."""
+        if self.probe is None:
+            return self.tri.xy
+        return np.vstack([self.tri.xy, self.probe])
+
+    def set_probe(self, x: float, y: float) -> None:
+        """Move the probe's cross to (x, y) (on the 1/256 px grid) and update the info line."""
+        if self.probe is None:
+            raise ValueError("this editor has no probe: give probe=(x, y) when making it")
+        self.probe = np.array([on_grid(x), on_grid(y)])
+        self.probe_marker.set_data([self.probe[0]], [self.probe[1]])
+        self._set_info()
+        self.display.refresh()
 
     def _on_page_move(self, i: int, x: float, y: float, final: bool) -> None:
         """A position from the page (the latest of a drag, or where it ended)."""
+        if i == 3:  # the probe's cross: its values follow at every position
+            self.set_probe(x, y)
+            return
         self.display.final = final
         try:
             self.set_vertex(i, x=x, y=y)
@@ -311,11 +383,13 @@ class TriangleEditor(Holdable):
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)
+        self._tidy_key()  # a new method's key is made afresh
         self.display.refresh()  # first: what the pointer moved (the comparison costs more)
         if not dragging:
             self.interp_view.update(self.fill, draw=False)
             self._set_info()
-            self.interp_display.refresh()
+            if self.comparison:
+                self.interp_display.refresh()
         self._last_done = time.perf_counter()
         self.last_update_s = self._last_done - t0
 
@@ -335,9 +409,37 @@ class TriangleEditor(Holdable):
         elif trace.halfplane is not None:
             parts.append(f"{trace.bbox.size} centres of the bounding box tested")
         m = self.interp_view.maximum
-        if np.isfinite(m):
+        if self.comparison and np.isfinite(m):
             parts.append(f"largest |affine − perspective| of {self.attribute} = {m:.3g}")
-        self.info.value = " · ".join(parts)
+        info = " · ".join(parts)
+        if self.probe is not None:
+            info += "<br>" + self.probe_text()
+        self.info.value = info
+
+    def edge_values(self) -> np.ndarray | None:
+        """(3,) E12, E23, E31 of the snapped vertices as given at :attr:`probe` (None
+        without a probe): each twice the signed area of the edge and the probe."""
+        if self.probe is None:
+            return None
+        v = self.fill.trace.snapped
+        return np.array([float(edge_function(v[k], v[(k + 1) % 3], self.probe))
+                         for k in range(3)])  # fmt: skip
+
+    def probe_text(self) -> str:
+        """The info line's second line: E12, E23, E31 at the probe, and what they say."""
+        e = self.edge_values()
+        x, y = self.probe
+        values = ", ".join(f"E{n} = {v:+.2f}" for n, v in zip(("12", "23", "31"), e))
+        if (e > 0).all():
+            verdict = "all positive: inside (clockwise on screen)"
+        elif (e < 0).all():  # the package tests the edges walked backwards, E21 = −E12 ...
+            verdict = ("all negative: inside (counter-clockwise: the fill tests E21, E32, "
+                       "E13, their negatives)")  # fmt: skip
+        elif (e == 0).any() and ((e >= 0).all() or (e <= 0).all()):
+            verdict = "one is 0: on an edge (the top-left rule decides)"
+        else:
+            verdict = "signs differ: outside"
+        return f"at the marked point ({x:g}, {y:g}): {values} · {verdict}"
 
     # -- mouse dragging (ipympl) ------------------------------------------------------------
     def _on_press(self, event) -> None:

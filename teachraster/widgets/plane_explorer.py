@@ -326,7 +326,8 @@ class PlaneExplorer:
             f"({s['g_recentred'][0]:.4f}, {s['g_recentred'][1]:.4f}) = (g_x, g_y)",
             f"<b>A, B, C, D</b> = {A:.3f}, {B:.3f}, {C:.3f}, {D:.3f} "
             f"(C = 2 × signed area = {s['area2']:.3f})",
-            f"dx = −A/C = {-A / C:.4f}, dy = −B/C = {-B / C:.4f}",
+            # + 0.0: a constant f gives −0.0, which would print as "-0.0000"
+            f"dx = −A/C = {-A / C + 0.0:.4f}, dy = −B/C = {-B / C + 0.0:.4f}",
         ]
         return "<div style='margin-left:16px'>" + "<br>".join(parts) + "</div>"
 

@@ -42,7 +42,7 @@ ONE_SAMPLE = "1 (centre)"
 TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
 #: The comparison's greatest height on screen (px): with the title and the controls above it,
 #: the open comparison fits a 900-px-high screen (the steps fold meanwhile).
-COMPARISON_MAX_PX = 680
+COMPARISON_MAX_PX = 660
 
 
 def shown_samples(method: str, samples: str) -> str:
@@ -209,7 +209,7 @@ class FillPlayer(Holdable):
         if self.tri.attrs:
             name = attribute or next(iter(self.tri.attrs))
             ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = comparison_axes(ifig, self.height, self.width, below=True)
+            axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
             # a toggle changes the images, outlines and colour bars: the rest stays cached
@@ -275,14 +275,14 @@ class FillPlayer(Holdable):
             return []
         figure = self.interp_display.widget
         if isinstance(figure, widgets.Image):  # an ipympl canvas keeps its own size
-            # scaled down whole, the picture's shape kept (two rows of panels: 899 px)
+            # scaled down whole, the picture's shape kept (lesson 04's, classroom style: 903 px)
             figure.layout.max_height = f"{COMPARISON_MAX_PX}px"
             figure.layout.object_fit = "contain"
             figure.layout.object_position = "left top"
         self.comparison = widgets.Accordion(
             children=[figure], selected_index=None,
-            titles=("affine / perspective-correct: both interpolations and their error "
-                    "(in place of the steps)",),
+            titles=("affine / perspective-correct: both interpolations, their error, and both "
+                    "along the row of the largest error",),
         )  # fmt: skip
         self._interp_stale = False
         self.comparison.observe(self._refresh_comparison, "selected_index")

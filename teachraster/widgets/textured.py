@@ -11,7 +11,7 @@ from ..core.validate import as_size
 from ..pipeline.geometry.camera import Camera
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
-from ..plotting import ComparisonView
+from ..plotting import ComparisonView, plot_profile
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from .common import Shown, close_tree, style_context, title_html
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
@@ -71,8 +71,9 @@ class TexturedPlaneViewer:
     a checkerboard with :func:`teachraster.sample`. With affine coordinates the checker
     lines stay straight inside each triangle (an affine map keeps lines straight) but are
     evenly spaced, and they kink along the diagonal shared by the two triangles; the panel
-    measures the difference in texels (:func:`teachraster.texel_error`). At tilt 0 all
-    w are equal and the two agree exactly.
+    measures the difference in texels (:func:`teachraster.texel_error`) and the one beside it
+    draws v down the middle column both ways (:func:`teachraster.plotting.plot_profile`).
+    At tilt 0 all w are equal and the two agree exactly.
 
     Parameters
     ----------
@@ -149,13 +150,21 @@ class TexturedPlaneViewer:
         self._render(tilt)
         with style_context(style):
             fig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = comparison_axes(fig, height, width, colorbars=(False, True))
+            axes = comparison_axes(fig, height, width, colorbars=(False, True), profile=True)
             self.view = ComparisonView(
-                self.affine, self.perspective, axes=axes,
+                self.affine, self.perspective, axes=axes[:3],
                 titles=("affine uv", "perspective-correct uv"), label="|error|",
             )  # fmt: skip
             if self.view.heatmap.colorbar is not None:
                 self.view.heatmap.colorbar.set_label("texels")
+            self.profile = None
+            if axes[3] is not None:
+                # v down the middle column: even steps (affine) against bunched ones
+                self.profile = plot_profile(
+                    axes[3], self.uv_affine[..., 1], self.uv_perspective[..., 1],
+                    axis="column", index=width // 2, labels=("affine", "perspective"),
+                    value="texture v", guides=[self.view.axes[2]], vlim=(-0.04, 1.04),
+                )  # fmt: skip
             self._show_error()
             # a new tilt changes the images, the heatmap's title and colour bar: the rest
             # (tick labels, titles) stays in a cached background; the colour bar is drawn
@@ -179,8 +188,9 @@ class TexturedPlaneViewer:
         self.info.value = self._info_html()
         title = title_html(
             "Texture mapping a receding square: affine vs perspective-correct",
-            "Tilt the square away from the camera and compare the two renders; the lower "
-            "panel is the difference of their texture coordinates, in texels.",
+            "Tilt the square away from the camera and compare the two renders. Below: how "
+            "far apart their texture coordinates are, in texels, and the texture's v down the "
+            "middle column (dashed), both ways.",
         )
         self.widget = widgets.VBox([title, self.tilt, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
@@ -211,8 +221,9 @@ class TexturedPlaneViewer:
         still = [g.lines for g in view.grids if g is not None]
         still += [s for ax in view.axes for s in ax.spines.values()]
         hm = view.heatmap
+        along = [] if self.profile is None else [*self.profile.guides, self.profile.title.axes]
         return LayeredBlit(view.fig, [(MOVING, images), (STILL, still),
-                                      (MOVING, [hm.marker, hm.note, hm.title])])  # fmt: skip
+                                      (MOVING, [hm.marker, hm.note, hm.title, *along])])  # fmt: skip
 
     def _draw(self) -> None:
         """Blit the figure, then the colour bar: drawn, put back from the sprite cache, or
@@ -258,6 +269,8 @@ class TexturedPlaneViewer:
         # colour difference ComparisonView.update would compute first (a colour bar redraw)
         for art, image in zip(self.view.images, (self.affine, self.perspective)):
             art.update(image)
+        if self.profile is not None:
+            self.profile.update(self.uv_affine[..., 1], self.uv_perspective[..., 1])
         self._show_error()
 
     def _info_html(self) -> str:

@@ -216,7 +216,8 @@ add_case(
         ),
         fill_all,
         check_nothing,
-        "raw floats with E >= 0 fill the 7 centres on the line (every E is 0 there)",
+        "raw floats with E >= 0 and no bounding box fill every centre on the line through the "
+        "vertices, in the whole image, beyond the vertices too (every E is 0 on it)",
         naive_mesh("inclusive"),
         naive_differs,
     )
@@ -235,7 +236,8 @@ add_case(
         ),
         fill_all,
         check_nothing,
-        "raw floats with E >= 0 fill the centres on the remaining segment",
+        "raw floats with E >= 0 and no bounding box fill every centre on the line through the two "
+        "distinct points, in the whole image, beyond the segment's ends too",
         naive_mesh("inclusive"),
         naive_differs,
     )

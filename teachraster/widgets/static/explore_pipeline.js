@@ -63,14 +63,16 @@ export function stageHtml(data, key) {
     case "fragment":
       return "<p>The fragment shader runs once per fragment on the interpolated attributes: " +
         "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
-        "could discard the fragment or write its own depth, which is why the depth test " +
-        "normally comes <i>after</i> it.</p>";
+        "could write its own depth (<code>gl_FragDepth</code>) or discard the fragment, " +
+        "which is why the depth test and the depth write logically come <i>after</i> it.</p>";
     case "depth":
       return `<p>Each fragment's depth (interpolated window depth) is compared with the ` +
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
         "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed) runs this test " +
-        "before the shader, to skip hidden fragments: only allowed when the shader neither " +
-        "discards nor writes depth.</p>";
+        "before the shader, to skip hidden fragments. A shader that writes its own depth " +
+        "turns the early test off (unless it declares conservative depth); a shader that " +
+        "may discard keeps the early test, and only the depth write waits until the shader " +
+        "has kept the fragment.</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
         "colour target was cleared to dark grey). That is the final image.</p>";
@@ -155,7 +157,8 @@ function diagram(onPick) {
   arrow(`M${r.x + r.w / 2},${r.y + r.h} C${r.x + r.w / 2},${r.y + r.h + 46} ${d.x + d.w / 2},` +
     `${d.y + d.h + 46} ${d.x + d.w / 2},${d.y + d.h + 2}`, "7 5");
   root.append(svg("text", { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 46, "text-anchor": "middle",
-    "font-size": 13, fill: "#333" }, "early-z: only if no discard or depth write"));
+    "font-size": 13, fill: "#333" }, "early-z: tested before shading, not if the shader " +
+    "writes depth (discard delays only the write)"));
   const groups = boxes.map((b, k) => {
     const [, name, lessons] = STAGES[k];
     const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name.replace("|", " "),
