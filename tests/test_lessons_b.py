@@ -314,6 +314,10 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     assert int(ns.sliver_4.coverage.sum()) == 16  # the Predict's answer
     assert np.flatnonzero(ns.sliver_4.coverage[1]).tolist() == list(range(16))
     assert set(ns.sliver_4.coverage_fraction[ns.sliver_4.coverage].tolist()) == {0.25}
+    # y grows downward: y_top is the upper edge on screen, the slanted lower edge rises through
+    # the sample row y = 1.125 at x_cross, and the covered samples are the ones left of it
+    assert ns.y_top < 1 + ns.sample_dy < ns.y_low and ns.x_cross == pytest.approx(15.5)
+    assert np.flatnonzero(ns.sliver_4.coverage[1]).max() == int(ns.x_cross - ns.sample_dx)
     # a horizontal edge through the ordered grid: three values (0, 1/2, 1)
     assert ns.grid_values == 3  # the Predict's answer
     # the near-horizontal edge of the figure: the grid shows 1/4 once, not 3/4 ("luck")
