@@ -393,6 +393,20 @@ def test_11_replay_and_the_sliver_between_centres():
     assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
 
 
+def test_11_05a_10_agree_on_when_early_z_is_legal():
+    import json
+
+    def text(name):
+        cells = json.loads((ROOT / "notebooks" / f"{name}.ipynb").read_text())["cells"]
+        return " ".join(" ".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+
+    # GL 4.6 §14.9: discard delays the depth write, not the test; side effects forbid it
+    for name in ("05a_zbuffer", "10_tiles_and_hierarchical_z", "11_debugging_a_frame"):
+        words = " ".join(text(name).split())
+        assert "neither discards nor writes" not in words, name
+        assert "early_fragment_tests" in words, name
+
+
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     ns = lesson("11_debugging_a_frame")
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
