@@ -500,8 +500,10 @@ def test_09_quads_closed_form_and_predictions():
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
     assert ns.level_q == 2 and abs(ns.lam_q - np.log2(3)) < 1e-12
     assert ns.strip.shape == (1, len(ns.numbered)) and np.flatnonzero(ns.strip[0]).tolist() == [2]
-    # the probes question: its answer is the measured gap, "0.1 or more"
-    assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer >= 0.05
+    # the probes question: its answer is the measured gap, in the last bucket, whose label
+    # names the bucket's own bound
+    assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
+    assert ns.sizes[-1] == f"more than {ns.cuts[-1]:g}"
     assert ns.top > 0  # the figures start at the floor, not in the sky
 
 
