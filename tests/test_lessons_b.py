@@ -499,7 +499,16 @@ def test_09_quads_closed_form_and_predictions():
     np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
     assert ns.level_q == 2 and abs(ns.lam_q - np.log2(3)) < 1e-12
-    assert ns.strip.shape == (1, len(ns.numbered)) and np.flatnonzero(ns.strip[0]).tolist() == [2]
+    # the figure question: GL switches to level 2 at lambda = 1.5, rho = 2^1.5, and the linear
+    # middle 3 of 2 and 4 lies outside the tolerance (as does 4, floor(lambda))
+    import teachraster as tr
+
+    def read(lam):
+        one = np.array([[0.5, 0.5]])
+        return int(tr.sample(ns.numbered, one, filter="nearest_mipmap_nearest", lod=[lam])[0])
+
+    assert ns.rho_switch == pytest.approx(2**1.5, abs=1e-9) and read(ns.lam_switch) == 2
+    assert abs(3 - ns.rho_switch) > ns.tol_q and read(1.5) == 1
     # the probes question: its answer is the measured gap, in the last bucket, whose label
     # names the bucket's own bound
     assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
