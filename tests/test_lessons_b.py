@@ -329,6 +329,10 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     assert int(ns.sliver_4.coverage.sum()) == 16  # the Predict's answer
     assert np.flatnonzero(ns.sliver_4.coverage[1]).tolist() == list(range(16))
     assert set(ns.sliver_4.coverage_fraction[ns.sliver_4.coverage].tolist()) == {0.25}
+    # y grows downward: y_top is the upper edge on screen, the slanted lower edge rises through
+    # the sample row y = 1.125 at x_cross, and the covered samples are the ones left of it
+    assert ns.y_top < 1 + ns.sample_dy < ns.y_low and ns.x_cross == pytest.approx(15.5)
+    assert np.flatnonzero(ns.sliver_4.coverage[1]).max() == int(ns.x_cross - ns.sample_dx)
     # a horizontal edge through the ordered grid: three values (0, 1/2, 1)
     assert ns.grid_values == 3  # the Predict's answer
     # the near-horizontal edge of the figure: the grid shows 1/4 once, not 3/4 ("luck")
@@ -402,6 +406,20 @@ def test_11_replay_and_the_sliver_between_centres():
     assert ns.replay_matches  # "replaying the records that passed rebuilds the pixel exactly"
     covered_1, covered_4 = ns.covered[1], ns.covered[4]
     assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
+
+
+def test_11_05a_10_agree_on_when_early_z_is_legal():
+    import json
+
+    def text(name):
+        cells = json.loads((ROOT / "notebooks" / f"{name}.ipynb").read_text())["cells"]
+        return " ".join(" ".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+
+    # GL 4.6 §14.9: discard delays the depth write, not the test; side effects forbid it
+    for name in ("05a_zbuffer", "10_tiles_and_hierarchical_z", "11_debugging_a_frame"):
+        words = " ".join(text(name).split())
+        assert "neither discards nor writes" not in words, name
+        assert "early_fragment_tests" in words, name
 
 
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
@@ -496,9 +514,20 @@ def test_09_quads_closed_form_and_predictions():
     np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
     assert ns.level_q == 2 and abs(ns.lam_q - np.log2(3)) < 1e-12
-    assert ns.strip.shape == (1, len(ns.numbered)) and np.flatnonzero(ns.strip[0]).tolist() == [2]
-    # the probes question: its answer is the measured gap, "0.1 or more"
-    assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer >= 0.05
+    # the figure question: GL switches to level 2 at lambda = 1.5, rho = 2^1.5, and the linear
+    # middle 3 of 2 and 4 lies outside the tolerance (as does 4, floor(lambda))
+    import teachraster as tr
+
+    def read(lam):
+        one = np.array([[0.5, 0.5]])
+        return int(tr.sample(ns.numbered, one, filter="nearest_mipmap_nearest", lod=[lam])[0])
+
+    assert ns.rho_switch == pytest.approx(2**1.5, abs=1e-9) and read(ns.lam_switch) == 2
+    assert abs(3 - ns.rho_switch) > ns.tol_q and read(1.5) == 1
+    # the probes question: its answer is the measured gap, in the last bucket, whose label
+    # names the bucket's own bound
+    assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
+    assert ns.sizes[-1] == f"more than {ns.cuts[-1]:g}"
     assert ns.top > 0  # the figures start at the floor, not in the sky
 
 

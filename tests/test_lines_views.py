@@ -117,3 +117,21 @@ def test_line_player_switches_rule():
         assert "float32 sum" in player.caption.value
     finally:
         player.close()
+
+
+def test_line_player_first_picture_keeps_its_labels_inside():
+    # the first PNG was drawn before constrained layout settled: "column j" cut off at the top
+    import io
+
+    from PIL import Image
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets.line_player import LinePlayer
+
+    with use_style("classroom"):
+        player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule="bresenham", backend="image")
+    try:
+        first = np.asarray(Image.open(io.BytesIO(player.display.widget.value)).convert("L"))
+        assert (first[:2] < 128).sum() == 0 and (first[-2:] < 128).sum() == 0  # no cut text
+    finally:
+        player.close()

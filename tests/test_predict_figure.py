@@ -78,6 +78,31 @@ def test_point_and_order_verdicts():
     assert o.revealed and "no order works" in o.verdict()
 
 
+def test_cells_are_named_and_the_keys_step_in_the_axis_units():
+    from pathlib import Path
+
+    q = PredictPixels("Tiles?", answer=np.eye(3, dtype=bool), cell="tile", picked="rejected")
+    q.given = [[0, 0]]
+    assert q.verdict().endswith("You marked 1 tile: 1 right, 0 too many, 2 missed. The answer: "
+                                "3 tiles rejected.")  # fmt: skip
+    assert "pixel" not in q.verdict() and "lit" not in q.verdict()
+    # the page builds its instruction and verdict from the same two words
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    assert "Click the ${cell}s you expect ${picked}" in js and "you expect lit" not in js
+    codes = dict(answer=(188, 0.5), draw=None, xlim=(-0.5, 255.5), ylim=(0, 1), tolerance=4,
+                 units="codes")  # fmt: skip
+    assert PredictPoint("Code?", **codes).data["keyStep"] == pytest.approx(0.01)  # the default
+    p = PredictPoint("Code?", **codes, step=1)
+    assert p.data["keyStep"] == 1.0  # one code per arrow key (Shift: ten, in the page)
+    assert "data.keyStep * (e.shiftKey ? 10 : 1)" in js
+    p.given = (186, 0.5)
+    assert (
+        p.verdict()
+        == "Right. Your marker is 2 codes from the answer (188, 0.5); within 4 codes is right."
+    )
+    assert "counts" not in js[js.index("function mountPoint") : js.index("function mountOrder")]
+
+
 @pytest.mark.parametrize(
     ("make", "error", "name"),
     [
@@ -88,6 +113,9 @@ def test_point_and_order_verdicts():
          ValueError, "answer"),
         (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
                               tolerance=-1), ValueError, "tolerance"),
+        (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
+                              step=0), ValueError, "step"),
+        (lambda: PredictPixels("Q?", answer=np.eye(2, dtype=bool), cell=""), TypeError, "cell"),
         (lambda: PredictOrder("Q?", ["a", "a"], answer=None), ValueError, "items"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=None), ValueError, "allow_impossible"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=["a", "c"]), ValueError, "answer"),

@@ -14,8 +14,8 @@ from ..plotting import plot_error_heatmap, plot_image, plot_lod
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .ahead import TogglesAhead
-from .common import Shown, close_tree, later, style_context, title_html
-from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
+from .common import Shown, close_tree, font_scale, later, style_context, title_html
+from .display import COMPARISON_DPI, column_inches, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
 from .sprites import ColourBarSprite, text_boxes
@@ -26,6 +26,31 @@ ALT = "the filtered texture, its mip levels and its error"
 
 #: Tilts whose footprint average is kept (0.5 MiB each at 160 x 120).
 TRUTH_CACHE = 32
+
+
+def explorer_axes(fig, height: int, width: int) -> list:
+    """Size ``fig`` to the notebook column and add the explorer's three Axes.
+
+    The filtered image, where moiré shows, is large on the left; the mip level each pixel
+    reads and the error against the footprint mean are stacked on its right, each with room
+    for a colour bar (which takes a fifth of its Axes) and its labels. A 2 x 2 grid at the
+    classroom fonts left a quarter of the widget empty and every picture small.
+    """
+    s, r = font_scale(), width / height
+    left, bottom, title = 0.15, 0.15, 0.45 * s + 0.1  # no tick labels: titles only
+    gap, bar = 0.35 * s, 0.75 * s  # after the big panel; a colour bar's ticks and label
+    # the column: left + (2 h + title) r + gap + (h r / 0.8 + 0.3) + bar, for panel height h
+    h = (column_inches(fig) - left - title * r - gap - 0.3 - bar) / (2 * r + r / 0.8)
+    big_h = 2 * h + title  # as tall as the two small panels and the title between them
+    fw, fh = column_inches(fig), title + big_h + bottom
+    fig.set_size_inches(fw, fh)
+    x_small = left + big_h * r + gap
+    small_w = h * r / 0.8 + 0.3
+    return [
+        fig.add_axes((left / fw, bottom / fh, big_h * r / fw, big_h / fh)),
+        fig.add_axes((x_small / fw, (bottom + h + title) / fh, small_w / fw, h / fh)),
+        fig.add_axes((x_small / fw, bottom / fh, small_w / fw, h / fh)),
+    ]
 
 
 class FilterExplorer:
@@ -114,9 +139,7 @@ class FilterExplorer:
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)
-            # as many panels per row as fit the notebook column (at the classroom style's
-            # fonts, two: the third goes below)
-            axes = comparison_axes(self.fig, height, width)
+            axes = explorer_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
                 "lod": plot_lod(axes[1], self.levels_read, 8),

@@ -58,6 +58,9 @@ class LinePlayer(Shown):
             self.fig = new_figure((9.0, 5.0), self.backend)
             self.fig.set_layout_engine("constrained")
             self.view = LineView.create(self.fig.add_subplot(), self.fill, self.slider.value)
+            # constrained layout settles on the second draw (the first one measured the top
+            # axis's labels before they were placed, and cut "column j" and the caption off)
+            self.fig.draw_without_rendering()
             self.display = FigureDisplay(self.fig, self.backend)
         self.caption = widgets.HTML(html_escape(self.trace.caption(self.slider.value)))
         self.slider.observe(lambda change: self.show(change["new"]), "value")

@@ -83,6 +83,10 @@ def _check_draw(draw) -> Callable | None:
     return draw
 
 
+def _plural(noun: str, n: int) -> str:
+    return noun if n == 1 else noun + "s"
+
+
 def grid_axes(fig, width: int, height: int, side: float):
     """Size ``fig`` for a ``width`` x ``height`` pixel grid (longer side ``side`` inches) with
     room for the row and column labels only, and add its Axes."""
@@ -192,6 +196,9 @@ class PredictPixels(FigurePrediction):
         The grid's longer side in inches.
     style : str, optional
         The plotting style of the picture.
+    cell, picked : str
+        What a cell is (singular: "pixel", "tile", "level") and what the answer's cells are
+        ("lit", "rejected", "read"), for the instruction and the verdict.
 
     Attributes
     ----------
@@ -211,7 +218,11 @@ class PredictPixels(FigurePrediction):
     """
 
     def __init__(self, question: str, answer, *, draw=None, explain: str = "",
-                 centres: bool = True, side: float = 5.0, style: str | None = "classroom") -> None:  # fmt: skip
+                 centres: bool = True, side: float = 5.0, style: str | None = "classroom",
+                 cell: str = "pixel", picked: str = "lit") -> None:  # fmt: skip
+        for name, word in (("cell", cell), ("picked", picked)):
+            if not isinstance(word, str) or not word.strip():
+                raise TypeError(f"{name} must be a non-empty str, got {word!r}")
         mask = np.asarray(answer)
         if mask.dtype != bool or mask.ndim != 2 or not mask.size:
             raise TypeError(f"answer must be a (height, width) bool array, got {mask.dtype} "
@@ -240,7 +251,8 @@ class PredictPixels(FigurePrediction):
         picture = figure_picture(drawn, axes_for, (side, side), style)
         self.answer = mask.copy()
         super().__init__(question, explain, {"kind": "pixels", "width": width, "height": height,
-                                             "answer": np.argwhere(mask).tolist(), **picture})  # fmt: skip
+                                             "answer": np.argwhere(mask).tolist(), **picture,
+                                             "cell": html.escape(cell), "picked": html.escape(picked)})  # fmt: skip
         self.state = {"given": [], "revealed": False}
 
     @property
@@ -272,8 +284,10 @@ class PredictPixels(FigurePrediction):
     def verdict(self) -> str:
         c = self.counts() or {"right": 0, "extra": 0, "missed": 0, "total": int(self.answer.sum())}
         word = "Right." if self.correct else "Not quite."
-        return (f"{word} You marked {c['right'] + c['extra']}: {c['right']} right, {c['extra']} "
-                f"too many, {c['missed']} missed; the answer lights {c['total']}.")  # fmt: skip
+        cell, marked = self.data["cell"], c["right"] + c["extra"]
+        return (f"{word} You marked {marked} {_plural(cell, marked)}: {c['right']} right, "
+                f"{c['extra']} too many, {c['missed']} missed. The answer: {c['total']} "
+                f"{_plural(cell, c['total'])} {self.data['picked']}.")  # fmt: skip
 
 
 class PredictPoint(FigurePrediction):
@@ -295,7 +309,10 @@ class PredictPoint(FigurePrediction):
     tolerance : float
         A marker this close to the answer (data units) is right.
     units : str
-        What the distance is measured in, for the verdict ("px", "units").
+        What the distance is measured in, for the verdict ("px", "units", "codes").
+    step : float, optional
+        How far one arrow key moves the marker (Shift + arrow: ten steps), in data units:
+        1 on an axis of integer codes. Default: a hundredth of the smaller Axes span.
     explain, figsize, style : as above.
 
     Examples
@@ -309,7 +326,7 @@ class PredictPoint(FigurePrediction):
 
     def __init__(self, question: str, answer, *, draw, xlim, ylim, start=None, along=None,
                  tolerance: float = 0.0, units: str = "units", explain: str = "",
-                 figsize=(7.0, 5.0), style: str | None = "classroom") -> None:  # fmt: skip
+                 figsize=(7.0, 5.0), style: str | None = "classroom", step=None) -> None:  # fmt: skip
         answer = as_finite("answer", answer, (2,))
         xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
         if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
@@ -337,10 +354,13 @@ class PredictPoint(FigurePrediction):
         picture = figure_picture(drawn, axes_for, figsize, style)
         self.answer, self.tolerance = answer, tolerance
         span = min(abs(xlim[1] - xlim[0]), abs(ylim[1] - ylim[0]))
+        step = span / 100 if step is None else as_float("step", step)
+        if not step > 0:
+            raise ValueError(f"step must be > 0, got {step}")
         super().__init__(question, explain, {
             "kind": "point", "answer": answer.tolist(), "start": start.tolist(),
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
-            "units": html.escape(units), "keyStep": span / 100, **picture})  # fmt: skip
+            "units": html.escape(units), "keyStep": step, **picture})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:
@@ -359,8 +379,10 @@ class PredictPoint(FigurePrediction):
 
     def verdict(self) -> str:
         word = "Right." if self.correct else "Not quite."
-        return (f"{word} Your marker is {self.gap:.3g} {self.data['units']} from the answer "
-                f"({self.answer[0]:.3g}, {self.answer[1]:.3g}).")  # fmt: skip
+        units = self.data["units"]
+        within = f"; within {self.tolerance:.3g} {units} is right" if self.tolerance else ""
+        return (f"{word} Your marker is {self.gap:.3g} {units} from the answer "
+                f"({self.answer[0]:.3g}, {self.answer[1]:.3g}){within}.")  # fmt: skip
 
 
 class PredictOrder(FigurePrediction):

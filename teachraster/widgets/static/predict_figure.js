@@ -1,7 +1,8 @@
 // Predictions answered by acting on a figure, and revealed by the figure itself.
 //
 // Three kinds share this module (data.kind):
-// - "pixels": click (or drag across) the pixels you expect lit; Check draws the true pixels
+// - "pixels": click (or drag across) the cells you expect (pixels lit, tiles rejected: data.cell,
+//   data.picked); Check draws the true cells
 //   over yours: right ones ticked, missed ones outlined, extra ones crossed;
 // - "point": drag the marker to where you expect the point; Check draws the true point, the
 //   gap and whether it is within the tolerance;
@@ -124,7 +125,10 @@ function mountPixels(root, data, host) {
   let state = { given: [], revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
   const { check, show } = checkRow(root, data, () => reveal(true));
-  const note = element("div", { text: "Click the pixels you expect lit (drag to paint several)." });
+  const cell = data.cell || "pixel";
+  const picked = data.picked || "lit";
+  const cells = (n) => (n === 1 ? cell : `${cell}s`);
+  const note = element("div", { text: `Click the ${cell}s you expect ${picked} (drag to paint several).` });
   root.insertBefore(note, canvas.parentElement);
   const W = data.width;
   const H = data.height;
@@ -173,10 +177,10 @@ function mountPixels(root, data, host) {
     if (!state.given.length) return;
     state.revealed = true;
     const v = pixelVerdict(data.answer, state.given, W);
-    show(v.correct, `You marked ${state.given.length} pixel` +
-      `${state.given.length === 1 ? "" : "s"}: ${v.right} right, ${v.extra} too many, ${v.missed} ` +
-      `missed. The answer lights <b>${v.total}</b>: outlined green where you had them, dashed ` +
-      "orange where you missed them; crossed: yours that are not lit.");
+    show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
+      `${v.right} right, ${v.extra} too many, ${v.missed} missed. The answer: <b>${v.total}</b> ` +
+      `${cells(v.total)} ${picked}, outlined green where you had them, dashed orange where you ` +
+      `missed them; crossed: yours that are not ${picked}.`);
     revealOnFigure(host, canvas, paint, state.given, byClick);
   }
 
@@ -276,7 +280,7 @@ function mountPoint(root, data, host) {
     state.revealed = true;
     const v = pointVerdict(data.answer, state.given, data.tolerance);
     show(v.correct, `Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
-      `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} counts` : ""}.`);
+      `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`);
     revealOnFigure(host, canvas, paint, state.given, byClick);
   }
   pointerInput(canvas, {
@@ -296,7 +300,7 @@ function mountPoint(root, data, host) {
     if (!d || state.revealed) return;
     e.preventDefault();
     const g = state.given || start;
-    const step = data.keyStep;
+    const step = data.keyStep * (e.shiftKey ? 10 : 1); // Shift: ten steps at a time
     state.given = constrain([g[0] + d[0] * step, g[1] + d[1] * step * Math.sign(data.transform[3])])
       .map((v) => Number(v.toFixed(4)));
     paint.request(e);
