@@ -95,7 +95,10 @@ def test_depth_explorer_curve_is_the_package_resolution():
         x, y = ex.curve.get_data()
         assert np.allclose(y, tr.depth_resolution(x, 0.1, 1000.0, "unorm16"))
         first16 = ex.fight_from
-        assert first16 is not None and "z-fighting from" in ex.info.value
+        assert first16 is not None and "z-fighting first found at" in ex.info.value
+        # the crossing Δz = δ comes before the first fight the grid finds (lesson 05b, §6)
+        cross = float(ex.info.value.split("Δz = δ at z ≈ ")[1].split(")")[0])
+        assert cross < first16
         ex.format.value = "unorm24"  # more bits: fighting starts farther away
         assert ex.fight_from > first16
         ex.near.value = 1.0  # the classic fix: a farther near plane

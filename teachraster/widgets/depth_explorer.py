@@ -230,8 +230,16 @@ class DepthPrecisionExplorer:
         # quote the curve's first value for them)
         at = [d for d in (1.0, 10.0, 100.0) if self.z[0] <= d <= self.z[-1]]
         res = np.interp(at, self.z, self.resolution)
-        where = ("<b>no z-fighting</b> up to the far plane" if self.fight_from is None
-                 else f"z-fighting from <b>z ≈ {self.fight_from:.3g}</b>")  # fmt: skip
+        if self.fight_from is None:
+            where = "<b>no z-fighting</b> up to the far plane"
+        else:
+            # "first found", not "from": nearer, past the crossing, some pixels already fight
+            i = max(int(np.argmax(self.resolution >= self.delta)), 1)
+            pair = slice(i - 1, i + 1)  # the curve crosses δ between these grid points
+            cross = np.exp(np.interp(np.log(self.delta), np.log(self.resolution[pair]),
+                                     np.log(self.z[pair])))  # fmt: skip
+            where = (f"z-fighting first found at <b>z ≈ {self.fight_from:.3g}</b>"
+                     f" (Δz = δ at z ≈ {cross:.3g})")  # fmt: skip
         text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
         if at:
             text += (f" · Δz at z = {', '.join(f'{d:g}' for d in at)}: "
