@@ -90,6 +90,16 @@ def _owns_bottom_left(a, b):
     return b[1] < a[1] or (b[1] == a[1] and b[0] < a[0])
 
 
+def _owns_left_only(a, b):
+    """The top-left rule with its horizontal case forgotten."""
+    return b[1] < a[1]
+
+
+def _owns_top_only(a, b):
+    """The top-left rule with its left case forgotten."""
+    return b[1] == a[1] and b[0] > a[0]
+
+
 def fill_vertices_rounded(xy, width, height):
     return fill_vectorised(np.round(np.asarray(xy, dtype=float)), width, height)
 
@@ -885,6 +895,8 @@ WRONG = {
             ("fill with y-up tie directions", _owns_bottom_left, "top edges are the bottom ones"),
             ("fill with top-right ties", _owns_top_right, "left edges are the right ones"),
             ("fill with bottom-right ties", _owns_y_up_both, "reverse of the top-left rule"),
+            ("fill forgetting top edges", _owns_left_only, "no centre on a top edge"),
+            ("fill forgetting left edges", _owns_top_only, "no centre on a left edge"),
         )
     },
     # quad_derivatives
@@ -977,6 +989,8 @@ KINDS = {
     "fill with y-up tie directions": "top edge reversed",
     "fill with top-right ties": "left edge reversed",
     "fill with bottom-right ties": "both reversed",
+    "fill forgetting top edges": "no top edges",
+    "fill forgetting left edges": "no left edges",
     "quad of this pixel": "unaligned",
     "quad affine": "affine",
     "quad with y up": "y up",

@@ -4,6 +4,8 @@ are true and never give the answer away."""
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 import reasoning_solutions as sol
@@ -99,6 +101,41 @@ def test_robust_fill_names_the_absolute_form_and_fails_the_naive_fill_often():
     assert "absolute form" in {f.kind for f in report.failures}, str(report)
     naive = ex.check("robust_fill", _fill(raw=True, rule="inclusive"))
     assert len(naive.failures) >= 5  # the naive fill fails the catalogue in many places
+
+
+@pytest.mark.parametrize(
+    ("tie", "kind"),
+    [(lambda a, b: b[1] < a[1], "no top edges"),
+     (lambda a, b: b[1] == a[1] and b[0] > a[0], "no left edges")],
+)  # fmt: skip
+def test_robust_fill_names_a_forgotten_tie_case_on_every_failure(tie, kind):
+    """A fill that forgets half of the top-left rule only misses pixels: every failure names
+    the forgotten half, never a reversed rule, E > 0 or the unsnapped orientation."""
+    from student_variants import _fill_with
+
+    report = ex.check("robust_fill", _fill_with(tie=tie))
+    assert report.failures and {f.kind for f in report.failures} == {kind}, str(report)
+
+
+def test_robust_fill_names_a_reversed_rule_only_where_pixels_are_extra():
+    """The counts of a case never contradict its diagnosis: a reversed tie rule (or E >= 0)
+    is named only on a case with extra pixels, a forgotten one only with missing ones only."""
+    from student_variants import _fill_with, _owns_bottom_left, _owns_top_right, _owns_y_up_both
+
+    reversed_kinds = {"top edge reversed", "left edge reversed", "both reversed", "E >= 0"}
+    forgotten = {"no top edges", "no left edges", "E > 0"}
+    seen = set()
+    for tie in (_owns_bottom_left, _owns_top_right, _owns_y_up_both, lambda a, b: False,
+                lambda a, b: b[1] < a[1], lambda a, b: b[1] == a[1] and b[0] > a[0]):  # fmt: skip
+        for f in ex.check("robust_fill", _fill_with(tie=tie)).failures:
+            seen.add(f.kind)
+            missing, extra = (int(n) for n in re.findall(r"(\d+) missing, (\d+) extra",
+                                                         f.explanation)[-1])  # fmt: skip
+            if f.kind in reversed_kinds:
+                assert extra > 0, f.explanation
+            if f.kind in forgotten:
+                assert missing > 0 and extra == 0, f.explanation
+    assert reversed_kinds - {"E >= 0"} <= seen and forgotten <= seen
 
 
 def test_quad_derivatives_clamped_at_helpers():

@@ -107,9 +107,9 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         ),  # fmt: skip
         "E >= 0": naive_coverage(s, width, height, rule="inclusive", **kw),
         "E > 0": naive_coverage(s, width, height, rule="strict", **kw),
-        "top edge reversed": naive_coverage(s, width, height, rule="bottom_left", **kw),
-        "left edge reversed": naive_coverage(s, width, height, rule="top_right", **kw),
-        "both reversed": naive_coverage(s, width, height, rule="bottom_right", **kw),
+        "no top edges": tie_fill(s, width, height, origin, top=False),
+        "no left edges": tie_fill(s, width, height, origin, left=False),
+        **_reversed(s, width, height, kw, expected_fill(xy, width, height, origin)),
         "one winding": naive_coverage(s, width, height, rule="top_left", orient="none", **kw),
         "oriented before snapping": naive_coverage(
             flipped, width, height, rule="top_left", orient="none", **kw
@@ -119,6 +119,40 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         ),  # fmt: skip
         "float32": naive_coverage(s, width, height, rule="top_left", dtype=np.float32, **kw),
     }
+
+
+def _reversed(s, width, height, kw, expected) -> dict[str, np.ndarray | None]:
+    """The tie rule with a direction reversed, where it shows: a reversed rule covers centres
+    on the wrong edges, so it is named only on a case where it gives extra pixels (a case
+    with missing pixels only is a forgotten rule, never a reversed one)."""
+    out = {}
+    for kind, rule in REVERSED.items():
+        got = naive_coverage(s, width, height, rule=rule, **kw)
+        out[kind] = got if (got & ~expected).any() else None
+    return out
+
+
+#: The reversed tie rules, as :func:`naive_coverage` names them.
+REVERSED = {"top edge reversed": "bottom_left", "left edge reversed": "top_right",
+            "both reversed": "bottom_right"}  # fmt: skip
+
+
+def tie_fill(s, width: int, height: int, origin, *, top: bool = True, left: bool = True):
+    """Coverage of the snapped triangle ``s`` with the top-left rule missing a part: a centre
+    on a top edge is inside only if ``top``, on a left edge only if ``left`` (a forgotten
+    case of the rule covers fewer pixels, never more)."""
+    v = np.asarray(s, float)
+    if _area(v) < 0:
+        v = v[[0, 2, 1]]
+    y = origin[0] + np.arange(height)[:, None] + 0.5
+    x = origin[1] + np.arange(width)[None, :] + 0.5
+    inside = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+        tie = (left and b[1] < a[1]) or (top and b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if tie else (e > 0)
+    return inside
 
 
 def _area(xy) -> float:
@@ -145,6 +179,14 @@ MISTAKES = {
     "triangles is covered twice; the top-left rule gives it to one of them",
     "E > 0": "you cover no centre on an edge (E > 0): a centre on a shared edge is covered by "
     "neither triangle, and a sliver whose edge runs through centres vanishes",
+    "no top edges": "you give no centre on a top edge to the triangle: your rule covers a "
+    "centre on a left edge (one that runs up, b.y < a.y, with E(v1, v2, v3) > 0) but forgets "
+    "the other half of the top-left rule, a horizontal edge running right (b.y == a.y, "
+    "b.x > a.x); such a centre is covered by neither triangle that shares the edge",
+    "no left edges": "you give no centre on a left edge to the triangle: your rule covers a "
+    "centre on a top edge (horizontal, running right) but forgets the other half of the "
+    "top-left rule, an edge running up (b.y < a.y, with E(v1, v2, v3) > 0); such a centre is "
+    "covered by neither triangle that shares the edge",
     "top edge reversed": "your top edges are the bottom ones: on screen (y down), with the "
     "triangle oriented so that E(v1, v2, v3) > 0, a top edge is horizontal and runs right "
     "(b.x > a.x); the rule written for y up reads it the other way",
