@@ -138,6 +138,19 @@ def test_robust_fill_names_a_reversed_rule_only_where_pixels_are_extra():
     assert reversed_kinds - {"E >= 0"} <= seen and forgotten <= seen
 
 
+def test_robust_fill_task_keeps_the_goal_and_leaves_the_causes_to_the_checker():
+    """Exercise 10's task names no fix: the catalogue's failures, explained, teach them."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/10_hard_cases.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    task = next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == "robust_fill_task")
+    text = "".join(task["source"])
+    for fix in ("np.rint", "1/256", "top-left rule", "winding", "snap"):
+        assert fix not in text, fix
+
+
 def test_quad_derivatives_clamped_at_helpers():
     report = ex.check("quad_derivatives", _quad("clamp"))
     assert report.failures and report.failures[0].kind == "clamped", str(report)

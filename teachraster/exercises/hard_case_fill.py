@@ -62,6 +62,17 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     o = int(max(CASES["far_from_origin"].inputs["offsets"]))
     out.append((f"far_from_origin at row {o}, column {o // 2 + 7}",
                 (local + [o // 2 + 7, o], 16, 16, (o, o // 2 + 7))))  # fmt: skip
+    # vertices on the 1/256 grid but off float32's (1/16 px apart at 10⁶): a right edge
+    # 3/256 px right of a column of centres, which float32 storage moves onto them
+    off = np.array([[2 + 5 / 256, 1 + 37 / 256], [12.5 + 3 / 256, 3 + 11 / 256],
+                    [12.5 + 3 / 256, 14 + 21 / 256]])  # fmt: skip
+    out.append(
+        (f"far_from_origin at {o} px, vertices on the 1/256 grid", (off + o, 16, 16, (o, o)))
+    )
+    # a vertex exactly half-way between two grid points: half to even (np.rint, a GPU's
+    # fixed-point conversion) puts the left edge through centres, half up beside them
+    half = np.array([[2.5 + 1 / 512, 1.0], [2.5 + 1 / 512, 9.0], [9.0, 5.0]])
+    out.append(("half step: vertices half-way between 1/256 grid points", (half, 12, 12, (0, 0))))
     out += _random_cases()
     return [(label, args, expected_fill(*args)) for label, args in out]
 
@@ -102,6 +113,10 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         "origin ignored": expected_fill(xy, width, height, (0, 0)),
         "pixel corners": expected_fill(np.asarray(xy, float) + 0.5, width, height, origin),
         "no snapping": naive_coverage(xy, width, height, rule="top_left", **kw),
+        "half-up snapping": naive_coverage(
+            np.floor(np.asarray(xy, float) * 256 + 0.5) / 256, width, height, rule="top_left", **kw
+        ),  # fmt: skip
+        "float32 vertices": tie_fill(s.astype(np.float32).astype(float), width, height, origin),
         "floor snapping": naive_coverage(
             np.floor(np.asarray(xy, float) * 256) / 256, width, height, rule="top_left", **kw
         ),  # fmt: skip
@@ -160,6 +175,16 @@ def _area(xy) -> float:
     return float((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
 
 
+def _float32_vertices(args, expected, got) -> str:
+    """Words for snapped vertices stored in float32, with the case's spacing of float32."""
+    far = float(np.abs(np.asarray(args[0], float)).max())
+    step = float(np.spacing(np.float32(far)))
+    return (f"you store the snapped vertices in float32: {far:.0f} px from the origin its "
+            f"numbers are {step:g} px apart and cannot hold the 1/256-px grid, so a vertex "
+            "moves before the edges are computed; keep them in float64 (or as integers in "
+            "1/256 px)")  # fmt: skip
+
+
 MISTAKES = {
     "nothing covered": "your function never covers anything: it returns an image of False "
     "for every triangle (a placeholder left in, or a test that no centre can pass?)",
@@ -172,6 +197,11 @@ MISTAKES = {
     "no snapping": "you decide on the raw vertices: snap them to the 1/256-px grid first "
     "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
     "its neighbour agree on every tie",
+    "half-up snapping": "you round a vertex half-way between two grid points up "
+    "(np.floor(x · 256 + ½)): a GPU's fixed-point conversion rounds half to even, as np.rint "
+    "does, so a vertex exactly on a half step goes to the even grid point and a centre on the "
+    "edge changes sides",
+    "float32 vertices": _float32_vertices,
     "floor snapping": "you snap by truncating (np.floor): every vertex moves up to 1/256 px "
     "left and up, always the same way, so centres near an edge change sides; round to the "
     "nearest grid point, np.rint(xy * 256) / 256",
@@ -180,11 +210,11 @@ MISTAKES = {
     "E > 0": "you cover no centre on an edge (E > 0): a centre on a shared edge is covered by "
     "neither triangle, and a sliver whose edge runs through centres vanishes",
     "no top edges": "you give no centre on a top edge to the triangle: your rule covers a "
-    "centre on a left edge (one that runs up, b.y < a.y, with E(v1, v2, v3) > 0) but forgets "
+    "centre on a left edge (one that runs up, b.y < a.y, with E(v1, v2, v3) > 0) but not "
     "the other half of the top-left rule, a horizontal edge running right (b.y == a.y, "
     "b.x > a.x); such a centre is covered by neither triangle that shares the edge",
     "no left edges": "you give no centre on a left edge to the triangle: your rule covers a "
-    "centre on a top edge (horizontal, running right) but forgets the other half of the "
+    "centre on a top edge (horizontal, running right) but not the other half of the "
     "top-left rule, an edge running up (b.y < a.y, with E(v1, v2, v3) > 0); such a centre is "
     "covered by neither triangle that shares the edge",
     "top edge reversed": "your top edges are the bottom ones: on screen (y down), with the "
