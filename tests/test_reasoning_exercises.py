@@ -170,7 +170,7 @@ ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
 def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
     b = ex.broken_frame(number)
     assert b.cause == ANSWERS[number]
-    row, col = (int(v) for v in np.argwhere(b.differs())[0])
+    row, col = next((int(r), int(c)) for r, c in np.argwhere(b.differs()) if b.shows(r, c))
     _passes(f"broken_frame_{number}", lambda: (ANSWERS[number].upper(), (row, col)))
     for cause in bf.CAUSES:
         if cause == b.cause:
@@ -182,6 +182,40 @@ def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
     same = np.argwhere(~b.differs())[0]
     report = ex.check(f"broken_frame_{number}", lambda: (b.cause, tuple(same)))
     assert [f.kind for f in report.failures] == ["pixel"]
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_broken_frame_pixel_must_show_the_cause_in_its_history(number):
+    """A changed pixel whose history lacks the cause's signature is refused (frame 6: a wire
+    pixel whose centre the wire covers shows no sliver missed)."""
+    b = ex.broken_frame(number)
+    lacking = [(int(r), int(c)) for r, c in np.argwhere(b.differs()) if not b.shows(r, c)]
+    if number == 6:
+        assert (18, 26) in lacking
+    for pixel in lacking[:3]:
+        report = ex.check(f"broken_frame_{number}", lambda p=pixel: (b.cause, p))
+        assert [f.kind for f in report.failures] == ["pixel"], str(report)
+        assert "does not show" in report.failures[0].explanation
+
+
+def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
+    """Frame 1 tests LESS on reversed depths (its history shows the smaller depth kept, the
+    farther surface of the intended mapping): its cause names the mapping. Frame 6 differs
+    from the intended frame by its samples only: its cause names the one sample."""
+    one = ex.broken_frame(1)
+    row, col = next((int(r), int(c)) for r, c in np.argwhere(one.differs()) if one.shows(r, c))
+    rec = [
+        r for r in one.frame.history(row, col).records if r.outcome in ("passed", "failed_depth")
+    ]
+    kept = [r for r in rec if r.shown][0]
+    assert all(kept.depth < r.depth for r in rec if r.outcome == "failed_depth")
+    meant = {r.triangle: r.depth for r in one.intended.history(row, col).records
+             if r.outcome in ("passed", "failed_depth")}  # fmt: skip
+    assert meant[kept.triangle] == max(meant.values())  # the farther surface, as meant
+    assert "mapping" in bf.CAUSES["depth function"]
+    six = ex.broken_frame(6)
+    assert six.frame.samples is None and len(six.intended.samples) == 16  # 1 sample, 16
+    assert "one sample" in bf.CAUSES["sliver"] and "antialiasing" in bf.CAUSES["sliver"]
 
 
 def test_broken_frame_5_draws_its_glass_without_depth_writes_as_lesson_11_teaches():
