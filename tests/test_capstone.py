@@ -247,3 +247,37 @@ def test_the_time_limit_is_the_classes_and_prints_are_kept_aside(monkeypatch, ca
     report = ex.capstone("grid", covers=chatty)
     assert report.passed and report.printed is not None and "printed" in str(report)
     assert capsys.readouterr().out.count("\n") < 100
+
+
+def _over_rgb_only(src, dst):  # blends RGB, leaves the destination's alpha as it was
+    out = sol.CAPSTONE["over"](src, dst)
+    out = np.array(out, dtype=float)
+    out[3] = np.asarray(dst, dtype=float)[3]
+    return out
+
+
+@pytest.mark.parametrize("scene", ["glass", "glass_sorted"])
+def test_an_over_that_leaves_alpha_alone_fails_the_glass_on_its_own_cases(scene):
+    """The glass's background is opaque (alpha 1 whatever over does to alpha): the over
+    exercise's own cases see the alpha the scene cannot."""
+    report = ex.capstone(scene, **_mine(scene, over=_over_rgb_only))
+    assert not report.passed and report.n_wrong == 0, str(report)
+    assert "over_premultiplied exercise's own cases" in report.failures[-1].explanation
+
+
+def test_capstone_headings_are_numbered_in_order_and_the_sphere_claims_what_it_sees():
+    """12.1 to 12.10 without a gap; the sphere (no centre on an edge, no equal depths) does
+    not claim to name every wrong function: a `<=` depth test passes it."""
+    import json
+    import re
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    text = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
+    numbers = [int(n) for t in text for n in re.findall(r"^## 12\.(\d+)", t, re.M)]
+    assert numbers == list(range(1, len(numbers) + 1)), numbers
+    sphere = next(t for t in text if "All of it at once" in t)
+    le = sv.WRONG["passes with <="][1]
+    assert ex.capstone("sphere", **_mine("sphere", depth_passes=le)).passed
+    assert "When one of them is wrong" not in sphere and "12.1" in sphere and "12.4" in sphere

@@ -4,6 +4,8 @@ are true and never give the answer away."""
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 import reasoning_solutions as sol
@@ -101,6 +103,54 @@ def test_robust_fill_names_the_absolute_form_and_fails_the_naive_fill_often():
     assert len(naive.failures) >= 5  # the naive fill fails the catalogue in many places
 
 
+@pytest.mark.parametrize(
+    ("tie", "kind"),
+    [(lambda a, b: b[1] < a[1], "no top edges"),
+     (lambda a, b: b[1] == a[1] and b[0] > a[0], "no left edges")],
+)  # fmt: skip
+def test_robust_fill_names_a_forgotten_tie_case_on_every_failure(tie, kind):
+    """A fill that forgets half of the top-left rule only misses pixels: every failure names
+    the forgotten half, never a reversed rule, E > 0 or the unsnapped orientation."""
+    from student_variants import _fill_with
+
+    report = ex.check("robust_fill", _fill_with(tie=tie))
+    assert report.failures and {f.kind for f in report.failures} == {kind}, str(report)
+
+
+def test_robust_fill_names_a_reversed_rule_only_where_pixels_are_extra():
+    """The counts of a case never contradict its diagnosis: a reversed tie rule (or E >= 0)
+    is named only on a case with extra pixels, a forgotten one only with missing ones only."""
+    from student_variants import _fill_with, _owns_bottom_left, _owns_top_right, _owns_y_up_both
+
+    reversed_kinds = {"top edge reversed", "left edge reversed", "both reversed", "E >= 0"}
+    forgotten = {"no top edges", "no left edges", "E > 0"}
+    seen = set()
+    for tie in (_owns_bottom_left, _owns_top_right, _owns_y_up_both, lambda a, b: False,
+                lambda a, b: b[1] < a[1], lambda a, b: b[1] == a[1] and b[0] > a[0]):  # fmt: skip
+        for f in ex.check("robust_fill", _fill_with(tie=tie)).failures:
+            seen.add(f.kind)
+            missing, extra = (int(n) for n in re.findall(r"(\d+) missing, (\d+) extra",
+                                                         f.explanation)[-1])  # fmt: skip
+            if f.kind in reversed_kinds:
+                assert extra > 0, f.explanation
+            if f.kind in forgotten:
+                assert missing > 0 and extra == 0, f.explanation
+    assert reversed_kinds - {"E >= 0"} <= seen and forgotten <= seen
+
+
+def test_robust_fill_task_keeps_the_goal_and_leaves_the_causes_to_the_checker():
+    """Exercise 10's task names no fix: the catalogue's failures, explained, teach them."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/10_hard_cases.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    task = next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == "robust_fill_task")
+    text = "".join(task["source"])
+    for fix in ("np.rint", "1/256", "top-left rule", "winding", "snap"):
+        assert fix not in text, fix
+
+
 def test_quad_derivatives_clamped_at_helpers():
     report = ex.check("quad_derivatives", _quad("clamp"))
     assert report.failures and report.failures[0].kind == "clamped", str(report)
@@ -120,7 +170,7 @@ ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
 def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
     b = ex.broken_frame(number)
     assert b.cause == ANSWERS[number]
-    row, col = (int(v) for v in np.argwhere(b.differs())[0])
+    row, col = next((int(r), int(c)) for r, c in np.argwhere(b.differs()) if b.shows(r, c))
     _passes(f"broken_frame_{number}", lambda: (ANSWERS[number].upper(), (row, col)))
     for cause in bf.CAUSES:
         if cause == b.cause:
@@ -132,6 +182,40 @@ def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
     same = np.argwhere(~b.differs())[0]
     report = ex.check(f"broken_frame_{number}", lambda: (b.cause, tuple(same)))
     assert [f.kind for f in report.failures] == ["pixel"]
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_broken_frame_pixel_must_show_the_cause_in_its_history(number):
+    """A changed pixel whose history lacks the cause's signature is refused (frame 6: a wire
+    pixel whose centre the wire covers shows no sliver missed)."""
+    b = ex.broken_frame(number)
+    lacking = [(int(r), int(c)) for r, c in np.argwhere(b.differs()) if not b.shows(r, c)]
+    if number == 6:
+        assert (18, 26) in lacking
+    for pixel in lacking[:3]:
+        report = ex.check(f"broken_frame_{number}", lambda p=pixel: (b.cause, p))
+        assert [f.kind for f in report.failures] == ["pixel"], str(report)
+        assert "does not show" in report.failures[0].explanation
+
+
+def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
+    """Frame 1 tests LESS on reversed depths (its history shows the smaller depth kept, the
+    farther surface of the intended mapping): its cause names the mapping. Frame 6 differs
+    from the intended frame by its samples only: its cause names the one sample."""
+    one = ex.broken_frame(1)
+    row, col = next((int(r), int(c)) for r, c in np.argwhere(one.differs()) if one.shows(r, c))
+    rec = [
+        r for r in one.frame.history(row, col).records if r.outcome in ("passed", "failed_depth")
+    ]
+    kept = [r for r in rec if r.shown][0]
+    assert all(kept.depth < r.depth for r in rec if r.outcome == "failed_depth")
+    meant = {r.triangle: r.depth for r in one.intended.history(row, col).records
+             if r.outcome in ("passed", "failed_depth")}  # fmt: skip
+    assert meant[kept.triangle] == max(meant.values())  # the farther surface, as meant
+    assert "mapping" in bf.CAUSES["depth function"]
+    six = ex.broken_frame(6)
+    assert six.frame.samples is None and len(six.intended.samples) == 16  # 1 sample, 16
+    assert "one sample" in bf.CAUSES["sliver"] and "antialiasing" in bf.CAUSES["sliver"]
 
 
 def test_broken_frame_5_draws_its_glass_without_depth_writes_as_lesson_11_teaches():

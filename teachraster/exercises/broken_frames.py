@@ -3,15 +3,16 @@
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
 with one mistake a graphics programmer makes (a reversed depth mapping, culling the wrong
 winding, surfaces too close for the depth buffer, straight colours blended as premultiplied,
-transparent geometry drawn before what lies behind it, a triangle thinner than the pixel
-grid). The student sees the frame beside the intended one, inspects pixel histories
+transparent geometry drawn before what lies behind it, a triangle thinner than a pixel
+drawn without antialiasing). The student sees the frame beside the intended one, inspects pixel histories
 (``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
 :data:`CAUSES` and a pixel whose history shows it. Two frames look alike (the cube showing
 its hidden faces) and only their histories tell them apart.
 
 A wrong cause gets a hint drawn from the frame's own record (what the history at the chosen
 pixel, or the trace, shows that the cause cannot explain), never the answer; a pixel the
-mistake did not change is refused.
+mistake did not change, or whose history does not bear the cause's signature
+(:data:`SIGNATURES`), is refused.
 """
 
 from __future__ import annotations
@@ -34,12 +35,14 @@ W, H = 64, 48
 
 #: The causes a diagnosis may name (six occur, four do not).
 CAUSES = {
-    "depth function": "the depth test keeps the farther surface",
+    "depth function": "the depth test's direction does not match the depth mapping (e.g. "
+    "reversed depth, 1 − d, tested with LESS): it keeps the farther surface",
     "culled winding": "triangles that face the camera are culled",
     "z-fighting": "the depth buffer cannot tell two surfaces apart",
     "missing premultiplication": "straight-alpha colours are blended as premultiplied ones",
     "blend order": "transparent geometry is drawn before what lies behind it",
-    "sliver": "a triangle too thin to cover the pixel centres it crosses",
+    "sliver": "a triangle thinner than a pixel drawn with one sample per pixel (no "
+    "antialiasing): it shows only where it covers a pixel centre, and vanishes between",
     "depth test off": "later triangles overwrite nearer ones",
     "near-plane clipping": "geometry is cut away by the near plane",
     "affine interpolation": "attributes are interpolated without the divide by w",
@@ -57,10 +60,49 @@ class BrokenFrame:
     frame: Frame  # the broken one, traced
     intended: Frame  # what the programmer meant to draw
 
+    def shows(self, row: int, col: int) -> bool:
+        """Does pixel (row, col) show the cause: changed by it, and its history bearing the
+        cause's signature (:data:`SIGNATURES`)?"""
+        if not (0 <= row < H and 0 <= col < W and self.differs()[row, col]):
+            return False
+        return bool(SIGNATURES[self.cause][0](self.frame, self.frame.history(row, col)))
+
     def differs(self) -> np.ndarray:
         """(H, W) bool: the pixels the mistake changed (colour, RGB)."""
         a, b = _rgb(self.frame), _rgb(self.intended)
         return ~np.isclose(a, b, atol=1e-6).all(axis=2)
+
+
+def _tested(frame, h) -> bool:
+    """Two or more fragments met the depth test here: its direction decided which is shown."""
+    return sum(r.outcome in ("passed", "failed_depth") for r in h.records) >= 2
+
+
+def _nearer_first(frame, h) -> bool:
+    """Two blended fragments arrived nearer first."""
+    depths = [r.depth for r in h.records if r.outcome == "passed"]
+    return len(depths) >= 2 and any(a < b for a, b in zip(depths, depths[1:]))
+
+
+def _thin_missed(frame, h) -> bool:
+    """The thinnest triangle crosses the pixel's box but not its centre (no fragment)."""
+    k = int(np.argmin(_altitudes(frame)))
+    mine = [r for r in h.records if r.triangle == k]
+    return bool(mine) and all(r.outcome == "not_covered" for r in mine)
+
+
+#: What a history shows for each cause that occurs: a test on (frame, history), and words.
+SIGNATURES = {
+    "depth function": (_tested, "two or more fragments met the depth test there"),
+    "culled winding": (lambda f, h: any(r.outcome == "culled" for r in h.records),
+                       "a triangle there was culled"),
+    "z-fighting": (lambda f, h: any(r.outcome == "failed_depth" and r.depth == r.depth_before
+                                    for r in h.records), "a fragment failed on a tie"),
+    "missing premultiplication": (lambda f, h: any(r.outcome == "passed" for r in h.records),
+                                  "a fragment was blended there"),
+    "blend order": (_nearer_first, "two blended fragments arrived nearer first"),
+    "sliver": (_thin_missed, "a triangle crosses the pixel without covering its centre"),
+}  # fmt: skip
 
 
 def _rgb(frame: Frame) -> np.ndarray:
@@ -209,7 +251,7 @@ def _same(got, expected, args=None) -> bool:
     cause, (row, col) = got
     if part == "cause":
         return cause == b.cause
-    return bool(b.differs()[row, col])
+    return b.shows(row, col)
 
 
 def _changed(number: int, row: int, col: int) -> bool:
@@ -222,7 +264,9 @@ def _explain(args, expected, got) -> str:
     part, _ = expected
     cause, (row, col) = got
     if part == "pixel":
-        return f"pixel ({row}, {col}) is the same in this frame as in the intended one"
+        if not _changed(expected[1], row, col):
+            return f"pixel ({row}, {col}) is the same in this frame as in the intended one"
+        return f"pixel ({row}, {col}) changed, but its history does not show what went wrong"
     return f"{cause!r} does not fit"
 
 
@@ -241,10 +285,17 @@ DIAGNOSIS_MISTAKES = (
     Mistake("cause", _cause_words, fits=lambda a, e, g: e[0] == "cause"),
     Mistake("pixel (col, row)", "a pixel is (row, col), the row first, and (col, row) = "
             "(x, y) is one the mistake changed: did you give (x, y)?", fits=lambda a, e, g:
-            e[0] == "pixel" and _changed(e[1], g[1][1], g[1][0])),
-    Mistake("pixel", "choose a pixel the mistake changed (compare the two pictures), then "
-            "read its history", fits=lambda a, e, g: e[0] == "pixel"),
+            e[0] == "pixel" and broken_frame(e[1]).shows(g[1][1], g[1][0])),
+    Mistake("pixel", lambda a, e, g: _pixel_words(e[1], *g[1]), fits=lambda a, e, g:
+            e[0] == "pixel"),
 )  # fmt: skip
+
+
+def _pixel_words(number: int, row: int, col: int) -> str:
+    if _changed(number, row, col):
+        return ("compare its history with the intended frame's history of the same pixel, or "
+                "choose another changed pixel whose history shows the mistake")  # fmt: skip
+    return "choose a pixel the mistake changed (compare the two pictures), then read its history"
 
 
 def hint(cause: str, frame: Frame, row: int, col: int) -> str:
@@ -320,11 +371,16 @@ def _depth_hint(failed, row, col) -> str:
 
 def _thinnest(frame: Frame) -> float:
     """The smallest altitude (px) of the frame's triangles on screen."""
+    return float(_altitudes(frame).min())
+
+
+def _altitudes(frame: Frame) -> np.ndarray:
+    """Each triangle's smallest altitude (px) on screen."""
     xy = frame.trace.window[:, :, :2]
     e = np.roll(xy, -1, axis=1) - xy
     area2 = np.abs(e[:, 0, 0] * e[:, 1, 1] - e[:, 0, 1] * e[:, 1, 0])
     longest = np.linalg.norm(e, axis=2).max(axis=1)
-    return float((area2 / longest).min())
+    return area2 / longest
 
 
 def _draw(ax, case, got):

@@ -26,7 +26,7 @@ import numpy as np
 from ..pipeline.rendering.render_scenes import render
 from . import capstone_glass as glass
 from . import output
-from .capstone_explain import explain_pixel
+from .capstone_explain import CHECKED_AS, explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
 from .capstone_scenes import capstone_scene
 from .report import Failure, Report
@@ -198,8 +198,26 @@ def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
     wrong = np.argwhere(differing(spec, mine, reference))
     failures = [_pixel_failure(spec, used, mine, reference, (int(r), int(c)))
                 for r, c in _spread(wrong)]  # fmt: skip
-    failures = _one_per_stage(failures)
+    failures = _one_per_stage(failures) + _own_cases(spec, used)
     return CapstoneReport(failures=failures, n_cases=n, mine=mine, n_wrong=len(wrong), **base)
+
+
+def _own_cases(spec: CapstoneScene, used) -> list[Failure]:
+    """``over`` on its own exercise's cases too: the glass scenes' background is opaque, so
+    alpha is 1 whatever ``over`` does to it, and the scene alone cannot see an ``over`` that
+    leaves the destination's alpha as it was."""
+    if "over" not in spec.uses:
+        return []
+    from .checks import check
+
+    with output.captured():
+        report = check(CHECKED_AS["over"], used["over"])
+    if report.passed or not report.failures:
+        return []
+    return [Failure(f"{CHECKED_AS['over']}'s own cases", "your over fails the "
+                    f"{CHECKED_AS['over']} exercise's own cases (this scene's opaque background "
+                    "hides what over does to alpha): " + report.failures[0].explanation,
+                    None, None, kind="blending")]  # fmt: skip
 
 
 def _spread(wrong: np.ndarray, most: int = 12) -> list:

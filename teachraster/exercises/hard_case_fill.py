@@ -62,6 +62,17 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     o = int(max(CASES["far_from_origin"].inputs["offsets"]))
     out.append((f"far_from_origin at row {o}, column {o // 2 + 7}",
                 (local + [o // 2 + 7, o], 16, 16, (o, o // 2 + 7))))  # fmt: skip
+    # vertices on the 1/256 grid but off float32's (1/16 px apart at 10⁶): a right edge
+    # 3/256 px right of a column of centres, which float32 storage moves onto them
+    off = np.array([[2 + 5 / 256, 1 + 37 / 256], [12.5 + 3 / 256, 3 + 11 / 256],
+                    [12.5 + 3 / 256, 14 + 21 / 256]])  # fmt: skip
+    out.append(
+        (f"far_from_origin at {o} px, vertices on the 1/256 grid", (off + o, 16, 16, (o, o)))
+    )
+    # a vertex exactly half-way between two grid points: half to even (np.rint, a GPU's
+    # fixed-point conversion) puts the left edge through centres, half up beside them
+    half = np.array([[2.5 + 1 / 512, 1.0], [2.5 + 1 / 512, 9.0], [9.0, 5.0]])
+    out.append(("half step: vertices half-way between 1/256 grid points", (half, 12, 12, (0, 0))))
     out += _random_cases()
     return [(label, args, expected_fill(*args)) for label, args in out]
 
@@ -102,14 +113,18 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         "origin ignored": expected_fill(xy, width, height, (0, 0)),
         "pixel corners": expected_fill(np.asarray(xy, float) + 0.5, width, height, origin),
         "no snapping": naive_coverage(xy, width, height, rule="top_left", **kw),
+        "half-up snapping": naive_coverage(
+            np.floor(np.asarray(xy, float) * 256 + 0.5) / 256, width, height, rule="top_left", **kw
+        ),  # fmt: skip
+        "float32 vertices": tie_fill(s.astype(np.float32).astype(float), width, height, origin),
         "floor snapping": naive_coverage(
             np.floor(np.asarray(xy, float) * 256) / 256, width, height, rule="top_left", **kw
         ),  # fmt: skip
         "E >= 0": naive_coverage(s, width, height, rule="inclusive", **kw),
         "E > 0": naive_coverage(s, width, height, rule="strict", **kw),
-        "top edge reversed": naive_coverage(s, width, height, rule="bottom_left", **kw),
-        "left edge reversed": naive_coverage(s, width, height, rule="top_right", **kw),
-        "both reversed": naive_coverage(s, width, height, rule="bottom_right", **kw),
+        "no top edges": tie_fill(s, width, height, origin, top=False),
+        "no left edges": tie_fill(s, width, height, origin, left=False),
+        **_reversed(s, width, height, kw, expected_fill(xy, width, height, origin)),
         "one winding": naive_coverage(s, width, height, rule="top_left", orient="none", **kw),
         "oriented before snapping": naive_coverage(
             flipped, width, height, rule="top_left", orient="none", **kw
@@ -121,9 +136,53 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     }
 
 
+def _reversed(s, width, height, kw, expected) -> dict[str, np.ndarray | None]:
+    """The tie rule with a direction reversed, where it shows: a reversed rule covers centres
+    on the wrong edges, so it is named only on a case where it gives extra pixels (a case
+    with missing pixels only is a forgotten rule, never a reversed one)."""
+    out = {}
+    for kind, rule in REVERSED.items():
+        got = naive_coverage(s, width, height, rule=rule, **kw)
+        out[kind] = got if (got & ~expected).any() else None
+    return out
+
+
+#: The reversed tie rules, as :func:`naive_coverage` names them.
+REVERSED = {"top edge reversed": "bottom_left", "left edge reversed": "top_right",
+            "both reversed": "bottom_right"}  # fmt: skip
+
+
+def tie_fill(s, width: int, height: int, origin, *, top: bool = True, left: bool = True):
+    """Coverage of the snapped triangle ``s`` with the top-left rule missing a part: a centre
+    on a top edge is inside only if ``top``, on a left edge only if ``left`` (a forgotten
+    case of the rule covers fewer pixels, never more)."""
+    v = np.asarray(s, float)
+    if _area(v) < 0:
+        v = v[[0, 2, 1]]
+    y = origin[0] + np.arange(height)[:, None] + 0.5
+    x = origin[1] + np.arange(width)[None, :] + 0.5
+    inside = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+        tie = (left and b[1] < a[1]) or (top and b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if tie else (e > 0)
+    return inside
+
+
 def _area(xy) -> float:
     (ax, ay), (bx, by), (cx, cy) = np.asarray(xy, float)
     return float((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+
+
+def _float32_vertices(args, expected, got) -> str:
+    """Words for snapped vertices stored in float32, with the case's spacing of float32."""
+    far = float(np.abs(np.asarray(args[0], float)).max())
+    step = float(np.spacing(np.float32(far)))
+    return (f"you store the snapped vertices in float32: {far:.0f} px from the origin its "
+            f"numbers are {step:g} px apart and cannot hold the 1/256-px grid, so a vertex "
+            "moves before the edges are computed; keep them in float64 (or as integers in "
+            "1/256 px)")  # fmt: skip
 
 
 MISTAKES = {
@@ -138,6 +197,11 @@ MISTAKES = {
     "no snapping": "you decide on the raw vertices: snap them to the 1/256-px grid first "
     "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
     "its neighbour agree on every tie",
+    "half-up snapping": "you round a vertex half-way between two grid points up "
+    "(np.floor(x · 256 + ½)): a GPU's fixed-point conversion rounds half to even, as np.rint "
+    "does, so a vertex exactly on a half step goes to the even grid point and a centre on the "
+    "edge changes sides",
+    "float32 vertices": _float32_vertices,
     "floor snapping": "you snap by truncating (np.floor): every vertex moves up to 1/256 px "
     "left and up, always the same way, so centres near an edge change sides; round to the "
     "nearest grid point, np.rint(xy * 256) / 256",
@@ -145,6 +209,14 @@ MISTAKES = {
     "triangles is covered twice; the top-left rule gives it to one of them",
     "E > 0": "you cover no centre on an edge (E > 0): a centre on a shared edge is covered by "
     "neither triangle, and a sliver whose edge runs through centres vanishes",
+    "no top edges": "you give no centre on a top edge to the triangle: your rule covers a "
+    "centre on a left edge (one that runs up, b.y < a.y, with E(v1, v2, v3) > 0) but not "
+    "the other half of the top-left rule, a horizontal edge running right (b.y == a.y, "
+    "b.x > a.x); such a centre is covered by neither triangle that shares the edge",
+    "no left edges": "you give no centre on a left edge to the triangle: your rule covers a "
+    "centre on a top edge (horizontal, running right) but not the other half of the "
+    "top-left rule, an edge running up (b.y < a.y, with E(v1, v2, v3) > 0); such a centre is "
+    "covered by neither triangle that shares the edge",
     "top edge reversed": "your top edges are the bottom ones: on screen (y down), with the "
     "triangle oriented so that E(v1, v2, v3) > 0, a top edge is horizontal and runs right "
     "(b.x > a.x); the rule written for y up reads it the other way",
