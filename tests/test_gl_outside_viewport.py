@@ -7,7 +7,7 @@ a pixel centre or sample lying on such an edge, or within a snapping step of it,
 decided the other way: with vertices on half pixels that is exactly on an edge; with
 vertices anywhere on the 1/256 grid, or off it, samples up to 0.0015 px inside an edge were
 seen to differ. teachraster clips only against the near and far planes and rasterises the
-rest of the triangle as it is (an unlimited guard band, as Direct3D's rules and hardware
+rest of the triangle as it is (a guard band far outside the image, as Direct3D's rules and hardware
 guard bands do): clipping never changes which centres are covered. So the two agree on every
 centre and sample farther than 1/256 px from an edge, and agree everywhere when all vertices
 are inside the viewport.
