@@ -123,6 +123,20 @@ def test_edge_labels_name_the_given_edges():
             assert (js[k]["bias"] == 0) == bool(s.top_left[j])
 
 
+def test_tint_buttons_name_the_chosen_triangles_edges():
+    # B = v3 v2 v4: its edges are v3->v2, v2->v4, v4->v3, never A's E12, E23, E31
+    quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [11.5, 10.5]]
+    scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
+    a, b, table = call_js(
+        EDGES, [("tintChoices", ["A"]), ("tintChoices", ["B"]), ("edgeTable", [scene])]
+    )
+    assert [label for _, label in a[1:4]] == ["E12's", "E23's", "E31's"]
+    assert [label for _, label in b[1:4]] == ["v3→v2's", "v2→v4's", "v4→v3's"]
+    assert [value for value, _ in a] == [value for value, _ in b]  # the same edge slots
+    for name in ("v3→v2", "v2→v4", "v4→v3"):  # as the explorer's own table names them
+        assert f"<b>{name}</b>" in table
+
+
 CRACKS = ("raster_rules", "explore_cracks")
 
 
