@@ -178,6 +178,42 @@ def test_cracks_and_double_draws_as_the_reference():
     assert seen["dda", False] > 0  # the float DDA does fail on these
 
 
+def test_stored_pair_cracks_as_the_reference_says():
+    from teachraster.study.naive_spans import shared_edge_faults
+    from teachraster.widgets import CrackExplorer
+
+    size = CrackExplorer().data["width"]
+    pair, fits, small = call_js(
+        CRACKS,
+        [("crackingPair", []), ("fitsCrackingPair", [size, size]), ("fitsCrackingPair", [12, 12])],
+    )
+    assert fits and not small  # offered at the explorer's default grid, not on 12 x 12
+    a, b = np.array(pair[0]), np.array(pair[1])
+    assert (a[:2] == b[1::-1]).all()  # they share the edge p-q
+    assert tr.edge_function(a[0], a[1], a[2]) * tr.edge_function(a[0], a[1], b[2]) < 0
+    listed = shared_edge_faults(a, b, size, size, "dda", as_listed=True)
+    assert len(listed["cracks"]) > 0  # it does crack, evaluated as listed
+    alike = shared_edge_faults(a, b, size, size, "dda")
+    assert not len(alike["cracks"]) and not len(alike["doubles"])
+
+
+def test_random_shared_pairs_as_the_pages():
+    from teachraster.study.naive_spans import random_shared_pairs
+
+    pairs = random_shared_pairs(np.random.default_rng(3), 200, 9, 7)
+    assert len(pairs) == 200
+    for a, b in pairs:
+        assert (a[:2] == b[1::-1]).all() and not (a[0] == a[1]).all()  # p-q, listed both ways
+        assert tr.edge_function(a[0], a[1], a[2]) > 0 > tr.edge_function(a[0], a[1], b[2])
+        both = np.concatenate([a, b])
+        assert ((both % 1) == 0.5).all() and (both[:, 0] < 9).all() and (both[:, 1] < 7).all()
+    # the page's pairs obey the same rule (only the random stream differs)
+    for a, b in call_js(CRACKS, [("rolls", [5, 100, 9, 7])])[0]:
+        assert tr.edge_function(a[0], a[1], a[2]) > 0 > tr.edge_function(a[0], a[1], b[2])
+    with pytest.raises(ValueError, match="n"):
+        random_shared_pairs(np.random.default_rng(3), -1, 9, 7)
+
+
 def test_tally_counts_every_pair_as_the_reference():
     from teachraster.study.naive_spans import shared_edge_faults
 
