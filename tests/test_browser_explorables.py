@@ -152,6 +152,11 @@ def test_edges_drag_in_the_page_and_the_kernel_hears_the_release(lesson):
     before = _frames(planes)
     _drag(lesson, planes, (280, 200), (60, 20))
     assert _frames(planes) > before
+    # the tint buttons name the chosen triangle's own edges
+    w.get_by_role("button", name="signs of B (v3 v2 v4)").click()
+    w.get_by_role("button", name="v2→v4's").click()
+    assert w.get_by_role("button", name="E23's").count() == 0
+    assert _kernel(lesson, "edges.state['tint']") == "E23"  # B's second edge
     assert not lesson.errors, lesson.errors[:3]
 
 
@@ -164,6 +169,15 @@ def test_cracks_reroll_and_tally(lesson):
     state = _kernel(lesson, "cracks.state")
     assert state["roll"] == 1001 and state["tally"]["integer"]["pairs"] == 1002
     assert state["tally"]["integer"]["swapped"] == 0 and state["tally"]["dda"]["swapped"] > 0
+    # random pairs on this grid hardly ever crack: the stored pair does, evaluated as listed
+    w.get_by_role("button", name="Show a pair that cracks").click()
+    listed = w.get_by_role(
+        "button", name="evaluate each edge from the end its triangle lists first"
+    )
+    assert listed.get_attribute("aria-pressed") == "true"
+    state = _kernel(lesson, "cracks.state")
+    assert state["stored"] and state["asListed"] and state["tally"]["integer"]["pairs"] == 1002
+    assert not lesson.errors, lesson.errors[:3]
 
 
 def test_depth_near_plane_dragged(lesson):

@@ -123,6 +123,20 @@ def test_edge_labels_name_the_given_edges():
             assert (js[k]["bias"] == 0) == bool(s.top_left[j])
 
 
+def test_tint_buttons_name_the_chosen_triangles_edges():
+    # B = v3 v2 v4: its edges are v3->v2, v2->v4, v4->v3, never A's E12, E23, E31
+    quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [11.5, 10.5]]
+    scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
+    a, b, table = call_js(
+        EDGES, [("tintChoices", ["A"]), ("tintChoices", ["B"]), ("edgeTable", [scene])]
+    )
+    assert [label for _, label in a[1:4]] == ["E12's", "E23's", "E31's"]
+    assert [label for _, label in b[1:4]] == ["v3→v2's", "v2→v4's", "v4→v3's"]
+    assert [value for value, _ in a] == [value for value, _ in b]  # the same edge slots
+    for name in ("v3→v2", "v2→v4", "v4→v3"):  # as the explorer's own table names them
+        assert f"<b>{name}</b>" in table
+
+
 CRACKS = ("raster_rules", "explore_cracks")
 
 
@@ -162,6 +176,42 @@ def test_cracks_and_double_draws_as_the_reference():
                 assert not js["cracks"] and not js["doubles"]
     assert seen["integer", False] == seen["integer", True] == 0
     assert seen["dda", False] > 0  # the float DDA does fail on these
+
+
+def test_stored_pair_cracks_as_the_reference_says():
+    from teachraster.study.naive_spans import shared_edge_faults
+    from teachraster.widgets import CrackExplorer
+
+    size = CrackExplorer().data["width"]
+    pair, fits, small = call_js(
+        CRACKS,
+        [("crackingPair", []), ("fitsCrackingPair", [size, size]), ("fitsCrackingPair", [12, 12])],
+    )
+    assert fits and not small  # offered at the explorer's default grid, not on 12 x 12
+    a, b = np.array(pair[0]), np.array(pair[1])
+    assert (a[:2] == b[1::-1]).all()  # they share the edge p-q
+    assert tr.edge_function(a[0], a[1], a[2]) * tr.edge_function(a[0], a[1], b[2]) < 0
+    listed = shared_edge_faults(a, b, size, size, "dda", as_listed=True)
+    assert len(listed["cracks"]) > 0  # it does crack, evaluated as listed
+    alike = shared_edge_faults(a, b, size, size, "dda")
+    assert not len(alike["cracks"]) and not len(alike["doubles"])
+
+
+def test_random_shared_pairs_as_the_pages():
+    from teachraster.study.naive_spans import random_shared_pairs
+
+    pairs = random_shared_pairs(np.random.default_rng(3), 200, 9, 7)
+    assert len(pairs) == 200
+    for a, b in pairs:
+        assert (a[:2] == b[1::-1]).all() and not (a[0] == a[1]).all()  # p-q, listed both ways
+        assert tr.edge_function(a[0], a[1], a[2]) > 0 > tr.edge_function(a[0], a[1], b[2])
+        both = np.concatenate([a, b])
+        assert ((both % 1) == 0.5).all() and (both[:, 0] < 9).all() and (both[:, 1] < 7).all()
+    # the page's pairs obey the same rule (only the random stream differs)
+    for a, b in call_js(CRACKS, [("rolls", [5, 100, 9, 7])])[0]:
+        assert tr.edge_function(a[0], a[1], a[2]) > 0 > tr.edge_function(a[0], a[1], b[2])
+    with pytest.raises(ValueError, match="n"):
+        random_shared_pairs(np.random.default_rng(3), -1, 9, 7)
 
 
 def test_tally_counts_every_pair_as_the_reference():

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.edges import edge_function
 from ..core.fill import rasterize
 from ..core.snapping import SUBPIXEL_BITS, to_units, units_per_pixel
 from ..core.triangle import Triangle
@@ -147,3 +148,37 @@ def shared_edge_faults(first, second, width: int, height: int, name: str,
         "swapped": np.argwhere(swapped),
         "wrong": wrong,
     }
+
+
+def random_shared_pairs(rng: np.random.Generator, n: int, width: int, height: int) -> list:
+    """``n`` random pairs of triangles sharing an edge, drawn as the crack explorer draws them.
+
+    Four pixel centres p, q, r, s (p != q), redrawn until r and s lie strictly on either side
+    of the line p-q; the pair is ``(p, q, r), (q, p, s)`` with r on the side where
+    ``edge_function(p, q, r) > 0``, so the second triangle lists the shared edge the other way.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The random stream (the page's stream differs: only the distribution is the same).
+    n, width, height : int
+        How many pairs, and the grid the centres lie on.
+
+    Returns
+    -------
+    list of tuple of numpy.ndarray
+        ``n`` pairs of (3, 2) vertex arrays, for :func:`shared_edge_faults`.
+    """
+    n, width, height = int(n), as_size("width", width), as_size("height", height)
+    if n < 0:
+        raise ValueError(f"n must be >= 0, got {n}")
+    pairs = []
+    while len(pairs) < n:
+        p, q, r, s = rng.integers(0, (width, height), (4, 2)) + 0.5
+        if (p == q).all():
+            continue
+        side = np.sign([edge_function(p, q, r), edge_function(p, q, s)])
+        if side[0] * side[1] < 0:  # strictly on either side of p-q
+            r, s = (r, s) if side[0] > 0 else (s, r)
+            pairs.append((np.array([p, q, r]), np.array([q, p, s])))
+    return pairs

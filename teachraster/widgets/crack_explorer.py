@@ -8,7 +8,8 @@ by side, the float crossing + ceil, the float DDA (x += Δu/Δv) and the integer
 marks the tie pixels each gives to the wrong triangle, the cracked and the doubly drawn ones,
 rerolls, and keeps a running tally. (Measured: when both triangles evaluate the shared edge
 alike, as lesson 01's loops do, rounding never cracks it or draws a pixel twice; it gives the
-tie to the wrong triangle. Evaluated from opposite ends, it can crack, rarely.)
+tie to the wrong triangle. Evaluated from opposite ends, it can crack, rarely: so rarely that
+random pairs on a small grid hardly ever show it, and a button loads a stored pair that does.)
 
 Computed in the page (``static/raster_rules.js``, ``static/explore_cracks.js``); the tests
 compare it with :mod:`teachraster.study.naive_spans` and :func:`teachraster.rasterize`.
@@ -28,7 +29,8 @@ class CrackExplorer(Explorable):
     Parameters
     ----------
     width, height : int
-        The grid of each panel (at most 40 each: three panels share a notebook column).
+        The grid of each panel (at most 40 each: three panels share a notebook column). The
+        stored pair that cracks needs 16 x 16 (the default); on a smaller grid it is not offered.
     seed : int
         Seed of the page's random pairs (the same seed draws the same pairs; the default's
         first pair shows the float DDA giving a tie to the wrong triangle).
@@ -37,7 +39,8 @@ class CrackExplorer(Explorable):
     ----------
     state : dict
         ``seed``, ``roll`` (how many rerolls since the first pair), ``asListed`` (edges
-        evaluated from the end each triangle lists first) and ``tally`` (per fill: ``pairs``,
+        evaluated from the end each triangle lists first), ``stored`` (the stored pair that
+        cracks on show instead of the random one) and ``tally`` (per fill: ``pairs``,
         ``faulty`` pairs with a crack or double draw, ``swappedPairs`` with a tie given to the
         wrong triangle, ``triangles``, ``wrongTriangles`` unlike the integer fill, ``cracks``,
         ``doubles`` and ``swapped`` in pixels), as of the page's last change.
@@ -46,7 +49,7 @@ class CrackExplorer(Explorable):
     --------
     >>> ex = CrackExplorer(seed=3)
     >>> ex.state["roll"], ex.data["width"]
-    (0, 12)
+    (0, 16)
     >>> ex.state["asListed"]
     False
     """
@@ -55,7 +58,7 @@ class CrackExplorer(Explorable):
     noun = "crack explorer"
     title = "Ties on a shared edge: stolen pixels, cracks and double draws"
 
-    def __init__(self, width: int = 12, height: int = 12, *, seed: int = 9) -> None:
+    def __init__(self, width: int = 16, height: int = 16, *, seed: int = 9) -> None:
         width, height = as_size("width", width), as_size("height", height)
         if max(width, height) > 40:
             raise ValueError(f"width and height must be at most 40, got {width}x{height}")
@@ -64,7 +67,7 @@ class CrackExplorer(Explorable):
             raise ValueError(f"seed must be in [0, 2**32), got {seed}")
         super().__init__()
         self.data = {"width": width, "height": height, "seed": seed}
-        self.state = {"seed": seed, "roll": 0, "asListed": False}
+        self.state = {"seed": seed, "roll": 0, "asListed": False, "stored": False}
 
     @property
     def tally(self) -> dict:

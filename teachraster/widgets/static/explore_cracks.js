@@ -26,6 +26,14 @@ export function randomPair(rand, W, H) {
   }
 }
 
+// A stored pair that cracks when each edge is evaluated from the end its triangle lists first
+// (the float DDA leaves the centre of pixel row 4, column 0 to neither). Random pairs do so
+// rarely (the test counts how rarely), so the page can load this one: it needs a 16 x 16 grid.
+export const CRACKING_PAIR = [[[0.5, 4.5], [15.5, 15.5], [1.5, 11.5]],
+  [[15.5, 15.5], [0.5, 4.5], [12.5, 2.5]]];
+export const crackingPair = () => CRACKING_PAIR.map((t) => t.map((v) => [...v]));
+export const fitsCrackingPair = (W, H) => CRACKING_PAIR.flat().every(([x, y]) => x < W && y < H);
+
 // the pairs rolled from `seed`, `n` of them (the page's rolls, for the tests)
 export function rolls(seed, n, W, H) {
   const rand = randomStream(seed);
@@ -106,14 +114,15 @@ export function tallyTable(tally) {
 function mount(el, data, host) {
   const W = data.width;
   const H = data.height;
-  const state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false,
+  const state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false, stored: false,
     ...host.state() };
   const root = frame(el, data.title,
     "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
     "panel fills both, A in blue and B in orange. <b>⇄</b>: a centre on the shared edge drawn " +
     "by the wrong one of the two; <b style='color:#D55E00'>2</b>: drawn twice; " +
     "<b style='color:#D55E00'>✕</b>: drawn by neither (a crack); dashed box: unlike the " +
-    "integer fill. Reroll for a new pair; the tally counts every pair drawn.");
+    "integer fill. Reroll for a new pair; the tally counts every random pair drawn (not the " +
+    "stored pair that cracks).");
   const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
   const gap = 26;
   const m = { left: 8, top: 30 };
@@ -122,24 +131,36 @@ function mount(el, data, host) {
     "the same pair of triangles filled three ways, cracks and double draws marked");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div");
-  root.append(crackControls(state, host, (n, e) => roll(n, e), (e) => paint.request(e)), canvas,
+  const showStored = (e) => {
+    state.stored = true;
+    state.asListed = true;
+    pair = CRACKING_PAIR;
+    controls.sync();
+    paint.request(e);
+    host.setState({ stored: true, asListed: true, tally: state.tally });
+  };
+  const controls = crackControls(state, host, (n, e) => roll(n, e), (e) => paint.request(e),
+    fitsCrackingPair(W, H) ? showStored : null);
+  root.append(controls.row, canvas,
     readout, table, element("div", { class: "tr-x-sub", html: CRACKS_NOTE }));
   let rand = randomStream(state.seed);
   let pair = null;
   for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H); // the pair on show
+  if (state.stored && fitsCrackingPair(W, H)) pair = CRACKING_PAIR;
   if (!state.roll && !state.tally.integer.pairs) {
     state.tally = tallied(state.tally, pair, W, H, state.asListed);
   }
   const ui = { hover: null };
 
   function roll(n, e) {
+    state.stored = false;
     for (let k = 0; k < n; k++) {
       pair = randomPair(rand, W, H);
       state.tally = tallied(state.tally, pair, W, H, state.asListed);
     }
     state.roll += n;
     paint.request(e);
-    host.setState({ roll: state.roll, tally: state.tally });
+    host.setState({ roll: state.roll, stored: false, tally: state.tally });
   }
 
   function draw() {
@@ -174,12 +195,15 @@ function mount(el, data, host) {
     setState(s) {
       // the pair on show again only when the kernel moved it (not at the echo of our roll)
       const moved = (s.seed !== undefined && s.seed !== state.seed)
-        || (s.roll !== undefined && s.roll !== state.roll);
+        || (s.roll !== undefined && s.roll !== state.roll)
+        || (s.stored !== undefined && s.stored !== state.stored);
       Object.assign(state, s);
       if (moved) {
         rand = randomStream(state.seed);
         for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H);
+        if (state.stored && fitsCrackingPair(W, H)) pair = CRACKING_PAIR;
       }
+      controls.sync();
       paint.request();
     },
   };
@@ -188,13 +212,13 @@ function mount(el, data, host) {
 const CRACKS_NOTE = "Both triangles walk the shared edge from its upper end, as lesson 01's " +
   "loops do: they round alike, so a tie goes to one of them, sometimes the wrong one, and the " +
   "edge never cracks. Evaluated from the end each triangle lists first, the two round " +
-  "differently: then (rarely) it can.";
+  "differently: then, rarely, it can; <b>Show a pair that cracks</b> loads one.";
 
-// Reroll, a thousand more, the tally reset, and the edges evaluated as listed
-function crackControls(state, host, roll, repaint) {
+// Reroll, a thousand more, the tally reset, the edges evaluated as listed, the stored pair
+function crackControls(state, host, roll, repaint, showStored) {
   const listed = button("evaluate each edge from the end its triangle lists first", (e) => {
     state.asListed = !state.asListed;
-    listed.setAttribute("aria-pressed", String(state.asListed));
+    sync();
     state.tally = emptyTally();
     repaint(e);
     host.setState({ asListed: state.asListed, tally: state.tally });
@@ -204,8 +228,13 @@ function crackControls(state, host, roll, repaint) {
     repaint(e);
     host.setState({ tally: state.tally });
   });
-  return element("div", { class: "tr-x-row" }, [button("Reroll", (e) => roll(1, e)),
-    button("Roll 1000 more", (e) => roll(1000, e)), reset, listed]);
+  const stored = showStored ? [button("Show a pair that cracks", showStored)] : [];
+  function sync() {
+    listed.setAttribute("aria-pressed", String(Boolean(state.asListed)));
+  }
+  const row = element("div", { class: "tr-x-row" }, [button("Reroll", (e) => roll(1, e)),
+    button("Roll 1000 more", (e) => roll(1000, e)), reset, listed, ...stored]);
+  return { row, sync };
 }
 
 function pixelUnder(p, m, cell, panelW, gap, W, H) {

@@ -128,11 +128,23 @@ const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c
   "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, grey: " +
   "neither (a shared vertex, left to a third triangle).";
 
+// each triangle's edges as the table names them (B = v3 v2 v4: its first edge runs v3 -> v2)
+export const EDGE_NAMES = { A: ["E12", "E23", "E31"], B: ["v3→v2", "v2→v4", "v4→v3"] };
+
+// the tint buttons for the chosen triangle: [state value, label]; the value is the edge's
+// place in the triangle (E12: its first edge), the label the edge's own name
+export function tintChoices(chosen) {
+  const names = EDGE_NAMES[chosen];
+  return [["none", "no half-plane"], ["E12", `${names[0]}'s`], ["E23", `${names[1]}'s`],
+    ["E31", `${names[2]}'s`], ["all", "all three"]];
+}
+
 // the explorer's buttons: whose signs, the 3-D planes, the snapping, the half-plane tinted
 function edgeControls(state, host, repaint, view3d) {
   const chosen = choiceButtons([["A", "signs of A (v1 v2 v3)"], ["B", "signs of B (v3 v2 v4)"]],
     state.chosen, (which, e) => {
       state.chosen = which;
+      sync();
       host.setState({ chosen: which });
       repaint(e);
     });
@@ -147,14 +159,15 @@ function edgeControls(state, host, repaint, view3d) {
     sync();
     host.setState({ snap: state.snap });
   }, Boolean(state.snap));
-  const tints = choiceButtons([["none", "no half-plane"], ["E12", "E12's"], ["E23", "E23's"],
-    ["E31", "E31's"], ["all", "all three"]], state.tint, (which, e) => {
+  const tints = choiceButtons(tintChoices(state.chosen), state.tint, (which, e) => {
     state.tint = which;
     host.setState({ tint: which });
     repaint(e);
   });
   function sync() {
     chosen.set(state.chosen);
+    // the tint buttons name the chosen triangle's own edges, as the table below does
+    tintChoices(state.chosen).forEach(([, label], k) => (tints.buttons[k].textContent = label));
     tints.set(state.tint);
     planes.setAttribute("aria-pressed", String(state.planes));
     snap.setAttribute("aria-pressed", String(Boolean(state.snap)));
@@ -385,7 +398,7 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
 // the edges of both triangles: kind and bias of each
 export function edgeTable(scene) {
   const rows = [["A", scene.A, ["E12 (v1→v2)", "E23 (v2→v3)", "E31 (v3→v1)"]],
-    ["B", scene.B, ["v3→v2", "v2→v4", "v4→v3"]]].map(([name, s, names]) => {
+    ["B", scene.B, EDGE_NAMES.B]].map(([name, s, names]) => {
     if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
     const cells = edgeLabels(s, names).map((e, k) =>
       `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${e.name}</b> ${e.kind}, ` +
