@@ -164,8 +164,19 @@ def lab() -> Lab:
     browser = driver().chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
     page = browser.new_context(viewport={"width": 1400, "height": 1000}).new_page()
     errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    page.on("pageerror", lambda exc: _keep_error(errors, str(exc)))
     return Lab(base, work / "notebooks", log, process, page, errors, browser.close)
+
+
+#: Notebook 7's own error when it opens a page of a server a JupyterLab page used before
+#: (nothing visible; the browser probe of 2026-12-01 saw it too). It can arrive after the
+#: next test started on the same page, so it is left out here, for every test.
+NOTEBOOK_7_ERROR = "reading 'schema'"
+
+
+def _keep_error(errors: list, message: str) -> None:
+    if NOTEBOOK_7_ERROR not in message:
+        errors.append(message)
 
 
 def _shut_down_kernels(base: str) -> None:
