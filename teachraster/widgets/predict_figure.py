@@ -197,8 +197,11 @@ class PredictPixels(FigurePrediction):
     style : str, optional
         The plotting style of the picture.
     cell, picked : str
-        What a cell is (singular: "pixel", "tile", "level") and what the answer's cells are
-        ("lit", "rejected", "read"), for the instruction and the verdict.
+        What a cell is (singular: "pixel", "tile", "level") and what the answer's cells are,
+        as the question asks it ("lit", "rejected", "left as gaps", "drawn twice"): the
+        widget's own lines read "Click the pixels you expect {picked}" and "The answer: 12
+        pixels {picked}". Name what is asked: the default "lit" contradicts a question about
+        gaps or about pixels drawn twice.
 
     Attributes
     ----------
