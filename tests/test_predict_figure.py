@@ -103,6 +103,29 @@ def test_cells_are_named_and_the_keys_step_in_the_axis_units():
     assert "counts" not in js[js.index("function mountPoint") : js.index("function mountOrder")]
 
 
+def test_a_point_marker_can_read_out_the_code_it_sits_on():
+    """Lesson 12's sRGB code: the marker shows "code 186" while it moves (the page) and the
+    verdict repeats it (both sides); without ``readout`` nothing changes."""
+    codes = dict(answer=(188, 0.5), draw=None, xlim=(-0.5, 255.5), ylim=(0, 1), tolerance=4,
+                 units="codes")  # fmt: skip
+    p = PredictPoint("Code?", **codes, step=1, readout="code")
+    assert p.data["readout"] == "code" and p.data["readoutDigits"] == 0
+    assert p.readout() is None  # nothing to read before the marker moves
+    p.given = (186, 0.5)
+    assert p.readout() == "code 186"
+    assert p.verdict().startswith("Right. You predicted code 186. Your marker is 2 codes")
+    fine = PredictPoint("Where?", answer=(1, 2), draw=None, xlim=(0, 4), ylim=(0, 4), step=0.01,
+                        readout="x")  # fmt: skip
+    fine.given = (1.25, 2)
+    assert fine.readout() == "x 1.25"
+    plain = PredictPoint("Code?", **codes, step=1)
+    plain.given = (186, 0.5)
+    assert plain.data["readout"] is None and "predicted" not in plain.verdict()
+    got = call_js(("predict_figure",), [("readoutText", ["code", 186.0, 0]),
+                                        ("readoutText", ["x", 1.25, 2])])  # fmt: skip
+    assert got == [p.readout(), fine.readout()]
+
+
 @pytest.mark.parametrize(
     ("make", "error", "name"),
     [
@@ -115,6 +138,8 @@ def test_cells_are_named_and_the_keys_step_in_the_axis_units():
                               tolerance=-1), ValueError, "tolerance"),
         (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
                               step=0), ValueError, "step"),
+        (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
+                              readout=""), TypeError, "readout"),
         (lambda: PredictPixels("Q?", answer=np.eye(2, dtype=bool), cell=""), TypeError, "cell"),
         (lambda: PredictOrder("Q?", ["a", "a"], answer=None), ValueError, "items"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=None), ValueError, "allow_impossible"),

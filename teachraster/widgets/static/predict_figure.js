@@ -27,6 +27,11 @@ export function pointVerdict(answer, given, tolerance) {
   return { gap, correct: gap <= tolerance };
 }
 
+// the live readout of a point marker's x ("code 186"): data.readout, data.readoutDigits
+export function readoutText(label, x, digits) {
+  return `${label} ${x.toFixed(digits)}`;
+}
+
 export function orderVerdict(answer, given) {
   // answer null: no order works; given null: the student said so
   if (answer === null || given === null) return { places: null, correct: answer === given };
@@ -272,6 +277,19 @@ function mountPoint(root, data, host) {
     ctx.lineTo(mine[0], mine[1] + 14);
     ctx.lineWidth = 1.5;
     ctx.stroke();
+    if (data.readout) { // what the marker sits on, while it moves: no counting key presses
+      const g = state.given || start;
+      const text = readoutText(data.readout, g[0], data.readoutDigits);
+      ctx.font = "bold 16px sans-serif";
+      const right = mine[0] + 18 + ctx.measureText(text).width > canvas.width;
+      ctx.textAlign = right ? "right" : "left";
+      ctx.lineWidth = 4;
+      ctx.strokeStyle = "white";
+      ctx.strokeText(text, mine[0] + (right ? -18 : 18), mine[1] - 16);
+      ctx.fillStyle = "#111";
+      ctx.fillText(text, mine[0] + (right ? -18 : 18), mine[1] - 16);
+      ctx.textAlign = "left";
+    }
     check.disabled = state.given === null;
   }
   const paint = painter(canvas, draw);
@@ -279,7 +297,9 @@ function mountPoint(root, data, host) {
     if (state.given === null) return;
     state.revealed = true;
     const v = pointVerdict(data.answer, state.given, data.tolerance);
-    show(v.correct, `Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
+    const mine = data.readout
+      ? `You predicted ${readoutText(data.readout, state.given[0], data.readoutDigits)}. ` : "";
+    show(v.correct, `${mine}Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
       `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`);
     revealOnFigure(host, canvas, paint, state.given, byClick);
   }
