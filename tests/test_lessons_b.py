@@ -582,11 +582,12 @@ def test_09_filter_explorer_driven_by_the_test():
         for f in ["nearest", "trilinear", "anisotropic"]:
             explorer.filter.value = f
             errors[f] = explorer.rms
-            read = explorer.levels_read[np.isfinite(explorer.levels_read)]
+            first = explorer.levels_read.first
+            read = first[np.isfinite(first)]
             if f == "nearest":  # no mipmaps: the level panel shows level 0 everywhere
                 assert read.size and (read == 0).all()
             else:
-                assert read.max() > 2  # the tilted square's far end reads small levels
+                assert read.max() >= 2  # the tilted square's far end reads small levels
         assert errors["trilinear"] < errors["nearest"] and errors["anisotropic"] < errors["nearest"]
     finally:
         explorer.close()
