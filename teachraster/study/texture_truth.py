@@ -23,12 +23,13 @@ from ..pipeline.rendering.render_scenes import render_scene
 from ..pipeline.texturing.texture_filters import MIPMAP_FILTERS, levels_read, mip_level
 from .bench import time_interleaved
 
-#: The filters the study compares by default, cheapest first.
+#: The filters the study compares by default: every filter, unmipmapped first.
 STUDY_FILTERS = (
     "nearest",
     "bilinear",
     "nearest_mipmap_nearest",
     "linear_mipmap_nearest",
+    "nearest_mipmap_linear",
     "trilinear",
     "anisotropic",
 )
