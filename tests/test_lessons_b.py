@@ -480,6 +480,10 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     assert axes["near"][1] <= 1 and fps["near"].probes == 1
     for k in ("middle", "far"):
         assert fps[k].probes == int(np.ceil(axes[k][1] / axes[k][0])), k
+    # cell 27: min/mag is decided on λ, not λ': the middle pixel is minified, its probes are
+    # smaller than a texel (λ' < 0) and still taken, the near one is magnified with a ratio > 1
+    assert fps["middle"].lam > 0 and fps["middle"].probe_lam < 0 and fps["middle"].probes > 1
+    assert axes["near"][1] / axes["near"][0] > 1
     read = ns.level_read
     steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
     steps = steps[np.isfinite(steps)]
