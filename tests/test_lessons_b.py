@@ -539,6 +539,12 @@ def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     ns = lesson("09_texture_filtering")
     b, nmn = ns.b, ns.nmn
     assert b["texel_reads"] > nmn["texel_reads"]
+    import teachraster as tr
+
+    # §7's table lists every filter the explorer offers, nearest_mipmap_linear too (1 or 2
+    # texels per pixel: one per level read)
+    assert set(ns.by_filter) == set(tr.TEXTURE_FILTERS)
+    assert 1 < ns.by_filter["nearest_mipmap_linear"]["texel_reads"] <= 2
     assert b["error_minified"] > nmn["error_minified"]
     assert ns.aniso_error < ns.trilinear_error
 
