@@ -33,10 +33,10 @@ def test_lesson_08_shows_what_it_says(ns):
     assert "shaded once per triangle and pixel" in plan.why and "shading per" not in plan.why
     # §2: only partly covered pixels differ, by at most the samples' mean off the centre
     # times u's gradient; MSAA stores S colours and S depths per pixel
-    assert ns.gap_full < 1e-12 and 0 < ns.gap
+    assert ns.gap_full < 1e-12 and 0 < ns.gap_u
     u = tr.attribute_plane(tr.snap(ns.xy), [0.0, 1.0, 0.0])
     grad = float(np.hypot(u(1.0, 0.0) - u(0.0, 0.0), u(0.0, 1.0) - u(0.0, 0.0)))
-    assert ns.gap <= ns.off_centre * grad + 1e-12
+    assert ns.gap_u <= ns.off_centre * grad + 1e-12
     assert ns.off_centre == pytest.approx(np.hypot(0.125, 0.375))  # one sample alone
     # cell 18: the covered samples outside the octagon's open inside lie on its own edges
     assert ns.extra.sum() >= 1 and ns.on_outer[ns.extra].all()
