@@ -39,6 +39,16 @@ export function orderVerdict(answer, given) {
   return { places, correct: places.every(Boolean) };
 }
 
+// where "the answer" goes by the true point (canvas pixels, y down): above the dot, or below
+// it when the marker is above or there is no room, and on the side away from the marker
+// (whose cross reaches 14 px each way), so that it is never drawn under the marker
+export function answerLabel(mine, truth) {
+  const left = mine[0] > truth[0];
+  const below = mine[1] < truth[1] - 4 || truth[1] < 30;
+  return { x: truth[0] + (left ? -6 : 6), y: below ? truth[1] + 30 : truth[1] - 18,
+    align: left ? "right" : "left" };
+}
+
 const PRED_CSS = `
 .tr-predict { border-left: 4px solid #0072B2; padding: 4px 0 4px 12px; margin: 6px 0; }
 .tr-predict-q { font-size: 1.05em; margin: 2px 0 6px; }
@@ -261,9 +271,15 @@ function mountPoint(root, data, host) {
       ctx.beginPath();
       ctx.arc(truth[0], truth[1], 9, 0, 2 * Math.PI);
       ctx.fill();
-      ctx.fillStyle = "#111";
       ctx.font = "bold 14px sans-serif";
-      ctx.fillText("the answer", truth[0] + 12, truth[1] + 5);
+      const { x, y, align } = answerLabel(mine, truth);
+      ctx.textAlign = align;
+      ctx.lineWidth = 4;
+      ctx.strokeStyle = "white";
+      ctx.strokeText("the answer", x, y);
+      ctx.fillStyle = "#111";
+      ctx.fillText("the answer", x, y);
+      ctx.textAlign = "left";
     }
     ctx.lineWidth = 3.5;
     ctx.strokeStyle = OKABE.orange;
