@@ -177,7 +177,14 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.ends5 == [5.5, 11.5]  # the ticks of the row-5 question: the package's ends
     # the clicked answers: row 5's columns 5-10, row 2's columns 2-11, nothing else
     assert np.flatnonzero(ns.row5[5]).tolist() == list(range(5, 11)) and ns.row5.sum() == 6
-    assert np.flatnonzero(ns.row2[2]).tolist() == list(range(2, 12)) and ns.row2.sum() == 10
+    # the flat-topped question: rows 2, 6, 10 (top edge and right vertex, two ties, the apex)
+    assert ns.asked_rows == [2, 6, 10] and ns.ends6 == [4.5, 9.5]
+    assert [np.flatnonzero(ns.asked[i]).tolist() for i in ns.asked_rows] == [
+        list(range(2, 12)),
+        list(range(4, 9)),
+        [],
+    ]
+    assert ns.asked.sum() == 15 and ns.asked_counts == [10, 5, 0]
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
