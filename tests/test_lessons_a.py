@@ -283,6 +283,20 @@ def test_02_bailout_prediction_is_the_printed_share():
 
 
 @pytest.mark.notebook
+def test_02_barycentrics_and_the_edge_function_bits():
+    """Review r5 02-4/5: E / E12(v3) is lambda (Ek's section 1.2 ends there), and the integer
+    edge function's width is derived, not typed."""
+    ns = lesson("02_half_planes")
+    assert ns.area2 == pytest.approx(2 * abs(ns.tri.signed_area))
+    assert np.allclose(ns.lam, tr.barycentric(ns.xy, ns.outside_point))  # the last one printed
+    side = 2 * ns.limit * 2**8  # the guard band's square, in units (the loop's last case)
+    assert ns.worst == side**2 and ns.n_bits == side.bit_length() * 2 == 62 <= 64
+    text = "\n".join(_cells("02_half_planes", "markdown"))
+    assert "barycentric coordinates" in text and "Ek ends §1.2" in text
+    assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
+
+
+@pytest.mark.notebook
 def test_02_reordered_triangle_and_the_shared_row():
     ns = lesson("02_half_planes")
     # review r2 02-1: the reordered triangle's caption uses its own names, as the text says
