@@ -16,6 +16,7 @@ from .common import (
     Holdable,
     Shown,
     close_tree,
+    control_row,
     pattern_samples,
     style_context,
     title_html,
@@ -98,7 +99,7 @@ class PixelInspector(Holdable):
             "Pick a pixel: each of its samples is tested against the edges like a pixel "
             "centre (top-left rule included). Change the pattern to see what it catches.",
         )
-        controls = widgets.HBox([self.pattern, self.row, self.col])
+        controls = control_row([self.pattern, self.row, self.col])
         self.widget = widgets.VBox([title, controls, self.display.widget])
 
     def _compute(self) -> None:
