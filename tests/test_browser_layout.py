@@ -168,7 +168,9 @@ MEASURE = """([readable]) => {
         else bottom = Math.max(bottom, r.bottom);
       return n;
     });
-    return {width: Math.round(right - left), dpr: window.devicePixelRatio, pictures: pictures.map(p => p.w),
+    const toggles = [...out.querySelectorAll('.widget-toggle-buttons')].filter(visible)
+        .map(g => new Set([...g.querySelectorAll('button')].map(b => b.offsetTop)).size);
+    return {width: Math.round(right - left), toggles: Math.max(0, ...toggles), dpr: window.devicePixelRatio, pictures: pictures.map(p => p.w),
             small, outside, cut, wide, rows: Math.max(0, ...lines)};
   });
 }"""
@@ -246,4 +248,6 @@ def test_every_widget_is_usable_at_projector_sizes(lab, page, app):  # noqa: F81
         for name, m in widgets.items():
             print(f"{app:9} {size:9} {name:24} {m}")
     assert _problems(found) == []
+    for size in ("1400x900", "1024x768"):  # the format's toggles on one line (they took 2)
+        assert found[size]["DepthPrecisionExplorer"]["toggles"] == 1, size
     assert not page.errors, page.errors[:3]
