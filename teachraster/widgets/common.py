@@ -79,9 +79,13 @@ def labelled(text: str, control) -> widgets.HBox:
     # row too narrow for all, the buttons wrap instead (a row that wraps keeps them on one line)
     label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0",
                                                       flex="0 0 auto"))  # fmt: skip
-    return widgets.HBox(
-        [label, control], layout=widgets.Layout(align_items="center", margin="0 24px 0 0")
-    )
+    # in a column narrower than label and control together (a 315-px column at 150 % zoom on
+    # a 1024 x 768 screen), the control goes under its label and is never wider than the
+    # column, instead of running past its edge (the TileExplorer's traversal menu did)
+    if not control.layout.max_width:
+        control.layout.max_width = "100%"
+    return widgets.HBox([label, control], layout=widgets.Layout(
+        flex_flow="row wrap", align_items="center", margin="0 24px 0 0", max_width="100%"))  # fmt: skip
 
 
 #: Narrowest a picture of a row of pictures gets before it wraps under its neighbour (CSS px).

@@ -14,7 +14,14 @@ import ipywidgets as widgets
 
 from ..plotting.pareto import plot_pareto, update_pareto
 from ..study.operation_counts import CYCLES_1990S
-from .common import Shown, labelled, style_context, title_html
+from .common import (
+    Shown,
+    control_row,
+    fit_width,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: The two error measures offered: the study's largest error and its mean.
@@ -71,7 +78,7 @@ class DivideCostExplorer(Shown):
         self.backend = resolve_backend(backend)
         self.divide = widgets.FloatLogSlider(value=divide, base=2, min=0, max=7, step=0.25,
                                              description="divide =", readout_format=".3g",
-                                             layout=widgets.Layout(width="420px"))  # fmt: skip
+                                             layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         with style_context(style):
             self.fig = new_figure((9.0, 5.5), self.backend)
@@ -87,7 +94,7 @@ class DivideCostExplorer(Shown):
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
             "Vermillion: the Pareto front, the variants no other beats on both cost and error.",
         )
-        controls = widgets.HBox([self.divide, labelled("error", self.error)])
+        controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     @property

@@ -237,8 +237,9 @@ class FrameInspector(Holdable):
             "Choose a view; click a pixel (or move row and col) to see every triangle on the "
             "way to it, in submission order, and the test that stopped each.",
         )
-        controls = control_row([self.scene, self.view, self.samples, self.depth_test,
-                                self.glass])  # fmt: skip
+        # what is shown (scene, view) and how it is rendered: two rows, each wrapping
+        controls = widgets.VBox([control_row([self.scene, self.view]),
+                                 control_row([self.samples, self.depth_test, self.glass])])  # fmt: skip
         figures = picture_row([self.frame_widget, self.hist_display.widget])
         self.widget = widgets.VBox(
             [title, controls, control_row([self.row, self.col]), figures, self.table]
