@@ -346,10 +346,28 @@ def _matplotlib_backend_left_alone():
         dict.__setitem__(mpl.rcParams, "backend", raw)
 
 
+def _tree_cpu() -> float:
+    """CPU seconds of this process and everything it started (kernels, JupyterLab, Chromium,
+    nbgrader), the ones still running and the ones already reaped; 0 without psutil."""
+    try:
+        import psutil
+    except ImportError:
+        return 0.0
+    me, total = psutil.Process(), 0.0
+    for proc in [me, *me.children(recursive=True)]:
+        try:
+            t = proc.cpu_times()
+        except psutil.Error:  # ended while we looked
+            continue
+        total += t.user + t.system + t.children_user + t.children_system
+    return total
+
+
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_protocol(item, nextitem):
     """With TEACHRASTER_CPU_LOG set, append each test's CPU seconds (this process, set-up and
-    tear-down included) and wall seconds to that file: what a test costs on a quiet machine,
+    tear-down included; ``tree``: with the processes it started), wall seconds, start time and
+    worker to that file: what a test costs on a quiet machine,
     read on a busy one (``python3 dev.py test --quick`` with it set, then sum per file)."""
     log = os.environ.get("TEACHRASTER_CPU_LOG")
     if not log:
@@ -358,12 +376,15 @@ def pytest_runtest_protocol(item, nextitem):
     import json
     import time
 
-    cpu, wall = time.process_time(), time.perf_counter()
+    cpu, wall, tree, start = time.process_time(), time.perf_counter(), _tree_cpu(), time.time()
     yield
     row = {
         "test": item.nodeid,
         "cpu": time.process_time() - cpu,
         "wall": time.perf_counter() - wall,
+        "tree": _tree_cpu() - tree,
+        "start": start,
+        "worker": os.environ.get("PYTEST_XDIST_WORKER", "main"),
     }
     with open(log, "a") as fh:
         fh.write(json.dumps(row) + "\n")

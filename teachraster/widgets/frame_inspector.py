@@ -17,6 +17,7 @@ import html
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.patheffects import withStroke
 
 from ..pipeline.debugging.overlays import KINDS
 from ..pipeline.rendering.render_scenes import render
@@ -106,6 +107,17 @@ def click_image(alt: str = ""):
         alt = traitlets.Unicode("").tag(sync=True)
 
     return ClickImage(alt=alt)
+
+
+def marker_xy(row: int, col: int, reach: float = 3.0):
+    """(x, y) of the chosen pixel's marker: its outline, then four ticks ``reach`` pixels
+    long pointing at it from outside (NaN separates the pieces, one line to update)."""
+    r, c, gap = row, col, np.nan
+    x = [c, c + 1, c + 1, c, c, gap, c - reach, c - 0.5, gap, c + 1.5, c + 1 + reach, gap,
+         c + 0.5, c + 0.5, gap, c + 0.5, c + 0.5]  # fmt: skip
+    y = [r, r, r + 1, r + 1, r, gap, r + 0.5, r + 0.5, gap, r + 0.5, r + 0.5, gap,
+         r - reach, r - 0.5, gap, r + 1.5, r + 1 + reach]  # fmt: skip
+    return x, y
 
 
 def _checked_frames(frames) -> dict | None:
@@ -276,9 +288,11 @@ class FrameInspector(Holdable):
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
         fit_title(ax)
-        r, c = self.row.value, self.col.value
-        self.marker = ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
-                              color="#D55E00", lw=2, zorder=6)[0]  # fmt: skip
+        # the pixel's outline and four ticks pointing at it, with a white halo: one pixel of
+        # a 64-pixel frame must be found on a projector, on any colour
+        self.marker = ax.plot(*marker_xy(self.row.value, self.col.value), color="#D55E00",
+                              lw=2, zorder=6, solid_capstyle="butt",
+                              path_effects=[withStroke(linewidth=4.5, foreground="white")])[0]  # fmt: skip
 
     def _draw_history(self) -> None:
         self.hist_ax.clear()
@@ -342,8 +356,7 @@ class FrameInspector(Holdable):
         if self._quiet:
             return
         self._show_history()
-        r, c = self.row.value, self.col.value
-        self.marker.set_data([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r])
+        self.marker.set_data(*marker_xy(self.row.value, self.col.value))
         self._draw_history()
         self._refresh()
 
