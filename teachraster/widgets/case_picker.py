@@ -22,7 +22,15 @@ from matplotlib.patches import Rectangle
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
-from .common import Shown, close_tree, labelled, style_context, title_html
+from .common import (
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
@@ -305,7 +313,7 @@ class CasePicker:
             raise ValueError(f"case must be one of the screen-space cases {names}, got {case!r}")
         self.backend = resolve_backend(backend)
         self.case = widgets.Dropdown(options=names, value=case, description="case",
-                                     layout=widgets.Layout(width="420px"))  # fmt: skip
+                                     layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.method = widgets.ToggleButtons(options=hardcases.FILL_METHODS, value=method)
         self._style = style
         with style_context(style):
@@ -323,7 +331,7 @@ class CasePicker:
             "Left: our fill, each pixel in the colour of the triangle that covers it. Right: "
             "what a naive rasteriser covers. The key is under the case's text.",
         )
-        controls = widgets.HBox([self.case, labelled("method", self.method)])
+        controls = control_row([self.case, labelled("method", self.method)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     def _run(self) -> None:

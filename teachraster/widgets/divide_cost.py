@@ -16,7 +16,14 @@ import ipywidgets as widgets
 
 from ..plotting.pareto import plot_pareto, update_pareto
 from ..study.operation_counts import CYCLES_1990S
-from .common import Shown, labelled, style_context, title_html
+from .common import (
+    Shown,
+    control_row,
+    fit_width,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: The two error measures offered: the study's largest error and its mean.
@@ -95,7 +102,7 @@ class DivideCostExplorer(Shown):
         # model's 30 to 32 while the lesson printed 30 (review r5, 06-2)
         self.divide = widgets.SelectionSlider(
             options=[(f"{v:g}", v) for v in divide_positions(divide)], value=float(divide),
-            description="divide =", layout=widgets.Layout(width="420px"))  # fmt: skip
+            description="divide =", layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         with style_context(style):
             self.fig = new_figure((9.0, 5.5), self.backend)
@@ -111,7 +118,7 @@ class DivideCostExplorer(Shown):
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
             "Vermillion: the Pareto front, the variants no other beats on both cost and error.",
         )
-        controls = widgets.HBox([self.divide, labelled("error", self.error)])
+        controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     @property

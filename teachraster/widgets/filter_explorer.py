@@ -15,7 +15,16 @@ from ..plotting import plot_error_heatmap, plot_image, plot_levels_read
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .ahead import TogglesAhead
-from .common import Shown, close_tree, font_scale, later, style_context, title_html
+from .common import (
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    font_scale,
+    later,
+    style_context,
+    title_html,
+)
 from .display import COMPARISON_DPI, column_inches, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -138,7 +147,7 @@ class FilterExplorer:
         # in the page, coalesced: the kernel renders the latest angle, never a queue
         self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
                                description="tilt (°)", readout_format=".0f",
-                               layout=widgets.Layout(width="420px"))  # fmt: skip
+                               layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self._truths: dict = {}
         self._read_counts: dict = {}
         self._render()
@@ -176,7 +185,7 @@ class FilterExplorer:
             "Tilt the square until its checks are smaller than a pixel, then compare filters: "
             "moiré without mipmaps, blur with trilinear, detail kept by anisotropic filtering.",
         )
-        self.widget = widgets.VBox([title, widgets.HBox([self.tilt, self.filter]),
+        self.widget = widgets.VBox([title, control_row([self.tilt, self.filter]),
                                     *info_widgets, self.display.widget])  # fmt: skip
         self._ahead = None
         #: the other filters' pictures at the tilt on show, drawn while the kernel idles

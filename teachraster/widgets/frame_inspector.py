@@ -25,7 +25,16 @@ from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
 from ..plotting.frame_debug import fit_title
-from .common import Holdable, Shown, close_tree, style_context, title_html
+from .common import (
+    Holdable,
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    picture_row,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
 #: The views the chooser offers: the shaded image, then every overlay.
@@ -188,11 +197,27 @@ class FrameInspector(Holdable):
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
         choices = list(self.frames) if self.frames else list(SCENES)
-        self.scene = widgets.Dropdown(options=choices, value=scene, description="scene")
-        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
-        self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
-        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test", indent=False)
-        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)", indent=False)
+        # narrower than ipywidgets' 300 px (the check boxes as wide as their text): at
+        # 1024 x 768 with the file browser open (a 592-px column) the controls took 5 lines
+        menu, short = widgets.Layout(width="260px"), widgets.Layout(width="150px")
+        self.scene = widgets.Dropdown(options=choices, value=scene, description="scene",
+                                      layout=fit_width(menu))  # fmt: skip
+        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view",
+                                     layout=menu)  # fmt: skip
+        self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples",
+                                        layout=short)  # fmt: skip
+        self.depth_test = widgets.Checkbox(
+            value=depth_test,
+            description="depth test",
+            indent=False,
+            layout=widgets.Layout(width="auto"),
+        )
+        self.glass = widgets.Checkbox(
+            value=glass,
+            description="glass (blend over)",
+            indent=False,
+            layout=widgets.Layout(width="auto"),
+        )
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
@@ -224,11 +249,12 @@ class FrameInspector(Holdable):
             "Choose a view; click a pixel (or move row and col) to see every triangle on the "
             "way to it, in submission order, and the test that stopped each.",
         )
-        controls = widgets.HBox([self.scene, self.view, self.samples, self.depth_test,
-                                 self.glass])  # fmt: skip
-        figures = widgets.HBox([self.frame_widget, self.hist_display.widget])
+        # what is shown (scene, view) and how it is rendered: two rows, each wrapping
+        controls = widgets.VBox([control_row([self.scene, self.view]),
+                                 control_row([self.samples, self.depth_test, self.glass])])  # fmt: skip
+        figures = picture_row([self.frame_widget, self.hist_display.widget])
         self.widget = widgets.VBox(
-            [title, controls, widgets.HBox([self.row, self.col]), figures, self.table]
+            [title, controls, control_row([self.row, self.col]), figures, self.table]
         )
 
     # -- state ---------------------------------------------------------------------------

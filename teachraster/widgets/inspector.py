@@ -17,6 +17,7 @@ from .common import (
     Holdable,
     Shown,
     close_tree,
+    control_row,
     pattern_samples,
     style_context,
     title_html,
@@ -99,7 +100,7 @@ class PixelInspector(Holdable):
             "Pick a pixel: each of its samples is tested against the edges like a pixel "
             "centre (top-left rule included). Change the pattern to see what it catches.",
         )
-        controls = widgets.HBox([self.pattern, self.row, self.col])
+        controls = control_row([self.pattern, self.row, self.col])
         #: every sample's edge values in a table (a label per sample fits up to 4 only)
         self.table = widgets.HTML(self._table_html())
         self.widget = widgets.VBox([title, controls, self.display.widget, self.table])
