@@ -208,14 +208,16 @@ def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake
     ('doubled', 6)
     """
 
-    memo: dict = {}  # the last cases' variants: every mistake of the table asks for the same
+    # Each case's variants, computed once: every mistake of the table asks for the same case's,
+    # and every check of the exercise runs the same cases (bounded: a few cases' arrays each).
+    memo: dict = {}
 
     def of_case(args) -> dict:
         key = content_key(args)
         if key is None:
             return variants(*args)
         if key not in memo:
-            if len(memo) >= 64:
+            if len(memo) >= 256:
                 memo.clear()
             memo[key] = variants(*args)
         return memo[key]
