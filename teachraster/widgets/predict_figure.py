@@ -313,6 +313,9 @@ class PredictPoint(FigurePrediction):
     step : float, optional
         How far one arrow key moves the marker (Shift + arrow: ten steps), in data units:
         1 on an axis of integer codes. Default: a hundredth of the smaller Axes span.
+    ray_from : (2,) array-like, optional
+        The reveal also draws the ray from this point through the answer (the eye ray that
+        finds the point), so the answer shows where it comes from.
     explain, figsize, style : as above.
 
     Examples
@@ -326,7 +329,8 @@ class PredictPoint(FigurePrediction):
 
     def __init__(self, question: str, answer, *, draw, xlim, ylim, start=None, along=None,
                  tolerance: float = 0.0, units: str = "units", explain: str = "",
-                 figsize=(7.0, 5.0), style: str | None = "classroom", step=None) -> None:  # fmt: skip
+                 figsize=(7.0, 5.0), style: str | None = "classroom", step=None,
+                 ray_from=None) -> None:  # fmt: skip
         answer = as_finite("answer", answer, (2,))
         xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
         if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
@@ -340,6 +344,8 @@ class PredictPoint(FigurePrediction):
             start = along.mean(axis=0) if along is not None else [xlim.mean(), ylim.mean()]
         start = as_finite("start", start, (2,))
         draw = _check_draw(draw)
+        if ray_from is not None:
+            ray_from = as_finite("ray_from", ray_from, (2,)).tolist()
 
         def axes_for(fig):
             ax = fig.add_subplot()
@@ -360,7 +366,8 @@ class PredictPoint(FigurePrediction):
         super().__init__(question, explain, {
             "kind": "point", "answer": answer.tolist(), "start": start.tolist(),
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
-            "units": html.escape(units), "keyStep": step, **picture})  # fmt: skip
+            "units": html.escape(units), "keyStep": step, "rayFrom": ray_from,
+            **picture})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:
