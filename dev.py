@@ -85,9 +85,12 @@ def pytest_args(args):
         os.environ["TEACHRASTER_QUICK"] = "1"
         args = ["-m", " and ".join(f"not {t}" for t in HEAVY_TIERS), *args]
     if not any(a == "-n" or a.startswith(("-n=", "--numprocesses", "-p no:xdist")) for a in args):
-        # Tests go out one by one in collection order (heavy tiers first, conftest); what
-        # several workers need is built once per run (tests/run_once.py, notebook_runs.py).
-        args = ["-n", str(workers), "--dist", "load", *args]
+        # Tests go out two at a time in collection order (heavy tiers first, conftest), so
+        # the heavy tiers are shared by every worker: by default xdist hands each worker a
+        # quarter of its share at once (551 consecutive tests here), which gave one worker
+        # every browser, nbgrader and notebook test (740 s of them on one worker, measured).
+        # What several workers need is built once per run (run_once.py, notebook_runs.py).
+        args = ["-n", str(workers), "--dist", "load", "--maxschedchunk", "2", *args]
     return args
 
 

@@ -1,11 +1,11 @@
 """Build something once per test run and share it with every pytest-xdist worker.
 
 A module fixture is set up once per worker that runs one of the module's tests; with tests
-spread over the workers one by one (``--dist load``), an expensive fixture (the nbgrader round
-trip, a built wheel) would be built on each. :func:`shared_folder` builds it once, in the run's
-shared folder (``TEACHRASTER_RUN_CACHE``, see ``conftest.py``), under a file lock: the second
-worker to ask waits for the first and reads the same folder. Outside a run (no shared folder)
-it builds into a fresh temporary folder.
+spread over the workers two at a time (``--dist load --maxschedchunk 2``, ``dev.py``), an
+expensive fixture (the nbgrader round trip, a built wheel) would be built on each.
+:func:`shared_folder` builds it once, in the run's shared folder (``TEACHRASTER_RUN_CACHE``,
+see ``conftest.py``), under a file lock: the second worker to ask waits for the first and reads
+the same folder. Outside a run (no shared folder) it builds into a fresh temporary folder.
 """
 
 from __future__ import annotations

@@ -140,7 +140,11 @@ def test_plan_counts_blending_only_where_it_runs():
     stacked = np.concatenate([quad(-1, -1, 1, 1), quad(-1, -1, 0, 1)])
     frame = tr.render(stacked, 4, 4, attrs=glass, blend="over", depth_write=False)
     effect = frame.plan["blending"]
-    assert effect.ran and effect.count == 8 and effect.total == 24
+    # all 24 are blended (16 onto the clear colour, 8 onto the red quad): the line's
+    # "applied to" and its "blended" are the same number, the 8 said apart
+    assert effect.ran and effect.count == 24 and effect.total == 24
+    assert "applied to       24 of        24 fragments" in str(effect)
+    assert "24 transparent fragments blended, 8 of them onto an earlier fragment" in effect.why
 
 
 def test_msaa_blending_per_sample_then_resolve():

@@ -150,7 +150,8 @@ def test_the_player_with_its_comparison_open_fits_the_screen(lab, page):  # noqa
     page.wait_for_function("i => i.complete && i.naturalWidth > 100",
                            arg=figure.element_handle(), timeout=60_000)  # fmt: skip
     assert figure.bounding_box()["height"] > 300  # scaled to fit, not to a thumbnail
-    assert not player.is_visible()  # the steps fold meanwhile
+    # the steps fold meanwhile (a round trip to the kernel: the figure may be there first)
+    player.wait_for(state="hidden", timeout=10_000)
     heights = page.evaluate(PLAYER_HEIGHT)
     assert len(heights) == 1 and heights[0] <= 900 - 40, heights  # 40: the notebook's toolbar
     header.click()  # closed: the steps are back, the player as tall as before

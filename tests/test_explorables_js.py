@@ -137,6 +137,43 @@ def test_tint_buttons_name_the_chosen_triangles_edges():
         assert f"<b>{name}</b>" in table
 
 
+def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
+    from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
+
+    tri = np.array(DEFAULT_VERTICES)[:3]
+    setup = call_js(EDGES, [("setupTriangle", [tri.tolist()])])[0]
+    inside_pt, corner_pt = call_js(
+        EDGES,
+        [("planePoint", [setup, None, 16, 14]), ("planePoint", [setup, [15.9, 13.2], 16, 14])],
+    )
+    assert corner_pt == [15.5, 13.5]  # the centre of the pixel under the pointer
+    vals = call_js(EDGES, [("planeValues", [setup, p]) for p in (inside_pt, corner_pt)])
+    snapped = np.round(tri * 256) / 256
+    for p, got in zip((inside_pt, corner_pt), vals, strict=True):
+        want = [tr.edge_function(snapped[k], snapped[(k + 1) % 3], p) for k in range(3)]
+        assert np.allclose(got, want)
+    assert min(vals[0]) > 0  # without a pointer, a centre inside the triangle
+    # clipped to the slab |z| <= h; a quad wholly outside vanishes
+    quad = [[0, 0, -9.0], [4, 0, 3.0], [4, 4, 11.0], [0, 4, -1.0]]
+    cut, gone = call_js(
+        EDGES,
+        [("clipToSlab", [quad, 2.0]), ("clipToSlab", [[[0, 0, 5], [1, 0, 6], [0, 1, 7]], 2.0])],
+    )
+    assert gone == [] and len(cut) >= 3
+    assert all(abs(z) <= 2.0 + 1e-12 for _, _, z in cut)
+    # the fitted box stays inside the canvas at every turn
+    W, H, h, cw, ch = 16, 14, 4.8, 560, 320
+    scale = call_js(EDGES, [("fitBox", [W, H, h, cw, ch])])[0]
+    box = np.array([[x, y, z] for x in (0, W) for y in (0, H) for z in (-h, h)], float)
+    for yaw in np.linspace(0, 2 * np.pi, 13):
+        for elev in np.linspace(0.05, np.pi / 2, 7):
+            x, y, z = (box - [W / 2, H / 2, 0]).T
+            x1 = x * np.cos(yaw) - y * np.sin(yaw)
+            y1 = x * np.sin(yaw) + y * np.cos(yaw)
+            sx, sy = scale * x1, scale * (y1 * np.sin(elev) - z * np.cos(elev))
+            assert (np.abs(sx) <= cw / 2).all() and (np.abs(sy) <= ch / 2).all()
+
+
 CRACKS = ("raster_rules", "explore_cracks")
 
 
@@ -195,6 +232,37 @@ def test_stored_pair_cracks_as_the_reference_says():
     assert len(listed["cracks"]) > 0  # it does crack, evaluated as listed
     alike = shared_edge_faults(a, b, size, size, "dda")
     assert not len(alike["cracks"]) and not len(alike["doubles"])
+
+
+def test_default_pair_shows_the_dda_giving_ties_to_the_wrong_triangle():
+    from teachraster.study.naive_spans import shared_edge_faults
+    from teachraster.widgets import CrackExplorer
+
+    ex = CrackExplorer()
+    size, seed = ex.data["width"], ex.data["seed"]
+    (pair,) = call_js(CRACKS, [("rolls", [seed, 1, size, size])])[0]  # the pair on show first
+    a, b = np.array(pair[0]), np.array(pair[1])
+    dda = shared_edge_faults(a, b, size, size, "dda")
+    assert len(dda["swapped"]) > 0 and min(dda["wrong"]) > 0  # the DDA panel shows something
+    assert not len(shared_edge_faults(a, b, size, size, "integer")["swapped"])
+    # both triangles of fair size, not slivers (the ties should be visible)
+    areas = [abs(tr.edge_function(t[0], t[1], t[2])) / 2 for t in (a, b)]
+    assert min(areas) >= 10
+
+
+def test_tie_marks_only_on_the_shared_segment():
+    pairs = call_js(CRACKS, [("rolls", [3, 60, 16, 16])])[0]
+    got = call_js(CRACKS, [("tieCentres", [pair, 16, 16]) for pair in pairs])
+    beyond = 0
+    for (a, _), ties in zip(pairs, got, strict=True):
+        p, q = np.array(a[0]), np.array(a[1])
+        rows, cols = np.mgrid[0:16, 0:16] + 0.5
+        centres = np.stack([cols.ravel(), rows.ravel()], axis=1)
+        line = [c for c in centres if tr.edge_function(p, q, c) == 0]
+        within = [c for c in line if ((np.minimum(p, q) <= c) & (c <= np.maximum(p, q))).all()]
+        assert sorted(ties) == sorted([int(c[1]), int(c[0])] for c in within)
+        beyond += len(line) - len(within)
+    assert beyond > 0  # the line does run on past the ends in these pairs: the test can fail
 
 
 def test_random_shared_pairs_as_the_pages():

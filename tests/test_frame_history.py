@@ -277,6 +277,31 @@ def test_frame_inspector_views_clicks_and_scenes():
     w.close()
 
 
+def test_frame_inspector_marks_its_pixel_and_says_when_nothing_reaches_it():
+    """Review 11-12 r5: a one-pixel outline was lost on a projector, and a pixel no triangle
+    reaches drew an empty strip with no word."""
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("fan", 32, 24, backend="image")
+    try:
+        w.row.value, w.col.value = 0, 0  # a corner: the fan does not reach it
+        assert not w.history.records
+        texts = [t.get_text() for t in w.hist_ax.texts]
+        assert "no triangle reaches this pixel" in texts
+        w.row.value, w.col.value = 12, 16
+        x, y = (np.asarray(v, float) for v in w.marker.get_data())
+        outline = np.isfinite(x) & (x >= 16) & (x <= 17) & (y >= 12) & (y <= 13)
+        assert outline.sum() >= 5  # the pixel's square ...
+        assert np.nanmin(x) <= 14 and np.nanmax(x) >= 19  # ... and ticks pointing at it
+        assert np.nanmin(y) <= 10 and np.nanmax(y) >= 15
+        assert w.marker.get_path_effects()  # a halo: visible on any colour
+        assert w.history.records  # the note goes when records come
+        assert "no triangle reaches this pixel" not in [t.get_text() for t in w.hist_ax.texts]
+    finally:
+        w.close()
+
+
 def test_frame_inspector_under_ipympl_takes_mouse_clicks():
     pytest.importorskip("ipympl")
     from matplotlib.backend_bases import MouseEvent
@@ -403,3 +428,24 @@ def test_history_plot_marks_depths_on_a_written_out_axis():
         lo, hi = min(depths), max(depths)
         assert ticks.max() <= hi + 1.2 * max(hi - lo, 2e-4)  # none beside the swatches
         plt.close(fig)
+
+
+def test_history_legend_keys_the_buffer_before_and_after_apart():
+    """Lesson 11 says "the buffer before (○) and after (●)": two legend entries, not one."""
+    import matplotlib.pyplot as plt
+
+    frame = tr.render(tr.get_scene("intersecting_triangles"), None, 64, 48, trace=True)
+    row, col = np.argwhere(frame.overlay("overdraw") == 2)[0]
+    fig, ax = plt.subplots()
+    try:
+        from teachraster.plotting import plot_history
+
+        plot_history(ax, frame, int(row), int(col))
+        legend = ax.get_legend()
+        labels = [t.get_text() for t in legend.texts]
+        handles = dict(zip(labels, legend.legend_handles))
+    finally:
+        plt.close(fig)
+    assert "buffer before" in labels and "buffer after" in labels, labels
+    assert handles["buffer before"].get_marker() == "o"
+    assert handles["buffer after"].get_marker() == "."

@@ -1,6 +1,7 @@
 """Lesson 08 (antialiasing): what it shows, read from the one execution every notebook test
 shares (``tests/notebook_runs.py``; it used to execute the lesson a second time here)."""
 
+import numpy as np
 import pytest
 from notebook_runs import lesson
 
@@ -28,6 +29,17 @@ def test_lesson_08_shows_what_it_says(ns):
     assert ns.gif.stat().st_size > 1000
     plan = ns.frames[4].plan["multisampling"]
     assert 0 < plan.count < plan.total
+    # cell 23: MSAA shades once per pixel and triangle; the plan printed under it agrees
+    assert "shaded once per triangle and pixel" in plan.why and "shading per" not in plan.why
+    # §2: only partly covered pixels differ, by at most the samples' mean off the centre
+    # times u's gradient; MSAA stores S colours and S depths per pixel
+    assert ns.gap_full < 1e-12 and 0 < ns.gap_u
+    u = tr.attribute_plane(tr.snap(ns.xy), [0.0, 1.0, 0.0])
+    grad = float(np.hypot(u(1.0, 0.0) - u(0.0, 0.0), u(0.0, 1.0) - u(0.0, 0.0)))
+    assert ns.gap_u <= ns.off_centre * grad + 1e-12
+    assert ns.off_centre == pytest.approx(np.hypot(0.125, 0.375))  # one sample alone
+    # cell 18: the covered samples outside the octagon's open inside lie on its own edges
+    assert ns.extra.sum() >= 1 and ns.on_outer[ns.extra].all()
     err = {f"{r['kind']}{r['samples']}": r["mean_error"] for r in ns.rows}
     assert err["standard16"] < err["standard4"] < err["standard1"]
 
@@ -40,3 +52,4 @@ def test_lesson_08_inspector_reads_sixteen_samples(ns):
     inspector.pattern.value = "16 standard"
     inspector.row.value, inspector.col.value = 3, 16
     assert "of 16 covered" in inspector.pixel.square.axes.get_title()
+    assert inspector.table.value.count("<tr>") == 17  # every sample's edge values

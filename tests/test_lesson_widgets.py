@@ -200,6 +200,69 @@ def test_case_picker_titles_fit_and_a_long_sliver_stays_visible():
         picker.close()
 
 
+def test_case_picker_zooms_to_each_case_and_shows_the_hub():
+    """Review r5, 07-2: the fan sat in the middle third of its 20 x 20 image with the hub pixel
+    under sixteen vertex dots, and sliver_pair (64 x 4) was a strip a few screen pixels high.
+    Each case is now shown in its own box, no wider than MAX_ASPECT times its height, and a
+    centre at a vertex of many triangles is drawn on top of their outlines."""
+    from matplotlib.patches import Rectangle
+
+    from teachraster.widgets.case_picker import MAX_ASPECT, MIN_VIEW, VERTEX_DOT, CasePicker
+
+    picker = CasePicker("fan_spokes_through_centres", backend="image")
+    try:
+        r0, r1, c0, c1 = picker.view
+        assert (r1 - r0, c1 - c0) == (15, 15) and picker.axes[0].get_xlim() == (c0, c1)
+        assert picker.hubs == [(9, 9)] and picker.naive_counts[9, 9] == 16
+        hub = [
+            p for p in picker.axes[0].patches if isinstance(p, Rectangle) and p.get_xy() == (9, 9)
+        ]
+        assert hub and hub[0].get_zorder() > max(line.get_zorder() for line in picker.axes[0].lines)
+        assert (
+            "pixel (9, 9)" in picker.info.value
+            and f"triangle {picker.owner[9, 9]}" in picker.info.value
+        )
+        dots = [line.get_markersize() for line in picker.axes[0].lines if line.get_marker() == "o"]
+        assert dots and max(dots) == VERTEX_DOT
+        picker.case.value = "sliver_pair"
+        r0, r1, c0, c1 = picker.view
+        assert picker.owner.shape == (4, 64) and (c1 - c0) <= MAX_ASPECT * (r1 - r0)
+        assert (c0, c1) == (0, 12) and "columns 0–11 of 64" in picker.fig.get_suptitle()
+        assert picker.hubs == [] and "outlined in black" not in picker.info.value
+        picker.case.value = "snap_flips_winding"  # a tiny triangle keeps a grid around it
+        r0, r1, c0, c1 = picker.view
+        assert min(r1 - r0, c1 - c0) >= MIN_VIEW
+    finally:
+        picker.close()
+
+
+def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
+    """Review r5, 06-2: a log slider of step 1/4 octave has no 30, and the browser showed the
+    model's 30 cycles as 32 ("37x") while lesson 06 printed 30 ("35x")."""
+    from widget_examples import _rows
+
+    from teachraster.study.operation_counts import CYCLES_1990S
+    from teachraster.widgets.divide_cost import DivideCostExplorer, divide_positions
+
+    ex = DivideCostExplorer(_rows(), backend="image")
+    try:
+        assert ex.divide.value == CYCLES_1990S["divides"] == 30
+        assert ex.divide.label == "30" and "divide = 30 cycles" in ex.info.value
+        values = [v for _, v in ex.divide.options]
+        assert values == sorted(values) and values[0] == 1 and values[-1] == 128
+        assert {1, 2, 9, 30, 128} <= set(values)  # the prices lesson 06 prints
+    finally:
+        ex.close()
+    odd = DivideCostExplorer(_rows(), divide=7, backend="image")
+    try:
+        assert odd.divide.value == 7 and 7 in divide_positions(7)
+    finally:
+        odd.close()
+    for bad, error in [(0, ValueError), (float("inf"), ValueError), ("30", TypeError)]:
+        with pytest.raises(error, match="divide"):
+            DivideCostExplorer(_rows(), divide=bad, backend="image")
+
+
 def test_owner_colours_hold_no_red_or_orange():
     # vermillion means "covered twice" everywhere in the course: no owner may look like it
     import colorsys

@@ -177,7 +177,14 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.ends5 == [5.5, 11.5]  # the ticks of the row-5 question: the package's ends
     # the clicked answers: row 5's columns 5-10, row 2's columns 2-11, nothing else
     assert np.flatnonzero(ns.row5[5]).tolist() == list(range(5, 11)) and ns.row5.sum() == 6
-    assert np.flatnonzero(ns.row2[2]).tolist() == list(range(2, 12)) and ns.row2.sum() == 10
+    # the flat-topped question: rows 2, 6, 10 (top edge and right vertex, two ties, the apex)
+    assert ns.asked_rows == [2, 6, 10] and ns.ends6 == [4.5, 9.5]
+    assert [np.flatnonzero(ns.asked[i]).tolist() for i in ns.asked_rows] == [
+        list(range(2, 12)),
+        list(range(4, 9)),
+        [],
+    ]
+    assert ns.asked.sum() == 15 and ns.asked_counts == [10, 5, 0]
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
@@ -273,6 +280,20 @@ def test_02_bailout_prediction_is_the_printed_share():
     saved = 100 * (1 - ns.with_bailout / ns.without)
     assert abs(saved - round(100 * (1 - ns.runs.sum() / (3 * ns.box.size)))) < 1
     assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
+
+
+@pytest.mark.notebook
+def test_02_barycentrics_and_the_edge_function_bits():
+    """Review r5 02-4/5: E / E12(v3) is lambda (Ek's section 1.2 ends there), and the integer
+    edge function's width is derived, not typed."""
+    ns = lesson("02_half_planes")
+    assert ns.area2 == pytest.approx(2 * abs(ns.tri.signed_area))
+    assert np.allclose(ns.lam, tr.barycentric(ns.xy, ns.outside_point))  # the last one printed
+    side = 2 * ns.limit * 2**8  # the guard band's square, in units (the loop's last case)
+    assert ns.worst == side**2 and ns.n_bits == side.bit_length() * 2 == 62 <= 64
+    text = "\n".join(_cells("02_half_planes", "markdown"))
+    assert "barycentric coordinates" in text and "Ek ends §1.2" in text
+    assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
 
 
 @pytest.mark.notebook

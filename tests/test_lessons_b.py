@@ -120,11 +120,21 @@ def test_06_edge_bits_and_depth_claims():
 
 
 def test_06_divide_cost_slider_reprices_the_front():
+    import json
+
+    from teachraster.study.bench import SUBDIVISIONS
+    from teachraster.study.operation_counts import CYCLES_1990S
     from teachraster.widgets.divide_cost import DivideCostExplorer, priced
 
     ns = lesson("06_what_accuracy_costs")
-    ex = DivideCostExplorer(ns.interp_rows, backend="image")
+    ex = DivideCostExplorer(ns.interp_rows, backend="image")  # as the lesson makes it
     try:
+        # review r5 06-2: the slider starts at the model the lesson prints (30, not 32 = 2^5),
+        # and its line says what the cell after it prints at 30 cycles
+        assert ex.divide.value == CYCLES_1990S["divides"] == 30 in ns.front_at
+        at30 = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 30.0)}
+        assert f"<b>{at30['perspective'] / at30['affine']:.3g}×</b>" in ex.info.value
+        assert f"<b>{ns.quake_share[30]:.0%}</b>" in ex.info.value
         assert ex.front[0] == "affine" and ex.front[-1] == "perspective"
         cheap = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 1.0)}
         ex.divide.value = 1.0
@@ -142,6 +152,17 @@ def test_06_divide_cost_slider_reprices_the_front():
         assert ex.ax.get_xlabel() == "cycles per pixel (op-count model)"
     finally:
         ex.close()
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    made = [line for c in nb["cells"] for line in c["source"] if "DivideCostExplorer(" in line]
+    assert made == ["divide_cost = DivideCostExplorer(interp_rows)\n"]  # the model's price
+    # review r5 06-1: at every price a larger N is cheaper, and as the price grows the subdivided
+    # variants cost more but a smaller share of the exact divide
+    shares = [ns.quake_share[d] for d in sorted(ns.quake_share)]
+    assert shares == sorted(shares, reverse=True) and shares[0] > 2 * shares[-1]
+    for d in (1, 30, 128):
+        c = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
+        n_cost = [c[f"subdivided N={n}"] for n in sorted(SUBDIVISIONS)]
+        assert n_cost == sorted(n_cost, reverse=True)
     # "the staircase keeps its order at every price; N = 2 leaves only when a divide costs no
     # more than an addition" (the closed forms d + 5 and 1 + (d + 9) / N)
     fronts = ns.front_at
@@ -152,6 +173,30 @@ def test_06_divide_cost_slider_reprices_the_front():
         assert priced_rows["perspective"] == pytest.approx(d + 5)
         for n in (2, 16):
             assert priced_rows[f"subdivided N={n}"] == pytest.approx(1 + (d + 9) / n)
+
+
+def test_every_predict_pixels_names_what_it_asks():
+    """Review r5, 06-3 and 07-6: PredictPixels' own lines say "Click the pixels you expect
+    {picked}" and "The answer: 12 pixels {picked}", "lit" by default; a question about gaps, or
+    about pixels drawn twice, got "lit" (the opposite of a gap). Every call in every lesson
+    keeps the default only for a question about the pixels drawn; any other passes ``picked``."""
+    import json
+    import re
+
+    calls = 0
+    for path in sorted((ROOT / "notebooks").glob("**/*.ipynb")):
+        for cell in json.loads(path.read_text())["cells"]:
+            source = "".join(cell["source"])
+            for call in re.finditer(r"PredictPixels\((.*?)\n\)", source, re.S):
+                calls += 1
+                args = call.group(1)
+                question = args.split("answer=")[0]
+                if re.search(r"\bpicked=", args):
+                    continue
+                drawn = re.search(r"\b(fill|fills|draw|draws|light|lights|lit|covers)\b", question)
+                other = re.search(r"gap|twice|differ|helper|farther|no triangle|reject", question)
+                assert drawn and not other, f"{path.name}: pass picked= for {question[:90]!r}"
+    assert calls >= 10
 
 
 def test_06_review_r2_prediction_error_split_and_shared_reciprocal():
@@ -169,6 +214,7 @@ def test_06_review_r2_prediction_error_split_and_shared_reciprocal():
     )
     # review r3 06-2: the gaps are clicked on the mesh, their number not given by the question
     assert "answer=small_gaps" in asked and "double_hits']}" not in asked.split("explain")[0]
+    assert 'picked="left as gaps"' in asked  # review r5 06-3: not "lit"
     small = ns.small  # the gaps asked for are the centres E >= 0 draws twice
     assert ns.small_gaps.sum() == small["E > 0"]["gaps"] == small["E >= 0"]["double_hits"] > 0
     counts = ns.cracks  # the larger mesh of the figure: the same equality
@@ -202,6 +248,11 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     from teachraster.study import hardcases
 
     assert "cancelling to ~1e7" in hardcases.get_case("far_from_origin").naive_does
+    # review r5 07-5: lesson 06's relative float32 form against the absolute one, on the same
+    # triangle (whose vertices float32 holds exactly at 1e6): relative nothing wrong, absolute all
+    n_tri = int(ns.far_coverage[0].sum())
+    assert ns.far_wrong == {100_000: (0, n_tri), 1_000_000: (0, n_tri)}
+    assert all(np.float32(v) == v for v in (ns.tri_local + 1e6).ravel())
     # the sliver below the shared edge owns the row, alone
     assert ns.owners == [ns.below]
     # float32 and unorm24 lose about the same pixels at the shallow slope (same step in [0.5, 1))
@@ -212,14 +263,27 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
 
 def test_07_t_junction_cracks_overlaps_and_the_split_seals_it():
     """Review r3 07-2: the T-junction, the crack no tie rule closes; splitting A-B seals it.
-    The split square is asked on the grid (click the centres drawn twice)."""
+    The split square is asked on the grid (click the centres drawn differently)."""
+    import json
+
     ns = lesson("07_hard_cases")
     names = list(ns.t_counts)
     outside, inside, split = (ns.t_counts[n] for n in names)
     assert ns.t_gaps[names[0]] > 0 and (outside >= 2).sum() == 0
     assert ns.t_gaps[names[1]] == 0 and (inside >= 2).sum() > 0
     assert ns.t_gaps[names[2]] == 0 and (split >= 2).sum() == 0
-    assert np.array_equal(ns.drawn_twice, ns.split_square[1] > 1)  # the clicked answer
+    assert np.array_equal(ns.drawn_twice, ns.split_square[1] > 1)
+    # review r5 07-4: the question asks where the naive picture differs from ours (the diagonal
+    # drawn twice, and the right and bottom sides, a neighbour's), not only the diagonal that
+    # the text before it names; its own lines say "drawn differently", not "lit"
+    ours, naive = ns.split_square
+    assert np.array_equal(ns.differs, ours != naive)
+    assert ns.n_differ == ns.twice + ns.n_side - 1 == ns.my_wrong["d3d_split_square"] == 16
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    asked = next("".join(c["source"]) for c in nb["cells"]
+                 if "q_diagonal = PredictPixels(" in "".join(c["source"]))  # fmt: skip
+    assert "answer=differs" in asked and 'picked="drawn differently"' in asked
+    assert "differs from ours" in asked.split("answer=")[0]
 
 
 def test_07_case_texts_match_what_the_lesson_prints():
@@ -480,6 +544,10 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     assert axes["near"][1] <= 1 and fps["near"].probes == 1
     for k in ("middle", "far"):
         assert fps[k].probes == int(np.ceil(axes[k][1] / axes[k][0])), k
+    # cell 27: min/mag is decided on λ, not λ': the middle pixel is minified, its probes are
+    # smaller than a texel (λ' < 0) and still taken, the near one is magnified with a ratio > 1
+    assert fps["middle"].lam > 0 and fps["middle"].probe_lam < 0 and fps["middle"].probes > 1
+    assert axes["near"][1] / axes["near"][0] > 1
     read = ns.level_read
     steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
     steps = steps[np.isfinite(steps)]
@@ -535,6 +603,12 @@ def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     ns = lesson("09_texture_filtering")
     b, nmn = ns.b, ns.nmn
     assert b["texel_reads"] > nmn["texel_reads"]
+    import teachraster as tr
+
+    # §7's table lists every filter the explorer offers, nearest_mipmap_linear too (1 or 2
+    # texels per pixel: one per level read)
+    assert set(ns.by_filter) == set(tr.TEXTURE_FILTERS)
+    assert 1 < ns.by_filter["nearest_mipmap_linear"]["texel_reads"] <= 2
     assert b["error_minified"] > nmn["error_minified"]
     assert ns.aniso_error < ns.trilinear_error
 
@@ -582,11 +656,12 @@ def test_09_filter_explorer_driven_by_the_test():
         for f in ["nearest", "trilinear", "anisotropic"]:
             explorer.filter.value = f
             errors[f] = explorer.rms
-            read = explorer.levels_read[np.isfinite(explorer.levels_read)]
+            first = explorer.levels_read.first
+            read = first[np.isfinite(first)]
             if f == "nearest":  # no mipmaps: the level panel shows level 0 everywhere
                 assert read.size and (read == 0).all()
             else:
-                assert read.max() > 2  # the tilted square's far end reads small levels
+                assert read.max() >= 2  # the tilted square's far end reads small levels
         assert errors["trilinear"] < errors["nearest"] and errors["anisotropic"] < errors["nearest"]
     finally:
         explorer.close()

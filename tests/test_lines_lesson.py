@@ -25,6 +25,9 @@ def test_diamond_rule_and_its_tie(ns):
 
 def test_bresenham_differs_and_dda_drifts(ns):
     assert len(ns.differ) > 0
+    # "this one, like the diamond rule, stops before p1's pixel": the textbook loop draws one more
+    assert not ns.bres.coverage[5, 12] and ns.bres_cols.max() == 11
+    assert ns.textbook_count == int(ns.bres.coverage.sum()) + 1
     assert len(ns.dda_wrong) > 0 and ns.first_column == int(ns.dda_wrong[0])
     assert abs(ns.steps.value[ns.step_k] - ns.true_y) > abs(ns.true_y - round(ns.true_y))
 
@@ -85,9 +88,11 @@ def test_predictions_and_standards_numbers(ns):
     assert [int(v[0]) for v in ns.count_ends] == [4, 8]
     # the 8-bit sRGB target stores the code the prediction computes from the curve
     assert ns.srgb_code == ns.stored_code == 188
-    # MSAA with blending: the predicted blue component is the resolved one
-    assert ns.k in (1, 2, 3) and abs(ns.resolved[2] - ns.resolved_blue) < 1e-12
-    assert ns.resolved[3] < 1  # alpha blended with one factor pair: not 1 (the text says so)
+    # MSAA with blending: the predicted alpha is the resolved one, not 1 (one factor pair)
+    assert ns.k in (1, 2, 3) and abs(ns.resolved[3] - ns.resolved_alpha) < 1e-12
+    assert ns.blended_alpha == 0.75 and ns.resolved_alpha < 1
+    alphas = np.sort(ns.msaa.sample_color[ns.i, ns.j, :, 3])
+    assert np.allclose(alphas, [0.75] * ns.k + [1] * (4 - ns.k))
     # sRGB: half of white's light encodes to 0.735
     assert abs(ns.mixed - 0.7353569830524495) < 1e-12
     # the two crossing triangles' centres differ in depth: the sort is not an arbitrary tie

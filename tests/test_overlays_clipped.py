@@ -169,7 +169,10 @@ def test_frame_inspector_overlay_titles_and_colour_bars_fit_in_the_classroom_sty
         try:
             renderer = w.fig.canvas.get_renderer()
             width = w.fig.bbox.width
-            for view in KINDS:
+            # under 4x MSAA the overdraw and depth-complexity labels name samples (longer)
+            views = [(1, v) for v in KINDS] + [(4, "overdraw"), (4, "depth_complexity")]
+            for samples, view in views:
+                w.samples.value = samples
                 w.view.value = view
                 w.fig.canvas.draw()
                 ticks = [t for t in w.cax.get_yticklabels() if t.get_text()]
@@ -181,3 +184,52 @@ def test_frame_inspector_overlay_titles_and_colour_bars_fit_in_the_classroom_sty
                 assert label.get_window_extent(renderer).x0 >= right, view
         finally:
             w.close()
+
+
+# -- the colour bars say what they count (review 11-12 r5) ---------------------------------
+@pytest.mark.parametrize("samples", [1, 4])
+def test_overlay_colour_bars_name_what_is_counted(samples):
+    """Under MSAA overdraw and depth complexity count (triangle, sample) pairs: the fan, one
+    triangle per pixel, reads 4 at 4x, so the bar and title say samples, not fragments."""
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_overlay
+
+    frame = tr.render(tr.get_scene("fan"), None, 48, 48, trace=True, samples=samples)
+    over = frame.overlay("overdraw")
+    for kind, single in (("overdraw", "fragments per pixel"),
+                         ("depth_complexity", "passed depth test, per pixel")):  # fmt: skip
+        fig, ax = plt.subplots()
+        try:
+            art = plot_overlay(ax, frame, kind)
+            label, title = art.colorbar.ax.get_ylabel(), ax.get_title()
+        finally:
+            plt.close(fig)
+        if samples == 1:
+            assert label == single and "samples" not in title, (kind, label, title)
+        else:
+            assert "samples" in label and "fragment" not in label, (kind, label)
+            assert f"{int(frame.overlay(kind).sum()):,} samples" in title, (kind, title)
+    assert int(over.max()) == samples  # what the label explains: 4 where one triangle covers
+
+
+def test_triangle_size_colour_bar_labels_the_top_of_its_range():
+    """The fan's triangles are ~57 px: the log bar's ticks reach them (they stopped at 16)."""
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_overlay
+    from teachraster.plotting.frame_debug import log_ticks
+
+    frame = tr.render(tr.get_scene("fan"), None, 48, 48, trace=True)
+    top = int(frame.overlay("triangle_size").max())
+    fig, ax = plt.subplots()
+    try:
+        ticks = list(plot_overlay(ax, frame, "triangle_size").colorbar.get_ticks())
+    finally:
+        plt.close(fig)
+    assert top > 32 and max(ticks) == top and 16 in ticks, (top, ticks)
+    assert log_ticks(60) == [1, 2, 4, 8, 16, 32, 60] and log_ticks(64)[-1] == 64
+    assert log_ticks(47) == [1, 2, 4, 8, 16, 47]  # 32 would sit on 47's label
+    assert len(log_ticks(70000)) <= 7 and log_ticks(70000)[0] == 1

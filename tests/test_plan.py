@@ -274,3 +274,21 @@ def test_plan_reports_only_what_really_ran():
     assert not off.ran and not off.forced and off.count == 0
     wide = tr.render([[[-1e8, -1, 0, 1], [1e8, -1, 0, 1], [-1, 1, 0, 1]]], 8, 8).plan
     assert "nothing to clip" in wide["clipping"].why and "guard band" in wide["clipping"].why
+
+
+def test_multisampling_plan_says_shaded_once_per_pixel():
+    """MSAA's plan says what the renderer does at a partly covered pixel: coverage, depth and
+    colour per sample, one shading per triangle and pixel (per-sample shading would be
+    supersampling). The attributes stored at the covered samples of such a pixel are equal."""
+    clip = clip_from_window([[[1.3, 1.2], [14.7, 2.1], [3.1, 13.9]]], width=16, height=16)
+    rgb = [[[1, 0, 0], [0, 1, 0], [0, 0, 1]]]
+    frame = tr.render(clip, 16, 16, attrs=rgb, samples=4)
+    why = frame.plan["multisampling"].why
+    assert "shading per sample" not in why and "once per triangle and pixel" in why
+    assert "colour stored per sample" in why
+    sc = frame.sample_triangle_id >= 0
+    partial = np.argwhere((sc.sum(axis=2) >= 2) & ~sc.all(axis=2))
+    assert len(partial) > 0
+    for i, j in partial:
+        covered = frame.sample_attrs[i, j][sc[i, j]]
+        assert np.array_equal(covered, np.broadcast_to(covered[0], covered.shape))

@@ -180,6 +180,28 @@ def test_split_shows_u4():
     np.testing.assert_array_equal(result.flat_top.get_xy()[:3], s.flat_top)
 
 
+def test_split_label_hides_no_covered_centre():
+    """Review r5 01-7: the label sat above the split, on the covered centres of the row above
+    it; it now hangs below the line, on the side of point 4 away from the middle vertex."""
+    for xy in ([[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]], [[11.5, 17.5], [15.5, 1.5], [1.5, 9.5]]):
+        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True)
+        fig, ax = plt.subplots(figsize=(6, 6))
+        ax.set(xlim=(0, 20), ylim=(20, 0))
+        label = tp.plot_split(ax, fill).label
+        fig.canvas.draw()
+        box = label.get_window_extent().transformed(ax.transData.inverted())
+        cols, rows = np.meshgrid(np.arange(20) + 0.5, np.arange(20) + 0.5)
+        under = (
+            (cols > box.x0)
+            & (cols < box.x1)
+            & (rows > min(box.y0, box.y1))
+            & (rows < max(box.y0, box.y1))
+        )
+        assert under.any() and not (under & fill.coverage).any(), xy
+        assert min(box.y0, box.y1) > fill.trace.span.sorted_xy[1, 1]  # below the split
+        plt.close(fig)
+
+
 def test_edge_values_match_the_half_plane_trace():
     fill = make_fill("halfplane")
     t, b = fill.trace, fill.trace.bbox

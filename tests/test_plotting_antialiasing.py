@@ -77,3 +77,17 @@ def test_pixel_inspector_plot_labels_samples_with_edge_values():
     assert f"E{a + 1}{b + 1}" in ax.get_title().split("\n")[-1]  # the names, in order
     assert result.labels[0].get_text().split("\n")[1].split()[0] == f"{e[0, 0]:+.3g}"
     assert "4 of 4" in ax.get_title()
+
+
+def test_sampling_key_does_not_name_the_signal_twice_without_a_prefilter():
+    """Review 08-09-r5 (08 item 8): at width 0 the key listed "signal" and "prefiltered"
+    for one curve; it now says that there is no prefilter, and names it again at width > 0."""
+    from teachraster.plotting.sampling import plot_sampling, sample_signal, update_sampling
+
+    fig, axes = plt.subplots(3, 1)
+    art = plot_sampling(axes, sample_signal(32, 0.0))
+    texts = lambda: [t.get_text() for t in axes[0].get_legend().get_texts()]  # noqa: E731
+    assert texts()[1] == "prefiltered: none (= signal)"
+    update_sampling(art, sample_signal(32, 2.0))
+    assert texts()[1] == "prefiltered"
+    plt.close(fig)

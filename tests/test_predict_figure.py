@@ -103,6 +103,29 @@ def test_cells_are_named_and_the_keys_step_in_the_axis_units():
     assert "counts" not in js[js.index("function mountPoint") : js.index("function mountOrder")]
 
 
+def test_a_point_marker_can_read_out_the_code_it_sits_on():
+    """Lesson 12's sRGB code: the marker shows "code 186" while it moves (the page) and the
+    verdict repeats it (both sides); without ``readout`` nothing changes."""
+    codes = dict(answer=(188, 0.5), draw=None, xlim=(-0.5, 255.5), ylim=(0, 1), tolerance=4,
+                 units="codes")  # fmt: skip
+    p = PredictPoint("Code?", **codes, step=1, readout="code")
+    assert p.data["readout"] == "code" and p.data["readoutDigits"] == 0
+    assert p.readout() is None  # nothing to read before the marker moves
+    p.given = (186, 0.5)
+    assert p.readout() == "code 186"
+    assert p.verdict().startswith("Right. You predicted code 186. Your marker is 2 codes")
+    fine = PredictPoint("Where?", answer=(1, 2), draw=None, xlim=(0, 4), ylim=(0, 4), step=0.01,
+                        readout="x")  # fmt: skip
+    fine.given = (1.25, 2)
+    assert fine.readout() == "x 1.25"
+    plain = PredictPoint("Code?", **codes, step=1)
+    plain.given = (186, 0.5)
+    assert plain.data["readout"] is None and "predicted" not in plain.verdict()
+    got = call_js(("predict_figure",), [("readoutText", ["code", 186.0, 0]),
+                                        ("readoutText", ["x", 1.25, 2])])  # fmt: skip
+    assert got == [p.readout(), fine.readout()]
+
+
 @pytest.mark.parametrize(
     ("make", "error", "name"),
     [
@@ -115,6 +138,8 @@ def test_cells_are_named_and_the_keys_step_in_the_axis_units():
                               tolerance=-1), ValueError, "tolerance"),
         (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
                               step=0), ValueError, "step"),
+        (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
+                              readout=""), TypeError, "readout"),
         (lambda: PredictPixels("Q?", answer=np.eye(2, dtype=bool), cell=""), TypeError, "cell"),
         (lambda: PredictOrder("Q?", ["a", "a"], answer=None), ValueError, "items"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=None), ValueError, "allow_impossible"),
@@ -155,6 +180,24 @@ def test_the_saved_notebook_keeps_the_question_its_picture_and_the_verdict():
     q.given = q.data["answer"]
     q.check()
     assert "Right." in q._standin()
+
+
+def test_the_answers_label_is_never_under_the_marker():
+    """Review 08-09-r5 (09 cell 14): with the marker near the answer, "the answer" was
+    drawn under it ("th⊕ answer"). The label's box (about 80 × 14 px at the 14 px bold font,
+    from its baseline up) stays clear of the marker's cross (14 px each way) wherever the
+    marker is, and inside the canvas above."""
+    truth = [200.0, 60.0]
+    mines = [[x, y] for x in (150, 190, 200, 205, 230, 290) for y in (20, 45, 60, 75, 120)]
+    got = call_js(("predict_figure",), [("answerLabel", [m, truth]) for m in mines]
+                  + [("answerLabel", [[200, 10], [200, 12]])])  # fmt: skip
+    for mine, lab in zip(mines, got, strict=False):
+        x0, x1 = (lab["x"] - 80, lab["x"]) if lab["align"] == "right" else (lab["x"], lab["x"] + 80)
+        y0, y1 = lab["y"] - 12, lab["y"] + 2
+        clear_x = x1 < mine[0] - 14 or x0 > mine[0] + 14
+        clear_y = y1 < mine[1] - 14 or y0 > mine[1] + 14
+        assert clear_x or clear_y, (mine, lab)
+    assert got[-1]["y"] - 12 >= 0  # no room above: below the dot
 
 
 def test_point_reveal_can_draw_the_ray_that_finds_the_answer():

@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 import teachraster as tr
 from teachraster.pipeline.mip_pyramid import level_sizes
 from teachraster.pipeline.texture import TEXTURE_FILTERS
-from teachraster.pipeline.texture_filters import MIPMAP_FILTERS, nearest_level
+from teachraster.pipeline.texture_filters import MIPMAP_FILTERS, levels_read, nearest_level
 
 
 # -- references -------------------------------------------------------------------------------
@@ -237,6 +237,67 @@ def test_nan_uv_or_nan_lod_gives_nan(rng):
     uv = np.array([[0.5, 0.5], [np.nan, 0.5], [0.5, 0.5]])
     got = tr.sample(tex, uv, "trilinear", lod=np.array([1.0, 1.0, np.nan]))
     assert np.isfinite(got[0]).all() and np.isnan(got[1:]).all()
+
+
+def read_level(levels, uv, within, level):
+    """``within`` filtering of pyramid level ``level`` (n,) at ``uv`` (n, 2), via an integer
+    λ (GL's nearest level of an integer λ is that level)."""
+    f = "nearest_mipmap_nearest" if within == "nearest" else "linear_mipmap_nearest"
+    return tr.sample(levels, uv, f, lod=np.asarray(level, dtype=float))
+
+
+@pytest.mark.parametrize("filter", TEXTURE_FILTERS)
+def test_levels_read_are_what_the_sampler_reads(rng, filter):
+    """Per filter, the levels, weights and probes ``levels_read`` reports (what the
+    FilterExplorer's level panel shows) rebuild the sampler's value exactly: level 0 for
+    the unmipmapped filters, GL's nearest level, ⌊λ⌋ and ⌊λ⌋ + 1 blended by λ − ⌊λ⌋, and for
+    anisotropic N probes at λ' = log2(P_max / N), finer than the pixel's λ."""
+    tex = rng.uniform(0, 1, size=(32, 32, 3))
+    levels = tr.mipmap(tex)
+    n = 200
+    uv = rng.uniform(0, 1, size=(n, 2))
+    dx = rng.normal(0, 0.08, size=(n, 2))
+    dy = rng.normal(0, 0.08, size=(n, 2)) * rng.uniform(0.05, 1, size=(n, 1))
+    dx[:10] /= 100  # magnified footprints
+    dx[-1] = np.nan  # an uncovered pixel
+    read = levels_read(filter, dx, dy, tex.shape)
+    assert np.isnan(read.first[-1]) and np.isnan(read.weight[-1])
+    dx, dy, uv, n = dx[:-1], dy[:-1], uv[:-1], n - 1
+    first, second, t = read.first[:-1], read.second[:-1], read.weight[:-1]
+    lam = tr.mip_level(dx, dy, tex.shape)
+    within = "bilinear" if filter in ("bilinear", "linear_mipmap_nearest", "trilinear",
+                                      "anisotropic") else "nearest"  # fmt: skip
+    if filter != "anisotropic":
+        got = tr.sample(levels, uv, filter, ddx=dx, ddy=dy) if filter in MIPMAP_FILTERS else (
+            tr.sample(tex, uv, filter))  # fmt: skip
+        lo, hi = read_level(levels, uv, within, first), read_level(levels, uv, within, second)
+        np.testing.assert_allclose(got, (1 - t[:, None]) * lo + t[:, None] * hi, atol=1e-12)
+        assert (read.probes == 1).all()
+        if filter in ("nearest", "bilinear"):
+            assert (first == 0).all() and (t == 0).all()
+        elif filter.endswith("mipmap_nearest"):
+            assert (t == 0).all() and len(set(first.tolist())) >= 3
+        else:  # blended where λ lies strictly between two levels of the pyramid
+            between = (lam > 0) & (lam < len(levels) - 1) & (lam != np.floor(lam))
+            assert (t[between] > 0).all() and (second[between] == first[between] + 1).all()
+            np.testing.assert_array_equal(first[lam >= 0], np.floor(np.minimum(lam, 5))[lam >= 0])
+        return
+    px, py = np.hypot(dx[:, 0] * 32, dx[:, 1] * 32), np.hypot(dy[:, 0] * 32, dy[:, 1] * 32)
+    pmax, pmin = np.maximum(px, py), np.minimum(px, py)
+    probes = np.where(pmax <= 1, 1, np.minimum(np.ceil(pmax / pmin), 16)).astype(int)
+    np.testing.assert_array_equal(read.probes[:-1], probes)
+    np.testing.assert_allclose(read.lod[:-1], np.log2(pmax / probes), atol=1e-12)
+    assert (probes > 1).sum() > 50 and (read.lod[:-1] < lam)[probes > 1].all()  # finer
+    major = np.where((px >= py)[:, None], dx, dy)
+    total = 0.0
+    for i in range(1, probes.max() + 1):
+        on = probes >= i
+        at = uv + np.where(on, i / (probes + 1) - 0.5, 0)[:, None] * major
+        value = (1 - t[:, None]) * read_level(levels, at, within, first) + t[:, None] * (
+            read_level(levels, at, within, second))  # fmt: skip
+        total = total + np.where(on[:, None], value, 0.0)
+    got = tr.sample(tex, uv, "anisotropic", ddx=dx, ddy=dy)
+    np.testing.assert_allclose(got, total / probes[:, None], atol=1e-12)
 
 
 # -- anisotropic ------------------------------------------------------------------------------

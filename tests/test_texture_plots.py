@@ -99,3 +99,63 @@ def test_filter_explorer_controls_move_the_figures():
     ex.tilt.value = 10.0  # nearly facing the camera: hardly minified
     assert np.nanmax(ex.lod) < lam_far
     ex.close()
+
+
+def test_plot_levels_read_colours_the_engines_levels_and_blends():
+    """One level's colour where one level is read, the two levels' colours mixed by the
+    engine's weight where two are blended, transparent where nothing is read."""
+    from matplotlib.colors import to_rgba
+
+    from teachraster.pipeline.texture_filters import LevelsRead
+    from teachraster.plotting import plot_levels_read
+    from teachraster.plotting.texture_plots import LEVEL_COLORS
+
+    nan = np.nan
+    read = LevelsRead(
+        first=np.array([[nan, 0.0, 2.0]]),
+        second=np.array([[nan, 0.0, 3.0]]),
+        weight=np.array([[nan, 0.0, 0.25]]),
+        probes=np.ones((1, 3), dtype=int),
+        lod=np.array([[nan, 0.0, 2.25]]),
+    )
+    fig, ax = plt.subplots()
+    art = plot_levels_read(ax, read, 5)
+    shown = np.asarray(art.image.get_array()).reshape(1, 3, 4)
+    assert shown[0, 0, 3] == 0  # nothing read: transparent
+    np.testing.assert_allclose(shown[0, 1], to_rgba(LEVEL_COLORS[0]))
+    want = 0.75 * np.array(to_rgba(LEVEL_COLORS[2])) + 0.25 * np.array(to_rgba(LEVEL_COLORS[3]))
+    np.testing.assert_allclose(shown[0, 2], want)
+    assert art.levels == 5 and len(art.colorbar.get_ticks()) == 5
+    plt.close(fig)
+
+
+@pytest.mark.parametrize("filter", list(tr.TEXTURE_FILTERS))
+def test_filter_explorer_level_panel_shows_what_each_filter_reads(filter):
+    """The "mip level(s) read" panel shows the engine's levels for the filter on show (not
+    GL's nearest level of λ for every filter): level 0 without mipmaps, one level per pixel
+    for the nearest-mip filters, ⌊λ⌋ blended with ⌊λ⌋ + 1 for the linear-mip ones, and for
+    anisotropic its probes' finer levels."""
+    from teachraster.pipeline.texture_filters import levels_read
+    from teachraster.plotting.texture_plots import levels_read_image
+    from teachraster.widgets import FilterExplorer
+
+    ex = FilterExplorer(64, 48, tilt=89.0, filter=filter, samples=2, backend="image")
+    try:
+        f = ex.frame
+        want = levels_read(filter, f.ddx, f.ddy, ex.texture.shape)
+        shown = np.asarray(ex.panels["lod"].image.get_array()).reshape(48, 64, 4)
+        np.testing.assert_array_equal(shown, levels_read_image(want, ex.n_levels))
+        r, ok = ex.levels_read, np.isfinite(ex.levels_read.first)
+        nearest = nearest_level(np.nan_to_num(ex.lod), ex.n_levels - 1)[ok]
+        if filter in ("nearest", "bilinear"):
+            assert (r.first[ok] == 0).all() and (r.weight[ok] == 0).all()
+        elif filter.endswith("mipmap_nearest"):
+            assert (r.first[ok] == nearest).all() and (r.weight[ok] == 0).all()
+        elif filter != "anisotropic":
+            assert (r.first[ok] == np.floor(ex.lod[ok])).all() and (r.weight[ok] > 0).mean() > 0.9
+            assert (r.first[ok] != nearest).any()  # GL's nearest level is not what is read
+        else:
+            assert r.probes[ok].max() > 1 and (r.first[ok] < np.floor(ex.lod[ok])).any()
+            assert (r.lod[ok] <= ex.lod[ok] + 1e-12).all()
+    finally:
+        ex.close()

@@ -9,6 +9,7 @@ import pytest  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster.core.tile_trace import edge_name  # noqa: E402
+from teachraster.plotting.antialiasing import edge_value_text  # noqa: E402
 from teachraster.widgets import PixelInspector  # noqa: E402
 from teachraster.widgets.common import SAMPLE_PATTERNS as PATTERNS  # noqa: E402
 from teachraster.widgets.common import pattern_samples  # noqa: E402
@@ -49,7 +50,9 @@ def test_single_triangle_labels_edge_values():
         name = edge_name(*w.result.trace.edges[2])  # the third edge tested, e.g. "E31"
         # the edge names once, in the title's order; each label holds the sample's values
         assert name in w.pixel.square.axes.get_title()
-        assert all(f"{e[s, 2]:+.3g}" in lab.get_text() for s, lab in enumerate(w.pixel.labels))
+        assert all(
+            edge_value_text(e[s, 2]) in lab.get_text() for s, lab in enumerate(w.pixel.labels)
+        )
         w.pattern.value = "1 (centre)"
         assert w.result.sample_coverage.shape[2] == 1
         assert isinstance(pattern_samples("4 ordered grid"), np.ndarray)
@@ -105,5 +108,50 @@ def test_inspector_legible_at_16_samples_and_at_the_last_pixel():
         r = w.fig.canvas.get_renderer()
         boxes = [lab.get_window_extent(r) for lab in w.pixel.labels]
         assert not any(a.overlaps(b) for i, a in enumerate(boxes) for b in boxes[i + 1 :])
+    finally:
+        w.close()
+
+
+def test_sixteen_samples_numbers_clear_each_other_and_the_table_gives_edge_values():
+    """Review 08-09-r5 (08 item 4): at "16 random" the numbers collided ("2" and "13" read
+    "213") and the "0" sat on the centre's cross; at 8 and 16 samples no edge value was
+    shown; at 4 samples the left panel's dots overlapped. Now the numbers are placed clear
+    of each other, the dots and the cross; a table lists every sample's edge values (one
+    precision, "0" exactly on an edge); the left panel's dots are smaller than their gaps."""
+    tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])  # lesson 08's
+    w = PixelInspector(tri, 20, 14, row=3, col=13, backend="image")
+    try:
+        # 4 standard samples on the left: dots narrower than the closest two samples
+        ax = w.samples.covered.axes
+        (x0, x1), bbox = ax.get_xlim(), ax.get_window_extent()
+        pt_per_px = bbox.width / abs(x1 - x0) * 72 / w.fig.dpi
+        gap = min(np.hypot(*(a - b)) for i, a in enumerate(w.result.samples)
+                  for b in w.result.samples[i + 1 :])  # fmt: skip
+        assert w.samples.uncovered.get_markersize() < gap * pt_per_px
+        for pattern in ("16 random", "16 standard", "8 standard"):
+            w.pattern.value = pattern
+            w.fig.canvas.draw()
+            r = w.fig.canvas.get_renderer()
+            boxes = [lab.get_window_extent(r) for lab in w.pixel.labels]
+            assert len(boxes) == len(w.result.samples)
+            assert not any(a.overlaps(b) for i, a in enumerate(boxes) for b in boxes[i + 1 :])
+            centre = w.pixel.centre.get_window_extent(r)
+            assert not any(b.overlaps(centre) for b in boxes), pattern
+            e = w.result.trace.samples.edge_values(3, 13)
+            assert w.table.value.count("<tr>") == len(e) + 1
+            assert all(edge_value_text(v) in w.table.value for v in e.ravel())
+        w.row.value = 4  # the table follows the pixel
+        assert "pixel (4, 13)" in w.table.value
+    finally:
+        w.close()
+
+
+def test_edge_values_exactly_zero_are_marked_in_the_table():
+    """A sample exactly on an edge shows E = 0 and "(on the edge)": where the top-left rule
+    decides (the cell above the inspector promises it can be seen)."""
+    tri = tr.Triangle([[0.0, 0.5], [8.0, 0.5], [0.0, 6.0]])  # top edge through y = 0.5
+    w = PixelInspector(tri, 8, 6, row=0, col=2, pattern="1 (centre)", backend="image")
+    try:
+        assert "0 (on the edge)" in w.table.value and "yes" in w.table.value  # a top edge
     finally:
         w.close()

@@ -208,10 +208,41 @@ def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake
     ('doubled', 6)
     """
 
+    memo: dict = {}  # the last cases' variants: every mistake of the table asks for the same
+
+    def of_case(args) -> dict:
+        key = content_key(args)
+        if key is None:
+            return variants(*args)
+        if key not in memo:
+            if len(memo) >= 64:
+                memo.clear()
+            memo[key] = variants(*args)
+        return memo[key]
+
     def gives(kind):
-        return lambda *args: variants(*args).get(kind)
+        return lambda *args: of_case(args).get(kind)
 
     return [Mistake(kind, text, gives=gives(kind)) for kind, text in words.items()] + list(symptoms)
+
+
+def content_key(value):
+    """A hashable key equal for equal contents (arrays by dtype, shape and bytes), or None for
+    a value it cannot read (then nothing is remembered).
+
+    >>> content_key((np.arange(3), 2, "x")) == content_key((np.arange(3), 2, "x"))
+    True
+    >>> content_key(object()) is None
+    True
+    """
+    if isinstance(value, np.ndarray):
+        return ("array", value.dtype.str, value.shape, value.tobytes())
+    if isinstance(value, (bool, int, float, str, type(None), np.generic)):
+        return (type(value).__name__, value)
+    if type(value) in (tuple, list):
+        keys = tuple(content_key(v) for v in value)
+        return None if None in keys else (type(value).__name__, keys)
+    return None
 
 
 def copies(args) -> tuple:

@@ -57,6 +57,7 @@ Texture filtering (lesson 09)
 -----------------------------
 - :func:`plot_quads` -- 2×2 quads and helper pixels of ``render(..., derivatives=True, trace=True)``.
 - :func:`plot_lod` -- the level-of-detail map, one colour per mip level.
+- :func:`plot_levels_read` -- the level(s) a filter reads per pixel, blends mixed by weight.
 - :func:`plot_pyramid` -- a mip pyramid, level 0 and the smaller levels beside it.
 - :func:`plot_filters` -- filtered renders side by side with their error against the truth.
 
@@ -136,10 +137,12 @@ from .plots import (
 from .style import COLORS, OKABE_ITO, STYLES, use_style
 from .texture_plots import (
     FilterArtists,
+    LevelsReadArtists,
     LodArtists,
     PyramidArtists,
     QuadArtists,
     plot_filters,
+    plot_levels_read,
     plot_lod,
     plot_pyramid,
     plot_quads,
@@ -189,6 +192,7 @@ __all__ = [
     "HeatmapArtists",
     "ImageArtists",
     "InterpolationView",
+    "LevelsReadArtists",
     "LodArtists",
     "PixelArtists",
     "PlanArtists",
@@ -223,6 +227,7 @@ __all__ = [
     "plot_filters",
     "plot_hierarchy",
     "plot_image",
+    "plot_levels_read",
     "plot_lod",
     "plot_pixel_centres",
     "plot_pixel_grid",

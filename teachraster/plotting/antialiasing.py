@@ -68,8 +68,28 @@ class SampleArtists(Artists):
         self.covered.set_offsets(np.column_stack([x[hit], y[hit]]))
         self.covered.set_facecolor([TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit]])
         self.uncovered.set_data(x[~hit], y[~hit])
+        d = _dot_diameter(self.covered.axes, offsets)
+        self.covered.set_sizes([d**2])
+        self.uncovered.set_markersize(d)
         if self.fraction is not None:
             self.fraction.update((ids >= 0).mean(axis=2))
+
+
+def _dot_diameter(ax, offsets) -> float:
+    """The samples' dot size in points: the style's, or less where the pattern's closest
+    two samples (in a pixel or across a pixel side) would make their dots touch at this
+    magnification (the standard 4-sample pattern's dots overlapped in a 12-pixel-wide panel).
+    """
+    largest = ms(0.55) * 1.26
+    if len(offsets) < 2:
+        return largest
+    shifts = np.array([[0, 0], [1, 0], [0, 1], [1, 1], [-1, 1]], dtype=float)
+    pts = (offsets[None, :, :] + shifts[:, None, :]).reshape(-1, 2)
+    gaps = np.hypot(*(offsets[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
+    gap = float(gaps[gaps > 1e-9].min())  # data units (pixels)
+    (x0, x1), bbox = ax.get_xlim(), ax.get_window_extent()
+    pt_per_px = bbox.width / abs(x1 - x0) * 72.0 / ax.figure.dpi
+    return float(min(largest, 0.8 * gap * pt_per_px))
 
 
 def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
@@ -94,10 +114,9 @@ def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
     if fraction:
         frac = ImageArtists(show_image(ax, (ids >= 0).mean(axis=2), cmap="Greys", vmin=0,
                                        vmax=2.5, zorder=0.4))  # fmt: skip
-    size = ms(0.55) if ids.shape[2] <= 4 else ms(0.35)
-    covered = ax.scatter([], [], s=size**2 * 1.6, zorder=4, edgecolors=COLORS["edge"],
+    covered = ax.scatter([], [], zorder=4, edgecolors=COLORS["edge"],
                          linewidths=max(0.5, lw(0.15)))  # fmt: skip
-    uncovered = ax.plot([], [], "o", ms=size, mfc="white", mec=COLORS["centre"],
+    uncovered = ax.plot([], [], "o", mfc="white", mec=COLORS["centre"],
                         mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
     result = SampleArtists(frac, covered, uncovered)
     result.update(source)
@@ -185,20 +204,25 @@ class PixelSampleArtists(Artists):
             color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
             self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4 if few else 1.0),
                                  mfc=color, mec=COLORS["edge"], zorder=5)  # fmt: skip
-            label = _label(s, t, None if values is None or not few else values[s], names)
-            # numbers point into the pixel; edge values (a narrow column, one value per line,
-            # centred on the dot) point out of it, into the panel's margin, so that the
-            # labels of the standard and the ordered 4-sample patterns clear each other
-            side = (1 if ox < 0.5 else -1) * (1 if not few else -1)
+            if not few:
+                continue
+            label = _label(s, t, None if values is None else values[s], names)
+            # edge values (a narrow column, one value per line, centred on the dot) point out
+            # of the pixel, into the panel's margin, so that the labels of the standard and
+            # the ordered 4-sample patterns clear each other
+            side = -1 if ox < 0.5 else 1
             self.labels.append(ax.annotate(
-                label if few else str(s), (col + ox, row + oy), xytext=(7 * side, 0 if few else 6),
-                textcoords="offset points", ha="left" if side > 0 else "right",
-                va="center" if few else "baseline",
-                fontsize=fs(0.75), bbox=label_box(0.8) if few else None,
-                zorder=6,
+                label, (col + ox, row + oy), xytext=(7 * side, 0), textcoords="offset points",
+                ha="left" if side > 0 else "right", va="center", fontsize=fs(0.75),
+                bbox=label_box(0.8), zorder=6,
             ))  # fmt: skip
+        if not few:  # numbers only, each placed clear of the others, the dots and the centre
+            self.labels += _place_numbers(ax, col + offsets[:, 0], row + offsets[:, 1],
+                                          (col + 0.5, row + 0.5), ms(1.0))  # fmt: skip
         covered = int((ids[row, col] >= 0).sum())
-        key = f"\nbeside each: {', '.join(names)}" if few and values is not None else ""
+        key = ""
+        if values is not None:
+            key = f"\nbeside each: {', '.join(names)}" if few else "\nedge values: table below"
         ax.set_title(f"pixel ({row}, {col})\n{covered} of {len(offsets)} covered{key}",
                      fontsize=fs(0.85))  # fmt: skip
 
@@ -209,7 +233,68 @@ def _label(s, t, e, names) -> str:
     the dot's fill already says whether it is covered)."""
     if e is None:
         return f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
-    return f"s{s}\n" + "\n".join(f"{v:+.3g}" for v in e)
+    return f"s{s}\n" + "\n".join(edge_value_text(v) for v in e)
+
+
+def edge_value_text(v: float) -> str:
+    """An edge value as the labels show it: "0" when exactly on the edge (where the top-left
+    rule decides), else signed with two decimals (one precision for every label), and in
+    scientific notation when that would round a non-zero value to 0.00.
+
+    >>> [edge_value_text(v) for v in (0.0, -2.0, 10.3125, 0.001)]
+    ['0', '-2.00', '+10.31', '+1.0e-03']
+    """
+    if v == 0:
+        return "0"
+    return f"{v:+.2f}" if abs(v) >= 0.005 else f"{v:+.1e}"
+
+
+def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
+    """Sample numbers ``0 … n-1`` beside the dots at ``xs``, ``ys`` (data), each at the first
+    of eight directions (then farther) where its box clears the labels placed before, every
+    dot and the centre's cross (``dot_pt``: the dots' and the cross's size in points).
+    Random patterns put samples close together: fixed offsets printed "2" and "13" as "213".
+    """
+    fig = ax.figure
+    to_pt = 72.0 / fig.dpi
+    pts = ax.transData.transform(np.column_stack([xs, ys])) * to_pt
+    c = ax.transData.transform([centre])[0] * to_pt
+    size = fs(0.75)
+    r = dot_pt / 2 + 1.0
+    # obstacles as (x0, y0, x1, y1) in points: the dots and the centre's cross
+    blocked = [(x - r, y - r, x + r, y + r) for x, y in pts]
+    blocked.append((c[0] - r, c[1] - r, c[0] + r, c[1] + r))
+    frame = ax.get_window_extent()
+    x_lo, y_lo = frame.x0 * to_pt, frame.y0 * to_pt
+    x_hi, y_hi = frame.x1 * to_pt, frame.y1 * to_pt
+    directions = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]
+    labels = []
+    for s, (x, y) in enumerate(pts):
+        w, h = 0.62 * size * len(str(s)) + 2, size + 1
+        best, best_hits = None, None
+        for reach in (1.0, 1.8, 2.6):
+            for dx, dy in directions:
+                ox = dx * (r + w / 2 + 1) * reach
+                oy = dy * (r + h / 2 + 1) * reach
+                box = (x + ox - w / 2, y + oy - h / 2, x + ox + w / 2, y + oy + h / 2)
+                inside = box[0] >= x_lo and box[2] <= x_hi and box[1] >= y_lo and box[3] <= y_hi
+                hits = sum(_overlap(box, b) for b in blocked) + (0 if inside else 10)
+                if best_hits is None or hits < best_hits:
+                    best, best_hits = (ox, oy, box), hits
+                if hits == 0:
+                    break
+            if best_hits == 0:
+                break
+        ox, oy, box = best
+        blocked.append(box)
+        labels.append(ax.annotate(str(s), (xs[s], ys[s]), xytext=(ox, oy),
+                                  textcoords="offset points", ha="center", va="center",
+                                  fontsize=size, zorder=6))  # fmt: skip
+    return labels
+
+
+def _overlap(a, b) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def plot_pixel_samples(ax, source, row: int, col: int, *, triangles=None) -> PixelSampleArtists:

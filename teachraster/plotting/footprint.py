@@ -43,41 +43,51 @@ def footprint(uv, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> Footprin
     >>> f.rho, f.lam, f.probes, f.probe_lam
     (8.0, 3.0, 8, 0.0)
     """
+    from ..pipeline.texturing.texture_filters import anisotropic_probes
+
     h, w = texture_shape[:2]
     scale = np.array([w, h], dtype=float)
     ax_, ay_ = np.asarray(ddx, float)[:2] * scale, np.asarray(ddy, float)[:2] * scale
-    px, py = float(np.hypot(*ax_)), float(np.hypot(*ay_))
-    pmax, pmin = max(px, py), min(px, py)
-    rho = pmax
-    if pmax <= 1:
-        n = 1
-    else:
-        n = int(min(np.ceil(pmax / pmin) if pmin > 0 else max_anisotropy, max_anisotropy))
-    major = ax_ if px >= py else ay_
+    rho = float(max(np.hypot(*ax_), np.hypot(*ay_)))
+    # the probes as the sampler places them (one rule: the engine's)
+    n, probe_lam, major = anisotropic_probes(np.asarray(ddx, float)[None, :2],
+                                             np.asarray(ddy, float)[None, :2], w, h,
+                                             max_anisotropy)  # fmt: skip
+    n = int(n[0])
     centre = np.asarray(uv, float)[:2] * scale
     offsets = np.array([i / (n + 1) - 0.5 for i in range(1, n + 1)])
-    return Footprint(centre, ax_, ay_, rho, float(np.log2(rho)), n, float(np.log2(pmax / n)),
-                     centre + offsets[:, None] * major)  # fmt: skip
+    return Footprint(centre, ax_, ay_, rho, float(np.log2(rho)), n, float(probe_lam[0]),
+                     centre + offsets[:, None] * (major[0] * scale))  # fmt: skip
 
 
-def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, legend: bool = True):
-    """Draw ``fp`` in texel coordinates of level 0, over ``texture`` (wrapped) if given.
+def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, legend: bool = True,
+                   centred: bool = True):  # fmt: skip
+    """Draw ``fp`` in texels of level 0, over ``texture`` (wrapped) if given.
+
+    ``centred``: coordinates relative to the pixel's centre in the texture (0 at the
+    centre), so that the ticks read as sizes; else absolute texel coordinates (for a texture
+    repeated many times, numbers like 1003.75 that say nothing). Where a single probe is
+    taken it is trilinear's square: filled, under trilinear's outline.
 
     Returns the dict of artists: ``parallelogram``, ``ellipse``, ``square``, ``probes``.
     """
-    a, b, c = fp.axis_x, fp.axis_y, fp.centre
+    a, b = fp.axis_x, fp.axis_y
+    shift = fp.centre if centred else np.zeros(2)
+    c = fp.centre - shift
     corners = c + np.array([-a - b, a - b, a + b, -a + b]) / 2
     half = max(np.abs(corners - c).max(), fp.rho / 2) * margin
     lo, hi = c - half, c + half
     if texture is not None:
         tex = np.asarray(texture)
         th, tw = tex.shape[:2]
-        cols = np.arange(np.floor(lo[0]), np.ceil(hi[0])).astype(int)
-        rows = np.arange(np.floor(lo[1]), np.ceil(hi[1])).astype(int)
+        cols = np.arange(np.floor(lo[0] + shift[0]), np.ceil(hi[0] + shift[0])).astype(int)
+        rows = np.arange(np.floor(lo[1] + shift[1]), np.ceil(hi[1] + shift[1])).astype(int)
         if len(cols) * len(rows) <= 512 * 512:  # a readable window of texels
             patch = tex[np.ix_(rows % th, cols % tw)]
-            ax.imshow(patch, extent=(cols[0], cols[-1] + 1, rows[-1] + 1, rows[0]),
-                      cmap="gray", vmin=0, vmax=1, alpha=0.45, interpolation="nearest")  # fmt: skip
+            extent = (cols[0] - shift[0], cols[-1] + 1 - shift[0], rows[-1] + 1 - shift[1],
+                      rows[0] - shift[1])  # fmt: skip
+            ax.imshow(patch, extent=extent, cmap="gray", vmin=0, vmax=1, alpha=0.45,
+                      interpolation="nearest")  # fmt: skip
     art = {}
     art["parallelogram"] = ax.add_patch(Polygon(corners, closed=True, fill=False, lw=2,
                                                 ls="--", ec=COLORS["edge"],
@@ -87,17 +97,20 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     (art["ellipse"],) = ax.plot(*ell.T, color=OKABE_ITO["blue"], lw=3,
                                 label="footprint ellipse")  # fmt: skip
     art["square"] = ax.add_patch(Rectangle(c - fp.rho / 2, fp.rho, fp.rho, fill=False, lw=2.5,
-                                           ec=OKABE_ITO["orange"],
+                                           ec=OKABE_ITO["orange"], zorder=3,
                                            label=f"trilinear: ρ = {fp.rho:.1f}, λ = {fp.lam:.1f}"))  # fmt: skip
     side = fp.rho / fp.probes
-    for k, p in enumerate(fp.probe_centres):
+    # one probe is trilinear's own square: filled only, its outline would hide the orange
+    edge = "none" if fp.probes == 1 else OKABE_ITO["bluish_green"]
+    for k, p in enumerate(fp.probe_centres - shift):
         ax.add_patch(Rectangle(p - side / 2, side, side, fill=True, alpha=0.35, lw=1.5,
-                               ec=OKABE_ITO["bluish_green"], fc=OKABE_ITO["bluish_green"],
+                               ec=edge, fc=OKABE_ITO["bluish_green"], zorder=2,
                                label=(f"{fp.probes} anisotropic probes, λ = {fp.probe_lam:.1f}"
                                       if k == 0 else None)))  # fmt: skip
     art["probes"] = fp.probe_centres
+    what = "texels from the centre" if centred else "texels"
     ax.set(xlim=(lo[0], hi[0]), ylim=(hi[1], lo[1]), aspect="equal",
-           xlabel="u · W (texels)", ylabel="v · H (texels)")  # fmt: skip
+           xlabel=f"u · W ({what})", ylabel=f"v · H ({what})")  # fmt: skip
     if legend:
         ax.legend(loc="upper left", fontsize=11, framealpha=0.9)
     return art

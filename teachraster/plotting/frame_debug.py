@@ -33,6 +33,12 @@ OVERLAY_LABELS = {
     "nan": "non-finite values per pixel",
 }
 
+#: The labels that change under MSAA, where those overlays count (triangle, sample) pairs.
+OVERLAY_LABELS_MSAA = {
+    "overdraw": "covered samples per pixel",
+    "depth_complexity": "samples passed depth, per pixel",
+}
+
 #: The colour of "nothing arrived here" (a count of 0, or no triangle).
 NOTHING = (0.93, 0.93, 0.93)
 
@@ -64,8 +70,7 @@ def overlay_style(kind: str, values: np.ndarray):
     if kind == "triangle_size":
         top = max(float(values.max(initial=1)), 2.0)
         shown = np.where(values > 0, values.astype(float), np.nan)  # no triangle: transparent
-        ticks = [t for t in (1, 2, 4, 8, 16, 64, 256, 1024, 4096, 16384, 65536) if t <= top]
-        return shown, mpl.colormaps[VALUE_CMAP], LogNorm(1.0, top), ticks
+        return shown, mpl.colormaps[VALUE_CMAP], LogNorm(1.0, top), log_ticks(top)
     top = int(values.max(initial=0))
     base = mpl.colormaps[VALUE_CMAP if kind != "nan" else ERROR_CMAP]
     if top <= DISCRETE_LIMIT:
@@ -79,6 +84,30 @@ def overlay_style(kind: str, values: np.ndarray):
     return values.astype(float), base, Normalize(0, top), None
 
 
+def log_ticks(top: float, most: int = 7) -> list:
+    """Ticks for a log colour bar from 1 to ``top``: powers of 2 (of 4, 16, ... when more
+    than ``most`` would crowd it), ending at ``top`` itself, so that the largest values
+    present are labelled (a fan of 57 px triangles reads 57, not 16)."""
+    powers = [2**k for k in range(int(np.floor(np.log2(top))) + 1)]
+    stride = 1
+    while len(powers[::stride]) > most:
+        stride *= 2
+    ticks = powers[::stride]
+    if top > ticks[-1]:
+        if top < 1.5 * ticks[-1]:  # the two labels would overlap: the top one stays
+            ticks.pop()
+        ticks.append(int(top) if float(top).is_integer() else top)
+    return ticks
+
+
+def overlay_label(kind: str, n_samples: int = 1) -> str:
+    """What one unit of overlay ``kind`` is: under MSAA (``n_samples`` > 1) overdraw and
+    depth complexity count covered samples, not fragments."""
+    if n_samples > 1 and kind in OVERLAY_LABELS_MSAA:
+        return OVERLAY_LABELS_MSAA[kind]
+    return OVERLAY_LABELS[kind]
+
+
 def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> OverlayArtists:
     """Draw ``frame.overlay(kind)`` on ``ax`` with a colour bar in numbers; the title
     gives the total (or the range). ``frame`` needs ``trace=True`` except for "nan".
@@ -87,6 +116,8 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> Ov
     (cleared and reused), so a figure that redraws overlays keeps ``ax`` where it is."""
     check_choice("kind", kind, KINDS)
     values = frame.overlay(kind)
+    offsets = getattr(frame, "samples", None)  # the frame's sample pattern, None for one
+    n_samples = 1 if offsets is None else len(offsets)
     height, width = values.shape
     shown, cmap, norm, ticks = overlay_style(kind, values)
     if kind == "quad_overshading":  # no work in the quad: the background shows
@@ -100,9 +131,9 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> Ov
         if cax is not None:
             cax.clear()
         result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g")
-        result.colorbar.set_label(OVERLAY_LABELS[kind], fontsize="small")
+        result.colorbar.set_label(overlay_label(kind, n_samples), fontsize="small")
         result.colorbar.minorticks_off()  # a log bar's minor labels ("6 × 10⁰") crowd it
-    ax.set_title(overlay_title(kind, values), fontsize="small")
+    ax.set_title(overlay_title(kind, values, n_samples), fontsize="small")
     return result
 
 
@@ -123,8 +154,9 @@ def fit_title(ax, margin: float = 4.0):
     return title
 
 
-def overlay_title(kind: str, values: np.ndarray) -> str:
-    """A one-line summary of an overlay in numbers."""
+def overlay_title(kind: str, values: np.ndarray, n_samples: int = 1) -> str:
+    """A one-line summary of an overlay in numbers (under MSAA, overdraw and depth
+    complexity say that they count samples)."""
     if kind == "quad_overshading":
         busy = values > 0
         mean = float(values[busy].mean()) if busy.any() else 0.0
@@ -135,7 +167,8 @@ def overlay_title(kind: str, values: np.ndarray) -> str:
         return f"triangle size: median {median:,} px"
     total, top = int(values.sum()), int(values.max(initial=0))
     name = kind.replace("_", " ").replace("hi z", "Hi-Z").replace("nan", "NaN")
-    return f"{name}: {total:,} (max {top}/px)"
+    unit = " samples" if n_samples > 1 and kind in OVERLAY_LABELS_MSAA else ""
+    return f"{name}: {total:,}{unit} (max {top}/px)"
 
 
 def plot_history(ax, frame_or_history, row=None, col=None) -> HistoryArtists:

@@ -417,13 +417,15 @@ class SplitArtists(Artists):
                 poly.set_xy(part)
         self.line.set_data([0, trace.width], [v2y, v2y])
         self.point.set_data([s.u4], [v2y])
-        # The label sits just above the split line, on the side of point 4 towards the middle
-        # vertex: that part of the line is inside the triangle, so the label stays in the image.
-        right = s.u4 <= s.sorted_xy[1, 0]
+        # The label sits just below the split line, on the side of point 4 away from the
+        # middle vertex: outside the triangle there, so it hides none of the covered centres
+        # (above the line, towards the middle vertex, it lay on the row above the split).
+        away_left = s.u4 <= s.sorted_xy[1, 0]
         self.label.xy = (s.u4, v2y)
-        self.label.set_position((fs(0.5) if right else -fs(0.5), fs(0.5)))
-        self.label.set_horizontalalignment("left" if right else "right")
-        self.label.set_text(f"point 4: u4 = {s.u4:.2f}")
+        self.label.set_position((-fs(0.5) if away_left else fs(0.5), -fs(0.6)))
+        self.label.set_horizontalalignment("right" if away_left else "left")
+        self.label.set_verticalalignment("top")
+        self.label.set_text(f"point 4\nu4 = {s.u4:.2f}")  # two short lines: inside the grid
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
 

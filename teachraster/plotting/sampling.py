@@ -150,7 +150,19 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
                                 lw=0))  # fmt: skip
     a.legend(loc="lower left", fontsize=12, ncols=2)
     c.legend(loc="lower left", fontsize=12, ncols=2)
-    return SamplingArtists(sig, filt, stems, rec, ideal, spans)
+    art = SamplingArtists(sig, filt, stems, rec, ideal, spans)
+    _name_prefiltered(art, result)
+    return art
+
+
+def _name_prefiltered(art: SamplingArtists, result: SamplingResult) -> None:
+    """Without a prefilter (width 0) the "prefiltered" line is the signal itself: its key
+    says so, instead of naming one curve twice."""
+    legend = art.filtered.axes.get_legend()
+    if legend is None:
+        return
+    same = np.array_equal(result.filtered, result.signal)
+    legend.get_texts()[1].set_text("prefiltered: none (= signal)" if same else "prefiltered")
 
 
 def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:
@@ -159,6 +171,7 @@ def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:
     art.stems.set_data(result.sample_x, result.samples)
     art.reconstructed.set_ydata(result.reconstructed)
     art.ideal.set_ydata(result.ideal)
+    _name_prefiltered(art, result)
     for span in art.spans:  # a Rectangle in axes-fraction y (matplotlib >= 3.9)
         span.set_x(result.alias_from)
         span.set_width(1.0 - result.alias_from)

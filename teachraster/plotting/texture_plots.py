@@ -10,12 +10,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from matplotlib.cm import ScalarMappable
 from matplotlib.collections import LineCollection, PatchCollection
-from matplotlib.colors import BoundaryNorm, ListedColormap
+from matplotlib.colors import BoundaryNorm, ListedColormap, to_rgba
 from matplotlib.patches import Rectangle
 
 from ..pipeline.rendering.render_triangles import Frame
-from ..pipeline.texturing.texture_filters import nearest_level
+from ..pipeline.texturing.texture_filters import LevelsRead, nearest_level
 from .common import Artists, fs, lw, pixel_axes, rgba_image, set_image, show_image
 from .style import ERROR_CMAP, OKABE_ITO
 
@@ -154,6 +155,71 @@ def plot_lod(ax, lam, n_levels: int | None = None, *, colorbar: bool = True,
     if title:
         ax.set_title(title)
     return LodArtists(im, cbar, n)
+
+
+@dataclass
+class LevelsReadArtists(Artists):
+    """The levels-read map (an RGBA image), its colour bar (one tick per level) and the
+    number of levels."""
+
+    image: object
+    colorbar: object = None
+    levels: int = 0
+
+    def update(self, read: LevelsRead) -> None:
+        """Show what another filter (or tilt) reads in the same image."""
+        self.image = set_image(self.image, levels_read_image(read, self.levels))
+
+
+def levels_read_image(read: LevelsRead, n_levels: int) -> np.ndarray:
+    """(H, W, 4) RGBA: each pixel in its level's colour, two levels' colours mixed by their
+    weights where a filter blends them; transparent where nothing is read.
+
+    The levels and weights are the engine's (:class:`LevelsRead`), only coloured here.
+    """
+    palette = np.array([to_rgba(LEVEL_COLORS[i % len(LEVEL_COLORS)]) for i in range(n_levels)])
+    ok = ~np.isnan(read.first)
+    rgba = np.zeros((*read.first.shape, 4))
+    first = np.clip(read.first[ok].astype(np.intp), 0, n_levels - 1)
+    second = np.clip(read.second[ok].astype(np.intp), 0, n_levels - 1)
+    t = read.weight[ok][:, None]
+    rgba[ok] = (1 - t) * palette[first] + t * palette[second]
+    return rgba
+
+
+def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = True,
+                     title: str | None = "mip level(s) read") -> LevelsReadArtists:  # fmt: skip
+    """The mip level(s) a filter reads at each pixel, as the engine decides them.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    read : LevelsRead
+        From :func:`teachraster.pipeline.texturing.texture_filters.levels_read`.
+    n_levels : int
+        Levels in the pyramid (one colour, and one colour-bar tick, each).
+    colorbar : bool
+    title : str or None
+
+    Returns
+    -------
+    LevelsReadArtists
+        One flat colour per level where one level is read (the ``*_mipmap_nearest``
+        filters: bands with sharp seams); a mix of ⌊λ⌋'s and ⌊λ⌋ + 1's colours in proportion
+        to their weights where two are blended (the ``*_mipmap_linear`` filters and the
+        probes of ``anisotropic``, at the probes' finer λ').
+    """
+    im = show_image(ax, levels_read_image(read, n_levels), zorder=0.5)
+    cbar = None
+    if colorbar:
+        colours = [LEVEL_COLORS[i % len(LEVEL_COLORS)] for i in range(n_levels)]
+        key = ScalarMappable(BoundaryNorm(np.arange(n_levels + 1) - 0.5, n_levels),
+                             ListedColormap(colours))  # fmt: skip
+        cbar = ax.figure.colorbar(key, ax=ax, shrink=0.85, ticks=np.arange(n_levels),
+                                  label="level")  # fmt: skip
+    if title:
+        ax.set_title(title)
+    return LevelsReadArtists(im, cbar, n_levels)
 
 
 # -- the pyramid -------------------------------------------------------------------------------

@@ -20,21 +20,16 @@ from __future__ import annotations
 import numpy as np
 
 from ..pipeline.rendering.render_scenes import render_scene
-from ..pipeline.texturing.mip_pyramid import mipmap
-from ..pipeline.texturing.texture_filters import (
-    MIPMAP_FILTERS,
-    footprint_axes,
-    linear_levels,
-    mip_level,
-)
+from ..pipeline.texturing.texture_filters import MIPMAP_FILTERS, levels_read, mip_level
 from .bench import time_interleaved
 
-#: The filters the study compares by default, cheapest first.
+#: The filters the study compares by default: every filter, unmipmapped first.
 STUDY_FILTERS = (
     "nearest",
     "bilinear",
     "nearest_mipmap_nearest",
     "linear_mipmap_nearest",
+    "nearest_mipmap_linear",
     "trilinear",
     "anisotropic",
 )
@@ -178,26 +173,15 @@ def texel_reads(filter: str, ddx, ddy, texture_shape, max_anisotropy: int = 16) 
 
     Nearest reads 1, bilinear 4; a linear-between-levels filter reads its within-level count
     twice where λ falls between two levels (once where it is clamped); anisotropic reads a
-    trilinear footprint per probe.
+    trilinear footprint per probe. The levels and probes are the engine's
+    (:func:`~teachraster.pipeline.texturing.texture_filters.levels_read`).
 
     >>> texel_reads("trilinear", [[0.25, 0.0]], [[0.0, 0.25]], (8, 8))   # λ = 1: one level
     4.0
     """
     within = 1 if filter.startswith("nearest") else 4
-    if filter in ("nearest", "bilinear") or filter.endswith("mipmap_nearest"):
-        return float(within)
-    px, py = footprint_axes(ddx, ddy, texture_shape)
-    q = len(mipmap(np.zeros(texture_shape[:2]))) - 1
-    pmax, pmin = np.maximum(px, py), np.minimum(px, py)
-    probes = np.ones(len(px))
-    if filter == "anisotropic":
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = np.minimum(np.ceil(pmax / pmin), max_anisotropy)
-        probes = np.where(pmax <= 1, 1, ratio)
-        pmax = pmax / probes
-    with np.errstate(divide="ignore"):
-        _, _, t = linear_levels(np.log2(pmax), q)
-    return float(np.mean(probes * within * np.where(t > 0, 2, 1)))
+    read = levels_read(filter, ddx, ddy, texture_shape, max_anisotropy)
+    return float(np.mean(read.probes * within * np.where(read.weight > 0, 2, 1)))
 
 
 def filter_study(

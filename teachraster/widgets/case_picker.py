@@ -18,10 +18,19 @@ import html
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.patches import Rectangle
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
-from .common import Shown, close_tree, labelled, style_context, title_html
+from .common import (
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
@@ -74,14 +83,86 @@ def thin_lines(shape) -> bool:
     return max(shape) > THIN_ABOVE
 
 
+#: Vertex dots of the picker's outlines (points): small, as in the lesson's own figures, so that
+#: a pixel centre at a shared vertex (the fan's hub) is not hidden under a pile of dots.
+VERTEX_DOT = 3
+
+
 def outline(ax, xy, *, thin: bool = False):
-    """A triangle's outline without arrows or labels; ``thin``: a fine line and small vertex
-    dots, so that the pixels under it stay visible on a large grid."""
+    """A triangle's outline without arrows or labels, with small vertex dots; ``thin``: a
+    fine, half-transparent line too, so that the pixels under it stay visible on a large
+    grid."""
     art = plot_triangle(ax, xy, labels=False, arrows=False)
+    art.vertices.set(markersize=VERTEX_DOT)
     if thin:
         art.outline.set(linewidth=0.6, alpha=0.6)
-        art.vertices.set(markersize=3, alpha=0.6)
+        art.vertices.set(alpha=0.6)
     return art
+
+
+#: The view of a case: at least this many pixels each way (a tiny triangle keeps some grid
+#: around it), and at most this many times as wide as high (a long sliver shows its left end,
+#: in pixels large enough to see, instead of a strip a few screen pixels high).
+MIN_VIEW, MAX_ASPECT = 6, 3
+
+
+def view_box(triangles, shape, *masks) -> tuple[int, int, int, int, bool]:
+    """Rows r0:r1 and columns c0:c1 a panel shows, and whether columns were cut off.
+
+    The bounding box of the triangles and of the pixels set in ``masks``, one pixel around
+    it, grown to :data:`MIN_VIEW` pixels each way and clipped to the image of ``shape``;
+    a box more than :data:`MAX_ASPECT` times as wide as high keeps its first columns.
+
+    >>> view_box([[[0.5, 1.49], [60.5, 1.5], [0.5, 1.51]]], (4, 64))
+    (0, 4, 0, 12, True)
+    >>> view_box([[[3.5, 3.5], [15.5, 3.5], [3.5, 15.5]]], (20, 20))
+    (2, 17, 2, 17, False)
+    """
+    h, w = shape
+    xy = np.asarray(triangles, dtype=float).reshape(-1, 2)
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    for mask in masks:
+        rows, cols = np.nonzero(np.asarray(mask))
+        if rows.size:
+            lo = np.minimum(lo, [cols.min(), rows.min()])
+            hi = np.maximum(hi, [cols.max() + 1, rows.max() + 1])
+
+    def span(a, b, size):
+        a, b = max(int(np.floor(a)) - 1, 0), min(int(np.ceil(b)) + 1, size)
+        grow = max(MIN_VIEW - (b - a), 0)
+        a = max(min(a - grow // 2, size - MIN_VIEW), 0)
+        return a, min(max(b, a + MIN_VIEW), size)
+
+    (c0, c1), (r0, r1) = span(lo[0], hi[0], w), span(lo[1], hi[1], h)
+    cut = c1 - c0 > MAX_ASPECT * (r1 - r0)
+    if cut:
+        c1 = c0 + MAX_ASPECT * (r1 - r0)
+    return r0, r1, c0, c1, cut
+
+
+def shared_vertex_pixels(triangles, shape, least: int = 3) -> list[tuple[int, int]]:
+    """(row, col) of the pixels whose centre is a vertex of at least ``least`` triangles (a
+    fan's hub): the pixel the case is about, drawn on top of the outlines meeting there.
+
+    >>> fan = [[[9.5, 9.5], [12.5, 9.5], [9.5, 12.5]], [[9.5, 9.5], [9.5, 12.5], [6.5, 9.5]],
+    ...        [[9.5, 9.5], [6.5, 9.5], [9.5, 6.5]]]
+    >>> shared_vertex_pixels(fan, (20, 20))
+    [(9, 9)]
+    """
+    h, w = shape
+    count: dict = {}
+    for tri in np.asarray(triangles, dtype=float):
+        for x, y in {tuple(v) for v in tri.tolist()}:
+            j, i = x - 0.5, y - 0.5
+            if j == int(j) and i == int(i) and 0 <= i < h and 0 <= j < w:
+                count[(int(i), int(j))] = count.get((int(i), int(j)), 0) + 1
+    return sorted(rc for rc, n in count.items() if n >= least)
+
+
+def mark_pixel(ax, rc, color) -> None:
+    """Pixel ``rc`` filled with ``color`` above every outline, and outlined in black."""
+    i, j = rc
+    ax.add_patch(Rectangle((j, i), 1, 1, fc=color, ec="black", lw=2.5, zorder=6))
 
 
 def plot_owners(
@@ -203,6 +284,12 @@ class CasePicker:
     copies, naive_copies : (h, w) int or None
         How many copies cover each pixel around the first copy: ours, and the naive version's
         (None when it has no per-copy coverage).
+    view : (r0, r1, c0, c1) or None
+        The rows and columns both panels show (:func:`view_box`; None for copies, which show
+        :func:`copies_box`).
+    hubs : list of (row, col)
+        Pixels whose centre is a vertex of several triangles (:func:`shared_vertex_pixels`),
+        filled and outlined on top of the outlines.
     info : ipywidgets.HTML
 
     Examples
@@ -226,7 +313,7 @@ class CasePicker:
             raise ValueError(f"case must be one of the screen-space cases {names}, got {case!r}")
         self.backend = resolve_backend(backend)
         self.case = widgets.Dropdown(options=names, value=case, description="case",
-                                     layout=widgets.Layout(width="420px"))  # fmt: skip
+                                     layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.method = widgets.ToggleButtons(options=hardcases.FILL_METHODS, value=method)
         self._style = style
         with style_context(style):
@@ -244,7 +331,7 @@ class CasePicker:
             "Left: our fill, each pixel in the colour of the triangle that covers it. Right: "
             "what a naive rasteriser covers. The key is under the case's text.",
         )
-        controls = widgets.HBox([self.case, labelled("method", self.method)])
+        controls = control_row([self.case, labelled("method", self.method)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     def _run(self) -> None:
@@ -280,13 +367,24 @@ class CasePicker:
             for ax in self.axes:
                 ax.clear()
             tris = self._case.triangles
+            self.hubs, self.view = [], None
             # the case and the method above both panels; short two-line titles under it, so
             # that the two panels' titles never run into each other
             self.fig.suptitle(f"{self.case.value}, {self.method.value} fill")
             if self.copies is not None:
                 self._draw_copies()
                 return
-            thin = thin_lines(self.owner.shape)
+            # each case zoomed to its own box (a fan in the middle of a 20 x 20 image, a 60 px
+            # sliver one row high): the pixels the case is about, large enough to see
+            shown = [self.owner != NONE] + (
+                [] if self.naive_counts is None else [self.naive_counts > 0]
+            )
+            r0, r1, c0, c1, cut = view_box(tris, self.owner.shape, *shown)
+            if cut:
+                self.fig.suptitle(f"{self.case.value}, {self.method.value} fill: columns "
+                                  f"{c0}–{c1 - 1} of {self.owner.shape[1]}")  # fmt: skip
+            self.view = (r0, r1, c0, c1)
+            thin = thin_lines((r1 - r0, c1 - c0))
             plot_owners(self.axes[0], self.owner, tris, thin=thin)
             self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
             ax = self.axes[1]
@@ -302,6 +400,21 @@ class CasePicker:
                 for xy in tris:
                     outline(ax, xy, thin=thin)
                 ax.set_title(f"naive:\n{int((n > 0).sum())} px, max {int(n.max())} hit(s)")
+            # a centre at a vertex of many triangles (the fan's hub) on top of their outlines
+            self.hubs = shared_vertex_pixels(tris, self.owner.shape)
+            for rc in self.hubs:
+                mark_pixel(self.axes[0], rc, self._owner_fill(self.owner[rc]))
+                if self.naive_counts is not None:
+                    k = self.naive_counts[rc]
+                    mark_pixel(
+                        ax, rc, "white" if k == 0 else COLORS["fill" if k == 1 else "outside"]
+                    )
+            for a in self.axes:
+                a.set(xlim=(c0, c1), ylim=(r1, r0))
+
+    @staticmethod
+    def _owner_fill(k) -> str:
+        return "white" if k == NONE else COLORS["outside"] if k == SEVERAL else owner_color(int(k))
 
     def _draw_copies(self) -> None:
         n, first = len(self.offsets), self._case.triangles[0]
@@ -346,10 +459,18 @@ class CasePicker:
             return (f"<b>key</b>: separate copies of one triangle (not a mesh), each moved back "
                     f"onto the first: {swatch(EVERY_COPY, 'covered by every copy')}, "
                     f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}")  # fmt: skip
-        return (f"<b>key</b>: left, one colour per triangle "
-                f"({swatch(owner_color(0), '')}{swatch(owner_color(1), '')}"
-                f"{swatch(owner_color(2), '')}…); right, {swatch(COLORS['fill'], 'covered once')}"
-                f"; both, {swatch(COLORS['outside'], 'covered twice or more')}")  # fmt: skip
+        key = (f"<b>key</b>: left, one colour per triangle "
+               f"({swatch(owner_color(0), '')}{swatch(owner_color(1), '')}"
+               f"{swatch(owner_color(2), '')}…); right, {swatch(COLORS['fill'], 'covered once')}"
+               f"; both, {swatch(COLORS['outside'], 'covered twice or more')}")  # fmt: skip
+        for i, j in self.hubs:
+            owner = int(self.owner[i, j])
+            who = (
+                f"triangle {owner}" if owner >= 0 else "no triangle" if owner == NONE else "several"
+            )
+            key += (f"; outlined in black, pixel ({i}, {j}): its centre is a vertex of several "
+                    f"triangles, ours gives it to {swatch(self._owner_fill(owner), who)}")  # fmt: skip
+        return key
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

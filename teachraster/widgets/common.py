@@ -80,9 +80,54 @@ def labelled(text: str, control) -> widgets.HBox:
     # row too narrow for all, the buttons wrap instead (a row that wraps keeps them on one line)
     label = widgets.Label(text, layout=widgets.Layout(width="auto", margin="0 8px 0 0",
                                                       flex="0 0 auto"))  # fmt: skip
-    return widgets.HBox(
-        [label, control], layout=widgets.Layout(align_items="center", margin="0 24px 0 0")
-    )
+    # in a column narrower than label and control together (a 315-px column at 150 % zoom on
+    # a 1024 x 768 screen), the control goes under its label and is never wider than the
+    # column, instead of running past its edge (the TileExplorer's traversal menu did)
+    if not control.layout.max_width:
+        control.layout.max_width = "100%"
+    return widgets.HBox([label, control], layout=widgets.Layout(
+        flex_flow="row wrap", align_items="center", margin="0 24px 0 0", max_width="100%"))  # fmt: skip
+
+
+#: Narrowest a picture of a row of pictures gets before it wraps under its neighbour (CSS px).
+READABLE_PX = 300
+
+
+def control_row(children, **layout) -> widgets.HBox:
+    """A row of controls that wraps whole controls onto the next line when the column is too
+    narrow for all of them.
+
+    An HBox that does not wrap shrinks its children, or pushes them past the column's edge:
+    at 1024 x 768 with JupyterLab's file browser open (a 592-px column) and at 150 % zoom
+    the browser probe of 2026-12-01 found the FrameInspector's ``samples`` and ``depth
+    test`` off screen and the PlaneExplorer's sliders cut (issue 31).
+    """
+    return widgets.HBox(list(children), layout=widgets.Layout(
+        flex_flow="row wrap", align_items="center", max_width="100%", **layout))  # fmt: skip
+
+
+def picture_row(children) -> widgets.HBox:
+    """Pictures (and their notes) side by side where the column holds them, one under the
+    other where it does not.
+
+    In a row that does not wrap, the flex layout shrinks each picture to share the width: the
+    FrameInspector's frame became a 105-130 px thumbnail beside its history chart at
+    1024 x 768. Wrapping keeps each at its own width, or the column's when that is less
+    (the pictures scale with ``max-width: 100%``, ``height: auto``); ``min-width`` keeps a
+    picture from shrinking below :data:`READABLE_PX` while its neighbour still fits beside it.
+    """
+    for child in children:
+        if isinstance(child, widgets.DOMWidget):
+            child.layout.min_width = f"min({READABLE_PX}px, 100%)"
+            child.layout.max_width = "100%"
+    return widgets.HBox(list(children), layout=widgets.Layout(
+        flex_flow="row wrap", align_items="flex-start", max_width="100%"))  # fmt: skip
+
+
+def fit_width(layout: widgets.Layout) -> widgets.Layout:
+    """``layout`` (of a control with a fixed width) that never gets wider than its column."""
+    layout.max_width = "100%"
+    return layout
 
 
 def close_tree(widget) -> None:

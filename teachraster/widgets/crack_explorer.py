@@ -22,6 +22,9 @@ import operator
 from ..core.validate import as_size
 from .explorable import Explorable, esm_source
 
+#: The default seed: its first pair shows the float DDA giving ties to the wrong triangle.
+DEFAULT_SEED = 112
+
 
 class CrackExplorer(Explorable):
     """Random pairs of triangles sharing an edge, filled three ways in the page.
@@ -32,8 +35,10 @@ class CrackExplorer(Explorable):
         The grid of each panel (at most 40 each: three panels share a notebook column). The
         stored pair that cracks needs 16 x 16 (the default); on a smaller grid it is not offered.
     seed : int
-        Seed of the page's random pairs (the same seed draws the same pairs; the default's
-        first pair shows the float DDA giving a tie to the wrong triangle).
+        Seed of the page's random pairs (the same seed draws the same pairs). The default,
+        112, was found by searching seeds for a first pair of two triangles of fair size
+        whose shared edge the float DDA gets wrong: it gives three of its ties to the wrong
+        triangle (``tests/test_explorables_js.py`` checks it).
 
     Attributes
     ----------
@@ -58,7 +63,7 @@ class CrackExplorer(Explorable):
     noun = "crack explorer"
     title = "Ties on a shared edge: stolen pixels, cracks and double draws"
 
-    def __init__(self, width: int = 16, height: int = 16, *, seed: int = 9) -> None:
+    def __init__(self, width: int = 16, height: int = 16, *, seed: int = DEFAULT_SEED) -> None:
         width, height = as_size("width", width), as_size("height", height)
         if max(width, height) > 40:
             raise ValueError(f"width and height must be at most 40, got {width}x{height}")

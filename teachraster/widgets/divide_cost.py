@@ -10,15 +10,42 @@ The slider sets that price; the chart re-prices every variant from its operation
 
 from __future__ import annotations
 
+import numbers
+
 import ipywidgets as widgets
 
 from ..plotting.pareto import plot_pareto, update_pareto
 from ..study.operation_counts import CYCLES_1990S
-from .common import Shown, labelled, style_context, title_html
+from .common import (
+    Shown,
+    control_row,
+    fit_width,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 #: The two error measures offered: the study's largest error and its mean.
 ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
+
+#: The slider's divide costs in cycles, 1 to 128: about a quarter of an octave apart, and
+#: holding the prices the lesson prints (1, 2, 9, and the 1990s model's 30). A starting price
+#: not among them is added, so the slider starts exactly where the lesson's model is.
+DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 9, 12, 16, 20, 24, 30, 40, 48, 64, 80, 96, 128)
+
+
+def divide_positions(divide: float) -> list[float]:
+    """:data:`DIVIDE_CYCLES` with ``divide`` among them, in order.
+
+    >>> divide_positions(30)[:3], 30.0 in divide_positions(30), 7.0 in divide_positions(7)
+    ([1.0, 1.5, 2.0], True, True)
+    """
+    if isinstance(divide, bool) or not isinstance(divide, numbers.Real):
+        raise TypeError(f"divide must be a number of cycles, got {divide!r}")
+    if not 0 < divide < float("inf"):
+        raise ValueError(f"divide must be a positive finite number of cycles, got {divide}")
+    return sorted({float(v) for v in DIVIDE_CYCLES} | {float(divide)})
 
 
 def short_name(variant: str) -> str:
@@ -45,14 +72,16 @@ class DivideCostExplorer(Shown):
         (``ops.with_counts(bench.run(...))`` filtered to ``group == "interpolation"``).
     divide : float
         Starting cost of a divide in cycles of the operation-count model (an addition costs 1,
-        a multiply 3: :data:`~teachraster.study.operation_counts.CYCLES_1990S`).
+        a multiply 3: :data:`~teachraster.study.operation_counts.CYCLES_1990S`, 30); the slider
+        starts there exactly.
     error : {"max error", "mean error"}
     backend : {"auto", "ipympl", "image"}
     style : str, optional
 
     Attributes
     ----------
-    divide : ipywidgets.FloatLogSlider
+    divide : ipywidgets.SelectionSlider
+        Over :func:`divide_positions` (:data:`DIVIDE_CYCLES` and the starting price).
     error : ipywidgets.ToggleButtons
     front : list of str
         The variants on the front, cheapest first, for the current settings.
@@ -69,9 +98,11 @@ class DivideCostExplorer(Shown):
         if not self.rows:
             raise ValueError("rows must hold the study's interpolation rows")
         self.backend = resolve_backend(backend)
-        self.divide = widgets.FloatLogSlider(value=divide, base=2, min=0, max=7, step=0.25,
-                                             description="divide =", readout_format=".3g",
-                                             layout=widgets.Layout(width="420px"))  # fmt: skip
+        # a list of prices, not a log grid: 2^(k/4) skips 30, and the slider snapped the
+        # model's 30 to 32 while the lesson printed 30 (review r5, 06-2)
+        self.divide = widgets.SelectionSlider(
+            options=[(f"{v:g}", v) for v in divide_positions(divide)], value=float(divide),
+            description="divide =", layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         with style_context(style):
             self.fig = new_figure((9.0, 5.5), self.backend)
@@ -87,7 +118,7 @@ class DivideCostExplorer(Shown):
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
             "Vermillion: the Pareto front, the variants no other beats on both cost and error.",
         )
-        controls = widgets.HBox([self.divide, labelled("error", self.error)])
+        controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     @property
@@ -127,7 +158,8 @@ class DivideCostExplorer(Shown):
         if quake is not None:
             saving = (f"; Quake's N=16 costs <b>{quake['cycles'] / exact:.0%}</b> of "
                       "perspective-correct")  # fmt: skip
-        return (f"divide = {self.divide.value:.3g} cycles: the divide is <b>{share:.0%}</b> of "
+        cycles = "cycle" if self.divide.value == 1 else "cycles"
+        return (f"divide = {self.divide.value:.3g} {cycles}: the divide is <b>{share:.0%}</b> of "
                 f"perspective-correct's cost; perspective-correct costs <b>{ratio:.3g}×</b> "
                 f"affine{saving}. "
                 f"Front, cheapest first: {names}")  # fmt: skip

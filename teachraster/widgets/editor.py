@@ -17,8 +17,10 @@ from ..plotting.blitting import MOVING
 from .common import (
     Holdable,
     close_tree,
+    control_row,
     display_with_fallback,
     fill_axes,
+    fit_width,
     labelled,
     standin_html,
     style_context,
@@ -158,7 +160,7 @@ class TriangleEditor(Holdable):
         # -- controls ---------------------------------------------------------------------------
         xy, w = self.tri.xy, self.tri.w
         style_kw = {"description_width": "95px"}
-        layout = widgets.Layout(width="320px")
+        layout = fit_width(widgets.Layout(width="320px"))
         self.x, self.y, self.w, columns = [], [], [], []
         for i in range(3):
             x = widgets.FloatSlider(value=on_grid(xy[i, 0]), min=on_grid(min(0.0, xy[i, 0]), -1),
@@ -203,7 +205,7 @@ class TriangleEditor(Holdable):
             title = title_html("Edit a triangle: its fill and its edge functions", hint + ".")
         figures = [self.display.widget, *([self.interp_display.widget] * comparison)]
         self.widget = widgets.VBox([
-            title, widgets.HBox(columns), labelled("method", self.method), self.info, *figures,
+            title, control_row(columns), labelled("method", self.method), self.info, *figures,
         ])  # fmt: skip
 
     def _make_figures(self) -> None:

@@ -8,13 +8,23 @@ import numpy as np
 
 from ..pipeline.geometry.camera import Camera
 from ..pipeline.rendering.render_scenes import render
+from ..pipeline.texturing.mip_pyramid import level_sizes
 from ..pipeline.texturing.texture import TEXTURE_FILTERS, checkerboard, sample
-from ..pipeline.texturing.texture_filters import mip_level
-from ..plotting import plot_error_heatmap, plot_image, plot_lod
+from ..pipeline.texturing.texture_filters import levels_read, mip_level
+from ..plotting import plot_error_heatmap, plot_image, plot_levels_read
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
 from .ahead import TogglesAhead
-from .common import Shown, close_tree, font_scale, later, style_context, title_html
+from .common import (
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    font_scale,
+    later,
+    style_context,
+    title_html,
+)
 from .display import COMPARISON_DPI, column_inches, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -56,8 +66,11 @@ def explorer_axes(fig, height: int, width: int) -> list:
 class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
 
-    Three panels: the filtered image, the mip level each pixel reads (GL's nearest-mip rule,
-    one colour per level; level 0 everywhere for ``nearest`` and ``bilinear``) and the error against the texture averaged over each pixel's true
+    Three panels: the filtered image, the mip level(s) each pixel reads (as the engine
+    decides them, :func:`~teachraster.pipeline.texturing.texture_filters.levels_read`: one
+    colour per level, two levels' colours mixed by their weights where a filter blends them,
+    the probes' finer levels for ``anisotropic``, level 0 everywhere for ``nearest`` and
+    ``bilinear``) and the error against the texture averaged over each pixel's true
     footprint (:func:`teachraster.study.texture_truth.footprint_average`). The square's
     texture repeats ``repeats`` times, so tilting it far makes its checks much smaller than a
     pixel: the moiré of ``nearest`` and ``bilinear``, the blur of ``trilinear``, the sharpness
@@ -86,9 +99,9 @@ class FilterExplorer:
     image, truth, error : (H, W, 3), (H, W, 3), (H, W) arrays on show
     lod : (H, W) array
         λ per pixel.
-    levels_read : (H, W) array
-        What the level panel shows: λ for the mipmapped filters, 0 where ``nearest`` and
-        ``bilinear`` read level 0 only.
+    levels_read : LevelsRead
+        What the level panel shows: the level(s) the filter shown reads at each pixel, their
+        weights and probes (NaN where uncovered).
     rms : float
         Root-mean-square error against the truth.
 
@@ -125,6 +138,7 @@ class FilterExplorer:
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
         self.texture = checkerboard(8, 64)
+        self.n_levels = len(level_sizes(*self.texture.shape[:2]))
         self.repeats, self.samples = repeats, samples
         self.camera = Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0,
                              near=0.05, far=50.0)  # fmt: skip
@@ -133,7 +147,7 @@ class FilterExplorer:
         # in the page, coalesced: the kernel renders the latest angle, never a queue
         self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
                                description="tilt (°)", readout_format=".0f",
-                               layout=widgets.Layout(width="420px"))  # fmt: skip
+                               layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self._truths: dict = {}
         self._read_counts: dict = {}
         self._render()
@@ -142,12 +156,13 @@ class FilterExplorer:
             axes = explorer_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
-                "lod": plot_lod(axes[1], self.levels_read, 8),
+                "lod": plot_levels_read(axes[1], self.levels_read, self.n_levels),
                 "error": plot_error_heatmap(
                     axes[2], self.image, self.truth, label="|error|", title=False
                 ),  # fmt: skip
             }
-            for ax, name in zip(axes, ("filtered", "mip level read", "error vs footprint mean")):
+            names = ("filtered", "mip level(s) read", "error vs footprint mean")
+            for ax, name in zip(axes, names):
                 ax.set_title(name)
                 ax.set_xticks([])
                 ax.set_yticks([])
@@ -170,7 +185,7 @@ class FilterExplorer:
             "Tilt the square until its checks are smaller than a pixel, then compare filters: "
             "moiré without mipmaps, blur with trilinear, detail kept by anisotropic filtering.",
         )
-        self.widget = widgets.VBox([title, widgets.HBox([self.tilt, self.filter]),
+        self.widget = widgets.VBox([title, control_row([self.tilt, self.filter]),
                                     *info_widgets, self.display.widget])  # fmt: skip
         self._ahead = None
         #: the other filters' pictures at the tilt on show, drawn while the kernel idles
@@ -192,10 +207,8 @@ class FilterExplorer:
         else:
             self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy)
         self.lod = mip_level(frame.ddx, frame.ddy, self.texture.shape)
-        if f in ("nearest", "bilinear"):  # no mipmaps: level 0 at every pixel, whatever λ is
-            self.levels_read = np.where(np.isfinite(self.lod), 0.0, np.nan)
-        else:  # GL's nearest level of λ (the mipmap-linear filters blend it with the next)
-            self.levels_read = self.lod
+        # the engine's choice of levels for this filter, only coloured by the panel
+        self.levels_read = levels_read(f, frame.ddx, frame.ddy, self.texture.shape)
         self.frame, self.shown_tilt = frame, tilt
         if self._drafting() and tilt not in self._truths:
             # a draft leaves the error out rather than wait for a new truth (at the release)

@@ -17,6 +17,7 @@ import html
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.patheffects import withStroke
 
 from ..pipeline.debugging.overlays import KINDS
 from ..pipeline.rendering.render_scenes import render
@@ -24,7 +25,16 @@ from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
 from ..plotting.frame_debug import fit_title
-from .common import Holdable, Shown, close_tree, style_context, title_html
+from .common import (
+    Holdable,
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    picture_row,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
 #: The views the chooser offers: the shaded image, then every overlay.
@@ -97,6 +107,17 @@ def click_image(alt: str = ""):
         alt = traitlets.Unicode("").tag(sync=True)
 
     return ClickImage(alt=alt)
+
+
+def marker_xy(row: int, col: int, reach: float = 3.0):
+    """(x, y) of the chosen pixel's marker: its outline, then four ticks ``reach`` pixels
+    long pointing at it from outside (NaN separates the pieces, one line to update)."""
+    r, c, gap = row, col, np.nan
+    x = [c, c + 1, c + 1, c, c, gap, c - reach, c - 0.5, gap, c + 1.5, c + 1 + reach, gap,
+         c + 0.5, c + 0.5, gap, c + 0.5, c + 0.5]  # fmt: skip
+    y = [r, r, r + 1, r + 1, r, gap, r + 0.5, r + 0.5, gap, r + 0.5, r + 0.5, gap,
+         r - reach, r - 0.5, gap, r + 1.5, r + 1 + reach]  # fmt: skip
+    return x, y
 
 
 def _checked_frames(frames) -> dict | None:
@@ -176,11 +197,27 @@ class FrameInspector(Holdable):
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
         choices = list(self.frames) if self.frames else list(SCENES)
-        self.scene = widgets.Dropdown(options=choices, value=scene, description="scene")
-        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view")
-        self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples")
-        self.depth_test = widgets.Checkbox(value=depth_test, description="depth test", indent=False)
-        self.glass = widgets.Checkbox(value=glass, description="glass (blend over)", indent=False)
+        # narrower than ipywidgets' 300 px (the check boxes as wide as their text): at
+        # 1024 x 768 with the file browser open (a 592-px column) the controls took 5 lines
+        menu, short = widgets.Layout(width="260px"), widgets.Layout(width="150px")
+        self.scene = widgets.Dropdown(options=choices, value=scene, description="scene",
+                                      layout=fit_width(menu))  # fmt: skip
+        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view",
+                                     layout=menu)  # fmt: skip
+        self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples",
+                                        layout=short)  # fmt: skip
+        self.depth_test = widgets.Checkbox(
+            value=depth_test,
+            description="depth test",
+            indent=False,
+            layout=widgets.Layout(width="auto"),
+        )
+        self.glass = widgets.Checkbox(
+            value=glass,
+            description="glass (blend over)",
+            indent=False,
+            layout=widgets.Layout(width="auto"),
+        )
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
@@ -212,11 +249,12 @@ class FrameInspector(Holdable):
             "Choose a view; click a pixel (or move row and col) to see every triangle on the "
             "way to it, in submission order, and the test that stopped each.",
         )
-        controls = widgets.HBox([self.scene, self.view, self.samples, self.depth_test,
-                                 self.glass])  # fmt: skip
-        figures = widgets.HBox([self.frame_widget, self.hist_display.widget])
+        # what is shown (scene, view) and how it is rendered: two rows, each wrapping
+        controls = widgets.VBox([control_row([self.scene, self.view]),
+                                 control_row([self.samples, self.depth_test, self.glass])])  # fmt: skip
+        figures = picture_row([self.frame_widget, self.hist_display.widget])
         self.widget = widgets.VBox(
-            [title, controls, widgets.HBox([self.row, self.col]), figures, self.table]
+            [title, controls, control_row([self.row, self.col]), figures, self.table]
         )
 
     # -- state ---------------------------------------------------------------------------
@@ -250,9 +288,11 @@ class FrameInspector(Holdable):
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
         fit_title(ax)
-        r, c = self.row.value, self.col.value
-        self.marker = ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
-                              color="#D55E00", lw=2, zorder=6)[0]  # fmt: skip
+        # the pixel's outline and four ticks pointing at it, with a white halo: one pixel of
+        # a 64-pixel frame must be found on a projector, on any colour
+        self.marker = ax.plot(*marker_xy(self.row.value, self.col.value), color="#D55E00",
+                              lw=2, zorder=6, solid_capstyle="butt",
+                              path_effects=[withStroke(linewidth=4.5, foreground="white")])[0]  # fmt: skip
 
     def _draw_history(self) -> None:
         self.hist_ax.clear()
@@ -316,8 +356,7 @@ class FrameInspector(Holdable):
         if self._quiet:
             return
         self._show_history()
-        r, c = self.row.value, self.col.value
-        self.marker.set_data([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r])
+        self.marker.set_data(*marker_xy(self.row.value, self.col.value))
         self._draw_history()
         self._refresh()
 

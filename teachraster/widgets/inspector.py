@@ -6,16 +6,18 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..core.fill import rasterize
+from ..core.trace import edge_name
 from ..core.triangle import Triangle
 from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
-from ..plotting.antialiasing import sample_data
+from ..plotting.antialiasing import edge_value_text, sample_data
 from .common import (
     SAMPLE_PATTERNS,
     Holdable,
     Shown,
     close_tree,
+    control_row,
     pattern_samples,
     style_context,
     title_html,
@@ -98,8 +100,10 @@ class PixelInspector(Holdable):
             "Pick a pixel: each of its samples is tested against the edges like a pixel "
             "centre (top-left rule included). Change the pattern to see what it catches.",
         )
-        controls = widgets.HBox([self.pattern, self.row, self.col])
-        self.widget = widgets.VBox([title, controls, self.display.widget])
+        controls = control_row([self.pattern, self.row, self.col])
+        #: every sample's edge values in a table (a label per sample fits up to 4 only)
+        self.table = widgets.HTML(self._table_html())
+        self.widget = widgets.VBox([title, controls, self.display.widget, self.table])
 
     def _compute(self) -> None:
         samples = pattern_samples(self.pattern.value)
@@ -150,7 +154,34 @@ class PixelInspector(Holdable):
             self.pixel.update(self.result, self.row.value, self.col.value,
                               triangles=self._pixel_triangles())  # fmt: skip
         self._mark()
+        self.table.value = self._table_html()
         self.display.refresh()
+
+    def _table_html(self) -> str:
+        """The chosen pixel's samples: offset, edge values (px², positive = inside) and
+        whether covered; a value exactly 0 is on its edge, and the sample is covered only if
+        that edge is a top or left edge. Empty for a scene (its samples show triangles)."""
+        trace = getattr(self.result, "trace", None)
+        if trace is None or getattr(trace, "samples", None) is None:
+            return ""
+        r, c = self.row.value, self.col.value
+        values = trace.samples.edge_values(r, c)
+        names = [edge_name(a, b) for a, b in trace.edges]
+        covered = self.result.sample_coverage[r, c]
+        offsets = self.result.samples
+        head = "".join(f"<th>{n}</th>" for n in ("sample", "offset (x, y)", *names, "covered"))
+        rows = []
+        for s, (e, (ox, oy)) in enumerate(zip(values, offsets)):
+            cells = "".join(
+                f"<td>{edge_value_text(v)}{' (on the edge)' if v == 0 else ''}</td>" for v in e
+            )
+            rows.append(f"<tr><td>s{s}</td><td>({ox:.4g}, {oy:.4g})</td>{cells}"
+                        f"<td>{'yes' if covered[s] else 'no'}</td></tr>")  # fmt: skip
+        return (
+            f"<details{' open' if len(offsets) > 4 else ''}><summary>pixel ({r}, {c}): every sample's edge values (px², positive = "
+            f"inside)</summary><table class='tr-samples' style='font-variant-numeric:"
+            f"tabular-nums'><tr>{head}</tr>{''.join(rows)}</table></details>"
+        )
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

@@ -14,7 +14,13 @@ import ipywidgets as widgets
 from ..core.line_rules import RULES
 from ..core.lines import rasterize_line
 from ..plotting.lines import LineView
-from .common import Shown, labelled, style_context, title_html
+from .common import (
+    Shown,
+    control_row,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
 
@@ -69,7 +75,7 @@ class LinePlayer(Shown):
             "A line, step by step",
             "One step per column (x-major) or row: which pixel is lit, and why.",
         )
-        controls = widgets.HBox([self.play, self.slider, labelled("rule", self.rule)])
+        controls = control_row([self.play, self.slider, labelled("rule", self.rule)])
         self.widget = widgets.VBox([title, controls, self.caption, self.display.widget])
 
     @property

@@ -23,7 +23,15 @@ from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.common import screen_ticks
-from .common import Shown, close_tree, style_context, title_html
+from .common import (
+    Shown,
+    close_tree,
+    control_row,
+    fit_width,
+    picture_row,
+    style_context,
+    title_html,
+)
 from .display import new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -189,9 +197,9 @@ class PlaneExplorer:
             "stay straight and parallel; the 3 × 3 system, the set-up matrix M and the "
             "coefficients A, B, C, D follow.",
         )
-        rows = [widgets.HBox([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
-        self.widget = widgets.VBox([title, *rows, widgets.HBox([self.display.widget,
-                                                                 *info_widgets])])  # fmt: skip
+        rows = [control_row([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
+        self.widget = widgets.VBox([title, *rows, picture_row([self.display.widget,
+                                                               *info_widgets])])  # fmt: skip
         if self.backend != "ipympl":
             # the positions of the slider moved last, drawn while the kernel idles
             self.display.ahead([*self.x, *self.y, *self.f], self)
@@ -200,7 +208,7 @@ class PlaneExplorer:
         def slider(value, lo, hi, name):
             # in the page, coalesced: the kernel renders the latest value, never a queue
             s = LiveSlider(value=value, min=lo, max=hi, step=0.25, description=name,
-                           layout=widgets.Layout(width="260px"))  # fmt: skip
+                           layout=fit_width(widgets.Layout(width="260px")))  # fmt: skip
             s.observe(lambda change: self.update(), "value")
             s.on_release(self.update)  # a drag ended on a draft: the full picture
             return s

@@ -197,8 +197,11 @@ class PredictPixels(FigurePrediction):
     style : str, optional
         The plotting style of the picture.
     cell, picked : str
-        What a cell is (singular: "pixel", "tile", "level") and what the answer's cells are
-        ("lit", "rejected", "read"), for the instruction and the verdict.
+        What a cell is (singular: "pixel", "tile", "level") and what the answer's cells are,
+        as the question asks it ("lit", "rejected", "left as gaps", "drawn twice"): the
+        widget's own lines read "Click the pixels you expect {picked}" and "The answer: 12
+        pixels {picked}". Name what is asked: the default "lit" contradicts a question about
+        gaps or about pixels drawn twice.
 
     Attributes
     ----------
@@ -313,6 +316,10 @@ class PredictPoint(FigurePrediction):
     step : float, optional
         How far one arrow key moves the marker (Shift + arrow: ten steps), in data units:
         1 on an axis of integer codes. Default: a hundredth of the smaller Axes span.
+    readout : str, optional
+        Label a live readout of the marker's x while it moves, e.g. "code": the figure shows
+        "code 186" beside the marker (to ``step``'s decimals) and the verdict repeats it.
+        Default: no readout (where reading the answer off the marker would give it away).
     ray_from : (2,) array-like, optional
         The reveal also draws the ray from this point through the answer (the eye ray that
         finds the point), so the answer shows where it comes from.
@@ -330,7 +337,7 @@ class PredictPoint(FigurePrediction):
     def __init__(self, question: str, answer, *, draw, xlim, ylim, start=None, along=None,
                  tolerance: float = 0.0, units: str = "units", explain: str = "",
                  figsize=(7.0, 5.0), style: str | None = "classroom", step=None,
-                 ray_from=None) -> None:  # fmt: skip
+                 readout: str | None = None, ray_from=None) -> None:  # fmt: skip
         answer = as_finite("answer", answer, (2,))
         xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
         if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
@@ -363,11 +370,16 @@ class PredictPoint(FigurePrediction):
         step = span / 100 if step is None else as_float("step", step)
         if not step > 0:
             raise ValueError(f"step must be > 0, got {step}")
+        if readout is not None and (not isinstance(readout, str) or not readout):
+            raise TypeError(f"readout must be a non-empty str or None, got {readout!r}")
+        # the readout shows as many decimals as one key step needs (none for whole codes)
+        digits = 0 if step >= 1 else min(6, int(np.ceil(-np.log10(step) - 1e-9)))
         super().__init__(question, explain, {
             "kind": "point", "answer": answer.tolist(), "start": start.tolist(),
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
-            "units": html.escape(units), "keyStep": step, "rayFrom": ray_from,
-            **picture})  # fmt: skip
+            "units": html.escape(units), "keyStep": step,
+            "readout": None if readout is None else html.escape(readout),
+            "readoutDigits": digits, "rayFrom": ray_from, **picture})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:
@@ -384,10 +396,18 @@ class PredictPoint(FigurePrediction):
     def correct(self) -> bool | None:
         return None if self.gap is None else self.gap <= self.tolerance
 
+    def readout(self) -> str | None:
+        """The page's live readout of the marker's x ("code 186"), None without one."""
+        if self.data["readout"] is None or self.given is None:
+            return None
+        return f"{self.data['readout']} {self.given[0]:.{self.data['readoutDigits']}f}"
+
     def verdict(self) -> str:
         word = "Right." if self.correct else "Not quite."
         units = self.data["units"]
         within = f"; within {self.tolerance:.3g} {units} is right" if self.tolerance else ""
+        if self.readout() is not None:
+            word += f" You predicted {self.readout()}."
         return (f"{word} Your marker is {self.gap:.3g} {units} from the answer "
                 f"({self.answer[0]:.3g}, {self.answer[1]:.3g}){within}.")  # fmt: skip
 

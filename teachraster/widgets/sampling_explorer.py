@@ -11,7 +11,13 @@ from __future__ import annotations
 import ipywidgets as widgets
 
 from ..plotting.sampling import KERNELS, plot_sampling, sample_signal, update_sampling
-from .common import Shown, labelled, style_context, title_html
+from .common import (
+    Shown,
+    control_row,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
@@ -73,7 +79,7 @@ class SamplingExplorer(Shown):
             "Yellow: the signal is above the Nyquist limit (half the sample rate). Widen the "
             "filter until the reconstruction there is flat instead of a false wave.",
         )
-        controls = widgets.HBox([self.rate, self.width, labelled("shape", self.kernel)])
+        controls = control_row([self.rate, self.width, labelled("shape", self.kernel)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     def update(self) -> None:

@@ -13,7 +13,13 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView, plot_profile
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from .common import Shown, close_tree, style_context, title_html
+from .common import (
+    Shown,
+    close_tree,
+    fit_width,
+    style_context,
+    title_html,
+)
 from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
@@ -180,7 +186,7 @@ class TexturedPlaneViewer:
         # in the page, coalesced: the kernel renders the latest angle, never a queue
         self.tilt = LiveSlider(value=tilt, min=0.0, max=90.0, step=1.0,
                                description="tilt (°)", readout_format=".0f",
-                               layout=widgets.Layout(width="420px"))  # fmt: skip
+                               layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.depth = self.tilt  # the brief's name for it: how far the plane recedes
         self.tilt.observe(lambda change: self.update(change["new"]), "value")
         self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture

@@ -9,7 +9,15 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.tiles import block_mask
-from .common import Holdable, Shown, fill_axes, labelled, style_context, title_html
+from .common import (
+    Holdable,
+    Shown,
+    control_row,
+    fill_axes,
+    labelled,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
 #: Block-size choices: llvmpipe's, and smaller hierarchies that read on a small grid.
@@ -95,7 +103,7 @@ class TileExplorer(Holdable):
             "Tiles: accept or reject whole blocks, test pixels only where an edge passes",
             "Level by level, or block by block in a traversal order.",
         )
-        menus = widgets.HBox([labelled("block sizes", self.sizes),
+        menus = control_row([labelled("block sizes", self.sizes),
                               labelled("traversal", self.traversal)])  # fmt: skip
         self.widget = widgets.VBox([title, menus, self.level, self.block, self.caption,
                                     self.display.widget, self.counters])  # fmt: skip

@@ -11,7 +11,12 @@ from __future__ import annotations
 import ipywidgets as widgets
 
 from ..plotting.zbuffer_steps import ZBufferStepView
-from .common import Shown, style_context, title_html
+from .common import (
+    Shown,
+    control_row,
+    style_context,
+    title_html,
+)
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
@@ -75,7 +80,7 @@ class ZBufferStepper(Shown):
             "Blue: this triangle's fragments that were nearer than the buffer and were written; "
             "vermillion: those that failed. Right: the depth buffer after this triangle.",
         )
-        controls = widgets.HBox([self.previous, self.triangle, self.next])
+        controls = control_row([self.previous, self.triangle, self.next])
         self.widget = widgets.VBox([title, controls, self.display.widget])
 
     def _step(self, d: int) -> None:

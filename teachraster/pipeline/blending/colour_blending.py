@@ -24,9 +24,10 @@ is GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``: the source and the target
 to [0, 1], the target is decoded to linear to blend, and the result is clamped, encoded and
 rounded to 8 bits after *every* layer (:func:`store_colour`), alpha stored linearly.
 
-The plan's "blending" effect: blending runs only for fragments whose result is not their own
-colour (``"over"``/``"premultiplied"`` with alpha 1 replace what is there: written as they
-are), and says how many of those landed on an earlier fragment rather than the clear colour.
+The plan's "blending" effect counts the fragments blended: those whose result is not their
+own colour (``"over"``/``"premultiplied"`` with alpha 1 replace what is there: written as
+they are), whether onto an earlier fragment or onto the clear colour; its text says how many
+of them landed on an earlier fragment.
 """
 
 from __future__ import annotations
@@ -236,10 +237,14 @@ def replaced_colour(covered: np.ndarray, values: np.ndarray, state: BlendState) 
 
 
 def _effect(state: BlendState, counts, n_samples: int) -> Effect:
-    """The plan entry: how many fragments (samples) were blended, and onto what."""
+    """The plan entry: how many fragments (samples) were blended, and onto what.
+
+    Its count is every fragment blended: one blended onto the clear colour is blended too
+    (the clear colour is the target it reads), so "applied to" and "blended" are one number.
+    """
     passed, blended, on_something = (int(c) for c in counts)
     unit = "fragments" if n_samples == 1 else "samples"
     why = (f"{state.mode} {state.factors}: {blended:,} transparent {unit} blended, "
            f"{on_something:,} of them onto an earlier fragment, the rest onto the clear colour; "
            f"{passed - blended:,} opaque ones written as they are")  # fmt: skip
-    return Effect("blending", blended > 0, on_something, passed, unit, why)
+    return Effect("blending", blended > 0, blended, passed, unit, why)

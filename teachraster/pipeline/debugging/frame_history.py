@@ -697,7 +697,7 @@ def draw_history(ax, h: PixelHistory):
                           linestyle="none")  # fmt: skip
     artists += buffer
     if any(np.isfinite(line.get_ydata()).any() for line in buffer):  # (writes off: none)
-        shown.append((tuple(buffer), "buffer before, after"))
+        shown += [(buffer[0], "buffer before"), (buffer[1], "buffer after")]  # ○ and ●
     ax.set_yticks(*depth_ticks(bottom, top))
     ax.set_xticks(x, _record_labels(h), fontsize="small")
     ax.set_xlim(-0.6, max(n, 1) - 0.4)
@@ -705,6 +705,9 @@ def draw_history(ax, h: PixelHistory):
     ax.set_ylabel("depth (nearer ↓)")
     ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
     artists += _draw_colours(ax, h, x, (bottom, top))
+    if not n:  # an empty strip with a depth axis would look like a history that lost its rows
+        artists.append(ax.text(0.5, 0.5, "no triangle reaches this pixel", ha="center",
+                               va="center", transform=ax.transAxes, fontsize="small"))  # fmt: skip
     if n:  # in the depth part of the Axes (the colours, if any, are above it)
         # The longest labels share the first column (filled first), so that two columns
         # stay within the Axes' width.

@@ -183,7 +183,8 @@ def multisampling_effect(n_samples: int, n_per_sample: int, covered: int, forced
     else:
         why = (
             f"{n_per_sample:,} pixel(s) are partly covered or reached by 2+ triangles: "
-            f"coverage, depth test and shading per sample there; the other "
+            "coverage and depth tested and colour stored per sample there, shaded once per "
+            f"triangle and pixel; the other "
             f"{covered - n_per_sample:,} show one triangle at every sample (it covers the "
             f"whole pixel and is in front over all of it): one answer for all {n_samples}"
         )

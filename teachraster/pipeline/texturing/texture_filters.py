@@ -31,9 +31,12 @@ magnified (P_max ≤ 1 texel) one probe is taken: bilinear on level 0, like ever
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ...core.validate import as_real
+from .mip_pyramid import level_sizes
 from .texel_fetch import filtered, level_table, texture_size
 
 #: Filters that use the pyramid, each as (how levels are chosen, the filter within a level).
@@ -178,9 +181,11 @@ def sample_levels(levels, u, v, lam, how: str, within: str, wrap: str, table=Non
     return out
 
 
-def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray:
-    """EXT_texture_filter_anisotropic at finite ``u``, ``v`` (n,) with derivatives (n, 2)."""
-    h, w = levels[0].shape[:2]
+def anisotropic_probes(dx, dy, w: int, h: int, max_anisotropy) -> tuple:
+    """EXT_texture_filter_anisotropic's probes for derivatives ``dx``, ``dy`` (n, 2) of a
+    ``w`` × ``h`` level 0: (their number N (n,), their level of detail λ' = log2(P_max / N)
+    (n,), the major axis (n, 2)), with N clamped to ``max_anisotropy`` and
+    :data:`MAX_ANISOTROPY`, and one probe where the footprint is magnified (P_max ≤ 1)."""
     with np.errstate(over="ignore"):  # inf only where the true length overflows
         px, py = np.hypot(dx[:, 0] * w, dx[:, 1] * h), np.hypot(dy[:, 0] * w, dy[:, 1] * h)
     pmax, pmin = np.maximum(px, py), np.minimum(px, py)
@@ -193,7 +198,7 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
     cap = min(max_anisotropy, MAX_ANISOTROPY)
     n = np.where(pmax <= 1, 1, np.fmin(np.nan_to_num(ratio, nan=cap), cap))
     n = np.maximum(n, 1).astype(np.intp)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore"):
         lam = np.log2(pmax / n)
     # Lengths that underflowed or overflowed in the product above: λ from the scaled form.
     odd = (pmax == 0) | np.isinf(pmax)
@@ -201,6 +206,13 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
         lam[odd] = np.maximum(log2_length(dx[odd], w, h), log2_length(dy[odd], w, h)) - np.log2(
             n[odd]
         )
+    return n, lam, major
+
+
+def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray:
+    """EXT_texture_filter_anisotropic at finite ``u``, ``v`` (n,) with derivatives (n, 2)."""
+    h, w = levels[0].shape[:2]
+    n, lam, major = anisotropic_probes(dx, dy, w, h, max_anisotropy)
     # An infinite derivative has no finite probe offsets: its probes all sit at the centre,
     # on the smallest level (λ = inf), like every other filter's infinite footprint.
     major = np.where(np.isfinite(major), major, 0.0)
@@ -217,3 +229,85 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
                                    lam[idx], "linear", "bilinear", wrap, table)  # fmt: skip
         out = out + probe
     return out / n[:, None]
+
+
+@dataclass(frozen=True)
+class LevelsRead:
+    """The mip levels a filter reads at each pixel, as :func:`sample` decides them.
+
+    Attributes
+    ----------
+    first, second : (...) float64
+        The level read, and the level blended with it (``second == first`` where one level
+        is read: the ``*_mipmap_nearest`` filters, a clamped or magnified λ, the unmipmapped
+        ``nearest`` and ``bilinear``, which read level 0). NaN where λ is undefined.
+    weight : (...) float64
+        The weight of ``second``: λ − ⌊λ⌋ for the ``*_mipmap_linear`` filters and the
+        probes of ``anisotropic``, 0 where one level is read.
+    probes : (...) intp
+        Probes per pixel: N for ``anisotropic``, 1 for the others.
+    lod : (...) float64
+        The λ the levels come from: the pixel's λ, or the probes' λ' = log2(P_max / N).
+    """
+
+    first: np.ndarray
+    second: np.ndarray
+    weight: np.ndarray
+    probes: np.ndarray
+    lod: np.ndarray
+
+
+def levels_read(filter: str, ddx, ddy, texture_shape, max_anisotropy=MAX_ANISOTROPY) -> LevelsRead:  # noqa: A002
+    """Which mip level(s) ``filter`` reads at each pixel, with which weights (one rule with
+    :func:`teachraster.sample`: the same level choice, the same probes).
+
+    Parameters
+    ----------
+    filter : str
+        ``"nearest"``, ``"bilinear"`` or a key of :data:`MIPMAP_FILTERS`.
+    ddx, ddy : (..., k) array-like, k >= 2
+        Screen-space derivatives of ``(u, v)``, as for :func:`mip_level`.
+    texture_shape : tuple
+        ``(H, W)`` or ``(H, W, C)`` of level 0.
+    max_anisotropy : number
+        As for :func:`teachraster.sample` (clamped to :data:`MAX_ANISOTROPY`).
+
+    Returns
+    -------
+    LevelsRead
+
+    Examples
+    --------
+    >>> r = levels_read("trilinear", [[0.375, 0.0]], [[0.0, 0.25]], (8, 8))  # ρ = 3 texels
+    >>> r.first.tolist(), r.second.tolist(), round(float(r.weight[0]), 3)
+    ([1.0], [2.0], 0.585)
+    >>> r = levels_read("anisotropic", [[0.375, 0.0]], [[0.0, 0.25]], (8, 8))  # 3 by 2 texels
+    >>> r.probes.tolist(), r.first.tolist(), r.second.tolist()   # 2 probes: λ' = log2(3 / 2)
+    ([2], [0.0], [1.0])
+    """
+    if filter not in ("nearest", "bilinear") and filter not in MIPMAP_FILTERS:
+        raise ValueError(f"filter must be 'nearest', 'bilinear' or one of "
+                         f"{sorted(MIPMAP_FILTERS)}, got {filter!r}")  # fmt: skip
+    h, w = texture_size(texture_shape, "texture_shape")
+    q = len(level_sizes(h, w)) - 1
+    lam = mip_level(ddx, ddy, texture_shape)
+    probes = np.ones(lam.shape, dtype=np.intp)
+    if filter == "anisotropic":
+        dx, dy = _as_derivative("ddx", ddx), _as_derivative("ddy", ddy)
+        ok = ~np.isnan(lam)
+        n, lam_probe, _ = anisotropic_probes(dx[ok], dy[ok], w, h, max_anisotropy)
+        probes[ok], lam = n, np.where(ok, np.nan, lam)
+        lam[ok] = lam_probe
+    undefined = np.isnan(lam)
+    finite = np.nan_to_num(lam, nan=0.0)
+    if filter in ("nearest", "bilinear"):  # no mipmaps: level 0
+        first = second = np.zeros(lam.shape, dtype=np.intp)
+        weight = np.zeros(lam.shape)
+    elif MIPMAP_FILTERS[filter][0] == "nearest":
+        first = second = nearest_level(finite, q)
+        weight = np.zeros(lam.shape)
+    else:
+        first, second, weight = linear_levels(finite, q)
+        second = np.where(weight > 0, second, first)  # a weight of 0 reads one level
+    nan = np.where(undefined, np.nan, 0.0)
+    return LevelsRead(first + nan, second + nan, weight + nan, probes, lam)

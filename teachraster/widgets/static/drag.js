@@ -96,9 +96,11 @@ const CSS = `
 .tr-drag-notice { color: #b00020; font-size: 13px; }
 .tr-drag-caption { font-size: var(--jp-widgets-font-size, 13px); line-height: 1.5;
   margin: 2px 0 6px; }
-.tr-drag-row { display: flex; align-items: flex-start; gap: 4px; }
-.tr-drag-row .tr-drag { flex: 0 1 auto; min-width: 0; }
-.tr-drag-row .tr-drag-caption { flex: 0 0 auto; max-width: 440px; }
+/* the text goes under the picture when the column has no room for both (1024x768 with the
+   file browser open, 150 % zoom): shrunk to share the row, the picture was 148 px wide */
+.tr-drag-row { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 4px; }
+.tr-drag-row .tr-drag { flex: 1 1 300px; min-width: min(300px, 100%); max-width: max-content; }
+.tr-drag-row .tr-drag-caption { flex: 0 1 auto; max-width: 440px; }
 `;
 
 // A zlib-compressed patch (the slider explorers: megabytes of changed pixels a frame

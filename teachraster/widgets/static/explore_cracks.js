@@ -67,6 +67,26 @@ export function faults(first, second, W, H, method, asListed = false) {
   return { cracks, doubles, swapped, wrong, a: Array.from(a), b: Array.from(b) };
 }
 
+// Is the point `c` exactly on the segment p-q (all in grid units)? On its line and between
+// its ends: the centres beyond the ends lie on the line but belong to neither triangle's edge.
+export function onSegment(p, q, c) {
+  if (edgeValue(p, q, c) !== 0) return false;
+  return [0, 1].every((k) => Math.min(p[k], q[k]) <= c[k] && c[k] <= Math.max(p[k], q[k]));
+}
+
+// the centres exactly on the shared edge of `pair` (its first triangle's first edge), as
+// [row, col]: the black squares of the page
+export function tieCentres(pair, W, H) {
+  const setup = setupTriangle(pair[0]);
+  const out = [];
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      if (onSegment(setup.given[0], setup.given[1], centreUnits(setup, r, c))) out.push([r, c]);
+    }
+  }
+  return out;
+}
+
 export function emptyTally() {
   const per = () => ({ pairs: 0, faulty: 0, triangles: 0, wrongTriangles: 0, cracks: 0,
     doubles: 0, swapped: 0, swappedPairs: 0 });
@@ -118,11 +138,13 @@ function mount(el, data, host) {
     ...host.state() };
   const root = frame(el, data.title,
     "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
-    "panel fills both, A in blue and B in orange. <b>⇄</b>: a centre on the shared edge drawn " +
-    "by the wrong one of the two; <b style='color:#D55E00'>2</b>: drawn twice; " +
-    "<b style='color:#D55E00'>✕</b>: drawn by neither (a crack); dashed box: unlike the " +
-    "integer fill. Reroll for a new pair; the tally counts every random pair drawn (not the " +
-    "stored pair that cracks).");
+    "panel fills both, A in blue and B in orange. <b>■</b>: a pixel centre exactly on the " +
+    "shared edge, a tie the top-left rule gives to one of the two; <b>⇄</b>: a tie drawn " +
+    "by the wrong one; <b style='color:#D55E00'>2</b>: drawn twice; " +
+    "<b style='color:#D55E00'>✕</b> in a red ring: drawn by neither (a crack); dashed box: " +
+    "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
+    "(not the stored pair that cracks) and starts again when the way the edges are " +
+    "evaluated changes.");
   const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
   const gap = 26;
   const m = { left: 8, top: 30 };
@@ -258,11 +280,12 @@ function drawPanel(ctx, f, exact, pair, g) {
     }
   }
   drawGrid(ctx, x0, y0, W, H, cell, "#bbb");
-  // the pixel centres, those exactly on the shared edge larger: where the ties are
+  // the pixel centres, those exactly on the shared edge (the segment p-q, not its line)
+  // larger: where the ties are
   const setup = setupTriangle(pair[0]);
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
-      const on = edgeValue(setup.given[0], setup.given[1], centreUnits(setup, r, c)) === 0;
+      const on = onSegment(setup.given[0], setup.given[1], centreUnits(setup, r, c));
       ctx.fillStyle = on ? "#000" : "#999";
       const d = on ? 5 : 2;
       ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
@@ -298,7 +321,15 @@ function drawPanel(ctx, f, exact, pair, g) {
   ctx.textAlign = "center";
   ctx.fillStyle = OKABE.vermillion;
   for (const [r, c] of f.doubles) ctx.fillText("2", x0 + (c + 0.5) * cell, y0 + (r + 0.78) * cell);
-  for (const [r, c] of f.cracks) ctx.fillText("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+  for (const [r, c] of f.cracks) {
+    ctx.fillText("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+    // a ring around the crack: a single pixel, often at the image's border, is easy to miss
+    ctx.strokeStyle = OKABE.vermillion;
+    ctx.lineWidth = 3;
+    ctx.beginPath();
+    ctx.arc(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell, cell * 1.1, 0, 2 * Math.PI);
+    ctx.stroke();
+  }
   ctx.fillStyle = "#000";
   for (const [r, c] of f.swapped) ctx.fillText("⇄", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
   ctx.textAlign = "left";

@@ -103,7 +103,7 @@ function mount(el, data, host) {
   }
   const paint = painter(canvas, draw, () => state.vertices.map(toPx));
   const paint3d = painter(view3d, () => drawPlanes(ctx3, cam, ui.scene || edgeScene(
-    state.vertices, W, H, data.bits), state.chosen, W, H, view3d));
+    state.vertices, W, H, data.bits), state.chosen, W, H, view3d, ui.hover));
   const both = (e) => {
     paint.request(e);
     if (state.planes) paint3d.request(e);
@@ -114,6 +114,7 @@ function mount(el, data, host) {
   vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
   paint.now();
   controls.sync();
+  if (state.planes) paint3d.request(); // reopened with the planes on
   return {
     setState(s) {
       Object.assign(state, s);
@@ -125,8 +126,10 @@ function mount(el, data, host) {
 
 const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c'>B</b>, grey " +
   "where they overlap (drawn twice). Ring on a centre of the shared edge: " +
-  "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, grey: " +
-  "neither (a shared vertex, left to a third triangle).";
+  "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, " +
+  "<b>black (AB)</b>: both, grey (–): neither. Both or neither happens when the two " +
+  "triangles lie on the same side of the edge (then it is a left or top edge for both, or a " +
+  "right or bottom edge for both), and at a shared vertex, left to a third triangle.";
 
 // each triangle's edges as the table names them (B = v3 v2 v4: its first edge runs v3 -> v2)
 export const EDGE_NAMES = { A: ["E12", "E23", "E31"], B: ["v3→v2", "v2→v4", "v4→v3"] };
@@ -430,35 +433,89 @@ export function describe(scene, at, chosen, W, H) {
     `${vals}. Covered by ${who}.${tie}`;
 }
 
-// the three edge functions of the chosen triangle as planes z = E(x, y) over the grid
-function drawPlanes(ctx, cam, scene, chosen, W, H, canvas) {
-  ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
+// The point the 3-D view reads E at: the pixel centre under the pointer, else the centre
+// nearest the chosen triangle's centroid (inside it, where all three E are positive).
+export function planePoint(setup, hover, W, H) {
+  const inGrid = hover && hover[0] >= 0 && hover[0] < W && hover[1] >= 0 && hover[1] < H;
+  const u = setup.unit;
+  const [x, y] = inGrid ? hover
+    : [0, 1].map((k) => setup.given.reduce((acc, v) => acc + v[k] / u, 0) / 3);
+  return [Math.min(W - 1, Math.max(0, Math.floor(x))) + 0.5,
+    Math.min(H - 1, Math.max(0, Math.floor(y))) + 0.5];
+}
+
+// E12, E23, E31 of `setup` (as given) at the point `at` (px), in px²
+export function planeValues(setup, at) {
+  const u = setup.unit;
+  return [0, 1, 2].map((k) => edgeValue(setup.given[k].map((t) => t / u),
+    setup.given[(k + 1) % 3].map((t) => t / u), at));
+}
+
+const PLANES_TOP = 58; // room above the box for the values, in canvas px
+const PLANES_BOTTOM = 22; // and below it for the note
+
+// the three edge functions of the chosen triangle as planes z = E(x, y) over the grid,
+// clipped to a box whose camera keeps it inside the canvas at every turn
+function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
+  const { w: cw, h: ch } = canvas.logical;
+  ctx.clearRect(0, 0, cw, ch);
   const setup = chosen === "A" ? scene.A : scene.B;
   const u = setup.unit;
+  const ends = [0, 1, 2].map((k) => [setup.given[k], setup.given[(k + 1) % 3]]
+    .map((v) => v.map((t) => t / u)));
+  const fns = ends.map(([a, b]) => (x, y) => edgeValue(a, b, [x, y]));
   const corners = [[0, 0], [W, 0], [W, H], [0, H]];
-  const fns = [0, 1, 2].map((k) => {
-    const a = setup.given[k].map((t) => t / u);
-    const b = setup.given[(k + 1) % 3].map((t) => t / u);
-    return (x, y) => edgeValue(a, b, [x, y]);
-  });
   let top = 1;
   for (const f of fns) for (const [x, y] of corners) top = Math.max(top, Math.abs(f(x, y)));
-  const zs = (0.45 * Math.max(W, H)) / top; // the largest |E| stands 0.45 grid-widths high
+  const h = 0.3 * Math.max(W, H); // the box's half height, in grid units
+  const zs = (1.6 * h) / top; // steep enough to see; the steepest plane leaves the box
+  cam.scale = fitBox(W, H, h, cw, ch - PLANES_TOP - PLANES_BOTTOM);
+  cam.at = [cw / 2, PLANES_TOP + (ch - PLANES_TOP - PLANES_BOTTOM) / 2];
   const polys = surfacePieces(corners, () => 0, 8, { fill: "#ddd", alpha: 0.55, stroke: "#bbb" });
-  fns.forEach((f, k) => polys.push(...surfacePieces(corners, (x, y) => f(x, y) * zs, 8,
-    { fill: EDGE_HUES[k], alpha: 0.45 })));
-  drawPolygons(ctx, cam, polys);
-  // each plane cuts z = 0 along its edge's line: drawn on top
   fns.forEach((f, k) => {
-    const a = setup.given[k].map((t) => t / u);
-    const b = setup.given[(k + 1) % 3].map((t) => t / u);
-    line3d(ctx, cam, [a[0], a[1], 0], [b[0], b[1], 0], EDGE_HUES[k], 4);
-    const name = chosen === "A" ? ["E12", "E23", "E31"][k] : ["E(v3,v2)", "E(v2,v4)", "E(v4,v3)"][k];
-    const far = corners.reduce((best, c) => (Math.abs(f(...c)) > Math.abs(f(...best)) ? c : best));
-    label3d(ctx, cam, [far[0], far[1], f(...far) * zs], `${name} = ${fmt(f(...far), 3)} px²`,
-      EDGE_HUES[k], "bold 13px sans-serif");
+    for (const piece of surfacePieces(corners, (x, y) => f(x, y) * zs, 8,
+      { fill: EDGE_HUES[k], alpha: 0.45 })) {
+      const pts = clipToSlab(piece.pts, h);
+      if (pts.length > 2) polys.push({ ...piece, pts });
+    }
+  });
+  drawPolygons(ctx, cam, polys);
+  // the box's vertical edges, thin: where the planes are cut
+  for (const [x, y] of corners) line3d(ctx, cam, [x, y, -h], [x, y, h], "#999", 1, [3, 3]);
+  // each plane cuts z = 0 along its edge's line: drawn on top
+  ends.forEach(([a, b], k) => line3d(ctx, cam, [a[0], a[1], 0], [b[0], b[1], 0], EDGE_HUES[k], 4));
+  // the point the values are read at: a cross on the screen, a dot on each plane over it
+  const at = planePoint(setup, hover, W, H);
+  const vals = planeValues(setup, at);
+  vals.forEach((e, k) => {
+    const z = e * zs;
+    if (Math.abs(z) > h) return; // outside the box: the value says it
+    line3d(ctx, cam, [at[0], at[1], 0], [at[0], at[1], z], "#111", 1, [2, 2]);
+    const q = cam.project([at[0], at[1], z]);
+    ctx.fillStyle = EDGE_HUES[k];
+    ctx.beginPath();
+    ctx.arc(q[0], q[1], 4.5, 0, 2 * Math.PI);
+    ctx.fill();
+  });
+  const c = cam.project([at[0], at[1], 0]);
+  strokeLine(ctx, [c[0] - 6, c[1] - 6], [c[0] + 6, c[1] + 6], "#111", 2.5);
+  strokeLine(ctx, [c[0] - 6, c[1] + 6], [c[0] + 6, c[1] - 6], "#111", 2.5);
+  // the values, in 2-D above the box: always inside the canvas
+  const names = chosen === "A" ? ["E12", "E23", "E31"] : ["E(v3,v2)", "E(v2,v4)", "E(v4,v3)"];
+  ctx.fillStyle = "#111";
+  ctx.font = "13px sans-serif";
+  ctx.fillText(`E at the centre (${at[0]}, ${at[1]}), the black ✕ (point at a pixel to move it):`,
+    8, 18);
+  ctx.font = "bold 13px sans-serif";
+  let x = 8;
+  vals.forEach((e, k) => {
+    const text = `${names[k]} = ${fmt(e, 4)} px²`;
+    ctx.fillStyle = EDGE_HUES[k];
+    ctx.fillText(text, x, 38);
+    x += ctx.measureText(text).width + 18;
   });
   ctx.fillStyle = "#333";
   ctx.font = "13px sans-serif";
-  ctx.fillText("grey: z = 0 (the screen). Drag to turn; arrow keys too.", 8, canvas.logical.h - 10);
+  ctx.fillText("grey: z = 0 (the screen); the planes are cut at the dashed box. Drag to turn; " +
+    "arrow keys too.", 8, ch - 8);
 }

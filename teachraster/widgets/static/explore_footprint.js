@@ -218,8 +218,11 @@ function footprintControls(state, host, whole, repaint) {
     host.setState({ how });
     repaint(e);
   });
-  return element("div", { class: "tr-x-row" }, [wholeBtn, zoomBtn,
-    element("span", { text: "a texel point is" }), ...hows.buttons]);
+  // the choice and its label wrap as one group: at 150 % zoom the five controls took 4 lines
+  const how = element("span", { class: "tr-x-row" }, [element("span", { text: "a texel point is" }),
+    ...hows.buttons]);
+  how.style.margin = "0";
+  return element("div", { class: "tr-x-row" }, [wholeBtn, zoomBtn, how]);
 }
 
 // a screen pixel picked (click, arrow keys); a texel point picked (click in texture space)

@@ -299,6 +299,11 @@ function drawSegment(ctx, p, q, snapped) {
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
     const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide);
+    // a white halo: the label crosses the line and the diamonds beside the end point
+    ctx.lineWidth = 4;
+    ctx.lineJoin = "round";
+    ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
+    ctx.strokeText(text, x, y);
     ctx.fillText(text, x, y);
   });
 }

@@ -27,11 +27,26 @@ export function pointVerdict(answer, given, tolerance) {
   return { gap, correct: gap <= tolerance };
 }
 
+// the live readout of a point marker's x ("code 186"): data.readout, data.readoutDigits
+export function readoutText(label, x, digits) {
+  return `${label} ${x.toFixed(digits)}`;
+}
+
 export function orderVerdict(answer, given) {
   // answer null: no order works; given null: the student said so
   if (answer === null || given === null) return { places: null, correct: answer === given };
   const places = given.map((item, k) => item === answer[k]);
   return { places, correct: places.every(Boolean) };
+}
+
+// where "the answer" goes by the true point (canvas pixels, y down): above the dot, or below
+// it when the marker is above or there is no room, and on the side away from the marker
+// (whose cross reaches 14 px each way), so that it is never drawn under the marker
+export function answerLabel(mine, truth) {
+  const left = mine[0] > truth[0];
+  const below = mine[1] < truth[1] - 4 || truth[1] < 30;
+  return { x: truth[0] + (left ? -6 : 6), y: below ? truth[1] + 30 : truth[1] - 18,
+    align: left ? "right" : "left" };
 }
 
 const PRED_CSS = `
@@ -268,9 +283,15 @@ function mountPoint(root, data, host) {
       ctx.beginPath();
       ctx.arc(truth[0], truth[1], 9, 0, 2 * Math.PI);
       ctx.fill();
-      ctx.fillStyle = "#111";
       ctx.font = "bold 14px sans-serif";
-      ctx.fillText("the answer", truth[0] + 12, truth[1] + 5);
+      const { x, y, align } = answerLabel(mine, truth);
+      ctx.textAlign = align;
+      ctx.lineWidth = 4;
+      ctx.strokeStyle = "white";
+      ctx.strokeText("the answer", x, y);
+      ctx.fillStyle = "#111";
+      ctx.fillText("the answer", x, y);
+      ctx.textAlign = "left";
     }
     ctx.lineWidth = 3.5;
     ctx.strokeStyle = OKABE.orange;
@@ -284,6 +305,19 @@ function mountPoint(root, data, host) {
     ctx.lineTo(mine[0], mine[1] + 14);
     ctx.lineWidth = 1.5;
     ctx.stroke();
+    if (data.readout) { // what the marker sits on, while it moves: no counting key presses
+      const g = state.given || start;
+      const text = readoutText(data.readout, g[0], data.readoutDigits);
+      ctx.font = "bold 16px sans-serif";
+      const right = mine[0] + 18 + ctx.measureText(text).width > canvas.width;
+      ctx.textAlign = right ? "right" : "left";
+      ctx.lineWidth = 4;
+      ctx.strokeStyle = "white";
+      ctx.strokeText(text, mine[0] + (right ? -18 : 18), mine[1] - 16);
+      ctx.fillStyle = "#111";
+      ctx.fillText(text, mine[0] + (right ? -18 : 18), mine[1] - 16);
+      ctx.textAlign = "left";
+    }
     check.disabled = state.given === null;
   }
   const paint = painter(canvas, draw);
@@ -291,7 +325,9 @@ function mountPoint(root, data, host) {
     if (state.given === null) return;
     state.revealed = true;
     const v = pointVerdict(data.answer, state.given, data.tolerance);
-    show(v.correct, `Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
+    const mine = data.readout
+      ? `You predicted ${readoutText(data.readout, state.given[0], data.readoutDigits)}. ` : "";
+    show(v.correct, `${mine}Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
       `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`);
     revealOnFigure(host, canvas, paint, state.given, byClick);
   }

@@ -4,7 +4,10 @@
 // IN_FLIGHT unanswered (one being rendered, one waiting, so the kernel never idles for a
 // round trip), each the latest value when sent; values that come meanwhile replace each
 // other, so the kernel never works through a queue. The value where the slider is released
-// is always sent. The readout follows the pointer at once.
+// is always sent. The readout follows the pointer at once. Final values (a key, a click on
+// the track, a release) obey the same limit: one that comes while IN_FLIGHT are unanswered
+// waits, replacing the one waiting before it, so an arrow key held down renders the newest
+// position when the kernel is free, not every step it passed.
 //
 // A slider linked to a figure that keeps pictures drawn ahead (drag.js: the figure's store,
 // by its "key") shows a position with a picture by itself and does not ask the kernel; the
@@ -39,7 +42,7 @@ function render({ model, el }) {
   const toValue = (p) => (base() > 0 ? Math.pow(base(), p) : p);
   const toPos = (v) => (base() > 0 ? Math.log(v) / Math.log(base()) : v);
   const s = { pending: new Set(), seq: 0, latest: null, sent: null, held: false,
-    drafted: false, ahead: false, shownAhead: null };
+    drafted: false, ahead: false, shownAhead: null, finalWaiting: false };
 
   // the picture drawn ahead for the slider's position, shown; false when there is none
   function showAhead() {
@@ -76,7 +79,14 @@ function render({ model, el }) {
     }, 20000); // far beyond any render: the kernel is gone, not slow
     model.send({ type: "value", value, seq, final });
   }
+  // a final value: sent now if fewer than IN_FLIGHT are unanswered, else when an answer
+  // comes (the newest then, the ones between dropped)
+  function sendFinal() {
+    s.finalWaiting = s.pending.size >= IN_FLIGHT;
+    if (!s.finalWaiting) send(s.latest, true);
+  }
   function pump() {
+    if (s.finalWaiting) return; // the final value waiting goes first, as final
     if (s.latest !== null && s.latest !== s.sent && s.latest !== s.shownAhead &&
         s.pending.size < IN_FLIGHT) {
       send(s.latest, false); // a draft: the pointer still holds the slider
@@ -111,7 +121,8 @@ function render({ model, el }) {
     s.latest = toValue(Number(input.value));
     // the release, marked final: the kernel shows the full picture (also when this value
     // was sent already as a draft)
-    if (s.latest !== s.sent || s.drafted || s.ahead) send(s.latest, true);
+    if (s.latest !== s.sent || s.drafted || s.ahead) sendFinal();
+    else s.finalWaiting = false; // back at the value sent last: nothing to wait for
     s.drafted = false;
     s.ahead = false;
     s.shownAhead = null;
@@ -124,7 +135,8 @@ function render({ model, el }) {
     // the kernel's time per value, where a benchmark can read it
     (input.kernelMs = input.kernelMs || []).push(msg.kernel_ms);
     notice.textContent = "";
-    pump();
+    if (s.finalWaiting) sendFinal();
+    else pump();
   });
   for (const name of ["value", "min", "max", "step", "description", "readout_format"]) {
     model.on(`change:${name}`, sync);

@@ -122,3 +122,34 @@ export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-ser
   ctx.font = font;
   ctx.fillText(text, q[0], q[1]);
 }
+
+// Clip a flat polygon [[x, y, z], ...] to the slab -h <= z <= h (Sutherland-Hodgman on z):
+// a plane drawn over a box stays inside it. The empty list when nothing is left.
+export function clipToSlab(pts, h) {
+  let out = pts;
+  for (const sign of [1, -1]) {
+    const inside = (p) => sign * p[2] <= h;
+    const cut = (a, b) => {
+      const t = (sign * h - a[2]) / (b[2] - a[2]);
+      return [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), sign * h];
+    };
+    const next = [];
+    out.forEach((a, i) => {
+      const b = out[(i + 1) % out.length];
+      if (inside(a)) next.push(a);
+      if (inside(a) !== inside(b)) next.push(cut(a, b));
+    });
+    out = next;
+    if (!out.length) break;
+  }
+  return out;
+}
+
+// A camera scale and centre that keep the box [0, W] x [0, H] x [-h, h] inside a w x h_px
+// area at every turn: orthographic, so on screen x spans at most the box's radius in the
+// ground plane, and y at most the radius of the whole box.
+export function fitBox(W, H, h, w, hPx, margin = 8) {
+  const ground = Math.hypot(W / 2, H / 2);
+  const whole = Math.hypot(ground, h);
+  return Math.min((w / 2 - margin) / ground, (hPx / 2 - margin) / whole);
+}
