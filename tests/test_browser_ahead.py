@@ -83,3 +83,74 @@ def test_pictures_drawn_ahead_are_shown_at_once_and_are_the_kernels(lab, page): 
     assert page.evaluate(sent) == before + 1  # the release, nothing else
     assert page.evaluate(FRAMES, "t-viewer") >= frames + 20  # pictures changed all the way
     assert not page.errors, page.errors
+
+
+# Review r5, 05b c24: format float32 -> unorm24 -> float32, then reverse-Z, left the page
+# showing another picture than the kernel's (float32 without reverse-Z, the axes gone, once
+# "near 0.112" while the slider read 0.1) under a caption saying reverse-Z, no z-fighting.
+SEQUENCE_CELLS = [
+    "import numpy as np\nfrom teachraster.widgets.depth_explorer import DepthPrecisionExplorer",
+    "depth = DepthPrecisionExplorer('unorm16', near=0.1, far=1000.0, delta=0.005)\n"
+    "depth.widget.add_class('t-seq')\ndepth",
+]
+# the picture on show, RGBA bytes in base64: the canvas of patches over the <img> (the poster or
+# the reference), composited as the reader sees them
+SHOWN_B64 = """(c) => { const cv = document.querySelector(`.${c} canvas.tr-drag-picture`);
+  const img = document.querySelector(`.${c} .tr-drag img`);
+  const out = document.createElement('canvas');
+  [out.width, out.height] = [cv.width, cv.height];
+  const ctx = out.getContext('2d');
+  ctx.drawImage(img, 0, 0, cv.width, cv.height);
+  ctx.drawImage(cv, 0, 0);
+  const d = ctx.getImageData(0, 0, cv.width, cv.height).data;
+  let s = ''; for (let i = 0; i < d.length; i += 0x8000)
+    s += String.fromCharCode.apply(null, d.subarray(i, i + 0x8000));
+  return [cv.width, cv.height, btoa(s)]; }"""
+
+
+def _kernel_picture(tab, path) -> None:
+    """Run a cell that saves the picture a fresh explorer draws in the final state."""
+    tab.locator(".jp-Notebook .jp-Cell").last.click()
+    tab.keyboard.press("Escape")
+    tab.keyboard.press("b")  # a new cell below
+    tab.keyboard.press("Enter")
+    tab.keyboard.type(
+        "fresh = DepthPrecisionExplorer('unorm16', near=0.1, far=1000.0, delta=0.005)\n"
+        "fresh.format.value = 'float32'\nfresh.reverse.value = True\n"
+        f"np.save({str(path)!r}, fresh.display.widget._last)\n"
+        f"np.save({str(path)!r}.replace('.npy', '_seq.npy'), depth.display.widget._last)\n"
+    )
+    tab.keyboard.press("Shift+Enter")
+
+
+def test_format_switches_then_reverse_z_show_the_kernels_picture(lab, page, tmp_path):  # noqa: F811
+    import base64
+    import time
+
+    import numpy as np
+
+    _run_all(lab, page, SEQUENCE_CELLS, "sequence.ipynb")
+    page.wait_for_function(ALL_AHEAD, arg="t-seq", timeout=120_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    for fmt in ("float32", "unorm24", "float32"):
+        page.locator(".t-seq button", has_text=fmt).first.click()
+        time.sleep(0.6)  # a reader's pace: the kernel starts drawing ahead meanwhile
+    page.locator(".t-seq input[type=checkbox]").first.check()
+    time.sleep(4.0)  # the final picture, then every picture drawn ahead again
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-seq", timeout=120_000)
+    w, h, data = page.evaluate(SHOWN_B64, "t-seq")  # before a new cell re-renders the view
+    shown = np.frombuffer(base64.b64decode(data), np.uint8).reshape(h, w, 4)
+    caption = page.locator(".t-seq .tr-drag-caption").inner_text()
+    readout = page.locator(".t-seq .tr-live-slider span").first.inner_text()
+    saved = tmp_path / "fresh.npy"
+    _kernel_picture(page, saved)
+    deadline = time.time() + 60
+    while not saved.with_name("fresh_seq.npy").exists() and time.time() < deadline:
+        time.sleep(0.5)
+    kernel, fresh = np.load(saved.with_name("fresh_seq.npy")), np.load(saved)
+    np.save(tmp_path / "shown.npy", shown)
+    assert np.array_equal(kernel, fresh), "the kernel drew another picture than a fresh one"
+    assert np.array_equal(shown, kernel), f"the page shows another picture ({tmp_path})"
+    assert caption.startswith(f"float32, near {readout}, reverse-Z"), (caption, readout)
+    assert not page.errors, page.errors

@@ -195,3 +195,24 @@ def test_plane_explorer_draws_the_positions_of_the_slider_moved_or_pressed_last(
     sliders[2].value = 9.0  # another one: its positions now
     assert ahead.which == 2 and len(ahead.todo) == 65
     ex.close()
+
+
+def test_widget_messages_and_pictures_drawn_ahead_hold_one_lock():
+    """Review r5, 05b: ipykernel 7 handles some widget messages on another thread than its
+    event loop; a format toggled while the loop drew pictures ahead (the explorer set to another
+    state, then put back) left the put-back state, or a blank picture, on show. Both hold
+    ``common.DRAWING`` now, so neither runs in the middle of the other."""
+    from teachraster.widgets.common import DRAWING
+
+    ex, slider = _make("depth")
+    held = []
+    ex.format.observe(lambda _change: held.append(DRAWING._is_owned()), "value")
+    ex.format._handle_msg({"content": {"data": {"method": "update", "state": {"index": 2}}}})
+    assert ex.format.value == "float32"  # the page's click arrived
+    page, sent = _listen(ex, slider)
+    ahead = ex.display.frames_ahead
+    step = ahead.step
+    ahead.step = lambda seconds=0.0: held.append(DRAWING._is_owned()) or step(seconds)
+    ahead._run()
+    assert held == [True, True] and not DRAWING._is_owned()
+    ex.close()

@@ -198,3 +198,16 @@ def test_the_answers_label_is_never_under_the_marker():
         clear_y = y1 < mine[1] - 14 or y0 > mine[1] + 14
         assert clear_x or clear_y, (mine, lab)
     assert got[-1]["y"] - 12 >= 0  # no room above: below the dot
+
+
+def test_point_reveal_can_draw_the_ray_that_finds_the_answer():
+    """Review r4/r5, lesson 04 c3: the reveal drew the answer dot but not the eye ray."""
+    from pathlib import Path
+
+    kw = dict(answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4))
+    assert PredictPoint("Where?", **kw).data["rayFrom"] is None
+    assert PredictPoint("Where?", **kw, ray_from=(0, 0)).data["rayFrom"] == [0.0, 0.0]
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    assert "data.rayFrom" in js  # the page draws it
+    with pytest.raises(ValueError, match="ray_from"):
+        PredictPoint("Where?", **kw, ray_from=(0, 0, 1))

@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from ..core.interpolation import perspective_weights
 from .common import fs, lw, ms
@@ -75,7 +76,7 @@ class ProjectionArtists:
         t = float(self.segment.world_parameter(q)[0])
         (x, z) = self.segment.point(t)[0]
         s = float(self.segment.screen(q))
-        far = 1.15 * max(self.segment.z0, self.segment.z1)
+        far = _top(self.segment)
         self.ray.set_data([0.0, s * far], [0.0, far])
         self.screen_point.set_data([s], [1.0])
         self.world_point.set_data([x], [z])
@@ -84,6 +85,12 @@ class ProjectionArtists:
         if self.curve_point is not None:
             self.curve_point.set_data([q], [t])
         return t
+
+
+def _top(segment: Segment) -> float:
+    """The picture's top depth: above the segment, and at least 2 (the screen at z = 1 then
+    stays in the lower half: a segment lying on it is still seen as one, not as the frame)."""
+    return 1.15 * max(segment.z0, segment.z1, 2.0)
 
 
 def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: float = 0.5,
@@ -110,7 +117,7 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     qs = np.linspace(0.0, 1.0, int(n_steps) + 1)
     ts = segment.world_parameter(qs)
     pts, ss = segment.point(ts), segment.screen(qs)
-    far = 1.15 * max(segment.z0, segment.z1)
+    far = _top(segment)
     out = ProjectionArtists(segment)
     for x, z in pts:
         out.steps += ax.plot([0, x], [0, z], color=COLORS["grid"], lw=lw(0.3), zorder=1)
@@ -132,6 +139,9 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     # text set by update(), size fixed here; from the left edge, as the key takes the right
     out.label = ax.set_title(" ", fontsize=fs(0.9), loc="left")
     ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")
+    # at most six x ticks: a short segment (z1 = z0 on the screen line) got nine 0.25 apart,
+    # their classroom-size labels running together (review r5, 04)
+    ax.xaxis.set_major_locator(MaxNLocator(nbins=5, steps=[1, 2, 2.5, 5, 10]))
     # the key beside the picture: inside, nine entries cover part of the rays whatever
     # corner they take
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,

@@ -26,7 +26,7 @@ import time
 import numpy as np
 
 from ..plotting.frames import frame_rgba
-from .common import later
+from .common import DRAWING, later
 
 #: Sliders with more positions than this are not drawn ahead (pictures the page would keep).
 MOST_POSITIONS = 128
@@ -103,6 +103,7 @@ class FramesAhead:
         self.todo: list[int] = []
         self.drawn = 0
         self._handle = None
+        self._loop = None  # the kernel's event loop, where the pictures are drawn
         self.closed = any(len(slider_positions(s)) > MOST_POSITIONS for s in self.sliders)
         #: a page listens (it said ``ready``): nothing is drawn for nobody
         self.listening = False
@@ -158,13 +159,21 @@ class FramesAhead:
         try:
             loop = asyncio.get_running_loop()
         except RuntimeError:
-            return  # no kernel event loop (plain Python, tests): call step() by hand
+            # a widget message handled on another thread than the kernel's loop (ipykernel
+            # 7): scheduled from the loop; no loop seen yet (plain Python, tests): step() by hand
+            if self._loop is not None and not self._loop.is_closed():
+                self._loop.call_soon_threadsafe(self._schedule, delay)
+            return
+        self._loop = loop
         if self._handle is None:
             self._handle = loop.call_later(delay, self._run)
 
     def _run(self) -> None:
         self._handle = None
-        if self.step(BATCH_S):
+        # never in the middle of a widget message handled on another thread (common.DRAWING)
+        with DRAWING:
+            more = self.step(BATCH_S)
+        if more:
             self._schedule()
 
     def step(self, seconds: float = 0.0) -> bool:
@@ -244,7 +253,8 @@ class TogglesAhead:
             return
         option, ex = self.todo.pop(0), self.explorer
         compute = lambda: ex._compute_at(self.where, option)  # noqa: E731
-        self.kept[option] = draw_elsewhere(self.display, ex, compute)
+        with DRAWING:  # later() holds it too; also when called by hand
+            self.kept[option] = draw_elsewhere(self.display, ex, compute)
         later(self.step, idle_only=True)
 
     def close(self) -> None:

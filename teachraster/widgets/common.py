@@ -5,6 +5,7 @@ from __future__ import annotations
 import base64
 import contextlib
 import html
+import threading
 
 import ipywidgets as widgets
 import matplotlib as mpl
@@ -341,7 +342,8 @@ def settle(callback) -> None:
 
     def run():
         _settling.pop(key, None)
-        callback()
+        with DRAWING:
+            callback()
 
     _settling[key] = loop.call_later(SETTLE_S, run)
 
@@ -375,6 +377,35 @@ def later(callback, *, idle_only: bool = False) -> None:
 
     def run():
         _later.pop(key, None)
-        callback()
+        with DRAWING:
+            callback()
 
     _later[key] = loop.call_later(LATER_S, run)
+
+
+#: Held while a widget's message is handled and while the kernel's event loop draws on its
+#: own (pictures drawn ahead, a deferred redraw). ipykernel 7 handles some widget messages
+#: on another thread than its event loop: a format toggled while the loop drew the pictures
+#: ahead (which set the explorer to another state and put it back) had its new state
+#: overwritten by the one put back, or its picture drawn from a half-changed figure
+#: (review r5, lesson 05b: float32 shown under a caption saying reverse-Z, a blank picture,
+#: "near 0.112" while the slider read 0.1). Re-entrant: a handler may schedule or draw.
+DRAWING = threading.RLock()
+
+
+def _serialize_widget_messages() -> None:
+    """Every ipywidgets message (a control changed, a page's custom message) is handled
+    holding :data:`DRAWING`, so that nothing the event loop draws runs in the middle of it."""
+    handle = widgets.Widget._handle_msg
+    if getattr(handle, "_teachraster_serialized", False):
+        return
+
+    def handle_msg(self, msg):
+        with DRAWING:
+            return handle(self, msg)
+
+    handle_msg._teachraster_serialized = True
+    widgets.Widget._handle_msg = handle_msg
+
+
+_serialize_widget_messages()

@@ -320,6 +320,9 @@ class PredictPoint(FigurePrediction):
         Label a live readout of the marker's x while it moves, e.g. "code": the figure shows
         "code 186" beside the marker (to ``step``'s decimals) and the verdict repeats it.
         Default: no readout (where reading the answer off the marker would give it away).
+    ray_from : (2,) array-like, optional
+        The reveal also draws the ray from this point through the answer (the eye ray that
+        finds the point), so the answer shows where it comes from.
     explain, figsize, style : as above.
 
     Examples
@@ -334,7 +337,7 @@ class PredictPoint(FigurePrediction):
     def __init__(self, question: str, answer, *, draw, xlim, ylim, start=None, along=None,
                  tolerance: float = 0.0, units: str = "units", explain: str = "",
                  figsize=(7.0, 5.0), style: str | None = "classroom", step=None,
-                 readout: str | None = None) -> None:  # fmt: skip
+                 readout: str | None = None, ray_from=None) -> None:  # fmt: skip
         answer = as_finite("answer", answer, (2,))
         xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
         if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
@@ -348,6 +351,8 @@ class PredictPoint(FigurePrediction):
             start = along.mean(axis=0) if along is not None else [xlim.mean(), ylim.mean()]
         start = as_finite("start", start, (2,))
         draw = _check_draw(draw)
+        if ray_from is not None:
+            ray_from = as_finite("ray_from", ray_from, (2,)).tolist()
 
         def axes_for(fig):
             ax = fig.add_subplot()
@@ -374,7 +379,7 @@ class PredictPoint(FigurePrediction):
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
             "units": html.escape(units), "keyStep": step,
             "readout": None if readout is None else html.escape(readout),
-            "readoutDigits": digits, **picture})  # fmt: skip
+            "readoutDigits": digits, "rayFrom": ray_from, **picture})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:

@@ -260,6 +260,18 @@ function mountPoint(root, data, host) {
     const mine = toPx(state.given || start);
     if (state.revealed) {
       const truth = toPx(data.answer);
+      if (data.rayFrom) {
+        // the ray that finds the answer (PredictPoint's ray_from), on past it a little
+        const from = toPx(data.rayFrom);
+        const past = [truth[0] + 0.15 * (truth[0] - from[0]), truth[1] + 0.15 * (truth[1] - from[1])];
+        ctx.strokeStyle = "#009E73";
+        ctx.lineWidth = 3;
+        ctx.beginPath();
+        ctx.moveTo(...from);
+        ctx.lineTo(...past);
+        ctx.stroke();
+      }
+      ctx.lineWidth = 1.5;
       ctx.strokeStyle = "#333";
       ctx.setLineDash([4, 3]);
       ctx.beginPath();
