@@ -166,21 +166,73 @@ ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
            4: "missing premultiplication", 5: "blend order", 6: "sliver"}  # fmt: skip
 
 
+def _showing(number):
+    """The first pixel the check accepts for frame ``number``."""
+    return next((int(r), int(c)) for r, c in np.argwhere(bf._differs(number))
+                if bf._shows(number, r, c))  # fmt: skip
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_broken_frame_objects_students_get_do_not_carry_the_answer(number):
+    """A student gets the frame, the intended frame and the symptom: no cause to read, no
+    oracle for the pixel, and a repr that prints neither."""
+    b = ex.broken_frame(number)
+    public = {a for a in dir(b) if not a.startswith("_")}
+    assert public == {"number", "symptom", "frame", "intended"}, public
+    assert ANSWERS[number] not in repr(b) and ANSWERS[number] not in str(b)
+    assert ANSWERS[number] not in b.symptom
+
+
+def test_broken_frame_texts_do_not_pair_a_task_with_its_cause():
+    """The symptoms say what is seen, never the mechanism, and frame 1's task text shares no
+    telling word with the cause list (r5: "mapping" in both gave frame 1 away)."""
+    import json
+    from pathlib import Path
+
+    nb = json.loads(Path(__file__).parents[1].joinpath(
+        "notebooks/exercises/11_broken_frames.ipynb").read_text())  # fmt: skip
+    task = "".join(
+        next(
+            c["source"]
+            for c in nb["cells"]
+            if c["metadata"].get("nbgrader", {}).get("grade_id") == "frame_1_task"
+        )
+    )
+    for word in (r"mapping", r"reversed", r"1 − d", r"\bless\b"):
+        assert not re.search(word, task.lower()), word
+        assert not re.search(word, bf.CAUSES["depth function"].lower()), word
+    symptoms = " ".join(ex.broken_frame(n).symptom.lower() for n in ANSWERS)
+    for telling in (
+        "depth write",
+        "dotted",
+        "gap",
+        "sticker shows the wall",
+        "too bright",
+        "wrong faces",
+        "hidden",
+        "behind",
+        "in front",
+    ):
+        assert telling not in symptoms, telling
+    for key, gloss in bf.CAUSES.items():  # a cause, never the symptom it leaves
+        for telling in ("vanish", "shows only", "stripe", "dark", "bright"):
+            assert telling not in gloss, (key, gloss)
+
+
 @pytest.mark.parametrize("number", list(ANSWERS))
 def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
-    b = ex.broken_frame(number)
-    assert b.cause == ANSWERS[number]
-    row, col = next((int(r), int(c)) for r, c in np.argwhere(b.differs()) if b.shows(r, c))
+    assert bf._answer(number) == ANSWERS[number]
+    row, col = _showing(number)
     _passes(f"broken_frame_{number}", lambda: (ANSWERS[number].upper(), (row, col)))
     for cause in bf.CAUSES:
-        if cause == b.cause:
+        if cause == ANSWERS[number]:
             continue
         report = ex.check(f"broken_frame_{number}", lambda c=cause: (c, (row, col)))
         assert [f.kind for f in report.failures] == ["cause"], str(report)
         hint = report.failures[0].explanation
-        assert b.cause not in hint and "does not explain" not in hint, (cause, hint)
-    same = np.argwhere(~b.differs())[0]
-    report = ex.check(f"broken_frame_{number}", lambda: (b.cause, tuple(same)))
+        assert ANSWERS[number] not in hint and "does not explain" not in hint, (cause, hint)
+    same = np.argwhere(~bf._differs(number))[0]
+    report = ex.check(f"broken_frame_{number}", lambda: (ANSWERS[number], tuple(same)))
     assert [f.kind for f in report.failures] == ["pixel"]
 
 
@@ -188,12 +240,12 @@ def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
 def test_broken_frame_pixel_must_show_the_cause_in_its_history(number):
     """A changed pixel whose history lacks the cause's signature is refused (frame 6: a wire
     pixel whose centre the wire covers shows no sliver missed)."""
-    b = ex.broken_frame(number)
-    lacking = [(int(r), int(c)) for r, c in np.argwhere(b.differs()) if not b.shows(r, c)]
+    lacking = [(int(r), int(c)) for r, c in np.argwhere(bf._differs(number))
+               if not bf._shows(number, r, c)]  # fmt: skip
     if number == 6:
         assert (18, 26) in lacking
     for pixel in lacking[:3]:
-        report = ex.check(f"broken_frame_{number}", lambda p=pixel: (b.cause, p))
+        report = ex.check(f"broken_frame_{number}", lambda p=pixel: (ANSWERS[number], p))
         assert [f.kind for f in report.failures] == ["pixel"], str(report)
         assert "does not show" in report.failures[0].explanation
 
@@ -203,7 +255,7 @@ def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
     farther surface of the intended mapping): its cause names the mapping. Frame 6 differs
     from the intended frame by its samples only: its cause names the one sample."""
     one = ex.broken_frame(1)
-    row, col = next((int(r), int(c)) for r, c in np.argwhere(one.differs()) if one.shows(r, c))
+    row, col = _showing(1)
     rec = [
         r for r in one.frame.history(row, col).records if r.outcome in ("passed", "failed_depth")
     ]
@@ -212,17 +264,32 @@ def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
     meant = {r.triangle: r.depth for r in one.intended.history(row, col).records
              if r.outcome in ("passed", "failed_depth")}  # fmt: skip
     assert meant[kept.triangle] == max(meant.values())  # the farther surface, as meant
-    assert "mapping" in bf.CAUSES["depth function"]
+    assert "farther surface" in bf.CAUSES["depth function"]
     six = ex.broken_frame(6)
     assert six.frame.samples is None and len(six.intended.samples) == 16  # 1 sample, 16
-    assert "one sample" in bf.CAUSES["sliver"] and "antialiasing" in bf.CAUSES["sliver"]
+    assert "one sample" in bf.CAUSES["sliver"]
+
+
+def test_broken_frame_6_differs_only_where_the_wire_is():
+    """The intended frame 6 changes only the sampling: the post, on pixel boundaries, is the
+    same in both, so every changed pixel is one the wire touches (r5: 16× samples changed the
+    post's edges too, and its first changed pixel was on the post)."""
+    six = ex.broken_frame(6)
+    wire = int(np.argmin(bf._altitudes(six.frame)))
+    for row, col in np.argwhere(bf._differs(6)):
+        assert any(r.triangle == wire for r in six.frame.history(row, col).records), (row, col)
+    post = (24, 6)  # the post's middle: unchanged, and told so
+    report = ex.check("broken_frame_6", lambda: ("sliver", post))
+    assert [f.kind for f in report.failures] == ["pixel"]
+    assert "lies on the post" in report.failures[0].explanation, str(report)
 
 
 def test_broken_frame_5_draws_its_glass_without_depth_writes_as_lesson_11_teaches():
     """The glass writes no depth (lesson 11 §6): the wall drawn after it passes, nothing is
     rejected, and the order alone hides the glass."""
     b = ex.broken_frame(5)
-    row, col = (int(v) for v in np.argwhere(b.differs())[len(np.argwhere(b.differs())) // 2])
+    changed = np.argwhere(bf._differs(5))
+    row, col = (int(v) for v in changed[len(changed) // 2])
     records = [r for r in b.frame.history(row, col).records if r.outcome != "not_covered"]
     glass = [r for r in records if r.value and r.value[3] < 1]
     assert glass and not any(r.depth_write for r in glass)
