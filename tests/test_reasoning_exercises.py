@@ -117,25 +117,51 @@ def test_robust_fill_names_a_forgotten_tie_case_on_every_failure(tie, kind):
     assert report.failures and {f.kind for f in report.failures} == {kind}, str(report)
 
 
-def test_robust_fill_names_a_reversed_rule_only_where_pixels_are_extra():
-    """The counts of a case never contradict its diagnosis: a reversed tie rule (or E >= 0)
-    is named only on a case with extra pixels, a forgotten one only with missing ones only."""
+def test_robust_fill_names_a_reversed_rule_first_and_a_forgotten_one_only_where_it_misses():
+    """A reversed tie rule gives every answer: it is named on every failure, the first
+    included (r5: a reversed top rule was first called "no top edges"); a forgotten one only
+    misses pixels, and is named only where pixels are missing only."""
     from student_variants import _fill_with, _owns_bottom_left, _owns_top_right, _owns_y_up_both
 
-    reversed_kinds = {"top edge reversed", "left edge reversed", "both reversed", "E >= 0"}
     forgotten = {"no top edges", "no left edges", "E > 0"}
-    seen = set()
-    for tie in (_owns_bottom_left, _owns_top_right, _owns_y_up_both, lambda a, b: False,
-                lambda a, b: b[1] < a[1], lambda a, b: b[1] == a[1] and b[0] > a[0]):  # fmt: skip
+    for tie, kind in ((_owns_bottom_left, "top edge reversed"),
+                      (_owns_top_right, "left edge reversed"),
+                      (_owns_y_up_both, "both reversed")):  # fmt: skip
+        report = ex.check("robust_fill", _fill_with(tie=tie))
+        assert {f.kind for f in report.failures} == {kind}, str(report)
+    for tie in (
+        lambda a, b: False,
+        lambda a, b: b[1] < a[1],
+        lambda a, b: b[1] == a[1] and b[0] > a[0],
+    ):
         for f in ex.check("robust_fill", _fill_with(tie=tie)).failures:
-            seen.add(f.kind)
             missing, extra = (int(n) for n in re.findall(r"(\d+) missing, (\d+) extra",
                                                          f.explanation)[-1])  # fmt: skip
-            if f.kind in reversed_kinds:
-                assert extra > 0, f.explanation
-            if f.kind in forgotten:
-                assert missing > 0 and extra == 0, f.explanation
-    assert reversed_kinds - {"E >= 0"} <= seen and forgotten <= seen
+            assert f.kind in forgotten and missing > 0 and extra == 0, f.explanation
+
+
+def test_robust_fill_names_a_coarse_grid_never_float32_or_orientation():
+    """Snapping to 1/16 px (4 sub-pixel bits) is a coarser grid, on every failure: never
+    float32 (its vertices are float64) nor the unsnapped orientation (r5)."""
+    from student_variants import _fill_with
+
+    for grid in (16, 64, 2):
+        report = ex.check("robust_fill", _fill_with(grid=grid))
+        assert {f.kind for f in report.failures} == {"coarse snapping"}, str(report)
+        assert "float32" not in str(report) and "unsnapped" not in str(report)
+
+
+def test_the_naive_fills_report_shows_each_family_of_its_failures_first():
+    """The naive fill (raw vertices, E >= 0, absolute float32) fails ties, snapping and
+    precision at once: one failure of each family comes first, the far case says precision
+    (r5: 48 failures of kind "value" hid the float32 and snapping ones)."""
+    report = ex.check("robust_fill", _fill(raw=True, rule="inclusive", absolute=True,
+                                           dtype=np.float32))  # fmt: skip
+    shown = report.shown()
+    kinds = [f.kind for f in shown]
+    assert {"far from origin", "off the grid", "zero area"} <= set(kinds), kinds
+    far = next(f for f in shown if f.kind == "far from origin")
+    assert "precision" in far.explanation and "float32" in far.explanation
 
 
 def test_robust_fill_task_keeps_the_goal_and_leaves_the_causes_to_the_checker():
