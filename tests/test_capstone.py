@@ -321,3 +321,42 @@ def test_capstone_headings_are_numbered_in_order_and_the_sphere_claims_what_it_s
     le = sv.WRONG["passes with <="][1]
     assert not ex.capstone("sphere", **_mine("sphere", depth_passes=le)).passed
     assert "When one of them is wrong" not in sphere and "12.1" in sphere and "12.4" in sphere
+
+
+def test_another_pixel_is_explained_and_the_overdraw_is_shown_where_only_it_differs():
+    """r5: report.explain_pixel raised on every capstone report, and the grid's E >= 0 drew
+    two identical frames beside a red diagonal (only the overdraw differs there)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.capstone("grid", covers=sv.WRONG["covers with E >= 0"][1])
+    row, col = (int(v) for v in report.differing_pixels()[-1])
+    said = report.explain_pixel(row, col)
+    assert said.startswith(f"pixel ({row}, {col}), coverage:") and "E ≥ 0" in said, said
+    assert report.explain_pixel(0, 0) == "pixel (0, 0) matches the package's"
+    with pytest.raises(ValueError, match="row, col"):
+        report.explain_pixel(99, 0)
+    fig, axes = plt.subplots(1, 3)
+    report.compare(axes)
+    assert "overdraw" in axes[0].get_title() and "overdraw" in axes[1].get_title()
+    yours, ours = (ax.get_images()[0].get_array() for ax in axes[:2])
+    assert not np.array_equal(yours[row, col], ours[row, col])
+    plt.close(fig)
+    fig, axes = plt.subplots(1, 3)
+    ex.capstone("grid", covers=_top_right).compare(axes)  # the frames differ: the frames
+    assert "overdraw" not in axes[0].get_title()
+    plt.close(fig)
+
+
+def test_numbers_in_capstone_sentences_are_this_pixels_or_said_to_be_the_exercises():
+    """A mistake named through the exercise's own case says so (r5: exercise 1's E = -135 and
+    "triangle 1" read as the grid's triangle 113's), and float noise prints short."""
+    from teachraster.exercises.scalars import vec
+
+    report = ex.capstone("grid", covers=_one_winding)
+    assert "names the mistake: in its own case" in report.failures[0].explanation, str(report)
+    assert vec([0.737, 0.522, 0.9199999999999999], [0.735, 0.521, 0.92]) == "(0.737, 0.522, 0.92)"
+    assert vec([0.735, 0.521, 0.92], [0.737, 0.522, 0.9199999999999999]) == "(0.735, 0.521, 0.92)"
+    assert vec([0.8], [0.8000000000000002]) != vec([0.8000000000000002], [0.8])  # apart

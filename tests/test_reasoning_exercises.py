@@ -409,3 +409,31 @@ def test_reports_draw_passing_failing_and_missing(name):
         assert artists and ax.get_title().startswith(name)
         fig.canvas.draw()
         plt.close(fig)
+
+
+def test_an_unnormalised_barycentric_is_told_that_its_own_weights_sum_wrong():
+    """r5: "the weights are (0.4, 0.2, 0.4), which sum to 25" (it is the student's λ)."""
+    report = ex.check("barycentric", lambda xy, p: sol_areas(xy, p))
+    first = report.failures[0].explanation
+    assert "which sum to" not in first and "; yours sum to" in first, first
+
+
+def sol_areas(xy, p):
+    """λ not divided by E(v1, v2, v3)."""
+    v1, v2, v3 = np.asarray(xy, float)
+    return np.array([tr.edge_function(v2, v3, p), tr.edge_function(v3, v1, p),
+                     tr.edge_function(v1, v2, p)])  # fmt: skip
+
+
+def test_the_fill_plot_leaves_the_titles_corner_free():
+    """r5: the check plot's title ran into the y tick "0" at the top edge."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("robust_fill", _fill(raw=True, rule="inclusive"))
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.plot(ax)
+    assert min(ax.get_yticks()) > min(ax.get_ylim()), ax.get_yticks()
+    plt.close(fig)

@@ -133,7 +133,9 @@ def _mistake_words(name, fn) -> str:
         words = [table[kind] for kind in parts]
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
-        return head + failure.explanation  # words that quote the case: the case's sentence
+        # words that quote the case: the case's sentence, said to be the exercise's case (its
+        # numbers are not this pixel's)
+        return f"{head}in its own case {failure.case}, {failure.explanation}"
     return _unnamed(checked, report)
 
 

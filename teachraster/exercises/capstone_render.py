@@ -23,6 +23,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..core.validate import as_int
 from ..pipeline.rendering.render_scenes import render
 from . import capstone_glass as glass
 from . import output
@@ -324,6 +325,21 @@ class CapstoneReport(Report):
         if self.mine is None:
             return np.zeros((0, 2), dtype=int)
         return np.argwhere(differing(self.spec, self.mine, self.reference))
+
+    def explain_pixel(self, row: int, col: int) -> str:
+        """Why pixel (``row``, ``col``) of your frame differs from the package's (the stage
+        where its histories part), or that it does not."""
+        row, col = as_int("row", row), as_int("col", col)
+        if not (0 <= row < H and 0 <= col < W):
+            raise ValueError(f"(row, col) must lie in the {H} × {W} frame, got ({row}, {col})")
+        if self.mine is None:
+            why = self.failures[0].explanation if self.failures else "not implemented yet"
+            return f"no frame of yours to compare: {why}"
+        if not differing(self.spec, self.mine, self.reference)[row, col]:
+            return f"pixel ({row}, {col}) matches the package's"
+        stage, text = explain_pixel(self.spec, self.functions, self.mine, self.reference,
+                                    (row, col))  # fmt: skip
+        return f"pixel ({row}, {col}), {stage}: {text}"
 
     def compare(self, axes=None, pixel="first"):
         """Three panels: your frame, the package's, the differing pixels (``pixel``, or the

@@ -345,7 +345,11 @@ def draw_fill(ax, case, got):
     _, (xy, width, height, origin), expected = case
     window = SimpleNamespace(origin=(origin[1], origin[0]))
     answer = None if got is None or got.shape != expected.shape else got
-    return draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
+    artists = draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
+    # no y tick on the top edge: its label would run into the report's title
+    top = min(ax.get_ylim())
+    ax.set_yticks([t for t in ax.get_yticks() if t > top and t <= max(ax.get_ylim())])
+    return artists
 
 
 def as_image(value) -> np.ndarray:
