@@ -419,7 +419,7 @@ def _draw(ax, case, got):
     same axes (an inset outside the axes would be clipped by the figure's edge)."""
     number = case[2][1]
     b = broken_frame(number)
-    gap = 4  # px between the two pictures
+    gap = 12  # px between the two pictures: room for their tick labels
     artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest"),
                ax.imshow(_rgb(b.intended), extent=(W + gap, 2 * W + gap, H, 0),
                          interpolation="nearest")]  # fmt: skip
@@ -431,8 +431,7 @@ def _draw(ax, case, got):
     ax.set_ylim(H, 0)
     ax.set_xticks([0, W // 2, W - 1, W + gap, W + gap + W // 2, 2 * W + gap - 1],
                   ["0", str(W // 2), str(W - 1), "0", str(W // 2), str(W - 1)])  # fmt: skip
-    for x, what in ((W / 2, "rendered"), (W + gap + W / 2, "intended")):
-        artists.append(ax.text(x, H + 1, what, ha="center", va="top", fontsize="small"))
+    ax.set_xlabel("left: as rendered · right: as intended", fontsize="small")
     ax.set_title(f"frame {number}: {b.symptom}", fontsize="small")
     return artists
 

@@ -24,7 +24,7 @@ def picture(spec, frame) -> np.ndarray:
 
 
 def _views(report) -> tuple[np.ndarray, np.ndarray | None, str]:
-    """(the package's picture, yours or None, what they show): the frames, or, where the
+    """(the package's picture, yours or None, the overdraw's scale or ""): the frames, or, where the
     frames look alike and only the overdraw differs (a centre covered twice by the same
     colour), the overdraw view of lesson 11, so that the panels show the difference."""
     spec = report.spec
@@ -40,7 +40,7 @@ def _views(report) -> tuple[np.ndarray, np.ndarray | None, str]:
 
     top = max(float(np.max(counts[0])), float(np.max(counts[1])), 1.0)
     ref, mine = (colormaps["viridis"](np.asarray(c, float) / top)[..., :3] for c in counts)
-    return ref, mine, f" (overdraw, 0 to {top:g})"
+    return ref, mine, f"covers: dark 0 to yellow {top:g}"
 
 
 def _axes(axes):
@@ -62,7 +62,11 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     wrong = report.differing_pixels()
     h, w = ref.shape[:2]
     artists = []
-    titles = (f"{spec.name}: yours{view}", f"the package's{view}", f"{len(wrong)} pixel(s) differ")
+    if view:  # the overdraw: short titles, the scale below
+        titles = ("yours (overdraw)", "package's (overdraw)", f"{len(wrong)} pixel(s) differ")
+        axes[0].set_xlabel(view, fontsize="x-small")
+    else:
+        titles = (f"{spec.name}: yours", "the package's", f"{len(wrong)} pixel(s) differ")
     for ax, title in zip(axes, titles):
         ax.set_title(title, fontsize="small")
         ax.set_xticks([])
