@@ -536,15 +536,21 @@ def _half_up(x):
     return np.floor(x + 0.5)
 
 
-def _fill_with(snap=True, tie=_owns, dtype=np.float64, absolute=False, vertices=np.float64):
+def _fill_with(snap=True, tie=_owns, dtype=np.float64, absolute=False, vertices=np.float64,
+               grid=256, transposed=False, yx=False):  # fmt: skip
     """A vectorised fill of a window at ``origin`` (row, col) with knobs: raw vertices, another
-    rounding, another tie rule, float32 (arithmetic, or storage of the snapped vertices), the
-    absolute form A x + B y + C."""
+    rounding or grid, another tie rule, float32 (arithmetic, or storage of the snapped
+    vertices), the absolute form A x + B y + C, the image transposed, each vertex read (y, x)."""
     rounding = {"floor": np.floor, "half up": _half_up}.get(snap, np.rint)
 
     def robust_fill(xy, width, height, origin=(0, 0)):
-        v = np.asarray(xy, dtype=float)
-        v = rounding(v * 256) / 256 if snap else v
+        if transposed:  # built as [col, row]: right only when the window is square
+            return robust_fill_(xy, height, width, origin).T
+        return robust_fill_(xy, width, height, origin)
+
+    def robust_fill_(xy, width, height, origin=(0, 0)):
+        v = np.asarray(xy, dtype=float)[:, ::-1] if yx else np.asarray(xy, dtype=float)
+        v = rounding(v * grid) / grid if snap else v
         v = v.astype(vertices).astype(float)
         if edge_function(*v) == 0:
             return np.zeros((height, width), dtype=bool)
@@ -902,13 +908,21 @@ WRONG = {
         _fill_with(vertices=np.float32),
         "store the snapped vertices in float32",
     ),  # fmt: skip
+    # r5: a 1/16-px grid was blamed on float32 and the unsnapped orientation
+    "robust fill snapped to 1/16 px": (
+        "robust_fill",
+        _fill_with(grid=16),
+        "coarser grid than 1/256",
+    ),
+    "robust fill snapped to 1/2 px": ("robust_fill", _fill_with(grid=2), "coarser grid than 1/256"),
+    "robust fill transposed": ("robust_fill", _fill_with(transposed=True), "image is transposed"),
+    "robust fill reading (y, x)": ("robust_fill", _fill_with(yx=True), "as (y, x)"),
     **{
         label: ("robust_fill", _fill_with(tie=tie), words)
         for label, tie, words in (
-            # its first failing case misses a top-edge centre and has no bottom edge through a
-            # centre: its counts (missing only) say no more than that; the reversal is named
-            # where it covers a bottom edge (test_reasoning_exercises.py)
-            ("fill with y-up tie directions", _owns_bottom_left, "no centre on a top edge"),
+            # the reversed rule gives every answer: it is named first, even on a case where
+            # it only misses pixels (r5: "no top edges" came first)
+            ("fill with y-up tie directions", _owns_bottom_left, "top edges are the bottom"),
             ("fill with top-right ties", _owns_top_right, "left edges are the right ones"),
             ("fill with bottom-right ties", _owns_y_up_both, "reverse of the top-left rule"),
             ("fill forgetting top edges", _owns_left_only, "no centre on a top edge"),
@@ -1002,7 +1016,11 @@ KINDS = {
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",
-    "fill with y-up tie directions": "no top edges",
+    "fill with y-up tie directions": "top edge reversed",
+    "robust fill snapped to 1/16 px": "coarse snapping",
+    "robust fill snapped to 1/2 px": "coarse snapping",
+    "robust fill transposed": "transposed",
+    "robust fill reading (y, x)": "vertex x and y swapped",
     "fill with top-right ties": "left edge reversed",
     "fill with bottom-right ties": "both reversed",
     "fill snapped half up": "half-up snapping",

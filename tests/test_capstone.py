@@ -142,6 +142,40 @@ WRONG = [
 ]  # fmt: skip
 
 
+def _unsigned(xy, p):  # barycentrics from unsigned areas: right inside, wrong outside
+    return np.abs(sol.barycentric(xy, p))
+
+
+_LE, _PREVIOUS = sv.WRONG["passes with <="][1], sv.WRONG["against the previous fragment"][1]
+
+#: Wrong functions a scene's own pixels cannot see (every centre inside, glass that writes no
+#: depth, a sphere with no tie): each must still fail, on its own exercise's cases or in the
+#: capstone scene that sees it (r5: all of these passed).
+BLIND = [
+    ("glass", {"depth_passes": lambda d, w: [True] * len(d)},
+     "depth_passes exercise's own cases", "lets every fragment pass"),
+    ("glass", {"depth_passes": _LE}, "depth_passes exercise's own cases", "use <, not <="),
+    ("single_triangle", {"barycentric": _unsigned}, "barycentric exercise's own cases",
+     "signed"),
+    ("textured_floor", {"barycentric": _unsigned}, "barycentric exercise's own cases", "signed"),
+    ("sphere", {"barycentric": _unsigned}, "barycentric exercise's own cases", "signed"),
+    ("sphere", {"covers": sv.WRONG["covers with E >= 0"][1]}, "the grid scene", "E ≥ 0"),
+    ("sphere", {"covers": sv.WRONG["covers with E > 0"][1]}, "the grid scene", "E > 0"),
+    ("sphere", {"depth_passes": _LE}, "the intersecting_triangles scene", "use <, not <="),
+    ("sphere", {"depth_passes": _PREVIOUS}, "the intersecting_triangles scene",
+     "the one just before it"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("scene, changed, where, words", BLIND,
+                         ids=[f"{b[0]}-{b[3][:12]}" for b in BLIND])  # fmt: skip
+def test_a_wrong_function_the_scene_cannot_see_fails_where_it_shows(scene, changed, where, words):
+    report = ex.capstone(scene, **_mine(scene, **changed))
+    assert not report.passed, str(report)
+    last = report.failures[-1].explanation
+    assert where in last and words in last, str(report)
+
+
 @pytest.mark.parametrize("scene, changed, stage, words", WRONG,
                          ids=[f"{w[0]}-{w[3][:12]}" for w in WRONG])  # fmt: skip
 def test_a_wrong_function_is_found_at_its_stage(scene, changed, stage, words):
@@ -266,8 +300,10 @@ def test_an_over_that_leaves_alpha_alone_fails_the_glass_on_its_own_cases(scene)
 
 
 def test_capstone_headings_are_numbered_in_order_and_the_sphere_claims_what_it_sees():
-    """12.1 to 12.10 without a gap; the sphere (no centre on an edge, no equal depths) does
-    not claim to name every wrong function: a `<=` depth test passes it."""
+    """12.1 to 12.10 without a gap; the sphere (no centre on an edge, no equal depths) says
+    where its ties are checked instead (the grid and the green copy), and a `<=` depth test
+    fails it there."""
+    import inspect
     import json
     import re
     from pathlib import Path
@@ -278,6 +314,49 @@ def test_capstone_headings_are_numbered_in_order_and_the_sphere_claims_what_it_s
     numbers = [int(n) for t in text for n in re.findall(r"^## 12\.(\d+)", t, re.M)]
     assert numbers == list(range(1, len(numbers) + 1)), numbers
     sphere = next(t for t in text if "All of it at once" in t)
+    # the CPU limit is said where students read it (r5: 30 s of CPU, 88 s of wall time, unsaid)
+    setup = "".join(cells[1]["source"])
+    assert "ex.CAPSTONE_BUDGET" in setup and "a second or so;" not in text[0]
+    assert inspect.signature(ex.capstone).parameters["budget"].default == ex.CAPSTONE_BUDGET
     le = sv.WRONG["passes with <="][1]
-    assert ex.capstone("sphere", **_mine("sphere", depth_passes=le)).passed
+    assert not ex.capstone("sphere", **_mine("sphere", depth_passes=le)).passed
     assert "When one of them is wrong" not in sphere and "12.1" in sphere and "12.4" in sphere
+
+
+def test_another_pixel_is_explained_and_the_overdraw_is_shown_where_only_it_differs():
+    """r5: report.explain_pixel raised on every capstone report, and the grid's E >= 0 drew
+    two identical frames beside a red diagonal (only the overdraw differs there)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.capstone("grid", covers=sv.WRONG["covers with E >= 0"][1])
+    row, col = (int(v) for v in report.differing_pixels()[-1])
+    said = report.explain_pixel(row, col)
+    assert said.startswith(f"pixel ({row}, {col}), coverage:") and "E ≥ 0" in said, said
+    assert report.explain_pixel(0, 0) == "pixel (0, 0) matches the package's"
+    with pytest.raises(ValueError, match="row, col"):
+        report.explain_pixel(99, 0)
+    fig, axes = plt.subplots(1, 3)
+    report.compare(axes)
+    assert "overdraw" in axes[0].get_title() and "overdraw" in axes[1].get_title()
+    yours, ours = (ax.get_images()[0].get_array() for ax in axes[:2])
+    assert not np.array_equal(yours[row, col], ours[row, col])
+    plt.close(fig)
+    fig, axes = plt.subplots(1, 3)
+    ex.capstone("grid", covers=_top_right).compare(axes)  # the frames differ: the frames
+    assert "overdraw" not in axes[0].get_title()
+    plt.close(fig)
+
+
+def test_numbers_in_capstone_sentences_are_this_pixels_or_said_to_be_the_exercises():
+    """A mistake named through the exercise's own case says so (r5: exercise 1's E = -135 and
+    "triangle 1" read as the grid's triangle 113's), and float noise prints short."""
+    from teachraster.exercises.scalars import vec
+
+    report = ex.capstone("grid", covers=_one_winding)
+    assert "names the mistake: in its own case" in report.failures[0].explanation, str(report)
+    assert vec([0.737, 0.522, 0.9199999999999999], [0.735, 0.521, 0.92]) == "(0.737, 0.522, 0.92)"
+    assert vec([0.735, 0.521, 0.92], [0.737, 0.522, 0.9199999999999999]) == "(0.735, 0.521, 0.92)"
+    assert vec([0.8], [0.8000000000000002]) != vec([0.8000000000000002], [0.8])  # apart

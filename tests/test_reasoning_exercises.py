@@ -117,25 +117,51 @@ def test_robust_fill_names_a_forgotten_tie_case_on_every_failure(tie, kind):
     assert report.failures and {f.kind for f in report.failures} == {kind}, str(report)
 
 
-def test_robust_fill_names_a_reversed_rule_only_where_pixels_are_extra():
-    """The counts of a case never contradict its diagnosis: a reversed tie rule (or E >= 0)
-    is named only on a case with extra pixels, a forgotten one only with missing ones only."""
+def test_robust_fill_names_a_reversed_rule_first_and_a_forgotten_one_only_where_it_misses():
+    """A reversed tie rule gives every answer: it is named on every failure, the first
+    included (r5: a reversed top rule was first called "no top edges"); a forgotten one only
+    misses pixels, and is named only where pixels are missing only."""
     from student_variants import _fill_with, _owns_bottom_left, _owns_top_right, _owns_y_up_both
 
-    reversed_kinds = {"top edge reversed", "left edge reversed", "both reversed", "E >= 0"}
     forgotten = {"no top edges", "no left edges", "E > 0"}
-    seen = set()
-    for tie in (_owns_bottom_left, _owns_top_right, _owns_y_up_both, lambda a, b: False,
-                lambda a, b: b[1] < a[1], lambda a, b: b[1] == a[1] and b[0] > a[0]):  # fmt: skip
+    for tie, kind in ((_owns_bottom_left, "top edge reversed"),
+                      (_owns_top_right, "left edge reversed"),
+                      (_owns_y_up_both, "both reversed")):  # fmt: skip
+        report = ex.check("robust_fill", _fill_with(tie=tie))
+        assert {f.kind for f in report.failures} == {kind}, str(report)
+    for tie in (
+        lambda a, b: False,
+        lambda a, b: b[1] < a[1],
+        lambda a, b: b[1] == a[1] and b[0] > a[0],
+    ):
         for f in ex.check("robust_fill", _fill_with(tie=tie)).failures:
-            seen.add(f.kind)
             missing, extra = (int(n) for n in re.findall(r"(\d+) missing, (\d+) extra",
                                                          f.explanation)[-1])  # fmt: skip
-            if f.kind in reversed_kinds:
-                assert extra > 0, f.explanation
-            if f.kind in forgotten:
-                assert missing > 0 and extra == 0, f.explanation
-    assert reversed_kinds - {"E >= 0"} <= seen and forgotten <= seen
+            assert f.kind in forgotten and missing > 0 and extra == 0, f.explanation
+
+
+def test_robust_fill_names_a_coarse_grid_never_float32_or_orientation():
+    """Snapping to 1/16 px (4 sub-pixel bits) is a coarser grid, on every failure: never
+    float32 (its vertices are float64) nor the unsnapped orientation (r5)."""
+    from student_variants import _fill_with
+
+    for grid in (16, 64, 2):
+        report = ex.check("robust_fill", _fill_with(grid=grid))
+        assert {f.kind for f in report.failures} == {"coarse snapping"}, str(report)
+        assert "float32" not in str(report) and "unsnapped" not in str(report)
+
+
+def test_the_naive_fills_report_shows_each_family_of_its_failures_first():
+    """The naive fill (raw vertices, E >= 0, absolute float32) fails ties, snapping and
+    precision at once: one failure of each family comes first, the far case says precision
+    (r5: 48 failures of kind "value" hid the float32 and snapping ones)."""
+    report = ex.check("robust_fill", _fill(raw=True, rule="inclusive", absolute=True,
+                                           dtype=np.float32))  # fmt: skip
+    shown = report.shown()
+    kinds = [f.kind for f in shown]
+    assert {"far from origin", "off the grid", "zero area"} <= set(kinds), kinds
+    far = next(f for f in shown if f.kind == "far from origin")
+    assert "precision" in far.explanation and "float32" in far.explanation
 
 
 def test_robust_fill_task_keeps_the_goal_and_leaves_the_causes_to_the_checker():
@@ -166,21 +192,73 @@ ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
            4: "missing premultiplication", 5: "blend order", 6: "sliver"}  # fmt: skip
 
 
+def _showing(number):
+    """The first pixel the check accepts for frame ``number``."""
+    return next((int(r), int(c)) for r, c in np.argwhere(bf._differs(number))
+                if bf._shows(number, r, c))  # fmt: skip
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_broken_frame_objects_students_get_do_not_carry_the_answer(number):
+    """A student gets the frame, the intended frame and the symptom: no cause to read, no
+    oracle for the pixel, and a repr that prints neither."""
+    b = ex.broken_frame(number)
+    public = {a for a in dir(b) if not a.startswith("_")}
+    assert public == {"number", "symptom", "frame", "intended"}, public
+    assert ANSWERS[number] not in repr(b) and ANSWERS[number] not in str(b)
+    assert ANSWERS[number] not in b.symptom
+
+
+def test_broken_frame_texts_do_not_pair_a_task_with_its_cause():
+    """The symptoms say what is seen, never the mechanism, and frame 1's task text shares no
+    telling word with the cause list (r5: "mapping" in both gave frame 1 away)."""
+    import json
+    from pathlib import Path
+
+    nb = json.loads(Path(__file__).parents[1].joinpath(
+        "notebooks/exercises/11_broken_frames.ipynb").read_text())  # fmt: skip
+    task = "".join(
+        next(
+            c["source"]
+            for c in nb["cells"]
+            if c["metadata"].get("nbgrader", {}).get("grade_id") == "frame_1_task"
+        )
+    )
+    for word in (r"mapping", r"reversed", r"1 − d", r"\bless\b"):
+        assert not re.search(word, task.lower()), word
+        assert not re.search(word, bf.CAUSES["depth function"].lower()), word
+    symptoms = " ".join(ex.broken_frame(n).symptom.lower() for n in ANSWERS)
+    for telling in (
+        "depth write",
+        "dotted",
+        "gap",
+        "sticker shows the wall",
+        "too bright",
+        "wrong faces",
+        "hidden",
+        "behind",
+        "in front",
+    ):
+        assert telling not in symptoms, telling
+    for key, gloss in bf.CAUSES.items():  # a cause, never the symptom it leaves
+        for telling in ("vanish", "shows only", "stripe", "dark", "bright"):
+            assert telling not in gloss, (key, gloss)
+
+
 @pytest.mark.parametrize("number", list(ANSWERS))
 def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
-    b = ex.broken_frame(number)
-    assert b.cause == ANSWERS[number]
-    row, col = next((int(r), int(c)) for r, c in np.argwhere(b.differs()) if b.shows(r, c))
+    assert bf._answer(number) == ANSWERS[number]
+    row, col = _showing(number)
     _passes(f"broken_frame_{number}", lambda: (ANSWERS[number].upper(), (row, col)))
     for cause in bf.CAUSES:
-        if cause == b.cause:
+        if cause == ANSWERS[number]:
             continue
         report = ex.check(f"broken_frame_{number}", lambda c=cause: (c, (row, col)))
         assert [f.kind for f in report.failures] == ["cause"], str(report)
         hint = report.failures[0].explanation
-        assert b.cause not in hint and "does not explain" not in hint, (cause, hint)
-    same = np.argwhere(~b.differs())[0]
-    report = ex.check(f"broken_frame_{number}", lambda: (b.cause, tuple(same)))
+        assert ANSWERS[number] not in hint and "does not explain" not in hint, (cause, hint)
+    same = np.argwhere(~bf._differs(number))[0]
+    report = ex.check(f"broken_frame_{number}", lambda: (ANSWERS[number], tuple(same)))
     assert [f.kind for f in report.failures] == ["pixel"]
 
 
@@ -188,12 +266,12 @@ def test_broken_frame_right_answer_passes_and_wrong_ones_get_true_hints(number):
 def test_broken_frame_pixel_must_show_the_cause_in_its_history(number):
     """A changed pixel whose history lacks the cause's signature is refused (frame 6: a wire
     pixel whose centre the wire covers shows no sliver missed)."""
-    b = ex.broken_frame(number)
-    lacking = [(int(r), int(c)) for r, c in np.argwhere(b.differs()) if not b.shows(r, c)]
+    lacking = [(int(r), int(c)) for r, c in np.argwhere(bf._differs(number))
+               if not bf._shows(number, r, c)]  # fmt: skip
     if number == 6:
         assert (18, 26) in lacking
     for pixel in lacking[:3]:
-        report = ex.check(f"broken_frame_{number}", lambda p=pixel: (b.cause, p))
+        report = ex.check(f"broken_frame_{number}", lambda p=pixel: (ANSWERS[number], p))
         assert [f.kind for f in report.failures] == ["pixel"], str(report)
         assert "does not show" in report.failures[0].explanation
 
@@ -203,7 +281,7 @@ def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
     farther surface of the intended mapping): its cause names the mapping. Frame 6 differs
     from the intended frame by its samples only: its cause names the one sample."""
     one = ex.broken_frame(1)
-    row, col = next((int(r), int(c)) for r, c in np.argwhere(one.differs()) if one.shows(r, c))
+    row, col = _showing(1)
     rec = [
         r for r in one.frame.history(row, col).records if r.outcome in ("passed", "failed_depth")
     ]
@@ -212,17 +290,32 @@ def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
     meant = {r.triangle: r.depth for r in one.intended.history(row, col).records
              if r.outcome in ("passed", "failed_depth")}  # fmt: skip
     assert meant[kept.triangle] == max(meant.values())  # the farther surface, as meant
-    assert "mapping" in bf.CAUSES["depth function"]
+    assert "farther surface" in bf.CAUSES["depth function"]
     six = ex.broken_frame(6)
     assert six.frame.samples is None and len(six.intended.samples) == 16  # 1 sample, 16
-    assert "one sample" in bf.CAUSES["sliver"] and "antialiasing" in bf.CAUSES["sliver"]
+    assert "one sample" in bf.CAUSES["sliver"]
+
+
+def test_broken_frame_6_differs_only_where_the_wire_is():
+    """The intended frame 6 changes only the sampling: the post, on pixel boundaries, is the
+    same in both, so every changed pixel is one the wire touches (r5: 16× samples changed the
+    post's edges too, and its first changed pixel was on the post)."""
+    six = ex.broken_frame(6)
+    wire = int(np.argmin(bf._altitudes(six.frame)))
+    for row, col in np.argwhere(bf._differs(6)):
+        assert any(r.triangle == wire for r in six.frame.history(row, col).records), (row, col)
+    post = (24, 6)  # the post's middle: unchanged, and told so
+    report = ex.check("broken_frame_6", lambda: ("sliver", post))
+    assert [f.kind for f in report.failures] == ["pixel"]
+    assert "lies on the post" in report.failures[0].explanation, str(report)
 
 
 def test_broken_frame_5_draws_its_glass_without_depth_writes_as_lesson_11_teaches():
     """The glass writes no depth (lesson 11 §6): the wall drawn after it passes, nothing is
     rejected, and the order alone hides the glass."""
     b = ex.broken_frame(5)
-    row, col = (int(v) for v in np.argwhere(b.differs())[len(np.argwhere(b.differs())) // 2])
+    changed = np.argwhere(bf._differs(5))
+    row, col = (int(v) for v in changed[len(changed) // 2])
     records = [r for r in b.frame.history(row, col).records if r.outcome != "not_covered"]
     glass = [r for r in records if r.value and r.value[3] < 1]
     assert glass and not any(r.depth_write for r in glass)
@@ -316,3 +409,31 @@ def test_reports_draw_passing_failing_and_missing(name):
         assert artists and ax.get_title().startswith(name)
         fig.canvas.draw()
         plt.close(fig)
+
+
+def test_an_unnormalised_barycentric_is_told_that_its_own_weights_sum_wrong():
+    """r5: "the weights are (0.4, 0.2, 0.4), which sum to 25" (it is the student's λ)."""
+    report = ex.check("barycentric", lambda xy, p: sol_areas(xy, p))
+    first = report.failures[0].explanation
+    assert "which sum to" not in first and "; yours sum to" in first, first
+
+
+def sol_areas(xy, p):
+    """λ not divided by E(v1, v2, v3)."""
+    v1, v2, v3 = np.asarray(xy, float)
+    return np.array([tr.edge_function(v2, v3, p), tr.edge_function(v3, v1, p),
+                     tr.edge_function(v1, v2, p)])  # fmt: skip
+
+
+def test_the_fill_plot_leaves_the_titles_corner_free():
+    """r5: the check plot's title ran into the y tick "0" at the top edge."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("robust_fill", _fill(raw=True, rule="inclusive"))
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.plot(ax)
+    assert min(ax.get_yticks()) > min(ax.get_ylim()), ax.get_yticks()
+    plt.close(fig)

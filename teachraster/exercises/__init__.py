@@ -38,8 +38,18 @@ is drawn (:meth:`Report.plot`).
 """
 
 from .broken_frames import CAUSES, broken_frame
+from .capstone_render import BUDGET as CAPSTONE_BUDGET
 from .capstone_render import capstone
 from .checks import check, names
 from .report import Failure, Report
 
-__all__ = ["CAUSES", "Failure", "Report", "broken_frame", "capstone", "check", "names"]
+__all__ = [
+    "CAPSTONE_BUDGET",
+    "CAUSES",
+    "Failure",
+    "Report",
+    "broken_frame",
+    "capstone",
+    "check",
+    "names",
+]

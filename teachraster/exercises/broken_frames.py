@@ -35,14 +35,13 @@ W, H = 64, 48
 
 #: The causes a diagnosis may name (six occur, four do not).
 CAUSES = {
-    "depth function": "the depth test's direction does not match the depth mapping (e.g. "
-    "reversed depth, 1 − d, tested with LESS): it keeps the farther surface",
+    "depth function": "the depth test compares in the wrong direction for the frame's depths, "
+    "so it keeps the farther surface",
     "culled winding": "triangles that face the camera are culled",
     "z-fighting": "the depth buffer cannot tell two surfaces apart",
     "missing premultiplication": "straight-alpha colours are blended as premultiplied ones",
     "blend order": "transparent geometry is drawn before what lies behind it",
-    "sliver": "a triangle thinner than a pixel drawn with one sample per pixel (no "
-    "antialiasing): it shows only where it covers a pixel centre, and vanishes between",
+    "sliver": "a triangle thinner than a pixel drawn with one sample per pixel",
     "depth test off": "later triangles overwrite nearer ones",
     "near-plane clipping": "geometry is cut away by the near plane",
     "affine interpolation": "attributes are interpolated without the divide by w",
@@ -52,25 +51,36 @@ CAUSES = {
 
 @dataclass(frozen=True)
 class BrokenFrame:
-    """One frame to diagnose: the symptom as reported, its cause, the frames."""
+    """One frame to diagnose, as the student gets it: the symptom as reported and the two
+    frames. What broke it is the check's to know (:func:`_answer`), not a field to read."""
 
     number: int
     symptom: str
-    cause: str
     frame: Frame  # the broken one, traced
     intended: Frame  # what the programmer meant to draw
 
-    def shows(self, row: int, col: int) -> bool:
-        """Does pixel (row, col) show the cause: changed by it, and its history bearing the
-        cause's signature (:data:`SIGNATURES`)?"""
-        if not (0 <= row < H and 0 <= col < W and self.differs()[row, col]):
-            return False
-        return bool(SIGNATURES[self.cause][0](self.frame, self.frame.history(row, col)))
+    def __repr__(self) -> str:
+        return f"BrokenFrame({self.number}: {self.symptom!r}, .frame, .intended)"
 
-    def differs(self) -> np.ndarray:
-        """(H, W) bool: the pixels the mistake changed (colour, RGB)."""
-        a, b = _rgb(self.frame), _rgb(self.intended)
-        return ~np.isclose(a, b, atol=1e-6).all(axis=2)
+
+def _answer(number: int) -> str:
+    """The cause of frame ``number``: read by the check only."""
+    return _CAUSE_OF[number]
+
+
+def _differs(number: int) -> np.ndarray:
+    """(H, W) bool: the pixels the mistake of frame ``number`` changed (colour, RGB)."""
+    b = broken_frame(number)
+    return ~np.isclose(_rgb(b.frame), _rgb(b.intended), atol=1e-6).all(axis=2)
+
+
+def _shows(number: int, row: int, col: int) -> bool:
+    """Does pixel (row, col) of frame ``number`` show its cause: changed by it, and its history
+    bearing the cause's signature (:data:`SIGNATURES`)?"""
+    if not (0 <= row < H and 0 <= col < W and _differs(number)[row, col]):
+        return False
+    frame = broken_frame(number).frame
+    return bool(SIGNATURES[_answer(number)][0](frame, frame.history(row, col)))
 
 
 def _tested(frame, h) -> bool:
@@ -174,32 +184,39 @@ def _wall_and_glass(glass_first: bool) -> Frame:
 
 
 def _wire(samples: int) -> Frame:
-    post = _quad(4, 6, 9, 32)
+    """A post and a wire. The post's edges lie on pixel boundaries (design units of 3 are 4
+    px), so more samples change only the pixels the wire touches: the two frames differ by
+    the cause alone."""
+    post = _quad(3, 6, 9, 33)
     wire = [[[8.5, 9.2], [44.2, 23.7], [44.2, 24.0]]]
     clip = window_triangles(post + wire, [[0.5] * 3] * 3)
     rgba = _rgba([[0.45, 0.35, 0.25]] * 2 + [[0.1, 0.1, 0.1]])
     return render(clip, W, H, attrs=rgba, samples=samples, trace=True, clear_color=(1, 1, 1, 1))
 
 
+#: Each frame's symptom as a user would report it: what is seen, never the mechanism.
+_SPECS = [
+    ("The cube of lesson 05a does not look as intended.", "depth function",
+     lambda: _cube(reverse_depth=True), _cube),
+    ("The cube does not look as intended here either.", "culled winding",
+     lambda: _cube(cull="front"), lambda: _cube(cull="back")),
+    ("The orange sticker on the wall does not look as intended.", "z-fighting",
+     lambda: _decal("unorm16"), lambda: _decal("float64")),
+    ("The two panes of coloured glass do not have the intended colours.",
+     "missing premultiplication", lambda: _glass(False), lambda: _glass(True)),
+    ("The blue pane does not look as intended.", "blend order",
+     lambda: _wall_and_glass(True), lambda: _wall_and_glass(False)),
+    ("The wire from the post does not look as intended.", "sliver", lambda: _wire(1),
+     lambda: _wire(16)),
+]  # fmt: skip
+_CAUSE_OF = {k + 1: cause for k, (_, cause, *_) in enumerate(_SPECS)}
+
+
 @cache
 def broken_frames() -> tuple[BrokenFrame, ...]:
     """The six frames, numbered from 1 (rendered once)."""
-    specs = [
-        ("The cube of lesson 05a shows the wrong faces.", "depth function",
-         lambda: _cube(reverse_depth=True), _cube),
-        ("The cube shows the wrong faces here too.", "culled winding",
-         lambda: _cube(cull="front"), lambda: _cube(cull="back")),
-        ("The orange sticker on the wall does not look as intended.", "z-fighting",
-         lambda: _decal("unorm16"), lambda: _decal("float64")),
-        ("The two panes of coloured glass do not have the intended colours.",
-         "missing premultiplication", lambda: _glass(False), lambda: _glass(True)),
-        ("Where the blue glass lies over the wall, the frame is not the intended one.",
-         "blend order", lambda: _wall_and_glass(True), lambda: _wall_and_glass(False)),
-        ("The wire from the post does not look as intended.", "sliver", lambda: _wire(1),
-         lambda: _wire(16)),
-    ]  # fmt: skip
-    return tuple(BrokenFrame(k + 1, symptom, cause, broken(), intended())
-                 for k, (symptom, cause, broken, intended) in enumerate(specs))  # fmt: skip
+    return tuple(BrokenFrame(k + 1, symptom, broken(), intended())
+                 for k, (symptom, _, broken, intended) in enumerate(_SPECS))  # fmt: skip
 
 
 def broken_frame(number: int) -> BrokenFrame:
@@ -247,16 +264,15 @@ def _cases(number: int):
 
 def _same(got, expected, args=None) -> bool:
     part, number = expected
-    b = broken_frame(number)
     cause, (row, col) = got
     if part == "cause":
-        return cause == b.cause
-    return b.shows(row, col)
+        return cause == _answer(number)
+    return _shows(number, row, col)
 
 
 def _changed(number: int, row: int, col: int) -> bool:
     """Did the mistake of frame ``number`` change pixel (row, col) (False outside it)?"""
-    d = broken_frame(number).differs()
+    d = _differs(number)
     return bool(0 <= row < d.shape[0] and 0 <= col < d.shape[1] and d[row, col])
 
 
@@ -285,17 +301,32 @@ DIAGNOSIS_MISTAKES = (
     Mistake("cause", _cause_words, fits=lambda a, e, g: e[0] == "cause"),
     Mistake("pixel (col, row)", "a pixel is (row, col), the row first, and (col, row) = "
             "(x, y) is one the mistake changed: did you give (x, y)?", fits=lambda a, e, g:
-            e[0] == "pixel" and broken_frame(e[1]).shows(g[1][1], g[1][0])),
+            e[0] == "pixel" and _shows(e[1], g[1][1], g[1][0])),
     Mistake("pixel", lambda a, e, g: _pixel_words(e[1], *g[1]), fits=lambda a, e, g:
             e[0] == "pixel"),
 )  # fmt: skip
 
 
 def _pixel_words(number: int, row: int, col: int) -> str:
+    if _on_wide(number, row, col):
+        return "it lies on the post, which is wider than a pixel: choose a pixel along the wire"
     if _changed(number, row, col):
         return ("compare its history with the intended frame's history of the same pixel, or "
                 "choose another changed pixel whose history shows the mistake")  # fmt: skip
     return "choose a pixel the mistake changed (compare the two pictures), then read its history"
+
+
+def _on_wide(number: int, row: int, col: int) -> bool:
+    """Frame 6 only: is the pixel's centre covered by a triangle other than the thinnest (the
+    post), and not crossed by the thin one (the wire)?"""
+    if _answer(number) != "sliver":
+        return False
+    frame = broken_frame(number).frame
+    k = int(np.argmin(_altitudes(frame)))
+    records = frame.history(row, col).records
+    return not any(r.triangle == k for r in records) and any(
+        r.outcome != "not_covered" for r in records
+    )
 
 
 def hint(cause: str, frame: Frame, row: int, col: int) -> str:
@@ -384,18 +415,23 @@ def _altitudes(frame: Frame) -> np.ndarray:
 
 
 def _draw(ax, case, got):
-    """The broken frame with the chosen pixel marked (and the intended one inset)."""
+    """The broken frame with the chosen pixel marked, and the intended one beside it in the
+    same axes (an inset outside the axes would be clipped by the figure's edge)."""
     number = case[2][1]
     b = broken_frame(number)
-    artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest")]
+    gap = 12  # px between the two pictures: room for their tick labels
+    artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest"),
+               ax.imshow(_rgb(b.intended), extent=(W + gap, 2 * W + gap, H, 0),
+                         interpolation="nearest")]  # fmt: skip
     if got is not None and isinstance(got[0], str) and got[0] in CAUSES:  # an answer
         _, (row, col) = got
         artists += ax.plot([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row],
                            color="#D55E00", lw=2)  # fmt: skip
-    inset = ax.inset_axes([1.05, 0.5, 0.45, 0.45])
-    artists.append(inset.imshow(_rgb(b.intended), interpolation="nearest"))
-    inset.set_axis_off()
-    inset.set_title("intended", fontsize="x-small")
+    ax.set_xlim(0, 2 * W + gap)
+    ax.set_ylim(H, 0)
+    ax.set_xticks([0, W // 2, W - 1, W + gap, W + gap + W // 2, 2 * W + gap - 1],
+                  ["0", str(W // 2), str(W - 1), "0", str(W // 2), str(W - 1)])  # fmt: skip
+    ax.set_xlabel("left: as rendered · right: as intended", fontsize="small")
     ax.set_title(f"frame {number}: {b.symptom}", fontsize="small")
     return artists
 

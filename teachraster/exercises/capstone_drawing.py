@@ -23,6 +23,26 @@ def picture(spec, frame) -> np.ndarray:
     return np.clip(frame.image, 0, 1)
 
 
+def _views(report) -> tuple[np.ndarray, np.ndarray | None, str]:
+    """(the package's picture, yours or None, the overdraw's scale or ""): the frames, or, where the
+    frames look alike and only the overdraw differs (a centre covered twice by the same
+    colour), the overdraw view of lesson 11, so that the panels show the difference."""
+    spec = report.spec
+    ref = picture(spec, report.reference)
+    mine = None if report.mine is None else picture(spec, report.mine)
+    if mine is None or "overdraw" not in spec.compare:
+        return ref, mine, ""
+    counts = report.reference.overlay("overdraw"), report.mine.overlay("overdraw")
+    looks_alike = np.array_equal(np.nan_to_num(mine, nan=-1.0), np.nan_to_num(ref, nan=-1.0))
+    if not looks_alike or np.array_equal(*counts):
+        return ref, mine, ""
+    from matplotlib import colormaps
+
+    top = max(float(np.max(counts[0])), float(np.max(counts[1])), 1.0)
+    ref, mine = (colormaps["viridis"](np.asarray(c, float) / top)[..., :3] for c in counts)
+    return ref, mine, f"covers: dark 0 to yellow {top:g}"
+
+
 def _axes(axes):
     import matplotlib.pyplot as plt
 
@@ -38,12 +58,15 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     """Draw ``report`` (a :class:`.capstone_render.CapstoneReport`) on three Axes; returns artists."""
     axes = _axes(axes)
     spec = report.spec
-    ref = picture(spec, report.reference)
-    mine = None if report.mine is None else picture(spec, report.mine)
+    ref, mine, view = _views(report)
     wrong = report.differing_pixels()
     h, w = ref.shape[:2]
     artists = []
-    titles = (f"{spec.name}: yours", "the package's", f"{len(wrong)} pixel(s) differ")
+    if view:  # the overdraw: short titles, the scale below
+        titles = ("yours (overdraw)", "package's (overdraw)", f"{len(wrong)} pixel(s) differ")
+        axes[0].set_xlabel(view, fontsize="x-small")
+    else:
+        titles = (f"{spec.name}: yours", "the package's", f"{len(wrong)} pixel(s) differ")
     for ax, title in zip(axes, titles):
         ax.set_title(title, fontsize="small")
         ax.set_xticks([])

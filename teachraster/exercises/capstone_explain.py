@@ -100,15 +100,31 @@ def named_mistake(used, name) -> str:
         return ""
 
 
+def own_report(checked: str, fn):
+    """Exercise ``checked``'s report on ``fn`` (run once per function: cached where ``fn``
+    can be hashed), its output and warnings kept aside (the scene showed them)."""
+    try:
+        return _own_report(checked, fn)
+    except TypeError:  # an unhashable callable: no cache
+        return _own_report.__wrapped__(checked, fn)
+
+
+@lru_cache(maxsize=32)
+def _own_report(checked: str, fn):
+    from .checks import check
+
+    with output.captured(), warnings.catch_warnings():  # a second run: its warnings were shown
+        warnings.simplefilter("ignore")
+        return check(checked, fn)
+
+
 @lru_cache(maxsize=32)
 def _mistake_words(name, fn) -> str:
-    from .checks import check, exercise
+    from .checks import exercise
 
     checked = CHECKED_AS.get(name, name)
     table = _words_by_kind(exercise(checked).mistakes)
-    with output.captured(), warnings.catch_warnings():  # a second run: its warnings were shown
-        warnings.simplefilter("ignore")
-        report = check(checked, fn)
+    report = own_report(checked, fn)
     head = f"; the {checked} exercise's check names the mistake: "
     for failure in report.failures:
         parts = [failure.kind] if failure.kind in table else failure.kind.split(" and ")
@@ -117,7 +133,9 @@ def _mistake_words(name, fn) -> str:
         words = [table[kind] for kind in parts]
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
-        return head + failure.explanation  # words that quote the case: the case's sentence
+        # words that quote the case: the case's sentence, said to be the exercise's case (its
+        # numbers are not this pixel's)
+        return f"{head}in its own case {failure.case}, {failure.explanation}"
     return _unnamed(checked, report)
 
 

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..core.validate import as_int
 from ..pipeline.rendering.render_scenes import render
 from . import capstone_glass as glass
 from . import output
@@ -35,6 +36,10 @@ from .running import effective_budget, run_case
 
 #: Frame size of every scene.
 W, H = 48, 36
+#: The CPU seconds a scene's render may take by default: right functions take about a
+#: second, a 20,000-step loop per call some four; an endless loop stops here (the
+#: notebook's setup cell prints it; ``TEACHRASTER_CHECK_BUDGET`` raises it for a class).
+BUDGET = 10.0
 
 
 #: How close a compared value must be: float32's rounding (a function computing in float32,
@@ -59,24 +64,38 @@ class CapstoneScene:
     sort: bool = False
     tol: float = TOL
     tiled: bool = False
+    #: What the scene cannot see of a function it takes, and where that is checked instead:
+    #: (function, "cases" (its own exercise's) or another scene's name, why).
+    blind: tuple[tuple[str, str, str], ...] = ()
 
+
+#: Why the scenes cannot see some mistakes (every compared centre inside its triangle, an
+#: opaque background, no depth write): the fallback that sees them is named beside each.
+_INSIDE = ("barycentric", "cases", "every compared centre lies inside the triangle, where "
+           "signed and unsigned areas give the same weights")  # fmt: skip
+_ALPHA = ("over", "cases", "this scene's opaque background hides what over does to alpha")
+_NO_WRITES = ("depth_passes", "cases", "no glass fragment writes its depth, so this scene's "
+              "depth test never rejects one")  # fmt: skip
 
 SCENES = {s.name: s for s in (
     CapstoneScene("grid", "a grid of quads: every centre covered once, both windings",
                   ("covers",), "grid", compare=("triangle_id", "overdraw")),
     CapstoneScene("single_triangle", "one triangle with red, green and blue corners",
-                  ("barycentric",), "single_triangle", compare=("attrs",)),
+                  ("barycentric",), "single_triangle", compare=("attrs",), blind=(_INSIDE,)),
     CapstoneScene("textured_floor", "a floor to the horizon: perspective-correct uv",
-                  ("barycentric", "perspective_weights"), "textured_floor", compare=("attrs",)),
+                  ("barycentric", "perspective_weights"), "textured_floor", compare=("attrs",),
+                  blind=(_INSIDE,)),
     CapstoneScene("intersecting_triangles", "two triangles piercing each other and a green copy "
                   "of the red one drawn last: equal depths, ties", ("depth_passes",),
                   "intersecting_triangles", compare=("triangle_id", "depth"), tie=True),
     CapstoneScene("glass", "the two triangles as glass: premultiplied colour blended over in "
                   "drawing order, no depth writes", ("depth_passes", "over"),
-                  "intersecting_triangles", compare=("color",), glass=True),
+                  "intersecting_triangles", compare=("color",), glass=True,
+                  blind=(_NO_WRITES, _ALPHA)),
     CapstoneScene("glass_sorted", "the glass resolved per pixel from an A-buffer: every "
                   "fragment seen through those in front of it", ("over", "a_buffer"),
-                  "intersecting_triangles", compare=("color",), glass=True, sort=True),
+                  "intersecting_triangles", compare=("color",), glass=True, sort=True,
+                  blind=(_ALPHA,)),
     CapstoneScene("floor_bilinear", "the floor's checkerboard filtered bilinearly",
                   ("bilinear",), "textured_floor", {"texture_filter": "bilinear"}, tol=TEXTURE_TOL,
                   tiled=True),
@@ -88,7 +107,11 @@ SCENES = {s.name: s for s in (
     CapstoneScene("sphere", "a textured sphere: all of your rasteriser at once",
                   ("covers", "barycentric", "perspective_weights", "depth_passes", "bilinear"),
                   "uv_sphere", {"texture_filter": "bilinear"}, ("triangle_id", "image"),
-                  tol=TEXTURE_TOL),
+                  tol=TEXTURE_TOL, blind=(
+                      ("covers", "grid", "no pixel centre of the sphere lies on an edge"),
+                      ("depth_passes", "intersecting_triangles", "no two of the sphere's "
+                       "depths are equal, and no pixel holds more than two fragments"),
+                      _INSIDE)),
 )}  # fmt: skip
 
 
@@ -148,7 +171,7 @@ def differing(spec: CapstoneScene, mine, reference) -> np.ndarray:
     return out
 
 
-def capstone(scene: str, *, budget: float = 30.0, **functions) -> CapstoneReport:
+def capstone(scene: str, *, budget: float = BUDGET, **functions) -> CapstoneReport:
     """Render capstone scene ``scene`` (:data:`SCENES`) with the student's ``functions``.
 
     Never raises or hangs because of a student's function: the render runs within
@@ -198,26 +221,46 @@ def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
     wrong = np.argwhere(differing(spec, mine, reference))
     failures = [_pixel_failure(spec, used, mine, reference, (int(r), int(c)))
                 for r, c in _spread(wrong)]  # fmt: skip
-    failures = _one_per_stage(failures) + _own_cases(spec, used)
+    failures = _one_per_stage(failures)
+    failures += _own_cases(spec, used, failures)
     return CapstoneReport(failures=failures, n_cases=n, mine=mine, n_wrong=len(wrong), **base)
 
 
-def _own_cases(spec: CapstoneScene, used) -> list[Failure]:
-    """``over`` on its own exercise's cases too: the glass scenes' background is opaque, so
-    alpha is 1 whatever ``over`` does to it, and the scene alone cannot see an ``over`` that
-    leaves the destination's alpha as it was."""
-    if "over" not in spec.uses:
-        return []
-    from .checks import check
+def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
+    """What the scene cannot see (:attr:`CapstoneScene.blind`), checked where it shows: on the
+    function's own exercise's cases, or in the capstone scene that sees it. A function the
+    scene's pixels already blame is not checked twice."""
+    out = []
+    for name, where, why in spec.blind:
+        if any(f"your {name}" in f.explanation for f in failures):
+            continue
+        failed = _fallback(name, used[name], where)
+        if failed is not None:
+            place = (f"the {CHECKED_AS.get(name, name)} exercise's own cases" if where == "cases"
+                     else f"the {where} scene")  # fmt: skip
+            said = failed.explanation if where == "cases" else \
+                f"{failed.case}, {failed.kind}: {failed.explanation}"  # fmt: skip
+            out.append(Failure(f"{name} on {place}", f"your {name} fails {place}, which can show "
+                               f"what this scene cannot ({why}): {said}", None, None,
+                               kind=failed.kind))  # fmt: skip
+    return out
 
-    with output.captured():
-        report = check(CHECKED_AS["over"], used["over"])
-    if report.passed or not report.failures:
-        return []
-    return [Failure(f"{CHECKED_AS['over']}'s own cases", "your over fails the "
-                    f"{CHECKED_AS['over']} exercise's own cases (this scene's opaque background "
-                    "hides what over does to alpha): " + report.failures[0].explanation,
-                    None, None, kind="blending")]  # fmt: skip
+
+def _fallback(name: str, fn, where: str) -> Failure | None:
+    """The first failure of ``fn`` on its own exercise's cases (``where`` = "cases") or in
+    capstone scene ``where``, or None when it passes there."""
+    from .capstone_explain import own_report
+
+    if where == "cases":
+        report = own_report(CHECKED_AS.get(name, name), fn)
+    else:
+        with output.captured():
+            report = capstone(where, **{name: fn})
+    if report.passed or report.not_implemented:
+        return None
+    # float32 within its rounding passes the capstone (:data:`TOL`), even where an exercise's
+    # own cases ask for float64's digits
+    return next((f for f in report.failures if f.kind != "float32"), None)
 
 
 def _spread(wrong: np.ndarray, most: int = 12) -> list:
@@ -282,6 +325,21 @@ class CapstoneReport(Report):
         if self.mine is None:
             return np.zeros((0, 2), dtype=int)
         return np.argwhere(differing(self.spec, self.mine, self.reference))
+
+    def explain_pixel(self, row: int, col: int) -> str:
+        """Why pixel (``row``, ``col``) of your frame differs from the package's (the stage
+        where its histories part), or that it does not."""
+        row, col = as_int("row", row), as_int("col", col)
+        if not (0 <= row < H and 0 <= col < W):
+            raise ValueError(f"(row, col) must lie in the {H} × {W} frame, got ({row}, {col})")
+        if self.mine is None:
+            why = self.failures[0].explanation if self.failures else "not implemented yet"
+            return f"no frame of yours to compare: {why}"
+        if not differing(self.spec, self.mine, self.reference)[row, col]:
+            return f"pixel ({row}, {col}) matches the package's"
+        stage, text = explain_pixel(self.spec, self.functions, self.mine, self.reference,
+                                    (row, col))  # fmt: skip
+        return f"pixel ({row}, {col}), {stage}: {text}"
 
     def compare(self, axes=None, pixel="first"):
         """Three panels: your frame, the package's, the differing pixels (``pixel``, or the

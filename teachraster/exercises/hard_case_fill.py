@@ -112,6 +112,10 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         "origin swapped": expected_fill(xy, width, height, (o[1], o[0])),
         "origin ignored": expected_fill(xy, width, height, (0, 0)),
         "pixel corners": expected_fill(np.asarray(xy, float) + 0.5, width, height, origin),
+        "transposed": expected_fill(xy, height, width, origin).T if width == height else None,
+        "vertex x and y swapped": expected_fill(
+            np.asarray(xy, float)[:, ::-1], width, height, origin
+        ),  # fmt: skip
         "no snapping": naive_coverage(xy, width, height, rule="top_left", **kw),
         "half-up snapping": naive_coverage(
             np.floor(np.asarray(xy, float) * 256 + 0.5) / 256, width, height, rule="top_left", **kw
@@ -136,20 +140,82 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     }
 
 
-def _reversed(s, width, height, kw, expected) -> dict[str, np.ndarray | None]:
-    """The tie rule with a direction reversed, where it shows: a reversed rule covers centres
-    on the wrong edges, so it is named only on a case where it gives extra pixels (a case
-    with missing pixels only is a forgotten rule, never a reversed one)."""
-    out = {}
-    for kind, rule in REVERSED.items():
-        got = naive_coverage(s, width, height, rule=rule, **kw)
-        out[kind] = got if (got & ~expected).any() else None
-    return out
+def _reversed(s, width, height, kw, expected) -> dict[str, np.ndarray]:
+    """The tie rule with a direction reversed, on every case (so that a reversed rule, which
+    gives every answer, is named first; a forgotten rule, which covers fewer pixels, gives
+    every answer of its own student and comes first in :data:`MISTAKES`)."""
+    return {kind: naive_coverage(s, width, height, rule=rule, **kw)
+            for kind, rule in REVERSED.items()}  # fmt: skip
 
 
 #: The reversed tie rules, as :func:`naive_coverage` names them.
 REVERSED = {"top edge reversed": "bottom_left", "left edge reversed": "top_right",
             "both reversed": "bottom_right"}  # fmt: skip
+
+#: Grids coarser than the GPU's 1/256 px that a student may snap to (sub-pixel bits 0 to 7).
+COARSE_BITS = range(8)
+
+
+def _coarse_grids(args, got) -> list[int]:
+    """The coarser grids (1/2^bits px) whose snapping gives ``got`` on this case."""
+    xy, width, height, origin = args
+    raw = np.asarray(xy, float)
+    return [bits for bits in COARSE_BITS if np.array_equal(naive_coverage(
+        np.rint(raw * 2**bits) / 2**bits, width, height, rule="top_left", origin=tuple(origin)),
+        got)]  # fmt: skip
+
+
+def _grid(bits: int) -> str:
+    return "1 px" if bits == 0 else f"1/{2**bits} px"
+
+
+def _coarse_words(args, expected, got) -> str:
+    bits = _coarse_grids(args, got)
+    grids = _grid(bits[0]) if len(bits) == 1 else f"{_grid(bits[0])} to {_grid(bits[-1])}"
+    return (f"you snap to a coarser grid than 1/256 px (a grid of {grids} gives this answer): "
+            "a GPU keeps 8 sub-pixel bits, so snap to 1/256 px, np.rint(xy * 256) / 256; a "
+            "coarser grid moves a vertex far enough to carry an edge across pixel centres")  # fmt: skip
+
+
+#: Named only when it gives every answer: a coarse grid may match one case by coincidence.
+COARSE = Mistake("coarse snapping", _coarse_words, only_whole=True,
+                 fits=lambda a, e, g: bool(_coarse_grids(a, g)))  # fmt: skip
+
+
+def _far(args) -> float:
+    """How far (px) the case's triangle lies from the origin."""
+    return float(np.abs(np.asarray(args[0], float)).max())
+
+
+def _far_words(args, expected, got) -> str:
+    far = _far(args)
+    step = float(np.spacing(np.float32(far)))
+    return (f"this triangle lies {far:.0f} px from the origin, where float32's numbers are "
+            f"{step:g} px apart, coarser than the 1/256-px grid: a precision failure; keep "
+            "the vertices in float64 (or integers in 1/256 px) and compute each edge function "
+            "from differences to a vertex, not as A x + B y + C")  # fmt: skip
+
+
+#: What is wrong, by the catalogue's family, where no single mistake gives the answer (two or
+#: more at once, as in the naive fill): far from the origin (precision), off the grid
+#: (snapping), so that one failure of each family shows first.
+FAR = Mistake("far from origin", _far_words, fits=lambda a, e, g: _far(a) >= 1e4, symptom=True)
+
+
+def _snapping_decides(args, expected, got) -> bool:
+    xy, width, height, origin = args
+    raw = np.asarray(xy, float)
+    if np.array_equal(snap(raw), raw):
+        return False
+    unsnapped = naive_coverage(raw, width, height, rule="top_left", origin=tuple(origin))
+    return not np.array_equal(unsnapped, expected)
+
+
+OFF_GRID = Mistake(
+    "off the grid", "this triangle's vertices lie off the 1/256-px grid, and snapping them "
+    "changes which centres it covers: snap first (np.rint(xy * 256) / 256), then decide ties "
+    "by the top-left rule on the snapped triangle", fits=_snapping_decides, symptom=True,
+)  # fmt: skip
 
 
 def tie_fill(s, width: int, height: int, origin, *, top: bool = True, left: bool = True):
@@ -194,6 +260,10 @@ MISTAKES = {
     "x = origin[1] + j + ½, y = origin[0] + i + ½, not at (j + ½, i + ½)",
     "pixel corners": "you tested the pixel corners (j, i): a pixel's centre is at "
     "(j + ½, i + ½) (plus the window's origin)",
+    "transposed": "your image is transposed: pixel [i, j] is row i (y), column j (x), so the "
+    "image has shape (height, width) and is indexed [row, col]",
+    "vertex x and y swapped": "you read each vertex as (y, x): a vertex is (x, y), x along "
+    "the columns and y down the rows",
     "no snapping": "you decide on the raw vertices: snap them to the 1/256-px grid first "
     "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
     "its neighbour agree on every tie",
@@ -275,7 +345,11 @@ def draw_fill(ax, case, got):
     _, (xy, width, height, origin), expected = case
     window = SimpleNamespace(origin=(origin[1], origin[0]))
     answer = None if got is None or got.shape != expected.shape else got
-    return draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
+    artists = draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
+    # no y tick on the top edge: its label would run into the report's title
+    top = min(ax.get_ylim())
+    ax.set_yticks([t for t in ax.get_yticks() if t > top and t <= max(ax.get_ylim())])
+    return artists
 
 
 def as_image(value) -> np.ndarray:
@@ -300,6 +374,6 @@ def same_image(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 ROBUST_FILL = Exercise(
     "robust_fill", fill_cases, as_image, same_image, explain_fill, _rule,
-    variant_mistakes(_variants, MISTAKES, (ZERO_AREA,)), answers=(PackageAnswer(rasterize),),
+    variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, OFF_GRID)), answers=(PackageAnswer(rasterize),),
     draw=draw_fill, compose=compose,
 )  # fmt: skip

@@ -52,7 +52,7 @@ def explain_barycentric(args, expected, got) -> str:
 def _sum_words(what: str):
     def words(args, expected, got):
         xy, _ = args
-        return f", which sum to {num(np.sum(got))}: {what.format(area=num(_area(xy)))}"
+        return f"; yours sum to {num(np.sum(got))}: {what.format(area=num(_area(xy)))}"
 
     return words
 

@@ -61,11 +61,29 @@ def factor(x: float) -> str:
     return f"({num(x)})" if x < 0 else num(x)
 
 
+#: Components closer than this (relative) are float noise, far below every check's tolerance.
+NOISE = 1e-9
+
+
 def vec(v, other=None) -> str:
+    """``v`` with each component told from ``other``'s (:func:`num`). Where the two vectors
+    differ in some component, a component that agrees within float noise (:data:`NOISE`) prints
+    short on both sides: 0.92 beside 0.92, not 0.9199999999999999 beside 0.92.
+
+    >>> vec([0.737, 0.522, 0.9199999999999999], [0.735, 0.521, 0.92])
+    '(0.737, 0.522, 0.92)'
+    >>> vec([0.8, 1.0], [0.8000000000000002, 1.0])
+    '(0.8, 1)'
+    """
     v = np.asarray(v, dtype=float).ravel()
     o = [None] * len(v) if other is None else np.asarray(other, dtype=float).ravel()
     if len(o) != len(v):
         o = [None] * len(v)
+    elif other is not None:
+        with np.errstate(invalid="ignore"):
+            noise = np.abs(v - o) <= NOISE * np.maximum(1.0, np.maximum(np.abs(v), np.abs(o)))
+        if not noise.all():  # the vectors still print apart: drop the noise's digits
+            o = [None if n else b for n, b in zip(noise, o)]
     return "(" + ", ".join(num(a, b) for a, b in zip(v, o)) + ")"
 
 
