@@ -6,6 +6,7 @@ Written from the conventions only, with no call into teachraster: exact rational
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 import numpy as np
@@ -16,8 +17,16 @@ def edge_function(a, b, p):
     return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
 
 
-def _exact(v):
-    return [Fraction(float(c)) for c in v]
+def _exact_points(points) -> list[list[int]]:
+    """The points exactly, as integers over one common denominator (the signs and ties of
+    edge functions are those of the rationals: a positive scale changes neither). Integers,
+    not Fractions: the checker calls ``covers`` once per pixel of every case."""
+    ratios = [
+        (c if isinstance(c, Fraction) else float(c)).as_integer_ratio() for q in points for c in q
+    ]
+    den = math.lcm(*(d for _, d in ratios))
+    ints = [n * (den // d) for n, d in ratios]
+    return [ints[k : k + 2] for k in range(0, len(ints), 2)]
 
 
 def _owns(a, b):
@@ -26,8 +35,7 @@ def _owns(a, b):
 
 
 def covers(xy, p):
-    v = [_exact(q) for q in xy]
-    p = _exact(p)
+    *v, p = _exact_points([*xy, p])
     if edge_function(v[0], v[1], v[2]) < 0:
         v = [v[0], v[2], v[1]]
     if edge_function(v[0], v[1], v[2]) == 0:
@@ -266,7 +274,6 @@ ALTERNATIVES.update(_LB_ALTERNATIVES)
 # == exercises 05–08 (issue 20): independent solutions, other correct ones, typical mistakes ==
 # Written from the conventions only (no call into teachraster): exact Fractions where a rule
 # decides ties (rounding, coverage, block corners), plain float64 formulas elsewhere.
-import math  # noqa: E402
 
 
 def depth_to_unorm(z, bits):
