@@ -158,3 +158,39 @@ def test_time_rows_record_the_spread_beside_the_median():
     for r in out:
         assert 0 <= r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
     assert calls == {"a": 5, "b": 5}  # two warm-up rounds, three timed
+
+
+def _dominated_by_the_words(r, rows, x, y):
+    """FRONT_DEFINITION read literally: another row at least as cheap and at least as accurate,
+    and better on one of the two."""
+    return any(
+        q[x] <= r[x] and q[y] <= r[y] and (q[x] < r[x] or q[y] < r[y]) for q in rows if q is not r
+    )
+
+
+def test_front_definition_is_the_rule_pareto_front_applies():
+    """Review r6, 06-1: "both cheaper and more accurate" kept, in words, a variant that ties
+    another on cost and is less accurate (N = 2 at divide = 1), which the code drops."""
+    assert "at least as cheap" in bench.FRONT_DEFINITION
+    rng = np.random.default_rng(6)
+    for _ in range(200):  # small integer grids: many ties on cost, on error and on both
+        rows = [{"t": int(t), "e": int(e)} for t, e in rng.integers(0, 4, size=(6, 2))]
+        front = bench.pareto_front(rows, "t", "e")
+        distinct = {
+            (r["t"], r["e"]) for r in rows if not _dominated_by_the_words(r, rows, "t", "e")
+        }
+        assert {(r["t"], r["e"]) for r in front} == distinct and len(front) == len(distinct)
+    tie = [{"v": "perspective", "t": 6, "e": 0.0}, {"v": "N=2", "t": 6, "e": 9.0}]
+    assert [r["v"] for r in bench.pareto_front(tie, "t", "e")] == ["perspective"]
+
+
+def test_lesson_06_states_the_front_in_the_codes_words():
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parents[1] / "notebooks" / "06_what_accuracy_costs.ipynb"
+    cells = json.loads(nb.read_text())["cells"]
+    text = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown").split()
+    text = " ".join(text)
+    assert bench.FRONT_DEFINITION in text
+    assert "both cheaper and more accurate" not in text

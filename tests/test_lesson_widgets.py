@@ -241,6 +241,7 @@ def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
     model's 30 cycles as 32 ("37x") while lesson 06 printed 30 ("35x")."""
     from widget_examples import _rows
 
+    from teachraster.study.bench import FRONT_DEFINITION
     from teachraster.study.operation_counts import CYCLES_1990S
     from teachraster.widgets.divide_cost import DivideCostExplorer, divide_positions
 
@@ -251,6 +252,10 @@ def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
         values = [v for _, v in ex.divide.options]
         assert values == sorted(values) and values[0] == 1 and values[-1] == 128
         assert {1, 2, 9, 30, 128} <= set(values)  # the prices lesson 06 prints
+        # the subtitle defines the front in the words of the rule the chart applies (r6, 06-1)
+        assert FRONT_DEFINITION in ex.widget.children[0].value
+        ex.divide.value = 1.0  # N = 2 ties perspective-correct on cost, is less accurate: off
+        assert "perspective" in ex.front and "subdivided N=2" not in ex.front
     finally:
         ex.close()
     odd = DivideCostExplorer(_rows(), divide=7, backend="image")

@@ -1,6 +1,7 @@
 """Error against cost with its Pareto front: lesson 06's one chart, and its widget's.
 
-A variant is on the **Pareto front** when no other is both cheaper and more accurate. The plot
+A variant is on the **Pareto front** when no other is at least as cheap and at least as
+accurate, and better on one of the two (``study.bench.FRONT_DEFINITION``, one wording). The plot
 puts each variant's error (down is better, log scale) against a cost (left is cheaper), joins
 the front with a step line and labels each point beside it. Exact variants (error 0, or below
 ``EXACT_BELOW``: float64 rounding, not a method's error) cannot sit on a log axis: they are drawn

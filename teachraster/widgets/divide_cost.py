@@ -15,6 +15,7 @@ import numbers
 import ipywidgets as widgets
 
 from ..plotting.pareto import plot_pareto, update_pareto
+from ..study.bench.report import FRONT_DEFINITION
 from ..study.operation_counts import CYCLES_1990S
 from .common import (
     Shown,
@@ -116,7 +117,7 @@ class DivideCostExplorer(Shown):
         title = title_html(
             "What a divide costs decides the price of exactness",
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
-            "Vermillion: the Pareto front, the variants no other beats on both cost and error.",
+            f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}.",
         )
         controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])

@@ -77,6 +77,7 @@ from .measure import (
     run,
 )
 from .report import (
+    FRONT_DEFINITION,
     PANELS,
     columns,
     format_table,
@@ -143,6 +144,7 @@ __all__ = [
     "jittered_mesh",
     "main",
     "pareto_figure",
+    "FRONT_DEFINITION",
     "pareto_front",
     "pareto_panel",
     "plot",

@@ -14,12 +14,19 @@ import numpy as np
 
 from .settings import COMMON_COLUMNS, ERROR_MEASURE, GROUPS, SUBDIVISIONS, TABLE_COLUMNS
 
+#: The words the lessons and widgets use for the front, phrased as the rule
+#: :func:`pareto_front` applies (weak dominance): a tie on cost with a larger error is off the
+#: front (review r6, 06-1: "both cheaper and more accurate" kept such a variant in words only).
+FRONT_DEFINITION = (
+    "no other is at least as cheap and at least as accurate, and better on one of the two"
+)
+
 
 def pareto_front(rows: Iterable[dict], x: str = "time_median_s", y: str = "error") -> list[dict]:
-    """The rows no other row beats on both ``x`` and ``y`` (smaller is better), by ``x``.
+    """The rows on the Pareto front (smaller ``x`` and ``y`` are better), by ``x``.
 
-    A row is dominated when another is at least as good on both and better on one. Of rows
-    with identical (x, y) the first is kept.
+    A row is on it when :data:`FRONT_DEFINITION`: it is dominated when another is at least as
+    good on both and better on one. Of rows with identical (x, y) the first is kept.
 
     >>> rows = [{"t": 1, "e": 5}, {"t": 2, "e": 1}, {"t": 3, "e": 3}, {"t": 4, "e": 0}]
     >>> [r["t"] for r in pareto_front(rows, "t", "e")]
@@ -284,8 +291,7 @@ def pareto_figure(rows: list[dict]):
             continue
         pareto_panel(ax, block, title, xkey, ykey, xlabel, ylabel, xlog)
     fig.suptitle(
-        "Accuracy vs time: lower left is better; red = on the Pareto front "
-        "(no variant is both cheaper and more accurate)",
+        f"Accuracy vs time: lower left is better; red = on the Pareto front ({FRONT_DEFINITION})",
         fontsize=13,
     )
     return fig
