@@ -119,6 +119,20 @@ def test_naive_really_differs(results, name):
     assert difference, f"{name}: naive variant ({case.naive_does!r}) shows no difference"
 
 
+def test_split_square_summary_names_both_kinds_of_difference():
+    """Review r6, 07-1: the line said "6 twice" while the naive picture differs at 16 pixels,
+    6 on the diagonal and 11 on the right and bottom sides that belong to the neighbours."""
+    case = hc.get_case("d3d_split_square")
+    ours, naive = case.run(), case.naive()
+    twice = int((naive.counts > 1).sum())
+    extra = int(((naive.counts > 0) & (ours.counts == 0)).sum())
+    differ = int((naive.counts != ours.counts).sum())
+    assert (twice, extra, differ) == (6, 11, 16)  # the corner (6, 6) is of both kinds
+    line = case.naive_difference(ours, naive)
+    assert f"{twice} pixel centre(s) twice" in line and f"{extra} that ours leaves" in line
+    assert line.endswith(f"differs from ours at {differ} pixel(s)")
+
+
 def test_registry():
     assert hc.list_cases() == list(hc.CASES)
     assert hc.list_cases("clip") == ["behind_camera", "eye_plane_vertex", "hair_in_front_of_eye"]
