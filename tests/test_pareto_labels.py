@@ -67,7 +67,28 @@ def test_no_error_tick_is_labelled_at_or_below_the_exact_floor():
     fig.canvas.draw()
     labelled = [float(t.get_text()) for t in ax.get_yticklabels() if t.get_text()]
     assert labelled and min(labelled) > 2 * art.floor
-    assert any(t.get_text() == "" for t in ax.get_yticklabels())  # the ones below the floor
+    # review r6, 06-2: no major (decade) tick left bare between the floor and its first label
+    lo, hi = ax.get_ylim()
+    shown = [y for y in ax.yaxis.get_majorticklocs() if lo <= y <= hi]
+    assert shown and min(shown) > 2 * art.floor
+    plt.close(fig)
+
+
+def test_no_bare_decade_tick_above_the_floor_with_the_default_locator():
+    """Review r6, 06-2: with the floor at 0.7, the decade 10^0 sat above it unlabelled."""
+    rows = [
+        {"variant": "exact", "cycles": 6, "error": 0.0},
+        {"variant": "a", "cycles": 3, "error": 7.0},
+        {"variant": "b", "cycles": 2, "error": 200.0},
+    ]
+    fig, ax = plt.subplots(figsize=(9, 5))
+    art = plot_pareto(ax, rows, "cycles")
+    fig.canvas.draw()
+    lo, hi = ax.get_ylim()
+    locs, labels = ax.yaxis.get_majorticklocs(), ax.get_yticklabels()
+    ticks = [(y, t.get_text()) for y, t in zip(locs, labels) if lo <= y <= hi]
+    assert art.floor < 1.0 < 2 * art.floor and ticks
+    assert all(text for _, text in ticks), ticks
     plt.close(fig)
 
 

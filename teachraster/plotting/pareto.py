@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from matplotlib.ticker import Formatter, NullFormatter
+from matplotlib.ticker import Formatter, Locator, NullFormatter
 
 from ..study.bench.report import pareto_front
 from .style import COLORS
@@ -91,14 +91,37 @@ def floor_ticks(ax, floor: float, formatter=None) -> None:
     labels' format, default the axis' own).
 
     The floor is a stand-in for zero on a log axis: a tick labelled 20 below a floor drawn at
-    45 would read as "less than exact", and points on the floor as 45 wrong pixels. Ticks up
-    to twice the floor keep their marks but lose their labels.
+    45 would read as "less than exact", and points on the floor as 45 wrong pixels. Major ticks
+    up to twice the floor are dropped, not left bare: a decade mark without its number read as a
+    scale break (review r6, 06-2). Minor ticks keep their marks.
     """
     yaxis = ax.yaxis
     major = formatter if formatter is not None else yaxis.get_major_formatter()
     minor = yaxis.get_minor_formatter()
+    yaxis.set_major_locator(_MajorAboveFloor(yaxis.get_major_locator(), floor))
     yaxis.set_major_formatter(_AboveFloor(major, floor))
     yaxis.set_minor_formatter(_AboveFloor(minor, floor))
+
+
+class _MajorAboveFloor(Locator):
+    """``base``'s tick positions above twice ``floor`` (where :class:`_AboveFloor` labels)."""
+
+    def __init__(self, base, floor: float) -> None:
+        self.base, self.floor = base, floor
+
+    def set_axis(self, axis) -> None:
+        super().set_axis(axis)
+        self.base.set_axis(axis)
+
+    def tick_values(self, vmin, vmax):
+        return self._above(self.base.tick_values(vmin, vmax))
+
+    def __call__(self):
+        return self._above(self.base())
+
+    def _above(self, locs):
+        locs = np.asarray(locs, dtype=float)
+        return locs[locs > 2.0 * self.floor]
 
 
 class _AboveFloor(Formatter):
