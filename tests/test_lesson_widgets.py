@@ -228,10 +228,13 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         r0, r1, c0, c1 = picker.view
         assert picker.owner.shape == (4, 64) and (c1 - c0) <= MAX_ASPECT * (r1 - r0)
         assert (c0, c1) == (0, 12) and "columns 0–11 of 64" in picker.fig.get_suptitle()
+        # review r6, 07-4: the 4 x 12 view in a figure as high as it needs, not 2/3 white
+        assert picker.fig.get_figheight() < 0.6 * 4.4 and picker.fig.get_figwidth() == 9.0
         assert picker.hubs == [] and "outlined in black" not in picker.info.value
         picker.case.value = "snap_flips_winding"  # a tiny triangle keeps a grid around it
         r0, r1, c0, c1 = picker.view
         assert min(r1 - r0, c1 - c0) >= MIN_VIEW
+        assert picker.fig.get_figheight() == 4.4  # a square view gets the full height back
     finally:
         picker.close()
 

@@ -105,6 +105,10 @@ def outline(ax, xy, *, thin: bool = False):
 #: in pixels large enough to see, instead of a strip a few screen pixels high).
 MIN_VIEW, MAX_ASPECT = 6, 3
 
+#: The figure's height in inches (its width is 9): at most FIG_HEIGHT, and for a wide view just
+#: what two panels of about PANEL_WIDTH inches and their titles (TITLES_HEIGHT) need.
+FIG_HEIGHT, MIN_FIG_HEIGHT, TITLES_HEIGHT, PANEL_WIDTH = 4.4, 2.2, 1.0, 4.1
+
 
 def view_box(triangles, shape, *masks) -> tuple[int, int, int, int, bool]:
     """Rows r0:r1 and columns c0:c1 a panel shows, and whether columns were cut off.
@@ -317,7 +321,7 @@ class CasePicker:
         self.method = widgets.ToggleButtons(options=hardcases.FILL_METHODS, value=method)
         self._style = style
         with style_context(style):
-            self.fig = new_figure((9.0, 4.4), self.backend)  # fits the notebook column
+            self.fig = new_figure((9.0, FIG_HEIGHT), self.backend)  # fits the notebook column
             self.fig.set_layout_engine("constrained")
             self.axes = self.fig.subplots(1, 2)
         self._run()
@@ -372,6 +376,7 @@ class CasePicker:
             # that the two panels' titles never run into each other
             self.fig.suptitle(f"{self.case.value}, {self.method.value} fill")
             if self.copies is not None:
+                self._fit_height(None, None)
                 self._draw_copies()
                 return
             # each case zoomed to its own box (a fan in the middle of a 20 x 20 image, a 60 px
@@ -384,6 +389,7 @@ class CasePicker:
                 self.fig.suptitle(f"{self.case.value}, {self.method.value} fill: columns "
                                   f"{c0}–{c1 - 1} of {self.owner.shape[1]}")  # fmt: skip
             self.view = (r0, r1, c0, c1)
+            self._fit_height(r1 - r0, c1 - c0)
             thin = thin_lines((r1 - r0, c1 - c0))
             plot_owners(self.axes[0], self.owner, tris, thin=thin)
             self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
@@ -411,6 +417,15 @@ class CasePicker:
                     )
             for a in self.axes:
                 a.set(xlim=(c0, c1), ylim=(r1, r0))
+
+    def _fit_height(self, rows, cols) -> None:
+        """The figure as high as the view needs: a view 3 times as wide as high (the sliver
+        pair's 4 x 12 pixels) left two thirds of a 4.4-inch figure white (review r6, 07-4)."""
+        height = FIG_HEIGHT
+        if rows is not None:  # two panels of PANEL_WIDTH inches, titles above them
+            height = min(FIG_HEIGHT, max(MIN_FIG_HEIGHT, TITLES_HEIGHT + PANEL_WIDTH * rows / cols))
+        if abs(self.fig.get_figheight() - height) > 0.01:
+            self.fig.set_size_inches(self.fig.get_figwidth(), height)
 
     @staticmethod
     def _owner_fill(k) -> str:
