@@ -199,7 +199,13 @@ def test_diamonds_end_snaps_onto_a_tie_and_keys_step(lesson):
     cell = (_handles(canvas)[1][0] - _handles(canvas)[0][0]) / (10.4 - 1.5)
     _drag(lesson, canvas, p1, (cell * 0.1 - 1, -cell * 0.1 + 1))  # near (10.5, 4.5): a centre
     assert _kernel(lesson, "diamonds.state['p1']") == [10.5, 4.5]
-    _keys_stay(lesson, canvas, w.get_by_role("slider", name="step"))
+    stepper = w.get_by_role("slider", name="step")
+    _keys_stay(lesson, canvas, stepper)
+    # a drag makes another line: the step shown (2) goes back to all steps, page and kernel
+    _drag(lesson, canvas, _handles(canvas)[1], (-cell, 0))
+    assert stepper.input_value() == "-1"
+    assert "All steps" in w.inner_text()
+    assert _kernel(lesson, "diamonds.state['step']") == -1
 
 
 ACTIVE = "() => [...document.querySelectorAll('.jp-Cell')].findIndex(c => c.classList.contains('jp-mod-active'))"

@@ -112,9 +112,11 @@ def test_line_player_switches_rule():
     player = LinePlayer((0.5, 0.5), (20.5, 3.5), 22, 5, backend="image")
     try:
         player.rule.value = "dda"
-        assert "float32" in player.caption.value or player.slider.value < 2
+        assert "float32" in player.view.caption.get_text() or player.slider.value < 2
         player.slider.value = 4
-        assert "float32 sum" in player.caption.value
+        assert "float32 sum" in player.view.caption.get_text()
+        # the line above the figure names the step by its column, the caption is not repeated
+        assert player.caption.value == "step 4 (0 to 21): column 2 (steps 0 and 1 set the line up)"
     finally:
         player.close()
 

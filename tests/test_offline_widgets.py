@@ -99,7 +99,7 @@ def test_a_swept_page_shows_what_the_widget_shows_at_each_position(few_positions
         assert values == [0, 6, 12] and player.slider.value == 12  # put back as it was
         data = _player_data(page.html)
         assert data["step"] == 2 and "of 2: step = 6" == data["infos"][1]
-        assert data["captions"][1] == player.trace.caption(6)
+        assert data["captions"][1] == player.where(6)
         player.slider.value = 6
         shown = offline._rgba(bytes(player.display.widget.value))
         places, pngs = data["groups"][0]["places"], data["groups"][0]["pngs"]

@@ -211,3 +211,31 @@ def test_point_reveal_can_draw_the_ray_that_finds_the_answer():
     assert "data.rayFrom" in js  # the page draws it
     with pytest.raises(ValueError, match="ray_from"):
         PredictPoint("Where?", **kw, ray_from=(0, 0, 1))
+
+
+def test_the_answers_label_keeps_clear_of_the_readout():
+    """Review 11-12-r6 (12 cell 41): after Check, with the marker on the answer, "the answer"
+    and the live readout "code 188" were drawn at the same place ("th code 188"). Wherever the
+    marker sits along the answer's row (the code ramp's case), by the left and right edges too,
+    the label's box clears the readout's box and the marker's cross, inside the canvas."""
+    width, height = 800, 240
+    mines = [[x, 100.0] for x in (60, 100, 150, 190, 200, 210, 250, 300, 700, 740, 790)]
+    truths = [[x, 100.0] for x in (30, 200, 760)]
+    calls = [("readoutPlace", [m, 72, width]) for m in mines]
+    places = call_js(("predict_figure",), calls)
+    calls = [
+        ("answerLabel", [m, t, r["box"], height]) for t in truths for m, r in zip(mines, places)
+    ]
+    got = call_js(("predict_figure",), calls)
+    boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in got])
+
+    def overlap(a, b):
+        return a["x0"] < b["x1"] and b["x0"] < a["x1"] and a["y0"] < b["y1"] and b["y0"] < a["y1"]
+
+    pairs = [(m, r) for _ in truths for m, r in zip(mines, places)]
+    for (mine, place), box in zip(pairs, boxes, strict=True):
+        cross = {"x0": mine[0] - 14, "x1": mine[0] + 14, "y0": mine[1] - 14, "y1": mine[1] + 14}
+        assert not overlap(box, place["box"]), (mine, box, place)
+        assert not overlap(box, cross), (mine, box)
+        assert 0 <= box["y0"] and box["y1"] <= height
+    assert places[-1]["align"] == "right"  # by the right edge the readout turns left

@@ -38,7 +38,9 @@ class LinePlayer(Shown):
     --------
     >>> player = LinePlayer((0.5, 0.5), (9.5, 4.5), 11, 6, backend="image")
     >>> player.slider.value = 3
-    >>> player.caption.value.startswith("column 1")
+    >>> player.caption.value
+    'step 3 (0 to 12): column 1 (steps 0 and 1 set the line up)'
+    >>> player.view.caption.get_text().startswith("column 1")
     True
     >>> player.rule.value = "bresenham"
     >>> "error term" in player.trace.caption(3)
@@ -68,7 +70,9 @@ class LinePlayer(Shown):
             # axis's labels before they were placed, and cut "column j" and the caption off)
             self.fig.draw_without_rendering()
             self.display = FigureDisplay(self.fig, self.backend)
-        self.caption = widgets.HTML(html_escape(self.trace.caption(self.slider.value)))
+        # where the slider is, in the figure's words (its caption, under the picture, says
+        # what the rule decided): "step 7" and "column 5" side by side, the caption once
+        self.caption = widgets.HTML(html_escape(self.where(self.slider.value)))
         self.slider.observe(lambda change: self.show(change["new"]), "value")
         self.rule.observe(lambda change: self._rerun(), "value")
         title = title_html(
@@ -83,10 +87,22 @@ class LinePlayer(Shown):
         """The line's :class:`~teachraster.core.line_trace.LineTrace`."""
         return self.fill.trace
 
+    def where(self, k: int) -> str:
+        """Step ``k`` named by what it works on: "step 7 (0 to 14): column 5 (…)"."""
+        step = self.trace.step(k)
+        last = len(self.trace) - 1
+        if step.work is None:
+            return f"step {step.index} (0 to {last}): set-up ({step.kind})"
+        setup = "(steps 0 and 1 set the line up)"
+        if step.kind == "triangle":  # a wide line: two triangles, no columns
+            return f"step {step.index} (0 to {last}): triangle {step.work + 1} of 2 {setup}"
+        major = step.col if step.kind == "column" else step.row
+        return f"step {step.index} (0 to {last}): {step.kind} {major} {setup}"
+
     def show(self, k: int) -> None:
-        """Show step ``k`` (updates the artists and the caption in place)."""
+        """Show step ``k`` (updates the artists, the caption and the step line in place)."""
         self.view.show_step(k)
-        self.caption.value = html_escape(self.trace.caption(k))
+        self.caption.value = html_escape(self.where(k))
         self.display.refresh()
 
     def _rerun(self) -> None:

@@ -200,6 +200,12 @@ function mount(el, data, host) {
     handles: () => [toPx(state.p0), toPx(state.p1)],
     onDrag(i, p, e) {
       place(i, p);
+      // a dragged end makes another line: the step shown belonged to the old one, so the
+      // view goes back to all steps (review 11-12-r6: "row 1" of the new line was confusing)
+      if (state.step !== -1) {
+        state.step = -1;
+        stepper.set(-1);
+      }
       paint.request(e);
     },
     onRelease() {

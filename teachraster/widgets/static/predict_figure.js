@@ -39,14 +39,41 @@ export function orderVerdict(answer, given) {
   return { places, correct: places.every(Boolean) };
 }
 
+// where the live readout goes (canvas pixels, y down): up and to the right of the marker,
+// or to its left when the canvas ends; its box is what the answer's label must keep clear of
+export function readoutPlace(mine, textWidth, canvasWidth) {
+  const right = mine[0] + 18 + textWidth > canvasWidth;
+  const x = mine[0] + (right ? -18 : 18);
+  const y = mine[1] - 16;
+  return { x, y, align: right ? "right" : "left",
+    box: { x0: right ? x - textWidth : x, x1: right ? x : x + textWidth, y0: y - 14, y1: y + 3 } };
+}
+
 // where "the answer" goes by the true point (canvas pixels, y down): above the dot, or below
 // it when the marker is above or there is no room, and on the side away from the marker
-// (whose cross reaches 14 px each way), so that it is never drawn under the marker
-export function answerLabel(mine, truth) {
+// (whose cross reaches 14 px each way), so that it is never drawn under the marker. With a
+// readout (its box from readoutPlace) the label also keeps clear of it: "th code 188" was the
+// two printed over each other with the marker on the answer; the first of the four places
+// round the dot that clears both wins.
+export function answerLabel(mine, truth, readout = null, height = Infinity) {
   const left = mine[0] > truth[0];
   const below = mine[1] < truth[1] - 4 || truth[1] < 30;
-  return { x: truth[0] + (left ? -6 : 6), y: below ? truth[1] + 30 : truth[1] - 18,
-    align: left ? "right" : "left" };
+  const place = (l, b) => ({ x: truth[0] + (l ? -6 : 6), y: b ? truth[1] + 30 : truth[1] - 18,
+    align: l ? "right" : "left" });
+  const tries = [[left, below], [left, !below], [!left, below], [!left, !below]].map(([l, b]) => place(l, b));
+  const overlaps = (a, b) => a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+  const cross = { x0: mine[0] - 14, x1: mine[0] + 14, y0: mine[1] - 14, y1: mine[1] + 14 };
+  const clear = (p) => {
+    const box = labelBox(p);
+    return box.y0 >= 0 && box.y1 <= height && !overlaps(box, cross) && !(readout && overlaps(box, readout));
+  };
+  return tries.find(clear) || tries[0];
+}
+
+// the box "the answer" fills at the 14 px bold font (about 80 px wide), from its baseline up
+export function labelBox(p) {
+  const x0 = p.align === "right" ? p.x - 80 : p.x;
+  return { x0, x1: x0 + 80, y0: p.y - 12, y1: p.y + 2 };
 }
 
 const PRED_CSS = `
@@ -255,6 +282,16 @@ function mountPoint(root, data, host) {
     const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] ** 2 + d[1] ** 2)));
     return [a[0] + t * d[0], a[1] + t * d[1]];
   }
+  function readoutNow() {
+    const g = state.given || start;
+    return readoutText(data.readout, g[0], data.readoutDigits);
+  }
+  // the readout's box at the marker (null without one), measured in the font it is drawn in
+  function readoutBox(mine) {
+    if (!data.readout) return null;
+    ctx.font = "bold 16px sans-serif";
+    return readoutPlace(mine, ctx.measureText(readoutNow()).width, canvas.width).box;
+  }
   function draw() {
     ctx.clearRect(0, 0, canvas.width, canvas.height);
     const mine = toPx(state.given || start);
@@ -283,8 +320,9 @@ function mountPoint(root, data, host) {
       ctx.beginPath();
       ctx.arc(truth[0], truth[1], 9, 0, 2 * Math.PI);
       ctx.fill();
+      const avoid = readoutBox(mine); // measured in the readout's font, before the label's is set
       ctx.font = "bold 14px sans-serif";
-      const { x, y, align } = answerLabel(mine, truth);
+      const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height);
       ctx.textAlign = align;
       ctx.lineWidth = 4;
       ctx.strokeStyle = "white";
@@ -306,16 +344,15 @@ function mountPoint(root, data, host) {
     ctx.lineWidth = 1.5;
     ctx.stroke();
     if (data.readout) { // what the marker sits on, while it moves: no counting key presses
-      const g = state.given || start;
-      const text = readoutText(data.readout, g[0], data.readoutDigits);
+      const text = readoutNow();
       ctx.font = "bold 16px sans-serif";
-      const right = mine[0] + 18 + ctx.measureText(text).width > canvas.width;
-      ctx.textAlign = right ? "right" : "left";
+      const { x, y, align } = readoutPlace(mine, ctx.measureText(text).width, canvas.width);
+      ctx.textAlign = align;
       ctx.lineWidth = 4;
       ctx.strokeStyle = "white";
-      ctx.strokeText(text, mine[0] + (right ? -18 : 18), mine[1] - 16);
+      ctx.strokeText(text, x, y);
       ctx.fillStyle = "#111";
-      ctx.fillText(text, mine[0] + (right ? -18 : 18), mine[1] - 16);
+      ctx.fillText(text, x, y);
       ctx.textAlign = "left";
     }
     check.disabled = state.given === null;
