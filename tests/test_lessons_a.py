@@ -470,6 +470,19 @@ def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
     assert not any("axhline" in c for c in code[:ask])
 
 
+@pytest.mark.notebook
+def test_05b_fight_distance_is_worked_out_from_one_anchor_not_read_off_a_curve():
+    """Review r6, 05b-1: the PredictPoint drew the unorm16 curve, so the answer was read where
+    it passed 0.005; and 'the distance from which they z-fight' contradicted §6 (possible at
+    the crossing, likely only beyond it)."""
+    ns = lesson("05b_depth_precision")
+    assert ns.dz_at_1 * ns.cross16**2 == pytest.approx(ns.delta)  # the z² law from the anchor
+    ask = next(c for c in _cells("05b_depth_precision", "code") if "PredictPoint(" in c)
+    assert "linspace" not in ask and "depth_resolution(z_" not in ask  # no curve drawn
+    assert "becomes possible" in ask and "not yet likely" in ask
+    assert "from which they z-fight" not in ask
+
+
 def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
     table = next(c for c in _cells("05b_depth_precision", "markdown") if "| Vulkan" in c)
     rows = {
