@@ -232,6 +232,16 @@ def test_stored_pair_cracks_as_the_reference_says():
     assert len(listed["cracks"]) > 0  # it does crack, evaluated as listed
     alike = shared_edge_faults(a, b, size, size, "dda")
     assert not len(alike["cracks"]) and not len(alike["doubles"])
+    # its red rings lie inside the canvas and clear of the neighbouring panels (with the line)
+    (g,) = call_js(CRACKS, [("panelLayout", [size, size])])
+    cell, reach = g["cell"], g["radius"] + 1.5
+    for row, col in listed["cracks"]:
+        for k in range(3):
+            x0 = g["m"]["left"] + k * (g["panelW"] + g["gap"])
+            cx, cy = x0 + (col + 0.5) * cell, g["m"]["top"] + (row + 0.5) * cell
+            assert x0 - g["gap"] / 2 <= cx - reach and cx + reach <= x0 + g["panelW"] + g["gap"] / 2
+            assert 0 <= cx - reach and cx + reach <= g["width"]
+            assert g["m"]["top"] - 14 <= cy - reach and cy + reach <= g["height"] - 16
 
 
 def test_default_pair_shows_the_dda_giving_ties_to_the_wrong_triangle():
