@@ -81,8 +81,8 @@ function mount(el, data, host) {
     label: "two triangles over the pixel grid with the edge-function signs at every centre" });
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
-  const [view3d, ctx3] = makeCanvas(760, 560, "the three edge functions as planes over the grid");
-  const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 290] });
+  const [view3d, ctx3] = makeCanvas(760, 640, "the three edge functions as planes over the grid");
+  const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 330] });
   cam.maxElevation = 1.2; // never top-down: there the three planes cover one another
   const ui = { scene: null, hover: null, picked: 0 };
 
