@@ -154,7 +154,7 @@ def test_edges_drag_in_the_page_and_the_kernel_hears_the_release(lesson):
     assert _frames(planes) > before
     # the tint buttons name the chosen triangle's own edges
     w.get_by_role("button", name="signs of B (v3 v2 v4)").click()
-    w.get_by_role("button", name="v2→v4's").click()
+    w.get_by_role("button", name="E24's").click()
     assert w.get_by_role("button", name="E23's").count() == 0
     assert _kernel(lesson, "edges.state['tint']") == "E23"  # B's second edge
     assert not lesson.errors, lesson.errors[:3]

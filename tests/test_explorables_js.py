@@ -124,16 +124,16 @@ def test_edge_labels_name_the_given_edges():
 
 
 def test_tint_buttons_name_the_chosen_triangles_edges():
-    # B = v3 v2 v4: its edges are v3->v2, v2->v4, v4->v3, never A's E12, E23, E31
+    # B = v3 v2 v4: its edges are E32, E24, E43 (CONVENTIONS: walking order), never A's E12...
     quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [11.5, 10.5]]
     scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
     a, b, table = call_js(
         EDGES, [("tintChoices", ["A"]), ("tintChoices", ["B"]), ("edgeTable", [scene])]
     )
     assert [label for _, label in a[1:4]] == ["E12's", "E23's", "E31's"]
-    assert [label for _, label in b[1:4]] == ["v3→v2's", "v2→v4's", "v4→v3's"]
+    assert [label for _, label in b[1:4]] == ["E32's", "E24's", "E43's"]
     assert [value for value, _ in a] == [value for value, _ in b]  # the same edge slots
-    for name in ("v3→v2", "v2→v4", "v4→v3"):  # as the explorer's own table names them
+    for name in ("E32 (v3→v2)", "E24 (v2→v4)", "E43 (v4→v3)"):  # as the explorer's table says
         assert f"<b>{name}</b>" in table
 
 
@@ -161,6 +161,22 @@ def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
     )
     assert gone == [] and len(cut) >= 3
     assert all(abs(z) <= 2.0 + 1e-12 for _, _, z in cut)
+    # the default view turns so that no plane is seen nearly edge-on (the old fixed yaw -0.45
+    # saw E12's almost edge-on); the planes' gradients are E's, scaled as the view scales them
+    grads = [np.subtract(snapped[(k + 1) % 3], snapped[k])[::-1] * [-1, 1] for k in range(3)]
+    corners = ([0, 0], [16, 0], [16, 14], [0, 14])
+    top = max(
+        abs(tr.edge_function(snapped[k], snapped[(k + 1) % 3], c))
+        for k in range(3)
+        for c in corners
+    )
+    zs = 1.6 * 0.3 * 16 / top  # as drawPlanes scales E on the 16 x 14 grid
+    yaw = call_js(EDGES, [("bestYaw", [[g.tolist() for g in grads], zs, 0.5])])[0]
+    best, old = call_js(
+        EDGES,
+        [("planesFacing", [[g.tolist() for g in grads], zs, y, 0.5]) for y in (yaw, -0.45)],
+    )
+    assert best > 0.2 and best > 2 * old
     # the fitted box stays inside the canvas at every turn
     W, H, h, cw, ch = 16, 14, 4.8, 560, 320
     scale = call_js(EDGES, [("fitBox", [W, H, h, cw, ch])])[0]
@@ -232,6 +248,16 @@ def test_stored_pair_cracks_as_the_reference_says():
     assert len(listed["cracks"]) > 0  # it does crack, evaluated as listed
     alike = shared_edge_faults(a, b, size, size, "dda")
     assert not len(alike["cracks"]) and not len(alike["doubles"])
+    # its red rings lie inside the canvas and clear of the neighbouring panels (with the line)
+    (g,) = call_js(CRACKS, [("panelLayout", [size, size])])
+    cell, reach = g["cell"], g["radius"] + 1.5
+    for row, col in listed["cracks"]:
+        for k in range(3):
+            x0 = g["m"]["left"] + k * (g["panelW"] + g["gap"])
+            cx, cy = x0 + (col + 0.5) * cell, g["m"]["top"] + (row + 0.5) * cell
+            assert x0 - g["gap"] / 2 <= cx - reach and cx + reach <= x0 + g["panelW"] + g["gap"] / 2
+            assert 0 <= cx - reach and cx + reach <= g["width"]
+            assert g["m"]["top"] - 14 <= cy - reach and cy + reach <= g["height"] - 16
 
 
 def test_default_pair_shows_the_dda_giving_ties_to_the_wrong_triangle():

@@ -145,11 +145,8 @@ function mount(el, data, host) {
     "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
     "(not the stored pair that cracks) and starts again when the way the edges are " +
     "evaluated changes.");
-  const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
-  const gap = 26;
-  const m = { left: 8, top: 30 };
-  const panelW = W * cell;
-  const [canvas, ctx] = makeCanvas(m.left + 3 * panelW + 2 * gap + 8, m.top + H * cell + 26,
+  const { cell, gap, m, panelW, width, height } = panelLayout(W, H);
+  const [canvas, ctx] = makeCanvas(width, height,
     "the same pair of triangles filled three ways, cracks and double draws marked");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div");
@@ -259,6 +256,24 @@ function crackControls(state, host, roll, repaint, showStored) {
   return { row, sync };
 }
 
+// The ring around a crack, as a multiple of the cell: it circles the pixel square (> 0.71).
+export const RING = 0.85;
+
+// Where the three panels go. The margins and the gap leave room for the ring around a crack
+// in a border pixel, so that it is never cut off by the canvas or hidden by the next panel.
+export function panelLayout(W, H) {
+  const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
+  const ring = ringReach(cell);
+  const gap = Math.max(26, 2 * ring + 2);
+  const m = { left: ring, top: 30 + ring };
+  const panelW = W * cell;
+  return { cell, gap, m, panelW, radius: RING * cell, width: m.left + 3 * panelW + 2 * gap + ring,
+    height: m.top + H * cell + ring + 18 };
+}
+
+// how far the ring reaches beyond its pixel, its line width included
+const ringReach = (cell) => Math.ceil((RING - 0.5) * cell) + 3;
+
 function pixelUnder(p, m, cell, panelW, gap, W, H) {
   const k = Math.floor((p[0] - m.left) / (panelW + gap));
   const x = p[0] - m.left - k * (panelW + gap);
@@ -327,17 +342,27 @@ function drawPanel(ctx, f, exact, pair, g) {
     ctx.strokeStyle = OKABE.vermillion;
     ctx.lineWidth = 3;
     ctx.beginPath();
-    ctx.arc(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell, cell * 1.1, 0, 2 * Math.PI);
+    ctx.arc(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell, cell * RING, 0, 2 * Math.PI);
     ctx.stroke();
   }
-  ctx.fillStyle = "#000";
-  for (const [r, c] of f.swapped) ctx.fillText("⇄", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+  // the wrong-owner ties last, over the tie marker and the shared edge: large, black on a
+  // white halo, so that the glyph survives on the thick black line
+  ctx.font = `bold ${Math.round(cell * 0.95)}px sans-serif`;
+  ctx.lineJoin = "round";
+  for (const [r, c] of f.swapped) {
+    const [x, y] = [x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell + cell * 0.33];
+    ctx.strokeStyle = "#fff";
+    ctx.lineWidth = 4;
+    ctx.strokeText("⇄", x, y);
+    ctx.fillStyle = "#000";
+    ctx.fillText("⇄", x, y);
+  }
   ctx.textAlign = "left";
   ctx.fillStyle = "#111";
   ctx.font = "13px sans-serif";
   const said = `${f.swapped.length} given to the wrong triangle, ${f.cracks.length} cracked, ` +
     `${f.doubles.length} doubled`;
-  ctx.fillText(said, x0, y0 + H * cell + 16);
+  ctx.fillText(said, x0, y0 + H * cell + ringReach(cell) + 13); // below a ring in the last row
 }
 
 // every digit of a double that matters (17 significant), trailing zeros dropped

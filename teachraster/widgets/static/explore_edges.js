@@ -81,9 +81,9 @@ function mount(el, data, host) {
     label: "two triangles over the pixel grid with the edge-function signs at every centre" });
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
-  const [view3d, ctx3] = makeCanvas(560, 400, "the three edge functions as planes over the grid");
-  const cam = camera3d({ centre: [W / 2, H / 2, 0], scale: Math.min(380 / W, 300 / H),
-    at: [280, 210] });
+  const [view3d, ctx3] = makeCanvas(760, 640, "the three edge functions as planes over the grid");
+  const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 330] });
+  cam.maxElevation = 1.2; // never top-down: there the three planes cover one another
   const ui = { scene: null, hover: null, picked: 0 };
 
   function draw() {
@@ -132,7 +132,8 @@ const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c
   "right or bottom edge for both), and at a shared vertex, left to a third triangle.";
 
 // each triangle's edges as the table names them (B = v3 v2 v4: its first edge runs v3 -> v2)
-export const EDGE_NAMES = { A: ["E12", "E23", "E31"], B: ["v3→v2", "v2→v4", "v4→v3"] };
+// (CONVENTIONS: named by its two vertices in walking order)
+export const EDGE_NAMES = { A: ["E12", "E23", "E31"], B: ["E32", "E24", "E43"] };
 
 // the tint buttons for the chosen triangle: [state value, label]; the value is the edge's
 // place in the triangle (E12: its first edge), the label the edge's own name
@@ -401,7 +402,7 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
 // the edges of both triangles: kind and bias of each
 export function edgeTable(scene) {
   const rows = [["A", scene.A, ["E12 (v1→v2)", "E23 (v2→v3)", "E31 (v3→v1)"]],
-    ["B", scene.B, EDGE_NAMES.B]].map(([name, s, names]) => {
+    ["B", scene.B, ["E32 (v3→v2)", "E24 (v2→v4)", "E43 (v4→v3)"]]].map(([name, s, names]) => {
     if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
     const cells = edgeLabels(s, names).map((e, k) =>
       `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${e.name}</b> ${e.kind}, ` +
@@ -419,7 +420,7 @@ export function describe(scene, at, chosen, W, H) {
   const row = Math.floor(at[1]);
   if (col < 0 || row < 0 || col >= W || row >= H) return "";
   const setup = chosen === "A" ? scene.A : scene.B;
-  const names = chosen === "A" ? ["E12", "E23", "E31"] : ["E(v3,v2)", "E(v2,v4)", "E(v4,v3)"];
+  const names = EDGE_NAMES[chosen];
   const px2 = setup.unit * setup.unit;
   const e = givenValues(setup, row, col).map((v) => v / px2);
   const i = row * W + col;
@@ -451,6 +452,29 @@ export function planeValues(setup, at) {
     setup.given[(k + 1) % 3].map((t) => t / u), at));
 }
 
+const PLANES_ELEVATION = 0.5; // the default view: from low down, planes seen from the side
+
+// How squarely the camera sees the least visible of the planes z = zs E_k(x, y): the smallest
+// |cos| between a plane's normal and the direction towards the camera (0: edge-on).
+export function planesFacing(grads, zs, yaw, elevation) {
+  const d = towardsCamera(yaw, elevation);
+  return Math.min(...grads.map(([gx, gy]) => {
+    const n = [zs * gx, zs * gy, -1];
+    return Math.abs(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / Math.hypot(...n);
+  }));
+}
+
+// the turn about z that shows all three planes most squarely (none edge-on), in 5° steps
+export function bestYaw(grads, zs, elevation) {
+  let best = [0, -1];
+  for (let k = 0; k < 72; k++) {
+    const yaw = (k * Math.PI) / 36;
+    const f = planesFacing(grads, zs, yaw, elevation);
+    if (f > best[1]) best = [yaw, f];
+  }
+  return best[0];
+}
+
 const PLANES_TOP = 58; // room above the box for the values, in canvas px
 const PLANES_BOTTOM = 22; // and below it for the note
 
@@ -469,7 +493,10 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   for (const f of fns) for (const [x, y] of corners) top = Math.max(top, Math.abs(f(x, y)));
   const h = 0.3 * Math.max(W, H); // the box's half height, in grid units
   const zs = (1.6 * h) / top; // steep enough to see; the steepest plane leaves the box
-  cam.scale = fitBox(W, H, h, cw, ch - PLANES_TOP - PLANES_BOTTOM);
+  cam.scale = fitBox(W, H, h, cw, ch - PLANES_TOP - PLANES_BOTTOM, 40);
+  // E_k = gx x + gy y + c: its gradient, from the plane's values at three corners
+  const grads = fns.map((f) => [f(1, 0) - f(0, 0), f(0, 1) - f(0, 0)]);
+  if (!cam.turned) cam.yaw = bestYaw(grads, zs, cam.elevation); // until the reader turns it
   cam.at = [cw / 2, PLANES_TOP + (ch - PLANES_TOP - PLANES_BOTTOM) / 2];
   const polys = surfacePieces(corners, () => 0, 8, { fill: "#ddd", alpha: 0.55, stroke: "#bbb" });
   fns.forEach((f, k) => {
@@ -482,6 +509,7 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   drawPolygons(ctx, cam, polys);
   // the box's vertical edges, thin: where the planes are cut
   for (const [x, y] of corners) line3d(ctx, cam, [x, y, -h], [x, y, h], "#999", 1, [3, 3]);
+  drawEAxis(ctx, cam, corners, h, zs);
   // each plane cuts z = 0 along its edge's line: drawn on top
   ends.forEach(([a, b], k) => line3d(ctx, cam, [a[0], a[1], 0], [b[0], b[1], 0], EDGE_HUES[k], 4));
   // the point the values are read at: a cross on the screen, a dot on each plane over it
@@ -501,7 +529,7 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   strokeLine(ctx, [c[0] - 6, c[1] - 6], [c[0] + 6, c[1] + 6], "#111", 2.5);
   strokeLine(ctx, [c[0] - 6, c[1] + 6], [c[0] + 6, c[1] - 6], "#111", 2.5);
   // the values, in 2-D above the box: always inside the canvas
-  const names = chosen === "A" ? ["E12", "E23", "E31"] : ["E(v3,v2)", "E(v2,v4)", "E(v4,v3)"];
+  const names = EDGE_NAMES[chosen];
   ctx.fillStyle = "#111";
   ctx.font = "13px sans-serif";
   ctx.fillText(`E at the centre (${at[0]}, ${at[1]}), the black ✕ (point at a pixel to move it):`,
@@ -516,6 +544,29 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   });
   ctx.fillStyle = "#333";
   ctx.font = "13px sans-serif";
-  ctx.fillText("grey: z = 0 (the screen); the planes are cut at the dashed box. Drag to turn; " +
+  ctx.fillText("grey: E = 0 (the screen); the planes are cut at the dashed box. Drag to turn; " +
     "arrow keys too.", 8, ch - 8);
+}
+
+// the vertical E axis with ticks in px², at the box corner drawn leftmost on the screen
+function drawEAxis(ctx, cam, corners, h, zs) {
+  const [x, y] = corners.reduce((a, b) => (cam.project([...b, 0])[0] < cam.project([...a, 0])[0]
+    ? b : a));
+  line3d(ctx, cam, [x, y, -h], [x, y, h], "#111", 1.5);
+  const span = h / zs; // the box's half height in px²
+  const raw = span / 3;
+  const mag = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((k) => k * mag).find((v) => v >= raw);
+  ctx.font = "13px sans-serif";
+  ctx.textAlign = "right";
+  for (let e = -Math.floor(span / step) * step; e <= span + 1e-9; e += step) {
+    const q = cam.project([x, y, e * zs]);
+    strokeLine(ctx, [q[0] - 5, q[1]], [q[0], q[1]], "#111", 1.5);
+    ctx.fillStyle = "#111";
+    ctx.fillText(fmt(e, 4), q[0] - 7, q[1] + 4);
+  }
+  const t = cam.project([x, y, h]);
+  ctx.font = "bold 14px sans-serif";
+  ctx.fillText("E (px²)", t[0] + 20, t[1] - 8);
+  ctx.textAlign = "left";
 }

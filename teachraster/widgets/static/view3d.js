@@ -93,7 +93,8 @@ export function orbitDrag(canvas, cam, onChange) {
   canvas.addEventListener("pointermove", (e) => {
     if (!last) return;
     cam.yaw += (e.clientX - last[0]) * 0.01;
-    cam.elevation = Math.max(0.05, Math.min(Math.PI / 2, cam.elevation + (e.clientY - last[1]) * 0.01));
+    cam.elevation = tilt(cam, (e.clientY - last[1]) * 0.01);
+    cam.turned = true;
     last = [e.clientX, e.clientY];
     onChange(e);
   });
@@ -106,9 +107,20 @@ export function orbitDrag(canvas, cam, onChange) {
     if (!turn) return;
     e.preventDefault();
     cam.yaw += turn[0];
-    cam.elevation = Math.max(0.05, Math.min(Math.PI / 2, cam.elevation + turn[1]));
+    cam.elevation = tilt(cam, turn[1]);
+    cam.turned = true;
     onChange(e);
   });
+}
+
+// the elevation after a turn by `d`: above the horizon, at most `cam.maxElevation` (a view can
+// keep off the top view, where surfaces over the screen overlap one another)
+const tilt = (cam, d) => Math.max(0.05, Math.min(cam.maxElevation ?? Math.PI / 2, cam.elevation + d));
+
+// the unit vector from the scene towards the camera (the projection's depth axis)
+export function towardsCamera(yaw, elevation) {
+  const ce = Math.cos(elevation);
+  return [Math.sin(yaw) * ce, Math.cos(yaw) * ce, Math.sin(elevation)];
 }
 
 // a line in 3-D, drawn on top (labels, axes)
