@@ -117,8 +117,7 @@ async function decodeGroup(places, blobs) {
     places.map(async ([x, y], i) => {
       const bytes = blobs[i];
       if (!bytes || bytes.byteLength === 0) return null;
-      const blob = new Blob([bytes], { type: "image/png" });
-      return { x, y, bitmap: await createImageBitmap(blob) };
+      return { x, y, bitmap: await decodePng(bytes) };
     }),
   );
 }
@@ -347,7 +346,7 @@ export function mountFrames(el, opts) {
     if (s.groups.has(Math.floor(s.want / s.key))) {
       draw(s.want); // a fill shown before: its frames are here, decoded
     } else if (o.poster && o.poster.byteLength) {
-      const bitmap = await createImageBitmap(new Blob([o.poster], { type: "image/png" }));
+      const bitmap = await decodePng(o.poster);
       ctx.drawImage(bitmap, 0, 0);
       bitmap.close();
       s.shown = s.want;

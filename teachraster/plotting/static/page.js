@@ -10,3 +10,28 @@ export function addCss(id, text) {
   style.textContent = text;
   document.head.appendChild(style);
 }
+
+// PNG bytes to an ImageBitmap. On a starved machine Chromium's createImageBitmap sometimes
+// rejects good bytes ("The source image could not be decoded.": seen once per loaded CI run,
+// never on a quiet one, the same bytes decoding on the next try), so it is tried again after
+// a pause, then through an <img>; only bytes that fail all three ways are an error.
+export async function decodePng(bytes) {
+  const blob = new Blob([bytes], { type: "image/png" });
+  for (const pause of [0, 50, 250]) {
+    if (pause) await new Promise((done) => setTimeout(done, pause));
+    try {
+      return await createImageBitmap(blob);
+    } catch (error) {
+      if (typeof Image === "undefined") throw error;
+    }
+  }
+  const url = URL.createObjectURL(blob);
+  try {
+    const img = new Image();
+    img.src = url;
+    await img.decode();
+    return await createImageBitmap(img);
+  } finally {
+    URL.revokeObjectURL(url);
+  }
+}

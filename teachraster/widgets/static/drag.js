@@ -288,7 +288,7 @@ function render({ model, el }) {
   async function paintRef(msg, bytes) {
     if (msg.place === null) {
       sizePicture();
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
+      const bitmap = await decodePng(bytes);
       pctx.clearRect(0, 0, picture.width, picture.height);
       pctx.drawImage(bitmap, 0, 0);
       if (ref.bitmap) ref.bitmap.close();
@@ -321,7 +321,7 @@ function render({ model, el }) {
       // the poster is the reference: kept as a bitmap to put back from
       const frame = model.get("ref_frame");
       painting = painting.then(async () => {
-        const bitmap = await createImageBitmap(new Blob([poster0], { type: "image/png" }));
+        const bitmap = await decodePng(poster0);
         if (ref.bitmap === null) Object.assign(ref, { bitmap, frame });
         else bitmap.close();
       });
@@ -337,7 +337,7 @@ function render({ model, el }) {
     if (msg.ref !== undefined && msg.ref !== null) return paintRef(msg, bytes);
     if (msg.place === null) {
       sizePicture();
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
+      const bitmap = await decodePng(bytes);
       pctx.clearRect(0, 0, picture.width, picture.height);
       pctx.drawImage(bitmap, 0, 0);
       bitmap.close();
