@@ -706,6 +706,11 @@ WRONG = {
     "covers, y up both ways": ("covers", _covers_with(_owns_y_up_both), "bottom-right rule"),
     "covers, top-right rule": ("covers", _covers_with(_owns_top_right), "top-right rule"),
     "covers, bottom-left rule": ("covers", _covers_with(_owns_bottom_left), "bottom-left rule"),
+    "covers forgetting top edges": (
+        "covers",
+        _covers_with(_owns_left_only),
+        "on left edges and leave out those on top",
+    ),  # fmt: skip
     "covers, one winding": ("covers", _covers_with(_owns, orient=False), "handle both windings"),
     "covers returns False": ("covers", returns(False), "never covers anything"),
     "covers returns True": ("covers", returns(True), "covers every pixel it is asked about"),

@@ -147,6 +147,8 @@ def _unsigned(xy, p):  # barycentrics from unsigned areas: right inside, wrong o
 
 
 _LE, _PREVIOUS = sv.WRONG["passes with <="][1], sv.WRONG["against the previous fragment"][1]
+_LEFT_ONLY = sv.WRONG["covers forgetting top edges"][1]
+_MASKLESS = sv.WRONG["glass writes depth"][1]
 
 #: Wrong functions a scene's own pixels cannot see (every centre inside, glass that writes no
 #: depth, a sphere with no tie): each must still fail, on its own exercise's cases or in the
@@ -164,6 +166,14 @@ BLIND = [
     ("sphere", {"depth_passes": _LE}, "the intersecting_triangles scene", "use <, not <="),
     ("sphere", {"depth_passes": _PREVIOUS}, "the intersecting_triangles scene",
      "the one just before it"),
+    # r6: ties on left edges only (no grid centre lies on a horizontal edge), and a depth
+    # write where writes[k] is False (every fragment of these scenes writes): both passed
+    ("grid", {"covers": _LEFT_ONLY}, "covers exercise's own cases", "on left edges"),
+    ("sphere", {"covers": _LEFT_ONLY}, "covers exercise's own cases", "on left edges"),
+    ("intersecting_triangles", {"depth_passes": _MASKLESS}, "depth_passes exercise's own cases",
+     "leaves the buffer"),
+    ("sphere", {"depth_passes": _MASKLESS}, "depth_passes exercise's own cases",
+     "leaves the buffer"),
 ]  # fmt: skip
 
 
