@@ -455,3 +455,19 @@ def test_the_fill_plot_leaves_the_titles_corner_free():
     report.plot(ax)
     assert min(ax.get_yticks()) > min(ax.get_ylim()), ax.get_yticks()
     plt.close(fig)
+
+
+def test_broken_frame_cause_alone_and_refutations_read_plainly():
+    """A cause without its pixel is told to add the pixel (r6: "return the value itself, not
+    a string"); frame 5's premultiplication and frame 6's z-fighting refutations in plain
+    words (r6: "whose factors expect straight colours", "0 fragment(s) ... 0 depth(s)")."""
+    said = ex.check("broken_frame_1", lambda: "depth function").failures[0].explanation
+    assert "only the cause" in said and "(cause, (row, col))" in said, said
+    assert "not a string" not in said, said
+    row, col = _showing(5)
+    said = ex.check("broken_frame_5", lambda: ("missing premultiplication", (row, col)))
+    assert "colours here are straight" in str(said) and "expect" not in str(said), str(said)
+    row, col = _showing(6)
+    said = str(ex.check("broken_frame_6", lambda: ("z-fighting", (row, col))))
+    assert "fragment(s)" not in said and "depth(s)" not in said, said
+    assert f"reaches pixel ({row}, {col})" in said, said
