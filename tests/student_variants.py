@@ -505,6 +505,13 @@ def weights_overflowing(lam, w):
     return q / q.sum()
 
 
+def _floor_texel(texture, uv, wrap):
+    """One texel alone, the one under (u·W, v·H): nearest filtering, not bilinear."""
+    tex = np.asarray(texture, float)
+    h, w = tex.shape[:2]
+    return tex[int(np.floor(uv[1] * h)) % h, int(np.floor(uv[0] * w)) % w]
+
+
 def _passes_with(ties=False, mask=True, test_all=True, previous=False):
     def depth_passes(depths, writes):
         stored = last = math.inf
@@ -822,6 +829,8 @@ WRONG = {
     "λ returns 0": ("mip_level", returns(0), "returns 0 on every case"),
     # bilinear
     "bilinear without −½": ("bilinear", _bilinear_with(centre=0.0), "texel corners"),
+    # r6: floor(u·W) breaks a tie between texels otherwise than the package's nearest
+    "bilinear as the floor texel": ("bilinear", _floor_texel, "nearest filtering"),
     "bilinear, weights reversed": (
         "bilinear",
         _bilinear_with(swap=True),

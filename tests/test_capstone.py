@@ -81,6 +81,8 @@ def _nearest_level(pyramid, uv, lod, wrap):  # trilinear reading the nearest lev
 
 
 WRONG = [
+    ("floor_bilinear", {"bilinear": sv.WRONG["bilinear as the floor texel"][1]},
+     "texture filtering", "nearest filtering"),  # r6: named only as "blend the four texels"
     ("grid", {"covers": _top_right}, "coverage", "the top-left rule"),
     ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
      "interpolation", "your barycentric returned"),
