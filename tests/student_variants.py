@@ -505,6 +505,13 @@ def weights_overflowing(lam, w):
     return q / q.sum()
 
 
+def _floor_texel(texture, uv, wrap):
+    """One texel alone, the one under (u·W, v·H): nearest filtering, not bilinear."""
+    tex = np.asarray(texture, float)
+    h, w = tex.shape[:2]
+    return tex[int(np.floor(uv[1] * h)) % h, int(np.floor(uv[0] * w)) % w]
+
+
 def _passes_with(ties=False, mask=True, test_all=True, previous=False):
     def depth_passes(depths, writes):
         stored = last = math.inf
@@ -706,6 +713,11 @@ WRONG = {
     "covers, y up both ways": ("covers", _covers_with(_owns_y_up_both), "bottom-right rule"),
     "covers, top-right rule": ("covers", _covers_with(_owns_top_right), "top-right rule"),
     "covers, bottom-left rule": ("covers", _covers_with(_owns_bottom_left), "bottom-left rule"),
+    "covers forgetting top edges": (
+        "covers",
+        _covers_with(_owns_left_only),
+        "on left edges and leave out those on top",
+    ),  # fmt: skip
     "covers, one winding": ("covers", _covers_with(_owns, orient=False), "handle both windings"),
     "covers returns False": ("covers", returns(False), "never covers anything"),
     "covers returns True": ("covers", returns(True), "covers every pixel it is asked about"),
@@ -817,6 +829,8 @@ WRONG = {
     "λ returns 0": ("mip_level", returns(0), "returns 0 on every case"),
     # bilinear
     "bilinear without −½": ("bilinear", _bilinear_with(centre=0.0), "texel corners"),
+    # r6: floor(u·W) breaks a tie between texels otherwise than the package's nearest
+    "bilinear as the floor texel": ("bilinear", _floor_texel, "nearest filtering"),
     "bilinear, weights reversed": (
         "bilinear",
         _bilinear_with(swap=True),

@@ -81,6 +81,8 @@ def _nearest_level(pyramid, uv, lod, wrap):  # trilinear reading the nearest lev
 
 
 WRONG = [
+    ("floor_bilinear", {"bilinear": sv.WRONG["bilinear as the floor texel"][1]},
+     "texture filtering", "nearest filtering"),  # r6: named only as "blend the four texels"
     ("grid", {"covers": _top_right}, "coverage", "the top-left rule"),
     ("single_triangle", {"barycentric": lambda xy, p: np.roll(sol.barycentric(xy, p), 1)},
      "interpolation", "your barycentric returned"),
@@ -147,6 +149,8 @@ def _unsigned(xy, p):  # barycentrics from unsigned areas: right inside, wrong o
 
 
 _LE, _PREVIOUS = sv.WRONG["passes with <="][1], sv.WRONG["against the previous fragment"][1]
+_LEFT_ONLY = sv.WRONG["covers forgetting top edges"][1]
+_MASKLESS = sv.WRONG["glass writes depth"][1]
 
 #: Wrong functions a scene's own pixels cannot see (every centre inside, glass that writes no
 #: depth, a sphere with no tie): each must still fail, on its own exercise's cases or in the
@@ -164,6 +168,14 @@ BLIND = [
     ("sphere", {"depth_passes": _LE}, "the intersecting_triangles scene", "use <, not <="),
     ("sphere", {"depth_passes": _PREVIOUS}, "the intersecting_triangles scene",
      "the one just before it"),
+    # r6: ties on left edges only (no grid centre lies on a horizontal edge), and a depth
+    # write where writes[k] is False (every fragment of these scenes writes): both passed
+    ("grid", {"covers": _LEFT_ONLY}, "covers exercise's own cases", "on left edges"),
+    ("sphere", {"covers": _LEFT_ONLY}, "covers exercise's own cases", "on left edges"),
+    ("intersecting_triangles", {"depth_passes": _MASKLESS}, "depth_passes exercise's own cases",
+     "leaves the buffer"),
+    ("sphere", {"depth_passes": _MASKLESS}, "depth_passes exercise's own cases",
+     "leaves the buffer"),
 ]  # fmt: skip
 
 
@@ -253,10 +265,16 @@ def test_compare_draws_three_panels_with_the_first_pixel_marked():
     fig, axes = plt.subplots(1, 3)
     assert ties.compare(axes) and "differ" in axes[2].get_title()  # the tie scene draws too
     plt.close(fig)
-    stub = ex.capstone("grid", covers=lambda xy, p: None)
-    fig, axes = plt.subplots(1, 3)
-    stub.compare(axes)
-    plt.close(fig)
+
+    def unfinished(xy, p):
+        raise NotImplementedError
+
+    for stub in (ex.capstone("grid", covers=lambda xy, p: None),
+                 ex.capstone("single_triangle", barycentric=unfinished)):  # fmt: skip
+        fig, axes = plt.subplots(1, 3)
+        stub.compare(axes)
+        assert axes[2].get_title() == "nothing to compare yet", axes[2].get_title()  # r6
+        plt.close(fig)
 
 
 def test_the_time_limit_is_the_classes_and_prints_are_kept_aside(monkeypatch, capsys):

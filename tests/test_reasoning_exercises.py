@@ -164,6 +164,24 @@ def test_the_naive_fills_report_shows_each_family_of_its_failures_first():
     assert "precision" in far.explanation and "float32" in far.explanation
 
 
+def test_robust_fill_blames_float32_only_where_its_spacing_and_the_answer_say_so():
+    """The far-from-origin (precision) words need float32 coarser than 1/256 px (beyond
+    2^16 px) and an answer a float32 evaluation gives (r6: said at 10013 px, where float32
+    is 1/1024 px apart, to an E >= 0 fill, and to a transposed float64 fill)."""
+    from student_variants import _fill_with
+
+    def transposed(xy, width, height, origin=(0, 0)):  # built [col, row], origin read (x, y)
+        return _fill_with()(xy, height, width, (origin[1], origin[0])).T
+
+    naive = _fill_with(snap=False, dtype=np.float32, vertices=np.float32, tie=lambda a, b: True)
+    report = ex.check("robust_fill", naive)
+    near = [f for f in report.failures if f.case == "far_from_origin at 10000 px"]
+    assert near and all(f.kind == "E >= 0" for f in near), str(report)
+    report = ex.check("robust_fill", transposed)
+    assert "far from origin" not in {f.kind for f in report.failures}, str(report)
+    assert "float32" not in str(report) and "precision" not in str(report), str(report)
+
+
 def test_robust_fill_task_keeps_the_goal_and_leaves_the_causes_to_the_checker():
     """Exercise 10's task names no fix: the catalogue's failures, explained, teach them."""
     import json
@@ -437,3 +455,19 @@ def test_the_fill_plot_leaves_the_titles_corner_free():
     report.plot(ax)
     assert min(ax.get_yticks()) > min(ax.get_ylim()), ax.get_yticks()
     plt.close(fig)
+
+
+def test_broken_frame_cause_alone_and_refutations_read_plainly():
+    """A cause without its pixel is told to add the pixel (r6: "return the value itself, not
+    a string"); frame 5's premultiplication and frame 6's z-fighting refutations in plain
+    words (r6: "whose factors expect straight colours", "0 fragment(s) ... 0 depth(s)")."""
+    said = ex.check("broken_frame_1", lambda: "depth function").failures[0].explanation
+    assert "only the cause" in said and "(cause, (row, col))" in said, said
+    assert "not a string" not in said, said
+    row, col = _showing(5)
+    said = ex.check("broken_frame_5", lambda: ("missing premultiplication", (row, col)))
+    assert "colours here are straight" in str(said) and "expect" not in str(said), str(said)
+    row, col = _showing(6)
+    said = str(ex.check("broken_frame_6", lambda: ("z-fighting", (row, col))))
+    assert "fragment(s)" not in said and "depth(s)" not in said, said
+    assert f"reaches pixel ({row}, {col})" in said, said

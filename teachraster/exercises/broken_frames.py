@@ -231,6 +231,10 @@ def broken_frame(number: int) -> BrokenFrame:
 # -- the answer -------------------------------------------------------------------------------
 def as_diagnosis(value) -> tuple[str, tuple[int, int]]:
     """(cause, (row, col)) from the student's answer, read strictly."""
+    if isinstance(value, str) and " ".join(value.lower().replace("_", " ").split()) in CAUSES:
+        # the cause without its pixel (r6: told to drop the quotes of a cause that is text)
+        raise WrongAnswerType(f"returned only the cause {value!r}: return (cause, (row, col)), "
+                              "the cause and a pixel whose history shows it")  # fmt: skip
     refuse_non_answers(value, "a pair (cause, (row, col))")
     try:
         cause, pixel = value
@@ -348,9 +352,13 @@ def hint(cause: str, frame: Frame, row: int, col: int) -> str:
     if cause == "texture filtering":
         return "this frame samples no texture: its colours are the triangles' own"
     if cause == "missing premultiplication" and (blend is None or blend.mode != "premultiplied"):
-        mode = "does not blend at all" if blend is None or blend.mode is None else \
-            f"blends with {blend.mode!r}, whose factors expect straight colours"  # fmt: skip
-        return f"this frame {mode}"
+        if blend is None or blend.mode is None:
+            return "this frame does not blend at all"
+        if blend.mode == "over":  # r6: "whose factors expect straight colours" was obscure
+            return ("the colours here are straight and blended with straight-alpha factors "
+                    "(src·α + dst·(1−α)): nothing premultiplied is blended as straight, or "
+                    "the reverse")  # fmt: skip
+        return f"this frame blends with {blend.mode!r}, whose factors expect straight colours"
     if cause == "blend order":
         return _order_hint(h, blend)
     if cause == "z-fighting":
@@ -380,7 +388,9 @@ def _fight_hint(h, row, col) -> str:
     depths = sorted({r.depth for r in h.records if np.isfinite(r.depth)})
     if len(depths) < 2:
         n = len([r for r in h.records if np.isfinite(r.depth)])
-        return f"{n} fragment(s) reach pixel ({row}, {col}) with {len(depths)} depth(s): nothing to fight"
+        reach = {0: "no fragment reaches", 1: "only 1 fragment reaches"}.get(
+            n, f"all {n} fragments share one depth at")  # fmt: skip
+        return f"{reach} pixel ({row}, {col}): nothing to fight"
     gap = min(b - a for a, b in zip(depths, depths[1:]))
     return (f"the fragments at pixel ({row}, {col}) have distinct stored depths (the closest "
             f"differ by {num(gap)}): the buffer tells them apart")  # fmt: skip

@@ -62,11 +62,13 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     wrong = report.differing_pixels()
     h, w = ref.shape[:2]
     artists = []
+    # no frame of yours (a stub, an error): no count (r6: "0 pixel(s) differ" beside it)
+    differ = "nothing to compare yet" if mine is None else f"{len(wrong)} pixel(s) differ"
     if view:  # the overdraw: short titles, the scale below
-        titles = ("yours (overdraw)", "package's (overdraw)", f"{len(wrong)} pixel(s) differ")
+        titles = ("yours (overdraw)", "package's (overdraw)", differ)
         axes[0].set_xlabel(view, fontsize="x-small")
     else:
-        titles = (f"{spec.name}: yours", "the package's", f"{len(wrong)} pixel(s) differ")
+        titles = (f"{spec.name}: yours", "the package's", differ)
     for ax, title in zip(axes, titles):
         ax.set_title(title, fontsize="small")
         ax.set_xticks([])

@@ -113,6 +113,8 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         "origin ignored": expected_fill(xy, width, height, (0, 0)),
         "pixel corners": expected_fill(np.asarray(xy, float) + 0.5, width, height, origin),
         "transposed": expected_fill(xy, height, width, origin).T if width == height else None,
+        # built [col, row] from origin read (col, row) (r6: told precision far from the origin)
+        "transposed, origin swapped": expected_fill(xy, height, width, o[::-1]).T,
         "vertex x and y swapped": expected_fill(
             np.asarray(xy, float)[:, ::-1], width, height, origin
         ),  # fmt: skip
@@ -199,7 +201,31 @@ def _far_words(args, expected, got) -> str:
 #: What is wrong, by the catalogue's family, where no single mistake gives the answer (two or
 #: more at once, as in the naive fill): far from the origin (precision), off the grid
 #: (snapping), so that one failure of each family shows first.
-FAR = Mistake("far from origin", _far_words, fits=lambda a, e, g: _far(a) >= 1e4, symptom=True)
+FAR = Mistake("far from origin", _far_words, fits=lambda a, e, g: _precision_decides(a, g),
+              symptom=True)  # fmt: skip
+
+#: float32's spacing must exceed this (px) before precision can move a snapped vertex.
+GRID = 1 / 256
+
+
+def _precision_decides(args, got) -> bool:
+    """Is the case so far out that float32 cannot hold the 1/256-px grid (beyond 2^16 px),
+    and does ``got`` equal a float32 evaluation that float64 would not give? (r6: said at
+    10013 px, where float32 is 1/1024 px apart, and to a transposed float64 function.)"""
+    if float(np.spacing(np.float32(_far(args)))) <= GRID:
+        return False
+    xy, width, height, origin = args
+    raw = np.asarray(xy, float)
+    for vertices in (raw, snap(raw)):
+        for rule in ("inclusive", "strict", "top_left"):
+            for absolute in (True, False):
+                kw = dict(rule=rule, absolute=absolute, origin=tuple(origin))
+                low = naive_coverage(vertices, width, height, dtype=np.float32, **kw)
+                if np.array_equal(low, got) and not np.array_equal(
+                    low, naive_coverage(vertices, width, height, **kw)
+                ):
+                    return True
+    return False
 
 
 def _snapping_decides(args, expected, got) -> bool:
@@ -209,6 +235,21 @@ def _snapping_decides(args, expected, got) -> bool:
         return False
     unsnapped = naive_coverage(raw, width, height, rule="top_left", origin=tuple(origin))
     return not np.array_equal(unsnapped, expected)
+
+
+def _tie_rule_decides(rule: str):
+    """``fits``: ``got`` is what the tie ``rule`` gives on the raw or snapped vertices, in
+    float64 or float32 (the tie mistake beside another one, such as no snapping)."""
+
+    def fits(args, expected, got) -> bool:
+        xy, width, height, origin = args
+        raw = np.asarray(xy, float)
+        return any(np.array_equal(got, naive_coverage(
+            v, width, height, rule=rule, dtype=dtype, origin=tuple(origin)))
+            for v in (raw, snap(raw), raw.astype(np.float32).astype(float))
+            for dtype in (np.float64, np.float32))  # fmt: skip
+
+    return fits
 
 
 OFF_GRID = Mistake(
@@ -305,6 +346,14 @@ MISTAKES = {
     "float32": "you compute in float32: 10⁵ px from the origin its numbers are 1/128 px apart "
     "and cannot hold the 1/256-px grid; use float64",
 }
+MISTAKES["transposed, origin swapped"] = (
+    f"{MISTAKES['transposed']}; and {MISTAKES['origin swapped']}"
+)
+
+#: The tie mistakes beside another (r6: an unsnapped E >= 0 fill at 10013 px was told
+#: precision, where float32 holds the grid): named when no single cause fits.
+TIES = tuple(Mistake(kind, MISTAKES[kind], fits=_tie_rule_decides(rule), symptom=True)
+             for kind, rule in (("E >= 0", "inclusive"), ("E > 0", "strict")))  # fmt: skip
 
 
 def explain_fill(args, expected, got) -> str:
@@ -374,6 +423,6 @@ def same_image(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 ROBUST_FILL = Exercise(
     "robust_fill", fill_cases, as_image, same_image, explain_fill, _rule,
-    variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, OFF_GRID)), answers=(PackageAnswer(rasterize),),
+    variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, *TIES, OFF_GRID)), answers=(PackageAnswer(rasterize),),
     draw=draw_fill, compose=compose,
 )  # fmt: skip

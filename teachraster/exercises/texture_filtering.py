@@ -235,10 +235,23 @@ def _nearest(tex, uv, wrap):
     return sample(tex, np.asarray(uv, dtype=float)[None], "nearest", wrap)[0]
 
 
+def _one_texel(args, expected, got) -> bool:
+    """Is ``got`` one of the four texels around (x, y) alone (nearest filtering, whichever
+    way a tie between texels is broken)? r6: a floor(u·W) nearest passed as unnamed."""
+    tex, uv, wrap = np.asarray(args[0], float), args[1], args[2]
+    h, w = tex.shape[:2]
+    x0, y0 = int(np.floor(uv[0] * w - 0.5)), int(np.floor(uv[1] * h - 0.5))
+    index = (lambda i, n: i % n) if wrap == "repeat" else (lambda i, n: min(max(i, 0), n - 1))
+    texels = [tex[index(r, h), index(c, w)] for r in (y0, y0 + 1) for c in (x0, x0 + 1)]
+    return not all_close(got, expected) and any(all_close(got, t) for t in texels)
+
+
 BILINEAR_MISTAKES = [
     CHANNELS,
     Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
             "around (x, y)", gives=_nearest),
+    Mistake("one texel", ": that is one texel alone, nearest filtering; bilinear blends the "
+            "four texels around (x, y)", fits=_one_texel),
     BILINEAR_KNOBS,
 ]  # fmt: skip
 
