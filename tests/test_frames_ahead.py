@@ -216,3 +216,24 @@ def test_widget_messages_and_pictures_drawn_ahead_hold_one_lock():
     ahead._run()
     assert held == [True, True] and not DRAWING._is_owned()
     ex.close()
+
+
+def test_a_final_value_the_kernel_holds_brings_the_full_picture():
+    """Keys 80 -> 79 -> 80 while the kernel is busy: the page shows 79's and 80's pictures
+    drawn ahead (drafts: no error, "(on release)") and sends 80 as final, the value the kernel
+    holds. The full picture must follow (review 08-09-r6): before, nothing was drawn and the
+    page kept 80's draft for good."""
+    ex, slider = _make("filter")
+    page, sent = _listen(ex, slider)
+    full = bytes(page._last)
+    ex._truths.clear()  # as after 32 other tilts: the drafts drawn ahead have no error
+    while ex.display.frames_ahead.step(seconds=0.05):
+        pass
+    draft = _pictures(sent, page._ref)[80]  # what the page shows from its store at 80
+    assert not np.array_equal(draft[0], page._last) and "on release" in draft[1]
+    before = len([c for c, _ in sent if c["type"] == "frame"])
+    slider._on_page_message(slider, {"type": "value", "value": 80.0, "final": True, "seq": 1}, [])
+    frames = [c for c, _ in sent if c["type"] == "frame"]
+    assert len(frames) == before + 1 and "on release" not in frames[-1]["caption"]
+    assert bytes(page._last) == full
+    ex.close()

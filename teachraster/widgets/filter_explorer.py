@@ -277,6 +277,8 @@ class FilterExplorer:
         """Render again with the controls' values and update the panels in place
         (``restart``: the filter changed, the pictures drawn ahead are stale)."""
         kept = self._toggles.take(self.tilt.value, self.filter.value) if restart else None
+        if kept is not None and not self._full(kept[2]):
+            kept = None  # only a full picture at the tilt on show stands for a toggle
         if kept is not None:  # a filter drawn ahead at this tilt: its picture at once
             rgba, caption, state = kept
             vars(self).update(state)
@@ -294,6 +296,13 @@ class FilterExplorer:
                 self._toggles_ahead()
         if restart and self._ahead is not None:
             self._ahead.restart()
+
+    def _full(self, state: dict) -> bool:
+        """True when ``state`` (a picture's, drawn ahead) is the full picture of the
+        controls now: this tilt and filter, its error included (not a draft's)."""
+        return (state.get("truth", self.truth) is not None
+                and state.get("shown_tilt", self.shown_tilt) == self.tilt.value
+                and state.get("shown_filter", self.shown_filter) == self.filter.value)  # fmt: skip
 
     def _toggles_ahead(self) -> None:
         """The other filters at the tilt on show, drawn while the kernel idles (for a page)."""

@@ -88,7 +88,8 @@ class LiveSlider(anywidget.AnyWidget):
         self.on_msg(self._on_page_message)
 
     def on_release(self, callback) -> None:
-        """Call ``callback()`` when a drag ends on the value last shown as a draft.
+        """Call ``callback()`` when a drag ends on the value last shown as a draft, or the
+        page sends as final the value the kernel holds (it showed a draft there).
 
         When the release moves the value, the observers of ``value`` run as usual (with
         ``dragging`` False); when it does not, they would not run again, so this callback
@@ -123,9 +124,13 @@ class LiveSlider(anywidget.AnyWidget):
             self.value = float(content["value"])  # the observers re-render here
             if not final:
                 self._drafted = self._drafted or self.value != before
-            elif self._drafted:
+            else:
                 self._drafted = False
-                if self.value == before:  # the last draft is at the final value
+                # a final value the kernel holds already: the page showed a draft there (the
+                # last draft, or a picture drawn ahead: keys 60 -> 59 -> 60 while the kernel
+                # was busy left 60's draft, "(on release)", for good); the page sends such a
+                # value only then, so the full picture follows
+                if self.value == before:
                     for callback in self._release:
                         callback()
         finally:

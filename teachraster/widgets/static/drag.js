@@ -26,7 +26,7 @@ function storeFor(key) {
   const all = stores();
   if (!all.has(key)) {
     all.set(key, { entries: new Map(), generation: 0, slider: 0, views: new Set(),
-      raw: new Map(), want: null, busy: false, show: null });
+      raw: new Map(), want: null, busy: false, show: null, frames: 0 });
     const store = all.get(key);
     // show the picture drawn ahead for position k of slider i (its index among the
     // sliders linked to this figure) in every view; false when there is none
@@ -35,7 +35,7 @@ function storeFor(key) {
       const e = store.entries.get(k);
       if (!e || e.generation !== store.generation) return false;
       if (![...store.views].some((v) => v.canPaint(e))) return false;
-      store.want = e;
+      store.want = { e, frames: store.frames };
       if (!store.busy) drain(store);
       return true;
     };
@@ -48,7 +48,7 @@ async function drain(store) {
   store.busy = true;
   try {
     while (store.want) {
-      const e = store.want;
+      const { e, frames } = store.want;
       store.want = null;
       let raw = store.raw.get(e.k);
       if (!raw) {
@@ -56,6 +56,11 @@ async function drain(store) {
         store.raw.set(e.k, raw);
         if (store.raw.size > INFLATED) store.raw.delete(store.raw.keys().next().value);
       }
+      // painted only if still current after the wait (inflate): no picture from the kernel
+      // came meanwhile (it shows newer controls: a filter changed, a final render) and no
+      // other control dropped the pictures drawn ahead. Painted regardless, a keyed run of
+      // tilts then a filter left nearest's draft over bilinear's full picture for good.
+      if (frames !== store.frames || e.generation !== store.generation) continue;
       for (const v of store.views) if (v.canPaint(e)) v.paintAhead(e, raw);
     }
   } finally {
@@ -72,6 +77,7 @@ function initialize({ model }) {
     if (msg.type === "ahead-clear") {
       store.entries.clear();
       store.raw.clear();
+      store.want = null;
       store.generation = msg.generation;
       store.slider = msg.slider || 0;
     } else if (msg.type === "ahead" && msg.generation === store.generation) {
@@ -370,6 +376,7 @@ function render({ model, el }) {
   model.on("msg:custom", (msg, buffers) => {
     if (msg.type !== "frame") return;
     const bytes = buffers[0];
+    if (key) storeFor(key).frames += 1; // a picture drawn ahead asked for before is stale
     if (first && first.seq === msg.seq && first.reply === undefined) first.reply = performance.now();
     painting = painting.then(() => paint(msg, bytes)).catch(() => {});
     notice.textContent = "";

@@ -62,8 +62,12 @@ function render({ model, el }) {
     input.min = model.get("min");
     input.max = model.get("max");
     input.step = model.get("step");
-    if (!s.held && s.pending.size === 0) input.value = toPos(model.get("value"));
-    show(s.held ? toValue(Number(input.value)) : model.get("value"));
+    // while values are on their way (held, unanswered, or a final one waiting) the kernel's
+    // value is an older one: the handle and the readout stay where the student put them (a
+    // held arrow key's readout ran backwards, 55 -> 33, as the kernel's answers came in)
+    const busy = s.held || s.pending.size > 0 || s.finalWaiting;
+    if (!busy) input.value = toPos(model.get("value"));
+    show(busy ? toValue(Number(input.value)) : model.get("value"));
   }
   function send(value, final) {
     s.seq += 1;
