@@ -112,14 +112,19 @@ function b64Bytes(b64) {
 }
 
 // Decode one group: [[x, y], ...] with PNG bytes (or empty: the step changed nothing).
+// null when a picture could not be decoded (page.js warns): the group is asked for again.
 async function decodeGroup(places, blobs) {
-  return Promise.all(
+  const frames = await Promise.all(
     places.map(async ([x, y], i) => {
       const bytes = blobs[i];
       if (!bytes || bytes.byteLength === 0) return null;
-      return { x, y, bitmap: await decodePng(bytes) };
+      const bitmap = await decodePng(bytes);
+      return bitmap === null ? undefined : { x, y, bitmap };
     }),
   );
+  if (!frames.includes(undefined)) return frames;
+  for (const f of frames) if (f) f.bitmap.close();
+  return null;
 }
 
 // Mount a player in `el`. `opts`: width, height (pixels of a frame), n (steps), key (steps
@@ -258,6 +263,11 @@ export function mountFrames(el, opts) {
     if (gen !== s.gen) return;
     const frames = s.groups.get(g) ?? (await decodeGroup(places, blobs));
     if (gen !== s.gen) return;
+    if (frames === null) {
+      // not decoded: not kept, so showing one of its steps asks the kernel for it again
+      if (s.inflight === g) s.inflight = null;
+      return;
+    }
     s.groups.set(g, frames);
     canvas.dataset.groups = String(s.groups.size); // for tests and benchmarks
     notice.textContent = "";
@@ -347,8 +357,8 @@ export function mountFrames(el, opts) {
       draw(s.want); // a fill shown before: its frames are here, decoded
     } else if (o.poster && o.poster.byteLength) {
       const bitmap = await decodePng(o.poster);
-      ctx.drawImage(bitmap, 0, 0);
-      bitmap.close();
+      if (bitmap !== null) ctx.drawImage(bitmap, 0, 0);
+      bitmap?.close();
       s.shown = s.want;
       canvas.dataset.step = String(s.want);
       canvas.dataset.gen = String(s.gen);

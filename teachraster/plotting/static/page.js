@@ -11,10 +11,11 @@ export function addCss(id, text) {
   document.head.appendChild(style);
 }
 
-// PNG bytes to an ImageBitmap. On a starved machine Chromium's createImageBitmap sometimes
-// rejects good bytes ("The source image could not be decoded.": seen once per loaded CI run,
-// never on a quiet one, the same bytes decoding on the next try), so it is tried again after
-// a pause, then through an <img>; only bytes that fail all three ways are an error.
+// PNG bytes to an ImageBitmap, or null. On a busy machine Chromium's createImageBitmap
+// sometimes rejects good bytes ("The source image could not be decoded.", seen in loaded CI
+// runs, the same bytes decoding on the next try), so it is tried again after a pause, then
+// through an <img>. Bytes that fail all three ways give null and a console warning with what
+// they were: the caller keeps its picture and asks for a whole one, never an uncaught error.
 export async function decodePng(bytes) {
   const blob = new Blob([bytes], { type: "image/png" });
   for (const pause of [0, 50, 250]) {
@@ -31,6 +32,12 @@ export async function decodePng(bytes) {
     img.src = url;
     await img.decode();
     return await createImageBitmap(img);
+  } catch (error) {
+    const view = new Uint8Array(bytes.buffer ?? bytes, bytes.byteOffset ?? 0, bytes.byteLength);
+    const head = Array.from(view.slice(0, 8), (b) => b.toString(16).padStart(2, "0")).join(" ");
+    console.warn(`teachraster: a picture could not be decoded (${bytes.byteLength} bytes, ` +
+      `starting ${head}): ${error.message}`);
+    return null;
   } finally {
     URL.revokeObjectURL(url);
   }

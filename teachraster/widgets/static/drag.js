@@ -295,6 +295,10 @@ function render({ model, el }) {
     if (msg.place === null) {
       sizePicture();
       const bitmap = await decodePng(bytes);
+      if (bitmap === null) {
+        askRef(); // not decoded (page.js warns): a new reference is asked for
+        return;
+      }
       pctx.clearRect(0, 0, picture.width, picture.height);
       pctx.drawImage(bitmap, 0, 0);
       if (ref.bitmap) ref.bitmap.close();
@@ -328,7 +332,8 @@ function render({ model, el }) {
       const frame = model.get("ref_frame");
       painting = painting.then(async () => {
         const bitmap = await decodePng(poster0);
-        if (ref.bitmap === null) Object.assign(ref, { bitmap, frame });
+        if (bitmap === null) askRef(); // not decoded (page.js warns): ask for a reference
+        else if (ref.bitmap === null) Object.assign(ref, { bitmap, frame });
         else bitmap.close();
       });
     } else {
@@ -344,6 +349,10 @@ function render({ model, el }) {
     if (msg.place === null) {
       sizePicture();
       const bitmap = await decodePng(bytes);
+      if (bitmap === null) {
+        missed = true; // not decoded (page.js warns): the next whole picture or poster
+        return;
+      }
       pctx.clearRect(0, 0, picture.width, picture.height);
       pctx.drawImage(bitmap, 0, 0);
       bitmap.close();
