@@ -60,7 +60,10 @@ async function drain(store) {
       // came meanwhile (it shows newer controls: a filter changed, a final render) and no
       // other control dropped the pictures drawn ahead. Painted regardless, a keyed run of
       // tilts then a filter left nearest's draft over bilinear's full picture for good.
-      if (frames !== store.frames || e.generation !== store.generation) continue;
+      if (frames !== store.frames || e.generation !== store.generation) {
+        for (const v of store.views) v.skippedAhead(); // counted, for tests and benchmarks
+        continue;
+      }
       for (const v of store.views) if (v.canPaint(e)) v.paintAhead(e, raw);
     }
   } finally {
@@ -322,6 +325,9 @@ function render({ model, el }) {
       setCaption(e.caption);
       counted();
     },
+    // a picture drawn ahead left unpainted (the kernel's newer one came first): a key then
+    // brings one picture, not two (data-frames + data-skipped counts both ways)
+    skippedAhead: () => (img.dataset.skipped = String(Number(img.dataset.skipped || 0) + 1)),
   };
   const key = model.get("key");
   if (key) storeFor(key).views.add(view);
