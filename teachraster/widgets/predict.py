@@ -17,6 +17,13 @@ Headless runs
     the question never waits: its output holds the answer, the explanation and the figure,
     folded under "Show the answer" so that a reader of the exported page still predicts
     first. See :func:`is_headless`.
+
+The cell that gives the answer away
+    A lesson's next cell often prints or draws the answer: with Run All it would sit just
+    below the question before anyone answered. That cell starts with ``q.hold()``
+    (:class:`HoldsAnswer`): in JupyterLab and Notebook 7 its output stays hidden behind one
+    line until ``q`` is checked, then appears in place. The output itself is the cell's, as
+    ever (saved with the notebook, read by the tests); headless runs hold nothing.
 """
 
 from __future__ import annotations
@@ -66,6 +73,66 @@ def is_headless() -> bool:
     return os.environ.get("MPLBACKEND", "").strip().lower() == "agg"
 
 
+#: Hides, in JupyterLab and Notebook 7, every output of a cell after the one holding a
+#: ``teachraster-held`` element: the outputs a prediction's answer cell makes after
+#: ``hold()``. Revealing replaces that output with an empty one, so the rest shows in place.
+#: A front end without ``:has`` (or one that strips styles) shows everything at once.
+HELD_CSS = (
+    "<style>.jp-OutputArea-child:has(.teachraster-held) ~ .jp-OutputArea-child "
+    "{display: none}</style>"
+)
+
+#: What stands in for the held outputs, live and in a notebook saved before the answer.
+HELD_TEXT = (
+    "Answer the prediction above to see this: the output of this cell gives its answer "
+    "away, so it stays hidden until the prediction is checked."
+)
+
+
+class HoldsAnswer:
+    """``hold()``: keep the rest of the current cell's output hidden until this prediction is
+    revealed (mixed into :class:`Predict` and the figure predictions).
+
+    The cell runs and prints as ever; only the front end hides what it printed (see
+    :data:`HELD_CSS`), so holding never changes a result, and the outputs stay in the cell
+    (saved with the notebook, read by the lesson tests). Headless runs, and a prediction
+    already revealed, hold nothing.
+    """
+
+    def _holds(self) -> bool:
+        """Whether ``hold()`` hides anything now (a student who can still answer)."""
+        headless = getattr(self, "headless", None)
+        return not (is_headless() if headless is None else headless) and not self.revealed
+
+    def hold(self) -> None:
+        """Call first in the cell that shows the answer: the outputs the cell makes after it
+        stay hidden behind one line until the prediction is checked, then appear in place
+        (JupyterLab, Notebook 7). Call it on two predictions to wait for both.
+
+        Returns None, so that it displays nothing as a cell's last line.
+        """
+        from IPython.display import publish_display_data
+
+        if not self._holds():
+            return
+        held = self.__dict__.setdefault("_held_ids", [])
+        display_id = f"teachraster-held-{os.getpid()}-{next(_ids)}"
+        held.append(display_id)
+        line = f"<div class='teachraster-held' style='color:#555'><i>{HELD_TEXT}</i></div>"
+        publish_display_data({"text/html": HELD_CSS + line, "text/plain": HELD_TEXT},
+                             transient={"display_id": display_id})  # fmt: skip
+
+    def _release_held(self) -> None:
+        """Show what ``hold()`` hid: empty its line (the outputs after it then show). Each
+        line is emptied once; the outputs never move, so nothing is shown twice."""
+        from IPython.display import publish_display_data
+
+        held = self.__dict__.get("_held_ids", [])
+        while held:
+            publish_display_data({"text/html": "", "text/plain": ""},
+                                 transient={"display_id": held.pop(0)}, update=True)  # fmt: skip
+
+
 def parse_number(text) -> float | None:
     """A typed number, or None: ``"0,25"`` (a decimal comma), ``"3/4"``, ``"20 %"`` (the
     number 20: the question says what it counts), ``"1e-3"``; None for anything else.
@@ -103,7 +170,7 @@ def _check_arguments(question, choices, answer, tolerance):
     return None, tolerance
 
 
-class Predict:
+class Predict(HoldsAnswer):
     """Ask first, reveal after: a multiple-choice or numeric prediction question.
 
     Parameters
@@ -250,6 +317,7 @@ class Predict:
         self.revealed = True
         if not self.headless:
             self._record()
+        self._release_held()
 
     def _figure_png(self):
         """Call ``figure`` in the style; its Figure as a PNG image at the figure's own size.

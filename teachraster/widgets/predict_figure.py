@@ -67,6 +67,7 @@ from ..core.validate import as_finite, as_float
 from ..plotting.frames import encode_png, frame_rgba
 from .common import choices_html, font_scale, style_context
 from .explorable import Explorable, esm_source
+from .predict import HoldsAnswer
 
 
 def _check_question(question, explain) -> tuple[str, str]:
@@ -122,7 +123,7 @@ def figure_picture(draw, axes_for, figsize, style) -> dict:
             "transform": [bbox.x0 - sx * x0, (h - bbox.y0) - sy * y0, sx, sy]}  # fmt: skip
 
 
-class FigurePrediction(Explorable):
+class FigurePrediction(HoldsAnswer, Explorable):
     """What the three kinds share: the question, Check, the verdict, the stand-in."""
 
     _esm = esm_source("predict_figure")
@@ -139,6 +140,7 @@ class FigurePrediction(Explorable):
     def _on_state(self, change) -> None:
         if change["new"].get("revealed") and not change["old"].get("revealed"):
             self._update_standin()  # the verdict goes into the saved notebook
+            self._release_held()  # and the answer cell's output shows (``hold()``)
 
     @property
     def given(self):
