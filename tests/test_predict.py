@@ -162,3 +162,115 @@ def test_numbers_are_read_as_students_type_them():
         q.control.value = typed
         assert q.given is None and q.check.disabled
     q.close()
+
+
+# -- hold(): the answer cell's output waits for Check (issue 31) --------------------------------
+
+
+@pytest.fixture
+def published(monkeypatch):
+    """What ``hold()`` and the reveal publish: (data, keywords), in order."""
+    import IPython.display
+
+    out = []
+    monkeypatch.setattr(IPython.display, "publish_display_data",
+                        lambda data, **kw: out.append((data, kw)))  # fmt: skip
+    return out
+
+
+def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(published):
+    from teachraster.widgets.predict import HELD_TEXT
+
+    q = Predict("Which row?", ["row 2", "row 3"], answer="row 3", explain="because",
+                headless=False)  # fmt: skip
+    assert q.hold() is None  # nothing shown as a cell's last line
+    (data, kw), = published
+    html = data["text/html"]
+    # the marker, and the style that hides the outputs after it in the same output area
+    assert "teachraster-held" in html and "~ .jp-OutputArea-child" in html
+    assert "display: none" in html and HELD_TEXT in html and data["text/plain"] == HELD_TEXT
+    held_id = kw["transient"]["display_id"]
+    assert "update" not in kw
+    # the stand-in a saved, reopened notebook shows says why, and gives nothing away
+    assert "hidden until the prediction is checked" in html
+    assert "row 3" not in html and "because" not in html
+    q.control.value = "row 2"
+    assert len(published) == 1  # answering does not reveal
+    q.check.click()
+    (data, kw) = published[1]
+    assert kw == {"transient": {"display_id": held_id}, "update": True}
+    assert data["text/html"] == ""  # the marker goes: the outputs after it show in place
+    q.check.click()  # revealing twice shows nothing twice
+    assert len(published) == 2
+    q.close()
+
+
+def test_hold_waits_for_each_prediction_and_each_held_cell(published):
+    q = Predict("How many?", answer=3, headless=False)
+    q.hold()
+    q.hold()  # a second cell that gives the same answer away
+    ids = [kw["transient"]["display_id"] for _, kw in published]
+    assert len(set(ids)) == 2
+    q.control.value = "3"
+    q.check.click()
+    assert sorted(kw["transient"]["display_id"] for _, kw in published[2:]) == sorted(ids)
+    q.close()
+
+
+def test_hold_holds_nothing_headless_or_once_revealed(published):
+    q = Predict("Q?", ["a", "b"], answer="a", headless=True)
+    q.hold()
+    assert published == []  # nbclient tests, `teachraster html`: everything shows at once
+    live = Predict("Q?", ["a", "b"], answer="a", headless=False)
+    live.control.value = "b"
+    live.check.click()
+    live.hold()  # the answer cell run again after Check: nothing to hide
+    assert published == []
+    live.close()
+
+
+def test_figure_predictions_hold_until_their_page_reveals(published, monkeypatch):
+    from teachraster.widgets import PredictOrder
+
+    monkeypatch.setenv(HEADLESS_ENV, "0")
+    q = PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"])
+    q.hold()
+    assert len(published) == 1 and "teachraster-held" in published[0][0]["text/html"]
+    q.state = {**q.state, "given": ["a", "b"], "acted": True}
+    assert len(published) == 1
+    q.state = {**q.state, "revealed": True}  # the page's Check, as it reaches the kernel
+    assert published[1][1]["update"] and published[1][0]["text/html"] == ""
+    q.state = {**q.state, "revealed": True, "given": ["b", "a"]}
+    assert len(published) == 2
+    monkeypatch.setenv(HEADLESS_ENV, "1")
+    PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"]).hold()
+    assert len(published) == 2
+
+
+HELD_CELLS = [
+    "import matplotlib.pyplot as plt\nfrom teachraster.widgets import Predict\n"
+    "q = Predict('How many?', answer=42)\nq",
+    "q.hold()\nprint('the answer is', 6 * 7)\nplt.figure(figsize=(4, 2))\nplt.plot([0, 1])\n"
+    "plt.show()",
+]
+
+
+@pytest.mark.notebook
+@pytest.mark.parametrize("headless", ["1", "0"])
+def test_held_outputs_stay_in_the_cell_where_tests_read_them(monkeypatch, headless):
+    """A real kernel: the held cell's print and figure are the cell's own outputs (what the
+    lesson tests and a saved notebook read), after the marker in a student's kernel, alone
+    in a headless one."""
+    from nbclient import NotebookClient
+
+    monkeypatch.setenv(HEADLESS_ENV, headless)
+    monkeypatch.delenv("MPLBACKEND", raising=False)  # the kernel draws inline
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in HELD_CELLS])
+    NotebookClient(nb, timeout=120, kernel_name="python3").execute()
+    outputs = nb.cells[1].outputs
+    streams = "".join(o.get("text", "") for o in outputs if o["output_type"] == "stream")
+    assert streams == "the answer is 42\n"
+    pngs = [o for o in outputs if "image/png" in o.get("data", {})]
+    assert len(pngs) == 1
+    marked = ["teachraster-held" in o.get("data", {}).get("text/html", "") for o in outputs]
+    assert marked == ([True, False, False] if headless == "0" else [False, False])
