@@ -184,7 +184,7 @@ def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(publis
     q = Predict("Which row?", ["row 2", "row 3"], answer="row 3", explain="because",
                 headless=False)  # fmt: skip
     assert q.hold() is None  # nothing shown as a cell's last line
-    (data, kw), = published
+    ((data, kw),) = published
     html = data["text/html"]
     # the marker, and the style that hides the outputs after it in the same output area
     assert "teachraster-held" in html and "~ .jp-OutputArea-child" in html
