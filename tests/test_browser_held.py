@@ -1,0 +1,79 @@
+"""A prediction's answer cell, held by ``q.hold()``, in JupyterLab in headless Chromium.
+
+With Run All, the cell after a prediction used to print its answer beside the question
+(issue 31; lesson 02: "saved 99 (20%)"). Held, its output is in the cell (saved, read by
+the lesson tests) but hidden behind one line until the prediction is checked; then it shows
+in place. Reopened without a kernel, the saved notebook still hides it behind that line.
+
+Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
+Playwright or Chromium is missing (CI makes them required).
+"""
+
+from __future__ import annotations
+
+import json
+import urllib.request
+
+import pytest
+from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
+from test_browser_saved import _run_all, _stop_kernels
+
+from teachraster.widgets.predict import HELD_TEXT
+
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
+
+NAME = "held_answer.ipynb"
+CELLS = [
+    "from teachraster.widgets import Predict\n"
+    "q = Predict('Which way does it wind?', ['clockwise', 'counter-clockwise'], 'clockwise')\n"
+    "q",
+    "q.hold()\nprint('THE ANSWER: clockwise')",
+]
+
+
+def _answer(tab):
+    return tab.locator(".jp-OutputArea-output", has_text="THE ANSWER").first
+
+
+def _line(tab):
+    return tab.locator(".teachraster-held").first
+
+
+def test_an_answer_cell_shows_only_after_check_and_stays_hidden_when_reopened(lab, page):  # noqa: F811
+    _run_all(lab, page, CELLS, NAME)
+    page.locator(".jupyter-widgets", has_text="Which way does it wind?").first.wait_for(
+        timeout=60_000
+    )
+    _answer(page).wait_for(state="attached", timeout=60_000)  # printed into the cell ...
+    assert not _answer(page).is_visible()  # ... and hidden
+    assert _line(page).is_visible() and HELD_TEXT in _line(page).inner_text()
+
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")  # saved before the answer
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
+    )
+    with urllib.request.urlopen(f"{lab}/api/contents/{NAME}", timeout=30) as r:
+        saved = json.load(r)["content"]
+    texts = "".join(o.get("text", "") for o in saved["cells"][1]["outputs"])
+    assert "THE ANSWER: clockwise" in texts  # the output is the cell's, as tests read it
+
+    _stop_kernels(page, lab)  # the next day: reopened, no kernel, no widget models
+    page.goto(f"{lab}/lab/tree/{NAME}?reset")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    _line(page).wait_for(state="visible", timeout=60_000)
+    _answer(page).wait_for(state="attached", timeout=30_000)
+    assert not _answer(page).is_visible()
+
+    _run_all(lab, page, CELLS, NAME)  # run again: answer, Check, and the output shows
+    question = page.locator(".jupyter-widgets", has_text="Which way does it wind?").first
+    question.wait_for(timeout=60_000)
+    _answer(page).wait_for(state="attached", timeout=60_000)
+    assert not _answer(page).is_visible()
+    question.locator("button", has_text="counter-clockwise").click()
+    question.locator("button", has_text="Check").click()
+    _answer(page).wait_for(state="visible", timeout=15_000)
+    assert not _line(page).is_visible()
