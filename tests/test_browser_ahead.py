@@ -15,6 +15,7 @@ Playwright or Chromium is missing (CI makes the browser required).
 from __future__ import annotations
 
 import pytest
+from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_saved import _run_all
 
@@ -114,17 +115,13 @@ SHOWN_B64 = """(c) => { const cv = document.querySelector(`.${c} canvas.tr-drag-
 
 def _kernel_picture(tab, path) -> None:
     """Run a cell that saves the picture a fresh explorer draws in the final state."""
-    tab.locator(".jp-Notebook .jp-Cell").last.click()
-    tab.keyboard.press("Escape")
-    tab.keyboard.press("b")  # a new cell below
-    tab.keyboard.press("Enter")
-    tab.keyboard.type(
+    run_new_cell(
+        tab,
         "fresh = DepthPrecisionExplorer('unorm16', near=0.1, far=1000.0, delta=0.005)\n"
         "fresh.format.value = 'float32'\nfresh.reverse.value = True\n"
         f"np.save({str(path)!r}, fresh.display.widget._last)\n"
-        f"np.save({str(path)!r}.replace('.npy', '_seq.npy'), depth.display.widget._last)\n"
+        f"np.save({str(path)!r}.replace('.npy', '_seq.npy'), depth.display.widget._last)\n",
     )
-    tab.keyboard.press("Shift+Enter")
 
 
 def test_format_switches_then_reverse_z_show_the_kernels_picture(lab, page, tmp_path):  # noqa: F811

@@ -21,6 +21,7 @@ import sys
 import urllib.request
 
 import pytest
+from browser_cells import run_new_cell
 from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _put_notebook, _stop_kernels
 
@@ -100,18 +101,11 @@ def _widget(tab, key: str):
 
 def _kernel(tab, code: str) -> str:
     """Run ``code`` (one line) in a new cell at the end; its printed output."""
-    tab.locator(".jp-Notebook .jp-Cell").last.click()
-    tab.keyboard.press("Escape")
     n = tab.locator(".jp-Notebook .jp-CodeCell").count()
-    tab.keyboard.press("b")
-    tab.wait_for_function("n => document.querySelectorAll('.jp-Notebook .jp-CodeCell').length > n",
-                          arg=n, timeout=10_000)  # fmt: skip
-    tab.keyboard.press("Enter")
     # a marker no other output holds, matched case-sensitively (Playwright's has_text string
     # is a case-insensitive substring: "OUT" matched an older output saying "without")
     marker = f"KERNEL-SAYS-{n}:"
-    tab.keyboard.type(f"print({marker!r} + json.dumps({code}))")
-    tab.keyboard.press("Shift+Enter")
+    run_new_cell(tab, f"print({marker!r} + json.dumps({code}))")
     out = tab.locator(".jp-OutputArea-output", has_text=re.compile(re.escape(marker))).last
     out.wait_for(timeout=60_000)
     return json.loads(out.inner_text().split(marker, 1)[1])

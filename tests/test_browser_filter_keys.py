@@ -15,6 +15,7 @@ Playwright or Chromium is missing.
 from __future__ import annotations
 
 import pytest
+from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_ahead import ALL_AHEAD, SHOWN_B64
 from test_browser_saved import _run_all
@@ -34,18 +35,14 @@ CELLS = [
 def _kernel_picture(tab, path) -> None:
     """Run a cell that saves the picture a fresh explorer draws at tilt 60 with bilinear,
     and the one the explorer on show sent last."""
-    tab.locator(".jp-Notebook .jp-Cell").last.click()
-    tab.keyboard.press("Escape")
-    tab.keyboard.press("b")  # a new cell below
-    tab.keyboard.press("Enter")
-    tab.keyboard.type(
+    run_new_cell(
+        tab,
         "fresh = FilterExplorer(tilt=60, filter='bilinear', repeats=6)\n"
         f"np.save({str(path)!r}.replace('.npy', '_seq.npy'), explorer.display.widget._last)\n"
         "state = (explorer.tilt.value, explorer.filter.value, bool(np.isfinite(explorer.rms)))\n"
         f"np.save({str(path)!r}.replace('.npy', '_state.npy'), np.array(state, dtype=object))\n"
-        f"np.save({str(path)!r}, fresh.display.widget._last)\n"
+        f"np.save({str(path)!r}, fresh.display.widget._last)\n",
     )
-    tab.keyboard.press("Shift+Enter")
 
 
 def test_keys_then_a_filter_end_on_the_kernels_full_picture(lab, page, tmp_path):  # noqa: F811
