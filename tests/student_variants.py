@@ -974,17 +974,17 @@ WRONG = {
     # broken frames (lesson 11): a wrong cause gets a hint, never the answer
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
-        lambda: ("z-fighting", (24, 28)),
+        lambda: ("z-fighting", (24, 28), "depth test"),
         "distinct stored depths",
     ),  # fmt: skip
     "frame 2 blamed on the depth function": (
         "broken_frame_2",
-        lambda: ("depth function", (24, 28)),
+        lambda: ("depth function", (24, 28), "culling"),
         "no fragment failed the depth test",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",
-        lambda: ("missing premultiplication", (0, 0)),
+        lambda: ("missing premultiplication", (0, 0), "blending"),
         "is the same in this frame as in the intended one",
     ),  # fmt: skip
 }
@@ -1291,17 +1291,17 @@ WRONG.update({
     # broken frames: (x, y) for (row, col), a misspelt cause, a pixel off the frame
     "frame 5 pixel given as (x, y)": (
         "broken_frame_5",
-        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1]),
+        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], "blending"),
         "did you give (x, y)?",
     ),  # fmt: skip
     "frame 1 cause misspelt": (
         "broken_frame_1",
-        lambda: ("depth functio", _rs.BROKEN_FRAMES[1][1]),
+        lambda: ("depth functio", *_rs.BROKEN_FRAMES[1][1:]),
         "your function returned the cause 'depth functio', which is not one of the causes",
     ),  # fmt: skip
     "frame 1 pixel off the frame": (
         "broken_frame_1",
-        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100)),
+        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100), "depth test"),
         "your function returned pixel (100, 100), outside",
     ),  # fmt: skip
 })  # fmt: skip
