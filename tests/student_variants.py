@@ -455,6 +455,35 @@ def premultiplied_no_one_minus(src, dst):
     return [s + d for s, d in zip(src, dst)]
 
 
+# exercise 9.2 derives the premultiplied over from Porter and Duff's straight rule: the slips
+# of that derivation, each written as a student would
+
+
+def premultiplied_by_the_straight_rule(src, dst):
+    """The straight rule typed as given, onto premultiplied colours."""
+    a = src[3] + dst[3] * (1 - src[3])
+    if a == 0:
+        return [0.0, 0.0, 0.0, 0.0]
+    rgb = [(s * src[3] + d * dst[3] * (1 - src[3])) / a for s, d in zip(src[:3], dst[:3])]
+    return [*rgb, a]
+
+
+def premultiplied_returned_straight(src, dst):
+    """Derived right, then 'back to a colour' by dividing by the result's alpha."""
+    out = [s + d * (1 - src[3]) for s, d in zip(src, dst)]
+    return [c / out[3] if out[3] else 0.0 for c in out[:3]] + [out[3]]
+
+
+def premultiplied_destination_again(src, dst):
+    """The destination weighted by its alpha as in the straight rule, though premultiplied."""
+    rgb = [s + d * dst[3] * (1 - src[3]) for s, d in zip(src[:3], dst[:3])]
+    return [*rgb, src[3] + dst[3] * (1 - src[3])]
+
+
+def premultiplied_weights_swapped(src, dst):
+    return [s * (1 - src[3]) + d * src[3] for s, d in zip(src, dst)]
+
+
 # == issue 30's exercises =========================================================================
 
 
@@ -878,6 +907,26 @@ WRONG = {
         premultiplied_no_one_minus,
         "not scaled by (1 − α)",
     ),  # fmt: skip
+    "premultiplied by the straight rule": (
+        "over_premultiplied",
+        premultiplied_by_the_straight_rule,
+        "straight-alpha rule to premultiplied colours",
+    ),  # fmt: skip
+    "premultiplied, returned straight": (
+        "over_premultiplied",
+        premultiplied_returned_straight,
+        "returned a straight colour",
+    ),  # fmt: skip
+    "premultiplied, destination again": (
+        "over_premultiplied",
+        premultiplied_destination_again,
+        "destination by its alpha again",
+    ),  # fmt: skip
+    "premultiplied, weights swapped": (
+        "over_premultiplied",
+        premultiplied_weights_swapped,
+        "weight 1 − α",
+    ),  # fmt: skip
     # span (issue 30)
     "span at pixel corners": (
         "span",
@@ -1050,6 +1099,10 @@ KINDS = {
     "layers, each new one on top": "reversed",
     "layers added up": "no transmittance",
     "layers premultiplied twice": "double premultiplication",
+    "premultiplied by the straight rule": "straight rule on premultiplied",
+    "premultiplied, returned straight": "returned straight",
+    "premultiplied, destination again": "destination premultiplied twice",
+    "premultiplied, weights swapped": "weights swapped",
     "frame 1 blamed on z-fighting": "cause",
     "frame 2 blamed on the depth function": "cause",
     "frame 4, a pixel the mistake left alone": "pixel",

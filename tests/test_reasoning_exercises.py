@@ -545,3 +545,37 @@ def test_broken_frame_cause_alone_and_refutations_read_plainly():
     assert f"reaches pixel ({row}, {col})" in said, said
     said = str(ex.check("broken_frame_6", lambda: ("z-fighting", (row, col), "culling")))
     assert "does not fit" not in said and "judged only beside evidence" in said, said
+
+
+# -- over_premultiplied (9.2): derived from the straight rule ---------------------------------
+def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors():
+    """Exercise 9.2 gives Porter and Duff's straight rule only; the derivation's slips are
+    named (the straight rule copied onto premultiplied colours, the result divided back to
+    straight, a side multiplied by its alpha again, the weights swapped), and no explanation
+    hands over the answer's factors (before: 'glBlendFunc(ONE, ONE_MINUS_SRC_ALPHA)' and
+    'src + dst·(1 − α)' after any wrong answer made it transcription again)."""
+    import json
+    from pathlib import Path
+
+    from student_variants import KINDS, WRONG
+
+    labels = [k for k, (name, _, _) in WRONG.items() if name == "over_premultiplied"]
+    assert {KINDS[k] for k in labels if k in KINDS} >= {
+        "straight rule on premultiplied", "returned straight", "destination premultiplied twice",
+        "weights swapped"}  # fmt: skip
+    tries = [WRONG[k][1] for k in labels] + [lambda s, d: np.asarray(s) * 0.5 + d[3]]
+    for fn in tries:
+        report = ex.check("over_premultiplied", fn)
+        assert not report.passed
+        for f in report.failures:
+            for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "glBlendFunc(ONE"):
+                assert answer not in f.explanation, f.explanation
+    last = ex.check("over_premultiplied", tries[-1]).failures[0].explanation
+    assert "multiplied through by the result's alpha" in last, last
+    nb = json.loads(Path(__file__).parents[1].joinpath(
+        "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
+    task = next("".join(c["source"]) for c in nb["cells"]
+                if c["metadata"]["nbgrader"]["grade_id"] == "over_premultiplied_task")  # fmt: skip
+    assert "straight" in task and "α_d·(1 − α_s)" in task
+    for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "c_s + c_d", "GL_ONE"):
+        assert answer not in task, answer
