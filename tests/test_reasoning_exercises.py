@@ -579,3 +579,20 @@ def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors
     assert "straight" in task and "α_d·(1 − α_s)" in task
     for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "c_s + c_d", "GL_ONE"):
         assert answer not in task, answer
+
+
+def test_the_fill_legend_lists_only_the_states_drawn():
+    """r6 10-3: the legend listed "missing (the rule covers it)" where no pixel was missing."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("robust_fill", _fill(rule="inclusive"))  # E >= 0: extra pixels only
+    assert not report.passed
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.plot(ax)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    plt.close(fig)
+    assert "covered" in labels and any(t.startswith("extra") for t in labels), labels
+    assert not any(t.startswith("missing") for t in labels), labels
