@@ -359,14 +359,10 @@ def _cause_words(args, expected, got) -> str:
 
 
 def _stage_words(number: int, row: int, col: int, stage: str) -> str:
-    """Why the stage does not hold at a pixel that shows the mistake: true, and no nearer to
-    the cause than what the two histories show side by side."""
-    actual = parts_at(number, row, col)
-    if STAGES.index(stage) > STAGES.index(actual):
-        return (f"the two histories of pixel ({row}, {col}) already part before {stage!r}: "
-                "read them side by side from the first record")  # fmt: skip
-    return (f"the two histories of pixel ({row}, {col}) agree at {stage!r}: compare them "
-            "record by record (frame.history and intended.history)")  # fmt: skip
+    """Why the stage does not hold at a pixel that shows the mistake: true, and the same words
+    for a stage before or after the right one (no direction to home in on by trying)."""
+    return (f"the two histories of pixel ({row}, {col}) do not first part at {stage!r}: read "
+            "them side by side from the first record (frame.history and intended.history)")  # fmt: skip
 
 
 def _unjudged(args, expected, got) -> str:
