@@ -132,12 +132,12 @@ CAPSTONE = dict(covers=covers, barycentric=barycentric, perspective_weights=pers
 
 #: A correct answer to each of issue 30's exercises, by name.
 BROKEN_FRAMES = {
-    1: ("depth function", (24, 28)),
-    2: ("culled winding", (24, 28)),
-    3: ("z-fighting", (24, 16)),
-    4: ("missing premultiplication", (21, 18)),
-    5: ("blend order", (19, 28)),
-    6: ("sliver", (25, 42)),
+    1: ("depth function", (24, 28), "depth test"),
+    2: ("culled winding", (24, 28), "culling"),
+    3: ("z-fighting", (24, 20), "depth test"),
+    4: ("missing premultiplication", (24, 20), "blending"),
+    5: ("blend order", (23, 41), "blending"),
+    6: ("sliver", (23, 40), "coverage"),
 }
 CORRECT = {
     "span": span,

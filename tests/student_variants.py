@@ -455,6 +455,35 @@ def premultiplied_no_one_minus(src, dst):
     return [s + d for s, d in zip(src, dst)]
 
 
+# exercise 9.2 derives the premultiplied over from Porter and Duff's straight rule: the slips
+# of that derivation, each written as a student would
+
+
+def premultiplied_by_the_straight_rule(src, dst):
+    """The straight rule typed as given, onto premultiplied colours."""
+    a = src[3] + dst[3] * (1 - src[3])
+    if a == 0:
+        return [0.0, 0.0, 0.0, 0.0]
+    rgb = [(s * src[3] + d * dst[3] * (1 - src[3])) / a for s, d in zip(src[:3], dst[:3])]
+    return [*rgb, a]
+
+
+def premultiplied_returned_straight(src, dst):
+    """Derived right, then 'back to a colour' by dividing by the result's alpha."""
+    out = [s + d * (1 - src[3]) for s, d in zip(src, dst)]
+    return [c / out[3] if out[3] else 0.0 for c in out[:3]] + [out[3]]
+
+
+def premultiplied_destination_again(src, dst):
+    """The destination weighted by its alpha as in the straight rule, though premultiplied."""
+    rgb = [s + d * dst[3] * (1 - src[3]) for s, d in zip(src[:3], dst[:3])]
+    return [*rgb, src[3] + dst[3] * (1 - src[3])]
+
+
+def premultiplied_weights_swapped(src, dst):
+    return [s * (1 - src[3]) + d * src[3] for s, d in zip(src, dst)]
+
+
 # == issue 30's exercises =========================================================================
 
 
@@ -878,6 +907,26 @@ WRONG = {
         premultiplied_no_one_minus,
         "not scaled by (1 − α)",
     ),  # fmt: skip
+    "premultiplied by the straight rule": (
+        "over_premultiplied",
+        premultiplied_by_the_straight_rule,
+        "straight-alpha rule to premultiplied colours",
+    ),  # fmt: skip
+    "premultiplied, returned straight": (
+        "over_premultiplied",
+        premultiplied_returned_straight,
+        "returned a straight colour",
+    ),  # fmt: skip
+    "premultiplied, destination again": (
+        "over_premultiplied",
+        premultiplied_destination_again,
+        "destination by its alpha again",
+    ),  # fmt: skip
+    "premultiplied, weights swapped": (
+        "over_premultiplied",
+        premultiplied_weights_swapped,
+        "weight 1 − α",
+    ),  # fmt: skip
     # span (issue 30)
     "span at pixel corners": (
         "span",
@@ -974,17 +1023,17 @@ WRONG = {
     # broken frames (lesson 11): a wrong cause gets a hint, never the answer
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
-        lambda: ("z-fighting", (24, 28)),
+        lambda: ("z-fighting", (24, 28), "depth test"),
         "distinct stored depths",
     ),  # fmt: skip
     "frame 2 blamed on the depth function": (
         "broken_frame_2",
-        lambda: ("depth function", (24, 28)),
+        lambda: ("depth function", (24, 28), "culling"),
         "no fragment failed the depth test",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",
-        lambda: ("missing premultiplication", (0, 0)),
+        lambda: ("missing premultiplication", (0, 0), "blending"),
         "is the same in this frame as in the intended one",
     ),  # fmt: skip
 }
@@ -1050,6 +1099,10 @@ KINDS = {
     "layers, each new one on top": "reversed",
     "layers added up": "no transmittance",
     "layers premultiplied twice": "double premultiplication",
+    "premultiplied by the straight rule": "straight rule on premultiplied",
+    "premultiplied, returned straight": "returned straight",
+    "premultiplied, destination again": "destination premultiplied twice",
+    "premultiplied, weights swapped": "weights swapped",
     "frame 1 blamed on z-fighting": "cause",
     "frame 2 blamed on the depth function": "cause",
     "frame 4, a pixel the mistake left alone": "pixel",
@@ -1291,17 +1344,17 @@ WRONG.update({
     # broken frames: (x, y) for (row, col), a misspelt cause, a pixel off the frame
     "frame 5 pixel given as (x, y)": (
         "broken_frame_5",
-        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1]),
+        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], "blending"),
         "did you give (x, y)?",
     ),  # fmt: skip
     "frame 1 cause misspelt": (
         "broken_frame_1",
-        lambda: ("depth functio", _rs.BROKEN_FRAMES[1][1]),
+        lambda: ("depth functio", *_rs.BROKEN_FRAMES[1][1:]),
         "your function returned the cause 'depth functio', which is not one of the causes",
     ),  # fmt: skip
     "frame 1 pixel off the frame": (
         "broken_frame_1",
-        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100)),
+        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100), "depth test"),
         "your function returned pixel (100, 100), outside",
     ),  # fmt: skip
 })  # fmt: skip

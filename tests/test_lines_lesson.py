@@ -55,7 +55,8 @@ def test_exercise_notebook_follows_the_grading_convention():
     nb = nbformat.read(path, as_version=4)
     ids = [c.metadata["nbgrader"]["grade_id"] for c in nb.cells]
     assert len(ids) == len(set(ids))
-    fns = ["line_pixels", "front_to_back"]  # issue 30: over and over_premultiplied merged away
+    # issue 30: GL's straight over merged away; over_premultiplied derived from the straight rule
+    fns = ["line_pixels", "over_premultiplied", "front_to_back"]
     for fn in fns:
         (sol,) = [c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == f"{fn}_solution"]
         assert sol.metadata["nbgrader"] == {"grade": False, "grade_id": f"{fn}_solution",

@@ -53,7 +53,15 @@ def explain_blend(args, expected, got) -> str:
     )
 
 
+#: The premultiplied rule as exercise 9.2 asks for it: derived, so the explanation of a wrong
+#: answer says how to derive it, never the factors to type (that would be the answer).
+_DERIVE = (": Porter and Duff's rule for straight colours with src and dst written as c = α·C, "
+           "multiplied through by the result's alpha, on all four channels")  # fmt: skip
+
+
 def _rule(mode: str):
+    if mode == "premultiplied":
+        return lambda *a: _DERIVE
     s, d = BLEND_MODES[mode]
     return lambda *a: f": src·{s} + dst·{d} (glBlendFunc({s}, {d})), on all four channels"
 
@@ -90,14 +98,53 @@ OVER = [
      "one factor pair, SRC_ALPHA, for all four channels (alpha a² + (1 − a)·b)",
      lambda s, d: _colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
 ]  # fmt: skip
+
+
+def _porter_duff(src, dst):
+    """(colour (3,), alpha) of straight src over straight dst (Porter and Duff)."""
+    a = src[3] + dst[3] * (1 - src[3])
+    weighted = src[:3] * src[3] + dst[:3] * dst[3] * (1 - src[3])
+    return np.divide(weighted, a, out=np.zeros(3), where=a > 0), a
+
+
+def _straight_rule(src, dst):
+    """The straight-alpha rule copied onto premultiplied colours: alpha counted twice."""
+    colour, a = _porter_duff(np.asarray(src, float), np.asarray(dst, float))
+    return np.r_[colour, a]
+
+
+def _returned_straight(src, dst):
+    """The right premultiplied blend, then divided by its alpha: a straight colour."""
+    src, dst = np.asarray(src, float), np.asarray(dst, float)
+    out = src + dst * (1 - src[3])
+    return np.r_[np.divide(out[:3], out[3], out=np.zeros(3), where=out[3] > 0), out[3]]
+
+
+def _destination_again(src, dst):
+    src, dst = np.asarray(src, float), np.asarray(dst, float)
+    return np.r_[src[:3] + dst[:3] * dst[3] * (1 - src[3]), src[3] + dst[3] * (1 - src[3])]
+
+
 PREMULTIPLIED = [
     ("destination not scaled", "the destination was not scaled by (1 − α)",
      lambda s, d: _scaled(s, d, 1, 1)),
+    # Exercise 9.3 gives the straight rule and asks for the premultiplied one: the mistakes of
+    # that derivation (issue 30: "straight alpha where premultiplied is expected").
+    ("straight rule on premultiplied", "you applied the straight-alpha rule to premultiplied "
+     "colours: their red, green and blue already carry their alpha, so weighting them by α "
+     "again and dividing by the result's alpha counts alpha twice; multiply the straight rule "
+     "through by the result's alpha instead", _straight_rule),
+    ("returned straight", "you returned a straight colour (divided by the result's alpha): "
+     "the buffer holds premultiplied colours, so the result stays multiplied by its alpha",
+     _returned_straight),
+    ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
+     "but it is premultiplied already: it is weighted by (1 − α) of the source alone",
+     _destination_again),
     ("premultiplied twice", "you multiplied the source by its alpha again, but it is "
      "premultiplied already (that darkens the edges: the dark fringe); a premultiplied source "
-     "is added as it is: src + dst·(1 − α)", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
+     "already carries its alpha", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("premultiplied twice", "you multiplied the source colour by its alpha again, but it is "
-     "premultiplied already (the dark fringe): src + dst·(1 − α)",
+     "premultiplied already (the dark fringe): it already carries its alpha",
      lambda s, d: _colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
 ]  # fmt: skip
 

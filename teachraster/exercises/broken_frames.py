@@ -4,15 +4,19 @@ tinyrenderer's "visual troubleshooting", as graded exercises: each frame below w
 with one mistake a graphics programmer makes (a reversed depth mapping, culling the wrong
 winding, surfaces too close for the depth buffer, straight colours blended as premultiplied,
 transparent geometry drawn before what lies behind it, a triangle thinner than a pixel
-drawn without antialiasing). The student sees the frame beside the intended one, inspects pixel histories
-(``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
-:data:`CAUSES` and a pixel whose history shows it. Two frames look alike (the cube showing
-its hidden faces) and only their histories tell them apart.
+drawn with one sample). The student sees the frame beside the intended one, inspects pixel
+histories (``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
+:data:`CAUSES`, a pixel whose history shows it and the stage (:data:`STAGES`) where that
+history first parts from the intended frame's.
 
-A wrong cause gets a hint drawn from the frame's own record (what the history at the chosen
-pixel, or the trace, shows that the cause cannot explain), never the answer; a pixel the
-mistake did not change, or whose history does not bear the cause's signature
-(:data:`SIGNATURES`), is refused.
+The picture cannot name the cause: the frames come in look-alike pairs (1-2, 3-4, 5-6) with
+the same symptom, the same picture and the same intended picture pixel for pixel, and every
+frame is rendered with exactly its intended frame's settings (the mistake is in what is
+drawn), so neither the picture nor the frame's attributes tell a pair apart; the histories
+do. The check judges the evidence first (:func:`parts_at`, from the renderer's records) and
+the cause only beside evidence that holds: a wrong cause then gets a hint drawn from the
+frame's own record, never the answer; a cause beside evidence that does not hold is not
+judged at all, so cycling through the causes earns nothing.
 """
 
 from __future__ import annotations
@@ -106,8 +110,9 @@ SIGNATURES = {
     "depth function": (_tested, "two or more fragments met the depth test there"),
     "culled winding": (lambda f, h: any(r.outcome == "culled" for r in h.records),
                        "a triangle there was culled"),
-    "z-fighting": (lambda f, h: any(r.outcome == "failed_depth" and r.depth == r.depth_before
-                                    for r in h.records), "a fragment failed on a tie"),
+    "z-fighting": (lambda f, h: any(r.outcome in ("failed_depth", "hi_z")
+                                    and r.depth == r.depth_before for r in h.records),
+                   "a fragment failed on a tie"),
     "missing premultiplication": (lambda f, h: any(r.outcome == "passed" for r in h.records),
                                   "a fragment was blended there"),
     "blend order": (_nearer_first, "two blended fragments arrived nearer first"),
@@ -127,87 +132,85 @@ def window_triangles(xy, z) -> np.ndarray:
     return np.stack([x, y, 2 * z - 1, np.ones_like(x)], axis=-1)
 
 
-def _rgba(colours, alpha=1.0) -> np.ndarray:
-    """Per-triangle colours (n, 3) as per-vertex RGBA (n, 3, 4)."""
-    c = np.asarray(colours, float)
-    return np.repeat(np.concatenate([c, np.full((len(c), 1), alpha)], axis=1)[:, None], 3, 1)
-
-
 def _quad(x0, y0, x1, y1):
     return [[[x0, y0], [x1, y0], [x1, y1]], [[x0, y0], [x1, y1], [x0, y1]]]
 
 
-def _cube(**kwargs) -> Frame:
+def _cube(winding_reversed: bool = False, **kwargs) -> Frame:
     scene = get_scene("cube")
     clip = scene.clip(W / H)
     clip = clip * np.array([1.6, 1.6, 1, 1])  # zoomed in: a narrower field of view
     if kwargs.pop("reverse_depth", False):
         clip = clip * np.array([1, 1, -1, 1])  # z/w negated: window depth 1 - d
     rgba = np.concatenate([scene.mesh.corner("color"), np.ones((len(clip), 3, 1))], axis=2)
+    if winding_reversed:  # the mesh's corners listed the other way round (data, not a setting)
+        clip, rgba = clip[:, ::-1], rgba[:, ::-1]
     return render(clip, W, H, attrs=rgba, trace=True, clear_color=(1, 1, 1, 1), **kwargs)
 
 
-def _decal(depth_format: str) -> Frame:
-    wall = _quad(2, 2, 46, 34)
-    sticker = _quad(12, 8, 36, 28)
-    tilt = lambda xy: 0.4 + 0.2 * np.asarray(xy)[..., 0] / W  # noqa: E731 - a sloped plane
-    z = np.concatenate([tilt(wall), tilt(sticker) - 2e-6])
-    clip = window_triangles(np.concatenate([wall, sticker]), z)
-    rgba = _rgba([[0.55, 0.55, 0.6]] * 2 + [[0.95, 0.6, 0.1]] * 2)
-    return render(clip, W, H, attrs=rgba, depth_format=depth_format, trace=True,
-                  clear_color=(1, 1, 1, 1))  # fmt: skip
+#: Frames 3 to 6 share one wall and one set of render settings (premultiplied blending,
+#: a 16-bit depth buffer, one sample): each mistake is in what is drawn, never in a setting
+#: a student could read off the frame and compare with the intended one's.
+_WALL = [[0.62, 0.56, 0.48]]
+_ALPHA = 0.5  # the dark pane's
+_STRIP = (np.array([0.2, 0.45, 0.85]), 0.6)  # the tinted strip's straight colour and alpha
+_WEDGE = [
+    [[8, 13.5], [56, 25.5], [56, 27.5]],  # the strip as meant: 2 px tall throughout
+    [[8, 13.5], [56, 27.5], [8, 15.5]],
+]
+# Along y = 20.5 + (x - 32) / 4 every pixel centre lies 0.125 px or more above or below the
+# line, so a strip at most 0.1 px thick above it covers none, though its box reaches many.
+_NEEDLE = [[[8, 14.5], [56, 26.5], [56, 26.6]]]
 
 
-def _glass(premultiply: bool) -> Frame:
-    xy = [[[4, 4], [34, 6], [10, 32]], [[16, 10], [44, 12], [30, 34]]]
-    colours, alpha = np.array([[0.9, 0.3, 0.1], [0.2, 0.4, 0.9]]), 0.45
-    rgba = _rgba(colours * (alpha if premultiply else 1.0), alpha)
-    clip = window_triangles(xy, [[0.6] * 3, [0.4] * 3])  # drawn farthest first
-    return render(clip, W, H, attrs=rgba, blend="premultiplied", depth_write=False,
-                  clear_color=(0.15, 0.15, 0.2, 1), trace=True)  # fmt: skip
-
-
-def _wall_and_glass(glass_first: bool) -> Frame:
-    """An opaque wall and a pane of glass in front of it, the glass drawn as lesson 11 §6
-    teaches, with depth writes off (so only the order decides): drawn first, the wall that
-    comes after it passes (the buffer holds no depth of the glass) and covers it."""
-    wall, glass = _quad(4, 4, 44, 32), [[[10, 2], [40, 10], [20, 34]]]
-    parts = [(glass, 0.3, [0.2, 0.5, 0.9], 0.4), (wall, 0.7, [0.55, 0.5, 0.45], 1.0)]
-    if not glass_first:
-        parts.reverse()
+def _pixels(parts) -> Frame:
+    """Render ``parts`` [(triangles in pixels, depth, premultiplied RGBA)] in order over the
+    wall's settings; a part with alpha < 1 (glass) writes no depth (lesson 11 §6)."""
     xy = [t for tris, *_ in parts for t in tris]
-    z = [[d] * 3 for tris, d, *_ in parts for _ in tris]
-    rgba = np.concatenate([_rgba([c] * len(tris), a) for tris, _, c, a in parts])
-    writes = np.concatenate([np.full(len(tris), a == 1.0) for tris, _, _, a in parts])
-    return render(window_triangles(xy, z), W, H, attrs=rgba, blend="over", trace=True,
-                  depth_write=writes, clear_color=(1, 1, 1, 1))  # fmt: skip
+    z = [[d] * 3 for tris, d, _ in parts for _ in tris]
+    rgba = np.concatenate([np.repeat(np.asarray([c], float)[:, None], 3 * len(tris), 0)
+                           .reshape(len(tris), 3, 4) for tris, _, c in parts])  # fmt: skip
+    writes = np.concatenate([np.full(len(tris), c[3] == 1.0) for tris, _, c in parts])
+    clip = window_triangles(np.asarray(xy, float) * (48 / W), z)
+    return render(clip, W, H, attrs=rgba, blend="premultiplied", depth_format="unorm16",
+                  depth_write=writes, trace=True, clear_color=(1, 1, 1, 1))  # fmt: skip
 
 
-def _wire(samples: int) -> Frame:
-    """A post and a wire. The post's edges lie on pixel boundaries (design units of 3 are 4
-    px), so more samples change only the pixels the wire touches: the two frames differ by
-    the cause alone."""
-    post = _quad(3, 6, 9, 33)
-    wire = [[[8.5, 9.2], [44.2, 23.7], [44.2, 24.0]]]
-    clip = window_triangles(post + wire, [[0.5] * 3] * 3)
-    rgba = _rgba([[0.45, 0.35, 0.25]] * 2 + [[0.1, 0.1, 0.1]])
-    return render(clip, W, H, attrs=rgba, samples=samples, trace=True, clear_color=(1, 1, 1, 1))
+def _wall():
+    return (_quad(4, 4, 60, 44), 0.6, [*_WALL[0], 1.0])
 
 
-#: Each frame's symptom as a user would report it: what is seen, never the mechanism.
+def _pane(depth: float, premultiplied: bool = True):
+    """A dark pane whose straight colour is the wall's darkened by its alpha: blended as
+    premultiplied without being multiplied, it adds exactly what it should have hidden."""
+    straight = _ALPHA * np.asarray(_WALL[0])
+    colour = straight * _ALPHA if premultiplied else straight
+    return (_quad(20, 12, 44, 36), depth, [*colour, _ALPHA])
+
+
+def _strip(triangles):
+    colour, alpha = _STRIP
+    return (triangles, 0.3, [*(colour * alpha), alpha])
+
+
+#: Each frame's symptom as a user would report it: what is seen, never the mechanism. The
+#: frames come in look-alike pairs (1-2, 3-4, 5-6): the same symptom, the same picture and
+#: the same intended picture, pixel for pixel; only the histories tell them apart (3 to 6
+#: even share the broken picture: a plain wall).
 _SPECS = [
-    ("The cube of lesson 05a does not look as intended.", "depth function",
+    ("The cube does not look as intended.", "depth function",
      lambda: _cube(reverse_depth=True), _cube),
-    ("The cube does not look as intended here either.", "culled winding",
-     lambda: _cube(cull="front"), lambda: _cube(cull="back")),
-    ("The orange sticker on the wall does not look as intended.", "z-fighting",
-     lambda: _decal("unorm16"), lambda: _decal("float64")),
-    ("The two panes of coloured glass do not have the intended colours.",
-     "missing premultiplication", lambda: _glass(False), lambda: _glass(True)),
-    ("The blue pane does not look as intended.", "blend order",
-     lambda: _wall_and_glass(True), lambda: _wall_and_glass(False)),
-    ("The wire from the post does not look as intended.", "sliver", lambda: _wire(1),
-     lambda: _wire(16)),
+    ("The cube does not look as intended.", "culled winding",
+     lambda: _cube(winding_reversed=True, cull="back"), lambda: _cube(cull="back")),
+    ("The dark pane on the wall is missing.", "z-fighting",
+     lambda: _pixels([_wall(), _pane(0.6 - 1e-6)]), lambda: _pixels([_wall(), _pane(0.599)])),
+    ("The dark pane on the wall is missing.", "missing premultiplication",
+     lambda: _pixels([_wall(), _pane(0.4, premultiplied=False)]),
+     lambda: _pixels([_wall(), _pane(0.4)])),
+    ("The tinted strip across the wall is missing.", "blend order",
+     lambda: _pixels([_strip(_WEDGE), _wall()]), lambda: _pixels([_wall(), _strip(_WEDGE)])),
+    ("The tinted strip across the wall is missing.", "sliver",
+     lambda: _pixels([_wall(), _strip(_NEEDLE)]), lambda: _pixels([_wall(), _strip(_WEDGE)])),
 ]  # fmt: skip
 _CAUSE_OF = {k + 1: cause for k, (_, cause, *_) in enumerate(_SPECS)}
 
@@ -228,28 +231,79 @@ def broken_frame(number: int) -> BrokenFrame:
     return frames[number - 1]
 
 
+# -- the evidence -----------------------------------------------------------------------------
+#: The stages of a pixel's history, in the pipeline's order: where a culled triangle, a centre
+#: not covered, a depth test (or Hi-Z) and the colour buffer's writes show in its records.
+STAGES = ("culling", "coverage", "depth test", "blending")
+
+
+def _key(frame: Frame, piece: int) -> frozenset:
+    """A triangle as the picture knows it: its corners on screen (x, y), in any order (so the
+    same triangle matches across the two frames, drawn in another order or winding)."""
+    xy = np.round(frame.trace.window[piece, :, :2], 6)
+    return frozenset(map(tuple, xy.tolist()))
+
+
+def _stages(frame: Frame, row: int, col: int) -> tuple:
+    """What each stage of pixel (row, col)'s history did, comparable across two frames."""
+    records = frame.history(row, col).records
+    keyed = [(_key(frame, r.piece), r) for r in records]
+    culled = frozenset(k for k, r in keyed if r.outcome == "culled")
+    covered = frozenset(k for k, r in keyed if r.outcome not in ("culled", "not_covered"))
+    tested = frozenset((k, r.outcome == "passed") for k, r in keyed
+                       if r.outcome in ("hi_z", "failed_depth", "passed"))  # fmt: skip
+    blended = tuple((k, tuple(np.round(r.color, 6).tolist())) for k, r in keyed
+                    if r.outcome == "passed")  # fmt: skip
+    return culled, covered, tested, blended
+
+
+def parts_at(number: int, row: int, col: int) -> str | None:
+    """The first stage (:data:`STAGES`) at which pixel (row, col)'s history in frame
+    ``number`` parts from its history in the intended frame (None: they agree throughout)."""
+    b = broken_frame(number)
+    mine, meant = _stages(b.frame, row, col), _stages(b.intended, row, col)
+    return next((s for s, x, y in zip(STAGES, mine, meant) if x != y), None)
+
+
+def _evidence(number: int, row: int, col: int, stage: str) -> bool:
+    """Does (row, col, stage) hold: a pixel the mistake changed, whose history shows it and
+    parts from the intended one at ``stage``, as the renderer's own records say?"""
+    return _shows(number, row, col) and parts_at(number, row, col) == stage
+
+
 # -- the answer -------------------------------------------------------------------------------
-def as_diagnosis(value) -> tuple[str, tuple[int, int]]:
-    """(cause, (row, col)) from the student's answer, read strictly."""
-    if isinstance(value, str) and " ".join(value.lower().replace("_", " ").split()) in CAUSES:
-        # the cause without its pixel (r6: told to drop the quotes of a cause that is text)
-        raise WrongAnswerType(f"returned only the cause {value!r}: return (cause, (row, col)), "
-                              "the cause and a pixel whose history shows it")  # fmt: skip
-    refuse_non_answers(value, "a pair (cause, (row, col))")
+def _words(value) -> str:
+    return " ".join(value.lower().replace("_", " ").replace("-", " ").split())
+
+
+_CAUSE_KEYS = {_words(c): c for c in CAUSES}
+_SHAPE = '(cause, (row, col), stage), such as ("depth test off", (12, 30), "depth test")'
+
+
+def as_diagnosis(value) -> tuple[str, tuple[int, int], str]:
+    """(cause, (row, col), stage) from the student's answer, read strictly."""
+    if isinstance(value, str) and _words(value) in _CAUSE_KEYS:
+        # the cause without its evidence (r6: told to drop the quotes of a cause that is text)
+        raise WrongAnswerType(f"returned only the cause {value!r}: return {_SHAPE}, the "
+                              "cause with its evidence")  # fmt: skip
+    refuse_non_answers(value, "a triple (cause, (row, col), stage)")
+    if isinstance(value, tuple | list) and len(value) == 2:
+        raise WrongAnswerType(f"returned {short(value)} without the stage: return {_SHAPE}, "
+                              f"the stage one of {list(STAGES)}")  # fmt: skip
     try:
-        cause, pixel = value
+        cause, pixel, stage = value
         row, col = pixel
     except (TypeError, ValueError):
-        raise WrongAnswerType(
-            f'returned {short(value)}: return a pair such as ("depth test off", (12, 30))'
-        ) from None
+        raise WrongAnswerType(f"returned {short(value)}: return {_SHAPE}") from None
     if not isinstance(cause, str):
         raise WrongAnswerType(f"returned the cause {short(cause)}, not a text: one of "
                               f"{list(CAUSES)}")  # fmt: skip
-    key = " ".join(cause.lower().replace("_", " ").split())
-    if key not in CAUSES:
+    if _words(cause) not in _CAUSE_KEYS:
         raise WrongAnswerType(f"returned the cause {cause!r}, which is not one of the causes "
                               f"(spell it as listed): {', '.join(CAUSES)}")  # fmt: skip
+    if not isinstance(stage, str) or _words(stage) not in STAGES:
+        raise WrongAnswerType(f"returned the stage {short(stage)}, which is not one of the "
+                              f"stages (spell it as listed): {', '.join(STAGES)}")  # fmt: skip
     try:
         row, col = int(row), int(col)
     except (TypeError, ValueError):
@@ -258,20 +312,25 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int]]:
     if not (0 <= row < H and 0 <= col < W):
         raise WrongAnswerType(f"returned pixel ({row}, {col}), outside the {H} × {W} frame "
                               f"(rows 0–{H - 1}, columns 0–{W - 1})")  # fmt: skip
-    return key, (row, col)
+    return _CAUSE_KEYS[_words(cause)], (row, col), _words(stage)
 
 
 def _cases(number: int):
-    return lambda: [("the cause", (), ("cause", number)),
-                    ("a pixel whose history shows it", (), ("pixel", number))]  # fmt: skip
+    return lambda: [("the evidence: a changed pixel and the stage where its history parts from "
+                     "the intended one", (), ("evidence", number)),
+                    ("the cause", (), ("cause", number))]  # fmt: skip
+
+
+def _holds(number: int, got) -> bool:
+    _, (row, col), stage = got
+    return _evidence(number, row, col, stage)
 
 
 def _same(got, expected, args=None) -> bool:
     part, number = expected
-    cause, (row, col) = got
-    if part == "cause":
-        return cause == _answer(number)
-    return _shows(number, row, col)
+    # The cause is judged only beside evidence that holds: cycling through the causes with
+    # made-up evidence never passes, and a refutation is drawn from a record the student read.
+    return _holds(number, got) and (part == "evidence" or got[0] == _answer(number))
 
 
 def _changed(number: int, row: int, col: int) -> bool:
@@ -282,11 +341,11 @@ def _changed(number: int, row: int, col: int) -> bool:
 
 def _explain(args, expected, got) -> str:
     part, _ = expected
-    cause, (row, col) = got
-    if part == "pixel":
-        if not _changed(expected[1], row, col):
-            return f"pixel ({row}, {col}) is the same in this frame as in the intended one"
-        return f"pixel ({row}, {col}) changed, but its history does not show what went wrong"
+    cause, (row, col), stage = got
+    if part == "evidence":
+        return f"you say pixel ({row}, {col})'s history parts from the intended one at {stage!r}"
+    if not _holds(expected[1], got):  # not judged: never "does not fit", which would refute it
+        return f"you name {cause!r}"
     return f"{cause!r} does not fit"
 
 
@@ -295,47 +354,52 @@ def _rule(args, expected, got) -> str:
 
 
 def _cause_words(args, expected, got) -> str:
-    cause, (row, col) = got
-    return hint(cause, broken_frame(expected[1]).frame, row, col)
+    cause, (row, col), _ = got
+    return hint(cause, expected[1], row, col)
 
 
-#: A wrong answer is either part: the cause (a hint from the frame's record follows) or the
-#: pixel (one the mistake did not change).
+def _stage_words(number: int, row: int, col: int, stage: str) -> str:
+    """Why the stage does not hold at a pixel that shows the mistake: true, and the same words
+    for a stage before or after the right one (no direction to home in on by trying)."""
+    return (f"the two histories of pixel ({row}, {col}) do not first part at {stage!r}: read "
+            "them side by side from the first record (frame.history and intended.history)")  # fmt: skip
+
+
+def _unjudged(args, expected, got) -> str:
+    return ("the cause is judged only beside evidence that holds (see the evidence case): "
+            "read the pixel's history first")  # fmt: skip
+
+
+#: A wrong answer's parts: the evidence (the pixel, then the stage) and, once it holds, the
+#: cause (a hint from the frame's own record). A cause beside evidence that does not hold is
+#: not judged at all, so no number of tries finds it without reading a history.
 DIAGNOSIS_MISTAKES = (
+    Mistake("cause not judged", _unjudged,
+            fits=lambda a, e, g: e[0] == "cause" and not _holds(e[1], g)),
     Mistake("cause", _cause_words, fits=lambda a, e, g: e[0] == "cause"),
     Mistake("pixel (col, row)", "a pixel is (row, col), the row first, and (col, row) = "
             "(x, y) is one the mistake changed: did you give (x, y)?", fits=lambda a, e, g:
-            e[0] == "pixel" and _shows(e[1], g[1][1], g[1][0])),
+            e[0] == "evidence" and not _shows(e[1], *g[1]) and _shows(e[1], *g[1][::-1])),
+    Mistake("stage", lambda a, e, g: _stage_words(e[1], *g[1], g[2]), fits=lambda a, e, g:
+            e[0] == "evidence" and _shows(e[1], *g[1])),
     Mistake("pixel", lambda a, e, g: _pixel_words(e[1], *g[1]), fits=lambda a, e, g:
-            e[0] == "pixel"),
+            e[0] == "evidence"),
 )  # fmt: skip
 
 
 def _pixel_words(number: int, row: int, col: int) -> str:
-    if _on_wide(number, row, col):
-        return "it lies on the post, which is wider than a pixel: choose a pixel along the wire"
     if _changed(number, row, col):
-        return ("compare its history with the intended frame's history of the same pixel, or "
-                "choose another changed pixel whose history shows the mistake")  # fmt: skip
-    return "choose a pixel the mistake changed (compare the two pictures), then read its history"
+        return (f"pixel ({row}, {col}) changed, but its history does not show what went wrong: "
+                "compare it with the intended frame's history of the same pixel, or choose "
+                "another changed pixel")  # fmt: skip
+    return (f"pixel ({row}, {col}) is the same in this frame as in the intended one: choose a "
+            "pixel the mistake changed (compare the two pictures), then read its history")  # fmt: skip
 
 
-def _on_wide(number: int, row: int, col: int) -> bool:
-    """Frame 6 only: is the pixel's centre covered by a triangle other than the thinnest (the
-    post), and not crossed by the thin one (the wire)?"""
-    if _answer(number) != "sliver":
-        return False
+def hint(cause: str, number: int, row: int, col: int) -> str:
+    """What frame ``number``'s record shows against ``cause`` (true of this frame; never names
+    the right cause)."""
     frame = broken_frame(number).frame
-    k = int(np.argmin(_altitudes(frame)))
-    records = frame.history(row, col).records
-    return not any(r.triangle == k for r in records) and any(
-        r.outcome != "not_covered" for r in records
-    )
-
-
-def hint(cause: str, frame: Frame, row: int, col: int) -> str:
-    """What the frame's record shows against ``cause`` (true of this frame; never names the
-    right cause)."""
     h = frame.history(row, col)
     trace, debug = frame.trace, frame.trace.debug
     failed = [r for r in h.records if r.outcome in ("failed_depth", "hi_z")]
@@ -359,6 +423,8 @@ def hint(cause: str, frame: Frame, row: int, col: int) -> str:
                     "(src·α + dst·(1−α)): nothing premultiplied is blended as straight, or "
                     "the reverse")  # fmt: skip
         return f"this frame blends with {blend.mode!r}, whose factors expect straight colours"
+    if cause == "missing premultiplication":
+        return _premultiplied_hint(number, row, col)
     if cause == "blend order":
         return _order_hint(h, blend)
     if cause == "z-fighting":
@@ -368,6 +434,20 @@ def hint(cause: str, frame: Frame, row: int, col: int) -> str:
     if cause == "sliver":
         return f"every triangle of this frame is at least {num(_thinnest(frame))} px across"
     return f"it does not explain what pixel ({row}, {col})'s history shows: {h.outcomes}"
+
+
+def _premultiplied_hint(number: int, row: int, col: int) -> str:
+    """Premultiplied blending with the colours as meant: every fragment that reached the
+    buffer brings the colour it brings in the intended frame (the same triangle, by its
+    corners), so none of them was left unmultiplied."""
+    b = broken_frame(number)
+    meant = {k: c for k, c in _stages(b.intended, row, col)[3]}
+    mine = _stages(b.frame, row, col)[3]
+    if all(meant.get(k, c) == c for k, c in mine):
+        return (f"every fragment that reaches the colour buffer at pixel ({row}, {col}) brings "
+                "the colour it brings in the intended frame (compare the two histories' "
+                "'fragment' colours): none was left unmultiplied")  # fmt: skip
+    return f"the fragments at pixel ({row}, {col}) blend with the colours their history shows"
 
 
 def _order_hint(h, blend) -> str:
@@ -434,7 +514,7 @@ def _draw(ax, case, got):
                ax.imshow(_rgb(b.intended), extent=(W + gap, 2 * W + gap, H, 0),
                          interpolation="nearest")]  # fmt: skip
     if got is not None and isinstance(got[0], str) and got[0] in CAUSES:  # an answer
-        _, (row, col) = got
+        _, (row, col), _ = got
         artists += ax.plot([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row],
                            color="#D55E00", lw=2)  # fmt: skip
     ax.set_xlim(0, 2 * W + gap)
@@ -447,7 +527,7 @@ def _draw(ax, case, got):
 
 
 def frame_exercise(number: int) -> Exercise:
-    """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col))."""
+    """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), stage)."""
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
         DIAGNOSIS_MISTAKES, draw=_draw,

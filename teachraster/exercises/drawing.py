@@ -48,7 +48,9 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     if pixel is not None:
         i, j = pixel
         artists += ax.plot(x0 + j + 0.5, y0 + i + 0.5, "o", mfc="none", mec="black", ms=9)
-    handles = [Patch(color=STATE_COLOURS[s], label=STATE_NAMES[s]) for s in (1, 2, 3)]
+    # only the states drawn (r6: "missing" listed where no pixel was missing); covered always
+    shown = [s for s in (1, 2, 3) if s == 1 or (state == s).any()]
+    handles = [Patch(color=STATE_COLOURS[s], label=STATE_NAMES[s]) for s in shown]
     if got is None:
         handles = [Patch(color=STATE_COLOURS[1], label="covered by the rule")]
     # outside the axes, to the right: the legend must never hide a pixel
