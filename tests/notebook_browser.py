@@ -207,6 +207,65 @@ _FINISHED = """n => {
 }"""
 
 
+def _menu(page, menu: str, item: str) -> None:
+    page.click(f".lm-MenuBar-itemLabel:text-is('{menu}')", timeout=MENU_MS)
+    page.click(f".lm-Menu-itemLabel:text-is('{item}')", timeout=MENU_MS)
+
+
+#: How long a menu or dialog of an open JupyterLab may take to answer before the page is
+#: loaded again instead (a loaded machine: the page's own work is queued behind the kernel's).
+MENU_MS = 15_000
+
+
+def _close_all_tabs(page, base: str) -> bool:
+    """Close every tab of the JupyterLab page (discarding changes), if the page is one of
+    this server's; True when it was and no notebook is left open in it."""
+    from playwright.sync_api import Error
+
+    if not page.url.startswith(f"{base}/lab"):
+        return False
+    try:
+        _menu(page, "File", "Close All Tabs")
+        dialogs = page.locator(".jp-Dialog")
+        for _ in range(8):  # one "Save changes?" per changed notebook
+            dialogs.first.wait_for(timeout=1_000)
+            dialogs.first.locator("button", has_text="Discard").click(timeout=MENU_MS)
+    except Error:
+        pass  # no more dialogs (or a menu did not answer: checked below)
+    try:
+        page.wait_for_function(
+            "() => !document.querySelector('.jp-Notebook, .jp-Dialog')", timeout=MENU_MS
+        )
+    except Error:
+        return False
+    return True
+
+
+def _open_notebook(page, base: str, name: str, in_app: bool) -> None:
+    """Open notebook ``name`` (a path under the server's root) alone in the page.
+
+    In the JupyterLab already loaded (``in_app``: its tabs were closed), through its own
+    File menu: loading JupyterLab again costs the browser 3 to 4 s of CPU, for each of the
+    27 notebooks of a run. Otherwise, or if the menu does not answer, the page is loaded
+    again (?reset: a fresh workspace, so no tab of an earlier notebook is restored beside
+    this one).
+    """
+    from playwright.sync_api import Error
+
+    if in_app:
+        try:
+            _menu(page, "File", "Open from Path…")
+            page.locator(".jp-Dialog input").fill(name, timeout=MENU_MS)
+            page.keyboard.press("Enter")
+            current = ".lm-DockPanel-tabBar .lm-TabBar-tab.lm-mod-current"
+            tab = page.locator(current, has_text=name.rsplit("/", 1)[-1])
+            tab.wait_for(timeout=60_000)
+            return
+        except Error:
+            pass
+    page.goto(f"{base}/lab/tree/{name}?reset")
+
+
 @dataclass(frozen=True)
 class BrowserRun:
     """What the page showed after Run All Cells, and the notebook as JupyterLab saved it."""
@@ -230,11 +289,11 @@ def run_all(name: str, extra_source: str) -> BrowserRun:
     nb.cells.append(nbformat.v4.new_code_cell(extra_source))
     nbformat.write(nb, path)
     running.probe_log.unlink(missing_ok=True)
+    emptied = _close_all_tabs(page, running.base)
     _shut_down_kernels(running.base)
     del running.errors[:]
     start = time.perf_counter()
-    # ?reset: a fresh workspace, so no tab of an earlier notebook is restored beside this one
-    page.goto(f"{running.base}/lab/tree/{name}.ipynb?reset")
+    _open_notebook(page, running.base, f"{name}.ipynb", emptied)
     page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")

@@ -402,9 +402,12 @@ export async function mountStatic(el, data) {
 
 // -- the anywidget side ---------------------------------------------------------------------
 function render({ model, el }) {
+  // set when the view is removed (its notebook closed, its kernel shut down): a retry timer
+  // still pending must not send (the comm throws "Cannot send" into the page)
+  let gone = false;
   const player = mountFrames(el, {
     interval: model.get("interval"),
-    request: (g, gen) => model.send({ type: "group", group: g, gen }),
+    request: (g, gen) => gone || model.send({ type: "group", group: g, gen }),
     onStep: (k) => {
       if (model.get("value") !== k) {
         model.set("value", k);
@@ -441,7 +444,10 @@ function render({ model, el }) {
     }
   });
   fromModel();
-  return () => player.stop();
+  return () => {
+    gone = true;
+    player.stop();
+  };
 }
 
 export default { render };
