@@ -226,13 +226,23 @@ def test_03_predictions_point_and_drift_are_the_packages():
     assert ns.one_rounding == 2.0**-15  # half of float32's step 2^-14 near 1000
     assert any("3e-05" in label for label in ns.drift)
     chosen = [k for k, (lo, hi) in ns.drift.items() if lo < ns.end32 <= hi]
-    assert chosen == ["a few hundredths (10⁻³ to 10⁻¹)"]
+    assert chosen == ["between 10⁻² and 10⁻¹"]
+    # review r7 03-1/2: "over a thousand times" one rounding, printed; the roundings of one
+    # power-of-two range are all one value and add up, far past a random walk's √n
+    assert 1000 < ns.end32 / ns.one_rounding < 2000
+    assert 2 ** ns.binade.max() == 512 and ns.top.sum() == 2000
+    assert len(np.unique(ns.rounded_by[ns.top])) == 1
+    assert abs(ns.rounded_by[ns.top].sum()) > ns.end32  # "more than the whole end error"
+    assert np.isclose(abs(ns.rounded_by.sum()), ns.end32, rtol=1e-3)
+    assert ns.end32 > 10 * ns.walk  # "far nearer"
     assert np.allclose(tr.barycentric(ns.xy, ns.target), ns.weights)
     cells = json.loads((NOTEBOOKS / "03_barycentric_and_plane_equations.ipynb").read_text())
     text = ["".join(c["source"]) for c in cells["cells"]]
     ask = next(i for i, t in enumerate(text) if "PredictPoint(" in t)
     formula = next(i for i, t in enumerate(text) if "\\lambda_1 \\mathbf{v}_1 +" in t)
     assert ask < formula
+    drift_ask = next(i for i, t in enumerate(text) if "q_drift = Predict(" in t)
+    assert not any("add up" in t for t in text[:drift_ask])  # nothing above answers it
 
 
 @pytest.mark.notebook
