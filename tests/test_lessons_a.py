@@ -418,6 +418,14 @@ def test_04_heatmap_edges_and_the_readable_floor():
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
     assert near_far < 0.1 * np.nanmax(ns.texels)  # "zero along the near and the far edge"
+    # review r7 04-2: the original floor's checks are larger in the world, not "finer"
+    assert ns.far_checks == 16 and ns.far_side / ns.far_checks == 2.5
+    assert ns.size / ns.near_checks == 1.0 < ns.far_side / ns.far_checks
+    text = "\n".join(_cells("04_perspective_correct_interpolation", "markdown"))
+    assert "finer checks" not in text and "*larger* in the world" in text
+    # review r7 04-3: CS148 numbers the vertices from 0, the lesson from 1
+    assert "their $z_0$ is the depth of\nour $\\mathbf{v}_1$, our $w_1$" in text
+    assert "lesson 05a, section 4" in text  # w <= 0: clipping comes first (review r5-r7)
 
 
 @pytest.mark.notebook
@@ -694,6 +702,12 @@ def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_lis
     said = [t for c, t in zip(cells, text[:ask]) if c["cell_type"] == "markdown"]
     assert not any(re.search(r"\b(red|green|blue) over|\bcycle\b|no order", t)
                    for t in said)  # review a1, 05a  # fmt: skip
+    # review r7 05a-1: nothing before the question names the scene or the verdict; the cells
+    # that do (the scene's name in their code) are folded until it is answered
+    for c, t in zip(cells[2:ask], text[2:ask]):  # after the set-up
+        shown = not c["metadata"].get("jupyter", {}).get("source_hidden", False)
+        assert not (shown and "cyclic" in t) and "fails" not in t.split("\n")[0], t[:60]
+        assert shown or c["cell_type"] == "code"
     table = next(t for t in text if "| teachraster |" in t)
     row = next(line for line in table.splitlines() if line.startswith("| teachraster |"))
     assert "$w > 0$ (the eye plane)" in row and "guard band" in row
@@ -719,6 +733,11 @@ def test_05a_early_z_splits_test_from_write_and_names_prepass_and_write_mask():
     for needed in ("early *test* is still safe", "depth_greater", "SV_DepthGreaterEqual",
                    "depth pre-pass", "glDepthMask(GL_FALSE)", "D3D11_DEPTH_WRITE_MASK_ZERO"):  # fmt: skip
         assert needed in text, needed
+    # review r7 05a-2/8: the summary keeps the side-effect rule; sections named as in GL 4.6
+    summary = next(t for t in _cells("05a_zbuffer", "markdown") if t.startswith("## Summary"))
+    assert "other side effects" in summary and "early_fragment_tests" in summary
+    assert "§17.3.4 *Depth Buffer\nTest*" in text
+    assert "§14.9.4 *The Early Fragment Test Qualifier*" in text
 
 
 def test_notes_are_cited_where_they_say_it():
