@@ -320,4 +320,3 @@ def _readable(axes, profile) -> None:
         if legend is not None:
             for text in legend.get_texts():
                 text.set_fontsize(size)
-
