@@ -181,7 +181,7 @@ def test_plane_explorer_draws_the_positions_of_the_slider_moved_or_pressed_last(
     assert ahead.which == 0 and sliders[0].link == f"{page.key}/0"
     sliders[7]._on_page_message(sliders[7], {"type": "touch"}, [])  # f2 pressed
     assert ahead.which == 7 and sent[-1][0]["slider"] == 7
-    assert len(ahead.todo) == len(slider_positions(sliders[7])) == 13
+    assert len(ahead.todo) == len(slider_positions(sliders[7])) == 31
     while ahead.step(seconds=0.05):
         pass
     pictures = _pictures([m for m in sent if m[0].get("generation") != 1], page._ref)

@@ -48,6 +48,15 @@ def test_plane_explorer_reads_positions_as_lesson_03_does(explorer):
     assert explorer.image.colorbar.ax.get_ylabel() == "f, the attribute"
 
 
+def test_plane_explorer_starts_every_slider_on_one_of_its_positions(explorer):
+    """Review r7 03-3: with f in steps of 0.25, lesson 03's f = 0.2 and 0.9 sat between two
+    positions (the thumb at 0.25, the readout 0.20) and could never be set again."""
+    from teachraster.widgets.ahead import slider_positions
+
+    for s in [*explorer.x, *explorer.y, *explorer.f]:
+        assert np.isclose(slider_positions(s), s.value, atol=1e-9).any(), (s.description, s.value)
+
+
 def test_plane_system_zero_area_has_no_plane():
     s = plane_system([[0, 0], [1, 1], [2, 2]], [0, 1, 2])
     assert s["area2"] == 0 and "g" not in s and "M" not in s

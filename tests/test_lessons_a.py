@@ -226,13 +226,23 @@ def test_03_predictions_point_and_drift_are_the_packages():
     assert ns.one_rounding == 2.0**-15  # half of float32's step 2^-14 near 1000
     assert any("3e-05" in label for label in ns.drift)
     chosen = [k for k, (lo, hi) in ns.drift.items() if lo < ns.end32 <= hi]
-    assert chosen == ["a few hundredths (10⁻³ to 10⁻¹)"]
+    assert chosen == ["between 10⁻² and 10⁻¹"]
+    # review r7 03-1/2: "over a thousand times" one rounding, printed; the roundings of one
+    # power-of-two range are all one value and add up, far past a random walk's √n
+    assert 1000 < ns.end32 / ns.one_rounding < 2000
+    assert 2 ** ns.binade.max() == 512 and ns.top.sum() == 2000
+    assert len(np.unique(ns.rounded_by[ns.top])) == 1
+    assert abs(ns.rounded_by[ns.top].sum()) > ns.end32  # "more than the whole end error"
+    assert np.isclose(abs(ns.rounded_by.sum()), ns.end32, rtol=1e-3)
+    assert ns.end32 > 10 * ns.walk  # "far nearer"
     assert np.allclose(tr.barycentric(ns.xy, ns.target), ns.weights)
     cells = json.loads((NOTEBOOKS / "03_barycentric_and_plane_equations.ipynb").read_text())
     text = ["".join(c["source"]) for c in cells["cells"]]
     ask = next(i for i, t in enumerate(text) if "PredictPoint(" in t)
     formula = next(i for i, t in enumerate(text) if "\\lambda_1 \\mathbf{v}_1 +" in t)
     assert ask < formula
+    drift_ask = next(i for i, t in enumerate(text) if "q_drift = Predict(" in t)
+    assert not any("add up" in t for t in text[:drift_ask])  # nothing above answers it
 
 
 @pytest.mark.notebook
@@ -408,6 +418,14 @@ def test_04_heatmap_edges_and_the_readable_floor():
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
     assert near_far < 0.1 * np.nanmax(ns.texels)  # "zero along the near and the far edge"
+    # review r7 04-2: the original floor's checks are larger in the world, not "finer"
+    assert ns.far_checks == 16 and ns.far_side / ns.far_checks == 2.5
+    assert ns.size / ns.near_checks == 1.0 < ns.far_side / ns.far_checks
+    text = "\n".join(_cells("04_perspective_correct_interpolation", "markdown"))
+    assert "finer checks" not in text and "*larger* in the world" in text
+    # review r7 04-3: CS148 numbers the vertices from 0, the lesson from 1
+    assert "their $z_0$ is the depth of\nour $\\mathbf{v}_1$, our $w_1$" in text
+    assert "lesson 05a, section 4" in text  # w <= 0: clipping comes first (review r5-r7)
 
 
 @pytest.mark.notebook
@@ -684,6 +702,12 @@ def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_lis
     said = [t for c, t in zip(cells, text[:ask]) if c["cell_type"] == "markdown"]
     assert not any(re.search(r"\b(red|green|blue) over|\bcycle\b|no order", t)
                    for t in said)  # review a1, 05a  # fmt: skip
+    # review r7 05a-1: nothing before the question names the scene or the verdict; the cells
+    # that do (the scene's name in their code) are folded until it is answered
+    for c, t in zip(cells[2:ask], text[2:ask]):  # after the set-up
+        shown = not c["metadata"].get("jupyter", {}).get("source_hidden", False)
+        assert not (shown and "cyclic" in t) and "fails" not in t.split("\n")[0], t[:60]
+        assert shown or c["cell_type"] == "code"
     table = next(t for t in text if "| teachraster |" in t)
     row = next(line for line in table.splitlines() if line.startswith("| teachraster |"))
     assert "$w > 0$ (the eye plane)" in row and "guard band" in row
@@ -709,6 +733,11 @@ def test_05a_early_z_splits_test_from_write_and_names_prepass_and_write_mask():
     for needed in ("early *test* is still safe", "depth_greater", "SV_DepthGreaterEqual",
                    "depth pre-pass", "glDepthMask(GL_FALSE)", "D3D11_DEPTH_WRITE_MASK_ZERO"):  # fmt: skip
         assert needed in text, needed
+    # review r7 05a-2/8: the summary keeps the side-effect rule; sections named as in GL 4.6
+    summary = next(t for t in _cells("05a_zbuffer", "markdown") if t.startswith("## Summary"))
+    assert "other side effects" in summary and "early_fragment_tests" in summary
+    assert "§17.3.4 *Depth Buffer\nTest*" in text
+    assert "§14.9.4 *The Early Fragment Test Qualifier*" in text
 
 
 def test_notes_are_cited_where_they_say_it():

@@ -104,7 +104,7 @@ class ZBufferStepView:
         handles.append(Line2D([], [], color=COLORS["grid"], lw=1.5, ls="--",
                               label="the whole scene, when drawn"))  # fmt: skip
         self.ax_fragments.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02),
-                                 fontsize=fs(0.7), ncols=1, frameon=False)  # fmt: skip
+                                 fontsize=fs(0.8), ncols=1, frameon=False)  # fmt: skip
         final = self.frame.depth[np.isfinite(self.frame.depth)]
         self.depth = self.ax_depth.imshow(np.full((height, width), np.nan), cmap=VALUE_CMAP,
                                           vmin=final.min(), vmax=final.max(), extent=extent,

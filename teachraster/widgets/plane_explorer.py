@@ -205,9 +205,9 @@ class PlaneExplorer:
             self.display.ahead([*self.x, *self.y, *self.f], self)
 
     def _sliders(self, xy, f) -> None:
-        def slider(value, lo, hi, name):
+        def slider(value, lo, hi, name, step=0.25):
             # in the page, coalesced: the kernel renders the latest value, never a queue
-            s = LiveSlider(value=value, min=lo, max=hi, step=0.25, description=name,
+            s = LiveSlider(value=value, min=lo, max=hi, step=step, description=name,
                            layout=fit_width(widgets.Layout(width="260px")))  # fmt: skip
             s.observe(lambda change: self.update(), "value")
             s.on_release(self.update)  # a drag ended on a draft: the full picture
@@ -215,7 +215,9 @@ class PlaneExplorer:
 
         self.x = [slider(xy[k, 0], 0.0, self.width, f"v{k + 1} x") for k in range(3)]
         self.y = [slider(xy[k, 1], 0.0, self.height, f"v{k + 1} y") for k in range(3)]
-        self.f = [slider(f[k], -1.0, 2.0, f"f{k + 1}") for k in range(3)]
+        # f in tenths: lesson 03's values (0.2, 0.9, 0.5) lie on the slider's positions, so
+        # the thumb starts where the readout says and can be brought back there (review r7)
+        self.f = [slider(f[k], -1.0, 2.0, f"f{k + 1}", step=0.1) for k in range(3)]
 
     @property
     def xy(self) -> np.ndarray:

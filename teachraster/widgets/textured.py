@@ -13,6 +13,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView, plot_profile
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
+from ..plotting.common import fs
 from .common import (
     Shown,
     close_tree,
@@ -172,6 +173,9 @@ class TexturedPlaneViewer:
                     value="texture v", guides=[self.view.axes[2]], vlim=(-0.04, 1.04),
                 )  # fmt: skip
             self._show_error()
+            # (not the colour bar's ticks: its label, drawn by the sprite, keeps its place)
+            _readable([*self.view.axes, axes[3]], self.profile)
+            self.view.heatmap.note.set_fontsize(fs(1.0))
             # a new tilt changes the images, the heatmap's title and colour bar: the rest
             # (tick labels, titles) stays in a cached background; the colour bar is drawn
             # last, or put back as it was the last time its range came round
@@ -300,3 +304,19 @@ class TexturedPlaneViewer:
         """Close every widget of the viewer."""
         self.display.close()
         close_tree(self.widget)
+
+
+def _readable(axes, profile) -> None:
+    """Tick labels, the profile's legend and title at the style's size (the note at the
+    largest error too, set beside the call): the figure is drawn at
+    the comparison's low dpi and shown shrunk to the column on a small screen, where the
+    smaller sizes came out at 9-11 px (review r7, lesson 04)."""
+    size = fs(1.0)
+    for ax in [a for a in axes if a is not None]:
+        ax.tick_params(labelsize=size)
+    if profile is not None:
+        profile.title.set_fontsize(size)
+        legend = profile.title.axes.get_legend()
+        if legend is not None:
+            for text in legend.get_texts():
+                text.set_fontsize(size)

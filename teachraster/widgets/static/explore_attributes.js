@@ -108,20 +108,23 @@ function mount(el, data, host) {
       const [x, y] = gap.p;
       line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale], OKABE.vermillion, 3);
       label3d(ctx, cam, [x, y, Math.max(gap.s.correct, gap.s.affine) * zScale],
-        ` gap ${fmt(gap.gap, 3)}`, OKABE.vermillion, "bold 14px sans-serif");
+        ` gap ${fmt(gap.gap, 3)}`, OKABE.vermillion, "bold 17px sans-serif");
     }
-    // the value axis at the screen's corner: 0, ½, 1
+    // the value axis at the screen's corner: 0, ½, 1. Text no smaller than 15 px: the canvas
+    // is shown shrunk to the notebook's column on a small screen (review r7: 10-11 px there)
     line3d(ctx, cam, [0, 0, 0], [0, 0, zScale], "#555", 1.5);
-    for (const v of [0, 0.5, 1]) label3d(ctx, cam, [0, 0, v * zScale], ` ${v}`, "#333");
+    for (const v of [0, 0.5, 1]) {
+      label3d(ctx, cam, [0, 0, v * zScale], ` ${v}`, "#333", "16px sans-serif");
+    }
     xy.forEach(([x, y], k) => {
       line3d(ctx, cam, [x, y, 0], [x, y, f[k] * zScale], "#444", 1, [3, 3]);
       label3d(ctx, cam, [x, y, 0], ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, "#111",
-        "bold 13px sans-serif");
+        "bold 16px sans-serif");
     });
     ctx.fillStyle = "#333";
-    ctx.font = "13px sans-serif";
-    ctx.fillText("grey: the screen and the triangle on it; height: the value (axis at the " +
-      "screen's corner)", 8, 462);
+    ctx.font = "15px sans-serif";
+    ctx.fillText("grey: the screen and the triangle; height: the value (axis at the corner)",
+      8, 462);
     readout.innerHTML = gap.gap > 1e-9
       ? `Largest |affine − perspective-correct| over the triangle: <b>${fmt(gap.gap, 3)}</b> ` +
         `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)}), where f = ${fmt(gap.s.correct, 3)} ` +
