@@ -324,6 +324,25 @@ def test_depth_explorer_quotes_no_distance_in_front_of_the_near_plane():
         ex.close()
 
 
+def test_depth_explorer_says_fighting_becomes_possible_and_names_the_far_plane():
+    """Review r7, 05b-3/4: the subtitle said two surfaces δ apart above the line "store the same
+    depth and z-fight" (the lesson: possible, not yet likely), and near 10 printed the first
+    fight at "z ≈ 1e+03", the far plane in offset notation."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0, backend="image")
+    try:
+        subtitle = ex.widget.children[0].value
+        assert "can store the same depth" in subtitle and "depth and z-fight" not in subtitle
+        assert "first found at <b>z ≈ 120</b>" in ex.info.value
+        ex.near.value = 10.0
+        assert ex.fight_from == pytest.approx(1000.0)
+        assert "first found at <b>the far plane, z ≈ 1,000</b>" in ex.info.value
+        assert "e+" not in ex.info.value
+    finally:
+        ex.close()
+
+
 def test_projection_explorer_ratio_moves_the_far_end_along_its_ray():
     """Review r3 04: |t - q| depends on the depth ratio only; the explorer's z1 / z0 slider
     moves the far end along its own eye ray (the screen picture stays) and prints the peak,
