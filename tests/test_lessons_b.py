@@ -350,6 +350,43 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
         mine = sum(top_left_coverage(t, w, h).astype(int) for t in case.triangles)
         assert np.array_equal(mine, case.run().counts), name
 
+    # review r7 07-4: the cell checks the student's rule and names the mistake; run its
+    # checker (functions are not kept in ns) on the right rule and on three wrong ones
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    cell = next("".join(c["source"]) for c in nb["cells"]
+                if "def check_tie_rule" in "".join(c["source"]))  # fmt: skip
+    scope = {"np": np, "hardcases": hardcases}
+    exec(cell.split("\n\n\nmy_verdict")[0], scope)
+    assert ns.my_verdict.startswith("Not yet") and "more often" in ns.my_verdict  # E >= 0
+    assert "left out" not in ns.my_verdict
+    verdict, counts = scope["check_tie_rule"](top_left_coverage)
+    assert verdict.startswith("Right") and not any(counts.values())
+
+    def with_rule(rule):
+        def coverage(xy, width, height):
+            xy = np.asarray(xy, dtype=float)
+            a, b, c = xy
+            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+                xy = xy[[0, 2, 1]]
+            x, y = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
+            inside = np.ones((height, width), dtype=bool)
+            for p, q in zip(xy, np.roll(xy, -1, axis=0)):
+                e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
+                inside &= (e > 0) | ((e == 0) & rule(p, q))
+            return inside
+
+        return coverage
+
+    strict = scope["check_tie_rule"](with_rule(lambda p, q: False))[0]  # E > 0: gaps only
+    assert strict.startswith("Not yet") and "left out" in strict and "more often" not in strict
+    bottom_right = scope["check_tie_rule"](
+        with_rule(lambda p, q: q[1] > p[1] or (q[1] == p[1] and q[0] < p[0]))
+    )[0]  # the opposite edges own the ties: a neighbour's centres drawn, its own left out
+    assert bottom_right.startswith("Not yet") and "left out" in bottom_right
+    assert "more often" in bottom_right
+
 
 def test_07_case_picker_driven_by_the_test():
     from teachraster.widgets.case_picker import CasePicker
