@@ -216,7 +216,13 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
     centre at a vertex of many triangles is drawn on top of their outlines."""
     from matplotlib.patches import Rectangle
 
-    from teachraster.widgets.case_picker import MAX_ASPECT, MIN_VIEW, VERTEX_DOT, CasePicker
+    from teachraster.widgets.case_picker import (
+        MAX_ASPECT,
+        MAX_VIEW,
+        MIN_VIEW,
+        VERTEX_DOT,
+        CasePicker,
+    )
 
     picker = CasePicker("fan_spokes_through_centres", backend="image")
     try:
@@ -240,6 +246,17 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         # review r6, 07-4: the 4 x 12 view in a figure as high as it needs, not 2/3 white
         assert picker.fig.get_figheight() < 0.6 * 4.4 and picker.fig.get_figwidth() == 9.0
         assert picker.hubs == [] and "outlined in black" not in picker.info.value
+        # review r7, 07: diagonal_sliver was a dotted diagonal on the whole 64 x 64 grid; it is
+        # now its first MAX_VIEW x MAX_VIEW corner, named in the title (thin outlines: above)
+        picker.case.value = "diagonal_sliver"
+        r0, r1, c0, c1 = picker.view
+        assert (r0, r1, c0, c1) == (0, MAX_VIEW, 0, MAX_VIEW) and picker.owner.shape == (64, 64)
+        assert int((picker.owner[r0:r1, c0:c1] >= 0).sum()) == MAX_VIEW - 1  # (1, 1) .. (15, 15)
+        title = picker.fig.get_suptitle()
+        assert title.endswith(f"rows 0–{MAX_VIEW - 1}, columns 0–{MAX_VIEW - 1} of 64 × 64")
+        picker.fig.canvas.draw()
+        extent = picker.fig._suptitle.get_window_extent(picker.fig.canvas.get_renderer())
+        assert extent.x0 >= 0 and extent.x1 <= picker.fig.bbox.width  # not clipped
         picker.case.value = "snap_flips_winding"  # a tiny triangle keeps a grid around it
         r0, r1, c0, c1 = picker.view
         assert min(r1 - r0, c1 - c0) >= MIN_VIEW
@@ -329,6 +346,25 @@ def test_depth_explorer_quotes_no_distance_in_front_of_the_near_plane():
         assert "Δz at z = 100:" in ex.info.value and "z = 1," not in ex.info.value
         res = tr.depth_resolution(100.0, 10.0, 1000.0, "float32")
         assert f"{float(res):.2g}" in ex.info.value.split("Δz at z = 100:")[1]
+    finally:
+        ex.close()
+
+
+def test_depth_explorer_says_fighting_becomes_possible_and_names_the_far_plane():
+    """Review r7, 05b-3/4: the subtitle said two surfaces δ apart above the line "store the same
+    depth and z-fight" (the lesson: possible, not yet likely), and near 10 printed the first
+    fight at "z ≈ 1e+03", the far plane in offset notation."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0, backend="image")
+    try:
+        subtitle = ex.widget.children[0].value
+        assert "can store the same depth" in subtitle and "depth and z-fight" not in subtitle
+        assert "first found at <b>z ≈ 120</b>" in ex.info.value
+        ex.near.value = 10.0
+        assert ex.fight_from == pytest.approx(1000.0)
+        assert "first found at <b>the far plane, z ≈ 1,000</b>" in ex.info.value
+        assert "e+" not in ex.info.value
     finally:
         ex.close()
 

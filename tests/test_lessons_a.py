@@ -481,6 +481,51 @@ def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_
     assert ns.w_row.tolist() == [0.0, 0.0, -1.0, 0.0]  # "w = -z_eye ... with no +1"
 
 
+@pytest.mark.notebook
+def test_05b_try_it_one_unit_of_bias_loses_where_the_histogram_says_in_the_float32_model():
+    """Review r7, 05b-1: the Try-it asked which squares still fight with one unit of bias and no
+    slope term, "and why the steep ones?"; in the simulator none does (its coplanar depths
+    agree to 1e-16, so one step always wins), and the squares all have the same tilt. It is
+    asked of the float32 model now: predict from the no-bias histogram (decal minus wall, in
+    steps) where the decal still loses, and compare with the count the cell prints."""
+    from teachraster.pipeline.depth import depth_bias, offset_clip_depth
+    from teachraster.pipeline.viewport import to_window
+
+    ns = lesson("05b_depth_precision")
+    tryit = _cells("05b_depth_precision", "markdown")[-1]
+    assert "the steep ones" not in tryit and "float32 model" in tryit and "histogram" in tryit
+    # the float32 model's functions, from the lesson's own cell (functions are not kept in ns)
+    model = next(c for c in _cells("05b_depth_precision", "code") if "def decal_nearer" in c)
+    scope = {**vars(ns), "np": np, "tr": tr, "to_window": to_window}
+    exec(model.split("\n\n\n(rows_d")[0], scope)
+    one_unit = depth_bias(ns.window[..., 2].max(axis=1), "unorm24", units=1.0, slope=ns.slopes,
+                          slope_factor=0.0)  # fmt: skip
+    decal_1 = offset_clip_depth(ns.decal_clip[12:], -one_unit)
+    (rows, cols), apart_1 = scope["decal_nearer"](ns.decal_clip[:12], decal_1)
+    lost = apart_1 >= 0  # the decal is shown only where it is strictly nearer
+    behind = ns.apart >= 1  # the histogram's 1 and 2: one step of bias does not reach
+    assert lost.sum() > 0 and abs(int(lost.sum()) - int(behind.sum())) <= 0.05 * behind.sum()
+    # on every square (no "steep ones": the same tilt everywhere)
+    square = tr.render(ns.decal_clip[12:], ns.W2, ns.H2).triangle_id[rows, cols] // 2
+    assert all(lost[square == k].any() for k in range(6))
+    # ... while the simulator's float64 render shows the decal everywhere with one unit
+    both = np.concatenate([ns.decal_clip[:12], decal_1])
+    frame = tr.render(both, ns.W2, ns.H2, depth_format="unorm24")
+    assert (frame.triangle_id[ns.decal_only] >= 12).all()
+
+
+def test_05b_explore_heading_sits_just_before_its_widget():
+    """Review r7, 05b-2: "## 6. Explore" and its "(the cell below prints both)" stood above
+    section 5's float32 decal model; the heading now opens the cell just before the widget,
+    and the text points at the cell after the widget."""
+    nb = json.loads((NOTEBOOKS / "05b_depth_precision.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    at = next(i for i, c in enumerate(cells) if "## 6. Explore" in c)
+    assert cells[at].startswith("## 6. Explore") and "cell below" not in cells[at]
+    assert "DepthPrecisionExplorer(" in cells[at + 1] and "first_fight(" in cells[at + 2]
+    assert not any("## 6." in c for c in cells[:at])
+
+
 def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
     """Review r2, 05b: the δ line on the resolution chart let the Predict be read off the chart."""
     code = _cells("05b_depth_precision", "code")

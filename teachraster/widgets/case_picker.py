@@ -100,27 +100,33 @@ def outline(ax, xy, *, thin: bool = False):
     return art
 
 
-#: The view of a case: at least this many pixels each way (a tiny triangle keeps some grid
-#: around it), and at most this many times as wide as high (a long sliver shows its left end,
-#: in pixels large enough to see, instead of a strip a few screen pixels high).
-MIN_VIEW, MAX_ASPECT = 6, 3
+#: The view of a case: at least MIN_VIEW pixels each way (a tiny triangle keeps some grid
+#: around it), at most MAX_ASPECT times as wide as high (a long sliver shows its left end, in
+#: pixels large enough to see, instead of a strip a few screen pixels high), and at most
+#: MAX_VIEW pixels each way (a long diagonal sliver shows its first corner, instead of a
+#: 64 x 64 grid on which its one pixel per row is a dotted line).
+MIN_VIEW, MAX_ASPECT, MAX_VIEW = 6, 3, 16
 
 #: The figure's height in inches (its width is 9): at most FIG_HEIGHT, and for a wide view just
 #: what two panels of about PANEL_WIDTH inches and their titles (TITLES_HEIGHT) need.
 FIG_HEIGHT, MIN_FIG_HEIGHT, TITLES_HEIGHT, PANEL_WIDTH = 4.4, 2.2, 1.0, 4.1
 
 
-def view_box(triangles, shape, *masks) -> tuple[int, int, int, int, bool]:
-    """Rows r0:r1 and columns c0:c1 a panel shows, and whether columns were cut off.
+def view_box(triangles, shape, *masks) -> tuple[int, int, int, int, bool, bool]:
+    """Rows r0:r1 and columns c0:c1 a panel shows, and whether rows, and columns, were cut off.
 
     The bounding box of the triangles and of the pixels set in ``masks``, one pixel around
     it, grown to :data:`MIN_VIEW` pixels each way and clipped to the image of ``shape``;
-    a box more than :data:`MAX_ASPECT` times as wide as high keeps its first columns.
+    a box more than :data:`MAX_VIEW` pixels high keeps its first rows, and one more than
+    :data:`MAX_ASPECT` times as wide as high, or more than :data:`MAX_VIEW` pixels wide, its
+    first columns.
 
     >>> view_box([[[0.5, 1.49], [60.5, 1.5], [0.5, 1.51]]], (4, 64))
-    (0, 4, 0, 12, True)
+    (0, 4, 0, 12, False, True)
     >>> view_box([[[3.5, 3.5], [15.5, 3.5], [3.5, 15.5]]], (20, 20))
-    (2, 17, 2, 17, False)
+    (2, 17, 2, 17, False, False)
+    >>> view_box([[[0.5, 0.5], [63.5, 63.5], [63.5, 63.49]]], (64, 64))
+    (0, 16, 0, 16, True, True)
     """
     h, w = shape
     xy = np.asarray(triangles, dtype=float).reshape(-1, 2)
@@ -138,10 +144,14 @@ def view_box(triangles, shape, *masks) -> tuple[int, int, int, int, bool]:
         return a, min(max(b, a + MIN_VIEW), size)
 
     (c0, c1), (r0, r1) = span(lo[0], hi[0], w), span(lo[1], hi[1], h)
-    cut = c1 - c0 > MAX_ASPECT * (r1 - r0)
-    if cut:
-        c1 = c0 + MAX_ASPECT * (r1 - r0)
-    return r0, r1, c0, c1, cut
+    cut_rows = r1 - r0 > MAX_VIEW
+    if cut_rows:
+        r1 = r0 + MAX_VIEW
+    widest = min(MAX_ASPECT * (r1 - r0), MAX_VIEW)
+    cut_cols = c1 - c0 > widest
+    if cut_cols:
+        c1 = c0 + widest
+    return r0, r1, c0, c1, cut_rows, cut_cols
 
 
 def shared_vertex_pixels(triangles, shape, least: int = 3) -> list[tuple[int, int]]:
@@ -384,13 +394,19 @@ class CasePicker:
             shown = [self.owner != NONE] + (
                 [] if self.naive_counts is None else [self.naive_counts > 0]
             )
-            r0, r1, c0, c1, cut = view_box(tris, self.owner.shape, *shown)
-            if cut:
+            r0, r1, c0, c1, cut_rows, cut_cols = view_box(tris, self.owner.shape, *shown)
+            h, w = self.owner.shape
+            if cut_rows:  # a corner of a large case: say which, and of what, on a line of its own
+                self.fig.suptitle(f"{self.case.value}, {self.method.value} fill\nrows "
+                                  f"{r0}–{r1 - 1}, columns {c0}–{c1 - 1} of {h} × {w}")  # fmt: skip
+            elif cut_cols:
                 self.fig.suptitle(f"{self.case.value}, {self.method.value} fill: columns "
-                                  f"{c0}–{c1 - 1} of {self.owner.shape[1]}")  # fmt: skip
+                                  f"{c0}–{c1 - 1} of {w}")  # fmt: skip
             self.view = (r0, r1, c0, c1)
             self._fit_height(r1 - r0, c1 - c0)
-            thin = thin_lines((r1 - r0, c1 - c0))
+            # a corner cut from a large case (the diagonal sliver) keeps the thin outlines of
+            # its whole grid: at the classroom width the outline covers the pixels it owns
+            thin = thin_lines((r1 - r0, c1 - c0)) or cut_rows
             plot_owners(self.axes[0], self.owner, tris, thin=thin)
             self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
             ax = self.axes[1]

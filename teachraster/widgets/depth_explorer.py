@@ -3,8 +3,8 @@
 Lesson 05b's widget. The figure plots the smallest change in view distance the depth buffer
 still sees, :func:`teachraster.pipeline.depth.depth_resolution`, against the distance, for the
 chosen format, near plane and mapping (window depth or reverse-Z), with two surfaces a gap
-``delta`` apart as a horizontal line: where the curve rises above the line they z-fight
-(:func:`teachraster.pipeline.depth.fights`). A faint reference curve keeps the starting
+``delta`` apart as a horizontal line: where the curve rises above the line they can store the
+same depth and z-fight (:func:`teachraster.pipeline.depth.fights`). A faint reference curve keeps the starting
 configuration on screen for comparison.
 """
 
@@ -28,6 +28,15 @@ ALT = "the smallest visible depth difference against view distance"
 FORMATS = ("unorm16", "unorm24", "float32")
 #: Mappings offered: OpenGL's window depth (near -> 0) and reverse-Z (near -> 1).
 MAPPINGS = ("perspective", "reversed")
+
+
+def distance(z: float) -> str:
+    """A view distance for the info line: three figures, whole numbers from 100 on (no "1e+03").
+
+    >>> distance(6.0912), distance(120.4), distance(1000.0)
+    ('6.09', '120', '1,000')
+    """
+    return f"{z:,.0f}" if z >= 100 else f"{z:.3g}"
 
 
 def first_fight(z, delta: float, near: float, far: float, fmt: str, mapping: str):
@@ -135,8 +144,9 @@ class DepthPrecisionExplorer:
             control.observe(lambda change: self.update(restart=True), "value")
         title = title_html(
             "Depth precision: bits, near plane, reverse-Z",
-            "Where the curve rises above the dashed line, two surfaces δ apart store the same "
-            "depth and z-fight. Move the near plane out, add bits, or reverse Z with float32.",
+            "Where the curve rises above the dashed line, two surfaces δ apart can store the "
+            "same depth: z-fighting becomes possible, and likely further out. Move the near "
+            "plane out, add bits, or reverse Z with float32.",
         )
         # a narrow column (1024 x 768) moves whole controls to a second line; a row that
         # shrank them instead cut the label and wrapped the format's toggles
@@ -238,8 +248,11 @@ class DepthPrecisionExplorer:
             pair = slice(i - 1, i + 1)  # the curve crosses δ between these grid points
             cross = np.exp(np.interp(np.log(self.delta), np.log(self.resolution[pair]),
                                      np.log(self.z[pair])))  # fmt: skip
-            where = (f"z-fighting first found at <b>z ≈ {self.fight_from:.3g}</b>"
-                     f" (Δz = δ at z ≈ {cross:.3g})")  # fmt: skip
+            found = f"z ≈ {distance(self.fight_from)}"
+            if self.fight_from >= self.z[-1]:  # the grid's last distance: say which it is
+                found = f"the far plane, {found}"
+            where = (f"z-fighting first found at <b>{found}</b>"
+                     f" (Δz = δ at z ≈ {distance(cross)})")  # fmt: skip
         text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
         if at:
             text += (f" · Δz at z = {', '.join(f'{d:g}' for d in at)}: "

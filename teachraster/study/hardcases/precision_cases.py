@@ -359,7 +359,8 @@ def _drift_case():
             "accumulates rounding",
             "precision",
             "the core evaluates every pixel directly from exact edge functions: error <= 1e-9 "
-            "everywhere (so is Fatahalian's (CMU 15-462, *Texture*) recentred plane); *Triangle Rasterisation II - Interpolation*'s stepping in float64 "
+            "everywhere, as does the recentred plane of Fatahalian (CMU 15-462, *Texture*); "
+            "*Triangle Rasterisation II - Interpolation*'s stepping in float64 "
             "drifts measurably (reported), in float32 visibly",
             frozen_inputs(xy=xy, f=f, size=(width, height)),
             run,
