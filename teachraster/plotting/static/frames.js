@@ -127,6 +127,21 @@ async function decodeGroup(places, blobs) {
   return null;
 }
 
+// What is wrong with a group's message, or "": one buffer per place, each of the length
+// the kernel names in `sizes`. A kernel that exits while it sends (shut down, restarted)
+// can glue two messages together: a group then came whose buffers were the frames of the
+// next message ("stream.stdout", "<IDS|MSG>", its JSON), and decoded as pictures they
+// failed as "The source image cannot be decoded." (a fresh-clone CI run).
+export function groupMismatch(msg, buffers) {
+  const got = buffers.map((b) => b.byteLength);
+  const sizes = msg.sizes ?? got;
+  if (got.length === msg.places.length && got.every((n, i) => n === sizes[i])) return "";
+  const head = buffers.slice(0, 3).map((b) => JSON.stringify(String.fromCharCode(
+    ...asBytes(b).subarray(0, 12))));
+  return `group ${msg.group} came with ${got.length} buffers of [${got}] bytes for ` +
+    `${msg.places.length} places, sent as [${sizes}] bytes (starting ${head.join(", ")})`;
+}
+
 // Mount a player in `el`. `opts`: width, height (pixels of a frame), n (steps), key (steps
 // per group), step, interval (ms per step when playing), captions, infos (text per step),
 // poster (PNG bytes of the first picture, optional), request(g) (ask for group g; absent
@@ -423,7 +438,7 @@ function render({ model, el }) {
       n: model.get("n_steps"), key: model.get("key"), step: model.get("value"),
       captions: model.get("captions"), infos: model.get("infos"), gen: model.get("gen"),
       alt: model.get("alt"), fill: model.get("fill"),
-      poster: poster ? new Uint8Array(poster.buffer ?? poster) : null,
+      poster: poster ? asBytes(poster) : null, // page.js
     });
   }
   model.on("change:gen", fromModel);
@@ -436,9 +451,13 @@ function render({ model, el }) {
   });
   model.on("change:interval", () => player.setInterval(model.get("interval")));
   model.on("msg:custom", (msg, buffers) => {
-    if (msg.type === "group") {
-      player.addGroup(msg.group, msg.places, buffers.map((b) => b.buffer ?? b), msg.gen);
+    if (msg.type !== "group") return;
+    const wrong = groupMismatch(msg, buffers);
+    if (wrong) {
+      console.warn(`teachraster: ${wrong}`); // not kept: the group is asked for again
+      return;
     }
+    player.addGroup(msg.group, msg.places, buffers.map(asBytes), msg.gen); // page.js
   });
   fromModel();
   return () => player.stop();
