@@ -121,6 +121,26 @@ def test_lesson_01_plays_and_steps_in_the_browser(lab, page, tmp_path):
     assert not page.errors, f"errors in the page: {listed(page.errors)}"
 
 
+def test_the_packages_console_warnings_count_as_page_errors(page):
+    """What the page-side code says on the console when it recovers from something wrong (a
+    picture it could not decode, a message whose buffers do not match it) starts with
+    "teachraster:" and fails a browser test like an error; other console lines do not."""
+    del page.errors[:]
+    page.evaluate("""() => {
+        console.warn("teachraster: a picture could not be decoded (a test)");
+        console.log("not ours");
+        console.warn("Teachraster is not the prefix");
+    }""")
+    deadline = time.time() + 10
+    while not page.errors and time.time() < deadline:
+        page.wait_for_timeout(50)
+    page.wait_for_timeout(200)  # the other two, had they been kept
+    found = list(page.errors)
+    del page.errors[:]
+    assert found == ["console warning: teachraster: a picture could not be decoded (a test)"]
+    assert listed(["a", "b", "c", "d", *found]) == [*found, "a", "b", "c"]
+
+
 NOTEBOOKS = sorted(
     str(p.relative_to(ROOT / "notebooks")) for p in (ROOT / "notebooks").rglob("*.ipynb")
 )
