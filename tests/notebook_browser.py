@@ -200,7 +200,16 @@ def listed(errors) -> list:
 
 def _shut_down_kernels(base: str) -> None:
     """Stop every kernel (closing its session), so notebooks run one after another do not
-    pile up in memory; a refused request raises (it once failed silently for a whole run)."""
+    pile up in memory; a refused request raises (it once failed silently for a whole run).
+
+    This process's page leaves its notebook first (about:blank). Its players still fetch
+    groups in the background, and a kernel that exits while it sends can glue two messages'
+    frames together (a zero-copy send raising mid-message once pyzmq's garbage collector is
+    down: "zmq gc socket requested during shutdown" in the server's log): the page got a
+    group whose buffers were the next message's frames, and its error about them came after
+    the run's errors were read, counted against the next notebook (lesson 03 after 02)."""
+    if lab.cache_info().currsize:
+        lab().page.goto("about:blank")
     try:
         for what in ("sessions", "kernels"):
             with urllib.request.urlopen(f"{base}/api/{what}", timeout=10) as r:
@@ -265,13 +274,6 @@ def run_all(name: str, extra_source: str) -> BrowserRun:
     error = failed.first.inner_text()[-4000:] if failed.count() else ""
     figures = page.locator(".jp-OutputArea-output img").count()
     _save(page, path)
-    # The page is left before its kernel is shut down. The players still fetch groups in
-    # the background, and a kernel that exits while it sends can glue two messages' frames
-    # together (a zero-copy send raising mid-message once pyzmq's garbage collector is down:
-    # "zmq gc socket requested during shutdown" in the server's log): the page then got a
-    # group whose buffers were another message, and its error (or warning) came after this
-    # run's list was read, counted against the next notebook (lesson 03, after lesson 02).
-    page.goto("about:blank")
     saved = nbformat.read(path, as_version=4)
     shutil.copyfile(ROOT / "notebooks" / f"{name}.ipynb", path)  # as it was, for the next test
     saved.cells.pop()  # the extra cell is the test's, not the notebook's
