@@ -12,13 +12,14 @@
 // every group is in the page and nothing is fetched.
 
 const CSS = `
-.tr-frames { font-family: var(--jp-ui-font-family, sans-serif); max-width: 100%; }
+.tr-frames { font-family: var(--jp-ui-font-family, sans-serif); max-width: 100%;
+  container-type: inline-size; }
 .tr-frames .tr-bar { display: flex; align-items: center; gap: 4px; flex-wrap: wrap;
   margin: 4px 0; }
 .tr-frames button { min-width: 34px; height: 28px; padding: 0 6px; cursor: pointer;
   border: 1px solid #bbb; border-radius: 3px; background: #f5f5f5; font-size: 14px; }
 .tr-frames button:focus-visible, .tr-frames input:focus-visible { outline: 2px solid #1976d2; }
-.tr-frames input[type=range] { flex: 1 1 320px; min-width: 160px; max-width: 460px; }
+.tr-frames input[type=range] { flex: 1 1 200px; min-width: 160px; max-width: 460px; }
 .tr-frames .tr-info { white-space: nowrap; font-size: 13px; min-width: 9em; }
 .tr-frames .tr-caption { min-height: 3.2em; padding: 2px 6px; border: 1px solid #ddd;
   font-size: 15px; margin: 2px 0 4px 0; }
@@ -29,6 +30,14 @@ const CSS = `
 .tr-frames .tr-icon { width: 12px; height: 12px; fill: currentColor; flex: none; }
 .tr-frames .tr-speed { white-space: nowrap; font-size: 13px; }
 .tr-frames .tr-speed select { font-size: 13px; height: 26px; margin-left: 4px; }
+/* Two lines of controls in a narrow column (issue 31: 315 px at 1024x768 with the file
+   browser open and 150 % zoom, where the bar took three): the buttons (Play's word hidden,
+   its icon and name stay) and the slider share the first, the step and the speed the
+   second. A 320-px basis for the slider put it on a line of its own up to 540 px. */
+@container (max-width: 420px) {
+  .tr-frames .tr-text { display: none; }
+  .tr-frames input[type=range] { flex-basis: 100px; min-width: 100px; }
+}
 `;
 
 // The buttons' icons, drawn (SVG paths in a 16 x 16 box): the symbols U+23EE/U+23ED are
@@ -75,7 +84,12 @@ function makeButton(label, name, text = "") {
 
 function setButton(b, label, name, text = "") {
   b.replaceChildren(icon(name));
-  if (text) b.append(text);
+  if (text) {
+    const words = document.createElement("span");
+    words.className = "tr-text"; // hidden in a narrow column (CSS above)
+    words.textContent = text;
+    b.append(words);
+  }
   b.title = label;
   b.setAttribute("aria-label", label);
 }
