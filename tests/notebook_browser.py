@@ -165,6 +165,7 @@ def lab() -> Lab:
     page = browser.new_context(viewport={"width": 1400, "height": 1000}).new_page()
     errors: list[str] = []
     page.on("pageerror", lambda exc: _keep_error(errors, str(exc)))
+    page.on("console", lambda message: _keep_warning(errors, message.type, message.text))
     return Lab(base, work / "notebooks", log, process, page, errors, browser.close)
 
 
@@ -179,9 +180,36 @@ def _keep_error(errors: list, message: str) -> None:
         errors.append(message)
 
 
+#: What the package's page-side code says when something went wrong that it could recover
+#: from (a picture that could not be decoded, a message whose pictures do not match it): the
+#: page carries on, so only the console tells, and a browser test fails on it as on an error.
+WARNING_PREFIX = "teachraster:"
+
+
+def _keep_warning(errors: list, kind: str, text: str) -> None:
+    if text.startswith(WARNING_PREFIX):
+        errors.append(f"console {kind}: {text}")
+
+
+def listed(errors) -> list:
+    """The page's errors for a failure message: every one of the package's console warnings
+    (each tells what went wrong with which picture), then the first three others."""
+    warnings = [e for e in errors if e.startswith("console ")]
+    return warnings + [e for e in errors if e not in warnings][:3]
+
+
 def _shut_down_kernels(base: str) -> None:
     """Stop every kernel (closing its session), so notebooks run one after another do not
-    pile up in memory; a refused request raises (it once failed silently for a whole run)."""
+    pile up in memory; a refused request raises (it once failed silently for a whole run).
+
+    This process's page leaves its notebook first (about:blank). Its players still fetch
+    groups in the background, and a kernel that exits while it sends can glue two messages'
+    frames together (a zero-copy send raising mid-message once pyzmq's garbage collector is
+    down: "zmq gc socket requested during shutdown" in the server's log): the page got a
+    group whose buffers were the next message's frames, and its error about them came after
+    the run's errors were read, counted against the next notebook (lesson 03 after 02)."""
+    if lab.cache_info().currsize:
+        lab().page.goto("about:blank")
     try:
         for what in ("sessions", "kernels"):
             with urllib.request.urlopen(f"{base}/api/{what}", timeout=10) as r:

@@ -22,7 +22,7 @@ import pytest
 from notebook_browser import CHROMIUM as CHROMIUM  # the other browser tests read these here
 from notebook_browser import CHROMIUM_ARGS as CHROMIUM_ARGS
 from notebook_browser import _shut_down_kernels as _shut_down_kernels  # for the other files
-from notebook_browser import unavailable
+from notebook_browser import listed, unavailable
 
 ROOT = Path(__file__).resolve().parents[1]
 LESSON = "01_span_tables.ipynb"
@@ -118,7 +118,27 @@ def test_lesson_01_plays_and_steps_in_the_browser(lab, page, tmp_path):
     page.wait_for_timeout(500)
     assert _shown_step(canvas) == paused, "the picture changed after Pause"
     page.screenshot(path=str(tmp_path / "lesson01_played.png"), full_page=False)
-    assert not page.errors, f"errors in the page: {page.errors[:3]}"
+    assert not page.errors, f"errors in the page: {listed(page.errors)}"
+
+
+def test_the_packages_console_warnings_count_as_page_errors(page):
+    """What the page-side code says on the console when it recovers from something wrong (a
+    picture it could not decode, a message whose buffers do not match it) starts with
+    "teachraster:" and fails a browser test like an error; other console lines do not."""
+    del page.errors[:]
+    page.evaluate("""() => {
+        console.warn("teachraster: a picture could not be decoded (a test)");
+        console.log("not ours");
+        console.warn("Teachraster is not the prefix");
+    }""")
+    deadline = time.time() + 10
+    while not page.errors and time.time() < deadline:
+        page.wait_for_timeout(50)
+    page.wait_for_timeout(200)  # the other two, had they been kept
+    found = list(page.errors)
+    del page.errors[:]
+    assert found == ["console warning: teachraster: a picture could not be decoded (a test)"]
+    assert listed(["a", "b", "c", "d", *found]) == [*found, "a", "b", "c"]
 
 
 NOTEBOOKS = sorted(
@@ -141,4 +161,5 @@ def test_every_notebook_runs_in_the_browser(name):
     if run.error:
         pytest.fail(f"{name}: error output in the browser:\n{run.error[-2000:]}")
     assert run.figures_on_page > 0, f"{name}: no figure on the page"
-    assert not run.page_errors, f"{name}: errors in the page: {list(run.page_errors)[:3]}"
+    # the package's console warnings too ("teachraster: a picture could not be decoded ...")
+    assert not run.page_errors, f"{name}: errors in the page: {listed(run.page_errors)}"

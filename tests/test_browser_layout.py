@@ -14,7 +14,8 @@ widget's output:
   thumbnail;
 - every control and picture lies inside the output area and the window, horizontally: none
   cut off or off screen;
-- each row of controls (a flex row holding controls) takes at most :data:`MOST_ROWS` lines;
+- each row of controls (a flex row holding controls) takes at most :data:`MOST_ROWS` lines,
+  the page-side player's bar at most :data:`MOST_BAR_LINES`;
 - no label, readout or button cuts its text (``scrollWidth <= clientWidth``), and no row of
   controls is wider than its box (cut at the column's edge, or scrolled).
 
@@ -107,6 +108,9 @@ WIDGETS = [
 READABLE = 300
 #: Lines a row of controls may wrap into (the player's took six at 150 %).
 MOST_ROWS = 3
+#: Lines the page-side player's bar (buttons, step slider, step, speed) may take: it took
+#: three in a 315-px column (its slider on a line of its own) until it hid Play's word there.
+MOST_BAR_LINES = 2
 
 #: Window sizes (CSS px) and device pixel ratio. 150 % zoom is a 1400×900 window zoomed to
 #: 150 %: Chromium's page zoom lays the page out in a 933×600 CSS-px viewport with
@@ -164,19 +168,22 @@ MEASURE = """([readable]) => {
     // rows: the lines each flex row holding controls wraps its items into
     const isRow = e => { const s = getComputedStyle(e);
       return s.display.endsWith('flex') && s.flexDirection.startsWith('row'); };
-    const lines = [...out.querySelectorAll('*')]
-        .filter(e => visible(e) && isRow(e) && e.querySelector(CONTROL)).map(row => {
+    const linesOf = row => {
       const items = [...row.children].filter(visible).map(c => c.getBoundingClientRect())
           .sort((a, b) => a.top - b.top);
       let n = 0, bottom = -Infinity;
       for (const r of items) if (r.top >= bottom - 2) { n += 1; bottom = r.bottom; }
         else bottom = Math.max(bottom, r.bottom);
       return n;
-    });
+    };
+    const lines = [...out.querySelectorAll('*')]
+        .filter(e => visible(e) && isRow(e) && e.querySelector(CONTROL)).map(linesOf);
+    // the page-side player's bar: its buttons, step slider, step and speed
+    const bar = [...out.querySelectorAll('.tr-bar')].filter(visible).map(linesOf);
     const toggles = [...out.querySelectorAll('.widget-toggle-buttons')].filter(visible)
         .map(g => new Set([...g.querySelectorAll('button')].map(b => b.offsetTop)).size);
     return {width: Math.round(right - left), toggles: Math.max(0, ...toggles), dpr: window.devicePixelRatio, pictures: pictures.map(p => p.w),
-            small, outside, cut, wide, rows: Math.max(0, ...lines)};
+            small, outside, cut, wide, rows: Math.max(0, ...lines), bar: Math.max(0, ...bar)};
   });
 }"""
 
@@ -241,6 +248,8 @@ def _problems(found: dict) -> list:
                     bad.append((size, name, what, m[what][:3]))
             if m["rows"] > MOST_ROWS:
                 bad.append((size, name, "rows", m["rows"]))
+            if m["bar"] > MOST_BAR_LINES:
+                bad.append((size, name, "player bar lines", m["bar"]))
     return bad
 
 
@@ -253,6 +262,8 @@ def test_every_widget_is_usable_at_projector_sizes(lab, page, app):  # noqa: F81
         for name, m in widgets.items():
             print(f"{app:9} {size:9} {name:24} {m}")
     assert _problems(found) == []
+    for size in SIZES:  # the player's bar is there and measured, at every size
+        assert found[size]["FillPlayer"]["bar"] >= 1, size
     for size in ("1400x900", "1024x768"):  # the format's toggles on one line (they took 2)
         assert found[size]["DepthPrecisionExplorer"]["toggles"] == 1, size
     assert not page.errors, page.errors[:3]

@@ -61,6 +61,12 @@ class FramesWidget(anywidget.AnyWidget):
         self.send_group(g, *self.source(g))
 
     def send_group(self, g: int, places: list, pngs: list) -> None:
-        """Send group ``g`` of the fill on show (``places`` and PNG bytes) to the page."""
+        """Send group ``g`` of the fill on show (``places`` and PNG bytes) to the page.
+
+        The message names each picture's length (``sizes``): the page checks the buffers it
+        receives against them and says so on the console when they differ."""
+        if len(places) != len(pngs):
+            raise ValueError(f"pngs: {len(pngs)} pictures for {len(places)} places")
         self.groups_sent += 1
-        self.send({"type": "group", "group": g, "gen": self.gen, "places": places}, pngs)
+        self.send({"type": "group", "group": g, "gen": self.gen, "places": places,
+                   "sizes": [len(p) for p in pngs]}, list(pngs))  # fmt: skip

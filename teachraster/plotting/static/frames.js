@@ -12,13 +12,14 @@
 // every group is in the page and nothing is fetched.
 
 const CSS = `
-.tr-frames { font-family: var(--jp-ui-font-family, sans-serif); max-width: 100%; }
+.tr-frames { font-family: var(--jp-ui-font-family, sans-serif); max-width: 100%;
+  container-type: inline-size; }
 .tr-frames .tr-bar { display: flex; align-items: center; gap: 4px; flex-wrap: wrap;
   margin: 4px 0; }
 .tr-frames button { min-width: 34px; height: 28px; padding: 0 6px; cursor: pointer;
   border: 1px solid #bbb; border-radius: 3px; background: #f5f5f5; font-size: 14px; }
 .tr-frames button:focus-visible, .tr-frames input:focus-visible { outline: 2px solid #1976d2; }
-.tr-frames input[type=range] { flex: 1 1 320px; min-width: 160px; max-width: 460px; }
+.tr-frames input[type=range] { flex: 1 1 200px; min-width: 160px; max-width: 460px; }
 .tr-frames .tr-info { white-space: nowrap; font-size: 13px; min-width: 9em; }
 .tr-frames .tr-caption { min-height: 3.2em; padding: 2px 6px; border: 1px solid #ddd;
   font-size: 15px; margin: 2px 0 4px 0; }
@@ -29,6 +30,14 @@ const CSS = `
 .tr-frames .tr-icon { width: 12px; height: 12px; fill: currentColor; flex: none; }
 .tr-frames .tr-speed { white-space: nowrap; font-size: 13px; }
 .tr-frames .tr-speed select { font-size: 13px; height: 26px; margin-left: 4px; }
+/* Two lines of controls in a narrow column (issue 31: 315 px at 1024x768 with the file
+   browser open and 150 % zoom, where the bar took three): the buttons (Play's word hidden,
+   its icon and name stay) and the slider share the first, the step and the speed the
+   second. A 320-px basis for the slider put it on a line of its own up to 540 px. */
+@container (max-width: 420px) {
+  .tr-frames .tr-text { display: none; }
+  .tr-frames input[type=range] { flex-basis: 100px; min-width: 100px; }
+}
 `;
 
 // The buttons' icons, drawn (SVG paths in a 16 x 16 box): the symbols U+23EE/U+23ED are
@@ -75,7 +84,12 @@ function makeButton(label, name, text = "") {
 
 function setButton(b, label, name, text = "") {
   b.replaceChildren(icon(name));
-  if (text) b.append(text);
+  if (text) {
+    const words = document.createElement("span");
+    words.className = "tr-text"; // hidden in a narrow column (CSS above)
+    words.textContent = text;
+    b.append(words);
+  }
   b.title = label;
   b.setAttribute("aria-label", label);
 }
@@ -125,6 +139,21 @@ async function decodeGroup(places, blobs) {
   if (!frames.includes(undefined)) return frames;
   for (const f of frames) if (f) f.bitmap.close();
   return null;
+}
+
+// What is wrong with a group's message, or "": one buffer per place, each of the length
+// the kernel names in `sizes`. A kernel that exits while it sends (shut down, restarted)
+// can glue two messages together: a group then came whose buffers were the frames of the
+// next message ("stream.stdout", "<IDS|MSG>", its JSON), and decoded as pictures they
+// failed as "The source image cannot be decoded." (a fresh-clone CI run).
+export function groupMismatch(msg, buffers) {
+  const got = buffers.map((b) => b.byteLength);
+  const sizes = msg.sizes ?? got;
+  if (got.length === msg.places.length && got.every((n, i) => n === sizes[i])) return "";
+  const head = buffers.slice(0, 3).map((b) => JSON.stringify(String.fromCharCode(
+    ...asBytes(b).subarray(0, 12))));
+  return `group ${msg.group} came with ${got.length} buffers of [${got}] bytes for ` +
+    `${msg.places.length} places, sent as [${sizes}] bytes (starting ${head.join(", ")})`;
 }
 
 // Mount a player in `el`. `opts`: width, height (pixels of a frame), n (steps), key (steps
@@ -426,7 +455,7 @@ function render({ model, el }) {
       n: model.get("n_steps"), key: model.get("key"), step: model.get("value"),
       captions: model.get("captions"), infos: model.get("infos"), gen: model.get("gen"),
       alt: model.get("alt"), fill: model.get("fill"),
-      poster: poster ? new Uint8Array(poster.buffer ?? poster) : null,
+      poster: poster ? asBytes(poster) : null, // page.js
     });
   }
   model.on("change:gen", fromModel);
@@ -439,9 +468,13 @@ function render({ model, el }) {
   });
   model.on("change:interval", () => player.setInterval(model.get("interval")));
   model.on("msg:custom", (msg, buffers) => {
-    if (msg.type === "group") {
-      player.addGroup(msg.group, msg.places, buffers.map((b) => b.buffer ?? b), msg.gen);
+    if (msg.type !== "group") return;
+    const wrong = groupMismatch(msg, buffers);
+    if (wrong) {
+      console.warn(`teachraster: ${wrong}`); // not kept: the group is asked for again
+      return;
     }
+    player.addGroup(msg.group, msg.places, buffers.map(asBytes), msg.gen); // page.js
   });
   fromModel();
   return () => {

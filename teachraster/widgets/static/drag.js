@@ -84,6 +84,12 @@ function initialize({ model }) {
       store.generation = msg.generation;
       store.slider = msg.slider || 0;
     } else if (msg.type === "ahead" && msg.generation === store.generation) {
+      if (buffers.length !== msg.entries.length) {
+        // one patch (or empty bytes) per entry, always: a mismatch is a bug to hear of
+        console.warn(`teachraster: ${buffers.length} pictures drawn ahead came for ` +
+          `${msg.entries.length} positions`);
+        return;
+      }
       msg.entries.forEach((e, i) => {
         store.entries.set(e.k, { ...e, generation: msg.generation, ref: msg.ref,
           bytes: buffers[i] });
@@ -390,6 +396,10 @@ function render({ model, el }) {
 
   model.on("msg:custom", (msg, buffers) => {
     if (msg.type !== "frame") return;
+    if (buffers.length !== 1) {
+      console.warn(`teachraster: a picture came in ${buffers.length} buffers, not one`);
+      return;
+    }
     const bytes = buffers[0];
     if (key) storeFor(key).frames += 1; // a picture drawn ahead asked for before is stale
     if (first && first.seq === msg.seq && first.reply === undefined) first.reply = performance.now();
