@@ -202,13 +202,14 @@ def _shut_down_kernels(base: str) -> None:
     """Stop every kernel (closing its session), so notebooks run one after another do not
     pile up in memory; a refused request raises (it once failed silently for a whole run).
 
-    This process's page leaves its notebook first (about:blank). Its players still fetch
+    This process's page leaves its notebook first (closes its tabs, which closes their
+    connections to the kernels, or goes to about:blank). Its players still fetch
     groups in the background, and a kernel that exits while it sends can glue two messages'
     frames together (a zero-copy send raising mid-message once pyzmq's garbage collector is
     down: "zmq gc socket requested during shutdown" in the server's log): the page got a
     group whose buffers were the next message's frames, and its error about them came after
     the run's errors were read, counted against the next notebook (lesson 03 after 02)."""
-    if lab.cache_info().currsize:
+    if lab.cache_info().currsize and not _close_all_tabs(lab().page, base):
         lab().page.goto("about:blank")
     try:
         for what in ("sessions", "kernels"):
@@ -317,8 +318,10 @@ def run_all(name: str, extra_source: str) -> BrowserRun:
     nb.cells.append(nbformat.v4.new_code_cell(extra_source))
     nbformat.write(nb, path)
     running.probe_log.unlink(missing_ok=True)
-    emptied = _close_all_tabs(page, running.base)
-    _shut_down_kernels(running.base)
+    _shut_down_kernels(running.base)  # the page left the last notebook (closed its tab)
+    emptied = (
+        page.url.startswith(f"{running.base}/lab") and not page.locator(".jp-Notebook").count()
+    )
     del running.errors[:]
     start = time.perf_counter()
     _open_notebook(page, running.base, f"{name}.ipynb", emptied)
