@@ -688,7 +688,14 @@ def test_10_numbers_the_text_relies_on():
     assert ns.jumps["serpentine"] == 0
     assert ns.tile_changes["tiled"] == ns.tile_changes["morton"] == 3  # "3 is the least"
     assert min(ns.tile_changes.values()) == 3
-    assert 2**30 / 512 < fixed_point.max_extent(8, 64)  # the guard band fits int64
+    # "the guard band is exactly what int64 allows": |units| < 2**30, differences < 2**31 units,
+    # d = 31 and 2 * 31 + 2 = 64 bits, with no bit to spare (one more pixel does not fit)
+    from teachraster.core.snapping import UNIT_LIMIT
+
+    assert UNIT_LIMIT == 2**30 and ns.band_d == 31 and 2 * ns.band_d + 2 == 64
+    widest = fixed_point.bit_budget(fixed_point.max_extent(8, 64), 8, 64)
+    assert widest.delta_bits == ns.band_d and widest.fits and widest.headroom == 0
+    assert not fixed_point.bit_budget(2 * ns.guard, 8, 64).fits
     assert ns.front_first["hiz_rejected"] > 0 and ns.front_first["shaded"] == 96 * 64
     assert ns.gpu["hiz_rejected"] == 0  # back to front (the last order drawn): "none"
     assert ns.sphere["hiz_rejected"] > 0
