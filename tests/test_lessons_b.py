@@ -628,6 +628,8 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     ns = lesson("09_texture_filtering")
     # "facing you a pixel covers about 3.5 texels, so a check is more than two pixels wide"
     assert 3 < 2 ** ns.start_lod.max() < 4 and ns.check_px > 2
+    # "nearest draws the checks 2 or 3 pixels wide": every check facing you is 2 to 3 px
+    assert 2 < ns.check_px <= 8 / 2 ** ns.start_lod.min() < 3
     # the onset of moiré (λ > 3) and of the seam to grey level 4 (λ > 3.5) both lie inside the
     # slider's range, the seam after the moiré
     assert 0 < ns.moire_tilt < ns.seam_tilt < 89
