@@ -310,6 +310,16 @@ def test_09_quad_differences_follow_the_exact_map():
     )
 
 
+def test_09_an_srgb_textures_levels_average_light():
+    import teachraster as tr
+
+    ns = lesson("09_texture_filtering")
+    # "averaging the encoded numbers darkens": black and white averaged as stored is 0.5,
+    # about a fifth of white's light; averaged as light it is half of it, stored higher
+    assert ns.of_numbers == 0.5 and float(tr.srgb_to_linear(ns.of_numbers)) < 0.25
+    assert float(tr.srgb_to_linear(ns.of_light)) == pytest.approx(0.5) and ns.of_light > 0.7
+
+
 def test_09_the_level_map_spans_magnified_and_minified_pixels():
     ns = lesson("09_texture_filtering")
     assert np.nanmin(ns.lam) < 0 < 5 < np.nanmax(ns.lam)

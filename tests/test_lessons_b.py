@@ -445,19 +445,28 @@ def test_08_centroid_llvmpipe_rule_and_teachraster_differ_where_the_centre_is_co
 
 def test_08_predictions_are_answered_by_what_the_lesson_computes():
     ns = lesson("08_antialiasing")
-    # the sliver: no centre, and the 4-sample pattern draws pixels 0 to 15 at a quarter each
+    # the sliver: no centre, and the 4-sample pattern draws pixels 0 to 7 at a quarter each
     assert int(ns.sliver_1.coverage.sum()) == 0
-    assert int(ns.sliver_4.coverage.sum()) == 16  # the Predict's answer
-    assert np.flatnonzero(ns.sliver_4.coverage[1]).tolist() == list(range(16))
+    assert ns.sliver_4.coverage.shape == (3, ns.W_strip) == (3, 12)  # drawn large: 12 pixels
+    assert int(ns.sliver_4.coverage.sum()) == 8  # the Predict's answer
+    assert np.flatnonzero(ns.sliver_4.coverage[1]).tolist() == list(range(8))
     assert set(ns.sliver_4.coverage_fraction[ns.sliver_4.coverage].tolist()) == {0.25}
+    assert ns.sliver_fractions == [0.25]  # the figure's title
     # y grows downward: y_top is the upper edge on screen, the slanted lower edge rises through
-    # the sample row y = 1.125 at x_cross, and the covered samples are the ones left of it
-    assert ns.y_top < 1 + ns.sample_dy < ns.y_low and ns.x_cross == pytest.approx(15.5)
+    # the sample row y = 1.125 at x_cross, and the covered samples are the ones left of it;
+    # the sliver runs on inside the strip past x_cross (pixels it crosses and does not draw)
+    assert ns.y_top < 1 + ns.sample_dy < ns.y_low and ns.x_cross == pytest.approx(8.0)
     assert np.flatnonzero(ns.sliver_4.coverage[1]).max() == int(ns.x_cross - ns.sample_dx)
-    # a horizontal edge through the ordered grid: three values (0, 1/2, 1)
-    assert ns.grid_values == 3  # the Predict's answer
-    # the near-horizontal edge of the figure: the grid shows 1/4 once, not 3/4 ("luck")
-    assert ns.levels["ordered grid"] == [0.0, 0.25, 0.5, 1.0]
+    assert ns.x_cross + 2 < ns.x_right <= ns.W_strip
+    # a horizontal edge through the ordered grid: three values (0, 1/2, 1), the question's given
+    assert ns.grid_values == 3
+    # the Predict's answer: the near-horizontal edge of the figure shows 1/4 once, not 3/4
+    # ("luck"): four values. It crosses sample row 2.75 inside pixel 7, between its two samples,
+    # and row 3.25 between pixels 15 and 16, right of both samples of pixel 15
+    assert ns.edge_levels == ns.levels["ordered grid"] == [0.0, 0.25, 0.5, 1.0]
+    (y1, x1), (y2, x2) = ns.crossed
+    assert (y1, y2) == (2.75, 3.25) and x1 == pytest.approx(7.5) and 15.75 < x2 < 16
+    assert len(ns.levels["rotated grid (standard)"]) == 5  # "all five values"
 
 
 def test_08_levels_fan_hub_centroid_and_resolve():
@@ -676,6 +685,8 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     ns = lesson("09_texture_filtering")
     # "facing you a pixel covers about 3.5 texels, so a check is more than two pixels wide"
     assert 3 < 2 ** ns.start_lod.max() < 4 and ns.check_px > 2
+    # "nearest draws the checks 2 or 3 pixels wide": every check facing you is 2 to 3 px
+    assert 2 < ns.check_px <= 8 / 2 ** ns.start_lod.min() < 3
     # the onset of moiré (λ > 3) and of the seam to grey level 4 (λ > 3.5) both lie inside the
     # slider's range, the seam after the moiré
     assert 0 < ns.moire_tilt < ns.seam_tilt < 89
@@ -745,7 +756,14 @@ def test_10_numbers_the_text_relies_on():
     assert ns.jumps["serpentine"] == 0
     assert ns.tile_changes["tiled"] == ns.tile_changes["morton"] == 3  # "3 is the least"
     assert min(ns.tile_changes.values()) == 3
-    assert 2**30 / 512 < fixed_point.max_extent(8, 64)  # the guard band fits int64
+    # "the guard band is exactly what int64 allows": |units| < 2**30, differences < 2**31 units,
+    # d = 31 and 2 * 31 + 2 = 64 bits, with no bit to spare (one more pixel does not fit)
+    from teachraster.core.snapping import UNIT_LIMIT
+
+    assert UNIT_LIMIT == 2**30 and ns.band_d == 31 and 2 * ns.band_d + 2 == 64
+    widest = fixed_point.bit_budget(fixed_point.max_extent(8, 64), 8, 64)
+    assert widest.delta_bits == ns.band_d and widest.fits and widest.headroom == 0
+    assert not fixed_point.bit_budget(2 * ns.guard, 8, 64).fits
     assert ns.front_first["hiz_rejected"] > 0 and ns.front_first["shaded"] == 96 * 64
     assert ns.gpu["hiz_rejected"] == 0  # back to front (the last order drawn): "none"
     assert ns.sphere["hiz_rejected"] > 0

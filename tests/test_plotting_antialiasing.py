@@ -64,6 +64,13 @@ def test_fraction_and_error_images():
     keep = (fill.coverage_fraction > 0) | (area > 0)
     np.testing.assert_allclose(shown[keep], want[keep])
     assert f"max {np.abs(want[keep]).max():.3f}" in b.get_title()
+    # maps to be compared share a colour range: the bound given, not their own maximum
+    shared = tp.plot_area_error(a, fill, area, bound=0.9, colorbar=False)
+    assert shared.image.get_clim() == (-0.9, 0.9)
+    worst = np.abs(want[keep]).max()
+    assert err.image.get_clim() == pytest.approx((-worst, worst))  # by default its own
+    with pytest.raises(ValueError, match="bound"):
+        tp.plot_area_error(a, fill, area, bound=0.0)
 
 
 def test_pixel_inspector_plot_labels_samples_with_edge_values():

@@ -159,3 +159,35 @@ def test_filter_explorer_level_panel_shows_what_each_filter_reads(filter):
             assert (r.lod[ok] <= ex.lod[ok] + 1e-12).all()
     finally:
         ex.close()
+
+
+def test_filter_explorer_error_panel_is_as_large_as_the_image_and_its_maximum_off_it():
+    """Lesson 09 asks students to read the error panel: it is as large as the filtered
+    image, its colour bar's numbers as large as axis labels, and its maximum is written below
+    the picture, not over its pixels."""
+    import matplotlib as mpl
+
+    from teachraster.widgets import FilterExplorer
+    from teachraster.widgets.common import style_context
+
+    ex = FilterExplorer(64, 48, tilt=60.0, filter="nearest_mipmap_nearest", samples=2,
+                        backend="image", style="classroom")  # fmt: skip
+    try:
+        ex.fig.canvas.draw()
+        renderer = ex.fig.canvas.get_renderer()
+        widths = [round(ax.get_window_extent().width) for ax in ex.axes]
+        assert len(set(widths)) == 1, widths
+        error = ex.panels["error"]
+        picture = ex.axes[2].get_window_extent()
+        note = error.note.get_window_extent(renderer)
+        assert error.note.get_visible() and error.note.get_text().startswith("max ")
+        assert note.y1 < picture.y0 and note.x1 <= ex.fig.bbox.x1  # below the picture
+        assert error.colorbar.ax.get_window_extent().y0 > note.y1  # below its colour bar
+        with style_context("classroom"):  # the size of the style's axis labels
+            labels = mpl.rcParams["axes.labelsize"]
+            size = mpl.font_manager.FontProperties(size=labels).get_size_in_points()
+        assert size > 16
+        for bar in (error.colorbar, ex.panels["lod"].colorbar):
+            assert all(t.get_fontsize() >= size for t in bar.ax.get_xticklabels())
+    finally:
+        ex.close()

@@ -140,18 +140,24 @@ def plot_coverage_fraction(ax, source, *, colorbar: bool = True, title: bool = T
     return result
 
 
-def plot_area_error(ax, fraction, area, *, colorbar: bool = True, title: bool = True):
+def plot_area_error(ax, fraction, area, *, colorbar: bool = True, title: bool = True,
+                    bound: float | None = None):  # fmt: skip
     """Signed error of a coverage fraction against the exact area in each pixel.
 
     ``fraction`` is a multisampled Fill or Frame or an (H, W) array; ``area`` the exact area
     of the triangle in each pixel (:func:`teachraster.study.antialiasing.pixel_area`). Red:
     the samples saw too little of the triangle, blue: too much (the diverging map of the
     edge values); pixels where both are 0 are transparent. The title gives the mean and maximum absolute error.
+    ``bound``: the colours run from ``-bound`` to ``bound`` (default: the largest error
+    shown); maps meant to be compared need the same bound.
     """
     frac = fraction.coverage_fraction if isinstance(fraction, Fill | Frame) else fraction
     err = np.asarray(frac, dtype=np.float64) - np.asarray(area, dtype=np.float64)
     err = np.where((np.asarray(frac) > 0) | (np.asarray(area) > 0), err, np.nan)
-    bound = float(np.nanmax(np.abs(err), initial=0.0)) or 1.0
+    if bound is None:
+        bound = float(np.nanmax(np.abs(err), initial=0.0)) or 1.0
+    elif not (isinstance(bound, int | float) and np.isfinite(bound) and bound > 0):
+        raise ValueError(f"bound must be a positive finite number, got {bound!r}")
     result = _value_image(ax, err, SIGNED_CMAP, -bound, bound, colorbar,
                           "fraction − exact area")  # fmt: skip
     if title:

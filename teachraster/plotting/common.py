@@ -223,6 +223,12 @@ def fs(scale: float = 1.0) -> float:
     return scale * float(mpl.rcParams["font.size"])
 
 
+def bar_in(cax) -> dict:
+    """``Figure.colorbar`` arguments for a colour bar filling ``cax`` along its longer side."""
+    box = cax.get_position()
+    return {"cax": cax, "orientation": "horizontal" if box.width > box.height else "vertical"}
+
+
 def label_box(alpha: float = 0.85) -> dict:
     """A white rounded box behind a label, so it reads on top of coloured pixels."""
     return {"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none", "alpha": alpha}

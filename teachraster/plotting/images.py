@@ -23,6 +23,7 @@ from ..pipeline.rendering.render_triangles import Frame
 from .common import (
     Artists,
     as_trace,
+    bar_in,
     fs,
     label_box,
     lw,
@@ -231,6 +232,7 @@ class HeatmapArtists(Artists):
     maximum: float = float("nan")
     colorbar: object = None
     worst: tuple[int, int] | None = None  # (row, col) of the marked maximum
+    fixed_note: bool = False  # the note stays where it was put, off the picture
 
     def update(self, a, b) -> None:
         """Show the error of new images (same artists; the colour bar follows)."""
@@ -249,11 +251,12 @@ class HeatmapArtists(Artists):
             self.worst = (int(i), int(j))
             self.marker.set_data([j + 0.5], [i + 0.5])
             self.note.xy = (j + 0.5, i + 0.5)
-            # keep the note inside the image: it points left in the right half, and so on
-            self.note.set_position((-fs(1.2) if j > w / 2 else fs(1.2),
-                                    fs(1.2) if i > h / 2 else -fs(1.2)))  # fmt: skip
-            self.note.set_horizontalalignment("right" if j > w / 2 else "left")
-            self.note.set_text(f"max {m:.3g}")
+            if not self.fixed_note:
+                # keep the note inside the image: it points left in the right half, and so on
+                self.note.set_position((-fs(1.2) if j > w / 2 else fs(1.2),
+                                        fs(1.2) if i > h / 2 else -fs(1.2)))  # fmt: skip
+                self.note.set_horizontalalignment("right" if j > w / 2 else "left")
+            self.note.set_text(f"max {m:.3g}" + (" (ringed)" if self.fixed_note else ""))
             # a zero maximum has no pixel to point at: every pixel is one (all w equal)
             self.marker.set_visible(m > 0)
             self.note.set_visible(m > 0)
@@ -271,8 +274,9 @@ class HeatmapArtists(Artists):
 
 
 def plot_error_heatmap(
-    ax, a, b, *, label: str = "|a − b|", colorbar: bool = True, title: bool = True
-) -> HeatmapArtists:
+    ax, a, b, *, label: str = "|a − b|", colorbar: bool = True, title: bool = True,
+    cax=None, note_at: tuple[float, float] | None = None,
+) -> HeatmapArtists:  # fmt: skip
     """Heatmap of |a − b| with a colour bar, the maximum marked and stated in the title.
 
     The usual use: ``a`` affine and ``b`` perspective-correct values of one attribute, which
@@ -291,6 +295,13 @@ def plot_error_heatmap(
     title : bool
         Put ``"{label}: max ..."`` in the Axes title (the ``note`` by the marked pixel
         says it too).
+    cax : matplotlib Axes, optional
+        Where the colour bar goes (horizontal if ``cax`` is wider than tall); default:
+        beside ``ax``, taken from its room.
+    note_at : (float, float), optional
+        A fixed place for the note, in axes fraction of ``ax`` (its top right corner), e.g.
+        below the picture: there it hides no pixel, and needs no line to the ringed one.
+        Default: beside the marked pixel, with a line to it.
 
     Returns
     -------
@@ -302,16 +313,22 @@ def plot_error_heatmap(
     im = show_image(ax, err, cmap=ERROR_CMAP, vmin=0.0, vmax=1.0, zorder=0.5)
     marker = ax.plot([], [], "o", ms=ms(2.0), mfc="none", mec=COLORS["fill"], mew=ms(0.3),
                      zorder=5)[0]  # fmt: skip
-    note = ax.annotate(
-        "", (0, 0), xytext=(0, 0), textcoords="offset points", fontsize=fs(0.8),
-        color="black", bbox=label_box(0.9), zorder=7, annotation_clip=False,  # above labels
-        arrowprops={"arrowstyle": "-", "color": COLORS["fill"], "lw": ms(0.2)},
-    )  # fmt: skip
+    if note_at is None:
+        note = ax.annotate(
+            "", (0, 0), xytext=(0, 0), textcoords="offset points", fontsize=fs(0.8),
+            color="black", bbox=label_box(0.9), zorder=7, annotation_clip=False,  # above labels
+            arrowprops={"arrowstyle": "-", "color": COLORS["fill"], "lw": ms(0.2)},
+        )  # fmt: skip
+    else:
+        note = ax.annotate("", (0, 0), xytext=note_at, textcoords="axes fraction",
+                           fontsize=fs(), color="black", ha="right", va="top", zorder=7,
+                           annotation_clip=False)  # fmt: skip
     title_text = ax.title if title else None
-    result = HeatmapArtists(im, marker, note, title_text, label)
+    result = HeatmapArtists(im, marker, note, title_text, label, fixed_note=note_at is not None)
     result.update(a, b)
     if colorbar:
-        result.colorbar = ax.figure.colorbar(im, ax=ax, shrink=0.85, label=label)
+        where = {"ax": ax, "shrink": 0.85} if cax is None else bar_in(cax)
+        result.colorbar = ax.figure.colorbar(im, label=label, **where)
     return result
 
 

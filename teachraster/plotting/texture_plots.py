@@ -17,7 +17,7 @@ from matplotlib.patches import Rectangle
 
 from ..pipeline.rendering.render_triangles import Frame
 from ..pipeline.texturing.texture_filters import LevelsRead, nearest_level
-from .common import Artists, fs, lw, pixel_axes, rgba_image, set_image, show_image
+from .common import Artists, bar_in, fs, lw, pixel_axes, rgba_image, set_image, show_image
 from .style import ERROR_CMAP, OKABE_ITO
 
 #: One colour per triangle in quad plots, and one per mip level in LOD maps (levels beyond
@@ -188,7 +188,7 @@ def levels_read_image(read: LevelsRead, n_levels: int) -> np.ndarray:
 
 
 def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = True,
-                     title: str | None = "mip level(s) read") -> LevelsReadArtists:  # fmt: skip
+                     title: str | None = "mip level(s) read", cax=None) -> LevelsReadArtists:  # fmt: skip
     """The mip level(s) a filter reads at each pixel, as the engine decides them.
 
     Parameters
@@ -200,6 +200,9 @@ def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = Tr
         Levels in the pyramid (one colour, and one colour-bar tick, each).
     colorbar : bool
     title : str or None
+    cax : matplotlib Axes, optional
+        Where the colour bar goes (horizontal if ``cax`` is wider than tall); default:
+        beside ``ax``, taken from its room.
 
     Returns
     -------
@@ -215,8 +218,8 @@ def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = Tr
         colours = [LEVEL_COLORS[i % len(LEVEL_COLORS)] for i in range(n_levels)]
         key = ScalarMappable(BoundaryNorm(np.arange(n_levels + 1) - 0.5, n_levels),
                              ListedColormap(colours))  # fmt: skip
-        cbar = ax.figure.colorbar(key, ax=ax, shrink=0.85, ticks=np.arange(n_levels),
-                                  label="level")  # fmt: skip
+        where = {"ax": ax, "shrink": 0.85} if cax is None else bar_in(cax)
+        cbar = ax.figure.colorbar(key, ticks=np.arange(n_levels), label="level", **where)
     if title:
         ax.set_title(title)
     return LevelsReadArtists(im, cbar, n_levels)

@@ -4,6 +4,7 @@ detail and the error against the true footprint average change."""
 from __future__ import annotations
 
 import ipywidgets as widgets
+import matplotlib as mpl
 import numpy as np
 
 from ..pipeline.geometry.camera import Camera
@@ -38,29 +39,41 @@ ALT = "the filtered texture, its mip levels and its error"
 TRUTH_CACHE = 32
 
 
-def explorer_axes(fig, height: int, width: int) -> list:
-    """Size ``fig`` to the notebook column and add the explorer's three Axes.
+def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
+    """Size ``fig`` to the notebook column and add the explorer's Axes.
 
-    The filtered image, where moiré shows, is large on the left; the mip level each pixel
-    reads and the error against the footprint mean are stacked on its right, each with room
-    for a colour bar (which takes a fifth of its Axes) and its labels. A 2 x 2 grid at the
-    classroom fonts left a quarter of the widget empty and every picture small.
+    Three panels in a row, as large as each other: the filtered image, the mip level(s)
+    each pixel reads and the error against the footprint mean, with a colour bar under each
+    of the last two (its tick labels and label below it). The lesson asks students to read
+    the error panel: stacked beside a large image, it and the level panel were thumbnails
+    (about 125 px wide at 1024 x 768, their labels 9-10 px).
+
+    Returns
+    -------
+    panels : [Axes, Axes, Axes]
+    bars : [Axes, Axes]
+        The colour bars' Axes, under the level and the error panel.
+    note_at : (float, float)
+        Where the error's maximum goes, in axes fraction of the error panel: right-aligned
+        below its colour bar's tick labels, off the picture.
     """
-    s, r = font_scale(), width / height
-    left, bottom, title = 0.15, 0.15, 0.45 * s + 0.1  # no tick labels: titles only
-    gap, bar = 0.35 * s, 0.75 * s  # after the big panel; a colour bar's ticks and label
-    # the column: left + (2 h + title) r + gap + (h r / 0.8 + 0.3) + bar, for panel height h
-    h = (column_inches(fig) - left - title * r - gap - 0.3 - bar) / (2 * r + r / 0.8)
-    big_h = 2 * h + title  # as tall as the two small panels and the title between them
-    fw, fh = column_inches(fig), title + big_h + bottom
+    s, r, fw = font_scale(), width / height, column_inches(fig)
+    side, gap = 0.15, 0.2 * s  # margins; between panels (room for the titles)
+    w = (fw - 2 * side - 2 * gap) / 3
+    h = w / r
+    title = 0.3 * s + 0.1  # no tick labels: titles only
+    pad, bar = 0.08 * s, 0.1 * s  # between a panel and its colour bar; the bar
+    below = pad + bar + 0.47 * s  # the bar, its tick labels and the row of its label
+    fh = title + h + below
     fig.set_size_inches(fw, fh)
-    x_small = left + big_h * r + gap
-    small_w = h * r / 0.8 + 0.3
-    return [
-        fig.add_axes((left / fw, bottom / fh, big_h * r / fw, big_h / fh)),
-        fig.add_axes((x_small / fw, (bottom + h + title) / fh, small_w / fw, h / fh)),
-        fig.add_axes((x_small / fw, bottom / fh, small_w / fw, h / fh)),
-    ]
+    panels, bars = [], []
+    for k in range(3):
+        x = side + k * (w + gap)
+        panels.append(fig.add_axes((x / fw, below / fh, w / fw, h / fh)))
+        if k:
+            bars.append(fig.add_axes((x / fw, (below - pad - bar) / fh, w / fw, bar / fh)))
+    label_row = (pad + bar + 0.245 * s) / h  # below the tick labels, as the bar's label
+    return panels, bars, (1.0, -label_row)
 
 
 class FilterExplorer:
@@ -153,14 +166,18 @@ class FilterExplorer:
         self._render()
         with style_context(style):
             self.fig = new_figure((13, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = explorer_axes(self.fig, height, width)
+            axes, bars, note_at = explorer_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
-                "lod": plot_levels_read(axes[1], self.levels_read, self.n_levels),
-                "error": plot_error_heatmap(
-                    axes[2], self.image, self.truth, label="|error|", title=False
-                ),  # fmt: skip
-            }
+                "lod": plot_levels_read(axes[1], self.levels_read, self.n_levels, cax=bars[0]),
+                "error": plot_error_heatmap(axes[2], self.image, self.truth, label="|error|",
+                                            title=False, cax=bars[1], note_at=note_at),
+            }  # fmt: skip
+            for bar in bars:  # read from the back of the room: the size of axis labels
+                bar.tick_params(labelsize=mpl.rcParams["axes.labelsize"])
+            # the title says what the colours are; the label's row holds the maximum (the
+            # note), clear of the colour bar, which is put back from a cache per range
+            self.panels["error"].colorbar.set_label("")
             names = ("filtered", "mip level(s) read", "error vs footprint mean")
             for ax, name in zip(axes, names):
                 ax.set_title(name)
