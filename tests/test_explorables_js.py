@@ -602,6 +602,13 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
         assert f"{data['clip'][k][3]:g}" in html["vertex"]
         assert str(float(f"{data['window'][k][0]:.5g}")).rstrip("0").rstrip(".") in html["viewport"]
     assert f"{data['fragments']} pixel centres" in html["rasterize"]
+    # the guard band render clips this image with (review r7: not the clipper's default 2**20),
+    # in plain digits, just inside lesson 02's exact range of 2**21 px
+    from teachraster.pipeline.rendering.stages import guard_band
+
+    assert data["guard"] == guard_band(16, 16, 8) and data["exactPx"] == 2**21
+    assert data["guardPx"] < 2**21 and "e+" not in html["clip"]
+    assert f"{round(data['guard']):,} w" in html["clip"] and "2,097,152 px" in html["clip"]
     # early-z as lesson 05a teaches it: a depth-writing shader loses the early test, a
     # discarding one keeps it and delays only the write (not "neither discards nor writes")
     assert "writes its own depth turns the early test off" in html["depth"]
