@@ -190,6 +190,11 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert rates["stepped, float (x += du/dv)"] > 0.2
     assert rates["computed crossing (section 4)"] < 0.02
     assert rates["stepped, fixed point"] == 0
+    # c22 quotes the large grid's share of pairs the float DDA cracks or draws twice (review
+    # r7 01-5: "a few in a thousand" against the printed 0.6 %); c23 ends on the 64 x 64 grid
+    assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
+    text = "\n".join(_cells("01_span_tables", "markdown"))
+    assert "0.6 % of the\npairs (by the float DDA)" in text
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
     assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
