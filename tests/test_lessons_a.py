@@ -282,8 +282,14 @@ def test_rules_come_with_a_standards_table(name):
 def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
     assert (ns.counts["top-left rule"] > 0).sum() == 144  # the predicted answer
-    saved = 100 * (1 - ns.with_bailout / ns.without)
-    assert abs(saved - round(100 * (1 - ns.runs.sum() / (3 * ns.box.size)))) < 1
+    # review r7 02-1: the share saved was a guess to type; now the pixels where the loop
+    # stops early are clicked on the box, and the saving follows from them by a count
+    b = ns.box
+    assert np.array_equal(ns.saves[b.row0 : b.row1, b.col0 : b.col1], ns.by_hand < 3)
+    assert ns.saves.sum() == ns.n_first + ns.n_second and not ns.saves[ns.fill.coverage].any()
+    assert ns.n_third > 0  # outside, yet all three tests: the order of the tests matters
+    assert ns.without - ns.with_bailout == 2 * ns.n_first + ns.n_second  # the printed sum
+    assert "answer=saves" in next(c for c in _cells("02_half_planes", "code") if "q_bailout =" in c)
     assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
 
 
@@ -295,6 +301,10 @@ def test_02_barycentrics_and_the_edge_function_bits():
     assert ns.area2 == pytest.approx(2 * abs(ns.tri.signed_area))
     assert np.allclose(ns.lam, tr.barycentric(ns.xy, ns.outside_point))  # the last one printed
     side = 2 * ns.limit * 2**8  # the guard band's square, in units (the loop's last case)
+    # review r7 0: the reach printed is the one lesson 00's map shows, inside 2**21 px
+    from teachraster.widgets.pipeline_map import tour_stages
+
+    assert ns.limit == 2**21 and ns.reach == tour_stages()["guardPx"] < ns.limit
     assert ns.worst == side**2 and ns.n_bits == side.bit_length() * 2 == 62 <= 64
     text = "\n".join(_cells("02_half_planes", "markdown"))
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
