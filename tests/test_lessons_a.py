@@ -578,7 +578,7 @@ def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
     ns = lesson("02_half_planes")
     cells = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
-    ask = next(i for i, t in enumerate(text) if "PredictPixels(" in t)
+    ask = next(i for i, t in enumerate(text) if "PredictPixels(" in t and "upper" in t)
     rule = next(i for i, t in enumerate(text) if "(interior to its right)" in t)
     assert ask < rule
     assert "left** edge" not in "".join(text[:ask]) and "upper_owns" in text[ask]
