@@ -127,6 +127,9 @@ def test_00_facing_and_the_two_methods():
     assert ns.same  # "they fill the same pixels (the next cell checks)"
     # the predicted answer: the bounding box's centres, 12 x 12 (review r3 00-2: not a guess)
     assert ns.box.size == 144 == ns.halfplane.trace.n_work and ns.span.trace.n_work == 12
+    # review r7 00-1: the caption's v_mid 5.19922 is v2's y = 5.2 snapped, printed beside it
+    assert round(ns.snapped[1, 1], 5) == round(ns.span.trace.span.sorted_xy[1, 1], 5) == 5.19922
+    assert "snapping" in "\n".join(_cells("00_tour", "markdown"))
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
     # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
