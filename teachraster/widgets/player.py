@@ -41,7 +41,8 @@ INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspect
 ONE_SAMPLE = "1 (centre)"
 TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
 #: The comparison's greatest height on screen (px): with the title and the controls above it,
-#: the open comparison fits a 900-px-high screen (the steps fold meanwhile).
+#: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
+#: interpolation toggle opened it).
 COMPARISON_MAX_PX = 660
 
 
