@@ -172,7 +172,12 @@ def test_cracks_reroll_and_tally(lesson):
     )
     assert listed.get_attribute("aria-pressed") == "true"
     state = _kernel(lesson, "cracks.state")
-    assert state["stored"] and state["asListed"] and state["tally"]["integer"]["pairs"] == 1002
+    # the toggle changed with it: the tally starts again (review r7: it read "0 of 1001" after
+    # a thousand more, the opening pair drawn the other way still counted)
+    assert state["stored"] and state["asListed"] and state["tally"]["integer"]["pairs"] == 0
+    w.get_by_role("button", name="Roll 1000 more").click()
+    w.get_by_text("of 1000 (").first.wait_for(timeout=10_000)
+    assert _kernel(lesson, "cracks.state")["tally"]["integer"]["pairs"] == 1000
     assert not lesson.errors, lesson.errors[:3]
 
 

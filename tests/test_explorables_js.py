@@ -252,12 +252,43 @@ def test_stored_pair_cracks_as_the_reference_says():
     (g,) = call_js(CRACKS, [("panelLayout", [size, size])])
     cell, reach = g["cell"], g["radius"] + 1.5
     for row, col in listed["cracks"]:
-        for k in range(3):
-            x0 = g["m"]["left"] + k * (g["panelW"] + g["gap"])
-            cx, cy = x0 + (col + 0.5) * cell, g["m"]["top"] + (row + 0.5) * cell
+        for x0, y0 in g["origins"]:
+            cx, cy = x0 + (col + 0.5) * cell, y0 + (row + 0.5) * cell
             assert x0 - g["gap"] / 2 <= cx - reach and cx + reach <= x0 + g["panelW"] + g["gap"] / 2
             assert 0 <= cx - reach and cx + reach <= g["width"]
-            assert g["m"]["top"] - 14 <= cy - reach and cy + reach <= g["height"] - 16
+            assert y0 - 14 <= cy - reach and cy + reach <= min(y0 + g["panelH"] + 14, g["height"])
+
+
+def test_crack_panels_fit_the_column_at_1024_px_unscaled():
+    """Review r7: three across, the 16 x 16 explorer was 936 px wide and shrank to 585 px in
+    JupyterLab's column at 1024 px (type of 7-8 px); two across plus the key it fits 1:1."""
+    (g,) = call_js(CRACKS, [("panelLayout", [16, 16])])
+    assert len(g["origins"]) == 3 and g["width"] <= 585
+    boxes = [(x, y, x + g["panelW"], y + g["panelH"]) for x, y in [*g["origins"], g["key"]]]
+    for i, a in enumerate(boxes):  # no two places overlap, and all lie inside the canvas
+        assert 0 <= a[0] and a[2] <= g["width"] and 0 <= a[1] and a[3] <= g["height"]
+        for b in boxes[i + 1 :]:
+            assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
+
+
+def test_crack_tally_starts_again_whatever_changes_the_evaluation():
+    """Review r7 contradiction 2: "Show a pair that cracks" turned the evaluation toggle on
+    but kept counting ("0 of 1001"); any change of it now starts the tally again."""
+    pair = [[[0.5, 0.5], [9.5, 9.5], [9.5, 0.5]], [[9.5, 9.5], [0.5, 0.5], [0.5, 9.5]]]
+    (tally,) = call_js(CRACKS, [("tallyOver", [[pair], 16, 16])])
+    assert tally["integer"]["pairs"] == 1
+    got = call_js(CRACKS, [
+        ("listedBy", [{"asListed": False, "tally": tally}, True]),  # turned on: from nothing
+        ("listedBy", [{"asListed": True, "tally": tally}, True]),  # unchanged: kept
+        ("listedBy", [{"asListed": True, "tally": tally}, False]),  # turned off: from nothing
+        ("listedBy", [{"asListed": False, "tally": tally}, True, True]),  # a tally restored
+    ])  # fmt: skip
+    assert [s["tally"]["integer"]["pairs"] for s in got] == [0, 1, 0, 1]
+    assert [s["asListed"] for s in got] == [True, True, False, True]
+    source = (Path(tr.__file__).parent / "widgets/static/explore_cracks.js").read_text()
+    # the stored pair, the toggle and the kernel all set it through listedBy, the one place
+    # that assigns it
+    assert source.count("listedBy(state,") == 1 + 3 and source.count("state.asListed = ") == 1
 
 
 def test_default_pair_shows_the_dda_giving_ties_to_the_wrong_triangle():
@@ -602,6 +633,13 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
         assert f"{data['clip'][k][3]:g}" in html["vertex"]
         assert str(float(f"{data['window'][k][0]:.5g}")).rstrip("0").rstrip(".") in html["viewport"]
     assert f"{data['fragments']} pixel centres" in html["rasterize"]
+    # the guard band render clips this image with (review r7: not the clipper's default 2**20),
+    # in plain digits, just inside lesson 02's exact range of 2**21 px
+    from teachraster.pipeline.rendering.stages import guard_band
+
+    assert data["guard"] == guard_band(16, 16, 8) and data["exactPx"] == 2**21
+    assert data["guardPx"] < 2**21 and "e+" not in html["clip"]
+    assert f"{round(data['guard']):,} w" in html["clip"] and "2,097,152 px" in html["clip"]
     # early-z as lesson 05a teaches it: a depth-writing shader loses the early test, a
     # discarding one keeps it and delays only the write (not "neither discards nor writes")
     assert "writes its own depth turns the early test off" in html["depth"]

@@ -218,6 +218,26 @@ def test_the_interpolation_comparison_leaves_no_quarter_empty():
     player.close()
 
 
+def test_interpolation_toggle_opens_the_comparison_below_the_steps(player):
+    """Review r7 00-2: pressing "affine" opened the comparison in the steps' place and the
+    whole step player vanished. The toggle, one of the steps' controls, now opens it below
+    them; opened by its own header it still takes their place (the two fit one screen)."""
+    shown = lambda: player.frames.layout.display != "none"  # noqa: E731
+    assert player.comparison.selected_index is None and shown()
+    player.interpolation.value = "affine"
+    assert player.comparison.selected_index == 0 and shown()  # open, the steps still there
+    player.interpolation.value = "perspective"
+    assert player.comparison.selected_index == 0 and shown()
+    player.comparison.selected_index = None  # closed by its header
+    assert shown()
+    player.comparison.selected_index = 0  # opened by its header: in the steps' place
+    assert not shown()
+    player.interpolation.value = "affine"  # already open: as it was
+    assert player.comparison.selected_index == 0 and not shown()
+    player.comparison.selected_index = None
+    assert shown()
+
+
 def test_interpolation_toggle_changes_the_interpolation_view(player):
     view = player.interp_view
     assert view is not None

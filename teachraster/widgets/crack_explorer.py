@@ -3,10 +3,11 @@
 Ek (*Triangles and Perspective Correct Interpolation*, §1.1) fills span by span between edge
 crossings. In floating point a crossing that should be exactly a pixel centre can land a hair
 to either side: the two triangles sharing that edge then both draw the pixel, or neither does.
-The explorer fills a random pair (vertices on pixel centres, sharing an edge) three ways side
-by side, the float crossing + ceil, the float DDA (x += Δu/Δv) and the integer edge functions,
+The explorer fills a random pair (vertices on pixel centres, sharing an edge) three ways (two
+panels side by side, the third below with a key), the float crossing + ceil, the float DDA (x += Δu/Δv) and the integer edge functions,
 marks the tie pixels each gives to the wrong triangle, the cracked and the doubly drawn ones,
-rerolls, and keeps a running tally. (Measured: when both triangles evaluate the shared edge
+rerolls, and keeps a running tally, which starts again whenever the way the edges are
+evaluated changes (the toggle, the stored pair, the kernel). (Measured: when both triangles evaluate the shared edge
 alike, as lesson 01's loops do, rounding never cracks it or draws a pixel twice; it gives the
 tie to the wrong triangle. Evaluated from opposite ends, it can crack, rarely: so rarely that
 random pairs on a small grid hardly ever show it, and a button loads a stored pair that does.)
@@ -32,7 +33,7 @@ class CrackExplorer(Explorable):
     Parameters
     ----------
     width, height : int
-        The grid of each panel (at most 40 each: three panels share a notebook column). The
+        The grid of each panel (at most 40 each: two panels share a notebook column). The
         stored pair that cracks needs 16 x 16 (the default); on a smaller grid it is not offered.
     seed : int
         Seed of the page's random pairs (the same seed draws the same pairs). The default,

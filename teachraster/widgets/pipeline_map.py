@@ -20,12 +20,13 @@ import numpy as np
 
 from ..core.edges import setup_edges
 from ..core.fill import rasterize
-from ..core.snapping import SUBPIXEL_BITS, units_per_pixel
+from ..core.snapping import SUBPIXEL_BITS, UNIT_LIMIT, units_per_pixel
 from ..core.triangle import Triangle
 from ..core.validate import as_finite, as_float, as_size
-from ..pipeline.geometry.clipping import DEFAULT_GUARD, INSIDE, classify
+from ..pipeline.geometry.clipping import INSIDE, classify
 from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
+from ..pipeline.rendering.stages import guard_band
 from .explorable import Explorable, esm_source
 
 #: The tour triangle of lesson 00 (window pixels, y down), its w and its attribute u.
@@ -71,11 +72,15 @@ def tour_stages(xy=TOUR_XY, w=TOUR_W, u=TOUR_U, width: int = 16, height: int = 1
     box = fill.trace.bbox
     colour = colormaps["viridis"](np.nan_to_num(frame.attrs[..., 0]))[..., :3]
     colour[~frame.coverage] = 0.13  # the cleared colour target
+    # the guard band render clips this image with (not the clipper's default): its reach in
+    # window pixels, and the range where the fixed-point edge functions stay exact
+    guard = guard_band(width, height, SUBPIXEL_BITS)
     return {
         "width": width, "height": height, "near": near, "far": far,
         "clip": clip.tolist(), "u": list(map(float, u)), "w": list(map(float, w)),
-        "inside": [bool(s == INSIDE) for s in classify(clip[None], DEFAULT_GUARD)],
-        "guard": DEFAULT_GUARD,
+        "inside": [bool(s == INSIDE) for s in classify(clip[None], guard)],
+        "guard": guard, "guardPx": (guard + 1) * max(width, height) / 2,
+        "exactPx": UNIT_LIMIT / units_per_pixel(SUBPIXEL_BITS),
         "ndc": (clip[:, :3] / clip[:, 3:]).tolist(), "window": window.tolist(),
         "snapped": (setup.p[given] / units_per_pixel(SUBPIXEL_BITS)).tolist(),
         "area": float(setup.original_area2) / units_per_pixel(SUBPIXEL_BITS) ** 2 / 2,

@@ -41,7 +41,8 @@ INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspect
 ONE_SAMPLE = "1 (centre)"
 TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
 #: The comparison's greatest height on screen (px): with the title and the controls above it,
-#: the open comparison fits a 900-px-high screen (the steps fold meanwhile).
+#: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
+#: interpolation toggle opened it).
 COMPARISON_MAX_PX = 660
 
 
@@ -119,8 +120,9 @@ class FillPlayer(Holdable):
     interp_view : InterpolationView or None
         None when the triangle has no attributes.
     comparison : ipywidgets.Accordion
-        Folds the interpolation figure under the steps (only with attributes); the
-        interpolation toggle unfolds it.
+        Folds the interpolation figure under the steps (only with attributes). Opened by
+        its header it takes the steps' place (they fold, so that the two fit one screen);
+        the interpolation toggle opens it below the steps, which stay.
     fill : Fill
         The fill on show.
 
@@ -282,16 +284,21 @@ class FillPlayer(Holdable):
         self.comparison = widgets.Accordion(
             children=[figure], selected_index=None,
             titles=("affine / perspective-correct: both interpolations, their error, and both "
-                    "along the row of the largest error",),
+                    "along the row of the largest error (opened here, in the steps' place)",),
         )  # fmt: skip
         self._interp_stale = False
+        self._keep_steps = False  # opened by the interpolation toggle: the steps stay
         self.comparison.observe(self._refresh_comparison, "selected_index")
         self.comparison.observe(self._fold_steps, "selected_index")
         return [self.comparison]
 
     def _fold_steps(self, change=None) -> None:
-        """The steps fold while the comparison is open, and come back as it closes."""
-        self.frames.layout.display = "none" if self.comparison.selected_index is not None else ""
+        """The steps fold while the comparison is open, and come back as it closes; opened by
+        the interpolation toggle, a control of the steps, it comes below them and they stay
+        (review r7: pressing "affine" took the whole step player away)."""
+        opened = self.comparison.selected_index is not None
+        self._keep_steps = opened and self._keep_steps
+        self.frames.layout.display = "none" if opened and not self._keep_steps else ""
 
     def _publish(self, step: int) -> None:
         """Send the fill on show to the page: its steps' texts and the picture of ``step``.
@@ -451,8 +458,11 @@ class FillPlayer(Holdable):
             if change["owner"] is self.interpolation:
                 self.interp_view.highlight(self.interpolation.value)
                 self._interp_blit.invalidate()  # the highlight is in the background
-                # the toggle's effect is in the folded figure: unfold it, or nothing shows
-                self.comparison.selected_index = 0
+                # the toggle's effect is in the folded figure: unfold it, or nothing shows;
+                # below the steps, which stay (it is one of their controls)
+                if self.comparison.selected_index is None:
+                    self._keep_steps = True
+                    self.comparison.selected_index = 0
             # folded, the figure is drawn when unfolded (a toggle answers sooner)
             self._interp_stale = True
             later(self._refresh_comparison)

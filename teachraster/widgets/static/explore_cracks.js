@@ -145,14 +145,15 @@ function mount(el, data, host) {
     "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
     "(not the stored pair that cracks) and starts again when the way the edges are " +
     "evaluated changes.");
-  const { cell, gap, m, panelW, width, height } = panelLayout(W, H);
+  const g = panelLayout(W, H);
+  const { cell, width, height } = g;
   const [canvas, ctx] = makeCanvas(width, height,
     "the same pair of triangles filled three ways, cracks and double draws marked");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div");
   const showStored = (e) => {
     state.stored = true;
-    state.asListed = true;
+    listedBy(state, true);
     pair = CRACKING_PAIR;
     controls.sync();
     paint.request(e);
@@ -187,19 +188,20 @@ function mount(el, data, host) {
     const found = METHODS.map(([meth]) => faults(pair[0], pair[1], W, H, meth, state.asListed));
     const exact = found[2];
     METHODS.forEach(([, name], k) => {
-      const x0 = m.left + k * (panelW + gap);
-      drawPanel(ctx, found[k], exact, pair, { x0, y0: m.top, cell, W, H });
+      const [x0, y0] = g.origins[k];
+      drawPanel(ctx, found[k], exact, pair, { x0, y0, cell, W, H });
       ctx.fillStyle = "#111";
-      ctx.font = "bold 14px sans-serif";
-      ctx.fillText(name, x0, m.top - 16);
+      ctx.font = "bold 15px sans-serif";
+      ctx.fillText(name, x0, y0 - ringReach(cell) - 6);
     });
+    drawKey(ctx, g.key, cell);
     table.innerHTML = tallyTable(state.tally);
     readout.innerHTML = explainPixel(pair, ui.hover, W, H, found, state.asListed);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);
   const point = (p, e) => {
-    ui.hover = p ? pixelUnder(p, m, cell, panelW, gap, W, H) : null;
+    ui.hover = p ? pixelUnder(p, g, W, H) : null;
     paint.request(e);
   };
   pointerInput(canvas, { onHover: point, onClick: point });
@@ -216,7 +218,11 @@ function mount(el, data, host) {
       const moved = (s.seed !== undefined && s.seed !== state.seed)
         || (s.roll !== undefined && s.roll !== state.roll)
         || (s.stored !== undefined && s.stored !== state.stored);
-      Object.assign(state, s);
+      const { asListed, ...rest } = s;
+      // a tally of its own with the change (a state restored) stays; ours echoed back does not
+      const theirs = s.tally !== undefined && JSON.stringify(s.tally) !== JSON.stringify(state.tally);
+      if (asListed !== undefined) listedBy(state, asListed, theirs);
+      Object.assign(state, rest);
       if (moved) {
         rand = randomStream(state.seed);
         for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H);
@@ -233,12 +239,22 @@ const CRACKS_NOTE = "Both triangles walk the shared edge from its upper end, as 
   "edge never cracks. Evaluated from the end each triangle lists first, the two round " +
   "differently: then, rarely, it can; <b>Show a pair that cracks</b> loads one.";
 
+// Set how the edges are evaluated. Whatever changes it (the toggle, "Show a pair that cracks",
+// the kernel), a change starts the tally again, as the caption says: its counts are of one way
+// (review r7: after "Show a pair that cracks" it went on counting the other way's pairs).
+// `keepTally`: a tally arrives with the change (the kernel restoring a state), keep that one.
+export function listedBy(state, asListed, keepTally = false) {
+  const value = Boolean(asListed);
+  if (value !== Boolean(state.asListed) && !keepTally) state.tally = emptyTally();
+  state.asListed = value;
+  return state;
+}
+
 // Reroll, a thousand more, the tally reset, the edges evaluated as listed, the stored pair
 function crackControls(state, host, roll, repaint, showStored) {
   const listed = button("evaluate each edge from the end its triangle lists first", (e) => {
-    state.asListed = !state.asListed;
+    listedBy(state, !state.asListed);
     sync();
-    state.tally = emptyTally();
     repaint(e);
     host.setState({ asListed: state.asListed, tally: state.tally });
   }, Boolean(state.asListed));
@@ -259,28 +275,40 @@ function crackControls(state, host, roll, repaint, showStored) {
 // The ring around a crack, as a multiple of the cell: it circles the pixel square (> 0.71).
 export const RING = 0.85;
 
-// Where the three panels go. The margins and the gap leave room for the ring around a crack
-// in a border pixel, so that it is never cut off by the canvas or hidden by the next panel.
+// Where the three panels go: two side by side and the third below the first, the key beside
+// it. Three across, a 16 x 16 pair was 936 px wide and shrank to 585 in JupyterLab's column at
+// 1024 px with the file browser open (review r7: 7-8 px type); two across it is 558 px wide and
+// drawn 1:1 there. The margins and the gaps leave room for the ring around a crack in a border
+// pixel, so that it is never cut off by the canvas or hidden by the next panel.
 export function panelLayout(W, H) {
-  const cell = Math.max(16, Math.min(26, Math.floor(300 / Math.max(W, H))));
+  const cell = Math.max(16, Math.min(26, Math.floor(256 / Math.max(W, H))));
   const ring = ringReach(cell);
   const gap = Math.max(26, 2 * ring + 2);
-  const m = { left: ring, top: 30 + ring };
+  const m = { left: ring, top: TITLE + ring };
   const panelW = W * cell;
-  return { cell, gap, m, panelW, radius: RING * cell, width: m.left + 3 * panelW + 2 * gap + ring,
-    height: m.top + H * cell + ring + 18 };
+  const panelH = H * cell;
+  const below = ring + COUNT + TITLE + ring; // under a panel: its ring, its count, the next title
+  const origins = [0, 1, 2, 3].map((k) => [m.left + (k % 2) * (panelW + gap),
+    m.top + Math.floor(k / 2) * (panelH + below)]);
+  return { cell, gap, m, panelW, panelH, origins: origins.slice(0, 3), key: origins[3],
+    radius: RING * cell, width: m.left + 2 * panelW + gap + ring,
+    height: m.top + 2 * panelH + below + ring + COUNT };
 }
+
+// the height of a panel's title above it and of its count line below it (px)
+const TITLE = 28;
+const COUNT = 20;
 
 // how far the ring reaches beyond its pixel, its line width included
 const ringReach = (cell) => Math.ceil((RING - 0.5) * cell) + 3;
 
-function pixelUnder(p, m, cell, panelW, gap, W, H) {
-  const k = Math.floor((p[0] - m.left) / (panelW + gap));
-  const x = p[0] - m.left - k * (panelW + gap);
-  const col = Math.floor(x / cell);
-  const row = Math.floor((p[1] - m.top) / cell);
-  if (k < 0 || k > 2 || col < 0 || col >= W || row < 0 || row >= H) return null;
-  return { panel: k, row, col };
+function pixelUnder(p, g, W, H) {
+  for (const [k, [x0, y0]] of g.origins.entries()) {
+    const col = Math.floor((p[0] - x0) / g.cell);
+    const row = Math.floor((p[1] - y0) / g.cell);
+    if (col >= 0 && col < W && row >= 0 && row < H) return { panel: k, row, col };
+  }
+  return null;
 }
 
 function drawPanel(ctx, f, exact, pair, g) {
@@ -302,7 +330,7 @@ function drawPanel(ctx, f, exact, pair, g) {
     for (let c = 0; c < W; c++) {
       const on = onSegment(setup.given[0], setup.given[1], centreUnits(setup, r, c));
       ctx.fillStyle = on ? "#000" : "#999";
-      const d = on ? 5 : 2;
+      const d = on ? 6 : 2;
       ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
     }
   }
@@ -359,10 +387,42 @@ function drawPanel(ctx, f, exact, pair, g) {
   }
   ctx.textAlign = "left";
   ctx.fillStyle = "#111";
-  ctx.font = "13px sans-serif";
-  const said = `${f.swapped.length} given to the wrong triangle, ${f.cracks.length} cracked, ` +
+  ctx.font = "14px sans-serif";
+  const said = `${f.swapped.length} stolen (⇄), ${f.cracks.length} cracked, ` +
     `${f.doubles.length} doubled`;
-  ctx.fillText(said, x0, y0 + H * cell + ringReach(cell) + 13); // below a ring in the last row
+  ctx.fillText(said, x0, y0 + H * cell + ringReach(cell) + 14); // below a ring in the last row
+}
+
+// The key, in the fourth place: each mark as the panels draw it, in type as large as theirs.
+function drawKey(ctx, [x0, y0], cell) {
+  const rows = [["A (blue) and B (orange) share the", null], ["thick edge p–q. In each panel:", null],
+    ["a centre on p–q: a tie", "tie"], ["a tie the wrong triangle drew", "⇄"],
+    ["drawn twice", "2"], ["drawn by neither: a crack", "✕"],
+    ["unlike the integer fill", "box"]];
+  ctx.textAlign = "left";
+  rows.forEach(([text, mark], i) => {
+    const y = y0 + 12 + 26 * i;
+    const x = mark ? x0 + 30 : x0;
+    ctx.fillStyle = "#111";
+    ctx.font = "14px sans-serif";
+    ctx.fillText(text, x, y + 5);
+    const cx = x0 + 10;
+    if (mark === "tie") ctx.fillRect(cx - 3, y - 3, 6, 6);
+    if (mark === "box") {
+      ctx.setLineDash([3, 2]);
+      ctx.lineWidth = 1.5;
+      ctx.strokeStyle = "#000";
+      ctx.strokeRect(cx - cell / 2 + 2, y - cell / 2 + 2, cell - 4, cell - 4);
+      ctx.setLineDash([]);
+    }
+    if (mark && mark.length === 1) {
+      ctx.font = `bold ${Math.round(cell * (mark === "⇄" ? 0.95 : 0.7))}px sans-serif`;
+      ctx.textAlign = "center";
+      ctx.fillStyle = mark === "⇄" ? "#000" : OKABE.vermillion;
+      ctx.fillText(mark, cx, y + cell * 0.3);
+      ctx.textAlign = "left";
+    }
+  });
 }
 
 // every digit of a double that matters (17 significant), trailing zeros dropped

@@ -295,10 +295,12 @@ function sprite(text, colour, size, dpr) {
 }
 
 // three sign glyphs per centre: E12, E23, E31 of the chosen triangle, in their colours
+// (review r7 02-4: at 0.32 of a cell the signs were 11 px in the 585-px column at 1024 px;
+// at 0.38 they are 13, the three still inside their pixel)
 function drawSigns(ctx, setup, W, H, cell, m) {
-  const size = Math.max(10, Math.round(cell * 0.32));
+  const size = Math.max(12, Math.round(cell * 0.38));
   const dpr = ctx.canvas.logical ? ctx.canvas.logical.dpr : 1;
-  const gap = cell * 0.26;
+  const gap = cell * 0.28;
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
       const e = givenValues(setup, r, c);

@@ -3,19 +3,22 @@
 // triangle's data there. Every number is the engine's (teachraster.widgets.pipeline_map
 // computes them); this file only lays them out.
 
+// [key, name, lessons, what it does]; "|" breaks the name or the lessons into lines
 export const STAGES = [
-  ["vertex", "vertex shader", "04, 05a", "model → clip space"],
+  ["vertex", "vertex|shader", "04, 05a", "model → clip space"],
   ["assembly", "primitive|assembly", "02", "vertices → triangles"],
   ["clip", "clipping|(guard band)", "05a", "near/far; x, y only beyond the guard band"],
   ["divide", "divide by w", "04, 05a", "clip → NDC"],
   ["viewport", "viewport", "05a, 05b", "NDC → window x, y, depth"],
-  ["setup", "triangle set-up", "01, 02, 03", "edges, facing, culling, bounding box"],
-  ["rasterize", "rasterisation", "01–04 07 08 10 12", "the pixel centres inside become fragments"],
-  ["fragment", "fragment shader", "04, 09", "interpolated attributes → colour"],
-  ["depth", "depth / stencil|test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
+  ["setup", "triangle|set-up", "01, 02, 03", "edges, facing, culling, bounding box"],
+  ["rasterize", "rasterisation", "01–04, 07,|08, 10, 12", "the pixel centres inside become fragments"],
+  ["fragment", "fragment|shader", "04, 09", "interpolated attributes → colour"],
+  ["depth", "depth and|stencil test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
   ["blend", "blending", "12", "colour → the colour target"],
 ];
 
+// a large number in plain digits, grouped by thousands (never in e-notation)
+export const digits = (x) => String(Math.round(x)).replace(/\B(?=(\d{3})+(?!\d))/g, ",");
 const num = (x, d = 4) => (x === null || x === undefined ? "–" : fmt(x, d));
 const row = (cells, head = false) =>
   `<tr>${cells.map((c) => (head ? `<th>${c}</th>` : `<td>${c}</td>`)).join("")}</tr>`;
@@ -37,7 +40,9 @@ export function stageHtml(data, key) {
     case "clip":
       return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w. Real GPUs clip " +
         "only against the near and far planes (and w &gt; 0): x and y are clipped only beyond " +
-        `a guard band (here ${num(data.guard)} × the viewport), the rasteriser's bounding box ` +
+        `a guard band, here |x|, |y| ≤ ${digits(data.guard)} w (in the window, |x|, |y| &lt; ` +
+        `${digits(data.guardPx)} px), just inside the ${digits(data.exactPx)} px within which ` +
+        "the integer edge functions of lesson 02 stay exact. The rasteriser's bounding box " +
         "does the rest.</p><table>" + row(["", "x / w", "y / w", "z / w", "inside?"], true) +
         vertexRows(data, (k) => {
           const n = data.ndc[k];
@@ -64,7 +69,8 @@ export function stageHtml(data, key) {
       return "<p>The fragment shader runs once per fragment on the interpolated attributes: " +
         "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
         "could write its own depth (<code>gl_FragDepth</code>) or discard the fragment, " +
-        "which is why the depth test and the depth write logically come <i>after</i> it.</p>";
+        "which is why the depth test and the depth write logically come <i>after</i> it.</p>" +
+        "<p>Key: u = 0 dark purple, 0.5 teal, 1 yellow (viridis); light grey: no fragment.</p>";
     case "depth":
       return `<p>Each fragment's depth (interpolated window depth) is compared with the ` +
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
@@ -72,7 +78,8 @@ export function stageHtml(data, key) {
         "before the shader, to skip hidden fragments. A shader that writes its own depth " +
         "turns the early test off (unless it declares conservative depth); a shader that " +
         "may discard keeps the early test, and only the depth write waits until the shader " +
-        "has kept the fragment.</p>";
+        "has kept the fragment.</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
+        "black, 1 light grey); the lightest grey: no fragment.</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
         "colour target was cleared to dark grey). That is the final image.</p>";
@@ -125,9 +132,12 @@ function svg(tag, attrs, text) {
   return e;
 }
 
-// two rows of five boxes; the second row continues from the first
+// Two rows of five boxes; the second row continues from the first. Drawn 1:1 in a 580-px
+// column (JupyterLab's at 1024 px with the file browser open is about 585), where its
+// smallest type, 13 px, stays at least 12 px on screen (review r7: 900 wide, it was 8 px).
+const MAP = { width: 580, height: 364, font: 13, name: 14 };
 function layout() {
-  const [bw, bh, gx, gy, x0, y0] = [160, 70, 22, 74, 4, 34];
+  const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 50];
   return STAGES.map(([key], k) => {
     const r = Math.floor(k / 5);
     const c = k % 5;
@@ -137,7 +147,7 @@ function layout() {
 
 function diagram(onPick) {
   const boxes = layout();
-  const root = svg("svg", { viewBox: "0 0 900 300", width: 900, role: "group",
+  const root = svg("svg", { viewBox: `0 0 ${MAP.width} ${MAP.height}`, width: MAP.width, role: "group",
     "aria-label": "the pipeline stages; pick one" });
   root.append(svg("defs", {}));
   root.firstChild.innerHTML = '<marker id="tr-arrow" viewBox="0 0 10 10" refX="9" refY="5" ' +
@@ -156,22 +166,25 @@ function diagram(onPick) {
   const [r, d] = [boxes[6], boxes[8]];
   arrow(`M${r.x + r.w / 2},${r.y + r.h} C${r.x + r.w / 2},${r.y + r.h + 46} ${d.x + d.w / 2},` +
     `${d.y + d.h + 46} ${d.x + d.w / 2},${d.y + d.h + 2}`, "7 5");
-  root.append(svg("text", { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 46, "text-anchor": "middle",
-    "font-size": 13, fill: "#333" }, "early-z: tested before shading, not if the shader " +
-    "writes depth (discard delays only the write)"));
+  ["early-z: tested before shading, not if the shader",
+    "writes depth (discard delays only the write)"].forEach((line, i) => root.append(svg("text",
+    { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 44 + 16 * i, "text-anchor": "middle",
+      "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
     const [, name, lessons] = STAGES[k];
-    const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name.replace("|", " "),
+    const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name.replaceAll("|", " "),
       "data-stage": b.key });
     const main = b.key === "rasterize";
     g.append(svg("rect", { x: b.x, y: b.y, width: b.w, height: b.h, rx: 8,
       fill: main ? "#d6ecf8" : "#f6f6f6", stroke: main ? "#0072B2" : "#777", "stroke-width": main ? 2.5 : 1.5 }));
     const lines = name.split("|");
     lines.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
-      y: b.y + (lines.length > 1 ? 22 : 30) + 17 * i, "text-anchor": "middle", "font-size": 15,
-      "font-weight": "bold" }, line)));
-    g.append(svg("text", { x: b.x + b.w / 2, y: b.y + b.h - 9, "text-anchor": "middle",
-      "font-size": 12, fill: "#555" }, `lesson ${lessons}`));
+      y: b.y + (lines.length > 1 ? 21 : 28) + 17 * i, "text-anchor": "middle",
+      "font-size": MAP.name, "font-weight": "bold" }, line)));
+    const taught = lessons.split("|");
+    taught.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
+      y: b.y + b.h - 8 - 15 * (taught.length - 1 - i), "text-anchor": "middle",
+      "font-size": MAP.font, fill: "#444" }, line)));
     g.addEventListener("click", (e) => onPick(b.key, e));
     onKeys(g, (e) => {
       if (e.key === "Enter" || e.key === " ") {
@@ -182,8 +195,9 @@ function diagram(onPick) {
     root.append(g);
     return g;
   });
-  root.append(svg("text", { x: 10, y: 20, "font-size": 13, fill: "#333" },
-    "The logical order of OpenGL and Direct3D. Click a stage for the tour triangle there."));
+  ["The logical order of OpenGL and Direct3D; in each box, the lessons that teach",
+    "the stage. Click a stage for the tour triangle there."].forEach((line, i) => root.append(
+    svg("text", { x: 2, y: 16 + 16 * i, "font-size": MAP.font, fill: "#333" }, line)));
   return { root, groups };
 }
 
@@ -205,7 +219,7 @@ function mount(el, data, host) {
     const k = STAGES.findIndex(([key]) => key === state.stage);
     groups.forEach((g, i) => g.querySelector("rect").setAttribute("fill",
       i === k ? "#fde9c8" : STAGES[i][0] === "rasterize" ? "#d6ecf8" : "#f6f6f6"));
-    title.textContent = `${STAGES[k][1].replace("|", " ")}: ${STAGES[k][3]}`;
+    title.textContent = `${STAGES[k][1].replaceAll("|", " ")}: ${STAGES[k][3]}`;
     text.innerHTML = stageHtml(data, state.stage);
     const img = stageImage(data, state.stage);
     canvas.style.display = img ? "" : "none";
