@@ -46,6 +46,13 @@ import time
 import urllib.request
 from pathlib import Path
 
+import browser_controls
+import browser_table as table
+from browser_controls import bench_controls
+from browser_explorables import CELLS as EXPLORABLE_CELLS
+from browser_explorables import bench_explorables
+from browser_js import ARM, ARM_SECOND, COUNT, DONE, DRAG, DRAG_SLIDER, DT, MOVES, latency
+
 ROOT = Path(__file__).resolve().parents[1]
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
 ARGS = ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
@@ -98,6 +105,8 @@ plane""",
 depth = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0)
 depth.widget.add_class("bench-depth")
 depth""",
+    # the explorables computed in the page, then the kernel controls (issue 31): inserted
+    # here by write_notebook, so that the editor's cells stay last
     """editor = TriangleEditor(tri, 16, 16)
 editor.widget.add_class("bench-editor")
 editor""",
@@ -105,91 +114,6 @@ editor""",
 print("BENCH-EDITOR", json.dumps({"transform": page.transform, "size": page.size,
                                   "handles": page.handles}))""",
 ]
-
-# In-page timing: t0 at the first matching input event, t1 at the first change of what is
-# watched after it (a MutationObserver), both performance.now().
-ARM = """([target, events, watch, attr]) => {
-  const t = document.querySelector(target), el = document.querySelector(watch);
-  const b = window.__bench = { t0: null, t1: null, before: attr ? el.getAttribute(attr) : el.textContent };
-  const start = () => { if (b.t0 === null) b.t0 = performance.now(); };
-  for (const e of events) t.addEventListener(e, start, { capture: true, once: true });
-  const ob = new MutationObserver(() => {
-    const now = attr ? el.getAttribute(attr) : el.textContent;
-    if (b.t0 !== null && b.t1 === null && now !== b.before) { b.t1 = performance.now(); ob.disconnect(); }
-  });
-  ob.observe(el, { attributes: true, childList: true, subtree: true, characterData: true });
-}"""
-COUNT = """([watch, attr]) => {
-  const el = document.querySelector(watch);
-  const c = window.__count = { n: 0, t: [], k: [], rt: [], last: el.getAttribute(attr) };
-  c.ob = new MutationObserver(() => {
-    const now = el.getAttribute(attr);
-    if (now !== c.last) {
-      c.n += 1; c.t.push(performance.now()); c.last = now;
-      c.k.push(Number(el.dataset.kernelMs)); c.rt.push(Number(el.dataset.roundTripMs));
-    }
-  });
-  c.ob.observe(el, { attributes: true });
-}"""
-DRAG = """async (sel) => {
-  const r = document.querySelector(sel);
-  const t0 = performance.now();
-  let v = 0;
-  while (performance.now() - t0 < 1500) {
-    await new Promise(requestAnimationFrame);
-    v = (v + 1) % (Number(r.max) + 1);
-    r.value = String(v);
-    r.dispatchEvent(new Event("input", { bubbles: true }));
-  }
-  r.dispatchEvent(new Event("change", { bubbles: true }));
-  window.__dragEnd = performance.now();
-}"""
-# A slider dragged along its track: its next position at every animation frame, through
-# all its steps (min to max, then again from min), released at the end.
-DRAG_SLIDER = """async (sel) => {
-  const r = document.querySelector(sel);
-  const lo = Number(r.min), step = Number(r.step) || 1;
-  const n = Math.floor((Number(r.max) - lo) / step + 1e-9) + 1;
-  const t0 = performance.now();
-  for (let k = 1; performance.now() - t0 < 1500; k++) {
-    await new Promise(requestAnimationFrame);
-    r.value = String(lo + (k % n) * step);
-    r.dispatchEvent(new Event("input", { bubbles: true }));
-  }
-  r.dispatchEvent(new Event("change", { bubbles: true }));
-  window.__dragEnd = performance.now();
-}"""
-MOVES = """async ({sel, points, ms}) => {
-  const el = document.querySelector(sel);
-  const t0 = performance.now();
-  for (let k = 1; performance.now() - t0 < ms; k++) {
-    await new Promise(requestAnimationFrame);
-    const [x, y] = points[k % points.length];
-    el.dispatchEvent(new PointerEvent("pointermove", { clientX: x, clientY: y, pointerId: 1,
-      bubbles: true, isPrimary: true, pointerType: "mouse", buttons: 1 }));
-  }
-}"""
-# The same, to the second change after the event: a key on a slider explorer shows the
-# picture drawn ahead first (the page's own), the kernel's full picture second.
-ARM_SECOND = """([target, events, watch, attr]) => {
-  const t = document.querySelector(target), el = document.querySelector(watch);
-  // pictures shown, plus pictures drawn ahead skipped because the kernel's came first (drag.js)
-  const count = () => Number(el.getAttribute(attr) || 0) + Number(el.dataset.skipped || 0);
-  const b = window.__bench = { t0: null, t1: null, n: 0, before: count() };
-  const start = () => { if (b.t0 === null) b.t0 = performance.now(); };
-  for (const e of events) t.addEventListener(e, start, { capture: true, once: true });
-  const ob = new MutationObserver(() => {
-    const now = count();
-    if (b.t0 !== null && b.t1 === null && now !== b.before) {
-      b.n += now - b.before;
-      b.before = now;
-      if (b.n >= 2) { b.t1 = performance.now(); ob.disconnect(); }
-    }
-  });
-  ob.observe(el, { attributes: true });
-}"""
-DONE = "() => window.__bench.t1 !== null"
-DT = "() => window.__bench.t1 - window.__bench.t0"
 
 
 #: JupyterLab's notebook windowing mode in the benchmark
@@ -202,11 +126,12 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def write_notebook(folder: Path) -> str:
+def write_notebook(folder: Path, quick: bool = False) -> str:
     import nbformat
 
     nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS]
+    cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *browser_controls.cells(quick), *CELLS[-2:]]
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                  "language": "python"}  # fmt: skip
@@ -269,14 +194,20 @@ def run_all_cells(page, base: str, name: str) -> None:
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=120_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
-    page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(timeout=300_000)
+    try:
+        page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(
+            timeout=300_000
+        )
+    except Exception:  # a cell failed (Run All stops there): say which
+        errors = page.locator(".jp-OutputArea-output[data-mime-type*='error']").all_inner_texts()
+        raise RuntimeError("the notebook did not finish: " + "\n".join(errors)[-3000:]) from None
     # every group of the player's frames in the page, every picture drawn ahead
     wait_for_groups(page)
     wait_for_ahead(page)
 
 
 #: The explorers whose slider positions are drawn ahead (PlaneExplorer: its first slider, v1 x).
-AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth")
+AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth", "bench-projection")
 
 
 def wait_for_ahead(page) -> None:
@@ -300,19 +231,6 @@ def wait_for_groups(page) -> None:
         " const r = c && c.closest('.tr-frames').querySelector('input[type=range]');"
         " return c && Number(c.dataset.groups) >= Math.ceil((Number(r.max) + 1) / 8); }",
         timeout=300_000)  # fmt: skip
-
-
-def latency(page, target, events, watch, attr, act, tries: int, arm=ARM) -> list[float]:
-    """ms from the input event on ``target`` to the change of ``watch`` (``attr`` or text;
-    with ``arm=ARM_SECOND`` to its second change)."""
-    out = []
-    for _ in range(tries):
-        page.evaluate(arm, [target, events, watch, attr])
-        act()
-        page.wait_for_function(DONE, timeout=30_000)
-        out.append(page.evaluate(DT))
-        page.wait_for_timeout(60)
-    return out
 
 
 def bench_baselines(page, tries):
@@ -383,7 +301,7 @@ def bench_editor(page, tries, info):
     def at(x, y):
         return box["x"] + (x0 + sx * x) * scale, box["y"] + (y0 + sy * y) * scale
 
-    fps, firsts, kernel, trips, parts = [], [], [], [], []
+    fps, firsts, kernel, trips, parts, settles = [], [], [], [], [], []
     hx, hy = info["handles"][1]
     for _ in range(tries):
         page.evaluate(COUNT, [".bench-editor .tr-drag img", "data-frames"])
@@ -409,7 +327,9 @@ def bench_editor(page, tries, info):
         )  # drag.js: where the first frame's time goes
         if timeline:
             parts.append(json.loads(timeline))
-        during = [x for x in times if x <= times[0] + 2000] if times else []
+        end = page.evaluate("() => window.__dragEnd")
+        settles.append((times[-1] - end) if times else float("nan"))
+        during = [x for x in times if x <= end] if times else []
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
     if kernel:
         print(f"editor drag: kernel ms per position median {statistics.median(kernel):.0f}, "
@@ -427,7 +347,7 @@ def bench_editor(page, tries, info):
             f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), painted "
             f"{med(lambda t: t['painted']):.1f}; patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
         )
-    return fps, firsts
+    return fps, firsts, settles
 
 
 #: The slider explorers benchmarked: (CSS class of the widget, its name in the report, the
@@ -509,16 +429,25 @@ def first_drag_fps(page, css_class, label) -> float:
     return (len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0
 
 
-def report_sliders(results, r) -> None:
-    """Print the latency rows of :func:`bench_slider`'s results (name -> its tuple)."""
-    for name, (key, _fps, settle, toggles, full) in results.items():
-        summary(f"{name}, one key (drawn ahead)", key, r, f"<= rt + 30 = {r + 30:.0f} ms")
-        summary(f"{name}, one key, full picture (kernel)", full, r)
-        print(f"{name + ', last picture after a drag':<46}{settle:>8.1f}"
-              f"{'':>8}{settle / r:>8.2f}  coalesced: about one render")  # fmt: skip
+def slider_rows(results) -> list[tuple]:
+    """The report rows of :func:`bench_slider`'s results (name -> its tuple)."""
+    rows = []
+    for name, (key, fps, settle, toggles, full) in results.items():
+        rows += [("click", f"{name}, one key (drawn ahead)", key),
+                 ("info", f"{name}, one key, full picture (kernel)", full),
+                 ("settle", f"{name}, last picture after a drag", [settle]),
+                 ("fps", f"{name} dragged", [fps])]  # fmt: skip
         if toggles:
-            summary(f"{name.split(':')[0]}: filter toggle (kernel)", toggles, r,
-                    f"<= 2 rt = {2 * r:.0f} ms")  # fmt: skip
+            rows.append(("click", f"{name.split(':')[0]}: filter toggle (kernel)", toggles))
+    return rows
+
+
+def make_rows(specs, rt: float) -> list:
+    """:class:`browser_table.Row` s from ``(kind, label, values)`` specs (kind: "click",
+    "fps", "settle", "info"; or a Row as it is)."""
+    makers = {"click": lambda label, v: table.click(label, v, rt), "fps": table.fps,
+              "settle": table.settle, "info": table.info}  # fmt: skip
+    return [spec if isinstance(spec, table.Row) else makers[spec[0]](*spec[1:]) for spec in specs]
 
 
 def shots(page, folder: Path) -> None:
@@ -537,19 +466,58 @@ def summary(label, ms, rt, target=""):
     print(f"{label:<46}{med:>8.1f}{top:>8.1f}{med / rt:>8.2f}  {target}")
 
 
+def run(page, args, tries: int, reps: int) -> tuple[list, float]:
+    """Every interaction timed in the lab's page: the report's specs and the round trip."""
+    out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
+    info = json.loads(out.inner_text().split("BENCH-EDITOR", 1)[1])
+    # as it first shows (the interpolation toggle unfolds its comparison below)
+    player_h = page.locator(".bench-player").first.bounding_box()["height"]
+    if args.shots:
+        shots(page, args.shots)
+    rt, fig = bench_baselines(page, tries)
+    step, drag_fps, play_fps, toggles = bench_player(page, tries)
+    editor_fps, editor_first, editor_after = bench_editor(page, max(2, tries // 4), info)
+    sliders = {name: bench_slider(page, tries, cls, label, toggle)
+               for cls, name, label, toggle in SLIDERS}  # fmt: skip
+    first_drag = first_drag_fps(page, "bench-plane", "f2")
+    explorables = bench_explorables(page, reps)
+    controls = bench_controls(page, reps)
+    specs = [
+        ("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
+        ("info", "baseline: plain figure redrawn from a slider", fig),
+        table.Row("FillPlayer: next step (in the page)", step, "ms", 20.0, "≤ 20 ms"),
+    ]
+    specs += [("click", f"FillPlayer: {n} toggle (kernel)", ms) for n, ms in toggles.items()]
+    specs += [table.Row("FillPlayer: height of the whole player", [player_h], "px", 900.0,
+                        "≤ 900 px"),
+              table.fps("FillPlayer: step slider dragged", drag_fps, 50.0),
+              table.fps("FillPlayer: play at 20 ms/step", play_fps, 40.0),
+              ("click", "TriangleEditor: first frame of a drag", editor_first),
+              ("fps", "TriangleEditor: vertex dragged (fills/s)", editor_fps),
+              ("settle", "TriangleEditor: last picture after a drag", editor_after)]  # fmt: skip
+    specs += slider_rows(sliders)
+    specs.append(table.fps("PlaneExplorer: f2, its first drag (kernel)", first_drag,
+                           note="the slider drawn ahead was v1 x"))  # fmt: skip
+    return specs + explorables + controls, statistics.median(rt)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="smoke run: 3 tries each")
+    parser.add_argument("--quick", action="store_true",
+                        help="smoke run: 3 tries per latency, 2 per new row, 1 per drag")  # fmt: skip
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
     parser.add_argument("--shots", type=Path, default=None,
                         help="folder for screenshots of the player and the editor")  # fmt: skip
     args = parser.parse_args(argv)
     tries = 3 if args.quick else max(args.tries, 3)
+    reps = 2 if args.quick else tries
     from playwright.sync_api import sync_playwright
 
+    load = os.getloadavg()
+    started = time.strftime("%d %b %Y %H:%M UTC", time.gmtime())
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
-    name = write_notebook(work / "nb")
+    name = write_notebook(work / "nb", args.quick)
     proc, base, log = start_lab(work)
     try:
         with sync_playwright() as p:
@@ -557,49 +525,22 @@ def main(argv=None) -> int:
             try:
                 page = browser.new_page(viewport={"width": 1400, "height": 900})
                 run_all_cells(page, base, name)
-                out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
-                text = out.inner_text()
-                info = json.loads(text.split("BENCH-EDITOR", 1)[1])
-                # as it first shows (the interpolation toggle unfolds its comparison below)
-                player_h = page.locator(".bench-player").first.bounding_box()["height"]
-                if args.shots:
-                    shots(page, args.shots)
-                rt, fig = bench_baselines(page, tries)
-                step, drag_fps, play_fps, toggles = bench_player(page, tries)
-                editor_fps, editor_first = bench_editor(page, max(2, tries // 4), info)
-                sliders = {
-                    name: bench_slider(page, tries, cls, label, toggle)
-                    for cls, name, label, toggle in SLIDERS
-                }
-                first_drag = first_drag_fps(page, "bench-plane", "f2")
+                specs, r = run(page, args, tries, reps)
             finally:
                 browser.close()
     finally:
         stop_lab(proc, log)
         shutil.rmtree(work, ignore_errors=True)
-    r = statistics.median(rt)
-    print(f"teachraster in JupyterLab + headless Chromium, 1400x900; {tries} tries per latency")
-    print(f"{'latency (ms)':<46}{'median':>8}{'max':>8}{'/ rt':>8}  target")
-    summary("baseline: do-nothing IntSlider -> Output (rt)", rt, r)
-    summary("baseline: plain figure redrawn from a slider", fig, r)
-    summary("FillPlayer: next step (in the page)", step, r, "<= 20 ms")
-    for name, ms in toggles.items():
-        summary(f"FillPlayer: {name} toggle (kernel)", ms, r, f"<= 2 rt = {2 * r:.0f} ms")
-    if editor_first:
-        summary("TriangleEditor: first frame of a drag", editor_first, r,
-                f"<= rt + 30 = {r + 30:.0f} ms")  # fmt: skip
-    report_sliders(sliders, r)
-    print(f"{'FillPlayer: height of the whole player (px)':<46}{player_h:>8.0f}{'':>8}"
-          f"{'':>8}  <= 900")  # fmt: skip
-    print(f"{'frame rates (fps)':<46}{'median':>8}{'min':>8}")
-    print(f"{'FillPlayer: step slider dragged':<46}{drag_fps:>8.1f}{drag_fps:>8.1f}  >= 50")
-    print(f"{'FillPlayer: play at 20 ms/step':<46}{play_fps:>8.1f}{play_fps:>8.1f}  >= 40")
-    print(f"{'TriangleEditor: vertex dragged (fills/s)':<46}"
-          f"{statistics.median(editor_fps):>8.1f}{min(editor_fps):>8.1f}  >= 20")  # fmt: skip
-    for name, (_key, fps, _settle, _toggles, _full) in sliders.items():
-        print(f"{name + ' dragged':<46}{fps:>8.1f}{fps:>8.1f}  >= 20")
-    print(f"{'PlaneExplorer: f2, its first drag (kernel)':<46}{first_drag:>8.1f}"
-          f"{first_drag:>8.1f}  (the slider drawn ahead was v1 x)")  # fmt: skip
+    rows = make_rows(specs, r)
+    end = os.getloadavg()
+    print(f"\nteachraster in JupyterLab + headless Chromium, 1400x900, {started}; {tries} tries "
+          f"per latency ({reps} per explorable or control, {max(1, reps // 2)} drags each); "
+          f"load average {load[0]:.1f} at the start, {end[0]:.1f} at the end; "
+          f"rt = {r:.1f} ms\n")  # fmt: skip
+    print(table.markdown(rows, r))
+    missed = table.misses(rows)
+    print(f"\n{len(missed)} of {sum(x.bound is not None for x in rows)} rows miss their target"
+          + (": " + "; ".join(missed) if missed else ""))  # fmt: skip
     return 0
 
 
