@@ -46,8 +46,8 @@ import time
 import urllib.request
 from pathlib import Path
 
-import browser_controls
 import browser_table as table
+from browser_controls import CELLS as CONTROL_CELLS
 from browser_controls import bench_controls
 from browser_explorables import CELLS as EXPLORABLE_CELLS
 from browser_explorables import bench_explorables
@@ -126,11 +126,11 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def write_notebook(folder: Path, quick: bool = False) -> str:
+def write_notebook(folder: Path) -> str:
     import nbformat
 
     nb = nbformat.v4.new_notebook()
-    cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *browser_controls.cells(quick), *CELLS[-2:]]
+    cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *CONTROL_CELLS, *CELLS[-2:]]
     nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
@@ -196,7 +196,7 @@ def run_all_cells(page, base: str, name: str) -> None:
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     try:
         page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(
-            timeout=300_000
+            timeout=600_000
         )
     except Exception:  # a cell failed (Run All stops there): say which
         errors = page.locator(".jp-OutputArea-output[data-mime-type*='error']").all_inner_texts()
@@ -517,7 +517,7 @@ def main(argv=None) -> int:
     started = time.strftime("%d %b %Y %H:%M UTC", time.gmtime())
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
-    name = write_notebook(work / "nb", args.quick)
+    name = write_notebook(work / "nb")
     proc, base, log = start_lab(work)
     try:
         with sync_playwright() as p:

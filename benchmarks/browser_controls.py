@@ -9,38 +9,20 @@ import math
 from browser_explorables import rate, stop_count
 from browser_js import COUNT, MOVES, latency
 
-#: Lesson 06's interpolation rows: measured by its study (about 6 s on a quiet machine), or
-#: made up in their shape (``--quick``: the same figure, the same variants)
-STUDY_ROWS = """interp_rows = [r for r in ops.with_counts(study_bench.run(quick=True))
-               if r["group"] == "interpolation"]"""
-MADE_UP_ROWS = """interp_rows = [
-    {"variant": v, "group": "interpolation", "divides": d, "multiplies": m, "additions": a,
-     "error": 2 * e, "mean_abs_texels": e, "cycles": 1.0}
-    for v, d, m, a, e in [("affine", 0, 6, 6, 3.0), ("subdivided N=16", 0.2, 9, 9, 0.6),
-                          ("subdivided N=8", 0.3, 9, 9, 0.3), ("subdivided N=2", 1, 12, 12, 0.1),
-                          ("perspective", 2, 12, 10, 0.0)]]"""
-
-
-def cells(quick: bool) -> list[str]:
-    """The notebook cells (the kernel widgets of lessons 04, 06, 07, 08 and 10, each as its
-    lesson builds it), tagged with a CSS class the benchmark finds each by."""
-    return [
-        """from teachraster.study import bench as study_bench
-from teachraster.study import operation_counts as ops
+#: The notebook cells (the kernel widgets of lessons 04, 06, 07, 08 and 10, each as its
+#: lesson builds it), tagged with a CSS class the benchmark finds each by. Lesson 06's rows:
+#: its study's interpolation group alone (the same variants, counts and errors; about 1 s),
+#: not the whole study (15 s and more on a loaded machine).
+CELLS = [
+    """from teachraster.study import operation_counts as ops
+from teachraster.study.bench.measure import Progress, bench_interpolation, sizes
 from teachraster.widgets import CasePicker, ProjectionExplorer, TileExplorer
 from teachraster.widgets.divide_cost import DivideCostExplorer
 from teachraster.widgets.sampling_explorer import SamplingExplorer
-"""
-        + (MADE_UP_ROWS if quick else STUDY_ROWS)
-        + """
+interp_rows = ops.with_counts(bench_interpolation(sizes(True), 1, Progress(1, enabled=False)))
 divide = DivideCostExplorer(interp_rows)
 divide.widget.add_class("bench-divide")
 divide""",
-        *CELLS,
-    ]
-
-
-CELLS = [
     """cases = CasePicker()
 cases.widget.add_class("bench-cases")
 cases""",
