@@ -51,7 +51,19 @@ from browser_controls import CELLS as CONTROL_CELLS
 from browser_controls import bench_controls
 from browser_explorables import CELLS as EXPLORABLE_CELLS
 from browser_explorables import bench_explorables
-from browser_js import ARM, ARM_SECOND, COUNT, DONE, DRAG, DRAG_SLIDER, DT, MOVES, latency
+from browser_js import (
+    ARM,
+    ARM_SECOND,
+    COUNT,
+    DONE,
+    DRAG,
+    DRAG_SLIDER,
+    DT,
+    MARK_RELEASE,
+    MOVES,
+    RELEASED,
+    latency,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
@@ -315,6 +327,7 @@ def bench_editor(page, tries, info):
         page.evaluate(MOVES, {"sel": ".bench-editor .tr-drag img",
                               "points": [at(hx - d, hy) for d in (0, 1, 2, 3, 4, 3, 2, 1)],
                               "ms": 2000})  # fmt: skip
+        page.evaluate(MARK_RELEASE)
         page.mouse.up()
         page.wait_for_timeout(400)
         times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
@@ -328,7 +341,8 @@ def bench_editor(page, tries, info):
         if timeline:
             parts.append(json.loads(timeline))
         end = page.evaluate("() => window.__dragEnd")
-        settles.append((times[-1] - end) if times else float("nan"))
+        release = max(end, page.evaluate(RELEASED))  # the moves' end, or the pointer's release
+        settles.append((times[-1] - release) if times else float("nan"))
         during = [x for x in times if x <= end] if times else []
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
     if kernel:

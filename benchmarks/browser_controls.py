@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from browser_explorables import rate, stop_count
-from browser_js import COUNT, MOVES, latency
+from browser_js import COUNT, MARK_RELEASE, MOVES, RELEASED, latency
 
 #: The notebook cells (the kernel widgets of lessons 04, 06, 07, 08 and 10, each as its
 #: lesson builds it), tagged with a CSS class the benchmark finds each by. Lesson 06's rows:
@@ -100,9 +100,11 @@ def drag_noui(page, p, k=0, ms=1500) -> tuple[float, float]:
     page.mouse.down()
     page.evaluate(MOVES, {"sel": f"{p} .noUi-handle", "points": points, "ms": ms,
                           "mouse": True})  # fmt: skip
+    page.evaluate(MARK_RELEASE)
     page.mouse.up()
     page.wait_for_timeout(2500)  # the kernel catches up
-    fps, after = rate(stop_count(page), page.evaluate("() => window.__dragEnd"))
+    fps, after = rate(stop_count(page), page.evaluate("() => window.__dragEnd"),
+                      page.evaluate(RELEASED))  # fmt: skip
     idle(page)
     return fps, after
 

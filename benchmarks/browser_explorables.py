@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 import statistics
 
-from browser_js import ARM, COUNT, DONE, DRAG_SLIDER, DT, MOVES, latency
+from browser_js import ARM, COUNT, DONE, DRAG_SLIDER, DT, MARK_RELEASE, MOVES, RELEASED, latency
 
 #: The notebook cells: one explorable each, tagged with a CSS class the benchmark finds it by.
 CELLS = [
@@ -36,11 +36,13 @@ def stop_count(page) -> list[float]:
     return page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
 
 
-def rate(times, end) -> tuple[float, float]:
-    """Pictures per second before ``end`` and ms from ``end`` to the last picture."""
+def rate(times, end, release=None) -> tuple[float, float]:
+    """Pictures per second before ``end`` (the last move) and ms from ``release`` (default
+    ``end``) to the last picture."""
     during = [t for t in times if t <= end]
     fps = (len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0
-    return fps, (times[-1] - end) if times else math.nan
+    release = end if release is None else max(release, end)
+    return fps, (times[-1] - release) if times else math.nan
 
 
 def drag_canvas(page, sel, start, offsets=SWING, ms=1500) -> tuple[float, float, float]:
@@ -64,6 +66,7 @@ def drag_canvas(page, sel, start, offsets=SWING, ms=1500) -> tuple[float, float,
     page.mouse.move(*points[0])
     page.mouse.down()
     page.evaluate(MOVES, {"sel": sel, "points": points, "ms": ms})
+    page.evaluate(MARK_RELEASE)
     page.mouse.up()
     page.wait_for_timeout(500)
     paint = page.evaluate("() => window.__count.p.filter(x => x >= 0)")
@@ -71,7 +74,8 @@ def drag_canvas(page, sel, start, offsets=SWING, ms=1500) -> tuple[float, float,
         print(f"{sel}: drawing a picture takes {statistics.median(paint):.1f} ms (median of "
               f"{len(paint)})")  # fmt: skip
     first = page.evaluate(DT) if page.evaluate(DONE) else math.nan
-    fps, after = rate(stop_count(page), page.evaluate("() => window.__dragEnd"))
+    fps, after = rate(stop_count(page), page.evaluate("() => window.__dragEnd"),
+                      page.evaluate(RELEASED))  # fmt: skip
     return first, fps, after
 
 

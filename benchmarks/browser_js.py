@@ -91,6 +91,14 @@ ARM_SECOND = """([target, events, watch, attr]) => {
   });
   ob.observe(el, { attributes: true });
 }"""
+# When the pointer is released (the first pointerup or mouseup anywhere): a drag's last
+# picture is timed from there (Playwright's release arrives some way after the last move).
+MARK_RELEASE = """() => {
+  window.__upAt = null;
+  const up = () => { if (window.__upAt === null) window.__upAt = performance.now(); };
+  for (const e of ["pointerup", "mouseup"]) document.addEventListener(e, up, { capture: true, once: true });
+}"""
+RELEASED = "() => window.__upAt ?? window.__dragEnd"
 DONE = "() => window.__bench.t1 !== null"
 DT = "() => window.__bench.t1 - window.__bench.t0"
 
