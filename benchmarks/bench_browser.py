@@ -253,6 +253,21 @@ def bench_baselines(page, tries):
     return rt, fig
 
 
+#: Animation frames the page gets in 1.5 s doing nothing else: the ceiling of every frame
+#: rate measured here (60 on a quiet machine; a loaded one gives the browser fewer)
+FRAMES = """async () => {
+  const t0 = performance.now();
+  let n = 0;
+  while (performance.now() - t0 < 1500) { await new Promise(requestAnimationFrame); n += 1; }
+  return n / ((performance.now() - t0) / 1e3);
+}"""
+
+
+def bench_frames(page, tries: int) -> list[float]:
+    """Animation frames per second of the idle page, ``tries`` // 4 times (one at least)."""
+    return [page.evaluate(FRAMES) for _ in range(max(1, tries // 4))]
+
+
 def bench_player(page, tries):
     p = ".bench-player"
     canvas = f"{p} canvas.teachraster-figure"
@@ -489,6 +504,7 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     if args.shots:
         shots(page, args.shots)
     rt, fig = bench_baselines(page, tries)
+    frames = bench_frames(page, tries)
     step, drag_fps, play_fps, toggles = bench_player(page, tries)
     editor_fps, editor_first, editor_after = bench_editor(page, max(2, tries // 4), info)
     sliders = {name: bench_slider(page, tries, cls, label, toggle)
@@ -499,6 +515,12 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     specs = [
         ("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
         ("info", "baseline: plain figure redrawn from a slider", fig),
+        table.Row(
+            "baseline: animation frames of the idle page",
+            frames,
+            "fps",
+            note="the ceiling of every frame rate below",
+        ),
         table.Row("FillPlayer: next step (in the page)", step, "ms", 20.0, "≤ 20 ms"),
     ]
     specs += [("click", f"FillPlayer: {n} toggle (kernel)", ms) for n, ms in toggles.items()]

@@ -34,10 +34,17 @@ class Row:
     target: str = ""
     note: str = ""
 
+    def measured(self) -> list:
+        """The values measured (a try that saw no picture is NaN: left out)."""
+        return [v for v in self.values if v == v]
+
     def ok(self) -> bool | None:
-        if self.bound is None or not self.values:
+        """Within the target (None: no target; False also when nothing was measured)."""
+        if self.bound is None:
             return None
-        med = statistics.median(self.values)
+        if not self.measured():
+            return False
+        med = statistics.median(self.measured())
         return med >= self.bound if self.unit == "fps" else med <= self.bound
 
 
@@ -67,12 +74,15 @@ def info(label, values, note="") -> Row:
 
 def cell(row: Row, rt: float) -> list[str]:
     """The row's cells after its label: median, max (min for fps), / rt, target."""
-    values = [v for v in row.values if v == v]  # NaN: nothing came
+    values = row.measured()
     if not values:
         return ["—", "", "", f"{row.target} ✗ (no picture)" if row.bound is not None else ""]
     med = statistics.median(values)
     mark = {True: " ✓", False: " ✗", None: ""}[row.ok()]
-    target = f"{row.target}{mark}" + (f" ({row.note})" if row.note else "")
+    notes = [row.note] if row.note else []
+    if len(values) < len(row.values):
+        notes.append(f"{len(row.values) - len(values)} of {len(row.values)} tries: no picture")
+    target = (f"{row.target}{mark}" + (f" ({'; '.join(notes)})" if notes else "")).strip()
     if row.unit == "fps":
         low = f"{min(values):.1f} min" if len(values) > 1 else ""
         return [f"{med:.1f} fps", low, "", target]
