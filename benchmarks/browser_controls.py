@@ -84,17 +84,30 @@ def key(page, p, k=0):
     return lambda i: handle.press("ArrowRight" if i % 2 == 0 else "ArrowLeft")
 
 
+def sweep(handle) -> list[float]:
+    """Where along its track (0 to 1) an ``IntSlider`` is dragged, one point per animation
+    frame: to and fro over its positions, each point on the next one (31 points along a
+    longer track), so that every frame asks for a new value, as the other drags do."""
+    lo, hi, now = (float(handle.get_attribute(a) or 0) for a in
+                   ("aria-valuemin", "aria-valuemax", "aria-valuenow"))  # fmt: skip
+    n = 31 if hi - lo > 30 else int(hi - lo) + 1
+    ends = [i / (n - 1) for i in range(n)] if n > 1 else [0.0]
+    start = min(range(n), key=lambda i: abs(ends[i] - (now - lo) / ((hi - lo) or 1)))
+    cycle = ends + ends[-2:0:-1]  # 0 .. 1 .. back, without repeating the ends
+    return [cycle[(start + 1 + i) % len(cycle)] for i in range(len(cycle))]
+
+
 def drag_noui(page, p, k=0, ms=1500) -> tuple[float, float]:
-    """Drag the widget's ``k``-th slider along its whole track and back, a move at every
-    animation frame, for ``ms``; pictures per second, ms from the release to the last."""
+    """Drag the widget's ``k``-th slider to and fro over its positions (:func:`sweep`), a
+    move at every animation frame, for ``ms``; pictures per second, ms from the release to
+    the last."""
     watch, attr = picture(page, p)
     handle = page.locator(f"{p} .noUi-handle").nth(k)
     handle.scroll_into_view_if_needed()
     track = page.locator(f"{p} .noUi-target").nth(k).bounding_box()
     box = handle.bounding_box()
     y = box["y"] + box["height"] / 2
-    sweep = [i / 30 for i in range(31)] + [1 - i / 30 for i in range(1, 30)]
-    points = [(track["x"] + f * track["width"], y) for f in sweep]
+    points = [(track["x"] + f * track["width"], y) for f in sweep(handle)]
     page.evaluate(COUNT, [watch, attr])
     page.mouse.move(box["x"] + box["width"] / 2, y)
     page.mouse.down()

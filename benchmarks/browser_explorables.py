@@ -42,7 +42,8 @@ def rate(times, end, release=None) -> tuple[float, float]:
     during = [t for t in times if t <= end]
     fps = (len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0
     release = end if release is None else max(release, end)
-    return fps, (times[-1] - release) if times else math.nan
+    # none after the release: the last picture came with the moves (0, not a negative time)
+    return fps, max(0.0, times[-1] - release) if times else math.nan
 
 
 def drag_canvas(page, sel, start, offsets=SWING, ms=1500) -> tuple[float, float, float]:
