@@ -454,6 +454,8 @@ class CasePicker:
         title = getattr(self.fig, "_suptitle", None)
         place = self._places.get(self.case.value)
         if place is None:
+            for ax in self.axes:
+                ax.set_in_layout(True)  # set_position() below took it out of the layout
             self.fig.set_layout_engine("constrained")
             self.fig.canvas.draw()
             place = [ax.get_position() for ax in self.axes]
