@@ -2,7 +2,7 @@
 
 Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
 
-    python benchmarks/bench_browser.py            # full run (a few minutes)
+    python benchmarks/bench_browser.py            # full run (about 15 minutes)
     python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
 
 JupyterLab starts on a free loopback port with its own config, data, runtime and settings
@@ -12,7 +12,9 @@ figure redrawn from an ``IntSlider`` with the widgets' own display (a PNG in an
 ``ipywidgets.Image``); a half-plane ``FillPlayer`` (16 x 16, ``interval=20``) and a
 ``TriangleEditor`` (16 x 16), and the four slider explorers whose sliders are page-side
 ``LiveSlider``s (coalesced): ``TexturedPlaneViewer``, ``FilterExplorer``, ``PlaneExplorer``
-and ``DepthPrecisionExplorer``. Chromium (1400 x 900) then drives them like a student:
+and ``DepthPrecisionExplorer``; then every explorable computed in the page
+(``browser_explorables.py``) and every control of issue 31 that goes through the kernel
+(``browser_controls.py``). Chromium (1400 x 900) then drives them like a student:
 
 - latency: from the input event (key, click or pointer) to the change on the page (the
   figure's ``src``, the canvas' step, the output's text), timed in the page;
@@ -26,8 +28,11 @@ and ``DepthPrecisionExplorer``. Chromium (1400 x 900) then drives them like a st
   player's frames are: a key then shows the page's own picture first (timed) and the
   kernel's full picture second (timed too).
 
-Absolute times on these machines vary 2x from day to day: the figures to report are the
-ratios to the round trip measured in the same run. Every server and browser started here
+It prints one Markdown table (``browser_table.py``: interaction, median, max, ratio to rt,
+target ✓ or ✗), with the date, the load average and rt above it, and the rows that miss
+their target below. Absolute times on these machines vary 2x from day to day: the figures to
+report are the ratios to the round trip measured in the same run, and the frame rates
+beside the idle page's own animation frames. Every server and browser started here
 is stopped by its process id. The exit status is non-zero only on errors.
 """
 
