@@ -2,7 +2,7 @@
 
 Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
 
-    python benchmarks/bench_browser.py            # full run (a few minutes)
+    python benchmarks/bench_browser.py            # full run (about 15 minutes)
     python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
 
 JupyterLab starts on a free loopback port with its own config, data, runtime and settings
@@ -12,7 +12,9 @@ figure redrawn from an ``IntSlider`` with the widgets' own display (a PNG in an
 ``ipywidgets.Image``); a half-plane ``FillPlayer`` (16 x 16, ``interval=20``) and a
 ``TriangleEditor`` (16 x 16), and the four slider explorers whose sliders are page-side
 ``LiveSlider``s (coalesced): ``TexturedPlaneViewer``, ``FilterExplorer``, ``PlaneExplorer``
-and ``DepthPrecisionExplorer``. Chromium (1400 x 900) then drives them like a student:
+and ``DepthPrecisionExplorer``; then every explorable computed in the page
+(``browser_explorables.py``) and every control of issue 31 that goes through the kernel
+(``browser_controls.py``). Chromium (1400 x 900) then drives them like a student:
 
 - latency: from the input event (key, click or pointer) to the change on the page (the
   figure's ``src``, the canvas' step, the output's text), timed in the page;
@@ -26,8 +28,11 @@ and ``DepthPrecisionExplorer``. Chromium (1400 x 900) then drives them like a st
   player's frames are: a key then shows the page's own picture first (timed) and the
   kernel's full picture second (timed too).
 
-Absolute times on these machines vary 2x from day to day: the figures to report are the
-ratios to the round trip measured in the same run. Every server and browser started here
+It prints one Markdown table (``browser_table.py``: interaction, median, max, ratio to rt,
+target ✓ or ✗), with the date, the load average and rt above it, and the rows that miss
+their target below. Absolute times on these machines vary 2x from day to day: the figures to
+report are the ratios to the round trip measured in the same run, and the frame rates
+beside the idle page's own animation frames. Every server and browser started here
 is stopped by its process id. The exit status is non-zero only on errors.
 """
 
@@ -45,6 +50,25 @@ import tempfile
 import time
 import urllib.request
 from pathlib import Path
+
+import browser_table as table
+from browser_controls import CELLS as CONTROL_CELLS
+from browser_controls import bench_controls
+from browser_explorables import CELLS as EXPLORABLE_CELLS
+from browser_explorables import bench_explorables
+from browser_js import (
+    ARM,
+    ARM_SECOND,
+    COUNT,
+    DONE,
+    DRAG,
+    DRAG_SLIDER,
+    DT,
+    MARK_RELEASE,
+    MOVES,
+    RELEASED,
+    latency,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
@@ -98,6 +122,8 @@ plane""",
 depth = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0)
 depth.widget.add_class("bench-depth")
 depth""",
+    # the explorables computed in the page, then the kernel controls (issue 31): inserted
+    # here by write_notebook, so that the editor's cells stay last
     """editor = TriangleEditor(tri, 16, 16)
 editor.widget.add_class("bench-editor")
 editor""",
@@ -105,91 +131,6 @@ editor""",
 print("BENCH-EDITOR", json.dumps({"transform": page.transform, "size": page.size,
                                   "handles": page.handles}))""",
 ]
-
-# In-page timing: t0 at the first matching input event, t1 at the first change of what is
-# watched after it (a MutationObserver), both performance.now().
-ARM = """([target, events, watch, attr]) => {
-  const t = document.querySelector(target), el = document.querySelector(watch);
-  const b = window.__bench = { t0: null, t1: null, before: attr ? el.getAttribute(attr) : el.textContent };
-  const start = () => { if (b.t0 === null) b.t0 = performance.now(); };
-  for (const e of events) t.addEventListener(e, start, { capture: true, once: true });
-  const ob = new MutationObserver(() => {
-    const now = attr ? el.getAttribute(attr) : el.textContent;
-    if (b.t0 !== null && b.t1 === null && now !== b.before) { b.t1 = performance.now(); ob.disconnect(); }
-  });
-  ob.observe(el, { attributes: true, childList: true, subtree: true, characterData: true });
-}"""
-COUNT = """([watch, attr]) => {
-  const el = document.querySelector(watch);
-  const c = window.__count = { n: 0, t: [], k: [], rt: [], last: el.getAttribute(attr) };
-  c.ob = new MutationObserver(() => {
-    const now = el.getAttribute(attr);
-    if (now !== c.last) {
-      c.n += 1; c.t.push(performance.now()); c.last = now;
-      c.k.push(Number(el.dataset.kernelMs)); c.rt.push(Number(el.dataset.roundTripMs));
-    }
-  });
-  c.ob.observe(el, { attributes: true });
-}"""
-DRAG = """async (sel) => {
-  const r = document.querySelector(sel);
-  const t0 = performance.now();
-  let v = 0;
-  while (performance.now() - t0 < 1500) {
-    await new Promise(requestAnimationFrame);
-    v = (v + 1) % (Number(r.max) + 1);
-    r.value = String(v);
-    r.dispatchEvent(new Event("input", { bubbles: true }));
-  }
-  r.dispatchEvent(new Event("change", { bubbles: true }));
-  window.__dragEnd = performance.now();
-}"""
-# A slider dragged along its track: its next position at every animation frame, through
-# all its steps (min to max, then again from min), released at the end.
-DRAG_SLIDER = """async (sel) => {
-  const r = document.querySelector(sel);
-  const lo = Number(r.min), step = Number(r.step) || 1;
-  const n = Math.floor((Number(r.max) - lo) / step + 1e-9) + 1;
-  const t0 = performance.now();
-  for (let k = 1; performance.now() - t0 < 1500; k++) {
-    await new Promise(requestAnimationFrame);
-    r.value = String(lo + (k % n) * step);
-    r.dispatchEvent(new Event("input", { bubbles: true }));
-  }
-  r.dispatchEvent(new Event("change", { bubbles: true }));
-  window.__dragEnd = performance.now();
-}"""
-MOVES = """async ({sel, points, ms}) => {
-  const el = document.querySelector(sel);
-  const t0 = performance.now();
-  for (let k = 1; performance.now() - t0 < ms; k++) {
-    await new Promise(requestAnimationFrame);
-    const [x, y] = points[k % points.length];
-    el.dispatchEvent(new PointerEvent("pointermove", { clientX: x, clientY: y, pointerId: 1,
-      bubbles: true, isPrimary: true, pointerType: "mouse", buttons: 1 }));
-  }
-}"""
-# The same, to the second change after the event: a key on a slider explorer shows the
-# picture drawn ahead first (the page's own), the kernel's full picture second.
-ARM_SECOND = """([target, events, watch, attr]) => {
-  const t = document.querySelector(target), el = document.querySelector(watch);
-  // pictures shown, plus pictures drawn ahead skipped because the kernel's came first (drag.js)
-  const count = () => Number(el.getAttribute(attr) || 0) + Number(el.dataset.skipped || 0);
-  const b = window.__bench = { t0: null, t1: null, n: 0, before: count() };
-  const start = () => { if (b.t0 === null) b.t0 = performance.now(); };
-  for (const e of events) t.addEventListener(e, start, { capture: true, once: true });
-  const ob = new MutationObserver(() => {
-    const now = count();
-    if (b.t0 !== null && b.t1 === null && now !== b.before) {
-      b.n += now - b.before;
-      b.before = now;
-      if (b.n >= 2) { b.t1 = performance.now(); ob.disconnect(); }
-    }
-  });
-  ob.observe(el, { attributes: true });
-}"""
-DONE = "() => window.__bench.t1 !== null"
-DT = "() => window.__bench.t1 - window.__bench.t0"
 
 
 #: JupyterLab's notebook windowing mode in the benchmark
@@ -206,7 +147,8 @@ def write_notebook(folder: Path) -> str:
     import nbformat
 
     nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS]
+    cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *CONTROL_CELLS, *CELLS[-2:]]
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                  "language": "python"}  # fmt: skip
@@ -269,14 +211,20 @@ def run_all_cells(page, base: str, name: str) -> None:
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=120_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
-    page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(timeout=300_000)
+    try:
+        page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(
+            timeout=600_000
+        )
+    except Exception:  # a cell failed (Run All stops there): say which
+        errors = page.locator(".jp-OutputArea-output[data-mime-type*='error']").all_inner_texts()
+        raise RuntimeError("the notebook did not finish: " + "\n".join(errors)[-3000:]) from None
     # every group of the player's frames in the page, every picture drawn ahead
     wait_for_groups(page)
     wait_for_ahead(page)
 
 
 #: The explorers whose slider positions are drawn ahead (PlaneExplorer: its first slider, v1 x).
-AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth")
+AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth", "bench-projection")
 
 
 def wait_for_ahead(page) -> None:
@@ -302,25 +250,27 @@ def wait_for_groups(page) -> None:
         timeout=300_000)  # fmt: skip
 
 
-def latency(page, target, events, watch, attr, act, tries: int, arm=ARM) -> list[float]:
-    """ms from the input event on ``target`` to the change of ``watch`` (``attr`` or text;
-    with ``arm=ARM_SECOND`` to its second change)."""
-    out = []
-    for _ in range(tries):
-        page.evaluate(arm, [target, events, watch, attr])
-        act()
-        page.wait_for_function(DONE, timeout=30_000)
-        out.append(page.evaluate(DT))
-        page.wait_for_timeout(60)
-    return out
-
-
 def bench_baselines(page, tries):
     rt = latency(page, ".bench-rt .noUi-handle", ["keydown"], ".bench-rt-out", None,
                  lambda: page.locator(".bench-rt .noUi-handle").press("ArrowRight"), tries)  # fmt: skip
     fig = latency(page, ".bench-fig .noUi-handle", ["keydown"], ".bench-fig img", "src",
                   lambda: page.locator(".bench-fig .noUi-handle").press("ArrowRight"), tries)  # fmt: skip
     return rt, fig
+
+
+#: Animation frames the page gets in 1.5 s doing nothing else: the ceiling of every frame
+#: rate measured here (60 on a quiet machine; a loaded one gives the browser fewer)
+FRAMES = """async () => {
+  const t0 = performance.now();
+  let n = 0;
+  while (performance.now() - t0 < 1500) { await new Promise(requestAnimationFrame); n += 1; }
+  return n / ((performance.now() - t0) / 1e3);
+}"""
+
+
+def bench_frames(page, tries: int) -> list[float]:
+    """Animation frames per second of the idle page, ``tries`` // 4 times (one at least)."""
+    return [page.evaluate(FRAMES) for _ in range(max(1, tries // 4))]
 
 
 def bench_player(page, tries):
@@ -383,7 +333,7 @@ def bench_editor(page, tries, info):
     def at(x, y):
         return box["x"] + (x0 + sx * x) * scale, box["y"] + (y0 + sy * y) * scale
 
-    fps, firsts, kernel, trips, parts = [], [], [], [], []
+    fps, firsts, kernel, trips, parts, settles = [], [], [], [], [], []
     hx, hy = info["handles"][1]
     for _ in range(tries):
         page.evaluate(COUNT, [".bench-editor .tr-drag img", "data-frames"])
@@ -397,6 +347,7 @@ def bench_editor(page, tries, info):
         page.evaluate(MOVES, {"sel": ".bench-editor .tr-drag img",
                               "points": [at(hx - d, hy) for d in (0, 1, 2, 3, 4, 3, 2, 1)],
                               "ms": 2000})  # fmt: skip
+        page.evaluate(MARK_RELEASE)
         page.mouse.up()
         page.wait_for_timeout(400)
         times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
@@ -409,7 +360,10 @@ def bench_editor(page, tries, info):
         )  # drag.js: where the first frame's time goes
         if timeline:
             parts.append(json.loads(timeline))
-        during = [x for x in times if x <= times[0] + 2000] if times else []
+        end = page.evaluate("() => window.__dragEnd")
+        release = max(end, page.evaluate(RELEASED))  # the moves' end, or the pointer's release
+        settles.append((times[-1] - release) if times else float("nan"))
+        during = [x for x in times if x <= end] if times else []
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
     if kernel:
         print(f"editor drag: kernel ms per position median {statistics.median(kernel):.0f}, "
@@ -427,7 +381,7 @@ def bench_editor(page, tries, info):
             f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), painted "
             f"{med(lambda t: t['painted']):.1f}; patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
         )
-    return fps, firsts
+    return fps, firsts, settles
 
 
 #: The slider explorers benchmarked: (CSS class of the widget, its name in the report, the
@@ -509,16 +463,25 @@ def first_drag_fps(page, css_class, label) -> float:
     return (len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0
 
 
-def report_sliders(results, r) -> None:
-    """Print the latency rows of :func:`bench_slider`'s results (name -> its tuple)."""
-    for name, (key, _fps, settle, toggles, full) in results.items():
-        summary(f"{name}, one key (drawn ahead)", key, r, f"<= rt + 30 = {r + 30:.0f} ms")
-        summary(f"{name}, one key, full picture (kernel)", full, r)
-        print(f"{name + ', last picture after a drag':<46}{settle:>8.1f}"
-              f"{'':>8}{settle / r:>8.2f}  coalesced: about one render")  # fmt: skip
+def slider_rows(results) -> list[tuple]:
+    """The report rows of :func:`bench_slider`'s results (name -> its tuple)."""
+    rows = []
+    for name, (key, fps, settle, toggles, full) in results.items():
+        rows += [("click", f"{name}, one key (drawn ahead)", key),
+                 ("info", f"{name}, one key, full picture (kernel)", full),
+                 ("settle", f"{name}, last picture after a drag", [settle]),
+                 ("fps", f"{name} dragged", [fps])]  # fmt: skip
         if toggles:
-            summary(f"{name.split(':')[0]}: filter toggle (kernel)", toggles, r,
-                    f"<= 2 rt = {2 * r:.0f} ms")  # fmt: skip
+            rows.append(("click", f"{name.split(':')[0]}: filter toggle (kernel)", toggles))
+    return rows
+
+
+def make_rows(specs, rt: float) -> list:
+    """:class:`browser_table.Row` s from ``(kind, label, values)`` specs (kind: "click",
+    "fps", "settle", "info"; or a Row as it is)."""
+    makers = {"click": lambda label, v: table.click(label, v, rt), "fps": table.fps,
+              "settle": table.settle, "info": table.info}  # fmt: skip
+    return [spec if isinstance(spec, table.Row) else makers[spec[0]](*spec[1:]) for spec in specs]
 
 
 def shots(page, folder: Path) -> None:
@@ -537,16 +500,62 @@ def summary(label, ms, rt, target=""):
     print(f"{label:<46}{med:>8.1f}{top:>8.1f}{med / rt:>8.2f}  {target}")
 
 
+def run(page, args, tries: int, reps: int) -> tuple[list, float]:
+    """Every interaction timed in the lab's page: the report's specs and the round trip."""
+    out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
+    info = json.loads(out.inner_text().split("BENCH-EDITOR", 1)[1])
+    # as it first shows (the interpolation toggle unfolds its comparison below)
+    player_h = page.locator(".bench-player").first.bounding_box()["height"]
+    if args.shots:
+        shots(page, args.shots)
+    rt, fig = bench_baselines(page, tries)
+    frames = bench_frames(page, tries)
+    step, drag_fps, play_fps, toggles = bench_player(page, tries)
+    editor_fps, editor_first, editor_after = bench_editor(page, max(2, tries // 4), info)
+    sliders = {name: bench_slider(page, tries, cls, label, toggle)
+               for cls, name, label, toggle in SLIDERS}  # fmt: skip
+    first_drag = first_drag_fps(page, "bench-plane", "f2")
+    explorables = bench_explorables(page, reps)
+    controls = bench_controls(page, reps)
+    specs = [
+        ("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
+        ("info", "baseline: plain figure redrawn from a slider", fig),
+        table.Row(
+            "baseline: animation frames of the idle page",
+            frames,
+            "fps",
+            note="the ceiling of every frame rate below",
+        ),
+        table.Row("FillPlayer: next step (in the page)", step, "ms", 20.0, "≤ 20 ms"),
+    ]
+    specs += [("click", f"FillPlayer: {n} toggle (kernel)", ms) for n, ms in toggles.items()]
+    specs += [table.Row("FillPlayer: height of the whole player", [player_h], "px", 900.0,
+                        "≤ 900 px"),
+              table.fps("FillPlayer: step slider dragged", drag_fps, 50.0),
+              table.fps("FillPlayer: play at 20 ms/step", play_fps, 40.0),
+              ("click", "TriangleEditor: first frame of a drag", editor_first),
+              ("fps", "TriangleEditor: vertex dragged (fills/s)", editor_fps),
+              ("settle", "TriangleEditor: last picture after a drag", editor_after)]  # fmt: skip
+    specs += slider_rows(sliders)
+    specs.append(table.fps("PlaneExplorer: f2, its first drag (kernel)", first_drag,
+                           note="the slider drawn ahead was v1 x"))  # fmt: skip
+    return specs + explorables + controls, statistics.median(rt)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="smoke run: 3 tries each")
+    parser.add_argument("--quick", action="store_true",
+                        help="smoke run: 3 tries per latency, 2 per new row, 1 per drag")  # fmt: skip
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
     parser.add_argument("--shots", type=Path, default=None,
                         help="folder for screenshots of the player and the editor")  # fmt: skip
     args = parser.parse_args(argv)
     tries = 3 if args.quick else max(args.tries, 3)
+    reps = 2 if args.quick else tries
     from playwright.sync_api import sync_playwright
 
+    load = os.getloadavg()
+    started = time.strftime("%d %b %Y %H:%M UTC", time.gmtime())
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
     name = write_notebook(work / "nb")
@@ -557,49 +566,22 @@ def main(argv=None) -> int:
             try:
                 page = browser.new_page(viewport={"width": 1400, "height": 900})
                 run_all_cells(page, base, name)
-                out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
-                text = out.inner_text()
-                info = json.loads(text.split("BENCH-EDITOR", 1)[1])
-                # as it first shows (the interpolation toggle unfolds its comparison below)
-                player_h = page.locator(".bench-player").first.bounding_box()["height"]
-                if args.shots:
-                    shots(page, args.shots)
-                rt, fig = bench_baselines(page, tries)
-                step, drag_fps, play_fps, toggles = bench_player(page, tries)
-                editor_fps, editor_first = bench_editor(page, max(2, tries // 4), info)
-                sliders = {
-                    name: bench_slider(page, tries, cls, label, toggle)
-                    for cls, name, label, toggle in SLIDERS
-                }
-                first_drag = first_drag_fps(page, "bench-plane", "f2")
+                specs, r = run(page, args, tries, reps)
             finally:
                 browser.close()
     finally:
         stop_lab(proc, log)
         shutil.rmtree(work, ignore_errors=True)
-    r = statistics.median(rt)
-    print(f"teachraster in JupyterLab + headless Chromium, 1400x900; {tries} tries per latency")
-    print(f"{'latency (ms)':<46}{'median':>8}{'max':>8}{'/ rt':>8}  target")
-    summary("baseline: do-nothing IntSlider -> Output (rt)", rt, r)
-    summary("baseline: plain figure redrawn from a slider", fig, r)
-    summary("FillPlayer: next step (in the page)", step, r, "<= 20 ms")
-    for name, ms in toggles.items():
-        summary(f"FillPlayer: {name} toggle (kernel)", ms, r, f"<= 2 rt = {2 * r:.0f} ms")
-    if editor_first:
-        summary("TriangleEditor: first frame of a drag", editor_first, r,
-                f"<= rt + 30 = {r + 30:.0f} ms")  # fmt: skip
-    report_sliders(sliders, r)
-    print(f"{'FillPlayer: height of the whole player (px)':<46}{player_h:>8.0f}{'':>8}"
-          f"{'':>8}  <= 900")  # fmt: skip
-    print(f"{'frame rates (fps)':<46}{'median':>8}{'min':>8}")
-    print(f"{'FillPlayer: step slider dragged':<46}{drag_fps:>8.1f}{drag_fps:>8.1f}  >= 50")
-    print(f"{'FillPlayer: play at 20 ms/step':<46}{play_fps:>8.1f}{play_fps:>8.1f}  >= 40")
-    print(f"{'TriangleEditor: vertex dragged (fills/s)':<46}"
-          f"{statistics.median(editor_fps):>8.1f}{min(editor_fps):>8.1f}  >= 20")  # fmt: skip
-    for name, (_key, fps, _settle, _toggles, _full) in sliders.items():
-        print(f"{name + ' dragged':<46}{fps:>8.1f}{fps:>8.1f}  >= 20")
-    print(f"{'PlaneExplorer: f2, its first drag (kernel)':<46}{first_drag:>8.1f}"
-          f"{first_drag:>8.1f}  (the slider drawn ahead was v1 x)")  # fmt: skip
+    rows = make_rows(specs, r)
+    end = os.getloadavg()
+    print(f"\nteachraster in JupyterLab + headless Chromium, 1400x900, {started}; {tries} tries "
+          f"per latency ({reps} per explorable or control, {max(1, reps // 2)} drags each); "
+          f"load average {load[0]:.1f} at the start, {end[0]:.1f} at the end; "
+          f"rt = {r:.1f} ms\n")  # fmt: skip
+    print(table.markdown(rows, r))
+    missed = table.misses(rows)
+    print(f"\n{len(missed)} of {sum(x.bound is not None for x in rows)} rows miss their target"
+          + (": " + "; ".join(missed) if missed else ""))  # fmt: skip
     return 0
 
 

@@ -388,3 +388,32 @@ def test_projection_explorer_ratio_moves_the_far_end_along_its_ray():
     ex.ratio.value = 1.0
     assert ex.largest_gap == pytest.approx(0.0, abs=1e-12)
     ex.close()
+
+
+def test_explorers_moved_by_their_controls_draw_what_a_fresh_one_draws():
+    """Issue 31's speed-ups keep the pictures: a layout solved once per case or measure,
+    artists moved instead of axes cleared. And SamplingExplorer's faint prefiltered curve
+    under the samples follows the filter (it stayed at the first one)."""
+    from widget_examples import _rows
+
+    from teachraster.plotting.frames import frame_rgba
+    from teachraster.widgets import CasePicker
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    def same(a, b):
+        pa, pb = frame_rgba(a.fig), frame_rgba(b.fig)
+        return pa.shape == pb.shape and int(np.abs(pa.astype(int) - pb.astype(int)).max()) <= 30
+
+    s = SamplingExplorer(backend="image")
+    s.width.value, s.kernel.value = 1.5, "gaussian"
+    assert same(s, SamplingExplorer(32, 1.5, "gaussian", backend="image"))
+    d = DivideCostExplorer(_rows(), backend="image")
+    d.error.value = "mean error"  # a measure not laid out yet: its label must fit
+    assert same(d, DivideCostExplorer(_rows(), error="mean error", backend="image"))
+    d.error.value = "max error"
+    assert same(d, DivideCostExplorer(_rows(), backend="image"))
+    c = CasePicker(backend="image")
+    c.case.value = "flat_top"
+    c.method.value = "span"
+    assert same(c, CasePicker("flat_top", "span", backend="image"))

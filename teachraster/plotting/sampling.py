@@ -123,6 +123,8 @@ class SamplingArtists:
     reconstructed: object
     ideal: object
     spans: list
+    #: the prefiltered signal again, faint, under the samples (panel 2)
+    filtered_faint: object = None
 
 
 def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
@@ -134,7 +136,7 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
     a.set_title("1. prefilter")
     stems = b.plot(result.sample_x, result.samples, "o", color=COLORS["outside"], ms=6,
                    label="samples")[0]  # fmt: skip
-    b.plot(result.x, result.filtered, color=OKABE_ITO["blue"], lw=1, alpha=0.35)
+    (faint,) = b.plot(result.x, result.filtered, color=OKABE_ITO["blue"], lw=1, alpha=0.35)
     b.set_title("2. sample")
     # dashed and darker: in a shared key it must not look like the signal's grey line
     (ideal,) = c.plot(result.x, result.ideal, color="0.3", lw=1.5, ls="--",
@@ -150,7 +152,7 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
                                 lw=0))  # fmt: skip
     a.legend(loc="lower left", fontsize=12, ncols=2)
     c.legend(loc="lower left", fontsize=12, ncols=2)
-    art = SamplingArtists(sig, filt, stems, rec, ideal, spans)
+    art = SamplingArtists(sig, filt, stems, rec, ideal, spans, faint)
     _name_prefiltered(art, result)
     return art
 
@@ -168,6 +170,8 @@ def _name_prefiltered(art: SamplingArtists, result: SamplingResult) -> None:
 def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:
     """Move every line of ``art`` to ``result`` (the figure is not redrawn here)."""
     art.filtered.set_ydata(result.filtered)
+    if art.filtered_faint is not None:  # it stayed at the first filter (found 2 Dec 2026)
+        art.filtered_faint.set_ydata(result.filtered)
     art.stems.set_data(result.sample_x, result.samples)
     art.reconstructed.set_ydata(result.reconstructed)
     art.ideal.set_ydata(result.ideal)

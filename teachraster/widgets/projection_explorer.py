@@ -5,6 +5,11 @@ Figures 6-7): the eye, the screen line z = 1 and a segment receding in depth. Th
 the screen parameter q; the eye ray through that screen point meets the segment at the world
 parameter t, drawn on the picture and on the curve t(q) below it. Equal steps of q are
 marked on the screen, and the rays through them hit the segment at unequal steps.
+
+The q slider is a :class:`~teachraster.widgets.LiveSlider` whose positions are drawn ahead
+(:mod:`teachraster.widgets.ahead`) while the kernel idles: dragging it shows the page's own
+pictures, at the screen's rate; a plain slider sent every value to the kernel, which
+re-rendered the whole figure for each (3 pictures in 1.5 s, issue 31).
 """
 
 from __future__ import annotations
@@ -12,9 +17,14 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.projection import Segment, plot_projection
 from .common import Shown, style_context, title_html
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import new_figure, resolve_backend
+from .live_slider import LiveSlider, info_line, slider_display
+
+#: The picture's alternative text in the page
+ALT = "the eye, the screen and the segment, and the curve t(q)"
 
 
 class ProjectionExplorer(Shown):
@@ -33,7 +43,7 @@ class ProjectionExplorer(Shown):
 
     Attributes
     ----------
-    q : ipywidgets.FloatSlider
+    q : LiveSlider
     ratio : ipywidgets.FloatSlider
         z1 / z0, the far end's depth over the near end's (1 to 8). The far end moves along its
         own eye ray, so the segment's picture on the screen stays where it is: only how the
@@ -42,7 +52,8 @@ class ProjectionExplorer(Shown):
         World parameter at the current q.
     largest_gap : float
         The largest |t − q| over the screen at the current ratio.
-    info : ipywidgets.HTML
+    info : PageCaption or ipywidgets.HTML
+        The line above the picture (its ``value``).
     widget : ipywidgets.VBox
 
     Examples
@@ -61,20 +72,26 @@ class ProjectionExplorer(Shown):
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.segment = Segment() if segment is None else segment
         self.backend = resolve_backend(backend)
-        self.q = widgets.FloatSlider(value=q, min=0.0, max=1.0, step=0.01, description="q",
-                                     continuous_update=True, readout_format=".2f")  # fmt: skip
+        # in the page, its positions drawn ahead (coalesced where they are not)
+        self.q = LiveSlider(value=q, min=0.0, max=1.0, step=0.01, description="q",
+                            readout_format=".2f")  # fmt: skip
+        self._q = float(self.q.value)  # the q of the picture on show
         with style_context(style):
             self.fig = new_figure((9.0, 10.0), self.backend)
             self.fig.set_layout_engine("constrained")
             self.axes = self.fig.subplots(2, 1, height_ratios=[1.6, 1.0])
             self.n_steps, self.style = n_steps, style
             self._plot()
-            self.display = FigureDisplay(self.fig, self.backend)
+            self._lay_out()
+            self.display = slider_display(self.fig, self.backend, draw=self._draw_figure,
+                                          drafting=lambda: self.q.dragging, alt=ALT)  # fmt: skip
         self.ratio = widgets.FloatSlider(
             value=self.segment.z1 / self.segment.z0, min=1.0, max=8.0, step=0.25,
             description="z1 / z0", continuous_update=False, readout_format=".2f",
         )  # fmt: skip
-        self.info = widgets.HTML(self._info_html())
+        # the caption of the page's picture: a picture drawn ahead brings its own
+        self.info, info_widgets = info_line(self.display)
+        self.info.value = self._info_html()
         self.q.observe(lambda change: self.update(), "value")
         self.ratio.observe(lambda change: self.set_ratio(change["new"]), "value")
         title = title_html(
@@ -83,17 +100,43 @@ class ProjectionExplorer(Shown):
             "circle is where affine interpolation (t = q) would put it. Move z1 / z0: the far "
             "end slides along its own ray, deeper or nearer.",
         )
-        self.widget = widgets.VBox([title, self.q, self.ratio, self.info, self.display.widget])
+        self.widget = widgets.VBox([title, self.q, self.ratio, *info_widgets,
+                                    self.display.widget])  # fmt: skip
+        self._ahead = None
+        if self.backend != "ipympl":
+            self._ahead = self.display.ahead(self.q, self)  # drawn while the kernel idles
 
     def _plot(self) -> None:
         ax, curve = self.axes
         ax.clear()
         curve.clear()
-        self.artists = plot_projection(ax, self.segment, n_steps=self.n_steps, q=self.q.value,
+        self.artists = plot_projection(ax, self.segment, n_steps=self.n_steps, q=self._q,
                                        curve_ax=curve)  # fmt: skip
-        self.t = self.artists.update(self.q.value)
+        self.t = self.artists.update(self._q)
+        a = self.artists
+        # a new q moves these only: the rest (the rays of equal steps, the segment, the
+        # axes, the keys) stays in a cached background, the curve's key over its point
+        self._blit = LayeredBlit(self.fig, [
+            (MOVING, [a.ray, a.screen_point, a.world_point, a.affine_point, a.label,
+                      a.curve_point]),
+            (STILL, [curve.get_legend()])])  # fmt: skip
         qq = np.linspace(0.0, 1.0, 401)
         self.largest_gap = float(np.max(np.abs(self.segment.world_parameter(qq) - qq)))
+
+    def _lay_out(self) -> None:
+        """Lay the figure out (constrained), then keep that layout: a new q moves artists
+        only, so its picture is a plain draw, and the pictures drawn ahead line up."""
+        self.fig.set_layout_engine("constrained")
+        self.fig.canvas.draw()
+        self.fig.set_layout_engine("none")
+        # the line above the picture (the axes' title) pinned where this draw put it:
+        # hidden while the blit draws its background, matplotlib would move it out of sight
+        label = self.artists.label
+        self.axes[0].set_title(label.get_text(), loc="left", y=label.get_position()[1],
+                               fontsize=label.get_fontsize())  # fmt: skip
+
+    def _draw_figure(self) -> None:
+        self._blit.draw()
 
     def _info_html(self) -> str:
         r = self.segment.z1 / self.segment.z0
@@ -107,10 +150,21 @@ class ProjectionExplorer(Shown):
         self.segment = Segment(seg.x0, seg.z0, seg.x1 / seg.z1 * z1, z1)  # same screen point
         with style_context(self.style):
             self._plot()
+            self._lay_out()
         self.info.value = self._info_html()
         self.display.refresh()
+        if self._ahead is not None:  # the pictures drawn ahead show the old segment
+            self._ahead.restart()
 
     def update(self) -> None:
-        """Move the ray to the slider's q and redraw."""
-        self.t = self.artists.update(self.q.value)
+        """Move the ray to the slider's q and redraw (its artists only)."""
+        self._compute_at(self.q.value)
+        self._set_artists()
         self.display.refresh()
+
+    # what the pictures drawn ahead need (teachraster.widgets.ahead.FramesAhead)
+    def _compute_at(self, q: float) -> None:
+        self._q = float(q)
+
+    def _set_artists(self) -> None:
+        self.t = self.artists.update(self._q)
