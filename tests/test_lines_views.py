@@ -121,6 +121,45 @@ def test_line_player_switches_rule():
         player.close()
 
 
+def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
+    """Lesson 12's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
+    ends at x = 12.5, so the walk stops at column 12 (it went on to a column 13 with the
+    infinite line's y), and column 6, where the line passes y = 3 exactly (a diamond corner,
+    c13's column where Bresenham differs), says that GL's ε decided it."""
+    from teachraster.widgets.line_player import LinePlayer
+
+    player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule="diamond", backend="image")
+    try:
+        trace = player.trace
+        assert trace.caption(1) == "x-major: walk columns 0..12, one step each"
+        assert trace.steps.major.tolist() == list(range(13))
+        captions = [trace.caption(k) for k in range(2, len(trace))]
+        tied = [c for c in captions if "a tie: GL's perturbation" in c]
+        assert len(tied) == 1 and tied[0].startswith("column 6, line at the centre: y = 3;")
+        assert "pixel (row 3, col 6)" in tied[0]
+        player.slider.value = len(trace) - 1
+        assert player.caption.value.startswith("step 14 (0 to 14): column 12")
+    finally:
+        player.close()
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_diamond_walk_visits_only_columns_the_segment_reaches(seed):
+    """Every walked column (row) overlaps the segment's extent along the major axis, and
+    no column of the segment's extent inside the image is left out."""
+    rng = np.random.default_rng(seed)
+    for _ in range(200):
+        p = rng.integers(-8, 40, (2, 2)) / rng.choice([1, 2, 4, 256])
+        steps = tr.rasterize_line(p[0], p[1], 24, 16, trace=True).trace.steps
+        if len(steps.major) == 0:
+            continue
+        axis = 0 if steps.x_major else 1
+        lo, hi = sorted(p[:, axis])
+        size = 24 if steps.x_major else 16
+        reached = [j for j in range(size) if j < hi and j + 1 > lo or j + 1 == lo]
+        assert steps.major.tolist() == reached, p.tolist()
+
+
 def test_line_player_first_picture_keeps_its_labels_inside():
     # the first PNG was drawn before constrained layout settled: "column j" cut off at the top
     import io
