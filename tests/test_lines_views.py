@@ -80,6 +80,25 @@ def test_plot_rgba_shows_alpha_over_a_checkerboard(ax):
         plot_rgba(ax, color[..., :3])
 
 
+def test_blending_explorer_controls_keep_their_text():
+    """At 1024 x 768 the buttons' column shrank inside a fixed row and cut "sort back to
+    front" to "sort back to fron" (review r7): each control keeps its own width (flex
+    "0 0 auto", width auto) and the row wraps whole controls instead (control_row)."""
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24))
+    try:
+        row = ex.widget.children[1]
+        assert row.layout.flex_flow == "row wrap"
+        for column in row.children[1:]:
+            assert column.layout.flex == "0 0 auto"
+        for control in (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb):
+            assert control.layout.width == "auto" and control.layout.flex == "0 0 auto"
+        assert not ex.premultiplied.indent and not ex.srgb.indent
+    finally:
+        ex.close()
+
+
 def test_blending_explorer_order_and_toggles():
     from teachraster.widgets.blending import BlendingExplorer
 
