@@ -477,13 +477,15 @@ def test_diamond_pixels_as_the_engines_on_ties():
         for s in js["steps"]:
             for c in s["cands"]:
                 lit[c["row"], c["col"]] |= c["state"] == 1
-                states[(s["major"], c["row"], c["col"])] = c["state"]
+                states[(s["major"], c["row"], c["col"])] = (c["state"], c["tie"])
                 ties += c["tie"] and c["state"] != 0
         assert np.array_equal(lit, want), e.tolist()
         steps = diamond(tuple(js["a"]), tuple(js["b"]), unit, 12, 10)
-        engine = {(int(steps.major[s]), int(r), int(c)): int(st)
-                  for s, r, c, st in zip(steps.step, steps.rows, steps.cols, steps.state,
-                                         strict=True)}  # fmt: skip
+        # the same walk, decisions and ties (the LinePlayer's captions read the engine's)
+        assert [s["major"] for s in js["steps"]] == steps.major.tolist()
+        engine = {(int(steps.major[s]), int(r), int(c)): (int(st), bool(t))
+                  for s, r, c, st, t in zip(steps.step, steps.rows, steps.cols, steps.state,
+                                            steps.tie, strict=True)}  # fmt: skip
         assert states == engine
     assert ties > 20  # the inputs do exercise GL's perturbation
 

@@ -161,6 +161,102 @@ def test_overlays_are_zero_not_nan_where_nothing_arrives():
     assert small.overlay("triangle_size")[1, 1] == small.coverage.sum()
 
 
+def lane_share_from_trace(frame, width):
+    """Helpers over all lanes, counted independently from the trace's fragment arrays (one
+    sample): 4 lanes per (input triangle, quad) pair with a fragment that passed."""
+    t = frame.trace
+    passed = t.fragment_passed
+    quad = (t.fragment_row[passed] // 2) * ((width + 1) // 2) + t.fragment_col[passed] // 2
+    pairs = np.unique(np.column_stack([t.fragment_triangle[passed], quad]), axis=0)
+    return 1 - passed.sum() / (4 * len(pairs)) if len(pairs) else 0.0
+
+
+@pytest.mark.parametrize("name", ["uv_sphere", "textured_floor", "grid", "fan"])
+def test_helper_share_is_helpers_over_all_lanes_and_the_overlay_title_prints_it(name):
+    """The quad overshading title says the frame's helper share over ALL lanes launched
+    (lesson 11 prints it), not the mean over quads with a helper (51 % on the floor against a
+    printed 6 %)."""
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging import helper_share
+    from teachraster.plotting import plot_overlay
+
+    frame = tr.render(get_scene(name), None, 64, 48, trace=True)
+    share = helper_share(frame)
+    assert share == pytest.approx(lane_share_from_trace(frame, 64), abs=1e-12)
+    values = frame.overlay("quad_overshading")
+    # the same share from the overlay's per-quad fractions, weighted by the lanes launched
+    quads = {(r // 2, c // 2): values[r, c] for r, c in np.argwhere(values > 0)}
+    launched = sum(4 * len(tr.pipeline.debugging.quad_triangles(frame, 2 * r, 2 * c))
+                   for r, c in np.ndindex(24, 32))  # fmt: skip
+    helpers = sum(4 * len(tr.pipeline.debugging.quad_triangles(frame, 2 * r, 2 * c)) * v
+                  for (r, c), v in quads.items())  # fmt: skip
+    assert share == pytest.approx(helpers / launched)
+    fig, ax = plt.subplots()
+    try:
+        plot_overlay(ax, frame, "quad_overshading")
+        assert ax.get_title() == f"quad overshading: helpers {share:.0%} of all lanes"
+    finally:
+        plt.close(fig)
+    if name == "textured_floor":  # the reviewer's case: two big triangles, few helpers
+        assert share < 0.1 < values[values > 0].mean()
+
+
+def test_helper_share_under_msaa_and_without_work():
+    from teachraster.pipeline.debugging import helper_share, quad_triangles
+
+    four = tr.render(get_scene("uv_sphere"), None, 32, 24, trace=True, samples=4)
+    launched = useful = 0
+    for r, c in np.ndindex(12, 16):
+        shaded = quad_triangles(four, 2 * r, 2 * c)
+        launched, useful = launched + 4 * len(shaded), useful + sum(shaded.values())
+    assert 0 < helper_share(four) == pytest.approx(1 - useful / launched)
+    empty = tr.render(clip_from_window([[[1, 1], [3, 1], [1, 3]]], 0.5, width=8, height=8)[:0],
+                      8, 8, trace=True)  # fmt: skip
+    assert helper_share(empty) == 0.0
+    with pytest.raises(ValueError, match="trace=True"):
+        helper_share(tr.render(get_scene("fan"), None, 16, 12))
+    with pytest.raises(ValueError, match="row"):
+        quad_triangles(four, 24, 0)
+
+
+def test_quad_triangles_are_the_passed_records_of_the_quads_four_pixels():
+    """What the inspector lists under a quad is what clicking its four pixels shows: the
+    triangles whose fragment passed the depth test there, hidden later or not."""
+    from teachraster.pipeline.debugging import quad_triangles
+
+    frame = tr.render(get_scene("uv_sphere"), None, 64, 48, trace=True)
+    values = frame.overlay("quad_overshading")
+    several = 0
+    for r0, c0 in [(r, c) for r in range(0, 48, 2) for c in range(0, 64, 2)]:
+        shaded = quad_triangles(frame, r0 + 1, c0)
+        clicked: dict = {}
+        for r, c in ((r0, c0), (r0, c0 + 1), (r0 + 1, c0), (r0 + 1, c0 + 1)):
+            for rec in frame.history(r, c):
+                if rec.outcome == "passed":
+                    clicked[rec.triangle] = clicked.get(rec.triangle, 0) + 1
+        assert shaded == clicked, (r0, c0)
+        if shaded:
+            lanes = 4 * len(shaded)
+            assert values[r0, c0] == pytest.approx((lanes - sum(shaded.values())) / lanes)
+        several += len(shaded) > len({int(t) for t in frame.triangle_id[r0:r0 + 2, c0:c0 + 2].ravel()
+                                      if t >= 0})  # fmt: skip
+    assert several > 0  # some quads count a triangle that passed and was hidden later
+
+
+def test_distances_in_a_history_have_one_precision():
+    """One precision per table (4 decimals), not 0.646 beside 0.4258 (review r7)."""
+    import re
+
+    from teachraster.pipeline.debugging.frame_history import px_text
+
+    frame = tr.render(get_scene("fan"), None, 64, 48, trace=True)
+    texts = " ".join(str(frame.history(r, c)) for r, c in [(20, 30), (24, 32), (10, 10)])
+    found = re.findall(r"by (\S+) px", texts)
+    assert found and all(re.fullmatch(r"\d+\.\d{4}|\d\.\de-\d+", d) for d in found), found
+    assert px_text(2.73) == "2.7300" and px_text(1e-6) == "1.0e-06"
+
+
 def test_nan_overlay_counts_non_finite_values():
     frame = tr.render(get_scene("textured_floor"), None, 32, 24)
     assert frame.overlay("nan").sum() == 0  # no trace needed
@@ -266,6 +362,14 @@ def test_frame_inspector_views_clicks_and_scenes():
         w.clicker.click = [x / width, 1 - y / height, 1]
         assert (w.row.value, w.col.value) == (7, 5)
         assert w.clicker.value[:4] == b"\x89PNG"
+    w.row.value, w.col.value = 10, 14
+    w.view.value = "quad_overshading"  # the quad's triangles under the history
+    shaded = tr.pipeline.debugging.quad_triangles(w.frame, 10, 14)
+    assert shaded  # the cube covers this quad
+    assert "quad of rows 10–11, cols 14–15" in w.table.value
+    assert f"{4 * len(shaded)} lanes launched" in w.table.value
+    w.view.value = "overdraw"
+    assert "quad of rows" not in w.table.value
     w.click_at(100.0, 100.0)  # outside the frame: nothing changes
     assert (w.row.value, w.col.value) != (100, 100)
     w.samples.value = 4

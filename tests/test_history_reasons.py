@@ -360,4 +360,4 @@ def test_a_vertex_on_the_near_plane_makes_a_zero_area_piece():
     assert counts["seam"] == 0 and counts["zero_area"] > 0 and counts["clipped_away"] > 0
     first, second = frame.history(9, 5)
     assert (first.reason, first.edge, second.reason) == ("clipped_away", "near", "zero_area")
-    assert "beyond the near clip edge by 4.299 px" in str(frame.history(9, 5))
+    assert "beyond the near clip edge by 4.2989 px" in str(frame.history(9, 5))

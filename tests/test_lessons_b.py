@@ -587,6 +587,41 @@ def test_11_helper_share_counts_every_lane_launched():
     assert np.isclose(1 - useful.sum() / launched.sum(), ns.share["textured_floor"])
 
 
+def test_11_overshading_title_question_3_and_early_tests():
+    import json
+
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging import quad_triangles
+    from teachraster.plotting import plot_overlay
+
+    ns = lesson("11_debugging_a_frame")
+    # the figure (and the inspector) title the share the cell prints: helpers / all lanes
+    for name, frame in (("uv_sphere", ns.sphere), ("textured_floor", ns.floor)):
+        fig, ax = plt.subplots()
+        plot_overlay(ax, frame, "quad_overshading")
+        assert f"helpers {ns.share[name]:.0%} of all lanes" in ax.get_title(), name
+        plt.close(fig)
+    # Question 3 names a pixel the frame covers, in a quad with the most helpers
+    for name, frame in (("uv_sphere", ns.sphere), ("grid", ns.grid)):
+        rc = ns.q3_pixel[name]
+        assert frame.triangle_id[rc] >= 0, name
+        assert frame.overlay("quad_overshading")[rc] == 0.75
+        passed = {x.triangle for r in (rc[0] // 2 * 2, rc[0] // 2 * 2 + 1)
+                  for c in (rc[1] // 2 * 2, rc[1] // 2 * 2 + 1)
+                  for x in frame.history(r, c) if x.outcome == "passed"}  # fmt: skip
+        assert passed == set(quad_triangles(frame, *rc)), name
+    # "a triangle that passed the depth test and was hidden later counts too": it does there
+    r0, c0 = (v // 2 * 2 for v in ns.q3_pixel["uv_sphere"])
+    shown = {int(t) for t in ns.sphere.triangle_id[r0 : r0 + 2, c0 : c0 + 2].ravel() if t >= 0}
+    assert len(quad_triangles(ns.sphere, r0, c0)) > len(shown)
+    # §1: early_fragment_tests moves the depth WRITE before the shader too (GL 4.6 §14.9)
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    words = " ".join(" ".join(cells[4]["source"]).split())
+    assert "**and their writes**" in words and "does not undo the depth write" in words
+    assert "§14.9 *Early Per-Fragment Tests*" in words
+
+
 # -- 09 texture filtering -----------------------------------------------------------------------
 def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     ns = lesson("09_texture_filtering")

@@ -80,6 +80,25 @@ def test_plot_rgba_shows_alpha_over_a_checkerboard(ax):
         plot_rgba(ax, color[..., :3])
 
 
+def test_blending_explorer_controls_keep_their_text():
+    """At 1024 x 768 the buttons' column shrank inside a fixed row and cut "sort back to
+    front" to "sort back to fron" (review r7): each control keeps its own width (flex
+    "0 0 auto", width auto) and the row wraps whole controls instead (control_row)."""
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24))
+    try:
+        row = ex.widget.children[1]
+        assert row.layout.flex_flow == "row wrap"
+        for column in row.children[1:]:
+            assert column.layout.flex == "0 0 auto"
+        for control in (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb):
+            assert control.layout.width == "auto" and control.layout.flex == "0 0 auto"
+        assert not ex.premultiplied.indent and not ex.srgb.indent
+    finally:
+        ex.close()
+
+
 def test_blending_explorer_order_and_toggles():
     from teachraster.widgets.blending import BlendingExplorer
 
@@ -119,6 +138,45 @@ def test_line_player_switches_rule():
         assert player.caption.value == "step 4 (0 to 21): column 2 (steps 0 and 1 set the line up)"
     finally:
         player.close()
+
+
+def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
+    """Lesson 12's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
+    ends at x = 12.5, so the walk stops at column 12 (it went on to a column 13 with the
+    infinite line's y), and column 6, where the line passes y = 3 exactly (a diamond corner,
+    c13's column where Bresenham differs), says that GL's ε decided it."""
+    from teachraster.widgets.line_player import LinePlayer
+
+    player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule="diamond", backend="image")
+    try:
+        trace = player.trace
+        assert trace.caption(1) == "x-major: walk columns 0..12, one step each"
+        assert trace.steps.major.tolist() == list(range(13))
+        captions = [trace.caption(k) for k in range(2, len(trace))]
+        tied = [c for c in captions if "a tie: GL's perturbation" in c]
+        assert len(tied) == 1 and tied[0].startswith("column 6, line at the centre: y = 3;")
+        assert "pixel (row 3, col 6)" in tied[0]
+        player.slider.value = len(trace) - 1
+        assert player.caption.value.startswith("step 14 (0 to 14): column 12")
+    finally:
+        player.close()
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_diamond_walk_visits_only_columns_the_segment_reaches(seed):
+    """Every walked column (row) overlaps the segment's extent along the major axis, and
+    no column of the segment's extent inside the image is left out."""
+    rng = np.random.default_rng(seed)
+    for _ in range(200):
+        p = rng.integers(-8, 40, (2, 2)) / rng.choice([1, 2, 4, 256])
+        steps = tr.rasterize_line(p[0], p[1], 24, 16, trace=True).trace.steps
+        if len(steps.major) == 0:
+            continue
+        axis = 0 if steps.x_major else 1
+        lo, hi = sorted(p[:, axis])
+        size = 24 if steps.x_major else 16
+        reached = [j for j in range(size) if j < hi and j + 1 > lo or j + 1 == lo]
+        assert steps.major.tolist() == reached, p.tolist()
 
 
 def test_line_player_first_picture_keeps_its_labels_inside():

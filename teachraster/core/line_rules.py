@@ -39,7 +39,9 @@ class LineSteps:
     rule computed there (diamond: the exact minor coordinate of the line at the centre, px;
     Bresenham: the error term before its decision; DDA: the accumulated float32 minor
     coordinate, px). Candidates: ``step`` (m,) the step each belongs to, ``rows``, ``cols``
-    (m,) the pixel, ``state`` (m,) int8 :data:`MISSED`, :data:`LIT` or :data:`ENDS_INSIDE`.
+    (m,) the pixel, ``state`` (m,) int8 :data:`MISSED`, :data:`LIT` or :data:`ENDS_INSIDE`;
+    ``tie`` (m,) bool (diamond rule, traced) where GL's perturbation by ``-(ε, ε²)`` decided
+    the candidate's state (the segment touches its diamond's boundary), else None.
     """
 
     x_major: bool
@@ -49,6 +51,7 @@ class LineSteps:
     rows: np.ndarray
     cols: np.ndarray
     state: np.ndarray
+    tie: np.ndarray | None = None
 
     @property
     def lit(self) -> np.ndarray:
@@ -62,10 +65,16 @@ def major_axis(d) -> bool:
 
 
 def _major_range(a, b, unit, size, axis) -> np.ndarray:
-    """Major-axis pixel indices whose diamonds can meet the segment, clipped to the image."""
+    """Major-axis pixel indices whose diamonds can meet the segment, clipped to the image.
+
+    Diamond j spans the open interval (j, j + 1) along the major axis, and the segment,
+    moved by ``-ε`` (``-ε²`` along y), spans [lo - ε, hi - ε]: they overlap exactly for
+    ``ceil(lo) - 1 <= j <= ceil(hi) - 1``. No column (row) the segment never reaches is
+    walked (a segment ending at x = 12.5 walked column 13 too).
+    """
     lo, hi = sorted((a[axis], b[axis]))
-    first = max(int(lo // unit) - 1, 0)
-    last = min(int(hi // unit) + 1, size - 1)
+    first = max(int(-(-lo // unit)) - 1, 0)
+    last = min(int(-(-hi // unit)) - 1, size - 1)
     return np.arange(first, last + 1, dtype=np.int64)
 
 
@@ -79,7 +88,8 @@ def empty_steps(x_major: bool = True) -> LineSteps:
     """No step at all: a zero-length line lights nothing (its end's diamond is its start's),
     nor does one whose major-axis range misses the image."""
     none = np.zeros(0, np.int64)
-    return LineSteps(x_major, none, none.astype(np.float64), none, none, none, none.astype(np.int8))
+    return LineSteps(x_major, none, none.astype(np.float64), none, none, none,
+                     none.astype(np.int8), np.zeros(0, bool))  # fmt: skip
 
 
 def _walk(a, b, unit, width, height):
@@ -119,13 +129,23 @@ def _bound(c, a_coord, d, tie):
 
 def _less(x, y):
     """x < y for perturbed values (n0, n1, n2, den), lexicographic in powers of ε."""
+    return _less_tie(x, y)[0]
+
+
+def _less_tie(x, y):
+    """(x < y, whether ε decided it): the comparison of :func:`_less` and where the values'
+    ε-free parts are equal, so that only GL's perturbation tells them apart."""
     out = np.zeros(np.broadcast(x[0], y[0]).shape, dtype=bool)
     undecided = np.ones_like(out)
+    by_eps = np.zeros_like(out)
     for k in range(3):
         lhs, rhs = x[k] * y[3], y[k] * x[3]
-        out |= undecided & (lhs < rhs)
+        decided = undecided & (lhs != rhs)
+        out |= decided & (lhs < rhs)
+        if k:
+            by_eps |= decided
         undecided &= lhs == rhs
-    return out
+    return out, by_eps | undecided
 
 
 def _pick(mask, x, y):
@@ -134,20 +154,25 @@ def _pick(mask, x, y):
 
 
 def _axis_bounds(centre, a_coord, d, half, tie):
-    """Open bounds (lo, hi) on t for ``|u(t) - centre| < half`` along one diagonal axis, and
-    whether the axis admits any t when the segment is parallel to it (d == 0)."""
+    """Open bounds (lo, hi) on t for ``|u(t) - centre| < half`` along one diagonal axis,
+    whether the axis admits any t when the segment is parallel to it (d == 0), and whether
+    the perturbation decided that (the segment runs along the slab's boundary)."""
     near, far = (centre - half, centre + half) if d > 0 else (centre + half, centre - half)
     if d == 0:
         off = a_coord - centre  # the perturbed start a - ε... is inside iff -h < off <= h
         ok = (off > -half) & (off <= half)
         n = np.ones_like(centre)
-        return (-n, 0 * n, 0 * n, n), (2 * n, 0 * n, 0 * n, n), ok
-    return _bound(near, a_coord, d, tie), _bound(far, a_coord, d, tie), np.ones(len(centre), bool)
+        return (-n, 0 * n, 0 * n, n), (2 * n, 0 * n, 0 * n, n), ok, np.abs(off) == half
+    none = np.zeros(len(centre), bool)
+    return _bound(near, a_coord, d, tie), _bound(far, a_coord, d, tie), ~none, none
 
 
-def diamond_states(a, b, unit, rows, cols) -> np.ndarray:
+def diamond_states(a, b, unit, rows, cols, *, ties: bool = False):
     """For candidate pixels, whether the perturbed segment a→b meets their open diamond and
-    whether it ends inside it: int8 :data:`LIT`, :data:`ENDS_INSIDE` or :data:`MISSED`.
+    whether it ends inside it: int8 :data:`LIT`, :data:`ENDS_INSIDE` or :data:`MISSED`;
+    with ``ties=True`` also (m,) bool, where GL's perturbation decided that state (one
+    comparison equal but for its ε terms, or the end point on the diamond's boundary; the
+    page's ``diamondState`` marks the same ones).
 
     In the rotated coordinates u = x + y, v = x - y the diamond is the open square
     ``|u - u_c| < h, |v - v_c| < h`` (h half a pixel), so meeting it is a clip of t ∈ [0, 1]
@@ -156,16 +181,23 @@ def diamond_states(a, b, unit, rows, cols) -> np.ndarray:
     half = unit // 2 if isinstance(unit, int) else 0.5
     cx, cy = cols * unit + half, rows * unit + half
     au, av, bu, bv = a[0] + a[1], a[0] - a[1], b[0] + b[1], b[0] - b[1]
-    lo_u, hi_u, ok_u = _axis_bounds(cx + cy, au, bu - au, half, +1)
-    lo_v, hi_v, ok_v = _axis_bounds(cx - cy, av, bv - av, half, -1)
-    lo = _pick(_less(lo_u, lo_v), lo_v, lo_u)
-    hi = _pick(_less(hi_u, hi_v), hi_u, hi_v)
+    lo_u, hi_u, ok_u, along_u = _axis_bounds(cx + cy, au, bu - au, half, +1)
+    lo_v, hi_v, ok_v, along_v = _axis_bounds(cx - cy, av, bv - av, half, -1)
+    u_first, t1 = _less_tie(lo_u, lo_v)
+    h_first, t2 = _less_tie(hi_u, hi_v)
+    lo, hi = _pick(u_first, lo_v, lo_u), _pick(h_first, hi_u, hi_v)
     one, zero = (1, 0, 0, 1), (0, 0, 0, 1)
-    meets = ok_u & ok_v & _less(lo, hi) & _less(lo, one) & _less(zero, hi)
+    (c1, t3), (c2, t4), (c3, t5) = _less_tie(lo, hi), _less_tie(lo, one), _less_tie(zero, hi)
+    meets = ok_u & ok_v & c1 & c2 & c3
     # b' = b - (ε, ε²) is inside the diamond iff -h < off <= h on both diagonal axes.
     du, dv = bu - (cx + cy), bv - (cx - cy)
     ends = (du > -half) & (du <= half) & (dv > -half) & (dv <= half)
-    return np.where(meets, np.where(ends, ENDS_INSIDE, LIT), MISSED).astype(np.int8)
+    state = np.where(meets, np.where(ends, ENDS_INSIDE, LIT), MISSED).astype(np.int8)
+    if not ties:
+        return state
+    on_edge = (np.abs(du) + np.abs(dv) <= 2 * half) & ((np.abs(du) == half) | (np.abs(dv) == half))
+    tie = along_u | along_v | (ok_u & ok_v & (t1 | t2 | t3 | t4 | t5)) | on_edge
+    return state, tie
 
 
 #: Major-axis steps decided together: bounds the temporaries of a very long line.
@@ -188,13 +220,17 @@ def diamond(a, b, unit, width, height, keep_missed: bool = True) -> LineSteps:
     for lo in range(0, len(major), CHUNK):
         hi = lo + CHUNK
         step, rows, cols = _candidates(x_major, major[lo:hi], minor[lo:hi], lo, unit, limit)
-        state = diamond_states(a, b, unit, rows, cols)
-        if not keep_missed:
+        if keep_missed:  # the trace: every candidate, and which ones a tie decided
+            state, tie = diamond_states(a, b, unit, rows, cols, ties=True)
+        else:
+            state = diamond_states(a, b, unit, rows, cols)
             keep = state != MISSED
             step, rows, cols, state = step[keep], rows[keep], cols[keep], state[keep]
-        parts.append((step, rows, cols, state))
-    step, rows, cols, state = (np.concatenate(p) for p in zip(*parts, strict=True))
-    return LineSteps(x_major, major, minor / unit, step, rows, cols, state)
+            tie = np.zeros(len(state), bool)
+        parts.append((step, rows, cols, state, tie))
+    step, rows, cols, state, tie = (np.concatenate(p) for p in zip(*parts, strict=True))
+    return LineSteps(x_major, major, minor / unit, step, rows, cols, state,
+                     tie if keep_missed else None)  # fmt: skip
 
 
 # -- Bresenham and DDA --------------------------------------------------------------------------

@@ -114,6 +114,8 @@ class LineTrace:
             f"pixel (row {r}, col {c}): {_WHY[self.rule][int(st)]}"
             for r, c, st in zip(s.rows[mine], s.cols[mine], s.state[mine], strict=True)
         ]
+        if s.tie is not None and s.tie[mine].any():  # the segment touches a diamond's boundary
+            parts.append("a tie: GL's perturbation of the end points by −(ε, ε²) decided it")
         return head + ("; " + "; ".join(parts) if parts else "; no pixel lit")
 
     def coverage_at(self, k: int) -> np.ndarray:

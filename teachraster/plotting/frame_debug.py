@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib.colors import BoundaryNorm, ListedColormap, LogNorm, Normalize
 
 from ..core.validate import check_choice
-from ..pipeline.debugging.overlays import KINDS
+from ..pipeline.debugging.overlays import KINDS, helper_share
 from .common import Artists, pixel_axes, show_image
 from .style import ERROR_CMAP, VALUE_CMAP
 
@@ -133,7 +133,8 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> Ov
         result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g")
         result.colorbar.set_label(overlay_label(kind, n_samples), fontsize="small")
         result.colorbar.minorticks_off()  # a log bar's minor labels ("6 × 10⁰") crowd it
-    ax.set_title(overlay_title(kind, values, n_samples), fontsize="small")
+    share = helper_share(frame) if kind == "quad_overshading" else None
+    ax.set_title(overlay_title(kind, values, n_samples, share=share), fontsize="small")
     return result
 
 
@@ -154,13 +155,17 @@ def fit_title(ax, margin: float = 4.0):
     return title
 
 
-def overlay_title(kind: str, values: np.ndarray, n_samples: int = 1) -> str:
+def overlay_title(kind: str, values: np.ndarray, n_samples: int = 1, *,
+                  share: float | None = None) -> str:  # fmt: skip
     """A one-line summary of an overlay in numbers (under MSAA, overdraw and depth
-    complexity say that they count samples)."""
+    complexity say that they count samples). The quad overshading's is the frame's
+    ``share`` of helpers among all lanes launched
+    (:func:`~teachraster.pipeline.debugging.overlays.helper_share`), not a mean of the
+    per-quad fractions, which would drop the quads without helpers."""
     if kind == "quad_overshading":
-        busy = values > 0
-        mean = float(values[busy].mean()) if busy.any() else 0.0
-        return f"quad overshading: mean {mean:.0%} helpers"
+        if share is None:
+            return "quad overshading"
+        return f"quad overshading: helpers {share:.0%} of all lanes"
     if kind == "triangle_size":
         seen = values[values > 0]
         median = int(np.median(seen)) if len(seen) else 0

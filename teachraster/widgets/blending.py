@@ -19,7 +19,7 @@ import numpy as np
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import render
 from ..plotting.lines import plot_rgba
-from .common import Shown, style_context, title_html
+from .common import Shown, control_row, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
 
@@ -97,12 +97,20 @@ class BlendingExplorer(Shown):
         self.clip, self.rgba, self.size = np.asarray(clip, float), np.asarray(rgba, float), size
         self.order = list(range(len(self.clip)))
         self.backend = resolve_backend(backend)
-        self.select = widgets.Select(options=self._options(), value=0, rows=len(self.order))
-        self.earlier = widgets.Button(description="earlier ↑")
-        self.later = widgets.Button(description="later ↓")
-        self.sort = widgets.Button(description="sort back to front")
-        self.premultiplied = widgets.Checkbox(value=False, description="premultiplied")
-        self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer")
+        # Each control as wide as its text and never shrunk by its row (flex "0 0 auto"): in
+        # a fixed-width row the buttons' column shrank and cut "sort back to front" to "sort
+        # back to fron" at 1024 x 768 (review r7); the row wraps instead (control_row).
+        whole = dict(width="auto", flex="0 0 auto")
+        self.select = widgets.Select(options=self._options(), value=0, rows=len(self.order),
+                                     layout=widgets.Layout(width="220px", max_width="100%"))  # fmt: skip
+        self.earlier = widgets.Button(description="earlier ↑", layout=widgets.Layout(**whole))
+        self.later = widgets.Button(description="later ↓", layout=widgets.Layout(**whole))
+        self.sort = widgets.Button(description="sort back to front",
+                                   layout=widgets.Layout(**whole))  # fmt: skip
+        self.premultiplied = widgets.Checkbox(value=False, description="premultiplied",
+                                              indent=False, layout=widgets.Layout(**whole))  # fmt: skip
+        self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer", indent=False,
+                                     layout=widgets.Layout(**whole))  # fmt: skip
         self._compute()
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
@@ -125,9 +133,11 @@ class BlendingExplorer(Shown):
             "Blending: order, premultiplied alpha, sRGB",
             "Move a triangle earlier or later: 'over' depends on the order.",
         )
-        buttons = widgets.VBox([self.earlier, self.later, self.sort])
-        controls = widgets.HBox([self.select, buttons,
-                                 widgets.VBox([self.premultiplied, self.srgb])])  # fmt: skip
+        column = dict(flex="0 0 auto", margin="0 12px 0 0")
+        buttons = widgets.VBox([self.earlier, self.later, self.sort],
+                               layout=widgets.Layout(align_items="stretch", **column))  # fmt: skip
+        boxes = widgets.VBox([self.premultiplied, self.srgb], layout=widgets.Layout(**column))
+        controls = control_row([self.select, buttons, boxes])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     def _options(self):

@@ -19,7 +19,7 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.patheffects import withStroke
 
-from ..pipeline.debugging.overlays import KINDS
+from ..pipeline.debugging.overlays import KINDS, quad_triangles
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
@@ -118,6 +118,21 @@ def marker_xy(row: int, col: int, reach: float = 3.0):
     y = [r, r, r + 1, r + 1, r, gap, r + 0.5, r + 0.5, gap, r + 0.5, r + 0.5, gap,
          r - reach, r - 0.5, gap, r + 1.5, r + 1 + reach]  # fmt: skip
     return x, y
+
+
+def quad_text(frame, row: int, col: int) -> str:
+    """One line under the history in the quad overshading view: the triangles that shaded
+    the 2×2 quad of pixel (``row``, ``col``), each launching its four lanes, and the helpers
+    among them (the overlay's value there, from the same counts)."""
+    r0, c0 = row // 2 * 2, col // 2 * 2
+    where = f"quad of rows {r0}–{r0 + 1}, cols {c0}–{c0 + 1}"
+    shaded = quad_triangles(frame, row, col)
+    if not shaded:
+        return f"{where}: no triangle shaded a pixel of it, no lanes launched"
+    lanes, useful = 4 * len(shaded), sum(shaded.values())
+    each = ", ".join(f"{t} ({n} px)" for t, n in shaded.items())
+    return (f"{where}: shaded by {len(shaded)} triangle(s), {each}: {lanes} lanes launched "
+            f"(4 each), {lanes - useful} helpers ({(lanes - useful) / lanes:.0%})")  # fmt: skip
 
 
 def _checked_frames(frames) -> dict | None:
@@ -271,7 +286,10 @@ class FrameInspector(Holdable):
 
     def _show_history(self) -> None:
         self.history = self.frame.history(self.row.value, self.col.value)
-        text = html.escape(str(self.history))
+        text = str(self.history)
+        if self.view.value == "quad_overshading":  # who launched this quad's lanes
+            text += "\n\n" + quad_text(self.frame, self.row.value, self.col.value)
+        text = html.escape(text)
         self.table.value = f"<pre style='font-size:0.8em;line-height:1.25'>{text}</pre>"
 
     def _draw_frame(self) -> None:
@@ -361,6 +379,7 @@ class FrameInspector(Holdable):
         self._refresh()
 
     def _view_changed(self, change) -> None:
+        self._show_history()  # the quad overshading view adds the quad's triangles
         self._draw_frame()
         self._refresh_frame()
 

@@ -39,7 +39,7 @@ class LinePlayer(Shown):
     >>> player = LinePlayer((0.5, 0.5), (9.5, 4.5), 11, 6, backend="image")
     >>> player.slider.value = 3
     >>> player.caption.value
-    'step 3 (0 to 12): column 1 (steps 0 and 1 set the line up)'
+    'step 3 (0 to 11): column 1 (steps 0 and 1 set the line up)'
     >>> player.view.caption.get_text().startswith("column 1")
     True
     >>> player.rule.value = "bresenham"

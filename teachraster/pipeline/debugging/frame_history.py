@@ -210,7 +210,7 @@ def pixel_history(frame, row, col) -> PixelHistory:
         raise ValueError("frame: the pixel history needs a frame rendered with trace=True")
     dbg = trace.debug
     height, width = frame.triangle_id.shape
-    row, col = _pixel_index("row", row, height), _pixel_index("col", col, width)
+    row, col = pixel_index("row", row, height), pixel_index("col", col, width)
     if dbg.offsets is None:
         records = _single_sample(frame, dbg, row, col)
         n_samples = 1
@@ -241,7 +241,7 @@ def _setup(dbg, window):
     return dbg.cache["setup"]
 
 
-def _pixel_index(name, value, size) -> int:
+def pixel_index(name, value, size) -> int:
     """``value`` as a pixel index (an integer, not a bool) in [0, size)."""
     i = as_int(name, value)
     if not 0 <= i < size:
@@ -605,15 +605,27 @@ def reason_text(r: HistoryRecord) -> str:
     if r.reason == "top_left":
         return f"on {r.edge}, which is neither a top nor a left edge (top-left rule)"
     if r.reason == "clipped_away":
-        return f"beyond the {r.edge} clip edge by {r.outside:.4g} px: that part was clipped away"
+        return (
+            f"beyond the {r.edge} clip edge by {px_text(r.outside)} px: that part was clipped away"
+        )
     covers = f"piece {r.across} of the same triangle covers it" if r.across >= 0 else ""
     if r.reason == "seam":
         covers = covers or "no piece of the triangle covers it (snapping turned a thin piece over)"
-        return f"across the clipping seam {r.edge[5:]} by {r.outside:.4g} px: {covers}"
+        return f"across the clipping seam {r.edge[5:]} by {px_text(r.outside)} px: {covers}"
     if r.reason == "turned_over":
         covers = covers or "no piece of the triangle covers it"
         return f"snapping turned this thin piece over (its corners run the other way): {covers}"
-    return f"outside {r.edge} by {r.outside:.4g} px"
+    return f"outside {r.edge} by {px_text(r.outside)} px"
+
+
+def px_text(d: float) -> str:
+    """A distance in pixels at one precision for every row of a table (4 decimals, finer
+    than the 1/256 px snapping step); a distance too small for that in scientific notation.
+
+    >>> [px_text(d) for d in (0.646, 2.73, 0.11573, 3e-6)]
+    ['0.6460', '2.7300', '0.1157', '3.0e-06']
+    """
+    return f"{d:.4f}" if abs(d) >= 5e-5 else f"{d:.1e}"
 
 
 def _num(x: float) -> str:

@@ -19,7 +19,9 @@ returns that as an (H, W) array, 0 (never NaN) where nothing arrives:
     all four lanes, so a triangle shading one pixel of a quad wastes 3 of 4. "Shades" is
     early-z's rule: the fragments that passed the depth test on arrival (with MSAA, pixels
     where one of the triangle's samples passed). The pieces clipping made of one input
-    triangle count as that one triangle.
+    triangle count as that one triangle. For the whole frame, :func:`helper_share` gives
+    the helpers over all lanes launched (the overlay's title), :func:`quad_triangles` the
+    triangles that launched one quad's lanes.
 ``"triangle_size"``
     Pixels per triangle: the number of pixels the visible triangle covers (with MSAA,
     pixels where it covers a sample), over its whole area, hidden parts included; a pixel
@@ -55,6 +57,7 @@ from ..rasterization.batched_fill import weight_source
 from ..rasterization.sample_coverage import sample_fragments
 from ..visibility.depth import quantize
 from ..visibility.zbuffer import passed_on_arrival
+from .frame_history import pixel_index
 
 #: The overlay kinds, in the order a chooser lists them.
 KINDS = ("overdraw", "depth_complexity", "quad_overshading", "triangle_size", "hi_z", "nan")
@@ -66,10 +69,8 @@ def overlay(frame, kind: str) -> np.ndarray:
     height, width = frame.triangle_id.shape
     if kind == "nan":
         return non_finite(frame).astype(np.int64)
-    trace = getattr(frame, "trace", None)
-    if trace is None or getattr(trace, "debug", None) is None:
-        raise ValueError(f"frame: the {kind!r} overlay needs a frame rendered with trace=True")
-    work = _work(frame)
+    work = _traced_work(frame, f"the {kind!r} overlay")
+    trace = frame.trace
     n_pix = width * height
     if kind == "overdraw":
         if work.single:  # one sample per fragment: a plain count (no float weights)
@@ -98,11 +99,8 @@ def passed_per_triangle(frame) -> np.ndarray:
     """(N,) samples of each input triangle that passed the depth test on arrival, in
     submission order: what an occlusion query (``GL_SAMPLES_PASSED``) around each draw
     counts. Needs ``trace=True``."""
-    trace = getattr(frame, "trace", None)
-    if trace is None or getattr(trace, "debug", None) is None:
-        raise ValueError("frame: the counts per triangle need a frame rendered with trace=True")
-    work = _work(frame)
-    n = len(trace.clip_status)
+    work = _traced_work(frame, "the counts per triangle")
+    n = len(frame.trace.clip_status)
     return np.bincount(work.triangle, weights=work.passed_samples, minlength=n).astype(np.int64)
 
 
@@ -123,6 +121,15 @@ class Work:
     rejected: np.ndarray | None
     row: np.ndarray  # the pixel's row, for the quads
     single: bool = False  # one sample per fragment (``samples`` all 1)
+
+
+def _traced_work(frame, what: str) -> Work:
+    """The frame's :class:`Work`; a frame without a trace is refused, naming ``what``
+    needed it."""
+    trace = getattr(frame, "trace", None)
+    if trace is None or getattr(trace, "debug", None) is None:
+        raise ValueError(f"frame: {what} needs a frame rendered with trace=True")
+    return _work(frame)
 
 
 def _work(frame) -> Work:
@@ -216,19 +223,61 @@ def distinct_pairs(work: Work, keep: np.ndarray, n_pix: int):
 
 def quad_overshading(work: Work, width: int, height: int) -> np.ndarray:
     """(H, W) fraction of helper lanes among the lanes launched in each pixel's 2×2 quad."""
+    launched, useful = quad_lanes(work, width, height)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        frac = np.where(launched > 0, (launched - useful) / np.maximum(launched, 1), 0.0)
+    qw, qh = -(-width // 2), -(-height // 2)
+    grid = frac.reshape(qh, qw).repeat(2, axis=0).repeat(2, axis=1)
+    return grid[:height, :width]
+
+
+def quad_lanes(work: Work, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
+    """(launched, useful) shader lanes per 2×2 quad, flat, quads in raster order: every
+    (input triangle, quad) pair with a shaded pixel launches four lanes, and each
+    (input triangle, pixel) pair shaded is one useful lane. The one count behind the
+    quad overshading overlay and :func:`helper_share`."""
     # per input triangle: the pieces clipping made of one triangle launch their quads as
     # one triangle, and a pixel is one lane whichever pieces cover its samples
-    piece, pixel, row = distinct_pairs(work, work.passed_samples > 0, width * height)
+    triangle, pixel, row = distinct_pairs(work, work.passed_samples > 0, width * height)
     qw, qh = -(-width // 2), -(-height // 2)
     # (row // 2) * qw + col // 2, with col = pixel - row * width
     quad = (row >> 1) * qw + ((pixel - row * width) >> 1)
     n_q = qw * qh
-    launched = 4 * np.bincount(_quad_groups(piece * n_q + quad, row) % n_q, minlength=n_q)
-    useful = np.bincount(quad, minlength=n_q)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        frac = np.where(launched > 0, (launched - useful) / np.maximum(launched, 1), 0.0)
-    grid = frac.reshape(qh, qw).repeat(2, axis=0).repeat(2, axis=1)
-    return grid[:height, :width]
+    launched = 4 * np.bincount(_quad_groups(triangle * n_q + quad, row) % n_q, minlength=n_q)
+    return launched, np.bincount(quad, minlength=n_q)
+
+
+def helper_share(frame) -> float:
+    """The frame's helper lanes over **all** the shader lanes it launched: four per
+    (input triangle, 2×2 quad) pair with a shaded pixel (early z: a fragment that passed
+    the depth test on arrival; under MSAA one of its samples did). 0.0 when nothing is
+    shaded. The same counts as the ``"quad_overshading"`` overlay (:func:`quad_lanes`), so
+    its title and this number agree. Needs ``trace=True``.
+
+    A frame-wide share, not the mean of the overlay's per-quad fractions: a quad several
+    triangles shade counts with all their lanes, a quad without helpers counts too."""
+    work = _traced_work(frame, "the helper share")
+    height, width = frame.triangle_id.shape
+    launched, useful = quad_lanes(work, width, height)
+    total = int(launched.sum())
+    return 0.0 if total == 0 else 1.0 - int(useful.sum()) / total
+
+
+def quad_triangles(frame, row, col) -> dict[int, int]:
+    """The triangles shaded in the 2×2 quad of pixel (``row``, ``col``): {input triangle:
+    its pixels shaded there}, in submission order. Each launches four lanes; the quad's
+    helpers are 4·len(result) − sum(result.values()), its ``"quad_overshading"`` value
+    their share. Needs ``trace=True``."""
+    work = _traced_work(frame, "the quad's triangles")
+    height, width = frame.triangle_id.shape
+    row, col = pixel_index("row", row, height), pixel_index("col", col, width)
+    triangle, pixel, prow = distinct_pairs(work, work.passed_samples > 0, width * height)
+    pcol = pixel - prow * width
+    here = ((prow >> 1) == row >> 1) & ((pcol >> 1) == col >> 1)
+    shaded: dict[int, int] = {}
+    for t in triangle[here]:
+        shaded[int(t)] = shaded.get(int(t), 0) + 1
+    return dict(sorted(shaded.items()))
 
 
 def _quad_groups(key: np.ndarray, row: np.ndarray) -> np.ndarray:

@@ -77,8 +77,10 @@ export function diamondSteps(p0, p1, width, height, bits = SUBPIXEL_BITS) {
   const size = xMajor ? width : height;
   const limit = xMajor ? height : width;
   const [lo, hi] = [Math.min(a[axis], b[axis]), Math.max(a[axis], b[axis])];
-  const first = Math.max(Math.floor(lo / unit) - 1, 0);
-  const last = Math.min(Math.floor(hi / unit) + 1, size - 1);
+  // diamond j spans (j, j + 1) along the major axis, the segment moved by -ε [lo - ε, hi - ε]:
+  // they overlap for ceil(lo) - 1 <= j <= ceil(hi) - 1 (no column the segment never reaches)
+  const first = Math.max(Math.ceil(lo / unit) - 1, 0);
+  const last = Math.min(Math.ceil(hi / unit) - 1, size - 1);
   const ratio = d[other] / d[axis];
   const steps = [];
   for (let major = first; major <= last; major++) {
