@@ -594,6 +594,41 @@ def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors
         assert answer not in task, answer
 
 
+def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_does_not_print():
+    """r7 09-1: "Porter and Duff ... give over for straight colours" was wrong (they work
+    premultiplied); 09-2: lesson 12 §9 prints the premultiplied rule, so 9.2 first asks for
+    straight inputs returned premultiplied, which it does not print."""
+    import json
+    from pathlib import Path
+
+    nb = json.loads(Path(__file__).parents[1].joinpath(
+        "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
+    task = text["over_premultiplied_task"]
+    assert "straight-alpha form" in task and "give *over* for **straight**" not in task
+    assert "over_to_premultiplied(src, dst)" in task and "lesson 12, §9" not in task
+    assert "over_to_premultiplied_check" in text and "over_premultiplied_step" in text
+    said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))
+    assert "straight-alpha form of over" in said and "Porter and Duff's rule" not in said, said
+    lesson = json.loads(Path(__file__).parents[1].joinpath(
+        "notebooks/12_lines_and_blending.ipynb").read_text())  # fmt: skip
+    printed = " ".join("".join(c["source"]) for c in lesson["cells"])
+    assert "over_to_premultiplied" not in printed
+    from teachraster.exercises.blending import from_straight
+
+    src, dst = [0.2, 0.4, 0.6, 0.5], [1.0, 0.5, 0.0, 0.5]
+    assert np.allclose(from_straight(src, dst), [0.35, 0.325, 0.15, 0.75])
+    _passes("over_to_premultiplied", sol.over_to_premultiplied)
+    said = str(ex.check("over_to_premultiplied", from_straight))
+    assert "not counted" in said or "package" in said, said
+    _named("over_to_premultiplied", lambda s, d: np.asarray(s) + np.asarray(d) * (1 - s[3]),
+           "inputs not premultiplied", "as if they were premultiplied")  # fmt: skip
+    _named("over_to_premultiplied",
+           lambda s, d: np.r_[np.asarray(s[:3]) * s[3] + np.asarray(d[:3]) * (1 - s[3]),
+                              s[3] + d[3] * (1 - s[3])],
+           "destination alpha ignored", "α_d·(1 − α_s)")  # fmt: skip
+
+
 def test_the_fill_legend_lists_only_the_states_drawn():
     """r6 10-3: the legend listed "missing (the rule covers it)" where no pixel was missing."""
     import matplotlib
