@@ -3,11 +3,11 @@
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
 with one mistake a graphics programmer makes (a reversed depth mapping, culling the wrong
 winding, surfaces too close for the depth buffer, straight colours blended as premultiplied,
-transparent geometry drawn before what lies behind it, a triangle thinner than a pixel
-drawn with one sample). The student sees the frame beside the intended one, inspects pixel
-histories (``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
-:data:`CAUSES`, a pixel whose history shows it and the stage (:data:`STAGES`) where that
-history first parts from the intended frame's.
+transparent geometry drawn before what lies behind it, a strip modelled thinner than a
+pixel, which falls between the pixel centres). The student sees the frame beside the
+intended one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``)
+and answers with a cause from :data:`CAUSES`, a pixel whose history shows it and the stage
+(:data:`STAGES`) where that history first differs from the intended frame's.
 
 What is hidden and what is not. The frames come in look-alike pairs (1-2, 3-4, 5-6) with
 the same symptom, the same picture and the same intended picture pixel for pixel, so the
@@ -56,7 +56,10 @@ CAUSES = {
     "z-fighting": "the depth buffer cannot tell two surfaces apart",
     "missing premultiplication": "straight-alpha colours are blended as premultiplied ones",
     "blend order": "transparent geometry is drawn before what lies behind it",
-    "sliver": "a triangle thinner than a pixel drawn with one sample per pixel",
+    # r7: the intended frame is the strip modelled 2 px thick, not the sliver with more
+    # samples, so the cause is the geometry: a strip thinner than a pixel between the centres
+    "sliver": "a triangle modelled thinner than a pixel, so thin that it falls between the "
+    "pixel centres (the one sample of each pixel)",
     "depth test off": "later triangles overwrite nearer ones",
     "near-plane clipping": "geometry is cut away by the near plane",
     "affine interpolation": "attributes are interpolated without the divide by w",
