@@ -648,3 +648,19 @@ def test_the_fill_legend_lists_only_the_states_drawn():
     plt.close(fig)
     assert "covered" in labels and any(t.startswith("extra") for t in labels), labels
     assert not any(t.startswith("missing") for t in labels), labels
+
+
+def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_title():
+    """r7 11-10: the pixel was marked on the broken frame only, and the title was cut."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("broken_frame_5", lambda: ("blend order", (20, 31), "coverage"))
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.plot(ax)
+    xs = sorted(min(line.get_xdata()) for line in ax.lines)
+    assert xs == [31, 31 + bf.W + 12], xs
+    assert ax.get_title() == "broken_frame_5 fails: the diagnosis", ax.get_title()
+    plt.close(fig)
