@@ -63,7 +63,15 @@ def over_premultiplied(src, dst):
     return [s + d * (1 - a) for s, d in zip(src, dst)]
 
 
-CORRECT = {"line_pixels": line_pixels, "over": over, "over_premultiplied": over_premultiplied}
+def over_to_premultiplied(src, dst):
+    """Straight in, premultiplied out: each colour as much as it is seen."""
+    a = src[3] + dst[3] * (1 - src[3])
+    return [*(s * src[3] + d * dst[3] * (1 - src[3]) for s, d in zip(src[:3], dst[:3])), a]
+
+
+CORRECT = {"line_pixels": line_pixels, "over": over,
+           "over_to_premultiplied": over_to_premultiplied,
+           "over_premultiplied": over_premultiplied}  # fmt: skip
 
 
 # -- typical mistakes -----------------------------------------------------------------------------
@@ -118,7 +126,11 @@ MISTAKES = {
     "destination alpha": ("over", over_dst_alpha, "destination alpha"),
     "Porter-Duff alpha in GL's over": ("over", over_porter_duff_alpha, "one factor pair"),
     "premultiplying twice": ("over_premultiplied", premultiplied_twice, "dark fringe"),
-}
+    "straight blended as premultiplied": ("over_to_premultiplied", over_premultiplied,
+                                          "as if they were premultiplied"),
+    "GL's straight blend for a translucent destination": ("over_to_premultiplied", over,
+                                                           "GL's straight blend"),
+}  # fmt: skip
 
 
 def over_numpy(src, dst):

@@ -116,7 +116,7 @@ def front_to_back(layers):
 
 # -- the capstone's functions: exercises 1, 3, 6, 7 and 9 as their solutions hold them ------
 from exercise_solutions import barycentric, bilinear, covers, resolve, trilinear  # noqa: E402
-from lines_blending_solutions import over, over_premultiplied  # noqa: E402, F401 (over: tests import it from here)
+from lines_blending_solutions import over, over_premultiplied, over_to_premultiplied  # noqa: E402, F401 (over: tests import it from here)
 
 
 def a_buffer(depths, colours, background):  # the capstone's glass: farthest first, over

@@ -1020,21 +1020,21 @@ WRONG = {
         _under_with(lambda acc, c: acc + (1 - acc[3]) * np.r_[c[:3] * c[3], c[3]]),
         "premultiplied already",
     ),  # fmt: skip
-    # broken frames (lesson 11): a wrong cause gets a hint, never the answer
+    # broken frames (lesson 11): one verdict for the whole answer, whichever part is wrong
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
         lambda: ("z-fighting", (24, 28), "depth test"),
-        "distinct stored depths",
+        "which of them is wrong is not said",
     ),  # fmt: skip
     "frame 2 blamed on the depth function": (
         "broken_frame_2",
         lambda: ("depth function", (24, 28), "culling"),
-        "no fragment failed the depth test",
+        "which of them is wrong is not said",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",
         lambda: ("missing premultiplication", (0, 0), "blending"),
-        "is the same in this frame as in the intended one",
+        "which of them is wrong is not said",
     ),  # fmt: skip
 }
 
@@ -1103,9 +1103,9 @@ KINDS = {
     "premultiplied, returned straight": "returned straight",
     "premultiplied, destination again": "destination premultiplied twice",
     "premultiplied, weights swapped": "weights swapped",
-    "frame 1 blamed on z-fighting": "cause",
-    "frame 2 blamed on the depth function": "cause",
-    "frame 4, a pixel the mistake left alone": "pixel",
+    "frame 1 blamed on z-fighting": "not right",
+    "frame 2 blamed on the depth function": "not right",
+    "frame 4, a pixel the mistake left alone": "not right",
 }
 
 
@@ -1345,7 +1345,7 @@ WRONG.update({
     "frame 5 pixel given as (x, y)": (
         "broken_frame_5",
         lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], "blending"),
-        "did you give (x, y)?",
+        "which of them is wrong is not said",
     ),  # fmt: skip
     "frame 1 cause misspelt": (
         "broken_frame_1",
@@ -1382,7 +1382,7 @@ KINDS.update(
         "robust fill with origin as (x, y)": "origin swapped",
         "robust fill ignoring origin": "origin ignored",
         "robust fill at pixel corners": "pixel corners",
-        "frame 5 pixel given as (x, y)": "pixel (col, row)",
+        "frame 5 pixel given as (x, y)": "not right",
         "frame 1 cause misspelt": "type",
         "frame 1 pixel off the frame": "type",
     }

@@ -39,6 +39,7 @@ def test_names_in_course_order():
         "classify_block",
         "line_pixels",
         "over",
+        "over_to_premultiplied",
         "over_premultiplied",
     ]
 

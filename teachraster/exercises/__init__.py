@@ -29,7 +29,8 @@ How it is built (one engine for every exercise):
   picture beside the package's (``report.compare(ax)``).
 - ``capstone(scene, covers=...)`` renders a built-in scene with the student's own functions
   beside the package's (:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames
-  lesson 11's exercises diagnose (:mod:`.broken_frames`).
+  lesson 11's exercises diagnose (:mod:`.broken_frames`), ``frames_to_inspect()`` all
+  twelve frames for the ``FrameInspector``.
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one
@@ -37,7 +38,7 @@ top-left rule and one reference for every answer. matplotlib is imported only wh
 is drawn (:meth:`Report.plot`).
 """
 
-from .broken_frames import CAUSES, broken_frame
+from .broken_frames import CAUSES, broken_frame, frames_to_inspect
 from .capstone_render import BUDGET as CAPSTONE_BUDGET
 from .capstone_render import capstone
 from .checks import check, names
@@ -51,5 +52,6 @@ __all__ = [
     "broken_frame",
     "capstone",
     "check",
+    "frames_to_inspect",
     "names",
 ]

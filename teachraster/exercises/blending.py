@@ -1,5 +1,9 @@
-"""Exercises ``over(src, dst)`` and ``over_premultiplied(src, dst)`` of lesson 12: the blend
-equation.
+"""Exercises ``over(src, dst)``, ``over_to_premultiplied(src, dst)`` and
+``over_premultiplied(src, dst)`` of lesson 12: the blend equation.
+
+``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
+the premultiplied result: the derivation exercise 9.2 asks for, which lesson 12 does not print
+(it prints the rule on premultiplied inputs).
 
 The expected colours come from the core: :func:`teachraster.blend_equation` with the factor
 pairs of ``render(..., blend="over" | "premultiplied")``. Each mistake is a wrong blend the
@@ -20,7 +24,8 @@ SEED = 20241126
 
 
 def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
-    """(label, (src, dst), expected) for ``mode`` "over" or "premultiplied"."""
+    """(label, (src, dst), expected) for ``mode`` "over", "premultiplied" or "from
+    straight" (straight inputs, the premultiplied result)."""
     pairs = [
         ("opaque red over blue", [1, 0, 0, 1], [0, 0, 1, 1]),
         ("half red over blue", [1, 0, 0, 0.5], [0, 0, 1, 1]),
@@ -37,6 +42,9 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         if mode == "premultiplied":
             src = np.r_[src[:3] * src[3], src[3]]  # these cases hold premultiplied colours
             dst = np.r_[dst[:3] * dst[3], dst[3]]
+        if mode == "from straight":  # straight in, premultiplied out (exercise 9.2)
+            out.append((label, (src, dst), from_straight(src, dst)))
+            continue
         out.append((label, (src, dst), blend_equation(src, dst, *BLEND_MODES[mode])))
     return out
 
@@ -55,13 +63,20 @@ def explain_blend(args, expected, got) -> str:
 
 #: The premultiplied rule as exercise 9.2 asks for it: derived, so the explanation of a wrong
 #: answer says how to derive it, never the factors to type (that would be the answer).
-_DERIVE = (": Porter and Duff's rule for straight colours with src and dst written as c = α·C, "
+#: (Porter and Duff, 1984, work in premultiplied colours themselves: the divided rule for
+#: straight colours is a later rewriting, "the straight-alpha form of over".)
+_DERIVE = (": the straight-alpha form of over, with src and dst written as c = α·C, "
            "multiplied through by the result's alpha, on all four channels")  # fmt: skip
+_FROM_STRAIGHT = (": the straight-alpha form of over multiplied through by the result's alpha: "
+                  "each colour weighted by how much of it is seen, alpha as what either "
+                  "covers")  # fmt: skip
 
 
 def _rule(mode: str):
     if mode == "premultiplied":
         return lambda *a: _DERIVE
+    if mode == "from straight":
+        return lambda *a: _FROM_STRAIGHT
     s, d = BLEND_MODES[mode]
     return lambda *a: f": src·{s} + dst·{d} (glBlendFunc({s}, {d})), on all four channels"
 
@@ -149,7 +164,50 @@ PREMULTIPLIED = [
 ]  # fmt: skip
 
 
+def _premultiply(c) -> np.ndarray:
+    c = np.asarray(c, float)
+    return np.r_[c[:3] * c[3], c[3]]
+
+
+def from_straight(src, dst) -> np.ndarray:
+    """Straight src over straight dst, as a premultiplied RGBA (the reference)."""
+    return blend_equation(_premultiply(src), _premultiply(dst), *BLEND_MODES["premultiplied"])
+
+
+def _straight_result(src, dst):
+    colour, a = _porter_duff(np.asarray(src, float), np.asarray(dst, float))
+    return np.r_[colour, a]
+
+
+FROM_STRAIGHT = [
+    ("inputs not premultiplied", "you blended the straight colours as if they were "
+     "premultiplied: each colour counts as much as it is seen, α·C, before it is added",
+     lambda s, d: _scaled(s, d, 1, 1 - s[3])),
+    ("returned straight", "you returned a straight colour (divided by the result's alpha): "
+     "the answer is premultiplied, the colour multiplied by the result's alpha",
+     _straight_result),
+    ("destination alpha ignored", "you weighted the destination by (1 − α_s) alone, as GL's "
+     "straight blend does: a translucent destination is seen only as much as its own alpha "
+     "covers, α_d·(1 − α_s)", lambda s, d: np.r_[
+         _scaled(s, d, s[3], 1 - s[3])[:3], s[3] + d[3] * (1 - s[3])]),
+    ("GL's straight blend", "you used GL's straight blend, src·α + dst·(1 − α) on all four "
+     "channels: it weights a translucent destination by (1 − α_s) alone and returns a "
+     "straight colour", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
+    ("destination not scaled", "the destination was not scaled by (1 − α_s)",
+     lambda s, d: _premultiply(s) + _premultiply(d)),
+    ("source unchanged", "that is the source unchanged: it is blended over the destination, "
+     "weighted by its alpha", lambda s, d: np.asarray(s, dtype=float)),
+    ("kept source alpha", "the alpha channel blends too: the result's alpha is what either "
+     "covers, not the source's", lambda s, d: np.r_[from_straight(s, d)[:3], s[3]]),
+]  # fmt: skip
+
+
 def _mistakes(mode: str) -> list[Mistake]:
+    if mode == "from straight":
+        swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
+                   "is the incoming fragment, the second, dst, what the buffer holds",
+                   lambda s, d: from_straight(d, s))  # fmt: skip
+        return [Mistake(k, w, gives=g) for k, w, g in FROM_STRAIGHT + [swapped]]
     table = (OVER if mode == "over" else PREMULTIPLIED) + COMMON
     factors = BLEND_MODES[mode]
     swapped = ("arguments swapped", "you blended dst over src: the first argument, src, is "
@@ -173,4 +231,10 @@ def _draw_blend(ax, case, got):
 
 
 OVER_EXERCISE = _exercise("over", "over")
+FROM_STRAIGHT_EXERCISE = Exercise(
+    "over_to_premultiplied", lambda: blend_cases("from straight"), _rgba,
+    lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("from straight"),
+    _mistakes("from straight"), draw=_draw_blend,
+    answers=(PackageAnswer(blend_equation), PackageAnswer(from_straight)),
+)  # fmt: skip
 PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")

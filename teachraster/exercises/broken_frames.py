@@ -3,36 +3,47 @@
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
 with one mistake a graphics programmer makes (a reversed depth mapping, culling the wrong
 winding, surfaces too close for the depth buffer, straight colours blended as premultiplied,
-transparent geometry drawn before what lies behind it, a triangle thinner than a pixel
-drawn with one sample). The student sees the frame beside the intended one, inspects pixel
-histories (``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
-:data:`CAUSES`, a pixel whose history shows it and the stage (:data:`STAGES`) where that
-history first parts from the intended frame's.
+transparent geometry drawn before what lies behind it, a strip modelled thinner than a
+pixel, which falls between the pixel centres). The student sees the frame beside the
+intended one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``)
+and answers with a cause from :data:`CAUSES`, a pixel whose history shows it and the stage
+(:data:`STAGES`) where that history first differs from the intended frame's.
 
-The picture cannot name the cause: the frames come in look-alike pairs (1-2, 3-4, 5-6) with
-the same symptom, the same picture and the same intended picture pixel for pixel, and every
-frame is rendered with exactly its intended frame's settings (the mistake is in what is
-drawn), so neither the picture nor the frame's attributes tell a pair apart; the histories
-do. The check judges the evidence first (:func:`parts_at`, from the renderer's records) and
-the cause only beside evidence that holds: a wrong cause then gets a hint drawn from the
-frame's own record, never the answer; a cause beside evidence that does not hold is not
-judged at all, so cycling through the causes earns nothing.
+What is hidden and what is not. The frames come in look-alike pairs (1-2, 3-4, 5-6) with
+the same symptom, the same picture and the same intended picture pixel for pixel, so the
+picture cannot tell a pair apart. Hidden: the cause (no public attribute or repr of a
+:class:`BrokenFrame` names it), the frames' ``plan`` (withheld, the same text for every
+frame: :data:`WITHHELD`), and the check's evidence test (private here). Not hidden:
+``frame.trace`` and ``frame.attrs`` are the renderer's full records, the very data a pixel
+history reads (window positions and depths, the drawing order, the culled flags, the
+fragments' colours, the render settings in ``trace.debug.inputs``: frame 2 and its intended
+frame cull back faces, frame 1 and its intended frame do not), so a student who reads those
+arrays instead of histories finds the same evidence by a longer road. Each frame is rendered
+with its own intended frame's settings (the mistake is in what is drawn).
+
+One verdict for the whole answer: right only when the cause is right, the pixel is one the
+mistake changed whose history shows the cause, and the stage is where that history first
+differs from the intended one (stage by stage in the pipeline's order, each triangle matched
+by its corners on screen, whatever its number). A wrong answer, whichever part is wrong, gets
+the same words and the number of tries recorded, so trying stages or causes one by one gives
+no direction (r7: the stage's own message let 38 blind calls solve all six).
 """
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
 
 from ..core.validate import as_int
+from ..pipeline.planning.render_plan import Plan
 from ..pipeline.rendering.render_triangles import Frame, render
 from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
 from .exercise import Exercise, Mistake
 from .running import WrongAnswerType
-from .scalars import num
 
 #: Frame size: small, so that every pixel is easy to pick.
 W, H = 64, 48
@@ -45,7 +56,10 @@ CAUSES = {
     "z-fighting": "the depth buffer cannot tell two surfaces apart",
     "missing premultiplication": "straight-alpha colours are blended as premultiplied ones",
     "blend order": "transparent geometry is drawn before what lies behind it",
-    "sliver": "a triangle thinner than a pixel drawn with one sample per pixel",
+    # r7: the intended frame is the strip modelled 2 px thick, not the sliver with more
+    # samples, so the cause is the geometry: a strip thinner than a pixel between the centres
+    "sliver": "a triangle modelled thinner than a pixel, so thin that it falls between the "
+    "pixel centres (the one sample of each pixel)",
     "depth test off": "later triangles overwrite nearer ones",
     "near-plane clipping": "geometry is cut away by the near plane",
     "affine interpolation": "attributes are interpolated without the divide by w",
@@ -80,11 +94,11 @@ def _differs(number: int) -> np.ndarray:
 
 def _shows(number: int, row: int, col: int) -> bool:
     """Does pixel (row, col) of frame ``number`` show its cause: changed by it, and its history
-    bearing the cause's signature (:data:`SIGNATURES`)?"""
+    bearing the cause's signature (:data:`_SIGNATURES`)?"""
     if not (0 <= row < H and 0 <= col < W and _differs(number)[row, col]):
         return False
     frame = broken_frame(number).frame
-    return bool(SIGNATURES[_answer(number)][0](frame, frame.history(row, col)))
+    return bool(_SIGNATURES[_answer(number)][0](frame, frame.history(row, col)))
 
 
 def _tested(frame, h) -> bool:
@@ -106,7 +120,7 @@ def _thin_missed(frame, h) -> bool:
 
 
 #: What a history shows for each cause that occurs: a test on (frame, history), and words.
-SIGNATURES = {
+_SIGNATURES = {
     "depth function": (_tested, "two or more fragments met the depth test there"),
     "culled winding": (lambda f, h: any(r.outcome == "culled" for r in h.records),
                        "a triangle there was culled"),
@@ -215,11 +229,41 @@ _SPECS = [
 _CAUSE_OF = {k + 1: cause for k, (_, cause, *_) in enumerate(_SPECS)}
 
 
+class _WithheldPlan(Plan):
+    """The plan of a frame handed to the student: withheld, the same for every frame (r7: the
+    plans told each pair apart, "cull='back' asked: 6 back-facing triangle(s) removed" beside
+    "not asked", "576 transparent fragments blended" beside "0")."""
+
+    def __str__(self) -> str:
+        return WITHHELD
+
+    def __getitem__(self, name: str):
+        raise KeyError(f"no effect {name!r}: {WITHHELD}")
+
+
+#: What ``frame.plan`` prints for every frame of the exercise, broken or intended.
+WITHHELD = ("the plan is withheld in the broken-frame exercises (it would tell the frames of a "
+            "pair apart without a pixel history): read frame.history(row, col)")  # fmt: skip
+
+
+def _handed_out(frame: Frame) -> Frame:
+    object.__setattr__(frame, "plan", _WithheldPlan(()))  # the frame is the exercise's own
+    return frame
+
+
 @cache
 def broken_frames() -> tuple[BrokenFrame, ...]:
-    """The six frames, numbered from 1 (rendered once)."""
-    return tuple(BrokenFrame(k + 1, symptom, broken(), intended())
+    """The six frames, numbered from 1 (rendered once), their plans withheld."""
+    return tuple(BrokenFrame(k + 1, symptom, _handed_out(broken()), _handed_out(intended()))
                  for k, (symptom, _, broken, intended) in enumerate(_SPECS))  # fmt: skip
+
+
+def frames_to_inspect() -> dict[str, Frame]:
+    """Every frame of the exercise for ``FrameInspector(frames=...)``: "frame n" and
+    "intended n" side by side in the list, so that a pixel's two histories can be compared
+    (r7: the inspector held the broken frames only)."""
+    return {f"{what} {b.number}": f for b in broken_frames()
+            for what, f in (("frame", b.frame), ("intended", b.intended))}  # fmt: skip
 
 
 def broken_frame(number: int) -> BrokenFrame:
@@ -245,7 +289,8 @@ def _key(frame: Frame, piece: int) -> frozenset:
 
 
 def _stages(frame: Frame, row: int, col: int) -> tuple:
-    """What each stage of pixel (row, col)'s history did, comparable across two frames."""
+    """What each stage of pixel (row, col)'s history did, comparable across two frames: each
+    triangle by its corners on screen (:func:`_key`), never by its number."""
     records = frame.history(row, col).records
     keyed = [(_key(frame, r.piece), r) for r in records]
     culled = frozenset(k for k, r in keyed if r.outcome == "culled")
@@ -257,9 +302,11 @@ def _stages(frame: Frame, row: int, col: int) -> tuple:
     return culled, covered, tested, blended
 
 
-def parts_at(number: int, row: int, col: int) -> str | None:
+def _parts_at(number: int, row: int, col: int) -> str | None:
     """The first stage (:data:`STAGES`) at which pixel (row, col)'s history in frame
-    ``number`` parts from its history in the intended frame (None: they agree throughout)."""
+    ``number`` differs from its history in the intended frame, stage by stage in the
+    pipeline's order and triangle by triangle matched by its corners on screen (None: they
+    agree throughout). Private: it is the answer's stage."""
     b = broken_frame(number)
     mine, meant = _stages(b.frame, row, col), _stages(b.intended, row, col)
     return next((s for s, x, y in zip(STAGES, mine, meant) if x != y), None)
@@ -267,8 +314,8 @@ def parts_at(number: int, row: int, col: int) -> str | None:
 
 def _evidence(number: int, row: int, col: int, stage: str) -> bool:
     """Does (row, col, stage) hold: a pixel the mistake changed, whose history shows it and
-    parts from the intended one at ``stage``, as the renderer's own records say?"""
-    return _shows(number, row, col) and parts_at(number, row, col) == stage
+    differs from the intended one first at ``stage``, as the renderer's own records say?"""
+    return _shows(number, row, col) and _parts_at(number, row, col) == stage
 
 
 # -- the answer -------------------------------------------------------------------------------
@@ -278,6 +325,19 @@ def _words(value) -> str:
 
 _CAUSE_KEYS = {_words(c): c for c in CAUSES}
 _SHAPE = '(cause, (row, col), stage), such as ("depth test off", (12, 30), "depth test")'
+
+
+def _index(name: str, value, pixel) -> int:
+    """``value`` as a row or column: an integer (``operator.index``), never a bool or a float
+    (r7: 24.7 was read as 24, True as 1)."""
+    if isinstance(value, bool | np.bool_):
+        raise WrongAnswerType(f"returned the pixel {short(pixel)}: {name} is a bool, not an "
+                              "integer")  # fmt: skip
+    try:
+        return operator.index(value)
+    except TypeError:
+        raise WrongAnswerType(f"returned the pixel {short(pixel)}: {name} {short(value)} is not "
+                              "an integer (a pixel is (row, col), two whole numbers)") from None  # fmt: skip
 
 
 def as_diagnosis(value) -> tuple[str, tuple[int, int], str]:
@@ -304,190 +364,55 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int], str]:
     if not isinstance(stage, str) or _words(stage) not in STAGES:
         raise WrongAnswerType(f"returned the stage {short(stage)}, which is not one of the "
                               f"stages (spell it as listed): {', '.join(STAGES)}")  # fmt: skip
-    try:
-        row, col = int(row), int(col)
-    except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned the pixel {short(pixel)}, not a pair of integers "
-                              "(row, col)") from None  # fmt: skip
+    row, col = _index("row", row, pixel), _index("col", col, pixel)
     if not (0 <= row < H and 0 <= col < W):
         raise WrongAnswerType(f"returned pixel ({row}, {col}), outside the {H} × {W} frame "
                               f"(rows 0–{H - 1}, columns 0–{W - 1})")  # fmt: skip
     return _CAUSE_KEYS[_words(cause)], (row, col), _words(stage)
 
 
+#: How many well-formed answers each frame's check has judged in this Python session: the
+#: one thing a wrong answer is told besides "not right".
+_TRIES: dict[int, int] = {}
+
+
 def _cases(number: int):
-    return lambda: [("the evidence: a changed pixel and the stage where its history parts from "
-                     "the intended one", (), ("evidence", number)),
-                    ("the cause", (), ("cause", number))]  # fmt: skip
+    return lambda: [("the diagnosis", (), number)]  # one case: a short title (r7 11-10)
 
 
-def _holds(number: int, got) -> bool:
-    _, (row, col), stage = got
-    return _evidence(number, row, col, stage)
-
-
-def _same(got, expected, args=None) -> bool:
-    part, number = expected
-    # The cause is judged only beside evidence that holds: cycling through the causes with
-    # made-up evidence never passes, and a refutation is drawn from a record the student read.
-    return _holds(number, got) and (part == "evidence" or got[0] == _answer(number))
-
-
-def _changed(number: int, row: int, col: int) -> bool:
-    """Did the mistake of frame ``number`` change pixel (row, col) (False outside it)?"""
-    d = _differs(number)
-    return bool(0 <= row < d.shape[0] and 0 <= col < d.shape[1] and d[row, col])
-
-
-def _explain(args, expected, got) -> str:
-    part, _ = expected
+def _right(number: int, got) -> bool:
     cause, (row, col), stage = got
-    if part == "evidence":
-        return f"you say pixel ({row}, {col})'s history parts from the intended one at {stage!r}"
-    if not _holds(expected[1], got):  # not judged: never "does not fit", which would refute it
-        return f"you name {cause!r}"
-    return f"{cause!r} does not fit"
+    return cause == _answer(number) and _evidence(number, row, col, stage)
+
+
+def _same(got, number, args=None) -> bool:
+    # One verdict for the whole answer (r7: a separate verdict on the stage let a student find
+    # it by trying the four, then the cause among few): counted here, once a check.
+    _TRIES[number] = _TRIES.get(number, 0) + 1
+    return _right(number, got)
+
+
+#: The stage, as the verdict recalls it (the same words after every wrong answer).
+_STAGE_MEANS = ("the stage is the first, in the pipeline's order, where the pixel's history in "
+               "this frame differs from its history in the intended frame, comparing each "
+               "triangle with the same triangle there: the same corners on screen, whatever its "
+               "number in either frame")  # fmt: skip
+
+
+def _explain(args, number, got) -> str:
+    tries = _TRIES.get(number, 0)
+    return (f"not right: the cause, the pixel and the stage are judged together, and which of "
+            f"them is wrong is not said ({tries} {'try' if tries == 1 else 'tries'} of frame "
+            f"{number} recorded in this session). A pixel must be one the mistake changed, "
+            f"whose history shows the cause; {_STAGE_MEANS}")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
     return ""
 
 
-def _cause_words(args, expected, got) -> str:
-    cause, (row, col), _ = got
-    return hint(cause, expected[1], row, col)
-
-
-def _stage_words(number: int, row: int, col: int, stage: str) -> str:
-    """Why the stage does not hold at a pixel that shows the mistake: true, and the same words
-    for a stage before or after the right one (no direction to home in on by trying)."""
-    return (f"the two histories of pixel ({row}, {col}) do not first part at {stage!r}: read "
-            "them side by side from the first record (frame.history and intended.history)")  # fmt: skip
-
-
-def _unjudged(args, expected, got) -> str:
-    return ("the cause is judged only beside evidence that holds (see the evidence case): "
-            "read the pixel's history first")  # fmt: skip
-
-
-#: A wrong answer's parts: the evidence (the pixel, then the stage) and, once it holds, the
-#: cause (a hint from the frame's own record). A cause beside evidence that does not hold is
-#: not judged at all, so no number of tries finds it without reading a history.
-DIAGNOSIS_MISTAKES = (
-    Mistake("cause not judged", _unjudged,
-            fits=lambda a, e, g: e[0] == "cause" and not _holds(e[1], g)),
-    Mistake("cause", _cause_words, fits=lambda a, e, g: e[0] == "cause"),
-    Mistake("pixel (col, row)", "a pixel is (row, col), the row first, and (col, row) = "
-            "(x, y) is one the mistake changed: did you give (x, y)?", fits=lambda a, e, g:
-            e[0] == "evidence" and not _shows(e[1], *g[1]) and _shows(e[1], *g[1][::-1])),
-    Mistake("stage", lambda a, e, g: _stage_words(e[1], *g[1], g[2]), fits=lambda a, e, g:
-            e[0] == "evidence" and _shows(e[1], *g[1])),
-    Mistake("pixel", lambda a, e, g: _pixel_words(e[1], *g[1]), fits=lambda a, e, g:
-            e[0] == "evidence"),
-)  # fmt: skip
-
-
-def _pixel_words(number: int, row: int, col: int) -> str:
-    if _changed(number, row, col):
-        return (f"pixel ({row}, {col}) changed, but its history does not show what went wrong: "
-                "compare it with the intended frame's history of the same pixel, or choose "
-                "another changed pixel")  # fmt: skip
-    return (f"pixel ({row}, {col}) is the same in this frame as in the intended one: choose a "
-            "pixel the mistake changed (compare the two pictures), then read its history")  # fmt: skip
-
-
-def hint(cause: str, number: int, row: int, col: int) -> str:
-    """What frame ``number``'s record shows against ``cause`` (true of this frame; never names
-    the right cause)."""
-    frame = broken_frame(number).frame
-    h = frame.history(row, col)
-    trace, debug = frame.trace, frame.trace.debug
-    failed = [r for r in h.records if r.outcome in ("failed_depth", "hi_z")]
-    blend = debug.blend
-    if cause == "culled winding" and not trace.culled.any():
-        return "no triangle of this frame was culled: no history has a 'culled' record"
-    if cause == "depth test off" and debug.inputs.depth_test:
-        return "the depth test is on in this frame (every history says 'depth test on')"
-    if cause == "near-plane clipping" and not (np.asarray(trace.clip_status) > 0).any():
-        return "no triangle of this frame was clipped (frame.trace.clip_status is 0 throughout)"
-    if cause == "affine interpolation":
-        return ("every triangle of this frame has one colour at all three corners: "
-                "interpolation, affine or perspective-correct, gives that colour everywhere")  # fmt: skip
-    if cause == "texture filtering":
-        return "this frame samples no texture: its colours are the triangles' own"
-    if cause == "missing premultiplication" and (blend is None or blend.mode != "premultiplied"):
-        if blend is None or blend.mode is None:
-            return "this frame does not blend at all"
-        if blend.mode == "over":  # r6: "whose factors expect straight colours" was obscure
-            return ("the colours here are straight and blended with straight-alpha factors "
-                    "(src·α + dst·(1−α)): nothing premultiplied is blended as straight, or "
-                    "the reverse")  # fmt: skip
-        return f"this frame blends with {blend.mode!r}, whose factors expect straight colours"
-    if cause == "missing premultiplication":
-        return _premultiplied_hint(number, row, col)
-    if cause == "blend order":
-        return _order_hint(h, blend)
-    if cause == "z-fighting":
-        return _fight_hint(h, row, col)
-    if cause == "depth function":
-        return _depth_hint(failed, row, col)
-    if cause == "sliver":
-        return f"every triangle of this frame is at least {num(_thinnest(frame))} px across"
-    return f"it does not explain what pixel ({row}, {col})'s history shows: {h.outcomes}"
-
-
-def _premultiplied_hint(number: int, row: int, col: int) -> str:
-    """Premultiplied blending with the colours as meant: every fragment that reached the
-    buffer brings the colour it brings in the intended frame (the same triangle, by its
-    corners), so none of them was left unmultiplied."""
-    b = broken_frame(number)
-    meant = {k: c for k, c in _stages(b.intended, row, col)[3]}
-    mine = _stages(b.frame, row, col)[3]
-    if all(meant.get(k, c) == c for k, c in mine):
-        return (f"every fragment that reaches the colour buffer at pixel ({row}, {col}) brings "
-                "the colour it brings in the intended frame (compare the two histories' "
-                "'fragment' colours): none was left unmultiplied")  # fmt: skip
-    return f"the fragments at pixel ({row}, {col}) blend with the colours their history shows"
-
-
-def _order_hint(h, blend) -> str:
-    if blend is None or blend.mode is None:
-        return "nothing in this frame is blended: every fragment replaces the colour before it"
-    passed = [r for r in h.records if r.outcome == "passed"]
-    depths = [r.depth for r in passed]
-    if len(passed) < 2:
-        return (f"only {len(passed)} fragment reaches the colour buffer at pixel ({h.row}, "
-                f"{h.col}): there is no order to get wrong there")  # fmt: skip
-    if all(a >= b for a, b in zip(depths, depths[1:])):
-        return (f"at pixel ({h.row}, {h.col}) the fragments arrive farthest first (depths "
-                f"{', '.join(num(d) for d in depths)}), the order blending needs")  # fmt: skip
-    return f"the fragments at pixel ({h.row}, {h.col}) blend in the order their history shows"
-
-
-def _fight_hint(h, row, col) -> str:
-    depths = sorted({r.depth for r in h.records if np.isfinite(r.depth)})
-    if len(depths) < 2:
-        n = len([r for r in h.records if np.isfinite(r.depth)])
-        reach = {0: "no fragment reaches", 1: "only 1 fragment reaches"}.get(
-            n, f"all {n} fragments share one depth at")  # fmt: skip
-        return f"{reach} pixel ({row}, {col}): nothing to fight"
-    gap = min(b - a for a, b in zip(depths, depths[1:]))
-    return (f"the fragments at pixel ({row}, {col}) have distinct stored depths (the closest "
-            f"differ by {num(gap)}): the buffer tells them apart")  # fmt: skip
-
-
-def _depth_hint(failed, row, col) -> str:
-    if not failed:
-        return (f"no fragment failed the depth test at pixel ({row}, {col}): the test decided "
-                "nothing there")  # fmt: skip
-    r = failed[0]
-    if r.depth == r.depth_before:
-        return (f"the fragment of triangle {r.triangle} that failed at pixel ({row}, {col}) "
-                f"has exactly the stored depth {num(r.depth)}: a tie, which no strict test "
-                "can settle either way")  # fmt: skip
-    return (f"at pixel ({row}, {col}) triangle {r.triangle} failed at depth {num(r.depth)} "
-            f"behind the stored {num(r.depth_before)}, and it is meant to lie behind: the test "
-            "kept the nearer surface")  # fmt: skip
+#: No mistake is named: any wrong part gets the one verdict (:func:`_explain`).
+DIAGNOSIS_MISTAKES = (Mistake("not right", "", fits=lambda a, e, g: True),)
 
 
 def _thinnest(frame: Frame) -> float:
@@ -507,16 +432,17 @@ def _altitudes(frame: Frame) -> np.ndarray:
 def _draw(ax, case, got):
     """The broken frame with the chosen pixel marked, and the intended one beside it in the
     same axes (an inset outside the axes would be clipped by the figure's edge)."""
-    number = case[2][1]
+    number = case[2]
     b = broken_frame(number)
     gap = 12  # px between the two pictures: room for their tick labels
     artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest"),
                ax.imshow(_rgb(b.intended), extent=(W + gap, 2 * W + gap, H, 0),
                          interpolation="nearest")]  # fmt: skip
-    if got is not None and isinstance(got[0], str) and got[0] in CAUSES:  # an answer
+    if isinstance(got, tuple) and len(got) == 3 and got[0] in CAUSES:  # an answer, as read
         _, (row, col), _ = got
-        artists += ax.plot([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row],
-                           color="#D55E00", lw=2)  # fmt: skip
+        for x in (col, col + W + gap):  # on both pictures (r7: on the broken one only)
+            artists += ax.plot([x, x + 1, x + 1, x, x], [row, row, row + 1, row + 1, row],
+                               color="#D55E00", lw=2)  # fmt: skip
     ax.set_xlim(0, 2 * W + gap)
     ax.set_ylim(H, 0)
     ax.set_xticks([0, W // 2, W - 1, W + gap, W + gap + W // 2, 2 * W + gap - 1],

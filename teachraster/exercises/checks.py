@@ -40,6 +40,7 @@ def _registry() -> dict[str, Callable[[], Exercise]]:
         **later.EXERCISES,  # 05–08: depth precision, antialiasing, texture filtering, tiles
         "line_pixels": lambda: lines.LINE_PIXELS,  # 09 (lesson 12): lines and blending
         "over": lambda: blending.OVER_EXERCISE,
+        "over_to_premultiplied": lambda: blending.FROM_STRAIGHT_EXERCISE,
         "over_premultiplied": lambda: blending.PREMULTIPLIED_EXERCISE,
         **reasoning_tasks.EXERCISES,  # issue 30: reasoning tasks, lessons 07-12, broken frames
     }
