@@ -284,7 +284,7 @@ class FillPlayer(Holdable):
         self.comparison = widgets.Accordion(
             children=[figure], selected_index=None,
             titles=("affine / perspective-correct: both interpolations, their error, and both "
-                    "along the row of the largest error (opened here, in the steps' place)",),
+                    "along the row of the largest error",),
         )  # fmt: skip
         self._interp_stale = False
         self._keep_steps = False  # opened by the interpolation toggle: the steps stay

@@ -253,7 +253,7 @@ export function mountFrames(el, opts) {
       s.askedAt = performance.now();
       opts.request(g, s.gen);
       setTimeout(() => retry(g, s.gen), 3000);
-      setTimeout(() => checkAlive(g), 8000);
+      setTimeout(() => checkAlive(g), 20000); // a busy kernel, not a dead one, under load
     } else {
       s.priority = g;
     }
