@@ -472,7 +472,12 @@ class CasePicker:
         place = self._places.get(key)
         if place is None:
             for ax in self.axes:
-                ax.set_in_layout(True)  # set_position() below took it out of the layout
+                # the solver starts from where the axes stand (their titles sit on the last
+                # case's box) and its two passes do not converge: moved from another case,
+                # coincident_vertices and sliver_pair got another layout than a fresh picker
+                # gives them. Start where a fresh figure's axes stand, in their grid cell.
+                ax.set_position(ax.get_subplotspec().get_position(self.fig))
+                ax.set_in_layout(True)  # set_position() took it out of the layout
             self.fig.set_layout_engine("constrained")
             self.fig.canvas.draw()
             # the box the layout gave each axes, before its equal aspect shrinks it (the
