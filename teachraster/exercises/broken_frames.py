@@ -1,10 +1,10 @@
 """Exercises ``broken_frame_1`` … ``broken_frame_6`` (lesson 11): find what broke a frame.
 
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
-with one mistake a graphics programmer makes (a reversed depth mapping, culling the wrong
-winding, surfaces too close for the depth buffer, straight colours blended as premultiplied,
-transparent geometry drawn before what lies behind it, a strip modelled thinner than a
-pixel, which falls between the pixel centres). The student sees the frame beside the
+with one mistake a graphics programmer makes (in no particular order: a strip modelled
+thinner than a pixel, which falls between the pixel centres, straight colours blended as
+premultiplied, culling the wrong winding, transparent geometry drawn before what lies behind
+it, a reversed depth mapping, surfaces too close for the depth buffer). The student sees the frame beside the
 intended one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``)
 and answers with a cause from :data:`CAUSES`, a pixel whose history shows it and the stage
 (:data:`STAGES`) where that history first differs from the intended frame's.
@@ -48,8 +48,10 @@ from .running import WrongAnswerType
 #: Frame size: small, so that every pixel is easy to pick.
 W, H = 64, 48
 
-#: The causes a diagnosis may name (six occur, four do not).
-CAUSES = {
+#: The causes a diagnosis may name (six occur, four do not), in alphabetical order: every
+#: listing of them (the notebook's, a wrong form's message) follows this order, never the
+#: frames' (r8: listed in the frames' order, the causes were the answer key).
+_CAUSES = {
     "depth function": "the depth test compares in the wrong direction for the frame's depths, "
     "so it keeps the farther surface",
     "culled winding": "triangles that face the camera are culled",
@@ -65,6 +67,7 @@ CAUSES = {
     "affine interpolation": "attributes are interpolated without the divide by w",
     "texture filtering": "the wrong texture filter or mip level",
 }
+CAUSES = dict(sorted(_CAUSES.items()))
 
 
 @dataclass(frozen=True)
