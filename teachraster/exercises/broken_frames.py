@@ -25,8 +25,13 @@ One verdict for the whole answer: right only when the cause is right, the pixel 
 mistake changed whose history shows the cause, and the stage is where that history first
 differs from the intended one (stage by stage in the pipeline's order, each triangle matched
 by its corners on screen, whatever its number). A wrong answer, whichever part is wrong, gets
-the same words and the number of tries recorded, so trying stages or causes one by one gives
-no direction (r7: the stage's own message let 38 blind calls solve all six).
+the same words and the number of tries recorded, so a wrong stage is not told from a wrong
+cause (r7: the stage's own message let 38 blind calls solve all six). That slows guessing, it
+does not stop it: knowing the cause, the stage is one of four tries, and a blind loop over
+causes and stages solves all six (r8: 77 calls). The mark says an answer is right, not how it
+was found; grading the diagnosis itself needs the student's words or hidden checks
+(docs/grading.md). This module is importable like any other (``_answer`` is private by name,
+not hidden): the source ships with the package.
 """
 
 from __future__ import annotations
