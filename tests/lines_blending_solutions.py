@@ -139,3 +139,17 @@ def over_numpy(src, dst):
 
 
 ALTERNATIVES = {"over": over_numpy}
+
+
+def over_to_premultiplied_divided(src, dst):
+    """The straight form first (divided by α), then multiplied back: NaN when both α are 0."""
+    src, dst = np.asarray(src, float), np.asarray(dst, float)
+    alpha = src[3] + dst[3] * (1 - src[3])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        colour = (src[:3] * src[3] + dst[:3] * dst[3] * (1 - src[3])) / alpha
+    return np.r_[colour * alpha, alpha]
+
+
+MISTAKES["divided by zero alpha"] = ("over_to_premultiplied", over_to_premultiplied_divided,
+                                     "both alphas 0: the result is transparent black, not a "
+                                     "division by zero")  # fmt: skip

@@ -137,7 +137,7 @@ BROKEN_FRAMES = {
     3: ("z-fighting", (24, 20), "depth test"),
     4: ("missing premultiplication", (24, 20), "blending"),
     5: ("blend order", (23, 41), "blending"),
-    6: ("sliver", (23, 40), "coverage"),
+    6: ("sliver", (22, 40), "coverage"),  # r8: a pixel the sliver crosses, not (23, 40)
 }
 CORRECT = {
     "span": span,

@@ -225,3 +225,19 @@ def test_the_checkers_modules_import_no_circle():
         return False
 
     assert [m for m in graph if reach(m, m, set())] == []
+
+
+def test_over_to_premultiplied_names_a_nan_when_both_alphas_are_zero():
+    """r8: task 9.2a says "nothing at all when α = 0", and no case had both alphas 0. A
+    solution that divides by the result's alpha first returns NaN there, named as such."""
+    from lines_blending_solutions import over_to_premultiplied_divided
+
+    cases = {label: args for label, args, _ in ex.blending.blend_cases("from straight")}
+    src, dst = cases["both transparent"]
+    assert src[3] == 0 and dst[3] == 0
+    report = ex.check("over_to_premultiplied", over_to_premultiplied_divided)
+    assert not report.passed
+    (failure,) = report.failures
+    assert "both alphas 0: the result is transparent black, not a division by zero" in (
+        failure.explanation)  # fmt: skip
+    assert ex.check("over_to_premultiplied", CORRECT["over_to_premultiplied"]).passed

@@ -310,6 +310,41 @@ def test_broken_frames_come_in_look_alike_pairs_told_apart_only_by_their_histori
     assert ex.broken_frame(2).frame.trace.culled.any()
 
 
+def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():
+    """r8: cell 1 printed the causes in the frames' order (causes 1-6 = frames 1-6), an
+    answer key. The public list and the notebook's print are alphabetical, and the causes
+    that occur do not come in the frames' order."""
+    import json
+    from pathlib import Path
+
+    assert list(bf.CAUSES) == sorted(bf.CAUSES)
+    shown = [c for c in bf.CAUSES if c in ANSWERS.values()]
+    assert shown != [ANSWERS[n] for n in sorted(ANSWERS)]
+    nb = json.loads(Path(__file__).parents[1].joinpath(
+        "notebooks/exercises/11_broken_frames.ipynb").read_text())  # fmt: skip
+    setup = "".join(nb["cells"][1]["source"])
+    assert "sorted(ex.CAUSES.items())" in setup
+    with pytest.raises(Exception) as info:  # a misspelt cause lists them, in the same order
+        bf.as_diagnosis(("no such cause", (1, 1), "coverage"))
+    listed = [c for c in bf.CAUSES if c in str(info.value)]
+    assert str(info.value).index(listed[0]) < str(info.value).index(listed[-1])
+    assert listed == sorted(listed)
+
+
+def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
+    """r8: 36 of the 96 accepted pixels (the solution's own (23, 40) among them) lay in the
+    sliver's bounding box only. Each accepted pixel's box holds a point of the sliver (found by
+    sampling its edges densely, not by the check's own test), and (23, 40) is refused."""
+    frame = ex.broken_frame(6).frame
+    xy = frame.trace.window[int(np.argmin(bf._altitudes(frame))), :, :2]
+    t = np.linspace(0, 1, 200_001)[:, None]  # along its three edges: it is 0.1 px thick
+    points = np.concatenate([a + t * (b - a) for a, b in zip(xy, np.roll(xy, -1, axis=0))])
+    crossed = {(int(y), int(x)) for x, y in points}
+    accepted = {(int(r), int(c)) for r, c in np.argwhere(bf._differs(6)) if bf._shows(6, r, c)}
+    assert accepted and accepted <= crossed, sorted(accepted - crossed)
+    assert (22, 40) in accepted and (23, 40) not in accepted
+
+
 def test_broken_frame_texts_do_not_pair_a_task_with_its_cause():
     """The symptoms say what is seen, never the mechanism, and frame 1's task text shares no
     telling word with the cause list (r5: "mapping" in both gave frame 1 away)."""

@@ -33,6 +33,8 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         ("transparent over grey", [0.3, 0.6, 0.9, 0.0], [0.5, 0.5, 0.5, 1]),
         ("quarter green over half grey", [0, 1, 0, 0.25], [0.5, 0.5, 0.5, 0.5]),
     ]
+    if mode == "from straight":  # the task's "nothing at all when α = 0" (r8: never tested)
+        pairs.append(("both transparent", [0.3, 0.6, 0.9, 0.0], [0.5, 0.2, 0.1, 0.0]))
     rng = np.random.default_rng(SEED + 1)
     for k in range(20):
         pairs.append((f"random colours {k}", *rng.uniform(0, 1, (2, 4)).round(3)))
@@ -179,6 +181,12 @@ def _straight_result(src, dst):
     return np.r_[colour, a]
 
 
+def _divided_by_zero(args, expected, got) -> bool:
+    """Both alphas 0 and a NaN returned: the straight colour divided by α = 0 first."""
+    src, dst = args
+    return src[3] == 0 and dst[3] == 0 and bool(np.isnan(np.asarray(got, float)).any())
+
+
 FROM_STRAIGHT = [
     ("inputs not premultiplied", "you blended the straight colours as if they were "
      "premultiplied: each colour counts as much as it is seen, α·C, before it is added",
@@ -207,7 +215,10 @@ def _mistakes(mode: str) -> list[Mistake]:
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
                    lambda s, d: from_straight(d, s))  # fmt: skip
-        return [Mistake(k, w, gives=g) for k, w, g in FROM_STRAIGHT + [swapped]]
+        nan = Mistake("division by zero", "both alphas 0: the result is transparent black, not "
+                      "a division by zero (nothing covers the pixel; multiplied through by the "
+                      "result's alpha, nothing is left to divide)", fits=_divided_by_zero)  # fmt: skip
+        return [nan, *(Mistake(k, w, gives=g) for k, w, g in FROM_STRAIGHT + [swapped])]
     table = (OVER if mode == "over" else PREMULTIPLIED) + COMMON
     factors = BLEND_MODES[mode]
     swapped = ("arguments swapped", "you blended dst over src: the first argument, src, is "

@@ -1,10 +1,10 @@
 """Exercises ``broken_frame_1`` … ``broken_frame_6`` (lesson 11): find what broke a frame.
 
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
-with one mistake a graphics programmer makes (a reversed depth mapping, culling the wrong
-winding, surfaces too close for the depth buffer, straight colours blended as premultiplied,
-transparent geometry drawn before what lies behind it, a strip modelled thinner than a
-pixel, which falls between the pixel centres). The student sees the frame beside the
+with one mistake a graphics programmer makes (in no particular order: a strip modelled
+thinner than a pixel, which falls between the pixel centres, straight colours blended as
+premultiplied, culling the wrong winding, transparent geometry drawn before what lies behind
+it, a reversed depth mapping, surfaces too close for the depth buffer). The student sees the frame beside the
 intended one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``)
 and answers with a cause from :data:`CAUSES`, a pixel whose history shows it and the stage
 (:data:`STAGES`) where that history first differs from the intended frame's.
@@ -25,8 +25,13 @@ One verdict for the whole answer: right only when the cause is right, the pixel 
 mistake changed whose history shows the cause, and the stage is where that history first
 differs from the intended one (stage by stage in the pipeline's order, each triangle matched
 by its corners on screen, whatever its number). A wrong answer, whichever part is wrong, gets
-the same words and the number of tries recorded, so trying stages or causes one by one gives
-no direction (r7: the stage's own message let 38 blind calls solve all six).
+the same words and the number of tries recorded, so a wrong stage is not told from a wrong
+cause (r7: the stage's own message let 38 blind calls solve all six). That slows guessing, it
+does not stop it: knowing the cause, the stage is one of four tries, and a blind loop over
+causes and stages solves all six (r8: 77 calls). The mark says an answer is right, not how it
+was found; grading the diagnosis itself needs the student's words or hidden checks
+(docs/grading.md). This module is importable like any other (``_answer`` is private by name,
+not hidden): the source ships with the package.
 """
 
 from __future__ import annotations
@@ -48,8 +53,10 @@ from .running import WrongAnswerType
 #: Frame size: small, so that every pixel is easy to pick.
 W, H = 64, 48
 
-#: The causes a diagnosis may name (six occur, four do not).
-CAUSES = {
+#: The causes a diagnosis may name (six occur, four do not), in alphabetical order: every
+#: listing of them (the notebook's, a wrong form's message) follows this order, never the
+#: frames' (r8: listed in the frames' order, the causes were the answer key).
+_CAUSES = {
     "depth function": "the depth test compares in the wrong direction for the frame's depths, "
     "so it keeps the farther surface",
     "culled winding": "triangles that face the camera are culled",
@@ -65,6 +72,7 @@ CAUSES = {
     "affine interpolation": "attributes are interpolated without the divide by w",
     "texture filtering": "the wrong texture filter or mip level",
 }
+CAUSES = dict(sorted(_CAUSES.items()))
 
 
 @dataclass(frozen=True)
@@ -113,10 +121,27 @@ def _nearer_first(frame, h) -> bool:
 
 
 def _thin_missed(frame, h) -> bool:
-    """The thinnest triangle crosses the pixel's box but not its centre (no fragment)."""
+    """The thinnest triangle crosses the pixel's box but not its centre (no fragment). r8: the
+    records alone say "not covered" for every pixel of the triangle's bounding box, 36 of 96
+    of them never crossed; the box test keeps only the pixels it passes through."""
     k = int(np.argmin(_altitudes(frame)))
     mine = [r for r in h.records if r.triangle == k]
-    return bool(mine) and all(r.outcome == "not_covered" for r in mine)
+    return (bool(mine) and all(r.outcome == "not_covered" for r in mine)
+            and _crosses_box(frame.trace.window[k, :, :2], h.row, h.col))  # fmt: skip
+
+
+def _crosses_box(xy: np.ndarray, row: int, col: int) -> bool:
+    """Does the triangle with window corners ``xy`` (3, 2) overlap pixel (row, col)'s box
+    [col, col + 1] × [row, row + 1] with some area? Separating axes: the box's two and the
+    triangle's three edge normals; touching an edge is no crossing."""
+    box = np.array([[col, row], [col + 1, row], [col + 1, row + 1], [col, row + 1]], float)
+    edges = np.roll(xy, -1, axis=0) - xy
+    axes = [np.array([1.0, 0.0]), np.array([0.0, 1.0]), *(e[::-1] * [1, -1] for e in edges)]
+    for a in axes:
+        t, b = xy @ a, box @ a
+        if t.max() <= b.min() or b.max() <= t.min():
+            return False
+    return True
 
 
 #: What a history shows for each cause that occurs: a test on (frame, history), and words.
@@ -130,7 +155,7 @@ _SIGNATURES = {
     "missing premultiplication": (lambda f, h: any(r.outcome == "passed" for r in h.records),
                                   "a fragment was blended there"),
     "blend order": (_nearer_first, "two blended fragments arrived nearer first"),
-    "sliver": (_thin_missed, "a triangle crosses the pixel without covering its centre"),
+    "sliver": (_thin_missed, "the thinnest triangle crosses the pixel's box, not its centre"),
 }  # fmt: skip
 
 
@@ -293,6 +318,9 @@ def _stages(frame: Frame, row: int, col: int) -> tuple:
     triangle by its corners on screen (:func:`_key`), never by its number."""
     records = frame.history(row, col).records
     keyed = [(_key(frame, r.piece), r) for r in records]
+    # Sets of triangles, compared across the frames: "coverage" differs when a triangle covers
+    # the centre in one frame and not in the other, whether it is not_covered there or not
+    # drawn at all (frame 6: the sliver and the 2 px strip have other corners).
     culled = frozenset(k for k, r in keyed if r.outcome == "culled")
     covered = frozenset(k for k, r in keyed if r.outcome not in ("culled", "not_covered"))
     tested = frozenset((k, r.outcome == "passed") for k, r in keyed
@@ -396,7 +424,8 @@ def _same(got, number, args=None) -> bool:
 _STAGE_MEANS = ("the stage is the first, in the pipeline's order, where the pixel's history in "
                "this frame differs from its history in the intended frame, comparing each "
                "triangle with the same triangle there: the same corners on screen, whatever its "
-               "number in either frame")  # fmt: skip
+               "number in either frame (a triangle drawn in one frame only covers nothing in "
+               "the other)")  # fmt: skip
 
 
 def _explain(args, number, got) -> str:

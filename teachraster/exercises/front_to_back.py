@@ -12,6 +12,12 @@ one.
 Expected answers: premultiplied over (:func:`teachraster.blend_equation` with the factors of
 ``render(..., blend="premultiplied")``), applied from the farthest layer to the nearest onto
 transparent black.
+
+What the check cannot tell (r8): a loop that reverses the layers and blends them back to
+front passes, since over is associative and the results are equal. The walk's order is not
+observable either: the task hands over an (n, 4) array, and ``np.asarray`` (which any
+solution may call) drops whatever an instrumented array would record. The derivation is the
+lecturer's to read.
 """
 
 from __future__ import annotations
