@@ -681,6 +681,14 @@ def test_09_quads_closed_form_and_predictions():
     assert ns.gauss_rms > ns.box_rms
     # the closed form (N_x - f D_x) / D is the derivative at the step's middle
     np.testing.assert_allclose(ns.closed_form, ns.exact_derivative, rtol=1e-5)
+    np.testing.assert_allclose(ns.closed_form_y, ns.exact_derivative_y, rtol=1e-5)
+    # along a row of the level floor D = 1/w is constant, so ddx is the derivative exactly;
+    # along y D changes and the quad's ddy is only close to it, further off far away
+    assert np.abs(ns.d_x).max() < 1e-12 and (ns.d_y > 1e-3).all()
+    np.testing.assert_allclose(ns.quad_ddx, ns.exact_derivative, rtol=1e-8)
+    np.testing.assert_allclose(ns.quad_ddy, ns.exact_ddy, rtol=1e-9)
+    gap_y = ns.quad_ddy / ns.exact_derivative_y - 1
+    assert (gap_y > 1e-5).all() and gap_y[0] > gap_y[-1]  # rows from far to near
     # rho = 3: lambda = 1.585, GL's nearest level 2 (not floor(lambda) = 1)
     assert ns.level_q == 2 and abs(ns.lam_q - np.log2(3)) < 1e-12
     # the figure question: GL switches to level 2 at lambda = 1.5, rho = 2^1.5, and the linear

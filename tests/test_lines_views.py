@@ -104,6 +104,10 @@ def test_blending_explorer_order_and_toggles():
 
     ex = BlendingExplorer(backend="image", size=(24, 24))
     try:
+        # the readout names both orders it compares (lesson 12 compares 0, 1, 2 with 2, 1, 0)
+        back = " → ".join(str(int(t)) for t in ex._depth_order())
+        assert ex.order != ex._depth_order() and f"back to front ({back})" in ex.info.value
+        assert f"drawn {' → '.join(map(str, ex.order))}:" in ex.info.value
         ex.sort.click()
         assert ex.differ == 0
         ex.select.value = 0

@@ -12,6 +12,7 @@ from matplotlib.colors import to_rgba  # noqa: E402
 import teachraster as tr  # noqa: E402
 from teachraster import plotting as tp  # noqa: E402
 from teachraster.core.traversal import TRAVERSALS, visit_index  # noqa: E402
+from teachraster.plotting.tiles import UNCLASSIFIED, has_unclassified  # noqa: E402
 from teachraster.widgets import TileExplorer  # noqa: E402
 
 XY = [[3.3, 2.1], [60.2, 14.7], [20.9, 58.4]]
@@ -60,6 +61,35 @@ def test_plot_blocks_levels_and_steps_update_in_place(fill, ax):
     art.show(tp.block_mask(blocks, upto=9, traversal="morton"))
     assert visible(art).sum() == 10
     assert set(art.order[visible(art)]) == set(blocks.visit_order("morton")[:10].tolist())
+
+
+def test_key_lists_the_unclassified_page_only_where_a_picture_shows_it(fill, ax):
+    blocks = fill.trace.blocks
+
+    def keyed(art):
+        return [t.get_text() for t in art.legend.get_texts()]
+
+    # every level tiles the bounding box's blocks: nothing is left unclassified
+    for lev in range(3):
+        assert not has_unclassified(blocks, tp.block_mask(blocks, level=lev))
+        art = tp.plot_blocks(ax, fill, level=lev)
+        assert UNCLASSIFIED not in keyed(art) and "partial" in keyed(art)
+        art.legend.remove()
+    # the first blocks of a walk leave the rest of the box white: the key says what it is
+    assert has_unclassified(blocks, tp.block_mask(blocks, upto=0))
+    art = tp.plot_blocks(ax, fill, upto=0)
+    assert UNCLASSIFIED in keyed(art)
+    art.legend.remove()
+    # only the top level's rejected and accepted blocks: the partial ones' area is white
+    top_only = tp.block_mask(blocks, level=0) & (blocks.kind_code != 2)
+    assert (blocks.kind_code[blocks.level == 0] == 2).any()
+    assert has_unclassified(blocks, top_only)
+    assert UNCLASSIFIED in keyed(tp.plot_blocks(ax, fill, unclassified=True, level=2))
+
+
+def test_explorer_key_keeps_the_unclassified_page_for_its_block_slider(explorer):
+    keyed = [t.get_text() for t in explorer.artists.legend.get_texts()]
+    assert UNCLASSIFIED in keyed
 
 
 def test_hierarchy_and_counters(fill):

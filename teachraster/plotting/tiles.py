@@ -123,6 +123,7 @@ def plot_blocks(
     upto: int | None = None,
     traversal: str = "scanline",
     legend: bool = True,
+    unclassified: bool | None = None,
 ) -> BlockArtists:
     """Draw the classified blocks of a tiled fill, coloured by kind.
 
@@ -141,6 +142,10 @@ def plot_blocks(
     legend : bool
         A legend of the three kinds and of the white page where no block is
         (:func:`block_legend_handles`).
+    unclassified : bool, optional
+        Whether the key lists the white page "not classified (yet)". None (default): only
+        when the blocks drawn leave part of the bounding box's blocks unclassified (a key
+        entry no panel shows misleads). A view that later shows fewer blocks passes True.
 
     Returns
     -------
@@ -155,20 +160,51 @@ def plot_blocks(
     result = BlockArtists(
         coll, order=order, kinds=blocks.kind_code[order].astype(int), sizes=blocks.size[order]
     )
-    result.show(block_mask(blocks, level=level, upto=upto, traversal=traversal))
+    shown = block_mask(blocks, level=level, upto=upto, traversal=traversal)
+    result.show(shown)
     if legend:
-        result.legend = ax.legend(handles=block_legend_handles(), loc="upper left",
+        if unclassified is None:
+            unclassified = has_unclassified(blocks, shown)
+        handles = block_legend_handles(unclassified=unclassified)
+        result.legend = ax.legend(handles=handles, loc="upper left",
                                   bbox_to_anchor=(1.02, 1), fontsize=fs(0.7),
                                   frameon=False)  # fmt: skip
     return result
 
 
-def block_legend_handles() -> list[Patch]:
-    """The key of :func:`plot_blocks`: one patch per kind, and the page where no block is."""
+def block_legend_handles(*, unclassified: bool = True) -> list[Patch]:
+    """The key of :func:`plot_blocks`: one patch per kind, and (``unclassified``) the page
+    where no block is (yet)."""
     handles = [Patch(facecolor=BLOCK_COLORS[k], edgecolor=BLOCK_COLORS[k], label=k)
                for k in KINDS]  # fmt: skip
-    handles.append(Patch(facecolor="white", edgecolor=COLORS["grid"], label=UNCLASSIFIED))
+    if unclassified:
+        handles.append(Patch(facecolor="white", edgecolor=COLORS["grid"], label=UNCLASSIFIED))
     return handles
+
+
+def has_unclassified(blocks: TileTrace, shown: np.ndarray) -> bool:
+    """Whether the ``shown`` blocks leave a pixel of the top-level blocks uncovered.
+
+    The top-level blocks tile the triangle's bounding box: a pixel of theirs that no shown
+    block covers is the white page the key calls "not classified (yet)".
+    """
+    shown = np.asarray(shown, dtype=bool)
+    if len(blocks) == 0:
+        return False
+    bottom = int((blocks.row + blocks.extent[:, 0]).max())
+    right = int((blocks.col + blocks.extent[:, 1]).max())
+    todo = np.zeros((bottom, right), dtype=bool)
+    done = np.zeros_like(todo)
+    for i in range(len(blocks)):
+        if blocks.level[i] != 0 and not shown[i]:
+            continue
+        r, c = int(blocks.row[i]), int(blocks.col[i])
+        window = (slice(r, r + int(blocks.extent[i, 0])), slice(c, c + int(blocks.extent[i, 1])))
+        if blocks.level[i] == 0:
+            todo[window] = True
+        if shown[i]:
+            done[window] = True
+    return bool((todo & ~done).any())
 
 
 def plot_hierarchy(axes, fill, *, triangle: bool = True) -> list[BlockArtists]:

@@ -186,6 +186,9 @@ class BlendingExplorer(Shown):
 
     def _info(self) -> str:
         order = " → ".join(str(t) for t in self.order)
-        return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front"
+        # name both orders: a lesson may compare other orders of the same triangles (r8)
+        back = " → ".join(str(int(t)) for t in self._depth_order())
+        return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front "
+                f"({back})"
                 f"{' (premultiplied)' if self.premultiplied.value else ''}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}")  # fmt: skip

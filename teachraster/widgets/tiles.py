@@ -125,7 +125,10 @@ class TileExplorer(Holdable):
         if self.artists is not None:
             for artist in self.artists:
                 artist.remove()
-        self.artists = plot_blocks(self.ax, self.fill, traversal=self.traversal.value)
+        # the block slider shows blocks not classified yet, and the key is drawn once (below)
+        self.artists = plot_blocks(
+            self.ax, self.fill, traversal=self.traversal.value, unclassified=True
+        )
         # a level or a block step changes which blocks show, nothing else: the pixel grid,
         # the ticks and the key stay in a cached background, what lies over the blocks (the
         # triangle, the frame) in a still layer (a full draw cost 4-5x more; issue 31: the
