@@ -748,7 +748,7 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
     for text in (tour, picture):
         assert "neither discards" not in " ".join(text.split())
         assert "only the" in text and "write" in text
-    assert "keeps the early test" in " ".join(tour.split())
+    assert "can keep the early test" in " ".join(tour.split())  # r8: allowed, not required
     assert "conservative depth" in tour and "gl_FragDepth" in tour
     with tr_style():
         fig, ax = plt.subplots(figsize=(9, 7.5))

@@ -656,7 +656,7 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
     from teachraster.exercises.blending import from_straight
 
     src, dst = [0.2, 0.4, 0.6, 0.5], [1.0, 0.5, 0.0, 0.5]
-    assert np.allclose(from_straight(src, dst), [0.35, 0.325, 0.15, 0.75])
+    assert np.allclose(from_straight(src, dst), [0.35, 0.325, 0.3, 0.75])  # 0.6·0.5 + 0·0.5·0.5
     _passes("over_to_premultiplied", sol.over_to_premultiplied)
     said = str(ex.check("over_to_premultiplied", from_straight))
     assert "not counted" in said or "package" in said, said
