@@ -331,18 +331,23 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     assert all(v > 0 for v in ns.my_wrong.values())  # E >= 0 differs on every mesh case
 
     # ... and the change the text asks for (the top-left rule) brings every count to 0
-    def top_left_coverage(xy, width, height):
-        xy = np.asarray(xy, dtype=float)
-        a, b, c = xy
-        if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
-            xy = xy[[0, 2, 1]]
-        x, y = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
-        inside = np.ones((height, width), dtype=bool)
-        for p, q in zip(xy, np.roll(xy, -1, axis=0)):
-            e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
-            top_left = q[1] < p[1] or (q[1] == p[1] and q[0] > p[0])
-            inside &= (e > 0) | ((e == 0) & top_left)
-        return inside
+    def with_rule(rule):
+        def coverage(xy, width, height):
+            xy = np.asarray(xy, dtype=float)
+            a, b, c = xy
+            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+                xy = xy[[0, 2, 1]]
+            x, y = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
+            inside = np.ones((height, width), dtype=bool)
+            for p, q in zip(xy, np.roll(xy, -1, axis=0)):
+                e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
+                inside &= (e > 0) | ((e == 0) & rule(p, q))
+            return inside
+
+        return coverage
+
+    # an edge owns its centres when it is a top edge (horizontal, walked right) or a left one
+    top_left_coverage = with_rule(lambda p, q: q[1] < p[1] or (q[1] == p[1] and q[0] > p[0]))
 
     for name in hardcases.list_cases("mesh"):
         case = hardcases.get_case(name)
@@ -363,21 +368,6 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     assert "left out" not in ns.my_verdict
     verdict, counts = scope["check_tie_rule"](top_left_coverage)
     assert verdict.startswith("Right") and not any(counts.values())
-
-    def with_rule(rule):
-        def coverage(xy, width, height):
-            xy = np.asarray(xy, dtype=float)
-            a, b, c = xy
-            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
-                xy = xy[[0, 2, 1]]
-            x, y = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
-            inside = np.ones((height, width), dtype=bool)
-            for p, q in zip(xy, np.roll(xy, -1, axis=0)):
-                e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
-                inside &= (e > 0) | ((e == 0) & rule(p, q))
-            return inside
-
-        return coverage
 
     strict = scope["check_tie_rule"](with_rule(lambda p, q: False))[0]  # E > 0: gaps only
     assert strict.startswith("Not yet") and "left out" in strict and "more often" not in strict
