@@ -29,7 +29,7 @@ How it is built (one engine for every exercise):
   picture beside the package's (``report.compare(ax)``).
 - ``capstone(scene, covers=...)`` renders a built-in scene with the student's own functions
   beside the package's (:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames
-  lesson 11's exercises diagnose (:mod:`.broken_frames`), ``frames_to_inspect()`` all
+  lesson 11's exercises diagnose (:mod:`teachraster.exercises.broken_frames`), ``frames_to_inspect()`` all
   twelve frames for the ``FrameInspector``.
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
@@ -38,7 +38,7 @@ top-left rule and one reference for every answer. matplotlib is imported only wh
 is drawn (:meth:`Report.plot`).
 """
 
-from .broken_frames import CAUSES, broken_frame, frames_to_inspect
+from .broken_frames import CAUSES, EVIDENCE, broken_frame, frames_to_inspect
 from .capstone_render import BUDGET as CAPSTONE_BUDGET
 from .capstone_render import capstone
 from .checks import check, names
@@ -47,6 +47,7 @@ from .report import Failure, Report
 __all__ = [
     "CAPSTONE_BUDGET",
     "CAUSES",
+    "EVIDENCE",
     "Failure",
     "Report",
     "broken_frame",
@@ -55,3 +56,7 @@ __all__ = [
     "frames_to_inspect",
     "names",
 ]
+
+# r8 11-3: the submodule was one Tab away (``ex.broken_frames._answer(n)``); it stays importable
+# by its full name, like any module, but is no attribute of ``ex``.
+del broken_frames  # noqa: F821 - bound by the import of its names above

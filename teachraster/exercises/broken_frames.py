@@ -1,44 +1,38 @@
 """Exercises ``broken_frame_1`` … ``broken_frame_6`` (lesson 11): find what broke a frame.
 
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
-with one mistake a graphics programmer makes (in no particular order: a strip modelled
-thinner than a pixel, which falls between the pixel centres, straight colours blended as
-premultiplied, culling the wrong winding, transparent geometry drawn before what lies behind
-it, a reversed depth mapping, surfaces too close for the depth buffer). The student sees the frame beside the
-intended one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``)
-and answers with a cause from :data:`CAUSES`, a pixel whose history shows it and the stage
-(:data:`STAGES`) where that history first differs from the intended frame's.
+with one mistake a graphics programmer makes (alphabetically: transparent geometry drawn
+before what lies behind it, culling the wrong winding, a reversed depth mapping, straight
+colours blended as premultiplied, a strip modelled thinner than a pixel, surfaces too close
+for the depth buffer). The student sees the frame beside the intended one, inspects pixel
+histories (``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
+:data:`CAUSES`, a pixel where the two frames differ, and the evidence :data:`EVIDENCE` names
+for that cause: a number or colour read off that pixel's history (a depth to its six printed
+decimals, a colour or a distance to its four printed digits).
 
 What is hidden and what is not. The frames come in look-alike pairs (1-2, 3-4, 5-6) with
-the same symptom, the same picture and the same intended picture pixel for pixel, so the
-picture cannot tell a pair apart. Hidden: the cause (no public attribute or repr of a
-:class:`BrokenFrame` names it), the frames' ``plan`` (withheld, the same text for every
-frame: :data:`WITHHELD`), and the check's evidence test (private here). Not hidden:
-``frame.trace`` and ``frame.attrs`` are the renderer's full records, the very data a pixel
-history reads (window positions and depths, the drawing order, the culled flags, the
-fragments' colours, the render settings in ``trace.debug.inputs``: frame 2 and its intended
-frame cull back faces, frame 1 and its intended frame do not), so a student who reads those
-arrays instead of histories finds the same evidence by a longer road. Each frame is rendered
-with its own intended frame's settings (the mistake is in what is drawn).
+the same symptom, the same picture and the same intended picture pixel for pixel. Hidden: the
+cause (no attribute or repr of a :class:`BrokenFrame` names it; the module keeps only a salted
+hash of each frame's cause, which hides the key from a reader, not from someone who hashes
+the ten names), the frames' ``plan`` (:data:`WITHHELD`). Not hidden: ``frame.trace`` and
+``frame.attrs``, the renderer's records that the histories read, and this module's source,
+which shows how each frame is built. Neither gives the point: the evidence is a value of the
+student's own pixel, derived from the frame's history when the answer is checked (r8: the
+cause, a changed pixel and a stage named by the cause passed, 77 blind calls solved all six).
 
-One verdict for the whole answer: right only when the cause is right, the pixel is one the
-mistake changed whose history shows the cause, and the stage is where that history first
-differs from the intended one (stage by stage in the pipeline's order, each triangle matched
-by its corners on screen, whatever its number). A wrong answer, whichever part is wrong, gets
-the same words and the number of tries recorded, so a wrong stage is not told from a wrong
-cause (r7: the stage's own message let 38 blind calls solve all six). That slows guessing, it
-does not stop it: knowing the cause, the stage is one of four tries, and a blind loop over
-causes and stages solves all six (r8: 77 calls). The mark says an answer is right, not how it
-was found; grading the diagnosis itself needs the student's words or hidden checks
-(docs/grading.md). This module is importable like any other (``_answer`` is private by name,
-not hidden): the source ships with the package.
+What a wrong answer is told, in this order: a pixel where the two frames agree; a cause whose
+mark (:data:`_SIGNS`) the two histories at the pixel do not bear (and, when the value given
+is this pixel's evidence of the real cause, that it was read right); for a cause whose mark
+they bear, that the value is not the evidence there. The cause alone can be found by trying
+the ten names; the point needs the value, which only the pixel's history gives.
 """
 
 from __future__ import annotations
 
+import hashlib
 import operator
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, lru_cache
 
 import numpy as np
 
@@ -56,29 +50,50 @@ W, H = 64, 48
 #: The causes a diagnosis may name (six occur, four do not), in alphabetical order: every
 #: listing of them (the notebook's, a wrong form's message) follows this order, never the
 #: frames' (r8: listed in the frames' order, the causes were the answer key).
-_CAUSES = {
+CAUSES = {
+    "affine interpolation": "attributes are interpolated without the divide by w",
+    "blend order": "transparent geometry is drawn before what lies behind it",
+    "culled winding": "triangles that face the camera are culled",
     "depth function": "the depth test compares in the wrong direction for the frame's depths, "
     "so it keeps the farther surface",
-    "culled winding": "triangles that face the camera are culled",
-    "z-fighting": "the depth buffer cannot tell two surfaces apart",
+    "depth test off": "later triangles overwrite nearer ones",
     "missing premultiplication": "straight-alpha colours are blended as premultiplied ones",
-    "blend order": "transparent geometry is drawn before what lies behind it",
+    "near-plane clipping": "geometry is cut away by the near plane",
     # r7: the intended frame is the strip modelled 2 px thick, not the sliver with more
     # samples, so the cause is the geometry: a strip thinner than a pixel between the centres
     "sliver": "a triangle modelled thinner than a pixel, so thin that it falls between the "
     "pixel centres (the one sample of each pixel)",
-    "depth test off": "later triangles overwrite nearer ones",
-    "near-plane clipping": "geometry is cut away by the near plane",
-    "affine interpolation": "attributes are interpolated without the divide by w",
     "texture filtering": "the wrong texture filter or mip level",
+    # r8 11-6: every pixel ties here, so the pane loses everywhere; at an angle the two
+    # surfaces would tie at some pixels only, in the stitched pattern the name comes from
+    "z-fighting": "the depth buffer cannot tell two surfaces apart (where they tie at some "
+    "pixels only, they show through each other in stitches: the name)",
 }
-CAUSES = dict(sorted(_CAUSES.items()))
+
+#: For each cause, the evidence an answer gives with it: what to read off the history of the
+#: chosen pixel (the broken frame's, unless it says the intended frame's), and its kind.
+EVIDENCE = {
+    "affine interpolation": ("number", "the attribute value the pixel shows"),
+    "blend order": ("colour", "the colour (r, g, b) the transparent fragment's blend wrote "
+                    "(its 'after'), which a later write replaced"),
+    "culled winding": ("depth", "the depth of the fragment the pixel shows"),
+    "depth function": ("depth", "the depth of the fragment the pixel shows"),
+    "depth test off": ("depth", "the depth of a fragment that passed though the stored depth "
+                       "was nearer"),
+    "missing premultiplication": ("colour", "the fragment colour (r, g, b) the blend received"),
+    "near-plane clipping": ("number", "how far (px) the centre lies beyond the near plane"),
+    "sliver": ("pair", "(how far (px) the pixel centre lies outside the thin triangle, the "
+               "depth of the fragment the intended frame draws there instead)"),
+    "texture filtering": ("colour", "the texel colour (r, g, b) the pixel shows"),
+    "z-fighting": ("depth", "the depth, in the intended frame's history, of the fragment that "
+                   "fails on a tie in the broken one"),
+}  # fmt: skip
 
 
 @dataclass(frozen=True)
 class BrokenFrame:
     """One frame to diagnose, as the student gets it: the symptom as reported and the two
-    frames. What broke it is the check's to know (:func:`_answer`), not a field to read."""
+    frames. What broke it is the check's to know, not a field to read."""
 
     number: int
     symptom: str
@@ -89,35 +104,67 @@ class BrokenFrame:
         return f"BrokenFrame({self.number}: {self.symptom!r}, .frame, .intended)"
 
 
-def _answer(number: int) -> str:
-    """The cause of frame ``number``: read by the check only."""
-    return _CAUSE_OF[number]
-
-
 def _differs(number: int) -> np.ndarray:
     """(H, W) bool: the pixels the mistake of frame ``number`` changed (colour, RGB)."""
     b = broken_frame(number)
     return ~np.isclose(_rgb(b.frame), _rgb(b.intended), atol=1e-6).all(axis=2)
 
 
-def _shows(number: int, row: int, col: int) -> bool:
-    """Does pixel (row, col) of frame ``number`` show its cause: changed by it, and its history
-    bearing the cause's signature (:data:`_SIGNATURES`)?"""
-    if not (0 <= row < H and 0 <= col < W and _differs(number)[row, col]):
-        return False
-    frame = broken_frame(number).frame
-    return bool(_SIGNATURES[_answer(number)][0](frame, frame.history(row, col)))
+#: sha256 of "<salt>|<frame>|<cause>", 32 hex digits: the key, not readable as text (anyone
+#: may hash the ten causes: the point needs the pixel's evidence as well, see the docstring).
+_SALT = "teachraster/broken-frames/r9"
+_KEY = {1: "e68f66d3ea75110820cace3e308b0d6e", 2: "c6b79012eaf45d23d1a4d99109306658",
+        3: "04b91d018fc9aec9a7aa6f32f59360cb", 4: "e2b44365fd55dbf77960b5922c872641",
+        5: "38234cdea627c46e16be35257101261e", 6: "2413d43fbc57dd32560223caa37f49b2"}  # fmt: skip
 
 
-def _tested(frame, h) -> bool:
-    """Two or more fragments met the depth test here: its direction decided which is shown."""
-    return sum(r.outcome in ("passed", "failed_depth") for r in h.records) >= 2
+def _is_cause(number: int, cause: str) -> bool:
+    """Is ``cause`` what broke frame ``number`` (by its salted hash)?"""
+    digest = hashlib.sha256(f"{_SALT}|{number}|{cause}".encode()).hexdigest()[:32]
+    return digest == _KEY[number]
 
 
-def _nearer_first(frame, h) -> bool:
-    """Two blended fragments arrived nearer first."""
-    depths = [r.depth for r in h.records if r.outcome == "passed"]
-    return len(depths) >= 2 and any(a < b for a, b in zip(depths, depths[1:]))
+@dataclass(frozen=True)
+class _Pixel:
+    """What the check reads at one pixel of one frame: both histories and where they part."""
+
+    frame: Frame
+    mine: object  # the broken frame's PixelHistory
+    meant: object  # the intended frame's
+    stage: str | None  # the first stage where they differ (:data:`STAGES`), None: they agree
+
+
+def _pixel(number: int, row: int, col: int) -> _Pixel:
+    b = broken_frame(number)
+    mine, meant = b.frame.history(row, col), b.intended.history(row, col)
+    stage = next((s for s, x, y in zip(STAGES, _stages(b.frame, mine), _stages(b.intended, meant))
+                  if x != y), None)  # fmt: skip
+    return _Pixel(b.frame, mine, meant, stage)
+
+
+def _ties(p: _Pixel) -> list:
+    """The broken history's fragments that fail on a tie (their depth equals the stored one)."""
+    return [r for r in p.mine.records
+            if r.outcome in ("failed_depth", "hi_z") and r.depth == r.depth_before]  # fmt: skip
+
+
+def _blended(frame: Frame, h) -> list:
+    """(triangle's corners, fragment colour) of every fragment the colour buffer received."""
+    return [(_key(frame, r.piece), tuple(np.round(r.color, 6).tolist()))
+            for r in h.records if r.outcome == "passed"]  # fmt: skip
+
+
+def _reordered(p: _Pixel, b: BrokenFrame) -> bool:
+    """The same fragments blended, in another order."""
+    mine = [k for k, _ in _blended(b.frame, p.mine)]
+    meant = [k for k, _ in _blended(b.intended, p.meant)]
+    return mine != meant and sorted(map(sorted, mine)) == sorted(map(sorted, meant))
+
+
+def _recoloured(p: _Pixel, b: BrokenFrame) -> bool:
+    """The same fragments blended in the same order, one with another colour."""
+    mine, meant = _blended(b.frame, p.mine), _blended(b.intended, p.meant)
+    return [k for k, _ in mine] == [k for k, _ in meant] and mine != meant
 
 
 def _thin_missed(frame, h) -> bool:
@@ -144,18 +191,34 @@ def _crosses_box(xy: np.ndarray, row: int, col: int) -> bool:
     return True
 
 
-#: What a history shows for each cause that occurs: a test on (frame, history), and words.
-_SIGNATURES = {
-    "depth function": (_tested, "two or more fragments met the depth test there"),
-    "culled winding": (lambda f, h: any(r.outcome == "culled" for r in h.records),
-                       "a triangle there was culled"),
-    "z-fighting": (lambda f, h: any(r.outcome in ("failed_depth", "hi_z")
-                                    and r.depth == r.depth_before for r in h.records),
-                   "a fragment failed on a tie"),
-    "missing premultiplication": (lambda f, h: any(r.outcome == "passed" for r in h.records),
-                                  "a fragment was blended there"),
-    "blend order": (_nearer_first, "two blended fragments arrived nearer first"),
-    "sliver": (_thin_missed, "the thinnest triangle crosses the pixel's box, not its centre"),
+#: The mark each cause leaves where the two histories of a pixel part: a test on (the pixel,
+#: its frames) and the words a wrong cause is told. Each frame's changed pixels bear the mark
+#: of its own cause only (tests/test_broken_frames.py), so a cause is judged by its mark at
+#: the student's pixel as well as by the key.
+_SIGNS = {
+    "affine interpolation": (lambda p, b: b.frame.trace.debug.inputs.interpolation == "affine",
+                             "its frame interpolates without the divide by w"),
+    "blend order": (lambda p, b: p.stage == "blending" and _reordered(p, b),
+                    "they first part at blending, the same fragments blended in another order"),
+    "culled winding": (lambda p, b: p.stage == "culling",
+                       "they first part at culling, a triangle culled in one and drawn in the "
+                       "other"),
+    "depth function": (lambda p, b: p.stage == "depth test" and not _ties(p),
+                       "they first part at the depth test, a fragment kept in one and rejected "
+                       "in the other, with no tie"),
+    "depth test off": (lambda p, b: not p.mine.depth_test, "its depth test is off"),
+    "missing premultiplication": (lambda p, b: p.stage == "blending" and _recoloured(p, b),
+                                  "they first part at blending, the same fragments in the same "
+                                  "order, one with another colour"),
+    "near-plane clipping": (lambda p, b: any(r.edge == "near" for r in p.mine.records),
+                            "a triangle there is cut by the near plane"),
+    "sliver": (lambda p, b: p.stage == "coverage" and _thin_missed(b.frame, p.mine),
+               "they first part at coverage, where the thinnest triangle crosses the pixel but "
+               "misses its centre"),
+    "texture filtering": (lambda p, b: False, "a texture is sampled there"),
+    "z-fighting": (lambda p, b: p.stage == "depth test" and bool(_ties(p)),
+                   "they first part at the depth test, where a fragment fails on a tie (its "
+                   "depth equal to the stored one)"),
 }  # fmt: skip
 
 
@@ -237,21 +300,20 @@ def _strip(triangles):
 #: the same intended picture, pixel for pixel; only the histories tell them apart (3 to 6
 #: even share the broken picture: a plain wall).
 _SPECS = [
-    ("The cube does not look as intended.", "depth function",
+    ("The cube does not look as intended.",
      lambda: _cube(reverse_depth=True), _cube),
-    ("The cube does not look as intended.", "culled winding",
+    ("The cube does not look as intended.",
      lambda: _cube(winding_reversed=True, cull="back"), lambda: _cube(cull="back")),
-    ("The dark pane on the wall is missing.", "z-fighting",
+    ("The dark pane on the wall is missing.",
      lambda: _pixels([_wall(), _pane(0.6 - 1e-6)]), lambda: _pixels([_wall(), _pane(0.599)])),
-    ("The dark pane on the wall is missing.", "missing premultiplication",
+    ("The dark pane on the wall is missing.",
      lambda: _pixels([_wall(), _pane(0.4, premultiplied=False)]),
      lambda: _pixels([_wall(), _pane(0.4)])),
-    ("The tinted strip across the wall is missing.", "blend order",
+    ("The tinted strip across the wall is missing.",
      lambda: _pixels([_strip(_WEDGE), _wall()]), lambda: _pixels([_wall(), _strip(_WEDGE)])),
-    ("The tinted strip across the wall is missing.", "sliver",
+    ("The tinted strip across the wall is missing.",
      lambda: _pixels([_wall(), _strip(_NEEDLE)]), lambda: _pixels([_wall(), _strip(_WEDGE)])),
 ]  # fmt: skip
-_CAUSE_OF = {k + 1: cause for k, (_, cause, *_) in enumerate(_SPECS)}
 
 
 class _WithheldPlan(Plan):
@@ -280,7 +342,7 @@ def _handed_out(frame: Frame) -> Frame:
 def broken_frames() -> tuple[BrokenFrame, ...]:
     """The six frames, numbered from 1 (rendered once), their plans withheld."""
     return tuple(BrokenFrame(k + 1, symptom, _handed_out(broken()), _handed_out(intended()))
-                 for k, (symptom, _, broken, intended) in enumerate(_SPECS))  # fmt: skip
+                 for k, (symptom, broken, intended) in enumerate(_SPECS))  # fmt: skip
 
 
 def frames_to_inspect() -> dict[str, Frame]:
@@ -313,11 +375,10 @@ def _key(frame: Frame, piece: int) -> frozenset:
     return frozenset(map(tuple, xy.tolist()))
 
 
-def _stages(frame: Frame, row: int, col: int) -> tuple:
-    """What each stage of pixel (row, col)'s history did, comparable across two frames: each
+def _stages(frame: Frame, h) -> tuple:
+    """What each stage of a pixel's history ``h`` did, comparable across two frames: each
     triangle by its corners on screen (:func:`_key`), never by its number."""
-    records = frame.history(row, col).records
-    keyed = [(_key(frame, r.piece), r) for r in records]
+    keyed = [(_key(frame, r.piece), r) for r in h.records]
     # Sets of triangles, compared across the frames: "coverage" differs when a triangle covers
     # the centre in one frame and not in the other, whether it is not_covered there or not
     # drawn at all (frame 6: the sliver and the 2 px strip have other corners).
@@ -325,25 +386,57 @@ def _stages(frame: Frame, row: int, col: int) -> tuple:
     covered = frozenset(k for k, r in keyed if r.outcome not in ("culled", "not_covered"))
     tested = frozenset((k, r.outcome == "passed") for k, r in keyed
                        if r.outcome in ("hi_z", "failed_depth", "passed"))  # fmt: skip
-    blended = tuple((k, tuple(np.round(r.color, 6).tolist())) for k, r in keyed
-                    if r.outcome == "passed")  # fmt: skip
-    return culled, covered, tested, blended
+    return culled, covered, tested, tuple(_blended(frame, h))
 
 
 def _parts_at(number: int, row: int, col: int) -> str | None:
     """The first stage (:data:`STAGES`) at which pixel (row, col)'s history in frame
-    ``number`` differs from its history in the intended frame, stage by stage in the
-    pipeline's order and triangle by triangle matched by its corners on screen (None: they
-    agree throughout). Private: it is the answer's stage."""
+    ``number`` differs from its history in the intended frame (None: they agree)."""
+    return _pixel(number, row, col).stage
+
+
+def _evidence(number: int, cause: str, p: _Pixel) -> list:
+    """The values :data:`EVIDENCE` names for ``cause`` at pixel ``p`` of frame ``number``,
+    read from its histories (empty where the pixel lacks the cause's mark): any one of them
+    is the evidence."""
     b = broken_frame(number)
-    mine, meant = _stages(b.frame, row, col), _stages(b.intended, row, col)
-    return next((s for s, x, y in zip(STAGES, mine, meant) if x != y), None)
+    if not _SIGNS[cause][0](p, b):
+        return []
+    mine = p.mine.records
+    if cause in ("depth function", "culled winding"):
+        return [r.depth for r in mine if r.shown]
+    if cause == "z-fighting":
+        tied = {_key(b.frame, r.piece) for r in _ties(p)}
+        return [r.depth for r in p.meant.records
+                if r.outcome == "passed" and _key(b.intended, r.piece) in tied]  # fmt: skip
+    if cause == "missing premultiplication":
+        meant = dict(_blended(b.intended, p.meant))
+        return [r.color for r in mine if r.outcome == "passed"
+                and meant.get(_key(b.frame, r.piece)) != tuple(np.round(r.color, 6).tolist())]  # fmt: skip
+    if cause == "blend order":
+        return [r.color_after for r in mine
+                if r.outcome == "passed" and r.color[3] < 1 and r.hidden_by >= 0]  # fmt: skip
+    if cause == "sliver":  # both sides of where they part: missed here, drawn there
+        k = int(np.argmin(_altitudes(b.frame)))
+        drawn = {_key(b.frame, r.piece) for r in mine}
+        return [(r.outside, q.depth) for r in mine if r.triangle == k and r.outcome == "not_covered"
+                for q in p.meant.records
+                if q.outcome == "passed" and _key(b.intended, q.piece) not in drawn]  # fmt: skip
+    return []  # the causes that occur in no frame: no value is their evidence
 
 
-def _evidence(number: int, row: int, col: int, stage: str) -> bool:
-    """Does (row, col, stage) hold: a pixel the mistake changed, whose history shows it and
-    differs from the intended one first at ``stage``, as the renderer's own records say?"""
-    return _shows(number, row, col) and _parts_at(number, row, col) == stage
+#: How far a value may be from the history's: half a unit of the last digit it prints (six
+#: decimals for depths, four digits for colours and distances), and a little more.
+_TOLERANCE = {"depth": 2e-6, "number": 6e-5, "colour": 1e-4, "pair": (6e-5, 2e-6)}
+
+
+def _matches(kind: str, value, evidence: list) -> bool:
+    """Is ``value`` (a number, 3 or 4 colour channels, or a pair) one of ``evidence``?"""
+    tol = _TOLERANCE[kind]
+    if kind in ("depth", "number"):
+        return any(abs(value - e) <= tol for e in evidence)
+    n = len(value)
+    return any(np.all(np.abs(np.subtract(value, e[:n])) <= tol) for e in evidence)
 
 
 # -- the answer -------------------------------------------------------------------------------
@@ -352,7 +445,8 @@ def _words(value) -> str:
 
 
 _CAUSE_KEYS = {_words(c): c for c in CAUSES}
-_SHAPE = '(cause, (row, col), stage), such as ("depth test off", (12, 30), "depth test")'
+_SHAPE = ('(cause, (row, col), evidence), such as ("depth test off", (12, 30), 0.25), the '
+          "evidence being what the causes' list names for that cause")  # fmt: skip
 
 
 def _index(name: str, value, pixel) -> int:
@@ -368,18 +462,54 @@ def _index(name: str, value, pixel) -> int:
                               "an integer (a pixel is (row, col), two whole numbers)") from None  # fmt: skip
 
 
-def as_diagnosis(value) -> tuple[str, tuple[int, int], str]:
-    """(cause, (row, col), stage) from the student's answer, read strictly."""
+def _real(value) -> float | None:
+    """``value`` as a finite float, or None (a bool, text, NaN or something else)."""
+    if isinstance(value, bool | np.bool_ | str | bytes):
+        return None
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        return None
+    return x if np.isfinite(x) else None
+
+
+def _as_evidence(cause: str, value):
+    """The evidence for ``cause``, read strictly: a number, or 3 or 4 colour channels."""
+    kind, what = EVIDENCE[cause]
+    if isinstance(value, str) and _words(value) in STAGES:  # r8's answer form: a stage
+        raise WrongAnswerType(f"returned the stage {value!r} as the evidence: the evidence for "
+                              f"{cause!r} is {what}, read off the pixel's history")  # fmt: skip
+    if kind in ("depth", "number"):
+        x = _real(value)
+        if x is None:
+            raise WrongAnswerType(f"returned the evidence {short(value)}: for {cause!r} it is "
+                                  f"one number, {what}")  # fmt: skip
+        return x
+    try:
+        channels = [_real(v) for v in value] if not isinstance(value, str) else [None]
+    except TypeError:
+        channels = [None]
+    sizes, form = (
+        ((3, 4), "a colour, three or four numbers (r, g, b[, a])")
+        if kind == "colour"
+        else ((2,), "two numbers")
+    )
+    if len(channels) not in sizes or None in channels:
+        raise WrongAnswerType(f"returned the evidence {short(value)}: for {cause!r} it is "
+                              f"{form}: {what}")  # fmt: skip
+    return tuple(channels)
+
+
+def as_diagnosis(value) -> tuple[str, tuple[int, int], object]:
+    """(cause, (row, col), evidence) from the student's answer, read strictly."""
     if isinstance(value, str) and _words(value) in _CAUSE_KEYS:
         # the cause without its evidence (r6: told to drop the quotes of a cause that is text)
-        raise WrongAnswerType(f"returned only the cause {value!r}: return {_SHAPE}, the "
-                              "cause with its evidence")  # fmt: skip
-    refuse_non_answers(value, "a triple (cause, (row, col), stage)")
+        raise WrongAnswerType(f"returned only the cause {value!r}: return {_SHAPE}")
+    refuse_non_answers(value, "a triple (cause, (row, col), evidence)")
     if isinstance(value, tuple | list) and len(value) == 2:
-        raise WrongAnswerType(f"returned {short(value)} without the stage: return {_SHAPE}, "
-                              f"the stage one of {list(STAGES)}")  # fmt: skip
+        raise WrongAnswerType(f"returned {short(value)} without the evidence: return {_SHAPE}")
     try:
-        cause, pixel, stage = value
+        cause, pixel, evidence = value
         row, col = pixel
     except (TypeError, ValueError):
         raise WrongAnswerType(f"returned {short(value)}: return {_SHAPE}") from None
@@ -389,59 +519,89 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int], str]:
     if _words(cause) not in _CAUSE_KEYS:
         raise WrongAnswerType(f"returned the cause {cause!r}, which is not one of the causes "
                               f"(spell it as listed): {', '.join(CAUSES)}")  # fmt: skip
-    if not isinstance(stage, str) or _words(stage) not in STAGES:
-        raise WrongAnswerType(f"returned the stage {short(stage)}, which is not one of the "
-                              f"stages (spell it as listed): {', '.join(STAGES)}")  # fmt: skip
     row, col = _index("row", row, pixel), _index("col", col, pixel)
     if not (0 <= row < H and 0 <= col < W):
         raise WrongAnswerType(f"returned pixel ({row}, {col}), outside the {H} × {W} frame "
                               f"(rows 0–{H - 1}, columns 0–{W - 1})")  # fmt: skip
-    return _CAUSE_KEYS[_words(cause)], (row, col), _words(stage)
-
-
-#: How many well-formed answers each frame's check has judged in this Python session: the
-#: one thing a wrong answer is told besides "not right".
-_TRIES: dict[int, int] = {}
+    cause = _CAUSE_KEYS[_words(cause)]
+    return cause, (row, col), _as_evidence(cause, evidence)
 
 
 def _cases(number: int):
     return lambda: [("the diagnosis", (), number)]  # one case: a short title (r7 11-10)
 
 
-def _right(number: int, got) -> bool:
-    cause, (row, col), stage = got
-    return cause == _answer(number) and _evidence(number, row, col, stage)
+@lru_cache(maxsize=256)  # the figure and the words read the verdict again
+def _judged(number: int, got) -> tuple[str, _Pixel | None]:
+    """The verdict on one answer: "right", "pixel" (the frames agree there), "cause" (the
+    pixel's histories lack its mark, or it is not the frame's) or "evidence"."""
+    cause, (row, col), value = got
+    if not _differs(number)[row, col]:
+        return "pixel", None
+    p = _pixel(number, row, col)
+    if not (_is_cause(number, cause) and _SIGNS[cause][0](p, broken_frame(number))):
+        return "cause", p
+    kind = EVIDENCE[cause][0]
+    return ("right" if _matches(kind, value, _evidence(number, cause, p)) else "evidence"), p
 
 
 def _same(got, number, args=None) -> bool:
-    # One verdict for the whole answer (r7: a separate verdict on the stage let a student find
-    # it by trying the four, then the cause among few): counted here, once a check.
-    _TRIES[number] = _TRIES.get(number, 0) + 1
-    return _right(number, got)
-
-
-#: The stage, as the verdict recalls it (the same words after every wrong answer).
-_STAGE_MEANS = ("the stage is the first, in the pipeline's order, where the pixel's history in "
-               "this frame differs from its history in the intended frame, comparing each "
-               "triangle with the same triangle there: the same corners on screen, whatever its "
-               "number in either frame (a triangle drawn in one frame only covers nothing in "
-               "the other)")  # fmt: skip
+    return _judged(number, got)[0] == "right"
 
 
 def _explain(args, number, got) -> str:
-    tries = _TRIES.get(number, 0)
-    return (f"not right: the cause, the pixel and the stage are judged together, and which of "
-            f"them is wrong is not said ({tries} {'try' if tries == 1 else 'tries'} of frame "
-            f"{number} recorded in this session). A pixel must be one the mistake changed, "
-            f"whose history shows the cause; {_STAGE_MEANS}")  # fmt: skip
+    cause, (row, col), value = got
+    shown = value if isinstance(value, float) else tuple(round(v, 6) for v in value)
+    return f"frame {number}: {cause!r} at pixel ({row}, {col}) with {shown}"
+
+
+def _cause_words(args, number, got) -> str:
+    cause, (row, col), value = got
+    _, p = _judged(number, got)
+    words = (f"the two histories of ({row}, {col}) do not bear the mark of {cause!r} (it "
+             f"would show: {_SIGNS[cause][1]}), so the cause is another, or this pixel does "
+             "not show it")  # fmt: skip
+    real = next((c for c in CAUSES if _is_cause(number, c)), None)
+    if real is not None and p is not None:
+        kind = EVIDENCE[real][0]
+        if kind == EVIDENCE[cause][0] and _matches(kind, value, _evidence(number, real, p)):
+            words += (". Your value is in this pixel's history, read right: it is the "
+                      "evidence of another cause")  # fmt: skip
+    return words
+
+
+def _evidence_words(args, number, got) -> str:
+    cause, (row, col), _ = got
+    kind, what = EVIDENCE[cause]
+    digits = {
+        "depth": "all six decimals it prints",
+        "pair": "every digit it prints (the distance's four decimals, the depth's six)",
+    }.get(kind, "the four digits it prints")
+    return (f"the two histories of ({row}, {col}) do bear the mark of {cause!r} "
+            f"({_SIGNS[cause][1]}), but your value is not {what}, at that pixel. Read it off "
+            f"print(broken[{number}].frame.history({row}, {col}))"
+            + (f" and print(broken[{number}].intended.history({row}, {col}))"
+               if "intended" in what else "")
+            + f", with {digits}")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
     return ""
 
 
-#: No mistake is named: any wrong part gets the one verdict (:func:`_explain`).
-DIAGNOSIS_MISTAKES = (Mistake("not right", "", fits=lambda a, e, g: True),)
+def _verdict(name: str):
+    return lambda a, e, g: _judged(e, g)[0] == name
+
+
+#: What a wrong answer is told, one kind each (the module docstring says in which order).
+DIAGNOSIS_MISTAKES = (
+    Mistake("pixel", lambda a, e, g: (
+        f"frame {e} and its intended frame have the same colour at ({g[1][0]}, {g[1][1]}): "
+        "pick a pixel where the two pictures differ, whose history the mistake changed"),
+        fits=_verdict("pixel")),
+    Mistake("cause", _cause_words, fits=_verdict("cause")),
+    Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
+)  # fmt: skip
 
 
 def _thinnest(frame: Frame) -> float:
@@ -482,7 +642,7 @@ def _draw(ax, case, got):
 
 
 def frame_exercise(number: int) -> Exercise:
-    """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), stage)."""
+    """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), evidence)."""
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
         DIAGNOSIS_MISTAKES, draw=_draw,
