@@ -131,13 +131,15 @@ CAPSTONE = dict(covers=covers, barycentric=barycentric, perspective_weights=pers
                 resolve=resolve, a_buffer=a_buffer)  # fmt: skip
 
 #: A correct answer to each of issue 30's exercises, by name.
+#: The broken frames: cause, pixel and evidence as the printed histories show it (r8: a stage
+#: named by the cause passed; the evidence is a value of the pixel's own history).
 BROKEN_FRAMES = {
-    1: ("depth function", (24, 28), "depth test"),
-    2: ("culled winding", (24, 28), "culling"),
-    3: ("z-fighting", (24, 20), "depth test"),
-    4: ("missing premultiplication", (24, 20), "blending"),
-    5: ("blend order", (23, 41), "blending"),
-    6: ("sliver", (22, 40), "coverage"),  # r8: a pixel the sliver crosses, not (23, 40)
+    1: ("depth function", (24, 28), 0.026233),  # the depth shown (kept)
+    2: ("culled winding", (24, 28), 0.973767),  # the depth shown
+    3: ("z-fighting", (24, 20), 0.598993),  # the tied fragment's depth in the intended frame
+    4: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),  # the fragment colour
+    5: ("blend order", (23, 41), (0.52, 0.67, 0.91)),  # the strip's 'after', overwritten
+    6: ("sliver", (22, 40), (0.1213, 0.299992)),  # missed by, and the intended depth there
 }
 CORRECT = {
     "span": span,

@@ -1020,21 +1020,27 @@ WRONG = {
         _under_with(lambda acc, c: acc + (1 - acc[3]) * np.r_[c[:3] * c[3], c[3]]),
         "premultiplied already",
     ),  # fmt: skip
-    # broken frames (lesson 11): one verdict for the whole answer, whichever part is wrong
+    # broken frames (lesson 11): a wrong pixel, cause or evidence is told which (r8: one verdict
+    # for all three let a blind loop over the causes and stages pass)
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
-        lambda: ("z-fighting", (24, 28), "depth test"),
-        "which of them is wrong is not said",
+        lambda: ("z-fighting", (24, 28), 0.5),
+        "do not bear the mark of 'z-fighting'",
     ),  # fmt: skip
-    "frame 2 blamed on the depth function": (
+    "frame 2 blamed on the depth function, its evidence read right": (
         "broken_frame_2",
-        lambda: ("depth function", (24, 28), "culling"),
-        "which of them is wrong is not said",
+        lambda: ("depth function", (24, 28), 0.973767),
+        "read right: it is the evidence of another cause",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",
-        lambda: ("missing premultiplication", (0, 0), "blending"),
-        "which of them is wrong is not said",
+        lambda: ("missing premultiplication", (0, 0), (0.31, 0.28, 0.24)),
+        "have the same colour at (0, 0)",
+    ),  # fmt: skip
+    "frame 3, the stored depth for the intended one": (
+        "broken_frame_3",
+        lambda: ("z-fighting", (24, 20), 0.6),
+        "do bear the mark of 'z-fighting'",
     ),  # fmt: skip
 }
 
@@ -1103,9 +1109,10 @@ KINDS = {
     "premultiplied, returned straight": "returned straight",
     "premultiplied, destination again": "destination premultiplied twice",
     "premultiplied, weights swapped": "weights swapped",
-    "frame 1 blamed on z-fighting": "not right",
-    "frame 2 blamed on the depth function": "not right",
-    "frame 4, a pixel the mistake left alone": "not right",
+    "frame 1 blamed on z-fighting": "cause",
+    "frame 2 blamed on the depth function, its evidence read right": "cause",
+    "frame 4, a pixel the mistake left alone": "pixel",
+    "frame 3, the stored depth for the intended one": "evidence",
 }
 
 
@@ -1344,8 +1351,8 @@ WRONG.update({
     # broken frames: (x, y) for (row, col), a misspelt cause, a pixel off the frame
     "frame 5 pixel given as (x, y)": (
         "broken_frame_5",
-        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], "blending"),
-        "which of them is wrong is not said",
+        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], _rs.BROKEN_FRAMES[5][2]),
+        "have the same colour at (41, 23)",
     ),  # fmt: skip
     "frame 1 cause misspelt": (
         "broken_frame_1",
@@ -1354,7 +1361,7 @@ WRONG.update({
     ),  # fmt: skip
     "frame 1 pixel off the frame": (
         "broken_frame_1",
-        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100), "depth test"),
+        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100), _rs.BROKEN_FRAMES[1][2]),
         "your function returned pixel (100, 100), outside",
     ),  # fmt: skip
 })  # fmt: skip
@@ -1382,7 +1389,7 @@ KINDS.update(
         "robust fill with origin as (x, y)": "origin swapped",
         "robust fill ignoring origin": "origin ignored",
         "robust fill at pixel corners": "pixel corners",
-        "frame 5 pixel given as (x, y)": "not right",
+        "frame 5 pixel given as (x, y)": "pixel",
         "frame 1 cause misspelt": "type",
         "frame 1 pixel off the frame": "type",
     }

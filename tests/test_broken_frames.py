@@ -1,0 +1,407 @@
+"""Exercise 11, broken frames: the answer is a cause, a pixel where the frames differ and the
+evidence read off that pixel's history; a blind loop over the causes with made-up values never
+passes, a wrong pixel, cause or evidence is told which (never the wrong one), the key is not in
+the package in readable form, and the frames' hints are true without giving the answer away.
+(Moved here from test_reasoning_exercises.py, r8 must-fix 2.)"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+import reasoning_solutions as sol
+
+import teachraster as tr
+from teachraster import exercises as ex
+from teachraster.exercises import broken_frames as bf
+
+#: The key, for the tests only (the package keeps salted hashes).
+ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
+           4: "missing premultiplication", 5: "blend order", 6: "sliver"}  # fmt: skip
+STAGE = {1: "depth test", 2: "culling", 3: "depth test", 4: "blending", 5: "blending",
+         6: "coverage"}  # fmt: skip
+PAIRS = [(1, 2), (3, 4), (5, 6)]
+#: A made-up value of each kind of evidence.
+MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5)}
+NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
+
+
+def _cells():
+    nb = json.loads(NOTEBOOK.read_text())
+    return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
+
+
+def _passes(name, fn):
+    report = ex.check(name, fn)
+    assert report.passed, str(report)
+
+
+def _first(number, answer):
+    report = ex.check(f"broken_frame_{number}", lambda: answer)
+    assert not report.passed, answer
+    return report.failures[0]
+
+
+def _marks(number, row, col):
+    p, b = bf._pixel(number, row, col), ex.broken_frame(number)
+    return {c for c in bf.CAUSES if bf._SIGNS[c][0](p, b)}
+
+
+def _showing(number):
+    """The first changed pixel of frame ``number`` whose histories bear its cause's mark."""
+    return next((int(r), int(c)) for r, c in np.argwhere(bf._differs(number))
+                if ANSWERS[number] in _marks(number, int(r), int(c)))  # fmt: skip
+
+
+def _right(number, row, col):
+    """A right answer at (row, col): the first value the check derives there."""
+    value = bf._evidence(number, ANSWERS[number], bf._pixel(number, row, col))[0]
+    return ANSWERS[number], (row, col), value
+
+
+# -- the answer needs the evidence ------------------------------------------------------------
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_a_blind_loop_over_the_causes_with_made_up_values_never_passes(number):
+    """r8: 77 blind calls (every cause and stage at a changed pixel) solved all six. Now every
+    cause with a made-up value of its kind fails, at the solution's pixel and another changed
+    one, and says which part is wrong: the cause for the nine others, the evidence for the
+    frame's own (whose mark the pixel bears)."""
+    row, col = sol.BROKEN_FRAMES[number][1]
+    other = _showing(number)
+    for pixel in {(row, col), other}:
+        for cause in bf.CAUSES:
+            failure = _first(number, (cause, pixel, MADE_UP[bf.EVIDENCE[cause][0]]))
+            want = "evidence" if cause == ANSWERS[number] else "cause"
+            assert failure.kind == want, (cause, pixel, failure.explanation)
+            assert "read right" not in failure.explanation, failure.explanation
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
+    """The solution (numbers as the history prints them) passes; the right evidence under the
+    pair's other cause is told the cause is wrong and the value read right (same kind); the
+    right cause with a value off by more than the printed digits is told the evidence is
+    wrong, never the cause; a pixel where the pictures agree is told so."""
+    answer = sol.BROKEN_FRAMES[number]
+    _passes(f"broken_frame_{number}", lambda: answer)
+    cause, pixel, value = answer
+    twin = ANSWERS[next(b if a == number else a for a, b in PAIRS if number in (a, b))]
+    same_kind = bf.EVIDENCE[twin][0] == bf.EVIDENCE[cause][0]
+    failure = _first(number, (twin, pixel, value if same_kind else MADE_UP[bf.EVIDENCE[twin][0]]))
+    assert failure.kind == "cause" and f"mark of {twin!r}" in failure.explanation
+    assert ("read right" in failure.explanation) == same_kind, failure.explanation
+    off = value + 1e-3 if isinstance(value, float) else tuple(v + 1e-3 for v in value)
+    failure = _first(number, (cause, pixel, off))
+    assert failure.kind == "evidence", failure.explanation
+    assert f"do bear the mark of {cause!r}" in failure.explanation
+    assert f"history({pixel[0]}, {pixel[1]})" in failure.explanation
+    same = tuple(int(v) for v in np.argwhere(~bf._differs(number))[0])
+    failure = _first(number, (cause, same, value))
+    assert failure.kind == "pixel" and "same colour" in failure.explanation
+
+
+def test_the_evidence_needs_the_digits_the_history_prints():
+    """A depth to three decimals is not the evidence (it would make a loop over a thousand
+    values enough); a depth as printed, or exactly as the record holds it, is."""
+    kept = next(r for r in ex.broken_frame(1).frame.history(24, 28).records if r.shown)
+    assert _first(1, ("depth function", (24, 28), round(kept.depth, 3))).kind == "evidence"
+    _passes("broken_frame_1", lambda: ("depth function", (24, 28), round(kept.depth, 6)))
+    _passes("broken_frame_1", lambda: ("depth function", (np.int64(24), 28), kept.depth))
+    assert bf._TOLERANCE["depth"] < 1e-5 and bf._TOLERANCE["number"] < 1e-4
+    # one number would be a short loop for the distance: the sliver also needs the depth
+    assert bf.EVIDENCE["sliver"][0] == "pair"
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_each_changed_pixel_bears_the_mark_of_its_frames_cause_only(number):
+    """The check judges a cause by its mark at the student's pixel: on a sample of every
+    frame's changed pixels, only the frame's own cause's mark is there (frame 6: or none,
+    where the sliver does not cross the pixel), and where it is, so is its evidence."""
+    pixels = np.argwhere(bf._differs(number))
+    for r, c in pixels[:: max(1, len(pixels) // 25)]:
+        marks = _marks(number, int(r), int(c))
+        assert marks <= {ANSWERS[number]}, (number, r, c, marks)
+        if number != 6:
+            assert marks == {ANSWERS[number]}, (number, r, c)
+        if marks:
+            assert bf._evidence(number, ANSWERS[number], bf._pixel(number, int(r), int(c)))
+
+
+def test_the_answers_are_not_importable_in_readable_form():
+    """r8 11-3: ``ex.broken_frames._answer(n)`` gave the key one Tab away. Now the module is
+    no attribute of ``ex``, has no answer function, and none of its values maps a frame to
+    its cause or lists the six causes in the frames' order (the key is salted hashes)."""
+    assert not hasattr(ex, "broken_frames") and "broken_frames" not in dir(ex)
+    for name in ("_answer", "_CAUSE_OF", "_TRIES", "parts_at", "SIGNATURES", "hint"):
+        assert not hasattr(bf, name), name
+    in_order = [ANSWERS[n] for n in sorted(ANSWERS)]
+    for name, value in vars(bf).items():
+        if isinstance(value, dict):
+            assert not any(value.get(n) == ANSWERS[n] for n in ANSWERS), name
+        if isinstance(value, list | tuple):
+            texts = [v for v in value if isinstance(v, str) and v in bf.CAUSES]
+            assert texts != in_order, name
+    specs = repr(bf._SPECS) + "".join(s for s, *_ in bf._SPECS)
+    assert not any(c in specs for c in bf.CAUSES)
+    assert all(bf._is_cause(n, c) == (c == ANSWERS[n]) for n in ANSWERS for c in bf.CAUSES)
+    assert len(set(bf._KEY.values())) == 6
+
+
+def test_the_module_docstring_lists_the_mistakes_out_of_the_frames_order():
+    """r8 11-3: ``help(ex.broken_frames)`` listed the six mistakes in the frames' order."""
+    doc = " ".join(bf.__doc__.split())
+    words = ["reversed depth", "culling the wrong", "too close", "straight colours",
+             "transparent geometry drawn", "thinner than a pixel"]  # frames 1 to 6  # fmt: skip
+    at = [doc.index(w) for w in words]
+    assert at != sorted(at), at
+
+
+# -- the notebook --------------------------------------------------------------------------------
+def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
+    cells = _cells()
+    assert "sorted(ex.CAUSES.items())" in cells["setup"] and "ex.EVIDENCE" in cells["setup"]
+    intro = cells["intro"]
+    assert "**evidence**" in intro and "not drawn at all" in intro
+    assert "tells nothing" not in intro and "tries" not in intro  # r8 10b; no session counter
+    for n in ANSWERS:
+        task = cells[f"frame_{n}_task"]
+        assert "evidence the list names" in task and ANSWERS[n] not in task
+        solution = cells[f"broken_frame_{n}_solution"]
+        assert "history(" in solution, n  # the solution reads the value off the history
+
+
+def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():
+    """r8: cell 1 printed the causes in the frames' order (causes 1-6 = frames 1-6)."""
+    assert list(bf.CAUSES) == sorted(bf.CAUSES) and list(bf.EVIDENCE) == list(bf.CAUSES)
+    shown = [c for c in bf.CAUSES if c in ANSWERS.values()]
+    assert shown != [ANSWERS[n] for n in sorted(ANSWERS)]
+    with pytest.raises(Exception) as info:  # a misspelt cause lists them, in the same order
+        bf.as_diagnosis(("no such cause", (1, 1), 0.5))
+    listed = [c for c in bf.CAUSES if c in str(info.value)]
+    assert listed == sorted(listed) and len(listed) == len(bf.CAUSES)
+
+
+def test_broken_frame_texts_do_not_pair_a_task_with_its_cause():
+    """The symptoms say what is seen, never the mechanism, and frame 1's task text shares no
+    telling word with the cause list (r5: "mapping" in both gave frame 1 away)."""
+    cells = _cells()
+    tasks = {k: v.lower() for k, v in cells.items() if k.endswith("_task")}
+    for word in (r"mapping", r"reversed", r"1 − d", r"\bless\b"):
+        assert not re.search(word, tasks["frame_1_task"]), word
+        assert not re.search(word, bf.CAUSES["depth function"].lower()), word
+    symptoms = " ".join(ex.broken_frame(n).symptom.lower() for n in ANSWERS)
+    for telling in ("depth write", "dotted", "gap", "too bright", "wrong faces", "hidden",
+                    "behind", "in front", "vanish", "thin", "stripe", "glow", "dash"):  # fmt: skip
+        assert telling not in symptoms, telling
+    for key, gloss in bf.CAUSES.items():  # a cause, never the symptom it leaves
+        for telling in ("vanish", "shows only", "stripe", "dark", "bright", "missing"):
+            assert telling not in gloss, (key, gloss)
+
+
+# -- the frames ----------------------------------------------------------------------------------
+def _strings(value, depth=0, seen=None):
+    """Every text reachable from ``value``'s public attributes, dict values and items."""
+    seen = set() if seen is None else seen
+    if id(value) in seen or depth > 6 or isinstance(value, np.ndarray | int | float):
+        return
+    seen.add(id(value))
+    if isinstance(value, str):
+        yield value
+        return
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from _strings(k, depth + 1, seen)
+            yield from _strings(v, depth + 1, seen)
+        return
+    if isinstance(value, tuple | list | frozenset | set):
+        for v in value:
+            yield from _strings(v, depth + 1, seen)
+        return
+    yield repr(value) if type(value).__repr__ is not object.__repr__ else ""
+    for name in dir(value):
+        if name.startswith("_") or name in ("cache",):
+            continue
+        try:
+            attr = getattr(value, name)
+        except Exception:
+            continue
+        if not callable(attr):
+            yield from _strings(attr, depth + 1, seen)
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_broken_frame_objects_students_get_do_not_carry_the_answer(number):
+    """The frame, the intended frame and the symptom only; no public attribute, repr or
+    __dict__ value names the cause; both frames rendered with the same settings."""
+    b = ex.broken_frame(number)
+    public = {a for a in dir(b) if not a.startswith("_")}
+    assert public == {"number", "symptom", "frame", "intended"}, public
+    texts = " ".join([repr(b), str(b), *map(repr, vars(b).values()), *_strings(b)]).lower()
+    cause = ANSWERS[number]
+    for telling in {cause, cause.replace("-", " "), cause.replace(" ", "_")}:
+        assert telling not in texts, telling
+
+    def settings(frame):
+        i, blend = frame.trace.debug.inputs, frame.trace.debug.blend
+        return (i.width, i.height, i.depth_test, i.cull, i.depth_format, i.interpolation,
+                i.subpixel_bits, frame.samples is None, blend.mode, blend.color_format,
+                tuple(blend.clear_color))  # fmt: skip
+
+    assert settings(b.frame) == settings(b.intended)
+    assert str(b.frame.plan) == str(b.intended.plan) == bf.WITHHELD
+    with pytest.raises(KeyError, match="withheld"):
+        b.frame.plan["culling"]
+
+
+def test_broken_frames_come_in_look_alike_pairs_told_apart_only_by_their_histories():
+    for a, b in PAIRS:
+        one, two = ex.broken_frame(a), ex.broken_frame(b)
+        assert one.symptom == two.symptom
+        assert np.array_equal(bf._rgb(one.frame), bf._rgb(two.frame))
+        assert np.array_equal(bf._rgb(one.intended), bf._rgb(two.intended))
+        assert not np.array_equal(bf._rgb(one.frame), bf._rgb(one.intended))
+        assert {bf._parts_at(n, *_showing(n)) for n in (a, b)} == {STAGE[a], STAGE[b]}
+    assert not ex.broken_frame(1).frame.trace.culled.any()
+    assert ex.broken_frame(2).frame.trace.culled.any()
+
+
+def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
+    """r8: 36 of the 96 changed pixels lie in the sliver's bounding box only. Each pixel that
+    bears its mark holds a point of the sliver (found by sampling its edges densely, not by
+    the check's own test), and (23, 40) is refused."""
+    frame = ex.broken_frame(6).frame
+    xy = frame.trace.window[int(np.argmin(bf._altitudes(frame))), :, :2]
+    t = np.linspace(0, 1, 200_001)[:, None]  # along its three edges: it is 0.1 px thick
+    points = np.concatenate([a + t * (b - a) for a, b in zip(xy, np.roll(xy, -1, axis=0))])
+    crossed = {(int(y), int(x)) for x, y in points}
+    marked = {(int(r), int(c)) for r, c in np.argwhere(bf._differs(6))
+              if "sliver" in _marks(6, int(r), int(c))}  # fmt: skip
+    assert marked and marked <= crossed, sorted(marked - crossed)
+    assert (22, 40) in marked and (23, 40) not in marked
+    assert _first(6, ("sliver", (23, 40), (0.78, 0.3))).kind == "cause"
+
+
+def test_broken_frame_5_compares_triangles_by_their_corners_not_their_records():
+    """r7: at (20, 31) of frame 5 the first records differ (the strip is drawn first, so
+    triangle 0 is another triangle in each frame), yet the histories first part at blending."""
+    b = ex.broken_frame(5)
+    first = [h.records[0].outcome for h in (b.frame.history(20, 31), b.intended.history(20, 31))]
+    assert first == ["not_covered", "passed"]
+    assert bf._parts_at(5, 20, 31) == "blending"
+    _passes("broken_frame_5", lambda: _right(5, 20, 31))
+
+
+def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
+    one = ex.broken_frame(1)
+    row, col = _showing(1)
+    rec = [r for r in one.frame.history(row, col).records
+           if r.outcome in ("passed", "failed_depth")]  # fmt: skip
+    kept = [r for r in rec if r.shown][0]
+    assert all(kept.depth < r.depth for r in rec if r.outcome == "failed_depth")
+    meant = {r.triangle: r.depth for r in one.intended.history(row, col).records
+             if r.outcome in ("passed", "failed_depth")}  # fmt: skip
+    assert meant[kept.triangle] == max(meant.values())  # the farther surface, as meant
+    assert "farther surface" in bf.CAUSES["depth function"]
+    six = ex.broken_frame(6)
+    assert bf._thinnest(six.frame) < 0.2 and bf._thinnest(six.intended) > 1
+    assert not (six.frame.triangle_id == 2).any()
+    assert "modelled thinner" in bf.CAUSES["sliver"]
+    assert six.frame.samples is None and six.intended.samples is None
+    assert "stitches" in bf.CAUSES["z-fighting"]  # r8 11-6: the name's pattern, said
+
+
+def test_broken_frames_3_to_6_draw_their_glass_without_depth_writes():
+    b = ex.broken_frame(5)
+    records = [r for r in b.frame.history(23, 41).records if r.outcome != "not_covered"]
+    glass = [r for r in records if r.color and r.color[3] < 1]
+    assert glass and not any(r.depth_write for r in glass)
+    assert all(r.outcome == "passed" for r in records)
+    four = ex.broken_frame(4)
+    pane = [r.color for r in four.frame.history(24, 20).records if r.color and r.color[3] < 1]
+    meant = [r.color for r in four.intended.history(24, 20).records
+             if r.color and r.color[3] < 1]  # fmt: skip
+    assert np.allclose(np.array(meant[0][:3]), np.array(pane[0][:3]) * pane[0][3])
+
+
+# -- the form of an answer -----------------------------------------------------------------------
+def test_broken_frame_answers_are_read_strictly():
+    def said(answer):
+        report = ex.check("broken_frame_1", lambda: answer)
+        assert report.failures[0].kind == "type", str(report)
+        return report.failures[0].explanation
+
+    assert "not one of the causes" in said(("the depth", (3, 4), 0.5))
+    assert "only the cause" in said("depth function")
+    assert "without the evidence" in said(("depth function", (24, 28)))
+    assert "outside" in said(("depth function", (99, 4), 0.5))
+    assert "row 24.7 is not an integer" in said(("depth function", (24.7, 31.2), 0.5))
+    assert "col is a bool" in said(("depth function", (24, True), 0.5))
+    stage = said(("depth function", (24, 28), "depth test"))  # r8's answer form
+    assert "returned the stage 'depth test' as the evidence" in stage, stage
+    assert "one number" in said(("depth function", (24, 28), (0.1, 0.2, 0.3)))
+    assert "three or four numbers" in said(("missing premultiplication", (24, 20), 0.4))
+    assert "two numbers" in said(("sliver", (22, 40), 0.12))
+    assert "one number" in said(("depth function", (24, 28), float("nan")))
+    assert "one number" in said(("depth function", (24, 28), True))
+
+
+def test_broken_frame_cause_alone_reads_plainly():
+    said = ex.check("broken_frame_1", lambda: "depth function").failures[0].explanation
+    assert "only the cause" in said and "(cause, (row, col), evidence)" in said, said
+    assert "not a string" not in said, said
+
+
+def test_broken_frame_numbers_are_checked():
+    assert ex.broken_frame(np.int64(3)).number == 3
+    with pytest.raises(TypeError, match="number must be an int"):
+        ex.broken_frame(True)
+    with pytest.raises(TypeError, match="number must be an int"):
+        ex.broken_frame(3.0)
+    with pytest.raises(ValueError, match="1 to 6"):
+        ex.broken_frame(7)
+
+
+def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_title():
+    """r7 11-10: the pixel was marked on the broken frame only, and the title was cut."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("broken_frame_5", lambda: ("blend order", (20, 31), (0.1, 0.2, 0.3)))
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.plot(ax)
+    xs = sorted(min(line.get_xdata()) for line in ax.lines)
+    assert xs == [31, 31 + bf.W + 12], xs
+    assert ax.get_title() == "broken_frame_5 fails: the diagnosis", ax.get_title()
+    plt.close(fig)
+
+
+def test_the_frame_inspector_shows_the_broken_frames():
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    frames = ex.frames_to_inspect()
+    assert list(frames)[:4] == ["frame 1", "intended 1", "frame 2", "intended 2"]
+    assert frames["intended 5"] is ex.broken_frame(5).intended and len(frames) == 12
+    w = FrameInspector(frames=frames, backend="image")
+    try:
+        assert list(w.scene.options) == list(frames) and w.frame is frames["frame 1"]
+        assert w.samples.disabled and w.glass.disabled and not w.scene.disabled
+        w.scene.value = "frame 2"
+        w.click_at(30.5, 20.5)
+        assert w.history.outcomes == frames["frame 2"].history(20, 30).outcomes
+        assert "culled" in w.table.value
+        w.scene.value = "intended 2"
+        w.click_at(30.5, 20.5)
+        assert w.history.outcomes == frames["intended 2"].history(20, 30).outcomes
+    finally:
+        w.close()
+    untraced = tr.render(tr.get_scene("cube").clip(4 / 3), 8, 6)
+    with pytest.raises(ValueError, match="trace=True"):
+        FrameInspector(frames={"a": untraced})
+    with pytest.raises(TypeError, match="non-empty dict"):
+        FrameInspector(frames={})
