@@ -405,3 +405,21 @@ def test_the_frame_inspector_shows_the_broken_frames():
         FrameInspector(frames={"a": untraced})
     with pytest.raises(TypeError, match="non-empty dict"):
         FrameInspector(frames={})
+
+
+def test_the_passing_figure_marks_the_accepted_pixel_of_its_own_report():
+    """r8 11-9: the passing figure marked nothing. It marks the pixel of the answer its own
+    report accepted (a later check with another pixel does not move it)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    first = ex.check("broken_frame_5", lambda: _right(5, 20, 31))
+    ex.check("broken_frame_5", lambda: sol.BROKEN_FRAMES[5])
+    assert first.passed
+    fig, ax = plt.subplots(figsize=(7, 4))
+    first.plot(ax)
+    xs = sorted(min(line.get_xdata()) for line in ax.lines)
+    assert xs == [31, 31 + bf.W + 12], xs
+    plt.close(fig)

@@ -527,8 +527,15 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int], object]:
     return cause, (row, col), _as_evidence(cause, evidence)
 
 
+class _Number(int):
+    """A frame's number as its case's expected answer, holding the answer the check accepted
+    (``right``): the passing figure marks its pixel (r8 11-9), one report at a time."""
+
+    right = None
+
+
 def _cases(number: int):
-    return lambda: [("the diagnosis", (), number)]  # one case: a short title (r7 11-10)
+    return lambda: [("the diagnosis", (), _Number(number))]  # one case: a short title (r7)
 
 
 @lru_cache(maxsize=256)  # the figure and the words read the verdict again
@@ -546,7 +553,10 @@ def _judged(number: int, got) -> tuple[str, _Pixel | None]:
 
 
 def _same(got, number, args=None) -> bool:
-    return _judged(number, got)[0] == "right"
+    right = _judged(int(number), got)[0] == "right"
+    if right and isinstance(number, _Number):
+        number.right = got
+    return right
 
 
 def _explain(args, number, got) -> str:
@@ -557,7 +567,7 @@ def _explain(args, number, got) -> str:
 
 def _cause_words(args, number, got) -> str:
     cause, (row, col), value = got
-    _, p = _judged(number, got)
+    _, p = _judged(int(number), got)
     words = (f"the two histories of ({row}, {col}) do not bear the mark of {cause!r} (it "
              f"would show: {_SIGNS[cause][1]}), so the cause is another, or this pixel does "
              "not show it")  # fmt: skip
@@ -621,7 +631,9 @@ def _altitudes(frame: Frame) -> np.ndarray:
 def _draw(ax, case, got):
     """The broken frame with the chosen pixel marked, and the intended one beside it in the
     same axes (an inset outside the axes would be clipped by the figure's edge)."""
-    number = case[2]
+    number = int(case[2])
+    if isinstance(got, _Number):  # the passing example: the answer accepted, if any
+        got = got.right
     b = broken_frame(number)
     gap = 12  # px between the two pictures: room for their tick labels
     artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest"),
