@@ -410,9 +410,9 @@ def _evidence(number: int, cause: str, p: _Pixel) -> list:
         return [r.depth for r in p.meant.records
                 if r.outcome == "passed" and _key(b.intended, r.piece) in tied]  # fmt: skip
     if cause == "missing premultiplication":
-        meant = dict(_blended(b.intended, p.meant))
-        return [r.color for r in mine if r.outcome == "passed"
-                and meant.get(_key(b.frame, r.piece)) != tuple(np.round(r.color, 6).tolist())]  # fmt: skip
+        meant, blended = dict(_blended(b.intended, p.meant)), _blended(b.frame, p.mine)
+        passed = [r for r in mine if r.outcome == "passed"]  # in the order of ``blended``
+        return [r.color for r, (k, c) in zip(passed, blended) if meant.get(k) != c]
     if cause == "blend order":
         return [r.color_after for r in mine
                 if r.outcome == "passed" and r.color[3] < 1 and r.hidden_by >= 0]  # fmt: skip
