@@ -61,9 +61,10 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
     return out
 
 
-#: A premultiplied colour with alpha 0 and light in it: it covers nothing and adds its light
-#: (Blinn, "Compositing, part 1", 1994: premultiplied over blends additively there). No
-#: straight colour holds it, so a solution that divides by alpha to reuse 9.2a loses it.
+#: A premultiplied colour with alpha 0 and light in it (a "superluminous" colour: a channel
+#: above its alpha): premultiplied over, src + (1 − α_s)·dst, holds for any α_s, so it covers
+#: nothing and adds its light (additive blending with no change of blend mode). No straight
+#: colour holds it, so a solution that divides by alpha to reuse 9.2a loses it.
 GLOW = (0.3, 0.2, 0.05, 0.0)
 
 
