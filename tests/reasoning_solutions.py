@@ -107,10 +107,14 @@ def hiz_rejects(xyz, row0, col0, size, buffer):
 
 
 def front_to_back(layers):
+    """Nearest first over the one-pass layers, stopping once opaque (nothing behind shows)."""
     colour, alpha = np.zeros(3), 0.0
-    for layer in np.asarray(layers, dtype=float).reshape(-1, 4):
+    for layer in layers:
+        layer = np.asarray(layer, dtype=float)
         colour += (1 - alpha) * layer[:3]
         alpha += (1 - alpha) * layer[3]
+        if alpha >= 1:
+            break
     return np.array([*colour, alpha])
 
 

@@ -647,10 +647,15 @@ def _hiz_with(compare=lambda near, buffer: near >= np.max(buffer), vertex_only=F
 
 
 def _under_with(step):
+    """A nearest-first walk over the one-pass layers, stopping once the alpha reaches 1 (tested
+    at the top of the loop: it fetches one layer more, which the check allows)."""
+
     def front_to_back(layers):
         acc = np.zeros(4)
-        for c in np.asarray(layers, dtype=float).reshape(-1, 4):
-            acc = step(acc, c)
+        for c in layers:
+            if acc[3] >= 1:
+                break
+            acc = step(acc, np.asarray(c, dtype=float))
         return acc
 
     return front_to_back
@@ -661,9 +666,10 @@ def _under(acc, c):
 
 
 def front_to_back_by_reversing(layers):
-    """Over, from the farthest layer to the nearest, onto transparent black."""
+    """Over, from the farthest layer to the nearest, onto transparent black (r8: passed while
+    the layers were an array; the one-pass layers make it read behind an opaque one)."""
     out = np.zeros(4)
-    for c in np.asarray(layers, dtype=float).reshape(-1, 4)[::-1]:
+    for c in np.asarray(list(layers), dtype=float).reshape(-1, 4)[::-1]:
         out = c + (1 - c[3]) * out
     return out
 
@@ -718,7 +724,6 @@ DIFFERENT = {
     "robust fill, vectorised": ("robust_fill", _fill_with()),
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
-    "front to back by reversing": ("front_to_back", front_to_back_by_reversing),
     "front to back, under": ("front_to_back", _under_with(_under)),
     "numpy over_premultiplied": (
         "over_premultiplied",
@@ -890,9 +895,9 @@ WRONG = {
         "returns 'partial' on every case",
     ),  # fmt: skip
     # line_pixels
-    "line without ε": ("line_pixels", line_with(0, 0), "did not perturb"),
+    "line without ε": ("line_pixels", line_with(0, 0), "did not move the end points"),
     "line with +ε²": ("line_pixels", line_with(-EPS, EPS * EPS), "+ε²"),
-    "line without ε² in y": ("line_pixels", line_with(-EPS, 0), "left y as it is"),
+    "line without ε² in y": ("line_pixels", line_with(-EPS, 0), "you did not move y"),
     "line in (col, row)": ("line_pixels", line_with(-EPS, -EPS * EPS, "col row"), "(col, row)"),
     "line returns nothing": ("line_pixels", returns([]), "for every line"),
     # over
@@ -1181,13 +1186,15 @@ def quad_float32(xy, w, f, row, col):
 
 def layers_float32(layers):
     acc = np.zeros(4, dtype=np.float32)
-    for c in np.asarray(layers, dtype=np.float32).reshape(-1, 4):
-        acc = acc + (np.float32(1) - acc[3]) * c
+    for c in layers:
+        if acc[3] >= 1:
+            break
+        acc = acc + (np.float32(1) - acc[3]) * np.asarray(c, dtype=np.float32)
     return acc
 
 
 def layers_vectorised(layers):
-    c = np.asarray(layers, dtype=float).reshape(-1, 4)
+    c = np.asarray(list(layers), dtype=float).reshape(-1, 4)
     seen = np.concatenate([[1.0], np.cumprod(1 - c[:, 3])[:-1]])  # transmittance in front
     return (seen[:, None] * c).sum(axis=0) if len(c) else np.zeros(4)
 
@@ -1223,7 +1230,6 @@ DIFFERENT.update({
     "safe near in float32": ("safe_near", near_float32),
     "quad derivatives in float32": ("quad_derivatives", quad_float32),
     "front to back in float32": ("front_to_back", layers_float32),
-    "front to back, vectorised transmittance": ("front_to_back", layers_vectorised),
     "line pixels as a set": ("line_pixels", lambda p0, p1: set(_line(p0, p1))),
     "Hi-Z as np.bool_": ("hiz_rejects", lambda *a: np.bool_(_rs.hiz_rejects(*a))),
     "robust fill as 0/1 ints": ("robust_fill", lambda *a: _rs.robust_fill(*a).astype(int)),
@@ -1311,9 +1317,19 @@ WRONG.update({
     # front_to_back: the farthest layer alone, each layer's own alpha
     "layers, the farthest alone": (
         "front_to_back",
-        lambda layers: np.asarray(layers, float).reshape(-1, 4)[-1]
-        if len(layers) else np.zeros(4),
+        lambda layers: ([np.zeros(4)] + list(layers))[-1],
         "farthest layer",
+    ),  # fmt: skip
+    # r8: a loop from the farthest layer passed; a vectorised one reads every layer too
+    "front to back by reversing": (
+        "front_to_back",
+        front_to_back_by_reversing,
+        "A loop that runs from the farthest layer (the layers reversed)",
+    ),  # fmt: skip
+    "front to back, vectorised transmittance": (
+        "front_to_back",
+        layers_vectorised,
+        "nothing behind it can show",
     ),  # fmt: skip
     "layers weighed by their own alpha": (
         "front_to_back",
@@ -1384,6 +1400,8 @@ KINDS.update(
         "Hi-Z against the tile's mean": "tile mean",
         "Hi-Z with row and column swapped": "row col swapped",
         "layers, the farthest alone": "farthest only",
+        "front to back by reversing": "read behind the opaque layer",
+        "front to back, vectorised transmittance": "read behind the opaque layer",
         "layers weighed by their own alpha": "own alpha",
         "robust fill returns zeros": "nothing covered",
         "robust fill with origin as (x, y)": "origin swapped",

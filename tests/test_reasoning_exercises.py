@@ -291,13 +291,15 @@ def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors
             for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "glBlendFunc(ONE"):
                 assert answer not in f.explanation, f.explanation
     last = ex.check("over_premultiplied", tries[-1]).failures[0].explanation
-    assert "multiplied through by the result's alpha" in last, last
+    assert "your 9.2a with src and dst written as c = α·C" in last, last
     nb = json.loads(Path(__file__).parents[1].joinpath(
         "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
     task = next("".join(c["source"]) for c in nb["cells"]
                 if c["metadata"]["nbgrader"]["grade_id"] == "over_premultiplied_task")  # fmt: skip
-    assert "straight" in task and "α_d·(1 − α_s)" in task
-    for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "c_s + c_d", "GL_ONE"):
+    # r8: the task gives the coverage argument, not the straight form's formula to transcribe
+    assert "straight" in task and "1 − α_s" in task and "divided by α" in task
+    for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "c_s + c_d", "GL_ONE", "α_d·(1 − α_s)",
+                   "α_s + α_d"):  # fmt: skip
         assert answer not in task, answer
 
 
@@ -312,15 +314,16 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
         "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
     text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
     task = text["over_premultiplied_task"]
-    assert "straight-alpha form" in task and "give *over* for **straight**" not in task
+    assert "Porter and Duff" in task and "give *over* for **straight**" not in task
     assert "over_to_premultiplied(src, dst)" in task and "lesson 12, §9" not in task
     assert "over_to_premultiplied_check" in text and "over_premultiplied_step" in text
     said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))
-    assert "straight-alpha form of over" in said and "Porter and Duff's rule" not in said, said
+    assert "your 9.2a with src and dst" in said and "Porter and Duff's rule" not in said, said
     lesson = json.loads(Path(__file__).parents[1].joinpath(
         "notebooks/12_lines_and_blending.ipynb").read_text())  # fmt: skip
     printed = " ".join("".join(c["source"]) for c in lesson["cells"])
-    assert "over_to_premultiplied" not in printed
+    # the Summary names the exercise's functions (r8); no cell defines or computes it
+    assert "def over_to_premultiplied" not in printed and "over_to_premultiplied(" not in printed
     from teachraster.exercises.blending import from_straight
 
     src, dst = [0.2, 0.4, 0.6, 0.5], [1.0, 0.5, 0.0, 0.5]

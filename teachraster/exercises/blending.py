@@ -2,8 +2,14 @@
 ``over_premultiplied(src, dst)`` of lesson 12: the blend equation.
 
 ``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
-the premultiplied result: the derivation exercise 9.2 asks for, which lesson 12 does not print
-(it prints the rule on premultiplied inputs).
+the premultiplied result: the derivation exercise 9.2 asks for from Porter and Duff's coverage
+argument, which lesson 12 does not print (it prints the rule on premultiplied inputs); both
+alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
+glow (alpha 0, light in it), which no straight colour holds: a solution that divides by alpha
+to reuse 9.2a loses it, and is named.
+
+Explanations print both colours with one number format (:func:`colour_texts`); the figure
+shows src and dst as swatches, and the expected blend only beside an answer.
 
 The expected colours come from the core: :func:`teachraster.blend_equation` with the factor
 pairs of ``render(..., blend="over" | "premultiplied")``. Each mistake is a wrong blend the
@@ -17,7 +23,7 @@ import numpy as np
 from ..core.blend_factors import BLEND_MODES, blend_equation
 from .answers import as_numbers
 from .exercise import Exercise, Mistake, PackageAnswer
-from .scalars import vec
+from .scalars import NOISE, vec
 from .tolerance import all_close
 
 SEED = 20241126
@@ -48,30 +54,69 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
             out.append((label, (src, dst), from_straight(src, dst)))
             continue
         out.append((label, (src, dst), blend_equation(src, dst, *BLEND_MODES[mode])))
+    if mode == "premultiplied":  # what no straight colour holds: 9.2b's case to reason about
+        src, dst = np.array(GLOW), np.array([0.25, 0.25, 0.5, 0.5])
+        out.insert(5, ("a glow (light, alpha 0) over half blue", (src, dst),
+                       blend_equation(src, dst, *BLEND_MODES[mode])))  # fmt: skip
     return out
+
+
+#: A premultiplied colour with alpha 0 and light in it (a "superluminous" colour: a channel
+#: above its alpha): premultiplied over, src + (1 − α_s)·dst, holds for any α_s, so it covers
+#: nothing and adds its light (additive blending with no change of blend mode). No straight
+#: colour holds it, so a solution that divides by alpha to reuse 9.2a loses it.
+GLOW = (0.3, 0.2, 0.05, 0.0)
 
 
 def _rgba(value) -> np.ndarray:
     return as_numbers(value, (4,), "an RGBA colour, shape (4,)")
 
 
+def colour_texts(expected, got) -> tuple[str, str]:
+    """Two RGBA colours, printed alike: each value with the same number of decimals in both
+    (exact when 5 suffice, else the fewest that tell every two values apart), so that one
+    value never prints two ways and two values never print alike (r8: 0.4375 was printed
+    "0.4375" in one colour and "0.438" in the other).
+
+    >>> colour_texts([0.1875, 0.4375, 0.1875, 0.625], [0.1875, 0.4375, 0.1875, 0.4375])
+    ('(0.1875, 0.4375, 0.1875, 0.625)', '(0.1875, 0.4375, 0.1875, 0.4375)')
+    >>> colour_texts([0.3, 0.12345678], [0.3, 0.12345679])
+    ('(0.3, 0.12345678)', '(0.3, 0.12345679)')
+    """
+    e, g = np.asarray(expected, float).ravel(), np.asarray(got, float).ravel()
+    values = [x for x in np.r_[e, g] if np.isfinite(x)]
+
+    def text(x, d):
+        if not np.isfinite(x):
+            return repr(float(x))
+        t = f"{x:.{d}f}".rstrip("0").rstrip(".")
+        return "0" if t in ("", "-0") else t
+
+    def tells_apart(d):
+        return all(text(x, d) != text(y, d) for x in values for y in values
+                   if abs(x - y) > NOISE * max(1.0, abs(x), abs(y)))  # fmt: skip
+
+    exact = next((d for d in range(3, 6) if all(float(text(x, d)) == x for x in values)), None)
+    digits = exact or next((d for d in range(3, 17) if tells_apart(d)), 17)
+    return tuple("(" + ", ".join(text(x, digits) for x in v) + ")" for v in (e, g))
+
+
 def explain_blend(args, expected, got) -> str:
     src, dst = args
-    return (
-        f"src = {vec(src)}, dst = {vec(dst)}: the blend is {vec(expected, got)}; yours is "
-        f"{vec(got, expected)}"
-    )
+    want, yours = colour_texts(expected, got)
+    return f"src = {vec(src)}, dst = {vec(dst)}: the blend is {want}; yours is {yours}"
 
 
 #: The premultiplied rule as exercise 9.2 asks for it: derived, so the explanation of a wrong
-#: answer says how to derive it, never the factors to type (that would be the answer).
-#: (Porter and Duff, 1984, work in premultiplied colours themselves: the divided rule for
-#: straight colours is a later rewriting, "the straight-alpha form of over".)
-_DERIVE = (": the straight-alpha form of over, with src and dst written as c = α·C, "
-           "multiplied through by the result's alpha, on all four channels")  # fmt: skip
-_FROM_STRAIGHT = (": the straight-alpha form of over multiplied through by the result's alpha: "
-                  "each colour weighted by how much of it is seen, alpha as what either "
-                  "covers")  # fmt: skip
+#: answer says how to derive it, never the factors to type (that would be the answer). The
+#: task gives Porter and Duff's coverage argument (Compositing Digital Images, 1984), not a
+#: formula (r8: stating the straight form down to its numerator made 9.2a a transcription).
+_DERIVE = (": your 9.2a with src and dst written as c = α·C (each already carries its "
+           "alpha), on all four channels")  # fmt: skip
+_FROM_STRAIGHT = (": each colour counts in the share of the pixel where it shows (the source "
+                  "in α_s, the destination in α_d of the 1 − α_s the source leaves), the "
+                  "result's alpha is the share either covers, and the answer is premultiplied, "
+                  "the colour times that alpha")  # fmt: skip
 
 
 def _rule(mode: str):
@@ -163,6 +208,14 @@ PREMULTIPLIED = [
     ("premultiplied twice", "you multiplied the source colour by its alpha again, but it is "
      "premultiplied already (the dark fringe): it already carries its alpha",
      lambda s, d: _colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
+    # r8: the most natural slip after 9.2a, and the destination's own alpha as its weight
+    ("9.2a reused", "you applied 9.2a's over_to_premultiplied to premultiplied colours: it "
+     "multiplies each colour by its alpha, and these carry it already (c = α·C), so src and "
+     "dst are both multiplied by their alpha twice (the dark fringe)",
+     lambda s, d: from_straight(s, d)),
+    ("destination's own alpha", "you weighted the destination by 1 − its own alpha: what "
+     "shows of it is the share the source leaves uncovered, 1 − α_s",
+     lambda s, d: _scaled(s, d, 1, 1 - d[3])),
 ]  # fmt: skip
 
 
@@ -205,9 +258,80 @@ FROM_STRAIGHT = [
      lambda s, d: _premultiply(s) + _premultiply(d)),
     ("source unchanged", "that is the source unchanged: it is blended over the destination, "
      "weighted by its alpha", lambda s, d: np.asarray(s, dtype=float)),
-    ("kept source alpha", "the alpha channel blends too: the result's alpha is what either "
-     "covers, not the source's", lambda s, d: np.r_[from_straight(s, d)[:3], s[3]]),
+    ("multiplied by alpha twice", "you multiplied by the result's alpha twice: the colours "
+     "added up, each weighted by how much of it is seen, are already the premultiplied colour "
+     "α·C", lambda s, d: _times_alpha(from_straight(s, d))),
 ]  # fmt: skip
+
+
+def _times_alpha(c) -> np.ndarray:
+    return np.r_[c[:3] * c[3], c[3]]
+
+
+#: Colour right, alpha wrong (r8: these got the generic sentence): the alpha each slip gives.
+_RIGHT_COLOUR = "your red, green and blue are right, your alpha is not: "
+ALPHAS = [
+    ("alpha summed", "you added the two alphas; the destination covers only its share α_d of "
+     "what the source leaves uncovered", lambda s, d: s[3] + d[3]),
+    ("alpha squared", "you weighted the source's alpha by itself, α_s·α_s, as GL's straight "
+     "blend does on the fourth channel; the source covers α_s of the pixel",
+     lambda s, d: s[3] * s[3] + d[3] * (1 - s[3])),
+    ("alpha of the source", "you kept the source's alpha; where it leaves the pixel uncovered "
+     "the destination covers some of it too", lambda s, d: s[3]),
+    ("alpha of the destination", "you kept the destination's alpha; the source covers its "
+     "share α_s of the pixel first", lambda s, d: d[3]),
+]  # fmt: skip
+
+
+def _alpha_mistakes(right) -> list[Mistake]:
+    """The colour ``right(src, dst)`` gives with each wrong alpha of :data:`ALPHAS`, then the
+    symptom for any other alpha."""
+
+    def gives(alpha):
+        return lambda s, d: np.r_[
+            right(s, d)[:3], alpha(np.asarray(s, float), np.asarray(d, float))
+        ]
+
+    def colour_right(args, expected, got):
+        g = np.asarray(got, float)
+        return all_close(g[:3], expected[:3], 1e-6) and not all_close(g[3:], expected[3:], 1e-6)
+
+    out = [Mistake(k, _RIGHT_COLOUR + w, gives=gives(a)) for k, w, a in ALPHAS]
+    words = _RIGHT_COLOUR + "the result's alpha is the share of the pixel src or dst covers"
+    return out + [Mistake("alpha only", words, fits=colour_right, symptom=True)]
+
+
+def _unpremultiplied(src, dst):
+    """9.2a reused after dividing by alpha (0 where alpha is 0): a glow's light is lost."""
+
+    def straight(c):
+        c = np.asarray(c, float)
+        return np.r_[np.divide(c[:3], c[3], out=np.zeros(3), where=c[3] > 0), c[3]]
+
+    return from_straight(straight(src), straight(dst))
+
+
+def _is_glow(c) -> bool:
+    return c[3] == 0 and bool((np.asarray(c[:3]) > 0).any())
+
+
+def _glow_lost(args, expected, got) -> bool:
+    """A glow (alpha 0, light in it) and a NaN answer: divided by its alpha."""
+    return _is_glow(args[0]) and bool(np.isnan(np.asarray(got, float)).any())
+
+
+def _zero_divided(args, expected, got) -> bool:
+    """An input with alpha 0 (no glow) and a NaN answer: 0/0 from dividing by alpha."""
+    src, dst = args
+    zero = src[3] == 0 or dst[3] == 0
+    return zero and not _is_glow(src) and bool(np.isnan(np.asarray(got, float)).any())
+
+
+def _glow_words(args, expected, got) -> str:
+    return (f"src {vec(args[0])} is a glow: premultiplied light with alpha 0, covering nothing. "
+            "No straight colour holds it, so dividing by alpha (to reuse 9.2a on straight "
+            "colours) loses its light or divides by zero; blended premultiplied, as it is, "
+            "its light adds to the destination")  # fmt: skip
 
 
 def _mistakes(mode: str) -> list[Mistake]:
@@ -216,36 +340,96 @@ def _mistakes(mode: str) -> list[Mistake]:
                    "is the incoming fragment, the second, dst, what the buffer holds",
                    lambda s, d: from_straight(d, s))  # fmt: skip
         nan = Mistake("division by zero", "both alphas 0: the result is transparent black, not "
-                      "a division by zero (nothing covers the pixel; multiplied through by the "
-                      "result's alpha, nothing is left to divide)", fits=_divided_by_zero)  # fmt: skip
-        return [nan, *(Mistake(k, w, gives=g) for k, w, g in FROM_STRAIGHT + [swapped])]
+                      "a division by zero (nothing covers the pixel, so α·C is 0: the premultiplied "
+                      "answer needs no division)", fits=_divided_by_zero)  # fmt: skip
+        table = [Mistake(k, w, gives=g) for k, w, g in FROM_STRAIGHT + [swapped]]
+        return [nan, *table, *_alpha_mistakes(from_straight)]
     table = (OVER if mode == "over" else PREMULTIPLIED) + COMMON
     factors = BLEND_MODES[mode]
     swapped = ("arguments swapped", "you blended dst over src: the first argument, src, is "
                "the incoming fragment, the second, dst, what the buffer holds",
                lambda s, d: blend_equation(d, s, *factors))  # fmt: skip
-    return [Mistake(kind, words, gives=gives) for kind, words, gives in table + [swapped]]
+    out = [Mistake(kind, words, gives=gives) for kind, words, gives in table + [swapped]]
+    if mode == "premultiplied":
+        zero = (
+            "an input has alpha 0: dividing by it to get a straight colour back is 0/0; "
+            "premultiplied colours blend as they are, with no division"
+        )
+        out = [Mistake("glow lost", _glow_words, gives=_unpremultiplied),
+               Mistake("glow lost", _glow_words, fits=_glow_lost),
+               Mistake("divided by alpha", zero, fits=_zero_divided), *out]  # fmt: skip
+        out += _alpha_mistakes(lambda s, d: blend_equation(s, d, *factors))
+    return out
 
 
 def _exercise(name: str, mode: str) -> Exercise:
     return Exercise(
         name, lambda: blend_cases(mode), _rgba, lambda g, e, a: all_close(g, e, 1e-6),
         explain_blend, _rule(mode), _mistakes(mode), answers=(PackageAnswer(blend_equation),),
-        draw=_draw_blend,
+        draw=_blend_drawer(mode),
     )  # fmt: skip
 
 
-def _draw_blend(ax, case, got):
-    from .drawing import draw_values
+def swatches(ax, cells, names, straight=()):
+    """RGBA colours as swatches over a checkerboard, each named with its four numbers below.
 
-    return draw_values(ax, ["R", "G", "B", "A"], case[2], got)
+    ``cells`` are premultiplied, except those whose index is in ``straight``. Returns the
+    artists.
+    """
+    check = (np.indices((8, 8)).sum(axis=0) % 2)[..., None] * 0.3 + 0.6
+    artists = []
+    for k, c in enumerate(cells):
+        c = np.clip(np.nan_to_num(np.asarray(c, float)), 0, 1)
+        rgb = c[:3] * c[3] if k in straight else c[:3]
+        image = np.clip(rgb + (1 - c[3]) * check, 0, 1)  # premultiplied over the checkerboard
+        artists.append(ax.imshow(image, extent=(k * 1.3, k * 1.3 + 1, 1, 0)))
+    ax.set_xlim(-0.15, max(len(cells), 2) * 1.3)
+    ax.set_ylim(1.05, -0.05)
+    ax.set_xticks([k * 1.3 + 0.5 for k in range(len(cells))], names, fontsize="x-small")
+    ax.set_yticks([])
+    return artists
+
+
+def _two_lines(rgba: str) -> str:
+    """ "(r, g, b, a)" as "(r, g," over "b, a)": four columns fit under their swatches."""
+    r, g, rest = rgba.split(", ", 2)
+    return f"{r}, {g},\n{rest}"
+
+
+def _blend_drawer(mode: str):
+    """draw(ax, case, got): src and dst as swatches, then the expected blend and yours (r8:
+    the bars never showed src and dst); before any answer (``got`` None), src and dst only,
+    so that the figure never shows the answer first."""
+    straight_in = mode in ("over", "from straight")
+
+    def draw(ax, case, got):
+        src, dst = case[1]
+        cells, names = [src, dst], ["src", "dst"]
+        if got is not None:
+            want, yours = colour_texts(case[2], got)
+            cells += [case[2], got]
+            names += [f"expected\n{_two_lines(want)}", f"yours\n{_two_lines(yours)}"]
+        names[:2] = [f"{n}\n{_two_lines(vec(c))}" for n, c in zip(names[:2], cells[:2])]
+        straight = (0, 1) if straight_in else ()
+        straight += (2, 3) if mode == "over" else ()
+        artists = swatches(ax, cells, names, straight)
+        kinds = {
+            "over": "straight inputs and results",
+            "premultiplied": "premultiplied inputs and results",
+            "from straight": "straight inputs, premultiplied results",
+        }
+        artists.append(ax.set_xlabel(f"{kinds[mode]}, drawn over a checkerboard",
+                                     fontsize="x-small"))  # fmt: skip
+        return artists
+
+    return draw
 
 
 OVER_EXERCISE = _exercise("over", "over")
 FROM_STRAIGHT_EXERCISE = Exercise(
     "over_to_premultiplied", lambda: blend_cases("from straight"), _rgba,
     lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("from straight"),
-    _mistakes("from straight"), draw=_draw_blend,
+    _mistakes("from straight"), draw=_blend_drawer("from straight"),
     answers=(PackageAnswer(blend_equation), PackageAnswer(from_straight)),
 )  # fmt: skip
 PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")

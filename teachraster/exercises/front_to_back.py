@@ -13,11 +13,12 @@ Expected answers: premultiplied over (:func:`teachraster.blend_equation` with th
 ``render(..., blend="premultiplied")``), applied from the farthest layer to the nearest onto
 transparent black.
 
-What the check cannot tell (r8): a loop that reverses the layers and blends them back to
-front passes, since over is associative and the results are equal. The walk's order is not
-observable either: the task hands over an (n, 4) array, and ``np.asarray`` (which any
-solution may call) drops whatever an instrumented array would record. The derivation is the
-lecturer's to read.
+The walk's order is observable (r8: a loop over ``layers[::-1]`` passed): the student's
+function gets the layers as a one-pass iterator (:class:`LayerStream`), as a ray marcher meets
+them, and must stop once the composite is opaque. A stack with an opaque layer in front of
+others then tells: a loop from the farthest layer must read every layer first, and is named
+(so is a nearest-first loop that never stops; the check cannot tell the two apart, and its
+words say both).
 """
 
 from __future__ import annotations
@@ -26,9 +27,10 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers
+from .blending import colour_texts, swatches
 from .cases import SEED
-from .exercise import Exercise, variant_mistakes
-from .scalars import vec
+from .exercise import Exercise, Mistake, variant_mistakes
+from .scalars import num
 from .tolerance import all_close
 
 PREMULTIPLIED = BLEND_MODES["premultiplied"]
@@ -56,6 +58,10 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
         ("one half-transparent red layer", [red]),
         ("blue in front of red", [blue, red]),
         ("an opaque layer in front hides the rest", [_premultiplied([1, 1, 0], 1.0), red, blue]),
+        (
+            "an opaque layer in the middle",
+            [green, red, _premultiplied([0.1, 0.4, 0.8], 1.0), blue, red, green],
+        ),  # fmt: skip
         ("an opaque layer at the back", [green, red, _premultiplied([0.2, 0.2, 0.2], 1.0)]),
         ("an invisible layer (alpha 0) in between", [red, [0, 0, 0, 0], blue]),
         ("no layers at all", np.zeros((0, 4))),
@@ -77,18 +83,87 @@ def as_rgba(value) -> np.ndarray:
     return as_numbers(value, (4,), "an RGBA colour, shape (4,)")
 
 
+class LayerStream:
+    """The layers of a case, nearest first, readable once (``for layer in layers``), each an
+    RGBA array; it counts the layers read."""
+
+    def __init__(self, layers: np.ndarray):
+        self._layers = np.asarray(layers, dtype=float).reshape(-1, 4)
+        self.read = 0
+
+    def __iter__(self):
+        return self
+
+    def __next__(self) -> np.ndarray:
+        if self.read >= len(self._layers):
+            raise StopIteration
+        self.read += 1
+        return self._layers[self.read - 1].copy()
+
+    def __array__(self, dtype=None, copy=None):
+        raise TypeError("the layers come one at a time, nearest first, as a ray marcher meets "
+                        "them: read them with a for loop (np.asarray cannot take them)")  # fmt: skip
+
+    def __repr__(self) -> str:
+        return "<layers, nearest first: read them once, with a for loop>"
+
+
+class ReadPast(np.ndarray):
+    """A composite whose function read layers behind the opaque one (``read`` of them, the
+    composite opaque after layer ``opaque``, counted from 1)."""
+
+    read: int
+    opaque: int
+
+
+def opaque_after(layers) -> int | None:
+    """How many layers, nearest first, make the composite opaque (alpha exactly 1), or None."""
+    seen = np.cumprod(1.0 - np.asarray(layers, dtype=float).reshape(-1, 4)[:, 3])
+    hits = np.flatnonzero(seen <= 0.0)
+    return int(hits[0]) + 1 if hits.size else None
+
+
+def call_front_to_back(fn, args) -> np.ndarray:
+    """Run ``fn`` on the case's layers as a :class:`LayerStream`; a composite read past the
+    opaque layer (more than one layer behind it: a loop may fetch the next before it tests)
+    comes back as a :class:`ReadPast`."""
+    (layers,) = args
+    stream = LayerStream(layers)
+    value = as_rgba(fn(stream))
+    stop = opaque_after(layers)
+    if stop is None or stream.read <= stop + 1:
+        return value
+    marked = np.asarray(value).view(ReadPast)
+    marked.read, marked.opaque = stream.read, stop
+    return marked
+
+
 def same_rgba(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
-    """Within 1e-6: a composite computed in float32 is right."""
+    """Within 1e-6 (a composite computed in float32 is right), the walk stopped in time."""
+    if isinstance(got, ReadPast):
+        return False
     return bool(np.isfinite(got).all()) and all_close(got, expected, 1e-6)
 
 
-def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
-    """What typical nearest-first loops give (each one slip)."""
+#: A loop's slip, once as the task asks (stopping once the alpha reaches 1) and once never
+#: stopping: a student's wrong loop may do either.
+NEVER_STOPS = ", never stopping"
 
+
+def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
+    """What typical nearest-first loops give (each one slip), stopping at alpha 1 or not."""
+    out = _loops(layers, stops=True)
+    out.update({k + NEVER_STOPS: v for k, v in _loops(layers, stops=False).items()})
+    return out
+
+
+def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
     def loop(step):
         acc = CLEAR.copy()
         for layer in layers:
             acc = step(acc, layer)
+            if stops and acc[3] >= 1:
+                break
         return acc
 
     def straight(acc, c):  # multiplies the premultiplied colour by alpha again
@@ -100,10 +175,63 @@ def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
         "no transmittance": loop(lambda acc, c: acc + c),
         "double premultiplication": loop(straight),
         "alpha summed": loop(lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], acc[3] + c[3]]),
-        "nearest only": layers[0] if len(layers) else CLEAR,
-        "farthest only": layers[-1] if len(layers) else CLEAR,
+        **(
+            {
+                "nearest only": layers[0] if len(layers) else CLEAR,
+                "farthest only": layers[-1] if len(layers) else CLEAR,
+            }
+            if stops
+            else {}
+        ),
         "own alpha": loop(lambda acc, c: acc + (1 - c[3]) * c),
+        "alpha first": loop(_alpha_first),
     }
+
+
+def _alpha_first(acc, c):
+    """The alpha updated first, and the colour weighted by the new transmittance."""
+    alpha = acc[3] + (1 - acc[3]) * c[3]
+    return np.r_[acc[:3] + (1 - alpha) * c[:3], alpha]
+
+
+def _prefixes(layers) -> list[tuple[int, np.ndarray]]:
+    """(m, composite of the m nearest layers) for each m short of all of them."""
+    return [(m, back_to_front(layers[:m])) for m in range(1, len(layers))]
+
+
+def _stopped_at(args, expected, got) -> tuple[int, float] | None:
+    """(m, alpha) when ``got`` is the composite of the m nearest layers only, alpha < 1."""
+    (layers,) = args
+    for m, partial in _prefixes(layers):
+        if partial[3] < 1 and all_close(np.asarray(got, float), partial, 1e-6):
+            return m, float(partial[3])
+    return None
+
+
+def _read_past_words(args, expected, got) -> str:
+    (layers,) = args
+    return (f"you read {got.read} of the {len(layers)} layers, but after layer {got.opaque} "
+            "the composite is opaque (alpha 1) and nothing behind it can show: walking "
+            "nearest first, stop there, as a ray marcher does. A loop that runs from the "
+            "farthest layer (the layers reversed) must read them all first, and so must one "
+            "that never stops")  # fmt: skip
+
+
+def _stopped_words(args, expected, got) -> str:
+    m, alpha = _stopped_at(args, expected, got)
+    return (f"you stopped after layer {m} of {len(args[0])}, where the alpha was {num(alpha)}: "
+            "below 1, the layers behind still show through the transmittance 1 − A; stop "
+            "only once the alpha is 1")  # fmt: skip
+
+
+#: Mistakes no variant gives: the walk's order and where it stops (r8: a back-to-front loop
+#: passed).
+WALK = [
+    Mistake("read behind the opaque layer", _read_past_words,
+            fits=lambda a, e, g: isinstance(g, ReadPast) and all_close(g, e, 1e-6)),
+    Mistake("stopped early", _stopped_words,
+            fits=lambda a, e, g: _stopped_at(a, e, g) is not None),
+]  # fmt: skip
 
 
 MISTAKES = {
@@ -123,43 +251,48 @@ MISTAKES = {
     "own alpha": "you weighed each layer by 1 − its own alpha: a layer is seen through the "
     "layers in front of it, so weigh it by the transmittance 1 − A they leave (A: the alpha "
     "accumulated so far)",
+    "alpha first": "you updated the accumulated alpha before the colour: a layer's colour is "
+    "weighed by the transmittance 1 − A of the layers in front of it, the A from before this "
+    "layer",
 }
+
+
+#: Each kind's words, the loops' never-stopping twins included.
+WORDS = {**MISTAKES, **{k + NEVER_STOPS: w for k, w in MISTAKES.items() if "only" not in k}}
 
 
 def explain_layers(args, expected, got) -> str:
     """The stack's size, the composite and yours."""
     (layers,) = args
-    return (f"for {len(layers)} layer(s) (nearest first) the composite is "
-            f"{vec(expected, got)}; yours is {vec(got, expected)}")  # fmt: skip
+    if isinstance(got, ReadPast):
+        want, _ = colour_texts(expected, got)
+        return f"for {len(layers)} layer(s) (nearest first) your composite {want} is right"
+    want, yours = colour_texts(expected, got)
+    return f"for {len(layers)} layer(s) (nearest first) the composite is {want}; yours is {yours}"
 
 
 def _rule(args, expected, got) -> str:
-    return " (farthest first: C ← c_i + (1 − α_i)·C over each layer)"
+    return (": the composite is over applied from the farthest layer to the nearest; walking "
+            "nearest first, each layer shows only through the transmittance 1 − A the layers "
+            "in front of it leave (A: their alpha)")  # fmt: skip
 
 
 def draw_layers(ax, case, got):
-    """The layers as swatches over a checkerboard, then the expected and your composites."""
+    """The layers as swatches over a checkerboard, then the expected and your composites
+    (before any answer, the layers only: the figure never shows the answer first)."""
     (layers,) = case[1]
-    expected = case[2]
-    cells = list(layers) + [expected] + ([] if got is None else [np.asarray(got, float)])
-    names = [f"layer {k}" for k in range(len(layers))] + ["expected"]
-    names += [] if got is None else ["yours"]
-    check = (np.indices((8, 8)).sum(axis=0) % 2)[..., None] * 0.3 + 0.6
-    artists = []
-    for k, c in enumerate(cells):
-        c = np.clip(np.nan_to_num(c), 0, 1)
-        image = c[:3] + (1 - c[3]) * check  # premultiplied over the checkerboard
-        artists.append(ax.imshow(image, extent=(k * 1.2, k * 1.2 + 1, 1, 0)))
-    ax.set_xlim(-0.1, len(cells) * 1.2)
-    ax.set_ylim(1.05, -0.05)
-    ax.set_xticks([k * 1.2 + 0.5 for k in range(len(cells))], names, fontsize="x-small",
-                  rotation=30)  # fmt: skip
-    ax.set_yticks([])
-    ax.set_title("nearest layer first; composites over a checkerboard", fontsize="small")
+    cells = list(layers)
+    names = [f"layer {k + 1}" for k in range(len(layers))]
+    if got is not None:
+        cells += [case[2], np.asarray(got, float)]
+        names += ["expected", "yours"]
+    artists = swatches(ax, cells, names)
+    artists.append(ax.set_xlabel("nearest layer first; premultiplied, drawn over a "
+                                 "checkerboard", fontsize="x-small"))  # fmt: skip
     return artists
 
 
 FRONT_TO_BACK = Exercise(
     "front_to_back", layer_cases, as_rgba, same_rgba, explain_layers, _rule,
-    variant_mistakes(_variants, MISTAKES), draw=draw_layers,
+    variant_mistakes(_variants, WORDS, WALK), draw=draw_layers, call=call_front_to_back,
 )  # fmt: skip

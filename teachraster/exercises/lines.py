@@ -65,6 +65,8 @@ def as_pixels(value) -> frozenset[tuple[int, int]]:
         value = sorted(value, key=repr)
     if isinstance(value, (list, tuple)) and len(value) == 0:
         return frozenset()
+    if isinstance(value, np.ndarray) and value.size == 0 and value.ndim <= 2:
+        return frozenset()  # np.array([]) is an empty list of pairs too, shape (0,) (r8)
     arr = as_numbers(value, (-1, 2), "a list of (row, col) pairs")
     if not np.isfinite(arr).all() or (arr != np.round(arr)).any():
         raise WrongAnswerType(f"returned {short(value)}: pixel indices are whole numbers")
@@ -130,16 +132,37 @@ _TIE = (
     "by (x, y) − (ε, ε²), ε tiny: x by −ε, y by −ε², so that a horizontal line on a pixel "
     "boundary y = k lights row k − 1 and a vertical one on x = k column k − 1"
 )
+#: Why a float perturbation can vanish: the student's ε² (or ε) below float64's rounding of
+#: coordinates such as 3.0 (r8: 1e-18 was told "left y as it is", and the student had not).
+_LOST = ("{what} (or yours was lost in floating point: 3.0 − {tiny} == 3.0 in float64, whose "
+         "spacing near 3 is 4.4e-16; compute with Fraction, as the task says)")  # fmt: skip
+
+#: (x move, y move) -> what the student did, in words. Each wrong pair names the coordinate
+#: that is off and by how much, never a mistake the answer cannot show (r8: (−ε, −ε) was
+#: called "you swapped the two").
+_MOVES = {
+    (0.0, 0.0): ("no perturbation", _LOST.format(what="you did not move the end points at all",
+                                                 tiny="1e-17")),
+    (-EPS, 0.0): ("no ε² in y", _LOST.format(what="you did not move y", tiny="1e-18")),
+    (-EPS, EPS * EPS): ("+ε² in y", "you moved y by +ε² (down; GL moves it up)"),
+    (-EPS, -EPS): ("ε in y", "you moved y by −ε, as much as x: y moves by ε², far "
+                   "less than x's ε, so that y decides only the ties x leaves"),
+    (-EPS, EPS): ("+ε in y", "you moved y by +ε: y moves by −ε² (up, and far less "
+                  "than x)"),
+    (EPS, -EPS * EPS): ("+ε in x", "you moved x by +ε (to the right; GL moves it "
+                        "left)"),
+    (EPS, 0.0): ("+ε in x, y not moved", "you moved x by +ε (right; GL moves it left) and did "
+                 "not move y"),
+    (EPS, EPS * EPS): ("+ε in x, +ε² in y", "you moved both the other way: x by +ε and y by "
+                       "+ε² (GL moves them left and up)"),
+    (0.0, -EPS * EPS): ("x not moved", "you did not move x"),
+    (0.0, -EPS): ("only y moved", "you did not move x, and moved y by −ε"),
+    (-EPS * EPS, -EPS): ("ε in y, ε² in x", "you moved x by −ε² and y by −ε: the larger move "
+                         "belongs to x (−ε), the tinier one to y (−ε²)"),
+}  # fmt: skip
 
 LINE_KNOBS = Knobs(diamond_pixels, {
-    "eps": [
-        Slip("no perturbation", _TIE + "; you did not perturb the segment", (0.0, 0.0)),
-        Slip("+ε² in y", _TIE + "; you moved y by +ε² (the other way)", (-EPS, EPS * EPS)),
-        Slip("no ε² in y", _TIE + "; you moved x by −ε but left y as it is", (-EPS, 0.0)),
-        Slip("+ε in x", _TIE + "; you moved x by +ε (the other way)", (EPS, -EPS * EPS)),
-        Slip("ε in y, ε² in x", _TIE + "; you swapped the two: x moves by −ε, y by −ε²",
-             (-EPS * EPS, -EPS)),
-    ],
+    "eps": [Slip(kind, f"{_TIE}; {words}", move) for move, (kind, words) in _MOVES.items()],
     "end": [Slip("end pixel lit", lambda a, e, g: f"you lit the pixel whose diamond p1 = "
                  f"{a[1]} lies in: the segment ends there without exiting it, so GL leaves it "
                  "to the next segment (a polyline then lights each shared vertex once)", True)],
@@ -198,13 +221,15 @@ def _line_rule(args, expected, got) -> str:
 
 
 def draw_line(ax, case, got):
+    """The segment over the pixels: the rule's lit ones beside yours; before any answer
+    (``got`` None), the segment alone, so that the figure never shows the answer first."""
     from matplotlib.colors import ListedColormap
 
     from .drawing import STATE_COLOURS
 
     _, (p0, p1), expected = case
     state = np.zeros((WINDOW, WINDOW), int)
-    for r, c in expected:
+    for r, c in expected if got is not None else ():
         state[r, c] = 1
     for r, c in (got or set()) ^ (expected if got is not None else set()):
         if 0 <= r < WINDOW and 0 <= c < WINDOW:

@@ -1,0 +1,282 @@
+"""Exercise 09 (lesson 12), review r8's items: each mistake class named by what the answer
+shows, no wrong variant passes, the α = 0 cases, one number format for two colours, figures
+that show src and dst and never the answer first, and a front-to-back walk that must read the
+layers nearest first and stop at an opaque one.
+
+The correct solutions and most generic mistakes run in ``test_exercises.py`` and
+``test_checker_corpus.py``; the classes added for r8 are tested here, each with one check.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+from lines_blending_solutions import EPS, line_pixels, line_with
+from lines_blending_solutions import over_premultiplied as over_pm
+from lines_blending_solutions import over_to_premultiplied as over_tp
+from reasoning_solutions import front_to_back
+from student_variants import _under_with, front_to_back_by_reversing, layers_vectorised
+
+from teachraster import exercises as ex
+from teachraster.exercises.blending import colour_texts
+from teachraster.exercises.front_to_back import LayerStream
+from teachraster.exercises.lines import as_pixels
+
+
+def _first(name, fn):
+    report = ex.check(name, fn, budget=60)
+    assert not report.passed, f"{name}: a wrong variant passes"
+    assert all(f.kind for f in report.failures), "every failure has a kind"
+    return report.failures[0]
+
+
+# -- 9.1 line_pixels -------------------------------------------------------------------------
+E2 = EPS * EPS
+
+
+@pytest.mark.parametrize(
+    ("move", "kind", "words"),
+    [
+        # r8: (−ε, −ε) was "you swapped the two"
+        ((-EPS, -EPS), "ε in y", "you moved y by −ε, as much as x"),
+        ((-E2, -EPS), "ε in y, ε² in x", "you moved x by −ε² and y by −ε"),
+        ((-EPS, EPS), "+ε in y", "you moved y by +ε"),
+        ((EPS, 0), "+ε in x, y not moved", "you moved x by +ε"),
+        ((0, -E2), "x not moved", "you did not move x"),
+    ],
+)
+def test_each_perturbation_slip_is_named_by_what_it_moved(move, kind, words):
+    first = _first("line_pixels", line_with(*move))
+    assert first.kind == kind and words in first.explanation, first.explanation
+    assert "swapped the two" not in first.explanation
+
+
+def test_a_float_eps_squared_lost_to_rounding_is_said_so():
+    """r8: ε² = 1e-18 vanishes beside 3.0 in float64; the student did move y."""
+
+    def floats(p0, p1):
+        return line_with(0, 0)((p0[0] - 1e-9, p0[1] - 1e-18), (p1[0] - 1e-9, p1[1] - 1e-18))
+
+    first = _first("line_pixels", floats)
+    assert "you did not move y (or yours was lost in floating point" in first.explanation
+    assert "Fraction" in first.explanation and "left y as it is" not in first.explanation
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [
+        line_with(E2, -EPS),
+        line_with(0, EPS),
+        line_with(EPS, E2),
+        line_with(-EPS, 0),
+        line_with(-EPS, E2),
+        line_with(-EPS, -E2, "col row"),
+    ],  # fmt: skip
+    ids=["+e2,-e", "0,+e", "+e,+e2", "no e2", "+e2 in y", "col row"],
+)
+def test_no_wrong_perturbation_or_order_passes(fn):
+    _first("line_pixels", fn)
+
+
+def test_an_empty_array_of_pairs_is_an_empty_answer():
+    """r8: np.array([]) (shape (0,)) was called "not a list of (row, col) pairs"."""
+    assert as_pixels(np.array([])) == frozenset() == as_pixels(np.zeros((0, 2)))
+    report = ex.check("line_pixels", lambda p0, p1: np.array(line_pixels(p0, p1)), budget=60)
+    assert report.passed, str(report)
+
+
+# -- 9.2 over_to_premultiplied, over_premultiplied -------------------------------------------
+def _colour(fn, alpha):
+    """fn's colour channels with another alpha."""
+    return lambda s, d: np.r_[np.asarray(fn(s, d), float)[:3], alpha(s, d)]
+
+
+ALPHA_WRONG = [
+    (lambda s, d: s[3] + d[3], "alpha summed", "you added the two alphas"),
+    (lambda s, d: s[3] ** 2 + d[3] * (1 - s[3]), "alpha squared", "α_s·α_s"),
+    (lambda s, d: s[3], "alpha of the source", "you kept the source's alpha"),
+    (lambda s, d: d[3], "alpha of the destination", "you kept the destination's alpha"),
+    (lambda s, d: s[3] * d[3] + 0.01, "alpha only", "the share of the pixel src or dst covers"),
+]
+
+
+@pytest.mark.parametrize("name", ["over_to_premultiplied", "over_premultiplied"])
+@pytest.mark.parametrize(
+    ("alpha", "kind", "words"), ALPHA_WRONG, ids=[k for _, k, _ in ALPHA_WRONG]
+)
+def test_only_the_alpha_wrong_is_said_so(name, alpha, kind, words):
+    """r8 (r7 09-3): colour right and alpha wrong got the generic sentence."""
+    right = over_tp if name == "over_to_premultiplied" else over_pm
+    first = _first(name, _colour(right, alpha))
+    assert first.kind == kind, (first.kind, first.explanation)
+    assert "your red, green and blue are right, your alpha is not" in first.explanation
+    assert words in first.explanation, first.explanation
+
+
+def test_9_2a_multiplied_by_the_result_alpha_twice_is_named():
+    def twice(s, d):
+        c = np.asarray(over_tp(s, d), float)
+        return np.r_[c[:3] * c[3], c[3]]
+
+    first = _first("over_to_premultiplied", twice)
+    assert first.kind == "multiplied by alpha twice", first.explanation
+
+
+def test_9_2a_reused_on_premultiplied_inputs_is_named():
+    """r8: the most natural slip after 9.2a (both inputs multiplied by their alpha again)."""
+    first = _first("over_premultiplied", over_tp)
+    assert first.kind == "9.2a reused" and "9.2a's over_to_premultiplied" in first.explanation
+
+
+def test_the_destination_weighted_by_its_own_alpha_is_named():
+    first = _first("over_premultiplied", lambda s, d: np.asarray(s) + np.asarray(d) * (1 - d[3]))
+    assert first.kind == "destination's own alpha", first.explanation
+
+
+def _unpremultiplied(guard):
+    def fn(s, d):
+        def straight(c):
+            c = np.asarray(c, float)
+            if guard and c[3] == 0:
+                return np.r_[0.0, 0.0, 0.0, 0.0]
+            with np.errstate(all="ignore"):
+                return np.r_[c[:3] / c[3], c[3]]
+
+        return over_tp(straight(s), straight(d))
+
+    return fn
+
+
+@pytest.mark.parametrize("guard", [True, False], ids=["guarded", "0/0"])
+def test_a_glow_is_lost_by_dividing_by_alpha(guard):
+    """9.2b's reasoning case: premultiplied light with alpha 0, which no straight colour holds
+    (dividing by alpha to reuse 9.2a passed before; a 0/0 elsewhere is named too)."""
+    report = ex.check("over_premultiplied", _unpremultiplied(guard), budget=60)
+    glow = [f for f in report.failures if f.case.startswith("a glow")]
+    assert glow and glow[0].kind == "glow lost" and "is a glow" in glow[0].explanation
+    others = {f.kind for f in report.failures} - {"glow lost"}
+    assert others == (set() if guard else {"divided by alpha"}), str(report)
+    assert ex.check("over_premultiplied", over_pm).passed
+
+
+def test_both_alphas_zero_is_a_case_and_a_nan_there_is_explained():
+    cases = {label: args for label, args, _ in ex.blending.blend_cases("from straight")}
+    assert cases["both transparent"][0][3] == 0 == cases["both transparent"][1][3]
+
+    def divided(s, d):  # C = sum / α first: 0/0 there
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = s[3] + d[3] * (1 - s[3])
+        with np.errstate(all="ignore"):
+            c = (s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])) / a
+        return np.r_[c * a, a]
+
+    first = _first("over_to_premultiplied", divided)
+    assert first.kind == "division by zero" and "both alphas 0" in first.explanation
+
+
+def test_two_colours_print_with_one_format():
+    """r8 item 5: 0.4375 printed "0.4375" in one colour and "0.438" in the other."""
+    want, yours = colour_texts([0.1875, 0.4375, 0.1875, 0.625], [0.1875, 0.4375, 0.1875, 0.4375])
+    assert (want, yours) == ("(0.1875, 0.4375, 0.1875, 0.625)", "(0.1875, 0.4375, 0.1875, 0.4375)")
+    rng = np.random.default_rng(3)
+    for _ in range(200):
+        e = rng.uniform(0, 1, 4)
+        g = e + rng.choice([0, 1e-5, 1e-3, 0.1], 4)
+        texts = [t.strip("()").split(", ") for t in colour_texts(e, g)]
+        shown = dict()
+        for value, text in zip(np.r_[e, g], texts[0] + texts[1]):
+            assert shown.setdefault(text, value) == pytest.approx(value, abs=1e-9), (e, g, texts)
+    first = _first("over_premultiplied", lambda s, d: np.r_[over_pm(s, d)[:3], 0.4375])
+    m = re.search(r"the blend is \((.*?)\); yours is \((.*?)\)", first.explanation)
+    for a, b in zip(m.group(1).split(", "), m.group(2).split(", ")):
+        assert (a == b) == (float(a) == float(b)), first.explanation
+
+
+@pytest.mark.parametrize("name", ["line_pixels", "over_to_premultiplied", "over_premultiplied",
+                                  "front_to_back"])  # fmt: skip
+def test_a_stub_figure_never_shows_the_answer(name):
+    """r8 item 6: the stub's figure drew the first case's expected answer."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def stub(*args):
+        raise NotImplementedError
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check(name, stub).plot(ax)
+    ticks = " ".join(t.get_text() for t in ax.get_xticklabels())
+    images = [im.get_array() for im in ax.get_images()]
+    plt.close(fig)
+    assert "expected" not in ticks and "yours" not in ticks
+    if name == "line_pixels":  # only the segment: no lit pixel drawn
+        assert not images or all(np.all(np.asarray(a) == 0) for a in images)
+    elif name != "front_to_back":
+        assert ticks.startswith("src") and "dst" in ticks
+
+
+def test_a_blend_figure_shows_src_and_dst_beside_the_answers():
+    """r8 item 4: the bars showed expected and yours, never the case's src and dst."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("over_premultiplied", over_tp).plot(ax)
+    ticks = [t.get_text().split("\n")[0] for t in ax.get_xticklabels()]
+    plt.close(fig)
+    assert ticks == ["src", "dst", "expected", "yours"], ticks
+
+
+# -- 9.3 front_to_back -------------------------------------------------------------------------
+def test_a_nearest_first_walk_that_stops_passes_and_the_layers_come_once():
+    assert ex.check("front_to_back", front_to_back).passed
+    assert ex.check("front_to_back", _under_with(lambda a, c: a + (1 - a[3]) * c)).passed
+    stream = LayerStream(np.eye(4))
+    assert len(list(stream)) == 4 and list(stream) == [] and stream.read == 4
+    with pytest.raises(TypeError, match="read them with a for loop"):
+        np.asarray(LayerStream(np.eye(4)), dtype=float)
+
+
+def _no_stop(layers):
+    acc = np.zeros(4)
+    for c in layers:
+        acc = acc + (1 - acc[3]) * np.asarray(c, float)
+    return acc
+
+
+@pytest.mark.parametrize("fn", [front_to_back_by_reversing, layers_vectorised, _no_stop],
+                         ids=["reversed list", "vectorised", "never stops"])  # fmt: skip
+def test_reading_behind_an_opaque_layer_fails_and_names_the_back_to_front_loop(fn):
+    """r8: a loop over layers[::-1] passed the task that asks for a nearest-first walk."""
+    first = _first("front_to_back", fn)
+    assert first.kind == "read behind the opaque layer", first.explanation
+    assert "nothing behind it can show" in first.explanation
+    assert "A loop that runs from the farthest layer (the layers reversed)" in first.explanation
+
+
+def test_stopping_before_the_alpha_is_one_is_named():
+    def early(layers):
+        acc = np.zeros(4)
+        for c in layers:
+            acc = acc + (1 - acc[3]) * np.asarray(c, float)
+            if acc[3] >= 0.99:
+                break
+        return acc
+
+    first = _first("front_to_back", early)
+    assert first.kind == "stopped early" and "below 1" in first.explanation, first.explanation
+
+
+def test_alpha_updated_before_the_colour_is_named():
+    def step(acc, c):
+        alpha = acc[3] + (1 - acc[3]) * c[3]
+        return np.r_[acc[:3] + (1 - alpha) * c[:3], alpha]
+
+    first = _first("front_to_back", _under_with(step))
+    assert first.kind == "alpha first", first.explanation
+    assert "farthest first" not in first.explanation
