@@ -237,3 +237,39 @@ def test_a_final_value_the_kernel_holds_brings_the_full_picture():
     assert len(frames) == before + 1 and "on release" not in frames[-1]["caption"]
     assert bytes(page._last) == full
     ex.close()
+
+
+def _png_pixels(png: bytes) -> np.ndarray:
+    import io
+
+    from PIL import Image
+
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGBA"))
+
+
+def test_case_pickers_pictures_drawn_ahead_are_its_pictures_and_are_shown_without_drawing():
+    """A case and method drawn ahead (on a figure of their own) are the picture, caption and
+    state a picker shows there; choosing them then draws nothing. Nothing is asked for
+    before a first change (a lesson run without a page)."""
+    from teachraster.plotting.frames import frame_rgba
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("collinear", "span", backend="image")
+    ahead = picker._ahead
+    assert not ahead.todo and not ahead.kept
+    picker.method.value = "halfplane"
+    picker.method.value = "span"  # back: the other method here comes first, not this one
+    assert ahead.todo[0] == ("collinear", "halfplane") and ("collinear", "span") not in ahead.todo
+    ahead.step()
+    draws = picker.display.draws
+    picker.method.value = "halfplane"
+    assert picker.display.draws == draws  # the picture kept, sent without drawing
+    fresh = CasePicker("collinear", "halfplane", backend="image")
+    assert np.array_equal(_png_pixels(picker.display.widget.value), frame_rgba(fresh.fig))
+    assert picker.info.value == fresh.info.value and picker.passed == fresh.passed
+    np.testing.assert_array_equal(picker.owner, fresh.owner)
+    assert picker.view == fresh.view and picker.hubs == fresh.hubs
+    picker.case.value = "near_flat"  # not kept: drawn as before
+    assert picker.display.draws == draws + 1
+    for p in (picker, fresh):
+        p.close()
