@@ -273,3 +273,28 @@ def test_case_pickers_pictures_drawn_ahead_are_its_pictures_and_are_shown_withou
     assert picker.display.draws == draws + 1
     for p in (picker, fresh):
         p.close()
+
+
+def test_divide_cost_explorers_other_measure_drawn_ahead_is_its_picture():
+    """The other error measure at this price, drawn ahead, is the picture, caption and front
+    the explorer shows there; the toggle then draws nothing."""
+    from widget_examples import _rows
+
+    from teachraster.plotting.frames import frame_rgba
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+
+    ex = DivideCostExplorer(_rows(), backend="image")
+    assert not ex._ahead.todo and not ex._ahead.kept  # nothing before a first change
+    ex.divide.value = 9.0
+    assert ex._ahead.todo == [(9.0, "mean error")]
+    ex._ahead.step()
+    draws = ex.display.draws
+    ex.error.value = "mean error"
+    assert ex.display.draws == draws  # the picture kept, sent without drawing
+    kept, info, front = ex.display.widget.value, ex.info.value, ex.front
+    ex._ahead.close()  # now drawn by the explorer itself, on its own figure
+    ex._ahead = None
+    ex.update(replot=True)
+    assert np.array_equal(_png_pixels(kept), frame_rgba(ex.fig))
+    assert ex.info.value == info and ex.front == front
+    ex.close()
