@@ -23,6 +23,13 @@ def _make(name):
     if name == "filter":
         ex = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
         return ex, ex.tilt
+    if name == "tiles":
+        import teachraster as tr
+        from teachraster.widgets import TileExplorer
+
+        tri = tr.Triangle([[1.2, 1.7], [30.5, 6.3], [9.1, 29.4]])
+        ex = TileExplorer(tri, 32, 32, block_sizes=(16, 4, 1), backend="image")
+        return ex, ex.level
     ex = DepthPrecisionExplorer(backend="image")
     return ex, ex.near
 
@@ -52,7 +59,7 @@ def _pictures(sent, ref) -> dict:
     return out
 
 
-@pytest.mark.parametrize("name", ["viewer", "filter", "depth"])
+@pytest.mark.parametrize("name", ["viewer", "filter", "depth", "tiles"])
 def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
     ex, slider = _make(name)
     page, sent = _listen(ex, slider)
