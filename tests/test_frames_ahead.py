@@ -30,6 +30,11 @@ def _make(name):
         tri = tr.Triangle([[1.2, 1.7], [30.5, 6.3], [9.1, 29.4]])
         ex = TileExplorer(tri, 32, 32, block_sizes=(16, 4, 1), backend="image")
         return ex, ex.level
+    if name == "sampling":  # two sliders: the positions of the one moved last (samples)
+        from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+        ex = SamplingExplorer(width=1.0, backend="image")
+        return ex, ex.rate
     ex = DepthPrecisionExplorer(backend="image")
     return ex, ex.near
 
@@ -59,7 +64,7 @@ def _pictures(sent, ref) -> dict:
     return out
 
 
-@pytest.mark.parametrize("name", ["viewer", "filter", "depth", "tiles"])
+@pytest.mark.parametrize("name", ["viewer", "filter", "depth", "tiles", "sampling"])
 def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
     ex, slider = _make(name)
     page, sent = _listen(ex, slider)
