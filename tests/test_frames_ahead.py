@@ -310,3 +310,22 @@ def test_divide_cost_explorers_other_measure_drawn_ahead_is_its_picture():
     assert np.array_equal(_png_pixels(kept), frame_rgba(ex.fig))
     assert ex.info.value == info and ex.front == front
     ex.close()
+
+
+def test_sampling_shape_drawn_ahead_is_sent_at_a_toggle_and_is_the_shapes_picture():
+    ex, slider = _make("sampling")
+    fresh, _ = _make("sampling")
+    page, _sent = _listen(ex, slider)
+    toggles = ex._toggles
+    assert toggles.where == (32.0, 1.0) and toggles.todo == ["gaussian"]
+    toggles.step()
+    draws = ex.display.draws
+    ex.kernel.value = fresh.kernel.value = "gaussian"
+    assert ex.display.draws == draws  # the picture kept, sent without drawing
+    assert np.array_equal(page._last, fresh.display.widget._last)
+    assert ex.info.value == fresh.info.value
+    assert ex.result.rms_error == fresh.result.rms_error
+    ex.rate.value = 40.0  # elsewhere: the kept pictures are of the old place
+    assert toggles.take((32.0, 1.0), "box") is None and toggles.where == (40.0, 1.0)
+    ex.close()
+    fresh.close()

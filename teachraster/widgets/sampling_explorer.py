@@ -12,6 +12,7 @@ import ipywidgets as widgets
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.sampling import KERNELS, plot_sampling, sample_signal, update_sampling
+from .ahead import TogglesAhead
 from .common import (
     Shown,
     control_row,
@@ -103,9 +104,12 @@ class SamplingExplorer(Shown):
         )
         controls = control_row([self.rate, self.width, labelled("shape", self.kernel)])
         self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
-        self._ahead = None
+        self._ahead = self._toggles = None
         if self.backend != "ipympl":
             self._ahead = self.display.ahead([self.rate, self.width], self)
+            #: the other shape's picture here, drawn while the kernel idles (for a page)
+            self._toggles = TogglesAhead(self.display, self, KERNELS)
+            self._ahead.on_listening.append(self._toggles_ahead)
 
     def _plan_blit(self, axes) -> LayeredBlit:
         """A control moves the yellow bands and the curves only: the axes, their ticks and
@@ -127,23 +131,53 @@ class SamplingExplorer(Shown):
 
     def update(self, restart: bool = False) -> None:
         """Recompute from the controls and move the same lines (``restart``: the shape
-        changed, the pictures drawn ahead are stale)."""
-        self._compute_at(self.rate.value, 0)
-        self._set_artists()
-        self.info.value = self._info_html()
-        self.display.refresh()
+        changed, the pictures drawn ahead are stale; the shape's picture drawn ahead here
+        is sent at once)."""
+        where = (self.rate.value, self.width.value)
+        kept = self._toggles.take(where, self.kernel.value) if restart and self._toggles else None
+        if kept is not None:
+            rgba, caption, state = kept
+            vars(self).update(state)
+            self.info.value = caption
+            self.display.refresh(rgba)
+            self._set_artists()  # for the next picture drawn
+        else:
+            self._compute_at(self.rate.value, 0)
+            self._set_artists()
+            self.info.value = self._info_html()
+            self.display.refresh()
+        if self._ahead is not None and self._ahead.listening:
+            self._toggles_ahead()
         if restart and self._ahead is not None:
             self._ahead.restart()
 
-    # what the pictures drawn ahead need (teachraster.widgets.ahead.FramesAhead)
-    def _compute_at(self, value: float, which: int) -> None:
+    def _toggles_ahead(self) -> None:
+        """The other shape at the samples and filter on show, drawn while the kernel idles."""
+        self._toggles.start((self.rate.value, self.width.value), self.kernel.value)
+
+    # what the pictures drawn ahead need (teachraster.widgets.ahead.FramesAhead and
+    # TogglesAhead)
+    def _compute_at(self, value, which) -> None:
         """The result with slider ``which`` (0: samples, 1: filter) at ``value``, the other
-        control where it is."""
-        rate, width = (value, self.width.value) if which == 0 else (self.rate.value, value)
-        self.result = sample_signal(int(round(rate)), width, self.kernel.value)
+        control where it is; or, ``which`` a shape (``TogglesAhead``), with that shape at
+        ``value`` = (samples, filter)."""
+        kernel = self.kernel.value
+        if isinstance(which, str):
+            (rate, width), kernel = value, which
+        elif which == 0:
+            rate, width = value, self.width.value
+        else:
+            rate, width = self.rate.value, value
+        self.result = sample_signal(int(round(rate)), width, kernel)
 
     def _set_artists(self) -> None:
         update_sampling(self.art, self.result)
+
+    def close(self) -> None:
+        """Close the figure (and what it draws ahead) and every widget of the box."""
+        if self._toggles is not None:
+            self._toggles.close()
+        super().close()
 
     def _info_html(self) -> str:
         r = self.result
