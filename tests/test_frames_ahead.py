@@ -329,3 +329,26 @@ def test_sampling_shape_drawn_ahead_is_sent_at_a_toggle_and_is_the_shapes_pictur
     assert toggles.take((32.0, 1.0), "box") is None and toggles.where == (40.0, 1.0)
     ex.close()
     fresh.close()
+
+
+def test_a_case_picker_in_a_kernel_keeps_the_pictures_it_draws():
+    """With an event loop running (a kernel), a case or method the picker drew itself is
+    kept: coming back to it draws nothing (without one, as above, every change draws)."""
+    import asyncio
+
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("collinear", "span", backend="image")
+
+    async def toggle_twice():
+        picker.method.value = "halfplane"
+        shown = picker.display.widget.value
+        picker.method.value = "span"
+        draws = picker.display.draws
+        picker.method.value = "halfplane"
+        return shown, draws
+
+    shown, draws = asyncio.run(toggle_twice())
+    assert picker.display.draws == draws and picker.display.widget.value == shown
+    assert ("collinear", "span") in picker._ahead.kept
+    picker.close()

@@ -292,6 +292,19 @@ class PicturesAhead:
         """``(png, caption, state)`` of ``key`` when kept, else None."""
         return self.kept.get(key)
 
+    def keep(self, key, picture) -> None:
+        """Keep ``picture`` = ``(png, caption, state)``, drawn by the explorer itself for
+        ``key``: coming back to it then costs nothing either. Only where pictures are drawn
+        ahead at all (a kernel's event loop runs): run without one (tests, a script), every
+        change draws its figure, as a picker without pictures kept does."""
+        try:
+            asyncio.get_running_loop()
+        except RuntimeError:
+            return
+        self.kept[key] = picture
+        while len(self.kept) > self.most:
+            self.kept.pop(next(iter(self.kept)))
+
     def want(self, keys) -> None:
         """Draw the pictures of ``keys`` not kept yet, in this order, one per idle call (a
         student's click meanwhile is answered first); the ones asked before are dropped."""

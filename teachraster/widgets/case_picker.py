@@ -538,6 +538,9 @@ class CasePicker:
             self._lay_out()
             self.info.value = self._info_html()
             self.display.refresh()
+            if self._ahead is not None:
+                state = {k: v for k, v in vars(self).items() if k in PICTURE_STATE}
+                self._ahead.keep(key, (self.display.widget.value, self.info.value, state))
         if self._ahead is not None:
             # the likeliest next choices: the other method here, the cases either side
             names, others = list(self.case.options), list(self.method.options)

@@ -213,6 +213,9 @@ class DivideCostExplorer(Shown):
                                                                    "cycles", y=self._ykey)]  # fmt: skip
             self.info.value = self._info_html()
             self.display.refresh()
+            if self._ahead is not None:
+                self._ahead.keep(key, (self.display.widget.value, self.info.value,
+                                       {"front": self.front}))  # fmt: skip
         if self._ahead is not None:
             self._ahead.want([(key[0], e) for e in ERRORS if e != key[1]])
 
