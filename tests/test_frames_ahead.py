@@ -298,7 +298,8 @@ def test_divide_cost_explorers_other_measure_drawn_ahead_is_its_picture():
     ex = DivideCostExplorer(_rows(), backend="image")
     assert not ex._ahead.todo and not ex._ahead.kept  # nothing before a first change
     ex.divide.value = 9.0
-    assert ex._ahead.todo == [(9.0, "mean error")]
+    # the other measure here first, then the prices either side
+    assert ex._ahead.todo == [(9.0, "mean error"), (12.0, "max error"), (8.0, "max error")]
     ex._ahead.step()
     draws = ex.display.draws
     ex.error.value = "mean error"

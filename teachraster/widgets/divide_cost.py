@@ -217,7 +217,12 @@ class DivideCostExplorer(Shown):
                 self._ahead.keep(key, (self.display.widget.value, self.info.value,
                                        {"front": self.front}))  # fmt: skip
         if self._ahead is not None:
-            self._ahead.want([(key[0], e) for e in ERRORS if e != key[1]])
+            # the likeliest next pictures: the other measure here, the prices either side
+            prices = [v for _, v in self.divide.options]
+            i = prices.index(key[0])
+            near = [prices[j] for j in (i + 1, i - 1) if 0 <= j < len(prices)]
+            self._ahead.want([(key[0], e) for e in ERRORS if e != key[1]]
+                             + [(p, key[1]) for p in near])  # fmt: skip
 
     def _info_html(self) -> str:
         """What the slider changes: the divide's share of the exact divide's cost, and what
