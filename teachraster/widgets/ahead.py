@@ -16,6 +16,12 @@ again.
 
 Nothing is drawn until a page says it is listening (``ready``): a notebook run without a
 browser (nbclient, the tests) draws nothing ahead, and a page opened later asks again.
+
+A control's other options at the picture on show (:class:`TogglesAhead`: ``FilterExplorer``'s
+filters, ``SamplingExplorer``'s shapes) and the few states of a PNG explorer's menus
+(:class:`PicturesAhead`: ``CasePicker``'s cases and methods, ``DivideCostExplorer``'s error
+measures and prices) are drawn ahead too, and kept by the kernel: choosing one sends its
+picture at once.
 """
 
 from __future__ import annotations
