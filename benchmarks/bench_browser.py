@@ -223,8 +223,10 @@ def run_all_cells(page, base: str, name: str) -> None:
     wait_for_ahead(page)
 
 
-#: The explorers whose slider positions are drawn ahead (PlaneExplorer: its first slider, v1 x).
-AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth", "bench-projection")
+#: The explorers whose slider positions are drawn ahead (PlaneExplorer: its first slider, v1 x;
+#: SamplingExplorer: samples; TileExplorer: level).
+AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth", "bench-projection",
+         "bench-sampling", "bench-tiles")  # fmt: skip
 
 
 def wait_for_ahead(page) -> None:

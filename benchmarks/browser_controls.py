@@ -155,9 +155,9 @@ def bench_controls(page, reps: int) -> list[tuple]:
                         menu(page, ".bench-cases"), reps))  # fmt: skip
     rows.append(control(page, "SamplingExplorer: kernel toggle (kernel)", ".bench-sampling",
                         click, toggle(page, ".bench-sampling"), reps))  # fmt: skip
-    rows.append(control(page, "SamplingExplorer: samples, one key (kernel)", ".bench-sampling",
+    rows.append(control(page, "SamplingExplorer: samples, one key (drawn ahead)", ".bench-sampling",
                         keys, key(page, ".bench-sampling"), reps))  # fmt: skip
-    rows.append(control(page, "TileExplorer: level, one key (kernel)", ".bench-tiles", keys,
+    rows.append(control(page, "TileExplorer: level, one key (drawn ahead)", ".bench-tiles", keys,
                         key(page, ".bench-tiles"), reps))  # fmt: skip
     rows += drag_slider(page, "TileExplorer: level slider", ".bench-tiles", reps)
     rows.append(control(page, "TileExplorer: traversal menu (kernel)", ".bench-tiles", change,

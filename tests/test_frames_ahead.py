@@ -23,6 +23,18 @@ def _make(name):
     if name == "filter":
         ex = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
         return ex, ex.tilt
+    if name == "tiles":
+        import teachraster as tr
+        from teachraster.widgets import TileExplorer
+
+        tri = tr.Triangle([[1.2, 1.7], [30.5, 6.3], [9.1, 29.4]])
+        ex = TileExplorer(tri, 32, 32, block_sizes=(16, 4, 1), backend="image")
+        return ex, ex.level
+    if name == "sampling":  # two sliders: the positions of the one moved last (samples)
+        from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+        ex = SamplingExplorer(width=1.0, backend="image")
+        return ex, ex.rate
     ex = DepthPrecisionExplorer(backend="image")
     return ex, ex.near
 
@@ -52,7 +64,7 @@ def _pictures(sent, ref) -> dict:
     return out
 
 
-@pytest.mark.parametrize("name", ["viewer", "filter", "depth"])
+@pytest.mark.parametrize("name", ["viewer", "filter", "depth", "tiles", "sampling"])
 def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
     ex, slider = _make(name)
     page, sent = _listen(ex, slider)
@@ -237,3 +249,107 @@ def test_a_final_value_the_kernel_holds_brings_the_full_picture():
     assert len(frames) == before + 1 and "on release" not in frames[-1]["caption"]
     assert bytes(page._last) == full
     ex.close()
+
+
+def _png_pixels(png: bytes) -> np.ndarray:
+    import io
+
+    from PIL import Image
+
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGBA"))
+
+
+def test_case_pickers_pictures_drawn_ahead_are_its_pictures_and_are_shown_without_drawing():
+    """A case and method drawn ahead (on a figure of their own) are the picture, caption and
+    state a picker shows there; choosing them then draws nothing. Nothing is asked for
+    before a first change (a lesson run without a page)."""
+    from teachraster.plotting.frames import frame_rgba
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("collinear", "span", backend="image")
+    ahead = picker._ahead
+    assert not ahead.todo and not ahead.kept
+    picker.method.value = "halfplane"
+    picker.method.value = "span"  # back: the other method here comes first, not this one
+    assert ahead.todo[0] == ("collinear", "halfplane") and ("collinear", "span") not in ahead.todo
+    ahead.step()
+    draws = picker.display.draws
+    picker.method.value = "halfplane"
+    assert picker.display.draws == draws  # the picture kept, sent without drawing
+    fresh = CasePicker("collinear", "halfplane", backend="image")
+    assert np.array_equal(_png_pixels(picker.display.widget.value), frame_rgba(fresh.fig))
+    assert picker.info.value == fresh.info.value and picker.passed == fresh.passed
+    np.testing.assert_array_equal(picker.owner, fresh.owner)
+    assert picker.view == fresh.view and picker.hubs == fresh.hubs
+    picker.case.value = "near_flat"  # not kept: drawn as before
+    assert picker.display.draws == draws + 1
+    for p in (picker, fresh):
+        p.close()
+
+
+def test_divide_cost_explorers_other_measure_drawn_ahead_is_its_picture():
+    """The other error measure at this price, drawn ahead, is the picture, caption and front
+    the explorer shows there; the toggle then draws nothing."""
+    from widget_examples import _rows
+
+    from teachraster.plotting.frames import frame_rgba
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+
+    ex = DivideCostExplorer(_rows(), backend="image")
+    assert not ex._ahead.todo and not ex._ahead.kept  # nothing before a first change
+    ex.divide.value = 9.0
+    # the other measure here first, then the prices either side
+    assert ex._ahead.todo == [(9.0, "mean error"), (12.0, "max error"), (8.0, "max error")]
+    ex._ahead.step()
+    draws = ex.display.draws
+    ex.error.value = "mean error"
+    assert ex.display.draws == draws  # the picture kept, sent without drawing
+    kept, info, front = ex.display.widget.value, ex.info.value, ex.front
+    ex._ahead.close()  # now drawn by the explorer itself, on its own figure
+    ex._ahead = None
+    ex.update(replot=True)
+    assert np.array_equal(_png_pixels(kept), frame_rgba(ex.fig))
+    assert ex.info.value == info and ex.front == front
+    ex.close()
+
+
+def test_sampling_shape_drawn_ahead_is_sent_at_a_toggle_and_is_the_shapes_picture():
+    ex, slider = _make("sampling")
+    fresh, _ = _make("sampling")
+    page, _sent = _listen(ex, slider)
+    toggles = ex._toggles
+    assert toggles.where == (32.0, 1.0) and toggles.todo == ["gaussian"]
+    toggles.step()
+    draws = ex.display.draws
+    ex.kernel.value = fresh.kernel.value = "gaussian"
+    assert ex.display.draws == draws  # the picture kept, sent without drawing
+    assert np.array_equal(page._last, fresh.display.widget._last)
+    assert ex.info.value == fresh.info.value
+    assert ex.result.rms_error == fresh.result.rms_error
+    ex.rate.value = 40.0  # elsewhere: the kept pictures are of the old place
+    assert toggles.take((32.0, 1.0), "box") is None and toggles.where == (40.0, 1.0)
+    ex.close()
+    fresh.close()
+
+
+def test_a_case_picker_in_a_kernel_keeps_the_pictures_it_draws():
+    """With an event loop running (a kernel), a case or method the picker drew itself is
+    kept: coming back to it draws nothing (without one, as above, every change draws)."""
+    import asyncio
+
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("collinear", "span", backend="image")
+
+    async def toggle_twice():
+        picker.method.value = "halfplane"
+        shown = picker.display.widget.value
+        picker.method.value = "span"
+        draws = picker.display.draws
+        picker.method.value = "halfplane"
+        return shown, draws
+
+    shown, draws = asyncio.run(toggle_twice())
+    assert picker.display.draws == draws and picker.display.widget.value == shown
+    assert ("collinear", "span") in picker._ahead.kept
+    picker.close()

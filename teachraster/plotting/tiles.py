@@ -100,6 +100,15 @@ class BlockArtists(Artists):
         self.blocks.set_facecolor(face)
         self.blocks.set_edgecolor(edge)
 
+    def set_order(self, blocks: TileTrace, order: np.ndarray) -> None:
+        """Draw the same ``blocks`` in another visiting ``order`` (another traversal), in
+        place: what :func:`plot_blocks` draws with that traversal, without new artists.
+        Call :meth:`show` next."""
+        self.order = np.asarray(order)
+        self.kinds = blocks.kind_code[self.order].astype(int)
+        self.sizes = blocks.size[self.order]
+        self.blocks.set_verts(_rectangles(blocks, self.order))
+
 
 def _colors(kinds: np.ndarray, alpha: float) -> np.ndarray:
     table = np.array([to_rgba(BLOCK_COLORS[k], alpha) for k in KINDS])

@@ -16,6 +16,12 @@ again.
 
 Nothing is drawn until a page says it is listening (``ready``): a notebook run without a
 browser (nbclient, the tests) draws nothing ahead, and a page opened later asks again.
+
+A control's other options at the picture on show (:class:`TogglesAhead`: ``FilterExplorer``'s
+filters, ``SamplingExplorer``'s shapes) and the few states of a PNG explorer's menus
+(:class:`PicturesAhead`: ``CasePicker``'s cases and methods, ``DivideCostExplorer``'s error
+measures and prices) are drawn ahead too, and kept by the kernel: choosing one sends its
+picture at once.
 """
 
 from __future__ import annotations
@@ -259,4 +265,71 @@ class TogglesAhead:
 
     def close(self) -> None:
         self.closed = True
+        self.kept.clear()
+
+
+class PicturesAhead:
+    """Pictures of an explorer's menus and toggles, drawn while the kernel idles on a figure
+    of their own and kept by the kernel: choosing one of them then sends its picture at once.
+
+    For the explorers whose few states (a case and a fill method; an error measure) each
+    cost a whole figure (artists made anew, axes laid out: 100-500 ms): ``CasePicker`` and
+    ``DivideCostExplorer``. The figure the page shows is never touched: ``draw`` renders on
+    a second one, made as the first, so that a picture kept is the one the explorer draws
+    in that state (tests/test_frames_ahead.py).
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw(key)`` -> ``(png, caption, state)``: the picture of state ``key`` (PNG bytes),
+        its caption and the attributes the explorer holds in that state.
+    most : int
+        Pictures kept at most (the oldest dropped first).
+    """
+
+    def __init__(self, draw, most: int = 64) -> None:
+        self.draw, self.most = draw, most
+        self.kept: dict = {}  # key -> (png, caption, state), oldest first
+        self.todo: list = []
+        self.drawn = 0
+        self.closed = False
+
+    def take(self, key):
+        """``(png, caption, state)`` of ``key`` when kept, else None."""
+        return self.kept.get(key)
+
+    def keep(self, key, picture) -> None:
+        """Keep ``picture`` = ``(png, caption, state)``, drawn by the explorer itself for
+        ``key``: coming back to it then costs nothing either. Only where pictures are drawn
+        ahead at all (a kernel's event loop runs): run without one (tests, a script), every
+        change draws its figure, as a picker without pictures kept does."""
+        try:
+            asyncio.get_running_loop()
+        except RuntimeError:
+            return
+        self.kept[key] = picture
+        while len(self.kept) > self.most:
+            self.kept.pop(next(iter(self.kept)))
+
+    def want(self, keys) -> None:
+        """Draw the pictures of ``keys`` not kept yet, in this order, one per idle call (a
+        student's click meanwhile is answered first); the ones asked before are dropped."""
+        self.todo = [k for k in dict.fromkeys(keys) if k not in self.kept]
+        later(self.step, idle_only=True)
+
+    def step(self) -> None:
+        """Draw and keep the next picture; the one after at the next idle call."""
+        if self.closed or not self.todo:
+            return
+        key = self.todo.pop(0)
+        with DRAWING:  # later() holds it too; also when called by hand
+            self.kept[key] = self.draw(key)
+        self.drawn += 1
+        while len(self.kept) > self.most:
+            self.kept.pop(next(iter(self.kept)))
+        later(self.step, idle_only=True)
+
+    def close(self) -> None:
+        self.closed = True
+        self.todo = []
         self.kept.clear()

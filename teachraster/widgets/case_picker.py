@@ -15,6 +15,7 @@ those both panels move every copy back onto the first (:func:`copy_offsets`,
 from __future__ import annotations
 
 import html
+from types import SimpleNamespace
 
 import ipywidgets as widgets
 import numpy as np
@@ -22,6 +23,7 @@ from matplotlib.patches import Rectangle
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
+from .ahead import PicturesAhead
 from .common import (
     Shown,
     close_tree,
@@ -31,7 +33,12 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
+
+#: What the picker holds about the picture on show (set by ``_run`` and ``_draw``): a picture
+#: drawn ahead brings them with it.
+PICTURE_STATE = ("_case", "owner", "passed", "failure", "naive_counts", "difference", "offsets",
+                 "copies", "naive_copies", "_box", "hubs", "view")  # fmt: skip
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
 NONE, SEVERAL = -1, -2
@@ -330,16 +337,16 @@ class CasePicker:
                                      layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.method = widgets.ToggleButtons(options=hardcases.FILL_METHODS, value=method)
         self._style = style
-        with style_context(style):
-            self.fig = new_figure((9.0, FIG_HEIGHT), self.backend)  # fits the notebook column
-            self.fig.set_layout_engine("constrained")
-            self.axes = self.fig.subplots(1, 2)
+        self._new_figure()
         self._run()
         self._draw()
         self._places: dict = {}  # (case, method) -> where the layout put the axes and title
         self._lay_out()
         self.display = FigureDisplay(self.fig, self.backend)
         self.info = widgets.HTML(self._info_html())
+        #: pictures of other cases and methods drawn while the kernel idles (image display
+        #: only), from the first change on: a lesson run without a page draws none
+        self._ahead = PicturesAhead(self._draw_elsewhere) if self.backend == "image" else None
         for control in (self.case, self.method):
             control.observe(lambda change: self.update(), "value")
         title = title_html(
@@ -349,6 +356,30 @@ class CasePicker:
         )
         controls = control_row([self.case, labelled("method", self.method)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+
+    def _new_figure(self) -> None:
+        with style_context(self._style):
+            self.fig = new_figure((9.0, FIG_HEIGHT), self.backend)  # fits the notebook column
+            self.fig.set_layout_engine("constrained")
+            self.axes = self.fig.subplots(1, 2)
+
+    def _draw_elsewhere(self, key) -> tuple:
+        """``(png, caption, state)`` of case and method ``key``, drawn on a figure of its own
+        (a second picker's, made as this one's and kept for the next): the picture this
+        picker draws there (:class:`~teachraster.widgets.ahead.PicturesAhead`)."""
+        other = getattr(self, "_elsewhere", None)
+        if other is None:
+            other = self._elsewhere = object.__new__(CasePicker)
+            other.backend, other._style, other._places = "image", self._style, self._places
+            other.case, other.method = SimpleNamespace(value=None), SimpleNamespace(value=None)
+            other._new_figure()
+        other.case.value, other.method.value = key
+        other._run()
+        other._draw()
+        other._lay_out()
+        other.fig.canvas.draw()  # as this picker's display draws it
+        state = {k: v for k, v in vars(other).items() if k in PICTURE_STATE}
+        return png_bytes(other.fig), other._info_html(), state
 
     def _run(self) -> None:
         c = hardcases.get_case(self.case.value)
@@ -492,12 +523,31 @@ class CasePicker:
             title.set_position(place[-1])
 
     def update(self) -> None:
-        """Run the chosen case with the chosen method and redraw."""
-        self._run()
-        self._draw()
-        self._lay_out()
-        self.info.value = self._info_html()
-        self.display.refresh()
+        """Run the chosen case with the chosen method and redraw (a picture drawn ahead for
+        them: shown at once)."""
+        key = (self.case.value, self.method.value)
+        kept = None if self._ahead is None else self._ahead.take(key)
+        if kept is not None:
+            png, caption, state = kept
+            vars(self).update(state)
+            self.info.value = caption
+            self.display.refresh(png)
+        else:
+            self._run()
+            self._draw()
+            self._lay_out()
+            self.info.value = self._info_html()
+            self.display.refresh()
+            if self._ahead is not None:
+                state = {k: v for k, v in vars(self).items() if k in PICTURE_STATE}
+                self._ahead.keep(key, (self.display.widget.value, self.info.value, state))
+        if self._ahead is not None:
+            # the likeliest next choices: the other method here, the cases either side
+            names, others = list(self.case.options), list(self.method.options)
+            i = names.index(key[0])
+            near = [names[j] for j in (i + 1, i - 1) if 0 <= j < len(names)]
+            keys = [(key[0], m) for m in others] + [(n, key[1]) for n in near]
+            self._ahead.want([k for k in keys if k != key])
 
     def _info_html(self) -> str:
         c = self._case
@@ -544,5 +594,7 @@ class CasePicker:
 
     def close(self) -> None:
         """Close every widget of the picker."""
+        if self._ahead is not None:
+            self._ahead.close()
         self.display.close()
         close_tree(self.widget)

@@ -176,13 +176,19 @@ class FigureDisplay:
             self.widget.add_class("teachraster-figure")  # a handle for browser tests
         self.refresh()
 
-    def refresh(self) -> None:
+    def refresh(self, png: bytes | None = None) -> None:
         """Show the figure's current state.
 
         ipympl: draw with the given ``draw`` and send the new pixels (``canvas.blit``), or
         without one ask the browser for a redraw (``draw_idle``); image: draw with Agg now
-        and replace the PNG.
+        and replace the PNG. ``png`` (image mode): show this picture, drawn before (a
+        picture kept, :class:`~teachraster.widgets.ahead.PicturesAhead`), instead.
         """
+        if png is not None:
+            if self.mode == "ipympl":
+                raise ValueError("png: only an image display shows a picture drawn before")
+            self.widget.value = png
+            return
         self.draws += 1
         canvas = self.fig.canvas
         if self.mode == "ipympl":

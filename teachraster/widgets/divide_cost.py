@@ -11,12 +11,14 @@ The slider sets that price; the chart re-prices every variant from its operation
 from __future__ import annotations
 
 import numbers
+from types import SimpleNamespace
 
 import ipywidgets as widgets
 
 from ..plotting.pareto import plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
 from ..study.operation_counts import CYCLES_1990S
+from .ahead import PicturesAhead
 from .common import (
     Shown,
     control_row,
@@ -25,7 +27,7 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
 #: The two error measures offered: the study's largest error and its mean.
 ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
@@ -105,15 +107,19 @@ class DivideCostExplorer(Shown):
             options=[(f"{v:g}", v) for v in divide_positions(divide)], value=float(divide),
             description="divide =", layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
+        self._style = style
         with style_context(style):
-            self.fig = new_figure((9.0, 5.5), self.backend)
-            self.fig.set_layout_engine("constrained")
-            self.ax = self.fig.add_subplot()
+            self._new_figure()
             self._plot()
             self._places: dict = {}  # error measure -> where the layout put the axes
             self._lay_out()
             self.display = FigureDisplay(self.fig, self.backend)
         self.info = widgets.HTML(self._info_html())
+        #: the other error measure's picture at this price, drawn while the kernel idles
+        #: (image display only), from the first change on: a lesson run without a page
+        #: draws none. The figure on show is then stale (a toggle shows the kept picture).
+        self._ahead = PicturesAhead(self._draw_elsewhere) if self.backend == "image" else None
+        self._stale = False
         self.divide.observe(lambda change: self.update(), "value")
         self.error.observe(lambda change: self.update(replot=True), "value")
         title = title_html(
@@ -123,6 +129,35 @@ class DivideCostExplorer(Shown):
         )
         controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+
+    def close(self) -> None:
+        """Close the figure and every widget of the box."""
+        if self._ahead is not None:
+            self._ahead.close()
+        super().close()
+
+    def _new_figure(self) -> None:
+        self.fig = new_figure((9.0, 5.5), self.backend)
+        self.fig.set_layout_engine("constrained")
+        self.ax = self.fig.add_subplot()
+
+    def _draw_elsewhere(self, key) -> tuple:
+        """``(png, caption, state)`` at divide price and error measure ``key``, drawn on a
+        figure of its own (a second explorer's, made as this one's and kept for the next):
+        the picture this explorer draws there (:class:`~teachraster.widgets.ahead.PicturesAhead`)."""
+        other = getattr(self, "_elsewhere", None)
+        if other is None:
+            other = self._elsewhere = object.__new__(DivideCostExplorer)
+            other.rows, other.backend, other._places = self.rows, "image", self._places
+            other.divide, other.error = SimpleNamespace(value=None), SimpleNamespace(value=None)
+            with style_context(self._style):
+                other._new_figure()
+        other.divide.value, other.error.value = key
+        with style_context(self._style):
+            other._plot()
+            other._lay_out()
+        other.fig.canvas.draw()  # as this explorer's display draws it
+        return png_bytes(other.fig), other._info_html(), {"front": other.front}
 
     @property
     def _ykey(self) -> str:
@@ -156,16 +191,38 @@ class DivideCostExplorer(Shown):
         self.ax.set_position(place)
 
     def update(self, replot: bool = False) -> None:
-        """Re-price the variants and redraw (the same artists unless the error measure changed)."""
-        if replot:
-            self._plot()
-            self._lay_out()
+        """Re-price the variants and redraw (the same artists unless the error measure changed;
+        a picture drawn ahead for this price and measure: shown at once)."""
+        key = (self.divide.value, self.error.value)
+        kept = None if self._ahead is None else self._ahead.take(key)
+        if kept is not None:
+            png, caption, state = kept
+            vars(self).update(state)
+            self.info.value = caption
+            self.display.refresh(png)
+            self._stale = True  # the figure still shows the picture before
         else:
-            rows = priced(self.rows, self.divide.value)
-            self.front = [r["variant"] for r in update_pareto(self.ax, self.art, rows, "cycles",
-                                                               y=self._ykey)]  # fmt: skip
-        self.info.value = self._info_html()
-        self.display.refresh()
+            if replot or self._stale:
+                with style_context(self._style):
+                    self._plot()
+                    self._lay_out()
+                self._stale = False
+            else:
+                rows = priced(self.rows, self.divide.value)
+                self.front = [r["variant"] for r in update_pareto(self.ax, self.art, rows,
+                                                                   "cycles", y=self._ykey)]  # fmt: skip
+            self.info.value = self._info_html()
+            self.display.refresh()
+            if self._ahead is not None:
+                self._ahead.keep(key, (self.display.widget.value, self.info.value,
+                                       {"front": self.front}))  # fmt: skip
+        if self._ahead is not None:
+            # the likeliest next pictures: the other measure here, the prices either side
+            prices = [v for _, v in self.divide.options]
+            i = prices.index(key[0])
+            near = [prices[j] for j in (i + 1, i - 1) if 0 <= j < len(prices)]
+            self._ahead.want([(key[0], e) for e in ERRORS if e != key[1]]
+                             + [(p, key[1]) for p in near])  # fmt: skip
 
     def _info_html(self) -> str:
         """What the slider changes: the divide's share of the exact divide's cost, and what

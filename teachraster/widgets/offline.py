@@ -39,6 +39,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..plotting.frames import encode_png, frame_rgba
+from .dragging import DragFigure
 
 #: How an offline page shows a widget (the command counts them per lesson).
 KINDS = ("live", "pictured", "missing")
@@ -397,9 +398,15 @@ def _pictures(tree) -> list[np.ndarray]:
 
 
 def _texts(tree) -> list[str]:
-    """The plain text of every text widget of the tree, in order."""
-    return [html_text(w.value) for w in _walk(tree)
-            if isinstance(w, (widgets.HTML, widgets.HTMLMath, widgets.Label))]  # fmt: skip
+    """The plain text of every text widget of the tree, and of every page figure's caption
+    (the line above a slider explorer's picture), in order."""
+    texts = []
+    for w in _walk(tree):
+        if isinstance(w, (widgets.HTML, widgets.HTMLMath, widgets.Label)):
+            texts.append(html_text(w.value))
+        elif isinstance(w, DragFigure):
+            texts.append(html_text(w.caption))
+    return texts
 
 
 def _walk(widget):

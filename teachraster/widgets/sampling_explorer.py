@@ -10,15 +10,22 @@ from __future__ import annotations
 
 import ipywidgets as widgets
 
+from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.sampling import KERNELS, plot_sampling, sample_signal, update_sampling
+from .ahead import TogglesAhead
 from .common import (
     Shown,
     control_row,
+    fit_width,
     labelled,
     style_context,
     title_html,
 )
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import new_figure, resolve_backend
+from .live_slider import LiveSlider, info_line, slider_display
+
+#: The picture's alternative text in the page
+ALT = "the signal prefiltered, sampled and reconstructed, in three panels"
 
 
 class SamplingExplorer(Shown):
@@ -60,11 +67,16 @@ class SamplingExplorer(Shown):
     def __init__(self, rate: int = 32, width: float = 0.0, kernel: str = "box", *,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.backend = resolve_backend(backend)
-        self.rate = widgets.IntSlider(value=rate, min=8, max=64, step=4, description="samples")
-        self.width = widgets.FloatSlider(value=width, min=0.0, max=4.0, step=0.25,
-                                         description="filter")  # fmt: skip
+        # page sliders whose positions are drawn ahead while the kernel idles (those of the
+        # one moved last): a key or a drag shows the page's own picture (issue 31)
+        self.rate = LiveSlider(value=rate, min=8, max=64, step=4, description="samples",
+                               readout_format=".0f",
+                               layout=fit_width(widgets.Layout(width="320px")))  # fmt: skip
+        self.width = LiveSlider(value=width, min=0.0, max=4.0, step=0.25, description="filter",
+                                readout_format=".2f",
+                                layout=fit_width(widgets.Layout(width="320px")))  # fmt: skip
         self.kernel = widgets.ToggleButtons(options=KERNELS, value=kernel)
-        self.result = sample_signal(self.rate.value, self.width.value, self.kernel.value)
+        self._compute_at(self.rate.value, 0)
         with style_context(style):
             self.fig = new_figure((9.0, 7.5), self.backend)
             self.fig.set_layout_engine("constrained")
@@ -74,27 +86,101 @@ class SamplingExplorer(Shown):
             # about two thirds of each picture (issue 31: 274-327 ms a control)
             self.fig.canvas.draw()
             self.fig.set_layout_engine("none")
-            self.display = FigureDisplay(self.fig, self.backend)
-        self.info = widgets.HTML(self._info_html())
-        for control in (self.rate, self.width, self.kernel):
+            self._blit = self._plan_blit(axes)
+            dragged = lambda: self.rate.dragging or self.width.dragging  # noqa: E731
+            self.display = slider_display(self.fig, self.backend, draw=self._draw_figure,
+                                          drafting=dragged, alt=ALT)  # fmt: skip
+        # the caption of the page's picture: a picture drawn ahead brings its own
+        self.info, info_widgets = info_line(self.display)
+        self.info.value = self._info_html()
+        for control in (self.rate, self.width):
             control.observe(lambda change: self.update(), "value")
+        # another shape: every picture drawn ahead is stale
+        self.kernel.observe(lambda change: self.update(restart=True), "value")
         title = title_html(
             "Prefilter → sample → reconstruct",
             "Yellow: the signal is above the Nyquist limit (half the sample rate). Widen the "
             "filter until the reconstruction there is flat instead of a false wave.",
         )
         controls = control_row([self.rate, self.width, labelled("shape", self.kernel)])
-        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+        self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
+        self._ahead = self._toggles = None
+        if self.backend != "ipympl":
+            self._ahead = self.display.ahead([self.rate, self.width], self)
+            #: the other shape's picture here, drawn while the kernel idles (for a page)
+            self._toggles = TogglesAhead(self.display, self, KERNELS)
+            self._ahead.on_listening.append(self._toggles_ahead)
 
-    def update(self) -> None:
-        """Recompute from the controls and move the same lines."""
-        self.result = sample_signal(self.rate.value, self.width.value, self.kernel.value)
+    def _plan_blit(self, axes) -> LayeredBlit:
+        """A control moves the yellow bands and the curves only: the axes, their ticks and
+        titles stay in a cached background; what lies above them (the grey signal over the
+        band; the frames, ticks and keys over every curve) in still layers. A full draw
+        cost 200-300 ms a picture (issue 31: 274-420 ms a control in the page)."""
+        a = self.art
+        # in the order plot_sampling drew them (equal zorders: the faint curve over the samples)
+        curves = [a.filtered, a.stems, a.filtered_faint, a.ideal, a.reconstructed]
+        over = [child for ax in axes for child in (*ax.spines.values(), ax.xaxis, ax.yaxis)]
+        keys = [ax.get_legend() for ax in axes if ax.get_legend() is not None]
+        return LayeredBlit(self.fig, [(MOVING, a.spans), (STILL, [a.signal]),
+                                      (MOVING, [c for c in curves if c is not None]),
+                                      (STILL, over + keys)])  # fmt: skip
+
+    def _draw_figure(self) -> None:
+        # the key names the prefiltered line "none (= signal)" at width 0: a layer per text
+        self._blit.draw(key=self.art.filtered.axes.get_legend().get_texts()[1].get_text())
+
+    def update(self, restart: bool = False) -> None:
+        """Recompute from the controls and move the same lines (``restart``: the shape
+        changed, the pictures drawn ahead are stale; the shape's picture drawn ahead here
+        is sent at once)."""
+        where = (self.rate.value, self.width.value)
+        kept = self._toggles.take(where, self.kernel.value) if restart and self._toggles else None
+        if kept is not None:
+            rgba, caption, state = kept
+            vars(self).update(state)
+            self.info.value = caption
+            self.display.refresh(rgba)
+            self._set_artists()  # for the next picture drawn
+        else:
+            self._compute_at(self.rate.value, 0)
+            self._set_artists()
+            self.info.value = self._info_html()
+            self.display.refresh()
+        if self._ahead is not None and self._ahead.listening:
+            self._toggles_ahead()
+        if restart and self._ahead is not None:
+            self._ahead.restart()
+
+    def _toggles_ahead(self) -> None:
+        """The other shape at the samples and filter on show, drawn while the kernel idles."""
+        self._toggles.start((self.rate.value, self.width.value), self.kernel.value)
+
+    # what the pictures drawn ahead need (teachraster.widgets.ahead.FramesAhead and
+    # TogglesAhead)
+    def _compute_at(self, value, which) -> None:
+        """The result with slider ``which`` (0: samples, 1: filter) at ``value``, the other
+        control where it is; or, ``which`` a shape (``TogglesAhead``), with that shape at
+        ``value`` = (samples, filter)."""
+        kernel = self.kernel.value
+        if isinstance(which, str):
+            (rate, width), kernel = value, which
+        elif which == 0:
+            rate, width = value, self.width.value
+        else:
+            rate, width = self.rate.value, value
+        self.result = sample_signal(int(round(rate)), width, kernel)
+
+    def _set_artists(self) -> None:
         update_sampling(self.art, self.result)
-        self.info.value = self._info_html()
-        self.display.refresh()
+
+    def close(self) -> None:
+        """Close the figure (and what it draws ahead) and every widget of the box."""
+        if self._toggles is not None:
+            self._toggles.close()
+        super().close()
 
     def _info_html(self) -> str:
         r = self.result
-        return (f"{self.rate.value} samples per unit: Nyquist limit {r.nyquist:g} cycles, "
+        return (f"{len(r.samples)} samples per unit: Nyquist limit {r.nyquist:g} cycles, "
                 f"passed from x = {r.alias_from:.2f} on · RMS error of the reconstruction "
                 f"against an ideal low-pass: <b>{r.rms_error:.3f}</b>")  # fmt: skip

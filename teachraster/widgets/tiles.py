@@ -19,7 +19,8 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import FigureDisplay, html_escape, new_figure, resolve_backend
+from .display import html_escape, new_figure, resolve_backend
+from .live_slider import LiveSlider, info_line, slider_display
 
 #: Block-size choices: llvmpipe's, and smaller hierarchies that read on a small grid.
 SIZE_OPTIONS = [
@@ -80,10 +81,11 @@ class TileExplorer(Holdable):
             options.append((" / ".join(map(str, block_sizes)), block_sizes))
         self.sizes = widgets.Dropdown(options=options, value=block_sizes)
         self.traversal = widgets.Dropdown(options=list(TRAVERSALS), value=traversal)
-        self.level = widgets.IntSlider(value=0, min=0, max=len(block_sizes) - 1,
-                                       description="level", continuous_update=True)  # fmt: skip
+        # in the page, its few positions drawn ahead (ahead.FramesAhead): a drag shows the
+        # page's own pictures (issue 31: 1.3-5.5 fps through the kernel)
+        self.level = LiveSlider(value=0, min=0, max=len(block_sizes) - 1, step=1,
+                                description="level", readout_format=".0f")  # fmt: skip
         self.block = widgets.IntSlider(value=0, min=0, max=0, description="block")
-        self.caption = widgets.HTML()
         self.counters = widgets.HTML()
         self._fill()
         with style_context(style):
@@ -95,9 +97,13 @@ class TileExplorer(Holdable):
             self.artists = None
             self._draw_blocks()
             _fit_margins(fig, ax)
-            self.display = FigureDisplay(fig, self.backend, draw=self._draw_figure)
+            self.display = slider_display(fig, self.backend, draw=self._draw_figure,
+                                          drafting=lambda: self.level.dragging,
+                                          alt="the blocks of the tiled fill")  # fmt: skip
+        # the caption (the page figure's own line: a picture drawn ahead brings its own)
+        self.info, info_widgets = info_line(self.display)
         self.sizes.observe(self._on_refill, "value")
-        self.traversal.observe(self._on_refill, "value")
+        self.traversal.observe(self._on_traversal, "value")
         self.level.observe(lambda _: None if self._quiet else self.show_level(), "value")
         self.block.observe(lambda _: None if self._quiet else self.show_block(), "value")
         title = title_html(
@@ -106,9 +112,12 @@ class TileExplorer(Holdable):
         )
         menus = control_row([labelled("block sizes", self.sizes),
                               labelled("traversal", self.traversal)])  # fmt: skip
-        self.widget = widgets.VBox([title, menus, self.level, self.block, self.caption,
+        self.widget = widgets.VBox([title, menus, self.level, self.block, *info_widgets,
                                     self.display.widget, self.counters])  # fmt: skip
+        self._ahead = None
         self.show_level()
+        if self.backend != "ipympl":
+            self._ahead = self.display.ahead(self.level, self)  # drawn while the kernel idles
 
     # -- state ----------------------------------------------------------------------------
     def _fill(self) -> None:
@@ -118,6 +127,8 @@ class TileExplorer(Holdable):
         self.order = self.blocks.visit_order(self.traversal.value)
         with self._holding():
             self.level.max = len(self.sizes.value) - 1
+            # as an IntSlider does, a value beyond the new end moves to it
+            self.level.value = min(self.level.value, self.level.max)
             self.block.max = len(self.blocks)
         self.counters.value = _counter_table(self.blocks.counters)
 
@@ -141,15 +152,35 @@ class TileExplorer(Holdable):
     def _draw_figure(self) -> None:
         self._blit.draw()
 
+    def _on_traversal(self, _change) -> None:
+        # the same fill and blocks, visited in another order: the blocks' artist redrawn in
+        # that order over the cached background (a new fill and artists cost 150 ms and
+        # more, and a full draw of the background; issue 31: 126-177 ms in the page)
+        self.order = self.blocks.visit_order(self.traversal.value)
+        self.artists.set_order(self.blocks, self.order)
+        self.show_level()
+        self._restart_ahead()
+
     def _on_refill(self, _change) -> None:
         self._fill()
         self._draw_blocks()
         self.show_level()
+        self._restart_ahead()
+
+    def _restart_ahead(self) -> None:
+        # the pictures drawn ahead show the blocks before
+        if self._ahead is not None:
+            self._ahead.restart()
 
     # -- views ----------------------------------------------------------------------------
     def show_level(self, level: int | None = None) -> None:
         """Show the hierarchy down to block size ``block_sizes[level]``."""
-        level = self.level.value if level is None else int(level)
+        self._compute_at(self.level.value if level is None else level)
+        self._refresh()
+
+    # what the pictures drawn ahead need (teachraster.widgets.ahead.FramesAhead)
+    def _compute_at(self, level) -> None:
+        level = int(round(level))
         self.shown = block_mask(self.blocks, level=level)
         c, size = self.blocks.counters, self.sizes.value[level]
         text = (
@@ -161,7 +192,12 @@ class TileExplorer(Holdable):
         elif level == len(self.sizes.value) - 1:
             text += f"; {c.pixel_tests} pixel tests in the partial ones"
         self.caption_text = text
-        self._refresh()
+
+    def _set_artists(self) -> None:
+        self.artists.show(self.shown)
+
+    def _info_html(self) -> str:
+        return html_escape(self.caption_text)
 
     def show_block(self, k: int | None = None) -> None:
         """Show the first ``k`` blocks of the traversal (0: none yet), captioning the last."""
@@ -182,9 +218,15 @@ class TileExplorer(Holdable):
         self._refresh()
 
     def _refresh(self) -> None:
-        self.artists.show(self.shown)
-        self.caption.value = html_escape(self.caption_text)
+        self._set_artists()
+        self.info.value = self._info_html()
         self.display.refresh()
+
+    def _offline_page_(self):
+        # every block of the traversal, not the few levels the page draws ahead
+        from .offline import swept_page
+
+        return swept_page(self)
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
