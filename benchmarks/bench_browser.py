@@ -67,7 +67,11 @@ from browser_js import (
     MARK_RELEASE,
     MOVES,
     RELEASED,
+    TIMES,
     latency,
+)
+from browser_js import (
+    settle as wait_to_settle,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -287,14 +291,14 @@ def bench_player(page, tries):
     # dragged along the track gives (Playwright's own mouse moves are slower than that here)
     first.click()
     page.evaluate(COUNT, [canvas, "data-step"])
-    page.evaluate(DRAG, f"{p} input[type=range]")
+    page.evaluate(DRAG, [f"{p} input[type=range]", TIMES["drag"]])
     drag = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
     drag_fps = (len(drag) - 1) / ((drag[-1] - drag[0]) / 1e3) if len(drag) > 2 else 0.0
     # play at 20 ms/step for 2 s
     first.click()
     page.evaluate(COUNT, [canvas, "data-step"])
     page.locator(f"{p} button[aria-label='play']").click()
-    page.wait_for_timeout(2000)
+    page.wait_for_timeout(TIMES["drag"] + 500)
     page.locator(f"{p} button[aria-label^='pause']").click()
     played = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
     play_fps = (len(played) - 1) / ((played[-1] - played[0]) / 1e3) if len(played) > 2 else 0.0
@@ -348,7 +352,7 @@ def bench_editor(page, tries, info):
         page.mouse.down()
         page.evaluate(MOVES, {"sel": ".bench-editor .tr-drag img",
                               "points": [at(hx - d, hy) for d in (0, 1, 2, 3, 4, 3, 2, 1)],
-                              "ms": 2000})  # fmt: skip
+                              "ms": TIMES["drag"] + 500})  # fmt: skip
         page.evaluate(MARK_RELEASE)
         page.mouse.up()
         page.wait_for_timeout(400)
@@ -422,8 +426,8 @@ def bench_slider(page, tries, css_class, label="tilt", toggle=None):
                    lambda: slider.press(slider.evaluate(room)), tries, ARM_SECOND)  # fmt: skip
     page.wait_for_timeout(300)
     page.evaluate(COUNT, [img, "data-frames"])
-    page.evaluate(DRAG_SLIDER, target)
-    page.wait_for_timeout(2500)  # the kernel catches up: a value or two, never a queue
+    page.evaluate(DRAG_SLIDER, [target, TIMES["drag"]])
+    wait_to_settle(page)
     times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
     end = page.evaluate("() => window.__dragEnd")
     during = [t for t in times if t <= end]
@@ -457,8 +461,8 @@ def first_drag_fps(page, css_class, label) -> float:
     # pressed as a pointer presses it (the kernel hears of it), then dragged
     page.evaluate("(sel) => document.querySelector(sel).dispatchEvent("
                   "new PointerEvent('pointerdown', { bubbles: true }))", target)  # fmt: skip
-    page.evaluate(DRAG_SLIDER, target)
-    page.wait_for_timeout(2500)
+    page.evaluate(DRAG_SLIDER, [target, TIMES["drag"]])
+    wait_to_settle(page)
     times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
     end = page.evaluate("() => window.__dragEnd")
     during = [t for t in times if t <= end]
@@ -554,6 +558,8 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     # the smoke run shows every row works; its figures are not the report's (CI time)
     tries = 2 if args.quick else max(args.tries, 3)
+    if args.quick:
+        TIMES.update(drag=600, settle=1200)
     reps = 1 if args.quick else tries
     from playwright.sync_api import sync_playwright
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from browser_explorables import rate, stop_count
-from browser_js import COUNT, MARK_RELEASE, MOVES, RELEASED, latency
+from browser_js import COUNT, MARK_RELEASE, MOVES, RELEASED, TIMES, latency, settle
 
 #: The notebook cells (the kernel widgets of lessons 04, 06, 07, 08 and 10, each as its
 #: lesson builds it), tagged with a CSS class the benchmark finds each by. Lesson 06's rows:
@@ -97,7 +97,7 @@ def sweep(handle) -> list[float]:
     return [cycle[(start + 1 + i) % len(cycle)] for i in range(len(cycle))]
 
 
-def drag_noui(page, p, k=0, ms=1500) -> tuple[float, float]:
+def drag_noui(page, p, k=0, ms=None) -> tuple[float, float]:
     """Drag the widget's ``k``-th slider to and fro over its positions (:func:`sweep`), a
     move at every animation frame, for ``ms``; pictures per second, ms from the release to
     the last."""
@@ -111,11 +111,11 @@ def drag_noui(page, p, k=0, ms=1500) -> tuple[float, float]:
     page.evaluate(COUNT, [watch, attr])
     page.mouse.move(box["x"] + box["width"] / 2, y)
     page.mouse.down()
-    page.evaluate(MOVES, {"sel": f"{p} .noUi-handle", "points": points, "ms": ms,
+    page.evaluate(MOVES, {"sel": f"{p} .noUi-handle", "points": points, "ms": ms or TIMES["drag"],
                           "mouse": True})  # fmt: skip
     page.evaluate(MARK_RELEASE)
     page.mouse.up()
-    page.wait_for_timeout(2500)  # the kernel catches up
+    settle(page)
     fps, after = rate(stop_count(page), page.evaluate("() => window.__dragEnd"),
                       page.evaluate(RELEASED))  # fmt: skip
     idle(page)

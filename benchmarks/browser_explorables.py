@@ -8,7 +8,18 @@ from __future__ import annotations
 import math
 import statistics
 
-from browser_js import ARM, COUNT, DONE, DRAG_SLIDER, DT, MARK_RELEASE, MOVES, RELEASED, latency
+from browser_js import (
+    ARM,
+    COUNT,
+    DONE,
+    DRAG_SLIDER,
+    DT,
+    MARK_RELEASE,
+    MOVES,
+    RELEASED,
+    TIMES,
+    latency,
+)
 
 #: The notebook cells: one explorable each, tagged with a CSS class the benchmark finds it by.
 CELLS = [
@@ -46,7 +57,7 @@ def rate(times, end, release=None) -> tuple[float, float]:
     return fps, max(0.0, times[-1] - release) if times else math.nan
 
 
-def drag_canvas(page, sel, start, offsets=SWING, ms=1500) -> tuple[float, float, float]:
+def drag_canvas(page, sel, start, offsets=SWING, ms=None) -> tuple[float, float, float]:
     """Press the canvas ``sel`` at ``start`` (its px at natural size), move by ``offsets`` in
     turn at every animation frame for ``ms``, release; returns the ms from the press to the
     first picture, the pictures per second and the ms from the last move to the last picture.
@@ -66,7 +77,7 @@ def drag_canvas(page, sel, start, offsets=SWING, ms=1500) -> tuple[float, float,
     page.evaluate(ARM, [sel, ["pointerdown"], sel, "data-frames"])
     page.mouse.move(*points[0])
     page.mouse.down()
-    page.evaluate(MOVES, {"sel": sel, "points": points, "ms": ms})
+    page.evaluate(MOVES, {"sel": sel, "points": points, "ms": ms or TIMES["drag"]})
     page.evaluate(MARK_RELEASE)
     page.mouse.up()
     page.wait_for_timeout(500)
@@ -85,7 +96,7 @@ def drag_range(page, sel, watch) -> tuple[float, float]:
     pictures per second on ``watch``'s ``data-frames``, ms from release to the last one."""
     page.locator(sel).first.scroll_into_view_if_needed()
     page.evaluate(COUNT, [watch, "data-frames"])
-    page.evaluate(DRAG_SLIDER, sel)
+    page.evaluate(DRAG_SLIDER, [sel, TIMES["drag"]])
     page.wait_for_timeout(500)
     return rate(stop_count(page), page.evaluate("() => window.__dragEnd"))
 

@@ -30,11 +30,22 @@ COUNT = """([watch, attr]) => {
   });
   c.ob.observe(el, { attributes: true });
 }"""
-DRAG = """async (sel) => {
+#: How long each drag lasts and how long the kernel is then given to catch up, in ms. The
+#: smoke run (``--quick``, CI) shortens both: it shows that every row works; its figures are
+#: not the report's (CI time).
+TIMES = {"drag": 1500, "settle": 2500}
+
+
+def settle(page) -> None:
+    """Wait while the kernel catches up after a drag: a value or two, never a queue."""
+    page.wait_for_timeout(TIMES["settle"])
+
+
+DRAG = """async ([sel, ms]) => {
   const r = document.querySelector(sel);
   const t0 = performance.now();
   let v = 0;
-  while (performance.now() - t0 < 1500) {
+  while (performance.now() - t0 < ms) {
     await new Promise(requestAnimationFrame);
     v = (v + 1) % (Number(r.max) + 1);
     r.value = String(v);
@@ -45,12 +56,12 @@ DRAG = """async (sel) => {
 }"""
 # A slider dragged along its track: its next position at every animation frame, through
 # all its steps (min to max, then again from min), released at the end.
-DRAG_SLIDER = """async (sel) => {
+DRAG_SLIDER = """async ([sel, ms]) => {
   const r = document.querySelector(sel);
   const lo = Number(r.min), step = Number(r.step) || 1;
   const n = Math.floor((Number(r.max) - lo) / step + 1e-9) + 1;
   const t0 = performance.now();
-  for (let k = 1; performance.now() - t0 < 1500; k++) {
+  for (let k = 1; performance.now() - t0 < ms; k++) {
     await new Promise(requestAnimationFrame);
     r.value = String(lo + (k % n) * step);
     r.dispatchEvent(new Event("input", { bubbles: true }));

@@ -295,6 +295,62 @@ def _open_notebook(page, base: str, name: str, in_app: bool) -> None:
     page.goto(f"{base}/lab/tree/{name}?reset")
 
 
+#: A REST call from a page of the server (the server wants the page's XSRF cookie on writes).
+API = """async ([method, path, body]) => {
+  const xsrf = (document.cookie.match(/_xsrf=([^;]+)/) || [])[1] || "";
+  const r = await fetch(path, { method, body, headers: { "X-XSRFToken": xsrf,
+    "Content-Type": "application/json" } });
+  return r.status;
+}"""
+
+
+def put_notebook(page, cells, name: str) -> None:
+    """Write a notebook of ``cells`` (code) to the server's folder as ``name``, from ``page``
+    (one of the server's pages)."""
+    import nbformat
+
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}  # fmt: skip
+    body = json.dumps({"type": "notebook", "format": "json", "content": nb})
+    assert page.evaluate(API, ["PUT", f"/api/contents/{name}", body]) in (200, 201)
+
+
+def open_cells(page, base: str, cells, name: str, app: str = "lab/tree") -> None:
+    """A notebook of ``cells`` written as ``name`` and opened alone in ``app`` ("lab/tree",
+    JupyterLab, or "notebooks", Notebook 7) with a fresh kernel; not run.
+
+    Every kernel is stopped first. In JupyterLab the page already loaded opens it through its
+    own File menu (``_open_notebook``): a page load costs the browser 3 to 4 s of CPU, and
+    these tests opened some twenty notebooks of their own, two loads each."""
+    _shut_down_kernels(base)  # closes this page's tabs when it is the lab's
+    if not (app == "lab/tree" and _lab_is_empty(page, base)):
+        page.goto(f"{base}/lab?reset")  # the REST calls go from a page of the server
+        page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
+    put_notebook(page, cells, name)
+    if app == "lab/tree":
+        _open_notebook(page, base, name, in_app=True)
+    else:
+        page.goto(f"{base}/{app}/{name}")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+
+
+def _lab_is_empty(page, base: str) -> bool:
+    """The page is this server's JupyterLab with no notebook or dialog open."""
+    return page.url.startswith(f"{base}/lab") and page.evaluate(
+        "() => !document.querySelector('.jp-Notebook, .jp-Dialog')"
+    )
+
+
+def open_file(page, base: str, name: str) -> None:
+    """Open notebook ``name`` (under the server's root) alone in JupyterLab with a fresh
+    kernel, in the page already loaded where it can (``open_cells``); not run."""
+    _shut_down_kernels(base)
+    _open_notebook(page, base, name, in_app=_lab_is_empty(page, base))
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+
+
 @dataclass(frozen=True)
 class BrowserRun:
     """What the page showed after Run All Cells, and the notebook as JupyterLab saved it."""

@@ -22,7 +22,7 @@ import pytest
 from notebook_browser import CHROMIUM as CHROMIUM  # the other browser tests read these here
 from notebook_browser import CHROMIUM_ARGS as CHROMIUM_ARGS
 from notebook_browser import _shut_down_kernels as _shut_down_kernels  # for the other files
-from notebook_browser import listed, unavailable
+from notebook_browser import listed, open_file, unavailable
 
 ROOT = Path(__file__).resolve().parents[1]
 LESSON = "01_span_tables.ipynb"
@@ -79,8 +79,7 @@ def test_lesson_01_plays_and_steps_in_the_browser(lab, page, tmp_path):
     the caption in the page; the kernel hears of the step when Play is paused."""
     from playwright.sync_api import expect
 
-    page.goto(f"{lab}/lab/tree/{LESSON}")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    open_file(page, lab, LESSON)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")

@@ -22,6 +22,7 @@ import urllib.request
 
 import pytest
 from browser_cells import run_new_cell
+from notebook_browser import open_cells
 from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _put_notebook, _stop_kernels
 
@@ -70,12 +71,8 @@ TITLES.update(pixels="Click the pixels this triangle covers", order="Order the s
 @pytest.fixture(scope="module")
 def lesson(lab, page):  # noqa: F811
     """The notebook of every explorable, run (Run All) in a fresh kernel."""
-    _shut_down_kernels(lab)
     page.set_viewport_size({"width": 1400, "height": 900})
-    page.goto(f"{lab}/lab?reset")
-    page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
-    _put_notebook(page, CELLS, NAME)
-    page.goto(f"{lab}/lab/tree/{NAME}?reset")
+    open_cells(page, lab, CELLS, NAME)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")

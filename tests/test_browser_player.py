@@ -12,9 +12,9 @@ Playwright or Chromium is missing (CI makes them required).
 from __future__ import annotations
 
 import pytest
+from notebook_browser import open_cells
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_explorables import _kernel
-from test_browser_saved import _put_notebook
 
 pytestmark = [
     pytest.mark.browser,
@@ -31,13 +31,8 @@ PLAYER = [
 def _run(tab, base: str, cells, name: str, app: str = "lab/tree") -> None:
     """A notebook of ``cells`` written as ``name``, opened in ``app`` with a fresh kernel,
     every cell run."""
-    _shut_down_kernels(base)
     tab.set_viewport_size({"width": 1400, "height": 900})
-    tab.goto(f"{base}/lab?reset")  # the REST calls go from a page of the server
-    tab.wait_for_selector("#jp-main-statusbar", timeout=90_000)
-    _put_notebook(tab, cells, name)
-    tab.goto(f"{base}/{app}/{name}" + ("?reset" if app == "lab/tree" else ""))
-    tab.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    open_cells(tab, base, cells, name, app=app)
     tab.wait_for_timeout(2000)  # the kernel is up
     tab.keyboard.press("Escape")
     tab.click(".lm-MenuBar-itemLabel:text-is('Run')")

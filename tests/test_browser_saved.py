@@ -18,8 +18,8 @@ from __future__ import annotations
 import json
 import urllib.request
 
-import nbformat
 import pytest
+from notebook_browser import API, open_cells, put_notebook
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 
 pytestmark = [
@@ -44,14 +44,6 @@ CELLS = [
 HINT = "Run All (Run \u25b8 Run All Cells) to bring it back"
 
 
-API = """async ([method, path, body]) => {
-  const xsrf = (document.cookie.match(/_xsrf=([^;]+)/) || [])[1] || "";
-  const r = await fetch(path, { method, body, headers: { "X-XSRFToken": xsrf,
-    "Content-Type": "application/json" } });
-  return r.status;
-}"""
-
-
 def _api(tab, method: str, path: str, body: str | None = None) -> int:
     """A REST call from the page (the server wants the page's XSRF cookie on writes)."""
     return tab.evaluate(API, [method, path, body])
@@ -59,22 +51,12 @@ def _api(tab, method: str, path: str, body: str | None = None) -> int:
 
 def _put_notebook(tab, cells=CELLS, name=NAME) -> None:
     """Write a notebook of ``cells`` (code) to the lab's folder as ``name``."""
-    nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}  # fmt: skip
-    body = json.dumps({"type": "notebook", "format": "json", "content": nb})
-    assert _api(tab, "PUT", f"/api/contents/{name}", body) in (200, 201)
+    put_notebook(tab, cells, name)
 
 
 def _run_all(base: str, tab, cells, name) -> None:
     """A fresh kernel, a notebook of ``cells`` written as ``name``, opened, every cell run."""
-    _shut_down_kernels(base)
-    tab.goto(f"{base}/lab?reset")
-    tab.wait_for_selector("#jp-main-statusbar", timeout=90_000)
-    _put_notebook(tab, cells, name)
-    tab.goto(f"{base}/lab/tree/{name}?reset")
-    tab.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    open_cells(tab, base, cells, name)
     tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     assert tab.locator(".jp-FileBrowser").first.is_visible()  # the file browser is open
     tab.click(".lm-MenuBar-itemLabel:text-is('Run')")

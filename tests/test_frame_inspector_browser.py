@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 import pytest
+from notebook_browser import open_file
 from test_browser import WHY, _shut_down_kernels, _wait_changed, lab, page  # noqa: F401
 
 pytestmark = [
@@ -22,9 +23,7 @@ LESSON = "11_debugging_a_frame.ipynb"
 
 
 def test_clicking_the_frame_shows_that_pixels_history(lab, page):  # noqa: F811
-    _shut_down_kernels(lab)
-    page.goto(f"{lab}/lab/tree/{LESSON}?reset")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    open_file(page, lab, LESSON)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")

@@ -23,8 +23,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import nbformat
 import pytest
 import run_once
+from test_packaging import _graded_figures, _graded_streams, _streams
 
 from teachraster.cli import main
 from teachraster.exercises.student_version import student_text
@@ -173,6 +175,13 @@ def test_feedback_carries_the_checkers_explanation(course, part):
             errors = [o for o in errors if o["output_type"] == "error"]
             assert [e["ename"] for e in errors] == ["AssertionError"] * failures, path.name
             assert all("not implemented yet" in e["evalue"] for e in errors)
+        # the untouched submission is the student version run top to bottom (the only run of
+        # it): each check says "not implemented yet" in its report and its figure, no traceback
+        nb = nbformat.read(course / "autograded" / "untouched" / path.stem / path.name, 4)
+        text = _graded_streams(nb)
+        assert text.count("not implemented yet") == graded, (path.name, text)
+        assert "Traceback" not in _streams(nb), path.name
+        assert _graded_figures(nb) == graded, path.name
 
 
 # -- the grading convention, read from the notebooks (no nbgrader needed) ----------------------

@@ -152,27 +152,18 @@ def test_exercise_teacher_version_passes_and_draws_every_check(path):
     assert _graded_figures(nb) == n  # each check shows its report as a figure too
 
 
-@pytest.mark.notebook
 @pytest.mark.parametrize("path", EXERCISES, ids=EX_IDS)
-def test_exercise_student_version_runs_and_says_not_implemented(path, tmp_path, monkeypatch):
+def test_exercise_student_version_hides_the_solutions(path, tmp_path):
+    """The student version has stubs where the solutions were. Run top to bottom it says "not
+    implemented yet" at each check: nbgrader's round trip runs exactly this notebook (its
+    release, checked equal to ``student-version``'s) as the untouched submission and checks
+    that (tests/test_nbgrader.py), so it is not run a second time here."""
     from teachraster.cli import main
 
-    monkeypatch.setenv("MPLBACKEND", "Agg")
     assert main(["student-version", str(path), "-o", str(tmp_path)]) == 0
     student = nbformat.read(tmp_path / path.name, as_version=4)
     assert "### BEGIN SOLUTION" not in "".join(c.source for c in student.cells)
     assert "raise NotImplementedError()" in "".join(c.source for c in student.cells)
-    execute(student, tmp_path, allow_errors=True)  # top to bottom, as "Run All" would not
-    n = len(_graded(nbformat.read(path, as_version=4)))
-    text = _graded_streams(student)
-    assert text.count("not implemented yet") == n, text
-    assert "Traceback" not in _streams(student)
-    # each check cell, and only these, ends with nbgrader's failing test: an AssertionError
-    # carrying the checker's explanation (issue 17)
-    errors = [o for c in student.cells for o in c.get("outputs", []) if o.output_type == "error"]
-    assert [e.ename for e in errors] == ["AssertionError"] * n
-    assert all("not implemented yet" in e.evalue for e in errors)
-    assert _graded_figures(student) == n
 
 
 def quick_start_commands():
