@@ -506,6 +506,18 @@ def summary(label, ms, rt, target=""):
     print(f"{label:<46}{med:>8.1f}{top:>8.1f}{med / rt:>8.2f}  {target}")
 
 
+class _Stopwatch:
+    """Runs a part of the benchmark and tells stderr how long it took (where the run's time
+    goes: the smoke run is part of CI)."""
+
+    def __call__(self, name, fn, *args):
+        start = time.perf_counter()
+        try:
+            return fn(*args)
+        finally:
+            print(f"bench: {name} took {time.perf_counter() - start:.1f} s", file=sys.stderr)
+
+
 def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     """Every interaction timed in the lab's page: the report's specs and the round trip."""
     out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
@@ -514,15 +526,17 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     player_h = page.locator(".bench-player").first.bounding_box()["height"]
     if args.shots:
         shots(page, args.shots)
-    rt, fig = bench_baselines(page, tries)
-    frames = bench_frames(page, tries)
-    step, drag_fps, play_fps, toggles = bench_player(page, tries)
-    editor_fps, editor_first, editor_after = bench_editor(page, max(2, tries // 4), info)
-    sliders = {name: bench_slider(page, tries, cls, label, toggle)
+    took = _Stopwatch()
+    rt, fig = took("baselines", bench_baselines, page, tries)
+    frames = took("idle frames", bench_frames, page, tries)
+    step, drag_fps, play_fps, toggles = took("player", bench_player, page, tries)
+    editor_fps, editor_first, editor_after = took("editor", bench_editor, page,
+                                                  max(2, tries // 4), info)  # fmt: skip
+    sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle)
                for cls, name, label, toggle in SLIDERS}  # fmt: skip
-    first_drag = first_drag_fps(page, "bench-plane", "f2")
-    explorables = bench_explorables(page, reps)
-    controls = bench_controls(page, reps)
+    first_drag = took("first drag", first_drag_fps, page, "bench-plane", "f2")
+    explorables = took("explorables", bench_explorables, page, reps)
+    controls = took("controls", bench_controls, page, reps)
     specs = [
         ("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
         ("info", "baseline: plain figure redrawn from a slider", fig),
@@ -568,13 +582,13 @@ def main(argv=None) -> int:
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
     name = write_notebook(work / "nb")
-    proc, base, log = start_lab(work)
+    proc, base, log = _Stopwatch()("lab start", start_lab, work)
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
             try:
                 page = browser.new_page(viewport={"width": 1400, "height": 900})
-                run_all_cells(page, base, name)
+                _Stopwatch()("lab and Run All", run_all_cells, page, base, name)
                 specs, r = run(page, args, tries, reps)
             finally:
                 browser.close()
