@@ -118,6 +118,14 @@ def test_history_records_say_why():
     late = tr.render(clip[[1, 0]], 16, 12, trace=True).history(4, 4)
     assert late.outcomes == ["passed", "failed_depth"]
     assert late[1].depth_before == 0.3
+    # review r8 (lesson 11): a passed fragment of a scene without attributes says why its
+    # value column is empty, and a colour buffer no fragment reached gets no empty header
+    assert "(no attributes: the scene has none)" in str(late)
+    rgba = np.tile([0.2, 0.4, 0.6, 0.5], (4, 3, 1))
+    glass = tr.render(clip, 16, 12, attrs=rgba, blend="over", trace=True)
+    assert "RGBA: before -> fragment -> after" in str(glass.history(4, 4))
+    lines = str(glass.history(11, 15)).splitlines()  # a corner no triangle reaches
+    assert "no fragment reached it here" in lines[-1] and "RGBA" not in lines[-1]
 
 
 def test_hi_z_outcome_matches_the_in_order_replay():
