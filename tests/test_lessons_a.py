@@ -124,6 +124,9 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
 def test_00_facing_and_the_two_methods():
     ns = lesson("00_tour")
     assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
+    # r8 00-3: the facing question is clicked on the figure: v3 above the edge v1 -> v2 (y down)
+    assert ns.front_rows.tolist() == [0, 1, 2] and round(ns.y_edge, 2) == 3.21
+    assert ns.makes_front.sum() == 3 and not ns.makes_front[:, ns.column + 1 :].any()
     assert ns.same  # "they fill the same pixels (the next cell checks)"
     # the predicted answer: the bounding box's centres, 12 x 12 (review r3 00-2: not a guess)
     assert ns.box.size == 144 == ns.halfplane.trace.n_work and ns.span.trace.n_work == 12
@@ -198,6 +201,8 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
     text = "\n".join(_cells("01_span_tables", "markdown"))
     assert "0.6 % of the\npairs (by the float DDA)" in text
+    # r8 01-1: "in every pair the next cell counts, the float DDA's cracks fall on a vertex"
+    assert ns.n_cracks == ns.at_end > 0
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
     assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
