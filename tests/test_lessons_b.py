@@ -479,6 +479,11 @@ def test_08_levels_fan_hub_centroid_and_resolve():
     assert ns.hub_count == 1 and int((ns.count > 1).sum()) == 0
     # "no sample inside the fan is left uncovered"
     assert ns.inside_ring.sum() > 1000 and not (ns.inside_ring & (ns.count == 0)).any()
+    # r8 08-3: both halves of the rule on the outline ("4 of its corners ... one of them is
+    # covered, the leftmost, between two left edges")
+    assert len(ns.through) == ns.at_vertex == 4 and ns.covered_on == ns.all_tl
+    ((r, c, s),) = ns.covered_on
+    assert c + ns.pattern16[s][0] == ns.ring[:, 0].min()
     assert np.allclose(ns.centre, [10, 6] + ns.pattern16[0])
     v_c, v_s = ns.at_centre.attrs["v"][ns.pr, ns.pc], ns.at_centroid.attrs["v"][ns.pr, ns.pc]
     assert not 0 <= v_c <= 1 and 0 <= v_s <= 1  # extrapolated at the centre, inside at the sample
