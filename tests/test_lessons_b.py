@@ -399,6 +399,11 @@ def test_07_case_picker_driven_by_the_test():
         picker.case.value, picker.method.value = "d3d_split_square", "span"
         assert picker.passed and picker.difference
         assert "covered twice or more" in picker.info.value  # the key, under the case's text
+        # r8 07-5: a one-triangle case's key names the one colour drawn, no overlap class
+        picker.case.value = "diagonal_sliver"
+        assert len(picker._case.triangles) == 1 and (picker.naive_counts < 2).all()
+        key = picker.info.value.split("<b>key</b>")[1]
+        assert "triangle 0" in key and "one colour per" not in key and "twice" not in key
     finally:
         picker.close()
 
