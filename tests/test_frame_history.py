@@ -380,6 +380,10 @@ def test_frame_inspector_views_clicks_and_scenes():
     assert "quad of rows" not in w.table.value
     w.click_at(100.0, 100.0)  # outside the frame: nothing changes
     assert (w.row.value, w.col.value) != (100, 100)
+    w.view.value = "image"  # review r8 (11): the title says when the glass frame is drawn
+    assert w.ax.get_title() == "cube: the frame"
+    w.glass.value = True
+    assert w.ax.get_title() == "cube: the frame (glass)"
     w.samples.value = 4
     assert w.frame.samples is not None and w.history.n_samples == 4
     w.depth_test.value = False

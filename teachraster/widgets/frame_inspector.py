@@ -302,7 +302,8 @@ class FrameInspector(Holdable):
                 shown = self.frame.color[..., :3]
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
-            ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
+            glass = " (glass)" if self.glass.value else ""  # what is drawn (review r8, 11)
+            ax.set_title(f"{self.scene.value}: the frame{glass}", fontsize="small")
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
         fit_title(ax)
