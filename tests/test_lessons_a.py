@@ -759,7 +759,7 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
         fig, ax = plt.subplots(figsize=(9, 7.5))
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
-    assert "not if the shader writes depth; discard delays only the write" in drawn
+    assert "not if the shader writes depth; discard can delay only the write" in drawn
     plt.close(fig)
 
 
