@@ -324,8 +324,11 @@ def test_02_barycentrics_and_the_edge_function_bits():
 
     assert ns.limit == 2**21 and ns.reach == tour_stages()["guardPx"] < ns.limit
     assert ns.worst == side**2 and ns.n_bits == side.bit_length() * 2 == 62 <= 64
+    # r9 02-2: in the package's own 1/512 px units the same range takes all 64 bits
+    assert ns.unit == 512 and ns.own_bits == 64
     text = "\n".join(_cells("02_half_planes", "markdown"))
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
+    assert "1/512 px" in text and "bits to spare" not in text
     assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
 
 
