@@ -907,9 +907,11 @@ def test_widgets_drive_from_code():
     ex.close()
     frame = tr.render(tr.get_scene("cube"), None, 64, 48, trace=True)
     st = ZBufferStepper(frame, backend="image")
+    assert st.previous.disabled and not st.next.disabled  # r9 05a c21: the ends say so
     st.previous.click()
     assert st.triangle.value == 0
     st.triangle.value = 11
+    assert st.next.disabled and not st.previous.disabled
     st.next.click()
     assert st.triangle.value == 11 and st.counts == fragment_counts(frame, 11)
     assert st.fig.get_figwidth() * st.fig.dpi <= COLUMN_WIDTH_PX
