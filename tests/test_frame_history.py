@@ -118,6 +118,14 @@ def test_history_records_say_why():
     late = tr.render(clip[[1, 0]], 16, 12, trace=True).history(4, 4)
     assert late.outcomes == ["passed", "failed_depth"]
     assert late[1].depth_before == 0.3
+    # review r8 (lesson 11): a passed fragment of a scene without attributes says why its
+    # value column is empty, and a colour buffer no fragment reached gets no empty header
+    assert "(no attributes: the scene has none)" in str(late)
+    rgba = np.tile([0.2, 0.4, 0.6, 0.5], (4, 3, 1))
+    glass = tr.render(clip, 16, 12, attrs=rgba, blend="over", trace=True)
+    assert "RGBA: before -> fragment -> after" in str(glass.history(4, 4))
+    lines = str(glass.history(11, 15)).splitlines()  # a corner no triangle reaches
+    assert "no fragment reached it here" in lines[-1] and "RGBA" not in lines[-1]
 
 
 def test_hi_z_outcome_matches_the_in_order_replay():
@@ -372,6 +380,10 @@ def test_frame_inspector_views_clicks_and_scenes():
     assert "quad of rows" not in w.table.value
     w.click_at(100.0, 100.0)  # outside the frame: nothing changes
     assert (w.row.value, w.col.value) != (100, 100)
+    w.view.value = "image"  # review r8 (11): the title says when the glass frame is drawn
+    assert w.ax.get_title() == "cube: the frame"
+    w.glass.value = True
+    assert w.ax.get_title() == "cube: the frame (glass)"
     w.samples.value = 4
     assert w.frame.samples is not None and w.history.n_samples == 4
     w.depth_test.value = False

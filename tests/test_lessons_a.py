@@ -124,6 +124,9 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
 def test_00_facing_and_the_two_methods():
     ns = lesson("00_tour")
     assert not ns.tri.front_facing  # the predicted answer: back-facing (clockwise on screen)
+    # r8 00-3: the facing question is clicked on the figure: v3 above the edge v1 -> v2 (y down)
+    assert ns.front_rows.tolist() == [0, 1, 2] and round(ns.y_edge, 2) == 3.21
+    assert ns.makes_front.sum() == 3 and not ns.makes_front[:, ns.column + 1 :].any()
     assert ns.same  # "they fill the same pixels (the next cell checks)"
     # the predicted answer: the bounding box's centres, 12 x 12 (review r3 00-2: not a guess)
     assert ns.box.size == 144 == ns.halfplane.trace.n_work and ns.span.trace.n_work == 12
@@ -198,6 +201,8 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
     text = "\n".join(_cells("01_span_tables", "markdown"))
     assert "0.6 % of the\npairs (by the float DDA)" in text
+    # r8 01-1: "in every pair the next cell counts, the float DDA's cracks fall on a vertex"
+    assert ns.n_cracks == ns.at_end > 0
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
     assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
@@ -319,8 +324,11 @@ def test_02_barycentrics_and_the_edge_function_bits():
 
     assert ns.limit == 2**21 and ns.reach == tour_stages()["guardPx"] < ns.limit
     assert ns.worst == side**2 and ns.n_bits == side.bit_length() * 2 == 62 <= 64
+    # r9 02-2: in the package's own 1/512 px units the same range takes all 64 bits
+    assert ns.unit == 512 and ns.own_bits == 64
     text = "\n".join(_cells("02_half_planes", "markdown"))
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
+    assert "1/512 px" in text and "bits to spare" not in text
     assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
 
 
@@ -754,7 +762,7 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
         fig, ax = plt.subplots(figsize=(9, 7.5))
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
-    assert "not if the shader writes depth; discard delays only the write" in drawn
+    assert "not if the shader writes depth; discard can delay only the write" in drawn
     plt.close(fig)
 
 
@@ -899,9 +907,11 @@ def test_widgets_drive_from_code():
     ex.close()
     frame = tr.render(tr.get_scene("cube"), None, 64, 48, trace=True)
     st = ZBufferStepper(frame, backend="image")
+    assert st.previous.disabled and not st.next.disabled  # r9 05a c21: the ends say so
     st.previous.click()
     assert st.triangle.value == 0
     st.triangle.value = 11
+    assert st.next.disabled and not st.previous.disabled
     st.next.click()
     assert st.triangle.value == 11 and st.counts == fragment_counts(frame, 11)
     assert st.fig.get_figwidth() * st.fig.dpi <= COLUMN_WIDTH_PX

@@ -56,7 +56,17 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     assert 0 < ns.x1_q - ns.x0_q <= 16
     estimate = ns.share_q * ns.change_q
     assert estimate == pytest.approx(n16["error"], rel=0.05) and 30 <= n16["error"] < 100
-    assert (3 - 2 * np.sqrt(2)) * ns.change_q < 30 < ns.change_q / 3
+    # r8 06-1: typed, without the formula: lesson 04's share is right, the r = 2 share is not
+    answer = round(n16["error"])
+    assert abs(estimate - answer) <= ns.tol_q
+    assert abs((3 - 2 * np.sqrt(2)) * ns.change_q - answer) > ns.tol_q
+    source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
+    asked = source[
+        source.index("q_quake = Predict(") : source.index(
+            "explain=", source.index("q_quake = Predict(")
+        )
+    ]
+    assert "√r" not in asked and "answer=round(n16" in asked
     # review r7 06-1: max / mean falls as N grows ("most at N = 2, least at N = 32"), and the
     # worst pixel is many times the mean at every N
     ratios = [ns.max_over_mean[n] for n in sorted(ns.max_over_mean)]
@@ -272,6 +282,9 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     # triangle (whose vertices float32 holds exactly at 1e6): relative nothing wrong, absolute all
     n_tri = int(ns.far_coverage[0].sum())
     assert ns.far_wrong == {100_000: (0, n_tri), 1_000_000: (0, n_tri)}
+    # r8 07-3: the question asks the consequence (pixels right), from the same data c15 draws
+    assert ns.right_f32 == 0 and ns.far_choices[-1] == "few or none" and n_tri == ns.far_ours.sum()
+    assert np.array_equal(ns.far_f32, ns.wrong32) and round(ns.far_area) == round(ns.doubled_area)
     assert all(np.float32(v) == v for v in (ns.tri_local + 1e6).ravel())
     # the sliver below the shared edge owns the row, alone
     assert ns.owners == [ns.below]
@@ -386,6 +399,11 @@ def test_07_case_picker_driven_by_the_test():
         picker.case.value, picker.method.value = "d3d_split_square", "span"
         assert picker.passed and picker.difference
         assert "covered twice or more" in picker.info.value  # the key, under the case's text
+        # r8 07-5: a one-triangle case's key names the one colour drawn, no overlap class
+        picker.case.value = "diagonal_sliver"
+        assert len(picker._case.triangles) == 1 and (picker.naive_counts < 2).all()
+        key = picker.info.value.split("<b>key</b>")[1]
+        assert "triangle 0" in key and "one colour per" not in key and "twice" not in key
     finally:
         picker.close()
 
@@ -466,6 +484,11 @@ def test_08_levels_fan_hub_centroid_and_resolve():
     assert ns.hub_count == 1 and int((ns.count > 1).sum()) == 0
     # "no sample inside the fan is left uncovered"
     assert ns.inside_ring.sum() > 1000 and not (ns.inside_ring & (ns.count == 0)).any()
+    # r8 08-3: both halves of the rule on the outline ("4 of its corners ... one of them is
+    # covered, the leftmost, between two left edges")
+    assert len(ns.through) == ns.at_vertex == 4 and ns.covered_on == ns.all_tl
+    ((r, c, s),) = ns.covered_on
+    assert c + ns.pattern16[s][0] == ns.ring[:, 0].min()
     assert np.allclose(ns.centre, [10, 6] + ns.pattern16[0])
     v_c, v_s = ns.at_centre.attrs["v"][ns.pr, ns.pc], ns.at_centroid.attrs["v"][ns.pr, ns.pc]
     assert not 0 <= v_c <= 1 and 0 <= v_s <= 1  # extrapolated at the centre, inside at the sample

@@ -297,6 +297,22 @@ def test_fill_view_follows_the_trace_in_place(method):
     np.testing.assert_array_equal(coverage_shown(view), fill.coverage)
 
 
+def test_fill_view_key_names_the_pixel_under_test_only_while_one_is():
+    """Review r8 (lesson 04 c15): the key listed "pixel under test" at the last step, where
+    nothing is under test."""
+    from teachraster.plotting.views import PIXEL_UNDER_TEST
+
+    fill = make_fill("halfplane")
+    view = tp.FillView(fill, step=0)
+    (text,) = [t for t in view.legend.texts if t.get_text() == PIXEL_UNDER_TEST]
+    pixel = next(k for k in range(len(fill.trace)) if fill.trace.step(k).kind == "pixel")
+    for k, on in ((pixel, True), (-1, False), (pixel, True)):
+        view.show_step(k, draw=False)
+        assert text.get_visible() == on == view.pixel.box.get_visible()
+    view.redraw()
+    plt.close(view.fig)
+
+
 def test_fill_view_shows_the_current_raster_line_and_split():
     fill = make_fill("span")
     t = fill.trace

@@ -184,20 +184,20 @@ def test_the_saved_notebook_keeps_the_question_its_picture_and_the_verdict():
 
 def test_the_answers_label_is_never_under_the_marker():
     """Review 08-09-r5 (09 cell 14): with the marker near the answer, "the answer" was
-    drawn under it ("th⊕ answer"). The label's box (about 80 × 14 px at the 14 px bold font,
+    drawn under it ("th⊕ answer"). The label's box (about 104 × 18 px at the 18 px bold font,
     from its baseline up) stays clear of the marker's cross (14 px each way) wherever the
     marker is, and inside the canvas above."""
     truth = [200.0, 60.0]
     mines = [[x, y] for x in (150, 190, 200, 205, 230, 290) for y in (20, 45, 60, 75, 120)]
     got = call_js(("predict_figure",), [("answerLabel", [m, truth]) for m in mines]
                   + [("answerLabel", [[200, 10], [200, 12]])])  # fmt: skip
-    for mine, lab in zip(mines, got, strict=False):
-        x0, x1 = (lab["x"] - 80, lab["x"]) if lab["align"] == "right" else (lab["x"], lab["x"] + 80)
-        y0, y1 = lab["y"] - 12, lab["y"] + 2
-        clear_x = x1 < mine[0] - 14 or x0 > mine[0] + 14
-        clear_y = y1 < mine[1] - 14 or y0 > mine[1] + 14
-        assert clear_x or clear_y, (mine, lab)
-    assert got[-1]["y"] - 12 >= 0  # no room above: below the dot
+    boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in got])
+    assert all(b["x1"] - b["x0"] >= 100 for b in boxes)  # r8: the 18 px font's width
+    for mine, box in zip(mines, boxes, strict=False):
+        clear_x = box["x1"] < mine[0] - 14 or box["x0"] > mine[0] + 14
+        clear_y = box["y1"] < mine[1] - 14 or box["y0"] > mine[1] + 14
+        assert clear_x or clear_y, (mine, box)
+    assert boxes[-1]["y0"] >= 0  # no room above: below the dot
 
 
 def test_point_reveal_can_draw_the_ray_that_finds_the_answer():

@@ -88,8 +88,13 @@ def test_key_lists_the_unclassified_page_only_where_a_picture_shows_it(fill, ax)
 
 
 def test_explorer_key_keeps_the_unclassified_page_for_its_block_slider(explorer):
+    # review r8 (lesson 10 c23): the entry says where the white page shows (the level
+    # slider classifies every block it shows)
+    from teachraster.widgets.tiles import STEPPED_UNCLASSIFIED
+
     keyed = [t.get_text() for t in explorer.artists.legend.get_texts()]
-    assert UNCLASSIFIED in keyed
+    assert STEPPED_UNCLASSIFIED in keyed and UNCLASSIFIED not in keyed
+    assert "block slider" in STEPPED_UNCLASSIFIED and explorer.block.description == "block"
 
 
 def test_hierarchy_and_counters(fill):

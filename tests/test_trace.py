@@ -505,3 +505,18 @@ def test_row_steps_carry_their_span():
             assert step.span_x == (float(s.x_left[i]), float(s.x_right[i]))
         else:
             assert step.span_x is None
+
+
+def test_last_caption_counts_the_pixels_a_multisampled_picture_fills():
+    """Review r9 (lesson 00 c14): with 4 samples the player's last caption said "at 59 covered
+    pixels" (the centre pass) while its picture filled the 72 pixels with a covered sample."""
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    multi = tr.rasterize(tri, 16, 16, samples=4, trace=True)
+    centre = tr.rasterize(tri, 16, 16, trace=True)
+    n, m = int(centre.coverage.sum()), int(multi.coverage.sum())
+    assert m > n
+    assert f"at the {m} pixels with a covered sample ({n} with their centre covered)" in (
+        multi.trace.caption(-1)
+    )
+    assert f"at {n} covered pixels" in centre.trace.caption(-1)

@@ -491,4 +491,8 @@ class FillTrace:
             "subdivided": f"perspective-correct at every {self.subdivision}th pixel of each "
             "span and at its ends, affine in between",
         }[self.interpolation]
+        if self.samples is not None:  # the picture fills every pixel with a covered sample
+            m = int(len(self.samples.eval_rows))
+            return (f"interpolated {', '.join(names)} at the {m} pixels with a covered sample "
+                    f"({n} with their centre covered), {how}")  # fmt: skip
         return f"interpolated {', '.join(names)} at {n} covered pixels, {how}"

@@ -216,11 +216,13 @@ class PixelSampleArtists(Artists):
             # edge values (a narrow column, one value per line, centred on the dot) point out
             # of the pixel, into the panel's margin, so that the labels of the standard and
             # the ordered 4-sample patterns clear each other
+            # (clear of the dot, and under it: a label's box half-covered a sample's marker,
+            # review r9 lesson 08 c32)
             side = -1 if ox < 0.5 else 1
             self.labels.append(ax.annotate(
-                label, (col + ox, row + oy), xytext=(7 * side, 0), textcoords="offset points",
+                label, (col + ox, row + oy), xytext=(11 * side, 0), textcoords="offset points",
                 ha="left" if side > 0 else "right", va="center", fontsize=fs(0.75),
-                bbox=label_box(0.8), zorder=6,
+                bbox=label_box(0.8), zorder=4.5,
             ))  # fmt: skip
         if not few:  # numbers only, each placed clear of the others, the dots and the centre
             self.labels += _place_numbers(ax, col + offsets[:, 0], row + offsets[:, 1],

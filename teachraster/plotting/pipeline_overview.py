@@ -7,8 +7,8 @@ The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: 
 *Early-z*, running the depth test before the shader, is an optimisation a GPU may apply only
 where the result cannot change, and it splits the test from the write: a shader that writes its
 own depth (``gl_FragDepth``, ``SV_Depth``) turns the early test off (conservative depth
-excepted), while a shader that may discard keeps it and only delays the depth write until it
-has kept the fragment (GL 4.6 §14.9, §15.2; lesson 05a). The picture draws it as a dashed
+excepted), while a shader that may discard can keep it and only delay the depth write until it
+has kept the fragment (some GPUs test late instead) (GL 4.6 §14.9, §15.2; lesson 05a). The picture draws it as a dashed
 bypass. The stages and their lessons are data
 (:data:`PIPELINE_STAGES`), so the notebook's list of links and the picture cannot disagree.
 """
@@ -75,11 +75,11 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
 #: The stages early-z jumps between: the depth test moved before the fragment shader.
 EARLY_Z = ("rasterisation", "depth test")
 
-#: The bypass's label: the early test is lost only to a depth-writing shader; a discard delays
-#: only the depth write (lesson 05a).
+#: The bypass's label: the early test is lost only to a depth-writing shader; a discard can
+#: delay only the depth write (lesson 05a; some GPUs test late instead).
 EARLY_Z_LABEL = (
     "early-z: depth tested before shading,\nnot if the shader writes depth;\n"
-    "discard delays only the write"
+    "discard can delay only the write"
 )
 
 

@@ -57,6 +57,11 @@ def _new_figure(figsize, rect):
     return fig, fig.add_axes(rect)
 
 
+#: The key's entry for the pixel a half-plane step tests (shown only at such a step: at the
+#: last step nothing is under test, review r8 lesson 04 c15).
+PIXEL_UNDER_TEST = "pixel under test, × centre"
+
+
 class FillView:
     """Step through one fill: a figure whose artists each step updates in place.
 
@@ -214,9 +219,12 @@ class FillView:
             self.split.update(trace)  # shows the parts that exist
         else:
             self.split.set_visible(False)
-        self._still = (boxed, split)
+        testing = step.kind == "pixel"
+        self._still = (boxed, split, testing)
         self.raster_line.update(step)
         self.pixel.update(step)
+        if self.legend is not None:  # the key names the pixel under test only while there is one
+            self.legend.show_entry(PIXEL_UNDER_TEST, testing)
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
             # the steps are numbered from 0: "of 0-22" rather than "of 22", which reads as a count
@@ -327,7 +335,7 @@ class FillView:
                         ("its centre not", "white", c["edge"], "o")]  # fmt: skip
         else:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
-            entries.append(("pixel under test, × centre", "none", c["current"]))
+            entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
         self.legend.set_entries(entries)
 
 
@@ -354,6 +362,13 @@ class Key(Artists):
     @property
     def artists(self) -> list:
         return self.swatches + self.texts
+
+    def show_entry(self, label: str, on: bool) -> None:
+        """Show or hide the entry whose text is ``label`` (none: nothing changes)."""
+        for swatch, text in zip(self.swatches, self.texts):
+            if text.get_text() == label:
+                swatch.set_visible(on)
+                text.set_visible(on)
 
     def set_entries(self, entries) -> None:
         """``entries``: (label, face colour, edge colour[, marker]) per line (marker default a

@@ -572,10 +572,36 @@ class CasePicker:
             return (f"<b>key</b>: separate copies of one triangle (not a mesh), each moved back "
                     f"onto the first: {swatch(EVERY_COPY, 'covered by every copy')}, "
                     f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}")  # fmt: skip
-        key = (f"<b>key</b>: left, one colour per triangle "
-               f"({swatch(owner_color(0), '')}{swatch(owner_color(1), '')}"
-               f"{swatch(owner_color(2), '')}…); right, {swatch(COLORS['fill'], 'covered once')}"
-               f"; both, {swatch(COLORS['outside'], 'covered twice or more')}")  # fmt: skip
+        # name only what the panels draw (review r8, lesson 07: a one-triangle case listed
+        # three owner colours and a class of pixels covered twice that neither panel showed)
+        owners = sorted({int(k) for k in np.unique(self.owner) if k >= 0})
+        if not owners:
+            left = "left, no pixel owned"
+        elif len(owners) == 1:
+            left = f"left, {swatch(owner_color(owners[0]), f'triangle {owners[0]}')}"
+        else:
+            more = "…" if len(owners) > 3 else ""
+            left = (
+                "left, one colour per triangle ("
+                + "".join(swatch(owner_color(k), "") for k in owners[:3])
+                + f"{more})"
+            )
+        n = self.naive_counts
+        parts = [left]
+        if n is not None and (n == 1).any():
+            parts.append(f"right, {swatch(COLORS['fill'], 'covered once')}")
+        twice = [
+            name
+            for name, drawn in (
+                ("left", (self.owner == SEVERAL).any()),
+                ("right", n is not None and (n >= 2).any()),
+            )
+            if drawn
+        ]
+        if twice:
+            where = "both" if len(twice) == 2 else twice[0]
+            parts.append(f"{where}, {swatch(COLORS['outside'], 'covered twice or more')}")
+        key = "<b>key</b>: " + "; ".join(parts)
         for i, j in self.hubs:
             owner = int(self.owner[i, j])
             who = (

@@ -290,7 +290,10 @@ class FrameInspector(Holdable):
         if self.view.value == "quad_overshading":  # who launched this quad's lanes
             text += "\n\n" + quad_text(self.frame, self.row.value, self.col.value)
         text = html.escape(text)
-        self.table.value = f"<pre style='font-size:0.8em;line-height:1.25'>{text}</pre>"
+        # columns kept at any width: JupyterLab wraps a <pre> (pre-wrap), which broke every
+        # row of the table at 1024 px (review r9, lesson 11); a narrow column scrolls instead
+        self.table.value = (f"<pre style='font-size:0.8em;line-height:1.25;white-space:pre;"
+                            f"overflow-x:auto'>{text}</pre>")  # fmt: skip
 
     def _draw_frame(self) -> None:
         ax = self.ax
@@ -302,7 +305,8 @@ class FrameInspector(Holdable):
                 shown = self.frame.color[..., :3]
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
-            ax.set_title(f"{self.scene.value}: the frame", fontsize="small")
+            glass = " (glass)" if self.glass.value else ""  # what is drawn (review r8, 11)
+            ax.set_title(f"{self.scene.value}: the frame{glass}", fontsize="small")
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
         fit_title(ax)

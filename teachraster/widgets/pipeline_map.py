@@ -4,7 +4,7 @@ The logical order of OpenGL and Direct3D: vertex shader, primitive assembly, cli
 only beyond a guard band), the divide by w, the viewport, triangle set-up, rasterisation, the
 fragment shader, the depth and stencil tests, blending. Early-z, which tests depth before
 shading, is drawn as a dashed bypass: a shader that writes its own depth turns the early test
-off (conservative depth excepted); one that may discard keeps it, and only the depth write
+off (conservative depth excepted); one that may discard can keep it, and only the depth write
 waits for the shader (lesson 05a; GL 4.6 §14.9, §15.2). Click a stage (in the style of the WebGL state diagram) to see the tour
 triangle there: its clip coordinates, NDC, window coordinates, set-up, fragments, depth and
 final pixels.

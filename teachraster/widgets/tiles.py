@@ -9,7 +9,7 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.tiles import block_mask
+from ..plotting.tiles import UNCLASSIFIED, block_mask
 from .common import (
     Holdable,
     Shown,
@@ -30,6 +30,11 @@ SIZE_OPTIONS = [
     ("16 / 4", (16, 4)),
     ("8 / 2", (8, 2)),
 ]
+
+
+#: The explorer's key entry for the white page: only the block slider leaves blocks
+#: unclassified (every level of the level slider is classified whole).
+STEPPED_UNCLASSIFIED = "not classified yet (block slider)"
 
 
 class TileExplorer(Holdable):
@@ -140,6 +145,11 @@ class TileExplorer(Holdable):
         self.artists = plot_blocks(
             self.ax, self.fill, traversal=self.traversal.value, unclassified=True
         )
+        # the key stays while the level slider shows every block classified: it says where
+        # the white page appears (review r8, lesson 10 c23)
+        for text in self.artists.legend.get_texts():
+            if text.get_text() == UNCLASSIFIED:
+                text.set_text(STEPPED_UNCLASSIFIED)
         # a level or a block step changes which blocks show, nothing else: the pixel grid,
         # the ticks and the key stay in a cached background, what lies over the blocks (the
         # triangle, the frame) in a still layer (a full draw cost 4-5x more; issue 31: the

@@ -75,6 +75,7 @@ class ZBufferStepper(Shown):
         self.previous.on_click(lambda _: self._step(-1))
         self.next.on_click(lambda _: self._step(+1))
         self.triangle.observe(lambda change: self.update(), "value")
+        self._ends()
         title = title_html(
             "The z-buffer, one triangle at a time",
             "Blue: this triangle's fragments that were nearer than the buffer and were written; "
@@ -86,7 +87,13 @@ class ZBufferStepper(Shown):
     def _step(self, d: int) -> None:
         self.triangle.value = min(max(self.triangle.value + d, 0), self.triangle.max)
 
+    def _ends(self) -> None:
+        # a button that can do nothing says so (review r9, lesson 05a c21)
+        self.previous.disabled = self.triangle.value <= 0
+        self.next.disabled = self.triangle.value >= self.triangle.max
+
     def update(self) -> None:
         """Show the slider's triangle and redraw."""
         self.counts = self.view.show(self.triangle.value)
+        self._ends()
         self.display.refresh()

@@ -563,6 +563,8 @@ def history_table(h: PixelHistory) -> str:
             why = reason_text(r)
         elif r.value:
             why = "(" + ", ".join(f"{v:.4g}" for v in r.value) + ")"
+        elif r.outcome == "passed":  # shaded, but the scene gives it nothing to write
+            why = "(no attributes: the scene has none)"
         else:
             why = ""
         lines.append(
@@ -585,6 +587,8 @@ def colour_lines(h: PixelHistory) -> list[str]:
     if h.blend is None:
         return []
     mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
+    if not any(r.outcome == "passed" for r in h.records):  # a header over no line said nothing
+        return [f"colour buffer ({mode}, {h.blend.color_format}): no fragment reached it here"]
     out = [f"colour buffer ({mode}, {h.blend.color_format}), RGBA: before -> fragment -> after"]
     for r in h.records:
         if r.outcome == "passed":

@@ -89,8 +89,11 @@ function mount(el, data, host) {
       { fill: "#eee", alpha: 1, stroke: "#ccc", bias: -1e6 });
     polys.push({ pts: xy.map(([x, y]) => [x, y, 0]), fill: "#bbb", alpha: 0.8, stroke: "#555",
       bias: -1e5 });
+    // every w equal: the affine sheet is the perspective-correct one; drawn twice, the two
+    // coplanar sheets z-fought into a speckle (review r9, lesson 03 c23): one is drawn
+    const same = w.every((v) => v === w[0]) && state.show.correct;
     for (const [name, , colour] of SURFACES) {
-      if (!state.show[name]) continue;
+      if (!state.show[name] || (same && name === "affine")) continue;
       polys.push(...surfacePieces(xy, (x, y) => surfaceValues(xy, w, f, [x, y])[name] * zScale,
         12, { fill: colour, alpha: 0.55, stroke: "rgba(255,255,255,0.25)" }));
     }
@@ -130,7 +133,7 @@ function mount(el, data, host) {
         `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)}), where f = ${fmt(gap.s.correct, 3)} ` +
         `but the affine plane gives ${fmt(gap.s.affine, 3)}.`
       : "Every w is equal: f/w and 1/w are scaled copies, their ratio is the affine plane " +
-        "itself (the two sheets coincide).";
+        "itself (the two sheets coincide: drawn once, in blue).";
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);

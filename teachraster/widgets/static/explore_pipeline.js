@@ -77,8 +77,8 @@ export function stageHtml(data, key) {
         "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed) runs this test " +
         "before the shader, to skip hidden fragments. A shader that writes its own depth " +
         "turns the early test off (unless it declares conservative depth); a shader that " +
-        "may discard keeps the early test, and only the depth write waits until the shader " +
-        "has kept the fragment.</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
+        "may discard can keep the early test, and only the depth write waits until the shader " +
+        "has kept the fragment (some GPUs test late instead).</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
         "black, 1 light grey); the lightest grey: no fragment.</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
@@ -167,7 +167,7 @@ function diagram(onPick) {
   arrow(`M${r.x + r.w / 2},${r.y + r.h} C${r.x + r.w / 2},${r.y + r.h + 46} ${d.x + d.w / 2},` +
     `${d.y + d.h + 46} ${d.x + d.w / 2},${d.y + d.h + 2}`, "7 5");
   ["early-z: tested before shading, not if the shader",
-    "writes depth (discard delays only the write)"].forEach((line, i) => root.append(svg("text",
+    "writes depth (discard can delay only the write)"].forEach((line, i) => root.append(svg("text",
     { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 44 + 16 * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {

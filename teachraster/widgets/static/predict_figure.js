@@ -70,10 +70,12 @@ export function answerLabel(mine, truth, readout = null, height = Infinity) {
   return tries.find(clear) || tries[0];
 }
 
-// the box "the answer" fills at the 14 px bold font (about 80 px wide), from its baseline up
+// the box "the answer" fills at the 18 px bold font (about 104 px wide), from its baseline
+// up (at 14 px the label came out at 10 px in a column at 1024 px: review r8, lesson 04 c3)
+export const ANSWER_FONT = "bold 18px sans-serif";
 export function labelBox(p) {
-  const x0 = p.align === "right" ? p.x - 80 : p.x;
-  return { x0, x1: x0 + 80, y0: p.y - 12, y1: p.y + 2 };
+  const x0 = p.align === "right" ? p.x - 104 : p.x;
+  return { x0, x1: x0 + 104, y0: p.y - 15, y1: p.y + 3 };
 }
 
 const PRED_CSS = `
@@ -321,7 +323,7 @@ function mountPoint(root, data, host) {
       ctx.arc(truth[0], truth[1], 9, 0, 2 * Math.PI);
       ctx.fill();
       const avoid = readoutBox(mine); // measured in the readout's font, before the label's is set
-      ctx.font = "bold 14px sans-serif";
+      ctx.font = ANSWER_FONT;
       const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height);
       ctx.textAlign = align;
       ctx.lineWidth = 4;
