@@ -107,7 +107,8 @@ def _round_trip(folder: Path, exercises: tuple[Path, ...]) -> None:
         for student, nb in zip(STUDENTS, (teacher, release, solved)):
             _submit(root, student, path.stem, path.name, nb)
     _nbgrader(root, "autograde", "*")
-    _nbgrader(root, "generate_feedback", "*")
+    # feedback for the two students the tests read (a glob over student ids; CI time)
+    _nbgrader(root, "generate_feedback", "*", "--student=[tu]*")
     _nbgrader(root, "export")
 
 
