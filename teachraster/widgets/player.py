@@ -309,7 +309,11 @@ class FillPlayer(Holdable):
         """
         fill_key = self._fill_key()
         if fill_key not in self._texts:
-            self._texts[fill_key] = step_texts(self.trace)
+            captions, infos = step_texts(self.trace)
+            if self.interp_view is not None:  # the picture shows coverage; the values are below
+                infos = [i.replace("(interpolate)", "(interpolate: the values are in the "
+                                   "comparison below)") for i in infos]  # fmt: skip
+            self._texts[fill_key] = captions, infos
         captions, infos = self._texts[fill_key]
         group = step // self.frames.key
         made = self._groups.get((fill_key, group))
