@@ -10,10 +10,11 @@ The correct solutions and most generic mistakes run in ``test_exercises.py`` and
 from __future__ import annotations
 
 import re
+from fractions import Fraction
 
 import numpy as np
 import pytest
-from lines_blending_solutions import EPS, line_pixels, line_with
+from lines_blending_solutions import EPS, _meets, line_pixels, line_with
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
 from reasoning_solutions import front_to_back
@@ -85,6 +86,110 @@ def test_an_empty_array_of_pairs_is_an_empty_answer():
     assert as_pixels(np.array([])) == frozenset() == as_pixels(np.zeros((0, 2)))
     report = ex.check("line_pixels", lambda p0, p1: np.array(line_pixels(p0, p1)), budget=60)
     assert report.passed, str(report)
+
+
+def _line_knobs(end_unmoved=False, start=False):
+    """The exact rule (Fraction) with one of r9's mistakes: p1's diamond tested before p1 was
+    moved, or the diamond p0 lies in left dark."""
+    half = Fraction(1, 2)
+
+    def fn(p0, p1):
+        a = (Fraction(p0[0]) - EPS, Fraction(p0[1]) - EPS * EPS)
+        b = (Fraction(p1[0]) - EPS, Fraction(p1[1]) - EPS * EPS)
+        end = (Fraction(p1[0]), Fraction(p1[1])) if end_unmoved else b
+        out = []
+        for row in range(max(int(min(a[1], b[1])) - 1, 0), int(max(a[1], b[1])) + 2):
+            for col in range(max(int(min(a[0], b[0])) - 1, 0), int(max(a[0], b[0])) + 2):
+                cx, cy = col + half, row + half
+                inside_end = abs(end[0] - cx) + abs(end[1] - cy) < half
+                inside_start = start and abs(a[0] - cx) + abs(a[1] - cy) < half
+                if _meets(a, b, cx, cy) and not inside_end and not inside_start:
+                    out.append((row, col))
+        return out
+
+    return fn
+
+
+def test_the_tie_words_agree_with_lesson_12_and_conventions():
+    """r9 09-1: the text said GL moves y up and lights row k − 1; lesson 12 §1 prints that GL
+    lights the lower row, teachraster (and Direct3D) the upper one."""
+    first = _first("line_pixels", line_with(-EPS, 0))
+    assert "GL moves the segment" not in first.explanation
+    assert "row k − 1, the upper row, as Direct3D does" in first.explanation
+    assert "lights the lower row, row k: lesson 12 §1" in first.explanation
+    assert "GL moves it up" not in _first("line_pixels", line_with(-EPS, E2)).explanation
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    task = "".join(json.loads(nb.read_text())["cells"][2]["source"])
+    assert "GL\nsettles" not in task and "lights the lower row" in task.replace("\n", " ")
+
+
+@pytest.mark.parametrize("denominator", [100, 64, 128])
+def test_an_eps_too_large_fails_and_is_named(denominator):
+    """r9 09-2: ε = 1/100 passed every case."""
+    e = Fraction(1, denominator)
+    first = _first("line_pixels", line_with(-e, -e * e))
+    assert first.kind == "ε not small enough", first.explanation
+    assert "your ε is not small enough" in first.explanation
+
+
+def test_p1_tested_before_moving_is_named_and_never_called_eps_in_y():
+    """r9 09-3: "p1 in its diamond" with the unmoved p1 was told "you moved y by −ε"."""
+    first = _first("line_pixels", _line_knobs(end_unmoved=True))
+    assert first.kind == "end tested before moving", first.explanation
+    assert "before moving it" in first.explanation and "−ε, as much as x" not in first.explanation
+
+
+def test_a_mistake_is_named_only_where_it_gives_every_failing_answer():
+    """r9 09-3, the class: (−ε, −ε) shared one failing answer with another mistake. A student
+    with two unrelated slips gets the rule, not one of them named."""
+
+    def two(p0, p1):  # (−ε, −ε), and the last pixel of a long line dropped
+        out = sorted(line_with(-EPS, -EPS)(p0, p1))
+        return out[:-1] if len(out) > 4 else out
+
+    report = ex.check("line_pixels", two, budget=60)
+    assert not report.passed
+    kinds = {f.kind for f in report.failures}
+    assert "ε in y" not in kinds and "end tested before moving" not in kinds, kinds
+
+
+def test_start_diamond_dark_closed_diamond_and_bresenham_are_named():
+    """r9: these got the rule restated."""
+    first = _first("line_pixels", _line_knobs(start=True))
+    assert first.kind == "start diamond dark" and "p0 = " in first.explanation
+    import teachraster as tr
+
+    def bresenham(p0, p1):
+        cov = tr.rasterize_line(p0, p1, 12, 12, rule="bresenham").coverage
+        return [tuple(map(int, rc)) for rc in np.argwhere(cov)]
+
+    first = _first("line_pixels", bresenham)
+    assert first.kind == "Bresenham" and "Bresenham's error term" in first.explanation
+
+
+def test_a_closed_diamond_is_named():
+    from teachraster.exercises.lines import diamond_pixels
+
+    first = _first("line_pixels", lambda p0, p1: diamond_pixels(p0, p1, eps=(0, 0), closed=True))
+    assert "closed diamond" in first.kind and "includes its boundary" in first.explanation
+
+
+def test_the_failing_line_figure_has_a_key_the_diamonds_and_two_kinds_of_end():
+    """r9 09-4: no key, no diamonds, p0 and p1 the same black dot."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("line_pixels", line_with(-EPS, -EPS), budget=60).plot(ax)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    plt.close(fig)
+    assert labels[:3] == ["p0", "p1", "diamonds"] and "lit by both" in labels
+    assert any(lab.startswith(("extra", "missing")) for lab in labels)
 
 
 # -- 9.2 over_to_premultiplied, over_premultiplied -------------------------------------------

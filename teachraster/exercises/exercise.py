@@ -171,6 +171,11 @@ class Exercise:
     compose : callable, optional
         ``compose(head, words)``: the explanation from the case's numbers and the mistake's
         words (default: the numbers first, see :func:`.diagnosis.compose`).
+    partial_names : bool
+        A mistake may be named on the failing cases it explains while others fail for another
+        reason (default). False: named only where it gives every failing answer, for mistakes
+        that differ on a few cases only (r9: ``line_pixels``' "(−ε, −ε)" shared one failing
+        answer with "p1 tested before moving", and named it).
     """
 
     name: str
@@ -189,6 +194,7 @@ class Exercise:
     call: Callable | None = None
     match: Callable | None = None
     compose: Callable | None = None
+    partial_names: bool = True
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""
