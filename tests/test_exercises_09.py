@@ -385,3 +385,129 @@ def test_alpha_updated_before_the_colour_is_named():
     first = _first("front_to_back", _under_with(step))
     assert first.kind == "alpha first", first.explanation
     assert "farthest first" not in first.explanation
+
+
+# -- r9: package routes, and the half-named mistakes of 9.2a and 9.3 ---------------------------
+def _premultiply(c):
+    c = np.asarray(c, float)
+    return np.r_[c[:3] * c[3], c[3]]
+
+
+def _prefix_back_to_front(layers):
+    from teachraster.exercises.front_to_back import back_to_front
+
+    read = []
+    for layer in layers:
+        read.append(layer)
+        if np.prod([1 - x[3] for x in read]) <= 0:
+            break
+    return back_to_front(np.reshape(read, (-1, 4)))
+
+
+def _apply_blend(s, d):
+    from teachraster.core.blend_factors import BLEND_MODES, apply_blend
+
+    return apply_blend(np.asarray(s, float), np.asarray(d, float), *BLEND_MODES["premultiplied"])
+
+
+def _factor(s, d):
+    from teachraster.core.blend_factors import factor
+
+    s, d = np.asarray(s, float), np.asarray(d, float)
+    return s + d * factor("ONE_MINUS_SRC_ALPHA", s, d)
+
+
+@pytest.mark.parametrize(
+    ("name", "fn", "called"),
+    [
+        ("over_premultiplied", _apply_blend, "apply_blend"),
+        ("over_premultiplied", _factor, "factor"),
+        (
+            "over_to_premultiplied",
+            lambda s, d: _apply_blend(_premultiply(s), _premultiply(d)),
+            "apply_blend",
+        ),
+        ("front_to_back", _prefix_back_to_front, "back_to_front"),
+    ],  # fmt: skip
+    ids=["apply_blend", "factor", "9.2a apply_blend", "back_to_front prefix"],
+)
+def test_every_package_route_is_flagged_and_not_counted(name, fn, called):
+    """r9 09-6, 09-8: the private apply_blend and back_to_front passed unflagged."""
+    report = ex.check(name, fn, budget=60)
+    assert report.package and f"teachraster's {called}" in report.package, report.package
+    assert not report.passed
+    with pytest.raises(AssertionError):
+        report.assert_passed()
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind", "words"),
+    [
+        (
+            lambda s, d: np.r_[
+                s[:3] * (1 - s[3]) + np.asarray(d[:3]) * d[3] * s[3], s[3] + d[3] * (1 - s[3])
+            ],
+            "weights swapped",
+            "swapped the weights",
+        ),
+        (
+            lambda s, d: np.r_[s[:3] * s[3] + np.asarray(d[:3]) * d[3], s[3] + d[3] * (1 - s[3])],
+            "destination not scaled",
+            "did not scale the destination by (1 − α_s)",
+        ),
+    ],  # fmt: skip
+    ids=["swapped weights", "destination not scaled"],
+)
+def test_9_2a_swapped_weights_and_unscaled_destination_are_named(fn, kind, words):
+    """r9 O4 (issue 30: "over with swapped weights") and O9 got the rule restated."""
+    first = _first("over_to_premultiplied", lambda s, d: fn(np.asarray(s), np.asarray(d)))
+    assert first.kind == kind and words in first.explanation, first.explanation
+
+
+def _walk(step, before_opaque=False, straight=False):
+    def fn(layers):
+        acc = np.zeros(4)
+        for c in layers:
+            if before_opaque and c[3] >= 1:
+                break
+            acc = step(acc, np.asarray(c, float))
+            if acc[3] >= 1:
+                break
+        if straight and acc[3] > 0:
+            acc = np.r_[acc[:3] / acc[3], acc[3]]
+        return acc
+
+    return fn
+
+
+def _under(a, c):
+    return a + (1 - a[3]) * c
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind", "words"),
+    [
+        (_walk(_under, straight=True), "returned straight", "you returned a straight colour"),
+        (_walk(_under, before_opaque=True), "before the opaque layer", "opaque layer itself"),
+        (
+            _walk(lambda a, c: np.r_[a[:3] + (1 - c[3]) * c[:3], _under(a, c)[3]]),
+            "colour by own alpha",
+            "1 − its own alpha",
+        ),
+        (
+            _walk(lambda a, c: np.r_[a[:3] + a[3] * c[:3], _under(a, c)[3]]),
+            "colour by A",
+            "by A, the alpha accumulated",
+        ),
+        (
+            _walk(lambda a, c: np.r_[_under(a, c)[:3], max(a[3], c[3])]),
+            "alpha max",
+            "the larger alpha",
+        ),
+    ],  # fmt: skip
+    ids=["straight", "before opaque", "own alpha", "by A", "max"],
+)
+def test_9_3_mistakes_that_got_the_rule_restated_are_named(fn, kind, words):
+    """r9 09-9: F8, F7, F6, F11 and F12."""
+    first = _first("front_to_back", fn)
+    assert first.kind == kind and words in first.explanation, first.explanation

@@ -120,6 +120,7 @@ class PackageAnswer:
 
     function: Callable
     when: Callable[[dict], bool] | None = None
+    what: str = "this very answer"  # what it computes, as the "not counted" note says
 
 
 @dataclass(frozen=True)
