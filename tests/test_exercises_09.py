@@ -511,3 +511,27 @@ def test_9_3_mistakes_that_got_the_rule_restated_are_named(fn, kind, words):
     """r9 09-9: F8, F7, F6, F11 and F12."""
     first = _first("front_to_back", fn)
     assert first.kind == kind and words in first.explanation, first.explanation
+
+
+def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_false():
+    """r9 09-7 and 09-5: the passing figure drew opaque red over blue, where no checkerboard
+    shows; 9.2a said "lesson 12 does not print them" though §9 states the premultiplied rule."""
+    import json
+    from pathlib import Path
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("over_premultiplied", over_pm).plot(ax)
+    ticks = " ".join(t.get_text() for t in ax.get_xticklabels())
+    plt.close(fig)
+    assert "(0.3, 0.2, 0.05, 0)" in ticks.replace(",\n", ", "), ticks  # the glow
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+    assert "does not print" not in text["over_premultiplied_task"]
+    assert "**9.2a.**" in text["over_premultiplied_task"]
+    assert "**9.2b.**" in text["over_premultiplied_step"]

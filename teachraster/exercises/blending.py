@@ -3,8 +3,10 @@
 
 ``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
 the premultiplied result: the derivation exercise 9.2 asks for from Porter and Duff's coverage
-argument, which lesson 12 does not print (it prints the rule on premultiplied inputs); both
-alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
+argument. Lesson 12 §9 states the rule on premultiplied inputs without deriving it, and
+premultiplying first, then applying that rule, gives the same numbers: the check cannot tell a
+derivation from that route, and the notebook says so (r9: it claimed the lesson printed
+neither); both alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
 glow (alpha 0, light in it), which no straight colour holds: a solution that divides by alpha
 to reuse 9.2a loses it, and is named.
 
@@ -394,7 +396,7 @@ def _exercise(name: str, mode: str) -> Exercise:
     return Exercise(
         name, lambda: blend_cases(mode), _rgba, lambda g, e, a: all_close(g, e, 1e-6),
         explain_blend, _rule(mode), _mistakes(mode), answers=blend_answers(),
-        draw=_blend_drawer(mode),
+        draw=_blend_drawer(mode), example=5 if mode == "premultiplied" else 4,  # glow; quarter
     )  # fmt: skip
 
 
@@ -458,6 +460,6 @@ FROM_STRAIGHT_EXERCISE = Exercise(
     "over_to_premultiplied", lambda: blend_cases("from straight"), _rgba,
     lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("from straight"),
     _mistakes("from straight"), draw=_blend_drawer("from straight"),
-    answers=blend_answers(),
+    answers=blend_answers(), example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip
 PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")

@@ -172,6 +172,9 @@ class Exercise:
     compose : callable, optional
         ``compose(head, words)``: the explanation from the case's numbers and the mistake's
         words (default: the numbers first, see :func:`.diagnosis.compose`).
+    example : int
+        The case drawn when every case passes (r9: the first, opaque red over blue, showed
+        nothing a translucent blend does).
     partial_names : bool
         A mistake may be named on the failing cases it explains while others fail for another
         reason (default). False: named only where it gives every failing answer, for mistakes
@@ -196,6 +199,7 @@ class Exercise:
     match: Callable | None = None
     compose: Callable | None = None
     partial_names: bool = True
+    example: int = 0
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

@@ -347,4 +347,5 @@ LINE_PIXELS = Exercise(
     LINE_MISTAKES, constant=lambda v: f"your function returns {short(set(v))} for every line, "
     "whatever its end points: a placeholder left in?",
     answers=(PackageAnswer(rasterize_line),), draw=draw_line, partial_names=False,
+    example=7,  # 45° along diamond edges: ties, drawn over the diamonds
 )  # fmt: skip
