@@ -146,9 +146,9 @@ def test_a_mistake_is_named_only_where_it_gives_every_failing_answer():
     """r9 09-3, the class: (−ε, −ε) shared one failing answer with another mistake. A student
     with two unrelated slips gets the rule, not one of them named."""
 
-    def two(p0, p1):  # (−ε, −ε), and the last pixel of a long line dropped
+    def two(p0, p1):  # (−ε, −ε), and one pixel of the first line dropped for another reason
         out = sorted(line_with(-EPS, -EPS)(p0, p1))
-        return out[:-1] if len(out) > 4 else out
+        return out[1:] if tuple(p0) == (1.5, 2.5) else out
 
     report = ex.check("line_pixels", two, budget=60)
     assert not report.passed
