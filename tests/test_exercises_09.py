@@ -535,3 +535,22 @@ def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_f
     assert "does not print" not in text["over_premultiplied_task"]
     assert "**9.2a.**" in text["over_premultiplied_task"]
     assert "**9.2b.**" in text["over_premultiplied_step"]
+
+
+@pytest.mark.parametrize(
+    ("knobs", "kind"),
+    [({"half": 1.0}, "diamond radius"), ({"centre": 0.0}, "diamond at the corner")],
+    ids=["radius 1", "centred on the corner"],
+)
+def test_a_wrong_diamond_is_named(knobs, kind):
+    """r9 L13, L14: the rule restated."""
+    from teachraster.exercises.lines import diamond_pixels
+
+    first = _first("line_pixels", lambda p0, p1: sorted(diamond_pixels(p0, p1, **knobs)))
+    assert first.kind == kind, first.explanation
+
+
+def test_only_p0s_pixel_is_named():
+    """r9 L18."""
+    first = _first("line_pixels", lambda p0, p1: [(int(p0[1]), int(p0[0]))])
+    assert first.kind == "p0's pixel only", first.explanation

@@ -87,35 +87,36 @@ def as_pixels(value) -> frozenset[tuple[int, int]]:
 
 
 def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col",
-                   closed=False, start=False):  # fmt: skip
+                   closed=False, start=False, half=0.5, centre=0.5):  # fmt: skip
     """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points;
     ``end=True`` also lights the pixel whose diamond holds p1, ``end="unmoved"`` tests that
     diamond with p1 before it was moved; ``closed=True`` counts the diamond's boundary in;
     ``start=True`` leaves the diamond that holds (the moved) p0 dark; ``order="col row"``
-    gives pairs the other way round."""
+    gives pairs the other way round; ``half`` is the diamond's radius and ``centre`` where it
+    sits in its pixel (½: the centre)."""
     a, b = np.asarray(p0, float) + eps, np.asarray(p1, float) + eps
     lo, hi = np.floor(np.minimum(a, b)) - 1, np.floor(np.maximum(a, b)) + 2
-    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), min(hi[0], WINDOW)),
-                             np.arange(max(lo[1], 0), min(hi[1], WINDOW)))  # fmt: skip
-    cx, cy = cols.ravel() + 0.5, rows.ravel() + 0.5
-    ok = _meets(a, b, cx, cy, closed)
+    # no clip at the window's far side: a student's too-large diamond reaches past it
+    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), hi[0]), np.arange(max(lo[1], 0), hi[1]))
+    cx, cy = cols.ravel() + centre, rows.ravel() + centre
+    ok = _meets(a, b, cx, cy, closed, half)
     if end is not True:
         e = np.asarray(p1, float) if end == "unmoved" else b
-        ok &= np.abs(e[0] - cx) + np.abs(e[1] - cy) >= 0.5
+        ok &= np.abs(e[0] - cx) + np.abs(e[1] - cy) >= half
     if start:
-        ok &= np.abs(a[0] - cx) + np.abs(a[1] - cy) >= 0.5
+        ok &= np.abs(a[0] - cx) + np.abs(a[1] - cy) >= half
     pixels = zip(rows.ravel()[ok].astype(int), cols.ravel()[ok].astype(int))
     return frozenset((c, r) if order == "col row" else (r, c) for r, c in pixels)
 
 
-def _meets(a, b, cx, cy, closed=False) -> np.ndarray:
+def _meets(a, b, cx, cy, closed=False, half=0.5) -> np.ndarray:
     """Does the segment a -> b meet each diamond (open, or ``closed``) around (cx, cy)?"""
     d = b - a
     t_lo, t_hi = np.zeros(cx.shape), np.ones(cx.shape)
     lo_open, hi_open = np.zeros(cx.shape, bool), np.zeros(cx.shape, bool)
     ok = np.ones(cx.shape, bool)
     for sx, sy in ((1, 1), (1, -1), (-1, 1), (-1, -1)):  # sx(x − cx) + sy(y − cy) < ½
-        c = 0.5 - sx * (a[0] - cx) - sy * (a[1] - cy)
+        c = half - sx * (a[0] - cx) - sy * (a[1] - cy)
         rate = sx * d[0] + sy * d[1]
         if rate == 0:
             ok &= c >= 0 if closed else c > 0
@@ -268,6 +269,24 @@ LINE_MISTAKES = [
         "points to the pixels they lie in and steps one whole pixel at a time; the "
         "diamond-exit rule tests the diamonds the segment itself passes through and leaves",
         gives=bresenham_pixels,
+    ),
+    Mistake(
+        "diamond radius",
+        "your diamond is too large: it is the points within ½ of the pixel's centre, measured "
+        "as |dx| + |dy| (its corners are the midpoints of the pixel's sides), not within 1",
+        gives=lambda p0, p1: diamond_pixels(p0, p1, half=1.0),
+    ),
+    Mistake(
+        "diamond at the corner",
+        "your diamonds sit on the pixels' corners: pixel (row, col) owns the diamond around "
+        "its centre (col + ½, row + ½)",
+        gives=lambda p0, p1: diamond_pixels(p0, p1, centre=0.0),
+    ),
+    Mistake(
+        "p0's pixel only",
+        "you returned only the pixel p0 lies in: the rule lights every pixel whose diamond the "
+        "segment passes through and leaves, all along it",
+        gives=lambda p0, p1: frozenset({(int(np.floor(p0[1])), int(np.floor(p0[0])))}),
     ),
     Mistake(
         "DDA",
