@@ -10,10 +10,11 @@ The correct solutions and most generic mistakes run in ``test_exercises.py`` and
 from __future__ import annotations
 
 import re
+from fractions import Fraction
 
 import numpy as np
 import pytest
-from lines_blending_solutions import EPS, line_pixels, line_with
+from lines_blending_solutions import EPS, _meets, line_pixels, line_with
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
 from reasoning_solutions import front_to_back
@@ -85,6 +86,110 @@ def test_an_empty_array_of_pairs_is_an_empty_answer():
     assert as_pixels(np.array([])) == frozenset() == as_pixels(np.zeros((0, 2)))
     report = ex.check("line_pixels", lambda p0, p1: np.array(line_pixels(p0, p1)), budget=60)
     assert report.passed, str(report)
+
+
+def _line_knobs(end_unmoved=False, start=False):
+    """The exact rule (Fraction) with one of r9's mistakes: p1's diamond tested before p1 was
+    moved, or the diamond p0 lies in left dark."""
+    half = Fraction(1, 2)
+
+    def fn(p0, p1):
+        a = (Fraction(p0[0]) - EPS, Fraction(p0[1]) - EPS * EPS)
+        b = (Fraction(p1[0]) - EPS, Fraction(p1[1]) - EPS * EPS)
+        end = (Fraction(p1[0]), Fraction(p1[1])) if end_unmoved else b
+        out = []
+        for row in range(max(int(min(a[1], b[1])) - 1, 0), int(max(a[1], b[1])) + 2):
+            for col in range(max(int(min(a[0], b[0])) - 1, 0), int(max(a[0], b[0])) + 2):
+                cx, cy = col + half, row + half
+                inside_end = abs(end[0] - cx) + abs(end[1] - cy) < half
+                inside_start = start and abs(a[0] - cx) + abs(a[1] - cy) < half
+                if _meets(a, b, cx, cy) and not inside_end and not inside_start:
+                    out.append((row, col))
+        return out
+
+    return fn
+
+
+def test_the_tie_words_agree_with_lesson_12_and_conventions():
+    """r9 09-1: the text said GL moves y up and lights row k − 1; lesson 12 §1 prints that GL
+    lights the lower row, teachraster (and Direct3D) the upper one."""
+    first = _first("line_pixels", line_with(-EPS, 0))
+    assert "GL moves the segment" not in first.explanation
+    assert "row k − 1, the upper row, as Direct3D does" in first.explanation
+    assert "lights the lower row, row k: lesson 12 §1" in first.explanation
+    assert "GL moves it up" not in _first("line_pixels", line_with(-EPS, E2)).explanation
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    task = "".join(json.loads(nb.read_text())["cells"][2]["source"])
+    assert "GL\nsettles" not in task and "lights the lower row" in task.replace("\n", " ")
+
+
+@pytest.mark.parametrize("denominator", [100, 64, 128])
+def test_an_eps_too_large_fails_and_is_named(denominator):
+    """r9 09-2: ε = 1/100 passed every case."""
+    e = Fraction(1, denominator)
+    first = _first("line_pixels", line_with(-e, -e * e))
+    assert first.kind == "ε not small enough", first.explanation
+    assert "your ε is not small enough" in first.explanation
+
+
+def test_p1_tested_before_moving_is_named_and_never_called_eps_in_y():
+    """r9 09-3: "p1 in its diamond" with the unmoved p1 was told "you moved y by −ε"."""
+    first = _first("line_pixels", _line_knobs(end_unmoved=True))
+    assert first.kind == "end tested before moving", first.explanation
+    assert "before moving it" in first.explanation and "−ε, as much as x" not in first.explanation
+
+
+def test_a_mistake_is_named_only_where_it_gives_every_failing_answer():
+    """r9 09-3, the class: (−ε, −ε) shared one failing answer with another mistake. A student
+    with two unrelated slips gets the rule, not one of them named."""
+
+    def two(p0, p1):  # (−ε, −ε), and one pixel of the first line dropped for another reason
+        out = sorted(line_with(-EPS, -EPS)(p0, p1))
+        return out[1:] if tuple(p0) == (1.5, 2.5) else out
+
+    report = ex.check("line_pixels", two, budget=60)
+    assert not report.passed
+    kinds = {f.kind for f in report.failures}
+    assert "ε in y" not in kinds and "end tested before moving" not in kinds, kinds
+
+
+def test_start_diamond_dark_closed_diamond_and_bresenham_are_named():
+    """r9: these got the rule restated."""
+    first = _first("line_pixels", _line_knobs(start=True))
+    assert first.kind == "start diamond dark" and "p0 = " in first.explanation
+    import teachraster as tr
+
+    def bresenham(p0, p1):
+        cov = tr.rasterize_line(p0, p1, 12, 12, rule="bresenham").coverage
+        return [tuple(map(int, rc)) for rc in np.argwhere(cov)]
+
+    first = _first("line_pixels", bresenham)
+    assert first.kind == "Bresenham" and "Bresenham's error term" in first.explanation
+
+
+def test_a_closed_diamond_is_named():
+    from teachraster.exercises.lines import diamond_pixels
+
+    first = _first("line_pixels", lambda p0, p1: diamond_pixels(p0, p1, eps=(0, 0), closed=True))
+    assert "closed diamond" in first.kind and "includes its boundary" in first.explanation
+
+
+def test_the_failing_line_figure_has_a_key_the_diamonds_and_two_kinds_of_end():
+    """r9 09-4: no key, no diamonds, p0 and p1 the same black dot."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("line_pixels", line_with(-EPS, -EPS), budget=60).plot(ax)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    plt.close(fig)
+    assert labels[:3] == ["p0", "p1", "diamonds"] and "lit by both" in labels
+    assert any(lab.startswith(("extra", "missing")) for lab in labels)
 
 
 # -- 9.2 over_to_premultiplied, over_premultiplied -------------------------------------------
@@ -280,3 +385,172 @@ def test_alpha_updated_before_the_colour_is_named():
     first = _first("front_to_back", _under_with(step))
     assert first.kind == "alpha first", first.explanation
     assert "farthest first" not in first.explanation
+
+
+# -- r9: package routes, and the half-named mistakes of 9.2a and 9.3 ---------------------------
+def _premultiply(c):
+    c = np.asarray(c, float)
+    return np.r_[c[:3] * c[3], c[3]]
+
+
+def _prefix_back_to_front(layers):
+    from teachraster.exercises.front_to_back import back_to_front
+
+    read = []
+    for layer in layers:
+        read.append(layer)
+        if np.prod([1 - x[3] for x in read]) <= 0:
+            break
+    return back_to_front(np.reshape(read, (-1, 4)))
+
+
+def _apply_blend(s, d):
+    from teachraster.core.blend_factors import BLEND_MODES, apply_blend
+
+    return apply_blend(np.asarray(s, float), np.asarray(d, float), *BLEND_MODES["premultiplied"])
+
+
+def _factor(s, d):
+    from teachraster.core.blend_factors import factor
+
+    s, d = np.asarray(s, float), np.asarray(d, float)
+    return s + d * factor("ONE_MINUS_SRC_ALPHA", s, d)
+
+
+@pytest.mark.parametrize(
+    ("name", "fn", "called"),
+    [
+        ("over_premultiplied", _apply_blend, "apply_blend"),
+        ("over_premultiplied", _factor, "factor"),
+        (
+            "over_to_premultiplied",
+            lambda s, d: _apply_blend(_premultiply(s), _premultiply(d)),
+            "apply_blend",
+        ),
+        ("front_to_back", _prefix_back_to_front, "back_to_front"),
+    ],  # fmt: skip
+    ids=["apply_blend", "factor", "9.2a apply_blend", "back_to_front prefix"],
+)
+def test_every_package_route_is_flagged_and_not_counted(name, fn, called):
+    """r9 09-6, 09-8: the private apply_blend and back_to_front passed unflagged."""
+    report = ex.check(name, fn, budget=60)
+    assert report.package and f"teachraster's {called}" in report.package, report.package
+    assert not report.passed
+    with pytest.raises(AssertionError):
+        report.assert_passed()
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind", "words"),
+    [
+        (
+            lambda s, d: np.r_[
+                s[:3] * (1 - s[3]) + np.asarray(d[:3]) * d[3] * s[3], s[3] + d[3] * (1 - s[3])
+            ],
+            "weights swapped",
+            "swapped the weights",
+        ),
+        (
+            lambda s, d: np.r_[s[:3] * s[3] + np.asarray(d[:3]) * d[3], s[3] + d[3] * (1 - s[3])],
+            "destination not scaled",
+            "did not scale the destination by (1 − α_s)",
+        ),
+    ],  # fmt: skip
+    ids=["swapped weights", "destination not scaled"],
+)
+def test_9_2a_swapped_weights_and_unscaled_destination_are_named(fn, kind, words):
+    """r9 O4 (issue 30: "over with swapped weights") and O9 got the rule restated."""
+    first = _first("over_to_premultiplied", lambda s, d: fn(np.asarray(s), np.asarray(d)))
+    assert first.kind == kind and words in first.explanation, first.explanation
+
+
+def _walk(step, before_opaque=False, straight=False):
+    def fn(layers):
+        acc = np.zeros(4)
+        for c in layers:
+            if before_opaque and c[3] >= 1:
+                break
+            acc = step(acc, np.asarray(c, float))
+            if acc[3] >= 1:
+                break
+        if straight and acc[3] > 0:
+            acc = np.r_[acc[:3] / acc[3], acc[3]]
+        return acc
+
+    return fn
+
+
+def _under(a, c):
+    return a + (1 - a[3]) * c
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind", "words"),
+    [
+        (_walk(_under, straight=True), "returned straight", "you returned a straight colour"),
+        (_walk(_under, before_opaque=True), "before the opaque layer", "opaque layer itself"),
+        (
+            _walk(lambda a, c: np.r_[a[:3] + (1 - c[3]) * c[:3], _under(a, c)[3]]),
+            "colour by own alpha",
+            "1 − its own alpha",
+        ),
+        (
+            _walk(lambda a, c: np.r_[a[:3] + a[3] * c[:3], _under(a, c)[3]]),
+            "colour by A",
+            "by A, the alpha accumulated",
+        ),
+        (
+            _walk(lambda a, c: np.r_[_under(a, c)[:3], max(a[3], c[3])]),
+            "alpha max",
+            "the larger alpha",
+        ),
+    ],  # fmt: skip
+    ids=["straight", "before opaque", "own alpha", "by A", "max"],
+)
+def test_9_3_mistakes_that_got_the_rule_restated_are_named(fn, kind, words):
+    """r9 09-9: F8, F7, F6, F11 and F12."""
+    first = _first("front_to_back", fn)
+    assert first.kind == kind and words in first.explanation, first.explanation
+
+
+def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_false():
+    """r9 09-7 and 09-5: the passing figure drew opaque red over blue, where no checkerboard
+    shows; 9.2a said "lesson 12 does not print them" though §9 states the premultiplied rule."""
+    import json
+    from pathlib import Path
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("over_premultiplied", over_pm).plot(ax)
+    ticks = " ".join(t.get_text() for t in ax.get_xticklabels())
+    plt.close(fig)
+    assert "(0.3, 0.2, 0.05, 0)" in ticks.replace(",\n", ", "), ticks  # the glow
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+    assert "does not print" not in text["over_premultiplied_task"]
+    assert "**9.2a.**" in text["over_premultiplied_task"]
+    assert "**9.2b.**" in text["over_premultiplied_step"]
+
+
+@pytest.mark.parametrize(
+    ("knobs", "kind"),
+    [({"half": 1.0}, "diamond radius"), ({"centre": 0.0}, "diamond at the corner")],
+    ids=["radius 1", "centred on the corner"],
+)
+def test_a_wrong_diamond_is_named(knobs, kind):
+    """r9 L13, L14: the rule restated."""
+    from teachraster.exercises.lines import diamond_pixels
+
+    first = _first("line_pixels", lambda p0, p1: sorted(diamond_pixels(p0, p1, **knobs)))
+    assert first.kind == kind, first.explanation
+
+
+def test_only_p0s_pixel_is_named():
+    """r9 L18."""
+    first = _first("line_pixels", lambda p0, p1: [(int(p0[1]), int(p0[0]))])
+    assert first.kind == "p0's pixel only", first.explanation

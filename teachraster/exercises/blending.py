@@ -3,8 +3,10 @@
 
 ``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
 the premultiplied result: the derivation exercise 9.2 asks for from Porter and Duff's coverage
-argument, which lesson 12 does not print (it prints the rule on premultiplied inputs); both
-alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
+argument. Lesson 12 §9 states the rule on premultiplied inputs without deriving it, and
+premultiplying first, then applying that rule, gives the same numbers: the check cannot tell a
+derivation from that route, and the notebook says so (r9: it claimed the lesson printed
+neither); both alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
 glow (alpha 0, light in it), which no straight colour holds: a solution that divides by alpha
 to reuse 9.2a loses it, and is named.
 
@@ -20,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.blend_factors import BLEND_MODES, blend_equation
+from ..core.blend_factors import BLEND_MODES, apply_blend, blend_equation, factor
 from .answers import as_numbers
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import NOISE, vec
@@ -256,12 +258,30 @@ FROM_STRAIGHT = [
      "straight colour", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("destination not scaled", "the destination was not scaled by (1 − α_s)",
      lambda s, d: _premultiply(s) + _premultiply(d)),
+    # r9 (issue 30: "over with swapped weights"; O9): alpha right, the colour's weights wrong
+    ("weights swapped", "you swapped the weights of over: the source counts in its own share "
+     "α_s of the pixel (C_s·α_s), not in the 1 − α_s it leaves uncovered, and the destination "
+     "in α_d of that uncovered share, α_d·(1 − α_s), not in α_d·α_s",
+     lambda s, d: _with_alpha(s[:3] * (1 - s[3]) + d[:3] * d[3] * s[3], s, d)),
+    ("weights swapped", "you swapped the weights of over, on all four channels: the source "
+     "counts in its own share α_s of the pixel, not in the 1 − α_s it leaves uncovered, and the "
+     "destination in the share α_d·(1 − α_s) of what the source leaves, not in α_d·α_s",
+     lambda s, d: np.r_[s[:3] * (1 - s[3]) + d[:3] * d[3] * s[3], 1 - s[3] + d[3] * s[3]]),
+    ("destination not scaled", "you did not scale the destination by (1 − α_s) (your alpha is "
+     "right): it shows only in the share of the pixel the source leaves uncovered, so its "
+     "colour counts α_d·(1 − α_s), not α_d",
+     lambda s, d: _with_alpha(s[:3] * s[3] + d[:3] * d[3], s, d)),
     ("source unchanged", "that is the source unchanged: it is blended over the destination, "
      "weighted by its alpha", lambda s, d: np.asarray(s, dtype=float)),
     ("multiplied by alpha twice", "you multiplied by the result's alpha twice: the colours "
      "added up, each weighted by how much of it is seen, are already the premultiplied colour "
      "α·C", lambda s, d: _times_alpha(from_straight(s, d))),
 ]  # fmt: skip
+
+
+def _with_alpha(colour, src, dst) -> np.ndarray:
+    """A colour with the right alpha of straight src over dst."""
+    return np.r_[colour, src[3] + dst[3] * (1 - src[3])]
 
 
 def _times_alpha(c) -> np.ndarray:
@@ -362,11 +382,21 @@ def _mistakes(mode: str) -> list[Mistake]:
     return out
 
 
+def blend_answers() -> tuple[PackageAnswer, ...]:
+    """Every route into the package's blending (r9: the private ``apply_blend`` passed
+    unflagged while ``tr.blend_equation`` was flagged): the blend module's functions, which
+    every render blends through, and the checker's own reference."""
+    step = "the blend this exercise asks you to write"
+    return (PackageAnswer(blend_equation), PackageAnswer(apply_blend, what=step),
+            PackageAnswer(factor, what=f"the blend factors, a part of {step}"),
+            PackageAnswer(from_straight))  # fmt: skip
+
+
 def _exercise(name: str, mode: str) -> Exercise:
     return Exercise(
         name, lambda: blend_cases(mode), _rgba, lambda g, e, a: all_close(g, e, 1e-6),
-        explain_blend, _rule(mode), _mistakes(mode), answers=(PackageAnswer(blend_equation),),
-        draw=_blend_drawer(mode),
+        explain_blend, _rule(mode), _mistakes(mode), answers=blend_answers(),
+        draw=_blend_drawer(mode), example=5 if mode == "premultiplied" else 4,  # glow; quarter
     )  # fmt: skip
 
 
@@ -430,6 +460,6 @@ FROM_STRAIGHT_EXERCISE = Exercise(
     "over_to_premultiplied", lambda: blend_cases("from straight"), _rgba,
     lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("from straight"),
     _mistakes("from straight"), draw=_blend_drawer("from straight"),
-    answers=(PackageAnswer(blend_equation), PackageAnswer(from_straight)),
+    answers=blend_answers(), example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip
 PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")

@@ -14,6 +14,8 @@ explain it, in this order:
    its answer and agrees with the most answers overall, provided it agrees with four answers
    in five (else its answer here is a coincidence, frequent where answers are few: three
    verdicts, a bool); symptoms ("keeps a vertex behind the plane") only when no cause fits.
+   An exercise with ``partial_names=False`` names here only a mistake that gives every
+   failing answer.
 4. **Low precision**, only when the error is within the rounding of the precision named
    (float32: ``8 · 2**-24`` of the case's scale, see :attr:`.exercise.Exercise.float32`), and
    **NaN or infinity** in the answer.
@@ -321,6 +323,8 @@ def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]
         chosen = next((f for f in whole if r.index in f.failing), None)
         if chosen is None:
             here = [f for f in fits if r.index in f.failing and not f.coincidence]
+            if not spec.partial_names:  # every failing answer, or no name
+                here = [f for f in here if len(f.failing) == len(failing)]
             here.sort(key=lambda f: (f.mistake.symptom, -f.agrees, len(f.mistake.parts), f.order))
             chosen = here[0] if here else None
         if chosen is not None:

@@ -120,6 +120,7 @@ class PackageAnswer:
 
     function: Callable
     when: Callable[[dict], bool] | None = None
+    what: str = "this very answer"  # what it computes, as the "not counted" note says
 
 
 @dataclass(frozen=True)
@@ -171,6 +172,14 @@ class Exercise:
     compose : callable, optional
         ``compose(head, words)``: the explanation from the case's numbers and the mistake's
         words (default: the numbers first, see :func:`.diagnosis.compose`).
+    example : int
+        The case drawn when every case passes (r9: the first, opaque red over blue, showed
+        nothing a translucent blend does).
+    partial_names : bool
+        A mistake may be named on the failing cases it explains while others fail for another
+        reason (default). False: named only where it gives every failing answer, for mistakes
+        that differ on a few cases only (r9: ``line_pixels``' "(−ε, −ε)" shared one failing
+        answer with "p1 tested before moving", and named it).
     """
 
     name: str
@@ -189,6 +198,8 @@ class Exercise:
     call: Callable | None = None
     match: Callable | None = None
     compose: Callable | None = None
+    partial_names: bool = True
+    example: int = 0
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

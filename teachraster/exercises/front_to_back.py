@@ -27,9 +27,9 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers
-from .blending import colour_texts, swatches
+from .blending import blend_answers, colour_texts, swatches
 from .cases import SEED
-from .exercise import Exercise, Mistake, variant_mistakes
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
 from .tolerance import all_close
 
@@ -158,13 +158,18 @@ def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
 
 
 def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
-    def loop(step):
+    def loop(step, before_opaque=False):
         acc = CLEAR.copy()
         for layer in layers:
+            if before_opaque and layer[3] >= 1:  # r9 F7: the opaque layer itself left out
+                break
             acc = step(acc, layer)
             if stops and acc[3] >= 1:
                 break
         return acc
+
+    def under(acc, c):
+        return acc + (1 - acc[3]) * c
 
     def straight(acc, c):  # multiplies the premultiplied colour by alpha again
         t = 1 - acc[3]
@@ -185,7 +190,19 @@ def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
         ),
         "own alpha": loop(lambda acc, c: acc + (1 - c[3]) * c),
         "alpha first": loop(_alpha_first),
-    }
+        # r9: F6, F11, F12, F8 and F7 got the rule restated
+        "colour by own alpha": loop(
+            lambda acc, c: np.r_[acc[:3] + (1 - c[3]) * c[:3], acc[3] + (1 - acc[3]) * c[3]]),
+        "colour by A": loop(lambda acc, c: np.r_[acc[:3] + acc[3] * c[:3], under(acc, c)[3]]),
+        "alpha max": loop(lambda acc, c: np.r_[under(acc, c)[:3], max(acc[3], c[3])]),
+        "returned straight": _straight(loop(under)),
+        **({"before the opaque layer": loop(under, before_opaque=True)} if stops else {}),
+    }  # fmt: skip
+
+
+def _straight(c):
+    """A premultiplied composite divided by its alpha (0 where the alpha is 0)."""
+    return np.r_[np.divide(c[:3], c[3], out=np.zeros(3), where=c[3] > 0), c[3]]
 
 
 def _alpha_first(acc, c):
@@ -254,6 +271,19 @@ MISTAKES = {
     "alpha first": "you updated the accumulated alpha before the colour: a layer's colour is "
     "weighed by the transmittance 1 − A of the layers in front of it, the A from before this "
     "layer",
+    "colour by own alpha": "you weighed each layer's colour by 1 − its own alpha (your alpha "
+    "is right): a layer's colour is premultiplied already, and it is seen through the "
+    "transmittance 1 − A of the layers in front of it (A: the alpha accumulated so far)",
+    "colour by A": "you weighed each layer's colour by A, the alpha accumulated so far: that "
+    "is how much the layers in front cover; what they let through is the transmittance 1 − A",
+    "alpha max": "you kept the larger alpha: coverage composes like colour, A ← A + (1 − A)·α, "
+    "so two half-covering layers cover three quarters, not a half",
+    "returned straight": "you returned a straight colour (divided by the composite's alpha): "
+    "the answer is premultiplied, the colour multiplied by the composite's alpha, as each "
+    "layer is",
+    "before the opaque layer": "you stopped before adding the opaque layer: the opaque layer "
+    "itself is missing from your composite; add it (weighted by the transmittance 1 − A), then "
+    "stop",
 }
 
 
@@ -295,4 +325,7 @@ def draw_layers(ax, case, got):
 FRONT_TO_BACK = Exercise(
     "front_to_back", layer_cases, as_rgba, same_rgba, explain_layers, _rule,
     variant_mistakes(_variants, WORDS, WALK), draw=draw_layers, call=call_front_to_back,
+    # r9: back_to_front fed the layers up to the opaque one passed unflagged; the package's
+    # blend functions compute the over step the task asks you to turn round
+    answers=(PackageAnswer(back_to_front), *blend_answers()), example=4,  # opaque in the middle
 )  # fmt: skip

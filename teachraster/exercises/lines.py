@@ -1,13 +1,18 @@
 """Exercise ``line_pixels(p0, p1)`` of lesson 12: the diamond-exit rule.
 
-The expected pixels come from the core: :func:`teachraster.rasterize_line` (exact, with GL's
-tie perturbation (x, y) − (ε, ε²)). The mistakes are the rule with a knob turned
+The expected pixels come from the core: :func:`teachraster.rasterize_line` (exact, with the
+tie perturbation (x, y) − (ε, ε²) applied to teachraster's y-down window numbers: GL's
+answer for every sloped line, Direct3D's for a horizontal line on a row boundary; lesson 12
+§1 and CONVENTIONS, Lines). The mistakes are the rule with a knob turned
 (:func:`diamond_pixels`, here in floats with ε = 2⁻²⁰ and ε² = 2⁻⁴⁰, far above float64's
-rounding of these coordinates and far below their 1/8 grid): the end pixel lit, no
-perturbation or one in another direction, pairs given as (col, row), and a DDA that rounds
-the line at each column instead of testing diamonds. The cases hold ties of every kind:
+rounding of these coordinates and far below their 1/8 grid): the end pixel lit, or tested
+before it was moved, the start pixel left dark, a closed diamond, no perturbation or one in
+another direction, an ε too large, pairs given as (col, row), Bresenham's walk, and a DDA that
+rounds the line at each column instead of testing diamonds. The cases hold ties of every kind:
 horizontal and vertical lines on pixel boundaries (both directions), 45° lines along diamond
-edges, lines through diamond corners.
+edges, lines through diamond corners, and lines that pass a diamond corner so closely that an
+ε of 1/100 moves them across it. A mistake is named only where it gives every failing answer
+(r9: the end tested before moving was named "(−ε, −ε)" from one case it happened to share).
 """
 
 from __future__ import annotations
@@ -46,6 +51,11 @@ def line_cases() -> list[tuple[str, tuple, set]]:
         ("running left and up", (10.4, 9.3), (1.6, 2.2)),
         ("zero length", (4.5, 4.5), (4.5, 4.5)),
         ("shorter than a pixel", (2.2, 2.3), (2.9, 2.6)),
+        # r9: an ε of 1/100 moves these across a diamond corner they pass within ε of (found
+        # by a search over the 1/8 grid); the infinitesimal ε does not
+        ("steep, past a corner by less than 1/100", (9.25, 6.25), (10.25, 2.625)),
+        ("steep, past a corner, downwards", (1.375, 1.75), (3.25, 8.375)),
+        ("x-major, past a corner by less than 1/100", (11.5, 2.625), (4.25, 7.625)),
     ]
     rng = np.random.default_rng(SEED)
     for k in range(24):
@@ -76,24 +86,40 @@ def as_pixels(value) -> frozenset[tuple[int, int]]:
     return frozenset(pairs)
 
 
-def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col"):
-    """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points,
-    ``end=True`` also lights the pixel whose diamond holds p1, ``order="col row"`` gives
-    pairs the other way round."""
+def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col",
+                   closed=False, start=False, half=0.5, centre=0.5):  # fmt: skip
+    """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points;
+    ``end=True`` also lights the pixel whose diamond holds p1, ``end="unmoved"`` tests that
+    diamond with p1 before it was moved; ``closed=True`` counts the diamond's boundary in;
+    ``start=True`` leaves the diamond that holds (the moved) p0 dark; ``order="col row"``
+    gives pairs the other way round; ``half`` is the diamond's radius and ``centre`` where it
+    sits in its pixel (½: the centre)."""
     a, b = np.asarray(p0, float) + eps, np.asarray(p1, float) + eps
     lo, hi = np.floor(np.minimum(a, b)) - 1, np.floor(np.maximum(a, b)) + 2
-    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), min(hi[0], WINDOW)),
-                             np.arange(max(lo[1], 0), min(hi[1], WINDOW)))  # fmt: skip
-    cx, cy = cols.ravel() + 0.5, rows.ravel() + 0.5
+    # no clip at the window's far side: a student's too-large diamond reaches past it
+    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), hi[0]), np.arange(max(lo[1], 0), hi[1]))
+    cx, cy = cols.ravel() + centre, rows.ravel() + centre
+    ok = _meets(a, b, cx, cy, closed, half)
+    if end is not True:
+        e = np.asarray(p1, float) if end == "unmoved" else b
+        ok &= np.abs(e[0] - cx) + np.abs(e[1] - cy) >= half
+    if start:
+        ok &= np.abs(a[0] - cx) + np.abs(a[1] - cy) >= half
+    pixels = zip(rows.ravel()[ok].astype(int), cols.ravel()[ok].astype(int))
+    return frozenset((c, r) if order == "col row" else (r, c) for r, c in pixels)
+
+
+def _meets(a, b, cx, cy, closed=False, half=0.5) -> np.ndarray:
+    """Does the segment a -> b meet each diamond (open, or ``closed``) around (cx, cy)?"""
     d = b - a
     t_lo, t_hi = np.zeros(cx.shape), np.ones(cx.shape)
     lo_open, hi_open = np.zeros(cx.shape, bool), np.zeros(cx.shape, bool)
     ok = np.ones(cx.shape, bool)
     for sx, sy in ((1, 1), (1, -1), (-1, 1), (-1, -1)):  # sx(x − cx) + sy(y − cy) < ½
-        c = 0.5 - sx * (a[0] - cx) - sy * (a[1] - cy)
+        c = half - sx * (a[0] - cx) - sy * (a[1] - cy)
         rate = sx * d[0] + sy * d[1]
         if rate == 0:
-            ok &= c > 0
+            ok &= c >= 0 if closed else c > 0
             continue
         t = c / rate
         if rate > 0:
@@ -102,11 +128,15 @@ def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col"
         else:
             tighter = t >= t_lo
             t_lo, lo_open = np.where(tighter, t, t_lo), lo_open | tighter
-    ok &= (t_lo < t_hi) | ((t_lo == t_hi) & ~lo_open & ~hi_open)
-    if not end:
-        ok &= np.abs(b[0] - cx) + np.abs(b[1] - cy) >= 0.5
-    pixels = zip(rows.ravel()[ok].astype(int), cols.ravel()[ok].astype(int))
-    return frozenset((c, r) if order == "col row" else (r, c) for r, c in pixels)
+    if closed:
+        return ok & (t_lo <= t_hi)
+    return ok & ((t_lo < t_hi) | ((t_lo == t_hi) & ~lo_open & ~hi_open))
+
+
+def bresenham_pixels(p0, p1):
+    """Bresenham's walk (lesson 12 §2), as the package draws it."""
+    cov = rasterize_line(p0, p1, WINDOW, WINDOW, rule="bresenham").coverage
+    return frozenset((int(r), int(c)) for r, c in np.argwhere(cov))
 
 
 def dda_pixels(p0, p1):
@@ -128,9 +158,11 @@ def dda_pixels(p0, p1):
 
 
 _TIE = (
-    "at a tie (a segment along a diamond's edge, or through its corner) GL moves the segment "
-    "by (x, y) − (ε, ε²), ε tiny: x by −ε, y by −ε², so that a horizontal line on a pixel "
-    "boundary y = k lights row k − 1 and a vertical one on x = k column k − 1"
+    "at a tie (a segment along a diamond's edge, or through its corner) the rule moves both end "
+    "points by (x, y) − (ε, ε²), ε vanishingly small, in these y-down window numbers: x by −ε "
+    "(left), y by −ε² (up the image), so that a vertical line on x = k lights column k − 1 and "
+    "a horizontal one on y = k row k − 1, the upper row, as Direct3D does (GL moves y by −ε² "
+    "in its own window, whose y points up, and lights the lower row, row k: lesson 12 §1)"
 )
 #: Why a float perturbation can vanish: the student's ε² (or ε) below float64's rounding of
 #: coordinates such as 3.0 (r8: 1e-18 was told "left y as it is", and the student had not).
@@ -144,31 +176,71 @@ _MOVES = {
     (0.0, 0.0): ("no perturbation", _LOST.format(what="you did not move the end points at all",
                                                  tiny="1e-17")),
     (-EPS, 0.0): ("no ε² in y", _LOST.format(what="you did not move y", tiny="1e-18")),
-    (-EPS, EPS * EPS): ("+ε² in y", "you moved y by +ε² (down; GL moves it up)"),
+    (-EPS, EPS * EPS): ("+ε² in y", "you moved y by +ε² (down the image; the rule moves it up, "
+                        "by −ε²)"),
     (-EPS, -EPS): ("ε in y", "you moved y by −ε, as much as x: y moves by ε², far "
                    "less than x's ε, so that y decides only the ties x leaves"),
     (-EPS, EPS): ("+ε in y", "you moved y by +ε: y moves by −ε² (up, and far less "
                   "than x)"),
-    (EPS, -EPS * EPS): ("+ε in x", "you moved x by +ε (to the right; GL moves it "
-                        "left)"),
-    (EPS, 0.0): ("+ε in x, y not moved", "you moved x by +ε (right; GL moves it left) and did "
-                 "not move y"),
+    (EPS, -EPS * EPS): ("+ε in x", "you moved x by +ε (to the right; the rule moves "
+                        "it left)"),
+    (EPS, 0.0): ("+ε in x, y not moved", "you moved x by +ε (right; the rule moves it left) and "
+                 "did not move y"),
     (EPS, EPS * EPS): ("+ε in x, +ε² in y", "you moved both the other way: x by +ε and y by "
-                       "+ε² (GL moves them left and up)"),
+                       "+ε² (the rule moves them left and up)"),
     (0.0, -EPS * EPS): ("x not moved", "you did not move x"),
     (0.0, -EPS): ("only y moved", "you did not move x, and moved y by −ε"),
     (-EPS * EPS, -EPS): ("ε in y, ε² in x", "you moved x by −ε² and y by −ε: the larger move "
                          "belongs to x (−ε), the tinier one to y (−ε²)"),
 }  # fmt: skip
 
+
+def _end_lit(a, e, g):
+    return (f"you lit the pixel whose diamond p1 = {a[1]} lies in: the segment ends there "
+            "without exiting it, so the rule leaves it to the next segment (a polyline then "
+            "lights each shared vertex once)")  # fmt: skip
+
+
+def _end_unmoved(a, e, g):
+    return (f"you tested which diamond p1 = {a[1]} lies in before moving it: move p1 by "
+            "(−ε, −ε²) for that test as well, as for the rest of the segment (on a tie the "
+            "moved p1 lies in another diamond, or in none)")  # fmt: skip
+
+
+def _start_diamond_dark(a, e, g):
+    return (f"you left the diamond p0 = {a[0]} lies in dark: the segment starts inside it and "
+            "leaves it, so its pixel is lit (only p1's own diamond stays dark)")  # fmt: skip
+
+
 LINE_KNOBS = Knobs(diamond_pixels, {
     "eps": [Slip(kind, f"{_TIE}; {words}", move) for move, (kind, words) in _MOVES.items()],
-    "end": [Slip("end pixel lit", lambda a, e, g: f"you lit the pixel whose diamond p1 = "
-                 f"{a[1]} lies in: the segment ends there without exiting it, so GL leaves it "
-                 "to the next segment (a polyline then lights each shared vertex once)", True)],
+    "end": [Slip("end pixel lit", _end_lit, True),
+            Slip("end tested before moving", _end_unmoved, "unmoved")],
     "order": [Slip("(col, row) order", "your pairs are (col, row): return (row, col), the row "
                    "first, as an image is indexed [row, col]", "col row")],
+    "closed": [Slip("closed diamond", "your diamond includes its boundary (|dx| + |dy| ≤ ½); "
+                    "it is open (< ½): a segment that only touches a corner or runs along an "
+                    "edge does not meet it, and such ties go to the segment moved by "
+                    "(−ε, −ε²)", True)],
+    "start": [Slip("start diamond dark", _start_diamond_dark, True)],
 })  # fmt: skip
+
+#: ε too large (r9: 1/100 passed every case): each gives its own answer, named by its value.
+LARGE_EPS = {"1/10": 0.1, "1/16": 1 / 16, "1/20": 0.05, "1/32": 1 / 32, "1/50": 0.02,
+             "1/64": 1 / 64, "1/100": 0.01, "1/128": 1 / 128, "1/256": 1 / 256,
+             "1/1000": 1e-3}  # fmt: skip
+
+
+def _large_eps(name: str, eps: float) -> Mistake:
+    words = (f"your ε is not small enough: your pixels are those an ε of {name} (and ε² in "
+             "y) gives, where the moved segment crosses a diamond corner it only passes near "
+             "and another pixel lights; the rule's ε is smaller than any gap the inputs can "
+             "make, so take one far below the 1/8 grid's (2⁻⁸⁰, with Fraction)")  # fmt: skip
+    return Mistake(
+        "ε not small enough",
+        words,
+        gives=lambda p0, p1: diamond_pixels(p0, p1, eps=(-eps, -eps * eps)),
+    )
 
 
 def _start_dark(p0, p1):
@@ -178,10 +250,11 @@ def _start_dark(p0, p1):
 
 LINE_MISTAKES = [
     LINE_KNOBS,
+    *(_large_eps(name, eps) for name, eps in LARGE_EPS.items()),
     Mistake(
         "reversed",
-        "you drew the segment from p1 to p0: its direction matters, GL leaves p1's own diamond "
-        "dark (not p0's) and the −(ε, ε²) perturbation is not symmetric",
+        "you drew the segment from p1 to p0: its direction matters, the rule leaves p1's own "
+        "diamond dark (not p0's) and the −(ε, ε²) perturbation is not symmetric",
         gives=lambda p0, p1: diamond_pixels(p1, p0),
     ),
     Mistake(
@@ -191,8 +264,33 @@ LINE_MISTAKES = [
         gives=_start_dark,
     ),
     Mistake(
+        "Bresenham",
+        "you walked the line with Bresenham's error term (lesson 12 §2): it takes the end "
+        "points to the pixels they lie in and steps one whole pixel at a time; the "
+        "diamond-exit rule tests the diamonds the segment itself passes through and leaves",
+        gives=bresenham_pixels,
+    ),
+    Mistake(
+        "diamond radius",
+        "your diamond is too large: it is the points within ½ of the pixel's centre, measured "
+        "as |dx| + |dy| (its corners are the midpoints of the pixel's sides), not within 1",
+        gives=lambda p0, p1: diamond_pixels(p0, p1, half=1.0),
+    ),
+    Mistake(
+        "diamond at the corner",
+        "your diamonds sit on the pixels' corners: pixel (row, col) owns the diamond around "
+        "its centre (col + ½, row + ½)",
+        gives=lambda p0, p1: diamond_pixels(p0, p1, centre=0.0),
+    ),
+    Mistake(
+        "p0's pixel only",
+        "you returned only the pixel p0 lies in: the rule lights every pixel whose diamond the "
+        "segment passes through and leaves, all along it",
+        gives=lambda p0, p1: frozenset({(int(np.floor(p0[1])), int(np.floor(p0[0])))}),
+    ),
+    Mistake(
         "DDA",
-        "you rounded the line at each column (or row) centre, a DDA; GL lights the "
+        "you rounded the line at each column (or row) centre, a DDA; the rule lights the "
         "pixels whose diamond |x − (col + ½)| + |y − (row + ½)| < ½ the segment exits",
         gives=dda_pixels,
     ),
@@ -221,9 +319,13 @@ def _line_rule(args, expected, got) -> str:
 
 
 def draw_line(ax, case, got):
-    """The segment over the pixels: the rule's lit ones beside yours; before any answer
-    (``got`` None), the segment alone, so that the figure never shows the answer first."""
+    """The segment over the pixels and the diamonds around it: the rule's lit pixels beside
+    yours, in a key (r9: no key, no diamonds, p0 and p1 alike); before any answer (``got``
+    None), the segment alone, so that the figure never shows the answer first."""
+    from matplotlib.collections import PolyCollection
     from matplotlib.colors import ListedColormap
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
 
     from .drawing import STATE_COLOURS
 
@@ -236,8 +338,26 @@ def draw_line(ax, case, got):
             state[r, c] = 2 if (r, c) in expected else 3
     artists = [ax.imshow(state, cmap=ListedColormap(STATE_COLOURS), vmin=0, vmax=3,
                          extent=(0, WINDOW, WINDOW, 0), interpolation="nearest")]  # fmt: skip
-    artists += ax.plot([p0[0], p1[0]], [p0[1], p1[1]], "k-o", ms=4)
+    (x0, x1), (y0, y1) = (sorted((p0[k], p1[k])) for k in (0, 1))
+    near = [(j, i) for i in range(max(int(y0) - 1, 0), min(int(y1) + 2, WINDOW))
+            for j in range(max(int(x0) - 1, 0), min(int(x1) + 2, WINDOW))]  # fmt: skip
+    diamonds = [[(j + 0.5, i), (j + 1, i + 0.5), (j + 0.5, i + 1), (j, i + 0.5)] for j, i in near]
+    artists.append(ax.add_collection(PolyCollection(diamonds, facecolor="none",
+                                                    edgecolor="#E69F00", lw=0.8)))  # fmt: skip
+    artists += ax.plot([p0[0], p1[0]], [p0[1], p1[1]], "k-", lw=1.5)
+    artists += ax.plot(*p0, "o", color="k", ms=6)
+    artists += ax.plot(*p1, "o", mfc="white", mec="k", ms=7)
     ax.set_aspect("equal")
+    handles = [Line2D([], [], marker="o", color="k", ls="", label="p0"),
+               Line2D([], [], marker="o", mfc="white", mec="k", ls="", label="p1"),
+               Patch(facecolor="none", edgecolor="#E69F00", label="diamonds")]  # fmt: skip
+    if got is not None:
+        shown = [k for k in (1, 2, 3) if k == 1 or (state == k).any()]
+        names = {1: "lit by both", 2: "missing (rule: lit)", 3: "extra (rule: dark)"}
+        handles += [Patch(color=STATE_COLOURS[k], label=names[k]) for k in shown]
+    # outside the axes, to the right: the key never hides a pixel
+    artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
+                             bbox_to_anchor=(1.02, 1)))  # fmt: skip
     return artists
 
 
@@ -245,5 +365,6 @@ LINE_PIXELS = Exercise(
     "line_pixels", line_cases, as_pixels, lambda g, e, a: g == e, explain_line, _line_rule,
     LINE_MISTAKES, constant=lambda v: f"your function returns {short(set(v))} for every line, "
     "whatever its end points: a placeholder left in?",
-    answers=(PackageAnswer(rasterize_line),), draw=draw_line,
+    answers=(PackageAnswer(rasterize_line),), draw=draw_line, partial_names=False,
+    example=7,  # 45° along diamond edges: ties, drawn over the diamonds
 )  # fmt: skip

@@ -31,7 +31,7 @@ def _name(answer: PackageAnswer) -> str:
 
 def _words(spec: Exercise, answer: PackageAnswer, how: str) -> str:
     return (
-        f"your {spec.name} {how} {_name(answer)}, which computes this very answer: the check "
+        f"your {spec.name} {how} {_name(answer)}, which computes {answer.what}: the check "
         "does not count the package's own function as your work. Write the computation "
         "yourself (the package's function is there to compare with, not to hand in)"
     )

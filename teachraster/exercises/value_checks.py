@@ -76,7 +76,8 @@ def check_exercise(spec: Exercise, fn) -> Report:
     package = None
     if stopped is None and spec.answers:
         package = package_note(spec, fn, cases[0])
-    example = _drawer(spec, cases[0], cases[0][2])
+    shown = cases[spec.example] if spec.example < len(cases) else cases[0]
+    example = _drawer(spec, shown, shown[2])
     precision = None if failures else _low_precision(results)
     return Report(
         spec.name, failures, len(cases), False, example, stopped, len(ran), package,
