@@ -251,14 +251,28 @@ def test_the_module_docstring_lists_the_mistakes_out_of_the_frames_order():
 def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     cells = _cells()
     assert "sorted(ex.CAUSES.items())" in cells["setup"] and "ex.EVIDENCE" in cells["setup"]
-    intro = cells["intro"]
-    assert "**evidence**" in intro and "not drawn at all" in intro
-    assert "tells nothing" not in intro and "tries" not in intro  # r8 10b; no session counter
+    intro, how = cells["intro"], cells["how_text"]
+    assert "**evidence**" in intro and "not drawn at all" in how
+    assert "tells nothing" not in intro + how and "tries" not in intro + how  # r8 10b
+    assert len(intro.split()) < 200  # r9 11-6: 543 words before a frame
+    assert "**redrawn**" in how and "typed in" in how and "private functions" in how
     for n in ANSWERS:
         task = cells[f"frame_{n}_task"]
         assert "evidence the list names" in task and ANSWERS[n] not in task
+        assert f"broken_frame_{n}(b)" in task and f"`broken[{n}]`" in task
         solution = cells[f"broken_frame_{n}_solution"]
-        assert "history(" in solution, n  # the solution reads the value off the history
+        assert f"def broken_frame_{n}(b):" in solution, n  # a function of the frame pair
+        assert "b.frame" in solution and "broken[" not in solution.split("SOLUTION")[1], n
+    assert "def depths_shown(b, row, col)" in cells["example"]  # the worked form (frame 1)
+
+
+def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
+    """r9 11-3, 11-4: frame 1's depths are mirrored and frame 4 is contrived, said where the
+    student reads (the solution cells are stripped from the student version)."""
+    cells = _cells()
+    assert "mirrored" in cells["frame_1_task"]
+    assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
+    assert "ontrived" not in cells["broken_frame_4_solution"]
 
 
 def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():
