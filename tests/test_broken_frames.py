@@ -144,6 +144,8 @@ def test_a_loop_over_one_pixels_history_values_fails_the_redrawn_frame(number):
         redrawn = bf._redrawn(number, look)
         assert np.array_equal(bf._differs(redrawn), bf._differs(number))  # the same pixels
         assert all(bf._judged(redrawn, a)[0] == "copied" for a in found), look
+        honest = bf.as_diagnosis(sol.diagnosis(number)(redrawn))  # read off its histories
+        assert bf._judged(redrawn, honest)[0] == "right", look
     report = ex.check(f"broken_frame_{number}", lambda b: found[0])
     assert not report.passed and [f.kind for f in report.failures] == ["typed in"], str(report)
     assert "never typed in" in report.failures[0].explanation
