@@ -655,8 +655,11 @@ def _judged(number, got) -> tuple[str, _Pixel | None]:
     return _judged_on(_as_frame(number), got)
 
 
-@lru_cache(maxsize=256)  # the figure and the words read the verdict again
+# The figure and the words of one check read its verdicts again; a redrawn frame is 0.7 MB,
+# so only the last few checks' are kept.
+@lru_cache(maxsize=32)
 def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
+    """:func:`_judged` on frame ``b`` (the frame shown, or one redrawn for a check)."""
     cause, (row, col), value = got
     if not _differs(b)[row, col]:
         return "pixel", None
