@@ -145,6 +145,45 @@ BROKEN_FRAMES = {
     5: ("blend order", (23, 41), (0.52, 0.67, 0.91)),  # the strip's 'after', overwritten
     6: ("sliver", (22, 40), (0.1213, 0.299992)),  # missed by, and the intended depth there
 }
+
+
+def _shown(h):
+    return next(r for r in h.records if r.shown)
+
+
+def _glass(h):
+    return next(r for r in h.records if r.outcome == "passed" and r.color[3] < 1)
+
+
+def _tied_as_meant(b, row, col):
+    tie = next(r for r in b.frame.history(row, col).records if r.outcome == "hi_z")
+    return next(r for r in b.intended.history(row, col).records if r.triangle == tie.triangle).depth
+
+
+def _sliver(b, row, col):
+    thin = next(r for r in b.frame.history(row, col).records if r.triangle == 2)
+    return thin.outside, _glass(b.intended.history(row, col)).depth
+
+
+#: How each frame's evidence is read off the histories of the frame pair ``b`` at (row, col)
+#: (r9: the answer is a function of the frame it is given, checked on a redrawn frame too).
+READ = {
+    1: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
+    2: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
+    3: _tied_as_meant,
+    4: lambda b, row, col: _glass(b.frame.history(row, col)).color[:3],
+    5: lambda b, row, col: _glass(b.frame.history(row, col)).color_after[:3],
+    6: _sliver,
+}
+
+
+def diagnosis(number, row=None, col=None):
+    """broken_frame_<number>(b): the solution's cause, at (row, col) (default: its pixel)."""
+    cause, pixel, _ = BROKEN_FRAMES[number]
+    row, col = pixel if row is None else (row, col)
+    return lambda b: (cause, (row, col), READ[number](b, row, col))
+
+
 CORRECT = {
     "span": span,
     "perspective_weights": perspective_weights,
@@ -153,6 +192,6 @@ CORRECT = {
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
     "hiz_rejects": hiz_rejects,
-    **{f"broken_frame_{n}": (lambda a=a: a) for n, a in BROKEN_FRAMES.items()},
+    **{f"broken_frame_{n}": diagnosis(n) for n in BROKEN_FRAMES},
     "front_to_back": front_to_back,
 }

@@ -1029,23 +1029,46 @@ WRONG = {
     # for all three let a blind loop over the causes and stages pass)
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
-        lambda: ("z-fighting", (24, 28), 0.5),
+        lambda b: ("z-fighting", (24, 28), 0.5),
         "do not bear the mark of 'z-fighting'",
     ),  # fmt: skip
     "frame 2 blamed on the depth function, its evidence read right": (
         "broken_frame_2",
-        lambda: ("depth function", (24, 28), 0.973767),
+        lambda b: ("depth function", (24, 28), 0.973767),
         "read right: it is the evidence of another cause",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",
-        lambda: ("missing premultiplication", (0, 0), (0.31, 0.28, 0.24)),
+        lambda b: ("missing premultiplication", (0, 0), (0.31, 0.28, 0.24)),
         "have the same colour at (0, 0)",
     ),  # fmt: skip
     "frame 3, the stored depth for the intended one": (
         "broken_frame_3",
-        lambda: ("z-fighting", (24, 20), 0.6),
+        lambda b: ("z-fighting", (24, 20), 0.6),
         "do bear the mark of 'z-fighting'",
+    ),  # fmt: skip
+    # r9 (exercises-09-11-r9.md §11): the right sliver at a pixel it does not cross was told
+    # "the cause is another"; (col, row) and the sliver's pair swapped were half-named; a
+    # value harvested from the frame shown passed
+    "frame 6, the sliver at a pixel it does not cross": (
+        "broken_frame_6",
+        lambda b: ("sliver", (15, 14), _rs.READ[6](b, 15, 14)),
+        "the thin triangle does not pass through this pixel's square (its centre lies 0.6063",
+    ),  # fmt: skip
+    "frame 1, (col, row) for (row, col)": (
+        "broken_frame_1",
+        lambda b: ("depth function", (28, 24), _rs.READ[1](b, 24, 28)),
+        "Your value is the evidence at (24, 28): a pixel is (row, col)",
+    ),  # fmt: skip
+    "frame 6, the sliver's two numbers swapped": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), _rs.READ[6](b, 22, 40)[::-1]),
+        "Your two numbers are in the other order",
+    ),  # fmt: skip
+    "frame 4, the frame shown's value typed in": (
+        "broken_frame_4",
+        lambda b: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),
+        "your value is the one frame 4 shows at (24, 20)",
     ),  # fmt: skip
 }
 
@@ -1118,6 +1141,10 @@ KINDS = {
     "frame 2 blamed on the depth function, its evidence read right": "cause",
     "frame 4, a pixel the mistake left alone": "pixel",
     "frame 3, the stored depth for the intended one": "evidence",
+    "frame 6, the sliver at a pixel it does not cross": "pixel without the mark",
+    "frame 1, (col, row) for (row, col)": "evidence",
+    "frame 6, the sliver's two numbers swapped": "evidence",
+    "frame 4, the frame shown's value typed in": "typed in",
 }
 
 
@@ -1367,17 +1394,17 @@ WRONG.update({
     # broken frames: (x, y) for (row, col), a misspelt cause, a pixel off the frame
     "frame 5 pixel given as (x, y)": (
         "broken_frame_5",
-        lambda: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], _rs.BROKEN_FRAMES[5][2]),
+        lambda b: (_rs.BROKEN_FRAMES[5][0], _rs.BROKEN_FRAMES[5][1][::-1], _rs.BROKEN_FRAMES[5][2]),
         "have the same colour at (41, 23)",
     ),  # fmt: skip
     "frame 1 cause misspelt": (
         "broken_frame_1",
-        lambda: ("depth functio", *_rs.BROKEN_FRAMES[1][1:]),
+        lambda b: ("depth functio", *_rs.BROKEN_FRAMES[1][1:]),
         "your function returned the cause 'depth functio', which is not one of the causes",
     ),  # fmt: skip
     "frame 1 pixel off the frame": (
         "broken_frame_1",
-        lambda: (_rs.BROKEN_FRAMES[1][0], (100, 100), _rs.BROKEN_FRAMES[1][2]),
+        lambda b: (_rs.BROKEN_FRAMES[1][0], (100, 100), _rs.BROKEN_FRAMES[1][2]),
         "your function returned pixel (100, 100), outside",
     ),  # fmt: skip
 })  # fmt: skip

@@ -40,7 +40,7 @@ def _passes(name, fn):
 
 
 def _first(number, answer):
-    report = ex.check(f"broken_frame_{number}", lambda: answer)
+    report = ex.check(f"broken_frame_{number}", lambda b: answer)
     assert not report.passed, answer
     return report.failures[0]
 
@@ -57,9 +57,9 @@ def _showing(number):
 
 
 def _right(number, row, col):
-    """A right answer at (row, col): the first value the check derives there."""
-    value = bf._evidence(number, ANSWERS[number], bf._pixel(number, row, col))[0]
-    return ANSWERS[number], (row, col), value
+    """A right diagnosis at (row, col): the evidence read off the histories of the frame it is
+    given (the one shown, or one redrawn for the check)."""
+    return sol.diagnosis(number, row, col)
 
 
 # -- the answer needs the evidence ------------------------------------------------------------
@@ -72,7 +72,11 @@ def test_a_blind_loop_over_the_causes_with_made_up_values_never_passes(number):
     row, col = sol.BROKEN_FRAMES[number][1]
     other = _showing(number)
     for pixel in {(row, col), other}:
-        for cause in bf.CAUSES:
+        for cause in bf.CAUSES:  # the verdicts (fast); the words of two below
+            want = "evidence" if cause == ANSWERS[number] else "cause"
+            answer = (cause, pixel, MADE_UP[bf.EVIDENCE[cause][0]])
+            assert bf._judged(number, answer)[0] == want, (cause, pixel)
+        for cause in (ANSWERS[number], "texture filtering"):
             failure = _first(number, (cause, pixel, MADE_UP[bf.EVIDENCE[cause][0]]))
             want = "evidence" if cause == ANSWERS[number] else "cause"
             assert failure.kind == want, (cause, pixel, failure.explanation)
@@ -86,7 +90,8 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     right cause with a value off by more than the printed digits is told the evidence is
     wrong, never the cause; a pixel where the pictures agree is told so."""
     answer = sol.BROKEN_FRAMES[number]
-    _passes(f"broken_frame_{number}", lambda: answer)
+    _passes(f"broken_frame_{number}", sol.diagnosis(number))
+    assert bf._judged(number, bf.as_diagnosis(answer))[0] == "right"  # as printed
     cause, pixel, value = answer
     twin = ANSWERS[next(b if a == number else a for a, b in PAIRS if number in (a, b))]
     same_kind = bf.EVIDENCE[twin][0] == bf.EVIDENCE[cause][0]
@@ -103,13 +108,98 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     assert failure.kind == "pixel" and "same colour" in failure.explanation
 
 
+def _harvest(h) -> list:
+    """Every value a loop can read off one history (r9's g11.py): depths, distances, colours
+    and "after" colours, and (distance, depth) pairs."""
+    out = []
+    for r in h.records:
+        out += [v for v in (r.depth, r.outside) if v is not None]
+        out += [tuple(c[:3]) for c in (r.color, r.color_after) if c]
+    return out
+
+
+@pytest.mark.parametrize("number", list(ANSWERS))
+def test_a_loop_over_one_pixels_history_values_fails_the_redrawn_frame(number):
+    """r9 11-1: the ten causes × every value of one changed pixel's two histories passed all
+    six in 137 calls. The values a loop finds on the frame shown (it does find them: the
+    verdict is an oracle there) fail each frame the check redraws, and a function returning
+    them is told the value is the frame shown's, typed in."""
+    b = ex.broken_frame(number)
+    pixels = np.argwhere(bf._differs(number))
+    row, col = (int(v) for v in pixels[len(pixels) // 2])
+    values = _harvest(b.frame.history(row, col)) + _harvest(b.intended.history(row, col))
+    depths = [v for v in values if isinstance(v, float)]
+    values += [(a, d) for a in depths for d in depths]
+    found = []
+    for cause, (kind, _) in bf.EVIDENCE.items():
+        for v in values:
+            if (kind in ("depth", "number")) != isinstance(v, float) or (
+                kind == "pair") != (isinstance(v, tuple) and len(v) == 2):  # fmt: skip
+                continue
+            answer = (cause, (row, col), v)
+            if bf._judged(number, answer)[0] == "right":
+                found.append(answer)
+    assert found, "the loop finds the frame shown's answer"
+    for look in bf._REDRAWN:
+        redrawn = bf._redrawn(number, look)
+        assert np.array_equal(bf._differs(redrawn), bf._differs(number))  # the same pixels
+        assert all(bf._judged(redrawn, a)[0] == "copied" for a in found), look
+        honest = bf.as_diagnosis(sol.diagnosis(number)(redrawn))  # read off its histories
+        assert bf._judged(redrawn, honest)[0] == "right", look
+    report = ex.check(f"broken_frame_{number}", lambda b: found[0])
+    assert not report.passed and [f.kind for f in report.failures] == ["typed in"], str(report)
+    assert "never typed in" in report.failures[0].explanation
+
+
+def test_the_checkers_private_readers_are_not_counted():
+    """r9 11-2: the salted hash and ``_evidence`` gave 6/6 in 6 calls; on the redrawn frame
+    they still give the evidence, so the report says they were called and does not count it."""
+
+    def private(b):
+        cause = next(c for c in bf.CAUSES if bf._is_cause(b.number, c))
+        return cause, (22, 40), bf._evidence(b, cause, bf._pixel(b, 22, 40))[0]
+
+    report = ex.check("broken_frame_6", private)
+    assert not report.failures and not report.passed
+    assert "read from the checker's private functions: not counted" in report.package
+    with pytest.raises(AssertionError, match="not counted"):
+        report.assert_passed()
+    assert ex.check("broken_frame_6", sol.diagnosis(6)).package is None  # history only
+
+
+def test_a_check_run_inside_the_answer_never_passes():
+    """A function that tries answers against the checker from inside itself learns nothing:
+    the check it runs fails every case with the same words."""
+    inner = []
+
+    def searching(b):
+        inner.append(ex.check("broken_frame_1", sol.diagnosis(1)))
+        return sol.diagnosis(1)(b)
+
+    assert ex.check("broken_frame_1", searching).passed
+    assert inner and not any(r.passed for r in inner)
+    assert {f.kind for r in inner for f in r.failures} == {"check inside"}
+    assert ex.check("broken_frame_1", sol.diagnosis(1)).passed  # nothing left behind
+
+
+def test_a_swapped_pixel_or_pair_is_named():
+    """r9 M7 and M20: (col, row) and the sliver's pair in the other order were half-named."""
+    failure = _first(1, ("depth function", (28, 24), sol.READ[1](ex.broken_frame(1), 24, 28)))
+    assert "the evidence at (24, 28): a pixel is (row, col)" in failure.explanation
+    pair = sol.READ[6](ex.broken_frame(6), 22, 40)[::-1]
+    assert "in the other order" in _first(6, ("sliver", (22, 40), pair)).explanation
+    wrong = _first(6, ("sliver", (22, 40), (0.5, 0.5))).explanation
+    assert "other order" not in wrong and "row first" not in wrong
+
+
 def test_the_evidence_needs_the_digits_the_history_prints():
     """A depth to three decimals is not the evidence (it would make a loop over a thousand
     values enough); a depth as printed, or exactly as the record holds it, is."""
     kept = next(r for r in ex.broken_frame(1).frame.history(24, 28).records if r.shown)
     assert _first(1, ("depth function", (24, 28), round(kept.depth, 3))).kind == "evidence"
-    _passes("broken_frame_1", lambda: ("depth function", (24, 28), round(kept.depth, 6)))
-    _passes("broken_frame_1", lambda: ("depth function", (np.int64(24), 28), kept.depth))
+    read = sol.READ[1]
+    _passes("broken_frame_1", lambda b: ("depth function", (24, 28), round(read(b, 24, 28), 6)))
+    _passes("broken_frame_1", lambda b: ("depth function", (np.int64(24), 28), read(b, 24, 28)))
     assert bf._TOLERANCE["depth"] < 1e-5 and bf._TOLERANCE["number"] < 1e-4
     # one number would be a short loop for the distance: the sliver also needs the depth
     assert bf.EVIDENCE["sliver"][0] == "pair"
@@ -163,14 +253,28 @@ def test_the_module_docstring_lists_the_mistakes_out_of_the_frames_order():
 def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     cells = _cells()
     assert "sorted(ex.CAUSES.items())" in cells["setup"] and "ex.EVIDENCE" in cells["setup"]
-    intro = cells["intro"]
-    assert "**evidence**" in intro and "not drawn at all" in intro
-    assert "tells nothing" not in intro and "tries" not in intro  # r8 10b; no session counter
+    intro, how = cells["intro"], cells["how_text"]
+    assert "**evidence**" in intro and "not drawn at all" in how
+    assert "tells nothing" not in intro + how and "tries" not in intro + how  # r8 10b
+    assert len(intro.split()) < 200  # r9 11-6: 543 words before a frame
+    assert "**redrawn**" in how and "typed in" in how and "private functions" in how
     for n in ANSWERS:
         task = cells[f"frame_{n}_task"]
         assert "evidence the list names" in task and ANSWERS[n] not in task
+        assert f"broken_frame_{n}(b)" in task and f"`broken[{n}]`" in task
         solution = cells[f"broken_frame_{n}_solution"]
-        assert "history(" in solution, n  # the solution reads the value off the history
+        assert f"def broken_frame_{n}(b):" in solution, n  # a function of the frame pair
+        assert "b.frame" in solution and "broken[" not in solution.split("SOLUTION")[1], n
+    assert "def depths_shown(b, row, col)" in cells["example"]  # the worked form (frame 1)
+
+
+def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
+    """r9 11-3, 11-4: frame 1's depths are mirrored and frame 4 is contrived, said where the
+    student reads (the solution cells are stripped from the student version)."""
+    cells = _cells()
+    assert "mirrored" in cells["frame_1_task"]
+    assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
+    assert "ontrived" not in cells["broken_frame_4_solution"]
 
 
 def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():
@@ -271,7 +375,7 @@ def test_broken_frames_come_in_look_alike_pairs_told_apart_only_by_their_histori
 def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
     """r8: 36 of the 96 changed pixels lie in the sliver's bounding box only. Each pixel that
     bears its mark holds a point of the sliver (found by sampling its edges densely, not by
-    the check's own test), and (23, 40) is refused."""
+    the check's own test), and (23, 40) is refused as a pixel, never as a cause (r9 11.6)."""
     frame = ex.broken_frame(6).frame
     xy = frame.trace.window[int(np.argmin(bf._altitudes(frame))), :, :2]
     t = np.linspace(0, 1, 200_001)[:, None]  # along its three edges: it is 0.1 px thick
@@ -281,7 +385,10 @@ def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
               if "sliver" in _marks(6, int(r), int(c))}  # fmt: skip
     assert marked and marked <= crossed, sorted(marked - crossed)
     assert (22, 40) in marked and (23, 40) not in marked
-    assert _first(6, ("sliver", (23, 40), (0.78, 0.3))).kind == "cause"
+    failure = _first(6, ("sliver", (23, 40), (0.78, 0.3)))
+    assert failure.kind == "pixel without the mark", failure.explanation
+    assert "the cause is another" not in failure.explanation
+    assert "crosses" in bf.EVIDENCE["sliver"][1] or "passes" in bf.EVIDENCE["sliver"][1]
 
 
 def test_broken_frame_5_compares_triangles_by_their_corners_not_their_records():
@@ -291,7 +398,7 @@ def test_broken_frame_5_compares_triangles_by_their_corners_not_their_records():
     first = [h.records[0].outcome for h in (b.frame.history(20, 31), b.intended.history(20, 31))]
     assert first == ["not_covered", "passed"]
     assert bf._parts_at(5, 20, 31) == "blending"
-    _passes("broken_frame_5", lambda: _right(5, 20, 31))
+    _passes("broken_frame_5", _right(5, 20, 31))
 
 
 def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
@@ -329,7 +436,7 @@ def test_broken_frames_3_to_6_draw_their_glass_without_depth_writes():
 # -- the form of an answer -----------------------------------------------------------------------
 def test_broken_frame_answers_are_read_strictly():
     def said(answer):
-        report = ex.check("broken_frame_1", lambda: answer)
+        report = ex.check("broken_frame_1", lambda b: answer)
         assert report.failures[0].kind == "type", str(report)
         return report.failures[0].explanation
 
@@ -349,7 +456,7 @@ def test_broken_frame_answers_are_read_strictly():
 
 
 def test_broken_frame_cause_alone_reads_plainly():
-    said = ex.check("broken_frame_1", lambda: "depth function").failures[0].explanation
+    said = ex.check("broken_frame_1", lambda b: "depth function").failures[0].explanation
     assert "only the cause" in said and "(cause, (row, col), evidence)" in said, said
     assert "not a string" not in said, said
 
@@ -371,12 +478,12 @@ def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_titl
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    report = ex.check("broken_frame_5", lambda: ("blend order", (20, 31), (0.1, 0.2, 0.3)))
+    report = ex.check("broken_frame_5", lambda b: ("blend order", (20, 31), (0.1, 0.2, 0.3)))
     fig, ax = plt.subplots(figsize=(7, 4))
     report.plot(ax)
     xs = sorted(min(line.get_xdata()) for line in ax.lines)
     assert xs == [31, 31 + bf.W + 12], xs
-    assert ax.get_title() == "broken_frame_5 fails: the diagnosis", ax.get_title()
+    assert ax.get_title() == "broken_frame_5 fails: the frame shown", ax.get_title()
     plt.close(fig)
 
 
@@ -415,8 +522,8 @@ def test_the_passing_figure_marks_the_accepted_pixel_of_its_own_report():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    first = ex.check("broken_frame_5", lambda: _right(5, 20, 31))
-    ex.check("broken_frame_5", lambda: sol.BROKEN_FRAMES[5])
+    first = ex.check("broken_frame_5", _right(5, 20, 31))
+    ex.check("broken_frame_5", sol.diagnosis(5))
     assert first.passed
     fig, ax = plt.subplots(figsize=(7, 4))
     first.plot(ax)

@@ -214,7 +214,7 @@ for _name, _fn, _ in WRONG.values():
 for _n in range(1, 7):  # a cause that is not the frame's
     FIRST_WRONG.setdefault(
         f"broken_frame_{_n}",
-        lambda n=_n: ("texture filtering", (24, 28), (0.5, 0.5, 0.5)),
+        lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5)),
     )
 
 

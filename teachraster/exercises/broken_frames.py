@@ -20,17 +20,29 @@ which shows how each frame is built. Neither gives the point: the evidence is a 
 student's own pixel, derived from the frame's history when the answer is checked (r8: the
 cause, a changed pixel and a stage named by the cause passed, 77 blind calls solved all six).
 
-What a wrong answer is told, in this order: a pixel where the two frames agree; a cause whose
-mark (:data:`_SIGNS`) the two histories at the pixel do not bear (and, when the value given
-is this pixel's evidence of the real cause, that it was read right); for a cause whose mark
-they bear, that the value is not the evidence there. The cause alone can be found by trying
-the ten names; the point needs the value, which only the pixel's history gives.
+The answer is a function ``broken_frame_n(b)`` that reads the diagnosis from the frame pair
+``b`` it is given. The check calls it on the frame shown and on the same mistake redrawn at
+check time with another look (:data:`_REDRAWN`: another wall and strip colour, other depths;
+the same changed pixels), so a value harvested from the frame shown by a loop over its
+history's values fails the redrawn frame (r9 11-1: 137 calls solved all six). What remains
+open, said in docs/grading.md: a loop inside the function that tries answers against the
+checker (a check started from inside the student's function never passes), and calls into
+this module's private readers (reported "not counted", :data:`_PRIVATE`).
+
+What a wrong answer is told, in this order: a check run inside the function; a pixel where
+the two frames agree; the frame's cause at a changed pixel that does not show its mark
+(:data:`_SIGNS`; the sliver's: the thin triangle passes through the pixel); a cause that is
+not the frame's (and, when the value given is this pixel's evidence of the real cause, that
+it was read right); the frame shown's value given for the redrawn frame; a value that is not
+the evidence there (and a row and column, or the sliver's two numbers, swapped).
 """
 
 from __future__ import annotations
 
 import hashlib
 import operator
+import secrets
+import threading
 from dataclasses import dataclass
 from functools import cache, lru_cache
 
@@ -41,7 +53,7 @@ from ..pipeline.planning.render_plan import Plan
 from ..pipeline.rendering.render_triangles import Frame, render
 from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
-from .exercise import Exercise, Mistake
+from .exercise import Exercise, Mistake, PackageAnswer
 from .running import WrongAnswerType
 
 #: Frame size: small, so that every pixel is easy to pick.
@@ -82,15 +94,16 @@ EVIDENCE = {
                        "was nearer"),
     "missing premultiplication": ("colour", "the fragment colour (r, g, b) the blend received"),
     "near-plane clipping": ("number", "how far (px) the centre lies beyond the near plane"),
-    "sliver": ("pair", "(how far (px) the pixel centre lies outside the thin triangle, the "
-               "depth of the fragment the intended frame draws there instead)"),
+    "sliver": ("pair", "(how far (px) the centre of a pixel the thin triangle passes "
+               "through lies outside it, the depth of the fragment the intended frame draws "
+               "there instead)"),
     "texture filtering": ("colour", "the texel colour (r, g, b) the pixel shows"),
-    "z-fighting": ("depth", "the depth, in the intended frame's history, of the fragment that "
-                   "fails on a tie in the broken one"),
+    "z-fighting": ("depth", "the depth the fragment that fails on a tie in the broken frame "
+                   "was meant to have: its depth in the intended frame's history"),
 }  # fmt: skip
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # by identity: a redrawn frame is another frame
 class BrokenFrame:
     """One frame to diagnose, as the student gets it: the symptom as reported and the two
     frames. What broke it is the check's to know, not a field to read."""
@@ -104,9 +117,17 @@ class BrokenFrame:
         return f"BrokenFrame({self.number}: {self.symptom!r}, .frame, .intended)"
 
 
-def _differs(number: int) -> np.ndarray:
+def _as_frame(number) -> BrokenFrame:
+    """The frame a check reads: a :class:`BrokenFrame` itself (a redrawn one), a case's
+    expected :class:`_Number` (the frame of its case), or a number (the frame shown)."""
+    if isinstance(number, BrokenFrame):
+        return number
+    return getattr(number, "b", None) or broken_frame(int(number))
+
+
+def _differs(number) -> np.ndarray:
     """(H, W) bool: the pixels the mistake of frame ``number`` changed (colour, RGB)."""
-    b = broken_frame(number)
+    b = _as_frame(number)
     return ~np.isclose(_rgb(b.frame), _rgb(b.intended), atol=1e-6).all(axis=2)
 
 
@@ -134,8 +155,8 @@ class _Pixel:
     stage: str | None  # the first stage where they differ (:data:`STAGES`), None: they agree
 
 
-def _pixel(number: int, row: int, col: int) -> _Pixel:
-    b = broken_frame(number)
+def _pixel(number, row: int, col: int) -> _Pixel:
+    b = _as_frame(number)
     mine, meant = b.frame.history(row, col), b.intended.history(row, col)
     stage = next((s for s, x, y in zip(STAGES, _stages(b.frame, mine), _stages(b.intended, meant))
                   if x != y), None)  # fmt: skip
@@ -238,10 +259,36 @@ def _quad(x0, y0, x1, y1):
     return [[[x0, y0], [x1, y0], [x1, y1]], [[x0, y0], [x1, y1], [x0, y1]]]
 
 
-def _cube(winding_reversed: bool = False, **kwargs) -> Frame:
+@dataclass(frozen=True)
+class _Look:
+    """What a frame's values are, apart from its mistake: the wall's colour and depth (in
+    16-bit steps, so that a pane 1e-6 nearer ties with it), the strip's straight colour and
+    depth, and the cube's depths (clip z -> a z + c w: the same pixels, other depths). The
+    check redraws each frame with another look (r9 11-1: a value harvested from the frame
+    shown, by a loop over the history's values, fails the redrawn one)."""
+
+    wall: tuple = (0.62, 0.56, 0.48)
+    wall_steps: int = 39321  # 0.6 exactly in unorm16
+    strip: tuple = (0.2, 0.45, 0.85)
+    strip_depth: float = 0.3
+    cube: tuple = (1.0, 0.0)
+
+
+#: The look of the frames shown, and the looks a check redraws them with (one at random).
+_SHOWN = _Look()
+_REDRAWN = (
+    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05)),
+    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04)),
+    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03)),
+)
+
+
+def _cube(look: _Look, winding_reversed: bool = False, **kwargs) -> Frame:
     scene = get_scene("cube")
     clip = scene.clip(W / H)
     clip = clip * np.array([1.6, 1.6, 1, 1])  # zoomed in: a narrower field of view
+    a, c = look.cube
+    clip[..., 2] = a * clip[..., 2] + c * clip[..., 3]  # other depths, the same pixels
     if kwargs.pop("reverse_depth", False):
         clip = clip * np.array([1, 1, -1, 1])  # z/w negated: window depth 1 - d
     rgba = np.concatenate([scene.mesh.corner("color"), np.ones((len(clip), 3, 1))], axis=2)
@@ -253,9 +300,8 @@ def _cube(winding_reversed: bool = False, **kwargs) -> Frame:
 #: Frames 3 to 6 share one wall and one set of render settings (premultiplied blending,
 #: a 16-bit depth buffer, one sample): each mistake is in what is drawn, never in a setting
 #: a student could read off the frame and compare with the intended one's.
-_WALL = [[0.62, 0.56, 0.48]]
 _ALPHA = 0.5  # the dark pane's
-_STRIP = (np.array([0.2, 0.45, 0.85]), 0.6)  # the tinted strip's straight colour and alpha
+_STRIP_ALPHA = 0.6  # the tinted strip's
 _WEDGE = [
     [[8, 13.5], [56, 25.5], [56, 27.5]],  # the strip as meant: 2 px tall throughout
     [[8, 13.5], [56, 27.5], [8, 15.5]],
@@ -278,41 +324,43 @@ def _pixels(parts) -> Frame:
                   depth_write=writes, trace=True, clear_color=(1, 1, 1, 1))  # fmt: skip
 
 
-def _wall():
-    return (_quad(4, 4, 60, 44), 0.6, [*_WALL[0], 1.0])
+def _wall(look: _Look):
+    return (_quad(4, 4, 60, 44), look.wall_steps / 65535, [*look.wall, 1.0])
 
 
-def _pane(depth: float, premultiplied: bool = True):
-    """A dark pane whose straight colour is the wall's darkened by its alpha: blended as
-    premultiplied without being multiplied, it adds exactly what it should have hidden."""
-    straight = _ALPHA * np.asarray(_WALL[0])
+def _pane(look: _Look, nearer: float, premultiplied: bool = True):
+    """A dark pane ``nearer`` than the wall, whose straight colour is the wall's darkened by
+    its alpha: blended as premultiplied without being multiplied, it adds exactly what it
+    should have hidden."""
+    straight = _ALPHA * np.asarray(look.wall)
     colour = straight * _ALPHA if premultiplied else straight
-    return (_quad(20, 12, 44, 36), depth, [*colour, _ALPHA])
+    return (_quad(20, 12, 44, 36), look.wall_steps / 65535 - nearer, [*colour, _ALPHA])
 
 
-def _strip(triangles):
-    colour, alpha = _STRIP
-    return (triangles, 0.3, [*(colour * alpha), alpha])
+def _strip(look: _Look, triangles):
+    return (triangles, look.strip_depth, [*(np.asarray(look.strip) * _STRIP_ALPHA), _STRIP_ALPHA])
 
 
-#: Each frame's symptom as a user would report it: what is seen, never the mechanism. The
-#: frames come in look-alike pairs (1-2, 3-4, 5-6): the same symptom, the same picture and
-#: the same intended picture, pixel for pixel; only the histories tell them apart (3 to 6
-#: even share the broken picture: a plain wall).
+#: Each frame's symptom as a user would report it: what is seen, never the mechanism, and how
+#: to draw it with a look (broken, intended). The frames come in look-alike pairs (1-2, 3-4,
+#: 5-6): the same symptom, the same picture and the same intended picture, pixel for pixel;
+#: only the histories tell them apart (3 to 6 even share the broken picture: a plain wall).
 _SPECS = [
     ("The cube does not look as intended.",
-     lambda: _cube(reverse_depth=True), _cube),
+     lambda k: _cube(k, reverse_depth=True), lambda k: _cube(k)),
     ("The cube does not look as intended.",
-     lambda: _cube(winding_reversed=True, cull="back"), lambda: _cube(cull="back")),
+     lambda k: _cube(k, winding_reversed=True, cull="back"), lambda k: _cube(k, cull="back")),
     ("The dark pane on the wall is missing.",
-     lambda: _pixels([_wall(), _pane(0.6 - 1e-6)]), lambda: _pixels([_wall(), _pane(0.599)])),
+     lambda k: _pixels([_wall(k), _pane(k, 1e-6)]), lambda k: _pixels([_wall(k), _pane(k, 1e-3)])),
     ("The dark pane on the wall is missing.",
-     lambda: _pixels([_wall(), _pane(0.4, premultiplied=False)]),
-     lambda: _pixels([_wall(), _pane(0.4)])),
+     lambda k: _pixels([_wall(k), _pane(k, 0.2, premultiplied=False)]),
+     lambda k: _pixels([_wall(k), _pane(k, 0.2)])),
     ("The tinted strip across the wall is missing.",
-     lambda: _pixels([_strip(_WEDGE), _wall()]), lambda: _pixels([_wall(), _strip(_WEDGE)])),
+     lambda k: _pixels([_strip(k, _WEDGE), _wall(k)]),
+     lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
     ("The tinted strip across the wall is missing.",
-     lambda: _pixels([_wall(), _strip(_NEEDLE)]), lambda: _pixels([_wall(), _strip(_WEDGE)])),
+     lambda k: _pixels([_wall(k), _strip(k, _NEEDLE)]),
+     lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
 ]  # fmt: skip
 
 
@@ -341,8 +389,20 @@ def _handed_out(frame: Frame) -> Frame:
 @cache
 def broken_frames() -> tuple[BrokenFrame, ...]:
     """The six frames, numbered from 1 (rendered once), their plans withheld."""
-    return tuple(BrokenFrame(k + 1, symptom, _handed_out(broken()), _handed_out(intended()))
-                 for k, (symptom, broken, intended) in enumerate(_SPECS))  # fmt: skip
+    return tuple(_drawn(n, _SHOWN) for n in range(1, len(_SPECS) + 1))
+
+
+def _drawn(number: int, look: _Look) -> BrokenFrame:
+    """Frame ``number`` drawn with ``look``, its plans withheld."""
+    symptom, broken, intended = _SPECS[number - 1]
+    return BrokenFrame(number, symptom, _handed_out(broken(look)), _handed_out(intended(look)))
+
+
+def _redrawn(number: int, look: _Look | None = None) -> BrokenFrame:
+    """Frame ``number`` with the same mistake, drawn at check time with another look (one of
+    :data:`_REDRAWN` at random, unless ``look`` is given): the student's function must read
+    its evidence from the frame it is given."""
+    return _drawn(number, look or _REDRAWN[secrets.randbelow(len(_REDRAWN))])
 
 
 def frames_to_inspect() -> dict[str, Frame]:
@@ -395,11 +455,11 @@ def _parts_at(number: int, row: int, col: int) -> str | None:
     return _pixel(number, row, col).stage
 
 
-def _evidence(number: int, cause: str, p: _Pixel) -> list:
-    """The values :data:`EVIDENCE` names for ``cause`` at pixel ``p`` of frame ``number``,
-    read from its histories (empty where the pixel lacks the cause's mark): any one of them
-    is the evidence."""
-    b = broken_frame(number)
+def _evidence(number, cause: str, p: _Pixel) -> list:
+    """The values :data:`EVIDENCE` names for ``cause`` at pixel ``p`` of frame ``number`` (a
+    number, or a redrawn :class:`BrokenFrame`), read from its histories (empty where the pixel
+    lacks the cause's mark): any one of them is the evidence."""
+    b = _as_frame(number)
     if not _SIGNS[cause][0](p, b):
         return []
     mine = p.mine.records
@@ -528,33 +588,99 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int], object]:
 
 
 class _Number(int):
-    """A frame's number as its case's expected answer, holding the answer the check accepted
-    (``right``): the passing figure marks its pixel (r8 11-9), one report at a time."""
+    """A frame's number as its case's expected answer, holding the frame the case hands the
+    student's function (``b``: the frame shown, or one redrawn for this check), and the answer
+    the check accepted (``right``): the passing figure marks its pixel (r8 11-9)."""
 
+    b = None
     right = None
+    nested = False  # the case of a check run inside the student's own function
+
+    @classmethod
+    def of(cls, b: BrokenFrame, nested: bool = False) -> _Number:
+        number = cls(b.number)
+        number.b, number.nested = b, nested
+        return number
+
+
+#: The threads running a student's diagnosis right now: a check started from inside one is a
+#: search through the checker (r9: the verdict is an oracle), so its cases never pass.
+_STUDENT_THREADS: set = set()
+
+
+def _call(fn, args):
+    """Run the student's function on a case (marking its thread) and read its answer."""
+    me = threading.get_ident()
+    inside = me in _STUDENT_THREADS
+    _STUDENT_THREADS.add(me)
+    try:
+        value = fn(*args)
+    finally:
+        if not inside:
+            _STUDENT_THREADS.discard(me)
+    return as_diagnosis(value)
 
 
 def _cases(number: int):
-    return lambda: [("the diagnosis", (), _Number(number))]  # one case: a short title (r7)
+    """Two cases: the frame shown, and the same mistake redrawn with another look, built for
+    this check (r9 11-1: 137 calls harvesting one pixel's history passed all six)."""
+
+    def cases():
+        nested = threading.get_ident() in _STUDENT_THREADS
+        shown, redrawn = broken_frame(number), _redrawn(number)
+        return [("the frame shown", (shown,), _Number.of(shown, nested)),
+                ("the frame redrawn", (redrawn,),
+                 _Number.of(redrawn, nested))]  # fmt: skip
+
+    return cases
 
 
-@lru_cache(maxsize=256)  # the figure and the words read the verdict again
-def _judged(number: int, got) -> tuple[str, _Pixel | None]:
-    """The verdict on one answer: "right", "pixel" (the frames agree there), "cause" (the
-    pixel's histories lack its mark, or it is not the frame's) or "evidence"."""
+def _right_at(b: BrokenFrame, cause: str, row: int, col: int, value) -> bool:
+    """Is (cause, (row, col), value) right for ``b``: the frame's cause, a changed pixel whose
+    histories bear its mark, and its evidence there?"""
+    if not (0 <= row < H and 0 <= col < W and _differs(b)[row, col]):
+        return False
+    p = _pixel(b, row, col)
+    return (_is_cause(b.number, cause) and _SIGNS[cause][0](p, b)
+            and _matches(EVIDENCE[cause][0], value, _evidence(b, cause, p)))  # fmt: skip
+
+
+def _judged(number, got) -> tuple[str, _Pixel | None]:
+    """The verdict on one answer for the case's frame: "nested" (a check inside the student's
+    function), "right", "pixel" (the frames agree there), "unmarked" (the frame's cause, at a
+    changed pixel that does not show it), "cause", "copied" (the frame shown's value, given
+    for the redrawn one) or "evidence"."""
+    if getattr(number, "nested", False):
+        return "nested", None
+    return _judged_on(_as_frame(number), got)
+
+
+# The figure and the words of one check read its verdicts again; a redrawn frame is 0.7 MB,
+# so only the last few checks' are kept.
+@lru_cache(maxsize=32)
+def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
+    """:func:`_judged` on frame ``b`` (the frame shown, or one redrawn for a check)."""
     cause, (row, col), value = got
-    if not _differs(number)[row, col]:
+    if not _differs(b)[row, col]:
         return "pixel", None
-    p = _pixel(number, row, col)
-    if not (_is_cause(number, cause) and _SIGNS[cause][0](p, broken_frame(number))):
+    p = _pixel(b, row, col)
+    if not _SIGNS[cause][0](p, b):
+        return ("unmarked" if _is_cause(b.number, cause) else "cause"), p
+    if not _is_cause(b.number, cause):
         return "cause", p
     kind = EVIDENCE[cause][0]
-    return ("right" if _matches(kind, value, _evidence(number, cause, p)) else "evidence"), p
+    if _matches(kind, value, _evidence(b, cause, p)):
+        return "right", p
+    if b is not broken_frame(b.number) and _right_at(
+        broken_frame(b.number), cause, row, col, value
+    ):
+        return "copied", p
+    return "evidence", p
 
 
 def _same(got, number, args=None) -> bool:
-    right = _judged(int(number), got)[0] == "right"
-    if right and isinstance(number, _Number):
+    right = _judged(number, got)[0] == "right"
+    if right and isinstance(number, _Number) and number.b is broken_frame(int(number)):
         number.right = got
     return right
 
@@ -562,22 +688,64 @@ def _same(got, number, args=None) -> bool:
 def _explain(args, number, got) -> str:
     cause, (row, col), value = got
     shown = value if isinstance(value, float) else tuple(round(v, 6) for v in value)
-    return f"frame {number}: {cause!r} at pixel ({row}, {col}) with {shown}"
+    what = "frame" if _as_frame(number) is broken_frame(int(number)) else "redrawn frame"
+    return f"{what} {int(number)}: {cause!r} at pixel ({row}, {col}) with {shown}"
+
+
+def _swapped(number, got) -> str:
+    """Words for an answer that is right with its row and column, or its pair, swapped."""
+    b, (cause, (row, col), value) = _as_frame(number), got
+    if _right_at(b, cause, col, row, value):
+        return (f". Your value is the evidence at ({col}, {row}): a pixel is (row, col), the "
+                "row first, then the column")  # fmt: skip
+    if EVIDENCE[cause][0] == "pair" and _right_at(b, cause, row, col, tuple(value)[::-1]):
+        return (". Your two numbers are in the other order: (the distance outside the thin "
+                "triangle, the intended frame's depth)")  # fmt: skip
+    return ""
+
+
+def _history_hint(number, row, col, what: str) -> str:
+    n = int(number)
+    return (f"print(broken[{n}].frame.history({row}, {col}))"
+            + (f" and print(broken[{n}].intended.history({row}, {col}))"
+               if "intended" in what else ""))  # fmt: skip
 
 
 def _cause_words(args, number, got) -> str:
+    """A cause that is not the frame's (the pixel lacks its mark, or it is the other one)."""
     cause, (row, col), value = got
-    _, p = _judged(int(number), got)
-    words = (f"the two histories of ({row}, {col}) do not bear the mark of {cause!r} (it "
-             f"would show: {_SIGNS[cause][1]}), so the cause is another, or this pixel does "
-             "not show it")  # fmt: skip
-    real = next((c for c in CAUSES if _is_cause(number, c)), None)
+    _, p = _judged(number, got)
+    b = _as_frame(number)
+    marked = p is not None and _SIGNS[cause][0](p, b)
+    words = (f"the two histories of ({row}, {col}) do bear the mark of {cause!r} ("
+             f"{_SIGNS[cause][1]}), but another cause broke this frame" if marked else
+             f"the two histories of ({row}, {col}) do not bear the mark of {cause!r} (it would "
+             f"show: {_SIGNS[cause][1]}), so the cause is another")  # fmt: skip
+    real = next((c for c in CAUSES if _is_cause(b.number, c)), None)
     if real is not None and p is not None:
         kind = EVIDENCE[real][0]
-        if kind == EVIDENCE[cause][0] and _matches(kind, value, _evidence(number, real, p)):
+        if kind == EVIDENCE[cause][0] and _matches(kind, value, _evidence(b, real, p)):
             words += (". Your value is in this pixel's history, read right: it is the "
                       "evidence of another cause")  # fmt: skip
     return words
+
+
+def _unmarked_words(args, number, got) -> str:
+    """The frame's cause at a changed pixel whose histories do not show it (r9 11.6: told "the
+    cause is another", though it was right)."""
+    cause, (row, col), _ = got
+    if cause == "sliver":
+        b = _as_frame(number)
+        k = int(np.argmin(_altitudes(b.frame)))
+        far = [r.outside for r in b.frame.history(row, col).records if r.triangle == k]
+        by = f" (its centre lies {far[0]:.4f} px outside it)" if far and far[0] else ""
+        return (f"the pictures differ at ({row}, {col}), but the thin triangle does not pass "
+                f"through this pixel's square{by}, so the pixel cannot show a sliver: pick a "
+                "pixel the thin triangle crosses without covering its centre")  # fmt: skip
+    return (
+        f"the pictures differ at ({row}, {col}), but its two histories do not show the "
+        f"mark of {cause!r} ({_SIGNS[cause][1]}): pick a pixel whose histories do"
+    )
 
 
 def _evidence_words(args, number, got) -> str:
@@ -589,10 +757,26 @@ def _evidence_words(args, number, got) -> str:
     }.get(kind, "the four digits it prints")
     return (f"the two histories of ({row}, {col}) do bear the mark of {cause!r} "
             f"({_SIGNS[cause][1]}), but your value is not {what}, at that pixel. Read it off "
-            f"print(broken[{number}].frame.history({row}, {col}))"
-            + (f" and print(broken[{number}].intended.history({row}, {col}))"
-               if "intended" in what else "")
-            + f", with {digits}")  # fmt: skip
+            f"{_history_hint(number, row, col, what)}, with {digits}"
+            + _swapped(number, got))  # fmt: skip
+
+
+def _copied_words(args, number, got) -> str:
+    cause, (row, col), _ = got
+    return (
+        f"your value is the one frame {int(number)} shows at ({row}, {col}); this frame is "
+        "the same mistake redrawn with another wall, strip and depths, so its evidence "
+        "differs: read it inside your function from the frame it is given (b.frame."
+        f"history({row}, {col}), b.intended.history({row}, {col})), never typed in"
+    )
+
+
+def _nested_words(args, number, got) -> str:
+    return (
+        f"your broken_frame_{int(number)} ran a check inside itself: a check run from "
+        "inside the answer never passes (trying answers against the checker is not a "
+        "diagnosis)"
+    )
 
 
 def _rule(args, expected, got) -> str:
@@ -603,15 +787,21 @@ def _verdict(name: str):
     return lambda a, e, g: _judged(e, g)[0] == name
 
 
+def _pixel_words(a, e, g) -> str:
+    return (f"frame {int(e)} and its intended frame have the same colour at ({g[1][0]}, "
+            f"{g[1][1]}): pick a pixel where the two pictures differ, whose history the "
+            "mistake changed" + _swapped(e, g))  # fmt: skip
+
+
 #: What a wrong answer is told, one kind each (the module docstring says in which order).
 DIAGNOSIS_MISTAKES = (
-    Mistake("pixel", lambda a, e, g: (
-        f"frame {e} and its intended frame have the same colour at ({g[1][0]}, {g[1][1]}): "
-        "pick a pixel where the two pictures differ, whose history the mistake changed"),
-        fits=_verdict("pixel")),
+    Mistake("check inside", _nested_words, fits=_verdict("nested")),
+    Mistake("pixel", _pixel_words, fits=_verdict("pixel")),
+    Mistake("pixel without the mark", _unmarked_words, fits=_verdict("unmarked")),
     Mistake("cause", _cause_words, fits=_verdict("cause")),
+    Mistake("typed in", _copied_words, fits=_verdict("copied")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
-)  # fmt: skip
+)
 
 
 def _thinnest(frame: Frame) -> float:
@@ -634,7 +824,7 @@ def _draw(ax, case, got):
     number = int(case[2])
     if isinstance(got, _Number):  # the passing example: the answer accepted, if any
         got = got.right
-    b = broken_frame(number)
+    b = _as_frame(case[2])
     gap = 12  # px between the two pictures: room for their tick labels
     artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest"),
                ax.imshow(_rgb(b.intended), extent=(W + gap, 2 * W + gap, H, 0),
@@ -653,11 +843,21 @@ def _draw(ax, case, got):
     return artists
 
 
+#: The checker's own readers: a diagnosis that calls them reads the answer from the checker,
+#: and is reported "not counted" (r9 11-2: the salted hash and ``_evidence`` gave 6/6).
+_PRIVATE = tuple(
+    PackageAnswer(f, words="read from the checker's private functions: not counted (read the "
+                  "evidence off frame.history(row, col) yourself)")
+    for f in (_is_cause, _pixel, _evidence, _judged_on.__wrapped__, _right_at, _stages, _ties,
+              _thin_missed, _reordered, _recoloured, *(sign for sign, _ in _SIGNS.values()))
+)  # fmt: skip
+
+
 def frame_exercise(number: int) -> Exercise:
     """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), evidence)."""
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
-        DIAGNOSIS_MISTAKES, draw=_draw,
+        DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE,
     )  # fmt: skip
 
 

@@ -116,11 +116,13 @@ class Knobs:
 @dataclass(frozen=True)
 class PackageAnswer:
     """A package function that *is* an exercise's answer (``when(arguments)`` narrows it: the
-    same ``tr.sample`` is bilinear's answer with ``filter="bilinear"`` only)."""
+    same ``tr.sample`` is bilinear's answer with ``filter="bilinear"`` only; ``words``: what
+    the report says of its use, when it is not the package's public answer)."""
 
     function: Callable
     when: Callable[[dict], bool] | None = None
     what: str = "this very answer"  # what it computes, as the "not counted" note says
+    words: str | None = None  # what the report says instead of "teachraster's <name>, which..."
 
 
 @dataclass(frozen=True)
