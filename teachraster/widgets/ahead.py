@@ -68,6 +68,15 @@ def draw_elsewhere(display, explorer, compute) -> tuple:
         explorer._set_artists()  # the artists back as on show (drawn at the next picture)
 
 
+def show_kept(explorer, kept) -> None:
+    """Show a picture kept ahead (``TogglesAhead`` / ``PicturesAhead``: its bytes, caption and
+    the explorer's state when drawn): the state restored, the caption and the picture sent."""
+    picture, caption, state = kept
+    vars(explorer).update(state)
+    explorer.info.value = caption
+    explorer.display.refresh(picture)
+
+
 def slider_positions(slider) -> np.ndarray:
     """The values a :class:`~teachraster.widgets.LiveSlider` can take, position by position.
 

@@ -23,7 +23,7 @@ from matplotlib.patches import Rectangle
 
 from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
 from ..study import hardcases
-from .ahead import PicturesAhead
+from .ahead import PicturesAhead, show_kept
 from .common import (
     Shown,
     close_tree,
@@ -528,10 +528,7 @@ class CasePicker:
         key = (self.case.value, self.method.value)
         kept = None if self._ahead is None else self._ahead.take(key)
         if kept is not None:
-            png, caption, state = kept
-            vars(self).update(state)
-            self.info.value = caption
-            self.display.refresh(png)
+            show_kept(self, kept)
         else:
             self._run()
             self._draw()

@@ -18,7 +18,7 @@ import ipywidgets as widgets
 from ..plotting.pareto import plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
 from ..study.operation_counts import CYCLES_1990S
-from .ahead import PicturesAhead
+from .ahead import PicturesAhead, show_kept
 from .common import (
     Shown,
     control_row,
@@ -196,10 +196,7 @@ class DivideCostExplorer(Shown):
         key = (self.divide.value, self.error.value)
         kept = None if self._ahead is None else self._ahead.take(key)
         if kept is not None:
-            png, caption, state = kept
-            vars(self).update(state)
-            self.info.value = caption
-            self.display.refresh(png)
+            show_kept(self, kept)
             self._stale = True  # the figure still shows the picture before
         else:
             if replot or self._stale:

@@ -15,7 +15,7 @@ from ..pipeline.texturing.texture_filters import levels_read, mip_level
 from ..plotting import plot_error_heatmap, plot_image, plot_levels_read
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..study.texture_truth import footprint_average, texel_reads
-from .ahead import TogglesAhead
+from .ahead import TogglesAhead, show_kept
 from .common import (
     Shown,
     close_tree,
@@ -297,10 +297,7 @@ class FilterExplorer:
         if kept is not None and not self._full(kept[2]):
             kept = None  # only a full picture at the tilt on show stands for a toggle
         if kept is not None:  # a filter drawn ahead at this tilt: its picture at once
-            rgba, caption, state = kept
-            vars(self).update(state)
-            self.info.value = caption
-            self.display.refresh(rgba)
+            show_kept(self, kept)
             self._set_artists()  # for the next picture drawn
         else:
             self._render()

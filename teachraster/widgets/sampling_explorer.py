@@ -12,7 +12,7 @@ import ipywidgets as widgets
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.sampling import KERNELS, plot_sampling, sample_signal, update_sampling
-from .ahead import TogglesAhead
+from .ahead import TogglesAhead, show_kept
 from .common import (
     Shown,
     control_row,
@@ -136,10 +136,7 @@ class SamplingExplorer(Shown):
         where = (self.rate.value, self.width.value)
         kept = self._toggles.take(where, self.kernel.value) if restart and self._toggles else None
         if kept is not None:
-            rgba, caption, state = kept
-            vars(self).update(state)
-            self.info.value = caption
-            self.display.refresh(rgba)
+            show_kept(self, kept)
             self._set_artists()  # for the next picture drawn
         else:
             self._compute_at(self.rate.value, 0)
