@@ -54,6 +54,7 @@ from ..pipeline.rendering.render_triangles import Frame, render
 from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
 from .exercise import Exercise, Mistake, PackageAnswer
+from .interrupt import transparent
 from .running import WrongAnswerType
 
 #: Frame size: small, so that every pixel is easy to pick.
@@ -608,6 +609,7 @@ class _Number(int):
 _STUDENT_THREADS: set = set()
 
 
+@transparent  # its finally only unmarks the thread: the interrupt must pass through it
 def _call(fn, args):
     """Run the student's function on a case (marking its thread) and read its answer."""
     me = threading.get_ident()
