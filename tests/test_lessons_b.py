@@ -282,8 +282,15 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     # triangle (whose vertices float32 holds exactly at 1e6): relative nothing wrong, absolute all
     n_tri = int(ns.far_coverage[0].sum())
     assert ns.far_wrong == {100_000: (0, n_tri), 1_000_000: (0, n_tri)}
-    # r8 07-3: the question asks the consequence (pixels right), from the same data c15 draws
-    assert ns.right_f32 == 0 and ns.far_choices[-1] == "few or none" and n_tri == ns.far_ours.sum()
+    # r10 07-1: q_far asks how far C's rounding can move an edge (a bound: one gap over the
+    # shortest edge), not which way it happened to fall; the held cell prints each edge's move
+    assert ns.far_answer == ns.far_choices[-1] == "thousands of pixels"
+    assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
+    moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
+    assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
+    # c16: every edge moved farther than the triangle's height over it, and nothing is drawn
+    assert (moved > ns.doubled_area / lengths).all()
+    assert ns.right_f32 == 0 and n_tri == ns.far_ours.sum()
     assert np.array_equal(ns.far_f32, ns.wrong32) and round(ns.far_area) == round(ns.doubled_area)
     assert all(np.float32(v) == v for v in (ns.tri_local + 1e6).ravel())
     # the sliver below the shared edge owns the row, alone
