@@ -607,6 +607,20 @@ def test_11_helper_share_counts_every_lane_launched():
     assert np.isclose(1 - useful.sum() / launched.sum(), ns.share["textured_floor"])
 
 
+def test_11_question_4_counts_tiles_as_lesson_10_names_them():
+    """r10 11-1: Hi-Z keeps one depth per 8x8 *tile*; a *block* is a triangle's fragments in one
+    (lesson 10 c24, lesson 11 c27): Question 4's answer counts tiles and says so."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    tiles = {(int(r) // 8, int(c) // 8) for r, c in np.argwhere(ns.rejected > 0)}
+    assert ns.hz_tiles == len(tiles) == 1 and int(ns.rejected.sum()) == 64
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    answer = next("".join(c["source"]) for c in cells if "Question 4:" in "".join(c["source"]))
+    assert "per tile" in answer and "whole tile" in answer
+    assert "per block" not in answer and "8x8 blocks" not in answer
+
+
 def test_11_overshading_title_question_3_and_early_tests():
     import json
 
