@@ -197,6 +197,11 @@ def test_06_divide_cost_slider_reprices_the_front():
     # more than an addition" (the closed forms d + 5 and 1 + (d + 9) / N)
     fronts = ns.front_at
     assert "N=2" not in fronts[1] and fronts[1] == [v for v in fronts[2] if v != "N=2"]
+    # r10 06-2, c25: the toggle's mean error keeps the front and its order; subdivision's mean
+    # is a small fraction of its max, affine's is not
+    assert ns.front_mean == fronts[30]
+    ratio = {v: mx / mean for v, (mx, mean) in ns.err.items() if v in ("affine", "N=16", "N=2")}
+    assert ratio["affine"] < 2 and 100 < ratio["N=16"] < ratio["N=2"]
     assert all(fronts[d] == fronts[2] for d in (9, 30, 128))
     for d in (1, 9, 128):
         priced_rows = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
