@@ -329,6 +329,19 @@ def test_02_barycentrics_and_the_edge_function_bits():
     text = "\n".join(_cells("02_half_planes", "markdown"))
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
     assert "1/512 px" in text and "bits to spare" not in text
+    # r10: lessons 02 and 10 give the extra bit one reason, and a true one: at 8 sub-pixel bits
+    # the centres already lie on the 1/256 grid; with fewer (0: whole pixels) only the extra bit
+    # puts them on it
+    from teachraster.core.snapping import units_per_pixel
+
+    ten = "\n".join(_cells("10_tiles_and_hierarchical_z", "markdown"))
+    reason = "whatever the number of sub-pixel bits"
+    assert all(reason in re.sub(r"\s+", " ", t) for t in (text, ten))
+    assert "lesson 10 says why" not in text and "up to 64 bits" in re.sub(r"\s+", " ", text)
+    centres = [Fraction(2 * j + 1, 2) for j in range(16)]
+    assert all((c * 2**8).denominator == 1 for c in centres)
+    assert all((c * units_per_pixel(0)).denominator == 1 for c in centres)
+    assert not any((c * 2**0).denominator == 1 for c in centres)
     assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
 
 

@@ -197,6 +197,11 @@ def test_06_divide_cost_slider_reprices_the_front():
     # more than an addition" (the closed forms d + 5 and 1 + (d + 9) / N)
     fronts = ns.front_at
     assert "N=2" not in fronts[1] and fronts[1] == [v for v in fronts[2] if v != "N=2"]
+    # r10 06-2, c25: the toggle's mean error keeps the front and its order; subdivision's mean
+    # is a small fraction of its max, affine's is not
+    assert ns.front_mean == fronts[30]
+    ratio = {v: mx / mean for v, (mx, mean) in ns.err.items() if v in ("affine", "N=16", "N=2")}
+    assert ratio["affine"] < 2 and 100 < ratio["N=16"] < ratio["N=2"]
     assert all(fronts[d] == fronts[2] for d in (9, 30, 128))
     for d in (1, 9, 128):
         priced_rows = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
@@ -282,8 +287,15 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     # triangle (whose vertices float32 holds exactly at 1e6): relative nothing wrong, absolute all
     n_tri = int(ns.far_coverage[0].sum())
     assert ns.far_wrong == {100_000: (0, n_tri), 1_000_000: (0, n_tri)}
-    # r8 07-3: the question asks the consequence (pixels right), from the same data c15 draws
-    assert ns.right_f32 == 0 and ns.far_choices[-1] == "few or none" and n_tri == ns.far_ours.sum()
+    # r10 07-1: q_far asks how far C's rounding can move an edge (a bound: one gap over the
+    # shortest edge), not which way it happened to fall; the held cell prints each edge's move
+    assert ns.far_answer == ns.far_choices[-1] == "thousands of pixels"
+    assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
+    moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
+    assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
+    # c16: every edge moved farther than the triangle's height over it, and nothing is drawn
+    assert (moved > ns.doubled_area / lengths).all()
+    assert ns.right_f32 == 0 and n_tri == ns.far_ours.sum()
     assert np.array_equal(ns.far_f32, ns.wrong32) and round(ns.far_area) == round(ns.doubled_area)
     assert all(np.float32(v) == v for v in (ns.tri_local + 1e6).ravel())
     # the sliver below the shared edge owns the row, alone
@@ -598,6 +610,20 @@ def test_11_helper_share_counts_every_lane_launched():
     with np.errstate(invalid="ignore", divide="ignore"):
         launched = np.where(frac < 1, useful / (1 - frac), 0)
     assert np.isclose(1 - useful.sum() / launched.sum(), ns.share["textured_floor"])
+
+
+def test_11_question_4_counts_tiles_as_lesson_10_names_them():
+    """r10 11-1: Hi-Z keeps one depth per 8x8 *tile*; a *block* is a triangle's fragments in one
+    (lesson 10 c24, lesson 11 c27): Question 4's answer counts tiles and says so."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    tiles = {(int(r) // 8, int(c) // 8) for r, c in np.argwhere(ns.rejected > 0)}
+    assert ns.hz_tiles == len(tiles) == 1 and int(ns.rejected.sum()) == 64
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    answer = next("".join(c["source"]) for c in cells if "Question 4:" in "".join(c["source"]))
+    assert "per tile" in answer and "whole tile" in answer
+    assert "per block" not in answer and "8x8 blocks" not in answer
 
 
 def test_11_overshading_title_question_3_and_early_tests():

@@ -16,6 +16,12 @@ def ns():
 
 def test_diamond_rule_and_its_tie(ns):
     assert ns.lit[1] == (1, 1)  # the tie at column 1 goes to the lower pixel
+    # r10 12-2: each tie printed in window (x, y) is "column int(x), between rows y - 1 and y" on
+    # the figure's pixel indices: the corner those two diamonds share; the rule lit one of them
+    assert len(ns.tie_xy) == 4
+    for x, y in ns.tie_xy:
+        j, i = int(x), int(y)
+        assert (x, y) == (j + 0.5, i) and ns.line.coverage[i - 1, j] != ns.line.coverage[i, j]
     assert int(np.flatnonzero(ns.up[:, 1])[0]) == 3
     # "a horizontal line on a row boundary: teachraster lights the upper row" (y down)
     assert ns.flat_rows == [0] and ns.flat.sum() == 8

@@ -14,8 +14,9 @@ import numbers
 from types import SimpleNamespace
 
 import ipywidgets as widgets
+from matplotlib.ticker import FormatStrFormatter, LogLocator
 
-from ..plotting.pareto import plot_pareto, update_pareto
+from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
 from ..study.operation_counts import CYCLES_1990S
 from .ahead import PicturesAhead, show_kept
@@ -174,6 +175,9 @@ class DivideCostExplorer(Shown):
             xlabel="cycles per pixel (op-count model)", ylabel=f"{self.error.value} (texels)",
             short=short_name,
         )  # fmt: skip
+        # labels at 1-2-5 as lesson 06's own charts: a decade apart, only 10 and 100 were
+        self.ax.yaxis.set_major_locator(LogLocator(subs=(1, 2, 5)))
+        floor_ticks(self.ax, self.art.floor, FormatStrFormatter("%g"))
         self._drawn = [a for a in self.ax.get_children() if a not in before]
         self.front = [r["variant"] for r in self.art.front]
 
