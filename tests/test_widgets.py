@@ -106,10 +106,13 @@ def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     frames = player.frames
     assert frames.captions == [s.caption for s in player.trace]  # text: the page never parses it
     assert frames.infos[0] == f"of {len(player.trace) - 1} (snap)"
-    # review r9 (lesson 04 c15): the last step's picture shows coverage; its info line says
-    # where the interpolated values are drawn (the player has the comparison: attributes)
+    # review r9/r10 (lesson 04 c15): the last step's picture shows the values it interpolates
+    # (coloured by them, keyed); its info line points to the comparison of both ways
     assert player.interp_view is not None  # the fixture's triangle has attributes
-    assert frames.infos[-1].endswith("(interpolate: the values are in the comparison below)")
+    assert frames.infos[-1].endswith("(interpolate: both ways in the comparison below)")
+    player.view.show_step(-1, draw=False)
+    assert player.view.values.get_visible()
+    assert any(t.get_text().startswith("u = ") for t in player.view.legend.texts)
     sent = []
     frames.send = lambda content, buffers=None: sent.append((content, buffers))
     frames._on_page_message(frames, {"type": "group", "group": 1, "gen": frames.gen}, [])

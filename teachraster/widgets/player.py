@@ -206,7 +206,10 @@ class FillPlayer(Holdable):
         ax = fill_axes(self.fig, self.width, self.height)
         # The caption and the step number are shown by the page beside the frame, in full
         # and selectable; drawing them in the figure as well would cost time at every step.
-        self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False)
+        # the last step colours the pixels by the attribute it interpolates (review r10, 04
+        # c15: its caption spoke of u over plain coverage); the key names the sample dots
+        self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False,
+                             values=True, attribute=attribute, sample_key=True)  # fmt: skip
         self.interp_view = self.interp_display = None
         if self.tri.attrs:
             name = attribute or next(iter(self.tri.attrs))
@@ -310,8 +313,8 @@ class FillPlayer(Holdable):
         fill_key = self._fill_key()
         if fill_key not in self._texts:
             captions, infos = step_texts(self.trace)
-            if self.interp_view is not None:  # the picture shows coverage; the values are below
-                infos = [i.replace("(interpolate)", "(interpolate: the values are in the "
+            if self.interp_view is not None:  # the other interpolation is in the comparison
+                infos = [i.replace("(interpolate)", "(interpolate: both ways in the "
                                    "comparison below)") for i in infos]  # fmt: skip
             self._texts[fill_key] = captions, infos
         captions, infos = self._texts[fill_key]
