@@ -30,7 +30,14 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .display import (
+    COMPARISON_DPI,
+    FigureDisplay,
+    comparison_axes,
+    new_figure,
+    readable_text,
+    resolve_backend,
+)
 from .dragging import comparison_edit_blit, same_or_new
 from .frames import FramesWidget
 
@@ -217,6 +224,12 @@ class FillPlayer(Holdable):
             axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
+            # shown shrunk to the column at 1024 px: its text at the style's size (review r9
+            # 00 c14, 04 c15: ticks, key and notes read 9-11 px)
+            view = self.interp_view
+            bars = [im.colorbar.ax for im in (*view.images, view.heatmap) if im.colorbar]
+            readable_text([*view.axes, *bars], profile=view.profile,
+                          texts=[view.heatmap.note, *view.in_use])  # fmt: skip
             # a toggle changes the images, outlines and colour bars: the rest stays cached
             self._interp_blit = comparison_edit_blit(self.interp_view)
             self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
