@@ -645,7 +645,9 @@ def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method)
 
 
 def test_fill_view_keys_the_sample_dots_it_is_told_of():
-    """Review r9: the player draws sample dots (plot_samples) that the key did not name."""
+    """Review r9: the player draws sample dots (plot_samples) that the key did not name. With
+    several samples the last step colours every pixel with a covered sample, as its caption
+    counts them (review r9 00 c14: "72 pixels with a covered sample (59 centres)")."""
     fill = make_fill("halfplane", samples=4)
     for sample_key in (False, True):
         view = tp.FillView(fill, sample_key=sample_key, values=True)
@@ -653,6 +655,11 @@ def test_fill_view_keys_the_sample_dots_it_is_told_of():
             view.show_step(k, draw=False)
             assert ("sample covered" in keyed(view)) == sample_key
             assert ("sample not covered" in keyed(view)) == sample_key
+        data = np.ma.filled(view.values.get_array(), np.nan).reshape(H, W)
+        np.testing.assert_array_equal(np.isfinite(data), fill.coverage)
+        np.testing.assert_array_equal(data, fill.attrs["u"])
+        assert fill.coverage.sum() > fill.trace.covered.sum()  # pixels with a sample only
+        assert f"at the {int(fill.coverage.sum())} pixels" in view.caption
         plt.close(view.fig)
 
 

@@ -301,7 +301,7 @@ class FillView:
             self.rejected = set_image(self.rejected, np.zeros((H, W)))
             self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
         self._trace = trace
-        self._show_values(trace)
+        self._show_values(fill, trace)
         if trace.halfplane is None:
             self.rejected.set_visible(False)
         self.raster_line.width = W
@@ -350,10 +350,12 @@ class FillView:
         """
         return self.blit.draw(self._still)
 
-    def _show_values(self, trace: FillTrace) -> None:
+    def _show_values(self, fill, trace: FillTrace) -> None:
         """Put the values the last step writes into ``values``: the trace's record of the
-        interpolation in use at the covered centres (read, never recomputed). The colour
-        range spans both interpolations, so that toggling between them shows the change."""
+        interpolation in use at the covered centres (read, never recomputed); with several
+        samples also the pixels with only a sample covered, whose values a Fill holds
+        (``fill.attrs``; the caption counts them). The colour range spans both
+        interpolations at the centres, so that toggling between them shows the change."""
         wanted, attribute = self._values
         names = list(trace.pixel_affine)
         name = attribute if attribute in names else (names[0] if names else None)
@@ -366,7 +368,11 @@ class FillView:
         local = np.full(trace.bbox.shape, np.nan)
         local[trace.covered] = first_channel(written[name])  # row-major, as recorded
         lo, hi = float(min(b.min() for b in both)), float(max(b.max() for b in both))
-        self.values = set_image(self.values, trace.image(local))
+        data = trace.image(local)
+        if trace.samples is not None and not isinstance(fill, FillTrace):
+            extra = np.isnan(data) & fill.coverage  # a sample covered, not the centre
+            data[extra] = first_channel(fill.attrs[name][extra])
+        self.values = set_image(self.values, data)
         self.values.set_clim(lo, hi if hi > lo else lo + 1.0)
         self._shown = (name, lo, hi)
 
