@@ -663,6 +663,18 @@ def test_fill_view_keys_the_sample_dots_it_is_told_of():
         plt.close(view.fig)
 
 
+def test_split_label_stays_inside_the_grid():
+    """Review r9 (00 c14): with point 4 near the grid's left edge, "point 4 / u4 = 3.15" stuck
+    out of the grid onto the "row i" label; it starts at the grid's edge instead."""
+    xy = ((2.2, 1.5), (13.7, 5.2), (5.1, 12.8))  # the tour's triangle: u4 = 3.15
+    fig = plt.figure(figsize=(7.0, 5.0))
+    view = tp.FillView(make_fill("span", xy=xy), ax=fig.add_axes((0.12, 0.05, 0.5, 0.7)))
+    fig.canvas.draw()
+    box = view.split.label.get_window_extent(fig.canvas.get_renderer())
+    assert view.ax.bbox.x0 <= box.x0 and box.x1 <= view.ax.bbox.x1
+    plt.close(fig)
+
+
 def test_set_fill_invalidates_the_blit_cache():
     view = tp.FillView(make_fill("span"), step=-1)
     assert view.redraw() and not view.redraw()

@@ -1019,6 +1019,13 @@ def _comparison_figure():
     return p, p.interp_display.fig, COMPARISON_MAX_PX
 
 
+def _steps_figure():
+    tri = tr.Triangle([[1.5, 2.25], [14.75, 5.5], [4.25, 14.5]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    p = FillPlayer(tri, W, H, method="halfplane", step=40, backend="image")  # E12 ... shown
+    return p, p.fig, None
+
+
 def _viewer_figure():
     v = TexturedPlaneViewer(tilt=60, checks=4, backend="image")
     return v, v.fig, None
@@ -1038,13 +1045,14 @@ def _plane_figure():
     return e, e.fig, None
 
 
-@pytest.mark.parametrize("make", [_comparison_figure, _viewer_figure, _filter_figure,
-                                  _plane_figure])  # fmt: skip
+@pytest.mark.parametrize("make", [_steps_figure, _comparison_figure, _viewer_figure,
+                                  _filter_figure, _plane_figure])  # fmt: skip
 def test_widget_figures_read_12_px_in_the_column_at_1024_px(make):
     """Reviews r9/r10 (00 c14, 04 c15, 04 c25): the player's comparison and lesson 04's
     viewer, 940 px wide at 80 dpi, are shown 585 px wide at 1024 x 768, where their tick
-    labels, colour-bar ticks, key and notes read 7-11 px. Lessons use the classroom style;
-    the FilterExplorer (lesson 09) and PlaneExplorer (03) are checked alike."""
+    labels, colour-bar ticks, key and notes read 7-11 px (the steps' key and edge names
+    11.7). Lessons use the classroom style; the FilterExplorer (lesson 09) and
+    PlaneExplorer (03) are checked alike."""
     from teachraster.plotting import use_style
 
     with use_style("classroom"):

@@ -418,7 +418,9 @@ class Key(Artists):
     def __init__(self, ax, n: int, *, x: float = 1.04, y: float = 1.0) -> None:
         self.swatches, self.texts = [], []
         fig = ax.figure
-        size = fs(0.75)
+        # 0.8 of the style's size: a player's figure, shown shrunk to the column at 1024 px,
+        # showed 0.75 (13.5 pt) at 11.7 px (issue 29)
+        size = fs(0.8)
         for i in range(n):
             # each entry one line lower, measured in inches so it follows the font size
             shift = ScaledTranslation(0, -i * size * 1.7 / 72, fig.dpi_scale_trans)
