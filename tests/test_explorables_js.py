@@ -123,6 +123,32 @@ def test_edge_labels_name_the_given_edges():
             assert (js[k]["bias"] == 0) == bool(s.top_left[j])
 
 
+def test_canvas_text_reads_12_px_in_the_column_at_1024_px():
+    """Reviews r9/r10 (02 c23, 12 c8): canvas text is shown smaller than drawn where the canvas
+    is wider than JupyterLab's output column at 1024 x 768 (585 px with the file browser
+    open): the edge explorer's 3-D readout (760-px canvas) read 9 px, the diamonds' numbers
+    (800 px) 10. Every font the edge and diamond explorers and the grid set goes through
+    readablePx, which reads at least 12 px there; the signs still fit their pixel."""
+    import re
+
+    from teachraster.widgets.explorable import esm_source
+
+    widths = [585, 634, 684, 760, 800, 1200]
+    sizes = call_js(EDGES, [("readablePx", [px, w]) for w in widths for px in (11, 13, 15)])
+    for (w, px), size in zip([(w, px) for w in widths for px in (11, 13, 15)], sizes):
+        assert size >= px and size * min(1.0, 585 / w) >= 12 - 1e-9, (w, px, size)
+    # lesson 02's 16 x 14 grid: 37-px cells on a 634-px canvas
+    cell, width = min(600 // 16, 520 // 14), 30 + 16 * 37 + 12
+    (size,) = call_js(EDGES, [("signSize", [cell, width])])
+    assert size * 585 / width >= 12 + 1  # the signs a little above the floor
+    assert 2 * 0.28 * cell + 0.6 * size <= cell  # three monospace glyphs inside the pixel
+    for parts in (EDGES, LINES):
+        for line in esm_source(*parts).splitlines():
+            if re.search(r"\.font = ", line):
+                literal = re.search(r"[\"`](?:bold )?\d+px", line)
+                assert not literal, f"a fixed canvas font size, not through textPx: {line}"
+
+
 def test_tint_buttons_name_the_chosen_triangles_edges():
     # B = v3 v2 v4: its edges are E32, E24, E43 (CONVENTIONS: walking order), never A's E12...
     quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [11.5, 10.5]]

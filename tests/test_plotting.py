@@ -297,6 +297,11 @@ def test_fill_view_follows_the_trace_in_place(method):
     np.testing.assert_array_equal(coverage_shown(view), fill.coverage)
 
 
+def keyed(view) -> list[str]:
+    """The labels a FillView's key shows."""
+    return [t.get_text() for t in view.legend.texts if t.get_visible()]
+
+
 def test_fill_view_key_names_the_pixel_under_test_only_while_one_is():
     """Review r8 (lesson 04 c15): the key listed "pixel under test" at the last step, where
     nothing is under test."""
@@ -304,11 +309,10 @@ def test_fill_view_key_names_the_pixel_under_test_only_while_one_is():
 
     fill = make_fill("halfplane")
     view = tp.FillView(fill, step=0)
-    (text,) = [t for t in view.legend.texts if t.get_text() == PIXEL_UNDER_TEST]
     pixel = next(k for k in range(len(fill.trace)) if fill.trace.step(k).kind == "pixel")
     for k, on in ((pixel, True), (-1, False), (pixel, True)):
         view.show_step(k, draw=False)
-        assert text.get_visible() == on == view.pixel.box.get_visible()
+        assert (PIXEL_UNDER_TEST in keyed(view)) == on == view.pixel.box.get_visible()
     view.redraw()
     plt.close(view.fig)
 
@@ -584,12 +588,14 @@ def rendered(fig):
 
 @pytest.mark.parametrize("method", METHODS)
 @pytest.mark.parametrize("size", sample([16, 40], keep=2))
-def test_blitted_steps_equal_a_full_redraw(method, size):
-    """redraw() (background, still layers, moving artists) matches fig.canvas.draw()."""
+@pytest.mark.parametrize("values", [False, True])
+def test_blitted_steps_equal_a_full_redraw(method, size, values):
+    """redraw() (background, still layers, moving artists) matches fig.canvas.draw(); with
+    ``values`` the last step's colours and key too."""
     s = size / W
     xy = np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)]) * s
     fill = make_fill(method, xy=xy, size=(size, size))
-    view = tp.FillView(fill, step=0, legend=True)
+    view = tp.FillView(fill, step=0, legend=True, values=values)
     n = len(fill.trace)
     steps = [0, 2, fill.trace.first_work_step, n // 3, n // 2, n // 2 + 1, n - 2, n - 1, 5]
     full_draws = []
@@ -602,9 +608,71 @@ def test_blitted_steps_equal_a_full_redraw(method, size):
         # the same picture; compositing the layers rounds anti-aliased edges by a few levels
         assert diff.max() <= 8, (k, diff.max())
         assert (diff > 0).mean() < 0.5
-    # whole draws only when the still artists change: first, bbox found, split found
-    assert full_draws[0] and sum(full_draws) <= 3 + (method == "span")
+    # whole draws only when the still artists change: first, bbox found, split found (and
+    # with values the last step's key)
+    assert full_draws[0] and sum(full_draws) <= 3 + (method == "span") + values
     assert not view.redraw()  # nothing changed: blitted
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method):
+    """Review r9/r10 (lesson 04 c15): the last step's caption says "interpolated u" while the
+    picture showed plain coverage. With ``values`` the covered pixels take the colours of
+    the values written (subdivided too), only at that step; both interpolations share one
+    colour range, so the toggle changes the picture; the key names the colours."""
+    fills = {m: make_fill(method, interpolation=m) for m in ("affine", "perspective", "subdivided")}
+    view = tp.FillView(fills["perspective"], values=True, attribute="u")
+    shown = {}
+    for mode, fill in fills.items():
+        view.set_fill(fill, step=-1, draw=False)
+        data = np.ma.filled(view.values.get_array(), np.nan).reshape(H, W)
+        assert view.values.get_visible()
+        np.testing.assert_array_equal(data, fill.attrs["u"])  # NaN where not covered
+        shown[mode] = data
+        assert view.values.get_clim() == pytest.approx(
+            (np.nanmin([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]]),
+             np.nanmax([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]])))  # fmt: skip
+        key = keyed(view)
+        assert "filled" not in key and sum(t.startswith("u = ") for t in key) == 2
+        assert "flat-top part" not in key and not view.split.flat_top.get_visible()
+        view.show_step(-2, draw=False)  # before the last step: coverage, as before
+        assert not view.values.get_visible() and "filled" in keyed(view)
+    assert np.nanmax(np.abs(shown["affine"] - shown["perspective"])) > 0.05
+    plain = tp.FillView(fills["perspective"])  # values off: the finished fill as coverage
+    assert not plain.values.get_visible() and "filled" in keyed(plain)
+    plt.close(view.fig)
+    plt.close(plain.fig)
+
+
+def test_fill_view_keys_the_sample_dots_it_is_told_of():
+    """Review r9: the player draws sample dots (plot_samples) that the key did not name. With
+    several samples the last step colours every pixel with a covered sample, as its caption
+    counts them (review r9 00 c14: "72 pixels with a covered sample (59 centres)")."""
+    fill = make_fill("halfplane", samples=4)
+    for sample_key in (False, True):
+        view = tp.FillView(fill, sample_key=sample_key, values=True)
+        for k in (2, -1):
+            view.show_step(k, draw=False)
+            assert ("sample covered" in keyed(view)) == sample_key
+            assert ("sample not covered" in keyed(view)) == sample_key
+        data = np.ma.filled(view.values.get_array(), np.nan).reshape(H, W)
+        np.testing.assert_array_equal(np.isfinite(data), fill.coverage)
+        np.testing.assert_array_equal(data, fill.attrs["u"])
+        assert fill.coverage.sum() > fill.trace.covered.sum()  # pixels with a sample only
+        assert f"at the {int(fill.coverage.sum())} pixels" in view.caption
+        plt.close(view.fig)
+
+
+def test_split_label_stays_inside_the_grid():
+    """Review r9 (00 c14): with point 4 near the grid's left edge, "point 4 / u4 = 3.15" stuck
+    out of the grid onto the "row i" label; it starts at the grid's edge instead."""
+    xy = ((2.2, 1.5), (13.7, 5.2), (5.1, 12.8))  # the tour's triangle: u4 = 3.15
+    fig = plt.figure(figsize=(7.0, 5.0))
+    view = tp.FillView(make_fill("span", xy=xy), ax=fig.add_axes((0.12, 0.05, 0.5, 0.7)))
+    fig.canvas.draw()
+    box = view.split.label.get_window_extent(fig.canvas.get_renderer())
+    assert view.ax.bbox.x0 <= box.x0 and box.x1 <= view.ax.bbox.x1
+    plt.close(fig)
 
 
 def test_set_fill_invalidates_the_blit_cache():

@@ -106,10 +106,13 @@ def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     frames = player.frames
     assert frames.captions == [s.caption for s in player.trace]  # text: the page never parses it
     assert frames.infos[0] == f"of {len(player.trace) - 1} (snap)"
-    # review r9 (lesson 04 c15): the last step's picture shows coverage; its info line says
-    # where the interpolated values are drawn (the player has the comparison: attributes)
+    # review r9/r10 (lesson 04 c15): the last step's picture shows the values it interpolates
+    # (coloured by them, keyed); its info line points to the comparison of both ways
     assert player.interp_view is not None  # the fixture's triangle has attributes
-    assert frames.infos[-1].endswith("(interpolate: the values are in the comparison below)")
+    assert frames.infos[-1].endswith("(interpolate: both ways in the comparison below)")
+    player.view.show_step(-1, draw=False)
+    assert player.view.values.get_visible()
+    assert any(t.get_text().startswith("u = ") for t in player.view.legend.texts)
     sent = []
     frames.send = lambda content, buffers=None: sent.append((content, buffers))
     frames._on_page_message(frames, {"type": "group", "group": 1, "gen": frames.gen}, [])
@@ -978,3 +981,86 @@ def test_depth_explorer_drafts_end_on_the_picture_set_from_code():
     assert _shown(dragged) == _shown(direct)
     dragged.close()
     direct.close()
+
+
+# -- text size on screen at 1024 x 768 (issue 29) ----------------------------------------
+#: JupyterLab's output column at 1024 x 768 with the file browser open (CSS px).
+NARROW_COLUMN_PX = 585
+
+
+def smallest_text_px(fig, *, max_height: float | None = None, ignore=()) -> tuple[float, str]:
+    """The smallest drawn text of ``fig`` (but ``ignore``) in CSS px as shown in a
+    :data:`NARROW_COLUMN_PX` column: an image widget is at most the column's width (and
+    ``max_height``), scaled whole."""
+    from matplotlib.text import Text
+
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    w, h = fig.get_figwidth() * fig.dpi, fig.get_figheight() * fig.dpi
+    scale = min(1.0, NARROW_COLUMN_PX / w, (max_height / h) if max_height else 1.0)
+    sizes = []
+    for text in fig.findobj(Text):
+        if not (text.get_visible() and text.get_text().strip()) or text.get_text() in ignore:
+            continue
+        if text.axes is not None and not text.axes.get_visible():
+            continue
+        box = text.get_window_extent(renderer)
+        if box.width > 0 and box.overlaps(fig.bbox):  # drawn, inside the figure
+            sizes.append((text.get_fontsize() * fig.dpi / 72 * scale, text.get_text()))
+    return min(sizes)
+
+
+def _comparison_figure():
+    from teachraster.widgets.player import COMPARISON_MAX_PX
+
+    tri = tr.Triangle([[1.5, 2.25], [14.75, 5.5], [4.25, 14.5]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    p = FillPlayer(tri, W, H, method="halfplane", step=-1, backend="image")
+    return p, p.interp_display.fig, COMPARISON_MAX_PX
+
+
+def _steps_figure():
+    tri = tr.Triangle([[1.5, 2.25], [14.75, 5.5], [4.25, 14.5]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    p = FillPlayer(tri, W, H, method="halfplane", step=40, backend="image")  # E12 ... shown
+    return p, p.fig, None
+
+
+def _viewer_figure():
+    v = TexturedPlaneViewer(tilt=60, checks=4, backend="image")
+    return v, v.fig, None
+
+
+def _filter_figure():
+    from teachraster.widgets import FilterExplorer
+
+    f = FilterExplorer(tilt=0, filter="nearest", repeats=6, backend="image")  # as lesson 09
+    return f, f.fig, None
+
+
+def _plane_figure():
+    from teachraster.widgets import PlaneExplorer
+
+    e = PlaneExplorer(backend="image")  # lesson 03's triangle and values are the defaults
+    return e, e.fig, None
+
+
+@pytest.mark.parametrize("make", [_steps_figure, _comparison_figure, _viewer_figure,
+                                  _filter_figure, _plane_figure])  # fmt: skip
+def test_widget_figures_read_12_px_in_the_column_at_1024_px(make):
+    """Reviews r9/r10 (00 c14, 04 c15, 04 c25): the player's comparison and lesson 04's
+    viewer, 940 px wide at 80 dpi, are shown 585 px wide at 1024 x 768, where their tick
+    labels, colour-bar ticks, key and notes read 7-11 px (the steps' key and edge names
+    11.7). Lessons use the classroom style; the FilterExplorer (lesson 09) and
+    PlaneExplorer (03) are checked alike."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        widget, fig, max_height = make()
+    try:
+        size, text = smallest_text_px(fig, max_height=max_height, ignore={"v1", "v2", "v3"})
+        assert size >= 12.0, (size, text)
+        # the vertex labels on the pictures (12 pt, kept small beside the pixels) read 11.8
+        assert smallest_text_px(fig, max_height=max_height)[0] >= 11.5
+    finally:
+        widget.close()

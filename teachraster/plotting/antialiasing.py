@@ -227,12 +227,43 @@ class PixelSampleArtists(Artists):
         if not few:  # numbers only, each placed clear of the others, the dots and the centre
             self.labels += _place_numbers(ax, col + offsets[:, 0], row + offsets[:, 1],
                                           (col + 0.5, row + 0.5), ms(1.0))  # fmt: skip
+        else:
+            _fit_labels(ax, self.labels)
         covered = int((ids[row, col] >= 0).sum())
         key = ""
         if values is not None:
             key = f"\nbeside each: {', '.join(names)}" if few else "\nedge values: table below"
         ax.set_title(f"pixel ({row}, {col})\n{covered} of {len(offsets)} covered{key}",
                      fontsize=fs(0.85))  # fmt: skip
+
+
+def _fit_labels(ax, labels, *, gap_pt: float = 6.0) -> None:
+    """Widen the panel's limits (evenly: the pixel stays in the middle) until every label and
+    its box lie inside the frame: s1's "+132.31" of lesson 08 c32 ran over the right frame
+    (review r10). Measured on the figure's renderer, in a few rounds (a wider view shrinks
+    the pixel, which moves the dots, not the labels' offsets in points)."""
+    if not labels:
+        return
+    fig = ax.figure
+    renderer = fig.canvas.get_renderer()
+    to_px = fig.dpi / 72.0
+    for _ in range(4):
+        ax.apply_aspect()
+        frame = ax.get_window_extent(renderer)
+        over_x = over_y = 0.0
+        for label in labels:
+            box = label.get_window_extent(renderer)
+            pad = (0.2 * label.get_fontsize() + gap_pt) * to_px  # label_box's pad, a gap
+            over_x = max(over_x, frame.x0 - box.x0 + pad, box.x1 - frame.x1 + pad)
+            over_y = max(over_y, frame.y0 - box.y0 + pad, box.y1 - frame.y1 + pad)
+        if over_x <= 0.5 and over_y <= 0.5:
+            return
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        per_px = abs(x1 - x0) / frame.width  # data units per display pixel (equal aspect)
+        if over_x > 0.5:
+            ax.set_xlim(x0 - over_x * per_px, x1 + over_x * per_px)
+        if over_y > 0.5:  # y runs down: the first limit is the bottom
+            ax.set_ylim(y0 + over_y * per_px, y1 - over_y * per_px)
 
 
 def _label(s, t, e, names) -> str:

@@ -331,7 +331,7 @@ def plot_triangle(
     if labels:
         result.labels = _labels(ax, color, fontsize=fs(0.95), fontweight="bold", alpha=0.85)
     if edge_labels:
-        result.edge_labels = _labels(ax, color, fontsize=fs(0.75), style="italic", alpha=0.7)
+        result.edge_labels = _labels(ax, color, fontsize=fs(0.8), style="italic", alpha=0.7)
     result.update(tri, edges)
     return result
 
@@ -421,13 +421,28 @@ class SplitArtists(Artists):
         # middle vertex: outside the triangle there, so it hides none of the covered centres
         # (above the line, towards the middle vertex, it lay on the row above the split).
         away_left = s.u4 <= s.sorted_xy[1, 0]
+        text = f"point 4\nu4 = {s.u4:.2f}"  # two short lines: inside the grid
+        dx = -fs(0.5) if away_left else fs(0.5)
+        # the text's width and its box, in points (DejaVu Sans bold: about 0.65 em a glyph)
+        wide = self.label.get_fontsize() * (0.65 * max(map(len, text.split("\n"))) + 0.8)
+        room = _room_left_of(self.label.axes, s.u4)
+        if away_left and room < wide - dx:
+            # no room left of point 4: the label starts at the grid's left edge instead (review
+            # r9 00 c14: it stuck out of the grid onto the "row i" axis label)
+            away_left, dx = False, fs(0.3) - room
         self.label.xy = (s.u4, v2y)
-        self.label.set_position((-fs(0.5) if away_left else fs(0.5), -fs(0.6)))
+        self.label.set_position((dx, -fs(0.6)))
         self.label.set_horizontalalignment("right" if away_left else "left")
         self.label.set_verticalalignment("top")
-        self.label.set_text(f"point 4\nu4 = {s.u4:.2f}")  # two short lines: inside the grid
+        self.label.set_text(text)
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
+
+
+def _room_left_of(ax, x: float) -> float:
+    """Points between data ``x`` and the Axes' left edge, at the figure's present size."""
+    (x0, x1), box = ax.get_xlim(), ax.get_window_extent()
+    return abs(x - min(x0, x1)) * box.width / abs(x1 - x0) * 72.0 / ax.figure.dpi
 
 
 def plot_split(ax, fill) -> SplitArtists:

@@ -22,6 +22,7 @@ from matplotlib.colors import to_rgba
 from matplotlib.transforms import ScaledTranslation
 
 from ..core.trace import FillTrace, Step
+from .antialiasing import TRIANGLE_COLORS
 from .blitting import MOVING, STILL, LayeredBlit
 from .common import (
     Artists,
@@ -44,9 +45,15 @@ from .plots import (
     plot_split,
     plot_triangle,
 )
-from .style import COLORS
+from .style import COLORS, VALUE_CMAP
 
 METHOD_NAMES = {"span": "Span tables", "halfplane": "Half-planes", "tiled": "Tiles"}
+
+
+def first_channel(values) -> np.ndarray:
+    """(n,) values of an attribute recorded as (n,) or (n, k): channel 0 of a vector."""
+    values = np.asarray(values, dtype=np.float64)
+    return values.reshape(len(values), -1)[:, 0]
 
 
 def _new_figure(figsize, rect):
@@ -88,6 +95,15 @@ class FillView:
     step_header : bool
         Header "Half-planes: step k of n (kind)"; False: just the method, and a widget shows
         the step (the header is then still, which makes a blitted step cheaper by half).
+    values : bool
+        At the last step (``interpolate``) colour the covered pixels by the interpolated
+        attribute, as its caption says (read from the trace: the values it records as
+        written); off, the finished fill keeps its coverage colour.
+    attribute : str, optional
+        The attribute ``values`` shows (channel 0 of a vector); default the first.
+    sample_key : bool
+        The key names the sample dots of a multisampled fill, which the caller draws
+        (:func:`~teachraster.plotting.plot_samples`, as FillPlayer does).
 
     A step asks the trace for :meth:`~teachraster.core.trace.FillTrace.step` once and hands
     the Step to the artists; which pixels are filled or rejected, and from which step on
@@ -109,8 +125,9 @@ class FillView:
     """
 
     def __init__(self, fill, *, ax=None, step: int | None = None, legend: bool = True,
-                 centres: bool = True, caption: bool = True,
-                 step_header: bool = True) -> None:  # fmt: skip
+                 centres: bool = True, caption: bool = True, step_header: bool = True,
+                 values: bool = False, attribute: str | None = None,
+                 sample_key: bool = False) -> None:  # fmt: skip
         trace = as_trace(fill, "FillView")
         if ax is None:
             # room on the right for the legend and below for a three-line caption
@@ -123,6 +140,13 @@ class FillView:
         self.rejected = show_image(ax, zeros, cmap=two_colour(COLORS["rejected"]), vmin=0,
                                    vmax=1, zorder=0.45)  # fmt: skip
         self.coverage = plot_coverage(ax, zeros)
+        # The last step's picture: the covered pixels coloured by the interpolated attribute
+        # (review r9/r10, lesson 04 c15: the caption spoke of u over plain coverage).
+        self.values = show_image(ax, zeros, cmap=VALUE_CMAP, vmin=0, vmax=1, zorder=0.55)
+        self.values.set_visible(False)
+        self._values = (values, attribute)  # asked for; _shown: (name, lo, hi) or None
+        self._shown = None
+        self._sample_key = sample_key
         self.bbox = plot_bbox(ax, trace)
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
@@ -140,9 +164,10 @@ class FillView:
         self.caption_text.set_visible(caption)
         self._step_header = step_header
         self._caption = ""
-        self.legend = Key(ax, 7) if legend else None
+        self.legend = Key(ax, 9) if legend else None
         self._trace: FillTrace | None = None
         self._step = -1
+        self._keyed = None  # (testing, coloured) the key lists, see _key_entries
         self.set_fill(fill, step=step, draw=False)
 
     # -- state -----------------------------------------------------------------------------
@@ -181,7 +206,7 @@ class FillView:
         parts = [self.grid, self.coverage, self.bbox, self.split, self.centres, self.triangle,
                  self.raster_line, self.pixel, self.legend]  # fmt: skip
         out = [a for p in parts if isinstance(p, Artists) for a in p.artists]
-        return out + [self.rejected, self.header, self.caption_text]
+        return out + [self.rejected, self.values, self.header, self.caption_text]
 
     # -- updates ---------------------------------------------------------------------------
     def show_step(self, k: int, *, draw: bool = True) -> Step:
@@ -220,11 +245,18 @@ class FillView:
         else:
             self.split.set_visible(False)
         testing = step.kind == "pixel"
-        self._still = (boxed, split, testing)
+        coloured = step.kind == "interpolate" and self._shown is not None
+        self.values.set_visible(coloured)
+        if coloured:  # the parts' tints would read as values (the flat-top yellow: a high u)
+            self.split.flat_bottom.set_visible(False)
+            self.split.flat_top.set_visible(False)
+        # the key and the split's tints are background: each state has its own cache
+        self._still = (boxed, split, testing, coloured)
         self.raster_line.update(step)
         self.pixel.update(step)
-        if self.legend is not None:  # the key names the pixel under test only while there is one
-            self.legend.show_entry(PIXEL_UNDER_TEST, testing)
+        if self.legend is not None and (testing, coloured) != self._keyed:
+            self.legend.set_entries(self._key_entries(trace, testing, coloured))
+            self._keyed = (testing, coloured)
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
             # the steps are numbered from 0: "of 0-22" rather than "of 22", which reads as a count
@@ -269,6 +301,7 @@ class FillView:
             self.rejected = set_image(self.rejected, np.zeros((H, W)))
             self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
         self._trace = trace
+        self._show_values(fill, trace)
         if trace.halfplane is None:
             self.rejected.set_visible(False)
         self.raster_line.width = W
@@ -277,8 +310,7 @@ class FillView:
         for label in self.triangle.edge_labels:
             label.set_visible(trace.method == "halfplane")
         self.bbox.update(trace)
-        if self.legend is not None and (old is None or old.method != trace.method):
-            self._make_legend(trace.method)
+        self._keyed = None  # the key is filled again for this fill (show_step)
         self.blit = self._blit_plan()  # new still artists; images may be new artists too
         return self.show_step(step, draw=draw)
 
@@ -292,7 +324,7 @@ class FillView:
         if self.centres is not None:
             middle[1:1] = [self.centres.inside, self.centres.outside]
         return LayeredBlit(self.fig, [
-            (MOVING, [self.rejected, self.coverage.image, r.band]),
+            (MOVING, [self.rejected, self.coverage.image, self.values, r.band]),
             (STILL, middle),
             (MOVING, [r.cells, p.box, r.span, r.covered, r.missed, p.centre]),
             (STILL, [split.point, split.label, *t.labels, *t.edge_labels]),
@@ -318,25 +350,62 @@ class FillView:
         """
         return self.blit.draw(self._still)
 
-    def _make_legend(self, method: str) -> None:
-        """Fill the key with what this method shows (same artists, new labels)."""
-        c = COLORS
-        entries = [("filled", c["fill"], c["fill"])]
+    def _show_values(self, fill, trace: FillTrace) -> None:
+        """Put the values the last step writes into ``values``: the trace's record of the
+        interpolation in use at the covered centres (read, never recomputed); with several
+        samples also the pixels with only a sample covered, whose values a Fill holds
+        (``fill.attrs``; the caption counts them). The colour range spans both
+        interpolations at the centres, so that toggling between them shows the change."""
+        wanted, attribute = self._values
+        names = list(trace.pixel_affine)
+        name = attribute if attribute in names else (names[0] if names else None)
+        self._shown = None
+        if not wanted or name is None or trace.culled or not trace.covered.any():
+            return
+        written = {"affine": trace.pixel_affine, "perspective": trace.pixel_perspective,
+                   "subdivided": trace.pixel_subdivided}[trace.interpolation]  # fmt: skip
+        both = [first_channel(v[name]) for v in (trace.pixel_affine, trace.pixel_perspective)]
+        local = np.full(trace.bbox.shape, np.nan)
+        local[trace.covered] = first_channel(written[name])  # row-major, as recorded
+        lo, hi = float(min(b.min() for b in both)), float(max(b.max() for b in both))
+        data = trace.image(local)
+        if trace.samples is not None and not isinstance(fill, FillTrace):
+            extra = np.isnan(data) & fill.coverage  # a sample covered, not the centre
+            data[extra] = first_channel(fill.attrs[name][extra])
+        self.values = set_image(self.values, data)
+        self.values.set_clim(lo, hi if hi > lo else lo + 1.0)
+        self._shown = (name, lo, hi)
+
+    def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool) -> list:
+        """What the step on show draws: the pixel under test only while there is one (review
+        r8, lesson 04 c15), the sample dots of a multisampled fill, and at the last step with
+        values their colours instead of "filled" and the split's tints, which it hides."""
+        c, method = COLORS, trace.method
+        entries = [] if coloured else [("filled", c["fill"], c["fill"])]
+        if coloured:
+            name, lo, hi = self._shown
+            cmap = self.values.get_cmap()
+            entries += [(f"{name} = {hi:.2f}", cmap(1.0), cmap(1.0)),
+                        (f"{name} = {lo:.2f}", cmap(0.0), cmap(0.0))]  # fmt: skip
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
         if method != "span":  # span tables draw no box (see show_step)
             entries.append(("bounding box", "none", c["bbox"]))
-        if method == "span":
+        if method == "span" and not coloured:
             entries += [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
-                        ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),
-                        ("raster line, its pixels", to_rgba(c["current"], 0.15), c["current"]),
+                        ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"])]  # fmt: skip
+        if method == "span" and not coloured:  # the last step draws no raster line
+            entries += [("raster line, its pixels", to_rgba(c["current"], 0.15), c["current"]),
                         ("span x_left .. x_right", c["current"], c["current"], "|"),
                         ("its centre covered", c["edge"], "white", "o"),
                         ("its centre not", "white", c["edge"], "o")]  # fmt: skip
-        else:
+        elif testing:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
             entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
-        self.legend.set_entries(entries)
+        if self._sample_key and trace.samples is not None:  # review r9: dots without a key
+            entries += [("sample covered", TRIANGLE_COLORS[0], c["edge"], "o"),
+                        ("sample not covered", "white", c["centre"], "o")]  # fmt: skip
+        return entries
 
 
 class Key(Artists):
@@ -349,7 +418,9 @@ class Key(Artists):
     def __init__(self, ax, n: int, *, x: float = 1.04, y: float = 1.0) -> None:
         self.swatches, self.texts = [], []
         fig = ax.figure
-        size = fs(0.75)
+        # 0.8 of the style's size: a player's figure, shown shrunk to the column at 1024 px,
+        # showed 0.75 (13.5 pt) at 11.7 px (issue 29)
+        size = fs(0.8)
         for i in range(n):
             # each entry one line lower, measured in inches so it follows the font size
             shift = ScaledTranslation(0, -i * size * 1.7 / 72, fig.dpi_scale_trans)

@@ -30,7 +30,14 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
+from .display import (
+    COMPARISON_DPI,
+    FigureDisplay,
+    comparison_axes,
+    new_figure,
+    readable_text,
+    resolve_backend,
+)
 from .dragging import comparison_edit_blit, same_or_new
 from .frames import FramesWidget
 
@@ -206,7 +213,10 @@ class FillPlayer(Holdable):
         ax = fill_axes(self.fig, self.width, self.height)
         # The caption and the step number are shown by the page beside the frame, in full
         # and selectable; drawing them in the figure as well would cost time at every step.
-        self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False)
+        # the last step colours the pixels by the attribute it interpolates (review r10, 04
+        # c15: its caption spoke of u over plain coverage); the key names the sample dots
+        self.view = FillView(self.fill, ax=ax, step=step, caption=False, step_header=False,
+                             values=True, attribute=attribute, sample_key=True)  # fmt: skip
         self.interp_view = self.interp_display = None
         if self.tri.attrs:
             name = attribute or next(iter(self.tri.attrs))
@@ -214,6 +224,12 @@ class FillPlayer(Holdable):
             axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
+            # shown shrunk to the column at 1024 px: its text at the style's size (review r9
+            # 00 c14, 04 c15: ticks, key and notes read 9-11 px)
+            view = self.interp_view
+            bars = [im.colorbar.ax for im in (*view.images, view.heatmap) if im.colorbar]
+            readable_text([*view.axes, *bars], profile=view.profile,
+                          texts=[view.heatmap.note, *view.in_use])  # fmt: skip
             # a toggle changes the images, outlines and colour bars: the rest stays cached
             self._interp_blit = comparison_edit_blit(self.interp_view)
             self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
@@ -310,8 +326,8 @@ class FillPlayer(Holdable):
         fill_key = self._fill_key()
         if fill_key not in self._texts:
             captions, infos = step_texts(self.trace)
-            if self.interp_view is not None:  # the picture shows coverage; the values are below
-                infos = [i.replace("(interpolate)", "(interpolate: the values are in the "
+            if self.interp_view is not None:  # the other interpolation is in the comparison
+                infos = [i.replace("(interpolate)", "(interpolate: both ways in the "
                                    "comparison below)") for i in infos]  # fmt: skip
             self._texts[fill_key] = captions, infos
         captions, infos = self._texts[fill_key]

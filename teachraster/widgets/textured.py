@@ -13,7 +13,6 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView, plot_profile
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.common import fs
 from .common import (
     Shown,
     close_tree,
@@ -21,7 +20,13 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import COMPARISON_DPI, comparison_axes, new_figure, resolve_backend
+from .display import (
+    COMPARISON_DPI,
+    comparison_axes,
+    new_figure,
+    readable_text,
+    resolve_backend,
+)
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
 from .sprites import ColourBarSprite, text_boxes
@@ -173,9 +178,11 @@ class TexturedPlaneViewer:
                     value="texture v", guides=[self.view.axes[2]], vlim=(-0.04, 1.04),
                 )  # fmt: skip
             self._show_error()
-            # (not the colour bar's ticks: its label, drawn by the sprite, keeps its place)
-            _readable([*self.view.axes, axes[3]], self.profile)
-            self.view.heatmap.note.set_fontsize(fs(1.0))
+            # the colour bar's ticks too (review r9 04 c25: they read 10 px at 1024 px); its
+            # sprite is made below, after them
+            bar = self.view.heatmap.colorbar
+            readable_text([*self.view.axes, axes[3], bar.ax if bar else None],
+                          profile=self.profile, texts=[self.view.heatmap.note])  # fmt: skip
             # a new tilt changes the images, the heatmap's title and colour bar: the rest
             # (tick labels, titles) stays in a cached background; the colour bar is drawn
             # last, or put back as it was the last time its range came round
@@ -304,19 +311,3 @@ class TexturedPlaneViewer:
         """Close every widget of the viewer."""
         self.display.close()
         close_tree(self.widget)
-
-
-def _readable(axes, profile) -> None:
-    """Tick labels, the profile's legend and title at the style's size (the note at the
-    largest error too, set beside the call): the figure is drawn at
-    the comparison's low dpi and shown shrunk to the column on a small screen, where the
-    smaller sizes came out at 9-11 px (review r7, lesson 04)."""
-    size = fs(1.0)
-    for ax in [a for a in axes if a is not None]:
-        ax.tick_params(labelsize=size)
-    if profile is not None:
-        profile.title.set_fontsize(size)
-        legend = profile.title.axes.get_legend()
-        if legend is not None:
-            for text in legend.get_texts():
-                text.set_fontsize(size)

@@ -101,6 +101,22 @@ export function frame(el, title, subtitle) {
   return root;
 }
 
+// Canvas text that stays readable where the canvas is shown smaller than it is drawn: a canvas
+// wider than its column shrinks with it (max-width: 100%), and its text with it. JupyterLab's
+// output column at 1024 x 768 with the file browser open is about 585 px wide, where an
+// 800-px canvas's 14-px numbers read 10 (reviews r9/r10: 02 c23, 12 c8). readablePx(px, w)
+// is `px`, or more on a canvas `w` px wide, so that the text reads at least MIN_TEXT_PX there.
+export const NARROW_COLUMN_PX = 585;
+export const MIN_TEXT_PX = 12;
+export function readablePx(px, canvasWidth) {
+  return Math.max(px, Math.ceil(MIN_TEXT_PX * Math.max(1, canvasWidth / NARROW_COLUMN_PX)));
+}
+// the same for the canvas `ctx` draws on (its CSS width)
+export function textPx(ctx, px) {
+  const c = ctx.canvas;
+  return readablePx(px, c.logical ? c.logical.w : c.width);
+}
+
 // A canvas `w` x `h` CSS pixels, drawn at the screen's resolution (up to 2x), that shrinks
 // with its column (max-width) and keeps its proportions; ctx draws in CSS pixels.
 export function makeCanvas(w, h, label) {
@@ -247,8 +263,9 @@ export function drawGrid(ctx, x0, y0, W, H, cell, colour, labels = false) {
   ctx.stroke();
   if (!labels) return;
   ctx.fillStyle = "#555";
-  // 14 px: at 11 the grid's numbers came out at 10 px in a column at 1024 px (review r9, 12 c8)
-  ctx.font = "14px sans-serif";
+  // at least 14 px (11 read 10 px at 1024 px, review r9 12 c8), more on a wide canvas; two
+  // digits at 17 px still fit a 30-px margin on the left and 24 above
+  ctx.font = `${textPx(ctx, 14)}px sans-serif`;
   ctx.textAlign = "center";
   for (let c = 0; c < W; c += W > 20 ? 2 : 1) ctx.fillText(String(c), x0 + (c + 0.5) * cell, y0 - 8);
   ctx.textAlign = "right";

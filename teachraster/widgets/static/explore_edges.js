@@ -294,13 +294,22 @@ function sprite(text, colour, size, dpr) {
   return SPRITES.get(key);
 }
 
+// The sign glyphs' size (px) in cells of `cell` px on a canvas `width` px wide: 0.42 of a
+// cell, and never less than reads 12 px in the column at 1024 px (review r7 02-4: 0.32 of a
+// cell read 11 px; r9 02-5: the glyphs still looked small at 0.38). Three of them,
+// SIGN_GAP of a cell apart, stay inside their pixel.
+export const SIGN_SCALE = 0.42;
+export const SIGN_GAP = 0.28;
+export function signSize(cell, width) {
+  return Math.max(readablePx(12, width), Math.round(cell * SIGN_SCALE));
+}
+
 // three sign glyphs per centre: E12, E23, E31 of the chosen triangle, in their colours
-// (review r7 02-4: at 0.32 of a cell the signs were 11 px in the 585-px column at 1024 px;
-// at 0.38 they are 13, the three still inside their pixel)
 function drawSigns(ctx, setup, W, H, cell, m) {
-  const size = Math.max(12, Math.round(cell * 0.38));
-  const dpr = ctx.canvas.logical ? ctx.canvas.logical.dpr : 1;
-  const gap = cell * 0.28;
+  const logical = ctx.canvas.logical;
+  const size = signSize(cell, logical ? logical.w : ctx.canvas.width);
+  const dpr = logical ? logical.dpr : 1;
+  const gap = cell * SIGN_GAP;
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
       const e = givenValues(setup, r, c);
@@ -326,7 +335,7 @@ function drawShared(ctx, scene, cell, m, colors) {
     ctx.arc(cx, cy, cell * 0.42, 0, 2 * Math.PI);
     ctx.stroke();
     ctx.fillStyle = ctx.strokeStyle;
-    ctx.font = `bold ${Math.round(cell * 0.3)}px sans-serif`;
+    ctx.font = `bold ${Math.max(textPx(ctx, 12), Math.round(cell * 0.3))}px sans-serif`;
     ctx.fillText(owner === "both" ? "AB" : owner === "none" ? "–" : owner,
       m.left + col * cell + 2, m.top + row * cell + cell * 0.3);
   }
@@ -359,7 +368,7 @@ function drawTriangles(ctx, state, toPx, colors) {
   ctx.stroke();
   ctx.setLineDash([]);
   for (let k = 0; k < 3; k++) arrowLine(ctx, v[chosen[k]], v[chosen[(k + 1) % 3]], EDGE_HUES[k], 3);
-  ctx.font = "bold 15px sans-serif";
+  ctx.font = `bold ${textPx(ctx, 15)}px sans-serif`;
   v.forEach((p, i) => {
     ctx.fillStyle = "#000";
     ctx.beginPath();
@@ -381,7 +390,8 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
   const v = idx.map((i) => toPx(state.vertices[i]));
   const centroid = [(v[0][0] + v[1][0] + v[2][0]) / 3, (v[0][1] + v[1][1] + v[2][1]) / 3];
   const labels = edgeLabels(setup, ["E12", "E23", "E31"]);
-  ctx.font = "bold 13px sans-serif";
+  const size = textPx(ctx, 13);
+  ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
   labels.forEach((e, k) => {
     const a = v[k];
@@ -394,7 +404,7 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
     const text = `${name}${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const w = ctx.measureText(text).width;
     ctx.fillStyle = "rgba(255,255,255,0.85)";
-    ctx.fillRect(at[0] - w / 2 - 3, at[1] - 11, w + 6, 16);
+    ctx.fillRect(at[0] - w / 2 - 3, at[1] + 2 - size, w + 6, size + 3);
     ctx.fillStyle = EDGE_HUES[k];
     ctx.fillText(text, at[0], at[1] + 2);
   });
@@ -477,8 +487,12 @@ export function bestYaw(grads, zs, elevation) {
   return best[0];
 }
 
-const PLANES_TOP = 58; // room above the box for the values, in canvas px
-const PLANES_BOTTOM = 22; // and below it for the note
+// The 3-D view's text: its 760-px canvas is shown about 0.77 times as wide in the column at
+// 1024 px, where 13 px read 9-10 (review r9 02-5): 17 px read 13.
+const PLANES_TEXT = 17;
+// room above the box for the values and below it for the note's two lines, in canvas px
+const planesTop = (size) => Math.round(size * 3.6);
+const planesBottom = (size) => Math.round(size * 2.9);
 
 // the three edge functions of the chosen triangle as planes z = E(x, y) over the grid,
 // clipped to a box whose camera keeps it inside the canvas at every turn
@@ -495,11 +509,13 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   for (const f of fns) for (const [x, y] of corners) top = Math.max(top, Math.abs(f(x, y)));
   const h = 0.3 * Math.max(W, H); // the box's half height, in grid units
   const zs = (1.6 * h) / top; // steep enough to see; the steepest plane leaves the box
-  cam.scale = fitBox(W, H, h, cw, ch - PLANES_TOP - PLANES_BOTTOM, 40);
+  const size = textPx(ctx, PLANES_TEXT);
+  const [above, below] = [planesTop(size), planesBottom(size)];
+  cam.scale = fitBox(W, H, h, cw, ch - above - below, 40);
   // E_k = gx x + gy y + c: its gradient, from the plane's values at three corners
   const grads = fns.map((f) => [f(1, 0) - f(0, 0), f(0, 1) - f(0, 0)]);
   if (!cam.turned) cam.yaw = bestYaw(grads, zs, cam.elevation); // until the reader turns it
-  cam.at = [cw / 2, PLANES_TOP + (ch - PLANES_TOP - PLANES_BOTTOM) / 2];
+  cam.at = [cw / 2, above + (ch - above - below) / 2];
   const polys = surfacePieces(corners, () => 0, 8, { fill: "#ddd", alpha: 0.55, stroke: "#bbb" });
   fns.forEach((f, k) => {
     for (const piece of surfacePieces(corners, (x, y) => f(x, y) * zs, 8,
@@ -533,21 +549,23 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   // the values, in 2-D above the box: always inside the canvas
   const names = EDGE_NAMES[chosen];
   ctx.fillStyle = "#111";
-  ctx.font = "13px sans-serif";
+  ctx.font = `${size}px sans-serif`;
   ctx.fillText(`E at the centre (${at[0]}, ${at[1]}), the black ✕ (point at a pixel to move it):`,
-    8, 18);
-  ctx.font = "bold 13px sans-serif";
+    8, Math.round(size * 1.35));
+  ctx.font = `bold ${size}px sans-serif`;
   let x = 8;
   vals.forEach((e, k) => {
     const text = `${names[k]} = ${fmt(e, 4)} px²`;
     ctx.fillStyle = EDGE_HUES[k];
-    ctx.fillText(text, x, 38);
+    ctx.fillText(text, x, Math.round(size * 2.9));
     x += ctx.measureText(text).width + 18;
   });
   ctx.fillStyle = "#333";
-  ctx.font = "13px sans-serif";
-  ctx.fillText("grey: E = 0 (the screen); the planes are cut at the dashed box. Drag to turn; " +
-    "arrow keys too.", 8, ch - 8);
+  ctx.font = `${size}px sans-serif`;
+  // two lines: one ran past a 760-px canvas at this size
+  ctx.fillText("grey: E = 0 (the screen); the planes are cut at the dashed box.", 8,
+    ch - 8 - Math.round(size * 1.3));
+  ctx.fillText("Drag to turn; arrow keys too.", 8, ch - 8);
 }
 
 // the vertical E axis with ticks in px², at the box corner drawn leftmost on the screen
@@ -559,16 +577,17 @@ function drawEAxis(ctx, cam, corners, h, zs) {
   const raw = span / 3;
   const mag = 10 ** Math.floor(Math.log10(raw));
   const step = [1, 2, 5, 10].map((k) => k * mag).find((v) => v >= raw);
-  ctx.font = "13px sans-serif";
+  const size = textPx(ctx, PLANES_TEXT);
+  ctx.font = `${size}px sans-serif`;
   ctx.textAlign = "right";
   for (let e = -Math.floor(span / step) * step; e <= span + 1e-9; e += step) {
     const q = cam.project([x, y, e * zs]);
     strokeLine(ctx, [q[0] - 5, q[1]], [q[0], q[1]], "#111", 1.5);
     ctx.fillStyle = "#111";
-    ctx.fillText(fmt(e, 4), q[0] - 7, q[1] + 4);
+    ctx.fillText(fmt(e, 4), q[0] - 7, q[1] + Math.round(size * 0.35));
   }
   const t = cam.project([x, y, h]);
-  ctx.font = "bold 14px sans-serif";
+  ctx.font = `bold ${textPx(ctx, PLANES_TEXT)}px sans-serif`;
   ctx.fillText("E (px²)", t[0] + 20, t[1] - 8);
   ctx.textAlign = "left";
 }

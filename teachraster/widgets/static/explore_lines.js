@@ -280,7 +280,7 @@ function drawDiamond(ctx, c, toPx, cell, current) {
   ctx.setLineDash([]);
   if (c.tie && c.state !== MISSED) {
     ctx.fillStyle = OKABE.vermillion;
-    ctx.font = `bold ${Math.round(cell * 0.28)}px sans-serif`;
+    ctx.font = `bold ${Math.max(textPx(ctx, 12), Math.round(cell * 0.28))}px sans-serif`;
     ctx.fillText("tie", x + 3, y + cell * 0.28);
   }
   if (current) {
@@ -303,7 +303,7 @@ function drawSegment(ctx, p, q, snapped) {
     ctx.arc(e[0], e[1], 7, 0, 2 * Math.PI);
     ctx.fill();
     ctx.fillStyle = "#111";
-    ctx.font = "bold 15px sans-serif";
+    ctx.font = `bold ${textPx(ctx, 15)}px sans-serif`;
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
     const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide);
