@@ -117,6 +117,15 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
         assert stem[:2] in ("11", "12") or (NOTEBOOKS / f"{stem}.ipynb").exists(), stem
 
 
+def test_tour_says_the_players_last_step_shows_u():
+    # issue 29: FillPlayer's last step colours the covered pixels by the interpolated u
+    # (FillView(values=True), tests/test_widgets.py); "the steps show coverage" was wrong there
+    text = next(t for t in _cells("00_tour", "markdown") if t.startswith("## Step through it"))
+    text = " ".join(text.split())
+    assert "The steps show coverage, which" not in text
+    assert "the last step then colours each covered pixel by its interpolated `u`" in text
+
+
 # -- executed: the quoted numbers ---------------------------------------------------------------
 
 
