@@ -373,6 +373,8 @@ def test_bit_budget_terms():
         512, 20, 40, 41, 42,
     )  # fmt: skip
     assert not b.fits and b.headroom == -10 and "NOT fit" in b.lines()[-1]
+    # issue 31: counts with thousands separators, as the lessons print them (lesson 10 c15)
+    assert "up to 1,024 px = 524,288 units < 2^20" in b.lines()[1]
     assert fp.bit_budget(1024, 8, 64).fits
     for bits in (0, 4, 8, 12):
         for width in (16, 32, 64):

@@ -83,7 +83,20 @@ class BitBudget:
         return self.int_bits - self.needed
 
     def lines(self) -> list[str]:
-        """The count in words, one line per term."""
+        """The count in words, one line per term.
+
+        Counts carry thousands separators, as every count the lessons print does.
+
+        Examples
+        --------
+        >>> for line in bit_budget(1024, subpixel_bits=8, int_bits=32).lines():
+        ...     print(line)
+        coordinates: 8 sub-pixel bits + 1 for pixel centres = 512 units per pixel
+        differences: up to 1,024 px = 524,288 units < 2^20
+        products of two differences: < 2^40
+        E = difference of two products: < 2^41, plus a sign bit = 42 bits
+        42 bits needed: does NOT fit int32: 10 bits short, values wrap
+        """
         u = self.units_per_pixel
         verdict = (
             f"fits int{self.int_bits} with {self.headroom} bits to spare"
@@ -91,9 +104,9 @@ class BitBudget:
             else f"does NOT fit int{self.int_bits}: {-self.headroom} bits short, values wrap"
         )
         return [
-            f"coordinates: {self.subpixel_bits} sub-pixel bits + 1 for pixel centres = {u} "
+            f"coordinates: {self.subpixel_bits} sub-pixel bits + 1 for pixel centres = {u:,} "
             "units per pixel",
-            f"differences: up to {self.extent_px} px = {self.extent_px * u} units "
+            f"differences: up to {self.extent_px:,} px = {self.extent_px * u:,} units "
             f"< 2^{self.delta_bits}",
             f"products of two differences: < 2^{self.product_bits}",
             f"E = difference of two products: < 2^{self.edge_bits}, plus a sign bit = "
