@@ -866,6 +866,20 @@ def test_10_numbers_the_text_relies_on():
     assert bins.empty[0] + bins.full[0] + bins.partial[0] == int(tiles_of_box.sum())
 
 
+@pytest.mark.notebook
+def test_10_prints_counts_with_thousands_separators():
+    # issue 31: "524288 units" (BitBudget.lines) and "1184 of 1492" beside "65,536" elsewhere;
+    # a whole number of four or more digits (not a decimal, a power or a fraction) has commas
+    import re
+
+    from notebook_runs import executed, streams
+
+    printed = streams(executed("10_tiles_and_hierarchical_z").notebook())
+    bare = re.findall(r"(?<![\d.,^*/])\d{4,}(?![\d.])", printed)
+    assert not bare, bare
+    assert "1,024 px = 524,288 units" in printed and "160 px = 81,920 units" in printed
+
+
 def test_10_tile_explorer_driven_by_the_test():
     import teachraster as tr
     from teachraster.widgets import TileExplorer
@@ -879,7 +893,7 @@ def test_10_tile_explorer_driven_by_the_test():
         assert first and explorer.caption_text and explorer.caption_text != first
         explorer.level.value = 2  # 1x1 blocks: each is a pixel test, and the counters say so
         assert "each is a pixel test" in explorer.caption_text
-        assert f"pixel tests run: <b>{explorer.blocks.counters.pixel_tests}</b>" in (
+        assert f"pixel tests run: <b>{explorer.blocks.counters.pixel_tests:,}</b>" in (
             explorer.counters.value
         )
         assert explorer.blocks.counters.pixel_tests > 0

@@ -278,12 +278,12 @@ def _fit_margins(fig, ax, pad: float = 0.12) -> None:
 
 def _counter_table(counters) -> str:
     rows = "".join(
-        f"<tr><td>{lab}</td><td>{e}</td><td>{f}</td><td>{p}</td></tr>"
+        f"<tr><td>{lab}</td><td>{e:,}</td><td>{f:,}</td><td>{p:,}</td></tr>"
         for lab, e, f, p in counters.table()
     )
     return (
         "<table><tr><th>block</th><th>rejected</th><th>accepted</th><th>partial</th></tr>"
         f"{rows}</table>"
-        f"pixel tests run: <b>{counters.pixel_tests}</b> · pixels filled with no test: "
-        f"<b>{counters.pixels_accepted}</b>"
+        f"pixel tests run: <b>{counters.pixel_tests:,}</b> · pixels filled with no test: "
+        f"<b>{counters.pixels_accepted:,}</b>"
     )
