@@ -483,3 +483,60 @@ def test_case_picker_moved_to_any_case_draws_what_a_fresh_one_draws():
         picker.close()
     assert len(fresh) == 2 * len(names)
     assert wrong == []
+
+
+# -- layout in the notebook column -------------------------------------------------------------
+def drawn_texts(fig) -> list:
+    """(text, window extent) of every text ``fig`` draws: tick labels beyond their axis's
+    limits are left out (matplotlib makes them, but does not draw them)."""
+    from matplotlib.text import Text
+
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    undrawn = set()
+    for ax in fig.axes:
+        for axis, limits in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+            lo, hi = sorted(limits)
+            for tick in axis.get_major_ticks() + axis.get_minor_ticks():
+                if not lo - 1e-9 * (hi - lo) <= tick.get_loc() <= hi + 1e-9 * (hi - lo):
+                    undrawn.update({id(tick.label1), id(tick.label2)})
+    return [(t.get_text(), t.get_window_extent(renderer)) for t in fig.findobj(Text)
+            if t.get_visible() and t.get_text().strip() and id(t) not in undrawn
+            and (t.axes is None or t.axes.get_visible())]  # fmt: skip
+
+
+def assert_texts_apart(texts, fig, gap_px: float) -> None:
+    """Every text inside ``fig``, and any two texts side by side at least ``gap_px`` apart."""
+    box = fig.bbox
+    for text, b in texts:
+        assert box.x0 <= b.x0 and b.x1 <= box.x1 and box.y0 <= b.y0 and b.y1 <= box.y1, text
+    for i, (t1, a) in enumerate(texts):
+        for t2, b in texts[i + 1 :]:
+            if min(a.y1, b.y1) - max(a.y0, b.y0) > 0:  # in one row
+                assert max(b.x0 - a.x1, a.x0 - b.x1) >= gap_px, (t1, t2)
+
+
+def test_filter_explorer_panels_fit_the_column_apart():
+    """The three panels of lesson 09's explorer side by side in the column (940 px at the
+    classroom style): each title within its panel ("error vs footprint mean" ran 4 px past
+    both sides of its panel, as wide as the column allows), no label on another, the
+    colour bars' end labels apart, nothing cut at the figure's edges."""
+    from teachraster.plotting import use_style
+    from teachraster.plotting.style import COLUMN_WIDTH_PX
+    from teachraster.widgets.filter_explorer import FilterExplorer
+
+    with use_style("classroom"):
+        ex = FilterExplorer(tilt=80, filter="anisotropic", repeats=6, samples=2, backend="image")
+    try:
+        fig = ex.fig
+        assert round(fig.get_figwidth() * fig.dpi) <= COLUMN_WIDTH_PX
+        texts = drawn_texts(fig)
+        assert_texts_apart(texts, fig, gap_px=fig.dpi * 0.25)  # a quarter inch: 20 px
+        renderer = fig.canvas.get_renderer()
+        for ax in ex.axes:
+            title, panel = ax.title.get_window_extent(renderer), ax.get_window_extent(renderer)
+            assert panel.x0 <= title.x0 and title.x1 <= panel.x1, ax.get_title()
+        tops = [ax.get_window_extent(renderer).y1 for ax in ex.axes]
+        assert max(tops) - min(tops) < 1  # three panels of one size in a row
+    finally:
+        ex.close()

@@ -58,17 +58,21 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
         below its colour bar's tick labels, off the picture.
     """
     s, r, fw = font_scale(), width / height, column_inches(fig)
-    side, gap = 0.15, 0.2 * s  # margins; between panels (room for the titles)
-    w = (fw - 2 * side - 2 * gap) / 3
+    # Margins and gaps hold what sticks out of the panels (at 0.36 in the error's
+    # title ran 4 px past both sides of its panel, and the error bar's first tick label came
+    # 21 px from the level bar's last): half a tick label beyond a colour bar's end, on the
+    # right too (a range ending on a tick), and the titles' breathing room between panels.
+    left, right, gap = 0.15, 0.17 * s, 0.28 * s
+    w = (fw - left - right - 2 * gap) / 3
     h = w / r
-    title = 0.3 * s + 0.1  # no tick labels: titles only
+    title = 0.25 * s + 0.1  # no tick labels: one row of titles (their pad included)
     pad, bar = 0.08 * s, 0.1 * s  # between a panel and its colour bar; the bar
     below = pad + bar + 0.47 * s  # the bar, its tick labels and the row of its label
     fh = title + h + below
     fig.set_size_inches(fw, fh)
     panels, bars = [], []
     for k in range(3):
-        x = side + k * (w + gap)
+        x = left + k * (w + gap)
         panels.append(fig.add_axes((x / fw, below / fh, w / fw, h / fh)))
         if k:
             bars.append(fig.add_axes((x / fw, (below - pad - bar) / fh, w / fw, bar / fh)))
@@ -180,7 +184,9 @@ class FilterExplorer:
             self.panels["error"].colorbar.set_label("")
             names = ("filtered", "mip level(s) read", "error vs footprint mean")
             for ax, name in zip(axes, names):
-                ax.set_title(name)
+                # at the size of axis labels: the style's title size made "error vs footprint
+                # mean" wider than its panel (three panels share the column)
+                ax.set_title(name, fontsize=mpl.rcParams["axes.labelsize"])
                 ax.set_xticks([])
                 ax.set_yticks([])
                 ax.set_xlabel("")
