@@ -45,7 +45,28 @@ def test_plane_explorer_reads_positions_as_lesson_03_does(explorer):
     assert ax.get_xlabel() == "x" and ax.get_ylabel() == "y"
     assert 2.0 in ax.get_xticks() and 0.5 not in ax.get_xticks()
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["0", "2"]
-    assert explorer.image.colorbar.ax.get_ylabel() == "f, the attribute"
+    # what the colours are: on the colour bar (the title's row saved: one screen)
+    assert explorer.image.colorbar.ax.get_ylabel() == "f at the pixel centres"
+
+
+def test_plane_explorer_fits_one_screen_with_its_sliders(explorer):
+    """Lesson 03's explorer under its three rows of sliders on a projector (1024 x 768, about
+    600 px for the widget): its figure was 576 px high, a title row above the ticks; now at
+    most 450 px (at the page's dpi and at the classroom style's), the grid most of it."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        ex = PlaneExplorer(backend="image")
+    try:
+        fig = ex.fig
+        for dpi in (fig.dpi, 100):  # the page's 96 dpi, the classroom style's 100
+            assert fig.get_figheight() * dpi <= 450
+        fig.canvas.draw()
+        grid = ex.ax.get_window_extent()
+        assert grid.height >= 0.8 * fig.bbox.height and not ex.ax.get_title()
+        assert grid.x1 <= fig.bbox.x1 and grid.width >= 0.6 * fig.bbox.width
+    finally:
+        ex.close()
 
 
 def test_plane_explorer_starts_every_slider_on_one_of_its_positions(explorer):

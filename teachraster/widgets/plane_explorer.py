@@ -43,6 +43,12 @@ ALT = "the attribute plane over the pixel grid"
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
 
+#: The figure's size in inches (at the page's 96 dpi: 605 × 432 px).
+FIGSIZE = (6.3, 4.5)
+
+#: What the colours are (the colour bar's label; the Axes have no title).
+COLOUR_LABEL = "f at the pixel centres"
+
 
 def plane_system(xy, f) -> dict:
     """Fatahalian's 3 × 3 system for the plane through ``(x_i, y_i, f_i)``, solved two ways.
@@ -162,13 +168,16 @@ class PlaneExplorer:
         self._sliders(xy, f)
         self._compute_at()
         with style_context(style):
-            self.fig = new_figure((7.5, 6.0), self.backend)
+            # one screen with its sliders (a projector at 1024 x 768): 605 x 432 px, the grid
+            # as large as the room left by its ticks and the colour bar; 7.5 x 6 in was 576 px
+            # high, with a title row above the ticks, and the whole widget needed a scroll
+            self.fig = new_figure(FIGSIZE, self.backend)
             self.fig.set_layout_engine("constrained")
             self.ax = self.fig.add_subplot()
             self.grid = plot_pixel_grid(self.ax, width, height)
             lo, hi = self._range()
-            self.image = plot_attribute(self.ax, self.values, vmin=lo, vmax=hi,
-                                        title="f at the pixel centres")  # fmt: skip
+            # no title: the colour bar's label says what the colours are (a row saved)
+            self.image = plot_attribute(self.ax, self.values, vmin=lo, vmax=hi, title="")
             self.contours = LineCollection(self._segments(), colors=COLORS["edge"],
                                            linewidths=1.5, linestyles="--")  # fmt: skip
             self.ax.add_collection(self.contours)
@@ -176,7 +185,7 @@ class PlaneExplorer:
             # positions as the lesson's figures read them: v1 = (2, 1) on its ticks
             screen_ticks(self.ax, width, height)
             if self.image.colorbar is not None:
-                self.image.colorbar.set_label("f, the attribute")
+                self.image.colorbar.set_label(COLOUR_LABEL)
             # the constrained layout once, then frozen: the blit's background and the
             # artists drawn over it must agree on where the Axes are
             self.fig.canvas.draw()
