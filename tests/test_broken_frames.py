@@ -167,6 +167,27 @@ def test_the_checkers_private_readers_are_not_counted():
     assert ex.check("broken_frame_6", sol.diagnosis(6)).package is None  # history only
 
 
+def test_the_private_readers_called_from_a_worker_thread_are_not_counted():
+    """r11 09-B2: ``pool.submit(bf._is_cause, ...)`` from a pool made before the check passed
+    with no "not counted" (the profile hook watched the case's own thread only)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    pool = ThreadPoolExecutor(1)
+    pool.submit(int).result(timeout=5)  # its thread exists before the check starts
+    honest = sol.diagnosis(6)
+
+    def private(b):
+        pool.submit(bf._is_cause, 6, "sliver").result(timeout=5)
+        return honest(b)
+
+    try:
+        report = ex.check("broken_frame_6", private)
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+    assert not report.failures and not report.passed, str(report)
+    assert "read from the checker's private functions: not counted" in report.package
+
+
 def test_a_check_run_inside_the_answer_never_passes():
     """A function that tries answers against the checker from inside itself learns nothing:
     the check it runs fails every case with the same words."""

@@ -554,3 +554,60 @@ def test_only_p0s_pixel_is_named():
     """r9 L18."""
     first = _first("line_pixels", lambda p0, p1: [(int(p0[1]), int(p0[0]))])
     assert first.kind == "p0's pixel only", first.explanation
+
+
+# -- r11 09-B2: the package's answer called from a worker thread is not counted ---------------
+def _in_a_pool(call):
+    """A function that hands the answer's work to a thread pool made before the check (the
+    profile hook of r9 watched the case's own thread only)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    pool = ThreadPoolExecutor(1)
+    pool.submit(int).result(timeout=5)  # its thread exists before the check starts
+
+    def fn(*args):
+        return pool.submit(call, *args).result(timeout=5)
+
+    return pool, fn
+
+
+@pytest.mark.parametrize(
+    ("name", "call", "called"),
+    [
+        ("line_pixels", lambda p0, p1: tr_line(p0, p1), "rasterize_line"),
+        ("over_premultiplied", lambda s, d: tr_blend(s, d), "blend_equation"),
+    ],
+    ids=["rasterize_line", "blend_equation"],
+)
+def test_a_package_answer_called_from_a_worker_thread_is_not_counted(name, call, called):
+    pool, fn = _in_a_pool(call)
+    try:
+        report = ex.check(name, fn, budget=60)
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+    assert report.package and f"teachraster's {called}" in report.package, str(report)
+    assert not report.passed
+
+
+def tr_line(p0, p1):
+    import teachraster as tr
+
+    raster = tr.rasterize_line(p0, p1, 12, 12)
+    return {(int(r), int(c)) for r, c in zip(*np.nonzero(raster.coverage))}
+
+
+def tr_blend(s, d):
+    import teachraster as tr
+
+    return tr.blend_equation(s, d, "ONE", "ONE_MINUS_SRC_ALPHA")
+
+
+def test_the_watch_leaves_every_listed_function_as_it_was():
+    """The check swaps the listed answers' code while the cases run, and puts it back."""
+    import teachraster as tr
+
+    code, defaults = tr.rasterize_line.__code__, tr.rasterize_line.__kwdefaults__
+    seen = []
+    ex.check("line_pixels", lambda p0, p1: seen.append(tr.rasterize_line.__code__) or set())
+    assert seen and seen[0] is not code  # swapped while the cases ran
+    assert tr.rasterize_line.__code__ is code and tr.rasterize_line.__kwdefaults__ is defaults
