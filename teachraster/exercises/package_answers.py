@@ -143,13 +143,62 @@ def watching(spec: Exercise):
                 _unswap(f)
 
 
+def names_read(fn, depth: int = 4) -> set[str]:
+    """The names ``fn``'s code reads (attributes, globals) and the texts it (or its closure)
+    holds, with those of its nested functions and of the functions it may call, its globals'
+    and its closure's (``depth`` levels; the package's functions are not read)."""
+    names: set[str] = set()
+    done: set = set()
+    todo = [(inspect.unwrap(fn) if callable(fn) else fn, 0)]
+    while todo:
+        f, level = todo.pop()
+        code = getattr(f, "__code__", None)
+        if code is None or code in done:
+            continue
+        done.add(code)
+        codes = [code]
+        while codes:
+            c = codes.pop()
+            names.update(c.co_names)
+            names.update(k for k in c.co_consts if isinstance(k, str))
+            codes += [k for k in c.co_consts if isinstance(k, types.CodeType)]
+        names.update(v for v in _closed_over(f) if isinstance(v, str))
+        if level < depth:
+            todo += [(g, level + 1) for g in _helpers(f, names)]
+    return names
+
+
+def _closed_over(f) -> list:
+    """What ``f``'s closure holds (its cells not filled yet left out)."""
+    held = []
+    for cell in getattr(f, "__closure__", None) or ():
+        try:
+            held.append(cell.cell_contents)
+        except ValueError:
+            pass
+    return held
+
+
+def _helpers(f, names) -> list:
+    """The functions ``f`` may call that are not the package's: its globals named in
+    ``names``, and its closure's."""
+    found = [getattr(f, "__globals__", {}).get(name) for name in names] + _closed_over(f)
+    return [g for g in found if isinstance(g, types.FunctionType)
+            and not str(g.__module__).startswith("teachraster")]  # fmt: skip
+
+
 def package_note(spec: Exercise, fn, seen) -> str | None:
-    """Why ``fn`` does not count (it is the package's answer, or its cases called one of
-    them: ``seen``, from :func:`watching`), or None."""
+    """Why ``fn`` does not count (it is the package's answer, its cases called one of them:
+    ``seen``, from :func:`watching`, or its code reads the checker's private data), or None."""
     target = inspect.unwrap(fn) if callable(fn) else fn
     for answer in spec.answers:
         if target is inspect.unwrap(answer.function) and answer.when is None:
             return _words(spec, answer, "is")
     if seen:
         return _words(spec, seen[0], "calls")
+    if spec.private:
+        read = names_read(fn)
+        for name, words in spec.private:
+            if name in read:
+                return f"your {spec.name} reads the checker's {name}: {words}"
     return None
