@@ -615,3 +615,21 @@ def test_the_passing_figure_marks_the_accepted_pixel_of_its_own_report():
     xs = sorted(min(line.get_xdata()) for line in ax.lines)
     assert xs == [31, 31 + bf.W + 12], xs
     plt.close(fig)
+
+
+def test_the_history_plot_says_smaller_down_not_nearer():
+    """r11 11-F: "depth (nearer ↓)" on every frame, frame 1's too, whose nearer face has the
+    larger depth: the axis states the order, not which is near."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging.frame_history import draw_history
+
+    fig, ax = plt.subplots()
+    try:
+        draw_history(ax, ex.broken_frame(1).frame.history(24, 28))
+        assert ax.get_ylabel() == "depth (smaller ↓)"
+    finally:
+        plt.close(fig)
