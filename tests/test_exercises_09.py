@@ -611,3 +611,45 @@ def test_the_watch_leaves_every_listed_function_as_it_was():
     ex.check("line_pixels", lambda p0, p1: seen.append(tr.rasterize_line.__code__) or set())
     assert seen and seen[0] is not code  # swapped while the cases ran
     assert tr.rasterize_line.__code__ is code and tr.rasterize_line.__kwdefaults__ is defaults
+
+
+# -- r11 09-B, 09-C: cases drawn at check time; plain numbers in the messages -----------------
+def _harvested(name, answer):
+    """A table of the answers to every case one check shows (recorded by a dummy function,
+    computed outside the function), handed in as a lookup (r11 g9.py: 44/44)."""
+    seen = []
+    ex.check(name, lambda *args: seen.append(args) or answer(*args), budget=60)
+    table = {repr(args): answer(*args) for args in seen}
+    return lambda *args: table.get(repr(args))
+
+
+@pytest.mark.parametrize(
+    ("name", "answer"),
+    [
+        ("line_pixels", line_pixels),
+        ("over_premultiplied", over_pm),
+        ("over_to_premultiplied", over_tp),
+    ],
+    ids=["9.1", "9.2b", "9.2a"],
+)
+def test_a_table_of_one_checks_answers_fails_the_next_check(name, answer):
+    report = ex.check(name, _harvested(name, answer), budget=60)
+    assert not report.passed
+    failed = {f.case for f in report.failures}
+    assert failed and all("drawn for this check" in c for c in failed), failed
+
+
+def test_front_to_back_draws_stacks_at_check_time():
+    from teachraster.exercises.front_to_back import layer_cases
+
+    a, b = layer_cases(), layer_cases()
+    drawn = [k for k, c in enumerate(a) if "drawn for this check" in c[0]]
+    assert drawn and any(not np.array_equal(a[k][1][0], b[k][1][0]) for k in drawn)
+
+
+def test_a_line_case_prints_plain_numbers():
+    """r11 09-C: "(np.float64(8.125), np.float64(10.125))" in 24 of the 44 case texts."""
+    report = ex.check("line_pixels", lambda p0, p1: set(), budget=60)
+    text = " ".join(f.explanation for f in report.failures)
+    assert "random line" in " ".join(f.case for f in report.failures)
+    assert "np.float64" not in text, text[:400]

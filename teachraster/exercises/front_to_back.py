@@ -28,7 +28,7 @@ import numpy as np
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers
 from .blending import blend_answers, colour_texts, swatches
-from .cases import SEED
+from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
 from .tolerance import all_close
@@ -66,12 +66,14 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
         ("an invisible layer (alpha 0) in between", [red, [0, 0, 0, 0], blue]),
         ("no layers at all", np.zeros((0, 4))),
     ]
-    rng = np.random.default_rng(SEED + 80)
-    for k in range(14):
-        n = int(rng.integers(2, 7))
-        a = rng.uniform(0.05, 1.0, n).round(3)
-        named.append((f"random stack {k + 1}: {n} layers",
-                      [_premultiplied(rng.uniform(0, 1, 3).round(3), x) for x in a]))  # fmt: skip
+    rng, now = np.random.default_rng(SEED + 80), drawn_rng()
+    for k in range(14 + DRAWN):
+        r = rng if k < 14 else now  # the last few drawn for this check (r11 09-B)
+        n = int(r.integers(2, 7))
+        a = r.uniform(0.05, 1.0, n).round(3)
+        what = f"random stack {k + 1}" if k < 14 else f"stack drawn for this check {k - 13}"
+        named.append((f"{what}: {n} layers",
+                      [_premultiplied(r.uniform(0, 1, 3).round(3), x) for x in a]))  # fmt: skip
     out = []
     for label, layers in named:
         arr = np.asarray(layers, dtype=float).reshape(-1, 4)

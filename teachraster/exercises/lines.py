@@ -21,6 +21,7 @@ import numpy as np
 
 from ..core.lines import rasterize_line
 from .answers import as_numbers, short
+from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .running import WrongAnswerType
 
@@ -57,10 +58,13 @@ def line_cases() -> list[tuple[str, tuple, set]]:
         ("steep, past a corner, downwards", (1.375, 1.75), (3.25, 8.375)),
         ("x-major, past a corner by less than 1/100", (11.5, 2.625), (4.25, 7.625)),
     ]
-    rng = np.random.default_rng(SEED)
-    for k in range(24):
-        p0, p1 = (tuple(rng.integers(0, WINDOW * 8, 2) / 8) for _ in range(2))
-        named.append((f"random line {k}", p0, p1))
+    rng, now = np.random.default_rng(SEED), drawn_rng()
+    for k in range(24 + DRAWN):
+        r = rng if k < 24 else now  # the last few drawn for this check (r11 09-B)
+        # plain floats: a case prints as (8.125, 10.125), not np.float64(8.125) (r11 09-C)
+        p0, p1 = (tuple(float(v) for v in r.integers(0, WINDOW * 8, 2) / 8) for _ in range(2))
+        named.append((f"random line {k}" if k < 24 else f"line drawn for this check {k - 23}",
+                      p0, p1))  # fmt: skip
     return [(label, (p0, p1), _expected_pixels(p0, p1)) for label, p0, p1 in named]
 
 
