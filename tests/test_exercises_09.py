@@ -653,3 +653,22 @@ def test_a_line_case_prints_plain_numbers():
     text = " ".join(f.explanation for f in report.failures)
     assert "random line" in " ".join(f.case for f in report.failures)
     assert "np.float64" not in text, text[:400]
+
+
+def test_a_right_under_loop_through_the_packages_blend_is_told_why_it_is_not_counted():
+    """r11 09-E: the under factors through tr.blend_equation were told the function "computes
+    this very answer"."""
+    import teachraster as tr
+
+    def under(layers):
+        acc = np.zeros(4)
+        for layer in layers:
+            acc = tr.blend_equation(np.asarray(layer, float), acc, "ONE_MINUS_DST_ALPHA", "ONE")
+            if acc[3] >= 1:
+                break
+        return acc
+
+    report = ex.check("front_to_back", under, budget=60)
+    assert not report.failures and not report.passed, str(report)
+    assert "computes this very answer" not in report.package
+    assert "write the step yourself" in report.package and "under" in report.package

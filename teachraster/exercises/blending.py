@@ -386,14 +386,16 @@ def _mistakes(mode: str) -> list[Mistake]:
     return out
 
 
-def blend_answers() -> tuple[PackageAnswer, ...]:
+def blend_answers(words: str | None = None) -> tuple[PackageAnswer, ...]:
     """Every route into the package's blending (r9: the private ``apply_blend`` passed
     unflagged while ``tr.blend_equation`` was flagged): the blend module's functions, which
-    every render blends through, and the checker's own reference."""
+    every render blends through, and the checker's own reference. ``words``: what the report
+    says of them instead (an exercise whose answer is more than one blend)."""
     step = "the blend this exercise asks you to write"
-    return (PackageAnswer(blend_equation), PackageAnswer(apply_blend, what=step),
-            PackageAnswer(factor, what=f"the blend factors, a part of {step}"),
-            PackageAnswer(from_straight))  # fmt: skip
+    return (PackageAnswer(blend_equation, words=words),
+            PackageAnswer(apply_blend, what=step, words=words),
+            PackageAnswer(factor, what=f"the blend factors, a part of {step}", words=words),
+            PackageAnswer(from_straight, words=words))  # fmt: skip
 
 
 def _exercise(name: str, mode: str) -> Exercise:

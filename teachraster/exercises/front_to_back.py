@@ -49,6 +49,14 @@ def _premultiplied(rgb, a) -> list:
     return [*(np.asarray(rgb, float) * a), a]
 
 
+#: What a loop that blends each layer with the package's blend is told (r11 09-E: a right
+#: loop with *under*'s factors, (ONE_MINUS_DST_ALPHA, ONE), was told the function "computes
+#: this very answer"; it computes one step, whose factors are the derivation).
+STEP_WORDS = ("the package's blend is not counted as your work: write the step yourself "
+              "(choosing the factors of under, nearest first, is the derivation asked for; "
+              "name them in a comment if you like)")  # fmt: skip
+
+
 def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
     """(label, (layers,), RGBA): named stacks and seeded random ones, nearest layer first."""
     red, blue, green = _premultiplied([1, 0, 0], 0.5), _premultiplied([0, 0, 1], 0.5), \
@@ -329,5 +337,5 @@ FRONT_TO_BACK = Exercise(
     variant_mistakes(_variants, WORDS, WALK), draw=draw_layers, call=call_front_to_back,
     # r9: back_to_front fed the layers up to the opaque one passed unflagged; the package's
     # blend functions compute the over step the task asks you to turn round
-    answers=(PackageAnswer(back_to_front), *blend_answers()), example=4,  # opaque in the middle
+    answers=(PackageAnswer(back_to_front), *blend_answers(STEP_WORDS)), example=4,  # opaque in the middle
 )  # fmt: skip
