@@ -14,7 +14,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from lines_blending_solutions import EPS, _meets, line_pixels, line_with
+from lines_blending_solutions import EPS, _meets, line_pixels, line_with, over_straight
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
 from reasoning_solutions import front_to_back
@@ -232,7 +232,10 @@ def test_9_2a_multiplied_by_the_result_alpha_twice_is_named():
 def test_9_2a_reused_on_premultiplied_inputs_is_named():
     """r8: the most natural slip after 9.2a (both inputs multiplied by their alpha again)."""
     first = _first("over_premultiplied", over_tp)
-    assert first.kind == "9.2a reused" and "9.2a's over_to_premultiplied" in first.explanation
+    assert first.kind == "9.2a reused" and "9.2a's light" in first.explanation
+    first = _first("over_premultiplied", over_straight)  # r11: 9.2a returns C, α
+    assert first.kind == "straight rule on premultiplied", first.explanation
+    assert "9.2a's over_straight" in first.explanation
 
 
 def test_the_destination_weighted_by_its_own_alpha_is_named():
@@ -672,3 +675,70 @@ def test_a_right_under_loop_through_the_packages_blend_is_told_why_it_is_not_cou
     assert not report.failures and not report.passed, str(report)
     assert "computes this very answer" not in report.package
     assert "write the step yourself" in report.package and "under" in report.package
+
+
+# -- r11 09-A: 9.2a asks for the straight result, which lesson 12's rule does not give ------------
+def test_lesson_12s_rule_on_premultiplied_inputs_does_not_pass_9_2a():
+    """9.2a returned premultiplied: premultiplying and applying lesson 12 §9's rule passed,
+    and the notebook said the check could not tell. The straight result needs the division
+    and its missing answer at α = 0."""
+
+    def copied(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        ps, pd = np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]]
+        return ps + pd * (1 - s[3])
+
+    first = _first("over_straight", copied)
+    assert first.kind == "returned premultiplied" and "divide it by α" in first.explanation
+    assert ex.check("over_straight", over_straight, budget=60).passed
+
+    def divided(s, d):  # the copy divided by α, with no answer where α = 0
+        c = copied(s, d)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.r_[c[:3] / c[3], c[3]]
+
+    first = _first("over_straight", divided)
+    assert first.kind == "division by zero" and "(0, 0, 0, 0)" in first.explanation
+
+
+def test_gl_straight_colour_times_alpha_is_named_in_9_2a_premultiplied():
+    """r11 09-F: "C = C_s·α_s + C_d(1 − α_s), then α·C" got the rule restated."""
+
+    def gl_times_alpha(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = s[3] + d[3] * (1 - s[3])
+        return np.r_[(s[:3] * s[3] + d[:3] * (1 - s[3])) * a, a]
+
+    first = _first("over_to_premultiplied", gl_times_alpha)
+    assert first.kind == "GL's straight colour times α", first.explanation
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind"),
+    [
+        ("tight_bbox", "search range from the unmoved ends"),
+        ("hand_bresenham", "Bresenham"),
+        ("centres_at_integers", "diamond at the corner"),
+        ("end_closed_unmoved", "end tested before moving, closed"),
+    ],
+)
+def test_the_four_restated_line_mistakes_are_named(fn, kind):
+    """r11 09-F: these four got the rule restated (the review's s91b/s91c)."""
+    from teachraster.exercises.lines import diamond_pixels, hand_bresenham
+
+    fns = {
+        "tight_bbox": lambda p0, p1: {
+            (r, c) for r, c in line_pixels(p0, p1)
+            if min(int(p0[1] // 1), int(p1[1] // 1)) <= r <= max(int(p0[1] // 1), int(p1[1] // 1))
+            and min(int(p0[0] // 1), int(p1[0] // 1)) <= c <= max(int(p0[0] // 1), int(p1[0] // 1))
+        },
+        "hand_bresenham": hand_bresenham,
+        "centres_at_integers": lambda p0, p1: {
+            (r, c) for r, c in line_pixels((p0[0] + 0.5, p0[1] + 0.5), (p1[0] + 0.5, p1[1] + 0.5))
+            if r < 12 and c < 12
+        },
+        "end_closed_unmoved": lambda p0, p1: diamond_pixels(p0, p1, end="unmoved closed"),
+    }  # fmt: skip
+    report = ex.check("line_pixels", fns[fn], budget=60)
+    assert not report.passed and report.failures
+    assert {f.kind for f in report.failures} == {kind}, str(report)[:600]
