@@ -742,3 +742,31 @@ def test_the_four_restated_line_mistakes_are_named(fn, kind):
     report = ex.check("line_pixels", fns[fn], budget=60)
     assert not report.passed and report.failures
     assert {f.kind for f in report.failures} == {kind}, str(report)[:600]
+
+
+# -- r11 09-D: the passing figures' labels do not run into each other -------------------------
+@pytest.mark.parametrize(
+    ("name", "fn"),
+    [("over_straight", over_straight), ("over_premultiplied", over_pm),
+     ("over_to_premultiplied", over_tp), ("front_to_back", front_to_back)],
+)  # fmt: skip
+def test_the_swatch_labels_do_not_overlap(name, fn):
+    """c7: "expected (0.1875, 0.4375" ran into "(0.1875, 0.4375,"; c13: "layer 6expected"."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        fig, ax = plt.subplots(figsize=(7, 4))
+        try:
+            ex.check(name, fn, budget=60).plot(ax)
+            fig.canvas.draw()
+            boxes = [t.get_window_extent() for t in ax.get_xticklabels() if t.get_text()]
+            assert len(boxes) >= 4
+            for a, b in zip(boxes, boxes[1:]):  # side by side, or one below the other
+                assert a.x1 < b.x0 or a.y1 < b.y0 or b.y1 < a.y0, (name, a, b)
+        finally:
+            plt.close(fig)

@@ -501,8 +501,12 @@ def swatches(ax, cells, names, straight=()):
 
 
 def _two_lines(rgba: str) -> str:
-    """ "(r, g, b, a)" as "(r, g," over "b, a)": four columns fit under their swatches."""
+    """ "(r, g, b, a)" as "(r, g," over "b, a)": four columns fit under their swatches; with
+    numbers of more than four digits, one number a line (r11 09-D: "(0.1875, 0.4375," ran into
+    its neighbour's label: four labels share the axes' width, however the swatches are spaced)."""
     r, g, rest = rgba.split(", ", 2)
+    if len(f"{r}, {g},") > 13:
+        return ",\n".join(rgba.split(", "))
     return f"{r}, {g},\n{rest}"
 
 
