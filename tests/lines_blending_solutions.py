@@ -69,9 +69,18 @@ def over_to_premultiplied(src, dst):
     return [*(s * src[3] + d * dst[3] * (1 - src[3]) for s, d in zip(src[:3], dst[:3])), a]
 
 
+def over_straight(src, dst):
+    """Straight in, straight out: the light each colour shows, spread over the share covered
+    (nothing covers the pixel: (0, 0, 0, 0))."""
+    a = src[3] + dst[3] * (1 - src[3])
+    if a == 0:
+        return [0.0, 0.0, 0.0, 0.0]
+    return [*((s * src[3] + d * dst[3] * (1 - src[3])) / a for s, d in zip(src[:3], dst[:3])), a]
+
+
 CORRECT = {"line_pixels": line_pixels, "over": over,
            "over_to_premultiplied": over_to_premultiplied,
-           "over_premultiplied": over_premultiplied}  # fmt: skip
+           "over_premultiplied": over_premultiplied, "over_straight": over_straight}  # fmt: skip
 
 
 # -- typical mistakes -----------------------------------------------------------------------------
@@ -153,3 +162,8 @@ def over_to_premultiplied_divided(src, dst):
 MISTAKES["divided by zero alpha"] = ("over_to_premultiplied", over_to_premultiplied_divided,
                                      "both alphas 0: the result is transparent black, not a "
                                      "division by zero")  # fmt: skip
+MISTAKES["premultiplied returned for the straight result"] = (
+    "over_straight",
+    over_to_premultiplied,
+    "divide it by α",
+)  # r11 09-A: 9.2a returns (C, α)

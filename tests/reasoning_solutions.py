@@ -139,7 +139,7 @@ CAPSTONE = dict(covers=covers, barycentric=barycentric, perspective_weights=pers
 #: named by the cause passed; the evidence is a value of the pixel's own history).
 BROKEN_FRAMES = {
     1: ("depth function", (24, 28), 0.026233),  # the depth shown (kept)
-    2: ("culled winding", (24, 28), 0.973767),  # the depth shown
+    2: ("culled winding", (24, 28), 9),  # culled here, drawn in the intended frame
     3: ("z-fighting", (24, 20), 0.598993),  # the tied fragment's depth in the intended frame
     4: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),  # the fragment colour
     5: ("blend order", (23, 41), (0.52, 0.67, 0.91)),  # the strip's 'after', overwritten
@@ -160,6 +160,14 @@ def _tied_as_meant(b, row, col):
     return next(r for r in b.intended.history(row, col).records if r.triangle == tie.triangle).depth
 
 
+def _culled_but_drawn(b, row, col):
+    drawn = {frozenset(map(tuple, b.intended.trace.window[r.piece, :, :2].round(6).tolist()))
+             for r in b.intended.history(row, col).records if r.outcome == "passed"}  # fmt: skip
+    return next(r.triangle for r in b.frame.history(row, col).records if r.outcome == "culled"
+                and frozenset(map(tuple, b.frame.trace.window[r.piece, :, :2].round(6).tolist()))
+                in drawn)  # fmt: skip
+
+
 def _sliver(b, row, col):
     thin = next(r for r in b.frame.history(row, col).records if r.triangle == 2)
     return thin.outside, _glass(b.intended.history(row, col)).depth
@@ -169,7 +177,7 @@ def _sliver(b, row, col):
 #: (r9: the answer is a function of the frame it is given, checked on a redrawn frame too).
 READ = {
     1: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
-    2: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
+    2: _culled_but_drawn,
     3: _tied_as_meant,
     4: lambda b, row, col: _glass(b.frame.history(row, col)).color[:3],
     5: lambda b, row, col: _glass(b.frame.history(row, col)).color_after[:3],

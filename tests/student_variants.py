@@ -1035,7 +1035,8 @@ WRONG = {
     "frame 2 blamed on the depth function, its evidence read right": (
         "broken_frame_2",
         lambda b: ("depth function", (24, 28), 0.973767),
-        "read right: it is the evidence of another cause",
+        # r11 11-D: frame 2's evidence is a triangle now, so the depth is no longer its
+        "do not bear the mark of 'depth function'",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",

@@ -25,7 +25,8 @@ STAGE = {1: "depth test", 2: "culling", 3: "depth test", 4: "blending", 5: "blen
          6: "coverage"}  # fmt: skip
 PAIRS = [(1, 2), (3, 4), (5, 6)]
 #: A made-up value of each kind of evidence.
-MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5)}
+MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5),
+           "triangle": 11}  # fmt: skip
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
 
 
@@ -98,7 +99,8 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     failure = _first(number, (twin, pixel, value if same_kind else MADE_UP[bf.EVIDENCE[twin][0]]))
     assert failure.kind == "cause" and f"mark of {twin!r}" in failure.explanation
     assert ("read right" in failure.explanation) == same_kind, failure.explanation
-    off = value + 1e-3 if isinstance(value, float) else tuple(v + 1e-3 for v in value)
+    off = (value + 1 if isinstance(value, int) else value + 1e-3 if isinstance(value, float)
+           else tuple(v + 1e-3 for v in value))  # fmt: skip
     failure = _first(number, (cause, pixel, off))
     assert failure.kind == "evidence", failure.explanation
     assert f"do bear the mark of {cause!r}" in failure.explanation
@@ -113,7 +115,7 @@ def _harvest(h) -> list:
     and "after" colours, and (distance, depth) pairs."""
     out = []
     for r in h.records:
-        out += [v for v in (r.depth, r.outside) if v is not None]
+        out += [v for v in (r.depth, r.outside) if v is not None] + [r.triangle]
         out += [tuple(c[:3]) for c in (r.color, r.color_after) if c]
     return out
 
@@ -133,8 +135,9 @@ def test_a_loop_over_one_pixels_history_values_fails_the_redrawn_frame(number):
     found = []
     for cause, (kind, _) in bf.EVIDENCE.items():
         for v in values:
-            if (kind in ("depth", "number")) != isinstance(v, float) or (
-                kind == "pair") != (isinstance(v, tuple) and len(v) == 2):  # fmt: skip
+            if ((kind in ("depth", "number")) != isinstance(v, float)
+                or (kind == "triangle") != isinstance(v, int)
+                or (kind == "pair") != (isinstance(v, tuple) and len(v) == 2)):  # fmt: skip
                 continue
             answer = (cause, (row, col), v)
             if bf._judged(number, answer)[0] == "right":
@@ -165,6 +168,77 @@ def test_the_checkers_private_readers_are_not_counted():
     with pytest.raises(AssertionError, match="not counted"):
         report.assert_passed()
     assert ex.check("broken_frame_6", sol.diagnosis(6)).package is None  # history only
+
+
+def test_the_private_readers_called_from_a_worker_thread_are_not_counted():
+    """r11 09-B2: ``pool.submit(bf._is_cause, ...)`` from a pool made before the check passed
+    with no "not counted" (the profile hook watched the case's own thread only)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    pool = ThreadPoolExecutor(1)
+    pool.submit(int).result(timeout=5)  # its thread exists before the check starts
+    honest = sol.diagnosis(6)
+
+    def private(b):
+        pool.submit(bf._is_cause, 6, "sliver").result(timeout=5)
+        return honest(b)
+
+    try:
+        report = ex.check("broken_frame_6", private)
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+    assert not report.failures and not report.passed, str(report)
+    assert "read from the checker's private functions: not counted" in report.package
+
+
+def test_an_answer_that_reads_the_salted_key_is_not_counted():
+    """r11 11-E: hashing the ten causes with ``_SALT`` against ``_KEY`` gave the cause with no
+    private call, and passed."""
+    import hashlib
+
+    honest = sol.diagnosis(6)
+
+    def cause_of(n):  # a helper of the student's own, read too
+        return next(c for c in bf.CAUSES
+                    if hashlib.sha256(f"{bf._SALT}|{n}|{c}".encode()).hexdigest()[:32]
+                    == bf._KEY[n])  # fmt: skip
+
+    def salted(b):
+        return (cause_of(b.number), *honest(b)[1:])
+
+    report = ex.check("broken_frame_6", salted)
+    assert not report.failures and not report.passed, str(report)
+    assert "reads the checker's _KEY" in report.package, report.package
+    salt = "_SALT"  # read by its name as a text
+
+    def by_name(b):
+        return (getattr(bf, salt) and "sliver", *honest(b)[1:])
+
+    report = ex.check("broken_frame_6", by_name)
+    assert "reads the checker's _SALT" in str(report.package)
+
+
+def test_the_look_alike_frames_1_and_2_take_evidence_of_different_kinds():
+    """r11 11-D: frames 1 and 2 both took the depth shown, so one reader served both causes
+    and the cause was a coin flip. Frame 2's evidence is the triangle culled in it and drawn
+    in the intended frame, which the redrawn frame numbers otherwise (typed in, it fails)."""
+    for a, b in PAIRS:
+        assert bf.EVIDENCE[ANSWERS[a]][0] != bf.EVIDENCE[ANSWERS[b]][0], (a, b)
+    depth = ex.check("broken_frame_2", lambda b: ("culled winding", (24, 28),
+                                                  sol.READ[1](b, 24, 28)))  # fmt: skip
+    assert not depth.passed and "triangle's number" in depth.failures[0].explanation
+    assert bf._judged(2, ("culled winding", (24, 28), 9))[0] == "right"
+    for look in bf._REDRAWN:
+        redrawn = bf._redrawn(2, look)
+        assert bf._judged(redrawn, ("culled winding", (24, 28), 9))[0] == "copied", look
+    _passes("broken_frame_2", sol.diagnosis(2))
+
+
+def test_a_pixel_given_as_floats_is_told_it_is_a_float():
+    """r11 11-H: (24.0, 28.0) was told "row 24.0 is not an integer"."""
+    failure = _first(1, ("depth function", (24.0, 28), 0.026233))
+    assert "row 24.0 is a float, not an int: give int(row)" in failure.explanation
+    assert "not an integer" in _first(1, ("depth function", (24.5, 28), 0.1)).explanation
 
 
 def test_a_check_run_inside_the_answer_never_passes():
@@ -265,14 +339,25 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
         solution = cells[f"broken_frame_{n}_solution"]
         assert f"def broken_frame_{n}(b):" in solution, n  # a function of the frame pair
         assert "b.frame" in solution and "broken[" not in solution.split("SOLUTION")[1], n
-    assert "def depths_shown(b, row, col)" in cells["example"]  # the worked form (frame 1)
+    # r11 11-A: the worked form, on a frame pair no task grades (it solved frame 1)
+    assert "def broken_frame_example(b):" in cells["example"] and "broken[" not in cells["example"]
 
 
 def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
-    """r9 11-3, 11-4: frame 1's depths are mirrored and frame 4 is contrived, said where the
-    student reads (the solution cells are stripped from the student version)."""
+    """r9 11-3, 11-4: frame 1's depth order and frame 4's contrivance are said where the
+    student reads (the solution cells are stripped from the student version). r11 11-A, 11-B:
+    the order, not "near 0, not near 1", with the depths printed by a cell, and no question
+    naming which cause is at fault."""
     cells = _cells()
-    assert "mirrored" in cells["frame_1_task"]
+    task = cells["frame_1_task"]
+    assert "the face in front has the smaller depth, in frame 1 the larger" in " ".join(
+        task.split()
+    )
+    assert "near 0" not in task and "at fault" not in task
+    depths = cells["frame_1_depths"]
+    assert "depth[9]" in depths and "depth[3]" in depths
+    # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
+    assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
     assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
     assert "ontrived" not in cells["broken_frame_4_solution"]
 
@@ -530,3 +615,21 @@ def test_the_passing_figure_marks_the_accepted_pixel_of_its_own_report():
     xs = sorted(min(line.get_xdata()) for line in ax.lines)
     assert xs == [31, 31 + bf.W + 12], xs
     plt.close(fig)
+
+
+def test_the_history_plot_says_smaller_down_not_nearer():
+    """r11 11-F: "depth (nearer ↓)" on every frame, frame 1's too, whose nearer face has the
+    larger depth: the axis states the order, not which is near."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging.frame_history import draw_history
+
+    fig, ax = plt.subplots()
+    try:
+        draw_history(ax, ex.broken_frame(1).frame.history(24, 28))
+        assert ax.get_ylabel() == "depth (smaller ↓)"
+    finally:
+        plt.close(fig)

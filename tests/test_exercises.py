@@ -41,6 +41,7 @@ def test_names_in_course_order():
         "over",
         "over_to_premultiplied",
         "over_premultiplied",
+        "over_straight",
     ]
 
 

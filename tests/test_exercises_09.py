@@ -14,7 +14,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from lines_blending_solutions import EPS, _meets, line_pixels, line_with
+from lines_blending_solutions import EPS, _meets, line_pixels, line_with, over_straight
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
 from reasoning_solutions import front_to_back
@@ -232,7 +232,10 @@ def test_9_2a_multiplied_by_the_result_alpha_twice_is_named():
 def test_9_2a_reused_on_premultiplied_inputs_is_named():
     """r8: the most natural slip after 9.2a (both inputs multiplied by their alpha again)."""
     first = _first("over_premultiplied", over_tp)
-    assert first.kind == "9.2a reused" and "9.2a's over_to_premultiplied" in first.explanation
+    assert first.kind == "9.2a reused" and "9.2a's light" in first.explanation
+    first = _first("over_premultiplied", over_straight)  # r11: 9.2a returns C, α
+    assert first.kind == "straight rule on premultiplied", first.explanation
+    assert "9.2a's over_straight" in first.explanation
 
 
 def test_the_destination_weighted_by_its_own_alpha_is_named():
@@ -554,3 +557,216 @@ def test_only_p0s_pixel_is_named():
     """r9 L18."""
     first = _first("line_pixels", lambda p0, p1: [(int(p0[1]), int(p0[0]))])
     assert first.kind == "p0's pixel only", first.explanation
+
+
+# -- r11 09-B2: the package's answer called from a worker thread is not counted ---------------
+def _in_a_pool(call):
+    """A function that hands the answer's work to a thread pool made before the check (the
+    profile hook of r9 watched the case's own thread only)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    pool = ThreadPoolExecutor(1)
+    pool.submit(int).result(timeout=5)  # its thread exists before the check starts
+
+    def fn(*args):
+        return pool.submit(call, *args).result(timeout=5)
+
+    return pool, fn
+
+
+@pytest.mark.parametrize(
+    ("name", "call", "called"),
+    [
+        ("line_pixels", lambda p0, p1: tr_line(p0, p1), "rasterize_line"),
+        ("over_premultiplied", lambda s, d: tr_blend(s, d), "blend_equation"),
+    ],
+    ids=["rasterize_line", "blend_equation"],
+)
+def test_a_package_answer_called_from_a_worker_thread_is_not_counted(name, call, called):
+    pool, fn = _in_a_pool(call)
+    try:
+        report = ex.check(name, fn, budget=60)
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+    assert report.package and f"teachraster's {called}" in report.package, str(report)
+    assert not report.passed
+
+
+def tr_line(p0, p1):
+    import teachraster as tr
+
+    raster = tr.rasterize_line(p0, p1, 12, 12)
+    return {(int(r), int(c)) for r, c in zip(*np.nonzero(raster.coverage))}
+
+
+def tr_blend(s, d):
+    import teachraster as tr
+
+    return tr.blend_equation(s, d, "ONE", "ONE_MINUS_SRC_ALPHA")
+
+
+def test_the_watch_leaves_every_listed_function_as_it_was():
+    """The check swaps the listed answers' code while the cases run, and puts it back."""
+    import teachraster as tr
+
+    code, defaults = tr.rasterize_line.__code__, tr.rasterize_line.__kwdefaults__
+    seen = []
+    ex.check("line_pixels", lambda p0, p1: seen.append(tr.rasterize_line.__code__) or set())
+    assert seen and seen[0] is not code  # swapped while the cases ran
+    assert tr.rasterize_line.__code__ is code and tr.rasterize_line.__kwdefaults__ is defaults
+
+
+# -- r11 09-B, 09-C: cases drawn at check time; plain numbers in the messages -----------------
+def _harvested(name, answer):
+    """A table of the answers to every case one check shows (recorded by a dummy function,
+    computed outside the function), handed in as a lookup (r11 g9.py: 44/44)."""
+    seen = []
+    ex.check(name, lambda *args: seen.append(args) or answer(*args), budget=60)
+    table = {repr(args): answer(*args) for args in seen}
+    return lambda *args: table.get(repr(args))
+
+
+@pytest.mark.parametrize(
+    ("name", "answer"),
+    [
+        ("line_pixels", line_pixels),
+        ("over_premultiplied", over_pm),
+        ("over_to_premultiplied", over_tp),
+    ],
+    ids=["9.1", "9.2b", "9.2a"],
+)
+def test_a_table_of_one_checks_answers_fails_the_next_check(name, answer):
+    report = ex.check(name, _harvested(name, answer), budget=60)
+    assert not report.passed
+    failed = {f.case for f in report.failures}
+    assert failed and all("drawn for this check" in c for c in failed), failed
+
+
+def test_front_to_back_draws_stacks_at_check_time():
+    from teachraster.exercises.front_to_back import layer_cases
+
+    a, b = layer_cases(), layer_cases()
+    drawn = [k for k, c in enumerate(a) if "drawn for this check" in c[0]]
+    assert drawn and any(not np.array_equal(a[k][1][0], b[k][1][0]) for k in drawn)
+
+
+def test_a_line_case_prints_plain_numbers():
+    """r11 09-C: "(np.float64(8.125), np.float64(10.125))" in 24 of the 44 case texts."""
+    report = ex.check("line_pixels", lambda p0, p1: set(), budget=60)
+    text = " ".join(f.explanation for f in report.failures)
+    assert "random line" in " ".join(f.case for f in report.failures)
+    assert "np.float64" not in text, text[:400]
+
+
+def test_a_right_under_loop_through_the_packages_blend_is_told_why_it_is_not_counted():
+    """r11 09-E: the under factors through tr.blend_equation were told the function "computes
+    this very answer"."""
+    import teachraster as tr
+
+    def under(layers):
+        acc = np.zeros(4)
+        for layer in layers:
+            acc = tr.blend_equation(np.asarray(layer, float), acc, "ONE_MINUS_DST_ALPHA", "ONE")
+            if acc[3] >= 1:
+                break
+        return acc
+
+    report = ex.check("front_to_back", under, budget=60)
+    assert not report.failures and not report.passed, str(report)
+    assert "computes this very answer" not in report.package
+    assert "write the step yourself" in report.package and "under" in report.package
+
+
+# -- r11 09-A: 9.2a asks for the straight result, which lesson 12's rule does not give ------------
+def test_lesson_12s_rule_on_premultiplied_inputs_does_not_pass_9_2a():
+    """9.2a returned premultiplied: premultiplying and applying lesson 12 §9's rule passed,
+    and the notebook said the check could not tell. The straight result needs the division
+    and its missing answer at α = 0."""
+
+    def copied(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        ps, pd = np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]]
+        return ps + pd * (1 - s[3])
+
+    first = _first("over_straight", copied)
+    assert first.kind == "returned premultiplied" and "divide it by α" in first.explanation
+    assert ex.check("over_straight", over_straight, budget=60).passed
+
+    def divided(s, d):  # the copy divided by α, with no answer where α = 0
+        c = copied(s, d)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.r_[c[:3] / c[3], c[3]]
+
+    first = _first("over_straight", divided)
+    assert first.kind == "division by zero" and "(0, 0, 0, 0)" in first.explanation
+
+
+def test_gl_straight_colour_times_alpha_is_named_in_9_2a_premultiplied():
+    """r11 09-F: "C = C_s·α_s + C_d(1 − α_s), then α·C" got the rule restated."""
+
+    def gl_times_alpha(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = s[3] + d[3] * (1 - s[3])
+        return np.r_[(s[:3] * s[3] + d[:3] * (1 - s[3])) * a, a]
+
+    first = _first("over_to_premultiplied", gl_times_alpha)
+    assert first.kind == "GL's straight colour times α", first.explanation
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind"),
+    [
+        ("tight_bbox", "search range from the unmoved ends"),
+        ("hand_bresenham", "Bresenham"),
+        ("centres_at_integers", "diamond at the corner"),
+        ("end_closed_unmoved", "end tested before moving, closed"),
+    ],
+)
+def test_the_four_restated_line_mistakes_are_named(fn, kind):
+    """r11 09-F: these four got the rule restated (the review's s91b/s91c)."""
+    from teachraster.exercises.lines import diamond_pixels, hand_bresenham
+
+    fns = {
+        "tight_bbox": lambda p0, p1: {
+            (r, c) for r, c in line_pixels(p0, p1)
+            if min(int(p0[1] // 1), int(p1[1] // 1)) <= r <= max(int(p0[1] // 1), int(p1[1] // 1))
+            and min(int(p0[0] // 1), int(p1[0] // 1)) <= c <= max(int(p0[0] // 1), int(p1[0] // 1))
+        },
+        "hand_bresenham": hand_bresenham,
+        "centres_at_integers": lambda p0, p1: {
+            (r, c) for r, c in line_pixels((p0[0] + 0.5, p0[1] + 0.5), (p1[0] + 0.5, p1[1] + 0.5))
+            if r < 12 and c < 12
+        },
+        "end_closed_unmoved": lambda p0, p1: diamond_pixels(p0, p1, end="unmoved closed"),
+    }  # fmt: skip
+    report = ex.check("line_pixels", fns[fn], budget=60)
+    assert not report.passed and report.failures
+    assert {f.kind for f in report.failures} == {kind}, str(report)[:600]
+
+
+# -- r11 09-D: the passing figures' labels do not run into each other -------------------------
+@pytest.mark.parametrize(
+    ("name", "fn"),
+    [("over_straight", over_straight), ("over_premultiplied", over_pm),
+     ("over_to_premultiplied", over_tp), ("front_to_back", front_to_back)],
+)  # fmt: skip
+def test_the_swatch_labels_do_not_overlap(name, fn):
+    """c7: "expected (0.1875, 0.4375" ran into "(0.1875, 0.4375,"; c13: "layer 6expected"."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        fig, ax = plt.subplots(figsize=(7, 4))
+        try:
+            ex.check(name, fn, budget=60).plot(ax)
+            fig.canvas.draw()
+            boxes = [t.get_window_extent() for t in ax.get_xticklabels() if t.get_text()]
+            assert len(boxes) >= 4
+            for a, b in zip(boxes, boxes[1:]):  # side by side, or one below the other
+                assert a.x1 < b.x0 or a.y1 < b.y0 or b.y1 < a.y0, (name, a, b)
+        finally:
+            plt.close(fig)

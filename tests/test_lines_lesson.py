@@ -62,7 +62,8 @@ def test_exercise_notebook_follows_the_grading_convention():
     ids = [c.metadata["nbgrader"]["grade_id"] for c in nb.cells]
     assert len(ids) == len(set(ids))
     # issue 30: GL's straight over merged away; over_premultiplied derived from the straight rule
-    fns = ["line_pixels", "over_to_premultiplied", "over_premultiplied", "front_to_back"]
+    # r11 09-A: 9.2a returns the straight result (the premultiplied one was the lesson's rule)
+    fns = ["line_pixels", "over_straight", "over_premultiplied", "front_to_back"]
     for fn in fns:
         (sol,) = [c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == f"{fn}_solution"]
         assert sol.metadata["nbgrader"] == {"grade": False, "grade_id": f"{fn}_solution",

@@ -315,8 +315,10 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
     text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
     task = text["over_premultiplied_task"]
     assert "Porter and Duff" in task and "give *over* for **straight**" not in task
-    assert "over_to_premultiplied(src, dst)" in task and "lesson 12, §9" not in task
-    assert "over_to_premultiplied_check" in text and "over_premultiplied_step" in text
+    assert "over_straight(src, dst)" in task and "lesson 12, §9" not in task
+    assert "over_straight_check" in text and "over_premultiplied_step" in text
+    # r11 09-A, 09-G: no shortcut offered, and GL's default is no blending
+    assert "cannot tell the two apart" not in task and "textbook default" not in task
     said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))
     assert "your 9.2a with src and dst" in said and "Porter and Duff's rule" not in said, said
     lesson = json.loads(Path(__file__).parents[1].joinpath(

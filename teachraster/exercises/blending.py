@@ -24,6 +24,7 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend, blend_equation, factor
 from .answers import as_numbers
+from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import NOISE, vec
 from .tolerance import all_close
@@ -32,8 +33,8 @@ SEED = 20241126
 
 
 def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
-    """(label, (src, dst), expected) for ``mode`` "over", "premultiplied" or "from
-    straight" (straight inputs, the premultiplied result)."""
+    """(label, (src, dst), expected) for ``mode`` "over", "premultiplied", "from straight"
+    (straight inputs, the premultiplied result) or "straight" (straight in and out)."""
     pairs = [
         ("opaque red over blue", [1, 0, 0, 1], [0, 0, 1, 1]),
         ("half red over blue", [1, 0, 0, 0.5], [0, 0, 1, 1]),
@@ -41,19 +42,25 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         ("transparent over grey", [0.3, 0.6, 0.9, 0.0], [0.5, 0.5, 0.5, 1]),
         ("quarter green over half grey", [0, 1, 0, 0.25], [0.5, 0.5, 0.5, 0.5]),
     ]
-    if mode == "from straight":  # the task's "nothing at all when α = 0" (r8: never tested)
+    if mode in ("from straight", "straight"):  # "nothing at all when α = 0" (r8: never tested)
         pairs.append(("both transparent", [0.3, 0.6, 0.9, 0.0], [0.5, 0.2, 0.1, 0.0]))
     rng = np.random.default_rng(SEED + 1)
     for k in range(20):
         pairs.append((f"random colours {k}", *rng.uniform(0, 1, (2, 4)).round(3)))
+    now = drawn_rng()  # r11 09-B: a few drawn for this check, so a harvested table fails
+    for k in range(DRAWN):
+        pairs.append((f"colours drawn for this check {k + 1}", *now.uniform(0, 1, (2, 4)).round(3)))
     out = []
     for label, src, dst in pairs:
         src, dst = np.asarray(src, float), np.asarray(dst, float)
         if mode == "premultiplied":
             src = np.r_[src[:3] * src[3], src[3]]  # these cases hold premultiplied colours
             dst = np.r_[dst[:3] * dst[3], dst[3]]
-        if mode == "from straight":  # straight in, premultiplied out (exercise 9.2)
+        if mode == "from straight":  # straight in, premultiplied out
             out.append((label, (src, dst), from_straight(src, dst)))
+            continue
+        if mode == "straight":  # straight in, straight out (exercise 9.2a)
+            out.append((label, (src, dst), straight_over(src, dst)))
             continue
         out.append((label, (src, dst), blend_equation(src, dst, *BLEND_MODES[mode])))
     if mode == "premultiplied":  # what no straight colour holds: 9.2b's case to reason about
@@ -121,9 +128,17 @@ _FROM_STRAIGHT = (": each colour counts in the share of the pixel where it shows
                   "the colour times that alpha")  # fmt: skip
 
 
+_STRAIGHT_RULE = (": each colour counts in the share of the pixel where it shows (the source "
+                  "in α_s, the destination in α_d of the 1 − α_s the source leaves), the "
+                  "result's alpha α is the share either covers, and the straight colour is what "
+                  "you see spread over that share; where α = 0, (0, 0, 0, 0)")  # fmt: skip
+
+
 def _rule(mode: str):
     if mode == "premultiplied":
         return lambda *a: _DERIVE
+    if mode == "straight":
+        return lambda *a: _STRAIGHT_RULE
     if mode == "from straight":
         return lambda *a: _FROM_STRAIGHT
     s, d = BLEND_MODES[mode]
@@ -195,7 +210,7 @@ PREMULTIPLIED = [
     # Exercise 9.3 gives the straight rule and asks for the premultiplied one: the mistakes of
     # that derivation (issue 30: "straight alpha where premultiplied is expected").
     ("straight rule on premultiplied", "you applied the straight-alpha rule to premultiplied "
-     "colours: their red, green and blue already carry their alpha, so weighting them by α "
+     "colours (9.2a's over_straight): their red, green and blue already carry their alpha, so weighting them by α "
      "again and dividing by the result's alpha counts alpha twice; multiply the straight rule "
      "through by the result's alpha instead", _straight_rule),
     ("returned straight", "you returned a straight colour (divided by the result's alpha): "
@@ -211,10 +226,10 @@ PREMULTIPLIED = [
      "premultiplied already (the dark fringe): it already carries its alpha",
      lambda s, d: _colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
     # r8: the most natural slip after 9.2a, and the destination's own alpha as its weight
-    ("9.2a reused", "you applied 9.2a's over_to_premultiplied to premultiplied colours: it "
-     "multiplies each colour by its alpha, and these carry it already (c = α·C), so src and "
-     "dst are both multiplied by their alpha twice (the dark fringe)",
-     lambda s, d: from_straight(s, d)),
+    ("9.2a reused", "you applied 9.2a's light (its sum before the division by α) to "
+     "premultiplied colours: it multiplies each colour by its alpha, and these carry it "
+     "already (c = α·C), so src and dst are both multiplied by their alpha twice (the dark "
+     "fringe)", lambda s, d: from_straight(s, d)),
     ("destination's own alpha", "you weighted the destination by 1 − its own alpha: what "
      "shows of it is the share the source leaves uncovered, 1 − α_s",
      lambda s, d: _scaled(s, d, 1, 1 - d[3])),
@@ -234,6 +249,56 @@ def from_straight(src, dst) -> np.ndarray:
 def _straight_result(src, dst):
     colour, a = _porter_duff(np.asarray(src, float), np.asarray(dst, float))
     return np.r_[colour, a]
+
+
+def straight_over(src, dst) -> np.ndarray:
+    """Straight src over straight dst, as a straight RGBA (C, α), (0, 0, 0, 0) where α = 0:
+    exercise 9.2a's reference (r11 09-A: asked for the premultiplied result, 9.2a was lesson
+    12 §9's rule on premultiplied inputs, and the check could not tell the two apart)."""
+    return _straight_result(src, dst)
+
+
+def _divided(c) -> np.ndarray:
+    """A premultiplied RGBA as a straight one (0 where its alpha is 0)."""
+    c = np.asarray(c, float)
+    return np.r_[np.divide(c[:3], c[3], out=np.zeros(3), where=c[3] != 0), c[3]]
+
+
+#: 9.2a's mistakes, straight result: each names what the answer shows.
+STRAIGHT = [
+    ("returned premultiplied", "you added the colours, each weighted by the share of the pixel "
+     "where it shows, and stopped: that is α·C, the premultiplied colour; the task asks for "
+     "the straight colour C, that light spread over the share α either covers, so divide it "
+     "by α", from_straight),
+    ("lesson's rule on straight colours", "you applied the rule for premultiplied colours, "
+     "src + (1 − α_s)·dst, to straight ones: a straight colour does not carry its coverage, so "
+     "each must first count in the share of the pixel where it shows (C·α), and the sum, "
+     "α·C, divided by α", lambda s, d: _scaled(s, d, 1, 1 - s[3])),
+    ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s) on all four "
+     "channels: its colour is exact only over an opaque destination (a translucent one shows "
+     "in α_d of the share 1 − α_s, not in all of it), and its alpha counts α_s twice",
+     lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
+    ("destination alpha ignored", "your alpha is right, but you weighted the destination's "
+     "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
+     "only in α_d of that share, and the sum is then divided by α",
+     lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), s[3] + d[3] * (1 - s[3])]),
+    ("weights swapped", "you swapped the weights of over: the source counts in its own share "
+     "α_s of the pixel, not in the 1 − α_s it leaves uncovered, and the destination in α_d of "
+     "that uncovered share", lambda s, d: _divided(np.r_[
+         s[:3] * (1 - s[3]) + d[:3] * d[3] * s[3], s[3] + d[3] * (1 - s[3])])),
+    ("destination not scaled", "you did not scale the destination by (1 − α_s): it shows only "
+     "in the share of the pixel the source leaves uncovered, so its colour counts "
+     "α_d·(1 − α_s), not α_d", lambda s, d: _divided(np.r_[
+         s[:3] * s[3] + d[:3] * d[3], s[3] + d[3] * (1 - s[3])])),
+    ("arguments swapped", "you blended dst over src: the first argument, src, is the incoming "
+     "fragment, the second, dst, what the buffer holds", lambda s, d: straight_over(d, s)),
+]  # fmt: skip
+
+
+def _nan_at_zero(args, expected, got) -> bool:
+    """Both alphas 0 and a NaN (or inf) returned: divided by α = 0."""
+    src, dst = args
+    return src[3] == 0 and dst[3] == 0 and not np.isfinite(np.asarray(got, float)).all()
 
 
 def _divided_by_zero(args, expected, got) -> bool:
@@ -273,6 +338,13 @@ FROM_STRAIGHT = [
      lambda s, d: _with_alpha(s[:3] * s[3] + d[:3] * d[3], s, d)),
     ("source unchanged", "that is the source unchanged: it is blended over the destination, "
      "weighted by its alpha", lambda s, d: np.asarray(s, dtype=float)),
+    # r11 09-F: got the rule restated
+    ("GL's straight colour times α", "you took GL's straight colour, C_s·α_s + C_d·(1 − α_s), "
+     "and multiplied it by the result's alpha: GL weights a translucent destination by "
+     "(1 − α_s) alone, as if it covered the pixel, but it shows only in α_d of that share; "
+     "the colours added up, each weighted by the share where it shows, are already α·C",
+     lambda s, d: _times_alpha(np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]),
+                                     s[3] + d[3] * (1 - s[3])])),
     ("multiplied by alpha twice", "you multiplied by the result's alpha twice: the colours "
      "added up, each weighted by how much of it is seen, are already the premultiplied colour "
      "α·C", lambda s, d: _times_alpha(from_straight(s, d))),
@@ -355,6 +427,12 @@ def _glow_words(args, expected, got) -> str:
 
 
 def _mistakes(mode: str) -> list[Mistake]:
+    if mode == "straight":
+        nan = Mistake("division by zero", "both alphas 0: nothing covers the pixel, so α·C is 0 "
+                      "and dividing it by α = 0 has no answer; the task gives the answer there, "
+                      "(0, 0, 0, 0): test α before you divide", fits=_nan_at_zero)  # fmt: skip
+        table = [Mistake(k, w, gives=g) for k, w, g in STRAIGHT]
+        return [nan, *table, *_alpha_mistakes(straight_over)]
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
@@ -382,14 +460,16 @@ def _mistakes(mode: str) -> list[Mistake]:
     return out
 
 
-def blend_answers() -> tuple[PackageAnswer, ...]:
+def blend_answers(words: str | None = None) -> tuple[PackageAnswer, ...]:
     """Every route into the package's blending (r9: the private ``apply_blend`` passed
     unflagged while ``tr.blend_equation`` was flagged): the blend module's functions, which
-    every render blends through, and the checker's own reference."""
+    every render blends through, and the checker's own reference. ``words``: what the report
+    says of them instead (an exercise whose answer is more than one blend)."""
     step = "the blend this exercise asks you to write"
-    return (PackageAnswer(blend_equation), PackageAnswer(apply_blend, what=step),
-            PackageAnswer(factor, what=f"the blend factors, a part of {step}"),
-            PackageAnswer(from_straight))  # fmt: skip
+    return (PackageAnswer(blend_equation, words=words),
+            PackageAnswer(apply_blend, what=step, words=words),
+            PackageAnswer(factor, what=f"the blend factors, a part of {step}", words=words),
+            PackageAnswer(from_straight, words=words))  # fmt: skip
 
 
 def _exercise(name: str, mode: str) -> Exercise:
@@ -421,8 +501,12 @@ def swatches(ax, cells, names, straight=()):
 
 
 def _two_lines(rgba: str) -> str:
-    """ "(r, g, b, a)" as "(r, g," over "b, a)": four columns fit under their swatches."""
+    """ "(r, g, b, a)" as "(r, g," over "b, a)": four columns fit under their swatches; with
+    numbers of more than four digits, one number a line (r11 09-D: "(0.1875, 0.4375," ran into
+    its neighbour's label: four labels share the axes' width, however the swatches are spaced)."""
     r, g, rest = rgba.split(", ", 2)
+    if len(f"{r}, {g},") > 13:
+        return ",\n".join(rgba.split(", "))
     return f"{r}, {g},\n{rest}"
 
 
@@ -430,7 +514,7 @@ def _blend_drawer(mode: str):
     """draw(ax, case, got): src and dst as swatches, then the expected blend and yours (r8:
     the bars never showed src and dst); before any answer (``got`` None), src and dst only,
     so that the figure never shows the answer first."""
-    straight_in = mode in ("over", "from straight")
+    straight_in = mode in ("over", "from straight", "straight")
 
     def draw(ax, case, got):
         src, dst = case[1]
@@ -441,12 +525,13 @@ def _blend_drawer(mode: str):
             names += [f"expected\n{_two_lines(want)}", f"yours\n{_two_lines(yours)}"]
         names[:2] = [f"{n}\n{_two_lines(vec(c))}" for n, c in zip(names[:2], cells[:2])]
         straight = (0, 1) if straight_in else ()
-        straight += (2, 3) if mode == "over" else ()
+        straight += (2, 3) if mode in ("over", "straight") else ()
         artists = swatches(ax, cells, names, straight)
         kinds = {
             "over": "straight inputs and results",
             "premultiplied": "premultiplied inputs and results",
             "from straight": "straight inputs, premultiplied results",
+            "straight": "straight inputs and results",
         }
         artists.append(ax.set_xlabel(f"{kinds[mode]}, drawn over a checkerboard",
                                      fontsize="x-small"))  # fmt: skip
@@ -463,3 +548,10 @@ FROM_STRAIGHT_EXERCISE = Exercise(
     answers=blend_answers(), example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip
 PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")
+STRAIGHT_EXERCISE = Exercise(
+    "over_straight", lambda: blend_cases("straight"), _rgba,
+    lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("straight"),
+    _mistakes("straight"), draw=_blend_drawer("straight"),
+    answers=(*blend_answers(), PackageAnswer(straight_over)),
+    example=4,  # quarter green over half grey: both translucent
+)  # fmt: skip

@@ -14,7 +14,8 @@ What is hidden and what is not. The frames come in look-alike pairs (1-2, 3-4, 5
 the same symptom, the same picture and the same intended picture pixel for pixel. Hidden: the
 cause (no attribute or repr of a :class:`BrokenFrame` names it; the module keeps only a salted
 hash of each frame's cause, which hides the key from a reader, not from someone who hashes
-the ten names), the frames' ``plan`` (:data:`WITHHELD`). Not hidden: ``frame.trace`` and
+the ten names: an answer whose code names ``_KEY`` or ``_SALT`` is not counted), the frames'
+``plan`` (:data:`WITHHELD`). Not hidden: ``frame.trace`` and
 ``frame.attrs``, the renderer's records that the histories read, and this module's source,
 which shows how each frame is built. Neither gives the point: the evidence is a value of the
 student's own pixel, derived from the frame's history when the answer is checked (r8: the
@@ -27,7 +28,10 @@ the same changed pixels), so a value harvested from the frame shown by a loop ov
 history's values fails the redrawn frame (r9 11-1: 137 calls solved all six). What remains
 open, said in docs/grading.md: a loop inside the function that tries answers against the
 checker (a check started from inside the student's function never passes), and calls into
-this module's private readers (reported "not counted", :data:`_PRIVATE`).
+this module's private readers (reported "not counted", :data:`_PRIVATE`, from any thread).
+The look-alike frames 1 and 2 take evidence of different kinds (the depth shown; the triangle
+culled in one frame and drawn in the other, whose number the redrawn frame changes), so one
+reader does not serve both causes (r11 11-D: a coin flip once the reader was written).
 
 What a wrong answer is told, in this order: a check run inside the function; a pixel where
 the two frames agree; the frame's cause at a changed pixel that does not show its mark
@@ -89,12 +93,17 @@ EVIDENCE = {
     "affine interpolation": ("number", "the attribute value the pixel shows"),
     "blend order": ("colour", "the colour (r, g, b) the transparent fragment's blend wrote "
                     "(its 'after'), which a later write replaced"),
-    "culled winding": ("depth", "the depth of the fragment the pixel shows"),
+    # r11 11-D: not the depth shown, the evidence of its look-alike "depth function": one
+    # reader for both left the cause a coin flip
+    "culled winding": ("triangle", "the number (in this frame's history) of a triangle this "
+                       "frame culls at the pixel and the intended frame draws there (its "
+                       "fragment passes the depth test)"),
     "depth function": ("depth", "the depth of the fragment the pixel shows"),
     "depth test off": ("depth", "the depth of a fragment that passed though the stored depth "
                        "was nearer"),
     "missing premultiplication": ("colour", "the fragment colour (r, g, b) the blend received"),
-    "near-plane clipping": ("number", "how far (px) the centre lies beyond the near plane"),
+    "near-plane clipping": ("number", "how far (px) the pixel's centre lies outside the edge "
+                            "the near plane cut"),
     "sliver": ("pair", "(how far (px) the centre of a pixel the thin triangle passes "
                "through lies outside it, the depth of the fragment the intended frame draws "
                "there instead)"),
@@ -273,14 +282,15 @@ class _Look:
     strip: tuple = (0.2, 0.45, 0.85)
     strip_depth: float = 0.3
     cube: tuple = (1.0, 0.0)
+    order: int = 0  # the cube's triangles drawn from this one on (r11 11-D: other numbers)
 
 
 #: The look of the frames shown, and the looks a check redraws them with (one at random).
 _SHOWN = _Look()
 _REDRAWN = (
-    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05)),
-    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04)),
-    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03)),
+    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 3),
+    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 5),
+    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 7),
 )
 
 
@@ -295,6 +305,9 @@ def _cube(look: _Look, winding_reversed: bool = False, **kwargs) -> Frame:
     rgba = np.concatenate([scene.mesh.corner("color"), np.ones((len(clip), 3, 1))], axis=2)
     if winding_reversed:  # the mesh's corners listed the other way round (data, not a setting)
         clip, rgba = clip[:, ::-1], rgba[:, ::-1]
+    # the same triangles in another order: the same picture (the depth test decides), other
+    # triangle numbers, so that a number typed in fails the redrawn frame
+    clip, rgba = np.roll(clip, -look.order, axis=0), np.roll(rgba, -look.order, axis=0)
     return render(clip, W, H, attrs=rgba, trace=True, clear_color=(1, 1, 1, 1), **kwargs)
 
 
@@ -464,8 +477,12 @@ def _evidence(number, cause: str, p: _Pixel) -> list:
     if not _SIGNS[cause][0](p, b):
         return []
     mine = p.mine.records
-    if cause in ("depth function", "culled winding"):
+    if cause == "depth function":
         return [r.depth for r in mine if r.shown]
+    if cause == "culled winding":  # culled here, drawn there: where the histories part
+        drawn = {_key(b.intended, r.piece) for r in p.meant.records if r.outcome == "passed"}
+        return [r.triangle for r in mine
+                if r.outcome == "culled" and _key(b.frame, r.piece) in drawn]  # fmt: skip
     if cause == "z-fighting":
         tied = {_key(b.frame, r.piece) for r in _ties(p)}
         return [r.depth for r in p.meant.records
@@ -488,13 +505,14 @@ def _evidence(number, cause: str, p: _Pixel) -> list:
 
 #: How far a value may be from the history's: half a unit of the last digit it prints (six
 #: decimals for depths, four digits for colours and distances), and a little more.
-_TOLERANCE = {"depth": 2e-6, "number": 6e-5, "colour": 1e-4, "pair": (6e-5, 2e-6)}
+_TOLERANCE = {"depth": 2e-6, "number": 6e-5, "colour": 1e-4, "pair": (6e-5, 2e-6),
+              "triangle": 0}  # fmt: skip
 
 
 def _matches(kind: str, value, evidence: list) -> bool:
     """Is ``value`` (a number, 3 or 4 colour channels, or a pair) one of ``evidence``?"""
     tol = _TOLERANCE[kind]
-    if kind in ("depth", "number"):
+    if kind in ("depth", "number", "triangle"):
         return any(abs(value - e) <= tol for e in evidence)
     n = len(value)
     return any(np.all(np.abs(np.subtract(value, e[:n])) <= tol) for e in evidence)
@@ -519,8 +537,24 @@ def _index(name: str, value, pixel) -> int:
     try:
         return operator.index(value)
     except TypeError:
-        raise WrongAnswerType(f"returned the pixel {short(pixel)}: {name} {short(value)} is not "
-                              "an integer (a pixel is (row, col), two whole numbers)") from None  # fmt: skip
+        pass
+    if _integral(value, exact=False):  # r11 11-H: 24.0 was told "is not an integer"
+        raise WrongAnswerType(f"returned the pixel {short(pixel)}: {name} {short(value)} is a "
+                              f"float, not an int: give int({name}) (a pixel is (row, col), "
+                              "two ints)")  # fmt: skip
+    raise WrongAnswerType(f"returned the pixel {short(pixel)}: {name} {short(value)} is not "
+                          "an integer (a pixel is (row, col), two whole numbers)")  # fmt: skip
+
+
+def _integral(value, exact: bool = True) -> bool:
+    """Is ``value`` an int (``operator.index``), or (``exact=False``) a float with no
+    fraction?"""
+    try:
+        operator.index(value)
+        return True
+    except TypeError:
+        x = None if exact else _real(value)
+    return x is not None and float(x).is_integer()
 
 
 def _real(value) -> float | None:
@@ -540,6 +574,11 @@ def _as_evidence(cause: str, value):
     if isinstance(value, str) and _words(value) in STAGES:  # r8's answer form: a stage
         raise WrongAnswerType(f"returned the stage {value!r} as the evidence: the evidence for "
                               f"{cause!r} is {what}, read off the pixel's history")  # fmt: skip
+    if kind == "triangle":
+        if isinstance(value, bool | np.bool_) or not _integral(value):
+            raise WrongAnswerType(f"returned the evidence {short(value)}: for {cause!r} it is "
+                                  f"a triangle's number, an int: {what}")  # fmt: skip
+        return int(value)
     if kind in ("depth", "number"):
         x = _real(value)
         if x is None:
@@ -855,11 +894,19 @@ _PRIVATE = tuple(
 )  # fmt: skip
 
 
+#: The key's data: code that names them reads the cause off the checker (r11 11-E: hashing
+#: the ten causes with ``_SALT`` against ``_KEY`` passed 6/6 with no private call).
+_SECRETS = tuple(
+    (name, "the frames' causes, hashed: not counted (name the cause the histories show)")
+    for name in ("_KEY", "_SALT")
+)
+
+
 def frame_exercise(number: int) -> Exercise:
     """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), evidence)."""
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
-        DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE,
+        DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE, private=_SECRETS,
     )  # fmt: skip
 
 

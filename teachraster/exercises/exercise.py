@@ -182,6 +182,10 @@ class Exercise:
         reason (default). False: named only where it gives every failing answer, for mistakes
         that differ on a few cases only (r9: ``line_pixels``' "(−ε, −ε)" shared one failing
         answer with "p1 tested before moving", and named it).
+    private : sequence of (str, str)
+        (name, words): the checker's private data (exercise 11's salted key); an answer whose
+        code names one of them (or a helper of its own does) is reported with ``words`` and
+        not counted, as a call into :attr:`answers` is.
     """
 
     name: str
@@ -202,6 +206,7 @@ class Exercise:
     compose: Callable | None = None
     partial_names: bool = True
     example: int = 0
+    private: Sequence[tuple[str, str]] = ()
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

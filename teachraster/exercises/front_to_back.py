@@ -28,7 +28,7 @@ import numpy as np
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers
 from .blending import blend_answers, colour_texts, swatches
-from .cases import SEED
+from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
 from .tolerance import all_close
@@ -49,6 +49,14 @@ def _premultiplied(rgb, a) -> list:
     return [*(np.asarray(rgb, float) * a), a]
 
 
+#: What a loop that blends each layer with the package's blend is told (r11 09-E: a right
+#: loop with *under*'s factors, (ONE_MINUS_DST_ALPHA, ONE), was told the function "computes
+#: this very answer"; it computes one step, whose factors are the derivation).
+STEP_WORDS = ("the package's blend is not counted as your work: write the step yourself "
+              "(choosing the factors of under, nearest first, is the derivation asked for; "
+              "name them in a comment if you like)")  # fmt: skip
+
+
 def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
     """(label, (layers,), RGBA): named stacks and seeded random ones, nearest layer first."""
     red, blue, green = _premultiplied([1, 0, 0], 0.5), _premultiplied([0, 0, 1], 0.5), \
@@ -66,12 +74,14 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
         ("an invisible layer (alpha 0) in between", [red, [0, 0, 0, 0], blue]),
         ("no layers at all", np.zeros((0, 4))),
     ]
-    rng = np.random.default_rng(SEED + 80)
-    for k in range(14):
-        n = int(rng.integers(2, 7))
-        a = rng.uniform(0.05, 1.0, n).round(3)
-        named.append((f"random stack {k + 1}: {n} layers",
-                      [_premultiplied(rng.uniform(0, 1, 3).round(3), x) for x in a]))  # fmt: skip
+    rng, now = np.random.default_rng(SEED + 80), drawn_rng()
+    for k in range(14 + DRAWN):
+        r = rng if k < 14 else now  # the last few drawn for this check (r11 09-B)
+        n = int(r.integers(2, 7))
+        a = r.uniform(0.05, 1.0, n).round(3)
+        what = f"random stack {k + 1}" if k < 14 else f"stack drawn for this check {k - 13}"
+        named.append((f"{what}: {n} layers",
+                      [_premultiplied(r.uniform(0, 1, 3).round(3), x) for x in a]))  # fmt: skip
     out = []
     for label, layers in named:
         arr = np.asarray(layers, dtype=float).reshape(-1, 4)
@@ -312,13 +322,15 @@ def draw_layers(ax, case, got):
     (before any answer, the layers only: the figure never shows the answer first)."""
     (layers,) = case[1]
     cells = list(layers)
-    names = [f"layer {k + 1}" for k in range(len(layers))]
+    # numbers, and "yours" a line lower: eight labels share the axes' width (r11 09-D: "layer
+    # 6expected")
+    names = [str(k + 1) for k in range(len(layers))]
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
-        names += ["expected", "yours"]
+        names += ["expected", "\nyours"]
     artists = swatches(ax, cells, names)
-    artists.append(ax.set_xlabel("nearest layer first; premultiplied, drawn over a "
-                                 "checkerboard", fontsize="x-small"))  # fmt: skip
+    artists.append(ax.set_xlabel("layers 1, 2, ..., nearest first; premultiplied, drawn over "
+                                 "a checkerboard", fontsize="x-small"))  # fmt: skip
     return artists
 
 
@@ -327,5 +339,5 @@ FRONT_TO_BACK = Exercise(
     variant_mistakes(_variants, WORDS, WALK), draw=draw_layers, call=call_front_to_back,
     # r9: back_to_front fed the layers up to the opaque one passed unflagged; the package's
     # blend functions compute the over step the task asks you to turn round
-    answers=(PackageAnswer(back_to_front), *blend_answers()), example=4,  # opaque in the middle
+    answers=(PackageAnswer(back_to_front), *blend_answers(STEP_WORDS)), example=4,  # opaque in the middle
 )  # fmt: skip

@@ -21,6 +21,7 @@ import numpy as np
 
 from ..core.lines import rasterize_line
 from .answers import as_numbers, short
+from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .running import WrongAnswerType
 
@@ -57,10 +58,13 @@ def line_cases() -> list[tuple[str, tuple, set]]:
         ("steep, past a corner, downwards", (1.375, 1.75), (3.25, 8.375)),
         ("x-major, past a corner by less than 1/100", (11.5, 2.625), (4.25, 7.625)),
     ]
-    rng = np.random.default_rng(SEED)
-    for k in range(24):
-        p0, p1 = (tuple(rng.integers(0, WINDOW * 8, 2) / 8) for _ in range(2))
-        named.append((f"random line {k}", p0, p1))
+    rng, now = np.random.default_rng(SEED), drawn_rng()
+    for k in range(24 + DRAWN):
+        r = rng if k < 24 else now  # the last few drawn for this check (r11 09-B)
+        # plain floats: a case prints as (8.125, 10.125), not np.float64(8.125) (r11 09-C)
+        p0, p1 = (tuple(float(v) for v in r.integers(0, WINDOW * 8, 2) / 8) for _ in range(2))
+        named.append((f"random line {k}" if k < 24 else f"line drawn for this check {k - 23}",
+                      p0, p1))  # fmt: skip
     return [(label, (p0, p1), _expected_pixels(p0, p1)) for label, p0, p1 in named]
 
 
@@ -90,7 +94,7 @@ def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col"
                    closed=False, start=False, half=0.5, centre=0.5):  # fmt: skip
     """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points;
     ``end=True`` also lights the pixel whose diamond holds p1, ``end="unmoved"`` tests that
-    diamond with p1 before it was moved; ``closed=True`` counts the diamond's boundary in;
+    diamond with p1 before it was moved (``"unmoved closed"``: and its boundary counted in); ``closed=True`` counts the diamond's boundary in;
     ``start=True`` leaves the diamond that holds (the moved) p0 dark; ``order="col row"``
     gives pairs the other way round; ``half`` is the diamond's radius and ``centre`` where it
     sits in its pixel (½: the centre)."""
@@ -101,8 +105,9 @@ def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col"
     cx, cy = cols.ravel() + centre, rows.ravel() + centre
     ok = _meets(a, b, cx, cy, closed, half)
     if end is not True:
-        e = np.asarray(p1, float) if end == "unmoved" else b
-        ok &= np.abs(e[0] - cx) + np.abs(e[1] - cy) >= half
+        e = np.asarray(p1, float) if str(end).startswith("unmoved") else b
+        far = np.abs(e[0] - cx) + np.abs(e[1] - cy)
+        ok &= far > half if end == "unmoved closed" else far >= half
     if start:
         ok &= np.abs(a[0] - cx) + np.abs(a[1] - cy) >= half
     pixels = zip(rows.ravel()[ok].astype(int), cols.ravel()[ok].astype(int))
@@ -137,6 +142,29 @@ def bresenham_pixels(p0, p1):
     """Bresenham's walk (lesson 12 §2), as the package draws it."""
     cov = rasterize_line(p0, p1, WINDOW, WINDOW, rule="bresenham").coverage
     return frozenset((int(r), int(c)) for r, c in np.argwhere(cov))
+
+
+def hand_bresenham(p0, p1, end=False):
+    """Bresenham's walk as a student writes it from the textbook: the end points floored to
+    their pixels, one whole pixel per step, p1's pixel left dark unless ``end``."""
+    (x0, y0), (x1, y1) = ((int(np.floor(x)), int(np.floor(y))) for x, y in (p0, p1))
+    dx, dy = abs(x1 - x0), -abs(y1 - y0)
+    sx, sy = (1 if x0 < x1 else -1), (1 if y0 < y1 else -1)
+    err, out = dx + dy, set()
+    while (x0, y0) != (x1, y1):
+        out.add((y0, x0))
+        e2 = 2 * err
+        if e2 >= dy:
+            err, x0 = err + dy, x0 + sx
+        if e2 <= dx:
+            err, y0 = err + dx, y0 + sy
+    return frozenset(out | ({(y1, x1)} if end else set()))
+
+
+def _unmoved_range(p0, p1):
+    """The rule's pixels inside the box of the pixels the unmoved end points lie in."""
+    (c0, c1), (r0, r1) = (sorted((int(np.floor(p0[k])), int(np.floor(p1[k])))) for k in (0, 1))
+    return frozenset((r, c) for r, c in diamond_pixels(p0, p1) if r0 <= r <= r1 and c0 <= c <= c1)
 
 
 def dda_pixels(p0, p1):
@@ -207,6 +235,12 @@ def _end_unmoved(a, e, g):
             "moved p1 lies in another diamond, or in none)")  # fmt: skip
 
 
+def _end_unmoved_closed(a, e, g):
+    return (f"you tested which diamond p1 = {a[1]} lies in before moving it, and counted the "
+            "diamond's boundary in (≤ ½): move p1 by (−ε, −ε²) for that test as well, and "
+            "keep the diamond open (< ½), as for the rest of the segment")  # fmt: skip
+
+
 def _start_diamond_dark(a, e, g):
     return (f"you left the diamond p0 = {a[0]} lies in dark: the segment starts inside it and "
             "leaves it, so its pixel is lit (only p1's own diamond stays dark)")  # fmt: skip
@@ -215,7 +249,9 @@ def _start_diamond_dark(a, e, g):
 LINE_KNOBS = Knobs(diamond_pixels, {
     "eps": [Slip(kind, f"{_TIE}; {words}", move) for move, (kind, words) in _MOVES.items()],
     "end": [Slip("end pixel lit", _end_lit, True),
-            Slip("end tested before moving", _end_unmoved, "unmoved")],
+            Slip("end tested before moving", _end_unmoved, "unmoved"),
+            # r11 09-F: with the boundary counted in as well, the rule was restated
+            Slip("end tested before moving, closed", _end_unmoved_closed, "unmoved closed")],
     "order": [Slip("(col, row) order", "your pairs are (col, row): return (row, col), the row "
                    "first, as an image is indexed [row, col]", "col row")],
     "closed": [Slip("closed diamond", "your diamond includes its boundary (|dx| + |dy| ≤ ½); "
@@ -248,6 +284,11 @@ def _start_dark(p0, p1):
     return diamond_pixels(p0, p1) - {start}
 
 
+_BRESENHAM = ("you walked the line with Bresenham's error term (lesson 12 §2): it takes the "
+              "end points to the pixels they lie in and steps one whole pixel at a time; the "
+              "diamond-exit rule tests the diamonds the segment itself passes through and "
+              "leaves")  # fmt: skip
+
 LINE_MISTAKES = [
     LINE_KNOBS,
     *(_large_eps(name, eps) for name, eps in LARGE_EPS.items()),
@@ -265,10 +306,21 @@ LINE_MISTAKES = [
     ),
     Mistake(
         "Bresenham",
-        "you walked the line with Bresenham's error term (lesson 12 §2): it takes the end "
-        "points to the pixels they lie in and steps one whole pixel at a time; the "
-        "diamond-exit rule tests the diamonds the segment itself passes through and leaves",
+        _BRESENHAM,
         gives=bresenham_pixels,
+    ),
+    # r11 09-F: a textbook Bresenham (end points floored), with p1's pixel dark or lit
+    *(
+        Mistake("Bresenham", _BRESENHAM, gives=lambda p0, p1, e=e: hand_bresenham(p0, p1, e))
+        for e in (False, True)
+    ),
+    Mistake(
+        "search range from the unmoved ends",
+        "you searched only the pixels between those the unmoved end points lie in: the moved "
+        "segment reaches one pixel further (a vertical line on x = k lights column k − 1, "
+        "left of both end points), and a diamond reaches past its pixel's square; search one "
+        "pixel around the box of the moved end points",
+        gives=_unmoved_range,
     ),
     Mistake(
         "diamond radius",
@@ -281,6 +333,14 @@ LINE_MISTAKES = [
         "your diamonds sit on the pixels' corners: pixel (row, col) owns the diamond around "
         "its centre (col + ½, row + ½)",
         gives=lambda p0, p1: diamond_pixels(p0, p1, centre=0.0),
+    ),
+    Mistake(  # r11 09-F: the same, searched over the window only (as a loop over range(12))
+        "diamond at the corner",
+        "your diamonds sit on the pixels' corners (centres at whole numbers): pixel (row, "
+        "col) owns the diamond around its centre (col + ½, row + ½)",
+        gives=lambda p0, p1: frozenset(
+            (r, c) for r, c in diamond_pixels(p0, p1, centre=0.0) if r < WINDOW and c < WINDOW
+        ),  # fmt: skip
     ),
     Mistake(
         "p0's pixel only",

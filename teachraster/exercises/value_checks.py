@@ -4,8 +4,8 @@ Four steps, all within the check's time budget (:mod:`.running`): run every case
 student's function and the strict reading of its answer), stopping at the first case past its
 time limit; compare each answer with the package's; name the mistake behind the failures,
 knowing every answer (:mod:`.diagnosis`); and look whether the function merely calls the
-package's own answer (:mod:`.package_answers`). The report's picture (the exercise's scene)
-is built here and run only when it is drawn. The same steps check every exercise, described
+package's own answer (:mod:`.package_answers`, watching every case, in any thread). The
+report's picture (the exercise's scene) is built here and run only when it is drawn. The same steps check every exercise, described
 by an :class:`~.exercise.Exercise`.
 """
 
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from .diagnosis import Result, diagnose
 from .exercise import Exercise, copies
-from .package_answers import package_note
+from .package_answers import package_note, watching
 from .report import Failure, Report
 from .running import SKIPPED, current, run_case, run_checker
 
@@ -47,7 +47,8 @@ def all_not_implemented(ran) -> bool:
 def check_exercise(spec: Exercise, fn) -> Report:
     """Run, compare, explain (see the module docstring): the report of exercise ``spec``."""
     cases = spec.cases()
-    ran = run_all(spec, fn, cases)
+    with watching(spec) as seen:  # the listed answers, called from any thread (r11 09-B2)
+        ran = run_all(spec, fn, cases)
     scene = _scene(spec, fn)
     if all_not_implemented(ran):
         return Report(spec.name, [], len(cases), True, _drawer(spec, cases[0], None), scene=scene)
@@ -75,7 +76,7 @@ def check_exercise(spec: Exercise, fn) -> Report:
         scene.blocked = f"not run: {stopped}"
     package = None
     if stopped is None and spec.answers:
-        package = package_note(spec, fn, cases[0])
+        package = package_note(spec, fn, seen)
     shown = cases[spec.example] if spec.example < len(cases) else cases[0]
     example = _drawer(spec, shown, shown[2])
     precision = None if failures else _low_precision(results)

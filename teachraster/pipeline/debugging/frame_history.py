@@ -718,7 +718,7 @@ def draw_history(ax, h: PixelHistory):
     ax.set_xticks(x, _record_labels(h), fontsize="small")
     ax.set_xlim(-0.6, max(n, 1) - 0.4)
     ax.set_xlabel("triangle and sample" if h.n_samples > 1 else "triangle, in drawing order")
-    ax.set_ylabel("depth (nearer ↓)")
+    ax.set_ylabel("depth (smaller ↓)")
     ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
     artists += _draw_colours(ax, h, x, (bottom, top))
     if not n:  # an empty strip with a depth axis would look like a history that lost its rows
