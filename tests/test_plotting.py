@@ -633,7 +633,8 @@ def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method)
             (np.nanmin([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]]),
              np.nanmax([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]])))  # fmt: skip
         key = keyed(view)
-        assert "filled" not in key and sum(t.startswith("u = ") for t in key) == 2
+        # the key names the colours with a colour bar (review r11; two swatches before)
+        assert "filled" not in key and view.value_bar.title.get_visible()
         assert "flat-top part" not in key and not view.split.flat_top.get_visible()
         view.show_step(-2, draw=False)  # before the last step: coverage, as before
         assert not view.values.get_visible() and "filled" in keyed(view)
@@ -661,6 +662,64 @@ def test_fill_view_keys_the_sample_dots_it_is_told_of():
         assert fill.coverage.sum() > fill.trace.covered.sum()  # pixels with a sample only
         assert f"at the {int(fill.coverage.sum())} pixels" in view.caption
         plt.close(view.fig)
+
+
+def test_fill_view_last_step_keys_its_colours_as_a_bar_and_hides_u4():
+    """Review r11 (lesson 00 c14): at the step coloured by u the key gave two swatches
+    "u = 0.88" / "u = 0.00" (its ends only, and not why the top is 0.88, not v2's 1) beside
+    the split's "u4 = 3.15", a screen x. The key is a short colour bar over the range at the
+    covered centres; the split's label is hidden at that step only."""
+    xy = ((2.2, 1.5), (13.7, 5.2), (5.1, 12.8))  # the tour's triangle
+    fill = make_fill("span", xy=xy)
+    view = tp.FillView(fill, values=True, attribute="u")
+    bar = view.value_bar
+    view.show_step(-2, draw=False)
+    assert view.split.label.get_visible() and not bar.title.get_visible()
+    view.show_step(-1, draw=False)
+    assert not view.split.label.get_visible()
+    assert not any(t.startswith("u = ") for t in keyed(view))
+    assert all(a.get_visible() for a in bar)
+    assert bar.title.get_text() == "u at the covered centres"
+    lo, hi = view.values.get_clim()
+    assert (bar.low.get_text(), bar.high.get_text()) == (f"{lo:.2f}", f"{hi:.2f}")
+    assert hi < 1.0  # v2's own pixel is not covered: the covered centres' range, not [0, 1]
+    assert bar.bar.get_cmap().name == view.values.get_cmap().name
+    # beside the grid, inside the figure, above the key's other lines (tested, rejected ...)
+    view.set_fill(make_fill("halfplane", xy=xy), step=-1, draw=False)
+    view.fig.canvas.draw()
+    renderer = view.fig.canvas.get_renderer()
+    boxes = [a.get_window_extent(renderer) for a in bar]
+    assert min(b.x0 for b in boxes) > view.ax.bbox.x1
+    assert max(b.x1 for b in boxes) < view.fig.bbox.x1
+    lines = [t.get_window_extent(renderer) for t in view.legend.texts if t.get_visible()]
+    assert max(b.y1 for b in lines) < min(b.y0 for b in boxes)  # the rest below the bar
+    plt.close(view.fig)
+
+
+def test_fill_view_draws_covered_samples_as_rings_where_it_colours_by_u():
+    """Review r11 (lesson 00 c14, 4× MSAA): filled blue sample dots, four to a pixel, hid the
+    u colours of the last step (and looked like the map's low end). There they are rings; at
+    the other steps filled dots, as before. Blitted, the dots lie where a full draw puts
+    them: under the vertex and edge labels (a layer of their own drew them on top)."""
+    fill = make_fill("halfplane", samples=4)
+    view = tp.FillView(fill, step=2, values=True, sample_key=True)
+    dots = tp.plot_samples(view.ax, fill, fraction=False)
+    view.show_samples(dots)
+
+    def hollow() -> bool:
+        return bool((dots.covered.get_facecolor()[:, 3] == 0).all())
+
+    assert not hollow()
+    for k in (-1, 2, -1):
+        view.show_step(k, draw=False)
+        assert hollow() == (k == -1)
+        view.redraw()
+        fast = rendered(view.fig)
+        view.fig.canvas.draw()
+        assert np.abs(fast - rendered(view.fig)).max() <= 8, k
+    dots.update(fill)  # a new fill keeps the rings of the step on show
+    assert hollow()
+    plt.close(view.fig)
 
 
 def test_split_label_stays_inside_the_grid():

@@ -670,6 +670,30 @@ def test_player_blits_its_steps_and_keeps_its_fills(player):
     assert player.fill is span  # toggling back reuses the fill, no new rasterisation
 
 
+def test_player_with_samples_steps_as_its_poster_shows_rings_where_it_colours_by_u():
+    """Review r11 (lesson 00 c14, 4× MSAA): the last step's filled sample dots hid its u
+    colours; they are rings there. And the page's frames (blitted) are the pictures a poster
+    (a full draw) shows: the dots' layer lay above the labels, over v1 and E31, in frames only."""
+    from teachraster.plotting.frames import frame_rgba
+
+    p = FillPlayer(triangle(), W, H, method="halfplane", samples="4 standard (rotated grid)",
+                   backend="image")  # fmt: skip
+    try:
+        covered = p.sample_dots.covered
+        last = p.frames.max
+        for k in (last, 2):
+            p.view.show_step(k, draw=False)
+            p.fig.canvas.draw()  # as a poster is drawn
+            poster = frame_rgba(p.fig).astype(int)
+            p.view.redraw()  # as the page's frames are
+            diff = np.abs(frame_rgba(p.fig).astype(int) - poster).max(axis=-1)
+            assert diff.max() <= 8, (k, int((diff > 8).sum()))
+            rings = (covered.get_facecolor()[:, 3] == 0).all()
+            assert rings == (k == last)
+    finally:
+        p.close()
+
+
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")  # raised inside ipympl
 def test_ipympl_sends_one_fast_frame_per_step():
     pytest.importorskip("ipympl")

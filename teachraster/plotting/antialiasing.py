@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from matplotlib.lines import Line2D
+from matplotlib.patheffects import withStroke
 
 from ..core.fill import Fill
 from ..core.trace import edge_name
@@ -53,12 +54,17 @@ def _positions(ids, offsets):
 
 @dataclass
 class SampleArtists(Artists):
-    """Samples of :func:`plot_samples`: covered (coloured by triangle), uncovered (hollow),
-    and the coverage fraction image behind them (or None)."""
+    """Samples of :func:`plot_samples`: covered (coloured by triangle), uncovered (white),
+    and the coverage fraction image behind them (or None). :meth:`set_rings` draws the
+    covered samples as rings instead, over pixels whose colours must show."""
 
     fraction: ImageArtists | None
     covered: object
     uncovered: Line2D
+    rings: bool = field(default=False, repr=False)
+    _faces: list = field(default_factory=list, repr=False)
+    #: line widths in points, the style's when the samples were plotted: edge, ring, rim
+    _widths: tuple = field(default=(0.5, 0.8, 2.0), repr=False)
 
     def update(self, source) -> None:
         """Show another multisampled fill or frame (any size and pattern)."""
@@ -66,13 +72,35 @@ class SampleArtists(Artists):
         x, y, t = _positions(ids, offsets)
         hit = t >= 0
         self.covered.set_offsets(np.column_stack([x[hit], y[hit]]))
-        self.covered.set_facecolor([TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit]])
+        self._faces = [TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit]]
+        self.set_rings(self.rings)
         self.uncovered.set_data(x[~hit], y[~hit])
         d = _dot_diameter(self.covered.axes, offsets)
         self.covered.set_sizes([d**2])
         self.uncovered.set_markersize(d)
         if self.fraction is not None:
             self.fraction.update((ids >= 0).mean(axis=2))
+
+    def set_rings(self, on: bool) -> None:
+        """Covered samples as hollow rings (``on``) or dots filled in their triangle's colour.
+
+        A fill's last step colours its pixels by an attribute: filled dots, four to a pixel
+        under 4× MSAA, hid those colours, and their blue read as the colour map's low end
+        (review r11, lesson 00 c14). A ring shows the pixel's colour through it; white with
+        a black rim, it stays visible on the dark and the light end of the map alike.
+        """
+        self.rings = bool(on)
+        edge, ring, rim = self._widths
+        if self.rings:
+            self.covered.set_facecolor("none")
+            self.covered.set_edgecolor("white")
+            self.covered.set_linewidth(ring)
+            self.covered.set_path_effects([withStroke(linewidth=rim, foreground=COLORS["edge"])])
+        else:
+            self.covered.set_facecolor(self._faces)
+            self.covered.set_edgecolor(COLORS["edge"])
+            self.covered.set_linewidth(edge)
+            self.covered.set_path_effects([])
 
 
 def _dot_diameter(ax, offsets) -> float:
@@ -114,11 +142,11 @@ def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
     if fraction:
         frac = ImageArtists(show_image(ax, (ids >= 0).mean(axis=2), cmap="Greys", vmin=0,
                                        vmax=2.5, zorder=0.4))  # fmt: skip
-    covered = ax.scatter([], [], zorder=4, edgecolors=COLORS["edge"],
-                         linewidths=max(0.5, lw(0.15)))  # fmt: skip
+    covered = ax.scatter([], [], zorder=4)  # its style: SampleArtists.set_rings
     uncovered = ax.plot([], [], "o", mfc="white", mec=COLORS["centre"],
                         mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
-    result = SampleArtists(frac, covered, uncovered)
+    widths = (max(0.5, lw(0.15)), max(0.8, lw(0.3)), max(2.0, lw(0.7)))
+    result = SampleArtists(frac, covered, uncovered, _widths=widths)
     result.update(source)
     return result
 

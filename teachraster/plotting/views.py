@@ -18,8 +18,10 @@ from __future__ import annotations
 import textwrap
 
 import numpy as np
-from matplotlib.colors import to_rgba
-from matplotlib.transforms import ScaledTranslation
+from matplotlib.collections import PolyCollection
+from matplotlib.colors import Normalize, to_rgba
+from matplotlib.patches import Rectangle
+from matplotlib.transforms import Affine2D, ScaledTranslation
 
 from ..core.trace import FillTrace, Step
 from .antialiasing import TRIANGLE_COLORS
@@ -165,6 +167,9 @@ class FillView:
         self._step_header = step_header
         self._caption = ""
         self.legend = Key(ax, 9) if legend else None
+        # the last step's colours as a short colour bar in the key (values asked for)
+        self.value_bar = ValueBar(self.legend) if legend and values else None
+        self.sample_dots = None  # drawn by the caller: show_samples
         self._trace: FillTrace | None = None
         self._step = -1
         self._keyed = None  # (testing, coloured) the key lists, see _key_entries
@@ -204,7 +209,7 @@ class FillView:
     def artists(self) -> list:
         """Every artist the view created (for tests and custom styling)."""
         parts = [self.grid, self.coverage, self.bbox, self.split, self.centres, self.triangle,
-                 self.raster_line, self.pixel, self.legend]  # fmt: skip
+                 self.raster_line, self.pixel, self.legend, self.value_bar]  # fmt: skip
         out = [a for p in parts if isinstance(p, Artists) for a in p.artists]
         return out + [self.rejected, self.values, self.header, self.caption_text]
 
@@ -250,6 +255,13 @@ class FillView:
         if coloured:  # the parts' tints would read as values (the flat-top yellow: a high u)
             self.split.flat_bottom.set_visible(False)
             self.split.flat_top.set_visible(False)
+            # and "u4 = 3.15" (screen x) beside the key's u (the attribute): two meanings of
+            # u in one picture (review r11, lesson 00 c14)
+            self.split.label.set_visible(False)
+        if self.sample_dots is not None:  # rings: the colours show through (review r11)
+            self.sample_dots.set_rings(coloured)
+        if self.value_bar is not None:
+            self.value_bar.set_visible(coloured)
         # the key and the split's tints are background: each state has its own cache
         self._still = (boxed, split, testing, coloured)
         self.raster_line.update(step)
@@ -323,6 +335,10 @@ class FillView:
                   t.outline, *t.arrows, t.vertices]  # fmt: skip
         if self.centres is not None:
             middle[1:1] = [self.centres.inside, self.centres.outside]
+        if self.sample_dots is not None:
+            # among the triangle's lines, where their zorder puts them in a full draw: a
+            # layer of their own above the labels hid v1 and E31 in every blitted frame
+            middle += list(self.sample_dots)
         return LayeredBlit(self.fig, [
             (MOVING, [self.rejected, self.coverage.image, self.values, r.band]),
             (STILL, middle),
@@ -350,6 +366,14 @@ class FillView:
         """
         return self.blit.draw(self._still)
 
+    def show_samples(self, dots) -> None:
+        """Step with the sample dots ``dots`` (:func:`~teachraster.plotting.plot_samples` on
+        this view's Axes), drawn as a full draw orders them; at the last step with values
+        the covered samples are rings, so that the pixels' colours show (review r11)."""
+        self.sample_dots = dots
+        self.blit = self._blit_plan()
+        dots.set_rings(self._still[3])  # coloured: see show_step
+
     def _show_values(self, fill, trace: FillTrace) -> None:
         """Put the values the last step writes into ``values``: the trace's record of the
         interpolation in use at the covered centres (read, never recomputed); with several
@@ -375,18 +399,17 @@ class FillView:
         self.values = set_image(self.values, data)
         self.values.set_clim(lo, hi if hi > lo else lo + 1.0)
         self._shown = (name, lo, hi)
+        if self.value_bar is not None:
+            self.value_bar.set_range(name, lo, hi, self.values.get_cmap())
 
     def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool) -> list:
         """What the step on show draws: the pixel under test only while there is one (review
         r8, lesson 04 c15), the sample dots of a multisampled fill, and at the last step with
         values their colours instead of "filled" and the split's tints, which it hides."""
         c, method = COLORS, trace.method
-        entries = [] if coloured else [("filled", c["fill"], c["fill"])]
-        if coloured:
-            name, lo, hi = self._shown
-            cmap = self.values.get_cmap()
-            entries += [(f"{name} = {hi:.2f}", cmap(1.0), cmap(1.0)),
-                        (f"{name} = {lo:.2f}", cmap(0.0), cmap(0.0))]  # fmt: skip
+        # coloured: the first lines are the value bar's (a colour bar, not two swatches that
+        # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
+        entries = [None] * ValueBar.LINES if coloured else [("filled", c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
         if method != "span":  # span tables draw no box (see show_step)
@@ -403,7 +426,11 @@ class FillView:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
             entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
         if self._sample_key and trace.samples is not None:  # review r9: dots without a key
-            entries += [("sample covered", TRIANGLE_COLORS[0], c["edge"], "o"),
+            # at the coloured step a ring (plot_samples' set_rings) with a colour inside: a
+            # white face would read as the white dot of a sample not covered
+            ring = self.values.get_cmap()(0.5)
+            covered = (ring, c["edge"]) if coloured else (TRIANGLE_COLORS[0], c["edge"])
+            entries += [("sample covered", *covered, "o"),
                         ("sample not covered", "white", c["centre"], "o")]  # fmt: skip
         return entries
 
@@ -417,22 +444,33 @@ class Key(Artists):
 
     def __init__(self, ax, n: int, *, x: float = 1.04, y: float = 1.0) -> None:
         self.swatches, self.texts = [], []
-        fig = ax.figure
+        self.ax, self.x, self.y = ax, x, y
         # 0.8 of the style's size: a player's figure, shown shrunk to the column at 1024 px,
         # showed 0.75 (13.5 pt) at 11.7 px (issue 29)
-        size = fs(0.8)
+        self.size = size = fs(0.8)
         for i in range(n):
             # each entry one line lower, measured in inches so it follows the font size
-            shift = ScaledTranslation(0, -i * size * 1.7 / 72, fig.dpi_scale_trans)
-            trans = ax.transAxes + shift
+            trans = ax.transAxes + ScaledTranslation(0, -i * self.spacing / 72,
+                                                     ax.figure.dpi_scale_trans)  # fmt: skip
             self.swatches.append(ax.plot([x], [y], "s", ms=size * 1.1, mew=2.0,
                                          transform=trans, clip_on=False)[0])  # fmt: skip
             self.texts.append(ax.text(x + 0.04, y, "", transform=trans, va="center",
                                       ha="left", fontsize=size, clip_on=False))  # fmt: skip
 
     @property
+    def spacing(self) -> float:
+        """From one entry's line to the next, in points."""
+        return self.size * 1.7
+
+    @property
     def artists(self) -> list:
         return self.swatches + self.texts
+
+    def points(self):
+        """A transform from points, with (0, 0) at the centre of the first swatch."""
+        fig = self.ax.figure
+        return (Affine2D().scale(1 / 72) + fig.dpi_scale_trans
+                + ScaledTranslation(self.x, self.y, self.ax.transAxes))  # fmt: skip
 
     def show_entry(self, label: str, on: bool) -> None:
         """Show or hide the entry whose text is ``label`` (none: nothing changes)."""
@@ -443,9 +481,10 @@ class Key(Artists):
 
     def set_entries(self, entries) -> None:
         """``entries``: (label, face colour, edge colour[, marker]) per line (marker default a
-        square swatch); the rest are hidden."""
+        square swatch), or None for a line left empty (for another artist: :class:`ValueBar`);
+        the rest are hidden."""
         for i, (swatch, text) in enumerate(zip(self.swatches, self.texts)):
-            on = i < len(entries)
+            on = i < len(entries) and entries[i] is not None
             swatch.set_visible(on)
             text.set_visible(on)
             if on:
@@ -454,6 +493,54 @@ class Key(Artists):
                 swatch.set_markerfacecolor(face)
                 swatch.set_markeredgecolor(edge)
                 text.set_text(label)
+
+
+class ValueBar(Artists):
+    """A short colour bar on the first :data:`LINES` lines of a :class:`Key`: what the
+    colours are, the colour map, and the values at its two ends under them.
+
+    Two swatches named the colour map's ends only, not the colours between (review r11,
+    lesson 00 c14); the title says where the range comes from.
+    """
+
+    #: The key lines it takes: its title, the bar, the numbers at its ends.
+    LINES = 3
+
+    #: Colour steps along the bar (each about 2 px wide at the classroom size).
+    STEPS = 64
+
+    def __init__(self, key: Key) -> None:
+        ax, size, line = key.ax, key.size, key.spacing
+        trans = key.points()
+        left = -0.55 * size  # the swatches' left edge
+        right = left + 9.0 * size  # about as long as "tested, rejected"
+        half = 0.45 * size
+        edges = np.linspace(left, right, self.STEPS + 1)
+        y = -line  # the bar on the second line
+        quads = [[(a, y - half), (b, y - half), (b, y + half), (a, y + half)]
+                 for a, b in zip(edges[:-1], edges[1:])]  # fmt: skip
+        self.bar = PolyCollection(quads, array=(np.arange(self.STEPS) + 0.5) / self.STEPS,
+                                  norm=Normalize(0.0, 1.0), edgecolors="face",
+                                  linewidths=0.3, transform=trans, clip_on=False)  # fmt: skip
+        ax.add_collection(self.bar, autolim=False)
+        self.frame = ax.add_patch(Rectangle((left, y - half), right - left, 2 * half,
+                                            fill=False, edgecolor=COLORS["edge"], lw=0.8,
+                                            transform=trans, clip_on=False))  # fmt: skip
+        text = {"fontsize": size, "va": "center", "transform": trans, "clip_on": False}
+        self.title = ax.text(left, 0.0, "", ha="left", **text)
+        self.low = ax.text(left, -2 * line, "", ha="left", **text)
+        self.high = ax.text(right, -2 * line, "", ha="right", **text)
+
+    def set_range(self, name: str, lo: float, hi: float, cmap) -> None:
+        """The colours run from ``lo`` to ``hi`` of ``name`` in ``cmap``."""
+        self.bar.set_cmap(cmap)
+        self.title.set_text(f"{name} at the covered centres")
+        self.low.set_text(f"{lo:.2f}")
+        self.high.set_text(f"{hi:.2f}")
+
+    @property
+    def artists(self) -> list:
+        return [self.bar, self.frame, self.title, self.low, self.high]
 
 
 class ComparisonView:

@@ -11,7 +11,6 @@ from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from ..core.validate import as_int, as_size
 from ..plotting import FillView, InterpolationView, plot_samples
-from ..plotting.blitting import STILL, LayeredBlit
 from ..plotting.frames import encode_png, frame_rgba, render_group, step_texts
 from ..plotting.pages import page_data, player_fragment
 from .common import (
@@ -200,10 +199,9 @@ class FillPlayer(Holdable):
                 self.sample_dots.update(self.fill)
         if self.sample_dots is not None:
             self.sample_dots.set_visible(self.fill.sample_coverage is not None)
-            # a still layer above the pixels the steps fill (the view's plan is new after
-            # every set_fill, so the layer is added again each time)
-            blit = self.view.blit
-            self.view.blit = LayeredBlit(blit.fig, [*blit.plan, (STILL, list(self.sample_dots))])
+            # still, above the pixels the steps fill (the view's plan is new after every
+            # set_fill, so the dots are handed to it again each time)
+            self.view.show_samples(self.sample_dots)
         self.view.blit.invalidate()
 
     def _make_figures(self, attribute, step: int, interpolation: str) -> None:
