@@ -318,6 +318,54 @@ def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
             DivideCostExplorer(_rows(), divide=bad, backend="image")
 
 
+#: Lesson 06's interpolation rows: the model's operation counts per pixel and the study's max
+#: and mean errors in texels (rounded): (variant, divides, multiplies, additions, max, mean).
+LESSON_06_INTERPOLATION = [
+    ("affine", 0.0, 0.0, 1.0, 209.5, 121.0),
+    ("perspective", 1.0, 1.0, 2.0, 0.0, 0.0),
+    ("subdivided N=2", 0.5, 1.0, 2.5, 5.76, 0.0056),
+    ("subdivided N=4", 0.25, 0.5, 1.75, 14.6, 0.026),
+    ("subdivided N=8", 0.125, 0.25, 1.375, 23.9, 0.093),
+    ("subdivided N=16", 0.0625, 0.125, 1.1875, 51.0, 0.30),
+    ("subdivided N=32", 0.03125, 0.0625, 1.09375, 72.8, 0.87),
+]  # fmt: skip
+
+
+def test_divide_cost_axis_is_the_same_at_every_price_and_labelled_at_1_2_5():
+    """Review r11 06-1: each error measure's layout was solved where it was first shown, the
+    cost axis fitted to each price: after divide 1 (the axis ending near 15) and the first
+    toggle to mean error, back at 30 the "10²" at the right edge was cut off. The cost axis
+    now has one range for every price (the points move along it), so one layout holds; and
+    its labels are at 1-2-5, as the error axis' (only 10⁰, 10¹, 10² were labelled)."""
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+
+    rows = [{"variant": v, "group": "interpolation", "divides": d, "multiplies": m,
+             "additions": a, "error": e, "mean_abs_texels": mean, "cycles": 0.0}
+            for v, d, m, a, e, mean in LESSON_06_INTERPOLATION]  # fmt: skip
+    ex = DivideCostExplorer(rows, backend="image")
+    try:
+        limits = set()
+        for divide, error in [(1.0, "max error"), (1.0, "mean error"), (30.0, "mean error"),
+                              (128.0, "mean error"), (128.0, "max error")]:  # fmt: skip
+            ex.divide.value, ex.error.value = divide, error
+            fig = ex.fig
+            fig.canvas.draw()
+            box = ex.ax.get_tightbbox(fig.canvas.get_renderer())  # ticks, labels and all
+            assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1, (divide, error)
+            assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1, (divide, error)
+            limits.add(ex.ax.get_xlim())
+            costs = [p.get_xdata()[0] for p in ex.art.points.values()]
+            lo, hi = ex.ax.get_xlim()
+            assert lo < min(costs) and max(costs) < hi
+        assert len(limits) == 1
+        lo, hi = limits.pop()
+        shown = [t.get_text() for t in ex.ax.get_xticklabels()
+                 if lo <= t.get_position()[0] <= hi]  # fmt: skip
+        assert {"1", "2", "5", "10", "20", "50", "100"} <= set(shown), shown
+    finally:
+        ex.close()
+
+
 def test_owner_colours_hold_no_red_or_orange():
     # vermillion means "covered twice" everywhere in the course: no owner may look like it
     import colorsys

@@ -32,6 +32,7 @@ class ParetoArtists:
     floor: float
     front: list
     short: object = None
+    xlim: tuple | None = None  # fixed cost limits (None: each update fits its costs)
 
 
 def shown_y(row, y: str, art) -> float:
@@ -46,7 +47,8 @@ def error_floor(rows, y: str = "error") -> float:
 
 
 def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel: str = "",
-                title: str = "", short=None, logx: bool = True) -> ParetoArtists:  # fmt: skip
+                title: str = "", short=None, logx: bool = True,
+                xlim: tuple | None = None) -> ParetoArtists:  # fmt: skip
     """Draw ``rows`` as error ``y`` against cost ``x`` with their Pareto front.
 
     Parameters
@@ -60,6 +62,10 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
         Maps a variant name to the label drawn beside its point.
     logx : bool
         Log scale for the cost.
+    xlim : (float, float), optional
+        The cost axis' limits at every update (e.g. :func:`cost_limits` of every cost a
+        widget can show, so that its layout and ticks never change); default: fitted to the
+        costs of each update.
 
     Returns
     -------
@@ -79,7 +85,7 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
             fontsize=12, color="gray")  # fmt: skip
     ax.set(xscale="log" if logx else "linear", yscale="log", xlabel=xlabel, ylabel=ylabel,
            title=title)  # fmt: skip
-    art = ParetoArtists(points, line, labels, floor, [], short)
+    art = ParetoArtists(points, line, labels, floor, [], short, xlim)
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
     floor_ticks(ax, floor)
     update_pareto(ax, art, rows, x, y=y)
@@ -164,17 +170,27 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
     xs = [r[x] for r in front]
     shown = [art.floor if r[y] < EXACT_BELOW else r[y] for r in front]
     art.front_line.set_data(xs, shown)
-    allx = np.array([r[x] for r in rows], dtype=float)
+    allx = [r[x] for r in rows]
     ally = np.array([art.floor if r[y] < EXACT_BELOW else r[y] for r in rows], dtype=float)
-    if ax.get_xscale() == "log":
-        ax.set_xlim(allx.min() / 1.6, allx.max() * 3.0)  # room on the right for the labels
-    else:
-        span = float(allx.max() - allx.min()) or 1.0
-        ax.set_xlim(allx.min() - 0.08 * span, allx.max() + 0.6 * span)
+    ax.set_xlim(*(art.xlim or cost_limits(allx, log=ax.get_xscale() == "log")))
     ax.set_ylim(ally.min() / 3.0, ally.max() * 3.0)
     spread_labels(ax, [art.labels[r["variant"]] for r in rows])
     art.front = front
     return front
+
+
+def cost_limits(costs, *, log: bool = True) -> tuple[float, float]:
+    """The cost axis' limits for ``costs``, with room on the right for the points' labels.
+
+    >>> cost_limits([2.0, 10.0])
+    (1.25, 30.0)
+    """
+    costs = np.asarray(costs, dtype=float)
+    lo, hi = float(costs.min()), float(costs.max())
+    if log:
+        return lo / 1.6, hi * 3.0
+    span = hi - lo or 1.0
+    return lo - 0.08 * span, hi + 0.6 * span
 
 
 #: Where a label may sit relative to its point, in points, tried in this order:

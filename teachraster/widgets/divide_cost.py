@@ -16,7 +16,7 @@ from types import SimpleNamespace
 import ipywidgets as widgets
 from matplotlib.ticker import FormatStrFormatter, LogLocator
 
-from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
+from ..plotting.pareto import cost_limits, floor_ticks, plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
 from ..study.operation_counts import CYCLES_1990S
 from .ahead import PicturesAhead, show_kept
@@ -109,6 +109,11 @@ class DivideCostExplorer(Shown):
             description="divide =", layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         self._style = style
+        #: the cost axis' limits at every price: its ticks, and so the layout, never change
+        #: (a layout solved at divide 1, whose axis ends near 15, cut "10²" off at 30: r11)
+        prices = divide_positions(divide)
+        self.xlim = cost_limits([r["cycles"] for p in (prices[0], prices[-1])
+                                 for r in priced(self.rows, p)])  # fmt: skip
         with style_context(style):
             self._new_figure()
             self._plot()
@@ -150,6 +155,7 @@ class DivideCostExplorer(Shown):
         if other is None:
             other = self._elsewhere = object.__new__(DivideCostExplorer)
             other.rows, other.backend, other._places = self.rows, "image", self._places
+            other.xlim = self.xlim
             other.divide, other.error = SimpleNamespace(value=None), SimpleNamespace(value=None)
             with style_context(self._style):
                 other._new_figure()
@@ -173,10 +179,13 @@ class DivideCostExplorer(Shown):
         self.art = plot_pareto(
             self.ax, priced(self.rows, self.divide.value), "cycles", y=self._ykey,
             xlabel="cycles per pixel (op-count model)", ylabel=f"{self.error.value} (texels)",
-            short=short_name,
+            short=short_name, xlim=self.xlim,
         )  # fmt: skip
         # labels at 1-2-5 as lesson 06's own charts: a decade apart, only 10 and 100 were
-        self.ax.yaxis.set_major_locator(LogLocator(subs=(1, 2, 5)))
+        # (and 10⁰, 10¹, 10² on the cost axis: r11)
+        for axis in (self.ax.xaxis, self.ax.yaxis):
+            axis.set_major_locator(LogLocator(subs=(1, 2, 5)))
+        self.ax.xaxis.set_major_formatter(FormatStrFormatter("%g"))
         floor_ticks(self.ax, self.art.floor, FormatStrFormatter("%g"))
         self._drawn = [a for a in self.ax.get_children() if a not in before]
         self.front = [r["variant"] for r in self.art.front]
