@@ -69,6 +69,35 @@ def test_plane_explorer_fits_one_screen_with_its_sliders(explorer):
         ex.close()
 
 
+@pytest.mark.parametrize("f", [(-1.0, 2.0, 0.5), (0.2, 0.9, -0.3), (-0.8, -0.9, -0.85),
+                               (-1.0, -1.0, -1.0), (-0.1, 0.0, -0.2)])  # fmt: skip
+def test_plane_explorer_colour_bar_label_fits_whatever_the_values(f):
+    """Review r11 (03 c33): the layout, solved once with positive tick labels, left no room
+    for "−1.0": with any f below 0 the colour bar's label "f at the pixel centres", the only
+    text saying what the colours are, ran off the figure's right edge. Room is left for the
+    widest label the sliders can make; labels and ticks stay whole."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        ex = PlaneExplorer(backend="image")
+    try:
+        for k, value in enumerate(f):
+            ex.f[k].value = value
+        fig, bar = ex.fig, ex.image.colorbar
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        label = bar.ax.yaxis.label
+        assert label.get_text() == "f at the pixel centres"
+        box = bar.ax.get_tightbbox(renderer)  # the bar, its tick labels and its label
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1, (f, box.x1, fig.bbox.x1)
+        assert label.get_window_extent(renderer).x1 <= fig.bbox.x1
+        assert ex.ax.get_window_extent().x1 < box.x0  # beside the grid, not over it
+        ticks = [t.get_text() for t in bar.ax.get_yticklabels() if t.get_text()]
+        assert ticks and all(len(t) <= 5 for t in ticks), ticks  # "−0.00" at most
+    finally:
+        ex.close()
+
+
 def test_plane_explorer_starts_every_slider_on_one_of_its_positions(explorer):
     """Review r7 03-3: with f in steps of 0.25, lesson 03's f = 0.2 and 0.9 sat between two
     positions (the thumb at 0.25, the readout 0.20) and could never be set again."""

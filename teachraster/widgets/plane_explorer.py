@@ -14,10 +14,13 @@ numbers, C being twice the signed area).
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.text import Text
+from matplotlib.ticker import FuncFormatter, MaxNLocator
 
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
@@ -43,11 +46,17 @@ ALT = "the attribute plane over the pixel grid"
 #: Number of contour levels drawn between the smallest and largest vertex value.
 LEVELS = 6
 
-#: The figure's size in inches (at the page's 96 dpi: 605 × 432 px).
-FIGSIZE = (6.3, 4.5)
+#: The figure's size in inches (at the page's 96 dpi: 605 × 413 px): the grid, as wide as
+#: the room left by its ticks and the colour bar allows, fills its height.
+FIGSIZE = (6.3, 4.3)
 
 #: What the colours are (the colour bar's label; the Axes have no title).
 COLOUR_LABEL = "f at the pixel centres"
+
+#: The widest tick label of the colour bar: f runs from −1 to 2 in tenths on the sliders and
+#: the ticks step by 1, 2 or 5 times a power of ten, so a label has a sign, one digit before
+#: the point and at most two after it. The layout, solved once, leaves room for it.
+WIDEST_TICK = "−0.00"
 
 
 def plane_system(xy, f) -> dict:
@@ -168,7 +177,7 @@ class PlaneExplorer:
         self._sliders(xy, f)
         self._compute_at()
         with style_context(style):
-            # one screen with its sliders (a projector at 1024 x 768): 605 x 432 px, the grid
+            # one screen with its sliders (a projector at 1024 x 768): 605 x 413 px, the grid
             # as large as the room left by its ticks and the colour bar; 7.5 x 6 in was 576 px
             # high, with a title row above the ticks, and the whole widget needed a scroll
             self.fig = new_figure(FIGSIZE, self.backend)
@@ -184,11 +193,17 @@ class PlaneExplorer:
             self.triangle = plot_triangle(self.ax, self.xy, arrows=False)
             # positions as the lesson's figures read them: v1 = (2, 1) on its ticks
             screen_ticks(self.ax, width, height)
-            if self.image.colorbar is not None:
-                self.image.colorbar.set_label(COLOUR_LABEL)
+            bar = self.image.colorbar
+            if bar is not None:
+                bar.set_label(COLOUR_LABEL)
+                # no 2.5 steps: "−0.125" would be wider than WIDEST_TICK
+                bar.locator = MaxNLocator(steps=[1, 2, 5, 10])
             # the constrained layout once, then frozen: the blit's background and the
-            # artists drawn over it must agree on where the Axes are
-            self.fig.canvas.draw()
+            # artists drawn over it must agree on where the Axes are; solved with room for
+            # the widest tick label, or a negative f ("−1.0" is wider than "0.9") pushed the
+            # colour bar's label off the figure (review r11, 03 c33)
+            with _widest_ticks(bar):
+                self.fig.canvas.draw()
             self.fig.set_layout_engine("none")
             self._blit = self._edit_blit()
             image = self.image
@@ -199,12 +214,12 @@ class PlaneExplorer:
             )
         self.info, info_widgets = info_line(self.display, side="right")
         self.info.value = self._info_html()
+        # two lines in a 600-px column (three before, and "listed on the right" was false
+        # where the numbers wrap below the figure: JupyterLab's file browser open, r11)
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
-            "Move a vertex or change its value. The contour lines (dashed, f in equal steps, "
-            "their values listed on the right) "
-            "stay straight and parallel; the 3 × 3 system, the set-up matrix M and the "
-            "coefficients A, B, C, D follow.",
+            "Move a vertex or change its value: the dashed contour lines (f in equal steps) "
+            "stay straight and parallel; the 3 × 3 system, M and A, B, C, D follow.",
         )
         rows = [control_row([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
         self.widget = widgets.VBox([title, *rows, picture_row([self.display.widget,
@@ -322,11 +337,13 @@ class PlaneExplorer:
             f"<tr><td>[{x:.2f}</td><td>{y:.2f}</td><td>1]</td><td>&nbsp;=&nbsp;{v:.2f}</td></tr>"
             for (x, y), v in zip(xy, f)
         )
-        parts = ["<b>3 × 3 system</b> (rows v1, v2, v3) · (g_x, g_y, g_0) = f:",
-                 f"<table style='font-family:monospace'>{rows}</table>"]  # fmt: skip
+        # the table ends its own line: a <br> after it left an empty line (one row less)
+        system = ("<b>3 × 3 system</b> (rows v1, v2, v3) · (g_x, g_y, g_0) = f:"
+                  f"<table style='font-family:monospace'>{rows}</table>")  # fmt: skip
+        parts = []
         if "g" not in s:
             parts.append("<b>zero area</b>: the three points are on one line, no plane")
-            return "<div style='margin-left:16px'>" + "<br>".join(parts) + "</div>"
+            return "<div style='margin-left:16px'>" + system + "<br>".join(parts) + "</div>"
         (m00, m01), (m10, m11) = s["M"]
         gx, gy, g0 = s["g"]
         A, B, C, D = s["ABCD"]
@@ -348,7 +365,7 @@ class PlaneExplorer:
             # + 0.0: a constant f gives −0.0, which would print as "-0.0000"
             f"dx = −A/C = {-A / C + 0.0:.4f}, dy = −B/C = {-B / C + 0.0:.4f}",
         ]
-        return "<div style='margin-left:16px'>" + "<br>".join(parts) + "</div>"
+        return "<div style='margin-left:16px'>" + system + "<br>".join(parts) + "</div>"
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
@@ -360,6 +377,21 @@ class PlaneExplorer:
         """Close every widget of the explorer."""
         self.display.close()
         close_tree(self.widget)
+
+
+@contextmanager
+def _widest_ticks(bar):
+    """Within: every tick label of the colour bar ``bar`` (None: no change) reads
+    :data:`WIDEST_TICK`."""
+    if bar is None:
+        yield
+        return
+    formatter = bar.formatter
+    bar.formatter = FuncFormatter(lambda value, pos: WIDEST_TICK)
+    try:
+        yield
+    finally:
+        bar.formatter = formatter
 
 
 def _barycentric_grid(xy, xs, ys, area2: float) -> np.ndarray:
