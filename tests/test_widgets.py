@@ -112,7 +112,8 @@ def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     assert frames.infos[-1].endswith("(interpolate: both ways in the comparison below)")
     player.view.show_step(-1, draw=False)
     assert player.view.values.get_visible()
-    assert any(t.get_text().startswith("u = ") for t in player.view.legend.texts)
+    bar = player.view.value_bar  # the key's colour bar of u (review r11: two swatches)
+    assert bar.title.get_visible() and bar.title.get_text() == "u at the covered centres"
     sent = []
     frames.send = lambda content, buffers=None: sent.append((content, buffers))
     frames._on_page_message(frames, {"type": "group", "group": 1, "gen": frames.gen}, [])
