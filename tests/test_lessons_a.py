@@ -784,7 +784,7 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
         fig, ax = plt.subplots(figsize=(9, 7.5))
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
-    assert "not if the shader writes depth; discard can delay only the write" in drawn
+    assert "not if the shader writes depth; with discard: test early, write late" in drawn
     plt.close(fig)
 
 
