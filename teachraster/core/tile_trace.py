@@ -258,7 +258,7 @@ class TileTrace:
             )
             why = (
                 f"every edge passes at its least inside corner ({low}): accepted, "
-                f"{rows * cols} pixels filled with no pixel test"
+                f"{rows * cols:,} pixel{'s' if rows * cols != 1 else ''} filled with no pixel test"
             )
         else:
             names = [n for n, c in zip(name, self.crossing[b]) if c]
