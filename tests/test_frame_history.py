@@ -432,6 +432,42 @@ def test_frame_inspector_under_ipympl_takes_mouse_clicks():
     w.close()
 
 
+def _shown_controls(widget, shown=None):
+    """Every widget a page draws of ``widget``'s tree: a box hidden by its layout
+    (``display: none``) hides what it holds."""
+    shown = [] if shown is None else shown
+    if getattr(getattr(widget, "layout", None), "display", None) == "none":
+        return shown
+    shown.append(widget)
+    for child in getattr(widget, "children", ()) or ():
+        _shown_controls(child, shown)
+    return shown
+
+
+def test_frame_inspector_hides_the_controls_its_frames_mode_ignores():
+    """Review r11 (exercise 11, 11-F): with ``frames=`` the samples, depth test and glass
+    controls do nothing; shown greyed out they read as broken. Hidden, not disabled."""
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    frames = {name: glass_frame(name, 16, 12) for name in ("cube", "fan")}
+    w = FrameInspector(frames=frames, backend="image")
+    try:
+        shown = _shown_controls(w.widget)
+        assert not [c for c in shown if getattr(c, "disabled", False)]
+        assert all(c not in shown for c in (w.samples, w.depth_test, w.glass))
+        assert w.scene in shown and w.view in shown and w.row in shown
+    finally:
+        w.close()
+    w = FrameInspector("cube", 16, 12, backend="image")  # the scenes: every control works
+    try:
+        shown = _shown_controls(w.widget)
+        assert all(c in shown and not c.disabled for c in (w.samples, w.depth_test, w.glass))
+    finally:
+        w.close()
+
+
 # -- lesson 11 ------------------------------------------------------------------------------
 @pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")

@@ -409,6 +409,66 @@ def test_owner_colours_hold_no_red_or_orange():
         assert s < 0.2 or 0.12 < h < 0.9, color  # grey, or a hue away from red and orange
 
 
+def cielab(rgb) -> np.ndarray:
+    """CIELAB (D65) of sRGB colours in [0, 1], shape (..., 3): ΔE is the distance."""
+    rgb = np.asarray(rgb, dtype=float)
+    linear = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+    to_xyz = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722],
+                       [0.0193, 0.1192, 0.9505]])  # fmt: skip
+    xyz = linear @ to_xyz.T / [0.95047, 1.0, 1.08883]
+    f = np.where(xyz > (6 / 29) ** 3, np.cbrt(xyz), xyz / (3 * (6 / 29) ** 2) + 4 / 29)
+    return np.stack([116 * f[..., 1] - 16, 500 * (f[..., 0] - f[..., 1]),
+                     200 * (f[..., 1] - f[..., 2])], axis=-1)  # fmt: skip
+
+
+def drawn_owner_colours(picker) -> dict:
+    """{(row, col): RGB} the picker's left panel draws at each owned pixel's centre, read
+    from the rendered picture with the outlines and the hub's frame hidden."""
+    ax = picker.axes[0]
+    for art in [*ax.lines, *ax.patches, *ax.collections]:
+        art.set_visible(art.__class__.__name__ == "QuadMesh")  # the coverage only
+    picker.fig.canvas.draw()
+    pixels = np.asarray(picker.fig.canvas.buffer_rgba())[..., :3] / 255
+    height = pixels.shape[0]
+    r0, r1, c0, c1 = picker.view
+    drawn = {}
+    for r in range(r0, r1):
+        for c in range(c0, c1):
+            if picker.owner[r, c] >= 0:
+                x, y = ax.transData.transform((c + 0.5, r + 0.5))
+                drawn[r, c] = pixels[int(height - y), int(x)]
+    return drawn
+
+
+def test_case_picker_colours_touching_owners_apart():
+    """Review r11 (07, r10 07-2): the fan's 16 owners in 16 colours put near twins side by
+    side (two olives, two greys, two purples). In the picture, every two owners whose pixels
+    touch are drawn in colours at least ΔE 35 apart; the fan takes at most 5 colours, the
+    two-owner square §1's two (sky blue, yellow)."""
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("fan_spokes_through_centres", backend="image")
+    try:
+        for case, most in (("fan_spokes_through_centres", 5), ("d3d_split_square", 2)):
+            picker.case.value = case
+            drawn, owner = drawn_owner_colours(picker), picker.owner
+            close = []
+            for (r, c), rgb in drawn.items():
+                for n in ((r, c + 1), (r + 1, c)):
+                    if n in drawn and owner[n] != owner[r, c]:
+                        delta = np.linalg.norm(cielab(rgb) - cielab(drawn[n]))
+                        if delta < 35:
+                            close.append((case, (r, c), n, round(float(delta))))
+            assert close == []
+            colours = {tuple(np.round(rgb, 2)) for rgb in drawn.values()}
+            assert len(colours) <= most, (case, len(colours))
+            # the key says what is drawn: shared colours, or one for each owner
+            shared = "16 triangles in 3 colours" if most == 5 else "one colour per triangle"
+            assert shared in picker.info.value, picker.info.value
+    finally:
+        picker.close()
+
+
 def test_case_picker_shows_every_screen_case_with_both_methods():
     from teachraster.study import hardcases
     from teachraster.widgets.case_picker import SEVERAL, CasePicker, owner_image, screen_cases

@@ -777,14 +777,15 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
     picture = pipeline_overview.EARLY_Z_LABEL + (pipeline_overview.__doc__ or "")
     for text in (tour, picture):
         assert "neither discards" not in " ".join(text.split())
-        assert "only the" in text and "write" in text
+    assert "only the" in tour and "write" in tour
+    assert "test early, write late" in picture  # r10/r11: "can delay only the write" misread
     assert "can keep the early test" in " ".join(tour.split())  # r8: allowed, not required
     assert "conservative depth" in tour and "gl_FragDepth" in tour
     with tr_style():
         fig, ax = plt.subplots(figsize=(9, 7.5))
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
-    assert "not if the shader writes depth; discard can delay only the write" in drawn
+    assert "not if the shader writes depth; with discard: test early, write late" in drawn
     plt.close(fig)
 
 

@@ -880,6 +880,22 @@ def test_10_prints_counts_with_thousands_separators():
     assert "1,024 px = 524,288 units" in printed and "160 px = 81,920 units" in printed
 
 
+@pytest.mark.notebook
+@pytest.mark.parametrize(
+    "name", ["08_antialiasing", "11_debugging_a_frame", "12_lines_and_blending"]
+)
+def test_counts_have_thousands_separators_as_in_lesson_10(name):
+    # r11: lesson 10 printed 1,184 while 08, 11 and 12 printed 1590, 1236 and 38152; a screen
+    # resolution (1920 x 1080) is written as screens are
+    import re
+
+    from notebook_runs import executed, streams
+
+    printed = streams(executed(name).notebook()).replace("1920 x 1080", "")
+    bare = re.findall(r"(?<![\d.,^*/])\d{4,}(?![\d.])", printed)
+    assert not bare, bare
+
+
 def test_10_tile_explorer_driven_by_the_test():
     import teachraster as tr
     from teachraster.widgets import TileExplorer

@@ -167,6 +167,48 @@ def test_block_slider_follows_the_traversal(explorer):
     assert "serpentine order" in explorer.caption_text
 
 
+def vermillion_box(explorer):
+    """(x0, x1, y0, y1) in picture pixels (rows from the top) of the vermillion drawn on the
+    grid in the picture the explorer sent to the page (not the key), or None."""
+    rgba = np.asarray(explorer.display.widget._last)[..., :3].astype(int)
+    target = (np.array(to_rgba(tp.COLORS["current"])[:3]) * 255).round().astype(int)
+    near = np.abs(rgba - target).sum(axis=-1) < 30
+    near[:, int(explorer.ax.bbox.x1) + 2 :] = False  # the key, right of the grid
+    rows, cols = np.nonzero(near)
+    return None if not len(rows) else (cols.min(), cols.max(), rows.min(), rows.max())
+
+
+def test_the_block_visited_now_is_outlined_in_the_picture(explorer):
+    """Review r9/r10/r11 (lesson 10, 10-4): nothing showed where the block walk was. The
+    block slider outlines the block visited now in the picture sent to the page (blitted:
+    the same pixels as a full draw), around the block's place; the level slider shows no
+    outline, and the key names the outline."""
+    blocks, order = explorer.blocks, explorer.blocks.visit_order("scanline")
+    height = np.asarray(explorer.display.widget._last).shape[0]
+    for k in (200, 40):  # a 4×4 block (outline), a 1×1 block (outline and ticks)
+        explorer.block.value = k
+        b = int(order[k - 1])
+        r, c, (h, w) = blocks.row[b], blocks.col[b], blocks.extent[b]
+        box = vermillion_box(explorer)
+        assert box is not None, k
+        # the block's corners on the picture: the outline lies on them (ticks reach beyond)
+        to_px = explorer.ax.transData.transform
+        (x0, y1), (x1, y0) = to_px((c, r)), to_px((c + w, r + h))
+        y0, y1 = height - y0, height - y1  # picture rows run down
+        assert box[0] <= x0 + 3 and box[1] >= x1 - 3 and box[2] <= y1 + 3 and box[3] >= y0 - 3
+        span = 4 * (x1 - x0) + 60 if h < 4 else (x1 - x0) + 12
+        assert box[1] - box[0] <= span and box[3] - box[2] <= span, (k, box)
+        blitted = np.asarray(explorer.display.widget._last).copy()
+        explorer.fig.canvas.draw()
+        full = np.asarray(explorer.fig.canvas.buffer_rgba())
+        assert (np.abs(blitted.astype(int) - full).max(axis=-1) > 8).sum() < 20
+    explorer.level.value = 1
+    assert vermillion_box(explorer) is None
+    from teachraster.widgets.tiles import STEPPED_CURRENT
+
+    assert STEPPED_CURRENT in [t.get_text() for t in explorer.artists.legend.get_texts()]
+
+
 def test_block_sizes_menu_refills(explorer):
     before = explorer.blocks.counters
     explorer.sizes.value = (8, 2)

@@ -112,31 +112,41 @@ def test_inspector_legible_at_16_samples_and_at_the_last_pixel():
         w.close()
 
 
-@pytest.mark.parametrize("pattern", ["4 standard (rotated grid)", "4 ordered grid", "2 standard"])
-def test_edge_value_labels_stay_inside_the_panel_beside_their_dot(pattern):
-    """Review r10 (lesson 08 c32): s1's label "+132.31" ran over the panel's right frame.
-    Every label (and its box) lies inside the frame, at the height of its own dot."""
+@pytest.mark.parametrize(
+    "pattern", ["4 standard (rotated grid)", "4 ordered grid", "2 standard", "1 (centre)"]
+)
+def test_edge_value_labels_stay_inside_the_panel_clear_of_the_pixel_and_each_other(pattern):
+    """Review r10 (lesson 08 c32): s1's label "+132.31" ran over the panel's right frame;
+    reviews r8-r11 (08-1): the labels ("+132.31", "+127.91") crossed the pixel's grey frame.
+    Every label (and its box) lies inside the panel, outside the pixel's frame, clear of
+    every other label, on its dot's side of the pixel, joined to its dot by a leader."""
     from teachraster.plotting import use_style
 
     with use_style("classroom"):  # as lesson 08: the largest labels
         tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])
         w = PixelInspector(tri, 20, 14, row=3, col=13, pattern=pattern, backend="image")
-    try:
-        for row, col in ((3, 13), (0, 0), (13, 19), (8, 10)):
-            w.row.value, w.col.value = row, col
-            w.fig.canvas.draw()
-            r = w.fig.canvas.get_renderer()
-            ax = w.pixel.square.axes
-            frame = ax.get_window_extent(r)
-            dots = [ax.transData.transform(d.get_xydata()[0]) for d in w.pixel.dots]
-            for s, lab in enumerate(w.pixel.labels):
-                box = lab.get_bbox_patch().get_window_extent(r)
-                assert frame.x0 < box.x0 and box.x1 < frame.x1, (row, col, s)
-                assert frame.y0 < box.y0 and box.y1 < frame.y1, (row, col, s)
-                assert box.y0 < dots[s][1] < box.y1  # beside its own dot
-                assert min(abs(box.x0 - dots[s][0]), abs(box.x1 - dots[s][0])) < 40
-    finally:
-        w.close()
+        try:
+            for row, col in ((3, 13), (0, 0), (13, 19), (8, 10)):
+                w.row.value, w.col.value = row, col
+                w.fig.canvas.draw()
+                r = w.fig.canvas.get_renderer()
+                ax = w.pixel.square.axes
+                frame = ax.get_window_extent(r)
+                pixel = w.pixel.square.get_window_extent(r)  # the grey frame, its line width in
+                boxes = [lab.get_bbox_patch().get_window_extent(r) for lab in w.pixel.labels]
+                assert len(boxes) == len(w.pixel.dots)
+                for s, (lab, box) in enumerate(zip(w.pixel.labels, boxes)):
+                    where = (pattern, row, col, s)
+                    assert frame.x0 < box.x0 and box.x1 < frame.x1, where
+                    assert frame.y0 < box.y0 and box.y1 < frame.y1, where
+                    assert not box.overlaps(pixel), where  # crosses no side of the pixel
+                    assert not any(box.overlaps(b) for b in boxes[s + 1 :]), where
+                    dot = w.pixel.dots[s].get_xydata()[0]
+                    assert np.allclose(lab.xy, dot) and lab.arrow_patch is not None
+                    left = dot[0] - col < 0.5  # beside the pixel on the dot's side
+                    assert box.x1 < pixel.x0 if left else box.x0 > pixel.x1, where
+        finally:
+            w.close()
 
 
 def test_sixteen_samples_numbers_clear_each_other_and_the_table_gives_edge_values():

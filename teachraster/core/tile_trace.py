@@ -96,14 +96,19 @@ class BlockCounters:
         ]
 
     def summary(self) -> str:
-        """One line, e.g. ``64×64: 2 rejected / 1 accepted / 3 partial; ...; 96 pixel tests``.
+        """One line: rejected / accepted / partial blocks per size, then the pixel tests.
 
-        The words are the lessons' (llvmpipe's counters call them empty / full / partial).
+        The words are the lessons' (llvmpipe's counters call them empty / full / partial);
+        counts carry thousands separators, as the lessons print them.
+
+        >>> BlockCounters((16, 4), (2, 10), (1, 0), (3, 1200), 9600, 0, 256).summary()
+        '16×16: 2 rejected / 1 accepted / 3 partial; 4×4: 10 rejected / 0 accepted / 1,200 partial; 9,600 pixel tests'
         """
         parts = [
-            f"{lab}: {e} rejected / {f} accepted / {p} partial" for lab, e, f, p in self.table()
+            f"{lab}: {e:,} rejected / {f:,} accepted / {p:,} partial"
+            for lab, e, f, p in self.table()
         ]
-        return "; ".join(parts) + f"; {self.pixel_tests} pixel tests"
+        return "; ".join(parts) + f"; {self.pixel_tests:,} pixel tests"  # 1,184 as the lessons
 
 
 @dataclass(frozen=True)
@@ -253,7 +258,7 @@ class TileTrace:
             )
             why = (
                 f"every edge passes at its least inside corner ({low}): accepted, "
-                f"{rows * cols} pixels filled with no pixel test"
+                f"{rows * cols:,} pixel{'s' if rows * cols != 1 else ''} filled with no pixel test"
             )
         else:
             names = [n for n, c in zip(name, self.crossing[b]) if c]

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patheffects import withStroke
+from matplotlib.transforms import offset_copy
 
 from ..core.fill import Fill
 from ..core.trace import edge_name
@@ -214,8 +215,8 @@ class PixelSampleArtists(Artists):
         self.edges, self.dots, self.labels = [], [], []
         ids, offsets = sample_data(source)
         # wider than tall: a sample near a side has its edge values beside it, in the margin
-        ax.set_xlim(col - 0.28, col + 1.28)
-        ax.set_ylim(row + 1.15, row - 0.15)
+        ax.set_xlim(col - MARGIN_X, col + 1 + MARGIN_X)
+        ax.set_ylim(row + 1 + MARGIN_Y, row - MARGIN_Y)
         ax.set_xticks([col, col + 0.5, col + 1])  # the pixel's sides and centre, uncrowded
         ax.set_yticks([row, row + 0.5, row + 1])
         self.square.set_data([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row])
@@ -241,22 +242,12 @@ class PixelSampleArtists(Artists):
             if not few:
                 continue
             label = _label(s, t, None if values is None else values[s], names)
-            # edge values (a narrow column, one value per line, centred on the dot) point out
-            # of the pixel, into the panel's margin, so that the labels of the standard and
-            # the ordered 4-sample patterns clear each other
-            # (clear of the dot, and under it: a label's box half-covered a sample's marker,
-            # review r9 lesson 08 c32)
-            side = -1 if ox < 0.5 else 1
-            self.labels.append(ax.annotate(
-                label, (col + ox, row + oy), xytext=(11 * side, 0), textcoords="offset points",
-                ha="left" if side > 0 else "right", va="center", fontsize=fs(0.75),
-                bbox=label_box(0.8), zorder=4.5,
-            ))  # fmt: skip
+            self.labels.append(_margin_label(ax, label, row, col, ox, oy))
         if not few:  # numbers only, each placed clear of the others, the dots and the centre
             self.labels += _place_numbers(ax, col + offsets[:, 0], row + offsets[:, 1],
                                           (col + 0.5, row + 0.5), ms(1.0))  # fmt: skip
         else:
-            _fit_labels(ax, self.labels)
+            _fit_labels(ax, self.labels, row, col)
         covered = int((ids[row, col] >= 0).sum())
         key = ""
         if values is not None:
@@ -265,41 +256,111 @@ class PixelSampleArtists(Artists):
                      fontsize=fs(0.85))  # fmt: skip
 
 
-def _fit_labels(ax, labels, *, gap_pt: float = 6.0) -> None:
-    """Widen the panel's limits (evenly: the pixel stays in the middle) until every label and
-    its box lie inside the frame: s1's "+132.31" of lesson 08 c32 ran over the right frame
-    (review r10). Measured on the figure's renderer, in a few rounds (a wider view shrinks
-    the pixel, which moves the dots, not the labels' offsets in points)."""
+#: Points between the pixel's side and a sample's label box in the margin beside it.
+LABEL_GAP = 6.0
+
+
+def _margin_label(ax, text: str, row: int, col: int, ox: float, oy: float):
+    """A sample's label in the panel's margin, beside the pixel on the sample's side, at the
+    sample's height, joined to its dot by a thin leader.
+
+    Edge values are a column of numbers: drawn next to the dot they ran over the pixel's
+    frame (s1's "+132.31" of lesson 08 c32; reviews r8-r11, 08-1), and earlier a label's
+    box half-covered a sample's marker (review r9). Outside the frame they cross neither;
+    the standard and ordered 4-sample patterns put at most two samples on a side, half a
+    pixel apart (:func:`_fit_labels` keeps their labels apart and inside the panel).
+    """
+    side, size = (-1 if ox < 0.5 else 1), fs(0.75)
+    return ax.annotate(
+        text, (col + ox, row + oy), xytext=(col + (side > 0), row + oy),
+        textcoords=_beside(ax, side, size),
+        ha="left" if side > 0 else "right", va="center", fontsize=size, bbox=label_box(0.8),
+        zorder=4.5, arrowprops=dict(arrowstyle="-", color=COLORS["centre"], lw=lw(0.3),
+                                    ls=(0, (2, 2)), shrinkA=0, shrinkB=ms(1.4) / 2),
+    )  # fmt: skip
+
+
+def _beside(ax, side: int, size: float, dy_pt: float = 0.0):
+    """Text coordinates of a margin label: data, moved ``side`` × (LABEL_GAP + the box's pad)
+    points across and ``dy_pt`` points up (in points: the panel's limits change, the pixel's
+    sides move with them)."""
+    return offset_copy(ax.transData, fig=ax.figure, units="points",
+                       x=side * (LABEL_GAP + 0.2 * size), y=dy_pt)  # fmt: skip
+
+
+#: The panel's least margins around the pixel (pixels): wider than tall, as :meth:`update`
+#: sets them before the labels widen them.
+MARGIN_X, MARGIN_Y = 0.28, 0.15
+
+
+def _fit_labels(ax, labels, row: int, col: int, *, gap_pt: float = 6.0) -> None:
+    """Keep the margin labels apart and inside the panel, the pixel in its middle.
+
+    Labels on one side of the pixel that would overlap move apart (:func:`_spread_labels`);
+    then the margins are solved for: the labels reach a fixed number of points beyond the
+    pixel's sides, so with ``n`` display pixels of them on each side and an Axes box ``W``
+    wide, the pixel gets ``W - 2n`` display pixels (likewise in height; the smaller wins,
+    the aspect is equal). s1's "+132.31" of lesson 08 c32 ran over the panel's right frame
+    (review r10); widening by the overflow alone took six rounds (a wider view shrinks the
+    pixel, and the labels move with its sides). Heights depend on the pixel's size (the
+    dots move), hence a few rounds.
+    """
     if not labels:
         return
     fig = ax.figure
     renderer = fig.canvas.get_renderer()
     to_px = fig.dpi / 72.0
+    room = ax.get_position(original=True).transformed(fig.transFigure)  # before the aspect
     for _ in range(4):
         ax.apply_aspect()
-        frame = ax.get_window_extent(renderer)
-        over_x = over_y = 0.0
+        _spread_labels(ax, labels, renderer, gap_pt=2.0)
+        (px0, py0), (px1, py1) = ax.transData.transform([(col, row + 1), (col + 1, row)])
+        need_x = need_y = 0.0  # display pixels beyond the pixel's sides, gap and pad in
         for label in labels:
             box = label.get_window_extent(renderer)
             pad = (0.2 * label.get_fontsize() + gap_pt) * to_px  # label_box's pad, a gap
-            over_x = max(over_x, frame.x0 - box.x0 + pad, box.x1 - frame.x1 + pad)
-            over_y = max(over_y, frame.y0 - box.y0 + pad, box.y1 - frame.y1 + pad)
-        if over_x <= 0.5 and over_y <= 0.5:
+            need_x = max(need_x, px0 - box.x0 + pad, box.x1 - px1 + pad)
+            need_y = max(need_y, py0 - box.y0 + pad, box.y1 - py1 + pad)
+        side = min(room.width - 2 * need_x, room.height - 2 * need_y)  # the pixel, on screen
+        # labels too large for the panel (a tiny figure): a pixel a quarter of it, cut labels
+        side = max(side, 0.25 * min(room.width, room.height))
+        mx, my = max(MARGIN_X, need_x / side), max(MARGIN_Y, need_y / side)
+        left, top = ax.get_xlim()[0], ax.get_ylim()[1]  # y runs down: the top is second
+        if abs(left - (col - mx)) * side < 0.5 and abs(top - (row - my)) * side < 0.5:
             return
-        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-        per_px = abs(x1 - x0) / frame.width  # data units per display pixel (equal aspect)
-        if over_x > 0.5:
-            ax.set_xlim(x0 - over_x * per_px, x1 + over_x * per_px)
-        if over_y > 0.5:  # y runs down: the first limit is the bottom
-            ax.set_ylim(y0 + over_y * per_px, y1 - over_y * per_px)
+        ax.set_xlim(col - mx, col + 1 + mx)
+        ax.set_ylim(row + 1 + my, row - my)
+
+
+def _spread_labels(ax, labels, renderer, *, gap_pt: float) -> None:
+    """Labels on one side of the pixel, each first at its dot's height, moved apart where
+    their boxes would overlap: each pair that would, by half the overlap up and half down
+    (the standard and ordered patterns have at most two samples on a side)."""
+    to_pt = 72.0 / ax.figure.dpi
+    for side in (-1, 1):
+        mine = [lab for lab in labels if (lab.get_ha() == "left") == (side > 0)]
+        moved = {id(lab): 0.0 for lab in mine}  # points up from the dot's height
+        for lab in mine:
+            lab.anncoords = _beside(ax, side, lab.get_fontsize())
+        # top first (display y runs up)
+        mine.sort(key=lambda lab: -ax.transData.transform(lab.xy)[1])
+        for upper, lower in zip(mine, mine[1:]):
+            pad = 0.2 * upper.get_fontsize() + 0.2 * lower.get_fontsize()
+            a = upper.get_window_extent(renderer)
+            b = lower.get_window_extent(renderer)
+            overlap = (b.y1 - a.y0) * to_pt + pad + gap_pt
+            if overlap > 0:
+                for lab, sign in ((upper, 1), (lower, -1)):
+                    moved[id(lab)] += sign * overlap / 2
+                    lab.anncoords = _beside(ax, side, lab.get_fontsize(), moved[id(lab)])
 
 
 def _label(s, t, e, names) -> str:
     """A sample's label: its number and the triangle that covers it (a scene), or its number
     and its edge values one per line, in the order ``names`` gives in the title (one triangle:
     the dot's fill already says whether it is covered)."""
-    if e is None:
-        return f"s{s}: " + ("—" if t < 0 else f"triangle {t}")
+    if e is None:  # two lines: a narrow label in the margin leaves the pixel its room
+        return f"s{s}\n" + ("—" if t < 0 else f"triangle {t}")
     return f"s{s}\n" + "\n".join(edge_value_text(v) for v in e)
 
 

@@ -76,10 +76,10 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
 EARLY_Z = ("rasterisation", "depth test")
 
 #: The bypass's label: the early test is lost only to a depth-writing shader; a discard can
-#: delay only the depth write (lesson 05a; some GPUs test late instead).
+#: delay the depth write (test early, write late) (lesson 05a; some GPUs test late instead).
 EARLY_Z_LABEL = (
     "early-z: depth tested before shading,\nnot if the shader writes depth;\n"
-    "discard can delay only the write"
+    "with discard: test early, write late"
 )
 
 

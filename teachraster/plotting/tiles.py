@@ -23,6 +23,7 @@ from matplotlib.collections import PolyCollection
 from matplotlib.colors import BoundaryNorm, ListedColormap, to_rgba
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.patheffects import withStroke
 from matplotlib.table import Table
 from matplotlib.text import Text
 
@@ -47,6 +48,8 @@ BLOCK_ALPHA = 1.0
 BLOCK_EDGE = "white"
 #: What a view shows where no block is (yet): the white page and its pixel grid.
 UNCLASSIFIED = "not classified (yet)"
+#: The key's name for the outline of the block a walk visits now (``current=True``).
+CURRENT_BLOCK = "the block visited now"
 
 
 def tile_trace(fill, what: str = "this plot") -> tuple[FillTrace, TileTrace]:
@@ -87,6 +90,18 @@ class BlockArtists(Artists):
     order: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     kinds: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     sizes: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    #: the outline of the block visited now (``plot_blocks(..., current=True)``), else None
+    current: Line2D | None = None
+
+    def show_current(self, blocks: TileTrace, b: int | None) -> None:
+        """Outline block ``b`` of ``blocks`` (:func:`current_block_xy`), or nothing when
+        ``b`` is None, in place."""
+        if self.current is None:
+            return
+        self.current.set_visible(b is not None)
+        if b is not None:
+            rows, cols = blocks.extent[b]
+            self.current.set_data(*current_block_xy(blocks.row[b], blocks.col[b], rows, cols))
 
     def show(self, mask: np.ndarray) -> None:
         """Show only the blocks where ``mask`` (indexed like the trace) is True, in place."""
@@ -133,6 +148,7 @@ def plot_blocks(
     traversal: str = "scanline",
     legend: bool = True,
     unclassified: bool | None = None,
+    current: bool = False,
 ) -> BlockArtists:
     """Draw the classified blocks of a tiled fill, coloured by kind.
 
@@ -155,11 +171,16 @@ def plot_blocks(
         Whether the key lists the white page "not classified (yet)". None (default): only
         when the blocks drawn leave part of the bounding box's blocks unclassified (a key
         entry no panel shows misleads). A view that later shows fewer blocks passes True.
+    current : bool
+        An outline for the block a walk visits now, hidden until
+        ``show_current(blocks, b)`` places it (:func:`current_block_outline`), and its key
+        entry (:data:`CURRENT_BLOCK`).
 
     Returns
     -------
     BlockArtists
-        ``blocks`` (PolyCollection); ``show(mask)`` changes which blocks are visible.
+        ``blocks`` (PolyCollection); ``show(mask)`` changes which blocks are visible;
+        ``current`` the outline (or None).
     """
     _, blocks = tile_trace(fill, "plot_blocks")
     check_choice("traversal", traversal, TRAVERSALS)
@@ -171,14 +192,54 @@ def plot_blocks(
     )
     shown = block_mask(blocks, level=level, upto=upto, traversal=traversal)
     result.show(shown)
+    if current:
+        result.current = current_block_outline(ax)
     if legend:
         if unclassified is None:
             unclassified = has_unclassified(blocks, shown)
         handles = block_legend_handles(unclassified=unclassified)
+        if current:
+            handles.append(Patch(facecolor="none", edgecolor=COLORS["current"],
+                                 linewidth=lw(0.8), label=CURRENT_BLOCK))  # fmt: skip
         result.legend = ax.legend(handles=handles, loc="upper left",
                                   bbox_to_anchor=(1.02, 1), fontsize=fs(0.7),
                                   frameon=False)  # fmt: skip
     return result
+
+
+#: Blocks narrower than this many pixels get four ticks pointing at their outline: a 1×1
+#: block of a 64-pixel grid is a few screen pixels wide.
+SMALL_BLOCK = 4
+
+
+def current_block_xy(row: int, col: int, rows: int, cols: int, reach: float = 3.0):
+    """(x, y) of the current block's marker: the outline of its ``rows`` × ``cols`` pixels
+    from (``row``, ``col``), and for a block under :data:`SMALL_BLOCK` pixels four ticks
+    ``reach`` pixels long pointing at it from outside (NaN separates the pieces).
+
+    >>> current_block_xy(4, 32, 4, 4)
+    ([32, 36, 36, 32, 32], [4, 4, 8, 8, 4])
+    """
+    r, c, h, w = int(row), int(col), int(rows), int(cols)
+    x, y = [c, c + w, c + w, c, c], [r, r, r + h, r + h, r]
+    if max(h, w) < SMALL_BLOCK:
+        gap, mx, my = np.nan, c + w / 2, r + h / 2
+        x += [gap, c - 0.5 - reach, c - 0.5, gap, c + w + 0.5, c + w + 0.5 + reach,
+              gap, mx, mx, gap, mx, mx]  # fmt: skip
+        y += [gap, my, my, gap, my, my, gap, r - 0.5 - reach, r - 0.5,
+              gap, r + h + 0.5, r + h + 0.5 + reach]  # fmt: skip
+    return x, y
+
+
+def current_block_outline(ax) -> Line2D:
+    """A hidden outline for the block a walk visits now: the course's colour of the current
+    step (vermillion), over the triangle, with a white halo that keeps it apart from an
+    orange partial block and the black edges (review r11, lesson 10: a student could not
+    see where the walk was among 800 blocks)."""
+    (outline,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8), zorder=5,
+                         solid_capstyle="butt", visible=False,
+                         path_effects=[withStroke(linewidth=lw(0.8) + 3, foreground="white")])  # fmt: skip
+    return outline
 
 
 def block_legend_handles(*, unclassified: bool = True) -> list[Patch]:

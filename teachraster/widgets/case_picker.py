@@ -38,7 +38,7 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 #: What the picker holds about the picture on show (set by ``_run`` and ``_draw``): a picture
 #: drawn ahead brings them with it.
 PICTURE_STATE = ("_case", "owner", "passed", "failure", "naive_counts", "difference", "offsets",
-                 "copies", "naive_copies", "_box", "hubs", "view")  # fmt: skip
+                 "copies", "naive_copies", "_box", "hubs", "view", "colors")  # fmt: skip
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
 NONE, SEVERAL = -1, -2
@@ -48,6 +48,13 @@ NONE, SEVERAL = -1, -2
 OWNER_COLORS = ("#1f77b4", "#98df8a", "#9467bd", "#dbdb8d", "#17becf", "#c7c7c7", "#393b79",
                 "#8ca252", "#aec7e8", "#2ca02c", "#c5b0d5", "#7f7f7f", "#9edae5", "#637939",
                 "#6b6ecf", "#bcbd22")  # fmt: skip
+#: The picker's owner colours, strongest contrast first: §1's fan colours (sky blue, yellow),
+#: then Okabe-Ito's bluish green, a purple and a grey, no two closer than ΔE 37 (CIELAB; no
+#: red or orange either, and not Okabe-Ito's blue: ΔE 26 from the sky blue).
+#: :func:`owner_colors` gives every owner its own while they fit, and otherwise colours the
+#: owners so that neighbours never share one: 16 colours for the fan's 16 owners put near
+#: twins side by side (review r11, 07: "two olives, two greys and two purples").
+NEIGHBOUR_COLORS = (COLORS["fill"], "#F0E442", "#009E73", "#9467bd", "#999999")
 #: Separate copies of one triangle: pixels every copy covers, and pixels only some cover.
 EVERY_COPY, SOME_COPIES = COLORS["fill"], COLORS["inside"]
 
@@ -78,6 +85,55 @@ def owner_image(fills) -> np.ndarray:
 def owner_color(k: int) -> str:
     """The colour of triangle ``k`` in :func:`plot_owners` (:data:`OWNER_COLORS`, cycled)."""
     return OWNER_COLORS[k % len(OWNER_COLORS)]
+
+
+def owner_neighbours(owner: np.ndarray, triangles=None) -> set:
+    """Pairs (a, b), a < b, of owners whose pixels touch along a side, or whose triangles
+    share an edge (two vertices): the owners a picture must tell apart.
+
+    >>> owner_neighbours(np.array([[0, 0, 1], [2, -1, 1]]))
+    {(0, 1), (0, 2)}
+    """
+    pairs = set()
+    for a, b in ((owner[:, :-1], owner[:, 1:]), (owner[:-1, :], owner[1:, :])):
+        touch = (a >= 0) & (b >= 0) & (a != b)
+        pairs |= {(min(p, q), max(p, q)) for p, q in zip(a[touch].tolist(), b[touch].tolist())}
+    tris = [] if triangles is None else [{tuple(v) for v in t.tolist()}
+                                         for t in np.asarray(triangles, dtype=float)]  # fmt: skip
+    for a in range(len(tris)):
+        pairs |= {(a, b) for b in range(a + 1, len(tris)) if len(tris[a] & tris[b]) >= 2}
+    return pairs
+
+
+def owner_colors(owner: np.ndarray, triangles=None) -> dict:
+    """``{owner: colour}`` from :data:`NEIGHBOUR_COLORS`: one colour for each owner while
+    they fit; otherwise a colouring in which no two neighbours (:func:`owner_neighbours`)
+    share a colour (the most constrained owner first, ties by number: DSatur), falling back
+    on :func:`owner_color` only if the palette runs out.
+
+    >>> row = owner_colors(np.array([[0, 1, 2, 3, 4, 5, 6]]))  # 7 owners in a row: 2 colours
+    >>> len(set(row.values())), row[0] == row[2] != row[1]
+    (2, True)
+    """
+    owners = sorted({int(k) for k in np.unique(owner) if k >= 0})
+    if len(owners) <= len(NEIGHBOUR_COLORS):
+        return {k: NEIGHBOUR_COLORS[i] for i, k in enumerate(owners)}
+    near: dict = {k: set() for k in owners}
+    for a, b in owner_neighbours(owner, triangles):
+        if a in near and b in near:
+            near[a].add(b)
+            near[b].add(a)
+    colour: dict = {}
+    while len(colour) < len(owners):
+        # DSatur: the owner whose neighbours already use the most colours, then the most
+        # neighbours, then the lowest number
+        k = min((k for k in owners if k not in colour),
+                key=lambda k: (-len({colour[n] for n in near[k] if n in colour}),
+                               -len(near[k]), k))  # fmt: skip
+        used = {colour[n] for n in near[k] if n in colour}
+        free = [c for c in NEIGHBOUR_COLORS if c not in used]
+        colour[k] = free[0] if free else owner_color(k)
+    return colour
 
 
 #: Grids wider than this many pixels get thin outlines: at the classroom line width an outline
@@ -186,10 +242,10 @@ def mark_pixel(ax, rc, color) -> None:
     ax.add_patch(Rectangle((j, i), 1, 1, fc=color, ec="black", lw=2.5, zorder=6))
 
 
-def plot_owners(
-    ax, owner: np.ndarray, triangles=None, *, outlines: bool = True, thin: bool = False
-) -> list:
-    """Pixels coloured by owning triangle (:data:`OWNER_COLORS`), vermillion where covered twice.
+def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True,
+                thin: bool = False, colors: dict | None = None) -> list:  # fmt: skip
+    """Pixels coloured by owning triangle, vermillion where covered twice: triangle k in
+    ``colors[k]`` (:func:`owner_colors`), by default in :func:`owner_color` (one each).
 
     Returns the artists drawn (coverage images, then triangle outlines, thin if ``thin``).
     """
@@ -197,7 +253,8 @@ def plot_owners(
     artists = [plot_pixel_grid(ax, w, h, ticks=False)]
     for k in range(int(owner.max()) + 1):
         if (owner == k).any():
-            artists.append(plot_coverage(ax, owner == k, color=owner_color(k)))
+            color = owner_color(k) if colors is None else colors[k]
+            artists.append(plot_coverage(ax, owner == k, color=color))
     if (owner == SEVERAL).any():
         artists.append(plot_coverage(ax, owner == SEVERAL, color=COLORS["outside"]))
     if outlines and triangles is not None:
@@ -386,6 +443,7 @@ class CasePicker:
         self._case = c
         result = c.run(self.method.value)
         self.owner = owner_image(result.fills)
+        self.colors = owner_colors(self.owner, c.triangles)
         try:
             c.check(result)
             self.passed, self.failure = True, ""
@@ -440,7 +498,7 @@ class CasePicker:
             # a corner cut from a large case (the diagonal sliver) keeps the thin outlines of
             # its whole grid: at the classroom width the outline covers the pixels it owns
             thin = thin_lines((r1 - r0, c1 - c0)) or cut_rows
-            plot_owners(self.axes[0], self.owner, tris, thin=thin)
+            plot_owners(self.axes[0], self.owner, tris, thin=thin, colors=self.colors)
             self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
             ax = self.axes[1]
             if self.naive_counts is None:
@@ -476,9 +534,8 @@ class CasePicker:
         if abs(self.fig.get_figheight() - height) > 0.01:
             self.fig.set_size_inches(self.fig.get_figwidth(), height)
 
-    @staticmethod
-    def _owner_fill(k) -> str:
-        return "white" if k == NONE else COLORS["outside"] if k == SEVERAL else owner_color(int(k))
+    def _owner_fill(self, k) -> str:
+        return "white" if k == NONE else COLORS["outside"] if k == SEVERAL else self.colors[int(k)]
 
     def _draw_copies(self) -> None:
         n, first = len(self.offsets), self._case.triangles[0]
@@ -575,14 +632,19 @@ class CasePicker:
         if not owners:
             left = "left, no pixel owned"
         elif len(owners) == 1:
-            left = f"left, {swatch(owner_color(owners[0]), f'triangle {owners[0]}')}"
-        else:
+            left = f"left, {swatch(self.colors[owners[0]], f'triangle {owners[0]}')}"
+        elif len(set(self.colors.values())) == len(owners):
             more = "…" if len(owners) > 3 else ""
             left = (
                 "left, one colour per triangle ("
-                + "".join(swatch(owner_color(k), "") for k in owners[:3])
+                + "".join(swatch(self.colors[k], "") for k in owners[:3])
                 + f"{more})"
             )
+        else:  # more owners than colours: neighbours differ (review r11, 07)
+            used = [c for c in NEIGHBOUR_COLORS if c in self.colors.values()]
+            left = (f"left, {len(owners)} triangles in {len(used)} colours ("
+                    + "".join(swatch(c, "") for c in used)
+                    + "), triangles that touch never alike: the outlines tell the others apart")  # fmt: skip
         n = self.naive_counts
         parts = [left]
         if n is not None and (n == 1).any():

@@ -173,7 +173,8 @@ class FrameInspector(Holdable):
         buffer before and after every fragment.
     frames : dict of str to Frame, optional
         Traced frames to inspect instead of the built-in scenes (lesson 11's broken frames):
-        the chooser offers their names; samples, depth test and glass then do nothing.
+        the chooser offers their names; samples, depth test and glass then do nothing and
+        are not shown.
     backend, style
         As for the other widgets.
 
@@ -264,9 +265,13 @@ class FrameInspector(Holdable):
             "Choose a view; click a pixel (or move row and col) to see every triangle on the "
             "way to it, in submission order, and the test that stopped each.",
         )
-        # what is shown (scene, view) and how it is rendered: two rows, each wrapping
-        controls = widgets.VBox([control_row([self.scene, self.view]),
-                                 control_row([self.samples, self.depth_test, self.glass])])  # fmt: skip
+        # what is shown (scene, view) and how it is rendered: two rows, each wrapping. Given
+        # frames, the second row does nothing: left out, not greyed out (review r11, 11-F:
+        # disabled controls read as broken ones)
+        rows = [control_row([self.scene, self.view])]
+        if not self.frames:
+            rows.append(control_row([self.samples, self.depth_test, self.glass]))
+        controls = widgets.VBox(rows)
         figures = picture_row([self.frame_widget, self.hist_display.widget])
         self.widget = widgets.VBox(
             [title, controls, control_row([self.row, self.col]), figures, self.table]
@@ -406,3 +411,5 @@ class FrameInspector(Holdable):
             if display is not None:
                 display.close()
         close_tree(self.widget)
+        for control in (self.samples, self.depth_test, self.glass):  # not in it with frames
+            control.close()

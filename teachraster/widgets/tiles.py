@@ -9,7 +9,7 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.tiles import UNCLASSIFIED, block_mask
+from ..plotting.tiles import CURRENT_BLOCK, UNCLASSIFIED, block_mask
 from .common import (
     Holdable,
     Shown,
@@ -35,6 +35,8 @@ SIZE_OPTIONS = [
 #: The explorer's key entry for the white page: only the block slider leaves blocks
 #: unclassified (every level of the level slider is classified whole).
 STEPPED_UNCLASSIFIED = "not classified yet (block slider)"
+#: ... and only the block slider has one block visited now (outlined).
+STEPPED_CURRENT = "the block visited now (block slider)"
 
 
 class TileExplorer(Holdable):
@@ -44,7 +46,8 @@ class TileExplorer(Holdable):
     grey, accepted green, partial orange; partial blocks are split at the next level). The
     **block** slider walks the blocks in the chosen **traversal** order (depth first, the
     children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
-    with the caption of the ``k``-th; the page stays white where no block has been classified
+    the ``k``-th outlined (``current``: its index in the trace, None on the level slider)
+    and captioned; the page stays white where no block has been classified
     yet, and a child covers its partial parent (opaque colours: each one in the key).
     The **block sizes** and **traversal** menus fill the triangle again. The counters
     (rejected / accepted / partial per size, llvmpipe's empty / full / partial, and the pixel tests run) are shown below.
@@ -142,22 +145,22 @@ class TileExplorer(Holdable):
             for artist in self.artists:
                 artist.remove()
         # the block slider shows blocks not classified yet, and the key is drawn once (below)
-        self.artists = plot_blocks(
-            self.ax, self.fill, traversal=self.traversal.value, unclassified=True
-        )
+        self.artists = plot_blocks(self.ax, self.fill, traversal=self.traversal.value,
+                                   unclassified=True, current=True)  # fmt: skip
         # the key stays while the level slider shows every block classified: it says where
         # the white page appears (review r8, lesson 10 c23)
+        renamed = {UNCLASSIFIED: STEPPED_UNCLASSIFIED, CURRENT_BLOCK: STEPPED_CURRENT}
         for text in self.artists.legend.get_texts():
-            if text.get_text() == UNCLASSIFIED:
-                text.set_text(STEPPED_UNCLASSIFIED)
+            text.set_text(renamed.get(text.get_text(), text.get_text()))
         # a level or a block step changes which blocks show, nothing else: the pixel grid,
         # the ticks and the key stay in a cached background, what lies over the blocks (the
         # triangle, the frame) in a still layer (a full draw cost 4-5x more; issue 31: the
-        # level slider dragged at 1.3 fps)
-        coll = self.artists.blocks
-        above = [a for a in self.ax.get_children()
-                 if a is not coll and a.get_zorder() >= coll.get_zorder()]  # fmt: skip
-        self._blit = LayeredBlit(self.ax.figure, [(MOVING, [coll]), (STILL, above)])
+        # level slider dragged at 1.3 fps); the current block's outline moves too, over all
+        coll, current = self.artists.blocks, self.artists.current
+        above = [a for a in self.ax.get_children() if a is not coll and a is not current
+                 and a.get_zorder() >= coll.get_zorder()]  # fmt: skip
+        self._blit = LayeredBlit(self.ax.figure,
+                                 [(MOVING, [coll]), (STILL, above), (MOVING, [current])])  # fmt: skip
 
     def _draw_figure(self) -> None:
         self._blit.draw()
@@ -192,6 +195,7 @@ class TileExplorer(Holdable):
     def _compute_at(self, level) -> None:
         level = int(round(level))
         self.shown = block_mask(self.blocks, level=level)
+        self.current = None  # a whole level: no one block visited now
         c, size = self.blocks.counters, self.sizes.value[level]
         text = (
             f"level {level}: {size}×{size} blocks — {c.empty[level]} rejected, "
@@ -205,6 +209,7 @@ class TileExplorer(Holdable):
 
     def _set_artists(self) -> None:
         self.artists.show(self.shown)
+        self.artists.show_current(self.blocks, self.current)
 
     def _info_html(self) -> str:
         return html_escape(self.caption_text)
@@ -213,6 +218,8 @@ class TileExplorer(Holdable):
         """Show the first ``k`` blocks of the traversal (0: none yet), captioning the last."""
         k = self.block.value if k is None else int(k)
         self.shown = block_mask(self.blocks, upto=k - 1, traversal=self.traversal.value)
+        # the block visited now, outlined (review r11, lesson 10: where is the walk?)
+        self.current = int(self.order[k - 1]) if k > 0 and len(self.order) else None
         n = len(self.blocks)
         if not n:
             self.caption_text = "no block to classify (no pixel centre in the box, or zero area)"

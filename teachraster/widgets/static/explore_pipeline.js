@@ -167,7 +167,7 @@ function diagram(onPick) {
   arrow(`M${r.x + r.w / 2},${r.y + r.h} C${r.x + r.w / 2},${r.y + r.h + 46} ${d.x + d.w / 2},` +
     `${d.y + d.h + 46} ${d.x + d.w / 2},${d.y + d.h + 2}`, "7 5");
   ["early-z: tested before shading, not if the shader",
-    "writes depth (discard can delay only the write)"].forEach((line, i) => root.append(svg("text",
+    "writes depth (with discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
     { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 44 + 16 * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
