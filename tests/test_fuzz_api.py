@@ -11,6 +11,7 @@ import re
 import warnings
 
 import numpy as np
+import pytest
 from conftest import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -318,3 +319,17 @@ def test_fuzz_small_public_functions(data, case):
     kwargs = dict(SMALL[func])
     kwargs[name] = data.draw(anything(np.shape(kwargs[name]), bound=1e308), label=name)
     outcome(lambda: getattr(tr, func)(**kwargs), name)
+
+
+def test_subnormal_inputs_found_by_the_fuzzer_give_a_limit_or_a_named_error():
+    # Hypothesis drew 5e-324 (session 7): 1 / tan(0) raised ZeroDivisionError, and near / z
+    # overflowed with a raw numpy warning inside the depth mappings
+    from teachraster.pipeline.visibility.depth import reversed_depth
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert tr.fights([5e-324], [2.0], 1.0, 10.0, "unorm16").tolist() == [False]
+        assert tr.window_depth([5e-324], 1.0, 10.0)[0] == -np.inf
+        assert reversed_depth([5e-324], 1.0, 10.0)[0] == np.inf
+    with pytest.raises(ValueError, match="fov_y"):
+        tr.perspective(5e-324, 1.0, 0.1, 10.0)

@@ -73,7 +73,10 @@ def perspective(fov_y: float, aspect: float, near: float, far: float) -> np.ndar
         raise ValueError(f"aspect must be > 0 (width / height), got {aspect}")
     if near == far:
         raise ValueError(f"near and far must differ, got {near} for both")
-    f = 1.0 / math.tan(math.radians(fov_y) / 2)
+    half = math.tan(math.radians(fov_y) / 2)
+    if half == 0:  # a subnormal angle: tan underflows to 0 and the focal length is infinite
+        raise ValueError(f"fov_y is too small to make a projection, got {fov_y}")
+    f = 1.0 / half
     m = np.zeros((4, 4))
     m[0, 0] = f / aspect
     m[1, 1] = f

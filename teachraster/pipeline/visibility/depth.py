@@ -120,7 +120,10 @@ def window_depth(z_view, near: float, far: float) -> np.ndarray:
     # Written as (1 - n/z) / (1 - n/f): mathematically f (z - n) / (z (f - n)), but in floating
     # point every step is monotonic in z, so depth order is never reversed by rounding, and
     # z = near gives exactly 0 and z = far exactly 1 (same expression above and below the bar).
-    return (1.0 - near / z) / (1.0 - near / far)
+    # A distance far inside the near plane (a subnormal z) sends near / z to inf: the limit, -inf
+    # window depth, is the right answer (clipped away, or clamped by a unorm buffer), not an error.
+    with np.errstate(over="ignore"):
+        return (1.0 - near / z) / (1.0 - near / far)
 
 
 def seed_depth(z, near: float, far: float) -> np.ndarray:
@@ -173,7 +176,8 @@ def reversed_depth(z_view, near: float, far: float) -> np.ndarray:
     """
     near, far = _planes(near, far, positive=True)
     z = _distances("z_view", z_view, positive=True)
-    return (near / z - near / far) / (1.0 - near / far)
+    with np.errstate(over="ignore"):  # as in window_depth: a subnormal z gives +inf, the limit
+        return (near / z - near / far) / (1.0 - near / far)
 
 
 def linear_depth(z, near: float, far: float) -> np.ndarray:
