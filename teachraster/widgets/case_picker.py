@@ -644,7 +644,7 @@ class CasePicker:
             used = [c for c in NEIGHBOUR_COLORS if c in self.colors.values()]
             left = (f"left, {len(owners)} triangles in {len(used)} colours ("
                     + "".join(swatch(c, "") for c in used)
-                    + "), triangles that touch never alike: the outlines tell the others apart")  # fmt: skip
+                    + "), triangles sharing an edge never alike: the outlines tell the others apart")  # fmt: skip
         n = self.naive_counts
         parts = [left]
         if n is not None and (n == 1).any():
