@@ -722,6 +722,22 @@ def test_fill_view_draws_covered_samples_as_rings_where_it_colours_by_u():
     plt.close(view.fig)
 
 
+def test_fill_view_bar_under_msaa_spans_every_coloured_pixel_and_says_where():
+    """Review r12 (lesson 00 c14, 4× MSAA): the bar said "u at the covered centres" and ran
+    over those only, while pixels with only a sample covered were coloured by u extrapolated
+    to their centres, outside the bar's range (clipped to its end colours)."""
+    fill = make_fill("halfplane", samples=4)
+    view = tp.FillView(fill, step=-1, values=True)
+    shown = view.values.get_array()
+    lo, hi = view.values.get_clim()
+    assert np.nanmin(shown) >= lo - 1e-12 and np.nanmax(shown) <= hi + 1e-12
+    assert view.value_bar.title.get_text() == "u at the pixel centres"
+    one = tp.FillView(make_fill("halfplane"), step=-1, values=True)
+    assert one.value_bar.title.get_text() == "u at the covered centres"
+    plt.close(view.fig)
+    plt.close(one.fig)
+
+
 def test_split_label_stays_inside_the_grid():
     """Review r9 (00 c14): with point 4 near the grid's left edge, "point 4 / u4 = 3.15" stuck
     out of the grid onto the "row i" label; it starts at the grid's edge instead."""

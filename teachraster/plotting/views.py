@@ -393,14 +393,18 @@ class FillView:
         local[trace.covered] = first_channel(written[name])  # row-major, as recorded
         lo, hi = float(min(b.min() for b in both)), float(max(b.max() for b in both))
         data = trace.image(local)
+        where = "at the covered centres"
         if trace.samples is not None and not isinstance(fill, FillTrace):
             extra = np.isnan(data) & fill.coverage  # a sample covered, not the centre
             data[extra] = first_channel(fill.attrs[name][extra])
+            if extra.any():  # extrapolated to centres outside: the bar spans them too (r12)
+                where = "at the pixel centres"
+                lo, hi = min(lo, float(data[extra].min())), max(hi, float(data[extra].max()))
         self.values = set_image(self.values, data)
         self.values.set_clim(lo, hi if hi > lo else lo + 1.0)
         self._shown = (name, lo, hi)
         if self.value_bar is not None:
-            self.value_bar.set_range(name, lo, hi, self.values.get_cmap())
+            self.value_bar.set_range(name, lo, hi, self.values.get_cmap(), where)
 
     def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool) -> list:
         """What the step on show draws: the pixel under test only while there is one (review
@@ -531,10 +535,15 @@ class ValueBar(Artists):
         self.low = ax.text(left, -2 * line, "", ha="left", **text)
         self.high = ax.text(right, -2 * line, "", ha="right", **text)
 
-    def set_range(self, name: str, lo: float, hi: float, cmap) -> None:
-        """The colours run from ``lo`` to ``hi`` of ``name`` in ``cmap``."""
+    def set_range(self, name: str, lo: float, hi: float, cmap,
+                  where: str = "at the covered centres") -> None:  # fmt: skip
+        """The colours run from ``lo`` to ``hi`` of ``name`` in ``cmap``, read ``where``.
+
+        Under MSAA a pixel with only a sample covered shows its value extrapolated to its
+        uncovered centre: ``where`` then says "at the pixel centres" (review r12, lesson 00).
+        """
         self.bar.set_cmap(cmap)
-        self.title.set_text(f"{name} at the covered centres")
+        self.title.set_text(f"{name} {where}")
         self.low.set_text(f"{lo:.2f}")
         self.high.set_text(f"{hi:.2f}")
 
