@@ -266,6 +266,33 @@ def test_a_swapped_pixel_or_pair_is_named():
     assert "other order" not in wrong and "row first" not in wrong
 
 
+def test_the_first_culled_triangle_is_told_what_it_is_never_expected_n_nor_a_swap():
+    """r12 11-1: 11.2's commonest mistake (the first culled triangle at (24, 28), 8) was told
+    "expected 2" (the frame's number, read as "triangle 2"), "the four digits it prints" and a
+    row/column swap it did not make (8 is also the evidence at (28, 24)). Both cases: the frame
+    named as a frame, the triangle as a triangle, what it is in both histories, no swap."""
+
+    def first_culled(b):
+        records = b.frame.history(24, 28).records
+        return (
+            "culled winding",
+            (24, 28),
+            next(r.triangle for r in records if r.outcome == "culled"),
+        )
+
+    report = ex.check("broken_frame_2", first_culled)
+    assert len(report.failures) == 2, str(report)
+    for failure in report.failures:
+        text = failure.explanation
+        assert failure.kind == "evidence", text
+        assert re.match(r"(redrawn )?frame 2: 'culled winding' at pixel \(24, 28\) with "
+                        r"triangle \d+:", text), text  # fmt: skip
+        assert not re.search(r"expected \d", text), text
+        assert "culled here, but the intended frame's history shows it not_covered" in text
+        assert "digits" not in text and "row first" not in text, text
+    assert bf._explain((), 2, ("culled winding", (28, 24), 11)).endswith("with triangle 11")
+
+
 def test_the_evidence_needs_the_digits_the_history_prints():
     """A depth to three decimals is not the evidence (it would make a loop over a thousand
     values enough); a depth as printed, or exactly as the record holds it, is."""
