@@ -30,6 +30,12 @@ MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.2
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
 
 
+@pytest.fixture(autouse=True)
+def _no_wait(monkeypatch):
+    """These tests fail the frames' checks hundreds of times: no count, no wait (r12 11-2)."""
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
+
+
 def _cells():
     nb = json.loads(NOTEBOOK.read_text())
     return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
@@ -266,6 +272,45 @@ def test_a_swapped_pixel_or_pair_is_named():
     assert "other order" not in wrong and "row first" not in wrong
 
 
+def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(monkeypatch):
+    """r12 11-2: ten causes × 40 generic history readers passed all six frames in 2,100 checks,
+    51 s. Past the failing checks allowed (3 here, 25 for a class) each check of the same
+    frame first waits, 1 s more each time, at most 30 s, outside the student's budget; the
+    report says why; a pass starts the count again; another frame keeps its own count; a
+    check inside the student's function does not wait; 0 turns it off; a typo is refused."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "3")
+    wrong = lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5))  # noqa: E731
+    notes = [ex.check("broken_frame_1", wrong).tries for _ in range(5)]
+    assert waits == [1.0] and notes[:3] == [None] * 3, (waits, notes)
+    assert "5 failing checks of broken_frame_1" in notes[4]
+    assert "does not need that many tries" in notes[4] and "at most 30 s" in notes[4]
+    assert "- 6 failing checks of broken_frame_1" in str(ex.check("broken_frame_1", wrong))
+    assert waits == [1.0, 2.0]
+    assert ex.check("broken_frame_2", wrong).tries is None and waits == [1.0, 2.0]
+    report = ex.check("broken_frame_1", sol.diagnosis(1))
+    assert report.passed and report.tries is None and waits[-1] == 3.0
+    assert ex.check("broken_frame_1", wrong).tries is None and len(waits) == 3
+    tries._FAILED["broken_frame_1"] = 1000
+    assert tries.wait("broken_frame_1", 25) == 30.0  # capped
+    inner = []
+    ex.check("broken_frame_1", lambda b: inner.append(ex.check("broken_frame_1", wrong)) or 0)
+    assert waits.count(30.0) == 2 and inner, waits  # the outer check waited, the inner not
+    assert ex.check("edge_function", lambda *a: 0).tries is None  # other exercises: no limit
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
+    assert (
+        tries.wait("broken_frame_1", 25) == 0.0 and ex.check("broken_frame_1", wrong).tries is None
+    )
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "many")
+    with pytest.raises(ValueError, match="TEACHRASTER_CHECK_TRIES"):
+        tries.allowed(25)
+    assert bf.frame_exercise(1).tries == bf.TRIES == 25
+
+
 def test_the_first_culled_triangle_is_told_what_it_is_never_expected_n_nor_a_swap():
     """r12 11-1: 11.2's commonest mistake (the first culled triangle at (24, 28), 8) was told
     "expected 2" (the frame's number, read as "triangle 2"), "the four digits it prints" and a
@@ -376,17 +421,31 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     the order, not "near 0, not near 1", with the depths printed by a cell, and no question
     naming which cause is at fault."""
     cells = _cells()
-    task = cells["frame_1_task"]
-    assert "the face in front has the smaller depth, in frame 1 the larger" in " ".join(
-        task.split()
-    )
+    task = " ".join(cells["frame_1_task"].split())
     assert "near 0" not in task and "at fault" not in task
     depths = cells["frame_1_depths"]
     assert "depth[9]" in depths and "depth[3]" in depths
+    assert "the face in front has the smaller depth, in frame 1 the larger" in " ".join(
+        depths.replace("#", " ").split()
+    )
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
     assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
     assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
     assert "ontrived" not in cells["broken_frame_4_solution"]
+
+
+def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
+    """r12 11-3: the task named the pixel and said which face had the larger depth in frame 1,
+    so ``return "depth function", (24, 28), b.frame.depth[24, 28]`` passed without reading a
+    history. Now the task asks (which face lies in front, which has the smaller depth), names
+    no pixel or triangle, and the cell printing the two faces' depths comes after the check."""
+    cells = _cells()
+    task = " ".join(cells["frame_1_task"].split())
+    for told in ("(24, 28)", "triangle 9", "the larger", "in front has the smaller"):
+        assert told not in task, told
+    assert "which has the smaller depth" in task and "After the check" in task
+    order = list(cells)
+    assert order.index("frame_1_depths") == order.index("broken_frame_1_check") + 1
 
 
 def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():

@@ -952,11 +952,18 @@ _SECRETS = tuple(
 )
 
 
+#: Failing checks of one frame in a kernel before each further check waits (:mod:`.tries`;
+#: r12 11-2: ten causes × 40 generic history readers passed all six frames, 2,100 checks in
+#: 51 s). A diagnosis needs a handful; 25 leaves room for a student who tries pixel by pixel.
+TRIES = 25
+
+
 def frame_exercise(number: int) -> Exercise:
     """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), evidence)."""
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
         DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE, private=_SECRETS,
+        tries=TRIES,
     )  # fmt: skip
 
 
