@@ -197,6 +197,38 @@ def test_the_private_readers_called_from_a_worker_thread_are_not_counted():
     assert "read from the checker's private functions: not counted" in report.package
 
 
+def test_a_clone_of_a_private_reader_or_the_judge_with_a_warm_cache_is_not_counted():
+    """r12 11-4: a ``types.FunctionType`` clone of ``_is_cause`` made before the check, and
+    the judge ``_same`` (not listed) with its cache warmed for the ten causes, picked the cause
+    inside ``broken_frame_1`` uncounted. Now both are named, and the honest answer is not."""
+    import types
+
+    f = bf._is_cause
+    clone = types.FunctionType(f.__code__, f.__globals__, "is_it")
+    read = sol.READ[1]
+
+    def by_clone(b):
+        cause = next(c for c in bf.CAUSES if clone(1, c))
+        return cause, (24, 28), read(b, 24, 28)
+
+    report = ex.check("broken_frame_1", by_clone)
+    assert not report.passed and "a copy of the code of teachraster's _is_cause" in (
+        report.package or ""
+    ), str(report)
+    value = read(ex.broken_frame(1), 24, 28)
+    for c in bf.CAUSES:  # warmed in a cell before the check
+        bf._same((c, (24, 28), value), 1)
+
+    def by_judge(b):
+        cause = next(c for c in bf.CAUSES if bf._same((c, (24, 28), value), 1))
+        return cause, (24, 28), read(b, 24, 28)
+
+    report = ex.check("broken_frame_1", by_judge)
+    assert not report.passed and "teachraster's _same" in (report.package or ""), str(report)
+    assert "read from the checker's private functions" in report.package
+    assert ex.check("broken_frame_1", sol.diagnosis(1)).passed
+
+
 def test_an_answer_that_reads_the_salted_key_is_not_counted():
     """r11 11-E: hashing the ten causes with ``_SALT`` against ``_KEY`` gave the cause with no
     private call, and passed."""

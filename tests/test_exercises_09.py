@@ -770,3 +770,59 @@ def test_the_swatch_labels_do_not_overlap(name, fn):
                 assert a.x1 < b.x0 or a.y1 < b.y0 or b.y1 < a.y0, (name, a, b)
         finally:
             plt.close(fig)
+
+
+# -- r12 09-1: a private helper of the answer's module, or a copy of its code -----------------
+def _thin_line(p0, p1):
+    """9.1 through ``teachraster.core.lines._thin`` (``tr.rasterize_line??`` shows it)."""
+    from teachraster.core import lines
+
+    ends = lines.snap(np.array([p0, p1], float), 8)
+    coverage, _ = lines._thin(ends, "diamond", 12, 12, 8, False)
+    return {(int(r), int(c)) for r, c in zip(*np.nonzero(coverage))}
+
+
+def _clone(f):
+    """A copy of ``f`` made of its code before the check (the watch swaps ``f.__code__``)."""
+    import types
+
+    g = types.FunctionType(f.__code__, f.__globals__, f.__name__, f.__defaults__, f.__closure__)
+    g.__kwdefaults__ = f.__kwdefaults__
+    return g
+
+
+def test_a_private_helper_or_a_copy_of_the_package_code_is_not_counted():
+    """r12 09-1: ``_thin`` and a clone of ``rasterize_line`` made before the check passed 9.1
+    50/50 with no "not counted". Both are named now; the same function pasted as source in
+    a cell of its own too; an honest solution is not touched."""
+    import inspect
+
+    import teachraster as tr
+
+    report = ex.check("line_pixels", _thin_line, budget=60)
+    assert not report.passed and "teachraster's _thin" in (report.package or ""), str(report)
+    clone = _clone(tr.rasterize_line)
+
+    def via_clone(p0, p1):
+        raster = clone(p0, p1, 12, 12)
+        return {(int(r), int(c)) for r, c in zip(*np.nonzero(raster.coverage))}
+
+    report = ex.check("line_pixels", via_clone, budget=60)
+    assert not report.passed and "a copy of the code of teachraster's rasterize_line" in (
+        report.package or ""
+    ), str(report)
+    space = dict(vars(__import__("teachraster.core.lines", fromlist=["x"])))
+    source = inspect.getsource(tr.rasterize_line)
+    space.pop("rasterize_line")
+    space["__name__"] = "__main__"  # a notebook cell's
+    exec(compile(source, "<a student's cell>", "exec"), space)  # pasted, not imported
+    pasted = space["rasterize_line"]
+    assert pasted is not tr.rasterize_line and pasted.__module__ == "__main__"
+
+    def via_paste(p0, p1):
+        raster = pasted(p0, p1, 12, 12)
+        return {(int(r), int(c)) for r, c in zip(*np.nonzero(raster.coverage))}
+
+    report = ex.check("line_pixels", via_paste, budget=60)
+    assert not report.passed and "a copy of the code" in (report.package or ""), str(report)
+    assert ex.check("line_pixels", line_pixels, budget=60).passed
