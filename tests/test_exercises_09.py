@@ -826,3 +826,54 @@ def test_a_private_helper_or_a_copy_of_the_package_code_is_not_counted():
     report = ex.check("line_pixels", via_paste, budget=60)
     assert not report.passed and "a copy of the code" in (report.package or ""), str(report)
     assert ex.check("line_pixels", line_pixels, budget=60).passed
+
+
+def _tight_box(p0, p1):
+    """9.1 searched over the box of the pixels the unmoved end points lie in."""
+    ys, xs = sorted((int(p0[1] // 1), int(p1[1] // 1))), sorted((int(p0[0] // 1), int(p1[0] // 1)))
+    return {(r, c) for r, c in line_pixels(p0, p1)
+            if ys[0] <= r <= ys[1] and xs[0] <= c <= xs[1]}  # fmt: skip
+
+
+def test_the_unmoved_search_range_is_told_what_it_misses_for_its_own_line():
+    """r12 09-2: the words said "a diamond reaches past its pixel's square" (it lies inside
+    it) and gave a vertical line's example (column k − 1) for a horizontal line. Now: the end
+    point on x = k (y = k) moves into column (row) k − 1, as the case's line has it."""
+    report = ex.check("line_pixels", _tight_box, budget=60)
+    by_case = {f.case: f.explanation for f in report.failures}
+    assert by_case and all("reaches past" not in t for t in by_case.values())
+    horizontal = next(t for c, t in by_case.items() if c.startswith("horizontal"))
+    assert "on y = 3, move by −ε² into row 2" in horizontal and "column" not in horizontal
+    vertical = next(t for c, t in by_case.items() if c.startswith("vertical"))
+    assert "on x = 3, move by −ε into column 2" in vertical and "into row" not in vertical
+    assert "(row, col) (0, 2), (1, 2)" in vertical
+
+    # the advice is enough: the box of the moved end points' pixels, with no margin, passes
+    def moved_box(p0, p1):
+        a, b = ((Fraction(p[0]) - EPS, Fraction(p[1]) - EPS * EPS) for p in (p0, p1))
+        ys, xs = sorted((a[1] // 1, b[1] // 1)), sorted((a[0] // 1, b[0] // 1))
+        return {(r, c) for r, c in line_pixels(p0, p1)
+                if ys[0] <= r <= ys[1] and xs[0] <= c <= xs[1]}  # fmt: skip
+
+    assert ex.check("line_pixels", moved_box, budget=60).passed
+
+
+def test_a_stop_just_below_1_prints_the_alpha_against_1():
+    """r12 09-5: a loop stopping after 3 layers was told "where the alpha was 1: below 1" for
+    0.99963 (num() alone rounds it to 1)."""
+
+    def three(layers):
+        acc = np.zeros(4)
+        for k, layer in enumerate(layers):
+            if k == 3:
+                break
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+        return acc
+
+    texts = [f.explanation for f in ex.check("front_to_back", three).failures]
+    stopped = [t for t in texts if "you stopped after layer" in t]
+    assert stopped, texts
+    for text in stopped:
+        alpha = re.search(r"where the alpha was ([0-9.]+), (just )?below 1", text)
+        assert alpha and float(alpha.group(1)) < 1, text
+        assert (alpha.group(2) is not None) == (float(alpha.group(1)) > 0.99), text

@@ -246,9 +246,14 @@ def _read_past_words(args, expected, got) -> str:
 
 def _stopped_words(args, expected, got) -> str:
     m, alpha = _stopped_at(args, expected, got)
-    return (f"you stopped after layer {m} of {len(args[0])}, where the alpha was {num(alpha)}: "
-            "below 1, the layers behind still show through the transmittance 1 − A; stop "
-            "only once the alpha is 1")  # fmt: skip
+    # r12 09-5: num(0.99963) alone is "1", which read "the alpha was 1: below 1"; told from
+    # 1 it keeps its digits, and "just below" says how close it came
+    five = f"{alpha:.5f}".rstrip("0")  # as the colour tuple beside it prints it
+    shown = max(num(alpha, 1.0), five if float(five) < 1 else "", key=len)
+    near = "just below 1" if alpha > 0.99 else "below 1"
+    return (f"you stopped after layer {m} of {len(args[0])}, where the alpha was {shown}, "
+            f"{near}: the layers behind still show through the transmittance 1 − A "
+            f"= {1 - alpha:.2g}; stop only once the alpha is 1")  # fmt: skip
 
 
 #: Mistakes no variant gives: the walk's order and where it stops (r8: a back-to-front loop
