@@ -463,6 +463,8 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
     assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
     assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
+    # r12 11-6: lesson 12 §9 is the dark fringe of filtering straight alpha: no pane too bright
+    assert "lesson 12" not in cells["frame_4_task"]
     assert "ontrived" not in cells["broken_frame_4_solution"]
 
 
