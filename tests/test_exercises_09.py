@@ -877,3 +877,25 @@ def test_a_stop_just_below_1_prints_the_alpha_against_1():
         alpha = re.search(r"where the alpha was ([0-9.]+), (just )?below 1", text)
         assert alpha and float(alpha.group(1)) < 1, text
         assert (alpha.group(2) is not None) == (float(alpha.group(1)) > 0.99), text
+
+
+def test_the_read_count_allowance_is_said_where_the_task_counts_reads():
+    """r12 09-6: a loop testing at the top reads one layer behind the opaque one and passes
+    (call_front_to_back allows it); the task said only "stops reading once ... 1"."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+    assert "fetching one more layer" in " ".join(text["front_to_back_task"].split())
+
+    def top_test(layers):
+        acc = np.zeros(4)
+        for layer in layers:
+            if acc[3] >= 1:
+                break
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+        return acc
+
+    assert ex.check("front_to_back", top_test).passed
