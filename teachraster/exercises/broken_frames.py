@@ -776,9 +776,16 @@ def _swapped(number, got) -> str:
 
 def _history_hint(number, row, col, what: str) -> str:
     n = int(number)
-    return (f"print(broken[{n}].frame.history({row}, {col}))"
-            + (f" and print(broken[{n}].intended.history({row}, {col}))"
-               if "intended" in what else ""))  # fmt: skip
+    shown = (f"print(broken[{n}].frame.history({row}, {col}))"
+             + (f" and print(broken[{n}].intended.history({row}, {col}))"
+                if "intended" in what else ""))  # fmt: skip
+    if _as_frame(number) is broken_frame(n):
+        return shown
+    # r12 11-5: the redrawn frame's values differ from the frame shown's
+    inside = f"b.frame.history({row}, {col})" + (
+        f" and b.intended.history({row}, {col})" if "intended" in what else "")  # fmt: skip
+    return (f"{inside} inside your function (this is the frame redrawn for the check, with "
+            f"other values; in your notebook, {shown} tell of the frame shown)")  # fmt: skip
 
 
 def _cause_words(args, number, got) -> str:
