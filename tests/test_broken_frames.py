@@ -370,7 +370,7 @@ def test_the_first_culled_triangle_is_told_what_it_is_never_expected_n_nor_a_swa
     assert bf._explain((), 2, ("culled winding", (28, 24), 11)).endswith("with triangle 11")
     # r12 11-5: the redrawn frame's failure says where its values are read
     redrawn = report.failures[1].explanation
-    assert "b.frame.history(24, 28) inside your function (this is the frame redrawn" in redrawn
+    assert "b.intended.history(24, 28) inside your function (this is the frame redrawn" in redrawn
 
 
 def test_the_evidence_needs_the_digits_the_history_prints():
