@@ -899,3 +899,12 @@ def test_the_read_count_allowance_is_said_where_the_task_counts_reads():
         return acc
 
     assert ex.check("front_to_back", top_test).passed
+
+
+def test_a_wrong_form_is_described_once_in_plain_numbers():
+    """r12 09-8: "a bool array of shape (12, 12) of shape (12, 12)" and "(np.float64(1.0),
+    np.float64(0.0), np.float64(0.0)) of shape (3,)"."""
+    image = _first("line_pixels", lambda p0, p1: np.zeros((12, 12), bool)).explanation
+    assert image.count("of shape (12, 12)") == 1, image
+    three = _first("over_straight", lambda s, d: tuple(np.float64(v) for v in (1, 0, 0)))
+    assert "(1.0, 0.0, 0.0) of shape (3,)" in three.explanation and "np." not in three.explanation
