@@ -908,3 +908,17 @@ def test_a_wrong_form_is_described_once_in_plain_numbers():
     assert image.count("of shape (12, 12)") == 1, image
     three = _first("over_straight", lambda s, d: tuple(np.float64(v) for v in (1, 0, 0)))
     assert "(1.0, 0.0, 0.0) of shape (3,)" in three.explanation and "np." not in three.explanation
+
+
+def test_the_9_1_walkthrough_is_folded_so_that_students_try_first():
+    """r12 09-4: the paragraph gave the whole algorithm before the student had tried."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+    task = text["line_pixels_task"]
+    folded = task[task.index("<details>") : task.index("</details>")]
+    assert "u = x + y" in folded and "Fraction" in folded and "<summary>How to go about" in folded
+    assert "u = x + y" not in task.replace(folded, "")
