@@ -922,3 +922,27 @@ def test_the_9_1_walkthrough_is_folded_so_that_students_try_first():
     folded = task[task.index("<details>") : task.index("</details>")]
     assert "u = x + y" in folded and "Fraction" in folded and "<summary>How to go about" in folded
     assert "u = x + y" not in task.replace(folded, "")
+
+
+def test_the_read_past_figure_crosses_out_the_layers_read_behind_the_opaque_one():
+    """r12 09-7: the figure drew expected = yours and nothing else: nothing wrong to see."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def never_stops(layers):
+        acc = np.zeros(4)
+        for layer in layers:
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+        return acc
+
+    report = ex.check("front_to_back", never_stops)
+    failure = next(f for f in report.failures if f.kind == "read behind the opaque layer")
+    fig, ax = plt.subplots(figsize=(7, 4))
+    failure.draw(ax)
+    labels = [t.get_text() for t in ax.get_xticklabels()]
+    crosses = [line for line in ax.get_lines() if len(line.get_xdata()) == 4]
+    plt.close(fig)
+    got = failure.got
+    assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque == len(crosses) > 0

@@ -324,16 +324,23 @@ def _rule(args, expected, got) -> str:
 
 def draw_layers(ax, case, got):
     """The layers as swatches over a checkerboard, then the expected and your composites
-    (before any answer, the layers only: the figure never shows the answer first)."""
+    (before any answer, the layers only: the figure never shows the answer first); layers
+    read behind the opaque one crossed out and labelled "read"."""
     (layers,) = case[1]
     cells = list(layers)
     # numbers, and "yours" a line lower: eight labels share the axes' width (r11 09-D: "layer
     # 6expected")
     names = [str(k + 1) for k in range(len(layers))]
+    past = range(got.opaque, got.read) if isinstance(got, ReadPast) else range(0)
+    for k in past:  # r12 09-7: expected = yours; what is wrong is the layers read
+        names[k] += "\nread"
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
         names += ["expected", "\nyours"]
     artists = swatches(ax, cells, names)
+    for k in past:  # crossed out: read behind the opaque layer, where nothing can show
+        x = k * 1.3  # swatches' spacing (blending.swatches)
+        artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
     artists.append(ax.set_xlabel("layers 1, 2, ..., nearest first; premultiplied, drawn over "
                                  "a checkerboard", fontsize="x-small"))  # fmt: skip
     return artists
