@@ -333,6 +333,10 @@ def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(mon
     ex.check("broken_frame_1", lambda b: inner.append(ex.check("broken_frame_1", wrong)) or 0)
     assert waits.count(30.0) == 2 and inner, waits  # the outer check waited, the inner not
     assert ex.check("edge_function", lambda *a: 0).tries is None  # other exercises: no limit
+    tries._FAILED.clear()
+    for _ in range(5):  # the stub not written yet is no try
+        ex.check("broken_frame_3", lambda b: (_ for _ in ()).throw(NotImplementedError()))
+    assert "broken_frame_3" not in tries._FAILED
     monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
     assert (
         tries.wait("broken_frame_1", 25) == 0.0 and ex.check("broken_frame_1", wrong).tries is None
