@@ -30,6 +30,12 @@ MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.2
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
 
 
+@pytest.fixture(autouse=True)
+def _no_wait(monkeypatch):
+    """These tests fail the frames' checks hundreds of times: no count, no wait (r12 11-2)."""
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
+
+
 def _cells():
     nb = json.loads(NOTEBOOK.read_text())
     return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
@@ -191,6 +197,38 @@ def test_the_private_readers_called_from_a_worker_thread_are_not_counted():
     assert "read from the checker's private functions: not counted" in report.package
 
 
+def test_a_clone_of_a_private_reader_or_the_judge_with_a_warm_cache_is_not_counted():
+    """r12 11-4: a ``types.FunctionType`` clone of ``_is_cause`` made before the check, and
+    the judge ``_same`` (not listed) with its cache warmed for the ten causes, picked the cause
+    inside ``broken_frame_1`` uncounted. Now both are named, and the honest answer is not."""
+    import types
+
+    f = bf._is_cause
+    clone = types.FunctionType(f.__code__, f.__globals__, "is_it")
+    read = sol.READ[1]
+
+    def by_clone(b):
+        cause = next(c for c in bf.CAUSES if clone(1, c))
+        return cause, (24, 28), read(b, 24, 28)
+
+    report = ex.check("broken_frame_1", by_clone)
+    assert not report.passed and "a copy of the code of teachraster's _is_cause" in (
+        report.package or ""
+    ), str(report)
+    value = read(ex.broken_frame(1), 24, 28)
+    for c in bf.CAUSES:  # warmed in a cell before the check
+        bf._same((c, (24, 28), value), 1)
+
+    def by_judge(b):
+        cause = next(c for c in bf.CAUSES if bf._same((c, (24, 28), value), 1))
+        return cause, (24, 28), read(b, 24, 28)
+
+    report = ex.check("broken_frame_1", by_judge)
+    assert not report.passed and "teachraster's _same" in (report.package or ""), str(report)
+    assert "read from the checker's private functions" in report.package
+    assert ex.check("broken_frame_1", sol.diagnosis(1)).passed
+
+
 def test_an_answer_that_reads_the_salted_key_is_not_counted():
     """r11 11-E: hashing the ten causes with ``_SALT`` against ``_KEY`` gave the cause with no
     private call, and passed."""
@@ -264,6 +302,79 @@ def test_a_swapped_pixel_or_pair_is_named():
     assert "in the other order" in _first(6, ("sliver", (22, 40), pair)).explanation
     wrong = _first(6, ("sliver", (22, 40), (0.5, 0.5))).explanation
     assert "other order" not in wrong and "row first" not in wrong
+
+
+def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(monkeypatch):
+    """r12 11-2: ten causes × 40 generic history readers passed all six frames in 2,100 checks,
+    51 s. Past the failing checks allowed (3 here, 25 for a class) each check of the same
+    frame first waits, 1 s more each time, at most 30 s, outside the student's budget; the
+    report says why; a pass starts the count again; another frame keeps its own count; a
+    check inside the student's function does not wait; 0 turns it off; a typo is refused."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "3")
+    wrong = lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5))  # noqa: E731
+    notes = [ex.check("broken_frame_1", wrong).tries for _ in range(5)]
+    assert waits == [1.0] and notes[:3] == [None] * 3, (waits, notes)
+    assert "5 failing checks of broken_frame_1" in notes[4]
+    assert "does not need that many tries" in notes[4] and "at most 30 s" in notes[4]
+    assert "- 6 failing checks of broken_frame_1" in str(ex.check("broken_frame_1", wrong))
+    assert waits == [1.0, 2.0]
+    assert ex.check("broken_frame_2", wrong).tries is None and waits == [1.0, 2.0]
+    report = ex.check("broken_frame_1", sol.diagnosis(1))
+    assert report.passed and report.tries is None and waits[-1] == 3.0
+    assert ex.check("broken_frame_1", wrong).tries is None and len(waits) == 3
+    tries._FAILED["broken_frame_1"] = 1000
+    assert tries.wait("broken_frame_1", 25) == 30.0  # capped
+    inner = []
+    ex.check("broken_frame_1", lambda b: inner.append(ex.check("broken_frame_1", wrong)) or 0)
+    assert waits.count(30.0) == 2 and inner, waits  # the outer check waited, the inner not
+    assert ex.check("edge_function", lambda *a: 0).tries is None  # other exercises: no limit
+    tries._FAILED.clear()
+    for _ in range(5):  # the stub not written yet is no try
+        ex.check("broken_frame_3", lambda b: (_ for _ in ()).throw(NotImplementedError()))
+    assert "broken_frame_3" not in tries._FAILED
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
+    assert (
+        tries.wait("broken_frame_1", 25) == 0.0 and ex.check("broken_frame_1", wrong).tries is None
+    )
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "many")
+    with pytest.raises(ValueError, match="TEACHRASTER_CHECK_TRIES"):
+        tries.allowed(25)
+    assert bf.frame_exercise(1).tries == bf.TRIES == 25
+
+
+def test_the_first_culled_triangle_is_told_what_it_is_never_expected_n_nor_a_swap():
+    """r12 11-1: 11.2's commonest mistake (the first culled triangle at (24, 28), 8) was told
+    "expected 2" (the frame's number, read as "triangle 2"), "the four digits it prints" and a
+    row/column swap it did not make (8 is also the evidence at (28, 24)). Both cases: the frame
+    named as a frame, the triangle as a triangle, what it is in both histories, no swap."""
+
+    def first_culled(b):
+        records = b.frame.history(24, 28).records
+        return (
+            "culled winding",
+            (24, 28),
+            next(r.triangle for r in records if r.outcome == "culled"),
+        )
+
+    report = ex.check("broken_frame_2", first_culled)
+    assert len(report.failures) == 2, str(report)
+    for failure in report.failures:
+        text = failure.explanation
+        assert failure.kind == "evidence", text
+        assert re.match(r"(redrawn )?frame 2: 'culled winding' at pixel \(24, 28\) with "
+                        r"triangle \d+:", text), text  # fmt: skip
+        assert not re.search(r"expected \d", text), text
+        assert "culled here, but the intended frame's history shows it not_covered" in text
+        assert "digits" not in text and "row first" not in text, text
+    assert bf._explain((), 2, ("culled winding", (28, 24), 11)).endswith("with triangle 11")
+    # r12 11-5: the redrawn frame's failure says where its values are read
+    redrawn = report.failures[1].explanation
+    assert "b.intended.history(24, 28) inside your function (this is the frame redrawn" in redrawn
 
 
 def test_the_evidence_needs_the_digits_the_history_prints():
@@ -349,17 +460,33 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     the order, not "near 0, not near 1", with the depths printed by a cell, and no question
     naming which cause is at fault."""
     cells = _cells()
-    task = cells["frame_1_task"]
-    assert "the face in front has the smaller depth, in frame 1 the larger" in " ".join(
-        task.split()
-    )
+    task = " ".join(cells["frame_1_task"].split())
     assert "near 0" not in task and "at fault" not in task
     depths = cells["frame_1_depths"]
     assert "depth[9]" in depths and "depth[3]" in depths
+    assert "the face in front has the smaller depth, in frame 1 the larger" in " ".join(
+        depths.replace("#", " ").split()
+    )
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
     assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
     assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
+    # r12 11-6: lesson 12 §9 is the dark fringe of filtering straight alpha: no pane too bright
+    assert "lesson 12" not in cells["frame_4_task"]
     assert "ontrived" not in cells["broken_frame_4_solution"]
+
+
+def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
+    """r12 11-3: the task named the pixel and said which face had the larger depth in frame 1,
+    so ``return "depth function", (24, 28), b.frame.depth[24, 28]`` passed without reading a
+    history. Now the task asks (which face lies in front, which has the smaller depth), names
+    no pixel or triangle, and the cell printing the two faces' depths comes after the check."""
+    cells = _cells()
+    task = " ".join(cells["frame_1_task"].split())
+    for told in ("(24, 28)", "triangle 9", "the larger", "in front has the smaller"):
+        assert told not in task, told
+    assert "which has the smaller depth" in task and "After the check" in task
+    order = list(cells)
+    assert order.index("frame_1_depths") == order.index("broken_frame_1_check") + 1
 
 
 def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():

@@ -770,3 +770,179 @@ def test_the_swatch_labels_do_not_overlap(name, fn):
                 assert a.x1 < b.x0 or a.y1 < b.y0 or b.y1 < a.y0, (name, a, b)
         finally:
             plt.close(fig)
+
+
+# -- r12 09-1: a private helper of the answer's module, or a copy of its code -----------------
+def _thin_line(p0, p1):
+    """9.1 through ``teachraster.core.lines._thin`` (``tr.rasterize_line??`` shows it)."""
+    from teachraster.core import lines
+
+    ends = lines.snap(np.array([p0, p1], float), 8)
+    coverage, _ = lines._thin(ends, "diamond", 12, 12, 8, False)
+    return {(int(r), int(c)) for r, c in zip(*np.nonzero(coverage))}
+
+
+def _clone(f):
+    """A copy of ``f`` made of its code before the check (the watch swaps ``f.__code__``)."""
+    import types
+
+    g = types.FunctionType(f.__code__, f.__globals__, f.__name__, f.__defaults__, f.__closure__)
+    g.__kwdefaults__ = f.__kwdefaults__
+    return g
+
+
+def test_a_private_helper_or_a_copy_of_the_package_code_is_not_counted():
+    """r12 09-1: ``_thin`` and a clone of ``rasterize_line`` made before the check passed 9.1
+    50/50 with no "not counted". Both are named now; the same function pasted as source in
+    a cell of its own too; an honest solution is not touched."""
+    import inspect
+
+    import teachraster as tr
+
+    report = ex.check("line_pixels", _thin_line, budget=60)
+    assert not report.passed and "teachraster's _thin" in (report.package or ""), str(report)
+    clone = _clone(tr.rasterize_line)
+
+    def via_clone(p0, p1):
+        raster = clone(p0, p1, 12, 12)
+        return {(int(r), int(c)) for r, c in zip(*np.nonzero(raster.coverage))}
+
+    report = ex.check("line_pixels", via_clone, budget=60)
+    assert not report.passed and "a copy of the code of teachraster's rasterize_line" in (
+        report.package or ""
+    ), str(report)
+    space = dict(vars(__import__("teachraster.core.lines", fromlist=["x"])))
+    source = inspect.getsource(tr.rasterize_line)
+    space.pop("rasterize_line")
+    space["__name__"] = "__main__"  # a notebook cell's
+    exec(compile(source, "<a student's cell>", "exec"), space)  # pasted, not imported
+    pasted = space["rasterize_line"]
+    assert pasted is not tr.rasterize_line and pasted.__module__ == "__main__"
+
+    def via_paste(p0, p1):
+        raster = pasted(p0, p1, 12, 12)
+        return {(int(r), int(c)) for r, c in zip(*np.nonzero(raster.coverage))}
+
+    report = ex.check("line_pixels", via_paste, budget=60)
+    assert not report.passed and "a copy of the code" in (report.package or ""), str(report)
+    assert ex.check("line_pixels", line_pixels, budget=60).passed
+
+
+def _tight_box(p0, p1):
+    """9.1 searched over the box of the pixels the unmoved end points lie in."""
+    ys, xs = sorted((int(p0[1] // 1), int(p1[1] // 1))), sorted((int(p0[0] // 1), int(p1[0] // 1)))
+    return {(r, c) for r, c in line_pixels(p0, p1)
+            if ys[0] <= r <= ys[1] and xs[0] <= c <= xs[1]}  # fmt: skip
+
+
+def test_the_unmoved_search_range_is_told_what_it_misses_for_its_own_line():
+    """r12 09-2: the words said "a diamond reaches past its pixel's square" (it lies inside
+    it) and gave a vertical line's example (column k − 1) for a horizontal line. Now: the end
+    point on x = k (y = k) moves into column (row) k − 1, as the case's line has it."""
+    report = ex.check("line_pixels", _tight_box, budget=60)
+    by_case = {f.case: f.explanation for f in report.failures}
+    assert by_case and all("reaches past" not in t for t in by_case.values())
+    horizontal = next(t for c, t in by_case.items() if c.startswith("horizontal"))
+    assert "on y = 3, move by −ε² into row 2" in horizontal and "column" not in horizontal
+    vertical = next(t for c, t in by_case.items() if c.startswith("vertical"))
+    assert "on x = 3, move by −ε into column 2" in vertical and "into row" not in vertical
+    assert "(row, col) (0, 2), (1, 2)" in vertical
+
+    # the advice is enough: the box of the moved end points' pixels, with no margin, passes
+    def moved_box(p0, p1):
+        a, b = ((Fraction(p[0]) - EPS, Fraction(p[1]) - EPS * EPS) for p in (p0, p1))
+        ys, xs = sorted((a[1] // 1, b[1] // 1)), sorted((a[0] // 1, b[0] // 1))
+        return {(r, c) for r, c in line_pixels(p0, p1)
+                if ys[0] <= r <= ys[1] and xs[0] <= c <= xs[1]}  # fmt: skip
+
+    assert ex.check("line_pixels", moved_box, budget=60).passed
+
+
+def test_a_stop_just_below_1_prints_the_alpha_against_1():
+    """r12 09-5: a loop stopping after 3 layers was told "where the alpha was 1: below 1" for
+    0.99963 (num() alone rounds it to 1)."""
+
+    def three(layers):
+        acc = np.zeros(4)
+        for k, layer in enumerate(layers):
+            if k == 3:
+                break
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+        return acc
+
+    texts = [f.explanation for f in ex.check("front_to_back", three).failures]
+    stopped = [t for t in texts if "you stopped after layer" in t]
+    assert stopped, texts
+    for text in stopped:
+        alpha = re.search(r"where the alpha was ([0-9.]+), (just )?below 1", text)
+        assert alpha and float(alpha.group(1)) < 1, text
+        assert (alpha.group(2) is not None) == (float(alpha.group(1)) > 0.99), text
+
+
+def test_the_read_count_allowance_is_said_where_the_task_counts_reads():
+    """r12 09-6: a loop testing at the top reads one layer behind the opaque one and passes
+    (call_front_to_back allows it); the task said only "stops reading once ... 1"."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+    assert "fetching one more layer" in " ".join(text["front_to_back_task"].split())
+
+    def top_test(layers):
+        acc = np.zeros(4)
+        for layer in layers:
+            if acc[3] >= 1:
+                break
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+        return acc
+
+    assert ex.check("front_to_back", top_test).passed
+
+
+def test_a_wrong_form_is_described_once_in_plain_numbers():
+    """r12 09-8: "a bool array of shape (12, 12) of shape (12, 12)" and "(np.float64(1.0),
+    np.float64(0.0), np.float64(0.0)) of shape (3,)"."""
+    image = _first("line_pixels", lambda p0, p1: np.zeros((12, 12), bool)).explanation
+    assert image.count("of shape (12, 12)") == 1, image
+    three = _first("over_straight", lambda s, d: tuple(np.float64(v) for v in (1, 0, 0)))
+    assert "(1.0, 0.0, 0.0) of shape (3,)" in three.explanation and "np." not in three.explanation
+
+
+def test_the_9_1_walkthrough_is_folded_so_that_students_try_first():
+    """r12 09-4: the paragraph gave the whole algorithm before the student had tried."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+    task = text["line_pixels_task"]
+    folded = task[task.index("<details>") : task.index("</details>")]
+    assert "u = x + y" in folded and "Fraction" in folded and "<summary>How to go about" in folded
+    assert "u = x + y" not in task.replace(folded, "")
+
+
+def test_the_read_past_figure_crosses_out_the_layers_read_behind_the_opaque_one():
+    """r12 09-7: the figure drew expected = yours and nothing else: nothing wrong to see."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def never_stops(layers):
+        acc = np.zeros(4)
+        for layer in layers:
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+        return acc
+
+    report = ex.check("front_to_back", never_stops)
+    failure = next(f for f in report.failures if f.kind == "read behind the opaque layer")
+    fig, ax = plt.subplots(figsize=(7, 4))
+    failure.draw(ax)
+    labels = [t.get_text() for t in ax.get_xticklabels()]
+    crosses = [line for line in ax.get_lines() if len(line.get_xdata()) == 4]
+    plt.close(fig)
+    got = failure.got
+    assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque == len(crosses) > 0

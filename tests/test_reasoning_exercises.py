@@ -291,7 +291,8 @@ def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors
             for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "glBlendFunc(ONE"):
                 assert answer not in f.explanation, f.explanation
     last = ex.check("over_premultiplied", tries[-1]).failures[0].explanation
-    assert "your 9.2a with src and dst written as c = α·C" in last, last
+    assert "9.2a's derivation with src and dst written as c = α·C" in last, last
+    assert "your 9.2a" not in last, last  # r12 09-8: the rule, not a diagnosis
     nb = json.loads(Path(__file__).parents[1].joinpath(
         "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
     task = next("".join(c["source"]) for c in nb["cells"]
@@ -320,7 +321,7 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
     # r11 09-A, 09-G: no shortcut offered, and GL's default is no blending
     assert "cannot tell the two apart" not in task and "textbook default" not in task
     said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))
-    assert "your 9.2a with src and dst" in said and "Porter and Duff's rule" not in said, said
+    assert "9.2a's derivation with src and dst" in said and "Porter and Duff's rule" not in said
     lesson = json.loads(Path(__file__).parents[1].joinpath(
         "notebooks/12_lines_and_blending.ipynb").read_text())  # fmt: skip
     printed = " ".join("".join(c["source"]) for c in lesson["cells"])

@@ -27,12 +27,33 @@ _repr.maxlist = _repr.maxtuple = 6
 
 
 def short(value) -> str:
-    """A short description of any value (a huge array or list is described, not printed)."""
+    """A short description of any value (a huge array or list is described, not printed;
+    numpy scalars in a tuple or list as plain numbers, r12 09-8: "(np.float64(1.0), ...").
+
+    >>> short((np.float64(1.0), np.int64(2))), short(np.zeros((12, 12), bool))
+    ('(1.0, 2)', 'a bool array of shape (12, 12)')
+    """
     if isinstance(value, np.ndarray):
         if value.size <= 6:
             return np.array2string(value, separator=", ", threshold=6).replace("\n", "")
         return f"a {value.dtype} array of shape {value.shape}"
-    return _repr.repr(value)
+    return _repr.repr(_plain(value))
+
+
+def _plain(value, depth: int = 2):
+    """``value`` with the numpy scalars of a small tuple or list (``depth`` levels) made plain
+    Python numbers, for its repr."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if type(value) in (tuple, list) and depth > 0 and len(value) <= 16:
+        return type(value)(_plain(v, depth - 1) for v in value)
+    return value
+
+
+def _shaped(value, arr: np.ndarray) -> str:
+    """``value`` described with its shape, once (an array's description already says it)."""
+    text = short(value)
+    return text if "of shape" in text else f"{text} of shape {arr.shape}"
 
 
 def _refuse_none_and_text(value, what: str) -> None:
@@ -122,7 +143,7 @@ def as_numbers(value, shape: tuple | None, what: str, max_size: int = MAX_VERTIC
         return _to_float(arr, value, what)
     fits = arr.ndim == len(shape) and all(s in (-1, n) for s, n in zip(shape, arr.shape))
     if not fits:
-        raise WrongAnswerType(f"returned {short(value)} of shape {arr.shape}; expected {what}")
+        raise WrongAnswerType(f"returned {_shaped(value, arr)}; expected {what}")
     return _to_float(arr, value, what)
 
 
@@ -162,7 +183,7 @@ def as_coverage(value, height: int, width: int) -> np.ndarray:
     what = f"a bool array of shape (height, width) = ({height}, {width})"
     arr = _array(value, what, 4 * height * width + 16)
     if arr.shape not in ((height, width), (width, height)):
-        raise WrongAnswerType(f"returned {short(value)} of shape {arr.shape}; expected {what}")
+        raise WrongAnswerType(f"returned {_shaped(value, arr)}; expected {what}")
     kind = arr.dtype.kind
     if kind == "b":
         return arr.astype(bool)

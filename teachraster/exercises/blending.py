@@ -120,8 +120,9 @@ def explain_blend(args, expected, got) -> str:
 #: answer says how to derive it, never the factors to type (that would be the answer). The
 #: task gives Porter and Duff's coverage argument (Compositing Digital Images, 1984), not a
 #: formula (r8: stating the straight form down to its numerator made 9.2a a transcription).
-_DERIVE = (": your 9.2a with src and dst written as c = α·C (each already carries its "
-           "alpha), on all four channels")  # fmt: skip
+# r12 09-8: "your 9.2a ..." read as a diagnosis of the student's answer; it is the rule
+_DERIVE = (": the blend is 9.2a's derivation with src and dst written as c = α·C (each "
+           "already carries its alpha), on all four channels")  # fmt: skip
 _FROM_STRAIGHT = (": each colour counts in the share of the pixel where it shows (the source "
                   "in α_s, the destination in α_d of the 1 − α_s the source leaves), the "
                   "result's alpha is the share either covers, and the answer is premultiplied, "

@@ -726,17 +726,46 @@ def _same(got, number, args=None) -> bool:
     return right
 
 
+def _shown(cause: str, value) -> str:
+    """The evidence as the explanation quotes it: a triangle by its number, a depth or a
+    distance to the digits the history prints, a colour or a pair channel by channel (r12
+    11-1: an int made the explanation fail, and the fallback said "expected 2", the frame's
+    number read as the answer's triangle)."""
+    if EVIDENCE[cause][0] == "triangle":
+        return f"triangle {int(value)}"
+    if isinstance(value, float):
+        return f"{round(value, 6)}"
+    return str(tuple(round(v, 6) for v in value))
+
+
 def _explain(args, number, got) -> str:
     cause, (row, col), value = got
-    shown = value if isinstance(value, float) else tuple(round(v, 6) for v in value)
     what = "frame" if _as_frame(number) is broken_frame(int(number)) else "redrawn frame"
-    return f"{what} {int(number)}: {cause!r} at pixel ({row}, {col}) with {shown}"
+    return f"{what} {int(number)}: {cause!r} at pixel ({row}, {col}) with {_shown(cause, value)}"
+
+
+def _in_history(b: BrokenFrame, cause: str, row: int, col: int, value) -> bool:
+    """Is ``value`` a value of its kind in pixel (row, col)'s two histories (a record's
+    triangle, depth, distance or colour)? Then it was read at this pixel, not at another."""
+    kind = EVIDENCE[cause][0]
+    records = [*b.frame.history(row, col).records, *b.intended.history(row, col).records]
+    if kind == "triangle":
+        return any(r.triangle == value for r in records)
+    if kind in ("depth", "number"):
+        found = [v for r in records for v in (r.depth, r.outside) if v is not None]
+        return _matches(kind, value, [v for v in found if np.isfinite(v)])
+    if kind == "colour":
+        return _matches(kind, value, [c for r in records for c in (r.color, r.color_after) if c])
+    return False
 
 
 def _swapped(number, got) -> str:
-    """Words for an answer that is right with its row and column, or its pair, swapped."""
+    """Words for an answer that is right with its row and column, or its pair, swapped. A
+    swap is claimed only where the value is not in the given pixel's own histories (r12 11-1:
+    triangle 8, culled at (24, 28), is also the evidence at (28, 24); the student read the
+    right pixel, the wrong record)."""
     b, (cause, (row, col), value) = _as_frame(number), got
-    if _right_at(b, cause, col, row, value):
+    if _right_at(b, cause, col, row, value) and not _in_history(b, cause, row, col, value):
         return (f". Your value is the evidence at ({col}, {row}): a pixel is (row, col), the "
                 "row first, then the column")  # fmt: skip
     if EVIDENCE[cause][0] == "pair" and _right_at(b, cause, row, col, tuple(value)[::-1]):
@@ -747,9 +776,16 @@ def _swapped(number, got) -> str:
 
 def _history_hint(number, row, col, what: str) -> str:
     n = int(number)
-    return (f"print(broken[{n}].frame.history({row}, {col}))"
-            + (f" and print(broken[{n}].intended.history({row}, {col}))"
-               if "intended" in what else ""))  # fmt: skip
+    shown = (f"print(broken[{n}].frame.history({row}, {col}))"
+             + (f" and print(broken[{n}].intended.history({row}, {col}))"
+                if "intended" in what else ""))  # fmt: skip
+    if _as_frame(number) is broken_frame(n):
+        return shown
+    # r12 11-5: the redrawn frame's values differ from the frame shown's
+    inside = f"b.frame.history({row}, {col})" + (
+        f" and b.intended.history({row}, {col})" if "intended" in what else "")  # fmt: skip
+    return (f"{inside} inside your function (this is the frame redrawn for the check, with "
+            f"other values; in your notebook, {shown} tell of the frame shown)")  # fmt: skip
 
 
 def _cause_words(args, number, got) -> str:
@@ -795,11 +831,32 @@ def _evidence_words(args, number, got) -> str:
     digits = {
         "depth": "all six decimals it prints",
         "pair": "every digit it prints (the distance's four decimals, the depth's six)",
+        "triangle": "its number in this frame (the same triangle in the intended frame has "
+        "the same corners on screen, frame.trace.window[k, :, :2], whatever its number)",
     }.get(kind, "the four digits it prints")
     return (f"the two histories of ({row}, {col}) do bear the mark of {cause!r} "
-            f"({_SIGNS[cause][1]}), but your value is not {what}, at that pixel. Read it off "
-            f"{_history_hint(number, row, col, what)}, with {digits}"
+            f"({_SIGNS[cause][1]}), but your value is not {what}, at that pixel"
+            + (_triangle_words(number, got) if kind == "triangle" else "")
+            + f". Read it off {_history_hint(number, row, col, what)}, with {digits}"
             + _swapped(number, got))  # fmt: skip
+
+
+def _triangle_words(number, got) -> str:
+    """What the triangle given is at the pixel, in both histories (r12 11-1: the first culled
+    triangle, 8, is culled here but not drawn in the intended frame)."""
+    b, (_, (row, col), value) = _as_frame(number), got
+    mine = [r for r in b.frame.history(row, col).records if r.triangle == value]
+    if not mine:
+        return f": triangle {value} does not reach this pixel in this frame's history"
+    keys = {_key(b.frame, r.piece) for r in mine}
+    there = [r.outcome for r in b.intended.history(row, col).records
+             if _key(b.intended, r.piece) in keys]  # fmt: skip
+    drawn = (
+        f"the intended frame's history shows it {there[0]} here, not passed"
+        if there
+        else "the intended frame's history has no triangle with its corners here"
+    )
+    return f": triangle {value} is {mine[0].outcome} here, but {drawn}"
 
 
 def _copied_words(args, number, got) -> str:
@@ -902,11 +959,18 @@ _SECRETS = tuple(
 )
 
 
+#: Failing checks of one frame in a kernel before each further check waits (:mod:`.tries`;
+#: r12 11-2: ten causes × 40 generic history readers passed all six frames, 2,100 checks in
+#: 51 s). A diagnosis needs a handful; 25 leaves room for a student who tries pixel by pixel.
+TRIES = 25
+
+
 def frame_exercise(number: int) -> Exercise:
     """Exercise ``broken_frame_<number>``: fn() returns (cause, (row, col), evidence)."""
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
         DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE, private=_SECRETS,
+        tries=TRIES,
     )  # fmt: skip
 
 

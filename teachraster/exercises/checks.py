@@ -12,10 +12,10 @@ from collections.abc import Callable
 from dataclasses import replace
 from functools import cache
 
-from . import output
+from . import output, tries
 from .exercise import Exercise
 from .report import Report
-from .running import SKIPPED, effective_budget
+from .running import SKIPPED, effective_budget, nested
 from .running import budget as time_budget
 from .value_checks import check_exercise
 
@@ -71,7 +71,9 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
     environment variable ``TEACHRASTER_CHECK_BUDGET`` where a lecturer sets it higher); a case
     may take a fifth of it, and the check stops at the first case that runs past its limit (an
     endless loop is reported after 2 s of CPU of the default 10). What the function prints is
-    kept aside and shown, capped, after the report.
+    kept aside and shown, capped, after the report. An exercise with
+    :attr:`~.exercise.Exercise.tries` (exercise 11) counts the failing checks of each task
+    and, past that many, waits before it answers (:mod:`.tries`; never inside another check).
     """
     if not isinstance(name, str) or name not in names():
         raise ValueError(f"name must be one of {names()}, got {name!r}")
@@ -79,8 +81,14 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
         raise TypeError(f"fn must be a function, got {type(fn).__name__}")
     seconds = effective_budget(budget)
     spec = exercise(name)
+    if not nested():  # past the failing checks allowed, a wait first (outside the budget)
+        tries.wait(name, spec.tries)
     with time_budget(seconds) as b, output.captured() as printed:
         report = check_exercise(spec, fn)
+    # the stub not written yet is no try
+    note = None if report.not_implemented else tries.counted(name, spec.tries, report.passed)
+    if note is not None:
+        report = replace(report, tries=note)
     if b.stopped is not None and report.stopped is None:  # a later step ran out of time
         kept = [f for f in report.failures if f.explanation != SKIPPED]
         n_run = report.n_cases - (len(report.failures) - len(kept))

@@ -186,6 +186,9 @@ class Exercise:
         (name, words): the checker's private data (exercise 11's salted key); an answer whose
         code names one of them (or a helper of its own does) is reported with ``words`` and
         not counted, as a call into :attr:`answers` is.
+    tries : int, optional
+        Failing checks of this task in one kernel before each further check waits (exercise
+        11, whose verdict a blind loop could query: :mod:`.tries`); None: no limit.
     """
 
     name: str
@@ -207,6 +210,7 @@ class Exercise:
     partial_names: bool = True
     example: int = 0
     private: Sequence[tuple[str, str]] = ()
+    tries: int | None = None
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

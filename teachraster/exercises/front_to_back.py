@@ -246,9 +246,14 @@ def _read_past_words(args, expected, got) -> str:
 
 def _stopped_words(args, expected, got) -> str:
     m, alpha = _stopped_at(args, expected, got)
-    return (f"you stopped after layer {m} of {len(args[0])}, where the alpha was {num(alpha)}: "
-            "below 1, the layers behind still show through the transmittance 1 − A; stop "
-            "only once the alpha is 1")  # fmt: skip
+    # r12 09-5: num(0.99963) alone is "1", which read "the alpha was 1: below 1"; told from
+    # 1 it keeps its digits, and "just below" says how close it came
+    five = f"{alpha:.5f}".rstrip("0")  # as the colour tuple beside it prints it
+    shown = max(num(alpha, 1.0), five if float(five) < 1 else "", key=len)
+    near = "just below 1" if alpha > 0.99 else "below 1"
+    return (f"you stopped after layer {m} of {len(args[0])}, where the alpha was {shown}, "
+            f"{near}: the layers behind still show through the transmittance 1 − A "
+            f"= {1 - alpha:.2g}; stop only once the alpha is 1")  # fmt: skip
 
 
 #: Mistakes no variant gives: the walk's order and where it stops (r8: a back-to-front loop
@@ -319,16 +324,23 @@ def _rule(args, expected, got) -> str:
 
 def draw_layers(ax, case, got):
     """The layers as swatches over a checkerboard, then the expected and your composites
-    (before any answer, the layers only: the figure never shows the answer first)."""
+    (before any answer, the layers only: the figure never shows the answer first); layers
+    read behind the opaque one crossed out and labelled "read"."""
     (layers,) = case[1]
     cells = list(layers)
     # numbers, and "yours" a line lower: eight labels share the axes' width (r11 09-D: "layer
     # 6expected")
     names = [str(k + 1) for k in range(len(layers))]
+    past = range(got.opaque, got.read) if isinstance(got, ReadPast) else range(0)
+    for k in past:  # r12 09-7: expected = yours; what is wrong is the layers read
+        names[k] += "\nread"
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
         names += ["expected", "\nyours"]
     artists = swatches(ax, cells, names)
+    for k in past:  # crossed out: read behind the opaque layer, where nothing can show
+        x = k * 1.3  # swatches' spacing (blending.swatches)
+        artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
     artists.append(ax.set_xlabel("layers 1, 2, ..., nearest first; premultiplied, drawn over "
                                  "a checkerboard", fontsize="x-small"))  # fmt: skip
     return artists

@@ -167,6 +167,29 @@ def _unmoved_range(p0, p1):
     return frozenset((r, c) for r, c in diamond_pixels(p0, p1) if r0 <= r <= r1 and c0 <= c <= c1)
 
 
+def _unmoved_range_words(p0, p1) -> str:
+    """What a search over the unmoved end points' pixels misses, for this line (r12 09-2: the
+    words said a diamond reaches past its pixel's square, which it does not, and gave a
+    vertical line's example for a horizontal one). An end point on a pixel boundary, x = k or
+    y = k, moves by −ε (−ε²) into column (row) k − 1, and lit pixels may lie there."""
+    (c0, _), (r0, _) = (sorted((int(np.floor(p0[k])), int(np.floor(p1[k])))) for k in (0, 1))
+    missed = sorted(diamond_pixels(p0, p1) - _unmoved_range(p0, p1))
+    moves = []
+    for axis, k, by, what in ((0, c0, "−ε", "column"), (1, r0, "−ε²", "row")):
+        if any(m[1 - axis] < k for m in missed):
+            on = f"{'xy'[axis]} = {k}"
+            ends = f"both end points, on {on}, move" if p0[axis] == p1[axis] else (
+                f"the end point on {on} moves")  # fmt: skip
+            moves.append(f"{ends} by {by} into {what} {k - 1}")
+    lit = ", ".join(f"({r}, {c})" for r, c in missed[:4]) + (" …" if len(missed) > 4 else "")
+    return (
+        "you searched only the pixels the unmoved end points' box covers, but the rule moves "
+        f"the end points first: {' and '.join(moves) or 'an end point moves'}, outside that "
+        f"box, and the moved segment lights pixels (row, col) {lit} there. Search the box of the moved end "
+        "points' pixels"
+    )
+
+
 def dda_pixels(p0, p1):
     """One pixel per major-axis centre, the line rounded there (no diamond)."""
     (x0, y0), (x1, y1) = p0, p1
@@ -316,10 +339,7 @@ LINE_MISTAKES = [
     ),
     Mistake(
         "search range from the unmoved ends",
-        "you searched only the pixels between those the unmoved end points lie in: the moved "
-        "segment reaches one pixel further (a vertical line on x = k lights column k − 1, "
-        "left of both end points), and a diamond reaches past its pixel's square; search one "
-        "pixel around the box of the moved end points",
+        lambda a, e, g: _unmoved_range_words(*a),
         gives=_unmoved_range,
     ),
     Mistake(

@@ -16,16 +16,37 @@ Every reference to the function runs the stub, in any thread: one taken before t
 sees the calls of its own thread only, and ``threading.setprofile`` threads started after it,
 so a worker thread's call passed unflagged. The check's own calls (its expected answers, its
 judging) run outside the window.
+
+Two roads round the list (r12 09-1, 11-4). A private helper of the answer's own module
+(``teachraster.core.lines._thin``, which ``tr.rasterize_line??`` shows; the checker's judge
+``_same`` in exercise 11) is watched too, and counts as the package's answer when called from
+outside the package (the package's own calls of it, from a public tool, do not count; the
+module's public functions are tools, free to use). And a copy of the package's code (a
+``types.FunctionType`` made of its ``__code__`` before the check, or its source pasted into a
+cell) is not a call of it: :func:`copied` looks at the code of the student's function, of the
+functions nested in it and of its own helpers, for the very code object of a listed answer or
+private helper (a clone), or its instructions with the names and constants they read (a paste,
+:func:`_print`; of a function of at least :data:`SMALLEST` instructions: a two-line helper may
+be written alike by chance).
 """
 
 from __future__ import annotations
 
+import dis
 import inspect
+import sys
 import threading
 import types
 from contextlib import contextmanager
+from dataclasses import replace
+from functools import lru_cache
 
 from .exercise import Exercise, PackageAnswer
+from .interrupt import _TRANSPARENT
+
+#: The fewest instructions a package function has for a pasted copy of its source to be named
+#: (a two-line helper, ``np.r_[c[:3] * c[3], c[3]]``, is written alike by chance).
+SMALLEST = 40
 
 #: The windows open now (a check inside a student's function opens a second one): each a
 #: (listed answers by function, the answers seen called). A tuple, replaced whole, so that a
@@ -68,12 +89,43 @@ def _matches(answer: PackageAnswer, original, args, kwargs) -> bool:
     return bool(answer.when(dict(bound.arguments)))
 
 
-def _noted(f, original, args, kwargs) -> None:
-    """Note a call of ``f`` in every open window that lists it (and whose ``when`` fits)."""
+def _noted(f, original, args, kwargs, outside: bool) -> None:
+    """Note a call of ``f`` in every open window that lists it (and whose ``when`` fits); a
+    private helper's (``direct``) only when called from outside the package (``outside``)."""
     for listed, seen in _OPEN:
-        for answer in listed.get(f, ()):
+        for answer, direct in listed.get(f, ()):
+            if direct and not outside:
+                continue
             if answer not in seen and _matches(answer, original, args, kwargs):
                 seen.append(answer)
+
+
+def _module_helpers(spec: Exercise) -> list:
+    """The private functions of the modules of ``spec``'s listed answers (r12 09-1: ``_thin``
+    passed 9.1 uncounted), each as a :class:`PackageAnswer` with the words of the answer of
+    its module; not the listed ones, nor a checker function whose ``finally`` the interrupt
+    must pass through (:func:`~.interrupt.transparent`: its code must stay its own)."""
+    listed = {_function(a) for a in spec.answers}
+    out, done = [], set()
+    for answer in spec.answers:
+        f = _function(answer)
+        if f is None or f.__module__ in done:
+            continue
+        done.add(f.__module__)
+        name = _name(answer).removeprefix("teachraster's ")
+        for key, value in vars(sys.modules[f.__module__]).items():
+            g = inspect.unwrap(value) if callable(value) else value
+            if (isinstance(g, types.FunctionType) and g.__module__ == f.__module__
+                    and key.startswith("_") and not key.startswith("__") and g not in listed
+                    and _own_code(g) not in _TRANSPARENT):  # fmt: skip
+                out.append(replace(answer, function=g, when=None,
+                                   what=f"a part of {name}'s own computation"))  # fmt: skip
+    return out
+
+
+def _own_code(f):
+    """``f``'s own code, also while a window has it swapped for the stub."""
+    return _SWAPPED[f][0] if f in _SWAPPED else f.__code__
 
 
 def _stub_code(f):
@@ -102,7 +154,8 @@ def _swap(f) -> None:
     original.__kwdefaults__ = f.__kwdefaults__
 
     def watch(args, kwargs):
-        _noted(f, original, args, kwargs)
+        caller = sys._getframe(2).f_globals.get("__name__", "")  # 0 watch, 1 the stub
+        _noted(f, original, args, kwargs, not str(caller).startswith("teachraster"))
         return original(*args, **kwargs)
 
     _SWAPPED[f] = [f.__code__, f.__kwdefaults__, 1]
@@ -124,10 +177,11 @@ def watching(spec: Exercise):
     list of the :class:`~.exercise.PackageAnswer` seen called."""
     global _OPEN
     listed: dict = {}
-    for answer in spec.answers:
+    for answer, direct in [*((a, False) for a in spec.answers),
+                           *((a, True) for a in _module_helpers(spec))]:  # fmt: skip
         f = _function(answer)
         if f is not None:
-            listed.setdefault(f, []).append(answer)
+            listed.setdefault(f, []).append((answer, direct))
     seen: list = []
     window = (listed, seen)
     with _LOCK:
@@ -181,10 +235,84 @@ def _closed_over(f) -> list:
 
 def _helpers(f, names) -> list:
     """The functions ``f`` may call that are not the package's: its globals named in
-    ``names``, and its closure's."""
+    ``names``, and its closure's (a copy of a package function, made of its code, is not the
+    package's: r12 09-1)."""
     found = [getattr(f, "__globals__", {}).get(name) for name in names] + _closed_over(f)
-    return [g for g in found if isinstance(g, types.FunctionType)
-            and not str(g.__module__).startswith("teachraster")]  # fmt: skip
+    return [g for g in found if isinstance(g, types.FunctionType) and not _genuine(g)]
+
+
+def _genuine(g) -> bool:
+    """Is ``g`` a function of the package, by name in its module (not a copy of one)?"""
+    module = str(g.__module__)
+    if not module.startswith("teachraster"):
+        return False
+    found = getattr(sys.modules.get(module), g.__name__, None)
+    return found is g or inspect.unwrap(found) is g if callable(found) else False
+
+
+def _codes(fn, depth: int = 4) -> list:
+    """The code objects of ``fn``, of the functions nested in it, and of its own helpers
+    (:func:`_helpers`, ``depth`` levels), as :func:`names_read` walks them."""
+    out, done = [], set()
+    todo = [(inspect.unwrap(fn) if callable(fn) else fn, 0)]
+    while todo:
+        f, level = todo.pop()
+        code = getattr(f, "__code__", None)
+        if code is None or code in done:
+            continue
+        done.add(code)
+        codes, names = [code], set()
+        while codes:
+            c = codes.pop()
+            out.append(c)
+            names.update(c.co_names)
+            codes += [k for k in c.co_consts if isinstance(k, types.CodeType)]
+        if level < depth:
+            todo += [(g, level + 1) for g in _helpers(f, names)]
+    return out
+
+
+@lru_cache(maxsize=4096)  # the package's codes are read again at every check
+def _print(code) -> tuple:
+    """What a copy of ``code`` keeps: its instructions with the names and constants they read
+    (nested code by its own print; locals by their place, so that renaming them changes
+    nothing), never its file, lines, name or docstring. Jumps by kind, not target, and a
+    method load as an attribute load: the same source compiles to either, depending on
+    whether ``np`` was imported in the same cell (Python 3.11)."""
+    out = []
+    for i in dis.get_instructions(code):
+        op = "LOAD_ATTR" if i.opname == "LOAD_METHOD" else i.opname
+        if i.opcode in dis.hasjrel or i.opcode in dis.hasjabs:
+            arg = None
+        elif i.opcode in dis.haslocal or i.opcode in dis.hasfree:
+            arg = i.arg
+        elif isinstance(i.argval, types.CodeType):
+            arg = _print(i.argval)
+        else:
+            arg = repr(i.argval)
+        out.append((op, arg))
+    return tuple(out)
+
+
+def copied(spec: Exercise, fn) -> PackageAnswer | None:
+    """The listed answer or private helper (:func:`_module_helpers`) whose code ``fn`` (or a
+    function nested in it, or a helper of its own) holds, copied: the very code object (a
+    clone made of ``__code__``, any size), or the same instructions (:func:`_print`: source
+    pasted, at least :data:`SMALLEST` instructions); None if none."""
+    own, pasted = {}, {}
+    for answer in [*spec.answers, *_module_helpers(spec)]:
+        f = _function(answer)
+        if f is not None:
+            code = _own_code(f)
+            own.setdefault(code, answer)
+            mine = _print(code)
+            if len(mine) >= SMALLEST:
+                pasted.setdefault(mine, answer)
+    for code in _codes(fn):
+        found = own.get(code) if any(code is c for c in own) else pasted.get(_print(code))
+        if found is not None:
+            return found
+    return None
 
 
 def package_note(spec: Exercise, fn, seen) -> str | None:
@@ -194,6 +322,9 @@ def package_note(spec: Exercise, fn, seen) -> str | None:
     for answer in spec.answers:
         if target is inspect.unwrap(answer.function) and answer.when is None:
             return _words(spec, answer, "is")
+    copy = copied(spec, fn)  # first: a pasted copy calls the module's helpers as well
+    if copy is not None:
+        return _words(spec, copy, "runs a copy of the code of")
     if seen:
         return _words(spec, seen[0], "calls")
     if spec.private:

@@ -78,6 +78,9 @@ class Report:
         rounding: named, not failed.
     scene : Scene or None
         The student's function in a whole picture beside the package's (:meth:`compare`).
+    tries : str or None
+        A note that the task has failed more checks in this kernel than a diagnosis needs,
+        and that further checks wait (:mod:`.tries`, exercise 11).
     """
 
     exercise: str
@@ -91,6 +94,7 @@ class Report:
     printed: str | None = None
     precision: str | None = None
     scene: object | None = field(default=None, repr=False, compare=False)
+    tries: str | None = None
 
     @property
     def passed(self) -> bool:
@@ -140,6 +144,8 @@ class Report:
             lines.append(f"- {self.stopped}")
         if self.package is not None:
             lines.append(f"- not counted: {self.package}")
+        if self.tries is not None:
+            lines.append(f"- {self.tries}")
         return self._with_printed("\n".join(lines))
 
     def _with_printed(self, text: str) -> str:

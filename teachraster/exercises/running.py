@@ -118,6 +118,11 @@ def current() -> Budget:
     return stack[-1] if stack else Budget(DEFAULT_BUDGET, share=1.0)
 
 
+def nested() -> bool:
+    """Is a check running in this thread already (this one is started inside it)?"""
+    return bool(getattr(_local, "stack", None))
+
+
 class budget:  # noqa: N801 - used as a context manager, named like one
     """``with budget(seconds) as b:`` every :func:`run_case` inside shares ``seconds`` of CPU.
 

@@ -1,0 +1,82 @@
+"""Failing checks of one task, counted in this kernel, and the wait past a generous number.
+
+Exercise 11's verdict is an oracle: a loop over the ten causes and a few dozen generic history
+readers ("the depth of the first culled record", "the colour after of the last passed one")
+finds every frame's point without a diagnosis (r12 11-2: 2,096 checks in 51 s passed frames 1
+to 5). A diagnosis needs a few checks; such a search needs hundreds. So an exercise may set
+:attr:`~.exercise.Exercise.tries`: past that many failing checks of the same task in one
+kernel, the report says a diagnosis does not need that many, and each further check of the
+task waits before it answers, :data:`WAIT_STEP` more for each failing check past the number,
+at most :data:`WAIT_MOST` (a search of 300 checks then takes hours; a student past the number
+waits seconds). A passing check starts the count again.
+
+The wait is a sleep before the check's budget opens: it takes no CPU and none of the student's
+budget, and it never hangs (capped). A check run inside the student's function (inside another
+check) does not wait: it never passes anyway. The environment variable
+``TEACHRASTER_CHECK_TRIES`` sets the number for a class (``0``: no counting, no wait; the test
+suite sets it). What this does not stop: a new kernel starts the count at 0 (docs/grading.md
+says so); it makes a blind search slow, not impossible.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import time
+
+#: The environment variable that sets the failing checks of one task before the wait (0: off).
+TRIES_VARIABLE = "TEACHRASTER_CHECK_TRIES"
+#: Seconds of wait added by each failing check past the number, and the longest wait.
+WAIT_STEP, WAIT_MOST = 1.0, 30.0
+
+_FAILED: dict[str, int] = {}
+_LOCK = threading.Lock()
+_sleep = time.sleep  # the tests replace it
+
+
+def allowed(default: int | None) -> int | None:
+    """The failing checks of one task allowed before the wait: ``default`` (an exercise's
+    :attr:`~.exercise.Exercise.tries`), or ``TEACHRASTER_CHECK_TRIES`` when set; None: no
+    limit (the exercise sets none, or the variable is 0). A value that is not a whole number
+    of 0 or more is a ``ValueError`` naming the variable."""
+    if default is None:
+        return None
+    text = os.environ.get(TRIES_VARIABLE, "").strip()
+    if not text:
+        return default
+    if not text.isdigit():
+        raise ValueError(
+            f"the environment variable {TRIES_VARIABLE} must be a whole number of failing "
+            f"checks (0: no limit), got {text!r}"
+        )
+    return int(text) or None
+
+
+def wait(name: str, default: int | None) -> float:
+    """Wait before checking task ``name`` if it failed more than allowed; the seconds waited."""
+    limit = allowed(default)
+    if limit is None:
+        return 0.0
+    with _LOCK:
+        past = _FAILED.get(name, 0) - limit
+    seconds = min(WAIT_MOST, WAIT_STEP * past) if past > 0 else 0.0
+    if seconds > 0:
+        _sleep(seconds)
+    return seconds
+
+
+def counted(name: str, default: int | None, passed: bool) -> str | None:
+    """Count one check of task ``name``; the report's note once it failed more than allowed."""
+    limit = allowed(default)
+    if limit is None:
+        return None
+    with _LOCK:
+        failed = _FAILED[name] = 0 if passed else _FAILED.get(name, 0) + 1
+    if failed <= limit:
+        return None
+    return (
+        f"{failed} failing checks of {name} in this kernel: a diagnosis does not need that "
+        "many tries (read the two histories of one changed pixel, stage by stage). Each "
+        f"further check waits {WAIT_STEP:g} s more before it answers (at most "
+        f"{WAIT_MOST:g} s), until one passes"
+    )
