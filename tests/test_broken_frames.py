@@ -464,9 +464,8 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     assert "near 0" not in task and "at fault" not in task
     depths = cells["frame_1_depths"]
     assert "depth[9]" in depths and "depth[3]" in depths
-    assert "the face in front has the smaller depth, in frame 1 the larger" in " ".join(
-        depths.replace("#", " ").split()
-    )
+    # r13: the comment no longer tells the order (it ships to students before any answer)
+    assert "smaller" not in depths and "larger" not in depths
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
     assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
     assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
@@ -484,9 +483,27 @@ def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
     task = " ".join(cells["frame_1_task"].split())
     for told in ("(24, 28)", "triangle 9", "the larger", "in front has the smaller"):
         assert told not in task, told
-    assert "which has the smaller depth" in task and "After the check" in task
+    assert "which has the smaller depth" in task and "Once the check passes" in task
     order = list(cells)
     assert order.index("frame_1_depths") == order.index("broken_frame_1_check") + 1
+
+
+def test_the_frame_1_depths_are_printed_only_once_its_check_has_passed(capsys):
+    """r13: the locked cell after 11.1's check printed both faces' depths at (24, 28) whatever
+    the check said (and its comment told which face has the smaller depth): 11.1 given away.
+    Now it prints them only when the last report is broken_frame_1's and passed."""
+    source = _cells()["frame_1_depths"]
+    wrong = lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5))  # noqa: E731
+    pair = {1: ex.broken_frame(1)}
+    for namespace in ({}, {"report": ex.check("broken_frame_1", wrong)},
+                      {"report": ex.check("broken_frame_2", sol.diagnosis(2))}):  # fmt: skip
+        exec(source, {"broken": pair, **namespace})
+        shown = capsys.readouterr().out
+        assert "once the check of broken_frame_1" in shown and "0.9" not in shown, shown
+        assert "in front" not in shown, shown
+    exec(source, {"broken": pair, "report": ex.check("broken_frame_1", sol.diagnosis(1))})
+    shown = capsys.readouterr().out
+    assert shown.count("in front (triangle 9)") == 2 and "0.973767" in shown, shown
 
 
 def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():
