@@ -7,6 +7,7 @@ the package in readable form, and the frames' hints are true without giving the 
 from __future__ import annotations
 
 import json
+import os
 import re
 from pathlib import Path
 
@@ -32,8 +33,11 @@ NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipy
 
 @pytest.fixture(autouse=True)
 def _no_wait(monkeypatch):
-    """These tests fail the frames' checks hundreds of times: no count, no wait (r12 11-2)."""
-    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
+    """These tests fail the frames' checks hundreds of times: no count, no wait (r12 11-2;
+    the variable is read once, at import, into ``tries.SETTING``: r13)."""
+    from teachraster.exercises import tries
+
+    monkeypatch.setattr(tries, "SETTING", "0")
 
 
 def _cells():
@@ -315,7 +319,7 @@ def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(mon
     waits = []
     monkeypatch.setattr(tries, "_sleep", waits.append)
     monkeypatch.setattr(tries, "_FAILED", {})
-    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "3")
+    monkeypatch.setattr(tries, "SETTING", "3")
     wrong = lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5))  # noqa: E731
     notes = [ex.check("broken_frame_1", wrong).tries for _ in range(5)]
     assert waits == [1.0] and notes[:3] == [None] * 3, (waits, notes)
@@ -337,14 +341,28 @@ def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(mon
     for _ in range(5):  # the stub not written yet is no try
         ex.check("broken_frame_3", lambda b: (_ for _ in ()).throw(NotImplementedError()))
     assert "broken_frame_3" not in tries._FAILED
-    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")
+    monkeypatch.setattr(tries, "SETTING", "0")
     assert (
         tries.wait("broken_frame_1", 25) == 0.0 and ex.check("broken_frame_1", wrong).tries is None
     )
-    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "many")
+    monkeypatch.setattr(tries, "SETTING", "many")
     with pytest.raises(ValueError, match="TEACHRASTER_CHECK_TRIES"):
         tries.allowed(25)
     assert bf.frame_exercise(1).tries == bf.TRIES == 25
+
+
+def test_a_student_cell_setting_the_tries_variable_changes_nothing(monkeypatch):
+    """r13: ``os.environ["TEACHRASTER_CHECK_TRIES"] = "0"`` in a student's cell switched the
+    wait off (the variable was read at every check). Now it is read once, as the package is
+    imported (the suite sets it before: tests/conftest.py)."""
+    from teachraster.exercises import tries
+
+    assert tries.SETTING == os.environ.get("TEACHRASTER_CHECK_TRIES") == "0"  # the suite's
+    monkeypatch.setattr(tries, "SETTING", "3")
+    monkeypatch.setenv("TEACHRASTER_CHECK_TRIES", "0")  # the student's line
+    assert tries.allowed(25) == 3
+    monkeypatch.delenv("TEACHRASTER_CHECK_TRIES")
+    assert tries.allowed(25) == 3
 
 
 def test_the_first_culled_triangle_is_told_what_it_is_never_expected_n_nor_a_swap():

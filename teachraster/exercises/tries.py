@@ -14,8 +14,12 @@ The wait is a sleep before the check's budget opens: it takes no CPU and none of
 budget, and it never hangs (capped). A check run inside the student's function (inside another
 check) does not wait: it never passes anyway. The environment variable
 ``TEACHRASTER_CHECK_TRIES`` sets the number for a class (``0``: no counting, no wait; the test
-suite sets it). What this does not stop: a new kernel starts the count at 0 (docs/grading.md
-says so); it makes a blind search slow, not impossible.
+suite sets it). It is read once, when :mod:`teachraster.exercises` is first imported (the
+notebooks import it in their first locked cell, before any student cell), into
+:data:`SETTING`: a student's cell that sets the variable later changes nothing (r13: one line
+``os.environ[...] = "0"`` switched the wait off, under ``nbgrader autograde`` too). What this
+does not stop: a new kernel starts the count at 0 (docs/grading.md says so), and code that
+rebinds this module's names; it makes a blind search slow, not impossible.
 """
 
 from __future__ import annotations
@@ -29,6 +33,9 @@ TRIES_VARIABLE = "TEACHRASTER_CHECK_TRIES"
 #: Seconds of wait added by each failing check past the number, and the longest wait.
 WAIT_STEP, WAIT_MOST = 1.0, 30.0
 
+#: The variable's text as the kernel started (read once, at import: see the module's note).
+SETTING = os.environ.get(TRIES_VARIABLE, "")
+
 _FAILED: dict[str, int] = {}
 _LOCK = threading.Lock()
 _sleep = time.sleep  # the tests replace it
@@ -36,12 +43,13 @@ _sleep = time.sleep  # the tests replace it
 
 def allowed(default: int | None) -> int | None:
     """The failing checks of one task allowed before the wait: ``default`` (an exercise's
-    :attr:`~.exercise.Exercise.tries`), or ``TEACHRASTER_CHECK_TRIES`` when set; None: no
-    limit (the exercise sets none, or the variable is 0). A value that is not a whole number
-    of 0 or more is a ``ValueError`` naming the variable."""
+    :attr:`~.exercise.Exercise.tries`), or ``TEACHRASTER_CHECK_TRIES`` when it was set as the
+    package was imported (:data:`SETTING`); None: no limit (the exercise sets none, or the
+    variable is 0). A value that is not a whole number of 0 or more is a ``ValueError``
+    naming the variable."""
     if default is None:
         return None
-    text = os.environ.get(TRIES_VARIABLE, "").strip()
+    text = SETTING.strip()
     if not text:
         return default
     if not text.isdigit():
