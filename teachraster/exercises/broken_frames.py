@@ -789,15 +789,18 @@ def _history_hint(number, row, col, what: str) -> str:
 
 
 def _cause_words(args, number, got) -> str:
-    """A cause that is not the frame's (the pixel lacks its mark, or it is the other one)."""
+    """A cause that is not the frame's. The words are the same whether or not the pixel's
+    histories bear the stated cause's mark (r13 11-2: "do / do not bear the mark of" told a
+    loop over the ten causes which to keep): the stated cause does not explain them, what it
+    would show, and where to look; never which other cause it is or is not."""
     cause, (row, col), value = got
     _, p = _judged(number, got)
     b = _as_frame(number)
-    marked = p is not None and _SIGNS[cause][0](p, b)
-    words = (f"the two histories of ({row}, {col}) do bear the mark of {cause!r} ("
-             f"{_SIGNS[cause][1]}), but another cause broke this frame" if marked else
-             f"the two histories of ({row}, {col}) do not bear the mark of {cause!r} (it would "
-             f"show: {_SIGNS[cause][1]}), so the cause is another")  # fmt: skip
+    words = (f"{cause!r} does not explain what the two histories of ({row}, {col}) show (it "
+             f"would show as: {_SIGNS[cause][1]}). Read "
+             f"{_history_hint(number, row, col, 'the intended')} side by side, stage by stage "
+             f"({', '.join(STAGES)}, then the colour shown), and find the first stage where "
+             "they part: the cause is what acts there")  # fmt: skip
     real = next((c for c in CAUSES if _is_cause(b.number, c)), None)
     if real is not None and p is not None:
         kind = EVIDENCE[real][0]

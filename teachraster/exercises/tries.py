@@ -3,7 +3,9 @@
 Exercise 11's verdict is an oracle: a loop over the ten causes and a few dozen generic history
 readers ("the depth of the first culled record", "the colour after of the last passed one")
 finds every frame's point without a diagnosis (r12 11-2: 2,096 checks in 51 s passed frames 1
-to 5). A diagnosis needs a few checks; such a search needs hundreds. So an exercise may set
+to 5). A diagnosis needs a few checks; that blind product needs hundreds (a loop that reads
+the verdict, a wrong cause first, needs a few dozen: r13, docs/grading.md; this does not stop
+it). So an exercise may set
 :attr:`~.exercise.Exercise.tries`: past that many failing checks of the same task in one
 kernel, the report says a diagnosis does not need that many, and each further check of the
 task waits before it answers, :data:`WAIT_STEP` more for each failing check past the number,
