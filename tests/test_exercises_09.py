@@ -782,6 +782,25 @@ def _thin_line(p0, p1):
     return {(int(r), int(c)) for r, c in zip(*np.nonzero(coverage))}
 
 
+def _diamond_line(p0, p1):
+    """9.1 through ``teachraster.core.line_rules.diamond``, a public function of the rule
+    module ``_thin??`` shows (r13 09-1: 50/50, no "not counted")."""
+    from teachraster.core import line_rules, lines
+
+    units = lines.to_units(lines.snap(np.array([p0, p1], float), 8), 8)
+    a, b = (tuple(int(v) for v in u) for u in units)
+    steps = line_rules.diamond(a, b, lines.units_per_pixel(8), 12, 12, False)
+    return {(int(r), int(c)) for r, c in zip(steps.rows[steps.lit], steps.cols[steps.lit])}
+
+
+def test_a_function_of_the_line_rule_module_is_not_counted():
+    """r13 09-1: the rule module's public functions are the answer's computation too."""
+    report = ex.check("line_pixels", _diamond_line, budget=60)
+    assert not report.passed and "teachraster's diamond" in (report.package or ""), str(report)
+    assert "rasterize_line's own computation" in report.package, report.package
+    assert report.failures == [], report.failures  # right, but not the student's work
+
+
 def _clone(f):
     """A copy of ``f`` made of its code before the check (the watch swaps ``f.__code__``)."""
     import types

@@ -123,6 +123,9 @@ class PackageAnswer:
     when: Callable[[dict], bool] | None = None
     what: str = "this very answer"  # what it computes, as the "not counted" note says
     words: str | None = None  # what the report says instead of "teachraster's <name>, which..."
+    # modules whose every function, public too, is a part of this answer's computation,
+    # watched as its own module's private helpers are (r13 09-1: line_rules.diamond)
+    modules: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

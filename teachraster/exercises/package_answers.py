@@ -21,7 +21,9 @@ Two roads round the list (r12 09-1, 11-4). A private helper of the answer's own 
 (``teachraster.core.lines._thin``, which ``tr.rasterize_line??`` shows; the checker's judge
 ``_same`` in exercise 11) is watched too, and counts as the package's answer when called from
 outside the package (the package's own calls of it, from a public tool, do not count; the
-module's public functions are tools, free to use). And a copy of the package's code (a
+module's public functions are tools, free to use). An answer may name further modules whose
+every function is part of its computation (:attr:`~.exercise.PackageAnswer.modules`; r13
+09-1: ``line_rules.diamond``, which ``_thin??`` shows), watched the same way. And a copy of the package's code (a
 ``types.FunctionType`` made of its ``__code__`` before the check, or its source pasted into a
 cell) is not a call of it: :func:`copied` looks at the code of the student's function, of the
 functions nested in it and of its own helpers, for the very code object of a listed answer or
@@ -33,6 +35,7 @@ be written alike by chance).
 from __future__ import annotations
 
 import dis
+import importlib
 import inspect
 import sys
 import threading
@@ -102,24 +105,29 @@ def _noted(f, original, args, kwargs, outside: bool) -> None:
 
 def _module_helpers(spec: Exercise) -> list:
     """The private functions of the modules of ``spec``'s listed answers (r12 09-1: ``_thin``
-    passed 9.1 uncounted), each as a :class:`PackageAnswer` with the words of the answer of
-    its module; not the listed ones, nor a checker function whose ``finally`` the interrupt
-    must pass through (:func:`~.interrupt.transparent`: its code must stay its own)."""
+    passed 9.1 uncounted), and every function of the modules an answer names in
+    :attr:`~.exercise.PackageAnswer.modules` (r13 09-1: ``line_rules.diamond``, reached from
+    ``_thin??``), each as a :class:`PackageAnswer` with the words of the answer of its
+    module; not the listed ones, nor a checker function whose ``finally`` the interrupt must
+    pass through (:func:`~.interrupt.transparent`: its code must stay its own)."""
     listed = {_function(a) for a in spec.answers}
     out, done = [], set()
     for answer in spec.answers:
         f = _function(answer)
-        if f is None or f.__module__ in done:
+        if f is None:
             continue
-        done.add(f.__module__)
         name = _name(answer).removeprefix("teachraster's ")
-        for key, value in vars(sys.modules[f.__module__]).items():
-            g = inspect.unwrap(value) if callable(value) else value
-            if (isinstance(g, types.FunctionType) and g.__module__ == f.__module__
-                    and key.startswith("_") and not key.startswith("__") and g not in listed
-                    and _own_code(g) not in _TRANSPARENT):  # fmt: skip
-                out.append(replace(answer, function=g, when=None,
-                                   what=f"a part of {name}'s own computation"))  # fmt: skip
+        for module, every in ((f.__module__, False), *((m, True) for m in answer.modules)):
+            if module in done:
+                continue
+            done.add(module)
+            for key, value in vars(importlib.import_module(module)).items():
+                g = inspect.unwrap(value) if callable(value) else value
+                if (isinstance(g, types.FunctionType) and g.__module__ == module
+                        and (every or key.startswith("_")) and not key.startswith("__")
+                        and g not in listed and _own_code(g) not in _TRANSPARENT):  # fmt: skip
+                    out.append(replace(answer, function=g, when=None, modules=(),
+                                       what=f"a part of {name}'s own computation"))  # fmt: skip
     return out
 
 
