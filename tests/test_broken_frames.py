@@ -261,6 +261,34 @@ def test_an_answer_that_reads_the_salted_key_is_not_counted():
     assert "reads the checker's _SALT" in str(report.package)
 
 
+_KEY = {1: "a constant of the student's own, named like the checker's key"}
+
+
+def test_the_key_is_known_by_its_value_never_by_its_name():
+    """r13 11-4: judged by the name, a student's own constant named ``_KEY`` was refused and
+    the real key copied under another name passed. Now the key's object, a copy of it, or
+    one of its texts, under any name, is refused, and an honest ``_KEY`` is not."""
+    honest = sol.diagnosis(1)
+
+    def own_key(b):
+        return honest(b) if _KEY else None
+
+    report = ex.check("broken_frame_1", own_key)
+    assert report.passed and report.package is None, str(report)
+    hashes = dict(bf._KEY)  # a copy, under another name
+    typed = bf._KEY[1]  # one of its texts
+
+    def copied(b):
+        return honest(b) if hashes else None
+
+    def one_text(b):
+        return honest(b) if typed else None
+
+    for fn in (copied, one_text):
+        report = ex.check("broken_frame_1", fn)
+        assert not report.passed and "reads the checker's _KEY" in str(report.package), fn
+
+
 def test_the_look_alike_frames_1_and_2_take_evidence_of_different_kinds():
     """r11 11-D: frames 1 and 2 both took the depth shown, so one reader served both causes
     and the cause was a coin flip. Frame 2's evidence is the triangle culled in it and drawn

@@ -14,7 +14,8 @@ What is hidden and what is not. The frames come in look-alike pairs (1-2, 3-4, 5
 the same symptom, the same picture and the same intended picture pixel for pixel. Hidden: the
 cause (no attribute or repr of a :class:`BrokenFrame` names it; the module keeps only a salted
 hash of each frame's cause, which hides the key from a reader, not from someone who hashes
-the ten names: an answer whose code names ``_KEY`` or ``_SALT`` is not counted), the frames'
+the ten names: an answer whose code reads ``_KEY`` or ``_SALT``, under any name, is not
+counted), the frames'
 ``plan`` (:data:`WITHHELD`). Not hidden: ``frame.trace`` and
 ``frame.attrs``, the renderer's records that the histories read, and this module's source,
 which shows how each frame is built. Neither gives the point: the evidence is a value of the
@@ -954,11 +955,12 @@ _PRIVATE = tuple(
 )  # fmt: skip
 
 
-#: The key's data: code that names them reads the cause off the checker (r11 11-E: hashing
-#: the ten causes with ``_SALT`` against ``_KEY`` passed 6/6 with no private call).
+#: The key's data: code that reads them (the objects, a copy, or one of their texts, under
+#: any name: r13 11-4) reads the cause off the checker (r11 11-E: hashing the ten causes with
+#: ``_SALT`` against ``_KEY`` passed 6/6 with no private call).
 _SECRETS = tuple(
-    (name, "the frames' causes, hashed: not counted (name the cause the histories show)")
-    for name in ("_KEY", "_SALT")
+    (name, value, "the frames' causes, hashed: not counted (name the cause the histories show)")
+    for name, value in (("_KEY", _KEY), ("_SALT", _SALT))
 )
 
 

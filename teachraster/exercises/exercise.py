@@ -185,10 +185,11 @@ class Exercise:
         reason (default). False: named only where it gives every failing answer, for mistakes
         that differ on a few cases only (r9: ``line_pixels``' "(−ε, −ε)" shared one failing
         answer with "p1 tested before moving", and named it).
-    private : sequence of (str, str)
-        (name, words): the checker's private data (exercise 11's salted key); an answer whose
-        code names one of them (or a helper of its own does) is reported with ``words`` and
-        not counted, as a call into :attr:`answers` is.
+    private : sequence of (str, object, str)
+        (name, value, words): the checker's private data (exercise 11's salted key); an
+        answer whose code reads the value, a copy of it or one of its texts, under any name
+        (or a helper of its own does), is reported with ``words`` and not counted, as a call
+        into :attr:`answers` is.
     tries : int, optional
         Failing checks of this task in one kernel before each further check waits (exercise
         11, whose verdict a blind loop could query: :mod:`.tries`); None: no limit.
@@ -212,7 +213,7 @@ class Exercise:
     compose: Callable | None = None
     partial_names: bool = True
     example: int = 0
-    private: Sequence[tuple[str, str]] = ()
+    private: Sequence[tuple[str, object, str]] = ()
     tries: int | None = None
 
     def all_mistakes(self) -> list[Mistake]:

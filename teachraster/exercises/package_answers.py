@@ -40,6 +40,7 @@ import inspect
 import sys
 import threading
 import types
+from collections.abc import Iterable
 from contextlib import contextmanager
 from dataclasses import replace
 from functools import lru_cache
@@ -205,11 +206,13 @@ def watching(spec: Exercise):
                 _unswap(f)
 
 
-def names_read(fn, depth: int = 4) -> set[str]:
-    """The names ``fn``'s code reads (attributes, globals) and the texts it (or its closure)
-    holds, with those of its nested functions and of the functions it may call, its globals'
-    and its closure's (``depth`` levels; the package's functions are not read)."""
-    names: set[str] = set()
+def values_read(fn, depth: int = 4) -> list:
+    """The objects ``fn``'s code may read: its constants and its closure's, its globals named
+    in its code, and the attributes so named (by a name or a text it holds) of the modules
+    among them (``bf._KEY``, ``getattr(bf, "_SALT")``), with those of its nested functions and
+    of the functions it may call, its globals' and its closure's (``depth`` levels; the
+    package's functions are not read)."""
+    values: list = []
     done: set = set()
     todo = [(inspect.unwrap(fn) if callable(fn) else fn, 0)]
     while todo:
@@ -218,16 +221,44 @@ def names_read(fn, depth: int = 4) -> set[str]:
         if code is None or code in done:
             continue
         done.add(code)
-        codes = [code]
+        codes, names, held = [code], set(), _closed_over(f)
         while codes:
             c = codes.pop()
             names.update(c.co_names)
-            names.update(k for k in c.co_consts if isinstance(k, str))
+            held += [k for k in c.co_consts if not isinstance(k, types.CodeType)]
             codes += [k for k in c.co_consts if isinstance(k, types.CodeType)]
-        names.update(v for v in _closed_over(f) if isinstance(v, str))
+        names.update(v for v in held if isinstance(v, str))
+        space = getattr(f, "__globals__", {})
+        held += [space[name] for name in names if name in space]
+        modules = [v for v in held if isinstance(v, types.ModuleType)]
+        held += [vars(m)[name] for m in modules for name in names if name in vars(m)]
+        values += held
         if level < depth:
             todo += [(g, level + 1) for g in _helpers(f, names)]
-    return names
+    return values
+
+
+def _texts(value) -> set:
+    """The texts a private value is or holds (a mapping's values, a sequence's items)."""
+    if isinstance(value, str):
+        return {value}
+    items = value.values() if isinstance(value, dict) else value
+    return {v for v in items if isinstance(v, str)} if isinstance(items, Iterable) else set()
+
+
+def _reads(values: list, private) -> bool:
+    """Is ``private`` among ``values``: the very object, an equal copy (by type and value), or
+    one of its texts (r13 11-4: judged by the name, an honest constant named ``_KEY`` was
+    refused and the key copied under another name passed)."""
+    texts = _texts(private)
+    for v in values:
+        if v is private or (type(v) is type(private) and v == private):
+            return True
+        if isinstance(v, str) and v in texts:
+            return True
+        if isinstance(v, (dict, list, tuple, set, frozenset)) and texts & _texts(v):
+            return True
+    return False
 
 
 def _closed_over(f) -> list:
@@ -260,7 +291,7 @@ def _genuine(g) -> bool:
 
 def _codes(fn, depth: int = 4) -> list:
     """The code objects of ``fn``, of the functions nested in it, and of its own helpers
-    (:func:`_helpers`, ``depth`` levels), as :func:`names_read` walks them."""
+    (:func:`_helpers`, ``depth`` levels), as :func:`values_read` walks them."""
     out, done = [], set()
     todo = [(inspect.unwrap(fn) if callable(fn) else fn, 0)]
     while todo:
@@ -336,8 +367,8 @@ def package_note(spec: Exercise, fn, seen) -> str | None:
     if seen:
         return _words(spec, seen[0], "calls")
     if spec.private:
-        read = names_read(fn)
-        for name, words in spec.private:
-            if name in read:
+        read = values_read(fn)
+        for name, value, words in spec.private:
+            if _reads(read, value):
                 return f"your {spec.name} reads the checker's {name}: {words}"
     return None
