@@ -140,6 +140,11 @@ def transparent(fn):
     return fn
 
 
+def is_transparent(code) -> bool:
+    """Whether ``code`` belongs to a function marked with :func:`transparent`."""
+    return code in _TRANSPARENT
+
+
 def escapes(frame, guard) -> bool:
     """True when an exception raised now in ``frame`` reaches ``guard`` uncaught."""
     while frame is not None and frame is not guard:

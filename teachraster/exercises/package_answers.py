@@ -46,7 +46,7 @@ from dataclasses import replace
 from functools import lru_cache
 
 from .exercise import Exercise, PackageAnswer
-from .interrupt import _TRANSPARENT
+from .interrupt import is_transparent
 
 #: The fewest instructions a package function has for a pasted copy of its source to be named
 #: (a two-line helper, ``np.r_[c[:3] * c[3], c[3]]``, is written alike by chance).
@@ -126,7 +126,7 @@ def _module_helpers(spec: Exercise) -> list:
                 g = inspect.unwrap(value) if callable(value) else value
                 if (isinstance(g, types.FunctionType) and g.__module__ == module
                         and (every or key.startswith("_")) and not key.startswith("__")
-                        and g not in listed and _own_code(g) not in _TRANSPARENT):  # fmt: skip
+                        and g not in listed and not is_transparent(_own_code(g))):  # fmt: skip
                     out.append(replace(answer, function=g, when=None, modules=(),
                                        what=f"a part of {name}'s own computation"))  # fmt: skip
     return out
