@@ -106,24 +106,3 @@ def test_the_floor_keeps_a_log_axis_from_labelling_every_minor_tick():
     labelled = [t for t in ax.get_yticklabels(minor=True) if t.get_text()]
     assert len(labelled) <= 2
     plt.close(fig)
-
-
-def test_labels_keep_clear_of_the_other_points():
-    """Review r12 (lesson 06's DivideCostExplorer at divide 1): crowded points put "N=16"
-    against N=8's point, two labels at one point. No label's box comes within 8 px of another
-    label's point (it touched before)."""
-    rows = [{"variant": n, "cost": c, "error": e}
-            for n, c, e in [("affine", 1, 210), ("N=32", 1.3, 70), ("N=16", 1.6, 50),
-                            ("N=8", 2.2, 24), ("N=4", 3.5, 14), ("N=2", 6, 5.7),
-                            ("perspective", 6, 0)]]  # fmt: skip
-    fig, ax = plt.subplots(figsize=(5, 3.2), dpi=100)
-    art = plot_pareto(ax, rows, "cost")
-    fig.canvas.draw()
-    renderer = fig.canvas.get_renderer()
-    at = {k: ax.transData.transform((p.get_xdata()[0], p.get_ydata()[0]))
-          for k, p in art.points.items()}  # fmt: skip
-    for name, label in art.labels.items():
-        box = label.get_window_extent(renderer).padded(8)
-        near = [k for k, (x, y) in at.items() if k != name and box.contains(x, y)]
-        assert not near, (name, near)
-    plt.close(fig)

@@ -193,10 +193,6 @@ def cost_limits(costs, *, log: bool = True) -> tuple[float, float]:
     return lo - 0.08 * span, hi + 0.6 * span
 
 
-#: Half the side of the square around another point that a label keeps clear of, in points
-#: (the marker's radius, 5.5, and as much again).
-POINT_MARGIN = 11.0
-
 #: Where a label may sit relative to its point, in points, tried in this order:
 #: up-right, down-right, up-left, down-left.
 LABEL_SPOTS = ((1, 1), (1, -1), (-1, 1), (-1, -1))
@@ -205,26 +201,20 @@ LABEL_SPOTS = ((1, 1), (1, -1), (-1, 1), (-1, -1))
 def spread_labels(ax, labels, gap: float = 6.0) -> None:
     """Move each visible label to the first spot beside its point that overlaps no label
     placed before it (estimated text boxes, no renderer needed, so a widget can call it on
-    every update); a label that fits nowhere keeps the up-right spot.
-
-    Other labels' points are obstacles too, with a margin: a label beside a neighbour's point
-    reads as that point's (review r12, lesson 06 at divide 1: "N=8" beside N=4's point)."""
+    every update); a label that fits nowhere keeps the up-right spot."""
     to_px = ax.figure.dpi / 72.0
     placed = []
     shown = [lab for lab in labels if lab.get_visible()]
-    anchors = {id(lab): ax.transData.transform(lab.xy) / to_px for lab in shown}  # in points
+    anchors = {id(lab): ax.transData.transform(lab.xy) for lab in shown}
     for lab in sorted(shown, key=lambda lab: -anchors[id(lab)][1]):  # top first
         size = lab.get_fontsize()
         w, h = 0.6 * size * len(lab.get_text()), 1.2 * size
-        x0, y0 = anchors[id(lab)]
-        points = [(x - POINT_MARGIN, y - POINT_MARGIN, x + POINT_MARGIN, y + POINT_MARGIN)
-                  for other in shown if other is not lab
-                  for x, y in [anchors[id(other)]]]  # fmt: skip
+        x0, y0 = anchors[id(lab)] / to_px  # in points
         for sx, sy in LABEL_SPOTS:
             dx = gap + 2 if sx > 0 else -(gap + 2) - w
             dy = gap if sy > 0 else -gap - h
             box = (x0 + dx, y0 + dy, x0 + dx + w, y0 + dy + h)
-            if not any(_overlap(box, other) for other in placed + points):
+            if not any(_overlap(box, other) for other in placed):
                 break
         else:
             dx, dy = gap + 2, gap
