@@ -402,16 +402,27 @@ def run_all(name: str, extra_source: str) -> BrowserRun:
     )
 
 
-def _save(page, path: Path) -> None:
-    """Save the notebook (its outputs are what the tests read) and wait until it is on disk."""
+def _save(page, path: Path, tries: int = 4) -> None:
+    """Save the notebook (its outputs are what the tests read) and wait until it is on disk.
+
+    Saved means written and clean. A save is asked again every 15 s: a menu click can be lost
+    while the page is busy, and a widget whose state changes after the save (a picture drawn
+    ahead arriving late) marks the notebook dirty again. After ``tries`` saves, written is
+    enough: the file on disk is whole (JupyterLab writes atomically), only not the very last
+    widget state."""
     before = path.stat().st_mtime_ns
-    page.click(".lm-MenuBar-itemLabel:text-is('File')")  # the menu: no widget takes the keys
-    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
-    deadline = time.time() + 60
-    while path.stat().st_mtime_ns == before or page.locator(".jp-mod-dirty").count():
-        if time.time() > deadline:
-            raise RuntimeError(f"JupyterLab did not save {path.name} within 60 s")
-        time.sleep(0.2)
+    for attempt in range(tries):
+        page.click(".lm-MenuBar-itemLabel:text-is('File')")  # the menu: no widget takes the keys
+        page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+        deadline = time.time() + 15
+        while time.time() < deadline:
+            written = path.stat().st_mtime_ns != before
+            if written and not page.locator(".jp-mod-dirty").count():
+                return
+            time.sleep(0.2)
+        if written and attempt == tries - 1:
+            return
+    raise RuntimeError(f"JupyterLab did not save {path.name} in {tries} tries of 15 s")
 
 
 def stop() -> None:
