@@ -206,13 +206,12 @@ def watching(spec: Exercise):
                 _unswap(f)
 
 
-def values_read(fn, depth: int = 4) -> list:
-    """The objects ``fn``'s code may read: its constants and its closure's, its globals named
-    in its code, and the attributes so named (by a name or a text it holds) of the modules
-    among them (``bf._KEY``, ``getattr(bf, "_SALT")``), with those of its nested functions and
-    of the functions it may call, its globals' and its closure's (``depth`` levels; the
-    package's functions are not read)."""
-    values: list = []
+def _walk(fn, depth: int = 4):
+    """Each function ``fn`` may run, once: ``fn``, then the functions it may call that are not
+    the package's (:func:`_helpers`, ``depth`` levels), as ``(function, its code objects with
+    the nested ones, the names they read)``; a text among its constants or in its closure
+    counts as a name (``getattr(bf, "_SALT")``). The one walk of both :func:`values_read` and
+    :func:`_codes`, so that what is read and what is compared are the same functions."""
     done: set = set()
     todo = [(inspect.unwrap(fn) if callable(fn) else fn, 0)]
     while todo:
@@ -221,20 +220,34 @@ def values_read(fn, depth: int = 4) -> list:
         if code is None or code in done:
             continue
         done.add(code)
-        codes, names, held = [code], set(), _closed_over(f)
-        while codes:
-            c = codes.pop()
+        codes, names, stack = [], set(), [code]
+        while stack:
+            c = stack.pop()
+            codes.append(c)
             names.update(c.co_names)
-            held += [k for k in c.co_consts if not isinstance(k, types.CodeType)]
-            codes += [k for k in c.co_consts if isinstance(k, types.CodeType)]
-        names.update(v for v in held if isinstance(v, str))
+            names.update(k for k in c.co_consts if isinstance(k, str))
+            stack += [k for k in c.co_consts if isinstance(k, types.CodeType)]
+        names.update(v for v in _closed_over(f) if isinstance(v, str))
+        yield f, codes, names
+        if level < depth:
+            todo += [(g, level + 1) for g in _helpers(f, names)]
+
+
+def values_read(fn, depth: int = 4) -> list:
+    """The objects ``fn``'s code may read: its constants and its closure's, its globals named
+    in its code, and the attributes so named (by a name or a text it holds) of the modules
+    among them (``bf._KEY``, ``getattr(bf, "_SALT")``), with those of its nested functions and
+    of the functions it may call, its globals' and its closure's (``depth`` levels; the
+    package's functions are not read)."""
+    values: list = []
+    for f, codes, names in _walk(fn, depth):
+        held = _closed_over(f)
+        held += [k for c in codes for k in c.co_consts if not isinstance(k, types.CodeType)]
         space = getattr(f, "__globals__", {})
         held += [space[name] for name in names if name in space]
         modules = [v for v in held if isinstance(v, types.ModuleType)]
         held += [vars(m)[name] for m in modules for name in names if name in vars(m)]
         values += held
-        if level < depth:
-            todo += [(g, level + 1) for g in _helpers(f, names)]
     return values
 
 
@@ -291,24 +304,8 @@ def _genuine(g) -> bool:
 
 def _codes(fn, depth: int = 4) -> list:
     """The code objects of ``fn``, of the functions nested in it, and of its own helpers
-    (:func:`_helpers`, ``depth`` levels), as :func:`values_read` walks them."""
-    out, done = [], set()
-    todo = [(inspect.unwrap(fn) if callable(fn) else fn, 0)]
-    while todo:
-        f, level = todo.pop()
-        code = getattr(f, "__code__", None)
-        if code is None or code in done:
-            continue
-        done.add(code)
-        codes, names = [code], set()
-        while codes:
-            c = codes.pop()
-            out.append(c)
-            names.update(c.co_names)
-            codes += [k for k in c.co_consts if isinstance(k, types.CodeType)]
-        if level < depth:
-            todo += [(g, level + 1) for g in _helpers(f, names)]
-    return out
+    (:func:`_walk`)."""
+    return [c for _, codes, _ in _walk(fn, depth) for c in codes]
 
 
 @lru_cache(maxsize=4096)  # the package's codes are read again at every check
