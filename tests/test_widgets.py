@@ -989,6 +989,22 @@ def test_filter_truths_computed_ahead_are_the_truths_at_those_tilts():
     direct.close()
 
 
+def test_filter_truths_ahead_reach_every_tilt_nearest_first_so_a_drag_ends_on_one():
+    from teachraster.widgets import FilterExplorer
+
+    ex = FilterExplorer(16, 12, tilt=80.0, samples=2, backend="image")
+    order = []
+    while (ahead := ex._next_truth_ahead()) is not None:
+        order.append(ahead)
+        ex._truths_ahead()
+    assert order[:4] == [81.0, 79.0, 82.0, 78.0]  # nearest first, the next one up first
+    assert set(ex._truths) == {float(t) for t in range(90)}  # every position, none lost
+    kept = ex._truths[3.0]
+    ex.tilt.value = 3.0  # a drag released far from 80 (or a value set from code) ...
+    assert ex.truth is kept  # ... finds its truth kept, not computed again
+    ex.close()
+
+
 def test_depth_explorer_drafts_end_on_the_picture_set_from_code():
     from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
 

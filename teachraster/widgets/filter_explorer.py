@@ -35,8 +35,9 @@ from .textured import CORNER_UV, TRIANGLES, plane_clip
 #: The picture's alternative text in the page
 ALT = "the filtered texture, its mip levels and its error"
 
-#: Tilts whose footprint average is kept (0.5 MiB each at 160 x 120).
-TRUTH_CACHE = 32
+#: Tilts whose footprint average is kept (0.44 MiB each at 160 x 120): every position of
+#: the tilt slider (0-89 by 1), drawn while the kernel idles (``_truths_ahead``).
+TRUTH_CACHE = 96
 
 
 def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
@@ -125,9 +126,9 @@ class FilterExplorer:
     Notes
     -----
     While the tilt is dragged in the page, each value is shown as a draft: the filtered
-    image and the levels exact, the error only at tilts whose truth is kept (the last 32;
-    otherwise ``truth`` and ``error`` are None and ``rms`` NaN until the release), without
-    its note, and its colour bar only if that range was drawn before. The release always
+    image and the levels exact, the error only at tilts whose truth is kept (every position
+    in the end, computed while the kernel idles, nearest first; otherwise ``truth`` and
+    ``error`` are None and ``rms`` NaN until the release), without its note, and its colour bar only if that range was drawn before. The release always
     brings the full picture, the same as setting ``tilt.value`` from code.
 
     Examples
@@ -263,22 +264,34 @@ class FilterExplorer:
             self._truths.pop(next(iter(self._truths)))
 
     def _truths_ahead(self) -> None:
-        """While the kernel idles, the truth one slider step either side of the tilt shown,
-        one per call (a value arriving meanwhile waits for one truth at most): an arrow key
-        then finds its truth at hand, as a drag back over seen tilts does."""
-        t, step = self.tilt.value, self.tilt.step
-        for ahead in (t + step, t - step):
-            if not self.tilt.min <= ahead <= self.tilt.max or ahead in self._truths:
-                continue
-            clip = plane_clip(ahead, self.camera, self.width / self.height)
-            uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
-            frame = render(clip, self.width, self.height, attrs=uv)
-            truth = footprint_average(clip, uv, self.texture, frame.triangle_id,
-                                      samples=self.samples)  # fmt: skip
-            truth.flags.writeable = False
-            self._keep_truth(ahead, truth)
-            later(self._truths_ahead, idle_only=True)  # the other side, next time
+        """While the kernel idles, the truth at the slider position nearest the tilt shown
+        that has none yet, one per call (a value arriving meanwhile waits for one truth at
+        most), out to every position: an arrow key, or the release of a drag anywhere, then
+        finds its truth at hand. Computed at the release instead, it put the last picture
+        after a drag 104 ms after the release (issue 31: at most 100)."""
+        ahead = self._next_truth_ahead()
+        if ahead is None:
             return
+        clip = plane_clip(ahead, self.camera, self.width / self.height)
+        uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
+        frame = render(clip, self.width, self.height, attrs=uv)
+        truth = footprint_average(clip, uv, self.texture, frame.triangle_id,
+                                  samples=self.samples)  # fmt: skip
+        truth.flags.writeable = False
+        self._keep_truth(ahead, truth)
+        later(self._truths_ahead, idle_only=True)  # the next nearest, next time
+
+    def _next_truth_ahead(self) -> float | None:
+        """The slider position nearest the tilt shown (the next one up first) whose truth is
+        not kept, as the page sends it (``min + k * step``); None when all are kept."""
+        lo, step = self.tilt.min, self.tilt.step
+        n = int(round((self.tilt.max - lo) / step))
+        k0 = int(round((self.tilt.value - lo) / step))
+        for d in range(1, n + 1):
+            for k in (k0 + d, k0 - d):
+                if 0 <= k <= n and lo + k * step not in self._truths:
+                    return lo + k * step
+        return None
 
     def _edit_blit(self) -> LayeredBlit:
         """A new tilt or filter changes the three images and the error's marked maximum;
