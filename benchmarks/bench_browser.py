@@ -400,12 +400,13 @@ SLIDERS = [
 ]
 
 
-def bench_slider(page, tries, css_class, label="tilt", toggle=None):
+def bench_slider(page, tries, css_class, label="tilt", toggle=None, drags=3):
     """A page-side ``LiveSlider`` of the widget with ``css_class``: one key press, dragged.
 
     Returns the key latencies (ms: to the first picture, the one drawn ahead where the
     page has it), the pictures per second while the slider is dragged (a new position at
-    every animation frame), the ms from the release to the last picture, the latencies of
+    every animation frame) and the ms from the release to the last picture (each a list,
+    one per drag of ``drags``), the latencies of
     ``toggle``'s options chosen in turn in its dropdown (empty without one), and the key
     latencies to the kernel's full picture (the second).
     """
@@ -424,15 +425,18 @@ def bench_slider(page, tries, css_class, label="tilt", toggle=None):
     # the same keys, to the kernel's full picture (after the one drawn ahead)
     full = latency(page, target, ["keydown"], img, "data-frames",
                    lambda: slider.press(slider.evaluate(room)), tries, ARM_SECOND)  # fmt: skip
-    page.wait_for_timeout(300)
-    page.evaluate(COUNT, [img, "data-frames"])
-    page.evaluate(DRAG_SLIDER, [target, TIMES["drag"]])
-    wait_to_settle(page)
-    times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
-    end = page.evaluate("() => window.__dragEnd")
-    during = [t for t in times if t <= end]
-    fps = (len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0
-    settle = (times[-1] - end) if times else float("nan")
+    fps, settle = [], []
+    for _ in range(drags):  # the last picture is one number per drag: a few drags, not one
+        page.wait_for_timeout(300)
+        page.evaluate(COUNT, [img, "data-frames"])
+        page.evaluate(DRAG_SLIDER, [target, TIMES["drag"]])
+        wait_to_settle(page)
+        times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
+        end = page.evaluate("() => window.__dragEnd")
+        during = [t for t in times if t <= end]
+        span = (during[-1] - during[0]) / 1e3 if len(during) > 2 else 0.0
+        fps.append((len(during) - 1) / span if span else 0.0)
+        settle.append((times[-1] - end) if times else float("nan"))
     kernel = page.evaluate(f'() => document.querySelector("{target}").kernelMs || []')
     if kernel:
         print(f"{css_class}: kernel ms per value median {statistics.median(kernel):.1f} "
@@ -475,8 +479,8 @@ def slider_rows(results) -> list[tuple]:
     for name, (key, fps, settle, toggles, full) in results.items():
         rows += [("click", f"{name}, one key (drawn ahead)", key),
                  ("info", f"{name}, one key, full picture (kernel)", full),
-                 ("settle", f"{name}, last picture after a drag", [settle]),
-                 ("fps", f"{name} dragged", [fps])]  # fmt: skip
+                 ("settle", f"{name}, last picture after a drag", settle),
+                 ("fps", f"{name} dragged", fps)]  # fmt: skip
         if toggles:
             rows.append(("click", f"{name.split(':')[0]}: filter toggle (kernel)", toggles))
     return rows
@@ -532,7 +536,8 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     step, drag_fps, play_fps, toggles = took("player", bench_player, page, tries)
     editor_fps, editor_first, editor_after = took("editor", bench_editor, page,
                                                   max(2, tries // 4), info)  # fmt: skip
-    sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle)
+    sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle,
+                          1 if args.quick else 3)
                for cls, name, label, toggle in SLIDERS}  # fmt: skip
     first_drag = took("first drag", first_drag_fps, page, "bench-plane", "f2")
     explorables = took("explorables", bench_explorables, page, reps)
