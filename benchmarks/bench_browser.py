@@ -437,6 +437,9 @@ def bench_slider(page, tries, css_class, label="tilt", toggle=None, drags=3):
         span = (during[-1] - during[0]) / 1e3 if len(during) > 2 else 0.0
         fps.append((len(during) - 1) / span if span else 0.0)
         settle.append((times[-1] - end) if times else float("nan"))
+        ms = page.evaluate(f'() => (document.querySelector("{target}").kernelMs || []).at(-1)')
+        print(f"{css_class}: a drag's last picture {settle[-1]:.1f} ms after the release "
+              f"(kernel {ms} ms of it)")  # fmt: skip
     kernel = page.evaluate(f'() => document.querySelector("{target}").kernelMs || []')
     if kernel:
         print(f"{css_class}: kernel ms per value median {statistics.median(kernel):.1f} "
