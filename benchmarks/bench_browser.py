@@ -2,7 +2,7 @@
 
 Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
 
-    python benchmarks/bench_browser.py            # full run (about 15 minutes)
+    python benchmarks/bench_browser.py            # full run (about 5 minutes)
     python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
 
 JupyterLab starts on a free loopback port with its own config, data, runtime and settings
