@@ -896,6 +896,17 @@ def test_counts_have_thousands_separators_as_in_lesson_10(name):
     assert not bare, bare
 
 
+def test_10_the_test_count_chart_names_the_block_tests():
+    """Review r12 (lesson 10 c13): the tiled bar's blocks part, a few thousand tests on an
+    axis of a quarter million, could not be seen; the bar's label gives both parts."""
+    ns = lesson("10_tiles_and_hierarchical_z")
+    walk = ns.walk
+    assert ns.bar_texts["tiled"] == (f"{walk.blocks:,} blocks + {walk.pixel_tests:,} pixels = "
+                                     f"{ns.walk_tests:,}")  # fmt: skip
+    assert ns.bar_texts["half-plane"] == f"{ns.half_tests:,}"
+    assert walk.blocks < 0.02 * ns.half_tests  # why: thinner than a fiftieth of the axis
+
+
 def test_10_tile_explorer_driven_by_the_test():
     import teachraster as tr
     from teachraster.widgets import TileExplorer

@@ -106,3 +106,70 @@ def test_the_floor_keeps_a_log_axis_from_labelling_every_minor_tick():
     labelled = [t for t in ax.get_yticklabels(minor=True) if t.get_text()]
     assert len(labelled) <= 2
     plt.close(fig)
+
+
+#: Lesson 06's DivideCostExplorer at divide 1 (review r12): seven points on a short diagonal.
+CROWDED = [("affine", 1, 210), ("N=32", 1.3, 70), ("N=16", 1.6, 50), ("N=8", 2.2, 24),
+           ("N=4", 3.5, 14), ("N=2", 6, 5.7), ("perspective", 6, 0)]  # fmt: skip
+
+
+def _drawn_boxes(fig, ax, art):
+    """(label boxes, marker boxes, figure box) in display pixels after a full draw."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    labels = {k: lab.get_window_extent(renderer) for k, lab in art.labels.items()
+              if lab.get_visible()}  # fmt: skip
+    markers = {k: p.get_window_extent(renderer) for k, p in art.points.items()}
+    return labels, markers, fig.bbox
+
+
+def _assert_spread(fig, ax, art):
+    labels, markers, figure = _drawn_boxes(fig, ax, art)
+    names = list(labels)
+    for i, a in enumerate(names):
+        for b in names[i + 1 :]:
+            assert not labels[a].overlaps(labels[b]), (a, b)
+        hit = [k for k, m in markers.items() if labels[a].overlaps(m)]
+        assert not hit, (a, hit)
+        box, frame = labels[a], ax.bbox
+        assert frame.x0 <= box.x0 and box.x1 <= frame.x1, (a, "out of the Axes")
+        assert frame.y0 <= box.y0 and box.y1 <= frame.y1, (a, "out of the Axes")
+        assert figure.x0 <= box.x0 and box.x1 <= figure.x1, (a, "out of the figure")
+
+
+def test_crowded_labels_keep_clear_of_each_other_the_points_and_the_edges():
+    """Review r12 (lesson 06's DivideCostExplorer at divide 1): crowded points put "N=16"
+    against N=8's point. No two labels overlap, none covers a point's marker, and every label
+    stays inside the Axes (a first fix pushed a label of the edge-function chart out of them:
+    the figure grew to 951 px)."""
+    rows = [{"variant": n, "cost": c, "error": e} for n, c, e in CROWDED]
+    fig, ax = plt.subplots(figsize=(5, 3.2), dpi=100)
+    art = plot_pareto(ax, rows, "cost")
+    _assert_spread(fig, ax, art)
+    plt.close(fig)
+
+
+def test_labels_are_placed_for_the_axes_the_figure_is_drawn_with():
+    """A layout engine (the lessons' ``layout="constrained"``) moves the Axes only when the
+    figure is drawn: labels placed for the Axes before it must be placed again, or one ends
+    up outside them (and a figure saved tight grows: 951 px in lesson 06)."""
+    rows = [{"variant": "affine", "cycles": 1, "error": 100.0},
+            {"variant": "subdivided", "cycles": 2, "error": 10.0},
+            {"variant": "perspective", "cycles": 10, "error": 0.0}]  # fmt: skip
+    fig, ax = plt.subplots(figsize=(6, 3.2), dpi=100)
+    art = plot_pareto(ax, rows, "cycles", logx=False)
+    ax.set_position((0.3, 0.2, 0.35, 0.6))  # as a layout engine would, before drawing
+    _assert_spread(fig, ax, art)
+    plt.close(fig)
+
+
+def test_a_label_the_caller_moved_stays_where_it_was_put():
+    """Lesson 06's depth chart places its labels itself after plot_pareto: a draw must not
+    spread them again."""
+    rows = [{"variant": n, "cost": c, "error": e} for n, c, e in CROWDED]
+    fig, ax = plt.subplots(figsize=(5, 3.2), dpi=100)
+    art = plot_pareto(ax, rows, "cost")
+    art.labels["N=8"].set_position((9, -4))
+    fig.canvas.draw()
+    assert art.labels["N=8"].get_position() == (9, -4)
+    plt.close(fig)

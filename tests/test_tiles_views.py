@@ -209,6 +209,52 @@ def test_the_block_visited_now_is_outlined_in_the_picture(explorer):
     assert STEPPED_CURRENT in [t.get_text() for t in explorer.artists.legend.get_texts()]
 
 
+def test_a_one_pixel_block_is_pointed_at_not_crossed_out():
+    """Review r12 (lesson 10): around a 1×1 block the four ticks joined the thick outline
+    into a cross ("the 1×1 ticks read as a bracket"). They stop a pixel short of the block,
+    and in the lesson's classroom style outline and ticks are about half as thick as around a
+    larger block."""
+    import matplotlib as mpl
+
+    from teachraster.plotting import use_style
+
+    with mpl.rc_context():
+        use_style("classroom")
+        explorer = TileExplorer(tr.Triangle(XY), 64, 64, block_sizes=(16, 4, 1), backend="image")
+    blocks = explorer.blocks
+    order = blocks.visit_order("scanline")
+    sizes = blocks.size[order]
+    explorer.block.value = int(np.flatnonzero(sizes == 4)[0]) + 1
+    wide = explorer.artists.current.get_linewidth()
+    k = int(np.flatnonzero(sizes == 1)[0]) + 1
+    explorer.block.value = k
+    line = explorer.artists.current
+    assert line.get_linewidth() <= 0.6 * wide
+    b = int(order[k - 1])
+    r, c = int(blocks.row[b]), int(blocks.col[b])
+    x, y = (np.asarray(v, float)[6:] for v in line.get_data())  # past the outline and a NaN
+    outside = np.maximum(np.maximum(c - x, x - (c + 1)), np.maximum(r - y, y - (r + 1)))
+    assert np.isfinite(outside).sum() == 8 and np.nanmin(outside) >= 1.0
+    explorer.close()
+
+
+def test_captions_print_edge_values_in_full_with_thousands_separators(fill):
+    """Review r12 (lesson 10's TileExplorer): a block's caption printed "E12 = 1.2e+03" where
+    the course prints every count in full ("1,184"). The blocks' captions and the half-plane
+    fill's pixel steps (one rule for both) print large values as 1,200, never bare or in
+    exponent notation."""
+    import re
+
+    blocks, edges = fill.trace.blocks, fill.trace.edges
+    captions = [blocks.caption(b, edges) for b in range(len(blocks))]
+    half = tr.rasterize(tr.Triangle(XY), 64, 64, method="halfplane", trace=True).trace
+    captions += [half.caption(k) for k in range(len(half))]
+    text = "\n".join(captions)
+    assert not re.findall(r"\de[+-]\d", text)  # no exponent notation
+    assert not re.findall(r"(?<![\d.,^*/])\d{4,}(?![\d.])", text)
+    assert re.search(r"E\d\d = -?\d{1,3}(,\d{3})+ ", text)  # values of 1,000 and more
+
+
 def test_block_sizes_menu_refills(explorer):
     before = explorer.blocks.counters
     explorer.sizes.value = (8, 2)

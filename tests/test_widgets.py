@@ -695,6 +695,51 @@ def test_player_with_samples_steps_as_its_poster_shows_rings_where_it_colours_by
         p.close()
 
 
+def _colour_showing(p) -> float:
+    """The share of the screen inside the fill's inner pixels (every sample of the pixel and
+    of its eight neighbours covered) that shows the pixel's own colour at the last step."""
+    from teachraster.plotting.frames import frame_rgba
+
+    p.view.show_step(p.frames.max, draw=False)
+    p.fig.canvas.draw()
+    rgb = frame_rgba(p.fig)[..., :3] / 255.0
+    full = p.fill.sample_coverage.all(axis=2)
+    inner = full.copy()
+    inner[1:-1, 1:-1] &= np.all([np.roll(np.roll(full, dr, 0), dc, 1)[1:-1, 1:-1]
+                                 for dr in (-1, 0, 1) for dc in (-1, 0, 1)], axis=0)  # fmt: skip
+    inner[[0, -1], :] = inner[:, [0, -1]] = False
+    image = p.view.values
+    to_px, height = p.view.ax.transData.transform, rgb.shape[0]
+    shown = total = 0
+    for i, j in zip(*np.nonzero(inner)):
+        colour = np.asarray(image.cmap(image.norm(image.get_array()[i, j])))[:3]
+        (x0, y0), (x1, y1) = to_px((j, i)), to_px((j + 1, i + 1))  # y0 > y1: rows run down
+        cut = rgb[int(height - y0) + 3 : int(height - y1) - 3, int(x0) + 3 : int(x1) - 3]
+        shown += int((np.abs(cut - colour).max(axis=-1) < 0.1).sum())
+        total += cut.shape[0] * cut.shape[1]
+    assert total > 0
+    return shown / total
+
+
+@pytest.mark.parametrize("samples", ["4 standard (rotated grid)", "8 standard", "16 standard"])
+def test_player_rings_leave_the_pixels_colour_visible(samples):
+    """Review r12 (lesson 00's FillPlayer at 8 and 16 samples): the last step's rings, at the
+    style's size and width, covered the triangle's colours. Rings and their outlines scale
+    with the samples' spacing: at least half of the inner pixels shows their colour, as at 4
+    samples (0.52 with the style's rings; 0.25 at 8 and 0.06 at 16, now 0.65 to 0.74)."""
+    import matplotlib as mpl
+
+    from teachraster.plotting import use_style
+
+    with mpl.rc_context():
+        use_style("classroom")  # as lesson 00 runs it
+        p = FillPlayer(triangle(), W, H, method="span", samples=samples, backend="image")
+        try:
+            assert _colour_showing(p) > 0.5, samples
+        finally:
+            p.close()
+
+
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")  # raised inside ipympl
 def test_ipympl_sends_one_fast_frame_per_step():
     pytest.importorskip("ipympl")

@@ -34,6 +34,18 @@ def edge_name(a, b) -> str:
     return f"E{int(a) + 1}{int(b) + 1}"
 
 
+def value_text(value: float) -> str:
+    """An edge function's value in a caption: three significant digits below 100, the whole
+    number with thousands separators from 100 on, as the course prints counts ("1.2e+03"
+    beside the block counts read as a count in another notation: review r12, lesson 10).
+
+    >>> [value_text(v) for v in (0.0123, 2.5, -13.76, 999.6, 1234.56, -120000.0, 0.0)]
+    ['0.0123', '2.5', '-13.8', '1,000', '1,235', '-120,000', '0']
+    """
+    value = float(value)
+    return f"{value:,.0f}" if abs(value) >= 99.95 else f"{value:.3g}"
+
+
 def check_block_sizes(block_sizes) -> tuple[int, ...]:
     """``block_sizes`` as a tuple of positive ints, each dividing the one before.
 
@@ -249,12 +261,12 @@ class TileTrace:
         if kind == REJECTED:
             k = int(self.rejected_by[b])
             why = (
-                f"{name[k]} = {self.e_max[b, k] * self.px2_per_unit2:.3g} at its most inside "
+                f"{name[k]} = {value_text(self.e_max[b, k] * self.px2_per_unit2)} at its most inside "
                 f"corner fails: rejected, no pixel of it is covered"
             )
         elif kind == ACCEPTED:
             low = ", ".join(
-                f"{n} = {v * self.px2_per_unit2:.3g}" for n, v in zip(name, self.e_min[b])
+                f"{n} = {value_text(v * self.px2_per_unit2)}" for n, v in zip(name, self.e_min[b])
             )
             why = (
                 f"every edge passes at its least inside corner ({low}): accepted, "
@@ -268,7 +280,7 @@ class TileTrace:
                 child = self.block_sizes[self.level[b] + 1]
                 then = f"split into {child}×{child} blocks"
             else:
-                then = f"{rows * cols} pixel tests, {int(self.covered[b])} covered"
+                then = f"{rows * cols:,} pixel tests, {int(self.covered[b]):,} covered"
             why = f"{crossing} {verb} it: partial, {then}"
         return f"{where}: {why}"
 

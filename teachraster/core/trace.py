@@ -39,7 +39,7 @@ from .edges import setup_edges
 from .half_planes import HalfPlaneTrace
 from .multisample import SampleTrace
 from .span_tables import SpanTrace
-from .tile_trace import TileTrace, edge_name
+from .tile_trace import TileTrace, edge_name, value_text
 from .validate import as_int
 
 SETUP_KINDS = ("snap", "winding", "bbox")
@@ -403,7 +403,7 @@ class FillTrace:
         if not box.size:
             return where + "no pixel centre of the image inside"
         return where + (f"rows {box.row0}-{box.row1 - 1}, columns {box.col0}-{box.col1 - 1} "
-                        f"({box.size} pixel centres)")  # fmt: skip
+                        f"({box.size:,} pixel centres)")  # fmt: skip
 
     def _sort_caption(self) -> str:
         # The vertices keep their names (v1, v2, v3 as given); sorting gives them roles.
@@ -461,7 +461,7 @@ class FillTrace:
             rel = ">" if e > 0 else "<" if e < 0 else "="
             tie = " (on a top-left edge)" if e == 0 and passed else ""
             tie = " (on an edge that is not top-left)" if e == 0 and not passed else tie
-            parts.append(f"{edge_name(*self.edges[t])} = {e:.3g} {rel} 0{tie}")
+            parts.append(f"{edge_name(*self.edges[t])} = {value_text(e)} {rel} 0{tie}")
             if not passed:
                 rejected = t
                 break  # a bail-out loop stops at the first failing test
@@ -484,7 +484,7 @@ class FillTrace:
         if self.pixel_depth is not None:
             names.append("depth z (affine)")
         if not names:
-            return f"{n} pixels covered; no attributes to interpolate"
+            return f"{n:,} pixels covered; no attributes to interpolate"
         how = {
             "perspective": "perspective-correct (f/w and 1/w are affine on screen)",
             "affine": "affine in screen space",
@@ -493,6 +493,6 @@ class FillTrace:
         }[self.interpolation]
         if self.samples is not None:  # the picture fills every pixel with a covered sample
             m = int(len(self.samples.eval_rows))
-            return (f"interpolated {', '.join(names)} at the {m} pixels with a covered sample "
-                    f"({n} with their centre covered), {how}")  # fmt: skip
-        return f"interpolated {', '.join(names)} at {n} covered pixels, {how}"
+            return (f"interpolated {', '.join(names)} at the {m:,} pixels with a covered sample "
+                    f"({n:,} with their centre covered), {how}")  # fmt: skip
+        return f"interpolated {', '.join(names)} at {n:,} covered pixels, {how}"

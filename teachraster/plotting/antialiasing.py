@@ -53,6 +53,15 @@ def _positions(ids, offsets):
     return cols + offsets[s, 0], rows + offsets[s, 1], ids.ravel()
 
 
+#: The largest sample dot, as a multiple of the style's marker size (at 1 and 4 samples).
+DOT_SCALE = 0.55 * 1.26
+#: A dot's diameter at most this share of the closest two samples' distance, so that dots
+#: never touch; a ring's at most :data:`RING_SHARE` of it, its outline scaled with it, so that
+#: the pixel's colour shows between and inside the rings (at 8 and 16 samples rings of the
+#: style's width covered the triangle: review r12, lesson 00).
+DOT_SHARE, RING_SHARE = 0.8, 0.6
+
+
 @dataclass
 class SampleArtists(Artists):
     """Samples of :func:`plot_samples`: covered (coloured by triangle), uncovered (white),
@@ -66,6 +75,10 @@ class SampleArtists(Artists):
     _faces: list = field(default_factory=list, repr=False)
     #: line widths in points, the style's when the samples were plotted: edge, ring, rim
     _widths: tuple = field(default=(0.5, 0.8, 2.0), repr=False)
+    #: the largest dot (points: the style's when plotted) and the closest two samples'
+    #: distance on screen (points; inf for one sample a pixel)
+    _largest: float = field(default=6.0, repr=False)
+    _gap: float = field(default=float("inf"), repr=False)
 
     def update(self, source) -> None:
         """Show another multisampled fill or frame (any size and pattern)."""
@@ -74,13 +87,18 @@ class SampleArtists(Artists):
         hit = t >= 0
         self.covered.set_offsets(np.column_stack([x[hit], y[hit]]))
         self._faces = [TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit]]
+        self._gap = _sample_gap(self.covered.axes, offsets)
         self.set_rings(self.rings)
         self.uncovered.set_data(x[~hit], y[~hit])
-        d = _dot_diameter(self.covered.axes, offsets)
-        self.covered.set_sizes([d**2])
-        self.uncovered.set_markersize(d)
+        self.uncovered.set_markersize(self.diameter())
         if self.fraction is not None:
             self.fraction.update((ids >= 0).mean(axis=2))
+
+    def diameter(self, rings: bool = False) -> float:
+        """A sample's dot (or ``rings``: ring) diameter in points: the style's, or less where
+        the closest two samples would make dots touch (the standard 4-sample pattern's
+        overlapped in a 12-pixel-wide panel) or rings hide the colour between them."""
+        return float(min(self._largest, (RING_SHARE if rings else DOT_SHARE) * self._gap))
 
     def set_rings(self, on: bool) -> None:
         """Covered samples as hollow rings (``on``) or dots filled in their triangle's colour.
@@ -88,37 +106,40 @@ class SampleArtists(Artists):
         A fill's last step colours its pixels by an attribute: filled dots, four to a pixel
         under 4× MSAA, hid those colours, and their blue read as the colour map's low end
         (review r11, lesson 00 c14). A ring shows the pixel's colour through it; white with
-        a black rim, it stays visible on the dark and the light end of the map alike.
+        a black rim, it stays visible on the dark and the light end of the map alike. Rings
+        smaller than the style's are drawn with outlines thinner in proportion.
         """
         self.rings = bool(on)
         edge, ring, rim = self._widths
         if self.rings:
+            d = self.diameter(rings=True)
+            thin = d / self._largest  # 1 at 1 and 4 samples; about a third at 16
+            self.covered.set_sizes([d**2])
             self.covered.set_facecolor("none")
             self.covered.set_edgecolor("white")
-            self.covered.set_linewidth(ring)
-            self.covered.set_path_effects([withStroke(linewidth=rim, foreground=COLORS["edge"])])
+            self.covered.set_linewidth(ring * thin)
+            self.covered.set_path_effects([withStroke(linewidth=rim * thin,
+                                                      foreground=COLORS["edge"])])  # fmt: skip
         else:
+            self.covered.set_sizes([self.diameter() ** 2])
             self.covered.set_facecolor(self._faces)
             self.covered.set_edgecolor(COLORS["edge"])
             self.covered.set_linewidth(edge)
             self.covered.set_path_effects([])
 
 
-def _dot_diameter(ax, offsets) -> float:
-    """The samples' dot size in points: the style's, or less where the pattern's closest
-    two samples (in a pixel or across a pixel side) would make their dots touch at this
-    magnification (the standard 4-sample pattern's dots overlapped in a 12-pixel-wide panel).
-    """
-    largest = ms(0.55) * 1.26
+def _sample_gap(ax, offsets) -> float:
+    """The closest two samples' distance (in a pixel or across a pixel side), in points at
+    ``ax``'s magnification; inf for one sample a pixel."""
     if len(offsets) < 2:
-        return largest
+        return float("inf")
     shifts = np.array([[0, 0], [1, 0], [0, 1], [1, 1], [-1, 1]], dtype=float)
     pts = (offsets[None, :, :] + shifts[:, None, :]).reshape(-1, 2)
     gaps = np.hypot(*(offsets[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
     gap = float(gaps[gaps > 1e-9].min())  # data units (pixels)
     (x0, x1), bbox = ax.get_xlim(), ax.get_window_extent()
     pt_per_px = bbox.width / abs(x1 - x0) * 72.0 / ax.figure.dpi
-    return float(min(largest, 0.8 * gap * pt_per_px))
+    return gap * pt_per_px
 
 
 def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
@@ -147,7 +168,7 @@ def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
     uncovered = ax.plot([], [], "o", mfc="white", mec=COLORS["centre"],
                         mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
     widths = (max(0.5, lw(0.15)), max(0.8, lw(0.3)), max(2.0, lw(0.7)))
-    result = SampleArtists(frac, covered, uncovered, _widths=widths)
+    result = SampleArtists(frac, covered, uncovered, _widths=widths, _largest=ms(DOT_SCALE))
     result.update(source)
     return result
 

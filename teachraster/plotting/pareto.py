@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from matplotlib.artist import Artist
 from matplotlib.ticker import Formatter, Locator, NullFormatter
 
 from ..study.bench.report import pareto_front
@@ -33,6 +34,7 @@ class ParetoArtists:
     front: list
     short: object = None
     xlim: tuple | None = None  # fixed cost limits (None: each update fits its costs)
+    spreader: object = None  # places the labels again at each draw (_LabelSpreader)
 
 
 def shown_y(row, y: str, art) -> float:
@@ -81,11 +83,12 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
                                            xytext=(8, 6), fontsize=13)  # fmt: skip
     (line,) = ax.step([], [], where="post", color=COLORS["outside"], lw=2.5, label="Pareto front")
     ax.axhline(floor, color="gray", ls="--", lw=1)
-    ax.text(0.01, floor, " 0 (exact)", transform=ax.get_yaxis_transform(), va="bottom",
-            fontsize=12, color="gray")  # fmt: skip
+    exact = ax.text(0.01, floor, " 0 (exact)", transform=ax.get_yaxis_transform(),
+                    va="bottom", fontsize=12, color="gray")  # fmt: skip
     ax.set(xscale="log" if logx else "linear", yscale="log", xlabel=xlabel, ylabel=ylabel,
            title=title)  # fmt: skip
     art = ParetoArtists(points, line, labels, floor, [], short, xlim)
+    art.spreader = ax.add_artist(_LabelSpreader([labels[r["variant"]] for r in rows], [exact]))
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
     floor_ticks(ax, floor)
     update_pareto(ax, art, rows, x, y=y)
@@ -174,7 +177,10 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
     ally = np.array([art.floor if r[y] < EXACT_BELOW else r[y] for r in rows], dtype=float)
     ax.set_xlim(*(art.xlim or cost_limits(allx, log=ax.get_xscale() == "log")))
     ax.set_ylim(ally.min() / 3.0, ally.max() * 3.0)
-    spread_labels(ax, [art.labels[r["variant"]] for r in rows])
+    if art.spreader is not None:
+        art.spreader.spread()
+    else:
+        spread_labels(ax, [art.labels[r["variant"]] for r in rows])
     art.front = front
     return front
 
@@ -193,35 +199,161 @@ def cost_limits(costs, *, log: bool = True) -> tuple[float, float]:
     return lo - 0.08 * span, hi + 0.6 * span
 
 
-#: Where a label may sit relative to its point, in points, tried in this order:
-#: up-right, down-right, up-left, down-left.
-LABEL_SPOTS = ((1, 1), (1, -1), (-1, 1), (-1, -1))
+#: Where a label may sit relative to its point, tried in this order: up-right, down-right,
+#: up-left, down-left, then centred right, left, above and below.
+LABEL_SPOTS = ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
+#: How far out each spot is tried, in gaps: beside the point first, then further from it.
+LABEL_REACH = (1.0, 2.0, 3.5)
+#: Room a label keeps from every point's marker (its own too), and from the Axes' frame, in
+#: points.
+LABEL_PAD = 1.5
+#: Placements the search tries at most before it settles for the least overlap.
+SEARCH_LIMIT = 3000
 
 
-def spread_labels(ax, labels, gap: float = 6.0) -> None:
-    """Move each visible label to the first spot beside its point that overlaps no label
-    placed before it (estimated text boxes, no renderer needed, so a widget can call it on
-    every update); a label that fits nowhere keeps the up-right spot."""
+class _LabelSpreader(Artist):
+    """Spreads the labels again at every draw, before they are drawn: a layout engine (the
+    lessons' ``layout="constrained"``) moves the Axes only then, so a label placed inside
+    the Axes before it can end up outside (lesson 06's edge-function chart grew to 951 px).
+    Labels a caller has moved since (lesson 06 places its depth labels itself) are left
+    alone. Drawn first (zorder 0), invisible, and outside the layout."""
+
+    def __init__(self, labels, avoid=()) -> None:
+        super().__init__()
+        self.labels, self.avoid = list(labels), list(avoid)
+        self.spots: dict = {}  # id(label) -> the offset this spreader last gave it
+        self.set_zorder(0)
+        self.set_in_layout(False)
+
+    def spread(self, renderer=None) -> None:
+        spread_labels(self.axes, self.labels, avoid=self.avoid, renderer=renderer)
+        self.spots = {id(lab): lab.get_position() for lab in self.labels}
+
+    def draw(self, renderer) -> None:
+        if any(self.spots.get(id(lab)) != lab.get_position() for lab in self.labels):
+            return  # moved by the caller: its placement stands
+        self.spread(renderer)
+
+
+def spread_labels(ax, labels, gap: float = 6.0, *, marker: float = 11.0, avoid=(),
+                  renderer=None) -> None:  # fmt: skip
+    """Place each visible label beside its point: inside the Axes, clear of every point's
+    marker (``marker``: its size in points), of the artists in ``avoid`` (the floor's
+    "0 (exact)") and of the other labels.
+
+    The spots of :data:`LABEL_SPOTS` are tried at the distances of :data:`LABEL_REACH`; a
+    short search (at most :data:`SEARCH_LIMIT` tries) finds one spot per label with no two
+    overlapping, the labels taken from the top. Where there is none, each label takes the
+    spot that overlaps the others least. Text boxes are measured with ``renderer`` (default:
+    the figure's), so a widget can call this on every update without drawing.
+    """
     to_px = ax.figure.dpi / 72.0
-    placed = []
-    shown = [lab for lab in labels if lab.get_visible()]
-    anchors = {id(lab): ax.transData.transform(lab.xy) for lab in shown}
-    for lab in sorted(shown, key=lambda lab: -anchors[id(lab)][1]):  # top first
-        size = lab.get_fontsize()
-        w, h = 0.6 * size * len(lab.get_text()), 1.2 * size
-        x0, y0 = anchors[id(lab)] / to_px  # in points
+    if renderer is None:
+        renderer = ax.figure._get_renderer()
+    shown = [lab for lab in labels if lab.get_visible() and lab.get_text()]
+    if not shown:
+        return
+    ax.get_xlim()  # applies a pending autoscale (transData alone reads the stale limits)
+    at = {id(lab): ax.transData.transform(lab.xy) / to_px for lab in labels}  # points
+    frame = tuple(np.asarray(ax.bbox.extents) / to_px + [LABEL_PAD, LABEL_PAD, -LABEL_PAD,
+                                                          -LABEL_PAD])  # fmt: skip
+    reach = marker / 2 + LABEL_PAD
+    markers = [(x - reach, y - reach, x + reach, y + reach) for x, y in at.values()
+               if np.isfinite(x) and np.isfinite(y)]  # fmt: skip
+    if renderer is not None:
+        markers += [tuple(np.asarray(a.get_window_extent(renderer).extents) / to_px)
+                    for a in avoid if a.get_visible()]  # fmt: skip
+    shown.sort(key=lambda lab: -at[id(lab)][1])  # top first
+    options = [_label_options(lab, at[id(lab)], gap, reach, frame, markers, renderer, to_px)
+               for lab in shown]  # fmt: skip
+    picks = _search([[box for box, _ in opts] for opts in options], SEARCH_LIMIT)
+    if picks is None:  # crowded beyond any clean placement: the least overlap, greedily
+        picks, placed = [], []
+        for opts in options:
+            costs = [sum(_overlap_area(box, b) for b in placed) for box, _ in opts]
+            picks.append(int(np.argmin(costs)))
+            placed.append(opts[picks[-1]][0])
+    for lab, opts, k in zip(shown, options, picks):
+        lab.set_position(opts[k][1])
+
+
+def _label_options(lab, anchor, gap, reach, frame, markers, renderer, to_px) -> list:
+    """[(box in points, offset)] for ``lab`` at its point ``anchor`` (points): the spots
+    inside ``frame`` and clear of every marker box, in order of preference; when there is
+    none, the one spot that breaks those rules least."""
+    w, h, left, below = _text_size(lab, renderer, to_px)
+    x0, y0 = anchor
+    spots = []
+    for r in LABEL_REACH:
+        side = r * gap + 2  # beside the marker: clear of its radius (5.5 pt) at the first reach
+        up = r * gap
         for sx, sy in LABEL_SPOTS:
-            dx = gap + 2 if sx > 0 else -(gap + 2) - w
-            dy = gap if sy > 0 else -gap - h
-            box = (x0 + dx, y0 + dy, x0 + dx + w, y0 + dy + h)
-            if not any(_overlap(box, other) for other in placed):
-                break
-        else:
-            dx, dy = gap + 2, gap
-            box = (x0 + dx, y0 + dy, x0 + dx + w, y0 + dy + h)
-        placed.append(box)
-        lab.set_position((dx, dy))
+            bx = side if sx > 0 else -side - w if sx < 0 else -w / 2  # the box's left ...
+            rise = up if sx else side  # (straight above a point: clear of its marker too)
+            by = rise if sy > 0 else -rise - h if sy < 0 else -h / 2  # ... and bottom
+            box = (x0 + bx, y0 + by, x0 + bx + w, y0 + by + h)
+            spots.append((box, (bx + left, by + below)))  # the text's offset for that box
+    fits = [
+        s for s in spots if _inside(s[0], frame) and not any(_overlap(s[0], m) for m in markers)
+    ]
+    if fits:
+        return fits
+    # nowhere clean: inside the frame if it can be, then over as little marker as can be
+    return [min(spots, key=lambda s: (_outside(s[0], frame),
+                                      sum(_overlap_area(s[0], m) for m in markers)))]  # fmt: skip
+
+
+def _text_size(lab, renderer, to_px) -> tuple[float, float, float, float]:
+    """Width and height of ``lab``'s text box, and where it starts left of and below the
+    text's anchor (its position beside the point), in points."""
+    if renderer is None:  # a canvas without a renderer: estimated from the font size
+        size = lab.get_fontsize()
+        return 0.6 * size * len(lab.get_text()), 1.2 * size, 0.0, 0.25 * size
+    box = lab.get_window_extent(renderer)
+    anchor = lab.axes.transData.transform(lab.xy) + np.asarray(lab.get_position()) * to_px
+    return (box.width / to_px, box.height / to_px, (anchor[0] - box.x0) / to_px,
+            (anchor[1] - box.y0) / to_px)  # fmt: skip
+
+
+def _search(options, limit: int):
+    """One index per list of ``options`` (boxes) with no two chosen boxes overlapping,
+    preferring earlier options for earlier lists; None if none is found within ``limit``
+    tries."""
+    picks, placed, tries = [], [], 0
+
+    def place(i: int) -> bool:
+        nonlocal tries
+        if i == len(options):
+            return True
+        for k, box in enumerate(options[i]):
+            tries += 1
+            if tries > limit:
+                return False
+            if not any(_overlap(box, b) for b in placed):
+                picks.append(k)
+                placed.append(box)
+                if place(i + 1):
+                    return True
+                picks.pop()
+                placed.pop()
+        return False
+
+    return picks if place(0) else None
 
 
 def _overlap(a, b) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _overlap_area(a, b) -> float:
+    return max(0.0, min(a[2], b[2]) - max(a[0], b[0])) * max(0.0, min(a[3], b[3]) - max(a[1], b[1]))
+
+
+def _inside(box, frame) -> bool:
+    return frame[0] <= box[0] and box[2] <= frame[2] and frame[1] <= box[1] and box[3] <= frame[3]
+
+
+def _outside(box, frame) -> float:
+    """How far ``box`` reaches out of ``frame``, summed over its four sides (points)."""
+    return (max(0.0, frame[0] - box[0]) + max(0.0, box[2] - frame[2])
+            + max(0.0, frame[1] - box[1]) + max(0.0, box[3] - frame[3]))  # fmt: skip

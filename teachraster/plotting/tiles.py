@@ -92,6 +92,8 @@ class BlockArtists(Artists):
     sizes: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     #: the outline of the block visited now (``plot_blocks(..., current=True)``), else None
     current: Line2D | None = None
+    #: its line width in points, the style's when plotted (thinner around small blocks)
+    current_width: float = 2.0
 
     def show_current(self, blocks: TileTrace, b: int | None) -> None:
         """Outline block ``b`` of ``blocks`` (:func:`current_block_xy`), or nothing when
@@ -102,6 +104,10 @@ class BlockArtists(Artists):
         if b is not None:
             rows, cols = blocks.extent[b]
             self.current.set_data(*current_block_xy(blocks.row[b], blocks.col[b], rows, cols))
+            width = self.current_width
+            if max(int(rows), int(cols)) < SMALL_BLOCK:  # thinner, never a hairline
+                width = min(width, max(SMALL_LINE * width, THINNEST))
+            _outline_width(self.current, width)
 
     def show(self, mask: np.ndarray) -> None:
         """Show only the blocks where ``mask`` (indexed like the trace) is True, in place."""
@@ -194,6 +200,7 @@ def plot_blocks(
     result.show(shown)
     if current:
         result.current = current_block_outline(ax)
+        result.current_width = result.current.get_linewidth()
     if legend:
         if unclassified is None:
             unclassified = has_unclassified(blocks, shown)
@@ -210,12 +217,19 @@ def plot_blocks(
 #: Blocks narrower than this many pixels get four ticks pointing at their outline: a 1×1
 #: block of a 64-pixel grid is a few screen pixels wide.
 SMALL_BLOCK = 4
+#: Around such a block the outline and ticks are this much thinner, and the ticks stop
+#: :data:`TICK_GAP` pixels short of it: at the full width they joined the outline into a
+#: cross that hid the pixel (review r12, lesson 10: "the 1×1 ticks read as a bracket").
+SMALL_LINE, TICK_GAP = 0.5, 1.0
+#: The thinnest that outline gets, in points (two screen pixels at 96 dpi).
+THINNEST = 1.5
 
 
 def current_block_xy(row: int, col: int, rows: int, cols: int, reach: float = 3.0):
     """(x, y) of the current block's marker: the outline of its ``rows`` × ``cols`` pixels
     from (``row``, ``col``), and for a block under :data:`SMALL_BLOCK` pixels four ticks
-    ``reach`` pixels long pointing at it from outside (NaN separates the pieces).
+    ``reach`` pixels long pointing at it from :data:`TICK_GAP` pixels outside (NaN separates
+    the pieces).
 
     >>> current_block_xy(4, 32, 4, 4)
     ([32, 36, 36, 32, 32], [4, 4, 8, 8, 4])
@@ -223,11 +237,11 @@ def current_block_xy(row: int, col: int, rows: int, cols: int, reach: float = 3.
     r, c, h, w = int(row), int(col), int(rows), int(cols)
     x, y = [c, c + w, c + w, c, c], [r, r, r + h, r + h, r]
     if max(h, w) < SMALL_BLOCK:
-        gap, mx, my = np.nan, c + w / 2, r + h / 2
-        x += [gap, c - 0.5 - reach, c - 0.5, gap, c + w + 0.5, c + w + 0.5 + reach,
+        gap, mx, my, t = np.nan, c + w / 2, r + h / 2, TICK_GAP
+        x += [gap, c - t - reach, c - t, gap, c + w + t, c + w + t + reach,
               gap, mx, mx, gap, mx, mx]  # fmt: skip
-        y += [gap, my, my, gap, my, my, gap, r - 0.5 - reach, r - 0.5,
-              gap, r + h + 0.5, r + h + 0.5 + reach]  # fmt: skip
+        y += [gap, my, my, gap, my, my, gap, r - t - reach, r - t,
+              gap, r + h + t, r + h + t + reach]  # fmt: skip
     return x, y
 
 
@@ -236,10 +250,16 @@ def current_block_outline(ax) -> Line2D:
     step (vermillion), over the triangle, with a white halo that keeps it apart from an
     orange partial block and the black edges (review r11, lesson 10: a student could not
     see where the walk was among 800 blocks)."""
-    (outline,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8), zorder=5,
-                         solid_capstyle="butt", visible=False,
-                         path_effects=[withStroke(linewidth=lw(0.8) + 3, foreground="white")])  # fmt: skip
+    (outline,) = ax.plot([], [], color=COLORS["current"], zorder=5, solid_capstyle="butt",
+                         visible=False)  # fmt: skip
+    _outline_width(outline, lw(0.8))
     return outline
+
+
+def _outline_width(outline: Line2D, width: float) -> None:
+    """The outline's line width and its white halo's (3 points wider)."""
+    outline.set_linewidth(width)
+    outline.set_path_effects([withStroke(linewidth=width + 3, foreground="white")])
 
 
 def block_legend_handles(*, unclassified: bool = True) -> list[Patch]:

@@ -40,6 +40,13 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 #: The views the chooser offers: the shaded image, then every overlay.
 VIEWS = ("image", *KINDS)
 
+#: The largest the frame is drawn, width and height in inches (a 4:3 frame: 3 × 2.25).
+FRAME_BOX = (3.0, 3.1)
+#: The frame figure's margins in inches: left (row labels and "row i"), top (column labels,
+#: "column j" and the title), bottom (and right without a colour bar), then the colour bar's
+#: gap, width and the room for its ticks and label, at the classroom style's sizes.
+FRAME_MARGINS = (0.85, 1.0, 0.15, 0.15, 0.14, 0.86)
+
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
 GLASS_ALPHA = 0.5
 
@@ -241,12 +248,10 @@ class FrameInspector(Holdable):
         self.table = widgets.HTML()
         self._render()
         with style_context(style):
-            # room on the left for the row labels and "row i" at the classroom style's size
-            self.fig = new_figure((5.0, 3.9), self.backend)
+            self.fig = new_figure((5.0, 3.9), self.backend)  # sized by _fit_figure
             self.ax = self.fig.add_axes((0.17, 0.06, 0.6, 0.8))
             # the overlays' colour bar: one Axes of its own, reused, so that changing the
-            # view never takes room from the frame (a colour bar made with ax= would); the
-            # room right of it holds its ticks and its label at the classroom style's sizes
+            # view never takes room from the frame (a colour bar made with ax= would)
             self.cax = self.fig.add_axes((0.8, 0.14, 0.028, 0.64))
             self.hist_fig = new_figure((4.6, 3.9), self.backend)
             # room for written-out depths (0.9676) and two-line sample labels under MSAA
@@ -300,10 +305,28 @@ class FrameInspector(Holdable):
         self.table.value = (f"<pre style='font-size:0.8em;line-height:1.25;white-space:pre;"
                             f"overflow-x:auto'>{text}</pre>")  # fmt: skip
 
+    def _fit_figure(self) -> None:
+        """Size the frame's figure to what it draws: the frame at its own aspect (no band
+        above and below it), the labels left of and above it, and the colour bar's room on
+        the right only in a view that has one (the image view left the right third of the
+        figure empty: review r12, exercise 11). The frame keeps its size and place."""
+        scale = min(FRAME_BOX[0] / self.width, FRAME_BOX[1] / self.height)  # inches a pixel
+        w, h = self.width * scale, self.height * scale
+        left, top, bottom, gap, bar, label = FRAME_MARGINS
+        right = gap + bar + label if self.view.value != "image" else bottom
+        fw, fh = left + w + right, bottom + h + top
+        if not np.allclose(self.fig.get_size_inches(), (fw, fh)):  # a live canvas resizes
+            self.fig.set_size_inches(fw, fh)
+        self.ax.set_position((left / fw, bottom / fh, w / fw, h / fh))
+        lift = min(0.08 * h, 0.3)  # the bar a little shorter than the frame, centred on it
+        self.cax.set_position(((left + w + gap) / fw, (bottom + lift) / fh, bar / fw,
+                               (h - 2 * lift) / fh))  # fmt: skip
+
     def _draw_frame(self) -> None:
         ax = self.ax
         ax.clear()
         self.cax.set_visible(self.view.value != "image")
+        self._fit_figure()
         if self.view.value == "image":
             shown = getattr(self.frame, "image", None)
             if shown is None or self.glass.value:
