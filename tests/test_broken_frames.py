@@ -29,6 +29,7 @@ PAIRS = [(1, 2), (3, 4), (5, 6)]
 MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5),
            "triangle": 11}  # fmt: skip
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
+README = Path(__file__).parents[1] / "README.md"
 
 
 @pytest.fixture(autouse=True)
@@ -507,6 +508,14 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     assert "**evidence**" in intro and "not drawn at all" in how
     assert "tells nothing" not in intro + how and "tries" not in intro + how  # r8 10b
     assert len(intro.split()) < 200  # r9 11-6: 543 words before a frame
+    # r14 11-2: frames 1, 3 and 4 need lesson 05b's reverse-Z and lesson 12 §9's
+    # premultiplied alpha, which lesson 11 does not teach: the intro and README say so
+    flat = " ".join(intro.split())
+    assert "after lesson 12" in flat and "05b" in flat and "12 §9" in flat, flat
+    row = next(
+        line for line in README.read_text().splitlines() if "diagnose six broken frames" in line
+    )
+    assert "lesson 11)" not in row and "after lesson 12" in row, row
     assert "**redrawn**" in how and "typed in" in how and "private functions" in how
     for n in ANSWERS:
         task = cells[f"frame_{n}_task"]
@@ -533,10 +542,35 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     assert "smaller" not in depths and "larger" not in depths
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
     assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
-    assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
+    # r14 11-1: "the pane's straight colour is exactly its alpha times the wall's … usually
+    # a pane too bright" named frame 4's cause (and frame 3's by elimination) before any
+    # history was read: the task says only that the pair is contrived; the rest is printed
+    # by a locked cell after 11.4's check, once it has passed
+    task4 = " ".join(cells["frame_4_task"].split())
+    assert "contrived" in task4
+    for telling in ("too bright", "straight colour", "alpha times", "premultipl"):
+        assert telling not in task4, telling
+    order = list(cells)
+    assert order.index("frame_4_note") == order.index("broken_frame_4_check") + 1
     # r12 11-6: lesson 12 §9 is the dark fringe of filtering straight alpha: no pane too bright
     assert "lesson 12" not in cells["frame_4_task"]
     assert "ontrived" not in cells["broken_frame_4_solution"]
+
+
+def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
+    """r14 11-1: why frames 3 and 4 look alike (the pane's straight colour is its alpha times
+    the wall's; the mistake usually shows as a pane too bright) is said after 11.4 passes."""
+    source = _cells()["frame_4_note"]
+    assert "too bright" in source
+    wrong = lambda b: ("texture filtering", (24, 20), (0.5, 0.5, 0.5))  # noqa: E731
+    for namespace in ({}, {"report": ex.check("broken_frame_4", wrong)},
+                      {"report": ex.check("broken_frame_3", sol.diagnosis(3))}):  # fmt: skip
+        exec(source, namespace)
+        shown = capsys.readouterr().out
+        assert "once the check of broken_frame_4" in shown and "too bright" not in shown, shown
+    exec(source, {"report": ex.check("broken_frame_4", sol.diagnosis(4))})
+    shown = capsys.readouterr().out
+    assert "too bright" in shown and "alpha times" in shown, shown
 
 
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
