@@ -381,6 +381,54 @@ def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(mon
     assert bf.frame_exercise(1).tries == bf.TRIES == 25
 
 
+def test_a_blind_loop_over_the_causes_waits_for_each_wrong_cause_past_two(monkeypatch):
+    """r14 11-4: a loop over the ten causes × five generic readers, moving on when told "not
+    the frame's cause", passed frames 1, 3, 4, 5 in 65 checks (38 s), under the 25 failing
+    checks allowed. Now past two distinct wrong causes of one frame, every check naming a
+    wrong cause waits 30 s more for each (at most 300 s) before it answers; the right cause
+    never waits for it; a pass starts again; inside the student's function no wait; 0: off."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setattr(tries, "_WRONG", {})
+    monkeypatch.setattr(tries, "SETTING", "25")
+    depth = lambda b: next(r.depth for r in b.frame.history(24, 28).records if r.shown)  # noqa: E731
+
+    def naming(cause):
+        return lambda b: (cause, (24, 28), depth(b))
+
+    notes = [ex.check("broken_frame_1", naming(c)).tries for c in ("z-fighting", "depth test off")]
+    assert notes == [None, None] and waits == []
+    report = ex.check("broken_frame_1", naming("affine interpolation"))
+    assert waits == [30.0] and "3 different wrong causes" in report.tries, report.tries
+    assert "not by trying the names" in str(report)
+    ex.check("broken_frame_1", naming("near-plane clipping"))
+    ex.check("broken_frame_1", naming("z-fighting"))  # a wrong cause again waits too
+    assert waits == [30.0, 60.0, 60.0]
+    report = ex.check("broken_frame_1", naming("depth function"))  # the right cause: no wait
+    assert report.passed and report.tries is None and waits == [30.0, 60.0, 60.0]
+    for cause in ("z-fighting", "depth test off", "affine interpolation"):  # counted afresh
+        ex.check("broken_frame_1", naming(cause))
+    assert waits[3:] == [30.0]
+    ex.check("broken_frame_2", naming("z-fighting"))  # another frame, its own count
+    assert waits[3:] == [30.0]
+    tries._WRONG["broken_frame_1"] = set(ex.CAUSES) - {"depth function"}
+    note = tries.wrong_causes("broken_frame_1", 25, {"sliver"}, False)  # all nine wrong
+    assert "waited 210 s" in note and waits[-1] == 210.0, note
+    inner = []
+
+    def searching(b):  # a check inside the student's function: it does not wait
+        inner.append(ex.check("broken_frame_1", naming("sliver")))
+        return naming("z-fighting")(b)
+
+    ex.check("broken_frame_1", searching)
+    assert inner and waits[-2:] == [210.0, 210.0] and len(waits) == 6  # the outer one only
+    monkeypatch.setattr(tries, "SETTING", "0")
+    assert ex.check("broken_frame_1", naming("sliver")).tries is None and len(waits) == 6
+
+
 def test_a_student_cell_setting_the_tries_variable_changes_nothing(monkeypatch):
     """r13: ``os.environ["TEACHRASTER_CHECK_TRIES"] = "0"`` in a student's cell switched the
     wait off (the variable was read at every check). Now it is read once, as the package is
