@@ -22,7 +22,7 @@ from student_variants import _under_with, front_to_back_by_reversing, layers_vec
 
 from teachraster import exercises as ex
 from teachraster.exercises.blending import colour_texts
-from teachraster.exercises.front_to_back import LayerStream
+from teachraster.exercises.front_to_back import layer_stream
 from teachraster.exercises.lines import as_pixels
 
 
@@ -344,10 +344,41 @@ def test_a_blend_figure_shows_src_and_dst_beside_the_answers():
 def test_a_nearest_first_walk_that_stops_passes_and_the_layers_come_once():
     assert ex.check("front_to_back", front_to_back).passed
     assert ex.check("front_to_back", _under_with(lambda a, c: a + (1 - a[3]) * c)).passed
-    stream = LayerStream(np.eye(4))
-    assert len(list(stream)) == 4 and list(stream) == [] and stream.read == 4
+    stream, read = layer_stream(np.eye(4))
+    assert len(list(stream)) == 4 and list(stream) == [] and read() == 4
     with pytest.raises(TypeError, match="read them with a for loop"):
-        np.asarray(LayerStream(np.eye(4)), dtype=float)
+        np.asarray(layer_stream(np.eye(4))[0], dtype=float)
+
+
+def _hidden_array(layers):
+    """r14 09-2: the stream's own array, read back to front without iterating."""
+    acc = np.zeros(4)
+    for c in np.asarray(layers._layers)[::-1]:
+        acc = np.asarray(c, float) + (1 - c[3]) * acc
+    return acc
+
+
+def _count_reset(layers):
+    """r14 09-2: every layer read, back to front, then the stream's counter set back to 0."""
+    stack = list(layers)
+    layers.read = 0
+    acc = np.zeros(4)
+    for c in stack[::-1]:
+        acc = np.asarray(c, float) + (1 - c[3]) * acc
+    return acc
+
+
+@pytest.mark.parametrize("fn", [_hidden_array, _count_reset], ids=["_layers", "read = 0"])
+def test_the_layer_stream_hides_its_layers_and_its_count(fn):
+    """r14 09-2: ``layers._layers`` (the stream's array) and ``layers.read = 0`` (its public,
+    writable count) let a back-to-front loop pass all 28 cases. The layers and the count now
+    live in the check's own closure, a generator: neither is an attribute of the stream."""
+    report = ex.check("front_to_back", fn)
+    assert not report.passed, str(report)
+    stream, _ = layer_stream(np.eye(4))
+    assert not any(k in ("read", "_layers") for k in dir(stream)), dir(stream)
+    with pytest.raises(AttributeError):
+        stream.read = 0
 
 
 def _no_stop(layers):
