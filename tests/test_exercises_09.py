@@ -996,3 +996,33 @@ def test_the_read_past_figure_crosses_out_the_layers_read_behind_the_opaque_one(
     plt.close(fig)
     got = failure.got
     assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque == len(crosses) > 0
+
+
+def test_pixels_outside_the_image_fail_and_are_named():
+    """r14 09-8: nothing asked for pixels inside the 12 × 12 image only, and no case tested
+    it: the teacher's solution without its clip at 0 passed all 50 cases, though moved by −ε
+    the line (0, 2.5) → (5, 2.5) starts in the diamond of column −1. The task says so now,
+    and a named case starts at x = 0 on a row's centre line."""
+    from teachraster.exercises import lines
+
+    labels = {label: args for label, args, _ in lines.line_cases()}
+    assert labels["start on the image's left edge (x = 0), on a row's centre line"] == (
+        (0.0, 2.5), (5.0, 2.5))  # fmt: skip
+    unclipped = line_with(-EPS, -EPS * EPS, clip=False)
+    report = ex.check("line_pixels", unclipped, budget=60)
+    assert not report.passed and report.failures, str(report)
+    first = report.failures[0]
+    assert first.kind == "outside the image", (first.kind, first.explanation)
+    assert "(row 2, col -1)" in first.explanation and "inside the image" in first.explanation
+    task = " ".join(_nb_cells()["line_pixels_task"].split())
+    assert "inside the 12 × 12 image" in task and "row, col < 12" in task, task
+
+
+def _nb_cells() -> dict:
+    """Exercise 09's cells by grade_id."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip

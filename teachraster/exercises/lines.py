@@ -57,6 +57,8 @@ def line_cases() -> list[tuple[str, tuple, set]]:
         ("steep, past a corner by less than 1/100", (9.25, 6.25), (10.25, 2.625)),
         ("steep, past a corner, downwards", (1.375, 1.75), (3.25, 8.375)),
         ("x-major, past a corner by less than 1/100", (11.5, 2.625), (4.25, 7.625)),
+        # r14 09-8: moved by −ε, p0 lies in the diamond of column −1, outside the image
+        ("start on the image's left edge (x = 0), on a row's centre line", (0.0, 2.5), (5.0, 2.5)),
     ]
     rng, now = np.random.default_rng(SEED), drawn_rng()
     for k in range(24 + DRAWN):
@@ -91,17 +93,19 @@ def as_pixels(value) -> frozenset[tuple[int, int]]:
 
 
 def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col",
-                   closed=False, start=False, half=0.5, centre=0.5):  # fmt: skip
+                   closed=False, start=False, half=0.5, centre=0.5, inside=True):  # fmt: skip
     """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points;
     ``end=True`` also lights the pixel whose diamond holds p1, ``end="unmoved"`` tests that
     diamond with p1 before it was moved (``"unmoved closed"``: and its boundary counted in); ``closed=True`` counts the diamond's boundary in;
     ``start=True`` leaves the diamond that holds (the moved) p0 dark; ``order="col row"``
     gives pairs the other way round; ``half`` is the diamond's radius and ``centre`` where it
-    sits in its pixel (½: the centre)."""
+    sits in its pixel (½: the centre); ``inside=False`` keeps pixels left of or above the
+    image (column or row −1)."""
     a, b = np.asarray(p0, float) + eps, np.asarray(p1, float) + eps
     lo, hi = np.floor(np.minimum(a, b)) - 1, np.floor(np.maximum(a, b)) + 2
     # no clip at the window's far side: a student's too-large diamond reaches past it
-    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), hi[0]), np.arange(max(lo[1], 0), hi[1]))
+    first = np.maximum(lo, 0) if inside else lo
+    cols, rows = np.meshgrid(np.arange(first[0], hi[0]), np.arange(first[1], hi[1]))
     cx, cy = cols.ravel() + centre, rows.ravel() + centre
     ok = _meets(a, b, cx, cy, closed, half)
     if end is not True:
@@ -361,6 +365,16 @@ LINE_MISTAKES = [
         gives=lambda p0, p1: frozenset(
             (r, c) for r, c in diamond_pixels(p0, p1, centre=0.0) if r < WINDOW and c < WINDOW
         ),  # fmt: skip
+    ),
+    Mistake(  # r14 09-8
+        "outside the image",
+        lambda a, e, g: (
+            f"you lit {', '.join(f'(row {r}, col {c})' for r, c in sorted(g - e))}, outside the "
+            f"{WINDOW} × {WINDOW} image: moved by (−ε, −ε²), the segment passes through the "
+            "diamond of a pixel in column −1 (or row −1), which reaches to x = 0 (y = 0). "
+            f"Return only the pixels inside the image (0 ≤ row, col < {WINDOW})"
+        ),
+        gives=lambda p0, p1: diamond_pixels(p0, p1, inside=False),
     ),
     Mistake(
         "p0's pixel only",
