@@ -133,6 +133,8 @@ def test_an_eps_too_large_fails_and_is_named(denominator):
     first = _first("line_pixels", line_with(-e, -e * e))
     assert first.kind == "ε not small enough", first.explanation
     assert "your ε is not small enough" in first.explanation
+    # r14 09-4: ε = 1/64 was told "those an ε of 1/50 gives" (the table's first that fits)
+    assert f"1/{denominator}" in first.explanation.split("ε² in y")[0], first.explanation
 
 
 def test_p1_tested_before_moving_is_named_and_never_called_eps_in_y():

@@ -294,14 +294,22 @@ LARGE_EPS = {"1/10": 0.1, "1/16": 1 / 16, "1/20": 0.05, "1/32": 1 / 32, "1/50": 
              "1/1000": 1e-3}  # fmt: skip
 
 
+def _large_eps_words(args, expected, got) -> str:
+    """Every ε of the table that gives the student's pixels on this case (r14 09-4: ε = 1/64
+    was told "those an ε of 1/50 gives", the table's first that fits)."""
+    p0, p1 = args
+    fits = [n for n, e in LARGE_EPS.items() if diamond_pixels(p0, p1, eps=(-e, -e * e)) == got]
+    which = fits[0] if len(fits) == 1 else ", ".join(fits[:-1]) + f" or {fits[-1]}"
+    return (f"your ε is not small enough: your pixels are those an ε of {which} (and ε² in "
+            "y) gives, where the moved segment crosses a diamond corner it only passes near "
+            "and another pixel lights; the rule's ε is smaller than any gap the inputs can "
+            "make, so take one far below the 1/8 grid's (2⁻⁸⁰, with Fraction)")  # fmt: skip
+
+
 def _large_eps(name: str, eps: float) -> Mistake:
-    words = (f"your ε is not small enough: your pixels are those an ε of {name} (and ε² in "
-             "y) gives, where the moved segment crosses a diamond corner it only passes near "
-             "and another pixel lights; the rule's ε is smaller than any gap the inputs can "
-             "make, so take one far below the 1/8 grid's (2⁻⁸⁰, with Fraction)")  # fmt: skip
     return Mistake(
         "ε not small enough",
-        words,
+        _large_eps_words,
         gives=lambda p0, p1: diamond_pixels(p0, p1, eps=(-eps, -eps * eps)),
     )
 
