@@ -1028,3 +1028,11 @@ def _nb_cells() -> dict:
     nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
     return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
             for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+
+
+@pytest.mark.parametrize("empty", [[], (), set(), np.zeros((0, 2), int)], ids=repr)
+def test_no_pixels_for_every_line_is_said_so(empty):
+    """r14 09-5: ``return []`` was told "your function returns set() for every line"."""
+    first = _first("line_pixels", lambda p0, p1: empty)
+    assert "returns no pixels for every line" in first.explanation, first.explanation
+    assert "set()" not in first.explanation

@@ -465,8 +465,10 @@ def draw_line(ax, case, got):
 
 LINE_PIXELS = Exercise(
     "line_pixels", line_cases, as_pixels, lambda g, e, a: g == e, explain_line, _line_rule,
-    LINE_MISTAKES, constant=lambda v: f"your function returns {short(set(v))} for every line, "
-    "whatever its end points: a placeholder left in?",
+    LINE_MISTAKES, constant=lambda v: (
+        # r14 09-5: ``return []`` was told "returns set()", a set the student never wrote
+        f"your function returns {short(set(v)) if len(v) else 'no pixels'} for every line, "
+        "whatever its end points: a placeholder left in?"),
     answers=(PackageAnswer(rasterize_line, modules=("teachraster.core.line_rules",)),),
     draw=draw_line, partial_names=False,
     example=7,  # 45° along diamond edges: ties, drawn over the diamonds
