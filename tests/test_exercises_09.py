@@ -1036,3 +1036,16 @@ def test_no_pixels_for_every_line_is_said_so(empty):
     first = _first("line_pixels", lambda p0, p1: empty)
     assert "returns no pixels for every line" in first.explanation, first.explanation
     assert "set()" not in first.explanation
+
+
+@pytest.mark.parametrize(
+    "fn, named",
+    [(lambda s, d: d, "destination unchanged"), (lambda s, d: s, "source unchanged")],
+    ids=["dst", "src"],
+)
+def test_over_straight_returning_an_input_unchanged_is_named(fn, named):
+    """r14 09-7: ``over_straight`` returning ``dst`` got the rule restated (kind "value"),
+    where ``over_premultiplied`` names it: the straight table lacked those two rows."""
+    first = _first("over_straight", fn)
+    assert first.kind == named, (first.kind, first.explanation)
+    assert f"that is the {named}" in first.explanation, first.explanation
