@@ -14,6 +14,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+import student_variants as sv
 from lines_blending_solutions import EPS, _meets, line_pixels, line_with, over_straight
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
@@ -1049,3 +1050,17 @@ def test_over_straight_returning_an_input_unchanged_is_named(fn, named):
     first = _first("over_straight", fn)
     assert first.kind == named, (first.kind, first.explanation)
     assert f"that is the {named}" in first.explanation, first.explanation
+
+
+@pytest.mark.parametrize(
+    "fn, named",
+    [(sv.line_bresenham_textbook, "Bresenham"), (sv.line_dda_sampled, "DDA")],
+    ids=["Bresenham e2 > -dy", "DDA of n points"],
+)
+def test_the_textbook_bresenham_and_dda_are_named(fn, named):
+    """r14 09-6: the classic Bresenham loop (``e2 > −dy``, ``e2 < dx``, both end pixels) and a
+    DDA sampling n = max(|dx|, |dy|) points from p0, both taught by lesson 12 §2-3, got the
+    generic rule at p1's pixel; the checker named only Zingl's form and its column DDA."""
+    report = ex.check("line_pixels", fn, budget=60)
+    kinds = {f.kind for f in report.failures}
+    assert kinds == {named}, (kinds, report.failures[0].explanation)

@@ -165,6 +165,35 @@ def hand_bresenham(p0, p1, end=False):
     return frozenset(out | ({(y1, x1)} if end else set()))
 
 
+def classic_bresenham(p0, p1):
+    """Bresenham's loop as most courses print it (r14 09-6): ``err = dx − dy``, a step in x
+    when ``e2 > −dy``, in y when ``e2 < dx`` (strict: at a tie it stays where Zingl's form of
+    :func:`hand_bresenham` steps), the end points floored, both end pixels lit."""
+    (x0, y0), (x1, y1) = ((int(np.floor(x)), int(np.floor(y))) for x, y in (p0, p1))
+    dx, dy = abs(x1 - x0), abs(y1 - y0)
+    sx, sy = (1 if x0 < x1 else -1), (1 if y0 < y1 else -1)
+    err, out = dx - dy, {(y0, x0)}
+    while (x0, y0) != (x1, y1):
+        e2 = 2 * err
+        if e2 > -dy:
+            err, x0 = err - dy, x0 + sx
+        if e2 < dx:
+            err, y0 = err + dx, y0 + sy
+        out.add((y0, x0))
+    return frozenset(out)
+
+
+def sampled_dda(p0, p1):
+    """A DDA as a textbook samples it (r14 09-6): n = max(|dx|, |dy|) (whole) evenly spaced
+    points from p0, p1 not among them, each lighting the pixel it lies in."""
+    (x0, y0), (x1, y1) = p0, p1
+    n = int(max(abs(x1 - x0), abs(y1 - y0)))
+    return frozenset(
+        (int(np.floor(y0 + (y1 - y0) * k / n)), int(np.floor(x0 + (x1 - x0) * k / n)))
+        for k in range(n)
+    )
+
+
 def _unmoved_range(p0, p1):
     """The rule's pixels inside the box of the pixels the unmoved end points lie in."""
     (c0, c1), (r0, r1) = (sorted((int(np.floor(p0[k])), int(np.floor(p1[k])))) for k in (0, 1))
@@ -348,6 +377,15 @@ LINE_MISTAKES = [
     *(
         Mistake("Bresenham", _BRESENHAM, gives=lambda p0, p1, e=e: hand_bresenham(p0, p1, e))
         for e in (False, True)
+    ),
+    Mistake("Bresenham", _BRESENHAM, gives=classic_bresenham),  # r14 09-6: e2 > −dy, e2 < dx
+    Mistake(
+        "DDA",
+        "you sampled the segment at n = max(|dx|, |dy|) evenly spaced points from p0 and lit "
+        "the pixel each lies in (a DDA, lesson 12 §3): that lights the pixels the samples "
+        "fall in, wherever in the pixel; the rule lights the pixels whose diamond "
+        "|x − (col + ½)| + |y − (row + ½)| < ½ the segment passes through and leaves",
+        gives=sampled_dda,
     ),
     Mistake(
         "search range from the unmoved ends",
