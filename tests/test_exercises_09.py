@@ -569,9 +569,10 @@ def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_f
     nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
     text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
             for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
-    assert "does not print" not in text["over_premultiplied_task"]
-    assert "**9.2a.**" in text["over_premultiplied_task"]
-    assert "**9.2b.**" in text["over_premultiplied_step"]
+    assert "does not print" not in text["over_straight_task"]
+    # r14: the ids were swapped (9.2a under over_premultiplied_task): each names its task now
+    assert "**9.2a.**" in text["over_straight_task"] and "over_premultiplied_step" not in text
+    assert "**9.2b.**" in text["over_premultiplied_task"]
 
 
 @pytest.mark.parametrize(
@@ -1064,3 +1065,12 @@ def test_the_textbook_bresenham_and_dda_are_named(fn, named):
     report = ex.check("line_pixels", fn, budget=60)
     kinds = {f.kind for f in report.failures}
     assert kinds == {named}, (kinds, report.failures[0].explanation)
+
+
+def test_each_task_cells_grade_id_names_the_function_it_asks_for():
+    """r14: cell 5 (9.2a, ``over_straight``) carried ``over_premultiplied_task`` and cell 8
+    (9.2b) ``over_premultiplied_step``: a lecturer reading the gradebook saw them swapped."""
+    for grade_id, source in _nb_cells().items():
+        asked = re.findall(r"write `(\w+)\(", source, flags=re.I)
+        if grade_id.endswith("_task") and asked:
+            assert grade_id == f"{asked[0]}_task", (grade_id, asked)
