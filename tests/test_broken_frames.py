@@ -924,3 +924,12 @@ def test_the_history_plot_says_smaller_down_not_nearer():
         assert ax.get_ylabel() == "depth (smaller ↓)"
     finally:
         plt.close(fig)
+
+
+def test_the_how_text_indexes_the_trace_by_piece():
+    """r14: cell 4 said ``frame.trace.window[k, :, :2]`` "for triangle k", but the trace is
+    indexed by clipped piece (``r.piece``, as the checker reads it); the two agree only where
+    nothing is clipped, as in these frames."""
+    how = " ".join(_cells()["how_text"].split())
+    assert "window[r.piece, :, :2]" in how and "for triangle k" not in how, how
+    assert "clipped piece" in how
