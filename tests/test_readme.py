@@ -116,5 +116,6 @@ def test_grading_says_a_students_cell_can_rebind_the_checker(monkeypatch):
     assert not report.passed
     report.assert_passed()  # the hole, as documented: no AssertionError
     text = " ".join((Path(__file__).parents[1] / "docs/grading.md").read_text().split())
-    for needed in ("Report.assert_passed = lambda self: None", "not detected", "fresh kernel"):
+    for needed in ("Report.assert_passed = lambda self: None", "not detected", "fresh kernel",
+                   "--check-submissions` flags it where it is written plainly"):  # fmt: skip
         assert needed in text, needed
