@@ -1030,13 +1030,13 @@ WRONG = {
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
         lambda b: ("z-fighting", (24, 28), 0.5),
-        "'z-fighting' does not explain what the two histories of (24, 28) show",
+        "'z-fighting' is not what the two histories of (24, 28) show",
     ),  # fmt: skip
     "frame 2 blamed on the depth function, its evidence read right": (
         "broken_frame_2",
         lambda b: ("depth function", (24, 28), 0.973767),
         # r11 11-D: frame 2's evidence is a triangle now, so the depth is no longer its
-        "'depth function' does not explain what the two histories",
+        "'depth function' is not what the two histories",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",

@@ -108,7 +108,7 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     twin = ANSWERS[next(b if a == number else a for a, b in PAIRS if number in (a, b))]
     same_kind = bf.EVIDENCE[twin][0] == bf.EVIDENCE[cause][0]
     failure = _first(number, (twin, pixel, value if same_kind else MADE_UP[bf.EVIDENCE[twin][0]]))
-    assert failure.kind == "cause" and f"{twin!r} does not explain" in failure.explanation
+    assert failure.kind == "cause" and f"{twin!r} is not what the two" in failure.explanation
     assert "mark of" not in failure.explanation and "stage by stage" in failure.explanation
     assert ("read right" in failure.explanation) == same_kind, failure.explanation
     off = (value + 1 if isinstance(value, int) else value + 1e-3 if isinstance(value, float)
@@ -457,7 +457,7 @@ def test_a_wrong_cause_is_told_the_same_whether_or_not_the_pixel_bears_its_mark(
             assert failure.kind == "cause", (number, cause, failure.explanation)
             text = failure.explanation.replace(repr(cause), "C").replace(bf._SIGNS[cause][1], "S")
             assert "bear" not in text and "another cause" not in text, text
-            words.add(text[text.index("C does not explain") :].split(". Your value")[0])
+            words.add(text[text.index("C is not what") :].split(". Your value")[0])
         assert len(words) == 1, (number, words)
 
 
@@ -933,3 +933,15 @@ def test_the_how_text_indexes_the_trace_by_piece():
     how = " ".join(_cells()["how_text"].split())
     assert "window[r.piece, :, :2]" in how and "for triangle k" not in how, how
     assert "clipped piece" in how
+
+
+def test_a_wrong_cause_is_told_where_to_look_first():
+    """r14 (cosmetic): a wrong cause's ~400 characters began with the same sentence and put
+    the instruction last; now it says first that the cause is not what the histories show and
+    to find the first stage where they part, and the stated cause's own mark last."""
+    failure = _first(6, ("z-fighting", (22, 40), 0.299992))
+    text = failure.explanation
+    assert failure.kind == "cause", text
+    head = text[text.index("'z-fighting' is not what") :]
+    assert head.index("find the first stage where they part") < 120, head
+    assert head.index("find the first stage") < head.index("would show as"), head
