@@ -945,3 +945,14 @@ def test_a_wrong_cause_is_told_where_to_look_first():
     head = text[text.index("'z-fighting' is not what") :]
     assert head.index("find the first stage where they part") < 120, head
     assert head.index("find the first stage") < head.index("would show as"), head
+
+
+def test_grading_says_the_source_names_the_causes():
+    """r14 11-3: ``inspect.getsource`` of the frames' specs names every mistake; grading.md
+    said the cause was hidden (no attribute or repr names it) without saying the source does."""
+    import inspect
+
+    source = inspect.getsource(bf)
+    assert "reverse_depth=True" in source and "winding_reversed=True" in source
+    text = " ".join((Path(__file__).parents[1] / "docs/grading.md").read_text().split())
+    assert "the cause is not secret from a student who opens the checker's source" in text
