@@ -31,9 +31,10 @@ def _meets(a, b, cx, cy) -> bool:
     return lo < hi or (lo == hi and not (lo_open or hi_open))
 
 
-def line_with(eps_x, eps_y, order="row col"):
+def line_with(eps_x, eps_y, order="row col", clip=True):
     """The diamond-exit rule with the end points moved by (eps_x, eps_y) (GL: (−ε, −ε²)),
-    pairs as (row, col), or (col, row) for the mistake."""
+    pairs as (row, col), or (col, row) for the mistake; ``clip=False`` keeps pixels left of
+    or above the image (r14 09-8)."""
 
     def fn(p0, p1):
         a = (Fraction(p0[0]) + eps_x, Fraction(p0[1]) + eps_y)
@@ -43,7 +44,8 @@ def line_with(eps_x, eps_y, order="row col"):
             for col in range(int(min(a[0], b[0])) - 1, int(max(a[0], b[0])) + 2):
                 cx, cy = col + HALF, row + HALF
                 inside_end = abs(b[0] - cx) + abs(b[1] - cy) < HALF
-                if row >= 0 and col >= 0 and _meets(a, b, cx, cy) and not inside_end:
+                inside = (row >= 0 and col >= 0) or not clip
+                if inside and _meets(a, b, cx, cy) and not inside_end:
                     out.append((row, col) if order == "row col" else (col, row))
         return out
 

@@ -1030,13 +1030,13 @@ WRONG = {
     "frame 1 blamed on z-fighting": (
         "broken_frame_1",
         lambda b: ("z-fighting", (24, 28), 0.5),
-        "'z-fighting' does not explain what the two histories of (24, 28) show",
+        "'z-fighting' is not what the two histories of (24, 28) show",
     ),  # fmt: skip
     "frame 2 blamed on the depth function, its evidence read right": (
         "broken_frame_2",
         lambda b: ("depth function", (24, 28), 0.973767),
         # r11 11-D: frame 2's evidence is a triangle now, so the depth is no longer its
-        "'depth function' does not explain what the two histories",
+        "'depth function' is not what the two histories",
     ),  # fmt: skip
     "frame 4, a pixel the mistake left alone": (
         "broken_frame_4",
@@ -1440,3 +1440,33 @@ KINDS.update(
         "frame 1 pixel off the frame": "type",
     }
 )
+
+
+# -- r14 09-6: the two textbook forms of lesson 12 §2-3 ------------------------------------------
+def line_bresenham_textbook(p0, p1):
+    """Bresenham's loop as most courses print it (err = dx − dy; e2 > −dy; e2 < dx), the end
+    points floored to their pixels, both end pixels lit."""
+    x0, y0, x1, y1 = (int(math.floor(v)) for v in (*p0, *p1))
+    dx, dy = abs(x1 - x0), abs(y1 - y0)
+    sx, sy = (1 if x1 > x0 else -1), (1 if y1 > y0 else -1)
+    err, out = dx - dy, []
+    while True:
+        out.append((y0, x0))
+        if (x0, y0) == (x1, y1):
+            break
+        e2 = 2 * err
+        if e2 > -dy:
+            err, x0 = err - dy, x0 + sx
+        if e2 < dx:
+            err, y0 = err + dx, y0 + sy
+    return out
+
+
+def line_dda_sampled(p0, p1):
+    """A DDA that samples n = max(|dx|, |dy|) evenly spaced points from p0 (p1 not among
+    them) and lights the pixel each lies in."""
+    (x0, y0), (x1, y1) = p0, p1
+    n = int(max(abs(x1 - x0), abs(y1 - y0)))
+    out = [(int(math.floor(y0 + (y1 - y0) * k / n)), int(math.floor(x0 + (x1 - x0) * k / n)))
+           for k in range(n)]  # fmt: skip
+    return list(dict.fromkeys(out))

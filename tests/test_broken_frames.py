@@ -29,6 +29,7 @@ PAIRS = [(1, 2), (3, 4), (5, 6)]
 MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5),
            "triangle": 11}  # fmt: skip
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
+README = Path(__file__).parents[1] / "README.md"
 
 
 @pytest.fixture(autouse=True)
@@ -107,7 +108,7 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     twin = ANSWERS[next(b if a == number else a for a, b in PAIRS if number in (a, b))]
     same_kind = bf.EVIDENCE[twin][0] == bf.EVIDENCE[cause][0]
     failure = _first(number, (twin, pixel, value if same_kind else MADE_UP[bf.EVIDENCE[twin][0]]))
-    assert failure.kind == "cause" and f"{twin!r} does not explain" in failure.explanation
+    assert failure.kind == "cause" and f"{twin!r} is not what the two" in failure.explanation
     assert "mark of" not in failure.explanation and "stage by stage" in failure.explanation
     assert ("read right" in failure.explanation) == same_kind, failure.explanation
     off = (value + 1 if isinstance(value, int) else value + 1e-3 if isinstance(value, float)
@@ -380,6 +381,54 @@ def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(mon
     assert bf.frame_exercise(1).tries == bf.TRIES == 25
 
 
+def test_a_blind_loop_over_the_causes_waits_for_each_wrong_cause_past_two(monkeypatch):
+    """r14 11-4: a loop over the ten causes × five generic readers, moving on when told "not
+    the frame's cause", passed frames 1, 3, 4, 5 in 65 checks (38 s), under the 25 failing
+    checks allowed. Now past two distinct wrong causes of one frame, every check naming a
+    wrong cause waits 30 s more for each (at most 300 s) before it answers; the right cause
+    never waits for it; a pass starts again; inside the student's function no wait; 0: off."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setattr(tries, "_WRONG", {})
+    monkeypatch.setattr(tries, "SETTING", "25")
+    depth = lambda b: next(r.depth for r in b.frame.history(24, 28).records if r.shown)  # noqa: E731
+
+    def naming(cause):
+        return lambda b: (cause, (24, 28), depth(b))
+
+    notes = [ex.check("broken_frame_1", naming(c)).tries for c in ("z-fighting", "depth test off")]
+    assert notes == [None, None] and waits == []
+    report = ex.check("broken_frame_1", naming("affine interpolation"))
+    assert waits == [30.0] and "3 different wrong causes" in report.tries, report.tries
+    assert "not by trying the names" in str(report)
+    ex.check("broken_frame_1", naming("near-plane clipping"))
+    ex.check("broken_frame_1", naming("z-fighting"))  # a wrong cause again waits too
+    assert waits == [30.0, 60.0, 60.0]
+    report = ex.check("broken_frame_1", naming("depth function"))  # the right cause: no wait
+    assert report.passed and report.tries is None and waits == [30.0, 60.0, 60.0]
+    for cause in ("z-fighting", "depth test off", "affine interpolation"):  # counted afresh
+        ex.check("broken_frame_1", naming(cause))
+    assert waits[3:] == [30.0]
+    ex.check("broken_frame_2", naming("z-fighting"))  # another frame, its own count
+    assert waits[3:] == [30.0]
+    tries._WRONG["broken_frame_1"] = set(ex.CAUSES) - {"depth function"}
+    note = tries.wrong_causes("broken_frame_1", 25, {"sliver"}, False)  # all nine wrong
+    assert "waited 210 s" in note and waits[-1] == 210.0, note
+    inner = []
+
+    def searching(b):  # a check inside the student's function: it does not wait
+        inner.append(ex.check("broken_frame_1", naming("sliver")))
+        return naming("z-fighting")(b)
+
+    ex.check("broken_frame_1", searching)
+    assert inner and waits[-2:] == [210.0, 210.0] and len(waits) == 6  # the outer one only
+    monkeypatch.setattr(tries, "SETTING", "0")
+    assert ex.check("broken_frame_1", naming("sliver")).tries is None and len(waits) == 6
+
+
 def test_a_student_cell_setting_the_tries_variable_changes_nothing(monkeypatch):
     """r13: ``os.environ["TEACHRASTER_CHECK_TRIES"] = "0"`` in a student's cell switched the
     wait off (the variable was read at every check). Now it is read once, as the package is
@@ -408,7 +457,7 @@ def test_a_wrong_cause_is_told_the_same_whether_or_not_the_pixel_bears_its_mark(
             assert failure.kind == "cause", (number, cause, failure.explanation)
             text = failure.explanation.replace(repr(cause), "C").replace(bf._SIGNS[cause][1], "S")
             assert "bear" not in text and "another cause" not in text, text
-            words.add(text[text.index("C does not explain") :].split(". Your value")[0])
+            words.add(text[text.index("C is not what") :].split(". Your value")[0])
         assert len(words) == 1, (number, words)
 
 
@@ -507,6 +556,14 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     assert "**evidence**" in intro and "not drawn at all" in how
     assert "tells nothing" not in intro + how and "tries" not in intro + how  # r8 10b
     assert len(intro.split()) < 200  # r9 11-6: 543 words before a frame
+    # r14 11-2: frames 1, 3 and 4 need lesson 05b's reverse-Z and lesson 12 §9's
+    # premultiplied alpha, which lesson 11 does not teach: the intro and README say so
+    flat = " ".join(intro.split())
+    assert "after lesson 12" in flat and "05b" in flat and "12 §9" in flat, flat
+    row = next(
+        line for line in README.read_text().splitlines() if "diagnose six broken frames" in line
+    )
+    assert "lesson 11)" not in row and "after lesson 12" in row, row
     assert "**redrawn**" in how and "typed in" in how and "private functions" in how
     for n in ANSWERS:
         task = cells[f"frame_{n}_task"]
@@ -533,10 +590,35 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     assert "smaller" not in depths and "larger" not in depths
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
     assert "the face behind (0.973767" in cells["broken_frame_1_solution"]
-    assert "contrived" in cells["frame_4_task"] and "too bright" in cells["frame_4_task"]
+    # r14 11-1: "the pane's straight colour is exactly its alpha times the wall's … usually
+    # a pane too bright" named frame 4's cause (and frame 3's by elimination) before any
+    # history was read: the task says only that the pair is contrived; the rest is printed
+    # by a locked cell after 11.4's check, once it has passed
+    task4 = " ".join(cells["frame_4_task"].split())
+    assert "contrived" in task4
+    for telling in ("too bright", "straight colour", "alpha times", "premultipl"):
+        assert telling not in task4, telling
+    order = list(cells)
+    assert order.index("frame_4_note") == order.index("broken_frame_4_check") + 1
     # r12 11-6: lesson 12 §9 is the dark fringe of filtering straight alpha: no pane too bright
     assert "lesson 12" not in cells["frame_4_task"]
     assert "ontrived" not in cells["broken_frame_4_solution"]
+
+
+def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
+    """r14 11-1: why frames 3 and 4 look alike (the pane's straight colour is its alpha times
+    the wall's; the mistake usually shows as a pane too bright) is said after 11.4 passes."""
+    source = _cells()["frame_4_note"]
+    assert "too bright" in source
+    wrong = lambda b: ("texture filtering", (24, 20), (0.5, 0.5, 0.5))  # noqa: E731
+    for namespace in ({}, {"report": ex.check("broken_frame_4", wrong)},
+                      {"report": ex.check("broken_frame_3", sol.diagnosis(3))}):  # fmt: skip
+        exec(source, namespace)
+        shown = capsys.readouterr().out
+        assert "once the check of broken_frame_4" in shown and "too bright" not in shown, shown
+    exec(source, {"report": ex.check("broken_frame_4", sol.diagnosis(4))})
+    shown = capsys.readouterr().out
+    assert "too bright" in shown and "alpha times" in shown, shown
 
 
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
@@ -842,3 +924,35 @@ def test_the_history_plot_says_smaller_down_not_nearer():
         assert ax.get_ylabel() == "depth (smaller ↓)"
     finally:
         plt.close(fig)
+
+
+def test_the_how_text_indexes_the_trace_by_piece():
+    """r14: cell 4 said ``frame.trace.window[k, :, :2]`` "for triangle k", but the trace is
+    indexed by clipped piece (``r.piece``, as the checker reads it); the two agree only where
+    nothing is clipped, as in these frames."""
+    how = " ".join(_cells()["how_text"].split())
+    assert "window[r.piece, :, :2]" in how and "for triangle k" not in how, how
+    assert "clipped piece" in how
+
+
+def test_a_wrong_cause_is_told_where_to_look_first():
+    """r14 (cosmetic): a wrong cause's ~400 characters began with the same sentence and put
+    the instruction last; now it says first that the cause is not what the histories show and
+    to find the first stage where they part, and the stated cause's own mark last."""
+    failure = _first(6, ("z-fighting", (22, 40), 0.299992))
+    text = failure.explanation
+    assert failure.kind == "cause", text
+    head = text[text.index("'z-fighting' is not what") :]
+    assert head.index("find the first stage where they part") < 120, head
+    assert head.index("find the first stage") < head.index("would show as"), head
+
+
+def test_grading_says_the_source_names_the_causes():
+    """r14 11-3: ``inspect.getsource`` of the frames' specs names every mistake; grading.md
+    said the cause was hidden (no attribute or repr names it) without saying the source does."""
+    import inspect
+
+    source = inspect.getsource(bf)
+    assert "reverse_depth=True" in source and "winding_reversed=True" in source
+    text = " ".join((Path(__file__).parents[1] / "docs/grading.md").read_text().split())
+    assert "the cause is not secret from a student who opens the checker's source" in text

@@ -679,6 +679,39 @@ def test_check_submissions_lists_what_nbgrader_would_score_0_silently(tmp_path, 
     assert main(["nbgrader", str(root), "--check-submissions"]) == 0
 
 
+def test_check_submissions_flags_a_cell_that_changes_the_checker(tmp_path, capsys):
+    """r14 09-3: ``Report.assert_passed = lambda self: None`` in a solution cell made every
+    later check pass under nbgrader whatever the answer, unflagged. --check-submissions now
+    names such a cell (by its written code); an honest solution is not flagged."""
+    root = tmp_path / "class"
+    assert main(["nbgrader", str(root), str(EXERCISES[0])]) == 0
+    name, stem = EXERCISES[0].name, EXERCISES[0].stem
+    release = json.loads(student_text(EXERCISES[0]))
+
+    def submit(student: str, code: str):
+        nb = json.loads(json.dumps(release))
+        cell = next(c for c in nb["cells"] if c["metadata"].get("nbgrader", {}).get("solution"))
+        cell["source"] = code
+        folder = root / "submitted" / student / stem
+        folder.mkdir(parents=True)
+        (folder / name).write_text(json.dumps(nb), encoding="utf-8")
+
+    submit("ada", "def edge_function(a, b, p):\n    return 0.0  # wrong, honestly")
+    submit("bob", "from teachraster.exercises.report import Report\n"
+                  "Report.assert_passed = lambda self: None")  # fmt: skip
+    submit("cy", "%matplotlib inline\nimport teachraster\n"
+                 "teachraster.exercises.tries._FAILED.clear()")  # fmt: skip
+    submit("dee", 'setattr(ex, "check", lambda *a, **k: None)')
+    capsys.readouterr()
+    assert main(["nbgrader", str(root), "--check-submissions"]) == 1
+    out = capsys.readouterr().out
+    assert "submitted/ada/" not in out
+    assert "'Report.assert_passed = lambda self: None'" in out
+    assert "'from teachraster.exercises.report import Report'" in out
+    assert "_FAILED.clear()" in out and "submitted/dee/" in out
+    assert "changes the checker" in out and "re-check that student's functions" in out
+
+
 def test_the_nbgrader_config_lets_a_lecturer_raise_every_checks_budget(tmp_path, monkeypatch):
     from teachraster.course.nbgrader_layout import CONFIG
     from teachraster.exercises.running import BUDGET_VARIABLE, effective_budget

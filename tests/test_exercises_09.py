@@ -14,6 +14,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+import student_variants as sv
 from lines_blending_solutions import EPS, _meets, line_pixels, line_with, over_straight
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
@@ -22,7 +23,7 @@ from student_variants import _under_with, front_to_back_by_reversing, layers_vec
 
 from teachraster import exercises as ex
 from teachraster.exercises.blending import colour_texts
-from teachraster.exercises.front_to_back import LayerStream
+from teachraster.exercises.front_to_back import layer_stream
 from teachraster.exercises.lines import as_pixels
 
 
@@ -133,6 +134,8 @@ def test_an_eps_too_large_fails_and_is_named(denominator):
     first = _first("line_pixels", line_with(-e, -e * e))
     assert first.kind == "ε not small enough", first.explanation
     assert "your ε is not small enough" in first.explanation
+    # r14 09-4: ε = 1/64 was told "those an ε of 1/50 gives" (the table's first that fits)
+    assert f"1/{denominator}" in first.explanation.split("ε² in y")[0], first.explanation
 
 
 def test_p1_tested_before_moving_is_named_and_never_called_eps_in_y():
@@ -344,10 +347,41 @@ def test_a_blend_figure_shows_src_and_dst_beside_the_answers():
 def test_a_nearest_first_walk_that_stops_passes_and_the_layers_come_once():
     assert ex.check("front_to_back", front_to_back).passed
     assert ex.check("front_to_back", _under_with(lambda a, c: a + (1 - a[3]) * c)).passed
-    stream = LayerStream(np.eye(4))
-    assert len(list(stream)) == 4 and list(stream) == [] and stream.read == 4
+    stream, read = layer_stream(np.eye(4))
+    assert len(list(stream)) == 4 and list(stream) == [] and read() == 4
     with pytest.raises(TypeError, match="read them with a for loop"):
-        np.asarray(LayerStream(np.eye(4)), dtype=float)
+        np.asarray(layer_stream(np.eye(4))[0], dtype=float)
+
+
+def _hidden_array(layers):
+    """r14 09-2: the stream's own array, read back to front without iterating."""
+    acc = np.zeros(4)
+    for c in np.asarray(layers._layers)[::-1]:
+        acc = np.asarray(c, float) + (1 - c[3]) * acc
+    return acc
+
+
+def _count_reset(layers):
+    """r14 09-2: every layer read, back to front, then the stream's counter set back to 0."""
+    stack = list(layers)
+    layers.read = 0
+    acc = np.zeros(4)
+    for c in stack[::-1]:
+        acc = np.asarray(c, float) + (1 - c[3]) * acc
+    return acc
+
+
+@pytest.mark.parametrize("fn", [_hidden_array, _count_reset], ids=["_layers", "read = 0"])
+def test_the_layer_stream_hides_its_layers_and_its_count(fn):
+    """r14 09-2: ``layers._layers`` (the stream's array) and ``layers.read = 0`` (its public,
+    writable count) let a back-to-front loop pass all 28 cases. The layers and the count now
+    live in the check's own closure, a generator: neither is an attribute of the stream."""
+    report = ex.check("front_to_back", fn)
+    assert not report.passed, str(report)
+    stream, _ = layer_stream(np.eye(4))
+    assert not any(k in ("read", "_layers") for k in dir(stream)), dir(stream)
+    with pytest.raises(AttributeError):
+        stream.read = 0
 
 
 def _no_stop(layers):
@@ -535,9 +569,10 @@ def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_f
     nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
     text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
             for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
-    assert "does not print" not in text["over_premultiplied_task"]
-    assert "**9.2a.**" in text["over_premultiplied_task"]
-    assert "**9.2b.**" in text["over_premultiplied_step"]
+    assert "does not print" not in text["over_straight_task"]
+    # r14: the ids were swapped (9.2a under over_premultiplied_task): each names its task now
+    assert "**9.2a.**" in text["over_straight_task"] and "over_premultiplied_step" not in text
+    assert "**9.2b.**" in text["over_premultiplied_task"]
 
 
 @pytest.mark.parametrize(
@@ -965,3 +1000,77 @@ def test_the_read_past_figure_crosses_out_the_layers_read_behind_the_opaque_one(
     plt.close(fig)
     got = failure.got
     assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque == len(crosses) > 0
+
+
+def test_pixels_outside_the_image_fail_and_are_named():
+    """r14 09-8: nothing asked for pixels inside the 12 × 12 image only, and no case tested
+    it: the teacher's solution without its clip at 0 passed all 50 cases, though moved by −ε
+    the line (0, 2.5) → (5, 2.5) starts in the diamond of column −1. The task says so now,
+    and a named case starts at x = 0 on a row's centre line."""
+    from teachraster.exercises import lines
+
+    labels = {label: args for label, args, _ in lines.line_cases()}
+    assert labels["start on the image's left edge (x = 0), on a row's centre line"] == (
+        (0.0, 2.5), (5.0, 2.5))  # fmt: skip
+    unclipped = line_with(-EPS, -EPS * EPS, clip=False)
+    report = ex.check("line_pixels", unclipped, budget=60)
+    assert not report.passed and report.failures, str(report)
+    first = report.failures[0]
+    assert first.kind == "outside the image", (first.kind, first.explanation)
+    assert "(row 2, col -1)" in first.explanation and "inside the image" in first.explanation
+    task = " ".join(_nb_cells()["line_pixels_task"].split())
+    assert "inside the 12 × 12 image" in task and "row, col < 12" in task, task
+
+
+def _nb_cells() -> dict:
+    """Exercise 09's cells by grade_id."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
+            for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
+
+
+@pytest.mark.parametrize("empty", [[], (), set(), np.zeros((0, 2), int)], ids=repr)
+def test_no_pixels_for_every_line_is_said_so(empty):
+    """r14 09-5: ``return []`` was told "your function returns set() for every line"."""
+    first = _first("line_pixels", lambda p0, p1: empty)
+    assert "returns no pixels for every line" in first.explanation, first.explanation
+    assert "set()" not in first.explanation
+
+
+@pytest.mark.parametrize(
+    "fn, named",
+    [(lambda s, d: d, "destination unchanged"), (lambda s, d: s, "source unchanged")],
+    ids=["dst", "src"],
+)
+def test_over_straight_returning_an_input_unchanged_is_named(fn, named):
+    """r14 09-7: ``over_straight`` returning ``dst`` got the rule restated (kind "value"),
+    where ``over_premultiplied`` names it: the straight table lacked those two rows."""
+    first = _first("over_straight", fn)
+    assert first.kind == named, (first.kind, first.explanation)
+    assert f"that is the {named}" in first.explanation, first.explanation
+
+
+@pytest.mark.parametrize(
+    "fn, named",
+    [(sv.line_bresenham_textbook, "Bresenham"), (sv.line_dda_sampled, "DDA")],
+    ids=["Bresenham e2 > -dy", "DDA of n points"],
+)
+def test_the_textbook_bresenham_and_dda_are_named(fn, named):
+    """r14 09-6: the classic Bresenham loop (``e2 > −dy``, ``e2 < dx``, both end pixels) and a
+    DDA sampling n = max(|dx|, |dy|) points from p0, both taught by lesson 12 §2-3, got the
+    generic rule at p1's pixel; the checker named only Zingl's form and its column DDA."""
+    report = ex.check("line_pixels", fn, budget=60)
+    kinds = {f.kind for f in report.failures}
+    assert kinds == {named}, (kinds, report.failures[0].explanation)
+
+
+def test_each_task_cells_grade_id_names_the_function_it_asks_for():
+    """r14: cell 5 (9.2a, ``over_straight``) carried ``over_premultiplied_task`` and cell 8
+    (9.2b) ``over_premultiplied_step``: a lecturer reading the gradebook saw them swapped."""
+    for grade_id, source in _nb_cells().items():
+        asked = re.findall(r"write `(\w+)\(", source, flags=re.I)
+        if grade_id.endswith("_task") and asked:
+            assert grade_id == f"{asked[0]}_task", (grade_id, asked)

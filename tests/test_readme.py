@@ -99,3 +99,23 @@ def test_readme_first_screen_says_what_how_and_where_next():
     ):
         assert needed in first, needed
     assert len(README.read_text().splitlines()) < 150  # reference material lives in docs/
+
+
+def test_grading_says_a_students_cell_can_rebind_the_checker(monkeypatch):
+    """r14 09-3: one line in a solution cell, ``Report.assert_passed = lambda self: None``,
+    makes every later locked check cell pass under nbgrader whatever the answer (student code
+    runs in the grading kernel). Not prevented: docs/grading.md says so, and what remains open."""
+    from teachraster import exercises as ex
+    from teachraster.exercises.report import Report
+
+    monkeypatch.setattr(Report, "assert_passed", Report.assert_passed)  # restored afterwards
+    exec(
+        "from teachraster.exercises.report import Report\nReport.assert_passed = lambda self: None"
+    )
+    report = ex.check("depth_test", lambda incoming, stored: False)
+    assert not report.passed
+    report.assert_passed()  # the hole, as documented: no AssertionError
+    text = " ".join((Path(__file__).parents[1] / "docs/grading.md").read_text().split())
+    for needed in ("Report.assert_passed = lambda self: None", "not detected", "fresh kernel",
+                   "--check-submissions` flags it where it is written plainly"):  # fmt: skip
+        assert needed in text, needed

@@ -296,7 +296,7 @@ def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors
     nb = json.loads(Path(__file__).parents[1].joinpath(
         "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
     task = next("".join(c["source"]) for c in nb["cells"]
-                if c["metadata"]["nbgrader"]["grade_id"] == "over_premultiplied_task")  # fmt: skip
+                if c["metadata"]["nbgrader"]["grade_id"] == "over_straight_task")  # fmt: skip
     # r8: the task gives the coverage argument, not the straight form's formula to transcribe
     assert "straight" in task and "1 − α_s" in task and "divided by α" in task
     for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "c_s + c_d", "GL_ONE", "α_d·(1 − α_s)",
@@ -314,10 +314,10 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
     nb = json.loads(Path(__file__).parents[1].joinpath(
         "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
     text = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
-    task = text["over_premultiplied_task"]
+    task = text["over_straight_task"]
     assert "Porter and Duff" in task and "give *over* for **straight**" not in task
     assert "over_straight(src, dst)" in task and "lesson 12, §9" not in task
-    assert "over_straight_check" in text and "over_premultiplied_step" in text
+    assert "over_straight_check" in text and "over_premultiplied_task" in text
     # r11 09-A, 09-G: no shortcut offered, and GL's default is no blending
     assert "cannot tell the two apart" not in task and "textbook default" not in task
     said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))

@@ -83,7 +83,8 @@ def add_parsers(subparsers) -> None:
         "--check-submissions",
         action="store_true",
         help="write nothing: list the submissions in DIR/submitted/ that nbgrader would score "
-        "0 without a word (a check or solution cell deleted, or its metadata stripped)",
+        "0 without a word (a check or solution cell deleted, or its metadata stripped), and "
+        "cells whose code changes the checker (Report.assert_passed = ...)",
     )
 
 
@@ -224,12 +225,15 @@ def cmd_check_submissions(args, parser) -> int:
         print(line)
     if found:
         print(
-            f"{len(found)} problem(s): nbgrader would score these checks 0 without saying so. "
-            "Ask for the notebook again, or restore its cells from release/ (nbgrader's own "
-            "cells, metadata included), before `nbgrader autograde`"
+            f"{len(found)} problem(s). A missing cell: nbgrader would score its check 0 "
+            "without saying so; ask for the notebook again, or restore its cells from "
+            "release/ (nbgrader's own cells, metadata included), before `nbgrader autograde`. "
+            "A cell that changes the checker: its checks may pass whatever the answer; read "
+            "it before trusting the grade"
         )
         return 1
-    print("every submitted notebook holds its check and solution cells, metadata included")
+    print("every submitted notebook holds its check and solution cells, metadata included, "
+          "and no cell that changes the checker in plain code")  # fmt: skip
     return 0
 
 

@@ -432,7 +432,7 @@ def _mistakes(mode: str) -> list[Mistake]:
         nan = Mistake("division by zero", "both alphas 0: nothing covers the pixel, so α·C is 0 "
                       "and dividing it by α = 0 has no answer; the task gives the answer there, "
                       "(0, 0, 0, 0): test α before you divide", fits=_nan_at_zero)  # fmt: skip
-        table = [Mistake(k, w, gives=g) for k, w, g in STRAIGHT]
+        table = [Mistake(k, w, gives=g) for k, w, g in (*COMMON[:2], *STRAIGHT)]  # r14 09-7
         return [nan, *table, *_alpha_mistakes(straight_over)]
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "

@@ -797,11 +797,12 @@ def _cause_words(args, number, got) -> str:
     cause, (row, col), value = got
     _, p = _judged(number, got)
     b = _as_frame(number)
-    words = (f"{cause!r} does not explain what the two histories of ({row}, {col}) show (it "
-             f"would show as: {_SIGNS[cause][1]}). Read "
+    # r14: the instruction first, the stated cause's own mark last (the eye needs the first)
+    words = (f"{cause!r} is not what the two histories of ({row}, {col}) show: find the first "
+             "stage where they part, the cause is what acts there. Read "
              f"{_history_hint(number, row, col, 'the intended')} side by side, stage by stage "
-             f"({', '.join(STAGES)}, then the colour shown), and find the first stage where "
-             "they part: the cause is what acts there")  # fmt: skip
+             f"({', '.join(STAGES)}, then the colour shown). {cause!r} would show as: "
+             f"{_SIGNS[cause][1]}")  # fmt: skip
     real = next((c for c in CAUSES if _is_cause(b.number, c)), None)
     if real is not None and p is not None:
         kind = EVIDENCE[real][0]

@@ -260,6 +260,7 @@ def _exercise(name: str, cases, call, scene=None) -> Exercise:
         name, cases, convert=None, same=same_coverage, explain=explain,
         rule=lambda *a: "", mistakes=mistakes(name), draw=draw, scene=scene, call=call,
         answers=(PackageAnswer(rasterize),), compose=compose,
+        reference=("teachraster.exercises.coverage",),  # expected_coverage (r14 09-1)
     )  # fmt: skip
 
 

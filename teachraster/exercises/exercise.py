@@ -193,6 +193,10 @@ class Exercise:
     tries : int, optional
         Failing checks of this task in one kernel before each further check waits (exercise
         11, whose verdict a blind loop could query: :mod:`.tries`); None: no limit.
+    reference : sequence of str
+        Further checker modules whose functions compute this exercise's expected answers
+        (``covers``' :mod:`.coverage`), watched with the module of :attr:`cases`: a student's
+        call into them does not count (r14 09-1, :mod:`.package_answers`).
     """
 
     name: str
@@ -215,6 +219,7 @@ class Exercise:
     example: int = 0
     private: Sequence[tuple[str, object, str]] = ()
     tries: int | None = None
+    reference: Sequence[str] = ()
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

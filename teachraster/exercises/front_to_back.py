@@ -23,6 +23,8 @@ words say both).
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
@@ -95,20 +97,25 @@ def as_rgba(value) -> np.ndarray:
 
 class LayerStream:
     """The layers of a case, nearest first, readable once (``for layer in layers``), each an
-    RGBA array; it counts the layers read."""
+    RGBA array. It holds only the next-layer step of a generator made by the check
+    (:func:`layer_stream`): the layers and the count of those read live in the check's own
+    closure, so that neither is an attribute a student's function can read or reset (r14
+    09-2: ``layers._layers`` read back to front, and ``layers.read = 0`` after reading them
+    all, passed every case)."""
 
-    def __init__(self, layers: np.ndarray):
-        self._layers = np.asarray(layers, dtype=float).reshape(-1, 4)
-        self.read = 0
+    __slots__ = ("_pull",)
+
+    def __init__(self, pull):
+        object.__setattr__(self, "_pull", pull)
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"the layers cannot be changed (setting {name!r})")
 
     def __iter__(self):
         return self
 
     def __next__(self) -> np.ndarray:
-        if self.read >= len(self._layers):
-            raise StopIteration
-        self.read += 1
-        return self._layers[self.read - 1].copy()
+        return self._pull()
 
     def __array__(self, dtype=None, copy=None):
         raise TypeError("the layers come one at a time, nearest first, as a ray marcher meets "
@@ -116,6 +123,20 @@ class LayerStream:
 
     def __repr__(self) -> str:
         return "<layers, nearest first: read them once, with a for loop>"
+
+
+def layer_stream(layers) -> tuple[LayerStream, Callable[[], int]]:
+    """A :class:`LayerStream` of ``layers`` (nearest first), and how many of them it has
+    handed out so far: the array and the count stay in this closure."""
+    stack = np.asarray(layers, dtype=float).reshape(-1, 4)
+    count = [0]
+
+    def stream():
+        for layer in stack:
+            count[0] += 1
+            yield layer.copy()
+
+    return LayerStream(stream().__next__), lambda: count[0]
 
 
 class ReadPast(np.ndarray):
@@ -138,13 +159,13 @@ def call_front_to_back(fn, args) -> np.ndarray:
     opaque layer (more than one layer behind it: a loop may fetch the next before it tests)
     comes back as a :class:`ReadPast`."""
     (layers,) = args
-    stream = LayerStream(layers)
+    stream, read = layer_stream(layers)
     value = as_rgba(fn(stream))
     stop = opaque_after(layers)
-    if stop is None or stream.read <= stop + 1:
+    if stop is None or read() <= stop + 1:
         return value
     marked = np.asarray(value).view(ReadPast)
-    marked.read, marked.opaque = stream.read, stop
+    marked.read, marked.opaque = read(), stop
     return marked
 
 

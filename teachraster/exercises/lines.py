@@ -57,6 +57,8 @@ def line_cases() -> list[tuple[str, tuple, set]]:
         ("steep, past a corner by less than 1/100", (9.25, 6.25), (10.25, 2.625)),
         ("steep, past a corner, downwards", (1.375, 1.75), (3.25, 8.375)),
         ("x-major, past a corner by less than 1/100", (11.5, 2.625), (4.25, 7.625)),
+        # r14 09-8: moved by −ε, p0 lies in the diamond of column −1, outside the image
+        ("start on the image's left edge (x = 0), on a row's centre line", (0.0, 2.5), (5.0, 2.5)),
     ]
     rng, now = np.random.default_rng(SEED), drawn_rng()
     for k in range(24 + DRAWN):
@@ -91,17 +93,19 @@ def as_pixels(value) -> frozenset[tuple[int, int]]:
 
 
 def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col",
-                   closed=False, start=False, half=0.5, centre=0.5):  # fmt: skip
+                   closed=False, start=False, half=0.5, centre=0.5, inside=True):  # fmt: skip
     """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points;
     ``end=True`` also lights the pixel whose diamond holds p1, ``end="unmoved"`` tests that
     diamond with p1 before it was moved (``"unmoved closed"``: and its boundary counted in); ``closed=True`` counts the diamond's boundary in;
     ``start=True`` leaves the diamond that holds (the moved) p0 dark; ``order="col row"``
     gives pairs the other way round; ``half`` is the diamond's radius and ``centre`` where it
-    sits in its pixel (½: the centre)."""
+    sits in its pixel (½: the centre); ``inside=False`` keeps pixels left of or above the
+    image (column or row −1)."""
     a, b = np.asarray(p0, float) + eps, np.asarray(p1, float) + eps
     lo, hi = np.floor(np.minimum(a, b)) - 1, np.floor(np.maximum(a, b)) + 2
     # no clip at the window's far side: a student's too-large diamond reaches past it
-    cols, rows = np.meshgrid(np.arange(max(lo[0], 0), hi[0]), np.arange(max(lo[1], 0), hi[1]))
+    first = np.maximum(lo, 0) if inside else lo
+    cols, rows = np.meshgrid(np.arange(first[0], hi[0]), np.arange(first[1], hi[1]))
     cx, cy = cols.ravel() + centre, rows.ravel() + centre
     ok = _meets(a, b, cx, cy, closed, half)
     if end is not True:
@@ -159,6 +163,35 @@ def hand_bresenham(p0, p1, end=False):
         if e2 <= dx:
             err, y0 = err + dx, y0 + sy
     return frozenset(out | ({(y1, x1)} if end else set()))
+
+
+def classic_bresenham(p0, p1):
+    """Bresenham's loop as most courses print it (r14 09-6): ``err = dx − dy``, a step in x
+    when ``e2 > −dy``, in y when ``e2 < dx`` (strict: at a tie it stays where Zingl's form of
+    :func:`hand_bresenham` steps), the end points floored, both end pixels lit."""
+    (x0, y0), (x1, y1) = ((int(np.floor(x)), int(np.floor(y))) for x, y in (p0, p1))
+    dx, dy = abs(x1 - x0), abs(y1 - y0)
+    sx, sy = (1 if x0 < x1 else -1), (1 if y0 < y1 else -1)
+    err, out = dx - dy, {(y0, x0)}
+    while (x0, y0) != (x1, y1):
+        e2 = 2 * err
+        if e2 > -dy:
+            err, x0 = err - dy, x0 + sx
+        if e2 < dx:
+            err, y0 = err + dx, y0 + sy
+        out.add((y0, x0))
+    return frozenset(out)
+
+
+def sampled_dda(p0, p1):
+    """A DDA as a textbook samples it (r14 09-6): n = max(|dx|, |dy|) (whole) evenly spaced
+    points from p0, p1 not among them, each lighting the pixel it lies in."""
+    (x0, y0), (x1, y1) = p0, p1
+    n = int(max(abs(x1 - x0), abs(y1 - y0)))
+    return frozenset(
+        (int(np.floor(y0 + (y1 - y0) * k / n)), int(np.floor(x0 + (x1 - x0) * k / n)))
+        for k in range(n)
+    )
 
 
 def _unmoved_range(p0, p1):
@@ -290,14 +323,22 @@ LARGE_EPS = {"1/10": 0.1, "1/16": 1 / 16, "1/20": 0.05, "1/32": 1 / 32, "1/50": 
              "1/1000": 1e-3}  # fmt: skip
 
 
+def _large_eps_words(args, expected, got) -> str:
+    """Every ε of the table that gives the student's pixels on this case (r14 09-4: ε = 1/64
+    was told "those an ε of 1/50 gives", the table's first that fits)."""
+    p0, p1 = args
+    fits = [n for n, e in LARGE_EPS.items() if diamond_pixels(p0, p1, eps=(-e, -e * e)) == got]
+    which = fits[0] if len(fits) == 1 else ", ".join(fits[:-1]) + f" or {fits[-1]}"
+    return (f"your ε is not small enough: your pixels are those an ε of {which} (and ε² in "
+            "y) gives, where the moved segment crosses a diamond corner it only passes near "
+            "and another pixel lights; the rule's ε is smaller than any gap the inputs can "
+            "make, so take one far below the 1/8 grid's (2⁻⁸⁰, with Fraction)")  # fmt: skip
+
+
 def _large_eps(name: str, eps: float) -> Mistake:
-    words = (f"your ε is not small enough: your pixels are those an ε of {name} (and ε² in "
-             "y) gives, where the moved segment crosses a diamond corner it only passes near "
-             "and another pixel lights; the rule's ε is smaller than any gap the inputs can "
-             "make, so take one far below the 1/8 grid's (2⁻⁸⁰, with Fraction)")  # fmt: skip
     return Mistake(
         "ε not small enough",
-        words,
+        _large_eps_words,
         gives=lambda p0, p1: diamond_pixels(p0, p1, eps=(-eps, -eps * eps)),
     )
 
@@ -337,6 +378,15 @@ LINE_MISTAKES = [
         Mistake("Bresenham", _BRESENHAM, gives=lambda p0, p1, e=e: hand_bresenham(p0, p1, e))
         for e in (False, True)
     ),
+    Mistake("Bresenham", _BRESENHAM, gives=classic_bresenham),  # r14 09-6: e2 > −dy, e2 < dx
+    Mistake(
+        "DDA",
+        "you sampled the segment at n = max(|dx|, |dy|) evenly spaced points from p0 and lit "
+        "the pixel each lies in (a DDA, lesson 12 §3): that lights the pixels the samples "
+        "fall in, wherever in the pixel; the rule lights the pixels whose diamond "
+        "|x − (col + ½)| + |y − (row + ½)| < ½ the segment passes through and leaves",
+        gives=sampled_dda,
+    ),
     Mistake(
         "search range from the unmoved ends",
         lambda a, e, g: _unmoved_range_words(*a),
@@ -361,6 +411,16 @@ LINE_MISTAKES = [
         gives=lambda p0, p1: frozenset(
             (r, c) for r, c in diamond_pixels(p0, p1, centre=0.0) if r < WINDOW and c < WINDOW
         ),  # fmt: skip
+    ),
+    Mistake(  # r14 09-8
+        "outside the image",
+        lambda a, e, g: (
+            f"you lit {', '.join(f'(row {r}, col {c})' for r, c in sorted(g - e))}, outside the "
+            f"{WINDOW} × {WINDOW} image: moved by (−ε, −ε²), the segment passes through the "
+            "diamond of a pixel in column −1 (or row −1), which reaches to x = 0 (y = 0). "
+            f"Return only the pixels inside the image (0 ≤ row, col < {WINDOW})"
+        ),
+        gives=lambda p0, p1: diamond_pixels(p0, p1, inside=False),
     ),
     Mistake(
         "p0's pixel only",
@@ -443,8 +503,10 @@ def draw_line(ax, case, got):
 
 LINE_PIXELS = Exercise(
     "line_pixels", line_cases, as_pixels, lambda g, e, a: g == e, explain_line, _line_rule,
-    LINE_MISTAKES, constant=lambda v: f"your function returns {short(set(v))} for every line, "
-    "whatever its end points: a placeholder left in?",
+    LINE_MISTAKES, constant=lambda v: (
+        # r14 09-5: ``return []`` was told "returns set()", a set the student never wrote
+        f"your function returns {short(set(v)) if len(v) else 'no pixels'} for every line, "
+        "whatever its end points: a placeholder left in?"),
     answers=(PackageAnswer(rasterize_line, modules=("teachraster.core.line_rules",)),),
     draw=draw_line, partial_names=False,
     example=7,  # 45° along diamond edges: ties, drawn over the diamonds

@@ -129,6 +129,39 @@ def _module_helpers(spec: Exercise) -> list:
                         and g not in listed and not is_transparent(_own_code(g))):  # fmt: skip
                     out.append(replace(answer, function=g, when=None, modules=(),
                                        what=f"a part of {name}'s own computation"))  # fmt: skip
+    return out + _checker_helpers(spec, listed | {_function(a) for a in out})
+
+
+#: What the report says of a call into the checker's own module (r14 09-1).
+CHECKER_WORDS = (
+    "the checker's own code, which computes the expected answers: not counted (write the "
+    "rule yourself; the checker is there to test it, not to hand in)"
+)
+
+
+def checker_modules(spec: Exercise) -> list[str]:
+    """The modules of the checker that compute ``spec``'s expected answers: the one that
+    builds its cases, and those :attr:`~.exercise.Exercise.reference` names."""
+    return [spec.cases.__module__, *spec.reference]
+
+
+def _checker_helpers(spec: Exercise, skip: set) -> list:
+    """Every function of :func:`checker_modules` (r14 09-1: ``lines.diamond_pixels``, the
+    checker's own rule with knobs, handed in as ``line_pixels`` passed unflagged), but the
+    student's tools (the names :mod:`teachraster.exercises` exports: ``broken_frame``), the
+    ones in ``skip`` and the interrupt's transparent ones, each as a
+    :class:`PackageAnswer` that says :data:`CHECKER_WORDS`."""
+    from . import __all__ as tools
+
+    out = []
+    for module in dict.fromkeys(checker_modules(spec)):
+        for key, value in vars(importlib.import_module(module)).items():
+            g = inspect.unwrap(value) if callable(value) else value
+            if (isinstance(g, types.FunctionType) and g.__module__ == module
+                    and not key.startswith("__") and key not in tools and g not in skip
+                    and not is_transparent(_own_code(g))):  # fmt: skip
+                skip = skip | {g}
+                out.append(PackageAnswer(g, words=CHECKER_WORDS))
     return out
 
 

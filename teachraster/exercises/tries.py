@@ -22,6 +22,15 @@ notebooks import it in their first locked cell, before any student cell), into
 ``os.environ[...] = "0"`` switched the wait off, under ``nbgrader autograde`` too). What this
 does not stop: a new kernel starts the count at 0 (docs/grading.md says so), and code that
 rebinds this module's names; it makes a blind search slow, not impossible.
+
+A second brake counts *causes*, not checks (r14 11-4: a loop over the ten causes and five
+generic readers, told "not the frame's cause" and moving to the next, passed four frames in
+65 checks, under the 25 allowed). A diagnosis names one or two wrong causes at most; past
+:data:`FREE_CAUSES` distinct wrong causes of one task, every check that names a wrong cause
+waits, once judged and before it answers, :data:`CAUSE_STEP` seconds for each distinct wrong
+cause past that number, at most :data:`CAUSE_MOST` (a blind loop over the ten causes then
+pays minutes a frame; a check that names the right cause never waits for it). A pass starts
+this count again too, and the same setting switches it off.
 """
 
 from __future__ import annotations
@@ -38,7 +47,12 @@ WAIT_STEP, WAIT_MOST = 1.0, 30.0
 #: The variable's text as the kernel started (read once, at import: see the module's note).
 SETTING = os.environ.get(TRIES_VARIABLE, "")
 
+#: Distinct wrong causes of one task that cost nothing, the wait for each one past them, the
+#: longest such wait (seconds).
+FREE_CAUSES, CAUSE_STEP, CAUSE_MOST = 2, 30.0, 300.0
+
 _FAILED: dict[str, int] = {}
+_WRONG: dict[str, set] = {}
 _LOCK = threading.Lock()
 _sleep = time.sleep  # the tests replace it
 
@@ -89,4 +103,27 @@ def counted(name: str, default: int | None, passed: bool) -> str | None:
         "many tries (read the two histories of one changed pixel, stage by stage). Each "
         f"further check waits {WAIT_STEP:g} s more before it answers (at most "
         f"{WAIT_MOST:g} s), until one passes"
+    )
+
+
+def wrong_causes(name: str, default: int | None, causes, passed: bool) -> str | None:
+    """Note the wrong ``causes`` one check of task ``name`` was given, and wait past
+    :data:`FREE_CAUSES` distinct ones (see the module's note); the report's note, if any."""
+    if allowed(default) is None:
+        return None
+    with _LOCK:
+        seen = _WRONG.setdefault(name, set())
+        if passed:
+            seen.clear()
+        seen.update(causes)
+        past = len(seen) - FREE_CAUSES
+    if not causes or past <= 0:
+        return None
+    seconds = min(CAUSE_MOST, CAUSE_STEP * past)
+    _sleep(seconds)
+    return (
+        f"{len(seen)} different wrong causes for {name} in this kernel: the cause is found by "
+        "reading the two histories of one changed pixel, not by trying the names. This check "
+        f"waited {seconds:g} s, and each further wrong cause waits {CAUSE_STEP:g} s more (at "
+        f"most {CAUSE_MOST:g} s), until one passes"
     )
