@@ -189,9 +189,11 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
-    assert ns.ends5 == [5.5, 11.5]  # the ticks of the row-5 question: the package's ends
-    # the clicked answers: row 5's columns 5-10, row 2's columns 2-11, nothing else
-    assert np.flatnonzero(ns.row5[5]).tolist() == list(range(5, 11)) and ns.row5.sum() == 6
+    # the row question (review r13 01: asked after the rule, in the flat-top part): row 13's
+    # ends are the package's, both on centres; the clicked answer is columns 7-12, nothing else
+    assert ns.asked_row == 13 and ns.ends_asked == [7.5, 13.5] == list(ns.ends[13][:2])
+    assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
+    assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
     # the flat-topped question: rows 2, 6, 10 (top edge and right vertex, two ties, the apex)
     assert ns.asked_rows == [2, 6, 10] and ns.ends6 == [4.5, 9.5]
     assert [np.flatnonzero(ns.asked[i]).tolist() for i in ns.asked_rows] == [
