@@ -810,9 +810,10 @@ def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_lis
 
 
 @pytest.mark.notebook
-def test_05a_sticks_figure_labels_a_cycle_of_crossings():
-    """Review r2, 05a: each crossing of the sticks is labelled with the stick on top; the three
-    labels form the cycle the Predict is about (each stick on top once, under once)."""
+def test_05a_sticks_crossings_form_a_cycle():
+    """Review r2, 05a: the stick on top at each crossing (the answer's words; since review r13
+    the picture no longer labels them) forms the cycle the Predict is about (each stick on
+    top once, under once)."""
     ns = lesson("05a_zbuffer")
     tops, unders = zip(*ns.crossings)
     assert len(ns.crossings) == 3 and sorted(tops) == sorted(unders) == sorted(set(tops))
