@@ -311,6 +311,9 @@ def test_rules_come_with_a_standards_table(name):
 def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
     assert (ns.counts["top-left rule"] > 0).sum() == 144  # the predicted answer
+    assert ns.in_square == 13 * 13  # review r13 02: the "169 centres" of c11, printed
+    # review r13 02: c05 counts the centres with all three E > 0 (none on an edge here)
+    assert ns.inside_all == ns.fill.coverage.sum() == 70
     # review r7 02-1: the share saved was a guess to type; now the pixels where the loop
     # stops early are clicked on the box, and the saving follows from them by a count
     b = ns.box
