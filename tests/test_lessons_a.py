@@ -756,6 +756,22 @@ def test_pipeline_overview_one_box_per_stage_and_fits_the_column():
     plt.close(fig)
 
 
+def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
+    """Review r13 00: the static figure gave fragment shading lesson 09, the clickable map
+    "04, 09". The stages both draw, under their two names, list the same lessons."""
+    from teachraster.plotting.pipeline_overview import lesson_number
+
+    js = (
+        NOTEBOOKS.parent / "teachraster" / "widgets" / "static" / "explore_pipeline.js"
+    ).read_text()
+    map_lessons = dict(re.findall(r'\["(\w+)", "[^"]*", "([^"]*)", "[^"]*"\]', js))
+    same = {"fragment": "fragment shading", "depth": "depth test", "blend": "blending"}
+    stages = {stage.name: stage for stage in PIPELINE_STAGES}
+    for key, name in same.items():
+        figure = ", ".join(lesson_number(s) for s in stages[name].lessons)
+        assert map_lessons[key] == figure, (key, map_lessons[key], figure)
+
+
 def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     """GL 4.6 §14.9 / §17.3: the fragment shader runs before the depth and stencil tests."""
     from teachraster.plotting.pipeline_overview import EARLY_Z
