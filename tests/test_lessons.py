@@ -219,6 +219,9 @@ def test_05b_depth_mappings_resolution_and_fighting():
     assert ns.err_depth < 1e-12 and ns.err_z > 1e-3
     res = ns.res
     assert np.allclose(res[1:] / res[:-1], 100.0)
+    # review r13 05b: the figure compares window and linear depth at the same 24 bits; they
+    # meet at z = sqrt(n f) = 10, as the text says and the cell prints
+    assert ns.z_meet == 10.0 and ns.meet[0] == pytest.approx(ns.meet[1], rel=1e-9)
     f, size = ns.fights, ns.size
     assert not f["float64"].any()
     assert not f["unorm16"][:2].any() and not f["float32"][:4].any()

@@ -107,8 +107,8 @@ def test_tour_links_every_lesson_and_exercise_and_each_stage_to_its_lessons():
     text = "\n".join(_cells("00_tour", "markdown"))
     for n in range(1, 13):
         assert re.search(rf"\]\({n:02d}[ab]?_\w+\.ipynb\)", text), f"lesson {n:02d} not linked"
-    for stem in ("01_coverage", "04_depth_and_clipping", "05_depth_precision", "08_tiles"):
-        assert f"(exercises/{stem}.ipynb)" in text
+    for path in sorted((NOTEBOOKS / "exercises").glob("[0-9][0-9]_*.ipynb")):
+        assert f"(exercises/{path.name})" in text, f"exercise {path.stem} not linked"
     for stage in PIPELINE_STAGES:
         line = next(ln for ln in text.splitlines() if ln.startswith(f"- **{stage.name}**"))
         for stem in stage.lessons:
@@ -189,9 +189,11 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
-    assert ns.ends5 == [5.5, 11.5]  # the ticks of the row-5 question: the package's ends
-    # the clicked answers: row 5's columns 5-10, row 2's columns 2-11, nothing else
-    assert np.flatnonzero(ns.row5[5]).tolist() == list(range(5, 11)) and ns.row5.sum() == 6
+    # the row question (review r13 01: asked after the rule, in the flat-top part): row 13's
+    # ends are the package's, both on centres; the clicked answer is columns 7-12, nothing else
+    assert ns.asked_row == 13 and ns.ends_asked == [7.5, 13.5] == list(ns.ends[13][:2])
+    assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
+    assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
     # the flat-topped question: rows 2, 6, 10 (top edge and right vertex, two ties, the apex)
     assert ns.asked_rows == [2, 6, 10] and ns.ends6 == [4.5, 9.5]
     assert [np.flatnonzero(ns.asked[i]).tolist() for i in ns.asked_rows] == [
@@ -309,6 +311,9 @@ def test_rules_come_with_a_standards_table(name):
 def test_02_bailout_prediction_is_the_printed_share():
     ns = lesson("02_half_planes")
     assert (ns.counts["top-left rule"] > 0).sum() == 144  # the predicted answer
+    assert ns.in_square == 13 * 13  # review r13 02: the "169 centres" of c11, printed
+    # review r13 02: c05 counts the centres with all three E > 0 (none on an edge here)
+    assert ns.inside_all == ns.fill.coverage.sum() == 70
     # review r7 02-1: the share saved was a guess to type; now the pixels where the loop
     # stops early are clicked on the box, and the saving follows from them by a count
     b = ns.box
@@ -751,6 +756,22 @@ def test_pipeline_overview_one_box_per_stage_and_fits_the_column():
     plt.close(fig)
 
 
+def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
+    """Review r13 00: the static figure gave fragment shading lesson 09, the clickable map
+    "04, 09". The stages both draw, under their two names, list the same lessons."""
+    from teachraster.plotting.pipeline_overview import lesson_number
+
+    js = (
+        NOTEBOOKS.parent / "teachraster" / "widgets" / "static" / "explore_pipeline.js"
+    ).read_text()
+    map_lessons = dict(re.findall(r'\["(\w+)", "[^"]*", "([^"]*)", "[^"]*"\]', js))
+    same = {"fragment": "fragment shading", "depth": "depth test", "blend": "blending"}
+    stages = {stage.name: stage for stage in PIPELINE_STAGES}
+    for key, name in same.items():
+        figure = ", ".join(lesson_number(s) for s in stages[name].lessons)
+        assert map_lessons[key] == figure, (key, map_lessons[key], figure)
+
+
 def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     """GL 4.6 §14.9 / §17.3: the fragment shader runs before the depth and stencil tests."""
     from teachraster.plotting.pipeline_overview import EARLY_Z
@@ -808,9 +829,10 @@ def test_05a_sticks_are_asked_before_the_cycle_is_named_and_the_eye_plane_is_lis
 
 
 @pytest.mark.notebook
-def test_05a_sticks_figure_labels_a_cycle_of_crossings():
-    """Review r2, 05a: each crossing of the sticks is labelled with the stick on top; the three
-    labels form the cycle the Predict is about (each stick on top once, under once)."""
+def test_05a_sticks_crossings_form_a_cycle():
+    """Review r2, 05a: the stick on top at each crossing (the answer's words; since review r13
+    the picture no longer labels them) forms the cycle the Predict is about (each stick on
+    top once, under once)."""
     ns = lesson("05a_zbuffer")
     tops, unders = zip(*ns.crossings)
     assert len(ns.crossings) == 3 and sorted(tops) == sorted(unders) == sorted(set(tops))

@@ -169,6 +169,22 @@ def test_triangle_labels_and_arrows():
         assert np.dot([x1 - x0, y1 - y0], xy[b] - xy[a]) > 0
 
 
+def test_vertex_labels_stay_inside_the_axes_at_the_grid_sides():
+    """Review r13 (02 TriangleEditor, 03 PlaneExplorer): a vertex on the grid's right or left
+    side had its label pushed out of the Axes, onto the key beside it or off the figure."""
+    fig, ax = plt.subplots(figsize=(5, 5))
+    tp.plot_pixel_grid(ax, 16, 16)
+    xy = np.array([[16.0, 1.75], [14.5, 6.25], [0.0, 14.5]])  # v1 on the right, v3 on the left
+    result = tp.plot_triangle(ax, xy)
+    fig.canvas.draw()
+    box = ax.get_window_extent()
+    for label in (result.labels[0], result.labels[2]):
+        extent = label.get_window_extent()
+        assert box.x0 - 1 <= extent.x0 and extent.x1 <= box.x1 + 1, label.get_text()
+    assert result.labels[1].get_position()[0] > 0  # an inner vertex keeps its outward label
+    plt.close(fig)
+
+
 def test_split_shows_u4():
     fill = make_fill("span")
     fig, ax = plt.subplots()

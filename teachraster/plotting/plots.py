@@ -241,6 +241,29 @@ def _outward(points: np.ndarray, centre: np.ndarray, dist: float, ax) -> list:
     return out
 
 
+def _within_sides(ax, points, offsets, size: float) -> list:
+    """``offsets`` (points) with the horizontal part mirrored where a label would stick out of
+    the Axes' left or right side.
+
+    A vertex at the edge of the grid had its label pushed out of the Axes, onto a key beside
+    it (review r13, lesson 02's TriangleEditor) or cut off by the figure (lesson 03's
+    PlaneExplorer); mirrored, it stays beside its vertex, inside. ``size``: the labels' font
+    size in points (a label is about two characters in a padded box).
+    """
+    ax.get_xlim()  # brings autoscaled limits up to date before transLimits is read
+    width = ax.get_window_extent().width * 72 / ax.figure.dpi  # the Axes' width in points
+    if not width > 0:
+        return list(offsets)
+    half = 0.9 * size  # half a label's width, its box included
+    out = []
+    for p, (dx, dy) in zip(points, offsets):
+        x = ax.transLimits.transform(p)[0] * width  # from the Axes' left side, in points
+        if (dx > 0 and x + dx + half > width) or (dx < 0 and x + dx - half < 0):
+            dx = -dx
+        out.append((dx, dy))
+    return out
+
+
 @dataclass
 class TriangleArtists(Artists):
     """Artists of :func:`plot_triangle`."""
@@ -264,7 +287,8 @@ class TriangleArtists(Artists):
         ax = self.outline.axes
         centre = xy.mean(axis=0)
         names = vertex_names(tri)
-        for label, name, p, off in zip(self.labels, names, xy, _outward(xy, centre, fs(0.9), ax)):
+        offsets = _within_sides(ax, xy, _outward(xy, centre, fs(0.9), ax), fs(0.95))
+        for label, name, p, off in zip(self.labels, names, xy, offsets):
             label.xy = tuple(p)
             label.set_position(off)
             label.set_text(name)

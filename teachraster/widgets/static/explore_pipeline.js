@@ -3,7 +3,8 @@
 // triangle's data there. Every number is the engine's (teachraster.widgets.pipeline_map
 // computes them); this file only lays them out.
 
-// [key, name, lessons, what it does]; "|" breaks the name or the lessons into lines
+// [key, name, lessons, what it does]; "|" breaks the name or the lessons into lines. The
+// lessons agree with PIPELINE_STAGES (plotting/pipeline_overview.py), the static figure.
 export const STAGES = [
   ["vertex", "vertex|shader", "04, 05a", "model → clip space"],
   ["assembly", "primitive|assembly", "02", "vertices → triangles"],
@@ -12,7 +13,7 @@ export const STAGES = [
   ["viewport", "viewport", "05a, 05b", "NDC → window x, y, depth"],
   ["setup", "triangle|set-up", "01, 02, 03", "edges, facing, culling, bounding box"],
   ["rasterize", "rasterisation", "01–04, 07,|08, 10, 12", "the pixel centres inside become fragments"],
-  ["fragment", "fragment|shader", "04, 09", "interpolated attributes → colour"],
+  ["fragment", "fragment|shader", "09", "interpolated attributes → colour"],
   ["depth", "depth and|stencil test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
   ["blend", "blending", "12", "colour → the colour target"],
 ];
