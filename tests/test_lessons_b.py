@@ -290,6 +290,17 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     # r10 07-1: q_far asks how far C's rounding can move an edge (a bound: one gap over the
     # shortest edge), not which way it happened to fall; the held cell prints each edge's move
     assert ns.far_answer == ns.far_choices[-1] == "thousands of pixels"
+    # review r13 07: the question does not walk the student through the bound (C's two
+    # products, E over the edge's length); the explain does
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    far_cell = next("".join(c["source"]) for c in nb["cells"]
+                    if "q_far = Predict(" in "".join(c["source"]))  # fmt: skip
+    asked = far_cell.split("q_far = Predict(")[1].split("explain=")[0]
+    assert "edge's length" not in asked and "x_a·y_b" not in asked
+    # review r13 07: the subpixel panel names its zero-area triangles, the clip its seam
+    assert ns.collapsed == 2 and ns.clipped_into == 2
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
     moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
     assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
