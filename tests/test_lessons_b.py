@@ -498,6 +498,15 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     (y1, x1), (y2, x2) = ns.crossed
     assert (y1, y2) == (2.75, 3.25) and x1 == pytest.approx(7.5) and 15.75 < x2 < 16
     assert len(ns.levels["rotated grid (standard)"]) == 5  # "all five values"
+    # review r13 08: the question asks the standard pattern's count (the argument the lesson
+    # wants: one sample per row), the ordered grid's luck is in the explain
+    assert ns.standard_levels == ns.levels["rotated grid (standard)"]
+    source = (ROOT / "notebooks" / "08_antialiasing.ipynb").read_text()
+    assert "answer=str(len(standard_levels))" in source and len(ns.standard_levels) == 5
+    # review r13 08 (missing): the intersection, inside both triangles, is antialiased by the
+    # per-sample depth test: pixels there hold samples of both, none with one sample
+    assert ns.split.sum() > 5 and not (ns.split & ~ns.inside_both).any()
+    assert set(np.unique(ns.pierced[1].triangle_id[ns.split])) <= {0, 1}
 
 
 def test_08_levels_fan_hub_centroid_and_resolve():
