@@ -121,6 +121,10 @@ def test_06_edge_bits_and_depth_claims():
     for fmt in ("float64", "float32", "unorm24", "unorm16"):
         assert rows[("depth", f"linear {fmt}")]["slanted_wrong"] > 0  # wrong at any bits
     assert rows[("depth", "window float64")]["error"] == 0
+    # review r13 06 (missing): the picture of the crossing linear depth moves is the table's
+    # "slanted" count for linear float64, pair 0 one ninth of it or so
+    assert int(ns.moved.sum()) == rows[("depth", "linear float64")]["slanted_wrong"]
+    assert 0 < ns.moved[ns.pair0].sum() < ns.moved.sum()
     from teachraster.study import bench
 
     depth_rows = [r for r in ns.rows if r["group"] == "depth"]
