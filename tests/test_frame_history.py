@@ -601,3 +601,34 @@ def test_history_legend_keys_the_buffer_before_and_after_apart():
     assert "buffer before" in labels and "buffer after" in labels, labels
     assert handles["buffer before"].get_marker() == "o"
     assert handles["buffer after"].get_marker() == "."
+
+
+def test_sparse_overlays_draw_the_scene_and_hi_z_its_tiles():
+    """Review r13, 11: the hi_z and nan views drew only their counts on light grey, so the few
+    counted pixels (or none, on a healthy frame) could not be placed on the scene: both draw
+    the covered pixels in a second grey, and hi_z the tiles it rejects in."""
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection
+
+    from teachraster.plotting import plot_overlay
+    from teachraster.plotting.frame_debug import COVERED
+
+    frame = tr.render(get_scene("uv_sphere"), None, 64, 48, trace=True)
+    for kind in ("hi_z", "nan", "overdraw"):
+        fig, ax = plt.subplots()
+        try:
+            plot_overlay(ax, frame, kind)
+            sparse = kind != "overdraw"
+            layers = [a for a in ax.collections + ax.images if a.get_zorder() == 0.5]
+            assert len(layers) == sparse
+            if sparse:  # the scene's coverage, in COVERED, under the counts
+                covered = np.asarray(layers[0].get_array()).reshape(48, 64)
+                assert np.array_equal(~np.ma.getmaskarray(covered) & (covered == 1),
+                                      frame.coverage)  # fmt: skip
+                assert tuple(layers[0].get_cmap()(1.0)[:3]) == COVERED
+            lines = [c for c in ax.collections if isinstance(c, LineCollection)]
+            assert len(lines) == (2 if kind == "hi_z" else 0)  # 8 x 8 tiles: 9 + 7 lines
+            if kind == "hi_z":
+                assert sorted(len(c.get_segments()) for c in lines) == [7, 9]
+        finally:
+            plt.close(fig)

@@ -121,6 +121,10 @@ def test_06_edge_bits_and_depth_claims():
     for fmt in ("float64", "float32", "unorm24", "unorm16"):
         assert rows[("depth", f"linear {fmt}")]["slanted_wrong"] > 0  # wrong at any bits
     assert rows[("depth", "window float64")]["error"] == 0
+    # review r13 06 (missing): the picture of the crossing linear depth moves is the table's
+    # "slanted" count for linear float64, pair 0 one ninth of it or so
+    assert int(ns.moved.sum()) == rows[("depth", "linear float64")]["slanted_wrong"]
+    assert 0 < ns.moved[ns.pair0].sum() < ns.moved.sum()
     from teachraster.study import bench
 
     depth_rows = [r for r in ns.rows if r["group"] == "depth"]
@@ -290,6 +294,17 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     # r10 07-1: q_far asks how far C's rounding can move an edge (a bound: one gap over the
     # shortest edge), not which way it happened to fall; the held cell prints each edge's move
     assert ns.far_answer == ns.far_choices[-1] == "thousands of pixels"
+    # review r13 07: the question does not walk the student through the bound (C's two
+    # products, E over the edge's length); the explain does
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    far_cell = next("".join(c["source"]) for c in nb["cells"]
+                    if "q_far = Predict(" in "".join(c["source"]))  # fmt: skip
+    asked = far_cell.split("q_far = Predict(")[1].split("explain=")[0]
+    assert "edge's length" not in asked and "x_a·y_b" not in asked
+    # review r13 07: the subpixel panel names its zero-area triangles, the clip its seam
+    assert ns.collapsed == 2 and ns.clipped_into == 2
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
     moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
     assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
@@ -487,6 +502,15 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     (y1, x1), (y2, x2) = ns.crossed
     assert (y1, y2) == (2.75, 3.25) and x1 == pytest.approx(7.5) and 15.75 < x2 < 16
     assert len(ns.levels["rotated grid (standard)"]) == 5  # "all five values"
+    # review r13 08: the question asks the standard pattern's count (the argument the lesson
+    # wants: one sample per row), the ordered grid's luck is in the explain
+    assert ns.standard_levels == ns.levels["rotated grid (standard)"]
+    source = (ROOT / "notebooks" / "08_antialiasing.ipynb").read_text()
+    assert "answer=str(len(standard_levels))" in source and len(ns.standard_levels) == 5
+    # review r13 08 (missing): the intersection, inside both triangles, is antialiased by the
+    # per-sample depth test: pixels there hold samples of both, none with one sample
+    assert ns.split.sum() > 5 and not (ns.split & ~ns.inside_both).any()
+    assert set(np.unique(ns.pierced[1].triangle_id[ns.split])) <= {0, 1}
 
 
 def test_08_levels_fan_hub_centroid_and_resolve():

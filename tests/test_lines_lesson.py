@@ -43,6 +43,28 @@ def test_wide_line_halves_share_nothing(ns):
     assert (ns.gl_shape != ns.wide.coverage).any()
 
 
+def test_wide_line_figure_shows_every_corner_with_little_margin(ns):
+    # review r13 12: the limits follow the corners (not 1.5 px on every side)
+    for lo, hi, size, axis in ((*ns.shown_x, 16, 0), (*ns.shown_y, 10, 1)):
+        assert lo <= min(0, ns.wide_corners[:, axis].min()) and hi >= max(
+            size, ns.wide_corners[:, axis].max()
+        )
+        assert (
+            lo > min(0, ns.wide_corners[:, axis].min()) - 0.5
+            and hi < max(size, ns.wide_corners[:, axis].max()) + 0.5
+        )
+
+
+def test_srgb_resolve_strip_is_darker_when_codes_are_averaged(ns):
+    # review r13 12 (missing): the edge resolved from averaged codes emits less light at every
+    # partly covered pixel ("darker and thinner"); a half-covered one 21 % instead of 50 %
+    partial = (ns.edge_cov > 0) & (ns.edge_cov < 1)
+    assert partial.sum() > 10
+    linear, codes = ns.srgb_resolved.values()
+    assert (codes[partial] < linear[partial]).all()
+    assert round(ns.half_light, 2) == 0.21
+
+
 def test_blending_points(ns):
     assert (ns.delta > 0).sum() > 0  # order dependence
     assert ns.wrong_order.sum() > 0  # sorting whole triangles fails where they intersect

@@ -42,6 +42,13 @@ OVERLAY_LABELS_MSAA = {
 #: The colour of "nothing arrived here" (a count of 0, or no triangle).
 NOTHING = (0.93, 0.93, 0.93)
 
+#: The colour of a covered pixel that the overlay counts 0 in the sparse views (``SPARSE``).
+COVERED = (0.76, 0.76, 0.76)
+
+#: Overlays that are 0 on most covered pixels: they draw the scene's coverage under the
+#: counts, so the few counted pixels can be placed on it (review r13, 11).
+SPARSE = ("hi_z", "nan")
+
 #: Counts up to this many get one colour per integer; beyond, a continuous scale.
 DISCRETE_LIMIT = 32
 
@@ -124,14 +131,27 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> Ov
         shown = np.where(frame.overlay("overdraw") > 0, shown, np.nan)
     pixel_axes(ax, width, height, ticks=max(width, height) <= 64)
     ax.set_facecolor(NOTHING)
+    if kind in SPARSE:  # the scene in a second grey under the counts
+        covered = np.asarray(frame.coverage, dtype=bool)
+        show_image(ax, np.where(covered, 1.0, np.nan), cmap=ListedColormap([COVERED]),
+                   norm=Normalize(0.0, 1.0), zorder=0.5)  # fmt: skip
+        shown = np.where(covered & (values == 0), np.nan, shown)
     im = show_image(ax, shown, cmap=cmap, norm=norm)
     result = OverlayArtists(im)
+    hiz = getattr(getattr(frame, "trace", None), "hiz", None)
+    if kind == "hi_z" and hiz is not None:  # Hi-Z rejects whole tiles: draw them
+        tile = hiz.tile
+        ax.vlines(np.arange(0, width + 1, tile), 0, height, color="white", lw=0.8, zorder=2)
+        ax.hlines(np.arange(0, height + 1, tile), 0, width, color="white", lw=0.8, zorder=2)
     if colorbar:
         room = dict(ax=ax, shrink=0.8) if cax is None else dict(cax=cax)
         if cax is not None:
             cax.clear()
         result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g")
-        result.colorbar.set_label(overlay_label(kind, n_samples), fontsize="small")
+        label = overlay_label(kind, n_samples)
+        if kind in SPARSE:
+            label += "\n(darker grey: covered, 0)"
+        result.colorbar.set_label(label, fontsize="small")
         result.colorbar.minorticks_off()  # a log bar's minor labels ("6 × 10⁰") crowd it
     share = helper_share(frame) if kind == "quad_overshading" else None
     ax.set_title(overlay_title(kind, values, n_samples, share=share), fontsize="small")

@@ -55,6 +55,9 @@ OWNER_COLORS = ("#1f77b4", "#98df8a", "#9467bd", "#dbdb8d", "#17becf", "#c7c7c7"
 #: owners so that neighbours never share one: 16 colours for the fan's 16 owners put near
 #: twins side by side (review r11, 07: "two olives, two greys and two purples").
 NEIGHBOUR_COLORS = (COLORS["fill"], "#F0E442", "#009E73", "#9467bd", "#999999")
+#: The naive panel's "covered once": a light grey, not the sky blue that is triangle 0's colour
+#: in the owner panel beside it (review r13, 07: one colour, two meanings in one picture).
+NAIVE_ONCE = "#c8c8c8"
 #: Separate copies of one triangle: pixels every copy covers, and pixels only some cover.
 EVERY_COPY, SOME_COPIES = COLORS["fill"], COLORS["inside"]
 
@@ -508,7 +511,7 @@ class CasePicker:
             else:
                 n = self.naive_counts
                 plot_pixel_grid(ax, n.shape[1], n.shape[0], ticks=False)
-                plot_coverage(ax, n == 1)
+                plot_coverage(ax, n == 1, color=NAIVE_ONCE)
                 plot_coverage(ax, n >= 2, color=COLORS["outside"])
                 for xy in tris:
                     outline(ax, xy, thin=thin)
@@ -520,7 +523,7 @@ class CasePicker:
                 if self.naive_counts is not None:
                     k = self.naive_counts[rc]
                     mark_pixel(
-                        ax, rc, "white" if k == 0 else COLORS["fill" if k == 1 else "outside"]
+                        ax, rc, "white" if k == 0 else NAIVE_ONCE if k == 1 else COLORS["outside"]
                     )
             for a in self.axes:
                 a.set(xlim=(c0, c1), ylim=(r1, r0))
@@ -648,7 +651,7 @@ class CasePicker:
         n = self.naive_counts
         parts = [left]
         if n is not None and (n == 1).any():
-            parts.append(f"right, {swatch(COLORS['fill'], 'covered once')}")
+            parts.append(f"right, {swatch(NAIVE_ONCE, 'covered once')}")
         twice = [
             name
             for name, drawn in (
