@@ -452,6 +452,39 @@ def test_interpolation_view_updates_in_place():
         assert [len(ax.get_children()) for ax in view.axes] == counts
 
 
+def test_interpolation_view_heatmap_states_its_maximum_in_the_title_only():
+    """Review r13 00 c14: the "max ..." note by the ring covered the v2 label; the heatmap's
+    title states the maximum, the ring marks the pixel, and the note stays hidden."""
+    view = tp.InterpolationView(make_fill(), "u")
+    for dx in (0.0, 1.0):
+        view.update(make_fill(xy=np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)]) + dx), draw=False)
+        assert not view.heatmap.note.get_visible() and view.heatmap.marker.get_visible()
+        assert f"max {view.maximum:.3g}" in view.heatmap.title.get_text()
+
+
+def test_row_profile_key_stands_clear_of_the_curves():
+    """Review r13 04 c15: the profile's key, placed "best" once, covered the lower ends of
+    both curves of another row; it now stands in the upper left, above the curves."""
+    with plt.rc_context():
+        tp.use_style("classroom")  # the lessons' large fonts: a large key
+        # the Axes about the size of the FillPlayer comparison's profile
+        fig, ax = plt.subplots(figsize=(3.6, 4.6), layout="constrained")
+        fill = make_fill()
+        a = tp.attribute_image(fill, "u", mode="affine")
+        b = tp.attribute_image(fill, "u", mode="perspective")
+        profile = tp.plot_profile(ax, a, b, index=3, labels=("affine", "perspective"))
+    for index in (3, 8, 12):
+        profile.update(a, b, index)
+        fig.canvas.draw()
+        key = ax.get_legend().get_window_extent()
+        for line in profile.lines:
+            xy = line.get_xydata()
+            shown = ax.transData.transform(xy[np.isfinite(xy).all(axis=1)])
+            inside = (shown[:, 0] >= key.x0) & (shown[:, 0] <= key.x1)
+            assert not (inside & (shown[:, 1] >= key.y0) & (shown[:, 1] <= key.y1)).any(), index
+    plt.close(fig)
+
+
 def test_interpolation_view_needs_a_name_when_several():
     with pytest.raises(ValueError, match="pick an attribute"):
         tp.InterpolationView(make_fill())
