@@ -171,11 +171,13 @@ def test_triangle_labels_and_arrows():
 
 def test_vertex_labels_stay_inside_the_axes_at_the_grid_sides():
     """Review r13 (02 TriangleEditor, 03 PlaneExplorer): a vertex on the grid's right or left
-    side had its label pushed out of the Axes, onto the key beside it or off the figure."""
+    side had its label pushed out of the Axes, onto the key beside it or off the figure;
+    ``inside=True`` (the widgets) keeps it in, the default still pushes it outwards."""
     fig, ax = plt.subplots(figsize=(5, 5))
     tp.plot_pixel_grid(ax, 16, 16)
     xy = np.array([[16.0, 1.75], [14.5, 6.25], [0.0, 14.5]])  # v1 on the right, v3 on the left
-    result = tp.plot_triangle(ax, xy)
+    assert tp.plot_triangle(ax, xy).labels[0].get_position()[0] > 0  # default: outwards
+    result = tp.plot_triangle(ax, xy, inside=True)  # as FillView and PlaneExplorer draw it
     fig.canvas.draw()
     box = ax.get_window_extent()
     for label in (result.labels[0], result.labels[2]):

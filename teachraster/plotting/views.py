@@ -152,7 +152,7 @@ class FillView:
         self.bbox = plot_bbox(ax, trace)
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
-        self.triangle = plot_triangle(ax, trace, edge_labels=True)
+        self.triangle = plot_triangle(ax, trace, edge_labels=True, inside=True)  # the key beside
         self.raster_line = plot_raster_line(ax, trace, 0)
         self.pixel = plot_current_pixel(ax, trace, 0)
         # An explicit title position: automatic placement (above the top ticks) costs time
