@@ -171,11 +171,13 @@ def test_triangle_labels_and_arrows():
 
 def test_vertex_labels_stay_inside_the_axes_at_the_grid_sides():
     """Review r13 (02 TriangleEditor, 03 PlaneExplorer): a vertex on the grid's right or left
-    side had its label pushed out of the Axes, onto the key beside it or off the figure."""
+    side had its label pushed out of the Axes, onto the key beside it or off the figure;
+    ``inside=True`` (the widgets) keeps it in, the default still pushes it outwards."""
     fig, ax = plt.subplots(figsize=(5, 5))
     tp.plot_pixel_grid(ax, 16, 16)
     xy = np.array([[16.0, 1.75], [14.5, 6.25], [0.0, 14.5]])  # v1 on the right, v3 on the left
-    result = tp.plot_triangle(ax, xy)
+    assert tp.plot_triangle(ax, xy).labels[0].get_position()[0] > 0  # default: outwards
+    result = tp.plot_triangle(ax, xy, inside=True)  # as FillView and PlaneExplorer draw it
     fig.canvas.draw()
     box = ax.get_window_extent()
     for label in (result.labels[0], result.labels[2]):
@@ -450,6 +452,39 @@ def test_interpolation_view_updates_in_place():
         np.testing.assert_array_equal(np.asarray(view.images[0].image.get_array()), a)
         view.fig.canvas.draw()
         assert [len(ax.get_children()) for ax in view.axes] == counts
+
+
+def test_interpolation_view_heatmap_states_its_maximum_in_the_title_only():
+    """Review r13 00 c14: the "max ..." note by the ring covered the v2 label; the heatmap's
+    title states the maximum, the ring marks the pixel, and the note stays hidden."""
+    view = tp.InterpolationView(make_fill(), "u")
+    for dx in (0.0, 1.0):
+        view.update(make_fill(xy=np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)]) + dx), draw=False)
+        assert not view.heatmap.note.get_visible() and view.heatmap.marker.get_visible()
+        assert f"max {view.maximum:.3g}" in view.heatmap.title.get_text()
+
+
+def test_row_profile_key_stands_clear_of_the_curves():
+    """Review r13 04 c15: the profile's key, placed "best" once, covered the lower ends of
+    both curves of another row; it now stands in the upper left, above the curves."""
+    with plt.rc_context():
+        tp.use_style("classroom")  # the lessons' large fonts: a large key
+        # the Axes about the size of the FillPlayer comparison's profile
+        fig, ax = plt.subplots(figsize=(3.6, 4.6), layout="constrained")
+        fill = make_fill()
+        a = tp.attribute_image(fill, "u", mode="affine")
+        b = tp.attribute_image(fill, "u", mode="perspective")
+        profile = tp.plot_profile(ax, a, b, index=3, labels=("affine", "perspective"))
+    for index in (3, 8, 12):
+        profile.update(a, b, index)
+        fig.canvas.draw()
+        key = ax.get_legend().get_window_extent()
+        for line in profile.lines:
+            xy = line.get_xydata()
+            shown = ax.transData.transform(xy[np.isfinite(xy).all(axis=1)])
+            inside = (shown[:, 0] >= key.x0) & (shown[:, 0] <= key.x1)
+            assert not (inside & (shown[:, 1] >= key.y0) & (shown[:, 1] <= key.y1)).any(), index
+    plt.close(fig)
 
 
 def test_interpolation_view_needs_a_name_when_several():

@@ -233,6 +233,7 @@ class HeatmapArtists(Artists):
     colorbar: object = None
     worst: tuple[int, int] | None = None  # (row, col) of the marked maximum
     fixed_note: bool = False  # the note stays where it was put, off the picture
+    show_note: bool = True  # False: the title alone states the maximum, the ring marks it
 
     def update(self, a, b) -> None:
         """Show the error of new images (same artists; the colour bar follows)."""
@@ -259,7 +260,7 @@ class HeatmapArtists(Artists):
             self.note.set_text(f"max {m:.3g}" + (" (ringed)" if self.fixed_note else ""))
             # a zero maximum has no pixel to point at: every pixel is one (all w equal)
             self.marker.set_visible(m > 0)
-            self.note.set_visible(m > 0)
+            self.note.set_visible(m > 0 and self.show_note)
             self._set_title(
                 f"{self.label}: max {m:.3g}" if m > 0 else f"{self.label}: 0 everywhere"
             )
@@ -361,8 +362,17 @@ class ProfileArtists(Artists):
                            else ([self.index + 0.5] * 2, [0, a.shape[0]]))  # fmt: skip
         ax = self.title.axes
         lo, hi = self.vlim or _value_range(pick(a), pick(b))
+        if along_row and self.vlim is None:
+            # headroom above the curves for the key, in the upper left: inside the curves'
+            # own range "best" was decided once and a new row's curves ran under it (review
+            # r13, 04 c15: the key covered the lower ends of both curves)
+            hi += KEY_ROOM * (hi - lo)
         (ax.set_ylim if along_row else ax.set_xlim)(lo, hi)
         self.title.set_text(f"{'row' if along_row else 'column'} {self.index} (dashed)")
+
+
+#: The share of a row profile's value range added above the curves for its key.
+KEY_ROOM = 0.45
 
 
 def _value_range(a, b) -> tuple[float, float]:
@@ -418,7 +428,9 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
     result = ProfileArtists(lines, guide_lines, title, axis, int(index),
                             None if vlim is None else tuple(vlim))  # fmt: skip
     result.update(a, b)
-    ax.legend(loc="best", fontsize=fs(0.75), handlelength=1.2, borderpad=0.3)  # as drawn
+    # along a row (own value range): the upper left, kept free by KEY_ROOM; else where best
+    loc = "upper left" if axis == "row" and vlim is None else "best"
+    ax.legend(loc=loc, fontsize=fs(0.75), handlelength=1.2, borderpad=0.3)
     return result
 
 

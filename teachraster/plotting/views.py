@@ -152,7 +152,7 @@ class FillView:
         self.bbox = plot_bbox(ax, trace)
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
-        self.triangle = plot_triangle(ax, trace, edge_labels=True)
+        self.triangle = plot_triangle(ax, trace, edge_labels=True, inside=True)  # the key beside
         self.raster_line = plot_raster_line(ax, trace, 0)
         self.pixel = plot_current_pixel(ax, trace, 0)
         # An explicit title position: automatic placement (above the top ticks) costs time
@@ -729,6 +729,10 @@ class InterpolationView(ComparisonView):
             tri.outline.set_linewidth(tri.outline.get_linewidth() * 0.6)
         self._trace = trace
         self.in_use = None  # the "in use" notes of highlight(), made when first needed
+        # The heatmap's title states the maximum and its ring marks the pixel: the note beside
+        # the ring only covered a vertex label (review r13, 00 c14: "max 0.152" over v2).
+        self.heatmap.show_note = False
+        self.heatmap.note.set_visible(False)
 
     def _images(self, trace):
         if self.name is None:

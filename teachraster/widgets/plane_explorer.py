@@ -190,7 +190,7 @@ class PlaneExplorer:
             self.contours = LineCollection(self._segments(), colors=COLORS["edge"],
                                            linewidths=1.5, linestyles="--")  # fmt: skip
             self.ax.add_collection(self.contours)
-            self.triangle = plot_triangle(self.ax, self.xy, arrows=False)
+            self.triangle = plot_triangle(self.ax, self.xy, arrows=False, inside=True)
             # positions as the lesson's figures read them: v1 = (2, 1) on its ticks
             screen_ticks(self.ax, width, height)
             bar = self.image.colorbar
