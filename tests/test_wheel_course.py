@@ -32,6 +32,11 @@ pytestmark = pytest.mark.slow
 def _run(cmd, **kwargs):
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}  # nothing from the tree
     env["MPLBACKEND"] = "Agg"
+    # the kernel "python3" as this environment's ipykernel declares it ("python": the
+    # interpreter that starts it, here the wheel's venv), never a spec in the user's data dir
+    # (~/.local/share/jupyter/kernels/python3, left by `ipykernel install --user` for another
+    # venv, ran lesson 00 in that venv: seen on a shared machine); the wheel's venv has none
+    env["JUPYTER_PATH"] = str(Path(sys.prefix) / "share" / "jupyter")
     return subprocess.run(cmd, capture_output=True, text=True, env=env, **kwargs)
 
 
