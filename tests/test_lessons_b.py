@@ -280,8 +280,8 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     assert ns.twice == 6 == int((ns.split_square[1] > 1).sum())
     # float32's gap near 1e12 dwarfs every value of E inside the triangle (its doubled area)
     assert ns.spacing == 2.0**16 and ns.doubled_area < ns.spacing / 100
-    # "the difference of two products of size x y, about 10^12 at 10^6 px, that cancel to a C of
-    # about 10^7": each product rounded in float32 leaves C off by far more than the doubled area
+    # the cell after q_far prints C's two products (about 10^12 at 10^6 px) and C (about 10^7):
+    # each product rounded in float32 leaves C off by far more than the doubled area
     assert all(1e12 <= p < 1.1e12 for p in ns.exact_products)
     assert 1e6 < abs(ns.c_exact) < 1e8 and abs(ns.c_f32 - ns.c_exact) > 10 * ns.doubled_area
     from teachraster.study import hardcases
