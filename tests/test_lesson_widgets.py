@@ -395,6 +395,33 @@ def test_divide_cost_axis_is_the_same_at_every_price_and_labelled_at_1_2_5():
         ex.close()
 
 
+def test_divide_cost_error_axis_carries_at_most_eight_labels_in_both_modes():
+    """Fresh reader, 2026-12-03: with "mean error" the y axis spans five decades and carried 16
+    labels at 1-2-5 (200, 100, 50, ..., 0.002) in about 400 px. It is now labelled at its
+    decades; the max error's three decades keep 1-2-5."""
+    from teachraster.widgets.divide_cost import MOST_ERROR_LABELS, DivideCostExplorer
+
+    rows = [{"variant": v, "group": "interpolation", "divides": d, "multiplies": m,
+             "additions": a, "error": e, "mean_abs_texels": mean, "cycles": 0.0}
+            for v, d, m, a, e, mean in LESSON_06_INTERPOLATION]  # fmt: skip
+    ex = DivideCostExplorer(rows, backend="image")
+    try:
+        shown = {}
+        for error in ("max error", "mean error", "max error"):
+            ex.error.value = error
+            ex.fig.canvas.draw()
+            lo, hi = ex.ax.get_ylim()
+            shown[error] = [t.get_text() for t in ex.ax.yaxis.get_ticklabels(which="both")
+                            if t.get_visible() and t.get_text()
+                            and lo <= t.get_position()[1] <= hi]  # fmt: skip
+            assert 3 <= len(shown[error]) <= MOST_ERROR_LABELS == 8, (error, shown[error])
+        assert {"2", "5", "10", "20", "50"} <= set(shown["max error"])  # still 1-2-5
+        assert {"0.01", "0.1", "1", "10", "100"} <= set(shown["mean error"])
+        assert not {"2", "5", "0.5", "0.05"} & set(shown["mean error"])  # decades only
+    finally:
+        ex.close()
+
+
 def test_owner_colours_hold_no_red_or_orange():
     # vermillion means "covered twice" everywhere in the course: no owner may look like it
     import colorsys

@@ -509,7 +509,10 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     assert "answer=str(len(standard_levels))" in source and len(ns.standard_levels) == 5
     # review r13 08 (missing): the intersection, inside both triangles, is antialiased by the
     # per-sample depth test: pixels there hold samples of both, none with one sample
-    assert ns.split.sum() > 5 and not (ns.split & ~ns.inside_both).any()
+    assert ns.split.sum() == 8 and not (ns.split & ~ns.inside_both).any()  # "8 pixels"
+    # fresh reader 2026-12-03: the scene's own line is vertical on a pixel boundary (every split
+    # pixel in one column, each [1, 0, 1, 0]); tilted, it crosses 8 columns, mixed 1-3 of 4
+    assert len(np.unique(np.nonzero(ns.split)[1])) == 8 and set(ns.red_share) == {1, 2, 3}
     assert set(np.unique(ns.pierced[1].triangle_id[ns.split])) <= {0, 1}
 
 
