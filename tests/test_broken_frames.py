@@ -107,9 +107,14 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     cause, pixel, value = answer
     twin = ANSWERS[next(b if a == number else a for a, b in PAIRS if number in (a, b))]
     same_kind = bf.EVIDENCE[twin][0] == bf.EVIDENCE[cause][0]
-    failure = _first(number, (twin, pixel, value if same_kind else MADE_UP[bf.EVIDENCE[twin][0]]))
-    assert failure.kind == "cause" and f"{twin!r} is not what the two" in failure.explanation
-    assert "mark of" not in failure.explanation and "stage by stage" in failure.explanation
+    # r16 N1: the twin's cause with this frame's own evidence, of whatever kind, is told the
+    # cause is wrong (it was told the evidence's type, for the twin's cause, was wrong)
+    for given in {value, MADE_UP[bf.EVIDENCE[twin][0]]}:
+        failure = _first(number, (twin, pixel, given))
+        assert failure.kind == "cause" and f"{twin!r} is not what the two" in failure.explanation
+        assert "mark of" not in failure.explanation and "stage by stage" in failure.explanation
+        assert "returned the evidence" not in failure.explanation, failure.explanation
+    failure = _first(number, (twin, pixel, value))
     assert ("read right" in failure.explanation) == same_kind, failure.explanation
     off = (value + 1 if isinstance(value, int) else value + 1e-3 if isinstance(value, float)
            else tuple(v + 1e-3 for v in value))  # fmt: skip
@@ -811,8 +816,8 @@ def test_broken_frames_3_to_6_draw_their_glass_without_depth_writes():
 
 # -- the form of an answer -----------------------------------------------------------------------
 def test_broken_frame_answers_are_read_strictly():
-    def said(answer):
-        report = ex.check("broken_frame_1", lambda b: answer)
+    def said(answer, number=1):
+        report = ex.check(f"broken_frame_{number}", lambda b: answer)
         assert report.failures[0].kind == "type", str(report)
         return report.failures[0].explanation
 
@@ -825,8 +830,12 @@ def test_broken_frame_answers_are_read_strictly():
     stage = said(("depth function", (24, 28), "depth test"))  # r8's answer form
     assert "returned the stage 'depth test' as the evidence" in stage, stage
     assert "one number" in said(("depth function", (24, 28), (0.1, 0.2, 0.3)))
-    assert "three or four numbers" in said(("missing premultiplication", (24, 20), 0.4))
-    assert "two numbers" in said(("sliver", (22, 40), 0.12))
+    # the evidence's form is read strictly for the frame's own cause (r16 N1: for another
+    # cause, that the cause is wrong comes first: test_the_right_answer_passes_...)
+    assert "three or four numbers" in said(("missing premultiplication", (24, 20), 0.4), 4)
+    assert "two numbers" in said(("sliver", (22, 40), 0.12), 6)
+    wrong_cause = ex.check("broken_frame_1", lambda b: ("sliver", (22, 40), 0.12))
+    assert wrong_cause.failures[0].kind == "cause", str(wrong_cause)
     assert "one number" in said(("depth function", (24, 28), float("nan")))
     assert "one number" in said(("depth function", (24, 28), True))
 

@@ -152,6 +152,13 @@ _KEY = {1: "e68f66d3ea75110820cace3e308b0d6e", 2: "c6b79012eaf45d23d1a4d99109306
 
 def _is_cause(number: int, cause: str) -> bool:
     """Is ``cause`` what broke frame ``number`` (by its salted hash)?"""
+    return _keyed(number, cause)
+
+
+def _keyed(number: int, cause: str) -> bool:
+    """:func:`_is_cause`'s test, for the checker's reading of an answer (``as_diagnosis``):
+    ``_is_cause`` is watched as a reader a student's answer may not call, from anywhere; this,
+    as every private function here, only when called from outside the package."""
     digest = hashlib.sha256(f"{_SALT}|{number}|{cause}".encode()).hexdigest()[:32]
     return digest == _KEY[number]
 
@@ -601,8 +608,12 @@ def _as_evidence(cause: str, value):
     return tuple(channels)
 
 
-def as_diagnosis(value) -> tuple[str, tuple[int, int], object]:
-    """(cause, (row, col), evidence) from the student's answer, read strictly."""
+def as_diagnosis(value, number: int | None = None) -> tuple[str, tuple[int, int], object]:
+    """(cause, (row, col), evidence) from the student's answer, read strictly; for frame
+    ``number``, the evidence of a cause that is not the frame's is not read strictly: that
+    the cause is wrong is told first (r16 N1: the look-alike's cause with this frame's
+    evidence was told the evidence's type was wrong, sending the student after a mistake the
+    frame does not have, and such answers escaped the wrong-cause brake)."""
     if isinstance(value, str) and _words(value) in _CAUSE_KEYS:
         # the cause without its evidence (r6: told to drop the quotes of a cause that is text)
         raise WrongAnswerType(f"returned only the cause {value!r}: return {_SHAPE}")
@@ -625,7 +636,21 @@ def as_diagnosis(value) -> tuple[str, tuple[int, int], object]:
         raise WrongAnswerType(f"returned pixel ({row}, {col}), outside the {H} × {W} frame "
                               f"(rows 0–{H - 1}, columns 0–{W - 1})")  # fmt: skip
     cause = _CAUSE_KEYS[_words(cause)]
+    if number is not None and not _keyed(int(number), cause):
+        return cause, (row, col), _loose(evidence)
     return cause, (row, col), _as_evidence(cause, evidence)
+
+
+def _loose(value):
+    """Evidence kept as given, hashable (the verdicts are cached): a number, numbers, or its
+    text."""
+    x = _real(value)
+    if x is not None:
+        return x
+    try:
+        return tuple(_real(v) for v in value) if not isinstance(value, str | bytes) else value
+    except TypeError:
+        return short(value)
 
 
 class _Number(int):
@@ -660,7 +685,7 @@ def _call(fn, args):
     finally:
         if not inside:
             _STUDENT_THREADS.discard(me)
-    return as_diagnosis(value)
+    return as_diagnosis(value, getattr(args[0], "number", None) if args else None)
 
 
 def _cases(number: int):
@@ -732,11 +757,13 @@ def _shown(cause: str, value) -> str:
     distance to the digits the history prints, a colour or a pair channel by channel (r12
     11-1: an int made the explanation fail, and the fallback said "expected 2", the frame's
     number read as the answer's triangle)."""
-    if EVIDENCE[cause][0] == "triangle":
-        return f"triangle {int(value)}"
+    if EVIDENCE[cause][0] == "triangle" and isinstance(value, int):
+        return f"triangle {value}"
     if isinstance(value, float):
         return f"{round(value, 6)}"
-    return str(tuple(round(v, 6) for v in value))
+    if isinstance(value, tuple) and all(isinstance(v, float) for v in value):
+        return str(tuple(round(v, 6) for v in value))
+    return short(value)  # the evidence of a cause that is not the frame's, as given
 
 
 def _explain(args, number, got) -> str:
