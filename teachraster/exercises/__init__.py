@@ -38,7 +38,7 @@ top-left rule and one reference for every answer. matplotlib is imported only wh
 is drawn (:meth:`Report.plot`).
 """
 
-from .broken_frames import CAUSES, EVIDENCE, broken_frame, frames_to_inspect
+from .broken_frames import CAUSES, EVIDENCE, broken_frame, frame_note, frames_to_inspect
 from .capstone_render import BUDGET as CAPSTONE_BUDGET
 from .capstone_render import capstone
 from .checks import check, names
@@ -51,6 +51,7 @@ __all__ = [
     "Failure",
     "Report",
     "broken_frame",
+    "frame_note",
     "capstone",
     "check",
     "frames_to_inspect",

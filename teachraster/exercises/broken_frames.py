@@ -435,6 +435,30 @@ def frames_to_inspect() -> dict[str, Frame]:
             for what, f in (("frame", b.frame), ("intended", b.intended))}  # fmt: skip
 
 
+#: Why a frame looks like its pair's, told once its check has passed: the words name the
+#: mistake (r16 N2: kept in the notebook's locked cell, they stood in its source, readable
+#: before 11.3 and 11.4 were solved).
+_CONTRIVED = {
+    4: "Frame 4 is contrived so that the pair looks alike: the pane's straight colour is\n"
+    "exactly its alpha times the wall's. The same mistake usually shows as a pane too bright.",
+}
+
+
+def frame_note(report) -> str:
+    """What the notebook tells after a broken frame's check: how the frame was contrived, once
+    ``report`` (that check's) has passed; until then, where it will be told.
+
+    >>> print(frame_note(None))
+    How frame 4 was made to look like frame 3 is shown here once the check of broken_frame_4 above passes.
+    """
+    name = getattr(report, "exercise", "")
+    number = int(name.rsplit("_", 1)[1]) if name.startswith("broken_frame_") else 4
+    if number in _CONTRIVED and getattr(report, "passed", False) is True:
+        return _CONTRIVED[number]
+    return ("How frame 4 was made to look like frame 3 is shown here once the check of "
+            "broken_frame_4 above passes.")  # fmt: skip
+
+
 def broken_frame(number: int) -> BrokenFrame:
     """Frame ``number`` (1 to 6)."""
     frames = broken_frames()
