@@ -451,9 +451,9 @@ def frame_note(report) -> str:
     >>> print(frame_note(None))
     How frame 4 was made to look like frame 3 is shown here once the check of broken_frame_4 above passes.
     """
-    name = getattr(report, "exercise", "")
-    number = int(name.rsplit("_", 1)[1]) if name.startswith("broken_frame_") else 4
-    if number in _CONTRIVED and getattr(report, "passed", False) is True:
+    name = str(getattr(report, "exercise", ""))
+    number = next((n for n in _CONTRIVED if name == f"broken_frame_{n}"), None)
+    if number is not None and getattr(report, "passed", False) is True:
         return _CONTRIVED[number]
     return ("How frame 4 was made to look like frame 3 is shown here once the check of "
             "broken_frame_4 above passes.")  # fmt: skip
