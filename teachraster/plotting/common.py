@@ -85,6 +85,28 @@ def nice_step(n: int, most: int = 8) -> int:
     return 10 ** math.ceil(math.log10(max(n, 1) / most))
 
 
+#: The tops a rounded colour range may have, times a power of ten (see :func:`round_up`).
+ROUND_TOPS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0)
+
+
+def round_up(x: float) -> float:
+    """The smallest of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8 (times a power of ten) at least ``x``.
+
+    A colour range ending on such a number changes only when the data's maximum crosses
+    one, so a colour bar drawn once per range can be put back from a cache (an explorer's
+    error moves with every tilt), and its last tick can sit on its end.
+
+    >>> round_up(0.232), round_up(0.08), round_up(7.0), round_up(1e-3)
+    (0.25, 0.08, 8.0, 0.001)
+    """
+    x = float(x)
+    if not (x > 0 and math.isfinite(x)):
+        raise ValueError(f"x must be a positive finite number, got {x!r}")
+    scale = 10.0 ** math.floor(math.log10(x))
+    # a relative margin: 0.08 / 0.01 is 7.999999999999999 in binary, and is 8
+    return next(top * scale for top in ROUND_TOPS if top * scale >= x * (1 - 1e-12))
+
+
 def pixel_axes(ax, width: int, height: int, *, ticks: bool = True, most: int = 8) -> None:
     """Make ``ax`` show a ``height`` × ``width`` image in pixel coordinates, y down.
 

@@ -30,6 +30,7 @@ from .common import (
     ms,
     quiet_nanmax,
     rgba_image,
+    round_up,
     set_image,
     show_image,
 )
@@ -234,6 +235,7 @@ class HeatmapArtists(Artists):
     worst: tuple[int, int] | None = None  # (row, col) of the marked maximum
     fixed_note: bool = False  # the note stays where it was put, off the picture
     show_note: bool = True  # False: the title alone states the maximum, the ring marks it
+    round_range: bool = False  # True: the colour range ends on a round number (round_up)
 
     def update(self, a, b) -> None:
         """Show the error of new images (same artists; the colour bar follows)."""
@@ -246,7 +248,8 @@ class HeatmapArtists(Artists):
             self.colorbar.update_normal(self.image)
         h, w = err.shape
         # A zero (or no) error still needs a valid, non-empty colour range.
-        self.image.set_clim(0.0, m if np.isfinite(m) and m > 0 else 1.0)
+        top = m if np.isfinite(m) and m > 0 else 1.0
+        self.image.set_clim(0.0, round_up(top) if self.round_range else top)
         if np.isfinite(m):
             i, j = np.unravel_index(np.nanargmax(err), err.shape)
             self.worst = (int(i), int(j))
@@ -276,7 +279,7 @@ class HeatmapArtists(Artists):
 
 def plot_error_heatmap(
     ax, a, b, *, label: str = "|a − b|", colorbar: bool = True, title: bool = True,
-    cax=None, note_at: tuple[float, float] | None = None,
+    cax=None, note_at: tuple[float, float] | None = None, round_range: bool = False,
 ) -> HeatmapArtists:  # fmt: skip
     """Heatmap of |a − b| with a colour bar, the maximum marked and stated in the title.
 
@@ -303,6 +306,9 @@ def plot_error_heatmap(
         A fixed place for the note, in axes fraction of ``ax`` (its top right corner), e.g.
         below the picture: there it hides no pixel, and needs no line to the ringed one.
         Default: beside the marked pixel, with a line to it.
+    round_range : bool
+        End the colour range on a round number at least the maximum
+        (:func:`~teachraster.plotting.common.round_up`) rather than on the maximum itself.
 
     Returns
     -------
@@ -325,7 +331,8 @@ def plot_error_heatmap(
                            fontsize=fs(), color="black", ha="right", va="top", zorder=7,
                            annotation_clip=False)  # fmt: skip
     title_text = ax.title if title else None
-    result = HeatmapArtists(im, marker, note, title_text, label, fixed_note=note_at is not None)
+    result = HeatmapArtists(im, marker, note, title_text, label, fixed_note=note_at is not None,
+                            round_range=round_range)  # fmt: skip
     result.update(a, b)
     if colorbar:
         where = {"ax": ax, "shrink": 0.85} if cax is None else bar_in(cax)

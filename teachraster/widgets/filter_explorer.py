@@ -29,7 +29,7 @@ from .common import (
 from .display import COMPARISON_DPI, column_inches, new_figure, resolve_backend
 from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
-from .sprites import ColourBarSprite, text_boxes
+from .sprites import PAD, ColourBarSprite, text_boxes
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 #: The picture's alternative text in the page
@@ -67,8 +67,10 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
     w = (fw - left - right - 2 * gap) / 3
     h = w / r
     title = 0.25 * s + 0.1  # no tick labels: one row of titles (their pad included)
-    pad, bar = 0.08 * s, 0.1 * s  # between a panel and its colour bar; the bar
-    below = pad + bar + 0.47 * s  # the bar, its tick labels and the row of its label
+    # between a panel and its colour bar (a pixel more than the bar's padded box needs: the
+    # cached bar is put back only where it overlaps no panel); the bar
+    pad, bar = 0.09 * s, 0.1 * s
+    below = pad + bar + 0.53 * s  # the bar, its tick labels and the row of its label
     fh = title + h + below
     fig.set_size_inches(fw, fh)
     panels, bars = [], []
@@ -77,7 +79,9 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
         panels.append(fig.add_axes((x / fw, below / fh, w / fw, h / fh)))
         if k:
             bars.append(fig.add_axes((x / fw, (below - pad - bar) / fh, w / fw, bar / fh)))
-    label_row = (pad + bar + 0.245 * s) / h  # below the tick labels, as the bar's label
+    # below the tick labels, as the bar's label, and clear of the bar's box (tick labels
+    # and all): the colour bar is put back from its cache only where nothing moving overlaps
+    label_row = (pad + bar + 0.36 * s) / h
     return panels, bars, (1.0, -label_row)
 
 
@@ -177,7 +181,8 @@ class FilterExplorer:
                 "image": plot_image(axes[0], self.image),
                 "lod": plot_levels_read(axes[1], self.levels_read, self.n_levels, cax=bars[0]),
                 "error": plot_error_heatmap(axes[2], self.image, self.truth, label="|error|",
-                                            title=False, cax=bars[1], note_at=note_at),
+                                            title=False, cax=bars[1], note_at=note_at,
+                                            round_range=True),
             }  # fmt: skip
             for bar in bars:  # read from the back of the room: the size of axis labels
                 bar.tick_params(labelsize=mpl.rcParams["axes.labelsize"])
@@ -305,7 +310,10 @@ class FilterExplorer:
     def _draw(self) -> None:
         self._blit = same_or_new(self._blit, self._edit_blit())
         error = self.panels["error"]
-        others = [ax.bbox for ax in self.axes] + text_boxes([error.note])
+        # the note is plain text under the bar's tick labels: a pad of PAD keeps it clear of
+        # the bar's cached box (text_boxes' default 8 reached into it: the bar was drawn
+        # afresh at every release, ~26 ms of its ~65)
+        others = [ax.bbox for ax in self.axes] + text_boxes([error.note], pad=PAD)
         self._bar.draw(self._blit, draft=self._drafting(), others=others)
 
     def update(self, *, restart: bool = False) -> None:
