@@ -271,6 +271,10 @@ def test_pipeline_stage_clicked(lesson):
     # the page redraws on its next frame: wait for it rather than read the text at once
     w.get_by_text("perspective projection").first.wait_for(timeout=5_000)
     assert _kernel(lesson, "pipeline.state['stage']") == "vertex"
+    # each box prints the lessons the kernel sent (the page keeps no list of its own)
+    sent = _kernel(lesson, "pipeline.data['lessons']['rasterize']")
+    box = w.locator("[data-stage=rasterize] text").all_inner_texts()
+    assert sent == ["01–04, 07,", "08, 10, 12"] and box[-2:] == sent
 
 
 def test_predictions_wait_for_an_answer_then_show_it(lesson):

@@ -758,18 +758,29 @@ def test_pipeline_overview_one_box_per_stage_and_fits_the_column():
 
 def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
     """Review r13 00: the static figure gave fragment shading lesson 09, the clickable map
-    "04, 09". The stages both draw, under their two names, list the same lessons."""
+    "04, 09". The map's page keeps no lessons of its own (its stage list names none): the
+    kernel sends them, read from the figure's table for every stage both draw."""
     from teachraster.plotting.pipeline_overview import lesson_number
+    from teachraster.widgets.pipeline_map import SHARED_STAGES, map_lessons, tour_stages
 
     js = (
         NOTEBOOKS.parent / "teachraster" / "widgets" / "static" / "explore_pipeline.js"
     ).read_text()
-    map_lessons = dict(re.findall(r'\["(\w+)", "[^"]*", "([^"]*)", "[^"]*"\]', js))
-    same = {"fragment": "fragment shading", "depth": "depth test", "blend": "blending"}
+    page_stages = re.findall(r'^  \["(\w+)", "[^"]*", "[^"]*"\],$', js, flags=re.M)
+    lessons = map_lessons()
+    assert set(page_stages) == set(lessons) and len(page_stages) == 10
+    assert not re.search(r'"\d\d[ab]?(, \d\d[ab]?)*"', js)  # no lesson list in the page
     stages = {stage.name: stage for stage in PIPELINE_STAGES}
-    for key, name in same.items():
-        figure = ", ".join(lesson_number(s) for s in stages[name].lessons)
-        assert map_lessons[key] == figure, (key, map_lessons[key], figure)
+    assert set(SHARED_STAGES.values()) == set(stages)  # every stage of the figure is mapped
+    for key, name in SHARED_STAGES.items():
+        assert lessons[key] == stages[name].lessons, key
+    for stem in {s for stems in lessons.values() for s in stems}:
+        assert (NOTEBOOKS / f"{stem}.ipynb").exists(), stem
+    shown = tour_stages()["lessons"]
+    for key, stems in lessons.items():  # the box lists every lesson, in order
+        assert " ".join(shown[key]).replace("01–04", "01, 02, 03, 04") == ", ".join(
+            lesson_number(s) for s in stems
+        ), key
 
 
 def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():

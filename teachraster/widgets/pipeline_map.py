@@ -11,7 +11,9 @@ final pixels.
 
 The data is the engine's (:func:`teachraster.render` with ``trace=True``,
 :func:`teachraster.pipeline.geometry.viewport.to_window`, :func:`teachraster.core.edges.setup_edges`);
-the page (``static/explore_pipeline.js``) only lays it out.
+the page (``static/explore_pipeline.js``) only lays it out. The lessons in each box come from
+the static figure's table (:data:`~teachraster.plotting.pipeline_overview.PIPELINE_STAGES`)
+and, for the stages only the map splits out, :data:`MAP_ONLY_LESSONS`.
 """
 
 from __future__ import annotations
@@ -27,12 +29,57 @@ from ..pipeline.geometry.clipping import INSIDE, classify
 from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
 from ..pipeline.rendering.stages import guard_band
+from ..plotting.pipeline_overview import PIPELINE_STAGES, lesson_number
 from .explorable import Explorable, esm_source
 
 #: The tour triangle of lesson 00 (window pixels, y down), its w and its attribute u.
 TOUR_XY = ((2.2, 1.5), (13.7, 5.2), (5.1, 12.8))
 TOUR_W = (1.0, 2.0, 4.0)
 TOUR_U = (0.0, 1.0, 0.0)
+
+
+#: The map's stages that the static figure (:data:`PIPELINE_STAGES`) draws too, by its names:
+#: their lessons are read from there, so the two pictures cannot disagree.
+SHARED_STAGES = {
+    "vertex": "vertex processing", "clip": "clipping", "viewport": "viewport",
+    "rasterize": "rasterisation", "fragment": "fragment shading", "depth": "depth test",
+    "blend": "blending",
+}  # fmt: skip
+
+#: The lessons (notebook stems) of the stages only the map splits out.
+MAP_ONLY_LESSONS = {
+    "assembly": ("02_half_planes",),
+    "divide": ("04_perspective_correct_interpolation", "05a_zbuffer"),
+    "setup": ("01_span_tables", "02_half_planes", "03_barycentric_and_plane_equations"),
+}
+
+
+def map_lessons() -> dict[str, tuple[str, ...]]:
+    """The lessons (notebook stems) teaching each of the map's stages, by its key."""
+    by_name = {stage.name: stage.lessons for stage in PIPELINE_STAGES}
+    return {**{key: by_name[name] for key, name in SHARED_STAGES.items()}, **MAP_ONLY_LESSONS}
+
+
+def lessons_label(stems, width: int = 12) -> list[str]:
+    """The lesson numbers of ``stems`` as a stage box prints them: a run of four or more
+    consecutive whole numbers as a range, in lines of at most ``width`` characters.
+
+    >>> lessons_label(["01_a", "02_b", "03_c", "04_d", "07_e", "08_f", "10_g", "12_h"])
+    ['01–04, 07,', '08, 10, 12']
+    >>> lessons_label(["05a_zbuffer", "05b_depth_precision", "10_tiles"])
+    ['05a, 05b, 10']
+    """
+    import textwrap
+
+    numbers, items = [lesson_number(stem) for stem in stems], []
+    while numbers:
+        run = 1  # how many numbers from here count up by one
+        while (run < len(numbers) and numbers[run].isdigit() and numbers[0].isdigit()
+               and int(numbers[run]) == int(numbers[0]) + run):  # fmt: skip
+            run += 1
+        items.append(f"{numbers[0]}–{numbers[run - 1]}" if run >= 4 else numbers[0])
+        numbers = numbers[run if run >= 4 else 1 :]
+    return textwrap.wrap(", ".join(items), width, break_on_hyphens=False)
 
 
 def tour_clip(xy, w, width: int, height: int, near: float, far: float) -> np.ndarray:
@@ -92,6 +139,7 @@ def tour_stages(xy=TOUR_XY, w=TOUR_W, u=TOUR_U, width: int = 16, height: int = 1
         "passed": int(frame.trace.fragment_passed.sum()),
         "attr": _image_list(frame.attrs), "depth": _image_list(frame.depth),
         "colour": np.round(colour * 255).astype(int).reshape(-1, 3).tolist(),
+        "lessons": {key: lessons_label(stems) for key, stems in map_lessons().items()},
     }  # fmt: skip
 
 

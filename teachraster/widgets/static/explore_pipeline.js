@@ -3,19 +3,19 @@
 // triangle's data there. Every number is the engine's (teachraster.widgets.pipeline_map
 // computes them); this file only lays them out.
 
-// [key, name, lessons, what it does]; "|" breaks the name or the lessons into lines. The
-// lessons agree with PIPELINE_STAGES (plotting/pipeline_overview.py), the static figure.
+// [key, name, what it does]; "|" breaks the name into lines. The lessons in each box are
+// the kernel's (data.lessons: the static figure's table, PIPELINE_STAGES), not kept here.
 export const STAGES = [
-  ["vertex", "vertex|shader", "04, 05a", "model → clip space"],
-  ["assembly", "primitive|assembly", "02", "vertices → triangles"],
-  ["clip", "clipping|(guard band)", "05a", "near/far; x, y only beyond the guard band"],
-  ["divide", "divide by w", "04, 05a", "clip → NDC"],
-  ["viewport", "viewport", "05a, 05b", "NDC → window x, y, depth"],
-  ["setup", "triangle|set-up", "01, 02, 03", "edges, facing, culling, bounding box"],
-  ["rasterize", "rasterisation", "01–04, 07,|08, 10, 12", "the pixel centres inside become fragments"],
-  ["fragment", "fragment|shader", "09", "interpolated attributes → colour"],
-  ["depth", "depth and|stencil test", "05a, 05b, 10", "nearer wins (stored per pixel)"],
-  ["blend", "blending", "12", "colour → the colour target"],
+  ["vertex", "vertex|shader", "model → clip space"],
+  ["assembly", "primitive|assembly", "vertices → triangles"],
+  ["clip", "clipping|(guard band)", "near/far; x, y only beyond the guard band"],
+  ["divide", "divide by w", "clip → NDC"],
+  ["viewport", "viewport", "NDC → window x, y, depth"],
+  ["setup", "triangle|set-up", "edges, facing, culling, bounding box"],
+  ["rasterize", "rasterisation", "the pixel centres inside become fragments"],
+  ["fragment", "fragment|shader", "interpolated attributes → colour"],
+  ["depth", "depth and|stencil test", "nearer wins (stored per pixel)"],
+  ["blend", "blending", "colour → the colour target"],
 ];
 
 // a large number in plain digits, grouped by thousands (never in e-notation)
@@ -146,7 +146,7 @@ function layout() {
   });
 }
 
-function diagram(onPick) {
+function diagram(onPick, lessons) {
   const boxes = layout();
   const root = svg("svg", { viewBox: `0 0 ${MAP.width} ${MAP.height}`, width: MAP.width, role: "group",
     "aria-label": "the pipeline stages; pick one" });
@@ -172,7 +172,7 @@ function diagram(onPick) {
     { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 44 + 16 * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
-    const [, name, lessons] = STAGES[k];
+    const [, name] = STAGES[k];
     const g = svg("g", { class: "stage", tabindex: 0, role: "button", "aria-label": name.replaceAll("|", " "),
       "data-stage": b.key });
     const main = b.key === "rasterize";
@@ -182,7 +182,7 @@ function diagram(onPick) {
     lines.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
       y: b.y + (lines.length > 1 ? 21 : 28) + 17 * i, "text-anchor": "middle",
       "font-size": MAP.name, "font-weight": "bold" }, line)));
-    const taught = lessons.split("|");
+    const taught = lessons[b.key];
     taught.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
       y: b.y + b.h - 8 - 15 * (taught.length - 1 - i), "text-anchor": "middle",
       "font-size": MAP.font, fill: "#444" }, line)));
@@ -207,7 +207,7 @@ function mount(el, data, host) {
   let state = { stage: "rasterize", ...host.state() };
   const root = frame(el, data.title, "");
   root.classList.add("tr-pipe");
-  const { root: map, groups } = diagram((key, e) => pick(key, e));
+  const { root: map, groups } = diagram((key, e) => pick(key, e), data.lessons);
   const title = element("div", { class: "tr-x-title" });
   const text = element("div", { "aria-live": "polite" });
   const cell = Math.max(8, Math.min(18, Math.floor(300 / Math.max(data.width, data.height))));
@@ -220,7 +220,7 @@ function mount(el, data, host) {
     const k = STAGES.findIndex(([key]) => key === state.stage);
     groups.forEach((g, i) => g.querySelector("rect").setAttribute("fill",
       i === k ? "#fde9c8" : STAGES[i][0] === "rasterize" ? "#d6ecf8" : "#f6f6f6"));
-    title.textContent = `${STAGES[k][1].replaceAll("|", " ")}: ${STAGES[k][3]}`;
+    title.textContent = `${STAGES[k][1].replaceAll("|", " ")}: ${STAGES[k][2]}`;
     text.innerHTML = stageHtml(data, state.stage);
     const img = stageImage(data, state.stage);
     canvas.style.display = img ? "" : "none";
