@@ -273,7 +273,7 @@ def test_pipeline_stage_clicked(lesson):
     assert _kernel(lesson, "pipeline.state['stage']") == "vertex"
     # each box prints the lessons the kernel sent (the page keeps no list of its own)
     sent = _kernel(lesson, "pipeline.data['lessons']['rasterize']")
-    box = w.locator("[data-stage=rasterize] text").all_inner_texts()
+    box = w.locator("[data-stage=rasterize] text").all_text_contents()  # SVG: no innerText
     assert sent == ["01–04, 07,", "08, 10, 12"] and box[-2:] == sent
 
 
