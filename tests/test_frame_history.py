@@ -468,6 +468,41 @@ def test_frame_inspector_hides_the_controls_its_frames_mode_ignores():
         w.close()
 
 
+def test_frame_inspector_shows_the_pairs_history_of_the_same_pixel_beside():
+    """Review r14 (exercise 11, 11-6): the task compares a pixel's history in a broken frame
+    with the intended frame's, and the inspector showed one frame: the other was read from
+    memory. With ``pairs`` both histories of the chosen pixel stand side by side, following
+    the pixel and the frame chosen; the check box takes the pair away."""
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    frames = {"frame 1": glass_frame("cube", 16, 12), "intended 1": glass_frame("fan", 16, 12)}
+    w = FrameInspector(frames=frames, pairs={"frame 1": "intended 1"}, backend="image")
+    try:
+        assert w.beside.value and w.beside in _shown_controls(w.widget)
+        w.row.value, w.col.value = 6, 8
+        assert str(w.pair_history) == str(frames["intended 1"].history(6, 8))
+        assert str(w.history) == str(frames["frame 1"].history(6, 8))
+        assert "<b>frame 1</b>" in w.table.value and "<b>intended 1</b>" in w.table.value
+        w.scene.value = "intended 1"  # the pairs go both ways
+        assert str(w.pair_history) == str(frames["frame 1"].history(6, 8))
+        assert w.table.value.index("<b>intended 1</b>") < w.table.value.index("<b>frame 1</b>")
+        w.beside.value = False
+        assert w.pair_history is None and "<b>" not in w.table.value
+    finally:
+        w.close()
+    with pytest.raises(ValueError, match="pairs"):
+        FrameInspector(frames=frames, pairs={"frame 1": "frame 2"}, backend="image")
+    with pytest.raises(TypeError, match="pairs"):
+        FrameInspector("cube", 16, 12, pairs={"frame 1": "intended 1"}, backend="image")
+    w = FrameInspector(frames=frames, backend="image")  # no pairs: no check box
+    try:
+        assert w.beside not in _shown_controls(w.widget) and w.pair_history is None
+    finally:
+        w.close()
+
+
 # -- lesson 11 ------------------------------------------------------------------------------
 @pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")

@@ -142,6 +142,20 @@ def quad_text(frame, row: int, col: int) -> str:
             f"(4 each), {lanes - useful} helpers ({(lanes - useful) / lanes:.0%})")  # fmt: skip
 
 
+def _checked_pairs(pairs, frames) -> dict:
+    """``pairs`` (name: name of its pair, among ``frames``) made symmetric; errors name it."""
+    if pairs is None:
+        return {}
+    if not frames or not isinstance(pairs, dict):
+        raise TypeError(f"pairs must be a dict of frame names and needs frames, got {pairs!r:.60}")
+    for name, other in pairs.items():
+        if name not in frames or other not in frames or name == other:
+            raise ValueError(
+                f"pairs must pair two different names of frames, got {name!r}: {other!r}"
+            )
+    return {**{other: name for name, other in pairs.items()}, **pairs}
+
+
 def _checked_frames(frames) -> dict | None:
     """``frames`` (name: traced Frame, all one size) or None; errors name the argument."""
     if frames is None:
@@ -158,6 +172,14 @@ def _checked_frames(frames) -> dict | None:
     if len(shapes) != 1:
         raise ValueError(f"frames must all have one size, got {sorted(shapes)}")
     return dict(frames)
+
+
+def _pre(text: str) -> str:
+    """A history table as HTML. Columns kept at any width: JupyterLab wraps a <pre>
+    (pre-wrap), which broke every row of the table at 1024 px (review r9, lesson 11); a
+    narrow column scrolls instead."""
+    return (f"<pre style='font-size:0.8em;line-height:1.25;white-space:pre;overflow-x:auto'>"
+            f"{html.escape(text)}</pre>")  # fmt: skip
 
 
 class FrameInspector(Holdable):
@@ -182,6 +204,11 @@ class FrameInspector(Holdable):
         Traced frames to inspect instead of the built-in scenes (lesson 11's broken frames):
         the chooser offers their names; samples, depth test and glass then do nothing and
         are not shown.
+    pairs : dict of str to str, optional
+        With ``frames``: each frame's pair (a broken frame and the one intended). A check box
+        then shows the chosen pixel's history in the pair beside its history in the frame on
+        show, as an engineer compares two captures in two RenderDoc windows (review r14,
+        exercise 11: the inspector showed one frame, the other was read from memory).
     backend, style
         As for the other widgets.
 
@@ -191,6 +218,8 @@ class FrameInspector(Holdable):
         The current frame (traced).
     history : PixelHistory
         The chosen pixel's history; ``table.value`` shows it as text.
+    pair_history : PixelHistory or None
+        The same pixel's history in the pair of the frame on show, while it is shown beside.
 
     Examples
     --------
@@ -211,9 +240,10 @@ class FrameInspector(Holdable):
     def __init__(self, scene: str = "intersecting_triangles", width: int = 64,
                  height: int = 48, *, view: str = "image", row: int | None = None,
                  col: int | None = None, samples: int = 1, depth_test: bool = True,
-                 glass: bool = False, frames: dict | None = None, backend: str = "auto",
-                 style: str | None = None) -> None:  # fmt: skip
+                 glass: bool = False, frames: dict | None = None, pairs: dict | None = None,
+                 backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.frames = _checked_frames(frames)
+        self.pairs = _checked_pairs(pairs, self.frames)
         if self.frames:
             scene = scene if scene in self.frames else next(iter(self.frames))
             height, width = next(iter(self.frames.values())).triangle_id.shape
@@ -245,6 +275,8 @@ class FrameInspector(Holdable):
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
                                      max=width - 1, description="col")  # fmt: skip
+        self.beside = widgets.Checkbox(value=bool(self.pairs), description="its pair beside",
+                                       indent=False, layout=widgets.Layout(width="auto"))  # fmt: skip
         self.table = widgets.HTML()
         self._render()
         with style_context(style):
@@ -263,6 +295,7 @@ class FrameInspector(Holdable):
             control.observe(self._rerender, "value")
             control.disabled = bool(self.frames) and control is not self.scene
         self.view.observe(self._view_changed, "value")
+        self.beside.observe(lambda change: self._show_history(), "value")
         for control in (self.row, self.col):
             control.observe(self._pixel_changed, "value")
         title = title_html(
@@ -273,7 +306,7 @@ class FrameInspector(Holdable):
         # what is shown (scene, view) and how it is rendered: two rows, each wrapping. Given
         # frames, the second row does nothing: left out, not greyed out (review r11, 11-F:
         # disabled controls read as broken ones)
-        rows = [control_row([self.scene, self.view])]
+        rows = [control_row([self.scene, self.view, *([self.beside] if self.pairs else [])])]
         if not self.frames:
             rows.append(control_row([self.samples, self.depth_test, self.glass]))
         controls = widgets.VBox(rows)
@@ -295,15 +328,20 @@ class FrameInspector(Holdable):
         self._show_history()
 
     def _show_history(self) -> None:
-        self.history = self.frame.history(self.row.value, self.col.value)
+        row, col = self.row.value, self.col.value
+        self.history = self.frame.history(row, col)
         text = str(self.history)
         if self.view.value == "quad_overshading":  # who launched this quad's lanes
-            text += "\n\n" + quad_text(self.frame, self.row.value, self.col.value)
-        text = html.escape(text)
-        # columns kept at any width: JupyterLab wraps a <pre> (pre-wrap), which broke every
-        # row of the table at 1024 px (review r9, lesson 11); a narrow column scrolls instead
-        self.table.value = (f"<pre style='font-size:0.8em;line-height:1.25;white-space:pre;"
-                            f"overflow-x:auto'>{text}</pre>")  # fmt: skip
+            text += "\n\n" + quad_text(self.frame, row, col)
+        pair = self.pairs.get(self.scene.value) if self.beside.value else None
+        self.pair_history = None if pair is None else self.frames[pair].history(row, col)
+        if self.pair_history is None:
+            self.table.value = _pre(text)
+            return
+        # side by side where the column is wide enough, one under the other where not
+        tables = "".join(f"<div><b>{html.escape(name)}</b>{_pre(t)}</div>" for name, t in
+                         ((self.scene.value, text), (pair, str(self.pair_history))))  # fmt: skip
+        self.table.value = f"<div style='display:flex;flex-wrap:wrap;gap:0 24px'>{tables}</div>"
 
     def _fit_figure(self) -> None:
         """Size the frame's figure to what it draws: the frame at its own aspect (no band
@@ -434,5 +472,5 @@ class FrameInspector(Holdable):
             if display is not None:
                 display.close()
         close_tree(self.widget)
-        for control in (self.samples, self.depth_test, self.glass):  # not in it with frames
+        for control in (self.samples, self.depth_test, self.glass, self.beside):  # maybe not in it
             control.close()
