@@ -139,7 +139,7 @@ def test_edges_drag_in_the_page_and_the_kernel_hears_the_release(lesson):
     assert moved != [14.5, 12.5] and all(abs(v * 4 - round(v * 4)) < 1e-9 for v in moved)
     w.get_by_role("button", name="3-D: E as planes").click()
     planes = w.locator("canvas").nth(1)
-    assert planes.is_visible()
+    planes.wait_for(state="visible", timeout=5_000)  # shown on the page's next frame
     before = _frames(planes)
     _drag(lesson, planes, (280, 200), (60, 20))
     assert _frames(planes) > before
