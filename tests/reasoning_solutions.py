@@ -144,6 +144,7 @@ BROKEN_FRAMES = {
     4: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),  # the fragment colour
     5: ("blend order", (23, 41), (0.52, 0.67, 0.91)),  # the strip's 'after', overwritten
     6: ("sliver", (22, 40), (0.1213, 0.299992)),  # missed by, and the intended depth there
+    7: ("depth function", (24, 28), 0.263116),  # frame 1's cause at other depths (r16 11-2)
 }
 
 
@@ -182,6 +183,7 @@ READ = {
     4: lambda b, row, col: _glass(b.frame.history(row, col)).color[:3],
     5: lambda b, row, col: _glass(b.frame.history(row, col)).color_after[:3],
     6: _sliver,
+    7: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
 }
 
 

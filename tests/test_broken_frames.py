@@ -21,13 +21,19 @@ from teachraster.exercises import broken_frames as bf
 
 #: The key, for the tests only (the package keeps salted hashes).
 ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
-           4: "missing premultiplication", 5: "blend order", 6: "sliver"}  # fmt: skip
+           4: "missing premultiplication", 5: "blend order", 6: "sliver",
+           7: "depth function"}  # fmt: skip
 STAGE = {1: "depth test", 2: "culling", 3: "depth test", 4: "blending", 5: "blending",
-         6: "coverage"}  # fmt: skip
-PAIRS = [(1, 2), (3, 4), (5, 6)]
+         6: "coverage", 7: "depth test"}  # fmt: skip
+#: The frames that look alike, pixel for pixel (rendered and intended), and the look-alikes
+#: whose causes differ (r16 11-2: frames 1 and 7 share a cause, so no pair's causes are
+#: known to differ; each frame's twin below is a look-alike with another cause).
+GROUPS = [(1, 2, 7), (3, 4), (5, 6)]
+PAIRS = [(1, 2), (3, 4), (5, 6), (2, 7)]
 #: A made-up value of each kind of evidence.
 MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5),
            "triangle": 11}  # fmt: skip
+NUMBER_WORDS = {6: "six", 7: "seven", 8: "eight"}
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
 README = Path(__file__).parents[1] / "README.md"
 
@@ -541,7 +547,7 @@ def test_the_answers_are_not_importable_in_readable_form():
     specs = repr(bf._SPECS) + "".join(s for s, *_ in bf._SPECS)
     assert not any(c in specs for c in bf.CAUSES)
     assert all(bf._is_cause(n, c) == (c == ANSWERS[n]) for n in ANSWERS for c in bf.CAUSES)
-    assert len(set(bf._KEY.values())) == 6
+    assert len(set(bf._KEY.values())) == len(ANSWERS) == len(bf._KEY)
 
 
 def test_the_module_docstring_lists_the_mistakes_out_of_the_frames_order():
@@ -566,7 +572,7 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     flat = " ".join(intro.split())
     assert "after lesson 12" in flat and "05b" in flat and "12 §9" in flat, flat
     row = next(
-        line for line in README.read_text().splitlines() if "diagnose six broken frames" in line
+        line for line in README.read_text().splitlines() if "diagnose seven broken frames" in line
     )
     assert "lesson 11)" not in row and "after lesson 12" in row, row
     assert "**redrawn**" in how and "typed in" in how and "private functions" in how
@@ -677,7 +683,7 @@ def test_broken_frame_texts_do_not_pair_a_task_with_its_cause():
     cells = _cells()
     tasks = {k: v.lower() for k, v in cells.items() if k.endswith("_task")}
     for word in (r"mapping", r"reversed", r"1 − d", r"\bless\b"):
-        assert not re.search(word, tasks["frame_1_task"]), word
+        assert not re.search(word, tasks["frame_1_task"] + tasks["frame_7_task"]), word
         assert not re.search(word, bf.CAUSES["depth function"].lower()), word
     symptoms = " ".join(ex.broken_frame(n).symptom.lower() for n in ANSWERS)
     for telling in ("depth write", "dotted", "gap", "too bright", "wrong faces", "hidden",
@@ -743,8 +749,9 @@ def test_broken_frame_objects_students_get_do_not_carry_the_answer(number):
         b.frame.plan["culling"]
 
 
-def test_broken_frames_come_in_look_alike_pairs_told_apart_only_by_their_histories():
-    for a, b in PAIRS:
+def test_broken_frames_come_in_look_alike_groups_told_apart_only_by_their_histories():
+    look_alike = [(a, b) for g in GROUPS for i, a in enumerate(g) for b in g[i + 1 :]]
+    for a, b in look_alike:
         one, two = ex.broken_frame(a), ex.broken_frame(b)
         assert one.symptom == two.symptom
         assert np.array_equal(bf._rgb(one.frame), bf._rgb(two.frame))
@@ -752,7 +759,86 @@ def test_broken_frames_come_in_look_alike_pairs_told_apart_only_by_their_histori
         assert not np.array_equal(bf._rgb(one.frame), bf._rgb(one.intended))
         assert {bf._parts_at(n, *_showing(n)) for n in (a, b)} == {STAGE[a], STAGE[b]}
     assert not ex.broken_frame(1).frame.trace.culled.any()
+    assert not ex.broken_frame(7).frame.trace.culled.any()
     assert ex.broken_frame(2).frame.trace.culled.any()
+
+
+def _look_alike_groups(frames) -> list:
+    """The frames' numbers grouped by their two pictures, pixel for pixel."""
+    groups = {}
+    for b in frames:
+        key = (bf._rgb(b.frame).tobytes(), bf._rgb(b.intended).tobytes())
+        groups.setdefault(key, []).append(b.number)
+    return [tuple(g) for g in groups.values()]
+
+
+def test_a_look_alikes_cause_tells_nothing_of_the_frames_cause():
+    """r14/r16 11-2: each look-alike pair held two different causes, so a student who had
+    solved one frame of a pair ruled its cause out for the other (and the picture narrowed
+    the other to the few causes left). Now the cube's three look-alikes hold one cause twice
+    and another once: knowing a look-alike's cause tells neither that the frame has it nor
+    that it has not, in the data and in what the checker says."""
+    assert _look_alike_groups(bf.broken_frames()) == GROUPS
+    for look in bf._REDRAWN:  # the frames redrawn for a check look alike in the same groups
+        redrawn = [bf._redrawn(n, look) for n in ANSWERS]
+        assert _look_alike_groups(redrawn) == GROUPS, look
+    assert all(len({ANSWERS[n] for n in g}) > 1 for g in GROUPS)  # no picture names a cause
+    for n in (1, 7):  # one look-alike shares the frame's cause, another does not
+        others = {ANSWERS[m] == ANSWERS[n] for g in GROUPS if n in g for m in g if m != n}
+        assert others == {True, False}, n
+    # frame 1's diagnosis, read off the frame it is given, is frame 7's too, and not frame 2's
+    _passes("broken_frame_7", sol.diagnosis(1))
+    failure = _first(2, ("depth function", (24, 28), sol.READ[1](ex.broken_frame(2), 24, 28)))
+    assert failure.kind == "cause", failure.explanation
+    # ... while the value frame 1 shows, typed in, is not frame 7's: its depths are its own
+    one = sol.BROKEN_FRAMES[1]
+    assert _first(7, one).kind == "evidence"
+    # frame 2's cause, the look-alike's, is no answer for frame 7
+    failure = _first(7, ("culled winding", (24, 28), sol.BROKEN_FRAMES[2][2]))
+    assert failure.kind == "cause", failure.explanation
+
+
+def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
+    """r16 11-2: the text says look-alike frames may or may not share a cause, never that each
+    cause is used once; the numbers it gives (the count, the groups) are the ones a cell
+    prints from the frames."""
+    cells = _cells()
+    intro = " ".join(cells["intro"].split())
+    assert "may or may not share a cause" in intro, intro
+    assert f"Here are {NUMBER_WORDS[len(ANSWERS)]} frames" in intro, intro
+    text = " ".join(" ".join(v.split()) for k, v in cells.items() if k.endswith("text")
+                    or k.endswith("task") or k == "intro").lower()  # fmt: skip
+    for promise in ("each cause once", "a different cause", "another cause", "two causes",
+                    "six causes", "each of the causes", "different causes"):  # fmt: skip
+        assert promise not in text, promise
+    # what the figure cell prints, run on the frames: the count and the look-alike groups
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    broken = {b.number: b for b in bf.broken_frames()}
+    exec(cells["frames_figure"], {"broken": broken, "np": np, "plt": plt})
+    plt.close("all")
+    printed = capsys.readouterr().out
+    assert printed == (f"{len(ANSWERS)} frames; alike pixel for pixel, rendered and intended: "
+                       + ", ".join(map(str, GROUPS)) + "\n"), printed  # fmt: skip
+    # frame 4 "contrived so that the pair looks alike" / "made to look like frame 3" hinted
+    # that its cause is not frame 3's: said of frame 4 alone, before its check passes
+    before = " ".join((cells["frame_4_task"] + cells["frame_4_note"] + ex.frame_note(None)).split())
+    assert "contrived" in before and "the pair" not in before and "like frame 3" not in before
+    task = " ".join(cells["frame_7_task"].split())
+    assert "frames 1 and 2 pixel for pixel" in task, task
+    assert "may or may not share a cause" in task, task
+
+
+def test_the_frame_7_solution_quotes_the_depths_its_histories_print():
+    """The solution's comment gives the depths at (24, 28) as the two histories print them."""
+    solution = _cells()["broken_frame_7_solution"]
+    b = ex.broken_frame(7)
+    printed = str(b.frame.history(24, 28)) + str(b.intended.history(24, 28))
+    quoted = re.findall(r"0\.\d{6}", solution.split("SOLUTION")[1])
+    assert len(quoted) == 4 and all(q in printed for q in quoted), quoted
 
 
 def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
@@ -854,8 +940,8 @@ def test_broken_frame_numbers_are_checked():
         ex.broken_frame(True)
     with pytest.raises(TypeError, match="number must be an int"):
         ex.broken_frame(3.0)
-    with pytest.raises(ValueError, match="1 to 6"):
-        ex.broken_frame(7)
+    with pytest.raises(ValueError, match="1 to 7"):
+        ex.broken_frame(8)
 
 
 def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_title():
@@ -880,7 +966,7 @@ def test_the_frame_inspector_shows_the_broken_frames():
 
     frames = ex.frames_to_inspect()
     assert list(frames)[:4] == ["frame 1", "intended 1", "frame 2", "intended 2"]
-    assert frames["intended 5"] is ex.broken_frame(5).intended and len(frames) == 12
+    assert frames["intended 5"] is ex.broken_frame(5).intended and len(frames) == 2 * len(ANSWERS)
     w = FrameInspector(frames=frames, backend="image")
     try:
         assert list(w.scene.options) == list(frames) and w.frame is frames["frame 1"]

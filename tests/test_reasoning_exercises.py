@@ -79,7 +79,7 @@ def test_every_issue_30_exercise_has_correct_variants_and_named_mistakes():
     assert issue_30 == set(sol.CORRECT)
     wrong = {name for name, _, _ in WRONG.values()}
     different = {name for name, _ in DIFFERENT.values()}
-    frames = {f"broken_frame_{n}" for n in range(1, 7)}
+    frames = {f"broken_frame_{n}" for n in sol.BROKEN_FRAMES}
     assert issue_30 - frames <= wrong & different
     assert {label for label, (name, _, _) in WRONG.items() if name in issue_30} <= set(KINDS)
 
@@ -211,7 +211,7 @@ RIGHT = dict(sol.CORRECT)
 FIRST_WRONG = {}
 for _name, _fn, _ in WRONG.values():
     FIRST_WRONG.setdefault(_name, _fn)
-for _n in range(1, 7):  # a cause that is not the frame's
+for _n in sol.BROKEN_FRAMES:  # a cause that is not the frame's
     FIRST_WRONG.setdefault(
         f"broken_frame_{_n}",
         lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5)),

@@ -29,8 +29,8 @@ How it is built (one engine for every exercise):
   picture beside the package's (``report.compare(ax)``).
 - ``capstone(scene, covers=...)`` renders a built-in scene with the student's own functions
   beside the package's (:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames
-  lesson 11's exercises diagnose (:mod:`teachraster.exercises.broken_frames`), ``frames_to_inspect()`` all
-  twelve frames for the ``FrameInspector``.
+  lesson 11's exercises diagnose (:mod:`teachraster.exercises.broken_frames`),
+  ``frames_to_inspect()`` every one of them and its intended frame for the ``FrameInspector``.
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one

@@ -1,26 +1,27 @@
-"""Exercises ``broken_frame_1`` … ``broken_frame_6`` (lesson 11): find what broke a frame.
+"""Exercises ``broken_frame_1`` … ``broken_frame_7`` (lesson 11): find what broke a frame.
 
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
-with one mistake a graphics programmer makes (alphabetically: transparent geometry drawn
-before what lies behind it, culling the wrong winding, a reversed depth mapping, straight
-colours blended as premultiplied, a strip modelled thinner than a pixel, surfaces too close
-for the depth buffer). The student sees the frame beside the intended one, inspects pixel
-histories (``frame.history(row, col)``, the ``FrameInspector``) and answers with a cause from
-:data:`CAUSES`, a pixel where the two frames differ, and the evidence :data:`EVIDENCE` names
-for that cause: a number or colour read off that pixel's history (a depth to its six printed
-decimals, a colour or a distance to its four printed digits).
+with one mistake a graphics programmer makes (alphabetically, each in one frame or more:
+transparent geometry drawn before what lies behind it, culling the wrong winding, a reversed
+depth mapping, straight colours blended as premultiplied, a strip modelled thinner than a
+pixel, surfaces too close for the depth buffer). The student sees the frame beside the intended
+one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``) and answers
+with a cause from :data:`CAUSES`, a pixel where the two frames differ, and the evidence
+:data:`EVIDENCE` names for that cause: a number or colour read off that pixel's history (a
+depth to its six printed decimals, a colour or a distance to its four printed digits).
 
-What is hidden and what is not. The frames come in look-alike pairs (1-2, 3-4, 5-6) with
-the same symptom, the same picture and the same intended picture pixel for pixel. Hidden: the
-cause (no attribute or repr of a :class:`BrokenFrame` names it; the module keeps only a salted
-hash of each frame's cause, which hides the key from a reader, not from someone who hashes
-the ten names: an answer whose code reads ``_KEY`` or ``_SALT``, under any name, is not
-counted), the frames'
-``plan`` (:data:`WITHHELD`). Not hidden: ``frame.trace`` and
-``frame.attrs``, the renderer's records that the histories read, and this module's source,
-which shows how each frame is built. Neither gives the point: the evidence is a value of the
-student's own pixel, derived from the frame's history when the answer is checked (r8: the
-cause, a changed pixel and a stage named by the cause passed, 77 blind calls solved all six).
+What is hidden and what is not. The frames come in look-alike groups (1-2-7, 3-4, 5-6) with the
+same symptom, the same picture and the same intended picture pixel for pixel; frames that look
+alike may or may not share a cause (r16 11-2: while each pair held two different causes,
+solving one frame ruled its cause out for its partner). Hidden: the cause (no attribute or repr
+of a :class:`BrokenFrame` names it; the module keeps only a salted hash of each frame's cause,
+which hides the key from a reader, not from someone who hashes the ten names: an answer whose
+code reads ``_KEY`` or ``_SALT``, under any name, is not counted), the frames' ``plan``
+(:data:`WITHHELD`). Not hidden: ``frame.trace`` and ``frame.attrs``, the renderer's records
+that the histories read, and this module's source, which shows how each frame is built. Neither
+gives the point: the evidence is a value of the student's own pixel, derived from the frame's
+history when the answer is checked (r8: the cause, a changed pixel and a stage named by the
+cause passed, 77 blind calls solved all six).
 
 The answer is a function ``broken_frame_n(b)`` that reads the diagnosis from the frame pair
 ``b`` it is given. The check calls it on the frame shown and on the same mistake redrawn at
@@ -48,7 +49,7 @@ import hashlib
 import operator
 import secrets
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache, lru_cache
 
 import numpy as np
@@ -65,9 +66,10 @@ from .running import WrongAnswerType
 #: Frame size: small, so that every pixel is easy to pick.
 W, H = 64, 48
 
-#: The causes a diagnosis may name (six occur, four do not), in alphabetical order: every
-#: listing of them (the notebook's, a wrong form's message) follows this order, never the
-#: frames' (r8: listed in the frames' order, the causes were the answer key).
+#: The causes a diagnosis may name (six occur, one of them in two frames; four occur in none),
+#: in alphabetical order: every listing of them (the notebook's, a wrong form's message)
+#: follows this order, never the frames' (r8: listed in the frames' order, the causes were the
+#: answer key).
 CAUSES = {
     "affine interpolation": "attributes are interpolated without the divide by w",
     "blend order": "transparent geometry is drawn before what lies behind it",
@@ -147,7 +149,8 @@ def _differs(number) -> np.ndarray:
 _SALT = "teachraster/broken-frames/r9"
 _KEY = {1: "e68f66d3ea75110820cace3e308b0d6e", 2: "c6b79012eaf45d23d1a4d99109306658",
         3: "04b91d018fc9aec9a7aa6f32f59360cb", 4: "e2b44365fd55dbf77960b5922c872641",
-        5: "38234cdea627c46e16be35257101261e", 6: "2413d43fbc57dd32560223caa37f49b2"}  # fmt: skip
+        5: "38234cdea627c46e16be35257101261e", 6: "2413d43fbc57dd32560223caa37f49b2",
+        7: "efdc574170a935ebbec1162e53c18d43"}  # fmt: skip
 
 
 def _is_cause(number: int, cause: str) -> bool:
@@ -302,6 +305,13 @@ _REDRAWN = (
 )
 
 
+def _shallow(look: _Look) -> _Look:
+    """``look`` with the cube's depths in half the range (around 0.5): the same pixels, other
+    depths (frame 7, a look-alike of frames 1 and 2)."""
+    a, c = look.cube
+    return replace(look, cube=(a / 2, c / 2))
+
+
 def _cube(look: _Look, winding_reversed: bool = False, **kwargs) -> Frame:
     scene = get_scene("cube")
     clip = scene.clip(W / H)
@@ -364,9 +374,12 @@ def _strip(look: _Look, triangles):
 
 
 #: Each frame's symptom as a user would report it: what is seen, never the mechanism, and how
-#: to draw it with a look (broken, intended). The frames come in look-alike pairs (1-2, 3-4,
+#: to draw it with a look (broken, intended). The frames come in look-alike groups (1-2-7, 3-4,
 #: 5-6): the same symptom, the same picture and the same intended picture, pixel for pixel;
 #: only the histories tell them apart (3 to 6 even share the broken picture: a plain wall).
+#: r16 11-2: while every pair held two different causes, a solved frame ruled its cause out
+#: for its partner; now the cube's group holds a cause twice (at other depths) and another
+#: once, so a look-alike's cause tells neither that it is nor that it is not the frame's.
 _SPECS = [
     ("The cube does not look as intended.",
      lambda k: _cube(k, reverse_depth=True), lambda k: _cube(k)),
@@ -383,6 +396,8 @@ _SPECS = [
     ("The tinted strip across the wall is missing.",
      lambda k: _pixels([_wall(k), _strip(k, _NEEDLE)]),
      lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
+    ("The cube does not look as intended.",
+     lambda k: _cube(_shallow(k), reverse_depth=True), lambda k: _cube(_shallow(k))),
 ]  # fmt: skip
 
 
@@ -410,7 +425,7 @@ def _handed_out(frame: Frame) -> Frame:
 
 @cache
 def broken_frames() -> tuple[BrokenFrame, ...]:
-    """The six frames, numbered from 1 (rendered once), their plans withheld."""
+    """The frames, numbered from 1 (rendered once), their plans withheld."""
     return tuple(_drawn(n, _SHOWN) for n in range(1, len(_SPECS) + 1))
 
 
@@ -449,18 +464,18 @@ def frame_note(report) -> str:
     ``report`` (that check's) has passed; until then, where it will be told.
 
     >>> print(frame_note(None))
-    How frame 4 was made to look like frame 3 is shown here once the check of broken_frame_4 above passes.
+    How frame 4 was contrived is shown here once the check of broken_frame_4 above passes.
     """
     name = str(getattr(report, "exercise", ""))
     number = next((n for n in _CONTRIVED if name == f"broken_frame_{n}"), None)
     if number is not None and getattr(report, "passed", False) is True:
         return _CONTRIVED[number]
-    return ("How frame 4 was made to look like frame 3 is shown here once the check of "
-            "broken_frame_4 above passes.")  # fmt: skip
+    # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another
+    return "How frame 4 was contrived is shown here once the check of broken_frame_4 above passes."
 
 
 def broken_frame(number: int) -> BrokenFrame:
-    """Frame ``number`` (1 to 6)."""
+    """Frame ``number`` (1 to 7)."""
     frames = broken_frames()
     number = as_int("number", number)  # the one integer rule: no bools, operator.index
     if not 1 <= number <= len(frames):
@@ -1031,5 +1046,7 @@ def frame_exercise(number: int) -> Exercise:
     )  # fmt: skip
 
 
-#: The six exercises, for the registry: name -> how to build it.
-EXERCISES = {f"broken_frame_{n}": (lambda n=n: frame_exercise(n)) for n in range(1, 7)}
+#: The exercises, one a frame, for the registry: name -> how to build it.
+EXERCISES = {
+    f"broken_frame_{n}": (lambda n=n: frame_exercise(n)) for n in range(1, len(_SPECS) + 1)
+}
