@@ -30,7 +30,8 @@ How it is built (one engine for every exercise):
 - ``capstone(scene, covers=...)`` renders a built-in scene with the student's own functions
   beside the package's (:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames
   lesson 11's exercises diagnose (:mod:`teachraster.exercises.broken_frames`),
-  ``frames_to_inspect()`` every one of them and its intended frame for the ``FrameInspector``.
+  ``frames_to_inspect()`` every one of them and its intended frame for the ``FrameInspector``,
+  ``frame_pairs()`` which two are a pair.
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one
@@ -38,7 +39,14 @@ top-left rule and one reference for every answer. matplotlib is imported only wh
 is drawn (:meth:`Report.plot`).
 """
 
-from .broken_frames import CAUSES, EVIDENCE, broken_frame, frame_note, frames_to_inspect
+from .broken_frames import (
+    CAUSES,
+    EVIDENCE,
+    broken_frame,
+    frame_note,
+    frame_pairs,
+    frames_to_inspect,
+)
 from .capstone_render import BUDGET as CAPSTONE_BUDGET
 from .capstone_render import capstone
 from .checks import check, names
@@ -54,6 +62,7 @@ __all__ = [
     "frame_note",
     "capstone",
     "check",
+    "frame_pairs",
     "frames_to_inspect",
     "names",
 ]

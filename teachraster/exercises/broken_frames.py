@@ -450,6 +450,16 @@ def frames_to_inspect() -> dict[str, Frame]:
             for what, f in (("frame", b.frame), ("intended", b.intended))}  # fmt: skip
 
 
+def frame_pairs() -> dict[str, str]:
+    """Each broken frame's name in :func:`frames_to_inspect` and its intended frame's, for
+    ``FrameInspector(pairs=...)``: the two histories of a pixel side by side (r14, 11-6).
+
+    >>> frame_pairs()["frame 1"]
+    'intended 1'
+    """
+    return {f"frame {b.number}": f"intended {b.number}" for b in broken_frames()}
+
+
 #: Why a frame looks like its pair's, told once its check has passed: the words name the
 #: mistake (r16 N2: kept in the notebook's locked cell, they stood in its source, readable
 #: before 11.3 and 11.4 were solved).
