@@ -136,7 +136,9 @@ function svg(tag, attrs, text) {
 // Two rows of five boxes; the second row continues from the first. Drawn 1:1 in a 580-px
 // column (JupyterLab's at 1024 px with the file browser open is about 585), where its
 // smallest type, 13 px, stays at least 12 px on screen (review r7: 900 wide, it was 8 px).
-const MAP = { width: 580, height: 364, font: 13, name: 14 };
+// Stage names 13 px bold: at 14 px "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px
+// from their boxes' borders (review r17), under the selected box's 2-px border.
+const MAP = { width: 580, height: 364, font: 13, name: 13 };
 function layout() {
   const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 50];
   return STAGES.map(([key], k) => {
