@@ -16,7 +16,7 @@ import types
 import pytest
 
 from teachraster import exercises as ex
-from teachraster.exercises import checks, lines
+from teachraster.exercises import blending, checks, lines
 from teachraster.exercises import package_answers as pa
 
 #: Checker modules that only build cases or format numbers, never an expected answer.
@@ -37,6 +37,27 @@ def test_the_checkers_own_line_rule_handed_in_does_not_count(line):
     report = ex.check("line_pixels", line, budget=60)
     assert not report.passed and "the checker's own code" in (report.package or ""), str(report)
     assert report.failures == [], report.failures  # right, but not the student's work
+
+
+def _right_blend(s, d):
+    """A student's own premultiplied over, to tell the table's lambda from the student's."""
+    return s + d * (1 - s[3])
+
+
+@pytest.mark.parametrize("how", ["handed in", "called"])
+def test_a_lambda_from_the_checkers_own_tables_does_not_count(how):
+    """``blending.OVER[1][2]`` (the mistake "source not multiplied" of exercise ``over``) is
+    ``over_premultiplied``'s answer: taken from the checker's table, handed in or called from
+    the student's own function, it passed unflagged (it is no module-level function)."""
+    table = blending.OVER[1][2]
+    assert ex.check("over_premultiplied", _right_blend).passed  # the right answer it equals
+    fn = table if how == "handed in" else (lambda s, d: blending.OVER[1][2](s, d))
+    report = ex.check("over_premultiplied", fn)
+    verb = "is" if how == "handed in" else "calls"
+    assert not report.passed, str(report)
+    assert f"{verb} teachraster's blending.OVER[1][2]" in (report.package or ""), report.package
+    assert "the checker's own code" in report.package
+    assert report.failures == [], report.failures
 
 
 def _module_functions(module: str) -> dict:

@@ -1074,3 +1074,20 @@ def test_each_task_cells_grade_id_names_the_function_it_asks_for():
         asked = re.findall(r"write `(\w+)\(", source, flags=re.I)
         if grade_id.endswith("_task") and asked:
             assert grade_id == f"{asked[0]}_task", (grade_id, asked)
+
+
+def test_9_2b_shares_9_2s_one_point_with_9_2a():
+    """r14/r16 reading note: 9.2b is lesson 12 §9's rule, one substitution from 9.2a, yet
+    carried a point of its own. 9.2a and 9.2b now share 9.2's one point, and the text says so
+    (and that the lesson prints 9.2b's result)."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
+    grading = [c["metadata"]["nbgrader"] for c in json.loads(nb.read_text())["cells"]]
+    points = {g["grade_id"]: g["points"] for g in grading if g["grade"]}
+    assert points["over_straight_check"] + points["over_premultiplied_check"] == 1, points
+    assert points["line_pixels_check"] == points["front_to_back_check"] == 1, points
+    task = " ".join(_nb_cells()["over_premultiplied_task"].split())
+    assert "shares 9.2's point with 9.2a" in task and "lesson 12 §9 states" in task, task
+    assert "half for 9.2a and half for 9.2b" in " ".join(_nb_cells()["over_straight_task"].split())

@@ -756,6 +756,23 @@ def test_pipeline_overview_one_box_per_stage_and_fits_the_column():
     plt.close(fig)
 
 
+def test_pipeline_overview_text_reads_12_px_in_a_585_px_column():
+    """Lesson 00's pipeline figure (900 px at 100 dpi) shown shrunk to JupyterLab's column at
+    1024 x 768 (585 px, as the widgets' figures are measured): its early-z note, at 0.7 of
+    the style's size, read 11.4 px."""
+    from matplotlib.text import Text
+
+    with tr_style():
+        fig, ax = plt.subplots(figsize=(9, 7.5))
+        plot_pipeline(ax)
+    fig.canvas.draw()
+    width = fig.get_figwidth() * fig.dpi
+    sizes = [(t.get_fontsize() * fig.dpi / 72 * min(1.0, 585 / width), t.get_text())
+             for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip()]  # fmt: skip
+    plt.close(fig)
+    assert min(sizes)[0] >= 12.0, min(sizes)
+
+
 def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
     """Review r13 00: the static figure gave fragment shading lesson 09, the clickable map
     "04, 09". The map's page keeps no lessons of its own (its stage list names none): the

@@ -4,6 +4,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import pytest  # noqa: E402
 
 from teachraster.plotting.pareto import LABEL_SPOTS, plot_pareto, spread_labels  # noqa: E402
 
@@ -173,3 +174,42 @@ def test_a_label_the_caller_moved_stays_where_it_was_put():
     fig.canvas.draw()
     assert art.labels["N=8"].get_position() == (9, -4)
     plt.close(fig)
+
+
+@pytest.mark.parametrize("worst", [100.0, 0.1], ids=["floor 10", "floor 0.01"])
+def test_a_floor_at_a_decade_sets_no_identical_limits(worst):
+    """plot_pareto turned the error axis log after drawing the floor line, its only y value:
+    with the floor at a decade (10 here; 0.01 in lesson 06's DivideCostExplorer, drawing its
+    other error measure ahead) matplotlib's log autoscale of that one value gave equal limits
+    and warned "Attempting to set identical low and high ylims" (pareto.py, line 88)."""
+    import warnings
+
+    rows = [{"variant": "exact", "c": 2.0, "error": 0.0}, {"variant": "rough", "c": 1.0,
+                                                           "error": worst}]  # fmt: skip
+    fig, ax = plt.subplots()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        art = plot_pareto(ax, rows, "c")
+        fig.canvas.draw()
+    assert art.floor == worst / 10 and ax.get_ylim() == pytest.approx((worst / 30, worst * 3))
+    plt.close(fig)
+
+
+def test_the_divide_cost_explorer_draws_its_other_measure_ahead_without_a_warning():
+    """Where the warning was seen (tests/test_frames_ahead.py): the explorer's second figure,
+    fresh, drawing the mean error, floor 0.01."""
+    import warnings
+
+    from widget_examples import _rows
+
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+
+    ex = DivideCostExplorer(_rows(), backend="image")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            ex.divide.value = 9.0
+            ex._ahead.step()  # the other measure at this price, on a figure of its own
+        assert ex._elsewhere.art.floor == pytest.approx(0.01)
+    finally:
+        ex.close()

@@ -1167,9 +1167,7 @@ def test_widget_figures_read_12_px_in_the_column_at_1024_px(make):
     with use_style("classroom"):
         widget, fig, max_height = make()
     try:
-        size, text = smallest_text_px(fig, max_height=max_height, ignore={"v1", "v2", "v3"})
-        assert size >= 12.0, (size, text)
-        # the vertex labels on the pictures (12 pt, kept small beside the pixels) read 11.8
-        assert smallest_text_px(fig, max_height=max_height)[0] >= 11.5
+        size, text = smallest_text_px(fig, max_height=max_height)
+        assert size >= 12.0, (size, text)  # r15: the comparison's v1, v2, v3 read 11.8
     finally:
         widget.close()

@@ -126,6 +126,8 @@ class PackageAnswer:
     # modules whose every function, public too, is a part of this answer's computation,
     # watched as its own module's private helpers are (r13 09-1: line_rules.diamond)
     modules: tuple[str, ...] = ()
+    # how the report names it, when its own name does not say (a lambda in a checker's table)
+    label: str | None = None
 
 
 @dataclass(frozen=True)

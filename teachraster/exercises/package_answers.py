@@ -34,6 +34,7 @@ be written alike by chance).
 
 from __future__ import annotations
 
+import dataclasses
 import dis
 import importlib
 import inspect
@@ -68,6 +69,8 @@ def _function(answer: PackageAnswer):
 
 
 def _name(answer: PackageAnswer) -> str:
+    if answer.label is not None:
+        return f"teachraster's {answer.label}"
     f = inspect.unwrap(answer.function)
     return f"teachraster's {getattr(f, '__qualname__', getattr(f, '__name__', 'function'))}"
 
@@ -147,22 +150,50 @@ def checker_modules(spec: Exercise) -> list[str]:
 
 def _checker_helpers(spec: Exercise, skip: set) -> list:
     """Every function of :func:`checker_modules` (r14 09-1: ``lines.diamond_pixels``, the
-    checker's own rule with knobs, handed in as ``line_pixels`` passed unflagged), but the
-    student's tools (the names :mod:`teachraster.exercises` exports: ``broken_frame``), the
-    ones in ``skip`` and the interrupt's transparent ones, each as a
+    checker's own rule with knobs, handed in as ``line_pixels`` passed unflagged), and every
+    function of theirs held in their tables (:func:`_held`: ``blending.OVER[1][2]``, the
+    lambda of a mistake of exercise ``over`` that is ``over_premultiplied``'s answer, passed
+    unflagged), but the student's tools (what :mod:`teachraster.exercises` exports:
+    ``broken_frame``), the ones in ``skip`` and the interrupt's transparent ones, each as a
     :class:`PackageAnswer` that says :data:`CHECKER_WORDS`."""
-    from . import __all__ as tools
+    from . import __all__ as names
+    from . import __name__ as package
 
+    tools = {inspect.unwrap(v) for v in (getattr(sys.modules[package], n, None) for n in names)
+             if callable(v)}  # fmt: skip
     out = []
     for module in dict.fromkeys(checker_modules(spec)):
         for key, value in vars(importlib.import_module(module)).items():
+            if key.startswith("__") or key in names:
+                continue
             g = inspect.unwrap(value) if callable(value) else value
-            if (isinstance(g, types.FunctionType) and g.__module__ == module
-                    and not key.startswith("__") and key not in tools and g not in skip
-                    and not is_transparent(_own_code(g))):  # fmt: skip
-                skip = skip | {g}
-                out.append(PackageAnswer(g, words=CHECKER_WORDS))
+            found = [(g, None)] if isinstance(g, types.FunctionType) else _held(value, key)
+            for h, label in found:
+                if (h.__module__ == module and h not in tools and h not in skip
+                        and not is_transparent(_own_code(h))):  # fmt: skip
+                    skip = skip | {h}
+                    named = None if label is None else f"{module.rsplit('.', 1)[-1]}.{label}"
+                    out.append(PackageAnswer(h, words=CHECKER_WORDS, label=named))
     return out
+
+
+def _held(value, path: str, depth: int = 4) -> list:
+    """The functions a checker's table holds (a list, tuple or dict of them, or of
+    :class:`~.exercise.Mistake` s and other dataclasses holding them; ``depth`` levels), each
+    with the path a student would type to reach it (``OVER[1][2]``)."""
+    if isinstance(value, types.FunctionType):
+        return [(value, path)]
+    if depth == 0 or isinstance(value, str | bytes | type):
+        return []
+    if isinstance(value, dict):
+        items = [(f"{path}[{k!r}]", v) for k, v in value.items()]
+    elif isinstance(value, list | tuple):
+        items = [(f"{path}[{k}]", v) for k, v in enumerate(value)]
+    elif dataclasses.is_dataclass(value):
+        items = [(f"{path}.{f.name}", getattr(value, f.name)) for f in dataclasses.fields(value)]
+    else:
+        return []
+    return [found for p, v in items for found in _held(v, p, depth - 1)]
 
 
 def _own_code(f):
@@ -390,6 +421,9 @@ def package_note(spec: Exercise, fn, seen) -> str | None:
     target = inspect.unwrap(fn) if callable(fn) else fn
     for answer in spec.answers:
         if target is inspect.unwrap(answer.function) and answer.when is None:
+            return _words(spec, answer, "is")
+    for answer in _module_helpers(spec):  # handed in itself, not a copy of it
+        if target is answer.function:
             return _words(spec, answer, "is")
     copy = copied(spec, fn)  # first: a pasted copy calls the module's helpers as well
     if copy is not None:

@@ -76,6 +76,11 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
     """
     short = short or (lambda name: name)
     floor = error_floor(rows, y)
+    # the scales first, on an axes with no data yet: turned log after the floor line, the
+    # autoscale saw one y value, the floor, and at a decade (10, 0.01: lesson 06's explorer)
+    # matplotlib's log limits of it came out equal ("identical low and high ylims")
+    ax.set(xscale="log" if logx else "linear", yscale="log", xlabel=xlabel, ylabel=ylabel,
+           title=title)  # fmt: skip
     points, labels = {}, {}
     for r in rows:
         (points[r["variant"]],) = ax.plot([], [], ls="none", ms=11, marker="o")
@@ -85,8 +90,6 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
     ax.axhline(floor, color="gray", ls="--", lw=1)
     exact = ax.text(0.01, floor, " 0 (exact)", transform=ax.get_yaxis_transform(),
                     va="bottom", fontsize=12, color="gray")  # fmt: skip
-    ax.set(xscale="log" if logx else "linear", yscale="log", xlabel=xlabel, ylabel=ylabel,
-           title=title)  # fmt: skip
     art = ParetoArtists(points, line, labels, floor, [], short, xlim)
     art.spreader = ax.add_artist(_LabelSpreader([labels[r["variant"]] for r in rows], [exact]))
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels

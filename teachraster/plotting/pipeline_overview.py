@@ -109,7 +109,7 @@ def _early_z_bypass(ax, names: list[str], right: float):
                             color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
     ax.add_patch(arrow)
     ax.text(right + 0.95, (top + bottom) / 2, EARLY_Z_LABEL, rotation=-90, ha="center",
-            va="center", fontsize=fs(0.7), style="italic")  # fmt: skip
+            va="center", fontsize=fs(0.8), style="italic")  # fmt: skip
     return arrow
 
 

@@ -311,17 +311,21 @@ def html_escape(text: str) -> str:
 
 
 def readable_text(axes=(), *, profile=None, texts=()) -> None:
-    """Tick labels of ``axes`` (colour bars' too), a profile's ticks, title and legend, and
-    ``texts`` at the style's font size.
+    """Tick labels of ``axes`` (colour bars' too), the labels drawn in them (v1, v2, v3), a
+    profile's ticks, title and legend, and ``texts``: at least the style's font size.
 
     A comparison figure is drawn at :data:`COMPARISON_DPI`, about 940 px wide, and shown
     shrunk to the column: 585 px at 1024 x 768 with the file browser open, where the style's
     smaller sizes (ticks 15 pt, legends 13.5) came out at 9-11 px (reviews r7 and r9, lesson
-    04's viewer and the players' comparison); at the style's 18 pt they read 12.
+    04's viewer and the players' comparison); at the style's 18 pt they read 12. The vertex
+    labels, drawn a little smaller for the full-size fill figure, read 11.8 px there (reviews
+    r13 and r15, lesson 00's player): they are raised too.
     """
     size = fs(1.0)
     for ax in [a for a in axes if a is not None]:
         ax.tick_params(labelsize=size)
+        for text in ax.texts:
+            text.set_fontsize(max(size, text.get_fontsize()))
     if profile is not None:
         profile.title.axes.tick_params(labelsize=size)
         profile.title.set_fontsize(size)
