@@ -160,6 +160,87 @@ def test_time_rows_record_the_spread_beside_the_median():
     assert calls == {"a": 5, "b": 5}  # two warm-up rounds, three timed
 
 
+def test_time_rows_time_a_part_beside_the_whole_in_the_same_rounds():
+    order = []
+    rows = [{"group": "fill", "variant": v} for v in ("halfplane 8²", "span 8²")]
+    fns = [lambda v=v: order.append(v) for v in ("h", "s")]
+    parts = [lambda v=v: order.append(v) for v in ("h0", "s0")]
+    out = bench.time_rows(rows, fns, 2, bench.Progress(1, enabled=False), "halfplane 8²",
+                          also=("coverage", parts))  # fmt: skip
+    assert order == ["h", "s", "h0", "s0"] * 4  # round-robin: part and whole share every round
+    for r in out:
+        assert 0 <= r["coverage_min_s"] <= r["coverage_median_s"] <= r["coverage_max_s"]
+        assert 0 <= r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
+
+
+def test_fill_rows_time_the_bare_coverage_beside_the_textured_fill():
+    rows = bench.bench_fill({"fill": (32,)}, 1, bench.Progress(1, enabled=False))
+    assert [r["variant"] for r in rows] == [
+        "halfplane 32²",
+        "halfplane+trace 32²",
+        "span 32²",
+        "span+trace 32²",
+    ]
+    for r in rows:
+        assert r["error"] == 0 and r["coverage_min_s"] <= r["coverage_max_s"]
+    tri = bench.fill_triangle(32)
+    assert tri.w is not None and "uv" in tri.attrs  # the whole fill interpolates uv
+
+
+def _fastest(fns, rounds=9):
+    """The fastest of ``rounds`` interleaved runs of each fn, in CPU time of this process: on a
+    busy machine the time spent waiting for a core is not counted, and what load still adds
+    (caches shared with other processes) the fastest run leaves out, so the work compares."""
+    import time
+
+    for fn in fns:  # warm up
+        fn()
+    best = [float("inf")] * len(fns)
+    for _ in range(rounds):
+        for k, fn in enumerate(fns):
+            t0 = time.process_time()
+            fn()
+            best[k] = min(best[k], time.process_time() - t0)
+    return best
+
+
+def test_numpy_per_pass_costs_lesson_06_states():
+    """Review r17 06-1..3: the signs lesson 06 states for numpy's times, on the fastest of
+    interleaved runs. Subdivided runs the exact divide's passes on its anchors and more, at
+    every N; incremental edges run a cumulative sum besides the direct products; a textured
+    fill's time is mostly the uv interpolation, coverage a small part."""
+    from teachraster.study import precision
+
+    size = 256  # the lesson's (quick) sizes
+    xy, w, uv = bench.floor_quad(size)
+    tris = [tr.Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}) for t in range(2)]
+
+    def interp(mode, n=1):
+        return lambda: [tr.rasterize(t, size, size, interpolation=mode, subdivision=n)
+                        for t in tris]  # fmt: skip
+
+    affine, exact, *subdivided = _fastest([interp("affine"), interp("perspective")]
+                                          + [interp("subdivided", n) for n in bench.SUBDIVISIONS])  # fmt: skip
+    assert all(t > exact for t in subdivided), (exact, subdivided)
+    assert affine < exact, (affine, exact)  # it saves the divide pass
+    edge_tris = bench.random_triangles(size)
+    for arith in precision.ARITHMETICS:
+        direct, incremental = _fastest(
+            [
+                lambda ev=ev, a=arith: [precision.coverage(t, size, size, a, ev) for t in edge_tris]
+                for ev in ("direct", "incremental")
+            ]
+        )
+        assert incremental > direct, arith
+    for n in (256, 512):
+        tri = bench.fill_triangle(n)
+        bare = tr.Triangle(tri.xy)
+        for method in ("halfplane", "span"):
+            whole, part = _fastest([lambda t=t, n=n, m=method: tr.rasterize(t, n, n, method=m)
+                                    for t in (tri, bare)])  # fmt: skip
+            assert part < whole / 2, (n, method, part, whole)
+
+
 def _dominated_by_the_words(r, rows, x, y):
     """FRONT_DEFINITION read literally: another row at least as cheap and at least as accurate,
     and better on one of the two."""

@@ -34,7 +34,10 @@ edge functions
 fill
     Span tables vs half-planes, with and without the trace, at two image sizes. Error:
     pixels differing from the exact coverage (all variants are exact: this group shows what
-    the algorithm and the trace cost, not what they buy in accuracy).
+    the algorithm and the trace cost, not what they buy in accuracy). The timed triangle has
+    w and uv, so each fill also interpolates uv perspective-correctly at every pixel, the
+    same work for both algorithms; ``coverage_median_s`` (and its min and max) times the
+    same fill of the bare positions, in the same rounds: the coverage alone.
 depth
     ``tr.render`` with each ``depth_format`` storing either the window depth (the hyperbola
     ``z' = n + f - fn/z`` rescaled to [0, 1]) or a depth linear in view distance, on pairs of

@@ -37,7 +37,7 @@ ERROR_MEASURE = {
 TABLE_COLUMNS = {
     "interpolation": ("mean_abs_texels", "divides_per_pixel"),
     "edge functions": ("gaps", "double_hits", "wrong_px_unsnapped_geometry"),
-    "fill": (),
+    "fill": ("coverage_median_s",),
     "depth": ("facing_wrong", "slanted_wrong", "first_inverted_z"),
 }
 COMMON_COLUMNS = (

@@ -39,16 +39,35 @@ def time_samples(fns: list[Callable[[], object]], repeat: int) -> list[list[floa
     return times
 
 
-def time_rows(rows: list[dict], fns: list, repeat: int, progress: Progress, baseline: str):
+def time_rows(
+    rows: list[dict],
+    fns: list,
+    repeat: int,
+    progress: Progress,
+    baseline: str,
+    also: tuple[str, list] | None = None,
+):
     """Time a group's variants together (:func:`time_interleaved`), then add the ratios.
 
     Each row gets the median (``time_median_s``) and the fastest and slowest run
     (``time_min_s``, ``time_max_s``): on a busy machine the spread says how far to trust it.
+    ``also = (name, fns)``, one more call per row timed in the same rounds (so load slows
+    both alike), adds ``{name}_median_s``, ``{name}_min_s`` and ``{name}_max_s``: a part of
+    the work timed beside the whole.
     """
-    for row, t in zip(rows, time_samples(fns, repeat)):
-        row.update(time_median_s=statistics.median(t), time_min_s=min(t), time_max_s=max(t))
+    name, more = also if also is not None else ("", [])
+    samples = time_samples(list(fns) + list(more), repeat)
+    for row, t in zip(rows, samples):
+        row.update(_spread("time", t))
+    for row, t in zip(rows, samples[len(fns) :]):
+        row.update(_spread(name, t))
     progress.step(f"{rows[0]['group']}: timing")
     return _ratios(rows, baseline)
+
+
+def _spread(name: str, t: list[float]) -> dict:
+    return {f"{name}_median_s": statistics.median(t), f"{name}_min_s": min(t),
+            f"{name}_max_s": max(t)}  # fmt: skip
 
 
 class Progress:
