@@ -1,0 +1,97 @@
+"""Lesson 06's stated signs of numpy's times, measured: PASS/MISS per claim, never a test.
+
+Lesson 06 (*What accuracy costs*) says which way three of numpy's times go, with the reason:
+subdivided interpolation is slower than the exact divide at every N (the same array passes
+on its anchors, and more); incremental edge evaluation is slower than direct in every
+arithmetic (a cumulative sum besides the products); a textured fill's time is mostly its uv
+interpolation, coverage a small part. Times are CPU time of this process, the fastest of
+interleaved rounds: waiting for a core is not counted (review r17 06-1..3; the study's own
+wall-clock medians move with the machine's load). Speed is a benchmark's business, not a
+test's: the suite only runs this script's smoke run (``--quick``), which checks that every
+claim is reported.
+
+    python benchmarks/bench_lesson06_signs.py            # 9 rounds at the lesson's 256 px
+    python benchmarks/bench_lesson06_signs.py --quick    # smoke run: 64 px, 2 rounds
+
+The exit status is non-zero only on errors, never on a MISS.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+import teachraster as tr  # noqa: E402
+from teachraster.study import bench, precision  # noqa: E402
+
+
+def fastest(fns, rounds: int) -> list[float]:
+    """The fastest of ``rounds`` interleaved runs of each fn, in this process's CPU time."""
+    for fn in fns:  # warm up
+        fn()
+    best = [float("inf")] * len(fns)
+    for _ in range(rounds):
+        for k, fn in enumerate(fns):
+            t0 = time.process_time()
+            fn()
+            best[k] = min(best[k], time.process_time() - t0)
+    return best
+
+
+def claims(size: int, rounds: int) -> list[tuple[str, bool, str]]:
+    """(claim, holds, the times behind it) for each sign lesson 06 states."""
+    xy, w, uv = bench.floor_quad(size)
+    tris = [tr.Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}) for t in range(2)]
+
+    def interp(mode, n=1):
+        return lambda: [tr.rasterize(t, size, size, interpolation=mode, subdivision=n)
+                        for t in tris]  # fmt: skip
+
+    affine, exact, *sub = fastest([interp("affine"), interp("perspective")]
+                                  + [interp("subdivided", n) for n in bench.SUBDIVISIONS], rounds)  # fmt: skip
+    ms = lambda s: f"{s * 1e3:.2f} ms"  # noqa: E731
+    out = [
+        ("affine faster than perspective-correct", affine < exact, f"{ms(affine)} vs {ms(exact)}")
+    ]
+    for n, t in zip(bench.SUBDIVISIONS, sub):
+        out.append(
+            (f"subdivided N={n} slower than the exact divide", t > exact, f"{ms(t)} vs {ms(exact)}")
+        )
+    edge_tris = bench.random_triangles(size)
+    for arith in precision.ARITHMETICS:
+        direct, incremental = fastest(
+            [lambda ev=ev, a=arith: [precision.coverage(t, size, size, a, ev) for t in edge_tris]
+             for ev in ("direct", "incremental")], rounds)  # fmt: skip
+        out.append((f"incremental edges slower than direct ({arith})", incremental > direct,
+                    f"{ms(incremental)} vs {ms(direct)}"))  # fmt: skip
+    for n in (size, 2 * size):
+        tri = bench.fill_triangle(n)
+        for method in ("halfplane", "span"):
+            whole, part = fastest([lambda t=t, n=n, m=method: tr.rasterize(t, n, n, method=m)
+                                   for t in (tri, tr.Triangle(tri.xy))], rounds)  # fmt: skip
+            out.append((f"coverage under half the textured fill ({method}, {n}²)",
+                        part < whole / 2, f"{ms(part)} of {ms(whole)}"))  # fmt: skip
+    return out
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="smoke run: 64 px, 2 rounds")
+    args = parser.parse_args(argv)
+    size, rounds = (64, 2) if args.quick else (256, 9)
+    rows = claims(size, rounds)
+    width = max(len(c) for c, _, _ in rows)
+    for claim, holds, times in rows:
+        print(f"{claim:<{width}}  {'PASS' if holds else 'MISS'}  {times}")
+    print(
+        f"{sum(h for _, h, _ in rows)} of {len(rows)} claims hold ({size} px, fastest of {rounds})"
+    )
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
