@@ -155,7 +155,8 @@ def test_06_edge_bits_and_depth_claims():
 
 def test_06_reads_its_times_by_what_the_timer_includes():
     """Review r17 06-1..8: the text says what numpy's timers include and states only what is
-    stable across runs (its signs, checked on fastest runs in tests/test_bench.py); every table
+    stable across runs (its signs, measured in CPU time by benchmarks/bench_lesson06_signs.py:
+    a benchmark, not a test); every table
     prints each time's spread; the fill group times coverage alone beside the textured fill."""
     import json
 
@@ -186,10 +187,13 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # 06-5, 06-6: N is the subdivision length only; the ratio printed is for N doubling
     assert "N(x)/D(x)" not in md and "P(x)/Q(x)" in md
     assert "when N halves:" not in code and "mean error at N / at N/2" in code
-    # 06-7: the Try it asks what cell 27 has not answered (N = 16 never costs half: the
-    # closed forms 1 + (d + 9)/16 < (d + 5)/2 at every d > 0)
-    assert "explain why the front keeps its order" not in md
-    assert "costs half of what" in md and all(ns.quake_share[d] < 0.5 for d in ns.quake_share)
+    # 06-7 (r17, r19): the Try it asks nothing the lesson printed above it (r19: "N = 16 costs
+    # half?" was printed by the slider's cell): it sends the student to the full study and to
+    # the CPU-time benchmark of the same signs
+    assert "explain why the front keeps its order" not in md and "costs half of what" not in md
+    assert "bench_lesson06_signs.py" in md and all(ns.quake_share[d] < 0.5 for d in ns.quake_share)
+    # r19: the timer is wall-clock, and subdivided's per-pixel division is said
+    assert "wall-clock" in md and "a division by the piece's length" in md
     # r17 cell 23: why linear depth's crossing is a vertical line
     assert "reaches the facing triangle's depth on one vertical line" in md
 

@@ -364,10 +364,12 @@ def subdivided(
     index = np.arange(n)
     offset = index - first[span]  # position along the span
     anchor = (offset % step == 0) | (index == last[span])
-    exact = blend(perspective_weights(lam[anchor], w), values)  # the only divides
+    exact = blend(perspective_weights(lam[anchor], w), values)  # the only divides by w
     slot = np.cumsum(anchor) - 1  # where each anchor's value sits in `exact`
     a0 = first[span] + (offset // step) * step
     a1 = np.minimum(a0 + step, last[span])
+    # the place between the anchors: a divide per pixel here, a step (t += 1/N) in a scalar
+    # rasteriser; numpy pays per pass either way
     t = np.where(a1 > a0, (index - a0) / np.maximum(a1 - a0, 1), 0.0)
     f0, f1 = exact[slot[a0]], exact[slot[a1]]
     t = t.reshape(-1, *([1] * (f0.ndim - 1)))
