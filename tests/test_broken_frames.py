@@ -812,13 +812,15 @@ def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
                     "six causes", "each of the causes", "different causes"):  # fmt: skip
         assert promise not in text, promise
     # what the figure cell prints, run on the frames: the count and the look-alike groups
-    import matplotlib
+    import types
 
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    # the cell's plt with a silent show: under another test's backend (ipympl, in the same
+    # worker) plt.show() printed the canvas' repr into what the cell prints
+    quiet = types.SimpleNamespace(subplots=plt.subplots, show=lambda *a, **k: None)
     broken = {b.number: b for b in bf.broken_frames()}
-    exec(cells["frames_figure"], {"broken": broken, "np": np, "plt": plt})
+    exec(cells["frames_figure"], {"broken": broken, "np": np, "plt": quiet})
     plt.close("all")
     printed = capsys.readouterr().out
     assert printed == (f"{len(ANSWERS)} frames; alike pixel for pixel, rendered and intended: "
