@@ -267,9 +267,10 @@ def _close_all_tabs(page, base: str) -> bool:
             # clean close, twice per notebook run (2 s of each of a run's 27 notebooks).
             page.wait_for_function(_CLOSED_OR_ASKING, timeout=MENU_MS)
             dialog = page.query_selector(".jp-Dialog")
-            if dialog is None:
-                break
-            dialog.query_selector("button:has-text('Discard')").click(timeout=MENU_MS)
+            discard = dialog and dialog.query_selector("button:has-text('Discard')")
+            if not discard:
+                break  # every tab closed; or a dialog of another kind: checked below
+            discard.click(timeout=MENU_MS)
             dialog.wait_for_element_state("hidden", timeout=MENU_MS)  # gone (or detached)
     except Error:
         pass  # a menu or dialog did not answer: checked below
