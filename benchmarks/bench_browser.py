@@ -607,8 +607,9 @@ def main(argv=None) -> int:
         shutil.rmtree(work, ignore_errors=True)
     rows = make_rows(specs, r)
     end = os.getloadavg()
-    print(f"\nteachraster in JupyterLab + headless Chromium, 1400x900, {started}; {tries} tries "
-          f"per latency ({reps} per explorable or control, {max(1, reps // 2)} drags each); "
+    print(f"\nteachraster in JupyterLab + headless Chromium, 1400x900, {started}; {tries} "
+          f"{'try' if tries == 1 else 'tries'} per latency ({reps} per explorable or control, "
+          f"{max(1, reps // 2)} drags each); "
           f"load average {load[0]:.1f} at the start, {end[0]:.1f} at the end; "
           f"rt = {r:.1f} ms\n")  # fmt: skip
     print(table.markdown(rows, r))
