@@ -197,10 +197,10 @@ NOT_SHOWN = """() => [...document.querySelectorAll('.jp-Notebook .jp-CodeCell')]
         .querySelector('.jp-OutputArea-output.lm-Panel > .lm-Widget'))"""
 
 
-def _resize(tab, size: str) -> None:
-    """Lay the page out at ``size``. The zoom's override lasts as long as the DevTools
-    session that set it (it ends with the session): the session is kept on the page until the
-    next size."""
+def _resize(tab, size: str, redrawn: bool = True) -> None:
+    """Lay the page out at ``size`` (and, with ``redrawn``, give the widgets that follow their
+    width the time to redraw). The zoom's override lasts as long as the DevTools session that
+    set it (it ends with the session): the session is kept on the page until the next size."""
     width, height, scale = SIZES[size]
     zoom = getattr(tab, "_tr_zoom", None)
     if zoom is not None:
@@ -211,7 +211,8 @@ def _resize(tab, size: str) -> None:
         tab._tr_zoom = tab.context.new_cdp_session(tab)
         tab._tr_zoom.send("Emulation.setDeviceMetricsOverride", {
             "width": width, "height": height, "deviceScaleFactor": scale, "mobile": False})  # fmt: skip
-    tab.wait_for_timeout(1500)  # widgets that follow their width redraw (ResizeObserver)
+    if redrawn:
+        tab.wait_for_timeout(1500)  # widgets that follow their width redraw (ResizeObserver)
 
 
 def _measure(tab, base: str, app: str) -> dict:
@@ -231,8 +232,8 @@ def _measure(tab, base: str, app: str) -> dict:
             _resize(tab, size)
             found[size] = dict(zip([n for n, _ in WIDGETS],
                                    tab.evaluate(MEASURE, [READABLE]), strict=True))  # fmt: skip
-    finally:
-        _resize(tab, "1400x900")
+    finally:  # the page back to its size; nothing is measured after it, so no redraw awaited
+        _resize(tab, "1400x900", redrawn=False)
     return found
 
 

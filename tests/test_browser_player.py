@@ -33,7 +33,10 @@ def _run(tab, base: str, cells, name: str, app: str = "lab/tree") -> None:
     every cell run."""
     tab.set_viewport_size({"width": 1400, "height": 900})
     open_cells(tab, base, cells, name, app=app)
-    tab.wait_for_timeout(2000)  # the kernel is up
+    if app == "lab/tree":  # the kernel is up: JupyterLab's status bar says so
+        tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    else:  # Notebook 7 has no status bar
+        tab.wait_for_timeout(2000)
     tab.keyboard.press("Escape")
     tab.click(".lm-MenuBar-itemLabel:text-is('Run')")
     tab.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
