@@ -272,6 +272,50 @@ def test_a_glow_is_lost_by_dividing_by_alpha(guard):
     assert ex.check("over_premultiplied", over_pm).passed
 
 
+def test_a_glow_skipped_for_its_alpha_is_told_its_answer_not_a_division():
+    """r18 D-1: ``if src[3] == 0: return dst`` (the engine habit "alpha 0 draws nothing") was
+    told it had divided by alpha to reuse 9.2a; it divided by nothing."""
+
+    def skipped(s, d):
+        return np.asarray(d, float) if s[3] == 0 else over_pm(s, d)
+
+    first = _first("over_premultiplied", skipped)
+    assert first.kind == "glow lost", (first.kind, first.explanation)
+    assert "your answer is the destination unchanged" in first.explanation, first.explanation
+    assert "skipped for its alpha alone" in first.explanation, first.explanation
+    assert "dividing by alpha" not in first.explanation, first.explanation
+
+
+def _premultiplied(colour):
+    return lambda s, d: np.asarray(colour(np.asarray(s, float), np.asarray(d, float)), float)
+
+
+#: r18 D-2: 9.2b's answers that got COMMON's straight-alpha words ("the source alpha weighs
+#: the source"; doing what they said gave "premultiplied twice"): each named, in words true
+#: of premultiplied colours.
+PREMULTIPLIED_COMMON = [
+    (lambda s, d: d, "destination unchanged", "adds its light"),
+    (lambda s, d: s, "source unchanged", "the destination still shows"),
+    (lambda s, d: s * d[3] + d * (1 - d[3]), "destination alpha", "no alpha weighs the source"),
+    (lambda s, d: s * (1 - s[3]) + d * s[3], "weights swapped", "no alpha weighs the source"),
+    (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), s[3]], "kept source alpha",
+     "multiplied the source colour by its alpha again"),
+    (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), d[3]], "kept destination alpha",
+     "multiplied the source colour by its alpha again"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind", "words"), PREMULTIPLIED_COMMON, ids=[k for _, k, _ in PREMULTIPLIED_COMMON]
+)
+def test_9_2b_common_mistakes_get_premultiplied_words(fn, kind, words):
+    first = _first("over_premultiplied", _premultiplied(fn))
+    assert first.kind == kind and words in first.explanation, (first.kind, first.explanation)
+    for straight in ("weighted by its alpha", "the source alpha weighs the source",
+                     "instead of the source alpha"):  # fmt: skip
+        assert straight not in first.explanation, first.explanation
+
+
 def test_both_alphas_zero_is_a_case_and_a_nan_there_is_explained():
     cases = {label: args for label, args, _ in ex.blending.blend_cases("from straight")}
     assert cases["both transparent"][0][3] == 0 == cases["both transparent"][1][3]
