@@ -241,6 +241,23 @@ def test_9_2a_reused_on_premultiplied_inputs_is_named():
     assert "9.2a's over_straight" in first.explanation
 
 
+def test_9_2a_gl_habit_divided_by_alpha_is_named():
+    """r18 D-3: the destination weighted by (1 − α_s) alone, then divided by the right α as
+    the task says, got the rule restated; only the undivided form was named."""
+
+    def gl_divided(s, d):
+        a = s[3] + d[3] * (1 - s[3])
+        if a == 0:
+            return (0.0, 0.0, 0.0, 0.0)
+        c = (np.asarray(s[:3]) * s[3] + np.asarray(d[:3]) * (1 - s[3])) / a
+        return (*c, a)
+
+    first = _first("over_straight", gl_divided)
+    assert first.kind == "destination alpha ignored", (first.kind, first.explanation)
+    assert "you divided by it" in first.explanation, first.explanation
+    assert "then divided by α" not in first.explanation, first.explanation
+
+
 def test_the_destination_weighted_by_its_own_alpha_is_named():
     first = _first("over_premultiplied", lambda s, d: np.asarray(s) + np.asarray(d) * (1 - d[3]))
     assert first.kind == "destination's own alpha", first.explanation

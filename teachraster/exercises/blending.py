@@ -308,6 +308,12 @@ STRAIGHT = [
      "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
      "only in α_d of that share, and the sum is then divided by α",
      lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), s[3] + d[3] * (1 - s[3])]),
+    # r18 D-3: the same GL habit with the task's division by α, the likelier form
+    ("destination alpha ignored", "your alpha is right and you divided by it, but you weighted "
+     "the destination's colour by (1 − α_s) alone, as GL's straight blend does: a translucent "
+     "destination shows only in α_d of that share, so its light is C_d·α_d·(1 − α_s)",
+     lambda s, d: _divided(np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]),
+                                 s[3] + d[3] * (1 - s[3])])),
     ("weights swapped", "you swapped the weights of over: the source counts in its own share "
      "α_s of the pixel, not in the 1 − α_s it leaves uncovered, and the destination in α_d of "
      "that uncovered share", lambda s, d: _divided(np.r_[
