@@ -180,6 +180,34 @@ def test_a_closed_diamond_is_named():
     assert "closed diamond" in first.kind and "includes its boundary" in first.explanation
 
 
+def test_every_line_case_has_its_end_points_on_the_eighth_pixel_grid():
+    """r18 D-4: the task says the check's end points are on the 1/8-pixel grid inside the
+    12 × 12 image (the argument that a concrete ε is small enough rests on it); three named
+    cases were decimals such as (2.2, 2.3) → (2.9, 2.6)."""
+    from teachraster.exercises import lines
+
+    for label, (p0, p1), _ in lines.line_cases():
+        for v in (*p0, *p1):
+            assert v * 8 == int(v * 8) and 0 <= v <= 12, (label, p0, p1)
+    task = " ".join(_nb_cells()["line_pixels_task"].split())
+    assert "end points on the 1/8-pixel grid" in task, task
+
+
+def test_the_line_figure_says_which_axis_is_x_and_which_is_row():
+    """r18 D-9: the trap is (row, col) against (x, y), and the axes had no labels."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("line_pixels", sv.line_bresenham_textbook, budget=60)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.failures[0].draw(ax)
+    xlabel, ylabel = ax.get_xlabel(), ax.get_ylabel()
+    plt.close(fig)
+    assert xlabel == "x = col" and ylabel.startswith("y = row") and "down" in ylabel
+
+
 def test_the_failing_line_figure_has_a_key_the_diamonds_and_two_kinds_of_end():
     """r9 09-4: no key, no diamonds, p0 and p1 the same black dot."""
     import matplotlib
