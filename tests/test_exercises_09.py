@@ -1088,7 +1088,32 @@ def test_the_read_past_figure_crosses_out_the_layers_read_behind_the_opaque_one(
     crosses = [line for line in ax.get_lines() if len(line.get_xdata()) == 4]
     plt.close(fig)
     got = failure.got
-    assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque == len(crosses) > 0
+    # r18 D-8: the one layer fetched past the opaque one is allowed: labelled so, not crossed
+    assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque - 1 == len(crosses)
+    assert len(crosses) > 0 and labels[got.opaque].endswith("\nallowed"), labels
+    assert labels[-1] == "yours", labels  # on the line of the others
+
+
+def test_a_loop_that_stops_late_is_not_told_it_ran_from_the_farthest_layer():
+    """r18 D-8: a loop reading two layers past the opaque one (5 of 6) was told that a loop
+    from the farthest layer, or one that never stops, must read them all."""
+
+    def two_past(layers):
+        acc, late = np.zeros(4), 0
+        for layer in layers:
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+            late += acc[3] >= 1
+            if late == 3:  # two layers past the opaque one
+                break
+        return acc
+
+    report = ex.check("front_to_back", two_past)
+    late = [f for f in report.failures if f.kind == "read behind the opaque layer"]
+    # where it read them all (3 of 3), the words say which loops read them all, and that one
+    # layer past the opaque one is allowed; where it stopped, that it stopped
+    stopped = [f for f in late if "Your loop stopped" in f.explanation]
+    assert stopped and all("farthest layer" not in f.explanation for f in stopped), str(report)
+    assert all("allowed" in f.explanation or "no more" in f.explanation for f in late)
 
 
 def test_pixels_outside_the_image_fail_and_are_named():
