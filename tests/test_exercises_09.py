@@ -1205,3 +1205,27 @@ def test_9_2b_shares_9_2s_one_point_with_9_2a():
     task = " ".join(_nb_cells()["over_premultiplied_task"].split())
     assert "shares 9.2's point with 9.2a" in task and "lesson 12 §9 states" in task, task
     assert "half for 9.2a and half for 9.2b" in " ".join(_nb_cells()["over_straight_task"].split())
+
+
+def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
+    """r18 D-7: 9.2a's text stated each weight ("the destination shows only in the share
+    1 − α_s the source leaves uncovered, where it covers α_d of it") and answered its own
+    "find them" ("there nothing covers the pixel"). It now gives Porter and Duff's two
+    assumptions (alpha is coverage, the coverages are uncorrelated: D-10) and asks for the
+    shares step by step; 9.3 says what real ray marchers stop at (D-10)."""
+    task = " ".join(_nb_cells()["over_straight_task"].split())
+    assert "uncorrelated" in task and "1. In what share of the pixel" in task, task
+    for answer in (
+        "where it covers α_d of it",
+        "α_d of the",
+        "each colour in the share of the",
+        "there nothing covers the pixel",
+        "α_d·(1 − α_s)",
+        "(1 − α_s)·α_d",
+    ):
+        assert answer not in task, answer
+    assert "find them, and what they mean for the pixel" in task, task
+    step = " ".join(_nb_cells()["over_premultiplied_task"].split())
+    assert "step 2 of 9.2a" in step and "see what is left of each weight" in step, step
+    walk = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "threshold just below 1" in walk and "asks for exactly 1" in walk, walk
