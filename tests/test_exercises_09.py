@@ -1229,3 +1229,17 @@ def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
     assert "step 2 of 9.2a" in step and "see what is left of each weight" in step, step
     walk = " ".join(_nb_cells()["front_to_back_task"].split())
     assert "threshold just below 1" in walk and "asks for exactly 1" in walk, walk
+
+
+def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
+    """r18 D-5: the private ``_porter_duff`` handed to 9.2a was called "a part of
+    from_straight's own computation"; from_straight never calls it, straight_over does."""
+    from teachraster.exercises import blending
+
+    def porter_duff(s, d):
+        colour, a = blending._porter_duff(np.asarray(s, float), np.asarray(d, float))
+        return np.r_[colour, a]
+
+    report = ex.check("over_straight", porter_duff, budget=60)
+    assert not report.passed and report.package, str(report)
+    assert "a part of straight_over's own computation" in report.package, report.package
