@@ -142,7 +142,23 @@ def test_p1_tested_before_moving_is_named_and_never_called_eps_in_y():
     """r9 09-3: "p1 in its diamond" with the unmoved p1 was told "you moved y by −ε"."""
     first = _first("line_pixels", _line_knobs(end_unmoved=True))
     assert first.kind == "end tested before moving", first.explanation
-    assert "before moving it" in first.explanation and "−ε, as much as x" not in first.explanation
+    assert "with p1 unmoved" in first.explanation and "−ε, as much as x" not in first.explanation
+
+
+def test_p1_never_moved_is_not_told_it_was_moved_for_the_segment():
+    """r18 D-6: a line moving p0 alone (p1 unmoved in the segment and in the end test) was
+    told "move p1 ... for that test as well, as for the rest of the segment"."""
+
+    def p0_only(p0, p1):
+        p1 = (Fraction(p1[0]) + EPS, Fraction(p1[1]) + EPS * EPS)  # undoes the move of p1
+        return line_with(-EPS, -EPS * EPS)(p0, p1)
+
+    report = ex.check("line_pixels", p0_only, budget=60)
+    assert not report.passed, str(report)
+    first = report.failures[0]
+    assert first.kind.startswith("end tested before moving"), (first.kind, first.explanation)
+    assert "as for the rest of the segment" not in first.explanation, first.explanation
+    assert "with p1 unmoved" in first.explanation, first.explanation
 
 
 def test_a_mistake_is_named_only_where_it_gives_every_failing_answer():

@@ -287,15 +287,17 @@ def _end_lit(a, e, g):
 
 
 def _end_unmoved(a, e, g):
-    return (f"you tested which diamond p1 = {a[1]} lies in before moving it: move p1 by "
-            "(−ε, −ε²) for that test as well, as for the rest of the segment (on a tie the "
-            "moved p1 lies in another diamond, or in none)")  # fmt: skip
+    # r18 D-6: "as for the rest of the segment" told a student who never moved p1 that they
+    # had; moving p1 for the end test alone is enough, so the words say only that
+    return (f"you tested which diamond p1 = {a[1]} lies in with p1 unmoved: the rule moves "
+            "p1 by (−ε, −ε²) for that test too, as it moves p0 (on a tie the moved p1 lies in "
+            "another diamond, or in none)")  # fmt: skip
 
 
 def _end_unmoved_closed(a, e, g):
-    return (f"you tested which diamond p1 = {a[1]} lies in before moving it, and counted the "
-            "diamond's boundary in (≤ ½): move p1 by (−ε, −ε²) for that test as well, and "
-            "keep the diamond open (< ½), as for the rest of the segment")  # fmt: skip
+    return (f"you tested which diamond p1 = {a[1]} lies in with p1 unmoved, and counted the "
+            "diamond's boundary in (≤ ½): the rule moves p1 by (−ε, −ε²) for that test too, "
+            "as it moves p0, and its diamonds are open (< ½)")  # fmt: skip
 
 
 def _start_diamond_dark(a, e, g):
