@@ -930,7 +930,7 @@ WRONG = {
     "premultiplied, weights swapped": (
         "over_premultiplied",
         premultiplied_weights_swapped,
-        "weight 1 − α",
+        "weighted the source by 1 − α_s",  # r18 D-2: premultiplied words, not COMMON's
     ),  # fmt: skip
     # span (issue 30)
     "span at pixel corners": (

@@ -142,7 +142,23 @@ def test_p1_tested_before_moving_is_named_and_never_called_eps_in_y():
     """r9 09-3: "p1 in its diamond" with the unmoved p1 was told "you moved y by −ε"."""
     first = _first("line_pixels", _line_knobs(end_unmoved=True))
     assert first.kind == "end tested before moving", first.explanation
-    assert "before moving it" in first.explanation and "−ε, as much as x" not in first.explanation
+    assert "with p1 unmoved" in first.explanation and "−ε, as much as x" not in first.explanation
+
+
+def test_p1_never_moved_is_not_told_it_was_moved_for_the_segment():
+    """r18 D-6: a line moving p0 alone (p1 unmoved in the segment and in the end test) was
+    told "move p1 ... for that test as well, as for the rest of the segment"."""
+
+    def p0_only(p0, p1):
+        p1 = (Fraction(p1[0]) + EPS, Fraction(p1[1]) + EPS * EPS)  # undoes the move of p1
+        return line_with(-EPS, -EPS * EPS)(p0, p1)
+
+    report = ex.check("line_pixels", p0_only, budget=60)
+    assert not report.passed, str(report)
+    first = report.failures[0]
+    assert first.kind.startswith("end tested before moving"), (first.kind, first.explanation)
+    assert "as for the rest of the segment" not in first.explanation, first.explanation
+    assert "with p1 unmoved" in first.explanation, first.explanation
 
 
 def test_a_mistake_is_named_only_where_it_gives_every_failing_answer():
@@ -178,6 +194,34 @@ def test_a_closed_diamond_is_named():
 
     first = _first("line_pixels", lambda p0, p1: diamond_pixels(p0, p1, eps=(0, 0), closed=True))
     assert "closed diamond" in first.kind and "includes its boundary" in first.explanation
+
+
+def test_every_line_case_has_its_end_points_on_the_eighth_pixel_grid():
+    """r18 D-4: the task says the check's end points are on the 1/8-pixel grid inside the
+    12 × 12 image (the argument that a concrete ε is small enough rests on it); three named
+    cases were decimals such as (2.2, 2.3) → (2.9, 2.6)."""
+    from teachraster.exercises import lines
+
+    for label, (p0, p1), _ in lines.line_cases():
+        for v in (*p0, *p1):
+            assert v * 8 == int(v * 8) and 0 <= v <= 12, (label, p0, p1)
+    task = " ".join(_nb_cells()["line_pixels_task"].split())
+    assert "end points on the 1/8-pixel grid" in task, task
+
+
+def test_the_line_figure_says_which_axis_is_x_and_which_is_row():
+    """r18 D-9: the trap is (row, col) against (x, y), and the axes had no labels."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("line_pixels", sv.line_bresenham_textbook, budget=60)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.failures[0].draw(ax)
+    xlabel, ylabel = ax.get_xlabel(), ax.get_ylabel()
+    plt.close(fig)
+    assert xlabel == "x = col" and ylabel.startswith("y = row") and "down" in ylabel
 
 
 def test_the_failing_line_figure_has_a_key_the_diamonds_and_two_kinds_of_end():
@@ -241,6 +285,23 @@ def test_9_2a_reused_on_premultiplied_inputs_is_named():
     assert "9.2a's over_straight" in first.explanation
 
 
+def test_9_2a_gl_habit_divided_by_alpha_is_named():
+    """r18 D-3: the destination weighted by (1 − α_s) alone, then divided by the right α as
+    the task says, got the rule restated; only the undivided form was named."""
+
+    def gl_divided(s, d):
+        a = s[3] + d[3] * (1 - s[3])
+        if a == 0:
+            return (0.0, 0.0, 0.0, 0.0)
+        c = (np.asarray(s[:3]) * s[3] + np.asarray(d[:3]) * (1 - s[3])) / a
+        return (*c, a)
+
+    first = _first("over_straight", gl_divided)
+    assert first.kind == "destination alpha ignored", (first.kind, first.explanation)
+    assert "you divided by it" in first.explanation, first.explanation
+    assert "then divided by α" not in first.explanation, first.explanation
+
+
 def test_the_destination_weighted_by_its_own_alpha_is_named():
     first = _first("over_premultiplied", lambda s, d: np.asarray(s) + np.asarray(d) * (1 - d[3]))
     assert first.kind == "destination's own alpha", first.explanation
@@ -270,6 +331,50 @@ def test_a_glow_is_lost_by_dividing_by_alpha(guard):
     others = {f.kind for f in report.failures} - {"glow lost"}
     assert others == (set() if guard else {"divided by alpha"}), str(report)
     assert ex.check("over_premultiplied", over_pm).passed
+
+
+def test_a_glow_skipped_for_its_alpha_is_told_its_answer_not_a_division():
+    """r18 D-1: ``if src[3] == 0: return dst`` (the engine habit "alpha 0 draws nothing") was
+    told it had divided by alpha to reuse 9.2a; it divided by nothing."""
+
+    def skipped(s, d):
+        return np.asarray(d, float) if s[3] == 0 else over_pm(s, d)
+
+    first = _first("over_premultiplied", skipped)
+    assert first.kind == "glow lost", (first.kind, first.explanation)
+    assert "your answer is the destination unchanged" in first.explanation, first.explanation
+    assert "skipped for its alpha alone" in first.explanation, first.explanation
+    assert "dividing by alpha" not in first.explanation, first.explanation
+
+
+def _premultiplied(colour):
+    return lambda s, d: np.asarray(colour(np.asarray(s, float), np.asarray(d, float)), float)
+
+
+#: r18 D-2: 9.2b's answers that got COMMON's straight-alpha words ("the source alpha weighs
+#: the source"; doing what they said gave "premultiplied twice"): each named, in words true
+#: of premultiplied colours.
+PREMULTIPLIED_COMMON = [
+    (lambda s, d: d, "destination unchanged", "adds its light"),
+    (lambda s, d: s, "source unchanged", "the destination still shows"),
+    (lambda s, d: s * d[3] + d * (1 - d[3]), "destination alpha", "no alpha weighs the source"),
+    (lambda s, d: s * (1 - s[3]) + d * s[3], "weights swapped", "no alpha weighs the source"),
+    (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), s[3]], "kept source alpha",
+     "multiplied the source colour by its alpha again"),
+    (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), d[3]], "kept destination alpha",
+     "multiplied the source colour by its alpha again"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("fn", "kind", "words"), PREMULTIPLIED_COMMON, ids=[k for _, k, _ in PREMULTIPLIED_COMMON]
+)
+def test_9_2b_common_mistakes_get_premultiplied_words(fn, kind, words):
+    first = _first("over_premultiplied", _premultiplied(fn))
+    assert first.kind == kind and words in first.explanation, (first.kind, first.explanation)
+    for straight in ("weighted by its alpha", "the source alpha weighs the source",
+                     "instead of the source alpha"):  # fmt: skip
+        assert straight not in first.explanation, first.explanation
 
 
 def test_both_alphas_zero_is_a_case_and_a_nan_there_is_explained():
@@ -999,7 +1104,32 @@ def test_the_read_past_figure_crosses_out_the_layers_read_behind_the_opaque_one(
     crosses = [line for line in ax.get_lines() if len(line.get_xdata()) == 4]
     plt.close(fig)
     got = failure.got
-    assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque == len(crosses) > 0
+    # r18 D-8: the one layer fetched past the opaque one is allowed: labelled so, not crossed
+    assert sum(t.endswith("\nread") for t in labels) == got.read - got.opaque - 1 == len(crosses)
+    assert len(crosses) > 0 and labels[got.opaque].endswith("\nallowed"), labels
+    assert labels[-1] == "yours", labels  # on the line of the others
+
+
+def test_a_loop_that_stops_late_is_not_told_it_ran_from_the_farthest_layer():
+    """r18 D-8: a loop reading two layers past the opaque one (5 of 6) was told that a loop
+    from the farthest layer, or one that never stops, must read them all."""
+
+    def two_past(layers):
+        acc, late = np.zeros(4), 0
+        for layer in layers:
+            acc = acc + (1 - acc[3]) * np.asarray(layer, float)
+            late += acc[3] >= 1
+            if late == 3:  # two layers past the opaque one
+                break
+        return acc
+
+    report = ex.check("front_to_back", two_past)
+    late = [f for f in report.failures if f.kind == "read behind the opaque layer"]
+    # where it read them all (3 of 3), the words say which loops read them all, and that one
+    # layer past the opaque one is allowed; where it stopped, that it stopped
+    stopped = [f for f in late if "Your loop stopped" in f.explanation]
+    assert stopped and all("farthest layer" not in f.explanation for f in stopped), str(report)
+    assert all("allowed" in f.explanation or "no more" in f.explanation for f in late)
 
 
 def test_pixels_outside_the_image_fail_and_are_named():
@@ -1091,3 +1221,41 @@ def test_9_2b_shares_9_2s_one_point_with_9_2a():
     task = " ".join(_nb_cells()["over_premultiplied_task"].split())
     assert "shares 9.2's point with 9.2a" in task and "lesson 12 §9 states" in task, task
     assert "half for 9.2a and half for 9.2b" in " ".join(_nb_cells()["over_straight_task"].split())
+
+
+def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
+    """r18 D-7: 9.2a's text stated each weight ("the destination shows only in the share
+    1 − α_s the source leaves uncovered, where it covers α_d of it") and answered its own
+    "find them" ("there nothing covers the pixel"). It now gives Porter and Duff's two
+    assumptions (alpha is coverage, the coverages are uncorrelated: D-10) and asks for the
+    shares step by step; 9.3 says what real ray marchers stop at (D-10)."""
+    task = " ".join(_nb_cells()["over_straight_task"].split())
+    assert "uncorrelated" in task and "1. In what share of the pixel" in task, task
+    for answer in (
+        "where it covers α_d of it",
+        "α_d of the",
+        "each colour in the share of the",
+        "there nothing covers the pixel",
+        "α_d·(1 − α_s)",
+        "(1 − α_s)·α_d",
+    ):
+        assert answer not in task, answer
+    assert "find them, and what they mean for the pixel" in task, task
+    step = " ".join(_nb_cells()["over_premultiplied_task"].split())
+    assert "step 2 of 9.2a" in step and "see what is left of each weight" in step, step
+    walk = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "threshold just below 1" in walk and "asks for exactly 1" in walk, walk
+
+
+def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
+    """r18 D-5: the private ``_porter_duff`` handed to 9.2a was called "a part of
+    from_straight's own computation"; from_straight never calls it, straight_over does."""
+    from teachraster.exercises import blending
+
+    def porter_duff(s, d):
+        colour, a = blending._porter_duff(np.asarray(s, float), np.asarray(d, float))
+        return np.r_[colour, a]
+
+    report = ex.check("over_straight", porter_duff, budget=60)
+    assert not report.passed and report.package, str(report)
+    assert "a part of straight_over's own computation" in report.package, report.package

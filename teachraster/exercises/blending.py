@@ -169,6 +169,31 @@ COMMON = [
     ("kept destination alpha", "the alpha channel blends too: the result's alpha is not the "
      "destination's", lambda s, d: _colour_only(s, d, d[3])),
 ]  # fmt: skip
+#: COMMON's outputs with words true of premultiplied colours (r18 D-2: COMMON's "the source
+#: alpha weighs the source" is the straight rule, and following it on premultiplied colours
+#: gives "premultiplied twice"). A premultiplied colour carries its coverage already: no alpha
+#: weighs the source again, and the destination shows where the source leaves it uncovered.
+_CARRIES = "a premultiplied colour already carries its alpha (c = α·C)"
+COMMON_PREMULTIPLIED = [
+    ("destination unchanged", "that is the destination unchanged: the source covers its share "
+     "α_s of the pixel, hiding that much of the destination, and adds its light, which a "
+     "premultiplied colour already carries, multiplied by its alpha (c = α·C)", COMMON[0][2]),
+    ("source unchanged", "that is the source unchanged: it covers only its share α_s of the "
+     "pixel, and in the rest, 1 − α_s, the destination still shows",
+     COMMON[1][2]),
+    ("destination alpha", "you weighted the source by the destination's alpha and the "
+     f"destination by 1 − its own alpha: {_CARRIES}, so no alpha weighs the source again, and "
+     "what shows of the destination is what the source leaves uncovered", COMMON[2][2]),
+    ("weights swapped", "you weighted the source by 1 − α_s and the destination by α_s: "
+     f"{_CARRIES}, so no alpha weighs the source again, and the destination shows in the "
+     "share the source leaves uncovered, not in the share it covers", COMMON[3][2]),
+    ("kept source alpha", "you multiplied the source colour by its alpha again and kept the "
+     f"source's alpha: {_CARRIES}, and the alpha channel blends like the colours",
+     COMMON[4][2]),
+    ("kept destination alpha", "you multiplied the source colour by its alpha again and kept "
+     f"the destination's alpha: {_CARRIES}, and the alpha channel blends like the colours",
+     COMMON[5][2]),
+]  # fmt: skip
 OVER = [
     ("destination not scaled", "the destination was not scaled by (1 − α)",
      lambda s, d: _scaled(s, d, s[3], 1)),
@@ -283,6 +308,12 @@ STRAIGHT = [
      "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
      "only in α_d of that share, and the sum is then divided by α",
      lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), s[3] + d[3] * (1 - s[3])]),
+    # r18 D-3: the same GL habit with the task's division by α, the likelier form
+    ("destination alpha ignored", "your alpha is right and you divided by it, but you weighted "
+     "the destination's colour by (1 − α_s) alone, as GL's straight blend does: a translucent "
+     "destination shows only in α_d of that share, so its light is C_d·α_d·(1 − α_s)",
+     lambda s, d: _divided(np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]),
+                                 s[3] + d[3] * (1 - s[3])])),
     ("weights swapped", "you swapped the weights of over: the source counts in its own share "
      "α_s of the pixel, not in the 1 − α_s it leaves uncovered, and the destination in α_d of "
      "that uncovered share", lambda s, d: _divided(np.r_[
@@ -421,10 +452,22 @@ def _zero_divided(args, expected, got) -> bool:
 
 
 def _glow_words(args, expected, got) -> str:
+    """A NaN at the glow: only a division by its alpha 0 gives one."""
     return (f"src {vec(args[0])} is a glow: premultiplied light with alpha 0, covering nothing. "
             "No straight colour holds it, so dividing by alpha (to reuse 9.2a on straight "
-            "colours) loses its light or divides by zero; blended premultiplied, as it is, "
-            "its light adds to the destination")  # fmt: skip
+            "colours) divides by zero; blended premultiplied, as it is, its light adds to the "
+            "destination")  # fmt: skip
+
+
+def _glow_skipped_words(args, expected, got) -> str:
+    """The destination unchanged at the glow, matched by the answer, not the route (r18 D-1:
+    a student who skipped a source with alpha 0 was told they had divided by alpha)."""
+    return (f"your answer is the destination unchanged, as if src {vec(args[0])} were not "
+            "there; it is a glow: premultiplied light with alpha 0, covering nothing but adding "
+            "its light to the destination. A premultiplied source with alpha 0 draws nothing "
+            "only when its red, green and blue are 0 too, so it cannot be skipped for its "
+            "alpha alone (nor divided by that alpha to reuse 9.2a, which loses its light the "
+            "same way)")  # fmt: skip
 
 
 def _mistakes(mode: str) -> list[Mistake]:
@@ -443,7 +486,7 @@ def _mistakes(mode: str) -> list[Mistake]:
                       "answer needs no division)", fits=_divided_by_zero)  # fmt: skip
         table = [Mistake(k, w, gives=g) for k, w, g in FROM_STRAIGHT + [swapped]]
         return [nan, *table, *_alpha_mistakes(from_straight)]
-    table = (OVER if mode == "over" else PREMULTIPLIED) + COMMON
+    table = OVER + COMMON if mode == "over" else PREMULTIPLIED + COMMON_PREMULTIPLIED
     factors = BLEND_MODES[mode]
     swapped = ("arguments swapped", "you blended dst over src: the first argument, src, is "
                "the incoming fragment, the second, dst, what the buffer holds",
@@ -454,7 +497,7 @@ def _mistakes(mode: str) -> list[Mistake]:
             "an input has alpha 0: dividing by it to get a straight colour back is 0/0; "
             "premultiplied colours blend as they are, with no division"
         )
-        out = [Mistake("glow lost", _glow_words, gives=_unpremultiplied),
+        out = [Mistake("glow lost", _glow_skipped_words, gives=_unpremultiplied),
                Mistake("glow lost", _glow_words, fits=_glow_lost),
                Mistake("divided by alpha", zero, fits=_zero_divided), *out]  # fmt: skip
         out += _alpha_mistakes(lambda s, d: blend_equation(s, d, *factors))

@@ -258,11 +258,17 @@ def _stopped_at(args, expected, got) -> tuple[int, float] | None:
 
 def _read_past_words(args, expected, got) -> str:
     (layers,) = args
-    return (f"you read {got.read} of the {len(layers)} layers, but after layer {got.opaque} "
+    head = (f"you read {got.read} of the {len(layers)} layers, but after layer {got.opaque} "
             "the composite is opaque (alpha 1) and nothing behind it can show: walking "
-            "nearest first, stop there, as a ray marcher does. A loop that runs from the "
-            "farthest layer (the layers reversed) must read them all first, and so must one "
-            "that never stops")  # fmt: skip
+            "nearest first, stop there, as a ray marcher does")  # fmt: skip
+    if got.read == len(layers):
+        return head + (". A loop that runs from the farthest layer (the layers reversed) must "
+                       "read them all first, and so must one that never stops; one that stops "
+                       "may fetch one layer past the opaque one, no more")  # fmt: skip
+    # r18 D-8: a loop that stopped, but late, was told it ran from the farthest layer
+    return head + (f". Your loop stopped, but {got.read - got.opaque} layers after it: "
+                   "fetching one more layer to find out that it may stop is allowed, more "
+                   "is not")  # fmt: skip
 
 
 def _stopped_words(args, expected, got) -> str:
@@ -346,18 +352,21 @@ def _rule(args, expected, got) -> str:
 def draw_layers(ax, case, got):
     """The layers as swatches over a checkerboard, then the expected and your composites
     (before any answer, the layers only: the figure never shows the answer first); layers
-    read behind the opaque one crossed out and labelled "read"."""
+    read behind the opaque one crossed out and labelled "read", but the one a loop may fetch
+    to find out that it can stop (labelled "allowed")."""
     (layers,) = case[1]
     cells = list(layers)
-    # numbers, and "yours" a line lower: eight labels share the axes' width (r11 09-D: "layer
-    # 6expected")
+    # numbers: eight labels share the axes' width (r11 09-D: "layer 6expected"); "yours" on
+    # the line of the others (r18 D-8: it stood a line lower in every figure)
     names = [str(k + 1) for k in range(len(layers))]
-    past = range(got.opaque, got.read) if isinstance(got, ReadPast) else range(0)
+    past = range(got.opaque + 1, got.read) if isinstance(got, ReadPast) else range(0)
+    if isinstance(got, ReadPast):  # r18 D-8: the task allows one layer fetched past it
+        names[got.opaque] += "\nallowed"
     for k in past:  # r12 09-7: expected = yours; what is wrong is the layers read
         names[k] += "\nread"
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
-        names += ["expected", "\nyours"]
+        names += ["expected", "yours"]
     artists = swatches(ax, cells, names)
     for k in past:  # crossed out: read behind the opaque layer, where nothing can show
         x = k * 1.3  # swatches' spacing (blending.swatches)

@@ -47,11 +47,12 @@ def line_cases() -> list[tuple[str, tuple, set]]:
         ("x-major, a half-pixel tie (dy/dx > 0)", (0.5, 0.5), (8.5, 4.5)),
         ("x-major, a half-pixel tie (dy/dx < 0)", (0.5, 4.5), (8.5, 0.5)),
         ("y-major, a half-pixel tie", (0.5, 0.5), (4.5, 8.5)),
-        ("start inside its diamond, off centre", (1.7, 1.6), (9.2, 4.1)),
+        # r18 D-4: on the 1/8 grid, as the task says every end point is (they were decimals)
+        ("start inside its diamond, off centre", (1.75, 1.625), (9.25, 4.125)),
         ("end on a diamond corner", (1.25, 1.25), (6.5, 4.0)),
-        ("running left and up", (10.4, 9.3), (1.6, 2.2)),
+        ("running left and up", (10.375, 9.25), (1.625, 2.25)),
         ("zero length", (4.5, 4.5), (4.5, 4.5)),
-        ("shorter than a pixel", (2.2, 2.3), (2.9, 2.6)),
+        ("shorter than a pixel", (2.25, 2.375), (2.75, 2.625)),  # in one diamond
         # r9: an ε of 1/100 moves these across a diamond corner they pass within ε of (found
         # by a search over the 1/8 grid); the infinitesimal ε does not
         ("steep, past a corner by less than 1/100", (9.25, 6.25), (10.25, 2.625)),
@@ -286,15 +287,17 @@ def _end_lit(a, e, g):
 
 
 def _end_unmoved(a, e, g):
-    return (f"you tested which diamond p1 = {a[1]} lies in before moving it: move p1 by "
-            "(−ε, −ε²) for that test as well, as for the rest of the segment (on a tie the "
-            "moved p1 lies in another diamond, or in none)")  # fmt: skip
+    # r18 D-6: "as for the rest of the segment" told a student who never moved p1 that they
+    # had; moving p1 for the end test alone is enough, so the words say only that
+    return (f"you tested which diamond p1 = {a[1]} lies in with p1 unmoved: the rule moves "
+            "p1 by (−ε, −ε²) for that test too, as it moves p0 (on a tie the moved p1 lies in "
+            "another diamond, or in none)")  # fmt: skip
 
 
 def _end_unmoved_closed(a, e, g):
-    return (f"you tested which diamond p1 = {a[1]} lies in before moving it, and counted the "
-            "diamond's boundary in (≤ ½): move p1 by (−ε, −ε²) for that test as well, and "
-            "keep the diamond open (< ½), as for the rest of the segment")  # fmt: skip
+    return (f"you tested which diamond p1 = {a[1]} lies in with p1 unmoved, and counted the "
+            "diamond's boundary in (≤ ½): the rule moves p1 by (−ε, −ε²) for that test too, "
+            "as it moves p0, and its diamonds are open (< ½)")  # fmt: skip
 
 
 def _start_diamond_dark(a, e, g):
@@ -488,6 +491,9 @@ def draw_line(ax, case, got):
     artists += ax.plot(*p0, "o", color="k", ms=6)
     artists += ax.plot(*p1, "o", mfc="white", mec="k", ms=7)
     ax.set_aspect("equal")
+    # r18 D-9: the task's trap is (row, col) against (x, y): say which axis is which
+    artists.append(ax.set_xlabel("x = col", fontsize="x-small"))
+    artists.append(ax.set_ylabel("y = row (pointing down)", fontsize="x-small"))
     handles = [Line2D([], [], marker="o", color="k", ls="", label="p0"),
                Line2D([], [], marker="o", mfc="white", mec="k", ls="", label="p1"),
                Patch(facecolor="none", edgecolor="#E69F00", label="diamonds")]  # fmt: skip

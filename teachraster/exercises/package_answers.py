@@ -130,9 +130,34 @@ def _module_helpers(spec: Exercise) -> list:
                 if (isinstance(g, types.FunctionType) and g.__module__ == module
                         and (every or key.startswith("_")) and not key.startswith("__")
                         and g not in listed and not is_transparent(_own_code(g))):  # fmt: skip
+                    owner = _owner(spec, module, key) or name
                     out.append(replace(answer, function=g, when=None, modules=(),
-                                       what=f"a part of {name}'s own computation"))  # fmt: skip
+                                       what=f"a part of {owner}'s own computation"))  # fmt: skip
     return out + _checker_helpers(spec, listed | {_function(a) for a in out})
+
+
+def _owner(spec: Exercise, module: str, key: str) -> str | None:
+    """The listed answer of ``module`` whose computation calls the helper ``key`` (directly or
+    through the module's other functions), or None (r18 D-5: ``_porter_duff`` was called a
+    part of ``from_straight``, which never calls it, not of ``straight_over``)."""
+    names = vars(importlib.import_module(module))
+
+    def reaches(f, seen) -> bool:
+        code = getattr(f, "__code__", None)
+        if code is None or f in seen:
+            return False
+        seen.add(f)
+        return key in code.co_names or any(
+            reaches(inspect.unwrap(names[n]), seen)
+            for n in code.co_names
+            if callable(names.get(n)) and getattr(names[n], "__module__", None) == module
+        )
+
+    for answer in spec.answers:
+        f = _function(answer)
+        if f is not None and f.__module__ == module and reaches(f, set()):
+            return _name(answer).removeprefix("teachraster's ")
+    return None
 
 
 #: What the report says of a call into the checker's own module (r14 09-1).
