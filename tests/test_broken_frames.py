@@ -798,6 +798,18 @@ def test_a_look_alikes_cause_tells_nothing_of_the_frames_cause():
     assert failure.kind == "cause", failure.explanation
 
 
+def test_where_to_look_is_said_once_for_every_frame_never_in_one_task():
+    """r18-1: "Not every pixel … shows every cause's mark: the list says where to look" stood
+    in 11.6 alone, and the only cause the list places at some changed pixels is the sliver:
+    frame 6's cause told, and frame 5's told not to be it. Said once, in how to diagnose."""
+    cells = _cells()
+    sentence = "the list says where to look"
+    assert sentence in " ".join(cells["how_text"].split())
+    for name, text in cells.items():
+        if name != "how_text":
+            assert sentence not in " ".join(text.split()), name
+
+
 def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
     """r16 11-2: the text says look-alike frames may or may not share a cause, never that each
     cause is used once; the numbers it gives (the count, the groups) are the ones a cell
