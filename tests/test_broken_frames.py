@@ -104,7 +104,8 @@ def test_a_blind_loop_over_the_causes_with_made_up_values_never_passes(number):
 @pytest.mark.parametrize("number", list(ANSWERS))
 def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     """The solution (numbers as the history prints them) passes; the right evidence under the
-    pair's other cause is told the cause is wrong and the value read right (same kind); the
+    pair's other cause is told the cause is wrong, never that the value is read right or
+    another cause's evidence (r18-2: each evidence is one cause's, so that named it); the
     right cause with a value off by more than the printed digits is told the evidence is
     wrong, never the cause; a pixel where the pictures agree is told so."""
     answer = sol.BROKEN_FRAMES[number]
@@ -112,7 +113,6 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
     assert bf._judged(number, bf.as_diagnosis(answer))[0] == "right"  # as printed
     cause, pixel, value = answer
     twin = ANSWERS[next(b if a == number else a for a, b in PAIRS if number in (a, b))]
-    same_kind = bf.EVIDENCE[twin][0] == bf.EVIDENCE[cause][0]
     # r16 N1: the twin's cause with this frame's own evidence, of whatever kind, is told the
     # cause is wrong (it was told the evidence's type, for the twin's cause, was wrong)
     for given in {value, MADE_UP[bf.EVIDENCE[twin][0]]}:
@@ -121,7 +121,15 @@ def test_the_right_answer_passes_and_each_wrong_part_is_told_which(number):
         assert "mark of" not in failure.explanation and "stage by stage" in failure.explanation
         assert "returned the evidence" not in failure.explanation, failure.explanation
     failure = _first(number, (twin, pixel, value))
-    assert ("read right" in failure.explanation) == same_kind, failure.explanation
+    for telling in ("read right", "another cause", "evidence of"):
+        assert telling not in failure.explanation, failure.explanation
+    # the same words as for a made-up value of the stated cause's kind: the value is not judged
+    made_up = _first(number, (twin, pixel, MADE_UP[bf.EVIDENCE[twin][0]])).explanation
+    start = f"{twin!r} is not what"
+    assert failure.explanation.split(start)[1] == made_up.split(start)[1], (failure, made_up)
+    assert failure.explanation.endswith(
+        "Your value is not judged while the cause is not the frame's"
+    ), failure.explanation
     off = (value + 1 if isinstance(value, int) else value + 1e-3 if isinstance(value, float)
            else tuple(v + 1e-3 for v in value))  # fmt: skip
     failure = _first(number, (cause, pixel, off))

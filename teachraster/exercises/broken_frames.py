@@ -38,9 +38,9 @@ reader does not serve both causes (r11 11-D: a coin flip once the reader was wri
 What a wrong answer is told, in this order: a check run inside the function; a pixel where
 the two frames agree; the frame's cause at a changed pixel that does not show its mark
 (:data:`_SIGNS`; the sliver's: the thin triangle passes through the pixel); a cause that is
-not the frame's (and, when the value given is this pixel's evidence of the real cause, that
-it was read right); the frame shown's value given for the redrawn frame; a value that is not
-the evidence there (and a row and column, or the sliver's two numbers, swapped).
+not the frame's (the value is then not judged: r18-2); the frame shown's value given for
+the redrawn frame; a value that is not the evidence there (and a row and column, or the
+sliver's two numbers, swapped).
 """
 
 from __future__ import annotations
@@ -870,22 +870,17 @@ def _cause_words(args, number, got) -> str:
     histories bear the stated cause's mark (r13 11-2: "do / do not bear the mark of" told a
     loop over the ten causes which to keep): the stated cause does not explain them, what it
     would show, and where to look; never which other cause it is or is not."""
-    cause, (row, col), value = got
-    _, p = _judged(number, got)
-    b = _as_frame(number)
+    cause, (row, col), _ = got
     # r14: the instruction first, the stated cause's own mark last (the eye needs the first)
     words = (f"{cause!r} is not what the two histories of ({row}, {col}) show: find the first "
              "stage where they part, the cause is what acts there. Read "
              f"{_history_hint(number, row, col, 'the intended')} side by side, stage by stage "
              f"({', '.join(STAGES)}, then the colour shown). {cause!r} would show as: "
              f"{_SIGNS[cause][1]}")  # fmt: skip
-    real = next((c for c in CAUSES if _is_cause(b.number, c)), None)
-    if real is not None and p is not None:
-        kind = EVIDENCE[real][0]
-        if kind == EVIDENCE[cause][0] and _matches(kind, value, _evidence(b, real, p)):
-            words += (". Your value is in this pixel's history, read right: it is the "
-                      "evidence of another cause")  # fmt: skip
-    return words
+    # r18-2: never whether the value is another cause's evidence (each evidence belongs to one
+    # cause, so "read right: the evidence of another cause" named the cause after one guess);
+    # the same words for every value
+    return words + ". Your value is not judged while the cause is not the frame's"
 
 
 def _unmarked_words(args, number, got) -> str:
