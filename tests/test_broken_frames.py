@@ -614,7 +614,8 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     # history was read: the task says only that the pair is contrived; the rest is printed
     # by a locked cell after 11.4's check, once it has passed
     task4 = " ".join(cells["frame_4_task"].split())
-    assert "contrived" in task4
+    # r18-5: "(Like others here, this frame is contrived …)" singled frame 4 out: said nowhere
+    assert "ontrived" not in task4 and "Like others" not in task4, task4
     for telling in ("too bright", "straight colour", "alpha times", "premultipl"):
         assert telling not in task4, telling
     order = list(cells)
@@ -846,7 +847,8 @@ def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
     # frame 4 "contrived so that the pair looks alike" / "made to look like frame 3" hinted
     # that its cause is not frame 3's: said of frame 4 alone, before its check passes
     before = " ".join((cells["frame_4_task"] + cells["frame_4_note"] + ex.frame_note(None)).split())
-    assert "contrived" in before and "the pair" not in before and "like frame 3" not in before
+    assert "the pair" not in before and "like frame 3" not in before, before
+    assert "ontrived" not in before, before  # r18-5: nor that frame 4 alone was contrived
     task = " ".join(cells["frame_7_task"].split())
     assert "frames 1 and 2 pixel for pixel" in task, task
     assert "may or may not share a cause" in task, task

@@ -474,14 +474,15 @@ def frame_note(report) -> str:
     ``report`` (that check's) has passed; until then, where it will be told.
 
     >>> print(frame_note(None))
-    How frame 4 was contrived is shown here once the check of broken_frame_4 above passes.
+    A note on frame 4 is printed here once the check of broken_frame_4 above passes.
     """
     name = str(getattr(report, "exercise", ""))
     number = next((n for n in _CONTRIVED if name == f"broken_frame_{n}"), None)
     if number is not None and getattr(report, "passed", False) is True:
         return _CONTRIVED[number]
-    # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another
-    return "How frame 4 was contrived is shown here once the check of broken_frame_4 above passes."
+    # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
+    # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
+    return "A note on frame 4 is printed here once the check of broken_frame_4 above passes."
 
 
 def broken_frame(number: int) -> BrokenFrame:
