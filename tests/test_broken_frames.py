@@ -642,6 +642,18 @@ def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
         exec(source, namespace)
         shown = capsys.readouterr().out
         assert "once the check of broken_frame_4" in shown and "too bright" not in shown, shown
+    # r18-10: only a report the checker made: not an object with passed=True, not a Report
+    # built by hand
+    from types import SimpleNamespace
+
+    from teachraster.exercises.report import Report
+
+    for fake in (SimpleNamespace(exercise="broken_frame_4", passed=True),
+                 Report("broken_frame_4", [], 2)):  # fmt: skip
+        assert fake.passed
+        exec(source, {"ex": ex, "report": fake})
+        shown = capsys.readouterr().out
+        assert "once the check of broken_frame_4" in shown and "too bright" not in shown, shown
     exec(source, {"ex": ex, "report": ex.check("broken_frame_4", sol.diagnosis(4))})
     shown = capsys.readouterr().out
     assert "too bright" in shown and "alpha times" in shown, shown

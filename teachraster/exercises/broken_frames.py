@@ -61,6 +61,7 @@ from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
 from .exercise import Exercise, Mistake, PackageAnswer
 from .interrupt import transparent
+from .report import issued
 from .running import WrongAnswerType
 
 #: Frame size: small, so that every pixel is easy to pick.
@@ -471,14 +472,15 @@ _CONTRIVED = {
 
 def frame_note(report) -> str:
     """What the notebook tells after a broken frame's check: how the frame was contrived, once
-    ``report`` (that check's) has passed; until then, where it will be told.
+    ``report`` (a report :func:`~.checks.check` returned for that frame) has passed; until
+    then, where it will be told.
 
     >>> print(frame_note(None))
     A note on frame 4 is printed here once the check of broken_frame_4 above passes.
     """
     name = str(getattr(report, "exercise", ""))
     number = next((n for n in _CONTRIVED if name == f"broken_frame_{n}"), None)
-    if number is not None and getattr(report, "passed", False) is True:
+    if number is not None and issued(report) and report.passed:
         return _CONTRIVED[number]
     # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
     # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
