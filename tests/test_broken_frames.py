@@ -657,6 +657,8 @@ def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
     exec(source, {"ex": ex, "report": ex.check("broken_frame_4", sol.diagnosis(4))})
     shown = capsys.readouterr().out
     assert "too bright" in shown and "alpha times" in shown, shown
+    # r18-4: a "pair" is a frame and its intended frame, which do not look alike here
+    assert "so that it looks like frame 3" in shown and "the pair" not in shown, shown
 
 
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():

@@ -461,11 +461,12 @@ def frame_pairs() -> dict[str, str]:
     return {f"frame {b.number}": f"intended {b.number}" for b in broken_frames()}
 
 
-#: Why a frame looks like its pair's, told once its check has passed: the words name the
+#: Why a frame looks like its look-alike, told once its check has passed: the words name the
 #: mistake (r16 N2: kept in the notebook's locked cell, they stood in its source, readable
 #: before 11.3 and 11.4 were solved).
 _CONTRIVED = {
-    4: "Frame 4 is contrived so that the pair looks alike: the pane's straight colour is\n"
+    # r18-4: "so that the pair looks alike" (the pair is a frame and its intended frame)
+    4: "Frame 4 is contrived so that it looks like frame 3: the pane's straight colour is\n"
     "exactly its alpha times the wall's. The same mistake usually shows as a pane too bright.",
 }
 
