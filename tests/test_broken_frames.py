@@ -825,6 +825,16 @@ def test_a_look_alikes_cause_tells_nothing_of_the_frames_cause():
     assert failure.kind == "cause", failure.explanation
 
 
+def test_reading_a_history_lists_every_field_an_evidence_is_read_from():
+    """r18-6: the record's fields listed lacked ``outside`` (11.6's evidence, found only by
+    ``dir(record)``) and ``piece`` (which cell 4 uses); each is a field of a history record."""
+    text = _cells()["example_text"]
+    record = ex.broken_frame(6).frame.history(22, 40).records[0]
+    for name in ("outcome", "triangle", "piece", "depth", "depth_before", "outside",
+                 "color_before", "color", "color_after", "shown"):  # fmt: skip
+        assert f"`{name}`" in text and hasattr(record, name), name
+
+
 def test_where_to_look_is_said_once_for_every_frame_never_in_one_task():
     """r18-1: "Not every pixel … shows every cause's mark: the list says where to look" stood
     in 11.6 alone, and the only cause the list places at some changed pixels is the sliver:
