@@ -937,6 +937,22 @@ def test_broken_frame_1_and_6_causes_say_what_their_frames_show():
     assert "modelled thinner" in bf.CAUSES["sliver"]
     assert six.frame.samples is None and six.intended.samples is None
     assert "stitches" in bf.CAUSES["z-fighting"]  # r8 11-6: the name's pattern, said
+    # r18-7: the name is the fight, not the stitches; "it" is the thin triangle, not the pixel
+    assert (
+        "fight" in bf.CAUSES["z-fighting"] and "stitches: the name" not in bf.CAUSES["z-fighting"]
+    )
+    assert "lies outside that triangle" in bf.EVIDENCE["sliver"][1]
+
+
+def test_every_causes_mark_describes_the_histories_not_its_own_name():
+    """r18-7: "'depth test off' would show as: its depth test is off" said the name again."""
+    words = bf._SIGNS["depth test off"][1]
+    assert "its depth test is off" not in words and "says depth test off" in words, words
+    assert "a fragment passes though the depth stored before it is nearer" in words, words
+    # the history's first line does say so, where the test is off
+    off = tr.render(tr.get_scene("intersecting_triangles"), None, 16, 12, trace=True,
+                    depth_test=False)  # fmt: skip
+    assert "depth test off" in str(off.history(6, 8)).splitlines()[0]
 
 
 def test_broken_frames_3_to_6_draw_their_glass_without_depth_writes():

@@ -87,8 +87,9 @@ CAUSES = {
     "texture filtering": "the wrong texture filter or mip level",
     # r8 11-6: every pixel ties here, so the pane loses everywhere; at an angle the two
     # surfaces would tie at some pixels only, in the stitched pattern the name comes from
+    # r18-7: "in stitches: the name" read as if "stitches" were the name
     "z-fighting": "the depth buffer cannot tell two surfaces apart (where they tie at some "
-    "pixels only, they show through each other in stitches: the name)",
+    "pixels only, the two fight: each shows through the other in stitches)",
 }
 
 #: For each cause, the evidence an answer gives with it: what to read off the history of the
@@ -108,9 +109,10 @@ EVIDENCE = {
     "missing premultiplication": ("colour", "the fragment colour (r, g, b) the blend received"),
     "near-plane clipping": ("number", "how far (px) the pixel's centre lies outside the edge "
                             "the near plane cut"),
+    # r18-7: "lies outside it" read as the pixel
     "sliver": ("pair", "(how far (px) the centre of a pixel the thin triangle passes "
-               "through lies outside it, the depth of the fragment the intended frame draws "
-               "there instead)"),
+               "through lies outside that triangle, the depth of the fragment the intended "
+               "frame draws there instead)"),
     "texture filtering": ("colour", "the texel colour (r, g, b) the pixel shows"),
     "z-fighting": ("depth", "the depth the fragment that fails on a tie in the broken frame "
                    "was meant to have: its depth in the intended frame's history"),
@@ -249,7 +251,10 @@ _SIGNS = {
     "depth function": (lambda p, b: p.stage == "depth test" and not _ties(p),
                        "they first part at the depth test, a fragment kept in one and rejected "
                        "in the other, with no tie"),
-    "depth test off": (lambda p, b: not p.mine.depth_test, "its depth test is off"),
+    # r18-7: "its depth test is off" only said the name again
+    "depth test off": (lambda p, b: not p.mine.depth_test,
+                       "the history's first line says depth test off, and a fragment passes "
+                       "though the depth stored before it is nearer"),
     "missing premultiplication": (lambda p, b: p.stage == "blending" and _recoloured(p, b),
                                   "they first part at blending, the same fragments in the same "
                                   "order, one with another colour"),
