@@ -882,6 +882,15 @@ def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
     assert "may or may not share a cause" in task, task
 
 
+def test_the_frame_3_solution_says_the_glass_pane_is_drawn_not_stored():
+    """r18-9: "The intended pane is stored at 0.598993": the pane is glass and writes no depth
+    (its record's 'after' stays the wall's 0.600000)."""
+    solution = _cells()["broken_frame_3_solution"].split("SOLUTION")[1]
+    assert "drawn at 0.598993" in solution and "stored at 0.598993" not in solution
+    pane = next(r for r in ex.broken_frame(3).intended.history(24, 20).records if r.shown)
+    assert f"{pane.depth:.6f}" == "0.598993" and f"{pane.depth_after:.6f}" == "0.600000"
+
+
 def test_the_frame_7_solution_quotes_the_depths_its_histories_print():
     """The solution's comment gives the depths at (24, 28) as the two histories print them."""
     solution = _cells()["broken_frame_7_solution"]
