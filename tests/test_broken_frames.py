@@ -1035,6 +1035,32 @@ def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_titl
     plt.close(fig)
 
 
+def test_the_check_figure_is_the_strip_of_two_frames_without_white_bands():
+    """r18-15: a 7 x 4 in canvas held a strip of two 64 x 48 frames: a third of it was white.
+    The notebook's figure is as tall as the strip with its title and labels, and the chosen
+    pixel has a white halo (a projector)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    size = re.search(r"figsize=\(7, ([\d.]+)\)", _cells()["setup"])
+    assert size and float(size[1]) <= 3.2, _cells()["setup"]
+    report = ex.check("broken_frame_5", lambda b: ("blend order", (20, 31), (0.1, 0.2, 0.3)))
+    fig, ax = plt.subplots(figsize=(7, float(size[1])))
+    try:
+        report.plot(ax)
+        fig.canvas.draw()
+        frames = ax.get_window_extent()
+        assert frames.height / fig.bbox.height > 0.55, frames  # was 0.46 of 4 in
+        for text in (ax.title, ax.xaxis.label):  # inside the figure
+            box = text.get_window_extent()
+            assert box.y0 >= 0 and box.y1 <= fig.bbox.height, (text.get_text(), box)
+        assert all(line.get_path_effects() for line in ax.lines)
+    finally:
+        plt.close(fig)
+
+
 def test_the_frame_inspector_shows_the_broken_frames():
     pytest.importorskip("ipywidgets")
     from teachraster.widgets import FrameInspector

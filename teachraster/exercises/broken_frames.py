@@ -1014,9 +1014,12 @@ def _draw(ax, case, got):
                          interpolation="nearest")]  # fmt: skip
     if isinstance(got, tuple) and len(got) == 3 and got[0] in CAUSES:  # an answer, as read
         _, (row, col), _ = got
+        from matplotlib.patheffects import withStroke  # only where a figure is drawn
+
+        halo = [withStroke(linewidth=5, foreground="white")]  # r18-15: found on any colour
         for x in (col, col + W + gap):  # on both pictures (r7: on the broken one only)
             artists += ax.plot([x, x + 1, x + 1, x, x], [row, row, row + 1, row + 1, row],
-                               color="#D55E00", lw=2)  # fmt: skip
+                               color="#D55E00", lw=2.5, path_effects=halo)  # fmt: skip
     ax.set_xlim(0, 2 * W + gap)
     ax.set_ylim(H, 0)
     ax.set_xticks([0, W // 2, W - 1, W + gap, W + gap + W // 2, 2 * W + gap - 1],
