@@ -1061,6 +1061,35 @@ def test_the_check_figure_is_the_strip_of_two_frames_without_white_bands():
         plt.close(fig)
 
 
+def test_the_paired_history_tables_fit_a_592_px_column():
+    """r18-11: at 1024 x 768 (JupyterLab, file browser open: a 592-px column) the two tables of
+    "its pair beside" were 613-615 px wide, and the widget scrolled sideways ("outside E12 by
+    6.1611 p" cut). Paired, the tables are set smaller and never wider than the column (a flex
+    item is as wide as its longest line unless min-width:0); a longer line scrolls inside its
+    own table. Measured in Chromium at 13 px (DejaVu Sans Mono, 0.602 em a character): 613 px
+    at 0.8em became 575 px at 0.75em; the test keeps that arithmetic."""
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets import frame_inspector as fi
+
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
+    try:
+        w.scene.value = "frame 2"
+        w.click_at(20.5, 30.5)  # the reviewer's pixel, (30, 20)
+        assert "<b>intended 2</b>" in w.table.value
+        markup = w.table.value
+    finally:
+        w.close()
+    assert markup.count(f"font-size:{fi.PAIRED_FONT}") == 2 and markup.count("min-width:0") == 2
+    assert "max-width:100%" in markup and "overflow-x:auto" in markup
+    assert float(fi.PAIRED_FONT[:-2]) < float(fi.TABLE_FONT[:-2])
+    pixels = [(30, 20), (22, 40), (14, 10), (24, 28)] + [a[1] for a in sol.BROKEN_FRAMES.values()]
+    longest = max(len(line) for n in ANSWERS for frame in (ex.broken_frame(n).frame,
+                  ex.broken_frame(n).intended) for r, c in pixels
+                  for line in str(frame.history(r, c)).splitlines())  # fmt: skip
+    assert longest * 0.602 * 13 * float(fi.PAIRED_FONT[:-2]) <= 592, longest
+
+
 def test_the_frame_inspector_shows_the_broken_frames():
     pytest.importorskip("ipywidgets")
     from teachraster.widgets import FrameInspector

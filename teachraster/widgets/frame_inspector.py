@@ -201,12 +201,29 @@ def _checked_frames(frames) -> dict | None:
     return dict(frames)
 
 
-def _pre(text: str) -> str:
+#: The history table's font size, alone and with its pair's beside it: paired, a little
+#: smaller, so that each of the two fits a 592-px column (JupyterLab at 1024 x 768 with the
+#: file browser open), where at 0.8em a table of the exercise's frames took 615 px and cut
+#: "outside E12 by 6.1611 px" (review r18, exercise 11).
+TABLE_FONT, PAIRED_FONT = "0.8em", "0.75em"
+
+
+def _pre(text: str, size: str = TABLE_FONT) -> str:
     """A history table as HTML. Columns kept at any width: JupyterLab wraps a <pre>
     (pre-wrap), which broke every row of the table at 1024 px (review r9, lesson 11); a
     narrow column scrolls instead."""
-    return (f"<pre style='font-size:0.8em;line-height:1.25;white-space:pre;overflow-x:auto'>"
+    return (f"<pre style='font-size:{size};line-height:1.25;white-space:pre;overflow-x:auto'>"
             f"{html.escape(text)}</pre>")  # fmt: skip
+
+
+def paired_tables(named) -> str:
+    """Two history tables, ``named`` [(name, text)], as HTML: side by side where the column
+    is wide enough, one under the other where not; each at most the column's width (a flex
+    item is as wide as its longest line unless ``min-width:0``: the widget scrolled sideways,
+    not the table), a longer line scrolling inside its own table."""
+    tables = "".join(f"<div style='min-width:0;max-width:100%'><b>{html.escape(name)}</b>"
+                     f"{_pre(text, PAIRED_FONT)}</div>" for name, text in named)  # fmt: skip
+    return f"<div style='display:flex;flex-wrap:wrap;gap:0 24px'>{tables}</div>"
 
 
 class FrameInspector(Holdable):
@@ -365,10 +382,8 @@ class FrameInspector(Holdable):
         if self.pair_history is None:
             self.table.value = _pre(text)
             return
-        # side by side where the column is wide enough, one under the other where not
-        tables = "".join(f"<div><b>{html.escape(name)}</b>{_pre(t)}</div>" for name, t in
-                         ((self.scene.value, text), (pair, str(self.pair_history))))  # fmt: skip
-        self.table.value = f"<div style='display:flex;flex-wrap:wrap;gap:0 24px'>{tables}</div>"
+        self.table.value = paired_tables(((self.scene.value, text),
+                                          (pair, str(self.pair_history))))  # fmt: skip
 
     def _bar_room(self) -> float:
         """Inches right of the colour bar that its ticks and label take, as drawn, and a
