@@ -208,16 +208,37 @@ def test_frame_inspector_overlay_titles_and_colour_bars_fit_in_the_classroom_sty
                 w.samples.value = samples
                 w.view.value = view
                 w.fig.canvas.draw()
-                width = w.fig.bbox.width  # an overlay's figure holds its colour bar's room
-                ticks = [t for t in w.cax.get_yticklabels() if t.get_text()]
-                label = w.cax.yaxis.label
-                for text in [w.ax.title, *ticks, label]:
-                    box = text.get_window_extent(renderer)
-                    assert 0 <= box.x0 and box.x1 <= width, (view, text.get_text())
-                right = max(t.get_window_extent(renderer).x1 for t in ticks)
-                assert label.get_window_extent(renderer).x0 >= right, view
+                _bar_fits(w, renderer, view)
         finally:
             w.close()
+        # review r18, exercise 11: on a frame as short as the exercise's, "passed depth test,
+        # per pixel" ran below the figure ("assed depth test"), "px per triangle (log)"
+        # beside 4-digit ticks past its right edge
+        from teachraster import exercises as ex
+
+        w = FrameInspector(frames=ex.frames_to_inspect(), scene="intended 6", backend="image")
+        try:
+            renderer = w.fig.canvas.get_renderer()
+            for view in KINDS:
+                w.view.value = view
+                w.fig.canvas.draw()
+                _bar_fits(w, renderer, view)
+        finally:
+            w.close()
+
+
+def _bar_fits(w, renderer, view):
+    """The inspector's title, colour-bar ticks and label lie inside its figure, the label not
+    on the ticks."""
+    width, height = w.fig.bbox.width, w.fig.bbox.height  # the figure holds the bar's room
+    ticks = [t for t in w.cax.get_yticklabels() if t.get_text()]
+    label = w.cax.yaxis.label
+    for text in [w.ax.title, *ticks, label]:
+        box = text.get_window_extent(renderer)
+        assert 0 <= box.x0 and box.x1 <= width, (view, text.get_text())
+        assert 0 <= box.y0 and box.y1 <= height, (view, text.get_text(), box)
+    right = max(t.get_window_extent(renderer).x1 for t in ticks)
+    assert label.get_window_extent(renderer).x0 >= right, view
 
 
 # -- the colour bars say what they count (review 11-12 r5) ---------------------------------

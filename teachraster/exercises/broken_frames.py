@@ -38,9 +38,9 @@ reader does not serve both causes (r11 11-D: a coin flip once the reader was wri
 What a wrong answer is told, in this order: a check run inside the function; a pixel where
 the two frames agree; the frame's cause at a changed pixel that does not show its mark
 (:data:`_SIGNS`; the sliver's: the thin triangle passes through the pixel); a cause that is
-not the frame's (and, when the value given is this pixel's evidence of the real cause, that
-it was read right); the frame shown's value given for the redrawn frame; a value that is not
-the evidence there (and a row and column, or the sliver's two numbers, swapped).
+not the frame's (the value is then not judged: r18-2); the frame shown's value given for
+the redrawn frame; a value that is not the evidence there (and a row and column, or the
+sliver's two numbers, swapped).
 """
 
 from __future__ import annotations
@@ -61,6 +61,7 @@ from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
 from .exercise import Exercise, Mistake, PackageAnswer
 from .interrupt import transparent
+from .report import issued
 from .running import WrongAnswerType
 
 #: Frame size: small, so that every pixel is easy to pick.
@@ -86,8 +87,9 @@ CAUSES = {
     "texture filtering": "the wrong texture filter or mip level",
     # r8 11-6: every pixel ties here, so the pane loses everywhere; at an angle the two
     # surfaces would tie at some pixels only, in the stitched pattern the name comes from
+    # r18-7: "in stitches: the name" read as if "stitches" were the name
     "z-fighting": "the depth buffer cannot tell two surfaces apart (where they tie at some "
-    "pixels only, they show through each other in stitches: the name)",
+    "pixels only, the two fight: each shows through the other in stitches)",
 }
 
 #: For each cause, the evidence an answer gives with it: what to read off the history of the
@@ -107,9 +109,10 @@ EVIDENCE = {
     "missing premultiplication": ("colour", "the fragment colour (r, g, b) the blend received"),
     "near-plane clipping": ("number", "how far (px) the pixel's centre lies outside the edge "
                             "the near plane cut"),
+    # r18-7: "lies outside it" read as the pixel
     "sliver": ("pair", "(how far (px) the centre of a pixel the thin triangle passes "
-               "through lies outside it, the depth of the fragment the intended frame draws "
-               "there instead)"),
+               "through lies outside that triangle, the depth of the fragment the intended "
+               "frame draws there instead)"),
     "texture filtering": ("colour", "the texel colour (r, g, b) the pixel shows"),
     "z-fighting": ("depth", "the depth the fragment that fails on a tie in the broken frame "
                    "was meant to have: its depth in the intended frame's history"),
@@ -248,7 +251,10 @@ _SIGNS = {
     "depth function": (lambda p, b: p.stage == "depth test" and not _ties(p),
                        "they first part at the depth test, a fragment kept in one and rejected "
                        "in the other, with no tie"),
-    "depth test off": (lambda p, b: not p.mine.depth_test, "its depth test is off"),
+    # r18-7: "its depth test is off" only said the name again
+    "depth test off": (lambda p, b: not p.mine.depth_test,
+                       "the history's first line says depth test off, and a fragment passes "
+                       "though the depth stored before it is nearer"),
     "missing premultiplication": (lambda p, b: p.stage == "blending" and _recoloured(p, b),
                                   "they first part at blending, the same fragments in the same "
                                   "order, one with another colour"),
@@ -460,28 +466,31 @@ def frame_pairs() -> dict[str, str]:
     return {f"frame {b.number}": f"intended {b.number}" for b in broken_frames()}
 
 
-#: Why a frame looks like its pair's, told once its check has passed: the words name the
+#: Why a frame looks like its look-alike, told once its check has passed: the words name the
 #: mistake (r16 N2: kept in the notebook's locked cell, they stood in its source, readable
 #: before 11.3 and 11.4 were solved).
 _CONTRIVED = {
-    4: "Frame 4 is contrived so that the pair looks alike: the pane's straight colour is\n"
+    # r18-4: "so that the pair looks alike" (the pair is a frame and its intended frame)
+    4: "Frame 4 is contrived so that it looks like frame 3: the pane's straight colour is\n"
     "exactly its alpha times the wall's. The same mistake usually shows as a pane too bright.",
 }
 
 
 def frame_note(report) -> str:
     """What the notebook tells after a broken frame's check: how the frame was contrived, once
-    ``report`` (that check's) has passed; until then, where it will be told.
+    ``report`` (a report :func:`~.checks.check` returned for that frame) has passed; until
+    then, where it will be told.
 
     >>> print(frame_note(None))
-    How frame 4 was contrived is shown here once the check of broken_frame_4 above passes.
+    A note on frame 4 is printed here once the check of broken_frame_4 above passes.
     """
     name = str(getattr(report, "exercise", ""))
     number = next((n for n in _CONTRIVED if name == f"broken_frame_{n}"), None)
-    if number is not None and getattr(report, "passed", False) is True:
+    if number is not None and issued(report) and report.passed:
         return _CONTRIVED[number]
-    # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another
-    return "How frame 4 was contrived is shown here once the check of broken_frame_4 above passes."
+    # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
+    # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
+    return "A note on frame 4 is printed here once the check of broken_frame_4 above passes."
 
 
 def broken_frame(number: int) -> BrokenFrame:
@@ -870,22 +879,17 @@ def _cause_words(args, number, got) -> str:
     histories bear the stated cause's mark (r13 11-2: "do / do not bear the mark of" told a
     loop over the ten causes which to keep): the stated cause does not explain them, what it
     would show, and where to look; never which other cause it is or is not."""
-    cause, (row, col), value = got
-    _, p = _judged(number, got)
-    b = _as_frame(number)
+    cause, (row, col), _ = got
     # r14: the instruction first, the stated cause's own mark last (the eye needs the first)
     words = (f"{cause!r} is not what the two histories of ({row}, {col}) show: find the first "
              "stage where they part, the cause is what acts there. Read "
              f"{_history_hint(number, row, col, 'the intended')} side by side, stage by stage "
              f"({', '.join(STAGES)}, then the colour shown). {cause!r} would show as: "
              f"{_SIGNS[cause][1]}")  # fmt: skip
-    real = next((c for c in CAUSES if _is_cause(b.number, c)), None)
-    if real is not None and p is not None:
-        kind = EVIDENCE[real][0]
-        if kind == EVIDENCE[cause][0] and _matches(kind, value, _evidence(b, real, p)):
-            words += (". Your value is in this pixel's history, read right: it is the "
-                      "evidence of another cause")  # fmt: skip
-    return words
+    # r18-2: never whether the value is another cause's evidence (each evidence belongs to one
+    # cause, so "read right: the evidence of another cause" named the cause after one guess);
+    # the same words for every value
+    return words + ". Your value is not judged while the cause is not the frame's"
 
 
 def _unmarked_words(args, number, got) -> str:
@@ -1010,9 +1014,12 @@ def _draw(ax, case, got):
                          interpolation="nearest")]  # fmt: skip
     if isinstance(got, tuple) and len(got) == 3 and got[0] in CAUSES:  # an answer, as read
         _, (row, col), _ = got
+        from matplotlib.patheffects import withStroke  # only where a figure is drawn
+
+        halo = [withStroke(linewidth=5, foreground="white")]  # r18-15: found on any colour
         for x in (col, col + W + gap):  # on both pictures (r7: on the broken one only)
             artists += ax.plot([x, x + 1, x + 1, x, x], [row, row, row + 1, row + 1, row],
-                               color="#D55E00", lw=2)  # fmt: skip
+                               color="#D55E00", lw=2.5, path_effects=halo)  # fmt: skip
     ax.set_xlim(0, 2 * W + gap)
     ax.set_ylim(H, 0)
     ax.set_xticks([0, W // 2, W - 1, W + gap, W + gap + W // 2, 2 * W + gap - 1],

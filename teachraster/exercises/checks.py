@@ -14,7 +14,7 @@ from functools import cache
 
 from . import output, tries
 from .exercise import Exercise
-from .report import Report
+from .report import Report, issue
 from .running import SKIPPED, effective_budget, nested
 from .running import budget as time_budget
 from .value_checks import check_exercise
@@ -100,4 +100,4 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
     if printed.lines:
         report = replace(report, printed=printed.summary())
         printed.replay(sys.stdout)
-    return report
+    return issue(report)

@@ -14,6 +14,7 @@ back; without anywidget the image is a plain ``ipywidgets.Image`` and the slider
 from __future__ import annotations
 
 import html
+import textwrap
 
 import ipywidgets as widgets
 import numpy as np
@@ -44,7 +45,8 @@ VIEWS = ("image", *KINDS)
 FRAME_BOX = (3.0, 3.1)
 #: The frame figure's margins in inches: left (row labels and "row i"), top (column labels,
 #: "column j" and the title), bottom (and right without a colour bar), then the colour bar's
-#: gap, width and the room for its ticks and label, at the classroom style's sizes.
+#: gap, width and the room for its ticks and label at the classroom style's sizes (the
+#: first guess: :meth:`FrameInspector._bar_room` measures them once drawn).
 FRAME_MARGINS = (0.85, 1.0, 0.15, 0.15, 0.14, 0.86)
 
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
@@ -127,6 +129,31 @@ def marker_xy(row: int, col: int, reach: float = 3.0):
     return x, y
 
 
+def fit_bar_label(cax, margin: float = 4.0):
+    """Move the colour bar's label along the bar, from its middle, just enough to lie inside
+    its figure's height (review r18, exercise 11: centred on a bar as short as the frame, "passed
+    depth test, per pixel" in the classroom style's fonts ran 17 px below the figure, read
+    "assed depth test"); a label longer than the figure is high goes on two lines. Returns
+    the label."""
+    label = cax.yaxis.label
+    canvas = cax.figure.canvas
+    renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
+    label.set_y(0.5)  # its place along the bar in axes fractions (the axis sets only x)
+    if renderer is None or not label.get_text():
+        return label
+    height = cax.figure.bbox.height
+    half = label.get_window_extent(renderer).height / 2  # turned 90°: its length
+    text = label.get_text()
+    if 2 * (half + margin) > height and "\n" not in text:  # longer than the figure: 2 lines
+        label.set_text(textwrap.fill(text, len(text) // 2 + 4))
+        half = label.get_window_extent(renderer).height / 2
+    bar = cax.get_window_extent(renderer)
+    middle = bar.y0 + bar.height / 2
+    middle = min(max(middle, half + margin), max(height - half - margin, half + margin))
+    label.set_y((middle - bar.y0) / bar.height)
+    return label
+
+
 def quad_text(frame, row: int, col: int) -> str:
     """One line under the history in the quad overshading view: the triangles that shaded
     the 2×2 quad of pixel (``row``, ``col``), each launching its four lanes, and the helpers
@@ -174,12 +201,29 @@ def _checked_frames(frames) -> dict | None:
     return dict(frames)
 
 
-def _pre(text: str) -> str:
+#: The history table's font size, alone and with its pair's beside it: paired, a little
+#: smaller, so that each of the two fits a 592-px column (JupyterLab at 1024 x 768 with the
+#: file browser open), where at 0.8em a table of the exercise's frames took 615 px and cut
+#: "outside E12 by 6.1611 px" (review r18, exercise 11).
+TABLE_FONT, PAIRED_FONT = "0.8em", "0.75em"
+
+
+def _pre(text: str, size: str = TABLE_FONT) -> str:
     """A history table as HTML. Columns kept at any width: JupyterLab wraps a <pre>
     (pre-wrap), which broke every row of the table at 1024 px (review r9, lesson 11); a
     narrow column scrolls instead."""
-    return (f"<pre style='font-size:0.8em;line-height:1.25;white-space:pre;overflow-x:auto'>"
+    return (f"<pre style='font-size:{size};line-height:1.25;white-space:pre;overflow-x:auto'>"
             f"{html.escape(text)}</pre>")  # fmt: skip
+
+
+def paired_tables(named) -> str:
+    """Two history tables, ``named`` [(name, text)], as HTML: side by side where the column
+    is wide enough, one under the other where not; each at most the column's width (a flex
+    item is as wide as its longest line unless ``min-width:0``: the widget scrolled sideways,
+    not the table), a longer line scrolling inside its own table."""
+    tables = "".join(f"<div style='min-width:0;max-width:100%'><b>{html.escape(name)}</b>"
+                     f"{_pre(text, PAIRED_FONT)}</div>" for name, text in named)  # fmt: skip
+    return f"<div style='display:flex;flex-wrap:wrap;gap:0 24px'>{tables}</div>"
 
 
 class FrameInspector(Holdable):
@@ -338,19 +382,31 @@ class FrameInspector(Holdable):
         if self.pair_history is None:
             self.table.value = _pre(text)
             return
-        # side by side where the column is wide enough, one under the other where not
-        tables = "".join(f"<div><b>{html.escape(name)}</b>{_pre(t)}</div>" for name, t in
-                         ((self.scene.value, text), (pair, str(self.pair_history))))  # fmt: skip
-        self.table.value = f"<div style='display:flex;flex-wrap:wrap;gap:0 24px'>{tables}</div>"
+        self.table.value = paired_tables(((self.scene.value, text),
+                                          (pair, str(self.pair_history))))  # fmt: skip
 
-    def _fit_figure(self) -> None:
+    def _bar_room(self) -> float:
+        """Inches right of the colour bar that its ticks and label take, as drawn, and a
+        little more (a fixed room cut "px per triangle (log)" beside 4-digit ticks and left
+        a short label's room empty)."""
+        canvas = self.fig.canvas
+        renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
+        if renderer is None:
+            return FRAME_MARGINS[-1]
+        right = self.cax.get_tightbbox(renderer).x1 / self.fig.dpi
+        return right - self.cax.get_position().x1 * self.fig.get_size_inches()[0] + 0.06
+
+    def _fit_figure(self, label: float | None = None) -> None:
         """Size the frame's figure to what it draws: the frame at its own aspect (no band
         above and below it), the labels left of and above it, and the colour bar's room on
         the right only in a view that has one (the image view left the right third of the
-        figure empty: review r12, exercise 11). The frame keeps its size and place."""
+        figure empty: review r12, exercise 11), ``label`` inches for its ticks and label
+        (:meth:`_bar_room`; by default :data:`FRAME_MARGINS`'). The frame keeps its size and
+        place."""
         scale = min(FRAME_BOX[0] / self.width, FRAME_BOX[1] / self.height)  # inches a pixel
         w, h = self.width * scale, self.height * scale
-        left, top, bottom, gap, bar, label = FRAME_MARGINS
+        left, top, bottom, gap, bar, room = FRAME_MARGINS
+        label = room if label is None else label
         right = gap + bar + label if self.view.value != "image" else bottom
         fw, fh = left + w + right, bottom + h + top
         if not np.allclose(self.fig.get_size_inches(), (fw, fh)):  # a live canvas resizes
@@ -375,6 +431,8 @@ class FrameInspector(Holdable):
             ax.set_title(f"{self.scene.value}: the frame{glass}", fontsize="small")
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
+            fit_bar_label(self.cax)
+            self._fit_figure(self._bar_room())  # the ticks and label as drawn (review r18)
         fit_title(ax)
         # the pixel's outline and four ticks pointing at it, with a white halo: one pixel of
         # a 64-pixel frame must be found on a projector, on any colour
