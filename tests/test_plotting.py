@@ -374,6 +374,33 @@ def test_fill_view_shows_the_current_pixel_and_rejected_pixels():
     assert rejected.sum() > 0
 
 
+def test_fill_view_outlines_the_block_a_tiles_step_classifies():
+    """Review r19 (lesson 00, the player in tiles mode): the caption named "4×4 block at
+    (row 4, col 0)" and the picture outlined nothing. Each block step outlines its block
+    (its extent inside the image), and a pixel step after it one pixel again."""
+    import teachraster as tr
+
+    xy = np.array([(1.3, 1.2), (14.6, 4.7), (5.2, 14.1)])
+    fill = tr.rasterize(tr.Triangle(xy), 16, 16, method="tiled", trace=True)
+    t = fill.trace
+    view = tp.FillView(fill)
+    shown = 0
+    for k in range(t.first_work_step, t.first_work_step + len(t.blocks)):
+        step = view.show_step(k, draw=False)
+        assert step.kind == "block" and step.extent is not None
+        rows, cols = step.extent
+        assert view.pixel.box.get_visible() and not view.pixel.centre.get_visible()
+        assert view.pixel.box.get_bbox().bounds == (step.col, step.row, cols, rows)
+        assert f"({step.row}" in step.caption or f"row {step.row}" in step.caption
+        shown += 1
+    assert shown == len(t.blocks) > 1
+    view.show_step(0, draw=False)  # a set-up step: nothing outlined
+    assert not view.pixel.box.get_visible()
+    half = make_fill("halfplane")
+    view.set_fill(half, step=half.trace.first_work_step, draw=False)
+    assert view.pixel.box.get_bbox().bounds[2:] == (1, 1) and view.pixel.centre.get_visible()
+
+
 def test_fill_view_set_fill_reuses_the_artists():
     view = tp.FillView(make_fill("span"))
     n_children = len(view.ax.get_children())

@@ -60,7 +60,8 @@ class Step:
     block number, from 0). A ``"row"`` step also carries its span:
     ``span_x`` where the raster line's centre crosses its left and right edges (px) and
     ``columns`` the covered columns ``start <= j < stop`` (``span_x`` is None when an end is
-    not finite), so an artist can draw the step from the Step alone.
+    not finite), so an artist can draw the step from the Step alone. A ``"block"`` step
+    carries ``extent``, the block's (rows, columns) inside the image, for the same reason.
     """
 
     index: int
@@ -71,6 +72,7 @@ class Step:
     work: int | None = None
     span_x: tuple[float, float] | None = None
     columns: tuple[int, int] | None = None
+    extent: tuple[int, int] | None = None
 
 
 @dataclass(frozen=True)
@@ -251,7 +253,9 @@ class FillTrace:
         if self.blocks is not None:
             b = self.blocks
             caption = b.caption(i, self.edges)
-            return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]), work=i)
+            extent = (int(b.extent[i, 0]), int(b.extent[i, 1]))
+            return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]), work=i,
+                        extent=extent)  # fmt: skip
         return self._pixel_step(k, i)
 
     def caption(self, k: int) -> str:

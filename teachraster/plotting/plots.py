@@ -604,17 +604,26 @@ class PixelArtists(Artists):
     centre: Line2D
 
     def update(self, step: Step) -> None:
-        """Show the pixel of ``step`` (hidden unless it tests one pixel)."""
+        """Show the pixel of ``step``, or outline the block a tiles step classifies (review
+        r19, lesson 00: the caption named a 4×4 block the picture never showed); hidden
+        for every other step."""
+        if step.kind == "block" and step.extent is not None:
+            rows, cols = step.extent
+            self.box.set_bounds(step.col, step.row, cols, rows)
+            self.box.set_visible(True)
+            self.centre.set_visible(False)
+            return
         if step.kind != "pixel":
             self.set_visible(False)
             return
-        self.box.set_xy((step.col, step.row))
+        self.box.set_bounds(step.col, step.row, 1, 1)
         self.centre.set_data([step.col + 0.5], [step.row + 0.5])
         self.set_visible(True)
 
 
 def plot_current_pixel(ax, fill, k: int) -> PixelArtists:
-    """Outline the pixel that step ``k`` of a half-plane fill tests, and mark its centre.
+    """Outline the pixel that step ``k`` of a half-plane fill tests, and mark its centre (or
+    the block a tiles step classifies).
 
     Parameters
     ----------
