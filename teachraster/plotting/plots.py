@@ -462,8 +462,14 @@ class SplitArtists(Artists):
         wide = self.label.get_fontsize() * (0.65 * max(map(len, text.split("\n"))) + 0.8)
         room = _room_left_of(self.label.axes, s.u4)
         if away_left and room < wide - dx:
-            # no room left of point 4: the label starts at the grid's left edge instead (review
-            # r9 00 c14: it stuck out of the grid onto the "row i" axis label)
+            # no room left of point 4 for both lines: its number alone, still outside the
+            # triangle (review r19, lesson 00: starting at the grid's left edge, the label ran
+            # over the covered centres right of point 4); the caption gives u4's value
+            text = "4"
+            wide = self.label.get_fontsize() * (0.65 + 0.8)
+        if away_left and room < wide - dx:
+            # not even that: the label starts at the grid's left edge instead (review r9 00
+            # c14: it stuck out of the grid onto the "row i" axis label)
             away_left, dx = False, fs(0.3) - room
         self.label.xy = (s.u4, v2y)
         self.label.set_position((dx, -fs(0.6)))
