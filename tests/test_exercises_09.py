@@ -1259,3 +1259,21 @@ def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
     report = ex.check("over_straight", porter_duff, budget=60)
     assert not report.passed and report.package, str(report)
     assert "a part of straight_over's own computation" in report.package, report.package
+
+
+def test_9_2a_general_message_sends_back_to_the_steps_without_the_weights():
+    """r19 E-2: a wrong answer no mistake names got the general recipe, which stated the
+    weights the task asks the student to derive; it now points at the derivation's steps."""
+
+    def double_premultiplied(s, d):  # no mistake names it: the general message
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        return over_straight(np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]])
+
+    report = ex.check("over_straight", double_premultiplied, budget=60)
+    assert not report.passed
+    general = [f.explanation.split("yours is ", 1)[1] for f in report.failures]
+    assert general and all("derivation's steps" in w for w in general), general
+    for words in general:  # the case's numbers come before "yours is"; the message after it
+        words = words.split(": ", 1)[1]
+        for weight in ("α_d of the 1 − α_s", "the source in α_s", "(0, 0, 0, 0)", "1 − α_s"):
+            assert weight not in words, (weight, words)

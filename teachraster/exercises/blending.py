@@ -129,10 +129,15 @@ _FROM_STRAIGHT = (": each colour counts in the share of the pixel where it shows
                   "the colour times that alpha")  # fmt: skip
 
 
-_STRAIGHT_RULE = (": each colour counts in the share of the pixel where it shows (the source "
-                  "in α_s, the destination in α_d of the 1 − α_s the source leaves), the "
-                  "result's alpha α is the share either covers, and the straight colour is what "
-                  "you see spread over that share; where α = 0, (0, 0, 0, 0)")  # fmt: skip
+#: 9.2a's general message: the task asks the student to derive the weights, so a wrong answer
+#: no mistake names is sent back to the derivation's steps, not given them (r19 E-2: this
+#: stated both weights, the answer to step 1, on any careless first try).
+_STRAIGHT_RULE = (": go back through the derivation's steps: (1) in what share of the pixel "
+                  "does the source show, and in what share the destination, which covers α_d "
+                  "of any part of the pixel? (2) the light is each colour times its share, "
+                  "summed; (3) the result's alpha α is the share either covers; (4) the "
+                  "straight colour is that light divided by α, and where that division has no "
+                  "answer, the task says what to return")  # fmt: skip
 
 
 def _rule(mode: str):
