@@ -1277,3 +1277,33 @@ def test_9_2a_general_message_sends_back_to_the_steps_without_the_weights():
         words = words.split(": ", 1)[1]
         for weight in ("α_d of the 1 − α_s", "the source in α_s", "(0, 0, 0, 0)", "1 − α_s"):
             assert weight not in words, (weight, words)
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [
+        lambda s, d: s * (1 - s[3]) + d * s[3],
+        lambda s, d: np.r_[s[:3] * (1 - s[3]) + d[:3] * s[3], s[3] + d[3] * (1 - s[3])],
+        lambda s, d: np.r_[s[:3] * (1 - s[3]) + d[:3] * d[3] * s[3], min(1.0, s[3] + d[3])],
+    ],
+    ids=["pair swapped, four channels", "pair swapped, alpha right", "swapped, alpha summed"],
+)
+def test_9_2a_swapped_pair_is_named_whatever_the_alpha(fn):
+    """r19 E-1: the factor pair swapped on all four channels was told "your red, green and
+    blue are right, your alpha is not" (true only at α_s = ½), and with its alpha mended got
+    the general message: every failing case now names the swap."""
+    report = ex.check("over_straight", lambda s, d: fn(np.asarray(s, float), np.asarray(d, float)),
+                      budget=60)  # fmt: skip
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"weights swapped"}
+    assert all("swapped the weights" in f.explanation for f in report.failures)
+    assert not any("your red, green and blue are right" in f.explanation
+                   for f in report.failures)  # fmt: skip
+
+
+def test_9_2a_colour_right_alpha_wrong_is_not_called_swapped():
+    """The swap fits α_s = ½ over an opaque destination by coincidence: an answer whose colour
+    is right everywhere is still told its alpha is wrong, not that it swapped."""
+    report = ex.check("over_straight", lambda s, d: np.r_[over_straight(s, d)[:3], 0.123],
+                      budget=60)  # fmt: skip
+    assert report.failures and not any(f.kind == "weights swapped" for f in report.failures)

@@ -430,6 +430,41 @@ def _alpha_mistakes(right) -> list[Mistake]:
     return out + [Mistake("alpha only", words, fits=colour_right, symptom=True)]
 
 
+def _swapped_colours(src, dst, alpha) -> list[np.ndarray]:
+    """The colours over's factor pair gives swapped, source by 1 − α_s and destination by
+    α_s: GL's pair (the destination's own alpha left out) and Porter and Duff's (α_d kept),
+    each as it is and divided by ``alpha``."""
+    a = src[3]
+    out = []
+    for colour in (src[:3] * (1 - a) + dst[:3] * a, src[:3] * (1 - a) + dst[:3] * dst[3] * a):
+        out.append(colour)
+        if alpha != 0:
+            out.append(colour / alpha)
+    return out
+
+
+def _swapped_any_alpha(args, expected, got) -> bool:
+    """The swapped factor pair, whatever the alpha (r19 E-1: swapped on all four channels it
+    was told "your red, green and blue are right", true only where α_s = ½ makes the two
+    weights equal, and its alpha mended, it got the general recipe)."""
+    src, dst = (np.asarray(c, float) for c in args)
+    g = np.asarray(got, float).ravel()
+    if g.shape != (4,) or not np.isfinite(g).all():
+        return False
+    alphas = {float(g[3]), float(expected[3])}
+    return any(all_close(g[:3], c, 1e-6) for a in alphas for c in _swapped_colours(src, dst, a))
+
+
+def _swapped_words(args, expected, got) -> str:
+    alpha = ("" if all_close(np.asarray(got, float)[3:], expected[3:], 1e-6) else
+             "; your alpha is wrong too: the result's alpha is the share of the pixel src or dst "
+             "covers")  # fmt: skip
+    return ("you swapped the weights of over: the source counts in its "
+            "own share α_s of the pixel, not in the 1 − α_s it leaves uncovered, and the "
+            "destination in α_d of that uncovered share, not in the share α_s the source "
+            "covers" + alpha)  # fmt: skip
+
+
 def _unpremultiplied(src, dst):
     """9.2a reused after dividing by alpha (0 where alpha is 0): a glow's light is lost."""
 
@@ -481,7 +516,11 @@ def _mistakes(mode: str) -> list[Mistake]:
                       "and dividing it by α = 0 has no answer; the task gives the answer there, "
                       "(0, 0, 0, 0): test α before you divide", fits=_nan_at_zero)  # fmt: skip
         table = [Mistake(k, w, gives=g) for k, w, g in (*COMMON[:2], *STRAIGHT)]  # r14 09-7
-        return [nan, *table, *_alpha_mistakes(straight_over)]
+        # only_whole: at α_s = ½ over an opaque destination the swap gives the right colour,
+        # so a right colour with a wrong alpha fits it there; named only when it fits them all
+        swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
+                          only_whole=True)  # fmt: skip
+        return [nan, *table, swapped, *_alpha_mistakes(straight_over)]
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
