@@ -1218,9 +1218,21 @@ def test_9_2b_shares_9_2s_one_point_with_9_2a():
     points = {g["grade_id"]: g["points"] for g in grading if g["grade"]}
     assert points["over_straight_check"] + points["over_premultiplied_check"] == 1, points
     assert points["line_pixels_check"] == points["front_to_back_check"] == 1, points
+    first = " ".join(_nb_cells()["over_straight_task"].split())
+    assert "half for 9.2a and half for 9.2b" in first and "lesson 12 §9 prints" in first, first
+
+
+def test_9_2b_asks_its_questions_without_answering_them():
+    """r19 E-3, E-4: the alpha question was answered by the next sentence ("That is the rule
+    lesson 12 §9 states"), and the glow's "covers nothing and adds its light" and "what no
+    straight one can" answered the question asked about it. The questions now stand alone;
+    the solution cell and the check's explanations hold the answers."""
     task = " ".join(_nb_cells()["over_premultiplied_task"].split())
-    assert "shares 9.2's point with 9.2a" in task and "lesson 12 §9 states" in task, task
-    assert "half for 9.2a and half for 9.2b" in " ".join(_nb_cells()["over_straight_task"].split())
+    assert "does it follow the same rule as the colour" in task, task
+    assert "what your rule gives there" in task and "(0.3, 0.2, 0.05, 0)" in task, task
+    for answer in ("lesson 12 §9 states", "adds its light", "no straight one can", "covers "
+                   "nothing", "glow", "shares 9.2's point", "cannot give it"):  # fmt: skip
+        assert answer not in task, answer
 
 
 def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
