@@ -1319,3 +1319,39 @@ def test_9_2a_colour_right_alpha_wrong_is_not_called_swapped():
     report = ex.check("over_straight", lambda s, d: np.r_[over_straight(s, d)[:3], 0.123],
                       budget=60)  # fmt: skip
     assert report.failures and not any(f.kind == "weights swapped" for f in report.failures)
+
+
+def test_9_3_passing_figure_keeps_expected_and_yours_apart():
+    """r19 E-6: in the passing 9.3 figure "expected" and "yours" nearly touched."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import use_style
+
+    use_style("classroom")
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("front_to_back", front_to_back, budget=60).plot(ax)
+    fig.canvas.draw()
+    boxes = {t.get_text(): t.get_window_extent() for t in ax.get_xticklabels()}
+    gap = boxes["yours"].x0 - boxes["expected"].x1
+    plt.close(fig)
+    assert gap >= 20, gap  # pixels at the figure's dpi
+
+
+def test_straight_blend_claim_and_float_alpha_note():
+    """r19 E-5: GL's straight blend is exact over an opaque destination and also where the
+    source is opaque or wholly transparent ("only over an opaque destination" was false);
+    E-7: 9.3 says that float alpha can reach 1.0 while light still gets through."""
+    task = " ".join(_nb_cells()["over_straight_task"].split())
+    assert "only over an opaque" not in task and "opaque or wholly transparent" in task, task
+    assert "the check tries such a case" in task, task
+    said = str(ex.check("over_straight", lambda s, d: np.asarray(s) * s[3] + np.asarray(d) *
+                        (1 - s[3]), budget=60))  # fmt: skip
+    assert "exact only over an opaque" not in said and "opaque or wholly transparent" in said
+    walk = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "round to exactly 1.0" in walk and "two layers of alpha 1 − 2⁻³⁰" in walk, walk
+    a = 1 - 2.0**-30  # the note's example, as float64 accumulates it
+    alpha, through = a + (1 - a) * a, (1 - a) ** 2
+    assert alpha == 1.0 and through > 0

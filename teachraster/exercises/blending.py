@@ -306,8 +306,9 @@ STRAIGHT = [
      "each must first count in the share of the pixel where it shows (C·α), and the sum, "
      "α·C, divided by α", lambda s, d: _scaled(s, d, 1, 1 - s[3])),
     ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s) on all four "
-     "channels: its colour is exact only over an opaque destination (a translucent one shows "
-     "in α_d of the share 1 − α_s, not in all of it), and its alpha counts α_s twice",
+     "channels: over a translucent destination its colour is wrong unless the source is "
+     "opaque or wholly transparent (a translucent destination shows in α_d of the share "
+     "1 − α_s, not in all of it), and its alpha counts α_s twice",
      lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("destination alpha ignored", "your alpha is right, but you weighted the destination's "
      "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
@@ -568,22 +569,24 @@ def _exercise(name: str, mode: str) -> Exercise:
     )  # fmt: skip
 
 
-def swatches(ax, cells, names, straight=()):
+def swatches(ax, cells, names, straight=(), gap=None):
     """RGBA colours as swatches over a checkerboard, each named with its four numbers below.
 
-    ``cells`` are premultiplied, except those whose index is in ``straight``. Returns the
-    artists.
+    ``cells`` are premultiplied, except those whose index is in ``straight``. From index
+    ``gap`` on, the swatches stand a little further right (their labels apart from those
+    before them). Returns the artists.
     """
     check = (np.indices((8, 8)).sum(axis=0) % 2)[..., None] * 0.3 + 0.6
+    left = [k * 1.3 + (0.6 if gap is not None and k >= gap else 0) for k in range(len(cells))]
     artists = []
     for k, c in enumerate(cells):
         c = np.clip(np.nan_to_num(np.asarray(c, float)), 0, 1)
         rgb = c[:3] * c[3] if k in straight else c[:3]
         image = np.clip(rgb + (1 - c[3]) * check, 0, 1)  # premultiplied over the checkerboard
-        artists.append(ax.imshow(image, extent=(k * 1.3, k * 1.3 + 1, 1, 0)))
-    ax.set_xlim(-0.15, max(len(cells), 2) * 1.3)
+        artists.append(ax.imshow(image, extent=(left[k], left[k] + 1, 1, 0)))
+    ax.set_xlim(-0.15, max(left[-1] + 1.3 if left else 0, 2 * 1.3))
     ax.set_ylim(1.05, -0.05)
-    ax.set_xticks([k * 1.3 + 0.5 for k in range(len(cells))], names, fontsize="x-small")
+    ax.set_xticks([x + 0.5 for x in left], names, fontsize="x-small")
     ax.set_yticks([])
     return artists
 
