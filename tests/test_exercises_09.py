@@ -1218,9 +1218,21 @@ def test_9_2b_shares_9_2s_one_point_with_9_2a():
     points = {g["grade_id"]: g["points"] for g in grading if g["grade"]}
     assert points["over_straight_check"] + points["over_premultiplied_check"] == 1, points
     assert points["line_pixels_check"] == points["front_to_back_check"] == 1, points
+    first = " ".join(_nb_cells()["over_straight_task"].split())
+    assert "half for 9.2a and half for 9.2b" in first and "lesson 12 §9 prints" in first, first
+
+
+def test_9_2b_asks_its_questions_without_answering_them():
+    """r19 E-3, E-4: the alpha question was answered by the next sentence ("That is the rule
+    lesson 12 §9 states"), and the glow's "covers nothing and adds its light" and "what no
+    straight one can" answered the question asked about it. The questions now stand alone;
+    the solution cell and the check's explanations hold the answers."""
     task = " ".join(_nb_cells()["over_premultiplied_task"].split())
-    assert "shares 9.2's point with 9.2a" in task and "lesson 12 §9 states" in task, task
-    assert "half for 9.2a and half for 9.2b" in " ".join(_nb_cells()["over_straight_task"].split())
+    assert "does it follow the same rule as the colour" in task, task
+    assert "what your rule gives there" in task and "(0.3, 0.2, 0.05, 0)" in task, task
+    for answer in ("lesson 12 §9 states", "adds its light", "no straight one can", "covers "
+                   "nothing", "glow", "shares 9.2's point", "cannot give it"):  # fmt: skip
+        assert answer not in task, answer
 
 
 def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
@@ -1259,3 +1271,87 @@ def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
     report = ex.check("over_straight", porter_duff, budget=60)
     assert not report.passed and report.package, str(report)
     assert "a part of straight_over's own computation" in report.package, report.package
+
+
+def test_9_2a_general_message_sends_back_to_the_steps_without_the_weights():
+    """r19 E-2: a wrong answer no mistake names got the general recipe, which stated the
+    weights the task asks the student to derive; it now points at the derivation's steps."""
+
+    def double_premultiplied(s, d):  # no mistake names it: the general message
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        return over_straight(np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]])
+
+    report = ex.check("over_straight", double_premultiplied, budget=60)
+    assert not report.passed
+    general = [f.explanation.split("yours is ", 1)[1] for f in report.failures]
+    assert general and all("derivation's steps" in w for w in general), general
+    for words in general:  # the case's numbers come before "yours is"; the message after it
+        words = words.split(": ", 1)[1]
+        for weight in ("α_d of the 1 − α_s", "the source in α_s", "(0, 0, 0, 0)", "1 − α_s"):
+            assert weight not in words, (weight, words)
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [
+        lambda s, d: s * (1 - s[3]) + d * s[3],
+        lambda s, d: np.r_[s[:3] * (1 - s[3]) + d[:3] * s[3], s[3] + d[3] * (1 - s[3])],
+        lambda s, d: np.r_[s[:3] * (1 - s[3]) + d[:3] * d[3] * s[3], min(1.0, s[3] + d[3])],
+    ],
+    ids=["pair swapped, four channels", "pair swapped, alpha right", "swapped, alpha summed"],
+)
+def test_9_2a_swapped_pair_is_named_whatever_the_alpha(fn):
+    """r19 E-1: the factor pair swapped on all four channels was told "your red, green and
+    blue are right, your alpha is not" (true only at α_s = ½), and with its alpha mended got
+    the general message: every failing case now names the swap."""
+    report = ex.check("over_straight", lambda s, d: fn(np.asarray(s, float), np.asarray(d, float)),
+                      budget=60)  # fmt: skip
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"weights swapped"}
+    assert all("swapped the weights" in f.explanation for f in report.failures)
+    assert not any("your red, green and blue are right" in f.explanation
+                   for f in report.failures)  # fmt: skip
+
+
+def test_9_2a_colour_right_alpha_wrong_is_not_called_swapped():
+    """The swap fits α_s = ½ over an opaque destination by coincidence: an answer whose colour
+    is right everywhere is still told its alpha is wrong, not that it swapped."""
+    report = ex.check("over_straight", lambda s, d: np.r_[over_straight(s, d)[:3], 0.123],
+                      budget=60)  # fmt: skip
+    assert report.failures and not any(f.kind == "weights swapped" for f in report.failures)
+
+
+def test_9_3_passing_figure_keeps_expected_and_yours_apart():
+    """r19 E-6: in the passing 9.3 figure "expected" and "yours" nearly touched."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import use_style
+
+    use_style("classroom")
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("front_to_back", front_to_back, budget=60).plot(ax)
+    fig.canvas.draw()
+    boxes = {t.get_text(): t.get_window_extent() for t in ax.get_xticklabels()}
+    gap = boxes["yours"].x0 - boxes["expected"].x1
+    plt.close(fig)
+    assert gap >= 20, gap  # pixels at the figure's dpi
+
+
+def test_straight_blend_claim_and_float_alpha_note():
+    """r19 E-5: GL's straight blend is exact over an opaque destination and also where the
+    source is opaque or wholly transparent ("only over an opaque destination" was false);
+    E-7: 9.3 says that float alpha can reach 1.0 while light still gets through."""
+    task = " ".join(_nb_cells()["over_straight_task"].split())
+    assert "only over an opaque" not in task and "opaque or wholly transparent" in task, task
+    assert "the check tries such a case" in task, task
+    said = str(ex.check("over_straight", lambda s, d: np.asarray(s) * s[3] + np.asarray(d) *
+                        (1 - s[3]), budget=60))  # fmt: skip
+    assert "exact only over an opaque" not in said and "opaque or wholly transparent" in said
+    walk = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "round to exactly 1.0" in walk and "two layers of alpha 1 − 2⁻³⁰" in walk, walk
+    a = 1 - 2.0**-30  # the note's example, as float64 accumulates it
+    alpha, through = a + (1 - a) * a, (1 - a) ** 2
+    assert alpha == 1.0 and through > 0

@@ -129,10 +129,15 @@ _FROM_STRAIGHT = (": each colour counts in the share of the pixel where it shows
                   "the colour times that alpha")  # fmt: skip
 
 
-_STRAIGHT_RULE = (": each colour counts in the share of the pixel where it shows (the source "
-                  "in α_s, the destination in α_d of the 1 − α_s the source leaves), the "
-                  "result's alpha α is the share either covers, and the straight colour is what "
-                  "you see spread over that share; where α = 0, (0, 0, 0, 0)")  # fmt: skip
+#: 9.2a's general message: the task asks the student to derive the weights, so a wrong answer
+#: no mistake names is sent back to the derivation's steps, not given them (r19 E-2: this
+#: stated both weights, the answer to step 1, on any careless first try).
+_STRAIGHT_RULE = (": go back through the derivation's steps: (1) in what share of the pixel "
+                  "does the source show, and in what share the destination, which covers α_d "
+                  "of any part of the pixel? (2) the light is each colour times its share, "
+                  "summed; (3) the result's alpha α is the share either covers; (4) the "
+                  "straight colour is that light divided by α, and where that division has no "
+                  "answer, the task says what to return")  # fmt: skip
 
 
 def _rule(mode: str):
@@ -301,8 +306,9 @@ STRAIGHT = [
      "each must first count in the share of the pixel where it shows (C·α), and the sum, "
      "α·C, divided by α", lambda s, d: _scaled(s, d, 1, 1 - s[3])),
     ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s) on all four "
-     "channels: its colour is exact only over an opaque destination (a translucent one shows "
-     "in α_d of the share 1 − α_s, not in all of it), and its alpha counts α_s twice",
+     "channels: over a translucent destination its colour is wrong unless the source is "
+     "opaque or wholly transparent (a translucent destination shows in α_d of the share "
+     "1 − α_s, not in all of it), and its alpha counts α_s twice",
      lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("destination alpha ignored", "your alpha is right, but you weighted the destination's "
      "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
@@ -425,6 +431,41 @@ def _alpha_mistakes(right) -> list[Mistake]:
     return out + [Mistake("alpha only", words, fits=colour_right, symptom=True)]
 
 
+def _swapped_colours(src, dst, alpha) -> list[np.ndarray]:
+    """The colours over's factor pair gives swapped, source by 1 − α_s and destination by
+    α_s: GL's pair (the destination's own alpha left out) and Porter and Duff's (α_d kept),
+    each as it is and divided by ``alpha``."""
+    a = src[3]
+    out = []
+    for colour in (src[:3] * (1 - a) + dst[:3] * a, src[:3] * (1 - a) + dst[:3] * dst[3] * a):
+        out.append(colour)
+        if alpha != 0:
+            out.append(colour / alpha)
+    return out
+
+
+def _swapped_any_alpha(args, expected, got) -> bool:
+    """The swapped factor pair, whatever the alpha (r19 E-1: swapped on all four channels it
+    was told "your red, green and blue are right", true only where α_s = ½ makes the two
+    weights equal, and its alpha mended, it got the general recipe)."""
+    src, dst = (np.asarray(c, float) for c in args)
+    g = np.asarray(got, float).ravel()
+    if g.shape != (4,) or not np.isfinite(g).all():
+        return False
+    alphas = {float(g[3]), float(expected[3])}
+    return any(all_close(g[:3], c, 1e-6) for a in alphas for c in _swapped_colours(src, dst, a))
+
+
+def _swapped_words(args, expected, got) -> str:
+    alpha = ("" if all_close(np.asarray(got, float)[3:], expected[3:], 1e-6) else
+             "; your alpha is wrong too: the result's alpha is the share of the pixel src or dst "
+             "covers")  # fmt: skip
+    return ("you swapped the weights of over: the source counts in its "
+            "own share α_s of the pixel, not in the 1 − α_s it leaves uncovered, and the "
+            "destination in α_d of that uncovered share, not in the share α_s the source "
+            "covers" + alpha)  # fmt: skip
+
+
 def _unpremultiplied(src, dst):
     """9.2a reused after dividing by alpha (0 where alpha is 0): a glow's light is lost."""
 
@@ -476,7 +517,11 @@ def _mistakes(mode: str) -> list[Mistake]:
                       "and dividing it by α = 0 has no answer; the task gives the answer there, "
                       "(0, 0, 0, 0): test α before you divide", fits=_nan_at_zero)  # fmt: skip
         table = [Mistake(k, w, gives=g) for k, w, g in (*COMMON[:2], *STRAIGHT)]  # r14 09-7
-        return [nan, *table, *_alpha_mistakes(straight_over)]
+        # only_whole: at α_s = ½ over an opaque destination the swap gives the right colour,
+        # so a right colour with a wrong alpha fits it there; named only when it fits them all
+        swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
+                          only_whole=True)  # fmt: skip
+        return [nan, *table, swapped, *_alpha_mistakes(straight_over)]
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
@@ -524,22 +569,24 @@ def _exercise(name: str, mode: str) -> Exercise:
     )  # fmt: skip
 
 
-def swatches(ax, cells, names, straight=()):
+def swatches(ax, cells, names, straight=(), gap=None):
     """RGBA colours as swatches over a checkerboard, each named with its four numbers below.
 
-    ``cells`` are premultiplied, except those whose index is in ``straight``. Returns the
-    artists.
+    ``cells`` are premultiplied, except those whose index is in ``straight``. From index
+    ``gap`` on, the swatches stand a little further right (their labels apart from those
+    before them). Returns the artists.
     """
     check = (np.indices((8, 8)).sum(axis=0) % 2)[..., None] * 0.3 + 0.6
+    left = [k * 1.3 + (0.6 if gap is not None and k >= gap else 0) for k in range(len(cells))]
     artists = []
     for k, c in enumerate(cells):
         c = np.clip(np.nan_to_num(np.asarray(c, float)), 0, 1)
         rgb = c[:3] * c[3] if k in straight else c[:3]
         image = np.clip(rgb + (1 - c[3]) * check, 0, 1)  # premultiplied over the checkerboard
-        artists.append(ax.imshow(image, extent=(k * 1.3, k * 1.3 + 1, 1, 0)))
-    ax.set_xlim(-0.15, max(len(cells), 2) * 1.3)
+        artists.append(ax.imshow(image, extent=(left[k], left[k] + 1, 1, 0)))
+    ax.set_xlim(-0.15, max(left[-1] + 1.3 if left else 0, 2 * 1.3))
     ax.set_ylim(1.05, -0.05)
-    ax.set_xticks([k * 1.3 + 0.5 for k in range(len(cells))], names, fontsize="x-small")
+    ax.set_xticks([x + 0.5 for x in left], names, fontsize="x-small")
     ax.set_yticks([])
     return artists
 

@@ -367,7 +367,8 @@ def draw_layers(ax, case, got):
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
         names += ["expected", "yours"]
-    artists = swatches(ax, cells, names)
+    # r19 E-6: "expected" and "yours" nearly touched, the composites a gap apart from layers
+    artists = swatches(ax, cells, names, gap=len(layers) + 1 if got is not None else None)
     for k in past:  # crossed out: read behind the opaque layer, where nothing can show
         x = k * 1.3  # swatches' spacing (blending.swatches)
         artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
