@@ -1330,13 +1330,15 @@ def test_9_3_passing_figure_keeps_expected_and_yours_apart():
 
     from teachraster.plotting import use_style
 
-    use_style("classroom")
-    fig, ax = plt.subplots(figsize=(7, 4))
-    ex.check("front_to_back", front_to_back, budget=60).plot(ax)
-    fig.canvas.draw()
-    boxes = {t.get_text(): t.get_window_extent() for t in ax.get_xticklabels()}
-    gap = boxes["yours"].x0 - boxes["expected"].x1
-    plt.close(fig)
+    # within a block: set for good, the style leaked into later tests of the same worker
+    # (CI: test_style_applies_to_the_widget_only read font.size 18)
+    with use_style("classroom"):
+        fig, ax = plt.subplots(figsize=(7, 4))
+        ex.check("front_to_back", front_to_back, budget=60).plot(ax)
+        fig.canvas.draw()
+        boxes = {t.get_text(): t.get_window_extent() for t in ax.get_xticklabels()}
+        gap = boxes["yours"].x0 - boxes["expected"].x1
+        plt.close(fig)
     assert gap >= 20, gap  # pixels at the figure's dpi
 
 
