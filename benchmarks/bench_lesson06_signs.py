@@ -27,19 +27,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 import teachraster as tr  # noqa: E402
 from teachraster.study import bench, precision  # noqa: E402
+from teachraster.study.bench import timing  # noqa: E402
 
 
 def fastest(fns, rounds: int) -> list[float]:
     """The fastest of ``rounds`` interleaved runs of each fn, in this process's CPU time."""
-    for fn in fns:  # warm up
-        fn()
-    best = [float("inf")] * len(fns)
-    for _ in range(rounds):
-        for k, fn in enumerate(fns):
-            t0 = time.process_time()
-            fn()
-            best[k] = min(best[k], time.process_time() - t0)
-    return best
+    return [min(t) for t in timing.time_samples(fns, rounds, clock=time.process_time)]
 
 
 def claims(size: int, rounds: int) -> list[tuple[str, bool, str]]:

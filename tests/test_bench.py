@@ -187,6 +187,18 @@ def test_fill_rows_time_the_bare_coverage_beside_the_textured_fill():
     assert tri.w is not None and "uv" in tri.attrs  # the whole fill interpolates uv
 
 
+@pytest.mark.parametrize("method", ["halfplane", "span"])
+@pytest.mark.parametrize("traced", [False, True])
+def test_the_bare_triangle_the_fill_rows_time_covers_what_the_textured_fill_covers(method, traced):
+    """The fill rows' ``coverage_*_s`` time the bare positions as the part of the textured
+    fill that is coverage: that holds only if both cover the same pixels (checked here, not
+    inside the benchmark, where it cost two extra fills per variant)."""
+    tri = bench.fill_triangle(48)
+    bare = tr.Triangle(tri.xy)
+    got = tr.rasterize(bare, 48, 48, method=method, trace=traced).coverage
+    assert got.any() and np.array_equal(got, tr.rasterize(tri, 48, 48, method=method).coverage)
+
+
 @pytest.mark.bench
 def test_lesson_06_signs_benchmark_reports_every_claim():
     """Review r17 06-1..3: the signs lesson 06 states for numpy's times (subdivided slower at

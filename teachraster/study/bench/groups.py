@@ -245,7 +245,6 @@ def bench_fill(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
                         "pixels": int(ref.sum()),
                     }
                 )
-                assert np.array_equal(cover().coverage, fill().coverage)
                 timers.append(fill)
                 coverage_timers.append(cover)
                 progress.step(f"fill: {name}")
