@@ -573,10 +573,14 @@ class ComparisonView:
         every update.
     grid : bool
         Pixel boundaries on every panel (up to the grid size limit).
+    round_range : bool
+        The heatmap's colour range ends on a round number (``plotting.common.round_up``), so a
+        new maximum that rounds to a range drawn before puts the colour bar back from a cache.
     """
 
     def __init__(self, a, b, *, titles=("a", "b"), label: str = "|a − b|", axes=None,
-                 vmin=None, vmax=None, grid: bool = True) -> None:  # fmt: skip
+                 vmin=None, vmax=None, grid: bool = True,
+                 round_range: bool = False) -> None:  # fmt: skip
         a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
         h, w = a.shape[:2]
         caxes = [None, None, None]
@@ -624,7 +628,8 @@ class ComparisonView:
         self.axes[2].set_title("", y=1.0, pad=fs(3.4) if beside else fs(0.5))
         own_figure = caxes[2] is not None
         self.heatmap = plot_error_heatmap(self.axes[2], a, b, label=label,
-                                          colorbar=not own_figure)  # fmt: skip
+                                          colorbar=not own_figure,
+                                          round_range=round_range)  # fmt: skip
         if own_figure:
             self.heatmap.colorbar = self.fig.colorbar(self.heatmap.image, cax=caxes[2],
                                                       label=label)  # fmt: skip
