@@ -144,7 +144,9 @@ BROKEN_FRAMES = {
     4: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),  # the fragment colour
     5: ("blend order", (23, 41), (0.52, 0.67, 0.91)),  # the strip's 'after', overwritten
     6: ("sliver", (22, 40), (0.1213, 0.299992)),  # missed by, and the intended depth there
-    7: ("depth function", (24, 28), 0.263116),  # frame 1's cause at other depths (r16 11-2)
+    # r18-3: frame 1's cause on the strip's pixels (at the cube's, frame 1's function passed)
+    7: ("depth function", (25, 52), 0.4),  # the depth shown (the wall, mapped 1 - 0.6)
+    8: ("sliver", (21, 39), (0.0566, 0.299992)),  # frame 6's cause, another thin triangle
 }
 
 
@@ -184,6 +186,7 @@ READ = {
     5: lambda b, row, col: _glass(b.frame.history(row, col)).color_after[:3],
     6: _sliver,
     7: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
+    8: _sliver,
 }
 
 

@@ -22,14 +22,14 @@ from teachraster.exercises import broken_frames as bf
 #: The key, for the tests only (the package keeps salted hashes).
 ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
            4: "missing premultiplication", 5: "blend order", 6: "sliver",
-           7: "depth function"}  # fmt: skip
+           7: "depth function", 8: "sliver"}  # fmt: skip
 STAGE = {1: "depth test", 2: "culling", 3: "depth test", 4: "blending", 5: "blending",
-         6: "coverage", 7: "depth test"}  # fmt: skip
+         6: "coverage", 7: "depth test", 8: "coverage"}  # fmt: skip
 #: The frames that look alike, pixel for pixel (rendered and intended), and the look-alikes
-#: whose causes differ (r16 11-2: frames 1 and 7 share a cause, so no pair's causes are
+#: whose causes differ (r16 11-2: frames 6 and 8 share a cause, so no pair's causes are
 #: known to differ; each frame's twin below is a look-alike with another cause).
-GROUPS = [(1, 2, 7), (3, 4), (5, 6)]
-PAIRS = [(1, 2), (3, 4), (5, 6), (2, 7)]
+GROUPS = [(1, 2), (3, 4), (5, 6, 7, 8)]
+PAIRS = [(1, 2), (3, 4), (5, 6), (7, 8)]
 #: A made-up value of each kind of evidence.
 MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5),
            "triangle": 11}  # fmt: skip
@@ -160,6 +160,8 @@ def test_a_loop_over_one_pixels_history_values_fails_the_redrawn_frame(number):
     b = ex.broken_frame(number)
     pixels = np.argwhere(bf._differs(number))
     row, col = (int(v) for v in pixels[len(pixels) // 2])
+    if ANSWERS[number] not in _marks(number, row, col):  # frame 8: the sliver misses it
+        row, col = _showing(number)
     values = _harvest(b.frame.history(row, col)) + _harvest(b.intended.history(row, col))
     depths = [v for v in values if isinstance(v, float)]
     values += [(a, d) for a in depths for d in depths]
@@ -526,13 +528,13 @@ def test_the_evidence_needs_the_digits_the_history_prints():
 @pytest.mark.parametrize("number", list(ANSWERS))
 def test_each_changed_pixel_bears_the_mark_of_its_frames_cause_only(number):
     """The check judges a cause by its mark at the student's pixel: on a sample of every
-    frame's changed pixels, only the frame's own cause's mark is there (frame 6: or none,
-    where the sliver does not cross the pixel), and where it is, so is its evidence."""
+    frame's changed pixels, only the frame's own cause's mark is there (frames 6 and 8: or
+    none, where the sliver does not cross the pixel), and where it is, so is its evidence."""
     pixels = np.argwhere(bf._differs(number))
     for r, c in pixels[:: max(1, len(pixels) // 25)]:
         marks = _marks(number, int(r), int(c))
         assert marks <= {ANSWERS[number]}, (number, r, c, marks)
-        if number != 6:
+        if ANSWERS[number] != "sliver":
             assert marks == {ANSWERS[number]}, (number, r, c)
         if marks:
             assert bf._evidence(number, ANSWERS[number], bf._pixel(number, int(r), int(c)))
@@ -584,7 +586,7 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     for telling in ("reverse", "16-bit", "ties", "premultipl", "§9"):
         assert telling not in flat, telling
     row = next(
-        line for line in README.read_text().splitlines() if "diagnose seven broken frames" in line
+        line for line in README.read_text().splitlines() if "diagnose eight broken frames" in line
     )
     assert "lesson 11)" not in row and "after lesson 12" in row, row
     assert "**redrawn**" in how and "typed in" in how and "private functions" in how
@@ -659,6 +661,37 @@ def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
     assert "too bright" in shown and "alpha times" in shown, shown
     # r18-4: a "pair" is a frame and its intended frame, which do not look alike here
     assert "so that it looks like frame 3" in shown and "the pair" not in shown, shown
+
+
+def test_every_frame_has_its_note_after_its_check_none_singled_out(capsys):
+    """r18-5: "a cell after the check says how" came after frame 4's check alone, singling it
+    out as the contrived frame. Now every frame's check is followed by a cell of the same
+    code (frame 1's prints its depths), each note printed only once that frame's check has
+    passed, the placeholders the same words but for the number."""
+    cells, order = _cells(), list(_cells())
+    placeholders = set()
+    for n in ANSWERS:
+        after = order[order.index(f"broken_frame_{n}_check") + 1]
+        if n == 1:
+            assert after == "frame_1_depths"
+            continue
+        assert after == f"frame_{n}_note", (n, after)
+        source = cells[after]
+        assert source == cells["frame_4_note"].replace("4", str(n)), source
+        exec(source, {"ex": ex})
+        shown = capsys.readouterr().out
+        placeholders.add(shown.replace(str(n), "n"))
+        assert f"A note on frame {n} is printed here once" in shown, shown
+        other = 3 if n != 3 else 4  # another frame's passed report shows nothing
+        exec(source, {"ex": ex, "report": ex.check(f"broken_frame_{other}", sol.diagnosis(other))})
+        assert capsys.readouterr().out == shown
+        exec(source, {"ex": ex, "report": ex.check(f"broken_frame_{n}", sol.diagnosis(n))})
+        note = capsys.readouterr().out
+        assert note.startswith(f"Frame {n} is ") and "contrived" in note, note
+    assert len(placeholders) == 1, placeholders
+    assert "ontrived" not in " ".join(v for k, v in cells.items() if k.endswith("_task"))
+    with pytest.raises(ValueError, match="number must be one of"):
+        ex.frame_note(1, None)
 
 
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
@@ -786,7 +819,6 @@ def test_broken_frames_come_in_look_alike_groups_told_apart_only_by_their_histor
         assert not np.array_equal(bf._rgb(one.frame), bf._rgb(one.intended))
         assert {bf._parts_at(n, *_showing(n)) for n in (a, b)} == {STAGE[a], STAGE[b]}
     assert not ex.broken_frame(1).frame.trace.culled.any()
-    assert not ex.broken_frame(7).frame.trace.culled.any()
     assert ex.broken_frame(2).frame.trace.culled.any()
 
 
@@ -802,27 +834,45 @@ def _look_alike_groups(frames) -> list:
 def test_a_look_alikes_cause_tells_nothing_of_the_frames_cause():
     """r14/r16 11-2: each look-alike pair held two different causes, so a student who had
     solved one frame of a pair ruled its cause out for the other (and the picture narrowed
-    the other to the few causes left). Now the cube's three look-alikes hold one cause twice
-    and another once: knowing a look-alike's cause tells neither that the frame has it nor
+    the other to the few causes left). Now the strip's four look-alikes hold one cause twice
+    and two others once: knowing a look-alike's cause tells neither that the frame has it nor
     that it has not, in the data and in what the checker says."""
     assert _look_alike_groups(bf.broken_frames()) == GROUPS
     for look in bf._REDRAWN:  # the frames redrawn for a check look alike in the same groups
         redrawn = [bf._redrawn(n, look) for n in ANSWERS]
         assert _look_alike_groups(redrawn) == GROUPS, look
     assert all(len({ANSWERS[n] for n in g}) > 1 for g in GROUPS)  # no picture names a cause
-    for n in (1, 7):  # one look-alike shares the frame's cause, another does not
+    for n in (6, 8):  # one look-alike shares the frame's cause, others do not
         others = {ANSWERS[m] == ANSWERS[n] for g in GROUPS if n in g for m in g if m != n}
         assert others == {True, False}, n
-    # frame 1's diagnosis, read off the frame it is given, is frame 7's too, and not frame 2's
-    _passes("broken_frame_7", sol.diagnosis(1))
+    # frame 2's cause, the cube look-alike's, is no answer for frame 1, nor frame 1's for 2
     failure = _first(2, ("depth function", (24, 28), sol.READ[1](ex.broken_frame(2), 24, 28)))
     assert failure.kind == "cause", failure.explanation
-    # ... while the value frame 1 shows, typed in, is not frame 7's: its depths are its own
-    one = sol.BROKEN_FRAMES[1]
-    assert _first(7, one).kind == "evidence"
-    # frame 2's cause, the look-alike's, is no answer for frame 7
-    failure = _first(7, ("culled winding", (24, 28), sol.BROKEN_FRAMES[2][2]))
+    failure = _first(8, ("blend order", (21, 39), sol.READ[5](ex.broken_frame(5), 21, 39)))
     assert failure.kind == "cause", failure.explanation
+
+
+def test_a_diagnosis_copied_from_a_frame_with_the_same_cause_fails():
+    """r18-3: frame 7 was frame 1's mistake at the same pixels, and frame 1's function passed
+    11.7 unread. Frames that share a cause now bear its mark at other pixels: each solution,
+    run on every other frame with its cause, fails there (the pictures agree at its pixel, or
+    its histories lack the mark), and what each frame's solution reads is its own frame's."""
+    same = [(m, n) for m in ANSWERS for n in ANSWERS if m != n and ANSWERS[m] == ANSWERS[n]]
+    assert sorted(same) == [(1, 7), (6, 8), (7, 1), (8, 6)], same
+    kinds = {}
+    for m, n in same:
+        report = ex.check(f"broken_frame_{n}", sol.diagnosis(m))
+        assert not report.passed, (m, n)
+        kinds[m, n] = report.failures[0].kind
+    # frame 7's pixel is off the cube: its history there shows no fragment, so the copy raises
+    assert kinds == {(1, 7): "pixel", (7, 1): "raised", (6, 8): "pixel without the mark",
+                     (8, 6): "pixel without the mark"}, kinds  # fmt: skip
+    # the cube's and the strip's changed pixels, and the two slivers' marked ones, differ
+    marked = {n: {(int(r), int(c)) for r, c in np.argwhere(bf._differs(n))
+                  if ANSWERS[n] in _marks(n, int(r), int(c))} for n in (1, 6, 7, 8)}  # fmt: skip
+    assert marked[6] != marked[8] and marked[1] != marked[7]
+    assert sol.BROKEN_FRAMES[6][1] not in marked[8] and sol.BROKEN_FRAMES[8][1] not in marked[6]
+    assert sol.BROKEN_FRAMES[1][1] not in marked[7] and sol.BROKEN_FRAMES[7][1] not in marked[1]
 
 
 def test_reading_a_history_lists_every_field_an_evidence_is_read_from():
@@ -876,11 +926,13 @@ def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
                        + ", ".join(map(str, GROUPS)) + "\n"), printed  # fmt: skip
     # frame 4 "contrived so that the pair looks alike" / "made to look like frame 3" hinted
     # that its cause is not frame 3's: said of frame 4 alone, before its check passes
-    before = " ".join((cells["frame_4_task"] + cells["frame_4_note"] + ex.frame_note(None)).split())
+    before = " ".join(
+        (cells["frame_4_task"] + cells["frame_4_note"] + ex.frame_note(4, None)).split()
+    )
     assert "the pair" not in before and "like frame 3" not in before, before
     assert "ontrived" not in before, before  # r18-5: nor that frame 4 alone was contrived
     task = " ".join(cells["frame_7_task"].split())
-    assert "frames 1 and 2 pixel for pixel" in task, task
+    assert "frames 5 and 6 pixel for pixel" in " ".join(task.split()), task
     assert "may or may not share a cause" in task, task
 
 
@@ -893,13 +945,17 @@ def test_the_frame_3_solution_says_the_glass_pane_is_drawn_not_stored():
     assert f"{pane.depth:.6f}" == "0.598993" and f"{pane.depth_after:.6f}" == "0.600000"
 
 
-def test_the_frame_7_solution_quotes_the_depths_its_histories_print():
-    """The solution's comment gives the depths at (24, 28) as the two histories print them."""
-    solution = _cells()["broken_frame_7_solution"]
-    b = ex.broken_frame(7)
-    printed = str(b.frame.history(24, 28)) + str(b.intended.history(24, 28))
-    quoted = re.findall(r"0\.\d{6}", solution.split("SOLUTION")[1])
-    assert len(quoted) == 4 and all(q in printed for q in quoted), quoted
+@pytest.mark.parametrize("number", [7, 8])
+def test_the_frame_7_and_8_solutions_quote_the_values_their_histories_print(number):
+    """Each solution's comment gives the values at its pixel as the two histories print them
+    (r18-3: frame 7's now at the strip's (23, 41), frame 8's new)."""
+    solution = _cells()[f"broken_frame_{number}_solution"].split("SOLUTION")[1]
+    _, (row, col), _ = sol.BROKEN_FRAMES[number]
+    assert f"({row}, {col})" in solution
+    b = ex.broken_frame(number)
+    printed = str(b.frame.history(row, col)) + str(b.intended.history(row, col))
+    quoted = re.findall(r"0\.\d{4,6}", solution)
+    assert len(quoted) >= 2 and all(q in printed for q in quoted), quoted
 
 
 def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
@@ -1017,8 +1073,8 @@ def test_broken_frame_numbers_are_checked():
         ex.broken_frame(True)
     with pytest.raises(TypeError, match="number must be an int"):
         ex.broken_frame(3.0)
-    with pytest.raises(ValueError, match="1 to 7"):
-        ex.broken_frame(8)
+    with pytest.raises(ValueError, match="1 to 8"):
+        ex.broken_frame(9)
 
 
 def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_title():
