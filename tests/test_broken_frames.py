@@ -1119,14 +1119,17 @@ def test_the_check_figure_is_the_strip_of_two_frames_without_white_bands():
         plt.close(fig)
 
 
-def test_the_paired_history_tables_fit_a_592_px_column():
+def test_the_paired_history_tables_fit_a_592_px_column_at_12_px():
     """r18-11: at 1024 x 768 (JupyterLab, file browser open: a 592-px column) the two tables of
     "its pair beside" were 613-615 px wide, and the widget scrolled sideways ("outside E12 by
-    6.1611 p" cut). Paired, the tables are set smaller and never wider than the column (a flex
-    item is as wide as its longest line unless min-width:0); a longer line scrolls inside its
-    own table. Measured in Chromium at 13 px (DejaVu Sans Mono, 0.602 em a character): 613 px
-    at 0.8em became 575 px at 0.75em; the test keeps that arithmetic."""
+    6.1611 p" cut); set at 0.75em (9.75 px) they fitted, below the course's 12 px. Now each
+    table is the narrow history (at most 80 characters a line: the header on two lines, no
+    piece and sample columns where they repeat the triangle, a long "why" and each colour's
+    "after" under their row) at 12 px, never wider than the column (a flex item is as wide
+    as its longest line unless min-width:0). DejaVu Sans Mono, 0.602 em a character: 80
+    characters at 12 px are 578 px."""
     pytest.importorskip("ipywidgets")
+    from teachraster.pipeline.debugging.frame_history import NARROW, history_table
     from teachraster.widgets import FrameInspector
     from teachraster.widgets import frame_inspector as fi
 
@@ -1136,16 +1139,26 @@ def test_the_paired_history_tables_fit_a_592_px_column():
         w.click_at(20.5, 30.5)  # the reviewer's pixel, (30, 20)
         assert "<b>intended 2</b>" in w.table.value
         markup = w.table.value
+        assert "tri piece smp" not in markup and "tri  outcome" in markup
+        w.beside.value = False
+        assert "tri  outcome" in w.table.value and "font-size:12px" in w.table.value
     finally:
         w.close()
     assert markup.count(f"font-size:{fi.PAIRED_FONT}") == 2 and markup.count("min-width:0") == 2
     assert "max-width:100%" in markup and "overflow-x:auto" in markup
-    assert float(fi.PAIRED_FONT[:-2]) < float(fi.TABLE_FONT[:-2])
-    pixels = [(30, 20), (22, 40), (14, 10), (24, 28)] + [a[1] for a in sol.BROKEN_FRAMES.values()]
+    assert fi.PAIRED_FONT == fi.TABLE_FONT == "12px"
+    pixels = [(30, 20), (22, 40), (14, 10), (24, 28), (14, 47), (12, 20)]
+    pixels += [a[1] for a in sol.BROKEN_FRAMES.values()]
     longest = max(len(line) for n in ANSWERS for frame in (ex.broken_frame(n).frame,
                   ex.broken_frame(n).intended) for r, c in pixels
-                  for line in str(frame.history(r, c)).splitlines())  # fmt: skip
-    assert longest * 0.602 * 13 * float(fi.PAIRED_FONT[:-2]) <= 592, longest
+                  for line in history_table(frame.history(r, c), narrow=True).splitlines())  # fmt: skip
+    assert longest <= NARROW and NARROW * 0.602 * 12 <= 592, longest
+    # the numbers are the table's own: every line of the wide table's values is in the narrow
+    h = ex.broken_frame(7).frame.history(25, 52)
+    narrow = " ".join(history_table(h, narrow=True).split())
+    for value in re.findall(r"\d+\.\d+|\(.*?\)", str(h)):
+        assert value in narrow or " ".join(value.split()) in narrow, value
+    assert str(h) == history_table(h)  # print(h) is unchanged
 
 
 def test_the_frame_inspector_shows_the_broken_frames():
