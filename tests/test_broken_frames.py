@@ -1254,3 +1254,16 @@ def test_grading_says_the_source_names_the_causes():
     assert "reverse_depth=True" in source and "winding_reversed=True" in source
     text = " ".join((Path(__file__).parents[1] / "docs/grading.md").read_text().split())
     assert "the cause is not secret from a student who opens the checker's source" in text
+
+
+def test_a_pixel_the_sliver_misses_is_told_how_far_its_square_reaches():
+    """r18-8: "its centre lies 0.6063 px outside it" puzzled a student who knows a unit square
+    reaches 0.707 px along a diagonal. The message says how far the square reaches towards
+    that edge (0.5 (|cos| + |sin|) of its normal), or that it only touches it at a corner."""
+    touching = _first(6, ("sliver", (14, 10), (0.1, 0.2))).explanation
+    assert "lies 0.6063 px outside E12, and the square touches it at a corner" in touching
+    beyond = _first(6, ("sliver", (15, 14), (0.1, 0.2))).explanation
+    assert re.search(r"lies 0\.\d{4} px outside E\d\d, and the square reaches only 0\.60\d\d px",
+                     beyond) or "touches it at a corner" in beyond, beyond  # fmt: skip
+    thin = next(r for r in ex.broken_frame(6).frame.history(14, 10).records if r.triangle == 2)
+    assert abs(bf._reach(ex.broken_frame(6).frame, thin) - 0.5 * 1.25 / np.hypot(1, 0.25)) < 1e-3

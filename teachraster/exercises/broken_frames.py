@@ -930,8 +930,16 @@ def _unmarked_words(args, number, got) -> str:
     if cause == "sliver":
         b = _as_frame(number)
         k = int(np.argmin(_altitudes(b.frame)))
-        far = [r.outside for r in b.frame.history(row, col).records if r.triangle == k]
-        by = f" (its centre lies {far[0]:.4f} px outside it)" if far and far[0] else ""
+        far = [r for r in b.frame.history(row, col).records if r.triangle == k]
+        by = ""
+        if far and far[0].outside:
+            # r18-8: 0.6063 px read as inside a square that reaches 0.707 px along a diagonal;
+            # towards an edge at an angle it reaches 0.5 (|cos| + |sin|) of its normal
+            reach, edge = _reach(b.frame, far[0]), far[0].edge
+            upto = ("touches it at a corner, no more" if abs(reach - far[0].outside) < 5e-5
+                    else f"reaches only {reach:.4f} px from its centre towards {edge}")  # fmt: skip
+            by = (f" (its centre lies {far[0].outside:.4f} px outside {edge}, and the square "
+                  f"{upto})")  # fmt: skip
         return (f"the pictures differ at ({row}, {col}), but the thin triangle does not pass "
                 f"through this pixel's square{by}, so the pixel cannot show a sliver: pick a "
                 "pixel the thin triangle crosses without covering its centre")  # fmt: skip
@@ -939,6 +947,15 @@ def _unmarked_words(args, number, got) -> str:
         f"the pictures differ at ({row}, {col}), but its two histories do not show the "
         f"mark of {cause!r} ({_SIGNS[cause][1]}): pick a pixel whose histories do"
     )
+
+
+def _reach(frame: Frame, record) -> float:
+    """How far (px) a pixel's square reaches from its centre towards the edge ``record``
+    names (E12, E23, E31 or the other way round): 0.5 (|cos| + |sin|) of the edge's normal's
+    angle, 0.5 px towards a level edge, 0.707 px towards one at 45 degrees."""
+    a, b = (int(d) - 1 for d in record.edge[1:3])
+    dx, dy = frame.trace.window[record.piece, b, :2] - frame.trace.window[record.piece, a, :2]
+    return float(0.5 * (abs(dx) + abs(dy)) / np.hypot(dx, dy))
 
 
 def _evidence_words(args, number, got) -> str:
