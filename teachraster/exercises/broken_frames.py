@@ -1,4 +1,4 @@
-"""Exercises ``broken_frame_1`` … ``broken_frame_8`` (lesson 11): find what broke a frame.
+"""Exercises ``broken_frame_1`` … ``broken_frame_9`` (lesson 11): find what broke a frame.
 
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
 with one mistake a graphics programmer makes (alphabetically, each in one frame or more:
@@ -10,14 +10,15 @@ with a cause from :data:`CAUSES`, a pixel where the two frames differ, and the e
 :data:`EVIDENCE` names for that cause: a number or colour read off that pixel's history (a
 depth to its six printed decimals, a colour or a distance to its four printed digits).
 
-What is hidden and what is not. The frames come in look-alike groups (1-2, 3-4, 5-6-7-8) with
-the same symptom, the same picture and the same intended picture pixel for pixel; frames that
+What is hidden and what is not. The frames come in look-alike groups (1-2, 3-4-9, 5-6-7-8)
+with the same symptom, the same picture and the same intended picture pixel for pixel; frames that
 look alike may or may not share a cause (r16 11-2: while each pair held two different causes,
 solving one frame ruled its cause out for its partner). Two frames that share a cause never
 bear its mark at the same pixels (r18-3: frame 7 was frame 1's mistake at the same pixels, and
 frame 1's function passed it unread): frame 7 has frame 1's cause on the strip, frame 8 frame
-6's with the thin triangle over other pixels, so a diagnosis copied from a frame with the same
-cause fails, and each frame's histories must be read. Hidden: the cause (no attribute or repr
+6's with the thin triangle over other pixels, frame 9 frame 5's on the pane (off the strip's
+pixels), so a diagnosis copied from a frame with the same cause fails, and each frame's
+histories must be read. Hidden: the cause (no attribute or repr
 of a :class:`BrokenFrame` names it; the module keeps only a salted hash of each frame's cause,
 which hides the key from a reader, not from someone who hashes the ten names: an answer whose
 code reads ``_KEY`` or ``_SALT``, under any name, is not counted), the frames' ``plan``
@@ -157,7 +158,8 @@ _SALT = "teachraster/broken-frames/r9"
 _KEY = {1: "e68f66d3ea75110820cace3e308b0d6e", 2: "c6b79012eaf45d23d1a4d99109306658",
         3: "04b91d018fc9aec9a7aa6f32f59360cb", 4: "e2b44365fd55dbf77960b5922c872641",
         5: "38234cdea627c46e16be35257101261e", 6: "2413d43fbc57dd32560223caa37f49b2",
-        7: "efdc574170a935ebbec1162e53c18d43", 8: "2a0c8faa4906343dfbf80a84c2f39564"}  # fmt: skip
+        7: "efdc574170a935ebbec1162e53c18d43", 8: "2a0c8faa4906343dfbf80a84c2f39564",
+        9: "a9edd7c9c7d7ccbdf0c6cb5930679202"}  # fmt: skip
 
 
 def _is_cause(number: int, cause: str) -> bool:
@@ -371,13 +373,20 @@ def _wall(look: _Look):
     return (_quad(4, 4, 60, 44), look.wall_steps / 65535, [*look.wall, 1.0])
 
 
+#: The pane's corners (x0, y0, x1, y1), px: in the wall's upper right, off the cube's changed
+#: pixels and the strip's (r18-3: frame 9, blend order on the pane, is frame 5's cause; at
+#: pixels frame 5's pane was on, frame 5's diagnosis copied passed it, and frame 1's at (24, 28)
+#: would pass any pane frame with its cause).
+_PANE = (48, 6, 58, 20)
+
+
 def _pane(look: _Look, nearer: float, premultiplied: bool = True):
     """A dark pane ``nearer`` than the wall, whose straight colour is the wall's darkened by
     its alpha: blended as premultiplied without being multiplied, it adds exactly what it
     should have hidden."""
     straight = _ALPHA * np.asarray(look.wall)
     colour = straight * _ALPHA if premultiplied else straight
-    return (_quad(20, 12, 44, 36), look.wall_steps / 65535 - nearer, [*colour, _ALPHA])
+    return (_quad(*_PANE), look.wall_steps / 65535 - nearer, [*colour, _ALPHA])
 
 
 def _strip(look: _Look, triangles):
@@ -385,12 +394,12 @@ def _strip(look: _Look, triangles):
 
 
 #: Each frame's symptom as a user would report it: what is seen, never the mechanism, and how
-#: to draw it with a look (broken, intended). The frames come in look-alike groups (1-2, 3-4,
+#: to draw it with a look (broken, intended). The frames come in look-alike groups (1-2, 3-4-9,
 #: 5-6-7-8): the same symptom, the same picture and the same intended picture, pixel for pixel;
 #: only the histories tell them apart (3 to 6 even share the broken picture: a plain wall).
 #: r16 11-2: while every pair held two different causes, a solved frame ruled its cause out
-#: for its partner; now the strip's group holds a cause twice and two others once, so a
-#: look-alike's cause tells neither that it is nor that it is not the frame's. r18-3: frames
+#: for its partner; now the strip's group holds a cause twice and two others once, the pane's
+#: three causes (one of them the strip's), so a look-alike's cause tells neither that it is nor that it is not the frame's. r18-3: frames
 #: sharing a cause bear its mark at different pixels (the strip's, not the cube's; another
 #: needle), so that one frame's diagnosis, copied, fails the other.
 _SPECS = [
@@ -417,6 +426,8 @@ _SPECS = [
     ("The tinted strip across the wall is missing.",
      lambda k: _pixels([_wall(k), _strip(k, _NEEDLE_TOP)]),
      lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
+    ("The dark pane on the wall is missing.",
+     lambda k: _pixels([_pane(k, 0.2), _wall(k)]), lambda k: _pixels([_wall(k), _pane(k, 0.2)])),
 ]  # fmt: skip
 
 
@@ -500,6 +511,8 @@ _NOTES = {
     "broken, dotted line, where it covers a centre now and then.",
     7: "Frame 7 is not contrived: with the depths mapped the other way round, glass in front of\n"
     "a wall drawn first fails the test wherever the wall is behind it.",
+    9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
+    "wall is drawn; the usual cure draws transparent geometry last, back to front.",
     8: "Frame 8 is contrived like frame 6, its thin triangle along the strip's top edge instead\n"
     "of its middle: the two cross different pixels, a few of them the same.",
 }
@@ -525,7 +538,7 @@ def frame_note(number: int, report) -> str:
 
 
 def broken_frame(number: int) -> BrokenFrame:
-    """Frame ``number`` (1 to the number of frames, 8)."""
+    """Frame ``number`` (1 to the number of frames, 9)."""
     frames = broken_frames()
     number = as_int("number", number)  # the one integer rule: no bools, operator.index
     if not 1 <= number <= len(frames):
