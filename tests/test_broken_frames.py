@@ -659,8 +659,9 @@ def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
     exec(source, {"ex": ex, "report": ex.check("broken_frame_4", sol.diagnosis(4))})
     shown = capsys.readouterr().out
     assert "too bright" in shown and "alpha times" in shown, shown
-    # r18-4: a "pair" is a frame and its intended frame, which do not look alike here
-    assert "so that it looks like frame 3" in shown and "the pair" not in shown, shown
+    # r18-4: a "pair" is a frame and its intended frame, which do not look alike here;
+    # r18-3: nor "like frame 3", which told frame 3's cause is another
+    assert "so that the pane vanishes into the wall" in shown and "the pair" not in shown, shown
 
 
 def test_every_frame_has_its_note_after_its_check_none_singled_out(capsys):
@@ -688,6 +689,7 @@ def test_every_frame_has_its_note_after_its_check_none_singled_out(capsys):
         exec(source, {"ex": ex, "report": ex.check(f"broken_frame_{n}", sol.diagnosis(n))})
         note = capsys.readouterr().out
         assert note.startswith(f"Frame {n} is ") and "contrived" in note, note
+        assert not re.search(rf"frame (?!{n}\b)\d", note.lower()), note  # names no other frame
     assert len(placeholders) == 1, placeholders
     assert "ontrived" not in " ".join(v for k, v in cells.items() if k.endswith("_task"))
     with pytest.raises(ValueError, match="number must be one of"):

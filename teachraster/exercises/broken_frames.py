@@ -502,7 +502,9 @@ _NOTES = {
     "wall, so every pixel ties. At an angle the tie would come and go, and the two surfaces\n"
     "would show through each other in stitches.",
     # r18-4: "so that the pair looks alike" (the pair is a frame and its intended frame)
-    4: "Frame 4 is contrived so that it looks like frame 3: the pane's straight colour is\n"
+    # r18-3: "so that it looks like frame 3" told, once 11.4 passed, that frame 3's cause is
+    # another (and "like frame 6", frame 6's cause): a note names no other frame
+    4: "Frame 4 is contrived so that the pane vanishes into the wall: its straight colour is\n"
     "exactly its alpha times the wall's. The same mistake usually shows as a pane too bright.",
     5: "Frame 5 is not contrived: glass drawn before what lies behind it is replaced wherever an\n"
     "opaque surface is drawn after it; transparent geometry is drawn last, back to front.",
@@ -513,8 +515,9 @@ _NOTES = {
     "a wall drawn first fails the test wherever the wall is behind it.",
     9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
     "wall is drawn; the usual cure draws transparent geometry last, back to front.",
-    8: "Frame 8 is contrived like frame 6, its thin triangle along the strip's top edge instead\n"
-    "of its middle: the two cross different pixels, a few of them the same.",
+    8: "Frame 8 is contrived so that the strip is missing everywhere: the thin triangle runs\n"
+    "along the strip's top edge, between the rows of pixel centres. A sliver usually shows as\n"
+    "a broken, dotted line, where it covers a centre now and then.",
 }
 
 
