@@ -140,11 +140,14 @@ CAPSTONE = dict(covers=covers, barycentric=barycentric, perspective_weights=pers
 BROKEN_FRAMES = {
     1: ("depth function", (24, 28), 0.026233),  # the depth shown (kept)
     2: ("culled winding", (24, 28), 9),  # culled here, drawn in the intended frame
-    3: ("z-fighting", (24, 20), 0.598993),  # the tied fragment's depth in the intended frame
-    4: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),  # the fragment colour
+    3: ("z-fighting", (13, 52), 0.598993),  # the tied fragment's depth in the intended frame
+    4: ("missing premultiplication", (13, 52), (0.31, 0.28, 0.24)),  # the fragment colour
     5: ("blend order", (23, 41), (0.52, 0.67, 0.91)),  # the strip's 'after', overwritten
     6: ("sliver", (22, 40), (0.1213, 0.299992)),  # missed by, and the intended depth there
-    7: ("depth function", (24, 28), 0.263116),  # frame 1's cause at other depths (r16 11-2)
+    # r18-3: frame 1's cause on the strip's pixels (at the cube's, frame 1's function passed)
+    7: ("depth function", (25, 52), 0.4),  # the depth shown (the wall, mapped 1 - 0.6)
+    8: ("sliver", (21, 39), (0.0566, 0.299992)),  # frame 6's cause, another thin triangle
+    9: ("blend order", (13, 52), (0.655, 0.64, 0.62)),  # frame 5's cause on the pane
 }
 
 
@@ -184,6 +187,8 @@ READ = {
     5: lambda b, row, col: _glass(b.frame.history(row, col)).color_after[:3],
     6: _sliver,
     7: lambda b, row, col: _shown(b.frame.history(row, col)).depth,
+    8: _sliver,
+    9: lambda b, row, col: _glass(b.frame.history(row, col)).color_after[:3],
 }
 
 

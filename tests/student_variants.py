@@ -1045,7 +1045,7 @@ WRONG = {
     ),  # fmt: skip
     "frame 3, the stored depth for the intended one": (
         "broken_frame_3",
-        lambda b: ("z-fighting", (24, 20), 0.6),
+        lambda b: ("z-fighting", (13, 52), 0.6),
         "do bear the mark of 'z-fighting'",
     ),  # fmt: skip
     # r9 (exercises-09-11-r9.md §11): the right sliver at a pixel it does not cross was told
@@ -1068,8 +1068,8 @@ WRONG = {
     ),  # fmt: skip
     "frame 4, the frame shown's value typed in": (
         "broken_frame_4",
-        lambda b: ("missing premultiplication", (24, 20), (0.31, 0.28, 0.24)),
-        "your value is the one frame 4 shows at (24, 20)",
+        lambda b: ("missing premultiplication", (13, 52), (0.31, 0.28, 0.24)),
+        "your value is the one frame 4 shows at (13, 52)",
     ),  # fmt: skip
 }
 

@@ -22,18 +22,18 @@ from teachraster.exercises import broken_frames as bf
 #: The key, for the tests only (the package keeps salted hashes).
 ANSWERS = {1: "depth function", 2: "culled winding", 3: "z-fighting",
            4: "missing premultiplication", 5: "blend order", 6: "sliver",
-           7: "depth function"}  # fmt: skip
+           7: "depth function", 8: "sliver", 9: "blend order"}  # fmt: skip
 STAGE = {1: "depth test", 2: "culling", 3: "depth test", 4: "blending", 5: "blending",
-         6: "coverage", 7: "depth test"}  # fmt: skip
+         6: "coverage", 7: "depth test", 8: "coverage", 9: "blending"}  # fmt: skip
 #: The frames that look alike, pixel for pixel (rendered and intended), and the look-alikes
-#: whose causes differ (r16 11-2: frames 1 and 7 share a cause, so no pair's causes are
+#: whose causes differ (r16 11-2: frames 6 and 8 share a cause, so no pair's causes are
 #: known to differ; each frame's twin below is a look-alike with another cause).
-GROUPS = [(1, 2, 7), (3, 4), (5, 6)]
-PAIRS = [(1, 2), (3, 4), (5, 6), (2, 7)]
+GROUPS = [(1, 2), (3, 4, 9), (5, 6, 7, 8)]
+PAIRS = [(1, 2), (3, 4), (5, 6), (7, 8), (9, 3)]
 #: A made-up value of each kind of evidence.
 MADE_UP = {"depth": 0.5, "number": 0.25, "colour": (0.5, 0.5, 0.5), "pair": (0.25, 0.5),
            "triangle": 11}  # fmt: skip
-NUMBER_WORDS = {6: "six", 7: "seven", 8: "eight"}
+NUMBER_WORDS = {6: "six", 7: "seven", 8: "eight", 9: "nine"}
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/11_broken_frames.ipynb"
 README = Path(__file__).parents[1] / "README.md"
 
@@ -160,6 +160,8 @@ def test_a_loop_over_one_pixels_history_values_fails_the_redrawn_frame(number):
     b = ex.broken_frame(number)
     pixels = np.argwhere(bf._differs(number))
     row, col = (int(v) for v in pixels[len(pixels) // 2])
+    if ANSWERS[number] not in _marks(number, row, col):  # frame 8: the sliver misses it
+        row, col = _showing(number)
     values = _harvest(b.frame.history(row, col)) + _harvest(b.intended.history(row, col))
     depths = [v for v in values if isinstance(v, float)]
     values += [(a, d) for a in depths for d in depths]
@@ -526,13 +528,13 @@ def test_the_evidence_needs_the_digits_the_history_prints():
 @pytest.mark.parametrize("number", list(ANSWERS))
 def test_each_changed_pixel_bears_the_mark_of_its_frames_cause_only(number):
     """The check judges a cause by its mark at the student's pixel: on a sample of every
-    frame's changed pixels, only the frame's own cause's mark is there (frame 6: or none,
-    where the sliver does not cross the pixel), and where it is, so is its evidence."""
+    frame's changed pixels, only the frame's own cause's mark is there (frames 6 and 8: or
+    none, where the sliver does not cross the pixel), and where it is, so is its evidence."""
     pixels = np.argwhere(bf._differs(number))
     for r, c in pixels[:: max(1, len(pixels) // 25)]:
         marks = _marks(number, int(r), int(c))
         assert marks <= {ANSWERS[number]}, (number, r, c, marks)
-        if number != 6:
+        if ANSWERS[number] != "sliver":
             assert marks == {ANSWERS[number]}, (number, r, c)
         if marks:
             assert bf._evidence(number, ANSWERS[number], bf._pixel(number, int(r), int(c)))
@@ -584,7 +586,7 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     for telling in ("reverse", "16-bit", "ties", "premultipl", "§9"):
         assert telling not in flat, telling
     row = next(
-        line for line in README.read_text().splitlines() if "diagnose seven broken frames" in line
+        line for line in README.read_text().splitlines() if "diagnose nine broken frames" in line
     )
     assert "lesson 11)" not in row and "after lesson 12" in row, row
     assert "**redrawn**" in how and "typed in" in how and "private functions" in how
@@ -636,7 +638,7 @@ def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
     # r16 N2: the words are the package's, not in the cell's source (readable before 11.4)
     for telling in ("too bright", "straight colour", "alpha times", "premultipl"):
         assert telling not in source, telling
-    wrong = lambda b: ("texture filtering", (24, 20), (0.5, 0.5, 0.5))  # noqa: E731
+    wrong = lambda b: ("texture filtering", (13, 52), (0.5, 0.5, 0.5))  # noqa: E731
     for namespace in ({"ex": ex}, {"ex": ex, "report": ex.check("broken_frame_4", wrong)},
                       {"ex": ex, "report": ex.check("broken_frame_3", sol.diagnosis(3))}):  # fmt: skip
         exec(source, namespace)
@@ -657,8 +659,41 @@ def test_the_frame_4_note_is_printed_only_once_its_check_has_passed(capsys):
     exec(source, {"ex": ex, "report": ex.check("broken_frame_4", sol.diagnosis(4))})
     shown = capsys.readouterr().out
     assert "too bright" in shown and "alpha times" in shown, shown
-    # r18-4: a "pair" is a frame and its intended frame, which do not look alike here
-    assert "so that it looks like frame 3" in shown and "the pair" not in shown, shown
+    # r18-4: a "pair" is a frame and its intended frame, which do not look alike here;
+    # r18-3: nor "like frame 3", which told frame 3's cause is another
+    assert "so that the pane vanishes into the wall" in shown and "the pair" not in shown, shown
+
+
+def test_every_frame_has_its_note_after_its_check_none_singled_out(capsys):
+    """r18-5: "a cell after the check says how" came after frame 4's check alone, singling it
+    out as the contrived frame. Now every frame's check is followed by a cell of the same
+    code (frame 1's prints its depths), each note printed only once that frame's check has
+    passed, the placeholders the same words but for the number."""
+    cells, order = _cells(), list(_cells())
+    placeholders = set()
+    for n in ANSWERS:
+        after = order[order.index(f"broken_frame_{n}_check") + 1]
+        if n == 1:
+            assert after == "frame_1_depths"
+            continue
+        assert after == f"frame_{n}_note", (n, after)
+        source = cells[after]
+        assert source == cells["frame_4_note"].replace("4", str(n)), source
+        exec(source, {"ex": ex})
+        shown = capsys.readouterr().out
+        placeholders.add(shown.replace(str(n), "n"))
+        assert f"A note on frame {n} is printed here once" in shown, shown
+        other = 3 if n != 3 else 4  # another frame's passed report shows nothing
+        exec(source, {"ex": ex, "report": ex.check(f"broken_frame_{other}", sol.diagnosis(other))})
+        assert capsys.readouterr().out == shown
+        exec(source, {"ex": ex, "report": ex.check(f"broken_frame_{n}", sol.diagnosis(n))})
+        note = capsys.readouterr().out
+        assert note.startswith(f"Frame {n} is ") and "contrived" in note, note
+        assert not re.search(rf"frame (?!{n}\b)\d", note.lower()), note  # names no other frame
+    assert len(placeholders) == 1, placeholders
+    assert "ontrived" not in " ".join(v for k, v in cells.items() if k.endswith("_task"))
+    with pytest.raises(ValueError, match="number must be one of"):
+        ex.frame_note(1, None)
 
 
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
@@ -786,7 +821,6 @@ def test_broken_frames_come_in_look_alike_groups_told_apart_only_by_their_histor
         assert not np.array_equal(bf._rgb(one.frame), bf._rgb(one.intended))
         assert {bf._parts_at(n, *_showing(n)) for n in (a, b)} == {STAGE[a], STAGE[b]}
     assert not ex.broken_frame(1).frame.trace.culled.any()
-    assert not ex.broken_frame(7).frame.trace.culled.any()
     assert ex.broken_frame(2).frame.trace.culled.any()
 
 
@@ -802,27 +836,48 @@ def _look_alike_groups(frames) -> list:
 def test_a_look_alikes_cause_tells_nothing_of_the_frames_cause():
     """r14/r16 11-2: each look-alike pair held two different causes, so a student who had
     solved one frame of a pair ruled its cause out for the other (and the picture narrowed
-    the other to the few causes left). Now the cube's three look-alikes hold one cause twice
-    and another once: knowing a look-alike's cause tells neither that the frame has it nor
+    the other to the few causes left). Now the strip's four look-alikes hold one cause twice
+    and two others once: knowing a look-alike's cause tells neither that the frame has it nor
     that it has not, in the data and in what the checker says."""
     assert _look_alike_groups(bf.broken_frames()) == GROUPS
     for look in bf._REDRAWN:  # the frames redrawn for a check look alike in the same groups
         redrawn = [bf._redrawn(n, look) for n in ANSWERS]
         assert _look_alike_groups(redrawn) == GROUPS, look
     assert all(len({ANSWERS[n] for n in g}) > 1 for g in GROUPS)  # no picture names a cause
-    for n in (1, 7):  # one look-alike shares the frame's cause, another does not
+    for n in (6, 8):  # one look-alike shares the frame's cause, others do not
         others = {ANSWERS[m] == ANSWERS[n] for g in GROUPS if n in g for m in g if m != n}
         assert others == {True, False}, n
-    # frame 1's diagnosis, read off the frame it is given, is frame 7's too, and not frame 2's
-    _passes("broken_frame_7", sol.diagnosis(1))
+    # frame 2's cause, the cube look-alike's, is no answer for frame 1, nor frame 1's for 2
     failure = _first(2, ("depth function", (24, 28), sol.READ[1](ex.broken_frame(2), 24, 28)))
     assert failure.kind == "cause", failure.explanation
-    # ... while the value frame 1 shows, typed in, is not frame 7's: its depths are its own
-    one = sol.BROKEN_FRAMES[1]
-    assert _first(7, one).kind == "evidence"
-    # frame 2's cause, the look-alike's, is no answer for frame 7
-    failure = _first(7, ("culled winding", (24, 28), sol.BROKEN_FRAMES[2][2]))
+    failure = _first(8, ("blend order", (21, 39), sol.READ[5](ex.broken_frame(5), 21, 39)))
     assert failure.kind == "cause", failure.explanation
+
+
+def test_a_diagnosis_copied_from_a_frame_with_the_same_cause_fails():
+    """r18-3: frame 7 was frame 1's mistake at the same pixels, and frame 1's function passed
+    11.7 unread. Frames that share a cause now bear its mark at other pixels: each solution,
+    run on every other frame with its cause, fails there (the pictures agree at its pixel, or
+    its histories lack the mark), and what each frame's solution reads is its own frame's."""
+    same = [(m, n) for m in ANSWERS for n in ANSWERS if m != n and ANSWERS[m] == ANSWERS[n]]
+    assert sorted(same) == [(1, 7), (5, 9), (6, 8), (7, 1), (8, 6), (9, 5)], same
+    kinds = {}
+    for m, n in same:
+        report = ex.check(f"broken_frame_{n}", sol.diagnosis(m))
+        assert not report.passed, (m, n)
+        kinds[m, n] = report.failures[0].kind
+    # off the other frame's changed pixels its history holds no glass (or no fragment): it raises
+    assert kinds == {(1, 7): "pixel", (7, 1): "raised", (6, 8): "pixel without the mark",
+                     (8, 6): "pixel without the mark", (5, 9): "raised", (9, 5): "raised"}, kinds  # fmt: skip
+    # the cube's and the strip's changed pixels, and the two slivers' marked ones, differ
+    marked = {n: {(int(r), int(c)) for r, c in np.argwhere(bf._differs(n))
+                  if ANSWERS[n] in _marks(n, int(r), int(c))} for n in (1, 6, 7, 8)}  # fmt: skip
+    assert marked[6] != marked[8] and marked[1] != marked[7]
+    assert sol.BROKEN_FRAMES[6][1] not in marked[8] and sol.BROKEN_FRAMES[8][1] not in marked[6]
+    assert sol.BROKEN_FRAMES[1][1] not in marked[7] and sol.BROKEN_FRAMES[7][1] not in marked[1]
+    # the pane lies off the cube's and the strip's changed pixels: no copy between groups
+    pane, cube, strip = (set(map(tuple, np.argwhere(bf._differs(n)).tolist())) for n in (3, 1, 5))
+    assert pane and not pane & cube and not pane & strip
 
 
 def test_reading_a_history_lists_every_field_an_evidence_is_read_from():
@@ -876,11 +931,13 @@ def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
                        + ", ".join(map(str, GROUPS)) + "\n"), printed  # fmt: skip
     # frame 4 "contrived so that the pair looks alike" / "made to look like frame 3" hinted
     # that its cause is not frame 3's: said of frame 4 alone, before its check passes
-    before = " ".join((cells["frame_4_task"] + cells["frame_4_note"] + ex.frame_note(None)).split())
+    before = " ".join(
+        (cells["frame_4_task"] + cells["frame_4_note"] + ex.frame_note(4, None)).split()
+    )
     assert "the pair" not in before and "like frame 3" not in before, before
     assert "ontrived" not in before, before  # r18-5: nor that frame 4 alone was contrived
     task = " ".join(cells["frame_7_task"].split())
-    assert "frames 1 and 2 pixel for pixel" in task, task
+    assert "frames 5 and 6 pixel for pixel" in " ".join(task.split()), task
     assert "may or may not share a cause" in task, task
 
 
@@ -889,17 +946,21 @@ def test_the_frame_3_solution_says_the_glass_pane_is_drawn_not_stored():
     (its record's 'after' stays the wall's 0.600000)."""
     solution = _cells()["broken_frame_3_solution"].split("SOLUTION")[1]
     assert "drawn at 0.598993" in solution and "stored at 0.598993" not in solution
-    pane = next(r for r in ex.broken_frame(3).intended.history(24, 20).records if r.shown)
+    pane = next(r for r in ex.broken_frame(3).intended.history(13, 52).records if r.shown)
     assert f"{pane.depth:.6f}" == "0.598993" and f"{pane.depth_after:.6f}" == "0.600000"
 
 
-def test_the_frame_7_solution_quotes_the_depths_its_histories_print():
-    """The solution's comment gives the depths at (24, 28) as the two histories print them."""
-    solution = _cells()["broken_frame_7_solution"]
-    b = ex.broken_frame(7)
-    printed = str(b.frame.history(24, 28)) + str(b.intended.history(24, 28))
-    quoted = re.findall(r"0\.\d{6}", solution.split("SOLUTION")[1])
-    assert len(quoted) == 4 and all(q in printed for q in quoted), quoted
+@pytest.mark.parametrize("number", [7, 8])
+def test_the_frame_7_and_8_solutions_quote_the_values_their_histories_print(number):
+    """Each solution's comment gives the values at its pixel as the two histories print them
+    (r18-3: frame 7's now at the strip's (23, 41), frame 8's new)."""
+    solution = _cells()[f"broken_frame_{number}_solution"].split("SOLUTION")[1]
+    _, (row, col), _ = sol.BROKEN_FRAMES[number]
+    assert f"({row}, {col})" in solution
+    b = ex.broken_frame(number)
+    printed = str(b.frame.history(row, col)) + str(b.intended.history(row, col))
+    quoted = re.findall(r"0\.\d{4,6}", solution)
+    assert len(quoted) >= 2 and all(q in printed for q in quoted), quoted
 
 
 def test_broken_frame_6_accepts_only_pixels_the_sliver_crosses():
@@ -973,8 +1034,8 @@ def test_broken_frames_3_to_6_draw_their_glass_without_depth_writes():
     assert glass and not any(r.depth_write for r in glass)
     assert all(r.outcome == "passed" for r in records)
     four = ex.broken_frame(4)
-    pane = [r.color for r in four.frame.history(24, 20).records if r.color and r.color[3] < 1]
-    meant = [r.color for r in four.intended.history(24, 20).records
+    pane = [r.color for r in four.frame.history(13, 52).records if r.color and r.color[3] < 1]
+    meant = [r.color for r in four.intended.history(13, 52).records
              if r.color and r.color[3] < 1]  # fmt: skip
     assert np.allclose(np.array(meant[0][:3]), np.array(pane[0][:3]) * pane[0][3])
 
@@ -997,7 +1058,7 @@ def test_broken_frame_answers_are_read_strictly():
     assert "one number" in said(("depth function", (24, 28), (0.1, 0.2, 0.3)))
     # the evidence's form is read strictly for the frame's own cause (r16 N1: for another
     # cause, that the cause is wrong comes first: test_the_right_answer_passes_...)
-    assert "three or four numbers" in said(("missing premultiplication", (24, 20), 0.4), 4)
+    assert "three or four numbers" in said(("missing premultiplication", (13, 52), 0.4), 4)
     assert "two numbers" in said(("sliver", (22, 40), 0.12), 6)
     wrong_cause = ex.check("broken_frame_1", lambda b: ("sliver", (22, 40), 0.12))
     assert wrong_cause.failures[0].kind == "cause", str(wrong_cause)
@@ -1017,8 +1078,8 @@ def test_broken_frame_numbers_are_checked():
         ex.broken_frame(True)
     with pytest.raises(TypeError, match="number must be an int"):
         ex.broken_frame(3.0)
-    with pytest.raises(ValueError, match="1 to 7"):
-        ex.broken_frame(8)
+    with pytest.raises(ValueError, match="1 to 9"):
+        ex.broken_frame(10)
 
 
 def test_broken_frame_figure_marks_the_pixel_on_both_pictures_under_a_short_title():
@@ -1063,14 +1124,17 @@ def test_the_check_figure_is_the_strip_of_two_frames_without_white_bands():
         plt.close(fig)
 
 
-def test_the_paired_history_tables_fit_a_592_px_column():
+def test_the_paired_history_tables_fit_a_592_px_column_at_12_px():
     """r18-11: at 1024 x 768 (JupyterLab, file browser open: a 592-px column) the two tables of
     "its pair beside" were 613-615 px wide, and the widget scrolled sideways ("outside E12 by
-    6.1611 p" cut). Paired, the tables are set smaller and never wider than the column (a flex
-    item is as wide as its longest line unless min-width:0); a longer line scrolls inside its
-    own table. Measured in Chromium at 13 px (DejaVu Sans Mono, 0.602 em a character): 613 px
-    at 0.8em became 575 px at 0.75em; the test keeps that arithmetic."""
+    6.1611 p" cut); set at 0.75em (9.75 px) they fitted, below the course's 12 px. Now each
+    table is the narrow history (at most 80 characters a line: the header on two lines, no
+    piece and sample columns where they repeat the triangle, a long "why" and each colour's
+    "after" under their row) at 12 px, never wider than the column (a flex item is as wide
+    as its longest line unless min-width:0). DejaVu Sans Mono, 0.602 em a character: 80
+    characters at 12 px are 578 px."""
     pytest.importorskip("ipywidgets")
+    from teachraster.pipeline.debugging.frame_history import NARROW, history_table
     from teachraster.widgets import FrameInspector
     from teachraster.widgets import frame_inspector as fi
 
@@ -1080,16 +1144,26 @@ def test_the_paired_history_tables_fit_a_592_px_column():
         w.click_at(20.5, 30.5)  # the reviewer's pixel, (30, 20)
         assert "<b>intended 2</b>" in w.table.value
         markup = w.table.value
+        assert "tri piece smp" not in markup and "tri  outcome" in markup
+        w.beside.value = False
+        assert "tri  outcome" in w.table.value and "font-size:12px" in w.table.value
     finally:
         w.close()
     assert markup.count(f"font-size:{fi.PAIRED_FONT}") == 2 and markup.count("min-width:0") == 2
     assert "max-width:100%" in markup and "overflow-x:auto" in markup
-    assert float(fi.PAIRED_FONT[:-2]) < float(fi.TABLE_FONT[:-2])
-    pixels = [(30, 20), (22, 40), (14, 10), (24, 28)] + [a[1] for a in sol.BROKEN_FRAMES.values()]
+    assert fi.PAIRED_FONT == fi.TABLE_FONT == "12px"
+    pixels = [(30, 20), (22, 40), (14, 10), (24, 28), (14, 47), (12, 20)]
+    pixels += [a[1] for a in sol.BROKEN_FRAMES.values()]
     longest = max(len(line) for n in ANSWERS for frame in (ex.broken_frame(n).frame,
                   ex.broken_frame(n).intended) for r, c in pixels
-                  for line in str(frame.history(r, c)).splitlines())  # fmt: skip
-    assert longest * 0.602 * 13 * float(fi.PAIRED_FONT[:-2]) <= 592, longest
+                  for line in history_table(frame.history(r, c), narrow=True).splitlines())  # fmt: skip
+    assert longest <= NARROW and NARROW * 0.602 * 12 <= 592, longest
+    # the numbers are the table's own: every line of the wide table's values is in the narrow
+    h = ex.broken_frame(7).frame.history(25, 52)
+    narrow = " ".join(history_table(h, narrow=True).split())
+    for value in re.findall(r"\d+\.\d+|\(.*?\)", str(h)):
+        assert value in narrow or " ".join(value.split()) in narrow, value
+    assert str(h) == history_table(h)  # print(h) is unchanged
 
 
 def test_the_frame_inspector_shows_the_broken_frames():
@@ -1185,3 +1259,16 @@ def test_grading_says_the_source_names_the_causes():
     assert "reverse_depth=True" in source and "winding_reversed=True" in source
     text = " ".join((Path(__file__).parents[1] / "docs/grading.md").read_text().split())
     assert "the cause is not secret from a student who opens the checker's source" in text
+
+
+def test_a_pixel_the_sliver_misses_is_told_how_far_its_square_reaches():
+    """r18-8: "its centre lies 0.6063 px outside it" puzzled a student who knows a unit square
+    reaches 0.707 px along a diagonal. The message says how far the square reaches towards
+    that edge (0.5 (|cos| + |sin|) of its normal), or that it only touches it at a corner."""
+    touching = _first(6, ("sliver", (14, 10), (0.1, 0.2))).explanation
+    assert "lies 0.6063 px outside E12, and the square touches it at a corner" in touching
+    beyond = _first(6, ("sliver", (15, 14), (0.1, 0.2))).explanation
+    assert re.search(r"lies 0\.\d{4} px outside E\d\d, and the square reaches only 0\.60\d\d px",
+                     beyond) or "touches it at a corner" in beyond, beyond  # fmt: skip
+    thin = next(r for r in ex.broken_frame(6).frame.history(14, 10).records if r.triangle == 2)
+    assert abs(bf._reach(ex.broken_frame(6).frame, thin) - 0.5 * 1.25 / np.hypot(1, 0.25)) < 1e-3

@@ -667,3 +667,21 @@ def test_sparse_overlays_draw_the_scene_and_hi_z_its_tiles():
                 assert sorted(len(c.get_segments()) for c in lines) == [7, 9]
         finally:
             plt.close(fig)
+
+
+def test_the_narrow_history_table_keeps_the_piece_and_sample_columns_where_they_say_something():
+    """The FrameInspector's narrow table (12 px in a 592-px column, review r18) drops the
+    piece and sample columns only where every record's piece is its triangle and the pixel
+    has one sample; with MSAA they stay, and print(h) is the wide table."""
+    from teachraster.pipeline.debugging.frame_history import NARROW, history_table
+
+    scene = tr.get_scene("intersecting_triangles")
+    one = tr.render(scene, None, 32, 24, trace=True).history(12, 16)
+    four = tr.render(scene, None, 32, 24, trace=True, samples=4).history(12, 16)
+    assert "piece" not in history_table(one, narrow=True) and "piece" in str(one)
+    assert "tri piece smp" in history_table(four, narrow=True)
+    assert str(four) == history_table(four)
+    for h in (one, four):
+        lines = history_table(h, narrow=True).splitlines()
+        assert lines[0].endswith(":") and "on the way" in lines[1], lines[:2]
+        assert max(map(len, lines)) <= NARROW, lines  # the why wraps under its row if not

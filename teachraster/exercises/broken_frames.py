@@ -1,4 +1,4 @@
-"""Exercises ``broken_frame_1`` … ``broken_frame_7`` (lesson 11): find what broke a frame.
+"""Exercises ``broken_frame_1`` … ``broken_frame_9`` (lesson 11): find what broke a frame.
 
 tinyrenderer's "visual troubleshooting", as graded exercises: each frame below was rendered
 with one mistake a graphics programmer makes (alphabetically, each in one frame or more:
@@ -10,10 +10,15 @@ with a cause from :data:`CAUSES`, a pixel where the two frames differ, and the e
 :data:`EVIDENCE` names for that cause: a number or colour read off that pixel's history (a
 depth to its six printed decimals, a colour or a distance to its four printed digits).
 
-What is hidden and what is not. The frames come in look-alike groups (1-2-7, 3-4, 5-6) with the
-same symptom, the same picture and the same intended picture pixel for pixel; frames that look
-alike may or may not share a cause (r16 11-2: while each pair held two different causes,
-solving one frame ruled its cause out for its partner). Hidden: the cause (no attribute or repr
+What is hidden and what is not. The frames come in look-alike groups (1-2, 3-4-9, 5-6-7-8)
+with the same symptom, the same picture and the same intended picture pixel for pixel; frames that
+look alike may or may not share a cause (r16 11-2: while each pair held two different causes,
+solving one frame ruled its cause out for its partner). Two frames that share a cause never
+bear its mark at the same pixels (r18-3: frame 7 was frame 1's mistake at the same pixels, and
+frame 1's function passed it unread): frame 7 has frame 1's cause on the strip, frame 8 frame
+6's with the thin triangle over other pixels, frame 9 frame 5's on the pane (off the strip's
+pixels), so a diagnosis copied from a frame with the same cause fails, and each frame's
+histories must be read. Hidden: the cause (no attribute or repr
 of a :class:`BrokenFrame` names it; the module keeps only a salted hash of each frame's cause,
 which hides the key from a reader, not from someone who hashes the ten names: an answer whose
 code reads ``_KEY`` or ``_SALT``, under any name, is not counted), the frames' ``plan``
@@ -49,7 +54,7 @@ import hashlib
 import operator
 import secrets
 import threading
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cache, lru_cache
 
 import numpy as np
@@ -153,7 +158,8 @@ _SALT = "teachraster/broken-frames/r9"
 _KEY = {1: "e68f66d3ea75110820cace3e308b0d6e", 2: "c6b79012eaf45d23d1a4d99109306658",
         3: "04b91d018fc9aec9a7aa6f32f59360cb", 4: "e2b44365fd55dbf77960b5922c872641",
         5: "38234cdea627c46e16be35257101261e", 6: "2413d43fbc57dd32560223caa37f49b2",
-        7: "efdc574170a935ebbec1162e53c18d43"}  # fmt: skip
+        7: "efdc574170a935ebbec1162e53c18d43", 8: "2a0c8faa4906343dfbf80a84c2f39564",
+        9: "a9edd7c9c7d7ccbdf0c6cb5930679202"}  # fmt: skip
 
 
 def _is_cause(number: int, cause: str) -> bool:
@@ -311,13 +317,6 @@ _REDRAWN = (
 )
 
 
-def _shallow(look: _Look) -> _Look:
-    """``look`` with the cube's depths in half the range (around 0.5): the same pixels, other
-    depths (frame 7, a look-alike of frames 1 and 2)."""
-    a, c = look.cube
-    return replace(look, cube=(a / 2, c / 2))
-
-
 def _cube(look: _Look, winding_reversed: bool = False, **kwargs) -> Frame:
     scene = get_scene("cube")
     clip = scene.clip(W / H)
@@ -347,13 +346,21 @@ _WEDGE = [
 # Along y = 20.5 + (x - 32) / 4 every pixel centre lies 0.125 px or more above or below the
 # line, so a strip at most 0.1 px thick above it covers none, though its box reaches many.
 _NEEDLE = [[[8, 14.5], [56, 26.5], [56, 26.6]]]
+# The same needle along the strip's top edge (y = 19.5 + (x - 32) / 4: centres 0.125 px or
+# more off it too): frame 8 is frame 6's picture pixel for pixel, but its needle crosses other
+# pixels (not (22, 40), frame 6's solution's; 12 of its 36 are among frame 6's 60: two needles
+# inside a 2-px strip cannot avoid each other's pixels), so frame 6's diagnosis, copied, fails
+# it (r18-3: a look-alike sharing a cause must be read, not copied).
+_NEEDLE_TOP = [[[8, 13.5], [56, 25.5], [56, 25.6]]]
 
 
-def _pixels(parts) -> Frame:
+def _pixels(parts, reverse_depth: bool = False) -> Frame:
     """Render ``parts`` [(triangles in pixels, depth, premultiplied RGBA)] in order over the
-    wall's settings; a part with alpha < 1 (glass) writes no depth (lesson 11 §6)."""
+    wall's settings; a part with alpha < 1 (glass) writes no depth (lesson 11 §6). With
+    ``reverse_depth`` every depth d is drawn at 1 - d (the data mapped the other way round,
+    not a setting: the test still keeps the smaller)."""
     xy = [t for tris, *_ in parts for t in tris]
-    z = [[d] * 3 for tris, d, _ in parts for _ in tris]
+    z = [[1 - d if reverse_depth else d] * 3 for tris, d, _ in parts for _ in tris]
     rgba = np.concatenate([np.repeat(np.asarray([c], float)[:, None], 3 * len(tris), 0)
                            .reshape(len(tris), 3, 4) for tris, _, c in parts])  # fmt: skip
     writes = np.concatenate([np.full(len(tris), c[3] == 1.0) for tris, _, c in parts])
@@ -366,13 +373,20 @@ def _wall(look: _Look):
     return (_quad(4, 4, 60, 44), look.wall_steps / 65535, [*look.wall, 1.0])
 
 
+#: The pane's corners (x0, y0, x1, y1), px: in the wall's upper right, off the cube's changed
+#: pixels and the strip's (r18-3: frame 9, blend order on the pane, is frame 5's cause; at
+#: pixels frame 5's pane was on, frame 5's diagnosis copied passed it, and frame 1's at (24, 28)
+#: would pass any pane frame with its cause).
+_PANE = (48, 6, 58, 20)
+
+
 def _pane(look: _Look, nearer: float, premultiplied: bool = True):
     """A dark pane ``nearer`` than the wall, whose straight colour is the wall's darkened by
     its alpha: blended as premultiplied without being multiplied, it adds exactly what it
     should have hidden."""
     straight = _ALPHA * np.asarray(look.wall)
     colour = straight * _ALPHA if premultiplied else straight
-    return (_quad(20, 12, 44, 36), look.wall_steps / 65535 - nearer, [*colour, _ALPHA])
+    return (_quad(*_PANE), look.wall_steps / 65535 - nearer, [*colour, _ALPHA])
 
 
 def _strip(look: _Look, triangles):
@@ -380,12 +394,14 @@ def _strip(look: _Look, triangles):
 
 
 #: Each frame's symptom as a user would report it: what is seen, never the mechanism, and how
-#: to draw it with a look (broken, intended). The frames come in look-alike groups (1-2-7, 3-4,
-#: 5-6): the same symptom, the same picture and the same intended picture, pixel for pixel;
+#: to draw it with a look (broken, intended). The frames come in look-alike groups (1-2, 3-4-9,
+#: 5-6-7-8): the same symptom, the same picture and the same intended picture, pixel for pixel;
 #: only the histories tell them apart (3 to 6 even share the broken picture: a plain wall).
 #: r16 11-2: while every pair held two different causes, a solved frame ruled its cause out
-#: for its partner; now the cube's group holds a cause twice (at other depths) and another
-#: once, so a look-alike's cause tells neither that it is nor that it is not the frame's.
+#: for its partner; now the strip's group holds a cause twice and two others once, the pane's
+#: three causes (one of them the strip's), so a look-alike's cause tells neither that it is nor that it is not the frame's. r18-3: frames
+#: sharing a cause bear its mark at different pixels (the strip's, not the cube's; another
+#: needle), so that one frame's diagnosis, copied, fails the other.
 _SPECS = [
     ("The cube does not look as intended.",
      lambda k: _cube(k, reverse_depth=True), lambda k: _cube(k)),
@@ -402,8 +418,16 @@ _SPECS = [
     ("The tinted strip across the wall is missing.",
      lambda k: _pixels([_wall(k), _strip(k, _NEEDLE)]),
      lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
-    ("The cube does not look as intended.",
-     lambda k: _cube(_shallow(k), reverse_depth=True), lambda k: _cube(_shallow(k))),
+    # r18-3: frame 7 was frame 1's mistake at the same pixels (frame 1's function passed it);
+    # now the same mistake hides the strip, at other pixels, a look-alike of frames 5 and 6
+    ("The tinted strip across the wall is missing.",
+     lambda k: _pixels([_wall(k), _strip(k, _WEDGE)], reverse_depth=True),
+     lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
+    ("The tinted strip across the wall is missing.",
+     lambda k: _pixels([_wall(k), _strip(k, _NEEDLE_TOP)]),
+     lambda k: _pixels([_wall(k), _strip(k, _WEDGE)])),
+    ("The dark pane on the wall is missing.",
+     lambda k: _pixels([_pane(k, 0.2), _wall(k)]), lambda k: _pixels([_wall(k), _pane(k, 0.2)])),
 ]  # fmt: skip
 
 
@@ -466,35 +490,58 @@ def frame_pairs() -> dict[str, str]:
     return {f"frame {b.number}": f"intended {b.number}" for b in broken_frames()}
 
 
-#: Why a frame looks like its look-alike, told once its check has passed: the words name the
-#: mistake (r16 N2: kept in the notebook's locked cell, they stood in its source, readable
-#: before 11.3 and 11.4 were solved).
-_CONTRIVED = {
+#: A note on each frame (how it was made, and how its mistake usually shows), told once its
+#: check has passed: the words name the mistake (r16 N2: kept in the notebook's locked cell,
+#: they stood in its source, readable before the frame was solved). r18-5: every frame after
+#: the first (whose cell prints its depths) has one, so that no note singles a frame out as
+#: the contrived one.
+_NOTES = {
+    2: "Frame 2 is not contrived: a mesh whose corners are listed the other way round (as some\n"
+    "tools export it) shows its inside wherever back faces are culled.",
+    3: "Frame 3 is contrived so that the pane is missing everywhere: it lies parallel to the\n"
+    "wall, so every pixel ties. At an angle the tie would come and go, and the two surfaces\n"
+    "would show through each other in stitches.",
     # r18-4: "so that the pair looks alike" (the pair is a frame and its intended frame)
-    4: "Frame 4 is contrived so that it looks like frame 3: the pane's straight colour is\n"
+    # r18-3: "so that it looks like frame 3" told, once 11.4 passed, that frame 3's cause is
+    # another (and "like frame 6", frame 6's cause): a note names no other frame
+    4: "Frame 4 is contrived so that the pane vanishes into the wall: its straight colour is\n"
     "exactly its alpha times the wall's. The same mistake usually shows as a pane too bright.",
+    5: "Frame 5 is not contrived: glass drawn before what lies behind it is replaced wherever an\n"
+    "opaque surface is drawn after it; transparent geometry is drawn last, back to front.",
+    6: "Frame 6 is contrived so that the strip is missing everywhere: the thin triangle lies\n"
+    "between the rows of pixel centres along its whole length. A sliver usually shows as a\n"
+    "broken, dotted line, where it covers a centre now and then.",
+    7: "Frame 7 is not contrived: with the depths mapped the other way round, glass in front of\n"
+    "a wall drawn first fails the test wherever the wall is behind it.",
+    9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
+    "wall is drawn; the usual cure draws transparent geometry last, back to front.",
+    8: "Frame 8 is contrived so that the strip is missing everywhere: the thin triangle runs\n"
+    "along the strip's top edge, between the rows of pixel centres. A sliver usually shows as\n"
+    "a broken, dotted line, where it covers a centre now and then.",
 }
 
 
-def frame_note(report) -> str:
-    """What the notebook tells after a broken frame's check: how the frame was contrived, once
-    ``report`` (a report :func:`~.checks.check` returned for that frame) has passed; until
-    then, where it will be told.
+def frame_note(number: int, report) -> str:
+    """What the notebook tells after frame ``number``'s check: its note, once ``report`` (a
+    report :func:`~.checks.check` returned for that frame) has passed; until then, where it
+    will be told.
 
-    >>> print(frame_note(None))
+    >>> print(frame_note(4, None))
     A note on frame 4 is printed here once the check of broken_frame_4 above passes.
     """
-    name = str(getattr(report, "exercise", ""))
-    number = next((n for n in _CONTRIVED if name == f"broken_frame_{n}"), None)
-    if number is not None and issued(report) and report.passed:
-        return _CONTRIVED[number]
+    number = as_int("number", number)
+    if number not in _NOTES:
+        raise ValueError(f"number must be one of {sorted(_NOTES)}, got {number}")
+    name = f"broken_frame_{number}"
+    if getattr(report, "exercise", None) == name and issued(report) and report.passed:
+        return _NOTES[number]
     # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
     # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
-    return "A note on frame 4 is printed here once the check of broken_frame_4 above passes."
+    return f"A note on frame {number} is printed here once the check of {name} above passes."
 
 
 def broken_frame(number: int) -> BrokenFrame:
-    """Frame ``number`` (1 to 7)."""
+    """Frame ``number`` (1 to the number of frames, 9)."""
     frames = broken_frames()
     number = as_int("number", number)  # the one integer rule: no bools, operator.index
     if not 1 <= number <= len(frames):
@@ -899,8 +946,16 @@ def _unmarked_words(args, number, got) -> str:
     if cause == "sliver":
         b = _as_frame(number)
         k = int(np.argmin(_altitudes(b.frame)))
-        far = [r.outside for r in b.frame.history(row, col).records if r.triangle == k]
-        by = f" (its centre lies {far[0]:.4f} px outside it)" if far and far[0] else ""
+        far = [r for r in b.frame.history(row, col).records if r.triangle == k]
+        by = ""
+        if far and far[0].outside:
+            # r18-8: 0.6063 px read as inside a square that reaches 0.707 px along a diagonal;
+            # towards an edge at an angle it reaches 0.5 (|cos| + |sin|) of its normal
+            reach, edge = _reach(b.frame, far[0]), far[0].edge
+            upto = ("touches it at a corner, no more" if abs(reach - far[0].outside) < 5e-5
+                    else f"reaches only {reach:.4f} px from its centre towards {edge}")  # fmt: skip
+            by = (f" (its centre lies {far[0].outside:.4f} px outside {edge}, and the square "
+                  f"{upto})")  # fmt: skip
         return (f"the pictures differ at ({row}, {col}), but the thin triangle does not pass "
                 f"through this pixel's square{by}, so the pixel cannot show a sliver: pick a "
                 "pixel the thin triangle crosses without covering its centre")  # fmt: skip
@@ -908,6 +963,15 @@ def _unmarked_words(args, number, got) -> str:
         f"the pictures differ at ({row}, {col}), but its two histories do not show the "
         f"mark of {cause!r} ({_SIGNS[cause][1]}): pick a pixel whose histories do"
     )
+
+
+def _reach(frame: Frame, record) -> float:
+    """How far (px) a pixel's square reaches from its centre towards the edge ``record``
+    names (E12, E23, E31 or the other way round): 0.5 (|cos| + |sin|) of the edge's normal's
+    angle, 0.5 px towards a level edge, 0.707 px towards one at 45 degrees."""
+    a, b = (int(d) - 1 for d in record.edge[1:3])
+    dx, dy = frame.trace.window[record.piece, b, :2] - frame.trace.window[record.piece, a, :2]
+    return float(0.5 * (abs(dx) + abs(dy)) / np.hypot(dx, dy))
 
 
 def _evidence_words(args, number, got) -> str:

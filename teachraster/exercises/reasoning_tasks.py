@@ -12,7 +12,7 @@ typical mistakes), defined in its own module:
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
-- ``broken_frame_1`` … ``broken_frame_7`` (11, :mod:`.broken_frames`).
+- ``broken_frame_1`` … ``broken_frame_9`` (11, :mod:`.broken_frames`).
 """
 
 from __future__ import annotations

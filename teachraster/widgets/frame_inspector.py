@@ -20,6 +20,7 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.patheffects import withStroke
 
+from ..pipeline.debugging.frame_history import history_table
 from ..pipeline.debugging.overlays import KINDS, quad_triangles
 from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.render_triangles import render as render_clip
@@ -201,11 +202,13 @@ def _checked_frames(frames) -> dict | None:
     return dict(frames)
 
 
-#: The history table's font size, alone and with its pair's beside it: paired, a little
-#: smaller, so that each of the two fits a 592-px column (JupyterLab at 1024 x 768 with the
-#: file browser open), where at 0.8em a table of the exercise's frames took 615 px and cut
-#: "outside E12 by 6.1611 px" (review r18, exercise 11).
-TABLE_FONT, PAIRED_FONT = "0.8em", "0.75em"
+#: The history table's font size, alone and with its pair's beside it: a projector's 12 px
+#: (the course's rule for text), the table narrow (:func:`history_table`, at most
+#: :data:`NARROW` characters a line) so that each fits a 592-px column (JupyterLab at
+#: 1024 x 768 with the file browser open). Review r18: at 0.8em a table took 615 px and cut
+#: "outside E12 by 6.1611 px"; at 0.75em (9.75 px) two fitted side by side, too small to
+#: read. Two at 12 px stand side by side only in a column of 2 x 578 + 24 px or more.
+TABLE_FONT = PAIRED_FONT = "12px"
 
 
 def _pre(text: str, size: str = TABLE_FONT) -> str:
@@ -374,7 +377,7 @@ class FrameInspector(Holdable):
     def _show_history(self) -> None:
         row, col = self.row.value, self.col.value
         self.history = self.frame.history(row, col)
-        text = str(self.history)
+        text = history_table(self.history, narrow=True)
         if self.view.value == "quad_overshading":  # who launched this quad's lanes
             text += "\n\n" + quad_text(self.frame, row, col)
         pair = self.pairs.get(self.scene.value) if self.beside.value else None
@@ -382,8 +385,8 @@ class FrameInspector(Holdable):
         if self.pair_history is None:
             self.table.value = _pre(text)
             return
-        self.table.value = paired_tables(((self.scene.value, text),
-                                          (pair, str(self.pair_history))))  # fmt: skip
+        beside = history_table(self.pair_history, narrow=True)
+        self.table.value = paired_tables(((self.scene.value, text), (pair, beside)))
 
     def _bar_room(self) -> float:
         """Inches right of the colour bar that its ticks and label take, as drawn, and a

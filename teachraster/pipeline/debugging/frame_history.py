@@ -36,6 +36,7 @@ the last one drawn shows.
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -543,18 +544,23 @@ def _tuple(c) -> tuple:
     return tuple(float(v) for v in c)
 
 
-def history_table(h: PixelHistory) -> str:
-    """The readable table ``print(h)`` shows."""
-    head = (
-        f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
-        f"{'on' if h.depth_test else 'off'}: {len({r.triangle for r in h.records})} "
-        f"triangle(s) on the way; shows " + ("nothing" if h.shows < 0 else f"triangle {h.shows}")
-    )
-    cols = f"{'tri':>5} {'piece':>5} {'smp':>3}  {'outcome':<22} {'depth':>9} {'before':>9} {'after':>9}  value / why"  # noqa: E501
-    lines = [head, cols]
+def history_table(h: PixelHistory, narrow: bool = False) -> str:
+    """The readable table ``print(h)`` shows. ``narrow``: at most :data:`NARROW` characters a
+    line, for a widget's column at a projector's 12 px (review r18, exercise 11: at 0.75em,
+    9.75 px, two tables fitted a 592-px column side by side, too small to read): the header
+    on two lines, the piece and sample columns only where they say something (a clipped
+    piece, more than one sample), each colour line's "after" on a line of its own."""
+    shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
+    where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
+             f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
+    way = f"{len({r.triangle for r in h.records})} triangle(s) on the way; shows {shows}"
+    # the piece and the sample columns, unless narrow and they repeat the triangle, say nothing
+    ids = not narrow or h.n_samples > 1 or any(r.piece != r.triangle for r in h.records)
+    lines = [f"{where}\n{way}" if narrow else f"{where} {way}"]
     # Blending, a later fragment that passes is blended over this one, which is not hidden:
     # its colour is in the result (the colour lines say how much).
     later = "under" if h.blend is not None and h.blend.mode is not None else "hidden by"
+    rows = []
     for r in h.records:
         outcome = r.outcome
         if r.outcome == "passed":
@@ -567,23 +573,39 @@ def history_table(h: PixelHistory) -> str:
             why = "(no attributes: the scene has none)"
         else:
             why = ""
-        lines.append(
-            f"{r.triangle:>5} {r.piece:>5} {r.sample:>3}  {outcome:<22} {_num(r.depth)} "
-            f"{_num(r.depth_before)} {_num(r.depth_after)}  {why}"
-        )
+        rows.append((r, outcome, why))
+    wide = 22 if not narrow else max([len("outcome"), *(len(o) for _, o, _ in rows)])
+    tri = 5 if not narrow else 3
+    head = f"{'tri':>{tri}} " + (f"{'piece':>5} {'smp':>3} " if ids else "")
+    lines.append(f"{head} {'outcome':<{wide}} {'depth':>9} {'before':>9} {'after':>9}  "
+                 "value / why")  # fmt: skip
+    for r, outcome, why in rows:
+        head = f"{r.triangle:>{tri}} " + (f"{r.piece:>5} {r.sample:>3} " if ids else "")
+        line = (f"{head} {outcome:<{wide}} {_num(r.depth)} {_num(r.depth_before)} "
+                f"{_num(r.depth_after)}")  # fmt: skip
+        if narrow and len(line) + 2 + len(why) > NARROW:  # the why under its row, wrapped
+            lines += [line, *textwrap.wrap(why, NARROW, initial_indent=" " * 6,
+                                           subsequent_indent=" " * 6)]  # fmt: skip
+        else:
+            lines.append(f"{line}  {why}".rstrip())
     if len(h.records) == 0:
         lines.append("  (no triangle's bounding box reaches this pixel)")
     if h.clipped_away:
         lines.append(f"  ({h.clipped_away} triangle(s) of the frame clipped away whole: behind "
                      "the eye or beyond the far plane, they reach no pixel)")  # fmt: skip
-    lines += colour_lines(h)
+    lines += colour_lines(h, narrow)
     return "\n".join(lines)
 
 
-def colour_lines(h: PixelHistory) -> list[str]:
+#: The longest line of a narrow history table (:func:`history_table`): 592 px at 12 px in a
+#: monospace font of 0.602 em a character is 81.9 characters.
+NARROW = 80
+
+
+def colour_lines(h: PixelHistory, narrow: bool = False) -> list[str]:
     """The colour part of the table: per record that reached the colour buffer, the
     target's RGBA before, the fragment's own and the target's after (none without a
-    colour buffer)."""
+    colour buffer); ``narrow``: the "after" on a line of its own."""
     if h.blend is None:
         return []
     mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
@@ -593,8 +615,9 @@ def colour_lines(h: PixelHistory) -> list[str]:
     for r in h.records:
         if r.outcome == "passed":
             smp = f" s{r.sample}" if h.n_samples > 1 else ""
-            out.append(f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
-                       f" -> {_rgba(r.color_after)}")  # fmt: skip
+            line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
+            after = f" -> {_rgba(r.color_after)}"
+            out += [line, " " * 9 + after] if narrow else [line + after]
     return out
 
 
