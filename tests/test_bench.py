@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import csv
+import inspect
+import itertools
+import time
 
 import numpy as np
 import pytest
@@ -173,6 +176,17 @@ def test_time_rows_time_a_part_beside_the_whole_in_the_same_rounds():
         assert 0 <= r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
 
 
+def test_the_groups_read_the_clock_they_are_given():
+    # r20 06-1..4: lesson 06 times the study in CPU time (clock=time.process_time); a clock
+    # that ticks once per reading times every call as exactly 1, the part beside the whole too
+    ticks = itertools.count()
+    rows = bench.bench_fill({"fill": (16,)}, 2, bench.Progress(1, enabled=False),
+                            clock=lambda: next(ticks))  # fmt: skip
+    for r in rows:
+        assert r["time_min_s"] == r["time_max_s"] == r["coverage_median_s"] == 1
+    assert inspect.signature(bench.run).parameters["clock"].default is time.perf_counter
+
+
 def test_fill_rows_time_the_bare_coverage_beside_the_textured_fill():
     rows = bench.bench_fill({"fill": (32,)}, 1, bench.Progress(1, enabled=False))
     assert [r["variant"] for r in rows] == [
@@ -201,9 +215,10 @@ def test_the_bare_triangle_the_fill_rows_time_covers_what_the_textured_fill_cove
 
 @pytest.mark.bench
 def test_lesson_06_signs_benchmark_reports_every_claim():
-    """Review r17 06-1..3: the signs lesson 06 states for numpy's times (subdivided slower at
-    every N, affine faster, incremental slower in every arithmetic, coverage under half a
-    textured fill) are measured by benchmarks/bench_lesson06_signs.py, in CPU time, PASS or
+    """Review r17 06-1..3, r20 06-1..4: the signs lesson 06 states for numpy's times
+    (subdivided slower at every N, affine nowhere near the model's 1/35, incremental slower in
+    every arithmetic, coverage under half a textured fill, the two coverages closer than their
+    counts) are measured by benchmarks/bench_lesson06_signs.py, in CPU time, PASS or
     MISS: never asserted by a test (a timed assertion fails on a loaded machine). Its smoke
     run reports every claim."""
     import subprocess
@@ -216,7 +231,7 @@ def test_lesson_06_signs_benchmark_reports_every_claim():
     out = subprocess.run([sys.executable, str(script), "--quick"], capture_output=True,
                          text=True, timeout=300, check=True).stdout  # fmt: skip
     lines = [ln for ln in out.splitlines() if " PASS " in ln or " MISS " in ln]
-    expected = 1 + len(bench.SUBDIVISIONS) + len(precision.ARITHMETICS) + 4
+    expected = 1 + len(bench.SUBDIVISIONS) + len(precision.ARITHMETICS) + 4 + 2
     assert len(lines) == expected, out
     assert f"of {expected} claims hold" in out
     for arith in precision.ARITHMETICS:

@@ -154,9 +154,9 @@ def test_06_edge_bits_and_depth_claims():
 
 
 def test_06_reads_its_times_by_what_the_timer_includes():
-    """Review r17 06-1..8: the text says what numpy's timers include and states only what is
-    stable across runs (its signs, measured in CPU time by benchmarks/bench_lesson06_signs.py:
-    a benchmark, not a test); every table
+    """Review r17 06-1..8, r20 06-1..4: the text says what numpy's timers include and states
+    only what is stable across runs (its signs, measured in CPU time by
+    benchmarks/bench_lesson06_signs.py: a benchmark, not a test); every table
     prints each time's spread; the fill group times coverage alone beside the textured fill."""
     import json
 
@@ -168,19 +168,27 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # 06-1: no Python loop per row (the span fill is vectorised); the timer's uv is said
     assert "span loop in Python" not in md and "every row's crossings at once" in md
     assert "interpolates $uv$ perspective-correctly at every covered pixel" in md
-    # coverage alone, timed in the same rounds: "a minor part of each untraced fill"
+    # coverage alone, timed in the same rounds, its share printed ("a minor part of each
+    # untraced fill", and "the two coverages still differ by far less than the counts": signs
+    # of times, measured by benchmarks/bench_lesson06_signs.py, not asserted here)
     assert set(ns.coverage_share) == {"halfplane 256²", "span 256²", "halfplane 512²", "span 512²"}
-    fills = [r for r in ns.fill if "trace" not in r["variant"]]
-    assert sum(r["coverage_median_s"] for r in fills) < sum(r["time_median_s"] for r in fills) / 2
-    # "the two coverages still differ by far less than the counts"
-    assert all(ns.coverage_ratio[s] < ns.fill_ratio[s] for s in ns.fill_ratio), ns.coverage_ratio
+    assert set(ns.coverage_ratio) == set(ns.fill_ratio) == {"256²", "512²"}
+    # r20 06-1..4: the times the signs rest on are the kernel's CPU time, fastest of interleaved
+    # rounds (waiting for a core not counted), and the text says so
+    assert "clock=time.process_time" in code and "fastest(r)" in code
+    assert "CPU time" in md and "waiting for a core" in md and "fastest of five rounds" in md
+    assert "ROUNDS = 5" in code  # "five" in the text
     # 06-2, 06-3: the stable signs, not "not reliably" / "whatever this run measured"
     assert "not reliably" not in md and "whatever this run measured" not in md
     assert "In numpy it is the *slower* one, in every arithmetic" in md
     assert "subdivision is *slower* than the exact divide at every $N$" in md
-    assert "affine → perspective-correct alone" in md and "coverage included" in md
-    # affine "times nowhere near the model's thirty-fifth of perspective-correct"
-    assert ns.cyc["perspective"] / ns.cyc["affine"] == 35 and ns.affine_time > 0.1
+    assert "coverage included" in md
+    # affine "times nowhere near the model's thirty-fifth of perspective-correct" (its time's
+    # side of 1 is not claimed: near 1, r20 06 run D printed 1.12; the bench measures "nowhere near")
+    assert ns.cyc["perspective"] / ns.cyc["affine"] == 35
+    assert "affine → perspective-correct alone" not in md
+    assert "Which of those two is faster in numpy, this lesson does not claim" in md
+    assert "on either side in a run" in md  # the summary hedges it too
     # 06-4: every table prints min..max beside the median (the depth and edge tables too)
     assert "{'min..max ms':>12s}" in code and "{spread(r):>12s}" in code
     assert "time says nothing: the eight times differ by noise" in md
@@ -192,8 +200,8 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # the CPU-time benchmark of the same signs
     assert "explain why the front keeps its order" not in md and "costs half of what" not in md
     assert "bench_lesson06_signs.py" in md and all(ns.quake_share[d] < 0.5 for d in ns.quake_share)
-    # r19: the timer is wall-clock, and subdivided's per-pixel division is said
-    assert "wall-clock" in md and "a division by the piece's length" in md
+    # r19: subdivided's per-pixel division is said (r20: the timer is CPU time, above)
+    assert "a division by the piece's length" in md
     # r17 cell 23: why linear depth's crossing is a vertical line
     assert "reaches the facing triangle's depth on one vertical line" in md
 

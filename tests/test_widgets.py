@@ -1164,8 +1164,18 @@ def _plane_figure():
     return e, e.fig, None
 
 
+def _divide_cost_figure():
+    from teachraster.study import bench
+    from teachraster.study import operation_counts as ops
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+
+    rows = bench.bench_interpolation(bench.sizes(True), 1, bench.Progress(1, enabled=False))
+    e = DivideCostExplorer(ops.with_counts(rows), backend="image")  # lesson 06's, r20 06-6
+    return e, e.fig, None
+
+
 @pytest.mark.parametrize("make", [_steps_figure, _comparison_figure, _viewer_figure,
-                                  _filter_figure, _plane_figure])  # fmt: skip
+                                  _filter_figure, _plane_figure, _divide_cost_figure])  # fmt: skip
 def test_widget_figures_read_12_px_in_the_column_at_1024_px(make):
     """Reviews r9/r10 (00 c14, 04 c15, 04 c25): the player's comparison and lesson 04's
     viewer, 940 px wide at 80 dpi, are shown 585 px wide at 1024 x 768, where their tick

@@ -53,6 +53,9 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
                 xlim: tuple | None = None) -> ParetoArtists:  # fmt: skip
     """Draw ``rows`` as error ``y`` against cost ``x`` with their Pareto front.
 
+    The point labels and "0 (exact)" are the style's "small" size (15 pt in the classroom
+    style: 12 px or more with the figure shrunk to a 556-px column at 1024 x 768, review r20).
+
     Parameters
     ----------
     ax : matplotlib Axes
@@ -85,11 +88,11 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
     for r in rows:
         (points[r["variant"]],) = ax.plot([], [], ls="none", ms=11, marker="o")
         labels[r["variant"]] = ax.annotate(short(r["variant"]), (0, 0), textcoords="offset points",
-                                           xytext=(8, 6), fontsize=13)  # fmt: skip
+                                           xytext=(8, 6), fontsize="small")  # fmt: skip
     (line,) = ax.step([], [], where="post", color=COLORS["outside"], lw=2.5, label="Pareto front")
     ax.axhline(floor, color="gray", ls="--", lw=1)
     exact = ax.text(0.01, floor, " 0 (exact)", transform=ax.get_yaxis_transform(),
-                    va="bottom", fontsize=12, color="gray")  # fmt: skip
+                    va="bottom", fontsize="small", color="gray")  # fmt: skip
     art = ParetoArtists(points, line, labels, floor, [], short, xlim)
     art.spreader = ax.add_artist(_LabelSpreader([labels[r["variant"]] for r in rows], [exact]))
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels

@@ -1,10 +1,11 @@
 """Accuracy vs time: what each cheaper or costlier way of rasterising gets wrong, and costs.
 
-Run ``python -m teachraster.study.bench [--quick] [--out DIR] [--repeat N]``. On fixed, seeded
-scenes it measures every variant's error against a ground truth computed independently of
-the rasteriser, and its time (the median of ``--repeat`` runs after two warm-ups, with
-``time.perf_counter``; the variants of a group are timed round-robin, so a busy machine
-slows them alike). It prints a table, writes ``bench.csv`` (one row per variant) and
+Run ``python -m teachraster.study.bench [--quick] [--out DIR] [--repeat N] [--cpu]``. On fixed,
+seeded scenes it measures every variant's error against a ground truth computed independently
+of the rasteriser, and its time (the median of ``--repeat`` runs after two warm-ups, with
+``time.perf_counter``, or this process's CPU time, ``time.process_time``, with ``--cpu`` or
+``run(clock=...)``; the variants of a group are timed round-robin, so a busy machine slows
+them alike). It prints a table, writes ``bench.csv`` (one row per variant) and
 the plots ``pareto.png`` and ``subdivision.png`` into DIR (default ``bench-out/``).
 
 Groups

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import time
+from collections.abc import Callable
 
 import numpy as np
 
@@ -79,7 +81,9 @@ def _divides(cov: np.ndarray, mode: str, n: int) -> int:
     return int((-(-lengths // n) + ((lengths - 1) % n != 0)).sum())
 
 
-def bench_interpolation(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+def bench_interpolation(
+    cfg: dict, repeat: int, progress: Progress, clock: Callable[[], float] = time.perf_counter
+) -> list[dict]:
     size = cfg["interp"]
     xy, w, uv = floor_quad(size)
     tris = [Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}) for t in range(2)]
@@ -112,7 +116,7 @@ def bench_interpolation(cfg: dict, repeat: int, progress: Progress) -> list[dict
         )
         timers.append(fill)
         progress.step(f"interpolation: {name}")
-    return time_rows(rows_out, timers, repeat, progress, "perspective")
+    return time_rows(rows_out, timers, repeat, progress, "perspective", clock=clock)
 
 
 # -- edge functions ---------------------------------------------------------------------------
@@ -158,7 +162,9 @@ def _scale_label(offset: int) -> str:
     return "0" if offset == 0 else f"1e{round(math.log10(offset))}"
 
 
-def bench_edges(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+def bench_edges(
+    cfg: dict, repeat: int, progress: Progress, clock: Callable[[], float] = time.perf_counter
+) -> list[dict]:
     size, msize = cfg["edges"], cfg["mesh"]
     tris = random_triangles(size)
     ref8 = [exact_coverage(t, size, size, 8) for t in tris]
@@ -204,7 +210,7 @@ def bench_edges(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
         rows_out.append(row)
         timers.append(fill)
         progress.step(f"edge functions: {arith} {ev}")
-    return time_rows(rows_out, timers, repeat, progress, "fixed8 direct")
+    return time_rows(rows_out, timers, repeat, progress, "fixed8 direct", clock=clock)
 
 
 # -- fill algorithms --------------------------------------------------------------------------
@@ -214,7 +220,9 @@ def fill_triangle(size: int) -> Triangle:
     return Triangle(xy, w=[1.0, 2.0, 4.0], attrs={"uv": [[0, 0], [1, 0], [0, 1]]})
 
 
-def bench_fill(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+def bench_fill(
+    cfg: dict, repeat: int, progress: Progress, clock: Callable[[], float] = time.perf_counter
+) -> list[dict]:
     """Each fill's time, and beside it (``coverage_*_s``) the same fill of the bare positions.
 
     The timed fill interpolates the triangle's uv perspective-correctly at every covered
@@ -249,7 +257,7 @@ def bench_fill(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
                 coverage_timers.append(cover)
                 progress.step(f"fill: {name}")
         rows_out += time_rows(block, timers, repeat, progress, f"halfplane {size}²",
-                              also=("coverage", coverage_timers))  # fmt: skip
+                              also=("coverage", coverage_timers), clock=clock)  # fmt: skip
     return rows_out
 
 
@@ -325,7 +333,9 @@ def depth_clip(view: np.ndarray, mapping: str, aspect: float = 1.0) -> np.ndarra
     return clip
 
 
-def bench_depth(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
+def bench_depth(
+    cfg: dict, repeat: int, progress: Progress, clock: Callable[[], float] = time.perf_counter
+) -> list[dict]:
     size = cfg["depth"]
     view, z_view = depth_pairs()
     # Ground truth: the painter's algorithm with exact view distances, far to near, no
@@ -364,4 +374,4 @@ def bench_depth(cfg: dict, repeat: int, progress: Progress) -> list[dict]:
             )
             timers.append(draw)
             progress.step(f"depth: {mapping} {fmt}")
-    return time_rows(rows_out, timers, repeat, progress, "window float64")
+    return time_rows(rows_out, timers, repeat, progress, "window float64", clock=clock)

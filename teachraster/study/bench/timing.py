@@ -26,11 +26,12 @@ def time_interleaved(fns: list[Callable[[], object]], repeat: int) -> list[float
 def time_samples(
     fns: list[Callable[[], object]], repeat: int, clock: Callable[[], float] = time.perf_counter
 ) -> list[list[float]]:
-    """Every timed call of :func:`time_interleaved`: one list of ``repeat`` wall times per
-    ``fn``, so a report can print the spread beside the median.
+    """Every timed call of :func:`time_interleaved`: one list of ``repeat`` times per ``fn``
+    (wall times by default), so a report can print the spread beside the median.
 
-    ``clock=time.process_time`` times this process's CPU instead of the wall: a sign that
-    must hold on a loaded machine is judged on it (``benchmarks/bench_lesson06_signs.py``).
+    ``clock=time.process_time`` times this process's CPU instead of the wall: time spent
+    waiting for a core is not counted, so a sign that must hold on a loaded machine is judged
+    on it, on the fastest rounds (lesson 06, ``benchmarks/bench_lesson06_signs.py``).
     """
     repeat = as_size("repeat", repeat)
     for _ in range(2):
@@ -52,17 +53,19 @@ def time_rows(
     progress: Progress,
     baseline: str,
     also: tuple[str, list] | None = None,
+    clock: Callable[[], float] = time.perf_counter,
 ):
-    """Time a group's variants together (:func:`time_interleaved`), then add the ratios.
+    """Time a group's variants together (:func:`time_samples`), then add the ratios.
 
     Each row gets the median (``time_median_s``) and the fastest and slowest run
     (``time_min_s``, ``time_max_s``): on a busy machine the spread says how far to trust it.
     ``also = (name, fns)``, one more call per row timed in the same rounds (so load slows
     both alike), adds ``{name}_median_s``, ``{name}_min_s`` and ``{name}_max_s``: a part of
-    the work timed beside the whole.
+    the work timed beside the whole. ``clock`` as in :func:`time_samples` (wall time by
+    default; ``time.process_time`` for this process's CPU time).
     """
     name, more = also if also is not None else ("", [])
-    samples = time_samples(list(fns) + list(more), repeat)
+    samples = time_samples(list(fns) + list(more), repeat, clock=clock)
     for row, t in zip(rows, samples):
         row.update(_spread("time", t))
     for row, t in zip(rows, samples[len(fns) :]):
