@@ -272,3 +272,23 @@ def test_lesson_06_states_the_front_in_the_codes_words():
     text = " ".join(text)
     assert bench.FRONT_DEFINITION in text
     assert "both cheaper and more accurate" not in text
+
+
+@pytest.mark.parametrize("flag, clock", [([], "perf_counter"), (["--cpu"], "process_time")])
+def test_the_command_times_cpu_with_cpu_and_the_wall_without(flag, clock, tmp_path, monkeypatch):
+    """``--cpu`` (lesson 06's clock: waiting for a core not counted) reaches the study's
+    timer; without it the wall clock does. The run itself is replaced: no time is measured."""
+    import time
+
+    from teachraster.study.bench import command
+
+    seen = {}
+
+    def fake_run(quick, repeat=None, progress=False, clock=None):
+        seen["clock"] = clock
+        return []
+
+    monkeypatch.setattr(command, "run", fake_run)
+    monkeypatch.setattr(command, "format_table", lambda rows: "")
+    assert command.main(["--quick", "--no-plots", "--out", str(tmp_path), *flag]) == 0
+    assert seen["clock"] is getattr(time, clock)
