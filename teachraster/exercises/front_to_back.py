@@ -280,13 +280,13 @@ def _stopped_at(args, expected, got) -> tuple[int, float] | None:
 
 def _read_short_words(args, expected, got) -> str:
     (layers,) = args
-    before = got.opaque - 1  # the layers in front of the one that makes the composite opaque
-    left = float(np.prod(1 - np.asarray(layers, float)[:before, 3]))
+    k = max(got.read, 1)  # the alpha after the layers read, a fact of the stack
+    left = float(np.prod(1 - np.asarray(layers, float)[:k, 3]))
     return (f"you read {got.read} of the {len(layers)} layers and stopped, but the composite "
-            f"is opaque (alpha exactly 1) only with layer {got.opaque}: after layer {before} "
-            f"its alpha is 1 − {left:.2g}, below 1, so your loop stopped at an alpha below 1. "
-            "The layers behind still show through that transmittance, however little: a "
-            "stop below 1 is not the exact composite the task asks for")  # fmt: skip
+            f"is opaque (alpha exactly 1) only with layer {got.opaque}: after layer {k} its "
+            f"alpha is 1 − {left:.2g}, so your loop stopped at an alpha below 1. The layers "
+            "behind still show through that transmittance, however little: a stop below 1 "
+            "is not the exact composite the task asks for")  # fmt: skip
 
 
 def _read_past_words(args, expected, got) -> str:
