@@ -65,6 +65,12 @@ def over_premultiplied(src, dst):
     return [s + d * (1 - a) for s, d in zip(src, dst)]
 
 
+def atop_premultiplied(src, dst):
+    """Porter and Duff's atop, premultiplied: the source on what dst covers, dst where src is
+    not (exercise 9.2b since r20)."""
+    return [s * dst[3] + d * (1 - src[3]) for s, d in zip(src, dst)]
+
+
 def over_to_premultiplied(src, dst):
     """Straight in, premultiplied out: each colour as much as it is seen."""
     a = src[3] + dst[3] * (1 - src[3])
@@ -82,7 +88,8 @@ def over_straight(src, dst):
 
 CORRECT = {"line_pixels": line_pixels, "over": over,
            "over_to_premultiplied": over_to_premultiplied,
-           "over_premultiplied": over_premultiplied, "over_straight": over_straight}  # fmt: skip
+           "over_premultiplied": over_premultiplied, "over_straight": over_straight,
+           "atop_premultiplied": atop_premultiplied}  # fmt: skip
 
 
 # -- typical mistakes -----------------------------------------------------------------------------
@@ -137,6 +144,7 @@ MISTAKES = {
     "destination alpha": ("over", over_dst_alpha, "destination alpha"),
     "Porter-Duff alpha in GL's over": ("over", over_porter_duff_alpha, "one factor pair"),
     "premultiplying twice": ("over_premultiplied", premultiplied_twice, "dark fringe"),
+    "over for atop": ("atop_premultiplied", over_premultiplied, "that is over"),  # r20 D-1
     "straight blended as premultiplied": ("over_to_premultiplied", over_premultiplied,
                                           "as if they were premultiplied"),
     "GL's straight blend for a translucent destination": ("over_to_premultiplied", over,

@@ -930,7 +930,7 @@ WRONG = {
     "premultiplied, weights swapped": (
         "over_premultiplied",
         premultiplied_weights_swapped,
-        "weighted the source by 1 − α_s",  # r18 D-2: premultiplied words, not COMMON's
+        "you swapped the two weights",  # r18 D-2: premultiplied words; r20 D-5: no rule
     ),  # fmt: skip
     # span (issue 30)
     "span at pixel corners": (

@@ -42,6 +42,7 @@ def test_names_in_course_order():
         "over_to_premultiplied",
         "over_premultiplied",
         "over_straight",
+        "atop_premultiplied",
     ]
 
 

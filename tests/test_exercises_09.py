@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 import student_variants as sv
 from lines_blending_solutions import EPS, _meets, line_pixels, line_with, over_straight
+from lines_blending_solutions import atop_premultiplied as atop_pm
 from lines_blending_solutions import over_premultiplied as over_pm
 from lines_blending_solutions import over_to_premultiplied as over_tp
 from reasoning_solutions import front_to_back
@@ -353,12 +354,13 @@ def _premultiplied(colour):
 
 #: r18 D-2: 9.2b's answers that got COMMON's straight-alpha words ("the source alpha weighs
 #: the source"; doing what they said gave "premultiplied twice"): each named, in words true
-#: of premultiplied colours.
+#: of premultiplied colours; r20 D-5: and without the rule (the first three stated it).
 PREMULTIPLIED_COMMON = [
-    (lambda s, d: d, "destination unchanged", "adds its light"),
+    (lambda s, d: d, "destination unchanged", "as if the source were not there"),
     (lambda s, d: s, "source unchanged", "the destination still shows"),
-    (lambda s, d: s * d[3] + d * (1 - d[3]), "destination alpha", "no alpha weighs the source"),
-    (lambda s, d: s * (1 - s[3]) + d * s[3], "weights swapped", "no alpha weighs the source"),
+    (lambda s, d: s * d[3] + d * (1 - d[3]), "destination alpha",
+     "by the destination's alpha"),
+    (lambda s, d: s * (1 - s[3]) + d * s[3], "weights swapped", "you swapped the two weights"),
     (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), s[3]], "kept source alpha",
      "multiplied the source colour by its alpha again"),
     (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), d[3]], "kept destination alpha",
@@ -375,6 +377,9 @@ def test_9_2b_common_mistakes_get_premultiplied_words(fn, kind, words):
     for straight in ("weighted by its alpha", "the source alpha weighs the source",
                      "instead of the source alpha"):  # fmt: skip
         assert straight not in first.explanation, first.explanation
+    words = first.explanation.split("yours is ", 1)[1]
+    for rule in ("its share α_s", "leaves uncovered", "1 − α_s", "no alpha weighs the source"):
+        assert rule not in words, (rule, words)  # r20 D-5: the mistake, not the rule
 
 
 def test_both_alphas_zero_is_a_case_and_a_nan_there_is_explained():
@@ -667,7 +672,7 @@ def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_f
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(7, 4))
-    ex.check("over_premultiplied", over_pm).plot(ax)
+    ex.check("atop_premultiplied", atop_pm).plot(ax)
     ticks = " ".join(t.get_text() for t in ax.get_xticklabels())
     plt.close(fig)
     assert "(0.3, 0.2, 0.05, 0)" in ticks.replace(",\n", ", "), ticks  # the glow
@@ -677,7 +682,7 @@ def test_a_passing_figure_shows_a_translucent_case_and_the_task_claims_nothing_f
     assert "does not print" not in text["over_straight_task"]
     # r14: the ids were swapped (9.2a under over_premultiplied_task): each names its task now
     assert "**9.2a.**" in text["over_straight_task"] and "over_premultiplied_step" not in text
-    assert "**9.2b.**" in text["over_premultiplied_task"]
+    assert "**9.2b.**" in text["atop_premultiplied_task"]
 
 
 @pytest.mark.parametrize(
@@ -1207,32 +1212,48 @@ def test_each_task_cells_grade_id_names_the_function_it_asks_for():
 
 
 def test_9_2b_shares_9_2s_one_point_with_9_2a():
-    """r14/r16 reading note: 9.2b is lesson 12 §9's rule, one substitution from 9.2a, yet
-    carried a point of its own. 9.2a and 9.2b now share 9.2's one point, and the text says so
-    (and that the lesson prints 9.2b's result)."""
+    """r14/r16 reading note: 9.2a and 9.2b share 9.2's one point, and the text says so (r20
+    D-1: no longer that the lesson prints 9.2b's result: 9.2b is atop, which it does not)."""
     import json
     from pathlib import Path
 
     nb = Path(__file__).parent.parent / "notebooks/exercises/09_lines_and_blending.ipynb"
     grading = [c["metadata"]["nbgrader"] for c in json.loads(nb.read_text())["cells"]]
     points = {g["grade_id"]: g["points"] for g in grading if g["grade"]}
-    assert points["over_straight_check"] + points["over_premultiplied_check"] == 1, points
+    assert points["over_straight_check"] + points["atop_premultiplied_check"] == 1, points
     assert points["line_pixels_check"] == points["front_to_back_check"] == 1, points
     first = " ".join(_nb_cells()["over_straight_task"].split())
-    assert "half for 9.2a and half for 9.2b" in first and "lesson 12 §9 prints" in first, first
+    assert "half for 9.2a and half for 9.2b" in first and "prints its result" not in first, first
 
 
 def test_9_2b_asks_its_questions_without_answering_them():
     """r19 E-3, E-4: the alpha question was answered by the next sentence ("That is the rule
     lesson 12 §9 states"), and the glow's "covers nothing and adds its light" and "what no
-    straight one can" answered the question asked about it. The questions now stand alone;
-    the solution cell and the check's explanations hold the answers."""
-    task = " ".join(_nb_cells()["over_premultiplied_task"].split())
-    assert "does it follow the same rule as the colour" in task, task
+    straight one can" answered the question asked about it. r20 D-1: both of 9.2b's questions
+    were answered by lesson 12 (§6's table, §9's rule); 9.2b is now atop, which the task
+    defines in words and asks to derive in 9.2a's steps, and no weight or factor is given."""
+    task = " ".join(_nb_cells()["atop_premultiplied_task"].split())
+    assert "atop_premultiplied(src, dst)" in task and "uncorrelated" in task, task
     assert "what your rule gives there" in task and "(0.3, 0.2, 0.05, 0)" in task, task
     for answer in ("lesson 12 §9 states", "adds its light", "no straight one can", "covers "
-                   "nothing", "glow", "shares 9.2's point", "cannot give it"):  # fmt: skip
+                   "nothing", "glow", "shares 9.2's point", "cannot give it", "DST_ALPHA",
+                   "α_s·α_d", "α_d·(1 − α_s)", "c_s·α_d", "the destination's alpha",
+                   "ONE_MINUS"):  # fmt: skip
         assert answer not in task, answer
+
+
+def test_lesson_12_prints_no_atop():
+    """r20 D-1: 9.2b's answer is nowhere in lesson 12 (nor are its factors), which prints
+    over on premultiplied colours (§6's table, §9's rule), 9.2b's task before r20."""
+    import json
+    from pathlib import Path
+
+    nb = Path(__file__).parent.parent / "notebooks/12_lines_and_blending.ipynb"
+    text = "\n".join("".join(c["source"]) for c in json.loads(nb.read_text())["cells"])
+    assert "ONE_MINUS_SRC_ALPHA" in text  # over's pair is printed; atop's is not
+    assert not re.search(r"\batop\b", text)  # (its summary names atop_premultiplied)
+    for answer in ("DST_ALPHA", "dst[3]", "a_dst", "α_d"):
+        assert answer not in text, answer
 
 
 def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
@@ -1253,8 +1274,8 @@ def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
     ):
         assert answer not in task, answer
     assert "find them, and what they mean for the pixel" in task, task
-    step = " ".join(_nb_cells()["over_premultiplied_task"].split())
-    assert "step 2 of 9.2a" in step and "see what is left of each weight" in step, step
+    step = " ".join(_nb_cells()["atop_premultiplied_task"].split())
+    assert "Derive it as you derived 9.2a" in step and "write each colour as c = α·C" in step
     walk = " ".join(_nb_cells()["front_to_back_task"].split())
     assert "threshold just below 1" in walk and "asks for exactly 1" in walk, walk
 
@@ -1270,7 +1291,9 @@ def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
 
     report = ex.check("over_straight", porter_duff, budget=60)
     assert not report.passed and report.package, str(report)
-    assert "a part of straight_over's own computation" in report.package, report.package
+    # r20 D-8: straight_over and its helpers are the checker's own code, so said
+    assert "the checker's own code" in report.package, report.package
+    assert "from_straight" not in report.package, report.package
 
 
 def test_9_2a_general_message_sends_back_to_the_steps_without_the_weights():
@@ -1357,3 +1380,164 @@ def test_straight_blend_claim_and_float_alpha_note():
     a = 1 - 2.0**-30  # the note's example, as float64 accumulates it
     alpha, through = a + (1 - a) * a, (1 - a) ** 2
     assert alpha == 1.0 and through > 0
+
+
+# -- r20: 9.2b is atop; the fixes D-2 to D-8 ---------------------------------------------------
+def _atop_straight_rule(s, d):
+    """Atop derived for straight colours, applied to premultiplied ones (undivided)."""
+    return np.r_[s[:3] * s[3] * d[3] + d[:3] * d[3] * (1 - s[3]), d[3]]
+
+
+def _unpremultiplied_atop(s, d):
+    """Divided by alpha (0 where it is 0), atop on straight colours, premultiplied again."""
+    S = np.r_[s[:3] / s[3], s[3]] if s[3] else np.zeros(4)
+    D = np.r_[d[:3] / d[3], d[3]] if d[3] else np.zeros(4)
+    return np.r_[S[:3] * S[3] * D[3] + D[:3] * D[3] * (1 - S[3]), D[3]]
+
+
+#: (wrong atop, kind, words): r20 D-1's named mistakes of the new 9.2b.
+ATOP_WRONG = [
+    (lambda s, d: s + d * (1 - s[3]), "over, not atop", "that is over"),
+    (lambda s, d: np.r_[s[:3] + d[:3] * (1 - s[3]), d[3]], "over, not atop", "colour is over's"),
+    (_atop_straight_rule, "straight rule on premultiplied", "already carry their alpha"),
+    (lambda s, d: np.r_[s[:3] * s[3] + d[:3] * (1 - s[3]), d[3]],
+     "straight rule on premultiplied", "divided the light"),
+    (lambda s, d: s * s[3] + d * (1 - s[3]), "GL's straight blend", "GL's straight blend"),
+    (lambda s, d: np.r_[s[:3] * s[3] * d[3] + d[:3] * (1 - s[3]), d[3]], "premultiplied twice",
+     "the source by its alpha again"),
+    (lambda s, d: np.r_[s[:3] * d[3] + d[:3] * d[3] * (1 - s[3]), d[3]],
+     "destination premultiplied twice", "destination by its alpha again"),
+    (lambda s, d: np.r_[np.divide(s[:3] * d[3] + d[:3] * (1 - s[3]), d[3], out=np.zeros(3),
+                                  where=d[3] > 0), d[3]], "returned straight", "straight colour"),
+    (lambda s, d: s * (1 - s[3]) + d * d[3], "weights swapped", "swapped the two weights"),
+    (lambda s, d: d * s[3] + s * (1 - d[3]), "arguments swapped", "dst atop src"),
+    (lambda s, d: s * d[3] + d, "destination not scaled", "the whole destination"),
+    (lambda s, d: s * d[3] + d * (1 - d[3]), "destination's own alpha", "1 − its own alpha"),
+    (lambda s, d: s * (1 - d[3]) + d * (1 - s[3]), "source where the destination is not",
+     "*xor*"),
+    (lambda s, d: s * d[3], "destination left out", "*in*"),
+    (lambda s, d: np.r_[s[:3] * d[3] + d[:3] * (1 - s[3]), s[3] + d[3] * (1 - s[3])],
+     "alpha of over", "your red, green and blue are right"),
+    (lambda s, d: np.r_[s[:3] * d[3] + d[:3] * (1 - s[3]), s[3] * d[3]],
+     "alpha of the shared share", "your red, green and blue are right"),
+    (lambda s, d: np.round(s * d[3] + d * (1 - s[3])).astype(int), "whole numbers",
+     "whole numbers"),
+    (_unpremultiplied_atop, "glow lost", "glow"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("fn", "kind", "words"), ATOP_WRONG, ids=[k for _, k, _ in ATOP_WRONG])
+def test_9_2b_atop_mistakes_are_named_without_the_answer(fn, kind, words):
+    """r20 D-1, D-5: each of the new 9.2b's typical mistakes is named by what the answer did,
+    and no message gives atop's weights or its factor pair."""
+    assert ex.check("atop_premultiplied", atop_pm).passed
+    first = _first("atop_premultiplied", _premultiplied(fn))
+    assert first.kind == kind and words in first.explanation, (first.kind, first.explanation)
+    said = first.explanation.split("yours is ", 1)[1]
+    for answer in ("DST_ALPHA", "c_s·α_d", "src·α_d", "α_s·α_d + ", "is the destination's"):
+        assert answer not in said, (answer, said)
+
+
+def test_9_2b_general_message_and_package_routes():
+    """r20 D-1: an answer no mistake names is sent back to the derivation's steps; GL's own
+    atop pair through ``tr.blend_equation`` and the checker's reference are not counted."""
+    import teachraster as tr
+    from teachraster.exercises.blending import premultiplied_atop
+
+    first = _first("atop_premultiplied", lambda s, d: atop_pm(s, d) + np.float64(3e-6))
+    assert first.kind == "value" and "go back through the derivation" in first.explanation
+    report = ex.check(
+        "atop_premultiplied",
+        lambda s, d: tr.blend_equation(s, d, "DST_ALPHA", "ONE_MINUS_SRC_ALPHA"),
+    )
+    assert not report.passed and "blend_equation" in report.package, str(report)
+    report = ex.check("atop_premultiplied", lambda s, d: premultiplied_atop(s, d))
+    assert not report.passed and "the checker's own code" in report.package, str(report)
+    float32 = ex.check("atop_premultiplied", lambda s, d: atop_pm(np.float32(s), np.float32(d)))
+    assert float32.passed, str(float32)
+
+
+def test_the_straight_rule_on_premultiplied_fix_leads_to_the_answer():
+    """r20 D-2: "multiply the straight rule through by the result's alpha" alone led a student
+    to "9.2a reused"; the advice now ends with c = α·C."""
+    first = _first("over_premultiplied", over_straight)
+    assert first.kind == "straight rule on premultiplied", first.explanation
+    assert "then write each colour in it as c = α·C" in first.explanation, first.explanation
+
+
+def _guarded(threshold):
+    def fn(s, d):
+        a = s[3] + d[3] * (1 - s[3])
+        return [0, 0, 0, 0] if a < threshold else over_straight(s, d)
+
+    return fn
+
+
+@pytest.mark.parametrize("threshold", [0.01, 0.005])
+def test_a_guard_below_a_small_alpha_fails_9_2a_and_is_named(threshold):
+    """r20 D-3: ``α < 0.01 → (0, 0, 0, 0)`` passed: no case had a faint, non-zero alpha."""
+    first = _first("over_straight", _guarded(threshold))
+    assert first.kind == "faint as nothing", first.explanation
+    assert "a faint pixel, not an empty one" in first.explanation, first.explanation
+    assert ex.check("over_straight", _guarded(1e-300)).passed  # only α = 0 has no colour
+
+
+def _stops_at(threshold, top=False, dtype=float):
+    def fn(layers):
+        acc = np.zeros(4, dtype)
+        for layer in layers:
+            if top and acc[3] >= threshold:
+                break
+            acc = acc + (1 - acc[3]) * np.asarray(layer, dtype)
+            if not top and acc[3] >= threshold:
+                break
+        return acc
+
+    return fn
+
+
+@pytest.mark.parametrize("top", [False, True], ids=["tests after", "tests at the top"])
+@pytest.mark.parametrize("gap", [1e-6, 1e-7])
+def test_a_stop_just_below_alpha_1_fails_by_the_layers_read(gap, top):
+    """r20 D-4: a stop at 1 − 1e-7 or 1 − 1e-6 passed (its composite is within tolerance);
+    a stack that stays within 2⁻²⁴ of 1 for two layers tells it by the layers it read, even
+    from a loop that tests at the top. A right loop in float32 still passes."""
+    report = ex.check("front_to_back", _stops_at(1 - gap, top), budget=60)
+    assert not report.passed and report.failures[0].kind == "stopped below alpha 1", str(report)
+    assert "stopped at an alpha below 1" in report.failures[0].explanation
+    for dtype in (float, np.float32):
+        assert ex.check("front_to_back", _stops_at(1.0, top, dtype), budget=60).passed
+    task = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "names a stop below 1, down to the last float32 value below it" in task, task
+
+
+def test_a_stop_below_alpha_1_figure_marks_the_layers_not_read():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("front_to_back", _stops_at(1 - 1e-7), budget=60).plot(ax)
+    ticks = [t.get_text() for t in ax.get_xticklabels()]
+    plt.close(fig)
+    assert any("not read" in t for t in ticks), ticks
+
+
+@pytest.mark.parametrize("name", ["over_straight", "atop_premultiplied", "over_premultiplied"])
+def test_an_answer_rounded_to_whole_numbers_is_said_so(name):
+    """r20 D-7: ``np.round(...).astype(int)`` got only the general message."""
+    right = {"over_straight": over_straight, "atop_premultiplied": atop_pm,
+             "over_premultiplied": over_pm}[name]  # fmt: skip
+    first = _first(name, lambda s, d: np.round(np.asarray(right(s, d), float)).astype(int))
+    assert first.kind == "whole numbers" and "whole numbers" in first.explanation, first
+
+
+def test_the_checkers_straight_over_handed_in_is_the_checkers_own_code():
+    """r20 D-8: it was called "the package's own function", unlike lines.diamond_pixels."""
+    from teachraster.exercises.blending import from_straight, straight_over
+
+    report = ex.check("over_straight", lambda s, d: straight_over(s, d))
+    assert not report.passed and "the checker's own code" in report.package, report.package
+    report = ex.check("over_to_premultiplied", lambda s, d: from_straight(s, d))
+    assert not report.passed and "the checker's own code" in report.package, report.package

@@ -85,7 +85,8 @@ def test_exercise_notebook_follows_the_grading_convention():
     assert len(ids) == len(set(ids))
     # issue 30: GL's straight over merged away; over_premultiplied derived from the straight rule
     # r11 09-A: 9.2a returns the straight result (the premultiplied one was the lesson's rule)
-    fns = ["line_pixels", "over_straight", "over_premultiplied", "front_to_back"]
+    # r20 D-1: 9.2b is atop (over on premultiplied colours is lesson 12 §9's printed rule)
+    fns = ["line_pixels", "over_straight", "atop_premultiplied", "front_to_back"]
     for fn in fns:
         (sol,) = [c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == f"{fn}_solution"]
         assert sol.metadata["nbgrader"] == {"grade": False, "grade_id": f"{fn}_solution",
@@ -95,7 +96,7 @@ def test_exercise_notebook_follows_the_grading_convention():
         assert "    ### BEGIN SOLUTION" in lines and "    ### END SOLUTION" in lines
         (chk,) = [c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == f"{fn}_check"]
         # r14/r16: 9.2a and 9.2b share 9.2's one point (test_exercises_09.py)
-        points = 0.5 if fn in ("over_straight", "over_premultiplied") else 1
+        points = 0.5 if fn in ("over_straight", "atop_premultiplied") else 1
         assert chk.metadata["nbgrader"] == {"grade": True, "grade_id": f"{fn}_check",
                                             "locked": True, "points": points,
                                             "schema_version": 3, "solution": False,

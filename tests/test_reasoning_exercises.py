@@ -317,7 +317,7 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
     task = text["over_straight_task"]
     assert "Porter and Duff" in task and "give *over* for **straight**" not in task
     assert "over_straight(src, dst)" in task and "lesson 12, §9" not in task
-    assert "over_straight_check" in text and "over_premultiplied_task" in text
+    assert "over_straight_check" in text and "atop_premultiplied_task" in text  # r20 D-1
     # r11 09-A, 09-G: no shortcut offered, and GL's default is no blending
     assert "cannot tell the two apart" not in task and "textbook default" not in task
     said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))

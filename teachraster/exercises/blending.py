@@ -1,14 +1,20 @@
 """Exercises ``over(src, dst)``, ``over_to_premultiplied(src, dst)`` and
-``over_premultiplied(src, dst)`` of lesson 12: the blend equation.
+``over_premultiplied(src, dst)`` of lesson 12 (the blend equation), and
+``atop_premultiplied(src, dst)``, exercise 9.2b.
 
 ``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
-the premultiplied result: the derivation exercise 9.2 asks for from Porter and Duff's coverage
-argument. Lesson 12 §9 states the rule on premultiplied inputs without deriving it, and
+the premultiplied result, from Porter and Duff's coverage argument (exercise 9.2 derives
+straight over and premultiplied atop the same way). Lesson 12 §9 states the rule on premultiplied inputs without deriving it, and
 premultiplying first, then applying that rule, gives the same numbers: the check cannot tell a
 derivation from that route, and the notebook says so (r9: it claimed the lesson printed
 neither); both alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
 glow (alpha 0, light in it), which no straight colour holds: a solution that divides by alpha
 to reuse 9.2a loses it, and is named.
+
+``atop_premultiplied`` is Porter and Duff's *atop* on premultiplied colours, derived from the
+same two assumptions as 9.2a (r20 D-1: 9.2b was ``over_premultiplied``, the rule lesson 12 §6
+and §9 print; lesson 12 prints no *atop*). It is one GL factor pair, (DST_ALPHA,
+ONE_MINUS_SRC_ALPHA), so its expected answers come from the core's blend equation too.
 
 Explanations print both colours with one number format (:func:`colour_texts`); the figure
 shows src and dst as swatches, and the expected blend only beside an answer.
@@ -26,15 +32,24 @@ from ..core.blend_factors import BLEND_MODES, apply_blend, blend_equation, facto
 from .answers import as_numbers
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer
-from .scalars import NOISE, vec
+from .package_answers import CHECKER_WORDS
+from .scalars import NOISE, num, vec
 from .tolerance import all_close
 
 SEED = 20241126
+#: Porter and Duff's *atop* as a GL factor pair: the source where the destination covers, the
+#: destination where the source does not (exercise 9.2b).
+ATOP = ("DST_ALPHA", "ONE_MINUS_SRC_ALPHA")
+#: The factor pairs of the modes whose inputs are premultiplied, by mode.
+FACTORS = {**BLEND_MODES, "atop": ATOP}
+#: Modes whose cases hold premultiplied colours (a glow among them).
+PREMULTIPLIED_IN = ("premultiplied", "atop")
 
 
 def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
-    """(label, (src, dst), expected) for ``mode`` "over", "premultiplied", "from straight"
-    (straight inputs, the premultiplied result) or "straight" (straight in and out)."""
+    """(label, (src, dst), expected) for ``mode`` "over", "premultiplied", "atop"
+    (premultiplied in and out), "from straight" (straight inputs, the premultiplied result) or
+    "straight" (straight in and out)."""
     pairs = [
         ("opaque red over blue", [1, 0, 0, 1], [0, 0, 1, 1]),
         ("half red over blue", [1, 0, 0, 0.5], [0, 0, 1, 1]),
@@ -44,6 +59,9 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
     ]
     if mode in ("from straight", "straight"):  # "nothing at all when α = 0" (r8: never tested)
         pairs.append(("both transparent", [0.3, 0.6, 0.9, 0.0], [0.5, 0.2, 0.1, 0.0]))
+        # r20 D-3: a guard "α < 0.01 → (0, 0, 0, 0)" passed; a faint pixel still has a colour
+        pairs.append(("faint red over transparent black", [1, 0, 0, 0.004], [0, 0, 0, 0]))
+        pairs.append(("faint over faint", [0.2, 0.9, 0.4, 0.003], [0.8, 0.1, 0.6, 0.002]))
     rng = np.random.default_rng(SEED + 1)
     for k in range(20):
         pairs.append((f"random colours {k}", *rng.uniform(0, 1, (2, 4)).round(3)))
@@ -53,7 +71,8 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
     out = []
     for label, src, dst in pairs:
         src, dst = np.asarray(src, float), np.asarray(dst, float)
-        if mode == "premultiplied":
+        label = label.replace(" over ", " atop ") if mode == "atop" else label
+        if mode in PREMULTIPLIED_IN:
             src = np.r_[src[:3] * src[3], src[3]]  # these cases hold premultiplied colours
             dst = np.r_[dst[:3] * dst[3], dst[3]]
         if mode == "from straight":  # straight in, premultiplied out
@@ -62,11 +81,12 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         if mode == "straight":  # straight in, straight out (exercise 9.2a)
             out.append((label, (src, dst), straight_over(src, dst)))
             continue
-        out.append((label, (src, dst), blend_equation(src, dst, *BLEND_MODES[mode])))
-    if mode == "premultiplied":  # what no straight colour holds: 9.2b's case to reason about
+        out.append((label, (src, dst), blend_equation(src, dst, *FACTORS[mode])))
+    if mode in PREMULTIPLIED_IN:  # what no straight colour holds: 9.2b's case to reason about
         src, dst = np.array(GLOW), np.array([0.25, 0.25, 0.5, 0.5])
-        out.insert(5, ("a glow (light, alpha 0) over half blue", (src, dst),
-                       blend_equation(src, dst, *BLEND_MODES[mode])))  # fmt: skip
+        verb = "atop" if mode == "atop" else "over"
+        out.insert(5, (f"a glow (light, alpha 0) {verb} half blue", (src, dst),
+                       blend_equation(src, dst, *FACTORS[mode])))  # fmt: skip
     return out
 
 
@@ -145,6 +165,8 @@ def _rule(mode: str):
         return lambda *a: _DERIVE
     if mode == "straight":
         return lambda *a: _STRAIGHT_RULE
+    if mode == "atop":
+        return lambda *a: _ATOP_RULE
     if mode == "from straight":
         return lambda *a: _FROM_STRAIGHT
     s, d = BLEND_MODES[mode]
@@ -176,22 +198,20 @@ COMMON = [
 ]  # fmt: skip
 #: COMMON's outputs with words true of premultiplied colours (r18 D-2: COMMON's "the source
 #: alpha weighs the source" is the straight rule, and following it on premultiplied colours
-#: gives "premultiplied twice"). A premultiplied colour carries its coverage already: no alpha
-#: weighs the source again, and the destination shows where the source leaves it uncovered.
+#: gives "premultiplied twice"). Each names what the answer did, never the weights the rule
+#: gives (r20 D-5: "the source covers its share α_s … multiplied by its alpha" was the rule).
 _CARRIES = "a premultiplied colour already carries its alpha (c = α·C)"
 COMMON_PREMULTIPLIED = [
-    ("destination unchanged", "that is the destination unchanged: the source covers its share "
-     "α_s of the pixel, hiding that much of the destination, and adds its light, which a "
-     "premultiplied colour already carries, multiplied by its alpha (c = α·C)", COMMON[0][2]),
-    ("source unchanged", "that is the source unchanged: it covers only its share α_s of the "
-     "pixel, and in the rest, 1 − α_s, the destination still shows",
-     COMMON[1][2]),
-    ("destination alpha", "you weighted the source by the destination's alpha and the "
-     f"destination by 1 − its own alpha: {_CARRIES}, so no alpha weighs the source again, and "
-     "what shows of the destination is what the source leaves uncovered", COMMON[2][2]),
-    ("weights swapped", "you weighted the source by 1 − α_s and the destination by α_s: "
-     f"{_CARRIES}, so no alpha weighs the source again, and the destination shows in the "
-     "share the source leaves uncovered, not in the share it covers", COMMON[3][2]),
+    ("destination unchanged", "that is the destination unchanged, as if the source were not "
+     "there: a source that covers some of the pixel, or carries light, changes it",
+     COMMON[0][2]),
+    ("source unchanged", "that is the source unchanged, as if it covered the whole pixel: "
+     "where its alpha is below 1 some of the destination still shows", COMMON[1][2]),
+    ("destination alpha", "you weighted the source and the destination by the destination's "
+     f"alpha: {_CARRIES}, and the shares in which each shows depend on what covers what",
+     COMMON[2][2]),
+    ("weights swapped", "you swapped the two weights, the source's and the destination's "
+     f"({_CARRIES})", COMMON[3][2]),
     ("kept source alpha", "you multiplied the source colour by its alpha again and kept the "
      f"source's alpha: {_CARRIES}, and the alpha channel blends like the colours",
      COMMON[4][2]),
@@ -240,10 +260,12 @@ PREMULTIPLIED = [
      lambda s, d: _scaled(s, d, 1, 1)),
     # Exercise 9.3 gives the straight rule and asks for the premultiplied one: the mistakes of
     # that derivation (issue 30: "straight alpha where premultiplied is expected").
+    # r20 D-2: "multiply the straight rule through by α" alone led to "9.2a reused"
     ("straight rule on premultiplied", "you applied the straight-alpha rule to premultiplied "
-     "colours (9.2a's over_straight): their red, green and blue already carry their alpha, so weighting them by α "
-     "again and dividing by the result's alpha counts alpha twice; multiply the straight rule "
-     "through by the result's alpha instead", _straight_rule),
+     "colours (9.2a's over_straight): their red, green and blue already carry their alpha, so "
+     "weighting them by α again and dividing by the result's alpha counts alpha twice; "
+     "multiply the straight rule through by the result's alpha, then write each colour in it "
+     "as c = α·C (its weight α_s or α_d is already in c)", _straight_rule),
     ("returned straight", "you returned a straight colour (divided by the result's alpha): "
      "the buffer holds premultiplied colours, so the result stays multiplied by its alpha",
      _returned_straight),
@@ -264,6 +286,106 @@ PREMULTIPLIED = [
     ("destination's own alpha", "you weighted the destination by 1 − its own alpha: what "
      "shows of it is the share the source leaves uncovered, 1 − α_s",
      lambda s, d: _scaled(s, d, 1, 1 - d[3])),
+]  # fmt: skip
+
+
+def premultiplied_atop(src, dst) -> np.ndarray:
+    """Premultiplied src atop premultiplied dst (exercise 9.2b's reference): GL's blend with
+    :data:`ATOP`'s factor pair."""
+    return blend_equation(np.asarray(src, float), np.asarray(dst, float), *ATOP)
+
+
+def _atop(colour, s, d) -> np.ndarray:
+    """A colour with atop's right alpha, the destination's."""
+    return np.r_[colour, d[3]]
+
+
+def _as_straight(c) -> np.ndarray:
+    c = np.asarray(c, float)
+    return np.r_[np.divide(c[:3], c[3], out=np.zeros(3), where=c[3] > 0), c[3]]
+
+
+def _atop_via_straight(src, dst):
+    """Both divided by their alpha (0 where it is 0), atop derived on straight colours, then
+    premultiplied: a glow's light is lost."""
+    s, d = _as_straight(src), _as_straight(dst)
+    return np.r_[s[:3] * s[3] * d[3] + d[:3] * d[3] * (1 - s[3]), d[3]]
+
+
+#: 9.2b's general message: the derivation's steps, never its weights (r19 E-2, r20 D-5).
+_ATOP_RULE = (": go back through the derivation: (1) split the pixel into the shares src and "
+              "dst cover together, alone, or neither covers (their coverages are "
+              "uncorrelated); (2) which colour shows in each share under atop; (3) the light "
+              "is each colour times the share where it shows, and the result's alpha the "
+              "share something shows in; (4) the inputs and the answer are premultiplied: "
+              "write each colour as c = α·C")  # fmt: skip
+
+#: 9.2b's named mistakes: each says what the answer did (r20 D-1). s and d are premultiplied.
+ATOP_MISTAKES = [
+    ("over, not atop", "that is over, lesson 12 §9's rule: it lets the source show in its "
+     "whole share of the pixel, also where the destination does not cover it",
+     lambda s, d: s + d * (1 - s[3])),
+    ("over, not atop", "your alpha is right, but your colour is over's, lesson 12 §9's rule: "
+     "it lets the source show in its whole share of the pixel, also where the destination "
+     "does not cover it", lambda s, d: _atop(s[:3] + d[:3] * (1 - s[3]), s, d)),
+    ("straight rule on premultiplied", "you derived atop for straight colours and applied it "
+     "to premultiplied ones: src and dst already carry their alpha (c = α·C), so each got "
+     "its alpha twice (the dark fringe); write each colour of your light as c = α·C",
+     lambda s, d: _atop(s[:3] * s[3] * d[3] + d[:3] * d[3] * (1 - s[3]), s, d)),
+    ("straight rule on premultiplied", "you derived atop for straight colours, applied it to "
+     "premultiplied ones and divided the light by the result's alpha: src and dst already "
+     "carry their alpha (c = α·C), and the answer stays premultiplied (no division)",
+     lambda s, d: _atop(s[:3] * s[3] + d[:3] * (1 - s[3]), s, d)),
+    ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s), on "
+     f"premultiplied colours: {_CARRIES}", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
+    ("premultiplied twice", "you multiplied the source by its alpha again, but it is "
+     f"premultiplied already (the dark fringe): {_CARRIES}",
+     lambda s, d: _atop(s[:3] * s[3] * d[3] + d[:3] * (1 - s[3]), s, d)),
+    ("premultiplied twice", "you multiplied the source by its alpha again, on all four "
+     f"channels, but it is premultiplied already (the dark fringe): {_CARRIES}",
+     lambda s, d: s * s[3] * d[3] + d * (1 - s[3])),
+    ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
+     f"but it is premultiplied already: {_CARRIES}",
+     lambda s, d: _atop(s[:3] * d[3] + d[:3] * d[3] * (1 - s[3]), s, d)),
+    ("returned straight", "you returned a straight colour (divided by the result's alpha): "
+     "the answer is premultiplied, as src and dst are", lambda s, d: _as_straight(
+         premultiplied_atop(s, d))),
+    ("weights swapped", "you swapped the two weights, the source's and the destination's "
+     f"({_CARRIES})", lambda s, d: s * (1 - s[3]) + d * d[3]),
+    ("destination not scaled", "you added the whole destination: where the source covers it, "
+     "the source hides it", lambda s, d: s * d[3] + d),
+    ("destination's own alpha", "you weighted the destination by 1 − its own alpha: what "
+     "hides it is the source", lambda s, d: s * d[3] + d * (1 - d[3])),
+    ("source where the destination is not", "you weighted the source by 1 − α_d: that draws "
+     "it where the destination does not cover it (Porter and Duff's *out*, or their *xor*)",
+     lambda s, d: _atop(s[:3] * (1 - d[3]) + d[:3] * (1 - s[3]), s, d)),
+    ("source where the destination is not", "you weighted the source by 1 − α_d, on all four "
+     "channels: that draws it where the destination does not cover it (Porter and Duff's "
+     "*xor*)", lambda s, d: s * (1 - d[3]) + d * (1 - s[3])),
+    ("destination left out", "you left the destination out (Porter and Duff's *in*): where "
+     "the source does not cover it, it still shows", lambda s, d: s * d[3]),
+    ("destination unchanged", "that is the destination unchanged, as if the source were not "
+     "there: where both cover the pixel, or the source carries light, it changes the pixel",
+     lambda s, d: np.asarray(d, dtype=float)),
+    ("source unchanged", "that is the source unchanged: atop draws it only on what the "
+     "destination covers, and some of the destination shows where the source does not cover",
+     lambda s, d: np.asarray(s, dtype=float)),
+    ("arguments swapped", "you computed dst atop src: the first argument, src, is the "
+     "incoming fragment, drawn on the second, dst, what the buffer holds",
+     lambda s, d: premultiplied_atop(d, s)),
+]  # fmt: skip
+
+#: 9.2b's wrong alphas with the right colour (its right alpha is the destination's, so
+#: :data:`ALPHAS`'s "alpha of the destination" would be no mistake).
+ATOP_ALPHAS = [
+    ("alpha of over", "you composed the alpha as over does: atop's result covers only the "
+     "shares where something of it shows", lambda s, d: s[3] + d[3] * (1 - s[3])),
+    ("alpha of the source", "you kept the source's alpha: atop's result covers only the "
+     "shares where something of it shows", lambda s, d: s[3]),
+    ("alpha of the shared share", "your alpha is the share both cover: where the destination "
+     "covers alone, it still shows", lambda s, d: s[3] * d[3]),
+    ("alpha summed", "you added the two alphas: atop's result covers only the shares where "
+     "something of it shows", lambda s, d: s[3] + d[3]),
 ]  # fmt: skip
 
 
@@ -331,6 +453,19 @@ STRAIGHT = [
     ("arguments swapped", "you blended dst over src: the first argument, src, is the incoming "
      "fragment, the second, dst, what the buffer holds", lambda s, d: straight_over(d, s)),
 ]  # fmt: skip
+
+
+def _faint_as_nothing(args, expected, got) -> bool:
+    """(0, 0, 0, 0) where the result's alpha is above 0: a guard below some small alpha
+    (r20 D-3: ``α < 0.01 → (0, 0, 0, 0)`` passed)."""
+    g = np.asarray(got, float).ravel()
+    return g.shape == (4,) and not g.any() and expected[3] > 0
+
+
+def _faint_words(args, expected, got) -> str:
+    return (f"you returned (0, 0, 0, 0), nothing there, but the result's alpha here is "
+            f"{num(float(expected[3]), 0.0)}: a faint pixel, not an empty one; the division "
+            "in step 4 has an answer wherever α is above 0")  # fmt: skip
 
 
 def _nan_at_zero(args, expected, got) -> bool:
@@ -413,8 +548,11 @@ ALPHAS = [
 ]  # fmt: skip
 
 
-def _alpha_mistakes(right) -> list[Mistake]:
-    """The colour ``right(src, dst)`` gives with each wrong alpha of :data:`ALPHAS`, then the
+_SHARE = "the result's alpha is the share of the pixel src or dst covers"
+
+
+def _alpha_mistakes(right, alphas=ALPHAS, share=_SHARE) -> list[Mistake]:
+    """The colour ``right(src, dst)`` gives with each wrong alpha of ``alphas``, then the
     symptom for any other alpha."""
 
     def gives(alpha):
@@ -426,9 +564,27 @@ def _alpha_mistakes(right) -> list[Mistake]:
         g = np.asarray(got, float)
         return all_close(g[:3], expected[:3], 1e-6) and not all_close(g[3:], expected[3:], 1e-6)
 
-    out = [Mistake(k, _RIGHT_COLOUR + w, gives=gives(a)) for k, w, a in ALPHAS]
-    words = _RIGHT_COLOUR + "the result's alpha is the share of the pixel src or dst covers"
+    out = [Mistake(k, _RIGHT_COLOUR + w, gives=gives(a)) for k, w, a in alphas]
+    words = _RIGHT_COLOUR + share
     return out + [Mistake("alpha only", words, fits=colour_right, symptom=True)]
+
+
+def _whole_numbers(args, expected, got) -> bool:
+    """The answer rounded, or cut, to whole numbers (``np.round``, ``astype(int)``) where it
+    has a fraction (r20 D-7); a guard's (0, 0, 0, 0) is whole too, but not the answer's
+    rounding."""
+    g, e = np.asarray(got, float).ravel(), np.asarray(expected, float).ravel()
+    if g.shape != e.shape or (e == np.round(e)).all():
+        return False
+    return bool((g == np.round(e)).all() or (g == np.trunc(e)).all())
+
+
+#: r20 D-7: an answer rounded to whole numbers (or cast to int) got only the general message.
+WHOLE_NUMBERS = Mistake(
+    "whole numbers", "your answer is whole numbers (rounded, or converted to int): colours "
+    "and alphas are fractions between 0 and 1, so keep them as floats",
+    fits=_whole_numbers, symptom=True, only_whole=True,  # every failing answer whole
+)  # fmt: skip
 
 
 def _swapped_colours(src, dst, alpha) -> list[np.ndarray]:
@@ -495,23 +651,42 @@ def _zero_divided(args, expected, got) -> bool:
 def _glow_words(args, expected, got) -> str:
     """A NaN at the glow: only a division by its alpha 0 gives one."""
     return (f"src {vec(args[0])} is a glow: premultiplied light with alpha 0, covering nothing. "
-            "No straight colour holds it, so dividing by alpha (to reuse 9.2a on straight "
-            "colours) divides by zero; blended premultiplied, as it is, its light adds to the "
-            "destination")  # fmt: skip
+            "No straight colour holds it, so dividing by alpha (to work on straight colours, "
+            "as 9.2a does) divides by zero; blended premultiplied, as it is, its light "
+            "counts")  # fmt: skip
 
 
 def _glow_skipped_words(args, expected, got) -> str:
     """The destination unchanged at the glow, matched by the answer, not the route (r18 D-1:
     a student who skipped a source with alpha 0 was told they had divided by alpha)."""
     return (f"your answer is the destination unchanged, as if src {vec(args[0])} were not "
-            "there; it is a glow: premultiplied light with alpha 0, covering nothing but adding "
-            "its light to the destination. A premultiplied source with alpha 0 draws nothing "
-            "only when its red, green and blue are 0 too, so it cannot be skipped for its "
-            "alpha alone (nor divided by that alpha to reuse 9.2a, which loses its light the "
-            "same way)")  # fmt: skip
+            "there; it is a glow: premultiplied light with alpha 0, covering nothing but "
+            "carrying light. A premultiplied source with alpha 0 draws nothing only when its "
+            "red, green and blue are 0 too, so it cannot be skipped for its alpha alone (nor "
+            "divided by that alpha to work on straight colours, as 9.2a does, which loses its "
+            "light the same way)")  # fmt: skip
 
 
 def _mistakes(mode: str) -> list[Mistake]:
+    return [*_cause_mistakes(mode), WHOLE_NUMBERS]
+
+
+def _atop_mistakes() -> list[Mistake]:
+    """9.2b's: the glow (divided by its alpha, or skipped for it), then the table's, then the
+    colour right with a wrong alpha."""
+    zero = ("an input has alpha 0: dividing by it to get a straight colour back is 0/0; "
+            "premultiplied colours blend as they are, with no division")  # fmt: skip
+    table = [Mistake(k, w, gives=g) for k, w, g in ATOP_MISTAKES]
+    share = "the result's alpha is the share of the pixel in which something of it shows"
+    return [Mistake("glow lost", _glow_skipped_words, gives=_atop_via_straight),
+            Mistake("glow lost", _glow_words, fits=_glow_lost),
+            Mistake("divided by alpha", zero, fits=_zero_divided), *table,
+            *_alpha_mistakes(premultiplied_atop, ATOP_ALPHAS, share)]  # fmt: skip
+
+
+def _cause_mistakes(mode: str) -> list[Mistake]:
+    if mode == "atop":
+        return _atop_mistakes()
     if mode == "straight":
         nan = Mistake("division by zero", "both alphas 0: nothing covers the pixel, so α·C is 0 "
                       "and dividing it by α = 0 has no answer; the task gives the answer there, "
@@ -521,7 +696,8 @@ def _mistakes(mode: str) -> list[Mistake]:
         # so a right colour with a wrong alpha fits it there; named only when it fits them all
         swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                           only_whole=True)  # fmt: skip
-        return [nan, *table, swapped, *_alpha_mistakes(straight_over)]
+        faint = Mistake("faint as nothing", _faint_words, fits=_faint_as_nothing)
+        return [nan, faint, *table, swapped, *_alpha_mistakes(straight_over)]
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
@@ -558,14 +734,14 @@ def blend_answers(words: str | None = None) -> tuple[PackageAnswer, ...]:
     return (PackageAnswer(blend_equation, words=words),
             PackageAnswer(apply_blend, what=step, words=words),
             PackageAnswer(factor, what=f"the blend factors, a part of {step}", words=words),
-            PackageAnswer(from_straight, words=words))  # fmt: skip
+            PackageAnswer(from_straight, words=words or CHECKER_WORDS))  # fmt: skip
 
 
 def _exercise(name: str, mode: str) -> Exercise:
     return Exercise(
         name, lambda: blend_cases(mode), _rgba, lambda g, e, a: all_close(g, e, 1e-6),
         explain_blend, _rule(mode), _mistakes(mode), answers=blend_answers(),
-        draw=_blend_drawer(mode), example=5 if mode == "premultiplied" else 4,  # glow; quarter
+        draw=_blend_drawer(mode), example=5 if mode in PREMULTIPLIED_IN else 4,  # glow; quarter
     )  # fmt: skip
 
 
@@ -621,6 +797,7 @@ def _blend_drawer(mode: str):
         kinds = {
             "over": "straight inputs and results",
             "premultiplied": "premultiplied inputs and results",
+            "atop": "premultiplied inputs and results",
             "from straight": "straight inputs, premultiplied results",
             "straight": "straight inputs and results",
         }
@@ -639,10 +816,18 @@ FROM_STRAIGHT_EXERCISE = Exercise(
     answers=blend_answers(), example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip
 PREMULTIPLIED_EXERCISE = _exercise("over_premultiplied", "premultiplied")
+#: Exercise 9.2b since r20 (D-1): the checker's reference is its own code, not counted.
+ATOP_EXERCISE = Exercise(
+    "atop_premultiplied", lambda: blend_cases("atop"), _rgba,
+    lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("atop"), _mistakes("atop"),
+    draw=_blend_drawer("atop"),
+    answers=(*blend_answers(), PackageAnswer(premultiplied_atop, words=CHECKER_WORDS)),
+    example=5,  # the glow
+)  # fmt: skip
 STRAIGHT_EXERCISE = Exercise(
     "over_straight", lambda: blend_cases("straight"), _rgba,
     lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("straight"),
     _mistakes("straight"), draw=_blend_drawer("straight"),
-    answers=(*blend_answers(), PackageAnswer(straight_over)),
+    answers=(*blend_answers(), PackageAnswer(straight_over, words=CHECKER_WORDS)),  # r20 D-8
     example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip

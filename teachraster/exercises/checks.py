@@ -43,6 +43,7 @@ def _registry() -> dict[str, Callable[[], Exercise]]:
         "over_to_premultiplied": lambda: blending.FROM_STRAIGHT_EXERCISE,
         "over_premultiplied": lambda: blending.PREMULTIPLIED_EXERCISE,
         "over_straight": lambda: blending.STRAIGHT_EXERCISE,  # 9.2a since r11 (09-A)
+        "atop_premultiplied": lambda: blending.ATOP_EXERCISE,  # 9.2b since r20 (D-1)
         **reasoning_tasks.EXERCISES,  # issue 30: reasoning tasks, lessons 07-12, broken frames
     }
 

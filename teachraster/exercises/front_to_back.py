@@ -75,6 +75,19 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
         ("an opaque layer at the back", [green, red, _premultiplied([0.2, 0.2, 0.2], 1.0)]),
         ("an invisible layer (alpha 0) in between", [red, [0, 0, 0, 0], blue]),
         ("no layers at all", np.zeros((0, 4))),
+        # r20 D-4: a stop at alpha 1 − 1e-7 or 1 − 1e-6 passed (the composite is within the
+        # tolerance): alpha 1 − 2⁻²⁴ (float32's last value below 1, exact in both) after the
+        # first layer, still below 1 after the second, 1 only at the third, so such a stop
+        # reads too few layers, even testing at the top of the loop
+        (
+            "alpha just below 1 for two layers",
+            [
+                _premultiplied([1, 0, 0], 1 - 2.0**-24),
+                _premultiplied([0, 1, 0], 0.25),
+                _premultiplied([0, 0, 1], 1.0),
+                blue,
+            ],
+        ),
     ]
     rng, now = np.random.default_rng(SEED + 80), drawn_rng()
     for k in range(14 + DRAWN):
@@ -139,12 +152,21 @@ def layer_stream(layers) -> tuple[LayerStream, Callable[[], int]]:
     return LayerStream(stream().__next__), lambda: count[0]
 
 
-class ReadPast(np.ndarray):
-    """A composite whose function read layers behind the opaque one (``read`` of them, the
-    composite opaque after layer ``opaque``, counted from 1)."""
+class Misread(np.ndarray):
+    """A composite whose function read the wrong number of layers: ``read`` of them, the
+    composite opaque after layer ``opaque`` (counted from 1). Never right."""
 
     read: int
     opaque: int
+
+
+class ReadPast(Misread):
+    """A composite whose function read layers behind the opaque one."""
+
+
+class ReadShort(Misread):
+    """A composite whose function stopped reading before the layer that makes it opaque:
+    it stopped at an alpha below 1 (r20 D-4), however close its composite."""
 
 
 def opaque_after(layers) -> int | None:
@@ -162,16 +184,16 @@ def call_front_to_back(fn, args) -> np.ndarray:
     stream, read = layer_stream(layers)
     value = as_rgba(fn(stream))
     stop = opaque_after(layers)
-    if stop is None or read() <= stop + 1:
+    if stop is None or stop <= read() <= stop + 1:
         return value
-    marked = np.asarray(value).view(ReadPast)
+    marked = np.asarray(value).view(ReadPast if read() > stop else ReadShort)
     marked.read, marked.opaque = read(), stop
     return marked
 
 
 def same_rgba(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
     """Within 1e-6 (a composite computed in float32 is right), the walk stopped in time."""
-    if isinstance(got, ReadPast):
+    if isinstance(got, Misread):
         return False
     return bool(np.isfinite(got).all()) and all_close(got, expected, 1e-6)
 
@@ -256,6 +278,17 @@ def _stopped_at(args, expected, got) -> tuple[int, float] | None:
     return None
 
 
+def _read_short_words(args, expected, got) -> str:
+    (layers,) = args
+    k = max(got.read, 1)  # the alpha after the layers read, a fact of the stack
+    left = float(np.prod(1 - np.asarray(layers, float)[:k, 3]))
+    return (f"you read {got.read} of the {len(layers)} layers and stopped, but the composite "
+            f"is opaque (alpha exactly 1) only with layer {got.opaque}: after layer {k} its "
+            f"alpha is 1 − {left:.2g}, so your loop stopped at an alpha below 1. The layers "
+            "behind still show through that transmittance, however little: a stop below 1 "
+            "is not the exact composite the task asks for")  # fmt: skip
+
+
 def _read_past_words(args, expected, got) -> str:
     (layers,) = args
     head = (f"you read {got.read} of the {len(layers)} layers, but after layer {got.opaque} "
@@ -286,6 +319,8 @@ def _stopped_words(args, expected, got) -> str:
 #: Mistakes no variant gives: the walk's order and where it stops (r8: a back-to-front loop
 #: passed).
 WALK = [
+    Mistake("stopped below alpha 1", _read_short_words,
+            fits=lambda a, e, g: isinstance(g, ReadShort) and all_close(g, e, 1e-6)),
     Mistake("read behind the opaque layer", _read_past_words,
             fits=lambda a, e, g: isinstance(g, ReadPast) and all_close(g, e, 1e-6)),
     Mistake("stopped early", _stopped_words,
@@ -339,6 +374,10 @@ def explain_layers(args, expected, got) -> str:
     if isinstance(got, ReadPast):
         want, _ = colour_texts(expected, got)
         return f"for {len(layers)} layer(s) (nearest first) your composite {want} is right"
+    if isinstance(got, ReadShort):  # within the tolerance: what is wrong is the stop
+        want, yours = colour_texts(expected, got)
+        return (f"for {len(layers)} layer(s) (nearest first) the composite is {want}; yours "
+                f"is {yours}, as close as the check's tolerance")  # fmt: skip
     want, yours = colour_texts(expected, got)
     return f"for {len(layers)} layer(s) (nearest first) the composite is {want}; yours is {yours}"
 
@@ -364,6 +403,9 @@ def draw_layers(ax, case, got):
         names[got.opaque] += "\nallowed"
     for k in past:  # r12 09-7: expected = yours; what is wrong is the layers read
         names[k] += "\nread"
+    if isinstance(got, ReadShort):  # r20 D-4: stopped before the layer that makes it opaque
+        for k in range(got.read, got.opaque):
+            names[k] += "\nnot read"
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
         names += ["expected", "yours"]
