@@ -294,6 +294,9 @@ def test_00_tour_numbers():
     assert ns.same and np.array_equal(ns.span.coverage, ns.halfplane.coverage)
     assert np.nanmax(ns.err) > 0.1
     assert ns.frame.image.shape == (240, 320, 3)
+    # review r19 00-7: the cube's text says the faces turned away are filled too (culling
+    # off) and the depth test keeps one fragment of the two each covered pixel gets
+    assert ns.fragments == 2 * ns.covered and ns.covered == 8130
     assert {e.name for e in ns.frame.plan} >= {"clipping", "culling", "depth_test", "perspective"}
 
 

@@ -989,3 +989,18 @@ def test_widgets_drive_from_code():
     assert st.triangle.value == 11 and st.counts == fragment_counts(frame, 11)
     assert st.fig.get_figwidth() * st.fig.dpi <= COLUMN_WIDTH_PX
     st.close()
+
+
+def test_guard_band_exact_range_and_far_floor_words():
+    """Review r20: lesson 10 calls ±2**21 px the exact range and the guard band lies inside it,
+    so "the band" no longer names the range there, and lesson 07 no longer says lesson 10
+    prints the guard band's extent; lesson 04's far floor shows horizontal streaks, not noise
+    (along a pixel row the depth hardly changes)."""
+    ten = " ".join(" ".join(_cells("10_tiles_and_hierarchical_z", k)) for k in ("markdown", "code"))
+    assert not re.search(r"(?<!guard )\bband\b", ten.replace("guard\n", "guard ")), "band"
+    seven = " ".join(" ".join(_cells("07_hard_cases", "markdown")).split())
+    assert "lesson 10 prints the range it lies within" in seven and "prints its extent" not in seven
+    four = " ".join(" ".join(_cells("04_perspective_correct_interpolation", "markdown")).split())
+    assert "noise" not in four and "horizontal streaks" in four
+    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    assert "GL_DEPTH_CLAMP" in tour and "DepthClipEnable = FALSE" in tour

@@ -902,3 +902,16 @@ def test_visit_order_path_is_thick_enough_for_a_projector():
     art = tp.plot_visit_order(ax, make_fill("halfplane"))
     assert art.path.get_linewidth() >= 0.5 * float(mpl.rcParams["lines.linewidth"])
     plt.close(fig)
+
+
+def test_the_frame_is_drawn_above_the_vertex_labels_boxes():
+    """Reviews r19/r20 (00 c14, c16): v1's white box over the heatmap's left side hid a piece
+    of the frame and left a stub. The frame is drawn above the labels; in a player's steps
+    (``inside``) it stays below, where the current block, the whole image at a tiles step, is
+    outlined on it."""
+    fig, (ax, steps) = plt.subplots(1, 2)
+    labels = tp.plot_triangle(ax, make_fill()).labels
+    assert all(s.get_zorder() > max(t.get_zorder() for t in labels) for s in ax.spines.values())
+    inside = tp.plot_triangle(steps, make_fill(), inside=True).labels
+    assert all(s.get_zorder() < min(t.get_zorder() for t in inside) for s in steps.spines.values())
+    plt.close(fig)

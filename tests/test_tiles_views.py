@@ -370,3 +370,20 @@ def test_fill_player_tiles_with_several_samples_shows_one_and_says_so():
                            backend="image")  # fmt: skip
     assert with_menu.trace.method == "tiled" and with_menu.samples_note.value == TILES_NOTE
     with_menu.close()
+
+
+def test_a_block_that_is_the_whole_image_says_so():
+    """Review r20 (lesson 00's player, tiles): on a 16 × 16 image the 64×64 and 16×16 blocks
+    at (0, 0) are the whole image, outlined on its frame, and the steps seemed to change
+    nothing. Their captions say so; a smaller block, or one that leaves part of the image
+    out, does not."""
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]])
+    trace = tr.rasterize(tri, 16, 16, method="tiled", trace=True).trace
+    blocks = [trace.step(k) for k in range(len(trace)) if trace.step(k).kind == "block"]
+    whole = [s for s in blocks if s.extent == (16, 16)]
+    assert len(whole) == 2  # the 64×64 block and the 16×16 one
+    assert all("(the whole image, outlined by its frame)" in s.caption for s in whole)
+    assert not any("whole image" in s.caption for s in blocks if s.extent != (16, 16))
+    wide = tr.rasterize(tri, 20, 16, method="tiled", trace=True).trace  # 16 rows, 20 columns
+    said = [wide.step(k).extent for k in range(len(wide)) if "whole image" in wide.caption(k)]
+    assert said == [(16, 20)]  # the 64×64 block only: the 16×16 one leaves 4 columns out

@@ -1107,16 +1107,17 @@ def test_depth_explorer_drafts_end_on_the_picture_set_from_code():
 NARROW_COLUMN_PX = 585
 
 
-def smallest_text_px(fig, *, max_height: float | None = None, ignore=()) -> tuple[float, str]:
+def smallest_text_px(fig, *, max_height: float | None = None, ignore=(),
+                     column: float = NARROW_COLUMN_PX) -> tuple[float, str]:  # fmt: skip
     """The smallest drawn text of ``fig`` (but ``ignore``) in CSS px as shown in a
-    :data:`NARROW_COLUMN_PX` column: an image widget is at most the column's width (and
+    ``column`` px wide column: an image widget is at most the column's width (and
     ``max_height``), scaled whole."""
     from matplotlib.text import Text
 
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     w, h = fig.get_figwidth() * fig.dpi, fig.get_figheight() * fig.dpi
-    scale = min(1.0, NARROW_COLUMN_PX / w, (max_height / h) if max_height else 1.0)
+    scale = min(1.0, column / w, (max_height / h) if max_height else 1.0)
     sizes = []
     for text in fig.findobj(Text):
         if not (text.get_visible() and text.get_text().strip()) or text.get_text() in ignore:
@@ -1189,5 +1190,33 @@ def test_widget_figures_read_12_px_in_the_column_at_1024_px(make):
     try:
         size, text = smallest_text_px(fig, max_height=max_height)
         assert size >= 12.0, (size, text)  # r15: the comparison's v1, v2, v3 read 11.8
+    finally:
+        widget.close()
+
+
+def test_the_comparison_reads_12_px_inside_its_accordion_at_1024_px():
+    """Review r20 (00 c14): inside the player's accordion the comparison is shown 556 px wide
+    at 1024 x 768 with the file browser open (the column less the accordion's padding), where
+    its text read 11.8 px; it is sized for that width. Its heatmap and colour bar name the
+    error |Δu|, as lesson 00's heatmap does, and the row's curves fill their panel."""
+    from teachraster.plotting import use_style
+    from teachraster.widgets.player import COMPARISON_SHOWN_PX
+
+    with use_style("classroom"):
+        widget, fig, max_height = _comparison_figure()
+    try:
+        size, text = smallest_text_px(fig, max_height=max_height, column=COMPARISON_SHOWN_PX)
+        assert size >= 12.0, (size, text)
+        from matplotlib.text import Text
+
+        view = widget.interp_view
+        texts = [t.get_text() for t in fig.findobj(Text)]
+        assert "|Δu|" in texts and any(t.startswith("|Δu|: max") for t in texts)
+        assert not any("error" in t for t in texts)
+        x0, x1 = view.profile.title.axes.get_xlim()
+        shown = np.isfinite(view.profile.lines[0].get_ydata())
+        centres = np.asarray(view.profile.lines[0].get_xdata())[shown]
+        assert x0 <= centres.min() - 0.5 and centres.max() + 0.5 <= x1  # every covered pixel
+        assert x1 - x0 <= centres.max() - centres.min() + 3  # and one pixel either side
     finally:
         widget.close()

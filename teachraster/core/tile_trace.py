@@ -250,13 +250,20 @@ class TileTrace:
             "corners, partial ones are split"
         )
 
-    def caption(self, b: int, edges: np.ndarray) -> str:
-        """One line on block ``b``: where it is, the deciding edge values, the verdict."""
+    def caption(self, b: int, edges: np.ndarray, shape: tuple[int, int] | None = None) -> str:
+        """One line on block ``b``: where it is, the deciding edge values, the verdict.
+
+        ``shape``: the image's (height, width), to say so when a block is all of it (its
+        outline is then the image's frame, and a step that splits it seems to change nothing:
+        review r20, lesson 00's player).
+        """
         s, kind = int(self.size[b]), int(self.kind_code[b])
         rows, cols = (int(v) for v in self.extent[b])
         where = f"{s}×{s} block at (row {self.row[b]}, col {self.col[b]})"
         if (rows, cols) != (s, s):
             where += f", {rows}×{cols} inside the image"
+        if shape is not None and (self.row[b], self.col[b], rows, cols) == (0, 0, *shape):
+            where += " (the whole image, outlined by its frame)"
         name = [edge_name(a, c) for a, c in edges]
         if kind == REJECTED:
             k = int(self.rejected_by[b])

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
+from matplotlib.ticker import MaxNLocator
 
 from ..core.fill import Fill
 from ..core.trace import FillTrace
@@ -368,6 +369,12 @@ class ProfileArtists(Artists):
             guide.set_data(([0, a.shape[1]], [self.index + 0.5] * 2) if along_row
                            else ([self.index + 0.5] * 2, [0, a.shape[0]]))  # fmt: skip
         ax = self.title.axes
+        # only the row's (column's) covered pixels and one on either side: over the whole
+        # image the curves took a third of the panel (reviews r19/r20, lesson 00's player)
+        start, stop = _covered_span(pick(a), pick(b))
+        (ax.set_xlim if along_row else ax.set_ylim)(
+            *((start, stop) if along_row else (stop, start))
+        )
         lo, hi = self.vlim or _value_range(pick(a), pick(b))
         if along_row and self.vlim is None:
             # headroom above the curves for the key, in the upper left: inside the curves'
@@ -380,6 +387,30 @@ class ProfileArtists(Artists):
 
 #: The share of a row profile's value range added above the curves for its key.
 KEY_ROOM = 0.45
+
+
+#: The fewest pixels a profile's position axis spans: a short row is not stretched flat.
+PROFILE_MIN_SPAN = 6
+
+
+def _covered_span(a, b) -> tuple[int, int]:
+    """The positions (pixel edges) from one pixel before the first covered value of ``a`` or
+    ``b`` to one after the last, at least :data:`PROFILE_MIN_SPAN` wide and inside the image.
+
+    >>> nan = float("nan")
+    >>> _covered_span(np.array([nan] * 3 + [1.0] * 5 + [nan] * 8), np.full(16, nan))
+    (2, 9)
+    """
+    n = len(a)
+    covered = np.flatnonzero(np.isfinite(a) | np.isfinite(b))
+    if not covered.size:
+        return 0, n
+    start, stop = int(covered[0]) - 1, int(covered[-1]) + 2
+    short = max(0, min(PROFILE_MIN_SPAN, n) - (stop - start))
+    start -= short // 2
+    stop += short - short // 2
+    shift = max(0, -start) - max(0, stop - n)  # back inside the image
+    return max(0, start + shift), min(n, stop + shift)
 
 
 def _value_range(a, b) -> tuple[float, float]:
@@ -431,6 +462,8 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
         ax.set(xlim=(0, w), xlabel="column j", ylabel=value)
     else:
         ax.set(ylim=(h, 0), ylabel="row i", xlabel=value)
+    # whole columns (rows) only: a few pixels' span drew ticks at 2.5, 5.0, 7.5
+    (ax.xaxis if axis == "row" else ax.yaxis).set_major_locator(MaxNLocator(integer=True))
     title = ax.set_title("", fontsize=fs(0.9))
     result = ProfileArtists(lines, guide_lines, title, axis, int(index),
                             None if vlim is None else tuple(vlim))  # fmt: skip

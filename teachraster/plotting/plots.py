@@ -365,6 +365,13 @@ def plot_triangle(
             result.arrows.append(arrow)
     if labels:
         result.labels = _labels(ax, color, fontsize=fs(0.95), fontweight="bold", alpha=0.85)
+    if labels and not inside:
+        # the frame above the labels' white boxes: a box over the Axes' side hid a piece of
+        # it and left a stub beside the label (reviews r19/r20, lesson 00's heatmaps). Kept
+        # below with ``inside`` (the players' steps): there the labels stay off the sides,
+        # and the current block, the whole image at a tiles step, is outlined on the frame.
+        for spine in ax.spines.values():
+            spine.set_zorder(max(spine.get_zorder(), 6.5))
     if edge_labels:
         result.edge_labels = _labels(ax, color, fontsize=fs(0.8), style="italic", alpha=0.7)
     result.update(tri, edges)

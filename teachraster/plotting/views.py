@@ -714,8 +714,9 @@ class InterpolationView(ComparisonView):
         profile_ax = axes.pop(3) if axes is not None and len(axes) > 3 else None
         # Short titles, so that they fit their panels at classroom font sizes too; the
         # attribute's name labels the colour bar of the values.
+        # the error is named as lesson 00's heatmap names it, |Δu| (review r20, 00 c14)
         super().__init__(
-            a, b, titles=("affine", "perspective-correct"), label="|error|", axes=axes,
+            a, b, titles=("affine", "perspective-correct"), label=f"|Δ{label}|", axes=axes,
             vmin=vmin, vmax=vmax,
         )  # fmt: skip
         self.profile = None

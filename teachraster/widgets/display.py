@@ -11,12 +11,14 @@ the end of a cell, and it does not pile up in pyplot's list of open figures.
 from __future__ import annotations
 
 import functools
+import math
 import sys
 
 import ipywidgets as widgets
 import matplotlib as mpl
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.text import Text
 
 from ..plotting.common import fs
 from ..plotting.frames import encode_png
@@ -310,7 +312,11 @@ def html_escape(text: str) -> str:
     return html.escape(text, quote=False)
 
 
-def readable_text(axes=(), *, profile=None, texts=()) -> None:
+#: The smallest text on screen a figure may show (CSS px): the course's projector rule.
+MIN_TEXT_PX = 12.0
+
+
+def readable_text(axes=(), *, profile=None, texts=(), shown_px: float | None = None) -> None:
     """Tick labels of ``axes`` (colour bars' too), the labels drawn in them (v1, v2, v3), a
     profile's ticks, title and legend, and ``texts``: at least the style's font size.
 
@@ -320,8 +326,21 @@ def readable_text(axes=(), *, profile=None, texts=()) -> None:
     04's viewer and the players' comparison); at the style's 18 pt they read 12. The vertex
     labels, drawn a little smaller for the full-size fill figure, read 11.8 px there (reviews
     r13 and r15, lesson 00's player): they are raised too.
+
+    ``shown_px``: the width the figure is shown at when that is narrower still (an
+    accordion's padding takes some of the column): every text of the figure (axis labels
+    and titles too) is raised to what reads :data:`MIN_TEXT_PX` there, where the style's
+    size does not.
     """
     size = fs(1.0)
+    fig = next((a.figure for a in axes if a is not None), None)
+    if shown_px is not None and fig is not None:
+        width = fig.get_figwidth() * fig.dpi
+        # px on screen = points × dpi / 72 × shown / width
+        need = MIN_TEXT_PX * width / min(shown_px, width) * 72 / fig.dpi
+        size = max(size, math.ceil(need * 2) / 2)  # a half point up: pixels round
+        for text in fig.findobj(Text):
+            text.set_fontsize(max(size, text.get_fontsize()))
     for ax in [a for a in axes if a is not None]:
         ax.tick_params(labelsize=size)
         for text in ax.texts:

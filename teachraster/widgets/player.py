@@ -50,6 +50,10 @@ TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i
 #: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
 #: interpolation toggle opened it).
 COMPARISON_MAX_PX = 660
+#: The comparison's width on screen at 1024 x 768 with JupyterLab's file browser open (CSS
+#: px): the output column (592) less the accordion's padding (review r20, 00 c14). Its text
+#: is sized to read 12 px there.
+COMPARISON_SHOWN_PX = 556
 
 
 def shown_samples(method: str, samples: str) -> str:
@@ -222,12 +226,13 @@ class FillPlayer(Holdable):
             axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True)
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
-            # shown shrunk to the column at 1024 px: its text at the style's size (review r9
-            # 00 c14, 04 c15: ticks, key and notes read 9-11 px)
+            # shown shrunk to the accordion at 1024 px: its text sized to read 12 px there
+            # (reviews r9 00 c14, 04 c15: ticks, key and notes read 9-11 px; r20: 11.8)
             view = self.interp_view
             bars = [im.colorbar.ax for im in (*view.images, view.heatmap) if im.colorbar]
             readable_text([*view.axes, *bars], profile=view.profile,
-                          texts=[view.heatmap.note, *view.in_use])  # fmt: skip
+                          texts=[view.heatmap.note, *view.in_use],
+                          shown_px=COMPARISON_SHOWN_PX)  # fmt: skip
             # a toggle changes the images, outlines and colour bars: the rest stays cached
             self._interp_blit = comparison_edit_blit(self.interp_view)
             self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)

@@ -40,7 +40,9 @@ export function stageHtml(data, key) {
         "one triangle, v1 → v2 → v3. Nothing is known yet of where it lands on the screen.</p>";
     case "clip":
       return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w. Real GPUs clip " +
-        "only against the near and far planes (and w &gt; 0): x and y are clipped only beyond " +
+        "only against the near and far planes (and w &gt; 0), and not even those with depth " +
+        "clamp on (GL's GL_DEPTH_CLAMP, GL 4.6 §13.7; Direct3D's DepthClipEnable = FALSE): " +
+        "depth is then clamped to the depth range instead. x and y are clipped only beyond " +
         `a guard band, here |x|, |y| ≤ ${digits(data.guard)} w (in the window, |x|, |y| &lt; ` +
         `${digits(data.guardPx)} px), just inside the ${digits(data.exactPx)} px within which ` +
         "the integer edge functions of lesson 02 stay exact. The rasteriser's bounding box " +
