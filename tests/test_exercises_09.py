@@ -1478,7 +1478,7 @@ def test_a_guard_below_a_small_alpha_fails_9_2a_and_is_named(threshold):
     """r20 D-3: ``α < 0.01 → (0, 0, 0, 0)`` passed: no case had a faint, non-zero alpha."""
     first = _first("over_straight", _guarded(threshold))
     assert first.kind == "faint as nothing", first.explanation
-    assert "a faint pixel, not an empty one" in first.explanation, first.explanation
+    assert "so it is not empty" in first.explanation, first.explanation
     assert ex.check("over_straight", _guarded(1e-300)).passed  # only α = 0 has no colour
 
 
@@ -1541,3 +1541,96 @@ def test_the_checkers_straight_over_handed_in_is_the_checkers_own_code():
     assert not report.passed and "the checker's own code" in report.package, report.package
     report = ex.check("over_to_premultiplied", lambda s, d: from_straight(s, d))
     assert not report.passed and "the checker's own code" in report.package, report.package
+
+
+# -- r22: 9.2b's faint and glowing destinations; names of the secondary mistakes -------------
+def _atop_guarded(test):
+    """Atop, but (0, 0, 0, 0) where ``test(src, dst)`` holds."""
+    return lambda s, d: np.zeros(4) if test(np.asarray(s), np.asarray(d)) else atop_pm(s, d)
+
+
+@pytest.mark.parametrize("guard", [
+    lambda s, d: d[3] < 0.01, lambda s, d: d[3] < 0.05, lambda s, d: d[3] == 0,
+    lambda s, d: atop_pm(s, d)[3] == 0,
+], ids=["faint dst 0.01", "faint dst 0.05", "dst alpha 0", "result alpha 0"])  # fmt: skip
+def test_an_atop_guard_on_a_small_alpha_always_fails_named(guard):
+    """r22 D-1, D-2: a faint-destination guard passed 55 of 60 runs (only drawn cases caught
+    it, then named "whole numbers"), and "(0, 0, 0, 0) where α = 0" passed: a fixed faint
+    destination and a glowing one (alpha 0, light) now fail it, on every run, named."""
+    report = ex.check("atop_premultiplied", _atop_guarded(guard), budget=60)
+    assert not report.passed
+    kinds = {f.kind for f in report.failures}
+    assert kinds == {"nothing returned"}, str(report)[:800]
+    said = " ".join(f.explanation for f in report.failures)
+    assert "is a glow" in said and "whole numbers" not in said, said
+
+
+def test_atop_of_a_glowing_destination_keeps_its_light():
+    """r22 D-2: src atop a glow (alpha 0) is src·0 + dst·(1 − α_s): the glow's light, dimmed
+    by the source's coverage, alpha 0."""
+    from teachraster.exercises.blending import blend_cases
+
+    case = next(c for c in blend_cases("atop") if "atop a glow" in c[0])
+    assert np.allclose(case[2], [0.15, 0.1, 0.025, 0.0]), case
+    faint = [c for c in blend_cases("atop") if "faint" in c[0]]
+    assert len(faint) == 2 and all(0 < c[1][k][3] < 0.01 for c, k in zip(faint, (1, 0)))
+
+
+@pytest.mark.parametrize("fn,kind,words", [
+    (lambda s, d: np.asarray(d, float) + s if s[3] == 0 and any(s[:3]) else atop_pm(s, d),
+     "glow added whole", "only where the destination covers"),
+    (lambda s, d: np.r_[np.minimum(np.asarray(atop_pm(s, d))[:3], atop_pm(s, d)[3]),
+                        atop_pm(s, d)[3]], "colour clamped to alpha", "light (a glow)"),
+    (lambda s, d: np.r_[np.asarray(s[:3]) * (1 - s[3]) + np.asarray(d[:3]) * d[3], d[3]],
+     "weights swapped", "your alpha is right"),
+    (lambda s, d: np.asarray(d, float) if s[3] < 0.01 else atop_pm(s, d), "source skipped",
+     "destination unchanged"),
+], ids=["glow added whole", "clamped to alpha", "colour weights swapped", "faint src"])  # fmt: skip
+def test_atops_glow_mistakes_are_named(fn, kind, words):
+    """r22 D-8: the glow question's two natural wrong answers and the colour-only swap got
+    the general message; a faint-source guard is named at both its failures."""
+    report = ex.check("atop_premultiplied", fn, budget=60)
+    assert {f.kind for f in report.failures} == {kind}, str(report)[:800]
+    assert words in report.failures[0].explanation, report.failures[0].explanation
+
+
+@pytest.mark.parametrize("name", ["over_straight", "atop_premultiplied"])
+def test_a_rounded_answer_is_never_called_a_faint_pixel(name):
+    """r22 D-6: 9.2a's rounded answer got "a faint pixel" (α = 0.377) on a later line."""
+    right = {"over_straight": over_straight, "atop_premultiplied": atop_pm}[name]
+    report = ex.check(name, lambda s, d: np.round(np.asarray(right(s, d), float)).astype(int),
+                      budget=60)  # fmt: skip
+    assert {f.kind for f in report.failures} == {"whole numbers"}, str(report)[:800]
+
+
+@pytest.mark.parametrize("how,kind", [
+    (lambda c: np.round(c).astype(int), "whole numbers"),
+    (lambda c: c + (1 - c[3]) * np.ones(4), "over white"),
+    (lambda c: np.r_[c[:3] + (1 - c[3]), c[3]], "over white"),
+])  # fmt: skip
+def test_front_to_back_whole_numbers_and_white_are_named(how, kind):
+    """r22 D-7: a right loop rounded, or composited over white, got the rule restated."""
+    report = ex.check(
+        "front_to_back", lambda layers: how(np.asarray(front_to_back(layers), float)), budget=60
+    )
+    assert report.failures and report.failures[0].kind == kind, str(report)[:800]
+
+
+def test_r22_text_fixes():
+    """r22 D-3, D-4, D-5, D-9, D-10: PDF has over only and SVG's atop is feComposite; the
+    heading fits atop; a transparent glow is not "(0, 0, 0, 0)"; the package rule is stated."""
+    cells = _nb_cells()
+    atop = " ".join(cells["atop_premultiplied_task"].split())
+    assert "SVG and PDF composite the same way" not in atop
+    assert "feComposite" in atop and "PDF composites with *over* only" in atop
+    task = " ".join(cells["over_straight_task"].split())
+    assert task.startswith("## 9.2 Over and atop"), task[:80]
+    assert "a transparent pixel is (0, 0, 0, 0)" not in task
+    assert "covers nothing and carries no light is (0, 0, 0, 0)" in task
+    intro = " ".join(cells["intro"].split())
+    assert "`tr.blend_equation`" in intro and "not counted" in intro
+    import inspect
+
+    from teachraster.exercises.front_to_back import explain_layers
+
+    assert "within the check's tolerance" in inspect.getsource(explain_layers)

@@ -62,6 +62,9 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         # r20 D-3: a guard "α < 0.01 → (0, 0, 0, 0)" passed; a faint pixel still has a colour
         pairs.append(("faint red over transparent black", [1, 0, 0, 0.004], [0, 0, 0, 0]))
         pairs.append(("faint over faint", [0.2, 0.9, 0.4, 0.003], [0.8, 0.1, 0.6, 0.002]))
+    if mode == "atop":  # r22 D-1: a guard "α_d < 0.01 → (0, 0, 0, 0)" passed 55 of 60 runs
+        pairs.append(("half red over faint blue", [1, 0, 0, 0.5], [0, 0, 1, 0.004]))
+        pairs.append(("faint green over half grey", [0, 1, 0, 0.004], [0.5, 0.5, 0.5, 0.5]))
     rng = np.random.default_rng(SEED + 1)
     for k in range(20):
         pairs.append((f"random colours {k}", *rng.uniform(0, 1, (2, 4)).round(3)))
@@ -87,6 +90,10 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         verb = "atop" if mode == "atop" else "over"
         out.insert(5, (f"a glow (light, alpha 0) {verb} half blue", (src, dst),
                        blend_equation(src, dst, *FACTORS[mode])))  # fmt: skip
+    if mode == "atop":  # r22 D-2: a glowing destination (alpha 0) keeps its light under atop
+        src, dst = np.array([0.2, 0.1, 0.0, 0.5]), np.array(GLOW)
+        out.insert(6, ("half orange atop a glow (light, alpha 0)", (src, dst),
+                       blend_equation(src, dst, *ATOP)))  # fmt: skip
     return out
 
 
@@ -352,6 +359,10 @@ ATOP_MISTAKES = [
          premultiplied_atop(s, d))),
     ("weights swapped", "you swapped the two weights, the source's and the destination's "
      f"({_CARRIES})", lambda s, d: s * (1 - s[3]) + d * d[3]),
+    # r22 D-8: the same on red, green and blue, with atop's alpha
+    ("weights swapped", "your alpha is right, but you swapped the colour's two weights, the "
+     f"source's and the destination's ({_CARRIES})",
+     lambda s, d: _atop(s[:3] * (1 - s[3]) + d[:3] * d[3], s, d)),
     ("destination not scaled", "you added the whole destination: where the source covers it, "
      "the source hides it", lambda s, d: s * d[3] + d),
     ("destination's own alpha", "you weighted the destination by 1 − its own alpha: what "
@@ -462,10 +473,109 @@ def _faint_as_nothing(args, expected, got) -> bool:
     return g.shape == (4,) and not g.any() and expected[3] > 0
 
 
-def _faint_words(args, expected, got) -> str:
-    return (f"you returned (0, 0, 0, 0), nothing there, but the result's alpha here is "
-            f"{num(float(expected[3]), 0.0)}: a faint pixel, not an empty one; the division "
-            "in step 4 has an answer wherever α is above 0")  # fmt: skip
+def _faint_words(why: str):
+    """The words of "faint as nothing", ending in ``why`` (the exercise's reason). The alpha
+    is the case's, so they call the pixel covered, not "faint" (r22 D-6: α = 0.377 was "a
+    faint pixel")."""
+
+    def words(args, expected, got) -> str:
+        return (f"you returned (0, 0, 0, 0), nothing there, but the result's alpha here is "
+                f"{num(float(expected[3]), 0.0)}: something covers this pixel, however little "
+                f"of it, so it is not empty; {why}")  # fmt: skip
+
+    return words
+
+
+#: "faint as nothing" only where it fits every failing answer (r22 D-6: an answer rounded to
+#: whole numbers is (0, 0, 0, 0) wherever the blend rounds to 0, and was told it there too).
+FAINT_STRAIGHT = Mistake(
+    "faint as nothing", _faint_words("the division in step 4 has an answer wherever α is "
+                                     "above 0"),
+    fits=_faint_as_nothing, only_whole=True)  # fmt: skip
+_FAINT_ATOP = _faint_words("atop draws the source on whatever the destination covers, "
+                           "however little, and premultiplied colours blend as they are, "
+                           "with no test on alpha")  # fmt: skip
+
+
+def _nothing_returned(args, expected, got) -> bool:
+    """(0, 0, 0, 0) where the blend is not: a guard on a small alpha, or 9.2a's "(0, 0, 0, 0)
+    where α = 0" carried over to a glow (r22 D-1, D-2)."""
+    g = np.asarray(got, float).ravel()
+    return g.shape == (4,) and not g.any() and bool(np.asarray(expected, float).any())
+
+
+def _nothing_words(args, expected, got) -> str:
+    if expected[3] > 0:
+        return _FAINT_ATOP(args, expected, got)
+    glow = next((f"{n} {vec(c)} is a glow" for n, c in zip(("src", "dst"), args) if _is_glow(c)),
+                "an input is a glow")  # fmt: skip
+    return (f"you returned (0, 0, 0, 0) where the result's alpha is 0, but {glow}: "
+            "premultiplied light with alpha 0, covering nothing. A premultiplied colour with "
+            "alpha 0 is (0, 0, 0, 0) only when it carries no light, and atop keeps the "
+            "destination's light wherever the source does not cover it")  # fmt: skip
+
+
+def _source_skipped(args, expected, got) -> bool:
+    """The destination returned where the source carries something: a guard that skips a
+    faint source, or a glow, for its alpha."""
+    src, dst = (np.asarray(c, float) for c in args)
+    g = np.asarray(got, float).ravel()
+    return g.shape == (4,) and src.any() and all_close(g, dst, 1e-6)
+
+
+def _source_skipped_words(args, expected, got) -> str:
+    if _is_glow(args[0]):
+        return _glow_skipped_words(args, expected, got)
+    return (f"your answer is the destination unchanged, as if src {vec(args[0])} were not "
+            "there: a source with a small alpha still draws its share on the destination "
+            "(premultiplied colours blend as they are, with no test on alpha)")  # fmt: skip
+
+
+#: r22 D-1: a guard "α_s < 0.01 → dst" (named at the glow, general at the faint source).
+SOURCE_SKIPPED = Mistake("source skipped", _source_skipped_words, fits=_source_skipped,
+                         only_whole=True)  # fmt: skip
+
+
+#: Named only where it fits every failing answer: a rounded answer is (0, 0, 0, 0) wherever
+#: the blend rounds to 0 (r22 D-6), and is "whole numbers".
+NOTHING_ATOP = Mistake("nothing returned", _nothing_words, fits=_nothing_returned,
+                       only_whole=True)  # fmt: skip
+
+
+def _glow_added_whole(src, dst):
+    """A glowing source's light added whole ("it covers nothing, so its light just adds"),
+    the rest atop (r22 D-8); None where the source is no glow (nothing to say)."""
+    return np.asarray(src, float) + np.asarray(dst, float) if _is_glow(src) else None
+
+
+def _dst_glow_kept(src, dst):
+    """A glowing destination's light kept whole under the source (r22 D-2); None where the
+    destination is no glow."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    return s * d[3] + d if _is_glow(d) else None
+
+
+def _clamped_to_alpha(src, dst):
+    """Atop with its colour clamped to its alpha ("a premultiplied colour never exceeds its
+    alpha"), true of coverage, not of light (r22 D-8)."""
+    out = premultiplied_atop(src, dst)
+    return np.r_[np.minimum(out[:3], out[3]), out[3]]
+
+
+GLOW_MISTAKES = [
+    Mistake("glow added whole", lambda a, e, g: (
+        f"src {vec(a[0])} is a glow (alpha 0, light in it) and you added all of its light: "
+        "atop shows the source, a glow's light too, only where the destination covers, "
+        "in the share α_d of the pixel"), gives=_glow_added_whole),
+    Mistake("glow added whole", lambda a, e, g: (
+        f"dst {vec(a[1])} is a glow (alpha 0, light in it) and you kept all of its light: "
+        "the source hides it where the source covers, in the share α_s of the pixel, as it "
+        "hides any destination"), gives=_dst_glow_kept),
+    Mistake("colour clamped to alpha", "you clamped the colour to the result's alpha: a "
+            "premultiplied colour stays below its alpha only when it is a straight colour "
+            "times its coverage; light (a glow) can exceed it, and atop keeps it",
+            gives=_clamped_to_alpha),
+]  # fmt: skip
 
 
 def _nan_at_zero(args, expected, got) -> bool:
@@ -680,8 +790,8 @@ def _atop_mistakes() -> list[Mistake]:
     share = "the result's alpha is the share of the pixel in which something of it shows"
     return [Mistake("glow lost", _glow_skipped_words, gives=_atop_via_straight),
             Mistake("glow lost", _glow_words, fits=_glow_lost),
-            Mistake("divided by alpha", zero, fits=_zero_divided), *table,
-            *_alpha_mistakes(premultiplied_atop, ATOP_ALPHAS, share)]  # fmt: skip
+            Mistake("divided by alpha", zero, fits=_zero_divided), *table, *GLOW_MISTAKES,
+            NOTHING_ATOP, SOURCE_SKIPPED, *_alpha_mistakes(premultiplied_atop, ATOP_ALPHAS, share)]  # fmt: skip
 
 
 def _cause_mistakes(mode: str) -> list[Mistake]:
@@ -696,8 +806,7 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
         # so a right colour with a wrong alpha fits it there; named only when it fits them all
         swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                           only_whole=True)  # fmt: skip
-        faint = Mistake("faint as nothing", _faint_words, fits=_faint_as_nothing)
-        return [nan, faint, *table, swapped, *_alpha_mistakes(straight_over)]
+        return [nan, FAINT_STRAIGHT, *table, swapped, *_alpha_mistakes(straight_over)]
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",

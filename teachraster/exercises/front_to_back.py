@@ -29,7 +29,7 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers
-from .blending import blend_answers, colour_texts, swatches
+from .blending import WHOLE_NUMBERS, blend_answers, colour_texts, swatches
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
@@ -325,7 +325,22 @@ WALK = [
             fits=lambda a, e, g: isinstance(g, ReadPast) and all_close(g, e, 1e-6)),
     Mistake("stopped early", _stopped_words,
             fits=lambda a, e, g: _stopped_at(a, e, g) is not None),
+    # r22 D-7: a right loop over white, and one rounded to whole numbers, got the rule
+    Mistake("over white", "you composited over white: the task's background is transparent "
+            "black, (0, 0, 0, 0), which adds no light and covers nothing, so the composite "
+            "is the layers' alone", fits=lambda a, e, g: _over_white(e, g)),
+    WHOLE_NUMBERS,
 ]  # fmt: skip
+
+
+def _over_white(expected, got) -> bool:
+    """The composite over an opaque white background: the white seen through 1 − A, added
+    on all four channels or on the colour alone (r22 D-7)."""
+    e, g = np.asarray(expected, float), np.asarray(got, float).ravel()
+    if g.shape != (4,) or e[3] >= 1:
+        return False
+    white = e + (1 - e[3]) * np.ones(4)
+    return all_close(g, white, 1e-6) or all_close(g, np.r_[white[:3], e[3]], 1e-6)
 
 
 MISTAKES = {
@@ -377,7 +392,7 @@ def explain_layers(args, expected, got) -> str:
     if isinstance(got, ReadShort):  # within the tolerance: what is wrong is the stop
         want, yours = colour_texts(expected, got)
         return (f"for {len(layers)} layer(s) (nearest first) the composite is {want}; yours "
-                f"is {yours}, as close as the check's tolerance")  # fmt: skip
+                f"is {yours}, within the check's tolerance")  # fmt: skip
     want, yours = colour_texts(expected, got)
     return f"for {len(layers)} layer(s) (nearest first) the composite is {want}; yours is {yours}"
 
