@@ -213,3 +213,26 @@ def test_the_divide_cost_explorer_draws_its_other_measure_ahead_without_a_warnin
         assert ex._elsewhere.art.floor == pytest.approx(0.01)
     finally:
         ex.close()
+
+
+def test_a_less_accurate_cost_tie_on_the_step_line_is_drawn_hollow_over_it():
+    """Review r22 06-8: at divide = 1, N=2 costs what perspective-correct costs and sits on the
+    front's vertical step; filled grey under the vermillion line it read as on the front."""
+    rows = [
+        {"variant": "affine", "cycles": 1.0, "error": 200.0},
+        {"variant": "N=4", "cycles": 3.5, "error": 15.0},
+        {"variant": "N=2", "cycles": 6.0, "error": 6.0},
+        {"variant": "perspective", "cycles": 6.0, "error": 0.0},
+    ]
+    for hollow in (True, False):
+        fig, ax = plt.subplots()
+        art = plot_pareto(ax, rows, "cycles", hollow_on_line=hollow)
+        tie, cheap = art.points["N=2"], art.points["affine"]
+        assert "N=2" not in [r["variant"] for r in art.front]
+        if hollow:
+            assert tie.get_markerfacecolor() == "white"
+            assert tie.get_zorder() > art.front_line.get_zorder()
+        else:
+            assert tie.get_markerfacecolor() == tie.get_color()
+        assert cheap.get_markerfacecolor() == cheap.get_color()  # on the front: filled
+        plt.close(fig)

@@ -35,6 +35,7 @@ class ParetoArtists:
     short: object = None
     xlim: tuple | None = None  # fixed cost limits (None: each update fits its costs)
     spreader: object = None  # places the labels again at each draw (_LabelSpreader)
+    hollow_on_line: bool = False  # off-front points on the front line drawn hollow over it
 
 
 def shown_y(row, y: str, art) -> float:
@@ -49,8 +50,8 @@ def error_floor(rows, y: str = "error") -> float:
 
 
 def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel: str = "",
-                title: str = "", short=None, logx: bool = True,
-                xlim: tuple | None = None) -> ParetoArtists:  # fmt: skip
+                title: str = "", short=None, logx: bool = True, xlim: tuple | None = None,
+                hollow_on_line: bool = False) -> ParetoArtists:  # fmt: skip
     """Draw ``rows`` as error ``y`` against cost ``x`` with their Pareto front.
 
     The point labels and "0 (exact)" are the style's "small" size (15 pt in the classroom
@@ -71,6 +72,9 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
         The cost axis' limits at every update (e.g. :func:`cost_limits` of every cost a
         widget can show, so that its layout and ticks never change); default: fitted to the
         costs of each update.
+    hollow_on_line : bool
+        Draw an off-front point that the front's step line runs through (a cost tie that is
+        less accurate) hollow, over the line, so that it does not read as on the front.
 
     Returns
     -------
@@ -93,7 +97,8 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
     ax.axhline(floor, color="gray", ls="--", lw=1)
     exact = ax.text(0.01, floor, " 0 (exact)", transform=ax.get_yaxis_transform(),
                     va="bottom", fontsize="small", color="gray")  # fmt: skip
-    art = ParetoArtists(points, line, labels, floor, [], short, xlim)
+    art = ParetoArtists(points, line, labels, floor, [], short, xlim,
+                        hollow_on_line=hollow_on_line)  # fmt: skip
     art.spreader = ax.add_artist(_LabelSpreader([labels[r["variant"]] for r in rows], [exact]))
     ax.xaxis.set_minor_formatter(NullFormatter())  # no crowded minor tick labels
     floor_ticks(ax, floor)
@@ -169,6 +174,16 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
         p.set_color(COLORS["outside"] if front_member else COLORS["edge"])
         p.set_alpha(1.0 if front_member else 0.45)
         p.set_zorder(3 if front_member else 2)  # a front point is never overprinted in grey
+        p.set_markerfacecolor(None)  # (back to the colour's, after a hollow one below)
+        p.set_markeredgecolor(None)
+        if art.hollow_on_line and not front_member and _on_step_line(r[x], yy, front, x, y, art):
+            # an off-front point the front's step line runs through (a cost tie that is less
+            # accurate: N=2 at divide 1) read as on the front: drawn over the line, hollow,
+            # its ring the grey of a translucent off-front point (review r22, 06-8)
+            p.set(alpha=1.0, zorder=3.5, markerfacecolor="white", markeredgecolor=OFF_RING,
+                  markeredgewidth=2.5)  # fmt: skip
+        else:
+            p.set_markeredgewidth(None)
         label = art.labels[r["variant"]]
         label.xy = (r[x], yy)
         label.set_alpha(1.0 if front_member else 0.6)
@@ -189,6 +204,24 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
         spread_labels(ax, [art.labels[r["variant"]] for r in rows])
     art.front = front
     return front
+
+
+#: The ring of an off-front point drawn hollow over the front line: the grey a 0.45-alpha
+#: black marker shows on white.
+OFF_RING = "#8c8c8c"
+
+
+def _on_step_line(px: float, py: float, front, x: str, y: str, art) -> bool:
+    """Whether the point (``px``, ``py``) lies on the front's step line (drawn
+    ``where="post"``: across at each front point's error, then down at the next one's cost)."""
+    xs = [r[x] for r in front]
+    ys = [shown_y(r, y, art) for r in front]
+    for (x0, y0), (x1, y1) in zip(zip(xs, ys), zip(xs[1:], ys[1:])):
+        across = np.isclose(py, y0) and x0 <= px <= x1
+        down = np.isclose(px, x1) and min(y0, y1) <= py <= max(y0, y1)
+        if across or down:
+            return True
+    return False
 
 
 def cost_limits(costs, *, log: bool = True) -> tuple[float, float]:

@@ -132,8 +132,11 @@ class DivideCostExplorer(Shown):
         #: the cost axis' limits at every price: its ticks, and so the layout, never change
         #: (a layout solved at divide 1, whose axis ends near 15, cut "10²" off at 30: r11)
         prices = divide_positions(divide)
-        self.xlim = cost_limits([r["cycles"] for p in (prices[0], prices[-1])
-                                 for r in priced(self.rows, p)])  # fmt: skip
+        lo, hi = cost_limits([r["cycles"] for p in (prices[0], prices[-1])
+                              for r in priced(self.rows, p)])  # fmt: skip
+        # half as much room again on the right: at the top price the dearest point's label
+        # ("perspective") ended on the right spine (review r22, 06-8)
+        self.xlim = (lo, hi * 1.5)
         with style_context(style):
             self._new_figure()
             self._plot()
@@ -199,7 +202,7 @@ class DivideCostExplorer(Shown):
         self.art = plot_pareto(
             self.ax, priced(self.rows, self.divide.value), "cycles", y=self._ykey,
             xlabel="cycles per pixel (op-count model)", ylabel=f"{self.error.value} (texels)",
-            short=short_name, xlim=self.xlim,
+            short=short_name, xlim=self.xlim, hollow_on_line=True,
         )  # fmt: skip
         # labels at 1-2-5 as lesson 06's own charts: a decade apart, only 10 and 100 were
         # (and 10⁰, 10¹, 10² on the cost axis: r11)
