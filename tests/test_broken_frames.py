@@ -1272,3 +1272,42 @@ def test_a_pixel_the_sliver_misses_is_told_how_far_its_square_reaches():
                      beyond) or "touches it at a corner" in beyond, beyond  # fmt: skip
     thin = next(r for r in ex.broken_frame(6).frame.history(14, 10).records if r.triangle == 2)
     assert abs(bf._reach(ex.broken_frame(6).frame, thin) - 0.5 * 1.25 / np.hypot(1, 0.25)) < 1e-3
+
+
+@pytest.mark.parametrize("number", [1, 7])
+def test_history_legend_covers_no_tile_or_marker(number):
+    """Review r21 D1: at frames 1 and 7 the rejected nearer fragment (the mark of 'depth
+    function', the highest depth) lay under the legend, which had room for two rows and had
+    three. At the inspector's figure size, after a draw, no legend overlaps a tile or a
+    buffer marker at any changed pixel (every third), in either frame of the pair."""
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_history, use_style
+
+    use_style("classroom")
+    broken = ex.broken_frame(number)
+    fig = plt.figure(figsize=(4.6, 3.9), dpi=96)  # as FrameInspector's history figure
+    ax = fig.add_axes((0.26, 0.24, 0.71, 0.66))
+    covered = []
+    try:
+        for frame in (broken.frame, broken.intended):
+            rows, cols = np.nonzero((frame.color != broken.intended.color).any(axis=2)
+                                    | (broken.frame.color != frame.color).any(axis=2))  # fmt: skip
+            pixels = sorted(zip(rows.tolist(), cols.tolist()))
+            changed = [p for p in pixels if broken.frame.history(*p).records][::3]
+            assert changed
+            for row, col in changed:
+                ax.clear()
+                plot_history(ax, frame.history(row, col))
+                fig.canvas.draw()
+                box = ax.get_legend().get_window_extent()
+                tiles = [p for p in ax.patches if p.get_width() == 0.7]  # the depth tiles
+                hit = [p for p in tiles if p.get_window_extent().overlaps(box)]
+                for line in ax.lines:
+                    xy = ax.transData.transform(np.c_[line.get_xdata(), line.get_ydata()])
+                    hit += [tuple(q) for q in xy if np.isfinite(q).all() and box.contains(*q)]
+                if hit:
+                    covered.append((row, col))
+    finally:
+        plt.close(fig)
+    assert not covered, f"frame {number}: the legend covers a tile or marker at {covered[:5]}"

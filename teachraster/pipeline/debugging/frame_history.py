@@ -709,8 +709,10 @@ def draw_history(ax, h: PixelHistory):
     every = [v for v in every if np.isfinite(v)]
     lo, hi = (min(every), max(every)) if every else (0.0, 1.0)
     mid, span = (lo + hi) / 2, max(hi - lo, MIN_DEPTH_SPAN)
-    # Room above the depths for the legend, two rows across the top: it never covers a
-    # tile (a legend placed "best" sat on the Hi-Z tile, the highest depth).
+    # Room above the depths for the legend, two rows across the top; with three rows (a
+    # rejected fragment: five entries) :func:`_make_room` raises the top after measuring the
+    # legend, so that it never covers a tile (a legend placed "best" sat on the Hi-Z tile,
+    # and a three-row one on the rejected nearer fragment, the highest depth).
     bottom, top = mid - 0.85 * span, mid + 1.3 * span
     tile = span * 0.05
     foot = bottom + 0.12 * span  # where a record without a fragment is marked
@@ -743,7 +745,8 @@ def draw_history(ax, h: PixelHistory):
     ax.set_xlabel("triangle and sample" if h.n_samples > 1 else "triangle, in drawing order")
     ax.set_ylabel("depth (smaller ↓)")
     ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
-    artists += _draw_colours(ax, h, x, (bottom, top))
+    colours = _draw_colours(ax, h, x, (bottom, top))
+    artists += colours
     if not n:  # an empty strip with a depth axis would look like a history that lost its rows
         artists.append(ax.text(0.5, 0.5, "no triangle reaches this pixel", ha="center",
                                va="center", transform=ax.transAxes, fontsize="small"))  # fmt: skip
@@ -756,11 +759,44 @@ def draw_history(ax, h: PixelHistory):
         order = first + [i for i in range(len(shown)) if i not in first]
         handles, labels = zip(*(shown[i] for i in order))
         depth_part = (top - bottom) / (ax.get_ylim()[1] - bottom)
-        artists.append(ax.legend(handles, labels, fontsize="x-small", loc="upper center",
-                                 ncols=2, bbox_to_anchor=(0, 0, 1, depth_part),
-                                 framealpha=0.85, columnspacing=0.8, handlelength=1.0,
-                                 handletextpad=0.4, borderaxespad=0.2))  # fmt: skip
+        legend = ax.legend(handles, labels, fontsize="x-small", loc="upper center", ncols=2,
+                           bbox_to_anchor=(0, 0, 1, depth_part), framealpha=0.85,
+                           columnspacing=0.8, handlelength=1.0, handletextpad=0.4,
+                           borderaxespad=0.2)  # fmt: skip
+        artists.append(legend)
+        highest = max(every + list(depth)) + tile / 2
+        needed = _make_room(ax, legend, highest, bottom, top)
+        if needed > top:  # the depths part grows upwards; the colours sit on its new top
+            for artist in colours:
+                artist.remove()
+                artists.remove(artist)
+            top = needed
+            ax.set_ylim(bottom, top)
+            ax.set_yticks(*depth_ticks(bottom, top))
+            artists += _draw_colours(ax, h, x, (bottom, top))
     return artists
+
+
+def _make_room(ax, legend, highest: float, bottom: float, top: float) -> float:
+    """The top of the depth part at which ``legend`` (anchored to that top) lies wholly
+    above ``highest`` (the highest tile or buffer marker), measured on the figure's
+    renderer: its height in pixels is fixed, so the depth part's share of the Axes (the
+    colours above keep their share) sets how far the top must rise. ``top`` if it already
+    does, or if the figure has no renderer to measure with."""
+    try:
+        renderer = ax.figure._get_renderer()
+    except AttributeError:  # (not a matplotlib figure we know how to measure)
+        return top
+    box = legend.get_window_extent(renderer)
+    axes = ax.get_window_extent(renderer)
+    if not axes.height:
+        return top
+    share = (top - bottom) / (ax.get_ylim()[1] - bottom)  # the depth part's share
+    margin = 6.0  # pixels: a buffer marker's radius and a small gap
+    below = (box.y0 - axes.y0 - margin) / axes.height / share  # of the depth part
+    if below <= 0.2:  # (an Axes too small to hold both: keep the two-row room)
+        return top
+    return max(top, bottom + (highest - bottom) / below)
 
 
 def _record_labels(h: PixelHistory) -> list[str]:
