@@ -1311,3 +1311,31 @@ def test_history_legend_covers_no_tile_or_marker(number):
     finally:
         plt.close(fig)
     assert not covered, f"frame {number}: the legend covers a tile or marker at {covered[:5]}"
+
+
+def test_frames_7_to_9_have_no_free_wrong_cause(monkeypatch):
+    """r21 D2: generic readers written for frames 1 to 6 passed frames 7, 8 and 9 by trial,
+    one wrong cause each, free (two were). From frame 7 on every wrong cause waits 30 s more
+    for each distinct one; a reader returning the right cause never waits; frames 1 to 6
+    keep two free."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setattr(tries, "_WRONG", {})
+    monkeypatch.setattr(tries, "SETTING", "25")
+    assert [bf.frame_exercise(n).free_causes for n in range(1, 10)] == [2] * 6 + [0] * 3
+    for number in (7, 8, 9):
+        name = f"broken_frame_{number}"
+        wrong = next(c for c in ex.CAUSES if c != ANSWERS[number])
+        pixel = sol.BROKEN_FRAMES[number][1]  # a changed pixel: the cause is judged there
+        report = ex.check(name, lambda b, c=wrong, p=pixel: (c, p, 0.5))
+        assert not report.passed and waits[-1:] == [30.0], (number, waits)
+        assert "1 different wrong cause for" in report.tries and "none is free" in report.tries
+        before = len(waits)
+        assert (
+            ex.check(name, sol.diagnosis(number)).passed and len(waits) == before
+        )  # the right one: no wait
+    report = ex.check("broken_frame_1", lambda b: ("sliver", (24, 28), 0.5))
+    assert report.tries is None and len(waits) == 3  # frames 1 to 6: two still free

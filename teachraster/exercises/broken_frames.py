@@ -68,6 +68,7 @@ from .exercise import Exercise, Mistake, PackageAnswer
 from .interrupt import transparent
 from .report import issued
 from .running import WrongAnswerType
+from .tries import FREE_CAUSES
 
 #: Frame size: small, so that every pixel is easy to pick.
 W, H = 64, 48
@@ -1116,6 +1117,11 @@ _SECRETS = tuple(
 #: r12 11-2: ten causes × 40 generic history readers passed all six frames, 2,100 checks in
 #: 51 s). A diagnosis needs a handful; 25 leaves room for a student who tries pixel by pixel.
 TRIES = 25
+#: The first frame with no free wrong cause (:mod:`.tries`; frames before it have
+#: :data:`.tries.FREE_CAUSES`): frames 7 to 9 come after six diagnoses (r21 D2: generic
+#: readers written for frames 1 to 6 passed 7, 8 and 9 by trial, one wrong cause each, at no
+#: cost). A right cause never waits.
+LATER = 7
 
 
 def frame_exercise(number: int) -> Exercise:
@@ -1123,7 +1129,7 @@ def frame_exercise(number: int) -> Exercise:
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
         DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE, private=_SECRETS,
-        tries=TRIES,
+        tries=TRIES, free_causes=FREE_CAUSES if number < LATER else 0,
     )  # fmt: skip
 
 
