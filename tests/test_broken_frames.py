@@ -938,7 +938,9 @@ def test_the_notebook_never_says_look_alikes_differ_in_cause(capsys):
     assert "ontrived" not in before, before  # r18-5: nor that frame 4 alone was contrived
     task = " ".join(cells["frame_7_task"].split())
     assert "frames 5 and 6 pixel for pixel" in " ".join(task.split()), task
-    assert "may or may not share a cause" in task, task
+    # r21 D10: said once, in the intro, for all frames; repeated at 11.7 alone it read as a nudge
+    tasks = [" ".join(v.split()) for k, v in cells.items() if k.endswith("task")]
+    assert not any("may or may not share a cause" in t for t in tasks)
 
 
 def test_the_frame_3_solution_says_the_glass_pane_is_drawn_not_stored():
@@ -1339,3 +1341,46 @@ def test_frames_7_to_9_have_no_free_wrong_cause(monkeypatch):
         )  # the right one: no wait
     report = ex.check("broken_frame_1", lambda b: ("sliver", (24, 28), 0.5))
     assert report.tries is None and len(waits) == 3  # frames 1 to 6: two still free
+
+
+def test_messages_say_what_the_redrawn_frame_changes_and_round_and_are_not_repeated():
+    """r21 D6, D8: the cube's frames were said to be redrawn "with another wall, strip and
+    depths" (the cube has neither); a wrong cause's value was quoted unrounded
+    ("0.29999237048905164"); the same ~700-character message stood twice (frame shown and
+    frame redrawn)."""
+    typed = ex.check("broken_frame_2", lambda b: ("culled winding", (24, 28), 9))
+    assert "other depths and another drawing order" in str(typed) and "wall" not in str(typed)
+    pixel = sol.BROKEN_FRAMES[3][1]
+    value = sol.READ[3](ex.broken_frame(3), *pixel)  # the frame shown's, typed in
+    pane = ex.check("broken_frame_3", lambda b: ("z-fighting", pixel, value))
+    assert "another wall and pane" in str(pane), str(pane)
+    row, col = sol.BROKEN_FRAMES[5][1]
+    report = str(
+        ex.check("broken_frame_5", lambda b: ("sliver", (row, col), (None, 0.29999237048905164)))
+    )
+    assert "0.29999237" not in report and "0.299992" in report, report
+    assert report.count("would show as") == 1 and "again" in report, report
+
+
+def test_frame_5_note_says_the_glass_writes_no_depth():
+    """r21 D7: "replaced wherever an opaque surface is drawn after it" holds because the glass
+    writes no depth."""
+    assert "writes no depth" in " ".join(bf._NOTES[5].split())
+
+
+def test_inspector_names_a_frame_by_its_key_and_offers_no_empty_nan_view():
+    """r21 D9: the title read "frame 1: the frame"; the view list offered "nan" (an empty map)
+    in an exercise with no NaN pixel."""
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
+    try:
+        assert "nan" not in w.view.options and "depth_complexity" in w.view.options
+        assert w.ax.get_title() == w.scene.value, w.ax.get_title()
+    finally:
+        w.close()
+    scene = FrameInspector("cube", backend="image")
+    try:
+        assert "nan" in scene.view.options and scene.ax.get_title().endswith(": the frame")
+    finally:
+        scene.close()
