@@ -1384,3 +1384,43 @@ def test_inspector_names_a_frame_by_its_key_and_offers_no_empty_nan_view():
         assert "nan" in scene.view.options and scene.ax.get_title().endswith(": the frame")
     finally:
         scene.close()
+
+
+def test_a_pairs_two_tables_have_the_same_columns_and_wrap_alike():
+    """r21 D4: the outcome column's width in each table decided which rows wrapped: at frame 1
+    (24, 32) the broken table broke "9 not_covered … / outside E21 by 2.0690 px", the intended
+    one did not. Laid out ``like`` each other, the header is the same and a triangle's row
+    wraps in both or in neither; the inspector does so."""
+    from teachraster.pipeline.debugging.frame_history import history_table
+    from teachraster.widgets import FrameInspector
+
+    broken = ex.broken_frame(1)
+    for row, col in [(24, 32), (24, 28), (30, 20)]:
+        a, b = broken.frame.history(row, col), broken.intended.history(row, col)
+        one = history_table(a, narrow=True, like=b).splitlines()
+        two = history_table(b, narrow=True, like=a).splitlines()
+        assert one[2] == two[2], (one[2], two[2])  # the column header
+
+        def wrapped(lines):
+            rows = {}
+            for i, line in enumerate(lines[3:], 3):
+                if line[:3].strip().isdigit():
+                    nxt = lines[i + 1] if i + 1 < len(lines) else ""
+                    rows[int(line[:3])] = nxt.startswith(" " * 6) and not nxt[6:7].isspace()
+                if line.startswith("colour buffer"):
+                    break
+            return rows
+
+        first, second = wrapped(one), wrapped(two)
+        for tri in set(first) & set(second):
+            if broken.frame.history(row, col).records and first[tri] != second[tri]:
+                why = [r for r in a.records if r.triangle == tri] + [
+                    r for r in b.records if r.triangle == tri]  # fmt: skip
+                assert len({r.outcome for r in why}) > 1, (row, col, tri, one, two)
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image",
+                       row=24, col=32)  # fmt: skip
+    try:
+        assert w.table.value.count("outside E21 by 2.0690 px") == 2
+        assert w.table.value.count("tri  outcome                   depth") == 2, w.table.value
+    finally:
+        w.close()
