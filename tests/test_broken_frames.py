@@ -1424,3 +1424,21 @@ def test_a_pairs_two_tables_have_the_same_columns_and_wrap_alike():
         assert w.table.value.count("tri  outcome                   depth") == 2, w.table.value
     finally:
         w.close()
+
+
+def test_the_pair_view_puts_the_tables_under_the_picture():
+    """r21 D3: the two tables stood below both figures, ~700 px under the picture clicked in a
+    narrow column: with pairs they come right after the picture, the history chart after them
+    (without pairs, picture and chart side by side as before)."""
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
+    try:
+        parts = list(w.widget.children)
+        holding = [next(i for i, c in enumerate(parts) if c is x or x in getattr(c, "children", ()))
+                   for x in (w.frame_widget, w.table, w.hist_display.widget)]  # fmt: skip
+        assert holding == sorted(holding) and len(set(holding)) == 3, holding
+    finally:
+        w.close()
+    text = " ".join(_cells()["inspector_text"].split())
+    assert "right under the picture" in text, text

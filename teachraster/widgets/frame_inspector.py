@@ -367,10 +367,13 @@ class FrameInspector(Holdable):
         if not self.frames:
             rows.append(control_row([self.samples, self.depth_test, self.glass]))
         controls = widgets.VBox(rows)
-        figures = picture_row([self.frame_widget, self.hist_display.widget])
-        self.widget = widgets.VBox(
-            [title, controls, control_row([self.row, self.col]), figures, self.table]
-        )
+        if self.pairs:  # r21 D3: the two tables right under the picture, then the chart
+            # (below both figures, the tables stood ~700 px under the picture clicked)
+            figures = [picture_row([self.frame_widget]), self.table,
+                       picture_row([self.hist_display.widget])]  # fmt: skip
+        else:
+            figures = [picture_row([self.frame_widget, self.hist_display.widget]), self.table]
+        self.widget = widgets.VBox([title, controls, control_row([self.row, self.col]), *figures])
 
     # -- state ---------------------------------------------------------------------------
     def _render(self) -> None:
