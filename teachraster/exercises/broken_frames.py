@@ -68,11 +68,12 @@ from .exercise import Exercise, Mistake, PackageAnswer
 from .interrupt import transparent
 from .report import issued
 from .running import WrongAnswerType
+from .tries import FREE_CAUSES
 
 #: Frame size: small, so that every pixel is easy to pick.
 W, H = 64, 48
 
-#: The causes a diagnosis may name (six occur, one of them in two frames; four occur in none),
+#: The causes a diagnosis may name (six occur, three of them in two frames; four occur in none),
 #: in alphabetical order: every listing of them (the notebook's, a wrong form's message)
 #: follows this order, never the frames' (r8: listed in the frames' order, the causes were the
 #: answer key).
@@ -507,17 +508,20 @@ _NOTES = {
     4: "Frame 4 is contrived so that the pane vanishes into the wall: its straight colour is\n"
     "exactly its alpha times the wall's. The same mistake usually shows as a pane too bright.",
     5: "Frame 5 is not contrived: glass drawn before what lies behind it is replaced wherever an\n"
-    "opaque surface is drawn after it; transparent geometry is drawn last, back to front.",
+    "opaque surface is drawn after it, since the glass writes no depth (were it written, the\n"
+    "surface behind would fail the depth test and the glass would show over the clear colour\n"
+    "instead); transparent geometry is drawn last, back to front.",
     6: "Frame 6 is contrived so that the strip is missing everywhere: the thin triangle lies\n"
     "between the rows of pixel centres along its whole length. A sliver usually shows as a\n"
     "broken, dotted line, where it covers a centre now and then.",
     7: "Frame 7 is not contrived: with the depths mapped the other way round, glass in front of\n"
     "a wall drawn first fails the test wherever the wall is behind it.",
-    9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
-    "wall is drawn; the usual cure draws transparent geometry last, back to front.",
     8: "Frame 8 is contrived so that the strip is missing everywhere: the thin triangle runs\n"
     "along the strip's top edge, between the rows of pixel centres. A sliver usually shows as\n"
     "a broken, dotted line, where it covers a centre now and then.",
+    9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
+    "wall is drawn (the glass writes no depth); the usual cure draws transparent geometry\n"
+    "last, back to front.",
 }
 
 
@@ -766,6 +770,8 @@ class _Number(int):
     b = None
     right = None
     nested = False  # the case of a check run inside the student's own function
+    shown = None  # the redrawn case's: the frame shown's case (its words are not repeated)
+    told = None  # the frame shown's case: the (cause, row, col) told it is not the cause
 
     @classmethod
     def of(cls, b: BrokenFrame, nested: bool = False) -> _Number:
@@ -800,9 +806,10 @@ def _cases(number: int):
     def cases():
         nested = threading.get_ident() in _STUDENT_THREADS
         shown, redrawn = broken_frame(number), _redrawn(number)
-        return [("the frame shown", (shown,), _Number.of(shown, nested)),
-                ("the frame redrawn", (redrawn,),
-                 _Number.of(redrawn, nested))]  # fmt: skip
+        first, second = _Number.of(shown, nested), _Number.of(redrawn, nested)
+        second.shown = first  # r21 D8: a wrong cause told twice in full read as two mistakes
+        return [("the frame shown", (shown,), first),
+                ("the frame redrawn", (redrawn,), second)]  # fmt: skip
 
     return cases
 
@@ -868,7 +875,18 @@ def _shown(cause: str, value) -> str:
         return f"{round(value, 6)}"
     if isinstance(value, tuple) and all(isinstance(v, float) for v in value):
         return str(tuple(round(v, 6) for v in value))
-    return short(value)  # the evidence of a cause that is not the frame's, as given
+    # the evidence of a cause that is not the frame's, as given, its numbers to the digits
+    # the history prints (r21 D8: "(None, 0.29999237048905164)")
+    return short(_rounded(value))
+
+
+def _rounded(value):
+    """``value`` with every float in it (in tuples and lists too) rounded to 6 decimals."""
+    if isinstance(value, float | np.floating) and np.isfinite(value):
+        return round(float(value), 6)
+    if isinstance(value, tuple | list):
+        return type(value)(_rounded(v) for v in value)
+    return value
 
 
 def _explain(args, number, got) -> str:
@@ -927,6 +945,12 @@ def _cause_words(args, number, got) -> str:
     loop over the ten causes which to keep): the stated cause does not explain them, what it
     would show, and where to look; never which other cause it is or is not."""
     cause, (row, col), _ = got
+    if number.shown is not None and number.shown.told == (cause, row, col):
+        return (f"{cause!r} at ({row}, {col}) again, and it is not this frame's cause either "
+                "(the check runs your function on the frame shown and on one redrawn: the "
+                "words above hold for both)")  # fmt: skip
+    if number.shown is None:
+        number.told = (cause, row, col)
     # r14: the instruction first, the stated cause's own mark last (the eye needs the first)
     words = (f"{cause!r} is not what the two histories of ({row}, {col}) show: find the first "
              "stage where they part, the cause is what acts there. Read "
@@ -1008,11 +1032,21 @@ def _triangle_words(number, got) -> str:
     return f": triangle {value} is {mine[0].outcome} here, but {drawn}"
 
 
+def _other_look(number: int) -> str:
+    """What the redrawn frame ``number`` changes (:class:`_Look`), in words: the cube has no
+    wall or strip (r21 D6)."""
+    symptom = _SPECS[number - 1][0]
+    if "cube" in symptom:
+        return "other depths and another drawing order (other triangle numbers)"
+    thing = "pane" if "pane" in symptom else "strip"
+    return f"another wall and {thing}: other colours and depths"
+
+
 def _copied_words(args, number, got) -> str:
     cause, (row, col), _ = got
     return (
         f"your value is the one frame {int(number)} shows at ({row}, {col}); this frame is "
-        "the same mistake redrawn with another wall, strip and depths, so its evidence "
+        f"the same mistake redrawn with {_other_look(int(number))}, so its evidence "
         "differs: read it inside your function from the frame it is given (b.frame."
         f"history({row}, {col}), b.intended.history({row}, {col})), never typed in"
     )
@@ -1116,6 +1150,11 @@ _SECRETS = tuple(
 #: r12 11-2: ten causes × 40 generic history readers passed all six frames, 2,100 checks in
 #: 51 s). A diagnosis needs a handful; 25 leaves room for a student who tries pixel by pixel.
 TRIES = 25
+#: The first frame with no free wrong cause (:mod:`.tries`; frames before it have
+#: :data:`.tries.FREE_CAUSES`): frames 7 to 9 come after six diagnoses (r21 D2: generic
+#: readers written for frames 1 to 6 passed 7, 8 and 9 by trial, one wrong cause each, at no
+#: cost). A right cause never waits.
+LATER = 7
 
 
 def frame_exercise(number: int) -> Exercise:
@@ -1123,7 +1162,7 @@ def frame_exercise(number: int) -> Exercise:
     return Exercise(
         f"broken_frame_{number}", _cases(number), as_diagnosis, _same, _explain, _rule,
         DIAGNOSIS_MISTAKES, draw=_draw, call=_call, answers=_PRIVATE, private=_SECRETS,
-        tries=TRIES,
+        tries=TRIES, free_causes=FREE_CAUSES if number < LATER else 0,
     )  # fmt: skip
 
 

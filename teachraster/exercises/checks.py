@@ -90,7 +90,7 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
     note = None if report.not_implemented else tries.counted(name, spec.tries, report.passed)
     if not report.not_implemented and not nested():  # r14 11-4: a wait per wrong cause, too
         named = {f.got[0] for f in report.failures if f.kind == "cause" and f.got}
-        causes = tries.wrong_causes(name, spec.tries, named, report.passed)
+        causes = tries.wrong_causes(name, spec.tries, named, report.passed, spec.free_causes)
         note = causes if note is None else (note if causes is None else f"{note}. {causes}")
     if note is not None:
         report = replace(report, tries=note)

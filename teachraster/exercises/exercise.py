@@ -195,6 +195,10 @@ class Exercise:
     tries : int, optional
         Failing checks of this task in one kernel before each further check waits (exercise
         11, whose verdict a blind loop could query: :mod:`.tries`); None: no limit.
+    free_causes : int
+        Distinct wrong causes of this task in one kernel that cost no wait (with
+        :attr:`tries`; :data:`.tries.FREE_CAUSES` by default, none on exercise 11's frames 7
+        to 9: r21 D2).
     reference : sequence of str
         Further checker modules whose functions compute this exercise's expected answers
         (``covers``' :mod:`.coverage`), watched with the module of :attr:`cases`: a student's
@@ -221,6 +225,7 @@ class Exercise:
     example: int = 0
     private: Sequence[tuple[str, object, str]] = ()
     tries: int | None = None
+    free_causes: int = 2
     reference: Sequence[str] = ()
 
     def all_mistakes(self) -> list[Mistake]:

@@ -30,7 +30,10 @@ generic readers, told "not the frame's cause" and moving to the next, passed fou
 waits, once judged and before it answers, :data:`CAUSE_STEP` seconds for each distinct wrong
 cause past that number, at most :data:`CAUSE_MOST` (a blind loop over the ten causes then
 pays minutes a frame; a check that names the right cause never waits for it). A pass starts
-this count again too, and the same setting switches it off.
+this count again too, and the same setting switches it off. An exercise may allow fewer
+(:attr:`~.exercise.Exercise.free_causes`): exercise 11's frames 7 to 9 come after six
+diagnoses, and generic readers written for frames 1 to 6 passed them by trial with one wrong
+cause each (r21 D2), so there every wrong cause waits.
 """
 
 from __future__ import annotations
@@ -106,9 +109,12 @@ def counted(name: str, default: int | None, passed: bool) -> str | None:
     )
 
 
-def wrong_causes(name: str, default: int | None, causes, passed: bool) -> str | None:
+def wrong_causes(name: str, default: int | None, causes, passed: bool,
+                 free: int = FREE_CAUSES) -> str | None:  # fmt: skip
     """Note the wrong ``causes`` one check of task ``name`` was given, and wait past
-    :data:`FREE_CAUSES` distinct ones (see the module's note); the report's note, if any."""
+    ``free`` distinct ones (:data:`FREE_CAUSES`, or the exercise's
+    :attr:`~.exercise.Exercise.free_causes`: see the module's note); the report's note, if
+    any."""
     if allowed(default) is None:
         return None
     with _LOCK:
@@ -116,13 +122,14 @@ def wrong_causes(name: str, default: int | None, causes, passed: bool) -> str | 
         if passed:
             seen.clear()
         seen.update(causes)
-        past = len(seen) - FREE_CAUSES
+        past = len(seen) - free
     if not causes or past <= 0:
         return None
     seconds = min(CAUSE_MOST, CAUSE_STEP * past)
     _sleep(seconds)
     return (
-        f"{len(seen)} different wrong causes for {name} in this kernel: the cause is found by "
+        f"{len(seen)} different wrong cause{'s' if len(seen) > 1 else ''} for {name} in this "
+        f"kernel{'' if free else ' (none is free on this frame)'}: the cause is found by "
         "reading the two histories of one changed pixel, not by trying the names. This check "
         f"waited {seconds:g} s, and each further wrong cause waits {CAUSE_STEP:g} s more (at "
         f"most {CAUSE_MOST:g} s), until one passes"

@@ -42,6 +42,15 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 #: The views the chooser offers: the shaded image, then every overlay.
 VIEWS = ("image", *KINDS)
 
+
+def _views(frames: dict, view: str) -> list:
+    """The views offered: all of :data:`VIEWS`, but with frames handed in and none holding a
+    NaN pixel, not "nan" (r21 D9: an empty map offered in exercise 11), unless asked for."""
+    if not frames or view == "nan" or any(f.overlay("nan").any() for f in frames.values()):
+        return list(VIEWS)
+    return [v for v in VIEWS if v != "nan"]
+
+
 #: The largest the frame is drawn, width and height in inches (a 4:3 frame: 3 × 2.25).
 FRAME_BOX = (3.0, 3.1)
 #: The frame figure's margins in inches: left (row labels and "row i"), top (column labels,
@@ -302,7 +311,8 @@ class FrameInspector(Holdable):
         menu, short = widgets.Layout(width="260px"), widgets.Layout(width="150px")
         self.scene = widgets.Dropdown(options=choices, value=scene, description="scene",
                                       layout=fit_width(menu))  # fmt: skip
-        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="view",
+        self.view = widgets.Dropdown(options=_views(self.frames, view), value=view,
+                                     description="view",
                                      layout=menu)  # fmt: skip
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples",
                                         layout=short)  # fmt: skip
@@ -357,10 +367,13 @@ class FrameInspector(Holdable):
         if not self.frames:
             rows.append(control_row([self.samples, self.depth_test, self.glass]))
         controls = widgets.VBox(rows)
-        figures = picture_row([self.frame_widget, self.hist_display.widget])
-        self.widget = widgets.VBox(
-            [title, controls, control_row([self.row, self.col]), figures, self.table]
-        )
+        if self.pairs:  # r21 D3: the two tables right under the picture, then the chart
+            # (below both figures, the tables stood ~700 px under the picture clicked)
+            figures = [picture_row([self.frame_widget]), self.table,
+                       picture_row([self.hist_display.widget])]  # fmt: skip
+        else:
+            figures = [picture_row([self.frame_widget, self.hist_display.widget]), self.table]
+        self.widget = widgets.VBox([title, controls, control_row([self.row, self.col]), *figures])
 
     # -- state ---------------------------------------------------------------------------
     def _render(self) -> None:
@@ -377,15 +390,16 @@ class FrameInspector(Holdable):
     def _show_history(self) -> None:
         row, col = self.row.value, self.col.value
         self.history = self.frame.history(row, col)
-        text = history_table(self.history, narrow=True)
-        if self.view.value == "quad_overshading":  # who launched this quad's lanes
-            text += "\n\n" + quad_text(self.frame, row, col)
         pair = self.pairs.get(self.scene.value) if self.beside.value else None
         self.pair_history = None if pair is None else self.frames[pair].history(row, col)
+        # r21 D4: the pair's two tables with the same columns, so their rows line up
+        text = history_table(self.history, narrow=True, like=self.pair_history)
+        if self.view.value == "quad_overshading":  # who launched this quad's lanes
+            text += "\n\n" + quad_text(self.frame, row, col)
         if self.pair_history is None:
             self.table.value = _pre(text)
             return
-        beside = history_table(self.pair_history, narrow=True)
+        beside = history_table(self.pair_history, narrow=True, like=self.history)
         self.table.value = paired_tables(((self.scene.value, text), (pair, beside)))
 
     def _bar_room(self) -> float:
@@ -431,7 +445,9 @@ class FrameInspector(Holdable):
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
             glass = " (glass)" if self.glass.value else ""  # what is drawn (review r8, 11)
-            ax.set_title(f"{self.scene.value}: the frame{glass}", fontsize="small")
+            # r21 D9: a frame handed in is named by its key ("frame 1"), a scene is not
+            name = self.scene.value if self.frames else f"{self.scene.value}: the frame"
+            ax.set_title(f"{name}{glass}", fontsize="small")
         else:
             plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
             fit_bar_label(self.cax)

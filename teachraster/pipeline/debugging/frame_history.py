@@ -544,37 +544,27 @@ def _tuple(c) -> tuple:
     return tuple(float(v) for v in c)
 
 
-def history_table(h: PixelHistory, narrow: bool = False) -> str:
+def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
     """The readable table ``print(h)`` shows. ``narrow``: at most :data:`NARROW` characters a
     line, for a widget's column at a projector's 12 px (review r18, exercise 11: at 0.75em,
     9.75 px, two tables fitted a 592-px column side by side, too small to read): the header
     on two lines, the piece and sample columns only where they say something (a clipped
-    piece, more than one sample), each colour line's "after" on a line of its own."""
+    piece, more than one sample), each colour line's "after" on a line of its own. ``like``:
+    the other history of a pair (or None), whose rows set the columns too, so that the two
+    tables have the same columns and wrap their rows alike (review r21 D4: the outcome
+    column's width in one table decided which of its rows wrapped)."""
     shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
              f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
     way = f"{len({r.triangle for r in h.records})} triangle(s) on the way; shows {shows}"
     # the piece and the sample columns, unless narrow and they repeat the triangle, say nothing
-    ids = not narrow or h.n_samples > 1 or any(r.piece != r.triangle for r in h.records)
+    both = [h] if like is None else [h, like]
+    ids = not narrow or any(g.n_samples > 1 or any(r.piece != r.triangle for r in g.records)
+                            for g in both)  # fmt: skip
     lines = [f"{where}\n{way}" if narrow else f"{where} {way}"]
-    # Blending, a later fragment that passes is blended over this one, which is not hidden:
-    # its colour is in the result (the colour lines say how much).
-    later = "under" if h.blend is not None and h.blend.mode is not None else "hidden by"
-    rows = []
-    for r in h.records:
-        outcome = r.outcome
-        if r.outcome == "passed":
-            outcome += " (shown)" if r.shown else f" ({later} {r.hidden_by})"
-        if r.outcome == "not_covered":
-            why = reason_text(r)
-        elif r.value:
-            why = "(" + ", ".join(f"{v:.4g}" for v in r.value) + ")"
-        elif r.outcome == "passed":  # shaded, but the scene gives it nothing to write
-            why = "(no attributes: the scene has none)"
-        else:
-            why = ""
-        rows.append((r, outcome, why))
-    wide = 22 if not narrow else max([len("outcome"), *(len(o) for _, o, _ in rows)])
+    rows = list(zip(h.records, _outcomes(h), map(_why, h.records)))
+    outcomes = [o for g in both for o in _outcomes(g)]
+    wide = 22 if not narrow else max([len("outcome"), *map(len, outcomes)])
     tri = 5 if not narrow else 3
     head = f"{'tri':>{tri}} " + (f"{'piece':>5} {'smp':>3} " if ids else "")
     lines.append(f"{head} {'outcome':<{wide}} {'depth':>9} {'before':>9} {'after':>9}  "
@@ -595,6 +585,32 @@ def history_table(h: PixelHistory, narrow: bool = False) -> str:
                      "the eye or beyond the far plane, they reach no pixel)")  # fmt: skip
     lines += colour_lines(h, narrow)
     return "\n".join(lines)
+
+
+def _outcomes(h: PixelHistory) -> list[str]:
+    """The outcome column's texts of ``h``'s records."""
+    # Blending, a later fragment that passes is blended over this one, which is not hidden:
+    # its colour is in the result (the colour lines say how much).
+    later = "under" if h.blend is not None and h.blend.mode is not None else "hidden by"
+    return [_outcome_text(r, later) for r in h.records]
+
+
+def _outcome_text(r, later: str) -> str:
+    """A record's outcome, and for a passed one whether it is shown or what covers it."""
+    if r.outcome != "passed":
+        return r.outcome
+    return r.outcome + (" (shown)" if r.shown else f" ({later} {r.hidden_by})")
+
+
+def _why(r) -> str:
+    """A record's "value / why": the reason it missed, or the value it wrote."""
+    if r.outcome == "not_covered":
+        return reason_text(r)
+    if r.value:
+        return "(" + ", ".join(f"{v:.4g}" for v in r.value) + ")"
+    if r.outcome == "passed":  # shaded, but the scene gives it nothing to write
+        return "(no attributes: the scene has none)"
+    return ""
 
 
 #: The longest line of a narrow history table (:func:`history_table`): 592 px at 12 px in a
@@ -709,8 +725,10 @@ def draw_history(ax, h: PixelHistory):
     every = [v for v in every if np.isfinite(v)]
     lo, hi = (min(every), max(every)) if every else (0.0, 1.0)
     mid, span = (lo + hi) / 2, max(hi - lo, MIN_DEPTH_SPAN)
-    # Room above the depths for the legend, two rows across the top: it never covers a
-    # tile (a legend placed "best" sat on the Hi-Z tile, the highest depth).
+    # Room above the depths for the legend, two rows across the top; with three rows (a
+    # rejected fragment: five entries) :func:`_make_room` raises the top after measuring the
+    # legend, so that it never covers a tile (a legend placed "best" sat on the Hi-Z tile,
+    # and a three-row one on the rejected nearer fragment, the highest depth).
     bottom, top = mid - 0.85 * span, mid + 1.3 * span
     tile = span * 0.05
     foot = bottom + 0.12 * span  # where a record without a fragment is marked
@@ -743,7 +761,8 @@ def draw_history(ax, h: PixelHistory):
     ax.set_xlabel("triangle and sample" if h.n_samples > 1 else "triangle, in drawing order")
     ax.set_ylabel("depth (smaller ↓)")
     ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
-    artists += _draw_colours(ax, h, x, (bottom, top))
+    colours = _draw_colours(ax, h, x, (bottom, top))
+    artists += colours
     if not n:  # an empty strip with a depth axis would look like a history that lost its rows
         artists.append(ax.text(0.5, 0.5, "no triangle reaches this pixel", ha="center",
                                va="center", transform=ax.transAxes, fontsize="small"))  # fmt: skip
@@ -756,11 +775,44 @@ def draw_history(ax, h: PixelHistory):
         order = first + [i for i in range(len(shown)) if i not in first]
         handles, labels = zip(*(shown[i] for i in order))
         depth_part = (top - bottom) / (ax.get_ylim()[1] - bottom)
-        artists.append(ax.legend(handles, labels, fontsize="x-small", loc="upper center",
-                                 ncols=2, bbox_to_anchor=(0, 0, 1, depth_part),
-                                 framealpha=0.85, columnspacing=0.8, handlelength=1.0,
-                                 handletextpad=0.4, borderaxespad=0.2))  # fmt: skip
+        legend = ax.legend(handles, labels, fontsize="x-small", loc="upper center", ncols=2,
+                           bbox_to_anchor=(0, 0, 1, depth_part), framealpha=0.85,
+                           columnspacing=0.8, handlelength=1.0, handletextpad=0.4,
+                           borderaxespad=0.2)  # fmt: skip
+        artists.append(legend)
+        highest = max(every + list(depth)) + tile / 2
+        needed = _make_room(ax, legend, highest, bottom, top)
+        if needed > top:  # the depths part grows upwards; the colours sit on its new top
+            for artist in colours:
+                artist.remove()
+                artists.remove(artist)
+            top = needed
+            ax.set_ylim(bottom, top)
+            ax.set_yticks(*depth_ticks(bottom, top))
+            artists += _draw_colours(ax, h, x, (bottom, top))
     return artists
+
+
+def _make_room(ax, legend, highest: float, bottom: float, top: float) -> float:
+    """The top of the depth part at which ``legend`` (anchored to that top) lies wholly
+    above ``highest`` (the highest tile or buffer marker), measured on the figure's
+    renderer: its height in pixels is fixed, so the depth part's share of the Axes (the
+    colours above keep their share) sets how far the top must rise. ``top`` if it already
+    does, or if the figure has no renderer to measure with."""
+    try:
+        renderer = ax.figure._get_renderer()
+    except AttributeError:  # (not a matplotlib figure we know how to measure)
+        return top
+    box = legend.get_window_extent(renderer)
+    axes = ax.get_window_extent(renderer)
+    if not axes.height:
+        return top
+    share = (top - bottom) / (ax.get_ylim()[1] - bottom)  # the depth part's share
+    margin = 6.0  # pixels: a buffer marker's radius and a small gap
+    below = (box.y0 - axes.y0 - margin) / axes.height / share  # of the depth part
+    if below <= 0.2:  # (an Axes too small to hold both: keep the two-row room)
+        return top
+    return max(top, bottom + (highest - bottom) / below)
 
 
 def _record_labels(h: PixelHistory) -> list[str]:
