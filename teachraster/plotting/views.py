@@ -235,7 +235,9 @@ class FillView:
         step = trace.step(k)  # the one resolve of this tick: artists get the Step
         k = self._step = step.index
         self.coverage.image = set_image(self.coverage.image, trace.coverage_at(k).astype(float))
-        if trace.halfplane is not None:
+        # half-planes reject pixel by pixel, tiles whole blocks too (review r22: a rejected
+        # block left no mark once passed)
+        if trace.halfplane is not None or trace.blocks is not None:
             rejected = trace.rejected_at(k)
             self.rejected = set_image(self.rejected, rejected.astype(float))
             # nothing rejected yet: skip drawing the layer at all
@@ -317,7 +319,7 @@ class FillView:
             self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
         self._trace = trace
         self._show_values(fill, trace)
-        if trace.halfplane is None:
+        if trace.halfplane is None and trace.blocks is None:
             self.rejected.set_visible(False)
         self.raster_line.width = W
         self.triangle.update(trace)
@@ -421,6 +423,8 @@ class FillView:
         entries = [None] * ValueBar.LINES if coloured else [("filled", c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
+        elif method == "tiled":  # rejected with their block, or tested in a partial one
+            entries.append(("rejected", c["rejected"], c["rejected"]))
         if method != "span":  # span tables draw no box (see show_step)
             entries.append(("bounding box", "none", c["bbox"]))
         if method == "span" and not coloured:
