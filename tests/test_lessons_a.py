@@ -158,6 +158,20 @@ def test_00_facing_and_the_two_methods():
     assert np.nanmin(ns.signed[ns.nearer]) > -1e-12 and np.nanmax(ns.signed[~ns.nearer]) < 1e-12
     # the split caption names the split height by both names (review r2 00-3)
     assert "split at y = v_mid = " in ns.span.trace.caption(4)
+    # review r22 00-2: row 1's centre y = 1.5 is on the box's top edge and is tested (closed
+    # box); the explanation (a widget: not among the globals) says so when it is
+    assert ns.box.ymin == ns.box.row0 + 0.5 == 1.5
+    assert "on the box's top edge" in "\n".join(_cells("00_tour", "code"))
+
+
+def test_00_words_r22():
+    """Review r22: cell 7's code does not give the facing answer away, w is a depth (not a
+    distance), the title promises no five minutes, the legend says y for the split height."""
+    code = "\n".join(_cells("00_tour", "code"))
+    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    assert "clockwise on this" not in code and 'split at y = v_mid"' in code
+    assert "distance in front of the eye" not in tour and "five-minute" not in tour
+    assert tour.count("JupyterLab's or Notebook's default display") == 1
 
 
 @pytest.mark.notebook
@@ -406,6 +420,9 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     ns = lesson("04_perspective_correct_interpolation")
     assert np.allclose(ns.t_ritschel, ns.t, atol=1e-15)
     assert (ns.z0, ns.z1) == (1.0, 4.0) and np.isclose(ns.t[5], 0.2)  # the predicted t = 0.2
+    # review r22 04-13: the far floor's top eight pixel rows land on these check rows, and the
+    # depth along each pixel row is constant (to rounding)
+    assert ns.check_rows.tolist() == [0, 3, 4, 6, 7, 8, 8, 9] and ns.depth_spread < 1e-12
     seg = Segment(ns.x0, ns.z0, ns.x1, ns.z1)
     assert np.allclose(seg.world_parameter(ns.q), ns.t_ray, atol=1e-15)
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
@@ -995,12 +1012,15 @@ def test_guard_band_exact_range_and_far_floor_words():
     """Review r20: lesson 10 calls ±2**21 px the exact range and the guard band lies inside it,
     so "the band" no longer names the range there, and lesson 07 no longer says lesson 10
     prints the guard band's extent; lesson 04's far floor shows horizontal streaks, not noise
-    (along a pixel row the depth hardly changes)."""
+    (along a pixel row the depth is constant; the check row each pixel row lands on aliases)."""
     ten = " ".join(" ".join(_cells("10_tiles_and_hierarchical_z", k)) for k in ("markdown", "code"))
     assert not re.search(r"(?<!guard )\bband\b", ten.replace("guard\n", "guard ")), "band"
     seven = " ".join(" ".join(_cells("07_hard_cases", "markdown")).split())
     assert "lesson 10 prints the range it lies within" in seven and "prints its extent" not in seven
     four = " ".join(" ".join(_cells("04_perspective_correct_interpolation", "markdown")).split())
     assert "noise" not in four and "horizontal streaks" in four
+    # review r22 04-13: depth is exactly constant along a row; what aliases is the check row
+    assert "random length" not in four and "hardly changes" not in four
+    assert "constant, up to rounding" in four and "which* row of checks" in four
     tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
     assert "GL_DEPTH_CLAMP" in tour and "DepthClipEnable = FALSE" in tour

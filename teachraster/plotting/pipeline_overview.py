@@ -37,7 +37,7 @@ class Stage:
 PIPELINE_STAGES: tuple[Stage, ...] = (
     Stage(
         "vertex processing",
-        "vertex shader: model → view → clip space",
+        "vertex shader: model → world → view → clip space",
         ("04_perspective_correct_interpolation", "05a_zbuffer"),
     ),  # fmt: skip
     # the z range is the API's: GL 4.6 §13.7 (default NEGATIVE_ONE_TO_ONE), D3D11.3 §15.4

@@ -21,6 +21,7 @@ import numpy as np
 from matplotlib.collections import PolyCollection
 from matplotlib.colors import Normalize, to_rgba
 from matplotlib.patches import Rectangle
+from matplotlib.patheffects import withStroke
 from matplotlib.transforms import Affine2D, ScaledTranslation
 
 from ..core.trace import FillTrace, Step
@@ -166,13 +167,14 @@ class FillView:
         self.caption_text.set_visible(caption)
         self._step_header = step_header
         self._caption = ""
-        self.legend = Key(ax, 9) if legend else None
+        # ten lines: span tables with samples list the split and both sample dots (review r22)
+        self.legend = Key(ax, 10) if legend else None
         # the last step's colours as a short colour bar in the key (values asked for)
         self.value_bar = ValueBar(self.legend) if legend and values else None
         self.sample_dots = None  # drawn by the caller: show_samples
         self._trace: FillTrace | None = None
         self._step = -1
-        self._keyed = None  # (testing, coloured) the key lists, see _key_entries
+        self._keyed = None  # (testing, coloured, split) the key lists, see _key_entries
         self.set_fill(fill, step=step, draw=False)
 
     # -- state -----------------------------------------------------------------------------
@@ -233,7 +235,9 @@ class FillView:
         step = trace.step(k)  # the one resolve of this tick: artists get the Step
         k = self._step = step.index
         self.coverage.image = set_image(self.coverage.image, trace.coverage_at(k).astype(float))
-        if trace.halfplane is not None:
+        # half-planes reject pixel by pixel, tiles whole blocks too (review r22: a rejected
+        # block left no mark once passed)
+        if trace.halfplane is not None or trace.blocks is not None:
             rejected = trace.rejected_at(k)
             self.rejected = set_image(self.rejected, rejected.astype(float))
             # nothing rejected yet: skip drawing the layer at all
@@ -249,7 +253,8 @@ class FillView:
             self.split.update(trace)  # shows the parts that exist
         else:
             self.split.set_visible(False)
-        testing = step.kind == "pixel"
+        # a pixel (half-planes) or a block (tiles) under test: outlined in the current colour
+        testing = step.kind in ("pixel", "block")
         coloured = step.kind == "interpolate" and self._shown is not None
         self.values.set_visible(coloured)
         if coloured:  # the parts' tints would read as values (the flat-top yellow: a high u)
@@ -266,9 +271,9 @@ class FillView:
         self._still = (boxed, split, testing, coloured)
         self.raster_line.update(step)
         self.pixel.update(step)
-        if self.legend is not None and (testing, coloured) != self._keyed:
-            self.legend.set_entries(self._key_entries(trace, testing, coloured))
-            self._keyed = (testing, coloured)
+        if self.legend is not None and (testing, coloured, split) != self._keyed:
+            self.legend.set_entries(self._key_entries(trace, testing, coloured, split))
+            self._keyed = (testing, coloured, split)
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
             # the steps are numbered from 0: "of 0-22" rather than "of 22", which reads as a count
@@ -314,7 +319,7 @@ class FillView:
             self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
         self._trace = trace
         self._show_values(fill, trace)
-        if trace.halfplane is None:
+        if trace.halfplane is None and trace.blocks is None:
             self.rejected.set_visible(False)
         self.raster_line.width = W
         self.triangle.update(trace)
@@ -406,35 +411,48 @@ class FillView:
         if self.value_bar is not None:
             self.value_bar.set_range(name, lo, hi, self.values.get_cmap(), where)
 
-    def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool) -> list:
-        """What the step on show draws: the pixel under test only while there is one (review
-        r8, lesson 04 c15), the sample dots of a multisampled fill, and at the last step with
-        values their colours instead of "filled" and the split's tints, which it hides."""
+    def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool,
+                     split: bool = False) -> list:  # fmt: skip
+        """What the step on show draws: the pixel or block under test only while there is one
+        (reviews r8, lesson 04 c15; r22, lesson 00), the split line and point 4 once found
+        (r22), the sample dots of a multisampled fill, and at the last step with values their
+        colours instead of "filled" and the split's tints, which it hides."""
         c, method = COLORS, trace.method
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
         entries = [None] * ValueBar.LINES if coloured else [("filled", c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
+        elif method == "tiled":  # rejected with their block, or tested in a partial one
+            entries.append(("rejected", c["rejected"], c["rejected"]))
         if method != "span":  # span tables draw no box (see show_step)
             entries.append(("bounding box", "none", c["bbox"]))
         if method == "span" and not coloured:
             entries += [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
                         ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"])]  # fmt: skip
+            if split:  # the dashed line y = v_mid and the diamond at point 4 (plot_split)
+                entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
         if method == "span" and not coloured:  # the last step draws no raster line
             entries += [("raster line, its pixels", to_rgba(c["current"], 0.15), c["current"]),
                         ("span x_left .. x_right", c["current"], c["current"], "|"),
                         ("its centre covered", c["edge"], "white", "o"),
                         ("its centre not", "white", c["edge"], "o")]  # fmt: skip
+        elif testing and method == "tiled":  # the block's outline (plot_current_pixel)
+            entries.append(("block under test", "none", c["current"]))
         elif testing:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
             entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
         if self._sample_key and trace.samples is not None:  # review r9: dots without a key
             # at the coloured step a ring (plot_samples' set_rings) with a colour inside: a
             # white face would read as the white dot of a sample not covered
+            # drawn as the picture draws it: a white ring with a dark rim (review r22)
             ring = self.values.get_cmap()(0.5)
-            covered = (ring, c["edge"]) if coloured else (TRIANGLE_COLORS[0], c["edge"])
-            entries += [("sample covered", *covered, "o"),
+            covered = (
+                (ring, "white", "o", c["edge"])
+                if coloured
+                else (TRIANGLE_COLORS[0], c["edge"], "o")
+            )
+            entries += [("sample covered", *covered),
                         ("sample not covered", "white", c["centre"], "o")]  # fmt: skip
         return entries
 
@@ -484,9 +502,10 @@ class Key(Artists):
                 text.set_visible(on)
 
     def set_entries(self, entries) -> None:
-        """``entries``: (label, face colour, edge colour[, marker]) per line (marker default a
-        square swatch), or None for a line left empty (for another artist: :class:`ValueBar`);
-        the rest are hidden."""
+        """``entries``: (label, face colour, edge colour[, marker[, rim colour]]) per line
+        (marker default a square swatch; a rim: a stroke around the edge, as sample rings are
+        drawn), or None for a line left empty (for another artist: :class:`ValueBar`); the
+        rest are hidden."""
         for i, (swatch, text) in enumerate(zip(self.swatches, self.texts)):
             on = i < len(entries) and entries[i] is not None
             swatch.set_visible(on)
@@ -494,6 +513,8 @@ class Key(Artists):
             if on:
                 label, face, edge, *marker = entries[i]
                 swatch.set_marker(marker[0] if marker else "s")
+                rim = marker[1] if len(marker) > 1 else None
+                swatch.set_path_effects([withStroke(linewidth=4.0, foreground=rim)] if rim else [])
                 swatch.set_markerfacecolor(face)
                 swatch.set_markeredgecolor(edge)
                 text.set_text(label)

@@ -48,7 +48,7 @@ def on_grid(value: float, direction: int = 0) -> float:
 
 #: Key entries of a fill's steps, not of a finished fill (the editor has no current step).
 STEP_ONLY = {"pixel under test, × centre", "raster line, its pixels", "span x_left .. x_right",
-             "its centre covered", "its centre not"}  # fmt: skip
+             "its centre covered", "its centre not", "block under test"}  # fmt: skip
 
 #: Range of the w sliders: w is a depth, so the slider is logarithmic (equal steps are equal
 #: ratios, which is what perspective depends on).

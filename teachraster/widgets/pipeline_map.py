@@ -30,6 +30,7 @@ from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
 from ..pipeline.rendering.stages import guard_band
 from ..plotting.pipeline_overview import PIPELINE_STAGES, lesson_number
+from ..plotting.style import VALUE_CMAP
 from .explorable import Explorable, esm_source
 
 #: The tour triangle of lesson 00 (window pixels, y down), its w and its attribute u.
@@ -84,7 +85,7 @@ def lessons_label(stems, width: int = 12) -> list[str]:
 
 def tour_clip(xy, w, width: int, height: int, near: float, far: float) -> np.ndarray:
     """(3, 4) clip coordinates a vertex shader with GL's perspective projection (``near``,
-    ``far``; w = the view distance) would output for window positions ``xy`` at depths ``w``:
+    ``far``; w = the depth along the viewing axis) would output for window positions ``xy`` at depths ``w``:
     the viewport inverted, x_ndc = 2x/W - 1, y_ndc = 1 - 2y/H, and GL's
     z_ndc = (f + n)/(f - n) - 2 f n / ((f - n) w)."""
     xy, w = np.asarray(xy, float), np.asarray(w, float)
@@ -105,7 +106,7 @@ def tour_stages(xy=TOUR_XY, w=TOUR_W, u=TOUR_U, width: int = 16, height: int = 1
                 near: float = 0.5, far: float = 10.0) -> dict:  # fmt: skip
     """Everything the map shows, computed by the engine: per vertex clip coordinates, NDC,
     window coordinates and the clip tests; the set-up; per pixel the fragments, u, depth and
-    the final colour (u through the viridis colour map, the shader of this map)."""
+    the final colour (u through the lessons' colour map for values, the shader of this map)."""
     from matplotlib import colormaps
 
     clip = tour_clip(xy, w, width, height, near, far)
@@ -117,7 +118,7 @@ def tour_stages(xy=TOUR_XY, w=TOUR_W, u=TOUR_U, width: int = 16, height: int = 1
     edges_tl = [bool(setup.top_left[k]) for k in range(3)]
     fill = rasterize(Triangle(window[:, :2]), width, height, trace=True)
     box = fill.trace.bbox
-    colour = colormaps["viridis"](np.nan_to_num(frame.attrs[..., 0]))[..., :3]
+    colour = colormaps[VALUE_CMAP](np.nan_to_num(frame.attrs[..., 0]))[..., :3]
     colour[~frame.coverage] = 0.13  # the cleared colour target
     # the guard band render clips this image with (not the clipper's default): its reach in
     # window pixels, and the range where the fixed-point edge functions stay exact

@@ -32,7 +32,8 @@ export function stageHtml(data, key) {
     case "vertex":
       return "<p>The vertex shader outputs clip coordinates (x, y, z, w) per vertex. The tour " +
         `triangle's are those of GL's perspective projection (near ${num(data.near)}, far ` +
-        `${num(data.far)}; w is the view distance) and carry the attribute u.</p><table>` +
+        `${num(data.far)}; w is the depth along the viewing axis in front of the eye) and carry ` +
+        "the attribute u.</p><table>" +
         row(["", "x", "y", "z", "w", "u"], true) +
         vertexRows(data, (k) => [...data.clip[k].map((v) => num(v, 5)), num(data.u[k])]) + "</table>";
     case "assembly":
@@ -46,10 +47,12 @@ export function stageHtml(data, key) {
         `a guard band, here |x|, |y| ≤ ${digits(data.guard)} w (in the window, |x|, |y| &lt; ` +
         `${digits(data.guardPx)} px), just inside the ${digits(data.exactPx)} px within which ` +
         "the integer edge functions of lesson 02 stay exact. The rasteriser's bounding box " +
-        "does the rest.</p><table>" + row(["", "x / w", "y / w", "z / w", "inside?"], true) +
+        "does the rest. The test, on the clip coordinates (before any divide):</p><table>" +
+        row(["", "x", "y", "z", "w", "−w ≤ x, y, z ≤ w?"], true) +
         vertexRows(data, (k) => {
-          const n = data.ndc[k];
-          return [...n.map((v) => num(v, 5)), n.every((v) => v >= -1 && v <= 1) ? "yes" : "no"];
+          const c = data.clip[k], w = c[3];
+          return [...c.map((v) => num(v, 5)),
+            c.slice(0, 3).every((v) => v >= -w && v <= w) ? "yes" : "no"];
         }) + `</table><p>${data.inside[0] ? "No plane cuts the triangle: it goes on whole." :
         "A plane cuts it: it is clipped into a polygon."}</p>`;
     case "divide":
@@ -73,7 +76,8 @@ export function stageHtml(data, key) {
         "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
         "could write its own depth (<code>gl_FragDepth</code>) or discard the fragment, " +
         "which is why the depth test and the depth write logically come <i>after</i> it.</p>" +
-        "<p>Key: u = 0 dark purple, 0.5 teal, 1 yellow (viridis); light grey: no fragment.</p>";
+        "<p>Key: u = 0 dark blue, 0.5 grey, 1 yellow (cividis, the colour map every lesson " +
+        "uses for u); light grey: no fragment.</p>";
     case "depth":
       return `<p>Each fragment's depth (interpolated window depth) is compared with the ` +
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +

@@ -224,7 +224,7 @@ function mountPixels(root, data, host) {
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
       `${v.right} right, ${v.extra} too many, ${v.missed} missed. The answer: <b>${v.total}</b> ` +
       `${cells(v.total)} ${picked}, outlined green where you had them, dashed orange where you ` +
-      `missed them; crossed: yours that are not ${picked}.`);
+      `missed them; crossed: the ones you marked that are not among them.`);
     revealOnFigure(host, canvas, paint, state.given, byClick);
   }
 
