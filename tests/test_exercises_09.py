@@ -1634,3 +1634,51 @@ def test_r22_text_fixes():
     from teachraster.exercises.front_to_back import explain_layers
 
     assert "within the check's tolerance" in inspect.getsource(explain_layers)
+
+
+# -- r23: the glowing destination's words, 9.2a's package words, D-4's named slips -----------
+def _via_straight(s, d):
+    """9.2b through straight colours: both divided by their alpha (0 where it is 0)."""
+    s, d = np.asarray(s, float), np.asarray(d, float)
+    with np.errstate(all="ignore"):
+        S = np.where(s[3] > 0, s[:3] / s[3], 0.0)
+        D = np.where(d[3] > 0, d[:3] / d[3], 0.0)
+    return np.r_[S * s[3] * d[3] + D * d[3] * (1 - s[3]), d[3]]
+
+
+def _clamped_inputs(s, d):
+    """Both inputs' colours clamped to their alpha, then atop."""
+    s, d = np.asarray(s, float), np.asarray(d, float)
+    s, d = (np.r_[np.minimum(c[:3], c[3]), c[3]] for c in (s, d))
+    return s * d[3] + d * (1 - s[3])
+
+
+@pytest.mark.parametrize("fn", [_via_straight, _clamped_inputs], ids=["via straight", "clamped"])
+def test_a_glowing_destination_lost_is_said_of_the_destination(fn):
+    """r23 D-1: at "half orange atop a glow" the answer (0, 0, 0, 0) was told "the destination
+    unchanged, as if src (…, 0.5) were not there; it is a glow": the glow is dst."""
+    report = ex.check("atop_premultiplied", fn, budget=60)
+    by_case = {f.case: f for f in report.failures}
+    assert set(by_case) == {"a glow (light, alpha 0) atop half blue",
+                            "half orange atop a glow (light, alpha 0)"}, str(report)  # fmt: skip
+    dst = by_case["half orange atop a glow (light, alpha 0)"]
+    said = dst.explanation.split("yours is ", 1)[1]
+    assert dst.kind == "glow lost", said
+    assert "destination unchanged" not in said and "src (" not in said, said
+    assert "as if dst (0.3, 0.2, 0.05, 0) carried no light, but it is a glow" in said, said
+    src = by_case["a glow (light, alpha 0) atop half blue"].explanation
+    assert "your answer is the destination unchanged, as if src (0.3, 0.2, 0.05, 0)" in src
+
+
+def test_a_nan_at_a_glowing_destination_names_the_destination():
+    """r23 D-1: a division by alpha with no guard gives NaN at dst's glow too."""
+
+    def unguarded(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        with np.errstate(all="ignore"):
+            S, D = s[:3] / s[3], d[:3] / d[3]
+            return np.r_[S * s[3] * d[3] + D * d[3] * (1 - s[3]), d[3]]
+
+    report = ex.check("atop_premultiplied", unguarded, budget=60)
+    dst = next(f for f in report.failures if f.case.startswith("half orange atop a glow"))
+    assert dst.kind == "glow lost" and "dst (0.3, 0.2, 0.05, 0) is a glow" in dst.explanation

@@ -746,21 +746,28 @@ def _is_glow(c) -> bool:
     return c[3] == 0 and bool((np.asarray(c[:3]) > 0).any())
 
 
+def _glowing(args) -> str | None:
+    """ "src (…)" or "dst (…)": the first input that is a glow (9.2b has a glowing
+    destination too, r22 D-2), or None."""
+    return next((f"{n} {vec(c)}" for n, c in zip(("src", "dst"), args) if _is_glow(c)), None)
+
+
 def _glow_lost(args, expected, got) -> bool:
-    """A glow (alpha 0, light in it) and a NaN answer: divided by its alpha."""
-    return _is_glow(args[0]) and bool(np.isnan(np.asarray(got, float)).any())
+    """A glow (alpha 0, light in it) among the inputs and a NaN answer: divided by its alpha."""
+    return _glowing(args) is not None and bool(np.isnan(np.asarray(got, float)).any())
 
 
 def _zero_divided(args, expected, got) -> bool:
     """An input with alpha 0 (no glow) and a NaN answer: 0/0 from dividing by alpha."""
     src, dst = args
     zero = src[3] == 0 or dst[3] == 0
-    return zero and not _is_glow(src) and bool(np.isnan(np.asarray(got, float)).any())
+    return zero and _glowing(args) is None and bool(np.isnan(np.asarray(got, float)).any())
 
 
 def _glow_words(args, expected, got) -> str:
-    """A NaN at the glow: only a division by its alpha 0 gives one."""
-    return (f"src {vec(args[0])} is a glow: premultiplied light with alpha 0, covering nothing. "
+    """A NaN at the glow: only a division by its alpha 0 gives one (r23 D-1: it named src
+    also where the glow is dst)."""
+    return (f"{_glowing(args)} is a glow: premultiplied light with alpha 0, covering nothing. "
             "No straight colour holds it, so dividing by alpha (to work on straight colours, "
             "as 9.2a does) divides by zero; blended premultiplied, as it is, its light "
             "counts")  # fmt: skip
@@ -777,6 +784,20 @@ def _glow_skipped_words(args, expected, got) -> str:
             "light the same way)")  # fmt: skip
 
 
+def _atop_glow_lost_words(args, expected, got) -> str:
+    """9.2b's "glow lost" (:func:`_atop_via_straight`, or both inputs' colours clamped to
+    their alpha), in words true of the input that glows (r23 D-1: at a glowing destination
+    the answer, (0, 0, 0, 0), was called "the destination unchanged" and the source, alpha
+    ½, "a glow")."""
+    if _is_glow(args[0]):
+        return _glow_skipped_words(args, expected, got)
+    return (f"your answer is atop as if dst {vec(args[1])} carried no light, but it is a "
+            "glow: premultiplied light with alpha 0, covering nothing but carrying light. "
+            "Dividing it by its alpha 0 to work on straight colours, as 9.2a does (or clamping "
+            "its colour to that alpha), loses its light; atop keeps a destination's light "
+            "wherever the source does not cover it, a glow's too")  # fmt: skip
+
+
 def _mistakes(mode: str) -> list[Mistake]:
     return [*_cause_mistakes(mode), WHOLE_NUMBERS]
 
@@ -788,7 +809,7 @@ def _atop_mistakes() -> list[Mistake]:
             "premultiplied colours blend as they are, with no division")  # fmt: skip
     table = [Mistake(k, w, gives=g) for k, w, g in ATOP_MISTAKES]
     share = "the result's alpha is the share of the pixel in which something of it shows"
-    return [Mistake("glow lost", _glow_skipped_words, gives=_atop_via_straight),
+    return [Mistake("glow lost", _atop_glow_lost_words, gives=_atop_via_straight),
             Mistake("glow lost", _glow_words, fits=_glow_lost),
             Mistake("divided by alpha", zero, fits=_zero_divided), *table, *GLOW_MISTAKES,
             NOTHING_ATOP, SOURCE_SKIPPED, *_alpha_mistakes(premultiplied_atop, ATOP_ALPHAS, share)]  # fmt: skip
