@@ -1682,3 +1682,32 @@ def test_a_nan_at_a_glowing_destination_names_the_destination():
     report = ex.check("atop_premultiplied", unguarded, budget=60)
     dst = next(f for f in report.failures if f.case.startswith("half orange atop a glow"))
     assert dst.kind == "glow lost" and "dst (0.3, 0.2, 0.05, 0) is a glow" in dst.explanation
+
+
+def test_9_2a_through_the_packages_blend_is_not_said_to_be_the_answer():
+    """r23 D-3: a right 9.2a through ``tr.blend_equation`` (premultiplied over, then divided
+    by α) was told the blend "computes this very answer"; no factor pair gives straight over.
+    The checker's own reference still says it is the checker's code."""
+    import teachraster as tr
+    from teachraster.exercises.blending import from_straight
+
+    def through_blend(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = s[3] + d[3] * (1 - s[3])
+        if a == 0:
+            return np.zeros(4)
+        pm = tr.blend_equation(np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]],
+                               "ONE", "ONE_MINUS_SRC_ALPHA")  # fmt: skip
+        return np.r_[pm[:3] / a, a]
+
+    report = ex.check("over_straight", through_blend, budget=60)
+    assert not report.passed and "teachraster's blend_equation" in report.package, str(report)
+    assert "computes this very answer" not in report.package, report.package
+    assert "no blend factor pair gives straight over" in report.package, report.package
+
+    def through_reference(s, d):
+        out = from_straight(s, d)
+        return np.r_[out[:3] / out[3], out[3]] if out[3] else np.zeros(4)
+
+    report = ex.check("over_straight", through_reference, budget=60)
+    assert "the checker's own code" in report.package, report.package

@@ -855,16 +855,27 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
     return out
 
 
-def blend_answers(words: str | None = None) -> tuple[PackageAnswer, ...]:
+#: What 9.2a's report says of a call into the package's blend (r23 D-3: "which computes this
+#: very answer" was false: no factor pair gives a straight result, whose colour is divided by
+#: α; the blend can compute a step of it).
+STRAIGHT_STEP_WORDS = ("the package's blend is not counted as your work: write each step "
+                       "yourself (no blend factor pair gives straight over, whose colour is "
+                       "divided by the result's alpha, so a blend can only be a step of it)")  # fmt: skip
+
+
+def blend_answers(
+    words: str | None = None, checker: str | None = None
+) -> tuple[PackageAnswer, ...]:
     """Every route into the package's blending (r9: the private ``apply_blend`` passed
     unflagged while ``tr.blend_equation`` was flagged): the blend module's functions, which
     every render blends through, and the checker's own reference. ``words``: what the report
-    says of them instead (an exercise whose answer is more than one blend)."""
+    says of them instead (an exercise whose answer is more than one blend); ``checker``: of
+    the checker's reference (default ``words``, else :data:`CHECKER_WORDS`)."""
     step = "the blend this exercise asks you to write"
     return (PackageAnswer(blend_equation, words=words),
             PackageAnswer(apply_blend, what=step, words=words),
             PackageAnswer(factor, what=f"the blend factors, a part of {step}", words=words),
-            PackageAnswer(from_straight, words=words or CHECKER_WORDS))  # fmt: skip
+            PackageAnswer(from_straight, words=checker or words or CHECKER_WORDS))  # fmt: skip
 
 
 def _exercise(name: str, mode: str) -> Exercise:
@@ -958,6 +969,7 @@ STRAIGHT_EXERCISE = Exercise(
     "over_straight", lambda: blend_cases("straight"), _rgba,
     lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("straight"),
     _mistakes("straight"), draw=_blend_drawer("straight"),
-    answers=(*blend_answers(), PackageAnswer(straight_over, words=CHECKER_WORDS)),  # r20 D-8
+    answers=(*blend_answers(STRAIGHT_STEP_WORDS, CHECKER_WORDS),
+             PackageAnswer(straight_over, words=CHECKER_WORDS)),  # r20 D-8
     example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip
