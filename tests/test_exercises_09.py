@@ -1711,3 +1711,20 @@ def test_9_2a_through_the_packages_blend_is_not_said_to_be_the_answer():
 
     report = ex.check("over_straight", through_reference, budget=60)
     assert "the checker's own code" in report.package, report.package
+
+
+def test_r23_text_fixes():
+    """r23 D-2, D-5, D-8: lesson 12 prints Porter and Duff's *plus* too (its additive mode);
+    the notebook imports no ``tr``; 9.3 ties the loop to the GPU's own front-to-back blend
+    without giving its factor pair (that pair is the step 9.3 asks for)."""
+    cells = _nb_cells()
+    atop = " ".join(cells["atop_premultiplied_task"].split())
+    assert "none of them but" not in atop
+    assert "prints only *over* and *plus* (its additive mode, (ONE, ONE))" in atop, atop
+    intro = " ".join(cells["intro"].split())
+    assert "`teachraster.blend_equation`, lesson 12's `tr.blend_equation`" in intro, intro
+    assert "import teachraster as tr" not in cells["setup"]
+    ftb = " ".join(cells["front_to_back_task"].split())
+    assert "A GPU can composite nearest first too" in ftb and "name that pair" in ftb, ftb
+    for answer in ("ONE_MINUS_DST_ALPHA", "DST_ALPHA", "1 − A", "(1 - A)"):
+        assert answer not in ftb, answer
