@@ -1728,3 +1728,21 @@ def test_r23_text_fixes():
     assert "A GPU can composite nearest first too" in ftb and "name that pair" in ftb, ftb
     for answer in ("ONE_MINUS_DST_ALPHA", "DST_ALPHA", "1 − A", "(1 - A)"):
         assert answer not in ftb, answer
+
+
+def test_the_tie_rule_is_said_once_with_each_lines_own_numbers():
+    """r23 D-6: the ~90-word tie sentence stood on every line of the report, and its float
+    clause quoted "3.0 − 1e-17" also on the lines at x = 5 and y = 6."""
+    report = ex.check("line_pixels", line_with(0, 0), budget=60)
+    text = str(report)
+    tie = "at a tie (a segment along a diamond's edge, or through its corner)"
+    assert text.count(tie) == 1, text
+    said = [f.explanation for f in report.failures]
+    assert tie in said[0] and all(tie not in s for s in said[1:]), said
+    assert all("as said above" in s for s in said[1:]), said
+    for f in report.failures:
+        (p0, p1) = re.search(r"segment (\(.*?\)) → (\(.*?\))", f.explanation).groups()
+        quoted = re.search(r"floating point: (\S+) − (\S+) == (\S+) in float64", f.explanation)
+        v, tiny = float(quoted[1]), float(quoted[2])
+        assert v == float(quoted[3]) and v - tiny == v, f.explanation
+        assert quoted[1] in p0 + p1, (quoted[1], p0, p1)  # the case's own coordinate
