@@ -1746,3 +1746,49 @@ def test_the_tie_rule_is_said_once_with_each_lines_own_numbers():
         v, tiny = float(quoted[1]), float(quoted[2])
         assert v == float(quoted[3]) and v - tiny == v, f.explanation
         assert quoted[1] in p0 + p1, (quoted[1], p0, p1)  # the case's own coordinate
+
+
+def _over_dividing_by(alpha):
+    def fn(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = alpha(s, d)
+        if a == 0:
+            return np.zeros(4)
+        return np.r_[(s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])) / a, a]
+
+    return fn
+
+
+@pytest.mark.parametrize(("alpha", "words"), [
+    (lambda s, d: s[3] * s[3] + d[3] * (1 - s[3]), "as GL's straight blend does on the fourth"),
+    (lambda s, d: s[3] + d[3], "you added the two alphas"),
+    (lambda s, d: s[3] * d[3], "the share both cover"),
+    (lambda s, d: max(s[3], d[3]), "the larger of the two"),
+], ids=["GL single pair", "sum", "product", "max"])  # fmt: skip
+def test_9_2a_a_wrong_alpha_divided_into_the_light_is_named(alpha, words):
+    """r23 D-4: GL's one-pair alpha (lesson 12 prints it), α_s + α_d, α_s·α_d and the max,
+    each dividing the light, got only the general message."""
+    report = ex.check("over_straight", _over_dividing_by(alpha), budget=60)
+    assert not report.passed
+    said = " ".join(f.explanation for f in report.failures)
+    assert {f.kind.endswith("colour divided by it") for f in report.failures} == {True}, said
+    assert words in said and "go back through the derivation" not in said, said
+
+
+@pytest.mark.parametrize("how", [lambda c: np.round(c * 255) / 255,
+                                 lambda c: np.r_[np.round(c[:3] * 255) / 255, c[3]],
+                                 lambda c: np.floor(c * 255) / 255],
+                         ids=["all four", "colour only", "cut"])  # fmt: skip
+@pytest.mark.parametrize("name", ["over_straight", "atop_premultiplied", "front_to_back"])
+def test_an_answer_rounded_to_8_bits_is_said_so(name, how):
+    """r23 D-4: ``round(x·255)/255`` was sent back through the derivation (9.2a) or given the
+    rule (9.3)."""
+    if name == "front_to_back":
+        fn = lambda layers: how(np.asarray(front_to_back(layers), float))  # noqa: E731
+    else:
+        right = {"over_straight": over_straight, "atop_premultiplied": atop_pm}[name]
+        fn = lambda s, d: how(np.asarray(right(s, d), float))  # noqa: E731
+    report = ex.check(name, fn, budget=60)
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"8-bit rounding"}, str(report)[:800]
+    assert "rounded to steps of 1/255" in report.failures[0].explanation

@@ -660,6 +660,34 @@ ALPHAS = [
 
 _SHARE = "the result's alpha is the share of the pixel src or dst covers"
 
+#: 9.2a's wrong alphas: :data:`ALPHAS` and two more a straight answer reaches (r23 D-4).
+STRAIGHT_ALPHAS = [
+    *ALPHAS,
+    ("alpha of the shared share", "your alpha is the share both cover, α_s·α_d; where one "
+     "covers alone, something still shows", lambda s, d: s[3] * d[3]),
+    ("alpha the larger", "your alpha is the larger of the two; where the one with it leaves "
+     "the pixel uncovered, the other still covers some of it", lambda s, d: max(s[3], d[3])),
+]  # fmt: skip
+
+
+def _divided_by_wrong_alpha() -> list[Mistake]:
+    """9.2a's light divided by a wrong alpha of :data:`STRAIGHT_ALPHAS` ((0, 0, 0, 0) where
+    that alpha is 0): the colour is off too (r23 D-4: GL's single-pair alpha
+    α_s·α_s + α_d·(1 − α_s), which lesson 12 prints, got the general message)."""
+
+    def gives(alpha):
+        def wrong(src, dst):
+            s, d = np.asarray(src, float), np.asarray(dst, float)
+            a = float(alpha(s, d))
+            light = s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])
+            return np.zeros(4) if a == 0 else np.r_[light / a, a]
+
+        return wrong
+
+    head = "your alpha is wrong, and your colour is the light divided by it, so it is off too: "
+    return [Mistake(f"{k}, colour divided by it", head + w, gives=gives(a))
+            for k, w, a in STRAIGHT_ALPHAS]  # fmt: skip
+
 
 def _alpha_mistakes(right, alphas=ALPHAS, share=_SHARE) -> list[Mistake]:
     """The colour ``right(src, dst)`` gives with each wrong alpha of ``alphas``, then the
@@ -694,6 +722,29 @@ WHOLE_NUMBERS = Mistake(
     "whole numbers", "your answer is whole numbers (rounded, or converted to int): colours "
     "and alphas are fractions between 0 and 1, so keep them as floats",
     fits=_whole_numbers, symptom=True, only_whole=True,  # every failing answer whole
+)  # fmt: skip
+
+
+def _eight_bit(args, expected, got) -> bool:
+    """Every channel either right or rounded (or cut) to a step of 1/255, as an 8-bit buffer
+    stores it, and some channel off that grid in the expected answer (r23 D-4)."""
+    try:
+        g = np.asarray(got, float).ravel()
+    except (TypeError, ValueError):
+        return False
+    e = np.asarray(expected, float).ravel()
+    if g.shape != e.shape or not np.isfinite(g).all() or (e * 255 == np.round(e * 255)).all():
+        return False
+    exact = np.abs(g - e) <= 1e-9
+    return any(bool((exact | (np.abs(g - q) <= 1e-9)).all())
+               for q in (np.round(e * 255) / 255, np.floor(e * 255) / 255))  # fmt: skip
+
+
+#: r23 D-4: an answer rounded to 8 bits, ``round(x·255)/255``, was sent back to the steps.
+EIGHT_BIT = Mistake(
+    "8-bit rounding", "your answer is rounded to steps of 1/255, as an 8-bit buffer stores "
+    "it: the check compares floats (within 1e-6), so keep them unrounded",
+    fits=_eight_bit, symptom=True, only_whole=True,
 )  # fmt: skip
 
 
@@ -799,7 +850,7 @@ def _atop_glow_lost_words(args, expected, got) -> str:
 
 
 def _mistakes(mode: str) -> list[Mistake]:
-    return [*_cause_mistakes(mode), WHOLE_NUMBERS]
+    return [*_cause_mistakes(mode), WHOLE_NUMBERS, EIGHT_BIT]
 
 
 def _atop_mistakes() -> list[Mistake]:
@@ -827,7 +878,8 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
         # so a right colour with a wrong alpha fits it there; named only when it fits them all
         swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                           only_whole=True)  # fmt: skip
-        return [nan, FAINT_STRAIGHT, *table, swapped, *_alpha_mistakes(straight_over)]
+        return [nan, FAINT_STRAIGHT, *table, swapped, *_divided_by_wrong_alpha(),
+                *_alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
