@@ -1634,3 +1634,161 @@ def test_r22_text_fixes():
     from teachraster.exercises.front_to_back import explain_layers
 
     assert "within the check's tolerance" in inspect.getsource(explain_layers)
+
+
+# -- r23: the glowing destination's words, 9.2a's package words, D-4's named slips -----------
+def _via_straight(s, d):
+    """9.2b through straight colours: both divided by their alpha (0 where it is 0)."""
+    s, d = np.asarray(s, float), np.asarray(d, float)
+    with np.errstate(all="ignore"):
+        S = np.where(s[3] > 0, s[:3] / s[3], 0.0)
+        D = np.where(d[3] > 0, d[:3] / d[3], 0.0)
+    return np.r_[S * s[3] * d[3] + D * d[3] * (1 - s[3]), d[3]]
+
+
+def _clamped_inputs(s, d):
+    """Both inputs' colours clamped to their alpha, then atop."""
+    s, d = np.asarray(s, float), np.asarray(d, float)
+    s, d = (np.r_[np.minimum(c[:3], c[3]), c[3]] for c in (s, d))
+    return s * d[3] + d * (1 - s[3])
+
+
+@pytest.mark.parametrize("fn", [_via_straight, _clamped_inputs], ids=["via straight", "clamped"])
+def test_a_glowing_destination_lost_is_said_of_the_destination(fn):
+    """r23 D-1: at "half orange atop a glow" the answer (0, 0, 0, 0) was told "the destination
+    unchanged, as if src (…, 0.5) were not there; it is a glow": the glow is dst."""
+    report = ex.check("atop_premultiplied", fn, budget=60)
+    by_case = {f.case: f for f in report.failures}
+    assert set(by_case) == {"a glow (light, alpha 0) atop half blue",
+                            "half orange atop a glow (light, alpha 0)"}, str(report)  # fmt: skip
+    dst = by_case["half orange atop a glow (light, alpha 0)"]
+    said = dst.explanation.split("yours is ", 1)[1]
+    assert dst.kind == "glow lost", said
+    assert "destination unchanged" not in said and "src (" not in said, said
+    assert "as if dst (0.3, 0.2, 0.05, 0) carried no light, but it is a glow" in said, said
+    src = by_case["a glow (light, alpha 0) atop half blue"].explanation
+    assert "your answer is the destination unchanged, as if src (0.3, 0.2, 0.05, 0)" in src
+
+
+def test_a_nan_at_a_glowing_destination_names_the_destination():
+    """r23 D-1: a division by alpha with no guard gives NaN at dst's glow too."""
+
+    def unguarded(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        with np.errstate(all="ignore"):
+            S, D = s[:3] / s[3], d[:3] / d[3]
+            return np.r_[S * s[3] * d[3] + D * d[3] * (1 - s[3]), d[3]]
+
+    report = ex.check("atop_premultiplied", unguarded, budget=60)
+    dst = next(f for f in report.failures if f.case.startswith("half orange atop a glow"))
+    assert dst.kind == "glow lost" and "dst (0.3, 0.2, 0.05, 0) is a glow" in dst.explanation
+
+
+def test_9_2a_through_the_packages_blend_is_not_said_to_be_the_answer():
+    """r23 D-3: a right 9.2a through ``tr.blend_equation`` (premultiplied over, then divided
+    by α) was told the blend "computes this very answer"; no factor pair gives straight over.
+    The checker's own reference still says it is the checker's code."""
+    import teachraster as tr
+    from teachraster.exercises.blending import from_straight
+
+    def through_blend(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = s[3] + d[3] * (1 - s[3])
+        if a == 0:
+            return np.zeros(4)
+        pm = tr.blend_equation(np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]],
+                               "ONE", "ONE_MINUS_SRC_ALPHA")  # fmt: skip
+        return np.r_[pm[:3] / a, a]
+
+    report = ex.check("over_straight", through_blend, budget=60)
+    assert not report.passed and "teachraster's blend_equation" in report.package, str(report)
+    assert "computes this very answer" not in report.package, report.package
+    assert "no blend factor pair gives straight over" in report.package, report.package
+
+    def through_reference(s, d):
+        out = from_straight(s, d)
+        return np.r_[out[:3] / out[3], out[3]] if out[3] else np.zeros(4)
+
+    report = ex.check("over_straight", through_reference, budget=60)
+    assert "the checker's own code" in report.package, report.package
+
+
+def test_r23_text_fixes():
+    """r23 D-2, D-5, D-8: lesson 12 prints Porter and Duff's *plus* too (its additive mode);
+    the notebook imports no ``tr``; 9.3 ties the loop to the GPU's own front-to-back blend
+    without giving its factor pair (that pair is the step 9.3 asks for)."""
+    cells = _nb_cells()
+    atop = " ".join(cells["atop_premultiplied_task"].split())
+    assert "none of them but" not in atop
+    assert "prints only *over* and *plus* (its additive mode, (ONE, ONE))" in atop, atop
+    intro = " ".join(cells["intro"].split())
+    assert "`teachraster.blend_equation`, lesson 12's `tr.blend_equation`" in intro, intro
+    assert "import teachraster as tr" not in cells["setup"]
+    ftb = " ".join(cells["front_to_back_task"].split())
+    assert "A GPU can composite nearest first too" in ftb and "name that pair" in ftb, ftb
+    for answer in ("ONE_MINUS_DST_ALPHA", "DST_ALPHA", "1 − A", "(1 - A)"):
+        assert answer not in ftb, answer
+
+
+def test_the_tie_rule_is_said_once_with_each_lines_own_numbers():
+    """r23 D-6: the ~90-word tie sentence stood on every line of the report, and its float
+    clause quoted "3.0 − 1e-17" also on the lines at x = 5 and y = 6."""
+    report = ex.check("line_pixels", line_with(0, 0), budget=60)
+    text = str(report)
+    tie = "at a tie (a segment along a diamond's edge, or through its corner)"
+    assert text.count(tie) == 1, text
+    said = [f.explanation for f in report.failures]
+    assert tie in said[0] and all(tie not in s for s in said[1:]), said
+    assert all("as said above" in s for s in said[1:]), said
+    for f in report.failures:
+        (p0, p1) = re.search(r"segment (\(.*?\)) → (\(.*?\))", f.explanation).groups()
+        quoted = re.search(r"floating point: (\S+) − (\S+) == (\S+) in float64", f.explanation)
+        v, tiny = float(quoted[1]), float(quoted[2])
+        assert v == float(quoted[3]) and v - tiny == v, f.explanation
+        assert quoted[1] in p0 + p1, (quoted[1], p0, p1)  # the case's own coordinate
+
+
+def _over_dividing_by(alpha):
+    def fn(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = alpha(s, d)
+        if a == 0:
+            return np.zeros(4)
+        return np.r_[(s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])) / a, a]
+
+    return fn
+
+
+@pytest.mark.parametrize(("alpha", "words"), [
+    (lambda s, d: s[3] * s[3] + d[3] * (1 - s[3]), "as GL's straight blend does on the fourth"),
+    (lambda s, d: s[3] + d[3], "you added the two alphas"),
+    (lambda s, d: s[3] * d[3], "the share both cover"),
+    (lambda s, d: max(s[3], d[3]), "the larger of the two"),
+], ids=["GL single pair", "sum", "product", "max"])  # fmt: skip
+def test_9_2a_a_wrong_alpha_divided_into_the_light_is_named(alpha, words):
+    """r23 D-4: GL's one-pair alpha (lesson 12 prints it), α_s + α_d, α_s·α_d and the max,
+    each dividing the light, got only the general message."""
+    report = ex.check("over_straight", _over_dividing_by(alpha), budget=60)
+    assert not report.passed
+    said = " ".join(f.explanation for f in report.failures)
+    assert {f.kind.endswith("colour divided by it") for f in report.failures} == {True}, said
+    assert words in said and "go back through the derivation" not in said, said
+
+
+@pytest.mark.parametrize("how", [lambda c: np.round(c * 255) / 255,
+                                 lambda c: np.r_[np.round(c[:3] * 255) / 255, c[3]],
+                                 lambda c: np.floor(c * 255) / 255],
+                         ids=["all four", "colour only", "cut"])  # fmt: skip
+@pytest.mark.parametrize("name", ["over_straight", "atop_premultiplied", "front_to_back"])
+def test_an_answer_rounded_to_8_bits_is_said_so(name, how):
+    """r23 D-4: ``round(x·255)/255`` was sent back through the derivation (9.2a) or given the
+    rule (9.3)."""
+    if name == "front_to_back":
+        fn = lambda layers: how(np.asarray(front_to_back(layers), float))  # noqa: E731
+    else:
+        right = {"over_straight": over_straight, "atop_premultiplied": atop_pm}[name]
+        fn = lambda s, d: how(np.asarray(right(s, d), float))  # noqa: E731
+    report = ex.check(name, fn, budget=60)
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"8-bit rounding"}, str(report)[:800]
+    assert "rounded to steps of 1/255" in report.failures[0].explanation

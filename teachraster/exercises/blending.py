@@ -660,6 +660,34 @@ ALPHAS = [
 
 _SHARE = "the result's alpha is the share of the pixel src or dst covers"
 
+#: 9.2a's wrong alphas: :data:`ALPHAS` and two more a straight answer reaches (r23 D-4).
+STRAIGHT_ALPHAS = [
+    *ALPHAS,
+    ("alpha of the shared share", "your alpha is the share both cover, α_s·α_d; where one "
+     "covers alone, something still shows", lambda s, d: s[3] * d[3]),
+    ("alpha the larger", "your alpha is the larger of the two; where the one with it leaves "
+     "the pixel uncovered, the other still covers some of it", lambda s, d: max(s[3], d[3])),
+]  # fmt: skip
+
+
+def _divided_by_wrong_alpha() -> list[Mistake]:
+    """9.2a's light divided by a wrong alpha of :data:`STRAIGHT_ALPHAS` ((0, 0, 0, 0) where
+    that alpha is 0): the colour is off too (r23 D-4: GL's single-pair alpha
+    α_s·α_s + α_d·(1 − α_s), which lesson 12 prints, got the general message)."""
+
+    def gives(alpha):
+        def wrong(src, dst):
+            s, d = np.asarray(src, float), np.asarray(dst, float)
+            a = float(alpha(s, d))
+            light = s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])
+            return np.zeros(4) if a == 0 else np.r_[light / a, a]
+
+        return wrong
+
+    head = "your alpha is wrong, and your colour is the light divided by it, so it is off too: "
+    return [Mistake(f"{k}, colour divided by it", head + w, gives=gives(a))
+            for k, w, a in STRAIGHT_ALPHAS]  # fmt: skip
+
 
 def _alpha_mistakes(right, alphas=ALPHAS, share=_SHARE) -> list[Mistake]:
     """The colour ``right(src, dst)`` gives with each wrong alpha of ``alphas``, then the
@@ -694,6 +722,29 @@ WHOLE_NUMBERS = Mistake(
     "whole numbers", "your answer is whole numbers (rounded, or converted to int): colours "
     "and alphas are fractions between 0 and 1, so keep them as floats",
     fits=_whole_numbers, symptom=True, only_whole=True,  # every failing answer whole
+)  # fmt: skip
+
+
+def _eight_bit(args, expected, got) -> bool:
+    """Every channel either right or rounded (or cut) to a step of 1/255, as an 8-bit buffer
+    stores it, and some channel off that grid in the expected answer (r23 D-4)."""
+    try:
+        g = np.asarray(got, float).ravel()
+    except (TypeError, ValueError):
+        return False
+    e = np.asarray(expected, float).ravel()
+    if g.shape != e.shape or not np.isfinite(g).all() or (e * 255 == np.round(e * 255)).all():
+        return False
+    exact = np.abs(g - e) <= 1e-9
+    return any(bool((exact | (np.abs(g - q) <= 1e-9)).all())
+               for q in (np.round(e * 255) / 255, np.floor(e * 255) / 255))  # fmt: skip
+
+
+#: r23 D-4: an answer rounded to 8 bits, ``round(x·255)/255``, was sent back to the steps.
+EIGHT_BIT = Mistake(
+    "8-bit rounding", "your answer is rounded to steps of 1/255, as an 8-bit buffer stores "
+    "it: the check compares floats (within 1e-6), so keep them unrounded",
+    fits=_eight_bit, symptom=True, only_whole=True,
 )  # fmt: skip
 
 
@@ -746,21 +797,28 @@ def _is_glow(c) -> bool:
     return c[3] == 0 and bool((np.asarray(c[:3]) > 0).any())
 
 
+def _glowing(args) -> str | None:
+    """ "src (…)" or "dst (…)": the first input that is a glow (9.2b has a glowing
+    destination too, r22 D-2), or None."""
+    return next((f"{n} {vec(c)}" for n, c in zip(("src", "dst"), args) if _is_glow(c)), None)
+
+
 def _glow_lost(args, expected, got) -> bool:
-    """A glow (alpha 0, light in it) and a NaN answer: divided by its alpha."""
-    return _is_glow(args[0]) and bool(np.isnan(np.asarray(got, float)).any())
+    """A glow (alpha 0, light in it) among the inputs and a NaN answer: divided by its alpha."""
+    return _glowing(args) is not None and bool(np.isnan(np.asarray(got, float)).any())
 
 
 def _zero_divided(args, expected, got) -> bool:
     """An input with alpha 0 (no glow) and a NaN answer: 0/0 from dividing by alpha."""
     src, dst = args
     zero = src[3] == 0 or dst[3] == 0
-    return zero and not _is_glow(src) and bool(np.isnan(np.asarray(got, float)).any())
+    return zero and _glowing(args) is None and bool(np.isnan(np.asarray(got, float)).any())
 
 
 def _glow_words(args, expected, got) -> str:
-    """A NaN at the glow: only a division by its alpha 0 gives one."""
-    return (f"src {vec(args[0])} is a glow: premultiplied light with alpha 0, covering nothing. "
+    """A NaN at the glow: only a division by its alpha 0 gives one (r23 D-1: it named src
+    also where the glow is dst)."""
+    return (f"{_glowing(args)} is a glow: premultiplied light with alpha 0, covering nothing. "
             "No straight colour holds it, so dividing by alpha (to work on straight colours, "
             "as 9.2a does) divides by zero; blended premultiplied, as it is, its light "
             "counts")  # fmt: skip
@@ -777,8 +835,22 @@ def _glow_skipped_words(args, expected, got) -> str:
             "light the same way)")  # fmt: skip
 
 
+def _atop_glow_lost_words(args, expected, got) -> str:
+    """9.2b's "glow lost" (:func:`_atop_via_straight`, or both inputs' colours clamped to
+    their alpha), in words true of the input that glows (r23 D-1: at a glowing destination
+    the answer, (0, 0, 0, 0), was called "the destination unchanged" and the source, alpha
+    ½, "a glow")."""
+    if _is_glow(args[0]):
+        return _glow_skipped_words(args, expected, got)
+    return (f"your answer is atop as if dst {vec(args[1])} carried no light, but it is a "
+            "glow: premultiplied light with alpha 0, covering nothing but carrying light. "
+            "Dividing it by its alpha 0 to work on straight colours, as 9.2a does (or clamping "
+            "its colour to that alpha), loses its light; atop keeps a destination's light "
+            "wherever the source does not cover it, a glow's too")  # fmt: skip
+
+
 def _mistakes(mode: str) -> list[Mistake]:
-    return [*_cause_mistakes(mode), WHOLE_NUMBERS]
+    return [*_cause_mistakes(mode), WHOLE_NUMBERS, EIGHT_BIT]
 
 
 def _atop_mistakes() -> list[Mistake]:
@@ -788,7 +860,7 @@ def _atop_mistakes() -> list[Mistake]:
             "premultiplied colours blend as they are, with no division")  # fmt: skip
     table = [Mistake(k, w, gives=g) for k, w, g in ATOP_MISTAKES]
     share = "the result's alpha is the share of the pixel in which something of it shows"
-    return [Mistake("glow lost", _glow_skipped_words, gives=_atop_via_straight),
+    return [Mistake("glow lost", _atop_glow_lost_words, gives=_atop_via_straight),
             Mistake("glow lost", _glow_words, fits=_glow_lost),
             Mistake("divided by alpha", zero, fits=_zero_divided), *table, *GLOW_MISTAKES,
             NOTHING_ATOP, SOURCE_SKIPPED, *_alpha_mistakes(premultiplied_atop, ATOP_ALPHAS, share)]  # fmt: skip
@@ -806,7 +878,8 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
         # so a right colour with a wrong alpha fits it there; named only when it fits them all
         swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                           only_whole=True)  # fmt: skip
-        return [nan, FAINT_STRAIGHT, *table, swapped, *_alpha_mistakes(straight_over)]
+        return [nan, FAINT_STRAIGHT, *table, swapped, *_divided_by_wrong_alpha(),
+                *_alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                    "is the incoming fragment, the second, dst, what the buffer holds",
@@ -834,16 +907,27 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
     return out
 
 
-def blend_answers(words: str | None = None) -> tuple[PackageAnswer, ...]:
+#: What 9.2a's report says of a call into the package's blend (r23 D-3: "which computes this
+#: very answer" was false: no factor pair gives a straight result, whose colour is divided by
+#: α; the blend can compute a step of it).
+STRAIGHT_STEP_WORDS = ("the package's blend is not counted as your work: write each step "
+                       "yourself (no blend factor pair gives straight over, whose colour is "
+                       "divided by the result's alpha, so a blend can only be a step of it)")  # fmt: skip
+
+
+def blend_answers(
+    words: str | None = None, checker: str | None = None
+) -> tuple[PackageAnswer, ...]:
     """Every route into the package's blending (r9: the private ``apply_blend`` passed
     unflagged while ``tr.blend_equation`` was flagged): the blend module's functions, which
     every render blends through, and the checker's own reference. ``words``: what the report
-    says of them instead (an exercise whose answer is more than one blend)."""
+    says of them instead (an exercise whose answer is more than one blend); ``checker``: of
+    the checker's reference (default ``words``, else :data:`CHECKER_WORDS`)."""
     step = "the blend this exercise asks you to write"
     return (PackageAnswer(blend_equation, words=words),
             PackageAnswer(apply_blend, what=step, words=words),
             PackageAnswer(factor, what=f"the blend factors, a part of {step}", words=words),
-            PackageAnswer(from_straight, words=words or CHECKER_WORDS))  # fmt: skip
+            PackageAnswer(from_straight, words=checker or words or CHECKER_WORDS))  # fmt: skip
 
 
 def _exercise(name: str, mode: str) -> Exercise:
@@ -937,6 +1021,7 @@ STRAIGHT_EXERCISE = Exercise(
     "over_straight", lambda: blend_cases("straight"), _rgba,
     lambda g, e, a: all_close(g, e, 1e-6), explain_blend, _rule("straight"),
     _mistakes("straight"), draw=_blend_drawer("straight"),
-    answers=(*blend_answers(), PackageAnswer(straight_over, words=CHECKER_WORDS)),  # r20 D-8
+    answers=(*blend_answers(STRAIGHT_STEP_WORDS, CHECKER_WORDS),
+             PackageAnswer(straight_over, words=CHECKER_WORDS)),  # r20 D-8
     example=4,  # quarter green over half grey: both translucent
 )  # fmt: skip

@@ -332,6 +332,19 @@ def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]
         else:
             kind, words = _generic(spec, r)
         out[r.index] = (kind, _say(spec, r, words))
+    return _said_once(spec, out)
+
+
+def _said_once(spec: Exercise, out: dict[int, tuple[str, str]]) -> dict[int, tuple[str, str]]:
+    """Each of ``spec.once``'s texts in full on its first failing case, short on the rest."""
+    for text, short_text in spec.once:
+        said = False
+        for index in sorted(out):
+            kind, words = out[index]
+            if text in words:
+                if said:
+                    out[index] = (kind, words.replace(text, short_text))
+                said = True
     return out
 
 

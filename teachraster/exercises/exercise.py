@@ -203,6 +203,10 @@ class Exercise:
         Further checker modules whose functions compute this exercise's expected answers
         (``covers``' :mod:`.coverage`), watched with the module of :attr:`cases`: a student's
         call into them does not count (r14 09-1, :mod:`.package_answers`).
+    once : sequence of (str, str)
+        (text, short): a long sentence that many explanations share, said in full by the
+        first failing case (in case order) whose explanation holds it and as ``short`` by the
+        rest (r23 D-6: ``line_pixels``' ~90-word tie rule stood on every line).
     """
 
     name: str
@@ -227,6 +231,7 @@ class Exercise:
     tries: int | None = None
     free_causes: int = 2
     reference: Sequence[str] = ()
+    once: Sequence[tuple[str, str]] = ()
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

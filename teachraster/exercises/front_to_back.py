@@ -29,7 +29,7 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers
-from .blending import WHOLE_NUMBERS, blend_answers, colour_texts, swatches
+from .blending import EIGHT_BIT, WHOLE_NUMBERS, blend_answers, colour_texts, swatches
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
@@ -330,6 +330,7 @@ WALK = [
             "black, (0, 0, 0, 0), which adds no light and covers nothing, so the composite "
             "is the layers' alone", fits=lambda a, e, g: _over_white(e, g)),
     WHOLE_NUMBERS,
+    EIGHT_BIT,  # r23 D-4
 ]  # fmt: skip
 
 

@@ -249,18 +249,42 @@ _TIE = (
     "a horizontal one on y = k row k − 1, the upper row, as Direct3D does (GL moves y by −ε² "
     "in its own window, whose y points up, and lights the lower row, row k: lesson 12 §1)"
 )
-#: Why a float perturbation can vanish: the student's ε² (or ε) below float64's rounding of
-#: coordinates such as 3.0 (r8: 1e-18 was told "left y as it is", and the student had not).
-_LOST = ("{what} (or yours was lost in floating point: 3.0 − {tiny} == 3.0 in float64, whose "
-         "spacing near 3 is 4.4e-16; compute with Fraction, as the task says)")  # fmt: skip
+#: How :data:`_TIE` reads after the first line that says it in full (r23 D-6).
+_TIE_AGAIN = "at a tie the rule moves both end points by (−ε, −ε²), as said above"
+
+
+def _float_example(args, axes) -> str:
+    """ ": 6.0 − 1e-16 == 6.0 in float64, whose spacing just below 6 is 8.9e-16", for a
+    coordinate of the case's own end points on ``axes`` (0: x, 1: y), one on a pixel
+    boundary first (where the ties are): a move below half that spacing vanishes (r23 D-6:
+    the words quoted 3.0 on lines at x = 5 and y = 6). Empty when every such coordinate is 0."""
+    values = [float(p[k]) for k in axes for p in args if float(p[k]) != 0]
+    if not values:
+        return ""
+    v = min(values, key=lambda x: (x != round(x), abs(x)))  # a boundary first, then the nearest
+    tiny = next(10.0**k for k in range(-1, -330, -1) if v - 10.0**k == v)
+    gap = v - float(np.nextafter(v, -np.inf))
+    return f": {v!r} − {tiny:.0e} == {v!r} in float64, whose spacing just below it is {gap:.2g}"
+
+
+def _lost(what: str, axes):
+    """Words for a perturbation that an answer may have lost to rounding: ``what`` it shows,
+    and the case's own coordinate that a float move vanishes beside (r8: 1e-18 was told
+    "left y as it is", and the student had not)."""
+
+    def words(args, expected, got) -> str:
+        return (f"{_TIE}; {what} (or yours was lost in floating point"
+                f"{_float_example(args, axes)}; compute with Fraction, as the task says)")  # fmt: skip
+
+    return words
+
 
 #: (x move, y move) -> what the student did, in words. Each wrong pair names the coordinate
 #: that is off and by how much, never a mistake the answer cannot show (r8: (−ε, −ε) was
 #: called "you swapped the two").
 _MOVES = {
-    (0.0, 0.0): ("no perturbation", _LOST.format(what="you did not move the end points at all",
-                                                 tiny="1e-17")),
-    (-EPS, 0.0): ("no ε² in y", _LOST.format(what="you did not move y", tiny="1e-18")),
+    (0.0, 0.0): ("no perturbation", _lost("you did not move the end points at all", (0, 1))),
+    (-EPS, 0.0): ("no ε² in y", _lost("you did not move y", (1,))),
     (-EPS, EPS * EPS): ("+ε² in y", "you moved y by +ε² (down the image; the rule moves it up, "
                         "by −ε²)"),
     (-EPS, -EPS): ("ε in y", "you moved y by −ε, as much as x: y moves by ε², far "
@@ -306,7 +330,8 @@ def _start_diamond_dark(a, e, g):
 
 
 LINE_KNOBS = Knobs(diamond_pixels, {
-    "eps": [Slip(kind, f"{_TIE}; {words}", move) for move, (kind, words) in _MOVES.items()],
+    "eps": [Slip(kind, words if callable(words) else f"{_TIE}; {words}", move)
+            for move, (kind, words) in _MOVES.items()],
     "end": [Slip("end pixel lit", _end_lit, True),
             Slip("end tested before moving", _end_unmoved, "unmoved"),
             # r11 09-F: with the boundary counted in as well, the rule was restated
@@ -514,6 +539,6 @@ LINE_PIXELS = Exercise(
         f"your function returns {short(set(v)) if len(v) else 'no pixels'} for every line, "
         "whatever its end points: a placeholder left in?"),
     answers=(PackageAnswer(rasterize_line, modules=("teachraster.core.line_rules",)),),
-    draw=draw_line, partial_names=False,
+    draw=draw_line, partial_names=False, once=((_TIE, _TIE_AGAIN),),
     example=7,  # 45° along diamond edges: ties, drawn over the diamonds
 )  # fmt: skip
