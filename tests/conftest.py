@@ -393,3 +393,16 @@ def pytest_runtest_protocol(item, nextitem):
     }
     with open(log, "a") as fh:
         fh.write(json.dumps(row) + "\n")
+
+
+@pytest.fixture(autouse=True)
+def _matplotlib_style_stays_in_its_test():
+    """A test that sets a style for good (``use_style("classroom")`` outside a block) no longer
+    leaks into the tests after it in the same worker: every test ends with the rcParams it
+    started with. Twice a leak failed CI at random (an 18-pt font where a test expected the
+    default), depending on which worker ran which test first."""
+    mpl = sys.modules.get("matplotlib")
+    saved = dict(mpl.rcParams) if mpl is not None else None
+    yield
+    if saved is not None:
+        dict.update(mpl.rcParams, saved)  # as rc_context restores: the values were valid

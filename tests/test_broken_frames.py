@@ -1282,12 +1282,21 @@ def test_history_legend_covers_no_tile_or_marker(number):
     function', the highest depth) lay under the legend, which had room for two rows and had
     three. At the inspector's figure size, after a draw, no legend overlaps a tile or a
     buffer marker at any changed pixel (every third), in either frame of the pair."""
+    import matplotlib
     import matplotlib.pyplot as plt
 
     from teachraster.plotting import plot_history, use_style
 
-    use_style("classroom")
-    broken = ex.broken_frame(number)
+    # the style within a block: set for good it leaks into this worker's later tests (CI
+    # failed test_style_applies_to_the_widget_only after it, rcParams' font at 18)
+    with matplotlib.rc_context():
+        use_style("classroom")
+        covered = _legend_covers(ex.broken_frame(number), plot_history, plt)
+    assert not covered, f"frame {number}: the legend covers a tile or marker at {covered[:5]}"
+
+
+def _legend_covers(broken, plot_history, plt) -> list:
+    """The changed pixels (every third) whose history plot's legend covers a tile or marker."""
     fig = plt.figure(figsize=(4.6, 3.9), dpi=96)  # as FrameInspector's history figure
     ax = fig.add_axes((0.26, 0.24, 0.71, 0.66))
     covered = []
@@ -1312,7 +1321,7 @@ def test_history_legend_covers_no_tile_or_marker(number):
                     covered.append((row, col))
     finally:
         plt.close(fig)
-    assert not covered, f"frame {number}: the legend covers a tile or marker at {covered[:5]}"
+    return covered
 
 
 def test_frames_7_to_9_have_no_free_wrong_cause(monkeypatch):
