@@ -154,7 +154,9 @@ class DivideCostExplorer(Shown):
         title = title_html(
             "What a divide costs decides the price of exactness",
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
-            f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}.",
+            f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}. "
+            "A hollow ring: off the front though on its line (as cheap, less accurate), as in "
+            "lesson 06's depth chart.",
         )
         controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
