@@ -360,12 +360,14 @@ LESSON_06_INTERPOLATION = [
 ]  # fmt: skip
 
 
-def test_divide_cost_axis_is_the_same_at_every_price_and_labelled_at_1_2_5():
+def test_divide_cost_axis_fits_each_price_inside_the_figure_and_labelled_at_1_2_5():
     """Review r11 06-1: each error measure's layout was solved where it was first shown, the
     cost axis fitted to each price: after divide 1 (the axis ending near 15) and the first
-    toggle to mean error, back at 30 the "10²" at the right edge was cut off. The cost axis
-    now has one range for every price (the points move along it), so one layout holds; and
-    its labels are at 1-2-5, as the error axis' (only 10⁰, 10¹, 10² were labelled)."""
+    toggle to mean error, back at 30 the "10²" at the right edge was cut off. Review r23 06-8:
+    one range for every price (0.7-600) left two thirds of the plot empty at divide 1. The
+    axis is fitted at each price again, the layout keeps room on the right for a label at its
+    end (every price and measure inside the figure), and its labels are at 1-2-5, as the error
+    axis' (only 10⁰, 10¹, 10² were labelled)."""
     from teachraster.widgets.divide_cost import DivideCostExplorer
 
     rows = [{"variant": v, "group": "interpolation", "divides": d, "multiplies": m,
@@ -373,7 +375,7 @@ def test_divide_cost_axis_is_the_same_at_every_price_and_labelled_at_1_2_5():
             for v, d, m, a, e, mean in LESSON_06_INTERPOLATION]  # fmt: skip
     ex = DivideCostExplorer(rows, backend="image")
     try:
-        limits = set()
+        limits = {}
         for divide, error in [(1.0, "max error"), (1.0, "mean error"), (30.0, "mean error"),
                               (128.0, "mean error"), (128.0, "max error")]:  # fmt: skip
             ex.divide.value, ex.error.value = divide, error
@@ -382,12 +384,13 @@ def test_divide_cost_axis_is_the_same_at_every_price_and_labelled_at_1_2_5():
             box = ex.ax.get_tightbbox(fig.canvas.get_renderer())  # ticks, labels and all
             assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1, (divide, error)
             assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1, (divide, error)
-            limits.add(ex.ax.get_xlim())
+            limits[divide] = ex.ax.get_xlim()
             costs = [p.get_xdata()[0] for p in ex.art.points.values()]
             lo, hi = ex.ax.get_xlim()
             assert lo < min(costs) and max(costs) < hi
-        assert len(limits) == 1
-        lo, hi = limits.pop()
+            # the points span over half the axis' decades, even at divide 1
+            assert np.log(max(costs) / min(costs)) > 0.5 * np.log(hi / lo), (divide, lo, hi)
+        lo, hi = limits[128.0]
         shown = [t.get_text() for t in ex.ax.get_xticklabels()
                  if lo <= t.get_position()[0] <= hi]  # fmt: skip
         assert {"1", "2", "5", "10", "20", "50", "100"} <= set(shown), shown

@@ -87,7 +87,7 @@ def test_06_doom_level_floor_is_exact_and_the_rolled_floor_is_not():
     level, rolled = ns.worst_by_roll[0.0], ns.worst_by_roll[25.0]
     assert level[16] < 1e-9 and level["span ends"] < 1e-9  # "both exact to rounding"
     assert rolled[16] == pytest.approx(ns.subdivided[16]["error"])  # the table's N = 16
-    assert rolled["span ends"] > 100  # "over a hundred texels off"
+    assert rolled["span ends"] > 100  # "far further off" (magnitude kept out of the prose: r23)
 
 
 def test_06_edge_table_gaps_and_incremental_lists():
@@ -348,6 +348,39 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     assert "Quake used $N = 16$" not in md and "portable C version $N = 8$" in md
     assert "`python ../benchmarks/bench_lesson06_signs.py`" in md
     assert "slide 21" in md and "*Triangle Rasterisation II - Interpolation*" in md
+
+
+def test_06_review_r23_tables_fit_and_wording():
+    """Review r23, 06: every printed table fits a notebook column (80 characters); SSE's
+    truncating conversions named; Doom paid no divide per span; the divide's cost per
+    attribute (not its share) falls like 1/k; no magnitude of q_quake's answer in the prose
+    below it, no statement of q_rule's rule above its check; a real GPU's edge budget."""
+    import json
+
+    from notebook_runs import executed
+
+    ns = lesson("06_what_accuracy_costs")
+    tables = [c for c in executed("06_what_accuracy_costs").notebook().cells
+              if c.cell_type == "code" and " = table(" in c.source]  # fmt: skip
+    assert len(tables) == 4
+    for cell in tables:  # the four tables and the lines printed under them
+        for out in cell.outputs:
+            for line in out.get("text", "").splitlines() if out.output_type == "stream" else []:
+                assert len(line) <= 80, line
+    assert ns.gpu_bits == 51 > max(ns.needed.values())  # "needs 51 bits", int64 and float64
+    assert ns.gpu_bits <= 53 < 63
+    assert ns.same  # "E > 0 leaves open exactly the centres E >= 0 draws twice or more"
+    shares = [share for _, share in ns.shared.values()]
+    assert shares == sorted(shares, reverse=True) and shares[1] > shares[0] / 4  # not like 1/k
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "`cvttss2si`" in md and "`cvttps2dq`" in md
+    assert "Doom's price" not in md and "no divide per span" in md
+    assert "share shrinks like $1/k$" not in md and "$d/k$, falling like $1/k$" in md
+    assert "tens of texels" not in md and "over a hundred texels" not in md
+    assert "The two naive rules fail on exactly the same centres" not in md
+    assert "Direct3D's 16.8 fixed point" in md and "needs 51 bits" in md
 
 
 # -- 07 hard cases ---------------------------------------------------------------------------

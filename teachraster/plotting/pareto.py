@@ -33,7 +33,7 @@ class ParetoArtists:
     floor: float
     front: list
     short: object = None
-    xlim: tuple | None = None  # fixed cost limits (None: each update fits its costs)
+    xlim: object = None  # cost limits: fixed, a function of the costs, or None (cost_limits)
     spreader: object = None  # places the labels again at each draw (_LabelSpreader)
     hollow_on_line: bool = False  # off-front points on the front line drawn hollow over it
 
@@ -50,7 +50,7 @@ def error_floor(rows, y: str = "error") -> float:
 
 
 def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel: str = "",
-                title: str = "", short=None, logx: bool = True, xlim: tuple | None = None,
+                title: str = "", short=None, logx: bool = True, xlim=None,
                 hollow_on_line: bool = False) -> ParetoArtists:  # fmt: skip
     """Draw ``rows`` as error ``y`` against cost ``x`` with their Pareto front.
 
@@ -68,10 +68,10 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
         Maps a variant name to the label drawn beside its point.
     logx : bool
         Log scale for the cost.
-    xlim : (float, float), optional
+    xlim : (float, float) or callable, optional
         The cost axis' limits at every update (e.g. :func:`cost_limits` of every cost a
-        widget can show, so that its layout and ticks never change); default: fitted to the
-        costs of each update.
+        widget can show, so that its layout and ticks never change), or a function of each
+        update's costs returning them; default: :func:`cost_limits` of each update's costs.
     hollow_on_line : bool
         Draw an off-front point that the front's step line runs through (a cost tie that is
         less accurate) hollow, over the line, so that it does not read as on the front.
@@ -196,7 +196,8 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
     art.front_line.set_data(xs, shown)
     allx = [r[x] for r in rows]
     ally = np.array([art.floor if r[y] < EXACT_BELOW else r[y] for r in rows], dtype=float)
-    ax.set_xlim(*(art.xlim or cost_limits(allx, log=ax.get_xscale() == "log")))
+    limits = art.xlim(allx) if callable(art.xlim) else art.xlim
+    ax.set_xlim(*(limits or cost_limits(allx, log=ax.get_xscale() == "log")))
     ax.set_ylim(ally.min() / 3.0, ally.max() * 3.0)
     if art.spreader is not None:
         art.spreader.spread()

@@ -16,8 +16,9 @@ from types import SimpleNamespace
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.ticker import FormatStrFormatter, LogLocator
+from matplotlib.transforms import Bbox
 
-from ..plotting.pareto import cost_limits, floor_ticks, plot_pareto, update_pareto
+from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
 from ..study.operation_counts import CYCLES_1990S
 from .ahead import PicturesAhead, show_kept
@@ -33,6 +34,8 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 
 #: At most this many labels on the error axis: 1-2-5 over five decades packed 16 into 400 px.
 MOST_ERROR_LABELS = 8
+#: The share of the figure's width the layout keeps right of the axes (see ``_lay_out``).
+RIGHT_ROOM = 0.03
 
 #: The two error measures offered: the study's largest error and its mean.
 ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
@@ -54,6 +57,15 @@ def divide_positions(divide: float) -> list[float]:
     if not 0 < divide < float("inf"):
         raise ValueError(f"divide must be a positive finite number of cycles, got {divide}")
     return sorted({float(v) for v in DIVIDE_CYCLES} | {float(divide)})
+
+
+def cost_axis(costs) -> tuple[float, float]:
+    """The cost axis' limits at one price: fitted to its ``costs`` (at divide 1 a fixed
+    0.7-600 left two thirds of the plot empty: review r23, 06-8), with room on the right for
+    the dearest point's label, a fixed share of the axis' decades (at divide 128 "perspective"
+    ended on the right spine with less: review r22, 06-8)."""
+    lo, hi = float(np.min(costs)) / 1.6, float(np.max(costs))
+    return lo, hi * 10 ** (0.1 + 0.3 * np.log10(hi / lo))
 
 
 def short_name(variant: str) -> str:
@@ -129,14 +141,9 @@ class DivideCostExplorer(Shown):
             description="divide =", layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         self._style = style
-        #: the cost axis' limits at every price: its ticks, and so the layout, never change
-        #: (a layout solved at divide 1, whose axis ends near 15, cut "10²" off at 30: r11)
-        prices = divide_positions(divide)
-        lo, hi = cost_limits([r["cycles"] for p in (prices[0], prices[-1])
-                              for r in priced(self.rows, p)])  # fmt: skip
-        # half as much room again on the right: at the top price the dearest point's label
-        # ("perspective") ended on the right spine (review r22, 06-8)
-        self.xlim = (lo, hi * 1.5)
+        #: the cost axis' limits, fitted at each price (:func:`cost_axis`); the layout keeps
+        #: room on the right for a tick label at the axis' end (:meth:`_lay_out`)
+        self.xlim = cost_axis
         with style_context(style):
             self._new_figure()
             self._plot()
@@ -154,7 +161,9 @@ class DivideCostExplorer(Shown):
         title = title_html(
             "What a divide costs decides the price of exactness",
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
-            f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}.",
+            f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}. "
+            "A hollow ring: off the front though on its line (as cheap, less accurate), as in "
+            "lesson 06's depth chart.",
         )
         controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
@@ -222,7 +231,13 @@ class DivideCostExplorer(Shown):
             self.ax.set_in_layout(True)  # set_position() below took it out of the layout
             self.fig.set_layout_engine("constrained")
             self.fig.canvas.draw()
-            place = self._places[self.error.value] = self.ax.get_position()
+            solved = self.ax.get_position()
+            # room on the right for half a tick label at the axis' end: the cost axis is
+            # fitted at each price, and a label ending it at another price ran off the
+            # figure (r11: "10²" at divide 30, after a layout solved at divide 1)
+            place = self._places[self.error.value] = Bbox.from_bounds(
+                solved.x0, solved.y0, solved.width - RIGHT_ROOM, solved.height
+            )
         self.fig.set_layout_engine("none")
         self.ax.set_position(place)
 
