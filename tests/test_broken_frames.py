@@ -1451,3 +1451,36 @@ def test_the_pair_view_puts_the_tables_under_the_picture():
         w.close()
     text = " ".join(_cells()["inspector_text"].split())
     assert "right under the picture" in text, text
+
+
+def test_the_history_chart_names_the_frame_it_shows():
+    """r22 D1: with the pair beside, the one chart stood under the intended frame's table,
+    titled only "pixel (row 23, col 41)", and showed the frame on display: a student read it
+    as the intended frame's. Its title names the frame drawn, and says "on display" while the
+    pair's table stands beside; it follows the frame chosen and lies inside its figure."""
+    import matplotlib
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets import FrameInspector
+
+    with matplotlib.rc_context():
+        use_style("classroom")  # the notebook's style: the title keeps its size (>= 12 px)
+        w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(),
+                           backend="image", row=23, col=41)  # fmt: skip
+        try:
+            w.scene.value = "frame 5"
+            assert w.hist_ax.get_title() == "frame 5 (on display): row 23, col 41"
+            w.scene.value = "intended 5"
+            assert w.hist_ax.get_title().startswith("intended 5 (on display): ")
+            w.beside.value = False  # one table: nothing to tell apart
+            assert w.hist_ax.get_title() == "intended 5: pixel (row 23, col 41)"
+            w.beside.value = True
+            w.row.value = 24
+            title = w.hist_ax.title
+            assert title.get_text() == "intended 5 (on display): row 24, col 41"
+            w.hist_fig.canvas.draw()
+            box = title.get_window_extent(w.hist_fig.canvas.get_renderer())
+            assert 0 <= box.x0 and box.x1 <= w.hist_fig.bbox.width, box
+            assert title.get_fontsize() * w.hist_fig.dpi / 72 >= 12, title.get_fontsize()
+        finally:
+            w.close()
