@@ -362,8 +362,8 @@ def test_a_swapped_pixel_or_pair_is_named():
 def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(monkeypatch):
     """r12 11-2: ten causes × 40 generic history readers passed all six frames in 2,100 checks,
     51 s. Past the failing checks allowed (3 here, 25 for a class) each check of the same
-    frame first waits, 1 s more each time, at most 30 s, outside the student's budget; the
-    report says why; a pass starts the count again; another frame keeps its own count; a
+    frame that fails waits, 1 s more each time, at most 30 s, outside the student's budget;
+    the report says why; a pass never waits (r22 D3) and starts the count again; another frame keeps its own count; a
     check inside the student's function does not wait; 0 turns it off; a typo is refused."""
     from teachraster.exercises import tries
 
@@ -379,9 +379,10 @@ def test_a_blind_search_meets_a_growing_wait_past_the_failing_checks_allowed(mon
     assert "- 6 failing checks of broken_frame_1" in str(ex.check("broken_frame_1", wrong))
     assert waits == [1.0, 2.0]
     assert ex.check("broken_frame_2", wrong).tries is None and waits == [1.0, 2.0]
-    report = ex.check("broken_frame_1", sol.diagnosis(1))
-    assert report.passed and report.tries is None and waits[-1] == 3.0
-    assert ex.check("broken_frame_1", wrong).tries is None and len(waits) == 3
+    report = ex.check("broken_frame_1", sol.diagnosis(1))  # r22 D3: a pass never waits
+    assert report.passed and report.tries is None and waits == [1.0, 2.0], waits
+    assert "a passing check never waits" in notes[4]
+    assert ex.check("broken_frame_1", wrong).tries is None and len(waits) == 2
     tries._FAILED["broken_frame_1"] = 1000
     assert tries.wait("broken_frame_1", 25) == 30.0  # capped
     inner = []
@@ -610,7 +611,11 @@ def test_the_notebook_says_in_the_tasks_what_the_solutions_knew():
     task = " ".join(cells["frame_1_task"].split())
     assert "near 0" not in task and "at fault" not in task
     depths = cells["frame_1_depths"]
-    assert "depth[9]" in depths and "depth[3]" in depths
+    # r22 D4: the source (shown before any answer) names neither the pixel nor the faces: the
+    # depths are frame 1's note, printed once its check passes
+    assert "ex.frame_note(1, " in depths, depths
+    for told in ("24", "28", "9", "3", "in front", "behind"):
+        assert told not in depths, told
     # r13: the comment no longer tells the order (it ships to students before any answer)
     assert "smaller" not in depths and "larger" not in depths
     # 11-C: triangle 3 (0.973767 in the intended frame) is the face behind, hidden by 9
@@ -692,8 +697,10 @@ def test_every_frame_has_its_note_after_its_check_none_singled_out(capsys):
         assert not re.search(rf"frame (?!{n}\b)\d", note.lower()), note  # names no other frame
     assert len(placeholders) == 1, placeholders
     assert "ontrived" not in " ".join(v for k, v in cells.items() if k.endswith("_task"))
+    # r22 D4: frame 1's note is its two faces' depths (the cell's source named the pixel)
+    assert ex.frame_note(1, None).replace("1", "n") in {p.strip() for p in placeholders}
     with pytest.raises(ValueError, match="number must be one of"):
-        ex.frame_note(1, None)
+        ex.frame_note(10, None)
 
 
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
@@ -716,16 +723,19 @@ def test_the_frame_1_depths_are_printed_only_once_its_check_has_passed(capsys):
     Now it prints them only when the last report is broken_frame_1's and passed."""
     source = _cells()["frame_1_depths"]
     wrong = lambda b: ("texture filtering", (24, 28), (0.5, 0.5, 0.5))  # noqa: E731
-    pair = {1: ex.broken_frame(1)}
     for namespace in ({}, {"report": ex.check("broken_frame_1", wrong)},
                       {"report": ex.check("broken_frame_2", sol.diagnosis(2))}):  # fmt: skip
-        exec(source, {"broken": pair, **namespace})
+        exec(source, {"ex": ex, **namespace})
         shown = capsys.readouterr().out
         assert "once the check of broken_frame_1" in shown and "0.9" not in shown, shown
         assert "in front" not in shown, shown
-    exec(source, {"broken": pair, "report": ex.check("broken_frame_1", sol.diagnosis(1))})
+    exec(source, {"ex": ex, "report": ex.check("broken_frame_1", sol.diagnosis(1))})
     shown = capsys.readouterr().out
     assert shown.count("in front (triangle 9)") == 2 and "0.973767" in shown, shown
+    assert "frame 1 at (24, 28): in front (triangle 9) 0.039988, behind (3) 0.026233" in shown
+    assert (
+        "intended frame at (24, 28): in front (triangle 9) 0.960012, behind (3) 0.973767" in shown
+    )
 
 
 def test_broken_frame_causes_are_listed_alphabetically_never_in_the_frames_order():
@@ -1350,6 +1360,16 @@ def test_frames_7_to_9_have_no_free_wrong_cause(monkeypatch):
         )  # the right one: no wait
     report = ex.check("broken_frame_1", lambda b: ("sliver", (24, 28), 0.5))
     assert report.tries is None and len(waits) == 3  # frames 1 to 6: two still free
+    # r22 D2: told in 11.7's own text, not only in the collapsed box; D3: the box's "a right
+    # cause never waits" is said exactly (the count of failing checks waits too, never a pass)
+    cells = _cells()
+    task = " ".join(cells["frame_7_task"].split())
+    assert (
+        f"no wrong cause is free: a check naming a wrong cause waits {tries.CAUSE_STEP:g} s" in task
+    )
+    how = " ".join(cells["how_text"].split())
+    assert "A check that passes never waits, and a right cause never waits for the wrong" in how
+    assert "A right cause never waits." not in how
 
 
 def test_messages_say_what_the_redrawn_frame_changes_and_round_and_are_not_repeated():
@@ -1451,3 +1471,36 @@ def test_the_pair_view_puts_the_tables_under_the_picture():
         w.close()
     text = " ".join(_cells()["inspector_text"].split())
     assert "right under the picture" in text, text
+
+
+def test_the_history_chart_names_the_frame_it_shows():
+    """r22 D1: with the pair beside, the one chart stood under the intended frame's table,
+    titled only "pixel (row 23, col 41)", and showed the frame on display: a student read it
+    as the intended frame's. Its title names the frame drawn, and says "on display" while the
+    pair's table stands beside; it follows the frame chosen and lies inside its figure."""
+    import matplotlib
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets import FrameInspector
+
+    with matplotlib.rc_context():
+        use_style("classroom")  # the notebook's style: the title keeps its size (>= 12 px)
+        w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(),
+                           backend="image", row=23, col=41)  # fmt: skip
+        try:
+            w.scene.value = "frame 5"
+            assert w.hist_ax.get_title() == "frame 5 (on display): row 23, col 41"
+            w.scene.value = "intended 5"
+            assert w.hist_ax.get_title().startswith("intended 5 (on display): ")
+            w.beside.value = False  # one table: nothing to tell apart
+            assert w.hist_ax.get_title() == "intended 5: pixel (row 23, col 41)"
+            w.beside.value = True
+            w.row.value = 24
+            title = w.hist_ax.title
+            assert title.get_text() == "intended 5 (on display): row 24, col 41"
+            w.hist_fig.canvas.draw()
+            box = title.get_window_extent(w.hist_fig.canvas.get_renderer())
+            assert 0 <= box.x0 and box.x1 <= w.hist_fig.bbox.width, box
+            assert title.get_fontsize() * w.hist_fig.dpi / 72 >= 12, title.get_fontsize()
+        finally:
+            w.close()

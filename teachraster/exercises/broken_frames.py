@@ -525,20 +525,41 @@ _NOTES = {
 }
 
 
+#: Frame 1's note: a pixel where the two faces overlap, and the triangles of the face in
+#: front and of the face behind (in the intended frame's order), whose depths it prints.
+FRAME_1_DEPTHS = (24, 28), 9, 3
+
+
+def _frame_1_depths() -> str:
+    """The two faces' depths at one pixel, in frame 1 and its intended frame (r22 D4: they
+    were printed by a locked cell whose source, shown before any answer, named the pixel and
+    the face in front)."""
+    (row, col), front, behind = FRAME_1_DEPTHS
+    pair = broken_frame(1)
+    lines = []
+    for what, frame in (("frame 1", pair.frame), ("intended frame", pair.intended)):
+        depth = {r.triangle: r.depth for r in frame.history(row, col).records
+                 if r.depth is not None}  # fmt: skip
+        lines.append(f"{what} at ({row}, {col}): in front (triangle {front}) "
+                     f"{depth[front]:.6f}, behind ({behind}) {depth[behind]:.6f}")  # fmt: skip
+    return "\n".join(lines)
+
+
 def frame_note(number: int, report) -> str:
-    """What the notebook tells after frame ``number``'s check: its note, once ``report`` (a
-    report :func:`~.checks.check` returned for that frame) has passed; until then, where it
-    will be told.
+    """What the notebook tells after frame ``number``'s check: its note (frame 1's: the two
+    faces' depths at one pixel in both frames), once ``report`` (a report
+    :func:`~.checks.check` returned for that frame) has passed; until then, where it will be
+    told.
 
     >>> print(frame_note(4, None))
     A note on frame 4 is printed here once the check of broken_frame_4 above passes.
     """
     number = as_int("number", number)
-    if number not in _NOTES:
-        raise ValueError(f"number must be one of {sorted(_NOTES)}, got {number}")
+    if number != 1 and number not in _NOTES:
+        raise ValueError(f"number must be one of {[1, *sorted(_NOTES)]}, got {number}")
     name = f"broken_frame_{number}"
     if getattr(report, "exercise", None) == name and issued(report) and report.passed:
-        return _NOTES[number]
+        return _frame_1_depths() if number == 1 else _NOTES[number]
     # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
     # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
     return f"A note on frame {number} is printed here once the check of {name} above passes."

@@ -7,12 +7,14 @@ to 5). A diagnosis needs a few checks; that blind product needs hundreds (a loop
 the verdict, a wrong cause first, needs a few dozen: r13, docs/grading.md; this does not stop
 it). So an exercise may set
 :attr:`~.exercise.Exercise.tries`: past that many failing checks of the same task in one
-kernel, the report says a diagnosis does not need that many, and each further check of the
-task waits before it answers, :data:`WAIT_STEP` more for each failing check past the number,
+kernel, the report says a diagnosis does not need that many, and each further failing check
+of the task waits, once judged and before it answers, :data:`WAIT_STEP` more for each failing check past the number,
 at most :data:`WAIT_MOST` (a search of 300 checks then takes hours; a student past the number
-waits seconds). A passing check starts the count again.
+waits seconds). A passing check starts the count again and never waits (a blind search is slow
+by its failing checks; r22 D3: a right answer after 27 failing checks waited 2.1 s, where the
+notebook says a right cause never waits).
 
-The wait is a sleep before the check's budget opens: it takes no CPU and none of the student's
+The wait is a sleep after the check's budget closed: it takes no CPU and none of the student's
 budget, and it never hangs (capped). A check run inside the student's function (inside another
 check) does not wait: it never passes anyway. The environment variable
 ``TEACHRASTER_CHECK_TRIES`` sets the number for a class (``0``: no counting, no wait; the test
@@ -104,8 +106,8 @@ def counted(name: str, default: int | None, passed: bool) -> str | None:
     return (
         f"{failed} failing checks of {name} in this kernel: a diagnosis does not need that "
         "many tries (read the two histories of one changed pixel, stage by stage). Each "
-        f"further check waits {WAIT_STEP:g} s more before it answers (at most "
-        f"{WAIT_MOST:g} s), until one passes"
+        f"further failing check waits {WAIT_STEP:g} s more before it answers (at most "
+        f"{WAIT_MOST:g} s), until one passes; a passing check never waits"
     )
 
 

@@ -352,7 +352,7 @@ class FrameInspector(Holdable):
             control.observe(self._rerender, "value")
             control.disabled = bool(self.frames) and control is not self.scene
         self.view.observe(self._view_changed, "value")
-        self.beside.observe(lambda change: self._show_history(), "value")
+        self.beside.observe(self._beside_changed, "value")
         for control in (self.row, self.col):
             control.observe(self._pixel_changed, "value")
         title = title_html(
@@ -462,6 +462,22 @@ class FrameInspector(Holdable):
     def _draw_history(self) -> None:
         self.hist_ax.clear()
         plot_history(self.hist_ax, self.history)
+        if self.frames:  # r22 D1: whose history, as the chart stands under the pair's table
+            self.hist_ax.set_title(self.history_title(), fontsize="small")
+            fit_title(self.hist_ax)
+
+    def history_title(self) -> str:
+        """The chart's title: the frame whose history it draws (with the pair's table shown
+        beside, the frame on display: "frame 5 (on display): row 23, col 41"), so that a
+        chart under the pair's table is not read as the pair's (review r22, D1). Short enough
+        to keep its size in the classroom style ("intended 5 (on display): pixel (row 23,
+        col 41)" shrank to 11.8 px)."""
+        row, col = self.history.row, self.history.col
+        if not self.frames:
+            return f"pixel (row {row}, col {col})"
+        if self.pair_history is None:
+            return f"{self.scene.value}: pixel (row {row}, col {col})"
+        return f"{self.scene.value} (on display): row {row}, col {col}"
 
     # -- display -------------------------------------------------------------------------
     def _make_displays(self) -> None:
@@ -524,6 +540,11 @@ class FrameInspector(Holdable):
         self.marker.set_data(*marker_xy(self.row.value, self.col.value))
         self._draw_history()
         self._refresh()
+
+    def _beside_changed(self, change) -> None:
+        self._show_history()
+        self._draw_history()  # the chart's title says whether a pair is beside
+        self.hist_display.refresh()
 
     def _view_changed(self, change) -> None:
         self._show_history()  # the quad overshading view adds the quad's triangles
