@@ -87,7 +87,7 @@ def test_06_doom_level_floor_is_exact_and_the_rolled_floor_is_not():
     level, rolled = ns.worst_by_roll[0.0], ns.worst_by_roll[25.0]
     assert level[16] < 1e-9 and level["span ends"] < 1e-9  # "both exact to rounding"
     assert rolled[16] == pytest.approx(ns.subdivided[16]["error"])  # the table's N = 16
-    assert rolled["span ends"] > 100  # "far further off" (magnitude kept out of the prose: r23)
+    assert rolled["span ends"] > 100  # "much further off" (magnitude kept out of the prose: r23)
 
 
 def test_06_edge_table_gaps_and_incremental_lists():
