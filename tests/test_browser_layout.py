@@ -268,3 +268,38 @@ def test_every_widget_is_usable_at_projector_sizes(lab, page, app):  # noqa: F81
     for size in ("1400x900", "1024x768"):  # the format's toggles on one line (they took 2)
         assert found[size]["DepthPrecisionExplorer"]["toggles"] == 1, size
     assert not page.errors, page.errors[:3]
+
+
+#: The left edge of each control label's text in the DivideCostExplorer's row, by its text.
+LABEL_LEFTS = """() => {
+    const out = {};
+    for (const el of document.querySelectorAll('.widget-label')) {
+        const text = el.textContent.trim();
+        if (!['divide =', 'error'].includes(text) || !el.firstChild) continue;
+        const range = document.createRange();
+        range.selectNodeContents(el);
+        out[text] = Math.round(range.getBoundingClientRect().left);
+    }
+    return out;
+}"""
+
+
+def test_the_divide_cost_labels_line_up_when_the_row_wraps(lab, page):  # noqa: F811
+    """Review r24 06-8: at 1024 x 768 (a 592-px column) the "error" label wraps under the
+    slider flush left, while "divide =" sat right-aligned in the slider's description box,
+    indented: the two labels start at the same left edge (within a widget's margin)."""
+    cells = [SETUP, "DivideCostExplorer(rows)"]
+    _run(page, lab, cells, "divide_labels.ipynb")
+    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+    page.locator(".widget-label:text-is('error')").wait_for(timeout=120_000)
+    try:
+        _resize(page, "1024x768")
+        lefts = page.evaluate(LABEL_LEFTS)
+        top = page.evaluate("""() => [...document.querySelectorAll('.widget-label')]
+            .filter(e => ['divide =', 'error'].includes(e.textContent.trim()))
+            .map(e => Math.round(e.getBoundingClientRect().top))""")
+    finally:
+        _resize(page, "1400x900", redrawn=False)
+    assert set(lefts) == {"divide =", "error"}, lefts
+    assert len(set(top)) == 2, top  # the row wrapped (else there is nothing to line up)
+    assert abs(lefts["divide ="] - lefts["error"]) <= 4, lefts

@@ -87,7 +87,7 @@ def test_06_doom_level_floor_is_exact_and_the_rolled_floor_is_not():
     level, rolled = ns.worst_by_roll[0.0], ns.worst_by_roll[25.0]
     assert level[16] < 1e-9 and level["span ends"] < 1e-9  # "both exact to rounding"
     assert rolled[16] == pytest.approx(ns.subdivided[16]["error"])  # the table's N = 16
-    assert rolled["span ends"] > 100  # "far further off" (magnitude kept out of the prose: r23)
+    assert rolled["span ends"] > 100  # "much further off" (magnitude kept out of the prose: r23)
 
 
 def test_06_edge_table_gaps_and_incremental_lists():
@@ -381,6 +381,17 @@ def test_06_review_r23_tables_fit_and_wording():
     assert "tens of texels" not in md and "over a hundred texels" not in md
     assert "The two naive rules fail on exactly the same centres" not in md
     assert "Direct3D's 16.8 fixed point" in md and "needs 51 bits" in md
+
+
+def test_06_review_r24_every_printed_line_fits_a_column():
+    """Review r24 06-2, 06-3: not only the tables, every line the lesson prints fits a
+    notebook column (80 characters); the fronts, the drift and the set-up ran to 208."""
+    from notebook_runs import executed
+
+    for cell in executed("06_what_accuracy_costs").notebook().cells:
+        for out in cell.outputs if cell.cell_type == "code" else []:
+            for line in out.get("text", "").splitlines() if out.output_type == "stream" else []:
+                assert len(line) <= 80, line
 
 
 # -- 07 hard cases ---------------------------------------------------------------------------

@@ -236,3 +236,23 @@ def test_a_less_accurate_cost_tie_on_the_step_line_is_drawn_hollow_over_it():
             assert tie.get_markerfacecolor() == tie.get_color()
         assert cheap.get_markerfacecolor() == cheap.get_color()  # on the front: filled
         plt.close(fig)
+
+
+def test_an_accuracy_tie_that_costs_more_is_drawn_hollow_and_a_point_off_the_line_is_not():
+    """Review r24 06-1: the ring's rule is the step line's, both ways: lesson 06's window
+    float32 has window unorm24's wrong pixels at 32 bits against 24 (on the line across),
+    so it is hollow; a point dearer and less accurate than every front point is not."""
+    rows = [
+        {"variant": "unorm16", "bits": 16, "error": 5000.0},
+        {"variant": "unorm24", "bits": 24, "error": 464.0},
+        {"variant": "float32", "bits": 32, "error": 464.0},
+        {"variant": "worse", "bits": 48, "error": 1000.0},
+        {"variant": "float64", "bits": 64, "error": 0.0},
+    ]
+    fig, ax = plt.subplots()
+    art = plot_pareto(ax, rows, "bits", logx=False, hollow_on_line=True)
+    assert [r["variant"] for r in art.front] == ["unorm16", "unorm24", "float64"]
+    assert art.points["float32"].get_markerfacecolor() == "white"
+    worse = art.points["worse"]
+    assert worse.get_markerfacecolor() == worse.get_color()
+    plt.close(fig)

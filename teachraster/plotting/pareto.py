@@ -73,8 +73,9 @@ def plot_pareto(ax, rows, x: str, *, y: str = "error", xlabel: str = "", ylabel:
         widget can show, so that its layout and ticks never change), or a function of each
         update's costs returning them; default: :func:`cost_limits` of each update's costs.
     hollow_on_line : bool
-        Draw an off-front point that the front's step line runs through (a cost tie that is
-        less accurate) hollow, over the line, so that it does not read as on the front.
+        Draw an off-front point that the front's step line runs through (it ties a front
+        point on cost and is less accurate, or on error and costs more) hollow, over the
+        line, so that it does not read as on the front.
 
     Returns
     -------
@@ -178,7 +179,8 @@ def update_pareto(ax, art: ParetoArtists, rows, x: str, *, y: str = "error") -> 
         p.set_markeredgecolor(None)
         if art.hollow_on_line and not front_member and _on_step_line(r[x], yy, front, x, y, art):
             # an off-front point the front's step line runs through (a cost tie that is less
-            # accurate: N=2 at divide 1) read as on the front: drawn over the line, hollow,
+            # accurate: N=2 at divide 1; an error tie that costs more: lesson 06's window
+            # float32) read as on the front: drawn over the line, hollow,
             # its ring the grey of a translucent off-front point (review r22, 06-8)
             p.set(alpha=1.0, zorder=3.5, markerfacecolor="white", markeredgecolor=OFF_RING,
                   markeredgewidth=2.5)  # fmt: skip

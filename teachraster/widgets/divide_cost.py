@@ -136,9 +136,13 @@ class DivideCostExplorer(Shown):
         self.backend = resolve_backend(backend)
         # a list of prices, not a log grid: 2^(k/4) skips 30, and the slider snapped the
         # model's 30 to 32 while the lesson printed 30 (review r5, 06-2)
+        # the description at its own width, flush left: at the default width it sat right-aligned
+        # in a wider box, indented beside the "error" label that wraps under it in a 592-px
+        # column (review r24 06-8)
         self.divide = widgets.SelectionSlider(
             options=[(f"{v:g}", v) for v in divide_positions(divide)], value=float(divide),
-            description="divide =", layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
+            description="divide =", style={"description_width": "initial"},
+            layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         self._style = style
         #: the cost axis' limits, fitted at each price (:func:`cost_axis`); the layout keeps
@@ -162,8 +166,9 @@ class DivideCostExplorer(Shown):
             "What a divide costs decides the price of exactness",
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
             f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}. "
-            "A hollow ring: off the front though on its line (as cheap, less accurate), as in "
-            "lesson 06's depth chart.",
+            "A hollow ring: off the front though on its step line (it ties a front point on "
+            "cost and is less accurate, or on accuracy and costs more), as in the lesson's "
+            "depth chart.",
         )
         controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
