@@ -252,7 +252,7 @@ class FillTrace:
             return self._row_step(k, i)
         if self.blocks is not None:
             b = self.blocks
-            caption = b.caption(i, self.edges, (self.height, self.width))
+            caption = b.caption(i, self.edges, (self.height, self.width), self.bbox)
             extent = (int(b.extent[i, 0]), int(b.extent[i, 1]))
             return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]), work=i,
                         extent=extent)  # fmt: skip
