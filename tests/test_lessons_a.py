@@ -423,6 +423,12 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
     # review r22 04-13: the far floor's top eight pixel rows land on these check rows, and the
     # depth along each pixel row is constant (to rounding)
     assert ns.check_rows.tolist() == [0, 3, 4, 6, 7, 8, 8, 9] and ns.depth_spread < 1e-12
+    # review r23 04-8/9: only two of those steps skip check rows, and the run length grows
+    # steadily down the rows (13 to 31 px): the rows are related, only their phases are not
+    assert np.all(np.diff(ns.check_rows) <= 3) and np.count_nonzero(np.diff(ns.check_rows) > 1) == 2
+    assert (
+        np.all(np.diff(ns.run_px) > 0) and round(ns.run_px[0]) == 13 and round(ns.run_px[-1]) == 31
+    )
     seg = Segment(ns.x0, ns.z0, ns.x1, ns.z1)
     assert np.allclose(seg.world_parameter(ns.q), ns.t_ray, atol=1e-15)
     assert np.nanmax(ns.diff) <= 3 - 2 * np.sqrt(2)  # "peaks at 0.172"
@@ -1022,5 +1028,6 @@ def test_guard_band_exact_range_and_far_floor_words():
     # review r22 04-13: depth is exactly constant along a row; what aliases is the check row
     assert "random length" not in four and "hardly changes" not in four
     assert "constant, up to rounding" in four and "which* row of checks" in four
+    assert "the rows unrelated" not in four and "phases unrelated" in four  # review r23 04-9
     tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
     assert "GL_DEPTH_CLAMP" in tour and "DepthClipEnable = FALSE" in tour

@@ -915,3 +915,15 @@ def test_the_frame_is_drawn_above_the_vertex_labels_boxes():
     inside = tp.plot_triangle(steps, make_fill(), inside=True).labels
     assert all(s.get_zorder() < min(t.get_zorder() for t in inside) for s in steps.spines.values())
     plt.close(fig)
+
+
+def test_the_vertex_dots_are_drawn_above_their_labels_boxes():
+    """Review r23 (00 c7, c10, c16): the white boxes of v1's and v2's labels washed out their
+    dots. The dots are drawn above the labels, in every figure and player."""
+    fig, (ax, steps) = plt.subplots(1, 2)
+    for art in (
+        tp.plot_triangle(ax, make_fill()),
+        tp.plot_triangle(steps, make_fill(), inside=True),
+    ):
+        assert art.vertices.get_zorder() > max(t.get_zorder() for t in art.labels)
+    plt.close(fig)

@@ -468,3 +468,13 @@ def test_tiles_benchmark_quick_run_succeeds(capsys):
     assert module.main(["--quick", "--repeat", "1"]) == 0
     out = capsys.readouterr().out
     assert "counters: 64×64" in out and "tests per pixel" in out
+
+
+def test_a_partial_block_beyond_the_box_says_how_many_tests_are_drawn():
+    """Review r23 (00's player, tiles): a 4×4 block reaching out of the bounding box ran 16
+    pixel tests, but the picture greys only those inside the box; the caption says so."""
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]])
+    trace = tr.rasterize(tri, 16, 16, method="tiled", trace=True).trace
+    captions = [trace.caption(k) for k in range(trace.first_work_step, trace.interpolation_step)]
+    assert any("16 pixel tests (6 inside the bounding box: the ones drawn)" in c for c in captions)
+    assert any(c.endswith("16 pixel tests, 15 covered") for c in captions)  # all inside

@@ -516,7 +516,9 @@ def test_last_caption_counts_the_pixels_a_multisampled_picture_fills():
     centre = tr.rasterize(tri, 16, 16, trace=True)
     n, m = int(centre.coverage.sum()), int(multi.coverage.sum())
     assert m > n
-    assert f"at the {m} pixels with a covered sample ({n} with their centre covered)" in (
+    assert f"at the {m} pixels with a covered sample ({n} with their centre covered; " in (
         multi.trace.caption(-1)
     )
+    # review r23 00-6: the pixels shaded only because of a sample are counted too
+    assert f"; {m - n} shaded only because a sample is)" in multi.trace.caption(-1)
     assert f"at {n} covered pixels" in centre.trace.caption(-1)

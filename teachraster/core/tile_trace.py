@@ -250,12 +250,17 @@ class TileTrace:
             "corners, partial ones are split"
         )
 
-    def caption(self, b: int, edges: np.ndarray, shape: tuple[int, int] | None = None) -> str:
+    def caption(
+        self, b: int, edges: np.ndarray, shape: tuple[int, int] | None = None,
+        box: BBox | None = None,
+    ) -> str:  # fmt: skip
         """One line on block ``b``: where it is, the deciding edge values, the verdict.
 
         ``shape``: the image's (height, width), to say so when a block is all of it (its
         outline is then the image's frame, and a step that splits it seems to change nothing:
-        review r20, lesson 00's player).
+        review r20, lesson 00's player). ``box``: the bounding box the pictures draw; a
+        smallest partial block reaching out of it says how many of its tests lie inside
+        (review r23: the player greys only those).
         """
         s, kind = int(self.size[b]), int(self.kind_code[b])
         rows, cols = (int(v) for v in self.extent[b])
@@ -287,7 +292,15 @@ class TileTrace:
                 child = self.block_sizes[self.level[b] + 1]
                 then = f"split into {child}×{child} blocks"
             else:
-                then = f"{rows * cols:,} pixel tests, {int(self.covered[b]):,} covered"
+                then = f"{rows * cols:,} pixel tests"
+                if box is not None:
+                    r0, c0 = int(self.row[b]), int(self.col[b])
+                    inside = max(0, min(r0 + rows, box.row1) - max(r0, box.row0)) * max(
+                        0, min(c0 + cols, box.col1) - max(c0, box.col0)
+                    )
+                    if inside < rows * cols:
+                        then += f" ({inside:,} inside the bounding box: the ones drawn)"
+                then += f", {int(self.covered[b]):,} covered"
             why = f"{crossing} {verb} it: partial, {then}"
         return f"{where}: {why}"
 

@@ -252,7 +252,7 @@ class FillTrace:
             return self._row_step(k, i)
         if self.blocks is not None:
             b = self.blocks
-            caption = b.caption(i, self.edges, (self.height, self.width))
+            caption = b.caption(i, self.edges, (self.height, self.width), self.bbox)
             extent = (int(b.extent[i, 0]), int(b.extent[i, 1]))
             return Step(k, "block", caption, row=int(b.row[i]), col=int(b.col[i]), work=i,
                         extent=extent)  # fmt: skip
@@ -497,6 +497,8 @@ class FillTrace:
         }[self.interpolation]
         if self.samples is not None:  # the picture fills every pixel with a covered sample
             m = int(len(self.samples.eval_rows))
+            # the m - n pixels shaded only through a sample are the story (review r23)
             return (f"interpolated {', '.join(names)} at the {m:,} pixels with a covered sample "
-                    f"({n:,} with their centre covered), {how}")  # fmt: skip
+                    f"({n:,} with their centre covered; {m - n:,} shaded only because a "
+                    f"sample is), {how}")  # fmt: skip
         return f"interpolated {', '.join(names)} at {n:,} covered pixels, {how}"

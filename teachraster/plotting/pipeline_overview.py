@@ -56,6 +56,7 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
             "02_half_planes",
             "03_barycentric_and_plane_equations",
             "04_perspective_correct_interpolation",
+            "06_what_accuracy_costs",  # prices the set-up, fill and interpolation choices
             "07_hard_cases",
             "08_antialiasing",
             "10_tiles_and_hierarchical_z",

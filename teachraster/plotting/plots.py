@@ -353,7 +353,9 @@ def plot_triangle(
     """
     color = COLORS["edge"] if color is None else color
     outline = ax.plot([], [], "-", color=color, lw=lw(0.8), zorder=4, solid_joinstyle="round")[0]
-    vertices = ax.plot([], [], "o", color=color, ms=ms(0.7), zorder=4.5)[0]
+    # the dots above the labels' white boxes (zorder 6): a box pushed against its vertex
+    # washed the dot out, and the text is about where the vertices lie (review r23 00-2)
+    vertices = ax.plot([], [], "o", color=color, ms=ms(0.7), zorder=6.2)[0]
     result = TriangleArtists(outline, vertices, inside=inside)
     if arrows:
         for _ in range(3):

@@ -337,7 +337,7 @@ class FillView:
         t, r, p = self.triangle, self.raster_line, self.pixel
         split = self.split
         middle = [self.grid.lines, *self.ax.spines.values(), self.bbox.outline, split.line,
-                  t.outline, *t.arrows, t.vertices]  # fmt: skip
+                  t.outline, *t.arrows]  # fmt: skip
         if self.centres is not None:
             middle[1:1] = [self.centres.inside, self.centres.outside]
         if self.sample_dots is not None:
@@ -348,7 +348,8 @@ class FillView:
             (MOVING, [self.rejected, self.coverage.image, self.values, r.band]),
             (STILL, middle),
             (MOVING, [r.cells, p.box, r.span, r.covered, r.missed, p.centre]),
-            (STILL, [split.point, split.label, *t.labels, *t.edge_labels]),
+            # the vertex dots above their labels' boxes, as in a full draw (review r23)
+            (STILL, [split.point, split.label, *t.labels, *t.edge_labels, t.vertices]),
             # text costs more to draw than the pixels: the header moves only with the step
             (MOVING, [self.header] if self._step_header else []),
             (MOVING, [self.caption_text]),
