@@ -9,6 +9,7 @@ The correct solutions and most generic mistakes run in ``test_exercises.py`` and
 
 from __future__ import annotations
 
+import math
 import re
 from fractions import Fraction
 
@@ -1508,7 +1509,38 @@ def test_a_stop_just_below_alpha_1_fails_by_the_layers_read(gap, top):
     for dtype in (float, np.float32):
         assert ex.check("front_to_back", _stops_at(1.0, top, dtype), budget=60).passed
     task = " ".join(_nb_cells()["front_to_back_task"].split())
-    assert "names a stop below 1, down to the last float32 value below it" in task, task
+    assert "names a stop below 1, however close" in task, task
+
+
+@pytest.mark.parametrize("top", [False, True], ids=["tests after", "tests at the top"])
+@pytest.mark.parametrize("test", [
+    lambda a: a >= 1 - 2**-25, lambda a: a >= 1 - 2**-40, lambda a: a >= 1 - 1e-9,
+    lambda a: math.isclose(a, 1.0),
+], ids=["1 - 2^-25", "1 - 2^-40", "1 - 1e-9", "math.isclose"])  # fmt: skip
+def test_a_stop_within_1e_9_of_alpha_1_fails_in_float64_and_passes_in_float32(test, top):
+    """r24 D-1: stops closer to 1 than 1 − 4.5e-8, ``math.isclose(A, 1)`` among them, passed
+    although the task asks for exactly 1: a stack whose alpha is 1 − 2⁻⁴⁰ for two layers
+    tells them by the layers read, in float64; float32, where that alpha is 1, may stop."""
+
+    def fn(dtype):
+        def walk(layers):
+            acc = np.zeros(4, dtype)
+            for layer in layers:
+                if top and test(float(acc[3])):
+                    break
+                acc = acc + (1 - acc[3]) * np.asarray(layer, dtype)
+                if not top and test(float(acc[3])):
+                    break
+            return acc
+
+        return walk
+
+    report = ex.check("front_to_back", fn(float), budget=60)
+    assert not report.passed and report.failures[0].kind == "stopped below alpha 1", str(report)
+    assert "math.isclose(A, 1) stops there too" in report.failures[0].explanation
+    assert ex.check("front_to_back", fn(np.float32), budget=60).passed
+    task = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "`math.isclose(A, 1)` is a stop below 1 too" in task, task
 
 
 def test_a_stop_below_alpha_1_figure_marks_the_layers_not_read():
