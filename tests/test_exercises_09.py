@@ -1243,14 +1243,18 @@ def test_9_2b_asks_its_questions_without_answering_them():
         assert answer not in task, answer
 
 
-def test_lesson_12_prints_no_atop():
-    """r20 D-1: 9.2b's answer is nowhere in lesson 12 (nor are its factors), which prints
-    over on premultiplied colours (§6's table, §9's rule), 9.2b's task before r20."""
+def _lesson_12_text() -> str:
     import json
     from pathlib import Path
 
     nb = Path(__file__).parent.parent / "notebooks/12_lines_and_blending.ipynb"
-    text = "\n".join("".join(c["source"]) for c in json.loads(nb.read_text())["cells"])
+    return "\n".join("".join(c["source"]) for c in json.loads(nb.read_text())["cells"])
+
+
+def test_lesson_12_prints_no_atop():
+    """r20 D-1: 9.2b's answer is nowhere in lesson 12 (nor are its factors), which prints
+    over on premultiplied colours (§6's table, §9's rule), 9.2b's task before r20."""
+    text = _lesson_12_text()
     assert "ONE_MINUS_SRC_ALPHA" in text  # over's pair is printed; atop's is not
     assert not re.search(r"\batop\b", text)  # (its summary names atop_premultiplied)
     for answer in ("DST_ALPHA", "dst[3]", "a_dst", "α_d"):
@@ -1752,7 +1756,14 @@ def test_r23_text_fixes():
     cells = _nb_cells()
     atop = " ".join(cells["atop_premultiplied_task"].split())
     assert "none of them but" not in atop
-    assert "prints only *over* and *plus* (its additive mode, (ONE, ONE))" in atop, atop
+    # r24 D-3: lesson 12 never says "plus", and prints its additive mode on a straight colour
+    assert 'prints only *over* (its "over" and "premultiplied" modes)' in atop, atop
+    assert "is their *plus* when the colours are premultiplied" in atop, atop
+    assert "*over* only, and, besides, with its blend modes" in atop, atop
+    lesson = " ".join(_lesson_12_text().split())
+    said = re.findall(r"\bplus\b \w+ \w+", lesson)
+    assert said == ["plus a pixel"], said  # never the operator
+    assert '"additive"' in lesson and '"premultiplied"' in lesson, lesson[:200]
     intro = " ".join(cells["intro"].split())
     assert "`teachraster.blend_equation`, lesson 12's `tr.blend_equation`" in intro, intro
     assert "import teachraster as tr" not in cells["setup"]
