@@ -191,6 +191,15 @@ def test_start_diamond_dark_closed_diamond_and_bresenham_are_named():
     assert first.kind == "Bresenham" and "Bresenham's error term" in first.explanation
 
 
+def test_a_reversed_segment_is_named_without_a_false_clause():
+    """r24 D-4: its message said "the −(ε, ε²) perturbation is not symmetric"; both end
+    points move alike, and reversing changes only which end's diamond stays dark."""
+    first = _first("line_pixels", lambda p0, p1: line_pixels(p1, p0))
+    assert first.kind == "reversed", (first.kind, first.explanation)
+    assert "not symmetric" not in first.explanation, first.explanation
+    assert "changes only which end's diamond stays dark" in first.explanation
+
+
 def test_a_closed_diamond_is_named():
     from teachraster.exercises.lines import diamond_pixels
 
