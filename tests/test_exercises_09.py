@@ -200,6 +200,14 @@ def test_a_reversed_segment_is_named_without_a_false_clause():
     assert "changes only which end's diamond stays dark" in first.explanation
 
 
+def test_9_2a_gl_blend_says_alpha_squared_not_counted_twice():
+    """r24 D-6: GL's one-pair alpha is α_s·α_s + α_d(1 − α_s): α_s squared, not twice."""
+    first = _first("over_straight", lambda s, d: np.asarray(s) * s[3] + np.asarray(d) * (1 - s[3]))
+    assert first.kind == "GL's straight blend", (first.kind, first.explanation)
+    assert "its alpha weighs α_s by itself (α_s squared)" in first.explanation
+    assert "twice" not in first.explanation, first.explanation
+
+
 def test_a_closed_diamond_is_named():
     from teachraster.exercises.lines import diamond_pixels
 

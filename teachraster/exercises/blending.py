@@ -343,6 +343,7 @@ ATOP_MISTAKES = [
      "premultiplied ones and divided the light by the result's alpha: src and dst already "
      "carry their alpha (c = α·C), and the answer stays premultiplied (no division)",
      lambda s, d: _atop(s[:3] * s[3] + d[:3] * (1 - s[3]), s, d)),
+    # r24 D-6: "its alpha counts α_s twice"; it is α_s·α_s + α_d(1 − α_s)
     ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s), on "
      f"premultiplied colours: {_CARRIES}", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("premultiplied twice", "you multiplied the source by its alpha again, but it is "
@@ -441,7 +442,7 @@ STRAIGHT = [
     ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s) on all four "
      "channels: over a translucent destination its colour is wrong unless the source is "
      "opaque or wholly transparent (a translucent destination shows in α_d of the share "
-     "1 − α_s, not in all of it), and its alpha counts α_s twice",
+     "1 − α_s, not in all of it), and its alpha weighs α_s by itself (α_s squared)",
      lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("destination alpha ignored", "your alpha is right, but you weighted the destination's "
      "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
