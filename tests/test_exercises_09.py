@@ -208,6 +208,46 @@ def test_9_2a_gl_blend_says_alpha_squared_not_counted_twice():
     assert "twice" not in first.explanation, first.explanation
 
 
+def _over_straight_with(alpha, at_zero):
+    """9.2a's straight over with ``alpha(s, d)`` as the result's alpha and ``at_zero(s, d)``
+    where it is 0."""
+
+    def fn(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = alpha(s, d)
+        if a == 0:
+            return at_zero(s, d)
+        return np.r_[(s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])) / a, a]
+
+    return fn
+
+
+def _ftb_alpha_clamped(layers):
+    acc = np.zeros(4)
+    for c in layers:
+        acc = np.r_[acc[:3] + (1 - acc[3]) * c[:3], min(1.0, acc[3] + c[3])]
+        if acc[3] >= 1:
+            break
+    return acc
+
+
+def test_r24_natural_slips_are_named():
+    """r24 D-5: α = 0 → dst and α = min(1, α_s + α_d) in 9.2a, and 9.3's alphas summed and
+    clamped (colour right), got a general message."""
+    right = lambda s, d: s[3] + d[3] * (1 - s[3])  # noqa: E731
+    zero = lambda s, d: np.zeros(4)  # noqa: E731
+    assert ex.check("over_straight", _over_straight_with(right, zero)).passed
+    first = _first("over_straight", _over_straight_with(right, lambda s, d: d))
+    assert first.kind == "dst where nothing covers", (first.kind, first.explanation)
+    assert "you returned dst (0.5, 0.2, 0.1, 0) unchanged" in first.explanation
+    first = _first("over_straight", _over_straight_with(lambda s, d: min(1, s[3] + d[3]), zero))
+    assert first.kind.startswith("alpha summed, clamped to 1"), (first.kind, first.explanation)
+    assert "counts the share both cover twice" in first.explanation
+    first = _first("front_to_back", _ftb_alpha_clamped)
+    assert first.kind == "alpha summed, clamped", (first.kind, first.explanation)
+    assert "clamped the sum to 1" in first.explanation
+
+
 def test_a_closed_diamond_is_named():
     from teachraster.exercises.lines import diamond_pixels
 

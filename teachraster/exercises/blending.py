@@ -498,6 +498,20 @@ _FAINT_ATOP = _faint_words("atop draws the source on whatever the destination co
                            "with no test on alpha")  # fmt: skip
 
 
+def _dst_where_nothing(args, expected, got) -> bool:
+    """dst returned where both alphas are 0 (r24 D-5: ``if alpha == 0: return dst``)."""
+    dst, g = np.asarray(args[1], float), np.asarray(got, float).ravel()
+    return g.shape == (4,) and expected[3] == 0 and dst.any() and all_close(g, dst, 1e-6)
+
+
+#: r24 D-5: 9.2a's "α = 0 → dst" got "go back through the derivation's steps".
+DST_WHERE_NOTHING = Mistake(
+    "dst where nothing covers", lambda a, e, g: (
+        f"both alphas are 0 and you returned dst {vec(a[1])} unchanged: nothing covers the "
+        "pixel, so no colour shows there; the task gives the answer there, (0, 0, 0, 0)"),
+    fits=_dst_where_nothing)  # fmt: skip
+
+
 def _nothing_returned(args, expected, got) -> bool:
     """(0, 0, 0, 0) where the blend is not: a guard on a small alpha, or 9.2a's "(0, 0, 0, 0)
     where α = 0" carried over to a glow (r22 D-1, D-2)."""
@@ -668,6 +682,10 @@ STRAIGHT_ALPHAS = [
      "covers alone, something still shows", lambda s, d: s[3] * d[3]),
     ("alpha the larger", "your alpha is the larger of the two; where the one with it leaves "
      "the pixel uncovered, the other still covers some of it", lambda s, d: max(s[3], d[3])),
+    # r24 D-5: min(1, α_s + α_d) got the general message
+    ("alpha summed, clamped to 1", "you added the two alphas and clamped the sum to 1: that "
+     "counts the share both cover twice; the destination covers only its share α_d of what "
+     "the source leaves uncovered", lambda s, d: min(1.0, s[3] + d[3])),
 ]  # fmt: skip
 
 
@@ -879,7 +897,7 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
         # so a right colour with a wrong alpha fits it there; named only when it fits them all
         swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                           only_whole=True)  # fmt: skip
-        return [nan, FAINT_STRAIGHT, *table, swapped, *_divided_by_wrong_alpha(),
+        return [nan, FAINT_STRAIGHT, DST_WHERE_NOTHING, *table, swapped, *_divided_by_wrong_alpha(),
                 *_alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "

@@ -249,6 +249,9 @@ def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
         "no transmittance": loop(lambda acc, c: acc + c),
         "double premultiplication": loop(straight),
         "alpha summed": loop(lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], acc[3] + c[3]]),
+        # r24 D-5: the sum clamped to 1, colour right, got the rule restated
+        "alpha summed, clamped": loop(
+            lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], min(1.0, acc[3] + c[3])]),
         **(
             {
                 "nearest only": layers[0] if len(layers) else CLEAR,
@@ -372,6 +375,9 @@ MISTAKES = {
     "double premultiplication": "you multiplied each layer's colour by its alpha: the colours "
     "are premultiplied already (that darkens every semi-transparent layer)",
     "alpha summed": "you added the alphas: coverage composes like colour, A ← A + (1 − A)·α",
+    "alpha summed, clamped": "you added the alphas and clamped the sum to 1: coverage "
+    "composes like colour, so weigh each layer's alpha by the transmittance 1 − A too, "
+    "A ← A + (1 − A)·α, as you weigh its colour",
     "nearest only": "you returned the nearest layer: the layers behind show through it where "
     "its alpha is below 1",
     "farthest only": "you returned the farthest layer (the last one): the layers in front of "
