@@ -9,6 +9,7 @@ The correct solutions and most generic mistakes run in ``test_exercises.py`` and
 
 from __future__ import annotations
 
+import math
 import re
 from fractions import Fraction
 
@@ -188,6 +189,63 @@ def test_start_diamond_dark_closed_diamond_and_bresenham_are_named():
 
     first = _first("line_pixels", bresenham)
     assert first.kind == "Bresenham" and "Bresenham's error term" in first.explanation
+
+
+def test_a_reversed_segment_is_named_without_a_false_clause():
+    """r24 D-4: its message said "the −(ε, ε²) perturbation is not symmetric"; both end
+    points move alike, and reversing changes only which end's diamond stays dark."""
+    first = _first("line_pixels", lambda p0, p1: line_pixels(p1, p0))
+    assert first.kind == "reversed", (first.kind, first.explanation)
+    assert "not symmetric" not in first.explanation, first.explanation
+    assert "changes only which end's diamond stays dark" in first.explanation
+
+
+def test_9_2a_gl_blend_says_alpha_squared_not_counted_twice():
+    """r24 D-6: GL's one-pair alpha is α_s·α_s + α_d(1 − α_s): α_s squared, not twice."""
+    first = _first("over_straight", lambda s, d: np.asarray(s) * s[3] + np.asarray(d) * (1 - s[3]))
+    assert first.kind == "GL's straight blend", (first.kind, first.explanation)
+    assert "its alpha weighs α_s by itself (α_s squared)" in first.explanation
+    assert "twice" not in first.explanation, first.explanation
+
+
+def _over_straight_with(alpha, at_zero):
+    """9.2a's straight over with ``alpha(s, d)`` as the result's alpha and ``at_zero(s, d)``
+    where it is 0."""
+
+    def fn(s, d):
+        s, d = np.asarray(s, float), np.asarray(d, float)
+        a = alpha(s, d)
+        if a == 0:
+            return at_zero(s, d)
+        return np.r_[(s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])) / a, a]
+
+    return fn
+
+
+def _ftb_alpha_clamped(layers):
+    acc = np.zeros(4)
+    for c in layers:
+        acc = np.r_[acc[:3] + (1 - acc[3]) * c[:3], min(1.0, acc[3] + c[3])]
+        if acc[3] >= 1:
+            break
+    return acc
+
+
+def test_r24_natural_slips_are_named():
+    """r24 D-5: α = 0 → dst and α = min(1, α_s + α_d) in 9.2a, and 9.3's alphas summed and
+    clamped (colour right), got a general message."""
+    right = lambda s, d: s[3] + d[3] * (1 - s[3])  # noqa: E731
+    zero = lambda s, d: np.zeros(4)  # noqa: E731
+    assert ex.check("over_straight", _over_straight_with(right, zero)).passed
+    first = _first("over_straight", _over_straight_with(right, lambda s, d: d))
+    assert first.kind == "dst where nothing covers", (first.kind, first.explanation)
+    assert "you returned dst (0.5, 0.2, 0.1, 0) unchanged" in first.explanation
+    first = _first("over_straight", _over_straight_with(lambda s, d: min(1, s[3] + d[3]), zero))
+    assert first.kind.startswith("alpha summed, clamped to 1"), (first.kind, first.explanation)
+    assert "counts the share both cover twice" in first.explanation
+    first = _first("front_to_back", _ftb_alpha_clamped)
+    assert first.kind == "alpha summed, clamped", (first.kind, first.explanation)
+    assert "clamped the sum to 1" in first.explanation
 
 
 def test_a_closed_diamond_is_named():
@@ -1242,14 +1300,18 @@ def test_9_2b_asks_its_questions_without_answering_them():
         assert answer not in task, answer
 
 
-def test_lesson_12_prints_no_atop():
-    """r20 D-1: 9.2b's answer is nowhere in lesson 12 (nor are its factors), which prints
-    over on premultiplied colours (§6's table, §9's rule), 9.2b's task before r20."""
+def _lesson_12_text() -> str:
     import json
     from pathlib import Path
 
     nb = Path(__file__).parent.parent / "notebooks/12_lines_and_blending.ipynb"
-    text = "\n".join("".join(c["source"]) for c in json.loads(nb.read_text())["cells"])
+    return "\n".join("".join(c["source"]) for c in json.loads(nb.read_text())["cells"])
+
+
+def test_lesson_12_prints_no_atop():
+    """r20 D-1: 9.2b's answer is nowhere in lesson 12 (nor are its factors), which prints
+    over on premultiplied colours (§6's table, §9's rule), 9.2b's task before r20."""
+    text = _lesson_12_text()
     assert "ONE_MINUS_SRC_ALPHA" in text  # over's pair is printed; atop's is not
     assert not re.search(r"\batop\b", text)  # (its summary names atop_premultiplied)
     for answer in ("DST_ALPHA", "dst[3]", "a_dst", "α_d"):
@@ -1508,7 +1570,38 @@ def test_a_stop_just_below_alpha_1_fails_by_the_layers_read(gap, top):
     for dtype in (float, np.float32):
         assert ex.check("front_to_back", _stops_at(1.0, top, dtype), budget=60).passed
     task = " ".join(_nb_cells()["front_to_back_task"].split())
-    assert "names a stop below 1, down to the last float32 value below it" in task, task
+    assert "names a stop below 1, however close" in task, task
+
+
+@pytest.mark.parametrize("top", [False, True], ids=["tests after", "tests at the top"])
+@pytest.mark.parametrize("test", [
+    lambda a: a >= 1 - 2**-25, lambda a: a >= 1 - 2**-40, lambda a: a >= 1 - 1e-9,
+    lambda a: math.isclose(a, 1.0),
+], ids=["1 - 2^-25", "1 - 2^-40", "1 - 1e-9", "math.isclose"])  # fmt: skip
+def test_a_stop_within_1e_9_of_alpha_1_fails_in_float64_and_passes_in_float32(test, top):
+    """r24 D-1: stops closer to 1 than 1 − 4.5e-8, ``math.isclose(A, 1)`` among them, passed
+    although the task asks for exactly 1: a stack whose alpha is 1 − 2⁻⁴⁰ for two layers
+    tells them by the layers read, in float64; float32, where that alpha is 1, may stop."""
+
+    def fn(dtype):
+        def walk(layers):
+            acc = np.zeros(4, dtype)
+            for layer in layers:
+                if top and test(float(acc[3])):
+                    break
+                acc = acc + (1 - acc[3]) * np.asarray(layer, dtype)
+                if not top and test(float(acc[3])):
+                    break
+            return acc
+
+        return walk
+
+    report = ex.check("front_to_back", fn(float), budget=60)
+    assert not report.passed and report.failures[0].kind == "stopped below alpha 1", str(report)
+    assert "math.isclose(A, 1) stops there too" in report.failures[0].explanation
+    assert ex.check("front_to_back", fn(np.float32), budget=60).passed
+    task = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "`math.isclose(A, 1)` is a stop below 1 too" in task, task
 
 
 def test_a_stop_below_alpha_1_figure_marks_the_layers_not_read():
@@ -1720,7 +1813,14 @@ def test_r23_text_fixes():
     cells = _nb_cells()
     atop = " ".join(cells["atop_premultiplied_task"].split())
     assert "none of them but" not in atop
-    assert "prints only *over* and *plus* (its additive mode, (ONE, ONE))" in atop, atop
+    # r24 D-3: lesson 12 never says "plus", and prints its additive mode on a straight colour
+    assert 'prints only *over* (its "over" and "premultiplied" modes)' in atop, atop
+    assert "is their *plus* when the colours are premultiplied" in atop, atop
+    assert "*over* only, and, besides, with its blend modes" in atop, atop
+    lesson = " ".join(_lesson_12_text().split())
+    said = re.findall(r"\bplus\b \w+ \w+", lesson)
+    assert said == ["plus a pixel"], said  # never the operator
+    assert '"additive"' in lesson and '"premultiplied"' in lesson, lesson[:200]
     intro = " ".join(cells["intro"].split())
     assert "`teachraster.blend_equation`, lesson 12's `tr.blend_equation`" in intro, intro
     assert "import teachraster as tr" not in cells["setup"]

@@ -343,6 +343,7 @@ ATOP_MISTAKES = [
      "premultiplied ones and divided the light by the result's alpha: src and dst already "
      "carry their alpha (c = α·C), and the answer stays premultiplied (no division)",
      lambda s, d: _atop(s[:3] * s[3] + d[:3] * (1 - s[3]), s, d)),
+    # r24 D-6: "its alpha counts α_s twice"; it is α_s·α_s + α_d(1 − α_s)
     ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s), on "
      f"premultiplied colours: {_CARRIES}", lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("premultiplied twice", "you multiplied the source by its alpha again, but it is "
@@ -441,7 +442,7 @@ STRAIGHT = [
     ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s) on all four "
      "channels: over a translucent destination its colour is wrong unless the source is "
      "opaque or wholly transparent (a translucent destination shows in α_d of the share "
-     "1 − α_s, not in all of it), and its alpha counts α_s twice",
+     "1 − α_s, not in all of it), and its alpha weighs α_s by itself (α_s squared)",
      lambda s, d: _scaled(s, d, s[3], 1 - s[3])),
     ("destination alpha ignored", "your alpha is right, but you weighted the destination's "
      "colour by (1 − α_s) alone, as GL's straight blend does: a translucent destination shows "
@@ -495,6 +496,20 @@ FAINT_STRAIGHT = Mistake(
 _FAINT_ATOP = _faint_words("atop draws the source on whatever the destination covers, "
                            "however little, and premultiplied colours blend as they are, "
                            "with no test on alpha")  # fmt: skip
+
+
+def _dst_where_nothing(args, expected, got) -> bool:
+    """dst returned where both alphas are 0 (r24 D-5: ``if alpha == 0: return dst``)."""
+    dst, g = np.asarray(args[1], float), np.asarray(got, float).ravel()
+    return g.shape == (4,) and expected[3] == 0 and dst.any() and all_close(g, dst, 1e-6)
+
+
+#: r24 D-5: 9.2a's "α = 0 → dst" got "go back through the derivation's steps".
+DST_WHERE_NOTHING = Mistake(
+    "dst where nothing covers", lambda a, e, g: (
+        f"both alphas are 0 and you returned dst {vec(a[1])} unchanged: nothing covers the "
+        "pixel, so no colour shows there; the task gives the answer there, (0, 0, 0, 0)"),
+    fits=_dst_where_nothing)  # fmt: skip
 
 
 def _nothing_returned(args, expected, got) -> bool:
@@ -667,6 +682,10 @@ STRAIGHT_ALPHAS = [
      "covers alone, something still shows", lambda s, d: s[3] * d[3]),
     ("alpha the larger", "your alpha is the larger of the two; where the one with it leaves "
      "the pixel uncovered, the other still covers some of it", lambda s, d: max(s[3], d[3])),
+    # r24 D-5: min(1, α_s + α_d) got the general message
+    ("alpha summed, clamped to 1", "you added the two alphas and clamped the sum to 1: that "
+     "counts the share both cover twice; the destination covers only its share α_d of what "
+     "the source leaves uncovered", lambda s, d: min(1.0, s[3] + d[3])),
 ]  # fmt: skip
 
 
@@ -878,7 +897,7 @@ def _cause_mistakes(mode: str) -> list[Mistake]:
         # so a right colour with a wrong alpha fits it there; named only when it fits them all
         swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                           only_whole=True)  # fmt: skip
-        return [nan, FAINT_STRAIGHT, *table, swapped, *_divided_by_wrong_alpha(),
+        return [nan, FAINT_STRAIGHT, DST_WHERE_NOTHING, *table, swapped, *_divided_by_wrong_alpha(),
                 *_alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
     if mode == "from straight":
         swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "

@@ -28,7 +28,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
-from .answers import as_numbers
+from .answers import as_numbers, low_precision
 from .blending import EIGHT_BIT, WHOLE_NUMBERS, blend_answers, colour_texts, swatches
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
@@ -83,6 +83,19 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
             "alpha just below 1 for two layers",
             [
                 _premultiplied([1, 0, 0], 1 - 2.0**-24),
+                _premultiplied([0, 1, 0], 0.25),
+                _premultiplied([0, 0, 1], 1.0),
+                blue,
+            ],
+        ),
+        # r24 D-1: a stop closer to 1 (1 − 2⁻³⁰, 1 − 1e-9, math.isclose(A, 1)) passed: here
+        # the alpha is 1 − 2⁻⁴⁰ (exact in float64) after the first layer, still below 1 after
+        # the second (a loop testing at the top reads it), 1 only with the opaque third;
+        # float32 rounds that alpha to 1, and a float32 answer may stop there
+        (
+            "alpha within 1e-12 of 1 before an opaque layer",
+            [
+                _premultiplied([1, 0.5, 0], 1 - 2.0**-40),
                 _premultiplied([0, 1, 0], 0.25),
                 _premultiplied([0, 0, 1], 1.0),
                 blue,
@@ -169,9 +182,11 @@ class ReadShort(Misread):
     it stopped at an alpha below 1 (r20 D-4), however close its composite."""
 
 
-def opaque_after(layers) -> int | None:
-    """How many layers, nearest first, make the composite opaque (alpha exactly 1), or None."""
-    seen = np.cumprod(1.0 - np.asarray(layers, dtype=float).reshape(-1, 4)[:, 3])
+def opaque_after(layers, dtype=float) -> int | None:
+    """How many layers, nearest first, make the composite opaque (alpha exactly 1), or None;
+    in ``dtype``'s arithmetic (float32: an alpha within 2⁻²⁵ of 1 is 1 there)."""
+    alphas = np.asarray(layers, dtype=float).reshape(-1, 4)[:, 3].astype(dtype)
+    seen = np.cumprod(dtype(1) - alphas, dtype=dtype)
     hits = np.flatnonzero(seen <= 0.0)
     return int(hits[0]) + 1 if hits.size else None
 
@@ -183,7 +198,8 @@ def call_front_to_back(fn, args) -> np.ndarray:
     (layers,) = args
     stream, read = layer_stream(layers)
     value = as_rgba(fn(stream))
-    stop = opaque_after(layers)
+    # a float32 answer is judged by float32's alphas (r24 D-1: its documented allowance)
+    stop = opaque_after(layers, np.float32 if low_precision(value) else float)
     if stop is None or stop <= read() <= stop + 1:
         return value
     marked = np.asarray(value).view(ReadPast if read() > stop else ReadShort)
@@ -233,6 +249,9 @@ def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
         "no transmittance": loop(lambda acc, c: acc + c),
         "double premultiplication": loop(straight),
         "alpha summed": loop(lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], acc[3] + c[3]]),
+        # r24 D-5: the sum clamped to 1, colour right, got the rule restated
+        "alpha summed, clamped": loop(
+            lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], min(1.0, acc[3] + c[3])]),
         **(
             {
                 "nearest only": layers[0] if len(layers) else CLEAR,
@@ -286,7 +305,9 @@ def _read_short_words(args, expected, got) -> str:
             f"is opaque (alpha exactly 1) only with layer {got.opaque}: after layer {k} its "
             f"alpha is 1 − {left:.2g}, so your loop stopped at an alpha below 1. The layers "
             "behind still show through that transmittance, however little: a stop below 1 "
-            "is not the exact composite the task asks for")  # fmt: skip
+            "is not the exact composite the task asks for"
+            # r24 D-1: the idiom a student warned about float equality writes
+            + (" (math.isclose(A, 1) stops there too: test A >= 1)" if left < 1e-8 else ""))  # fmt: skip
 
 
 def _read_past_words(args, expected, got) -> str:
@@ -354,6 +375,9 @@ MISTAKES = {
     "double premultiplication": "you multiplied each layer's colour by its alpha: the colours "
     "are premultiplied already (that darkens every semi-transparent layer)",
     "alpha summed": "you added the alphas: coverage composes like colour, A ← A + (1 − A)·α",
+    "alpha summed, clamped": "you added the alphas and clamped the sum to 1: coverage "
+    "composes like colour, so weigh each layer's alpha by the transmittance 1 − A too, "
+    "A ← A + (1 − A)·α, as you weigh its colour",
     "nearest only": "you returned the nearest layer: the layers behind show through it where "
     "its alpha is below 1",
     "farthest only": "you returned the farthest layer (the last one): the layers in front of "

@@ -386,8 +386,11 @@ LINE_MISTAKES = [
     *(_large_eps(name, eps) for name, eps in LARGE_EPS.items()),
     Mistake(
         "reversed",
+        # r24 D-4: "and the −(ε, ε²) perturbation is not symmetric" was false: both end
+        # points move alike; only which end's diamond stays dark depends on the direction
         "you drew the segment from p1 to p0: its direction matters, the rule leaves p1's own "
-        "diamond dark (not p0's) and the −(ε, ε²) perturbation is not symmetric",
+        "diamond dark (not p0's); both end points move by the same −(ε, ε²), so reversing "
+        "the segment changes only which end's diamond stays dark",
         gives=lambda p0, p1: diamond_pixels(p1, p0),
     ),
     Mistake(
