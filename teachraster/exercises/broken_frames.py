@@ -956,8 +956,9 @@ def _history_hint(number, row, col, what: str) -> str:
     # r12 11-5: the redrawn frame's values differ from the frame shown's
     inside = f"b.frame.history({row}, {col})" + (
         f" and b.intended.history({row}, {col})" if "intended" in what else "")  # fmt: skip
+    verb = "tell" if "intended" in what else "tells"  # one print or two
     return (f"{inside} inside your function (this is the frame redrawn for the check, with "
-            f"other values; in your notebook, {shown} tell of the frame shown)")  # fmt: skip
+            f"other values; in your notebook, {shown} {verb} of the frame shown)")  # fmt: skip
 
 
 def _cause_words(args, number, got) -> str:
