@@ -1570,7 +1570,8 @@ def test_a_stop_just_below_alpha_1_fails_by_the_layers_read(gap, top):
     for dtype in (float, np.float32):
         assert ex.check("front_to_back", _stops_at(1.0, top, dtype), budget=60).passed
     task = " ".join(_nb_cells()["front_to_back_task"].split())
-    assert "names a stop below 1, however close" in task, task
+    # r25 D-1: not "however close": stops nearer than about 1e-12 pass (no short stack tells)
+    assert "names a stop below 1 down to about 1 − 1e-12" in task and "however" not in task, task
 
 
 @pytest.mark.parametrize("top", [False, True], ids=["tests after", "tests at the top"])
@@ -1715,7 +1716,7 @@ def test_r22_text_fixes():
     cells = _nb_cells()
     atop = " ".join(cells["atop_premultiplied_task"].split())
     assert "SVG and PDF composite the same way" not in atop
-    assert "feComposite" in atop and "PDF composites with *over* only" in atop
+    assert "feComposite" in atop and "PDF composites with *over* alone" in atop
     task = " ".join(cells["over_straight_task"].split())
     assert task.startswith("## 9.2 Over and atop"), task[:80]
     assert "a transparent pixel is (0, 0, 0, 0)" not in task
@@ -1814,9 +1815,11 @@ def test_r23_text_fixes():
     atop = " ".join(cells["atop_premultiplied_task"].split())
     assert "none of them but" not in atop
     # r24 D-3: lesson 12 never says "plus", and prints its additive mode on a straight colour
-    assert 'prints only *over* (its "over" and "premultiplied" modes)' in atop, atop
+    # r25 D-4: lesson 12's "over" mode is the straight pair, over only on an opaque destination
+    assert 'prints only *over* (its "premultiplied" mode; its "over" mode is the straight' in atop
+    assert "*over* only on an opaque destination" in atop, atop
     assert "is their *plus* when the colours are premultiplied" in atop, atop
-    assert "*over* only, and, besides, with its blend modes" in atop, atop
+    assert "PDF composites with *over* alone, its blend modes aside" in atop, atop
     lesson = " ".join(_lesson_12_text().split())
     said = re.findall(r"\bplus\b \w+ \w+", lesson)
     assert said == ["plus a pixel"], said  # never the operator
@@ -1828,6 +1831,9 @@ def test_r23_text_fixes():
     assert "A GPU can composite nearest first too" in ftb and "name that pair" in ftb, ftb
     for answer in ("ONE_MINUS_DST_ALPHA", "DST_ALPHA", "1 − A", "(1 - A)"):
         assert answer not in ftb, answer
+    # r25 D-3: the teacher's solution names the pair the task asks the student to name
+    solution = _nb_cells()["front_to_back_solution"]
+    assert "ONE_MINUS_DST_ALPHA" in solution and "dst factor ONE" in solution, solution
 
 
 def test_the_tie_rule_is_said_once_with_each_lines_own_numbers():
