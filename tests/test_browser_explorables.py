@@ -274,7 +274,9 @@ def test_pipeline_stage_clicked(lesson):
     # each box prints the lessons the kernel sent (the page keeps no list of its own)
     sent = _kernel(lesson, "pipeline.data['lessons']['rasterize']")
     box = w.locator("[data-stage=rasterize] text").all_text_contents()  # SVG: no innerText
-    assert sent == ["01–04, 07,", "08, 10, 12"] and box[-2:] == sent
+    # lesson 06 prices the rasteriser's choices (review r23 00-4): three lines, which the
+    # 84-px box holds under its one-line name (baselines 46, 61, 76 px; the name's at 28)
+    assert sent == ["01–04, 06,", "07, 08, 10,", "12"] and box[-3:] == sent
 
 
 def test_predictions_wait_for_an_answer_then_show_it(lesson):

@@ -242,7 +242,9 @@ def shared_vertex_pixels(triangles, shape, least: int = 3) -> list[tuple[int, in
 def mark_pixel(ax, rc, color) -> None:
     """Pixel ``rc`` filled with ``color`` above every outline, and outlined in black."""
     i, j = rc
-    ax.add_patch(Rectangle((j, i), 1, 1, fc=color, ec="black", lw=2.5, zorder=6))
+    # above the vertex dots too (plot_triangle draws them at 6.2, over the labels' boxes): the
+    # hub is the centre sixteen vertices meet at, hidden under their dots before (review r5)
+    ax.add_patch(Rectangle((j, i), 1, 1, fc=color, ec="black", lw=2.5, zorder=6.3))
 
 
 def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True,
