@@ -706,13 +706,15 @@ def test_every_frame_has_its_note_after_its_check_none_singled_out(capsys):
 def test_the_frame_1_task_asks_and_the_depths_are_printed_after_the_check():
     """r12 11-3: the task named the pixel and said which face had the larger depth in frame 1,
     so ``return "depth function", (24, 28), b.frame.depth[24, 28]`` passed without reading a
-    history. Now the task asks (which face lies in front, which has the smaller depth), names
-    no pixel or triangle, and the cell printing the two faces' depths comes after the check."""
+    history. Now the task asks, names no pixel or triangle, and the cell printing the two
+    faces' depths comes after the check. r23 D1: its question "which face lies in front, which
+    has the smaller depth" was the definition of the cause: it asks where the histories part."""
     cells = _cells()
     task = " ".join(cells["frame_1_task"].split())
-    for told in ("(24, 28)", "triangle 9", "the larger", "in front has the smaller"):
+    for told in ("(24, 28)", "triangle 9", "the larger", "in front has the smaller",
+                 "smaller depth", "lies in front"):  # fmt: skip
         assert told not in task, told
-    assert "which has the smaller depth" in task and "Once the check passes" in task
+    assert "stage by stage" in task and "first part" in task and "Once the check passes" in task
     order = list(cells)
     assert order.index("frame_1_depths") == order.index("broken_frame_1_check") + 1
 
@@ -1504,3 +1506,15 @@ def test_the_history_chart_names_the_frame_it_shows():
             assert title.get_fontsize() * w.hist_fig.dpi / 72 >= 12, title.get_fontsize()
         finally:
             w.close()
+
+
+def test_a_next_that_finds_nothing_is_told_what_happened():
+    """Review r23 D4: a diagnosis whose ``next(...)`` found no record was told only "your
+    function raised StopIteration"; the report says a next(...) found nothing."""
+
+    def copied(b):
+        records = b.frame.history(0, 0).records
+        return "depth function", (0, 0), next(r.depth for r in records if r.outcome == "x")
+
+    text = str(ex.check("broken_frame_1", copied))
+    assert "StopIteration: a next(...) found no item" in text, text

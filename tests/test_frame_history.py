@@ -638,6 +638,28 @@ def test_history_legend_keys_the_buffer_before_and_after_apart():
     assert handles["buffer after"].get_marker() == "."
 
 
+def test_a_record_without_a_fragment_is_keyed_as_having_no_depth():
+    """Review r23 D3: a not-covered triangle's cross sits at the axis' foot, which read as its
+    depth (0.5999 on an axis from 0.5999 to 0.6002): the key says it has none."""
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_history
+
+    frame = tr.render(tr.get_scene("intersecting_triangles"), None, 64, 48, trace=True)
+    found = next(
+        (int(r), int(c))
+        for r, c in np.argwhere(frame.overlay("overdraw") >= 1)
+        if any(x.outcome == "not_covered" for x in frame.history(int(r), int(c)).records)
+    )
+    fig, ax = plt.subplots()
+    try:
+        plot_history(ax, frame, *found)
+        labels = [t.get_text() for t in ax.get_legend().texts]
+    finally:
+        plt.close(fig)
+    assert "not_covered (no depth)" in labels and "not_covered" not in labels, labels
+
+
 def test_sparse_overlays_draw_the_scene_and_hi_z_its_tiles():
     """Review r13, 11: the hi_z and nan views drew only their counts on light grey, so the few
     counted pixels (or none, on a healthy frame) could not be placed on the scene: both draw

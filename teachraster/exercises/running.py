@@ -325,6 +325,12 @@ def describe_exception(exc: BaseException) -> Outcome:
     if isinstance(exc, WrongAnswerType):
         kind = "none" if "returned None" in str(exc) else "type"
         return Outcome(error=f"your function {exc}", kind=kind)
+    if isinstance(exc, StopIteration):  # a bare "raised StopIteration" tells nothing (r23 D4)
+        text = (
+            "your function raised StopIteration: a next(...) found no item that met its "
+            "condition (is the item you look for there, on this case's input?)"
+        )
+        return Outcome(error=text, kind="raised")
     return Outcome(error=f"your function raised {last_line(exc)}", kind="raised")
 
 

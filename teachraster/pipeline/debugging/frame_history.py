@@ -744,7 +744,9 @@ def draw_history(ax, h: PixelHistory):
             mark = ax.bar(x[mine], tile, bottom=depth[mine] - tile / 2, width=0.7, color=color,
                           edgecolor="k", linewidth=0.5)  # fmt: skip
         artists.append(mark)
-        shown.append((mark, name))
+        # a cross has no depth: its height is only the foot of the axis (review r23 D3: a
+        # cross at 0.5999 read as the depth of a triangle that did not cover the centre)
+        shown.append((mark, f"{name} (no depth)" if name in ("culled", "not_covered") else name))
     ax.set_ylim(bottom, top)
     buffer = []
     for key, marker in (("depth_before", "o"), ("depth_after", ".")):
