@@ -100,10 +100,9 @@ def test_06_edge_table_gaps_and_incremental_lists():
     from teachraster.study import bench
 
     assert [r["variant"] for r in bench.pareto_front(edges, x="cycles")] == ["fixed8 incremental"]
-    # the time chart prints each variant's spread and the front of this run
-    for r in ns.timed:
+    # every table prints each variant's spread (review r25 06-3: numpy's time front is gone)
+    for r in ns.rows:
         assert r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
-    assert ns.time_front and ns.time_front[-1] == "perspective"
 
 
 def test_06_edge_bits_and_depth_claims():
@@ -130,11 +129,16 @@ def test_06_edge_bits_and_depth_claims():
     depth_rows = [r for r in ns.rows if r["group"] == "depth"]
     front = [r["variant"] for r in bench.pareto_front(depth_rows, x="bits")]
     assert not any(v.startswith("linear") for v in front)
-    # "window float32 and window unorm24 get exactly the same pixels wrong": the same step near 1
+    # "window float32 and window unorm24 get exactly the same pixels wrong": the same step near 1;
+    # review r25 06-2: the two wrong-pixel masks, by bench_depth's recipe, printed and equal
+    assert ns.same_wrong and ns.wrong_at["float32"].any()
     assert (
-        rows[("depth", "window float32")]["facing_wrong"]
+        int(ns.wrong_at["float32"].sum())
+        == rows[("depth", "window float32")]["facing_wrong"]
         == rows[("depth", "window unorm24")]["facing_wrong"]
     )
+    assert rows[("depth", "window float32")]["slanted_wrong"] == 0  # "both 0 slanted"
+    assert rows[("depth", "window unorm24")]["slanted_wrong"] == 0
     assert ns.spacing32 == pytest.approx(ns.step24, rel=1e-6)
     stored_front = [r["variant"] for r in bench.pareto_front(depth_rows, x="stored_bits")]
     assert "window unorm24" in stored_front and "window float32" not in stored_front
@@ -165,8 +169,9 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     code = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
-    # 06-1: no Python loop per row (the span fill is vectorised); the timer's uv is said
-    assert "span loop in Python" not in md and "every row's crossings at once" in md
+    # 06-1: no Python loop per row; the timer's uv is said (review r25 06-3: the span fill's
+    # numpy passes, simulator internals, are no longer explained)
+    assert "span loop in Python" not in md and "core/span_tables.py" not in md
     assert "interpolates $uv$ perspective-correctly at every covered pixel" in md
     # coverage alone, timed in the same rounds, its share printed ("a minor part of each
     # untraced fill", and "the two coverages still differ by far less than the counts": signs
@@ -180,7 +185,7 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert "ROUNDS = 5" in code  # "five" in the text
     # 06-2, 06-3: the stable signs, not "not reliably" / "whatever this run measured"
     assert "not reliably" not in md and "whatever this run measured" not in md
-    assert "In numpy it is the *slower* one, in every arithmetic" in md
+    assert "In numpy stepping is the *slower* one, in every arithmetic" in md
     assert "subdivision is *slower* than the exact divide at every $N$" in md
     assert "coverage included" in md
     # affine "times nowhere near the model's thirty-fifth of perspective-correct" (its time's
@@ -188,7 +193,7 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert ns.cyc["perspective"] / ns.cyc["affine"] == 35
     assert "affine → perspective-correct alone" not in md
     assert "Which of those two is faster in numpy, this lesson does not claim" in md
-    assert "on either side in a run" in md  # the summary hedges it too
+    assert "on either side in a run" in md
     # 06-4: every table prints min..max beside the median (the depth and edge tables too)
     assert "{'min..max ms':>12s}" in code and "{spread(r):>12s}" in code
     assert "time says nothing: the eight times differ by noise" in md

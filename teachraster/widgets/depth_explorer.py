@@ -1,6 +1,6 @@
 """``DepthPrecisionExplorer``: how bits, the near plane and reverse-Z set the depth resolution.
 
-Lesson 05b's widget. The figure plots the smallest change in view distance the depth buffer
+Lesson 05b's widget. The figure plots the smallest change in view depth the depth buffer
 still sees, :func:`teachraster.pipeline.depth.depth_resolution`, against the distance, for the
 chosen format, near plane and mapping (window depth or reverse-Z), with two surfaces a gap
 ``delta`` apart as a horizontal line: where the curve rises above the line they can store the
@@ -22,7 +22,7 @@ from .dragging import same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
 
 #: The picture's alternative text in the page
-ALT = "the smallest visible depth difference against view distance"
+ALT = "the smallest visible depth difference against view depth"
 
 #: Formats offered (float64 never fights at these distances, so it adds nothing to explore).
 FORMATS = ("unorm16", "unorm24", "float32")
@@ -31,7 +31,7 @@ MAPPINGS = ("perspective", "reversed")
 
 
 def distance(z: float) -> str:
-    """A view distance for the info line: three figures, whole numbers from 100 on (no "1e+03").
+    """A view depth for the info line: three figures, whole numbers from 100 on (no "1e+03").
 
     >>> distance(6.0912), distance(120.4), distance(1000.0)
     ('6.09', '120', '1,000')
@@ -118,7 +118,7 @@ class DepthPrecisionExplorer:
             ax.axhline(self.delta, color=COLORS["outside"], ls="--", lw=2,
                        label=f"gap δ = {self.delta:g}")  # fmt: skip
             self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=1.5, ls=":")
-            ax.set(xlabel="view distance z", ylabel="smallest visible Δz", ylim=(1e-9, 1e3),
+            ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-9, 1e3),
                    xlim=(0.01, self.far))  # fmt: skip
             ax.grid(True, which="major", alpha=0.3)
             ax.legend(loc="upper left")

@@ -2,7 +2,7 @@
 
 Ritschel (*Interpolation and z-buffering*) warns that a "z-buffer can be inaccurate with few
 bits"; where the inaccuracy lies depends on the mapping as much as on the bits. Four strips
-show, along the view distance z (log scale), how many values unorm16, unorm24, float32 and
+show, along the view depth z (log scale), how many values unorm16, unorm24, float32 and
 reverse-Z float32 can store in each pixel's range of z, with the near plane dragged along
 the axis; a lens magnifies the z around the pointer linearly, where single values show.
 

@@ -30,7 +30,7 @@ NEAR, FAR = 0.1, 1000.0
 ERROR_MEASURE = {
     "interpolation": "max |uv error| (texels)",
     "edge functions": "pixels wrong vs exact 1/256 coverage",
-    "fill": "pixels wrong vs exact coverage",
+    "fill": "pixels wrong vs exact 1/256 coverage",
     "depth": "depth-order inversions (pixels)",
 }
 #: Extra columns printed in the table, per group (all of them go to the CSV).

@@ -1,4 +1,4 @@
-// Lesson 05b: where the representable depth values are, along the view distance z.
+// Lesson 05b: where the representable depth values are, along the view depth z.
 //
 // Four depth buffers store a window depth d(z) = (1 - n/z) / (1 - n/f): unorm16, unorm24,
 // float32, and float32 with reverse-Z, r(z) = (n/z - n/f) / (1 - n/f) (near -> 1, far -> 0).
@@ -174,16 +174,16 @@ function mount(el, data, host) {
   const far = data.far;
   const zmin = data.zmin;
   const root = frame(el, data.title,
-    "Each strip shows where a depth buffer's values fall along the view distance z (log " +
+    "Each strip shows where a depth buffer's values fall along the view depth z (log " +
     "scale): dark where a pixel's range of z holds many, single ticks where they are few. " +
-    "Drag the near plane (the orange handle); point at a distance to magnify it in the lens " +
+    "Drag the near plane (the orange handle); point at a depth to magnify it in the lens " +
     "below, where single values show (+ and − zoom the lens).");
   const g = { left: 150, right: 20, top: 34, strip: 40, gap: 8, lensTop: 0, lensRow: 26 };
   const W = 900;
   const pw = W - g.left - g.right;
   g.lensTop = g.top + 4 * (g.strip + g.gap) + 50;
   const Hc = g.lensTop + 4 * (g.lensRow + 4) + 46;
-  const [canvas, ctx] = makeCanvas(W, Hc, "depth buffer values along the view distance");
+  const [canvas, ctx] = makeCanvas(W, Hc, "depth buffer values along the view depth");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const zoomIn = button("+ zoom the lens", (e) => zoom(1, e));
   const zoomOut = button("− zoom out", (e) => zoom(-1, e));
@@ -302,7 +302,7 @@ function drawLogAxis(ctx, g, zmin, far, xOf, y) {
     ctx.stroke();
     ctx.fillText(fmt(10 ** e, 3), x, y + 18);
   }
-  ctx.fillText("view distance z (log scale)", g.left + (xOf(far) - g.left) / 2, y + 36);
+  ctx.fillText("view depth z (log scale)", g.left + (xOf(far) - g.left) / 2, y + 36);
   ctx.textAlign = "left";
 }
 
