@@ -712,13 +712,13 @@ def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method)
              np.nanmax([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]])))  # fmt: skip
         key = keyed(view)
         # the key names the colours with a colour bar (review r11; two swatches before)
-        assert "filled" not in key and view.value_bar.title.get_visible()
+        assert "covered" not in key and view.value_bar.title.get_visible()
         assert "flat-top part" not in key and not view.split.flat_top.get_visible()
         view.show_step(-2, draw=False)  # before the last step: coverage, as before
-        assert not view.values.get_visible() and "filled" in keyed(view)
+        assert not view.values.get_visible() and "covered" in keyed(view)
     assert np.nanmax(np.abs(shown["affine"] - shown["perspective"])) > 0.05
     plain = tp.FillView(fills["perspective"])  # values off: the finished fill as coverage
-    assert not plain.values.get_visible() and "filled" in keyed(plain)
+    assert not plain.values.get_visible() and "covered" in keyed(plain)
     plt.close(view.fig)
     plt.close(plain.fig)
 

@@ -417,11 +417,11 @@ class FillView:
         """What the step on show draws: the pixel or block under test only while there is one
         (reviews r8, lesson 04 c15; r22, lesson 00), the split line and point 4 once found
         (r22), the sample dots of a multisampled fill, and at the last step with values their
-        colours instead of "filled" and the split's tints, which it hides."""
+        colours instead of "covered" and the split's tints, which it hides."""
         c, method = COLORS, trace.method
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
-        entries = [None] * ValueBar.LINES if coloured else [("filled", c["fill"], c["fill"])]
+        entries = [None] * ValueBar.LINES if coloured else [("covered", c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
         elif method == "tiled":  # rejected with their block, or tested in a partial one
