@@ -742,6 +742,29 @@ def test_fill_view_keys_the_sample_dots_it_is_told_of():
         plt.close(view.fig)
 
 
+def test_fill_view_outlines_the_pixels_shaded_for_a_sample_alone():
+    """Review r23 (lesson 00 c14): at 4 samples the caption counts 72 pixels = 59 with the
+    centre covered + 13 for a sample alone, and the picture did not show which 13. They are
+    outlined at the coloured step (and keyed); the player draws uncovered samples only in
+    pixels with a covered sample, not four in every empty pixel of the grid."""
+    fill = make_fill("halfplane", samples=4)
+    view = tp.FillView(fill, values=True, sample_key=True)
+    dots = tp.plot_samples(view.ax, fill, fraction=False, touched=True)
+    view.show_samples(dots)
+    extra = fill.coverage & ~fill.trace.image(fill.trace.covered)
+    assert extra.any()
+    outlined = {tuple(np.floor(p.vertices.mean(axis=0)).astype(int))
+                for p in view.sample_only.get_paths()}  # fmt: skip
+    assert outlined == {(j, i) for i, j in zip(*np.nonzero(extra))}
+    assert view.sample_only.get_visible() and tp.views.SAMPLE_ONLY in keyed(view)
+    view.show_step(2, draw=False)
+    assert not view.sample_only.get_visible() and tp.views.SAMPLE_ONLY not in keyed(view)
+    x, y = dots.uncovered.get_data()
+    touched = fill.sample_coverage.any(axis=2)
+    assert len(x) and touched[np.floor(y).astype(int), np.floor(x).astype(int)].all()
+    plt.close(view.fig)
+
+
 def test_fill_view_last_step_keys_its_colours_as_a_bar_and_hides_u4():
     """Review r11 (lesson 00 c14): at the step coloured by u the key gave two swatches
     "u = 0.88" / "u = 0.00" (its ends only, and not why the top is 0.88, not v2's 1) beside

@@ -79,6 +79,8 @@ class SampleArtists(Artists):
     #: distance on screen (points; inf for one sample a pixel)
     _largest: float = field(default=6.0, repr=False)
     _gap: float = field(default=float("inf"), repr=False)
+    #: uncovered samples only in pixels with a sample covered (plot_samples' ``touched``)
+    touched: bool = field(default=False, repr=False)
 
     def update(self, source) -> None:
         """Show another multisampled fill or frame (any size and pattern)."""
@@ -89,7 +91,10 @@ class SampleArtists(Artists):
         self._faces = [TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit]]
         self._gap = _sample_gap(self.covered.axes, offsets)
         self.set_rings(self.rings)
-        self.uncovered.set_data(x[~hit], y[~hit])
+        empty = ~hit
+        if self.touched:  # the pixels where coverage is partial, not every empty pixel
+            empty &= np.repeat((ids >= 0).any(axis=2).ravel(), ids.shape[2])
+        self.uncovered.set_data(x[empty], y[empty])
         self.uncovered.set_markersize(self.diameter())
         if self.fraction is not None:
             self.fraction.update((ids >= 0).mean(axis=2))
@@ -142,7 +147,7 @@ def _sample_gap(ax, offsets) -> float:
     return gap * pt_per_px
 
 
-def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
+def plot_samples(ax, source, *, fraction: bool = True, touched: bool = False) -> SampleArtists:
     """Every sample of every pixel at ``(j + ox, i + oy)``: filled where covered.
 
     Parameters
@@ -154,6 +159,10 @@ def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
         ``tr.render(..., samples=S)`` (each sample in the colour of its triangle).
     fraction : bool
         Shade each pixel by the fraction of its samples covered (light = few).
+    touched : bool
+        Draw the uncovered samples only in pixels with a sample covered: where a pixel is
+        partly covered. Four white dots in each of a 16 × 16 grid's empty pixels hid the
+        fill's shape on a projector (review r23, lesson 00 c14).
 
     Returns
     -------
@@ -168,7 +177,8 @@ def plot_samples(ax, source, *, fraction: bool = True) -> SampleArtists:
     uncovered = ax.plot([], [], "o", mfc="white", mec=COLORS["centre"],
                         mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
     widths = (max(0.5, lw(0.15)), max(0.8, lw(0.3)), max(2.0, lw(0.7)))
-    result = SampleArtists(frac, covered, uncovered, _widths=widths, _largest=ms(DOT_SCALE))
+    result = SampleArtists(frac, covered, uncovered, _widths=widths, _largest=ms(DOT_SCALE),
+                           touched=touched)  # fmt: skip
     result.update(source)
     return result
 
