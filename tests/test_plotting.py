@@ -745,11 +745,11 @@ def test_fill_view_keys_the_sample_dots_it_is_told_of():
 def test_fill_view_outlines_the_pixels_shaded_for_a_sample_alone():
     """Review r23 (lesson 00 c14): at 4 samples the caption counts 72 pixels = 59 with the
     centre covered + 13 for a sample alone, and the picture did not show which 13. They are
-    outlined at the coloured step (and keyed); the player draws uncovered samples only in
-    pixels with a covered sample, not four in every empty pixel of the grid."""
+    outlined at the coloured step (and keyed); the player draws the samples only in pixels
+    partly covered, not four in every pixel of the grid."""
     fill = make_fill("halfplane", samples=4)
     view = tp.FillView(fill, values=True, sample_key=True)
-    dots = tp.plot_samples(view.ax, fill, fraction=False, touched=True)
+    dots = tp.plot_samples(view.ax, fill, fraction=False, partial=True)
     view.show_samples(dots)
     extra = fill.coverage & ~fill.trace.image(fill.trace.covered)
     assert extra.any()
@@ -759,9 +759,11 @@ def test_fill_view_outlines_the_pixels_shaded_for_a_sample_alone():
     assert view.sample_only.get_visible() and tp.views.SAMPLE_ONLY in keyed(view)
     view.show_step(2, draw=False)
     assert not view.sample_only.get_visible() and tp.views.SAMPLE_ONLY not in keyed(view)
-    x, y = dots.uncovered.get_data()
-    touched = fill.sample_coverage.any(axis=2)
-    assert len(x) and touched[np.floor(y).astype(int), np.floor(x).astype(int)].all()
+    cover = fill.sample_coverage
+    partial = cover.any(axis=2) & ~cover.all(axis=2)
+    for x, y in (dots.uncovered.get_data(), dots.covered.get_offsets().T):
+        assert len(x) and partial[np.floor(y).astype(int), np.floor(x).astype(int)].all()
+    assert len(x) == cover[partial].sum()  # every covered sample of those pixels
     plt.close(view.fig)
 
 
