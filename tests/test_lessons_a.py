@@ -437,6 +437,20 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
                                                          [ns.x[5], ns.z[5]])  # fmt: skip
 
 
+@pytest.mark.notebook
+@pytest.mark.parametrize("name", ["00_tour", "04_perspective_correct_interpolation"])
+def test_every_printed_line_fits_a_column(name):
+    """Reviews r23 (00) and r24 (04 cells 5, 17, 20, 23: lines of 85-141 characters): every
+    line a lesson prints fits a notebook column at 1024 px (80 characters; 75 show unwrapped
+    in JupyterLab's 592-px column)."""
+    from notebook_runs import executed
+
+    for cell in executed(name).notebook().cells:
+        for out in cell.outputs if cell.cell_type == "code" else []:
+            for line in out.get("text", "").splitlines() if out.output_type == "stream" else []:
+                assert len(line) <= 80, line
+
+
 def test_04_to_07_ask_at_least_three_questions_on_a_figure():
     """Issue 29: at least a third of the predictions are answered by acting on a figure, and
     04's introduction does not say which half of the segment is squeezed before it asks."""

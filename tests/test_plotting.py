@@ -712,13 +712,13 @@ def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method)
              np.nanmax([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]])))  # fmt: skip
         key = keyed(view)
         # the key names the colours with a colour bar (review r11; two swatches before)
-        assert "filled" not in key and view.value_bar.title.get_visible()
+        assert "covered" not in key and view.value_bar.title.get_visible()
         assert "flat-top part" not in key and not view.split.flat_top.get_visible()
         view.show_step(-2, draw=False)  # before the last step: coverage, as before
-        assert not view.values.get_visible() and "filled" in keyed(view)
+        assert not view.values.get_visible() and "covered" in keyed(view)
     assert np.nanmax(np.abs(shown["affine"] - shown["perspective"])) > 0.05
     plain = tp.FillView(fills["perspective"])  # values off: the finished fill as coverage
-    assert not plain.values.get_visible() and "filled" in keyed(plain)
+    assert not plain.values.get_visible() and "covered" in keyed(plain)
     plt.close(view.fig)
     plt.close(plain.fig)
 
@@ -740,6 +740,31 @@ def test_fill_view_keys_the_sample_dots_it_is_told_of():
         assert fill.coverage.sum() > fill.trace.covered.sum()  # pixels with a sample only
         assert f"at the {int(fill.coverage.sum())} pixels" in view.caption
         plt.close(view.fig)
+
+
+def test_fill_view_outlines_the_pixels_shaded_for_a_sample_alone():
+    """Review r23 (lesson 00 c14): at 4 samples the caption counts 72 pixels = 59 with the
+    centre covered + 13 for a sample alone, and the picture did not show which 13. They are
+    outlined at the coloured step (and keyed); the player draws the samples only in pixels
+    partly covered, not four in every pixel of the grid."""
+    fill = make_fill("halfplane", samples=4)
+    view = tp.FillView(fill, values=True, sample_key=True)
+    dots = tp.plot_samples(view.ax, fill, fraction=False, partial=True)
+    view.show_samples(dots)
+    extra = fill.coverage & ~fill.trace.image(fill.trace.covered)
+    assert extra.any()
+    outlined = {tuple(np.floor(p.vertices.mean(axis=0)).astype(int))
+                for p in view.sample_only.get_paths()}  # fmt: skip
+    assert outlined == {(j, i) for i, j in zip(*np.nonzero(extra))}
+    assert view.sample_only.get_visible() and tp.views.SAMPLE_ONLY in keyed(view)
+    view.show_step(2, draw=False)
+    assert not view.sample_only.get_visible() and tp.views.SAMPLE_ONLY not in keyed(view)
+    cover = fill.sample_coverage
+    partial = cover.any(axis=2) & ~cover.all(axis=2)
+    for x, y in (dots.uncovered.get_data(), dots.covered.get_offsets().T):
+        assert len(x) and partial[np.floor(y).astype(int), np.floor(x).astype(int)].all()
+    assert len(x) == cover[partial].sum()  # every covered sample of those pixels
+    plt.close(view.fig)
 
 
 def test_fill_view_last_step_keys_its_colours_as_a_bar_and_hides_u4():

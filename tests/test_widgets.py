@@ -434,7 +434,7 @@ def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
         assert "raster line, its pixels" not in keyed and "E12, E23, E31 here" in keyed
         e.method.value = "halfplane"
         keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
-        assert keyed == ["filled", "tested, rejected", "bounding box", "E12, E23, E31 here"]
+        assert keyed == ["covered", "tested, rejected", "bounding box", "E12, E23, E31 here"]
         e.x[1].value = 9.0  # a move keeps the key as it is (one cross, once)
         assert [t.get_text() for t in e.view.legend.texts if t.get_visible()] == keyed
     finally:

@@ -70,6 +70,8 @@ def _new_figure(figsize, rect):
 #: The key's entry for the pixel a half-plane step tests (shown only at such a step: at the
 #: last step nothing is under test, review r8 lesson 04 c15).
 PIXEL_UNDER_TEST = "pixel under test, × centre"
+#: The key's entry for the pixels a multisampled fill shades for a covered sample alone.
+SAMPLE_ONLY = "centre out, a sample in"
 
 
 class FillView:
@@ -147,6 +149,13 @@ class FillView:
         # (review r9/r10, lesson 04 c15: the caption spoke of u over plain coverage).
         self.values = show_image(ax, zeros, cmap=VALUE_CMAP, vmin=0, vmax=1, zorder=0.55)
         self.values.set_visible(False)
+        # at that step, with several samples, the pixels shaded only because a sample is
+        # covered (their centre is not): outlined, so that the caption's "72 with a covered
+        # sample (59 with their centre covered; 13 ...)" shows (review r23, lesson 00 c14)
+        self.sample_only = ax.add_collection(PolyCollection(
+            [], facecolors="none", edgecolors=COLORS["outside"], linewidths=fs(0.17),
+            zorder=3.5))  # fmt: skip
+        self.sample_only.set_visible(False)
         self._values = (values, attribute)  # asked for; _shown: (name, lo, hi) or None
         self._shown = None
         self._sample_key = sample_key
@@ -213,7 +222,13 @@ class FillView:
         parts = [self.grid, self.coverage, self.bbox, self.split, self.centres, self.triangle,
                  self.raster_line, self.pixel, self.legend, self.value_bar]  # fmt: skip
         out = [a for p in parts if isinstance(p, Artists) for a in p.artists]
-        return out + [self.rejected, self.values, self.header, self.caption_text]
+        return out + [self.rejected, self.values, self.sample_only, self.header,
+                      self.caption_text]  # fmt: skip
+
+    @property
+    def _sample_only_n(self) -> int:
+        """How many pixels the last step shades for a covered sample alone (outlined)."""
+        return len(self.sample_only.get_paths())
 
     # -- updates ---------------------------------------------------------------------------
     def show_step(self, k: int, *, draw: bool = True) -> Step:
@@ -257,6 +272,7 @@ class FillView:
         testing = step.kind in ("pixel", "block")
         coloured = step.kind == "interpolate" and self._shown is not None
         self.values.set_visible(coloured)
+        self.sample_only.set_visible(coloured and self._sample_only_n > 0)
         if coloured:  # the parts' tints would read as values (the flat-top yellow: a high u)
             self.split.flat_bottom.set_visible(False)
             self.split.flat_top.set_visible(False)
@@ -337,7 +353,7 @@ class FillView:
         t, r, p = self.triangle, self.raster_line, self.pixel
         split = self.split
         middle = [self.grid.lines, *self.ax.spines.values(), self.bbox.outline, split.line,
-                  t.outline, *t.arrows]  # fmt: skip
+                  t.outline, *t.arrows, self.sample_only]  # fmt: skip
         if self.centres is not None:
             middle[1:1] = [self.centres.inside, self.centres.outside]
         if self.sample_dots is not None:
@@ -390,6 +406,7 @@ class FillView:
         names = list(trace.pixel_affine)
         name = attribute if attribute in names else (names[0] if names else None)
         self._shown = None
+        self.sample_only.set_verts([])
         if not wanted or name is None or trace.culled or not trace.covered.any():
             return
         written = {"affine": trace.pixel_affine, "perspective": trace.pixel_perspective,
@@ -403,6 +420,10 @@ class FillView:
         if trace.samples is not None and not isinstance(fill, FillTrace):
             extra = np.isnan(data) & fill.coverage  # a sample covered, not the centre
             data[extra] = first_channel(fill.attrs[name][extra])
+            # each a square a little inside its pixel, so that two side by side stay two
+            rows, cols = np.nonzero(extra)
+            inset = np.array([[0.1, 0.1], [0.9, 0.1], [0.9, 0.9], [0.1, 0.9]])
+            self.sample_only.set_verts(np.column_stack([cols, rows])[:, None, :] + inset)
             if extra.any():  # extrapolated to centres outside: the bar spans them too (r12)
                 where = "at the pixel centres"
                 lo, hi = min(lo, float(data[extra].min())), max(hi, float(data[extra].max()))
@@ -417,11 +438,11 @@ class FillView:
         """What the step on show draws: the pixel or block under test only while there is one
         (reviews r8, lesson 04 c15; r22, lesson 00), the split line and point 4 once found
         (r22), the sample dots of a multisampled fill, and at the last step with values their
-        colours instead of "filled" and the split's tints, which it hides."""
+        colours instead of "covered" and the split's tints, which it hides."""
         c, method = COLORS, trace.method
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
-        entries = [None] * ValueBar.LINES if coloured else [("filled", c["fill"], c["fill"])]
+        entries = [None] * ValueBar.LINES if coloured else [("covered", c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
         elif method == "tiled":  # rejected with their block, or tested in a partial one
@@ -455,6 +476,8 @@ class FillView:
             )
             entries += [("sample covered", *covered),
                         ("sample not covered", "white", c["centre"], "o")]  # fmt: skip
+            if coloured and self._sample_only_n:  # the outlines of show_step
+                entries.append((SAMPLE_ONLY, "none", c["outside"]))
         return entries
 
 

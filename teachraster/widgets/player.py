@@ -198,7 +198,9 @@ class FillPlayer(Holdable):
         """Every sample of the fill on top of the steps (hidden for one sample per pixel)."""
         if self.fill.sample_coverage is not None:
             if self.sample_dots is None:
-                self.sample_dots = plot_samples(self.view.ax, self.fill, fraction=False)
+                self.sample_dots = plot_samples(
+                    self.view.ax, self.fill, fraction=False, partial=True
+                )
             else:
                 self.sample_dots.update(self.fill)
         if self.sample_dots is not None:
