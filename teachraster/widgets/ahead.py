@@ -119,8 +119,8 @@ class FramesAhead:
         and ``_info_html()`` (the caption); ``display.draw`` then draws the figure.
     full : bool
         Draw the full picture at each position (as a final value there shows it), not the
-        draft; the patches sent are kept (about 30 kB each) so that a release on a position
-        the page showed by itself costs no drawing (:meth:`held`).
+        draft; the patches sent are kept (``FilterExplorer``: about 70 kB each) so that a
+        release on a position the page showed by itself costs no drawing (:meth:`held`).
     """
 
     def __init__(self, display, sliders, explorer, *, full: bool = False) -> None:
