@@ -4,6 +4,7 @@ Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
 
     python benchmarks/bench_browser.py            # full run (about 5 minutes)
     python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
+    python benchmarks/bench_browser.py --only FilterExplorer   # the baselines and one explorer
 
 JupyterLab starts on a free loopback port with its own config, data, runtime and settings
 folders (in a temporary directory, removed afterwards) and opens a small notebook holding:
@@ -147,11 +148,16 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def write_notebook(folder: Path) -> str:
+def write_notebook(folder: Path, only: list | None = None) -> str:
+    """The benchmark's notebook in ``folder``; with ``only`` (slider explorers' CSS classes)
+    the baselines and those explorers alone, then the line :func:`run_all_cells` waits for."""
     import nbformat
 
     nb = nbformat.v4.new_notebook()
     cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *CONTROL_CELLS, *CELLS[-2:]]
+    if only is not None:
+        chosen = [c for c in CELLS if any(f'add_class("{cls}")' in c for cls in only)]
+        cells = [*CELLS[:3], *chosen, 'print("BENCH-EDITOR", "{}")']
     nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
@@ -209,7 +215,7 @@ def stop_lab(proc, log) -> None:
     log.close()
 
 
-def run_all_cells(page, base: str, name: str) -> None:
+def run_all_cells(page, base: str, name: str, ahead=None) -> None:
     page.goto(f"{base}/lab/tree/{name}?reset")
     page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=120_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=120_000)
@@ -222,9 +228,11 @@ def run_all_cells(page, base: str, name: str) -> None:
     except Exception:  # a cell failed (Run All stops there): say which
         errors = page.locator(".jp-OutputArea-output[data-mime-type*='error']").all_inner_texts()
         raise RuntimeError("the notebook did not finish: " + "\n".join(errors)[-3000:]) from None
-    # every group of the player's frames in the page, every picture drawn ahead
-    wait_for_groups(page)
-    wait_for_ahead(page)
+    # every group of the player's frames in the page, every picture drawn ahead (``ahead``:
+    # of these explorers only, and no player: ``--only``)
+    if ahead is None:
+        wait_for_groups(page)
+    wait_for_ahead(page, ahead)
 
 
 #: The explorers whose slider positions are drawn ahead (PlaneExplorer: its first slider, v1 x;
@@ -233,11 +241,11 @@ AHEAD = ("bench-viewer", "bench-filter", "bench-plane", "bench-depth", "bench-pr
          "bench-sampling", "bench-tiles")  # fmt: skip
 
 
-def wait_for_ahead(page) -> None:
+def wait_for_ahead(page, classes=None) -> None:
     """Until the slider explorers' pictures drawn ahead are all in the page (the kernel
     draws them while it idles after the cells ran, as a student's would: the baselines are
-    timed on an idle kernel)."""
-    for cls in AHEAD:
+    timed on an idle kernel); ``classes``: of these explorers only."""
+    for cls in AHEAD if classes is None else classes:
         page.wait_for_function(
             "(c) => { const r = document.querySelector(`.${c} input[type=range]`);"
             " const i = document.querySelector(`.${c} .tr-drag img`);"
@@ -422,24 +430,35 @@ def bench_slider(page, tries, css_class, label="tilt", toggle=None, drags=3):
     key = latency(page, target, ["keydown"], img, "data-frames",
                   lambda: slider.press(slider.evaluate(room)), tries)  # fmt: skip
     page.wait_for_timeout(300)
-    # the same keys, to the kernel's full picture (after the one drawn ahead)
-    full = latency(page, target, ["keydown"], img, "data-frames",
-                   lambda: slider.press(slider.evaluate(room)), tries, ARM_SECOND)  # fmt: skip
+    # the same keys, to the kernel's full picture (after the one drawn ahead); none comes
+    # where the picture drawn ahead is the full one (FilterExplorer): one try says so
+    press = lambda: slider.press(slider.evaluate(room))  # noqa: E731
+    full = latency(page, target, ["keydown"], img, "data-frames", press, 1, ARM_SECOND, 3000)
+    if full[0] == full[0]:  # not NaN: the kernel sends its full picture after a key
+        full += latency(page, target, ["keydown"], img, "data-frames", press, tries - 1,
+                        ARM_SECOND)  # fmt: skip
     fps, settle = [], []
     for _ in range(drags):  # the last picture is one number per drag: a few drags, not one
         page.wait_for_timeout(300)
         page.evaluate(COUNT, [img, "data-frames"])
+        # drag.js sets data-kernel-ms at each picture from the kernel: marked, to tell
+        page.evaluate(f'() => {{ document.querySelector("{img}").dataset.kernelMs = "none"; }}')
         page.evaluate(DRAG_SLIDER, [target, TIMES["drag"]])
         wait_to_settle(page)
+        came = page.evaluate(f'() => document.querySelector("{img}").dataset.kernelMs')
         times = page.evaluate("() => { const c = window.__count; c.ob.disconnect(); return c.t; }")
         end = page.evaluate("() => window.__dragEnd")
         during = [t for t in times if t <= end]
         span = (during[-1] - during[0]) / 1e3 if len(during) > 2 else 0.0
         fps.append((len(during) - 1) / span if span else 0.0)
-        settle.append((times[-1] - end) if times else float("nan"))
+        # 0 where the last picture was on show before the release (drawn ahead, full)
+        settle.append(max(0.0, times[-1] - end) if times else float("nan"))
         ms = page.evaluate(f'() => (document.querySelector("{target}").kernelMs || []).at(-1)')
-        print(f"{css_class}: a drag's last picture {settle[-1]:.1f} ms after the release "
-              f"(kernel {ms} ms of it)")  # fmt: skip
+        print(
+            f"{css_class}: a drag's last picture {settle[-1]:.1f} ms after the release "
+            f"(kernel {ms} ms of it; "
+            f"{'no picture from the kernel' if came == 'none' else 'the kernel sent one'})"
+        )
     kernel = page.evaluate(f'() => document.querySelector("{target}").kernelMs || []')
     if kernel:
         print(f"{css_class}: kernel ms per value median {statistics.median(kernel):.1f} "
@@ -453,7 +472,7 @@ def bench_slider(page, tries, css_class, label="tilt", toggle=None, drags=3):
                                lambda o=option: select.select_option(o), 1)  # fmt: skip
         # a new filter: its pictures are drawn ahead again (a second or two of the kernel's
         # idle time); the next widget is timed once they are in the page
-        wait_for_ahead(page)
+        wait_for_ahead(page, [css_class])
     return key, fps, settle, toggles, full
 
 
@@ -480,8 +499,11 @@ def slider_rows(results) -> list[tuple]:
     """The report rows of :func:`bench_slider`'s results (name -> its tuple)."""
     rows = []
     for name, (key, fps, settle, toggles, full) in results.items():
+        none = all(x != x for x in full)  # NaN: no picture from the kernel after a key
         rows += [("click", f"{name}, one key (drawn ahead)", key),
-                 ("info", f"{name}, one key, full picture (kernel)", full),
+                 table.info(f"{name}, one key, full picture (kernel)", [] if none else full,
+                            "none sent: the picture drawn ahead is the full one" if none
+                            else ""),
                  ("settle", f"{name}, last picture after a drag", settle),
                  ("fps", f"{name} dragged", fps)]  # fmt: skip
         if toggles:
@@ -570,15 +592,38 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     return specs + explorables + controls, statistics.median(rt)
 
 
+def run_only(page, args, tries: int, chosen) -> tuple[list, float]:
+    """``--only``: the baselines, then the slider explorers ``chosen`` (``SLIDERS`` rows)."""
+    took = _Stopwatch()
+    rt, fig = took("baselines", bench_baselines, page, tries)
+    frames = took("idle frames", bench_frames, page, tries)
+    sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle,
+                          1 if args.quick else 3)
+               for cls, name, label, toggle in chosen}  # fmt: skip
+    specs = [("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
+             ("info", "baseline: plain figure redrawn from a slider", fig),
+             table.Row("baseline: animation frames of the idle page", frames, "fps",
+                       note="the ceiling of every frame rate below")]  # fmt: skip
+    return specs + slider_rows(sliders), statistics.median(rt)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true",
                         help="smoke run (CI): 1 try per latency (each toggle's options once), "
                              "1 per new row, 1 per drag")  # fmt: skip
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
+    parser.add_argument("--only", default=None, metavar="TEXT",
+                        help="only the baselines and the slider explorers whose name holds "
+                             "TEXT (e.g. FilterExplorer): a notebook of those cells alone")  # fmt: skip
     parser.add_argument("--shots", type=Path, default=None,
                         help="folder for screenshots of the player and the editor")  # fmt: skip
     args = parser.parse_args(argv)
+    chosen = None
+    if args.only is not None:
+        chosen = [s for s in SLIDERS if args.only.lower() in s[1].lower()]
+        if not chosen:
+            parser.error(f"--only {args.only!r}: none of " + ", ".join(s[1] for s in SLIDERS))
     # the smoke run shows every row works; its figures are not the report's (CI time): one
     # try of each action (a second press of the same key or button was the same path again)
     tries = 1 if args.quick else max(args.tries, 3)
@@ -591,15 +636,19 @@ def main(argv=None) -> int:
     started = time.strftime("%d %b %Y %H:%M UTC", time.gmtime())
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
-    name = write_notebook(work / "nb")
+    name = write_notebook(work / "nb", None if chosen is None else [s[0] for s in chosen])
     proc, base, log = _Stopwatch()("lab start", start_lab, work)
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
             try:
                 page = browser.new_page(viewport={"width": 1400, "height": 900})
-                _Stopwatch()("lab and Run All", run_all_cells, page, base, name)
-                specs, r = run(page, args, tries, reps)
+                _Stopwatch()("lab and Run All", run_all_cells, page, base, name,
+                             None if chosen is None else [s[0] for s in chosen])  # fmt: skip
+                if chosen is None:
+                    specs, r = run(page, args, tries, reps)
+                else:
+                    specs, r = run_only(page, args, tries, chosen)
             finally:
                 browser.close()
     finally:

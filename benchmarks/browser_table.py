@@ -76,7 +76,9 @@ def cell(row: Row, rt: float) -> list[str]:
     """The row's cells after its label: median, max (min for fps), / rt, target."""
     values = row.measured()
     if not values:
-        return ["—", "", "", f"{row.target} ✗ (no picture)" if row.bound is not None else ""]
+        if row.bound is not None:
+            return ["—", "", "", f"{row.target} ✗ (no picture)"]
+        return ["—", "", "", f"({row.note})" if row.note else ""]
     med = statistics.median(values)
     mark = {True: " ✓", False: " ✗", None: ""}[row.ok()]
     notes = [row.note] if row.note else []

@@ -1,5 +1,6 @@
 """FilterExplorer in the browser: a quick run of arrow keys on the tilt, then another filter,
-ends on the kernel's full picture of the final tilt and filter.
+ends on the kernel's full picture of the final tilt and filter; a drag ends on the full
+picture drawn ahead, with no picture from the kernel.
 
 Review 08-09-r6 (lesson 09, FilterExplorer): End, then 29 x ArrowLeft to 60 degrees, then
 the filter changed to bilinear left the page on nearest's draft ("filter nearest · RMS
@@ -17,7 +18,7 @@ from __future__ import annotations
 import pytest
 from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
-from test_browser_ahead import ALL_AHEAD, SHOWN_B64
+from test_browser_ahead import ALL_AHEAD, FRAMES, SHOWN_B64
 from test_browser_saved import _run_all
 
 pytestmark = [
@@ -93,4 +94,75 @@ def test_keys_then_a_filter_end_on_the_kernels_full_picture(lab, page, tmp_path)
     values = [v for v, _ in readouts]
     after_end = values[values.index(89) :]
     assert all(b <= a for a, b in zip(after_end, after_end[1:])), readouts
+    assert not page.errors, page.errors
+
+
+DRAG_CELLS = [
+    "import numpy as np\nfrom teachraster.widgets import FilterExplorer",
+    "explorer = FilterExplorer(tilt=40, filter='trilinear', repeats=6)\n"
+    "explorer.widget.add_class('t-fdrag')\nexplorer",
+]
+
+
+def test_a_drag_ends_on_the_full_picture_drawn_ahead_and_the_kernel_sends_none(lab, page, tmp_path):  # noqa: E501, F811
+    """Issue 31: the picture drawn ahead at each tilt is the full one, so a drag's release
+    there waits for nothing: the kernel hears of the release (and takes the state there) but
+    sends no picture, and the page keeps showing the very picture the kernel would have
+    drawn, the one a fresh explorer at that tilt draws."""
+    import base64
+    import time
+
+    import numpy as np
+
+    _run_all(lab, page, DRAG_CELLS, "filter_drag.ipynb")
+    page.wait_for_function(ALL_AHEAD, arg="t-fdrag", timeout=180_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    slider = page.locator(".t-fdrag input[type=range]").first
+    slider.scroll_into_view_if_needed()
+    sent = "() => (document.querySelector('.t-fdrag input[type=range]').kernelMs || []).length"
+    before, frames = page.evaluate(sent), page.evaluate(FRAMES, "t-fdrag")
+    # drag.js sets data-kernel-ms at every picture from the kernel: marked, to see none come
+    page.evaluate("() => { document.querySelector('.t-fdrag .tr-drag img').dataset.kernelMs"
+                  " = 'none'; }")  # fmt: skip
+    page.evaluate("""async () => {
+        const r = document.querySelector('.t-fdrag input[type=range]');
+        r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
+        for (let v = 41; v <= 70; v++) {
+            await new Promise(requestAnimationFrame);
+            r.value = String(v);
+            r.dispatchEvent(new Event('input', { bubbles: true }));
+        }
+        r.dispatchEvent(new Event('change', { bubbles: true }));
+    }""")
+    page.wait_for_function(f"() => ({sent})() >= {before + 1}", timeout=30_000)
+    time.sleep(1.0)  # anything still on its way has landed
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    assert page.evaluate(sent) == before + 1  # the release, nothing else
+    assert page.evaluate(FRAMES, "t-fdrag") >= frames + 10  # pictures changed on the way
+    marked = page.evaluate("() => document.querySelector('.t-fdrag .tr-drag img')"
+                           ".dataset.kernelMs")  # fmt: skip
+    assert marked == "none", "the kernel sent a picture after the release"
+    w, h, data = page.evaluate(SHOWN_B64, "t-fdrag")  # before a new cell re-renders the view
+    shown = np.frombuffer(base64.b64decode(data), np.uint8).reshape(h, w, 4)
+    caption = page.locator(".t-fdrag .tr-drag-caption").inner_text()
+    saved = tmp_path / "fresh.npy"
+    run_new_cell(
+        page,
+        "fresh = FilterExplorer(tilt=70, filter='trilinear', repeats=6)\n"
+        f"np.save({str(saved)!r}.replace('.npy', '_seq.npy'), explorer.display.widget._last)\n"
+        f"np.save({str(saved)!r}.replace('.npy', '_state.npy'), "
+        "np.array((explorer.tilt.value, explorer.rms == fresh.rms), dtype=object))\n"
+        f"np.save({str(saved)!r}, fresh.display.widget._last)\n",
+    )
+    deadline = time.time() + 90
+    while not saved.exists() and time.time() < deadline:
+        time.sleep(0.5)
+    time.sleep(0.5)
+    kernel, fresh = np.load(saved.with_name("fresh_seq.npy")), np.load(saved)
+    tilt, same_rms = np.load(saved.with_name("fresh_state.npy"), allow_pickle=True)
+    np.save(tmp_path / "shown.npy", shown)
+    assert (tilt, same_rms) == (70.0, True), "the kernel holds another state"
+    assert np.array_equal(kernel, fresh), "the kernel's last picture is not a fresh one's"
+    assert caption.startswith("filter trilinear") and "on release" not in caption, caption
+    assert np.array_equal(shown, kernel), f"the page shows another picture ({tmp_path})"
     assert not page.errors, page.errors

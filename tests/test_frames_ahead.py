@@ -1,7 +1,8 @@
 """Pictures drawn ahead (``teachraster.widgets.ahead``): a slider explorer's figure at every
 position of its slider, drawn while the kernel idles and sent to the page against the
 figure's reference picture. Each must be the draft the kernel draws at that position, with
-its caption; drawing them must leave the explorer as it was; nothing is drawn before a page
+its caption (``FilterExplorer``: the full picture, which a release there then need not
+send); drawing them must leave the explorer as it was; nothing is drawn before a page
 listens; another control starts them again. (The page side: tests/test_browser_ahead.py.)"""
 
 from __future__ import annotations
@@ -81,9 +82,10 @@ def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
         assert now is value or np.array_equal(now, value, equal_nan=True), key
     pictures = _pictures(sent, page._ref)
     for k in (0, len(ahead.values) // 3, len(ahead.values) - 1):
-        # the page drags there: the kernel's draft is the picture drawn ahead
+        # the page drags there: the kernel's draft is the picture drawn ahead (drawn full:
+        # the final value's picture, a key there)
         slider._on_page_message(slider, {"type": "value", "value": float(ahead.values[k]),
-                                         "final": False, "seq": 1}, [])  # fmt: skip
+                                         "final": ahead.full, "seq": 1}, [])  # fmt: skip
         picture, caption = pictures[k]
         assert np.array_equal(picture, page._last), k
         assert caption == ex.info.value, k
@@ -232,23 +234,96 @@ def test_widget_messages_and_pictures_drawn_ahead_hold_one_lock():
 
 def test_a_final_value_the_kernel_holds_brings_the_full_picture():
     """Keys 80 -> 79 -> 80 while the kernel is busy: the page shows 79's and 80's pictures
-    drawn ahead (drafts: no error, "(on release)") and sends 80 as final, the value the kernel
-    holds. The full picture must follow (review 08-09-r6): before, nothing was drawn and the
-    page kept 80's draft for good."""
+    drawn ahead and sends 80 as final, the value the kernel holds. When the page does not
+    say it shows 80's full picture drawn ahead, the full picture must follow (review
+    08-09-r6: drafts were drawn ahead then, and nothing was drawn: the page kept 80's draft
+    for good)."""
     ex, slider = _make("filter")
     page, sent = _listen(ex, slider)
     full = bytes(page._last)
-    ex._truths.clear()  # as after 32 other tilts: the drafts drawn ahead have no error
     while ex.display.frames_ahead.step(seconds=0.05):
         pass
-    draft = _pictures(sent, page._ref)[80]  # what the page shows from its store at 80
-    assert not np.array_equal(draft[0], page._last) and "on release" in draft[1]
+    ahead = _pictures(sent, page._ref)[80]  # what the page shows from its store at 80
+    assert bytes(ahead[0]) == full and "on release" not in ahead[1]  # the full picture
     before = len([c for c, _ in sent if c["type"] == "frame"])
     slider._on_page_message(slider, {"type": "value", "value": 80.0, "final": True, "seq": 1}, [])
     frames = [c for c, _ in sent if c["type"] == "frame"]
     assert len(frames) == before + 1 and "on release" not in frames[-1]["caption"]
     assert bytes(page._last) == full
     ex.close()
+
+
+def _claim(ahead, k, **changes) -> dict:
+    """What the page's final value says when it shows position ``k`` drawn ahead
+    (drag.js: ``store.holding``), as the page would send it now."""
+    page = ahead.display.widget
+    claim = {"k": k, "generation": ahead.generation, "ref": page.ref_frame, "n": page._frame,
+             "slider": ahead.which}  # fmt: skip
+    return claim | changes
+
+
+def test_a_release_on_a_full_picture_drawn_ahead_sends_nothing_and_ends_as_from_code():
+    """Issue 31: FilterExplorer's last picture after a drag came 104-175 ms after the release
+    (the kernel drew the full picture there). Its pictures drawn ahead are now the full ones:
+    a release (or a key) on one, the page saying it shows it, draws and sends no picture,
+    and the explorer ends exactly as after setting the value from code: its state, caption,
+    last picture (the next reference) and poster."""
+    ex, slider = _make("filter")
+    page, sent = _listen(ex, slider)
+    ahead = ex.display.frames_ahead
+    assert ahead.full
+    while ahead.step(seconds=0.05):
+        pass
+    pictures = _pictures(sent, page._ref)
+    for v in (61.0, 70.0):  # drafts (a page showing pictures ahead sends none)
+        slider._on_page_message(slider, {"type": "value", "value": v, "final": False,
+                                         "seq": 2}, [])  # fmt: skip
+    draws, frames = ex.display.draws, len([c for c, _ in sent if c["type"] == "frame"])
+    k = int(np.argmin(np.abs(ahead.values - 75.0)))
+    held = {"type": "value", "value": 75.0, "final": True, "seq": 3, "held": _claim(ahead, k)}
+    slider._on_page_message(slider, held, [])
+    assert ex.display.draws == draws  # nothing drawn ...
+    assert len([c for c, _ in sent if c["type"] == "frame"]) == frames  # ... nor sent
+    direct, direct_slider = _make("filter")
+    direct_slider.value = 75.0
+    assert np.array_equal(page._last, pictures[k][0])
+    assert np.array_equal(page._last, direct.display.widget._last)
+    assert ex.info.value == direct.info.value == pictures[k][1]
+    assert page.poster == direct.display.widget.poster
+    for key in ("image", "truth", "error", "lod", "rms", "shown_tilt", "shown_filter"):
+        a, b = getattr(ex, key), getattr(direct, key)
+        same = a == b if isinstance(a, (str, float)) else np.array_equal(a, b, equal_nan=True)
+        assert same, key
+    # then another tilt from code, and back: the pictures are the fresh explorer's
+    slider.value = direct_slider.value = 40.0
+    assert bytes(page._last) == bytes(direct.display.widget._last)
+    ex.close()
+    direct.close()
+
+
+@pytest.mark.parametrize("stale", ["n", "generation", "ref", "k", "slider"])
+def test_a_release_whose_page_may_show_another_picture_brings_the_full_picture(stale):
+    """The page's word is taken only while it holds: a picture of the kernel's on its way
+    (a draft sent after the page's last frame), pictures drawn ahead since dropped (another
+    filter), another reference, another position or slider. Then the full picture is drawn
+    and sent, as without pictures drawn ahead."""
+    ex, slider = _make("filter")
+    page, sent = _listen(ex, slider)
+    ahead = ex.display.frames_ahead
+    while ahead.step(seconds=0.05):
+        pass
+    k = int(np.argmin(np.abs(ahead.values - 75.0)))
+    claim = _claim(ahead, k)
+    claim[stale] = claim[stale] + (-1 if stale == "n" else 1)
+    frames = len([c for c, _ in sent if c["type"] == "frame"])
+    slider._on_page_message(slider, {"type": "value", "value": 75.0, "final": True, "seq": 1,
+                                     "held": claim}, [])  # fmt: skip
+    assert len([c for c, _ in sent if c["type"] == "frame"]) == frames + 1
+    direct, direct_slider = _make("filter")
+    direct_slider.value = 75.0
+    assert bytes(page._last) == bytes(direct.display.widget._last)
+    ex.close()
+    direct.close()
 
 
 def _png_pixels(png: bytes) -> np.ndarray:

@@ -10,7 +10,16 @@ sends it to the page as a patch against the figure's reference picture
 (:meth:`~teachraster.widgets.dragging.DragFigure.send_ahead`) with its caption. The page's
 slider (``static/slider.js``) shows a position it has a picture for by itself and tells the
 kernel only where it is released (the full picture then follows, as after any drag);
-positions without one go to the kernel as drafts, coalesced, as before. When another control
+positions without one go to the kernel as drafts, coalesced, as before.
+
+An explorer whose draft differs from its full picture only by what it can compute ahead
+(``FilterExplorer``: the error panel, its note and colour bar) draws the *full* picture
+ahead instead (``full``): a release or a key on a position drawn ahead then needs no
+picture from the kernel. The page says so with the final value (``held``: the position it
+shows by itself, the pictures' generation and reference, the last frame it had from the
+kernel); when that is still the kernel's latest word, the kernel takes the picture's pixels
+from the patch it kept (:meth:`FramesAhead.held`) and sends nothing; otherwise it draws and
+sends the full picture, as for a draft. When another control
 changes the picture (a filter, a depth format), the pictures kept are dropped and drawn
 again.
 
@@ -108,10 +117,16 @@ class FramesAhead:
         changed in place; with several sliders ``_compute_at(value, which)``, ``which`` the
         slider's index), ``_set_artists()`` (its artists from that state, nothing drawn)
         and ``_info_html()`` (the caption); ``display.draw`` then draws the figure.
+    full : bool
+        Draw the full picture at each position (as a final value there shows it), not the
+        draft; the patches sent are kept (``FilterExplorer``: about 70 kB each) so that a
+        release on a position the page showed by itself costs no drawing (:meth:`held`).
     """
 
-    def __init__(self, display, sliders, explorer) -> None:
-        self.display, self.explorer = display, explorer
+    def __init__(self, display, sliders, explorer, *, full: bool = False) -> None:
+        self.display, self.explorer, self.full = display, explorer, full
+        #: full mode: position -> its patch as sent, ``(place, bytes)``, this generation
+        self.kept: dict[int, tuple] = {}
         self.sliders = list(sliders) if isinstance(sliders, (list, tuple)) else [sliders]
         self.which = 0  # the slider whose positions are drawn
         self.generation = 0
@@ -161,6 +176,7 @@ class FramesAhead:
         if self.closed or not self.listening:
             return
         self.generation += 1
+        self.kept = {}
         self.display.widget.send({"type": "ahead-clear", "generation": self.generation,
                                   "slider": self.which})  # fmt: skip
         here = int(np.argmin(np.abs(self.values - self.slider.value)))
@@ -201,15 +217,39 @@ class FramesAhead:
             k = self.todo.pop(0)
             rgba, caption = self.picture_at(float(self.values[k]))
             batch.append((k, rgba, caption))
-        self.display.widget.send_ahead(batch, self.generation)
+        patches = self.display.widget.send_ahead(batch, self.generation)
+        if self.full:
+            self.kept.update((k, patch) for (k, _, _), patch in zip(batch, patches))
         self.drawn += len(batch)
         return bool(self.todo)
 
+    def held(self) -> np.ndarray | None:
+        """The pixels the page shows by itself at the slider's value, when they are the full
+        picture there and the page says it shows them (the final value's ``held``, see the
+        module); else None (the picture is then drawn and sent)."""
+        slider, page = self.slider, self.display.widget
+        claim = getattr(slider, "held", None)
+        if not self.full or not claim or slider.dragging:
+            return None
+        try:
+            k = int(claim["k"])
+            # the pictures of now, against the page's reference, and no picture from the
+            # kernel on its way: the page's last frame is the kernel's last
+            current = (int(claim["generation"]), int(claim["ref"]), int(claim["n"]),
+                       int(claim.get("slider", 0))) == (self.generation, page.ref_frame,
+                                                        page._frame, self.which)  # fmt: skip
+        except (KeyError, TypeError, ValueError):
+            return None
+        if not current or k not in self.kept or float(self.values[k]) != slider.value:
+            return None
+        return page.unpatch(*self.kept[k])
+
     def picture_at(self, value: float) -> tuple[np.ndarray, str]:
-        """The figure's pixels and caption at ``value``, as a draft there shows them; the
-        explorer's state and artists are put back as they were (nothing sent)."""
+        """The figure's pixels and caption at ``value``, as a draft there shows them (with
+        ``full``, as a final value there does); the explorer's state and artists are put
+        back as they were (nothing sent)."""
         ex, which = self.explorer, [self.which] if len(self.sliders) > 1 else []
-        self.slider.dragging = True  # as a draft at that value looks
+        self.slider.dragging = not self.full  # as a draft at that value looks
         try:
             rgba, caption, _ = draw_elsewhere(
                 self.display, ex, lambda: ex._compute_at(value, *which)
@@ -221,6 +261,7 @@ class FramesAhead:
     def close(self) -> None:
         self.closed = True
         self.todo = []
+        self.kept = {}
         if self._handle is not None:
             self._handle.cancel()
 

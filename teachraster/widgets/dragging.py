@@ -216,10 +216,11 @@ class DragFigure(anywidget.AnyWidget):
         raw = rgba[r0:r1, c0:c1].tobytes()
         return [c0, r0, c1 - c0, r1 - r0], zlib.compress(raw, 1) if self.deflate else raw
 
-    def send_ahead(self, batch, generation: int) -> None:
+    def send_ahead(self, batch, generation: int) -> list[tuple]:
         """Send the page pictures drawn ahead, in one message: ``batch`` holds
         ``(k, rgba, caption)``, the picture for position ``k`` of the slider that drives this
-        figure and its caption (reference mode only)."""
+        figure and its caption (reference mode only). Returns each picture's patch as sent,
+        ``(place, bytes)`` (:meth:`unpatch` gives its pixels back)."""
         entries, buffers = [], []
         for k, rgba, caption in batch:
             place, data = self._crop(self._ref, rgba)
@@ -228,6 +229,25 @@ class DragFigure(anywidget.AnyWidget):
             buffers.append(data)
         self.send({"type": "ahead", "generation": int(generation), "ref": self.ref_frame,
                    "entries": entries}, buffers)  # fmt: skip
+        return [(e["place"], data) for e, data in zip(entries, buffers)]
+
+    def unpatch(self, place, data) -> np.ndarray:
+        """The picture that a patch ``(place, bytes)`` made by :meth:`send_ahead` shows: the
+        reference with the patch painted over it, as the page paints it."""
+        rgba = self._ref.copy()
+        x, y, w, h = place
+        if w and h:
+            raw = zlib.decompress(data) if self.deflate else data
+            rgba[y : y + h, x : x + w] = np.frombuffer(raw, np.uint8).reshape(h, w, 4)
+        return rgba
+
+    def shown_already(self, rgba) -> None:
+        """The page shows ``rgba`` already (a final picture drawn ahead, which it painted by
+        itself): it becomes the last picture (the next reference a view asks for) and, a
+        moment later, the poster; nothing is sent (reference mode)."""
+        self._last = rgba
+        self._poster_rgba = rgba
+        later(self._post_latest)
 
     def _send_frame(self, seq, handles, place, data, kernel_ms, timing, deflate) -> None:
         """The one "frame" message (a drag's picture, a final one, a new reference): the

@@ -134,7 +134,11 @@ class FilterExplorer:
     in the end, computed while the kernel idles, nearest first; otherwise ``truth`` and
     ``error`` are None and ``rms`` NaN until the release), without its note, and its colour
     bar only if that range was drawn before. The release always brings the full picture, the
-    same as setting ``tilt.value`` from code.
+    same as setting ``tilt.value`` from code. In a page, the picture at every tilt is drawn
+    ahead as that full picture (error, note and colour bar included) while the kernel idles,
+    so a drag or key over those tilts sends no drafts at all, and its release sends no
+    picture either: the page shows it already (:meth:`FramesAhead.held
+    <teachraster.widgets.ahead.FramesAhead.held>`); the kernel only takes the state there.
 
     Examples
     --------
@@ -221,7 +225,10 @@ class FilterExplorer:
         #: the other filters' pictures at the tilt on show, drawn while the kernel idles
         self._toggles = TogglesAhead(self.display, self, TEXTURE_FILTERS)
         if self.backend != "ipympl":
-            self._ahead = self.display.ahead(self.tilt, self)  # drawn while the kernel idles
+            # the full picture at every tilt, drawn while the kernel idles: a release or key
+            # on a tilt drawn ahead then waits for nothing from the kernel (issue 31: the
+            # full picture drawn at the release came 104-175 ms after it, target 100)
+            self._ahead = self.display.ahead(self.tilt, self, full=True)
             self._ahead.on_listening.append(self._toggles_ahead)
 
     def _render(self) -> None:

@@ -10,7 +10,9 @@ The kernel answers each once its observers have run (the new picture is sent fir
 Values sent while the pointer still holds the slider are marked as drafts
 (:attr:`LiveSlider.dragging` is True while their observers run), so that a widget may show
 a cheaper picture during the drag; the release is always sent, marked final, and brings the
-full picture.
+full picture. A final value may say that the page shows a picture drawn ahead there
+(``held``, :attr:`LiveSlider.held` while its observers run): where that is the full
+picture, the kernel sends none (:meth:`~teachraster.widgets.ahead.FramesAhead.held`).
 
 It keeps the ipywidgets slider's interface that the explorers and lessons use: ``value``
 (observable, settable from code), ``min``, ``max``, ``step``, ``description``,
@@ -82,6 +84,10 @@ class LiveSlider(anywidget.AnyWidget):
         #: True while the value comes from a pointer still dragging the slider: observers may
         #: show a cheaper draft; the release then brings the full picture (:meth:`on_release`).
         self.dragging = False
+        #: while a final value's observers run: what the page says it shows there by itself
+        #: (a picture drawn ahead: its position, generation, reference and the last frame the
+        #: page had; :meth:`~teachraster.widgets.ahead.FramesAhead.held`), else None
+        self.held = None
         self._drafted = False
         self._release: list = []
         self._touch: list = []
@@ -121,6 +127,7 @@ class LiveSlider(anywidget.AnyWidget):
         try:
             before = self.value
             self.dragging = not final
+            self.held = content.get("held") if final else None
             self.value = float(content["value"])  # the observers re-render here
             if not final:
                 self._drafted = self._drafted or self.value != before
@@ -134,7 +141,7 @@ class LiveSlider(anywidget.AnyWidget):
                     for callback in self._release:
                         callback()
         finally:
-            self.dragging = False
+            self.dragging, self.held = False, None
             # how long the kernel took, for the page (benchmarks read it there)
             ms = round((time.perf_counter() - start) * 1e3, 2)
             self.send({"type": "done", "seq": int(content.get("seq", 0)), "kernel_ms": ms})
@@ -166,19 +173,27 @@ class SliderDisplay:
 
     def refresh(self, rgba=None) -> None:
         """Draw the figure and send what changed to the page (``rgba``: send these pixels,
-        a picture drawn before, instead)."""
+        a picture drawn before, instead). Where the page shows the full picture drawn ahead
+        already (a release there, :meth:`FramesAhead.held
+        <teachraster.widgets.ahead.FramesAhead.held>`), nothing is drawn or sent."""
+        shown = None
+        if rgba is None and self.frames_ahead is not None and not self.drafting():
+            shown = self.frames_ahead.held()
+        if shown is not None:
+            self.widget.shown_already(shown)
+            return
         if rgba is None:
             self.draws += 1
             (self.fig.canvas.draw if self.draw is None else self.draw)()
         self.widget.show(self.fig, self.fig.axes[0], [], final=not self.drafting(), rgba=rgba)
 
-    def ahead(self, sliders, explorer):
+    def ahead(self, sliders, explorer, *, full: bool = False):
         """Draw ``explorer`` at every position of a slider (of ``sliders``: the one moved
-        last) while the kernel idles, for the page to show by itself
-        (:class:`~teachraster.widgets.ahead.FramesAhead`)."""
+        last) while the kernel idles, for the page to show by itself (``full``: the full
+        picture there, not the draft; :class:`~teachraster.widgets.ahead.FramesAhead`)."""
         from .ahead import FramesAhead
 
-        self.frames_ahead = FramesAhead(self, sliders, explorer)
+        self.frames_ahead = FramesAhead(self, sliders, explorer, full=full)
         return self.frames_ahead
 
     def close(self) -> None:

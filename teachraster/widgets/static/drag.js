@@ -14,7 +14,9 @@ const IN_FLIGHT = 2;
 // Reference mode (the slider explorers): every picture is the reference picture with one
 // patch painted over it, so pictures drawn ahead (kept per figure "key", below) can be shown
 // in any order: the page's slider asks the store of its figure (slider.js) and shows a
-// position it has a picture for without asking the kernel.
+// position it has a picture for without asking the kernel. Where those pictures are the full
+// ones (FilterExplorer), the slider's final value says which it shows (store.holding) and
+// the kernel, when no picture of its own is on the way, sends none.
 const INFLATED = 8; // pictures drawn ahead kept inflated (a slider dragged back and forth)
 
 function stores() {
@@ -26,7 +28,8 @@ function storeFor(key) {
   const all = stores();
   if (!all.has(key)) {
     all.set(key, { entries: new Map(), generation: 0, slider: 0, views: new Set(),
-      raw: new Map(), want: null, busy: false, show: null, frames: 0 });
+      raw: new Map(), want: null, busy: false, show: null, frames: 0, current: null,
+      lastN: 0 });
     const store = all.get(key);
     // show the picture drawn ahead for position k of slider i (its index among the
     // sliders linked to this figure) in every view; false when there is none
@@ -35,9 +38,20 @@ function storeFor(key) {
       const e = store.entries.get(k);
       if (!e || e.generation !== store.generation) return false;
       if (![...store.views].some((v) => v.canPaint(e))) return false;
-      store.want = { e, frames: store.frames };
+      store.want = store.current = { e, frames: store.frames };
       if (!store.busy) drain(store);
       return true;
+    };
+    // what a slider's final value says when the page shows position k of slider i from
+    // this store (painted, or painted once inflated), no picture from the kernel having come
+    // since it was asked for: its position, the pictures' generation and reference, and the
+    // last frame the page had from the kernel; null otherwise. The kernel sends no picture
+    // when that frame is its last (ahead.py: FramesAhead.held).
+    store.holding = (i, k) => {
+      const c = store.current;
+      if (i !== store.slider || !c || c.e.k !== k || c.e.generation !== store.generation ||
+          c.frames !== store.frames) return null;
+      return { k, generation: store.generation, ref: c.e.ref, n: store.lastN, slider: i };
     };
   }
   return all.get(key);
@@ -76,11 +90,17 @@ function initialize({ model }) {
   const key = model.get("key");
   if (!key) return;
   const store = storeFor(key);
+  store.lastN = Math.max(store.lastN, model.get("poster_frame"));
   model.on("msg:custom", (msg, buffers) => {
+    if (msg.type === "frame") {
+      store.frames += 1; // a picture drawn ahead asked for before is stale
+      store.lastN = msg.n;
+      return;
+    }
     if (msg.type === "ahead-clear") {
       store.entries.clear();
       store.raw.clear();
-      store.want = null;
+      store.want = store.current = null;
       store.generation = msg.generation;
       store.slider = msg.slider || 0;
     } else if (msg.type === "ahead" && msg.generation === store.generation) {
@@ -401,7 +421,6 @@ function render({ model, el }) {
       return;
     }
     const bytes = buffers[0];
-    if (key) storeFor(key).frames += 1; // a picture drawn ahead asked for before is stale
     if (first && first.seq === msg.seq && first.reply === undefined) first.reply = performance.now();
     painting = painting.then(() => paint(msg, bytes)).catch(() => {});
     notice.textContent = "";

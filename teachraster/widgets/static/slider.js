@@ -11,7 +11,9 @@
 //
 // A slider linked to a figure that keeps pictures drawn ahead (drag.js: the figure's store,
 // by its "key") shows a position with a picture by itself and does not ask the kernel; the
-// kernel hears of the value where the slider is released (the full picture follows).
+// kernel hears of the value where the slider is released (the full picture follows; where
+// the picture drawn ahead is the full one, the final value says the page shows it, "held",
+// and the kernel sends none).
 
 const IN_FLIGHT = 2;
 
@@ -53,6 +55,17 @@ function render({ model, el }) {
     return store.show(Number(i || 0), k);
   }
 
+  // what the page shows by itself at the slider's position, for a final value (drag.js:
+  // store.holding): null when it is not a picture drawn ahead
+  function heldAhead() {
+    const [figure, i] = (model.get("link") || "").split("/");
+    const all = globalThis.__teachrasterAhead;
+    const store = figure && all && all.get(figure);
+    if (!store || !store.holding) return null;
+    const k = Math.round((Number(input.value) - Number(input.min)) / Number(input.step));
+    return store.holding(Number(i || 0), k);
+  }
+
   function show(v) {
     readout.textContent = format(v, model.get("readout_format"));
   }
@@ -81,7 +94,9 @@ function render({ model, el }) {
           "to bring the widget back.";
       }
     }, 20000); // far beyond any render: the kernel is gone, not slow
-    model.send({ type: "value", value, seq, final });
+    const held = final ? heldAhead() : null;
+    model.send(held ? { type: "value", value, seq, final, held }
+      : { type: "value", value, seq, final });
   }
   // a final value: sent now if fewer than IN_FLIGHT are unanswered, else when an answer
   // comes (the newest then, the ones between dropped)
