@@ -522,8 +522,7 @@ def _nothing_returned(args, expected, got) -> bool:
 def _nothing_words(args, expected, got) -> str:
     if expected[3] > 0:
         return _FAINT_ATOP(args, expected, got)
-    glow = next((f"{n} {vec(c)} is a glow" for n, c in zip(("src", "dst"), args) if _is_glow(c)),
-                "an input is a glow")  # fmt: skip
+    glow = f"{_glowing(args) or 'an input'} is a glow"
     return (f"you returned (0, 0, 0, 0) where the result's alpha is 0, but {glow}: "
             "premultiplied light with alpha 0, covering nothing. A premultiplied colour with "
             "alpha 0 is (0, 0, 0, 0) only when it carries no light, and atop keeps the "
