@@ -1345,10 +1345,10 @@ def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
 def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
     """r18 D-5: the private ``_porter_duff`` handed to 9.2a was called "a part of
     from_straight's own computation"; from_straight never calls it, straight_over does."""
-    from teachraster.exercises import blending
+    from teachraster.exercises import blend_straight
 
     def porter_duff(s, d):
-        colour, a = blending._porter_duff(np.asarray(s, float), np.asarray(d, float))
+        colour, a = blend_straight._porter_duff(np.asarray(s, float), np.asarray(d, float))
         return np.r_[colour, a]
 
     report = ex.check("over_straight", porter_duff, budget=60)

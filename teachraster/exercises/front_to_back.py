@@ -29,7 +29,9 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers, low_precision
-from .blending import EIGHT_BIT, WHOLE_NUMBERS, blend_answers, colour_texts, swatches
+from .blend_display import colour_texts, swatches
+from .blend_mistakes import EIGHT_BIT, WHOLE_NUMBERS
+from .blending import blend_answers
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
@@ -452,7 +454,7 @@ def draw_layers(ax, case, got):
     # r19 E-6: "expected" and "yours" nearly touched, the composites a gap apart from layers
     artists = swatches(ax, cells, names, gap=len(layers) + 1 if got is not None else None)
     for k in past:  # crossed out: read behind the opaque layer, where nothing can show
-        x = k * 1.3  # swatches' spacing (blending.swatches)
+        x = k * 1.3  # swatches' spacing (blend_display.swatches)
         artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
     artists.append(ax.set_xlabel("layers 1, 2, ..., nearest first; premultiplied, drawn over "
                                  "a checkerboard", fontsize="x-small"))  # fmt: skip
