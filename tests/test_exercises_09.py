@@ -1898,3 +1898,79 @@ def test_an_answer_rounded_to_8_bits_is_said_so(name, how):
     assert not report.passed
     assert {f.kind for f in report.failures} == {"8-bit rounding"}, str(report)[:800]
     assert "rounded to steps of 1/255" in report.failures[0].explanation
+
+
+def _walk(stop, top=False, dtype=float):
+    """A nearest-first under loop; ``stop(acc, through, layer)`` after each layer (or at the
+    top of the loop, before it), ``through`` the light the layers read let through."""
+
+    def fn(layers):
+        acc, through = np.zeros(4, dtype), dtype(1)
+        for layer in layers:
+            layer = np.asarray(layer, dtype)
+            if top and stop(acc, through, layer):
+                break
+            acc = acc + (1 - acc[3]) * layer
+            through = through * (1 - layer[3])
+            if not top and stop(acc, through, layer):
+                break
+        return acc
+
+    return fn
+
+
+@pytest.mark.parametrize("top", [False, True], ids=["tests after", "tests at the top"])
+def test_a_loop_that_waits_for_an_opaque_layer_fails_and_is_named(top):
+    """r25 D-2: ``if layer[3] >= 1: break`` passed every case: it differs from the task's
+    accumulated-alpha test only where no layer is opaque but the composite is. A stack of 23
+    layers of alpha 1 − 2⁻⁵³ tells it: the alpha is 1 after two, the light let through
+    underflows to 0 after 21. Both stops the task allows still pass, in float64 and float32."""
+    from teachraster.exercises.front_to_back import layer_cases, stop_window
+
+    stack = next(a[0] for label, a, _ in layer_cases() if label.startswith("no layer opaque"))
+    assert (stack[:, 3] < 1).all() and stop_window(stack) == (2, 21)
+    # (tested at the top, a layer's own alpha leaves the opaque layer out: named elsewhere)
+    report = ex.check("front_to_back", _walk(lambda a, t, layer: layer[3] >= 1), budget=60)
+    assert not report.passed and [f.kind for f in report.failures] == [
+        "waited for an opaque layer"], str(report)  # fmt: skip
+    words = report.failures[0].explanation
+    assert "none of them is opaque by itself" in words and "waits for a layer" in words, words
+    assert "accumulated alpha is 1" in words and "test" not in words, words  # names, no rule
+    for dtype in (float, np.float32):
+        for stop in (lambda a, t, layer: a[3] >= 1, lambda a, t, layer: t <= 0):
+            assert ex.check("front_to_back", _walk(stop, top, dtype), budget=60).passed
+
+
+def test_a_long_stack_is_drawn_folded_with_its_marked_layers():
+    """r25 D-2: the 23-layer stack's labels ran into each other: the figure keeps the first
+    two and last two layers and those marked, the rest one slot."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("front_to_back", _walk(lambda a, t, layer: layer[3] >= 1), budget=60)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.failures[0].draw(ax)
+    labels = [t.get_text() for t in ax.get_xticklabels()]
+    plt.close(fig)
+    assert labels == ["1", "2", "3–21", "22\nallowed", "23\nread", "expected", "yours"], labels
+
+
+def test_the_9_1_figure_draws_a_diamond_for_every_pixel_of_its_axes():
+    """r25 D-6: the pass figure drew diamonds over x, y ∈ [0, 9] of its 12 × 12 axes, as if
+    the grid stopped there."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("line_pixels", line_pixels, budget=60).plot(ax)
+    drawn = [c for c in ax.collections if isinstance(c, PolyCollection)]
+    centres = {
+        tuple(np.round(p.vertices[:4].mean(axis=0), 3)) for c in drawn for p in c.get_paths()
+    }
+    plt.close(fig)
+    assert centres == {(j + 0.5, i + 0.5) for i in range(12) for j in range(12)}, len(centres)
