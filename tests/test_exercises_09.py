@@ -1974,3 +1974,28 @@ def test_the_9_1_figure_draws_a_diamond_for_every_pixel_of_its_axes():
     }
     plt.close(fig)
     assert centres == {(j + 0.5, i + 0.5) for i in range(12) for j in range(12)}, len(centres)
+
+
+def test_the_checks_edge_cases_stand_folded_after_the_tasks():
+    """r25 D-8: cell 2's tie details and cell 11's float stops explained the checker's edge
+    cases before the student wrote a line: they stand in a <details> after each task."""
+    for cell, inside in (("line_pixels_task", ("2⁻⁸⁰", "Direct3D", "1/8-pixel grid")),
+                         ("front_to_back_task", ("math.isclose", "2⁻³⁰", "accepts either"))):  # fmt: skip
+        task = _nb_cells()[cell]
+        start = task.index("<summary>What the check tries")
+        folded, before = task[start : task.index("</details>", start)], task[:start]
+        for words in inside:
+            assert words in folded and words not in before, (cell, words)
+
+
+def test_9_2a_asks_questions_whose_answers_the_text_does_not_give():
+    """r25 D-7: the scaffolding said "the rest of the pixel, 1 − α_s of it, it leaves
+    uncovered" and step 4 "the light divided by α": 9.2a was close to transcription."""
+    task = " ".join(_nb_cells()["over_straight_task"].split())
+    for answer in ("1 − α_s", "divided by α", "division", "leaves uncovered", "summed"):
+        assert answer not in task, answer
+    for question in ("1. In what share of the pixel does the source show?",
+                     "2. How much light does the pixel send you?",
+                     "3. What share of the pixel does the result cover?",
+                     "Which C sends the same light"):  # fmt: skip
+        assert question in task, question
