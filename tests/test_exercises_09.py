@@ -1345,10 +1345,10 @@ def test_9_2a_gives_the_premises_and_asks_for_the_derivation():
 def test_a_checker_helper_is_named_a_part_of_the_function_that_calls_it():
     """r18 D-5: the private ``_porter_duff`` handed to 9.2a was called "a part of
     from_straight's own computation"; from_straight never calls it, straight_over does."""
-    from teachraster.exercises import blending
+    from teachraster.exercises import blend_straight
 
     def porter_duff(s, d):
-        colour, a = blending._porter_duff(np.asarray(s, float), np.asarray(d, float))
+        colour, a = blend_straight._porter_duff(np.asarray(s, float), np.asarray(d, float))
         return np.r_[colour, a]
 
     report = ex.check("over_straight", porter_duff, budget=60)
@@ -1898,3 +1898,117 @@ def test_an_answer_rounded_to_8_bits_is_said_so(name, how):
     assert not report.passed
     assert {f.kind for f in report.failures} == {"8-bit rounding"}, str(report)[:800]
     assert "rounded to steps of 1/255" in report.failures[0].explanation
+
+
+def _walk(stop, top=False, dtype=float):
+    """A nearest-first under loop; ``stop(acc, through, layer)`` after each layer (or at the
+    top of the loop, before it), ``through`` the light the layers read let through."""
+
+    def fn(layers):
+        acc, through = np.zeros(4, dtype), dtype(1)
+        for layer in layers:
+            layer = np.asarray(layer, dtype)
+            if top and stop(acc, through, layer):
+                break
+            acc = acc + (1 - acc[3]) * layer
+            through = through * (1 - layer[3])
+            if not top and stop(acc, through, layer):
+                break
+        return acc
+
+    return fn
+
+
+@pytest.mark.parametrize("top", [False, True], ids=["tests after", "tests at the top"])
+def test_a_loop_that_waits_for_an_opaque_layer_fails_and_is_named(top):
+    """r25 D-2: ``if layer[3] >= 1: break`` passed every case: it differs from the task's
+    accumulated-alpha test only where no layer is opaque but the composite is. A stack of 23
+    layers of alpha 1 − 2⁻⁵³ tells it: the alpha is 1 after two, the light let through
+    underflows to 0 after 21. Both stops the task allows still pass, in float64 and float32."""
+    from teachraster.exercises.front_to_back import layer_cases, stop_window
+
+    stack = next(a[0] for label, a, _ in layer_cases() if label.startswith("no layer opaque"))
+    assert (stack[:, 3] < 1).all() and stop_window(stack) == (2, 21)
+    # (tested at the top, a layer's own alpha leaves the opaque layer out: named elsewhere)
+    report = ex.check("front_to_back", _walk(lambda a, t, layer: layer[3] >= 1), budget=60)
+    assert not report.passed and [f.kind for f in report.failures] == [
+        "waited for an opaque layer"], str(report)  # fmt: skip
+    words = report.failures[0].explanation
+    assert "none of them is opaque by itself" in words and "waits for a layer" in words, words
+    assert "accumulated alpha is 1" in words and "test" not in words, words  # names, no rule
+    for dtype in (float, np.float32):
+        for stop in (lambda a, t, layer: a[3] >= 1, lambda a, t, layer: t <= 0):
+            assert ex.check("front_to_back", _walk(stop, top, dtype), budget=60).passed
+
+
+def test_a_long_stack_is_drawn_folded_with_its_marked_layers():
+    """r25 D-2: the 23-layer stack's labels ran into each other: the figure keeps the first
+    two and last two layers and those marked, the rest one slot."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("front_to_back", _walk(lambda a, t, layer: layer[3] >= 1), budget=60)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    report.failures[0].draw(ax)
+    labels = [t.get_text() for t in ax.get_xticklabels()]
+    plt.close(fig)
+    assert labels == ["1", "2", "3–21", "22\nallowed", "23\nread", "expected", "yours"], labels
+
+
+def test_the_9_1_figure_draws_a_diamond_for_every_pixel_of_its_axes():
+    """r25 D-6: the pass figure drew diamonds over x, y ∈ [0, 9] of its 12 × 12 axes, as if
+    the grid stopped there."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ex.check("line_pixels", line_pixels, budget=60).plot(ax)
+    drawn = [c for c in ax.collections if isinstance(c, PolyCollection)]
+    centres = {
+        tuple(np.round(p.vertices[:4].mean(axis=0), 3)) for c in drawn for p in c.get_paths()
+    }
+    plt.close(fig)
+    assert centres == {(j + 0.5, i + 0.5) for i in range(12) for j in range(12)}, len(centres)
+
+
+def test_the_checks_edge_cases_stand_folded_after_the_tasks():
+    """r25 D-8: cell 2's tie details and cell 11's float stops explained the checker's edge
+    cases before the student wrote a line: they stand in a <details> after each task."""
+    for cell, inside in (("line_pixels_task", ("2⁻⁸⁰", "Direct3D", "1/8-pixel grid")),
+                         ("front_to_back_task", ("math.isclose", "2⁻³⁰", "accepts either"))):  # fmt: skip
+        task = _nb_cells()[cell]
+        start = task.index("<summary>What the check tries")
+        folded, before = task[start : task.index("</details>", start)], task[:start]
+        for words in inside:
+            assert words in folded and words not in before, (cell, words)
+
+
+def test_9_2a_asks_questions_whose_answers_the_text_does_not_give():
+    """r25 D-7: the scaffolding said "the rest of the pixel, 1 − α_s of it, it leaves
+    uncovered" and step 4 "the light divided by α": 9.2a was close to transcription."""
+    task = " ".join(_nb_cells()["over_straight_task"].split())
+    for answer in ("1 − α_s", "divided by α", "division", "leaves uncovered", "summed"):
+        assert answer not in task, answer
+    for question in ("1. In what share of the pixel does the source show?",
+                     "2. How much light does the pixel send you?",
+                     "3. What share of the pixel does the result cover?",
+                     "Which C sends the same light"):  # fmt: skip
+        assert question in task, question
+
+
+@pytest.mark.parametrize("threshold", [1 - 1e-13, 1 - 2**-53], ids=["1 - 1e-13", "last double"])
+def test_a_stop_after_the_update_is_named_however_near_1(threshold):
+    """r25 D-1: stops at 1 − 1e-13 and at the last double below 1 passed: the stack of layers
+    of alpha 1 − 2⁻⁵³ names them when tested after adding a layer; tested at the top (the next
+    layer read first) they still pass, as the folded note says."""
+    report = ex.check("front_to_back", _walk(lambda a, t, layer: a[3] >= threshold), budget=60)
+    assert not report.passed and report.failures[0].kind == "stopped below alpha 1", str(report)
+    top = _walk(lambda a, t, layer: a[3] >= threshold, top=True)
+    assert ex.check("front_to_back", top, budget=60).passed
+    task = " ".join(_nb_cells()["front_to_back_task"].split())
+    assert "only in a loop that tests after adding a layer" in task, task

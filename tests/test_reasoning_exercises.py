@@ -297,8 +297,10 @@ def test_over_premultiplied_is_derived_and_a_wrong_answer_never_gets_the_factors
         "notebooks/exercises/09_lines_and_blending.ipynb").read_text())  # fmt: skip
     task = next("".join(c["source"]) for c in nb["cells"]
                 if c["metadata"]["nbgrader"]["grade_id"] == "over_straight_task")  # fmt: skip
-    # r8: the task gives the coverage argument, not the straight form's formula to transcribe
-    assert "straight" in task and "1 − α_s" in task and "divided by α" in task
+    # r8: the task gives the coverage argument, not the straight form's formula to transcribe;
+    # r25 D-7: nor the share the source leaves (step 1) or the division (step 4)
+    assert "straight" in task and "hides what lies behind it" in task and "uncorrelated" in task
+    assert "1 − α_s" not in task and "divided by α" not in task and "division" not in task
     for answer in ("ONE_MINUS_SRC_ALPHA", "src + dst", "c_s + c_d", "GL_ONE", "α_d·(1 − α_s)",
                    "α_s + α_d"):  # fmt: skip
         assert answer not in task, answer

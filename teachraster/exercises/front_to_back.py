@@ -29,7 +29,9 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from .answers import as_numbers, low_precision
-from .blending import EIGHT_BIT, WHOLE_NUMBERS, blend_answers, colour_texts, swatches
+from .blend_display import colour_texts, swatches
+from .blend_mistakes import EIGHT_BIT, WHOLE_NUMBERS
+from .blending import blend_answers
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
@@ -57,6 +59,12 @@ def _premultiplied(rgb, a) -> list:
 STEP_WORDS = ("the package's blend is not counted as your work: write the step yourself "
               "(choosing the factors of under, nearest first, is the derivation asked for; "
               "name them in a comment if you like)")  # fmt: skip
+
+
+#: Layers of alpha 1 − 2⁻⁵³ (the last double below 1) in the stack that no opaque layer ends:
+#: what each lets through, 2⁻⁵³, multiplied layer by layer underflows to 0 after 21 of them,
+#: and two more tell a loop that reads on past it.
+UNDERFLOW_LAYERS = 23
 
 
 def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
@@ -99,6 +107,18 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
                 _premultiplied([0, 1, 0], 0.25),
                 _premultiplied([0, 0, 1], 1.0),
                 blue,
+            ],
+        ),
+        # r25 D-2: a loop that stops on a layer opaque by itself, not on the composite, passed:
+        # here no layer is opaque, but the alpha is 1 after two (1 − 2⁻¹⁰⁶ rounds to 1) and
+        # the light let through, 2⁻⁵³ a layer, underflows to 0 after 21; such a loop reads
+        # all 23, while a test of the alpha (stops at 2) or of what is let through (at 21)
+        # stops in time
+        (
+            "no layer opaque, but together they are",
+            [
+                _premultiplied([0.2 + 0.6 * (k % 2), 0.5, 0.8 - 0.6 * (k % 2)], 1 - 2.0**-53)
+                for k in range(UNDERFLOW_LAYERS)
             ],
         ),
     ]
@@ -185,25 +205,47 @@ class ReadShort(Misread):
 def opaque_after(layers, dtype=float) -> int | None:
     """How many layers, nearest first, make the composite opaque (alpha exactly 1), or None;
     in ``dtype``'s arithmetic (float32: an alpha within 2⁻²⁵ of 1 is 1 there)."""
+    return stop_window(layers, dtype)[0]
+
+
+def stop_window(layers, dtype=float) -> tuple[int | None, int | None]:
+    """(first, last): a right loop may stop after any layer from ``first`` to ``last``
+    (counted from 1, nearest first, in ``dtype``'s arithmetic): where the accumulated alpha,
+    A ← A + (1 − A)·α, is 1 (the task's test), or where the light let through, 1 − α
+    multiplied layer by layer, is 0 (a test the task allows too). The two part where the
+    alpha rounds to 1 before the light let through underflows to 0 (r25 D-2). ``first`` None:
+    no stop is needed; ``last`` None: reading on is no mistake."""
     alphas = np.asarray(layers, dtype=float).reshape(-1, 4)[:, 3].astype(dtype)
     seen = np.cumprod(dtype(1) - alphas, dtype=dtype)
-    hits = np.flatnonzero(seen <= 0.0)
-    return int(hits[0]) + 1 if hits.size else None
+    through = np.flatnonzero(seen <= 0.0)
+    last = int(through[0]) + 1 if through.size else None
+    a, first = dtype(0), None
+    for k, alpha in enumerate(alphas):
+        a = dtype(a + (dtype(1) - a) * alpha)
+        if a >= 1:
+            first = k + 1
+            break
+    if first is None or last is None:  # the light never underflows: read on as you like
+        return (first if first is not None else last), last
+    return min(first, last), max(first, last)  # either may round first
 
 
 def call_front_to_back(fn, args) -> np.ndarray:
-    """Run ``fn`` on the case's layers as a :class:`LayerStream`; a composite read past the
-    opaque layer (more than one layer behind it: a loop may fetch the next before it tests)
-    comes back as a :class:`ReadPast`."""
+    """Run ``fn`` on the case's layers as a :class:`LayerStream`; a composite read short of
+    :func:`stop_window`'s first layer comes back as a :class:`ReadShort`, one read past its
+    last (more than one layer behind it: a loop may fetch the next before it tests) as a
+    :class:`ReadPast`."""
     (layers,) = args
     stream, read = layer_stream(layers)
     value = as_rgba(fn(stream))
     # a float32 answer is judged by float32's alphas (r24 D-1: its documented allowance)
-    stop = opaque_after(layers, np.float32 if low_precision(value) else float)
-    if stop is None or stop <= read() <= stop + 1:
+    first, last = stop_window(layers, np.float32 if low_precision(value) else float)
+    short = first is not None and read() < first
+    past = last is not None and read() > last + 1
+    if not (short or past):
         return value
-    marked = np.asarray(value).view(ReadPast if read() > stop else ReadShort)
-    marked.read, marked.opaque = read(), stop
+    marked = np.asarray(value).view(ReadPast if past else ReadShort)
+    marked.read, marked.opaque = read(), (last if past else first)
     return marked
 
 
@@ -325,6 +367,28 @@ def _read_past_words(args, expected, got) -> str:
                    "is not")  # fmt: skip
 
 
+def _none_opaque(args, got) -> bool:
+    """No layer your function read is opaque by itself (alpha 1)."""
+    (layers,) = args
+    return bool((np.asarray(layers, float)[: got.read, 3] < 1).all())
+
+
+def _no_opaque_layer_words(args, expected, got) -> str:
+    """A loop read on where the composite is opaque though no layer is (r25 D-2: a loop that
+    tests each layer's own alpha passed); the words name what it waits for, and the loops
+    the check cannot tell from it."""
+    (layers,) = args
+    first, last = stop_window(layers)
+    through = float(1 - np.asarray(layers, float)[:, 3].max())
+    return (f"you read {got.read} of the {len(layers)} layers, and none of them is opaque by "
+            f"itself: each lets at least {through:.2g} of the light behind it through. Together "
+            f"they are: after layer {first} the accumulated alpha is 1, and after layer "
+            f"{last} not even a trace of light gets through (1 − α multiplied layer by layer "
+            "has underflowed to 0). Your loop read on past both: it waits for a layer that is "
+            "opaque by itself, which never comes here (or it never stops, or reads every "
+            "layer first, from the farthest: those read them all too)")  # fmt: skip
+
+
 def _stopped_words(args, expected, got) -> str:
     m, alpha = _stopped_at(args, expected, got)
     # r12 09-5: num(0.99963) alone is "1", which read "the alpha was 1: below 1"; told from
@@ -342,6 +406,10 @@ def _stopped_words(args, expected, got) -> str:
 WALK = [
     Mistake("stopped below alpha 1", _read_short_words,
             fits=lambda a, e, g: isinstance(g, ReadShort) and all_close(g, e, 1e-6)),
+    # r25 D-2: before the general words, which say "after layer k the composite is opaque"
+    Mistake("waited for an opaque layer", _no_opaque_layer_words,
+            fits=lambda a, e, g: isinstance(g, ReadPast) and all_close(g, e, 1e-6)
+            and _none_opaque(a, g)),
     Mistake("read behind the opaque layer", _read_past_words,
             fits=lambda a, e, g: isinstance(g, ReadPast) and all_close(g, e, 1e-6)),
     Mistake("stopped early", _stopped_words,
@@ -428,13 +496,31 @@ def _rule(args, expected, got) -> str:
             "in front of it leave (A: their alpha)")  # fmt: skip
 
 
+#: Layers a figure draws one by one; a longer stack shows its first two and last two, those
+#: marked, and one slot for each run of layers left out (r25 D-2: 23 layers' labels ran
+#: into each other).
+DRAWN_LAYERS = 12
+
+
+def _layer_slots(n: int, marked) -> list:
+    """The layer indices a figure draws, in order, with (first, last) for a run left out."""
+    if n <= DRAWN_LAYERS:
+        return list(range(n))
+    keep = sorted({0, 1, n - 2, n - 1, *marked} & set(range(n)))
+    out = []
+    for k in keep:
+        if out and k > out[-1] + 1:
+            out.append((out[-1] + 1, k - 1))
+        out.append(k)
+    return out
+
+
 def draw_layers(ax, case, got):
     """The layers as swatches over a checkerboard, then the expected and your composites
     (before any answer, the layers only: the figure never shows the answer first); layers
     read behind the opaque one crossed out and labelled "read", but the one a loop may fetch
     to find out that it can stop (labelled "allowed")."""
     (layers,) = case[1]
-    cells = list(layers)
     # numbers: eight labels share the axes' width (r11 09-D: "layer 6expected"); "yours" on
     # the line of the others (r18 D-8: it stood a line lower in every figure)
     names = [str(k + 1) for k in range(len(layers))]
@@ -443,17 +529,27 @@ def draw_layers(ax, case, got):
         names[got.opaque] += "\nallowed"
     for k in past:  # r12 09-7: expected = yours; what is wrong is the layers read
         names[k] += "\nread"
+    marked = [k for k, n in enumerate(names) if "\n" in n]
     if isinstance(got, ReadShort):  # r20 D-4: stopped before the layer that makes it opaque
         for k in range(got.read, got.opaque):
             names[k] += "\nnot read"
+        marked += [got.read, got.opaque - 1]
+    slots = _layer_slots(len(layers), marked)
+    runs = [p for p, k in enumerate(slots) if isinstance(k, tuple)]
+    cells = [np.zeros(4) if isinstance(k, tuple) else layers[k] for k in slots]
+    shown = [f"{k[0] + 1}–{k[1] + 1}" if isinstance(k, tuple) else names[k] for k in slots]
     if got is not None:
         cells += [case[2], np.asarray(got, float)]
-        names += ["expected", "yours"]
+        shown += ["expected", "yours"]
     # r19 E-6: "expected" and "yours" nearly touched, the composites a gap apart from layers
-    artists = swatches(ax, cells, names, gap=len(layers) + 1 if got is not None else None)
-    for k in past:  # crossed out: read behind the opaque layer, where nothing can show
-        x = k * 1.3  # swatches' spacing (blending.swatches)
-        artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
+    artists = swatches(ax, cells, shown, gap=len(slots) + 1 if got is not None else None)
+    for p in runs:  # a run of layers left out: its numbers under a slot of dots
+        artists[p].remove()
+        artists[p] = ax.text(p * 1.3 + 0.5, 0.5, "…", ha="center", va="center")
+    for p, k in enumerate(slots):  # crossed out: read behind the opaque layer
+        if k in past:
+            x = p * 1.3  # swatches' spacing (blend_display.swatches)
+            artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
     artists.append(ax.set_xlabel("layers 1, 2, ..., nearest first; premultiplied, drawn over "
                                  "a checkerboard", fontsize="x-small"))  # fmt: skip
     return artists

@@ -512,9 +512,14 @@ def draw_line(ax, case, got):
     (x0, x1), (y0, y1) = (sorted((p0[k], p1[k])) for k in (0, 1))
     near = [(j, i) for i in range(max(int(y0) - 1, 0), min(int(y1) + 2, WINDOW))
             for j in range(max(int(x0) - 1, 0), min(int(x1) + 2, WINDOW))]  # fmt: skip
-    diamonds = [[(j + 0.5, i), (j + 1, i + 0.5), (j + 0.5, i + 1), (j, i + 0.5)] for j, i in near]
-    artists.append(ax.add_collection(PolyCollection(diamonds, facecolor="none",
-                                                    edgecolor="#E69F00", lw=0.8)))  # fmt: skip
+    far = [(j, i) for i in range(WINDOW) for j in range(WINDOW) if (j, i) not in near]
+    # r25 D-6: diamonds near the segment only left the rest of the 12 × 12 axes looking as if
+    # the grid stopped there: every pixel's diamond, those the segment can meet stronger
+    for cells, style in ((far, dict(lw=0.5, alpha=0.55)), (near, dict(lw=0.8))):
+        diamonds = [[(j + 0.5, i), (j + 1, i + 0.5), (j + 0.5, i + 1), (j, i + 0.5)]
+                    for j, i in cells]  # fmt: skip
+        artists.append(ax.add_collection(PolyCollection(diamonds, facecolor="none",
+                                                        edgecolor="#E69F00", **style)))  # fmt: skip
     artists += ax.plot([p0[0], p1[0]], [p0[1], p1[1]], "k-", lw=1.5)
     artists += ax.plot(*p0, "o", color="k", ms=6)
     artists += ax.plot(*p1, "o", mfc="white", mec="k", ms=7)

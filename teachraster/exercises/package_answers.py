@@ -186,19 +186,24 @@ def _checker_helpers(spec: Exercise, skip: set) -> list:
 
     tools = {inspect.unwrap(v) for v in (getattr(sys.modules[package], n, None) for n in names)
              if callable(v)}  # fmt: skip
-    out = []
-    for module in dict.fromkeys(checker_modules(spec)):
-        for key, value in vars(importlib.import_module(module)).items():
-            if key.startswith("__") or key in names:
-                continue
-            g = inspect.unwrap(value) if callable(value) else value
-            found = [(g, None)] if isinstance(g, types.FunctionType) else _held(value, key)
-            for h, label in found:
-                if (h.__module__ == module and h not in tools and h not in skip
-                        and not is_transparent(_own_code(h))):  # fmt: skip
-                    skip = skip | {h}
-                    named = None if label is None else f"{module.rsplit('.', 1)[-1]}.{label}"
-                    out.append(PackageAnswer(h, words=CHECKER_WORDS, label=named))
+    out, modules = [], tuple(dict.fromkeys(checker_modules(spec)))
+    # each function first where its own module holds it (the path a student would type);
+    # then one that only another checker module holds (a mistake's lambda made by a function
+    # of one module and kept in an exercise of another: the blend checks' split)
+    for own in (True, False):
+        for module in modules:
+            for key, value in vars(importlib.import_module(module)).items():
+                if key.startswith("__") or key in names:
+                    continue
+                g = inspect.unwrap(value) if callable(value) else value
+                found = [(g, None)] if isinstance(g, types.FunctionType) else _held(value, key)
+                for h, label in found:
+                    if ((h.__module__ == module if own else h.__module__ in modules)
+                            and h not in tools and h not in skip
+                            and not is_transparent(_own_code(h))):  # fmt: skip
+                        skip = skip | {h}
+                        named = None if label is None else f"{module.rsplit('.', 1)[-1]}.{label}"
+                        out.append(PackageAnswer(h, words=CHECKER_WORDS, label=named))
     return out
 
 
