@@ -506,6 +506,14 @@ def test_frame_inspector_shows_the_pairs_history_of_the_same_pixel_beside():
 # -- lesson 11 ------------------------------------------------------------------------------
 @pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")
+def _lesson_11_source() -> str:
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks" / "11_debugging_a_frame.ipynb"
+    return "".join("".join(c["source"]) for c in json.loads(path.read_text())["cells"])
+
+
 def test_lesson_11_tells_each_story():
     from test_lessons import lesson
 
@@ -516,6 +524,17 @@ def test_lesson_11_tells_each_story():
     assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
+    # Question 1 (r27 D3, asked before the history): GL_ALWAYS writes the farther depth
+    assert "answer=q1_choices[1]," in _lesson_11_source()
+    assert ns.q1_choices[1].startswith(f"{ns.far_won[1].depth_after:.4f}")
+    assert (
+        ns.far_won[1].depth_after
+        == ns.far_won[1].depth
+        == ns.off.depth[ns.far_won.row, ns.far_won.col]
+    )
+    # §5 (r27 D4): llvmpipe's stencil counts and occlusion queries equal the overlays
+    if ns.gl_ok:
+        assert ns.gl_differ == {1: (0, 0, 0), 4: (0, 0, 0)}
     assert ns.tie[1].outcome == "failed_depth" and ns.tie[1].depth == ns.tie[1].depth_before
     assert len(ns.ties) > 0 and ns.four.coverage.sum() > ns.one.coverage.sum()
     quads = [f.overlay("quad_overshading") for f in (ns.sphere, ns.floor)]
