@@ -506,6 +506,14 @@ def test_frame_inspector_shows_the_pairs_history_of_the_same_pixel_beside():
 # -- lesson 11 ------------------------------------------------------------------------------
 @pytest.mark.notebook
 @pytest.mark.filterwarnings("ignore::DeprecationWarning")
+def _lesson_11_source() -> str:
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks" / "11_debugging_a_frame.ipynb"
+    return "".join("".join(c["source"]) for c in json.loads(path.read_text())["cells"])
+
+
 def test_lesson_11_tells_each_story():
     from test_lessons import lesson
 
@@ -516,6 +524,17 @@ def test_lesson_11_tells_each_story():
     assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
+    # Question 1 (r27 D3, asked before the history): GL_ALWAYS writes the farther depth
+    assert "answer=q1_choices[1]," in _lesson_11_source()
+    assert ns.q1_choices[1].startswith(f"{ns.far_won[1].depth_after:.4f}")
+    assert (
+        ns.far_won[1].depth_after
+        == ns.far_won[1].depth
+        == ns.off.depth[ns.far_won.row, ns.far_won.col]
+    )
+    # §5 (r27 D4): llvmpipe's stencil counts and occlusion queries equal the overlays
+    if ns.gl_ok:
+        assert ns.gl_differ == {1: (0, 0, 0), 4: (0, 0, 0)}
     assert ns.tie[1].outcome == "failed_depth" and ns.tie[1].depth == ns.tie[1].depth_before
     assert len(ns.ties) > 0 and ns.four.coverage.sum() > ns.one.coverage.sum()
     quads = [f.overlay("quad_overshading") for f in (ns.sphere, ns.floor)]
@@ -707,3 +726,61 @@ def test_the_narrow_history_table_keeps_the_piece_and_sample_columns_where_they_
         lines = history_table(h, narrow=True).splitlines()
         assert lines[0].endswith(":") and "on the way" in lines[1], lines[:2]
         assert max(map(len, lines)) <= NARROW, lines  # the why wraps under its row if not
+
+
+def _five_outcomes_frame():
+    """A 16 x 16 frame whose pixel (6, 6) has all five outcomes: passed, hi_z (a copy
+    behind it), failed_depth (a steep triangle nearer elsewhere in the tile), culled (wound
+    the other way, cull='back') and not_covered (a small triangle whose box reaches it)."""
+    big = [[0, 32], [32, 0], [0, 0]]
+    tris = [big, big, [[4, 12], [12, 4], [4, 4]], big[::-1], [[5.6, 7.0], [7.0, 5.6], [5.6, 5.6]]]
+    depths = [[0.5] * 3, [0.7] * 3, [1.0, 1.0, 0.0], [0.2] * 3, [0.1] * 3]
+    return tr.render(
+        clip_from_window(tris, depths, width=16, height=16), 16, 16, trace=True, cull="back"
+    )
+
+
+def test_history_legend_stays_in_the_axes_and_off_the_tick_labels():
+    """Review r27 D2: in the inspector's history strip the two-column legend, with the long
+    "not_covered (no depth)" key, was wider than the Axes: it ran off the figure ("buffer
+    afte") and covered the top depth tick, at the pixels Questions 2 and 3 of lesson 11 send
+    the student to. At the inspector's size, in the classroom style, the legend lies inside
+    the Axes, covers no tick label, and (as before) no tile or marker; also with all five
+    outcomes and seven keys, and at the lesson's own figure size."""
+    matplotlib = pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_history, use_style
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    sphere = tr.render(get_scene("uv_sphere"), None, 64, 48, trace=True)
+    fan4 = tr.render(get_scene("fan"), None, 64, 48, trace=True, samples=4)
+    five = _five_outcomes_frame().history(6, 6)
+    assert set(five.outcomes) == set(OUTCOMES), five.outcomes
+    crowded = [sphere.history(14, 28), sphere.history(10, 28), fan4.history(14, 28), five,
+               glass_frame("uv_sphere", 64, 48).history(24, 32)]  # fmt: skip
+    with matplotlib.rc_context():  # (the style set for good leaks into later tests)
+        use_style("classroom")
+        for size, rect in (((4.6, 3.9), (0.26, 0.24, 0.71, 0.66)), ((7, 4.5), None)):
+            fig = plt.figure(figsize=size, dpi=96, layout=None if rect else "constrained")
+            ax = fig.add_axes(rect) if rect else fig.add_subplot()
+            try:
+                for h in crowded:
+                    ax.clear()
+                    plot_history(ax, h)
+                    fig.canvas.draw()
+                    box, axes = ax.get_legend().get_window_extent(), ax.get_window_extent()
+                    where = f"{size}, pixel ({h.row}, {h.col}): legend {box}, Axes {axes}"
+                    assert axes.x0 - 0.5 <= box.x0 and box.x1 <= axes.x1 + 0.5, where
+                    assert axes.y0 - 0.5 <= box.y0 and box.y1 <= axes.y1 + 0.5, where
+                    labels = [t for t in ax.get_yticklabels() + ax.get_xticklabels()
+                              if t.get_visible() and t.get_text()]  # fmt: skip
+                    assert not [t.get_text() for t in labels
+                                if t.get_window_extent().overlaps(box)], where  # fmt: skip
+                    tiles = [p for p in ax.patches if np.isclose(p.get_width(), 0.7)]
+                    assert not [p for p in tiles if p.get_window_extent().overlaps(box)], where
+                    for line in ax.lines:
+                        xy = ax.transData.transform(np.c_[line.get_xdata(), line.get_ydata()])
+                        assert not [q for q in xy if np.isfinite(q).all() and box.contains(*q)]
+            finally:
+                plt.close(fig)

@@ -818,7 +818,9 @@ def test_11_overshading_title_question_3_and_early_tests():
     assert len(quad_triangles(ns.sphere, r0, c0)) > len(shown)
     # §1: early_fragment_tests moves the depth WRITE before the shader too (GL 4.6 §14.9)
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
-    words = " ".join(" ".join(cells[4]["source"]).split())
+    # (r27 D6: beside Hi-Z in §5, no longer between §1's table and its reading)
+    (words,) = [" ".join(" ".join(c["source"]).split()) for c in cells
+                if "**Testing before shading.**" in "".join(c["source"])]  # fmt: skip
     assert "**and their writes**" in words and "does not undo the depth write" in words
     assert "§14.9 *Early Per-Fragment Tests*" in words
 

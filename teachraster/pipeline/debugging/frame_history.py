@@ -769,18 +769,8 @@ def draw_history(ax, h: PixelHistory):
         artists.append(ax.text(0.5, 0.5, "no triangle reaches this pixel", ha="center",
                                va="center", transform=ax.transAxes, fontsize="small"))  # fmt: skip
     if n:  # in the depth part of the Axes (the colours, if any, are above it)
-        # The longest labels share the first column (filled first), so that two columns
-        # stay within the Axes' width.
-        half = (len(shown) + 1) // 2
-        ranked = sorted(range(len(shown)), key=lambda i: -len(shown[i][1]))
-        first = sorted(ranked[:half])
-        order = first + [i for i in range(len(shown)) if i not in first]
-        handles, labels = zip(*(shown[i] for i in order))
         depth_part = (top - bottom) / (ax.get_ylim()[1] - bottom)
-        legend = ax.legend(handles, labels, fontsize="x-small", loc="upper center", ncols=2,
-                           bbox_to_anchor=(0, 0, 1, depth_part), framealpha=0.85,
-                           columnspacing=0.8, handlelength=1.0, handletextpad=0.4,
-                           borderaxespad=0.2)  # fmt: skip
+        legend = _fitted_legend(ax, shown, depth_part)
         artists.append(legend)
         highest = max(every + list(depth)) + tile / 2
         needed = _make_room(ax, legend, highest, bottom, top)
@@ -793,6 +783,37 @@ def draw_history(ax, h: PixelHistory):
             ax.set_yticks(*depth_ticks(bottom, top))
             artists += _draw_colours(ax, h, x, (bottom, top))
     return artists
+
+
+def _fitted_legend(ax, shown: list, depth_part: float):
+    """The legend of :func:`draw_history` at the top of the depth part (the lower
+    ``depth_part`` of the Axes), in the first layout that fits the Axes' width: two columns,
+    two columns with the long "(no depth)" labels on two lines, one column (review r27 D2: in
+    the inspector's 313-px Axes "not_covered (no depth)" made the two-column legend wider
+    than the Axes; it ran off the figure and covered the top depth tick). Measured on the
+    figure's renderer; without one, the first layout."""
+    wrapped = [label.replace(" (", "\n(") for _, label in shown]
+    layouts = [(2, [label for _, label in shown]), (2, wrapped), (1, wrapped)]
+    try:
+        renderer = ax.figure._get_renderer()
+        room = ax.get_window_extent(renderer).width
+    except AttributeError:  # (not a matplotlib figure we know how to measure)
+        renderer = None
+    for ncols, labels in layouts:
+        # the longest labels share the first column (filled first), so that two columns
+        # stay within the Axes' width
+        half = (len(shown) + ncols - 1) // ncols
+        ranked = sorted(range(len(shown)), key=lambda i: -len(labels[i]))
+        first = sorted(ranked[:half])
+        order = first + [i for i in range(len(shown)) if i not in first]
+        legend = ax.legend([shown[i][0] for i in order], [labels[i] for i in order],
+                           fontsize="x-small", loc="upper center", ncols=ncols,
+                           bbox_to_anchor=(0, 0, 1, depth_part), framealpha=0.85,
+                           columnspacing=0.8, handlelength=1.0, handletextpad=0.4,
+                           borderaxespad=0.2)  # fmt: skip
+        if renderer is None or legend.get_window_extent(renderer).width <= room - 2:
+            break
+    return legend
 
 
 def _make_room(ax, legend, highest: float, bottom: float, top: float) -> float:
