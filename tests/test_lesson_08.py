@@ -73,8 +73,9 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     assert "teachraster: the covered sample nearest the centre)" not in flat
     assert flat.count("the centre when it is covered") >= 3  # §5, its table, the summary
     assert "levels (a **rotated grid**" not in flat  # (the summary, far below, says five)
-    held = next(c for c in code if c.startswith("q_levels.hold()"))
-    assert "levels (a **rotated grid**" in held and "display(" in held
+    (held,) = [c for c in cells if "levels (a **rotated grid**" in "".join(c["source"])]
+    assert "".join(held["source"]).startswith("q_levels.hold()")  # a code cell, held,
+    assert held["metadata"]["jupyter"]["source_hidden"]  # its source collapsed as the question's
     sliver = next(c for c in code if "def draw_sliver" in c)
     assert "shown = ~((rows == 1) & (s == s_in))" in sliver
     assert "deferred shading" in flat and "G-buffer" in flat

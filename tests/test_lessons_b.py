@@ -1081,6 +1081,8 @@ def test_10_review_r26_hiz_question_held_text_and_sources():
     code = ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
     ask = next(i for i, c in enumerate(code) if "q_hiz = PredictPixels(" in c)
     assert code[ask + 1].startswith("q_hiz.hold()")
+    held = next(c for c in cells if "".join(c["source"]).startswith("q_hiz.hold()"))
+    assert held["metadata"]["jupyter"]["source_hidden"]  # collapsed, as the question's source
     assert "Keeping the farthest depth current" in code[ask + 1]
     assert "Keeping the farthest depth current" not in md and "must cover a whole tile" not in md
     assert "GL_GREATER" in md and "reversed-Z" in md and "until the depth buffer is cleared" in md

@@ -15,7 +15,6 @@ from .common import (
     Shown,
     control_row,
     fill_axes,
-    fit_width,
     labelled,
     style_context,
     title_html,
@@ -94,11 +93,11 @@ class TileExplorer(Holdable):
         # page's own pictures (issue 31: 1.3-5.5 fps through the kernel)
         self.level = LiveSlider(value=0, min=0, max=len(block_sizes) - 1, step=1,
                                 description="level", readout_format=".0f")  # fmt: skip
-        # hundreds of blocks (864 with 16/4/1 on 64×64): a track as wide as the column, not
-        # ipywidgets' ~120 px of readout-less track (review r26, lesson 10 c23); arrow keys
-        # step one block
+        # hundreds of blocks (864 with 16/4/1 on 64×64): a track as wide as the level slider's
+        # and the column, not ipywidgets' ~120 px (review r26, lesson 10 c23); arrow keys step
+        # one block
         self.block = widgets.IntSlider(value=0, min=0, max=0, description="block",
-                                       layout=fit_width(widgets.Layout(width="600px")))  # fmt: skip
+                                       layout=widgets.Layout(width="100%"))  # fmt: skip
         self.counters = widgets.HTML()
         self._fill()
         with style_context(style):
