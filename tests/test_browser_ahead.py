@@ -155,3 +155,56 @@ def test_format_switches_then_reverse_z_show_the_kernels_picture(lab, page, tmp_
     assert np.array_equal(shown, kernel), f"the page shows another picture ({tmp_path})"
     assert caption.startswith(f"float32, near {readout}, reverse-Z"), (caption, readout)
     assert not page.errors, page.errors
+
+
+# Review r26, lesson 10 c23: the TileExplorer opened under the caption "level 0: 16×16 blocks
+# ... 11 partial" over the finished walk (the level-2 picture), though the kernel's figure was
+# right: its first picture, the page's reference and poster, was drawn before the level-0
+# state, and the patch that followed reached the kernel's side only (no view yet to take it).
+TILES_CELLS = [
+    "import numpy as np\nimport teachraster as tr\nfrom teachraster.widgets import TileExplorer\n"
+    "xy = np.array([[3.3, 2.1], [60.2, 14.7], [20.9, 58.4]])  # lesson 10's triangle",
+    "explorer = TileExplorer(tr.Triangle(xy), 64, 64, block_sizes=(16, 4, 1))\n"
+    "explorer.widget.add_class('t-tiles')\nexplorer",
+]
+
+
+def _shown_picture(tab, cls):
+    import base64
+
+    import numpy as np
+
+    w, h, data = tab.evaluate(SHOWN_B64, cls)
+    return np.frombuffer(base64.b64decode(data), np.uint8).reshape(h, w, 4)
+
+
+def test_tile_explorers_first_picture_is_the_kernels_default(lab, page, tmp_path):  # noqa: F811
+    import time
+
+    import numpy as np
+
+    _run_all(lab, page, TILES_CELLS, "tiles_default.ipynb")
+    # the picture as it first reaches the page (the poster decoded), then once every level's
+    # picture has been drawn ahead and the kernel idles: both the kernel's default
+    page.wait_for_function("""() => { const i = document.querySelector('.t-tiles .tr-drag img');
+        return i && i.complete && i.naturalWidth > 0; }""", timeout=120_000)  # fmt: skip
+    first = _shown_picture(page, "t-tiles")
+    page.wait_for_function(ALL_AHEAD, arg="t-tiles", timeout=120_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    time.sleep(1.0)  # a poster sent after the pictures drawn ahead would come meanwhile
+    settled = _shown_picture(page, "t-tiles")
+    caption = page.locator(".t-tiles .tr-drag-caption").inner_text()
+    saved = tmp_path / "default.npy"
+    run_new_cell(page, "fresh = TileExplorer(tr.Triangle(xy), 64, 64, block_sizes=(16, 4, 1))\n"
+                       f"np.save({str(saved)!r}, fresh.display.widget._last)\n")  # fmt: skip
+    deadline = time.time() + 60
+    while not saved.exists() and time.time() < deadline:
+        time.sleep(0.5)
+    kernel = np.load(saved)
+    np.save(tmp_path / "first.npy", first)
+    np.save(tmp_path / "settled.npy", settled)
+    assert caption.startswith("level 0: 16×16 blocks"), caption
+    assert first.shape == kernel.shape, (first.shape, kernel.shape)
+    assert np.array_equal(first, kernel), f"the first picture is not the default ({tmp_path})"
+    assert np.array_equal(settled, kernel), f"the page shows another picture ({tmp_path})"
+    assert not page.errors, page.errors

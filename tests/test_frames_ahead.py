@@ -428,3 +428,28 @@ def test_a_case_picker_in_a_kernel_keeps_the_pictures_it_draws():
     assert picker.display.draws == draws and picker.display.widget.value == shown
     assert ("collinear", "span") in picker._ahead.kept
     picker.close()
+
+
+def test_every_slider_explorers_first_picture_is_its_default_picture():
+    """Review r26 (lesson 10's TileExplorer): a picture sent as a patch while the explorer is
+    being made reaches no view (the cell has not displayed it yet), so a view shows the first
+    picture, the reference and poster. Every slider explorer's first picture must therefore be
+    the one it shows at its defaults: TileExplorer's was the finished walk under "level 0"."""
+    from widget_examples import examples
+
+    from teachraster.widgets.live_slider import SliderDisplay
+
+    checked = []
+    for name, make in sorted(examples().items()):
+        widget = make()
+        try:
+            display = getattr(widget, "display", None)
+            if not isinstance(display, SliderDisplay):
+                continue
+            page = display.widget
+            assert page.ref_frame == page.poster_frame == 1, (name, page.ref_frame, page._frame)
+            assert np.array_equal(page._ref, page._last), name
+            checked.append(name)
+        finally:
+            widget.close()
+    assert "TileExplorer" in checked and len(checked) >= 7, checked

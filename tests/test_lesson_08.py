@@ -53,3 +53,29 @@ def test_lesson_08_inspector_reads_sixteen_samples(ns):
     inspector.row.value, inspector.col.value = 3, 16
     assert "of 16 covered" in inspector.pixel.square.axes.get_title()
     assert inspector.table.value.count("<tr>") == 17  # every sample's edge values
+
+
+def test_lesson_08_review_r26_wording_and_held_answers():
+    """Review r26, 08: the centroid rule stated once (cell 19 read alone gave another rule);
+    teachraster is no conformant implementation; the text saying how many levels the standard
+    pattern gives is held with q_levels' figure, not a Markdown cell on screen before Check;
+    the sliver question does not draw the samples whose coverage it asks about; why deferred
+    renderers left MSAA for TAA."""
+    import json
+    from pathlib import Path
+
+    cells = json.loads((Path(__file__).resolve().parents[1] / "notebooks" /
+                        "08_antialiasing.ipynb").read_text())["cells"]  # fmt: skip
+    md = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+    code = ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
+    flat = md.replace("\n", " ")
+    assert "conforming" not in flat and "two rules that the specifications both allow" in flat
+    assert "teachraster: the covered sample nearest the centre)" not in flat
+    assert flat.count("the centre when it is covered") >= 3  # §5, its table, the summary
+    assert "levels (a **rotated grid**" not in flat  # (the summary, far below, says five)
+    (held,) = [c for c in cells if "levels (a **rotated grid**" in "".join(c["source"])]
+    assert "".join(held["source"]).startswith("q_levels.hold()")  # a code cell, held,
+    assert held["metadata"]["jupyter"]["source_hidden"]  # its source collapsed as the question's
+    sliver = next(c for c in code if "def draw_sliver" in c)
+    assert "shown = ~((rows == 1) & (s == s_in))" in sliver
+    assert "deferred shading" in flat and "G-buffer" in flat

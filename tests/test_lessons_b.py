@@ -1071,6 +1071,31 @@ def test_10_the_test_count_chart_names_the_block_tests():
     assert walk.blocks < 0.02 * ns.half_tests  # why: thinner than a fiftieth of the axis
 
 
+def test_10_review_r26_hiz_question_held_text_and_sources():
+    """Review r26, 10: the rule that answers the Hi-Z question (a tile rejects only where the
+    faces before covered all of it) stood in the paragraph above it: it is held below the
+    question until Check; Hi-Z is described for GREATER / reversed-Z and a change of the depth
+    function too; "tiled" and Morton, the same path at this size, are one panel; Giesen is no
+    longer cited for what the lesson could not check."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    cells = cells["cells"]
+    md = " ".join(" ".join("".join(c["source"]) for c in cells
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    code = ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
+    ask = next(i for i, c in enumerate(code) if "q_hiz = PredictPixels(" in c)
+    assert code[ask + 1].startswith("q_hiz.hold()")
+    held = next(c for c in cells if "".join(c["source"]).startswith("q_hiz.hold()"))
+    assert held["metadata"]["jupyter"]["source_hidden"]  # collapsed, as the question's source
+    assert "Keeping the farthest depth current" in code[ask + 1]
+    assert "Keeping the farthest depth current" not in md and "must cover a whole tile" not in md
+    assert "GL_GREATER" in md and "reversed-Z" in md and "until the depth buffer is cleared" in md
+    assert "Giesen" not in md and "sort-middle" in md
+    ns = lesson("10_tiles_and_hierarchical_z")
+    assert ns.same_path and "tiled" not in ns.drawn_orders
+
+
 def test_10_tile_explorer_driven_by_the_test():
     import teachraster as tr
     from teachraster.widgets import TileExplorer

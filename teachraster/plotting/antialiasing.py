@@ -417,6 +417,9 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
     of eight directions (then farther) where its box clears the labels placed before, every
     dot and the centre's cross (``dot_pt``: the dots' and the cross's size in points).
     Random patterns put samples close together: fixed offsets printed "2" and "13" as "213".
+    The pixel's sides are obstacles too, and every box keeps ``NUMBER_GAP`` points from the
+    next: with 16 random samples "13" and "11" sat on the pixel's top side and "12 9" touched
+    (review r26, lesson 08 c34).
     """
     fig = ax.figure
     to_pt = 72.0 / fig.dpi
@@ -424,16 +427,21 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
     c = ax.transData.transform([centre])[0] * to_pt
     size = fs(0.75)
     r = dot_pt / 2 + 1.0
-    # obstacles as (x0, y0, x1, y1) in points: the dots and the centre's cross
+    # obstacles as (x0, y0, x1, y1) in points: the dots, the centre's cross, the pixel's sides
     blocked = [(x - r, y - r, x + r, y + r) for x, y in pts]
     blocked.append((c[0] - r, c[1] - r, c[0] + r, c[1] + r))
+    (sx0, sy0), (sx1, sy1) = np.sort(ax.transData.transform(
+        [np.subtract(centre, 0.5), np.add(centre, 0.5)]) * to_pt, axis=0)  # fmt: skip
+    half = 1.5  # half a side's width, in points
+    blocked += [(sx0 - half, sy0, sx0 + half, sy1), (sx1 - half, sy0, sx1 + half, sy1),
+                (sx0, sy0 - half, sx1, sy0 + half), (sx0, sy1 - half, sx1, sy1 + half)]  # fmt: skip
     frame = ax.get_window_extent()
     x_lo, y_lo = frame.x0 * to_pt, frame.y0 * to_pt
     x_hi, y_hi = frame.x1 * to_pt, frame.y1 * to_pt
     directions = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]
     labels = []
     for s, (x, y) in enumerate(pts):
-        w, h = 0.62 * size * len(str(s)) + 2, size + 1
+        w, h = 0.62 * size * len(str(s)) + 2 + NUMBER_GAP, size + 1 + NUMBER_GAP
         best, best_hits = None, None
         for reach in (1.0, 1.8, 2.6):
             for dx, dy in directions:
@@ -454,6 +462,10 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
                                   textcoords="offset points", ha="center", va="center",
                                   fontsize=size, zorder=6))  # fmt: skip
     return labels
+
+
+#: Points kept between two sample numbers' boxes (and a number and a dot or the pixel's side).
+NUMBER_GAP = 3.0
 
 
 def _overlap(a, b) -> bool:

@@ -250,8 +250,10 @@ def current_block_outline(ax) -> Line2D:
     step (vermillion), over the triangle, with a white halo that keeps it apart from an
     orange partial block and the black edges (review r11, lesson 10: a student could not
     see where the walk was among 800 blocks)."""
+    # not clipped: the ticks that point at a small block on the image's border reach into
+    # the margin (review r26: at block 5, a 1×1 block in row 0, the upper tick was cut off)
     (outline,) = ax.plot([], [], color=COLORS["current"], zorder=5, solid_capstyle="butt",
-                         visible=False)  # fmt: skip
+                         visible=False, clip_on=False)  # fmt: skip
     _outline_width(outline, lw(0.8))
     return outline
 

@@ -72,7 +72,10 @@ class SamplingExplorer(Shown):
         self.rate = LiveSlider(value=rate, min=8, max=64, step=4, description="samples",
                                readout_format=".0f",
                                layout=fit_width(widgets.Layout(width="320px")))  # fmt: skip
-        self.width = LiveSlider(value=width, min=0.0, max=4.0, step=0.25, description="filter",
+        # the width's unit (sample spacings) in its name: "4.00" alone did not say of what
+        # (review r26, 08 c10)
+        self.width = LiveSlider(value=width, min=0.0, max=4.0, step=0.25,
+                                description="filter (spacings)",
                                 readout_format=".2f",
                                 layout=fit_width(widgets.Layout(width="320px")))  # fmt: skip
         self.kernel = widgets.ToggleButtons(options=KERNELS, value=kernel)

@@ -93,7 +93,11 @@ class TileExplorer(Holdable):
         # page's own pictures (issue 31: 1.3-5.5 fps through the kernel)
         self.level = LiveSlider(value=0, min=0, max=len(block_sizes) - 1, step=1,
                                 description="level", readout_format=".0f")  # fmt: skip
-        self.block = widgets.IntSlider(value=0, min=0, max=0, description="block")
+        # hundreds of blocks (864 with 16/4/1 on 64×64): a track as wide as the level slider's
+        # and the column, not ipywidgets' ~120 px (review r26, lesson 10 c23); arrow keys step
+        # one block
+        self.block = widgets.IntSlider(value=0, min=0, max=0, description="block",
+                                       layout=widgets.Layout(width="100%"))  # fmt: skip
         self.counters = widgets.HTML()
         self._fill()
         with style_context(style):
@@ -104,6 +108,11 @@ class TileExplorer(Holdable):
             self.ax, self.fig = ax, fig
             self.artists = None
             self._draw_blocks()
+            # the first picture is the level-0 view: it becomes the page's reference and poster,
+            # and a patch sent before the page shows the figure is lost (review r26, lesson 10
+            # c23: the finished walk stood under the caption "level 0")
+            self._compute_at(self.level.value)
+            self._set_artists()
             _fit_margins(fig, ax)
             self.display = slider_display(fig, self.backend, draw=self._draw_figure,
                                           drafting=lambda: self.level.dragging,
@@ -123,7 +132,10 @@ class TileExplorer(Holdable):
         self.widget = widgets.VBox([title, menus, self.level, self.block, *info_widgets,
                                     self.display.widget, self.counters])  # fmt: skip
         self._ahead = None
-        self.show_level()
+        if self.backend == "ipympl":
+            self.show_level()
+        else:
+            self.info.value = self._info_html()  # the picture is sent already (above)
         if self.backend != "ipympl":
             self._ahead = self.display.ahead(self.level, self)  # drawn while the kernel idles
 
