@@ -80,3 +80,26 @@ def test_an_answer_cell_shows_only_after_check_and_stays_hidden_when_reopened(la
     # same frame: one CI run read the line still on screen just after the answer showed.
     # So wait for the line to go (it still fails if the line stays).
     _line(page).wait_for(state="hidden", timeout=15_000)
+
+
+MARKDOWN_NAME = "held_markdown.ipynb"
+MARKDOWN_CELLS = [
+    CELLS[0],
+    "q.hold()\nfrom IPython.display import Markdown\n\nMarkdown('THE ANSWER: **clockwise**')",
+]
+
+
+def test_an_answer_cell_that_shows_markdown_holds_it_too(lab, page):  # noqa: F811
+    """Lesson 09 holds q_probes' explanation, prose with formulas, as a cell's Markdown result
+    (an ``execute_result``, not a stream): hidden until Check as a printed answer is."""
+    _run_all(lab, page, MARKDOWN_CELLS, MARKDOWN_NAME)
+    question = page.locator(".jupyter-widgets", has_text="Which way does it wind?").first
+    question.wait_for(timeout=60_000)
+    _answer(page).wait_for(state="attached", timeout=60_000)
+    assert not _answer(page).is_visible()
+    assert _line(page).is_visible()
+    question.locator("button", has_text="counter-clockwise").click()
+    question.locator("button", has_text="Check").click()
+    _answer(page).wait_for(state="visible", timeout=15_000)
+    assert page.locator(".jp-RenderedMarkdown strong", has_text="clockwise").first.is_visible()
+    _line(page).wait_for(state="hidden", timeout=15_000)

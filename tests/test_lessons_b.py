@@ -388,12 +388,15 @@ def test_06_review_r23_tables_fit_and_wording():
     assert "Direct3D's 16.8 fixed point" in md and "needs 51 bits" in md
 
 
-@pytest.mark.parametrize("name", ["05a_zbuffer", "05b_depth_precision", "06_what_accuracy_costs"])
+@pytest.mark.parametrize(
+    "name",
+    ["05a_zbuffer", "05b_depth_precision", "06_what_accuracy_costs", "09_texture_filtering"],
+)
 def test_every_printed_line_fits_a_column(name):
     """Review r24 06-2, 06-3: not only the tables, every line the lesson prints fits a
     notebook column (80 characters); the fronts, the drift and the set-up ran to 208. Issue 29:
     05a and 05b too (05a's drawing orders ran to 134, 05b's lines to 120), so they do not wrap
-    or scroll on a projector."""
+    or scroll on a projector; 09 too (its derivative table and plans ran to 331)."""
     from notebook_runs import executed
 
     for cell in executed(name).notebook().cells:
@@ -909,6 +912,38 @@ def test_09_quads_closed_form_and_predictions():
     assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
     assert ns.sizes[-1] == f"more than {ns.cuts[-1]:g}"
     assert ns.top > 0  # the figures start at the floor, not in the sky
+
+
+def test_09_answers_wait_for_check():
+    """Review r26 09-1, 09-2: no markdown between a question and the next section states its
+    answer; the cell after each question holds it (GL's rounding rule, the probe count's
+    ceiling); q_probes does not point at the count's formula; §8 says GL lets ρ be
+    approximated; the chart's reads are on the minified pixels, as its errors are."""
+    import json
+    import re
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = {name: next(i for i, t in enumerate(text) if re.search(rf"^{name} = Predict", t, re.M))
+           for name in ("q_level", "q_probes")}  # fmt: skip
+    for name, i in ask.items():
+        assert text[i + 1].startswith(f"{name}.hold()"), name
+        below = []
+        for c, t in zip(cells[i + 1 :], text[i + 1 :]):
+            if c["cell_type"] == "markdown" and t.startswith("## "):
+                break
+            if c["cell_type"] == "markdown":
+                below.append(t)
+        words = " ".join(below)
+        assert "λ + \\tfrac12" not in words and "⌈λ" not in words, name
+        assert "\\lceil" not in words and "jump" not in words, name
+    assert "printed how many" not in text[ask["q_probes"]]
+    assert "approximate" in text[ask["q_level"] - 1] and "§8.14.1" in text[ask["q_level"] - 1]
+    ns = lesson("09_texture_filtering")
+    assert max(ns.bound_gap.values()) <= 1  # GL's bounds: levels at most one apart
+    reads = {r["filter"]: r["reads_minified"] for r in ns.study}
+    assert 7.5 < reads["trilinear"] < 8 and 1.5 < reads["nearest_mipmap_linear"] < 2
+    assert abs(8 - 4 * ns.past_last - reads["trilinear"]) < 1e-9
 
 
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
