@@ -104,7 +104,7 @@ def test_blending_explorer_order_and_toggles():
 
     ex = BlendingExplorer(backend="image", size=(24, 24))
     try:
-        # the readout names both orders it compares (lesson 12 compares 0, 1, 2 with 2, 1, 0)
+        # the readout names both orders it compares (lesson 12b compares blue, red, yellow with yellow, red, blue)
         back = " → ".join(str(int(t)) for t in ex._depth_order())
         assert ex.order != ex._depth_order() and f"back to front ({back})" in ex.info.value
         assert f"drawn {' → '.join(map(str, ex.order))}:" in ex.info.value
@@ -169,7 +169,7 @@ def test_line_player_gets_a_new_slider_when_the_rule_changes_the_step_count():
 
 
 def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
-    """Lesson 12's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
+    """Lesson 12a's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
     ends at x = 12.5, so the walk stops at column 12 (it went on to a column 13 with the
     infinite line's y), and column 6, where the line passes y = 3 exactly (a diamond corner,
     c13's column where Bresenham differs), says that GL's ε decided it."""

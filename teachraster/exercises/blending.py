@@ -1,10 +1,10 @@
 """Exercises ``over(src, dst)``, ``over_to_premultiplied(src, dst)`` and
-``over_premultiplied(src, dst)`` of lesson 12 (the blend equation), and
+``over_premultiplied(src, dst)`` of lesson 12b (the blend equation), and
 ``atop_premultiplied(src, dst)``, exercise 9.2b.
 
 ``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
 the premultiplied result, from Porter and Duff's coverage argument (exercise 9.2 derives
-straight over and premultiplied atop the same way). Lesson 12 §9 states the rule on premultiplied inputs without deriving it, and
+straight over and premultiplied atop the same way). Lesson 12b §4 states the rule on premultiplied inputs without deriving it, and
 premultiplying first, then applying that rule, gives the same numbers: the check cannot tell a
 derivation from that route, and the notebook says so (r9: it claimed the lesson printed
 neither); both alphas 0 is the case where the straight form has no colour. ``over_premultiplied`` holds a
@@ -12,8 +12,8 @@ glow (alpha 0, light in it), which no straight colour holds: a solution that div
 to reuse 9.2a loses it, and is named.
 
 ``atop_premultiplied`` is Porter and Duff's *atop* on premultiplied colours, derived from the
-same two assumptions as 9.2a (r20 D-1: 9.2b was ``over_premultiplied``, the rule lesson 12 §6
-and §9 print; lesson 12 prints no *atop*). It is one GL factor pair, (DST_ALPHA,
+same two assumptions as 9.2a (r20 D-1: 9.2b was ``over_premultiplied``, the rule lesson 12b §1
+and §4 print; lesson 12b prints no *atop*). It is one GL factor pair, (DST_ALPHA,
 ONE_MINUS_SRC_ALPHA), so its expected answers come from the core's blend equation too.
 
 Explanations print both colours with one number format (:func:`colour_texts`); the figure
@@ -329,10 +329,10 @@ _ATOP_RULE = (": go back through the derivation: (1) split the pixel into the sh
 
 #: 9.2b's named mistakes: each says what the answer did (r20 D-1). s and d are premultiplied.
 ATOP_MISTAKES = [
-    ("over, not atop", "that is over, lesson 12 §9's rule: it lets the source show in its "
+    ("over, not atop", "that is over, lesson 12b §4's rule: it lets the source show in its "
      "whole share of the pixel, also where the destination does not cover it",
      lambda s, d: s + d * (1 - s[3])),
-    ("over, not atop", "your alpha is right, but your colour is over's, lesson 12 §9's rule: "
+    ("over, not atop", "your alpha is right, but your colour is over's, lesson 12b §4's rule: "
      "it lets the source show in its whole share of the pixel, also where the destination "
      "does not cover it", lambda s, d: _atop(s[:3] + d[:3] * (1 - s[3]), s, d)),
     ("straight rule on premultiplied", "you derived atop for straight colours and applied it "
@@ -692,7 +692,7 @@ STRAIGHT_ALPHAS = [
 def _divided_by_wrong_alpha() -> list[Mistake]:
     """9.2a's light divided by a wrong alpha of :data:`STRAIGHT_ALPHAS` ((0, 0, 0, 0) where
     that alpha is 0): the colour is off too (r23 D-4: GL's single-pair alpha
-    α_s·α_s + α_d·(1 − α_s), which lesson 12 prints, got the general message)."""
+    α_s·α_s + α_d·(1 − α_s), which lesson 12b prints, got the general message)."""
 
     def gives(alpha):
         def wrong(src, dst):

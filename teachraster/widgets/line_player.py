@@ -1,6 +1,6 @@
 """``LinePlayer``: step through a line like a fill, and switch its rule.
 
-Lesson 12's player: Play/Pause and a step slider over the steps of
+Lesson 12a's player: Play/Pause and a step slider over the steps of
 :func:`teachraster.rasterize_line` (``trace=True``): the snap, the major axis, then one step
 per column (or row) with the rule's decision in the caption: the diamond test, Bresenham's
 error term or the DDA's float32 sum. The figure is a :class:`~teachraster.plotting.lines.LineView`
@@ -109,7 +109,7 @@ class LinePlayer(Shown):
         A new slider, not the old one's ``max`` changed: the page's slider (noUiSlider in
         ipywidgets 8) takes a new range for the pointer and the arrow keys, but its End and
         Home keys keep the range it was created with, so after a switch from Bresenham (13
-        steps) to the diamond rule (14) End stopped one step short (review r27, lesson 12).
+        steps) to the diamond rule (14) End stopped one step short (review r27, lesson 12a).
         """
         if self._link is not None:
             self._link.unlink()
