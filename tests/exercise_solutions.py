@@ -262,7 +262,7 @@ ALTERNATIVES = {
     "depth_test": depth_test_numpy,
 }
 
-# lesson 12's exercises (line_pixels, over, over_premultiplied) live in their own file
+# lessons 12a and 12b's exercises (line_pixels, over, over_premultiplied) live in their own file
 from lines_blending_solutions import ALTERNATIVES as _LB_ALTERNATIVES  # noqa: E402
 from lines_blending_solutions import CORRECT as _LB_CORRECT  # noqa: E402
 from lines_blending_solutions import MISTAKES as _LB_MISTAKES  # noqa: E402

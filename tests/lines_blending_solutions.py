@@ -1,4 +1,4 @@
-"""Independent solutions of lesson 12's exercises (no call into teachraster): the diamond rule
+"""Independent solutions of lessons 12a and 12b's exercises (no call into teachraster): the diamond rule
 in exact Fractions with GL's perturbation as a concrete tiny ε, the blend equations by hand;
 and the typical mistakes the checker must catch and explain."""
 

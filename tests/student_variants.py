@@ -1442,7 +1442,7 @@ KINDS.update(
 )
 
 
-# -- r14 09-6: the two textbook forms of lesson 12 §2-3 ------------------------------------------
+# -- r14 09-6: the two textbook forms of lesson 12a §2-3 ------------------------------------------
 def line_bresenham_textbook(p0, p1):
     """Bresenham's loop as most courses print it (err = dx − dy; e2 > −dy; e2 < dx), the end
     points floored to their pixels, both end pixels lit."""

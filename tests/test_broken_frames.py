@@ -582,14 +582,14 @@ def test_the_notebook_asks_for_the_evidence_and_lists_it_with_the_causes():
     # teach: the intro and README say so. r18-14: in neutral words, naming no mechanism (the
     # symptoms beside "reverse-Z" or "premultiplied alpha" named three frames' causes)
     flat = " ".join(intro.split())
-    assert "after lesson 12" in flat and "05b's depth mapping" in flat, flat
-    assert "lesson 12's blending" in flat, flat
+    assert "after lesson 12b" in flat and "05b's depth mapping" in flat, flat
+    assert "lesson 12b's blending" in flat, flat
     for telling in ("reverse", "16-bit", "ties", "premultipl", "§9"):
         assert telling not in flat, telling
     row = next(
         line for line in README.read_text().splitlines() if "diagnose nine broken frames" in line
     )
-    assert "lesson 11)" not in row and "after lesson 12" in row, row
+    assert "lesson 11)" not in row and "after lesson 12b" in row, row
     assert "**redrawn**" in how and "typed in" in how and "private functions" in how
     for n in ANSWERS:
         task = cells[f"frame_{n}_task"]

@@ -276,7 +276,7 @@ def test_pipeline_stage_clicked(lesson):
     box = w.locator("[data-stage=rasterize] text").all_text_contents()  # SVG: no innerText
     # lesson 06 prices the rasteriser's choices (review r23 00-4): three lines, which the
     # 84-px box holds under its one-line name (baselines 46, 61, 76 px; the name's at 28)
-    assert sent == ["01–04, 06,", "07, 08, 10,", "12"] and box[-3:] == sent
+    assert sent == ["01–04, 06,", "07, 08, 10,", "12a"] and box[-3:] == sent
 
 
 def test_predictions_wait_for_an_answer_then_show_it(lesson):

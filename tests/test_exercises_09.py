@@ -119,7 +119,7 @@ def test_the_tie_words_agree_with_lesson_12_and_conventions():
     first = _first("line_pixels", line_with(-EPS, 0))
     assert "GL moves the segment" not in first.explanation
     assert "row k − 1, the upper row, as Direct3D does" in first.explanation
-    assert "lights the lower row, row k: lesson 12 §1" in first.explanation
+    assert "lights the lower row, row k: lesson 12a §1" in first.explanation
     assert "GL moves it up" not in _first("line_pixels", line_with(-EPS, E2)).explanation
     import json
     from pathlib import Path
@@ -1293,7 +1293,7 @@ def test_9_2b_asks_its_questions_without_answering_them():
     task = " ".join(_nb_cells()["atop_premultiplied_task"].split())
     assert "atop_premultiplied(src, dst)" in task and "uncorrelated" in task, task
     assert "what your rule gives there" in task and "(0.3, 0.2, 0.05, 0)" in task, task
-    for answer in ("lesson 12 §9 states", "adds its light", "no straight one can", "covers "
+    for answer in ("lesson 12 §9 states", "lesson 12b §4 states", "adds its light", "no straight one can", "covers "
                    "nothing", "glow", "shares 9.2's point", "cannot give it", "DST_ALPHA",
                    "α_s·α_d", "α_d·(1 − α_s)", "c_s·α_d", "the destination's alpha",
                    "ONE_MINUS"):  # fmt: skip
@@ -1304,8 +1304,12 @@ def _lesson_12_text() -> str:
     import json
     from pathlib import Path
 
-    nb = Path(__file__).parent.parent / "notebooks/12_lines_and_blending.ipynb"
-    return "\n".join("".join(c["source"]) for c in json.loads(nb.read_text())["cells"])
+    folder = Path(__file__).parent.parent / "notebooks"  # lesson 12, split into 12a and 12b
+    return "\n".join(
+        "".join(c["source"])
+        for name in ("12a_lines", "12b_blending")
+        for c in json.loads((folder / f"{name}.ipynb").read_text())["cells"]
+    )
 
 
 def test_lesson_12_prints_no_atop():
@@ -1825,7 +1829,7 @@ def test_r23_text_fixes():
     assert said == ["plus a pixel"], said  # never the operator
     assert '"additive"' in lesson and '"premultiplied"' in lesson, lesson[:200]
     intro = " ".join(cells["intro"].split())
-    assert "`teachraster.blend_equation`, lesson 12's `tr.blend_equation`" in intro, intro
+    assert "`teachraster.blend_equation`, lesson 12b's `tr.blend_equation`" in intro, intro
     assert "import teachraster as tr" not in cells["setup"]
     ftb = " ".join(cells["front_to_back_task"].split())
     assert "A GPU can composite nearest first too" in ftb and "name that pair" in ftb, ftb

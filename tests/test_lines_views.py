@@ -104,7 +104,7 @@ def test_blending_explorer_order_and_toggles():
 
     ex = BlendingExplorer(backend="image", size=(24, 24))
     try:
-        # the readout names both orders it compares (lesson 12 compares 0, 1, 2 with 2, 1, 0)
+        # the readout names both orders it compares (lesson 12b compares blue, red, yellow with yellow, red, blue)
         back = " → ".join(str(int(t)) for t in ex._depth_order())
         assert ex.order != ex._depth_order() and f"back to front ({back})" in ex.info.value
         assert f"drawn {' → '.join(map(str, ex.order))}:" in ex.info.value
@@ -144,8 +144,32 @@ def test_line_player_switches_rule():
         player.close()
 
 
+def test_line_player_gets_a_new_slider_when_the_rule_changes_the_step_count():
+    """Review r27 (lesson 12, cell 12): from Bresenham (0 to 13) to the diamond rule (0 to 14),
+    the page's slider took the new range for the pointer but its End key stopped at 13 (the
+    page's noUiSlider keeps the range it was created with for Home and End). The player now
+    shows a new slider with the new range, linked to Play and to the picture."""
+    from teachraster.widgets.line_player import LinePlayer
+
+    player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule="bresenham", step=2, backend="image")
+    try:
+        first = player.slider
+        assert first.max == 13 and first in player.controls.children
+        player.rule.value = "diamond"
+        assert player.slider is not first and player.slider.max == player.play.max == 14
+        assert player.slider in player.controls.children and first not in player.controls.children
+        assert player.slider.value == player.play.value == 2  # the step shown stays
+        player.slider.value = 14  # the new slider drives the picture and the caption
+        assert player.caption.value.startswith("step 14 (0 to 14): column 12")
+        player.rule.value = "bresenham"
+        assert player.slider.max == 13 and player.slider.value == 13  # clamped to the new end
+        assert player.caption.value.startswith("step 13 (0 to 13)")
+    finally:
+        player.close()
+
+
 def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
-    """Lesson 12's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
+    """Lesson 12a's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
     ends at x = 12.5, so the walk stops at column 12 (it went on to a column 13 with the
     infinite line's y), and column 6, where the line passes y = 3 exactly (a diamond corner,
     c13's column where Bresenham differs), says that GL's ε decided it."""

@@ -38,8 +38,24 @@ def test_core_import_does_not_pull_in_plotting_or_widgets():
 #: The lessons by number: issue 4's 00 tour and one per topic of the notes, lesson 05 split by
 #: issue 10 into 05a (the z-buffer, clipping) and 05b (depth precision); 08 antialiasing
 #: (issue 11), 09 texture filtering (issue 12), 10 tiles (issue 13), 11 frame debugging (issue 21),
-#: 12 lines and blending (issue 22).
-CURRICULUM = ["00", "01", "02", "03", "04", "05a", "05b", "06", "07", "08", "09", "10", "11", "12"]
+#: 12 lines and blending (issue 22), split by issue 29 into 12a (lines) and 12b (blending).
+CURRICULUM = [
+    "00",
+    "01",
+    "02",
+    "03",
+    "04",
+    "05a",
+    "05b",
+    "06",
+    "07",
+    "08",
+    "09",
+    "10",
+    "11",
+    "12a",
+    "12b",
+]
 
 
 def test_every_lesson_of_the_curriculum_is_there():

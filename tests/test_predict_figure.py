@@ -104,7 +104,7 @@ def test_cells_are_named_and_the_keys_step_in_the_axis_units():
 
 
 def test_a_point_marker_can_read_out_the_code_it_sits_on():
-    """Lesson 12's sRGB code: the marker shows "code 186" while it moves (the page) and the
+    """Lesson 12b's sRGB code: the marker shows "code 186" while it moves (the page) and the
     verdict repeats it (both sides); without ``readout`` nothing changes."""
     codes = dict(answer=(188, 0.5), draw=None, xlim=(-0.5, 255.5), ylim=(0, 1), tolerance=4,
                  units="codes")  # fmt: skip

@@ -319,13 +319,14 @@ def test_exercise_9_2_credits_the_straight_form_rightly_and_asks_what_lesson_12_
     task = text["over_straight_task"]
     assert "Porter and Duff" in task and "give *over* for **straight**" not in task
     assert "over_straight(src, dst)" in task and "lesson 12, §9" not in task
+    assert "lesson 12b, §4" not in task
     assert "over_straight_check" in text and "atop_premultiplied_task" in text  # r20 D-1
     # r11 09-A, 09-G: no shortcut offered, and GL's default is no blending
     assert "cannot tell the two apart" not in task and "textbook default" not in task
     said = str(ex.check("over_premultiplied", lambda s, d: np.asarray(s) * 0.5 + d[3]))
     assert "9.2a's derivation with src and dst" in said and "Porter and Duff's rule" not in said
     lesson = json.loads(Path(__file__).parents[1].joinpath(
-        "notebooks/12_lines_and_blending.ipynb").read_text())  # fmt: skip
+        "notebooks/12b_blending.ipynb").read_text())  # fmt: skip
     printed = " ".join("".join(c["source"]) for c in lesson["cells"])
     # the Summary names the exercise's functions (r8); no cell defines or computes it
     assert "def over_to_premultiplied" not in printed and "over_to_premultiplied(" not in printed

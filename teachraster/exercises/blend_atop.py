@@ -1,6 +1,6 @@
 """Exercise 9.2b, ``atop_premultiplied``: Porter and Duff's *atop* on premultiplied colours,
 derived from the same two assumptions as 9.2a (r20 D-1: 9.2b was ``over_premultiplied``, the
-rule lesson 12 §6 and §9 print; lesson 12 prints no *atop*). It is one GL factor pair,
+rule lesson 12b §1 and §4 print; lesson 12b prints no *atop*). It is one GL factor pair,
 (DST_ALPHA, ONE_MINUS_SRC_ALPHA), so its expected answers come from the core's blend equation
 too. Its cases hold a glow as the source and as the destination: a solution that divides by
 alpha, skips an input for its alpha, or clamps a colour to its alpha loses its light, and is
@@ -66,10 +66,10 @@ ATOP_RULE = (": go back through the derivation: (1) split the pixel into the sha
 
 #: 9.2b's named mistakes: each says what the answer did (r20 D-1). s and d are premultiplied.
 ATOP_MISTAKES = [
-    ("over, not atop", "that is over, lesson 12 §9's rule: it lets the source show in its "
+    ("over, not atop", "that is over, lesson 12b §4's rule: it lets the source show in its "
      "whole share of the pixel, also where the destination does not cover it",
      lambda s, d: s + d * (1 - s[3])),
-    ("over, not atop", "your alpha is right, but your colour is over's, lesson 12 §9's rule: "
+    ("over, not atop", "your alpha is right, but your colour is over's, lesson 12b §4's rule: "
      "it lets the source show in its whole share of the pixel, also where the destination "
      "does not cover it", lambda s, d: _atop(s[:3] + d[:3] * (1 - s[3]), s, d)),
     ("straight rule on premultiplied", "you derived atop for straight colours and applied it "

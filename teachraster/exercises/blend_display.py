@@ -1,4 +1,4 @@
-"""How the blend checks show colours (exercise 9.2, lesson 12's blend exercises, and
+"""How the blend checks show colours (exercise 9.2, lesson 12b's blend exercises, and
 :mod:`.front_to_back`): in words, two colours printed with one number format
 (:func:`colour_texts`), and as swatches over a checkerboard (:func:`swatches`): src and dst,
 then the expected blend only beside an answer, so that the figure never shows the answer

@@ -1,4 +1,4 @@
-"""Mistakes and words the blend checks share (exercise 9.2, lesson 12's blend exercises, and
+"""Mistakes and words the blend checks share (exercise 9.2, lesson 12b's blend exercises, and
 :mod:`.front_to_back`): the scaled sums the tables build their wrong blends from, a right
 colour with a wrong alpha, an answer rounded to whole numbers or to 8 bits, a guard that
 returns nothing for a faint pixel, and the glow (a premultiplied colour with alpha 0 and
@@ -169,7 +169,7 @@ def glow_skipped_words(args, expected, got) -> str:
             "light the same way)")  # fmt: skip
 
 
-#: A glow's light lost to a division by its alpha 0 (a NaN answer), in 9.2b and lesson 12's
+#: A glow's light lost to a division by its alpha 0 (a NaN answer), in 9.2b and lesson 12b's
 #: ``over_premultiplied``.
 GLOW_DIVIDED = Mistake("glow lost", _glow_words, fits=_glow_lost)
 #: 0/0 at an input with alpha 0 and no light (a NaN answer), in the same two.

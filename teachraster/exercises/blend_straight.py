@@ -1,10 +1,10 @@
 """Over on straight colours: exercise 9.2a's ``over_straight`` (straight in and out) and
-lesson 12's ``over_to_premultiplied`` (straight in, premultiplied out), their references and
+lesson 12b's ``over_to_premultiplied`` (straight in, premultiplied out), their references and
 their mistakes.
 
 ``over_to_premultiplied`` takes straight colours (a translucent destination too) and returns
 the premultiplied result, from Porter and Duff's coverage argument (exercise 9.2 derives
-straight over and premultiplied atop the same way). Lesson 12 §9 states the rule on
+straight over and premultiplied atop the same way). Lesson 12b §4 states the rule on
 premultiplied inputs without deriving it, and premultiplying first, then applying that rule,
 gives the same numbers: the check cannot tell a derivation from that route, and the notebook
 says so (r9: it claimed the lesson printed neither); both alphas 0 is the case where the
@@ -244,7 +244,7 @@ STRAIGHT_ALPHAS = [
 def _divided_by_wrong_alpha() -> list[Mistake]:
     """9.2a's light divided by a wrong alpha of :data:`STRAIGHT_ALPHAS` ((0, 0, 0, 0) where
     that alpha is 0): the colour is off too (r23 D-4: GL's single-pair alpha
-    α_s·α_s + α_d·(1 − α_s), which lesson 12 prints, got the general message)."""
+    α_s·α_s + α_d·(1 − α_s), which lesson 12b prints, got the general message)."""
 
     def gives(alpha):
         def wrong(src, dst):
@@ -319,7 +319,7 @@ def straight_mistakes() -> list[Mistake]:
 
 
 def from_straight_mistakes() -> list[Mistake]:
-    """Lesson 12's ``over_to_premultiplied``: the division by α = 0, the table's, then a wrong
+    """Lesson 12b's ``over_to_premultiplied``: the division by α = 0, the table's, then a wrong
     alpha with the right colour."""
     swapped = ("arguments swapped", "you blended dst over src: the first argument, src, "
                "is the incoming fragment, the second, dst, what the buffer holds",

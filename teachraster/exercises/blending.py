@@ -1,8 +1,8 @@
-"""Exercise 9.2's and lesson 12's blend checks: their cases and exercises, and lesson 12's
+"""Exercise 9.2's and lesson 12b's blend checks: their cases and exercises, and lesson 12b's
 ``over(src, dst)`` (GL's straight blend) and ``over_premultiplied(src, dst)``.
 
 The tasks' references and mistakes live by task: :mod:`.blend_straight` (9.2a's
-``over_straight`` and lesson 12's ``over_to_premultiplied``), :mod:`.blend_atop` (9.2b's
+``over_straight`` and lesson 12b's ``over_to_premultiplied``), :mod:`.blend_atop` (9.2b's
 ``atop_premultiplied``), :mod:`.blend_mistakes` (the mistakes they share: wrong alphas,
 rounding, the glow) and :mod:`.blend_display` (colours in words and as swatches). Their
 functions are the checker's own code too: each exercise names those modules as its

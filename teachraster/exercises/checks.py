@@ -38,7 +38,7 @@ def _registry() -> dict[str, Callable[[], Exercise]]:
         "depth_test": lambda: dc.DEPTH_TEST,
         "clip_near": lambda: dc.CLIP_NEAR,
         **later.EXERCISES,  # 05–08: depth precision, antialiasing, texture filtering, tiles
-        "line_pixels": lambda: lines.LINE_PIXELS,  # 09 (lesson 12): lines and blending
+        "line_pixels": lambda: lines.LINE_PIXELS,  # 09 (lessons 12a, 12b): lines and blending
         "over": lambda: blending.OVER_EXERCISE,
         "over_to_premultiplied": lambda: blending.FROM_STRAIGHT_EXERCISE,
         "over_premultiplied": lambda: blending.PREMULTIPLIED_EXERCISE,

@@ -1,4 +1,4 @@
-"""Exercise ``front_to_back`` (lesson 12): compositing transparent layers nearest first.
+"""Exercise ``front_to_back`` (lesson 12b): compositing transparent layers nearest first.
 
 A GPU blends transparent fragments in submission order, so an engine sorts them back to
 front and applies *over* (premultiplied: ``glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA)``,

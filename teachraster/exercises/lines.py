@@ -1,8 +1,8 @@
-"""Exercise ``line_pixels(p0, p1)`` of lesson 12: the diamond-exit rule.
+"""Exercise ``line_pixels(p0, p1)`` of lesson 12a: the diamond-exit rule.
 
 The expected pixels come from the core: :func:`teachraster.rasterize_line` (exact, with the
 tie perturbation (x, y) − (ε, ε²) applied to teachraster's y-down window numbers: GL's
-answer for every sloped line, Direct3D's for a horizontal line on a row boundary; lesson 12
+answer for every sloped line, Direct3D's for a horizontal line on a row boundary; lesson 12a
 §1 and CONVENTIONS, Lines). The mistakes are the rule with a knob turned
 (:func:`diamond_pixels`, here in floats with ε = 2⁻²⁰ and ε² = 2⁻⁴⁰, far above float64's
 rounding of these coordinates and far below their 1/8 grid): the end pixel lit, or tested
@@ -144,7 +144,7 @@ def _meets(a, b, cx, cy, closed=False, half=0.5) -> np.ndarray:
 
 
 def bresenham_pixels(p0, p1):
-    """Bresenham's walk (lesson 12 §2), as the package draws it."""
+    """Bresenham's walk (lesson 12a §2), as the package draws it."""
     cov = rasterize_line(p0, p1, WINDOW, WINDOW, rule="bresenham").coverage
     return frozenset((int(r), int(c)) for r, c in np.argwhere(cov))
 
@@ -247,7 +247,7 @@ _TIE = (
     "points by (x, y) − (ε, ε²), ε vanishingly small, in these y-down window numbers: x by −ε "
     "(left), y by −ε² (up the image), so that a vertical line on x = k lights column k − 1 and "
     "a horizontal one on y = k row k − 1, the upper row, as Direct3D does (GL moves y by −ε² "
-    "in its own window, whose y points up, and lights the lower row, row k: lesson 12 §1)"
+    "in its own window, whose y points up, and lights the lower row, row k: lesson 12a §1)"
 )
 #: How :data:`_TIE` reads after the first line that says it in full (r23 D-6).
 _TIE_AGAIN = "at a tie the rule moves both end points by (−ε, −ε²), as said above"
@@ -376,7 +376,7 @@ def _start_dark(p0, p1):
     return diamond_pixels(p0, p1) - {start}
 
 
-_BRESENHAM = ("you walked the line with Bresenham's error term (lesson 12 §2): it takes the "
+_BRESENHAM = ("you walked the line with Bresenham's error term (lesson 12a §2): it takes the "
               "end points to the pixels they lie in and steps one whole pixel at a time; the "
               "diamond-exit rule tests the diamonds the segment itself passes through and "
               "leaves")  # fmt: skip
@@ -413,7 +413,7 @@ LINE_MISTAKES = [
     Mistake(
         "DDA",
         "you sampled the segment at n = max(|dx|, |dy|) evenly spaced points from p0 and lit "
-        "the pixel each lies in (a DDA, lesson 12 §3): that lights the pixels the samples "
+        "the pixel each lies in (a DDA, lesson 12a §3): that lights the pixels the samples "
         "fall in, wherever in the pixel; the rule lights the pixels whose diamond "
         "|x − (col + ½)| + |y − (row + ½)| < ½ the segment passes through and leaves",
         gives=sampled_dda,

@@ -1,6 +1,6 @@
 """Line plots: the diamond rule over the pixel grid, a line's steps, and colour buffers.
 
-Every function takes an Axes and returns its artists (lesson 12):
+Every function takes an Axes and returns its artists (lessons 12a and 12b):
 
 - :func:`plot_diamonds` -- the diamonds |x - (j + ½)| + |y - (i + ½)| < ½ of the pixels a line
   passes, lit ones filled, the one p1 ends in hatched (left to the next segment), the segment

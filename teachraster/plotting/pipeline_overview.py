@@ -60,7 +60,7 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
             "07_hard_cases",
             "08_antialiasing",
             "10_tiles_and_hierarchical_z",
-            "12_lines_and_blending",
+            "12a_lines",
         ),
         course=True,
     ),  # fmt: skip
@@ -70,7 +70,7 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
         "keep the nearest fragment, write its depth (and stencil)",
         ("05a_zbuffer", "05b_depth_precision", "10_tiles_and_hierarchical_z"),
     ),  # fmt: skip
-    Stage("blending", "combine with the image", ("12_lines_and_blending",)),
+    Stage("blending", "combine with the image", ("12b_blending",)),
 )
 
 #: The stages early-z jumps between: the depth test moved before the fragment shader.

@@ -39,7 +39,7 @@ Widgets
   overdraw, depth complexity, quad overshading, ...); click a pixel for its history (lesson 11).
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
   plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
-- :class:`LinePlayer` and :class:`BlendingExplorer` (lesson 12): a line step by step under the
+- :class:`LinePlayer` and :class:`BlendingExplorer` (lessons 12a, 12b): a line step by step under the
   diamond rule, Bresenham or DDA; transparent triangles reordered, premultiplied, sRGB.
 
 Offline pages

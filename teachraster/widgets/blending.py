@@ -1,6 +1,6 @@
 """``BlendingExplorer``: reorder transparent triangles, toggle premultiplied alpha and sRGB.
 
-Lesson 12's blending widget. A few transparent triangles are drawn with ``render(...,
+Lesson 12b's blending widget. A few transparent triangles are drawn with ``render(...,
 blend=...)``; the list on the left is the submission order (select one, move it earlier or
 later, or sort back to front). The left panel shows the colour buffer in the chosen order,
 the right one the same triangles sorted back to front, with how many pixels differ. The

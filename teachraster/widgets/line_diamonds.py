@@ -1,4 +1,4 @@
-"""``DiamondExplorer``: lesson 12's diamond-exit rule, with the diamonds drawn and ties found.
+"""``DiamondExplorer``: lesson 12a's diamond-exit rule, with the diamonds drawn and ties found.
 
 The GL specification (4.6, §14.5.1) and Direct3D light a pixel when the segment meets the
 open diamond around its centre and goes on out of it, and leave out the diamond the segment

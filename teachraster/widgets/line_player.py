@@ -1,6 +1,6 @@
 """``LinePlayer``: step through a line like a fill, and switch its rule.
 
-Lesson 12's player: Play/Pause and a step slider over the steps of
+Lesson 12a's player: Play/Pause and a step slider over the steps of
 :func:`teachraster.rasterize_line` (``trace=True``): the snap, the major axis, then one step
 per column (or row) with the rule's decision in the caption: the diamond test, Bresenham's
 error term or the DDA's float32 sum. The figure is a :class:`~teachraster.plotting.lines.LineView`
@@ -58,10 +58,9 @@ class LinePlayer(Shown):
         self.fill = rasterize_line(p0, p1, width, height, rule=rule, trace=True)
         n = len(self.trace)
         self.rule = widgets.ToggleButtons(options=list(RULES), value=rule)
-        self.slider = widgets.IntSlider(value=self.trace.index(step), min=0, max=n - 1,
-                                        description="step")  # fmt: skip
-        self.play = widgets.Play(value=self.slider.value, min=0, max=n - 1, interval=interval)
-        widgets.jslink((self.play, "value"), (self.slider, "value"))
+        self.play = widgets.Play(value=0, min=0, max=n - 1, interval=interval)
+        self._link = None
+        self.slider = self._new_slider(self.trace.index(step), n)
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
             self.fig.set_layout_engine("constrained")
@@ -73,14 +72,13 @@ class LinePlayer(Shown):
         # where the slider is, in the figure's words (its caption, under the picture, says
         # what the rule decided): "step 7" and "column 5" side by side, the caption once
         self.caption = widgets.HTML(html_escape(self.where(self.slider.value)))
-        self.slider.observe(lambda change: self.show(change["new"]), "value")
         self.rule.observe(lambda change: self._rerun(), "value")
         title = title_html(
             "A line, step by step",
             "One step per column (x-major) or row: which pixel is lit, and why.",
         )
-        controls = control_row([self.play, self.slider, labelled("rule", self.rule)])
-        self.widget = widgets.VBox([title, controls, self.caption, self.display.widget])
+        self.controls = control_row([self.play, self.slider, labelled("rule", self.rule)])
+        self.widget = widgets.VBox([title, self.controls, self.caption, self.display.widget])
 
     @property
     def trace(self):
@@ -105,11 +103,31 @@ class LinePlayer(Shown):
         self.caption.value = html_escape(self.where(k))
         self.display.refresh()
 
+    def _new_slider(self, value: int, n: int) -> widgets.IntSlider:
+        """A step slider over ``n`` steps at ``value``, linked to Play and to :meth:`show`.
+
+        A new slider, not the old one's ``max`` changed: the page's slider (noUiSlider in
+        ipywidgets 8) takes a new range for the pointer and the arrow keys, but its End and
+        Home keys keep the range it was created with, so after a switch from Bresenham (13
+        steps) to the diamond rule (14) End stopped one step short (review r27, lesson 12a).
+        """
+        if self._link is not None:
+            self._link.unlink()
+        slider = widgets.IntSlider(value=value, min=0, max=n - 1, description="step")
+        self.play.max = n - 1
+        self.play.value = value
+        self._link = widgets.jslink((self.play, "value"), (slider, "value"))
+        slider.observe(lambda change: self.show(change["new"]), "value")
+        return slider
+
     def _rerun(self) -> None:
         self.fill = rasterize_line(self.p0, self.p1, self.width, self.height,
                                    rule=self.rule.value, trace=True)  # fmt: skip
         self.view.trace = self.trace
         n = len(self.trace)
-        self.slider.max = self.play.max = n - 1
-        value = min(self.slider.value, n - 1)
-        self.show(value)
+        old = self.slider
+        self.slider = self._new_slider(min(old.value, n - 1), n)
+        self.controls.children = tuple(self.slider if c is old else c
+                                       for c in self.controls.children)  # fmt: skip
+        old.close()
+        self.show(self.slider.value)

@@ -163,7 +163,7 @@ _add(
 _add(
     "line_very_long",
     "a line 2**20 px long, slope 3/2**20: float stepping drifts, exact does not",
-    "one pixel per column, none at the end; DDA differs (lesson 12)",
+    "one pixel per column, none at the end; DDA differs (lesson 12a)",
     [((0.5, 0.25), (2**20 - 0.5, 3.25 + 1 / 256))],
     (2**20, 4),
     _one_per_column,

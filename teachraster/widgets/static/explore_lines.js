@@ -1,4 +1,4 @@
-// Lesson 12's diamond-exit rule, live: the diamonds a line's caption talks about, with end
+// Lesson 12a's diamond-exit rule, live: the diamonds a line's caption talks about, with end
 // points that snap onto ties.
 //
 // Pixel (row i, col j) owns the open diamond |x - (j + 1/2)| + |y - (i + 1/2)| < 1/2; a line
