@@ -728,3 +728,26 @@ def test_filter_explorer_panels_fit_the_column_apart():
         assert max(tops) - min(tops) < 1  # three panels of one size in a row
     finally:
         ex.close()
+
+
+def test_filter_explorers_error_panels_share_one_colour_scale():
+    """Review r26 (09, cell 36): the error colour bar rescaled per filter (0.6, 0.20, 0.25 at
+    89°), so trilinear's and anisotropic's panels could not be compared by colour. Every
+    filter and tilt now draws its error on 0 to ERROR_RANGE, and no error runs past it."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from teachraster.pipeline.texturing.texture import TEXTURE_FILTERS
+    from teachraster.widgets import FilterExplorer
+    from teachraster.widgets.filter_explorer import ERROR_RANGE
+
+    explorer = FilterExplorer(tilt=89, filter="nearest", repeats=6, backend="image")
+    try:
+        for name in TEXTURE_FILTERS:
+            explorer.filter.value = name
+            for tilt in (89.0, 0.0):
+                explorer.tilt.value = tilt
+                assert explorer.panels["error"].image.get_clim() == (0.0, ERROR_RANGE)
+                assert np.nanmax(explorer.error) <= ERROR_RANGE, (name, tilt)
+    finally:
+        explorer.close()

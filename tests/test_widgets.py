@@ -991,23 +991,22 @@ def test_a_drag_ends_on_the_full_picture(name):
 
 def test_the_filter_explorers_colour_bar_comes_from_its_cache_at_a_new_tilt():
     """Issue 31: the error's colour bar was drawn afresh at every release (~26 ms of ~65):
-    its range was the error's maximum, new at every tilt, and the note of that maximum
-    reached into the bar's cached box. The range now ends on a round number above the
-    maximum and the note sits clear of the bar, so a new tilt with the same round range puts
-    the bar back, and the picture is the one a fresh explorer draws at that tilt."""
-    from teachraster.plotting.common import round_up
+    its range was the error's maximum, new at every tilt. The range is now fixed, one scale
+    for every filter and tilt (review r26, 09), and the note sits clear of the bar, so a new
+    tilt or filter puts the bar back, and the picture is the one a fresh explorer draws."""
     from teachraster.widgets import FilterExplorer
+    from teachraster.widgets.filter_explorer import ERROR_RANGE
 
     ex = FilterExplorer(tilt=80.0, backend="image")  # the lesson's size: the layout counts
     error = ex.panels["error"]
-    assert error.image.get_clim() == (0.0, round_up(error.maximum)) == (0.0, 0.2)
-    ex.tilt.value = 60.0  # another maximum (0.166), the same round range
-    assert 0 < error.maximum < 0.2 and error.maximum != pytest.approx(0.1939, abs=1e-3)
-    assert error.image.get_clim() == (0.0, 0.2) and ex._bar.last == "cached"
+    assert error.image.get_clim() == (0.0, ERROR_RANGE)
+    ex.tilt.value = 60.0  # another maximum, the same range
+    assert 0 < error.maximum < ERROR_RANGE
+    assert error.image.get_clim() == (0.0, ERROR_RANGE) and ex._bar.last == "cached"
     fresh = FilterExplorer(tilt=60.0, backend="image")
     assert _shown(ex) == _shown(fresh)
-    ex.tilt.value = 40.0  # a range not drawn before (0.25): drawn
-    assert error.image.get_clim() == (0.0, 0.25) and ex._bar.last == "drawn"
+    ex.filter.value = "nearest"  # another filter (maximum 0.46): still the same bar
+    assert error.image.get_clim() == (0.0, ERROR_RANGE) and ex._bar.last == "cached"
     ex.close()
     fresh.close()
 

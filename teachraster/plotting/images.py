@@ -237,6 +237,7 @@ class HeatmapArtists(Artists):
     fixed_note: bool = False  # the note stays where it was put, off the picture
     show_note: bool = True  # False: the title alone states the maximum, the ring marks it
     round_range: bool = False  # True: the colour range ends on a round number (round_up)
+    vmax: float | None = None  # a fixed top of the colour range (images compared side by side)
 
     def update(self, a, b) -> None:
         """Show the error of new images (same artists; the colour bar follows)."""
@@ -250,7 +251,11 @@ class HeatmapArtists(Artists):
         h, w = err.shape
         # A zero (or no) error still needs a valid, non-empty colour range.
         top = m if np.isfinite(m) and m > 0 else 1.0
-        self.image.set_clim(0.0, round_up(top) if self.round_range else top)
+        if self.vmax is not None:
+            top = self.vmax
+        elif self.round_range:
+            top = round_up(top)
+        self.image.set_clim(0.0, top)
         if np.isfinite(m):
             i, j = np.unravel_index(np.nanargmax(err), err.shape)
             self.worst = (int(i), int(j))
@@ -281,6 +286,7 @@ class HeatmapArtists(Artists):
 def plot_error_heatmap(
     ax, a, b, *, label: str = "|a − b|", colorbar: bool = True, title: bool = True,
     cax=None, note_at: tuple[float, float] | None = None, round_range: bool = False,
+    vmax: float | None = None,
 ) -> HeatmapArtists:  # fmt: skip
     """Heatmap of |a − b| with a colour bar, the maximum marked and stated in the title.
 
@@ -310,6 +316,10 @@ def plot_error_heatmap(
     round_range : bool
         End the colour range on a round number at least the maximum
         (:func:`~teachraster.plotting.common.round_up`) rather than on the maximum itself.
+    vmax : float, optional
+        A fixed top of the colour range, whatever the maximum (larger errors take the top
+        colour; the note still states the maximum): heatmaps meant to be compared with each
+        other, such as one explorer's filters, share one scale.
 
     Returns
     -------
@@ -333,7 +343,7 @@ def plot_error_heatmap(
                            annotation_clip=False)  # fmt: skip
     title_text = ax.title if title else None
     result = HeatmapArtists(im, marker, note, title_text, label, fixed_note=note_at is not None,
-                            round_range=round_range)  # fmt: skip
+                            round_range=round_range, vmax=vmax)  # fmt: skip
     result.update(a, b)
     if colorbar:
         where = {"ax": ax, "shrink": 0.85} if cax is None else bar_in(cax)

@@ -33,6 +33,11 @@ from .sprites import PAD, ColourBarSprite, text_boxes
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
 #: The picture's alternative text in the page
+#: The error panel's colour range, 0 to this, the same for every filter and tilt (review r26,
+#: 09: the bar rescaled per filter, 0.6 / 0.20 / 0.25 at 89°, so panels could not be compared
+#: by colour). Every filter's largest error on the checkerboard is below it (0.47, tested).
+ERROR_RANGE = 0.5
+
 ALT = "the filtered texture, its mip levels and its error"
 
 #: Tilts whose footprint average is kept (0.44 MiB each at 160 x 120): every position of
@@ -186,7 +191,7 @@ class FilterExplorer:
                 "lod": plot_levels_read(axes[1], self.levels_read, self.n_levels, cax=bars[0]),
                 "error": plot_error_heatmap(axes[2], self.image, self.truth, label="|error|",
                                             title=False, cax=bars[1], note_at=note_at,
-                                            round_range=True),
+                                            vmax=ERROR_RANGE),
             }  # fmt: skip
             for bar in bars:  # read from the back of the room: the size of axis labels
                 bar.tick_params(labelsize=mpl.rcParams["axes.labelsize"])
