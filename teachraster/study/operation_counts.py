@@ -57,6 +57,10 @@ DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
 #: no GPU offers float64 depth, the study's exact reference.)
 DEPTH_STORED_BITS = {"float64": 64, "float32": 32, "unorm24": 24, "unorm16": 16}
 RULES = ("top-left", "E >= 0", "E > 0")
+#: Fill loops: the loop work per visited pixel or raster line (``x += 1``, ``x < x_end``), and a
+#: half-plane centre's 3 incremental steps and 3 sign tests (all counted as additions).
+LOOP_ADDITIONS = 2.0
+HALFPLANE_TESTS = 6.0
 
 
 @dataclass(frozen=True)
@@ -128,9 +132,10 @@ def fill_count(variant: str) -> OpCount:
     size = int(variant.split()[-1].rstrip("²"))
     filled = rasterize(bench.fill_triangle(size), size, size, method="halfplane", trace=True)
     box = filled.trace.bbox
-    rows, loop = box.row1 - box.row0, 2.0  # loop work per visited pixel and per raster line
+    rows, loop = box.row1 - box.row0, LOOP_ADDITIONS
     if method == "halfplane":  # every centre of the box: 3 steps, 3 sign tests, the loop
-        return OpCount(0.0, 0.0, (6.0 + loop) * box.size + (3.0 + loop) * rows, None, "triangle")
+        per_centre = HALFPLANE_TESTS + loop
+        return OpCount(0.0, 0.0, per_centre * box.size + (3.0 + loop) * rows, None, "triangle")
     if method == "span":  # two crossings per line, then the covered pixels: the loop only
         covered = int(filled.coverage.sum())
         return OpCount(1.0 + 2.0 * rows, 2.0 * rows, (4.0 + loop) * rows + loop * covered, None,
