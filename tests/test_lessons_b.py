@@ -1070,7 +1070,11 @@ def test_10_numbers_the_text_relies_on():
     # d = 31 and 2 * 31 + 2 = 64 bits, with no bit to spare (one more pixel does not fit)
     from teachraster.core.snapping import UNIT_LIMIT
 
-    assert UNIT_LIMIT == 2**30 and ns.band_d == 31 and 2 * ns.band_d + 2 == 64
+    assert UNIT_LIMIT == 2**30 and ns.band_d == 31 and 2 * ns.band_d + 2 == 64 == ns.exact_range.needed
+    # review r28 06-3: Direct3D's 16.8 over 2^16 px, the same count as lesson 06's (50 bits)
+    from teachraster.study import operation_counts as ops
+
+    assert ns.d3d.needed == 50 == ops.edge_bits_needed(2**16, 0, subpixel_bits=8)
     widest = fixed_point.bit_budget(fixed_point.max_extent(8, 64), 8, 64)
     assert widest.delta_bits == ns.band_d and widest.fits and widest.headroom == 0
     assert not fixed_point.bit_budget(2 * ns.guard, 8, 64).fits
