@@ -1070,7 +1070,9 @@ def test_10_numbers_the_text_relies_on():
     # d = 31 and 2 * 31 + 2 = 64 bits, with no bit to spare (one more pixel does not fit)
     from teachraster.core.snapping import UNIT_LIMIT
 
-    assert UNIT_LIMIT == 2**30 and ns.band_d == 31 and 2 * ns.band_d + 2 == 64 == ns.exact_range.needed
+    assert (
+        UNIT_LIMIT == 2**30 and ns.band_d == 31 and 2 * ns.band_d + 2 == 64 == ns.exact_range.needed
+    )
     # review r28 06-3: Direct3D's 16.8 over 2^16 px, the same count as lesson 06's (50 bits)
     from teachraster.study import operation_counts as ops
 
