@@ -297,6 +297,11 @@ def test_predictions_wait_for_an_answer_then_show_it(lesson):
     check.click()
     w.get_by_text("You marked 3 pixels").wait_for(timeout=5_000)
     assert _kernel(lesson, "[pixels.revealed, pixels.given]") == [True, [[2, 2], [2, 3], [4, 4]]]
+    # review r28: checked once; a click on the figure after the reveal marks nothing
+    assert check.is_disabled()
+    lesson.mouse.click(box["x"] + (x0 + sx * 6.5) * scale, box["y"] + (y0 + sy * 6.5) * scale)
+    lesson.wait_for_timeout(300)
+    assert _kernel(lesson, "pixels.given") == [[2, 2], [2, 3], [4, 4]] and check.is_disabled()
     o = _widget(lesson, "order")
     ocheck = o.get_by_role("button", name="Check")
     assert ocheck.is_disabled()
@@ -304,6 +309,7 @@ def test_predictions_wait_for_an_answer_then_show_it(lesson):
     ocheck.click()
     o.get_by_text("Right.").wait_for(timeout=5_000)
     assert _kernel(lesson, "order.correct") is True
+    assert ocheck.is_disabled() and o.locator("input[type=checkbox]").is_disabled()
 
 
 def test_layout_fits_a_small_screen(lesson):

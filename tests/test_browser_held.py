@@ -80,6 +80,14 @@ def test_an_answer_cell_shows_only_after_check_and_stays_hidden_when_reopened(la
     # same frame: one CI run read the line still on screen just after the answer showed.
     # So wait for the line to go (it still fails if the line stays).
     _line(page).wait_for(state="hidden", timeout=15_000)
+    # review r28: once the answer shows, the prediction is locked in the page: Check and the
+    # choices are disabled, the saved line keeps the first answer
+    from playwright.sync_api import expect
+
+    expect(question.locator("button", has_text="Check")).to_be_disabled(timeout=15_000)
+    expect(question.locator("button", has_text="counter-clockwise")).to_be_disabled()
+    saved_line = page.locator(".jp-OutputArea-output", has_text="Saved with the notebook").first
+    assert "you predicted counter-clockwise." in saved_line.inner_text()
 
 
 MARKDOWN_NAME = "held_markdown.ipynb"

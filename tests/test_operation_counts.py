@@ -23,17 +23,48 @@ def test_edge_counts_and_bits():
     assert (direct.multiplies, direct.additions, inc.multiplies, inc.additions) == (6, 9, 0, 3)
     assert ops.edge_count("float32 direct").bits == 24 < ops.edge_bits_needed(512, 1e6)
     assert ops.edge_count("fixed8 direct").bits >= ops.edge_bits_needed(2048, 1e6)
-    assert ops.edge_bits_needed(16, 1_000_000) == 28  # the position dominates
+    assert ops.edge_bits_needed(16, 1_000_000) == 29  # the position dominates (20 + 8 + sign)
+
+
+def test_edge_bits_are_counted_once_for_lessons_06_and_10():
+    """Review r28 06-3: lesson 06 printed 51 bits for Direct3D's 16.8 over 2^16 px (a sign
+    counted twice), lesson 10's rule gave another number. One count, in core/fixed_point:
+    24-bit coordinates differ by less than 2^24 units, a product is below 2^48, the
+    difference of two products below 2^49: 50 bits with the sign."""
+    from teachraster.core import fixed_point as fp
+
+    d3d = fp.range_budget(2**16, subpixel_bits=8)
+    assert (d3d.delta_bits, d3d.product_bits, d3d.edge_bits, d3d.needed) == (24, 48, 49, 50)
+    assert ops.edge_bits_needed(2**16, 0, subpixel_bits=8) == 50 == d3d.needed
+    # the extremes, computed: differences of 24-bit coordinates, their products, E
+    lo, hi = -(2**23), 2**23 - 1  # 16.8 two's complement: [-2^15, 2^15) px
+    biggest = (hi - lo) * (hi - lo) + (hi - lo) * (hi - lo)
+    assert (hi - lo).bit_length() == 24 and (hi - lo) ** 2 < 2**48 and biggest < 2**49
+    # the study's mesh: coordinates in a 512-px range, 17-bit differences, 36 bits
+    assert ops.edge_bits_needed(512, 0) == 36 == ops.edge_bits_needed(512, 1e6)
+    # lesson 10's guard band with teachraster's centre bit: differences below 2^31 units, 64
+    band = fp.range_budget(2 * 2**21, 8, centre_bit=True)
+    assert band.delta_bits == 31 and band.needed == 64 and band.fits
+    assert "below 65,536 px: at most 16,777,215 units < 2^24" in d3d.lines()[1]
+    assert "8 sub-pixel bits = 256 units per pixel" in d3d.lines()[0]
     with pytest.raises(ValueError):
         ops.edge_count("float16 direct")
 
 
 def test_fill_counts_scale_with_the_box_and_the_rows():
     hp, sp = ops.fill_count("halfplane 64²"), ops.fill_count("span+trace 64²")
-    tri = tr.rasterize(ops.bench.fill_triangle(64), 64, 64, trace=True).trace
-    assert hp.additions == 6 * tri.bbox.size and hp.divides == 0
-    assert sp.divides == 1 + 2 * (tri.bbox.row1 - tri.bbox.row0)
+    filled = tr.rasterize(ops.bench.fill_triangle(64), 64, 64, trace=True)
+    box, covered = filled.trace.bbox, int(filled.coverage.sum())
+    rows = box.row1 - box.row0
+    # review r28 06-2: both loops pay their loop work (x += 1, x < end: 2 per visited pixel,
+    # 2 per raster line); half-planes 3 steps and 3 tests per box centre, 3 per line
+    assert hp.additions == 8 * box.size + 5 * rows and hp.divides == 0
+    assert sp.divides == 1 + 2 * rows and sp.additions == 6 * rows + 2 * covered
     assert ops.cycles(sp) < ops.cycles(hp)
+    # the ratio grows with size towards 8 per box centre over 2 per covered pixel
+    ratio = {n: ops.cycles(ops.fill_count(f"halfplane {n}²")) / ops.cycles(ops.fill_count(
+        f"span {n}²")) for n in (64, 256, 1024)}  # fmt: skip
+    assert ratio[64] < ratio[256] < ratio[1024] < 4 * box.size / covered * 1.05
 
 
 def test_with_counts_adds_columns_to_every_row():

@@ -37,10 +37,29 @@ def test_choice_is_hidden_until_checked_then_judged():
     # (review r2 02-3: the verdict was shown twice, in the widget and below it)
     assert "row 3" in q.record_html() and "Not quite" not in q.record_html()
     assert "row 2" not in q.record_html()
-    q.control.value = "row 2"
-    q.check.click()
-    assert q.correct is True and "Right" in q.feedback.value
     q.close()
+
+
+def test_a_revealed_prediction_is_locked_and_keeps_the_first_answer():
+    # review r28: after the answer was shown, typing it and pressing Check again said "Right."
+    # and rewrote the saved line; a prediction made after seeing the answer is none
+    for choices, wrong, right in ((["row 2", "row 3"], "row 3", "row 2"), (None, "15", "51")):
+        answer = "row 2" if choices else 51
+        q = Predict("Which?", choices, answer=answer, tolerance=0 if choices else 15,
+                    headless=False)  # fmt: skip
+        q.control.value = wrong
+        q.check.click()
+        verdict, record = q.feedback.value, q.record_html()
+        assert q.correct is False and q.check.disabled and q.control.disabled
+        q.control.value = right  # from code, as a front end would send it: refused
+        assert q.control.value == wrong
+        assert q.given == (wrong if choices else float(wrong))
+        q.check.click()
+        q.reveal()  # even a second reveal repeats the first verdict
+        assert q.correct is False and q.check.disabled
+        assert q.feedback.value == verdict and q.record_html() == record
+        assert "Right" not in q.feedback.value and f"predicted {wrong}." in record
+        q.close()
 
 
 def test_number_within_tolerance_is_right():
@@ -51,10 +70,11 @@ def test_number_within_tolerance_is_right():
     assert q.given == pytest.approx(10.4) and q.correct is True
     q.control.value = "11"
     assert q.correct is False
-    q.check.click()
-    assert "11" in q.feedback.value and "10 (± 0.5)" in q.feedback.value
     q.control.value = "not a number"
     assert q.given is None and q.correct is None
+    q.control.value = "11"
+    q.check.click()
+    assert "11" in q.feedback.value and "10 (± 0.5)" in q.feedback.value
     q.close()
 
 

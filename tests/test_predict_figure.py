@@ -36,8 +36,16 @@ def test_pixels_are_judged_and_revealed_only_once_answered():
     assert q.correct is False
     q.check()
     assert q.revealed and "1 too many, 1 missed" in q.verdict()
-    q.given = truth
-    assert q.correct is True
+    q.given = truth  # after the reveal: the checked answer is kept (review r28)
+    q.state = {**q.state, "given": truth}  # as the page would send it
+    assert q.correct is False and "1 too many, 1 missed" in q.verdict() and q.revealed
+
+
+def test_check_is_pressed_once_in_the_page():
+    # enabled only while an answer is given and the answer not yet shown
+    cases = [(False, False), (False, True), (True, True), (True, False)]
+    got = call_js(("predict_figure",), [("checkDisabled", list(c)) for c in cases])
+    assert got == [True, False, True, True]
 
 
 def test_the_picture_maps_pixels_where_the_grid_is():

@@ -13,6 +13,11 @@ when any vertex may lie anywhere in it), then in units ``|Δ| <= L·2**(s+1) < 2
 ``2**(2d+1)``, and a signed register needs ``2d + 2`` bits. Stepping only adds increments
 between values that are themselves edge values inside the extent, so it needs no more.
 
+The same count with coordinates stored on the ``1/2**s`` grid itself (no extra bit) and
+anywhere in a range of ``R`` pixels, as Direct3D's 16.8 fixed point is over its ``2**16``-pixel
+range, gives ``|Δ| < R·2**s`` (:func:`range_budget`): 50 bits for Direct3D. One rule, in
+:func:`_budget`, counts both.
+
 Mesa's llvmpipe makes the same count (``MAX_FIXED_LENGTH32`` in ``lp_rast.h``): with 8
 sub-pixel bits a triangle whose box spans at most 128 px is rasterised in 32-bit
 integers, any larger one in 64-bit. teachraster steps in int64: its coordinates stay
@@ -24,6 +29,8 @@ so ``d <= 31`` and 64 bits suffice for every triangle it accepts.
 (42, False)
 >>> max_extent(8, 32), max_extent(8, 64)
 (63, 4194303)
+>>> range_budget(2**16, subpixel_bits=8).needed     # Direct3D's 16.8 over 2**16 px
+50
 """
 
 from __future__ import annotations
@@ -61,6 +68,11 @@ class BitBudget:
         Magnitude bits of one product and of E (a difference of two products).
     needed : int
         ``edge_bits`` plus the sign bit.
+    max_delta : int
+        The largest coordinate difference, in units (``|Δ| <= max_delta < 2**delta_bits``).
+    within : bool
+        False: differences reach ``extent_px`` (:func:`bit_budget`); True: they stay below it,
+        coordinates anywhere in a range of ``extent_px`` pixels (:func:`range_budget`).
     """
 
     extent_px: int
@@ -71,6 +83,8 @@ class BitBudget:
     product_bits: int
     edge_bits: int
     needed: int
+    max_delta: int = 0
+    within: bool = False
 
     @property
     def fits(self) -> bool:
@@ -103,11 +117,15 @@ class BitBudget:
             if self.fits
             else f"does NOT fit int{self.int_bits}: {-self.headroom} bits short, values wrap"
         )
+        centre = " + 1 for pixel centres" if u == 2 ** (self.subpixel_bits + 1) else ""
+        reach = (
+            f"below {self.extent_px:,} px: at most {self.max_delta:,} units"
+            if self.within
+            else f"up to {self.extent_px:,} px = {self.max_delta:,} units"
+        )
         return [
-            f"coordinates: {self.subpixel_bits} sub-pixel bits + 1 for pixel centres = {u:,} "
-            "units per pixel",
-            f"differences: up to {self.extent_px:,} px = {self.extent_px * u:,} units "
-            f"< 2^{self.delta_bits}",
+            f"coordinates: {self.subpixel_bits} sub-pixel bits{centre} = {u:,} units per pixel",
+            f"differences: {reach} < 2^{self.delta_bits}",
             f"products of two differences: < 2^{self.product_bits}",
             f"E = difference of two products: < 2^{self.edge_bits}, plus a sign bit = "
             f"{self.needed} bits",
@@ -123,8 +141,45 @@ def bit_budget(extent_px, subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64
         raise ValueError("subpixel_bits: a fixed-point budget needs a number of bits, got None")
     width = as_int("int_bits", int_bits, minimum=2)
     unit = 2 ** (bits + 1)
-    delta = (extent * unit).bit_length()
-    return BitBudget(extent, bits, width, unit, delta, 2 * delta, 2 * delta + 1, 2 * delta + 2)
+    return _budget(extent, bits, width, unit, extent * unit, within=False)
+
+
+def range_budget(
+    range_px, subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64, *, centre_bit: bool = False
+) -> BitBudget:
+    """The bits edge functions need when every coordinate lies in a range of ``range_px`` px.
+
+    Coordinates are stored with ``subpixel_bits`` fraction bits (``2**s`` units per pixel;
+    ``centre_bit=True``: teachraster's ``2**(s+1)``), so two of them differ by less than
+    ``range_px`` pixels: at most ``range_px·units − 1`` units. Direct3D's 16.8 fixed point
+    over its ``2**16``-pixel range: 24-bit coordinates, differences below ``2**24`` units,
+    products below ``2**48``, E below ``2**49``, 50 bits with the sign.
+
+    >>> b = range_budget(2**16, subpixel_bits=8)
+    >>> b.delta_bits, b.product_bits, b.edge_bits, b.needed
+    (24, 48, 49, 50)
+    """
+    extent = as_int("range_px", range_px, minimum=1)
+    bits = check_bits(subpixel_bits)
+    if bits is None:
+        raise ValueError("subpixel_bits: a fixed-point budget needs a number of bits, got None")
+    width = as_int("int_bits", int_bits, minimum=2)
+    unit = 2 ** (bits + bool(centre_bit))
+    return _budget(extent, bits, width, unit, extent * unit - 1, within=True)
+
+
+def _budget(extent, bits, width, unit, max_delta, *, within) -> BitBudget:
+    """The one count: ``|Δ| <= max_delta < 2**d``, a product of two differences below
+    ``2**(2d)``, E (a difference of two products) below ``2**(2d+1)``, and the sign bit.
+
+    It counts term by term, as llvmpipe does (``lp_rast.h``), so that every intermediate
+    product fits too. (E itself is twice a triangle's signed area, at most ``max_delta**2``
+    when all three points lie within the range, one bit less; a designer sizing the adders
+    term by term does not rely on that.)
+    """
+    d = int(max_delta).bit_length()
+    return BitBudget(extent, bits, width, unit, d, 2 * d, 2 * d + 1, 2 * d + 2, int(max_delta),
+                     bool(within))  # fmt: skip
 
 
 def max_extent(subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64) -> int:

@@ -16,10 +16,13 @@ follow from the formulas, not from timing:
 - *edge functions*, per tested pixel, three edges: direct
   ``E = (b_x - a_x)(p_y - a_y) - (b_y - a_y)(p_x - a_x)`` with the edge's differences set up
   once (2 multiplies, 3 additions per edge), incremental one addition per edge;
-- *fill*, per triangle: half-planes test every centre of the bounding box incrementally
-  (3 additions and 3 comparisons per centre); span tables compute ``u4`` (1 divide) and
-  two crossings per raster line (1 divide, 1 multiply, 2 additions each; the pixels of a span
-  need no test);
+- *fill*, per triangle, both loops counted alike: every pixel a loop visits costs its loop
+  work, ``x += 1`` and ``x < x_end`` (2 additions), and every raster line ``y += 1`` and
+  ``y < y_end`` (2 additions). Half-planes visit every centre of the bounding box and step
+  it incrementally (3 additions and 3 comparisons per centre, 3 additions per raster line to
+  step the row's start); the span loop (lesson 01's) computes ``u4`` (1 divide) and two
+  crossings per raster line (1 divide, 1 multiply, 2 additions each) and visits the covered
+  pixels only, with no test;
 - *depth*: one comparison per fragment; the format sets the bits stored.
 
 :data:`CYCLES_1990S` weights the three operations roughly as an early-1990s FPU did (a divide
@@ -37,6 +40,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core import fixed_point
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from . import bench
@@ -53,6 +57,10 @@ DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
 #: no GPU offers float64 depth, the study's exact reference.)
 DEPTH_STORED_BITS = {"float64": 64, "float32": 32, "unorm24": 24, "unorm16": 16}
 RULES = ("top-left", "E >= 0", "E > 0")
+#: Fill loops: the loop work per visited pixel or raster line (``x += 1``, ``x < x_end``), and a
+#: half-plane centre's 3 incremental steps and 3 sign tests (all counted as additions).
+LOOP_ADDITIONS = 2.0
+HALFPLANE_TESTS = 6.0
 
 
 @dataclass(frozen=True)
@@ -98,18 +106,20 @@ def edge_count(variant: str) -> OpCount:
 
 
 def edge_bits_needed(size: int, offset: float, subpixel_bits: int = 8) -> int:
-    """Bits an exact edge function needs: positions at ``offset`` and the products of differences.
+    """Bits (with the sign) an exact edge function needs: its positions and its products.
 
-    A position up to ``offset + size`` px on a 1/2**s grid needs ``log2(offset + size) + s``
-    bits; a difference of two positions ``log2(size) + s + 1`` (its sign), their product twice
-    that. Exact arithmetic needs the larger of the two.
+    A position up to ``offset + size`` px on a ``1/2**s`` grid needs ``log2(offset + size) + s``
+    bits and a sign. The products are counted by
+    :func:`teachraster.core.fixed_point.range_budget`, the count lesson 10 uses too:
+    coordinates in a ``size``-pixel range differ by less than ``size·2**s`` units
+    (``d`` bits), a product needs ``2d`` bits, E (a difference of two) ``2d + 1``, and a sign.
+    Exact arithmetic needs the larger of the two.
 
-    >>> edge_bits_needed(64, 0), edge_bits_needed(64, 1_000_000)
-    (31, 31)
+    >>> edge_bits_needed(64, 0), edge_bits_needed(64, 1_000_000), edge_bits_needed(2**16, 0)
+    (30, 30, 50)
     """
-    position = math.ceil(math.log2(offset + size)) + subpixel_bits
-    difference = math.ceil(math.log2(size)) + subpixel_bits + 1
-    return max(position, 2 * difference + 1)
+    position = math.ceil(math.log2(offset + size)) + subpixel_bits + 1
+    return max(position, fixed_point.range_budget(size, subpixel_bits).needed)
 
 
 def fill_count(variant: str) -> OpCount:
@@ -120,13 +130,16 @@ def fill_count(variant: str) -> OpCount:
     """
     method = variant.split()[0].split("+")[0]
     size = int(variant.split()[-1].rstrip("²"))
-    trace = rasterize(bench.fill_triangle(size), size, size, method="halfplane", trace=True).trace
-    if method == "halfplane":
-        n = trace.bbox.size
-        return OpCount(0.0, 0.0, 6.0 * n, None, "triangle")
-    if method == "span":
-        rows = trace.bbox.row1 - trace.bbox.row0
-        return OpCount(1.0 + 2.0 * rows, 2.0 * rows, 4.0 * rows, None, "triangle")
+    filled = rasterize(bench.fill_triangle(size), size, size, method="halfplane", trace=True)
+    box = filled.trace.bbox
+    rows, loop = box.row1 - box.row0, LOOP_ADDITIONS
+    if method == "halfplane":  # every centre of the box: 3 steps, 3 sign tests, the loop
+        per_centre = HALFPLANE_TESTS + loop
+        return OpCount(0.0, 0.0, per_centre * box.size + (3.0 + loop) * rows, None, "triangle")
+    if method == "span":  # two crossings per line, then the covered pixels: the loop only
+        covered = int(filled.coverage.sum())
+        return OpCount(1.0 + 2.0 * rows, 2.0 * rows, (4.0 + loop) * rows + loop * covered, None,
+                       "triangle")  # fmt: skip
     raise ValueError(f"unknown fill variant {variant!r}")
 
 

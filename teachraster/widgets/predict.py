@@ -236,6 +236,7 @@ class Predict(HoldsAnswer):
         self.answer = str(answer) if self.choices else float(answer)
         self.headless = is_headless() if headless is None else bool(headless)
         self.revealed = False
+        self._kept = None  # the control's value when Check was pressed: the prediction kept
         self._display_id = f"teachraster-predict-{os.getpid()}-{next(_ids)}"
         self._build()
 
@@ -261,20 +262,33 @@ class Predict(HoldsAnswer):
         self.widget = widgets.VBox([prompt, row, self.feedback, self.output])
 
     def _answer_changed(self, _change=None) -> None:
-        """Check is enabled exactly while a valid answer is given."""
+        """Check is enabled exactly while a valid answer is given and nothing is revealed."""
+        if self.revealed:  # locked: a changed box changes neither the verdict nor the record
+            self._lock()
+            return
         self.check.disabled = self.given is None
         self.check.tooltip = "" if self.given is not None else "give your answer first"
 
     def _checked(self) -> None:
-        """The Check button: reveal, but only once an answer is given (a click from code on
-        the disabled button does nothing either)."""
-        if self.given is not None:
+        """The Check button: reveal, but only once an answer is given and only once (a click
+        from code on the disabled button does nothing either)."""
+        if self.given is not None and not self.revealed:
             self.reveal()
+
+    def _lock(self) -> None:
+        """After the reveal the prediction is final: the control and Check are disabled, and
+        the box shows the answer that was checked (a prediction typed after seeing the answer
+        is no prediction, review r28)."""
+        self.control.disabled = self.check.disabled = True
+        self.check.tooltip = "checked: your prediction is kept"
+        if self._kept is not None and self.control.value != self._kept:
+            self.control.value = self._kept
 
     @property
     def given(self):
-        """The student's answer (a choice, a number), or None before a valid one is given."""
-        value = self.control.value
+        """The student's answer (a choice, a number), or None before a valid one is given;
+        once revealed, the answer that was checked (the first one)."""
+        value = self._kept if self.revealed else self.control.value
         if self.choices:
             return value
         return parse_number(value)
@@ -308,13 +322,20 @@ class Predict(HoldsAnswer):
         )
 
     def reveal(self) -> None:
-        """Show the verdict, the explanation and the figure; record the answer in the cell."""
+        """Show the verdict, the explanation and the figure; record the answer in the cell.
+
+        The first reveal locks the prediction (:meth:`_lock`); calling it again only repeats
+        the same verdict and record.
+        """
+        if not self.revealed:
+            self._kept = self.control.value
         verdict = self._verdict()
         self.feedback.value = f"<div>{verdict}</div><div>{self.explain}</div>"
         if not self.revealed and self.figure is not None:
             self.output.outputs = ()
             self.output.append_display_data(self._figure_png())
         self.revealed = True
+        self._lock()
         if not self.headless:
             self._record()
         self._release_held()

@@ -62,6 +62,7 @@ import html
 from collections.abc import Callable, Sequence
 
 import numpy as np
+import traitlets
 
 from ..core.validate import as_finite, as_float
 from ..plotting.frames import encode_png, frame_rgba
@@ -136,6 +137,15 @@ class FigurePrediction(HoldsAnswer, Explorable):
         self.data = {"question": question, "explain": explain, **data}
         self.state = {"given": None, "revealed": False}
         self.observe(self._on_state, "state")
+
+    @traitlets.validate("state")
+    def _keep_the_checked_answer(self, proposal) -> dict:
+        """Once revealed, the answer that was checked stays: a later one (from the page or
+        from code) changes neither ``given`` nor the verdict (review r28)."""
+        new, old = proposal["value"], self.state
+        if not old.get("revealed"):
+            return new
+        return {**new, **{k: old[k] for k in ("given", "acted") if k in old}, "revealed": True}
 
     def _on_state(self, change) -> None:
         if change["new"].get("revealed") and not change["old"].get("revealed"):

@@ -13,6 +13,12 @@
 // tests compare the two (node).
 
 // -- verdicts (pure) ----------------------------------------------------------------------------
+// Check is pressed once: enabled while an answer is given and the answer not yet shown (a
+// prediction checked again after the reveal, with the answer copied, is none: review r28)
+export function checkDisabled(revealed, answered) {
+  return Boolean(revealed) || !answered;
+}
+
 export function pixelVerdict(answer, given, width) {
   const key = ([r, c]) => r * width + c;
   const truth = new Set(answer.map(key));
@@ -151,6 +157,8 @@ function checkRow(root, data, onCheck) {
   const explain = element("div");
   root.append(element("div", { class: "tr-x-row" }, [check]), verdict, explain);
   const show = (correct, text) => {
+    check.disabled = true;
+    check.title = "checked: your prediction is kept";
     verdict.innerHTML = verdictHtml(correct, text);
     explain.innerHTML = data.explain || "";
   };
@@ -213,12 +221,13 @@ function mountPixels(root, data, host) {
         ctx.stroke();
       }
     }
-    check.disabled = state.given.length === 0;
+    check.disabled = checkDisabled(state.revealed, state.given.length > 0);
   }
   const paint = painter(canvas, draw);
 
   function reveal(byClick) {
     if (!state.given.length) return;
+    if (byClick && state.revealed) return; // checked once: the first answer is kept
     state.revealed = true;
     const v = pixelVerdict(data.answer, state.given, W);
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
@@ -357,11 +366,12 @@ function mountPoint(root, data, host) {
       ctx.fillText(text, x, y);
       ctx.textAlign = "left";
     }
-    check.disabled = state.given === null;
+    check.disabled = checkDisabled(state.revealed, state.given !== null);
   }
   const paint = painter(canvas, draw);
   function reveal(byClick) {
     if (state.given === null) return;
+    if (byClick && state.revealed) return; // checked once: the first answer is kept
     state.revealed = true;
     const v = pointVerdict(data.answer, state.given, data.tolerance);
     const mine = data.readout
@@ -444,7 +454,7 @@ function mountOrder(root, data, host) {
       chip.addEventListener("pointerdown", (e) => startDrag(e, k));
       chips.append(chip);
     });
-    check.disabled = !state.acted;
+    check.disabled = checkDisabled(state.revealed, state.acted);
   }
   function move(from, to) {
     if (to < 0 || to >= order.length || from === to) return;
@@ -470,7 +480,9 @@ function mountOrder(root, data, host) {
   }
   function reveal(byClick) {
     if (!state.acted) return;
+    if (byClick && state.revealed) return; // checked once: the first answer is kept
     state.revealed = true;
+    if (impossible) impossible.disabled = true; // the answer is kept as checked
     const v = orderVerdict(data.answer, given());
     const right = data.answer === null ? data.impossibleLabel : data.answer.join(" → ");
     show(v.correct, `The answer: <b>${right}</b>.`);
