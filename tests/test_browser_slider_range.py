@@ -5,7 +5,8 @@ Issue 31 (review r27, lesson 12): an ipywidgets 8 ``IntSlider`` is drawn by noUi
 keys keep the range the slider was created with (``options.spectrum``, never updated). The
 TileExplorer's block slider (lesson 10) went from 0..68 blocks to 0..388 with the block
 sizes 16 / 4 -> 16 / 4 / 1, and End stopped at 68. The widgets now put in a new slider
-(:func:`teachraster.widgets.common.renew_slider`).
+(:func:`teachraster.widgets.common.renew_slider`). The level slider, a range input of the
+package's own (``LiveSlider``), changes its range in place: the browser's keys read its max.
 
 Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
 Playwright or Chromium is missing (CI makes them required).
@@ -65,6 +66,13 @@ def test_end_reaches_the_new_last_value_after_the_range_changes(lab, page):  # n
     page.keyboard.press("End")
     page.wait_for_timeout(500)
     assert _kernel(page, "ex.block.value") == 388  # the kernel has it too
+    # the level slider, the package's own (a range input: its keys read the max it has now)
+    # keeps its place: 0..1 became 0..2 in place, and End reaches 2
+    level = page.locator(".tr-live-slider input[type=range]").first
+    assert level.get_attribute("max") == "2"
+    level.focus()
+    page.keyboard.press("End")
+    assert level.input_value() == "2"
     # the LinePlayer's step slider: Bresenham's 0..13 to the diamond rule's 0..14
     page.get_by_role("button", name="diamond", exact=True).click()
     assert _kernel(page, "player.slider.max") == 14
