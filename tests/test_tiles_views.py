@@ -14,6 +14,7 @@ from teachraster import plotting as tp  # noqa: E402
 from teachraster.core.traversal import TRAVERSALS, visit_index  # noqa: E402
 from teachraster.plotting.tiles import UNCLASSIFIED, has_unclassified  # noqa: E402
 from teachraster.widgets import TileExplorer  # noqa: E402
+from teachraster.widgets.tiles import SIZE_OPTIONS  # noqa: E402
 
 XY = [[3.3, 2.1], [60.2, 14.7], [20.9, 58.4]]
 
@@ -262,6 +263,39 @@ def test_block_sizes_menu_refills(explorer):
     assert explorer.blocks.counters != before
     assert len(explorer.artists.blocks.get_paths()) == len(explorer.blocks)
     assert "pixel tests run" in explorer.counters.value
+
+
+def test_block_sizes_menu_puts_in_a_new_block_slider(explorer):
+    """Issue 31: a block slider whose max changed in place kept its first range for the
+    page's End key (noUiSlider), which stopped at 68 of 388 blocks. A new slider takes the old
+    one's place in the widget, with its settings, its observer and the value it had."""
+    first = explorer.block
+    first.value = 3
+    before = first.max
+    other = next(v for _, v in SIZE_OPTIONS if v != explorer.sizes.value)
+    explorer.sizes.value = other
+    block = explorer.block
+    assert block.max == len(explorer.blocks) != before
+    assert block is not first and block in explorer.widget.children
+    assert first not in explorer.widget.children and first.comm is None  # closed
+    assert block.value == 3 and block.layout is first.layout and block.description == "block"
+    block.value = 2  # the new slider drives the picture and the caption
+    assert explorer.caption_text.startswith(f"block 2 of {block.max}:")
+    explorer.traversal.value = next(t for t in TRAVERSALS if t != explorer.traversal.value)
+    assert explorer.block is block  # the same blocks, the same slider
+
+
+def test_renew_slider_refuses_a_box_without_the_slider():
+    import ipywidgets as widgets
+
+    from teachraster.widgets.common import renew_slider
+
+    slider = widgets.IntSlider(value=5, min=0, max=10)
+    with pytest.raises(ValueError, match="box"):
+        renew_slider(slider, widgets.VBox([]), max=20)
+    box = widgets.VBox([widgets.Label("x"), slider])
+    new = renew_slider(slider, box, max=3)
+    assert new.value == 3 and new.max == 3 and box.children[1] is new
 
 
 def test_degenerate_triangle_never_raises():

@@ -106,6 +106,54 @@ def control_row(children, **layout) -> widgets.HBox:
         flex_flow="row wrap", align_items="center", max_width="100%", **layout))  # fmt: skip
 
 
+#: what a renewed slider takes over from the one it replaces (:func:`renew_slider`); the
+#: Layout and the style are shared (closing a widget leaves them open)
+_SLIDER_TRAITS = ("description", "description_allow_html", "tooltip", "step", "orientation",
+                  "readout", "readout_format", "continuous_update", "disabled", "behavior",
+                  "tabbable", "layout", "style")  # fmt: skip
+
+
+def renew_slider(slider, box, *, min=None, max=None, value=None, wire=None):
+    """A new slider like ``slider`` over a new range, put in ``box`` where ``slider`` was;
+    ``slider`` is closed. Returns the new slider.
+
+    Use it instead of changing an ipywidgets slider's ``min`` or ``max`` in place: the page
+    draws ``IntSlider``/``FloatSlider`` with noUiSlider, whose ``updateOptions`` (what
+    ipywidgets 8 calls on a new range) gives the pointer and the arrow keys the new range
+    but leaves its Home and End keys on the range the slider was created with
+    (``options.spectrum``); after 0..68 became 0..388, End stopped at 68 (issue 31, the
+    TileExplorer's block slider; review r27, the LinePlayer's step). A new slider starts
+    from the new range.
+
+    Parameters
+    ----------
+    slider : ipywidgets slider
+        The slider shown now (a child of ``box``).
+    box : ipywidgets.Box
+        The box that shows it.
+    min, max : number, optional
+        The new range (None: ``slider``'s).
+    value : number, optional
+        The new value (None: ``slider``'s), moved into the range as a slider does.
+    wire : callable, optional
+        ``wire(new)`` connects the new slider (its observers, links) before it is shown:
+        observers of ``slider`` are not carried over.
+    """
+    if not isinstance(box, widgets.Box) or not any(c is slider for c in box.children):
+        raise ValueError("box: must be the ipywidgets Box that holds slider")
+    lo = slider.min if min is None else min
+    hi = slider.max if max is None else max
+    value = slider.value if value is None else value
+    kwargs = {name: getattr(slider, name) for name in _SLIDER_TRAITS if slider.has_trait(name)}
+    value = sorted((lo, value, hi))[1]  # as a slider moves its value into a new range
+    new = type(slider)(value=value, min=lo, max=hi, **kwargs)
+    if wire is not None:
+        wire(new)
+    box.children = tuple(new if c is slider else c for c in box.children)
+    slider.close()
+    return new
+
+
 def picture_row(children) -> widgets.HBox:
     """Pictures (and their notes) side by side where the column holds them, one under the
     other where it does not.

@@ -18,6 +18,7 @@ from .common import (
     Shown,
     control_row,
     labelled,
+    renew_slider,
     style_context,
     title_html,
 )
@@ -60,7 +61,9 @@ class LinePlayer(Shown):
         self.rule = widgets.ToggleButtons(options=list(RULES), value=rule)
         self.play = widgets.Play(value=0, min=0, max=n - 1, interval=interval)
         self._link = None
-        self.slider = self._new_slider(self.trace.index(step), n)
+        self.slider = widgets.IntSlider(value=self.trace.index(step), min=0, max=n - 1,
+                                        description="step")  # fmt: skip
+        self._wire(self.slider)
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
             self.fig.set_layout_engine("constrained")
@@ -103,31 +106,22 @@ class LinePlayer(Shown):
         self.caption.value = html_escape(self.where(k))
         self.display.refresh()
 
-    def _new_slider(self, value: int, n: int) -> widgets.IntSlider:
-        """A step slider over ``n`` steps at ``value``, linked to Play and to :meth:`show`.
-
-        A new slider, not the old one's ``max`` changed: the page's slider (noUiSlider in
-        ipywidgets 8) takes a new range for the pointer and the arrow keys, but its End and
-        Home keys keep the range it was created with, so after a switch from Bresenham (13
-        steps) to the diamond rule (14) End stopped one step short (review r27, lesson 12a).
-        """
+    def _wire(self, slider: widgets.IntSlider) -> None:
+        """Link the step slider ``slider`` to Play and to :meth:`show` (Play moved there)."""
         if self._link is not None:
             self._link.unlink()
-        slider = widgets.IntSlider(value=value, min=0, max=n - 1, description="step")
-        self.play.max = n - 1
-        self.play.value = value
+        self.play.max = slider.max
+        self.play.value = slider.value
         self._link = widgets.jslink((self.play, "value"), (slider, "value"))
         slider.observe(lambda change: self.show(change["new"]), "value")
-        return slider
 
     def _rerun(self) -> None:
         self.fill = rasterize_line(self.p0, self.p1, self.width, self.height,
                                    rule=self.rule.value, trace=True)  # fmt: skip
         self.view.trace = self.trace
-        n = len(self.trace)
-        old = self.slider
-        self.slider = self._new_slider(min(old.value, n - 1), n)
-        self.controls.children = tuple(self.slider if c is old else c
-                                       for c in self.controls.children)  # fmt: skip
-        old.close()
+        # a new step slider, not its max changed in place: the page's noUiSlider kept its
+        # first range for Home and End, and after Bresenham (13 steps) -> diamond (14) End
+        # stopped one step short (review r27, lesson 12a; renew_slider)
+        self.slider = renew_slider(self.slider, self.controls, max=len(self.trace) - 1,
+                                   wire=self._wire)  # fmt: skip
         self.show(self.slider.value)

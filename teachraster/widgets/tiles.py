@@ -16,6 +16,7 @@ from .common import (
     control_row,
     fill_axes,
     labelled,
+    renew_slider,
     style_context,
     title_html,
 )
@@ -122,7 +123,7 @@ class TileExplorer(Holdable):
         self.sizes.observe(self._on_refill, "value")
         self.traversal.observe(self._on_traversal, "value")
         self.level.observe(lambda _: None if self._quiet else self.show_level(), "value")
-        self.block.observe(lambda _: None if self._quiet else self.show_block(), "value")
+        self._wire_block(self.block)
         title = title_html(
             "Tiles: accept or reject whole blocks, test pixels only where an edge passes",
             "Level by level, or block by block in a traversal order.",
@@ -149,8 +150,22 @@ class TileExplorer(Holdable):
             self.level.max = len(self.sizes.value) - 1
             # as an IntSlider does, a value beyond the new end moves to it
             self.level.value = min(self.level.value, self.level.max)
-            self.block.max = len(self.blocks)
+            self._block_range(len(self.blocks))
         self.counters.value = _counter_table(self.blocks.counters)
+
+    def _block_range(self, n: int) -> None:
+        # a new block slider, not its max changed in place: the page's slider (noUiSlider)
+        # kept its first range for the End key, which stopped at 68 of 388 blocks after
+        # 16 / 4 -> 16 / 4 / 1 (issue 31; renew_slider). Before the widget is shown, in place.
+        if self.block.max == n:
+            return
+        if getattr(self, "widget", None) is None:
+            self.block.max = n
+            return
+        self.block = renew_slider(self.block, self.widget, max=n, wire=self._wire_block)
+
+    def _wire_block(self, slider) -> None:
+        slider.observe(lambda _: None if self._quiet else self.show_block(), "value")
 
     def _draw_blocks(self) -> None:
         if self.artists is not None:

@@ -1,0 +1,81 @@
+"""A slider whose range the kernel changes: its End key reaches the new last value in the page.
+
+Issue 31 (review r27, lesson 12): an ipywidgets 8 ``IntSlider`` is drawn by noUiSlider, whose
+``updateOptions`` takes a new range for the pointer and the arrow keys but whose Home and End
+keys keep the range the slider was created with (``options.spectrum``, never updated). The
+TileExplorer's block slider (lesson 10) went from 0..68 blocks to 0..388 with the block
+sizes 16 / 4 -> 16 / 4 / 1, and End stopped at 68. The widgets now put in a new slider
+(:func:`teachraster.widgets.common.renew_slider`). The level slider, a range input of the
+package's own (``LiveSlider``), changes its range in place: the browser's keys read its max.
+
+Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
+Playwright or Chromium is missing (CI makes them required).
+"""
+
+from __future__ import annotations
+
+import pytest
+from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
+from test_browser_explorables import _kernel
+from test_browser_player import _run
+
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
+
+CELLS = [
+    "import json\nimport teachraster as tr\nfrom teachraster.widgets import TileExplorer\n"
+    "from teachraster.widgets.line_player import LinePlayer\n"
+    "ex = TileExplorer(tr.Triangle([[1, 1], [30, 6], [9, 29]]), 32, 32, block_sizes=(16, 4))\n"
+    "ex",
+    "player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule='bresenham', step=2)\nplayer",
+]
+
+
+def _end_then_home(tab, slider, top: int) -> tuple[str, str]:
+    """The readout of the noUiSlider ``slider`` after End, then after Home, once its handle
+    says the range ends at ``top`` (the new slider is in the page)."""
+    handle = slider.locator(".noUi-handle").first
+    tab.wait_for_function("([h, top]) => Number(h.getAttribute('aria-valuemax')) === top",
+                          arg=[handle.element_handle(), top], timeout=30_000)  # fmt: skip
+    readout = slider.locator(".widget-readout").first
+    handle.scroll_into_view_if_needed()
+    handle.focus()
+    tab.keyboard.press("End")
+    tab.wait_for_timeout(300)
+    end = readout.inner_text()
+    tab.keyboard.press("Home")
+    tab.wait_for_timeout(300)
+    return end, readout.inner_text()
+
+
+def test_end_reaches_the_new_last_value_after_the_range_changes(lab, page):  # noqa: F811
+    _run(page, lab, CELLS, "slider_range.ipynb")
+    block = page.locator(".widget-slider", has_text="block").first
+    block.wait_for(timeout=120_000)
+    step = page.locator(".widget-slider", has_text="step").first
+    step.wait_for(timeout=60_000)
+    assert _end_then_home(page, block, 68) == ("68", "0")  # as created: 68 blocks
+    # more blocks: the sizes menu, as a student picks it
+    page.locator("select", has=page.locator("option", has_text="16 / 4 / 1")).first \
+        .select_option(label="16 / 4 / 1")  # fmt: skip
+    assert _kernel(page, "ex.block.max") == 388
+    block = page.locator(".widget-slider", has_text="block").first
+    assert _end_then_home(page, block, 388) == ("388", "0")  # End stopped at 68
+    page.keyboard.press("End")
+    page.wait_for_timeout(500)
+    assert _kernel(page, "ex.block.value") == 388  # the kernel has it too
+    # the level slider, the package's own (a range input: its keys read the max it has now)
+    # keeps its place: 0..1 became 0..2 in place, and End reaches 2
+    level = page.locator(".tr-live-slider input[type=range]").first
+    assert level.get_attribute("max") == "2"
+    level.focus()
+    page.keyboard.press("End")
+    assert level.input_value() == "2"
+    # the LinePlayer's step slider: Bresenham's 0..13 to the diamond rule's 0..14
+    page.get_by_role("button", name="diamond", exact=True).click()
+    assert _kernel(page, "player.slider.max") == 14
+    step = page.locator(".widget-slider", has_text="step").first
+    assert _end_then_home(page, step, 14) == ("14", "0")
+    assert not page.errors, page.errors[:3]
