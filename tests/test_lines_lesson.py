@@ -84,7 +84,13 @@ def test_blending_points(nsb):
     ns = nsb
     assert (ns.delta > 0).sum() > 0  # order dependence
     # review r27 12-1: additive and multiply commute (multiply up to float rounding)
-    assert ns.add_differ == 0  # the prediction's answer, "none"
+    assert ns.add_differ == 0  # additive: bit-identical in both orders for these colours
+    # review r31 12b-1: the prediction asks how many pixels "over" changes; its answer is the
+    # pixels under two or three triangles (printed before it), and the figure's count
+    assert ns.over_differ == ns.n_layers[2] + ns.n_layers[3] == int((ns.delta > 0).sum())
+    # review r31 12b-4: weighted blended OIT runs; exact on one layer, closer than the sort
+    assert ns.oit_error[~ns.two].max() < 1e-12
+    assert 0 < ns.oit_error[ns.two].mean() < ns.sorted_error[ns.two].mean()
     assert ns.mul_delta.max() < 1e-15
     assert ns.titles == ["blue, red, yellow", "yellow, red, blue"]  # r27 12-5
     assert ns.fringe_dilated == 1.0  # r27 12-9: colour dilation removes the dark fringe
