@@ -33,8 +33,8 @@ def test_diamond_rule_and_its_tie(ns):
     assert int(np.flatnonzero(ns.up[:, 1])[0]) == 3
     # "a horizontal line on a row boundary: teachraster lights the upper row" (y down)
     assert ns.flat_rows == [0] and ns.flat.sum() == 8
-    # review r27 12-3: the GL (y up) and Direct3D rows are computed, not typed: GL's by its rule
-    # on the mirrored window numbers, Direct3D's by its included bottom corner
+    # review r27 12-3 / r31 12a-7: the GL (y up) and Direct3D rows are computed, not typed: GL's
+    # by its rule on the mirrored window numbers, Direct3D's by its half-open diamond
     assert ns.tie_rows == {"dy/dx > 0": ([1], [1], [0]), "dy/dx < 0": ([3], [3], [3]),
                            "horizontal on y = 1": ([0], [1], [0])}  # fmt: skip
     # the Bresenham captions start at column 0 after the set-up steps
@@ -48,6 +48,11 @@ def test_bresenham_differs_and_dda_drifts(ns):
     assert ns.textbook_count == int(ns.bres.coverage.sum()) + 1
     assert len(ns.dda_wrong) > 0 and ns.first_column == int(ns.dda_wrong[0])
     assert abs(ns.steps.value[ns.step_k] - ns.true_y) > abs(ns.true_y - round(ns.true_y))
+    # review r31 12a-2: on screen-size lines the drift is a fraction of a pixel, yet moves some
+    assert 0 < ns.drift < 0.5 and 0 < ns.moved < ns.walked
+    assert ns.n_x / 2 < ns.lines_moved <= ns.n_x  # "a few columns in most lines"
+    # review r31 12a-1: D0 = 2 dy - dx, the first error term the player's caption prints
+    assert 2 * ns.dy - ns.dx == -2 and "D = -2" in ns.bres.trace.caption(ns.setup)
 
 
 def test_wide_line_halves_share_nothing(ns):
@@ -84,7 +89,13 @@ def test_blending_points(nsb):
     ns = nsb
     assert (ns.delta > 0).sum() > 0  # order dependence
     # review r27 12-1: additive and multiply commute (multiply up to float rounding)
-    assert ns.add_differ == 0  # the prediction's answer, "none"
+    assert ns.add_differ == 0  # additive: bit-identical in both orders for these colours
+    # review r31 12b-1: the prediction asks how many pixels "over" changes; its answer is the
+    # pixels under two or three triangles (printed before it), and the figure's count
+    assert ns.over_differ == ns.n_layers[2] + ns.n_layers[3] == int((ns.delta > 0).sum())
+    # review r31 12b-4: weighted blended OIT runs; exact on one layer, closer than the sort
+    assert ns.oit_error[~ns.two].max() < 1e-12
+    assert 0 < ns.oit_error[ns.two].mean() < ns.sorted_error[ns.two].mean()
     assert ns.mul_delta.max() < 1e-15
     assert ns.titles == ["blue, red, yellow", "yellow, red, blue"]  # r27 12-5
     assert ns.fringe_dilated == 1.0  # r27 12-9: colour dilation removes the dark fringe

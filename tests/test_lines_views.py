@@ -70,12 +70,19 @@ def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
     assert all(len(c.get_paths()) == 0 for c in view.diamonds.values())
 
 
-def test_plot_rgba_shows_alpha_over_a_checkerboard(ax):
+def test_plot_rgba_shows_the_rgb_written_or_alpha_over_a_checkerboard(ax):
     color = np.zeros((4, 5, 4))
     color[1, 2] = [0.25, 0, 0, 0.5]
+    # review r31 12b-3: by default the RGB written, opaque, as a window displays it
     art = plot_rgba(ax, color, premultiplied=True)
-    shown = art.image.get_array()
-    np.testing.assert_allclose(shown[1, 2], [0.5, 0, 0, 0.5])
+    np.testing.assert_allclose(art.image.get_array()[1, 2], [0.25, 0, 0, 1])
+    assert not art.checker.get_visible()
+    # view="alpha": the colour (un-premultiplied) by its stored alpha, over the checkerboard
+    art = plot_rgba(ax, color, premultiplied=True, view="alpha")
+    np.testing.assert_allclose(art.image.get_array()[1, 2], [0.5, 0, 0, 0.5])
+    assert art.checker.get_visible()
+    with pytest.raises(ValueError, match="view"):
+        plot_rgba(ax, color, view="checker")
     with pytest.raises(ValueError, match="color"):
         plot_rgba(ax, color[..., :3])
 
@@ -123,8 +130,14 @@ def test_blending_explorer_order_and_toggles():
         ex.srgb.value = True
         assert not np.allclose(ex.color, moved)
         ex.premultiplied.value = False
-        codes = ex.color[..., :3] * 255  # an 8-bit sRGB target: whole codes after every layer
-        assert np.allclose(codes, np.round(codes), atol=1e-9)
+        # an 8-bit sRGB target: whole codes after every layer (ex.color holds linear values)
+        codes = tr.linear_to_srgb(np.clip(ex.color[..., :3], 0, 1)) * 255
+        assert np.allclose(codes, np.round(codes), atol=1e-6)
+        # review r31 12b-3: the panels show the RGB written, opaque; "stored alpha" the checker
+        shown = ex.artists.image.get_array()
+        assert np.all(shown[..., 3] == 1) and not ex.artists.checker.get_visible()
+        ex.alpha.value = True
+        assert ex.artists.checker.get_visible() and ex.artists.image.get_array()[..., 3].min() < 1
     finally:
         ex.close()
 

@@ -7,7 +7,8 @@ Every function takes an Axes and returns its artists (lessons 12a and 12b):
   itself with its snapped end points;
 - :class:`LineView` -- a traced line step by step: ``show_step(k)`` changes the data of the
   existing artists (lit-so-far image, the current column or row, the caption), never redraws;
-- :func:`plot_rgba` -- an (H, W, 4) colour buffer over a checkerboard, so alpha shows.
+- :func:`plot_rgba` -- an (H, W, 4) colour buffer as displayed (opaque), or over a
+  checkerboard where its stored alpha is the point (:func:`rgba_shown`).
 
 Everything drawn comes from the fill's :class:`~teachraster.core.line_trace.LineTrace`
 (the lit pixels, the candidates and their states); nothing is recomputed here.
@@ -196,30 +197,50 @@ class RGBAArtists(Artists):
     image: object
 
 
-def plot_rgba(ax, color, *, premultiplied: bool = False, srgb: bool = False) -> RGBAArtists:
-    """An (H, W, 4) colour buffer (``frame.color``) over a grey checkerboard.
+def rgba_shown(color, *, premultiplied: bool = False, srgb: bool = False, view="displayed"):
+    """The (H, W, 4) image :func:`plot_rgba` shows of a colour buffer ``color``.
 
-    ``premultiplied``: the stored colour is already multiplied by alpha (divided out to show
-    it); ``srgb``: encode linear values with ``linear_to_srgb`` before showing them (what an
-    sRGB framebuffer stores); values are clipped to [0, 1] for display only.
+    ``view="displayed"``: the RGB written, opaque (alpha 1), as a window shows its colour
+    buffer: a display ignores the stored alpha, so this is the picture rendered.
+    ``view="alpha"``: the colour with its stored alpha, for drawing over a checkerboard (what
+    a compositor or a later pass reading alpha would make of it); a premultiplied colour is
+    divided by its alpha first. ``srgb``: encode linear values with ``linear_to_srgb``.
+    Values are clipped to [0, 1] for display only.
     """
     from ..core.blend_factors import linear_to_srgb
 
+    if view not in ("displayed", "alpha"):
+        raise ValueError(f"view must be 'displayed' or 'alpha', got {view!r}")
     color = np.asarray(color, dtype=np.float64)
     if color.ndim != 3 or color.shape[2] != 4:
         raise ValueError(f"color must have shape (H, W, 4), got {color.shape}")
-    height, width = color.shape[:2]
-    pixel_axes(ax, width, height)
     rgb, alpha = color[..., :3], np.clip(color[..., 3:], 0, 1)
-    if premultiplied:
+    if view == "displayed":
+        alpha = np.ones_like(alpha)  # the display shows the RGB stored, whatever the alpha
+    elif premultiplied:
         with np.errstate(invalid="ignore", divide="ignore"):
             rgb = np.where(alpha > 0, rgb / alpha, 0.0)
     rgb = np.clip(rgb, 0, 1)
     if srgb:
         rgb = linear_to_srgb(rgb)
+    return np.concatenate([rgb, alpha], axis=2)
+
+
+def plot_rgba(
+    ax, color, *, premultiplied: bool = False, srgb: bool = False, view: str = "displayed"
+) -> RGBAArtists:
+    """An (H, W, 4) colour buffer (``frame.color``): as displayed, or over a checkerboard.
+
+    ``view="displayed"`` (default) shows the RGB written, opaque: what the frame looks like on
+    screen. ``view="alpha"`` draws the colour with its stored alpha over a grey checkerboard,
+    where alpha itself is the point. ``premultiplied``, ``srgb``: see :func:`rgba_shown`.
+    """
+    image = rgba_shown(color, premultiplied=premultiplied, srgb=srgb, view=view)
+    height, width = image.shape[:2]
+    pixel_axes(ax, width, height)
     ii, jj = np.indices((height, width))
     board = np.where((ii // 2 + jj // 2) % 2 == 0, 0.8, 0.6)[..., None] * np.ones(3)
     checker = ax.imshow(board, extent=(0, width, height, 0), interpolation="nearest", zorder=0)
-    image = ax.imshow(np.concatenate([rgb, alpha], axis=2), extent=(0, width, height, 0),
-                      interpolation="nearest", zorder=1)  # fmt: skip
-    return RGBAArtists(checker, image)
+    checker.set_visible(view == "alpha")
+    shown = ax.imshow(image, extent=(0, width, height, 0), interpolation="nearest", zorder=1)
+    return RGBAArtists(checker, shown)

@@ -3,12 +3,14 @@
 Lesson 12b's blending widget. A few transparent triangles are drawn with ``render(...,
 blend=...)``; the list on the left is the submission order (select one, move it earlier or
 later, or sort back to front). The left panel shows the colour buffer in the chosen order,
-the right one the same triangles sorted back to front, with how many pixels differ. The
-checkboxes switch to premultiplied colours (``blend="premultiplied"``, colours multiplied
-by alpha first: the same picture, composed correctly in any grouping) and to showing the
-buffer as an 8-bit sRGB framebuffer stores it (``color_format="srgb8"``: blending in linear
-light, encoded and rounded to 8 bits after every layer) rather than blending the encoded
-numbers directly.
+the right one the same triangles sorted back to front, with how many pixels differ. Both show
+the RGB written, opaque, as a window displays it (review r31: the stored alpha drawn over a
+checkerboard greyed every colour); the "stored alpha" checkbox draws them over a checkerboard
+by their stored alpha instead. The other checkboxes switch to premultiplied colours
+(``blend="premultiplied"``, colours multiplied by alpha first: the same RGB on this buffer,
+a different stored alpha) and to an 8-bit sRGB framebuffer (``color_format="srgb8"``:
+blending in linear light, encoded and rounded to 8 bits after every layer) rather than
+blending the encoded numbers directly.
 """
 
 from __future__ import annotations
@@ -16,9 +18,9 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
-from ..core.blend_factors import linear_to_srgb, srgb_to_linear
+from ..core.blend_factors import srgb_to_linear
 from ..pipeline.render_triangles import render
-from ..plotting.lines import plot_rgba
+from ..plotting.lines import plot_rgba, rgba_shown
 from .common import Shown, control_row, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
 
@@ -41,9 +43,10 @@ def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)
     ``rgba`` holds straight-alpha, sRGB-encoded colours. ``srgb``: an 8-bit sRGB framebuffer
     (``color_format="srgb8"``, GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``): decode to
     linear first, blend in linear light, encode and round to 8 bits after every layer; the
-    result is returned encoded. Else blend the encoded numbers.
+    result is returned as linear values (``frame.color``; :func:`rgba_shown` encodes them).
+    Else blend the encoded numbers.
     ``premultiplied``: multiply colour by alpha first and blend with (ONE, ONE_MINUS_SRC_ALPHA);
-    the result is returned un-premultiplied so the two look alike.
+    the result is the buffer as stored, premultiplied.
     """
     colours = np.array(rgba, dtype=np.float64)[list(order)]
     if srgb:
@@ -51,16 +54,9 @@ def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)
     if premultiplied:
         colours[..., :3] *= colours[..., 3:]
     mode = "premultiplied" if premultiplied else "over"
-    color = render(np.asarray(clip)[list(order)], *size, attrs=colours, blend=mode,
-                   depth_write=False,
-                   color_format="srgb8" if srgb else "float64").color  # fmt: skip
-    if premultiplied:
-        with np.errstate(invalid="ignore", divide="ignore"):
-            a = color[..., 3:]
-            color[..., :3] = np.where(a > 0, color[..., :3] / a, 0.0)
-    if srgb:
-        color[..., :3] = linear_to_srgb(np.clip(color[..., :3], 0, 1))
-    return color
+    return render(np.asarray(clip)[list(order)], *size, attrs=colours, blend=mode,
+                  depth_write=False,
+                  color_format="srgb8" if srgb else "float64").color  # fmt: skip
 
 
 class BlendingExplorer(Shown):
@@ -78,7 +74,8 @@ class BlendingExplorer(Shown):
     ----------
     order : list of int
         The current submission order; ``select``, ``earlier``, ``later``, ``sort`` change it.
-    premultiplied, srgb : Checkbox
+    premultiplied, srgb, alpha : Checkbox
+        ``alpha``: draw the stored alpha over a checkerboard instead of the RGB as displayed.
     color, sorted_color : (H, W, 4) what the two panels show; ``differ`` pixels that differ.
 
     Examples
@@ -111,6 +108,8 @@ class BlendingExplorer(Shown):
                                               indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer", indent=False,
                                      layout=widgets.Layout(**whole))  # fmt: skip
+        self.alpha = widgets.Checkbox(value=False, description="stored alpha (checkerboard)",
+                                      indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         self._compute()
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
@@ -118,8 +117,8 @@ class BlendingExplorer(Shown):
             # run off the picture once the square panels were fitted to the width.
             axes = self.fig.subplots(1, 2, gridspec_kw=dict(left=0.08, right=0.99, top=0.8,
                                                             bottom=0.02, wspace=0.22))  # fmt: skip
-            self.artists = plot_rgba(axes[0], self.color)
-            self.sorted_artists = plot_rgba(axes[1], self.sorted_color)
+            self.artists = plot_rgba(axes[0], self.color, **self._shown())
+            self.sorted_artists = plot_rgba(axes[1], self.sorted_color, **self._shown())
             axes[0].set_title("submission order")
             axes[1].set_title("sorted back to front")
             self.display = FigureDisplay(self.fig, self.backend)
@@ -127,16 +126,20 @@ class BlendingExplorer(Shown):
         self.earlier.on_click(lambda _: self._move(-1))
         self.later.on_click(lambda _: self._move(+1))
         self.sort.on_click(lambda _: self._sort())
-        for box in (self.premultiplied, self.srgb):
+        for box in (self.premultiplied, self.srgb, self.alpha):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, premultiplied alpha, sRGB",
-            "Move a triangle earlier or later: 'over' depends on the order.",
+            "Move a triangle earlier or later: 'over' depends on the order. The panels show "
+            "the colours written, as displayed; tick 'stored alpha' to see alpha as a "
+            "checkerboard.",
         )
         column = dict(flex="0 0 auto", margin="0 12px 0 0")
         buttons = widgets.VBox([self.earlier, self.later, self.sort],
                                layout=widgets.Layout(align_items="stretch", **column))  # fmt: skip
-        boxes = widgets.VBox([self.premultiplied, self.srgb], layout=widgets.Layout(**column))
+        boxes = widgets.VBox(
+            [self.premultiplied, self.srgb, self.alpha], layout=widgets.Layout(**column)
+        )
         controls = control_row([self.select, buttons, boxes])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
@@ -149,6 +152,11 @@ class BlendingExplorer(Shown):
         """Back to front: the largest window depth (farthest) first."""
         z = self.clip[:, :, 2].mean(axis=1) / self.clip[:, :, 3].mean(axis=1)
         return list(np.argsort(-z, kind="stable"))
+
+    def _shown(self) -> dict:
+        """How :func:`rgba_shown` draws the buffers under the current checkboxes."""
+        return {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
+                "view": "alpha" if self.alpha.value else "displayed"}  # fmt: skip
 
     def _compute(self) -> None:
         opts = {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
@@ -179,8 +187,8 @@ class BlendingExplorer(Shown):
             (self.artists, self.color),
             (self.sorted_artists, self.sorted_color),
         ):
-            rgb = np.clip(color[..., :3], 0, 1)
-            artists.image.set_data(np.concatenate([rgb, np.clip(color[..., 3:], 0, 1)], axis=2))
+            artists.image.set_data(rgba_shown(color, **self._shown()))
+            artists.checker.set_visible(self.alpha.value)
         self.info.value = self._info()
         self.display.refresh()
 
@@ -191,4 +199,5 @@ class BlendingExplorer(Shown):
         return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front "
                 f"({back})"
                 f"{' (premultiplied)' if self.premultiplied.value else ''}"
-                f"{' (sRGB framebuffer)' if self.srgb.value else ''}")  # fmt: skip
+                f"{' (sRGB framebuffer)' if self.srgb.value else ''}"
+                f"{'; stored alpha over a checkerboard' if self.alpha.value else ''}")  # fmt: skip
