@@ -1296,3 +1296,27 @@ def test_player_shows_samples_untested_until_their_step_and_keys_only_what_is_dr
             assert np.abs(fast - frame_rgba(p.fig).astype(int)).max() <= 8, k
     finally:
         p.close()
+
+
+def test_player_v1_label_leaves_row_1_centre_dots_visible():
+    """Review r33 (lesson 00 c14): the "v1" label's white box blanked the centre dots of row
+    1, columns 1 and 2. The vertex labels have a white halo round their letters instead of a
+    box; the vertex dots stay above them (zorder 6.2, CasePicker's hub at 6.3)."""
+    from teachraster.plotting.frames import frame_rgba
+
+    p = _player_at_4_samples()
+    try:
+        p.view.show_step(0, draw=False)
+        p.fig.canvas.draw()
+        rgb = frame_rgba(p.fig)[..., :3].astype(int)
+        height = rgb.shape[0]
+        for j in (1, 2):
+            x, y = p.view.ax.transData.transform((j + 0.5, 1.5))
+            spot = rgb[int(round(height - y)) - 1 : int(round(height - y)) + 2,
+                       int(round(x)) - 1 : int(round(x)) + 2]  # fmt: skip
+            assert spot.min() < 160, j  # the grey dot, not a white box
+        labels = p.view.triangle.labels
+        assert all(label.get_bbox_patch() is None for label in labels)
+        assert p.view.triangle.vertices.get_zorder() > max(lab.get_zorder() for lab in labels)
+    finally:
+        p.close()

@@ -184,6 +184,12 @@ class FillView:
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
         self.triangle = plot_triangle(ax, trace, edge_labels=True, inside=True)  # the key beside
+        # the vertex names without their white boxes, a white halo round the letters instead:
+        # v1's box blanked row 1's centre dots, in a lesson about which centres are covered
+        # (review r33, lesson 00). The vertex dots stay above (6.2), as in plot_triangle.
+        for label in self.triangle.labels:
+            label.set_bbox(None)
+            label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")])
         self.raster_line = plot_raster_line(ax, trace, 0)
         self.pixel = plot_current_pixel(ax, trace, 0)
         # An explicit title position: automatic placement (above the top ticks) costs time
