@@ -676,7 +676,8 @@ def test_player_blits_its_steps_and_keeps_its_fills(player):
 
 def test_player_with_samples_steps_as_its_poster_shows_rings_where_it_colours_by_u():
     """Review r11 (lesson 00 c14, 4× MSAA): the last step's filled sample dots hid its u
-    colours; they are rings there. And the page's frames (blitted) are the pictures a poster
+    colours; they were rings there, which r33 could not tell from the uncovered samples'
+    dots: now filled blue and drawn only in the pixels an edge crosses. And the page's frames (blitted) are the pictures a poster
     (a full draw) shows: the dots' layer lay above the labels, over v1 and E31, in frames only."""
     from teachraster.plotting.frames import frame_rgba
 
@@ -692,8 +693,8 @@ def test_player_with_samples_steps_as_its_poster_shows_rings_where_it_colours_by
             p.view.redraw()  # as the page's frames are
             diff = np.abs(frame_rgba(p.fig).astype(int) - poster).max(axis=-1)
             assert diff.max() <= 8, (k, int((diff > 8).sum()))
-            rings = (covered.get_facecolor()[:, 3] == 0).all()
-            assert rings == (k == last)
+            # filled at every step (plot_samples' bold, review r33): never white rings
+            assert (covered.get_facecolor()[:, 3] == 1).all()
     finally:
         p.close()
 
@@ -1219,3 +1220,103 @@ def test_the_comparison_reads_12_px_inside_its_accordion_at_1024_px():
         assert x1 - x0 <= centres.max() - centres.min() + 3  # and one pixel either side
     finally:
         widget.close()
+
+
+def keyed(view) -> list[str]:
+    """The labels a FillView's key shows."""
+    return [t.get_text() for t in view.legend.texts if t.get_visible()]
+
+
+def _player_at_4_samples():
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip  # lesson 00's triangle
+    return FillPlayer(tri, 16, 16, method="span", samples="4 standard (rotated grid)",
+                      backend="image")  # fmt: skip
+
+
+def test_player_samples_are_filled_or_hollow_and_large_at_every_step():
+    """Review r33 (lesson 00 c14): at 4 samples the covered samples (white rings) and the
+    uncovered ones (white dots) were about 5 px across at a 592-px column and read alike. Now
+    covered filled blue, uncovered hollow vermillion, the same at every step, and at least
+    6 px (a quarter pixel) across shown in a 592-px column (a white halo round each)."""
+    from matplotlib.colors import to_rgba
+
+    from teachraster.plotting.antialiasing import BOLD_STYLE
+
+    p = _player_at_4_samples()
+    try:
+        dots, width_px = p.sample_dots, p.fig.get_figwidth() * p.fig.dpi
+        (x0, _), (x1, _) = p.view.ax.transData.transform([(0, 0), (1, 0)])
+        pixel = abs(x1 - x0) * 592 / width_px  # one of the grid's pixels, in the column
+        for k in (p.frames.max // 2, p.frames.max):
+            p.view.show_step(k, draw=False)
+            face = dots.covered.get_facecolor()
+            assert len(face) and np.allclose(face, to_rgba(BOLD_STYLE["covered"][0]))
+            assert dots.uncovered.get_markerfacecolor() == "none"
+            assert len(dots.uncovered.get_xdata())
+            for d in (dots.diameter(), np.sqrt(dots.covered.get_sizes()[0])):
+                shown = d * p.fig.dpi / 72 * 592 / width_px  # px in a 592-px column
+                assert shown >= 6 and shown >= pixel / 4, (k, shown)  # was 3.8 px
+    finally:
+        p.close()
+
+
+def test_player_shows_samples_untested_until_their_step_and_keys_only_what_is_drawn():
+    """Review r33 (lesson 00 c14, step 0): the key listed eight entries (the split's parts,
+    the raster line, its span and centres) that the snap step does not draw, and the samples
+    were coloured covered / not before any step had tested them. Before the first fill step
+    every sample is untested and the key lists that alone; a raster line's samples show
+    their result from its step on; the last step shows every one."""
+    from teachraster.plotting.frames import frame_rgba
+
+    p = _player_at_4_samples()
+    try:
+        dots, trace = p.sample_dots, p.view.trace
+        p.view.show_step(0, draw=False)
+        assert keyed(p.view) == ["sample not tested yet"]
+        assert not len(dots.covered.get_offsets()) and not len(dots.uncovered.get_xdata())
+        assert len(dots.untested.get_xdata())
+        k = trace.first_work_step + 3  # the raster line of the box's fourth row
+        p.view.show_step(k, draw=False)
+        row = trace.bbox.row0 + 3
+        for _x, y in (dots.uncovered.get_data(), dots.covered.get_offsets().T):
+            assert (np.floor(y) <= row).all()
+        assert (np.floor(dots.untested.get_ydata()) > row).all()
+        assert {"sample covered", "sample not covered", "sample not tested yet"} <= set(
+            keyed(p.view)
+        )
+        p.view.show_step(p.frames.max, draw=False)
+        assert not len(dots.untested.get_xdata()) and "sample not tested yet" not in keyed(p.view)
+        # blitted frames as a full draw shows them, while the tested rows grow
+        for k in (trace.first_work_step + 2, trace.first_work_step + 5):
+            p.view.show_step(k, draw=False)
+            p.view.redraw()
+            fast = frame_rgba(p.fig).astype(int)
+            p.fig.canvas.draw()
+            assert np.abs(fast - frame_rgba(p.fig).astype(int)).max() <= 8, k
+    finally:
+        p.close()
+
+
+def test_player_v1_label_leaves_row_1_centre_dots_visible():
+    """Review r33 (lesson 00 c14): the "v1" label's white box blanked the centre dots of row
+    1, columns 1 and 2. The vertex labels have a white halo round their letters instead of a
+    box; the vertex dots stay above them (zorder 6.2, CasePicker's hub at 6.3)."""
+    from teachraster.plotting.frames import frame_rgba
+
+    p = _player_at_4_samples()
+    try:
+        p.view.show_step(0, draw=False)
+        p.fig.canvas.draw()
+        rgb = frame_rgba(p.fig)[..., :3].astype(int)
+        height = rgb.shape[0]
+        for j in (1, 2):
+            x, y = p.view.ax.transData.transform((j + 0.5, 1.5))
+            spot = rgb[int(round(height - y)) - 1 : int(round(height - y)) + 2,
+                       int(round(x)) - 1 : int(round(x)) + 2]  # fmt: skip
+            assert spot.min() < 160, j  # the grey dot, not a white box
+        labels = p.view.triangle.labels
+        assert all(label.get_bbox_patch() is None for label in labels)
+        assert p.view.triangle.vertices.get_zorder() > max(lab.get_zorder() for lab in labels)
+    finally:
+        p.close()

@@ -60,6 +60,20 @@ DOT_SCALE = 0.55 * 1.26
 #: the pixel's colour shows between and inside the rings (at 8 and 16 samples rings of the
 #: style's width covered the triangle: review r12, lesson 00).
 DOT_SHARE, RING_SHARE = 0.8, 0.6
+#: With ``plot_samples(bold=True)`` (the fill player): covered samples filled in the
+#: palette's "tests passed" blue, uncovered ones hollow in its "tests failed" vermillion (a
+#: colour-blind-safe pair, neither on the value map's blue-to-yellow), untested ones hollow
+#: grey; each with a white halo, so that it reads on the dark and the light end of the map.
+#: At 4 samples the white ring of a covered sample and the white dot of an uncovered one
+#: were both about 5 px across at a 592-px column and read alike (review r33, lesson 00).
+BOLD_SCALE, BOLD_STYLE = (
+    1.7,
+    {
+        "covered": (COLORS["inside"], COLORS["edge"]),
+        "uncovered": ("none", COLORS["outside"]),
+        "untested": ("none", COLORS["centre"]),
+    },
+)
 
 
 @dataclass
@@ -81,24 +95,55 @@ class SampleArtists(Artists):
     _gap: float = field(default=float("inf"), repr=False)
     #: samples only in pixels partly covered (plot_samples' ``partial``)
     partial: bool = field(default=False, repr=False)
+    #: plot_samples' ``bold``: the samples no step has tested yet (else None)
+    untested: Line2D | None = None
+    _ids: np.ndarray | None = field(default=None, repr=False)
+    _offsets: np.ndarray | None = field(default=None, repr=False)
+    _tested: np.ndarray | None = field(default=None, repr=False)
+
+    @property
+    def bold(self) -> bool:
+        """Drawn with ``plot_samples(bold=True)``: filled / hollow at every step."""
+        return self.untested is not None
 
     def update(self, source) -> None:
         """Show another multisampled fill or frame (any size and pattern)."""
-        ids, offsets = sample_data(source)
-        x, y, t = _positions(ids, offsets)
+        self._ids, self._offsets = sample_data(source)
+        self._tested = None  # a new fill: every sample's result on show until set_tested
+        self._gap = _sample_gap(self.covered.axes, self._offsets)
+        self._place()
+        if self.fraction is not None:
+            self.fraction.update((self._ids >= 0).mean(axis=2))
+
+    def set_tested(self, tested: np.ndarray | None) -> None:
+        """Show the result of the samples of the pixels ``tested`` ((H, W) bool; None: all)
+        and the others as untested (``bold`` only): at the fill's first steps no sample has
+        been tested, and their colours gave the final answer away (review r33, lesson 00)."""
+        if not self.bold or self._ids is None:
+            return
+        self._tested = None if tested is None else np.asarray(tested, dtype=bool)
+        self._place()
+
+    def _place(self) -> None:
+        ids = self._ids
+        x, y, t = _positions(ids, self._offsets)
         hit = t >= 0
         shown = np.ones_like(hit)
         if self.partial:  # where an edge crosses the pixel, not where all or none are covered
             some = (ids >= 0).any(axis=2) & (ids < 0).any(axis=2)
             shown = np.repeat(some.ravel(), ids.shape[2])
+        waiting = np.zeros_like(hit)
+        if self._tested is not None:
+            waiting = shown & ~np.repeat(self._tested.ravel(), ids.shape[2])
+            shown = shown & ~waiting
         self.covered.set_offsets(np.column_stack([x[hit & shown], y[hit & shown]]))
         self._faces = [TRIANGLE_COLORS[i % len(TRIANGLE_COLORS)] for i in t[hit & shown]]
-        self._gap = _sample_gap(self.covered.axes, offsets)
         self.set_rings(self.rings)
         self.uncovered.set_data(x[~hit & shown], y[~hit & shown])
         self.uncovered.set_markersize(self.diameter())
-        if self.fraction is not None:
-            self.fraction.update((ids >= 0).mean(axis=2))
+        if self.untested is not None:
+            self.untested.set_data(x[waiting], y[waiting])
+            self.untested.set_markersize(self.diameter())
 
     def diameter(self, rings: bool = False) -> float:
         """A sample's dot (or ``rings``: ring) diameter in points: the style's, or less where
@@ -117,6 +162,10 @@ class SampleArtists(Artists):
         """
         self.rings = bool(on)
         edge, ring, rim = self._widths
+        if self.bold:  # filled and hollow read apart on the colours too: no rings
+            self.covered.set_sizes([self.diameter() ** 2])
+            self.covered.set_facecolor(BOLD_STYLE["covered"][0])
+            return
         if self.rings:
             d = self.diameter(rings=True)
             thin = d / self._largest  # 1 at 1 and 4 samples; about a third at 16
@@ -148,7 +197,9 @@ def _sample_gap(ax, offsets) -> float:
     return gap * pt_per_px
 
 
-def plot_samples(ax, source, *, fraction: bool = True, partial: bool = False) -> SampleArtists:
+def plot_samples(
+    ax, source, *, fraction: bool = True, partial: bool = False, bold: bool = False
+) -> SampleArtists:
     """Every sample of every pixel at ``(j + ox, i + oy)``: filled where covered.
 
     Parameters
@@ -164,6 +215,10 @@ def plot_samples(ax, source, *, fraction: bool = True, partial: bool = False) ->
         Draw the samples only in pixels partly covered, where an edge crosses the pixel
         (inside all are covered, outside none). Four dots in every pixel of a 16 × 16 grid
         hid the fill's shape on a projector (review r23, lesson 00 c14).
+    bold : bool
+        Larger samples, the same at every step (see :data:`BOLD_STYLE`): covered filled
+        blue, uncovered hollow vermillion, and hollow grey those that
+        :meth:`SampleArtists.set_tested` says no step has tested yet (the fill player).
 
     Returns
     -------
@@ -178,8 +233,24 @@ def plot_samples(ax, source, *, fraction: bool = True, partial: bool = False) ->
     uncovered = ax.plot([], [], "o", mfc="white", mec=COLORS["centre"],
                         mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
     widths = (max(0.5, lw(0.15)), max(0.8, lw(0.3)), max(2.0, lw(0.7)))
-    result = SampleArtists(frac, covered, uncovered, _widths=widths, _largest=ms(DOT_SCALE),
-                           partial=partial)  # fmt: skip
+    untested, largest = None, ms(DOT_SCALE)
+    if bold:
+        largest *= BOLD_SCALE
+        untested = ax.plot([], [], "o", zorder=4)[0]
+        halo = [withStroke(linewidth=max(2.5, lw(0.8)), foreground="white")]
+        for artist, role in ((covered, "covered"), (uncovered, "uncovered"),
+                             (untested, "untested")):  # fmt: skip
+            face, edge = BOLD_STYLE[role]
+            if artist is covered:
+                artist.set_edgecolor(edge)
+                artist.set_linewidth(widths[0])
+            else:
+                artist.set_markerfacecolor(face)
+                artist.set_markeredgecolor(edge)
+                artist.set_markeredgewidth(max(1.2, lw(0.4)))
+            artist.set_path_effects(halo)
+    result = SampleArtists(frac, covered, uncovered, _widths=widths, _largest=largest,
+                           partial=partial, untested=untested)  # fmt: skip
     result.update(source)
     return result
 

@@ -25,7 +25,7 @@ from matplotlib.patheffects import withStroke
 from matplotlib.transforms import Affine2D, ScaledTranslation
 
 from ..core.trace import FillTrace, Step
-from .antialiasing import TRIANGLE_COLORS
+from .antialiasing import BOLD_STYLE, TRIANGLE_COLORS
 from .blitting import MOVING, STILL, LayeredBlit
 from .common import (
     Artists,
@@ -72,6 +72,27 @@ def _new_figure(figsize, rect):
 PIXEL_UNDER_TEST = "pixel under test, × centre"
 #: The key's entry for the pixels a multisampled fill shades for a covered sample alone.
 SAMPLE_ONLY = "centre out, a sample in"
+
+
+def sample_test_steps(trace: FillTrace) -> np.ndarray | None:
+    """(height, width) int: the step that tests each pixel's samples, as the trace tells it
+    for the pixel centres: the raster line through the pixel (span tables; the samples of a
+    row's pixels lie about its centre line) or the visit of the pixel (half-planes, tiles),
+    the nearest pixel of the bounding box for a pixel outside it. None for a culled fill.
+    """
+    b, last = trace.bbox, trace.interpolation_step
+    if trace.culled or b.row1 <= b.row0 or b.col1 <= b.col0:
+        return None
+    if trace.span is not None:  # every pixel of a raster line, covered or not
+        line = trace.first_work_step + np.arange(b.row1 - b.row0)
+        local = np.broadcast_to(line[:, None], (b.row1 - b.row0, b.col1 - b.col0))
+    else:
+        local = trace.visit_step
+    rows = np.clip(np.arange(trace.height) - b.row0, 0, b.row1 - b.row0 - 1)
+    cols = np.clip(np.arange(trace.width) - b.col0, 0, b.col1 - b.col0 - 1)
+    steps = np.array(local[np.ix_(rows, cols)])
+    steps[steps < 0] = last
+    return steps
 
 
 class FillView:
@@ -163,6 +184,12 @@ class FillView:
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
         self.triangle = plot_triangle(ax, trace, edge_labels=True, inside=True)  # the key beside
+        # the vertex names without their white boxes, a white halo round the letters instead:
+        # v1's box blanked row 1's centre dots, in a lesson about which centres are covered
+        # (review r33, lesson 00). The vertex dots stay above (6.2), as in plot_triangle.
+        for label in self.triangle.labels:
+            label.set_bbox(None)
+            label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")])
         self.raster_line = plot_raster_line(ax, trace, 0)
         self.pixel = plot_current_pixel(ax, trace, 0)
         # An explicit title position: automatic placement (above the top ticks) costs time
@@ -176,11 +203,12 @@ class FillView:
         self.caption_text.set_visible(caption)
         self._step_header = step_header
         self._caption = ""
-        # ten lines: span tables with samples list the split and both sample dots (review r22)
-        self.legend = Key(ax, 10) if legend else None
+        # eleven lines: span tables with samples list the split and three sample dots (r22, r33)
+        self.legend = Key(ax, 11) if legend else None
         # the last step's colours as a short colour bar in the key (values asked for)
         self.value_bar = ValueBar(self.legend) if legend and values else None
         self.sample_dots = None  # drawn by the caller: show_samples
+        self._sample_steps = None  # (trace, sample_test_steps(trace)), made when needed
         self._trace: FillTrace | None = None
         self._step = -1
         self._keyed = None  # (testing, coloured, split) the key lists, see _key_entries
@@ -279,17 +307,23 @@ class FillView:
             # and "u4 = 3.15" (screen x) beside the key's u (the attribute): two meanings of
             # u in one picture (review r11, lesson 00 c14)
             self.split.label.set_visible(False)
+        tested = self._show_tested(k)
         if self.sample_dots is not None:  # rings: the colours show through (review r11)
             self.sample_dots.set_rings(coloured)
         if self.value_bar is not None:
             self.value_bar.set_visible(coloured)
-        # the key and the split's tints are background: each state has its own cache
-        self._still = (boxed, split, testing, coloured)
+        # the key and the split's tints are background: each state has its own cache (the
+        # sample dots too: with bold dots, as many as there are pixels tested)
+        self._still = (boxed, split, testing, coloured, tested)
         self.raster_line.update(step)
         self.pixel.update(step)
-        if self.legend is not None and (testing, coloured, split) != self._keyed:
-            self.legend.set_entries(self._key_entries(trace, testing, coloured, split))
-            self._keyed = (testing, coloured, split)
+        setup = k < trace.first_work_step
+        keyed = (testing, coloured, split, boxed, setup)
+        if self.legend is not None and keyed != self._keyed:
+            self.legend.set_entries(
+                self._key_entries(trace, testing, coloured, split, boxed=boxed, setup=setup)
+            )
+            self._keyed = keyed
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
             # the steps are numbered from 0: "of 0-22" rather than "of 22", which reads as a count
@@ -388,13 +422,33 @@ class FillView:
         """
         return self.blit.draw(self._still)
 
+    def _show_tested(self, k: int) -> int:
+        """Show the bold sample dots' results from the step that tests them (untested
+        before, review r33 lesson 00: at the snap step they gave the final coverage away).
+        Returns how many pixels' samples are tested (-1: every one, or no bold dots)."""
+        dots = self.sample_dots
+        if dots is None or not getattr(dots, "bold", False):
+            return -1
+        if self._sample_steps is None or self._sample_steps[0] is not self._trace:
+            self._sample_steps = (self._trace, sample_test_steps(self._trace))
+        steps = self._sample_steps[1]
+        if steps is None or k >= self._trace.interpolation_step:
+            dots.set_tested(None)
+            return -1
+        tested = steps <= k
+        dots.set_tested(tested)
+        return int(tested.sum())
+
     def show_samples(self, dots) -> None:
         """Step with the sample dots ``dots`` (:func:`~teachraster.plotting.plot_samples` on
         this view's Axes), drawn as a full draw orders them; at the last step with values
         the covered samples are rings, so that the pixels' colours show (review r11)."""
         self.sample_dots = dots
         self.blit = self._blit_plan()
+        self._keyed = None  # bold dots have their own key lines
         dots.set_rings(self._still[3])  # coloured: see show_step
+        tested = self._show_tested(self._step)
+        self._still = (*self._still[:4], tested)
 
     def _show_values(self, fill, trace: FillTrace) -> None:
         """Put the values the last step writes into ``values``: the trace's record of the
@@ -434,12 +488,21 @@ class FillView:
             self.value_bar.set_range(name, lo, hi, self.values.get_cmap(), where)
 
     def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool,
-                     split: bool = False) -> list:  # fmt: skip
+                     split: bool = False, *, boxed: bool = True,
+                     setup: bool = False) -> list:  # fmt: skip
         """What the step on show draws: the pixel or block under test only while there is one
         (reviews r8, lesson 04 c15; r22, lesson 00), the split line and point 4 once found
         (r22), the sample dots of a multisampled fill, and at the last step with values their
         colours instead of "covered" and the split's tints, which it hides."""
         c, method = COLORS, trace.method
+        if setup and self._bold_dots:
+            # before the first fill step the picture shows the vertices, the box once found,
+            # the split and the untested samples: eight lines for parts, spans and centres
+            # not drawn yet read as on show (review r33, lesson 00 step 0)
+            entries = [("bounding box", "none", c["bbox"])] if boxed and method != "span" else []
+            if split:
+                entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
+            return entries + self._sample_entries(trace, coloured, setup=True)
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
         entries = [None] * ValueBar.LINES if coloured else [("covered", c["fill"], c["fill"])]
@@ -464,7 +527,18 @@ class FillView:
         elif testing:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
             entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
-        if self._sample_key and trace.samples is not None:  # review r9: dots without a key
+        return entries + self._sample_entries(trace, coloured)
+
+    @property
+    def _bold_dots(self) -> bool:
+        return self.sample_dots is not None and getattr(self.sample_dots, "bold", False)
+
+    def _sample_entries(self, trace: FillTrace, coloured: bool, setup: bool = False) -> list:
+        """The key's lines for the sample dots (none when they are not keyed)."""
+        c, entries = COLORS, []
+        if self._sample_key and self._bold_dots and trace.samples is not None:
+            entries += self._bold_entries(coloured, setup)
+        elif self._sample_key and trace.samples is not None:  # review r9: dots without a key
             # at the coloured step a ring (plot_samples' set_rings) with a colour inside: a
             # white face would read as the white dot of a sample not covered
             # drawn as the picture draws it: a white ring with a dark rim (review r22)
@@ -478,6 +552,21 @@ class FillView:
                         ("sample not covered", "white", c["centre"], "o")]  # fmt: skip
             if coloured and self._sample_only_n:  # the outlines of show_step
                 entries.append((SAMPLE_ONLY, "none", c["outside"]))
+        return entries
+
+    def _bold_entries(self, coloured: bool, setup: bool) -> list:
+        """Bold dots (plot_samples' ``bold``): untested ones before the step that tests
+        them (before the fill steps, only those), covered filled and uncovered hollow; the
+        outlines of show_step when coloured."""
+        c, style, entries = COLORS, BOLD_STYLE, []
+        if not coloured:
+            entries.append(("sample not tested yet", "white", style["untested"][1], "o"))
+        if setup:
+            return entries
+        entries += [("sample covered", style["covered"][0], style["covered"][1], "o", "white"),
+                    ("sample not covered", "white", style["uncovered"][1], "o")]  # fmt: skip
+        if coloured and self._sample_only_n:  # the outlines of show_step
+            entries.append((SAMPLE_ONLY, "none", c["outside"]))
         return entries
 
 

@@ -199,7 +199,7 @@ class FillPlayer(Holdable):
         if self.fill.sample_coverage is not None:
             if self.sample_dots is None:
                 self.sample_dots = plot_samples(
-                    self.view.ax, self.fill, fraction=False, partial=True
+                    self.view.ax, self.fill, fraction=False, partial=True, bold=True
                 )
             else:
                 self.sample_dots.update(self.fill)
