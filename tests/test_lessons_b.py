@@ -662,18 +662,20 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     assert ns.x_cross + 2 < ns.x_right <= ns.W_strip
     # a horizontal edge through the ordered grid: three values (0, 1/2, 1), the question's given
     assert ns.grid_values == 3
-    # the Predict's answer: the near-horizontal edge of the figure shows 1/4 once, not 3/4
-    # ("luck"): four values. It crosses sample row 2.75 inside pixel 7, between its two samples,
+    # the Predict's answer (review r29 08-1: it asks the ordered grid, whose count the premise's
+    # horizontal edge does not give): the near-horizontal edge of the figure shows 1/4 once,
+    # not 3/4 ("luck"): four values. It crosses sample row 2.75 inside pixel 7, between its two samples,
     # and row 3.25 between pixels 15 and 16, right of both samples of pixel 15
     assert ns.edge_levels == ns.levels["ordered grid"] == [0.0, 0.25, 0.5, 1.0]
     (y1, x1), (y2, x2) = ns.crossed
     assert (y1, y2) == (2.75, 3.25) and x1 == pytest.approx(7.5) and 15.75 < x2 < 16
     assert len(ns.levels["rotated grid (standard)"]) == 5  # "all five values"
-    # review r13 08: the question asks the standard pattern's count (the argument the lesson
-    # wants: one sample per row), the ordered grid's luck is in the explain
+    # the question names the grid's sample rows in rows 2-3; the explain compares the standard
+    # pattern (one sample per row: every quarter, without luck)
+    assert ns.sample_rows == [2.25, 2.75, 3.25, 3.75]
     assert ns.standard_levels == ns.levels["rotated grid (standard)"]
     source = (ROOT / "notebooks" / "08_antialiasing.ipynb").read_text()
-    assert "answer=str(len(standard_levels))" in source and len(ns.standard_levels) == 5
+    assert "answer=str(len(edge_levels))" in source and len(ns.edge_levels) == 4
     # review r13 08 (missing): the intersection, inside both triangles, is antialiased by the
     # per-sample depth test: pixels there hold samples of both, none with one sample
     assert ns.split.sum() == 8 and not (ns.split & ~ns.inside_both).any()  # "8 pixels"

@@ -124,14 +124,16 @@ def test_edge_value_labels_stay_inside_the_panel_clear_of_the_pixel_and_each_oth
     """Review r10 (lesson 08 c32): s1's label "+132.31" ran over the panel's right frame;
     reviews r8-r11 (08-1): the labels ("+132.31", "+127.91") crossed the pixel's grey frame.
     Every label (and its box) lies inside the panel, outside the pixel's frame, clear of
-    every other label, on its dot's side of the pixel, joined to its dot by a leader."""
+    every other label, on its dot's side of the pixel, joined to its dot by a leader.
+    Review r29 (08-2): the triangle's edge line ran through s0's "+127.91" and, with one
+    sample, "+53.53": no edge line crosses a label's box."""
     from teachraster.plotting import use_style
 
     with use_style("classroom"):  # as lesson 08: the largest labels
         tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])
         w = PixelInspector(tri, 20, 14, row=3, col=13, pattern=pattern, backend="image")
         try:
-            for row, col in ((3, 13), (0, 0), (13, 19), (8, 10)):
+            for row, col in ((3, 13), (0, 0), (13, 19), (8, 10), (7, 3)):  # (7, 3): on E31
                 w.row.value, w.col.value = row, col
                 w.fig.canvas.draw()
                 r = w.fig.canvas.get_renderer()
@@ -140,12 +142,14 @@ def test_edge_value_labels_stay_inside_the_panel_clear_of_the_pixel_and_each_oth
                 pixel = w.pixel.square.get_window_extent(r)  # the grey frame, its line width in
                 boxes = [lab.get_bbox_patch().get_window_extent(r) for lab in w.pixel.labels]
                 assert len(boxes) == len(w.pixel.dots)
+                edges = [e.get_transform().transform_path(e.get_path()) for e in w.pixel.edges]
                 for s, (lab, box) in enumerate(zip(w.pixel.labels, boxes)):
                     where = (pattern, row, col, s)
                     assert frame.x0 < box.x0 and box.x1 < frame.x1, where
                     assert frame.y0 < box.y0 and box.y1 < frame.y1, where
                     assert not box.overlaps(pixel), where  # crosses no side of the pixel
                     assert not any(box.overlaps(b) for b in boxes[s + 1 :]), where
+                    assert not any(e.intersects_bbox(box, filled=False) for e in edges), where
                     dot = w.pixel.dots[s].get_xydata()[0]
                     assert np.allclose(lab.xy, dot) and lab.arrow_patch is not None
                     left = dot[0] - col < 0.5  # beside the pixel on the dot's side
@@ -179,6 +183,13 @@ def test_sixteen_samples_numbers_clear_each_other_and_the_table_gives_edge_value
             assert not any(a.overlaps(b) for i, a in enumerate(boxes) for b in boxes[i + 1 :])
             centre = w.pixel.centre.get_window_extent(r)
             assert not any(b.overlaps(centre) for b in boxes), pattern
+            # review r29 (08-2): no number on the edge line or on a side of the pixel (placed
+            # with the pixel's size as drawn, after the equal aspect shrank the panel)
+            edges = [e.get_transform().transform_path(e.get_path()) for e in w.pixel.edges]
+            square = w.pixel.square.get_transform().transform_path(w.pixel.square.get_path())
+            for b in boxes:
+                assert not any(e.intersects_bbox(b, filled=False) for e in edges), pattern
+                assert not square.intersects_bbox(b, filled=False), pattern
             e = w.result.trace.samples.edge_values(3, 13)
             assert w.table.value.count("<tr>") == len(e) + 1
             assert all(edge_value_text(v) in w.table.value for v in e.ravel())

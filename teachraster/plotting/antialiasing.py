@@ -19,7 +19,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patheffects import withStroke
-from matplotlib.transforms import offset_copy
+from matplotlib.text import Text
+from matplotlib.transforms import Bbox, offset_copy
 
 from ..core.fill import Fill
 from ..core.trace import edge_name
@@ -350,10 +351,12 @@ class PixelSampleArtists(Artists):
             label = _label(s, t, None if values is None else values[s], names)
             self.labels.append(_margin_label(ax, label, row, col, ox, oy))
         if not few:  # numbers only, each placed clear of the others, the dots and the centre
+            ax.apply_aspect()  # the pixel's size as drawn: its sides are obstacles
             self.labels += _place_numbers(ax, col + offsets[:, 0], row + offsets[:, 1],
-                                          (col + 0.5, row + 0.5), ms(1.0))  # fmt: skip
+                                          (col + 0.5, row + 0.5), ms(1.0),
+                                          lines=self.edges)  # fmt: skip
         else:
-            _fit_labels(ax, self.labels, row, col)
+            _fit_labels(ax, self.labels, row, col, lines=self.edges)
         covered = int((ids[row, col] >= 0).sum())
         key = ""
         if values is not None:
@@ -399,11 +402,12 @@ def _beside(ax, side: int, size: float, dy_pt: float = 0.0):
 MARGIN_X, MARGIN_Y = 0.28, 0.15
 
 
-def _fit_labels(ax, labels, row: int, col: int, *, gap_pt: float = 6.0) -> None:
-    """Keep the margin labels apart and inside the panel, the pixel in its middle.
+def _fit_labels(ax, labels, row: int, col: int, *, lines=(), gap_pt: float = 6.0) -> None:
+    """Keep the margin labels apart, off the triangle's edge ``lines`` and inside the panel,
+    the pixel in its middle.
 
-    Labels on one side of the pixel that would overlap move apart (:func:`_spread_labels`);
-    then the margins are solved for: the labels reach a fixed number of points beyond the
+    Labels on one side of the pixel that would overlap move apart, and a label an edge line
+    runs through moves up or down until it clears it (:func:`_spread_labels`); then the margins are solved for: the labels reach a fixed number of points beyond the
     pixel's sides, so with ``n`` display pixels of them on each side and an Axes box ``W``
     wide, the pixel gets ``W - 2n`` display pixels (likewise in height; the smaller wins,
     the aspect is equal). s1's "+132.31" of lesson 08 c32 ran over the panel's right frame
@@ -419,7 +423,7 @@ def _fit_labels(ax, labels, row: int, col: int, *, gap_pt: float = 6.0) -> None:
     room = ax.get_position(original=True).transformed(fig.transFigure)  # before the aspect
     for _ in range(4):
         ax.apply_aspect()
-        _spread_labels(ax, labels, renderer, gap_pt=2.0)
+        _spread_labels(ax, labels, renderer, gap_pt=2.0, lines=lines)
         (px0, py0), (px1, py1) = ax.transData.transform([(col, row + 1), (col + 1, row)])
         need_x = need_y = 0.0  # display pixels beyond the pixel's sides, gap and pad in
         for label in labels:
@@ -438,10 +442,13 @@ def _fit_labels(ax, labels, row: int, col: int, *, gap_pt: float = 6.0) -> None:
         ax.set_ylim(row + 1 + my, row - my)
 
 
-def _spread_labels(ax, labels, renderer, *, gap_pt: float) -> None:
+def _spread_labels(ax, labels, renderer, *, gap_pt: float, lines=()) -> None:
     """Labels on one side of the pixel, each first at its dot's height, moved apart where
     their boxes would overlap: each pair that would, by half the overlap up and half down
-    (the standard and ordered patterns have at most two samples on a side)."""
+    (the standard and ordered patterns have at most two samples on a side). Then a label
+    that an edge line crosses moves to the nearest height where it clears every line and
+    label (:func:`_off_lines`): the edge, drawn over the labels' boxes so that no box breaks
+    it, ran through the edge values ("+127.91" in lesson 08's inspector)."""
     to_pt = 72.0 / ax.figure.dpi
     for side in (-1, 1):
         mine = [lab for lab in labels if (lab.get_ha() == "left") == (side > 0)]
@@ -459,6 +466,63 @@ def _spread_labels(ax, labels, renderer, *, gap_pt: float) -> None:
                 for lab, sign in ((upper, 1), (lower, -1)):
                     moved[id(lab)] += sign * overlap / 2
                     lab.anncoords = _beside(ax, side, lab.get_fontsize(), moved[id(lab)])
+        if lines:
+            _off_lines(ax, mine, moved, side, renderer, lines, gap_pt=gap_pt)
+
+
+def _padded_box(label, renderer, gap_pt: float) -> Bbox:
+    """The display box of a label's text with its white box's pad (``label_box``) and
+    ``gap_pt`` points around it (the Annotation's own extent includes its leader)."""
+    label.update_positions(renderer)  # its text where its coordinates now put it
+    box = Text.get_window_extent(label, renderer)
+    pad = (0.2 * label.get_fontsize() + gap_pt) * label.figure.dpi / 72.0
+    return Bbox.from_extents(box.x0 - pad, box.y0 - pad, box.x1 + pad, box.y1 + pad)
+
+
+def _off_lines(ax, mine, moved, side, renderer, lines, *, gap_pt: float) -> None:
+    """Move each label of ``mine`` (one side of the pixel) that a line of ``lines`` crosses
+    up or down, by the least number of points that clears every line; a label in the way is
+    pushed along, and must clear the lines too. ``moved`` holds each label's shift from its
+    dot's height, in points."""
+    paths = [line.get_transform().transform_path(line.get_path()) for line in lines]
+    to_px = ax.figure.dpi / 72.0
+    gap = gap_pt * to_px
+
+    def crossed(box, dy):
+        grown = Bbox.from_extents(box.x0 - gap, box.y0 - gap + dy, box.x1 + gap, box.y1 + gap + dy)
+        return any(p.intersects_bbox(grown, filled=False) for p in paths)
+
+    mine = sorted(mine, key=lambda lab: -_padded_box(lab, renderer, 0.0).y0)  # top first
+    for i in range(len(mine)):
+        boxes = [_padded_box(o, renderer, 0.0) for o in mine]
+        if not crossed(boxes[i], 0.0):
+            continue
+        for step in np.arange(2.0, 120.0, 2.0):  # points, up first, then down
+            shifts = next((d for d in (_pushed(boxes, i, sign * step * to_px, gap)
+                                       for sign in (1, -1))
+                           if not any(crossed(b, dy) for b, dy in zip(boxes, d) if dy)), None)  # fmt: skip
+            if shifts is not None:
+                for o, dy in zip(mine, shifts):
+                    moved[id(o)] += dy / to_px
+                    o.anncoords = _beside(ax, side, o.get_fontsize(), moved[id(o)])
+                break
+
+
+def _pushed(boxes, i: int, dy: float, gap: float) -> list:
+    """Display shifts of ``boxes`` (a column, top first) when box ``i`` moves ``dy`` up
+    (negative: down): the boxes it runs into are pushed on, ``gap`` apart."""
+    shifts = [0.0] * len(boxes)
+    shifts[i] = dy
+    order = range(i - 1, -1, -1) if dy > 0 else range(i + 1, len(boxes))
+    prev = i
+    for j in order:
+        if dy > 0:  # box j is above box prev
+            need = boxes[prev].y1 + shifts[prev] + gap - boxes[j].y0
+        else:
+            need = boxes[prev].y0 + shifts[prev] - gap - boxes[j].y1
+        shifts[j] = max(need, 0.0) if dy > 0 else min(need, 0.0)
+        prev = j
+    return shifts
 
 
 def _label(s, t, e, names) -> str:
@@ -483,14 +547,15 @@ def edge_value_text(v: float) -> str:
     return f"{v:+.2f}" if abs(v) >= 0.005 else f"{v:+.1e}"
 
 
-def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
+def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
     """Sample numbers ``0 … n-1`` beside the dots at ``xs``, ``ys`` (data), each at the first
     of eight directions (then farther) where its box clears the labels placed before, every
     dot and the centre's cross (``dot_pt``: the dots' and the cross's size in points).
     Random patterns put samples close together: fixed offsets printed "2" and "13" as "213".
     The pixel's sides are obstacles too, and every box keeps ``NUMBER_GAP`` points from the
     next: with 16 random samples "13" and "11" sat on the pixel's top side and "12 9" touched
-    (review r26, lesson 08 c34).
+    (review r26, lesson 08 c34). The triangle's edge ``lines`` are obstacles too (review
+    r29, 08-2).
     """
     fig = ax.figure
     to_pt = 72.0 / fig.dpi
@@ -509,6 +574,8 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
     frame = ax.get_window_extent()
     x_lo, y_lo = frame.x0 * to_pt, frame.y0 * to_pt
     x_hi, y_hi = frame.x1 * to_pt, frame.y1 * to_pt
+    paths = [line.get_transform().transform_path(line.get_path()) for line in lines]
+    to_px = fig.dpi / 72.0
     directions = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]
     labels = []
     for s, (x, y) in enumerate(pts):
@@ -521,6 +588,8 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float) -> list:
                 box = (x + ox - w / 2, y + oy - h / 2, x + ox + w / 2, y + oy + h / 2)
                 inside = box[0] >= x_lo and box[2] <= x_hi and box[1] >= y_lo and box[3] <= y_hi
                 hits = sum(_overlap(box, b) for b in blocked) + (0 if inside else 10)
+                on_line = Bbox.from_extents(*(np.array(box) * to_px))
+                hits += sum(p.intersects_bbox(on_line, filled=False) for p in paths)
                 if best_hits is None or hits < best_hits:
                     best, best_hits = (ox, oy, box), hits
                 if hits == 0:
