@@ -1508,6 +1508,46 @@ def test_the_history_chart_names_the_frame_it_shows():
             w.close()
 
 
+def test_each_frame_opens_at_a_pixel_where_its_pair_differs():
+    """r32 D11-2: every frame opened at (24, 32), where frames 3 to 9 agree with their
+    intended frames, so the two tables were the same. A frame chosen in the list opens at a
+    pixel where its pair differs: the pixel on show if they differ there (so a pixel carries
+    over to a look-alike), else the nearest that does; the notebook says so."""
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets.frame_inspector import changed_pixel
+
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
+    try:
+        assert bf._differs(1)[w.row.value, w.col.value]
+        for n in ANSWERS:
+            for name in (f"frame {n}", f"intended {n}"):
+                w.row.value, w.col.value = 24, 32  # a pixel of plain wall in frames 3 to 9
+                w.scene.value = name
+                at = (w.row.value, w.col.value)
+                assert bf._differs(n)[at], (name, at)
+                assert (w.history.row, w.history.col) == at
+                assert f"row {at[0]}, col {at[1]}" in w.hist_ax.get_title()
+                assert w.table.value.count("<b>") == 2 and f"<b>{name}</b>" in w.table.value
+                tables = re.findall(r"<pre[^>]*>(.*?)</pre>", w.table.value, re.S)
+                assert tables[0] != tables[1], (name, at)  # the two histories differ there
+        w.scene.value = "frame 1"
+        w.row.value, w.col.value = 30, 20  # differs in frame 1 and its look-alike frame 2
+        w.scene.value = "frame 2"
+        assert (w.row.value, w.col.value) == (30, 20)
+        w.scene.value = "frame 5"  # (30, 20) agrees there: the nearest changed pixel
+        at = (w.row.value, w.col.value)
+        rows, cols = np.nonzero(bf._differs(5))
+        nearest = min((r - 30) ** 2 + (c - 20) ** 2 for r, c in zip(rows, cols))
+        assert (at[0] - 30) ** 2 + (at[1] - 20) ** 2 == nearest, at
+    finally:
+        w.close()
+    # a pair that agrees everywhere keeps the pixel
+    f = ex.broken_frame(1).frame
+    assert changed_pixel(f, f, 3, 4) == (3, 4)
+    text = " ".join(_cells()["inspector_text"].split())
+    assert "opens at a pixel where it and its pair differ" in text, text
+
+
 def test_a_next_that_finds_nothing_is_told_what_happened():
     """Review r23 D4: a diagnosis whose ``next(...)`` found no record was told only "your
     function raised StopIteration"; the report says a next(...) found nothing."""
