@@ -1374,6 +1374,33 @@ def test_frames_7_to_9_have_no_free_wrong_cause(monkeypatch):
     assert "A right cause never waits." not in how
 
 
+def test_the_text_says_what_starts_the_wait_counts_again(monkeypatch):
+    """r32 D11-4: a student who set off the 30 s brake on frame 7 was not told how to reset
+    it. The counts live in the kernel (:mod:`teachraster.exercises.tries`): a pass starts
+    them again (checked here), a new kernel does (a new process); cell 4 and 11.7 say so."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setattr(tries, "_WRONG", {})
+    monkeypatch.setattr(tries, "SETTING", "25")
+    pixel = sol.BROKEN_FRAMES[7][1]
+    wrong = [c for c in ex.CAUSES if c != ANSWERS[7]][:2]
+    for cause in wrong:
+        assert not ex.check("broken_frame_7", lambda b, c=cause: (c, pixel, 0.5)).passed
+    assert waits == [30.0, 60.0], waits
+    assert ex.check("broken_frame_7", sol.diagnosis(7)).passed
+    assert not ex.check("broken_frame_7", lambda b: (wrong[1], pixel, 0.5)).passed
+    assert waits[-1] == 30.0 and tries._FAILED["broken_frame_7"] == 1, waits
+    cells = _cells()
+    how = " ".join(cells["how_text"].split())
+    assert "Both counts live in the kernel: a passing check of the frame starts them again" in how
+    assert "and so does a new kernel (restart it" in how, how
+    task = " ".join(cells["frame_7_task"].split())
+    assert "until a check of this frame passes or the kernel restarts" in task, task
+
+
 def test_messages_say_what_the_redrawn_frame_changes_and_round_and_are_not_repeated():
     """r21 D6, D8: the cube's frames were said to be redrawn "with another wall, strip and
     depths" (the cube has neither); a wrong cause's value was quoted unrounded

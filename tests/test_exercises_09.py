@@ -2031,3 +2031,8 @@ def test_a_stop_after_the_update_is_named_however_near_1(threshold):
     assert ex.check("front_to_back", top, budget=60).passed
     task = " ".join(_nb_cells()["front_to_back_task"].split())
     assert "only in a loop that tests after adding a layer" in task, task
+    # r32 D9-3: the folded note names the stack that tells these stops, with its count
+    from teachraster.exercises.front_to_back import UNDERFLOW_LAYERS
+
+    assert f"a third stack: {UNDERFLOW_LAYERS} layers, none opaque by itself" in task, task
+    assert f"it reads all {UNDERFLOW_LAYERS}" in task and "no short stack" not in task, task
