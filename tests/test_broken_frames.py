@@ -1252,6 +1252,37 @@ def test_the_how_text_indexes_the_trace_by_piece():
     assert "clipped piece" in how
 
 
+def test_the_how_text_says_when_matching_by_corners_matters():
+    """r32 D11-1: cell 4 taught matching triangles by their corners, which no graded answer
+    needed where the numbers agree. It says the rule matters only where the numbers differ,
+    which happens in some pairs and not others (no frame named: that would tell a cause),
+    and that corners match in any order. Both claims hold for the frames shown and the
+    redrawn ones."""
+
+    def corners(frame):
+        window = frame.trace.window[:, :, :2]
+        return [tuple(sorted(map(tuple, np.round(t, 6)))) for t in window], window
+
+    kinds = set()
+    for n in ANSWERS:
+        for b in (ex.broken_frame(n), bf._redrawn(n)):
+            (mine, ordered), (theirs, _) = corners(b.frame), corners(b.intended)
+            match = [theirs.index(k) if k in theirs else None for k in mine]
+            if match == list(range(len(mine))) and len(mine) == len(theirs):
+                kinds.add("alike")
+                if not np.allclose(ordered, b.intended.trace.window[:, :, :2]):
+                    kinds.add("same numbers, corners listed in another order")
+            else:
+                kinds.add("lacks one" if None in match else "another order")
+    assert kinds == {"alike", "same numbers, corners listed in another order", "lacks one",
+                     "another order"}, kinds  # fmt: skip
+    how = " ".join(_cells()["how_text"].split())
+    assert "in whatever order they are listed" in how, how
+    assert "This matters only where the numbers differ: in some pairs here" in how, how
+    for n in range(1, 10):
+        assert f"frame {n}" not in how.split("The stages:")[0], n
+
+
 def test_a_wrong_cause_is_told_where_to_look_first():
     """r14 (cosmetic): a wrong cause's ~400 characters began with the same sentence and put
     the instruction last; now it says first that the cause is not what the histories show and
