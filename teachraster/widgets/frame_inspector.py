@@ -281,7 +281,8 @@ class FrameInspector(Holdable):
     view : str
         "image" or an overlay kind (:data:`VIEWS`).
     row, col : int
-        The pixel whose history is shown first.
+        The pixel whose history is shown first (by default the centre; with ``pairs``, the
+        pixel nearest it where the frame and its pair differ: :func:`changed_pixel`).
     samples : {1, 4}
     depth_test : bool
     glass : bool
@@ -295,7 +296,8 @@ class FrameInspector(Holdable):
         With ``frames``: each frame's pair (a broken frame and the one intended). A check box
         then shows the chosen pixel's history in the pair beside its history in the frame on
         show, as an engineer compares two captures in two RenderDoc windows (review r14,
-        exercise 11: the inspector showed one frame, the other was read from memory).
+        exercise 11: the inspector showed one frame, the other was read from memory). A frame
+        chosen in the list opens at a pixel where it and its pair differ (review r32).
     backend, style
         As for the other widgets.
 
