@@ -1252,6 +1252,37 @@ def test_the_how_text_indexes_the_trace_by_piece():
     assert "clipped piece" in how
 
 
+def test_the_how_text_says_when_matching_by_corners_matters():
+    """r32 D11-1: cell 4 taught matching triangles by their corners, which no graded answer
+    needed where the numbers agree. It says the rule matters only where the numbers differ,
+    which happens in some pairs and not others (no frame named: that would tell a cause),
+    and that corners match in any order. Both claims hold for the frames shown and the
+    redrawn ones."""
+
+    def corners(frame):
+        window = frame.trace.window[:, :, :2]
+        return [tuple(sorted(map(tuple, np.round(t, 6)))) for t in window], window
+
+    kinds = set()
+    for n in ANSWERS:
+        for b in (ex.broken_frame(n), bf._redrawn(n)):
+            (mine, ordered), (theirs, _) = corners(b.frame), corners(b.intended)
+            match = [theirs.index(k) if k in theirs else None for k in mine]
+            if match == list(range(len(mine))) and len(mine) == len(theirs):
+                kinds.add("alike")
+                if not np.allclose(ordered, b.intended.trace.window[:, :, :2]):
+                    kinds.add("same numbers, corners listed in another order")
+            else:
+                kinds.add("lacks one" if None in match else "another order")
+    assert kinds == {"alike", "same numbers, corners listed in another order", "lacks one",
+                     "another order"}, kinds  # fmt: skip
+    how = " ".join(_cells()["how_text"].split())
+    assert "in whatever order they are listed" in how, how
+    assert "This matters only where the numbers differ: in some pairs here" in how, how
+    for n in range(1, 10):
+        assert f"frame {n}" not in how.split("The stages:")[0], n
+
+
 def test_a_wrong_cause_is_told_where_to_look_first():
     """r14 (cosmetic): a wrong cause's ~400 characters began with the same sentence and put
     the instruction last; now it says first that the cause is not what the histories show and
@@ -1372,6 +1403,33 @@ def test_frames_7_to_9_have_no_free_wrong_cause(monkeypatch):
     how = " ".join(cells["how_text"].split())
     assert "A check that passes never waits, and a right cause never waits for the wrong" in how
     assert "A right cause never waits." not in how
+
+
+def test_the_text_says_what_starts_the_wait_counts_again(monkeypatch):
+    """r32 D11-4: a student who set off the 30 s brake on frame 7 was not told how to reset
+    it. The counts live in the kernel (:mod:`teachraster.exercises.tries`): a pass starts
+    them again (checked here), a new kernel does (a new process); cell 4 and 11.7 say so."""
+    from teachraster.exercises import tries
+
+    waits = []
+    monkeypatch.setattr(tries, "_sleep", waits.append)
+    monkeypatch.setattr(tries, "_FAILED", {})
+    monkeypatch.setattr(tries, "_WRONG", {})
+    monkeypatch.setattr(tries, "SETTING", "25")
+    pixel = sol.BROKEN_FRAMES[7][1]
+    wrong = [c for c in ex.CAUSES if c != ANSWERS[7]][:2]
+    for cause in wrong:
+        assert not ex.check("broken_frame_7", lambda b, c=cause: (c, pixel, 0.5)).passed
+    assert waits == [30.0, 60.0], waits
+    assert ex.check("broken_frame_7", sol.diagnosis(7)).passed
+    assert not ex.check("broken_frame_7", lambda b: (wrong[1], pixel, 0.5)).passed
+    assert waits[-1] == 30.0 and tries._FAILED["broken_frame_7"] == 1, waits
+    cells = _cells()
+    how = " ".join(cells["how_text"].split())
+    assert "Both counts live in the kernel: a passing check of the frame starts them again" in how
+    assert "and so does a new kernel (restart it" in how, how
+    task = " ".join(cells["frame_7_task"].split())
+    assert "until a check of this frame passes or the kernel restarts" in task, task
 
 
 def test_messages_say_what_the_redrawn_frame_changes_and_round_and_are_not_repeated():
@@ -1506,6 +1564,46 @@ def test_the_history_chart_names_the_frame_it_shows():
             assert title.get_fontsize() * w.hist_fig.dpi / 72 >= 12, title.get_fontsize()
         finally:
             w.close()
+
+
+def test_each_frame_opens_at_a_pixel_where_its_pair_differs():
+    """r32 D11-2: every frame opened at (24, 32), where frames 3 to 9 agree with their
+    intended frames, so the two tables were the same. A frame chosen in the list opens at a
+    pixel where its pair differs: the pixel on show if they differ there (so a pixel carries
+    over to a look-alike), else the nearest that does; the notebook says so."""
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets.frame_inspector import changed_pixel
+
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
+    try:
+        assert bf._differs(1)[w.row.value, w.col.value]
+        for n in ANSWERS:
+            for name in (f"frame {n}", f"intended {n}"):
+                w.row.value, w.col.value = 24, 32  # a pixel of plain wall in frames 3 to 9
+                w.scene.value = name
+                at = (w.row.value, w.col.value)
+                assert bf._differs(n)[at], (name, at)
+                assert (w.history.row, w.history.col) == at
+                assert f"row {at[0]}, col {at[1]}" in w.hist_ax.get_title()
+                assert w.table.value.count("<b>") == 2 and f"<b>{name}</b>" in w.table.value
+                tables = re.findall(r"<pre[^>]*>(.*?)</pre>", w.table.value, re.S)
+                assert tables[0] != tables[1], (name, at)  # the two histories differ there
+        w.scene.value = "frame 1"
+        w.row.value, w.col.value = 30, 20  # differs in frame 1 and its look-alike frame 2
+        w.scene.value = "frame 2"
+        assert (w.row.value, w.col.value) == (30, 20)
+        w.scene.value = "frame 5"  # (30, 20) agrees there: the nearest changed pixel
+        at = (w.row.value, w.col.value)
+        rows, cols = np.nonzero(bf._differs(5))
+        nearest = min((r - 30) ** 2 + (c - 20) ** 2 for r, c in zip(rows, cols))
+        assert (at[0] - 30) ** 2 + (at[1] - 20) ** 2 == nearest, at
+    finally:
+        w.close()
+    # a pair that agrees everywhere keeps the pixel
+    f = ex.broken_frame(1).frame
+    assert changed_pixel(f, f, 3, 4) == (3, 4)
+    text = " ".join(_cells()["inspector_text"].split())
+    assert "opens at a pixel where it and its pair differ" in text, text
 
 
 def test_a_next_that_finds_nothing_is_told_what_happened():

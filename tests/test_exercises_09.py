@@ -222,6 +222,21 @@ def _over_straight_with(alpha, at_zero):
     return fn
 
 
+def test_src_returned_where_nothing_covers_is_named_not_called_swapped():
+    """r32 D9-1: ``if alpha == 0: return src`` was told "you swapped the weights of over" (the
+    swapped pair gives src there too); it is named as "α = 0 → dst" is. A swapped pair that
+    fails elsewhere is still named swapped at that case (see the swapped-pair test)."""
+    right = lambda s, d: s[3] + d[3] * (1 - s[3])  # noqa: E731
+    report = ex.check("over_straight", _over_straight_with(right, lambda s, d: s), budget=60)
+    assert not report.passed
+    assert [f.kind for f in report.failures] == ["src where nothing covers"], [
+        (f.kind, f.explanation) for f in report.failures
+    ]
+    words = report.failures[0].explanation
+    assert "you returned src (0.3, 0.6, 0.9, 0) unchanged" in words, words
+    assert "(0, 0, 0, 0)" in words and "swapped" not in words, words
+
+
 def _ftb_alpha_clamped(layers):
     acc = np.zeros(4)
     for c in layers:
@@ -2016,3 +2031,8 @@ def test_a_stop_after_the_update_is_named_however_near_1(threshold):
     assert ex.check("front_to_back", top, budget=60).passed
     task = " ".join(_nb_cells()["front_to_back_task"].split())
     assert "only in a loop that tests after adding a layer" in task, task
+    # r32 D9-3: the folded note names the stack that tells these stops, with its count
+    from teachraster.exercises.front_to_back import UNDERFLOW_LAYERS
+
+    assert f"a third stack: {UNDERFLOW_LAYERS} layers, none opaque by itself" in task, task
+    assert f"it reads all {UNDERFLOW_LAYERS}" in task and "no short stack" not in task, task

@@ -784,3 +784,42 @@ def test_history_legend_stays_in_the_axes_and_off_the_tick_labels():
                         assert not [q for q in xy if np.isfinite(q).all() and box.contains(*q)]
             finally:
                 plt.close(fig)
+
+
+def test_history_depth_ticks_stay_within_the_depths_possible():
+    """Review r32 D11-3: with room made above the depths for the legend, the inspector's
+    chart at exercise 11's frame 7, (21, 32) (a failing fragment at 0.699992), ran its depth
+    axis to ~1.4 and ticked 1.0 and past it as if a depth could be above 1. Window depths lie
+    in [0, 1]: no tick outside it, the room above left unlabelled. Also at a pixel whose
+    depths are near 0 (frame 1, (24, 28)), and at ties of 0.6 (frame 3)."""
+    matplotlib = pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster import exercises as ex
+    from teachraster.pipeline.debugging.frame_history import _tick_range, depth_ticks
+    from teachraster.plotting import plot_history, use_style
+
+    with matplotlib.rc_context():
+        use_style("classroom")
+        fig = plt.figure(figsize=(4.6, 3.9), dpi=96)  # as FrameInspector's history figure
+        ax = fig.add_axes((0.26, 0.24, 0.71, 0.66))
+        try:
+            for n, pixel in ((7, (21, 32)), (5, (21, 32)), (1, (24, 28)), (3, (19, 48))):
+                h = ex.broken_frame(n).frame.history(*pixel)
+                ax.clear()
+                plot_history(ax, h)
+                fig.canvas.draw()
+                depths = [v for r in h.records for v in (r.depth, r.depth_before)
+                          if np.isfinite(v)]  # fmt: skip
+                ticks = list(ax.get_yticks())
+                where = f"frame {n} {pixel}: ticks {ticks}, ylim {ax.get_ylim()}"
+                assert len(ticks) >= 2 and 0 <= min(ticks) and max(ticks) <= 1, where
+                assert ax.get_ylim()[0] <= min(ticks) and min(depths) >= 0, where
+                if n == 7:  # the room for the legend stays, above the last tick
+                    assert ax.get_ylim()[1] > 1 and max(ticks) == 1.0, where
+        finally:
+            plt.close(fig)
+    # depths outside [0, 1] (no window depth; a drawing of other numbers) keep the whole axis
+    assert _tick_range(-0.5, 1.4, -0.2, 0.7) == (-0.5, 1.0)
+    assert _tick_range(0.2, 1.9, 0.3, 1.2) == (0.2, 1.9)
+    assert depth_ticks(*_tick_range(0.295, 1.72, 0.4, 0.699992))[0] == [0.4, 0.6, 0.8, 1.0]

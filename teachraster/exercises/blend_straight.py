@@ -149,18 +149,31 @@ FAINT_STRAIGHT = Mistake(
     fits=_faint_as_nothing, only_whole=True)  # fmt: skip
 
 
-def _dst_where_nothing(args, expected, got) -> bool:
-    """dst returned where both alphas are 0 (r24 D-5: ``if alpha == 0: return dst``)."""
-    dst, g = np.asarray(args[1], float), np.asarray(got, float).ravel()
-    return g.shape == (4,) and expected[3] == 0 and dst.any() and all_close(g, dst, 1e-6)
+def _where_nothing(which: int):
+    """``fits``: input ``which`` (0 src, 1 dst) returned unchanged where both alphas are 0
+    (r24 D-5: ``if alpha == 0: return dst``; r32 D9-1: ``return src`` there)."""
+
+    def fits(args, expected, got) -> bool:
+        given, g = np.asarray(args[which], float), np.asarray(got, float).ravel()
+        return g.shape == (4,) and expected[3] == 0 and given.any() and all_close(g, given, 1e-6)
+
+    return fits
+
+
+def _nothing_words(which: int):
+    """The words for :func:`_where_nothing`'s answer."""
+    name = ("src", "dst")[which]
+    return lambda a, e, g: (
+        f"both alphas are 0 and you returned {name} {vec(a[which])} unchanged: nothing covers "
+        "the pixel, so no colour shows there; the task gives the answer there, (0, 0, 0, 0)")  # fmt: skip
 
 
 #: r24 D-5: 9.2a's "α = 0 → dst" got "go back through the derivation's steps".
-DST_WHERE_NOTHING = Mistake(
-    "dst where nothing covers", lambda a, e, g: (
-        f"both alphas are 0 and you returned dst {vec(a[1])} unchanged: nothing covers the "
-        "pixel, so no colour shows there; the task gives the answer there, (0, 0, 0, 0)"),
-    fits=_dst_where_nothing)  # fmt: skip
+DST_WHERE_NOTHING = Mistake("dst where nothing covers", _nothing_words(1), fits=_where_nothing(1))
+#: r32 D9-1: "α = 0 → src" was told "you swapped the weights of over" (the swapped pair gives
+#: src there too). only_whole: a swapped pair fails other cases as well, and is named there.
+SRC_WHERE_NOTHING = Mistake("src where nothing covers", _nothing_words(0),
+                            fits=_where_nothing(0), only_whole=True)  # fmt: skip
 
 
 def _nan_at_zero(args, expected, got) -> bool:
@@ -304,8 +317,9 @@ STRAIGHT_STEP_WORDS = ("the package's blend is not counted as your work: write e
 
 
 def straight_mistakes() -> list[Mistake]:
-    """9.2a's mistakes (``over_straight``): the division by α = 0, a guard, the table's, the
-    weights swapped, then a wrong alpha (with the colour divided by it, or right)."""
+    """9.2a's mistakes (``over_straight``): the division by α = 0, a guard, an input returned
+    where both alphas are 0, the table's, the weights swapped, then a wrong alpha (with the
+    colour divided by it, or right)."""
     nan = Mistake("division by zero", "both alphas 0: nothing covers the pixel, so α·C is 0 "
                   "and dividing it by α = 0 has no answer; the task gives the answer there, "
                   "(0, 0, 0, 0): test α before you divide", fits=_nan_at_zero)  # fmt: skip
@@ -314,7 +328,8 @@ def straight_mistakes() -> list[Mistake]:
     # so a right colour with a wrong alpha fits it there; named only when it fits them all
     swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                       only_whole=True)  # fmt: skip
-    return [nan, FAINT_STRAIGHT, DST_WHERE_NOTHING, *table, swapped, *_divided_by_wrong_alpha(),
+    nothing = [DST_WHERE_NOTHING, SRC_WHERE_NOTHING]  # before the swap, which gives src there
+    return [nan, FAINT_STRAIGHT, *nothing, *table, swapped, *_divided_by_wrong_alpha(),
             *alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
 
 

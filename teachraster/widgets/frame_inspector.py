@@ -211,6 +211,37 @@ def _checked_frames(frames) -> dict | None:
     return dict(frames)
 
 
+def _picture(frame) -> np.ndarray:
+    """What the inspector draws of ``frame`` (its image, else its colour's RGB, NaN as 0),
+    or its ``triangle_id`` where it has neither (a frame drawn without a colour buffer)."""
+    shown = getattr(frame, "image", None)
+    if shown is None and frame.color is not None:
+        shown = frame.color[..., :3]
+    if shown is None:
+        return np.asarray(frame.triangle_id, float)[..., None]
+    return np.nan_to_num(np.clip(np.asarray(shown, float), 0, 1), nan=0.0).reshape(
+        *frame.triangle_id.shape, -1
+    )
+
+
+def changed_pixel(frame, pair, row: int, col: int) -> tuple[int, int]:
+    """(row, col) itself where the pictures of ``frame`` and ``pair`` differ there, else the
+    pixel nearest it where they differ (ties: the first in reading order), else (row, col):
+    where a frame opens beside its pair (review r32 D11-2: every frame opened at (24, 32),
+    where seven of exercise 11's nine pairs agree, and the two tables were the same). A
+    pixel kept where it differs lets a student carry a pixel from a frame to its look-alike;
+    the nearest one is one of many, no answer singled out."""
+    a, b = _picture(frame), _picture(pair)
+    if a.shape != b.shape:  # one with colour, one without: compare what each shows
+        a, b = (np.asarray(f.triangle_id, float)[..., None] for f in (frame, pair))
+    differs = ~np.isclose(a, b, atol=1e-6).all(axis=2)
+    if differs[row, col] or not differs.any():
+        return row, col
+    rows, cols = np.nonzero(differs)  # in reading order: argmin keeps the first tie
+    k = int(np.argmin((rows - row) ** 2 + (cols - col) ** 2))
+    return int(rows[k]), int(cols[k])
+
+
 #: The history table's font size, alone and with its pair's beside it: a projector's 12 px
 #: (the course's rule for text), the table narrow (:func:`history_table`, at most
 #: :data:`NARROW` characters a line) so that each fits a 592-px column (JupyterLab at
@@ -250,7 +281,8 @@ class FrameInspector(Holdable):
     view : str
         "image" or an overlay kind (:data:`VIEWS`).
     row, col : int
-        The pixel whose history is shown first.
+        The pixel whose history is shown first (by default the centre; with ``pairs``, the
+        pixel nearest it where the frame and its pair differ: :func:`changed_pixel`).
     samples : {1, 4}
     depth_test : bool
     glass : bool
@@ -264,7 +296,8 @@ class FrameInspector(Holdable):
         With ``frames``: each frame's pair (a broken frame and the one intended). A check box
         then shows the chosen pixel's history in the pair beside its history in the frame on
         show, as an engineer compares two captures in two RenderDoc windows (review r14,
-        exercise 11: the inspector showed one frame, the other was read from memory).
+        exercise 11: the inspector showed one frame, the other was read from memory). A frame
+        chosen in the list opens at a pixel where it and its pair differ (review r32).
     backend, style
         As for the other widgets.
 
@@ -332,6 +365,12 @@ class FrameInspector(Holdable):
                                      max=height - 1, description="row")  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
                                      max=width - 1, description="col")  # fmt: skip
+        if self.pairs and row is None and col is None:  # open where the pair differs
+            pair = self.frames[self.pairs[scene]] if scene in self.pairs else None
+            if pair is not None:
+                self.row.value, self.col.value = changed_pixel(
+                    self.frames[scene], pair, self.row.value, self.col.value
+                )
         self.beside = widgets.Checkbox(value=bool(self.pairs), description="its pair beside",
                                        indent=False, layout=widgets.Layout(width="auto"))  # fmt: skip
         self.table = widgets.HTML()
@@ -348,6 +387,8 @@ class FrameInspector(Holdable):
             self._draw_frame()
             self._draw_history()
             self._make_displays()
+        # first: the pixel moves where the pair differs, then the frame is drawn there
+        self.scene.observe(self._to_changed_pixel, "value")
         for control in (self.scene, self.samples, self.depth_test, self.glass):
             control.observe(self._rerender, "value")
             control.disabled = bool(self.frames) and control is not self.scene
@@ -550,6 +591,18 @@ class FrameInspector(Holdable):
         self._show_history()  # the quad overshading view adds the quad's triangles
         self._draw_frame()
         self._refresh_frame()
+
+    def _to_changed_pixel(self, change) -> None:
+        """A frame chosen beside its pair opens at a pixel where the two differ
+        (:func:`changed_pixel`); the pixel is set quietly, then :meth:`_rerender` (observing
+        the chooser after this) draws the frame, its marker and the history there."""
+        pair = self.pairs.get(self.scene.value)
+        if pair is None:
+            return
+        at = changed_pixel(self.frames[self.scene.value], self.frames[pair], self.row.value,
+                           self.col.value)  # fmt: skip
+        with self._holding():
+            self.row.value, self.col.value = at
 
     def _rerender(self, change) -> None:
         self._render()

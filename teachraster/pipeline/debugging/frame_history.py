@@ -711,11 +711,20 @@ def depth_ticks(lo: float, hi: float, most: int = 4) -> tuple[list, list]:
     return ticks, [f"{t:.{decimals}f}" for t in ticks]
 
 
+def _tick_range(bottom: float, top: float, lo: float, hi: float) -> tuple[float, float]:
+    """The part of the depth axis ``bottom`` … ``top`` that takes tick labels: where depths
+    ``lo`` … ``hi`` lie in [0, 1] (window depths always do), no tick outside it (review r32
+    D11-3: with room made above for the legend the axis ran to ~1.4, ticked 0.5 and 1.0, as
+    if a depth could be 1.4); the room stays, unlabelled."""
+    return (max(bottom, 0.0) if lo >= 0 else bottom), (min(top, 1.0) if hi <= 1 else top)
+
+
 def draw_history(ax, h: PixelHistory):
     """A strip of the pixel's records: each fragment a short tile at its depth (colour =
     outcome; a record without a fragment a cross at the foot), the buffer before (○) and
     after (●) each. The depth axis spans the depths there are, so tiles mark depths, never
-    lengths; its ticks are written out (no offset). Uses only the Axes' own methods, so the
+    lengths; its ticks are written out (no offset), and none lies outside [0, 1] where the
+    depths are in it (the room above for the legend may reach past 1, unlabelled). Uses only the Axes' own methods, so the
     engine needs no plotting import. Returns the artists."""
     artists = []
     n = len(h.records)
@@ -757,7 +766,7 @@ def draw_history(ax, h: PixelHistory):
     artists += buffer
     if any(np.isfinite(line.get_ydata()).any() for line in buffer):  # (writes off: none)
         shown += [(buffer[0], "buffer before"), (buffer[1], "buffer after")]  # ○ and ●
-    ax.set_yticks(*depth_ticks(bottom, top))
+    ax.set_yticks(*depth_ticks(*_tick_range(bottom, top, lo, hi)))
     ax.set_xticks(x, _record_labels(h), fontsize="small")
     ax.set_xlim(-0.6, max(n, 1) - 0.4)
     ax.set_xlabel("triangle and sample" if h.n_samples > 1 else "triangle, in drawing order")
@@ -780,7 +789,7 @@ def draw_history(ax, h: PixelHistory):
                 artists.remove(artist)
             top = needed
             ax.set_ylim(bottom, top)
-            ax.set_yticks(*depth_ticks(bottom, top))
+            ax.set_yticks(*depth_ticks(*_tick_range(bottom, top, lo, hi)))
             artists += _draw_colours(ax, h, x, (bottom, top))
     return artists
 
