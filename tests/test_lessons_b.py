@@ -441,6 +441,22 @@ def test_every_printed_line_fits_a_column(name):
                 assert len(line) <= 80, line
 
 
+def test_11_prints_its_own_lines_in_a_column():
+    """Issue 29: lesson 11's own lines (the sphere's Hi-Z counts, the llvmpipe comparison, the
+    glass sphere) fit 80 characters; they ran to 141. The pixel-history tables are left out:
+    ``print(h)`` is the wide table whose columns the lesson describes (the inspector shows the
+    narrow one); a table runs from its "pixel (row" line to the next blank line."""
+    from notebook_runs import executed
+
+    for cell in executed("11_debugging_a_frame").notebook().cells:
+        outs = cell.outputs if cell.cell_type == "code" else []
+        text = "".join(o.get("text", "") for o in outs if o.output_type == "stream")
+        in_table = False
+        for line in text.splitlines():
+            in_table = line.startswith("pixel (row ") or (in_table and line != "")
+            assert in_table or len(line) <= 80, line
+
+
 # -- 07 hard cases ---------------------------------------------------------------------------
 def test_07_the_catalogue_still_passes():
     ns = lesson("07_hard_cases")
