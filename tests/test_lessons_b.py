@@ -419,19 +419,42 @@ def test_06_review_r23_tables_fit_and_wording():
 
 @pytest.mark.parametrize(
     "name",
-    ["05a_zbuffer", "05b_depth_precision", "06_what_accuracy_costs", "09_texture_filtering"],
+    [
+        "05a_zbuffer",
+        "05b_depth_precision",
+        "06_what_accuracy_costs",
+        "09_texture_filtering",
+        "10_tiles_and_hierarchical_z",
+    ],
 )
 def test_every_printed_line_fits_a_column(name):
     """Review r24 06-2, 06-3: not only the tables, every line the lesson prints fits a
     notebook column (80 characters); the fronts, the drift and the set-up ran to 208. Issue 29:
     05a and 05b too (05a's drawing orders ran to 134, 05b's lines to 120), so they do not wrap
-    or scroll on a projector; 09 too (its derivative table and plans ran to 331)."""
+    or scroll on a projector; 09 too (its derivative table and plans ran to 331); 10 too (its
+    block counters, captions, timings and Hi-Z counts ran to 151)."""
     from notebook_runs import executed
 
     for cell in executed(name).notebook().cells:
         for out in cell.outputs if cell.cell_type == "code" else []:
             for line in out.get("text", "").splitlines() if out.output_type == "stream" else []:
                 assert len(line) <= 80, line
+
+
+def test_11_prints_its_own_lines_in_a_column():
+    """Issue 29: lesson 11's own lines (the sphere's Hi-Z counts, the llvmpipe comparison, the
+    glass sphere) fit 80 characters; they ran to 141. The pixel-history tables are left out:
+    ``print(h)`` is the wide table whose columns the lesson describes (the inspector shows the
+    narrow one); a table runs from its "pixel (row" line to the next blank line."""
+    from notebook_runs import executed
+
+    for cell in executed("11_debugging_a_frame").notebook().cells:
+        outs = cell.outputs if cell.cell_type == "code" else []
+        text = "".join(o.get("text", "") for o in outs if o.output_type == "stream")
+        in_table = False
+        for line in text.splitlines():
+            in_table = line.startswith("pixel (row ") or (in_table and line != "")
+            assert in_table or len(line) <= 80, line
 
 
 # -- 07 hard cases ---------------------------------------------------------------------------
