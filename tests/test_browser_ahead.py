@@ -19,6 +19,25 @@ from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_saved import _run_all
 
+#: A pointer dragging ``.{css} input[type=range]`` from 41 to 70, a value per animation frame,
+#: released there (the page's own drag path: pointerdown, input events, change).
+DRAG_41_TO_70 = """async (css) => {
+    const r = document.querySelector(`.${css} input[type=range]`);
+    r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
+    for (let v = 41; v <= 70; v++) {
+        await new Promise(requestAnimationFrame);
+        r.value = String(v);
+        r.dispatchEvent(new Event('input', { bubbles: true }));
+    }
+    r.dispatchEvent(new Event('change', { bubbles: true }));
+}"""
+
+
+def drag_range(tab, css: str) -> None:
+    """Drag the range input of the widget with class ``css`` from 41 to 70 and release."""
+    tab.evaluate(DRAG_41_TO_70, css)
+
+
 pytestmark = [
     pytest.mark.browser,
     pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
@@ -74,16 +93,7 @@ def test_pictures_drawn_ahead_are_shown_at_once_and_are_the_kernels(lab, page): 
     viewer.scroll_into_view_if_needed()
     sent = "() => (document.querySelector('.t-viewer input[type=range]').kernelMs || []).length"
     before, frames = page.evaluate(sent), page.evaluate(FRAMES, "t-viewer")
-    page.evaluate("""async () => {
-        const r = document.querySelector('.t-viewer input[type=range]');
-        r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
-        for (let v = 41; v <= 70; v++) {
-            await new Promise(requestAnimationFrame);
-            r.value = String(v);
-            r.dispatchEvent(new Event('input', { bubbles: true }));
-        }
-        r.dispatchEvent(new Event('change', { bubbles: true }));
-    }""")
+    drag_range(page, "t-viewer")
     page.wait_for_function(f"() => ({sent})() >= {before + 1}", timeout=30_000)
     assert page.evaluate(sent) == before + 1  # the release, nothing else
     assert page.evaluate(FRAMES, "t-viewer") >= frames + 20  # pictures changed all the way

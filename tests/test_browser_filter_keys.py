@@ -18,7 +18,7 @@ from __future__ import annotations
 import pytest
 from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
-from test_browser_ahead import ALL_AHEAD, FRAMES, SHOWN_B64
+from test_browser_ahead import ALL_AHEAD, FRAMES, SHOWN_B64, drag_range
 from test_browser_saved import _run_all
 
 pytestmark = [
@@ -124,16 +124,7 @@ def test_a_drag_ends_on_the_full_picture_drawn_ahead_and_the_kernel_sends_none(l
     # drag.js sets data-kernel-ms at every picture from the kernel: marked, to see none come
     page.evaluate("() => { document.querySelector('.t-fdrag .tr-drag img').dataset.kernelMs"
                   " = 'none'; }")  # fmt: skip
-    page.evaluate("""async () => {
-        const r = document.querySelector('.t-fdrag input[type=range]');
-        r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
-        for (let v = 41; v <= 70; v++) {
-            await new Promise(requestAnimationFrame);
-            r.value = String(v);
-            r.dispatchEvent(new Event('input', { bubbles: true }));
-        }
-        r.dispatchEvent(new Event('change', { bubbles: true }));
-    }""")
+    drag_range(page, "t-fdrag")
     page.wait_for_function(f"() => ({sent})() >= {before + 1}", timeout=30_000)
     time.sleep(1.0)  # anything still on its way has landed
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
