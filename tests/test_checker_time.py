@@ -19,6 +19,7 @@ from endless_loops import COMPUTING, WAITING, forever, recursion_catching_everyt
 from exercise_solutions import CORRECT
 
 from teachraster import exercises as ex
+from teachraster.exercises import running
 from teachraster.exercises.running import BUDGET_VARIABLE
 
 BUDGET = 1.0
@@ -97,7 +98,14 @@ def test_a_loop_on_a_later_case_keeps_the_failures_before_it():
     assert report.n_run < report.n_cases
 
 
-def test_a_slow_function_runs_out_of_the_cpu_budget_and_says_so():
+def test_a_slow_function_runs_out_of_the_cpu_budget_and_says_so(monkeypatch):
+    # The wall-clock limits are for machines too busy to compute; this test is about the CPU
+    # budget alone, so they are set far out: on a loaded CI machine the 1 s budget's 10 s of
+    # wall clock, or a case's 1 s "it waits" limit, were passed first (kinds "budget" with
+    # "too busy", and "timeout")
+    monkeypatch.setattr(running, "WALL_FACTOR", 1000.0)
+    monkeypatch.setattr(running, "WAIT_FACTOR", 1000.0)
+
     def slow(incoming, stored):
         burn(0.06)
         return incoming < stored

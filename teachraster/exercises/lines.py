@@ -97,12 +97,16 @@ def diamond_pixels(p0, p1, *, eps=(-EPS, -EPS * EPS), end=False, order="row col"
                    closed=False, start=False, half=0.5, centre=0.5, inside=True):  # fmt: skip
     """The diamond-exit rule with knobs: the perturbation ``eps`` added to both end points;
     ``end=True`` also lights the pixel whose diamond holds p1, ``end="unmoved"`` tests that
-    diamond with p1 before it was moved (``"unmoved closed"``: and its boundary counted in); ``closed=True`` counts the diamond's boundary in;
+    diamond with p1 before it was moved (``"unmoved closed"``: and its boundary counted in;
+    ``"p1 never moved"``: p1 is not moved for the segment either); ``closed=True`` counts the
+    diamond's boundary in;
     ``start=True`` leaves the diamond that holds (the moved) p0 dark; ``order="col row"``
     gives pairs the other way round; ``half`` is the diamond's radius and ``centre`` where it
     sits in its pixel (½: the centre); ``inside=False`` keeps pixels left of or above the
     image (column or row −1)."""
     a, b = np.asarray(p0, float) + eps, np.asarray(p1, float) + eps
+    if end == "p1 never moved":
+        b = np.asarray(p1, float)
     lo, hi = np.floor(np.minimum(a, b)) - 1, np.floor(np.maximum(a, b)) + 2
     # no clip at the window's far side: a student's too-large diamond reaches past it
     first = np.maximum(lo, 0) if inside else lo
@@ -318,6 +322,14 @@ def _end_unmoved(a, e, g):
             "another diamond, or in none)")  # fmt: skip
 
 
+def _p1_never_moved(a, e, g):
+    # the fixed cases cannot tell this from the slip above; a random segment ending on a
+    # diamond's corner can (test_p1_never_moved_is_not_told_it_was_moved_for_the_segment)
+    return (f"you tested which diamond p1 = {a[1]} lies in with p1 unmoved, and ended the "
+            "segment at the unmoved p1 too: the rule moves p1 by (−ε, −ε²), as it moves p0, "
+            "for the segment and for that test")  # fmt: skip
+
+
 def _end_unmoved_closed(a, e, g):
     return (f"you tested which diamond p1 = {a[1]} lies in with p1 unmoved, and counted the "
             "diamond's boundary in (≤ ½): the rule moves p1 by (−ε, −ε²) for that test too, "
@@ -335,7 +347,8 @@ LINE_KNOBS = Knobs(diamond_pixels, {
     "end": [Slip("end pixel lit", _end_lit, True),
             Slip("end tested before moving", _end_unmoved, "unmoved"),
             # r11 09-F: with the boundary counted in as well, the rule was restated
-            Slip("end tested before moving, closed", _end_unmoved_closed, "unmoved closed")],
+            Slip("end tested before moving, closed", _end_unmoved_closed, "unmoved closed"),
+            Slip("end tested before moving, p1 never moved", _p1_never_moved, "p1 never moved")],
     "order": [Slip("(col, row) order", "your pairs are (col, row): return (row, col), the row "
                    "first, as an image is indexed [row, col]", "col row")],
     "closed": [Slip("closed diamond", "your diamond includes its boundary (|dx| + |dy| ≤ ½); "
