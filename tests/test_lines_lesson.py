@@ -41,6 +41,23 @@ def test_diamond_rule_and_its_tie(ns):
     assert ns.setup == 2 and "column 0" in ns.bres.trace.caption(ns.setup)
 
 
+def test_tie_question_has_one_defensible_answer(ns):
+    # reviews r31 12a-7 / r34: "both" and "neither" are gone (cell 2 excludes them); each option
+    # gives a reason, and only the shift by ε (not the ε² in y) decides a sloped line's tie
+    assert ns.tie_row == 1 and len(ns.tie_choices) == 3 and ns.by_shift[1] in ns.tie_choices
+    assert ns.by_shift[0] in ns.tie_choices and "below the corner" in ns.by_shift[ns.tie_row]
+    assert not any(word in " ".join(ns.tie_choices) for word in ("both", "neither"))
+
+
+def test_polyline_lights_its_shared_vertex_once(ns):
+    # review r34 12a-9: two segments sharing a1 (a pixel centre), both x-major, the same way:
+    # the first leaves a1's pixel to the second, nothing is lit twice and nothing is missing
+    assert ns.shared == (2, 5) and not ns.first[ns.shared] and ns.second[ns.shared]
+    assert ns.both == [] and (ns.first | ns.second).sum() == ns.first.sum() + ns.second.sum()
+    cols = np.argwhere(ns.first | ns.second)[:, 1]
+    assert sorted(cols.tolist()) == list(range(11))  # one pixel per column, none missing
+
+
 def test_bresenham_differs_and_dda_drifts(ns):
     assert len(ns.differ) > 0
     # "this one, like the diamond rule, stops before p1's pixel": the textbook loop draws one more
