@@ -97,9 +97,32 @@ def test_srgb_resolve_strip_is_darker_when_codes_are_averaged(nsb):
     assert partial.sum() > 10
     linear, codes = ns.srgb_resolved.values()
     assert (codes[partial] < linear[partial]).all()
-    assert round(ns.half_light, 2) == 0.21
-    # review r27 12-4: both cells say "21% of white's light, 43% of the 50% it should"
-    assert ns.encoded_light == ns.half_light and round(ns.half_light / 0.5, 2) == 0.43
+    # review r27 12-4: "21% of white's light, 43% of the 50% it should", said once (review r34
+    # 12b-5: the edge cell no longer repeats it, it prints the edge's own mean code and light)
+    assert round(ns.encoded_light, 2) == 0.21 and round(ns.encoded_light / 0.5, 2) == 0.43
+    assert "half_light" not in vars(ns)
+    assert np.array_equal(ns.partial, partial)
+    from teachraster import srgb_to_linear
+
+    light = {name: srgb_to_linear(c[partial]).mean() for name, c in ns.srgb_resolved.items()}
+    assert light["sRGB codes averaged"] < light["linear light, then encoded"]
+
+
+def test_blend_func_separate_and_depth_peeling(nsb):
+    import teachraster as tr
+
+    ns = nsb
+    # review r34 12b-8: glBlendFuncSeparate's result printed: the colour of "over", alpha 1
+    # "the premultiplied line above gets the same result with one pair"
+    premultiplied = tr.blend_equation(ns.red * [0.5, 0.5, 0.5, 1], ns.blue, "ONE",
+                                      "ONE_MINUS_SRC_ALPHA")  # fmt: skip
+    assert np.allclose(ns.separate, [0.5, 0, 0.5, 1]) and np.allclose(ns.separate, premultiplied)
+    # review r34 12b (depth peeling run): exact on both scenes, one pass per layer; the three
+    # triangles' passes find the pixels under at least 1, 2, 3 of them (cell 6's counts)
+    assert max(ns.peel_errors) < 1e-12
+    assert len(ns.cross_passes) == 2 and ns.cross_passes[1] == int(ns.two.sum())
+    n = ns.n_layers
+    assert ns.three_passes == [n[1] + n[2] + n[3], n[2] + n[3], n[3]]
 
 
 def test_blending_points(nsb):
