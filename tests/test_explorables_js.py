@@ -693,3 +693,18 @@ def test_every_explorables_module_loads_as_shipped():
             done = subprocess.run([NODE, "--input-type=module", "-e", f"await import({json.dumps(path.as_uri())})"],
                                   capture_output=True, text=True, timeout=120)  # fmt: skip
             assert done.returncode == 0, done.stderr[-2000:]
+
+
+def test_end_point_labels_keep_clear_of_the_tie_marks():
+    """Reviews r31/r34 12a: "p1 on a pixel centre" covered a "tie" mark. A label whose first
+    place (right of and above the point) covers a mark goes to the next place that covers none."""
+    mark = [105, 76, 30, 16]  # a "tie" where the label would go, right of and above (100, 100)
+    free, moved, boxed_in = call_js(LINES, [("labelAt", [100, 100, 60, 400, [], 15]),
+                                            ("labelAt", [100, 100, 60, 400, [mark], 15]),
+                                            ("labelAt", [100, 100, 60, 400, [[0, 0, 400, 400]],
+                                                         15])])  # fmt: skip
+    assert free == [109, 91] and boxed_in == [109, 91]  # nowhere clear: the first place
+    lx, ly = moved
+    assert [lx, ly] != [109, 91]
+    bx, by, bw, bh = mark
+    assert lx + 60 < bx or bx + bw < lx or ly < by or by + bh < ly - 15

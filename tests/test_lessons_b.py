@@ -425,6 +425,8 @@ def test_06_review_r23_tables_fit_and_wording():
         "06_what_accuracy_costs",
         "09_texture_filtering",
         "10_tiles_and_hierarchical_z",
+        "12a_lines",
+        "12b_blending",
     ],
 )
 def test_every_printed_line_fits_a_column(name):

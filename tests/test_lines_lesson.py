@@ -41,6 +41,23 @@ def test_diamond_rule_and_its_tie(ns):
     assert ns.setup == 2 and "column 0" in ns.bres.trace.caption(ns.setup)
 
 
+def test_tie_question_has_one_defensible_answer(ns):
+    # reviews r31 12a-7 / r34: "both" and "neither" are gone (cell 2 excludes them); each option
+    # gives a reason, and only the shift by ε (not the ε² in y) decides a sloped line's tie
+    assert ns.tie_row == 1 and len(ns.tie_choices) == 3 and ns.by_shift[1] in ns.tie_choices
+    assert ns.by_shift[0] in ns.tie_choices and "below the corner" in ns.by_shift[ns.tie_row]
+    assert not any(word in " ".join(ns.tie_choices) for word in ("both", "neither"))
+
+
+def test_polyline_lights_its_shared_vertex_once(ns):
+    # review r34 12a-9: two segments sharing a1 (a pixel centre), both x-major, the same way:
+    # the first leaves a1's pixel to the second, nothing is lit twice and nothing is missing
+    assert ns.shared == (2, 5) and not ns.first[ns.shared] and ns.second[ns.shared]
+    assert ns.both == [] and (ns.first | ns.second).sum() == ns.first.sum() + ns.second.sum()
+    cols = np.argwhere(ns.first | ns.second)[:, 1]
+    assert sorted(cols.tolist()) == list(range(11))  # one pixel per column, none missing
+
+
 def test_bresenham_differs_and_dda_drifts(ns):
     assert len(ns.differ) > 0
     # "this one, like the diamond rule, stops before p1's pixel": the textbook loop draws one more
@@ -80,9 +97,32 @@ def test_srgb_resolve_strip_is_darker_when_codes_are_averaged(nsb):
     assert partial.sum() > 10
     linear, codes = ns.srgb_resolved.values()
     assert (codes[partial] < linear[partial]).all()
-    assert round(ns.half_light, 2) == 0.21
-    # review r27 12-4: both cells say "21% of white's light, 43% of the 50% it should"
-    assert ns.encoded_light == ns.half_light and round(ns.half_light / 0.5, 2) == 0.43
+    # review r27 12-4: "21% of white's light, 43% of the 50% it should", said once (review r34
+    # 12b-5: the edge cell no longer repeats it, it prints the edge's own mean code and light)
+    assert round(ns.encoded_light, 2) == 0.21 and round(ns.encoded_light / 0.5, 2) == 0.43
+    assert "half_light" not in vars(ns)
+    assert np.array_equal(ns.partial, partial)
+    from teachraster import srgb_to_linear
+
+    light = {name: srgb_to_linear(c[partial]).mean() for name, c in ns.srgb_resolved.items()}
+    assert light["sRGB codes averaged"] < light["linear light, then encoded"]
+
+
+def test_blend_func_separate_and_depth_peeling(nsb):
+    import teachraster as tr
+
+    ns = nsb
+    # review r34 12b-8: glBlendFuncSeparate's result printed: the colour of "over", alpha 1
+    # "the premultiplied line above gets the same result with one pair"
+    premultiplied = tr.blend_equation(ns.red * [0.5, 0.5, 0.5, 1], ns.blue, "ONE",
+                                      "ONE_MINUS_SRC_ALPHA")  # fmt: skip
+    assert np.allclose(ns.separate, [0.5, 0, 0.5, 1]) and np.allclose(ns.separate, premultiplied)
+    # review r34 12b (depth peeling run): exact on both scenes, one pass per layer; the three
+    # triangles' passes find the pixels under at least 1, 2, 3 of them (cell 6's counts)
+    assert max(ns.peel_errors) < 1e-12
+    assert len(ns.cross_passes) == 2 and ns.cross_passes[1] == int(ns.two.sum())
+    n = ns.n_layers
+    assert ns.three_passes == [n[1] + n[2] + n[3], n[2] + n[3], n[3]]
 
 
 def test_blending_points(nsb):

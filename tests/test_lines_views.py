@@ -236,3 +236,17 @@ def test_line_player_first_picture_keeps_its_labels_inside():
         assert (first[:2] < 128).sum() == 0 and (first[-2:] < 128).sum() == 0  # no cut text
     finally:
         player.close()
+
+
+def test_blending_explorer_says_its_background_is_transparent_black():
+    """Review r34 12b: the explorer draws on black with no word of it in the widget; its caption
+    says the buffer is cleared to transparent black, and that is what the panels show."""
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24))
+    try:
+        assert "cleared to transparent black (0, 0, 0, 0)" in ex.widget.children[0].value
+        empty = ex.color[0, 0]  # a corner no triangle covers
+        assert np.array_equal(empty, [0, 0, 0, 0])
+    finally:
+        ex.close()

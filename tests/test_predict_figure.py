@@ -247,3 +247,16 @@ def test_the_answers_label_keeps_clear_of_the_readout():
         assert not overlap(box, cross), (mine, box)
         assert 0 <= box["y0"] and box["y1"] <= height
     assert places[-1]["align"] == "right"  # by the right edge the readout turns left
+
+
+def test_the_revealed_pixels_have_a_key_and_missed_ones_are_not_orange():
+    # reviews r31/r34 12a: missed pixels were dashed orange, the hue of the lesson's diamonds;
+    # now purple, and a legend under the verdict says which outline is which
+    from pathlib import Path
+
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    assert "OKABE.orange" not in js.split("function mountPixels")[-1].split("function reveal")[0]
+    (legend,) = call_js(("predict_figure",), [("pixelLegend", [])])
+    for words in ("yours, and right", "missed", "marked, not among them"):
+        assert words in legend
+    assert "#CC79A7" in legend and "#E69F00" not in legend

@@ -130,9 +130,10 @@ class BlendingExplorer(Shown):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, premultiplied alpha, sRGB",
-            "Move a triangle earlier or later: 'over' depends on the order. The panels show "
-            "the colours written, as displayed; tick 'stored alpha' to see alpha as a "
-            "checkerboard.",
+            "Move a triangle earlier or later: 'over' depends on the order. The buffer is "
+            "cleared to transparent black (0, 0, 0, 0), so the background shows black (not "
+            "the white of the lesson's figures). The panels show the colours written, as "
+            "displayed; tick 'stored alpha' to see alpha as a checkerboard.",
         )
         column = dict(flex="0 0 auto", margin="0 12px 0 0")
         buttons = widgets.VBox([self.earlier, self.later, self.sort],

@@ -179,7 +179,12 @@ function mount(el, data, host) {
       const current = state.step >= 0 && k === state.step;
       for (const c of s.cands) drawDiamond(ctx, c, toPx, cell, current);
     });
-    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped);
+    // the "tie" marks go on top of the line, and the end points' labels keep clear of them
+    // (reviews r31, r34: "p1 on a pixel centre" covered a tie, the line crossed one)
+    const ties = shown.flatMap((s) => s.cands.filter((c) => c.tie && c.state !== MISSED));
+    const boxes = ties.map((c) => tieBox(ctx, c, toPx, cell));
+    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped, boxes);
+    drawTies(ctx, boxes);
     const lit = walk.steps.reduce((n, s) => n + s.cands.filter((c) => c.state === LIT).length, 0);
     count.textContent = `${lit} pixel${lit === 1 ? "" : "s"} lit, ${walk.steps.length} ` +
       `${walk.xMajor ? "columns" : "rows"} walked (${walk.xMajor ? "x" : "y"}-major)`;
@@ -278,11 +283,6 @@ function drawDiamond(ctx, c, toPx, cell, current) {
   if (c.state === ENDS_INSIDE) ctx.setLineDash([5, 3]);
   ctx.stroke();
   ctx.setLineDash([]);
-  if (c.tie && c.state !== MISSED) {
-    ctx.fillStyle = OKABE.vermillion;
-    ctx.font = `bold ${Math.max(textPx(ctx, 12), Math.round(cell * 0.28))}px sans-serif`;
-    ctx.fillText("tie", x + 3, y + cell * 0.28);
-  }
   if (current) {
     ctx.strokeStyle = OKABE.vermillion;
     ctx.lineWidth = 2;
@@ -290,7 +290,33 @@ function drawDiamond(ctx, c, toPx, cell, current) {
   }
 }
 
-function drawSegment(ctx, p, q, snapped) {
+// Where a tie's mark goes: the word "tie" in the top-left corner of the pixel's square, as
+// [x, y, w, h] (top-left of the text, its size) and the font that draws it.
+function tieBox(ctx, c, toPx, cell) {
+  const [x, y] = toPx([c.col, c.row]);
+  const size = Math.max(textPx(ctx, 12), Math.round(cell * 0.28));
+  ctx.font = `bold ${size}px sans-serif`;
+  return [x + 3, y + 2, ctx.measureText("tie").width, size, ctx.font];
+}
+
+function drawTies(ctx, boxes) {
+  for (const [x, y, , h, font] of boxes) {
+    ctx.font = font;
+    haloText(ctx, "tie", x, y + h - 2, OKABE.vermillion);
+  }
+}
+
+// Text with a white halo, readable where it crosses the line and the diamonds.
+function haloText(ctx, text, x, y, colour) {
+  ctx.lineWidth = 4;
+  ctx.lineJoin = "round";
+  ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
+  ctx.strokeText(text, x, y);
+  ctx.fillStyle = colour;
+  ctx.fillText(text, x, y);
+}
+
+function drawSegment(ctx, p, q, snapped, avoid = []) {
   ctx.strokeStyle = "#000";
   ctx.lineWidth = 2.5;
   ctx.beginPath();
@@ -302,24 +328,25 @@ function drawSegment(ctx, p, q, snapped) {
     ctx.beginPath();
     ctx.arc(e[0], e[1], 7, 0, 2 * Math.PI);
     ctx.fill();
-    ctx.fillStyle = "#111";
-    ctx.font = `bold ${textPx(ctx, 15)}px sans-serif`;
+    const size = textPx(ctx, 15);
+    ctx.font = `bold ${size}px sans-serif`;
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
-    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide);
+    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size);
     // a white halo: the label crosses the line and the diamonds beside the end point
-    ctx.lineWidth = 4;
-    ctx.lineJoin = "round";
-    ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
-    ctx.strokeText(text, x, y);
-    ctx.fillText(text, x, y);
+    haloText(ctx, text, x, y, "#111");
   });
 }
 
-// Where an end point's label goes: right of and above the point, or left of it where the
-// text would run past the canvas's right border (p1 in the last column), below it at the top.
-export function labelAt(x, y, textWidth, canvasWidth) {
-  const lx = x + 9 + textWidth <= canvasWidth - 2 ? x + 9 : Math.max(2, x - 9 - textWidth);
-  const ly = y - 9 >= 15 ? y - 9 : y + 22;
-  return [lx, ly];
+// Where an end point's label goes (its text's left end and baseline): right of and above the
+// point, else left of it (p1 in the last column), else below it (at the top border); of those
+// that stay inside the canvas, the first that covers none of the boxes `avoid` ([x, y, w, h]:
+// the "tie" marks), or the first inside if every one covers a mark.
+export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15) {
+  const left = Math.max(2, x - 9 - textWidth);
+  const spots = [[x + 9, y - 9], [left, y - 9], [x + 9, y + 22], [left, y + 22]];
+  const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 && ly >= 15);
+  const clear = ([lx, ly]) => avoid.every(([bx, by, bw, bh]) =>
+    lx + textWidth < bx || bx + bw < lx || ly < by || by + bh < ly - size);
+  return inside.find(clear) || inside[0] || [left, y + 22];
 }

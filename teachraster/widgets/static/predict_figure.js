@@ -28,6 +28,17 @@ export function pixelVerdict(answer, given, width) {
     correct: right === truth.size && mine.size === truth.size };
 }
 
+// The key to the revealed answer, in the colours the figure draws it in (a legend under the
+// verdict: the outlines alone do not say which is which on a projector, review r31/r34)
+export function pixelLegend() {
+  const box = (style) => `<span style="display:inline-block;width:14px;height:14px;` +
+    `vertical-align:middle;margin:0 4px 0 10px;box-sizing:border-box;${style}"></span>`;
+  return `<br>${box(`border:3px solid ${OKABE.green}`)}yours, and right` +
+    `${box(`border:3px dashed ${OKABE.purple}`)}missed` +
+    `${box(`background:rgba(0,114,178,0.45);border:2px solid ${OKABE.vermillion}`)}` +
+    `marked, not among them (crossed)`;
+}
+
 export function pointVerdict(answer, given, tolerance) {
   const gap = Math.hypot(given[0] - answer[0], given[1] - answer[1]);
   return { gap, correct: gap <= tolerance };
@@ -204,7 +215,8 @@ function mountPixels(root, data, host) {
       ctx.lineWidth = 3;
       for (const [r, c] of data.answer) {
         const [x, y, w, h] = cell(r, c);
-        ctx.strokeStyle = has(r, c) ? "#009E73" : OKABE.orange;
+        // missed: purple, not the orange the lessons draw their diamonds and markers in
+        ctx.strokeStyle = has(r, c) ? OKABE.green : OKABE.purple;
         ctx.setLineDash(has(r, c) ? [] : [5, 3]);
         ctx.strokeRect(x + 2.5, y + 2.5, w - 5, h - 5);
       }
@@ -232,8 +244,7 @@ function mountPixels(root, data, host) {
     const v = pixelVerdict(data.answer, state.given, W);
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
       `${v.right} right, ${v.extra} too many, ${v.missed} missed. The answer: <b>${v.total}</b> ` +
-      `${cells(v.total)} ${picked}, outlined green where you had them, dashed orange where you ` +
-      `missed them; crossed: the ones you marked that are not among them.`);
+      `${cells(v.total)} ${picked}.` + pixelLegend());
     revealOnFigure(host, canvas, paint, state.given, byClick);
   }
 
