@@ -44,6 +44,13 @@ def test_lesson_08_shows_what_it_says(ns):
     assert err["standard16"] < err["standard4"] < err["standard1"]
 
 
+def test_lesson_08_pattern_rows_figure(ns):
+    # §7: the 8-sample rows are centred in strips of 1/8 (1/16 … 15/16), the 16-sample rows
+    # start at the pixel's top edge (0, 1/16 … 15/16), as its text and the figure's titles say
+    assert np.allclose(ns.pattern_rows[8], (2 * np.arange(8) + 1) / 16)
+    assert np.allclose(ns.pattern_rows[16], np.arange(16) / 16)
+
+
 def test_lesson_08_inspector_reads_sixteen_samples(ns):
     # the lesson's inspector, driven as a student would (the lesson no longer does it)
     from teachraster.widgets import PixelInspector

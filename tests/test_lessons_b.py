@@ -423,6 +423,7 @@ def test_06_review_r23_tables_fit_and_wording():
         "05a_zbuffer",
         "05b_depth_precision",
         "06_what_accuracy_costs",
+        "08_antialiasing",
         "09_texture_filtering",
         "10_tiles_and_hierarchical_z",
         "12a_lines",
@@ -434,7 +435,8 @@ def test_every_printed_line_fits_a_column(name):
     notebook column (80 characters); the fronts, the drift and the set-up ran to 208. Issue 29:
     05a and 05b too (05a's drawing orders ran to 134, 05b's lines to 120), so they do not wrap
     or scroll on a projector; 09 too (its derivative table and plans ran to 331); 10 too (its
-    block counters, captions, timings and Hi-Z counts ran to 151)."""
+    block counters, captions, timings and Hi-Z counts ran to 151); 08 too (its plan, slopes
+    and error tables ran to 333)."""
     from notebook_runs import executed
 
     for cell in executed(name).notebook().cells:

@@ -588,6 +588,7 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
                 box = (x + ox - w / 2, y + oy - h / 2, x + ox + w / 2, y + oy + h / 2)
                 inside = box[0] >= x_lo and box[2] <= x_hi and box[1] >= y_lo and box[3] <= y_hi
                 hits = sum(_overlap(box, b) for b in blocked) + (0 if inside else 10)
+                hits += _nearer_dot(pts, s, x + ox, y + oy)
                 on_line = Bbox.from_extents(*(np.array(box) * to_px))
                 hits += sum(p.intersects_bbox(on_line, filled=False) for p in paths)
                 if best_hits is None or hits < best_hits:
@@ -606,6 +607,20 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
 
 #: Points kept between two sample numbers' boxes (and a number and a dot or the pixel's side).
 NUMBER_GAP = 3.0
+
+
+def _nearer_dot(pts, s: int, x: float, y: float) -> int:
+    """1 when a number's centre at ``x``, ``y`` (points) lies nearer another dot of ``pts``
+    than its own dot ``s`` (within :data:`OWN_DOT_MARGIN`), else 0: a number read with the
+    wrong dot. With 16 random samples "12" stood between three dots, and "10 12" read as a
+    pair (review r35, lesson 08 item 6)."""
+    d = np.hypot(pts[:, 0] - x, pts[:, 1] - y)
+    others = np.delete(d, s)
+    return int(others.size > 0 and others.min() < OWN_DOT_MARGIN * d[s])
+
+
+#: A number's own dot must be this much nearer than any other (see :func:`_nearer_dot`).
+OWN_DOT_MARGIN = 1.25
 
 
 def _overlap(a, b) -> bool:
