@@ -471,6 +471,51 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert ns.image[r_w, c_w] == pytest.approx(ns.subdivided[16]["error"])  # the last drawn
 
 
+def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
+    """Review r37 06-3: the three new questions, built from their own cells as a student's
+    kernel builds them: Check is disabled until an answer is given; the right answer is
+    accepted, the slips the tolerance is set against are not; the answer is kept after Check."""
+    import json
+
+    import teachraster as tr
+    from teachraster.core import fixed_point
+    from teachraster.study import bench
+    from teachraster.study import operation_counts as ops
+    from teachraster.widgets import Predict
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    ns = lesson("06_what_accuracy_costs")
+    by_name = {(r["group"], r["variant"]): r for r in ns.rows}
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+
+    def answered(q, value):
+        assert q.check.disabled  # nothing given yet: Check waits
+        q.control.value = value
+        assert not q.check.disabled
+        q.check.click()
+        return q.correct
+
+    cases = {
+        "q_bits": (["50", "49"], [str(2 * ns.gpu.delta_bits), "32"]),
+        "q_fill": (
+            [f"{ns.fill_answer:.1f}"],
+            [f"{ns.fill_no_box:.1f}", f"{ns.fill_no_divides:.1f}"],
+        ),
+        "q_depth": ([ns.depth_choices[1]], [ns.depth_choices[0], ns.depth_choices[2]]),
+    }
+    for name, (right, wrong) in cases.items():
+        src = next(
+            "".join(c["source"]) for c in nb["cells"] if f"{name} = Predict" in "".join(c["source"])
+        )
+        for value, verdict in [(v, True) for v in right] + [(v, False) for v in wrong]:
+            scope = dict(tr=tr, bench=bench, ops=ops, fixed_point=fixed_point, Predict=Predict,
+                         row=lambda g, v: by_name[(g, v)])  # fmt: skip
+            exec(src, scope)  # the question cell, as the lesson runs it
+            q = scope[name]
+            assert answered(q, value) is verdict, (name, value)
+            assert q.revealed and q.check.disabled and q.given is not None
+
+
 @pytest.mark.parametrize(
     "name",
     [
