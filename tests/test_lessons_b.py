@@ -220,7 +220,8 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert "on either side in a run" in md
     # 06-4: every table prints min..max beside the median (the depth and edge tables too)
     assert "{'min..max ms':>12s}" in code and "{spread(r):>12s}" in code
-    assert "time says nothing: the eight times differ by noise" in md
+    # r37 06-5: one paragraph of §1 reads the time columns; the others no longer repeat it
+    assert "time says nothing: the eight times differ by noise" not in md
     # 06-5, 06-6: N is the subdivision length only; the ratio printed is for N doubling
     assert "N(x)/D(x)" not in md and "P(x)/Q(x)" in md
     assert "when N halves:" not in code and "mean error at N / at N/2" in code
@@ -410,11 +411,109 @@ def test_06_review_r23_tables_fit_and_wording():
     assert "share shrinks like $1/k$" not in md and "$d/k$, falling like $1/k$" in md
     assert "tens of texels" not in md and "over a hundred texels" not in md
     assert "The two naive rules fail on exactly the same centres" not in md
-    assert "Direct3D's 16.8 fixed point" in md and "needs 50 bits" in md and "needs 51" not in md
+    assert "Direct3D's 16.8 fixed point" in md and "needs 51" not in md
+    # r37 06-3: 50 is q_bits' answer, in the summary only (far below), not the text under it
+    assert "needs 50 bits" not in md and "needs 50)" in md
     # issue 29: the standards tables, sub-pixel precision and depth formats
     for name in ("OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"):
         assert md.count(f"| {name} |") == 2, name
     assert "`subPixelPrecisionBits`" in md and "`FIXED_ORDER` = 8" in md
+
+
+def test_06_review_r37_a_prediction_in_every_section():
+    """Review r37 06-3, 06-6, 06-7: §2, §4 and §5 each ask a prediction whose answer is the
+    number (or the comparison) the next cell prints, that cell held until Check; nothing on
+    screen before a question answers it (q_rule's tie rule is named after its figure); the
+    rolled floor rings the worst pixel its title counts."""
+    import json
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    kinds = [c["cell_type"] for c in nb["cells"]]
+
+    def asked_at(name):
+        return next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
+
+    answers = {"q_bits": "50", "q_fill": "6.3", "q_depth": "same pixels"}
+    for name in ("q_bits", "q_rule", "q_fill", "q_depth"):
+        i = asked_at(name)
+        # the cell right after the question is held on it; the Markdown just before says nothing
+        # of the answer
+        assert cells[i + 1].startswith(f"{name}.hold()"), name
+        question = cells[i].split("explain=")[0]
+        before = [cells[k] for k in range(i - 2, i) if kinds[k] == "markdown"]
+        if name in answers:
+            assert answers[name] not in question and not any(answers[name] in b for b in before)
+    # the answers are what the held cells print
+    assert ns.gpu.needed == ns.gpu_bits == 50 and ns.tol_bits == 1
+    assert abs(ns.gpu.edge_bits - ns.gpu.needed) <= ns.tol_bits  # the sign forgotten: still right
+    assert 2 * ns.gpu.delta_bits < ns.gpu.needed - ns.tol_bits  # one product: not right
+    assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
+    assert abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 1
+    assert ns.same_wrong and ns.depth_choices[1].startswith("about as many")
+    # what the question gives is what the fill group counted
+    assert ns.box256.size == 61_500 and ns.covered256 == 30_321 and ns.lines256 == 246
+    # q_rule: the tie rule is named after the figure, not above the question
+    rule_at = next(i for i, c in enumerate(cells) if "inconsistent **tie rule**" in c)
+    assert rule_at > asked_at("q_rule") + 1
+    assert "tie rule" not in cells[asked_at("q_rule") - 1]
+    # the answer text of q_depth is a held Markdown cell, its source collapsed
+    (held,) = [
+        c for c in nb["cells"] if "get exactly the same pixels wrong" in "".join(c["source"])
+    ]
+    assert "".join(held["source"]).startswith("q_depth.hold()")
+    assert held["metadata"]["jupyter"]["source_hidden"]
+    # the worst pixel ringed: the rolled floor's only, where its error is the table's N = 16
+    assert set(ns.worst_at) == {25.0}
+    r_w, c_w = ns.worst_at[25.0]
+    assert 0 <= r_w < ns.image.shape[0] and 0 <= c_w < ns.image.shape[1]
+    assert ns.image[r_w, c_w] == pytest.approx(ns.subdivided[16]["error"])  # the last drawn
+
+
+def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
+    """Review r37 06-3: the three new questions, built from their own cells as a student's
+    kernel builds them: Check is disabled until an answer is given; the right answer is
+    accepted, the slips the tolerance is set against are not; the answer is kept after Check."""
+    import json
+
+    import teachraster as tr
+    from teachraster.core import fixed_point
+    from teachraster.study import bench
+    from teachraster.study import operation_counts as ops
+    from teachraster.widgets import Predict
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    ns = lesson("06_what_accuracy_costs")
+    by_name = {(r["group"], r["variant"]): r for r in ns.rows}
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+
+    def answered(q, value):
+        assert q.check.disabled  # nothing given yet: Check waits
+        q.control.value = value
+        assert not q.check.disabled
+        q.check.click()
+        return q.correct
+
+    cases = {
+        "q_bits": (["50", "49"], [str(2 * ns.gpu.delta_bits), "32"]),
+        "q_fill": (
+            [f"{ns.fill_answer:.1f}"],
+            [f"{ns.fill_no_box:.1f}", f"{ns.fill_no_divides:.1f}"],
+        ),
+        "q_depth": ([ns.depth_choices[1]], [ns.depth_choices[0], ns.depth_choices[2]]),
+    }
+    for name, (right, wrong) in cases.items():
+        src = next(
+            "".join(c["source"]) for c in nb["cells"] if f"{name} = Predict" in "".join(c["source"])
+        )
+        for value, verdict in [(v, True) for v in right] + [(v, False) for v in wrong]:
+            scope = dict(tr=tr, bench=bench, ops=ops, fixed_point=fixed_point, Predict=Predict,
+                         row=lambda g, v: by_name[(g, v)])  # fmt: skip
+            exec(src, scope)  # the question cell, as the lesson runs it
+            q = scope[name]
+            assert answered(q, value) is verdict, (name, value)
+            assert q.revealed and q.check.disabled and q.given is not None
 
 
 @pytest.mark.parametrize(
