@@ -566,9 +566,12 @@ def test_lesson_11_tells_each_story():
     assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
-    # Question 1 (r27 D3, asked before the history): GL_ALWAYS writes the farther depth
-    assert "answer=q1_choices[1]," in _lesson_11_source()
-    assert ns.q1_choices[1].startswith(f"{ns.far_won[1].depth_after:.4f}")
+    # Question 1 (r36 11-2: no longer one step from its own premise): triangle 0 drawn again
+    # with the test on passes exactly where the farther triangle won (GL_ALWAYS wrote blue's
+    # depth there); an empty buffer would let it pass everywhere, a kept red depth nowhere
+    assert "answer=redraw_passes," in _lesson_11_source()
+    assert np.array_equal(ns.redraw_passes, ns.far_wins)
+    assert 0 < ns.redraw_passes.sum() < (ns.red_alone.triangle_id == 0).sum()
     assert (
         ns.far_won[1].depth_after
         == ns.far_won[1].depth
