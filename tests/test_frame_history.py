@@ -128,6 +128,48 @@ def test_history_records_say_why():
     assert "no fragment reached it here" in lines[-1] and "RGBA" not in lines[-1]
 
 
+def test_msaa_history_says_how_many_samples_each_triangle_keeps():
+    """Review r30/r36 (lesson 11, D5): under 4x MSAA several triangles were each "passed
+    (shown)" at one pixel under a header naming one. True per sample, not a bug: every
+    sample keeps its own triangle and the resolve averages them. The table now says
+    "kept k of 4", k counted against an independent reference: which fan triangle contains
+    each sample point, by float barycentrics (the fan's triangles tile the disc, at equal
+    depth, so the one containing a sample is the one it keeps), at pixels where no sample
+    lies within 0.01 px of an edge (snapping moves a vertex by at most 1/512 px)."""
+    from teachraster.pipeline.debugging.frame_history import samples_kept
+
+    scene = get_scene("fan")
+    frame = tr.render(scene, None, 64, 48, samples=4, trace=True)
+    window = frame.trace.window[:, :, :2]
+    offsets = np.array([[0.375, 0.125], [0.875, 0.375], [0.125, 0.625], [0.625, 0.875]])
+    checked = mixed = 0
+    for row, col in np.argwhere(frame.coverage)[::3]:
+        pts = np.array([col, row]) + offsets  # (4, 2): x, y of the samples
+        owner = np.full(4, -1)
+        clear = True
+        for t, (a, b, c) in enumerate(window):
+            m = np.array([[b[0] - a[0], c[0] - a[0]], [b[1] - a[1], c[1] - a[1]]])
+            uv = np.linalg.solve(m, (pts - a).T).T
+            lam = np.column_stack([1 - uv.sum(axis=1), uv])
+            dist = lam * abs(np.linalg.det(m)) / np.array(
+                [np.hypot(*(c - b)), np.hypot(*(c - a)), np.hypot(*(b - a))])  # fmt: skip
+            if (np.abs(dist) < 0.01).any():
+                clear = False
+            owner[(lam > 0).all(axis=1)] = t
+        if not clear:
+            continue
+        h = frame.history(row, col)
+        reference = {int(t): int((owner == t).sum()) for t in set(owner.tolist()) - {-1}}
+        assert samples_kept(h) == reference, (row, col)
+        text = str(h)
+        rows = [line.split() for line in text.splitlines() if "passed (kept" in line]
+        assert rows and all(int(r[5]) == reference[int(r[0])] for r in rows), text
+        assert "(shown)" not in text and "most samples" in text
+        checked += 1
+        mixed += len(reference) > 1
+    assert checked > 20 and mixed > 0
+
+
 def test_hi_z_outcome_matches_the_in_order_replay():
     # a near square drawn first, then a far one: Hi-Z rejects the far one's blocks
     quad = np.array([[[0, 0], [32, 0], [0, 32]], [[32, 0], [32, 32], [0, 32]]], float)
@@ -524,9 +566,12 @@ def test_lesson_11_tells_each_story():
     assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
-    # Question 1 (r27 D3, asked before the history): GL_ALWAYS writes the farther depth
-    assert "answer=q1_choices[1]," in _lesson_11_source()
-    assert ns.q1_choices[1].startswith(f"{ns.far_won[1].depth_after:.4f}")
+    # Question 1 (r36 11-2: no longer one step from its own premise): triangle 0 drawn again
+    # with the test on passes exactly where the farther triangle won (GL_ALWAYS wrote blue's
+    # depth there); an empty buffer would let it pass everywhere, a kept red depth nowhere
+    assert "answer=redraw_passes," in _lesson_11_source()
+    assert np.array_equal(ns.redraw_passes, ns.far_wins)
+    assert 0 < ns.redraw_passes.sum() < (ns.red_alone.triangle_id == 0).sum()
     assert (
         ns.far_won[1].depth_after
         == ns.far_won[1].depth
@@ -711,17 +756,18 @@ def test_sparse_overlays_draw_the_scene_and_hi_z_its_tiles():
 
 
 def test_the_narrow_history_table_keeps_the_piece_and_sample_columns_where_they_say_something():
-    """The FrameInspector's narrow table (12 px in a 592-px column, review r18) drops the
-    piece and sample columns only where every record's piece is its triangle and the pixel
-    has one sample; with MSAA they stay, and print(h) is the wide table."""
+    """The FrameInspector's narrow table (12 px in a 592-px column, review r18; lesson 11's
+    ``h.table()``) drops the piece column where every record's piece is its triangle and
+    the sample column where the pixel has one sample (r36: under MSAA the piece column alone
+    pushed every row past 80 characters); print(h) is the wide table, with both."""
     from teachraster.pipeline.debugging.frame_history import NARROW, history_table
 
     scene = tr.get_scene("intersecting_triangles")
     one = tr.render(scene, None, 32, 24, trace=True).history(12, 16)
     four = tr.render(scene, None, 32, 24, trace=True, samples=4).history(12, 16)
     assert "piece" not in history_table(one, narrow=True) and "piece" in str(one)
-    assert "tri piece smp" in history_table(four, narrow=True)
-    assert str(four) == history_table(four)
+    assert "tri smp  outcome" in history_table(four, narrow=True) and "piece" in str(four)
+    assert str(four) == history_table(four) and four.table() == history_table(four, narrow=True)
     for h in (one, four):
         lines = history_table(h, narrow=True).splitlines()
         assert lines[0].endswith(":") and "on the way" in lines[1], lines[:2]

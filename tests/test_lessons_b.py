@@ -544,20 +544,17 @@ def test_every_printed_line_fits_a_column(name):
                 assert len(line) <= 80, line
 
 
-def test_11_prints_its_own_lines_in_a_column():
-    """Issue 29: lesson 11's own lines (the sphere's Hi-Z counts, the llvmpipe comparison, the
-    glass sphere) fit 80 characters; they ran to 141. The pixel-history tables are left out:
-    ``print(h)`` is the wide table whose columns the lesson describes (the inspector shows the
-    narrow one); a table runs from its "pixel (row" line to the next blank line."""
+def test_11_prints_every_line_in_a_column():
+    """Issue 29: every line lesson 11 prints fits 80 characters: its own lines (they ran to
+    141) and, since r36, its pixel-history tables too (``h.table()``, the narrow table the
+    inspector shows; ``print(h)`` ran to 160)."""
     from notebook_runs import executed
 
     for cell in executed("11_debugging_a_frame").notebook().cells:
         outs = cell.outputs if cell.cell_type == "code" else []
         text = "".join(o.get("text", "") for o in outs if o.output_type == "stream")
-        in_table = False
         for line in text.splitlines():
-            in_table = line.startswith("pixel (row ") or (in_table and line != "")
-            assert in_table or len(line) <= 80, line
+            assert len(line) <= 80, line
 
 
 # -- 07 hard cases ---------------------------------------------------------------------------
@@ -883,6 +880,33 @@ def test_11_replay_and_the_sliver_between_centres():
     assert ns.replay_matches  # "replaying the records that passed rebuilds the pixel exactly"
     covered_1, covered_4 = ns.covered[1], ns.covered[4]
     assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
+
+
+def test_11_answers_wait_for_check():
+    """Review r36 11-3: unheld markdown after Question 1 (cell 14: "the strip draws the
+    buffer after the blue fragment ... above the red one's") and after q_glass (cells 38, 40:
+    the farther layer "is rejected" with writes on, "not rejected" with them off) stated the
+    answers. Up to the next section, the text that answers a prediction is held (a code cell
+    starting with its ``hold()``); the markdown there does not state it."""
+    import json
+    import re
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    answers = {"q_redraw": ("blue tile's depth", "above the red one's", "farther blue depth"),
+               "q_glass": ("is rejected", "not rejected", "never reaches")}  # fmt: skip
+    for name, words in answers.items():
+        i = next(i for i, t in enumerate(text) if re.search(rf"^{name} = Predict", t, re.M))
+        held = 0
+        for c, t in zip(cells[i + 1 :], text[i + 1 :]):
+            if c["cell_type"] == "markdown" and t.startswith("## "):
+                break
+            if c["cell_type"] == "markdown":
+                assert not any(w in t for w in words), (name, t)
+            elif any(w in t for w in words):
+                assert t.startswith(f"{name}.hold()"), (name, t)
+                held += 1
+        assert held >= 1, name
 
 
 def test_11_05a_10_agree_on_when_early_z_is_legal():

@@ -196,6 +196,12 @@ class PixelHistory:
     def __str__(self) -> str:
         return history_table(self)
 
+    def table(self, narrow: bool = True) -> str:
+        """The table in a notebook column: at most :data:`NARROW` characters a line, as the
+        frame inspector shows it (``piece`` and ``smp`` only where they say something, a
+        long "value / why" under its row); ``narrow=False``: ``str(h)``, one row a line."""
+        return history_table(self, narrow=narrow)
+
     def _repr_pretty_(self, p, cycle) -> None:  # IPython prints the table
         p.text(str(self))
 
@@ -557,20 +563,23 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
              f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
     way = f"{len({r.triangle for r in h.records})} triangle(s) on the way; shows {shows}"
-    # the piece and the sample columns, unless narrow and they repeat the triangle, say nothing
+    if h.n_samples > 1 and h.shows >= 0:  # each sample keeps its own triangle
+        way += " (most samples)"
+    # the piece and the sample columns, unless narrow and they repeat the triangle or say 0
     both = [h] if like is None else [h, like]
-    ids = not narrow or any(g.n_samples > 1 or any(r.piece != r.triangle for r in g.records)
-                            for g in both)  # fmt: skip
+    pieces = not narrow or any(r.piece != r.triangle for g in both for r in g.records)
+    samples = not narrow or any(g.n_samples > 1 for g in both)
     lines = [f"{where}\n{way}" if narrow else f"{where} {way}"]
     rows = list(zip(h.records, _outcomes(h), map(_why, h.records)))
     outcomes = [o for g in both for o in _outcomes(g)]
     wide = 22 if not narrow else max([len("outcome"), *map(len, outcomes)])
     tri = 5 if not narrow else 3
-    head = f"{'tri':>{tri}} " + (f"{'piece':>5} {'smp':>3} " if ids else "")
+    head = f"{'tri':>{tri}} " + (f"{'piece':>5} " if pieces else "") + ("smp " if samples else "")
     lines.append(f"{head} {'outcome':<{wide}} {'depth':>9} {'before':>9} {'after':>9}  "
                  "value / why")  # fmt: skip
     for r, outcome, why in rows:
-        head = f"{r.triangle:>{tri}} " + (f"{r.piece:>5} {r.sample:>3} " if ids else "")
+        head = (f"{r.triangle:>{tri}} " + (f"{r.piece:>5} " if pieces else "")
+                + (f"{r.sample:>3} " if samples else ""))  # fmt: skip
         line = (f"{head} {outcome:<{wide}} {_num(r.depth)} {_num(r.depth_before)} "
                 f"{_num(r.depth_after)}")  # fmt: skip
         if narrow and len(line) + 2 + len(why) > NARROW:  # the why under its row, wrapped
@@ -583,6 +592,9 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
     if h.clipped_away:
         lines.append(f"  ({h.clipped_away} triangle(s) of the frame clipped away whole: behind "
                      "the eye or beyond the far plane, they reach no pixel)")  # fmt: skip
+    if h.n_samples > 1 and any(r.shown for r in h.records):
+        lines.append(f"  kept k of {h.n_samples}: the triangle holds k of the pixel's "
+                     f"{h.n_samples} samples at the end")  # fmt: skip
     lines += colour_lines(h, narrow)
     return "\n".join(lines)
 
@@ -592,14 +604,32 @@ def _outcomes(h: PixelHistory) -> list[str]:
     # Blending, a later fragment that passes is blended over this one, which is not hidden:
     # its colour is in the result (the colour lines say how much).
     later = "under" if h.blend is not None and h.blend.mode is not None else "hidden by"
-    return [_outcome_text(r, later) for r in h.records]
+    kept = samples_kept(h)
+    return [_outcome_text(r, later, kept, h.n_samples) for r in h.records]
 
 
-def _outcome_text(r, later: str) -> str:
-    """A record's outcome, and for a passed one whether it is shown or what covers it."""
+def samples_kept(h: PixelHistory) -> dict[int, int]:
+    """{triangle: how many of the pixel's samples it holds at the end}. Under MSAA every
+    sample keeps its own triangle and the resolve averages the samples, so several
+    triangles can each be shown at some samples of one pixel (``shows`` names the one
+    with the most)."""
+    kept: dict[int, int] = {}
+    for r in h.records:
+        if r.shown:
+            kept[r.triangle] = kept.get(r.triangle, 0) + 1
+    return kept
+
+
+def _outcome_text(r, later: str, kept: dict, n_samples: int) -> str:
+    """A record's outcome, and for a passed one whether it is shown (under MSAA: its
+    triangle keeps k of the pixel's samples) or what covers it."""
     if r.outcome != "passed":
         return r.outcome
-    return r.outcome + (" (shown)" if r.shown else f" ({later} {r.hidden_by})")
+    if not r.shown:
+        return f"{r.outcome} ({later} {r.hidden_by})"
+    if n_samples > 1:
+        return f"{r.outcome} (kept {kept[r.triangle]} of {n_samples})"
+    return f"{r.outcome} (shown)"
 
 
 def _why(r) -> str:
@@ -621,7 +651,8 @@ NARROW = 80
 def colour_lines(h: PixelHistory, narrow: bool = False) -> list[str]:
     """The colour part of the table: per record that reached the colour buffer, the
     target's RGBA before, the fragment's own and the target's after (none without a
-    colour buffer); ``narrow``: the "after" on a line of its own."""
+    colour buffer); ``narrow``: the "after" on a line of its own where the line would
+    pass :data:`NARROW` characters."""
     if h.blend is None:
         return []
     mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
@@ -633,7 +664,8 @@ def colour_lines(h: PixelHistory, narrow: bool = False) -> list[str]:
             smp = f" s{r.sample}" if h.n_samples > 1 else ""
             line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
             after = f" -> {_rgba(r.color_after)}"
-            out += [line, " " * 9 + after] if narrow else [line + after]
+            wrap = narrow and len(line + after) > NARROW
+            out += [line, " " * 9 + after] if wrap else [line + after]
     return out
 
 
