@@ -225,8 +225,10 @@ class PlaneExplorer:
         self.widget = widgets.VBox([title, *rows, picture_row([self.display.widget,
                                                                *info_widgets])])  # fmt: skip
         if self.backend != "ipympl":
-            # the positions of the slider moved last, drawn while the kernel idles
-            self.display.ahead([*self.x, *self.y, *self.f], self)
+            # the positions of the slider moved last, drawn while the kernel idles; full
+            # pictures (the colour bar of a new f range too), so a release on one needs no
+            # picture from the kernel (issue 31: up to 122 ms after the release of v1 x)
+            self.display.ahead([*self.x, *self.y, *self.f], self, full=True)
 
     def _sliders(self, xy, f) -> None:
         def slider(value, lo, hi, name, step=0.25):

@@ -104,7 +104,10 @@ class ProjectionExplorer(Shown):
                                     self.display.widget])  # fmt: skip
         self._ahead = None
         if self.backend != "ipympl":
-            self._ahead = self.display.ahead(self.q, self)  # drawn while the kernel idles
+            # full pictures: a draft here looks as the final picture does, so a release
+            # on a position drawn ahead needs no picture from the kernel (issue 31: the
+            # last picture came up to 105 ms after the release)
+            self._ahead = self.display.ahead(self.q, self, full=True)
 
     def _plot(self) -> None:
         ax, curve = self.axes
