@@ -174,6 +174,20 @@ def test_00_words_r22():
     assert tour.count("JupyterLab's or Notebook's default display") == 1
 
 
+def test_00_r37_items():
+    """Review r37, lesson 00: the w's are stated (and printed) before the heatmap uses w2 = 2;
+    the divide by w is its own stage, before the viewport (GL 4.6 §13.8), in the list as in
+    the figure; the player's text names centroid interpolation where it extrapolates u."""
+    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    code = "\n".join(_cells("00_tour", "code"))
+    assert "($w_2 = 2$)" in tour and tour.index("($w_2 = 2$)") < tour.index("## Affine vs")
+    assert "tri.w" in code and "w=[1.0, 2.0, 4.0]" in code
+    names = [stage.name for stage in PIPELINE_STAGES]
+    assert names.index("clipping") < names.index("perspective divide") < names.index("viewport")
+    assert "divide by $w$, window" not in tour
+    assert "declared `centroid`" in tour and "(08_antialiasing.ipynb)" in tour
+
+
 @pytest.mark.notebook
 def test_01_float_crossing_is_no_tie_rule_and_stepping():
     ns = lesson("01_span_tables")

@@ -1312,10 +1312,42 @@ def test_10_review_r26_hiz_question_held_text_and_sources():
     assert held["metadata"]["jupyter"]["source_hidden"]  # collapsed, as the question's source
     assert "Keeping the farthest depth current" in code[ask + 1]
     assert "Keeping the farthest depth current" not in md and "must cover a whole tile" not in md
-    assert "GL_GREATER" in md and "reversed-Z" in md and "until the depth buffer is cleared" in md
+    assert "GL_GREATER" in md and "reversed-Z" in md and "for the rest of the frame" in md
+    assert "US 11,176,734" in md and "Persson, *Depth in-depth*" not in md  # r36: sourced
     assert "Giesen" not in md and "sort-middle" in md
     ns = lesson("10_tiles_and_hierarchical_z")
     assert ns.same_path and "tiled" not in ns.drawn_orders
+
+
+def test_10_r36_items():
+    """Review r36, lesson 10: the int32 panel tells wrongly in from wrongly out; the Hi-Z
+    tile map draws the farthest depth per tile, and it rejects exactly q_hiz's tiles; the
+    counters' pixels have a header of their own; the binning sentence names its sources."""
+    import json
+
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting.tiles import plot_block_counters
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    assert (ns.false_in | ns.false_out).sum() == ns.narrow.wrong.sum()
+    assert ns.false_in.any() and ns.false_out.any()  # both colours drawn
+    assert ns.same_tiles and ns.rejected_tiles.sum() == (ns.tile_far < 0.7).sum() == 21
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    md = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "Kanter" in md and "draw-stream binning rasterizer" in md
+    assert "Z compression" in md and "Fast Z clear" in md and "Why 8×8" in md
+    assert "along the top and down both sides" in md
+    fig, ax = plt.subplots()
+    try:
+        table = plot_block_counters(ax, ns.fill).table
+        cells = {k: v.get_text().get_text() for k, v in table.get_celld().items()}
+        rows = len(ns.counters.table())
+        assert [cells[(rows + 1, j)] for j in range(4)] == ["pixels", "", "no test", "tested"]
+        assert cells[(rows + 2, 2)] == f"{ns.counters.pixels_accepted:,}"
+    finally:
+        plt.close(fig)
 
 
 def test_10_tile_explorer_driven_by_the_test():

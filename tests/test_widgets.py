@@ -1227,11 +1227,11 @@ def keyed(view) -> list[str]:
     return [t.get_text() for t in view.legend.texts if t.get_visible()]
 
 
-def _player_at_4_samples():
+def _player_at_4_samples(**kw):
     tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
                       attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip  # lesson 00's triangle
     return FillPlayer(tri, 16, 16, method="span", samples="4 standard (rotated grid)",
-                      backend="image")  # fmt: skip
+                      backend="image", **kw)  # fmt: skip
 
 
 def test_player_samples_are_filled_or_hollow_and_large_at_every_step():
@@ -1257,6 +1257,35 @@ def test_player_samples_are_filled_or_hollow_and_large_at_every_step():
             for d in (dots.diameter(), np.sqrt(dots.covered.get_sizes()[0])):
                 shown = d * p.fig.dpi / 72 * 592 / width_px  # px in a 592-px column
                 assert shown >= 6 and shown >= pixel / 4, (k, shown)  # was 3.8 px
+    finally:
+        p.close()
+
+
+def test_player_samples_read_10_px_and_the_key_fits_the_figure():
+    """Review r37 (lesson 00 c14): at 4 samples each dot was about 7 px across in an 897-px
+    picture whose grid took 420 px. The grid now takes most of the width (the key's column
+    only as wide as its longest line), the dots at least 10 px, every key line inside
+    (lesson 00's classroom style)."""
+    from matplotlib.text import Text
+
+    from teachraster.plotting.style import COLUMN_WIDTH_PX
+
+    p = _player_at_4_samples(style="classroom")
+    try:
+        fig = p.fig
+        width_px = fig.get_figwidth() * fig.dpi
+        assert width_px <= COLUMN_WIDTH_PX
+        for k in (0, p.frames.max):
+            p.view.show_step(k, draw=False)
+            fig.canvas.draw()
+            assert p.sample_dots.diameter() * fig.dpi / 72 >= 10.0, k
+            renderer = fig.canvas.get_renderer()
+            for text in fig.findobj(Text):
+                if text.get_visible() and text.get_text().strip():
+                    box = text.get_window_extent(renderer)
+                    assert box.x1 <= width_px + 0.5, (k, text.get_text())
+        grid = p.view.ax.get_window_extent()
+        assert grid.width >= 0.55 * width_px  # was 422 of 897 px
     finally:
         p.close()
 

@@ -47,7 +47,16 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
         "x, y in ±w (guard band); z from −w (GL) or 0 (D3D, Vulkan) to w",
         ("05a_zbuffer",),
     ),  # fmt: skip
-    Stage("viewport", "divide by w → window x, y, depth", ("05a_zbuffer", "05b_depth_precision")),
+    # its own step, before the viewport (GL 4.6 §13.8: perspective division, then the
+    # viewport transformation), as the clickable map of lesson 00 draws it too
+    Stage(
+        "perspective divide",
+        "x, y, z ÷ w → normalised device coordinates",
+        ("04_perspective_correct_interpolation", "05a_zbuffer"),
+    ),  # fmt: skip
+    Stage(
+        "viewport", "NDC → window x, y (pixels) and depth", ("05a_zbuffer", "05b_depth_precision")
+    ),
     Stage(
         "rasterisation",
         "which pixels, with which λ",

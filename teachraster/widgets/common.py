@@ -45,19 +45,22 @@ def font_scale() -> float:
     return float(mpl.rcParams["font.size"]) / 10.0
 
 
-def fill_axes(fig, width: int, height: int, *, side: float = 4.4, legend: bool = True):
+def fill_axes(
+    fig, width: int, height: int, *, side: float = 4.4, legend: bool = True, key: float = 2.1
+):
     """Size ``fig`` for a FillView of a ``width`` × ``height`` grid and add its Axes.
 
     Fixed margins (no layout engine, which would run again at every step): room above for
     the view's header and the column labels, on the left for the row labels, on the right
-    for the view's colour key. ``side`` is the longer side of the grid in inches.
+    for the view's colour key. ``side`` is the longer side of the grid in inches; ``key``
+    the key's column in inches at the style's font scale (its longest line decides).
     """
     s = font_scale()
     if width >= height:
         aw, ah = side, side * height / width
     else:
         aw, ah = side * width / height, side
-    left, right = 0.65 * s, (2.1 * s if legend else 0.25)
+    left, right = 0.65 * s, (key * s if legend else 0.25)
     top, bottom = 0.85 * s, 0.15
     fw, fh = left + aw + right, top + ah + bottom
     fig.set_size_inches(fw, fh)

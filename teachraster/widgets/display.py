@@ -316,7 +316,9 @@ def html_escape(text: str) -> str:
 MIN_TEXT_PX = 12.0
 
 
-def readable_text(axes=(), *, profile=None, texts=(), shown_px: float | None = None) -> None:
+def readable_text(
+    axes=(), *, profile=None, texts=(), shown_px: float | None = None, min_px: float = MIN_TEXT_PX
+) -> None:
     """Tick labels of ``axes`` (colour bars' too), the labels drawn in them (v1, v2, v3), a
     profile's ticks, title and legend, and ``texts``: at least the style's font size.
 
@@ -329,15 +331,15 @@ def readable_text(axes=(), *, profile=None, texts=(), shown_px: float | None = N
 
     ``shown_px``: the width the figure is shown at when that is narrower still (an
     accordion's padding takes some of the column): every text of the figure (axis labels
-    and titles too) is raised to what reads :data:`MIN_TEXT_PX` there, where the style's
-    size does not.
+    and titles too) is raised to what reads ``min_px`` there (default :data:`MIN_TEXT_PX`),
+    where the style's size does not.
     """
     size = fs(1.0)
     fig = next((a.figure for a in axes if a is not None), None)
     if shown_px is not None and fig is not None:
         width = fig.get_figwidth() * fig.dpi
         # px on screen = points × dpi / 72 × shown / width
-        need = MIN_TEXT_PX * width / min(shown_px, width) * 72 / fig.dpi
+        need = min_px * width / min(shown_px, width) * 72 / fig.dpi
         size = max(size, math.ceil(need * 2) / 2)  # a half point up: pixels round
         for text in fig.findobj(Text):
             text.set_fontsize(max(size, text.get_fontsize()))

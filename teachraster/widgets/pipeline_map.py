@@ -42,7 +42,8 @@ TOUR_U = (0.0, 1.0, 0.0)
 #: The map's stages that the static figure (:data:`PIPELINE_STAGES`) draws too, by its names:
 #: their lessons are read from there, so the two pictures cannot disagree.
 SHARED_STAGES = {
-    "vertex": "vertex processing", "clip": "clipping", "viewport": "viewport",
+    "vertex": "vertex processing", "clip": "clipping", "divide": "perspective divide",
+    "viewport": "viewport",
     "rasterize": "rasterisation", "fragment": "fragment shading", "depth": "depth test",
     "blend": "blending",
 }  # fmt: skip
@@ -50,7 +51,6 @@ SHARED_STAGES = {
 #: The lessons (notebook stems) of the stages only the map splits out.
 MAP_ONLY_LESSONS = {
     "assembly": ("02_half_planes",),
-    "divide": ("04_perspective_correct_interpolation", "05a_zbuffer"),
     "setup": ("01_span_tables", "02_half_planes", "03_barycentric_and_plane_equations"),
 }
 

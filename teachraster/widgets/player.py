@@ -46,6 +46,10 @@ INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspect
 #: several samples): with tiles chosen the player shows one sample and says so.
 ONE_SAMPLE = "1 (centre)"
 TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
+#: The steps' grid (its longer side, inches) and the key's column (inches at the style's font
+#: scale): the figure stays within the column (930 px at the classroom style's 96 dpi).
+PLAYER_SIDE, PLAYER_KEY = 5.4, 1.75
+
 #: The comparison's greatest height on screen (px): with the title and the controls above it,
 #: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
 #: interpolation toggle opened it).
@@ -214,7 +218,10 @@ class FillPlayer(Holdable):
         # The steps are drawn by Agg and shown by the page (frames.js): the fill figure is
         # never a live canvas, whatever the backend.
         self.fig = new_figure((8, 6), "image")
-        ax = fill_axes(self.fig, self.width, self.height)
+        # the grid as large as the column allows and the key's column only as wide as its
+        # longest line ("centre out, a sample in"): 4 samples per pixel read about 10 px
+        # across (review r37, lesson 00: 7 px with a 4.4-in grid), the dots at 0.9 of their gap
+        ax = fill_axes(self.fig, self.width, self.height, side=PLAYER_SIDE, key=PLAYER_KEY)
         # The caption and the step number are shown by the page beside the frame, in full
         # and selectable; drawing them in the figure as well would cost time at every step.
         # the last step colours the pixels by the attribute it interpolates (review r10, 04
@@ -232,9 +239,13 @@ class FillPlayer(Holdable):
             # (reviews r9 00 c14, 04 c15: ticks, key and notes read 9-11 px; r20: 11.8)
             view = self.interp_view
             bars = [im.colorbar.ax for im in (*view.images, view.heatmap) if im.colorbar]
-            readable_text([*view.axes, *bars], profile=view.profile,
-                          texts=[view.heatmap.note, *view.in_use],
-                          shown_px=COMPARISON_SHOWN_PX)  # fmt: skip
+            readable_text(
+                [*view.axes, *bars],
+                profile=view.profile,
+                texts=[view.heatmap.note, *view.in_use],
+                shown_px=COMPARISON_SHOWN_PX,
+                min_px=13.0,
+            )  # r37: 12.2 px read small
             # a toggle changes the images, outlines and colour bars: the rest stays cached
             self._interp_blit = comparison_edit_blit(self.interp_view)
             self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
