@@ -243,3 +243,15 @@ def test_over_to_premultiplied_names_a_nan_when_both_alphas_are_zero():
     assert "both alphas 0: the result is transparent black, not a division by zero" in (
         failure.explanation)  # fmt: skip
     assert ex.check("over_to_premultiplied", CORRECT["over_to_premultiplied"]).passed
+
+
+def test_fill_built_width_by_height_fails_several_cases_and_says_row_col():
+    """r39 01-1: an image built (width, height) failed one case of 39 (the only oblong one)."""
+    cover = CORRECT["covers"]
+
+    def fill(xy, w, h):
+        return np.array([[cover(xy, (j + 0.5, i + 0.5)) for j in range(h)] for i in range(w)])
+
+    report = ex.check("fill", fill)
+    assert len(report.failures) >= 3, str(report)
+    assert all("(width, height): arrays are [row, col]" in f.explanation for f in report.failures)

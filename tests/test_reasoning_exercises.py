@@ -360,3 +360,39 @@ def test_the_fill_legend_lists_only_the_states_drawn():
     plt.close(fig)
     assert "covered" in labels and any(t.startswith("extra") for t in labels), labels
     assert not any(t.startswith("missing") for t in labels), labels
+
+
+# -- r39: exercises 01-05 played as a student -------------------------------------------------
+def test_span_in_float32_fails_far_from_the_origin_and_is_named():
+    """r39 02-1: a float32 span passed every case; rows 100 000 px out where float32 moves an
+    end now refuse it, and name float32."""
+    report = ex.check("span", lambda xy, row: sol.span(np.asarray(xy, np.float32), np.float32(row)))
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"float32"}, str(report)
+    assert "cannot hold the vertices' 1/256-px grid" in report.failures[0].explanation
+
+
+def test_span_returned_as_stop_first_is_named_not_a_placeholder():
+    """r39 02-2: (stop, first) covers nothing on every case, but it is computed, not left in."""
+    report = _named("span", lambda xy, row: sol.span(xy, row)[::-1], "first and stop swapped",
+                    "you returned (stop, first)")  # fmt: skip
+    assert all("placeholder" not in f.explanation for f in report.failures)
+
+
+def test_span_that_is_always_empty_is_told_in_the_students_terms():
+    """r39 02-3: never the checker's frozenset()."""
+    report = _named("span", lambda xy, row: (0, 0), "constant", "the same empty span (0, 0)")
+    assert "frozenset" not in str(report)
+
+
+def test_depth_passes_with_a_buffer_cleared_to_one_fails_on_the_far_plane():
+    """r39 04-4: a buffer cleared to 1.0 passed every case; a fragment at depth 1.0 tells it."""
+
+    def cleared(depths, writes):
+        stored, out = 1.0, []
+        for d, w in zip(depths, writes):
+            out.append(d < stored)
+            stored = d if d < stored and w else stored
+        return out
+
+    _named("depth_passes", cleared, "cleared to 1", "started the buffer at 1.0")
