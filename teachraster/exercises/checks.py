@@ -63,6 +63,21 @@ def names() -> list[str]:
     return list(_registry())
 
 
+def _hinted(report: Report, hints, first: bool, note: str | None) -> Report:
+    """On a task's first failing check, each of ``hints``' texts as its hint, and a note that
+    the next failing check says more (:attr:`~.exercise.Exercise.hints`)."""
+    if not first or not any(text in f.explanation for f in report.failures for text, _ in hints):
+        return report if note is None else replace(report, tries=note)
+    failures = []
+    for f in report.failures:
+        words = f.explanation
+        for text, hint in hints:
+            words = words.replace(text, hint)
+        failures.append(replace(f, explanation=words))
+    more = "a hint only, this first time: the next failing check of this task says it in full"
+    return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
+
+
 def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
     """Run exercise ``name``'s cases on the student's ``fn`` and explain every failure.
 
@@ -96,7 +111,9 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
         named = {f.got[0] for f in report.failures if f.kind == "cause" and f.got}
         causes = tries.wrong_causes(name, spec.tries, named, report.passed, spec.free_causes)
         note = causes if note is None else (note if causes is None else f"{note}. {causes}")
-    if note is not None:
+    if spec.hints and not report.passed and not report.not_implemented and not nested():
+        report = _hinted(report, spec.hints, tries.hinted_check(name), note)
+    elif note is not None:
         report = replace(report, tries=note)
     if b.stopped is not None and report.stopped is None:  # a later step ran out of time
         kept = [f for f in report.failures if f.explanation != SKIPPED]
