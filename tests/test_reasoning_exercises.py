@@ -4,6 +4,7 @@ are true and never give the answer away."""
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -91,7 +92,7 @@ def test_perspective_weights_that_overflow_are_told_only_ratios_matter():
 
 
 def test_safe_near_never_blames_float32_for_a_named_mistake():
-    report = _named("safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "step")
+    report = _named("safe_near", lambda z, g, f, b: solve(2 / (2**b - 1), z, g, f), "ndc", "NDC")
     assert all("float32's rounding" not in f.explanation for f in report.failures)
 
 
@@ -396,3 +397,64 @@ def test_depth_passes_with_a_buffer_cleared_to_one_fails_on_the_far_plane():
         return out
 
     _named("depth_passes", cleared, "cleared to 1", "started the buffer at 1.0")
+
+
+def _ahead(z, gap, far, bits):
+    """Whole steps: the window depths of z and z + gap one step apart (r39 05-2)."""
+    s = step(bits)
+    return s * far * z * (z + gap) / (gap * far + s * z * (z + gap))
+
+
+def _behind(z, gap, far, bits):
+    """Whole steps: the window depths of z − gap and z one step apart (r39 05-2)."""
+    s = step(bits)
+    return s * far * z * (z - gap) / (gap * far + s * z * (z - gap))
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [lambda z, g, f, b: sol.safe_near(z, g, f, b) * (1 + 1e-5), _ahead, _behind,
+     lambda z, g, f, b: sol.safe_near(z, g, f, b) * 1.005],
+    ids=["bisected to 1e-5", "whole steps ahead", "whole steps behind", "0.5 % further out"],
+)  # fmt: skip
+def test_safe_near_accepts_every_near_plane_that_tells_the_surfaces_apart(fn):
+    """r39 05-1, 05-2: checked against the criterion, not to 6 digits of one formula."""
+    _passes("safe_near", fn)
+
+
+def test_safe_near_too_close_is_told_why_truly():
+    """r39 05-2: "too coarse" only where the surfaces lie less than one step apart."""
+    report = ex.check("safe_near", lambda z, g, f, b: 0.9 * sol.safe_near(z, g, f, b))
+    assert not report.passed
+    assert all("of a step apart" in f.explanation for f in report.failures), str(report)
+
+
+def test_safe_near_with_an_infinite_far_plane_still_fails_where_it_matters():
+    _named("safe_near", lambda z, g, f, b: step(b) * z * z / g, "infinite far", "(f − n)/f")
+
+
+@pytest.mark.parametrize(
+    ("name", "fn", "formula"),
+    [("span", lambda xy, row: (math.floor(_x(xy, row)[0] - 0.5) + 1, math.ceil(_x(xy, row)[1] - 0.5)),
+      "⌈x_l − ½⌉"),
+     ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "λ_i / w_i"),
+     ("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g, "solve step")],
+)  # fmt: skip
+def test_the_first_failing_check_hints_and_the_second_says_the_formula(name, fn, formula):
+    """r39 02-5, 03-3, 05-3: the first wrong try does not print what the task asks to find."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    first, second = ex.check(name, fn), ex.check(name, fn)
+    assert formula not in str(first) and "a hint only" in str(first), str(first)
+    assert formula in str(second), str(second)
+
+
+def _x(xy, row):
+    """The crossings of row's centre line with the triangle (min, max), or (0, 0)."""
+    y, xs = row + 0.5, []
+    for k in range(3):
+        (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
+        if ay != by and min(ay, by) <= y <= max(ay, by):
+            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+    return (min(xs), max(xs)) if xs else (0.5, 0.5)

@@ -369,6 +369,16 @@ def _state(rule: bool, yours: bool, no_answer: bool) -> str:
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
     variant_mistakes(_variants, MISTAKES, SYMPTOMS), answers=(PackageAnswer(rasterize),),
-    draw=draw_span, constant=_constant_span,
+    draw=draw_span, constant=_constant_span, hints=(
+        # r39 02-5: the first wrong try printed the rounding the task asks to work out
+        ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
+         "at or right of x_l?"),
+        (", ⌈x_r − ½⌉ is the first column *not* covered)", ": stop is the first column *not* "
+         "covered)"),
+        (" (⌈x_l − ½⌉, not ⌊x_l − ½⌋ + 1)", ""),
+        ("so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉", "so count the columns whose centres lie between "
+         "them, not the integers nearest to them"),
+        (": ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉", ""),
+    ),
     match=lambda got, answer, args: set(got) == set(answer),
 )  # fmt: skip
