@@ -119,7 +119,7 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
         kept = [f for f in report.failures if f.explanation != SKIPPED]
         n_run = report.n_cases - (len(report.failures) - len(kept))
         report = replace(report, failures=kept, stopped=b.stopped, n_run=n_run)
-    if printed.lines:
+    if printed.lines or printed.warned:
         report = replace(report, printed=printed.summary())
         printed.replay(sys.stdout)
     return issue(report)
