@@ -458,3 +458,30 @@ def _x(xy, row):
         if ay != by and min(ay, by) <= y <= max(ay, by):
             xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
     return (min(xs), max(xs)) if xs else (0.5, 0.5)
+
+
+def test_numpy_warnings_are_not_reported_as_prints():
+    """r39 03-2: numpy's overflow warning was told "your function printed 4 lines"."""
+    report = ex.check("perspective_weights", lambda lam, w: (lam / w) / (lam / w).sum())
+    assert "printed" not in (report.printed or ""), report.printed
+    assert "warning" in report.printed and "overflow" in report.printed, report.printed
+
+
+def test_barycentric_in_float32_far_out_names_the_lost_grid_not_a_plane():
+    """r39 03-1: differences to a vertex in float32: the inputs lost the 1/256-px grid."""
+
+    def e(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    def bary(xy, p):
+        v1, v2, v3 = np.asarray(xy, np.float32)
+        p = np.asarray(p, np.float32)
+        return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)]) / e(v1, v2, v3)
+
+    far = [
+        f for f in ex.check("barycentric", bary).failures if "px from the origin" in f.explanation
+    ]
+    assert far, "the far cases fail"
+    for f in far:
+        assert "cannot hold the 1/256-px grid" in f.explanation, f.explanation
+        assert "absolute coordinates" not in f.explanation, f.explanation

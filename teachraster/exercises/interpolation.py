@@ -105,15 +105,28 @@ def _far(args) -> tuple[float, float]:
 
 
 def bary_float32_words(args, expected, got) -> str | None:
-    """Far from the origin: the cancellation of planes in absolute coordinates."""
+    """Far from the origin, named from the size of the error (r39 03-1): float32's rounding
+    of λ itself (the general words), the inputs rounded to float32 (they lose the 1/256-px
+    grid), or more than both (a plane in absolute coordinates cancels)."""
     far, _ = _far(args)
-    if far < 1e4:
+    error = float(np.max(np.abs(np.asarray(got, float) - expected)))
+    if far < 1e4 or error <= 8 * 2.0**-24 * max(1.0, float(np.abs(expected).max())):
         return None
+    xy, p = args
+    spacing = float(np.spacing(np.float32(far)))
+    moved = barycentric(np.float32(xy).astype(float), np.float32(p).astype(float))
+    by_inputs = float(np.max(np.abs(moved - expected)))
+    head = f". {num(far)} px from the origin float32 numbers are {num(spacing)} px apart"
+    if error <= 4 * by_inputs + 1e-6:
+        return (
+            f"{head} and cannot hold the 1/256-px grid of the vertices and p: in float32 they "
+            f"move by up to {num(spacing / 2)} px, which alone moves λ by {num(by_inputs)}. "
+            "Keep the coordinates in float64 (plain Python floats or np.float64)"
+        )
     return (
-        f". {num(far)} px from the origin float32 numbers are "
-        f"{num(float(np.spacing(np.float32(far))))} px apart, and a plane A·x + B·y + C evaluated "
-        "in absolute coordinates cancels catastrophically (C is about x², the answer far "
-        "smaller): compute differences p − v to a vertex first, in float64"
+        f"{head}, and a plane A·x + B·y + C evaluated in absolute coordinates cancels "
+        "catastrophically (C is about x², the answer far smaller): in float32, compute "
+        "differences p − v to a vertex first; better, compute in float64"
     )
 
 
