@@ -286,3 +286,22 @@ def test_clip_near_with_w_not_interpolated_names_w_and_not_z_alone():
     first = report.failures[0]
     assert first.kind == "w not interpolated", str(report)
     assert "w included" in first.explanation and "z alone" not in first.explanation
+
+
+def test_the_barycentric_figure_shows_the_triangle_and_p():
+    """r39 03-5: the bars alone did not say which triangle and which point they were."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("barycentric", lambda xy, p: np.roll(CORRECT["barycentric"](xy, p), 1))
+    fig, ax = plt.subplots()
+    try:
+        report.plot(ax)
+        (inset,) = ax.child_axes
+        texts = {t.get_text() for t in inset.texts}
+        assert {"v1", "v2", "v3", "p", "λ1", "λ2", "λ3"} <= texts, texts
+        assert len(inset.patches) == 3  # the sub-triangle opposite each vertex
+    finally:
+        plt.close(fig)
