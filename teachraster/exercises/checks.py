@@ -63,10 +63,13 @@ def names() -> list[str]:
     return list(_registry())
 
 
-def _hinted(report: Report, hints, first: bool, note: str | None) -> Report:
-    """On a task's first failing check, each of ``hints``' texts as its hint, and a note that
-    the next failing check says more (:attr:`~.exercise.Exercise.hints`)."""
-    if not first or not any(text in f.explanation for f in report.failures for text, _ in hints):
+def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
+    """On the first failing check of task ``name`` whose words would give the answer away,
+    each of ``hints``' texts as its hint, and a note that the next failing check says more
+    (:attr:`~.exercise.Exercise.hints`; a check that fails otherwise, a TypeError, is not
+    counted)."""
+    telling = any(text in f.explanation for f in report.failures for text, _ in hints)
+    if not telling or not tries.hinted_check(name):
         return report if note is None else replace(report, tries=note)
     failures = []
     for f in report.failures:
@@ -112,7 +115,7 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
         causes = tries.wrong_causes(name, spec.tries, named, report.passed, spec.free_causes)
         note = causes if note is None else (note if causes is None else f"{note}. {causes}")
     if spec.hints and not report.passed and not report.not_implemented and not nested():
-        report = _hinted(report, spec.hints, tries.hinted_check(name), note)
+        report = _hinted(report, spec.hints, name, note)
     elif note is not None:
         report = replace(report, tries=note)
     if b.stopped is not None and report.stopped is None:  # a later step ran out of time

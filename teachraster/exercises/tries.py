@@ -140,9 +140,9 @@ def wrong_causes(name: str, default: int | None, causes, passed: bool,
 
 
 def hinted_check(name: str) -> bool:
-    """Count one failing check of task ``name`` for its hints; True for the task's first
-    failing check in this kernel, which gets the hints instead of the words that give the
-    answer away (:attr:`~.exercise.Exercise.hints`). Unlike the wait, this count is not
+    """Count one failing check of task ``name`` whose words would give the answer away; True
+    for the first in this kernel, which gets the hints instead of those words
+    (:attr:`~.exercise.Exercise.hints`). Unlike the wait, this count is not
     switched off by ``TEACHRASTER_CHECK_TRIES`` and never starts again: a student who saw the
     full words once has seen them."""
     with _LOCK:
