@@ -485,3 +485,14 @@ def test_barycentric_in_float32_far_out_names_the_lost_grid_not_a_plane():
     for f in far:
         assert "cannot hold the 1/256-px grid" in f.explanation, f.explanation
         assert "absolute coordinates" not in f.explanation, f.explanation
+
+
+def test_a_failing_check_without_the_formula_does_not_use_up_the_hint():
+    """The hint is given the first time the words would give the answer away, not on a first
+    check that failed for another reason (a TypeError)."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints("safe_near")
+    ex.check("safe_near", lambda z, g, f, b: "n")
+    first = ex.check("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g)
+    assert "solve step" not in str(first) and "a hint only" in str(first), str(first)
