@@ -243,3 +243,65 @@ def test_over_to_premultiplied_names_a_nan_when_both_alphas_are_zero():
     assert "both alphas 0: the result is transparent black, not a division by zero" in (
         failure.explanation)  # fmt: skip
     assert ex.check("over_to_premultiplied", CORRECT["over_to_premultiplied"]).passed
+
+
+def test_fill_built_width_by_height_fails_several_cases_and_says_row_col():
+    """r39 01-1: an image built (width, height) failed one case of 39 (the only oblong one)."""
+    cover = CORRECT["covers"]
+
+    def fill(xy, w, h):
+        return np.array([[cover(xy, (j + 0.5, i + 0.5)) for j in range(h)] for i in range(w)])
+
+    report = ex.check("fill", fill)
+    assert len(report.failures) >= 3, str(report)
+    assert all("(width, height): arrays are [row, col]" in f.explanation for f in report.failures)
+
+
+def test_clip_near_with_the_far_planes_distance_is_named_not_a_placeholder():
+    """r39 04-1: z − w keeps nothing of any case, but it is computed, not left in."""
+    from exercise_solutions import clip_against
+
+    report = ex.check("clip_near", lambda v: clip_against(v, distance=lambda p: p[2] - p[3]))
+    assert {f.kind for f in report.failures} == {"far plane's distance"}, str(report)
+    assert "placeholder" not in str(report)
+
+
+def test_clip_near_with_w_not_interpolated_names_w_and_not_z_alone():
+    """r39 04-2: the new vertex's x, y, z right and its w the inside vertex's."""
+
+    def clip(v):
+        v, out = np.asarray(v, dtype=float), []
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            da, db = a[2] + a[3], b[2] + b[3]
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0):
+                c = a + da / (da - db) * (b - a)
+                c[3] = a[3] if da >= 0 else b[3]
+                out.append(c)
+        return np.array(out).reshape(-1, 4)
+
+    report = ex.check("clip_near", clip)
+    first = report.failures[0]
+    assert first.kind == "w not interpolated", str(report)
+    assert "w included" in first.explanation and "z alone" not in first.explanation
+
+
+def test_the_barycentric_figure_shows_the_triangle_and_p():
+    """r39 03-5: the bars alone did not say which triangle and which point they were."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("barycentric", lambda xy, p: np.roll(CORRECT["barycentric"](xy, p), 1))
+    fig, ax = plt.subplots()
+    try:
+        report.plot(ax)
+        (inset,) = ax.child_axes
+        texts = {t.get_text() for t in inset.texts}
+        assert {"v1", "v2", "v3", "p", "λ1", "λ2", "λ3"} <= texts, texts
+        assert len(inset.patches) == 3  # the sub-triangle opposite each vertex
+    finally:
+        plt.close(fig)

@@ -4,6 +4,7 @@ are true and never give the answer away."""
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -91,7 +92,7 @@ def test_perspective_weights_that_overflow_are_told_only_ratios_matter():
 
 
 def test_safe_near_never_blames_float32_for_a_named_mistake():
-    report = _named("safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "step")
+    report = _named("safe_near", lambda z, g, f, b: solve(2 / (2**b - 1), z, g, f), "ndc", "NDC")
     assert all("float32's rounding" not in f.explanation for f in report.failures)
 
 
@@ -360,3 +361,138 @@ def test_the_fill_legend_lists_only_the_states_drawn():
     plt.close(fig)
     assert "covered" in labels and any(t.startswith("extra") for t in labels), labels
     assert not any(t.startswith("missing") for t in labels), labels
+
+
+# -- r39: exercises 01-05 played as a student -------------------------------------------------
+def test_span_in_float32_fails_far_from_the_origin_and_is_named():
+    """r39 02-1: a float32 span passed every case; rows 100 000 px out where float32 moves an
+    end now refuse it, and name float32."""
+    report = ex.check("span", lambda xy, row: sol.span(np.asarray(xy, np.float32), np.float32(row)))
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"float32"}, str(report)
+    assert "cannot hold the vertices' 1/256-px grid" in report.failures[0].explanation
+
+
+def test_span_returned_as_stop_first_is_named_not_a_placeholder():
+    """r39 02-2: (stop, first) covers nothing on every case, but it is computed, not left in."""
+    report = _named("span", lambda xy, row: sol.span(xy, row)[::-1], "first and stop swapped",
+                    "you returned (stop, first)")  # fmt: skip
+    assert all("placeholder" not in f.explanation for f in report.failures)
+
+
+def test_span_that_is_always_empty_is_told_in_the_students_terms():
+    """r39 02-3: never the checker's frozenset()."""
+    report = _named("span", lambda xy, row: (0, 0), "constant", "the same empty span (0, 0)")
+    assert "frozenset" not in str(report)
+
+
+def test_depth_passes_with_a_buffer_cleared_to_one_fails_on_the_far_plane():
+    """r39 04-4: a buffer cleared to 1.0 passed every case; a fragment at depth 1.0 tells it."""
+
+    def cleared(depths, writes):
+        stored, out = 1.0, []
+        for d, w in zip(depths, writes):
+            out.append(d < stored)
+            stored = d if d < stored and w else stored
+        return out
+
+    _named("depth_passes", cleared, "cleared to 1", "started the buffer at 1.0")
+
+
+def _ahead(z, gap, far, bits):
+    """Whole steps: the window depths of z and z + gap one step apart (r39 05-2)."""
+    s = step(bits)
+    return s * far * z * (z + gap) / (gap * far + s * z * (z + gap))
+
+
+def _behind(z, gap, far, bits):
+    """Whole steps: the window depths of z − gap and z one step apart (r39 05-2)."""
+    s = step(bits)
+    return s * far * z * (z - gap) / (gap * far + s * z * (z - gap))
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [lambda z, g, f, b: sol.safe_near(z, g, f, b) * (1 + 1e-5), _ahead, _behind,
+     lambda z, g, f, b: sol.safe_near(z, g, f, b) * 1.005],
+    ids=["bisected to 1e-5", "whole steps ahead", "whole steps behind", "0.5 % further out"],
+)  # fmt: skip
+def test_safe_near_accepts_every_near_plane_that_tells_the_surfaces_apart(fn):
+    """r39 05-1, 05-2: checked against the criterion, not to 6 digits of one formula."""
+    _passes("safe_near", fn)
+
+
+def test_safe_near_too_close_is_told_why_truly():
+    """r39 05-2: "too coarse" only where the surfaces lie less than one step apart."""
+    report = ex.check("safe_near", lambda z, g, f, b: 0.9 * sol.safe_near(z, g, f, b))
+    assert not report.passed
+    assert all("of a step apart" in f.explanation for f in report.failures), str(report)
+
+
+def test_safe_near_with_an_infinite_far_plane_still_fails_where_it_matters():
+    _named("safe_near", lambda z, g, f, b: step(b) * z * z / g, "infinite far", "(f − n)/f")
+
+
+@pytest.mark.parametrize(
+    ("name", "fn", "formula"),
+    [("span", lambda xy, row: (math.floor(_x(xy, row)[0] - 0.5) + 1, math.ceil(_x(xy, row)[1] - 0.5)),
+      "⌈x_l − ½⌉"),
+     ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "λ_i / w_i"),
+     ("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g, "solve step")],
+)  # fmt: skip
+def test_the_first_failing_check_hints_and_the_second_says_the_formula(name, fn, formula):
+    """r39 02-5, 03-3, 05-3: the first wrong try does not print what the task asks to find."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    first, second = ex.check(name, fn), ex.check(name, fn)
+    assert formula not in str(first) and "a hint only" in str(first), str(first)
+    assert formula in str(second), str(second)
+
+
+def _x(xy, row):
+    """The crossings of row's centre line with the triangle (min, max), or (0, 0)."""
+    y, xs = row + 0.5, []
+    for k in range(3):
+        (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
+        if ay != by and min(ay, by) <= y <= max(ay, by):
+            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+    return (min(xs), max(xs)) if xs else (0.5, 0.5)
+
+
+def test_numpy_warnings_are_not_reported_as_prints():
+    """r39 03-2: numpy's overflow warning was told "your function printed 4 lines"."""
+    report = ex.check("perspective_weights", lambda lam, w: (lam / w) / (lam / w).sum())
+    assert "printed" not in (report.printed or ""), report.printed
+    assert "warning" in report.printed and "overflow" in report.printed, report.printed
+
+
+def test_barycentric_in_float32_far_out_names_the_lost_grid_not_a_plane():
+    """r39 03-1: differences to a vertex in float32: the inputs lost the 1/256-px grid."""
+
+    def e(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    def bary(xy, p):
+        v1, v2, v3 = np.asarray(xy, np.float32)
+        p = np.asarray(p, np.float32)
+        return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)]) / e(v1, v2, v3)
+
+    far = [
+        f for f in ex.check("barycentric", bary).failures if "px from the origin" in f.explanation
+    ]
+    assert far, "the far cases fail"
+    for f in far:
+        assert "cannot hold the 1/256-px grid" in f.explanation, f.explanation
+        assert "absolute coordinates" not in f.explanation, f.explanation
+
+
+def test_a_failing_check_without_the_formula_does_not_use_up_the_hint():
+    """The hint is given the first time the words would give the answer away, not on a first
+    check that failed for another reason (a TypeError)."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints("safe_near")
+    ex.check("safe_near", lambda z, g, f, b: "n")
+    first = ex.check("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g)
+    assert "solve step" not in str(first) and "a hint only" in str(first), str(first)

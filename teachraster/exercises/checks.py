@@ -63,6 +63,24 @@ def names() -> list[str]:
     return list(_registry())
 
 
+def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
+    """On the first failing check of task ``name`` whose words would give the answer away,
+    each of ``hints``' texts as its hint, and a note that the next failing check says more
+    (:attr:`~.exercise.Exercise.hints`; a check that fails otherwise, a TypeError, is not
+    counted)."""
+    telling = any(text in f.explanation for f in report.failures for text, _ in hints)
+    if not telling or not tries.hinted_check(name):
+        return report if note is None else replace(report, tries=note)
+    failures = []
+    for f in report.failures:
+        words = f.explanation
+        for text, hint in hints:
+            words = words.replace(text, hint)
+        failures.append(replace(f, explanation=words))
+    more = "a hint only, this first time: the next failing check of this task says it in full"
+    return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
+
+
 def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
     """Run exercise ``name``'s cases on the student's ``fn`` and explain every failure.
 
@@ -96,13 +114,15 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
         named = {f.got[0] for f in report.failures if f.kind == "cause" and f.got}
         causes = tries.wrong_causes(name, spec.tries, named, report.passed, spec.free_causes)
         note = causes if note is None else (note if causes is None else f"{note}. {causes}")
-    if note is not None:
+    if spec.hints and not report.passed and not report.not_implemented and not nested():
+        report = _hinted(report, spec.hints, name, note)
+    elif note is not None:
         report = replace(report, tries=note)
     if b.stopped is not None and report.stopped is None:  # a later step ran out of time
         kept = [f for f in report.failures if f.explanation != SKIPPED]
         n_run = report.n_cases - (len(report.failures) - len(kept))
         report = replace(report, failures=kept, stopped=b.stopped, n_run=n_run)
-    if printed.lines:
+    if printed.lines or printed.warned:
         report = replace(report, printed=printed.summary())
         printed.replay(sys.stdout)
     return issue(report)

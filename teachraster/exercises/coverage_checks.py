@@ -83,7 +83,21 @@ def covers_cases():
 def fill_cases():
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
-    return [(c.label, (c,), _expected(c)) for c in cases]
+    return [(c.label, (c,), _expected(c)) for c in cases + _oblong_cases()]
+
+
+def _oblong_cases() -> list[CoverageCase]:
+    """Seeded random triangles in images wider than tall and taller than wide (r39 01-1: one
+    case of 39 told (height, width) from (width, height))."""
+    rng = np.random.default_rng(3901)
+    out = []
+    for k, (w, h) in enumerate([(23, 9), (8, 19), (30, 13)]):
+        xy = np.round(rng.uniform(0, 1, (3, 2)) * (w, h) * 256) / 256
+        while cov.area2(xy) == 0:  # pragma: no cover - a seeded draw that is never flat
+            xy = np.round(rng.uniform(0, 1, (3, 2)) * (w, h) * 256) / 256
+        label = f"random oblong {k + 1}: a {w} × {h} image (width × height)"
+        out.append(CoverageCase(label, xy[None], (0, 0), (w, h)))
+    return out
 
 
 # -- the mistakes -------------------------------------------------------------------------------
@@ -200,8 +214,9 @@ def _transposed_and_wrong(args, expected, got) -> bool:
 def _transposed_words(args, expected, got) -> str:
     shape = expected.shape[1:]
     return (
-        f"your image has shape {shape[::-1]} = (width, height), transposed: an image is "
-        f"(height, width) = {shape}. Even transposed back it is wrong"
+        f"your image has shape {shape[::-1]} = (width, height): arrays are [row, col], so an "
+        f"image is (height, width) = {shape}, np.zeros((height, width)), its row i the pixels "
+        "whose centres have y = i + 0.5 and its column j those with x = j + 0.5"
     )
 
 

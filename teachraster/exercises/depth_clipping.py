@@ -150,12 +150,14 @@ def as_polygon(value) -> np.ndarray:
     return as_numbers(value, (-1, 4), "an (n, 4) array of vertices (x, y, z, w)")
 
 
-def clip_with(v, distance=None, t_from=None, new=True, from_end=False) -> np.ndarray:
+def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=None) -> np.ndarray:
     """Sutherland-Hodgman against one plane, with the usual mistakes as knobs.
 
     ``distance(vertex)`` is the signed distance (z + w: the right one); ``t_from(a, b)`` the
     crossing parameter (default d_a / (d_a − d_b)); ``new=False`` adds no vertex where an edge
-    crosses; ``from_end`` measures t from the other end of the edge. None where undefined.
+    crosses; ``from_end`` measures t from the other end of the edge; ``keep_w`` ("inside" or
+    "first") gives the new vertex the w of the edge's inside vertex or of its first one
+    instead of interpolating it. None where undefined.
     """
     v = np.asarray(v, dtype=float)
     distance = distance or (lambda p: p[2] + p[3])
@@ -169,23 +171,29 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False) -> np.nda
             if (da >= 0) != (db >= 0) and new:
                 t = da / (da - db) if t_from is None else t_from(a, b)
                 t = 1 - t if from_end else t
-                out.append(a + t * (b - a))
+                c = a + t * (b - a)
+                if keep_w is not None:
+                    c[3] = a[3] if keep_w == "first" or da >= 0 else b[3]
+                out.append(c)
     poly = np.array(out).reshape(-1, 4)
     return poly if np.isfinite(poly).all() else None
 
 
-def _crossing(v) -> str:
-    """Where the first crossing edge meets the plane, and the t that says it."""
+def _crossing(v, z_alone: bool = True) -> str:
+    """Where the first crossing edge meets the plane, and the t that says it (and the t that
+    z alone gives, for the mistake that takes it: r39 04-2)."""
     d = v[:, 2] + v[:, 3]
     for i in range(3):
         j = (i + 1) % 3
         if (d[i] >= 0) != (d[j] >= 0):
             t = d[i] / (d[i] - d[j])
             zt = v[i, 2] / (v[i, 2] - v[j, 2]) if v[i, 2] != v[j, 2] else float("nan")
-            return (
+            at = (
                 f"edge v{i + 1}→v{j + 1} crosses the near plane at t = d{i + 1}/(d{i + 1} − "
-                f"d{j + 1}) = {num(t)} with d = z + w, at {vec(v[i] + t * (v[j] - v[i]))}; "
-                f"z alone gives z{i + 1}/(z{i + 1} − z{j + 1}) = {num(zt)}"
+                f"d{j + 1}) = {num(t)} with d = z + w, at {vec(v[i] + t * (v[j] - v[i]))}"
+            )
+            return (
+                f"{at}; z alone gives z{i + 1}/(z{i + 1} − z{j + 1}) = {num(zt)}" if z_alone else at
             )
     return "no edge crosses the near plane"
 
@@ -218,8 +226,24 @@ def _unclipped_words(args, expected, got) -> str:
     )
 
 
-def _words_with_crossing(text: str):
-    return lambda args, expected, got: f"{text}: {_crossing(args[0])}"
+def _words_with_crossing(text: str, z_alone: bool = False):
+    return lambda args, expected, got: f"{text}: {_crossing(args[0], z_alone)}"
+
+
+def _w_words(args, expected, got) -> str:
+    """The new vertex's w the student kept, and the interpolated one (r39 04-2)."""
+    g = np.asarray(got, float).reshape(-1, 4)
+    (v,) = args
+    new = [p for p in expected if not any(all_close(p, q) for q in v)]
+    if not new:
+        return "interpolate all four components of the new vertices, w included"
+    p = new[0]
+    near = g[int(np.argmin(np.abs(g[:, :3] - p[:3]).sum(axis=1)))] if len(g) else p
+    return (
+        f"your new vertex at ({num(near[0])}, {num(near[1])}, {num(near[2])}) has the right x, "
+        f"y and z but w = {num(near[3])}; interpolated at the same t, w is {num(p[3])}: "
+        "interpolate all four components, w included"
+    )
 
 
 def _behind(args, expected, got) -> bool:
@@ -242,7 +266,8 @@ CLIP_MISTAKES = [
     Mistake("after the divide", _divide_words, gives=lambda v: clip_with(v, _divided)),
     Mistake("t from z only", _words_with_crossing("the new vertex lies where z + w = 0, at t = "
             "d1/(d1 − d2) with d = z + w (the signed distance to the plane z = −w); you took t "
-            "from z alone"), gives=lambda v: clip_with(v, t_from=lambda a, b: a[2] / (a[2] - b[2]))),
+            "from z alone", z_alone=True),
+            gives=lambda v: clip_with(v, t_from=lambda a, b: a[2] / (a[2] - b[2]))),
     Mistake("t from the divide", _words_with_crossing("you took t from z/w after the divide; "
             "the new vertex is interpolated in clip space, at t = d1/(d1 − d2) with d = z + w"),
             gives=lambda v: clip_with(v, t_from=lambda a, b: _divided(a) / (_divided(a) - _divided(b)))),
@@ -252,6 +277,15 @@ CLIP_MISTAKES = [
     Mistake("plane z = 0", "you clipped against z = 0 (Direct3D's near plane); GL's clip space "
             "keeps z ≥ −w: the distance to the near plane is z + w",
             gives=lambda v: clip_with(v, lambda p: p[2])),
+    Mistake("far plane's distance", "you measured the distance as z − w, the far plane's "
+            "expression with its sign turned: it keeps z ≥ w, beyond the far plane, where no "
+            "vertex lies, so nothing is left; the near plane keeps z + w ≥ 0",
+            gives=lambda v: clip_with(v, lambda p: p[2] - p[3])),
+    Mistake("far plane", "you clipped against the far plane (w − z ≥ 0 keeps z ≤ w); the near "
+            "plane keeps z ≥ −w: the distance to it is z + w",
+            gives=lambda v: clip_with(v, lambda p: p[3] - p[2])),
+    Mistake("w not interpolated", _w_words, gives=lambda v: clip_with(v, keep_w="inside")),
+    Mistake("w not interpolated", _w_words, gives=lambda v: clip_with(v, keep_w="first")),
     Mistake("no new vertices", "you dropped the vertices behind the near plane but added none "
             "where the edges cross it: each crossing edge gives a new vertex, on the plane",
             gives=lambda v: clip_with(v, new=False)),
@@ -268,7 +302,8 @@ def explain_clip(args, expected, got) -> str:
 
 def _clip_rule(args, expected, got) -> str:
     return (
-        f": {_crossing(args[0])}. Interpolate the new vertices in clip space, before the divide, "
+        f": {_crossing(args[0], z_alone=False)}. Interpolate the new vertices in clip space, "
+        "before the divide, "
         "and keep the inside vertices in order"
     )
 

@@ -4,8 +4,8 @@ Given every answer of a check, :func:`diagnose` decides, for each failing case, 
 explain it, in this order:
 
 1. **A constant answer.** When every answer is the same while the expected answers differ,
-   the function ignores its arguments (``return 0`` left in): that is said first, and nothing
-   else is invented.
+   and no mistake of the table gives every failing answer, the function ignores its
+   arguments (``return 0`` left in): that is said first, and nothing else is invented.
 2. **A mistake that gives every answer.** Each :class:`~.exercise.Mistake` is run on every
    answered case; one that gives the student's answer on all of them (passing cases
    included) is the cause, named on every failure it explains. A single mistake is preferred
@@ -306,12 +306,6 @@ def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]
     if not failing:
         return {}
     out = {}
-    value = run_checker(lambda: _constant(results), None)
-    if value is not None:
-        words = (spec.constant or constant_words)(value)
-        for r in failing:
-            out[r.index] = ("constant", _say(spec, r, words))
-        return out
     mistakes = spec.all_mistakes() + [low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     fits = [f for f in fits if f.whole or not f.mistake.only_whole]
@@ -319,6 +313,15 @@ def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]
         (f for f in fits if f.whole and not f.mistake.symptom),
         key=lambda f: (len(f.mistake.parts), f.order),
     )
+    value = run_checker(lambda: _constant(results), None)
+    # r39 02-2, 04-1: the same answer everywhere is a placeholder only when no mistake of the
+    # table gives every failing answer (``clip_near`` with the far plane's z − w keeps nothing
+    # of any case, a ``span`` returned as (stop, first) covers nothing: computed, not left in)
+    if value is not None and not any(len(f.failing) == len(failing) for f in whole):
+        words = (spec.constant or constant_words)(value)
+        for r in failing:
+            out[r.index] = ("constant", _say(spec, r, words))
+        return out
     for r in failing:
         chosen = next((f for f in whole if r.index in f.failing), None)
         if chosen is None:

@@ -207,6 +207,11 @@ class Exercise:
         (text, short): a long sentence that many explanations share, said in full by the
         first failing case (in case order) whose explanation holds it and as ``short`` by the
         rest (r23 D-6: ``line_pixels``' ~90-word tie rule stood on every line).
+    hints : sequence of (str, str)
+        (text, hint): words that give away what the task asks to work out (a formula), said
+        as ``hint`` on the task's first failing check in a kernel and in full from the second
+        on (r39: the first wrong try printed ⌈x_l − ½⌉, λ_i / w_i, the inequality for n);
+        :mod:`.tries` counts the checks.
     """
 
     name: str
@@ -232,6 +237,7 @@ class Exercise:
     free_causes: int = 2
     reference: Sequence[str] = ()
     once: Sequence[tuple[str, str]] = ()
+    hints: Sequence[tuple[str, str]] = ()
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

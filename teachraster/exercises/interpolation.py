@@ -105,15 +105,28 @@ def _far(args) -> tuple[float, float]:
 
 
 def bary_float32_words(args, expected, got) -> str | None:
-    """Far from the origin: the cancellation of planes in absolute coordinates."""
+    """Far from the origin, named from the size of the error (r39 03-1): float32's rounding
+    of λ itself (the general words), the inputs rounded to float32 (they lose the 1/256-px
+    grid), or more than both (a plane in absolute coordinates cancels)."""
     far, _ = _far(args)
-    if far < 1e4:
+    error = float(np.max(np.abs(np.asarray(got, float) - expected)))
+    if far < 1e4 or error <= 8 * 2.0**-24 * max(1.0, float(np.abs(expected).max())):
         return None
+    xy, p = args
+    spacing = float(np.spacing(np.float32(far)))
+    moved = barycentric(np.float32(xy).astype(float), np.float32(p).astype(float))
+    by_inputs = float(np.max(np.abs(moved - expected)))
+    head = f". {num(far)} px from the origin float32 numbers are {num(spacing)} px apart"
+    if error <= 4 * by_inputs + 1e-6:
+        return (
+            f"{head} and cannot hold the 1/256-px grid of the vertices and p: in float32 they "
+            f"move by up to {num(spacing / 2)} px, which alone moves λ by {num(by_inputs)}. "
+            "Keep the coordinates in float64 (plain Python floats or np.float64)"
+        )
     return (
-        f". {num(far)} px from the origin float32 numbers are "
-        f"{num(float(np.spacing(np.float32(far))))} px apart, and a plane A·x + B·y + C evaluated "
-        "in absolute coordinates cancels catastrophically (C is about x², the answer far "
-        "smaller): compute differences p − v to a vertex first, in float64"
+        f"{head}, and a plane A·x + B·y + C evaluated in absolute coordinates cancels "
+        "catastrophically (C is about x², the answer far smaller): in float32, compute "
+        "differences p − v to a vertex first; better, compute in float64"
     )
 
 
@@ -130,9 +143,58 @@ def _bary_rule(args, expected, got) -> str:
 
 
 def _draw_bary(ax, case, got):
+    """The weights as bars, expected beside yours, and beside them the triangle with p and
+    the sub-triangle opposite each vertex, whose share of the whole is that vertex's weight
+    (r39 03-5: the bars alone did not say which case they were)."""
     from .drawing import draw_values
 
-    return draw_values(ax, ["λ1", "λ2", "λ3"], case[2], got)
+    _, (xy, p), expected = case
+    artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
+    ax.set_xlim(-0.6, 6.0)  # the right part of the axes holds the triangle
+    ax.set_ylabel("weight")
+    artists.append(ax.legend(fontsize="x-small", loc="upper left"))
+    artists += _draw_triangle_and_p(ax.inset_axes([0.56, 0.06, 0.42, 0.88]), xy, p)
+    return artists
+
+
+def _draw_triangle_and_p(ax, xy, p) -> list:
+    """The triangle v1 v2 v3 (y down, as on screen), the point p, and the sub-triangle
+    opposite each v_i shaded in λ_i's colour."""
+    from matplotlib.patches import Polygon
+
+    xy, p = np.asarray(xy, float), np.asarray(p, float)
+    # far from the origin, coordinates relative to a corner (matplotlib's ticks would not
+    # tell 100000.5 from 100001)
+    far = float(np.abs(xy).max()) >= 1000
+    origin = np.floor(xy.min(axis=0)) if far else np.zeros(2)
+    v, q = xy - origin, p - origin
+    colours = ("#1b9e77", "#d95f02", "#7570b3")
+    artists = []
+    for k in range(3):
+        sub = np.array([q, v[(k + 1) % 3], v[(k + 2) % 3]])
+        artists.append(ax.add_patch(Polygon(sub, color=colours[k], alpha=0.3, lw=0)))
+        centre = sub.mean(axis=0)
+        artists.append(ax.annotate(f"λ{k + 1}", centre, ha="center", va="center",
+                                   fontsize="small", color=colours[k]))  # fmt: skip
+    ring = np.vstack([v, v[:1]])
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    for k in range(3):
+        artists.append(ax.annotate(f"v{k + 1}", v[k], fontsize="small", xytext=(3, 3),
+                                   textcoords="offset points"))  # fmt: skip
+    artists += ax.plot(*q, "o", color="black", ms=4)
+    artists.append(
+        ax.annotate("p", q, fontsize="small", xytext=(4, -10), textcoords="offset points")
+    )
+    pts = np.vstack([v, q])
+    pad = 0.1 * float(np.ptp(pts, axis=0).max()) + 0.5
+    ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
+    ax.set_ylim(pts[:, 1].max() + pad, pts[:, 1].min() - pad)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    if far:
+        ax.set_xlabel(f"from ({num(origin[0])}, {num(origin[1])})", fontsize="x-small")
+    return artists
 
 
 BARYCENTRIC = Exercise(

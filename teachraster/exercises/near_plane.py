@@ -7,7 +7,12 @@ z_win = (f / (f − n)) (1 − n / z) and step = 1 / (2^bits − 1), the student
 smallest near-plane distance n: the classic advice "push the near plane out", quantified.
 
 Expected answers: the near plane at which :func:`teachraster.depth_resolution` (the
-package's own) equals ``gap``, found by bisection on it, so no second formula decides.
+package's own) equals ``gap``, found by bisection on it, so no second formula decides. An
+answer is checked against the criterion, not closeness to that number (r39 05-1, 05-2): it
+passes when the buffer tells the two surfaces apart there, by the first-order resolution or
+by whole steps (their window depths, :func:`teachraster.pipeline.visibility.depth.window_depth`,
+one step apart, with the second surface at z − gap or at z + gap), and it is at most
+:data:`SLACK` further out than the farthest of those smallest near planes.
 """
 
 from __future__ import annotations
@@ -17,7 +22,7 @@ from functools import cache
 
 import numpy as np
 
-from ..pipeline.visibility.depth import depth_resolution
+from ..pipeline.visibility.depth import depth_resolution, window_depth
 from .answers import as_number
 from .exercise import Exercise, Mistake, variant_mistakes
 from .scalars import num
@@ -29,7 +34,13 @@ SETTINGS = (
     (2.0, 0.001, 100.0, 16), (50.0, 0.05, 100.0, 16), (100.0, 0.005, 1000.0, 24),
     (300.0, 0.005, 1000.0, 24), (1000.0, 0.1, 10000.0, 24), (30.0, 0.001, 50.0, 24),
     (5.0, 0.0001, 1000.0, 24), (20.0, 2.0, 25.0, 16), (900.0, 50.0, 1000.0, 16),
+    # a thin gap near the far plane: the factor (f - n)/f moves n by 2 %, past SLACK
+    (900.0, 0.5, 1000.0, 16),
 )  # fmt: skip
+
+#: How much further out than the smallest near plane an answer may be (a safe near plane,
+#: found by bisection or rounded to a few digits, is right).
+SLACK = 0.01
 
 
 def resolution(z, near, far, bits) -> float:
@@ -40,13 +51,39 @@ def resolution(z, near, far, bits) -> float:
 def expected_near(z: float, gap: float, far: float, bits: int) -> float:
     """The near plane n with resolution(z, n) == gap: bisection on the package's Δz, which
     falls as n grows."""
+    return _smallest(lambda n: resolution(z, n, far, bits) <= gap, z)
+
+
+def steps_apart(z0: float, z1: float, near: float, far: float, bits: int) -> float:
+    """How many steps of the buffer lie between the window depths of distances z0 and z1."""
+    d = window_depth([z0, z1], near, far)
+    return float(abs(d[1] - d[0])) * (2**bits - 1)
+
+
+def bounds(z: float, gap: float, far: float, bits: int) -> tuple[float, float]:
+    """(lowest, highest) near plane that passes: the smallest at which the surfaces are told
+    apart by any reading (whole steps between z − gap and z is the most lenient), and
+    :data:`SLACK` beyond the largest (whole steps between z and z + gap)."""
+    back = _smallest(lambda n: steps_apart(z - gap, z, n, far, bits) >= 1, z)
+    ahead = _smallest(lambda n: steps_apart(z, z + gap, n, far, bits) >= 1, z)
+    first = expected_near(z, gap, far, bits)
+    return min(back, first), max(ahead, first) * (1 + SLACK)
+
+
+@cache
+def _bounds(z, gap, far, bits) -> tuple[float, float]:
+    return bounds(z, gap, far, bits)
+
+
+def _smallest(told_apart, z: float) -> float:
+    """The smallest n in (0, z) where ``told_apart(n)`` holds (it holds for every larger n)."""
     lo, hi = 1e-12 * z, z
     for _ in range(200):
         mid = (lo * hi) ** 0.5 if hi / lo > 4 else (lo + hi) / 2
-        if resolution(z, mid, far, bits) > gap:
-            lo = mid
-        else:
+        if told_apart(mid):
             hi = mid
+        else:
+            lo = mid
         if hi - lo <= 1e-15 * hi:
             break
     return hi
@@ -68,8 +105,16 @@ def _near_cases() -> list[tuple[str, tuple, float]]:
 
 
 def same_near(got, expected, args=None) -> bool:
-    """Within 1e-6: an n computed in float32 is right (a slip is off by far more)."""
-    return close(got, expected, 1e-6)
+    """The surfaces are told apart at n = ``got`` and it is not needlessly far out (between
+    :func:`bounds`, with float32's rounding at the low end); without the case's ``args``,
+    within 1e-6 of ``expected``."""
+    if args is None:
+        return close(got, expected, 1e-6)
+    if not np.isfinite(got):
+        return False
+    z, gap, far, bits = args
+    lo, hi = _bounds(float(z), float(gap), float(far), int(bits))
+    return lo * (1 - 1e-6) <= got <= hi
 
 
 def _variants(z, gap, far, bits) -> dict[str, float]:
@@ -116,12 +161,23 @@ MISTAKES = {
 def explain_near(args, expected, got) -> str:
     """The case, the smallest near plane and yours, with the resolution yours gives."""
     z, gap, far, bits = args
+    lo = _bounds(float(z), float(gap), float(far), int(bits))[0]
     head = (f"at z = {num(z)} with far = {num(far)} and {bits} bits, surfaces {num(gap)} apart "
-            f"need n ≥ {num(expected, got)}; yours is {num(got, expected)}")  # fmt: skip
+            f"need n ≥ {num(expected, got)} (to first order; {num(lo, got)} counting whole "
+            f"steps); yours is {num(got, expected)}")  # fmt: skip
     if not np.isfinite(got) or not 0 < got < z:
         return head
     yours = resolution(z, got, far, bits)
-    verdict = "too coarse: they would z-fight" if yours > gap else "finer than needed"
+    lo, hi = _bounds(float(z), float(gap), float(far), int(bits))
+    if got < lo:
+        steps = steps_apart(z - gap, z, got, far, bits)
+        verdict = (f"too coarse: the two surfaces' window depths lie {num(steps)} of a step "
+                   "apart, so both can round to one stored value and z-fight")  # fmt: skip
+    elif got > hi:
+        verdict = (f"finer than needed: any near plane from {num(lo, got)} to {num(hi, got)} "
+                   "tells them apart, and yours lies further out, losing precision elsewhere")  # fmt: skip
+    else:
+        verdict = "right"
     return f"{head}, where the buffer resolves Δz = {num(yours)} ({verdict})"
 
 
@@ -151,7 +207,7 @@ def draw_near(ax, case, got):
     artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
     artists.append(ax.axvline(expected, color="#2b7bba", label="smallest n (expected)"))
     if got is not None and np.isfinite(got) and 0 < got < z:
-        colour = "#7fbf7f" if close(got, expected) else "#d7301f"
+        colour = "#7fbf7f" if same_near(got, expected, (z, gap, far, bits)) else "#d7301f"
         artists.append(ax.axvline(got, color=colour, linestyle="--", label="your n"))
     ax.set_xlabel("near plane n")
     ax.set_ylabel("depth resolution Δz")
@@ -161,5 +217,12 @@ def draw_near(ax, case, got):
 
 SAFE_NEAR = Exercise(
     "safe_near", near_cases, as_number, same_near, explain_near, _rule,
-    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_near,
+    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_near, hints=(
+        # r39 05-3: the first wrong try printed the inequality the task asks to derive
+        ("; solve step (f − n) z² / (f n) ≤ gap for n exactly", "; keep it and solve for n "
+         "exactly"),
+        (": Δz ≈ step · z² / n (for f ≫ n), so n grows like z², not like z", ""),
+        ("; solve step · (f − n) z² / (f n) ≤ gap for n", "; differentiate z_win with respect "
+         "to z, and find the n where one step divided by that slope at z is gap"),
+    ),
 )  # fmt: skip

@@ -6,7 +6,9 @@ kernel take longer than the function itself, and would bury the report. While a 
 first ``KEEP`` lines written from the checking threads (the thread calling ``check`` and the
 threads running its cases), counts the rest, and passes every other thread's output through.
 Afterwards :meth:`Capture.summary` says how much was printed and :meth:`Capture.replay` writes
-the lines kept, under a heading, to the real output.
+the lines kept, under a heading, to the real output. A warning (numpy's "overflow encountered
+in divide") raised in the checking threads is counted apart, by its text, and said as a
+warning, never as something the function printed (r39 03-2).
 
 >>> import sys
 >>> with captured() as out:
@@ -20,6 +22,7 @@ from __future__ import annotations
 
 import sys
 import threading
+import warnings
 from contextlib import contextmanager
 
 #: Lines kept (and shown after the check); the others are counted only.
@@ -34,6 +37,7 @@ class Capture:
     def __init__(self):
         self.kept: list[str] = []
         self.lines = 0
+        self.warned: dict[str, int] = {}  # each warning's text: how often
         self._partial = ""
         self._threads = {threading.get_ident()}
         self._lock = threading.Lock()
@@ -57,20 +61,33 @@ class Capture:
             room = KEEP - len(self.kept)
             self.kept += [line[:WIDTH] for line in done[:room]]
 
+    def warn(self, text: str) -> None:
+        """Count one warning (its category and message), apart from the printed lines."""
+        with self._lock:
+            if text in self.warned or len(self.warned) < KEEP:
+                self.warned[text[:WIDTH]] = self.warned.get(text[:WIDTH], 0) + 1
+
     def finish(self) -> None:
         if self._partial:
             self.write("\n")
 
     def summary(self) -> str | None:
-        """A sentence for the report, or None when nothing was printed."""
-        if not self.lines:
-            return None
-        shown = min(self.lines, len(self.kept))
-        rest = f"; the first {shown} are shown below the report" if shown else ""
-        return (
-            f"your function printed {self.lines} line{'s' * (self.lines != 1)} during the "
-            f"check{rest} (printing is slow in a notebook: remove debug prints once done)"
-        )
+        """A sentence for the report, or None when nothing was printed nor warned."""
+        said = []
+        if self.warned:
+            n = sum(self.warned.values())
+            texts = "; ".join(self.warned)
+            said.append(f"your code raised {n} warning{'s' * (n != 1)} during the check "
+                        f"({texts}): not a print of yours, numpy telling of an operation "
+                        "that overflowed or divided by zero")  # fmt: skip
+        if self.lines:
+            shown = min(self.lines, len(self.kept))
+            rest = f"; the first {shown} are shown below the report" if shown else ""
+            said.append(
+                f"your function printed {self.lines} line{'s' * (self.lines != 1)} during the "
+                f"check{rest} (printing is slow in a notebook: remove debug prints once done)"
+            )
+        return "; and ".join(said) or None
 
     def replay(self, stream) -> None:
         """Write the lines kept to ``stream``, under a heading."""
@@ -133,10 +150,21 @@ def captured():
     capture = Capture()
     out, err = sys.stdout, sys.stderr
     sys.stdout, sys.stderr = _Stream(capture, out), _Stream(capture, err)
+    shown = warnings.showwarning
+
+    def showwarning(message, category, filename, lineno, file=None, line=None):
+        if file is None and capture.owns():
+            capture.warn(f"{category.__name__}: {message}")
+        else:
+            shown(message, category, filename, lineno, file, line)
+
+    warnings.showwarning = showwarning
     _state.capture = capture
     try:
         yield capture
     finally:
+        if warnings.showwarning is showwarning:
+            warnings.showwarning = shown
         _state.capture = None
         if isinstance(sys.stdout, _Stream) and sys.stdout._capture is capture:
             sys.stdout = out

@@ -133,5 +133,12 @@ PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
     variant_mistakes(_variants, MISTAKES, SYMPTOMS),
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row)),
-    draw=draw_weights,
+    draw=draw_weights, hints=(
+        # r39 03-3: the first wrong try printed the answer the task asks to work out
+        ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "
+         "weights μ and the three w (a point's screen x is x/w), then turn that around"),
+        ("neither divided by w nor summing to 1", "neither the 3-D weights nor summing to 1"),
+        (" (μ_i ∝ λ_i / w_i, normalised to sum to 1)", ": write λ_i in terms of μ and the three "
+         "w, turn that around, and make the weights sum to 1"),
+    ),
 )  # fmt: skip

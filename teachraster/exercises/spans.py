@@ -50,9 +50,47 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, [row for row, _ in rows])
         for row, why in rows:
             out.append((f"{label}, row {row} ({why})", (xy.copy(), row), covered[row]))
+    # r39 02-1: far from the origin float32 cannot hold the 1/256-px grid, but no row above
+    # turned on it (a float32 span passed every case): rows where it does
+    for k, (xy, row) in enumerate(_float32_rows()):
+        covered = _covered_rows(xy, [row])
+        out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
+                    "end)", (xy, row), covered[row]))  # fmt: skip
     # first (the drawing of a passing check): a row with covered centres on a vertex's line
     first = next(k for k, case in enumerate(out) if case[2] and "vertex" in case[0])
     return [out[first]] + out[:first] + out[first + 1 :]
+
+
+def _float32_rows(count: int = 3) -> list[tuple[np.ndarray, int]]:
+    """(xy, row) of seeded random triangles 100 000 px from the origin, on the 1/256-px grid,
+    where the span computed in float32 differs from the exact one (a few hundred triangles
+    searched: about 1 row in 200 differs)."""
+    rng = np.random.default_rng(2026)
+    out = []
+    for _ in range(2000):
+        xy = 100000.0 + np.round(rng.uniform(0, 12, (3, 2)) * 256) / 256
+        rows = list(range(100000, 100012))
+        covered = _covered_rows(xy, rows)
+        row = next((r for r in rows if (_span_float32(xy, r) or frozenset()) != covered[r]), None)
+        if row is not None:
+            out.append((xy, row))
+        if len(out) == count:
+            break
+    return out
+
+
+def _span_float32(xy: np.ndarray, row: int) -> frozenset | None:
+    """The span of a student who computes the crossings in float32 (None: no crossing)."""
+    v = np.asarray(xy, np.float32)
+    y, half = np.float32(row + 0.5), np.float32(0.5)
+    xs = []
+    for k in range(3):
+        (ax, ay), (bx, by) = v[k], v[(k + 1) % 3]
+        if ay != by and min(ay, by) <= y <= max(ay, by):
+            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+    if not xs:
+        return None
+    return _columns(math.ceil(min(xs) - half), math.ceil(max(xs) - half))
 
 
 def _rows(xy: np.ndarray) -> list[tuple[int, str]]:
@@ -83,7 +121,15 @@ def _covered_rows(xy: np.ndarray, rows: list[int]) -> dict[int, frozenset]:
 
 
 # -- reading and comparing the answer ---------------------------------------------------------
-def as_span(value) -> frozenset:
+class Span(frozenset):
+    """The covered columns, with the pair (first, stop) the student returned (``pair``): two
+    answers that cover nothing may still differ (r39 02-2: ``(stop, first)`` is no
+    placeholder)."""
+
+    pair: tuple[int, int] = (0, 0)
+
+
+def as_span(value) -> Span:
     """The columns first <= col < stop of a returned (first, stop) pair of whole numbers."""
     arr = as_numbers(value, (2,), "a pair (first, stop) of column numbers")
     if not np.isfinite(arr).all() or (arr != np.round(arr)).any():
@@ -91,11 +137,58 @@ def as_span(value) -> frozenset:
     first, stop = (int(v) for v in arr)
     if stop - first > 10**6:
         raise WrongAnswerType(f"returned {short(value)}: a span of {stop - first} columns")
-    return frozenset(range(first, stop))
+    out = Span(range(first, stop))
+    out.pair = (first, stop)
+    return out
 
 
 def same_span(got: frozenset, expected: frozenset, args=None) -> bool:
-    return got == expected
+    return set(got) == set(expected)
+
+
+def _returned(got) -> tuple[int, int] | None:
+    return getattr(got, "pair", None)
+
+
+def _constant_span(value) -> str:
+    """A span that never changes, in the student's terms (r39 02-3: not ``frozenset()``)."""
+    pair = _returned(value)
+    if not value:
+        shown = f"{pair} " if pair else ""
+        return (
+            f"your function returns the same empty span {shown}(stop ≤ first: no column) on "
+            "every case, whatever its arguments: a placeholder (such as `return 0, 0`) left "
+            "in, or a `return` reached too early?"
+        )
+    return (
+        f"your function returns {_span_words(value)} on every case, whatever its arguments: a "
+        "placeholder left in, or a `return` reached too early?"
+    )
+
+
+def _swapped_fits(args, expected, got) -> bool:
+    pair = _returned(got)
+    return bool(expected) and pair is not None and frozenset(range(pair[1], pair[0])) == expected
+
+
+def _far_float32_fits(args, expected, got) -> bool:
+    xy, _ = args
+    return (
+        float(np.abs(xy).max()) >= 1e4
+        and bool(expected ^ set(got))
+        and (len(expected ^ set(got)) == 1 or _span_float32(*args) == set(got))
+    )
+
+
+def _far_float32_words(args, expected, got) -> str:
+    far = float(np.abs(args[0]).max())
+    spacing = float(np.spacing(np.float32(far)))
+    return (
+        f": {num(far)} px from the origin float32 numbers are {num(spacing)} px apart and "
+        "cannot hold the vertices' 1/256-px grid, so a crossing computed in float32 can move "
+        "past a centre. Did you compute in float32 (np.float32, or an array of that type)? "
+        "Compute in float64 (plain Python floats or np.float64)"
+    )
 
 
 # -- why a span is wrong ----------------------------------------------------------------------
@@ -194,6 +287,14 @@ def _ends_fits(args, expected, got) -> bool:
 
 
 SYMPTOMS = (
+    Mistake(
+        "first and stop swapped",
+        "you returned (stop, first): the pair is (first, stop), "
+        "the first covered column and the first one past the span, and a span with stop ≤ "
+        "first covers nothing",
+        fits=_swapped_fits,
+    ),  # fmt: skip
+    Mistake("float32", _far_float32_words, fits=_far_float32_fits),
     Mistake("horizontal edge", _horizontal_words, fits=_horizontal_fits, symptom=True),
     Mistake("ends", "one end of your span is off by one column", fits=_ends_fits, symptom=True),
 )
@@ -268,5 +369,16 @@ def _state(rule: bool, yours: bool, no_answer: bool) -> str:
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
     variant_mistakes(_variants, MISTAKES, SYMPTOMS), answers=(PackageAnswer(rasterize),),
-    draw=draw_span,
+    draw=draw_span, constant=_constant_span, hints=(
+        # r39 02-5: the first wrong try printed the rounding the task asks to work out
+        ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
+         "at or right of x_l?"),
+        (", ⌈x_r − ½⌉ is the first column *not* covered)", ": stop is the first column *not* "
+         "covered)"),
+        (" (⌈x_l − ½⌉, not ⌊x_l − ½⌋ + 1)", ""),
+        ("so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉", "so count the columns whose centres lie between "
+         "them, not the integers nearest to them"),
+        (": ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉", ""),
+    ),
+    match=lambda got, answer, args: set(got) == set(answer),
 )  # fmt: skip

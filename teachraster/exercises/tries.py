@@ -58,6 +58,7 @@ FREE_CAUSES, CAUSE_STEP, CAUSE_MOST = 2, 30.0, 300.0
 
 _FAILED: dict[str, int] = {}
 _WRONG: dict[str, set] = {}
+_HINTED: dict[str, int] = {}  # failing checks of each task, whatever the setting (hints)
 _LOCK = threading.Lock()
 _sleep = time.sleep  # the tests replace it
 
@@ -136,3 +137,23 @@ def wrong_causes(name: str, default: int | None, causes, passed: bool,
         f"waited {seconds:g} s, and each further wrong cause waits {CAUSE_STEP:g} s more (at "
         f"most {CAUSE_MOST:g} s), until one passes"
     )
+
+
+def hinted_check(name: str) -> bool:
+    """Count one failing check of task ``name`` whose words would give the answer away; True
+    for the first in this kernel, which gets the hints instead of those words
+    (:attr:`~.exercise.Exercise.hints`). Unlike the wait, this count is not
+    switched off by ``TEACHRASTER_CHECK_TRIES`` and never starts again: a student who saw the
+    full words once has seen them."""
+    with _LOCK:
+        _HINTED[name] = _HINTED.get(name, 0) + 1
+        return _HINTED[name] == 1
+
+
+def forget_hints(name: str | None = None) -> None:
+    """Start the hints' count of task ``name`` (of every task: None) again (the tests)."""
+    with _LOCK:
+        if name is None:
+            _HINTED.clear()
+        else:
+            _HINTED.pop(name, None)

@@ -36,6 +36,10 @@ NAMED = (
     ("two panes of glass, then a wall between them", [0.2, 0.6, 0.4], [False, False, True]),
     ("glass, then a wall at the same depth", [0.5, 0.5], [False, True]),
     ("nothing drawn", [], []),
+    # r39 04-4: a buffer cleared to the far value 1.0 (GL's default) differs from an empty one
+    # only for a fragment exactly on the far plane
+    ("a fragment exactly on the far plane (depth 1)", [1.0], [True]),
+    ("the far plane, then a nearer wall", [1.0, 0.7], [True, True]),
 )
 
 
@@ -81,9 +85,9 @@ def same_passes(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 
 def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=True,
-              previous=False) -> np.ndarray:  # fmt: skip
+              previous=False, start=np.inf) -> np.ndarray:  # fmt: skip
     """The z-buffer with one rule changed (each keyword is one typical mistake)."""
-    stored, last, out = np.inf, np.inf, []
+    stored, last, out = start, start, []
     for d, write in zip(depths.tolist(), writes.tolist()):
         against = last if previous else stored
         ok = d <= against if ties else d < against
@@ -131,6 +135,10 @@ DEPTH_MISTAKES = [
              "behind a wall is hidden by it", test_all=False),
     _mistake("failed writes", "a fragment that fails the test changes nothing: only a "
              "fragment that passes (and writes) sets the buffer", update=False),
+    _mistake("cleared to 1", "you started the buffer at 1.0 (GL clears it to the far value "
+             "1.0 by default, and then a fragment exactly on the far plane fails): here the "
+             "buffer starts empty, so the first fragment passes whatever its depth, 1.0 "
+             "included", start=1.0),
     _mistake("previous", "you compared each fragment with the one just before it; compare "
              "with the depth the buffer holds (the nearest written so far)", previous=True),
     Mistake("farther passes", "you let the farther fragment pass (>, not <): smaller depth "
