@@ -469,7 +469,8 @@ class PredictOrder(FigurePrediction):
         super().__init__(question, explain, {
             "kind": "order", "items": items, "answer": self.answer,
             "allowImpossible": bool(allow_impossible), "impossibleLabel": impossible_label,
-            "hint": "Drag the items into order (or focus one and use the arrow keys).",
+            "hint": "Drag the items into order (or focus one and use the arrow keys); "
+                    "to answer the order shown, click one of them.",
             **picture})  # fmt: skip
         self.state = {"given": None, "acted": False, "revealed": False}
 

@@ -468,9 +468,13 @@ function mountOrder(root, data, host) {
     check.disabled = checkDisabled(state.revealed, state.acted);
   }
   function move(from, to) {
-    if (to < 0 || to >= order.length || from === to) return;
-    const [item] = order.splice(from, 1);
-    order.splice(to, 0, item);
+    // A touch that moves nothing (a click on a chip, a drop where it was, an arrow key at
+    // the end) still answers: the order shown is an answer too (review r38 05a).
+    to = Math.max(0, Math.min(order.length - 1, to));
+    if (from !== to) {
+      const [item] = order.splice(from, 1);
+      order.splice(to, 0, item);
+    }
     act();
     render_();
   }
