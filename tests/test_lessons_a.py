@@ -1045,3 +1045,19 @@ def test_guard_band_exact_range_and_far_floor_words():
     assert "the rows unrelated" not in four and "phases unrelated" in four  # review r23 04-9
     tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
     assert "GL_DEPTH_CLAMP" in tour and "DepthClipEnable = FALSE" in tour
+
+
+@pytest.mark.notebook
+def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
+    """Review r38 05a: the sticks pass right through each other (each crossing reads at a
+    glance), a question on one ring comes before the order, and the z-buffer's memory is put
+    in numbers (7.9 MiB at 1920 x 1080, 4 bytes a pixel; 949 MiB/s for one layer at 60 Hz)."""
+    ns = lesson("05a_zbuffer")
+    # each crossing's overlap is a real patch, not a sliver at the sticks' ends
+    assert min(ns.wrong_by_order["cyclic_overlap"].values()) >= 60
+    assert (ns.left_top, ns.left_under) in ns.crossings
+    assert any("answer=left_top" in c for c in _cells("05a_zbuffer", "code"))
+    assert round(1920 * 1080 * 4 / ns.MiB, 1) == 7.9 and round(ns.layer_traffic) == 949
+    text = "\n".join(_cells("05a_zbuffer", "markdown"))
+    assert "labels of the question's picture" not in text
+    assert "GL_ALWAYS" in text and "glDisable(GL_DEPTH_TEST)" in text
