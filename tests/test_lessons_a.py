@@ -619,7 +619,7 @@ def test_05b_explore_heading_sits_just_before_its_widget():
 def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
     """Review r2, 05b: the δ line on the resolution chart let the Predict be read off the chart."""
     code = _cells("05b_depth_precision", "code")
-    ask = next(i for i, c in enumerate(code) if "Predict(" in c and "z-fight" in c)
+    ask = next(i for i, c in enumerate(code) if re.search(r"\bPredict\w*\(", c) and "fight" in c)
     assert not any("axhline" in c for c in code[:ask])
 
 
@@ -1061,3 +1061,22 @@ def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
     text = "\n".join(_cells("05a_zbuffer", "markdown"))
     assert "labels of the question's picture" not in text
     assert "GL_ALWAYS" in text and "glDisable(GL_DEPTH_TEST)" in text
+
+
+@pytest.mark.notebook
+def test_05b_colours_by_attribute_reverse_question_and_where_the_values_lie():
+    """Review r38 05b: the squares' colours are read from the loop, not from triangle numbers
+    (the Try-it that draws blue first then counts right); q_reverse asks about float32; and
+    section 4 counts the stored values per decade of z (issue 31's view, with the explorer)."""
+    ns = lesson("05b_depth_precision")
+    assert ns.is_blue.sum() == 12 and not ns.is_blue[0]
+    c = ns.per_decade
+    for label in ("unorm16", "unorm24", "float32"):  # window depth: tenfold fewer per decade
+        assert all(9 < a / b < 11 for a, b in zip(c[label][1:], c[label][2:]))
+    assert c["float32"][1:] == c["unorm24"][1:]  # "alike beyond z = 1"
+    assert c["float32"][0] > 0.9 * sum(c["float32"])  # "almost all its values before z = 1"
+    rev = c["float32 reverse-Z"]
+    assert max(rev[:3]) / min(rev[:3]) < 1.1 and rev[3] > rev[2]  # even, then the tiny floats
+    code = "\n".join(_cells("05b_depth_precision", "code"))
+    assert "DepthValuesExplorer(near=n_, far=f_)" in code and "<b>float32</b>" in code
+    assert "frames[fmt].triangle_id < 12" not in code and "clip[~is_blue]" in code
