@@ -319,6 +319,15 @@ function mountPoint(root, data, host) {
     const mine = toPx(state.given || start);
     if (state.revealed) {
       const truth = toPx(data.answer);
+      if (data.revealCurve) {
+        // the curve the answer comes from (PredictPoint's reveal_curve), kept out of the
+        // question's picture
+        ctx.strokeStyle = "#009E73";
+        ctx.lineWidth = 3;
+        ctx.beginPath();
+        data.revealCurve.forEach((p, k) => (k ? ctx.lineTo(...toPx(p)) : ctx.moveTo(...toPx(p))));
+        ctx.stroke();
+      }
       if (data.rayFrom) {
         // the ray that finds the answer (PredictPoint's ray_from), on past it a little
         const from = toPx(data.rayFrom);
