@@ -631,7 +631,11 @@ def test_05b_fight_distance_is_worked_out_from_one_anchor_not_read_off_a_curve()
     ns = lesson("05b_depth_precision")
     assert ns.dz_at_1 * ns.cross16**2 == pytest.approx(ns.delta)  # the z² law from the anchor
     ask = next(c for c in _cells("05b_depth_precision", "code") if "PredictPoint(" in c)
-    assert "linspace" not in ask and "depth_resolution(z_" not in ask  # no curve drawn
+    picture = ask[ask.index("def gap_and_anchor") : ask.index("z_law = ")]
+    assert "space" not in picture and "depth_resolution(z_" not in ask  # no curve drawn
+    # review r38 05b: the curve is drawn after Check, through the answer on the δ line
+    assert "reveal_curve=np.column_stack([z_law, dz_at_1 * z_law**2])" in ask
+    assert "answer=(cross16, 0.005)" in ask
     assert "becomes possible" in ask and "not yet likely" in ask
     assert "from which they z-fight" not in ask
 
@@ -1080,3 +1084,15 @@ def test_05b_colours_by_attribute_reverse_question_and_where_the_values_lie():
     code = "\n".join(_cells("05b_depth_precision", "code"))
     assert "DepthValuesExplorer(near=n_, far=f_)" in code and "<b>float32</b>" in code
     assert "frames[fmt].triangle_id < 12" not in code and "clip[~is_blue]" in code
+
+
+@pytest.mark.notebook
+def test_05b_units_alone_one_loses_where_the_histogram_says_three_win():
+    """Review r38 05b-6: the experiment shows the small bias that works, not only the slope
+    term's thousands of steps: one unit loses where the decal came out 1 or 2 steps behind."""
+    ns = lesson("05b_depth_precision")
+    n_px = len(ns.rows_d)
+    assert ns.gpu_shown["1 unit"] < n_px  # "at about the pixels ... 1 and 2": within 1 %
+    assert abs(ns.gpu_shown["1 unit"] - int((ns.apart <= 0).sum())) < 0.01 * n_px
+    assert set(ns.apart[ns.apart > 0]) == {1, 2}  # "the histogram's 1 and 2"
+    assert ns.gpu_shown["3 units"] == n_px  # "three units ... win everywhere"
