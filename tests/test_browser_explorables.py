@@ -57,6 +57,10 @@ CELLS = [
     "diamonds = DiamondExplorer()\ndiamonds",
     "pixels = PredictPixels('Click the pixels this triangle covers.', "
     "answer=tr.rasterize(tri, 12, 10).coverage, draw=lambda ax: plot_triangle(ax, tri))\npixels",
+    # the order question last: a click on the last cell (browser_cells) lands on its text
+    "point = PredictPoint('Put the point on the line.', answer=(3.0, 2.0), draw=None, "
+    "xlim=(0, 4), ylim=(0, 4), along=((0, 2), (4, 2)), start=(0, 2), tolerance=0.3, "
+    "reveal_curve=[(0, 0), (4, 4)])\npoint",
     "order = PredictOrder('Order the sticks.', ['a', 'b', 'c'], answer=None, "
     "allow_impossible=True)\norder",
 ]
@@ -65,7 +69,11 @@ TITLES = {key: cls.title for key, cls in [
     ("pipeline", PipelineMap), ("cracks", CrackExplorer), ("edges", EdgeFunctionExplorer),
     ("surfaces", AttributeSurfaces), ("eye", EyeRayExplorer), ("depth", DepthValuesExplorer),
     ("footprint", FootprintExplorer), ("diamonds", DiamondExplorer)]}  # fmt: skip
-TITLES.update(pixels="Click the pixels this triangle covers", order="Order the sticks")
+TITLES.update(
+    pixels="Click the pixels this triangle covers",
+    order="Order the sticks",
+    point="Put the point on the line",
+)
 
 
 @pytest.fixture(scope="module")
@@ -305,11 +313,46 @@ def test_predictions_wait_for_an_answer_then_show_it(lesson):
     o = _widget(lesson, "order")
     ocheck = o.get_by_role("button", name="Check")
     assert ocheck.is_disabled()
+    # review r38 05a: the order shown is an answer too; a click on a chip, moving nothing, gives it
+    o.locator(".tr-chip").first.click()
+    expect(ocheck).to_be_enabled(timeout=5_000)
+    assert _kernel(lesson, "[order.given, order.correct]") == [["a", "b", "c"], False]
     o.get_by_text("no order works").click()
     ocheck.click()
     o.get_by_text("Right.").wait_for(timeout=5_000)
     assert _kernel(lesson, "order.correct") is True
     assert ocheck.is_disabled() and o.locator("input[type=checkbox]").is_disabled()
+
+
+def test_point_reveal_draws_its_curve(lesson):
+    """Review r38 05b c9: after Check, the curve the answer comes from is drawn (green), and
+    not before."""
+    w = _widget(lesson, "point")
+    canvas = w.locator("canvas").first
+    canvas.scroll_into_view_if_needed()
+    (x0, y0, sx, sy) = _kernel(lesson, "point.data['transform']")
+    at = [x0 + sx * 1.0, y0 + sy * 1.0]  # (1, 1) on the curve, far from the answer (3, 2)
+    green = (
+        "([x, y]) => { const c = document.querySelectorAll('canvas')[%d]; "
+        "const d = c.getContext('2d').getImageData(x - 3, y - 3, 7, 7).data; let n = 0; "
+        "for (let k = 0; k < d.length; k += 4) n += d[k] < 40 && d[k + 1] > 120 && d[k + 2] < 150"
+        " && d[k + 3] > 200; return n; }"
+    )
+    index = lesson.evaluate(
+        "(el) => [...document.querySelectorAll('canvas')].indexOf(el)", canvas.element_handle()
+    )
+    assert lesson.evaluate(green % index, at) == 0  # the curve is left out of the question
+    canvas.focus()
+    for _ in range(7):  # Shift: ten key steps of 0.04 each, to x = 2.8, within 0.3 of 3
+        lesson.keyboard.press("Shift+ArrowRight")
+    check = w.get_by_role("button", name="Check")
+    from playwright.sync_api import expect
+
+    expect(check).to_be_enabled(timeout=5_000)
+    check.click()
+    w.get_by_text("Right.").wait_for(timeout=5_000)
+    lesson.wait_for_timeout(300)
+    assert lesson.evaluate(green % index, at) > 0
 
 
 def test_layout_fits_a_small_screen(lesson):

@@ -633,7 +633,7 @@ def test_05b_explore_heading_sits_just_before_its_widget():
 def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
     """Review r2, 05b: the δ line on the resolution chart let the Predict be read off the chart."""
     code = _cells("05b_depth_precision", "code")
-    ask = next(i for i, c in enumerate(code) if "Predict(" in c and "z-fight" in c)
+    ask = next(i for i, c in enumerate(code) if re.search(r"\bPredict\w*\(", c) and "fight" in c)
     assert not any("axhline" in c for c in code[:ask])
 
 
@@ -645,7 +645,11 @@ def test_05b_fight_distance_is_worked_out_from_one_anchor_not_read_off_a_curve()
     ns = lesson("05b_depth_precision")
     assert ns.dz_at_1 * ns.cross16**2 == pytest.approx(ns.delta)  # the z² law from the anchor
     ask = next(c for c in _cells("05b_depth_precision", "code") if "PredictPoint(" in c)
-    assert "linspace" not in ask and "depth_resolution(z_" not in ask  # no curve drawn
+    picture = ask[ask.index("def gap_and_anchor") : ask.index("z_law = ")]
+    assert "space" not in picture and "depth_resolution(z_" not in ask  # no curve drawn
+    # review r38 05b: the curve is drawn after Check, through the answer on the δ line
+    assert "reveal_curve=np.column_stack([z_law, dz_at_1 * z_law**2])" in ask
+    assert "answer=(cross16, 0.005)" in ask
     assert "becomes possible" in ask and "not yet likely" in ask
     assert "from which they z-fight" not in ask
 
@@ -1059,3 +1063,50 @@ def test_guard_band_exact_range_and_far_floor_words():
     assert "the rows unrelated" not in four and "phases unrelated" in four  # review r23 04-9
     tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
     assert "GL_DEPTH_CLAMP" in tour and "DepthClipEnable = FALSE" in tour
+
+
+@pytest.mark.notebook
+def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
+    """Review r38 05a: the sticks pass right through each other (each crossing reads at a
+    glance), a question on one ring comes before the order, and the z-buffer's memory is put
+    in numbers (7.9 MiB at 1920 x 1080, 4 bytes a pixel; 949 MiB/s for one layer at 60 Hz)."""
+    ns = lesson("05a_zbuffer")
+    # each crossing's overlap is a real patch, not a sliver at the sticks' ends
+    assert min(ns.wrong_by_order["cyclic_overlap"].values()) >= 60
+    assert (ns.left_top, ns.left_under) in ns.crossings
+    assert any("answer=left_top" in c for c in _cells("05a_zbuffer", "code"))
+    assert round(1920 * 1080 * 4 / ns.MiB, 1) == 7.9 and round(ns.layer_traffic) == 949
+    text = "\n".join(_cells("05a_zbuffer", "markdown"))
+    assert "labels of the question's picture" not in text
+    assert "GL_ALWAYS" in text and "glDisable(GL_DEPTH_TEST)" in text
+
+
+@pytest.mark.notebook
+def test_05b_colours_by_attribute_reverse_question_and_where_the_values_lie():
+    """Review r38 05b: the squares' colours are read from the loop, not from triangle numbers
+    (the Try-it that draws blue first then counts right); q_reverse asks about float32; and
+    section 4 counts the stored values per decade of z (issue 31's view, with the explorer)."""
+    ns = lesson("05b_depth_precision")
+    assert ns.is_blue.sum() == 12 and not ns.is_blue[0]
+    c = ns.per_decade
+    for label in ("unorm16", "unorm24", "float32"):  # window depth: tenfold fewer per decade
+        assert all(9 < a / b < 11 for a, b in zip(c[label][1:], c[label][2:]))
+    assert c["float32"][1:] == c["unorm24"][1:]  # "alike beyond z = 1"
+    assert c["float32"][0] > 0.9 * sum(c["float32"])  # "almost all its values before z = 1"
+    rev = c["float32 reverse-Z"]
+    assert max(rev[:3]) / min(rev[:3]) < 1.1 and rev[3] > rev[2]  # even, then the tiny floats
+    code = "\n".join(_cells("05b_depth_precision", "code"))
+    assert "DepthValuesExplorer(near=n_, far=f_)" in code and "<b>float32</b>" in code
+    assert "frames[fmt].triangle_id < 12" not in code and "clip[~is_blue]" in code
+
+
+@pytest.mark.notebook
+def test_05b_units_alone_one_loses_where_the_histogram_says_three_win():
+    """Review r38 05b-6: the experiment shows the small bias that works, not only the slope
+    term's thousands of steps: one unit loses where the decal came out 1 or 2 steps behind."""
+    ns = lesson("05b_depth_precision")
+    n_px = len(ns.rows_d)
+    assert ns.gpu_shown["1 unit"] < n_px  # "at about the pixels ... 1 and 2": within 1 %
+    assert abs(ns.gpu_shown["1 unit"] - int((ns.apart <= 0).sum())) < 0.01 * n_px
+    assert set(ns.apart[ns.apart > 0]) == {1, 2}  # "the histogram's 1 and 2"
+    assert ns.gpu_shown["3 units"] == n_px  # "three units ... win everywhere"

@@ -221,6 +221,22 @@ def test_point_reveal_can_draw_the_ray_that_finds_the_answer():
         PredictPoint("Where?", **kw, ray_from=(0, 0, 1))
 
 
+def test_point_reveal_can_draw_the_curve_the_answer_comes_from():
+    """Review r38, 05b c9: after Check only a dot marked the answer; the z² curve the
+    explanation derives was never drawn."""
+    from pathlib import Path
+
+    kw = dict(answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4))
+    assert PredictPoint("Where?", **kw).data["revealCurve"] is None
+    q = PredictPoint("Where?", **kw, reveal_curve=[(0, 0), (1, 2), (2, 4)])
+    assert q.data["revealCurve"] == [[0.0, 0.0], [1.0, 2.0], [2.0, 4.0]]
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    assert "data.revealCurve" in js  # the page draws it
+    for bad in ([(0, 0)], [(0, 0, 1), (1, 1, 1)], [(0, 0), (1, float("nan"))]):
+        with pytest.raises(ValueError, match="reveal_curve"):
+            PredictPoint("Where?", **kw, reveal_curve=bad)
+
+
 def test_the_answers_label_keeps_clear_of_the_readout():
     """Review 11-12-r6 (12 cell 41): after Check, with the marker on the answer, "the answer"
     and the live readout "code 188" were drawn at the same place ("th code 188"). Wherever the

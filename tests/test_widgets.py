@@ -1349,3 +1349,19 @@ def test_player_v1_label_leaves_row_1_centre_dots_visible():
         assert p.view.triangle.vertices.get_zorder() > max(lab.get_zorder() for lab in labels)
     finally:
         p.close()
+
+
+def test_depth_explorer_keeps_every_near_end_on_its_axes():
+    """Review r38 05b c25: at near 0.01 the float32 curves ran off the bottom (1e-9) of the
+    axes; the y range holds each curve from the near plane to the far plane's last half."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    w = DepthPrecisionExplorer(backend="image")
+    bottom = w.ax.get_ylim()[0]
+    w.near.value = 0.01
+    for fmt in ("unorm16", "unorm24", "float32"):
+        for reverse in (False, True):
+            w.format.value, w.reverse.value = fmt, reverse
+            # reverse-Z float32 plunges at the far plane itself (denormals): the text says so
+            assert w.resolution[w.z < w.far / 2].min() >= bottom, (fmt, reverse)
+    w.close()

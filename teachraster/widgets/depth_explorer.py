@@ -118,7 +118,7 @@ class DepthPrecisionExplorer:
             ax.axhline(self.delta, color=COLORS["outside"], ls="--", lw=2,
                        label=f"gap δ = {self.delta:g}")  # fmt: skip
             self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=1.5, ls=":")
-            ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-9, 1e3),
+            ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-12, 1e3),
                    xlim=(0.01, self.far))  # fmt: skip
             ax.grid(True, which="major", alpha=0.3)
             ax.legend(loc="upper left")

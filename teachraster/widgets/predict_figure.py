@@ -335,6 +335,10 @@ class PredictPoint(FigurePrediction):
     ray_from : (2,) array-like, optional
         The reveal also draws the ray from this point through the answer (the eye ray that
         finds the point), so the answer shows where it comes from.
+    reveal_curve : (N, 2) array-like, optional
+        The reveal also draws this polyline (data coordinates, N >= 2): the curve the answer
+        was worked out from, left out of the question's picture (review r38, 05b: the z² law
+        drawn through the answer once it is checked).
     explain, figsize, style : as above.
 
     Examples
@@ -349,7 +353,8 @@ class PredictPoint(FigurePrediction):
     def __init__(self, question: str, answer, *, draw, xlim, ylim, start=None, along=None,
                  tolerance: float = 0.0, units: str = "units", explain: str = "",
                  figsize=(7.0, 5.0), style: str | None = "classroom", step=None,
-                 readout: str | None = None, ray_from=None) -> None:  # fmt: skip
+                 readout: str | None = None, ray_from=None,
+                 reveal_curve=None) -> None:  # fmt: skip
         answer = as_finite("answer", answer, (2,))
         xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
         if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
@@ -365,6 +370,11 @@ class PredictPoint(FigurePrediction):
         draw = _check_draw(draw)
         if ray_from is not None:
             ray_from = as_finite("ray_from", ray_from, (2,)).tolist()
+        if reveal_curve is not None:
+            reveal_curve = as_finite("reveal_curve", reveal_curve, (None, 2))
+            if len(reveal_curve) < 2:
+                raise ValueError(f"reveal_curve needs at least 2 points, got {len(reveal_curve)}")
+            reveal_curve = reveal_curve.tolist()
 
         def axes_for(fig):
             ax = fig.add_subplot()
@@ -391,7 +401,8 @@ class PredictPoint(FigurePrediction):
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
             "units": html.escape(units), "keyStep": step,
             "readout": None if readout is None else html.escape(readout),
-            "readoutDigits": digits, "rayFrom": ray_from, **picture})  # fmt: skip
+            "readoutDigits": digits, "rayFrom": ray_from, "revealCurve": reveal_curve,
+            **picture})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:
@@ -469,7 +480,8 @@ class PredictOrder(FigurePrediction):
         super().__init__(question, explain, {
             "kind": "order", "items": items, "answer": self.answer,
             "allowImpossible": bool(allow_impossible), "impossibleLabel": impossible_label,
-            "hint": "Drag the items into order (or focus one and use the arrow keys).",
+            "hint": "Drag the items into order (or focus one and use the arrow keys); "
+                    "to answer the order shown, click one of them.",
             **picture})  # fmt: skip
         self.state = {"given": None, "acted": False, "revealed": False}
 

@@ -162,12 +162,14 @@ def intersecting_triangles() -> Scene:
 
 def cyclic_overlap() -> Scene:
     """Three long triangles, each over the next and under the previous (a cycle)."""
-    # Stick 0 runs along y = -0.4 from its wide end at x = -1.2 (z = +0.3, near) to its tip
-    # at x = +1.2 (z = -0.3, far); sticks 1 and 2 are it turned by 120° and 240° about the
-    # view axis. Stick k+1 crosses stick k where k is far and k+1 is near, so the
-    # "in front of" relation is a cycle and no painter's order exists, although no two
-    # triangles intersect.
-    base = np.array([[-1.2, -0.7, 0.3], [1.2, -0.4, -0.3], [-1.2, -0.1, 0.3]])
+    # Stick 0 runs along y = -0.4 from its wide end at x = -1.6 (z = +0.3, near) to its tip
+    # at x = +1.9 (z = -0.3, far); sticks 1 and 2 are it turned by 120° and 240° about the
+    # view axis. The three lines cross at x = ±0.69 along each stick, so each stick passes
+    # right through the other two, its ends well beyond them (review r38: crossings that
+    # read at a glance, not slivers at the ends). Stick k+1 crosses stick k where k is far
+    # and k+1 is near, so the "in front of" relation is a cycle and no painter's order
+    # exists, although no two triangles intersect.
+    base = np.array([[-1.6, -0.7, 0.3], [1.9, -0.4, -0.3], [-1.6, -0.1, 0.3]])
     colors = np.array([[0.9, 0.3, 0.2], [0.2, 0.7, 0.3], [0.2, 0.4, 0.9]])
     pos = np.concatenate([base @ rotate("z", 120 * k)[:3, :3].T for k in range(3)])
     mesh = Mesh(
@@ -179,7 +181,7 @@ def cyclic_overlap() -> Scene:
         "cyclic_overlap",
         "three triangles in cyclic overlap: no painter's order exists, the z-buffer works",
         mesh,
-        _facing(3.0),
+        _facing(3.6),
     )
 
 

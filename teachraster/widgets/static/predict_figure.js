@@ -319,6 +319,15 @@ function mountPoint(root, data, host) {
     const mine = toPx(state.given || start);
     if (state.revealed) {
       const truth = toPx(data.answer);
+      if (data.revealCurve) {
+        // the curve the answer comes from (PredictPoint's reveal_curve), kept out of the
+        // question's picture
+        ctx.strokeStyle = "#009E73";
+        ctx.lineWidth = 3;
+        ctx.beginPath();
+        data.revealCurve.forEach((p, k) => (k ? ctx.lineTo(...toPx(p)) : ctx.moveTo(...toPx(p))));
+        ctx.stroke();
+      }
       if (data.rayFrom) {
         // the ray that finds the answer (PredictPoint's ray_from), on past it a little
         const from = toPx(data.rayFrom);
@@ -468,9 +477,13 @@ function mountOrder(root, data, host) {
     check.disabled = checkDisabled(state.revealed, state.acted);
   }
   function move(from, to) {
-    if (to < 0 || to >= order.length || from === to) return;
-    const [item] = order.splice(from, 1);
-    order.splice(to, 0, item);
+    // A touch that moves nothing (a click on a chip, a drop where it was, an arrow key at
+    // the end) still answers: the order shown is an answer too (review r38 05a).
+    to = Math.max(0, Math.min(order.length - 1, to));
+    if (from !== to) {
+      const [item] = order.splice(from, 1);
+      order.splice(to, 0, item);
+    }
     act();
     render_();
   }
