@@ -431,6 +431,11 @@ def test_06_review_r37_a_prediction_in_every_section():
     snapped triangle, and the unshown "unreliable ties" claim is gone."""
     import json
 
+    from teachraster.study.operation_counts import edge_bits_needed
+
+    def ops_bits(span):
+        return edge_bits_needed(span, 0, subpixel_bits=8)
+
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
@@ -471,6 +476,12 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert ns.sp256["divides"] == 2 * ns.lines256 + 1 and "split point $u_4$" in md
     assert "lose the exact integer ties" not in md and "pixels the snap itself moves" in md
     assert "wobble" not in md and "Pentium-class" in md and "early-1990s" not in md
+    # r41 06-6: the error is shown as a texture: affine's checks wrong across the floor,
+    # N = 16's at few pixels (its far edge)
+    assert "checkerboard two cells down" in md
+    assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
+    # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
+    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in cells[-1]
     # what the question gives is what the fill group counted
     assert ns.box256.size == 61_500 and ns.covered256 == 30_321 and ns.lines256 == 246
     # q_rule: the tie rule is named after the figure, not above the question
