@@ -367,7 +367,9 @@ def test_divide_cost_axis_fits_each_price_inside_the_figure_and_labelled_at_1_2_
     one range for every price (0.7-600) left two thirds of the plot empty at divide 1. The
     axis is fitted at each price again, the layout keeps room on the right for a label at its
     end (every price and measure inside the figure), and its labels are at 1-2-5, as the error
-    axis' (only 10⁰, 10¹, 10² were labelled)."""
+    axis' (only 10⁰, 10¹, 10² were labelled). Review r41 06-5: refitted at each price, the axis
+    moved with the points ("perspective" stood at the same place at every price): one range
+    for every price now, from the slider's cheapest and dearest, so the price moves the points."""
     from teachraster.widgets.divide_cost import DivideCostExplorer
 
     rows = [{"variant": v, "group": "interpolation", "divides": d, "multiplies": m,
@@ -375,7 +377,7 @@ def test_divide_cost_axis_fits_each_price_inside_the_figure_and_labelled_at_1_2_
             for v, d, m, a, e, mean in LESSON_06_INTERPOLATION]  # fmt: skip
     ex = DivideCostExplorer(rows, backend="image")
     try:
-        limits = {}
+        limits, dearest = {}, {}
         for divide, error in [(1.0, "max error"), (1.0, "mean error"), (30.0, "mean error"),
                               (128.0, "mean error"), (128.0, "max error")]:  # fmt: skip
             ex.divide.value, ex.error.value = divide, error
@@ -388,8 +390,12 @@ def test_divide_cost_axis_fits_each_price_inside_the_figure_and_labelled_at_1_2_
             costs = [p.get_xdata()[0] for p in ex.art.points.values()]
             lo, hi = ex.ax.get_xlim()
             assert lo < min(costs) and max(costs) < hi
-            # the points span over half the axis' decades, even at divide 1
-            assert np.log(max(costs) / min(costs)) > 0.5 * np.log(hi / lo), (divide, lo, hi)
+            if divide == 128.0:  # the dearest price fills over half the axis' decades
+                assert np.log(max(costs) / min(costs)) > 0.5 * np.log(hi / lo), (lo, hi)
+            dearest[divide] = max(costs)
+        assert limits[1.0] == limits[30.0] == limits[128.0]  # one axis for every price
+        # and on it perspective-correct moves right as the divide gets dearer
+        assert dearest[1.0] < 10 < dearest[30.0] < 50 < dearest[128.0]
         lo, hi = limits[128.0]
         shown = [t.get_text() for t in ex.ax.get_xticklabels()
                  if lo <= t.get_position()[0] <= hi]  # fmt: skip

@@ -424,8 +424,17 @@ def test_06_review_r37_a_prediction_in_every_section():
     """Review r37 06-3, 06-6, 06-7: §2, §4 and §5 each ask a prediction whose answer is the
     number (or the comparison) the next cell prints, that cell held until Check; nothing on
     screen before a question answers it (q_rule's tie rule is named after its figure); the
-    rolled floor rings the worst pixel its title counts."""
+    rolled floor rings the worst pixel its title counts. Review r41 06-1 to 06-4: q_depth asked
+    what lesson 05b states (float32 = unorm24 near depth 1); it asks about linear depth now.
+    q_fill gave every term: a choice now, its wrong answers the typical slips. The span loop's
+    odd divide (the split point u4) is named; unsnapped is said to be scored against the
+    snapped triangle, and the unshown "unreliable ties" claim is gone."""
     import json
+
+    from teachraster.study.operation_counts import edge_bits_needed
+
+    def ops_bits(span):
+        return edge_bits_needed(span, 0, subpixel_bits=8)
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -435,7 +444,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     def asked_at(name):
         return next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
 
-    answers = {"q_bits": "50", "q_fill": "6.3", "q_depth": "same pixels"}
+    answers = {"q_bits": "50", "q_fill": "6.3", "q_depth": str(ns.lin32["slanted_wrong"])}
     for name in ("q_bits", "q_rule", "q_fill", "q_depth"):
         i = asked_at(name)
         # the cell right after the question is held on it; the Markdown just before says nothing
@@ -451,7 +460,28 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert 2 * ns.gpu.delta_bits < ns.gpu.needed - ns.tol_bits  # one product: not right
     assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
     assert abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 1
-    assert ns.same_wrong and ns.depth_choices[1].startswith("about as many")
+    # q_fill's four choices differ, and the right one is the ratio the fill cell prints
+    assert (
+        len(set(ns.fill_choices)) == 4 and f"about {ns.fill_ratio['256²']:.0f}" in ns.fill_choices
+    )
+    assert ns.fill_per_pixel_only == 4.0  # 8 against 2: the slip of ignoring box and lines
+    # q_depth: linear float32 misses no facing pixel and many crossing ones, as float64 does
+    assert ns.lin32["facing_wrong"] == 0 < ns.lin32["slanted_wrong"] == ns.lin64["slanted_wrong"]
+    assert ns.depth_answer == ns.depth_choices[1]
+    q_depth_text = cells[asked_at("q_depth")].split("explain=")[0]
+    assert "05b" not in q_depth_text and "unorm24" not in q_depth_text  # no recall of 05b
+    assert ns.same_wrong  # the float32 = unorm24 remark, now after the question
+    md = "\n".join(c for c, k in zip(cells, kinds) if k == "markdown")
+    # the span loop: two divides per line and one at set-up (u4), as the table counts
+    assert ns.sp256["divides"] == 2 * ns.lines256 + 1 and "split point $u_4$" in md
+    assert "lose the exact integer ties" not in md and "pixels the snap itself moves" in md
+    assert "wobble" not in md and "Pentium-class" in md and "early-1990s" not in md
+    # r41 06-6: the error is shown as a texture: affine's checks wrong across the floor,
+    # N = 16's at few pixels (its far edge)
+    assert "checkerboard two cells down" in md
+    assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
+    # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
+    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in cells[-1]
     # what the question gives is what the fill group counted
     assert ns.box256.size == 61_500 and ns.covered256 == 30_321 and ns.lines256 == 246
     # q_rule: the tie rule is named after the figure, not above the question
@@ -459,9 +489,8 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert rule_at > asked_at("q_rule") + 1
     assert "tie rule" not in cells[asked_at("q_rule") - 1]
     # the answer text of q_depth is a held Markdown cell, its source collapsed
-    (held,) = [
-        c for c in nb["cells"] if "get exactly the same pixels wrong" in "".join(c["source"])
-    ]
+    (held,) = [c for c in nb["cells"] if "`linear float32` gets" in "".join(c["source"])]
+    assert "get exactly the same pixels wrong" in "".join(held["source"])
     assert "".join(held["source"]).startswith("q_depth.hold()")
     assert held["metadata"]["jupyter"]["source_hidden"]
     # the worst pixel ringed: the rolled floor's only, where its error is the table's N = 16
@@ -498,10 +527,10 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
     cases = {
         "q_bits": (["50", "49"], [str(2 * ns.gpu.delta_bits), "32"]),
         "q_fill": (
-            [f"{ns.fill_answer:.1f}"],
-            [f"{ns.fill_no_box:.1f}", f"{ns.fill_no_divides:.1f}"],
+            [f"about {ns.fill_answer:.0f}"],
+            [c for c in ns.fill_choices if c != f"about {ns.fill_answer:.0f}"],
         ),
-        "q_depth": ([ns.depth_choices[1]], [ns.depth_choices[0], ns.depth_choices[2]]),
+        "q_depth": ([ns.depth_answer], [c for c in ns.depth_choices if c != ns.depth_answer]),
     }
     for name, (right, wrong) in cases.items():
         src = next(

@@ -60,10 +60,11 @@ def divide_positions(divide: float) -> list[float]:
 
 
 def cost_axis(costs) -> tuple[float, float]:
-    """The cost axis' limits at one price: fitted to its ``costs`` (at divide 1 a fixed
-    0.7-600 left two thirds of the plot empty: review r23, 06-8), with room on the right for
-    the dearest point's label, a fixed share of the axis' decades (at divide 128 "perspective"
-    ended on the right spine with less: review r22, 06-8)."""
+    """The cost axis' limits for ``costs`` (the explorer passes those at the slider's cheapest
+    and dearest prices, so one range holds every price and a price's change moves the points,
+    not the axis: review r41 06-5), with room on the right for the dearest point's label, a
+    fixed share of the axis' decades (at divide 128 "perspective" ended on the right spine
+    with less: review r22, 06-8)."""
     lo, hi = float(np.min(costs)) / 1.6, float(np.max(costs))
     return lo, hi * 10 ** (0.1 + 0.3 * np.log10(hi / lo))
 
@@ -145,9 +146,12 @@ class DivideCostExplorer(Shown):
             layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         self._style = style
-        #: the cost axis' limits, fitted at each price (:func:`cost_axis`); the layout keeps
-        #: room on the right for a tick label at the axis' end (:meth:`_lay_out`)
-        self.xlim = cost_axis
+        #: the cost axis' limits, one range for every price on the slider (:func:`cost_axis`
+        #: over the cheapest and the dearest price's costs): refitted at each price, the axis
+        #: moved with the points and the slider mostly relabelled its ticks (review r41 06-5);
+        #: the layout keeps room on the right for a tick label at the axis' end (:meth:`_lay_out`)
+        ends = [p for _, p in self.divide.options][:: len(self.divide.options) - 1]
+        self.xlim = cost_axis([r["cycles"] for d in ends for r in priced(self.rows, d)])
         with style_context(style):
             self._new_figure()
             self._plot()
