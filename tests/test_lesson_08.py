@@ -40,6 +40,8 @@ def test_lesson_08_shows_what_it_says(ns):
     assert ns.off_centre == pytest.approx(np.hypot(0.125, 0.375))  # one sample alone
     # cell 18: the covered samples outside the octagon's open inside lie on its own edges
     assert ns.extra.sum() >= 1 and ns.on_outer[ns.extra].all()
+    # review r42 (r35 08-3): the 20 samples on the fan's spokes, printed, each covered once
+    assert ns.on_spoke.sum() == 20 and (ns.count[ns.on_spoke] == 1).all()
     err = {f"{r['kind']}{r['samples']}": r["mean_error"] for r in ns.rows}
     assert err["standard16"] < err["standard4"] < err["standard1"]
 
