@@ -40,6 +40,8 @@ def test_lesson_08_shows_what_it_says(ns):
     assert ns.off_centre == pytest.approx(np.hypot(0.125, 0.375))  # one sample alone
     # cell 18: the covered samples outside the octagon's open inside lie on its own edges
     assert ns.extra.sum() >= 1 and ns.on_outer[ns.extra].all()
+    # review r42 (r35 08-3): the 20 samples on the fan's spokes, printed, each covered once
+    assert ns.on_spoke.sum() == 20 and (ns.count[ns.on_spoke] == 1).all()
     err = {f"{r['kind']}{r['samples']}": r["mean_error"] for r in ns.rows}
     assert err["standard16"] < err["standard4"] < err["standard1"]
 
@@ -100,3 +102,27 @@ def test_lesson_08_cells_name_no_review():
         assert not re.search(r"\breviews? r\d", "".join(cell["source"])), k
     # review r29, 08-4: the line style of cell 29 no longer rebinds cell 1's `style`
     assert 'style = "s--"' not in path.read_text()
+
+
+def test_lesson_08_centroid_prediction(ns):
+    """Review r42 08-8: a prediction in §5, asked before the figure and the ranges that answer
+    it (held), with its answer and explanation computed from the lesson's own triangle."""
+    import json
+    from pathlib import Path
+
+    assert len(ns.covered) == 1 and ns.side == "above 1" and ns.v_at_centre > 1
+    assert ns.v_at_centre == pytest.approx(ns.h_centre / ns.h_vertex, rel=1e-9)
+    assert "answer=side," in "".join(
+        "".join(c["source"])
+        for c in json.loads(
+            (
+                Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb"
+            ).read_text()
+        )["cells"]
+    )
+    cells = json.loads((Path(__file__).resolve().parents[1] / "notebooks" /
+                        "08_antialiasing.ipynb").read_text())["cells"]  # fmt: skip
+    sources = ["".join(c["source"]) for c in cells]
+    (k,) = [i for i, s in enumerate(sources) if "q_centre = Predict(" in s]
+    assert sources[k + 1].startswith("q_centre.hold()")
+    assert not any("v at the pixel centres" in s for s in sources[:k])

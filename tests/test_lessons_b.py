@@ -1072,6 +1072,9 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     smooth = read["trilinear"][ns.rows_shown, ns.W // 2]
     assert (np.abs(smooth - np.round(smooth)) > 0.1).any()  # blended between levels
     assert len(ns.seam_rows) >= 3
+    # review r42 09-1: the seams curve (traced per column), the crop's sides differ from its middle
+    sides, middle = ns.seams_by_column[48], ns.seams_by_column[ns.W // 2]
+    assert middle == ns.seam_rows.tolist() and sides != middle
     sampled = ns.sampled
     assert sampled[(1.0, "box")].rms_error < sampled[(0.0, "box")].rms_error
     assert sampled[(2.0, "gaussian")].rms_error < sampled[(0.0, "box")].rms_error

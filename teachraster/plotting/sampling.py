@@ -150,8 +150,10 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
         ax.set(xlim=(0, 1), ylim=(-0.08, 1.08), yticks=[0, 1])
         spans.append(ax.axvspan(result.alias_from, 1, color=OKABE_ITO["yellow"], alpha=0.25,
                                 lw=0))  # fmt: skip
-    a.legend(loc="lower left", fontsize=12, ncols=2)
-    c.legend(loc="lower left", fontsize=12, ncols=2)
+    # keys beside the panels, not in them: inside, at the lower left, they hid the signal's
+    # troughs and the reconstruction's dips the student compares with the ideal (review r42)
+    for ax in (a, c):
+        ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=12, frameon=False)
     art = SamplingArtists(sig, filt, stems, rec, ideal, spans, faint)
     _name_prefiltered(art, result)
     return art
