@@ -9,6 +9,7 @@ import pytest
 import reasoning_solutions as sol
 import student_variants as sv
 
+import teachraster as tr
 from teachraster import edge_function
 from teachraster import exercises as ex
 from teachraster.exercises.capstone_render import SCENES
@@ -378,3 +379,38 @@ def test_numbers_in_capstone_sentences_are_this_pixels_or_said_to_be_the_exercis
     assert vec([0.737, 0.522, 0.9199999999999999], [0.735, 0.521, 0.92]) == "(0.737, 0.522, 0.92)"
     assert vec([0.735, 0.521, 0.92], [0.737, 0.522, 0.9199999999999999]) == "(0.735, 0.521, 0.92)"
     assert vec([0.8], [0.8000000000000002]) != vec([0.8000000000000002], [0.8])  # apart
+
+
+#: r40 12-1: one-line wrappers of the package's own functions passed these scenes, though
+#: ``ex.check`` refuses the very same lambdas ("not counted").
+WRAPPERS = [
+    ("single_triangle", {"barycentric": lambda xy, p: tr.barycentric(xy, [p])[0]},
+     "barycentric"),
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: tr.sample(t, uv, "bilinear", w)}, "sample"),
+    ("floor_trilinear", {"trilinear": lambda p, uv, lod, wrap="repeat":
+                         tr.sample(p, uv, "trilinear", wrap, lod=lod)}, "sample"),
+    ("sphere", {"bilinear": lambda t, uv, w: tr.sample(t, uv, "bilinear", w)}, "sample"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("scene, changed, called", WRAPPERS, ids=[w[0] for w in WRAPPERS])
+def test_a_wrapper_of_the_packages_answer_draws_the_frame_but_does_not_count(
+    scene, changed, called
+):
+    report = ex.capstone(scene, **_mine(scene, **changed))
+    name = next(iter(changed))
+    assert not report.passed and not report.failures and report.n_wrong == 0, str(report)
+    text = str(report)
+    assert "pixels match the package's, but not counted" in text, text
+    assert f"your {name} calls teachraster's {called}" in text, text
+    with pytest.raises(AssertionError, match="not counted"):
+        report.assert_passed()
+
+
+def test_a_bilinear_that_swaps_u_and_v_fails_the_sphere():
+    """r40 12-2: the sphere's untinted checkerboard is its own transpose, so a u/v swap drew
+    it right; tinted like the floor, it shows."""
+    swapped = lambda t, uv, w: sol.CAPSTONE["bilinear"](t, (uv[1], uv[0]), w)  # noqa: E731
+    report = ex.capstone("sphere", **_mine("sphere", bilinear=swapped))
+    assert not report.passed and report.n_wrong > 0, str(report)
+    assert report.failures[0].kind == "texture filtering", str(report)
