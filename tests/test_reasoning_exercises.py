@@ -102,6 +102,28 @@ def test_robust_fill_names_the_absolute_form_and_fails_the_naive_fill_often():
     assert len(naive.failures) >= 5  # the naive fill fails the catalogue in many places
 
 
+@pytest.mark.parametrize("rule", ["inclusive", "top_left"])
+def test_robust_fill_names_float32_rounding_not_a_tie_rule_the_code_does_not_have(rule):
+    """r40 10-1: the notebook's naive fill (E ≥ 0, A x + B y + C in float32, raw vertices) and
+    its first repair (the top-left rule) were told "you cover no centre on an edge (E > 0)"
+    where float32's rounding left E = −4.8e−07 at a vertex; and 10-2: "E ≥ 0" was said of a
+    pixel left out, which only the raw vertices leave out."""
+    report = ex.check("robust_fill", _fill(raw=True, rule=rule, absolute=True, dtype=np.float32))
+    assert all(f.kind != "E > 0" for f in report.failures), str(report)
+    sub = next(f for f in report.failures if f.case == "subpixel_triangles, triangle 2")
+    assert sub.kind == "float32 rounding" and "differences to a vertex" in sub.explanation
+    for f in report.failures:
+        missing = int(f.explanation.rsplit("; ", 1)[-1].split(" missing")[0])
+        if f.kind == "E >= 0" and missing:  # a pixel left out: the raw vertices are named too
+            assert "you decide on the raw vertices" in f.explanation, f.explanation
+
+
+def test_robust_fill_accepts_the_absolute_form_in_float64():
+    """r40 10-3: A x + B y + C in float64 on the snapped vertices passes every case, so no
+    message may forbid it."""
+    assert ex.check("robust_fill", _fill(absolute=True)).passed
+
+
 @pytest.mark.parametrize(
     ("tie", "kind"),
     [(lambda a, b: b[1] < a[1], "no top edges"),
