@@ -77,6 +77,35 @@ def test_coverage_cases_hold_the_hard_ones_and_snapping_decides_some():
     assert len(decided_by_snapping) >= 3, decided_by_snapping
 
 
+@pytest.mark.parametrize("raw", [0, 1])
+def test_coverage_fraction_snapping_one_coordinate_only_fails_and_is_named(raw):
+    """r40 06-1 (issue 30): x snapped and y left raw passed all 34 cases (every off-grid case
+    moved x only); a vertex 1/1024 px off the grid in y now decides two cases."""
+    from teachraster import edge_function
+
+    def one_axis(xy, pixel, samples):
+        v = np.asarray(xy, float).copy()
+        v[:, 1 - raw] = np.rint(v[:, 1 - raw] * 256) / 256  # the other coordinate stays raw
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return 0.0
+        if area < 0:
+            v = v[[0, 2, 1]]
+        points = np.asarray(samples, float) + [pixel[1], pixel[0]]
+        inside = np.ones(len(points), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = edge_function(a, b, points)
+            top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            inside &= (e >= 0) if top_left else (e > 0)
+        return float(inside.mean())
+
+    report = ex.check("coverage_fraction", one_axis)
+    assert not report.passed and report.failures, str(report)
+    axis = "xy"[raw]
+    assert all(f"left {axis} unsnapped" in f.explanation for f in report.failures), str(report)
+
+
 def test_block_cases_hold_the_corner_tricks_pitfalls():
     cases = {label.split(":")[0]: expected for label, _, expected in tile_blocks.block_cases()}
     assert cases["a block beyond a vertex, outside the triangle"] == "partial"
