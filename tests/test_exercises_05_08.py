@@ -106,6 +106,43 @@ def test_coverage_fraction_snapping_one_coordinate_only_fails_and_is_named(raw):
     assert all(f"left {axis} unsnapped" in f.explanation for f in report.failures), str(report)
 
 
+def _bilinear_with(kind):
+    """A bilinear with one slip: weights swapped along x, or repeat done as (u, v) % 1 with
+    the texels then clamped."""
+
+    def bilinear(texture, uv, wrap):
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        u, v = (uv[0] % 1, uv[1] % 1) if kind == "mod" else uv
+        x, y = u * w - 0.5, v * h - 0.5
+        x0, y0 = np.floor(x), np.floor(y)
+        fx, fy = x - x0, y - y0
+        cols, rows = np.array([x0, x0 + 1], dtype=int), np.array([y0, y0 + 1], dtype=int)
+        if wrap == "repeat" and kind != "mod":
+            cols, rows = cols % w, rows % h
+        else:
+            cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+        if kind == "swap x":
+            fx = 1 - fx
+        top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+        bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+        return (1 - fy) * top + fy * bottom
+
+    return bilinear
+
+
+@pytest.mark.parametrize(("kind", "words"), [
+    ("swap x", "the weights along x are swapped"),
+    ("mod", "you wrapped (u, v) into [0, 1) and then clamped the texels"),
+])  # fmt: skip
+def test_bilinear_slips_that_give_one_texel_are_named_not_called_nearest(kind, words):
+    """r40 07-1: both were told "that is one texel alone, nearest filtering"."""
+    report = ex.check("bilinear", _bilinear_with(kind))
+    assert not report.passed
+    assert all(words in f.explanation for f in report.failures), str(report)
+    assert all("nearest" not in f.explanation for f in report.failures), str(report)
+
+
 def test_block_cases_hold_the_corner_tricks_pitfalls():
     cases = {label.split(":")[0]: expected for label, _, expected in tile_blocks.block_cases()}
     assert cases["a block beyond a vertex, outside the triangle"] == "partial"
