@@ -226,6 +226,33 @@ def test_hiz_rejects_without_the_vertex_clamp():
     assert "no clamp" in {f.kind for f in report.failures}, str(report)
 
 
+def _hiz_in(dtype):
+    """The notebook's hiz_rejects (the plane's gradients, at the extreme centres) in ``dtype``."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=dtype)
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+        b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+        xs = np.array([col0 + 0.5, col0 + size - 0.5], dtype=dtype)
+        ys = np.array([row0 + 0.5, row0 + size - 0.5], dtype=dtype)
+        corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)
+        return bool(max(corners.min(), min(z1, z2, z3)) >= np.max(buffer))
+
+    return hiz_rejects
+
+
+def test_hiz_rejects_in_float32_is_told_float32_not_a_mistake_it_does_not_make():
+    """r40 08-1: float32 broke the cases' exact ties and was told "you took the bare plane" or
+    "the tile's outer corners"; a ">" that breaks every tie is still told to use ≥."""
+    assert ex.check("hiz_rejects", _hiz_in(np.float64)).passed
+    report = ex.check("hiz_rejects", _hiz_in(np.float32))
+    assert report.failures and {f.kind for f in report.failures} == {"float32"}, str(report)
+    assert "compute the plane in float64" in report.failures[0].explanation.lower()
+    strict = ex.check("hiz_rejects", _hiz_with(compare=lambda n, b: n > np.max(b)))
+    assert {f.kind for f in strict.failures} == {"strict"}, str(strict)
+
+
 # The broken frames (exercise 11) are tested in test_broken_frames.py.
 
 
