@@ -258,7 +258,25 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     assert len(right.differing_pixels()) == 0
     fig, ax = plt.subplots()  # one Axes is split in three
     right.compare(ax)
-    assert len(fig.axes) == 3 and fig.axes[2].get_title() == "no pixel differs"
+    panels = [a for a in fig.axes if a.get_label() != "<colorbar>"]  # a continuous scale's bar
+    assert len(panels) == 3 and panels[2].get_title() == "no pixel differs"
+
+
+def test_the_scenes_say_what_their_colours_mean_and_show_double_coverage(plt):
+    """r40 06-4: a spoke covered 1.75 times drew as yellow as a full pixel (the package's scale
+    stopped at 1) and no panel had a key; 08-3: the tile walk's colours had no legend."""
+    ge = ex.check("coverage_fraction", MISTAKES["coverage, both edges own a sample"][1])
+    fig, axes = plt.subplots(1, 3)
+    ge.compare(axes)
+    mine = axes[0].get_images()[0]
+    assert mine.norm.vmax >= float(np.nanmax(mine.get_array())) > 1
+    assert any(a.get_label() == "<colorbar>" for a in fig.axes)
+    walk = ex.check("classify_block", CORRECT["classify_block"])
+    fig, axes = plt.subplots(1, 3)
+    walk.compare(axes)
+    legend = axes[1].get_legend()
+    assert legend is not None
+    assert {t.get_text() for t in legend.get_texts()} >= {"rejected", "tested: covered"}
 
 
 @pytest.mark.parametrize(
