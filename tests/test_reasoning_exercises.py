@@ -409,3 +409,20 @@ def test_the_fill_legend_lists_only_the_states_drawn():
     plt.close(fig)
     assert "covered" in labels and any(t.startswith("extra") for t in labels), labels
     assert not any(t.startswith("missing") for t in labels), labels
+
+
+def test_the_hiz_figure_draws_the_triangle_and_its_depth_at_the_extreme_centres():
+    """r40 08-4: the triangle was not in view and its depths were text only."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Polygon
+
+    report = ex.check("hiz_rejects", _hiz_with(vertex_only=True))
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    assert any(isinstance(p, Polygon) for p in ax.patches)
+    labels = [t.get_text() for t in ax.texts]
+    assert len([t for t in labels if t[:1].isdigit()]) >= 4, labels
+    plt.close(fig)

@@ -235,15 +235,28 @@ def draw_hiz(ax, case, got):
     shown = np.where(np.isfinite(buffer), buffer, np.nan)
     artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
                          vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
-    ring = np.vstack([xyz[:, :2], xyz[:1, :2]])
-    artists += ax.plot(ring[:, 0], ring[:, 1], color="#d7301f", linewidth=1.5)
+    # the triangle itself, shaded (r40 08-4: only an edge or none of it showed in the view)
+    from matplotlib.patches import Polygon
+
+    artists.append(ax.add_patch(Polygon(xyz[:, :2], closed=True, facecolor="#d7301f",
+                                        alpha=0.18, edgecolor="#d7301f", linewidth=1.5,
+                                        label="the triangle")))  # fmt: skip
     rows, cols = _corners(row0, col0, size)
+    depth = plane_at(xyz, rows, cols)
+    k = int(np.argmin(depth))
     artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
-    nearest = plane_at(xyz, rows, cols).min()
+    artists += ax.plot(cols[k] + 0.5, rows[k] + 0.5, "o", color="#ff9f1c", ms=8)  # the nearest
+    for r, c, z in zip(rows, cols, depth):  # the triangle's depth at each extreme centre
+        inward = (1 if c == col0 else -1, -1 if r == row0 else 1)  # y axis points down
+        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(14 * inward[0], 9 * inward[1]),
+                                   textcoords="offset points", ha="center", va="center",
+                                   fontsize="x-small", bbox={"boxstyle": "round,pad=0.15",
+                                   "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
     verdict = "rejected" if expected else "kept"
     yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
-    artists.append(ax.set_xlabel(f"nearest of the triangle {num(nearest)}, farthest stored "
-                                 f"{num(np.max(buffer))}:\n{verdict}{yours}",
+    artists.append(ax.set_xlabel(f"circles: the triangle's depth at the extreme centres\n(filled: "
+                                 f"nearest, {num(depth[k])}); farthest stored "
+                                 f"{num(np.max(buffer))}: {verdict}{yours}",
                                  fontsize="x-small"))  # fmt: skip
     ax.set_xlim(col0 - 2, col0 + size + 2)
     ax.set_ylim(row0 + size + 2, row0 - 2)
