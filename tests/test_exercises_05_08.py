@@ -279,6 +279,21 @@ def test_the_scenes_say_what_their_colours_mean_and_show_double_coverage(plt):
     assert {t.get_text() for t in legend.get_texts()} >= {"rejected", "tested: covered"}
 
 
+def test_the_bilinear_case_figure_shows_the_texture_the_point_and_the_four_weights(plt):
+    """r40 07-3: the case was two bars of one number; it is the texture, the point and the
+    four texels bilinear blends there, each with its weight (they sum to 1)."""
+    from matplotlib.patches import Rectangle
+
+    report = ex.check("bilinear", _bilinear_with("swap x"))
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    assert ax.get_images(), "the texture is drawn"
+    assert len([p for p in ax.patches if isinstance(p, Rectangle)]) >= 4
+    weights = [float(t.get_text()[2:]) for t in ax.texts if t.get_text().startswith("w ")]
+    assert len(weights) == 4 and abs(sum(weights) - 1) < 0.05, weights
+    assert "yours" in ax.get_xlabel()
+
+
 @pytest.mark.parametrize(
     "mistake", sample([m for m, (name, _, _) in MISTAKES.items() if name in LATER])
 )

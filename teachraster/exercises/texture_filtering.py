@@ -308,19 +308,46 @@ def bilinear_exercise(scene) -> Exercise:
 
 
 def draw_texture_case(ax, case, got):
-    """The texture (level 0), its texel centres, and the point (u, v) in texel units."""
-    from .drawing import draw_values
+    """The texture (level 0) in texel units, its texel centres, the point (x, y) = (u·W − ½,
+    v·H − ½) + ½ and the four texels bilinear blends there, each with its weight; the expected
+    value and yours below (r40 07-3: two bars of one number showed nothing of the filter)."""
+    from matplotlib.patches import Rectangle
 
     tex, uv = case[1][0], case[1][1]
-    if isinstance(tex, list):
+    levels = isinstance(tex, list)  # trilinear: level 0 drawn, the point, no texel weights
+    if levels:
         tex = tex[0]
+    tex = np.asarray(tex, dtype=float)
+    h, w = tex.shape[:2]
+    shown = tex / max(float(np.max(tex)), 1.0)  # 8-bit values drawn as [0, 1]
+    shown = shown if shown.ndim == 2 or shown.shape[2] == 3 else shown[..., 0]
+    artists = [ax.imshow(shown, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0),
+                         interpolation="nearest")]  # fmt: skip
+    cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
+    artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
+    px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
+    x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
+    fx, fy = px - 0.5 - x0, py - 0.5 - y0
+    for dx, dy in () if levels else ((0, 0), (1, 0), (0, 1), (1, 1)):
+        weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
+        artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
+                                              edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
+        artists.append(ax.text(x0 + dx + 0.5, y0 + dy + 0.78, f"w {weight:.2g}", ha="center",
+                               fontsize="x-small", color="#2b7bba",
+                               bbox={"facecolor": "white", "alpha": 0.8, "pad": 1,
+                                     "edgecolor": "none"}))  # fmt: skip
+    artists += ax.plot(px, py, "x", color="#d7301f", ms=10, mew=2)
+    ax.set_xlim(min(0, x0) - 0.2, max(w, x0 + 2) + 0.2)
+    ax.set_ylim(max(h, y0 + 2) + 0.2, min(0, y0) - 0.2)
+    ax.set_aspect("equal")
     expected = np.ravel(case[2])
-    yours = None if got is None else np.ravel(got)
-    if yours is not None and yours.size != expected.size:
-        yours = None
-    labels = [f"channel {k}" for k in range(expected.size)] if expected.size > 1 else ["value"]
-    artists = draw_values(ax, labels, expected, yours)
-    artists.append(ax.set_xlabel(f"uv = {vec(uv)} on a {tex.shape[0]}×{tex.shape[1]} texture"))
+    yours = (
+        "" if got is None or np.size(got) != expected.size else f", yours {_value(got, expected)}"
+    )
+    where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
+             f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres")  # fmt: skip
+    artists.append(ax.set_xlabel(f"uv = {vec(uv)} (×), {where};\nthe filtered value is "
+                                 f"{_value(expected, got)}{yours}", fontsize="x-small"))  # fmt: skip
     return artists
 
 
