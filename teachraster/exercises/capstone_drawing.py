@@ -63,7 +63,9 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     h, w = ref.shape[:2]
     artists = []
     # no frame of yours (a stub, an error): no count (r6: "0 pixel(s) differ" beside it)
-    differ = "nothing to compare yet" if mine is None else f"{len(wrong)} pixel(s) differ"
+    n = len(wrong)
+    differ = ("nothing to compare yet" if mine is None else "no pixel differs" if n == 0
+              else f"{n} pixel{'s' * (n != 1)} differ{'s' * (n == 1)}")  # fmt: skip
     if view:  # the overdraw: short titles, the scale below
         titles = ("yours (overdraw)", "package's (overdraw)", differ)
         axes[0].set_xlabel(view, fontsize="x-small")
