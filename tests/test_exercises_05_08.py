@@ -29,15 +29,15 @@ from teachraster.exercises import (
 from teachraster.exercises.coverage import covered
 from teachraster.exercises.student_version import student_notebook
 
-LATER = ["depth_to_unorm", "coverage_fraction", "resolve", "mip_level", "bilinear", "trilinear",
-         "classify_block"]  # fmt: skip
+LATER = ["depth_to_unorm", "coverage_fraction", "resolve", "resolve_srgb", "mip_level", "bilinear",
+         "trilinear", "classify_block"]  # fmt: skip
 NOTEBOOKS = sorted(
     (Path(__file__).resolve().parent.parent / "notebooks" / "exercises").glob("0[5-8]_*.ipynb")
 )
 
 
 def test_the_new_exercises_follow_the_first_eight():
-    assert ex.names()[8:15] == LATER
+    assert ex.names()[8 : 8 + len(LATER)] == LATER
 
 
 # -- references: exact, independent of the package's own arithmetic --------------------------
@@ -143,6 +143,19 @@ def test_bilinear_slips_that_give_one_texel_are_named_not_called_nearest(kind, w
     assert all("nearest" not in f.explanation for f in report.failures), str(report)
 
 
+def test_resolve_srgb_needs_the_order_of_decoding_and_names_each_slip():
+    """r40 06-2: 6.2's resolve was one line from the text; 6.3 asks where light is needed.
+    6.2's resolve handed in here is told it averaged encoded numbers; the 0.735 the text
+    quotes is the encoded half of white."""
+    import teachraster as tr
+
+    assert round(float(tr.linear_to_srgb(0.5)), 3) == 0.735
+    plain = ex.check("resolve_srgb", CORRECT["resolve"])
+    assert {f.kind for f in plain.failures} == {"encoded average"}, str(plain)
+    half = next(f for f in plain.failures if f.case.startswith("black on white, 2 of 4"))
+    assert "(0.735, 0.735, 0.735); yours is (0.5, 0.5, 0.5)" in half.explanation
+
+
 def test_block_cases_hold_the_corner_tricks_pitfalls():
     cases = {label.split(":")[0]: expected for label, _, expected in tile_blocks.block_cases()}
     assert cases["a block beyond a vertex, outside the triangle"] == "partial"
@@ -241,7 +254,11 @@ PICKS = {
 }
 
 
-@pytest.mark.parametrize("name", LATER)
+#: The exercises of 05–08 with a whole picture (6.3's resolve in linear light has none).
+PICTURED = [name for name in LATER if name != "resolve_srgb"]
+
+
+@pytest.mark.parametrize("name", PICTURED)
 def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     wrong = ex.check(name, MISTAKES[PICKS[name]][1])
     differing = wrong.differing_pixels()
@@ -295,7 +312,7 @@ def test_the_bilinear_case_figure_shows_the_texture_the_point_and_the_four_weigh
 
 
 @pytest.mark.parametrize(
-    "mistake", sample([m for m, (name, _, _) in MISTAKES.items() if name in LATER])
+    "mistake", sample([m for m, (name, _, _) in MISTAKES.items() if name in PICTURED])
 )
 def test_every_typical_mistake_shows_in_the_picture(mistake):
     name, fn, _ = MISTAKES[mistake]
