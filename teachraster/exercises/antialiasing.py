@@ -215,7 +215,8 @@ def _tie_words(owns):
         points = sample_points(pixel, samples)
         on = next(((k, w) for k, p in enumerate(points) if (w := _edge_words(snapped, p))), None)
         where = f"; here sample {on[0]} at {vec(points[on[0]])} {on[1]}" if on else ""
-        return owns_words(owns) + where
+        # here the points decided are samples, not centres (r40 06-6)
+        return owns_words(owns).replace("centres", "samples").replace("centre", "sample") + where
 
     return words
 
