@@ -416,3 +416,22 @@ def test_a_bilinear_that_swaps_u_and_v_fails_the_sphere():
     report = ex.capstone("sphere", **_mine("sphere", bilinear=swapped))
     assert not report.passed and report.n_wrong > 0, str(report)
     assert report.failures[0].kind == "texture filtering", str(report)
+
+
+def test_the_glass_in_drawing_order_marks_what_the_a_buffer_repairs():
+    """r40 12-3: with right functions the glass scene's third panel was empty; the section's
+    point, the pixels the A-buffer resolves otherwise, is marked there."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises.capstone_render import contrast_pixels
+
+    report = ex.capstone("glass", **_mine("glass"))
+    repaired = contrast_pixels("glass")
+    assert report.passed and len(repaired) > 0
+    fig, axes = plt.subplots(1, 3)
+    report.compare(axes)
+    assert f"blue: {len(repaired)}" in axes[2].get_title()
+    plt.close(fig)

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import sys
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -69,6 +70,9 @@ class CapstoneScene:
     #: What the scene cannot see of a function it takes, and where that is checked instead:
     #: (function, "cases" (its own exercise's) or another scene's name, why).
     blind: tuple[tuple[str, str, str], ...] = ()
+    #: A scene whose package frame this one's is set against where yours matches (the third
+    #: panel marks where the two differ: r40 12-3, what the A-buffer repairs), or None.
+    contrast: str | None = None
 
 
 #: Why the scenes cannot see some mistakes (every compared centre inside its triangle, an
@@ -100,7 +104,7 @@ SCENES = {s.name: s for s in (
     CapstoneScene("glass", "the two triangles as glass: premultiplied colour blended over in "
                   "drawing order, no depth writes", ("depth_passes", "over"),
                   "intersecting_triangles", compare=("color",), glass=True,
-                  blind=(_NO_WRITES, _ALPHA)),
+                  blind=(_NO_WRITES, _ALPHA), contrast="glass_sorted"),
     CapstoneScene("glass_sorted", "the glass resolved per pixel from an A-buffer: every "
                   "fragment seen through those in front of it", ("over", "a_buffer"),
                   "intersecting_triangles", compare=("color",), glass=True, sort=True,
@@ -168,6 +172,17 @@ def _parts(spec: CapstoneScene, frame) -> list[np.ndarray]:
         value = np.asarray(value, dtype=float)
         out.append(value.reshape(H, W, -1))
     return out
+
+
+@lru_cache(maxsize=4)
+def contrast_pixels(name: str) -> np.ndarray:
+    """(n, 2) rows and columns where the package's frame of scene ``name`` differs from the
+    package's frame of its :attr:`CapstoneScene.contrast` scene (drawing order against the
+    A-buffer: the pixels the A-buffer repairs)."""
+    spec = SCENES[name]
+    other = SCENES[spec.contrast]
+    mine, theirs = _frame(spec), _frame(other)
+    return np.argwhere(differing(replace(spec, compare=other.compare), mine, theirs))
 
 
 def differing(spec: CapstoneScene, mine, reference) -> np.ndarray:
