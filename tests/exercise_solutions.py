@@ -326,6 +326,28 @@ def resolve_by_counting(sample_colours, sample_ids, background):
     return total / n
 
 
+def _srgb_decode(c):  # the exact sRGB curve, written out (IEC 61966-2-1)
+    c = np.asarray(c, dtype=float)
+    return np.where(c <= 0.04045, c / 12.92, ((np.maximum(c, 0.04045) + 0.055) / 1.055) ** 2.4)
+
+
+def resolve_srgb(sample_colours, sample_ids, background):
+    """Decode to linear light, resolve there (the background too), encode the mean."""
+    covered = np.asarray(sample_ids)[:, None] >= 0
+    light = np.where(covered, _srgb_decode(np.nan_to_num(sample_colours)), _srgb_decode(background))
+    mean = light.mean(axis=0)
+    return np.where(mean <= 0.0031308, mean * 12.92, 1.055 * mean ** (1 / 2.4) - 0.055)
+
+
+def resolve_srgb_with_tools(sample_colours, sample_ids, background):
+    """The same with the package's curves and exercise 6.2's own resolve."""
+    import teachraster as tr
+
+    light = np.where(np.isnan(sample_colours), 0.0, np.nan_to_num(sample_colours))
+    return tr.linear_to_srgb(resolve(tr.srgb_to_linear(light), sample_ids,
+                                     tr.srgb_to_linear(background)))  # fmt: skip
+
+
 def mip_level(ddx, ddy, size):
     h, w = size
     rx = math.hypot(ddx[0] * w, ddx[1] * h)
@@ -438,6 +460,7 @@ CORRECT.update(
     depth_to_unorm=depth_to_unorm,
     coverage_fraction=coverage_fraction,
     resolve=resolve,
+    resolve_srgb=resolve_srgb,
     mip_level=mip_level,
     bilinear=bilinear,
     trilinear=trilinear,
@@ -447,6 +470,7 @@ ALTERNATIVES.update(
     depth_to_unorm=depth_to_unorm_exact_half_up,
     coverage_fraction=coverage_fraction_integers,
     resolve=resolve_by_counting,
+    resolve_srgb=resolve_srgb_with_tools,
     mip_level=mip_level_squares,
     bilinear=bilinear_lerp,
     trilinear=trilinear_ceil,
@@ -633,6 +657,14 @@ MISTAKES.update(
             "resolve",
             lambda c, i, b: np.mean(c, axis=0),
             "hold NaN",
+        ),  # fmt: skip
+        "resolve of the encoded numbers": ("resolve_srgb", resolve, "sRGB-encoded numbers"),
+        "resolve in light, not encoded": (
+            "resolve_srgb",
+            lambda c, i, b: _srgb_decode(
+                np.where(np.asarray(i)[:, None] >= 0, np.nan_to_num(c), b)
+            ).mean(axis=0),
+            "not encoded again",
         ),  # fmt: skip
         "λ from the sum of the axes": (
             "mip_level",

@@ -840,7 +840,7 @@ WRONG = {
     "coverage, E >= 0": (
         "coverage_fraction",
         _coverage_with(tie=lambda a, b: True),
-        "every centre on an edge",
+        "every sample on an edge",
     ),  # fmt: skip
     "coverage, one winding": ("coverage_fraction", _coverage_with(orient=False), "both windings"),
     "coverage returns 0": ("coverage_fraction", returns(0), "returns 0 on every case"),

@@ -9,6 +9,7 @@ import pytest
 import reasoning_solutions as sol
 import student_variants as sv
 
+import teachraster as tr
 from teachraster import edge_function
 from teachraster import exercises as ex
 from teachraster.exercises.capstone_render import SCENES
@@ -286,6 +287,8 @@ def test_the_time_limit_is_the_classes_and_prints_are_kept_aside(monkeypatch, ca
 
     report = ex.capstone("grid", covers=forever, budget=0.2)
     assert report.failures[0].kind == "timeout" and "0.2 s" in str(report), str(report)
+    # r40 12-6: the pipeline calls covers once per pixel by design; no hint that it should not
+    assert "a Python call per pixel?" not in str(report) and "once per pixel" in str(report)
     monkeypatch.setenv(BUDGET_VARIABLE, "0.4")
     report = ex.capstone("grid", covers=forever, budget=0.2)
     assert "0.4 s" in str(report), str(report)
@@ -378,3 +381,57 @@ def test_numbers_in_capstone_sentences_are_this_pixels_or_said_to_be_the_exercis
     assert vec([0.737, 0.522, 0.9199999999999999], [0.735, 0.521, 0.92]) == "(0.737, 0.522, 0.92)"
     assert vec([0.735, 0.521, 0.92], [0.737, 0.522, 0.9199999999999999]) == "(0.735, 0.521, 0.92)"
     assert vec([0.8], [0.8000000000000002]) != vec([0.8000000000000002], [0.8])  # apart
+
+
+#: r40 12-1: one-line wrappers of the package's own functions passed these scenes, though
+#: ``ex.check`` refuses the very same lambdas ("not counted").
+WRAPPERS = [
+    ("single_triangle", {"barycentric": lambda xy, p: tr.barycentric(xy, [p])[0]},
+     "barycentric"),
+    ("floor_bilinear", {"bilinear": lambda t, uv, w: tr.sample(t, uv, "bilinear", w)}, "sample"),
+    ("floor_trilinear", {"trilinear": lambda p, uv, lod, wrap="repeat":
+                         tr.sample(p, uv, "trilinear", wrap, lod=lod)}, "sample"),
+    ("sphere", {"bilinear": lambda t, uv, w: tr.sample(t, uv, "bilinear", w)}, "sample"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("scene, changed, called", WRAPPERS, ids=[w[0] for w in WRAPPERS])
+def test_a_wrapper_of_the_packages_answer_draws_the_frame_but_does_not_count(
+    scene, changed, called
+):
+    report = ex.capstone(scene, **_mine(scene, **changed))
+    name = next(iter(changed))
+    assert not report.passed and not report.failures and report.n_wrong == 0, str(report)
+    text = str(report)
+    assert "pixels match the package's, but not counted" in text, text
+    assert f"your {name} calls teachraster's {called}" in text, text
+    with pytest.raises(AssertionError, match="not counted"):
+        report.assert_passed()
+
+
+def test_a_bilinear_that_swaps_u_and_v_fails_the_sphere():
+    """r40 12-2: the sphere's untinted checkerboard is its own transpose, so a u/v swap drew
+    it right; tinted like the floor, it shows."""
+    swapped = lambda t, uv, w: sol.CAPSTONE["bilinear"](t, (uv[1], uv[0]), w)  # noqa: E731
+    report = ex.capstone("sphere", **_mine("sphere", bilinear=swapped))
+    assert not report.passed and report.n_wrong > 0, str(report)
+    assert report.failures[0].kind == "texture filtering", str(report)
+
+
+def test_the_glass_in_drawing_order_marks_what_the_a_buffer_repairs():
+    """r40 12-3: with right functions the glass scene's third panel was empty; the section's
+    point, the pixels the A-buffer resolves otherwise, is marked there."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises.capstone_render import contrast_pixels
+
+    report = ex.capstone("glass", **_mine("glass"))
+    repaired = contrast_pixels("glass")
+    assert report.passed and len(repaired) > 0
+    fig, axes = plt.subplots(1, 3)
+    report.compare(axes)
+    assert f"blue: {len(repaired)}" in axes[2].get_title()
+    plt.close(fig)

@@ -33,6 +33,7 @@ def test_names_in_course_order():
         "depth_to_unorm",
         "coverage_fraction",
         "resolve",
+        "resolve_srgb",
         "mip_level",
         "bilinear",
         "trilinear",

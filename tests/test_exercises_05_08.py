@@ -29,15 +29,15 @@ from teachraster.exercises import (
 from teachraster.exercises.coverage import covered
 from teachraster.exercises.student_version import student_notebook
 
-LATER = ["depth_to_unorm", "coverage_fraction", "resolve", "mip_level", "bilinear", "trilinear",
-         "classify_block"]  # fmt: skip
+LATER = ["depth_to_unorm", "coverage_fraction", "resolve", "resolve_srgb", "mip_level", "bilinear",
+         "trilinear", "classify_block"]  # fmt: skip
 NOTEBOOKS = sorted(
     (Path(__file__).resolve().parent.parent / "notebooks" / "exercises").glob("0[5-8]_*.ipynb")
 )
 
 
 def test_the_new_exercises_follow_the_first_eight():
-    assert ex.names()[8:15] == LATER
+    assert ex.names()[8 : 8 + len(LATER)] == LATER
 
 
 # -- references: exact, independent of the package's own arithmetic --------------------------
@@ -75,6 +75,85 @@ def test_coverage_cases_hold_the_hard_ones_and_snapping_decides_some():
         )
     ]
     assert len(decided_by_snapping) >= 3, decided_by_snapping
+
+
+@pytest.mark.parametrize("raw", [0, 1])
+def test_coverage_fraction_snapping_one_coordinate_only_fails_and_is_named(raw):
+    """r40 06-1 (issue 30): x snapped and y left raw passed all 34 cases (every off-grid case
+    moved x only); a vertex 1/1024 px off the grid in y now decides two cases."""
+    from teachraster import edge_function
+
+    def one_axis(xy, pixel, samples):
+        v = np.asarray(xy, float).copy()
+        v[:, 1 - raw] = np.rint(v[:, 1 - raw] * 256) / 256  # the other coordinate stays raw
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return 0.0
+        if area < 0:
+            v = v[[0, 2, 1]]
+        points = np.asarray(samples, float) + [pixel[1], pixel[0]]
+        inside = np.ones(len(points), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = edge_function(a, b, points)
+            top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            inside &= (e >= 0) if top_left else (e > 0)
+        return float(inside.mean())
+
+    report = ex.check("coverage_fraction", one_axis)
+    assert not report.passed and report.failures, str(report)
+    axis = "xy"[raw]
+    assert all(f"left {axis} unsnapped" in f.explanation for f in report.failures), str(report)
+
+
+def _bilinear_with(kind):
+    """A bilinear with one slip: weights swapped along x, or repeat done as (u, v) % 1 with
+    the texels then clamped."""
+
+    def bilinear(texture, uv, wrap):
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        u, v = (uv[0] % 1, uv[1] % 1) if kind == "mod" else uv
+        x, y = u * w - 0.5, v * h - 0.5
+        x0, y0 = np.floor(x), np.floor(y)
+        fx, fy = x - x0, y - y0
+        cols, rows = np.array([x0, x0 + 1], dtype=int), np.array([y0, y0 + 1], dtype=int)
+        if wrap == "repeat" and kind != "mod":
+            cols, rows = cols % w, rows % h
+        else:
+            cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+        if kind == "swap x":
+            fx = 1 - fx
+        top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+        bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+        return (1 - fy) * top + fy * bottom
+
+    return bilinear
+
+
+@pytest.mark.parametrize(("kind", "words"), [
+    ("swap x", "the weights along x are swapped"),
+    ("mod", "you wrapped (u, v) into [0, 1) and then clamped the texels"),
+])  # fmt: skip
+def test_bilinear_slips_that_give_one_texel_are_named_not_called_nearest(kind, words):
+    """r40 07-1: both were told "that is one texel alone, nearest filtering"."""
+    report = ex.check("bilinear", _bilinear_with(kind))
+    assert not report.passed
+    assert all(words in f.explanation for f in report.failures), str(report)
+    assert all("nearest" not in f.explanation for f in report.failures), str(report)
+
+
+def test_resolve_srgb_needs_the_order_of_decoding_and_names_each_slip():
+    """r40 06-2: 6.2's resolve was one line from the text; 6.3 asks where light is needed.
+    6.2's resolve handed in here is told it averaged encoded numbers; the 0.735 the text
+    quotes is the encoded half of white."""
+    import teachraster as tr
+
+    assert round(float(tr.linear_to_srgb(0.5)), 3) == 0.735
+    plain = ex.check("resolve_srgb", CORRECT["resolve"])
+    assert {f.kind for f in plain.failures} == {"encoded average"}, str(plain)
+    half = next(f for f in plain.failures if f.case.startswith("black on white, 2 of 4"))
+    assert "(0.735, 0.735, 0.735); yours is (0.5, 0.5, 0.5)" in half.explanation
 
 
 def test_block_cases_hold_the_corner_tricks_pitfalls():
@@ -175,7 +254,11 @@ PICKS = {
 }
 
 
-@pytest.mark.parametrize("name", LATER)
+#: The exercises of 05–08 with a whole picture (6.3's resolve in linear light has none).
+PICTURED = [name for name in LATER if name != "resolve_srgb"]
+
+
+@pytest.mark.parametrize("name", PICTURED)
 def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     wrong = ex.check(name, MISTAKES[PICKS[name]][1])
     differing = wrong.differing_pixels()
@@ -192,11 +275,44 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     assert len(right.differing_pixels()) == 0
     fig, ax = plt.subplots()  # one Axes is split in three
     right.compare(ax)
-    assert len(fig.axes) == 3 and fig.axes[2].get_title() == "no pixel differs"
+    panels = [a for a in fig.axes if a.get_label() != "<colorbar>"]  # a continuous scale's bar
+    assert len(panels) == 3 and panels[2].get_title() == "no pixel differs"
+
+
+def test_the_scenes_say_what_their_colours_mean_and_show_double_coverage(plt):
+    """r40 06-4: a spoke covered 1.75 times drew as yellow as a full pixel (the package's scale
+    stopped at 1) and no panel had a key; 08-3: the tile walk's colours had no legend."""
+    ge = ex.check("coverage_fraction", MISTAKES["coverage, both edges own a sample"][1])
+    fig, axes = plt.subplots(1, 3)
+    ge.compare(axes)
+    mine = axes[0].get_images()[0]
+    assert mine.norm.vmax >= float(np.nanmax(mine.get_array())) > 1
+    assert any(a.get_label() == "<colorbar>" for a in fig.axes)
+    walk = ex.check("classify_block", CORRECT["classify_block"])
+    fig, axes = plt.subplots(1, 3)
+    walk.compare(axes)
+    legend = axes[1].get_legend()
+    assert legend is not None
+    assert {t.get_text() for t in legend.get_texts()} >= {"rejected", "tested: covered"}
+
+
+def test_the_bilinear_case_figure_shows_the_texture_the_point_and_the_four_weights(plt):
+    """r40 07-3: the case was two bars of one number; it is the texture, the point and the
+    four texels bilinear blends there, each with its weight (they sum to 1)."""
+    from matplotlib.patches import Rectangle
+
+    report = ex.check("bilinear", _bilinear_with("swap x"))
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    assert ax.get_images(), "the texture is drawn"
+    assert len([p for p in ax.patches if isinstance(p, Rectangle)]) >= 4
+    weights = [float(t.get_text()[2:]) for t in ax.texts if t.get_text().startswith("w ")]
+    assert len(weights) == 4 and abs(sum(weights) - 1) < 0.05, weights
+    assert "yours" in ax.get_xlabel()
 
 
 @pytest.mark.parametrize(
-    "mistake", sample([m for m, (name, _, _) in MISTAKES.items() if name in LATER])
+    "mistake", sample([m for m, (name, _, _) in MISTAKES.items() if name in PICTURED])
 )
 def test_every_typical_mistake_shows_in_the_picture(mistake):
     name, fn, _ = MISTAKES[mistake]

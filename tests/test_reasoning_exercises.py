@@ -103,6 +103,28 @@ def test_robust_fill_names_the_absolute_form_and_fails_the_naive_fill_often():
     assert len(naive.failures) >= 5  # the naive fill fails the catalogue in many places
 
 
+@pytest.mark.parametrize("rule", ["inclusive", "top_left"])
+def test_robust_fill_names_float32_rounding_not_a_tie_rule_the_code_does_not_have(rule):
+    """r40 10-1: the notebook's naive fill (E ≥ 0, A x + B y + C in float32, raw vertices) and
+    its first repair (the top-left rule) were told "you cover no centre on an edge (E > 0)"
+    where float32's rounding left E = −4.8e−07 at a vertex; and 10-2: "E ≥ 0" was said of a
+    pixel left out, which only the raw vertices leave out."""
+    report = ex.check("robust_fill", _fill(raw=True, rule=rule, absolute=True, dtype=np.float32))
+    assert all(f.kind != "E > 0" for f in report.failures), str(report)
+    sub = next(f for f in report.failures if f.case == "subpixel_triangles, triangle 2")
+    assert sub.kind == "float32 rounding" and "differences to a vertex" in sub.explanation
+    for f in report.failures:
+        missing = int(f.explanation.rsplit("; ", 1)[-1].split(" missing")[0])
+        if f.kind == "E >= 0" and missing:  # a pixel left out: the raw vertices are named too
+            assert "you decide on the raw vertices" in f.explanation, f.explanation
+
+
+def test_robust_fill_accepts_the_absolute_form_in_float64():
+    """r40 10-3: A x + B y + C in float64 on the snapped vertices passes every case, so no
+    message may forbid it."""
+    assert ex.check("robust_fill", _fill(absolute=True)).passed
+
+
 @pytest.mark.parametrize(
     ("tie", "kind"),
     [(lambda a, b: b[1] < a[1], "no top edges"),
@@ -203,6 +225,33 @@ def test_quad_derivatives_clamped_at_helpers():
 def test_hiz_rejects_without_the_vertex_clamp():
     report = ex.check("hiz_rejects", _hiz_with(clamp=False))
     assert "no clamp" in {f.kind for f in report.failures}, str(report)
+
+
+def _hiz_in(dtype):
+    """The notebook's hiz_rejects (the plane's gradients, at the extreme centres) in ``dtype``."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=dtype)
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+        b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+        xs = np.array([col0 + 0.5, col0 + size - 0.5], dtype=dtype)
+        ys = np.array([row0 + 0.5, row0 + size - 0.5], dtype=dtype)
+        corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)
+        return bool(max(corners.min(), min(z1, z2, z3)) >= np.max(buffer))
+
+    return hiz_rejects
+
+
+def test_hiz_rejects_in_float32_is_told_float32_not_a_mistake_it_does_not_make():
+    """r40 08-1: float32 broke the cases' exact ties and was told "you took the bare plane" or
+    "the tile's outer corners"; a ">" that breaks every tie is still told to use ≥."""
+    assert ex.check("hiz_rejects", _hiz_in(np.float64)).passed
+    report = ex.check("hiz_rejects", _hiz_in(np.float32))
+    assert report.failures and {f.kind for f in report.failures} == {"float32"}, str(report)
+    assert "compute the plane in float64" in report.failures[0].explanation.lower()
+    strict = ex.check("hiz_rejects", _hiz_with(compare=lambda n, b: n > np.max(b)))
+    assert {f.kind for f in strict.failures} == {"strict"}, str(strict)
 
 
 # The broken frames (exercise 11) are tested in test_broken_frames.py.
@@ -496,3 +545,20 @@ def test_a_failing_check_without_the_formula_does_not_use_up_the_hint():
     ex.check("safe_near", lambda z, g, f, b: "n")
     first = ex.check("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g)
     assert "solve step" not in str(first) and "a hint only" in str(first), str(first)
+
+
+def test_the_hiz_figure_draws_the_triangle_and_its_depth_at_the_extreme_centres():
+    """r40 08-4: the triangle was not in view and its depths were text only."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Polygon
+
+    report = ex.check("hiz_rejects", _hiz_with(vertex_only=True))
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    assert any(isinstance(p, Polygon) for p in ax.patches)
+    labels = [t.get_text() for t in ax.texts]
+    assert len([t for t in labels if t[:1].isdigit()]) >= 4, labels
+    plt.close(fig)

@@ -104,6 +104,11 @@ def coverage_cases():
          [[2.375 + 1 / 1024, -1], [6, 1.5], [2.375 + 1 / 1024, 5]], (1, 2), four),
         ("off the grid: 3/1024 px right of sample 0 rounds up, away from it",
          [[2.375 + 3 / 1024, -1], [6, 1.5], [2.375 + 3 / 1024, 5]], (1, 2), four),
+        # r40 06-1 (issue 30): a vertex off the grid in y too, so that snapping x alone fails
+        ("off the grid: a top edge 1/1024 px below sample 1",
+         [[0, 1.375 + 1 / 1024], [6, 1.375 + 1 / 1024], [3, 6]], (1, 2), four),
+        ("off the grid: a bottom edge 1/1024 px below sample 1",
+         [[0, 1.375 + 1 / 1024], [3, -4], [6, 1.375 + 1 / 1024]], (1, 2), four),
         ("off the grid: a half step (1/512 px) rounds to even, onto sample 0",
          [[2.375 + 1 / 512, -1], [6, 1.5], [2.375 + 1 / 512, 5]], (1, 2), four),
         ("zero area through the samples", [[2.375, 1.125], [2.875, 1.375], [3.375, 1.625]], (1, 2), four),  # fmt: skip
@@ -164,6 +169,9 @@ SNAPPING = {
     "none": lambda xy: np.asarray(xy, dtype=float),
     "half up": lambda xy: np.floor(np.asarray(xy, float) * 256 + 0.5) / 256,
     "down": lambda xy: np.floor(np.asarray(xy, float) * 256) / 256,
+    # one coordinate snapped, the other raw (r40 06-1: x alone passed every case)
+    "x only": lambda xy: np.column_stack([snap(xy)[:, 0], np.asarray(xy, float)[:, 1]]),
+    "y only": lambda xy: np.column_stack([np.asarray(xy, float)[:, 0], snap(xy)[:, 1]]),
 }
 
 
@@ -186,6 +194,20 @@ def _snap_words(args, expected, got) -> str:
     )
 
 
+def _one_axis_words(snapped: str, raw: str):
+    def words(args, expected, got) -> str:
+        xy = np.asarray(args[0], float)
+        k = {"x": 0, "y": 1}[raw]
+        moved = ", ".join(f"{exact([a])[1:-1]} → {exact([b])[1:-1]}"
+                          for a, b in zip(xy[:, k], snap(xy)[:, k]) if a != b)  # fmt: skip
+        return (
+            f"you snapped {snapped} but left {raw} unsnapped: snap both coordinates of "
+            f"every vertex to the 1/256 grid (here {raw}: {moved})"
+        )
+
+    return words
+
+
 def _tie_words(owns):
     def words(args, expected, got):
         xy, pixel, samples = args
@@ -193,7 +215,8 @@ def _tie_words(owns):
         points = sample_points(pixel, samples)
         on = next(((k, w) for k, p in enumerate(points) if (w := _edge_words(snapped, p))), None)
         where = f"; here sample {on[0]} at {vec(points[on[0]])} {on[1]}" if on else ""
-        return owns_words(owns) + where
+        # here the points decided are samples, not centres (r40 06-6)
+        return owns_words(owns).replace("centres", "samples").replace("centre", "sample") + where
 
     return words
 
@@ -210,6 +233,8 @@ COVERAGE_KNOBS = Knobs(fraction_with, {
              "(floor(x + ½))", "half up"),
         Slip("snapping down", "snapping rounds to the nearest 1/256 px (half to even), not down",
              "down"),
+        Slip("x snapped only", _one_axis_words("x", "y"), "x only"),
+        Slip("y snapped only", _one_axis_words("y", "x"), "y only"),
     ],
     "winding": [
         Slip("one winding only", _WINDING.format(which="counter-clockwise", sign="<"),

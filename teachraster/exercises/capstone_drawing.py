@@ -63,7 +63,9 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     h, w = ref.shape[:2]
     artists = []
     # no frame of yours (a stub, an error): no count (r6: "0 pixel(s) differ" beside it)
-    differ = "nothing to compare yet" if mine is None else f"{len(wrong)} pixel(s) differ"
+    n = len(wrong)
+    differ = ("nothing to compare yet" if mine is None else "no pixel differs" if n == 0
+              else f"{n} pixel{'s' * (n != 1)} differ{'s' * (n == 1)}")  # fmt: skip
     if view:  # the overdraw: short titles, the scale below
         titles = ("yours (overdraw)", "package's (overdraw)", differ)
         axes[0].set_xlabel(view, fontsize="x-small")
@@ -86,6 +88,14 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     diff = np.repeat(grey, 3, axis=2)
     if len(wrong):
         diff[wrong[:, 0], wrong[:, 1]] = (0.84, 0.19, 0.12)  # DIFF_COLOUR
+    elif mine is not None and spec.contrast is not None:  # yours matches: the section's point
+        from .capstone_render import contrast_pixels
+
+        repaired = contrast_pixels(spec.name)
+        diff[repaired[:, 0], repaired[:, 1]] = (0.17, 0.48, 0.73)
+        k = len(repaired)
+        axes[2].set_title(f"no pixel differs; blue: {k}\nwhere {spec.contrast}\nshows "
+                          "otherwise", fontsize="small")  # fmt: skip
     artists.append(axes[2].imshow(diff, extent=(0, w, h, 0), interpolation="nearest"))
     mark = _mark(report, wrong, pixel)
     if mark is not None:

@@ -283,7 +283,7 @@ def _shading(spec, used, reference, pixel) -> tuple[str, str]:
 
 
 def _texture(spec, used, reference, row, col) -> str:
-    tex = capstone_scene(spec.scene, spec.tiled).texture
+    tex = capstone_scene(spec.scene, spec.tiled, spec.tinted).texture
     uv = reference.attr("uv")[row, col]
     head = f"every record of its history agrees; at uv = {vec(uv)}"
     if "bilinear" in used:

@@ -5,7 +5,8 @@ The floor's checkerboard is symmetric (its transpose is itself) and its (u, v) s
 [0, 1], so a filter that swaps u and v, or clamps where it should repeat, would draw the same
 frame. The capstone's floor is tinted by two ramps, red along the columns and green along the
 rows (so the transpose shows), and its (u, v) run from −¼ to 1¼ (so every border is crossed
-and the wrap mode shows).
+and the wrap mode shows). The sphere's checkerboard is tinted the same way (r40 12-2: a
+bilinear that swaps u and v drew the untinted sphere right).
 """
 
 from __future__ import annotations
@@ -21,11 +22,12 @@ from ..pipeline.rendering.scenes import Scene, get_scene
 UV_SCALE, UV_SHIFT = 1.5, -0.25
 
 
-def capstone_scene(name: str, tiled: bool = False) -> Scene:
+def capstone_scene(name: str, tiled: bool = False, tinted: bool = False) -> Scene:
     """Built-in scene ``name``, built afresh (a student's function may write into what it is
-    given); ``tiled``: its texture tinted by ramps and its (u, v) widened."""
+    given); ``tinted``: its texture tinted by ramps; ``tiled``: tinted and its (u, v)
+    widened."""
     scene = get_scene(name)
-    if not tiled:
+    if not (tiled or tinted):
         return scene
     tex = np.asarray(scene.texture, dtype=float)
     h, w = tex.shape[:2]
@@ -35,6 +37,7 @@ def capstone_scene(name: str, tiled: bool = False) -> Scene:
     tinted[..., 0] *= ramp_x[None, :]
     tinted[..., 1] *= ramp_y[:, None]
     attrs = dict(scene.mesh.attrs)
-    attrs["uv"] = attrs["uv"] * UV_SCALE + UV_SHIFT
+    if tiled:
+        attrs["uv"] = attrs["uv"] * UV_SCALE + UV_SHIFT
     mesh = Mesh(scene.mesh.positions, scene.mesh.triangles, attrs)
     return replace(scene, mesh=mesh, texture=tinted)

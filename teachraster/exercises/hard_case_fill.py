@@ -195,7 +195,8 @@ def _far_words(args, expected, got) -> str:
     return (f"this triangle lies {far:.0f} px from the origin, where float32's numbers are "
             f"{step:g} px apart, coarser than the 1/256-px grid: a precision failure; keep "
             "the vertices in float64 (or integers in 1/256 px) and compute each edge function "
-            "from differences to a vertex, not as A x + B y + C")  # fmt: skip
+            "in float64 (from differences to a vertex is safest: A x + B y + C cancels two "
+            "products of size x·y)")  # fmt: skip
 
 
 #: What is wrong, by the catalogue's family, where no single mistake gives the answer (two or
@@ -237,19 +238,88 @@ def _snapping_decides(args, expected, got) -> bool:
     return not np.array_equal(unsnapped, expected)
 
 
+#: The vertices a tie mistake may sit beside: (how they were read, words naming that).
+_VERTEX_READINGS = (
+    ("snapped", ""),
+    ("raw", "you decide on the raw vertices (snap them first: np.rint(xy * 256) / 256), and "),
+    ("float32", "you store the vertices in float32 before snapping (keep them in float64), "
+     "and "),
+)  # fmt: skip
+
+
+def _readings(xy) -> dict[str, np.ndarray]:
+    raw = np.asarray(xy, float)
+    return {"snapped": snap(raw), "raw": raw, "float32": raw.astype(np.float32).astype(float)}
+
+
+def _tie_reading(rule: str, args, got) -> str | None:
+    """How the vertices were read (:data:`_VERTEX_READINGS`) when ``got`` is what the tie
+    ``rule`` gives on them, in float64 or float32; None when it is not. Never when float32
+    rounding of A x + B y + C gives ``got`` (:func:`_rounding_decides`): a vertex tested with
+    E ≥ 0 then comes out missing, as if E > 0 (r40 10-1)."""
+    if _rounding_decides(args, got):
+        return None
+    xy, width, height, origin = args
+    for reading, v in _readings(xy).items():
+        for dtype in (np.float64, np.float32):
+            if np.array_equal(got, naive_coverage(v, width, height, rule=rule, dtype=dtype,
+                                                  origin=tuple(origin))):  # fmt: skip
+                return reading
+    return None
+
+
 def _tie_rule_decides(rule: str):
     """``fits``: ``got`` is what the tie ``rule`` gives on the raw or snapped vertices, in
     float64 or float32 (the tie mistake beside another one, such as no snapping)."""
 
     def fits(args, expected, got) -> bool:
-        xy, width, height, origin = args
-        raw = np.asarray(xy, float)
-        return any(np.array_equal(got, naive_coverage(
-            v, width, height, rule=rule, dtype=dtype, origin=tuple(origin)))
-            for v in (raw, snap(raw), raw.astype(np.float32).astype(float))
-            for dtype in (np.float64, np.float32))  # fmt: skip
+        return _tie_reading(rule, args, got) is not None
 
     return fits
+
+
+def _tie_words(kind: str, rule: str):
+    """The tie mistake's words, with the vertex mistake beside it named first (r40 10-2: "E ≥
+    0" alone was said of a pixel left out, which only the raw vertices could leave out)."""
+
+    def words(args, expected, got) -> str:
+        reading = _tie_reading(rule, args, got) or "snapped"
+        return dict(_VERTEX_READINGS)[reading] + MISTAKES[kind]
+
+    return words
+
+
+#: The tie rules a student may write, as :func:`naive_coverage` names them.
+_RULES = ("inclusive", "strict", "top_left")
+
+
+def _rounding_decides(args, got) -> bool:
+    """Near the origin (float32 holds the 1/256 grid there), is ``got`` what A x + B y + C
+    evaluated in float32 gives, on the raw or snapped vertices with some tie rule, where the
+    same rule from differences in float64 gives another answer? Then float32 rounding moved
+    a centre across an edge it lies on (E exactly 0 at a vertex becomes −4.8e−07)."""
+    if float(np.spacing(np.float32(_far(args)))) > GRID:
+        return False  # far from the origin: FAR says it
+    xy, width, height, origin = args
+    for v in _readings(xy).values():
+        for rule in _RULES:
+            kw = dict(rule=rule, origin=tuple(origin))
+            low = naive_coverage(v, width, height, absolute=True, dtype=np.float32, **kw)
+            if np.array_equal(low, got) and not np.array_equal(
+                low, naive_coverage(v, width, height, **kw)
+            ):
+                return True
+    return False
+
+
+ROUNDING = Mistake(
+    "float32 rounding", "your edge functions round: A x + B y + C in float32 computes C = "
+    "x_a y_b − y_a x_b as a difference of two products, and its rounding leaves E slightly "
+    "negative (or positive) at a centre that lies exactly on an edge, so that centre changes "
+    "sides whatever your tie rule says; compute E from differences to a vertex, "
+    "(b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x), in float64: on the snapped grid it is "
+    "then exact", fits=lambda a, e, g: _rounding_decides(a, g), symptom=True,
+)  # fmt: skip
 
 
 OFF_GRID = Mistake(
@@ -341,8 +411,8 @@ MISTAKES = {
     "oriented before snapping": "you oriented the triangle by its unsnapped area: snapping can "
     "flip a tiny triangle's winding, so orient the snapped one",
     "absolute form": "you evaluate E = A x + B y + C from absolute coordinates in float32: far "
-    "from the origin C = x_a y_b - y_a x_b cancels two products of size x·y; compute E from "
-    "differences to a vertex, in float64",
+    "from the origin C = x_a y_b - y_a x_b cancels two products of size x·y; compute E in "
+    "float64 (from differences to a vertex is safest)",
     "float32": "you compute in float32: 10⁵ px from the origin its numbers are 1/128 px apart "
     "and cannot hold the 1/256-px grid; use float64",
 }
@@ -352,7 +422,7 @@ MISTAKES["transposed, origin swapped"] = (
 
 #: The tie mistakes beside another (r6: an unsnapped E >= 0 fill at 10013 px was told
 #: precision, where float32 holds the grid): named when no single cause fits.
-TIES = tuple(Mistake(kind, MISTAKES[kind], fits=_tie_rule_decides(rule), symptom=True)
+TIES = tuple(Mistake(kind, _tie_words(kind, rule), fits=_tie_rule_decides(rule), symptom=True)
              for kind, rule in (("E >= 0", "inclusive"), ("E > 0", "strict")))  # fmt: skip
 
 
@@ -423,6 +493,6 @@ def same_image(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 ROBUST_FILL = Exercise(
     "robust_fill", fill_cases, as_image, same_image, explain_fill, _rule,
-    variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, *TIES, OFF_GRID)), answers=(PackageAnswer(rasterize),),
+    variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, ROUNDING, *TIES, OFF_GRID)), answers=(PackageAnswer(rasterize),),
     draw=draw_fill, compose=compose,
 )  # fmt: skip

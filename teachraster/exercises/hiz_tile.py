@@ -27,7 +27,7 @@ from ..core.snapping import SUBPIXEL_BITS
 from ..pipeline.rasterization.batched_fill import Fragments, weight_source
 from .answers import as_bool
 from .cases import SEED
-from .exercise import Exercise, variant_mistakes
+from .exercise import Exercise, Mistake, variant_mistakes
 from .scalars import num
 
 #: Tile side of the cases (hardware Hi-Z uses 8 × 8).
@@ -49,11 +49,17 @@ def plane_at(xyz: np.ndarray, rows, cols, clamp: bool = True) -> np.ndarray:
         probe = Fragments(np.zeros(len(rows), np.int64), np.asarray(rows), np.asarray(cols),
                           np.zeros(1, np.int8), src, area)  # fmt: skip
         return probe.plane(xyz[None, :, 2])
+    return _bare_plane(xyz, rows, cols)
+
+
+def _bare_plane(xyz, rows, cols):
+    """The plane through the three vertices at pixel centres, in the arrays' own precision."""
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
     a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
     b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-    return z1 + a * (cols + 0.5 - x1) + b * (rows + 0.5 - y1)
+    half = np.asarray(0.5, dtype=np.asarray(xyz).dtype)
+    return z1 + a * (cols + half - x1) + b * (rows + half - y1)
 
 
 def expected_reject(xyz, row0, col0, size, buffer) -> bool:
@@ -165,6 +171,42 @@ MISTAKES = {
 }
 
 
+#: How close (relative) the nearest depth and the farthest stored one must be for float32's
+#: rounding to decide the verdict: a few float32 operations' worth.
+TIE = 8 * 2.0**-24
+
+
+def _tie_gap(args) -> float | None:
+    """The case's nearest depth minus its farthest stored one, when float32 cannot tell them
+    apart (an exact or near tie, :data:`TIE`); else None."""
+    xyz, row0, col0, size, buffer = args
+    near = float(plane_at(xyz, *_corners(row0, col0, size)).min())
+    far = float(np.max(buffer))
+    if not np.isfinite(far) or abs(near - far) > TIE * max(1.0, abs(far)):
+        return None
+    # a tie float32 holds exactly (a flat triangle at 0.5) is no place for its rounding: there
+    # ">" is the mistake ("strict")
+    rows, cols = _corners(row0, col0, size)
+    low = _bare_plane(np.asarray(xyz, np.float32), rows.astype(np.float32),
+                      cols.astype(np.float32))  # fmt: skip
+    if np.array_equal(low.astype(float), plane_at(xyz, rows, cols, clamp=False)):
+        return None
+    return near - far
+
+
+def _float32_words(args, expected, got) -> str:
+    gap = _tie_gap(args)
+    tie = "exactly equal" if gap == 0 else f"{abs(gap):.1e} apart"
+    return (f"the triangle's nearest depth and the tile's farthest stored one are {tie} here "
+            "(a tie: the fragment would fail the test, so the block is rejected), and float32's "
+            "rounding (about 6e-08 of a depth) decides it the other way: did you compute in "
+            "float32? Compute the plane in float64")  # fmt: skip
+
+
+#: r40 08-1: hiz_rejects in float32 was refused and blamed on "bare plane" or "outer corners".
+FLOAT32 = Mistake("float32", _float32_words, fits=lambda a, e, g: _tie_gap(a) is not None)
+
+
 def explain_hiz(args, expected, got) -> str:
     """The extreme centres, the triangle's nearest depth there, the tile's farthest, verdicts."""
     xyz, row0, col0, size, buffer = args
@@ -193,15 +235,28 @@ def draw_hiz(ax, case, got):
     shown = np.where(np.isfinite(buffer), buffer, np.nan)
     artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
                          vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
-    ring = np.vstack([xyz[:, :2], xyz[:1, :2]])
-    artists += ax.plot(ring[:, 0], ring[:, 1], color="#d7301f", linewidth=1.5)
+    # the triangle itself, shaded (r40 08-4: only an edge or none of it showed in the view)
+    from matplotlib.patches import Polygon
+
+    artists.append(ax.add_patch(Polygon(xyz[:, :2], closed=True, facecolor="#d7301f",
+                                        alpha=0.18, edgecolor="#d7301f", linewidth=1.5,
+                                        label="the triangle")))  # fmt: skip
     rows, cols = _corners(row0, col0, size)
+    depth = plane_at(xyz, rows, cols)
+    k = int(np.argmin(depth))
     artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
-    nearest = plane_at(xyz, rows, cols).min()
+    artists += ax.plot(cols[k] + 0.5, rows[k] + 0.5, "o", color="#ff9f1c", ms=8)  # the nearest
+    for r, c, z in zip(rows, cols, depth):  # the triangle's depth at each extreme centre
+        inward = (1 if c == col0 else -1, -1 if r == row0 else 1)  # y axis points down
+        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(14 * inward[0], 9 * inward[1]),
+                                   textcoords="offset points", ha="center", va="center",
+                                   fontsize="x-small", bbox={"boxstyle": "round,pad=0.15",
+                                   "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
     verdict = "rejected" if expected else "kept"
     yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
-    artists.append(ax.set_xlabel(f"nearest of the triangle {num(nearest)}, farthest stored "
-                                 f"{num(np.max(buffer))}:\n{verdict}{yours}",
+    artists.append(ax.set_xlabel(f"circles: the triangle's depth at the extreme centres\n(filled: "
+                                 f"nearest, {num(depth[k])}); farthest stored "
+                                 f"{num(np.max(buffer))}: {verdict}{yours}",
                                  fontsize="x-small"))  # fmt: skip
     ax.set_xlim(col0 - 2, col0 + size + 2)
     ax.set_ylim(row0 + size + 2, row0 - 2)
@@ -212,5 +267,5 @@ def draw_hiz(ax, case, got):
 
 HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
-    variant_mistakes(_variants, MISTAKES), draw=draw_hiz,
+    variant_mistakes(_variants, MISTAKES, (FLOAT32,)), draw=draw_hiz,
 )  # fmt: skip

@@ -11,6 +11,7 @@ from . import antialiasing as aa
 from . import depth_precision as dp
 from . import level_of_detail as lod
 from . import picture_scenes as scenes
+from . import resolve_light as rl
 from . import texture_filtering as tf
 from . import tile_blocks as tb
 
@@ -19,6 +20,7 @@ EXERCISES = {
     "depth_to_unorm": lambda: dp.exercise(scenes.depth_scene),
     "coverage_fraction": lambda: aa.coverage_exercise(scenes.coverage_scene),
     "resolve": lambda: aa.resolve_exercise(scenes.resolve_scene),
+    "resolve_srgb": lambda: rl.RESOLVE_SRGB,  # 6.3: the resolve in linear light (r40 06-2)
     "mip_level": lambda: lod.exercise(scenes.level_scene),
     "bilinear": lambda: tf.bilinear_exercise(scenes.bilinear_scene),
     "trilinear": lambda: tf.trilinear_exercise(scenes.trilinear_scene),

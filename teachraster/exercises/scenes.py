@@ -150,7 +150,7 @@ def _three_axes(axes):
     return axes
 
 
-def _show(ax, scene: Scene, image):
+def _show(ax, scene: Scene, image, scale=None):
     from matplotlib.colors import ListedColormap
 
     h, w = scene.reference.shape[:2]
@@ -161,9 +161,33 @@ def _show(ax, scene: Scene, image):
         return ax.imshow(image, cmap=cmap, vmin=0, vmax=n, extent=extent, interpolation="nearest")
     if image.ndim == 3:
         return ax.imshow(np.clip(np.nan_to_num(image, nan=1.0), 0, 1), extent=extent, interpolation="nearest")  # fmt: skip
-    finite = scene.reference[np.isfinite(scene.reference)]
-    lo, hi = (finite.min(), finite.max()) if finite.size else (0.0, 1.0)
+    lo, hi = scale if scale is not None else _scale(scene.reference)
     return ax.imshow(image, cmap="viridis", vmin=lo, vmax=hi, extent=extent, interpolation="nearest")  # fmt: skip
+
+
+def _scale(*images) -> tuple[float, float]:
+    """One colour scale for every image given (the student's too: r40 06-4, a fan spoke
+    covered 1.75 times drew as yellow as a full pixel on the package's scale, 0 to 1)."""
+    finite = np.concatenate(
+        [np.ravel(i)[np.isfinite(np.ravel(i))] for i in images if i is not None]
+    )
+    return (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
+
+
+def _key(axes, scene: Scene, shown):
+    """What the colours mean: a legend of the categories under the package's panel (r40 08-3:
+    the tile walk's three blues and greens had none), or one colour bar for both pictures."""
+    from matplotlib.patches import Patch
+
+    if scene.categories:
+        handles = [Patch(facecolor=c, edgecolor="0.5", label=name) for name, c in scene.categories]
+        return [axes[1].legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02),
+                               ncols=2, fontsize="x-small", frameon=False)]  # fmt: skip
+    if scene.reference.ndim == 3 or shown is None:
+        return []
+    bar = axes[1].figure.colorbar(shown, ax=list(axes[:2]), shrink=0.8, pad=0.02)
+    bar.ax.tick_params(labelsize="x-small")
+    return [bar]
 
 
 def _difference_panel(ax, scene: Scene):
@@ -199,12 +223,15 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
     axes = _three_axes(axes)
     got = scene.student_image()
     artists = []
+    scale = _scale(scene.reference, got)
     if got is None:
         artists.append(axes[0].text(0.5, 0.5, textwrap.fill(str(scene.error), 30), ha="center", va="center", transform=axes[0].transAxes, fontsize="small"))  # fmt: skip
     else:
-        artists.append(_show(axes[0], scene, got))
-    artists.append(_show(axes[1], scene, scene.reference))
+        artists.append(_show(axes[0], scene, got, scale))
+    theirs = _show(axes[1], scene, scene.reference, scale)
+    artists.append(theirs)
     artists += _difference_panel(axes[2], scene)
+    artists += _key(axes, scene, theirs)
     axes[0].set_title("yours", fontsize="small")
     axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 30), fontsize="small")
     for ax in axes:

@@ -74,9 +74,11 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
 
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
     last texel centres at u = 0 and 1 (x = u·(W − 1)); ``floor="trunc"`` finds the texel to the
-    left with int(); ``swap`` gives the left texel the weight of the right one; ``wrap_as``
+    left with int(); ``swap`` gives the left texel the weight of the right one (``"x"``, ``"y"``:
+    along that axis only); ``wrap_as``
     wraps with another mode whatever the case says (clamping x and y to the texel centres
-    first is the same as ``wrap_as="clamp"``); ``clamp="uv"`` clamps (u, v) to [0, 1] first;
+    first is the same as ``wrap_as="clamp"``); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
+    ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels;
     ``transpose`` swaps the texture's rows and columns.
     """
     tex = np.asarray(texture, dtype=float)
@@ -85,11 +87,16 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     h, w = tex.shape[:2]
     centre, span = ORIGINS[origin]
     u, v = np.clip(uv, 0.0, 1.0) if clamp == "uv" else np.asarray(uv, dtype=float)
+    if clamp == "mod":  # (u, v) wrapped into [0, 1) first, the texels then clamped
+        u, v = np.mod(u, 1.0), np.mod(v, 1.0)
+        wrap_as = "clamp"
     x, y = u * (w + span) - centre, v * (h + span) - centre
     x0, y0 = (np.trunc if floor == "trunc" else np.floor)(np.array([x, y]))
     fx, fy = x - x0, y - y0
-    if swap:
-        fx, fy = 1 - fx, 1 - fy
+    if swap in (True, "x"):
+        fx = 1 - fx
+    if swap in (True, "y"):
+        fy = 1 - fy
     mode = wrap_as or wrap
 
     def index(i, n):
@@ -217,13 +224,23 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     ],
     "floor": [Slip("int() for floor", _trunc_words, "trunc")],
     "swap": [Slip("weights swapped", "the weight of the right (lower) texel is the fraction "
-                  "x − ⌊x⌋ (y − ⌊y⌋); you gave it to the left (upper) one", True)],
+                  "x − ⌊x⌋ (y − ⌊y⌋); you gave it to the left (upper) one", True),
+             # r40 07-1: swapped along one axis, this was called "nearest filtering"
+             Slip("weights swapped", "the weight of the right texel is the fraction x − ⌊x⌋; "
+                  "you gave it to the left one (the weights along x are swapped)", "x"),
+             Slip("weights swapped", "the weight of the lower texel is the fraction y − ⌊y⌋; "
+                  "you gave it to the upper one (the weights along y are swapped)", "y")],
     "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
                 Slip("always repeat", _wrap_words("repeat"), "repeat")],
     "clamp": [
         Slip("clamped (u, v) first", "you clamped (u, v) to [0, 1] first: with wrap 'repeat' a "
              "coordinate outside [0, 1] tiles, and near the border the texels beyond wrap "
              "around", "uv"),
+        # r40 07-1: repeat as uv % 1 with the texels then clamped was "nearest filtering"
+        Slip("wrapped (u, v), clamped texels", "you wrapped (u, v) into [0, 1) and then "
+             "clamped the texels to the border: with wrap 'repeat' the texels beyond the border "
+             "wrap around too (column −1 is column W − 1), so wrap the texel indices, not (u, v)",
+             "mod"),
     ],
     "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
                        f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
@@ -246,12 +263,27 @@ def _one_texel(args, expected, got) -> bool:
     return not all_close(got, expected) and any(all_close(got, t) for t in texels)
 
 
+def _one_texel_words(args, expected, got) -> str:
+    """Nearest filtering only where ``got`` is the texel (u, v) lies in (GL's NEAREST, any
+    tie): swapped weights give a neighbour of it, which is not nearest filtering (r40 07-1)."""
+    tex, uv, wrap = np.asarray(args[0], float), args[1], args[2]
+    h, w = tex.shape[:2]
+    index = (lambda i, n: i % n) if wrap == "repeat" else (lambda i, n: min(max(i, 0), n - 1))
+    fx, fy = uv[0] * w, uv[1] * h
+    rows = {int(np.floor(fy)), int(np.ceil(fy)) - 1}  # a tie on a texel border: either one
+    cols = {int(np.floor(fx)), int(np.ceil(fx)) - 1}
+    if any(all_close(got, tex[index(r, h), index(c, w)]) for r in rows for c in cols):
+        return ": that is one texel alone, nearest filtering; bilinear blends the four texels around (x, y)"
+    return (": that is one of the four texels around (x, y) alone, not the one (u, v) lies in; "
+            "bilinear blends all four, each weighted by how close (x, y) lies to it")  # fmt: skip
+
+
 BILINEAR_MISTAKES = [
     CHANNELS,
     Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
             "around (x, y)", gives=_nearest),
-    Mistake("one texel", ": that is one texel alone, nearest filtering; bilinear blends the "
-            "four texels around (x, y)", fits=_one_texel),
+    # a symptom: a texel alone is also what swapped weights give at a texel centre (r40 07-1)
+    Mistake("one texel", _one_texel_words, fits=_one_texel, symptom=True),
     BILINEAR_KNOBS,
 ]  # fmt: skip
 
@@ -276,19 +308,46 @@ def bilinear_exercise(scene) -> Exercise:
 
 
 def draw_texture_case(ax, case, got):
-    """The texture (level 0), its texel centres, and the point (u, v) in texel units."""
-    from .drawing import draw_values
+    """The texture (level 0) in texel units, its texel centres, the point (x, y) = (u·W − ½,
+    v·H − ½) + ½ and the four texels bilinear blends there, each with its weight; the expected
+    value and yours below (r40 07-3: two bars of one number showed nothing of the filter)."""
+    from matplotlib.patches import Rectangle
 
     tex, uv = case[1][0], case[1][1]
-    if isinstance(tex, list):
+    levels = isinstance(tex, list)  # trilinear: level 0 drawn, the point, no texel weights
+    if levels:
         tex = tex[0]
+    tex = np.asarray(tex, dtype=float)
+    h, w = tex.shape[:2]
+    shown = tex / max(float(np.max(tex)), 1.0)  # 8-bit values drawn as [0, 1]
+    shown = shown if shown.ndim == 2 or shown.shape[2] == 3 else shown[..., 0]
+    artists = [ax.imshow(shown, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0),
+                         interpolation="nearest")]  # fmt: skip
+    cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
+    artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
+    px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
+    x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
+    fx, fy = px - 0.5 - x0, py - 0.5 - y0
+    for dx, dy in () if levels else ((0, 0), (1, 0), (0, 1), (1, 1)):
+        weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
+        artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
+                                              edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
+        artists.append(ax.text(x0 + dx + 0.5, y0 + dy + 0.78, f"w {weight:.2g}", ha="center",
+                               fontsize="x-small", color="#2b7bba",
+                               bbox={"facecolor": "white", "alpha": 0.8, "pad": 1,
+                                     "edgecolor": "none"}))  # fmt: skip
+    artists += ax.plot(px, py, "x", color="#d7301f", ms=10, mew=2)
+    ax.set_xlim(min(0, x0) - 0.2, max(w, x0 + 2) + 0.2)
+    ax.set_ylim(max(h, y0 + 2) + 0.2, min(0, y0) - 0.2)
+    ax.set_aspect("equal")
     expected = np.ravel(case[2])
-    yours = None if got is None else np.ravel(got)
-    if yours is not None and yours.size != expected.size:
-        yours = None
-    labels = [f"channel {k}" for k in range(expected.size)] if expected.size > 1 else ["value"]
-    artists = draw_values(ax, labels, expected, yours)
-    artists.append(ax.set_xlabel(f"uv = {vec(uv)} on a {tex.shape[0]}×{tex.shape[1]} texture"))
+    yours = (
+        "" if got is None or np.size(got) != expected.size else f", yours {_value(got, expected)}"
+    )
+    where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
+             f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres")  # fmt: skip
+    artists.append(ax.set_xlabel(f"uv = {vec(uv)} (×), {where};\nthe filtered value is "
+                                 f"{_value(expected, got)}{yours}", fontsize="x-small"))  # fmt: skip
     return artists
 
 

@@ -1,0 +1,140 @@
+"""Exercise ``resolve_srgb`` (lesson 08 §8, lesson 12b): the MSAA resolve in linear light.
+
+Exercise 6.2's resolve averages the numbers it is given. The samples of an 8-bit framebuffer
+are sRGB-encoded, and encoded numbers are not light: half of a black pixel and half of a white
+one must show the light of 50 % white, which encodes as 0.735, not 0.5. So the resolve
+decodes every sample (and the background) to linear light, averages there, and encodes the
+mean again (GL's ``FRAMEBUFFER_SRGB`` resolve; lesson 08 §8 and lesson 12b). The student
+works out that order; the curves are the package's tools (``tr.srgb_to_linear``,
+``tr.linear_to_srgb``). Cases: exercise 6.2's, read as sRGB-encoded, and black on white at
+each coverage of 4 samples.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+
+from ..core.blend_factors import linear_to_srgb, srgb_to_linear
+from ..pipeline.render_triangles import Frame
+from .antialiasing import (
+    _resolve_case,
+    as_colour,
+    draw_resolve_case,
+    expected_resolve,
+    resolve_cases,
+    same_colour,
+)
+from .exercise import Exercise, Mistake, PackageAnswer
+from .scalars import vec
+
+
+def _decode(colours) -> np.ndarray:
+    """sRGB-encoded colours to linear light, NaN (no triangle wrote the sample) kept."""
+    c = np.asarray(colours, dtype=float)
+    out = np.full_like(c, np.nan)
+    finite = np.isfinite(c)
+    out[finite] = srgb_to_linear(c[finite])
+    return out
+
+
+def _encode(linear) -> np.ndarray:
+    return linear_to_srgb(np.clip(np.asarray(linear, dtype=float), 0.0, 1.0))
+
+
+def expected_resolve_srgb(colours, ids, background) -> np.ndarray:
+    """Decode, resolve (the package's, :func:`.antialiasing.expected_resolve`), encode."""
+    linear = expected_resolve(_decode(colours), ids, srgb_to_linear(background))
+    return _encode(linear)
+
+
+@cache  # the same cases on every check: built once
+def resolve_srgb_cases():
+    """Exercise 6.2's cases read as sRGB-encoded, then black on white at 1 to 3 of 4 samples
+    (where averaging the encoded numbers is farthest off)."""
+    black, white = np.zeros(3), np.ones(3)
+    out = []
+    for k in (1, 2, 3):
+        ids = [0] * k + [-1] * (4 - k)
+        out.append(_resolve_case(f"black on white, {k} of 4 samples", ids, [black] * 4, white))
+    out += list(resolve_cases())
+    return [(label, args, expected_resolve_srgb(*args)) for label, args, _ in out]
+
+
+def _covered(ids) -> np.ndarray:
+    return np.asarray(ids) >= 0
+
+
+def _rule(args, expected, got) -> str:
+    _, ids, _ = args
+    s, k = len(ids), int(_covered(ids).sum())
+    return (f"; decode the {k} covered sample{'s' * (k != 1)} and the background to linear "
+            f"light, average over all {s} samples there, and encode the mean: "
+            "linear_to_srgb((Σ srgb_to_linear(covered) + (S − k)·srgb_to_linear(background)) / S)")  # fmt: skip
+
+
+def _mix(colours, ids, background, decode, encode, covered_only=False):
+    """A resolve with the decoding and encoding given (identity: the numbers as they are)."""
+    c = _covered(ids)
+    if covered_only:
+        if not c.any():
+            return None
+        return encode(decode(np.asarray(colours, float)[c]).mean(axis=0))
+    mixed = np.where(c[:, None], decode(np.nan_to_num(np.asarray(colours, float))),
+                     decode(np.asarray(background, float)))  # fmt: skip
+    return encode(mixed.mean(axis=0))
+
+
+def _same(x):
+    return np.asarray(x, dtype=float)
+
+
+def _power(x, g):
+    return np.clip(np.asarray(x, dtype=float), 0, None) ** g
+
+
+def _background_raw(colours, ids, background):
+    c = _covered(ids)
+    mixed = np.where(c[:, None], _decode(np.nan_to_num(np.asarray(colours, float))),
+                     np.asarray(background, float))  # fmt: skip
+    return _encode(mixed.mean(axis=0))
+
+
+MISTAKES = [
+    Mistake("encoded average", ": you averaged the sRGB-encoded numbers, as 6.2's resolve does: "
+            "encoded numbers are not light (black on white at 2 of 4 samples must show half of "
+            "white's light, 0.735 encoded, not 0.5); decode first, average in linear light, "
+            "encode the mean",
+            gives=lambda c, i, b: _mix(c, i, b, _same, _same)),
+    Mistake("not encoded", ": that is the mean in linear light, not encoded again: the "
+            "framebuffer holds sRGB-encoded numbers, so encode it (linear_to_srgb)",
+            gives=lambda c, i, b: _mix(c, i, b, srgb_to_linear, _same)),
+    Mistake("encoded twice", ": you encoded where you should decode (and the other way "
+            "round): srgb_to_linear takes the encoded samples to light, linear_to_srgb takes "
+            "the mean back", gives=lambda c, i, b: _mix(c, i, b, linear_to_srgb, srgb_to_linear)),
+    Mistake("background not decoded", ": the background is sRGB-encoded like the samples: "
+            "decode it too before it joins the average", gives=_background_raw),
+    Mistake("covered only", ": you averaged the covered samples only; an uncovered sample "
+            "counts as the background", gives=lambda c, i, b: _mix(c, i, b, _decode, _encode,
+                                                                   covered_only=True)),
+    Mistake("power 2.2", ": that is a plain power of 2.2: sRGB's curve is linear near black "
+            "and a power of 2.4 above it (srgb_to_linear, linear_to_srgb compute it exactly)",
+            gives=lambda c, i, b: _mix(c, i, b, lambda x: _power(x, 2.2),
+                                       lambda x: _power(x, 1 / 2.2))),
+]  # fmt: skip
+
+
+def explain(args, expected, got) -> str:
+    colours, ids, background = args
+    s, k = len(ids), int(_covered(ids).sum())
+    return (f"ids {np.asarray(ids).tolist()} ({k} of {s} samples covered), sRGB-encoded "
+            f"background {vec(background)}: the resolve in linear light, encoded, is "
+            f"{vec(expected, got)}; yours is {vec(got, expected)}")  # fmt: skip
+
+
+RESOLVE_SRGB = Exercise(
+    "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
+    answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case,
+    reference=("teachraster.exercises.antialiasing",),
+)  # fmt: skip
