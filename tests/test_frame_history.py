@@ -681,6 +681,60 @@ def test_history_plot_marks_depths_on_a_written_out_axis():
         plt.close(fig)
 
 
+@pytest.mark.parametrize("depth_write", [False, True])
+def test_history_colour_swatches_draw_the_colours_the_table_prints(depth_write):
+    """Review r44 D1: the target's before/after swatches were composited over white by the
+    target's alpha once more, drawing (245, 179, 179) for a pixel the table prints as
+    (0.95, 0.6, 0.6) = (242, 153, 153). Each swatch's face colour, and the pixel at its
+    centre in the rendered figure, is the record's RGB (the fragment's: over white)."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    from teachraster.pipeline.debugging.frame_history import swatch_colours
+
+    scene = get_scene("intersecting_triangles")
+    clip = scene.clip(64 / 48)
+    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.5)], axis=2)
+    glass = tr.render(clip, 64, 48, attrs=rgba, blend="over", clear_color=(1, 1, 1, 1),
+                      trace=True, depth_write=depth_write)  # fmt: skip
+    row, col = np.argwhere(glass.overlay("overdraw") == 2)[0]
+    h = glass.history(int(row), int(col))
+    passed = [r for r in h if r.outcome == "passed"]
+    assert passed and passed[0].color_after != passed[0].color_before
+    expected = {  # (record index, offset) -> the RGB the swatch must show
+        "color_before": [r.color_before[:3] for r in passed],
+        "color_after": [r.color_after[:3] for r in passed],
+        "color": [np.multiply(r.color[:3], r.color[3]) + 1 - r.color[3] for r in passed],
+    }
+    for key, rgbs in expected.items():
+        np.testing.assert_allclose(swatch_colours(h, key), np.clip(rgbs, 0, 1), atol=1e-12)
+    with pytest.raises(ValueError, match="key"):
+        swatch_colours(h, "colour")
+    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=100)
+    try:
+        h.plot(ax)
+        fig.canvas.draw()
+        image = np.asarray(fig.canvas.buffer_rgba())
+        swatches = [p for p in ax.patches
+                    if isinstance(p, Rectangle) and np.isclose(p.get_width(), 0.26)]  # fmt: skip
+        on = [i for i, r in enumerate(h) if r.outcome == "passed"]
+        assert len(swatches) == 3 * len(on)
+        for p in swatches:
+            centre = (p.get_x() + p.get_width() / 2, p.get_y() + p.get_height() / 2)
+            k = int(np.argmin([abs(centre[0] - i) for i in on]))  # the record under it
+            dx = centre[0] - on[k]
+            key = "color_before" if dx < -0.1 else "color_after" if dx > 0.1 else "color"
+            want = np.clip(expected[key][k], 0, 1)
+            np.testing.assert_allclose(p.get_facecolor()[:3], want, atol=1e-12)
+            x, y = ax.transData.transform(centre)
+            drawn = image[image.shape[0] - 1 - int(round(y)), int(round(x)), :3]
+            np.testing.assert_allclose(drawn, np.round(want * 255), atol=1)
+    finally:
+        plt.close(fig)
+
+
 def test_history_legend_keys_the_buffer_before_and_after_apart():
     """Lesson 11 says "the buffer before (○) and after (●)": two legend entries, not one."""
     import matplotlib.pyplot as plt
