@@ -556,6 +556,19 @@ def _lesson_11_source() -> str:
     return "".join("".join(c["source"]) for c in json.loads(path.read_text())["cells"])
 
 
+def _nearest_centre(corners, width, height) -> float:
+    """The least distance (px) from a pixel centre to an edge of the triangles ``corners``
+    ((n, 3, 2) window positions) in a ``width`` x ``height`` frame."""
+    ys, xs = np.mgrid[0:height, 0:width] + 0.5
+    p = np.stack([xs.ravel(), ys.ravel()], axis=1)
+    least = np.inf
+    for tri in corners:
+        for a, b in zip(tri, np.roll(tri, -1, axis=0)):
+            t = np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0, 1)
+            least = min(least, np.hypot(*(p - (a + t[:, None] * (b - a))).T).min())
+    return float(least)
+
+
 def test_lesson_11_tells_each_story():
     from test_lessons import lesson
 
@@ -566,12 +579,20 @@ def test_lesson_11_tells_each_story():
     assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
-    # Question 1 (r36 11-2: no longer one step from its own premise): triangle 0 drawn again
-    # with the test on passes exactly where the farther triangle won (GL_ALWAYS wrote blue's
-    # depth there); an empty buffer would let it pass everywhere, a kept red depth nowhere
+    # Question 1 (r36 11-2, r44 D4: not the set the question before it has just shown):
+    # drawn blue first, then red, test off, the buffer keeps red's depth wherever red
+    # covers; blue drawn again with the test on passes exactly where blue is nearer and red
+    # covers too; an empty buffer (glDisable) would let it pass at all its pixels, a kept
+    # nearer depth nowhere
     assert "answer=redraw_passes," in _lesson_11_source()
-    assert np.array_equal(ns.redraw_passes, ns.far_wins)
-    assert 0 < ns.redraw_passes.sum() < (ns.red_alone.triangle_id == 0).sum()
+    red = tr.render(ns.coarse[:1], 12, 9).triangle_id == 0
+    blue = ns.blue_alone.triangle_id == 0
+    assert np.array_equal(ns.redraw_passes, (ns.coarse_on.triangle_id == 1) & red)
+    assert not np.array_equal(ns.redraw_passes, ns.far_wins)
+    assert ns.redraw_passes.sum() != ns.far_wins.sum()  # not even the count it just showed
+    assert 0 < ns.redraw_passes.sum() < blue.sum()  # the empty-buffer belief: all of blue
+    kept = ns.coarse_on.depth  # the nearer depth at each pixel
+    assert not (blue & (ns.blue_alone.depth < kept)).any()  # that belief: none passes
     assert (
         ns.far_won[1].depth_after
         == ns.far_won[1].depth
@@ -595,6 +616,9 @@ def test_lesson_11_tells_each_story():
     on, off = ns.coarse_on.triangle_id, ns.coarse_off.triangle_id
     assert np.array_equal(ns.far_wins, (on == 0) & (off == 1)) and 5 <= ns.far_wins.sum() <= 15
     assert (ns.coarse_on.trace.clip_status == 0).all()  # pieces 0, 1 are the two triangles
+    # r44 D3: every pixel centre at least 0.2 px from every edge of both triangles (at
+    # 0.03 px, under the dashed outline, a centre could not be judged by eye)
+    assert _nearest_centre(ns.coarse_on.trace.window[..., :2], 12, 9) >= 0.2
     # §3: the sliver is counter-clockwise on screen, so its edges are E13, E32, E21
     assert tr.Triangle(ns.sliver_xy).front_facing
     assert all(r.edge in ("E13", "E32", "E21") for r in ns.one.history(ns.r, ns.c)
