@@ -327,3 +327,24 @@ def test_triangle_size_colour_bar_labels_the_top_of_its_range():
     assert log_ticks(60) == [1, 2, 4, 8, 16, 32, 60] and log_ticks(64)[-1] == 64
     assert log_ticks(47) == [1, 2, 4, 8, 16, 47]  # 32 would sit on 47's label
     assert len(log_ticks(70000)) <= 7 and log_ticks(70000)[0] == 1
+
+
+def test_overlay_colour_bar_lies_under_the_frame_when_asked():
+    """``orientation="horizontal"`` (the inspector, lesson 11's Hi-Z panel: r36 item 6, a
+    two-line key turned on its side) puts the bar's label on its x axis; a bad orientation
+    is refused by name."""
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_overlay
+
+    frame = tr.render(tr.get_scene("cube"), None, 32, 24, trace=True)
+    fig, ax = plt.subplots()
+    try:
+        art = plot_overlay(ax, frame, "hi_z", orientation="horizontal")
+        assert art.colorbar.orientation == "horizontal"
+        assert art.colorbar.ax.xaxis.label.get_text().startswith("Hi-Z rejections")
+        with pytest.raises(ValueError, match="orientation"):
+            plot_overlay(ax, frame, "hi_z", orientation="sideways")
+    finally:
+        plt.close(fig)
