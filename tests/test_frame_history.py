@@ -556,6 +556,19 @@ def _lesson_11_source() -> str:
     return "".join("".join(c["source"]) for c in json.loads(path.read_text())["cells"])
 
 
+def _nearest_centre(corners, width, height) -> float:
+    """The least distance (px) from a pixel centre to an edge of the triangles ``corners``
+    ((n, 3, 2) window positions) in a ``width`` x ``height`` frame."""
+    ys, xs = np.mgrid[0:height, 0:width] + 0.5
+    p = np.stack([xs.ravel(), ys.ravel()], axis=1)
+    least = np.inf
+    for tri in corners:
+        for a, b in zip(tri, np.roll(tri, -1, axis=0)):
+            t = np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0, 1)
+            least = min(least, np.hypot(*(p - (a + t[:, None] * (b - a))).T).min())
+    return float(least)
+
+
 def test_lesson_11_tells_each_story():
     from test_lessons import lesson
 
@@ -566,12 +579,20 @@ def test_lesson_11_tells_each_story():
     assert glass[1].color_after == tuple(ns.glass.color[ns.row, ns.col])
     assert ns.far_won.outcomes == ["passed", "passed"] and ns.far_won.shows == 1
     assert ns.far_won[0].depth < ns.far_won[1].depth  # the farther one shows
-    # Question 1 (r36 11-2: no longer one step from its own premise): triangle 0 drawn again
-    # with the test on passes exactly where the farther triangle won (GL_ALWAYS wrote blue's
-    # depth there); an empty buffer would let it pass everywhere, a kept red depth nowhere
+    # Question 1 (r36 11-2, r44 D4: not the set the question before it has just shown):
+    # drawn blue first, then red, test off, the buffer keeps red's depth wherever red
+    # covers; blue drawn again with the test on passes exactly where blue is nearer and red
+    # covers too; an empty buffer (glDisable) would let it pass at all its pixels, a kept
+    # nearer depth nowhere
     assert "answer=redraw_passes," in _lesson_11_source()
-    assert np.array_equal(ns.redraw_passes, ns.far_wins)
-    assert 0 < ns.redraw_passes.sum() < (ns.red_alone.triangle_id == 0).sum()
+    red = tr.render(ns.coarse[:1], 12, 9).triangle_id == 0
+    blue = ns.blue_alone.triangle_id == 0
+    assert np.array_equal(ns.redraw_passes, (ns.coarse_on.triangle_id == 1) & red)
+    assert not np.array_equal(ns.redraw_passes, ns.far_wins)
+    assert ns.redraw_passes.sum() != ns.far_wins.sum()  # not even the count it just showed
+    assert 0 < ns.redraw_passes.sum() < blue.sum()  # the empty-buffer belief: all of blue
+    kept = ns.coarse_on.depth  # the nearer depth at each pixel
+    assert not (blue & (ns.blue_alone.depth < kept)).any()  # that belief: none passes
     assert (
         ns.far_won[1].depth_after
         == ns.far_won[1].depth
@@ -595,6 +616,9 @@ def test_lesson_11_tells_each_story():
     on, off = ns.coarse_on.triangle_id, ns.coarse_off.triangle_id
     assert np.array_equal(ns.far_wins, (on == 0) & (off == 1)) and 5 <= ns.far_wins.sum() <= 15
     assert (ns.coarse_on.trace.clip_status == 0).all()  # pieces 0, 1 are the two triangles
+    # r44 D3: every pixel centre at least 0.2 px from every edge of both triangles (at
+    # 0.03 px, under the dashed outline, a centre could not be judged by eye)
+    assert _nearest_centre(ns.coarse_on.trace.window[..., :2], 12, 9) >= 0.2
     # §3: the sliver is counter-clockwise on screen, so its edges are E13, E32, E21
     assert tr.Triangle(ns.sliver_xy).front_facing
     assert all(r.edge in ("E13", "E32", "E21") for r in ns.one.history(ns.r, ns.c)
@@ -678,6 +702,60 @@ def test_history_plot_marks_depths_on_a_written_out_axis():
             assert float(label.get_text()) == pytest.approx(tick, abs=1e-12)
         lo, hi = min(depths), max(depths)
         assert ticks.max() <= hi + 1.2 * max(hi - lo, 2e-4)  # none beside the swatches
+        plt.close(fig)
+
+
+@pytest.mark.parametrize("depth_write", [False, True])
+def test_history_colour_swatches_draw_the_colours_the_table_prints(depth_write):
+    """Review r44 D1: the target's before/after swatches were composited over white by the
+    target's alpha once more, drawing (245, 179, 179) for a pixel the table prints as
+    (0.95, 0.6, 0.6) = (242, 153, 153). Each swatch's face colour, and the pixel at its
+    centre in the rendered figure, is the record's RGB (the fragment's: over white)."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    from teachraster.pipeline.debugging.frame_history import swatch_colours
+
+    scene = get_scene("intersecting_triangles")
+    clip = scene.clip(64 / 48)
+    rgba = np.concatenate([scene.mesh.corner("color"), np.full((len(clip), 3, 1), 0.5)], axis=2)
+    glass = tr.render(clip, 64, 48, attrs=rgba, blend="over", clear_color=(1, 1, 1, 1),
+                      trace=True, depth_write=depth_write)  # fmt: skip
+    row, col = np.argwhere(glass.overlay("overdraw") == 2)[0]
+    h = glass.history(int(row), int(col))
+    passed = [r for r in h if r.outcome == "passed"]
+    assert passed and passed[0].color_after != passed[0].color_before
+    expected = {  # (record index, offset) -> the RGB the swatch must show
+        "color_before": [r.color_before[:3] for r in passed],
+        "color_after": [r.color_after[:3] for r in passed],
+        "color": [np.multiply(r.color[:3], r.color[3]) + 1 - r.color[3] for r in passed],
+    }
+    for key, rgbs in expected.items():
+        np.testing.assert_allclose(swatch_colours(h, key), np.clip(rgbs, 0, 1), atol=1e-12)
+    with pytest.raises(ValueError, match="key"):
+        swatch_colours(h, "colour")
+    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=100)
+    try:
+        h.plot(ax)
+        fig.canvas.draw()
+        image = np.asarray(fig.canvas.buffer_rgba())
+        swatches = [p for p in ax.patches
+                    if isinstance(p, Rectangle) and np.isclose(p.get_width(), 0.26)]  # fmt: skip
+        on = [i for i, r in enumerate(h) if r.outcome == "passed"]
+        assert len(swatches) == 3 * len(on)
+        for p in swatches:
+            centre = (p.get_x() + p.get_width() / 2, p.get_y() + p.get_height() / 2)
+            k = int(np.argmin([abs(centre[0] - i) for i in on]))  # the record under it
+            dx = centre[0] - on[k]
+            key = "color_before" if dx < -0.1 else "color_after" if dx > 0.1 else "color"
+            want = np.clip(expected[key][k], 0, 1)
+            np.testing.assert_allclose(p.get_facecolor()[:3], want, atol=1e-12)
+            x, y = ax.transData.transform(centre)
+            drawn = image[image.shape[0] - 1 - int(round(y)), int(round(x)), :3]
+            np.testing.assert_allclose(drawn, np.round(want * 255), atol=1)
+    finally:
         plt.close(fig)
 
 

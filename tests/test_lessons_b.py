@@ -995,6 +995,9 @@ def test_11_question_4_counts_tiles_as_lesson_10_names_them():
     ns = lesson("11_debugging_a_frame")
     tiles = {(int(r) // 8, int(c) // 8) for r, c in np.argwhere(ns.rejected > 0)}
     assert ns.hz_tiles == len(tiles) == 1 and int(ns.rejected.sum()) == 64
+    # r44 D14: the answer names the face (one z shared by the rejected triangles' corners),
+    # the far one: its Hi-Z-rejected fragments are farther than the buffer's depth
+    assert len(ns.hz_face_z) == 1 and ns.hz_rec.depth > ns.hz_rec.depth_before
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
     answer = next("".join(c["source"]) for c in cells if "Question 4:" in "".join(c["source"]))
     assert "per tile" in answer and "whole tile" in answer

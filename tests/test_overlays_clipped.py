@@ -229,16 +229,55 @@ def test_frame_inspector_overlay_titles_and_colour_bars_fit_in_the_classroom_sty
 
 def _bar_fits(w, renderer, view):
     """The inspector's title, colour-bar ticks and label lie inside its figure, the label not
-    on the ticks."""
+    on the ticks, the bar (horizontal, review r44 D2) under the frame."""
     width, height = w.fig.bbox.width, w.fig.bbox.height  # the figure holds the bar's room
-    ticks = [t for t in w.cax.get_yticklabels() if t.get_text()]
-    label = w.cax.yaxis.label
+    ticks = [t for t in w.cax.get_xticklabels() if t.get_text()]
+    label = w.cax.xaxis.label
     for text in [w.ax.title, *ticks, label]:
         box = text.get_window_extent(renderer)
         assert 0 <= box.x0 and box.x1 <= width, (view, text.get_text())
         assert 0 <= box.y0 and box.y1 <= height, (view, text.get_text(), box)
-    right = max(t.get_window_extent(renderer).x1 for t in ticks)
-    assert label.get_window_extent(renderer).x0 >= right, view
+    low = min(t.get_window_extent(renderer).y0 for t in ticks)
+    assert label.get_window_extent(renderer).y1 <= low, view
+    assert w.cax.get_window_extent(renderer).y1 <= w.ax.get_window_extent(renderer).y0, view
+
+
+def test_frame_inspector_keeps_its_width_and_row_height_in_every_view():
+    """Review r44 D2: in the overlay views a colour bar on the right widened the frame's
+    figure from 384 to 486 px; at 1280 px with the file browser open (an ~850-px column)
+    the history chart wrapped under the frame and the table dropped ~350 px. The bar now
+    lies under the frame: the figure is as wide in every view, the frame stays where it
+    is, and the row (frame and chart side by side) is as tall as the chart, so that the
+    table under it never moves; frame and chart fit an 850-px column side by side."""
+    pytest.importorskip("ipywidgets")
+    import matplotlib
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets import FrameInspector
+
+    with matplotlib.rc_context():
+        use_style("classroom")
+        w = FrameInspector("intersecting_triangles", 64, 48, backend="image")
+        try:
+            dpi = w.fig.dpi
+            wide = w.fig.get_size_inches()[0]
+            chart = w.hist_fig.get_size_inches()
+            fig_h = w.fig.get_size_inches()[1]
+            top = (1 - w.ax.get_position().y1) * fig_h  # the frame's top, from the figure's
+            assert (wide + chart[0]) * dpi <= 850 - 16, (wide, chart)
+            for scene, samples, views in (("intersecting_triangles", 1, KINDS),
+                                          ("cube", 1, ["hi_z"]), ("uv_sphere", 4, KINDS)):  # fmt: skip
+                w.scene.value, w.samples.value = scene, samples
+                for view in ["image", *views]:
+                    w.view.value = view
+                    w.fig.canvas.draw()
+                    size = w.fig.get_size_inches()
+                    assert size[0] == pytest.approx(wide), (scene, view)
+                    assert size[1] <= chart[1], (scene, samples, view, size)
+                    here = (1 - w.ax.get_position().y1) * size[1]
+                    assert here == pytest.approx(top), (scene, view)
+        finally:
+            w.close()
 
 
 # -- the colour bars say what they count (review 11-12 r5) ---------------------------------
@@ -288,3 +327,24 @@ def test_triangle_size_colour_bar_labels_the_top_of_its_range():
     assert log_ticks(60) == [1, 2, 4, 8, 16, 32, 60] and log_ticks(64)[-1] == 64
     assert log_ticks(47) == [1, 2, 4, 8, 16, 47]  # 32 would sit on 47's label
     assert len(log_ticks(70000)) <= 7 and log_ticks(70000)[0] == 1
+
+
+def test_overlay_colour_bar_lies_under_the_frame_when_asked():
+    """``orientation="horizontal"`` (the inspector, lesson 11's Hi-Z panel: r36 item 6, a
+    two-line key turned on its side) puts the bar's label on its x axis; a bad orientation
+    is refused by name."""
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_overlay
+
+    frame = tr.render(tr.get_scene("cube"), None, 32, 24, trace=True)
+    fig, ax = plt.subplots()
+    try:
+        art = plot_overlay(ax, frame, "hi_z", orientation="horizontal")
+        assert art.colorbar.orientation == "horizontal"
+        assert art.colorbar.ax.xaxis.label.get_text().startswith("Hi-Z rejections")
+        with pytest.raises(ValueError, match="orientation"):
+            plot_overlay(ax, frame, "hi_z", orientation="sideways")
+    finally:
+        plt.close(fig)

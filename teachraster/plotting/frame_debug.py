@@ -115,13 +115,17 @@ def overlay_label(kind: str, n_samples: int = 1) -> str:
     return OVERLAY_LABELS[kind]
 
 
-def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> OverlayArtists:
+def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None,
+                 orientation: str = "vertical") -> OverlayArtists:  # fmt: skip
     """Draw ``frame.overlay(kind)`` on ``ax`` with a colour bar in numbers; the title
     gives the total (or the range). ``frame`` needs ``trace=True`` except for "nan".
 
     The colour bar takes its room from ``ax`` unless ``cax`` is given: an Axes of its own
-    (cleared and reused), so a figure that redraws overlays keeps ``ax`` where it is."""
+    (cleared and reused), so a figure that redraws overlays keeps ``ax`` where it is.
+    ``orientation`` ("vertical" or "horizontal") is the bar's: a horizontal one lies under
+    the frame, its label read without turning the head."""
     check_choice("kind", kind, KINDS)
+    check_choice("orientation", orientation, ("vertical", "horizontal"))
     values = frame.overlay(kind)
     offsets = getattr(frame, "samples", None)  # the frame's sample pattern, None for one
     n_samples = 1 if offsets is None else len(offsets)
@@ -147,7 +151,8 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None) -> Ov
         room = dict(ax=ax, shrink=0.8) if cax is None else dict(cax=cax)
         if cax is not None:
             cax.clear()
-        result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g")
+        result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g",
+                                             orientation=orientation)  # fmt: skip
         label = overlay_label(kind, n_samples)
         if kind in SPARSE:
             label += "\n(darker grey: covered, 0)"

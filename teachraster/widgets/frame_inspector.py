@@ -14,7 +14,6 @@ back; without anywidget the image is a plain ``ipywidgets.Image`` and the slider
 from __future__ import annotations
 
 import html
-import textwrap
 
 import ipywidgets as widgets
 import numpy as np
@@ -54,10 +53,16 @@ def _views(frames: dict, view: str) -> list:
 #: The largest the frame is drawn, width and height in inches (a 4:3 frame: 3 × 2.25).
 FRAME_BOX = (3.0, 3.1)
 #: The frame figure's margins in inches: left (row labels and "row i"), top (column labels,
-#: "column j" and the title), bottom (and right without a colour bar), then the colour bar's
-#: gap, width and the room for its ticks and label at the classroom style's sizes (the
-#: first guess: :meth:`FrameInspector._bar_room` measures them once drawn).
-FRAME_MARGINS = (0.85, 1.0, 0.15, 0.15, 0.14, 0.86)
+#: "column j" and the title), right (and bottom without a colour bar), then the colour
+#: bar's gap under the frame, its height and the room under it for its ticks and label at
+#: the classroom style's sizes (the first guess: :meth:`FrameInspector._bar_room` measures
+#: them once drawn). The bar lies under the frame, so that every view has the same width
+#: (review r44 D2: a bar on the right widened the figure by up to 1 inch in the overlay
+#: views, and at 1280 px with the file browser open the history chart wrapped under it).
+FRAME_MARGINS = (0.85, 1.0, 0.15, 0.12, 0.13, 0.75)
+#: The history chart's figure, width and height in inches: at least as tall as the frame's
+#: figure with its colour bar, so that the table under the two never moves with the view.
+HISTORY_SIZE = (4.6, 4.5)
 
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
 GLASS_ALPHA = 0.5
@@ -137,31 +142,6 @@ def marker_xy(row: int, col: int, reach: float = 3.0):
     y = [r, r, r + 1, r + 1, r, gap, r + 0.5, r + 0.5, gap, r + 0.5, r + 0.5, gap,
          r - reach, r - 0.5, gap, r + 1.5, r + 1 + reach]  # fmt: skip
     return x, y
-
-
-def fit_bar_label(cax, margin: float = 4.0):
-    """Move the colour bar's label along the bar, from its middle, just enough to lie inside
-    its figure's height (review r18, exercise 11: centred on a bar as short as the frame, "passed
-    depth test, per pixel" in the classroom style's fonts ran 17 px below the figure, read
-    "assed depth test"); a label longer than the figure is high goes on two lines. Returns
-    the label."""
-    label = cax.yaxis.label
-    canvas = cax.figure.canvas
-    renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
-    label.set_y(0.5)  # its place along the bar in axes fractions (the axis sets only x)
-    if renderer is None or not label.get_text():
-        return label
-    height = cax.figure.bbox.height
-    half = label.get_window_extent(renderer).height / 2  # turned 90°: its length
-    text = label.get_text()
-    if 2 * (half + margin) > height and "\n" not in text:  # longer than the figure: 2 lines
-        label.set_text(textwrap.fill(text, len(text) // 2 + 4))
-        half = label.get_window_extent(renderer).height / 2
-    bar = cax.get_window_extent(renderer)
-    middle = bar.y0 + bar.height / 2
-    middle = min(max(middle, half + margin), max(height - half - margin, half + margin))
-    label.set_y((middle - bar.y0) / bar.height)
-    return label
 
 
 def quad_text(frame, row: int, col: int) -> str:
@@ -381,7 +361,7 @@ class FrameInspector(Holdable):
             # the overlays' colour bar: one Axes of its own, reused, so that changing the
             # view never takes room from the frame (a colour bar made with ax= would)
             self.cax = self.fig.add_axes((0.8, 0.14, 0.028, 0.64))
-            self.hist_fig = new_figure((4.6, 3.9), self.backend)
+            self.hist_fig = new_figure(HISTORY_SIZE, self.backend)
             # room for written-out depths (0.9676) and two-line sample labels under MSAA
             self.hist_ax = self.hist_fig.add_axes((0.26, 0.24, 0.71, 0.66))
             self._draw_frame()
@@ -444,35 +424,34 @@ class FrameInspector(Holdable):
         self.table.value = paired_tables(((self.scene.value, text), (pair, beside)))
 
     def _bar_room(self) -> float:
-        """Inches right of the colour bar that its ticks and label take, as drawn, and a
-        little more (a fixed room cut "px per triangle (log)" beside 4-digit ticks and left
-        a short label's room empty)."""
+        """Inches under the colour bar that its ticks and label take, as drawn, and a
+        little more (a fixed room would cut a two-line label or leave a short one's empty)."""
         canvas = self.fig.canvas
         renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
         if renderer is None:
             return FRAME_MARGINS[-1]
-        right = self.cax.get_tightbbox(renderer).x1 / self.fig.dpi
-        return right - self.cax.get_position().x1 * self.fig.get_size_inches()[0] + 0.06
+        low = self.cax.get_tightbbox(renderer).y0 / self.fig.dpi
+        return self.cax.get_position().y0 * self.fig.get_size_inches()[1] - low + 0.06
 
     def _fit_figure(self, label: float | None = None) -> None:
         """Size the frame's figure to what it draws: the frame at its own aspect (no band
-        above and below it), the labels left of and above it, and the colour bar's room on
-        the right only in a view that has one (the image view left the right third of the
-        figure empty: review r12, exercise 11), ``label`` inches for its ticks and label
-        (:meth:`_bar_room`; by default :data:`FRAME_MARGINS`'). The frame keeps its size and
-        place."""
+        above and below it), the labels left of and above it, and the colour bar's room
+        under it only in a view that has one (an empty band in the image view: review r12,
+        exercise 11), ``label`` inches for its ticks and label (:meth:`_bar_room`; by
+        default :data:`FRAME_MARGINS`'). The width is the same in every view (review r44
+        D2); the frame keeps its size and its place from the top left."""
         scale = min(FRAME_BOX[0] / self.width, FRAME_BOX[1] / self.height)  # inches a pixel
         w, h = self.width * scale, self.height * scale
-        left, top, bottom, gap, bar, room = FRAME_MARGINS
+        left, top, edge, gap, bar, room = FRAME_MARGINS
         label = room if label is None else label
-        right = gap + bar + label if self.view.value != "image" else bottom
-        fw, fh = left + w + right, bottom + h + top
+        below = gap + bar + label if self.view.value != "image" else edge
+        fw, fh = left + w + edge, below + h + top
         if not np.allclose(self.fig.get_size_inches(), (fw, fh)):  # a live canvas resizes
             self.fig.set_size_inches(fw, fh)
-        self.ax.set_position((left / fw, bottom / fh, w / fw, h / fh))
-        lift = min(0.08 * h, 0.3)  # the bar a little shorter than the frame, centred on it
-        self.cax.set_position(((left + w + gap) / fw, (bottom + lift) / fh, bar / fw,
-                               (h - 2 * lift) / fh))  # fmt: skip
+        self.ax.set_position((left / fw, below / fh, w / fw, h / fh))
+        inset = 0.06 * w  # the bar a little shorter than the frame: its end ticks' room
+        self.cax.set_position(((left + inset) / fw, label / fh, (w - 2 * inset) / fw,
+                               bar / fh))  # fmt: skip
 
     def _draw_frame(self) -> None:
         ax = self.ax
@@ -490,9 +469,13 @@ class FrameInspector(Holdable):
             name = self.scene.value if self.frames else f"{self.scene.value}: the frame"
             ax.set_title(f"{name}{glass}", fontsize="small")
         else:
-            plot_overlay(ax, self.frame, self.view.value, cax=self.cax)
-            fit_bar_label(self.cax)
+            plot_overlay(ax, self.frame, self.view.value, cax=self.cax,
+                         orientation="horizontal")  # fmt: skip
             self._fit_figure(self._bar_room())  # the ticks and label as drawn (review r18)
+            # the label centred on the figure, not on the bar (which lies right of the row
+            # labels): "samples passed depth, per pixel" is wider than the bar
+            box = self.cax.get_position()
+            self.cax.xaxis.label.set_x((0.5 - box.x0) / box.width)
         fit_title(ax)
         # the pixel's outline and four ticks pointing at it, with a white halo: one pixel of
         # a 64-pixel frame must be found on a projector, on any colour

@@ -888,10 +888,33 @@ def _record_labels(h: PixelHistory) -> list[str]:
     return [f"s{r.sample}\n{r.triangle if f else ''}" for r, f in zip(h.records, first)]
 
 
+def swatch_colours(h: PixelHistory, key: str) -> np.ndarray:
+    """The opaque RGB that :func:`draw_history` paints for ``key`` (``"color_before"``,
+    ``"color"`` or ``"color_after"``) of each passed record of ``h``, one row each.
+
+    The target's before and after are its RGB clipped to [0, 1]; the fragment is its RGB
+    over white by its alpha (see :func:`_draw_colours`)."""
+    if key not in ("color_before", "color", "color_after"):
+        raise ValueError(f"key must be color_before, color or color_after, not {key!r}")
+    on = [r for r in h.records if r.outcome == "passed"]
+    rgba = np.array([getattr(r, key) for r in on], dtype=float).reshape(len(on), -1)
+    rgb = np.clip(rgba[:, :3], 0, 1)
+    if key != "color":  # the target: already composited, as the frame shows it
+        return rgb
+    a = np.clip(rgba[:, 3:4], 0, 1)
+    return rgb * a + (1 - a)  # the fragment before its blend: over white, for the eye
+
+
 def _draw_colours(ax, h: PixelHistory, x, limits):
     """With a colour buffer: above each record that reached it, three swatches, the
-    target's colour before, the fragment's and the target's after (RGB clipped to [0, 1]
-    on white by alpha, for the eye); returns the artists (none without a colour buffer)."""
+    target's colour before, the fragment's and the target's after; returns the artists
+    (none without a colour buffer).
+
+    The target's RGB is drawn as it is (clipped to [0, 1]): it already holds the clear
+    colour and every blend so far, so it is the colour the frame shows. Only the fragment,
+    whose alpha has not been applied yet, is drawn over white by its alpha (review r44 D1:
+    compositing the target again by its own alpha drew (245, 179, 179) for a pixel the
+    table prints as (0.95, 0.6, 0.6) = (242, 153, 153))."""
     if h.blend is None or not len(x):
         return []
     lo, hi = limits
@@ -902,11 +925,12 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
         return []
     artists = [ax.axhline(hi, color="0.6", linewidth=0.8)]  # depths below, colours above
     for key, dx in zip(("color_before", "color", "color_after"), (-0.27, 0.0, 0.27)):
-        rgba = np.array([getattr(h.records[i], key) for i in on])
-        a = np.clip(rgba[:, 3:], 0, 1)
-        shown = np.clip(rgba[:, :3], 0, 1) * a + (1 - a)  # over white, for the eye
+        shown = swatch_colours(h, key)
         artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=0.26,
                               color=shown, edgecolor="k", linewidth=0.4))  # fmt: skip
-    artists.append(ax.text(x[0] - 0.45, hi + band * 1.2, "colour: before | fragment | after",
-                           fontsize="x-small", ha="left", va="bottom"))  # fmt: skip
+    # at the Axes' left edge (x in Axes fractions): the inspector's 327-px Axes holds it
+    # even with one record (its x-range is then only 1.2 wide)
+    artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment on white | after",
+                           fontsize="x-small", ha="left", va="bottom",
+                           transform=ax.get_yaxis_transform()))  # fmt: skip
     return artists
