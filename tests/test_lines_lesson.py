@@ -283,3 +283,12 @@ def test_12b_predictions_ask_before_the_rule_is_given(nsb):
     before_code = _cells_before("12b_blending", "f9afb546")
     assert "2.2" not in before_code and "2.4" not in before_code
     assert ns.stored_code - 128 > ns.code_tolerance  # code 128 (no sRGB) is a wrong answer
+
+
+def test_dda_drift_is_plotted_along_the_walk(ns):
+    """Review r43 12a-5: the drift drawn, not only printed: the float32 sum minus the exact y
+    at every column walked (the printed first column's values among them)."""
+    assert len(ns.exact_y) == len(ns.steps.major) == 2**16 - 1  # p1's column left out
+    assert ns.exact_y[ns.step_k] == ns.true_y
+    drift = ns.steps.value - ns.exact_y
+    assert 0 < np.abs(drift).max() < 0.01  # a sliver of a pixel, yet rows change
