@@ -292,3 +292,9 @@ def test_dda_drift_is_plotted_along_the_walk(ns):
     assert ns.exact_y[ns.step_k] == ns.true_y
     drift = ns.steps.value - ns.exact_y
     assert 0 < np.abs(drift).max() < 0.01  # a sliver of a pixel, yet rows change
+
+
+def test_bresenham_loop_covers_every_octant(ns):
+    """Review r43 12a-4: the loop for all eight octants is shown, and lights the package's
+    Bresenham pixels on every random line between pixel centres."""
+    assert ns.loop_matches == ns.n_loop_lines and len(ns.octants) == 8
