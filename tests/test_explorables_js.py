@@ -695,6 +695,18 @@ def test_every_explorables_module_loads_as_shipped():
             assert done.returncode == 0, done.stderr[-2000:]
 
 
+def test_end_point_labels_keep_clear_of_the_axis_labels():
+    """Review r43 12a-8: p1 dragged to the image's top-right corner put "p1 on a pixel corner"
+    over the column numbers (the canvas's top margin). A label stays right of and below the
+    axis labels (the grid's left and top), here below the point, left of it."""
+    width, size, grid = 120, 15, [30, 24]
+    corner, free = call_js(LINES, [("labelAt", [390, 24, width, 400, [], size, grid]),
+                                   ("labelAt", [100, 100, 60, 400, [], size, grid])])  # fmt: skip
+    lx, ly = corner
+    assert ly - size >= grid[1] and lx >= grid[0] and lx + width <= 398
+    assert free == [109, 91]  # away from the margins, the first place as before
+
+
 def test_end_point_labels_keep_clear_of_the_tie_marks():
     """Reviews r31/r34 12a: "p1 on a pixel centre" covered a "tie" mark. A label whose first
     place (right of and above the point) covers a mark goes to the next place that covers none."""

@@ -232,3 +232,69 @@ def test_srgb8_resolve_averages_the_samples_linear_values():
     assert np.array_equal(f.color, f.sample_color.mean(axis=2))
     mixed = np.ptp(f.sample_color[..., 0], axis=2) > 0
     assert mixed.any()  # edge pixels whose mean is no 8-bit code
+
+
+def _cells_before(name: str, cell_id: str, kinds=("markdown", "code")) -> str:
+    """The source of every cell (of ``kinds``) of lesson ``name`` before the cell ``cell_id``."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "notebooks" / f"{name}.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    at = next(k for k, c in enumerate(cells) if c.get("id") == cell_id)
+    return "\n".join("".join(c["source"]) for c in cells[:at] if c["cell_type"] in kinds)
+
+
+def test_depth_writes_and_the_opaque_pass_drawn(nsb):
+    """Review r43 12b-2: the two rules besides the sort, drawn. Transparent triangles that
+    write depth, drawn near one first, reject the farther layers where two or three overlap
+    (and nowhere else); the opaque band drawn last covers the transparent triangles in front
+    of it (inside the band only)."""
+    ns = nsb
+    (writes, band_last) = ns.depth_differ.values()
+    assert writes.sum() > 0 and band_last.sum() > 0
+    assert (ns.layers[writes] >= 2).all()
+    band_rows = np.flatnonzero(np.abs(ns.grey[0, 0, :3] - ns.by_the_rules[:, :, :3]).max(axis=2)
+                               .min(axis=1) < 1e-12)  # fmt: skip
+    rows = np.flatnonzero(band_last.any(axis=1))
+    assert rows.min() >= band_rows.min() - 1 and rows.max() <= band_rows.max() + 1
+    assert ns.back_to_front == [2, 0, 1]  # yellow (z 0.6), blue (0.2), red (-0.4)
+
+
+def test_sort_figure_names_the_pixels_already_in_order(nsb):
+    """Review r43 12b-1: the pale colour was "right: one layer, or none" but also covered the
+    two-layer pixels the sort happened to get right; three kinds now, their counts printed."""
+    ns = nsb
+    assert ns.in_order.sum() > 0 and not (ns.in_order & ns.wrong_order).any()
+    assert ns.in_order.sum() + ns.wrong_order.sum() == ns.both_lie.sum()
+    assert not (ns.wrong_order & ~ns.both_lie).any()
+
+
+def test_12b_predictions_ask_before_the_rule_is_given(nsb):
+    """Review r43 12b-3, 12b-4: the resolved alpha and the sRGB code were arithmetic on rules
+    stated just before them. Now "blending per sample, then the resolve" is said after
+    q_resolve (which asks which reasoning holds), and the sRGB curve after q_code (which asks
+    the side of 128 and roughly where)."""
+    ns = nsb
+    before_resolve = _cells_before("12b_blending", "msaaq", kinds=("markdown",))
+    assert "per sample" not in before_resolve.split("## 5. MSAA")[1]
+    assert ns.resolve_choices["per_sample"].startswith(f"{ns.resolved_alpha:.3f}")
+    assert len(set(ns.resolve_choices.values())) == 3
+    before_code = _cells_before("12b_blending", "f9afb546")
+    assert "2.2" not in before_code and "2.4" not in before_code
+    assert ns.stored_code - 128 > ns.code_tolerance  # code 128 (no sRGB) is a wrong answer
+
+
+def test_dda_drift_is_plotted_along_the_walk(ns):
+    """Review r43 12a-5: the drift drawn, not only printed: the float32 sum minus the exact y
+    at every column walked (the printed first column's values among them)."""
+    assert len(ns.exact_y) == len(ns.steps.major) == 2**16 - 1  # p1's column left out
+    assert ns.exact_y[ns.step_k] == ns.true_y
+    drift = ns.steps.value - ns.exact_y
+    assert 0 < np.abs(drift).max() < 0.01  # a sliver of a pixel, yet rows change
+
+
+def test_bresenham_loop_covers_every_octant(ns):
+    """Review r43 12a-4: the loop for all eight octants is shown, and lights the package's
+    Bresenham pixels on every random line between pixel centres."""
+    assert ns.loop_matches == ns.n_loop_lines and len(ns.octants) == 8

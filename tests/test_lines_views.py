@@ -70,6 +70,34 @@ def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
     assert all(len(c.get_paths()) == 0 for c in view.diamonds.values())
 
 
+def test_line_view_draws_bresenhams_midpoint_and_the_gap_d_measures(ax):
+    """Review r43 12a-3: under Bresenham each column's picture marks the midpoint between the
+    next column's candidates and the line's crossing there; their gap times 2·dx is the
+    caption's D (the lesson's line: dx = 12, D = -2, 8, -6, 4, ...; y-major lines running up
+    too). Other rules and the set-up steps mark nothing."""
+    for p0, p1, size in (((0.5, 0.5), (12.5, 5.5), (14, 7)), ((3.5, 9.5), (1.5, 0.5), (6, 12))):
+        fill = tr.rasterize_line(p0, p1, *size, rule="bresenham", trace=True)
+        s, trace = fill.trace.steps, fill.trace
+        axis = 0 if s.x_major else 1
+        d_major = abs(np.floor(p1[axis]) - np.floor(p0[axis]))
+        sign_minor = 1 if np.floor(p1[1 - axis]) >= np.floor(p0[1 - axis]) else -1
+        view = LineView.create(ax, fill, step=0)
+        gap, mid, cross = view.midpoint
+        assert np.isnan(mid.get_xdata()).all()  # set-up: no test yet
+        for work in range(len(s.major)):
+            view.show_step(2 + work)
+            (mx, my), (lx, ly) = trace.midpoint(2 + work)
+            assert (mid.get_xdata()[0], cross.get_ydata()[0]) == (mx, ly)
+            m, line = (my, ly) if s.x_major else (mx, lx)
+            assert abs(m - round(m)) < 1e-9  # on the border between the two candidates
+            assert np.isclose(2 * d_major * sign_minor * (line - m), s.value[work])
+            assert f"D = {s.value[work]:g}" in view.caption.get_text()
+    assert trace.midpoint(1) is None
+    view.trace = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, trace=True).trace
+    view.show_step(-1)
+    assert np.isnan(mid.get_xdata()).all() and np.isnan(gap.get_xdata()).all()
+
+
 def test_plot_rgba_shows_the_rgb_written_or_alpha_over_a_checkerboard(ax):
     color = np.zeros((4, 5, 4))
     color[1, 2] = [0.25, 0, 0, 0.5]

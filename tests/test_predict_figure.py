@@ -276,3 +276,13 @@ def test_the_revealed_pixels_have_a_key_and_missed_ones_are_not_orange():
     for words in ("yours, and right", "missed", "marked, not among them"):
         assert words in legend
     assert "#CC79A7" in legend and "#E69F00" not in legend
+
+
+def test_a_dragged_marker_with_a_whole_number_readout_lands_on_a_whole_number():
+    """Review r43 12b-5: the code marker was dropped between codes ("Your marker is 8.29 codes
+    from the answer") while the arrow keys moved it by whole codes; a marker whose readout has
+    no decimals snaps on drag, others do not."""
+    code, z, plain = call_js(("predict_figure",), [("snapDragged", [[180.29, 0.5], "code", 0]),
+                                                   ("snapDragged", [[0.1234, 0.5], "z", 3]),
+                                                   ("snapDragged", [[180.29, 0.5], None, 0])])  # fmt: skip
+    assert code == [180, 0.5] and z == [0.1234, 0.5] and plain == [180.29, 0.5]

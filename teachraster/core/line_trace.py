@@ -142,6 +142,37 @@ class LineTrace:
         now = self.coverage_at(k)
         return now & ~self.coverage_at(k - 1) if k > 0 else now
 
+    def midpoint(self, k: int) -> tuple[tuple[float, float], tuple[float, float]] | None:
+        """Bresenham's test at step ``k``: the midpoint between the next column's (row's) two
+        candidate pixels and the point where the line between the end pixels' centres crosses
+        that column (row), both (x, y) in px; None for other rules and the set-up steps.
+
+        The error term is that gap scaled: ``D = 2·dmajor·(line − midpoint)`` along the
+        minor axis (in the direction the minor axis steps), so the crossing is read off D.
+        """
+        k = self.index(k)
+        work = k - len(SETUP)
+        if self.rule != "bresenham" or self.steps is None or work < 0:
+            return None
+        s = self.steps
+        axis = 0 if s.x_major else 1
+        p = [int(np.floor(self.p0[0])), int(np.floor(self.p0[1]))]
+        q = [int(np.floor(self.p1[0])), int(np.floor(self.p1[1]))]
+        d_major, d_minor = q[axis] - p[axis], q[1 - axis] - p[1 - axis]
+        if d_major == 0:
+            return None
+        sign_major, sign_minor = np.sign(d_major), (1 if d_minor >= 0 else -1)
+        nxt = int(s.major[work]) + sign_major  # the column (row) the error term decides
+        done = (nxt - p[axis]) * sign_major  # major steps from p0's pixel
+        line = p[1 - axis] + 0.5 + d_minor * done / abs(d_major)
+        mid = line - sign_minor * float(s.value[work]) / (2 * abs(d_major))
+        major = nxt + 0.5
+
+        def xy(minor):
+            return (float(major), float(minor)) if s.x_major else (float(minor), float(major))
+
+        return xy(mid), xy(line)
+
     def ends_inside(self) -> tuple[np.ndarray, np.ndarray]:
         """(rows, cols) of the pixels whose diamond the line ends in (diamond rule)."""
         if self.steps is None:

@@ -97,7 +97,11 @@ class LineView(Artists):
     column (x-major) or row the step works on, ``segment`` the line, ``caption`` the step's
     caption from the trace. Under the diamond rule ``diamonds`` draws the diamonds the
     caption speaks of: those the steps so far tested (dotted), lit (outlined) or ended in
-    (hatched), and the current step's (thick); other rules draw none.
+    (hatched), and the current step's (thick); other rules draw none. Under Bresenham
+    ``midpoint`` (gap, midpoint, crossing) marks the test of the step's error term D
+    (:meth:`~teachraster.core.line_trace.LineTrace.midpoint`): the midpoint between the next
+    column's two candidates (open), where the line crosses that column (filled), and the gap
+    between them, D / (2·dmajor) px.
     """
 
     image: object
@@ -107,6 +111,7 @@ class LineView(Artists):
     trace: LineTrace | None = None
     step: int = -1
     diamonds: dict | None = None
+    midpoint: object = None
 
     @classmethod
     def create(cls, ax, line, step: int = -1) -> LineView:
@@ -133,7 +138,14 @@ class LineView(Artists):
                     for name, style in _DIAMOND_STYLES.items()}  # fmt: skip
         for coll in diamonds.values():
             ax.add_collection(coll)
-        view = cls(image, current, segment, caption, trace, diamonds=diamonds)
+        # Bresenham's test: the midpoint (open) and the line's crossing (filled) of the next
+        # column, joined by the gap the error term D measures (D = 2·dmajor·gap)
+        (gap,) = ax.plot([], [], color=COLORS["current"], lw=lw(1.2), zorder=4)
+        (mid,) = ax.plot([], [], "o", mfc="white", mec=COLORS["current"], mew=lw(0.8),
+                         ms=ms(1.0), zorder=5)  # fmt: skip
+        (cross,) = ax.plot([], [], "o", color=COLORS["edge"], ms=ms(0.7), zorder=6)
+        view = cls(image, current, segment, caption, trace, diamonds=diamonds,
+                   midpoint=(gap, mid, cross))  # fmt: skip
         view.show_step(step)
         return view
 
@@ -154,6 +166,13 @@ class LineView(Artists):
         if self.diamonds is not None:
             for name, polys in _diamonds_at(trace, k).items():
                 self.diamonds[name].set_verts(polys)
+        if self.midpoint is not None:
+            gap, mid, cross = self.midpoint
+            test = trace.midpoint(k)  # None unless Bresenham's work step
+            (mx, my), (lx, ly) = test if test is not None else ((np.nan, np.nan),) * 2
+            gap.set_data([mx, lx], [my, ly])
+            mid.set_data([mx], [my])
+            cross.set_data([lx], [ly])
 
 
 #: How :class:`LineView` draws the diamonds of the diamond rule (line widths in units of the

@@ -183,7 +183,7 @@ function mount(el, data, host) {
     // (reviews r31, r34: "p1 on a pixel centre" covered a tie, the line crossed one)
     const ties = shown.flatMap((s) => s.cands.filter((c) => c.tie && c.state !== MISSED));
     const boxes = ties.map((c) => tieBox(ctx, c, toPx, cell));
-    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped, boxes);
+    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped, boxes, [m.left, m.top]);
     drawTies(ctx, boxes);
     const lit = walk.steps.reduce((n, s) => n + s.cands.filter((c) => c.state === LIT).length, 0);
     count.textContent = `${lit} pixel${lit === 1 ? "" : "s"} lit, ${walk.steps.length} ` +
@@ -316,7 +316,7 @@ function haloText(ctx, text, x, y, colour) {
   ctx.fillText(text, x, y);
 }
 
-function drawSegment(ctx, p, q, snapped, avoid = []) {
+function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
   ctx.strokeStyle = "#000";
   ctx.lineWidth = 2.5;
   ctx.beginPath();
@@ -332,7 +332,7 @@ function drawSegment(ctx, p, q, snapped, avoid = []) {
     ctx.font = `bold ${size}px sans-serif`;
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
-    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size);
+    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid);
     // a white halo: the label crosses the line and the diamonds beside the end point
     haloText(ctx, text, x, y, "#111");
   });
@@ -340,12 +340,15 @@ function drawSegment(ctx, p, q, snapped, avoid = []) {
 
 // Where an end point's label goes (its text's left end and baseline): right of and above the
 // point, else left of it (p1 in the last column), else below it (at the top border); of those
-// that stay inside the canvas, the first that covers none of the boxes `avoid` ([x, y, w, h]:
-// the "tie" marks), or the first inside if every one covers a mark.
-export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15) {
-  const left = Math.max(2, x - 9 - textWidth);
+// that stay inside the canvas, right of and below the axis labels (`grid`: [left, top] of the
+// pixel grid; review r43 12a-8: "p1 on a pixel corner" covered the column numbers), the first
+// that covers none of the boxes `avoid` ([x, y, w, h]: the "tie" marks), or the first inside
+// if every one covers a mark.
+export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, grid = [0, 0]) {
+  const left = Math.max(2, grid[0], x - 9 - textWidth);
   const spots = [[x + 9, y - 9], [left, y - 9], [x + 9, y + 22], [left, y + 22]];
-  const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 && ly >= 15);
+  const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 &&
+    ly - size >= grid[1] && lx >= grid[0]);
   const clear = ([lx, ly]) => avoid.every(([bx, by, bw, bh]) =>
     lx + textWidth < bx || bx + bw < lx || ly < by || by + bh < ly - size);
   return inside.find(clear) || inside[0] || [left, y + 22];

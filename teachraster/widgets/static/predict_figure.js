@@ -49,6 +49,13 @@ export function readoutText(label, x, digits) {
   return `${label} ${x.toFixed(digits)}`;
 }
 
+// A dragged marker whose readout shows whole numbers (codes) lands on one, as the arrow keys
+// move it (review r43 12b-5: "You predicted code 180. Your marker is 8.29 codes from the
+// answer"); other markers stay where they are dropped.
+export function snapDragged(p, readout, digits) {
+  return readout && digits === 0 ? [Math.round(p[0]), p[1]] : p;
+}
+
 export function orderVerdict(answer, given) {
   // answer null: no order works; given null: the student said so
   if (answer === null || given === null) return { places: null, correct: answer === given };
@@ -405,7 +412,8 @@ function mountPoint(root, data, host) {
     radius: 22,
     onDrag(_i, p, e) {
       if (state.revealed) return;
-      state.given = constrain(toData(p)).map((v) => Number(v.toFixed(4)));
+      state.given = constrain(snapDragged(toData(p), data.readout, data.readoutDigits))
+        .map((v) => Number(v.toFixed(4)));
       paint.request(e);
     },
     onRelease() {
