@@ -473,7 +473,7 @@ def test_04_to_07_ask_at_least_three_questions_on_a_figure():
                  "06_what_accuracy_costs", "07_hard_cases"):  # fmt: skip
         asked += [c for c in _cells(name, "code") if re.search(r"\bPredict\w*\(", c)]
     on_figure = [c for c in asked if re.search(r"\bPredict(Pixels|Point|Order)\(", c)]
-    assert len(asked) == 13 and len(on_figure) >= 3  # r37: 06 asks in §2, §4, §5 too
+    assert len(asked) >= 13 and len(on_figure) >= 3  # r37: 06 asks in §2, §4, §5 too
     intro = _cells("04_perspective_correct_interpolation", "markdown")[0]
     assert "squeezed" not in intro
 

@@ -326,7 +326,7 @@ def expected_resolve(colours, ids, background) -> np.ndarray:
     return Frame.resolve(pixel, np.asarray(colours, dtype=float)[None, None], background)[0, 0]
 
 
-def _resolve_case(label, ids, colours, background, dtype=float):
+def resolve_case(label, ids, colours, background, dtype=float):
     ids = np.asarray(ids, dtype=np.int64)
     colours = np.asarray(colours, dtype=dtype).copy()
     colours[ids < 0] = np.nan  # no triangle wrote these samples (CONVENTIONS: NaN outside)
@@ -350,20 +350,18 @@ def resolve_cases():
         ("2 samples, one covered", [-1, 3], [red, red], np.zeros(3)),
         ("16 samples, five covered", [-1] * 11 + [0] * 5, [red] * 16, white),
     ]
-    out = [_resolve_case(*case) for case in hard]
+    out = [resolve_case(*case) for case in hard]
     rng = np.random.default_rng(SEED + 61)
     for n in range(14):
         s = (2, 4, 8, 16)[n % 4]
         ids = rng.integers(-1, 3, size=s)
         palette = rng.uniform(0, 1, size=(3, 3))
         colours = palette[np.maximum(ids, 0)]
-        out.append(
-            _resolve_case(f"random {n + 1}: {s} samples", ids, colours, rng.uniform(0, 1, 3))
-        )
+        out.append(resolve_case(f"random {n + 1}: {s} samples", ids, colours, rng.uniform(0, 1, 3)))
     # colours as matplotlib's imread gives them: float32 (a float32 mean is right, too)
     ids, colours = rng.integers(-1, 3, size=8), rng.uniform(0, 1, size=(8, 3))
     label = "8 samples, float32 colours (as from imread)"
-    out.append(_resolve_case(label, ids, colours, rng.uniform(0, 1, 3), np.float32))
+    out.append(resolve_case(label, ids, colours, rng.uniform(0, 1, 3), np.float32))
     return out
 
 

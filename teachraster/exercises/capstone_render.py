@@ -395,6 +395,13 @@ class CapstoneReport(Report):
                                     (row, col))  # fmt: skip
         return f"pixel ({row}, {col}), {stage}: {text}"
 
+    def repaired_pixels(self) -> np.ndarray:
+        """(n, 2) pixels where the scene's :attr:`CapstoneScene.contrast` scene differs
+        (:func:`contrast_pixels`); empty where it has none."""
+        if self.spec.contrast is None:
+            return np.zeros((0, 2), dtype=int)
+        return contrast_pixels(self.spec.name)
+
     def compare(self, axes=None, pixel="first"):
         """Three panels: your frame, the package's, the differing pixels (``pixel``, or the
         first differing one, marked); returns the artists."""

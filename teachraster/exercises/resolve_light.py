@@ -19,10 +19,10 @@ import numpy as np
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import (
-    _resolve_case,
     as_colour,
     draw_resolve_case,
     expected_resolve,
+    resolve_case,
     resolve_cases,
     same_colour,
 )
@@ -57,7 +57,7 @@ def resolve_srgb_cases():
     out = []
     for k in (1, 2, 3):
         ids = [0] * k + [-1] * (4 - k)
-        out.append(_resolve_case(f"black on white, {k} of 4 samples", ids, [black] * 4, white))
+        out.append(resolve_case(f"black on white, {k} of 4 samples", ids, [black] * 4, white))
     out += list(resolve_cases())
     return [(label, args, expected_resolve_srgb(*args)) for label, args, _ in out]
 
