@@ -162,6 +162,16 @@ def test_00_facing_and_the_two_methods():
     # box); the explanation (a widget: not among the globals) says so when it is
     assert ns.box.ymin == ns.box.row0 + 0.5 == 1.5
     assert "on the box's top edge" in "\n".join(_cells("00_tour", "code"))
+    # review r45 00-2: q_centres asks for the covered share (59 of 144: 41 %), which needs
+    # "a triangle fills at most half of its box", not a count of columns and rows; the
+    # held cell prints it
+    assert ns.covered_share == round(100 * ns.span.coverage.sum() / ns.box.size) == 41
+    code = "\n".join(_cells("00_tour", "code"))  # the widget is not among the globals
+    assert "answer=covered_share,\n    tolerance=10," in code
+    assert ns.covered_share + 10 > 50 > ns.covered_share  # "at most half" is right too
+    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    for narration in ("the cell prints", "the cell also prints", "the title and the cell"):
+        assert narration not in tour, narration  # r45 00-3: the tour narrates the GPU
 
 
 def test_00_words_r22():
