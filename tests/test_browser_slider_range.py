@@ -57,11 +57,19 @@ def test_end_reaches_the_new_last_value_after_the_range_changes(lab, page):  # n
     step = page.locator(".widget-slider", has_text="step").first
     step.wait_for(timeout=60_000)
     assert _end_then_home(page, block, 68) == ("68", "0")  # as created: 68 blocks
+    page.keyboard.press("End")  # the walk's last block, then new sizes
+    page.wait_for_timeout(300)
     # more blocks: the sizes menu, as a student picks it
     page.locator("select", has=page.locator("option", has_text="16 / 4 / 1")).first \
         .select_option(label="16 / 4 / 1")  # fmt: skip
     assert _kernel(page, "ex.block.max") == 388
     block = page.locator(".widget-slider", has_text="block").first
+    # the new sizes renumber the blocks: the new slider reads 0, not the old 68 (review r45)
+    assert _kernel(page, "ex.block.value") == 0
+    handle = block.locator(".noUi-handle").first
+    page.wait_for_function("h => Number(h.getAttribute('aria-valuemax')) === 388",
+                           arg=handle.element_handle(), timeout=30_000)  # fmt: skip
+    assert block.locator(".widget-readout").first.inner_text() == "0"
     assert _end_then_home(page, block, 388) == ("388", "0")  # End stopped at 68
     page.keyboard.press("End")
     page.wait_for_timeout(500)

@@ -162,6 +162,16 @@ def test_00_facing_and_the_two_methods():
     # box); the explanation (a widget: not among the globals) says so when it is
     assert ns.box.ymin == ns.box.row0 + 0.5 == 1.5
     assert "on the box's top edge" in "\n".join(_cells("00_tour", "code"))
+    # review r45 00-2: q_centres asks for the covered share (59 of 144: 41 %), which needs
+    # "a triangle fills at most half of its box", not a count of columns and rows; the
+    # held cell prints it
+    assert ns.covered_share == round(100 * ns.span.coverage.sum() / ns.box.size) == 41
+    code = "\n".join(_cells("00_tour", "code"))  # the widget is not among the globals
+    assert "answer=covered_share,\n    tolerance=10," in code
+    assert ns.covered_share + 10 > 50 > ns.covered_share  # "at most half" is right too
+    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    for narration in ("the cell prints", "the cell also prints", "the title and the cell"):
+        assert narration not in tour, narration  # r45 00-3: the tour narrates the GPU
 
 
 def test_00_words_r22():
@@ -855,7 +865,7 @@ def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
         ), key
 
 
-def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
+def test_pipeline_shades_before_the_depth_test_and_early_z_tests_before_shading():
     """GL 4.6 §14.9 / §17.3: the fragment shader runs before the depth and stencil tests."""
     from teachraster.plotting.pipeline_overview import EARLY_Z
 
@@ -863,7 +873,20 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_skips_shading():
     assert names.index("rasterisation") < names.index("fragment shading")
     assert names.index("fragment shading") < names.index("depth test") < names.index("blending")
     top, bottom = (names.index(n) for n in EARLY_Z)
-    assert names.index("fragment shading") in range(top + 1, bottom)  # what early-z skips
+    assert names.index("fragment shading") in range(top + 1, bottom)  # the test moved before it
+    # review r45 00: drawn as an optional test on the way to the shader, not an arrow from
+    # rasterisation to the depth test around it: the dashed arrows end in the early test's
+    # row and in the shader's box, none in the depth test's
+    with tr_style():
+        fig, ax = plt.subplots(figsize=(9, 9.2))
+        art = plot_pipeline(ax)
+    shade, depth = (art.boxes[names.index(n)] for n in ("fragment shading", "depth test"))
+    dashed = [p for p in ax.patches if p.get_linestyle() == "--"]
+    assert art.bypass in dashed and len(dashed) == 3  # box, arrow in, arrow on to the shader
+    ends = [p._posA_posB[1] for p in dashed if hasattr(p, "_posA_posB")]
+    assert max(y for _, y in ends) < depth.get_y()  # nothing dashed reaches the depth test
+    assert any(shade.get_y() - 0.1 <= y <= shade.get_y() + 0.1 for _, y in ends)
+    plt.close(fig)
     clipping = next(s for s in PIPELINE_STAGES if s.name == "clipping")
     assert "x, y" in clipping.what and "guard band" in clipping.what
     # the z range is the API's: GL's default −w, Direct3D's and Vulkan's 0 (review a1, 00)

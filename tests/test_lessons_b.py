@@ -1385,6 +1385,33 @@ def test_10_r36_items():
         plt.close(fig)
 
 
+def test_10_r45_items():
+    """Review r45, lesson 10: the helper share of section 3's tiny triangles is printed (the
+    "whole quad of shading" claim); the int32 wrong regions are not whole blocks, and the text
+    no longer says so; q_small's method stands after its held answer; the timing text says
+    what the cell prints (no "whatever found it", no walk that "can lose" unshown)."""
+    import json
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    assert ns.helper_share[1] == 0.75 and ns.helper_share[2] == 0.25  # 1 of 4, 3 of 4 covered
+    assert ns.helper_share[1] > ns.helpers / ns.quad_pixels  # a second small-triangle cost
+    # wrongly out (blue) is not a union of 4x4 blocks: some 4x4 block is partly wrong
+    n = ns.N // 4
+    cells4 = ns.false_out.reshape(n, 4, n, 4)
+    assert (cells4.any(axis=(1, 3)) & ~cells4.all(axis=(1, 3))).any()
+    assert 0 < ns.fastest and 0 < ns.middle  # the shares the timing cell prints
+    nb = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(t for t, c in zip(text, nb["cells"])
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "whole blocks are accepted" not in md and "not made of whole blocks" in md
+    assert "whatever found it" not in md and "can lose" not in md
+    assert "fastest runs" in md and "medians" in md
+    held = next(i for i, t in enumerate(text) if t.startswith("q_small.hold()"))
+    method = next(i for i, t in enumerate(text) if "all its children must be classified" in t)
+    assert held < method
+
+
 def test_10_tile_explorer_driven_by_the_test():
     import teachraster as tr
     from teachraster.widgets import TileExplorer

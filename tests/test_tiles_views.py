@@ -268,7 +268,8 @@ def test_block_sizes_menu_refills(explorer):
 def test_block_sizes_menu_puts_in_a_new_block_slider(explorer):
     """Issue 31: a block slider whose max changed in place kept its first range for the
     page's End key (noUiSlider), which stopped at 68 of 388 blocks. A new slider takes the old
-    one's place in the widget, with its settings, its observer and the value it had."""
+    one's place in the widget, with its settings and its observer, at 0 (the new sizes
+    renumber the blocks: review r45)."""
     first = explorer.block
     first.value = 3
     before = first.max
@@ -278,11 +279,32 @@ def test_block_sizes_menu_puts_in_a_new_block_slider(explorer):
     assert block.max == len(explorer.blocks) != before
     assert block is not first and block in explorer.widget.children
     assert first not in explorer.widget.children and first.comm is None  # closed
-    assert block.value == 3 and block.layout is first.layout and block.description == "block"
+    assert block.value == 0 and block.layout is first.layout and block.description == "block"
     block.value = 2  # the new slider drives the picture and the caption
     assert explorer.caption_text.startswith(f"block 2 of {block.max}:")
     explorer.traversal.value = next(t for t in TRAVERSALS if t != explorer.traversal.value)
     assert explorer.block is block  # the same blocks, the same slider
+
+
+@pytest.mark.parametrize("sizes", [(64, 16, 4), (16, 4, 1)])  # a new range, the same range
+def test_new_block_sizes_or_traversal_start_the_block_slider_again(explorer, sizes):
+    """Review r45 (lesson 10, fresh Run All): block slider at 10, then the preset "64 / 16 / 4":
+    the readout stayed at 10 while the caption and the picture fell back to "level 0: 64×64
+    blocks", and one step on gave "block 11 of 193". New sizes (or a new order) renumber the
+    blocks: the slider starts again at 0, and its next step is block 1."""
+    explorer.block.value = 10
+    assert explorer.caption_text.startswith("block 10 of 864:")
+    if sizes == explorer.sizes.value:  # the same range: the traversal renumbers instead
+        explorer.traversal.value = "morton"
+    else:
+        explorer.sizes.value = sizes
+    n = len(explorer.blocks)
+    assert explorer.block.value == 0 and explorer.block.max == n
+    assert explorer.caption_text.startswith(f"level 0: {sizes[0]}×{sizes[0]} blocks")
+    assert explorer.current is None
+    explorer.block.value = 1  # the next step: the walk's first block, of the new count
+    assert explorer.caption_text.startswith(f"block 1 of {n}:")
+    assert explorer.shown.sum() == 1
 
 
 def test_renew_slider_refuses_a_box_without_the_slider():

@@ -8,8 +8,8 @@ The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: 
 where the result cannot change, and it splits the test from the write: a shader that writes its
 own depth (``gl_FragDepth``, ``SV_Depth``) turns the early test off (conservative depth
 excepted), while a shader that may discard can keep it and only delay the depth write until it
-has kept the fragment (some GPUs test late instead) (GL 4.6 §14.9, §15.2; lesson 05a). The picture draws it as a dashed
-bypass. The stages and their lessons are data
+has kept the fragment (some GPUs test late instead) (GL 4.6 §14.9, §15.2; lesson 05a). The picture draws it as an
+optional, dashed depth test between rasterisation and the shader. The stages and their lessons are data
 (:data:`PIPELINE_STAGES`), so the notebook's list of links and the picture cannot disagree.
 """
 
@@ -82,13 +82,16 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
     Stage("blending", "combine with the image", ("12b_blending",)),
 )
 
-#: The stages early-z jumps between: the depth test moved before the fragment shader.
+#: Early-z: the depth test (the second stage) moved in front of the fragment shader, between
+#: rasterisation (the first) and shading. Drawn as an optional, dashed test on that path, not
+#: as a path around the shader (review r45, 00: the arrow raster -> depth read as fragments
+#: skipping the shader).
 EARLY_Z = ("rasterisation", "depth test")
 
-#: The bypass's label: the early test is lost only to a depth-writing shader; a discard can
-#: delay the depth write (test early, write late) (lesson 05a; some GPUs test late instead).
+#: The early test's label: lost only to a depth-writing shader; a discard can delay the depth
+#: write (test early, write late) (lesson 05a; some GPUs test late instead).
 EARLY_Z_LABEL = (
-    "early-z: depth tested before shading,\nnot if the shader writes depth;\n"
+    "early-z, optional: depth tested before shading,\nnot if the shader writes depth;\n"
     "with discard: test early, write late"
 )
 
@@ -109,18 +112,29 @@ class PipelineArtists:
     bypass: object = None
 
 
-def _early_z_bypass(ax, names: list[str], right: float):
-    """The dashed early-z arrow from rasterisation to the depth test, past fragment shading."""
+def _early_z_row(names: list[str]) -> int | None:
+    """The row (a stage's index) after which the early test gets a row of its own: the
+    stage early-z starts from (None when the stages do not include both ends)."""
     if not all(name in names for name in EARLY_Z):
         return None
-    top, bottom = (names.index(name) for name in EARLY_Z)
-    arrow = FancyArrowPatch((right, top), (right, bottom), arrowstyle="-|>", ls="--",
-                            connectionstyle="bar,fraction=-0.12", mutation_scale=fs(1.0),
-                            color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
-    ax.add_patch(arrow)
-    ax.text(right + 0.95, (top + bottom) / 2, EARLY_Z_LABEL, rotation=-90, ha="center",
-            va="center", fontsize=fs(0.8), style="italic")  # fmt: skip
-    return arrow
+    return names.index(EARLY_Z[0])
+
+
+def _early_z_test(ax, y: float, right: float):
+    """The optional early depth test: a dashed box at height ``y`` right of the main arrows,
+    dashed arrows in from the stage above and on to the shader below. Returns the first arrow."""
+    x0 = 2.2
+    box = FancyBboxPatch((x0, y - 0.42), right - x0, 0.84, boxstyle="round,pad=0.02,rounding_size=0.12",
+                         fc="white", ec=COLORS["edge"], lw=lw(0.5), ls="--")  # fmt: skip
+    ax.add_patch(box)
+    ax.text(x0 + 0.2, y, EARLY_Z_LABEL, fontsize=fs(0.8), va="center", style="italic")
+    arrows = []
+    for start, end in (((1.6, y - 1 + 0.34), (x0, y - 0.2)), ((x0, y + 0.2), (1.6, y + 1 - 0.34))):
+        arrow = FancyArrowPatch(start, end, arrowstyle="-|>", ls="--", mutation_scale=fs(1.0),
+                                color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
+        ax.add_patch(arrow)
+        arrows.append(arrow)
+    return arrows[0]
 
 
 def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineArtists:
@@ -129,8 +143,10 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
     One stage per row keeps the picture narrow enough for a notebook column at the classroom
     font size (a left-to-right chain would need twice the width). The stages the course is
     about are filled with the "fill" colour, the others grey; a legend says which is which.
-    When both stages of :data:`EARLY_Z` are drawn, a dashed arrow on the right joins them: the
-    depth test run before the fragment shader, legal only when that cannot change the result.
+    When both stages of :data:`EARLY_Z` are drawn, a dashed box between rasterisation and
+    shading is the optional early depth test (early-z), on the way to the shader, not around
+    it: the depth test run before the fragment shader, legal only when that cannot change the
+    result.
 
     Parameters
     ----------
@@ -140,14 +156,17 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
     Returns
     -------
     PipelineArtists
-        ``bypass`` is the early-z arrow (None when the stages do not include both ends).
+        ``bypass`` is the dashed arrow into the early depth test (None when the stages do not
+        include both ends of :data:`EARLY_Z`).
     """
     out = PipelineArtists()
-    n = len(stages)
-    right = 9.0  # the boxes end here; the early-z bypass runs to their right
-    ax.set(xlim=(0, 10.6), ylim=(n - 0.35, -0.65))
+    early = _early_z_row([s.name for s in stages])
+    n = len(stages) + (early is not None)  # the early test takes a row of its own
+    right = 9.0  # the boxes end here
+    ax.set(xlim=(0, 9.1), ylim=(n - 0.35, -0.65))
     ax.set_axis_off()
-    for k, stage in enumerate(stages):
+    for i, stage in enumerate(stages):
+        k = i + (early is not None and i > early)  # the row: below the early test's
         colour = COLORS["fill"] if stage.course else COLORS["rejected"]
         box = FancyBboxPatch((0.05, k - 0.34), right - 0.05, 0.68, boxstyle="round,pad=0.02,rounding_size=0.12",
                              fc=colour, ec=COLORS["edge"], lw=lw(0.5))  # fmt: skip
@@ -160,12 +179,13 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
         out.texts.append(ax.text(right - 0.25, k, f"lessons {lessons}" if len(stage.lessons) > 1
                                  else f"lesson {lessons}", fontsize=fs(0.8), ha="right",
                                  va="center", style="italic"))  # fmt: skip
-        if k:
-            arrow = FancyArrowPatch((1.0, k - 1 + 0.34), (1.0, k - 0.34), arrowstyle="-|>",
+        if i:
+            above = k - 2 if early is not None and i == early + 1 else k - 1
+            arrow = FancyArrowPatch((1.0, above + 0.34), (1.0, k - 0.34), arrowstyle="-|>",
                                     mutation_scale=fs(1.0), color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
             ax.add_patch(arrow)
             out.arrows.append(arrow)
-    out.bypass = _early_z_bypass(ax, [s.name for s in stages], right)
+    out.bypass = None if early is None else _early_z_test(ax, early + 1, right)
     handles = [Patch(fc=COLORS["fill"], ec=COLORS["edge"], label="this course: rasterisation"),
                Patch(fc=COLORS["rejected"], ec=COLORS["edge"], label="around it")]  # fmt: skip
     out.legend = ax.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 1.0),

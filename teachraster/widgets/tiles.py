@@ -154,15 +154,17 @@ class TileExplorer(Holdable):
         self.counters.value = _counter_table(self.blocks.counters)
 
     def _block_range(self, n: int) -> None:
-        # a new block slider, not its max changed in place: the page's slider (noUiSlider)
-        # kept its first range for the End key, which stopped at 68 of 388 blocks after
-        # 16 / 4 -> 16 / 4 / 1 (issue 31; renew_slider). Before the widget is shown, in place.
-        if self.block.max == n:
-            return
-        if getattr(self, "widget", None) is None:
+        # new block sizes renumber every block and the picture falls back to the level
+        # view: the block slider starts again at 0 (it kept its number, "block 10" over
+        # "level 0: 64×64 blocks"; review r45, lesson 10). A new block slider, not its max
+        # changed in place: the page's slider (noUiSlider) kept its first range for the End
+        # key, which stopped at 68 of 388 blocks after 16 / 4 -> 16 / 4 / 1 (issue 31;
+        # renew_slider). Before the widget is shown, or with the same range, in place.
+        if self.block.max == n or getattr(self, "widget", None) is None:
+            self.block.value = 0
             self.block.max = n
             return
-        self.block = renew_slider(self.block, self.widget, max=n, wire=self._wire_block)
+        self.block = renew_slider(self.block, self.widget, max=n, value=0, wire=self._wire_block)
 
     def _wire_block(self, slider) -> None:
         slider.observe(lambda _: None if self._quiet else self.show_block(), "value")
@@ -198,6 +200,8 @@ class TileExplorer(Holdable):
         # more, and a full draw of the background; issue 31: 126-177 ms in the page)
         self.order = self.blocks.visit_order(self.traversal.value)
         self.artists.set_order(self.blocks, self.order)
+        with self._holding():  # block k is another block in another order: start again
+            self.block.value = 0
         self.show_level()
         self._restart_ahead()
 

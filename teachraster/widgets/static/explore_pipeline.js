@@ -144,7 +144,7 @@ function svg(tag, attrs, text) {
 // smallest type, 13 px, stays at least 12 px on screen (review r7: 900 wide, it was 8 px).
 // Stage names 13 px bold: at 14 px "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px
 // from their boxes' borders (review r17), under the selected box's 2-px border.
-const MAP = { width: 580, height: 364, font: 13, name: 13 };
+const MAP = { width: 580, height: 384, font: 13, name: 13 };
 function layout() {
   const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 50];
   return STAGES.map(([key], k) => {
@@ -171,13 +171,20 @@ function diagram(onPick, lessons) {
   const [a, z] = [boxes[4], boxes[5]];
   arrow(`M${a.x + a.w / 2},${a.y + a.h} C${a.x + a.w / 2},${a.y + a.h + 40} ${z.x + z.w / 2},` +
     `${z.y - 40} ${z.x + z.w / 2},${z.y - 2}`);
-  // early-z: rasterise -> depth test, around the fragment shader
-  const [r, d] = [boxes[6], boxes[8]];
-  arrow(`M${r.x + r.w / 2},${r.y + r.h} C${r.x + r.w / 2},${r.y + r.h + 46} ${d.x + d.w / 2},` +
-    `${d.y + d.h + 46} ${d.x + d.w / 2},${d.y + d.h + 2}`, "7 5");
-  ["early-z: tested before shading, not if the shader",
+  // early-z: an optional depth test on the way from rasterisation to the fragment shader,
+  // dashed, not an arrow from rasterisation to the depth test around the shader (review r45,
+  // 00: that read as fragments skipping the shader)
+  const [r, f] = [boxes[6], boxes[7]];
+  const [ex, ey, ew, eh] = [r.x + r.w / 2 - 30, r.y + r.h + 24, f.x - r.x + 60, 26];
+  root.append(svg("rect", { x: ex, y: ey, width: ew, height: eh, rx: 6, fill: "#fff",
+    stroke: "#333", "stroke-width": 1.5, "stroke-dasharray": "7 5" }));
+  root.append(svg("text", { x: ex + ew / 2, y: ey + 18, "text-anchor": "middle",
+    "font-size": MAP.font, "font-weight": "bold", fill: "#333" }, "early depth test"));
+  arrow(`M${r.x + r.w / 2},${r.y + r.h} L${r.x + r.w / 2},${ey - 2}`, "7 5");
+  arrow(`M${f.x + f.w / 2},${ey} L${f.x + f.w / 2},${f.y + f.h + 2}`, "7 5");
+  ["early-z, optional: depth tested before shading; not if the shader",
     "writes depth (with discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
-    { x: (r.x + d.x + d.w) / 2, y: r.y + r.h + 44 + 16 * i, "text-anchor": "middle",
+    { x: ex + ew / 2, y: ey + eh + 18 + 16 * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
     const [, name] = STAGES[k];
