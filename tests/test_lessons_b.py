@@ -233,7 +233,8 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # r19: subdivided's per-pixel division is said (r20: the timer is CPU time, above)
     assert "a division by the piece's length" in md
     # r17 cell 23: why linear depth's crossing is a vertical line
-    assert "reaches the facing triangle's depth on one vertical line" in md
+    # (r48 06-D3: now held with the figure, in cell 33's code, as q_depth's answer)
+    assert "reaches the facing triangle's depth on one vertical line" in ns.CROSSING_TEXT
 
 
 def test_06_divide_cost_slider_reprices_the_front():
