@@ -333,7 +333,7 @@ def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
         assert {1, 2, 9, 30, 128} <= set(values)  # the prices lesson 06 prints
         # the subtitle defines the front in the words of the rule the chart applies (r6, 06-1)
         assert FRONT_DEFINITION in ex.widget.children[0].value
-        ex.divide.value = 1.0  # N = 2 ties perspective-correct on cost, is less accurate: off
+        ex.divide.value = 1.0  # N = 2 costs more than perspective-correct and is less accurate
         assert "perspective" in ex.front and "subdivided N=2" not in ex.front
     finally:
         ex.close()
