@@ -496,3 +496,26 @@ def test_a_failing_check_without_the_formula_does_not_use_up_the_hint():
     ex.check("safe_near", lambda z, g, f, b: "n")
     first = ex.check("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g)
     assert "solve step" not in str(first) and "a hint only" in str(first), str(first)
+
+
+def _harvested(name):
+    """r46 N1/X1: the arguments of one failing run zipped with its failures' expected answers,
+    handed in as a dict: the cases drawn for each check make it fail."""
+    args = []
+    first = ex.check(name, lambda *a: args.append(a) or 1.0)
+    assert len(first.failures) == len(args), "every case fails the constant"
+    table = {repr(a): f.expected for a, f in zip(args, first.failures)}
+    return ex.check(name, lambda *a: table.get(repr(a), 1.0))
+
+
+def test_safe_near_from_a_harvested_table_fails():
+    report = _harvested("safe_near")
+    assert not report.passed and all("drawn for this check" in f.case for f in report.failures)
+
+
+def test_safe_near_with_a_step_of_one_over_two_to_the_bits_is_refused_and_named():
+    """r46 N2: 4- and 8-bit cases, where 1/2^bits moves n past the tolerance."""
+    report = _named(
+        "safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "2^bits − 1"
+    )
+    assert {int(f.case.split(", ")[-1].split()[0]) for f in report.failures} == {4, 8}
