@@ -519,3 +519,31 @@ def test_safe_near_with_a_step_of_one_over_two_to_the_bits_is_refused_and_named(
         "safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "2^bits − 1"
     )
     assert {int(f.case.split(", ")[-1].split()[0]) for f in report.failures} == {4, 8}
+
+
+@pytest.mark.parametrize(
+    "name", ["barycentric", "perspective_weights", "clip_near", "depth_passes"]
+)
+def test_a_harvested_table_of_answers_fails(name):
+    """r46 X1: a dict of one run's arguments and expected answers passed 03 and 04."""
+    report = _harvested(name)
+    assert not report.passed and all("drawn for this check" in f.case for f in report.failures)
+
+
+def test_span_one_past_the_end_in_float64_is_an_off_by_one_not_float32():
+    """r46 S1: ⌈x_r − ½⌉ + 1 in float64 was asked "did you compute in float32" far out."""
+    report = ex.check("span", lambda xy, row: (math.ceil(_x(xy, row)[0] - 0.5),
+                                               math.ceil(_x(xy, row)[1] - 0.5) + 1))  # fmt: skip
+    assert not report.passed
+    assert not any("float32" in f.explanation for f in report.failures), str(report)
+
+
+def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
+    """r46 P3: a point outside the triangle has a negative λ; clamping it must fail."""
+
+    def clamped(lam, w):
+        q = np.clip(lam, 0, 1) * (w.min() / w)
+        return q / q.sum()
+
+    report = ex.check("perspective_weights", clamped)
+    assert [f.case.split(":")[0] for f in report.failures] == ["p outside the triangle"]

@@ -17,7 +17,7 @@ import numpy as np
 from ..pipeline.geometry.clipping import clip_polygon, distances
 from ..study.hardcases import CASES
 from .answers import MAX_VERTICES, as_bool, as_numbers, short
-from .cases import SEED
+from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer
 from .running import WrongAnswerType
 from .scalars import num, vec
@@ -106,6 +106,14 @@ def near_only(v: np.ndarray) -> bool:
     return bool((d[:, 1] >= 0).all() and not ((v[:, 2] == 0) & (v[:, 3] == 0)).any())
 
 
+def _random_clip(rng) -> np.ndarray:
+    """Three clip-space vertices (x, y, z, w) on a 1/1000 grid, some behind the near plane."""
+    lo, hi = ((0.5, 3.0), (-2.0, 3.0), (-3.0, -0.5))[rng.integers(0, 3)]
+    w = np.round(rng.uniform(lo, hi, 3), 3)
+    z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
+    return np.column_stack([np.round(rng.uniform(-2, 2, (3, 2)), 3), z, w])
+
+
 def clip_cases():
     out = []
     for name in ("behind_camera", "eye_plane_vertex", "hair_in_front_of_eye"):
@@ -115,14 +123,18 @@ def clip_cases():
     rng = np.random.default_rng(SEED + 4)
     counts = [0, 0, 0, 0]  # random cases by how many vertices lie behind the plane
     while min(counts[:3]) < 5:
-        lo, hi = ((0.5, 3.0), (-2.0, 3.0), (-3.0, -0.5))[rng.integers(0, 3)]
-        w = np.round(rng.uniform(lo, hi, 3), 3)
-        z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
-        v = np.column_stack([np.round(rng.uniform(-2, 2, (3, 2)), 3), z, w])
-        behind = int((z + w < 0).sum())
+        v = _random_clip(rng)
+        behind = int((v[:, 2] + v[:, 3] < 0).sum())
         if near_only(v) and counts[behind] < 5:
             counts[behind] += 1
             out.append((f"random, {_BEHIND[behind]} the near plane", (v,)))
+    now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
+    for k in range(DRAWN):
+        v = _random_clip(now)
+        while not near_only(v) or not 0 < (v[:, 2] + v[:, 3] < 0).sum() < 3:
+            v = _random_clip(now)  # one or two vertices behind: the clipping cases
+        behind = int((v[:, 2] + v[:, 3] < 0).sum())
+        out.append((f"drawn for this check {k + 1}, {_BEHIND[behind]} the near plane", (v,)))
     # one vertex exactly on the plane, the others on either side
     v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
     out.append(("a vertex on the near plane", (v,)))
