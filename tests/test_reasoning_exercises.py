@@ -433,6 +433,12 @@ def test_safe_near_with_an_infinite_far_plane_still_fails_where_it_matters():
     _named("safe_near", lambda z, g, f, b: step(b) * z * z / g, "infinite far", "(f − n)/f")
 
 
+def _clip_from_end(v):
+    from exercise_solutions import clip_against
+
+    return clip_against(v, t=lambda a, b: (b[2] + b[3]) / ((b[2] + b[3]) - (a[2] + a[3])))
+
+
 @pytest.mark.parametrize(
     ("name", "fn", "other", "formula"),
     [("span", lambda xy, row: (math.floor(_x(xy, row)[0] - 0.5) + 1, math.ceil(_x(xy, row)[1] - 0.5)),
@@ -452,6 +458,20 @@ def test_the_formula_comes_only_after_two_different_wrong_answers(name, fn, othe
     for report in (first, again):
         assert formula not in str(report) and "a hint only" in str(report), str(report)
     assert formula in str(ex.check(name, other)), name
+
+
+@pytest.mark.parametrize(
+    ("name", "fn", "formula"),
+    [("perspective_weights", lambda lam, w: lam / w, "Σ λ_j / w_j"),
+     ("clip_near", _clip_from_end, "d_a/(d_a − d_b)"), ("clip_near", _clip_from_end, "d2/(d2")],
+)  # fmt: skip
+def test_the_formula_of_other_mistakes_is_staged_too(name, fn, formula):
+    """r46 P1, C1: "divide by their sum Σ λ_j / w_j" and the crossing's t were unstaged."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    report = ex.check(name, fn)
+    assert not report.passed and formula not in str(report), str(report)
 
 
 def _x(xy, row):

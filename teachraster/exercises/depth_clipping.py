@@ -191,6 +191,11 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
     return poly if np.isfinite(poly).all() else None
 
 
+#: How t is found: the formula the task asks to work out, said once two different answers
+#: have failed (r46 C1: the first wrong try printed it; :attr:`.exercise.Exercise.hints`).
+_T = " (t = d_a/(d_a − d_b) along edge a→b, with d = z + w)"
+
+
 def _crossing(v, z_alone: bool = True) -> str:
     """Where the first crossing edge meets the plane, and the t that says it (and the t that
     z alone gives, for the mistake that takes it: r39 04-2)."""
@@ -201,8 +206,8 @@ def _crossing(v, z_alone: bool = True) -> str:
             t = d[i] / (d[i] - d[j])
             zt = v[i, 2] / (v[i, 2] - v[j, 2]) if v[i, 2] != v[j, 2] else float("nan")
             at = (
-                f"edge v{i + 1}→v{j + 1} crosses the near plane at t = d{i + 1}/(d{i + 1} − "
-                f"d{j + 1}) = {num(t)} with d = z + w, at {vec(v[i] + t * (v[j] - v[i]))}"
+                f"edge v{i + 1}→v{j + 1} crosses the near plane at t = {num(t)}{_T}, at "
+                f"{vec(v[i] + t * (v[j] - v[i]))}"
             )
             return (
                 f"{at}; z alone gives z{i + 1}/(z{i + 1} − z{j + 1}) = {num(zt)}" if z_alone else at
@@ -308,6 +313,17 @@ CLIP_MISTAKES = [
 ]  # fmt: skip
 
 
+_CLIP_HINTS = (
+    (_T, " (where the distance to the plane, z + w, reaches 0 along the edge)"),
+    ("at t = d1/(d1 − d2) with d = z + w (the signed distance to the plane z = −w)",
+     "where z + w, the signed distance to the plane z = −w, is 0 (by what fraction of the "
+     "edge?)"),
+    ("at t = d1/(d1 − d2) with d = z + w", "where z + w, the distance to the near plane, is 0"),
+    ("the new vertex is a + t·(b − a) with t = d_a/(d_a − d_b)", "the new vertex is "
+     "a + t·(b − a), so t is the fraction of the way from a (its own end) to b"),
+)  # fmt: skip
+
+
 def explain_clip(args, expected, got) -> str:
     return f"your polygon {_poly(np.asarray(got, float).reshape(-1, 4), expected)} should be {_poly(expected, np.asarray(got, float).reshape(-1, 4))}"  # fmt: skip
 
@@ -347,6 +363,6 @@ def _draw_clip(ax, case, got):
 CLIP_NEAR = Exercise(
     "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e), explain_clip,
     _clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
-    answers=(PackageAnswer(clip_polygon),), draw=_draw_clip,
+    answers=(PackageAnswer(clip_polygon),), draw=_draw_clip, hints=_CLIP_HINTS,
     match=lambda got, answer, args: same_polygon(np.asarray(got, float).reshape(-1, 4), answer, 1e-6),
 )  # fmt: skip

@@ -151,6 +151,9 @@ PERSPECTIVE_WEIGHTS = Exercise(
         ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "
          "weights μ and the three w (a point's screen x is x/w), then turn that around"),
         ("neither divided by w nor summing to 1", "neither the 3-D weights nor summing to 1"),
+        # r46 P1: the unnormalised answer's words gave the sum to divide by
+        ("(divide by their sum Σ λ_j / w_j, the interpolated 1/w)", "(by what must they be "
+         "divided to sum to 1?)"),
         (" (μ_i ∝ λ_i / w_i, normalised to sum to 1)", ": write λ_i in terms of μ and the three "
          "w, turn that around, and make the weights sum to 1"),
     ),
