@@ -546,7 +546,7 @@ def test_safe_near_with_a_step_of_one_over_two_to_the_bits_is_refused_and_named(
 
 
 @pytest.mark.parametrize(
-    "name", ["barycentric", "perspective_weights", "clip_near", "depth_passes"]
+    "name", ["edge_function", "barycentric", "perspective_weights", "clip_near", "depth_passes"]
 )
 def test_a_harvested_table_of_answers_fails(name):
     """r46 X1: a dict of one run's arguments and expected answers passed 03 and 04."""

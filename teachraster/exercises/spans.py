@@ -24,7 +24,7 @@ import numpy as np
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from .answers import as_numbers, short
-from .cases import catalogue_coverage, proper_triangles, winding
+from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
@@ -33,8 +33,16 @@ from .scalars import num
 # -- cases ------------------------------------------------------------------------------------
 def span_cases() -> list[tuple[str, tuple, frozenset]]:
     """(label, (xy, row), covered columns) for rows that decide: ties, the split, the ends
-    (built once, then copied)."""
-    return copy.deepcopy(_span_cases())
+    (built once, then copied), and the rows of a few triangles drawn for this check, so a
+    table of the fixed cases' answers fails (r46 X1)."""
+    out = copy.deepcopy(_span_cases())
+    for case in drawn_coverage():
+        xy = case.triangles[0]
+        rows = _rows(xy)
+        covered = _covered_rows(xy, [row for row, _ in rows])
+        out += [(f"{case.label}, row {row} ({why})", (xy.copy(), row), covered[row])
+                for row, why in rows]  # fmt: skip
+    return out
 
 
 @cache
