@@ -45,8 +45,8 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
     for k in range(DRAWN):
         w = np.array([float(f"{x:.3g}") for x in np.exp(now.uniform(np.log(0.1), np.log(100), 3))])
         lam = np.round(now.dirichlet(np.ones(3)), 3)
-        lam[2] = round(1.0 - lam[0] - lam[1], 3)
-        mu = weights_per_row(lam[None], w[None])[0]
+        lam[2] = round(1.0 - lam[0] - lam[1], 3)  # may round to -0.001: not clamped
+        mu = weights_per_row(lam[None], w[None], extrapolate=True)[0]
         out.append((f"drawn for this check {k + 1}: λ = {vec(lam)}, w = {_ws(w)}",
                     (lam.copy(), w.copy()), mu))  # fmt: skip
     return out
