@@ -482,21 +482,45 @@ def test_safe_near_with_an_infinite_far_plane_still_fails_where_it_matters():
     _named("safe_near", lambda z, g, f, b: step(b) * z * z / g, "infinite far", "(f − n)/f")
 
 
+def _clip_from_end(v):
+    from exercise_solutions import clip_against
+
+    return clip_against(v, t=lambda a, b: (b[2] + b[3]) / ((b[2] + b[3]) - (a[2] + a[3])))
+
+
 @pytest.mark.parametrize(
-    ("name", "fn", "formula"),
+    ("name", "fn", "other", "formula"),
     [("span", lambda xy, row: (math.floor(_x(xy, row)[0] - 0.5) + 1, math.ceil(_x(xy, row)[1] - 0.5)),
+      lambda xy, row: (math.floor(_x(xy, row)[0] - 0.5) + 1, math.ceil(_x(xy, row)[1] - 0.5) + 1),
       "⌈x_l − ½⌉"),
-     ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "λ_i / w_i"),
-     ("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g, "solve step")],
+     ("perspective_weights", lambda lam, w: lam * w / (lam @ w), lambda lam, w: lam / w, "λ_i / w_i"),
+     ("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g,
+      lambda z, g, f, b: 2 * step(b) * z * z / g, "solve step")],
 )  # fmt: skip
-def test_the_first_failing_check_hints_and_the_second_says_the_formula(name, fn, formula):
-    """r39 02-5, 03-3, 05-3: the first wrong try does not print what the task asks to find."""
+def test_the_formula_comes_only_after_two_different_wrong_answers(name, fn, other, formula):
+    """r39 02-5, 03-3, 05-3: the first wrong try does not print what the task asks to find;
+    r46 S2, X2: nor does rerunning it; a second, different wrong answer does."""
     from teachraster.exercises import tries
 
     tries.forget_hints(name)
-    first, second = ex.check(name, fn), ex.check(name, fn)
-    assert formula not in str(first) and "a hint only" in str(first), str(first)
-    assert formula in str(second), str(second)
+    first, again = ex.check(name, fn), ex.check(name, fn)
+    for report in (first, again):
+        assert formula not in str(report) and "a hint only" in str(report), str(report)
+    assert formula in str(ex.check(name, other)), name
+
+
+@pytest.mark.parametrize(
+    ("name", "fn", "formula"),
+    [("perspective_weights", lambda lam, w: lam / w, "Σ λ_j / w_j"),
+     ("clip_near", _clip_from_end, "d_a/(d_a − d_b)"), ("clip_near", _clip_from_end, "d2/(d2")],
+)  # fmt: skip
+def test_the_formula_of_other_mistakes_is_staged_too(name, fn, formula):
+    """r46 P1, C1: "divide by their sum Σ λ_j / w_j" and the crossing's t were unstaged."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    report = ex.check(name, fn)
+    assert not report.passed and formula not in str(report), str(report)
 
 
 def _x(xy, row):
@@ -562,3 +586,54 @@ def test_the_hiz_figure_draws_the_triangle_and_its_depth_at_the_extreme_centres(
     labels = [t.get_text() for t in ax.texts]
     assert len([t for t in labels if t[:1].isdigit()]) >= 4, labels
     plt.close(fig)
+
+
+def _harvested(name):
+    """r46 N1/X1: the arguments of one failing run zipped with its failures' expected answers,
+    handed in as a dict: the cases drawn for each check make it fail."""
+    args = []
+    first = ex.check(name, lambda *a: args.append(a) or 1.0)
+    assert len(first.failures) == len(args), "every case fails the constant"
+    table = {repr(a): f.expected for a, f in zip(args, first.failures)}
+    return ex.check(name, lambda *a: table.get(repr(a), 1.0))
+
+
+def test_safe_near_from_a_harvested_table_fails():
+    report = _harvested("safe_near")
+    assert not report.passed and all("drawn for this check" in f.case for f in report.failures)
+
+
+def test_safe_near_with_a_step_of_one_over_two_to_the_bits_is_refused_and_named():
+    """r46 N2: 4- and 8-bit cases, where 1/2^bits moves n past the tolerance."""
+    report = _named(
+        "safe_near", lambda z, g, f, b: solve(1 / 2**b, z, g, f), "2^bits", "2^bits − 1"
+    )
+    assert {int(f.case.split(", ")[-1].split()[0]) for f in report.failures} == {4, 8}
+
+
+@pytest.mark.parametrize(
+    "name", ["edge_function", "barycentric", "perspective_weights", "clip_near", "depth_passes"]
+)
+def test_a_harvested_table_of_answers_fails(name):
+    """r46 X1: a dict of one run's arguments and expected answers passed 03 and 04."""
+    report = _harvested(name)
+    assert not report.passed and all("drawn for this check" in f.case for f in report.failures)
+
+
+def test_span_one_past_the_end_in_float64_is_an_off_by_one_not_float32():
+    """r46 S1: ⌈x_r − ½⌉ + 1 in float64 was asked "did you compute in float32" far out."""
+    report = ex.check("span", lambda xy, row: (math.ceil(_x(xy, row)[0] - 0.5),
+                                               math.ceil(_x(xy, row)[1] - 0.5) + 1))  # fmt: skip
+    assert not report.passed
+    assert not any("float32" in f.explanation for f in report.failures), str(report)
+
+
+def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
+    """r46 P3: a point outside the triangle has a negative λ; clamping it must fail."""
+
+    def clamped(lam, w):
+        q = np.clip(lam, 0, 1) * (w.min() / w)
+        return q / q.sum()
+
+    report = ex.check("perspective_weights", clamped)
+    assert [f.case.split(":")[0] for f in report.failures] == ["p outside the triangle"]

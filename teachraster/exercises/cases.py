@@ -140,6 +140,20 @@ def random_coverage(zero_area: bool = True, far: bool = True) -> list[CoverageCa
     return out
 
 
+def drawn_coverage(count: int = DRAWN) -> list[CoverageCase]:
+    """``count`` triangles of non-zero area drawn for this check (:func:`drawn_rng`: they
+    differ from run to run, so a table of the fixed cases' answers fails them; r46 X1), on
+    pixel centres, on the 1/256 grid and with a horizontal edge, both windings."""
+    now, out = drawn_rng(), []
+    while len(out) < count:
+        kind = ("centres", "grid", "flat")[len(out) % 3]
+        xy = _random_triangle(now, kind, clockwise=len(out) % 2 == 0)
+        if winding(xy) != "zero area":
+            label = f"drawn for this check {len(out) + 1}: {winding(xy)}, {_kind_words[kind]}"
+            out.append(CoverageCase(label, xy[None], (0, 0), (WINDOW, WINDOW)))
+    return out
+
+
 _kind_words = {
     "centres": "vertices on pixel centres",
     "grid": "vertices on the 1/256 grid",

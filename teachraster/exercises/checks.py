@@ -63,13 +63,20 @@ def names() -> list[str]:
     return list(_registry())
 
 
+def _answer(report: Report) -> str:
+    """A fingerprint of the student's answer: what it returned on the failing fixed cases (the
+    cases drawn for each check differ from run to run, so they are left out)."""
+    kept = [f"{f.case}={f.got!r}" for f in report.failures if "drawn for this check" not in f.case]
+    return "\n".join(kept[:40])
+
+
 def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
     """On the first failing check of task ``name`` whose words would give the answer away,
     each of ``hints``' texts as its hint, and a note that the next failing check says more
     (:attr:`~.exercise.Exercise.hints`; a check that fails otherwise, a TypeError, is not
     counted)."""
     telling = any(text in f.explanation for f in report.failures for text, _ in hints)
-    if not telling or not tries.hinted_check(name):
+    if not telling or not tries.hinted_check(name, _answer(report)):
         return report if note is None else replace(report, tries=note)
     failures = []
     for f in report.failures:
@@ -77,7 +84,10 @@ def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
         for text, hint in hints:
             words = words.replace(text, hint)
         failures.append(replace(f, explanation=words))
-    more = "a hint only, this first time: the next failing check of this task says it in full"
+    more = (
+        "a hint only: work from it and the numbers of the case (the full words come once "
+        f"{tries.HINTED_ANSWERS} different answers of yours have failed)"
+    )
     return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
 
 

@@ -19,7 +19,7 @@ import numpy as np
 from ..core.fill import rasterize
 from . import coverage as cov
 from .answers import as_bool, as_coverage
-from .cases import CoverageCase, catalogue_coverage, random_coverage
+from .cases import CoverageCase, catalogue_coverage, drawn_coverage, random_coverage
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 
 FLOAT32_EPS = 2.0**-24
@@ -74,13 +74,23 @@ def _expected(case: CoverageCase) -> np.ndarray:
     return np.array([cov.expected_coverage(case, xy) for xy in case.triangles])
 
 
-@cache
 def covers_cases():
+    """The fixed cases (built once) and a few drawn for this check (r46 X1)."""
+    return _covers_cases() + [(c.label, (c,), _expected(c)) for c in drawn_coverage()]
+
+
+@cache
+def _covers_cases():
     return [(c.label, (c,), _expected(c)) for c in catalogue_coverage() + random_coverage()]
 
 
-@cache
 def fill_cases():
+    """The fixed cases (built once) and a few drawn for this check (r46 X1)."""
+    return _fill_cases() + [(c.label, (c,), _expected(c)) for c in drawn_coverage()]
+
+
+@cache
+def _fill_cases():
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
     return [(c.label, (c,), _expected(c)) for c in cases + _oblong_cases()]

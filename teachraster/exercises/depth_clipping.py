@@ -17,7 +17,7 @@ import numpy as np
 from ..pipeline.geometry.clipping import clip_polygon, distances
 from ..study.hardcases import CASES
 from .answers import MAX_VERTICES, as_bool, as_numbers, short
-from .cases import SEED
+from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer
 from .running import WrongAnswerType
 from .scalars import num, vec
@@ -106,6 +106,14 @@ def near_only(v: np.ndarray) -> bool:
     return bool((d[:, 1] >= 0).all() and not ((v[:, 2] == 0) & (v[:, 3] == 0)).any())
 
 
+def _random_clip(rng) -> np.ndarray:
+    """Three clip-space vertices (x, y, z, w) on a 1/1000 grid, some behind the near plane."""
+    lo, hi = ((0.5, 3.0), (-2.0, 3.0), (-3.0, -0.5))[rng.integers(0, 3)]
+    w = np.round(rng.uniform(lo, hi, 3), 3)
+    z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
+    return np.column_stack([np.round(rng.uniform(-2, 2, (3, 2)), 3), z, w])
+
+
 def clip_cases():
     out = []
     for name in ("behind_camera", "eye_plane_vertex", "hair_in_front_of_eye"):
@@ -115,14 +123,18 @@ def clip_cases():
     rng = np.random.default_rng(SEED + 4)
     counts = [0, 0, 0, 0]  # random cases by how many vertices lie behind the plane
     while min(counts[:3]) < 5:
-        lo, hi = ((0.5, 3.0), (-2.0, 3.0), (-3.0, -0.5))[rng.integers(0, 3)]
-        w = np.round(rng.uniform(lo, hi, 3), 3)
-        z = np.round(w - rng.uniform(0, 2.5, 3) * np.abs(w), 3)
-        v = np.column_stack([np.round(rng.uniform(-2, 2, (3, 2)), 3), z, w])
-        behind = int((z + w < 0).sum())
+        v = _random_clip(rng)
+        behind = int((v[:, 2] + v[:, 3] < 0).sum())
         if near_only(v) and counts[behind] < 5:
             counts[behind] += 1
             out.append((f"random, {_BEHIND[behind]} the near plane", (v,)))
+    now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
+    for k in range(DRAWN):
+        v = _random_clip(now)
+        while not near_only(v) or not 0 < (v[:, 2] + v[:, 3] < 0).sum() < 3:
+            v = _random_clip(now)  # one or two vertices behind: the clipping cases
+        behind = int((v[:, 2] + v[:, 3] < 0).sum())
+        out.append((f"drawn for this check {k + 1}, {_BEHIND[behind]} the near plane", (v,)))
     # one vertex exactly on the plane, the others on either side
     v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
     out.append(("a vertex on the near plane", (v,)))
@@ -179,6 +191,11 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
     return poly if np.isfinite(poly).all() else None
 
 
+#: How t is found: the formula the task asks to work out, said once two different answers
+#: have failed (r46 C1: the first wrong try printed it; :attr:`.exercise.Exercise.hints`).
+_T = " (t = d_a/(d_a − d_b) along edge a→b, with d = z + w)"
+
+
 def _crossing(v, z_alone: bool = True) -> str:
     """Where the first crossing edge meets the plane, and the t that says it (and the t that
     z alone gives, for the mistake that takes it: r39 04-2)."""
@@ -189,8 +206,8 @@ def _crossing(v, z_alone: bool = True) -> str:
             t = d[i] / (d[i] - d[j])
             zt = v[i, 2] / (v[i, 2] - v[j, 2]) if v[i, 2] != v[j, 2] else float("nan")
             at = (
-                f"edge v{i + 1}→v{j + 1} crosses the near plane at t = d{i + 1}/(d{i + 1} − "
-                f"d{j + 1}) = {num(t)} with d = z + w, at {vec(v[i] + t * (v[j] - v[i]))}"
+                f"edge v{i + 1}→v{j + 1} crosses the near plane at t = {num(t)}{_T}, at "
+                f"{vec(v[i] + t * (v[j] - v[i]))}"
             )
             return (
                 f"{at}; z alone gives z{i + 1}/(z{i + 1} − z{j + 1}) = {num(zt)}" if z_alone else at
@@ -296,6 +313,17 @@ CLIP_MISTAKES = [
 ]  # fmt: skip
 
 
+_CLIP_HINTS = (
+    (_T, " (where the distance to the plane, z + w, reaches 0 along the edge)"),
+    ("at t = d1/(d1 − d2) with d = z + w (the signed distance to the plane z = −w)",
+     "where z + w, the signed distance to the plane z = −w, is 0 (by what fraction of the "
+     "edge?)"),
+    ("at t = d1/(d1 − d2) with d = z + w", "where z + w, the distance to the near plane, is 0"),
+    ("the new vertex is a + t·(b − a) with t = d_a/(d_a − d_b)", "the new vertex is "
+     "a + t·(b − a), so t is the fraction of the way from a (its own end) to b"),
+)  # fmt: skip
+
+
 def explain_clip(args, expected, got) -> str:
     return f"your polygon {_poly(np.asarray(got, float).reshape(-1, 4), expected)} should be {_poly(expected, np.asarray(got, float).reshape(-1, 4))}"  # fmt: skip
 
@@ -335,6 +363,6 @@ def _draw_clip(ax, case, got):
 CLIP_NEAR = Exercise(
     "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e), explain_clip,
     _clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
-    answers=(PackageAnswer(clip_polygon),), draw=_draw_clip,
+    answers=(PackageAnswer(clip_polygon),), draw=_draw_clip, hints=_CLIP_HINTS,
     match=lambda got, answer, args: same_polygon(np.asarray(got, float).reshape(-1, 4), answer, 1e-6),
 )  # fmt: skip

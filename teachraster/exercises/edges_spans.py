@@ -13,7 +13,7 @@ import numpy as np
 from ..core.edges import edge_function
 from ..core.span_tables import split_point
 from .answers import as_number
-from .cases import proper_triangles, sorted_by_y
+from .cases import drawn_coverage, proper_triangles, sorted_by_y
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, factor, num, vec
 from .tolerance import close
@@ -22,7 +22,8 @@ from .tolerance import close
 # -- edge_function ----------------------------------------------------------------------------
 def edge_function_cases():
     out = []
-    for n, (label, xy) in enumerate(proper_triangles()):
+    drawn = [(c.label, c.triangles[0]) for c in drawn_coverage()]  # r46 X1: differ every run
+    for n, (label, xy) in enumerate(proper_triangles() + drawn):
         k = n % 3
         a, b = xy[k], xy[(k + 1) % 3]
         p = centre_near(xy.mean(axis=0)) if n % 2 else xy[(k + 2) % 3]

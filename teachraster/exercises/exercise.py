@@ -209,9 +209,9 @@ class Exercise:
         rest (r23 D-6: ``line_pixels``' ~90-word tie rule stood on every line).
     hints : sequence of (str, str)
         (text, hint): words that give away what the task asks to work out (a formula), said
-        as ``hint`` on the task's first failing check in a kernel and in full from the second
-        on (r39: the first wrong try printed ⌈x_l − ½⌉, λ_i / w_i, the inequality for n);
-        :mod:`.tries` counts the checks.
+        as ``hint`` until two different answers of the student's have failed in a kernel,
+        in full after (r39: the first wrong try printed ⌈x_l − ½⌉, λ_i / w_i, the inequality
+        for n; r46: rerunning the same cell printed them); :mod:`.tries` counts the answers.
     """
 
     name: str

@@ -17,7 +17,7 @@ from ..core.edges import edge_function
 from ..core.interpolation import blend, perspective_weights
 from ..study.hardcases import CASES
 from .answers import as_number, as_numbers
-from .cases import SEED, proper_triangles
+from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, num, tri_words, vec
 from .tolerance import all_close, close
@@ -27,10 +27,18 @@ from .tolerance import all_close, close
 def barycentric_cases():
     rng = np.random.default_rng(SEED + 1)
     out = []
+    n_fixed = 2 * len(proper_triangles())
     for label, xy in proper_triangles():
         lo, hi = xy.min(axis=0), xy.max(axis=0)
         for p in (centre_near(xy.mean(axis=0)), centre_near(rng.uniform(lo, hi))):
             out.append((f"{label}, p={vec(p)}", (xy, p), barycentric(xy, p)))
+    now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
+    while len(out) < n_fixed + DRAWN:
+        xy = np.round(now.uniform(0, WINDOW, (3, 2)) * 256) / 256  # on the 1/256-px grid
+        if abs(_area(xy)) >= 1:  # a proper triangle, not a sliver the tolerance cannot judge
+            p = centre_near(now.uniform(xy.min(axis=0), xy.max(axis=0)))
+            out.append((f"drawn for this check {len(out) - n_fixed + 1}: "
+                        f"{tri_words(xy)}, p={vec(p)}", (xy, p), barycentric(xy, p)))  # fmt: skip
     return out
 
 

@@ -24,11 +24,12 @@ import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, window_depth
 from .answers import as_number
+from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, variant_mistakes
 from .scalars import num
 from .tolerance import close
 
-#: (z, gap, far, bits) of the cases: near and far objects, thin and thick gaps, 16 and 24 bits.
+#: (z, gap, far, bits) of the cases: near and far objects, thin and thick gaps, 4 to 24 bits.
 SETTINGS = (
     (10.0, 0.01, 1000.0, 16), (100.0, 0.5, 1000.0, 16), (500.0, 1.0, 1000.0, 16),
     (2.0, 0.001, 100.0, 16), (50.0, 0.05, 100.0, 16), (100.0, 0.005, 1000.0, 24),
@@ -36,6 +37,11 @@ SETTINGS = (
     (5.0, 0.0001, 1000.0, 24), (20.0, 2.0, 25.0, 16), (900.0, 50.0, 1000.0, 16),
     # a thin gap near the far plane: the factor (f - n)/f moves n by 2 %, past SLACK
     (900.0, 0.5, 1000.0, 16),
+    # r46 N2: "a buffer of a few bits" (lesson 05b): at 4 and 8 bits a step of 1/2^bits moves
+    # n by 6.7 % and 0.4 %, past every reading that tells the surfaces apart; at 16 and 24
+    # bits (1.5e-5) no tolerance could see it. The surfaces lie close to the far plane, where
+    # so coarse a buffer still has a near plane between the eye and them.
+    (45.0, 0.5, 50.0, 4), (9.5, 0.01, 10.0, 8), (99.0, 0.1, 100.0, 8),
 )  # fmt: skip
 
 #: How much further out than the smallest near plane an answer may be (a safe near plane,
@@ -44,8 +50,12 @@ SLACK = 0.01
 
 
 def resolution(z, near, far, bits) -> float:
-    """The package's Δz at distance z (first order)."""
-    return float(depth_resolution([z], near, far, f"unorm{bits}")[0])
+    """The package's Δz at distance z (first order); for a buffer the package has no format
+    for (4 or 8 bits), its 16-bit Δz scaled by the ratio of the steps (Δz is one step over
+    the slope of z_win)."""
+    if bits in (16, 24):
+        return float(depth_resolution([z], near, far, f"unorm{bits}")[0])
+    return float(depth_resolution([z], near, far, "unorm16")[0]) * (2**16 - 1) / (2**bits - 1)
 
 
 def expected_near(z: float, gap: float, far: float, bits: int) -> float:
@@ -90,8 +100,30 @@ def _smallest(told_apart, z: float) -> float:
 
 
 def near_cases() -> list[tuple[str, tuple, float]]:
-    """The cases (built once, then copied): see :func:`_near_cases`."""
-    return copy.deepcopy(_near_cases())
+    """The fixed cases (built once, then copied: see :func:`_near_cases`) and :data:`DRAWN`
+    drawn for this check, so a table of the fixed cases' answers fails (r46 N1)."""
+    out, now = copy.deepcopy(_near_cases()), drawn_rng()
+    for k in range(DRAWN):
+        z, gap, far, bits = _drawn_setting(now)
+        label = (f"drawn for this check {k + 1}: z = {num(z)}, gap = {num(gap)}, "
+                 f"far = {num(far)}, {bits} bits")  # fmt: skip
+        out.append((label, (z, gap, far, bits), expected_near(z, gap, far, bits)))
+    return out
+
+
+def _drawn_setting(rng) -> tuple[float, float, float, int]:
+    """(z, gap, far, bits), three significant digits, whose near plane lies between a
+    thousandth and half of z: the far plane, z in front of it, then the gap that puts n
+    there."""
+    while True:
+        bits = int(rng.choice([16, 24]))
+        far = float(f"{10 ** rng.uniform(1, 4):.3g}")
+        z = float(f"{far * rng.uniform(0.05, 0.95):.3g}")
+        n = z * 10 ** rng.uniform(-3, np.log10(0.5))
+        step = 1.0 / (2**bits - 1)
+        gap = float(f"{step * z * z * (far - n) / (far * n):.3g}")
+        if 0 < gap < z and 1e-3 * z < expected_near(z, gap, far, bits) < 0.5 * z:
+            return z, gap, far, bits
 
 
 @cache

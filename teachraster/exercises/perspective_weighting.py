@@ -17,7 +17,7 @@ import numpy as np
 from ..core.interpolation import perspective_weights, weights_per_row
 from ..study.hardcases import CASES
 from .answers import as_numbers
-from .cases import SEED
+from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import vec
 from .tolerance import all_close
@@ -36,6 +36,19 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
         for lam in lams + [rng.dirichlet(np.ones(3))]:
             mu = weights_per_row(lam[None], w[None])[0]
             out.append((f"λ = {vec(lam)}, w = {_ws(w)}", (lam.copy(), w.copy()), mu))
+    # r46 P3: a point outside the triangle (a negative λ, as an extrapolated or clipped
+    # vertex has): the same formula, and its μ is negative too
+    lam, w = np.array([-0.25, 0.5, 0.75]), np.array([1.0, 2.0, 4.0])
+    out.append((f"p outside the triangle: λ = {vec(lam)}, w = {_ws(w)}", (lam, w.copy()),
+                weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
+    now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
+    for k in range(DRAWN):
+        w = np.array([float(f"{x:.3g}") for x in np.exp(now.uniform(np.log(0.1), np.log(100), 3))])
+        lam = np.round(now.dirichlet(np.ones(3)), 3)
+        lam[2] = round(1.0 - lam[0] - lam[1], 3)  # may round to -0.001: not clamped
+        mu = weights_per_row(lam[None], w[None], extrapolate=True)[0]
+        out.append((f"drawn for this check {k + 1}: λ = {vec(lam)}, w = {_ws(w)}",
+                    (lam.copy(), w.copy()), mu))  # fmt: skip
     return out
 
 
@@ -138,6 +151,9 @@ PERSPECTIVE_WEIGHTS = Exercise(
         ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "
          "weights μ and the three w (a point's screen x is x/w), then turn that around"),
         ("neither divided by w nor summing to 1", "neither the 3-D weights nor summing to 1"),
+        # r46 P1: the unnormalised answer's words gave the sum to divide by
+        ("(divide by their sum Σ λ_j / w_j, the interpolated 1/w)", "(by what must they be "
+         "divided to sum to 1?)"),
         (" (μ_i ∝ λ_i / w_i, normalised to sum to 1)", ": write λ_i in terms of μ and the three "
          "w, turn that around, and make the weights sum to 1"),
     ),

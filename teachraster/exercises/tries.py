@@ -58,7 +58,9 @@ FREE_CAUSES, CAUSE_STEP, CAUSE_MOST = 2, 30.0, 300.0
 
 _FAILED: dict[str, int] = {}
 _WRONG: dict[str, set] = {}
-_HINTED: dict[str, int] = {}  # failing checks of each task, whatever the setting (hints)
+_HINTED: dict[str, set] = {}  # each task's different failing answers, whatever the setting (hints)
+#: How many different failing answers of a task come before its full words (r46 S2, X2).
+HINTED_ANSWERS = 2
 _LOCK = threading.Lock()
 _sleep = time.sleep  # the tests replace it
 
@@ -139,15 +141,18 @@ def wrong_causes(name: str, default: int | None, causes, passed: bool,
     )
 
 
-def hinted_check(name: str) -> bool:
+def hinted_check(name: str, answer: object) -> bool:
     """Count one failing check of task ``name`` whose words would give the answer away; True
-    for the first in this kernel, which gets the hints instead of those words
-    (:attr:`~.exercise.Exercise.hints`). Unlike the wait, this count is not
-    switched off by ``TEACHRASTER_CHECK_TRIES`` and never starts again: a student who saw the
-    full words once has seen them."""
+    (hints instead of those words, :attr:`~.exercise.Exercise.hints`) until
+    :data:`HINTED_ANSWERS` different failing ``answer`` s (a fingerprint of what the student's
+    function returned) have been seen in this kernel. Rerunning the same wrong cell never
+    brings the full words (r46 S2: the second identical try printed the formula). Unlike the
+    wait, this count is not switched off by ``TEACHRASTER_CHECK_TRIES`` and never starts
+    again: a student who saw the full words once has seen them."""
     with _LOCK:
-        _HINTED[name] = _HINTED.get(name, 0) + 1
-        return _HINTED[name] == 1
+        seen = _HINTED.setdefault(name, set())
+        seen.add(answer)
+        return len(seen) < HINTED_ANSWERS
 
 
 def forget_hints(name: str | None = None) -> None:
