@@ -405,8 +405,15 @@ def test_student_version_holds_no_answer_and_the_text_no_formula(path):
         assert line not in markdown, line
 
 
-def test_a_slow_function_spends_the_budget_and_no_more():
+def test_a_slow_function_spends_the_budget_and_no_more(monkeypatch):
     import time
+
+    from teachraster.exercises import running
+
+    # about the CPU budget alone: the wall-clock limits (for a machine too busy to compute)
+    # set far out; a loaded machine passed a case's 0.3 s "it waits" limit first
+    monkeypatch.setattr(running, "WALL_FACTOR", 1000.0)
+    monkeypatch.setattr(running, "WAIT_FACTOR", 1000.0)
 
     def slow(z, bits):
         end = time.thread_time() + 0.05
