@@ -720,3 +720,18 @@ def test_end_point_labels_keep_clear_of_the_tie_marks():
     assert [lx, ly] != [109, 91]
     bx, by, bw, bh = mark
     assert lx + 60 < bx or bx + bw < lx or ly < by or by + bh < ly - 15
+
+
+def test_readout_in_front_of_the_near_plane_says_clipped():
+    # review r47 05b: near dragged from 0.1 to 2.5 left the readout at z = 0.1 with a negative
+    # float32 depth; a fragment in front of the near plane is clipped and stores nothing
+    clipped, at_near, beyond = call_js(DEPTH, [("depthTable", [0.1, 2.5, 1000.0]),
+                                               ("depthTable", [2.5, 2.5, 1000.0]),
+                                               ("depthTable", [58.5, 2.5, 1000.0])])  # fmt: skip
+    assert "in front of the near plane" in clipped and "clipped" in clipped
+    assert "<table>" not in clipped and "−" not in clipped and "-" not in clipped
+    for table in (at_near, beyond):
+        assert "<table>" in table and "clipped" not in table
+        cells = [c.split("<")[0] for c in table.split("<td>")[1:]]
+        values = [float(c.split()[0].replace(",", "")) for c in cells if c[:1].isdigit()]
+        assert len(values) == 12 and min(values) >= 0, table  # value, step, count x 4

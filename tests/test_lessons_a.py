@@ -607,7 +607,14 @@ def test_05b_try_it_one_unit_of_bias_loses_where_the_histogram_says_in_the_float
 
     ns = lesson("05b_depth_precision")
     tryit = _cells("05b_depth_precision", "markdown")[-1]
-    assert "the steep ones" not in tryit and "float32 model" in tryit and "histogram" in tryit
+    assert "the steep ones" not in tryit and "float32 model" in tryit
+    # review r47 05b-4: the two-units question left the Try-it for a held Predict after the
+    # float32 model; its answer is the count, near the histogram's entries >= 2
+    code = _cells("05b_depth_precision", "code")
+    ask = next(i for i, c in enumerate(code) if "q_bias = Predict(" in c)
+    assert "histogram" in code[ask] and code[ask + 1].startswith("q_bias.hold()")
+    assert ns.lost_2 <= ns.behind_2 + 0.5 * ns.behind_2 + 5 and ns.lost_2 < ns.lost_1 / 2
+    assert ns.lost_1 == len(ns.rows_d) - ns.gpu_shown["1 unit"]
     # the float32 model's functions, from the lesson's own cell (functions are not kept in ns)
     model = next(c for c in _cells("05b_depth_precision", "code") if "def decal_nearer" in c)
     scope = {**vars(ns), "np": np, "tr": tr, "to_window": to_window}
@@ -1090,17 +1097,38 @@ def test_guard_band_exact_range_and_far_floor_words():
 
 @pytest.mark.notebook
 def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
-    """Review r38 05a: the sticks pass right through each other (each crossing reads at a
-    glance), a question on one ring comes before the order, and the z-buffer's memory is put
+    """Review r38 05a: the sticks cross at mid-length (each crossing reads at a glance), a
+    question on one ring comes before the order, and the z-buffer's memory is put
     in numbers (7.9 MiB at 1920 x 1080, 4 bytes a pixel; 949 MiB/s for one layer at 60 Hz)."""
     ns = lesson("05a_zbuffer")
     # each crossing's overlap is a real patch, not a sliver at the sticks' ends
     assert min(ns.wrong_by_order["cyclic_overlap"].values()) >= 60
-    assert (ns.left_top, ns.left_under) in ns.crossings
-    assert any("answer=left_top" in c for c in _cells("05a_zbuffer", "code"))
+    # review r47 05a-1: the first question is a prediction (drawn red, green, blue without a
+    # depth test, which ring is wrong), not a reading of the picture; one ring, that order's
+    # wrong pixels
+    assert len(ns.rgb_wrong) == 1 and ns.rgb_wrong[0] in ns.pair_name
+    top, under = ns.crossings[ns.pair_name.index(ns.rgb_wrong[0])]
+    assert (top, under) == ("red", "blue")  # red over blue in the picture, blue drawn last
+    assert ns.rgb_wrong_px == ns.wrong_by_order["cyclic_overlap"][ns.rgb_order] > 0
+    code = _cells("05a_zbuffer", "code")
+    assert any("answer=rgb_wrong[0]" in c for c in code)
+    assert any("names[k] for k in order" in c for c in code)  # r47 05a-2: orders as colours
     assert round(1920 * 1080 * 4 / ns.MiB, 1) == 7.9 and round(ns.layer_traffic) == 949
+    # review r47 05a-4: the bandwidth claim rests on printed shares: one 1080p layer is small
+    # against either GPU, a 4K 4 x MSAA layer a large share of an integrated GPU's
+    small, large = ns.layer_share["integrated, DDR5-5600"]
+    assert small < 0.02 and 0.15 < large < 0.2 and large == 16 * small
+    assert max(ns.layer_share["discrete, RTX 4090"]) < 0.02
     text = "\n".join(_cells("05a_zbuffer", "markdown"))
     assert "labels of the question's picture" not in text
+    # review r47 05a-3: the sticks overlap on the screen, they do not pass through each other
+    assert "passing right through" not in text and "intersect in\n3-D" in text
+    assert "is why GPUs compress depth" not in text
+    # review r47 05a-5: the clipping section opens with why a z-buffer needs the near plane
+    clipping = next(t for t in _cells("05a_zbuffer", "markdown") if t.startswith("## 4."))
+    assert clipping.split("\n\n")[1].startswith("Why a z-buffer needs a near plane")
+    # review r47 05a-6: no internal review numbers in what students read
+    assert not any("review r" in c for c in _cells("05a_zbuffer", "code"))
     assert "GL_ALWAYS" in text and "glDisable(GL_DEPTH_TEST)" in text
 
 
@@ -1120,6 +1148,11 @@ def test_05b_colours_by_attribute_reverse_question_and_where_the_values_lie():
     assert max(rev[:3]) / min(rev[:3]) < 1.1 and rev[3] > rev[2]  # even, then the tiny floats
     code = "\n".join(_cells("05b_depth_precision", "code"))
     assert "DepthValuesExplorer(near=n_, far=f_)" in code and "<b>float32</b>" in code
+    # review r47 05b: the introduction does not call reverse-Z a remedy before q_reverse asks
+    # whether it helps; the decal pictures carry the z labels; no internal review numbers
+    intro = _cells("05b_depth_precision", "markdown")[0]
+    assert "remed" not in intro and "reverse-Z" in intro
+    assert code.count("label_depths(ax)") == 4 and "review r" not in code  # def + 3 pictures
     assert "frames[fmt].triangle_id < 12" not in code and "clip[~is_blue]" in code
 
 

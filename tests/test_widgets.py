@@ -1365,3 +1365,15 @@ def test_depth_explorer_keeps_every_near_end_on_its_axes():
             # reverse-Z float32 plunges at the far plane itself (denormals): the text says so
             assert w.resolution[w.z < w.far / 2].min() >= bottom, (fmt, reverse)
     w.close()
+
+
+def test_depth_explorer_legend_names_the_first_fight_line():
+    """Review r47 05b-7: the dotted line where the grid first finds a fight had no legend
+    entry; it is named last, so the "now" entry stays the second."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    w = DepthPrecisionExplorer("unorm16", near=0.1, far=1000.0, backend="image")
+    texts = [t.get_text() for t in w.ax.get_legend().get_texts()]
+    assert texts[-1] == "first fight found" and texts[1].startswith("now")
+    assert np.isfinite(w.marker.get_xdata()).all()  # unorm16 fights: the line is drawn
+    w.close()

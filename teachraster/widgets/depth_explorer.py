@@ -117,7 +117,10 @@ class DepthPrecisionExplorer:
                                       label="now")  # fmt: skip
             ax.axhline(self.delta, color=COLORS["outside"], ls="--", lw=2,
                        label=f"gap δ = {self.delta:g}")  # fmt: skip
-            self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=1.5, ls=":")
+            # labelled: the caption alone explained it (review r47 05b-7); last in the legend,
+            # so the "now" entry stays the second (_now_text)
+            self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=1.5, ls=":",
+                                     label="first fight found")  # fmt: skip
             ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-12, 1e3),
                    xlim=(0.01, self.far))  # fmt: skip
             ax.grid(True, which="major", alpha=0.3)

@@ -253,6 +253,8 @@ function nearInput(canvas, v) {
       const z = Math.min(Math.max(zOf(p[0]), zmin), far / 4);
       state.near = Number(z.toPrecision(3));
       if (state.z0 < state.near) state.z0 = state.near;
+      // the readout follows the pointer, which now drags the plane: keep it on the plane
+      if (ui.hover !== null) ui.hover = Math.max(ui.hover, state.near);
       paint.request(e);
     },
     onRelease() {
@@ -385,8 +387,14 @@ function drawLens(ctx, g, W, z0, width, n, far) {
   ctx.textAlign = "left";
 }
 
-// per buffer: the value stored for z, one step there (in z) and the values beyond z
+// per buffer: the value stored for z, one step there (in z) and the values beyond z; nothing
+// in front of the near plane, where a fragment is clipped and no buffer stores a depth (the
+// mappings would give negative float depths there, and unorm would clamp them to 0)
 export function depthTable(z, n, f) {
+  if (z < n) {
+    return `At z = ${fmt(z, 6)} (near ${fmt(n, 3)}, far ${fmt(f, 4)}): in front of the ` +
+      "near plane. A fragment there is clipped: no depth buffer stores a value for it.";
+  }
   const rows = FORMATS.map(([fmtName, name]) => {
     const nb = neighbours(z, n, f, fmtName);
     const step = nb.zFarther - nb.z;
