@@ -1448,3 +1448,23 @@ def test_10_tile_explorer_driven_by_the_test():
         assert explorer.blocks.counters.pixel_tests > 0
     finally:
         explorer.close()
+
+
+def test_11_standards_table_and_real_z_fighting():
+    """Issue 29 / review r50 D8, D9: lesson 11 has a table of what GL, Direct3D, Vulkan,
+    llvmpipe and teachraster offer for pixel history, debug views and occlusion queries; it
+    says that a tool's pixel history lists events (draw calls), not triangles; §2 says where
+    real z-fighting comes from and points to lesson 05b's depth bias (glPolygonOffset); no
+    cell calls llvmpipe a GPU (r50 D2)."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    table = next(t for t in text if "| pixel history |" in t)
+    rows = [line.split("|")[1].strip() for line in table.splitlines() if line.startswith("| ")]
+    for name in ("OpenGL", "Direct3D", "Vulkan", "llvmpipe", "teachraster"):
+        assert any(r.startswith(name) for r in rows), name
+    assert "**events** (draw" in table and "GL_SAMPLES_PASSED" in table
+    assert "VK_QUERY_TYPE_OCCLUSION" in table and "D3D12_QUERY_TYPE_OCCLUSION" in table
+    assert any("glPolygonOffset" in t and "05b_depth_precision.ipynb" in t for t in text)
+    assert not any("real GPU" in t for t in text)
