@@ -947,3 +947,74 @@ def test_history_depth_ticks_stay_within_the_depths_possible():
     assert _tick_range(-0.5, 1.4, -0.2, 0.7) == (-0.5, 1.0)
     assert _tick_range(0.2, 1.9, 0.3, 1.2) == (0.2, 1.9)
     assert depth_ticks(*_tick_range(0.295, 1.72, 0.4, 0.699992))[0] == [0.4, 0.6, 0.8, 1.0]
+
+
+def test_history_strip_keeps_msaa_labels_apart_and_no_depth_axis_without_fragments():
+    """Review r50 D3/D4: at 4 samples on ``fan`` the strip's twelve labels "s0".."s3" ran
+    together ("s3s0s1s2"); now each record shows its sample's digit, the triangle once
+    below its samples, and no two labels touch in a strip as narrow as the inspector's. A
+    pixel without a fragment drew a 0-1 depth axis; now no depth ticks, and a note."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging.frame_history import draw_history
+
+    fan4 = tr.render(tr.get_scene("fan"), None, 64, 48, trace=True, samples=4)
+    h = fan4.history(24, 32)
+    assert len(h.records) >= 12
+    fig, ax = plt.subplots(figsize=(4.4, 3.2), dpi=100)  # ~300-px Axes, as in the inspector
+    try:
+        draw_history(ax, h)
+        fig.canvas.draw()
+        r = fig.canvas.get_renderer()
+        for minor in (False, True):
+            labels = [t for t in ax.get_xticklabels(minor=minor) if t.get_text()]
+            boxes = sorted((t.get_window_extent(r) for t in labels), key=lambda b: b.x0)
+            assert all(a.x1 + 1 < b.x0 for a, b in zip(boxes, boxes[1:])), minor
+        samples = [t.get_text() for t in ax.get_xticklabels()]
+        assert samples == [str(x.sample) for x in h.records]
+        tris = [t.get_text() for t in ax.get_xticklabels(minor=True)]
+        assert tris == [str(t) for t in dict.fromkeys(x.triangle for x in h.records)]
+    finally:
+        plt.close(fig)
+    plain = tr.render(tr.get_scene("fan"), None, 64, 48, trace=True)
+    empty = next(plain.history(r_, c_) for r_, c_ in np.ndindex(48, 64)
+                 if plain.history(r_, c_).records
+                 and all(x.outcome in ("culled", "not_covered") for x in plain.history(r_, c_)))  # fmt: skip
+    for hist, note in ((empty, "no fragment reached this pixel"),
+                       (plain.history(0, 0), "no triangle reaches this pixel")):  # fmt: skip
+        fig, ax = plt.subplots()
+        try:
+            draw_history(ax, hist)
+            assert not len(ax.get_yticks()) and not ax.get_ylabel()
+            assert note in [t.get_text() for t in ax.texts]
+        finally:
+            plt.close(fig)
+
+
+def test_frame_inspector_strip_at_4_samples_and_on_an_empty_pixel():
+    """Review r50 D3/D4 in the widget itself (kernel side): ``fan`` at 4 samples, pixel
+    (24, 32): sample digits that do not touch and the triangles once each; at the corner
+    no triangle reaches, no depth ticks."""
+    pytest.importorskip("ipywidgets")
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("fan", 64, 48, backend="image")
+    try:
+        w.samples.value = 4
+        w.row.value, w.col.value = 24, 32
+        w.hist_fig.canvas.draw()
+        r = w.hist_fig.canvas.get_renderer()
+        labels = [t for t in w.hist_ax.get_xticklabels() if t.get_text()]
+        assert len(labels) == len(w.history.records) >= 12
+        boxes = [t.get_window_extent(r) for t in labels]
+        assert all(a.x1 + 1 < b.x0 for a, b in zip(boxes, boxes[1:]))
+        assert [t.get_text() for t in w.hist_ax.get_xticklabels(minor=True)] == [
+            str(t) for t in dict.fromkeys(x.triangle for x in w.history.records)
+        ]
+        w.row.value, w.col.value = 47, 63
+        assert not w.history.records and not len(w.hist_ax.get_yticks())
+    finally:
+        w.close()

@@ -332,7 +332,8 @@ def test_01_step_figure_shows_the_row_5_tie():
 
 
 STANDARDS = {"02_half_planes": "a centre exactly on an edge", "05a_zbuffer": "guard band",
-             "05b_depth_precision": "bits stored"}  # fmt: skip
+             "05b_depth_precision": "bits stored",
+             "11_debugging_a_frame": "counting samples that pass"}  # fmt: skip
 
 
 @pytest.mark.parametrize("name", sorted(STANDARDS))

@@ -1004,9 +1004,20 @@ def test_11_question_4_counts_tiles_as_lesson_10_names_them():
     # r44 D14: the answer names the face (one z shared by the rejected triangles' corners),
     # the far one: its Hi-Z-rejected fragments are farther than the buffer's depth
     assert len(ns.hz_face_z) == 1 and ns.hz_rec.depth > ns.hz_rec.depth_before
+    # r50 D1: the cube shows three faces, not one "front face": the answer names the visible
+    # and hidden triangles and counts what stopped each hidden one; Hi-Z rejects only triangles
+    # drawn after every visible one, and "before empty" holds only for the triangles in `first`
+    assert len(ns.seen) == 6 and len(ns.hidden) == 6 and min(ns.hz_tris) > max(ns.seen)
+    assert sum(s["hi_z"] for s in ns.stopped.values()) == int(ns.rejected.sum())
+    assert ns.first and all(set(ns.stopped[t]) and ns.stopped[t]["passed"] and
+                            not ns.stopped[t]["failed_depth"] + ns.stopped[t]["hi_z"]
+                            for t in ns.first)  # fmt: skip
+    assert {ns.first[0], ns.first[0] + 1} <= set(ns.first)  # a whole face (two triangles)
+    assert any(s["failed_depth"] and not s["hi_z"] for s in ns.stopped.values())
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
     answer = next("".join(c["source"]) for c in cells if "Question 4:" in "".join(c["source"]))
     assert "per tile" in answer and "whole tile" in answer
+    assert "front face" not in answer and "front one" not in answer
     assert "per block" not in answer and "8x8 blocks" not in answer
 
 
@@ -1437,3 +1448,23 @@ def test_10_tile_explorer_driven_by_the_test():
         assert explorer.blocks.counters.pixel_tests > 0
     finally:
         explorer.close()
+
+
+def test_11_standards_table_and_real_z_fighting():
+    """Issue 29 / review r50 D8, D9: lesson 11 has a table of what GL, Direct3D, Vulkan,
+    llvmpipe and teachraster offer for pixel history, debug views and occlusion queries; it
+    says that a tool's pixel history lists events (draw calls), not triangles; §2 says where
+    real z-fighting comes from and points to lesson 05b's depth bias (glPolygonOffset); no
+    cell calls llvmpipe a GPU (r50 D2)."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    table = next(t for t in text if "| pixel history |" in t)
+    rows = [line.split("|")[1].strip() for line in table.splitlines() if line.startswith("| ")]
+    for name in ("OpenGL", "Direct3D", "Vulkan", "llvmpipe", "teachraster"):
+        assert any(r.startswith(name) for r in rows), name
+    assert "**events** (draw" in table and "GL_SAMPLES_PASSED" in table
+    assert "VK_QUERY_TYPE_OCCLUSION" in table and "D3D12_QUERY_TYPE_OCCLUSION" in table
+    assert any("glPolygonOffset" in t and "05b_depth_precision.ipynb" in t for t in text)
+    assert not any("real GPU" in t for t in text)

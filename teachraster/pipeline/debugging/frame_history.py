@@ -799,16 +799,18 @@ def draw_history(ax, h: PixelHistory):
     if any(np.isfinite(line.get_ydata()).any() for line in buffer):  # (writes off: none)
         shown += [(buffer[0], "buffer before"), (buffer[1], "buffer after")]  # ○ and ●
     ax.set_yticks(*depth_ticks(*_tick_range(bottom, top, lo, hi)))
-    ax.set_xticks(x, _record_labels(h), fontsize="small")
+    _label_records(ax, h, x)
     ax.set_xlim(-0.6, max(n, 1) - 0.4)
-    ax.set_xlabel("triangle and sample" if h.n_samples > 1 else "triangle, in drawing order")
     ax.set_ylabel("depth (smaller ↓)")
     ax.set_title(f"pixel (row {h.row}, col {h.col})", fontsize="small")
     colours = _draw_colours(ax, h, x, (bottom, top))
     artists += colours
-    if not n:  # an empty strip with a depth axis would look like a history that lost its rows
-        artists.append(ax.text(0.5, 0.5, "no triangle reaches this pixel", ha="center",
-                               va="center", transform=ax.transAxes, fontsize="small"))  # fmt: skip
+    if not every:  # no depth at all: a 0-1 depth axis would claim a range there is not (r50 D4)
+        ax.set_yticks([])
+        ax.set_ylabel("")
+        note = "no triangle reaches this pixel" if not n else "no fragment reached this pixel"
+        artists.append(ax.text(0.5, 0.5, note, ha="center", va="center",
+                               transform=ax.transAxes, fontsize="small"))  # fmt: skip
     if n:  # in the depth part of the Axes (the colours, if any, are above it)
         depth_part = (top - bottom) / (ax.get_ylim()[1] - bottom)
         legend = _fitted_legend(ax, shown, depth_part)
@@ -880,12 +882,36 @@ def _make_room(ax, legend, highest: float, bottom: float, top: float) -> float:
 
 
 def _record_labels(h: PixelHistory) -> list[str]:
-    """The records' tick labels: the triangle; under MSAA the sample above it, the triangle
-    only at its first sample (twelve records stay legible)."""
+    """The records' tick labels: the triangle; under MSAA the sample's number alone (one
+    digit: twelve records at 4x stay apart; "s3s0s1" ran together, review r50 D3)."""
     if h.n_samples == 1:
         return [str(r.triangle) for r in h.records]
-    first = [i == 0 or r.triangle != h.records[i - 1].triangle for i, r in enumerate(h.records)]
-    return [f"s{r.sample}\n{r.triangle if f else ''}" for r, f in zip(h.records, first)]
+    return [str(r.sample) for r in h.records]
+
+
+def _triangle_groups(h: PixelHistory) -> list[tuple[float, int]]:
+    """Under MSAA, (centre x, triangle) of each run of consecutive records of one triangle:
+    where :func:`_label_records` writes the triangle once, under its samples."""
+    groups, start = [], 0
+    for i in range(1, len(h.records) + 1):
+        if i == len(h.records) or h.records[i].triangle != h.records[start].triangle:
+            groups.append(((start + i - 1) / 2, h.records[start].triangle))
+            start = i
+    return groups
+
+
+def _label_records(ax, h: PixelHistory, x: np.ndarray) -> None:
+    """The x axis of :func:`draw_history`: the triangle under each record; under MSAA the
+    sample number under each record and the triangle once, centred below its samples (minor
+    ticks, without tick marks)."""
+    ax.set_xticks(x, _record_labels(h), fontsize="small")
+    if h.n_samples == 1:
+        ax.set_xlabel("triangle, in drawing order")
+        return
+    centres, tris = zip(*_triangle_groups(h)) if h.records else ((), ())
+    ax.set_xticks(list(centres), [str(t) for t in tris], minor=True, fontsize="small")
+    ax.tick_params(axis="x", which="minor", length=0, pad=16)
+    ax.set_xlabel("triangle (its samples above it)")
 
 
 def swatch_colours(h: PixelHistory, key: str) -> np.ndarray:
