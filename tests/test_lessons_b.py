@@ -60,6 +60,8 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     answer = round(n16["error"])
     assert abs(estimate - answer) <= ns.tol_q
     assert abs((3 - 2 * np.sqrt(2)) * ns.change_q - answer) > ns.tol_q
+    # review r53 06-5: "about a quarter" of the change is not right either
+    assert abs(0.25 * ns.change_q - answer) > ns.tol_q and ns.tol_q <= 8
     source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
     asked = source[
         source.index("q_quake = Predict(") : source.index(
@@ -140,14 +142,20 @@ def test_06_edge_bits_and_depth_claims():
     assert rows[("depth", "window float32")]["slanted_wrong"] == 0  # "both 0 slanted"
     assert rows[("depth", "window unorm24")]["slanted_wrong"] == 0
     assert ns.spacing32 == pytest.approx(ns.step24, rel=1e-6)
+    # review r53 06-1: unorm24 occupies 32 bits (stencil or padding in the spare 8), as the
+    # lesson's table of formats says: it ties window float32 on both axes, one point
     stored_front = [r["variant"] for r in bench.pareto_front(depth_rows, x="stored_bits")]
-    assert "window unorm24" in stored_front and "window float32" not in stored_front
+    assert stored_front == ["window unorm16", "window float32", "window float64"]
     assert {r["variant"].split()[1]: r["stored_bits"] for r in depth_rows} == {
         "float64": 64,
         "float32": 32,
-        "unorm24": 24,
+        "unorm24": 32,
         "unorm16": 16,
     }
+    tie = [(r["stored_bits"], r["error"]) for r in ns.tie.values()]
+    assert tie[0] == tie[1] and tie[0][0] == 32
+    source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
+    assert "8 bits cheaper" not in source and "both occupy the same 32 bits" in source
     # the two naive tie rules fail on the same shared-edge centres, none on the outline
     assert ns.cracks["E >= 0"]["double_hits"] == ns.cracks["E > 0"]["gaps"] > 0
     # "float32 keeps 24 bits, fewer than a position at 1e6 px on the 1/256 px grid needs"
@@ -380,6 +388,13 @@ def test_06_review_r22_drift_setup_holds_and_wording():
                     "def walk(block, x):", "N = 16, worst pixel"):  # fmt: skip
         cell = next(c for c in cells if printed in c)
         assert cell.startswith("q_quake.hold()"), printed
+    # review r53 06-8: what says or draws that linear depth moves the crossing waits for q_depth
+    for shown in ("PAIR_TEXT = (", 'charts = [("depth"'):
+        assert next(c for c in cells if shown in c).startswith("q_depth.hold()"), shown
+    assert "disagree" not in next(c for c in cells if c.startswith("The next cell draws one"))
+    # review r53 06-2/06-3: one chart in §6; the walk only where the front has several points
+    assert "interpolation's chart is the slider's widget" in md
+    assert list(ns.fronts) == ["interpolation"] and len(ns.fronts["interpolation"]) > 1
     assert "It is not exact by construction" not in md and "known in advance" in md
     assert "Quake used $N = 16$" not in md and "portable C version $N = 8$" in md
     assert "`python ../benchmarks/bench_lesson06_signs.py`" in md

@@ -54,10 +54,11 @@ CYCLES_1990S = {"divides": 30.0, "multiplies": 3.0, "additions": 1.0}
 #: Bits of precision the arithmetic keeps: the significand of a float, a whole int64.
 BITS_KEPT = {"fixed8": 63, "fixed4": 63, "float64": 53, "float32": 24, "unsnapped": 53}
 DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
-#: Bits each depth format stores per sample: a float's sign, exponent and significand, or the
-#: unorm's integer. (GPUs usually pack unorm24 with an 8-bit stencil into a 32-bit word, D24S8;
-#: no GPU offers float64 depth, the study's exact reference.)
-DEPTH_STORED_BITS = {"float64": 64, "float32": 32, "unorm24": 24, "unorm16": 16}
+#: Bits each depth format occupies per sample: a float's sign, exponent and significand, or the
+#: unorm's integer, padded to the word a GPU stores it in. unorm24 takes 32 bits, its spare 8
+#: holding stencil or padding (D24_UNORM_S8_UINT, X8_D24_UNORM_PACK32): no API stores 24 bits
+#: per sample (review r53 06-1). No GPU offers float64 depth, the study's exact reference.
+DEPTH_STORED_BITS = {"float64": 64, "float32": 32, "unorm24": 32, "unorm16": 16}
 #: Attributes the interpolation group prices per pixel: the texture coordinates u and v, the
 #: two whose error the study measures (pricing one, u, while measuring both made
 #: perspective-correct look 35x affine instead of about 20x: review r48 06-D1).
