@@ -247,11 +247,14 @@ def depth_resolution(z, near: float, far: float, fmt: str, mapping: str = "persp
     near, far = _planes(near, far, positive=positive)
     z = _distances("z", z, positive=positive)
     check_choice("fmt (the depth_format)", fmt, DEPTH_FORMATS)
-    if mapping in ("perspective", "reversed"):
-        slope = near / ((1.0 - near / far) * z * z)  # = f n / ((f - n) z**2), as window_depth
-    else:
-        slope = np.full_like(z, 1.0 / (far - near))
-    return _step(map_depth(z, near, far), fmt, nearer=True) / slope
+    # past z ~ 1e154, z**2 overflows: the slope's limit is 0 and the resolution's +inf (the
+    # fuzzer drew 1.4e154), returned without a raw numpy warning
+    with np.errstate(over="ignore", divide="ignore"):
+        if mapping in ("perspective", "reversed"):
+            slope = near / ((1.0 - near / far) * z * z)  # = f n / ((f - n) z**2), as window_depth
+        else:
+            slope = np.full_like(z, 1.0 / (far - near))
+        return _step(map_depth(z, near, far), fmt, nearer=True) / slope
 
 
 def fights(z_a, z_b, near: float, far: float, fmt: str, mapping: str = "perspective"):
