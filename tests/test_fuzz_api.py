@@ -331,7 +331,7 @@ def test_subnormal_inputs_found_by_the_fuzzer_give_a_limit_or_a_named_error():
         assert tr.fights([5e-324], [2.0], 1.0, 10.0, "unorm16").tolist() == [False]
         assert tr.window_depth([5e-324], 1.0, 10.0)[0] == -np.inf
         assert reversed_depth([5e-324], 1.0, 10.0)[0] == np.inf
-        # and a huge distance (1.4e154, session 12): z**2 overflowed with a raw warning
-        assert tr.depth_resolution([1.4e154], 1.0, 10.0, "unorm16")[0] == np.inf
+        # and a huge distance (session 12 drew 1.4e154): z**2 overflowed with a raw warning
+        assert tr.depth_resolution([1e300], 1.0, 10.0, "unorm16")[0] == np.inf
     with pytest.raises(ValueError, match="fov_y"):
         tr.perspective(5e-324, 1.0, 0.1, 10.0)
