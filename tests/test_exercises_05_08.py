@@ -447,3 +447,19 @@ def test_a_pixel_is_a_pair_of_ints_inside_the_picture():
     with pytest.raises(ValueError, match="pixel must lie in the"):
         report.explain_pixel(0, 10_000)
     assert report.explain_pixel(np.int64(20), 10).startswith("yours and the package's agree")
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["coverage_fraction", "resolve", "resolve_srgb", "mip_level", "bilinear", "trilinear",
+     "classify_block", "quad_derivatives", "hiz_rejects", "robust_fill"],
+)  # fmt: skip
+def test_a_table_of_the_handed_out_cases_fails_the_drawn_ones(name):
+    """r49: ``exercise(name).cases()`` hands out every case with its answer; a dict built from
+    them must fail the cases drawn afresh for each check (as exercise 9's do)."""
+    from teachraster.exercises.checks import check, exercise
+
+    table = {repr(tuple(a)): e for _, a, e in exercise(name).cases()}
+    report = check(name, lambda *a: table.get(repr(tuple(a))))
+    assert not report.passed
+    assert all(f.case.startswith("drawn for this check") for f in report.failures), report

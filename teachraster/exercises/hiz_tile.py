@@ -17,16 +17,13 @@ largest stored depth.
 
 from __future__ import annotations
 
-import copy
-from functools import cache
-
 import numpy as np
 
 from ..core.edges import setup_edges
 from ..core.snapping import SUBPIXEL_BITS
 from ..pipeline.rasterization.batched_fill import Fragments, weight_source
 from .answers import as_bool
-from .cases import SEED
+from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake, variant_mistakes
 from .scalars import num
 
@@ -67,15 +64,8 @@ def expected_reject(xyz, row0, col0, size, buffer) -> bool:
     return bool(nearest >= np.max(buffer))
 
 
-def hiz_cases() -> list[tuple[str, tuple, bool]]:
-    """(label, (xyz, row0, col0, size, buffer), rejected): named tiles and seeded random ones
-    (built once, then copied)."""
-    return copy.deepcopy(_hiz_cases())
-
-
-@cache
-def _hiz_cases() -> list[tuple[str, tuple, bool]]:
-    rng = np.random.default_rng(SEED + 60)
+def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
+    """(label, (xyz, row0, col0, size, buffer), rejected): named tiles and random ones."""
     slope = np.array([[0.0, 0.0, 0.30], [40.0, 0.0, 0.70], [0.0, 40.0, 0.50]])
     flat = np.array([[0.0, 0.0, 0.5], [40.0, 0.0, 0.5], [0.0, 40.0, 0.5]])
     full = np.full((TILE, TILE), 0.45)
@@ -105,10 +95,16 @@ def _hiz_cases() -> list[tuple[str, tuple, bool]]:
         xy = centre + reach[:, None] * np.column_stack([np.cos(turn), np.sin(turn)])
         xyz = np.column_stack([np.round(xy * 256) / 256, rng.uniform(0.1, 0.9, 3)])
         near = plane_at(xyz, *_corners(row0, col0, TILE)).min()
-        buffer = near + rng.uniform(-0.05, 0.05, (TILE, TILE)) * (k % 3 != 0)
+        # exact ties only in the fixed cases (checked once): a drawn tie would let float64's
+        # rounding of a right plane decide, and the graded run must not flake
+        tie = k % 3 == 0 and word == "random"
+        buffer = near + rng.uniform(-0.05, 0.05, (TILE, TILE)) * (not tie)
         buffer[rng.integers(0, TILE), rng.integers(0, TILE)] += rng.choice([-0.01, 0.0, 0.01])
-        named.append((f"random {k + 1}", (xyz, row0, col0, TILE, buffer)))
+        named.append((f"{word} {k + 1}", (xyz, row0, col0, TILE, buffer)))
     return [(label, args, expected_reject(*args)) for label, args in named]
+
+
+hiz_cases = fixed_and_drawn(_hiz_cases, SEED + 60)  # r49: some drawn per check
 
 
 def _with(buffer: np.ndarray, at, value) -> np.ndarray:

@@ -12,8 +12,6 @@ each coverage of 4 samples.
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
@@ -49,7 +47,6 @@ def expected_resolve_srgb(colours, ids, background) -> np.ndarray:
     return _encode(linear)
 
 
-@cache  # the same cases on every check: built once
 def resolve_srgb_cases():
     """Exercise 6.2's cases read as sRGB-encoded, then black on white at 1 to 3 of 4 samples
     (where averaging the encoded numbers is farthest off)."""
