@@ -187,6 +187,8 @@ def test_a_wrong_function_the_scene_cannot_see_fails_where_it_shows(scene, chang
     assert not report.passed, str(report)
     last = report.failures[-1].explanation
     assert where in last and words in last, str(report)
+    if report.n_wrong == 0:  # r49: the headline must not read like a pass
+        assert ": fails, though all" in str(report).splitlines()[0], str(report)
 
 
 @pytest.mark.parametrize("scene, changed, stage, words", WRONG,
@@ -435,3 +437,15 @@ def test_the_glass_in_drawing_order_marks_what_the_a_buffer_repairs():
     report.compare(axes)
     assert f"blue: {len(repaired)}" in axes[2].get_title()
     plt.close(fig)
+
+
+def test_the_notebook_explains_a_pixel_that_differs_not_a_fixed_one():
+    """r49: cell 12's example pointed at a sky pixel, which matched for every floor mistake."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
+    nb = json.loads(path.read_text())
+    code = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"]
+    calls = [c for c in code if "report.explain_pixel(" in c]
+    assert calls and all("differing_pixels()" in c for c in calls), calls

@@ -370,7 +370,10 @@ class CapstoneReport(Report):
                     f"counted: {self.package}")  # fmt: skip
         if self.mine is None:
             return f"{head}: no frame: {self.failures[0].explanation}"
-        lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]
+        if self.n_wrong == 0:  # r49: failed through another scene's or exercise's cases
+            lines = [f"{head}: fails, though all {self.n_cases} pixels match the package's"]
+        else:
+            lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]
         lines += [f"- {f.case}, {f.kind}: {f.explanation}" for f in self.shown()]
         return "\n".join(lines)
 
