@@ -449,3 +449,26 @@ def test_the_notebook_explains_a_pixel_that_differs_not_a_fixed_one():
     code = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"]
     calls = [c for c in code if "report.explain_pixel(" in c]
     assert calls and all("differing_pixels()" in c for c in calls), calls
+
+
+def test_a_replay_of_the_package_answers_fails_its_own_drawn_cases():
+    """r49: a spy recorded tr.barycentric's answers on a first run; replayed, they passed the
+    scene. The exercise's own check, with cases drawn afresh, must refuse them."""
+    import teachraster as tr
+
+    record = {}
+
+    def spy(xy, p):
+        answer = tr.barycentric(xy, p)
+        record[repr((np.asarray(xy).tolist(), np.asarray(p).tolist()))] = answer
+        return answer
+
+    ex.capstone("single_triangle", **_mine("single_triangle", barycentric=spy))
+
+    def replay(xy, p):
+        key = repr((np.asarray(xy).tolist(), np.asarray(p).tolist()))
+        return record.get(key, [1 / 3, 1 / 3, 1 / 3])
+
+    report = ex.capstone("single_triangle", **_mine("single_triangle", barycentric=replay))
+    assert report.n_wrong == 0 and not report.passed, str(report)
+    assert "barycentric exercise's own cases" in str(report), str(report)
