@@ -472,3 +472,14 @@ def test_a_replay_of_the_package_answers_fails_its_own_drawn_cases():
     report = ex.capstone("single_triangle", **_mine("single_triangle", barycentric=replay))
     assert report.n_wrong == 0 and not report.passed, str(report)
     assert "barycentric exercise's own cases" in str(report), str(report)
+
+
+def test_two_covers_mistakes_name_the_one_the_inside_pixel_shows():
+    """r49: no winding swap and E > 0 at a pixel strictly inside was blamed on the tie rule
+    alone; the winding mistake explains the pixel and must be named."""
+
+    def covers(xy, p):
+        return all(edge_function(xy[i], xy[(i + 1) % 3], p) > 0 for i in range(3))
+
+    first = ex.capstone("grid", **_mine("grid", covers=covers)).failures[0].explanation
+    assert "strictly inside" in first and "counter-clockwise" in first, first
