@@ -463,3 +463,28 @@ def test_a_table_of_the_handed_out_cases_fails_the_drawn_ones(name):
     report = check(name, lambda *a: table.get(repr(tuple(a))))
     assert not report.passed
     assert all(f.case.startswith("drawn for this check") for f in report.failures), report
+
+
+def test_resolve_names_triangle_0_taken_as_background():
+    """r49: ``ids > 0`` as covered (triangle 0 turned background) was refused, not named."""
+    from teachraster.exercises.checks import check
+
+    def resolve(colours, ids, background):
+        covered = (np.asarray(ids) > 0)[:, None]
+        return np.where(covered, np.asarray(colours, float), background).mean(axis=0)
+
+    report = check("resolve", resolve)
+    assert not report.passed and "triangle 0" in report.failures[0].explanation, str(report)
+
+
+def test_resolve_srgb_quotes_the_case_own_count_of_samples():
+    """r49: a "1 of 4" case's message quoted "black on white at 2 of 4 samples"."""
+    from teachraster.exercises.checks import check
+
+    def resolve_srgb(colours, ids, background):
+        covered = (np.asarray(ids) >= 0)[:, None]
+        return np.where(covered, np.asarray(colours, float), background).mean(axis=0)
+
+    first = check("resolve_srgb", resolve_srgb).failures[0]
+    assert first.case.startswith("black on white, 1 of 4"), first.case
+    assert "at 1 of 4 samples must show 0.75" in first.explanation, first.explanation

@@ -436,6 +436,11 @@ RESOLVE_MISTAKES = [
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
     Mistake("first sample", _resolve_words("that is sample 0 alone"),
             gives=lambda c, i, b: _with_background(c, i, b)[0]),
+    # r40/r49: ids <= 0 taken as uncovered (a test of ids > 0), so triangle 0 turned background
+    Mistake("triangle 0 as background", _resolve_words("you counted the samples of triangle 0 "
+            "as uncovered: ids number the triangles from 0, and only −1 marks an uncovered "
+            "sample (covered is ids ≥ 0, not ids > 0)"),
+            gives=lambda c, i, b: np.where((i > 0)[:, None], c, b).mean(axis=0)),
     Mistake("background only", _resolve_words("that is the background alone: the covered "
             "samples' colours count too"), gives=lambda c, i, b: np.asarray(b, dtype=float)),
 ]  # fmt: skip

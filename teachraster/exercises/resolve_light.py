@@ -25,7 +25,7 @@ from .antialiasing import (
     same_colour,
 )
 from .exercise import Exercise, Mistake, PackageAnswer
-from .scalars import vec
+from .scalars import num, vec
 
 
 def _decode(colours) -> np.ndarray:
@@ -98,11 +98,22 @@ def _background_raw(colours, ids, background):
     return _encode(mixed.mean(axis=0))
 
 
+def _encoded_average_words(args, expected, got) -> str:
+    """The encoded-average mistake, its example at the case's own count of samples (r49: a
+    "1 of 4" case quoted "2 of 4")."""
+    _, ids, _ = args
+    s, k = len(ids), int(_covered(ids).sum())
+    white = (s - k) / s  # the share of white's light where k of s samples are black
+    return (
+        f": you averaged the sRGB-encoded numbers, as 6.2's resolve does: encoded numbers "
+        f"are not light (black on white at {k} of {s} samples must show {num(white)} of "
+        f"white's light, {num(float(linear_to_srgb(white)))} encoded, not {num(white)}); "
+        "decode first, average in linear light, encode the mean"
+    )
+
+
 MISTAKES = [
-    Mistake("encoded average", ": you averaged the sRGB-encoded numbers, as 6.2's resolve does: "
-            "encoded numbers are not light (black on white at 2 of 4 samples must show half of "
-            "white's light, 0.735 encoded, not 0.5); decode first, average in linear light, "
-            "encode the mean",
+    Mistake("encoded average", _encoded_average_words,
             gives=lambda c, i, b: _mix(c, i, b, _same, _same)),
     Mistake("not encoded", ": that is the mean in linear light, not encoded again: the "
             "framebuffer holds sRGB-encoded numbers, so encode it (linear_to_srgb)",
