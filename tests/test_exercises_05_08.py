@@ -488,3 +488,15 @@ def test_resolve_srgb_quotes_the_case_own_count_of_samples():
     first = check("resolve_srgb", resolve_srgb).failures[0]
     assert first.case.startswith("black on white, 1 of 4"), first.case
     assert "at 1 of 4 samples must show 0.75" in first.explanation, first.explanation
+
+
+def test_hiz_says_a_safe_loose_bound_is_not_the_tightest():
+    """r49: the vertex-only bound is safe (it never rejects a visible fragment); the message
+    must say the tightest bound is asked, not call it unsafe."""
+    import student_variants as sv
+
+    from teachraster.exercises.checks import check
+
+    report = check("hiz_rejects", sv._hiz_with(vertex_only=True))
+    assert not report.passed
+    assert any("tightest" in f.explanation for f in report.failures), str(report)

@@ -144,10 +144,13 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
 
 MISTAKES = {
     "vertex": "you compared the triangle's nearest vertex: in this tile its depth plane is "
-    "farther than that vertex; evaluate the plane at the tile's extreme pixel centres",
+    "farther than that vertex; evaluate the plane at the tile's extreme pixel centres (the "
+    "vertex alone is a safe bound, but the tightest one is asked: it keeps blocks Hi-Z could "
+    "reject)",
     "no clamp": "you took the bare plane at the corners: where it runs nearer than the "
     "triangle's nearest vertex (a corner outside the triangle), no fragment can be that near; "
-    "the nearest depth is the larger of the two bounds",
+    "the nearest depth is the larger of the two bounds (either alone is safe, but the "
+    "tightest bound is asked: it keeps blocks Hi-Z could reject)",
     "outer corners": "you evaluated the plane at the tile's outer corners; fragments sit at "
     "pixel centres, the extreme ones ½ px inside",
     "tile min": "you compared with the nearest depth stored in the tile: a fragment is hidden "
