@@ -175,8 +175,10 @@ def draw_quad(ax, case, got):
         artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside
                                               else "white", edgecolor="#2b7bba", lw=1.5,
                                               hatch=None if inside else "//")))  # fmt: skip
-        artists.append(ax.text(x + 0.5, y + 0.5, f"{q[k]:.2g}", ha="center", va="center",
-                               fontsize="x-small", color="black"))  # fmt: skip
+        # staggered up and down, boxed: neighbours' labels ran together (r49: -0.0360.0049)
+        artists.append(ax.text(x + 0.5, y + (0.3 if dc == 0 else 0.7), f"{q[k]:.2g}",
+                               ha="center", va="center", fontsize="x-small", color="black",
+                               bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
     ax.set_xlim(c0 - 1.5, c0 + 3.5)
