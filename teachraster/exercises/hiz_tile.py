@@ -260,8 +260,32 @@ def draw_hiz(ax, case, got):
     ax.set_xlim(col0 - 2, col0 + size + 2)
     ax.set_ylim(row0 + size + 2, row0 - 2)
     ax.set_aspect("equal")
+    artists += _whole_triangle(ax, xyz, row0, col0, size)
     artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
     return artists
+
+
+def _whole_triangle(ax, xyz, row0, col0, size) -> list:
+    """An inset with the whole triangle, its vertices' depths and the tile (r49: a triangle
+    larger than the tile's close-up tinted all of it, and could not be seen)."""
+    from matplotlib.patches import Polygon, Rectangle
+
+    inset = ax.inset_axes([-0.62, 0.5, 0.45, 0.45])  # outside: no label hidden
+    inset.add_patch(Polygon(xyz[:, :2], closed=True, facecolor="#d7301f", alpha=0.25,
+                            edgecolor="#d7301f", linewidth=1))  # fmt: skip
+    inset.add_patch(Rectangle((col0, row0), size, size, fill=False, edgecolor="black", lw=1))
+    for x, y, z in xyz:
+        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
+                       color="#7f0000")  # fmt: skip
+    lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0)) - 3
+    hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0)) + 3
+    inset.set_xlim(lo[0], hi[0])
+    inset.set_ylim(hi[1], lo[1])
+    inset.set_aspect("equal")
+    inset.set_xticks([])
+    inset.set_yticks([])
+    inset.set_title("whole triangle", fontsize="x-small")
+    return [inset]
 
 
 HIZ_REJECTS = Exercise(
