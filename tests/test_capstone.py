@@ -483,3 +483,17 @@ def test_two_covers_mistakes_name_the_one_the_inside_pixel_shows():
 
     first = ex.capstone("grid", **_mine("grid", covers=covers)).failures[0].explanation
     assert "strictly inside" in first and "counter-clockwise" in first, first
+
+
+def test_glass_sorted_says_when_a_buffer_never_called_the_over_passed():
+    """r49: a straight-alpha over passed beside an a_buffer that composites with another over
+    was said to be hidden by "the opaque background"; the scene never ran it."""
+
+    def over(dst, src):  # straight alpha: the source multiplied by its alpha again
+        s, d = np.asarray(src, float), np.asarray(dst, float)
+        return s * s[3] + d * (1 - s[3])
+
+    report = ex.capstone("glass_sorted", **_mine("glass_sorted", over=over))
+    assert not report.passed
+    assert "never calls the over you passed" in str(report), str(report)
+    assert "opaque background" not in str(report), str(report)

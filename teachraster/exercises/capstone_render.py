@@ -267,6 +267,7 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
         if any(f"your {name}" in f.explanation for f in failures):
             continue
         failed = _fallback(name, used[name], where)
+        why = _over_unused(spec, used) if name == "over" and spec.sort else why
         if failed is not None and failed.case.startswith(f"{name} on "):
             out.append(failed)  # that scene's own fallback: said once, not nested
         elif failed is not None:
@@ -278,6 +279,22 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
                                f"what this scene cannot ({why}): {said}", None, None,
                                kind=failed.kind))  # fmt: skip
     return out
+
+
+def _over_unused(spec: CapstoneScene, used) -> str:
+    """Why an A-buffer scene cannot see ``over``'s mistake: the student's ``a_buffer`` composes
+    with some ``over`` of its own, and may not call the one handed to the capstone at all (r49:
+    "the opaque background hides" was said of an a_buffer that never called it)."""
+    fn, over = used["a_buffer"], used["over"]
+    code, names = getattr(fn, "__code__", None), getattr(fn, "__globals__", {})
+    calls = code is not None and "over" in code.co_names and names.get("over") is over
+    if code is not None and not calls and over not in (
+            getattr(fn, "__defaults__", None) or ()):  # fmt: skip
+        return (
+            "your a_buffer never calls the over you passed (it composites with another "
+            "function, or by itself), so this scene never ran your over"
+        )
+    return next(why for name, _, why in spec.blind if name == "over")
 
 
 def package_use(used: dict) -> str | None:
