@@ -500,3 +500,21 @@ def test_hiz_says_a_safe_loose_bound_is_not_the_tightest():
     report = check("hiz_rejects", sv._hiz_with(vertex_only=True))
     assert not report.passed
     assert any("tightest" in f.explanation for f in report.failures), str(report)
+
+
+def test_resolve_srgb_figure_marks_the_codes_average():
+    """r49: 6.3's figure (three equal bars) showed nothing of linear light; it marks the
+    encoded numbers' plain average beside the expected bars."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises.resolve_light import draw_srgb_case, resolve_srgb_cases
+
+    fig, ax = plt.subplots()
+    case = resolve_srgb_cases()[0]  # black on white, 1 of 4 samples
+    draw_srgb_case(ax, case, case[2])
+    marks = [line for line in ax.get_lines() if line.get_label() == "codes averaged (6.2)"]
+    assert marks and np.allclose(marks[0].get_ydata(), 0.75)
+    plt.close(fig)

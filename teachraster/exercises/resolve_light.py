@@ -18,7 +18,6 @@ from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import (
     as_colour,
-    draw_resolve_case,
     expected_resolve,
     resolve_case,
     resolve_cases,
@@ -112,6 +111,23 @@ def _encoded_average_words(args, expected, got) -> str:
     )
 
 
+def draw_srgb_case(ax, case, got):
+    """6.2's bars (expected, yours) with the encoded numbers' plain average marked beside each
+    channel: the gap between the mark and the expected bar is the linear-light point (r49: three
+    equal bars showed nothing of it)."""
+    from .drawing import draw_values
+
+    _, (colours, ids, background), expected = case
+    artists = draw_values(ax, ["R", "G", "B"], expected, got)
+    codes = _mix(colours, ids, background, _same, _same)
+    artists += ax.plot(np.arange(3), codes, "_", color="#d7301f", ms=28, mew=3,
+                       label="codes averaged (6.2)")  # fmt: skip
+    artists.append(ax.legend(fontsize="x-small"))
+    artists.append(ax.set_xlabel("expected: averaged in linear light, then encoded",
+                                 fontsize="x-small"))  # fmt: skip
+    return artists
+
+
 MISTAKES = [
     Mistake("encoded average", _encoded_average_words,
             gives=lambda c, i, b: _mix(c, i, b, _same, _same)),
@@ -143,6 +159,6 @@ def explain(args, expected, got) -> str:
 
 RESOLVE_SRGB = Exercise(
     "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
-    answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case,
+    answers=(PackageAnswer(Frame.resolve),), draw=draw_srgb_case,
     reference=("teachraster.exercises.antialiasing",),
 )  # fmt: skip
