@@ -3,7 +3,8 @@
 Random triangles come in both windings, with vertices on pixel centres or anywhere on the
 1/256-px grid, flat-topped and flat-bottomed, smaller than a pixel, far from the origin (up to
 1e5 px: a window of pixels around the triangle is tested) and, for the coverage exercises
-only, of zero area. The seed is fixed, so a student sees the same cases on every run.
+only, of zero area. The seed is fixed, so a student sees the same cases on every run; each
+check adds a few drawn afresh (:func:`drawn_rng`), so a harvested table of them fails.
 """
 
 from __future__ import annotations
