@@ -187,6 +187,8 @@ def test_a_wrong_function_the_scene_cannot_see_fails_where_it_shows(scene, chang
     assert not report.passed, str(report)
     last = report.failures[-1].explanation
     assert where in last and words in last, str(report)
+    if report.n_wrong == 0:  # r49: the headline must not read like a pass
+        assert ": fails, though all" in str(report).splitlines()[0], str(report)
 
 
 @pytest.mark.parametrize("scene, changed, stage, words", WRONG,
@@ -435,3 +437,63 @@ def test_the_glass_in_drawing_order_marks_what_the_a_buffer_repairs():
     report.compare(axes)
     assert f"blue: {len(repaired)}" in axes[2].get_title()
     plt.close(fig)
+
+
+def test_the_notebook_explains_a_pixel_that_differs_not_a_fixed_one():
+    """r49: cell 12's example pointed at a sky pixel, which matched for every floor mistake."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
+    nb = json.loads(path.read_text())
+    code = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"]
+    calls = [c for c in code if "report.explain_pixel(" in c]
+    assert calls and all("differing_pixels()" in c for c in calls), calls
+
+
+def test_a_replay_of_the_package_answers_fails_its_own_drawn_cases():
+    """r49: a spy recorded tr.barycentric's answers on a first run; replayed, they passed the
+    scene. The exercise's own check, with cases drawn afresh, must refuse them."""
+    import teachraster as tr
+
+    record = {}
+
+    def spy(xy, p):
+        answer = tr.barycentric(xy, p)
+        record[repr((np.asarray(xy).tolist(), np.asarray(p).tolist()))] = answer
+        return answer
+
+    ex.capstone("single_triangle", **_mine("single_triangle", barycentric=spy))
+
+    def replay(xy, p):
+        key = repr((np.asarray(xy).tolist(), np.asarray(p).tolist()))
+        return record.get(key, [1 / 3, 1 / 3, 1 / 3])
+
+    report = ex.capstone("single_triangle", **_mine("single_triangle", barycentric=replay))
+    assert report.n_wrong == 0 and not report.passed, str(report)
+    assert "barycentric exercise's own cases" in str(report), str(report)
+
+
+def test_two_covers_mistakes_name_the_one_the_inside_pixel_shows():
+    """r49: no winding swap and E > 0 at a pixel strictly inside was blamed on the tie rule
+    alone; the winding mistake explains the pixel and must be named."""
+
+    def covers(xy, p):
+        return all(edge_function(xy[i], xy[(i + 1) % 3], p) > 0 for i in range(3))
+
+    first = ex.capstone("grid", **_mine("grid", covers=covers)).failures[0].explanation
+    assert "strictly inside" in first and "counter-clockwise" in first, first
+
+
+def test_glass_sorted_says_when_a_buffer_never_called_the_over_passed():
+    """r49: a straight-alpha over passed beside an a_buffer that composites with another over
+    was said to be hidden by "the opaque background"; the scene never ran it."""
+
+    def over(dst, src):  # straight alpha: the source multiplied by its alpha again
+        s, d = np.asarray(src, float), np.asarray(dst, float)
+        return s * s[3] + d * (1 - s[3])
+
+    report = ex.capstone("glass_sorted", **_mine("glass_sorted", over=over))
+    assert not report.passed
+    assert "never calls the over you passed" in str(report), str(report)
+    assert "opaque background" not in str(report), str(report)

@@ -447,3 +447,74 @@ def test_a_pixel_is_a_pair_of_ints_inside_the_picture():
     with pytest.raises(ValueError, match="pixel must lie in the"):
         report.explain_pixel(0, 10_000)
     assert report.explain_pixel(np.int64(20), 10).startswith("yours and the package's agree")
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["coverage_fraction", "resolve", "resolve_srgb", "mip_level", "bilinear", "trilinear",
+     "classify_block", "quad_derivatives", "hiz_rejects", "robust_fill"],
+)  # fmt: skip
+def test_a_table_of_the_handed_out_cases_fails_the_drawn_ones(name):
+    """r49: ``exercise(name).cases()`` hands out every case with its answer; a dict built from
+    them must fail the cases drawn afresh for each check (as exercise 9's do)."""
+    from teachraster.exercises.checks import check, exercise
+
+    table = {repr(tuple(a)): e for _, a, e in exercise(name).cases()}
+    report = check(name, lambda *a: table.get(repr(tuple(a))))
+    assert not report.passed
+    assert all(f.case.startswith("drawn for this check") for f in report.failures), report
+
+
+def test_resolve_names_triangle_0_taken_as_background():
+    """r49: ``ids > 0`` as covered (triangle 0 turned background) was refused, not named."""
+    from teachraster.exercises.checks import check
+
+    def resolve(colours, ids, background):
+        covered = (np.asarray(ids) > 0)[:, None]
+        return np.where(covered, np.asarray(colours, float), background).mean(axis=0)
+
+    report = check("resolve", resolve)
+    assert not report.passed and "triangle 0" in report.failures[0].explanation, str(report)
+
+
+def test_resolve_srgb_quotes_the_case_own_count_of_samples():
+    """r49: a "1 of 4" case's message quoted "black on white at 2 of 4 samples"."""
+    from teachraster.exercises.checks import check
+
+    def resolve_srgb(colours, ids, background):
+        covered = (np.asarray(ids) >= 0)[:, None]
+        return np.where(covered, np.asarray(colours, float), background).mean(axis=0)
+
+    first = check("resolve_srgb", resolve_srgb).failures[0]
+    assert first.case.startswith("black on white, 1 of 4"), first.case
+    assert "at 1 of 4 samples must show 0.75" in first.explanation, first.explanation
+
+
+def test_hiz_says_a_safe_loose_bound_is_not_the_tightest():
+    """r49: the vertex-only bound is safe (it never rejects a visible fragment); the message
+    must say the tightest bound is asked, not call it unsafe."""
+    import student_variants as sv
+
+    from teachraster.exercises.checks import check
+
+    report = check("hiz_rejects", sv._hiz_with(vertex_only=True))
+    assert not report.passed
+    assert any("tightest" in f.explanation for f in report.failures), str(report)
+
+
+def test_resolve_srgb_figure_marks_the_codes_average():
+    """r49: 6.3's figure (three equal bars) showed nothing of linear light; it marks the
+    encoded numbers' plain average beside the expected bars."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises.resolve_light import draw_srgb_case, resolve_srgb_cases
+
+    fig, ax = plt.subplots()
+    case = resolve_srgb_cases()[0]  # black on white, 1 of 4 samples
+    draw_srgb_case(ax, case, case[2])
+    marks = [line for line in ax.get_lines() if line.get_label() == "codes averaged (6.2)"]
+    assert marks and np.allclose(marks[0].get_ydata(), 0.75)
+    plt.close(fig)

@@ -14,7 +14,6 @@ decides, and compare the answer with what typical mistakes give.
 
 from __future__ import annotations
 
-from functools import cache
 from types import SimpleNamespace
 
 import numpy as np
@@ -26,7 +25,7 @@ from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..pipeline.render_triangles import Frame
 from .answers import as_number, as_numbers
-from .cases import SEED
+from .cases import SEED, fixed_and_drawn
 from .coverage import TOP_LEFT, covered, kind_of, owns_kind, owns_variants, owns_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
@@ -86,8 +85,7 @@ def _edge_words(xy, point) -> str:
     return ""
 
 
-@cache  # the same cases on every check: built once
-def coverage_cases():
+def _coverage_cases(rng, word):
     """Hard cases (samples on edges, off-grid vertices, ties of the snapping) then random."""
     four, out = sample_pattern(4), []
     hard = [
@@ -121,7 +119,6 @@ def coverage_cases():
     ]  # fmt: skip
     for label, xy, pixel, samples in hard:
         out.append(_coverage_case(label, np.array(xy, dtype=float), pixel, samples))
-    rng = np.random.default_rng(SEED + 60)
     for n in range(16):
         xy = snap(rng.uniform(0, 6, size=(3, 2)))
         lo, hi = np.floor(xy.min(axis=0)).astype(int), np.floor(xy.max(axis=0)).astype(int)
@@ -129,9 +126,13 @@ def coverage_cases():
         kind = ("standard", "random", "jittered")[n % 3]
         count = (4, 8, 16)[n % 3] if kind == "standard" else (5, 4, 9)[n % 3]
         samples = sample_pattern(count, kind, seed=n)
-        label = f"random {n + 1}: {count} {kind} samples"
+        label = f"{word} {n + 1}: {count} {kind} samples"
         out.append(_coverage_case(label, xy, pixel, samples))
     return out
+
+
+# the fixed cases, then a few drawn for each check (r49: a harvested table fails)
+coverage_cases = fixed_and_drawn(_coverage_cases, SEED + 60)
 
 
 def _coverage_case(label, xy, pixel, samples):
@@ -335,8 +336,7 @@ def resolve_case(label, ids, colours, background, dtype=float):
     return (label, args, expected_resolve(*args))
 
 
-@cache  # the same cases on every check: built once
-def resolve_cases():
+def _resolve_cases(rng, word):
     red, green, blue = np.eye(3)
     white, grey = np.ones(3), np.array([0.2, 0.3, 0.4])
     hard = [
@@ -351,18 +351,20 @@ def resolve_cases():
         ("16 samples, five covered", [-1] * 11 + [0] * 5, [red] * 16, white),
     ]
     out = [resolve_case(*case) for case in hard]
-    rng = np.random.default_rng(SEED + 61)
     for n in range(14):
         s = (2, 4, 8, 16)[n % 4]
         ids = rng.integers(-1, 3, size=s)
         palette = rng.uniform(0, 1, size=(3, 3))
         colours = palette[np.maximum(ids, 0)]
-        out.append(resolve_case(f"random {n + 1}: {s} samples", ids, colours, rng.uniform(0, 1, 3)))
+        out.append(resolve_case(f"{word} {n + 1}: {s} samples", ids, colours, rng.uniform(0, 1, 3)))
     # colours as matplotlib's imread gives them: float32 (a float32 mean is right, too)
     ids, colours = rng.integers(-1, 3, size=8), rng.uniform(0, 1, size=(8, 3))
     label = "8 samples, float32 colours (as from imread)"
     out.append(resolve_case(label, ids, colours, rng.uniform(0, 1, 3), np.float32))
     return out
+
+
+resolve_cases = fixed_and_drawn(_resolve_cases, SEED + 61)  # r49: some drawn per check
 
 
 def as_colour(value) -> np.ndarray:
@@ -434,6 +436,11 @@ RESOLVE_MISTAKES = [
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
     Mistake("first sample", _resolve_words("that is sample 0 alone"),
             gives=lambda c, i, b: _with_background(c, i, b)[0]),
+    # r40/r49: ids <= 0 taken as uncovered (a test of ids > 0), so triangle 0 turned background
+    Mistake("triangle 0 as background", _resolve_words("you counted the samples of triangle 0 "
+            "as uncovered: ids number the triangles from 0, and only −1 marks an uncovered "
+            "sample (covered is ids ≥ 0, not ids > 0)"),
+            gives=lambda c, i, b: np.where((i > 0)[:, None], c, b).mean(axis=0)),
     Mistake("background only", _resolve_words("that is the background alone: the covered "
             "samples' colours count too"), gives=lambda c, i, b: np.asarray(b, dtype=float)),
 ]  # fmt: skip

@@ -88,14 +88,16 @@ def _record_difference(used, reference, pixel, rm, rr):
     return None
 
 
-def named_mistake(used, name) -> str:
+def named_mistake(used, name, inside: bool = False) -> str:
     """ ": <words>" of the typical mistake exercise ``name``'s own check finds in the student's
-    function (over all its cases, :mod:`.diagnosis`), or "" when it names none."""
+    function (over all its cases, :mod:`.diagnosis`), or "" when it names none. ``inside``:
+    the pixel shown is strictly inside its triangle, so a tie rule's mistake cannot explain it
+    (r49: no winding swap and E > 0 was blamed on the tie rule); another is named first."""
     fn = used.get(name)
     if name not in CHECKED_BY or fn is None:
         return ""
     try:
-        return _mistake_words(name, fn)
+        return _mistake_words(name, fn, inside)
     except TypeError:  # an unhashable callable: no cache, no name
         return ""
 
@@ -119,7 +121,7 @@ def _own_report(checked: str, fn):
 
 
 @lru_cache(maxsize=32)
-def _mistake_words(name, fn) -> str:
+def _mistake_words(name, fn, inside: bool = False) -> str:
     from .checks import exercise
 
     checked = CHECKED_AS.get(name, name)
@@ -130,6 +132,10 @@ def _mistake_words(name, fn) -> str:
         parts = [failure.kind] if failure.kind in table else failure.kind.split(" and ")
         if not all(kind in table for kind in parts):
             continue
+        if inside:  # the tie rules' mistakes say nothing of a centre strictly inside
+            parts = [kind for kind in parts if not _about_ties(kind)]
+            if not parts:
+                continue
         words = [table[kind] for kind in parts]
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
@@ -137,6 +143,11 @@ def _mistake_words(name, fn) -> str:
         # numbers are not this pixel's)
         return f"{head}in its own case {failure.case}, {failure.explanation}"
     return _unnamed(checked, report)
+
+
+def _about_ties(kind: str) -> bool:
+    """Whether typical mistake ``kind`` of ``covers`` is about centres on edges (a tie rule)."""
+    return kind.endswith(" rule") or kind.endswith("owns its centres")
 
 
 def _unnamed(checked: str, report) -> str:
@@ -186,7 +197,8 @@ def _coverage(used, reference, pixel, rr, covered) -> str:
     asked = f"covers({_points(xy)}, {vec(p)})"
     said = error or f"your {asked} returned {yours!r}"
     why, _, _ = explain_coverage(xy, p, covered)
-    return f"triangle {rr.triangle}: {said}; the package: {why}{named_mistake(used, 'covers')}"
+    named = named_mistake(used, "covers", inside="strictly inside" in why)
+    return f"triangle {rr.triangle}: {said}; the package: {why}{named}"
 
 
 def _points(xy) -> str:

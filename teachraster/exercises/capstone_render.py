@@ -223,6 +223,8 @@ def capstone(scene: str, *, budget: float = BUDGET, **functions) -> CapstoneRepo
     report = _report(spec, used, reference, outcome, tracker)
     if report.passed:  # a right frame from the package's own function does not count
         report = replace(report, package=package_use(used))
+    if report.passed:  # r49: a record of the package's answers, replayed, passed a scene
+        report = replace(report, failures=_own_checks(used))
     if report.passed and tracker.precision is not None:
         report = replace(report, precision=f"your {tracker.precision[0]} answers "
                          f"{tracker.precision[1]}: right within its rounding, so they pass")  # fmt: skip
@@ -265,6 +267,7 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
         if any(f"your {name}" in f.explanation for f in failures):
             continue
         failed = _fallback(name, used[name], where)
+        why = _over_unused(spec, used) if name == "over" and spec.sort else why
         if failed is not None and failed.case.startswith(f"{name} on "):
             out.append(failed)  # that scene's own fallback: said once, not nested
         elif failed is not None:
@@ -276,6 +279,22 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
                                f"what this scene cannot ({why}): {said}", None, None,
                                kind=failed.kind))  # fmt: skip
     return out
+
+
+def _over_unused(spec: CapstoneScene, used) -> str:
+    """Why an A-buffer scene cannot see ``over``'s mistake: the student's ``a_buffer`` composes
+    with some ``over`` of its own, and may not call the one handed to the capstone at all (r49:
+    "the opaque background hides" was said of an a_buffer that never called it)."""
+    fn, over = used["a_buffer"], used["over"]
+    code, names = getattr(fn, "__code__", None), getattr(fn, "__globals__", {})
+    calls = code is not None and "over" in code.co_names and names.get("over") is over
+    if code is not None and not calls and over not in (
+            getattr(fn, "__defaults__", None) or ()):  # fmt: skip
+        return (
+            "your a_buffer never calls the over you passed (it composites with another "
+            "function, or by itself), so this scene never ran your over"
+        )
+    return next(why for name, _, why in spec.blind if name == "over")
 
 
 def package_use(used: dict) -> str | None:
@@ -295,6 +314,30 @@ def package_use(used: dict) -> str | None:
         if note is not None:  # its words name the function: "your bilinear calls ..."
             return note.replace(f"your {checked} ", f"your {name} ", 1)
     return None
+
+
+def _own_checks(used: dict) -> list[Failure]:
+    """Each function on its own exercise's check, whose cases include some drawn afresh:
+    a function that only replays answers recorded from the package (right on this scene's
+    pixels, r49: ``single_triangle`` passed so) fails them. Empty when all pass."""
+    from .capstone_explain import own_report
+    from .checks import names
+
+    out = []
+    for name, fn in used.items():
+        checked = CHECKED_AS.get(name, name)
+        if checked not in names():  # a_buffer: no exercise of its own
+            continue
+        report = own_report(checked, fn)
+        # float32 within its rounding passes the capstone (:data:`TOL`), as in _fallback
+        failed = None if report.passed else next(
+            (f for f in report.failures if f.kind != "float32"), None)  # fmt: skip
+        if failed is not None:
+            place = f"the {checked} exercise's own cases"
+            out.append(Failure(f"{name} on {place}", f"your {name} fails {place} (some drawn "
+                               f"afresh for this check): {failed.case}: {failed.explanation}",
+                               None, None, kind=failed.kind))  # fmt: skip
+    return out
 
 
 def _fallback(name: str, fn, where: str) -> Failure | None:
@@ -370,7 +413,10 @@ class CapstoneReport(Report):
                     f"counted: {self.package}")  # fmt: skip
         if self.mine is None:
             return f"{head}: no frame: {self.failures[0].explanation}"
-        lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]
+        if self.n_wrong == 0:  # r49: failed through another scene's or exercise's cases
+            lines = [f"{head}: fails, though all {self.n_cases} pixels match the package's"]
+        else:
+            lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]
         lines += [f"- {f.case}, {f.kind}: {f.explanation}" for f in self.shown()]
         return "\n".join(lines)
 

@@ -3,7 +3,8 @@
 Random triangles come in both windings, with vertices on pixel centres or anywhere on the
 1/256-px grid, flat-topped and flat-bottomed, smaller than a pixel, far from the origin (up to
 1e5 px: a window of pixels around the triangle is tested) and, for the coverage exercises
-only, of zero area. The seed is fixed, so a student sees the same cases on every run.
+only, of zero area. The seed is fixed, so a student sees the same cases on every run; each
+check adds a few drawn afresh (:func:`drawn_rng`), so a harvested table of them fails.
 """
 
 from __future__ import annotations
@@ -28,6 +29,31 @@ def drawn_rng() -> np.random.Generator:
     import secrets
 
     return np.random.default_rng(secrets.randbits(64))
+
+
+#: How the label of a case drawn for one check begins.
+DRAWN_WORD = "drawn for this check"
+
+
+def fixed_and_drawn(build, seed: int):
+    """``cases()`` for a check: ``build(rng, word)``'s cases with the fixed ``seed`` (built
+    once), then :data:`DRAWN` of its random ones drawn afresh (:func:`drawn_rng`), so that a
+    table of the fixed cases' answers, harvested from ``exercise(name).cases()``, fails
+    (r49). ``build`` labels its random cases ``f"{word} {n}..."``; the others it gives again
+    on the fresh draw are dropped (cheap: a few cases' answers).
+    """
+    import copy
+    from functools import cache
+
+    fixed = cache(lambda: build(np.random.default_rng(seed), "random"))
+
+    def cases():
+        drawn = build(drawn_rng(), DRAWN_WORD)
+        drawn = [case for case in drawn if case[0].startswith(DRAWN_WORD)][:DRAWN]
+        return copy.deepcopy(fixed()) + drawn
+
+    cases.__doc__ = build.__doc__
+    return cases
 
 
 #: Side of the window a random coverage case is tested on (small: Python loops stay fast).

@@ -27,7 +27,7 @@ from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..study.hardcases import CASES, naive_coverage
 from .answers import refuse_non_answers, short
-from .cases import SEED
+from .cases import DRAWN_WORD, SEED, drawn_rng
 from .coverage import explain_pixel
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
@@ -37,8 +37,10 @@ KINDS = ("triangle", "triangles", "mesh")
 
 
 def fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
-    """The cases (built once, then copied): see :func:`_fill_cases`."""
-    return copy.deepcopy(_fill_cases())
+    """The cases (built once, then copied; see :func:`_fill_cases`), then a few drawn for
+    this check (every kind of :func:`_random_cases`), so a harvested table fails (r49)."""
+    drawn = _random_cases(drawn_rng(), DRAWN_WORD)[::3]
+    return copy.deepcopy(_fill_cases()) + [(lb, a, expected_fill(*a)) for lb, a in drawn]
 
 
 @cache
@@ -73,24 +75,23 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     # fixed-point conversion) puts the left edge through centres, half up beside them
     half = np.array([[2.5 + 1 / 512, 1.0], [2.5 + 1 / 512, 9.0], [9.0, 5.0]])
     out.append(("half step: vertices half-way between 1/256 grid points", (half, 12, 12, (0, 0))))
-    out += _random_cases()
+    out += _random_cases(np.random.default_rng(SEED + 50), "random")
     return [(label, args, expected_fill(*args)) for label, args in out]
 
 
-def _random_cases() -> list[tuple[str, tuple]]:
+def _random_cases(rng, word) -> list[tuple[str, tuple]]:
     """Off-grid triangles: anywhere, within 1/512 px of a pixel centre (snapping decides
     ties), tiny ones (snapping flips or flattens them)."""
-    rng = np.random.default_rng(SEED + 50)
     out = []
     for k in range(10):
         xy = rng.uniform(0.5, 11.5, (3, 2))
-        out.append((f"random {k + 1}: anywhere, off the 1/256 grid", (xy, 12, 12, (0, 0))))
+        out.append((f"{word} {k + 1}: anywhere, off the 1/256 grid", (xy, 12, 12, (0, 0))))
     for k in range(6):
         xy = rng.integers(1, 11, (3, 2)) + 0.5 + rng.uniform(-1, 1, (3, 2)) / 512
-        out.append((f"random {k + 11}: within 1/512 px of centres", (xy, 12, 12, (0, 0))))
+        out.append((f"{word} {k + 11}: within 1/512 px of centres", (xy, 12, 12, (0, 0))))
     for k in range(4):
         xy = 5.5 + rng.uniform(-1, 1, (3, 2)) / 300
-        out.append((f"random {k + 17}: a few 1/256 px across", (xy, 12, 12, (0, 0))))
+        out.append((f"{word} {k + 17}: a few 1/256 px across", (xy, 12, 12, (0, 0))))
     return out
 
 

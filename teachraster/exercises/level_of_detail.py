@@ -12,13 +12,12 @@ answer the student's reproduces.
 from __future__ import annotations
 
 import math
-from functools import cache
 
 import numpy as np
 
 from ..pipeline.texture_filters import footprint_axes, mip_level
 from .answers import as_number
-from .cases import SEED
+from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Knobs, PackageAnswer, Slip
 from .scalars import num, vec
 from .tolerance import close
@@ -28,8 +27,7 @@ def expected_level(ddx, ddy, size) -> float:
     return float(mip_level(np.asarray(ddx, dtype=float), np.asarray(ddy, dtype=float), size))
 
 
-@cache  # the same cases on every check: built once
-def level_cases():
+def _level_cases(rng, word):
     """Hard cases (λ = 0, between levels, either axis longer, non-square, magnified), random."""
     t = 1 / 64
     hard = [
@@ -54,13 +52,12 @@ def level_cases():
     out = [
         (label, (np.array(dx, float), np.array(dy, float), size)) for label, dx, dy, size in hard
     ]
-    rng = np.random.default_rng(SEED + 70)
     for n in range(12):
         size = (int(2 ** rng.integers(2, 9)), int(2 ** rng.integers(2, 9)))
         if n % 4 == 3:
             size = (int(rng.integers(3, 300)), int(rng.integers(3, 300)))
         dx, dy = rng.normal(size=2) * 10 ** rng.uniform(-3, 0), rng.normal(size=2) * 10 ** rng.uniform(-3, 0)  # fmt: skip
-        out.append((f"random {n + 1}", (dx, dy, size)))
+        out.append((f"{word} {n + 1}", (dx, dy, size)))
     return [
         (
             f"{label}: ddx={vec(dx)}, ddy={vec(dy)}, size={size}",
@@ -69,6 +66,9 @@ def level_cases():
         )  # fmt: skip
         for label, (dx, dy, size) in out
     ]
+
+
+level_cases = fixed_and_drawn(_level_cases, SEED + 70)  # r49: some drawn per check
 
 
 def explain_level(args, expected, got) -> str:

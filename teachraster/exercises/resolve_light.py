@@ -12,22 +12,19 @@ each coverage of 4 samples.
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import (
     as_colour,
-    draw_resolve_case,
     expected_resolve,
     resolve_case,
     resolve_cases,
     same_colour,
 )
 from .exercise import Exercise, Mistake, PackageAnswer
-from .scalars import vec
+from .scalars import num, vec
 
 
 def _decode(colours) -> np.ndarray:
@@ -49,7 +46,6 @@ def expected_resolve_srgb(colours, ids, background) -> np.ndarray:
     return _encode(linear)
 
 
-@cache  # the same cases on every check: built once
 def resolve_srgb_cases():
     """Exercise 6.2's cases read as sRGB-encoded, then black on white at 1 to 3 of 4 samples
     (where averaging the encoded numbers is farthest off)."""
@@ -101,11 +97,39 @@ def _background_raw(colours, ids, background):
     return _encode(mixed.mean(axis=0))
 
 
+def _encoded_average_words(args, expected, got) -> str:
+    """The encoded-average mistake, its example at the case's own count of samples (r49: a
+    "1 of 4" case quoted "2 of 4")."""
+    _, ids, _ = args
+    s, k = len(ids), int(_covered(ids).sum())
+    white = (s - k) / s  # the share of white's light where k of s samples are black
+    return (
+        f": you averaged the sRGB-encoded numbers, as 6.2's resolve does: encoded numbers "
+        f"are not light (black on white at {k} of {s} samples must show {num(white)} of "
+        f"white's light, {num(float(linear_to_srgb(white)))} encoded, not {num(white)}); "
+        "decode first, average in linear light, encode the mean"
+    )
+
+
+def draw_srgb_case(ax, case, got):
+    """6.2's bars (expected, yours) with the encoded numbers' plain average marked beside each
+    channel: the gap between the mark and the expected bar is the linear-light point (r49: three
+    equal bars showed nothing of it)."""
+    from .drawing import draw_values
+
+    _, (colours, ids, background), expected = case
+    artists = draw_values(ax, ["R", "G", "B"], expected, got)
+    codes = _mix(colours, ids, background, _same, _same)
+    artists += ax.plot(np.arange(3), codes, "_", color="#d7301f", ms=28, mew=3,
+                       label="codes averaged (6.2)")  # fmt: skip
+    artists.append(ax.legend(fontsize="x-small"))
+    artists.append(ax.set_xlabel("expected: averaged in linear light, then encoded",
+                                 fontsize="x-small"))  # fmt: skip
+    return artists
+
+
 MISTAKES = [
-    Mistake("encoded average", ": you averaged the sRGB-encoded numbers, as 6.2's resolve does: "
-            "encoded numbers are not light (black on white at 2 of 4 samples must show half of "
-            "white's light, 0.735 encoded, not 0.5); decode first, average in linear light, "
-            "encode the mean",
+    Mistake("encoded average", _encoded_average_words,
             gives=lambda c, i, b: _mix(c, i, b, _same, _same)),
     Mistake("not encoded", ": that is the mean in linear light, not encoded again: the "
             "framebuffer holds sRGB-encoded numbers, so encode it (linear_to_srgb)",
@@ -135,6 +159,6 @@ def explain(args, expected, got) -> str:
 
 RESOLVE_SRGB = Exercise(
     "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
-    answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case,
+    answers=(PackageAnswer(Frame.resolve),), draw=draw_srgb_case,
     reference=("teachraster.exercises.antialiasing",),
 )  # fmt: skip

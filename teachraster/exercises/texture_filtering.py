@@ -16,14 +16,12 @@ floor, swapped weights...), and with the package's own filters on other levels.
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 
 from ..pipeline.mip_pyramid import mipmap
 from ..pipeline.texture import sample
 from .answers import as_numbers
-from .cases import SEED
+from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
 from .tolerance import all_close
@@ -127,10 +125,8 @@ def _texture(rng, h, w, channels=0):
     return np.round(rng.uniform(0, 1, size=shape), 3)
 
 
-@cache  # the same cases on every check: built once
-def bilinear_cases():
+def _bilinear_cases(rng, word):
     """Texel centres and corners, the border in both wrap modes, odd sizes; then random."""
-    rng = np.random.default_rng(SEED + 80)
     t4, t28 = _texture(rng, 4, 4), _texture(rng, 2, 8)
     hard = [
         ("a texel centre", t4, (1.5 / 4, 2.5 / 4), "repeat"),
@@ -162,11 +158,14 @@ def bilinear_cases():
         h, w = (int(v) for v in rng.integers(1, 9, size=2))
         tex = _texture(rng, h, w, 3 if n % 3 == 2 else 0)
         uv = np.round(rng.uniform(-1.5, 2.5, size=2), 4)
-        out.append((f"random {n + 1}: {h}×{w}", (tex, uv, ("repeat", "clamp")[n % 2])))
+        out.append((f"{word} {n + 1}: {h}×{w}", (tex, uv, ("repeat", "clamp")[n % 2])))
     return [
         (f"{label}, uv={vec(args[1])}, wrap={args[2]!r}", args, expected_bilinear(*args))
         for label, args in out
     ]
+
+
+bilinear_cases = fixed_and_drawn(_bilinear_cases, SEED + 80)  # r49: some drawn per check
 
 
 def explain_bilinear(args, expected, got) -> str:
@@ -352,10 +351,8 @@ def draw_texture_case(ax, case, got):
 
 
 # -- trilinear --------------------------------------------------------------------------------
-@cache  # the same cases on every check: built once
-def trilinear_cases():
+def _trilinear_cases(rng, word):
     """λ below, on, between and above the levels; square and non-square pyramids; random."""
-    rng = np.random.default_rng(SEED + 90)
     p8, p84, p3 = (Pyramid(mipmap(_texture(rng, *s))) for s in ((8, 8), (8, 4), (8, 8, 3)))
     p32 = Pyramid(level.astype(np.float32) for level in mipmap(_texture(rng, 8, 8, 3)))
     hard = [
@@ -385,11 +382,14 @@ def trilinear_cases():
         pyr = Pyramid(mipmap(_texture(rng, h, w, 3 if n % 4 == 1 else 0)))
         uv = np.round(rng.uniform(-0.5, 1.5, size=2), 4)
         lod = float(np.round(rng.uniform(-1, len(pyr)), 3))
-        out.append((f"random {n + 1}: {h}×{w}", (pyr, uv, lod, ("repeat", "clamp")[n % 2])))
+        out.append((f"{word} {n + 1}: {h}×{w}", (pyr, uv, lod, ("repeat", "clamp")[n % 2])))
     return [
         (f"{label}, uv={vec(a[1])}, λ={num(a[2])}, wrap={a[3]!r}", a, expected_trilinear(*a))
         for label, a in out
     ]
+
+
+trilinear_cases = fixed_and_drawn(_trilinear_cases, SEED + 90)  # r49: some drawn per check
 
 
 def _split(pyramid, lod):

@@ -18,14 +18,12 @@ classification the usual mistakes give.
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 
 from ..core.edges import edge_values_at, passes, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short
-from .cases import SEED
+from .cases import SEED, fixed_and_drawn
 from .coverage import covered
 from .exercise import Exercise, Knobs, Slip
 from .running import WrongAnswerType
@@ -216,13 +214,11 @@ def _hard_blocks():
     ]  # fmt: skip
 
 
-@cache  # the same cases on every check: built once
-def block_cases():
+def _block_cases(rng, word):
     """Hard blocks (vertices, edges through corners, tiny triangles, zero area), then random."""
     blocks = [
         (label, np.array(xy, dtype=float), x0, y0, s) for label, xy, x0, y0, s in _hard_blocks()
     ]
-    rng = np.random.default_rng(SEED + 100)
     for n in range(18):
         xy = snap(rng.uniform(0, 32, size=(3, 2)))
         if n % 3 == 0:
@@ -231,12 +227,15 @@ def block_cases():
         # a block around a random point of the bounding box (and a little beyond)
         p = rng.uniform(xy.min(axis=0) - size, xy.max(axis=0) + size)
         x0, y0 = (int(v) for v in np.floor(p / size) * size)
-        blocks.append((f"random {n + 1}", xy, x0, y0, size))
+        blocks.append((f"{word} {n + 1}", xy, x0, y0, size))
     return [
         (f"{label}: {tri_words(xy)}, block x0={x0}, y0={y0}, size={s}", (xy, x0, y0, s),
          expected_block(xy, x0, y0, s))
         for label, xy, x0, y0, s in blocks
     ]  # fmt: skip
+
+
+block_cases = fixed_and_drawn(_block_cases, SEED + 100)  # r49: some drawn per check
 
 
 def _edge_table(xy, x0, y0, size):
