@@ -52,7 +52,9 @@ def fixed_and_drawn(build, seed: int):
         drawn = [case for case in drawn if case[0].startswith(DRAWN_WORD)][:DRAWN]
         return copy.deepcopy(fixed()) + drawn
 
-    cases.__doc__ = build.__doc__
+    # the module of the cases is the check's own (package_answers.checker_modules reads it:
+    # a student's call of that module's reference helpers is not counted)
+    cases.__doc__, cases.__module__ = build.__doc__, build.__module__
     return cases
 
 
