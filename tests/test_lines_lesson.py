@@ -279,9 +279,14 @@ def test_12b_predictions_ask_before_the_rule_is_given(nsb):
     before_resolve = _cells_before("12b_blending", "msaaq", kinds=("markdown",))
     assert "per sample" not in before_resolve.split("## 5. MSAA")[1]
     assert ns.resolve_choices["per_sample"].startswith(f"{ns.resolved_alpha:.3f}")
-    assert len(set(ns.resolve_choices.values())) == 3
+    # r51 12b-4: four reasonings, every one about samples, so the word gives nothing away
+    assert len(set(ns.resolve_choices.values())) == 4
+    assert all("sample" in text for text in ns.resolve_choices.values())
+    shown = {text.split(":")[0] for text in ns.resolve_choices.values()}
+    assert len(shown) == 4  # four different numbers as printed
     before_code = _cells_before("12b_blending", "f9afb546")
     assert "2.2" not in before_code and "2.4" not in before_code
+    assert "codes on dark" not in before_code  # r51 12b-3: the side of 128 is not given
     assert ns.stored_code - 128 > ns.code_tolerance  # code 128 (no sRGB) is a wrong answer
 
 
