@@ -303,3 +303,18 @@ def test_bresenham_loop_covers_every_octant(ns):
     """Review r43 12a-4: the loop for all eight octants is shown, and lights the package's
     Bresenham pixels on every random line between pixel centres."""
     assert ns.loop_matches == ns.n_loop_lines and len(ns.octants) == 8
+
+
+def test_tie_table_says_what_the_cell_computes(ns):
+    """Review r51 12a-3: the ties told as a table (GL | Direct3D | teachraster); each word
+    ("upper"/"lower" row of the two at the tie) is the row the next cell computes."""
+    text = _cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split("**Ties.**")[1]
+    rows = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| x-") or
+            r.startswith("| horizontal")]  # fmt: skip
+    tie_y = {"dy/dx > 0": 1, "dy/dx < 0": 4, "horizontal on y = 1": 1}  # the line at x = 1.5
+    assert len(rows) == len(tie_y)
+    for (name, y), cells in zip(tie_y.items(), rows):
+        ours, gl, d3d = (r[0] for r in ns.tie_rows[name])
+        # the two candidates: row y - 1 above the corner (y down), row y below it
+        said = [y - 1 if "upper" in c else y if "lower" in c else None for c in cells[1:]]
+        assert said == [gl, d3d, ours], name
