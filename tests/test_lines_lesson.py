@@ -318,3 +318,12 @@ def test_tie_table_says_what_the_cell_computes(ns):
         # the two candidates: row y - 1 above the corner (y down), row y below it
         said = [y - 1 if "upper" in c else y if "lower" in c else None for c in cells[1:]]
         assert said == [gl, d3d, ours], name
+
+
+def test_explorer_count_beside_section_2s(nsb):
+    """Review r51 12b-9: the explorer's default count (against the sorted order) beside §2's
+    (against the reversed order) is explained: the gap is the pixels only blue and red cover,
+    in the same order in both comparisons."""
+    ns = nsb
+    assert ns.same_scene
+    assert ns.n_reversed - ns.explorer_differ == ns.blue_red_only > 0
