@@ -327,3 +327,11 @@ def test_explorer_count_beside_section_2s(nsb):
     ns = nsb
     assert ns.same_scene
     assert ns.n_reversed - ns.explorer_differ == ns.blue_red_only > 0
+
+
+def test_alpha_to_coverage_figure(nsb):
+    """Review r51 12b-6: alpha to coverage drawn: S + 1 = 5 levels at 4 samples, and two
+    layers at 1/2 keep the same samples, so they cover 1/2 (the text's "½, not ¾")."""
+    assert nsb.a2c_coverage == [0, 0.25, 0.5, 0.75, 1, 0.5]
+    text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
+    assert "(½, not ¾)" in text and "$S + 1$ levels" in text
