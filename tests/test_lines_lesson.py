@@ -335,3 +335,15 @@ def test_alpha_to_coverage_figure(nsb):
     assert nsb.a2c_coverage == [0, 0.25, 0.5, 0.75, 1, 0.5]
     text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
     assert "(½, not ¾)" in text and "$S + 1$ levels" in text
+
+
+def test_saturate_factor_is_computed_from_the_colours():
+    """Review r51 12b-2: SRC_ALPHA_SATURATE is min(A_s, 1 - A_d), not a fixed factor, and
+    tr.blend_equation rejects it as the text says."""
+    import teachraster as tr
+
+    text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
+    assert r"\min(A_s, 1 - A_d)" in text and "another fixed factor" not in text
+    assert "§17.3.6" not in text  # cited by the section's title: the number was not verified
+    with pytest.raises(ValueError, match="SRC_ALPHA_SATURATE"):
+        tr.blend_equation([1, 0, 0, 1], [0, 0, 0, 0], "SRC_ALPHA_SATURATE")
