@@ -279,9 +279,14 @@ def test_12b_predictions_ask_before_the_rule_is_given(nsb):
     before_resolve = _cells_before("12b_blending", "msaaq", kinds=("markdown",))
     assert "per sample" not in before_resolve.split("## 5. MSAA")[1]
     assert ns.resolve_choices["per_sample"].startswith(f"{ns.resolved_alpha:.3f}")
-    assert len(set(ns.resolve_choices.values())) == 3
+    # r51 12b-4: four reasonings, every one about samples, so the word gives nothing away
+    assert len(set(ns.resolve_choices.values())) == 4
+    assert all("sample" in text for text in ns.resolve_choices.values())
+    shown = {text.split(":")[0] for text in ns.resolve_choices.values()}
+    assert len(shown) == 4  # four different numbers as printed
     before_code = _cells_before("12b_blending", "f9afb546")
     assert "2.2" not in before_code and "2.4" not in before_code
+    assert "codes on dark" not in before_code  # r51 12b-3: the side of 128 is not given
     assert ns.stored_code - 128 > ns.code_tolerance  # code 128 (no sRGB) is a wrong answer
 
 
@@ -298,3 +303,47 @@ def test_bresenham_loop_covers_every_octant(ns):
     """Review r43 12a-4: the loop for all eight octants is shown, and lights the package's
     Bresenham pixels on every random line between pixel centres."""
     assert ns.loop_matches == ns.n_loop_lines and len(ns.octants) == 8
+
+
+def test_tie_table_says_what_the_cell_computes(ns):
+    """Review r51 12a-3: the ties told as a table (GL | Direct3D | teachraster); each word
+    ("upper"/"lower" row of the two at the tie) is the row the next cell computes."""
+    text = _cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split("**Ties.**")[1]
+    rows = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| x-") or
+            r.startswith("| horizontal")]  # fmt: skip
+    tie_y = {"dy/dx > 0": 1, "dy/dx < 0": 4, "horizontal on y = 1": 1}  # the line at x = 1.5
+    assert len(rows) == len(tie_y)
+    for (name, y), cells in zip(tie_y.items(), rows):
+        ours, gl, d3d = (r[0] for r in ns.tie_rows[name])
+        # the two candidates: row y - 1 above the corner (y down), row y below it
+        said = [y - 1 if "upper" in c else y if "lower" in c else None for c in cells[1:]]
+        assert said == [gl, d3d, ours], name
+
+
+def test_explorer_count_beside_section_2s(nsb):
+    """Review r51 12b-9: the explorer's default count (against the sorted order) beside §2's
+    (against the reversed order) is explained: the gap is the pixels only blue and red cover,
+    in the same order in both comparisons."""
+    ns = nsb
+    assert ns.same_scene
+    assert ns.n_reversed - ns.explorer_differ == ns.blue_red_only > 0
+
+
+def test_alpha_to_coverage_figure(nsb):
+    """Review r51 12b-6: alpha to coverage drawn: S + 1 = 5 levels at 4 samples, and two
+    layers at 1/2 keep the same samples, so they cover 1/2 (the text's "½, not ¾")."""
+    assert nsb.a2c_coverage == [0, 0.25, 0.5, 0.75, 1, 0.5]
+    text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
+    assert "(½, not ¾)" in text and "$S + 1$ levels" in text
+
+
+def test_saturate_factor_is_computed_from_the_colours():
+    """Review r51 12b-2: SRC_ALPHA_SATURATE is min(A_s, 1 - A_d), not a fixed factor, and
+    tr.blend_equation rejects it as the text says."""
+    import teachraster as tr
+
+    text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
+    assert r"\min(A_s, 1 - A_d)" in text and "another fixed factor" not in text
+    assert "§17.3.6" not in text  # cited by the section's title: the number was not verified
+    with pytest.raises(ValueError, match="SRC_ALPHA_SATURATE"):
+        tr.blend_equation([1, 0, 0, 1], [0, 0, 0, 0], "SRC_ALPHA_SATURATE")

@@ -29,6 +29,20 @@ def test_plot_diamonds_draws_the_traces_candidates(ax):
     assert art.segment in ax.lines
 
 
+def test_plot_diamonds_can_leave_out_the_walks_candidates(ax):
+    # review r51 12a-2: only the diamonds that lost a tie, not the simulator's window
+    fill = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, trace=True)
+    s = fill.trace.steps
+    art = plot_diamonds(ax, fill, tested="ties")
+    assert len(art.missed.get_paths()) == int((s.tie & (s.state == 0)).sum()) == 4
+    assert len(plot_diamonds(ax, fill, tested="all").missed.get_paths()) == int(
+        (s.state == 0).sum()
+    )
+    assert not plot_diamonds(ax, fill, tested="none").missed.get_paths()
+    with pytest.raises(ValueError, match="tested"):
+        plot_diamonds(ax, fill, tested="some")
+
+
 def test_plot_diamonds_needs_a_trace(ax):
     with pytest.raises(TypeError, match="trace=True"):
         plot_diamonds(ax, tr.rasterize_line((0.5, 0.5), (4.5, 2.5), 6, 4))

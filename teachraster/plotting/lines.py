@@ -55,15 +55,20 @@ class DiamondArtists(Artists):
     points: object
 
 
-def plot_diamonds(ax, line, *, grid: bool = True) -> DiamondArtists:
+def plot_diamonds(ax, line, *, grid: bool = True, tested: str = "all") -> DiamondArtists:
     """The diamond-exit rule drawn: every candidate pixel's diamond (lit: filled; p1's own:
     hatched; missed: outlined), the segment p0 → p1 and its end points.
 
     ``line`` is a traced diamond-rule line (``tr.rasterize_line(..., trace=True)``).
+    ``tested`` chooses the missed diamonds drawn: ``"all"`` every one the walk tested (its
+    window of candidates, an internal of the simulator), ``"ties"`` only those that lost a tie
+    (the line runs through their corner: the ones the rule itself had to decide), ``"none"``.
     """
     trace = as_line_trace(line)
     if trace.steps is None:
         raise ValueError("plot_diamonds draws one-pixel lines (line_width=1)")
+    if tested not in ("all", "ties", "none"):
+        raise ValueError(f"tested must be 'all', 'ties' or 'none'; got {tested!r}")
     width, height = trace.size
     pixel_axes(ax, width, height)
     lines = []
@@ -74,7 +79,9 @@ def plot_diamonds(ax, line, *, grid: bool = True) -> DiamondArtists:
             lines.append(ax.axhline(y, color=COLORS["grid"], lw=lw(0.4), zorder=0))
     s = trace.steps
     polys = {state: [_diamond(r, c) for r, c, st in zip(s.rows, s.cols, s.state) if st == state]
-             for state in (LIT, ENDS_INSIDE, 0)}  # fmt: skip
+             for state in (LIT, ENDS_INSIDE)}  # fmt: skip
+    shown = (s.state == 0) & {"all": True, "ties": s.tie, "none": False}[tested]
+    polys[0] = [_diamond(r, c) for r, c in zip(s.rows[shown], s.cols[shown])]
     lit = PolyCollection(polys[LIT], facecolor=COLORS["fill"], edgecolor=COLORS["edge"],
                          linewidth=lw(0.6), zorder=1)  # fmt: skip
     ends = PolyCollection(polys[ENDS_INSIDE], facecolor="none", edgecolor=COLORS["current"],
