@@ -1301,6 +1301,11 @@ def test_10_numbers_the_text_relies_on():
     assert not fixed_point.bit_budget(2 * ns.guard, 8, 64).fits
     assert ns.front_first["hiz_rejected"] > 0 and ns.front_first["shaded"] == 96 * 64
     assert ns.gpu["hiz_rejected"] == 0  # back to front (the last order drawn): "none"
+    # review r52 10-2/10-3: the table is read in a printed sentence; the walk's saving printed
+    assert ns.front_first["hiz_rejected"] == 2 * ns.front_first["shaded"]
+    assert ns.front_first["early_z_killed"] == ns.back_first["early_z_killed"] == 0
+    assert ns.back_first["shaded"] == 3 * 96 * 64
+    assert round(100 * ns.walk_saving) == 73
     assert ns.sphere["hiz_rejected"] > 0
     # the counters of 16/4/1: the 1x1 block tests are the pixel tests, so "filled with no
     # test" is the same 1184 as with llvmpipe's 64/16/4 (not all 1492 covered pixels)
@@ -1379,6 +1384,7 @@ def test_10_review_r26_hiz_question_held_text_and_sources():
     assert held["metadata"]["jupyter"]["source_hidden"]  # collapsed, as the question's source
     assert "Keeping the farthest depth current" in code[ask + 1]
     assert "Keeping the farthest depth current" not in md and "must cover a whole tile" not in md
+    assert "holds the cleared depth" not in md  # r52 10-1: the partly-covered trap is held too
     assert "GL_GREATER" in md and "reversed-Z" in md and "for the rest of the frame" in md
     assert "US 11,176,734" in md and "Persson, *Depth in-depth*" not in md  # r36: sourced
     assert "Giesen" not in md and "sort-middle" in md
