@@ -1316,6 +1316,7 @@ def test_10_numbers_the_text_relies_on():
     assert len(ns.frames) == 4  # "the built-in overlap scenes": four of them
     # the timing section: "the tiled walk a few thousand blocks", "a fraction of the tests"
     assert 1000 <= ns.walk.blocks < 10_000 and ns.walk_tests < 0.1 * ns.half_tests
+    assert 0.4 < ns.big_share < 0.6  # "about half the image covered"
     assert ns.walk_tests == ns.walk.blocks + ns.walk.pixel_tests
     # llvmpipe's binner: every 64x64 tile of the box is empty, fully or partially covered
     bins = ns.bins
@@ -1437,14 +1438,15 @@ def test_10_r45_items():
     n = ns.N // 4
     cells4 = ns.false_out.reshape(n, 4, n, 4)
     assert (cells4.any(axis=(1, 3)) & ~cells4.all(axis=(1, 3))).any()
-    assert 0 < ns.fastest and 0 < ns.middle  # the shares the timing cell prints
     nb = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
     text = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(t for t, c in zip(text, nb["cells"])
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "whole blocks are accepted" not in md and "not made of whole blocks" in md
     assert "whatever found it" not in md and "can lose" not in md
-    assert "fastest runs" in md and "medians" in md
+    # review r52 10-4: the numpy timing ("no clear winner" twice) is gone; the counts stay
+    assert "fastest runs" not in md and "medians" not in md and "bench_tiles.py" in md
+    assert not hasattr(ns, "timed_ms") and "no clear winner" not in "\n".join(text)
     held = next(i for i, t in enumerate(text) if t.startswith("q_small.hold()"))
     method = next(i for i, t in enumerate(text) if "all its children must be classified" in t)
     assert held < method
