@@ -1420,6 +1420,7 @@ def test_10_r36_items():
         rows = len(ns.counters.table())
         assert [cells[(rows + 1, j)] for j in range(4)] == ["pixels", "", "no test", "tested"]
         assert cells[(rows + 2, 2)] == f"{ns.counters.pixels_accepted:,}"
+        assert cells[(rows + 2, 0)] == "count"  # review r52: the numbers' row is labelled
     finally:
         plt.close(fig)
 
