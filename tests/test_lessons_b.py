@@ -971,6 +971,11 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
         words = " ".join(text(name).split())
         assert "neither discards nor writes" not in words, name
         assert "early_fragment_tests" in words, name
+    # review r52 / issue 29: lesson 10 has the early-z table, one row per standard
+    words = " ".join(text("10_tiles_and_hierarchical_z").split())
+    for cell in ("| OpenGL 4.6 |", "| Direct3D 11 |", "| Vulkan |", "| teachraster |",
+                 "[earlydepthstencil]", "`EarlyFragmentTests`", "*Early Per-Fragment Tests*"):  # fmt: skip
+        assert cell in words, cell
 
 
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
