@@ -443,3 +443,28 @@ def test_a_block_that_is_the_whole_image_says_so():
     wide = tr.rasterize(tri, 20, 16, method="tiled", trace=True).trace  # 16 rows, 20 columns
     said = [wide.step(k).extent for k in range(len(wide)) if "whole image" in wide.caption(k)]
     assert said == [(16, 20)]  # the 64×64 block only: the 16×16 one leaves 4 columns out
+
+
+def test_level_slider_label_says_when_it_does_not_show_its_level():
+    """Review r52, lesson 10: with a 1×1 block shown the slider still read "level 0"; while
+    the block slider shows the picture, the level slider is labelled as where moving it goes
+    ("show level"), and "level" again once it shows its level."""
+    from teachraster.widgets.tiles import LEVEL_LABELS
+
+    ex = TileExplorer(tr.Triangle([[2.2, 3.1], [25.6, 8.3], [9.4, 27.7]]), 32, 32,
+                      backend="image")  # fmt: skip
+    try:
+        assert ex.level.description == LEVEL_LABELS[True] == "level"
+        last = len(ex.blocks.block_sizes) - 1
+        ex.block.value = 1 + int(np.flatnonzero(ex.blocks.level[ex.order] == last)[0])
+        assert ex.caption_text.startswith(f"block {ex.block.value} of ")
+        assert "1×1 block" in ex.caption_text and ex.level.value == 0
+        assert ex.level.description == LEVEL_LABELS[False] == "show level"
+        ex.level.value = 1
+        assert ex.level.description == "level" and ex.caption_text.startswith("level 1:")
+        ex.block.value = 0  # the block slider's start: no level's picture either
+        assert ex.level.description == "show level"
+        ex.traversal.value = "morton"  # back to the level view
+        assert ex.level.description == "level"
+    finally:
+        ex.close()

@@ -38,6 +38,10 @@ SIZE_OPTIONS = [
 STEPPED_UNCLASSIFIED = "not classified yet (block slider)"
 #: ... and only the block slider has one block visited now (outlined).
 STEPPED_CURRENT = "the block visited now (block slider)"
+#: The level slider's label while it shows its level, and while the block slider does: its
+#: value then is not what the picture shows (it read "level 0" over a 1×1 block; review
+#: r52, lesson 10), only where moving it goes.
+LEVEL_LABELS = {True: "level", False: "show level"}
 
 
 class TileExplorer(Holdable):
@@ -219,6 +223,7 @@ class TileExplorer(Holdable):
     # -- views ----------------------------------------------------------------------------
     def show_level(self, level: int | None = None) -> None:
         """Show the hierarchy down to block size ``block_sizes[level]``."""
+        self.level.description = LEVEL_LABELS[True]
         self._compute_at(self.level.value if level is None else level)
         self._refresh()
 
@@ -251,6 +256,7 @@ class TileExplorer(Holdable):
         self.shown = block_mask(self.blocks, upto=k - 1, traversal=self.traversal.value)
         # the block visited now, outlined (review r11, lesson 10: where is the walk?)
         self.current = int(self.order[k - 1]) if k > 0 and len(self.order) else None
+        self.level.description = LEVEL_LABELS[False]  # the picture is no level's
         n = len(self.blocks)
         if not n:
             self.caption_text = "no block to classify (no pixel centre in the box, or zero area)"
