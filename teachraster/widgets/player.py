@@ -47,8 +47,9 @@ INTERPOLATION_OPTIONS = [("affine", "affine"), ("perspective-correct", "perspect
 ONE_SAMPLE = "1 (centre)"
 TILES_NOTE = "<i>tiles test pixel centres only: shown with 1 sample per pixel</i>"
 #: The steps' grid (its longer side, inches) and the key's column (inches at the style's font
-#: scale): the figure stays within the column (930 px at the classroom style's 96 dpi).
-PLAYER_SIDE, PLAYER_KEY = 5.4, 1.75
+#: scale): the figure stays within the column (930 px at the classroom style's 96 dpi), and
+#: the player with its steps stays within a 900-px screen (5.4 in made it 906 px tall).
+PLAYER_SIDE, PLAYER_KEY = 4.8, 1.75
 
 #: The comparison's greatest height on screen (px): with the title and the controls above it,
 #: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
