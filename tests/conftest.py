@@ -406,3 +406,14 @@ def _matplotlib_style_stays_in_its_test():
     yield
     if saved is not None:
         dict.update(mpl.rcParams, saved)  # as rc_context restores: the values were valid
+
+
+@pytest.fixture(autouse=True)
+def _checks_give_their_full_words():
+    """Every test starts with the staged hints spent: a check's first explanation is the same
+    whichever tests ran before it in this process (a corpus test failed in one order only).
+    The hint tests call ``tries.forget_hints`` first."""
+    from teachraster.exercises import checks, tries
+
+    tries.spend_hints(n for n in checks.names() if checks.exercise(n).hints)
+    yield

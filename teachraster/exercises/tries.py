@@ -155,6 +155,15 @@ def hinted_check(name: str, answer: object) -> bool:
         return len(seen) < HINTED_ANSWERS
 
 
+def spend_hints(names) -> None:
+    """Count task ``names``' hints as used: their checks give the full words from the first
+    failing try (the tests: whether a check hints must not depend on which tests ran before
+    it in the same process)."""
+    with _LOCK:
+        for name in names:
+            _HINTED[name] = {("spent", k) for k in range(HINTED_ANSWERS)}
+
+
 def forget_hints(name: str | None = None) -> None:
     """Start the hints' count of task ``name`` (of every task: None) again (the tests)."""
     with _LOCK:
