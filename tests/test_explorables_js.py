@@ -668,12 +668,13 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     assert data["guard"] == guard_band(16, 16, 8) and data["exactPx"] == 2**21
     assert data["guardPx"] < 2**21 and "e+" not in html["clip"]
     assert f"{round(data['guard']):,} w" in html["clip"] and "2,097,152 px" in html["clip"]
-    # early-z as lesson 05a teaches it: a depth-writing shader loses the early test, a
-    # discarding one keeps it and delays only the write (not "neither discards nor writes")
-    assert "writes its own depth turns the early test off" in html["depth"]
-    assert "may discard can keep the early test" in html["depth"]  # r9: allowed, not required
-    assert "only the depth write waits" in html["depth"]
-    assert "neither" not in html["depth"] and "discard" in html["fragment"]
+    # early-z (test and write before the shader) only when the shader neither discards nor
+    # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the
+    # late test, a discarding one may still be tested early and written late (r9)
+    assert "neither discards nor writes depth" in html["depth"]
+    assert "writes its own depth needs the late test" in html["depth"]
+    assert "may still test early and write the depth late" in html["depth"]
+    assert "discard" in html["fragment"]
     assert sum(c != [245, 245, 245] for c in images["rasterize"]) == data["fragments"]
     assert images["vertex"] is None and images["blend"] == data["colour"]
 

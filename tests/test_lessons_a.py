@@ -903,25 +903,29 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_tests_before_shading(
 
 
 def test_early_z_in_00_and_its_picture_agrees_with_05a():
-    """Lesson 05a: early-z splits the early depth test from the late write. A shader that
-    writes depth loses the early test (conservative depth excepted); one that may discard keeps
-    it and delays only the write. Lesson 00 and the pipeline picture said "neither discards nor
-    writes depth"."""
+    """Lesson 05a: early-z splits the early depth test from the late write. Issue 29 and
+    review r52 (00-3, 00-4): early-z, the test *and write* before the shader, is a conditional
+    bypass legal only when the shader neither discards nor writes depth; with discard the test
+    may still run early and the write late (r8-r11, lesson 05a: discard alone does not force
+    the late test). Tour, picture and map say the same, and the box names its lessons."""
     from teachraster.plotting import pipeline_overview
 
-    tour = next(t for t in _cells("00_tour", "markdown") if "early-z" in t)
-    picture = pipeline_overview.EARLY_Z_LABEL + (pipeline_overview.__doc__ or "")
+    tour = next(t for t in _cells("00_tour", "markdown") if "Early-z" in t)
+    tour = " ".join(tour.split())
+    picture = " ".join((pipeline_overview.EARLY_Z_LABEL + pipeline_overview.__doc__).split())
     for text in (tour, picture):
-        assert "neither discards" not in " ".join(text.split())
-    assert "only the" in tour and "write" in tour
-    assert "test early, write late" in picture  # r10/r11: "can delay only the write" misread
-    assert "can keep the early test" in " ".join(tour.split())  # r8: allowed, not required
+        assert "neither discards nor writes depth" in text
+    assert "test *and write* depth before the shader" in tour
+    assert "can keep the early test and only the depth write waits" in tour
     assert "conservative depth" in tour and "gl_FragDepth" in tour
+    assert "(10_tiles_and_hierarchical_z.ipynb)" in tour and "(05a_zbuffer.ipynb)" in tour
+    assert "test early, write late" in picture  # r10/r11: "can delay only the write" misread
     with tr_style():
         fig, ax = plt.subplots(figsize=(9, 7.5))
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
-    assert "not if the shader writes depth; with discard: test early, write late" in drawn
+    assert "early-z (lessons 05a, 10)" in drawn
+    assert "only if the shader neither discards nor writes depth (discard: test early" in drawn
     plt.close(fig)
 
 

@@ -4,11 +4,11 @@ Lesson 00 opens with it, so that every later lesson has a place: rasterisation (
 sits between vertex processing, which ends in window coordinates, and the per-fragment stages.
 The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: the fragment
 (pixel) shader runs before the per-fragment depth and stencil tests, which run before blending.
-*Early-z*, running the depth test before the shader, is an optimisation a GPU may apply only
-where the result cannot change, and it splits the test from the write: a shader that writes its
-own depth (``gl_FragDepth``, ``SV_Depth``) turns the early test off (conservative depth
-excepted), while a shader that may discard can keep it and only delay the depth write until it
-has kept the fragment (some GPUs test late instead) (GL 4.6 §14.9, §15.2; lesson 05a). The picture draws it as an
+*Early-z*, running the depth test and write before the shader, is a conditional bypass a
+GPU may take only where the result cannot change: when the shader neither discards nor writes
+depth. A shader that writes its own depth (``gl_FragDepth``, ``SV_Depth``) needs the late test
+(conservative depth excepted); with one that may discard, a GPU may still test early and write
+late, once the shader has kept the fragment (GL 4.6 §14.9, §15.2; lessons 05a, 10). The picture draws it as an
 optional, dashed depth test between rasterisation and the shader. The stages and their lessons are data
 (:data:`PIPELINE_STAGES`), so the notebook's list of links and the picture cannot disagree.
 """
@@ -88,11 +88,12 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
 #: skipping the shader).
 EARLY_Z = ("rasterisation", "depth test")
 
-#: The early test's label: lost only to a depth-writing shader; a discard can delay the depth
-#: write (test early, write late) (lesson 05a; some GPUs test late instead).
+#: The early test's label: early-z (test and write before the shader) only when the shader
+#: neither discards nor writes depth; with discard, the test may still run early and the write
+#: late (lessons 05a, 10; issue 29, review r52 00-4: the box names its lessons).
 EARLY_Z_LABEL = (
-    "early-z, optional: depth tested before shading,\nnot if the shader writes depth;\n"
-    "with discard: test early, write late"
+    "early-z (lessons 05a, 10), optional: depth tested and\nwritten before shading, only if the shader "
+    "neither\ndiscards nor writes depth (discard: test early, write late)"
 )
 
 

@@ -2,10 +2,10 @@
 
 The logical order of OpenGL and Direct3D: vertex shader, primitive assembly, clipping (x and y
 only beyond a guard band), the divide by w, the viewport, triangle set-up, rasterisation, the
-fragment shader, the depth and stencil tests, blending. Early-z, which tests depth before
-shading, is drawn as a dashed bypass: a shader that writes its own depth turns the early test
-off (conservative depth excepted); one that may discard can keep it, and only the depth write
-waits for the shader (lesson 05a; GL 4.6 §14.9, §15.2). Click a stage (in the style of the WebGL state diagram) to see the tour
+fragment shader, the depth and stencil tests, blending. Early-z, which tests and writes depth before
+shading, is drawn as a dashed conditional bypass, legal only when the shader neither discards
+nor writes depth (with discard a GPU may still test early and write late; lessons 05a, 10;
+GL 4.6 §14.9, §15.2). Click a stage (in the style of the WebGL state diagram) to see the tour
 triangle there: its clip coordinates, NDC, window coordinates, set-up, fragments, depth and
 final pixels.
 

@@ -82,10 +82,11 @@ export function stageHtml(data, key) {
       return `<p>Each fragment's depth (interpolated window depth) is compared with the ` +
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
         "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed) runs this test " +
-        "before the shader, to skip hidden fragments. A shader that writes its own depth " +
-        "turns the early test off (unless it declares conservative depth); a shader that " +
-        "may discard can keep the early test, and only the depth write waits until the shader " +
-        "has kept the fragment (some GPUs test late instead).</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
+        "and the depth write before the shader, to skip hidden fragments: a conditional " +
+        "bypass, legal only when the shader neither discards nor writes depth. A shader that " +
+        "writes its own depth needs the late test (unless it declares conservative depth); " +
+        "with one that may discard, a GPU may still test early and write the depth late, " +
+        "once the shader has kept the fragment (lessons 05a, 10).</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
         "black, 1 light grey); the lightest grey: no fragment.</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
@@ -144,7 +145,7 @@ function svg(tag, attrs, text) {
 // smallest type, 13 px, stays at least 12 px on screen (review r7: 900 wide, it was 8 px).
 // Stage names 13 px bold: at 14 px "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px
 // from their boxes' borders (review r17), under the selected box's 2-px border.
-const MAP = { width: 580, height: 384, font: 13, name: 13 };
+const MAP = { width: 580, height: 400, font: 13, name: 13 };  // 400: three lines of early-z
 function layout() {
   const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 50];
   return STAGES.map(([key], k) => {
@@ -182,8 +183,9 @@ function diagram(onPick, lessons) {
     "font-size": MAP.font, "font-weight": "bold", fill: "#333" }, "early depth test"));
   arrow(`M${r.x + r.w / 2},${r.y + r.h} L${r.x + r.w / 2},${ey - 2}`, "7 5");
   arrow(`M${f.x + f.w / 2},${ey} L${f.x + f.w / 2},${f.y + f.h + 2}`, "7 5");
-  ["early-z, optional: depth tested before shading; not if the shader",
-    "writes depth (with discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
+  ["early-z (lessons 05a, 10), optional: depth tested and written",
+    "before shading, only if the shader neither discards nor writes",
+    "depth (with discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
     { x: ex + ew / 2, y: ey + eh + 18 + 16 * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
