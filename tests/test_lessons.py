@@ -297,6 +297,8 @@ def test_00_tour_numbers():
     # review r19 00-7: the cube's text says the faces turned away are filled too (culling
     # off) and the depth test keeps one fragment of the two each covered pixel gets
     assert ns.fragments == 2 * ns.covered and ns.covered == 8130
+    # review r45 00-7: culling shown, not only named: half the fragments, the same picture
+    assert 2 * ns.kept == ns.fragments and ns.same_picture
     assert {e.name for e in ns.frame.plan} >= {"clipping", "culling", "depth_test", "perspective"}
 
 

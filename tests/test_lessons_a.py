@@ -173,6 +173,16 @@ def test_00_facing_and_the_two_methods():
     tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
     for narration in ("the cell prints", "the cell also prints", "the title and the cell"):
         assert narration not in tour, narration  # r45 00-3: the tour narrates the GPU
+    # review r52 00-5: the player opens on the first raster line below the split (the
+    # flat-bottom part filled, point 4 drawn), not on an empty grid; the text says so
+    first = ns.span.trace.step(ns.start)
+    assert first.kind == "row" and first.row + 0.5 > ns.v_mid > first.row - 0.5
+    assert ns.span.trace.step(ns.start - 1).kind == "row" and ns.start > ns.span.trace.split_step
+    assert "opens part-way through the span-table fill" in tour
+    # review r52 00-6: the zero-error line is solid and keyed, unlike the comparison's dashed
+    # row, which the text names
+    assert '"--", color="white"' not in code and 'label="Δu = 0"' in code
+    assert "it is not the line of zero error" in tour
 
 
 def test_00_words_r22():

@@ -450,8 +450,9 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
     a, b : (H, W) arrays
         The two images (NaN where not covered: a gap in the curve).
     axis : {"row", "column"}
-        Along a row, the curves run left to right (x = column j); along a column they run
-        downwards like the image (y = row i, increasing downwards; x = the value).
+        Along a row, the curves run left to right (x = the centres' screen x, j + 0.5); along
+        a column they run downwards like the image (y = the centres' screen y, i + 0.5,
+        increasing downwards; x = the value).
     index : int
         Which row (column).
     labels : (str, str)
@@ -471,10 +472,13 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
     guide_lines = [g.plot([], [], ls=(0, (4, 3)), color=COLORS["fill"], lw=lw(0.8))[0]
                    for g in guides]  # fmt: skip
     h, w = np.shape(a)[:2]
+    # the values sit at the pixel centres, j + 0.5 (i + 0.5): labelled as the screen position
+    # they are at, not "column j", whose point sat half-way to the next column's tick
+    # (review r45, lesson 00-6)
     if axis == "row":
-        ax.set(xlim=(0, w), xlabel="column j", ylabel=value)
+        ax.set(xlim=(0, w), xlabel="screen x (px)", ylabel=value)
     else:
-        ax.set(ylim=(h, 0), ylabel="row i", xlabel=value)
+        ax.set(ylim=(h, 0), ylabel="screen y (px)", xlabel=value)
     # whole columns (rows) only: a few pixels' span drew ticks at 2.5, 5.0, 7.5
     (ax.xaxis if axis == "row" else ax.yaxis).set_major_locator(MaxNLocator(integer=True))
     title = ax.set_title("", fontsize=fs(0.9))

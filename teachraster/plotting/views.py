@@ -517,6 +517,10 @@ class FillView:
                         ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"])]  # fmt: skip
             if split:  # the dashed line y = v_mid and the diamond at point 4 (plot_split)
                 entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
+        elif method == "span" and split:
+            # the last step hides the parts' tints but keeps the dashed line and the diamond
+            # at point 4: keyed there too (review r52, lesson 00: an unkeyed pink diamond)
+            entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
         if method == "span" and not coloured:  # the last step draws no raster line
             entries += [("raster line, its pixels", to_rgba(c["current"], 0.15), c["current"]),
                         ("span x_left .. x_right", c["current"], c["current"], "|"),
