@@ -207,6 +207,9 @@ def test_00_r37_items():
     assert names.index("clipping") < names.index("perspective divide") < names.index("viewport")
     assert "divide by $w$, window" not in tour
     assert "declared `centroid`" in tour and "(08_antialiasing.ipynb)" in tour
+    # issue 29 / review r52: facing, ties and the clip z range as a table of the APIs
+    table = next(t for t in _cells("00_tour", "markdown") if "**What each API does**" in t)
+    assert "§14.6.1, §13.7" in table and "§3.4.2.1, §15.4" in table
 
 
 @pytest.mark.notebook
@@ -342,7 +345,8 @@ def test_01_step_figure_shows_the_row_5_tie():
     assert "step 9 of 0–22" in ns.view.header.get_text()  # numbered from 0, not a count
 
 
-STANDARDS = {"02_half_planes": "a centre exactly on an edge", "05a_zbuffer": "guard band",
+STANDARDS = {"00_tour": "**What each API does**",
+             "02_half_planes": "a centre exactly on an edge", "05a_zbuffer": "guard band",
              "05b_depth_precision": "bits stored",
              "11_debugging_a_frame": "counting samples that pass"}  # fmt: skip
 
