@@ -179,6 +179,8 @@ def test_00_facing_and_the_two_methods():
     assert first.kind == "row" and first.row + 0.5 > ns.v_mid > first.row - 0.5
     assert ns.span.trace.step(ns.start - 1).kind == "row" and ns.start > ns.span.trace.split_step
     assert "opens part-way through the span-table fill" in tour
+    if hasattr(ns, "player"):  # the widget, where the run keeps it
+        assert ns.player.step == ns.start and ns.player.caption_text.startswith("row 5")
     # review r52 00-6: the zero-error line is solid and keyed, unlike the comparison's dashed
     # row, which the text names
     assert '"--", color="white"' not in code and 'label="Δu = 0"' in code
