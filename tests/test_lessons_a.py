@@ -152,7 +152,7 @@ def test_00_facing_and_the_two_methods():
     assert np.nanmax(ns.err.ravel()[inside & on_band]) < 0.02  # dark next to the 0.152 maximum
     order = np.lexsort((ns.tri.xy[:, 0], ns.tri.xy[:, 1]))
     assert list(order) == [0, 1, 2]  # "here also top to bottom"
-    # the sign of the affine error changes at the dashed line: too large nearer, too small
+    # the sign of the affine error changes at the zero line: too large nearer, too small
     # farther (review r2 00-2); the cell prints both
     assert np.nanmax(ns.signed[ns.nearer]) > 0.1 and np.nanmin(ns.signed[~ns.nearer]) < -0.01
     assert np.nanmin(ns.signed[ns.nearer]) > -1e-12 and np.nanmax(ns.signed[~ns.nearer]) < 1e-12
