@@ -554,6 +554,14 @@ def test_05a_cases_and_the_cube_steps():
     assert sum(f for _, f in ns.cube_steps) > 0  # culling off: the back faces fail
     assert 0.9 < np.nanmin(ns.frame.depth) < np.nanmax(ns.frame.depth) < 1  # "close to 1"
     assert sum(p + f for p, f in ns.cube_steps) == len(ns.cube.trace.fragment_triangle)
+    # review r54 05a-9: the stepper opens where fragments both pass and fail (both colours)
+    passed, failed = ns.cube_steps[ns.k_open]
+    assert passed > 0 and failed > 0 and not any(p and f for p, f in ns.cube_steps[: ns.k_open])
+    # review r54 05a-3: a question in the clipping section, answered by the clipper's own vertex
+    assert np.isclose(ns.steps[0].attrs[ns.steps[0].new, 0], ns.u_13).any()
+    text = "\n".join(_cells("05a_zbuffer", "markdown"))
+    assert "before any of that" not in text and "this\nlesson puts it last" not in text
+    assert "exactly once" not in text  # r54 05a-6: GL_LEQUAL shades both of a tie
 
 
 @pytest.mark.notebook
