@@ -154,10 +154,18 @@ def test_depth_explorer_curve_is_the_package_resolution():
         x, y = ex.curve.get_data()
         assert np.allclose(y, tr.depth_resolution(x, 0.1, 1000.0, "unorm16"))
         first16 = ex.fight_from
-        assert first16 is not None and "z-fighting first found at" in ex.info.value
-        # the crossing Δz = δ comes before the first fight the grid finds (lesson 05b, §6)
-        cross = float(ex.info.value.split("Δz = δ at z ≈ ")[1].split(")")[0])
-        assert cross < first16
+        assert first16 is not None and "z-fighting possible from Δz = δ at" in ex.info.value
+        # the crossing Δz = δ, then the dotted line where a pair fights half the time, Δz = 2δ
+        # (1 - δ/Δz = ½; review r54 05b-2), at √2 times the crossing: Δz grows like z²
+        cross = float(ex.info.value.split("Δz = δ at <b>z ≈ ")[1].split("<")[0])
+        assert cross == pytest.approx(
+            float(np.sqrt(0.005 * 1000.0 * 0.1 / ((1000.0 - 0.1) / (2**16 - 1)))), rel=1e-2
+        )
+        assert ex.half_from == pytest.approx(np.sqrt(2) * cross, rel=1e-2)
+        assert ex.marker.get_xdata()[0] == ex.half_from
+        assert float(tr.depth_resolution(ex.half_from, 0.1, 1000.0, "unorm16")) == pytest.approx(
+            0.01, rel=1e-3
+        )
         ex.format.value = "unorm24"  # more bits: fighting starts farther away
         assert ex.fight_from > first16
         ex.near.value = 1.0  # the classic fix: a farther near plane
@@ -554,10 +562,16 @@ def test_depth_explorer_says_fighting_becomes_possible_and_names_the_far_plane()
     try:
         subtitle = ex.widget.children[0].value
         assert "can store the same depth" in subtitle and "depth and z-fight" not in subtitle
-        assert "first found at <b>z ≈ 120</b>" in ex.info.value
+        # review r54 05b-2: the caption quotes the crossing and where half the pairs fight,
+        # not where one sampled pair first fought
+        assert "from Δz = δ at <b>z ≈ 91.6</b>" in ex.info.value
+        assert "from Δz = 2δ at <b>z ≈ 130</b>" in ex.info.value
         ex.near.value = 10.0
-        assert ex.fight_from == pytest.approx(1000.0)
-        assert "first found at <b>the far plane, z ≈ 1,000</b>" in ex.info.value
+        assert ex.fight_from == pytest.approx(1000.0) and ex.half_from is None
+        assert (
+            "at <b>z ≈ 921</b>, at less than half the pixels up to the far plane" in ex.info.value
+        )
+        assert not np.isfinite(ex.marker.get_xdata()).any()
         assert "e+" not in ex.info.value
     finally:
         ex.close()

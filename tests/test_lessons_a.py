@@ -570,6 +570,14 @@ def test_05a_cases_and_the_cube_steps():
     assert sum(f for _, f in ns.cube_steps) > 0  # culling off: the back faces fail
     assert 0.9 < np.nanmin(ns.frame.depth) < np.nanmax(ns.frame.depth) < 1  # "close to 1"
     assert sum(p + f for p, f in ns.cube_steps) == len(ns.cube.trace.fragment_triangle)
+    # review r54 05a-9: the stepper opens where fragments both pass and fail (both colours)
+    passed, failed = ns.cube_steps[ns.k_open]
+    assert passed > 0 and failed > 0 and not any(p and f for p, f in ns.cube_steps[: ns.k_open])
+    # review r54 05a-3: a question in the clipping section, answered by the clipper's own vertex
+    assert np.isclose(ns.steps[0].attrs[ns.steps[0].new, 0], ns.u_13).any()
+    text = "\n".join(_cells("05a_zbuffer", "markdown"))
+    assert "before any of that" not in text and "this\nlesson puts it last" not in text
+    assert "exactly once" not in text  # r54 05a-6: GL_LEQUAL shades both of a tie
 
 
 @pytest.mark.notebook
@@ -661,7 +669,7 @@ def test_05b_explore_heading_sits_just_before_its_widget():
     cells = ["".join(c["source"]) for c in nb["cells"]]
     at = next(i for i, c in enumerate(cells) if "## 6. Explore" in c)
     assert cells[at].startswith("## 6. Explore") and "cell below" not in cells[at]
-    assert "DepthPrecisionExplorer(" in cells[at + 1] and "first_fight(" in cells[at + 2]
+    assert "DepthPrecisionExplorer(" in cells[at + 1] and "where_reaches(" in cells[at + 2]
     assert not any("## 6." in c for c in cells[:at])
 
 
@@ -701,12 +709,19 @@ def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
 
 
 @pytest.mark.notebook
-def test_05b_widget_fight_comes_a_little_after_the_crossing():
-    """Section 6: the explorer's first sampled fight lies a little beyond Δz = δ."""
+def test_05b_widget_marks_where_half_the_pairs_fight():
+    """Section 6 (review r54 05b-2): the explorer marks where a pair δ apart fights with
+    probability 1 - δ/Δz = ½ (Δz = 2δ), √2 times farther than the crossing Δz = δ, and the
+    probability agrees with the share of pixels section 3's renders found fighting."""
     ns = lesson("05b_depth_precision")
-    res = float(tr.depth_resolution(ns.crossing16, ns.n_, ns.f_, "unorm16"))
-    assert abs(res - ns.delta) < 1e-9 * ns.delta + 1e-12  # the crossing is where Δz = δ
-    assert ns.crossing16 < ns.found16 < 1.2 * ns.crossing16  # "a little after"
+    for crossing, half, fmt in [(ns.crossing16, ns.half16, "unorm16"),
+                                (ns.crossing24, ns.half24, "unorm24")]:  # fmt: skip
+        res = float(tr.depth_resolution(crossing, ns.n_, ns.f_, fmt))
+        assert abs(res - ns.delta) < 1e-9 * ns.delta + 1e-12  # the crossing is where Δz = δ
+        assert half == pytest.approx(np.sqrt(2) * crossing, rel=1e-3)  # "√2 times farther"
+        chance = np.clip(1 - ns.delta / ns.predicted[fmt], 0.0, None)
+        assert np.abs(chance - ns.fights[fmt] / ns.size).max() < 0.06  # the renders agree
+    assert "one pair per depth" not in "".join(_cells("05b_depth_precision", "markdown"))
 
 
 # -- the lessons' widgets, driven here (the lessons leave them to the student) ----------------

@@ -1368,13 +1368,14 @@ def test_depth_explorer_keeps_every_near_end_on_its_axes():
     w.close()
 
 
-def test_depth_explorer_legend_names_the_first_fight_line():
-    """Review r47 05b-7: the dotted line where the grid first finds a fight had no legend
-    entry; it is named last, so the "now" entry stays the second."""
+def test_depth_explorer_legend_names_the_half_the_time_line():
+    """Review r47 05b-7: the dotted line had no legend entry; it is named last, so the "now"
+    entry stays the second. Review r54 05b-2: it marks where a pair fights half the time
+    (Δz = 2δ), no longer where the grid's one pair per depth first fought."""
     from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
 
     w = DepthPrecisionExplorer("unorm16", near=0.1, far=1000.0, backend="image")
     texts = [t.get_text() for t in w.ax.get_legend().get_texts()]
-    assert texts[-1] == "first fight found" and texts[1].startswith("now")
+    assert texts[-1] == "fights half the time (Δz = 2δ)" and texts[1].startswith("now")
     assert np.isfinite(w.marker.get_xdata()).all()  # unorm16 fights: the line is drawn
     w.close()

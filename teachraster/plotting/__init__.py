@@ -42,7 +42,7 @@ Per-pixel values
 - :func:`plot_attribute` -- an interpolated attribute (affine or perspective-correct).
 - :func:`plot_error_heatmap` -- |a − b| with a colour bar; its maximum marked and in the title.
 - :func:`plot_profile` -- two images' values along one row or column, as two curves.
-- :func:`plot_depth` -- the depth buffer (window depth, 0 = near).
+- :func:`plot_depth` -- the depth buffer (window depth, dark = nearer).
 - :func:`plot_image` -- a colour image such as a texture-mapped SceneFrame.
 - :func:`plot_plan` / :func:`format_plan` -- a render plan as a text table.
 

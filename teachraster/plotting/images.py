@@ -519,7 +519,7 @@ def plot_depth(
     if depth is None:
         raise ValueError("no depth: give the triangle window depths, Triangle(..., z=[...])")
     result = show_values(ax, depth, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
-                   label="window depth z (0 = near)")  # fmt: skip
+                   label="window depth z (dark = nearer)")  # fmt: skip
     if title:
         ax.set_title("depth buffer")
     return result

@@ -116,7 +116,7 @@ class ZBufferStepView:
         bar.locator = MaxNLocator(4)  # at least three labelled ticks over the short range
         bar.formatter = FormatStrFormatter("%.3f")
         bar.update_ticks()
-        bar.set_label("window depth z (0 = near)")  # the name plot_depth gives it
+        bar.set_label("window depth z (dark = nearer)")  # the name plot_depth gives it
         self.colorbar = bar
         rows, cols = np.nonzero(self.frame.coverage)
         pad = 0.08 * max(width, height)

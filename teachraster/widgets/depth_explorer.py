@@ -4,8 +4,10 @@ Lesson 05b's widget. The figure plots the smallest change in view depth the dept
 still sees, :func:`teachraster.pipeline.depth.depth_resolution`, against the distance, for the
 chosen format, near plane and mapping (window depth or reverse-Z), with two surfaces a gap
 ``delta`` apart as a horizontal line: where the curve rises above the line they can store the
-same depth and z-fight (:func:`teachraster.pipeline.depth.fights`). A faint reference curve keeps the starting
-configuration on screen for comparison.
+same depth and z-fight (:func:`teachraster.pipeline.depth.fights`). Past that crossing a pair
+fights with probability ``1 - delta / resolution`` (the pair shares a step unless a step boundary
+falls between them); a dotted line marks where that reaches one half, ``resolution = 2 delta``.
+A faint reference curve keeps the starting configuration on screen for comparison.
 """
 
 from __future__ import annotations
@@ -57,6 +59,32 @@ def first_fight(z, delta: float, near: float, far: float, fmt: str, mapping: str
     return float(z[np.argmax(hit)]) if hit.any() else None
 
 
+def where_reaches(z, resolution, level: float):
+    """The view depth at which ``resolution`` (increasing along sorted ``z``) first reaches
+    ``level``, interpolated on log scales; ``None`` if it stays below ``level`` throughout.
+
+    With ``level = 2 delta`` this is where two surfaces ``delta`` apart fight with probability
+    one half: a pair shares a step with probability ``1 - delta / resolution``.
+
+    Examples
+    --------
+    >>> z = np.geomspace(1.0, 100.0, 50)
+    >>> round(where_reaches(z, 1e-4 * z**2, 0.01), 3)
+    10.0
+    >>> where_reaches(z, 1e-4 * z**2, 10.0) is None
+    True
+    """
+    z, resolution = np.asarray(z, dtype=np.float64), np.asarray(resolution, dtype=np.float64)
+    above = resolution >= level
+    if not above.any():
+        return None
+    i = int(np.argmax(above))
+    if i == 0:
+        return float(z[0])
+    pair = slice(i - 1, i + 1)  # the curve reaches the level between these two depths
+    return float(np.exp(np.interp(np.log(level), np.log(resolution[pair]), np.log(z[pair]))))
+
+
 class DepthPrecisionExplorer:
     """Depth resolution against distance: pick the format, the near plane, reverse-Z.
 
@@ -84,6 +112,9 @@ class DepthPrecisionExplorer:
         Resolution at ``z`` for the current settings (what the curve shows).
     fight_from : float or None
         Nearest plotted distance where the two surfaces z-fight.
+    half_from : float or None
+        Distance where the resolution reaches ``2 delta``: beyond it two surfaces ``delta``
+        apart fight at more than half of their pixels (the dotted line).
 
     Examples
     --------
@@ -117,10 +148,11 @@ class DepthPrecisionExplorer:
                                       label="now")  # fmt: skip
             ax.axhline(self.delta, color=COLORS["outside"], ls="--", lw=2,
                        label=f"gap δ = {self.delta:g}")  # fmt: skip
-            # labelled: the caption alone explained it (review r47 05b-7); last in the legend,
-            # so the "now" entry stays the second (_now_text)
-            self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=1.5, ls=":",
-                                     label="first fight found")  # fmt: skip
+            # where a pair δ apart fights with probability ½ (Δz = 2δ), not where one sampled
+            # pair happens to fight (review r54 05b-2); last in the legend, so the "now" entry
+            # stays the second (_now_text)
+            self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=2, ls=":",
+                                     label="fights half the time (Δz = 2δ)")  # fmt: skip
             ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-12, 1e3),
                    xlim=(0.01, self.far))  # fmt: skip
             ax.grid(True, which="major", alpha=0.3)
@@ -178,11 +210,12 @@ class DepthPrecisionExplorer:
         fmt, mapping = self.format.value, self.mapping
         self.resolution = depth_resolution(self.z, near, self.far, fmt, mapping=mapping)
         self.fight_from = first_fight(self.z, self.delta, near, self.far, fmt, mapping)
+        self.half_from = where_reaches(self.z, self.resolution, 2 * self.delta)
 
     def _draw(self) -> None:
         self.curve.set_data(self.z, self.resolution)
         self.curve.set_label(f"now: {self._label()}")
-        x = np.nan if self.fight_from is None else self.fight_from
+        x = np.nan if self.half_from is None else self.half_from
         self.marker.set_xdata([x, x])
         legend = self.ax.get_legend()
         if legend is None:
@@ -243,19 +276,18 @@ class DepthPrecisionExplorer:
         # quote the curve's first value for them)
         at = [d for d in (1.0, 10.0, 100.0) if self.z[0] <= d <= self.z[-1]]
         res = np.interp(at, self.z, self.resolution)
-        if self.fight_from is None:
+        cross = where_reaches(self.z, self.resolution, self.delta)
+        if self.fight_from is None or cross is None:
             where = "<b>no z-fighting</b> up to the far plane"
         else:
-            # "first found", not "from": nearer, past the crossing, some pixels already fight
-            i = max(int(np.argmax(self.resolution >= self.delta)), 1)
-            pair = slice(i - 1, i + 1)  # the curve crosses δ between these grid points
-            cross = np.exp(np.interp(np.log(self.delta), np.log(self.resolution[pair]),
-                                     np.log(self.z[pair])))  # fmt: skip
-            found = f"z ≈ {distance(self.fight_from)}"
-            if self.fight_from >= self.z[-1]:  # the grid's last distance: say which it is
-                found = f"the far plane, {found}"
-            where = (f"z-fighting first found at <b>{found}</b>"
-                     f" (Δz = δ at z ≈ {distance(cross)})")  # fmt: skip
+            # possible from the crossing on, at half the pixels from Δz = 2δ (1 - δ/Δz = ½)
+            where = f"z-fighting possible from Δz = δ at <b>z ≈ {distance(cross)}</b>"
+            if self.half_from is None:
+                where += ", at less than half the pixels up to the far plane,"
+            else:
+                where += (
+                    f", at half the pixels from Δz = 2δ at <b>z ≈ {distance(self.half_from)}</b>,"
+                )
         text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
         if at:
             text += (f" · Δz at z = {', '.join(f'{d:g}' for d in at)}: "
