@@ -225,7 +225,7 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert ns.cyc["perspective"] / ns.cyc["affine"] == 19.5  # u and v priced (r48 06-D1)
     assert "affine → perspective-correct alone" not in md
     assert "Which of those two is faster in numpy, this lesson does not claim" in md
-    assert "on either side in a run" in md
+    assert "a little faster in some runs, a little slower in others" in md
     # 06-4: every table prints min..max beside the median (the depth and edge tables too)
     assert "{'min..max ms':>12s}" in code and "{spread(r):>12s}" in code
     # r37 06-5: one paragraph of §1 reads the time columns; the others no longer repeat it
