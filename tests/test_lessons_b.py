@@ -165,6 +165,12 @@ def test_06_edge_bits_and_depth_claims():
     # times", growing with the triangle towards the printed limit
     assert 4 < ns.fill_ratio["256²"] < ns.fill_ratio["512²"] < ns.fill_limit < 10, ns.fill_ratio
     assert (ns.per_centre, ns.per_pixel) == (8, 2)
+    # review r53 06-12: the stepped span table priced, "at the limit already at 256²"
+    assert all(round(v, 1) == round(ns.fill_limit, 1) for v in ns.stepped_ratio.values())
+    # review r56 06-3/06-7: a column that reads the same in every row is said once under its
+    # table; the times are in the appendix, one table per group
+    source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
+    assert "every variant: " in source and source.count("times(group, timers)") == 1
 
 
 def test_06_every_gap_and_double_is_drawn_above_the_mesh():
@@ -502,7 +508,9 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert "checkerboard two cells down" in md
     assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
     # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
-    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in cells[-1]
+    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in next(
+        c for c in cells if "**Try it:**" in c
+    )
     # what the question gives is what the fill group counted
     assert ns.box256.size == 61_500 and ns.covered256 == 30_321 and ns.lines256 == 246
     # q_rule: the tie rule is named after the figure, not above the question
