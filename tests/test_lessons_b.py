@@ -313,7 +313,23 @@ def test_06_divide_cost_slider_reprices_the_front():
         for n in (2, 16):
             assert priced_rows[f"subdivided N={n}"] == pytest.approx(2 + (d + 17) / n)
     md = "".join(line for c in nb["cells"] if c["cell_type"] == "markdown" for line in c["source"])
-    assert "$d + 9$" in md and "$2 + (d + 17)/N$" in md and "$d \\le 3$" in md
+    # review r56: the closed forms answer q_price (an order at d = 1), so they are held text now
+    held = ns.FRONT_TEXT
+    assert "$d + 9$" in held and "$2 + (d + 17)/N$" in held and "$d \\le 3$" in held
+    assert "$d \\le 3$" not in md and "FRONT_TEXT = (" in next(
+        "".join(c["source"])
+        for c in nb["cells"]
+        if "".join(c["source"]).startswith("q_price.hold()")
+    )
+    # q_price: cheapest first at d = 1, N = 2 dearer than the exact divide (d <= 3), the cards
+    # in the question not already in that order
+    assert ns.price_order == ["affine", "subdivided N=16", "subdivided N=4", "perspective",
+                              "subdivided N=2"]  # fmt: skip
+    assert ns.price_items != ns.price_order and "answer=price_order" in "".join(
+        "".join(c["source"])
+        for c in nb["cells"]
+        if "q_price = PredictOrder(" in "".join(c["source"])
+    )
     assert "for the texture's two coordinates $u$ and $v$" in md
 
 
