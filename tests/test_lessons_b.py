@@ -165,6 +165,12 @@ def test_06_edge_bits_and_depth_claims():
     # times", growing with the triangle towards the printed limit
     assert 4 < ns.fill_ratio["256²"] < ns.fill_ratio["512²"] < ns.fill_limit < 10, ns.fill_ratio
     assert (ns.per_centre, ns.per_pixel) == (8, 2)
+    # review r53 06-12: the stepped span table priced, "at the limit already at 256²"
+    assert all(round(v, 1) == round(ns.fill_limit, 1) for v in ns.stepped_ratio.values())
+    # review r56 06-3/06-7: a column that reads the same in every row is said once under its
+    # table; the times are in the appendix, one table per group
+    source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
+    assert "every variant: " in source and source.count("times(group, timers)") == 1
 
 
 def test_06_every_gap_and_double_is_drawn_above_the_mesh():
@@ -225,7 +231,7 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert ns.cyc["perspective"] / ns.cyc["affine"] == 19.5  # u and v priced (r48 06-D1)
     assert "affine → perspective-correct alone" not in md
     assert "Which of those two is faster in numpy, this lesson does not claim" in md
-    assert "on either side in a run" in md
+    assert "a little faster in some runs, a little slower in others" in md
     # 06-4: every table prints min..max beside the median (the depth and edge tables too)
     assert "{'min..max ms':>12s}" in code and "{spread(r):>12s}" in code
     # r37 06-5: one paragraph of §1 reads the time columns; the others no longer repeat it
@@ -307,7 +313,23 @@ def test_06_divide_cost_slider_reprices_the_front():
         for n in (2, 16):
             assert priced_rows[f"subdivided N={n}"] == pytest.approx(2 + (d + 17) / n)
     md = "".join(line for c in nb["cells"] if c["cell_type"] == "markdown" for line in c["source"])
-    assert "$d + 9$" in md and "$2 + (d + 17)/N$" in md and "$d \\le 3$" in md
+    # review r56: the closed forms answer q_price (an order at d = 1), so they are held text now
+    held = ns.FRONT_TEXT
+    assert "$d + 9$" in held and "$2 + (d + 17)/N$" in held and "$d \\le 3$" in held
+    assert "$d \\le 3$" not in md and "FRONT_TEXT = (" in next(
+        "".join(c["source"])
+        for c in nb["cells"]
+        if "".join(c["source"]).startswith("q_price.hold()")
+    )
+    # q_price: cheapest first at d = 1, N = 2 dearer than the exact divide (d <= 3), the cards
+    # in the question not already in that order
+    assert ns.price_order == ["affine", "subdivided N=16", "subdivided N=4", "perspective",
+                              "subdivided N=2"]  # fmt: skip
+    assert ns.price_items != ns.price_order and "answer=price_order" in "".join(
+        "".join(c["source"])
+        for c in nb["cells"]
+        if "q_price = PredictOrder(" in "".join(c["source"])
+    )
     assert "for the texture's two coordinates $u$ and $v$" in md
 
 
@@ -502,7 +524,9 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert "checkerboard two cells down" in md
     assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
     # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
-    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in cells[-1]
+    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in next(
+        c for c in cells if "**Try it:**" in c
+    )
     # what the question gives is what the fill group counted
     assert ns.box256.size == 61_500 and ns.covered256 == 30_321 and ns.lines256 == 246
     # q_rule: the tie rule is named after the figure, not above the question

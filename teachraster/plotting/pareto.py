@@ -114,7 +114,8 @@ def floor_ticks(ax, floor: float, formatter=None) -> None:
     The floor is a stand-in for zero on a log axis: a tick labelled 20 below a floor drawn at
     45 would read as "less than exact", and points on the floor as 45 wrong pixels. Major ticks
     up to twice the floor are dropped, not left bare: a decade mark without its number read as a
-    scale break (review r6, 06-2). Minor ticks keep their marks.
+    scale break (review r6, 06-2). Minor ticks start at the lowest major tick: marks between
+    the floor and it, or under the floor, suggested values below "0" (review r56 06-4).
     """
     yaxis = ax.yaxis
     major = formatter if formatter is not None else yaxis.get_major_formatter()
@@ -122,6 +123,7 @@ def floor_ticks(ax, floor: float, formatter=None) -> None:
     yaxis.set_major_locator(_MajorAboveFloor(yaxis.get_major_locator(), floor))
     yaxis.set_major_formatter(_AboveFloor(major, floor))
     yaxis.set_minor_formatter(_AboveFloor(minor, floor))
+    yaxis.set_minor_locator(_MinorAboveMajor(yaxis.get_minor_locator(), floor))
 
 
 class _MajorAboveFloor(Locator):
@@ -143,6 +145,19 @@ class _MajorAboveFloor(Locator):
     def _above(self, locs):
         locs = np.asarray(locs, dtype=float)
         return locs[locs > 2.0 * self.floor]
+
+
+class _MinorAboveMajor(_MajorAboveFloor):
+    """``base``'s minor tick positions from the lowest major tick above twice ``floor`` up
+    (above twice ``floor`` when no major tick is in view)."""
+
+    def _above(self, locs):
+        locs = np.asarray(locs, dtype=float)
+        majors = np.asarray(self.axis.get_majorticklocs(), dtype=float)
+        lo, hi = sorted(self.axis.get_view_interval())
+        majors = majors[(majors > 2.0 * self.floor) & (majors >= lo) & (majors <= hi)]
+        start = majors.min() if majors.size else 2.0 * self.floor
+        return locs[locs >= start]
 
 
 class _AboveFloor(Formatter):
