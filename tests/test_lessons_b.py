@@ -1149,6 +1149,14 @@ def test_09_quads_closed_form_and_predictions():
     # the title counts distinct quads, the plan (triangle, quad) shadings: one quad twice
     assert ns.art.n_quads == 20 and ns.shadings == 21
     assert f"{ns.shadings} 2x2 quad shading(s)" in str(ns.quads.plan["derivatives"])
+    # q_helpers (review r42 09-5): the answer is the lone triangle's uncovered quad pixels,
+    # two of its quads hold one covered pixel each (the explanation names them)
+    cov = ns.lone.coverage
+    touched = np.kron(cov.reshape(3, 2, 4, 2).any(axis=(1, 3)), np.ones((2, 2), bool))
+    assert np.array_equal(ns.lone_helpers, touched & ~cov) and ns.lone_helpers.sum() == 7
+    assert ns.one_pixels == "(1, 3) and (4, 1)"
+    # q_reads: one read of the right level errs less than four of level 0 on minified pixels
+    assert ns.ratio < 0.9 and ns.reads_choices[2].startswith("nearest-mipmap-nearest")
     # the Predict of §6, before the EXT formula: 8.2 x 8 texels takes 2 probes, a level finer
     from teachraster.plotting.footprint import footprint
 

@@ -48,11 +48,12 @@ TRUTH_CACHE = 96
 def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
     """Size ``fig`` to the notebook column and add the explorer's Axes.
 
-    Three panels in a row, as large as each other: the filtered image, the mip level(s)
-    each pixel reads and the error against the footprint mean, with a colour bar under each
-    of the last two (its tick labels and label below it). The lesson asks students to read
-    the error panel: stacked beside a large image, it and the level panel were thumbnails
-    (about 125 px wide at 1024 x 768, their labels 9-10 px).
+    Two rows: the filtered image on top, centred and as large as the column allows at a
+    whole number of figure pixels per image pixel (its checks keep equal widths); below it
+    the mip level(s) each pixel reads and the error against the footprint mean, side by side,
+    with a colour bar under each (its tick labels and label below it). Three panels in one
+    row were each about 190 px wide in a 1280 px browser: the far checks that the lesson asks
+    students to compare were a few pixels tall (review r42, 09-3).
 
     Returns
     -------
@@ -64,26 +65,30 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
         below its colour bar's tick labels, off the picture.
     """
     s, r, fw = font_scale(), width / height, column_inches(fig)
-    # Margins and gaps hold what sticks out of the panels (at 0.36 in the error's
-    # title ran 4 px past both sides of its panel, and the error bar's first tick label came
-    # 21 px from the level bar's last): half a tick label beyond a colour bar's end, on the
-    # right too (a range ending on a tick), and the titles' breathing room between panels.
+    # Margins and gaps hold what sticks out of the panels: half a tick label beyond a colour
+    # bar's end (a range ending on a tick) and the titles' breathing room between panels.
     left, right, gap = 0.15, 0.17 * s, 0.28 * s
-    w = (fw - left - right - 2 * gap) / 3
+    w = (fw - left - right - gap) / 2  # the lower row: two panels
     h = w / r
+    # the image: about 0.62 of the column (the page stays about 900 px tall), an integer
+    # number of figure pixels per texel-sized image pixel where the image is small enough
+    scale = max(int(0.62 * fw * fig.dpi / width), 1)
+    top_w = min(scale * width / fig.dpi, fw - left - right)
+    top_h = top_w / r
     title = 0.25 * s + 0.1  # no tick labels: one row of titles (their pad included)
     # between a panel and its colour bar (a pixel more than the bar's padded box needs: the
     # cached bar is put back only where it overlaps no panel); the bar
     pad, bar = 0.09 * s, 0.1 * s
     below = pad + bar + 0.53 * s  # the bar, its tick labels and the row of its label
-    fh = title + h + below
+    fh = title + top_h + title + h + below
     fig.set_size_inches(fw, fh)
-    panels, bars = [], []
-    for k in range(3):
+    x_top = left + (fw - left - right - top_w) / 2
+    panels = [fig.add_axes((x_top / fw, (below + h + title) / fh, top_w / fw, top_h / fh))]
+    bars = []
+    for k in range(2):
         x = left + k * (w + gap)
         panels.append(fig.add_axes((x / fw, below / fh, w / fw, h / fh)))
-        if k:
-            bars.append(fig.add_axes((x / fw, (below - pad - bar) / fh, w / fw, bar / fh)))
+        bars.append(fig.add_axes((x / fw, (below - pad - bar) / fh, w / fw, bar / fh)))
     # below the tick labels, as the bar's label, and clear of the bar's box (tick labels
     # and all): the colour bar is put back from its cache only where nothing moving overlaps
     label_row = (pad + bar + 0.36 * s) / h
@@ -93,7 +98,7 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
 class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
 
-    Three panels: the filtered image, the mip level(s) each pixel reads (as the engine
+    Three panels: the filtered image (on top), the mip level(s) each pixel reads (as the engine
     decides them, :func:`~teachraster.pipeline.texturing.texture_filters.levels_read`: one
     colour per level, two levels' colours mixed by their weights where a filter blends them,
     the probes' finer levels for ``anisotropic``, level 0 everywhere for ``nearest`` and

@@ -89,7 +89,7 @@ class CachedSprite:
 def drawn_box(artist, renderer) -> Bbox | None:
     """Display box of what ``artist`` has just drawn.
 
-    For an Axes (a colour bar's): its frame and the extents of its tick labels, axis labels
+    For an Axes (a colour bar's): its frame, spines and patches, and the extents of its tick labels, axis labels
     and offset texts, whose layouts the draw has just cached; ``get_tightbbox`` would lay
     out the ticks again, which costs half a draw. Tick marks lie between the frame and their
     labels (or within the padding).
@@ -99,6 +99,10 @@ def drawn_box(artist, renderer) -> Bbox | None:
     if not isinstance(artist, Axes):
         return artist.get_tightbbox(renderer)
     boxes, reach = [artist.bbox], 0.0
+    # a colour bar's outline spine and extend triangles reach beyond its frame, by 5 % of
+    # its length (the tip of a long bar's arrow was left out of the kept pixels)
+    boxes += [s.get_window_extent(renderer) for s in artist.spines.values() if s.get_visible()]
+    boxes += [p.get_window_extent(renderer) for p in artist.patches if p.get_visible()]
     for axis in (artist.xaxis, artist.yaxis):
         if not axis.get_visible():
             continue
