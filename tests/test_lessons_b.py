@@ -1449,7 +1449,14 @@ def test_10_r36_items():
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "Kanter" in md and "draw-stream binning rasterizer" in md
     assert "Z compression" in md and "Fast Z clear" in md and "Why 8×8" in md
-    assert "along the top and down both sides" in md
+    assert "down the upper half of both sides" in md
+    from teachraster.plotting.tiles import early_z_counts
+
+    sphere = ns.frames["uv_sphere"]  # r52: the twice-shaded pixels lie in the upper half
+    rows = np.nonzero(sphere.coverage)[0]
+    twice = np.nonzero(early_z_counts(sphere, "shaded") == 2)[0]
+    assert (twice < (rows.min() + rows.max()) / 2).mean() > 0.9
+    assert early_z_counts(sphere, "hi_z").max() == 1  # the key's "1 fragment" holds for Hi-Z
     fig, ax = plt.subplots()
     try:
         table = plot_block_counters(ax, ns.fill).table

@@ -293,7 +293,7 @@ def test_new_block_sizes_or_traversal_start_the_block_slider_again(explorer, siz
     blocks", and one step on gave "block 11 of 193". New sizes (or a new order) renumber the
     blocks: the slider starts again at 0, and its next step is block 1."""
     explorer.block.value = 10
-    assert explorer.caption_text.startswith("block 10 of 864:")
+    assert explorer.caption_text.startswith("block 10 of 864")
     if sizes == explorer.sizes.value:  # the same range: the traversal renumbers instead
         explorer.traversal.value = "morton"
     else:
@@ -468,3 +468,23 @@ def test_level_slider_label_says_when_it_does_not_show_its_level():
         assert ex.level.description == "level"
     finally:
         ex.close()
+
+
+def test_block_slider_zooms_on_small_blocks(explorer):
+    """Reviews r45 #7, r52 #10: a 1×1 block of the 64 × 64 grid was a ~6 px square; the
+    picture zooms on its top-level block while the block slider visits it, and the level
+    slider shows the whole image again."""
+    from teachraster.widgets.tiles import ZOOM_AT
+
+    blocks, order = explorer.blocks, explorer.order
+    small = next(k for k in range(1, len(order) + 1) if blocks.size[order[k - 1]] <= ZOOM_AT)
+    explorer.block.value = small
+    top = explorer.zoom_block()
+    assert top is not None and blocks.parent[top] == -1
+    x0, x1 = explorer.ax.get_xlim()
+    assert x1 - x0 == blocks.size[top] + 1 and "zoomed on its" in explorer.caption_text
+    explorer.block.value = 1  # a top-level block: the whole image
+    assert explorer.zoom_block() is None and explorer.ax.get_xlim() == (0, explorer.width)
+    explorer.block.value = small
+    explorer.level.value = 1
+    assert explorer.ax.get_xlim() == (0, explorer.width)

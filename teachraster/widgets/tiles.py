@@ -42,6 +42,10 @@ STEPPED_CURRENT = "the block visited now (block slider)"
 #: value then is not what the picture shows (it read "level 0" over a 1×1 block; review
 #: r52, lesson 10), only where moving it goes.
 LEVEL_LABELS = {True: "level", False: "show level"}
+#: Blocks this small (px) or smaller are shown zoomed on their top-level block while the
+#: block slider visits them: a 1×1 block of a 64 × 64 grid was a ~6 px square found only by
+#: its outline (reviews r45 #7, r52 #10).
+ZOOM_AT = 2
 
 
 class TileExplorer(Holdable):
@@ -246,6 +250,31 @@ class TileExplorer(Holdable):
     def _set_artists(self) -> None:
         self.artists.show(self.shown)
         self.artists.show_current(self.blocks, self.current)
+        limits = self._view_limits()
+        if limits != (self.ax.get_xlim(), self.ax.get_ylim()):
+            self.ax.set(xlim=limits[0], ylim=limits[1])
+            self._blit.invalidate()  # the cached background shows the old window
+
+    def zoom_block(self) -> int | None:
+        """The top-level block the picture is zoomed on (its index), or None: the whole
+        image. Zoomed while the block slider visits a block of :data:`ZOOM_AT` px or less."""
+        b = self.blocks
+        if self.current is None or int(b.size[self.current]) > ZOOM_AT:
+            return None
+        top = int(self.current)
+        while b.parent[top] >= 0:
+            top = int(b.parent[top])
+        return top
+
+    def _view_limits(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        top = self.zoom_block()
+        if top is None:
+            return (0.0, float(self.width)), (float(self.height), 0.0)
+        b = self.blocks
+        x0, y0, size = int(b.col[top]), int(b.row[top]), int(b.size[top])
+        x1, y1 = min(x0 + size, self.width), min(y0 + size, self.height)
+        pad = 0.5  # half a pixel round the block: its outline stays inside the frame
+        return (x0 - pad, x1 + pad), (y1 + pad, y0 - pad)
 
     def _info_html(self) -> str:
         return html_escape(self.caption_text)
@@ -268,7 +297,11 @@ class TileExplorer(Holdable):
         else:
             b = int(self.order[k - 1])
             caption = self.blocks.caption(b, self.fill.trace.edges)
-            self.caption_text = f"block {k} of {n}: {caption}"
+            top, zoom = self.zoom_block(), ""
+            if top is not None:
+                size = int(self.blocks.size[top])
+                zoom = f" (picture zoomed on its {size}×{size} block)"
+            self.caption_text = f"block {k} of {n}{zoom}: {caption}"
         self._refresh()
 
     def _refresh(self) -> None:

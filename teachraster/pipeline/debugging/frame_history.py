@@ -910,8 +910,14 @@ def _label_records(ax, h: PixelHistory, x: np.ndarray) -> None:
         return
     centres, tris = zip(*_triangle_groups(h)) if h.records else ((), ())
     ax.set_xticks(list(centres), [str(t) for t in tris], minor=True, fontsize="small")
-    ax.tick_params(axis="x", which="minor", length=0, pad=16)
-    ax.set_xlabel("triangle (its samples above it)")
+    # the triangle's line one full line below the samples' (a fixed 16-pt pad let the
+    # classroom style's larger digits touch: "0 1₉2 3", review r55 #9): pad in points =
+    # the major ticks' own pad and length, the samples' text height and a gap
+    major = ax.xaxis.get_major_ticks()
+    size = major[0].label1.get_size() if major else 10.0
+    gap = ax.xaxis.get_tick_padding() if major else 3.5
+    ax.tick_params(axis="x", which="minor", length=0, pad=gap + 1.5 * size)
+    ax.set_xlabel("triangle (samples above)")
 
 
 def swatch_colours(h: PixelHistory, key: str) -> np.ndarray:
