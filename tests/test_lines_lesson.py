@@ -344,6 +344,9 @@ def test_saturate_factor_is_computed_from_the_colours():
 
     text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
     assert r"\min(A_s, 1 - A_d)" in text and "another fixed factor" not in text
-    assert "§17.3.6" not in text  # cited by the section's title: the number was not verified
+    # numbers checked against the GL 4.6 core-profile PDF (OpenGL-Registry, May 5, 2022):
+    # §17.3.6 Blending clamps a fixed-point buffer's inputs; Table 17.2 (§17.3.6.2) gives
+    # SRC_ALPHA_SATURATE as (f, f, f, 1), f = min(A_s0, 1 - A_d)
+    assert "§17.3.6 *Blending*" in text and "§17.3.6.2, Table 17.2" in text
     with pytest.raises(ValueError, match="SRC_ALPHA_SATURATE"):
         tr.blend_equation([1, 0, 0, 1], [0, 0, 0, 0], "SRC_ALPHA_SATURATE")
