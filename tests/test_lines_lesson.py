@@ -374,3 +374,27 @@ def test_line_standards_cite_verified_sections():
     assert "§14.5.2.1" not in text and "§14.5.2.2 *Wide Lines*" in text
     assert "§14.5.2.3 *Antialiasing*" in text and "E.2.1" in text
     assert "other line segment rasterization algorithms are allowed" in " ".join(text.split())
+
+
+def test_dda_last_orange_column_is_a_near_boundary_line(ns):
+    """r51 12a-5: the lone orange column near the walk's end is explained as a column where
+    the exact line passes within a hair of a row boundary and the (tiny) drift crosses it."""
+    assert ns.last_column > ns.first_column and abs(ns.last_gap) < 1e-4
+    assert abs(ns.last_drift) > abs(ns.last_gap) and np.sign(ns.last_drift) != np.sign(ns.last_gap)
+    assert abs(ns.last_drift) < 0.1 * (ns.steps.value[ns.step_k] - ns.true_y)
+
+
+def test_wide_line_figure_marks_the_differing_pixels(ns):
+    """r51 12a-6: the pixels where GL's parallelogram and the rectangle differ are outlined
+    (as many as the cell prints)."""
+    assert len(ns.wide_differ) == int((ns.gl_shape != ns.wide.coverage).sum()) == 9
+
+
+def test_12b_prints_read_as_numbers(nsb):
+    """r51 12b-7, 12b-8: the layer counts are separated by semicolons (thousands keep their
+    commas), and multiply's order difference is printed in units of the last place."""
+    from notebook_runs import executed, streams
+
+    printed = streams(executed("12b_blending").notebook())
+    assert "triangles: 1,214; 448; 399; 243" in printed
+    assert f"by at most {nsb.mul_ulp} unit(s) in the last place" in printed and nsb.mul_ulp <= 2
