@@ -344,6 +344,57 @@ def test_saturate_factor_is_computed_from_the_colours():
 
     text = _cells_before("12b_blending", "a2cfig01", kinds=("markdown",))
     assert r"\min(A_s, 1 - A_d)" in text and "another fixed factor" not in text
-    assert "§17.3.6" not in text  # cited by the section's title: the number was not verified
+    # numbers checked against the GL 4.6 core-profile PDF (OpenGL-Registry, May 5, 2022):
+    # §17.3.6 Blending clamps a fixed-point buffer's inputs; Table 17.2 (§17.3.6.2) gives
+    # SRC_ALPHA_SATURATE as (f, f, f, 1), f = min(A_s0, 1 - A_d)
+    assert "§17.3.6 *Blending*" in text and "§17.3.6.2, Table 17.2" in text
     with pytest.raises(ValueError, match="SRC_ALPHA_SATURATE"):
         tr.blend_equation([1, 0, 0, 1], [0, 0, 0, 0], "SRC_ALPHA_SATURATE")
+
+
+def test_moved_end_point_prediction_is_computed(ns):
+    """r51 12a-1 and the session-11 brief: cell 7's first task is a numeric prediction asked
+    before the explorer, not a written task: how many of the old line's columns change row
+    when p1 moves one pixel right. The answer is the four ties of the diamond figure (odd
+    columns), and the explanation's shifts are the computed slope difference."""
+    from fractions import Fraction
+
+    assert ns.moved_cols == [1, 3, 5, 7]  # the answer: len(moved_cols) = 4
+    assert sorted(int(x) for x, _ in ns.tie_xy) == ns.moved_cols
+    assert ns.rise == Fraction(1, 18) and 7 * ns.rise < Fraction(1, 2)
+
+
+def test_line_standards_cite_verified_sections():
+    """Section numbers checked against the GL 4.6 core and compatibility PDFs (OpenGL-Registry,
+    May 5, 2022): §14.5.1 Basic Line Segment Rasterization (the diamond-exit rule and the
+    four conditions for other algorithms), §14.5.2.2 Wide Lines (14.5.2.1 is the
+    compatibility profile's Line Stipple), §14.5.2.3 Antialiasing, Appendix E.2.1 (wide lines
+    deprecated; INVALID_VALUE in a forward-compatible context)."""
+    text = _cells_before("12a_lines", "db845d96", kinds=("markdown",))
+    assert "§14.5.2.1" not in text and "§14.5.2.2 *Wide Lines*" in text
+    assert "§14.5.2.3 *Antialiasing*" in text and "E.2.1" in text
+    assert "other line segment rasterization algorithms are allowed" in " ".join(text.split())
+
+
+def test_dda_last_orange_column_is_a_near_boundary_line(ns):
+    """r51 12a-5: the lone orange column near the walk's end is explained as a column where
+    the exact line passes within a hair of a row boundary and the (tiny) drift crosses it."""
+    assert ns.last_column > ns.first_column and abs(ns.last_gap) < 1e-4
+    assert abs(ns.last_drift) > abs(ns.last_gap) and np.sign(ns.last_drift) != np.sign(ns.last_gap)
+    assert abs(ns.last_drift) < 0.1 * (ns.steps.value[ns.step_k] - ns.true_y)
+
+
+def test_wide_line_figure_marks_the_differing_pixels(ns):
+    """r51 12a-6: the pixels where GL's parallelogram and the rectangle differ are outlined
+    (as many as the cell prints)."""
+    assert len(ns.wide_differ) == int((ns.gl_shape != ns.wide.coverage).sum()) == 9
+
+
+def test_12b_prints_read_as_numbers(nsb):
+    """r51 12b-7, 12b-8: the layer counts are separated by semicolons (thousands keep their
+    commas), and multiply's order difference is printed in units of the last place."""
+    from notebook_runs import executed, streams
+
+    printed = streams(executed("12b_blending").notebook())
+    assert "triangles: 1,214; 448; 399; 243" in printed
+    assert f"by at most {nsb.mul_ulp} unit(s) in the last place" in printed and nsb.mul_ulp <= 2

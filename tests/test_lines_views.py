@@ -141,9 +141,35 @@ def test_blending_explorer_controls_keep_their_text():
         assert row.layout.flex_flow == "row wrap"
         for column in row.children[1:]:
             assert column.layout.flex == "0 0 auto"
-        for control in (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb):
+        for control in (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb, ex.white):
             assert control.layout.width == "auto" and control.layout.flex == "0 0 auto"
-        assert not ex.premultiplied.indent and not ex.srgb.indent
+        assert not ex.premultiplied.indent and not ex.srgb.indent and not ex.white.indent
+    finally:
+        ex.close()
+
+
+def test_blending_explorer_clears_to_black_or_white():
+    """The reader asked for the white of the lesson's figures (r43 item 9): the "clear to
+    opaque white" box clears both buffers to (1, 1, 1, 1); uncovered pixels show it, stored
+    alpha under "over" then stays below 1 where a triangle blended, and the order still
+    matters."""
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24))
+    try:
+        bare = np.isnan(ex.color).any(axis=2) | (ex.color[..., 3] == 0)
+        assert bare.any() and np.allclose(ex.color[bare], 0)
+        black_differ = ex.differ
+        ex.white.value = True
+        assert np.allclose(ex.color[bare], 1) and np.allclose(ex.sorted_color[bare], 1)
+        assert "cleared to opaque white" in ex.info.value
+        assert ex.differ > 0 and ex.color[~bare, 3].min() < 1
+        ex.premultiplied.value = True  # over white, the two encodings display alike
+        premultiplied_rgb = ex.color[..., :3].copy()
+        ex.premultiplied.value = False
+        assert np.allclose(ex.color[..., :3], premultiplied_rgb)
+        ex.white.value = False
+        assert ex.differ == black_differ
     finally:
         ex.close()
 
@@ -154,8 +180,9 @@ def test_blending_explorer_order_and_toggles():
     ex = BlendingExplorer(backend="image", size=(24, 24))
     try:
         # the readout names both orders it compares (lesson 12b compares blue, red, yellow with yellow, red, blue)
-        back = " → ".join(str(int(t)) for t in ex._depth_order())
-        assert ex.order != ex._depth_order() and f"back to front ({back})" in ex.info.value
+        back = " → ".join(str(t) for t in ex.depth_order)
+        assert ex.order != ex.depth_order and f"back to front ({back})" in ex.info.value
+        assert ex.depth_order == [2, 0, 1]  # the default scene: yellow farthest, red nearest
         assert f"drawn {' → '.join(map(str, ex.order))}:" in ex.info.value
         ex.sort.click()
         assert ex.differ == 0

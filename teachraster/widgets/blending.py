@@ -6,7 +6,9 @@ later, or sort back to front). The left panel shows the colour buffer in the cho
 the right one the same triangles sorted back to front, with how many pixels differ. Both show
 the RGB written, opaque, as a window displays it (review r31: the stored alpha drawn over a
 checkerboard greyed every colour); the "stored alpha" checkbox draws them over a checkerboard
-by their stored alpha instead. The other checkboxes switch to premultiplied colours
+by their stored alpha instead. "clear to opaque white" clears the buffer to (1, 1, 1, 1)
+instead of transparent black (0, 0, 0, 0): the background of the lesson's figures, where
+straight and premultiplied colours display alike. The other checkboxes switch to premultiplied colours
 (``blend="premultiplied"``, colours multiplied by alpha first: the same RGB on this buffer,
 a different stored alpha) and to an 8-bit sRGB framebuffer (``color_format="srgb8"``:
 blending in linear light, encoded and rounded to 8 bits after every layer) rather than
@@ -37,7 +39,16 @@ def default_scene():
     return clip, np.repeat(rgba[:, None, :], 3, axis=1)
 
 
-def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)):
+def compose(
+    clip,
+    rgba,
+    order,
+    *,
+    premultiplied=False,
+    srgb=False,
+    size=(48, 48),
+    clear_color=(0.0, 0.0, 0.0, 0.0),
+):
     """The (H, W, 4) colour buffer of triangles ``order`` blended *over* in that order.
 
     ``rgba`` holds straight-alpha, sRGB-encoded colours. ``srgb``: an 8-bit sRGB framebuffer
@@ -47,6 +58,8 @@ def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)
     Else blend the encoded numbers.
     ``premultiplied``: multiply colour by alpha first and blend with (ONE, ONE_MINUS_SRC_ALPHA);
     the result is the buffer as stored, premultiplied.
+    ``clear_color``: the buffer's RGBA before the first triangle (linear values; black and
+    white are the same in either encoding), as ``render``'s.
     """
     colours = np.array(rgba, dtype=np.float64)[list(order)]
     if srgb:
@@ -55,7 +68,7 @@ def compose(clip, rgba, order, *, premultiplied=False, srgb=False, size=(48, 48)
         colours[..., :3] *= colours[..., 3:]
     mode = "premultiplied" if premultiplied else "over"
     return render(np.asarray(clip)[list(order)], *size, attrs=colours, blend=mode,
-                  depth_write=False,
+                  depth_write=False, clear_color=clear_color,
                   color_format="srgb8" if srgb else "float64").color  # fmt: skip
 
 
@@ -74,8 +87,11 @@ class BlendingExplorer(Shown):
     ----------
     order : list of int
         The current submission order; ``select``, ``earlier``, ``later``, ``sort`` change it.
-    premultiplied, srgb, alpha : Checkbox
+    premultiplied, srgb, alpha, white : Checkbox
         ``alpha``: draw the stored alpha over a checkerboard instead of the RGB as displayed.
+        ``white``: clear to opaque white (1, 1, 1, 1) instead of transparent black.
+    depth_order : list of int
+        The triangles back to front (farthest first), the order the right panel draws.
     color, sorted_color : (H, W, 4) what the two panels show; ``differ`` pixels that differ.
 
     Examples
@@ -85,6 +101,8 @@ class BlendingExplorer(Shown):
     0
     >>> ex.select.value = 0; ex.later.click(); ex.differ > 0
     True
+    >>> ex.white.value = True; ex.color[0, 0].tolist()  # a corner no triangle covers
+    [1.0, 1.0, 1.0, 1.0]
     >>> ex.close()
     """
 
@@ -110,6 +128,8 @@ class BlendingExplorer(Shown):
                                      layout=widgets.Layout(**whole))  # fmt: skip
         self.alpha = widgets.Checkbox(value=False, description="stored alpha (checkerboard)",
                                       indent=False, layout=widgets.Layout(**whole))  # fmt: skip
+        self.white = widgets.Checkbox(value=False, description="clear to opaque white",
+                                      indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         self._compute()
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
@@ -126,20 +146,21 @@ class BlendingExplorer(Shown):
         self.earlier.on_click(lambda _: self._move(-1))
         self.later.on_click(lambda _: self._move(+1))
         self.sort.on_click(lambda _: self._sort())
-        for box in (self.premultiplied, self.srgb, self.alpha):
+        for box in (self.premultiplied, self.srgb, self.alpha, self.white):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, premultiplied alpha, sRGB",
             "Move a triangle earlier or later: 'over' depends on the order. The buffer is "
-            "cleared to transparent black (0, 0, 0, 0), so the background shows black (not "
-            "the white of the lesson's figures). The panels show the colours written, as "
-            "displayed; tick 'stored alpha' to see alpha as a checkerboard.",
+            "cleared to transparent black (0, 0, 0, 0), into which straight alpha stores a wrong "
+            "alpha; tick 'clear to opaque white' for the white of the lesson's "
+            "figures. The panels show the colours written, as displayed; tick 'stored alpha' "
+            "to see alpha as a checkerboard.",
         )
         column = dict(flex="0 0 auto", margin="0 12px 0 0")
         buttons = widgets.VBox([self.earlier, self.later, self.sort],
                                layout=widgets.Layout(align_items="stretch", **column))  # fmt: skip
         boxes = widgets.VBox(
-            [self.premultiplied, self.srgb, self.alpha], layout=widgets.Layout(**column)
+            [self.premultiplied, self.srgb, self.alpha, self.white], layout=widgets.Layout(**column)
         )
         controls = control_row([self.select, buttons, boxes])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
@@ -149,10 +170,13 @@ class BlendingExplorer(Shown):
         return [(f"{k + 1}. triangle {t} ({names[t % len(names)]})", k)
                 for k, t in enumerate(self.order)]  # fmt: skip
 
-    def _depth_order(self):
-        """Back to front: the largest window depth (farthest) first."""
+    @property
+    def depth_order(self) -> list[int]:
+        """The triangles back to front, the order the right panel draws: the largest mean
+        window depth z/w (farthest) first, ties kept in index order. One depth per triangle
+        is all a sort of whole triangles has (lesson 12b §3: it fails where they cross)."""
         z = self.clip[:, :, 2].mean(axis=1) / self.clip[:, :, 3].mean(axis=1)
-        return list(np.argsort(-z, kind="stable"))
+        return [int(k) for k in np.argsort(-z, kind="stable")]
 
     def _shown(self) -> dict:
         """How :func:`rgba_shown` draws the buffers under the current checkboxes."""
@@ -160,10 +184,11 @@ class BlendingExplorer(Shown):
                 "view": "alpha" if self.alpha.value else "displayed"}  # fmt: skip
 
     def _compute(self) -> None:
+        clear = (1.0, 1.0, 1.0, 1.0) if self.white.value else (0.0, 0.0, 0.0, 0.0)
         opts = {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
-                "size": self.size}  # fmt: skip
+                "size": self.size, "clear_color": clear}  # fmt: skip
         self.color = compose(self.clip, self.rgba, self.order, **opts)
-        self.sorted_color = compose(self.clip, self.rgba, self._depth_order(), **opts)
+        self.sorted_color = compose(self.clip, self.rgba, self.depth_order, **opts)
         self.differ = int((np.abs(self.color - self.sorted_color) > 1e-9).any(axis=2).sum())
 
     def _move(self, delta: int) -> None:
@@ -176,7 +201,7 @@ class BlendingExplorer(Shown):
         self.update()
 
     def _sort(self) -> None:
-        self.order = [int(i) for i in self._depth_order()]
+        self.order = list(self.depth_order)
         self.select.options = self._options()
         self.select.value = 0
         self.update()
@@ -196,9 +221,10 @@ class BlendingExplorer(Shown):
     def _info(self) -> str:
         order = " → ".join(str(t) for t in self.order)
         # name both orders: a lesson may compare other orders of the same triangles (r8)
-        back = " → ".join(str(int(t)) for t in self._depth_order())
+        back = " → ".join(str(t) for t in self.depth_order)
         return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front "
                 f"({back})"
                 f"{' (premultiplied)' if self.premultiplied.value else ''}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}"
+                f"{'; cleared to opaque white' if self.white.value else ''}"
                 f"{'; stored alpha over a checkerboard' if self.alpha.value else ''}")  # fmt: skip
