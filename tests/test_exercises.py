@@ -306,3 +306,26 @@ def test_the_barycentric_figure_shows_the_triangle_and_p():
         assert len(inset.patches) == 3  # the sub-triangle opposite each vertex
     finally:
         plt.close(fig)
+
+
+def test_the_stub_figure_shows_no_case_and_so_no_answer():
+    """issue 30 (r46): the untouched stub's figure drew a case with its expected answer."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import textwrap
+
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises.report import NOTHING_DRAWN_YET
+
+    def stub(*args):
+        raise NotImplementedError
+
+    for name in ("covers", "span", "depth_passes", "mip_level"):
+        fig, ax = plt.subplots()
+        ex.check(name, stub).plot(ax)
+        texts = [t.get_text().replace("\n", " ") for t in ax.texts]
+        assert len(texts) == 1 and texts[0] == " ".join(textwrap.wrap(NOTHING_DRAWN_YET, 60))
+        assert not ax.images and not ax.patches and not ax.lines
+        plt.close(fig)
