@@ -329,3 +329,16 @@ def test_the_stub_figure_shows_no_case_and_so_no_answer():
         assert len(texts) == 1 and texts[0] == " ".join(textwrap.wrap(NOTHING_DRAWN_YET, 60))
         assert not ax.images and not ax.patches and not ax.lines
         plt.close(fig)
+
+
+def test_float32_products_fail_edge_function_and_are_named_float32():
+    """r46 E1: float32 differences (exact) with float32 products passed all 72 cases."""
+
+    def f32(a, b, p):
+        d = np.float32
+        return float(d(b[0] - a[0]) * d(p[1] - a[1]) - d(b[1] - a[1]) * d(p[0] - a[0]))
+
+    report = ex.check("edge_function", f32)
+    assert not report.passed
+    assert all("float32" in f.explanation for f in report.failures)
+    assert ex.check("edge_function", CORRECT["edge_function"]).passed
