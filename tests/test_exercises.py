@@ -306,3 +306,63 @@ def test_the_barycentric_figure_shows_the_triangle_and_p():
         assert len(inset.patches) == 3  # the sub-triangle opposite each vertex
     finally:
         plt.close(fig)
+
+
+def test_the_stub_figure_shows_no_case_and_so_no_answer():
+    """issue 30 (r46): the untouched stub's figure drew a case with its expected answer."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import textwrap
+
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises.report import NOTHING_DRAWN_YET
+
+    def stub(*args):
+        raise NotImplementedError
+
+    for name in ("covers", "span", "depth_passes", "mip_level"):
+        fig, ax = plt.subplots()
+        ex.check(name, stub).plot(ax)
+        texts = [t.get_text().replace("\n", " ") for t in ax.texts]
+        assert len(texts) == 1 and texts[0] == " ".join(textwrap.wrap(NOTHING_DRAWN_YET, 60))
+        assert not ax.images and not ax.patches and not ax.lines
+        plt.close(fig)
+
+
+def test_float32_products_fail_edge_function_and_are_named_float32():
+    """r46 E1: float32 differences (exact) with float32 products passed all 72 cases."""
+
+    def f32(a, b, p):
+        d = np.float32
+        return float(d(b[0] - a[0]) * d(p[1] - a[1]) - d(b[1] - a[1]) * d(p[0] - a[0]))
+
+    report = ex.check("edge_function", f32)
+    assert not report.passed
+    assert all("float32" in f.explanation for f in report.failures)
+    assert ex.check("edge_function", CORRECT["edge_function"]).passed
+
+
+def test_float32_products_fail_covers_on_the_long_edge_and_are_named_float32():
+    """r46 E1: a covers on float32 products passed every case (all edges short)."""
+
+    def e32(a, b, p):
+        d = np.float32
+        return float(d(b[0] - a[0]) * d(p[1] - a[1]) - d(b[1] - a[1]) * d(p[0] - a[0]))
+
+    def covers32(xy, p):
+        v1, v2, v3 = xy
+        if e32(v1, v2, v3) < 0:
+            v2, v3 = v3, v2
+        for a, b in ((v1, v2), (v2, v3), (v3, v1)):
+            e = e32(a, b, p)
+            top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            if e < 0 or (e == 0 and not top_left):
+                return False
+        return True
+
+    report = ex.check("covers", covers32)
+    long_edge = [f for f in report.failures if f.case.startswith("a long edge")]
+    assert long_edge and all("float32" in f.explanation for f in report.failures)
+    assert "longest edge" in long_edge[0].explanation

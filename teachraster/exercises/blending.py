@@ -272,7 +272,7 @@ def _exercise(name: str, mode: str, answers=None) -> Exercise:
     return Exercise(
         name, lambda: blend_cases(mode), as_rgba, lambda g, e, a: all_close(g, e, 1e-6),
         explain_blend, _rule(mode), _mistakes(mode), answers=answers or blend_answers(),
-        draw=blend_drawer(mode), example=5 if mode in PREMULTIPLIED_IN else 4,  # glow; quarter
+        draw=blend_drawer(mode), inputs_drawn=True, example=5 if mode in PREMULTIPLIED_IN else 4,  # glow; quarter
         reference=BLEND_MODULES,  # the tasks' modules compute expected answers too
     )  # fmt: skip
 

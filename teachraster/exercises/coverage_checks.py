@@ -19,7 +19,13 @@ import numpy as np
 from ..core.fill import rasterize
 from . import coverage as cov
 from .answers import as_bool, as_coverage
-from .cases import CoverageCase, catalogue_coverage, drawn_coverage, random_coverage
+from .cases import (
+    CoverageCase,
+    catalogue_coverage,
+    drawn_coverage,
+    drawn_rng,
+    random_coverage,
+)
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 
 FLOAT32_EPS = 2.0**-24
@@ -75,8 +81,40 @@ def _expected(case: CoverageCase) -> np.ndarray:
 
 
 def covers_cases():
-    """The fixed cases (built once) and a few drawn for this check (r46 X1)."""
-    return _covers_cases() + [(c.label, (c,), _expected(c)) for c in drawn_coverage()]
+    """The fixed cases (built once), a few drawn for this check (r46 X1) and a long edge
+    drawn for it where float32 products put a centre on the wrong side (r46 E1)."""
+    drawn = [*drawn_coverage(), long_edge_coverage(drawn_rng())]
+    return _covers_cases() + [(c.label, (c,), _expected(c)) for c in drawn]
+
+
+def _products32(a, b, px, py):
+    """E(a, b, p) at centres (px, py) with the two products rounded to float32 (the
+    differences are exact): a student's float32 arithmetic."""
+    f = np.float32
+    return f(b[0] - a[0]) * (py - a[1]).astype(f) - f(b[1] - a[1]) * (px - a[0]).astype(f)
+
+
+def long_edge_coverage(rng) -> CoverageCase:
+    """A triangle near the origin whose edge v1→v2 is 3000-5000 px long, and an 8 × 8 window
+    on it around a centre that the edge function with float32 products puts on the wrong
+    side (its exact E is within float32's rounding of the ~40-bit products, and not 0)."""
+    while True:
+        a = np.rint(rng.uniform(0, 64, 2) * 256) / 256
+        b = a + np.rint(rng.uniform((2000, 2000), (3500, 3500)) * 256) / 256
+        y = np.arange(int(a[1]) + 8, int(b[1]) - 8) + 0.5
+        x = np.floor(a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]) - 0.5) + 0.5
+        px, py = np.r_[x, x + 1], np.r_[y, y]  # the centres either side of the edge
+        exact = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
+        # a→b runs down: not a top-left edge, so a centre is inside it only where E > 0
+        wrong = (exact != 0) & ((_products32(a, b, px, py) > 0) != (exact > 0))
+        if wrong.any():
+            k = int(np.flatnonzero(wrong)[0])
+            # c on the interior side of a→b (clockwise on screen): a covers that swaps two
+            # vertices of the other winding still evaluates a→b, whose products were drawn
+            xy = np.array([a, b, np.rint((a + b) / 2 + (-1500.0, 1500.0))])
+            label = (f"a long edge drawn for this check ({cov.fmt(float(np.hypot(*(b - a))))} "
+                     "px), centres close to it")  # fmt: skip
+            return CoverageCase(label, xy[None], (int(px[k]) - 4, int(py[k]) - 4), (8, 8))
 
 
 @cache
@@ -133,18 +171,41 @@ def _far_words(args, expected, got) -> str:
     )
 
 
+def _products_words(args, expected, got) -> str:
+    (case,) = args
+    xy = case.triangles[0]
+    longest = max(float(np.hypot(*(xy[k] - xy[k - 1]))) for k in range(3))
+    return (
+        f"this triangle's longest edge runs {cov.fmt(longest)} px: an edge function multiplies "
+        "differences of thousands of px held to 1/256 px (about 40 bits), float32 keeps 24, "
+        "so a centre this close to an edge lands on the wrong side: did you compute in "
+        "float32? Compute the edge functions in float64 (plain Python floats or np.float64)"
+    )
+
+
+def _float32_words(args, expected, got) -> str:
+    (case,) = args
+    far = float(np.abs(case.triangles).max()) >= 1e4
+    return (_far_words if far else _products_words)(args, expected, got)
+
+
 def _float32_fits(args, expected, got) -> bool:
-    """Far from the origin, every wrong centre lies within float32's rounding of an edge."""
+    """Every wrong centre lies within float32's rounding of an edge: far from the origin
+    (the coordinates round), or near it on a long edge (the ~40-bit products round: r46 E1).
+    One mistake for both, so a float32 answer failing both kinds of case is named on both."""
     (case,) = args
     far = float(np.abs(case.triangles).max())
-    if far < 1e4 or not isinstance(got, np.ndarray) or got.shape != expected.shape:
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
         return False
     for k, xy in enumerate(case.triangles):
         extent = float(np.abs(xy - xy[0]).max()) + 1.0
-        tol = 8 * FLOAT32_EPS * far * extent
+        if far < 1e4 and extent < 1000:  # near the origin and short: float32 is exact enough
+            return False
+        tol = 8 * FLOAT32_EPS * (far if far >= 1e4 else extent) * extent
         for i, j in np.argwhere(got[k] != expected[k]):
             c = np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5])
-            if np.abs(cov.values_at(xy, c)).min() > tol:
+            e = np.abs(cov.values_at(xy, c)).min()
+            if e > tol or (far < 1e4 and e == 0):  # near the origin a tie is the rule's
                 return False
     return True
 
@@ -244,7 +305,7 @@ def mistakes(name: str) -> list:
             Mistake("transposed", SWAPPED, gives=lambda case: rule_swapped(case) & _masks(case))
         )
     table.append(_rule_knobs(masked, corners=name == "fill"))
-    table.append(Mistake("float32", _far_words, fits=_float32_fits, only_whole=True))
+    table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
     return table

@@ -13,7 +13,7 @@ import numpy as np
 from ..core.edges import edge_function
 from ..core.span_tables import split_point
 from .answers import as_number
-from .cases import drawn_coverage, proper_triangles, sorted_by_y
+from .cases import drawn_coverage, drawn_rng, proper_triangles, sorted_by_y
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, factor, num, vec
 from .tolerance import close
@@ -30,7 +30,30 @@ def edge_function_cases():
         out.append(
             (f"{label}, edge v{k + 1}→v{(k + 1) % 3 + 1}", (a, b, p), float(edge_function(a, b, p)))
         )
-    return out
+    return out + [_long_edge_case(drawn_rng())]
+
+
+def _float32_products(a, b, p) -> float:
+    """E with its two products rounded to float32 (the differences are exact): what a
+    student's float32 arithmetic gives."""
+    f = np.float32
+    return float(f(b[0] - a[0]) * f(p[1] - a[1]) - f(b[1] - a[1]) * f(p[0] - a[0]))
+
+
+def _long_edge_case(rng) -> tuple:
+    """A long edge (thousands of px, vertices on the 1/256-px grid near the origin) and a
+    centre a few px from it, drawn afresh: its products need about 40 bits, exact in float64
+    and rounded in float32, so float32 arithmetic misses E by far more than the tolerance
+    (r46 E1: float32 differences passed every case, whose differences were all short)."""
+    while True:
+        a = np.rint(rng.uniform(0, 64, 2) * 256) / 256
+        b = a + np.rint(rng.uniform(3000, 4000, 2) * 256) / 256
+        t = rng.uniform(0.3, 0.7)
+        p = np.floor(a + t * (b - a)) + (0.5, 0.5) + (rng.integers(-3, 4), 0)
+        e = _e(a, b, p)
+        if abs(_float32_products(a, b, p) - e) > 1e-3:  # far past close()'s 1e-9 of E
+            return (f"a long edge drawn for this check, {num(float(np.hypot(*(b - a))))} px, "
+                    "a centre near it", (a, b, p), e)  # fmt: skip
 
 
 def _e(a, b, p) -> float:

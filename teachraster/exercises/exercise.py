@@ -212,6 +212,10 @@ class Exercise:
         as ``hint`` until two different answers of the student's have failed in a kernel,
         in full after (r39: the first wrong try printed ⌈x_l − ½⌉, λ_i / w_i, the inequality
         for n; r46: rerunning the same cell printed them); :mod:`.tries` counts the answers.
+    inputs_drawn : bool
+        ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
+        lines): the untouched stub's figure draws the first case so. False (default): the
+        stub's figure draws nothing, since the drawing would show the answer (issue 30, r46).
     """
 
     name: str
@@ -238,6 +242,7 @@ class Exercise:
     reference: Sequence[str] = ()
     once: Sequence[tuple[str, str]] = ()
     hints: Sequence[tuple[str, str]] = ()
+    inputs_drawn: bool = False
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded."""

@@ -560,5 +560,5 @@ FRONT_TO_BACK = Exercise(
     variant_mistakes(_variants, WORDS, WALK), draw=draw_layers, call=call_front_to_back,
     # r9: back_to_front fed the layers up to the opaque one passed unflagged; the package's
     # blend functions compute the over step the task asks you to turn round
-    answers=(PackageAnswer(back_to_front), *blend_answers(STEP_WORDS)), example=4,  # opaque in the middle
+    answers=(PackageAnswer(back_to_front), *blend_answers(STEP_WORDS)), inputs_drawn=True, example=4,  # opaque in the middle
 )  # fmt: skip

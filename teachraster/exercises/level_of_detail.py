@@ -176,7 +176,12 @@ def exercise(scene) -> Exercise:
     return Exercise(
         "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
         _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
-        scene=scene,
+        scene=scene, hints=(
+            # issue 30 (r49): 7.1 asks for this formula; the first wrong try asks back
+            (": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)",
+             ": λ counts the halvings that bring the footprint's longer axis, measured in "
+             "texels of level 0, down to one texel"),
+        ),
     )  # fmt: skip
 
 

@@ -561,5 +561,5 @@ LINE_PIXELS = Exercise(
         "whatever its end points: a placeholder left in?"),
     answers=(PackageAnswer(rasterize_line, modules=("teachraster.core.line_rules",)),),
     draw=draw_line, partial_names=False, once=((_TIE, _TIE_AGAIN),),
-    example=7,  # 45° along diamond edges: ties, drawn over the diamonds
+    inputs_drawn=True, example=7,  # 45° along diamond edges: ties, drawn over the diamonds
 )  # fmt: skip

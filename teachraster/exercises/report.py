@@ -187,8 +187,9 @@ class Report:
         covers them, the function did not) and *extra* ones (the reverse) marked, with the
         edge that decides the first wrong pixel drawn thick. A function that raised, ran out
         of time or returned None or the wrong type gets the case's expected answer with a
-        note saying so; the title says "pass" only when the report passed. Returns the
-        artists.
+        note saying so; the title says "pass" only when the report passed. The untouched
+        stub gets no drawing, only :data:`NOTHING_DRAWN_YET` (a case's picture holds its
+        answer, which the student has not yet worked out). Returns the artists.
         """
         f = self.failures[0] if self.failures else None
         drawing = f.draw if f is not None else self.example
@@ -202,6 +203,8 @@ class Report:
             note = f.explanation
         elif f is None and not self.passed and not self.not_implemented:
             note = self.stopped or self.package or str(self)
+        elif self.not_implemented and drawing is None:
+            note = NOTHING_DRAWN_YET
         if note is not None:
             artists.append(_note(ax, note))
         artists.append(ax.set_title(self.title(), fontsize="small"))
@@ -249,6 +252,13 @@ def issued(report) -> bool:
     only such reports (r18-10: exercise 11's frame note was printed for any object with
     ``passed=True``). A cosmetic gate, not a lock: the package's source is readable."""
     return _ISSUED.get(id(report)) is report
+
+
+#: The stub's figure (issue 30, r46: every stub figure showed one case's expected answer).
+NOTHING_DRAWN_YET = (
+    "Nothing drawn yet: once your function returns answers, the check draws its first "
+    "failing case (or, when all pass, one of the cases) with the rule's answer beside yours"
+)
 
 
 def _note(ax, text: str, width: int = 60):

@@ -531,5 +531,9 @@ def trilinear_exercise(scene) -> Exercise:
     return Exercise(
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
         _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
-        draw=draw_texture_case, scene=scene,
+        draw=draw_texture_case, scene=scene, hints=(
+            # issue 30 (r49): 7.3 asks for the levels and weights; the first wrong try asks back
+            (", then (1 − t)·level ⌊λ⌋ + t·level ⌊λ⌋+1", ", then weigh two levels so that the "
+             "value changes continuously with λ and is a level's own value at a whole λ"),
+        ),
     )  # fmt: skip

@@ -51,7 +51,10 @@ def check_exercise(spec: Exercise, fn) -> Report:
         ran = run_all(spec, fn, cases)
     scene = _scene(spec, fn)
     if all_not_implemented(ran):
-        return Report(spec.name, [], len(cases), True, _drawer(spec, cases[0], None), scene=scene)
+        # issue 30 (r46): the stub's picture draws a case's inputs only, or nothing (most
+        # drawings show the answer, which no try has earned yet: Report.plot says so)
+        inputs = _drawer(spec, cases[0], None) if spec.inputs_drawn else None
+        return Report(spec.name, [], len(cases), True, inputs, scene=scene)
     results = []
     for k, (case, outcome) in enumerate(ran):
         if outcome.error is None:

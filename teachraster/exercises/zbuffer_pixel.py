@@ -188,5 +188,11 @@ def draw_depth_passes(ax, case, got):
 
 DEPTH_PASSES = Exercise(
     "depth_passes", depth_cases, as_passes, same_passes, explain_depth, _rule, DEPTH_MISTAKES,
-    answers=(PackageAnswer(passed_on_arrival),), draw=draw_depth_passes,
+    answers=(PackageAnswer(passed_on_arrival),), draw=draw_depth_passes, hints=(
+        # issue 30 (r46 C2): the task asks for the buffer's rule; the first wrong try asks back
+        ("A fragment passes when it is strictly nearer than the depth the buffer holds, and "
+         "only one that passes and writes depth changes what the buffer holds",
+         "Which depth must the buffer hold so that the nearest opaque fragment ends up on top "
+         "whatever the drawing order, and glass hides nothing? Work the case through by hand"),
+    ),
 )  # fmt: skip
