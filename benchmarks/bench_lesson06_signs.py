@@ -6,7 +6,7 @@ on its anchors, and more); incremental edge evaluation is slower than direct in 
 arithmetic (a cumulative sum besides the products). It also says that affine, which saves one
 pass of several, times nowhere near the cycle model's 1/35 of perspective-correct (which of the
 two is faster it leaves open: the ratio is near 1), and that the same per-pass reading explains
-its fill table's time columns: a textured fill's time is mostly its uv interpolation, coverage
+the fill times in its appendix tables: a textured fill's time is mostly its uv interpolation, coverage
 a small part, and the two fills' coverages differ by far less than their operation counts (20x
 or more). Times are CPU time of this process, the
 fastest of interleaved rounds: waiting for a core is not counted (reviews r17 06-1..3, r20
