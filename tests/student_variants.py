@@ -505,7 +505,9 @@ def _span_with(y_offset=0.5, left=lambda x: math.ceil(x - 0.5), right=lambda x: 
 
 
 def span_by_testing(xy, row):
-    """Every candidate centre of the row tested with exact fractions and the top-left rule."""
+    """Every candidate centre of the row tested with exact fractions and the top-left rule: right
+    wherever it finishes, but a scan of the triangle's columns (r46 02-4), so the check's
+    10^12-px-wide triangle stops it at the CPU limit."""
     v = [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
     if edge_function(*v) == 0:
         return (0, 0)
@@ -711,7 +713,6 @@ DIFFERENT = {
     "half-plane clipping against the diamond": ("line_pixels", line_half_planes),
     "float32 over": ("over", over_float32),
     # issue 30
-    "span by testing every centre": ("span", span_by_testing),
     "perspective weights from ratios of w": ("perspective_weights", weights_ratios),
     "depth passes as 0/1 ints": (
         "depth_passes",

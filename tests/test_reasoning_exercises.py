@@ -10,6 +10,7 @@ import re
 import numpy as np
 import pytest
 import reasoning_solutions as sol
+import student_variants as sv
 from exercise_solutions import CORRECT
 from student_variants import DIFFERENT, KINDS, WRONG, _hiz_with
 
@@ -420,6 +421,33 @@ def test_span_in_float32_fails_far_from_the_origin_and_is_named():
     assert not report.passed
     assert {f.kind for f in report.failures} == {"float32"}, str(report)
     assert "cannot hold the vertices' 1/256-px grid" in report.failures[0].explanation
+
+
+def test_span_by_scanning_the_columns_stops_on_the_wide_triangle():
+    """r46 02-4: testing every centre of the row with the top-left rule passed every case; a
+    triangle 10^12 px wide (a few columns covered near its apex) stops the scan at the CPU
+    limit, and the case's label says why (the span is two crossings at any width)."""
+    report = ex.check("span", sv.span_by_testing)
+    assert not report.passed
+    assert len(report.failures) == 1, str(report)
+    label, words = report.failures[0].case, report.failures[0].explanation
+    assert "10^12 px wide" in label and "never ends" in label, label
+    assert "10^12 px wide" in str(report)
+    assert "2 s of CPU" in words and "a Python call per pixel?" in words, words
+
+
+def test_span_cases_of_the_wide_triangle_follow_the_package_rule():
+    """The wide rows' columns come from the exact crossings (the package's fill does not reach
+    10^12 px); that rounding equals the package's fill on every other case, fixed and drawn."""
+    from teachraster.exercises import spans
+
+    cases = [c for c in spans.span_cases() if "10^12" not in c[0]]
+    assert len(cases) > 150
+    for label, (xy, row), covered in cases:
+        assert spans.exact_columns(xy, row) == covered, label
+    wide = [c for c in spans.span_cases() if "10^12" in c[0]]
+    assert len(wide) == 4 and all(len(c[2]) >= 1 for c in wide)
+    assert all(set(range(*sol.span(*args))) == covered for _, args, covered in wide)
 
 
 def test_span_returned_as_stop_first_is_named_not_a_placeholder():

@@ -64,9 +64,48 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, [row])
         out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
                     "end)", (xy, row), covered[row]))  # fmt: skip
+    out += _wide_cases()
     # first (the drawing of a passing check): a row with covered centres on a vertex's line
     first = next(k for k, case in enumerate(out) if case[2] and "vertex" in case[0])
     return [out[first]] + out[:first] + out[first + 1 :]
+
+
+#: Half the base of the wide cases' triangles: 5·10^11 px (their vertices stay on the 1/256-px
+#: grid in float64, whose integers are exact to 2^53 / 256 ≈ 3.5·10^13 px).
+WIDE = 5 * 10**11
+
+
+def _wide_cases() -> list[tuple[str, tuple, frozenset]]:
+    """Rows near the apex of a triangle 10^12 px wide, in both windings: a few covered columns
+    each. A span is two crossings at any width (Ek, *Triangles and Perspective Correct
+    Interpolation*, §1.1: the fill never tests a pixel), but a scan of the triangle's columns
+    cannot finish (r39/r46 02-4: testing every centre with ``covers`` passed every case). The
+    package's fixed-point fill does not reach 10^12 px, so these rows' columns come from the
+    exact crossings and the top-left rounding (:func:`exact_columns`, checked against the
+    package on every other case by the tests)."""
+    apex, base = (1000.25, 10.125), 10.125 + WIDE
+    out = []
+    for order in ((0, 1, 2), (0, 2, 1)):
+        xy = np.array([apex, (1000.25 - WIDE, base), (1000.25 + WIDE, base)])[list(order)]
+        for row in (10, 13):
+            out.append((f"a triangle 10^12 px wide, row {row} near its apex ({winding(xy)}; "
+                        "a span is two crossings at any width: a scan of the triangle's columns "
+                        "never ends)", (xy, row), exact_columns(xy, row)))  # fmt: skip
+    return out
+
+
+def exact_columns(xy: np.ndarray, row: int) -> frozenset:
+    """The covered columns of ``row`` from the exact crossings: ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉
+    (the top-left rule as a rounding), none along a bottom edge or for zero area.
+
+    >>> sorted(exact_columns(np.array([[0.0, 0.0], [4.0, 4.0], [0.0, 4.0]]), 2))
+    [0, 1, 2]
+    """
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    if cross is None or _horizontal_edge(xy, row + 0.5) == "bottom":
+        return frozenset()
+    half = Fraction(1, 2)
+    return _columns(math.ceil(cross[0] - half), math.ceil(cross[1] - half))
 
 
 def _float32_rows(count: int = 3) -> list[tuple[np.ndarray, int]]:
@@ -194,7 +233,9 @@ def _far_float32_fits(args, expected, got) -> bool:
     if len(moved) != 1 or xs is None:
         return False
     centre, near = min(moved) + 0.5, 4 * float(np.spacing(np.float32(far)))
-    return min(abs(float(x) - centre) for x in xs) <= near
+    # where float32's steps pass a pixel (the 10^12-px triangle: 32768 px) every column is
+    # "near" a crossing: only float32's own span names it there
+    return near < 1 and min(abs(float(x) - centre) for x in xs) <= near
 
 
 def _far_float32_words(args, expected, got) -> str:
@@ -351,9 +392,7 @@ def draw_span(ax, case, got):
     y = row + 0.5
     cross = crossings(xy, Fraction(2 * row + 1, 2))
     got_set = set() if got is None else set(got)
-    lo = math.floor(min(float(xy[:, 0].min()), min(expected | got_set, default=0))) - 1
-    hi = math.ceil(max(float(xy[:, 0].max()), max(expected | got_set, default=0) + 1)) + 1
-    hi = min(hi, lo + 40)
+    lo, hi = _window(xy, expected | got_set, cross)
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     artists.append(ax.axhline(y, color="#888888", linestyle=":", linewidth=1))
@@ -371,10 +410,24 @@ def draw_span(ax, case, got):
         artists.append(ax.add_patch(Rectangle((0, 0), 0, 0, color=colour, label=name)))
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo, hi)
-    ax.set_ylim(max(float(xy[:, 1].max()), y) + 1, min(float(xy[:, 1].min()), y) - 1)
+    top, bottom = min(float(xy[:, 1].min()), y) - 1, max(float(xy[:, 1].max()), y) + 1
+    ax.set_ylim(min(bottom, max(top, row - 6) + 14), top)  # a huge triangle: rows near this one
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
     return artists
+
+
+def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
+    """The columns drawn: the triangle's, at most 40 of them, around the span when the
+    triangle is wider (the wide cases are 10^12 px across)."""
+    lo = math.floor(min(float(xy[:, 0].min()), min(columns, default=0))) - 1
+    hi = math.ceil(max(float(xy[:, 0].max()), max(columns, default=0) + 1)) + 1
+    if hi - lo <= 40:
+        return lo, hi
+    centre = (min(columns) + max(columns)) // 2 if columns else lo + 20
+    if not columns and cross is not None:
+        centre = math.floor((cross[0] + cross[1]) / 2)
+    return centre - 20, centre + 20
 
 
 def _state(rule: bool, yours: bool, no_answer: bool) -> str:
