@@ -523,7 +523,10 @@ def _clip_from_end(v):
       "⌈x_l − ½⌉"),
      ("perspective_weights", lambda lam, w: lam * w / (lam @ w), lambda lam, w: lam / w, "λ_i / w_i"),
      ("safe_near", lambda z, g, f, b: 3 * step(b) * z * z / g,
-      lambda z, g, f, b: 2 * step(b) * z * z / g, "solve step")],
+      lambda z, g, f, b: 2 * step(b) * z * z / g, "solve step"),
+     # 7.1: every case's words measured the axes as ‖(du/dx·W, dv/dx·H)‖ and took log2 ρ
+     ("mip_level", lambda dx, dy, s: 0.5, lambda dx, dy, s: 1.5, "λ = log2 ρ"),
+     ("mip_level", lambda dx, dy, s: 0.5, lambda dx, dy, s: 1.5, "(du/dx·W, dv/dx·H)")],
 )  # fmt: skip
 def test_the_formula_comes_only_after_two_different_wrong_answers(name, fn, other, formula):
     """r39 02-5, 03-3, 05-3: the first wrong try does not print what the task asks to find;

@@ -75,10 +75,17 @@ def explain_level(args, expected, got) -> str:
     ddx, ddy, (h, w) = args
     lx, ly = (float(a) for a in footprint_axes(ddx, ddy, (h, w)))
     return (
-        f"ddx={vec(ddx)}, ddy={vec(ddy)} on an H×W = {h}×{w} texture: the footprint's axes are "
-        f"‖(du/dx·W, dv/dx·H)‖ = {num(lx)} and ‖(du/dy·W, dv/dy·H)‖ = {num(ly)} texels, "
-        f"ρ = {num(max(lx, ly))}, λ = log2 ρ = {num(expected, got)}; yours is {num(got, expected)}"
+        f"ddx={vec(ddx)}, ddy={vec(ddy)} on an H×W = {h}×{w} texture: the footprint's axis "
+        f"along x is {_AXIS_X}{num(lx)} texels, along y {_AXIS_Y}{num(ly)}{_RHO}"
+        f"{num(max(lx, ly))}{_LAMBDA}"
+        f"{num(expected, got)}; yours is {num(got, expected)}"
     )
+
+
+# the words of explain_level that state 7.1's formula, each replaced by a hint on the first
+# failing tries (issue 30: hints before formulas; the per-case words gave it on every failure)
+_AXIS_X, _AXIS_Y = "‖(du/dx·W, dv/dx·H)‖ = ", "‖(du/dy·W, dv/dy·H)‖ = "
+_RHO, _LAMBDA = " texels, ρ = the longer = ", ", λ = log2 ρ = "
 
 
 _NORMS = {
@@ -181,6 +188,8 @@ def exercise(scene) -> Exercise:
             (": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)",
              ": λ counts the halvings that bring the footprint's longer axis, measured in "
              "texels of level 0, down to one texel"),
+            (_AXIS_X, ""), (_AXIS_Y, ""), (_RHO, " texels (ρ = "),
+            (_LAMBDA, "), λ = "),
         ),
     )  # fmt: skip
 
