@@ -236,6 +236,27 @@ def test_trace_steps_and_captions(rule):
         assert "error term" in trace.caption(2)
 
 
+def test_a_tie_is_only_marked_where_gl_perturbation_decides():
+    """Review r63: a line through a diamond's corner and on into it entered both slabs at the
+    same t, and that comparison (which bound to pick: the same t either way) was marked a tie:
+    a horizontal line along a row of centres marked every pixel, and lesson 12a's task 2 (p1
+    dragged to (9.5, 4.5)) two pixels the line crosses inside. Ties are now only where a
+    comparison with GL's ε decides: the slope-½ line through the odd columns' pixel corners."""
+    from teachraster.core.line_rules import diamond
+    from teachraster.core.snapping import units_per_pixel
+
+    unit = units_per_pixel(8)
+
+    def ties(p0, p1):
+        a, b = (tuple(int(round(v * unit)) for v in p) for p in (p0, p1))
+        s = diamond(a, b, unit, 12, 10)
+        return {(int(r), int(c)) for r, c, t in zip(s.rows, s.cols, s.tie, strict=True) if t}
+
+    assert ties((0.5, 2.5), (10.5, 2.5)) == set()
+    assert ties((0.5, 0.5), (9.5, 4.5)) == set()
+    assert ties((0.5, 0.5), (4.5, 2.5)) == {(0, 1), (1, 1), (1, 3), (2, 3)}
+
+
 def test_y_major_trace_walks_rows():
     trace = tr.rasterize_line((1.5, 0.5), (3.5, 9.5), 6, 11, trace=True).trace
     assert trace.step(2).kind == "row" and trace.step(2).row is not None

@@ -183,8 +183,11 @@ def diamond_states(a, b, unit, rows, cols, *, ties: bool = False):
     au, av, bu, bv = a[0] + a[1], a[0] - a[1], b[0] + b[1], b[0] - b[1]
     lo_u, hi_u, ok_u, along_u = _axis_bounds(cx + cy, au, bu - au, half, +1)
     lo_v, hi_v, ok_v, along_v = _axis_bounds(cx - cy, av, bv - av, half, -1)
-    u_first, t1 = _less_tie(lo_u, lo_v)
-    h_first, t2 = _less_tie(hi_u, hi_v)
+    # which slab is entered (left) last only picks the bound: equal bounds pick the same t, so
+    # a tie there decides nothing (a line through a diamond's corner and on into it, review
+    # r63); only the comparisons with hi, 0 and 1 can turn on GL's ε
+    u_first, _ = _less_tie(lo_u, lo_v)
+    h_first, _ = _less_tie(hi_u, hi_v)
     lo, hi = _pick(u_first, lo_v, lo_u), _pick(h_first, hi_u, hi_v)
     one, zero = (1, 0, 0, 1), (0, 0, 0, 1)
     (c1, t3), (c2, t4), (c3, t5) = _less_tie(lo, hi), _less_tie(lo, one), _less_tie(zero, hi)
@@ -196,7 +199,7 @@ def diamond_states(a, b, unit, rows, cols, *, ties: bool = False):
     if not ties:
         return state
     on_edge = (np.abs(du) + np.abs(dv) <= 2 * half) & ((np.abs(du) == half) | (np.abs(dv) == half))
-    tie = along_u | along_v | (ok_u & ok_v & (t1 | t2 | t3 | t4 | t5)) | on_edge
+    tie = along_u | along_v | (ok_u & ok_v & (t3 | t4 | t5)) | on_edge
     return state, tie
 
 

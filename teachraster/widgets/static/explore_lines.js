@@ -48,9 +48,10 @@ export function diamondState(a, b, unit, row, col) {
   const [au, av, bu, bv] = [a[0] + a[1], a[0] - a[1], b[0] + b[1], b[0] - b[1]];
   const [loU, hiU, okU, tieU] = axisBounds(cx + cy, au, bu - au, half, 1);
   const [loV, hiV, okV, tieV] = axisBounds(cx - cy, av, bv - av, half, -1);
-  const [uFirst, t1] = less(loU, loV);
+  // equal entry (exit) bounds pick the same t: a tie there decides nothing (review r63)
+  const [uFirst] = less(loU, loV);
   const lo = uFirst ? loV : loU;
-  const [hFirst, t2] = less(hiU, hiV);
+  const [hFirst] = less(hiU, hiV);
   const hi = hFirst ? hiU : hiV;
   const [c1, t3] = less(lo, hi);
   const [c2, t4] = less(lo, [1, 0, 0, 1]);
@@ -59,7 +60,7 @@ export function diamondState(a, b, unit, row, col) {
   const [du, dv] = [bu - (cx + cy), bv - (cx - cy)];
   const ends = du > -half && du <= half && dv > -half && dv <= half;
   const onEdge = Math.abs(du) + Math.abs(dv) <= 2 * half && (Math.abs(du) === half || Math.abs(dv) === half);
-  const tie = tieU || tieV || (okU && okV && (t1 || t2 || t3 || t4 || t5)) || onEdge;
+  const tie = tieU || tieV || (okU && okV && (t3 || t4 || t5)) || onEdge;
   return [meets ? (ends ? ENDS_INSIDE : LIT) : MISSED, tie];
 }
 
