@@ -725,6 +725,12 @@ def test_07_case_texts_match_what_the_lesson_prints():
     assert np.flatnonzero(naive[1] > 1).tolist() == list(range(61))
     # the fan: the hub's owner is labelled and named in the key
     assert ns.hub_owner == int(ns.fan_owner[ns.hub])
+    # review r57 07-8: the picker's fan needs three colours, not two: triangles two apart touch
+    # across the thin one between them, so three in a row all touch each other
+    assert ns.fan_colours == 3 and len(ns.spoke_pairs) == ns.n_fan == 16
+    assert len(ns.fan_pairs) - len(ns.spoke_pairs) == 11
+    a, b, c = ns.fan_trio
+    assert {(a, b), (b, c), (a, c)} <= ns.fan_pairs and c - a == 2 and ns.thin_pixels == 3
 
 
 def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
