@@ -141,6 +141,8 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
     assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
     assert ns.absolute[-1] > 1000 * ns.absolute[0]
+    # "only known to about 1e-4" at 1e12, "coordinates to about 1e-10 px" at 1e6: printed
+    assert 1e-4 <= ns.far_gap[1e12] < 2e-4 and 1e-10 <= ns.far_gap[1e6] < 2e-10
 
 
 # -- 04 perspective-correct interpolation -------------------------------------------------------

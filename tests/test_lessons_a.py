@@ -321,6 +321,13 @@ def test_03_predictions_point_and_drift_are_the_packages():
     assert ask < formula
     drift_ask = next(i for i, t in enumerate(text) if "q_drift = Predict(" in t)
     assert not any("add up" in t for t in text[:drift_ask])  # nothing above answers it
+    # review r57 03-1: q_far's answer (the table, the figure's last point, the cancellation
+    # prose) lies below the question and every code cell showing it is held until Check
+    far_ask = next(i for i, t in enumerate(text) if "q_far = Predict(" in t)
+    prose = next(i for i, t in enumerate(text) if "catastrophic" in t)
+    figure = next(i for i, t in enumerate(text) if "Recentring, on grid-aligned" in t)
+    assert far_ask < figure < prose and "q_far.hold()" in text[figure]
+    assert all("q_far.hold()" in text[i] for i in range(far_ask + 1, prose))
 
 
 @pytest.mark.notebook
