@@ -265,8 +265,16 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # r7 01-5: "a few in a thousand" against the printed 0.6 %); c23 ends on the 64 x 64 grid
     assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
     text = "\n".join(_cells("01_span_tables", "markdown"))
-    assert "0.6 % of the\npairs (by the float DDA)" in text
-    # r8 01-1: "in every pair the next cell counts, the float DDA's cracks fall on a vertex"
+    assert "0.6 % of the pairs (by the float DDA)" in " ".join(text.split())
+    # review r57 01-5: the explorer's text is a list of its controls, under the cell it quotes
+    cells = _cells("01_span_tables", "markdown")
+    reroll = next(t for t in cells if t.startswith("**Reroll it yourself.**"))
+    assert reroll.count("\n- **") == 4
+    every = [("".join(c["source"]), c["cell_type"]) for c in
+             json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]]  # fmt: skip
+    rare = next(i for i, (t, k) in enumerate(every) if t.startswith("# How rare"))
+    assert every[rare + 1][0] == reroll
+    # r8 01-1: "in every pair the cell above counts, the float DDA's cracks fall on a vertex"
     assert ns.n_cracks == ns.at_end > 0
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
