@@ -393,6 +393,9 @@ def test_02_bailout_prediction_is_the_printed_share():
     assert ns.n_third > 0  # outside, yet all three tests: the order of the tests matters
     assert ns.without - ns.with_bailout == 2 * ns.n_first + ns.n_second  # the printed sum
     assert "answer=saves" in next(c for c in _cells("02_half_planes", "code") if "q_bailout =" in c)
+    # review r57 02-4: Pineda's stepping by integer additions is E12 evaluated, exactly
+    assert ns.steps_exact and ns.same_as_F and ns.direct.size == ns.in_square
+    assert ns.step_right == -(ns.v2[1] - ns.v1[1]) * 256**2
     assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
 
 
