@@ -141,6 +141,16 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
     assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
     assert ns.absolute[-1] > 1000 * ns.absolute[0]
+    # review r57 03-3: the barycentrics a shader can read, by their API names
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "03_barycentric_and_plane_equations.ipynb").read_text())
+    text = " ".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "markdown")
+    for name in ("SV_Barycentrics", "gl_BaryCoordEXT", "gl_BaryCoordNoPerspEXT",
+                 "VK_KHR_fragment_shader_barycentric"):  # fmt: skip
+        assert name in text, name
+    # "only known to about 1e-4" at 1e12, "coordinates to about 1e-10 px" at 1e6: printed
+    assert 1e-4 <= ns.far_gap[1e12] < 2e-4 and 1e-10 <= ns.far_gap[1e6] < 2e-10
 
 
 # -- 04 perspective-correct interpolation -------------------------------------------------------

@@ -265,8 +265,16 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # r7 01-5: "a few in a thousand" against the printed 0.6 %); c23 ends on the 64 x 64 grid
     assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
     text = "\n".join(_cells("01_span_tables", "markdown"))
-    assert "0.6 % of the\npairs (by the float DDA)" in text
-    # r8 01-1: "in every pair the next cell counts, the float DDA's cracks fall on a vertex"
+    assert "0.6 % of the pairs (by the float DDA)" in " ".join(text.split())
+    # review r57 01-5: the explorer's text is a list of its controls, under the cell it quotes
+    cells = _cells("01_span_tables", "markdown")
+    reroll = next(t for t in cells if t.startswith("**Reroll it yourself.**"))
+    assert reroll.count("\n- **") == 4
+    every = [("".join(c["source"]), c["cell_type"]) for c in
+             json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]]  # fmt: skip
+    rare = next(i for i, (t, k) in enumerate(every) if t.startswith("# How rare"))
+    assert every[rare + 1][0] == reroll
+    # r8 01-1: "in every pair the cell above counts, the float DDA's cracks fall on a vertex"
     assert ns.n_cracks == ns.at_end > 0
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
@@ -321,6 +329,13 @@ def test_03_predictions_point_and_drift_are_the_packages():
     assert ask < formula
     drift_ask = next(i for i, t in enumerate(text) if "q_drift = Predict(" in t)
     assert not any("add up" in t for t in text[:drift_ask])  # nothing above answers it
+    # review r57 03-1: q_far's answer (the table, the figure's last point, the cancellation
+    # prose) lies below the question and every code cell showing it is held until Check
+    far_ask = next(i for i, t in enumerate(text) if "q_far = Predict(" in t)
+    prose = next(i for i, t in enumerate(text) if "catastrophic" in t)
+    figure = next(i for i, t in enumerate(text) if "Recentring, on grid-aligned" in t)
+    assert far_ask < figure < prose and "q_far.hold()" in text[figure]
+    assert all("q_far.hold()" in text[i] for i in range(far_ask + 1, prose))
 
 
 @pytest.mark.notebook
@@ -378,6 +393,9 @@ def test_02_bailout_prediction_is_the_printed_share():
     assert ns.n_third > 0  # outside, yet all three tests: the order of the tests matters
     assert ns.without - ns.with_bailout == 2 * ns.n_first + ns.n_second  # the printed sum
     assert "answer=saves" in next(c for c in _cells("02_half_planes", "code") if "q_bailout =" in c)
+    # review r57 02-4: Pineda's stepping by integer additions is E12 evaluated, exactly
+    assert ns.steps_exact and ns.same_as_F and ns.direct.size == ns.in_square
+    assert ns.step_right == -(ns.v2[1] - ns.v1[1]) * 256**2
     assert all(ns.bias_checks.values())  # the integer test with a bias is the top-left rule
 
 

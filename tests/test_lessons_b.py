@@ -725,6 +725,12 @@ def test_07_case_texts_match_what_the_lesson_prints():
     assert np.flatnonzero(naive[1] > 1).tolist() == list(range(61))
     # the fan: the hub's owner is labelled and named in the key
     assert ns.hub_owner == int(ns.fan_owner[ns.hub])
+    # review r57 07-8: the picker's fan needs three colours, not two: triangles two apart touch
+    # across the thin one between them, so three in a row all touch each other
+    assert ns.fan_colours == 3 and len(ns.spoke_pairs) == ns.n_fan == 16
+    assert len(ns.fan_pairs) - len(ns.spoke_pairs) == 11
+    a, b, c = ns.fan_trio
+    assert {(a, b), (b, c), (a, c)} <= ns.fan_pairs and c - a == 2 and ns.thin_pixels == 3
 
 
 def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
@@ -770,16 +776,25 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     exec(cell.split("\n\n\nmy_verdict")[0], scope)
     assert ns.my_verdict.startswith("Not yet") and "more often" in ns.my_verdict  # E >= 0
     assert "left out" not in ns.my_verdict
-    verdict, counts = scope["check_tie_rule"](top_left_coverage)
+    # review r57 07-5: the task is no transcription: the checker works in GL's y-up window
+    # coordinates, where lesson 02's y-down condition fails both ways; with y up and the
+    # interior positive, a top edge is walked to the left and a left edge downward
+    pasted = scope["check_tie_rule"](top_left_coverage)[0]
+    assert pasted.startswith("Not yet") and "left out" in pasted and "more often" in pasted
+    y_up = with_rule(lambda p, q: q[1] < p[1] or (q[1] == p[1] and q[0] < p[0]))
+    verdict, counts = scope["check_tie_rule"](y_up)
     assert verdict.startswith("Right") and not any(counts.values())
 
     strict = scope["check_tie_rule"](with_rule(lambda p, q: False))[0]  # E > 0: gaps only
     assert strict.startswith("Not yet") and "left out" in strict and "more often" not in strict
     bottom_right = scope["check_tie_rule"](
-        with_rule(lambda p, q: q[1] > p[1] or (q[1] == p[1] and q[0] < p[0]))
+        with_rule(lambda p, q: q[1] > p[1] or (q[1] == p[1] and q[0] > p[0]))
     )[0]  # the opposite edges own the ties: a neighbour's centres drawn, its own left out
     assert bottom_right.startswith("Not yet") and "left out" in bottom_right
     assert "more often" in bottom_right
+    text = next("".join(c["source"]) for c in nb["cells"]
+                if "".join(c["source"]).startswith("## Your turn"))  # fmt: skip
+    assert "y$ pointing up" in text and "b[1] < a[1]" not in text  # the rule is not given
 
 
 def test_07_case_picker_driven_by_the_test():
@@ -795,6 +810,10 @@ def test_07_case_picker_driven_by_the_test():
         assert len(picker._case.triangles) == 1 and (picker.naive_counts < 2).all()
         key = picker.info.value.split("<b>key</b>")[1]
         assert "triangle 0" in key and "one colour per" not in key and "twice" not in key
+        # r57 07-3: the centres are drawn, filled where covered, in both panels
+        for ax in picker.axes:
+            dots = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) > 3]
+            assert dots, ax.get_title()
     finally:
         picker.close()
 

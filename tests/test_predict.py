@@ -167,9 +167,11 @@ def test_check_waits_for_an_answer():
     assert q.check.disabled
     q.close()
     c = Predict("Which?", ["a", "b"], answer="a", headless=False)
-    assert c.check.disabled
+    assert c.check.disabled and c.check.button_style == ""  # grey, as PredictPixels' (r57 07-4)
     c.control.value = "b"
-    assert not c.check.disabled
+    assert not c.check.disabled and c.check.button_style == "primary"
+    c.check.click()
+    assert c.check.disabled and c.check.button_style == ""  # checked: final
     c.close()
 
 

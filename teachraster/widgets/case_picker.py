@@ -21,7 +21,7 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from ..plotting import COLORS, plot_coverage, plot_pixel_grid, plot_triangle
+from ..plotting import COLORS, plot_coverage, plot_pixel_centres, plot_pixel_grid, plot_triangle
 from ..study import hardcases
 from .ahead import PicturesAhead, show_kept
 from .common import (
@@ -330,6 +330,7 @@ def plot_copies(ax, counts: np.ndarray, n: int, triangle, box) -> int:
     plot_pixel_grid(ax, c1 - c0, r1 - r0, ticks=False)
     plot_coverage(ax, counts == n, color=EVERY_COPY)
     plot_coverage(ax, (counts > 0) & (counts < n), color=SOME_COPIES)
+    plot_pixel_centres(ax, c1 - c0, r1 - r0, counts > 0)
     plot_triangle(ax, np.asarray(triangle, dtype=float) - [c0, r0], labels=False, arrows=False)
     return int(((counts > 0) & (counts < n)).sum())
 
@@ -504,6 +505,10 @@ class CasePicker:
             # its whole grid: at the classroom width the outline covers the pixels it owns
             thin = thin_lines((r1 - r0, c1 - c0)) or cut_rows
             plot_owners(self.axes[0], self.owner, tris, thin=thin, colors=self.colors)
+            # the centres, filled where covered, as in the lesson's figures: ownership is
+            # decided there (review r57, 07-3: without them the split square's blue looked
+            # half a pixel off its outline)
+            plot_pixel_centres(self.axes[0], w, h, self.owner != NONE)
             self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
             ax = self.axes[1]
             if self.naive_counts is None:
@@ -517,6 +522,7 @@ class CasePicker:
                 plot_coverage(ax, n >= 2, color=COLORS["outside"])
                 for xy in tris:
                     outline(ax, xy, thin=thin)
+                plot_pixel_centres(ax, n.shape[1], n.shape[0], n > 0)
                 ax.set_title(f"naive:\n{int((n > 0).sum())} px, max {int(n.max())} hit(s)")
             # a centre at a vertex of many triangles (the fan's hub) on top of their outlines
             self.hubs = shared_vertex_pixels(tris, self.owner.shape)

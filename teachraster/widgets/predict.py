@@ -250,8 +250,10 @@ class Predict(HoldsAnswer):
             self.control = widgets.Text(
                 placeholder="your number", layout=widgets.Layout(width="12em")
             )
-        # Check waits for an answer: a prediction revealed without one is no prediction
-        self.check = widgets.Button(description="Check", button_style="primary", disabled=True,
+        # Check waits for an answer: a prediction revealed without one is no prediction. Grey
+        # until then, as the figure predictions' Check (review r57, 07-4: a disabled "primary"
+        # button still looked blue, ready to press); blue once there is something to check
+        self.check = widgets.Button(description="Check", button_style="", disabled=True,
                                     tooltip="give your answer first")  # fmt: skip
         self.check.on_click(lambda _: self._checked())
         self.control.observe(self._answer_changed, "value")
@@ -267,6 +269,7 @@ class Predict(HoldsAnswer):
             self._lock()
             return
         self.check.disabled = self.given is None
+        self.check.button_style = "" if self.given is None else "primary"
         self.check.tooltip = "" if self.given is not None else "give your answer first"
 
     def _checked(self) -> None:
@@ -280,6 +283,7 @@ class Predict(HoldsAnswer):
         the box shows the answer that was checked (a prediction typed after seeing the answer
         is no prediction, review r28)."""
         self.control.disabled = self.check.disabled = True
+        self.check.button_style = ""
         self.check.tooltip = "checked: your prediction is kept"
         if self._kept is not None and self.control.value != self._kept:
             self.control.value = self._kept

@@ -269,8 +269,9 @@ def _subpixel():
             frozen_inputs(triangles=tris, size=(12, 12), expected=expected),
             fill_all,
             check_mask,
-            "vertices rounded to whole pixels (no sub-pixel precision) lose the first "
-            "triangle's centre and collapse or move the others",
+            "vertices rounded to whole pixels (no sub-pixel precision) change the coverage "
+            "both ways: the first and the third triangles lose their centres (two collapse to "
+            "zero area), and the fourth, rounded larger, covers a centre not its own",
             naive,
             naive_differs,
         )

@@ -111,7 +111,7 @@ function mount(el, data, host) {
       const [x, y] = gap.p;
       line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale], OKABE.vermillion, 3);
       label3d(ctx, cam, [x, y, Math.max(gap.s.correct, gap.s.affine) * zScale],
-        ` gap ${fmt(gap.gap, 3)}`, OKABE.vermillion, "bold 17px sans-serif");
+        ` gap ${fmt(gap.gap, 3)}`, OKABE.vermillion, "bold 17px sans-serif", true); // over the sheets: haloed (r57 03-2)
     }
     // the value axis at the screen's corner: 0, ½, 1. Text no smaller than 15 px: the canvas
     // is shown shrunk to the notebook's column on a small screen (review r7: 10-11 px there)

@@ -299,6 +299,13 @@ export function panelLayout(W, H) {
 const TITLE = 28;
 const COUNT = 20;
 
+// The marks in a pixel, for a projector (review r57, 01-1: at 16-px cells the "2" and "✕" were
+// 11 px and the tie squares 6): every glyph at least 14 px, "⇄" at least 16, as large as the
+// pixel allows, and the tie squares half a pixel wide. Two panels across still fit 585 px.
+export const markPx = (cell, mark) =>
+  mark === "⇄" ? Math.max(16, Math.round(cell * 1.0)) : Math.max(14, Math.round(cell * 0.85));
+export const tieSize = (cell) => Math.max(8, Math.round(cell * 0.5));
+
 // how far the ring reaches beyond its pixel, its line width included
 const ringReach = (cell) => Math.ceil((RING - 0.5) * cell) + 3;
 
@@ -330,7 +337,7 @@ function drawPanel(ctx, f, exact, pair, g) {
     for (let c = 0; c < W; c++) {
       const on = onSegment(setup.given[0], setup.given[1], centreUnits(setup, r, c));
       ctx.fillStyle = on ? "#000" : "#999";
-      const d = on ? 6 : 2;
+      const d = on ? tieSize(cell) : 3;
       ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
     }
   }
@@ -360,12 +367,20 @@ function drawPanel(ctx, f, exact, pair, g) {
   ctx.moveTo(A[0][0], A[0][1]);
   ctx.lineTo(A[1][0], A[1][1]);
   ctx.stroke();
-  ctx.font = `bold ${Math.round(cell * 0.7)}px sans-serif`;
+  ctx.font = `bold ${markPx(cell, "2")}px sans-serif`;
   ctx.textAlign = "center";
   ctx.fillStyle = OKABE.vermillion;
-  for (const [r, c] of f.doubles) ctx.fillText("2", x0 + (c + 0.5) * cell, y0 + (r + 0.78) * cell);
+  // on a white halo, as the "⇄" below: a crack sits on the tie square and the shared edge
+  const haloed = (glyph, x, y) => {
+    ctx.strokeStyle = "#fff";
+    ctx.lineWidth = 3;
+    ctx.lineJoin = "round";
+    ctx.strokeText(glyph, x, y);
+    ctx.fillText(glyph, x, y);
+  };
+  for (const [r, c] of f.doubles) haloed("2", x0 + (c + 0.5) * cell, y0 + (r + 0.82) * cell);
   for (const [r, c] of f.cracks) {
-    ctx.fillText("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.75) * cell);
+    haloed("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.8) * cell);
     // a ring around the crack: a single pixel, often at the image's border, is easy to miss
     ctx.strokeStyle = OKABE.vermillion;
     ctx.lineWidth = 3;
@@ -375,7 +390,7 @@ function drawPanel(ctx, f, exact, pair, g) {
   }
   // the wrong-owner ties last, over the tie marker and the shared edge: large, black on a
   // white halo, so that the glyph survives on the thick black line
-  ctx.font = `bold ${Math.round(cell * 0.95)}px sans-serif`;
+  ctx.font = `bold ${markPx(cell, "⇄")}px sans-serif`;
   ctx.lineJoin = "round";
   for (const [r, c] of f.swapped) {
     const [x, y] = [x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell + cell * 0.33];
@@ -407,7 +422,10 @@ function drawKey(ctx, [x0, y0], cell) {
     ctx.font = "14px sans-serif";
     ctx.fillText(text, x, y + 5);
     const cx = x0 + 10;
-    if (mark === "tie") ctx.fillRect(cx - 3, y - 3, 6, 6);
+    if (mark === "tie") {
+      const d = tieSize(cell);
+      ctx.fillRect(cx - d / 2, y - d / 2, d, d);
+    }
     if (mark === "box") {
       ctx.setLineDash([3, 2]);
       ctx.lineWidth = 1.5;
@@ -416,7 +434,7 @@ function drawKey(ctx, [x0, y0], cell) {
       ctx.setLineDash([]);
     }
     if (mark && mark.length === 1) {
-      ctx.font = `bold ${Math.round(cell * (mark === "⇄" ? 0.95 : 0.7))}px sans-serif`;
+      ctx.font = `bold ${markPx(cell, mark)}px sans-serif`;
       ctx.textAlign = "center";
       ctx.fillStyle = mark === "⇄" ? "#000" : OKABE.vermillion;
       ctx.fillText(mark, cx, y + cell * 0.3);

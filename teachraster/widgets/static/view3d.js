@@ -128,10 +128,19 @@ export function line3d(ctx, cam, a, b, stroke, width = 1, dash = []) {
   strokeLine(ctx, cam.project(a), cam.project(b), stroke, width, dash);
 }
 
-export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-serif") {
+// halo: a white outline under the letters, for a label drawn over coloured surfaces
+export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-serif", halo = false) {
   const q = cam.project(p);
   ctx.fillStyle = color;
   ctx.font = font;
+  if (halo) {
+    ctx.save();
+    ctx.strokeStyle = "#fff";
+    ctx.lineWidth = 5;
+    ctx.lineJoin = "round";
+    ctx.strokeText(text, q[0], q[1]);
+    ctx.restore();
+  }
   ctx.fillText(text, q[0], q[1]);
 }
 
