@@ -446,9 +446,12 @@ def _multisampled(frame, dbg, row, col) -> list[HistoryRecord]:
         col + np.tile(dbg.offsets[:, 0], len(pieces)),
         row + np.tile(dbg.offsets[:, 1], len(pieces)),
     )
-    depth = plane_depth(planes, 1.0, tri, x, y) if len(tri) else np.zeros(0)
-    if a.depth_format != "float64":
-        depth = quantize(depth, a.depth_format)
+    # every candidate's planes at every sample, read only where it covers: a zero-area piece
+    # (never covering) has infinite gradients, whose nan must not surface as numpy's warning
+    with np.errstate(invalid="ignore", over="ignore"):
+        depth = plane_depth(planes, 1.0, tri, x, y) if len(tri) else np.zeros(0)
+        if a.depth_format != "float64":
+            depth = quantize(depth, a.depth_format)
     depth = depth.reshape(len(pieces), n_s)
     records = []
     for i, piece in enumerate(pieces.tolist()):
