@@ -110,7 +110,8 @@ def test_06_edge_table_gaps_and_incremental_lists():
 def test_06_edge_bits_and_depth_claims():
     ns = lesson("06_what_accuracy_costs")
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
-    assert list(ns.needed.values()) == [36] * 3  # "the 36 (35 and a sign) the mesh needs"
+    # "the mesh's edge functions need 35 (sign included; 36 counted term by term)"
+    assert list(ns.needed.values()) == [36] * 3 and list(ns.needed_least.values()) == [35] * 3
     assert rows[("edge functions", "fixed8 direct")]["bits"] == 63
     # review r7 / r6 06-5: "float64 is exact here too ... 53 bits, at least the 37"
     assert ns.significand == {"float64": 53, "float32": 24}
@@ -440,8 +441,10 @@ def test_06_review_r23_tables_fit_and_wording():
         for out in cell.outputs:
             for line in out.get("text", "").splitlines() if out.output_type == "stream" else []:
                 assert len(line) <= 80, line
-    # review r28 06-3: 50, not 51 (one sign), the count lesson 10 uses (fixed_point)
-    assert ns.gpu_bits == ns.gpu.needed == 50 > max(ns.needed.values())  # "needs 50 bits"
+    # review r28 06-3: 50, not 51 (one sign), the count lesson 10 uses (fixed_point); review
+    # r60 06-1: that count is term by term, E's own bound (twice an area) is one bit fewer
+    assert ns.gpu_bits == ns.gpu.needed == 50 > max(ns.needed.values())  # "50 counted term by"
+    assert ns.gpu.least_needed == 49 == ns.largest_e.bit_length() + 1  # "needs 49"
     assert ns.gpu.edge_bits == 49 <= 53 < 63  # within float64's 53 bits and a sign, and int64
     assert ns.same  # "E > 0 leaves open exactly the centres E >= 0 draws twice or more"
     shares = [share for _, share in ns.shared.values()]
@@ -455,8 +458,9 @@ def test_06_review_r23_tables_fit_and_wording():
     assert "tens of texels" not in md and "over a hundred texels" not in md
     assert "The two naive rules fail on exactly the same centres" not in md
     assert "Direct3D's 16.8 fixed point" in md and "needs 51" not in md
-    # r37 06-3: 50 is q_bits' answer, in the summary only (far below), not the text under it
-    assert "needs 50 bits" not in md and "needs 50)" in md
+    # r37 06-3: 49 is q_bits' answer, in the summary only (far below), not the text under it
+    assert "needs 49 bits" not in md and "needs 49, E being twice a triangle's area" in md
+    assert "needs 50" not in md and "50 counted term by" in md
     # issue 29: the standards tables, sub-pixel precision and depth formats
     for name in ("OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"):
         assert md.count(f"| {name} |") == 2, name
@@ -487,7 +491,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     def asked_at(name):
         return next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
 
-    answers = {"q_bits": "50", "q_fill": "6.3", "q_depth": str(ns.lin32["slanted_wrong"])}
+    answers = {"q_bits": "49", "q_fill": "6.3", "q_depth": str(ns.lin32["slanted_wrong"])}
     for name in ("q_bits", "q_rule", "q_fill", "q_depth"):
         i = asked_at(name)
         # the cell right after the question is held on it; the Markdown just before says nothing
@@ -498,9 +502,11 @@ def test_06_review_r37_a_prediction_in_every_section():
         if name in answers:
             assert answers[name] not in question and not any(answers[name] in b for b in before)
     # the answers are what the held cells print
-    # r48 06-D5: "sign included" and the count is exact: 49 (the sign forgotten) is wrong
-    assert ns.gpu.needed == ns.gpu_bits == 50 and ns.tol_bits == 0
-    assert ns.gpu.edge_bits == ns.gpu.needed - 1 and 2 * ns.gpu.delta_bits < ns.gpu.edge_bits
+    # r48 06-D5: "sign included" and the count is exact; r60 06-1: the fewest bits are E's
+    # own bound, 49 (twice a triangle's area, at most (2^24 - 1)^2 < 2^48), not the
+    # term-by-term 50 (which r48 had made the answer); 48 wrap
+    assert ns.gpu.least_needed == 49 == ns.gpu.needed - 1 and ns.tol_bits == 0
+    assert ns.largest_e == (2**24 - 1) ** 2 and 2**47 < ns.largest_e < 2**48
     assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
     assert abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 1
     # q_fill's four choices differ, and the right one is the ratio the fill cell prints
@@ -570,7 +576,7 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
         return q.correct
 
     cases = {
-        "q_bits": (["50"], ["49", str(2 * ns.gpu.delta_bits), "32"]),
+        "q_bits": (["49"], ["50", str(2 * ns.gpu.delta_bits), "32"]),
         "q_fill": (
             [f"about {ns.fill_answer:.0f}"],
             [c for c in ns.fill_choices if c != f"about {ns.fill_answer:.0f}"],
