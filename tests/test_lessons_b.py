@@ -92,6 +92,28 @@ def test_06_doom_level_floor_is_exact_and_the_rolled_floor_is_not():
     assert rolled["span ends"] > 100  # "much further off" (magnitude kept out of the prose: r23)
 
 
+def test_06_review_r60_figures_say_what_they_draw():
+    """Review r60 06-5..7: the rolled floor's grey stripes are the anchor columns, 16 apart
+    from the image's left edge ("the line 'rolled: columns under'"); the checkerboard's second
+    row enlarges a box holding a good share of N = 16's marks; the appendix prints every time
+    with two decimals; "What a GPU pays" names the generations its rates are from."""
+    import json
+
+    ns = lesson("06_what_accuracy_costs")
+    assert ns.stripes.tolist() == list(range(0, ns.interp_size, 16))  # "16 apart"
+    assert ns.check_wrong["N = 16"] / 4 < ns.zoom_count <= ns.check_wrong["N = 16"]
+    assert ns.differs_16[ns.zoom].sum() == ns.zoom_count
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "grey vertical stripes across the rolled floor are the anchors" in md
+    assert "What a GPU pays today" not in md and "Maxwell (2014)" in md and "Kepler (2012)" in md
+    assert set(ns.RECIPROCAL_RATE) == {"Kepler (3.x, 2012)", "Maxwell (5.x, 2014)"}
+    code = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
+    assert "_min_s'] * 1e3:.2f}..{r[timer + '_max_s'] * 1e3:.2f}" in code
+    assert "fastest(r, t) * 1e3:8.2f}" in code  # the other timers' columns too
+
+
 def test_06_edge_table_gaps_and_incremental_lists():
     ns = lesson("06_what_accuracy_costs")
     edges = [r for r in ns.rows if r["group"] == "edge functions"]
