@@ -15,8 +15,8 @@ between values that are themselves edge values inside the extent, so it needs no
 
 The same count with coordinates stored on the ``1/2**s`` grid itself (no extra bit) and
 anywhere in a range of ``R`` pixels, as Direct3D's 16.8 fixed point is over its ``2**16``-pixel
-range, gives ``|Δ| < R·2**s`` (:func:`range_budget`): 50 bits for Direct3D. One rule, in
-:func:`_budget`, counts both.
+range, gives ``|Δ| < R·2**s`` (:func:`range_budget`): 50 bits for Direct3D, term by term. One
+rule, in :func:`_budget`, counts both.
 
 That count is term by term, and for E itself it is one bit high: E is twice the signed area
 of the triangle ``a b p``, and a triangle inside a square of side ``M`` (the largest
