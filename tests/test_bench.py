@@ -216,7 +216,8 @@ def test_the_bare_triangle_the_fill_rows_time_covers_what_the_textured_fill_cove
 @pytest.mark.bench
 def test_lesson_06_signs_benchmark_reports_every_claim():
     """Review r17 06-1..3, r20 06-1..4: the signs lesson 06 states for numpy's times
-    (subdivided slower at every N, affine nowhere near the model's 1/35, incremental slower in
+    (subdivided slower at every N, affine faster but above half its time, far from the model's
+    2/39, incremental slower in
     every arithmetic, coverage under half a textured fill, the two coverages closer than their
     counts) are measured by benchmarks/bench_lesson06_signs.py, in CPU time, PASS or
     MISS: never asserted by a test (a timed assertion fails on a loaded machine). Its smoke

@@ -54,7 +54,10 @@ def test_edge_bits_are_counted_once_for_lessons_06_and_10():
     d3d = fp.range_budget(2**16, subpixel_bits=8)
     assert (d3d.delta_bits, d3d.product_bits, d3d.edge_bits, d3d.needed) == (24, 48, 49, 50)
     assert ops.edge_bits_needed(2**16, 0, subpixel_bits=8) == 50 == d3d.needed
-    # the extremes, computed: differences of 24-bit coordinates, their products, E
+    # review r60 06-1: E's own bound (twice a triangle's area) is one bit fewer
+    assert ops.edge_bits_needed(2**16, 0, subpixel_bits=8, least=True) == 49 == d3d.least_needed
+    # the term-by-term bounds, computed: differences of 24-bit coordinates, their products, and
+    # two products of opposite signs (which E itself, twice an area, never reaches: test_tiles)
     lo, hi = -(2**23), 2**23 - 1  # 16.8 two's complement: [-2^15, 2^15) px
     biggest = (hi - lo) * (hi - lo) + (hi - lo) * (hi - lo)
     assert (hi - lo).bit_length() == 24 and (hi - lo) ** 2 < 2**48 and biggest < 2**49

@@ -439,6 +439,32 @@ def test_numpy_block_sizes_are_accepted():
     )
 
 
+def test_least_needed_is_the_area_bound():
+    """Review r60 06-1: E is twice a triangle's signed area, so over a square of side M its
+    largest |E| is M**2 (three corners reach it), not the term-by-term 2·M**2: Direct3D's 16.8
+    over 2**16 px needs 49 bits with the sign, not 50, and 48 are too few."""
+    import itertools
+
+    def edge(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    for side in range(1, 6):  # every triple of grid points in a small square
+        pts = list(itertools.product(range(side + 1), repeat=2))
+        assert max(abs(edge(*t)) for t in itertools.product(pts, repeat=3)) == side**2
+    d3d = fp.range_budget(2**16, subpixel_bits=8)
+    m = d3d.max_delta
+    assert m == 2**24 - 1
+    # E is affine in each point: its extremes over the square lie at the corners
+    corners = list(itertools.product((0, m), repeat=2))
+    largest = max(abs(edge(*t)) for t in itertools.product(corners, repeat=3))
+    assert largest == m**2 and 2**47 < largest < 2**48
+    assert (d3d.needed, d3d.least_needed, d3d.area_bits) == (50, 49, 48)
+    for extent in (1, 5, 64, 1024, 2**16):  # never more than the term-by-term count, less one
+        for budget in (fp.bit_budget(extent, 8), fp.range_budget(extent, 8)):
+            assert budget.least_needed <= budget.needed - 1
+            assert budget.max_delta**2 < 2 ** (budget.least_needed - 1)
+
+
 def test_fixed_point_bad_input():
     tri = tr.Triangle([[0, 0], [4, 0], [0, 4]])
     with pytest.raises(ValueError, match="int_bits"):

@@ -15,8 +15,15 @@ between values that are themselves edge values inside the extent, so it needs no
 
 The same count with coordinates stored on the ``1/2**s`` grid itself (no extra bit) and
 anywhere in a range of ``R`` pixels, as Direct3D's 16.8 fixed point is over its ``2**16``-pixel
-range, gives ``|Δ| < R·2**s`` (:func:`range_budget`): 50 bits for Direct3D. One rule, in
-:func:`_budget`, counts both.
+range, gives ``|Δ| < R·2**s`` (:func:`range_budget`): 50 bits for Direct3D, term by term. One
+rule, in :func:`_budget`, counts both.
+
+That count is term by term, and for E itself it is one bit high: E is twice the signed area
+of the triangle ``a b p``, and a triangle inside a square of side ``M`` (the largest
+difference) has at most half the square's area, so ``|E| <= M**2`` (three corners of the
+square reach it). Each product is below ``2**(2d)`` too, so ``2d + 1`` bits and a sign hold
+every product and E (:attr:`BitBudget.least_needed`): 49 bits for Direct3D. The term-by-term
+count (llvmpipe's, and the package's :attr:`BitBudget.needed`) keeps the bit to spare.
 
 Mesa's llvmpipe makes the same count (``MAX_FIXED_LENGTH32`` in ``lp_rast.h``): with 8
 sub-pixel bits a triangle whose box spans at most 128 px is rasterised in 32-bit
@@ -29,8 +36,9 @@ so ``d <= 31`` and 64 bits suffice for every triangle it accepts.
 (42, False)
 >>> max_extent(8, 32), max_extent(8, 64)
 (63, 4194303)
->>> range_budget(2**16, subpixel_bits=8).needed     # Direct3D's 16.8 over 2**16 px
-50
+>>> d3d = range_budget(2**16, subpixel_bits=8)     # Direct3D's 16.8 over 2**16 px
+>>> d3d.needed, d3d.least_needed                  # term by term; E's own bound
+(50, 49)
 """
 
 from __future__ import annotations
@@ -67,7 +75,8 @@ class BitBudget:
     product_bits, edge_bits : int
         Magnitude bits of one product and of E (a difference of two products).
     needed : int
-        ``edge_bits`` plus the sign bit.
+        ``edge_bits`` plus the sign bit: the term-by-term count, one bit above
+        :attr:`least_needed` (a designer sizing the adders term by term keeps it).
     max_delta : int
         The largest coordinate difference, in units (``|Δ| <= max_delta < 2**delta_bits``).
     within : bool
@@ -85,6 +94,26 @@ class BitBudget:
     needed: int
     max_delta: int = 0
     within: bool = False
+
+    @property
+    def area_bits(self) -> int:
+        """Magnitude bits of the largest ``|E|``: ``max_delta**2`` (E is twice a triangle's
+        signed area, and a triangle in a square of side ``max_delta`` has at most half of it)."""
+        return (self.max_delta**2).bit_length()
+
+    @property
+    def least_needed(self) -> int:
+        """The fewest bits, sign included, that hold E exactly: ``area_bits`` and a sign.
+
+        Every product is below ``2**product_bits <= 2**area_bits`` as well, so no term
+        overflows either. At least one bit fewer than :attr:`needed` (``max_delta < 2**d``
+        puts ``max_delta**2`` below ``2**(2d)``; Direct3D: 49 against 50).
+
+        >>> b = range_budget(2**16, subpixel_bits=8)
+        >>> b.max_delta**2 < 2**48 <= 2 * b.max_delta**2, b.area_bits, b.least_needed
+        (True, 48, 49)
+        """
+        return self.area_bits + 1
 
     @property
     def fits(self) -> bool:
@@ -153,11 +182,13 @@ def range_budget(
     ``centre_bit=True``: teachraster's ``2**(s+1)``), so two of them differ by less than
     ``range_px`` pixels: at most ``range_px·units − 1`` units. Direct3D's 16.8 fixed point
     over its ``2**16``-pixel range: 24-bit coordinates, differences below ``2**24`` units,
-    products below ``2**48``, E below ``2**49``, 50 bits with the sign.
+    products below ``2**48``, E (a difference of two products) below ``2**49`` term by term,
+    50 bits with the sign; E itself, twice a triangle's area, stays at most ``(2**24 - 1)**2 <
+    2**48``: 49 bits with the sign (:attr:`BitBudget.least_needed`).
 
     >>> b = range_budget(2**16, subpixel_bits=8)
-    >>> b.delta_bits, b.product_bits, b.edge_bits, b.needed
-    (24, 48, 49, 50)
+    >>> b.delta_bits, b.product_bits, b.edge_bits, b.needed, b.least_needed
+    (24, 48, 49, 50, 49)
     """
     extent = as_int("range_px", range_px, minimum=1)
     bits = check_bits(subpixel_bits)
@@ -172,10 +203,11 @@ def _budget(extent, bits, width, unit, max_delta, *, within) -> BitBudget:
     """The one count: ``|Δ| <= max_delta < 2**d``, a product of two differences below
     ``2**(2d)``, E (a difference of two products) below ``2**(2d+1)``, and the sign bit.
 
-    It counts term by term, as llvmpipe does (``lp_rast.h``), so that every intermediate
-    product fits too. (E itself is twice a triangle's signed area, at most ``max_delta**2``
-    when all three points lie within the range, one bit less; a designer sizing the adders
-    term by term does not rely on that.)
+    It counts term by term, as llvmpipe does (``lp_rast.h``): the difference of two products
+    bounded as if both could reach their bound with opposite signs. They cannot: E itself is
+    twice a triangle's signed area, at most ``max_delta**2`` when all three points lie within
+    the range, so :attr:`BitBudget.least_needed` is one bit less; a designer sizing the adders
+    term by term keeps that bit to spare.
     """
     d = int(max_delta).bit_length()
     return BitBudget(extent, bits, width, unit, d, 2 * d, 2 * d + 1, 2 * d + 2, int(max_delta),

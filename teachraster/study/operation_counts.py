@@ -118,21 +118,28 @@ def edge_count(variant: str) -> OpCount:
     return OpCount(0.0, 0.0, 3.0, BITS_KEPT[arith])
 
 
-def edge_bits_needed(size: int, offset: float, subpixel_bits: int = 8) -> int:
+def edge_bits_needed(
+    size: int, offset: float, subpixel_bits: int = 8, *, least: bool = False
+) -> int:
     """Bits (with the sign) an exact edge function needs: its positions and its products.
 
     A position up to ``offset + size`` px on a ``1/2**s`` grid needs ``log2(offset + size) + s``
     bits and a sign. The products are counted by
     :func:`teachraster.core.fixed_point.range_budget`, the count lesson 10 uses too:
     coordinates in a ``size``-pixel range differ by less than ``size·2**s`` units
-    (``d`` bits), a product needs ``2d`` bits, E (a difference of two) ``2d + 1``, and a sign.
-    Exact arithmetic needs the larger of the two.
+    (``d`` bits), a product needs ``2d`` bits, E (a difference of two) ``2d + 1`` term by
+    term, and a sign; with ``least=True``, E's own bound instead (twice a triangle's area, at
+    most the largest difference squared: ``BitBudget.least_needed``, one bit fewer). Exact
+    arithmetic needs the larger of the position's count and E's.
 
     >>> edge_bits_needed(64, 0), edge_bits_needed(64, 1_000_000), edge_bits_needed(2**16, 0)
     (30, 30, 50)
+    >>> edge_bits_needed(2**16, 0, least=True)
+    49
     """
     position = math.ceil(math.log2(offset + size)) + subpixel_bits + 1
-    return max(position, fixed_point.range_budget(size, subpixel_bits).needed)
+    budget = fixed_point.range_budget(size, subpixel_bits)
+    return max(position, budget.least_needed if least else budget.needed)
 
 
 def fill_count(variant: str) -> OpCount:
