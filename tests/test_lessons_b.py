@@ -1223,6 +1223,12 @@ def test_09_answers_wait_for_check():
         assert "λ + \\tfrac12" not in words and "⌈λ" not in words, name
         assert "\\lceil" not in words and "jump" not in words, name
     assert "printed how many" not in text[ask["q_probes"]]
+    # review r61 09-2: q_reads is asked before §5's renders, whose printed table (nearest,
+    # bilinear, mipmapped) would answer it; that cell and §7's table are held
+    reads_at = next(i for i, t in enumerate(text) if re.search(r"^q_reads = Predict", t, re.M))
+    renders = next(i for i, t in enumerate(text) if "RMS error {rms[f]:.3f}" in t)
+    assert reads_at + 1 == renders and text[renders].startswith("q_reads.hold()")
+    assert not any("mipmap" in t and "RMS error" in t for t in text[:reads_at])
     assert "approximate" in text[ask["q_level"] - 1] and "§8.14.1" in text[ask["q_level"] - 1]
     ns = lesson("09_texture_filtering")
     assert max(ns.bound_gap.values()) <= 1  # GL's bounds: levels at most one apart
