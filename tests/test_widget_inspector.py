@@ -230,3 +230,27 @@ def test_edge_values_exactly_zero_are_marked_in_the_table():
         assert "0 (on the edge)" in w.table.value and "yes" in w.table.value  # a top edge
     finally:
         w.close()
+
+
+def test_labels_stay_in_the_panel_by_a_corner_where_two_edges_meet():
+    """Pixel (3, 16) of lesson 08's triangle lies by its corner (18.7, 4.2): moving s1's and
+    s3's labels off both edges pushed them past the panel, the margins grew until the pixel
+    was a quarter of the panel and s1's label sat on the title. A label now moves only within
+    the panel (it may touch an edge line there)."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])
+        w = PixelInspector(tri, 20, 14, row=3, col=16, backend="image")
+        try:
+            w.fig.canvas.draw()
+            r = w.fig.canvas.get_renderer()
+            ax = w.pixel.square.axes
+            frame, title = ax.get_window_extent(r), ax.title.get_window_extent(r)
+            pixel = w.pixel.square.get_window_extent(r)
+            assert pixel.width > 0.3 * frame.width, (pixel, frame)
+            for lab in w.pixel.labels:
+                box = lab.get_bbox_patch().get_window_extent(r)
+                assert frame.y0 <= box.y0 and box.y1 <= frame.y1 and not box.overlaps(title)
+        finally:
+            w.close()
