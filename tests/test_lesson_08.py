@@ -31,6 +31,10 @@ def test_lesson_08_shows_what_it_says(ns):
     assert 0 < plan.count < plan.total
     # cell 23: MSAA shades once per pixel and triangle; the plan printed under it agrees
     assert "shaded once per triangle and pixel" in plan.why and "shading per" not in plan.why
+    # review r61 08-1: the printed counts, the GPU's story first (every sample tested, the
+    # uniform pixels compressed), then the simulator's shortcut, named as such
+    assert ns.uniform == plan.total - plan.count > plan.count
+    assert "a GPU tests every sample" in ns.gpu and ns.ours.startswith("teachraster's plan")
     # §2: only partly covered pixels differ, by at most the samples' mean off the centre
     # times u's gradient; MSAA stores S colours and S depths per pixel
     assert ns.gap_full < 1e-12 and 0 < ns.gap_u
@@ -112,7 +116,7 @@ def test_lesson_08_centroid_prediction(ns):
 
     assert len(ns.covered) == 1 and ns.side == "above 1" and ns.v_at_centre > 1
     assert ns.v_at_centre == pytest.approx(ns.h_centre / ns.h_vertex, rel=1e-9)
-    assert "answer=side," in "".join(
+    assert "answer=v_at_centre,\n    tolerance=0.1," in "".join(
         "".join(c["source"])
         for c in json.loads(
             (
@@ -126,3 +130,5 @@ def test_lesson_08_centroid_prediction(ns):
     (k,) = [i for i, s in enumerate(sources) if "q_centre = Predict(" in s]
     assert sources[k + 1].startswith("q_centre.hold()")
     assert not any("v at the pixel centres" in s for s in sources[:k])
+    # review r61 08-5: nothing before the question says the centre value leaves [0, 1]
+    assert not any("extrapolated" in s for s in sources[:k])

@@ -1274,6 +1274,12 @@ def test_09_answers_wait_for_check():
         assert "λ + \\tfrac12" not in words and "⌈λ" not in words, name
         assert "\\lceil" not in words and "jump" not in words, name
     assert "printed how many" not in text[ask["q_probes"]]
+    # review r61 09-2: q_reads is asked before §5's renders, whose printed table (nearest,
+    # bilinear, mipmapped) would answer it; that cell and §7's table are held
+    reads_at = next(i for i, t in enumerate(text) if re.search(r"^q_reads = Predict", t, re.M))
+    renders = next(i for i, t in enumerate(text) if "RMS error {rms[f]:.3f}" in t)
+    assert reads_at + 1 == renders and text[renders].startswith("q_reads.hold()")
+    assert not any("mipmap" in t and "RMS error" in t for t in text[:reads_at])
     assert "approximate" in text[ask["q_level"] - 1] and "§8.14.1" in text[ask["q_level"] - 1]
     ns = lesson("09_texture_filtering")
     assert max(ns.bound_gap.values()) <= 1  # GL's bounds: levels at most one apart
@@ -1307,6 +1313,16 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     # the onset of moiré (λ > 3) and of the seam to grey level 4 (λ > 3.5) both lie inside the
     # slider's range, the seam after the moiré
     assert 0 < ns.moire_tilt < ns.seam_tilt < 89
+    # review r61 09-1: which level changes show in the image. Nearest within a level keeps the
+    # texture's contrast at levels 1-3 (only grey level 4 differs); a bilinear read loses
+    # contrast level by level, level 3's one-texel checks to about half of level 2's
+    for (name, tilt), spread in ns.contrast.items():
+        assert set(spread) >= {1, 2, 3} and (4 in spread) == (tilt > ns.seam_tilt), (name, tilt)
+        assert spread.get(4, 0.0) < 1e-9
+        if name == "nearest_mipmap_nearest":
+            assert all(abs(spread[k] - ns.crisp) < 0.01 for k in (1, 2, 3)), spread
+        else:
+            assert ns.crisp > spread[1] > spread[2] > 0.2 and spread[3] < 0.6 * spread[2], spread
     explorer = FilterExplorer(tilt=0, filter="nearest", repeats=int(ns.uv_x6.max()),
                               samples=2, backend="image")  # fmt: skip
     try:

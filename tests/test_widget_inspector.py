@@ -1,5 +1,7 @@
 """PixelInspector: driven from code like a student would, its figure follows the controls."""
 
+import re
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -107,10 +109,21 @@ def test_inspector_legible_at_16_samples_and_at_the_last_pixel():
         assert all(lab.get_fontsize() >= 0.75 * size for lab in w.pixel.labels)
         w.pattern.value = "16 standard"
         assert not w.samples.covered.get_visible() and not w.samples.uncovered.get_visible()
-        assert "covered fraction" in w._left_note.get_text()
+        # review r61 08-2: the greys have a key, 0 to 1, under the grid, clear of it
+        key = w.fraction_key
+        assert key.ax.get_visible() and "covered fraction" in key.ax.get_xlabel()
+        assert key.mappable.norm.vmin == 0 and key.mappable.norm.vmax == 1
+        w.fig.canvas.draw()
+        r = w.fig.canvas.get_renderer()
+        grid, bar = w._left.get_window_extent(r), key.ax.get_tightbbox(r)
+        assert bar.y1 < grid.y0 and bar.y0 >= 0, (bar, grid)
+        # the darkest grey of the key is the grey of a fully covered pixel
+        full = w.samples.fraction.image
+        assert np.allclose(full.cmap(full.norm(1.0)), key.cmap(key.norm(1.0)))
         assert all(lab.get_fontsize() >= 0.75 * size for lab in w.pixel.labels)
         w.pattern.value = "4 ordered grid"  # back to few samples: the dots return
         assert w.samples.covered.get_visible() and "every sample" in w._left_note.get_text()
+        assert not w.fraction_key.ax.get_visible()  # the dots show it: no key
         # the ordered grid's edge-value labels do not overlap (they point out of the pixel)
         w.row.value, w.col.value = 3, 13
         w.fig.canvas.draw()
@@ -197,6 +210,11 @@ def test_sixteen_samples_numbers_clear_each_other_and_the_table_gives_edge_value
             e = w.result.trace.samples.edge_values(3, 13)
             assert w.table.value.count("<tr>") == len(e) + 1
             assert all(edge_value_text(v) in w.table.value for v in e.ravel())
+        # review r61 08-2: every offset at one precision, 4 decimals ("0.03906" was "0.0391")
+        offsets = re.findall(r"<td>\(([^)]*)\)</td>", w.table.value)
+        assert len(offsets) == len(w.result.samples) and all(
+            re.fullmatch(r"\d\.\d{4}, \d\.\d{4}", o) for o in offsets
+        )
         w.row.value = 4  # the table follows the pixel
         assert "pixel (4, 13)" in w.table.value
     finally:
@@ -212,3 +230,27 @@ def test_edge_values_exactly_zero_are_marked_in_the_table():
         assert "0 (on the edge)" in w.table.value and "yes" in w.table.value  # a top edge
     finally:
         w.close()
+
+
+def test_labels_stay_in_the_panel_by_a_corner_where_two_edges_meet():
+    """Pixel (3, 16) of lesson 08's triangle lies by its corner (18.7, 4.2): moving s1's and
+    s3's labels off both edges pushed them past the panel, the margins grew until the pixel
+    was a quarter of the panel and s1's label sat on the title. A label now moves only within
+    the panel (it may touch an edge line there)."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])
+        w = PixelInspector(tri, 20, 14, row=3, col=16, backend="image")
+        try:
+            w.fig.canvas.draw()
+            r = w.fig.canvas.get_renderer()
+            ax = w.pixel.square.axes
+            frame, title = ax.get_window_extent(r), ax.title.get_window_extent(r)
+            pixel = w.pixel.square.get_window_extent(r)
+            assert pixel.width > 0.3 * frame.width, (pixel, frame)
+            for lab in w.pixel.labels:
+                box = lab.get_bbox_patch().get_window_extent(r)
+                assert frame.y0 <= box.y0 and box.y1 <= frame.y1 and not box.overlaps(title)
+        finally:
+            w.close()

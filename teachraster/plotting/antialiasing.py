@@ -492,10 +492,18 @@ def _off_lines(ax, mine, moved, side, renderer, lines, *, gap_pt: float) -> None
     paths = [line.get_transform().transform_path(line.get_path()) for line in lines]
     to_px = ax.figure.dpi / 72.0
     gap = gap_pt * to_px
+    # the panel's whole box: a label pushed beyond it (two edges crossing near a pixel by a
+    # triangle's corner) made the margins grow until the pixel shrank to a quarter of the
+    # panel and a label sat on the title; there it stays crossed instead
+    room = ax.get_position(original=True).transformed(ax.figure.transFigure)
 
     def crossed(box, dy):
         grown = Bbox.from_extents(box.x0 - gap, box.y0 - gap + dy, box.x1 + gap, box.y1 + gap + dy)
         return any(p.intersects_bbox(grown, filled=False) for p in paths)
+
+    def clear(boxes, shifts):
+        inside = all(room.y0 <= b.y0 + dy and b.y1 + dy <= room.y1 for b, dy in zip(boxes, shifts))
+        return inside and not any(crossed(b, dy) for b, dy in zip(boxes, shifts) if dy)
 
     mine = sorted(mine, key=lambda lab: -_padded_box(lab, renderer, 0.0).y0)  # top first
     for i in range(len(mine)):
@@ -504,8 +512,7 @@ def _off_lines(ax, mine, moved, side, renderer, lines, *, gap_pt: float) -> None
             continue
         for step in np.arange(2.0, 120.0, 2.0):  # points, up first, then down
             shifts = next((d for d in (_pushed(boxes, i, sign * step * to_px, gap)
-                                       for sign in (1, -1))
-                           if not any(crossed(b, dy) for b, dy in zip(boxes, d) if dy)), None)  # fmt: skip
+                                       for sign in (1, -1)) if clear(boxes, d)), None)  # fmt: skip
             if shifts is not None:
                 for o, dy in zip(mine, shifts):
                     moved[id(o)] += dy / to_px

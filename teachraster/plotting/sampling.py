@@ -142,8 +142,9 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
     (ideal,) = c.plot(result.x, result.ideal, color="0.3", lw=1.5, ls="--",
                       label="ideal (nothing above Nyquist)")  # fmt: skip
     (rec,) = c.plot(result.x, result.reconstructed, color=OKABE_ITO["bluish_green"], lw=2.5,
-                    label="reconstructed")  # fmt: skip
-    c.set_title("3. reconstruct (linear, as bilinear filtering)")
+                    label="reconstructed: linear,\nas bilinear filtering")  # fmt: skip
+    # short: a title wider than the panel lost its "3." off the figure's left edge (r61 08-3)
+    c.set_title("3. reconstruct")
     c.set_xlabel("x (the frequency rises to the right)")
     spans = []
     for ax in axes:

@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import ipywidgets as widgets
+import matplotlib as mpl
 import numpy as np
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import ListedColormap, Normalize
 
 from ..core.fill import rasterize
 from ..core.trace import edge_name
@@ -23,6 +26,29 @@ from .common import (
     title_html,
 )
 from .display import FigureDisplay, new_figure, resolve_backend
+
+#: The left panel's greys when more than 4 samples hide their dots: a pixel's covered fraction
+#: on ``Greys`` from 0 to 1 / MANY_SAMPLES_GREY (1 is a dark grey, on which the triangle's
+#: black edges still show; up to 4 samples the greys are lighter, to 2.5, under the dots).
+MANY_SAMPLES_GREY = 1.25
+
+
+def fraction_key(fig, ax, width: int, height: int):
+    """A horizontal colour bar under ``ax``'s grid of ``width`` x ``height`` pixels (drawn at
+    equal aspect, anchored at the top of its box): the covered fraction 0 to 1 in the greys
+    the left panel uses with many samples (review r61 08-2: no key said dark = 1)."""
+    box = ax.get_position()
+    fig_w, fig_h = fig.get_size_inches()
+    grid_h = min(box.width * fig_w * height / width / fig_h, box.height)
+    bottom = box.y1 - grid_h - 0.08  # below the grid, clear of its last row
+    cax = fig.add_axes((box.x0 + 0.15 * box.width, bottom, 0.7 * box.width, 0.035))
+    greys = mpl.colormaps["Greys"]
+    cmap = ListedColormap(greys(np.linspace(0, 1 / MANY_SAMPLES_GREY, 256)))
+    key = fig.colorbar(ScalarMappable(Normalize(0, 1), cmap), cax=cax, orientation="horizontal",
+                       ticks=[0, 0.25, 0.5, 0.75, 1])  # fmt: skip
+    cax.tick_params(labelsize=13)
+    cax.set_visible(False)
+    return key
 
 
 class PixelInspector(Holdable):
@@ -77,6 +103,7 @@ class PixelInspector(Holdable):
                 fig.add_axes((0.6, 0.1, 0.39, 0.66)),
             )
             plot_pixel_grid(left, width, height)
+            left.set_anchor("N")  # the grid at the top of its box: room for the key under it
             self.samples = plot_samples(left, self.result)
             for tri in self._triangles():
                 closed = np.vstack([tri, tri[:1]])
@@ -87,6 +114,7 @@ class PixelInspector(Holdable):
             # what the left panel shows, under it (its column label sits on top)
             self._left_note = left.text(0.5, -0.03, "", transform=left.transAxes, ha="center",
                                         va="top", fontsize=14)  # fmt: skip
+            self.fraction_key = fraction_key(fig, left, width, height)
             self.pixel = plot_pixel_samples(right, self.result, row, col,
                                             triangles=self._pixel_triangles())  # fmt: skip
             self._mark()
@@ -135,9 +163,11 @@ class PixelInspector(Holdable):
         self.samples.covered.set_visible(few)
         self.samples.uncovered.set_visible(few)
         if self.samples.fraction is not None:  # darker greys when they are all there is
-            self.samples.fraction.image.set_clim(0, 2.5 if few else 1.25)
-        self._left_note.set_text("every sample (filled = covered)" if few
-                                 else f"{n} samples: grey = covered fraction")  # fmt: skip
+            self.samples.fraction.image.set_clim(0, 2.5 if few else MANY_SAMPLES_GREY)
+        self._left_note.set_text("every sample (filled = covered)" if few else "")
+        # with more samples the greys are the picture: a key says which grey is which fraction
+        self.fraction_key.ax.set_visible(not few)
+        self.fraction_key.set_label(f"{n} samples: covered fraction", fontsize=14)
 
     def _mark(self) -> None:
         r, c = self.row.value, self.col.value
@@ -175,7 +205,7 @@ class PixelInspector(Holdable):
             cells = "".join(
                 f"<td>{edge_value_text(v)}{' (on the edge)' if v == 0 else ''}</td>" for v in e
             )
-            rows.append(f"<tr><td>s{s}</td><td>({ox:.4g}, {oy:.4g})</td>{cells}"
+            rows.append(f"<tr><td>s{s}</td><td>({ox:.4f}, {oy:.4f})</td>{cells}"
                         f"<td>{'yes' if covered[s] else 'no'}</td></tr>")  # fmt: skip
         return (
             f"<details{' open' if len(offsets) > 4 else ''}><summary>pixel ({r}, {c}): every sample's edge values (px², positive = "
