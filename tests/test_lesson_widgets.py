@@ -576,7 +576,7 @@ def test_depth_explorer_says_fighting_becomes_possible_and_names_the_far_plane()
         assert "from Δz = δ at <b>z ≈ 91.6</b>" in ex.info.value
         # review r59 05b-2: half the pixels at 130, more beyond (not "half from 130 on")
         assert (
-            "at half the pixels where Δz = 2δ, at <b>z ≈ 130</b>, at more beyond" in ex.info.value
+            "at half the pixels at <b>z ≈ 130</b> (Δz = 2δ) and at more beyond it" in ex.info.value
         )
         assert "half the pixels from" not in ex.info.value
         ex.near.value = 10.0

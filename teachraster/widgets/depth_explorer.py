@@ -300,8 +300,8 @@ class DepthPrecisionExplorer:
                 where += ", at less than half the pixels up to the far plane,"
             else:
                 where += (
-                    f", at half the pixels where Δz = 2δ, at <b>z ≈ "
-                    f"{distance(self.half_from)}</b>, at more beyond,"
+                    f", at half the pixels at <b>z ≈ {distance(self.half_from)}</b> (Δz = 2δ) "
+                    "and at more beyond it,"
                 )
         text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
         if at:
