@@ -1242,6 +1242,10 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     assert "implicit\n**viewport scissor**" in after and "§15.6 *Viewport*" in after
     assert "must really cut" not in after and "**depth clamping**" in after
     assert any("stages = [" in t and '"clip"' in t for t in text[:ask])  # the pipeline strip
+    # where x/y clipping matters: a vertex beyond the guard band, cut by the band's x plane only
+    assert ns.far_side_clip[2, 0] / ns.far_side_clip[2, 3] > ns.band
+    cuts = [s.plane for s in ns.band_steps if s.new.any()]
+    assert cuts == ["guard x <= g w"]
 
 
 @pytest.mark.notebook
