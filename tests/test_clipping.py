@@ -392,3 +392,17 @@ def test_clip_polygon_steps_record_each_plane_and_end_at_clip_polygon():
         # every new vertex of the near step lies on z = -w
         near = steps[0]
         assert np.allclose(near.polygon[near.new, 2], -near.polygon[near.new, 3])
+
+
+def test_plane_names_follow_the_planes_rows():
+    """Review r59 (05a, guard band): PLANE_NAMES and the edge names had each guard pair's two
+    sides swapped; row k of planes() is the plane named k."""
+    from teachraster.pipeline.debugging.edge_names import PLANES
+    from teachraster.pipeline.geometry.clipping import PLANE_NAMES, distances
+
+    g = 10.0
+    right, top = np.array([2 * g, 0.0, 0.0, 1.0]), np.array([0.0, 2 * g, 0.0, 1.0])
+    assert np.argmin(distances(right, g)) == PLANE_NAMES.index("guard x <= g w")
+    assert np.argmin(distances(top, g)) == PLANE_NAMES.index("guard y <= g w")
+    assert PLANES[np.argmin(distances(right, g))] == "guard right"
+    assert PLANES[np.argmin(distances(top, g))] == "guard top"

@@ -188,6 +188,10 @@ def test_depth_explorer_reverse_z_helps_float32_only():
         ex.reverse.value = True
         assert ex.mapping == "reversed" and ex.fight_from is None
         assert "no z-fighting" in ex.info.value
+        # review r59 05b-1: no dotted line, so its key entry says so instead of naming one
+        half = ex.ax.get_legend().get_texts()[-1]
+        assert not np.isfinite(ex.marker.get_xdata()).any()
+        assert half.get_text() == "fights half the time: nowhere here"
         ex.format.value = "unorm24"  # an even step: reversing gains nothing
         z = np.geomspace(1, 1000, 300)
         assert first_fight(z, 0.005, 0.1, 1000.0, "unorm24", "reversed") == first_fight(
@@ -570,7 +574,11 @@ def test_depth_explorer_says_fighting_becomes_possible_and_names_the_far_plane()
         # review r54 05b-2: the caption quotes the crossing and where half the pairs fight,
         # not where one sampled pair first fought
         assert "from Δz = δ at <b>z ≈ 91.6</b>" in ex.info.value
-        assert "from Δz = 2δ at <b>z ≈ 130</b>" in ex.info.value
+        # review r59 05b-2: half the pixels at 130, more beyond (not "half from 130 on")
+        assert (
+            "at half the pixels at <b>z ≈ 130</b> (Δz = 2δ) and at more beyond it" in ex.info.value
+        )
+        assert "half the pixels from" not in ex.info.value
         ex.near.value = 10.0
         assert ex.fight_from == pytest.approx(1000.0) and ex.half_from is None
         assert (

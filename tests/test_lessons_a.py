@@ -1221,3 +1221,51 @@ def test_05b_units_alone_one_loses_where_the_histogram_says_three_win():
     assert abs(ns.gpu_shown["1 unit"] - int((ns.apart <= 0).sum())) < 0.01 * n_px
     assert set(ns.apart[ns.apart > 0]) == {1, 2}  # "the histogram's 1 and 2"
     assert ns.gpu_shown["3 units"] == n_px  # "three units ... win everywhere"
+
+
+@pytest.mark.notebook
+def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
+    """Review r59 05a-1..4: q_clip plugged printed numbers into the t formula given just
+    above it; it now asks whether the edge to the vertex behind the eye still crosses
+    z/w = -1 after the divide (it does not: that vertex lands beyond the far plane), before
+    the text says so. Depth clamping and the implicit viewport scissor are named; a strip
+    draws where clipping sits in the pipeline."""
+    ns = lesson("05a_zbuffer")
+    assert not ns.crosses_after_divide and ns.z_ndc[0] > -1 and ns.z_ndc[2] > 1
+    assert ns.clip_choices[2].startswith("no")  # the answer when the edge does not cross
+    cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "q_clip = Predict(" in t)
+    before = "\n".join(t for c, t in zip(cells[:ask], text[:ask]) if c["cell_type"] == "markdown")
+    assert "mirrored" not in before.split("## 4.")[1] and "beyond the far plane" not in before
+    after = "\n".join(text[ask:])
+    assert "implicit\n**viewport scissor**" in after and "§15.6 *Viewport*" in after
+    assert "must really cut" not in after and "**depth clamping**" in after
+    assert any("stages = [" in t and '"clip"' in t for t in text[:ask])  # the pipeline strip
+    # where x/y clipping matters: a vertex beyond the guard band, cut by the band's x plane only
+    assert ns.far_side_clip[2, 0] / ns.far_side_clip[2, 3] > ns.band
+    cuts = [s.plane for s in ns.band_steps if s.new.any()]
+    assert cuts == ["guard x <= g w"]
+
+
+@pytest.mark.notebook
+def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
+    """Review r59 05b-3..6: q_reverse asks float32 and unorm24; q_bias asks the smallest number
+    of units before the unit counts are printed (a tie keeps the wall: two is not enough);
+    three units are less than the slope term on every square, printed per square; the OpenGL
+    reverse-Z recipe names the reversed projection too."""
+    ns = lesson("05b_depth_precision")
+    assert ns.units_needed == 3 and ns.lost_by_units[2] > 0 and ns.lost_by_units[3] == 0
+    assert ns.slope_steps.min() > 3 and ns.slope_steps.max() > 1000  # "thousands ... at z = 1"
+    code = _cells("05b_depth_precision", "code")
+    asked = next(c for c in code if "q_reverse = Predict(" in c)
+    assert "answer=reverse_choices[1]" in asked and "<b>unorm24</b>" in asked
+    assert ns.reverse_choices[1] == "float32: none, or nearly none; unorm24: about as many"
+    assert not ns.fights_reversed["float32"].any() and ns.fights_reversed["unorm24"][-1] > 0
+    ask = next(i for i, c in enumerate(code) if "q_bias = Predict(" in c)
+    printed = "no slope term: the decal loses at"  # the unit counts, printed after it
+    assert not any(printed in c for c in code[:ask]) and printed in code[ask + 1]
+    assert not any("smallest visible Δz at z = 1 is" in c for c in code)  # no third copy
+    recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
+    assert "In both APIs it\ntakes a **reversed projection matrix**" in recipe
+    assert "glDepthRange(1, 0)" in recipe

@@ -494,7 +494,7 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
 def plot_depth(
     ax, source, *, cmap=None, vmin=None, vmax=None, colorbar: bool = True, title: bool = True
 ) -> ImageArtists:
-    """The depth buffer: window depth z per pixel (0 near, 1 far), NaN transparent.
+    """The depth buffer: window depth z_win per pixel (0 near, 1 far), NaN transparent.
 
     Parameters
     ----------
@@ -519,7 +519,7 @@ def plot_depth(
     if depth is None:
         raise ValueError("no depth: give the triangle window depths, Triangle(..., z=[...])")
     result = show_values(ax, depth, cmap=cmap, vmin=vmin, vmax=vmax, colorbar=colorbar,
-                   label="window depth z (dark = nearer)")  # fmt: skip
+                   label=r"window depth $z_\mathrm{win}$ (dark = nearer)")  # fmt: skip
     if title:
         ax.set_title("depth buffer")
     return result

@@ -103,8 +103,11 @@ class ZBufferStepView:
                    for c, t in zip(FRAGMENT_COLORS[1:], FRAGMENT_CLASSES[1:])]  # fmt: skip
         handles.append(Line2D([], [], color=COLORS["grid"], lw=1.5, ls="--",
                               label="the whole scene, when drawn"))  # fmt: skip
-        self.ax_fragments.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02),
-                                 fontsize=fs(0.8), ncols=1, frameon=False)  # fmt: skip
+        # one key for the figure, two columns under both panels: a single column under the
+        # left panel left the right half of that row empty (review r59 05a-5)
+        self.legend = self.ax_fragments.figure.legend(
+            handles=handles, loc="outside lower center", fontsize=fs(0.8), ncols=2, frameon=False
+        )
         final = self.frame.depth[np.isfinite(self.frame.depth)]
         self.depth = self.ax_depth.imshow(np.full((height, width), np.nan), cmap=VALUE_CMAP,
                                           vmin=final.min(), vmax=final.max(), extent=extent,
@@ -116,7 +119,7 @@ class ZBufferStepView:
         bar.locator = MaxNLocator(4)  # at least three labelled ticks over the short range
         bar.formatter = FormatStrFormatter("%.3f")
         bar.update_ticks()
-        bar.set_label("window depth z (dark = nearer)")  # the name plot_depth gives it
+        bar.set_label(r"window depth $z_\mathrm{win}$ (dark = nearer)")  # as plot_depth names it
         self.colorbar = bar
         rows, cols = np.nonzero(self.frame.coverage)
         pad = 0.08 * max(width, height)

@@ -30,6 +30,10 @@ ALT = "the smallest visible depth difference against view depth"
 FORMATS = ("unorm16", "unorm24", "float32")
 #: Mappings offered: OpenGL's window depth (near -> 0) and reverse-Z (near -> 1).
 MAPPINGS = ("perspective", "reversed")
+#: The dotted line's key entry, and what it says when there is no such line (the pair fights
+#: at less than half its pixels up to the far plane)
+HALF_LABEL = "fights half the time (Δz = 2δ)"
+HALF_NOWHERE = "fights half the time: nowhere here"
 
 
 def distance(z: float) -> str:
@@ -152,7 +156,7 @@ class DepthPrecisionExplorer:
             # pair happens to fight (review r54 05b-2); last in the legend, so the "now" entry
             # stays the second (_now_text)
             self.marker = ax.axvline(np.nan, color=COLORS["outside"], lw=2, ls=":",
-                                     label="fights half the time (Δz = 2δ)")  # fmt: skip
+                                     label=HALF_LABEL)  # fmt: skip
             ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-12, 1e3),
                    xlim=(0.01, self.far))  # fmt: skip
             ax.grid(True, which="major", alpha=0.3)
@@ -220,6 +224,15 @@ class DepthPrecisionExplorer:
         legend = self.ax.get_legend()
         if legend is None:
             legend = self.ax.legend(loc="upper left")
+        # no dotted line, no key entry for one: it says so, greyed (review r59 05b-1)
+        half = legend.get_texts()[-1]
+        label = HALF_LABEL if self.half_from is not None else HALF_NOWHERE
+        if half.get_text() != label:
+            half.set_text(label)
+            half.set_color("black" if self.half_from is not None else "0.55")
+            legend.legend_handles[-1].set_alpha(1.0 if self.half_from is not None else 0.3)
+            if getattr(self, "_blit", None) is not None:
+                self._blit.invalidate()
         # The legend keeps room for the widest "now" label of this format (every near value
         # has as many digits at most), its own text transparent: a new value then draws the
         # label alone (_now_text), not the legend's boxes again (about 12 ms a value).
@@ -280,13 +293,15 @@ class DepthPrecisionExplorer:
         if self.fight_from is None or cross is None:
             where = "<b>no z-fighting</b> up to the far plane"
         else:
-            # possible from the crossing on, at half the pixels from Δz = 2δ (1 - δ/Δz = ½)
+            # possible from the crossing on, at half the pixels where Δz = 2δ (1 - δ/Δz = ½),
+            # at more beyond it (review r59 05b-2: "from" read as "half from there on")
             where = f"z-fighting possible from Δz = δ at <b>z ≈ {distance(cross)}</b>"
             if self.half_from is None:
                 where += ", at less than half the pixels up to the far plane,"
             else:
                 where += (
-                    f", at half the pixels from Δz = 2δ at <b>z ≈ {distance(self.half_from)}</b>,"
+                    f", at half the pixels at <b>z ≈ {distance(self.half_from)}</b> (Δz = 2δ) "
+                    "and at more beyond it,"
                 )
         text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
         if at:

@@ -60,11 +60,15 @@ class ZBufferStepper(Shown):
             raise ValueError("frame must come from tr.render(..., trace=True)")
         self.backend = resolve_backend(backend)
         with style_context(style):
-            self.fig = new_figure((9.0, 5.6), self.backend)
+            self.fig = new_figure((9.0, 5.0), self.backend)
             self.fig.set_layout_engine("constrained")
             ax_f, ax_d = self.fig.subplots(1, 2)
             self.view = ZBufferStepView(frame, ax_f, ax_d)
             self.counts = self.view.show(int(k))
+            # laid out once: re-solved per step, the constrained layout moved the panels and
+            # resized the colour bar with each title's length (review r59 05a-5)
+            self.fig.canvas.draw()
+            self.fig.set_layout_engine("none")
             self.display = FigureDisplay(self.fig, self.backend)
         n = self.view.n_triangles
         self.triangle = widgets.IntSlider(value=int(k), min=0, max=n - 1, description="triangle")

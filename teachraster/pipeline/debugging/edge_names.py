@@ -33,8 +33,9 @@ from ..geometry.clipping import CLIPPED, clip_triangles, distances
 from ..rendering.stages import guard_band
 
 #: Short names of the clip planes, in the clipper's order (near, far, then the guard band's
-#: left, right, bottom and top planes: x >= -g w, x <= g w, y >= -g w, y <= g w).
-PLANES = ("near", "far", "guard left", "guard right", "guard bottom", "guard top")
+#: right, left, top and bottom planes: x <= g w, x >= -g w, y <= g w, y >= -g w, the rows of
+#: ``planes()``; NDC y points up).
+PLANES = ("near", "far", "guard right", "guard left", "guard top", "guard bottom")
 
 #: What kind of edge refused a point (``PieceEdges.kind``).
 INPUT_EDGE, CLIP_EDGE, SEAM = 0, 1, 2

@@ -305,8 +305,10 @@ def clip_polygon(
 
 #: Names of the clip planes, in the order of :func:`planes`.
 #: The eye comes last: it only removes the origin, which the planes before it leave alone.
-PLANE_NAMES = ("near z >= -w", "far z <= w", "guard x >= -g w", "guard x <= g w",
-               "guard y >= -g w", "guard y <= g w", "eye w > 0")  # fmt: skip
+# in the order of planes(): row 2 is -x + g w >= 0, that is x <= g w (the names had the two
+# sides of each pair swapped)
+PLANE_NAMES = ("near z >= -w", "far z <= w", "guard x <= g w", "guard x >= -g w",
+               "guard y <= g w", "guard y >= -g w", "eye w > 0")  # fmt: skip
 
 
 @dataclass(frozen=True)

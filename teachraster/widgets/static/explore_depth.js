@@ -178,8 +178,9 @@ function mount(el, data, host) {
     "scale): dark where a pixel's range of z holds many, single ticks where they are few. " +
     "Drag the near plane (the orange handle); point at a depth to magnify it in the lens " +
     "below, where single values show (+ and − zoom the lens).");
-  const g = { left: 150, right: 20, top: 34, strip: 40, gap: 8, lensTop: 0, lensRow: 26 };
+  const g = { left: 150, right: 20, top: 66, strip: 40, gap: 8, lensTop: 0, lensRow: 26 };
   const W = 900;
+  g.width = W;
   const pw = W - g.left - g.right;
   g.lensTop = g.top + 4 * (g.strip + g.gap) + 50;
   const Hc = g.lensTop + 4 * (g.lensRow + 4) + 46;
@@ -294,7 +295,7 @@ function nearInput(canvas, v) {
 function drawLogAxis(ctx, g, zmin, far, xOf, y) {
   ctx.fillStyle = "#111";
   ctx.strokeStyle = "#555";
-  ctx.font = "13px sans-serif";
+  ctx.font = "14px sans-serif";
   ctx.textAlign = "center";
   for (let e = Math.ceil(Math.log10(zmin)); e <= Math.floor(Math.log10(far)); e++) {
     const x = xOf(10 ** e);
@@ -326,22 +327,32 @@ function drawNear(ctx, g, x, near, height) {
   ctx.closePath();
   ctx.fill();
   ctx.fillStyle = "#111";
-  ctx.font = "bold 13px sans-serif";
-  ctx.fillText(`near = ${fmt(near, 3)}`, x + 12, g.top - 10);
-  ctx.font = "12px sans-serif";
-  if (x - g.left > 70) ctx.fillText("clipped", g.left + 6, g.top + 14);
+  ctx.font = "bold 14px sans-serif";
+  // right of the handle, or left of it near the right end, where the label would run off
+  const label = `near = ${fmt(near, 3)}`;
+  const room = x + 12 + ctx.measureText(label).width < g.width - 4;
+  ctx.textAlign = room ? "left" : "right";
+  ctx.fillText(label, room ? x + 12 : x - 12, g.top - 10);
+  ctx.textAlign = "left";
+  ctx.font = "14px sans-serif";
+  if (x - g.left > 70) ctx.fillText("clipped", g.left + 6, g.top + 16);
 }
 
+// the colour key in its own row at the top, above the near plane's handle and label (which
+// overlapped it at near = 1 and at the right end of the drag; review r59 05b-7); 14 px text,
+// 12 px or more when the 900 px canvas is shrunk to a notebook column
 function drawLegend(ctx, g, W) {
-  const x0 = W - g.right - 300;
-  ctx.font = "12px sans-serif";
+  const x0 = W - g.right - 7 * 46;
+  ctx.font = "14px sans-serif";
   ctx.fillStyle = "#111";
-  ctx.fillText("values per pixel's range:", x0 - 150, 14);
+  ctx.textAlign = "right";
+  ctx.fillText("values per pixel's range:", x0 - 10, 17);
+  ctx.textAlign = "left";
   for (let k = 0; k <= 6; k++) {
     ctx.fillStyle = densityColour(10 ** k);
-    ctx.fillRect(x0 + k * 42, 4, 40, 12);
+    ctx.fillRect(x0 + k * 46, 4, 44, 16);
     ctx.fillStyle = "#111";
-    ctx.fillText(k ? `10${"⁰¹²³⁴⁵⁶"[k]}` : "1", x0 + k * 42 + 4, 28);
+    ctx.fillText(k ? `10${"⁰¹²³⁴⁵⁶"[k]}` : "1", x0 + k * 46 + 4, 36);
   }
 }
 
@@ -357,7 +368,7 @@ function drawLens(ctx, g, W, z0, width, n, far) {
     ctx.strokeStyle = "#999";
     ctx.strokeRect(g.left + 0.5, y + 0.5, pw, g.lensRow);
     ctx.fillStyle = "#111";
-    ctx.font = "13px sans-serif";
+    ctx.font = "14px sans-serif";
     ctx.fillText(name, 8, y + g.lensRow / 2 + 5);
     const zs = valuesIn(za, zb, n, far, f, 600);
     if (zs === null) {
@@ -381,9 +392,12 @@ function drawLens(ctx, g, W, z0, width, n, far) {
   });
   const y = g.lensTop + 4 * (g.lensRow + 4) + 14;
   ctx.fillStyle = "#111";
-  ctx.font = "13px sans-serif";
+  ctx.font = "14px sans-serif";
   ctx.textAlign = "center";
-  for (const t of [za, z0, zb]) ctx.fillText(fmt(t, 7), xOf(t), y);
+  [za, z0, zb].forEach((t, k) => {
+    ctx.textAlign = ["left", "center", "right"][k];  // the ends stay inside the canvas
+    ctx.fillText(fmt(t, 7), xOf(t), y);
+  });
   ctx.textAlign = "left";
 }
 
@@ -397,7 +411,10 @@ export function depthTable(z, n, f) {
   }
   const rows = FORMATS.map(([fmtName, name]) => {
     const nb = neighbours(z, n, f, fmtName);
-    const step = nb.zFarther - nb.z;
+    // at the near plane float32 stores 0 and its neighbour is the smallest denormal, 2^-149:
+    // a step of z too small for z + step to differ from z in a double (review r59 05b-7)
+    const denormal = fmtName === "float32" && nb.value === 0;
+    const step = nb.zFarther - nb.z || (denormal ? (2 ** -149 * (f - n) * z * z) / (f * n) : 0);
     // [z, far) and the value at far itself
     const beyond = countBetween(Math.max(z, n), f, n, f, fmtName) + 1;
     const all = countBetween(n, f, n, f, fmtName) + 1;
