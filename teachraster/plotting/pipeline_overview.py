@@ -94,8 +94,9 @@ EARLY_Z = ("rasterisation", "depth test")
 #: 05a and 10 say); with discard, the test may still run early and the write
 #: late (lessons 05a, 10; issue 29, review r52 00-4: the box names its lessons).
 EARLY_Z_LABEL = (
-    "early-z (lessons 05a, 10), optional: depth tested and\nwritten before shading, only if the shader "
-    "neither\ndiscards, writes depth nor writes memory\n(discard: test early, write late)"
+    # three lines that fit the dashed box (a fourth ran over its frame); the dashes say optional
+    "early-z (lessons 05a, 10): depth tested and written before\nshading, only if the shader "
+    "neither discards, writes depth\nnor writes memory (discard: test early, write late)"
 )
 
 
