@@ -344,7 +344,8 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
     ctx.font = `bold ${size}px sans-serif`;
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
-    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid);
+    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid,
+      [p, q]);
     // a white halo: the label crosses the line and the diamonds beside the end point
     haloText(ctx, text, x, y, "#111");
   });
@@ -355,13 +356,23 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
 // that stay inside the canvas, right of and below the axis labels (`grid`: [left, top] of the
 // pixel grid; review r43 12a-8: "p1 on a pixel corner" covered the column numbers), the first
 // that covers none of the boxes `avoid` ([x, y, w, h]: the "tie" marks), or the first inside
-// if every one covers a mark.
-export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, grid = [0, 0]) {
+// if every one covers a mark. A spot the segment itself (`segment`: [p, q], canvas pixels)
+// runs through comes after those it does not (review r63 12a-5: "p1 on a pixel centre" was
+// written across the line).
+export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, grid = [0, 0],
+  segment = null) {
   const left = Math.max(2, grid[0], x - 9 - textWidth);
   const spots = [[x + 9, y - 9], [left, y - 9], [x + 9, y + 22], [left, y + 22]];
   const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 &&
     ly - size >= grid[1] && lx >= grid[0]);
   const clear = ([lx, ly]) => avoid.every(([bx, by, bw, bh]) =>
     lx + textWidth < bx || bx + bw < lx || ly < by || by + bh < ly - size);
-  return inside.find(clear) || inside[0] || [left, y + 22];
+  const crossed = ([lx, ly]) => segment !== null && Array.from({ length: 65 }, (_, k) => k / 64)
+    .some((t) => {
+      const sx = segment[0][0] + t * (segment[1][0] - segment[0][0]);
+      const sy = segment[0][1] + t * (segment[1][1] - segment[0][1]);
+      return sx >= lx && sx <= lx + textWidth && sy >= ly - size && sy <= ly + 3;
+    });
+  return inside.find((s) => clear(s) && !crossed(s)) || inside.find(clear) || inside[0] ||
+    [left, y + 22];
 }
