@@ -353,12 +353,15 @@ def test_saturate_factor_is_computed_from_the_colours():
 
 
 def test_moved_end_point_prediction_is_computed(ns):
-    """r51 12a-1 and the session-11 brief: cell 7's first task is a numeric prediction asked
-    before the explorer, not a written task: how many of the old line's columns change row
-    when p1 moves one pixel right. The answer is the four ties of the diamond figure (odd
-    columns), and the explanation's shifts are the computed slope difference."""
+    """r51 12a-1 and the session-11 brief: cell 7's first task is a prediction asked before
+    the explorer (held until it is checked), not a written task; since review r63 12a-2 the
+    pixels the line lights when p1 moves one pixel right (PredictPixels), so that the even
+    columns, which keep their row, need an argument too. The columns that change are the four
+    ties of the diamond figure (odd columns), and the explanation's shifts are the computed
+    slope difference."""
     from fractions import Fraction
 
+    assert int(ns.new_cols.sum()) == 9 and ns.new_lit_cols.tolist() == list(range(9))
     assert ns.moved_cols == [1, 3, 5, 7]  # the answer: len(moved_cols) = 4
     assert sorted(int(x) for x, _ in ns.tie_xy) == ns.moved_cols
     assert ns.rise == Fraction(1, 18) and 7 * ns.rise < Fraction(1, 2)
