@@ -671,7 +671,7 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     # early-z (test and write before the shader) only when the shader neither discards nor
     # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the
     # late test, a discarding one may still be tested early and written late (r9)
-    assert "neither discards nor writes depth" in html["depth"]
+    assert "neither discards, writes depth nor writes memory" in html["depth"]
     assert "writes its own depth needs the late test" in html["depth"]
     assert "may still test early and write the depth late" in html["depth"]
     assert "discard" in html["fragment"]

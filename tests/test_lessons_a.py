@@ -211,7 +211,11 @@ def test_00_r37_items():
     assert "declared `centroid`" in tour and "(08_antialiasing.ipynb)" in tour
     # issue 29 / review r52: facing, ties and the clip z range as a table of the APIs
     table = next(t for t in _cells("00_tour", "markdown") if "**What each API does**" in t)
-    assert "§14.6.1, §13.7" in table and "§3.4.2.1, §15.4" in table
+    assert "§14.6.1, §13.7" in table
+    # review r58 00-1: D3D11.3's §3.4.1 is coordinate snapping (no column here); the front face
+    # is §15.1/§15.11, its default FALSE the API documentation's (D3D11_RASTERIZER_DESC)
+    assert "§15.11 *Cull State*, §3.4.2.1 *Top-Left Rule*, §15.4 *Clipping*" in table
+    assert "§3.4.1" not in table and "D3D11_RASTERIZER_DESC" in table
 
 
 @pytest.mark.notebook
@@ -954,7 +958,8 @@ def test_pipeline_shades_before_the_depth_test_and_early_z_tests_before_shading(
 def test_early_z_in_00_and_its_picture_agrees_with_05a():
     """Lesson 05a: early-z splits the early depth test from the late write. Issue 29 and
     review r52 (00-3, 00-4): early-z, the test *and write* before the shader, is a conditional
-    bypass legal only when the shader neither discards nor writes depth; with discard the test
+    bypass legal only when the shader neither discards, writes depth nor writes memory (side
+    effects: review r58 00-2, as 05a and 10 say); with discard the test
     may still run early and the write late (r8-r11, lesson 05a: discard alone does not force
     the late test). Tour, picture and map say the same, and the box names its lessons."""
     from teachraster.plotting import pipeline_overview
@@ -963,7 +968,7 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
     tour = " ".join(tour.split())
     picture = " ".join((pipeline_overview.EARLY_Z_LABEL + pipeline_overview.__doc__).split())
     for text in (tour, picture):
-        assert "neither discards nor writes depth" in text
+        assert "neither discards, writes depth nor writes memory" in text
     assert "test *and write* depth before the shader" in tour
     assert "can keep the early test and only the depth write waits" in tour
     assert "conservative depth" in tour and "gl_FragDepth" in tour
@@ -974,7 +979,10 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
     assert "early-z (lessons 05a, 10)" in drawn
-    assert "only if the shader neither discards nor writes depth (discard: test early" in drawn
+    assert (
+        "only if the shader neither discards, writes depth nor writes memory (discard: test"
+        in drawn
+    )
     plt.close(fig)
 
 

@@ -353,12 +353,15 @@ def test_saturate_factor_is_computed_from_the_colours():
 
 
 def test_moved_end_point_prediction_is_computed(ns):
-    """r51 12a-1 and the session-11 brief: cell 7's first task is a numeric prediction asked
-    before the explorer, not a written task: how many of the old line's columns change row
-    when p1 moves one pixel right. The answer is the four ties of the diamond figure (odd
-    columns), and the explanation's shifts are the computed slope difference."""
+    """r51 12a-1 and the session-11 brief: cell 7's first task is a prediction asked before
+    the explorer (held until it is checked), not a written task; since review r63 12a-2 the
+    pixels the line lights when p1 moves one pixel right (PredictPixels), so that the even
+    columns, which keep their row, need an argument too. The columns that change are the four
+    ties of the diamond figure (odd columns), and the explanation's shifts are the computed
+    slope difference."""
     from fractions import Fraction
 
+    assert int(ns.new_cols.sum()) == 9 and ns.new_lit_cols.tolist() == list(range(9))
     assert ns.moved_cols == [1, 3, 5, 7]  # the answer: len(moved_cols) = 4
     assert sorted(int(x) for x, _ in ns.tie_xy) == ns.moved_cols
     assert ns.rise == Fraction(1, 18) and 7 * ns.rise < Fraction(1, 2)
@@ -367,11 +370,14 @@ def test_moved_end_point_prediction_is_computed(ns):
 def test_line_standards_cite_verified_sections():
     """Section numbers checked against the GL 4.6 core and compatibility PDFs (OpenGL-Registry,
     May 5, 2022): §14.5.1 Basic Line Segment Rasterization (the diamond-exit rule and the
-    four conditions for other algorithms), §14.5.2.2 Wide Lines (14.5.2.1 is the
-    compatibility profile's Line Stipple), §14.5.2.3 Antialiasing, Appendix E.2.1 (wide lines
-    deprecated; INVALID_VALUE in a forward-compatible context)."""
+    four conditions for other algorithms), §14.5.2.2 Wide Lines and §14.5.2.3 Antialiasing in
+    both profiles (the core PDF keeps 14.5.2.1, the compatibility profile's Line Stipple, as a
+    heading "only defined in the compatibility profile": review r63 item 4 expected the core
+    numbers one lower; they are not), core Appendix E.2.1 (wide lines deprecated;
+    INVALID_VALUE in a forward-compatible context). The lesson never cites 14.5.2.1 as a
+    section of its own."""
     text = _cells_before("12a_lines", "db845d96", kinds=("markdown",))
-    assert "§14.5.2.1" not in text and "§14.5.2.2 *Wide Lines*" in text
+    assert "§14.5.2.1" not in text and "§14.5.2.2 *Wide Lines*, the same number in the core" in text
     assert "§14.5.2.3 *Antialiasing*" in text and "E.2.1" in text
     assert "other line segment rasterization algorithms are allowed" in " ".join(text.split())
 

@@ -5,8 +5,9 @@ sits between vertex processing, which ends in window coordinates, and the per-fr
 The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: the fragment
 (pixel) shader runs before the per-fragment depth and stencil tests, which run before blending.
 *Early-z*, running the depth test and write before the shader, is a conditional bypass a
-GPU may take only where the result cannot change: when the shader neither discards nor writes
-depth. A shader that writes its own depth (``gl_FragDepth``, ``SV_Depth``) needs the late test
+GPU may take only where the result cannot change: when the shader neither discards, writes
+depth nor writes memory (image or buffer stores, atomics: side effects a fragment culled early
+would lose). A shader that writes its own depth (``gl_FragDepth``, ``SV_Depth``) needs the late test
 (conservative depth excepted); with one that may discard, a GPU may still test early and write
 late, once the shader has kept the fragment (GL 4.6 §14.9, §15.2; lessons 05a, 10). The picture draws it as an
 optional, dashed depth test between rasterisation and the shader. The stages and their lessons are data
@@ -89,11 +90,13 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
 EARLY_Z = ("rasterisation", "depth test")
 
 #: The early test's label: early-z (test and write before the shader) only when the shader
-#: neither discards nor writes depth; with discard, the test may still run early and the write
+#: neither discards, writes depth nor writes memory (side effects; review r58 00-2, as lessons
+#: 05a and 10 say); with discard, the test may still run early and the write
 #: late (lessons 05a, 10; issue 29, review r52 00-4: the box names its lessons).
 EARLY_Z_LABEL = (
-    "early-z (lessons 05a, 10), optional: depth tested and\nwritten before shading, only if the shader "
-    "neither\ndiscards nor writes depth (discard: test early, write late)"
+    # three lines that fit the dashed box (a fourth ran over its frame); the dashes say optional
+    "early-z (lessons 05a, 10): depth tested and written before\nshading, only if the shader "
+    "neither discards, writes depth\nnor writes memory (discard: test early, write late)"
 )
 
 

@@ -495,14 +495,15 @@ class FillView:
         (r22), the sample dots of a multisampled fill, and at the last step with values their
         colours instead of "covered" and the split's tints, which it hides."""
         c, method = COLORS, trace.method
-        if setup and self._bold_dots:
+        if setup:
             # before the first fill step the picture shows the vertices, the box once found,
             # the split and the untested samples: eight lines for parts, spans and centres
-            # not drawn yet read as on show (review r33, lesson 00 step 0)
+            # not drawn yet read as on show (reviews r33 and r58, lesson 00 step 0; one
+            # sample per pixel too, and tiles' "covered, rejected" at their step 0)
             entries = [("bounding box", "none", c["bbox"])] if boxed and method != "span" else []
             if split:
                 entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
-            return entries + self._sample_entries(trace, coloured, setup=True)
+            return entries + self._sample_entries(trace, coloured, setup=self._bold_dots)
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
         entries = [None] * ValueBar.LINES if coloured else [("covered", c["fill"], c["fill"])]
@@ -513,10 +514,13 @@ class FillView:
         if method != "span":  # span tables draw no box (see show_step)
             entries.append(("bounding box", "none", c["bbox"]))
         if method == "span" and not coloured:
-            entries += [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
-                        ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"])]  # fmt: skip
-            if split:  # the dashed line y = v_mid and the diamond at point 4 (plot_split)
-                entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
+            if split:  # the parts' tints, the line y = v_mid and point 4 (plot_split) appear
+                # together, at the split's step (review r58 00-4: keyed before it was drawn)
+                entries += [
+                    ("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
+                    ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),
+                    ("split y = v_mid, point 4", c["split"], "white", "D"),
+                ]
         elif method == "span" and split:
             # the last step hides the parts' tints but keeps the dashed line and the diamond
             # at point 4: keyed there too (review r52, lesson 00: an unkeyed pink diamond)

@@ -81,6 +81,8 @@ class BlendingExplorer(Shown):
     clip, rgba : (N, 3, 4), optional
         Triangles and their straight-alpha colours; default :func:`default_scene`.
     size : (width, height)
+    white : bool
+        Open with "clear to opaque white" ticked (default: transparent black).
     backend, style : as the other widgets.
 
     Attributes
@@ -106,7 +108,8 @@ class BlendingExplorer(Shown):
     >>> ex.close()
     """
 
-    def __init__(self, clip=None, rgba=None, *, size=(48, 48), backend="auto", style=None):
+    def __init__(self, clip=None, rgba=None, *, size=(48, 48), white=False, backend="auto",
+                 style=None):  # fmt: skip
         if clip is None:
             clip, rgba = default_scene()
         self.clip, self.rgba, self.size = np.asarray(clip, float), np.asarray(rgba, float), size
@@ -128,7 +131,8 @@ class BlendingExplorer(Shown):
                                      layout=widgets.Layout(**whole))  # fmt: skip
         self.alpha = widgets.Checkbox(value=False, description="stored alpha (checkerboard)",
                                       indent=False, layout=widgets.Layout(**whole))  # fmt: skip
-        self.white = widgets.Checkbox(value=False, description="clear to opaque white",
+        # lesson 12b opens it on white, the clear colour of its figures (review r63 12b-3)
+        self.white = widgets.Checkbox(value=bool(white), description="clear to opaque white",
                                       indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         self._compute()
         with style_context(style):
@@ -150,10 +154,10 @@ class BlendingExplorer(Shown):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, premultiplied alpha, sRGB",
-            "Move a triangle earlier or later: 'over' depends on the order. The buffer is "
-            "cleared to transparent black (0, 0, 0, 0), into which straight alpha stores a wrong "
-            "alpha; tick 'clear to opaque white' for the white of the lesson's "
-            "figures. The panels show the colours written, as displayed; tick 'stored alpha' "
+            "Move a triangle earlier or later: 'over' depends on the order. 'clear to opaque "
+            "white' clears the buffer to (1, 1, 1, 1), the white of the lesson's figures; "
+            "unticked, it is cleared to transparent black (0, 0, 0, 0), into which straight "
+            "alpha stores a wrong alpha. The panels show the colours written, as displayed; tick 'stored alpha' "
             "to see alpha as a checkerboard.",
         )
         column = dict(flex="0 0 auto", margin="0 12px 0 0")

@@ -3,8 +3,8 @@
 The logical order of OpenGL and Direct3D: vertex shader, primitive assembly, clipping (x and y
 only beyond a guard band), the divide by w, the viewport, triangle set-up, rasterisation, the
 fragment shader, the depth and stencil tests, blending. Early-z, which tests and writes depth before
-shading, is drawn as a dashed conditional bypass, legal only when the shader neither discards
-nor writes depth (with discard a GPU may still test early and write late; lessons 05a, 10;
+shading, is drawn as a dashed conditional bypass, legal only when the shader neither discards,
+writes depth nor writes memory (with discard a GPU may still test early and write late; lessons 05a, 10;
 GL 4.6 §14.9, §15.2). Click a stage (in the style of the WebGL state diagram) to see the tour
 triangle there: its clip coordinates, NDC, window coordinates, set-up, fragments, depth and
 final pixels.

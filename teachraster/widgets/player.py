@@ -316,8 +316,11 @@ class FillPlayer(Holdable):
             figure.layout.object_position = "left top"
         self.comparison = widgets.Accordion(
             children=[figure], selected_index=None,
-            titles=("affine / perspective-correct: both interpolations, their error, and both "
-                    "along the row of the largest error",),
+            # one sample per pixel whatever the samples menu says: the title says so, or its
+            # 59 pixels read as the MSAA fill's 72 (review r58 00-6)
+            titles=("affine / perspective-correct at the pixel centres (1 sample per pixel): "
+                    "both interpolations, their error, and both along the row of the largest "
+                    "error",),
         )  # fmt: skip
         self._interp_stale = False
         self._keep_steps = False  # opened by the interpolation toggle: the steps stay

@@ -173,6 +173,9 @@ class TexturedPlaneViewer:
             )  # fmt: skip
             if self.view.heatmap.colorbar is not None:
                 self.view.heatmap.colorbar.set_label("texels")
+            # the heatmap's title states the maximum and its ring marks the pixel; the note
+            # beside the ring repeated it over the square (review r58 04-4)
+            self.view.heatmap.show_note = False
             self.profile = None
             if axes[3] is not None:
                 # v down the middle column: even steps (affine) against bunched ones
@@ -298,10 +301,14 @@ class TexturedPlaneViewer:
         w = self.clip[..., 3]
         near, far = float(w.min()), float(w.max())
         m = self.maximum
-        err = f"{m:.2f} texels" if np.isfinite(m) else "none"
+        # rounded as the heatmap's title rounds it (3 significant digits), and measured
+        # against the texture's size: a texel error means little without it (review r58 04-4)
+        err = f"{m:.3g} texels" if np.isfinite(m) else "none"
+        rows, cols = self.texture.shape[:2]
         return (
             f"w from {near:.2f} (near edge) to {far:.2f} (far edge), ratio {far / near:.2f} · "
-            f"largest texture-coordinate error of affine interpolation: <b>{err}</b>"
+            f"largest texture-coordinate error of affine interpolation: <b>{err}</b> "
+            f"(the texture is {cols} × {rows} texels)"
         )
 
     def _repr_mimebundle_(self, **kwargs):

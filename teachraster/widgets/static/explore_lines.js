@@ -152,18 +152,24 @@ function mount(el, data, host) {
     "Each pixel owns the open diamond around its centre. The line lights a pixel when it " +
     "meets its diamond and goes on out of it; the diamond it ends in is left to the next " +
     "segment. Drag p0 or p1: near a pixel centre, a diamond corner or a pixel corner they " +
-    "snap onto it, where ties are. Step along the line with the slider or the arrow keys.");
+    "snap onto it, where ties are. Step along the line with the slider (its left end is the " +
+    "first step, its right end all of them) or the arrow keys.");
   const m = { left: 30, top: 24 };
   const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 30, maxCell: 64,
     fitW: 760, fitH: 480, margin: m, pad: 14,
     label: "a line over the pixel grid with every pixel's diamond" });
   const caption = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   let walk = diamondSteps(state.p0, state.p1, W, H, data.bits);
-  const stepper = slider("step", { min: -1, max: Math.max(walk.steps.length - 1, 0), step: 1,
-    value: state.step, format: (v) => (v < 0 ? "all" : String(v)) }, (v, e) => {
-    state.step = v;
+  // The slider runs 0 .. n - 1 (one step each) and then n, "all" (state.step -1): its left end
+  // is the first column, as a student expects, not "all" (reviews r51 item 8, r63 item 6)
+  const toSlider = (s) => (s < 0 ? walk.steps.length : s);
+  const fromSlider = (v) => (v >= walk.steps.length ? -1 : v);
+  const stepper = slider("step", { min: 0, max: walk.steps.length, step: 1,
+    value: toSlider(state.step), format: (v) => (v >= walk.steps.length ? "all" : String(v)) },
+  (v, e) => {
+    state.step = fromSlider(v);
     paint.request(e);
-    host.setState({ step: v });
+    host.setState({ step: state.step });
   });
   const count = element("div");
   root.append(element("div", { class: "tr-x-row" }, [stepper, count]), canvas, caption);
@@ -171,8 +177,9 @@ function mount(el, data, host) {
 
   function draw() {
     walk = diamondSteps(state.p0, state.p1, W, H, data.bits);
-    stepper.input.max = String(Math.max(walk.steps.length - 1, 0));
+    stepper.input.max = String(walk.steps.length);
     if (state.step > walk.steps.length - 1) state.step = walk.steps.length - 1;
+    stepper.set(toSlider(state.step));
     ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
     drawLineGrid(ctx, W, H, cell, m, toPx);
     const shown = state.step < 0 ? walk.steps : walk.steps.slice(0, state.step + 1);
@@ -190,7 +197,8 @@ function mount(el, data, host) {
     count.textContent = `${lit} pixel${lit === 1 ? "" : "s"} lit, ${walk.steps.length} ` +
       `${walk.xMajor ? "columns" : "rows"} walked (${walk.xMajor ? "x" : "y"}-major)`;
     caption.innerHTML = state.step >= 0 ? escapeHtml(stepCaption(walk, state.step))
-      : "All steps. Pick a step to see its diamonds and what the rule decided there.";
+      : "All steps (the slider's right end). Pick a step to see its diamonds and what the " +
+        "rule decided there.";
     host.picture(canvas);
   }
   const paint = painter(canvas, draw, () => [toPx(state.p0), toPx(state.p1)]);
@@ -212,7 +220,7 @@ function mount(el, data, host) {
       // view goes back to all steps (review 11-12-r6: "row 1" of the new line was confusing)
       if (state.step !== -1) {
         state.step = -1;
-        stepper.set(-1);
+        stepper.set(toSlider(-1));
       }
       paint.request(e);
     },
@@ -224,8 +232,11 @@ function mount(el, data, host) {
     const d = { ArrowLeft: -1, ArrowRight: 1, ArrowDown: -1, ArrowUp: 1 }[e.key];
     if (!d) return;
     e.preventDefault();
-    state.step = Math.max(-1, Math.min(walk.steps.length - 1, state.step + d));
-    stepper.set(state.step);
+    // from "all", the right arrow starts at the first step and the left one at the last
+    const n = walk.steps.length;
+    if (state.step < 0) state.step = d > 0 ? 0 : n - 1;
+    else state.step = fromSlider(Math.max(0, Math.min(n, state.step + d)));
+    stepper.set(toSlider(state.step));
     paint.request(e);
     host.setState({ step: state.step });
   });
@@ -233,7 +244,7 @@ function mount(el, data, host) {
   return {
     setState(s) {
       state = { ...state, ...s };
-      stepper.set(state.step);
+      stepper.set(toSlider(state.step));
       paint.request();
     },
   };
@@ -333,7 +344,8 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
     ctx.font = `bold ${size}px sans-serif`;
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
-    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid);
+    const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid,
+      [p, q]);
     // a white halo: the label crosses the line and the diamonds beside the end point
     haloText(ctx, text, x, y, "#111");
   });
@@ -344,13 +356,23 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
 // that stay inside the canvas, right of and below the axis labels (`grid`: [left, top] of the
 // pixel grid; review r43 12a-8: "p1 on a pixel corner" covered the column numbers), the first
 // that covers none of the boxes `avoid` ([x, y, w, h]: the "tie" marks), or the first inside
-// if every one covers a mark.
-export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, grid = [0, 0]) {
+// if every one covers a mark. A spot the segment itself (`segment`: [p, q], canvas pixels)
+// runs through comes after those it does not (review r63 12a-5: "p1 on a pixel centre" was
+// written across the line).
+export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, grid = [0, 0],
+  segment = null) {
   const left = Math.max(2, grid[0], x - 9 - textWidth);
   const spots = [[x + 9, y - 9], [left, y - 9], [x + 9, y + 22], [left, y + 22]];
   const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 &&
     ly - size >= grid[1] && lx >= grid[0]);
   const clear = ([lx, ly]) => avoid.every(([bx, by, bw, bh]) =>
     lx + textWidth < bx || bx + bw < lx || ly < by || by + bh < ly - size);
-  return inside.find(clear) || inside[0] || [left, y + 22];
+  const crossed = ([lx, ly]) => segment !== null && Array.from({ length: 65 }, (_, k) => k / 64)
+    .some((t) => {
+      const sx = segment[0][0] + t * (segment[1][0] - segment[0][0]);
+      const sy = segment[0][1] + t * (segment[1][1] - segment[0][1]);
+      return sx >= lx && sx <= lx + textWidth && sy >= ly - size && sy <= ly + 3;
+    });
+  return inside.find((s) => clear(s) && !crossed(s)) || inside.find(clear) || inside[0] ||
+    [left, y + 22];
 }

@@ -83,7 +83,8 @@ export function stageHtml(data, key) {
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
         "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed) runs this test " +
         "and the depth write before the shader, to skip hidden fragments: a conditional " +
-        "bypass, legal only when the shader neither discards nor writes depth. A shader that " +
+        "bypass, legal only when the shader neither discards, writes depth nor writes memory " +
+        "(image or buffer stores, atomics: side effects a culled fragment must not lose). A shader that " +
         "writes its own depth needs the late test (unless it declares conservative depth); " +
         "with one that may discard, a GPU may still test early and write the depth late, " +
         "once the shader has kept the fragment (lessons 05a, 10).</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
@@ -184,8 +185,8 @@ function diagram(onPick, lessons) {
   arrow(`M${r.x + r.w / 2},${r.y + r.h} L${r.x + r.w / 2},${ey - 2}`, "7 5");
   arrow(`M${f.x + f.w / 2},${ey} L${f.x + f.w / 2},${f.y + f.h + 2}`, "7 5");
   ["early-z (lessons 05a, 10), optional: depth tested and written",
-    "before shading, only if the shader neither discards nor writes",
-    "depth (with discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
+    "before shading, only if the shader neither discards, writes",
+    "depth nor writes memory (discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
     { x: ex + ew / 2, y: ey + eh + 18 + 16 * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {

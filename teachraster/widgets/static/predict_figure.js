@@ -361,6 +361,11 @@ function mountPoint(root, data, host) {
       const avoid = readoutBox(mine); // measured in the readout's font, before the label's is set
       ctx.font = ANSWER_FONT;
       const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height);
+      // on a white ground: the lines through the answer (the segment, the eye ray) crossed the
+      // words and read "theranswer" (review r58 04-7)
+      const ground = labelBox({ x, y, align });
+      ctx.fillStyle = "rgba(255, 255, 255, 0.9)";
+      ctx.fillRect(ground.x0 - 3, ground.y0 - 2, ground.x1 - ground.x0 + 6, ground.y1 - ground.y0 + 5);
       ctx.textAlign = align;
       ctx.lineWidth = 4;
       ctx.strokeStyle = "white";
