@@ -400,7 +400,9 @@ class FrameInspector(Holdable):
             # under it where not (it stood ~700 px below, under the chart, at 1024 x 768)
             figures = [picture_row([self.frame_widget, self.table]),
                        picture_row([self.hist_display.widget])]  # fmt: skip
-        self.widget = widgets.VBox([title, controls, control_row([self.row, self.col]), *figures])
+        # the two sliders straight in the box, as the TileExplorer's block slider: 100 % wide in a
+        # wrapping row they would overflow it by their margins
+        self.widget = widgets.VBox([title, controls, self.row, self.col, *figures])
 
     # -- state ---------------------------------------------------------------------------
     def _render(self) -> None:
