@@ -281,3 +281,31 @@ def test_frame_inspector_shows_a_scene_as_glass_with_its_colours():
         assert w.history.blend is None
     finally:
         w.close()
+
+
+def test_each_records_swatches_are_named_where_they_fit():
+    """Review r55 #7 / r62: "before | fragment on white | after" stood once at the left, over
+    the first record's swatches only. Where the words fit over the swatches, each passed
+    record's three are named; where not (a narrow chart, many records), the one label."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging.frame_history import SWATCH_WORDS
+    from teachraster.plotting import plot_history, use_style
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    h = glass_frame("intersecting_triangles", 64, 48).history(24, 34)
+    passed = sum(r.outcome == "passed" for r in h)
+    for size, named in (((9, 4.5), True), ((2.5, 4.5), False)):
+        with matplotlib.rc_context():
+            use_style("classroom")  # the lessons' (the words at least 9 pt: 12 px)
+            fig, ax = plt.subplots(figsize=size, layout="constrained")
+            plot_history(ax, h)
+        words = [t.get_text() for t in ax.texts]
+        if named:
+            assert all(words.count(w) == passed for w in SWATCH_WORDS), words
+        else:
+            assert "before | fragment on white | after" in words, words
+        plt.close(fig)

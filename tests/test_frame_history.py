@@ -642,8 +642,24 @@ def test_lesson_11_tells_each_story():
     assert ns.reasons[(28, 37)] == [(1, "clipped_away", "near")]
     assert ns.reasons[(39, 35)] == [(0, "seam", "seam v1–E32∩near")]
     assert ns.reasons[(11, 40)] == [(2, "zero_area", None)]
-    # §4's prediction: every pixel of every quad with a covered centre
-    assert ns.tiny_shaded.sum() == 4 * ns.tiny_quads.sum() and ns.lanes == 16 and ns.useful == 7
+    # §4's prediction (review r62 #1): the pixels of the quads where both halves of the
+    # rectangle cover a centre are shaded twice; the diagonal crosses more quads than that (the
+    # trap), and every pixel is covered exactly once
+    assert not (ns.half_cov[0] & ns.half_cov[1]).any() and ns.rect_px == 48
+    assert ns.twice.sum() == 4 * ns.shared_quads.sum() == 16
+    assert len(ns.crossed) > ns.shared_quads.sum()
+    assert all(ns.half_quads[0][q] or ns.half_quads[1][q] for q in ns.crossed)
+    assert ns.lanes == 64 and ns.useful == 48
+    # §2's tie band (r62 #3): the gap at v1 is under half a unorm16 step, 0.4 is on a step,
+    # and the band reaches both ends of the edge v1-v3
+    assert 0 < ns.fight_gap[0] < ns.step16 / 2 < ns.fight_gap[1] and ns.fight_gap[2] == 0
+    assert 0.4 * 65535 == round(0.4 * 65535)
+    assert all(band >= 1 for band, _ in ns.band_rows.values())
+    assert ns.z16.triangle_id[2, 2] == 0 and ns.z16.triangle_id[2, 60] == 0
+    # §5's nan view (r62 #2): 0 wherever render accepts the input, lit only by hand
+    assert not any(ns.nan_counts.values())
+    assert ns.huge.overlay("nan").sum() == 0 and ns.tiny.overlay("nan").sum() == 0
+    assert ns.broken.overlay("nan").sum() == 1
     # §6: glass, depth writes off: the farther triangle 1 passes and is blended over the red
     assert ns.glass.color[ns.row, ns.col, 0] == pytest.approx(0.575)
     assert ns.back_first[0] == pytest.approx(0.75)

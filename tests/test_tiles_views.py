@@ -219,24 +219,64 @@ def test_a_one_pixel_block_is_pointed_at_not_crossed_out():
 
     from teachraster.plotting import use_style
 
+    # the whole image (the explorer zooms on such a block instead: the test below)
     with mpl.rc_context():
         use_style("classroom")
-        explorer = TileExplorer(tr.Triangle(XY), 64, 64, block_sizes=(16, 4, 1), backend="image")
-    blocks = explorer.blocks
+        fig, ax = plt.subplots()
+        fill = tr.rasterize(tr.Triangle(XY), 64, 64, method="tiled", block_sizes=(16, 4, 1),
+                            trace=True)  # fmt: skip
+        tp.plot_pixel_grid(ax, 64, 64)
+        artists = tp.plot_blocks(ax, fill, current=True)
+    blocks = fill.trace.blocks
     order = blocks.visit_order("scanline")
     sizes = blocks.size[order]
-    explorer.block.value = int(np.flatnonzero(sizes == 4)[0]) + 1
-    wide = explorer.artists.current.get_linewidth()
-    k = int(np.flatnonzero(sizes == 1)[0]) + 1
-    explorer.block.value = k
-    line = explorer.artists.current
+    artists.show_current(blocks, int(order[np.flatnonzero(sizes == 4)[0]]))
+    wide = artists.current.get_linewidth()
+    b = int(order[np.flatnonzero(sizes == 1)[0]])
+    artists.show_current(blocks, b)
+    line = artists.current
     assert line.get_linewidth() <= 0.6 * wide
-    b = int(order[k - 1])
     r, c = int(blocks.row[b]), int(blocks.col[b])
     x, y = (np.asarray(v, float)[6:] for v in line.get_data())  # past the outline and a NaN
     outside = np.maximum(np.maximum(c - x, x - (c + 1)), np.maximum(r - y, y - (r + 1)))
     assert np.isfinite(outside).sum() == 8 and np.nanmin(outside) >= 1.0
-    explorer.close()
+    plt.close(fig)
+
+
+def test_a_zoomed_block_is_outlined_alone_over_its_pixel_grid(explorer):
+    """Review r62 (lesson 10 #1): zoomed on a 16×16 block, the ticks pointing at a 1×1 block
+    (lengths in image pixels) became crosses reaching 4 px past it, off the axes over the
+    tick labels at block 3, and the opaque blocks hid the pixel grid. Zoomed, the outline is
+    the block's own extent, inside the view, and the zoomed block's grid lies over the
+    blocks (below the triangle); the whole image hides that grid again."""
+    blocks, order = explorer.blocks, explorer.order
+    ones = [k for k in range(1, len(order) + 1) if blocks.size[order[k - 1]] == 1]
+    for k in (ones[0], ones[5]):  # the first lies in row 0, col 0: on the frame
+        explorer.block.value = k
+        b = int(order[k - 1])
+        r, c = int(blocks.row[b]), int(blocks.col[b])
+        x, y = (np.asarray(v, float) for v in explorer.artists.current.get_data())
+        assert np.isfinite(x).all() and np.isfinite(y).all()  # one piece: no ticks
+        assert (x.min(), x.max(), y.min(), y.max()) == (c, c + 1, r, r + 1)
+        (x0, x1), (y1, y0) = explorer.ax.get_xlim(), explorer.ax.get_ylim()
+        assert x0 < x.min() and x.max() < x1 and y0 < y.min() and y.max() < y1
+        grid = explorer.artists.window_grid
+        top = explorer.zoom_block()
+        tc, tr_, size = int(blocks.col[top]), int(blocks.row[top]), int(blocks.size[top])
+        segments = np.asarray(grid.get_segments())
+        assert grid.get_visible() and len(segments) == 2 * (size + 1)
+        assert segments[..., 0].min() == tc and segments[..., 0].max() == tc + size
+        assert segments[..., 1].min() == tr_ and segments[..., 1].max() == tr_ + size
+        assert blocks_zorder(explorer) < grid.get_zorder() < 3  # over blocks, under the edges
+        ticks = explorer.ax.get_xticks()
+        assert ticks.min() >= tc and ticks.max() <= tc + size  # the zoomed block's pixels
+    explorer.block.value = len(order)  # a 16×16 block: the whole image, no window grid
+    assert not explorer.artists.window_grid.get_visible()
+    assert explorer.ax.get_xlim() == (0, explorer.width)
+
+
+def blocks_zorder(explorer):
+    return explorer.artists.blocks.get_zorder()
 
 
 def test_captions_print_edge_values_in_full_with_thousands_separators(fill):

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 import matplotlib as mpl
 import numpy as np
-from matplotlib.collections import PolyCollection
+from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.colors import BoundaryNorm, ListedColormap, to_rgba
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
@@ -31,8 +31,8 @@ from ..core.tile_trace import KINDS, TileTrace
 from ..core.trace import FillTrace
 from ..core.traversal import TRAVERSALS, traversal_order
 from ..core.validate import check_choice
-from .common import Artists, as_trace, fs, lw, pixel_axes, show_image, tint
-from .plots import plot_pixel_grid, plot_triangle
+from .common import Artists, as_trace, fs, lw, nice_step, pixel_axes, show_image, tint
+from .plots import _grid_segments, plot_pixel_grid, plot_triangle
 from .style import COLORS, OKABE_ITO, VALUE_CMAP
 
 #: The colour of each block kind.
@@ -94,20 +94,52 @@ class BlockArtists(Artists):
     current: Line2D | None = None
     #: its line width in points, the style's when plotted (thinner around small blocks)
     current_width: float = 2.0
+    #: the pixel grid drawn over the blocks of a zoomed window (:meth:`show_window`), else None
+    window_grid: LineCollection | None = None
+    #: the window shown: (col, row, width, height) of pixels, or None (the whole image)
+    window: tuple[int, int, int, int] | None = None
 
     def show_current(self, blocks: TileTrace, b: int | None) -> None:
         """Outline block ``b`` of ``blocks`` (:func:`current_block_xy`), or nothing when
-        ``b`` is None, in place."""
+        ``b`` is None, in place. Inside a zoomed :attr:`window` a small block is large on
+        screen: its outline alone, without the ticks pointing at it."""
         if self.current is None:
             return
         self.current.set_visible(b is not None)
         if b is not None:
             rows, cols = blocks.extent[b]
-            self.current.set_data(*current_block_xy(blocks.row[b], blocks.col[b], rows, cols))
+            # the ticks' lengths are pixels of the image: zoomed 4x, they became crosses
+            # reaching 4 px past the block and off the axes (review r62, lesson 10 #1)
+            pointers = self.window is None
+            xy = current_block_xy(blocks.row[b], blocks.col[b], rows, cols, pointers=pointers)
+            self.current.set_data(*xy)
             width = self.current_width
-            if max(int(rows), int(cols)) < SMALL_BLOCK:  # thinner, never a hairline
+            if pointers and max(int(rows), int(cols)) < SMALL_BLOCK:  # thinner, not a hairline
                 width = min(width, max(SMALL_LINE * width, THINNEST))
             _outline_width(self.current, width)
+
+    def show_window(self, ax, width: int, height: int, window=None) -> None:
+        """Show the ``height`` × ``width`` image whole (``window`` None), or zoom ``ax`` on
+        ``window`` = (col, row, w, h) pixels: half a pixel of margin, ticks on its pixels, and
+        its pixel grid drawn over the blocks (the image's grid lies under the opaque blocks:
+        a zoomed 4×4 block showed no pixel in it). Call :meth:`show_current` next."""
+        self.window = None if window is None else tuple(int(v) for v in window)
+        if self.window is None:
+            pixel_axes(ax, width, height)
+            if self.window_grid is not None:
+                self.window_grid.set_visible(False)
+            return
+        c, r, w, h = self.window
+        pad = 0.5  # the block's outline stays inside the frame
+        ax.set(xlim=(c - pad, c + w + pad), ylim=(r + h + pad, r - pad))
+        for axis, start, n in ((ax.xaxis, c, w), (ax.yaxis, r, h)):
+            idx = np.arange(start, start + n, nice_step(n, 4))
+            axis.set_ticks(idx + 0.5, labels=[str(i) for i in idx])
+        if self.window_grid is None:
+            self.window_grid = window_grid(ax)
+        segments = np.asarray(_grid_segments(w, h), dtype=float) + (c, r)
+        self.window_grid.set_segments(segments)
+        self.window_grid.set_visible(True)
 
     def show(self, mask: np.ndarray) -> None:
         """Show only the blocks where ``mask`` (indexed like the trace) is True, in place."""
@@ -201,6 +233,7 @@ def plot_blocks(
     if current:
         result.current = current_block_outline(ax)
         result.current_width = result.current.get_linewidth()
+        result.window_grid = window_grid(ax)
     if legend:
         if unclassified is None:
             unclassified = has_unclassified(blocks, shown)
@@ -225,18 +258,21 @@ SMALL_LINE, TICK_GAP = 0.5, 1.0
 THINNEST = 1.5
 
 
-def current_block_xy(row: int, col: int, rows: int, cols: int, reach: float = 3.0):
+def current_block_xy(row: int, col: int, rows: int, cols: int, reach: float = 3.0, *,
+                     pointers: bool = True):  # fmt: skip
     """(x, y) of the current block's marker: the outline of its ``rows`` × ``cols`` pixels
-    from (``row``, ``col``), and for a block under :data:`SMALL_BLOCK` pixels four ticks
-    ``reach`` pixels long pointing at it from :data:`TICK_GAP` pixels outside (NaN separates
-    the pieces).
+    from (``row``, ``col``), and (``pointers``) for a block under :data:`SMALL_BLOCK` pixels
+    four ticks ``reach`` pixels long pointing at it from :data:`TICK_GAP` pixels outside (NaN
+    separates the pieces). A view zoomed on the block passes ``pointers=False``.
 
     >>> current_block_xy(4, 32, 4, 4)
     ([32, 36, 36, 32, 32], [4, 4, 8, 8, 4])
+    >>> current_block_xy(0, 0, 1, 1, pointers=False)
+    ([0, 1, 1, 0, 0], [0, 0, 1, 1, 0])
     """
     r, c, h, w = int(row), int(col), int(rows), int(cols)
     x, y = [c, c + w, c + w, c, c], [r, r, r + h, r + h, r]
-    if max(h, w) < SMALL_BLOCK:
+    if pointers and max(h, w) < SMALL_BLOCK:
         gap, mx, my, t = np.nan, c + w / 2, r + h / 2, TICK_GAP
         x += [gap, c - t - reach, c - t, gap, c + w + t, c + w + t + reach,
               gap, mx, mx, gap, mx, mx]  # fmt: skip
@@ -256,6 +292,15 @@ def current_block_outline(ax) -> Line2D:
                          visible=False, clip_on=False)  # fmt: skip
     _outline_width(outline, lw(0.8))
     return outline
+
+
+def window_grid(ax) -> LineCollection:
+    """A hidden pixel grid above the blocks (below the triangle) for a zoomed window
+    (:meth:`BlockArtists.show_window`): the image's grid lies under the opaque blocks."""
+    grid = LineCollection([], colors=COLORS["grid"], linewidths=max(0.6, lw(0.25)),
+                          zorder=2.6, visible=False)  # fmt: skip
+    ax.add_collection(grid, autolim=False)
+    return grid
 
 
 def _outline_width(outline: Line2D, width: float) -> None:

@@ -341,10 +341,14 @@ class FrameInspector(Holdable):
             indent=False,
             layout=widgets.Layout(width="auto"),
         )
+        # each as wide as the column: ipywidgets' ~125-px track gave ~2 px a step for 48 or
+        # 64 values (review r62, lesson 11 #4)
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
-                                     max=height - 1, description="row")  # fmt: skip
+                                     max=height - 1, description="row",
+                                     layout=widgets.Layout(width="100%"))  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
-                                     max=width - 1, description="col")  # fmt: skip
+                                     max=width - 1, description="col",
+                                     layout=widgets.Layout(width="100%"))  # fmt: skip
         if self.pairs and row is None and col is None:  # open where the pair differs
             pair = self.frames[self.pairs[scene]] if scene in self.pairs else None
             if pair is not None:
@@ -392,9 +396,13 @@ class FrameInspector(Holdable):
             # (below both figures, the tables stood ~700 px under the picture clicked)
             figures = [picture_row([self.frame_widget]), self.table,
                        picture_row([self.hist_display.widget])]  # fmt: skip
-        else:
-            figures = [picture_row([self.frame_widget, self.hist_display.widget]), self.table]
-        self.widget = widgets.VBox([title, controls, control_row([self.row, self.col]), *figures])
+        else:  # r62 #4: the table beside the picture where the column holds both, right
+            # under it where not (it stood ~700 px below, under the chart, at 1024 x 768)
+            figures = [picture_row([self.frame_widget, self.table]),
+                       picture_row([self.hist_display.widget])]  # fmt: skip
+        # the two sliders straight in the box, as the TileExplorer's block slider: 100 % wide in a
+        # wrapping row they would overflow it by their margins
+        self.widget = widgets.VBox([title, controls, self.row, self.col, *figures])
 
     # -- state ---------------------------------------------------------------------------
     def _render(self) -> None:

@@ -184,6 +184,8 @@ class TileExplorer(Holdable):
         # the block slider shows blocks not classified yet, and the key is drawn once (below)
         self.artists = plot_blocks(self.ax, self.fill, traversal=self.traversal.value,
                                    unclassified=True, current=True)  # fmt: skip
+        # the whole image: new artists know no window, the Axes may still be zoomed
+        self.artists.show_window(self.ax, self.width, self.height, None)
         # the key stays while the level slider shows every block classified: it says where
         # the white page appears (review r8, lesson 10 c23)
         renamed = {UNCLASSIFIED: STEPPED_UNCLASSIFIED, CURRENT_BLOCK: STEPPED_CURRENT}
@@ -249,11 +251,13 @@ class TileExplorer(Holdable):
 
     def _set_artists(self) -> None:
         self.artists.show(self.shown)
+        window = self._window()
+        if window != self.artists.window:
+            # limits, ticks and the zoomed block's pixel grid: the cached background and the
+            # still layer show the old window
+            self.artists.show_window(self.ax, self.width, self.height, window)
+            self._blit.invalidate()
         self.artists.show_current(self.blocks, self.current)
-        limits = self._view_limits()
-        if limits != (self.ax.get_xlim(), self.ax.get_ylim()):
-            self.ax.set(xlim=limits[0], ylim=limits[1])
-            self._blit.invalidate()  # the cached background shows the old window
 
     def zoom_block(self) -> int | None:
         """The top-level block the picture is zoomed on (its index), or None: the whole
@@ -266,15 +270,14 @@ class TileExplorer(Holdable):
             top = int(b.parent[top])
         return top
 
-    def _view_limits(self) -> tuple[tuple[float, float], tuple[float, float]]:
+    def _window(self) -> tuple[int, int, int, int] | None:
+        """(col, row, width, height) of the pixels the picture is zoomed on, or None."""
         top = self.zoom_block()
         if top is None:
-            return (0.0, float(self.width)), (float(self.height), 0.0)
+            return None
         b = self.blocks
         x0, y0, size = int(b.col[top]), int(b.row[top]), int(b.size[top])
-        x1, y1 = min(x0 + size, self.width), min(y0 + size, self.height)
-        pad = 0.5  # half a pixel round the block: its outline stays inside the frame
-        return (x0 - pad, x1 + pad), (y1 + pad, y0 - pad)
+        return x0, y0, min(size, self.width - x0), min(size, self.height - y0)
 
     def _info_html(self) -> str:
         return html_escape(self.caption_text)
@@ -353,13 +356,21 @@ def _fit_margins(fig, ax, pad: float = 0.12) -> None:
     ax.set_position((left / nw, bottom / nh, aw / nw, ah / nh))
 
 
+#: Cell padding and right-aligned numbers: without them "16×16 4 1 11" read as "16×164"
+#: (review r62, lesson 10 #4).
+_CELL = 'style="padding:1px 10px;text-align:{}"'
+
+
 def _counter_table(counters) -> str:
+    num, lab_ = _CELL.format("right"), _CELL.format("left")
     rows = "".join(
-        f"<tr><td>{lab}</td><td>{e:,}</td><td>{f:,}</td><td>{p:,}</td></tr>"
+        f"<tr><td {lab_}>{lab}</td><td {num}>{e:,}</td><td {num}>{f:,}</td>"
+        f"<td {num}>{p:,}</td></tr>"
         for lab, e, f, p in counters.table()
     )
+    heads = "".join(f"<th {num}>{h}</th>" for h in ("rejected", "accepted", "partial"))
     return (
-        "<table><tr><th>block</th><th>rejected</th><th>accepted</th><th>partial</th></tr>"
+        f"<table><tr><th {lab_}>block</th>{heads}</tr>"
         f"{rows}</table>"
         f"pixel tests run: <b>{counters.pixel_tests:,}</b> · pixels filled with no test: "
         f"<b>{counters.pixels_accepted:,}</b>"

@@ -963,9 +963,37 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
         shown = swatch_colours(h, key)
         artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=0.26,
                               color=shown, edgecolor="k", linewidth=0.4))  # fmt: skip
+    size = _swatch_word_size(ax, SWATCH_WORDS)
+    if size is not None:
+        # each record's three swatches named above them, as RenderDoc names its columns: one
+        # label at the left named only the first record's (review r55 #7, r62)
+        for word, dx in zip(SWATCH_WORDS, (-0.27, 0.0, 0.27)):
+            artists += [ax.text(x[i] + dx, hi + band * 1.2, word, fontsize=size,
+                                ha="center", va="bottom") for i in on]  # fmt: skip
+        return artists
     # at the Axes' left edge (x in Axes fractions): the inspector's 327-px Axes holds it
     # even with one record (its x-range is then only 1.2 wide)
     artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment on white | after",
                            fontsize="x-small", ha="left", va="bottom",
                            transform=ax.get_yaxis_transform()))  # fmt: skip
     return artists
+
+
+#: The words over a record's three colour swatches, where they fit (:func:`_draw_colours`).
+SWATCH_WORDS = ("before", "fragment", "after")
+
+
+def _swatch_word_size(ax, words) -> float | None:
+    """The font size (points) in which the longest of ``words`` fits over a colour swatch
+    (0.26 records wide; estimated at 0.55 em a character): the Axes' small size, else its
+    x-small one, as long as that is at least 9 points (12 px at 96 dpi); else None."""
+    from matplotlib.font_manager import FontProperties
+
+    width_in = ax.get_position().width * ax.figure.get_size_inches()[0]
+    span = abs(np.subtract(*ax.get_xlim())) or 1.0
+    swatch_pt = 0.26 * width_in / span * 72
+    for name in ("small", "x-small"):
+        size = FontProperties(size=name).get_size_in_points()
+        if size >= 9 and swatch_pt >= 0.55 * size * max(len(w) for w in words):
+            return size
+    return None
