@@ -426,6 +426,9 @@ def test_02_barycentrics_and_the_edge_function_bits():
     reason = "whatever the number of sub-pixel bits"
     assert all(reason in re.sub(r"\s+", " ", t) for t in (text, ten))
     assert "lesson 10 says why" not in text and "up to 64 bits" in re.sub(r"\s+", " ", text)
+    # review r65 02-1: "a few bits fewer" was two, printed (62 against 64): said after the print
+    assert ns.own_bits - ns.n_bits == 2 and "Two bits fewer, then: 62 against" in text
+    assert "a few bits" not in re.sub(r"\s+", " ", text)
     centres = [Fraction(2 * j + 1, 2) for j in range(16)]
     assert all((c * 2**8).denominator == 1 for c in centres)
     assert all((c * units_per_pixel(0)).denominator == 1 for c in centres)
