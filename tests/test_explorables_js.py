@@ -297,6 +297,31 @@ def test_crack_panels_fit_the_column_at_1024_px_unscaled():
             assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
 
 
+def test_crack_panels_grow_with_the_column():
+    """Review r65 01-4 (r57 01-1): 256-px panels of 16-px cells were small on a projector. The
+    cells grow with the column the explorer is shown in (27 px in a 940-px one), the canvas
+    always within it; the narrow column keeps 16-px cells."""
+    narrow, wide, widest = call_js(CRACKS, [("panelLayout", [16, 16, 585]),
+                                            ("panelLayout", [16, 16, 940]),
+                                            ("panelLayout", [16, 16, 4000])])  # fmt: skip
+    assert narrow["cell"] == 16 and narrow["width"] <= 585
+    assert wide["cell"] == 27 and wide["width"] <= 940
+    assert widest["cell"] == 30  # at most MAX_CELL
+    for g in (wide, widest):  # the places still do not overlap
+        boxes = [(x, y, x + g["panelW"], y + g["panelH"]) for x, y in [*g["origins"], g["key"]]]
+        for i, a in enumerate(boxes):
+            assert a[2] <= g["width"] and a[3] <= g["height"]
+            for b in boxes[i + 1 :]:
+                assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
+
+
+def test_crack_note_follows_the_evaluation():
+    """Review r65 01-4: the note under the tally describes the way the edges are evaluated."""
+    alike, listed = call_js(CRACKS, [("crackNote", [False]), ("crackNote", [True])])
+    assert "never cracks" in alike and "Turn on" in alike
+    assert listed.startswith("Now each triangle evaluates") and "Show a pair that cracks" in listed
+
+
 def test_crack_tally_starts_again_whatever_changes_the_evaluation():
     """Review r7 contradiction 2: "Show a pair that cracks" turned the evaluation toggle on
     but kept counting ("0 of 1001"); any change of it now starts the tally again."""

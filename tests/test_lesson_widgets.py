@@ -282,7 +282,8 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         MAX_ASPECT,
         MAX_VIEW,
         MIN_VIEW,
-        VERTEX_DOT,
+        VERTEX_COLOR,
+        VERTEX_MARK,
         CasePicker,
     )
 
@@ -299,8 +300,17 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
             "pixel (9, 9)" in picker.info.value
             and f"triangle {picker.owner[9, 9]}" in picker.info.value
         )
-        dots = [line.get_markersize() for line in picker.axes[0].lines if line.get_marker() == "o"]
-        assert dots and max(dots) == VERTEX_DOT
+        # review r65 07-1: vertices are hollow squares, not the "covered" centre's black dot,
+        # and the centres' dots lie above the outlines; the key names both
+        marks = [line for line in picker.axes[0].lines if line.get_marker() == "s"]
+        assert marks and {line.get_markersize() for line in marks} == {VERTEX_MARK}
+        assert all(line.get_markerfacecolor() == "none" for line in marks)
+        assert all(line.get_markeredgecolor() == VERTEX_COLOR for line in marks)
+        dots = [line for line in picker.axes[0].lines if line.get_marker() == "o"]
+        outlines = [line for line in picker.axes[0].lines if line.get_marker() in ("None", "")]
+        assert min(d.get_zorder() for d in dots) > max(o.get_zorder() for o in outlines)
+        assert "□</span> a triangle's vertex" in picker.info.value
+        assert "whose pixels touch never alike" in picker.info.value
         picker.case.value = "sliver_pair"
         r0, r1, c0, c1 = picker.view
         assert picker.owner.shape == (4, 64) and (c1 - c0) <= MAX_ASPECT * (r1 - r0)

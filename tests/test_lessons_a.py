@@ -391,9 +391,16 @@ def test_02_bailout_prediction_is_the_printed_share():
     assert ns.inside_all == ns.fill.coverage.sum() == 70
     # review r7 02-1: the share saved was a guess to type; now the pixels where the loop
     # stops early are clicked on the box, and the saving follows from them by a count
-    b = ns.box
+    # review r65 02-2: asked on a second triangle, whose E maps section 2 does not draw (on
+    # ours the answer was the negative parts of the E12 and E23 maps inside the box)
+    assert not np.array_equal(ns.bail_xy, ns.xy) and ns.bail_fill.trace.caption(1).endswith(
+        "clockwise on screen (back-facing)"
+    )
+    b = ns.bail_box
+    assert np.array_equal(ns.runs, ns.by_hand)  # the trace's counts are the loop's, by hand
     assert np.array_equal(ns.saves[b.row0 : b.row1, b.col0 : b.col1], ns.by_hand < 3)
-    assert ns.saves.sum() == ns.n_first + ns.n_second and not ns.saves[ns.fill.coverage].any()
+    assert ns.saves.sum() == ns.n_first + ns.n_second
+    assert not ns.saves[ns.bail_fill.coverage].any() and min(ns.n_first, ns.n_second) > 10
     assert ns.n_third > 0  # outside, yet all three tests: the order of the tests matters
     assert ns.without - ns.with_bailout == 2 * ns.n_first + ns.n_second  # the printed sum
     assert "answer=saves" in next(c for c in _cells("02_half_planes", "code") if "q_bailout =" in c)
@@ -430,6 +437,9 @@ def test_02_barycentrics_and_the_edge_function_bits():
     reason = "whatever the number of sub-pixel bits"
     assert all(reason in re.sub(r"\s+", " ", t) for t in (text, ten))
     assert "lesson 10 says why" not in text and "up to 64 bits" in re.sub(r"\s+", " ", text)
+    # review r65 02-1: "a few bits fewer" was two, printed (62 against 64): said after the print
+    assert ns.own_bits - ns.n_bits == 2 and "Two bits fewer, then: 62 against" in text
+    assert "a few bits" not in re.sub(r"\s+", " ", text)
     centres = [Fraction(2 * j + 1, 2) for j in range(16)]
     assert all((c * 2**8).denominator == 1 for c in centres)
     assert all((c * units_per_pixel(0)).denominator == 1 for c in centres)

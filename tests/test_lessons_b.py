@@ -734,10 +734,15 @@ def test_07_t_junction_cracks_overlaps_and_the_split_seals_it():
     # the text before it names; its own lines say "drawn differently", not "lit"
     ours, naive = ns.split_square
     assert np.array_equal(ns.differs, ours != naive)
-    assert ns.n_differ == ns.twice + ns.n_side - 1 == ns.my_wrong["d3d_split_square"] == 16
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     asked = next("".join(c["source"]) for c in nb["cells"]
                  if "q_diagonal = PredictPixels(" in "".join(c["source"]))  # fmt: skip
+    # review r65 07-4: §1 asks about the diagonal lesson 02 did not draw (/): its two corners
+    # are of both kinds (drawn twice, and on a right or a bottom side), 6 + 11 - 2 = 15
+    assert ns.n_both == 2 and ns.n_once == ns.twice - 2 == 4
+    assert ns.n_differ == ns.twice + ns.n_side - ns.n_both == 15
+    assert ns.n_differ == ns.my_wrong["d3d_split_square_other_diagonal"]
+    assert 'get_case("d3d_split_square_other_diagonal")' in asked
     assert "answer=differs" in asked and 'picked="drawn differently"' in asked
     assert "differs from ours" in asked.split("answer=")[0]
 
@@ -806,24 +811,26 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
                 if "def check_tie_rule" in "".join(c["source"]))  # fmt: skip
     scope = {"np": np, "hardcases": hardcases}
     exec(cell.split("\n\n\nmy_verdict")[0], scope)
-    assert ns.my_verdict.startswith("Not yet") and "more often" in ns.my_verdict  # E >= 0
-    assert "left out" not in ns.my_verdict
+    assert ns.my_verdict.startswith("Not yet") and "Extra centres" in ns.my_verdict  # E >= 0
+    assert "Missing" not in ns.my_verdict
     # review r57 07-5: the task is no transcription: the checker works in GL's y-up window
     # coordinates, where lesson 02's y-down condition fails both ways; with y up and the
     # interior positive, a top edge is walked to the left and a left edge downward
-    pasted = scope["check_tie_rule"](top_left_coverage)[0]
-    assert pasted.startswith("Not yet") and "left out" in pasted and "more often" in pasted
+    pasted, pasted_counts = scope["check_tie_rule"](top_left_coverage)
+    assert pasted.startswith("Not yet") and "Missing" in pasted and "Extra" in pasted
+    # review r65 07-7: owners, not counts: the slivers swapping their row is caught too
+    assert pasted_counts["sliver_pair"] > 0
     y_up = with_rule(lambda p, q: q[1] < p[1] or (q[1] == p[1] and q[0] < p[0]))
     verdict, counts = scope["check_tie_rule"](y_up)
     assert verdict.startswith("Right") and not any(counts.values())
 
     strict = scope["check_tie_rule"](with_rule(lambda p, q: False))[0]  # E > 0: gaps only
-    assert strict.startswith("Not yet") and "left out" in strict and "more often" not in strict
+    assert strict.startswith("Not yet") and "Missing" in strict and "Extra" not in strict
     bottom_right = scope["check_tie_rule"](
         with_rule(lambda p, q: q[1] > p[1] or (q[1] == p[1] and q[0] > p[0]))
     )[0]  # the opposite edges own the ties: a neighbour's centres drawn, its own left out
-    assert bottom_right.startswith("Not yet") and "left out" in bottom_right
-    assert "more often" in bottom_right
+    assert bottom_right.startswith("Not yet") and "Missing" in bottom_right
+    assert "Extra" in bottom_right
     text = next("".join(c["source"]) for c in nb["cells"]
                 if "".join(c["source"]).startswith("## Your turn"))  # fmt: skip
     assert "y$ pointing up" in text and "b[1] < a[1]" not in text  # the rule is not given

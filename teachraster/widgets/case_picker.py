@@ -149,20 +149,43 @@ def thin_lines(shape) -> bool:
     return max(shape) > THIN_ABOVE
 
 
-#: Vertex dots of the picker's outlines (points): small, as in the lesson's own figures, so that
-#: a pixel centre at a shared vertex (the fan's hub) is not hidden under a pile of dots.
-VERTEX_DOT = 3
+#: Vertex marks of the picker's outlines: hollow squares (points across) in VERTEX_COLOR, not
+#: dots. The vertices of these cases lie on pixel centres, and a black vertex dot looked like
+#: the "covered" centre dot: the split square's three uncovered corners seemed covered (review
+#: r65, 07-1). Hollow, so the centre's own dot shows inside; small, so that a pixel centre at a
+#: shared vertex (the fan's hub) is not hidden under a pile of them.
+VERTEX_MARK, VERTEX_COLOR = 9, COLORS["split"]
+
+#: The pixel centres' dots above the outlines (zorder 4) and below the vertex marks (6.2): an
+#: outline along a row of uncovered centres hid their small hollow dots.
+CENTRE_Z = 4.6
+
+
+def mark_vertices(art, *, thin: bool = False) -> None:
+    """The vertices of :func:`~teachraster.plotting.plot_triangle`'s ``art`` as hollow squares
+    (:data:`VERTEX_MARK`), told apart from the pixel centres' dots."""
+    art.vertices.set(marker="s", markersize=VERTEX_MARK * (0.7 if thin else 1),
+                     markerfacecolor="none", markeredgecolor=VERTEX_COLOR,
+                     markeredgewidth=1.2 if thin else 2)  # fmt: skip
+
+
+def centres_on_top(ax, width: int, height: int, coverage) -> None:
+    """:func:`~teachraster.plotting.plot_pixel_centres` above the outlines (:data:`CENTRE_Z`),
+    the uncovered ones filled white."""
+    centres = plot_pixel_centres(ax, width, height, coverage)
+    for line in (centres.inside, centres.outside):
+        line.set_zorder(CENTRE_Z)
+    centres.outside.set_markerfacecolor("white")  # a hollow dot on an outline: still hollow
 
 
 def outline(ax, xy, *, thin: bool = False):
-    """A triangle's outline without arrows or labels, with small vertex dots; ``thin``: a
-    fine, half-transparent line too, so that the pixels under it stay visible on a large
-    grid."""
+    """A triangle's outline without arrows or labels, its vertices marked (:func:`mark_vertices`);
+    ``thin``: a fine, half-transparent line too, so that the pixels under it stay visible on a
+    large grid."""
     art = plot_triangle(ax, xy, labels=False, arrows=False)
-    art.vertices.set(markersize=VERTEX_DOT)
+    mark_vertices(art, thin=thin)
     if thin:
         art.outline.set(linewidth=0.6, alpha=0.6)
-        art.vertices.set(alpha=0.6)
     return art
 
 
@@ -330,8 +353,8 @@ def plot_copies(ax, counts: np.ndarray, n: int, triangle, box) -> int:
     plot_pixel_grid(ax, c1 - c0, r1 - r0, ticks=False)
     plot_coverage(ax, counts == n, color=EVERY_COPY)
     plot_coverage(ax, (counts > 0) & (counts < n), color=SOME_COPIES)
-    plot_pixel_centres(ax, c1 - c0, r1 - r0, counts > 0)
-    plot_triangle(ax, np.asarray(triangle, dtype=float) - [c0, r0], labels=False, arrows=False)
+    centres_on_top(ax, c1 - c0, r1 - r0, counts > 0)
+    outline(ax, np.asarray(triangle, dtype=float) - [c0, r0])
     return int(((counts > 0) & (counts < n)).sum())
 
 
@@ -508,7 +531,7 @@ class CasePicker:
             # the centres, filled where covered, as in the lesson's figures: ownership is
             # decided there (review r57, 07-3: without them the split square's blue looked
             # half a pixel off its outline)
-            plot_pixel_centres(self.axes[0], w, h, self.owner != NONE)
+            centres_on_top(self.axes[0], w, h, self.owner != NONE)
             self.axes[0].set_title(f"ours:\n{int((self.owner != NONE).sum())} px, colour = owner")
             ax = self.axes[1]
             if self.naive_counts is None:
@@ -522,7 +545,7 @@ class CasePicker:
                 plot_coverage(ax, n >= 2, color=COLORS["outside"])
                 for xy in tris:
                     outline(ax, xy, thin=thin)
-                plot_pixel_centres(ax, n.shape[1], n.shape[0], n > 0)
+                centres_on_top(ax, n.shape[1], n.shape[0], n > 0)
                 ax.set_title(f"naive:\n{int((n > 0).sum())} px, max {int(n.max())} hit(s)")
             # a centre at a vertex of many triangles (the fan's hub) on top of their outlines
             self.hubs = shared_vertex_pixels(tris, self.owner.shape)
@@ -636,7 +659,8 @@ class CasePicker:
         if self.copies is not None:
             return (f"<b>key</b>: separate copies of one triangle (not a mesh), each moved back "
                     f"onto the first: {swatch(EVERY_COPY, 'covered by every copy')}, "
-                    f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}")  # fmt: skip
+                    f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}; "
+                    + self._marks_html())  # fmt: skip
         # name only what the panels draw (review r8, lesson 07: a one-triangle case listed
         # three owner colours and a class of pixels covered twice that neither panel showed)
         owners = sorted({int(k) for k in np.unique(self.owner) if k >= 0})
@@ -653,9 +677,12 @@ class CasePicker:
             )
         else:  # more owners than colours: neighbours differ (review r11, 07)
             used = [c for c in NEIGHBOUR_COLORS if c in self.colors.values()]
+            # every two owners whose pixels touch differ, not only those sharing an edge, as
+            # owner_colors() colours them and the lesson says (review r65, 07-2)
             left = (f"left, {len(owners)} triangles in {len(used)} colours ("
                     + "".join(swatch(c, "") for c in used)
-                    + "), triangles sharing an edge never alike: the outlines tell the others apart")  # fmt: skip
+                    + "), two triangles whose pixels touch never alike: the outlines tell the "
+                    "others apart")  # fmt: skip
         n = self.naive_counts
         parts = [left]
         if n is not None and (n == 1).any():
@@ -671,7 +698,7 @@ class CasePicker:
         if twice:
             where = "both" if len(twice) == 2 else twice[0]
             parts.append(f"{where}, {swatch(COLORS['outside'], 'covered twice or more')}")
-        key = "<b>key</b>: " + "; ".join(parts)
+        key = "<b>key</b>: " + "; ".join(parts + [self._marks_html()])
         for i, j in self.hubs:
             owner = int(self.owner[i, j])
             who = (
@@ -680,6 +707,14 @@ class CasePicker:
             key += (f"; outlined in black, pixel ({i}, {j}): its centre is a vertex of several "
                     f"triangles, ours gives it to {swatch(self._owner_fill(owner), who)}")  # fmt: skip
         return key
+
+    @staticmethod
+    def _marks_html() -> str:
+        """The key of the marks on both panels: the pixel centres' dots and the vertices."""
+        centre, vertex = COLORS["edge"], VERTEX_COLOR
+        return (f"<span style='color:{centre}'>●</span> pixel centre covered, "
+                f"<span style='color:{COLORS['centre']}'>○</span> not covered, "
+                f"<span style='color:{vertex}; font-weight:bold'>□</span> a triangle's vertex")  # fmt: skip
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

@@ -340,8 +340,11 @@ class PlaneExplorer:
             for (x, y), v in zip(xy, f)
         )
         # the table ends its own line: a <br> after it left an empty line (one row less)
+        # a gap between the columns, whatever the page's table style: two-digit values ran
+        # into the next column ("[5.00 12.00 1]", review r65 03-2)
         system = ("<b>3 × 3 system</b> (rows v1, v2, v3) · (g_x, g_y, g_0) = f:"
-                  f"<table style='font-family:monospace'>{rows}</table>")  # fmt: skip
+                  "<table style='font-family:monospace; border-collapse:separate; "
+                  f"border-spacing:0.8em 0'>{rows}</table>")  # fmt: skip
         parts = []
         if "g" not in s:
             parts.append("<b>zero area</b>: the three points are on one line, no plane")

@@ -145,9 +145,8 @@ function mount(el, data, host) {
     "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
     "(not the stored pair that cracks) and starts again when the way the edges are " +
     "evaluated changes.");
-  const g = panelLayout(W, H);
-  const { cell, width, height } = g;
-  const [canvas, ctx] = makeCanvas(width, height,
+  let g = panelLayout(W, H);
+  const [canvas, ctx] = makeCanvas(g.width, g.height,
     "the same pair of triangles filled three ways, cracks and double draws marked");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div");
@@ -161,8 +160,8 @@ function mount(el, data, host) {
   };
   const controls = crackControls(state, host, (n, e) => roll(n, e), (e) => paint.request(e),
     fitsCrackingPair(W, H) ? showStored : null);
-  root.append(controls.row, canvas,
-    readout, table, element("div", { class: "tr-x-sub", html: CRACKS_NOTE }));
+  const note = element("div", { class: "tr-x-sub" });
+  root.append(controls.row, canvas, readout, table, note);
   let rand = randomStream(state.seed);
   let pair = null;
   for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H); // the pair on show
@@ -187,6 +186,7 @@ function mount(el, data, host) {
     ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
     const found = METHODS.map(([meth]) => faults(pair[0], pair[1], W, H, meth, state.asListed));
     const exact = found[2];
+    const { cell } = g;
     METHODS.forEach(([, name], k) => {
       const [x0, y0] = g.origins[k];
       drawPanel(ctx, found[k], exact, pair, { x0, y0, cell, W, H });
@@ -197,9 +197,21 @@ function mount(el, data, host) {
     drawKey(ctx, g.key, cell);
     table.innerHTML = tallyTable(state.tally);
     readout.innerHTML = explainPixel(pair, ui.hover, W, H, found, state.asListed);
+    note.innerHTML = crackNote(state.asListed);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);
+  // the cells as large as the column allows, again whenever its width changes
+  const fit = () => {
+    const avail = root.clientWidth || NARROW_COLUMN_PX;
+    const next = panelLayout(W, H, avail);
+    if (next.cell === g.cell) return;
+    g = next;
+    resizeCanvas(canvas, ctx, g.width, g.height);
+    paint.request();
+  };
+  if (globalThis.ResizeObserver) new ResizeObserver(fit).observe(root);
+  fit();
   const point = (p, e) => {
     ui.hover = p ? pixelUnder(p, g, W, H) : null;
     paint.request(e);
@@ -234,10 +246,29 @@ function mount(el, data, host) {
   };
 }
 
-const CRACKS_NOTE = "Both triangles walk the shared edge from its upper end, as lesson 01's " +
-  "loops do: they round alike, so a tie goes to one of them, sometimes the wrong one, and the " +
-  "edge never cracks. Evaluated from the end each triangle lists first, the two round " +
-  "differently: then, rarely, it can; <b>Show a pair that cracks</b> loads one.";
+// A canvas of makeCanvas set to `w` x `h` CSS pixels (its drawing cleared)
+function resizeCanvas(canvas, ctx, w, h) {
+  const { dpr } = canvas.logical;
+  canvas.width = Math.round(w * dpr);
+  canvas.height = Math.round(h * dpr);
+  canvas.style.width = `${w}px`;
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  canvas.logical = { w, h, dpr };
+}
+
+// The note under the tally, for the way the edges are evaluated now (review r65 01-4: it
+// described the upper-end walk while the toggle showed the other way)
+export function crackNote(asListed) {
+  return asListed
+    ? "Now each triangle evaluates the shared edge from the end it lists first. When the two " +
+      "list it in opposite orders they round differently, and then, rarely, the edge cracks " +
+      "or a pixel is drawn twice; <b>Show a pair that cracks</b> loads one. Turned off, both " +
+      "walk it from its upper end, as lesson 01's loops do, and it never cracks."
+    : "Both triangles walk the shared edge from its upper end, as lesson 01's loops do: they " +
+      "round alike, so a tie goes to one of them, sometimes the wrong one, and the edge never " +
+      "cracks. Turn on <b>evaluate each edge from the end its triangle lists first</b> to see " +
+      "when it can.";
+}
 
 // Set how the edges are evaluated. Whatever changes it (the toggle, "Show a pair that cracks",
 // the kernel), a change starts the tally again, as the caption says: its counts are of one way
@@ -280,8 +311,12 @@ export const RING = 0.85;
 // 1024 px with the file browser open (review r7: 7-8 px type); two across it is 558 px wide and
 // drawn 1:1 there. The margins and the gaps leave room for the ring around a crack in a border
 // pixel, so that it is never cut off by the canvas or hidden by the next panel.
-export function panelLayout(W, H) {
-  const cell = Math.max(16, Math.min(26, Math.floor(256 / Math.max(W, H))));
+// The cells are as large as `avail` px of column allow (review r65 01-4: 16-px cells, 256-px
+// panels, were small on a projector): 16 px in the narrow column, 27 in a 940-px one, at most
+// MAX_CELL; the canvas is drawn 1:1 in any column at least MIN_CELL cells wide.
+export function panelLayout(W, H, avail = NARROW_COLUMN_PX) {
+  let cell = MIN_CELL;
+  while (cell < MAX_CELL && layoutWidth(W, cell + 1) <= avail) cell += 1;
   const ring = ringReach(cell);
   const gap = Math.max(26, 2 * ring + 2);
   const m = { left: ring, top: TITLE + ring };
@@ -293,6 +328,14 @@ export function panelLayout(W, H) {
   return { cell, gap, m, panelW, panelH, origins: origins.slice(0, 3), key: origins[3],
     radius: RING * cell, width: m.left + 2 * panelW + gap + ring,
     height: m.top + 2 * panelH + below + ring + COUNT };
+}
+
+const [MIN_CELL, MAX_CELL] = [16, 30];
+
+// the canvas' width for two panels of W cells of `cell` px (panelLayout's sum)
+function layoutWidth(W, cell) {
+  const ring = ringReach(cell);
+  return ring + 2 * W * cell + Math.max(26, 2 * ring + 2) + ring;
 }
 
 // the height of a panel's title above it and of its count line below it (px)
@@ -409,19 +452,23 @@ function drawPanel(ctx, f, exact, pair, g) {
 }
 
 // The key, in the fourth place: each mark as the panels draw it, in type as large as theirs.
-function drawKey(ctx, [x0, y0], cell) {
+// Its marks at KEY_CELL px at most, so that its rows stay apart when the panels' cells grow.
+const KEY_CELL = 20;
+function drawKey(ctx, [x0, y0], panelCell) {
+  const cell = Math.min(panelCell, KEY_CELL);
   const rows = [["A (blue) and B (orange) share the", null], ["thick edge p–q. In each panel:", null],
     ["a centre on p–q: a tie", "tie"], ["a tie the wrong triangle drew", "⇄"],
     ["drawn twice", "2"], ["drawn by neither: a crack", "✕"],
     ["unlike the integer fill", "box"]];
+  const pitch = Math.round(1.5 * cell); // 24 px at 16-px cells, 30 at KEY_CELL
   ctx.textAlign = "left";
   rows.forEach(([text, mark], i) => {
-    const y = y0 + 12 + 26 * i;
-    const x = mark ? x0 + 30 : x0;
+    const y = y0 + 12 + pitch * i;
+    const x = mark ? x0 + Math.round(cell * 1.8) : x0;
     ctx.fillStyle = "#111";
     ctx.font = "14px sans-serif";
     ctx.fillText(text, x, y + 5);
-    const cx = x0 + 10;
+    const cx = x0 + Math.round(cell * 0.7);
     if (mark === "tie") {
       const d = tieSize(cell);
       ctx.fillRect(cx - d / 2, y - d / 2, d, d);
@@ -432,6 +479,14 @@ function drawKey(ctx, [x0, y0], cell) {
       ctx.strokeStyle = "#000";
       ctx.strokeRect(cx - cell / 2 + 2, y - cell / 2 + 2, cell - 4, cell - 4);
       ctx.setLineDash([]);
+    }
+    if (mark === "✕") {
+      // the ring the panels draw around a crack (review r65 01-3: the key had the bare ✕)
+      ctx.strokeStyle = OKABE.vermillion;
+      ctx.lineWidth = 3;
+      ctx.beginPath();
+      ctx.arc(cx, y, cell * RING, 0, 2 * Math.PI);
+      ctx.stroke();
     }
     if (mark && mark.length === 1) {
       ctx.font = `bold ${markPx(cell, mark)}px sans-serif`;
