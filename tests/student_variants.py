@@ -222,6 +222,24 @@ def clip_reversed(v):
     return CORRECT["clip_near"](v)[::-1]
 
 
+def covers_ties_as_given(xy, p):
+    """Both windings accepted (all E ≥ 0 or all E ≤ 0), each tie decided by the edge as given,
+    not as oriented (r64 01-2): a counter-clockwise triangle's ties all go the wrong way."""
+    v = [[Fraction(float(c)) for c in q] for q in xy]
+    if edge_function(v[0], v[1], v[2]) == 0:
+        return False
+    p = [Fraction(float(c)) for c in p]
+    for sign in (1, -1):
+        ok = True
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = sign * edge_function(a, b, p)
+            ok = ok and (e > 0 or (e == 0 and _owns(a, b)))
+        if ok:
+            return True
+    return False
+
+
 def clip_no_new_vertices(v):
     return clip_against(v, new=False)
 
@@ -820,6 +838,7 @@ WRONG = {
     ),  # fmt: skip
     "covers, one winding": ("covers", _covers_with(_owns, orient=False), "handle both windings"),
     "covers returns False": ("covers", returns(False), "never covers anything"),
+    "covers, ties by the edges as given": ("covers", covers_ties_as_given, "edge as given"),
     "covers returns True": ("covers", returns(True), "covers every pixel it is asked about"),
     "covers in float32": ("covers", _covers_with(_owns, dtype=np.float32), "float32"),
     "covers with x and y swapped": ("covers", covers_xy_swapped, "x and y are swapped"),
@@ -1187,6 +1206,7 @@ _fill_in_from_exercise_solutions()
 #: failure of each kind first).
 KINDS = {
     "clip returns an empty polygon": "constant",
+    "covers, ties by the edges as given": "ties by the edges as given",
     "blocks by every centre": "timeout",
     "blocks by the pixels' top-left corners": "pixel corners",
     "Hi-Z over the covered centres": "covered centres",

@@ -232,16 +232,44 @@ def _constant_mistakes(name: str, masked: bool) -> list[Mistake]:
 
 def _rule(masked: bool):
     def gives(case, owns=cov.TOP_LEFT, winding="both", at="centres", vertices="snapped"):
-        images = cov.rule_images(case, owns=owns, winding=winding, at=at, vertices=vertices)
+        if winding == "ties as given":
+            images = _ties_as_given(case, owns, at, vertices)
+        else:
+            images = cov.rule_images(case, owns=owns, winding=winding, at=at, vertices=vertices)
         return images & _masks(case) if masked else images
 
     return gives
+
+
+#: The tie rule a counter-clockwise triangle gets from a student who accepts both windings
+#: but decides a tie by the edge as given (v1→v2, ...): every edge runs the other way round.
+_FLIPPED = {"top": "bottom", "bottom": "top", "left": "right", "right": "left"}
+
+
+def _ties_as_given(case, owns, at, vertices) -> np.ndarray:
+    """Both windings covered, ties decided by the unoriented edges (r64 01-2)."""
+    flipped = frozenset(_FLIPPED[k] for k in owns)
+    return np.array([
+        cov.rule_image(case, xy, owns=flipped if cov.area2(xy) < 0 else owns, at=at,
+                       vertices=vertices)
+        for xy in case.triangles
+    ])  # fmt: skip
+
+
+def _ties_as_given_words(args, expected, got) -> str:
+    return (
+        "you accept both windings, but decide a centre on an edge by the edge as given (v1→v2, "
+        "v2→v3, v3→v1): for a counter-clockwise triangle those run the other way round, so "
+        "every tie goes the wrong way there; orient the triangle first, then apply the tie "
+        "rule to the oriented edges"
+    )
 
 
 def _rule_knobs(masked: bool, corners: bool) -> Knobs:
     knobs = {
         "owns": [Slip(cov.owns_kind(o), cov.owns_words(o), o) for o in cov.owns_variants()],
         "winding": [
+            Slip("ties by the edges as given", _ties_as_given_words, "ties as given"),
             Slip("one winding only", _winding_words, "clockwise only"),
             Slip("one winding only", lambda *a: _winding_words(*a, which="clockwise"),
                  "counter-clockwise only"),
