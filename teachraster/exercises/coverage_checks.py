@@ -380,7 +380,7 @@ def constant(name: str):
             what = "every centre of every triangle" if name == "covers" else "every triangle"
             verdict = ("covers every pixel it is asked about, inside the triangle or not"
                        if shown == "True" else "never covers anything")  # fmt: skip
-            return (f"your function returns {shown} for {what}: it {verdict}, whatever its "
+            return (f"your function {verdict}: it returns {shown} for {what}, whatever its "
                     f"arguments (a {PLACEHOLDER} such as `return {shown}` left in, or a "
                     "`return` reached too early?)")  # fmt: skip
         return constant_words(value)
