@@ -309,8 +309,10 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     for x, y, z in xyz:
         inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
                        color="#7f0000")  # fmt: skip
-    lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0)) - 3
-    hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0)) + 3
+    lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0))
+    hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
+    pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
+    lo, hi = lo - pad, hi + pad
     inset.set_xlim(lo[0], hi[0])
     inset.set_ylim(hi[1], lo[1])
     inset.set_aspect("equal")
