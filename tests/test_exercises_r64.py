@@ -155,3 +155,18 @@ def test_clip_near_in_float32_passes_as_the_task_says():
     assert report.passed and "float32" in str(report)
     text = _cell("notebooks/exercises/04_depth_and_clipping.ipynb", "task_4_2")
     assert "float32" in text
+
+
+def test_a_far_case_figure_has_its_whole_title_and_plain_ticks(plt):
+    """r64 01-3: "+1e5" offsets over ticks 0…12, and a title cut at 40 characters."""
+    from student_variants import WRONG
+
+    report = ex.check("covers", WRONG["covers in float32"][1])
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    title = ax.get_title().replace("\n", " ")
+    assert "100000 px from the origin" in title, title
+    fig.canvas.draw()
+    assert ax.xaxis.get_offset_text().get_text() == ""
+    assert ax.yaxis.get_offset_text().get_text() == ""
+    assert all(t.get_text().startswith("1000") for t in ax.get_xticklabels() if t.get_text())
