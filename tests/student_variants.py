@@ -222,12 +222,50 @@ def clip_reversed(v):
     return CORRECT["clip_near"](v)[::-1]
 
 
+def covers_ties_as_given(xy, p):
+    """Both windings accepted (all E ≥ 0 or all E ≤ 0), each tie decided by the edge as given,
+    not as oriented (r64 01-2): a counter-clockwise triangle's ties all go the wrong way."""
+    v = [[Fraction(float(c)) for c in q] for q in xy]
+    if edge_function(v[0], v[1], v[2]) == 0:
+        return False
+    p = [Fraction(float(c)) for c in p]
+    for sign in (1, -1):
+        ok = True
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = sign * edge_function(a, b, p)
+            ok = ok and (e > 0 or (e == 0 and _owns(a, b)))
+        if ok:
+            return True
+    return False
+
+
 def clip_no_new_vertices(v):
     return clip_against(v, new=False)
 
 
 def clip_z_zero(v):
     return clip_against(v, lambda p: p[2])
+
+
+def clip_float32(v):
+    """The reference clipper, every number float32 (as a GPU clips): right within 1e-6."""
+    v = np.asarray(v, dtype=np.float32)
+    d, out = v[:, 2] + v[:, 3], []
+    for a, b, da, db in zip(v, np.roll(v, -1, axis=0), d, np.roll(d, -1)):
+        out += [a] if da >= 0 else []
+        out += [a + da / (da - db) * (b - a)] if (da >= 0) != (db >= 0) else []
+    return np.array(out, dtype=np.float32).reshape(-1, 4)
+
+
+def fill_sampled_at(dx, dy):
+    """fill with pixel (i, j) sampled at (j + dx, i + dy): half a pixel off in one axis."""
+
+    def fill(xy, w, h):
+        return np.array([[CORRECT["covers"](xy, (j + dx, i + dy)) for j in range(w)]
+                         for i in range(h)])  # fmt: skip
+
+    return fill
 
 
 # == depth_to_unorm ================================================================================
@@ -411,6 +449,34 @@ def classify_two_corners(xy, x0, y0, size):
 def classify_strict(xy, x0, y0, size):
     """E > 0 on every edge: no top-left rule."""
     return _classify(xy, x0, y0, size, corner_trick=False, owns=lambda a, b: False)
+
+
+def classify_every_centre(xy, x0, y0, size):
+    """Each edge tested at every one of the block's size² centres (r64 08-1): right, but not
+    the few edge tests per edge the task asks for; it cannot finish on a 2^19-px block."""
+    v = [[float(c) for c in p] for p in xy]
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return "rejected"
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    centres = [(x0 + i + 0.5, y0 + j + 0.5) for i in range(size) for j in range(size)]
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        oks = [
+            (lambda e: e > 0 or (e == 0 and _owns(a, b)))(edge_function(a, b, p)) for p in centres
+        ]
+        if not any(oks):
+            return "rejected"
+        accepted = accepted and all(oks)
+    return "accepted" if accepted else "partial"
+
+
+def classify_pixel_corners(xy, x0, y0, size):
+    """The pixels' top-left corners (x0, y0) … (x0 + size − 1, y0 + size − 1) (r64 08-2)."""
+    half = Fraction(1, 2)
+    return _classify(xy, x0 - half, y0 - half, size)
 
 
 def classify_one_winding(xy, x0, y0, size):
@@ -648,6 +714,23 @@ def _hiz_with(compare=lambda near, buffer: near >= np.max(buffer), vertex_only=F
     return hiz_rejects
 
 
+def hiz_covered_centres(xyz, row0, col0, size, buffer):
+    """The plane's minimum over the tile's centres the triangle covers (r64 08-4): safe and
+    tighter, but a coverage test per pixel; the corners' bound where it covers none."""
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+    plane = []
+    for r in range(row0, row0 + size):
+        for c in range(col0, col0 + size):
+            if covers([p[:2] for p in xyz], (c + 0.5, r + 0.5)):
+                area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+                lam2 = ((c + 0.5 - x1) * (y3 - y1) - (r + 0.5 - y1) * (x3 - x1)) / area
+                lam3 = ((x2 - x1) * (r + 0.5 - y1) - (y2 - y1) * (c + 0.5 - x1)) / area
+                plane.append(z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1))
+    if not plane:
+        return _hiz_with()(xyz, row0, col0, size, buffer)
+    return bool(min(plane) >= np.max(buffer))
+
+
 def _under_with(step):
     """A nearest-first walk over the one-pass layers, stopping once the alpha reaches 1 (tested
     at the top of the loop: it fetches one layer more, which the check allows)."""
@@ -755,6 +838,7 @@ WRONG = {
     ),  # fmt: skip
     "covers, one winding": ("covers", _covers_with(_owns, orient=False), "handle both windings"),
     "covers returns False": ("covers", returns(False), "never covers anything"),
+    "covers, ties by the edges as given": ("covers", covers_ties_as_given, "edge as given"),
     "covers returns True": ("covers", returns(True), "covers every pixel it is asked about"),
     "covers in float32": ("covers", _covers_with(_owns, dtype=np.float32), "float32"),
     "covers with x and y swapped": ("covers", covers_xy_swapped, "x and y are swapped"),
@@ -769,6 +853,8 @@ WRONG = {
     "fill with rounded vertices": ("fill", fill_vertices_rounded, "rounded the vertices"),
     "fill with int() vertices": ("fill", fill_vertices_int, "truncated the vertices"),
     "fill returns zeros": ("fill", lambda xy, w, h: np.zeros((h, w)), "never covers anything"),
+    "fill half a pixel off in x": ("fill", fill_sampled_at(0.0, 0.5), "sampled at x = j"),
+    "fill half a pixel off in y": ("fill", fill_sampled_at(0.5, 0.0), "sampled at y = i"),
     "fill, one winding": (
         "fill",
         lambda xy, w, h: fill_vectorised(xy, w, h, orient=False),
@@ -817,6 +903,18 @@ WRONG = {
     "clip reversed": ("clip_near", clip_reversed, "reverse order"),
     "clip without new vertices": ("clip_near", clip_no_new_vertices, "added none"),
     "clip against z = 0": ("clip_near", clip_z_zero, "z = 0"),
+    "clip returns an empty polygon": (
+        "clip_near",
+        returns(np.zeros((0, 4))),
+        "returns an empty polygon on every case",
+    ),  # fmt: skip
+    "clip with z − w": ("clip_near", lambda v: clip_against(v, lambda p: p[2] - p[3]), "z − w"),
+    "clip against the far plane": (
+        "clip_near",
+        lambda v: clip_against(v, lambda p: p[3] - p[2]),
+        "the far plane's side",
+    ),  # fmt: skip
+    "clip against w = 0": ("clip_near", lambda v: clip_against(v, lambda p: p[3]), "on w = 0"),
     # depth_to_unorm
     "unorm times 2^bits": ("depth_to_unorm", unorm_times_2_bits, "must hold z = 1"),
     "unorm truncated": ("depth_to_unorm", lambda z, b: int(z * (2**b - 1)), "int() truncates"),
@@ -888,6 +986,12 @@ WRONG = {
         "the test is per edge",
     ),  # fmt: skip
     "blocks by two corners": ("classify_block", classify_two_corners, "only 2 of the 4"),
+    "blocks by every centre": ("classify_block", classify_every_centre, "did not finish"),
+    "blocks by the pixels' top-left corners": (
+        "classify_block",
+        classify_pixel_corners,
+        "the pixels' top-left corners",
+    ),  # fmt: skip
     "blocks without the top-left rule": ("classify_block", classify_strict, "top-left rule"),
     "blocks of one winding": ("classify_block", classify_one_winding, "both windings"),
     "blocks always partial": (
@@ -1005,6 +1109,8 @@ WRONG = {
     "quad with y up": ("quad_derivatives", _quad_with(y_down=False), "wrong sign"),
     # hiz_rejects
     "Hi-Z by the nearest vertex": ("hiz_rejects", _hiz_with(vertex_only=True), "nearest vertex"),
+    "Hi-Z over the covered centres": ("hiz_rejects", hiz_covered_centres, "centres the triangle"),
+    "Hi-Z by the plane alone": ("hiz_rejects", _hiz_with(clamp=False), "bare plane"),
     "Hi-Z strictly behind": (
         "hiz_rejects",
         _hiz_with(lambda near, buffer: near > np.max(buffer)),
@@ -1099,6 +1205,16 @@ _fill_in_from_exercise_solutions()
 #: The kind the first failure of each of issue 30's wrong variants has (the summary shows one
 #: failure of each kind first).
 KINDS = {
+    "clip returns an empty polygon": "constant",
+    "covers, ties by the edges as given": "ties by the edges as given",
+    "blocks by every centre": "timeout",
+    "blocks by the pixels' top-left corners": "pixel corners",
+    "Hi-Z over the covered centres": "covered centres",
+    "Hi-Z by the plane alone": "no clamp",
+    "clip with z − w": "far plane's distance",
+    "clip against the far plane": "far plane",
+    "fill half a pixel off in x": "half a pixel off in x",
+    "fill half a pixel off in y": "half a pixel off in y",
     "span at pixel corners": "corners",
     "span, right edge included": "right inclusive",
     "span at the pixels' top": "row top",
@@ -1257,6 +1373,7 @@ def line_start_dark(p0, p1):
 #: Correct but different (vectorised, float32 within its rounding, another formula): must pass.
 DIFFERENT.update({
     "safe near in float32": ("safe_near", near_float32),
+    "clip in float32": ("clip_near", clip_float32),
     "quad derivatives in float32": ("quad_derivatives", quad_float32),
     "front to back in float32": ("front_to_back", layers_float32),
     "line pixels as a set": ("line_pixels", lambda p0, p1: set(_line(p0, p1))),
@@ -1272,6 +1389,7 @@ DIFFERENT.update({
 FLOAT32 = {label: DIFFERENT[label] for label in (
     "safe near in float32", "quad derivatives in float32", "front to back in float32",
     "float32 resolve", "float32 bilinear", "float32 trilinear", "over in float32",
+    "clip in float32",
 )}  # fmt: skip
 
 WRONG.update({

@@ -127,8 +127,10 @@ def _apply(data, owns, winding: str) -> np.ndarray:
 def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap: bool, vertices: str):
     w, h = size
     rows, cols = np.indices((h, w))
-    offset = 0.0 if at == "corners" else 0.5
-    points = np.stack([cols + origin[0] + offset, rows + origin[1] + offset], axis=-1)
+    # "corners": (j, i); "x at corners" / "y at corners": half a pixel off in one axis (r64 01-1)
+    ox = 0.0 if at in ("corners", "x at corners") else 0.5
+    oy = 0.0 if at in ("corners", "y at corners") else 0.5
+    points = np.stack([cols + origin[0] + ox, rows + origin[1] + oy], axis=-1)
     points = points.reshape(-1, 2)
     v = np.frombuffer(xy, dtype=float).reshape(3, 2)
     if swap:
@@ -140,7 +142,8 @@ def rule_image(
     case: CoverageCase, xy, *, at="centres", swap=False, vertices="snapped", **rule
 ) -> np.ndarray:
     """(h, w) coverage of one triangle on the case's window under a rule (:func:`covered`);
-    ``at="corners"`` samples pixel (i, j) at (j, i) instead of its centre, ``swap`` swaps x
+    ``at="corners"`` samples pixel (i, j) at (j, i) instead of its centre ("x at corners":
+    at (j, i + 0.5), "y at corners": at (j + 0.5, i)), ``swap`` swaps x
     and y in the vertices and the points (a student's p[1], p[0])."""
     w, h = case.size
     key = np.ascontiguousarray(xy, dtype=float).tobytes()

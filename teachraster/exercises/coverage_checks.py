@@ -12,13 +12,14 @@ An explanation names the mistake, then shows it on one wrong pixel, the most tel
 
 from __future__ import annotations
 
+import re
 from functools import cache
 
 import numpy as np
 
 from ..core.fill import rasterize
 from . import coverage as cov
-from .answers import as_bool, as_coverage
+from .answers import as_bool, as_coverage, short
 from .cases import (
     CoverageCase,
     catalogue_coverage,
@@ -26,6 +27,7 @@ from .cases import (
     drawn_rng,
     random_coverage,
 )
+from .diagnosis import constant_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 
 FLOAT32_EPS = 2.0**-24
@@ -230,16 +232,44 @@ def _constant_mistakes(name: str, masked: bool) -> list[Mistake]:
 
 def _rule(masked: bool):
     def gives(case, owns=cov.TOP_LEFT, winding="both", at="centres", vertices="snapped"):
-        images = cov.rule_images(case, owns=owns, winding=winding, at=at, vertices=vertices)
+        if winding == "ties as given":
+            images = _ties_as_given(case, owns, at, vertices)
+        else:
+            images = cov.rule_images(case, owns=owns, winding=winding, at=at, vertices=vertices)
         return images & _masks(case) if masked else images
 
     return gives
+
+
+#: The tie rule a counter-clockwise triangle gets from a student who accepts both windings
+#: but decides a tie by the edge as given (v1→v2, ...): every edge runs the other way round.
+_FLIPPED = {"top": "bottom", "bottom": "top", "left": "right", "right": "left"}
+
+
+def _ties_as_given(case, owns, at, vertices) -> np.ndarray:
+    """Both windings covered, ties decided by the unoriented edges (r64 01-2)."""
+    flipped = frozenset(_FLIPPED[k] for k in owns)
+    return np.array([
+        cov.rule_image(case, xy, owns=flipped if cov.area2(xy) < 0 else owns, at=at,
+                       vertices=vertices)
+        for xy in case.triangles
+    ])  # fmt: skip
+
+
+def _ties_as_given_words(args, expected, got) -> str:
+    return (
+        "you accept both windings, but decide a centre on an edge by the edge as given (v1→v2, "
+        "v2→v3, v3→v1): for a counter-clockwise triangle those run the other way round, so "
+        "every tie goes the wrong way there; orient the triangle first, then apply the tie "
+        "rule to the oriented edges"
+    )
 
 
 def _rule_knobs(masked: bool, corners: bool) -> Knobs:
     knobs = {
         "owns": [Slip(cov.owns_kind(o), cov.owns_words(o), o) for o in cov.owns_variants()],
         "winding": [
+            Slip("ties by the edges as given", _ties_as_given_words, "ties as given"),
             Slip("one winding only", _winding_words, "clockwise only"),
             Slip("one winding only", lambda *a: _winding_words(*a, which="clockwise"),
                  "counter-clockwise only"),
@@ -252,9 +282,15 @@ def _rule_knobs(masked: bool, corners: bool) -> Knobs:
         ],
     }  # fmt: skip
     if corners:
-        knobs["at"] = [Slip("pixel corners", "your coverage is the triangle sampled at pixel "
-                            "corners (j, i) instead of the pixel centres (j + 0.5, i + 0.5)",
-                            "corners")]  # fmt: skip
+        knobs["at"] = [
+            Slip("pixel corners", "your coverage is the triangle sampled at pixel corners "
+                 "(j, i) instead of the pixel centres (j + 0.5, i + 0.5)", "corners"),
+            # r64 01-1: half a pixel off in one axis was sent to the top-left rule in covers
+            Slip("half a pixel off in x", "your column j is sampled at x = j, not at its "
+                 "centre x = j + 0.5 (the rows are right: y = i + 0.5)", "x at corners"),
+            Slip("half a pixel off in y", "your row i is sampled at y = i, not at its centre "
+                 "y = i + 0.5 (the columns are right: x = j + 0.5)", "y at corners"),
+        ]  # fmt: skip
     return Knobs(_rule(masked), knobs, most=2)
 
 
@@ -323,8 +359,45 @@ def explain(args, expected, got) -> str:
 
 
 def compose(head: str, words: str) -> str:
-    """The mistake first, then the pixel that shows it."""
+    """The mistake first, then the pixel that shows it; a placeholder alone (r64: the example
+    of an answer that never changes told the top-left rule)."""
+    if PLACEHOLDER in words:
+        return words
     return f"{words}. For example, {head}" if words else head
+
+
+#: The words every placeholder's explanation holds (:func:`compose` adds no rule to them).
+PLACEHOLDER = "placeholder"
+
+
+def constant(name: str):
+    """The words for a ``covers`` that returns one value for every centre (the checker's
+    first diagnosis, :mod:`.diagnosis`)."""
+
+    def words(value) -> str:
+        shown = short(value)
+        if shown in ("True", "False"):
+            what = "every centre of every triangle" if name == "covers" else "every triangle"
+            verdict = ("covers every pixel it is asked about, inside the triangle or not"
+                       if shown == "True" else "never covers anything")  # fmt: skip
+            return (f"your function {verdict}: it returns {shown} for {what}, whatever its "
+                    f"arguments (a {PLACEHOLDER} such as `return {shown}` left in, or a "
+                    "`return` reached too early?)")  # fmt: skip
+        return constant_words(value)
+
+    return words
+
+
+#: Words that would name the kind of an edge, which the task asks to work out (r46 E3, r64):
+#: on the first failing answers the edge is named by its vertices only.
+HINTS = (
+    (re.compile(r"(edge v\d→v\d), a (?:top|left|bottom|right) edge: the top-left rule "
+                r"(covers it|leaves it uncovered)"),
+     r"\1: the top-left rule \2 (which kind of edge is it, with y pointing down?)"),
+    (re.compile(r"on edges (v\d→v\d) \((?:top|left|bottom|right)\) and (v\d→v\d) "
+                r"\((?:top|left|bottom|right)\)"),
+     r"on edges \1 and \2 (which kinds of edge, with y pointing down?)"),
+)  # fmt: skip
 
 
 def draw(ax, case, got):
@@ -345,7 +418,8 @@ def _exercise(name: str, cases, call, scene=None) -> Exercise:
     return Exercise(
         name, cases, convert=None, same=same_coverage, explain=explain,
         rule=lambda *a: "", mistakes=mistakes(name), draw=draw, scene=scene, call=call,
-        answers=(PackageAnswer(rasterize),), compose=compose,
+        answers=(PackageAnswer(rasterize),), compose=compose, constant=constant(name),
+        hints=HINTS,
         reference=("teachraster.exercises.coverage",),  # expected_coverage (r14 09-1)
     )  # fmt: skip
 

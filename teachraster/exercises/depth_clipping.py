@@ -3,14 +3,19 @@
 ``depth_test``: the conventions' test, strictly smaller depth passes (ties keep the fragment
 already stored). ``clip_near`` clips a clip-space triangle against the near plane z >= -w; the
 expected polygon is the core's Sutherland-Hodgman
-(:func:`teachraster.pipeline.geometry.clipping.clip_polygon`). Every clip case keeps its
-vertices inside the far plane (z <= w) and off the eye point, so that the near plane is the
-only one that cuts and the core's answer is exactly the near-clipped polygon. The mistakes are
+(:func:`teachraster.pipeline.geometry.clipping.clip_polygon`). Every clip case but one keeps
+its vertices inside the far plane (z <= w) and off the eye point, so that the near plane is
+the only one that cuts and the core's answer is exactly the near-clipped polygon; the one (a
+vertex beyond the far plane, near-clipped by :func:`clip_with`) tells a clip against the far
+plane (w − z) from no clip, and z − w from an empty placeholder (r64 04-1, 04-2). A polygon
+computed in float32 passes within 1e-6, as the colours of 06, 07 and 09 do (r64 04-4). The mistakes are
 wrong solutions the checker runs itself: a test after the divide, t taken from z alone, the
 plane z = 0, the new vertices forgotten... (:func:`clip_with`).
 """
 
 from __future__ import annotations
+
+import re
 
 import numpy as np
 
@@ -138,7 +143,7 @@ def clip_cases():
     # one vertex exactly on the plane, the others on either side
     v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
     out.append(("a vertex on the near plane", (v,)))
-    return [
+    cases = [
         (
             f"{label}: v={vec(a[0][0])}, {vec(a[0][1])}, {vec(a[0][2])}",
             a,
@@ -146,6 +151,11 @@ def clip_cases():
         )
         for label, a in out
     ]
+    # r64 04-1, 04-2: v1 lies beyond the far plane (z > w); clip_near cuts the near plane only
+    v = np.array([[0.0, 0, 3, 2], [1, 0, -1.5, 1], [-1, 1, 0.5, 1]])
+    label = "v1 beyond the far plane, v2 behind the near plane: only the near plane clips here"
+    cases.append((f"{label}: v={vec(v[0])}, {vec(v[1])}, {vec(v[2])}", (v,), clip_with(v)))
+    return cases
 
 
 _BEHIND = ("no vertex behind", "one vertex behind", "two vertices behind", "all behind")
@@ -295,12 +305,16 @@ CLIP_MISTAKES = [
             "keeps z ≥ −w: the distance to the near plane is z + w",
             gives=lambda v: clip_with(v, lambda p: p[2])),
     Mistake("far plane's distance", "you measured the distance as z − w, the far plane's "
-            "expression with its sign turned: it keeps z ≥ w, beyond the far plane, where no "
-            "vertex lies, so nothing is left; the near plane keeps z + w ≥ 0",
+            "expression with its sign turned: it keeps z ≥ w, beyond the far plane, so nothing "
+            "is left of a triangle in front of it; the near plane keeps z + w ≥ 0",
             gives=lambda v: clip_with(v, lambda p: p[2] - p[3])),
-    Mistake("far plane", "you clipped against the far plane (w − z ≥ 0 keeps z ≤ w); the near "
-            "plane keeps z ≥ −w: the distance to it is z + w",
+    Mistake("far plane", "you clipped against the far plane: w − z ≥ 0 keeps z ≤ w, the far "
+            "plane's side (it cuts nothing of a triangle in front of the far plane, and cuts "
+            "off a vertex beyond it); the near plane keeps z ≥ −w: the distance to it is z + w",
             gives=lambda v: clip_with(v, lambda p: p[3] - p[2])),
+    Mistake("eye plane", "your new vertices lie on w = 0, the plane through the eye: you "
+            "measured the distance as w alone; the near plane is z = −w, the distance to it "
+            "z + w", gives=lambda v: clip_with(v, lambda p: p[3])),
     Mistake("w not interpolated", _w_words, gives=lambda v: clip_with(v, keep_w="inside")),
     Mistake("w not interpolated", _w_words, gives=lambda v: clip_with(v, keep_w="first")),
     Mistake("no new vertices", "you dropped the vertices behind the near plane but added none "
@@ -314,6 +328,11 @@ CLIP_MISTAKES = [
 
 
 _CLIP_HINTS = (
+    # r64 04: the hint gave no formula but still the crossing's t and point
+    (re.compile(r"crosses the near plane at t = \S+ \(t = d_a/\(d_a − d_b\) along edge a→b, "
+                r"with d = z \+ w\), at \([^)]*\)"),
+     "crosses the near plane where the distance to the plane, z + w, reaches 0 along the edge "
+     "(at what fraction t of the edge, from its first end?)"),
     (_T, " (where the distance to the plane, z + w, reaches 0 along the edge)"),
     ("at t = d1/(d1 − d2) with d = z + w (the signed distance to the plane z = −w)",
      "where z + w, the signed distance to the plane z = −w, is 0 (by what fraction of the "
@@ -322,6 +341,21 @@ _CLIP_HINTS = (
     ("the new vertex is a + t·(b − a) with t = d_a/(d_a − d_b)", "the new vertex is "
      "a + t·(b − a), so t is the fraction of the way from a (its own end) to b"),
 )  # fmt: skip
+
+
+#: A polygon computed in float32 is right within its rounding (r64 04-4: every GPU clips in
+#: float32), as a colour is in 06, 07 and 09; a wrong t or plane is off by far more.
+FLOAT32_TOL = 1e-6
+
+
+def _constant_polygon(value) -> str:
+    """A placeholder (r64 04-1: an empty polygon was called the far plane's z − w)."""
+    p = np.asarray(value, dtype=float).reshape(-1, 4) if np.size(value) % 4 == 0 else None
+    shown = "an empty polygon" if p is not None and not len(p) else short(value)
+    return (
+        f"your function returns {shown} on every case, whatever the triangle: a placeholder "
+        "left in, or a `return` reached too early?"
+    )
 
 
 def explain_clip(args, expected, got) -> str:
@@ -361,8 +395,9 @@ def _draw_clip(ax, case, got):
 
 
 CLIP_NEAR = Exercise(
-    "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e), explain_clip,
+    "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e, FLOAT32_TOL), explain_clip,
     _clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
     answers=(PackageAnswer(clip_polygon),), draw=_draw_clip, hints=_CLIP_HINTS,
+    constant=_constant_polygon,
     match=lambda got, answer, args: same_polygon(np.asarray(got, float).reshape(-1, 4), answer, 1e-6),
 )  # fmt: skip

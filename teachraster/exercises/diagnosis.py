@@ -3,9 +3,13 @@
 Given every answer of a check, :func:`diagnose` decides, for each failing case, which words
 explain it, in this order:
 
-1. **A constant answer.** When every answer is the same while the expected answers differ,
-   and no mistake of the table gives every failing answer, the function ignores its
-   arguments (``return 0`` left in): that is said first, and nothing else is invented.
+1. **A constant answer.** When the function returned the same value on every case (what it
+   returned, before the answer is read: a ``span`` returned as (stop, first) covers nothing on
+   every case but is computed) while the expected answers differ, it ignores its arguments
+   (``return 0`` left in): that is said first, on every failure, whatever else would give the
+   same answers, and nothing else is said (no mistake's name, no rule: r64 04-1, 06-1). An
+   exercise whose computed mistake gives the same answer everywhere holds a case where it
+   does not (``clip_near``'s z − w keeps a triangle beyond the far plane).
 2. **A mistake that gives every answer.** Each :class:`~.exercise.Mistake` is run on every
    answered case; one that gives the student's answer on all of them (passing cases
    included) is the cause, named on every failure it explains. A single mistake is preferred
@@ -19,7 +23,10 @@ explain it, in this order:
 4. **Low precision**, only when the error is within the rounding of the precision named
    (float32: ``8 · 2**-24`` of the case's scale, see :attr:`.exercise.Exercise.float32`), and
    **NaN or infinity** in the answer.
-5. Otherwise the rule, with the case's numbers.
+5. **An argument handed back**: every answer is one of the arguments, unchanged
+   (``return background``), and no mistake of the table gives every failing answer: said as
+   a constant is, by the argument's name (r64 06-1, never the rule).
+6. Otherwise the rule, with the case's numbers.
 
 Each failure's kind is the kind of the mistake named (for a combination, of the parts that
 change this case's answer), so that one failure of each kind can be shown first.
@@ -55,6 +62,10 @@ class Result:
     expected: object
     got: object
     ok: bool
+    #: What the function returned, before it was read (one value of it, when it is called
+    #: once per pixel), and a key of all it returned on this case (None: not comparable).
+    raw: object = None
+    key: frozenset | None = None
 
 
 _EXACT = (str, bytes, bool, np.bool_, set, frozenset)
@@ -110,7 +121,7 @@ def constant_words(value) -> str:
         shown = vec(x)
     return (
         f"your function returns {shown} on every case, whatever its arguments: a "
-        "placeholder (such as `return 0`) left in, or a `return` reached too early?"
+        "placeholder left in, or a `return` reached too early?"
     )
 
 
@@ -125,16 +136,42 @@ def _numbers(x) -> np.ndarray | None:
     return a
 
 
-def _constant(results: list[Result]) -> object | None:
-    """The one answer every case got, when the expected answers differ; else None."""
+def _constant(results: list[Result], per_call: bool = False) -> object | None:
+    """The one answer of every case, when the function returned the same value on every case
+    and the expected answers differ; else None. Judged on what it returned where every case
+    has a key of that (``(stop, first)`` spans differ, though each covers nothing), else on
+    the answers as read. ``per_call``: the function is called once per pixel, and the value
+    given is what one call returned (``False``), not the case's answer (an image)."""
     if len(results) < 3:
-        return None
-    first = results[0].got
-    if not all(near(r.got, first, 0.0) for r in results[1:]):
         return None
     if all(near(r.expected, results[0].expected, 0.0) for r in results[1:]):
         return None
+    if all(r.key is not None for r in results):
+        if len(frozenset().union(*(r.key for r in results))) != 1:
+            return None
+        return results[0].raw if per_call else results[0].got
+    first = results[0].got
+    if not all(near(r.got, first, 0.0) for r in results[1:]):
+        return None
     return first
+
+
+def _handed_back(results: list[Result]) -> int | None:
+    """The position of the argument every answer is, unchanged, when some answer is wrong."""
+    if len(results) < 3 or all(r.ok for r in results):
+        return None
+    for k in range(min(len(r.args) for r in results)):
+        if all(near(r.got, r.args[k], 0.0) for r in results):
+            return k
+    return None
+
+
+def handed_back_words(name: str) -> str:
+    return (
+        f"your function returns its argument {name} unchanged on every case, whatever the "
+        "others: a placeholder (such as `return "
+        f"{name}`) left in, or a `return` reached too early?"
+    )
 
 
 def precision_of(got) -> tuple[str, float]:
@@ -300,12 +337,20 @@ def _named(spec: Exercise, m: Mistake, r: Result) -> tuple[str, str]:
     return kind, words
 
 
-def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]]:
-    """(kind, explanation) for each failing case of ``results``, by index (module docstring)."""
+def diagnose(
+    spec: Exercise, results: list[Result], params: tuple = ()
+) -> dict[int, tuple[str, str]]:
+    """(kind, explanation) for each failing case of ``results``, by index (module docstring);
+    ``params``: the names of the student's function's arguments."""
     failing = [r for r in results if not r.ok]
     if not failing:
         return {}
     out = {}
+    # issue 30 (r64 04-1): a constant first, before any mistake of the table is run
+    value = run_checker(lambda: _constant(results, spec.call is not None), None)
+    if value is not None:
+        words = (spec.constant or constant_words)(value)
+        return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
     mistakes = spec.all_mistakes() + [low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     fits = [f for f in fits if f.whole or not f.mistake.only_whole]
@@ -313,15 +358,11 @@ def diagnose(spec: Exercise, results: list[Result]) -> dict[int, tuple[str, str]
         (f for f in fits if f.whole and not f.mistake.symptom),
         key=lambda f: (len(f.mistake.parts), f.order),
     )
-    value = run_checker(lambda: _constant(results), None)
-    # r39 02-2, 04-1: the same answer everywhere is a placeholder only when no mistake of the
-    # table gives every failing answer (``clip_near`` with the far plane's z − w keeps nothing
-    # of any case, a ``span`` returned as (stop, first) covers nothing: computed, not left in)
-    if value is not None and not any(len(f.failing) == len(failing) for f in whole):
-        words = (spec.constant or constant_words)(value)
-        for r in failing:
-            out[r.index] = ("constant", _say(spec, r, words))
-        return out
+    back = run_checker(lambda: _handed_back(results), None)
+    if back is not None and not any(len(f.failing) == len(failing) for f in whole):
+        name = params[back] if back < len(params) else f"number {back + 1}"
+        words = handed_back_words(name)
+        return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
     for r in failing:
         chosen = next((f for f in whole if r.index in f.failing), None)
         if chosen is None:
@@ -361,6 +402,13 @@ def _generic(spec: Exercise, r: Result) -> tuple[str, str]:
         return "nan", nan
     rule = run_checker(lambda: spec.rule(r.args, r.expected, r.got), "")
     return "value", rule
+
+
+def _said_constant(spec: Exercise, r: Result, words: str) -> str:
+    """A constant's words after the case's numbers; alone where the exercise's own
+    composition follows them with the rule's example (``covers``, ``robust_fill``: "For
+    example, … the top-left rule covers it")."""
+    return words if spec.compose is not None else _say(spec, r, words)
 
 
 def _say(spec: Exercise, r: Result, words: str) -> str:

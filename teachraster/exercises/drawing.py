@@ -60,8 +60,23 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     artists.append(legend)
     ax.set_xlim(x0, x0 + w)
     ax.set_ylim(y0 + h, y0)
+    plain_ticks(ax)
     ax.set_aspect("equal")
     return artists
+
+
+def plain_ticks(ax) -> None:
+    """Whole coordinates on both axes, never matplotlib's offset ("+1e5" over ticks 0…12: r64
+    01-3, a window 100 000 px from the origin)."""
+    from matplotlib.ticker import MaxNLocator, ScalarFormatter
+
+    for axis in (ax.xaxis, ax.yaxis):
+        fmt = ScalarFormatter(useOffset=False)
+        fmt.set_scientific(False)
+        axis.set_major_formatter(fmt)
+        axis.set_major_locator(MaxNLocator(nbins=3, integer=True))
+    if max(abs(v) for v in (*ax.get_xlim(), *ax.get_ylim())) >= 1e5:  # long labels: tilted
+        ax.tick_params(axis="x", labelrotation=30)
 
 
 def drawable(values, reference) -> np.ndarray:

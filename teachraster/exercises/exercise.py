@@ -212,6 +212,8 @@ class Exercise:
         as ``hint`` until two different answers of the student's have failed in a kernel,
         in full after (r39: the first wrong try printed ⌈x_l − ½⌉, λ_i / w_i, the inequality
         for n; r46: rerunning the same cell printed them); :mod:`.tries` counts the answers.
+        ``text`` may be a compiled ``re`` pattern (``hint`` its replacement) where the telling
+        words hold the case's numbers (a crossing's t).
     inputs_drawn : bool
         ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
         lines): the untouched stub's figure draws the first case so. False (default): the

@@ -17,6 +17,8 @@ largest stored depth.
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ..core.edges import setup_edges
@@ -24,6 +26,7 @@ from ..core.snapping import SUBPIXEL_BITS
 from ..pipeline.rasterization.batched_fill import Fragments, weight_source
 from .answers import as_bool
 from .cases import SEED, fixed_and_drawn
+from .coverage import covered
 from .exercise import Exercise, Mistake, variant_mistakes
 from .scalars import num
 
@@ -82,6 +85,13 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
          (slope, 0, 0, TILE, np.full((TILE, TILE), 0.33))),
         ("the tile's farthest pixel decides", (slope, 8, 16, TILE,
                                                _with(np.full((TILE, TILE), 0.2), (7, 7), 0.6))),
+        # r49/r64 08-5: the plane alone failed one random tie only
+        ("a tile beyond a vertex: the plane there runs nearer than any fragment",
+         (slope + [10, 10, 0], 8, 8, TILE, np.full((TILE, TILE), 0.29))),
+        # r64 08-4: the plane's minimum over the covered centres only is tighter (and safe),
+        # but costs a test per pixel: the bound asked is the corners' and the nearest vertex's
+        ("a sliver crossing the tile: its covered centres all lie behind",
+         (_SLIVER, 0, 0, TILE, np.full((TILE, TILE), 0.1662))),
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -103,6 +113,11 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         named.append((f"{word} {k + 1}", (xyz, row0, col0, TILE, buffer)))
     return [(label, args, expected_reject(*args)) for label, args in named]
 
+
+#: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
+#: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
+_SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
+                    [3242 / 256, 5709 / 256, 0.0654]])  # fmt: skip
 
 hiz_cases = fixed_and_drawn(_hiz_cases, SEED + 60)  # r49: some drawn per check
 
@@ -139,18 +154,35 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "row col swapped": bool(
                 plane_at(xyz, *_corners(col0, row0, size)).min() >= buffer.max()
             ),  # fmt: skip
+            "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
         }
+
+
+def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
+    """The verdict from the plane's minimum over the centres the triangle covers (None where
+    it covers none): safe and tighter, but a coverage test per pixel (r64 08-4)."""
+    rows, cols = np.indices((size, size))
+    points = np.stack([cols.ravel() + col0 + 0.5, rows.ravel() + row0 + 0.5], axis=1)
+    inside = covered(np.asarray(xyz, dtype=float)[:, :2], points)
+    if not inside.any():
+        return None
+    r, c = rows.ravel()[inside] + row0, cols.ravel()[inside] + col0
+    return bool(plane_at(xyz, r, c, clamp=False).min() >= buffer.max())
 
 
 MISTAKES = {
     "vertex": "you compared the triangle's nearest vertex: in this tile its depth plane is "
     "farther than that vertex; evaluate the plane at the tile's extreme pixel centres (the "
-    "vertex alone is a safe bound, but the tightest one is asked: it keeps blocks Hi-Z could "
-    "reject)",
+    "vertex alone is a safe bound, but the larger of the two bounds is asked: the vertex "
+    "alone keeps blocks Hi-Z could reject)",
     "no clamp": "you took the bare plane at the corners: where it runs nearer than the "
     "triangle's nearest vertex (a corner outside the triangle), no fragment can be that near; "
-    "the nearest depth is the larger of the two bounds (either alone is safe, but the "
-    "tightest bound is asked: it keeps blocks Hi-Z could reject)",
+    "the nearest depth is the larger of the two bounds (either alone is safe, but the larger "
+    "is asked: either alone keeps blocks Hi-Z could reject)",
+    "covered centres": "you took the plane's minimum over the centres the triangle covers: "
+    "a safe bound, and tighter here, but it costs a coverage test per pixel, the work Hi-Z "
+    "is there to skip; the bound asked is the one a few tests give: the plane at the tile's "
+    "extreme pixel centres, no nearer than the nearest vertex",
     "outer corners": "you evaluated the plane at the tile's outer corners; fragments sit at "
     "pixel centres, the extreme ones ½ px inside",
     "tile min": "you compared with the nearest depth stored in the tile: a fragment is hidden "
@@ -277,8 +309,10 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     for x, y, z in xyz:
         inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
                        color="#7f0000")  # fmt: skip
-    lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0)) - 3
-    hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0)) + 3
+    lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0))
+    hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
+    pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
+    lo, hi = lo - pad, hi + pad
     inset.set_xlim(lo[0], hi[0])
     inset.set_ylim(hi[1], lo[1])
     inset.set_aspect("equal")
@@ -288,7 +322,18 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     return [inset]
 
 
+#: The words that say where the triangle's depth is nearest in the tile (the task's question),
+#: hints until two different answers have failed (r64 08-3: every first failure's header gave
+#: the extreme centres and the nearest one; :attr:`.exercise.Exercise.hints`).
+HIZ_HINTS = (
+    (re.compile(r"the tile's extreme centres are \([^()]*\) to \([^()]*\); the triangle's "
+                r"depth is nearest at \([^()]*\), "),
+     "the nearest depth the triangle can have in the tile is "),
+    (" (its plane at the extreme pixel centres, no nearer than its nearest vertex)",
+     " (where in the tile can its depth be smallest, and how near can a fragment be?)"),
+)  # fmt: skip
+
 HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
-    variant_mistakes(_variants, MISTAKES, (FLOAT32,)), draw=draw_hiz,
+    variant_mistakes(_variants, MISTAKES, (FLOAT32,)), draw=draw_hiz, hints=HIZ_HINTS,
 )  # fmt: skip

@@ -175,10 +175,9 @@ class Report:
         if not self.failures:
             return f"{self.exercise}: {HEADLINES['budget']}"
         f = self.failures[0]
-        case = f.case if len(f.case) <= 40 else f.case[:37] + "..."
         if f.got is None and f.kind in HEADLINES:
-            return f"{self.exercise}: {HEADLINES[f.kind]} ({case})"
-        return f"{self.exercise} fails: {case}"
+            return _wrapped(f"{self.exercise}: {HEADLINES[f.kind]} ({f.case})")
+        return _wrapped(f"{self.exercise} fails: {f.case}")
 
     def plot(self, ax):
         """Draw the first failing case (or, when all pass, a passing one) on ``ax``.
@@ -252,6 +251,14 @@ def issued(report) -> bool:
     only such reports (r18-10: exercise 11's frame note was printed for any object with
     ``passed=True``). A cosmetic gate, not a lock: the package's source is readable."""
     return _ISSUED.get(id(report)) is report
+
+
+def _wrapped(title: str, width: int = 60, lines: int = 3) -> str:
+    """A title on at most ``lines`` lines of ``width`` (r64 01-3: "random 30: counter-clockwise
+    on scree..." was cut at 40 characters, before the words that said what the case is)."""
+    import textwrap
+
+    return "\n".join(textwrap.wrap(title, width, max_lines=lines, placeholder=" ..."))
 
 
 #: The stub's figure (issue 30, r46: every stub figure showed one case's expected answer).

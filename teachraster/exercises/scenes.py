@@ -222,15 +222,21 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
     """
     axes = _three_axes(axes)
     got = scene.student_image()
+    if got is None and scene._outcome.not_implemented:
+        return _stub_panels(scene, axes)
     artists = []
     scale = _scale(scene.reference, got)
-    if got is None:
-        artists.append(axes[0].text(0.5, 0.5, textwrap.fill(str(scene.error), 30), ha="center", va="center", transform=axes[0].transAxes, fontsize="small"))  # fmt: skip
+    if got is None:  # narrow lines: the empty panel is as wide as a picture (r64 08-6)
+        artists.append(axes[0].text(0.5, 0.5, textwrap.fill(str(scene.error), 18), ha="center", va="center", transform=axes[0].transAxes, fontsize="x-small"))  # fmt: skip
     else:
         artists.append(_show(axes[0], scene, got, scale))
     theirs = _show(axes[1], scene, scene.reference, scale)
     artists.append(theirs)
-    artists += _difference_panel(axes[2], scene)
+    if got is None:  # r64 08-6: every pixel drawn red said nothing, with no key
+        axes[2].set_title("differences", fontsize="small")
+        artists.append(axes[2].text(0.5, 0.5, textwrap.fill("none to show: no picture of yours", 16), ha="center", va="center", transform=axes[2].transAxes, fontsize="x-small"))  # fmt: skip
+    else:
+        artists += _difference_panel(axes[2], scene)
     artists += _key(axes, scene, theirs)
     axes[0].set_title("yours", fontsize="small")
     axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 30), fontsize="small")
@@ -247,6 +253,27 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
         # a function, not the bound method: the canvas keeps only weak references to methods
         axes[0].figure.canvas.mpl_connect("button_press_event", lambda e: marks.click(e))
     return artists + marks.artists
+
+
+#: The three panels of the untouched stub (r64 08-6: the package's panel showed the answer
+#: picture, e.g. 8.1's verdict map, beside an empty "yours" and an all-red difference panel).
+STUB_PANELS = (
+    ("yours", "not implemented yet"),
+    ("the package's", "shown once your function returns answers (it is the answer's picture)"),
+    ("differences", "none to show yet"),
+)
+
+
+def _stub_panels(scene: Scene, axes):
+    """Notes instead of pictures: the stub has earned neither the answer nor a difference."""
+    artists = []
+    for ax, (title, note) in zip(axes, STUB_PANELS):
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title(title, fontsize="small")
+        artists.append(ax.text(0.5, 0.5, textwrap.fill(note, 20), ha="center", va="center",
+                               transform=ax.transAxes, fontsize="small"))  # fmt: skip
+    return artists
 
 
 class _Marks:

@@ -18,6 +18,10 @@ classification the usual mistakes give.
 
 from __future__ import annotations
 
+import copy
+import re
+from functools import cache
+
 import numpy as np
 
 from ..core.edges import edge_values_at, passes, setup_edges
@@ -93,6 +97,7 @@ POINTS = {
     "outer corners": lambda x0, y0, s: _xs_ys(x0, y0, s),
     "beyond": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s),
     "x0 y0 swapped": lambda x0, y0, s: POINTS["centres"](y0, x0, s),
+    "pixel corners": lambda x0, y0, s: _xs_ys(x0, y0, s - 1),
     "two corners": lambda x0, y0, s: (
         np.array([x0 + 0.5, x0 + s - 0.5]),
         np.array([y0 + 0.5, y0 + s - 0.5]),
@@ -143,6 +148,10 @@ BLOCK_KNOBS = Knobs(classify_with, {
              "lie ½ px inside", "outer corners"),
         Slip("one pixel too far", lambda a, e, g: f"the last pixel centre of the block is x0 + "
              f"size − ½ = {num(a[1] + a[3] - 0.5)}, not x0 + size + ½", "beyond"),
+        # r64 08-2: the pixels' top-left corners were told "only 2 of the 4 extreme centres"
+        Slip("pixel corners", lambda a, e, g: "you tested the pixels' top-left corners "
+             f"({a[1]}, {a[2]}) … ({a[1] + a[3] - 1}, {a[2] + a[3] - 1}); the pixel centres lie "
+             "½ px right and down of them", "pixel corners"),
         Slip("two corners only", _two_corners, "two corners"),
         Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 is the block's first column (x), "
              "y0 its first row (y); its extreme centres lie at x = x0 + ½, x0 + size − ½ and "
@@ -180,10 +189,33 @@ def _block_rule(args, expected, got) -> str:
     return _by_verdicts(_edge_table(xy, x0, y0, size), expected, got)
 
 
+#: The words that say which centres decide a block (the task's question: "Be exact about
+#: which points those are"), each replaced by a hint until two different answers have failed
+#: (r64 08-3: every first failure's header printed the extreme centres, as mip_level's gave its
+#: formula; :attr:`.exercise.Exercise.hints`).
+_POINT = r"\([^()]*\) \(E = [^()]*\)"
+BLOCK_HINTS = (
+    (re.compile(r" \(extreme centres x = [^;()]*; y = [^()]*\)"), ""),
+    (re.compile(rf"even the corner that maximises its E, {_POINT}, fails"),
+     "even the block's centre where its E is largest fails (which centre is that?)"),
+    (re.compile(rf"the lowest of the minimising corners is {_POINT} for edge (v\d→v\d), which "
+                "passes"),
+     r"even edge \1, at the block's centre where its E is lowest, passes (which centre?)"),
+    (re.compile(rf"this corner, {_POINT}, is the one that minimises E for edge (v\d→v\d), and "
+                rf"it fails; you tested the maximising one, {_POINT}"),
+     r"edge \1 fails at the block's centre where its E is smallest (which centre is it?)"),
+    (re.compile(rf" \(each edge's maximising corner passes: (?:v\d→v\d: {_POINT}(?:; )?)+\)"),
+     " (each edge passes at the block's centre where its E is largest)"),
+    (re.compile(r"(corner \([^()]*\) lies exactly on edge v\d→v\d), a (?:top|left|bottom|right) "
+                r"edge: the top-left rule (includes|excludes) it"),
+     r"\1: the top-left rule \2 it (which kind of edge is it, with y pointing down?)"),
+)  # fmt: skip
+
+
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BLOCK_KNOBS], draw=draw_block_case, scene=scene,
+        [BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
     )  # fmt: skip
 
 
@@ -235,7 +267,48 @@ def _block_cases(rng, word):
     ]  # fmt: skip
 
 
-block_cases = fixed_and_drawn(_block_cases, SEED + 100)  # r49: some drawn per check
+_fixed_and_drawn = fixed_and_drawn(_block_cases, SEED + 100)  # r49: some drawn per check
+
+#: The side of the huge blocks: 2^19 px, 2.7·10^11 centres (vertices stay within the ±2^21 px
+#: the package's 8-bit fixed point holds).
+HUGE = 2**19
+
+
+def _huge_blocks() -> list:
+    """Blocks of 2^19 × 2^19 px, one of each verdict and both windings (r64 08-1: testing all
+    size² centres passed every case, though the task asks for a few edge tests per edge). A
+    handful of edge tests decide each; a scan of its centres cannot finish within the CPU
+    limit, and the case's label says why (as ``span``'s 10^12-px triangle does). Vertices on
+    whole pixels, so that float64 edge functions are exact and no extreme centre ties."""
+    xy = np.array([[-5e5, -5e5], [2e6, -5e5], [-5e5, 2e6]])
+    why = ("a scan of its 2.7·10^11 centres does not finish; a few edge tests per edge "
+           "decide it")  # fmt: skip
+    blocks = [
+        (f"a block of 2^19 × 2^19 px inside a huge triangle ({why})", xy, 0, 0),
+        (f"a block of 2^19 × 2^19 px beyond a huge triangle's long edge ({why})", xy, 2 * HUGE,
+         2 * HUGE),
+        (f"a block of 2^19 × 2^19 px that a huge triangle's long edge crosses ({why})", xy, HUGE,
+         HUGE),
+        (f"counter-clockwise, a block of 2^19 × 2^19 px inside a huge triangle ({why})",
+         xy[[0, 2, 1]], 0, 0),
+    ]  # fmt: skip
+    return [
+        (f"{label}: {tri_words(t)}, block x0={x0}, y0={y0}, size={HUGE}", (t, x0, y0, HUGE),
+         expected_block(t, x0, y0, HUGE))
+        for label, t, x0, y0 in blocks
+    ]  # fmt: skip
+
+
+_huge = cache(_huge_blocks)
+
+
+def block_cases() -> list:
+    """The hard and random blocks (fixed, then drawn for this check), then the huge blocks,
+    last, so that a per-centre scan is told its other mistakes before it runs out of time."""
+    return _fixed_and_drawn() + copy.deepcopy(_huge())
+
+
+block_cases.__module__ = _fixed_and_drawn.__module__
 
 
 def _edge_table(xy, x0, y0, size):
@@ -301,6 +374,8 @@ def _by_verdicts(edges, expected, got) -> str:
 
 def draw_block_case(ax, case, got):
     """The snapped triangle, the block with its four extreme centres, and the verdicts."""
+    from .drawing import plain_ticks
+
     xy, x0, y0, size = case[1]
     ring = np.vstack([snap(xy), snap(xy)[:1]])
     artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
@@ -314,5 +389,6 @@ def draw_block_case(ax, case, got):
     hi = np.maximum(ring.max(axis=0), [x0 + size, y0 + size]) + 1
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
+    plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
     ax.set_aspect("equal")
     return artists

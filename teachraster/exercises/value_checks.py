@@ -11,8 +11,12 @@ by an :class:`~.exercise.Exercise`.
 
 from __future__ import annotations
 
+import inspect
+
+import numpy as np
+
 from .diagnosis import Result, diagnose
-from .exercise import Exercise, copies
+from .exercise import Exercise, content_key, copies
 from .package_answers import package_note, watching
 from .report import Failure, Report
 from .running import SKIPPED, current, run_case, run_checker
@@ -21,15 +25,55 @@ from .running import SKIPPED, current, run_case, run_checker
 STOPS = ("timeout", "budget")
 
 
-def run_all(spec: Exercise, fn, cases) -> list:
-    """(case, outcome) of each case run, in order, until the check stops."""
+class Returned:
+    """What the student's function returned on each case, before it was read: one value and
+    a key of all of them (None: a value without a key), by case (the constant's test,
+    :func:`.diagnosis._constant`)."""
+
+    def __init__(self, fn):
+        self.fn, self.case, self.raw, self.keys = fn, 0, {}, {}
+
+    def __call__(self, *args, **kwargs):
+        value = self.fn(*args, **kwargs)
+        self.raw.setdefault(self.case, value)
+        keys = self.keys.setdefault(self.case, set())
+        if keys is not None:
+            key = content_key(value) if _small(value) else None
+            if key is None:
+                self.keys[self.case] = None
+            else:
+                keys.add(key)
+        return value
+
+    def key(self, case: int) -> frozenset | None:
+        keys = self.keys.get(case)
+        return None if not keys else frozenset(keys)
+
+
+#: The most values of an answer whose key is kept (a huge answer costs no time: the answers
+#: as read decide whether it is constant).
+KEYED = 4096
+
+
+def _small(value) -> bool:
+    if isinstance(value, (list, tuple)):
+        return len(value) <= 64 and all(_small(v) for v in value)
+    return np.size(value) <= KEYED if isinstance(value, np.ndarray) else True
+
+
+def run_all(spec: Exercise, fn, cases, returned: Returned | None = None) -> list:
+    """(case, outcome) of each case run, in order, until the check stops; what the function
+    returned is noted in ``returned``."""
     ran = []
+    student = fn if returned is None else returned
     for k, case in enumerate(cases):
         args = case[1]
+        if returned is not None:
+            returned.case = k
         if spec.call is not None:
-            body = lambda args=args: spec.call(fn, copies(args))  # noqa: E731
+            body = lambda args=args: spec.call(student, copies(args))  # noqa: E731
         else:
-            body = lambda args=args: spec.convert(fn(*copies(args)))  # noqa: E731
+            body = lambda args=args: spec.convert(student(*copies(args)))  # noqa: E731
         outcome = run_case(body, case=f"{k + 1} of {len(cases)}")
         if outcome.error == SKIPPED:
             break
@@ -37,6 +81,14 @@ def run_all(spec: Exercise, fn, cases) -> list:
         if outcome.kind in STOPS:
             break
     return ran
+
+
+def parameters(fn) -> tuple:
+    """The names of ``fn``'s arguments, as the student wrote them (empty if unreadable)."""
+    try:
+        return tuple(inspect.signature(fn).parameters)
+    except (TypeError, ValueError):
+        return ()
 
 
 def all_not_implemented(ran) -> bool:
@@ -47,8 +99,9 @@ def all_not_implemented(ran) -> bool:
 def check_exercise(spec: Exercise, fn) -> Report:
     """Run, compare, explain (see the module docstring): the report of exercise ``spec``."""
     cases = spec.cases()
+    returned = Returned(fn)
     with watching(spec) as seen:  # the listed answers, called from any thread (r11 09-B2)
-        ran = run_all(spec, fn, cases)
+        ran = run_all(spec, fn, cases, returned)
     scene = _scene(spec, fn)
     if all_not_implemented(ran):
         # issue 30 (r46): the stub's picture draws a case's inputs only, or nothing (most
@@ -61,8 +114,9 @@ def check_exercise(spec: Exercise, fn) -> Report:
             label, args, expected = case
             value = outcome.value
             ok = run_checker(lambda v=value, e=expected, a=args: bool(spec.same(v, e, a)), False)
-            results.append(Result(k, args, expected, outcome.value, ok))
-    said = diagnose(spec, results)
+            raw, key = returned.raw.get(k), returned.key(k)
+            results.append(Result(k, args, expected, outcome.value, ok, raw, key))
+    said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()))
     answers = {r.index: r.got for r in results}
     failures = []
     for k, (case, outcome) in enumerate(ran):
