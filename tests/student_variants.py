@@ -1471,3 +1471,54 @@ def line_dda_sampled(p0, p1):
     out = [(int(math.floor(y0 + (y1 - y0) * k / n)), int(math.floor(x0 + (x1 - x0) * k / n)))
            for k in range(n)]  # fmt: skip
     return list(dict.fromkeys(out))
+
+
+# -- r64 06, 07: slips the first explanation missed --------------------------------------------
+def _quad_origin(origin, centre=0.5):
+    """quad_derivatives with the quad's upper-left pixel from ``origin(row, col)`` and the lanes
+    read at ``centre`` within their pixels (½: the centres)."""
+
+    def quad_derivatives(xy, w, f, row, col):
+        xy, w, f = (np.asarray(a, dtype=float) for a in (xy, w, f))
+
+        def value(x, y):
+            lam = np.array([edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], (x, y))
+                            for k in range(3)]) / edge_function(*xy)  # fmt: skip
+            q = lam / w
+            return float(q @ f / q.sum())
+
+        r0, c0 = origin(row, col)
+        ul = value(c0 + centre, r0 + centre)
+        return value(c0 + 1 + centre, r0 + centre) - ul, value(c0 + centre, r0 + 1 + centre) - ul
+
+    return quad_derivatives
+
+
+def _trilinear_uv_scaled(scale):
+    def fn(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q)
+        lower = math.floor(lam)
+        upper, t = min(lower + 1, q), lam - lower
+        a = bilinear(pyramid[lower], np.asarray(uv, float) * scale(lower), wrap)
+        b = bilinear(pyramid[upper], np.asarray(uv, float) * scale(upper), wrap)
+        return (1 - t) * a + t * b
+
+    return fn
+
+
+WRONG.update({
+    "resolve_srgb returns the background": (
+        "resolve_srgb", lambda c, i, b: np.asarray(b, float), "the background alone"),
+    "bilinear returns texel [0, 0]": (
+        "bilinear", lambda t, uv, wrap: np.asarray(t, float)[0, 0], "texel [0, 0]"),
+    "trilinear with uv times 2^level": (
+        "trilinear", _trilinear_uv_scaled(lambda d: 2.0**d), "scaled uv by 2^level"),
+    "trilinear with uv over 2^level": (
+        "trilinear", _trilinear_uv_scaled(lambda d: 2.0**-d), "divided uv by 2^level"),
+    "quad at (row // 2, col // 2)": (
+        "quad_derivatives", _quad_origin(lambda r, c: (r // 2, c // 2)), "quad's number"),
+    "quad lanes at pixel corners": (
+        "quad_derivatives", _quad_origin(lambda r, c: (r - r % 2, c - c % 2), 0.0),
+        "pixels' corners"),
+})  # fmt: skip

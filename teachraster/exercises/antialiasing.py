@@ -446,16 +446,64 @@ RESOLVE_MISTAKES = [
 ]  # fmt: skip
 
 
+#: 6.2's rule, said for an answer no mistake explains, and the question asked instead on the
+#: first failing tries (r64 06 D2: the formula came with the first wrong answer).
+RESOLVE_RULE = (
+    "; every one of the S samples counts the same, an uncovered one as the background: "
+    "(Σ covered colours + (S − k)·background) / S"
+)
+RESOLVE_HINT = (
+    "; each sample stands for an equal share of the pixel: what does the pixel show in the "
+    "share where no triangle covered the sample? Work this case's numbers through by hand"
+)
+
+
 def resolve_exercise(scene) -> Exercise:
     return Exercise(
         "resolve", resolve_cases, as_colour, same_colour, explain_resolve,
-        lambda args, e, g: f"; {_mean_rule(args)}: (Σ covered colours + (S − k)·background) / S",
-        RESOLVE_MISTAKES, answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case,
-        scene=scene,
+        lambda args, e, g: RESOLVE_RULE, RESOLVE_MISTAKES,
+        answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case, scene=scene,
+        hints=((RESOLVE_RULE, RESOLVE_HINT),), inputs_drawn=True,
     )  # fmt: skip
 
 
-def draw_resolve_case(ax, case, got):
-    from .drawing import draw_values
+def draw_resolve_case(ax, case, got, extra=None):
+    """The case's samples as one strip of colour swatches (an uncovered sample in the
+    background's colour, hatched), then the expected colour and yours as swatches with their
+    numbers (r49, r64: R/G/B bars showed no colour). Before any answer (``got`` None) the
+    samples only: the figure of an untouched stub shows no answer. ``extra`` is a further
+    (name, colour) swatch drawn after yours (6.3: the encoded numbers averaged)."""
+    from matplotlib.patches import Rectangle
 
-    return draw_values(ax, ["R", "G", "B"], case[2], got)
+    from .blend_display import _two_lines, colour_texts
+
+    colours, ids, background = case[1]
+    s = len(ids)
+    covered = np.asarray(ids) >= 0
+    strip = np.where(covered[:, None], np.nan_to_num(np.asarray(colours, float)), background)
+    width = 3.0 / s  # the strip is 3 units wide whatever S
+    artists = [ax.imshow(np.clip(strip[None], 0, 1), extent=(0, 3, 1, 0), interpolation="nearest")]
+    for k in np.flatnonzero(~covered):
+        artists.append(ax.add_patch(Rectangle((k * width, 0), width, 1, fill=False, hatch="//",
+                                              edgecolor="0.5", linewidth=0)))  # fmt: skip
+    for k in range(1, s):
+        artists += ax.plot([k * width] * 2, [0, 1], color="white", linewidth=0.8)
+    ticks = [1.5]
+    names = [f"{s} samples, {int(covered.sum())} covered\n(hatched: no triangle, the\n"
+             f"background {vec(background)})"]  # fmt: skip
+    cells = []
+    if got is not None:
+        want, yours = colour_texts(case[2], got)
+        cells = [(f"expected\n{_two_lines(want)}", case[2]), (f"yours\n{_two_lines(yours)}", got)]
+        cells += [extra] if extra is not None else []
+    for k, (name, colour) in enumerate(cells):
+        left = 3.6 + 1.3 * k
+        rgb = np.clip(np.nan_to_num(np.asarray(colour, float).ravel()[:3], nan=0.5), 0, 1)
+        artists.append(ax.imshow(rgb[None, None], extent=(left, left + 1, 1, 0)))
+        ticks.append(left + 0.5)
+        names.append(name)
+    ax.set_xlim(-0.1, 3.6 + 1.3 * max(len(cells), 2))
+    ax.set_ylim(1.05, -0.05)
+    ax.set_xticks(ticks, names, fontsize="x-small")
+    ax.set_yticks([])
+    return artists

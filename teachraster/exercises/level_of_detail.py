@@ -75,7 +75,7 @@ def explain_level(args, expected, got) -> str:
     ddx, ddy, (h, w) = args
     lx, ly = (float(a) for a in footprint_axes(ddx, ddy, (h, w)))
     return (
-        f"ddx={vec(ddx)}, ddy={vec(ddy)} on an H×W = {h}×{w} texture: the footprint's axis "
+        f"on an H×W = {h}×{w} texture the footprint's axis "
         f"along x is {_AXIS_X}{num(lx)} texels, along y {_AXIS_Y}{num(ly)}{_RHO}"
         f"{num(max(lx, ly))}{_LAMBDA}"
         f"{num(expected, got)}; yours is {num(got, expected)}"
