@@ -578,3 +578,19 @@ def test_the_case_figure_draws_the_method_only_with_the_full_words(name, fn, met
         assert any(t.startswith(method) for t in words(ax)), words(ax)
     finally:
         tries.spend_hints([name])
+
+
+@pytest.mark.parametrize("name", ["coverage_fraction", "resolve", "mip_level", "bilinear",
+                                  "trilinear"])  # fmt: skip
+def test_the_stub_scene_shows_its_inputs_not_the_packages_picture(name, plt):
+    """r64 06-4, 07: beside the stub's "not implemented yet" stood the package's picture, the
+    target; the scene's inputs stand there now, and no difference panel."""
+
+    def stub(*args):
+        raise NotImplementedError
+
+    fig, axes = plt.subplots(1, 3)
+    ex.check(name, stub).compare(axes, pixel="first")
+    assert axes[1].get_title().startswith("the scene's input"), axes[1].get_title()
+    assert "package's:" not in " ".join(ax.get_title() for ax in axes)
+    assert "nothing to compare yet" in axes[2].texts[0].get_text().replace("\n", " ")

@@ -287,12 +287,18 @@ def draw_coverage_case(ax, case, got):
     inside = covered_samples(snapped, points)
     ring = np.vstack([snapped, snapped[:1]])
     artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
-    artists += ax.plot(*points[inside].T, "o", color="#2b7bba", label="covered")
-    artists += ax.plot(*points[~inside].T, "o", mfc="none", mec="#888888", label="not covered")
+    if got is None:  # before any answer the samples undecided (r64: the stub shows no answer)
+        inside = np.zeros(len(points), dtype=bool)
+    else:
+        artists += ax.plot(*points[inside].T, "o", color="#2b7bba", label="covered")
+    label = "not covered" if got is not None else "the samples"
+    artists += ax.plot(*points[~inside].T, "o", mfc="none", mec="#888888", label=label)
     box = np.array([[col, row], [col + 1, row], [col + 1, row + 1], [col, row + 1], [col, row]])
     artists += ax.plot(box[:, 0], box[:, 1], color="#ff9f1c", linewidth=2)
-    yours = "" if got is None else f", yours {num(got, case[2])}"
-    ax.set_xlabel(f"fraction {num(case[2])}{yours}")
+    if got is None:
+        ax.set_xlabel(f"pixel (row {row}, col {col}), {len(points)} samples")
+    else:
+        ax.set_xlabel(f"fraction {num(case[2])}, yours {num(got, case[2])}")
     ax.set_xlim(col - 1, col + 2)
     ax.set_ylim(row + 2, row - 1)
     ax.set_aspect("equal")
@@ -316,7 +322,7 @@ def coverage_exercise(scene) -> Exercise:
     return Exercise(
         "coverage_fraction", coverage_cases, as_fraction, same_fraction, explain_coverage,
         _coverage_rule, COVERAGE_MISTAKES, answers=(PackageAnswer(rasterize),),
-        draw=draw_coverage_case, scene=scene,
+        draw=draw_coverage_case, scene=scene, inputs_drawn=True,
     )  # fmt: skip
 
 

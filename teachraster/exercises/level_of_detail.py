@@ -183,7 +183,7 @@ def exercise(scene) -> Exercise:
     return Exercise(
         "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
         _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
-        scene=scene, hints=(
+        scene=scene, inputs_drawn=True, hints=(
             # issue 30 (r49): 7.1 asks for this formula; the first wrong try asks back
             (": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)",
              ": λ counts the halvings that bring the footprint's longer axis, measured in "
@@ -197,17 +197,22 @@ def exercise(scene) -> Exercise:
 def draw_level_case(ax, case, got):
     """The footprint's two axes in texels, and the circle of radius ρ GL fits around them."""
     ddx, ddy, (h, w) = case[1]
-    ax_x = np.array([ddx[0] * w, ddx[1] * h])
-    ax_y = np.array([ddy[0] * w, ddy[1] * h])
+    sx, sy = (w, h) if got is not None else (1, 1)  # in texels: step (1) of 7.1, after a try
+    ax_x = np.array([ddx[0] * sx, ddx[1] * sy])
+    ax_y = np.array([ddy[0] * sx, ddy[1] * sy])
     rho = max(np.hypot(*ax_x), np.hypot(*ax_y))
     artists = [
         ax.annotate("", ax_x, (0, 0), arrowprops={"arrowstyle": "->", "color": "#2b7bba"}),
         ax.annotate("", ax_y, (0, 0), arrowprops={"arrowstyle": "->", "color": "#ff9f1c"}),
     ]
-    angle = np.linspace(0, 2 * np.pi, 90)
-    artists += ax.plot(rho * np.cos(angle), rho * np.sin(angle), color="#888888", linestyle=":")
-    yours = "" if got is None else f", yours {num(got, case[2])}"
-    ax.set_xlabel(f"texels (blue ∂/∂x, orange ∂/∂y): λ = {num(case[2])}{yours}")
+    if got is None:  # before any answer the two axes only (r64: the stub shows no answer)
+        ax.set_xlabel(f"ddx (blue), ddy (orange) in texture units; W × H = {w} × {h}")
+    else:
+        angle = np.linspace(0, 2 * np.pi, 90)
+        artists += ax.plot(rho * np.cos(angle), rho * np.sin(angle), color="#888888",
+                           linestyle=":")  # fmt: skip
+        ax.set_xlabel(f"texels (blue ∂/∂x, orange ∂/∂y): λ = {num(case[2])}, yours "
+                      f"{num(got, case[2])}")  # fmt: skip
     ax.set_xlim(-1.2 * rho, 1.2 * rho)
     ax.set_ylim(1.2 * rho, -1.2 * rho)
     ax.set_aspect("equal")

@@ -58,6 +58,11 @@ class Scene:
     #: Why the student's function is not run for the picture (the check stopped on a time
     #: limit: a loop is not run twice), or None.
     blocked: str | None = None
+    #: ``inputs(ax) -> title``: draws what the student's function is given over the scene
+    #: (the triangles, the samples, the texture), no answer; the untouched stub's comparison
+    #: draws it instead of the package's picture (r64 06-4, 07: the stub showed the target
+    #: picture before any try). None: the package's picture, as before.
+    inputs: Callable | None = field(default=None, repr=False)
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
@@ -222,6 +227,8 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
     """
     axes = _three_axes(axes)
     got = scene.student_image()
+    if got is None and scene.inputs is not None and scene.error == "not implemented yet":
+        return _draw_inputs(scene, axes)
     artists = []
     scale = _scale(scene.reference, got)
     if got is None:
@@ -247,6 +254,26 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
         # a function, not the bound method: the canvas keeps only weak references to methods
         axes[0].figure.canvas.mpl_connect("button_press_event", lambda e: marks.click(e))
     return artists + marks.artists
+
+
+def _draw_inputs(scene: Scene, axes):
+    """The stub's comparison: the scene's inputs in the middle panel, no picture of the
+    package's (its answer) and nothing to compare beside it."""
+    words = [
+        "not implemented yet: your picture comes here",
+        "nothing to compare yet: the pixels that differ from the package's picture come here",
+    ]
+    artists = []
+    for ax, text in zip((axes[0], axes[2]), words):
+        artists.append(ax.text(0.5, 0.5, textwrap.fill(text, 22), ha="center", va="center",
+                               transform=ax.transAxes, fontsize="small"))  # fmt: skip
+        ax.set_axis_off()
+    title = scene.inputs(axes[1])
+    axes[1].set_title(textwrap.fill(f"the scene's input: {title}", 34), fontsize="small")
+    axes[1].set_xticks([])
+    axes[1].set_yticks([])
+    axes[0].set_title("yours", fontsize="small")
+    return artists
 
 
 class _Marks:
