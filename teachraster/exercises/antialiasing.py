@@ -470,7 +470,18 @@ def resolve_exercise(scene) -> Exercise:
         lambda args, e, g: RESOLVE_RULE, RESOLVE_MISTAKES,
         answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case, scene=scene,
         hints=((RESOLVE_RULE, RESOLVE_HINT),), inputs_drawn=True,
+        example=2,  # one green sample on white: the background's share shows
     )  # fmt: skip
+
+
+def _swatch_words(rgb: str) -> str:
+    """ "(r, g, b)" under a swatch: one number where the three are equal (a grey), else one
+    a line (r64: three labels of "(0.881, 0.881, 0.881)" ran into each other)."""
+    parts = rgb.strip("()").split(", ")
+    if len(set(parts)) == 1:
+        shade = {"0": "black", "1": "white"}.get(parts[0], "grey")
+        return f"{parts[0]}\n({shade})" if len(parts) == 3 else parts[0]
+    return "\n".join(parts)
 
 
 def draw_resolve_case(ax, case, got, extra=None):
@@ -481,35 +492,38 @@ def draw_resolve_case(ax, case, got, extra=None):
     (name, colour) swatch drawn after yours (6.3: the encoded numbers averaged)."""
     from matplotlib.patches import Rectangle
 
-    from .blend_display import _two_lines, colour_texts
+    from .blend_display import colour_texts
 
     colours, ids, background = case[1]
     s = len(ids)
     covered = np.asarray(ids) >= 0
     strip = np.where(covered[:, None], np.nan_to_num(np.asarray(colours, float)), background)
     width = 3.0 / s  # the strip is 3 units wide whatever S
-    artists = [ax.imshow(np.clip(strip[None], 0, 1), extent=(0, 3, 1, 0), interpolation="nearest")]
+    artists = [ax.imshow(np.clip(strip[None], 0, 1), extent=(0, 3, 1, 0), interpolation="nearest",
+                         aspect="auto")]  # fmt: skip
     for k in np.flatnonzero(~covered):
         artists.append(ax.add_patch(Rectangle((k * width, 0), width, 1, fill=False, hatch="//",
                                               edgecolor="0.5", linewidth=0)))  # fmt: skip
     for k in range(1, s):
         artists += ax.plot([k * width] * 2, [0, 1], color="white", linewidth=0.8)
     ticks = [1.5]
-    names = [f"{s} samples, {int(covered.sum())} covered\n(hatched: no triangle, the\n"
+    names = [f"{s} samples, {int(covered.sum())} covered\n(hatched: none, the\n"
              f"background {vec(background)})"]  # fmt: skip
     cells = []
     if got is not None:
         want, yours = colour_texts(case[2], got)
-        cells = [(f"expected\n{_two_lines(want)}", case[2]), (f"yours\n{_two_lines(yours)}", got)]
+        cells = [(f"expected\n{_swatch_words(want)}", case[2]),
+                 (f"yours\n{_swatch_words(yours)}", got)]  # fmt: skip
         cells += [extra] if extra is not None else []
     for k, (name, colour) in enumerate(cells):
-        left = 3.6 + 1.3 * k
+        left = 3.6 + 1.6 * k
         rgb = np.clip(np.nan_to_num(np.asarray(colour, float).ravel()[:3], nan=0.5), 0, 1)
-        artists.append(ax.imshow(rgb[None, None], extent=(left, left + 1, 1, 0)))
+        artists.append(ax.imshow(rgb[None, None], extent=(left, left + 1, 1, 0), aspect="auto"))
         ticks.append(left + 0.5)
         names.append(name)
-    ax.set_xlim(-0.1, 3.6 + 1.3 * max(len(cells), 2))
+    ax.set_xlim(-0.1, 3.6 + 1.6 * max(len(cells), 2))
     ax.set_ylim(1.05, -0.05)
+    ax.set_box_aspect(0.25)  # a row of swatches, the axes' full width for the labels
     ax.set_xticks(ticks, names, fontsize="x-small")
     ax.set_yticks([])
     return artists
