@@ -594,3 +594,22 @@ def test_the_stub_scene_shows_its_inputs_not_the_packages_picture(name, plt):
     assert axes[1].get_title().startswith("the scene's input"), axes[1].get_title()
     assert "package's:" not in " ".join(ax.get_title() for ax in axes)
     assert "nothing to compare yet" in axes[2].texts[0].get_text().replace("\n", " ")
+
+
+def test_the_pictures_pixel_line_names_the_cause_and_stages_the_formula():
+    """r64 06-3: the fan's pixel line named no cause; 7.1's printed the formula on the first
+    wrong try, past the check's staging."""
+    from teachraster.exercises import tries
+    from teachraster.exercises.antialiasing import fraction_with
+    from teachraster.exercises.level_of_detail import level_with
+
+    report = ex.check("coverage_fraction", lambda *a: fraction_with(*a, snapping="none"))
+    assert "unsnapped vertices" in report.explain_pixel(*report.differing_pixels()[0])
+    tries.forget_hints("mip_level")
+    try:
+        report = ex.check("mip_level", lambda *a: 1.01 * level_with(*a, combine="min"))
+        assert "a hint only" in str(report)
+        words = report.explain_pixel(*report.differing_pixels()[0])
+        assert "log2 ρ" not in words and "(du/dx·W" not in words, words
+    finally:
+        tries.spend_hints(["mip_level"])

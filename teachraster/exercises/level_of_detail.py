@@ -183,15 +183,32 @@ def exercise(scene) -> Exercise:
     return Exercise(
         "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
         _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
-        scene=scene, inputs_drawn=True, hints=(
-            # issue 30 (r49): 7.1 asks for this formula; the first wrong try asks back
-            (": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)",
-             ": λ counts the halvings that bring the footprint's longer axis, measured in "
-             "texels of level 0, down to one texel"),
-            (_AXIS_X, ""), (_AXIS_Y, ""), (_RHO, " texels (ρ = "),
-            (_LAMBDA, "), λ = "),
-        ),
+        scene=scene, inputs_drawn=True, hints=HINTS,
     )  # fmt: skip
+
+
+#: issue 30 (r49): 7.1 asks for this formula; the first wrong tries ask back. The scene's
+#: pixel explanations use them too (r64: the picture's line printed the formula).
+HINTS = (
+    (": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)",
+     ": λ counts the halvings that bring the footprint's longer axis, measured in "
+     "texels of level 0, down to one texel"),
+    (_AXIS_X, ""), (_AXIS_Y, ""), (_RHO, " texels (ρ = "),
+    (_LAMBDA, "), λ = "),
+)  # fmt: skip
+
+
+def hinted(name: str, words: str, hints) -> str:
+    """``words`` with ``hints`` in place of the formula until two different answers of task
+    ``name`` have failed (the check's own staging, :func:`.checks._hinted`), for words said
+    outside the report (a picture's pixel)."""
+    from . import tries
+
+    if tries.hints_spent(name):
+        return words
+    for text, hint in hints:
+        words = words.replace(text, hint)
+    return words
 
 
 def draw_level_case(ax, case, got):

@@ -131,7 +131,8 @@ def coverage_scene(fn) -> Scene:
     tris, cov = fan()
     samples = sample_pattern(FAN_SAMPLES)
     reference = cov.mean(axis=3)  # (T, H, W): each triangle's fraction
-    scene = Scene("a fan, fraction of 4 samples covered", reference.sum(axis=0), None, None)
+    scene = Scene("a fan, fraction of 4 samples covered", reference.sum(axis=0), None, None,
+                  value_name="fraction of the samples covered")  # fmt: skip
 
     def run():
         out = np.zeros_like(reference)
@@ -143,16 +144,40 @@ def coverage_scene(fn) -> Scene:
         scene.parts = out  # per triangle, for the explanations
         return out.sum(axis=0)
 
+    cause = []  # the slip that gives every differing answer of the picture, found once
+
     def explain(got, row, col):
         for t, xy in enumerate(tris):
             expected, yours = reference[t, row, col], scene.parts[t, row, col]
             if not np.isclose(yours, expected):
                 args = (np.array(xy), (row, col), np.array(samples))
-                return f"triangle {t + 1} of the fan: " + aa.explain_coverage(args, expected, yours)
+                if not cause:
+                    cause.append(_picture_slip(tris, samples, reference, scene.parts))
+                words = aa.explain_coverage(args, expected, yours)
+                return f"triangle {t + 1} of the fan: {words}{cause[0](args, expected, yours)}"
         return f"yours and the package's agree: {num(reference[:, row, col].sum())} covered"
 
     scene.run, scene.explain_at, scene.inputs = run, explain, _fan_inputs
     return scene
+
+
+def _picture_slip(tris, samples, reference, parts, most: int = 60):
+    """``words(args, expected, got)``: the one slip of 6.1's table (no combination) that gives
+    every differing answer of the picture (at most ``most`` of them), as the check names it,
+    or a pointer to the check (r64 06-3: a pixel's line named no cause). A slip that matches
+    only this pixel is not named: few values are possible, and a coincidence would mislead."""
+    where = np.argwhere(~np.isclose(parts, reference))[:most]
+    singles = [m for family in aa.COVERAGE_MISTAKES for m in family.mistakes()
+               if not m.parts and m.gives is not None]  # fmt: skip
+    for m in singles:
+        if all(_gives(m, (tris[t], (i, j), samples), parts[t, i, j]) for t, i, j in where):
+            return lambda args, expected, got, m=m: ": " + m.say(args, expected, got)
+    return lambda args, expected, got: "; the check's failures above name the cause"
+
+
+def _gives(mistake, args, got) -> bool:
+    value = mistake.gives(*(np.array(a) if isinstance(a, np.ndarray) else a for a in args))
+    return value is not None and np.isclose(value, got)
 
 
 def _fan_inputs(ax) -> str:
@@ -321,9 +346,11 @@ def level_scene(fn) -> Scene:
         args = (ddx[row, col].copy(), ddy[row, col].copy(), size)
         if np.isclose(got[row, col], reference[row, col]):
             return f"yours and the package's agree: λ = {num(reference[row, col])}"
-        return lod.explain_level(args, float(reference[row, col]), float(got[row, col]))
+        words = lod.explain_level(args, float(reference[row, col]), float(got[row, col]))
+        return lod.hinted("mip_level", words, lod.HINTS)
 
-    scene = Scene("λ over a floor, 64 × 64 texture", reference, run, explain)
+    scene = Scene("λ over a floor, 64 × 64 texture", reference, run, explain,
+                  value_name="λ, the level of detail")  # fmt: skip
     scene.inputs = _uv_inputs
     return scene
 

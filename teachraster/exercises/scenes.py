@@ -63,6 +63,8 @@ class Scene:
     #: draws it instead of the package's picture (r64 06-4, 07: the stub showed the target
     #: picture before any try). None: the package's picture, as before.
     inputs: Callable | None = field(default=None, repr=False)
+    #: What a continuous picture's values are (the colour bar's label: r64 07-6, "λ").
+    value_name: str = ""
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
@@ -190,8 +192,16 @@ def _key(axes, scene: Scene, shown):
                                ncols=2, fontsize="x-small", frameon=False)]  # fmt: skip
     if scene.reference.ndim == 3 or shown is None:
         return []
-    bar = axes[1].figure.colorbar(shown, ax=list(axes[:2]), shrink=0.8, pad=0.02)
+    # under a wide, low picture, not beside it: a bar as tall as the panels ran into the
+    # package's title above the floor (r64 07-6); beside a square one, which it leaves large
+    h, w = scene.reference.shape[:2]
+    wide = w > 1.5 * h
+    bar = axes[1].figure.colorbar(shown, ax=list(axes[:2]), pad=0.02,
+                                  orientation="horizontal" if wide else "vertical",
+                                  shrink=0.7 if wide else 0.8, aspect=35 if wide else 20)  # fmt: skip
     bar.ax.tick_params(labelsize="x-small")
+    if scene.value_name:
+        bar.set_label(scene.value_name, fontsize="x-small")
     return [bar]
 
 
@@ -202,7 +212,10 @@ def _difference_panel(ax, scene: Scene):
     artists = [ax.imshow(base, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0), interpolation="nearest")]  # fmt: skip
     d = scene.difference()
     if not scene.categories and np.isfinite(d).any():
-        artists.append(ax.imshow(d, cmap="Reds", extent=(0, w, h, 0), interpolation="nearest"))
+        # from 0: where every difference is the same size (a quarter of a pixel's samples)
+        # the default scale drew them as its lowest, near-white shade (r64 06-3)
+        artists.append(ax.imshow(d, cmap="Reds", vmin=0, vmax=float(np.nanmax(d)),
+                                 extent=(0, w, h, 0), interpolation="nearest"))  # fmt: skip
         biggest = f"\nlargest {np.nanmax(d):.3g}"
     else:
         mask = np.zeros((h, w, 4))
