@@ -1474,14 +1474,17 @@ def line_dda_sampled(p0, p1):
 
 
 # -- r64 06, 07: slips the first explanation missed --------------------------------------------
-def _quad_origin(origin, centre=0.5):
-    """quad_derivatives with the quad's upper-left pixel from ``origin(row, col)`` and the lanes
-    read at ``centre`` within their pixels (½: the centres)."""
+def _quad_origin(origin, centre=0.5, yx=False):
+    """quad_derivatives with the quad's upper-left pixel from ``origin(row, col)``, the lanes
+    read at ``centre`` within their pixels (½: the centres), and with ``yx`` each lane's point
+    handed over as (y, x)."""
 
     def quad_derivatives(xy, w, f, row, col):
         xy, w, f = (np.asarray(a, dtype=float) for a in (xy, w, f))
 
         def value(x, y):
+            if yx:
+                x, y = y, x
             lam = np.array([edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], (x, y))
                             for k in range(3)]) / edge_function(*xy)  # fmt: skip
             q = lam / w
@@ -1522,3 +1525,8 @@ WRONG.update({
         "quad_derivatives", _quad_origin(lambda r, c: (r - r % 2, c - c % 2), 0.0),
         "pixels' corners"),
 })  # fmt: skip
+
+
+WRONG["quad lanes as (y, x)"] = (
+    "quad_derivatives", _quad_origin(lambda r, c: (r - r % 2, c - c % 2), yx=True),
+    "as (row + ½, col + ½)")  # fmt: skip

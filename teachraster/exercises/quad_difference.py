@@ -122,6 +122,8 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         "swapped": right[::-1],
         "negated": -right,
         "row col swapped": pair(col - col % 2, row - row % 2),
+        # the lanes' points as (y, x): each difference then runs along the other axis too
+        "points (y, x)": pair(c0, r0)[::-1],
         "centred": np.array(
             [
                 _at(xy, w, f, col + 1.5, row + 0.5) - _at(xy, w, f, col - 0.5, row + 0.5),
@@ -154,6 +156,8 @@ MISTAKES = {
     "left one, ddy the lower minus the upper",
     "row col swapped": "you took the pixel as (col, row): pixel (row, col) lies at x = col + ½, "
     "y = row + ½",
+    "points (y, x)": "you passed each lane's centre as (row + ½, col + ½); a point is "
+    "(x, y) = (col + ½, row + ½), x along the row",
     "centred": "you took a centred difference around the pixel, (f(x + 1) − f(x − 1))/2: the "
     "GPU differences the lanes of the pixel's 2×2 quad, right minus left, lower minus upper",
 }

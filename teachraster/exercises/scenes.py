@@ -216,7 +216,7 @@ def _difference_panel(ax, scene: Scene):
         # the default scale drew them as its lowest, near-white shade (r64 06-3)
         artists.append(ax.imshow(d, cmap="Reds", vmin=0, vmax=float(np.nanmax(d)),
                                  extent=(0, w, h, 0), interpolation="nearest"))  # fmt: skip
-        biggest = f"\nlargest {np.nanmax(d):.3g}"
+        biggest = f"\nlargest {np.nanmax(d):.3g} (darkest red)"
     else:
         mask = np.zeros((h, w, 4))
         mask[differs] = (0.84, 0.19, 0.12, 1.0)
