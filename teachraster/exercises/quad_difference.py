@@ -200,7 +200,10 @@ def draw_quad(ax, case, got):
 
     _, (xy, w, f, row, col), expected = case
     r0, c0 = row - row % 2, col - col % 2
-    method = got is not None and tries.hints_spent("quad_derivatives")
+    # the method once earned: the full words given, or this answer right (a passing check)
+    method = got is not None and (
+        tries.hints_spent("quad_derivatives") or same_pair(np.asarray(got), expected, case[1])
+    )
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
     for y in range(r0 - 2, r0 + 4):

@@ -348,7 +348,12 @@ def draw_texture_case(ax, case, got):
     px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
     x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
     fx, fy = px - 0.5 - x0, py - 0.5 - y0
-    method = not levels and got is not None and tries.hints_spent("bilinear")
+    # the method once earned: the full words given, or this answer right (a passing check)
+    method = (
+        not levels
+        and got is not None
+        and (tries.hints_spent("bilinear") or same_value(got, case[2], None))
+    )
     for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1)) if method else ():
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
         artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
