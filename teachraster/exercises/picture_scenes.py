@@ -32,7 +32,7 @@ from .answers import as_coverage
 from .cases import catalogue_coverage
 from .coverage import edge_name, expected_coverage, explain_pixel, point
 from .running import WrongAnswerType
-from .scalars import num
+from .scalars import num, vec
 from .scenes import Scene, call
 
 
@@ -396,16 +396,20 @@ def _texel_explainer(uv, texture, reference, lam=None):
             return "no floor here"
         if tf.same_value(got[row, col], reference[row, col], None):
             return "yours and the package's agree"
+        # the case's arguments first: in the check they stand in the case's label
+        where = f"uv={vec(uv[row, col])}, wrap 'repeat'"
         if lam is None:
             args = (texture.copy(), uv[row, col].copy(), "repeat")
-            return tf.explain_bilinear(args, reference[row, col], got[row, col])
+            words = tf.explain_bilinear(args, reference[row, col], got[row, col])
+            return f"{where}, {words}"
         args = (
             tf.Pyramid(lv.copy() for lv in texture),
             uv[row, col].copy(),
             float(lam[row, col]),
             "repeat",
         )
-        return tf.explain_trilinear(args, reference[row, col], got[row, col])
+        words = tf.explain_trilinear(args, reference[row, col], got[row, col])
+        return f"{where}, λ={num(float(lam[row, col]))}, {words}"
 
     return explain
 
