@@ -525,8 +525,8 @@ def test_resolve_srgb_figure_marks_the_codes_average():
     plt.close(fig)
 
 
-@pytest.mark.parametrize("name", ["resolve", "resolve_srgb", "bilinear", "trilinear",
-                                  "quad_derivatives"])  # fmt: skip
+@pytest.mark.parametrize("name", ["coverage_fraction", "resolve", "resolve_srgb", "mip_level",
+                                  "bilinear", "trilinear", "quad_derivatives"])  # fmt: skip
 def test_the_stub_figure_draws_the_inputs_and_no_answer(name):
     """r64 06-4, 07: the stub's figure drew nothing, its scene the package's answer; it draws
     the first case's inputs, with no expected value in its text."""
@@ -545,8 +545,9 @@ def test_the_stub_figure_draws_the_inputs_and_no_answer(name):
     words = " ".join([ax.get_xlabel(), *(t.get_text() for t in ax.texts),
                       *(t.get_text() for t in ax.get_xticklabels())])  # fmt: skip
     assert "expected" not in words and "filtered value" not in words, words
+    assert "yours" not in words and "fraction" not in words, words
     assert "(ddx, ddy)" not in words and not any(t.startswith("w ") for t in words.split("\n"))
-    assert ax.get_images() or ax.patches, "the inputs are drawn"
+    assert ax.get_images() or ax.patches or ax.lines or ax.texts, "the inputs are drawn"
     plt.close(fig)
 
 
