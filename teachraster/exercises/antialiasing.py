@@ -410,13 +410,16 @@ def _majority(colours, ids, background):
     return colours[ids == np.bincount(ids[c]).argmax()][0] if c.any() else None
 
 
-def _resolve_words(text: str):
+def _resolve_words(text: str, rule: bool = True):
+    """A slip's words, then (``rule``) how the mean is taken here; a placeholder's slip (the
+    background alone, sample 0 alone) gets no rule: it names what is wrong and leaves the
+    resolve to work out (r64 06 D2: the first try of a placeholder printed the answer)."""
+
     def words(args, expected, got):
         _, ids, background = args
         k = int((ids >= 0).sum())
-        return (
-            ": " + text.format(k=k, s="s" * (k != 1), bg=vec(background)) + "; " + _mean_rule(args)
-        )
+        said = ": " + text.format(k=k, s="s" * (k != 1), bg=vec(background))
+        return said + "; " + _mean_rule(args) if rule else said
 
     return words
 
@@ -440,7 +443,8 @@ RESOLVE_MISTAKES = [
             gives=lambda c, i, b: (np.nansum(c[i >= 0], axis=0) + b) / ((i >= 0).sum() + 1)),
     Mistake("sum", _resolve_words("that is the sum of the samples; the resolve is their mean"),
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
-    Mistake("first sample", _resolve_words("that is sample 0 alone"),
+    Mistake("first sample", _resolve_words("that is sample 0 alone: the resolve mixes all "
+            "the samples", rule=False),
             gives=lambda c, i, b: _with_background(c, i, b)[0]),
     # r40/r49: ids <= 0 taken as uncovered (a test of ids > 0), so triangle 0 turned background
     Mistake("triangle 0 as background", _resolve_words("you counted the samples of triangle 0 "
@@ -448,7 +452,8 @@ RESOLVE_MISTAKES = [
             "sample (covered is ids ≥ 0, not ids > 0)"),
             gives=lambda c, i, b: np.where((i > 0)[:, None], c, b).mean(axis=0)),
     Mistake("background only", _resolve_words("that is the background alone: the covered "
-            "samples' colours count too"), gives=lambda c, i, b: np.asarray(b, dtype=float)),
+            "samples' colours count too", rule=False),
+            gives=lambda c, i, b: np.asarray(b, dtype=float)),
 ]  # fmt: skip
 
 
