@@ -475,6 +475,7 @@ def resolve_exercise(scene) -> Exercise:
         lambda args, e, g: RESOLVE_RULE, RESOLVE_MISTAKES,
         answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case, scene=scene,
         hints=((RESOLVE_RULE, RESOLVE_HINT),), inputs_drawn=True,
+        once=((RESOLVE_RULE, "; as said for the first failing case"),),
         example=2,  # one green sample on white: the background's share shows
     )  # fmt: skip
 

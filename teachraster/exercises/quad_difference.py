@@ -254,4 +254,5 @@ QUAD_DERIVATIVES = Exercise(
     "quad_derivatives", quad_cases, as_pair, same_pair, explain_quad, _rule,
     variant_mistakes(_variants, MISTAKES), answers=(PackageAnswer(lane_values),),
     draw=draw_quad, hints=((RULE, HINT),), inputs_drawn=True,
+    once=((RULE, ": as said for the first failing case"),),
 )  # fmt: skip

@@ -175,4 +175,5 @@ RESOLVE_SRGB = Exercise(
     "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
     answers=(PackageAnswer(Frame.resolve),), draw=draw_srgb_case,
     reference=("teachraster.exercises.antialiasing",), hints=((RULE, HINT),), inputs_drawn=True,
+    once=((RULE, "; as said for the first failing case"),),
 )  # fmt: skip

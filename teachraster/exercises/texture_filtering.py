@@ -319,6 +319,7 @@ def bilinear_exercise(scene) -> Exercise:
         "bilinear", bilinear_cases, as_texel_value, same_value, explain_bilinear,
         _bilinear_rule, BILINEAR_MISTAKES, answers=_answers("bilinear"),
         draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT),),
+        once=((BILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
     )  # fmt: skip
 
@@ -596,5 +597,6 @@ def trilinear_exercise(scene) -> Exercise:
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
         _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
         draw=draw_texture_case, scene=scene, hints=((TRILINEAR_RULE, TRILINEAR_HINT),),
+        once=((TRILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
     )  # fmt: skip
