@@ -196,9 +196,11 @@ def _key(axes, scene: Scene, shown):
     # package's title above the floor (r64 07-6); beside a square one, which it leaves large
     h, w = scene.reference.shape[:2]
     wide = w > 1.5 * h
-    bar = axes[1].figure.colorbar(shown, ax=list(axes[:2]), pad=0.02,
+    # (under all three panels, which then stay in line: under two, the third rose over the
+    # package's title)
+    bar = axes[1].figure.colorbar(shown, ax=list(axes) if wide else list(axes[:2]), pad=0.02,
                                   orientation="horizontal" if wide else "vertical",
-                                  shrink=0.7 if wide else 0.8, aspect=35 if wide else 20)  # fmt: skip
+                                  shrink=0.5 if wide else 0.8, aspect=40 if wide else 20)  # fmt: skip
     bar.ax.tick_params(labelsize="x-small")
     if scene.value_name:
         bar.set_label(scene.value_name, fontsize="x-small")
@@ -253,7 +255,7 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
     artists += _difference_panel(axes[2], scene)
     artists += _key(axes, scene, theirs)
     axes[0].set_title("yours", fontsize="small")
-    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 30), fontsize="small")
+    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 26), fontsize="small")
     for ax in axes:
         ax.set_xticks([])
         ax.set_yticks([])
