@@ -1511,8 +1511,6 @@ def _trilinear_uv_scaled(scale):
 
 
 WRONG.update({
-    "resolve_srgb returns the background": (
-        "resolve_srgb", lambda c, i, b: np.asarray(b, float), "the background alone"),
     "bilinear returns texel [0, 0]": (
         "bilinear", lambda t, uv, wrap: np.asarray(t, float)[0, 0], "texel [0, 0]"),
     "trilinear with uv times 2^level": (

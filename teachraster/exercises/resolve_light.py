@@ -153,9 +153,6 @@ MISTAKES = [
     Mistake("covered only", ": you averaged the covered samples only; an uncovered sample "
             "counts as the background", gives=lambda c, i, b: _mix(c, i, b, _decode, _encode,
                                                                    covered_only=True)),
-    # r64 06 D1: `return background` got the whole formula (6.2 names it)
-    Mistake("background only", ": that is the background alone: the covered samples' light "
-            "counts too", gives=lambda c, i, b: np.asarray(b, dtype=float)),
     Mistake("power 2.2", ": that is a plain power of 2.2: sRGB's curve is linear near black "
             "and a power of 2.4 above it (srgb_to_linear, linear_to_srgb compute it exactly)",
             gives=lambda c, i, b: _mix(c, i, b, lambda x: _power(x, 2.2),
