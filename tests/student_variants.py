@@ -570,6 +570,24 @@ def _span_with(y_offset=0.5, left=lambda x: math.ceil(x - 0.5), right=lambda x: 
     return span
 
 
+def span_exact(xy, row):
+    """The crossings in exact fractions (the split found by which edges span the line), then
+    the top-left rounding: right at any distance from the origin and any width."""
+    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = Fraction(2 * row + 1, 2)
+    if edge_function(*v) == 0 or not y1 <= y <= y3:
+        return (0, 0)
+    if y1 == y2 == y or y2 == y3 == y:  # along a horizontal edge: covered only at the top
+        return (0, 0) if y3 == y else (math.ceil(min(x1, x2) - Fraction(1, 2)),
+                                       math.ceil(max(x1, x2) - Fraction(1, 2)))  # fmt: skip
+    long_x = x1 + (y - y1) * (x3 - x1) / (y3 - y1)
+    a, b = ((x1, y1), (x2, y2)) if y <= y2 else ((x2, y2), (x3, y3))
+    short_x = a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    lo, hi = sorted((long_x, short_x))
+    return math.ceil(lo - Fraction(1, 2)), math.ceil(hi - Fraction(1, 2))
+
+
 def span_by_testing(xy, row):
     """Every candidate centre of the row tested with exact fractions and the top-left rule: right
     wherever it finishes, but a scan of the triangle's columns (r46 02-4), so the check's
@@ -796,6 +814,7 @@ DIFFERENT = {
     "half-plane clipping against the diamond": ("line_pixels", line_half_planes),
     "float32 over": ("over", over_float32),
     # issue 30
+    "span from exact fractions, the split by edges": ("span", span_exact),
     "perspective weights from ratios of w": ("perspective_weights", weights_ratios),
     "depth passes as 0/1 ints": (
         "depth_passes",
@@ -1589,3 +1608,60 @@ def line_dda_sampled(p0, p1):
     out = [(int(math.floor(y0 + (y1 - y0) * k / n)), int(math.floor(x0 + (x1 - x0) * k / n)))
            for k in range(n)]  # fmt: skip
     return list(dict.fromkeys(out))
+
+
+# -- r64 06, 07: slips the first explanation missed --------------------------------------------
+def _quad_origin(origin, centre=0.5, yx=False):
+    """quad_derivatives with the quad's upper-left pixel from ``origin(row, col)``, the lanes
+    read at ``centre`` within their pixels (½: the centres), and with ``yx`` each lane's point
+    handed over as (y, x)."""
+
+    def quad_derivatives(xy, w, f, row, col):
+        xy, w, f = (np.asarray(a, dtype=float) for a in (xy, w, f))
+
+        def value(x, y):
+            if yx:
+                x, y = y, x
+            lam = np.array([edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], (x, y))
+                            for k in range(3)]) / edge_function(*xy)  # fmt: skip
+            q = lam / w
+            return float(q @ f / q.sum())
+
+        r0, c0 = origin(row, col)
+        ul = value(c0 + centre, r0 + centre)
+        return value(c0 + 1 + centre, r0 + centre) - ul, value(c0 + centre, r0 + 1 + centre) - ul
+
+    return quad_derivatives
+
+
+def _trilinear_uv_scaled(scale):
+    def fn(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q)
+        lower = math.floor(lam)
+        upper, t = min(lower + 1, q), lam - lower
+        a = bilinear(pyramid[lower], np.asarray(uv, float) * scale(lower), wrap)
+        b = bilinear(pyramid[upper], np.asarray(uv, float) * scale(upper), wrap)
+        return (1 - t) * a + t * b
+
+    return fn
+
+
+WRONG.update({
+    "bilinear returns texel [0, 0]": (
+        "bilinear", lambda t, uv, wrap: np.asarray(t, float)[0, 0], "texel [0, 0]"),
+    "trilinear with uv times 2^level": (
+        "trilinear", _trilinear_uv_scaled(lambda d: 2.0**d), "scaled uv by 2^level"),
+    "trilinear with uv over 2^level": (
+        "trilinear", _trilinear_uv_scaled(lambda d: 2.0**-d), "divided uv by 2^level"),
+    "quad at (row // 2, col // 2)": (
+        "quad_derivatives", _quad_origin(lambda r, c: (r // 2, c // 2)), "quad's number"),
+    "quad lanes at pixel corners": (
+        "quad_derivatives", _quad_origin(lambda r, c: (r - r % 2, c - c % 2), 0.0),
+        "pixels' corners"),
+})  # fmt: skip
+
+
+WRONG["quad lanes as (y, x)"] = (
+    "quad_derivatives", _quad_origin(lambda r, c: (r - r % 2, c - c % 2), yx=True),
+    "as (row + ½, col + ½)")  # fmt: skip

@@ -517,6 +517,123 @@ def test_resolve_srgb_figure_marks_the_codes_average():
     fig, ax = plt.subplots()
     case = resolve_srgb_cases()[0]  # black on white, 1 of 4 samples
     draw_srgb_case(ax, case, case[2])
-    marks = [line for line in ax.get_lines() if line.get_label() == "codes averaged (6.2)"]
-    assert marks and np.allclose(marks[0].get_ydata(), 0.75)
+    names = [t.get_text() for t in ax.get_xticklabels()]
+    assert any(n.startswith("codes averaged") and "0.75\n(grey)" in n for n in names), names
+    # r64 06-5: the colours as swatches: the samples' strip, expected, yours, the codes' average
+    swatches = ax.get_images()
+    assert len(swatches) == 4, names
+    assert np.allclose(swatches[3].get_array()[0, 0], 0.75)  # the codes' average, grey
+    assert np.allclose(swatches[1].get_array()[0, 0], case[2])  # expected: lighter, 0.881
     plt.close(fig)
+
+
+@pytest.mark.parametrize("name", ["coverage_fraction", "resolve", "resolve_srgb", "mip_level",
+                                  "bilinear", "trilinear", "quad_derivatives"])  # fmt: skip
+def test_the_stub_figure_draws_the_inputs_and_no_answer(name):
+    """r64 06-4, 07: the stub's figure drew nothing, its scene the package's answer; it draws
+    the first case's inputs, with no expected value in its text."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def stub(*args):
+        raise NotImplementedError
+
+    report = ex.check(name, stub)
+    assert report.not_implemented and report.example is not None
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    words = " ".join([ax.get_xlabel(), *(t.get_text() for t in ax.texts),
+                      *(t.get_text() for t in ax.get_xticklabels())])  # fmt: skip
+    assert "expected" not in words and "filtered value" not in words, words
+    assert "yours" not in words and "fraction" not in words, words
+    assert "(ddx, ddy)" not in words and not any(t.startswith("w ") for t in words.split("\n"))
+    assert ax.get_images() or ax.patches or ax.lines or ax.texts, "the inputs are drawn"
+    plt.close(fig)
+
+
+@pytest.mark.parametrize(("name", "fn", "method"), [
+    ("bilinear", lambda t, uv, w: np.asarray(t, float).mean(axis=(0, 1)), "w "),
+    ("quad_derivatives", lambda xy, w, f, row, col: (0.001 * row, 0.002 * col), "its quad"),
+])  # fmt: skip
+def test_the_case_figure_draws_the_method_only_with_the_full_words(name, fn, method, plt):
+    """r64 07 D2, D3: 7.2's four weighted texels and 7.4's quad with its lanes are the
+    method; the first failing tries' figure leaves them out, as their words do."""
+    from teachraster.exercises import tries
+
+    def words(ax):
+        legend = ax.get_legend()
+        return [t.get_text() for t in ax.texts] + (
+            [t.get_text() for t in legend.get_texts()] if legend else []
+        )
+
+    tries.forget_hints(name)
+    try:
+        report = ex.check(name, fn)
+        assert "a hint only" in str(report)
+        fig, ax = plt.subplots()
+        report.plot(ax)
+        assert not any(t.startswith(method) for t in words(ax)), words(ax)
+        tries.spend_hints([name])
+        fig, ax = plt.subplots()
+        ex.check(name, fn).plot(ax)
+        assert any(t.startswith(method) for t in words(ax)), words(ax)
+    finally:
+        tries.spend_hints([name])
+
+
+@pytest.mark.parametrize("name", ["coverage_fraction", "resolve", "mip_level", "bilinear",
+                                  "trilinear"])  # fmt: skip
+def test_the_stub_scene_shows_its_inputs_not_the_packages_picture(name, plt):
+    """r64 06-4, 07: beside the stub's "not implemented yet" stood the package's picture, the
+    target; the scene's inputs stand there now, and no difference panel."""
+
+    def stub(*args):
+        raise NotImplementedError
+
+    fig, axes = plt.subplots(1, 3)
+    ex.check(name, stub).compare(axes, pixel="first")
+    assert axes[1].get_title().startswith("the scene's input"), axes[1].get_title()
+    assert "package's:" not in " ".join(ax.get_title() for ax in axes)
+    assert "none to show yet" in axes[2].texts[0].get_text().replace("\n", " ")
+
+
+def test_the_pictures_pixel_line_names_the_cause_and_stages_the_formula():
+    """r64 06-3: the fan's pixel line named no cause; 7.1's printed the formula on the first
+    wrong try, past the check's staging."""
+    from teachraster.exercises import tries
+    from teachraster.exercises.antialiasing import fraction_with
+    from teachraster.exercises.level_of_detail import level_with
+
+    report = ex.check("coverage_fraction", lambda *a: fraction_with(*a, snapping="none"))
+    assert "unsnapped vertices" in report.explain_pixel(*report.differing_pixels()[0])
+    tries.forget_hints("mip_level")
+    try:
+        report = ex.check("mip_level", lambda *a: 1.01 * level_with(*a, combine="min"))
+        assert "a hint only" in str(report)
+        words = report.explain_pixel(*report.differing_pixels()[0])
+        assert "log2 ρ" not in words and "(du/dx·W" not in words, words
+    finally:
+        tries.spend_hints(["mip_level"])
+
+
+@pytest.mark.parametrize(("name", "fn", "named"), [
+    ("resolve", lambda c, i, b: b, "the background alone"),
+    ("resolve_srgb", lambda c, i, b: np.asarray(b, float), ""),  # the check's own words
+    ("bilinear", lambda t, uv, w: np.asarray(t, float)[0, 0], "texel [0, 0]"),
+])  # fmt: skip
+def test_a_placeholder_is_named_without_the_rule(name, fn, named):
+    """r64 06 D1, D2, 07 D2: `return background` (6.2, 6.3) and `return texture[0, 0]` (7.2)
+    got the resolve's formula or bilinear's method on the first try (6.3's words for an
+    argument handed back are the checker's, in diagnosis.py)."""
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    try:
+        text = str(ex.check(name, fn))
+    finally:
+        tries.spend_hints([name])
+    assert named in text, text
+    for rule in ("counting as the background", "(S − k)", "linear_to_srgb(", "u·W − ½", "⌊x⌋"):
+        assert rule not in text, text

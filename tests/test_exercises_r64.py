@@ -123,6 +123,9 @@ def test_the_stub_scene_shows_no_package_picture(plt):
         fig, axes = plt.subplots(1, 3)
         report.compare(axes, pixel="first")
         for ax, (title, _) in zip(axes, STUB_PANELS):
+            if title == "the package's" and name != "classify_block":  # 06, 07: the inputs
+                assert ax.get_title().startswith("the scene's input"), ax.get_title()
+                continue
             assert not ax.images and ax.get_title() == title
             assert len(ax.texts) == 1
         plt.close(fig)

@@ -510,6 +510,30 @@ def test_safe_near_with_an_infinite_far_plane_still_fails_where_it_matters():
     _named("safe_near", lambda z, g, f, b: step(b) * z * z / g, "infinite far", "(f − n)/f")
 
 
+def _brightest(colours, ids, background):
+    """A resolve no mistake of the table gives: the brightest sample, NaN as 0."""
+    return np.nan_to_num(np.asarray(colours, float)).max(axis=0)
+
+
+def _mean_texel(texture, uv, wrap):
+    """A bilinear no mistake gives: the mean of the texture."""
+    return np.asarray(texture, float).mean(axis=(0, 1))
+
+
+def _ends(pyramid, uv, lod, wrap="repeat"):
+    """A trilinear no mistake gives: level 0 and the 1×1 level, half each."""
+    from exercise_solutions import bilinear
+
+    return 0.5 * (np.asarray(bilinear(pyramid[0], uv, wrap)) + np.asarray(pyramid[-1][0, 0]))
+
+
+def _quad_rows_below(rows):
+    """A quad_derivatives no mistake gives: the quad ``rows`` rows below the right one."""
+    from student_variants import _quad_origin
+
+    return _quad_origin(lambda r, c: (r - r % 2 + rows, c - c % 2))
+
+
 def _clip_from_end(v):
     from exercise_solutions import clip_against
 
@@ -526,7 +550,15 @@ def _clip_from_end(v):
       lambda z, g, f, b: 2 * step(b) * z * z / g, "solve step"),
      # 7.1: every case's words measured the axes as ‖(du/dx·W, dv/dx·H)‖ and took log2 ρ
      ("mip_level", lambda dx, dy, s: 0.5, lambda dx, dy, s: 1.5, "λ = log2 ρ"),
-     ("mip_level", lambda dx, dy, s: 0.5, lambda dx, dy, s: 1.5, "(du/dx·W, dv/dx·H)")],
+     ("mip_level", lambda dx, dy, s: 0.5, lambda dx, dy, s: 1.5, "(du/dx·W, dv/dx·H)"),
+     # r64 06 D1, D2; 07 D1-D3: 6.2, 6.3, 7.2, 7.3, 7.4 gave the rule on the first failure
+     ("resolve", _brightest, lambda c, i, b: _brightest(c, i, b) / 2, "(S − k)·background"),
+     ("resolve_srgb", _brightest, lambda c, i, b: _brightest(c, i, b) / 2,
+      "linear_to_srgb((Σ"),
+     ("bilinear", _mean_texel, lambda t, uv, w: _mean_texel(t, uv, w) / 2, "u·W − ½"),
+     ("trilinear", _ends, lambda p, uv, lod, wrap="repeat": _ends(p, uv, lod, wrap) / 2,
+      "clamp λ to [0, q]"),
+     ("quad_derivatives", _quad_rows_below(1), _quad_rows_below(2), "row − row mod 2")],
 )  # fmt: skip
 def test_the_formula_comes_only_after_two_different_wrong_answers(name, fn, other, formula):
     """r39 02-5, 03-3, 05-3: the first wrong try does not print what the task asks to find;

@@ -287,12 +287,18 @@ def draw_coverage_case(ax, case, got):
     inside = covered_samples(snapped, points)
     ring = np.vstack([snapped, snapped[:1]])
     artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
-    artists += ax.plot(*points[inside].T, "o", color="#2b7bba", label="covered")
-    artists += ax.plot(*points[~inside].T, "o", mfc="none", mec="#888888", label="not covered")
+    if got is None:  # before any answer the samples undecided (r64: the stub shows no answer)
+        inside = np.zeros(len(points), dtype=bool)
+    else:
+        artists += ax.plot(*points[inside].T, "o", color="#2b7bba", label="covered")
+    label = "not covered" if got is not None else "the samples"
+    artists += ax.plot(*points[~inside].T, "o", mfc="none", mec="#888888", label=label)
     box = np.array([[col, row], [col + 1, row], [col + 1, row + 1], [col, row + 1], [col, row]])
     artists += ax.plot(box[:, 0], box[:, 1], color="#ff9f1c", linewidth=2)
-    yours = "" if got is None else f", yours {num(got, case[2])}"
-    ax.set_xlabel(f"fraction {num(case[2])}{yours}")
+    if got is None:
+        ax.set_xlabel(f"pixel (row {row}, col {col}), {len(points)} samples")
+    else:
+        ax.set_xlabel(f"fraction {num(case[2])}, yours {num(got, case[2])}")
     ax.set_xlim(col - 1, col + 2)
     ax.set_ylim(row + 2, row - 1)
     ax.set_aspect("equal")
@@ -316,7 +322,7 @@ def coverage_exercise(scene) -> Exercise:
     return Exercise(
         "coverage_fraction", coverage_cases, as_fraction, same_fraction, explain_coverage,
         _coverage_rule, COVERAGE_MISTAKES, answers=(PackageAnswer(rasterize),),
-        draw=draw_coverage_case, scene=scene,
+        draw=draw_coverage_case, scene=scene, inputs_drawn=True,
     )  # fmt: skip
 
 
@@ -404,13 +410,16 @@ def _majority(colours, ids, background):
     return colours[ids == np.bincount(ids[c]).argmax()][0] if c.any() else None
 
 
-def _resolve_words(text: str):
+def _resolve_words(text: str, rule: bool = True):
+    """A slip's words, then (``rule``) how the mean is taken here; a placeholder's slip (the
+    background alone, sample 0 alone) gets no rule: it names what is wrong and leaves the
+    resolve to work out (r64 06 D2: the first try of a placeholder printed the answer)."""
+
     def words(args, expected, got):
         _, ids, background = args
         k = int((ids >= 0).sum())
-        return (
-            ": " + text.format(k=k, s="s" * (k != 1), bg=vec(background)) + "; " + _mean_rule(args)
-        )
+        said = ": " + text.format(k=k, s="s" * (k != 1), bg=vec(background))
+        return said + "; " + _mean_rule(args) if rule else said
 
     return words
 
@@ -434,7 +443,8 @@ RESOLVE_MISTAKES = [
             gives=lambda c, i, b: (np.nansum(c[i >= 0], axis=0) + b) / ((i >= 0).sum() + 1)),
     Mistake("sum", _resolve_words("that is the sum of the samples; the resolve is their mean"),
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
-    Mistake("first sample", _resolve_words("that is sample 0 alone"),
+    Mistake("first sample", _resolve_words("that is sample 0 alone: the resolve mixes all "
+            "the samples", rule=False),
             gives=lambda c, i, b: _with_background(c, i, b)[0]),
     # r40/r49: ids <= 0 taken as uncovered (a test of ids > 0), so triangle 0 turned background
     Mistake("triangle 0 as background", _resolve_words("you counted the samples of triangle 0 "
@@ -442,20 +452,84 @@ RESOLVE_MISTAKES = [
             "sample (covered is ids ≥ 0, not ids > 0)"),
             gives=lambda c, i, b: np.where((i > 0)[:, None], c, b).mean(axis=0)),
     Mistake("background only", _resolve_words("that is the background alone: the covered "
-            "samples' colours count too"), gives=lambda c, i, b: np.asarray(b, dtype=float)),
+            "samples' colours count too", rule=False),
+            gives=lambda c, i, b: np.asarray(b, dtype=float)),
 ]  # fmt: skip
+
+
+#: 6.2's rule, said for an answer no mistake explains, and the question asked instead on the
+#: first failing tries (r64 06 D2: the formula came with the first wrong answer).
+RESOLVE_RULE = (
+    "; every one of the S samples counts the same, an uncovered one as the background: "
+    "(Σ covered colours + (S − k)·background) / S"
+)
+RESOLVE_HINT = (
+    "; each sample stands for an equal share of the pixel: what does the pixel show in the "
+    "share where no triangle covered the sample? Work this case's numbers through by hand"
+)
 
 
 def resolve_exercise(scene) -> Exercise:
     return Exercise(
         "resolve", resolve_cases, as_colour, same_colour, explain_resolve,
-        lambda args, e, g: f"; {_mean_rule(args)}: (Σ covered colours + (S − k)·background) / S",
-        RESOLVE_MISTAKES, answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case,
-        scene=scene,
+        lambda args, e, g: RESOLVE_RULE, RESOLVE_MISTAKES,
+        answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case, scene=scene,
+        hints=((RESOLVE_RULE, RESOLVE_HINT),), inputs_drawn=True,
+        once=((RESOLVE_RULE, "; as said for the first failing case"),),
+        example=2,  # one green sample on white: the background's share shows
     )  # fmt: skip
 
 
-def draw_resolve_case(ax, case, got):
-    from .drawing import draw_values
+def _swatch_words(rgb: str) -> str:
+    """ "(r, g, b)" under a swatch: one number where the three are equal (a grey), else one
+    a line (r64: three labels of "(0.881, 0.881, 0.881)" ran into each other)."""
+    parts = rgb.strip("()").split(", ")
+    if len(set(parts)) == 1:
+        shade = {"0": "black", "1": "white"}.get(parts[0], "grey")
+        return f"{parts[0]}\n({shade})" if len(parts) == 3 else parts[0]
+    return "\n".join(parts)
 
-    return draw_values(ax, ["R", "G", "B"], case[2], got)
+
+def draw_resolve_case(ax, case, got, extra=None):
+    """The case's samples as one strip of colour swatches (an uncovered sample in the
+    background's colour, hatched), then the expected colour and yours as swatches with their
+    numbers (r49, r64: R/G/B bars showed no colour). Before any answer (``got`` None) the
+    samples only: the figure of an untouched stub shows no answer. ``extra`` is a further
+    (name, colour) swatch drawn after yours (6.3: the encoded numbers averaged)."""
+    from matplotlib.patches import Rectangle
+
+    from .blend_display import colour_texts
+
+    colours, ids, background = case[1]
+    s = len(ids)
+    covered = np.asarray(ids) >= 0
+    strip = np.where(covered[:, None], np.nan_to_num(np.asarray(colours, float)), background)
+    width = 3.0 / s  # the strip is 3 units wide whatever S
+    artists = [ax.imshow(np.clip(strip[None], 0, 1), extent=(0, 3, 1, 0), interpolation="nearest",
+                         aspect="auto")]  # fmt: skip
+    for k in np.flatnonzero(~covered):
+        artists.append(ax.add_patch(Rectangle((k * width, 0), width, 1, fill=False, hatch="//",
+                                              edgecolor="0.5", linewidth=0)))  # fmt: skip
+    for k in range(1, s):
+        artists += ax.plot([k * width] * 2, [0, 1], color="white", linewidth=0.8)
+    ticks = [1.5]
+    names = [f"{s} samples, {int(covered.sum())} covered\n(hatched: none, the\n"
+             f"background {vec(background)})"]  # fmt: skip
+    cells = []
+    if got is not None:
+        want, yours = colour_texts(case[2], got)
+        cells = [(f"expected\n{_swatch_words(want)}", case[2]),
+                 (f"yours\n{_swatch_words(yours)}", got)]  # fmt: skip
+        cells += [extra] if extra is not None else []
+    for k, (name, colour) in enumerate(cells):
+        left = 3.6 + 1.6 * k
+        rgb = np.clip(np.nan_to_num(np.asarray(colour, float).ravel()[:3], nan=0.5), 0, 1)
+        artists.append(ax.imshow(rgb[None, None], extent=(left, left + 1, 1, 0), aspect="auto"))
+        ticks.append(left + 0.5)
+        names.append(name)
+    ax.set_xlim(-0.1, 3.6 + 1.6 * max(len(cells), 2))
+    ax.set_ylim(1.05, -0.05)
+    ax.set_box_aspect(0.25)  # a row of swatches, the axes' full width for the labels
+    ax.set_xticks(ticks, names, fontsize="x-small")
+    ax.set_yticks([])
+    return artists

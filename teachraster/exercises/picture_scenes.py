@@ -32,7 +32,7 @@ from .answers import as_coverage
 from .cases import catalogue_coverage
 from .coverage import edge_name, expected_coverage, explain_pixel, point
 from .running import WrongAnswerType
-from .scalars import num
+from .scalars import num, vec
 from .scenes import Scene, call
 
 
@@ -131,7 +131,8 @@ def coverage_scene(fn) -> Scene:
     tris, cov = fan()
     samples = sample_pattern(FAN_SAMPLES)
     reference = cov.mean(axis=3)  # (T, H, W): each triangle's fraction
-    scene = Scene("a fan, fraction of 4 samples covered", reference.sum(axis=0), None, None)
+    scene = Scene("a fan, fraction of 4 samples covered", reference.sum(axis=0), None, None,
+                  value_name="fraction of the samples covered")  # fmt: skip
 
     def run():
         out = np.zeros_like(reference)
@@ -143,16 +144,57 @@ def coverage_scene(fn) -> Scene:
         scene.parts = out  # per triangle, for the explanations
         return out.sum(axis=0)
 
+    cause = []  # the slip that gives every differing answer of the picture, found once
+
     def explain(got, row, col):
         for t, xy in enumerate(tris):
             expected, yours = reference[t, row, col], scene.parts[t, row, col]
             if not np.isclose(yours, expected):
                 args = (np.array(xy), (row, col), np.array(samples))
-                return f"triangle {t + 1} of the fan: " + aa.explain_coverage(args, expected, yours)
+                if not cause:
+                    cause.append(_picture_slip(tris, samples, reference, scene.parts))
+                words = aa.explain_coverage(args, expected, yours)
+                return f"triangle {t + 1} of the fan: {words}{cause[0](args, expected, yours)}"
         return f"yours and the package's agree: {num(reference[:, row, col].sum())} covered"
 
-    scene.run, scene.explain_at = run, explain
+    scene.run, scene.explain_at, scene.inputs = run, explain, _fan_inputs
     return scene
+
+
+def _picture_slip(tris, samples, reference, parts, most: int = 60):
+    """``words(args, expected, got)``: the one slip of 6.1's table (no combination) that gives
+    every differing answer of the picture (at most ``most`` of them), as the check names it,
+    or a pointer to the check (r64 06-3: a pixel's line named no cause). A slip that matches
+    only this pixel is not named: few values are possible, and a coincidence would mislead."""
+    where = np.argwhere(~np.isclose(parts, reference))[:most]
+    singles = [m for family in aa.COVERAGE_MISTAKES for m in family.mistakes()
+               if not m.parts and m.gives is not None]  # fmt: skip
+    for m in singles:
+        if all(_gives(m, (tris[t], (i, j), samples), parts[t, i, j]) for t, i, j in where):
+            return lambda args, expected, got, m=m: ": " + m.say(args, expected, got)
+    return lambda args, expected, got: "; the check's failures above name the cause"
+
+
+def _gives(mistake, args, got) -> bool:
+    value = mistake.gives(*(np.array(a) if isinstance(a, np.ndarray) else a for a in args))
+    return value is not None and np.isclose(value, got)
+
+
+def _fan_inputs(ax) -> str:
+    """The fan's triangles over the pixel grid, with the sample points: coverage_fraction's
+    inputs, none decided."""
+    tris, _ = fan()
+    points = sample_pattern(FAN_SAMPLES)
+    grid = np.indices((FAN_SIZE, FAN_SIZE)).reshape(2, -1).T[:, ::-1]  # (col, row)
+    at = (grid[:, None, :] + points[None]).reshape(-1, 2)
+    ax.plot(*at.T, ".", color="#888888", ms=1.5)
+    for xy in tris:
+        ring = np.vstack([xy, xy[:1]])
+        ax.plot(ring[:, 0], ring[:, 1], color="#2b7bba", linewidth=1)
+    ax.set_xlim(0, FAN_SIZE)
+    ax.set_ylim(FAN_SIZE, 0)
+    ax.set_aspect("equal")
+    return f"a fan of {len(tris)} triangles over {FAN_SIZE} × {FAN_SIZE} pixels, {FAN_SAMPLES} samples each (grey)"
 
 
 @cache
@@ -184,7 +226,22 @@ def resolve_scene(fn) -> Scene:
             return "yours and the package's agree"
         return aa.explain_resolve(args, reference[row, col], got[row, col])
 
-    return Scene("a fan in colour, 4 samples resolved", reference, run, explain)
+    scene = Scene("a fan in colour, 4 samples resolved", reference, run, explain)
+    scene.inputs = _sample_inputs
+    return scene
+
+
+def _sample_inputs(ax) -> str:
+    """Every pixel's 4 samples before the resolve, as a 2 × 2 block of colours (white where
+    no triangle covered a sample: the background): resolve's inputs."""
+    ids, colours, background, _ = fan_colours()
+    shown = np.where((ids >= 0)[..., None], np.nan_to_num(colours), background)  # (H, W, S, 3)
+    h, w = ids.shape[:2]
+    blocks = (
+        shown[:, :, :4].reshape(h, w, 2, 2, 3).transpose(0, 2, 1, 3, 4).reshape(2 * h, 2 * w, 3)
+    )
+    ax.imshow(blocks, extent=(0, w, h, 0), interpolation="nearest")
+    return "each pixel's 4 samples before the resolve (white: the background)"
 
 
 # -- z-fighting (depth_to_unorm) --------------------------------------------------------------
@@ -289,9 +346,33 @@ def level_scene(fn) -> Scene:
         args = (ddx[row, col].copy(), ddy[row, col].copy(), size)
         if np.isclose(got[row, col], reference[row, col]):
             return f"yours and the package's agree: λ = {num(reference[row, col])}"
-        return lod.explain_level(args, float(reference[row, col]), float(got[row, col]))
+        words = lod.explain_level(args, float(reference[row, col]), float(got[row, col]))
+        return lod.hinted("mip_level", words, lod.HINTS)
 
-    return Scene("λ over a floor, 64 × 64 texture", reference, run, explain)
+    scene = Scene("λ over a floor, 64 × 64 texture", reference, run, explain,
+                  value_name="λ, the level of detail")  # fmt: skip
+    scene.inputs = _uv_inputs
+    return scene
+
+
+def _uv_inputs(ax) -> str:
+    """u over the floor (mod 1: where the texture repeats): the coordinate whose steps from
+    pixel to pixel are mip_level's ddx and ddy."""
+    uv, _, _ = floor()
+    h, w = uv.shape[:2]
+    ax.imshow(np.mod(uv[..., 0], 1.0), cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0),
+              interpolation="nearest")  # fmt: skip
+    return "the floor's u (mod 1); ddx and ddy are its steps from pixel to pixel"
+
+
+def _texture_inputs(texels: int):
+    def draw(ax) -> str:
+        texture = floor_texture(texels)[0]
+        ax.imshow(texture, cmap="gray", vmin=0, vmax=1, extent=(0, texels, texels, 0),
+                  interpolation="nearest")  # fmt: skip
+        return f"the {texels} × {texels} texture the floor repeats"
+
+    return draw
 
 
 def bilinear_scene(fn) -> Scene:
@@ -304,7 +385,9 @@ def bilinear_scene(fn) -> Scene:
             uv, lambda i, j: call(fn, tf.as_texel_value, texture, uv[i, j], "repeat"), reference
         )
 
-    return Scene("a floor, 8 × 8 texture, bilinear", reference, run, _texel_explainer(uv, texture, reference))  # fmt: skip
+    scene = Scene("a floor, 8 × 8 texture, bilinear", reference, run, _texel_explainer(uv, texture, reference))  # fmt: skip
+    scene.inputs = _texture_inputs(8)
+    return scene
 
 
 def _texel_explainer(uv, texture, reference, lam=None):
@@ -313,16 +396,20 @@ def _texel_explainer(uv, texture, reference, lam=None):
             return "no floor here"
         if tf.same_value(got[row, col], reference[row, col], None):
             return "yours and the package's agree"
+        # the case's arguments first: in the check they stand in the case's label
+        where = f"uv={vec(uv[row, col])}, wrap 'repeat'"
         if lam is None:
             args = (texture.copy(), uv[row, col].copy(), "repeat")
-            return tf.explain_bilinear(args, reference[row, col], got[row, col])
+            words = tf.explain_bilinear(args, reference[row, col], got[row, col])
+            return f"{where}, {words}"
         args = (
             tf.Pyramid(lv.copy() for lv in texture),
             uv[row, col].copy(),
             float(lam[row, col]),
             "repeat",
         )
-        return tf.explain_trilinear(args, reference[row, col], got[row, col])
+        words = tf.explain_trilinear(args, reference[row, col], got[row, col])
+        return f"{where}, λ={num(float(lam[row, col]))}, {words}"
 
     return explain
 
@@ -336,7 +423,9 @@ def trilinear_scene(fn) -> Scene:
     def run():
         return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, pyramid, uv[i, j], float(lam[i, j]), "repeat"), reference)  # fmt: skip
 
-    return Scene("a floor, 64 × 64 texture, trilinear at the package's λ", reference, run, _texel_explainer(uv, pyramid, reference, lam))  # fmt: skip
+    scene = Scene("a floor, 64 × 64 texture, trilinear at the package's λ", reference, run, _texel_explainer(uv, pyramid, reference, lam))  # fmt: skip
+    scene.inputs = _texture_inputs(64)
+    return scene
 
 
 # -- the tile walk (classify_block) -----------------------------------------------------------

@@ -102,16 +102,19 @@ def _at(xy, w, f, x, y, clamp=False, affine=False) -> float:
 def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
     r0, c0 = row - row % 2, col - col % 2
 
-    def pair(r, c, **kw):
-        a = _at(xy, w, f, c + 0.5, r + 0.5, **kw)
-        return np.array([_at(xy, w, f, c + 1.5, r + 0.5, **kw) - a,
-                         _at(xy, w, f, c + 0.5, r + 1.5, **kw) - a])  # fmt: skip
+    def pair(r, c, centre=0.5, **kw):
+        a = _at(xy, w, f, c + centre, r + centre, **kw)
+        return np.array([_at(xy, w, f, c + 1 + centre, r + centre, **kw) - a,
+                         _at(xy, w, f, c + centre, r + 1 + centre, **kw) - a])  # fmt: skip
 
     right = pair(r0, c0)
     fine_x = _at(xy, w, f, c0 + 1.5, row + 0.5) - _at(xy, w, f, c0 + 0.5, row + 0.5)
     fine_y = _at(xy, w, f, col + 0.5, r0 + 1.5) - _at(xy, w, f, col + 0.5, r0 + 0.5)
     return {
         "unaligned": pair(row, col),
+        # r64 07 D3: the quad's number taken for its upper-left pixel; lanes at pixel corners
+        "quad number": pair(row // 2, col // 2),
+        "corners": pair(r0, c0, centre=0.0),
         "clamped": pair(r0, c0, clamp=True),
         "affine": pair(r0, c0, affine=True),
         "fine": np.array([fine_x, fine_y]),
@@ -119,6 +122,8 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         "swapped": right[::-1],
         "negated": -right,
         "row col swapped": pair(col - col % 2, row - row % 2),
+        # the lanes' points as (y, x): each difference then runs along the other axis too
+        "points (y, x)": pair(c0, r0)[::-1],
         "centred": np.array(
             [
                 _at(xy, w, f, col + 1.5, row + 0.5) - _at(xy, w, f, col - 0.5, row + 0.5),
@@ -133,6 +138,11 @@ MISTAKES = {
     "unaligned": "you took the quad whose upper-left pixel is this pixel: quads are aligned "
     "to even rows and columns, so pixel (row, col) belongs to the quad starting at "
     "(row − row mod 2, col − col mod 2)",
+    "quad number": "you took pixel (row // 2, col // 2) for the quad's upper-left pixel: that "
+    "is the quad's number; its upper-left pixel is at twice that, (row − row mod 2, "
+    "col − col mod 2)",
+    "corners": "you evaluated f at the pixels' corners (col, row); a lane's value is the one at "
+    "its pixel's centre (col + ½, row + ½), where the pixel is shaded",
     "clamped": "you clamped the interpolation at a helper pixel (outside the triangle): a "
     "helper extrapolates the triangle's values, weights outside [0, 1] and all",
     "affine": "you interpolated affinely at the lanes: the values are perspective-correct "
@@ -146,60 +156,89 @@ MISTAKES = {
     "left one, ddy the lower minus the upper",
     "row col swapped": "you took the pixel as (col, row): pixel (row, col) lies at x = col + ½, "
     "y = row + ½",
+    "points (y, x)": "you passed each lane's centre as (row + ½, col + ½); a point is "
+    "(x, y) = (col + ½, row + ½), x along the row",
     "centred": "you took a centred difference around the pixel, (f(x + 1) − f(x − 1))/2: the "
     "GPU differences the lanes of the pixel's 2×2 quad, right minus left, lower minus upper",
 }
 
 
 def explain_quad(args, expected, got) -> str:
-    """The pixel's quad, the values at its lanes, the derivatives and yours."""
-    xy, w, f, row, col = args
-    r0, c0 = row - row % 2, col - col % 2
-    q = lanes(xy, w, f, r0, c0)
-    return (f"pixel ({row}, {col}) is in the quad at rows {r0}–{r0 + 1}, columns {c0}–{c0 + 1}, "
-            f"whose lanes hold f = {vec(q[:3])} (upper left, upper right, lower left), so "
-            f"(ddx, ddy) = {vec(expected, got)}; yours is {vec(got, expected)}")  # fmt: skip
+    """The two pairs: which quad, which lanes and their values are what 7.4 asks to work out
+    (r64 07 D3: every failure printed them and the formula); the rule says them once two
+    different answers have failed."""
+    return f"(ddx, ddy) = {vec(expected, got)}; yours is {vec(got, expected)}"
+
+
+#: 7.4's rule for an answer no mistake explains, and the question asked before it.
+RULE = (
+    ": pixel (row, col) belongs to the quad whose upper-left pixel is (row − row mod 2, "
+    "col − col mod 2); ddx = f(upper right) − f(upper left), ddy = f(lower left) − "
+    "f(upper left), each f at its lane's pixel centre, perspective-correct (and extrapolated "
+    "at helper lanes)"
+)
+HINT = (
+    ": which quad holds this pixel, which two of its lanes lie one step apart along x (and "
+    "along y), and what must a lane outside the triangle hold for their difference to be the "
+    "derivative inside? Work this case through by hand"
+)
 
 
 def _rule(args, expected, got) -> str:
-    return (
-        ": ddx = f(upper right) − f(upper left), ddy = f(lower left) − f(upper left), with f "
-        "perspective-correct (and extrapolated at helper lanes)"
-    )
+    return RULE
 
 
 def draw_quad(ax, case, got):
-    """Close up on the pixel's quad: its four pixels (helpers hatched) with the value of f at
-    each centre, the triangle's edges, the expected (ddx, ddy) and yours."""
+    """Close up on the pixel: the triangle's edges, the pixels around (covered grey, the
+    others white), the pixel; the expected (ddx, ddy) and yours. Before any answer (``got``
+    None) no pair is written. The pixel's quad with the value of f at each lane (helpers
+    hatched) is the method 7.4 asks for: drawn once two different answers have failed, as the
+    words say it (r64 07 D3)."""
     from matplotlib.patches import Patch, Rectangle
+
+    from . import tries
 
     _, (xy, w, f, row, col), expected = case
     r0, c0 = row - row % 2, col - col % 2
-    q = lanes(xy, w, f, r0, c0)
+    # the method once earned: the full words given, or this answer right (a passing check)
+    method = got is not None and (
+        tries.hints_spent("quad_derivatives") or same_pair(np.asarray(got), expected, case[1])
+    )
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
-    for k, (dr, dc) in enumerate(((0, 0), (0, 1), (1, 0), (1, 1))):
-        x, y = c0 + dc, r0 + dr
-        inside = _inside(xy, x + 0.5, y + 0.5)
-        artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside
-                                              else "white", edgecolor="#2b7bba", lw=1.5,
-                                              hatch=None if inside else "//")))  # fmt: skip
-        # staggered up and down, boxed: neighbours' labels ran together (r49: -0.0360.0049)
-        artists.append(ax.text(x + 0.5, y + (0.3 if dc == 0 else 0.7), f"{q[k]:.2g}",
-                               ha="center", va="center", fontsize="x-small", color="black",
-                               bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
+    for y in range(r0 - 2, r0 + 4):
+        for x in range(c0 - 2, c0 + 4):
+            inside = _inside(xy, x + 0.5, y + 0.5)
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#e4e4e4" if inside
+                                                  else "white", edgecolor="#bbbbbb", lw=0.5)))  # fmt: skip
+    if method:
+        q = lanes(xy, w, f, r0, c0)
+        for k, (dr, dc) in enumerate(((0, 0), (0, 1), (1, 0), (1, 1))):
+            x, y = c0 + dc, r0 + dr
+            inside = _inside(xy, x + 0.5, y + 0.5)
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside
+                                                  else "white", edgecolor="#2b7bba", lw=1.5,
+                                                  hatch=None if inside else "//")))  # fmt: skip
+            # staggered up and down, boxed: neighbours' labels ran together (r49)
+            artists.append(ax.text(x + 0.5, y + (0.3 if dc == 0 else 0.7), f"{q[k]:.2g}",
+                                   ha="center", va="center", fontsize="x-small", color="black",
+                                   bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
     ax.set_xlim(c0 - 1.5, c0 + 3.5)
     ax.set_ylim(r0 + 3.5, r0 - 1.5)
     ax.set_aspect("equal")
-    yours = "" if got is None else f"\nyours: {vec(got, expected)}"
-    artists.append(ax.text(0.02, 0.02, f"(ddx, ddy) = {vec(expected, got)}{yours}",
-                           transform=ax.transAxes, fontsize="x-small", va="bottom",
-                           bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
-    handles = [Patch(facecolor="#c8c8c8", edgecolor="#2b7bba", label="covered"),
-               Patch(facecolor="white", edgecolor="#2b7bba", hatch="//", label="helper"),
+    if got is not None:
+        artists.append(ax.text(0.02, 0.02, f"(ddx, ddy) = {vec(expected, got)}\nyours: "
+                               f"{vec(got, expected)}", transform=ax.transAxes,
+                               fontsize="x-small", va="bottom",
+                               bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
+    handles = [Patch(facecolor="#e4e4e4", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
+    if method:
+        handles[1:1] = [Patch(facecolor="#c8c8c8", edgecolor="#2b7bba", label="its quad"),
+                        Patch(facecolor="white", edgecolor="#2b7bba", hatch="//",
+                              label="helper")]  # fmt: skip
     artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
                              bbox_to_anchor=(1.02, 1)))  # fmt: skip
     return artists
@@ -214,5 +253,6 @@ def _inside(xy, x, y) -> bool:
 QUAD_DERIVATIVES = Exercise(
     "quad_derivatives", quad_cases, as_pair, same_pair, explain_quad, _rule,
     variant_mistakes(_variants, MISTAKES), answers=(PackageAnswer(lane_values),),
-    draw=draw_quad,
+    draw=draw_quad, hints=((RULE, HINT),), inputs_drawn=True,
+    once=((RULE, ": as said for the first failing case"),),
 )  # fmt: skip

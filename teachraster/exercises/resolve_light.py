@@ -17,7 +17,9 @@ import numpy as np
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import (
+    _swatch_words,
     as_colour,
+    draw_resolve_case,
     expected_resolve,
     resolve_case,
     resolve_cases,
@@ -62,12 +64,23 @@ def _covered(ids) -> np.ndarray:
     return np.asarray(ids) >= 0
 
 
+#: 6.3's rule, said for an answer no mistake explains once two different answers have
+#: failed, and the question asked instead before (r64 06 D1: the first try of a placeholder
+#: printed the whole formula).
+RULE = (
+    "; decode the covered samples and the background to linear light, average over all S "
+    "samples there, and encode the mean: linear_to_srgb((Σ srgb_to_linear(covered) + "
+    "(S − k)·srgb_to_linear(background)) / S)"
+)
+HINT = (
+    "; the numbers given and the number returned are sRGB-encoded, and only light adds up: "
+    "at which step must each value be light, and at which an encoded number? Work this "
+    "case through by hand with srgb_to_linear and linear_to_srgb"
+)
+
+
 def _rule(args, expected, got) -> str:
-    _, ids, _ = args
-    s, k = len(ids), int(_covered(ids).sum())
-    return (f"; decode the {k} covered sample{'s' * (k != 1)} and the background to linear "
-            f"light, average over all {s} samples there, and encode the mean: "
-            "linear_to_srgb((Σ srgb_to_linear(covered) + (S − k)·srgb_to_linear(background)) / S)")  # fmt: skip
+    return RULE
 
 
 def _mix(colours, ids, background, decode, encode, covered_only=False):
@@ -112,19 +125,17 @@ def _encoded_average_words(args, expected, got) -> str:
 
 
 def draw_srgb_case(ax, case, got):
-    """6.2's bars (expected, yours) with the encoded numbers' plain average marked beside each
-    channel: the gap between the mark and the expected bar is the linear-light point (r49: three
-    equal bars showed nothing of it)."""
-    from .drawing import draw_values
-
-    _, (colours, ids, background), expected = case
-    artists = draw_values(ax, ["R", "G", "B"], expected, got)
+    """The samples, the expected colour and yours as swatches (6.2's figure), and beside them
+    the encoded numbers averaged as 6.2 does: the two swatches' difference in brightness is
+    the linear-light point (r49: equal bars showed nothing of it; r64: bars showed no colour).
+    Before any answer the samples only."""
+    _, (colours, ids, background), _ = case
     codes = _mix(colours, ids, background, _same, _same)
-    artists += ax.plot(np.arange(3), codes, "_", color="#d7301f", ms=28, mew=3,
-                       label="codes averaged (6.2)")  # fmt: skip
-    artists.append(ax.legend(fontsize="x-small"))
-    artists.append(ax.set_xlabel("expected: averaged in linear light, then encoded",
-                                 fontsize="x-small"))  # fmt: skip
+    extra = (f"codes averaged\n(6.2's resolve)\n{_swatch_words(vec(codes))}", codes)
+    artists = draw_resolve_case(ax, case, got, extra=extra if got is not None else None)
+    if got is not None:
+        artists.append(ax.set_xlabel("expected: averaged in linear light, then encoded",
+                                     fontsize="x-small"))  # fmt: skip
     return artists
 
 
@@ -160,5 +171,6 @@ def explain(args, expected, got) -> str:
 RESOLVE_SRGB = Exercise(
     "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
     answers=(PackageAnswer(Frame.resolve),), draw=draw_srgb_case,
-    reference=("teachraster.exercises.antialiasing",),
+    reference=("teachraster.exercises.antialiasing",), hints=((RULE, HINT),), inputs_drawn=True,
+    once=((RULE, "; as said for the first failing case"),),
 )  # fmt: skip

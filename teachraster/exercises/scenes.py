@@ -58,6 +58,13 @@ class Scene:
     #: Why the student's function is not run for the picture (the check stopped on a time
     #: limit: a loop is not run twice), or None.
     blocked: str | None = None
+    #: ``inputs(ax) -> title``: draws what the student's function is given over the scene
+    #: (the triangles, the samples, the texture), no answer; the untouched stub's comparison
+    #: draws it instead of the package's picture (r64 06-4, 07: the stub showed the target
+    #: picture before any try). None: the package's picture, as before.
+    inputs: Callable | None = field(default=None, repr=False)
+    #: What a continuous picture's values are (the colour bar's label: r64 07-6, "λ").
+    value_name: str = ""
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
@@ -185,8 +192,18 @@ def _key(axes, scene: Scene, shown):
                                ncols=2, fontsize="x-small", frameon=False)]  # fmt: skip
     if scene.reference.ndim == 3 or shown is None:
         return []
-    bar = axes[1].figure.colorbar(shown, ax=list(axes[:2]), shrink=0.8, pad=0.02)
+    # under a wide, low picture, not beside it: a bar as tall as the panels ran into the
+    # package's title above the floor (r64 07-6); beside a square one, which it leaves large
+    h, w = scene.reference.shape[:2]
+    wide = w > 1.5 * h
+    # (under all three panels, which then stay in line: under two, the third rose over the
+    # package's title)
+    bar = axes[1].figure.colorbar(shown, ax=list(axes) if wide else list(axes[:2]), pad=0.02,
+                                  orientation="horizontal" if wide else "vertical",
+                                  shrink=0.5 if wide else 0.8, aspect=40 if wide else 20)  # fmt: skip
     bar.ax.tick_params(labelsize="x-small")
+    if scene.value_name:
+        bar.set_label(scene.value_name, fontsize="x-small")
     return [bar]
 
 
@@ -197,8 +214,11 @@ def _difference_panel(ax, scene: Scene):
     artists = [ax.imshow(base, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0), interpolation="nearest")]  # fmt: skip
     d = scene.difference()
     if not scene.categories and np.isfinite(d).any():
-        artists.append(ax.imshow(d, cmap="Reds", extent=(0, w, h, 0), interpolation="nearest"))
-        biggest = f"\nlargest {np.nanmax(d):.3g}"
+        # from 0: where every difference is the same size (a quarter of a pixel's samples)
+        # the default scale drew them as its lowest, near-white shade (r64 06-3)
+        artists.append(ax.imshow(d, cmap="Reds", vmin=0, vmax=float(np.nanmax(d)),
+                                 extent=(0, w, h, 0), interpolation="nearest"))  # fmt: skip
+        biggest = f"\nlargest {np.nanmax(d):.3g} (darkest red)"
     else:
         mask = np.zeros((h, w, 4))
         mask[differs] = (0.84, 0.19, 0.12, 1.0)
@@ -239,7 +259,7 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
         artists += _difference_panel(axes[2], scene)
     artists += _key(axes, scene, theirs)
     axes[0].set_title("yours", fontsize="small")
-    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 30), fontsize="small")
+    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 26), fontsize="small")
     for ax in axes:
         ax.set_xticks([])
         ax.set_yticks([])
@@ -271,6 +291,11 @@ def _stub_panels(scene: Scene, axes):
         ax.set_xticks([])
         ax.set_yticks([])
         ax.set_title(title, fontsize="small")
+        if title == "the package's" and scene.inputs is not None:
+            # its inputs instead, where the scene gives them (06, 07: r64 06-4, 07)
+            shown = scene.inputs(ax)
+            ax.set_title(textwrap.fill(f"the scene's input: {shown}", 34), fontsize="small")
+            continue
         artists.append(ax.text(0.5, 0.5, textwrap.fill(note, 20), ha="center", va="center",
                                transform=ax.transAxes, fontsize="small"))  # fmt: skip
     return artists

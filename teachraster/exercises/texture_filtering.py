@@ -16,6 +16,8 @@ floor, swapped weights...), and with the package's own filters on other levels.
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ..pipeline.mip_pyramid import mipmap
@@ -169,12 +171,12 @@ bilinear_cases = fixed_and_drawn(_bilinear_cases, SEED + 80)  # r49: some drawn 
 
 
 def explain_bilinear(args, expected, got) -> str:
+    """The case and the two values: no x = u·W − ½, which 7.2 asks to find (r64 07 D2: every
+    failure's header printed it); the slips that need it say it."""
     tex, uv, wrap = args
     h, w = tex.shape[:2]
-    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
     return (
-        f"uv={vec(uv)} on an H×W = {h}×{w} texture, wrap {wrap!r}: x = u·W − ½ = {num(x)}, "
-        f"y = v·H − ½ = {num(y)}, the filtered value is {_value(expected, got)}; yours is "
+        f"on an H×W = {h}×{w} texture the filtered value is {_value(expected, got)}; yours is "
         f"{_value(got, expected)}"
     )
 
@@ -272,26 +274,40 @@ def _one_texel_words(args, expected, got) -> str:
     rows = {int(np.floor(fy)), int(np.ceil(fy)) - 1}  # a tie on a texel border: either one
     cols = {int(np.floor(fx)), int(np.ceil(fx)) - 1}
     if any(all_close(got, tex[index(r, h), index(c, w)]) for r in rows for c in cols):
-        return ": that is one texel alone, nearest filtering; bilinear blends the four texels around (x, y)"
-    return (": that is one of the four texels around (x, y) alone, not the one (u, v) lies in; "
-            "bilinear blends all four, each weighted by how close (x, y) lies to it")  # fmt: skip
+        return ": that is one texel alone, nearest filtering; bilinear blends the four texels around (u, v)"
+    return (": that is one of the four texels around (u, v) alone, not the one (u, v) lies in; "
+            "bilinear blends all four, each weighted by how close (u, v) lies to it")  # fmt: skip
 
 
 BILINEAR_MISTAKES = [
     CHANNELS,
+    # r64 07 D2: `return texture[0, 0]` was given the method
+    Mistake("texel [0, 0]", ": that is texel [0, 0] (the upper-left one), whatever uv: a "
+            "placeholder left in?", gives=lambda tex, uv, wrap: np.asarray(tex, float)[0, 0]),
     Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
-            "around (x, y)", gives=_nearest),
+            "around (u, v)", gives=_nearest),
     # a symptom: a texel alone is also what swapped weights give at a texel centre (r40 07-1)
     Mistake("one texel", _one_texel_words, fits=_one_texel, symptom=True),
     BILINEAR_KNOBS,
 ]  # fmt: skip
 
 
+#: 7.2's rule for an answer no mistake explains, said once two different answers have failed,
+#: and the question asked before (r64 07 D2: the method came with the first wrong answer).
+BILINEAR_RULE = (
+    ": in texel units x = u·W − ½ and y = v·H − ½ put the texel centres on whole numbers; "
+    "blend the four texels around (⌊x⌋, ⌊y⌋) (indices wrapped) with weights from x − ⌊x⌋ and "
+    "y − ⌊y⌋"
+)
+BILINEAR_HINT = (
+    ": at a texel's centre the value must be that texel's, and between centres it must move "
+    "smoothly from one to the next: which texel centres enclose (u, v) here, and how far is "
+    "(u, v) from each, in texels? Work this case through by hand"
+)
+
+
 def _bilinear_rule(args, expected, got) -> str:
-    return (
-        ": blend the four texels around (⌊x⌋, ⌊y⌋) (indices wrapped) with weights from "
-        "x − ⌊x⌋ and y − ⌊y⌋"
-    )
+    return BILINEAR_RULE
 
 
 def _answers(filter_name):
@@ -302,15 +318,21 @@ def bilinear_exercise(scene) -> Exercise:
     return Exercise(
         "bilinear", bilinear_cases, as_texel_value, same_value, explain_bilinear,
         _bilinear_rule, BILINEAR_MISTAKES, answers=_answers("bilinear"),
-        draw=draw_texture_case, scene=scene,
+        draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT),),
+        once=((BILINEAR_RULE, ": as said for the first failing case"),),
+        inputs_drawn=True,
     )  # fmt: skip
 
 
 def draw_texture_case(ax, case, got):
-    """The texture (level 0) in texel units, its texel centres, the point (x, y) = (u·W − ½,
-    v·H − ½) + ½ and the four texels bilinear blends there, each with its weight; the expected
-    value and yours below (r40 07-3: two bars of one number showed nothing of the filter)."""
+    """The texture (level 0) in texel units, its texel centres and the point (u·W, v·H); the
+    expected value and yours below (r40 07-3: two bars of one number showed nothing of the
+    filter). Before any answer (``got`` None) the inputs only. The four texels bilinear blends,
+    each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2 asks for: drawn
+    once two different answers have failed, as the words say it (r64 07 D2)."""
     from matplotlib.patches import Rectangle
+
+    from . import tries
 
     tex, uv = case[1][0], case[1][1]
     levels = isinstance(tex, list)  # trilinear: level 0 drawn, the point, no texel weights
@@ -327,7 +349,13 @@ def draw_texture_case(ax, case, got):
     px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
     x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
     fx, fy = px - 0.5 - x0, py - 0.5 - y0
-    for dx, dy in () if levels else ((0, 0), (1, 0), (0, 1), (1, 1)):
+    # the method once earned: the full words given, or this answer right (a passing check)
+    method = (
+        not levels
+        and got is not None
+        and (tries.hints_spent("bilinear") or same_value(got, case[2], None))
+    )
+    for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1)) if method else ():
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
         artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
                                               edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
@@ -339,14 +367,16 @@ def draw_texture_case(ax, case, got):
     ax.set_xlim(min(0, x0) - 0.2, max(w, x0 + 2) + 0.2)
     ax.set_ylim(max(h, y0 + 2) + 0.2, min(0, y0) - 0.2)
     ax.set_aspect("equal")
-    expected = np.ravel(case[2])
-    yours = (
-        "" if got is None or np.size(got) != expected.size else f", yours {_value(got, expected)}"
-    )
     where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
-             f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres")  # fmt: skip
-    artists.append(ax.set_xlabel(f"uv = {vec(uv)} (×), {where};\nthe filtered value is "
-                                 f"{_value(expected, got)}{yours}", fontsize="x-small"))  # fmt: skip
+             f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
+    if method:
+        where = f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres"
+    text = f"uv = {vec(uv)} (×), {where}; orange dots: texel centres"
+    if got is not None:
+        expected = np.ravel(case[2])
+        yours = "" if np.size(got) != expected.size else f", yours {_value(got, expected)}"
+        text = f"uv = {vec(uv)} (×), {where};\nthe filtered value is {_value(expected, got)}{yours}"
+    artists.append(ax.set_xlabel(text, fontsize="x-small"))
     return artists
 
 
@@ -356,19 +386,19 @@ def _trilinear_cases(rng, word):
     p8, p84, p3 = (Pyramid(mipmap(_texture(rng, *s))) for s in ((8, 8), (8, 4), (8, 8, 3)))
     p32 = Pyramid(level.astype(np.float32) for level in mipmap(_texture(rng, 8, 8, 3)))
     hard = [
-        ("λ = 0: level 0 only", p8, (0.3, 0.6), 0.0, "repeat"),
-        ("λ = 1: level 1 only", p8, (0.3, 0.6), 1.0, "repeat"),
+        ("λ = 0", p8, (0.3, 0.6), 0.0, "repeat"),
+        ("λ = 1", p8, (0.3, 0.6), 1.0, "repeat"),
         ("λ between levels 1 and 2", p8, (0.3, 0.6), 1.5, "repeat"),
         ("λ = 0.25", p8, (0.71, 0.12), 0.25, "repeat"),
         ("λ = 2.75", p8, (0.71, 0.12), 2.75, "clamp"),
-        ("λ < 0 (magnified): clamped to 0", p8, (0.4, 0.45), -2.0, "repeat"),
-        ("λ = −0.5: clamped to 0", p8, (0.3, 0.6), -0.5, "repeat"),
-        ("λ = −0.25: clamped to 0", p8, (0.71, 0.12), -0.25, "clamp"),
-        ("λ = −1.75: clamped to 0", p8, (0.55, 0.85), -1.75, "repeat"),
-        ("λ = −3.4: clamped to 0", p84, (0.2, 0.4), -3.4, "clamp"),
+        ("λ < 0 (magnified)", p8, (0.4, 0.45), -2.0, "repeat"),
+        ("λ = −0.5", p8, (0.3, 0.6), -0.5, "repeat"),
+        ("λ = −0.25", p8, (0.71, 0.12), -0.25, "clamp"),
+        ("λ = −1.75", p8, (0.55, 0.85), -1.75, "repeat"),
+        ("λ = −3.4", p84, (0.2, 0.4), -3.4, "clamp"),
         ("λ = q, the 1×1 level", p8, (0.4, 0.45), 3.0, "repeat"),
-        ("λ above the pyramid: clamped to q", p8, (0.4, 0.45), 7.0, "repeat"),
-        ("λ = q + 0.5: clamped to q", p8, (0.6, 0.3), 3.5, "repeat"),
+        ("λ above the pyramid", p8, (0.4, 0.45), 7.0, "repeat"),
+        ("λ = q + 0.5", p8, (0.6, 0.3), 3.5, "repeat"),
         ("a float32 pyramid (from imread), λ = 1.3", p32, (0.35, 0.65), 1.3, "repeat"),
         ("between the last two levels, at the border", p8, (0.02, 0.98), 2.5, "repeat"),
         ("between the last two levels, clamped at the border", p8, (0.02, 0.98), 2.5, "clamp"),
@@ -384,9 +414,15 @@ def _trilinear_cases(rng, word):
         lod = float(np.round(rng.uniform(-1, len(pyr)), 3))
         out.append((f"{word} {n + 1}: {h}×{w}", (pyr, uv, lod, ("repeat", "clamp")[n % 2])))
     return [
-        (f"{label}, uv={vec(a[1])}, λ={num(a[2])}, wrap={a[3]!r}", a, expected_trilinear(*a))
+        (f"{label}, uv={vec(a[1])}{_lod_words(label, a[2])}, wrap={a[3]!r}", a,
+         expected_trilinear(*a))
         for label, a in out
-    ]
+    ]  # fmt: skip
+
+
+def _lod_words(label: str, lod: float) -> str:
+    """ ", λ=…" unless the label is that already ("λ = 1": r64 07 D5, "λ = 1, …, λ=1")."""
+    return "" if re.fullmatch(r"λ = [−\d.]+", label) else f", λ={num(lod)}"
 
 
 trilinear_cases = fixed_and_drawn(_trilinear_cases, SEED + 90)  # r49: some drawn per check
@@ -400,14 +436,14 @@ def _split(pyramid, lod):
 
 
 def explain_trilinear(args, expected, got) -> str:
+    """The pyramid and the two values: how λ is clamped, which levels and their weight are
+    what 7.3 asks to work out (r64 07 D1: every failure's header printed them); the slips and
+    the rule (after two different wrong answers) say them."""
     pyramid, uv, lod, wrap = args
-    q, lam, d0, d1, t = _split(pyramid, lod)
-    a, b = (expected_bilinear(pyramid[d], uv, wrap) for d in (d0, d1))
     sizes = [f"{lv.shape[0]}×{lv.shape[1]}" for lv in pyramid]
     return (
-        f"uv={vec(uv)}, λ = {num(lod)} on a pyramid of {', '.join(sizes)} (q = {q}): λ "
-        f"clamped to [0, {q}] is {num(lam)}, levels {d0} and {d1} blended by {num(t)}: "
-        f"{_value(a)} and {_value(b)} give {_value(expected, got)}; yours is {_value(got, expected)}"
+        f"a pyramid of {', '.join(sizes)} (q = {len(pyramid) - 1}): the filtered value is "
+        f"{_value(expected, got)}; yours is {_value(got, expected)}"
     )
 
 
@@ -434,15 +470,19 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
         elif not -len(pyramid) <= lower <= q:
             return None
     upper = min(lower + 1, q) if lower >= 0 else lower + 1
+
+    def level(d):
+        return _filter(pyramid[d], _level_uv(uv, d, texels), wrap, texels)
+
     if levels == "nearest":
-        return _filter(pyramid[int(np.clip(round(lod), 0, q))], uv, wrap, texels)
+        return level(int(np.clip(round(lod), 0, q)))
     if levels == "lower":
-        return _filter(pyramid[lower], uv, wrap, texels)
+        return level(lower)
     if levels == "finest":
-        return _filter(pyramid[0], uv, wrap, texels)
+        return level(0)
     if levels == "upper":
-        return _filter(pyramid[upper], uv, wrap, texels)
-    a, b = _filter(pyramid[lower], uv, wrap, texels), _filter(pyramid[upper], uv, wrap, texels)
+        return level(upper)
+    a, b = level(lower), level(upper)
     if weights == "swapped":
         t = 1 - t
     return (1 - t) * a + t * b
@@ -455,6 +495,13 @@ LEVEL_FILTERS = {
     "swapped": {"swap": True},
     "transposed": {"transpose": True},
 }
+
+
+def _level_uv(uv, d, texels):
+    """(u, v) as a mistaken trilinear passes it to level ``d`` (scaled by 2^d or 2^−d: r64 07
+    D4, uv taken for texel units that shrink with the level); unchanged otherwise."""
+    scale = {"uv times 2^d": 2.0**d, "uv over 2^d": 2.0**-d}.get(texels, 1.0)
+    return np.asarray(uv, dtype=float) * scale
 
 
 def _filter(level, uv, wrap, texels):
@@ -508,6 +555,14 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
     "texels": [
         Slip("nearest texels", "you took the nearest texel of each level; trilinear filters "
              "each level bilinearly, with its own size", "nearest"),
+        Slip("uv scaled per level", "you scaled uv by 2^level for each level; (u, v) is "
+             "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
+             "the level's texels from that level's own W and H: pass uv unchanged",
+             "uv times 2^d"),
+        Slip("uv scaled per level", "you divided uv by 2^level for each level; (u, v) is "
+             "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
+             "the level's texels from that level's own W and H: pass uv unchanged",
+             "uv over 2^d"),
         Slip("bilinear: texel corners", "the levels are sampled at texel corners (x = u·W, "
              "not u·W − ½)" + _BILINEAR_FIRST, "corners"),
         Slip("bilinear: always clamp", "the levels are clamped at the border whatever the wrap "
@@ -520,20 +575,28 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
 })  # fmt: skip
 
 
+#: 7.3's rule for an answer no mistake explains, said once two different answers have failed,
+#: and the question asked before (r49, r64 07 D1).
+TRILINEAR_RULE = (
+    ": clamp λ to [0, q]; filter levels ⌊λ⌋ and ⌊λ⌋ + 1 (at most q) bilinearly, each with its "
+    "own size (texel centres at (i + ½)/W_level, uv unchanged), then blend them "
+    "(1 − t)·level ⌊λ⌋ + t·level ⌊λ⌋+1 with t = λ − ⌊λ⌋"
+)
+TRILINEAR_HINT = (
+    ": which levels does this λ lie between, and which does the pyramid have? Weigh two levels "
+    "so that the value changes continuously with λ and is a level's own value at a whole λ"
+)
+
+
 def _trilinear_rule(args, expected, got) -> str:
-    return (
-        ": filter each level bilinearly with its own size (texel centres at (i + ½)/W_level), "
-        "then (1 − t)·level ⌊λ⌋ + t·level ⌊λ⌋+1"
-    )
+    return TRILINEAR_RULE
 
 
 def trilinear_exercise(scene) -> Exercise:
     return Exercise(
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
         _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
-        draw=draw_texture_case, scene=scene, hints=(
-            # issue 30 (r49): 7.3 asks for the levels and weights; the first wrong try asks back
-            (", then (1 − t)·level ⌊λ⌋ + t·level ⌊λ⌋+1", ", then weigh two levels so that the "
-             "value changes continuously with λ and is a level's own value at a whole λ"),
-        ),
+        draw=draw_texture_case, scene=scene, hints=((TRILINEAR_RULE, TRILINEAR_HINT),),
+        once=((TRILINEAR_RULE, ": as said for the first failing case"),),
+        inputs_drawn=True,
     )  # fmt: skip

@@ -155,6 +155,14 @@ def hinted_check(name: str, answer: object) -> bool:
         return len(seen) < HINTED_ANSWERS
 
 
+def hints_spent(name: str) -> bool:
+    """Have :data:`HINTED_ANSWERS` different answers of task ``name`` failed in this kernel
+    (its checks now give the full words)? A case figure that draws the method (7.2's four
+    texels and their weights) draws it only then (r64 07 D2)."""
+    with _LOCK:
+        return len(_HINTED.get(name, ())) >= HINTED_ANSWERS
+
+
 def spend_hints(names) -> None:
     """Count task ``names``' hints as used: their checks give the full words from the first
     failing try (the tests: whether a check hints must not depend on which tests ran before
