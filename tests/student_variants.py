@@ -1665,3 +1665,10 @@ WRONG.update({
 WRONG["quad lanes as (y, x)"] = (
     "quad_derivatives", _quad_origin(lambda r, c: (r - r % 2, c - c % 2), yx=True),
     "as (row + ½, col + ½)")  # fmt: skip
+KINDS.update(
+    {
+        "quad at (row // 2, col // 2)": "quad number",
+        "quad lanes at pixel corners": "corners",
+        "quad lanes as (y, x)": "points (y, x)",
+    }
+)
