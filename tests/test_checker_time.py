@@ -158,7 +158,10 @@ def test_a_huge_budget_never_fails_correct_code():
     assert ex.check("mip_level", CORRECT["mip_level"], budget=1e300).passed
 
 
-def test_the_budget_covers_every_exercise():
+def test_the_budget_covers_every_exercise(monkeypatch):
+    # the CPU limit is what this asks about: under a heavy load (8 helpers beside a quick run)
+    # hiz_rejects' case passed its wall-clock cap first ("too busy", kind "budget")
+    monkeypatch.setattr(running, "WALL_FACTOR", 1000.0)
     took = Took()
     for name in ex.names():
         report = ex.check(name, forever, budget=0.5)

@@ -562,8 +562,6 @@ def test_frame_inspector_shows_the_pairs_history_of_the_same_pixel_beside():
 
 
 # -- lesson 11 ------------------------------------------------------------------------------
-@pytest.mark.notebook
-@pytest.mark.filterwarnings("ignore::DeprecationWarning")
 def _lesson_11_source() -> str:
     import json
     from pathlib import Path
@@ -585,6 +583,8 @@ def _nearest_centre(corners, width, height) -> float:
     return float(least)
 
 
+@pytest.mark.notebook
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")
 def test_lesson_11_tells_each_story():
     from test_lessons import lesson
 

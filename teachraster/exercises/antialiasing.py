@@ -480,7 +480,7 @@ def resolve_exercise(scene) -> Exercise:
     )  # fmt: skip
 
 
-def _swatch_words(rgb: str) -> str:
+def swatch_words(rgb: str) -> str:
     """ "(r, g, b)" under a swatch: one number where the three are equal (a grey), else one
     a line (r64: three labels of "(0.881, 0.881, 0.881)" ran into each other)."""
     parts = rgb.strip("()").split(", ")
@@ -518,8 +518,8 @@ def draw_resolve_case(ax, case, got, extra=None):
     cells = []
     if got is not None:
         want, yours = colour_texts(case[2], got)
-        cells = [(f"expected\n{_swatch_words(want)}", case[2]),
-                 (f"yours\n{_swatch_words(yours)}", got)]  # fmt: skip
+        cells = [(f"expected\n{swatch_words(want)}", case[2]),
+                 (f"yours\n{swatch_words(yours)}", got)]  # fmt: skip
         cells += [extra] if extra is not None else []
     for k, (name, colour) in enumerate(cells):
         left = 3.6 + 1.6 * k

@@ -17,13 +17,13 @@ import numpy as np
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import (
-    _swatch_words,
     as_colour,
     draw_resolve_case,
     expected_resolve,
     resolve_case,
     resolve_cases,
     same_colour,
+    swatch_words,
 )
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import num, vec
@@ -131,7 +131,7 @@ def draw_srgb_case(ax, case, got):
     Before any answer the samples only."""
     _, (colours, ids, background), _ = case
     codes = _mix(colours, ids, background, _same, _same)
-    extra = (f"codes averaged\n(6.2's resolve)\n{_swatch_words(vec(codes))}", codes)
+    extra = (f"codes averaged\n(6.2's resolve)\n{swatch_words(vec(codes))}", codes)
     artists = draw_resolve_case(ax, case, got, extra=extra if got is not None else None)
     if got is not None:
         artists.append(ax.set_xlabel("expected: averaged in linear light, then encoded",

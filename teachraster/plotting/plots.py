@@ -59,11 +59,13 @@ class GridArtists(Artists):
 
     def update(self, width: int, height: int) -> None:
         """Redraw for a new image size (same artist)."""
-        self.lines.set_segments(_grid_segments(width, height))
+        self.lines.set_segments(grid_segments(width, height))
         pixel_axes(self.lines.axes, width, height, ticks=self.ticks > 0, most=self.ticks)
 
 
-def _grid_segments(width: int, height: int) -> list:
+def grid_segments(width: int, height: int) -> list:
+    """The pixel grid's lines of a ``width`` × ``height`` image as segments (none past
+    ``GRID_LIMIT``), for a LineCollection."""
     # Python ints: np.arange(np.uint8(255) + 1) would wrap to an empty grid.
     width, height = as_size("width", width), as_size("height", height)
     if max(width, height) > GRID_LIMIT:
@@ -95,7 +97,7 @@ def plot_pixel_grid(ax, width: int, height: int, *, ticks: bool | int = True) ->
         ``lines``: the LineCollection of pixel boundaries.
     """
     lines = LineCollection(
-        _grid_segments(width, height),
+        grid_segments(width, height),
         colors=COLORS["grid"],
         linewidths=max(0.6, lw(0.25)),
         zorder=1.5,  # above images (zorder 0), below everything else

@@ -32,7 +32,7 @@ from ..core.trace import FillTrace
 from ..core.traversal import TRAVERSALS, traversal_order
 from ..core.validate import check_choice
 from .common import Artists, as_trace, fs, lw, nice_step, pixel_axes, show_image, tint
-from .plots import _grid_segments, plot_pixel_grid, plot_triangle
+from .plots import grid_segments, plot_pixel_grid, plot_triangle
 from .style import COLORS, OKABE_ITO, VALUE_CMAP
 
 #: The colour of each block kind.
@@ -137,7 +137,7 @@ class BlockArtists(Artists):
             axis.set_ticks(idx + 0.5, labels=[str(i) for i in idx])
         if self.window_grid is None:
             self.window_grid = window_grid(ax)
-        segments = np.asarray(_grid_segments(w, h), dtype=float) + (c, r)
+        segments = np.asarray(grid_segments(w, h), dtype=float) + (c, r)
         self.window_grid.set_segments(segments)
         self.window_grid.set_visible(True)
 

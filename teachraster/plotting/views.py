@@ -314,10 +314,11 @@ class FillView:
             self.value_bar.set_visible(coloured)
         # the key and the split's tints are background: each state has its own cache (the
         # sample dots too: with bold dots, as many as there are pixels tested)
-        self._still = (boxed, split, testing, coloured, tested)
+        setup = k < trace.first_work_step
+        # (the key lists less before the first fill step, review r58: a state of its own)
+        self._still = (boxed, split, testing, coloured, tested, setup and self.legend is not None)
         self.raster_line.update(step)
         self.pixel.update(step)
-        setup = k < trace.first_work_step
         keyed = (testing, coloured, split, boxed, setup)
         if self.legend is not None and keyed != self._keyed:
             self.legend.set_entries(
