@@ -1287,3 +1287,29 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
     assert "In both APIs it\ntakes a **reversed projection matrix**" in recipe
     assert "glDepthRange(1, 0)" in recipe
+
+
+def test_00_04_answers_wait_for_check_r66():
+    """Review r66: 00's PipelineMap opened on rasterisation ("59 pixel centres are inside",
+    q_centres' answer) and its set-up stage says "back-facing" (q_facing's): it opens on the
+    vertex stage, held on both. 04: the text after q_affine stated its answer and the viewer
+    showing it was not held; the boxed t(q) under q_midpoint gave 0.2 by one substitution (it
+    now follows the held explorer); the Δu = 0 key lay over edge v1 v2."""
+    tour = _cells("00_tour", "code")
+    shown = next(c for c in tour if "PipelineMap(" in c)
+    assert "q_facing.hold()" in shown and "q_centres.hold()" in shown
+    assert shown.index("hold()") < shown.index("PipelineMap(") and 'stage="vertex"' in shown
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    kinds = [c["cell_type"] for c in nb["cells"]]
+    ask = next(i for i, t in enumerate(text) if "q_midpoint = PredictPoint(" in t)
+    boxed = next(i for i, t in enumerate(text) if r"\boxed{t =" in t)
+    explorer = next(i for i, t in enumerate(text) if "ProjectionExplorer(" in t)
+    assert ask < explorer < boxed and text[explorer].startswith("q_midpoint.hold()")
+    ask = next(i for i, t in enumerate(text) if "q_affine = Predict(" in t)
+    viewer = next(i for i, t in enumerate(text) if "TexturedPlaneViewer(" in t)
+    assert text[viewer].startswith("q_affine.hold()")
+    said = [t for k, t in zip(kinds[ask:viewer], text[ask:viewer]) if k == "markdown"]
+    assert not any("kink" in t or "straight *inside*" in t for t in said)
+    assert "kink" in text[ask].split("explain=")[1]
+    assert 'legend(loc="lower right"' in text[ask - 2]  # the |Δu| panel's key, below v2 v3
