@@ -1058,6 +1058,11 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     for cell in ("| OpenGL 4.6 |", "| Direct3D 11 |", "| Vulkan |", "| teachraster |",
                  "[earlydepthstencil]", "`EarlyFragmentTests`", "*Early Per-Fragment Tests*"):  # fmt: skip
         assert cell in words, cell
+    # review r70 #3: "should instead" is Vulkan 1.3's wording; the current specification says
+    # "must" where the device reports earlyFragmentMultisampleCoverageAfterSampleCounting
+    assert (
+        "Vulkan 1.3" in words and "`earlyFragmentMultisampleCoverageAfterSampleCounting`" in words
+    )
 
 
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
