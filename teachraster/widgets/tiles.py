@@ -57,7 +57,8 @@ class TileExplorer(Holdable):
     children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
     the ``k``-th outlined (``current``: its index in the trace, None on the level slider)
     and captioned; the page stays white where no block has been classified
-    yet, and a child covers its partial parent (opaque colours: each one in the key).
+    yet, a visited partial block's children not reached yet are a paler orange, and a child
+    covers its partial parent (opaque colours: each one in the key).
     The **block sizes** and **traversal** menus fill the triangle again. The counters
     (rejected / accepted / partial per size, llvmpipe's empty / full / partial, and the pixel tests run) are shown below.
 
