@@ -650,6 +650,15 @@ def test_lesson_11_tells_each_story():
     assert len(ns.crossed) > ns.shared_quads.sum()
     assert all(ns.half_quads[0][q] or ns.half_quads[1][q] for q in ns.crossed)
     assert ns.lanes == 64 and ns.useful == 48
+    # review r70 #1: each pixel tinted by the triangle covering its centre (two centres lie
+    # 0.1 px from the diagonal: not to be judged by eye), the two tints distinct
+    for k in (0, 1):
+        assert np.array_equal(ns.owner == k, ns.half_cov[k])
+    assert (ns.owner == -1).sum() == 12 * 10 - 48
+    draw = _lesson_11_source().split("def draw_quads(ax):")[1].split("q_helpers =")[0]
+    assert "ax.imshow(pale_halves[owner + 1], extent=(0, 12, 10, 0)" in draw  # (the globals
+    assert len({tuple(c) for c in ns.pale_halves}) == 3  # keep no function to call)
+    assert "tinted by the triangle" in _lesson_11_source()  # and the question says so
     # §2's tie band (r62 #3): the gap at v1 is under half a unorm16 step, 0.4 is on a step,
     # and the band reaches both ends of the edge v1-v3
     assert 0 < ns.fight_gap[0] < ns.step16 / 2 < ns.fight_gap[1] and ns.fight_gap[2] == 0

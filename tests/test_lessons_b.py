@@ -1058,6 +1058,11 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     for cell in ("| OpenGL 4.6 |", "| Direct3D 11 |", "| Vulkan |", "| teachraster |",
                  "[earlydepthstencil]", "`EarlyFragmentTests`", "*Early Per-Fragment Tests*"):  # fmt: skip
         assert cell in words, cell
+    # review r70 #3: "should instead" is Vulkan 1.3's wording; the current specification says
+    # "must" where the device reports earlyFragmentMultisampleCoverageAfterSampleCounting
+    assert (
+        "Vulkan 1.3" in words and "`earlyFragmentMultisampleCoverageAfterSampleCounting`" in words
+    )
 
 
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
@@ -1065,6 +1070,14 @@ def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
     assert ns.glass_counts["nan"] == 0
     assert np.isnan(ns.see_through.depth[ns.see_through.coverage]).all()
+    # review r70 #4: the printout said "not NaN" next to a count of NaNs; it says what it
+    # counts (empty depth, stored as NaN), and no comment points at a cell number
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    assert "not NaN" not in code and "stored as NaN, which marks *empty*" in code
+    assert "cell 14" not in code and "§2's last paragraph sends you back" in code
 
 
 def test_11_overdraw_comes_from_drawing_without_culling():

@@ -259,7 +259,8 @@ def test_a_zoomed_block_is_outlined_alone_over_its_pixel_grid(explorer):
         assert np.isfinite(x).all() and np.isfinite(y).all()  # one piece: no ticks
         assert (x.min(), x.max(), y.min(), y.max()) == (c, c + 1, r, r + 1)
         (x0, x1), (y1, y0) = explorer.ax.get_xlim(), explorer.ax.get_ylim()
-        assert x0 < x.min() and x.max() < x1 and y0 < y.min() and y.max() < y1
+        assert x0 <= x.min() and x.max() <= x1 and y0 <= y.min() and y.max() <= y1
+        assert not explorer.artists.current.get_clip_on()  # whole on the frame's edge too
         grid = explorer.artists.window_grid
         top = explorer.zoom_block()
         tc, tr_, size = int(blocks.col[top]), int(blocks.row[top]), int(blocks.size[top])
@@ -521,10 +522,47 @@ def test_block_slider_zooms_on_small_blocks(explorer):
     explorer.block.value = small
     top = explorer.zoom_block()
     assert top is not None and blocks.parent[top] == -1
-    x0, x1 = explorer.ax.get_xlim()
-    assert x1 - x0 == blocks.size[top] + 1 and "zoomed on its" in explorer.caption_text
+    # exactly the block (review r70, lesson 10 #1: half a pixel of the neighbours showed)
+    c, r, size = int(blocks.col[top]), int(blocks.row[top]), int(blocks.size[top])
+    assert explorer.ax.get_xlim() == (c, c + size) and explorer.ax.get_ylim() == (r + size, r)
+    assert "zoomed on its" in explorer.caption_text
     explorer.block.value = 1  # a top-level block: the whole image
     assert explorer.zoom_block() is None and explorer.ax.get_xlim() == (0, explorer.width)
     explorer.block.value = small
     explorer.level.value = 1
     assert explorer.ax.get_xlim() == (0, explorer.width)
+
+
+def test_unvisited_children_of_a_partial_block_are_not_its_orange(explorer):
+    """Review r70 (lesson 10 #2): on the block slider, the 4×4 children of the current 16×16
+    block that the walk has not reached were painted the parent's "partial" orange. They are
+    drawn in the key's paler "not visited yet" style until visited; the level slider, where
+    every block of the level is classified, has none."""
+    from matplotlib.colors import to_rgba
+
+    from teachraster.plotting.style import COLORS
+    from teachraster.plotting.tiles import BLOCK_COLORS, PENDING
+
+    blocks, order = explorer.blocks, explorer.order
+    first = next(k for k in range(1, len(order) + 1) if blocks.parent[order[k - 1]] >= 0)
+    explorer.block.value = first  # the first child of the first partial 16×16 block
+    parent = int(blocks.parent[order[first - 1]])
+    waiting = np.flatnonzero((blocks.parent == parent) & ~explorer.shown)
+    assert len(waiting) >= 1 and explorer.pending[waiting].all()
+    shown_parents = np.flatnonzero(explorer.shown)
+    under = np.isin(blocks.parent, shown_parents) & ~explorer.shown  # and the 1×1 under child
+    assert np.array_equal(explorer.pending, under) and under.sum() > len(waiting)
+    face = dict(zip(explorer.artists.order.tolist(), explorer.artists.blocks.get_facecolor()))
+    orange = np.array(to_rgba(BLOCK_COLORS["partial"]))
+    for b in waiting:
+        assert face[int(b)][3] == 1 and not np.allclose(face[int(b)], orange)
+    edge = dict(zip(explorer.artists.order.tolist(), explorer.artists.blocks.get_edgecolor()))
+    assert np.allclose(edge[int(waiting[0])], to_rgba(COLORS["grid"]))
+    assert np.allclose(face[parent], orange)  # the parent itself stays partial
+    keyed = [t.get_text() for t in explorer.artists.legend.get_texts()]
+    assert PENDING in keyed
+    explorer.block.value = first + 1  # the next child, visited now: its own colour
+    b = int(order[first])
+    assert not explorer.pending[b]
+    explorer.level.value = 1  # a whole level: nothing pending
+    assert explorer.pending is None

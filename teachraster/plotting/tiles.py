@@ -50,6 +50,12 @@ BLOCK_EDGE = "white"
 UNCLASSIFIED = "not classified (yet)"
 #: The key's name for the outline of the block a walk visits now (``current=True``).
 CURRENT_BLOCK = "the block visited now"
+#: The key's name for the children of a visited partial block that the walk has not reached
+#: yet (``current=True``): a paler orange with the white page's outline, not the parent's
+#: orange, which read as "partial" before they were classified (review r70, lesson 10 #2).
+PENDING = "inside a partial block: not visited yet"
+#: ... and their colour: the partial orange at this opacity over white.
+PENDING_TINT = 0.35
 
 
 def tile_trace(fill, what: str = "this plot") -> tuple[FillTrace, TileTrace]:
@@ -60,6 +66,17 @@ def tile_trace(fill, what: str = "this plot") -> tuple[FillTrace, TileTrace]:
             f"{what} needs a tiled fill: tr.rasterize(..., method='tiled', trace=True)"
         )
     return trace, trace.blocks
+
+
+def pending_children(blocks: TileTrace, shown: np.ndarray) -> np.ndarray:
+    """(n,) bool: the blocks not ``shown`` whose parent is (the children of a visited partial
+    block that a walk has not reached yet)."""
+    shown = np.asarray(shown, dtype=bool)
+    parent = np.asarray(blocks.parent)
+    has = parent >= 0
+    pending = np.zeros(len(shown), dtype=bool)
+    pending[has] = shown[parent[has]] & ~shown[has]
+    return pending
 
 
 def block_mask(
@@ -120,7 +137,7 @@ class BlockArtists(Artists):
 
     def show_window(self, ax, width: int, height: int, window=None) -> None:
         """Show the ``height`` × ``width`` image whole (``window`` None), or zoom ``ax`` on
-        ``window`` = (col, row, w, h) pixels: half a pixel of margin, ticks on its pixels, and
+        ``window`` = (col, row, w, h) pixels: exactly those pixels, ticks on them, and
         its pixel grid drawn over the blocks (the image's grid lies under the opaque blocks:
         a zoomed 4×4 block showed no pixel in it). Call :meth:`show_current` next."""
         self.window = None if window is None else tuple(int(v) for v in window)
@@ -130,8 +147,9 @@ class BlockArtists(Artists):
                 self.window_grid.set_visible(False)
             return
         c, r, w, h = self.window
-        pad = 0.5  # the block's outline stays inside the frame
-        ax.set(xlim=(c - pad, c + w + pad), ylim=(r + h + pad, r - pad))
+        # exactly the block: half a pixel of margin showed strips of the neighbouring blocks
+        # (review r70, lesson 10 #1); the current outline is not clipped, so it stays whole
+        ax.set(xlim=(c, c + w), ylim=(r + h, r))
         for axis, start, n in ((ax.xaxis, c, w), (ax.yaxis, r, h)):
             idx = np.arange(start, start + n, nice_step(n, 4))
             axis.set_ticks(idx + 0.5, labels=[str(i) for i in idx])
@@ -141,8 +159,9 @@ class BlockArtists(Artists):
         self.window_grid.set_segments(segments)
         self.window_grid.set_visible(True)
 
-    def show(self, mask: np.ndarray) -> None:
-        """Show only the blocks where ``mask`` (indexed like the trace) is True, in place."""
+    def show(self, mask: np.ndarray, pending: np.ndarray | None = None) -> None:
+        """Show only the blocks where ``mask`` (indexed like the trace) is True, in place, and
+        those where ``pending`` is True in the :data:`PENDING` style (not yet classified)."""
         visible = np.asarray(mask, dtype=bool)[self.order]
         face = _colors(self.kinds, BLOCK_ALPHA)
         edge = np.tile(to_rgba(BLOCK_EDGE), (len(self.kinds), 1))
@@ -150,6 +169,10 @@ class BlockArtists(Artists):
         edge[ones] = face[ones]
         face[~visible, 3] = 0.0
         edge[~visible, 3] = 0.0
+        if pending is not None:
+            waiting = np.asarray(pending, dtype=bool)[self.order] & ~visible
+            face[waiting] = tint(BLOCK_COLORS["partial"], PENDING_TINT)
+            edge[waiting] = to_rgba(COLORS["grid"])
         self.blocks.set_facecolor(face)
         self.blocks.set_edgecolor(edge)
 
@@ -239,6 +262,8 @@ def plot_blocks(
             unclassified = has_unclassified(blocks, shown)
         handles = block_legend_handles(unclassified=unclassified)
         if current:
+            handles.append(Patch(facecolor=tint(BLOCK_COLORS["partial"], PENDING_TINT),
+                                 edgecolor=COLORS["grid"], label=PENDING))  # fmt: skip
             handles.append(Patch(facecolor="none", edgecolor=COLORS["current"],
                                  linewidth=lw(0.8), label=CURRENT_BLOCK))  # fmt: skip
         result.legend = ax.legend(handles=handles, loc="upper left",

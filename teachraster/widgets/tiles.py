@@ -9,7 +9,7 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.tiles import CURRENT_BLOCK, UNCLASSIFIED, block_mask
+from ..plotting.tiles import CURRENT_BLOCK, UNCLASSIFIED, block_mask, pending_children
 from .common import (
     Holdable,
     Shown,
@@ -57,7 +57,8 @@ class TileExplorer(Holdable):
     children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
     the ``k``-th outlined (``current``: its index in the trace, None on the level slider)
     and captioned; the page stays white where no block has been classified
-    yet, and a child covers its partial parent (opaque colours: each one in the key).
+    yet, a visited partial block's children not reached yet are a paler orange, and a child
+    covers its partial parent (opaque colours: each one in the key).
     The **block sizes** and **traversal** menus fill the triangle again. The counters
     (rejected / accepted / partial per size, llvmpipe's empty / full / partial, and the pixel tests run) are shown below.
 
@@ -237,6 +238,7 @@ class TileExplorer(Holdable):
     def _compute_at(self, level) -> None:
         level = int(round(level))
         self.shown = block_mask(self.blocks, level=level)
+        self.pending = None  # every block of the level is classified
         self.current = None  # a whole level: no one block visited now
         c, size = self.blocks.counters, self.sizes.value[level]
         text = (
@@ -250,7 +252,7 @@ class TileExplorer(Holdable):
         self.caption_text = text
 
     def _set_artists(self) -> None:
-        self.artists.show(self.shown)
+        self.artists.show(self.shown, self.pending)
         window = self._window()
         if window != self.artists.window:
             # limits, ticks and the zoomed block's pixel grid: the cached background and the
@@ -286,6 +288,8 @@ class TileExplorer(Holdable):
         """Show the first ``k`` blocks of the traversal (0: none yet), captioning the last."""
         k = self.block.value if k is None else int(k)
         self.shown = block_mask(self.blocks, upto=k - 1, traversal=self.traversal.value)
+        # a visited partial block's children the walk has not reached: not its orange
+        self.pending = pending_children(self.blocks, self.shown)
         # the block visited now, outlined (review r11, lesson 10: where is the walk?)
         self.current = int(self.order[k - 1]) if k > 0 and len(self.order) else None
         self.level.description = LEVEL_LABELS[False]  # the picture is no level's
