@@ -1315,6 +1315,9 @@ def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     assert 1 < ns.by_filter["nearest_mipmap_linear"]["texel_reads"] <= 2
     assert b["error_minified"] > nmn["error_minified"]
     assert ns.aniso_error < ns.trilinear_error
+    # review r69 09-4: the cap table marks the default, the cap §6's anisotropic render used
+    # ("0.030 both" in the text)
+    assert ns.default_cap == 16 and f"{ns.by_cap[16][0]:.3f}" == f"{ns.aniso_error:.3f}"
 
 
 def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
