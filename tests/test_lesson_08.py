@@ -90,7 +90,11 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     assert "".join(held["source"]).startswith("q_levels.hold()")  # a code cell, held,
     assert held["metadata"]["jupyter"]["source_hidden"]  # its source collapsed as the question's
     sliver = next(c for c in code if "def draw_sliver" in c)
-    assert "shown = ~((rows == 1) & (s == s_in))" in sliver
+    # review r69 08-1: row 1's upper half (two sample rows) is left out of the picture and the
+    # question, so the student finds which sample row lies inside the sliver
+    assert "shown = ~((rows == 1) & (offsets4[s, 1] < 0.5))" in sliver
+    assert "y between 1 and 1.5" in sliver and "are left out" in sliver
+    assert "in row 1 the samples at y =" not in sliver
     assert "deferred shading" in flat and "G-buffer" in flat
 
 

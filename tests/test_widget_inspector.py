@@ -254,3 +254,29 @@ def test_labels_stay_in_the_panel_by_a_corner_where_two_edges_meet():
                 assert frame.y0 <= box.y0 and box.y1 <= frame.y1 and not box.overlaps(title)
         finally:
             w.close()
+
+
+def test_sixteen_random_numbers_sit_clearly_nearest_their_own_dot():
+    """Review r69 08-2: at pixel (13, 0), "16 random", the numbers crowded by the pixel's top
+    side, where dots lie 0.12 px apart: each number's centre is now at least
+    OWN_DOT_MARGIN times nearer its own dot than any other (a dot matched to its number
+    without the table)."""
+    from teachraster.plotting.antialiasing import OWN_DOT_MARGIN
+
+    tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])  # lesson 08's
+    w = PixelInspector(tri, 20, 14, row=13, col=0, pattern="16 random", backend="image")
+    try:
+        for row, col in ((13, 0), (3, 13)):
+            w.row.value, w.col.value = row, col
+            w.fig.canvas.draw()
+            r = w.fig.canvas.get_renderer()
+            ax = w.pixel.labels[0].axes
+            offsets = w.result.samples
+            dots = ax.transData.transform(np.column_stack([col + offsets[:, 0],
+                                                           row + offsets[:, 1]]))  # fmt: skip
+            for s, lab in enumerate(w.pixel.labels):
+                box = lab.get_window_extent(r)
+                d = np.hypot(*(dots - [box.x0 + box.width / 2, box.y0 + box.height / 2]).T)
+                assert d[s] * OWN_DOT_MARGIN <= np.delete(d, s).min(), (row, col, s)
+    finally:
+        w.close()
