@@ -1068,6 +1068,12 @@ WRONG = {
         "exactly on the right edge",
     ),  # fmt: skip
     "span at the pixels' top": ("span", _span_with(y_offset=0.0), "y = row"),
+    # r73 02-1: int(x + 0.5) on both ends: right on every row without a tie
+    "span, ties the wrong way round": (
+        "span",
+        _span_with(left=lambda x: math.floor(x + 0.5), right=lambda x: math.floor(x + 0.5)),
+        "ties go the wrong way round",
+    ),  # fmt: skip
     # perspective_weights
     "weights affine": ("perspective_weights", lambda lam, w: lam, "affine"),
     "weights times w": ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "multiplied"),
@@ -1237,6 +1243,7 @@ KINDS = {
     "span at pixel corners": "corners",
     "span, right edge included": "right inclusive",
     "span at the pixels' top": "row top",
+    "span, ties the wrong way round": "ties reversed",
     "weights affine": "affine",
     "weights times w": "times w",
     "weights unnormalised": "unnormalised",
