@@ -155,3 +155,13 @@ def test_random_answers_get_the_rule_not_an_invented_cause(name):
     assert kinds <= {"value", "outside", "inside", "vertex", "zero area"} | {
         k for k in kinds if k.startswith("on a ")
     }, kinds
+
+
+def test_a_memory_error_is_explained_in_words():
+    """r73 08-4/08-5: numpy's _ArrayMemoryError on a huge case was shown raw."""
+    from teachraster.exercises.running import run_case
+
+    out = run_case(lambda: np.zeros(10**15))
+    assert out.kind == "memory", out
+    assert out.error.startswith("your function asked for more memory than the machine has (")
+    assert "_ArrayMemoryError" not in out.error and "scan of every pixel" in out.error

@@ -29,7 +29,7 @@ from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short
 from .cases import SEED, fixed_and_drawn
 from .coverage import covered
-from .exercise import Exercise, Knobs, Slip
+from .exercise import Exercise, Knobs, Mistake, Slip
 from .running import WrongAnswerType
 from .scalars import num, tri_words, vec
 
@@ -173,6 +173,27 @@ BLOCK_KNOBS = Knobs(classify_with, {
 })  # fmt: skip
 
 
+def _by_coverage(xy, x0, y0, size) -> str | None:
+    """The verdict from the coverage of every centre of the block (r73 08-4): none covered,
+    rejected; all, accepted. None on a block too large to list its centres."""
+    if size > 64:
+        return None
+    cols, rows = np.meshgrid(np.arange(size) + x0 + 0.5, np.arange(size) + y0 + 0.5)
+    inside = covered(np.asarray(xy, dtype=float), np.stack([cols.ravel(), rows.ravel()], axis=1))
+    return "accepted" if inside.all() else ("rejected" if not inside.any() else "partial")
+
+
+#: r73 08-4: an exact test of every centre was told "you tested only 2 of the 4 extreme centres".
+BY_COVERAGE = Mistake(
+    "by coverage",
+    "you decided by the coverage of the block's centres (rejected when none is covered), not "
+    "edge by edge: a block is rejected only when one edge alone rules out every centre; here "
+    "no centre is covered, yet no single edge rules them all out (which edge passes somewhere "
+    "in the block?)",
+    gives=_by_coverage,
+)
+
+
 def explain_block(args, expected, got) -> str:
     xy, x0, y0, size = args
     return (
@@ -215,7 +236,7 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
+        [BY_COVERAGE, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
     )  # fmt: skip
 
 
