@@ -394,7 +394,8 @@ def _by_verdicts(edges, expected, got) -> str:
 
 
 def draw_block_case(ax, case, got):
-    """The snapped triangle, the block with its four extreme centres, and the verdicts."""
+    """The snapped triangle, the block (its four extreme centres once the hints are spent),
+    and the verdicts."""
     from .drawing import plain_ticks
 
     xy, x0, y0, size = case[1]
@@ -402,8 +403,13 @@ def draw_block_case(ax, case, got):
     artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
     box = np.array([[x0, y0], [x0 + size, y0], [x0 + size, y0 + size], [x0, y0 + size], [x0, y0]])
     artists += ax.plot(box[:, 0], box[:, 1], color="#ff9f1c", linewidth=2)
-    ys, xs = _corners(x0, y0, size)
-    artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
+    # r73 08-1: the four decisive centres are the task's question ("Be exact about which
+    # points those are"): drawn only once two different answers have failed, as the words say
+    from .tries import hints_spent
+
+    if hints_spent("classify_block"):
+        ys, xs = _corners(x0, y0, size)
+        artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
     yours = "" if got is None else f", yours {got}"
     ax.set_xlabel(f"{case[2]}{yours}")
     lo = np.minimum(ring.min(axis=0), [x0, y0]) - 1
