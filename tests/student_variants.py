@@ -473,6 +473,24 @@ def classify_every_centre(xy, x0, y0, size):
     return "accepted" if accepted else "partial"
 
 
+def classify_by_coverage(xy, x0, y0, size):
+    """Every centre tested against all three edges at once with numpy (r73 08-4): rejected
+    when none is covered; right on most blocks, and out of memory on a 2^19-px one."""
+    v = np.array([[float(c) for c in p] for p in xy])
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return "rejected"
+    if area < 0:
+        v = v[[0, 2, 1]]
+    px, py = np.meshgrid(np.arange(size) + x0 + 0.5, np.arange(size) + y0 + 0.5)
+    inside = np.ones(px.shape, dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
+        inside &= (e > 0) | ((e == 0) & _owns(a, b))
+    return "accepted" if inside.all() else ("rejected" if not inside.any() else "partial")
+
+
 def classify_pixel_corners(xy, x0, y0, size):
     """The pixels' top-left corners (x0, y0) … (x0 + size − 1, y0 + size − 1) (r64 08-2)."""
     half = Fraction(1, 2)
@@ -568,6 +586,15 @@ def _span_with(y_offset=0.5, left=lambda x: math.ceil(x - 0.5), right=lambda x: 
         return left(min(xs)), right(max(xs))
 
     return span
+
+
+def span_numpy_scan(xy, row):
+    """The exact span, after an array of every column of the bounding box (a vectorised scan's
+    first step, r73 08-5): right, and out of memory on the 10^12-px triangle."""
+    lo, hi = math.floor(min(p[0] for p in xy)), math.ceil(max(p[0] for p in xy))
+    centres = np.arange(lo, hi + 1) + 0.5
+    assert centres.size == hi - lo + 1
+    return span_exact(xy, row)
 
 
 def span_exact(xy, row):
@@ -1006,6 +1033,11 @@ WRONG = {
     ),  # fmt: skip
     "blocks by two corners": ("classify_block", classify_two_corners, "only 2 of the 4"),
     "blocks by every centre": ("classify_block", classify_every_centre, "did not finish"),
+    "blocks by the coverage of every centre": (
+        "classify_block",
+        classify_by_coverage,
+        "not edge by edge",
+    ),  # fmt: skip
     "blocks by the pixels' top-left corners": (
         "classify_block",
         classify_pixel_corners,
@@ -1068,6 +1100,13 @@ WRONG = {
         "exactly on the right edge",
     ),  # fmt: skip
     "span at the pixels' top": ("span", _span_with(y_offset=0.0), "y = row"),
+    "span by a numpy scan of every column": ("span", span_numpy_scan, "more memory"),
+    # r73 02-1: int(x + 0.5) on both ends: right on every row without a tie
+    "span, ties the wrong way round": (
+        "span",
+        _span_with(left=lambda x: math.floor(x + 0.5), right=lambda x: math.floor(x + 0.5)),
+        "ties go the wrong way round",
+    ),  # fmt: skip
     # perspective_weights
     "weights affine": ("perspective_weights", lambda lam, w: lam, "affine"),
     "weights times w": ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "multiplied"),
@@ -1228,6 +1267,7 @@ KINDS = {
     "covers, ties by the edges as given": "ties by the edges as given",
     "blocks by every centre": "timeout",
     "blocks by the pixels' top-left corners": "pixel corners",
+    "blocks by the coverage of every centre": "by coverage",
     "Hi-Z over the covered centres": "covered centres",
     "Hi-Z by the plane alone": "no clamp",
     "clip with z − w": "far plane's distance",
@@ -1237,6 +1277,8 @@ KINDS = {
     "span at pixel corners": "corners",
     "span, right edge included": "right inclusive",
     "span at the pixels' top": "row top",
+    "span, ties the wrong way round": "ties reversed",
+    "span by a numpy scan of every column": "memory",
     "weights affine": "affine",
     "weights times w": "times w",
     "weights unnormalised": "unnormalised",

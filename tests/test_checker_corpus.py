@@ -155,3 +155,36 @@ def test_random_answers_get_the_rule_not_an_invented_cause(name):
     assert kinds <= {"value", "outside", "inside", "vertex", "zero area"} | {
         k for k in kinds if k.startswith("on a ")
     }, kinds
+
+
+def test_a_memory_error_is_explained_in_words():
+    """r73 08-4/08-5: numpy's _ArrayMemoryError on a huge case was shown raw."""
+    from teachraster.exercises.running import run_case
+
+    out = run_case(lambda: np.zeros(10**15))
+    assert out.kind == "memory", out
+    assert out.error.startswith("your function asked for more memory than the machine has (")
+    assert "_ArrayMemoryError" not in out.error and "scan of every pixel" in out.error
+
+
+def test_the_block_figure_draws_the_decisive_centres_only_once_hints_are_spent():
+    """r73 08-1: the failing figure drew the four extreme centres, the task's question, on the
+    first failure of any answer."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises import tries
+    from teachraster.exercises.tile_blocks import draw_block_case
+
+    case = ("a block", (np.array([[8.0, 8.0], [24.0, 11.0], [11.0, 24.0]]), 4, 4, 4), "partial")
+    tries.forget_hints("classify_block")
+    try:
+        fig, ax = plt.subplots()
+        assert len(draw_block_case(ax, case, "rejected")) == 2  # the triangle and the block
+        tries.spend_hints(["classify_block"])
+        assert len(draw_block_case(ax, case, "rejected")) == 3  # and the four centres
+        plt.close(fig)
+    finally:
+        tries.spend_hints(["classify_block"])

@@ -702,3 +702,32 @@ def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
 
     report = ex.check("perspective_weights", clamped)
     assert [f.case.split(":")[0] for f in report.failures] == ["p outside the triangle"]
+
+
+@pytest.mark.parametrize(
+    ("label", "name_words", "formula"),
+    [("bilinear without −½", "texel corners", "x = u·W − ½"),
+     ("bilinear, weights reversed", "went to", "x − ⌊x⌋"),
+     ("λ summed before the root", "summed the squares", "ρ = max(|∂/∂x|, |∂/∂y|)"),
+     ("trilinear, weights swapped", "the weight of level", "λ − ⌊λ⌋"),
+     ("quad at (row // 2, col // 2)", "quad's number", "row − row mod 2"),
+     ("quad of this pixel", "even rows", "row − row mod 2"),
+     ("resolve of the encoded numbers", "sRGB-encoded", "decode first, average in linear light"),
+     ("Hi-Z by the plane alone", "bare plane", "larger of the two bounds"),
+     ("Hi-Z over the covered centres", "centres the triangle", "no nearer than the nearest vertex")],
+)  # fmt: skip
+def test_a_named_mistake_asks_before_its_formula(label, name_words, formula):
+    """r73 07-1, 06-1, 08-2: a recognised mistake is named with a question on the first tries
+    (rerunning it too); its fix as a formula only once two different answers have failed."""
+    from exercise_solutions import MISTAKES
+
+    from teachraster.exercises import tries
+
+    name, fn = WRONG[label][:2] if label in WRONG else MISTAKES[label][:2]
+    tries.forget_hints(name)
+    for _ in range(2):
+        report = str(ex.check(name, fn))
+        assert name_words in report and formula not in report, report
+        assert "a hint only" in report, report
+    tries.hinted_check(name, "another answer that failed")  # a second, different wrong answer
+    assert formula in str(ex.check(name, fn)), label

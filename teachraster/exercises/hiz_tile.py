@@ -331,6 +331,17 @@ HIZ_HINTS = (
      "the nearest depth the triangle can have in the tile is "),
     (" (its plane at the extreme pixel centres, no nearer than its nearest vertex)",
      " (where in the tile can its depth be smallest, and how near can a fragment be?)"),
+    # r73 08-2: the named mistakes stated the bound asked; a question until two have failed
+    ("; evaluate the plane at the tile's extreme pixel centres (the vertex alone is a safe "
+     "bound, but the larger of the two bounds is asked: the vertex alone keeps blocks Hi-Z "
+     "could reject)", ": a safe bound, but not the one asked (it keeps blocks Hi-Z could "
+     "reject): what else bounds the triangle's depth in the tile?"),
+    ("; the nearest depth is the larger of the two bounds (either alone is safe, but the "
+     "larger is asked: either alone keeps blocks Hi-Z could reject)",
+     ": what else bounds how near a fragment of the triangle can be?"),
+    ("; the bound asked is the one a few tests give: the plane at the tile's extreme pixel "
+     "centres, no nearer than the nearest vertex",
+     "; the bound asked is the one a few tests give (which few points, and what else?)"),
 )  # fmt: skip
 
 HIZ_REJECTS = Exercise(

@@ -195,6 +195,9 @@ HINTS = (
      "texels of level 0, down to one texel"),
     (_AXIS_X, ""), (_AXIS_Y, ""), (_RHO, " texels (ρ = "),
     (_LAMBDA, "), λ = "),
+    # r73 07-1: a named mistake's fix as a question first
+    ("; GL takes the longer axis, ρ = max(|∂/∂x|, |∂/∂y|), each axis its own length",
+     ": which one length of the footprint decides whether some direction is undersampled?"),
 )  # fmt: skip
 
 

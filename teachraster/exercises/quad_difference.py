@@ -170,6 +170,19 @@ def explain_quad(args, expected, got) -> str:
     return f"(ddx, ddy) = {vec(expected, got)}; yours is {vec(got, expected)}"
 
 
+#: A named mistake's fix, as a question until two different answers have failed (r73 07-1).
+NAMED_HINTS = (
+    (
+        ", so pixel (row, col) belongs to the quad starting at (row − row mod 2, col − col mod 2)",
+        ": which quad holds pixel (row, col), and which is its upper-left pixel?",
+    ),
+    (
+        "; its upper-left pixel is at twice that, (row − row mod 2, col − col mod 2)",
+        ", not a pixel: which pixel is that quad's upper-left one?",
+    ),
+)
+
+
 #: 7.4's rule for an answer no mistake explains, and the question asked before it.
 RULE = (
     ": pixel (row, col) belongs to the quad whose upper-left pixel is (row − row mod 2, "
@@ -253,6 +266,6 @@ def _inside(xy, x, y) -> bool:
 QUAD_DERIVATIVES = Exercise(
     "quad_derivatives", quad_cases, as_pair, same_pair, explain_quad, _rule,
     variant_mistakes(_variants, MISTAKES), answers=(PackageAnswer(lane_values),),
-    draw=draw_quad, hints=((RULE, HINT),), inputs_drawn=True,
+    draw=draw_quad, hints=((RULE, HINT), *NAMED_HINTS), inputs_drawn=True,
     once=((RULE, ": as said for the first failing case"),),
 )  # fmt: skip

@@ -46,6 +46,7 @@ HEADLINES = {
     "exit": "your function called exit()",
     "none": "your function returned None",
     "type": "your function returned the wrong type",
+    "memory": "your function ran out of memory",
 }
 
 

@@ -72,6 +72,9 @@ RULE = (
     "samples there, and encode the mean: linear_to_srgb((Σ srgb_to_linear(covered) + "
     "(S − k)·srgb_to_linear(background)) / S)"
 )
+#: r73 06-1: the named mistake's recipe, as a question until two different answers have failed.
+_RECIPE = "; decode first, average in linear light, encode the mean"
+_RECIPE_HINT = "; at which step must the numbers be light, and at which encoded?"
 HINT = (
     "; the numbers given and the number returned are sRGB-encoded, and only light adds up: "
     "at which step must each value be light, and at which an encoded number? Work this "
@@ -120,7 +123,7 @@ def _encoded_average_words(args, expected, got) -> str:
         f": you averaged the sRGB-encoded numbers, as 6.2's resolve does: encoded numbers "
         f"are not light (black on white at {k} of {s} samples must show {num(white)} of "
         f"white's light, {num(float(linear_to_srgb(white)))} encoded, not {num(white)}); "
-        "decode first, average in linear light, encode the mean"
+        + _RECIPE.lstrip("; ")
     )
 
 
@@ -171,6 +174,6 @@ def explain(args, expected, got) -> str:
 RESOLVE_SRGB = Exercise(
     "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
     answers=(PackageAnswer(Frame.resolve),), draw=draw_srgb_case,
-    reference=("teachraster.exercises.antialiasing",), hints=((RULE, HINT),), inputs_drawn=True,
+    reference=("teachraster.exercises.antialiasing",), hints=((RULE, HINT), (_RECIPE, _RECIPE_HINT)), inputs_drawn=True,
     once=((RULE, "; as said for the first failing case"),),
 )  # fmt: skip

@@ -331,6 +331,14 @@ def describe_exception(exc: BaseException) -> Outcome:
             "condition (is the item you look for there, on this case's input?)"
         )
         return Outcome(error=text, kind="raised")
+    if isinstance(exc, MemoryError):  # numpy's _ArrayMemoryError too (r73 08-4, 08-5)
+        text = (
+            "your function asked for more memory than the machine has "
+            f"({str(exc) or 'MemoryError'}): an array with one element per pixel of this "
+            "case (a scan of every pixel or centre)? A case this large is there because the "
+            "answer needs no such scan: a few numbers per edge decide it at any size"
+        )
+        return Outcome(error=text, kind="memory")
     return Outcome(error=f"your function raised {last_line(exc)}", kind="raised")
 
 

@@ -277,6 +277,9 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     half = Fraction(1, 2)
     if centre is not None:
         xl, xr = centre
+        # r73 02-1: int(x + ½), C's habit: centres right, ties the wrong way round (it passes
+        # every row without a tie, so it is no "sampled at x = col")
+        out["ties reversed"] = _columns(math.floor(xl + half), math.floor(xr + half))
         out["corners"] = _columns(math.ceil(xl), math.ceil(xr))
         out["right inclusive"] = _columns(math.ceil(xl - half), math.floor(xr - half) + 1)
         out["left exclusive"] = _columns(math.floor(xl - half) + 1, math.ceil(xr - half))
@@ -287,6 +290,11 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
 
 
 MISTAKES = {
+    "ties reversed": "your columns are right wherever no centre lies exactly on a crossing, "
+    "but your ties go the wrong way round: a centre exactly on x_l (the left edge) you left out "
+    "and one exactly on x_r (the right edge) you covered (rounding x + ½ down, C's "
+    "int(x + 0.5)?): under the top-left rule, which of the two edges owns a centre that lies on "
+    "it?",
     "corners": "you rounded the crossings to columns as if pixel col were sampled at x = col "
     "(its left edge): its centre is at x = col + ½, so the first column is ⌈x_l − ½⌉",
     "right inclusive": "you covered the centre that lies exactly on the right edge: by the "

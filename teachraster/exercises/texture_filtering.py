@@ -292,6 +292,20 @@ BILINEAR_MISTAKES = [
 ]  # fmt: skip
 
 
+#: A named mistake's fix, as a question until two different answers have failed (r73 07-1:
+#: the formula came with the first wrong answer; :attr:`.exercise.Exercise.hints`).
+NAMED_HINTS = (
+    (re.compile(r"texel centres are at \(i \+ ½\)/W, so x = u·W − ½ \(here [^()]*\)(?:, not u·W)?"),
+     "where in u does texel i's centre lie, and so which x, in texels, is this u?"),
+    (re.compile(r" is the fraction [xy] − ⌊[xy]⌋(?: \(y − ⌊y⌋\))?; you gave it to"),
+     " must grow as the sample nears that texel; yours went to"),
+    (re.compile(r" is the fraction λ − ⌊λ⌋ = [^;]*; you gave it to"),
+     " must grow as λ nears that level; yours went to"),
+    (re.compile(r", level \d+ weighted by λ − ⌊λ⌋ = [^;:()]*"), " (with which weights?)"),
+    ("(x = u·W, not u·W − ½)", "(where in u is a texel's centre?)"),
+)  # fmt: skip
+
+
 #: 7.2's rule for an answer no mistake explains, said once two different answers have failed,
 #: and the question asked before (r64 07 D2: the method came with the first wrong answer).
 BILINEAR_RULE = (
@@ -318,7 +332,7 @@ def bilinear_exercise(scene) -> Exercise:
     return Exercise(
         "bilinear", bilinear_cases, as_texel_value, same_value, explain_bilinear,
         _bilinear_rule, BILINEAR_MISTAKES, answers=_answers("bilinear"),
-        draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT),),
+        draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT), *NAMED_HINTS),
         once=((BILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
     )  # fmt: skip
@@ -596,7 +610,8 @@ def trilinear_exercise(scene) -> Exercise:
     return Exercise(
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
         _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
-        draw=draw_texture_case, scene=scene, hints=((TRILINEAR_RULE, TRILINEAR_HINT),),
+        draw=draw_texture_case, scene=scene,
+        hints=((TRILINEAR_RULE, TRILINEAR_HINT), *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
     )  # fmt: skip

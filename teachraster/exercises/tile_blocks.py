@@ -29,7 +29,7 @@ from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short
 from .cases import SEED, fixed_and_drawn
 from .coverage import covered
-from .exercise import Exercise, Knobs, Slip
+from .exercise import Exercise, Knobs, Mistake, Slip
 from .running import WrongAnswerType
 from .scalars import num, tri_words, vec
 
@@ -173,6 +173,27 @@ BLOCK_KNOBS = Knobs(classify_with, {
 })  # fmt: skip
 
 
+def _by_coverage(xy, x0, y0, size) -> str | None:
+    """The verdict from the coverage of every centre of the block (r73 08-4): none covered,
+    rejected; all, accepted. None on a block too large to list its centres."""
+    if size > 64:
+        return None
+    cols, rows = np.meshgrid(np.arange(size) + x0 + 0.5, np.arange(size) + y0 + 0.5)
+    inside = covered(np.asarray(xy, dtype=float), np.stack([cols.ravel(), rows.ravel()], axis=1))
+    return "accepted" if inside.all() else ("rejected" if not inside.any() else "partial")
+
+
+#: r73 08-4: an exact test of every centre was told "you tested only 2 of the 4 extreme centres".
+BY_COVERAGE = Mistake(
+    "by coverage",
+    "you decided by the coverage of the block's centres (rejected when none is covered), not "
+    "edge by edge: a block is rejected only when one edge alone rules out every centre; here "
+    "no centre is covered, yet no single edge rules them all out (which edge passes somewhere "
+    "in the block?)",
+    gives=_by_coverage,
+)
+
+
 def explain_block(args, expected, got) -> str:
     xy, x0, y0, size = args
     return (
@@ -215,7 +236,7 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
+        [BY_COVERAGE, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
     )  # fmt: skip
 
 
@@ -373,7 +394,8 @@ def _by_verdicts(edges, expected, got) -> str:
 
 
 def draw_block_case(ax, case, got):
-    """The snapped triangle, the block with its four extreme centres, and the verdicts."""
+    """The snapped triangle, the block (its four extreme centres once the hints are spent),
+    and the verdicts."""
     from .drawing import plain_ticks
 
     xy, x0, y0, size = case[1]
@@ -381,8 +403,13 @@ def draw_block_case(ax, case, got):
     artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
     box = np.array([[x0, y0], [x0 + size, y0], [x0 + size, y0 + size], [x0, y0 + size], [x0, y0]])
     artists += ax.plot(box[:, 0], box[:, 1], color="#ff9f1c", linewidth=2)
-    ys, xs = _corners(x0, y0, size)
-    artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
+    # r73 08-1: the four decisive centres are the task's question ("Be exact about which
+    # points those are"): drawn only once two different answers have failed, as the words say
+    from .tries import hints_spent
+
+    if hints_spent("classify_block"):
+        ys, xs = _corners(x0, y0, size)
+        artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
     yours = "" if got is None else f", yours {got}"
     ax.set_xlabel(f"{case[2]}{yours}")
     lo = np.minimum(ring.min(axis=0), [x0, y0]) - 1
