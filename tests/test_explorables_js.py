@@ -517,6 +517,7 @@ def test_diamond_pixels_as_the_engines_on_ties():
                            rng.integers(0, 48, (100, 2, 2)) / 4.0,
                            rng.uniform(0, 12, (50, 2, 2))])  # fmt: skip
     ends[0] = [[0.5, 0.5], [4.5, 2.5]]  # the engine's docstring: column 1 is a tie
+    ends[1:3] = [[[1.0, 0.5], [9, 0.5]], [[0.5, 1.0], [8.5, 1.0]]]  # review r71: no far ties
     calls = [("diamondSteps", [e[0].tolist(), e[1].tolist(), 12, 10]) for e in ends]
     got = call_js(LINES, calls)
     unit = units_per_pixel(8)

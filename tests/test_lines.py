@@ -255,6 +255,17 @@ def test_a_tie_is_only_marked_where_gl_perturbation_decides():
     assert ties((0.5, 2.5), (10.5, 2.5)) == set()
     assert ties((0.5, 0.5), (9.5, 4.5)) == set()
     assert ties((0.5, 0.5), (4.5, 2.5)) == {(0, 1), (1, 1), (1, 3), (2, 3)}
+    # review r71: an end point on a diamond's edge line extended tied lo with 1 (or hi with 0)
+    # on diamonds the line never comes near, (1, 1), (2, 2), (1, 8), (2, 7) here; a tie only
+    # counts where the other comparisons hold. The real ones stay: p0 on (0, 0)'s corner
+    # (lit by -ε), p1 on (0, 8)'s corner (ends in it)
+    assert ties((1.0, 0.5), (9, 0.5)) == {(0, 0), (0, 8)}
+    # a line along the row boundary y = 1: rows 0 and 1 tie (ε lifts it into row 0), no more
+    assert ties((0.5, 1.0), (8.5, 1.0)) == {(r, c) for r in (0, 1) for c in range(9)}
+    # lesson 12a cell 6's line: its 4 won and 4 lost ties, as before
+    assert ties((0.5, 0.5), (8.5, 4.5)) == {
+        (1, 1), (2, 3), (3, 5), (4, 7), (0, 1), (1, 3), (2, 5), (3, 7)
+    }  # fmt: skip
 
 
 def test_y_major_trace_walks_rows():

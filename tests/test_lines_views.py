@@ -170,6 +170,7 @@ def test_blending_explorer_clears_to_black_or_white():
         assert np.allclose(ex.color[..., :3], premultiplied_rgb)
         ex.white.value = False
         assert ex.differ == black_differ
+        assert "cleared to transparent black" in ex.info.value  # named either way (r71)
     finally:
         ex.close()
 

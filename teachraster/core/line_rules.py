@@ -170,8 +170,9 @@ def _axis_bounds(centre, a_coord, d, half, tie):
 def diamond_states(a, b, unit, rows, cols, *, ties: bool = False):
     """For candidate pixels, whether the perturbed segment a→b meets their open diamond and
     whether it ends inside it: int8 :data:`LIT`, :data:`ENDS_INSIDE` or :data:`MISSED`;
-    with ``ties=True`` also (m,) bool, where GL's perturbation decided that state (one
-    comparison equal but for its ε terms, or the end point on the diamond's boundary; the
+    with ``ties=True`` also (m,) bool, where GL's perturbation decided that state (a
+    comparison equal but for its ε terms while the others hold, or the end point on the
+    diamond's boundary; the
     page's ``diamondState`` marks the same ones).
 
     In the rotated coordinates u = x + y, v = x - y the diamond is the open square
@@ -199,7 +200,12 @@ def diamond_states(a, b, unit, rows, cols, *, ties: bool = False):
     if not ties:
         return state
     on_edge = (np.abs(du) + np.abs(dv) <= 2 * half) & ((np.abs(du) == half) | (np.abs(dv) == half))
-    tie = along_u | along_v | (ok_u & ok_v & (t3 | t4 | t5)) | on_edge
+    # a comparison's tie decides the state only where the other two hold (or tie too): an
+    # end point on a diamond's edge line extended ties lo with 1 or hi with 0 on diamonds the
+    # line never comes near, which c1 rejects anyway (review r71)
+    h1, h2, h3 = c1 | t3, c2 | t4, c3 | t5
+    decides = (t3 & h2 & h3) | (t4 & h1 & h3) | (t5 & h1 & h2)
+    tie = along_u | along_v | (ok_u & ok_v & decides) | on_edge
     return state, tie
 
 

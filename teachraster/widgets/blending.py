@@ -230,5 +230,6 @@ class BlendingExplorer(Shown):
                 f"({back})"
                 f"{' (premultiplied)' if self.premultiplied.value else ''}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}"
-                f"{'; cleared to opaque white' if self.white.value else ''}"
+                # name the clear either way: unticked it is black (review r71)
+                f"; cleared to {'opaque white' if self.white.value else 'transparent black'}"
                 f"{'; stored alpha over a checkerboard' if self.alpha.value else ''}")  # fmt: skip

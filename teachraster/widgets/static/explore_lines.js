@@ -60,7 +60,10 @@ export function diamondState(a, b, unit, row, col) {
   const [du, dv] = [bu - (cx + cy), bv - (cx - cy)];
   const ends = du > -half && du <= half && dv > -half && dv <= half;
   const onEdge = Math.abs(du) + Math.abs(dv) <= 2 * half && (Math.abs(du) === half || Math.abs(dv) === half);
-  const tie = tieU || tieV || (okU && okV && (t3 || t4 || t5)) || onEdge;
+  // a comparison's tie decides only where the other two hold or tie too (review r71)
+  const [h1, h2, h3] = [c1 || t3, c2 || t4, c3 || t5];
+  const decides = (t3 && h2 && h3) || (t4 && h1 && h3) || (t5 && h1 && h2);
+  const tie = tieU || tieV || (okU && okV && decides) || onEdge;
   return [meets ? (ends ? ENDS_INSIDE : LIT) : MISSED, tie];
 }
 
