@@ -107,6 +107,8 @@ def test_06_review_r60_figures_say_what_they_draw():
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "grey vertical stripes across the rolled floor are the anchors" in md
+    # r68 06-4: "0 to rounding", with the printed value (the grey pixels on the stripes)
+    assert ns.stripe_error < 1e-9 and "error is 0 to rounding (the line" in md
     assert "What a GPU pays today" not in md and "Maxwell (2014)" in md and "Kepler (2012)" in md
     assert set(ns.RECIPROCAL_RATE) == {"Kepler (3.x, 2012)", "Maxwell (5.x, 2014)"}
     code = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
@@ -553,7 +555,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert "wobble" not in md and "Pentium-class" in md and "early-1990s" not in md
     # r41 06-6: the error is shown as a texture: affine's checks wrong across the floor,
     # N = 16's at few pixels (its far edge)
-    assert "checkerboard two cells down" in md
+    assert "The checkerboard below marks in vermillion" in md  # r68 06-2: right above it
     assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
     # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
     assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in next(
@@ -1645,3 +1647,44 @@ def test_11_standards_table_and_real_z_fighting():
     assert "VK_QUERY_TYPE_OCCLUSION" in table and "D3D12_QUERY_TYPE_OCCLUSION" in table
     assert any("glPolygonOffset" in t and "05b_depth_precision.ipynb" in t for t in text)
     assert not any("real GPU" in t for t in text)
+
+
+def test_06_figure_cells_rerun_after_later_cells():
+    """Review r68 06-1: no later cell rebinds a name a figure cell reads from an earlier cell
+    (cell 24's loop once rebound ``size`` to "512²", so re-running the §1 error map after §4
+    raised TypeError). Static: top-level bindings per code cell, from the source's AST."""
+    import ast
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    code = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"]
+    # IPython magics (``%matplotlib inline``) are not Python: left out of the parse
+    trees = [ast.parse("\n".join(line for line in s.splitlines() if not line.startswith("%")))
+             for s in code]  # fmt: skip
+
+    def bound(tree):
+        out = set()
+        for n in ast.walk(tree):
+            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store):
+                out.add(n.id)
+            elif isinstance(n, ast.arg):
+                out.add(n.arg)
+            elif isinstance(n, (ast.FunctionDef, ast.ClassDef)):
+                out.add(n.name)
+            elif isinstance(n, (ast.Import, ast.ImportFrom)):
+                out |= {(a.asname or a.name).split(".")[0] for a in n.names}
+        return out
+
+    binds = [bound(t) for t in trees]
+    clashes = {}
+    for i, (s, t) in enumerate(zip(code, trees)):
+        if "plt.show()" not in s:
+            continue
+        loads = {
+            n.id for n in ast.walk(t) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)
+        }
+        for name in loads - binds[i]:
+            later = [k for k in range(i + 1, len(code)) if name in binds[k]]
+            if later and any(name in binds[k] for k in range(i)):
+                clashes[(i, name)] = later
+    assert not clashes
