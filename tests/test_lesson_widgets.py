@@ -586,7 +586,8 @@ def test_depth_explorer_says_fighting_becomes_possible_and_names_the_far_plane()
         assert "from Δz = δ at <b>z ≈ 91.6</b>" in ex.info.value
         # review r59 05b-2: half the pixels at 130, more beyond (not "half from 130 on")
         assert (
-            "at half the pixels at <b>z ≈ 130</b> (Δz = 2δ) and at more beyond it" in ex.info.value
+            "at half the pixels at <b>z ≈ 130</b> (Δz = 2δ) and at more pixels beyond it"
+            in ex.info.value
         )
         assert "half the pixels from" not in ex.info.value
         ex.near.value = 10.0
@@ -798,3 +799,19 @@ def test_filter_explorers_error_panels_share_one_colour_scale():
                 assert np.nanmax(explorer.error) <= ERROR_RANGE, (name, tilt)
     finally:
         explorer.close()
+
+
+def test_depth_explorer_key_stays_off_the_plot():
+    """Review r67 05b-4: with unorm16 and reverse-Z the key hid the dotted line and the curve."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    ex = DepthPrecisionExplorer("unorm16", reverse=True, backend="image")
+    try:
+        ex.fig.canvas.draw()
+        renderer = ex.fig.canvas.get_renderer()
+        key = ex.ax.get_legend().get_window_extent(renderer)
+        assert not key.overlaps(ex.ax.get_window_extent(renderer))
+        assert not key.overlaps(ex.ax.xaxis.get_tightbbox(renderer))  # nor the z label
+        assert ex.fig.bbox.contains(key.x0, key.y0) and ex.fig.bbox.contains(key.x1, key.y1)
+    finally:
+        ex.close()

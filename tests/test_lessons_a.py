@@ -1285,7 +1285,8 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     assert not any(printed in c for c in code[:ask]) and printed in code[ask + 1]
     assert not any("smallest visible Δz at z = 1 is" in c for c in code)  # no third copy
     recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
-    assert "In both APIs it\ntakes a **reversed projection matrix**" in recipe
+    assert "takes a **reversed projection matrix**: a $[0, 1]$-depth projection" in recipe
+    assert "GL_LOWER_LEFT, GL_ZERO_TO_ONE" in recipe and "does not work" in recipe
     assert "glDepthRange(1, 0)" in recipe
 
 
@@ -1313,3 +1314,21 @@ def test_00_04_answers_wait_for_check_r66():
     assert not any("kink" in t or "straight *inside*" in t for t in said)
     assert "kink" in text[ask].split("explain=")[1]
     assert 'legend(loc="lower right"' in text[ask - 2]  # the |Δu| panel's key, below v2 v3
+
+
+def test_05a_05b_no_answer_in_the_markdown_before_check():
+    """Review r67: the Markdown under q_order, q_clip, q_reverse and q_bias gave their answers
+    (always visible, before Check); the clipping text said "always" and "need not cut at all"."""
+    a = {c.get("id"): "".join(c["source"]) for c in
+         json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]}  # fmt: skip
+    assert "cyclic_overlap" not in a["painter_scenes"] and "form a cycle" not in a["c07"]
+    assert not a["c15b"].startswith("Behind the eye") and "as the question above" not in a["c15b"]
+    assert "need not\ncut at all" not in a["c15b"] and "unless depth\n  clamping" in a["c19"]
+    assert "20 km" not in a["guard_md"] and "$x$ is huge" in a["guard_md"]
+    cells = json.loads((NOTEBOOKS / "05b_depth_precision.ipynb").read_text())["cells"]
+    ids = [c.get("id") for c in cells]
+    text = ["".join(c["source"]) for c in cells]
+    ask, held = ids.index("886229d7"), ids.index("c15")
+    assert "q_reverse.hold()" in text[held] and ask < held
+    assert not any("reversing changes nothing" in t for t in text[ask:held])
+    assert not any("three units" in t for t in text if "q_bias" not in t)

@@ -34,6 +34,8 @@ MAPPINGS = ("perspective", "reversed")
 #: at less than half its pixels up to the far plane)
 HALF_LABEL = "fights half the time (Δz = 2δ)"
 HALF_NOWHERE = "fights half the time: nowhere here"
+# the key in two columns under the axes, where no curve or line can run (review r67 05b-4)
+LEGEND_PLACE = {"loc": "upper center", "bbox_to_anchor": (0.5, -0.13), "ncols": 2}
 
 
 def distance(z: float) -> str:
@@ -160,7 +162,9 @@ class DepthPrecisionExplorer:
             ax.set(xlabel="view depth z", ylabel="smallest visible Δz", ylim=(1e-12, 1e3),
                    xlim=(0.01, self.far))  # fmt: skip
             ax.grid(True, which="major", alpha=0.3)
-            ax.legend(loc="upper left")
+            # below the axes, not over them: inside, the widest "now" entry (unorm16,
+            # reverse-Z) hid the dotted line and the curve it marks (review r67 05b-4)
+            ax.legend(**LEGEND_PLACE)
             self.ax = ax
             self.now = None  # the "now" entry's text, drawn alone (see _now_text)
             self._draw()
@@ -223,7 +227,7 @@ class DepthPrecisionExplorer:
         self.marker.set_xdata([x, x])
         legend = self.ax.get_legend()
         if legend is None:
-            legend = self.ax.legend(loc="upper left")
+            legend = self.ax.legend(**LEGEND_PLACE)
         # no dotted line, no key entry for one: it says so, greyed (review r59 05b-1)
         half = legend.get_texts()[-1]
         label = HALF_LABEL if self.half_from is not None else HALF_NOWHERE
@@ -294,14 +298,14 @@ class DepthPrecisionExplorer:
             where = "<b>no z-fighting</b> up to the far plane"
         else:
             # possible from the crossing on, at half the pixels where Δz = 2δ (1 - δ/Δz = ½),
-            # at more beyond it (review r59 05b-2: "from" read as "half from there on")
+            # at more pixels beyond it (review r59 05b-2: "from" read as "half from there on")
             where = f"z-fighting possible from Δz = δ at <b>z ≈ {distance(cross)}</b>"
             if self.half_from is None:
                 where += ", at less than half the pixels up to the far plane,"
             else:
                 where += (
                     f", at half the pixels at <b>z ≈ {distance(self.half_from)}</b> (Δz = 2δ) "
-                    "and at more beyond it,"
+                    "and at more pixels beyond it,"
                 )
         text = f"{self._label()}, far {self.far:g}: {where} for surfaces δ = {self.delta:g} apart"
         if at:
