@@ -35,7 +35,11 @@ MAPPINGS = ("perspective", "reversed")
 HALF_LABEL = "fights half the time (Δz = 2δ)"
 HALF_NOWHERE = "fights half the time: nowhere here"
 # the key in two columns under the axes, where no curve or line can run (review r67 05b-4)
-LEGEND_PLACE = {"loc": "upper center", "bbox_to_anchor": (0.5, -0.13), "ncols": 2}
+#: Below the axes, anchored at its left edge: the "now" entry (first column, under the
+#: reference) then keeps its place when the other column's text changes ("nowhere here"),
+#: where the "now" label drawn alone (_now_text) was put once (centred, the legend moved
+#: under it: a moved explorer drew its label elsewhere than a fresh one).
+LEGEND_PLACE = {"loc": "upper left", "bbox_to_anchor": (0.0, -0.13), "ncols": 2}
 
 
 def distance(z: float) -> str:
