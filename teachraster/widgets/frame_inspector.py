@@ -392,14 +392,12 @@ class FrameInspector(Holdable):
         if not self.frames:
             rows.append(control_row([self.samples, self.depth_test, self.glass]))
         controls = widgets.VBox(rows)
-        if self.pairs:  # r21 D3: the two tables right under the picture, then the chart
-            # (below both figures, the tables stood ~700 px under the picture clicked)
-            figures = [picture_row([self.frame_widget]), self.table,
-                       picture_row([self.hist_display.widget])]  # fmt: skip
-        else:  # r62 #4: the table beside the picture where the column holds both, right
-            # under it where not (it stood ~700 px below, under the chart, at 1024 x 768)
-            figures = [picture_row([self.frame_widget, self.table]),
-                       picture_row([self.hist_display.widget])]  # fmt: skip
+        # r21 D3, r62 #4: the table(s) right under the picture, then the chart (below both
+        # figures they stood ~700 px under the picture clicked). Not beside the picture in
+        # one row: at 1024 x 768 and 150 % the table's lines (479 px) were cut in a 315-px
+        # row, where straight in the box they scroll
+        figures = [picture_row([self.frame_widget]), self.table,
+                   picture_row([self.hist_display.widget])]  # fmt: skip
         # the two sliders straight in the box, as the TileExplorer's block slider: 100 % wide in a
         # wrapping row they would overflow it by their margins
         self.widget = widgets.VBox([title, controls, self.row, self.col, *figures])

@@ -317,10 +317,10 @@ class FillPlayer(Holdable):
         self.comparison = widgets.Accordion(
             children=[figure], selected_index=None,
             # one sample per pixel whatever the samples menu says: the title says so, or its
-            # 59 pixels read as the MSAA fill's 72 (review r58 00-6)
-            titles=("affine / perspective-correct at the pixel centres (1 sample per pixel): "
-                    "both interpolations, their error, and both along the row of the largest "
-                    "error",),
+            # 59 pixels read as the MSAA fill's 72 (review r58 00-6); one line at 1400 px (two
+            # lines made the player with it open 864 px, past a 900-px screen's 860)
+            titles=("affine / perspective-correct, 1 sample per pixel: both interpolations, "
+                    "their error, the row of the largest error",),
         )  # fmt: skip
         self._interp_stale = False
         self._keep_steps = False  # opened by the interpolation toggle: the steps stay
