@@ -13,7 +13,12 @@ or more). Times are CPU time of this process, the
 fastest of interleaved rounds: waiting for a core is not counted (reviews r17 06-1..3, r20
 06-1..4; the lesson's study is timed the same way, ``bench.run(clock=time.process_time)``).
 Speed is a benchmark's business, not a test's: the suite only runs this script's smoke run
-(``--quick``), which checks that every claim is reported.
+(``--quick``), which checks that every claim is reported. The lesson does not state these
+signs as facts: it prints its own run's verdict on each of the three it reads, in the words of
+the claims below ("subdivided slower than the exact divide at every N: True", "affine faster
+than perspective-correct, but above half its time: True", "incremental edges slower than direct
+in every arithmetic: True"), and its text says that those lines say whether (review r80 D3);
+this script measures the same signs over more rounds.
 
     python benchmarks/bench_lesson06_signs.py            # 9 rounds at the lesson's 256 px
     python benchmarks/bench_lesson06_signs.py --quick    # smoke run: 64 px, 2 rounds

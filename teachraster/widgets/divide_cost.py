@@ -175,9 +175,9 @@ class DivideCostExplorer(Shown):
             "What a divide costs decides the price of exactness",
             "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
             f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}. "
-            "A hollow ring: off the front though on its step line (it ties a front point on "
-            "cost and is less accurate, or on accuracy and costs more), as in the lesson's "
-            "depth chart.",
+            "Grey: off the front. A hollow ring: off the front though on its step line (it "
+            "ties a front point on cost and is less accurate, or on accuracy and costs more), "
+            "as in the lesson's depth chart.",
         )
         controls = control_row([self.divide, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
