@@ -797,3 +797,8 @@ def test_end_point_labels_keep_off_the_lit_squares_where_they_can():
     for bx, by, bw, bh in (lit, left):
         assert lx + 60 < bx or bx + bw < lx or ly < by or by + bh < ly - 15
     assert ly <= 300 - 3
+    # p1 by the right border, the line running through the spots left of it: flush with the
+    # border, below the point (the up-running line ended in row 0)
+    (flush,) = call_js(LINES, [("labelAt", [380, 100, 60, 400, [], 15, [0, 0], None,
+                                            {"soft": [[300, 80, 36, 50]], "far": 32}])])  # fmt: skip
+    assert flush == [338, 122]

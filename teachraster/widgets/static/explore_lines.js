@@ -385,8 +385,12 @@ export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, gri
   const left = Math.max(2, grid[0], x - 9 - textWidth);
   const spots = [[x + 9, y - 9], [left, y - 9], [x + 9, y + 22], [left, y + 22]];
   if (far > 0) {
-    spots.push([x + 9, y + 22 + far], [left, y + 22 + far], [x + 9, y - 9 - far],
-      [left, y - 9 - far]);
+    // where the spot right of the point runs past the border: flush with the border, over
+    // the point, where the line does not run (an up-running line ended in row 0)
+    const flush = x + 9 + textWidth > canvasWidth - 2 ?
+      Math.max(grid[0], canvasWidth - 2 - textWidth) : x + 9;
+    spots.push([flush, y + 22], [x + 9, y + 22 + far], [left, y + 22 + far],
+      [flush, y + 22 + far], [x + 9, y - 9 - far], [left, y - 9 - far], [flush, y - 9 - far]);
   }
   const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 &&
     ly - size >= grid[1] && lx >= grid[0] && ly + 3 <= bottom);
