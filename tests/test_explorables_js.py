@@ -762,3 +762,43 @@ def test_readout_in_front_of_the_near_plane_says_clipped():
         cells = [c.split("<")[0] for c in table.split("<td>")[1:]]
         values = [float(c.split()[0].replace(",", "")) for c in cells if c[:1].isdigit()]
         assert len(values) == 12 and min(values) >= 0, table  # value, step, count x 4
+
+
+def test_diamond_explorer_outlines_one_row_either_side_of_the_line():
+    """Review r83 12a-4: the walk outlined all 5 candidates of every column, rows 0-5 of the
+    6-row grid at the start. Now each walked column outlines the pixels lit, ended in or
+    decided by a tie, and the missed ones within one row of the line's row at its centre."""
+    walk = call_js(LINES, [("diamondSteps", [[0.5, 0.5], [8.5, 4.5], 10, 6])])[0]
+    kept = call_js(LINES, [("nearCandidates", [walk, s]) for s in walk["steps"]])
+    for s, near in zip(walk["steps"], kept, strict=True):
+        base = int(np.floor(s["minor"]))
+        assert all(abs(c["row"] - base) <= 1 for c in near)
+        rest = [c for c in s["cands"] if c not in near]
+        assert all(c["state"] == 0 and not c["tie"] for c in rest)
+        assert len(near) <= 3 < len(s["cands"]) or len(s["cands"]) <= 3
+    assert sum(len(n) for n in kept) < sum(len(s["cands"]) for s in walk["steps"])
+
+
+def test_end_point_labels_keep_off_the_lit_squares_where_they_can():
+    """Review r83 12a-3: after p1 was dragged to (9.5, 4.5), "p1 on a pixel centre" lay on the
+    lit diamond (4, 8). Lit squares are avoided where a spot allows it, also a spot farther
+    below the point; with none clear the label stays where it went before."""
+    lit = [105, 70, 64, 64]  # a lit square under both near spots right of (100, 100)
+    left = [0, 70, 100, 64]
+    (plain, moved, nowhere) = call_js(LINES, [
+        ("labelAt", [100, 100, 60, 400, [], 15]),
+        ("labelAt", [100, 100, 60, 400, [], 15, [0, 0], None,
+                     {"soft": [lit, left], "far": 32, "bottom": 300}]),
+        ("labelAt", [100, 100, 60, 400, [], 15, [0, 0], None,
+                     {"soft": [[0, 0, 400, 400]], "far": 32, "bottom": 300}]),
+    ])  # fmt: skip
+    assert plain == [109, 91] and nowhere == [109, 91]
+    lx, ly = moved
+    for bx, by, bw, bh in (lit, left):
+        assert lx + 60 < bx or bx + bw < lx or ly < by or by + bh < ly - 15
+    assert ly <= 300 - 3
+    # p1 by the right border, the line running through the spots left of it: flush with the
+    # border, below the point (the up-running line ended in row 0)
+    (flush,) = call_js(LINES, [("labelAt", [380, 100, 60, 400, [], 15, [0, 0], None,
+                                            {"soft": [[300, 80, 36, 50]], "far": 32}])])  # fmt: skip
+    assert flush == [338, 122]

@@ -278,12 +278,12 @@ def test_12b_predictions_ask_before_the_rule_is_given(nsb):
     ns = nsb
     before_resolve = _cells_before("12b_blending", "msaaq", kinds=("markdown",))
     assert "per sample" not in before_resolve.split("## 5. MSAA")[1]
-    assert ns.resolve_choices["per_sample"].startswith(f"{ns.resolved_alpha:.3f}")
-    # r51 12b-4: four reasonings, every one about samples, so the word gives nothing away
-    assert len(set(ns.resolve_choices.values())) == 4
-    assert all("sample" in text for text in ns.resolve_choices.values())
-    shown = {text.split(":")[0] for text in ns.resolve_choices.values()}
-    assert len(shown) == 4  # four different numbers as printed
+    # r83 12b-1: a number to type (the reasonings, offered as choices, cued the right one);
+    # every wrong rule's number lies outside the tolerance
+    asked = _cells_before("12b_blending", "msaaout").split("q_resolve = Predict(")[1]
+    assert "answer=resolved_alpha," in asked and "tolerance=resolve_tolerance" in asked
+    assert all(abs(v - ns.resolved_alpha) > ns.resolve_tolerance for v in ns.wrong_alphas.values())
+    assert len({round(v, 3) for v in ns.wrong_alphas.values()}) == 3
     before_code = _cells_before("12b_blending", "f9afb546")
     assert "2.2" not in before_code and "2.4" not in before_code
     assert "codes on dark" not in before_code  # r51 12b-3: the side of 128 is not given
@@ -404,3 +404,65 @@ def test_12b_prints_read_as_numbers(nsb):
     printed = streams(executed("12b_blending").notebook())
     assert "triangles: 1,214; 448; 399; 243" in printed
     assert f"by at most {nsb.mul_ulp} unit(s) in the last place" in printed and nsb.mul_ulp <= 2
+
+
+def test_12b_nothing_unheld_below_a_prediction_states_its_answer(nsb):
+    """Review r83 12b-1, 12b-2: the Markdown right below q_resolve stated "per sample" and the
+    resolved alpha's rule, the one below q_code the power law (and so the side of 128). Both
+    moved into the explanations; every Markdown cell up to the next section is checked, and
+    the code cells that would show the answer hold it."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "notebooks" / "12b_blending.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    ids = [c.get("id") for c in cells]
+
+    def below(cell_id):
+        at = ids.index(cell_id) + 1
+        end = next(k for k in range(at, len(cells)) if "".join(cells[k]["source"])
+                   .startswith("## "))  # fmt: skip
+        return cells[at:end]
+
+    for cell in below("msaaq"):
+        text = "".join(cell["source"])
+        if cell["cell_type"] == "markdown":
+            assert "per sample" not in text and "0.8125" not in text and "0.859" not in text
+    for cell in below("f9afb546"):
+        text = "".join(cell["source"])
+        if cell["cell_type"] == "markdown":
+            for cue in ("2.2", "2.4", "power", "darker", "more than half of the codes"):
+                assert cue not in text, cue
+    for cell_id in ("a8bf3f59", "81a9cf10"):  # the mix and the edge, each darker one way
+        assert "".join(cells[ids.index(cell_id)]["source"]).startswith("q_code.hold()")
+    explains = {cell_id: "".join(cells[ids.index(cell_id)]["source"]).split("explain=")[1]
+                for cell_id in ("msaaq", "f9afb546")}  # fmt: skip
+    assert "per sample" in explains["msaaq"] and "0.8125" not in explains["msaaq"]
+    assert "1/2.2" in explains["f9afb546"] and "darkens" in explains["f9afb546"]
+
+
+def test_12b_additive_comparison_says_it_is_in_float(nsb):
+    """Review r83 12b-5: onto §2's white clear every covered pixel of the additive layers
+    exceeds 1 (an 8-bit target would clamp them all to white); the text says so and the cell
+    prints the count it rests on."""
+    assert nsb.add_above_1 == int(nsb.add_covered.sum()) == sum(nsb.n_layers[1:])
+
+
+def test_12a_review_r83_precision_and_the_wide_line_question(ns):
+    """Review r83 12a-1, 12a-2, 12a-8: Direct3D's antialiased line is a guideline filter, not
+    exact area (MicrosoftDocs, *Rasterization Rules*, "Hardware need not exactly match this
+    algorithm"); the parallelogram panel is llvmpipe's fill of GL's shape, and the spec's own
+    columns of w diamond-exit fragments, printed, agree with it here; §4 asks which pixels
+    the rectangle and the parallelogram disagree on before the figure that marks them."""
+    text = " ".join(_cells_before("12a_lines", "db845d96", kinds=("markdown",)).split())
+    assert "whose area coverage multiplies alpha" not in text
+    assert "a guideline filter, not exact area" in text and "guideline filter that hardware" in text
+    assert int(ns.spec_columns.sum()) == int(ns.gl_shape.sum()) == 52 and ns.spec_differ == 0
+    # the question's answer is the figure's outlined pixels; its explanation's counts
+    assert len(ns.rect_only) + len(ns.gl_only) == len(ns.wide_differ) == 9
+    assert {tuple(map(int, rc)) for rc in ns.wide_differ} == set(ns.rect_only) | set(ns.gl_only)
+    assert len(ns.rect_only) == 7 and len(ns.gl_only) == 2 and 4 < ns.tall < 4.5
+    code = _cells_before("12a_lines", "widetbl", kinds=("code",))
+    assert "filled as two triangles, as llvmpipe does" in code
+    asked = code.index("q_wide = PredictPixels(")
+    assert asked < code.index("q_wide.hold()") < code.index("wide_differ = np.argwhere")

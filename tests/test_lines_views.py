@@ -251,6 +251,32 @@ def test_line_player_gets_a_new_slider_when_the_rule_changes_the_step_count():
         player.close()
 
 
+def test_line_player_keeps_its_column_and_axes_box_across_rules():
+    """Review r83 12a-6: the slider kept its step index when the rule changed, so Bresenham's
+    last step became the diamond rule's next-to-last, and the axes moved sideways with the
+    caption's length. Now the column on show stays (the end stays the end), and the axes box
+    is the same for every rule and step (the caption has room of its own)."""
+    from teachraster.widgets.line_player import LinePlayer
+
+    player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule="bresenham", step=7, backend="image")
+    try:
+        boxes = set()
+        for rule in ("diamond", "dda", "bresenham", "diamond"):
+            player.rule.value = rule
+            assert player.caption.value.split(": ")[1].startswith("column 5 "), rule
+            player.fig.canvas.draw()
+            boxes.add(tuple(np.round(player.view.image.axes.get_position().bounds, 6)))
+        player.slider.value = player.slider.max  # the diamond rule's last step, column 12
+        for rule in ("bresenham", "dda", "diamond"):
+            player.rule.value = rule
+            assert player.slider.value == player.slider.max, rule
+            player.fig.canvas.draw()
+            boxes.add(tuple(np.round(player.view.image.axes.get_position().bounds, 6)))
+        assert len(boxes) == 1, boxes
+    finally:
+        player.close()
+
+
 def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
     """Lesson 12a's player, rule diamond (review r7): the segment (0.5, 0.5) -> (12.5, 5.5)
     ends at x = 12.5, so the walk stops at column 12 (it went on to a column 13 with the

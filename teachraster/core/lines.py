@@ -213,7 +213,7 @@ def wide_line_triangles(p0, p1, line_width: float, shape: str = "rectangle") -> 
     """(2, 3, 2): a wide line as two triangles sharing the diagonal p0 + n → p1 - n.
 
     ``shape="rectangle"`` (CONVENTIONS, what ``rasterize_line`` fills): n is the half-width
-    normal of the segment. ``shape="gl"``: GL's aliased wide line (GL 4.6 §14.5.2.1), the
+    normal of the segment. ``shape="gl"``: GL's aliased wide line (GL 4.6 §14.5.2.2 *Wide Lines*), the
     parallelogram offset by half the width along the *minor* axis only (n = (0, w/2) for an
     x-major line), which is what llvmpipe fills. Empty for a zero-length line.
     """

@@ -24,6 +24,11 @@ from .common import (
 )
 from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
+#: The figure's share kept below the axes for the step's caption, out of the layout: the axes
+#: box is then the same for every step and every rule (review r83 12a-6: it moved sideways by
+#: some 20 px when the rule, and with it the caption, changed).
+CAPTION_ROOM = 0.2
+
 
 class LinePlayer(Shown):
     """Play a traced line step by step; ``rule`` toggles diamond / Bresenham / DDA.
@@ -46,6 +51,8 @@ class LinePlayer(Shown):
     >>> player.rule.value = "bresenham"
     >>> "error term" in player.trace.caption(3)
     True
+    >>> player.where(player.slider.value).split(": ")[1]  # the column kept, not the step index
+    'column 1 (steps 0 and 1 set the line up)'
     >>> player.close()
     """
 
@@ -66,8 +73,10 @@ class LinePlayer(Shown):
         self._wire(self.slider)
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
-            self.fig.set_layout_engine("constrained")
+            # the caption (under the axes) is left out of the layout, in room of its own
+            self.fig.set_layout_engine("constrained", rect=(0, CAPTION_ROOM, 1, 1 - CAPTION_ROOM))
             self.view = LineView.create(self.fig.add_subplot(), self.fill, self.slider.value)
+            self.view.caption.set_in_layout(False)
             # constrained layout settles on the second draw (the first one measured the top
             # axis's labels before they were placed, and cut "column j" and the caption off)
             self.fig.draw_without_rendering()
@@ -115,7 +124,33 @@ class LinePlayer(Shown):
         self._link = widgets.jslink((self.play, "value"), (slider, "value"))
         slider.observe(lambda change: self.show(change["new"]), "value")
 
+    def matching_step(self, old_step, at_end: bool) -> int:
+        """The step of the current trace that shows what ``old_step`` (a Step of another
+        rule's trace) showed: the same column (row), the same set-up step, or the last step
+        when the slider was at its end or the column is not walked by this rule."""
+        last = len(self.trace) - 1
+        if at_end:
+            return last
+        if old_step.work is None:  # a set-up step: the same one
+            return min(old_step.index, last)
+        for k in range(last + 1):
+            step = self.trace.step(k)
+            if (
+                step.kind == old_step.kind
+                and step.kind in ("column", "row")
+                and (
+                    (step.col if step.kind == "column" else step.row)
+                    == (old_step.col if old_step.kind == "column" else old_step.row)
+                )
+            ):
+                return k
+        return last
+
     def _rerun(self) -> None:
+        # the column on show stays on show (review r83 12a-6: the step index stayed, and the
+        # last step of Bresenham became the next-to-last of the diamond rule)
+        old_step = self.trace.step(self.slider.value)
+        at_end = self.slider.value == self.slider.max
         self.fill = rasterize_line(self.p0, self.p1, self.width, self.height,
                                    rule=self.rule.value, trace=True)  # fmt: skip
         self.view.trace = self.trace
@@ -123,5 +158,6 @@ class LinePlayer(Shown):
         # first range for Home and End, and after Bresenham (13 steps) -> diamond (14) End
         # stopped one step short (review r27, lesson 12a; renew_slider)
         self.slider = renew_slider(self.slider, self.controls, max=len(self.trace) - 1,
+                                   value=self.matching_step(old_step, at_end),
                                    wire=self._wire)  # fmt: skip
         self.show(self.slider.value)

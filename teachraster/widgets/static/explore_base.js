@@ -262,10 +262,12 @@ export function drawGrid(ctx, x0, y0, W, H, cell, colour, labels = false) {
   }
   ctx.stroke();
   if (!labels) return;
-  ctx.fillStyle = "#555";
   // at least 14 px (11 read 10 px at 1024 px, review r9 12 c8), more on a wide canvas; two
-  // digits at 17 px still fit a 30-px margin on the left and 24 above
-  ctx.font = `${textPx(ctx, 14)}px sans-serif`;
+  // digits at 17 px still fit a 30-px margin on the left and 24 above. `labels` may be the
+  // size itself (the diamond explorer's 17 px, darker, for a projector: review r83 12a-3)
+  const big = typeof labels === "number";
+  ctx.fillStyle = big ? "#333" : "#555";
+  ctx.font = `${textPx(ctx, big ? labels : 14)}px sans-serif`;
   ctx.textAlign = "center";
   for (let c = 0; c < W; c += W > 20 ? 2 : 1) ctx.fillText(String(c), x0 + (c + 0.5) * cell, y0 - 8);
   ctx.textAlign = "right";

@@ -157,7 +157,8 @@ function mount(el, data, host) {
     "segment. Drag p0 or p1: near a pixel centre, a diamond corner or a pixel corner they " +
     "snap onto it, where ties are. Step along the line with the slider (its left end is the " +
     "first step, its right end all of them) or the arrow keys.");
-  const m = { left: 30, top: 24 };
+  // axis numbers at 17 px, for the back of a lecture hall (review r83 12a-3): room for them
+  const m = { left: 36, top: 30 };
   const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 30, maxCell: 64,
     fitW: 760, fitH: 480, margin: m, pad: 14,
     label: "a line over the pixel grid with every pixel's diamond" });
@@ -188,13 +189,17 @@ function mount(el, data, host) {
     const shown = state.step < 0 ? walk.steps : walk.steps.slice(0, state.step + 1);
     shown.forEach((s, k) => {
       const current = state.step >= 0 && k === state.step;
-      for (const c of s.cands) drawDiamond(ctx, c, toPx, cell, current);
+      for (const c of nearCandidates(walk, s)) drawDiamond(ctx, c, toPx, cell, current);
     });
     // the "tie" marks go on top of the line, and the end points' labels keep clear of them
     // (reviews r31, r34: "p1 on a pixel centre" covered a tie, the line crossed one)
     const ties = shown.flatMap((s) => s.cands.filter((c) => c.tie && c.state !== MISSED));
     const boxes = ties.map((c) => tieBox(ctx, c, toPx, cell));
-    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped, boxes, [m.left, m.top]);
+    // the lit squares: an end point's label keeps off them where it can (review r83 12a-3)
+    const litBoxes = shown.flatMap((s) => s.cands.filter((c) => c.state === LIT))
+      .map((c) => [...toPx([c.col, c.row]), cell, cell]);
+    drawSegment(ctx, toPx(state.p0), toPx(state.p1), snapped, boxes, [m.left, m.top],
+      { soft: litBoxes, far: cell / 2, bottom: m.top + H * cell + 12 });
     drawTies(ctx, boxes);
     const lit = walk.steps.reduce((n, s) => n + s.cands.filter((c) => c.state === LIT).length, 0);
     count.textContent = `${lit} pixel${lit === 1 ? "" : "s"} lit, ${walk.steps.length} ` +
@@ -253,8 +258,18 @@ function mount(el, data, host) {
   };
 }
 
+// The candidates of a walked column (row) worth outlining: those the rule lit, ended in or
+// decided by a tie, and the missed ones within one row (column) of the line's row at the
+// column's centre. Those farther out are tested (SPREAD) but can never be met, so outlining
+// them showed more of the grid than the walk looks at (review r83 12a-4).
+export function nearCandidates(walk, s) {
+  const base = Math.floor(s.minor);
+  return s.cands.filter((c) => c.state !== MISSED || c.tie ||
+    Math.abs((walk.xMajor ? c.row : c.col) - base) <= 1);
+}
+
 function drawLineGrid(ctx, W, H, cell, m, toPx) {
-  drawGrid(ctx, m.left, m.top, W, H, cell, "#c8c8c8", true);
+  drawGrid(ctx, m.left, m.top, W, H, cell, "#c8c8c8", 17);
   // every pixel's diamond, faint, and its centre
   ctx.strokeStyle = "#e0e0e0";
   ctx.beginPath();
@@ -331,7 +346,7 @@ function haloText(ctx, text, x, y, colour) {
   ctx.fillText(text, x, y);
 }
 
-function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
+function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0], more = {}) {
   ctx.strokeStyle = "#000";
   ctx.lineWidth = 2.5;
   ctx.beginPath();
@@ -348,7 +363,7 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
     const text = `p${i}${snapped[i] ? ` on ${snapped[i]}` : ""}`;
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
     const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid,
-      [p, q]);
+      [p, q], more);
     // a white halo: the label crosses the line and the diamonds beside the end point
     haloText(ctx, text, x, y, "#111");
   });
@@ -361,21 +376,35 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0]) {
 // that covers none of the boxes `avoid` ([x, y, w, h]: the "tie" marks), or the first inside
 // if every one covers a mark. A spot the segment itself (`segment`: [p, q], canvas pixels)
 // runs through comes after those it does not (review r63 12a-5: "p1 on a pixel centre" was
-// written across the line).
+// written across the line). `more.soft` boxes (the lit squares) are kept clear of where some
+// spot allows it, also the spots `more.far` px farther above and below the point (above
+// `more.bottom`); review r83 12a-3: "p1 on a pixel centre" lay on a lit diamond.
 export function labelAt(x, y, textWidth, canvasWidth, avoid = [], size = 15, grid = [0, 0],
-  segment = null) {
+  segment = null, more = {}) {
+  const { soft = [], far = 0, bottom = Infinity } = more;
   const left = Math.max(2, grid[0], x - 9 - textWidth);
   const spots = [[x + 9, y - 9], [left, y - 9], [x + 9, y + 22], [left, y + 22]];
+  if (far > 0) {
+    // where the spot right of the point runs past the border: flush with the border, over
+    // the point, where the line does not run (an up-running line ended in row 0)
+    const flush = x + 9 + textWidth > canvasWidth - 2 ?
+      Math.max(grid[0], canvasWidth - 2 - textWidth) : x + 9;
+    spots.push([flush, y + 22], [x + 9, y + 22 + far], [left, y + 22 + far],
+      [flush, y + 22 + far], [x + 9, y - 9 - far], [left, y - 9 - far], [flush, y - 9 - far]);
+  }
   const inside = spots.filter(([lx, ly]) => lx + textWidth <= canvasWidth - 2 &&
-    ly - size >= grid[1] && lx >= grid[0]);
-  const clear = ([lx, ly]) => avoid.every(([bx, by, bw, bh]) =>
+    ly - size >= grid[1] && lx >= grid[0] && ly + 3 <= bottom);
+  const off = (boxes) => ([lx, ly]) => boxes.every(([bx, by, bw, bh]) =>
     lx + textWidth < bx || bx + bw < lx || ly < by || by + bh < ly - size);
+  const clear = off(avoid);
+  const clearSoft = off(soft);
   const crossed = ([lx, ly]) => segment !== null && Array.from({ length: 65 }, (_, k) => k / 64)
     .some((t) => {
       const sx = segment[0][0] + t * (segment[1][0] - segment[0][0]);
       const sy = segment[0][1] + t * (segment[1][1] - segment[0][1]);
       return sx >= lx && sx <= lx + textWidth && sy >= ly - size && sy <= ly + 3;
     });
-  return inside.find((s) => clear(s) && !crossed(s)) || inside.find(clear) || inside[0] ||
+  return inside.find((s) => clear(s) && clearSoft(s) && !crossed(s)) ||
+    inside.find((s) => clear(s) && !crossed(s)) || inside.find(clear) || inside[0] ||
     [left, y + 22];
 }
