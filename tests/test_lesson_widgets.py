@@ -815,3 +815,26 @@ def test_depth_explorer_key_stays_off_the_plot():
         assert ex.fig.bbox.contains(key.x0, key.y0) and ex.fig.bbox.contains(key.x1, key.y1)
     finally:
         ex.close()
+
+
+def test_depth_explorer_key_clears_the_z_label_and_fits_in_the_lesson_style():
+    """Review r79 05b-12: in lesson 05b (the classroom style, opened on unorm24) the key under
+    the axes covered the lower half of "view depth z", and with float32 and reverse-Z ran off
+    the figure's right edge. Every format and mapping, switched to as a student does."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    for fmt in ("unorm16", "unorm24", "float32"):
+        for reverse in (False, True):
+            ex = DepthPrecisionExplorer("unorm24", backend="image", style="classroom")
+            try:
+                ex.format.value, ex.reverse.value = fmt, reverse
+                ex.fig.canvas.draw()
+                renderer = ex.fig.canvas.get_renderer()
+                key = ex.ax.get_legend().get_window_extent(renderer)
+                label = ex.ax.xaxis.label.get_window_extent(renderer)
+                assert key.y1 < label.y0, (fmt, reverse)  # wholly below the z label
+                assert 0 <= key.x0 and key.x1 <= ex.fig.bbox.width, (fmt, reverse, key.x1)
+                now = ex.now.get_window_extent(renderer)  # the "now" label inside its key
+                assert key.x0 < now.x0 and now.x1 < key.x1 and key.y0 < now.y0 < key.y1
+            finally:
+                ex.close()

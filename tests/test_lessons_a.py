@@ -1286,8 +1286,12 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     assert not any("smallest visible Δz at z = 1 is" in c for c in code)  # no third copy
     recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
     assert "takes a **reversed projection matrix**: a $[0, 1]$-depth projection" in recipe
-    assert "GL_LOWER_LEFT, GL_ZERO_TO_ONE" in recipe and "does not work" in recipe
-    assert "glDepthRange(1, 0)" in recipe
+    assert "GL_LOWER_LEFT, GL_ZERO_TO_ONE" in recipe and "does not work" not in recipe
+    # review r79 05b-9: swapping near and far in GL's [-1, 1] matrix does reverse the depth;
+    # what it loses is precision (said after the question, held with its answer)
+    held = next(c for c in code if c.startswith("q_reverse.hold()") and "glClipControl" in c)
+    assert "does reverse the depth" in held and "What is lost is\n> the precision" in held
+    assert "glDepthRange(1, 0)" in held and "does not work" not in held
 
 
 def test_00_04_answers_wait_for_check_r66():
@@ -1332,3 +1336,53 @@ def test_05a_05b_no_answer_in_the_markdown_before_check():
     assert "q_reverse.hold()" in text[held] and ask < held
     assert not any("reversing changes nothing" in t for t in text[ask:held])
     assert not any("three units" in t for t in text if "q_bias" not in t)
+    # review r79: what answers q_reverse and q_order waits for Check, the heading included;
+    # no visible cell computes q_bias's units
+    kinds = [c["cell_type"] for c in cells]
+    shown = [t for k, t in zip(kinds, text) if k == "markdown"]
+    assert not any("float32 spent" in t or "wastes its dense" in t for t in shown)
+    assert not any("reverse-Z (no gain)" in t or "spread evenly" in t for t in shown)
+    for k in range(len(cells)):
+        if "q_reverse = Predict(" in text[k] or kinds[k] != "code":
+            continue
+        if "float32 spent" in text[k] or "spread evenly" in text[k] or "per_decade" in text[k]:
+            assert text[k].startswith("q_reverse.hold()"), text[k][:60]
+    visible = [t for c, t in zip(cells, text) if c["cell_type"] == "code"
+               and not c["metadata"].get("jupyter", {}).get("source_hidden")]  # fmt: skip
+    assert not any("units=float(k)" in t or "units_clip" in t for t in visible)
+    a_cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    a_text = ["".join(c["source"]) for c in a_cells]
+    a_ask = next(i for i, t in enumerate(a_text) if "PredictOrder(" in t)
+    for c, t in zip(a_cells[a_ask + 1 :], a_text[a_ask + 1 :]):
+        if "in a cycle" in t:  # the remedy for the sticks' cycle: held, in a folded cell
+            assert t.startswith("q_order.hold()") and c["metadata"]["jupyter"]["source_hidden"]
+
+
+@pytest.mark.notebook
+def test_05a_05b_reader_r79_contradictions():
+    """Review r79: 05a's shares named (not "the share printed last"), the rings printed two
+    cells above, the band's reason (w < 0, not x/w growing), a float32 with stencil costs 8
+    bytes; 05b's storage column for DEPTH32F_STENCIL8, and the reversed curve turning over
+    at f/2 instead of "falling steeply" from z = 500."""
+    ns = lesson("05a_zbuffer")
+    text = "\n".join(_cells("05a_zbuffer", "markdown"))
+    small, large = ns.layer_share["integrated, DDR5-5600"]
+    rtx = ns.layer_share["discrete, RTX 4090"][1]
+    assert f"takes {100 * large:.1f} % of the integrated GPU's bandwidth ({100 * rtx:.1f} %" in text
+    assert "the share printed last" not in text
+    assert "(the cell two above prints each ring)" in text
+    code = _cells("05a_zbuffer", "code")
+    at = next(i for i, c in enumerate(code) if "on top at each ring" in c)
+    assert "q_order.hold()" in code[at + 1] and "plt.subplots(3, 2" in code[at + 1]
+    assert "grows\nwithout bound" not in text and "$g\\,w < 0$" in text
+    assert any("D32F_S8, takes 8 bytes" in c for c in code)
+    assert any('title=f"painter\'s algorithm\\n({order})"' in c for c in code)
+    assert any('f"u = {clip_tri_u[2, 0]:.2f} (dropped)"' in c for c in code)
+    table = next(c for c in _cells("05b_depth_precision", "markdown") if "| Vulkan" in c)
+    gl = next(line for line in table.splitlines() if line.startswith("| OpenGL 4.6"))
+    assert "`DEPTH32F_STENCIL8` (32 + 8; stored as 64 bits packed or as separate" in gl
+    header = next(line for line in table.splitlines() if line.startswith("| | depth formats"))
+    assert "component bits" in header
+    ns_b = lesson("05b_depth_precision")
+    assert not any("falls steeply" in c for c in _cells("05b_depth_precision", "code"))
+    assert round(ns_b.share[ns_b.z_late], 2) == 0.36 and ns_b.share[ns_b.z_end] < 0.05

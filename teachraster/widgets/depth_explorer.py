@@ -35,11 +35,15 @@ MAPPINGS = ("perspective", "reversed")
 HALF_LABEL = "fights half the time (Δz = 2δ)"
 HALF_NOWHERE = "fights half the time: nowhere here"
 # the key in two columns under the axes, where no curve or line can run (review r67 05b-4)
-#: Below the axes, anchored at its left edge: the "now" entry (first column, under the
-#: reference) then keeps its place when the other column's text changes ("nowhere here"),
-#: where the "now" label drawn alone (_now_text) was put once (centred, the legend moved
-#: under it: a moved explorer drew its label elsewhere than a fresh one).
-LEGEND_PLACE = {"loc": "upper left", "bbox_to_anchor": (0.0, -0.13), "ncols": 2}
+#: At the figure's lower left corner, below the z label (the layout keeps its height free:
+#: anchored to the axes it covered the label, review r79 05b-12), anchored at its left edge:
+#: the "now" entry (first column, under the reference) then keeps its place when the other
+#: column's text changes ("nowhere here"), where the "now" label drawn alone (_now_text) was
+#: put once (centred, the legend moved under it: a moved explorer drew its label elsewhere
+#: than a fresh one). From the figure's edge, not the axes', the widest key (float32,
+#: reverse-Z, "nowhere here") fits the figure's width.
+LEGEND_PLACE = {"loc": "lower left", "bbox_to_anchor": (0.0, 0.0), "ncols": 2,
+                "borderaxespad": 0.3, "columnspacing": 1.0, "handlelength": 1.6}  # fmt: skip
 
 
 def distance(z: float) -> str:
@@ -168,10 +172,11 @@ class DepthPrecisionExplorer:
             ax.grid(True, which="major", alpha=0.3)
             # below the axes, not over them: inside, the widest "now" entry (unorm16,
             # reverse-Z) hid the dotted line and the curve it marks (review r67 05b-4)
-            ax.legend(**LEGEND_PLACE)
             self.ax = ax
+            self._legend()
             self.now = None  # the "now" entry's text, drawn alone (see _now_text)
             self._draw()
+            self._keep_room_for_legend()
             self.fig.canvas.draw()  # the constrained layout, once: the blit keeps it
             self.fig.set_layout_engine("none")
             self.now = self._now_text()
@@ -229,9 +234,7 @@ class DepthPrecisionExplorer:
         self.curve.set_label(f"now: {self._label()}")
         x = np.nan if self.half_from is None else self.half_from
         self.marker.set_xdata([x, x])
-        legend = self.ax.get_legend()
-        if legend is None:
-            legend = self.ax.legend(**LEGEND_PLACE)
+        legend = self.ax.get_legend() or self._legend()
         # no dotted line, no key entry for one: it says so, greyed (review r59 05b-1)
         half = legend.get_texts()[-1]
         label = HALF_LABEL if self.half_from is not None else HALF_NOWHERE
@@ -252,6 +255,21 @@ class DepthPrecisionExplorer:
         if self.now is not None:
             entry.set_color((0.0, 0.0, 0.0, 0.0))
             self.now.set_text(self.curve.get_label())
+
+    def _legend(self):
+        """The key at the figure's lower left corner, outside the layout (its room is kept
+        by :meth:`_keep_room_for_legend`)."""
+        legend = self.ax.legend(**LEGEND_PLACE, bbox_transform=self.fig.transFigure)
+        legend.set_in_layout(False)
+        return legend
+
+    def _keep_room_for_legend(self) -> None:
+        """Lay the axes out above the key: its height (two rows, whatever the format) and a
+        small gap are taken from the bottom of the constrained layout."""
+        self.fig.canvas.draw()
+        key = self.ax.get_legend().get_window_extent()
+        bottom = (key.y1 + 0.1 * self.fig.dpi) / self.fig.bbox.height
+        self.fig.get_layout_engine().set(rect=(0.0, bottom, 1.0, 1.0 - bottom))
 
     def _widest(self) -> str:
         """The "now" label of this format with the widest near value (same-width digits)."""
