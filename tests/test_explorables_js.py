@@ -643,6 +643,29 @@ def test_attribute_surfaces_as_the_engine():
             assert js["inv"] == pytest.approx(float(want_lam[k] @ (1 / np.array(w))), abs=1e-13)
 
 
+def test_attribute_surfaces_readout_follows_w_and_the_toggles():
+    # review r78 03-1: with every w equal, f/w and 1/w are no scaled copies (1/w is flat); the
+    # readout speaks of the blue sheet only while it is drawn
+    xy, f = [[2.0, 2.0], [14.0, 4.0], [5.0, 14.0]], [0.2, 0.9, 0.5]
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    flat, deep = [1.0, 1.0, 1.0], [1.0, 1.0, 4.0]
+    gaps = call_js(parts, [("largestGap", [xy, w, f]) for w in (flat, deep)])
+    shows = [{"correct": c, "affine": a, "fw": False, "inv": False}
+             for c in (True, False) for a in (True, False)]  # fmt: skip
+    calls = [("readoutText", [w, s, g]) for w, g in zip((flat, deep), gaps) for s in shows]
+    got = call_js(parts, calls)
+    for text in got[:4]:
+        assert "scaled copies" not in text
+        assert "f/w is f scaled by the same 1/w at every vertex, and 1/w is a constant" in text
+    assert "drawn once, in blue" in got[0] and "drawn once, in blue" in got[1]
+    assert "orange" in got[2] and "blue" not in got[2]
+    assert "blue" not in got[3] and "sheet" not in got[3]
+    for text in got[4:]:
+        assert "Largest |affine − perspective-correct|" in text
+    assert "vermillion bar" in got[4]
+    assert all("Switch both f sheets on" in t for t in got[5:])
+
+
 def test_eye_ray_t_of_q_and_the_peak_for_ratio_2():
     from teachraster.plotting.projection import Segment
 

@@ -38,6 +38,28 @@ export function largestGap(xy, w, f, n = 48) {
   return best;
 }
 
+// the sentence under the picture: it speaks of a sheet only while that sheet is drawn
+// (review r78 03-1: with every w equal, 1/w is a constant, f/w is f scaled by it)
+export function readoutText(w, show, gap) {
+  if (w.every((v) => v === w[0]) || !(gap.gap > 1e-9)) {
+    let text = "Every w is equal: f/w is f scaled by the same 1/w at every vertex, and 1/w is " +
+      "a constant, so their ratio is the affine plane itself.";
+    if (show.correct) {
+      text += " The perspective-correct and affine sheets coincide and are drawn once, in blue.";
+    } else if (show.affine) {
+      text += " The affine sheet (orange) is the perspective-correct one too.";
+    }
+    return text;
+  }
+  const where = `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)})`;
+  const text = `Largest |affine − perspective-correct| over the triangle: ` +
+    `<b>${fmt(gap.gap, 3)}</b> ${where}, where f = ${fmt(gap.s.correct, 3)} but the affine ` +
+    `plane gives ${fmt(gap.s.affine, 3)}.`;
+  return show.correct && show.affine
+    ? `${text} The vermillion bar marks it.`
+    : `${text} Switch both f sheets on to see it as a bar.`;
+}
+
 const SURFACES = [
   ["correct", "f, perspective-correct = (f/w) / (1/w)", OKABE.blue],
   ["affine", "f, affine (screen-space plane)", OKABE.orange],
@@ -128,12 +150,7 @@ function mount(el, data, host) {
     ctx.font = "15px sans-serif";
     ctx.fillText("grey: the screen and the triangle; height: the value (axis at the corner)",
       8, 462);
-    readout.innerHTML = gap.gap > 1e-9
-      ? `Largest |affine − perspective-correct| over the triangle: <b>${fmt(gap.gap, 3)}</b> ` +
-        `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)}), where f = ${fmt(gap.s.correct, 3)} ` +
-        `but the affine plane gives ${fmt(gap.s.affine, 3)}.`
-      : "Every w is equal: f/w and 1/w are scaled copies, their ratio is the affine plane " +
-        "itself (the two sheets coincide: drawn once, in blue).";
+    readout.innerHTML = readoutText(w, state.show, gap);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);
