@@ -139,6 +139,9 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     assert 1e-13 < err["stepped, float64"].max() < 1e-9  # "about 1e-10"
     assert err["stepped, float64"].max() > 100 * err["direct, recentred (Fatahalian)"].max()
     assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
+    # review r78 03-2: "within a factor of about two of each other ... the level of one rounding"
+    assert 1.5 < ns.direct_ratio < 2.5
+    assert max(e.max() for e in ns.so_far.values()) <= np.spacing(1000.7)
     assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
     assert ns.absolute[-1] > 1000 * ns.absolute[0]
     # review r57 03-3: the barycentrics a shader can read, by their API names
