@@ -683,6 +683,7 @@ def test_view3d_fits_the_picture_and_spreads_the_labels():
         s, (ax, ay) = got["scale"], got["at"]
         assert min(ax + s * it[0] for it in items) == pytest.approx(x0)
         assert max(ax + s * it[0] + it[2] for it in items) == pytest.approx(x1)
+        assert min(ay + s * it[1] - it[3] for it in items) == pytest.approx(y0)
     boxes = [{"x": 10.0, "y": 100.0 + 3 * k, "w": 150.0, "h": 22.0, "fixed": k == 0}
              for k in range(4)] + [{"x": 400.0, "y": 430.0, "w": 50.0, "h": 22.0, "fixed": False},
                                    {"x": 420.0, "y": 425.0, "w": 50.0, "h": 22.0, "fixed": False}]  # fmt: skip

@@ -152,6 +152,12 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     for name in ("SV_Barycentrics", "gl_BaryCoordEXT", "gl_BaryCoordNoPerspEXT",
                  "VK_KHR_fragment_shader_barycentric"):  # fmt: skip
         assert name in text, name
+    # review r78 03-4/03-6: the gradient printed as g_x, g_y (A, B are the other note's); the
+    # cross-reference names lesson 06's heading as it reads
+    code = " ".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
+    assert "g.A" not in code and "g.g_x" in code
+    six = (ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text()
+    assert "*What a GPU pays*" in text and '"### What a GPU pays\\n"' in six
     # "only known to about 1e-4" at 1e12, "coordinates to about 1e-10 px" at 1e6: printed
     assert 1e-4 <= ns.far_gap[1e12] < 2e-4 and 1e-10 <= ns.far_gap[1e6] < 2e-10
 
