@@ -267,6 +267,11 @@ def test_01_predictions_and_the_stepping_failure_rates():
                       if "q_flat = PredictPixels(" in "".join(c["source"]))  # fmt: skip
     question = asked_cell.split("q_flat = PredictPixels(")[1].split("answer=")[0]
     assert "1/256" in question and "through the centre" not in question
+    # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
+    # filled anyway
+    assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))
+    player_text = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
+    assert "calls our triangle back-facing" in player_text and "Culling is off" in player_text
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
