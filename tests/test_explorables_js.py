@@ -643,6 +643,59 @@ def test_attribute_surfaces_as_the_engine():
             assert js["inv"] == pytest.approx(float(want_lam[k] @ (1 / np.array(w))), abs=1e-13)
 
 
+def test_attribute_surfaces_readout_follows_w_and_the_toggles():
+    # review r78 03-1: with every w equal, f/w and 1/w are no scaled copies (1/w is flat); the
+    # readout speaks of the blue sheet only while it is drawn
+    xy, f = [[2.0, 2.0], [14.0, 4.0], [5.0, 14.0]], [0.2, 0.9, 0.5]
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    flat, deep = [1.0, 1.0, 1.0], [1.0, 1.0, 4.0]
+    gaps = call_js(parts, [("largestGap", [xy, w, f]) for w in (flat, deep)])
+    shows = [{"correct": c, "affine": a, "fw": False, "inv": False}
+             for c in (True, False) for a in (True, False)]  # fmt: skip
+    calls = [("readoutText", [w, s, g]) for w, g in zip((flat, deep), gaps) for s in shows]
+    got = call_js(parts, calls)
+    for text in got[:4]:
+        assert "scaled copies" not in text
+        assert "f/w is f scaled by the same 1/w at every vertex, and 1/w is a constant" in text
+    assert "drawn once, in blue" in got[0] and "drawn once, in blue" in got[1]
+    assert "orange" in got[2] and "blue" not in got[2]
+    assert "blue" not in got[3] and "sheet" not in got[3]
+    for text in got[4:]:
+        assert "Largest |affine − perspective-correct|" in text
+    assert "vermillion bar" in got[4]
+    assert all("Switch both f sheets on" in t for t in got[5:])
+
+
+def test_view3d_fits_the_picture_and_spreads_the_labels():
+    # review r78 03-3: the 3-D view fills its box at any turn, and labels do not overlap
+    rng = np.random.default_rng(78)
+    box = {"left": 8, "top": 8, "right": 632, "bottom": 440}
+    calls = []
+    for n in (5, 40, 200):  # points at scale 1, three of them with a label beside them
+        q = rng.normal(0, rng.uniform(1, 30), (n, 2))
+        items = [[x, y, 0, 0, 0] for x, y in q.tolist()]
+        items[:3] = [[x, y, 150.0, 17.0, 5.0] for x, y, *_ in items[:3]]
+        calls.append(("fitScale", [items, box]))
+    for (_, (items, _box)), got in zip(calls, call_js(("raster_rules", "view3d"), calls)):
+        x0, x1, y0, y1 = got["extent"]
+        assert x0 >= 8 - 1e-6 and x1 <= 632 + 1e-6 and y0 >= 8 - 1e-6 and y1 <= 440 + 1e-6
+        assert x1 - x0 > 623 or y1 - y0 > 431  # it fills the box one way: wide or high
+        s, (ax, ay) = got["scale"], got["at"]
+        assert min(ax + s * it[0] for it in items) == pytest.approx(x0)
+        assert max(ax + s * it[0] + it[2] for it in items) == pytest.approx(x1)
+        assert min(ay + s * it[1] - it[3] for it in items) == pytest.approx(y0)
+    boxes = [{"x": 10.0, "y": 100.0 + 3 * k, "w": 150.0, "h": 22.0, "fixed": k == 0}
+             for k in range(4)] + [{"x": 400.0, "y": 430.0, "w": 50.0, "h": 22.0, "fixed": False},
+                                   {"x": 420.0, "y": 425.0, "w": 50.0, "h": 22.0, "fixed": False}]  # fmt: skip
+    ys = call_js(("raster_rules", "view3d"), [("spreadLabels", [boxes, 0, 444])])[0]
+    assert ys[0] == 100.0  # fixed
+    for i, a in enumerate(boxes):
+        assert 0 <= ys[i] and ys[i] + a["h"] <= 444
+        for j, b in enumerate(boxes[:i]):
+            across = a["x"] < b["x"] + b["w"] and b["x"] < a["x"] + a["w"]
+            assert not across or abs(ys[i] - ys[j]) >= 22 - 1e-9, (i, j)
+
+
 def test_eye_ray_t_of_q_and_the_peak_for_ratio_2():
     from teachraster.plotting.projection import Segment
 

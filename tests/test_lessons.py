@@ -139,6 +139,9 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     assert 1e-13 < err["stepped, float64"].max() < 1e-9  # "about 1e-10"
     assert err["stepped, float64"].max() > 100 * err["direct, recentred (Fatahalian)"].max()
     assert max(ns.recentred) < 1e-13  # grid-aligned: differences exact, rounding level
+    # review r78 03-2: "within a factor of about two of each other ... the level of one rounding"
+    assert 1.5 < ns.direct_ratio < 2.5
+    assert max(e.max() for e in ns.so_far.values()) <= np.spacing(1000.7)
     assert 1e-7 < ns.absolute[-1] < 1e-5  # "about 1e-6 at 1e6 px"
     assert ns.absolute[-1] > 1000 * ns.absolute[0]
     # review r57 03-3: the barycentrics a shader can read, by their API names
@@ -149,6 +152,12 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     for name in ("SV_Barycentrics", "gl_BaryCoordEXT", "gl_BaryCoordNoPerspEXT",
                  "VK_KHR_fragment_shader_barycentric"):  # fmt: skip
         assert name in text, name
+    # review r78 03-4/03-6: the gradient printed as g_x, g_y (A, B are the other note's); the
+    # cross-reference names lesson 06's heading as it reads
+    code = " ".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
+    assert "g.A" not in code and "g.g_x" in code
+    six = (ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text()
+    assert "*What a GPU pays*" in text and '"### What a GPU pays\\n"' in six
     # "only known to about 1e-4" at 1e12, "coordinates to about 1e-10 px" at 1e6: printed
     assert 1e-4 <= ns.far_gap[1e12] < 2e-4 and 1e-10 <= ns.far_gap[1e6] < 2e-10
 

@@ -252,14 +252,26 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.asked_row == 13 and ns.ends_asked == [7.5, 13.5] == list(ns.ends[13][:2])
     assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
     assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
-    # the flat-topped question: rows 2, 6, 10 (top edge and right vertex, two ties, the apex)
-    assert ns.asked_rows == [2, 6, 10] and ns.ends6 == [4.5, 9.5]
+    # review r78 01-1: q_flat asks about the near-flat triangle (v2 1/256 px lower), which the
+    # rules stated before do not answer by rote: row 2 loses its centres, row 6 gains 9.5
+    assert ns.asked_rows == [2, 6, 10] and ns.ends2 == [2.5, 2.5] and ns.ends6[0] == 4.5
+    assert 9.5 < ns.ends6[1] < 9.5 + 1 / 256
     assert [np.flatnonzero(ns.asked[i]).tolist() for i in ns.asked_rows] == [
-        list(range(2, 12)),
-        list(range(4, 9)),
+        [],
+        list(range(4, 10)),
         [],
     ]
-    assert ns.asked.sum() == 15 and ns.asked_counts == [10, 5, 0]
+    assert ns.asked.sum() == 6 and ns.asked_counts == [0, 6, 0] and ns.flat_counts == [10, 5, 0]
+    nb = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())
+    asked_cell = next("".join(c["source"]) for c in nb["cells"]
+                      if "q_flat = PredictPixels(" in "".join(c["source"]))  # fmt: skip
+    question = asked_cell.split("q_flat = PredictPixels(")[1].split("answer=")[0]
+    assert "1/256" in question and "through the centre" not in question
+    # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
+    # filled anyway
+    assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))
+    player_text = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
+    assert "calls our triangle back-facing" in player_text and "Culling is off" in player_text
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2

@@ -773,6 +773,11 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     assert "edge's length" not in asked and "x_a·y_b" not in asked
     # review r13 07: the subpixel panel names its zero-area triangles, the clip its seam
     assert ns.collapsed == 2 and ns.clipped_into == 2
+    # review r78 07-1: the clip count is printed above the figure (before plt.show)
+    seven = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
+                              if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "the line under the figure" not in seven
+    assert "the line above the figure and the left panel's title print how many" in seven
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
     moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
     assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000

@@ -50,6 +50,10 @@ LEVELS = 6
 #: the room left by its ticks and the colour bar allows, fills its height.
 FIGSIZE = (6.3, 4.3)
 
+#: The numbers beside the figure: 15 px, readable on a projector (review r78 03-7: the
+#: page's 13 px was below classroom size)
+INFO_DIV = "<div style='margin-left:16px; font-size:15px'>"
+
 #: What the colours are (the colour bar's label; the Axes have no title).
 COLOUR_LABEL = "f at the pixel centres"
 
@@ -296,7 +300,9 @@ class PlaneExplorer:
         frame (above the image), ticks and title stay in a cached background. The colour
         bar is drawn over it, kept per range (:class:`~.sprites.ColourBarSprite`): moving a
         vertex leaves it as it was."""
-        above = [self.contours, *self.triangle.artists]
+        # by zorder: the blit draws in list order, and the labels' white boxes (zorder 6)
+        # drawn after the vertex dots (6.2) hid half of v1's dot (review r78 03-7)
+        above = sorted([self.contours, *self.triangle.artists], key=lambda a: a.get_zorder())
         return LayeredBlit(self.fig, [(MOVING, [self.image.image]),
                                       (STILL, [self.grid.lines, *self.ax.spines.values()]),
                                       (MOVING, above)])  # fmt: skip
@@ -348,7 +354,7 @@ class PlaneExplorer:
         parts = []
         if "g" not in s:
             parts.append("<b>zero area</b>: the three points are on one line, no plane")
-            return "<div style='margin-left:16px'>" + system + "<br>".join(parts) + "</div>"
+            return INFO_DIV + system + "<br>".join(parts) + "</div>"
         (m00, m01), (m10, m11) = s["M"]
         gx, gy, g0 = s["g"]
         A, B, C, D = s["ABCD"]
@@ -370,7 +376,7 @@ class PlaneExplorer:
             # + 0.0: a constant f gives −0.0, which would print as "-0.0000"
             f"dx = −A/C = {-A / C + 0.0:.4f}, dy = −B/C = {-B / C + 0.0:.4f}",
         ]
-        return "<div style='margin-left:16px'>" + system + "<br>".join(parts) + "</div>"
+        return INFO_DIV + system + "<br>".join(parts) + "</div>"
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

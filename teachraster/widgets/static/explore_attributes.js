@@ -38,6 +38,28 @@ export function largestGap(xy, w, f, n = 48) {
   return best;
 }
 
+// the sentence under the picture: it speaks of a sheet only while that sheet is drawn
+// (review r78 03-1: with every w equal, 1/w is a constant, f/w is f scaled by it)
+export function readoutText(w, show, gap) {
+  if (w.every((v) => v === w[0]) || !(gap.gap > 1e-9)) {
+    let text = "Every w is equal: f/w is f scaled by the same 1/w at every vertex, and 1/w is " +
+      "a constant, so their ratio is the affine plane itself.";
+    if (show.correct) {
+      text += " The perspective-correct and affine sheets coincide and are drawn once, in blue.";
+    } else if (show.affine) {
+      text += " The affine sheet (orange) is the perspective-correct one too.";
+    }
+    return text;
+  }
+  const where = `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)})`;
+  const text = `Largest |affine − perspective-correct| over the triangle: ` +
+    `<b>${fmt(gap.gap, 3)}</b> ${where}, where f = ${fmt(gap.s.correct, 3)} but the affine ` +
+    `plane gives ${fmt(gap.s.affine, 3)}.`;
+  return show.correct && show.affine
+    ? `${text} The vermillion bar marks it.`
+    : `${text} Switch both f sheets on to see it as a bar.`;
+}
+
 const SURFACES = [
   ["correct", "f, perspective-correct = (f/w) / (1/w)", OKABE.blue],
   ["affine", "f, affine (screen-space plane)", OKABE.orange],
@@ -74,8 +96,8 @@ function mount(el, data, host) {
     element("div", { class: "tr-x-row" }, [wSlider]), canvas, readout);
   const [W, H] = [data.width, data.height];
   const zScale = 0.55 * Math.max(W, H); // a value of 1 stands this many pixels high
-  const cam = camera3d({ centre: [W / 2, H / 2, zScale / 2], scale: 330 / Math.max(W, H),
-    at: [320, 250], yaw: -0.5, elevation: 0.45 });
+  // scale and position: fitted to the picture at each draw (fitView)
+  const cam = camera3d({ centre: [W / 2, H / 2, zScale / 2], yaw: -0.5, elevation: 0.45 });
 
   // the surfaces and the largest gap depend on w and on what is shown, not on the view:
   // computed once per change, only projected again while the picture turns
@@ -106,34 +128,54 @@ function mount(el, data, host) {
     const { xy, f } = data;
     const w = state.w;
     const { polys, gap } = scene();
-    drawPolygons(ctx, cam, polys);
-    if (state.show.correct && state.show.affine && gap.gap > 1e-9) {
+    // the labels: the value axis at the screen's corner (0, ½, 1), each vertex, the gap. Text
+    // no smaller than 15 px: the canvas is shown shrunk to the notebook's column on a small
+    // screen (review r7: 10-11 px there)
+    const labels = [0, 0.5, 1].map((v) => ({ p: [0, 0, v * zScale], text: ` ${v}`,
+      color: "#333", font: "16px sans-serif", fixed: true }));
+    xy.forEach(([x, y], k) => labels.push({ p: [x, y, 0], color: "#111",
+      text: ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, font: "bold 16px sans-serif",
+      halo: true }));
+    const showGap = state.show.correct && state.show.affine && gap.gap > 1e-9;
+    if (showGap) {
       const [x, y] = gap.p;
-      line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale], OKABE.vermillion, 3);
-      label3d(ctx, cam, [x, y, Math.max(gap.s.correct, gap.s.affine) * zScale],
-        ` gap ${fmt(gap.gap, 3)}`, OKABE.vermillion, "bold 17px sans-serif", true); // over the sheets: haloed (r57 03-2)
+      labels.push({ p: [x, y, Math.max(gap.s.correct, gap.s.affine) * zScale],
+        text: ` gap ${fmt(gap.gap, 3)}`, color: OKABE.vermillion, font: "bold 17px sans-serif",
+        halo: true }); // over the sheets: haloed (r57 03-2)
     }
-    // the value axis at the screen's corner: 0, ½, 1. Text no smaller than 15 px: the canvas
-    // is shown shrunk to the notebook's column on a small screen (review r7: 10-11 px there)
+    for (const l of labels) {
+      ctx.font = l.font;
+      Object.assign(l, { w: ctx.measureText(l.text).width + 4, up: 17, down: 5 });
+    }
+    // the view fitted to what is drawn at this turn (review r78 03-3), above the key line
+    const points = polys.flatMap((poly) => poly.pts).concat([[0, 0, zScale]]);
+    fitView(cam, points, labels, { left: 8, top: 8, right: 632, bottom: 440 });
+    drawPolygons(ctx, cam, polys);
+    if (showGap) {
+      const [x, y] = gap.p;
+      line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale],
+        OKABE.vermillion, 3);
+    }
     line3d(ctx, cam, [0, 0, 0], [0, 0, zScale], "#555", 1.5);
-    for (const v of [0, 0.5, 1]) {
-      label3d(ctx, cam, [0, 0, v * zScale], ` ${v}`, "#333", "16px sans-serif");
-    }
     xy.forEach(([x, y], k) => {
       line3d(ctx, cam, [x, y, 0], [x, y, f[k] * zScale], "#444", 1, [3, 3]);
-      label3d(ctx, cam, [x, y, 0], ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, "#111",
-        "bold 16px sans-serif");
+    });
+    // labels pushed apart where they would overlap, a thin leader back to a moved one
+    const anchors = labels.map((l) => cam.project(l.p));
+    const ys = spreadLabels(labels.map((l, i) => ({ x: anchors[i][0], y: anchors[i][1] - l.up,
+      w: l.w, h: l.up + l.down, fixed: l.fixed })), 0, 444);
+    labels.forEach((l, i) => {
+      const [x, y] = [anchors[i][0], ys[i] + l.up];
+      if (Math.abs(y - anchors[i][1]) > 3) {
+        strokeLine(ctx, anchors[i], [x + 4, y - 5], l.color, 1);
+      }
+      label2d(ctx, x, y, l.text, l.color, l.font, l.halo);
     });
     ctx.fillStyle = "#333";
     ctx.font = "15px sans-serif";
     ctx.fillText("grey: the screen and the triangle; height: the value (axis at the corner)",
       8, 462);
-    readout.innerHTML = gap.gap > 1e-9
-      ? `Largest |affine − perspective-correct| over the triangle: <b>${fmt(gap.gap, 3)}</b> ` +
-        `at (${fmt(gap.p[0], 3)}, ${fmt(gap.p[1], 3)}), where f = ${fmt(gap.s.correct, 3)} ` +
-        `but the affine plane gives ${fmt(gap.s.affine, 3)}.`
-      : "Every w is equal: f/w and 1/w are scaled copies, their ratio is the affine plane " +
-        "itself (the two sheets coincide: drawn once, in blue).";
+    readout.innerHTML = readoutText(w, state.show, gap);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);

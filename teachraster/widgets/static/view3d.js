@@ -131,6 +131,11 @@ export function line3d(ctx, cam, a, b, stroke, width = 1, dash = []) {
 // halo: a white outline under the letters, for a label drawn over coloured surfaces
 export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-serif", halo = false) {
   const q = cam.project(p);
+  label2d(ctx, q[0], q[1], text, color, font, halo);
+}
+
+// a label at (x, y) on the canvas (y its baseline), haloed or not as label3d
+export function label2d(ctx, x, y, text, color = "#111", font = "13px sans-serif", halo = false) {
   ctx.fillStyle = color;
   ctx.font = font;
   if (halo) {
@@ -138,10 +143,90 @@ export function label3d(ctx, cam, p, text, color = "#111", font = "13px sans-ser
     ctx.strokeStyle = "#fff";
     ctx.lineWidth = 5;
     ctx.lineJoin = "round";
-    ctx.strokeText(text, q[0], q[1]);
+    ctx.strokeText(text, x, y);
     ctx.restore();
   }
-  ctx.fillText(text, q[0], q[1]);
+  ctx.fillText(text, x, y);
+}
+
+// Set cam.scale and cam.at so that `points` ([x, y, z]) and `labels` ({p: [x, y, z], w, up,
+// down}: text from the projected p rightwards w px, up px above and down px below it) fill
+// `box` ({left, top, right, bottom}, canvas px) at the camera's present turn (review r78 03-3:
+// a fixed scale left 40 % of the canvas empty).
+export function fitView(cam, points, labels, box) {
+  Object.assign(cam, { scale: 1, at: [0, 0] });
+  const items = [
+    ...points.map((p) => [...cam.project(p).slice(0, 2), 0, 0, 0]),
+    ...labels.map((l) => [...cam.project(l.p).slice(0, 2), l.w, l.up, l.down]),
+  ];
+  return Object.assign(cam, fitScale(items, box));
+}
+
+// The largest scale s and the offset `at` that put every item [x, y, w, up, down] (a point
+// at scale 1 around the origin, with a box of text beside it) inside `box`; `extent`: the
+// canvas box they then take. Orthographic: the extent is convex in s, so bisection finds it.
+export function fitScale(items, box) {
+  const extent = (s) => {
+    const e = [Infinity, -Infinity, Infinity, -Infinity];
+    for (const [x, y, w, up, down] of items) {
+      e[0] = Math.min(e[0], s * x);
+      e[1] = Math.max(e[1], s * x + w);
+      e[2] = Math.min(e[2], s * y - up);
+      e[3] = Math.max(e[3], s * y + down);
+    }
+    return e;
+  };
+  const fits = (s) => {
+    const e = extent(s);
+    return e[1] - e[0] <= box.right - box.left && e[3] - e[2] <= box.bottom - box.top;
+  };
+  let [lo, hi] = [0, 1];
+  while (fits(hi) && hi < 1e9) [lo, hi] = [hi, 2 * hi];
+  for (let k = 0; k < 40; k++) {
+    const mid = (lo + hi) / 2;
+    if (fits(mid)) lo = mid;
+    else hi = mid;
+  }
+  const e = extent(lo);
+  const at = [(box.left + box.right - e[0] - e[1]) / 2, (box.top + box.bottom - e[2] - e[3]) / 2];
+  return { scale: lo, at, extent: [e[0] + at[0], e[1] + at[0], e[2] + at[1], e[3] + at[1]] };
+}
+
+// Move labels apart vertically until no two overlap (review r78 03-3: after a turn the vertex
+// labels ran into one another). boxes: {x, y, w, h, fixed} (x, y the top left corner; a fixed
+// box, such as an axis label, stays). The new y of each box, kept within [top, bottom]; a
+// box pushed against an edge pushes the other one instead.
+export function spreadLabels(boxes, top, bottom, gap = 2) {
+  const ys = boxes.map((b) => b.y);
+  const clamp = (i) => Math.min(Math.max(ys[i], top), bottom - boxes[i].h);
+  for (let round = 0; round < 200; round++) {
+    let moved = false;
+    for (let i = 0; i < boxes.length; i++) {
+      for (let j = i + 1; j < boxes.length; j++) {
+        const [a, b] = [boxes[i], boxes[j]];
+        const across = a.x < b.x + b.w && b.x < a.x + a.w;
+        const overlap = Math.min(ys[i] + a.h, ys[j] + b.h) - Math.max(ys[i], ys[j]) + gap;
+        if ((a.fixed && b.fixed) || !across || overlap <= 1e-9) continue;
+        // the upper box goes up, the lower one down: half each, or all of it for a free one
+        // beside a fixed one; near the canvas edge the other takes what the edge refuses
+        const up = ys[i] < ys[j] || (ys[i] === ys[j] && i < j) ? i : j;
+        const down = up === i ? j : i;
+        const [du, dd] = boxes[up].fixed ? [0, overlap]
+          : boxes[down].fixed ? [overlap, 0] : [overlap / 2, overlap / 2];
+        ys[up] -= du;
+        ys[down] += dd;
+        const over = top - ys[up];
+        if (over > 0 && !boxes[down].fixed) [ys[up], ys[down]] = [ys[up] + over, ys[down] + over];
+        const under = ys[down] + boxes[down].h - bottom;
+        if (under > 0 && !boxes[up].fixed) [ys[up], ys[down]] = [ys[up] - under, ys[down] - under];
+        ys[up] = clamp(up);
+        ys[down] = clamp(down);
+        moved = true;
+      }
+    }
+    if (!moved) break;
+  }
+  return ys;
 }
 
 // Clip a flat polygon [[x, y, z], ...] to the slab -h <= z <= h (Sutherland-Hodgman on z):
