@@ -624,9 +624,13 @@ def test_lesson_11_tells_each_story():
     assert ns.counts["hi_z"] >= 1
     assert sum(ns.counts.values()) == ns.over[ns.hz.row, ns.hz.col]
     assert ns.counts["passed"] == ns.passed[ns.hz.row, ns.hz.col]
-    # §1: the Hi-Z-rejected fragment carries no values, and its depth is farther than before
+    # §1: the Hi-Z-rejected fragment carries no values, and its depth is no nearer than
+    # before (review r82 11-A: Hi-Z rejects at nearest >= farthest, so a tie is rejected too;
+    # here it is strictly farther)
     (rejected,) = [r for r in ns.h if r.outcome == "hi_z"]
     assert rejected.value == () and rejected.depth > rejected.depth_before
+    assert "no nearer than `before`" in _lesson_11_source()
+    assert "farther than `before`" not in _lesson_11_source()
     assert all(r.value == () for r in ns.hz if r.outcome == "hi_z")
     # §2's prediction: the far triangle wins where triangle 1 covers a pixel triangle 0 showed
     on, off = ns.coarse_on.triangle_id, ns.coarse_off.triangle_id
