@@ -1060,6 +1060,10 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     for cell in ("| OpenGL 4.6 |", "| Direct3D 11 |", "| Vulkan |", "| teachraster |",
                  "[earlydepthstencil]", "`EarlyFragmentTests`", "*Early Per-Fragment Tests*"):  # fmt: skip
         assert cell in words, cell
+    # review r82 10-A: the Direct3D row quotes the D3D11.3 functional specification (§16.12),
+    # with no note that a source went unread
+    assert "not checked here" not in words
+    assert "§16.12.2, *Default Pixel Shader Execution Mode*" in words and "§16.12.1" in words
     # review r70 #3: "should instead" is Vulkan 1.3's wording; the current specification says
     # "must" where the device reports earlyFragmentMultisampleCoverageAfterSampleCounting
     assert (
