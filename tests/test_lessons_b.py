@@ -1559,6 +1559,10 @@ def test_10_r36_items():
     assert (ns.false_in | ns.false_out).sum() == ns.narrow.wrong.sum()
     assert ns.false_in.any() and ns.false_out.any()  # both colours drawn
     assert ns.same_tiles and ns.rejected_tiles.sum() == (ns.tile_far < 0.7).sum() == 21
+    # review r82 10-B: the answer's tile map numbers tiles at their centres, as q_hiz's grid
+    # does, so "tile column 3" is the same cell in both
+    code = (ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text()
+    assert "np.arange(hw // t_) + 0.5" in code and "np.arange(hh // t_) + 0.5" in code
     cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
     md = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
@@ -1610,6 +1614,11 @@ def test_10_r45_items():
     held = next(i for i, t in enumerate(text) if t.startswith("q_small.hold()"))
     method = next(i for i, t in enumerate(text) if "all its children must be classified" in t)
     assert held < method
+    # review r82 10-E: q_small counts 1 + 16 + 16 + 16 exactly; 48 (the 64-block's own test
+    # forgotten) is marked wrong, and the explanation names it
+    asked = next(t for t in text if "q_small = Predict(" in t)
+    assert ns.tiny_tests == 49 and "answer=int(tiny_tests),\n    tolerance=0," in asked
+    assert "(48 forgets the 64-block's own test" in asked
 
 
 def test_10_tile_explorer_driven_by_the_test():
