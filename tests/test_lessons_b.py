@@ -1701,3 +1701,22 @@ def test_06_figure_cells_rerun_after_later_cells():
             if later and any(name in binds[k] for k in range(i)):
                 clashes[(i, name)] = later
     assert not clashes
+
+
+def test_10_r82_figures_and_words():
+    """Review r82, lesson 10: the hierarchy's 1x1 panel zooms on a 16x16 block the edges
+    cross (10-D); the explorer's text says what the llvmpipe preset shows on 64x64 (10-C);
+    the yellow pixels' places stand on their own (10-G); §9 is three paragraphs (10-H)."""
+    import json
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    block = ns.fill.coverage[ns.zr : ns.zr + 16, ns.zc : ns.zc + 16]
+    assert block.shape == (16, 16) and 0 < block.mean() < 1
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    md = [" ".join("".join(c["source"]).split()) for c in cells["cells"]
+          if c["cell_type"] == "markdown"]  # fmt: skip
+    assert any("**64 / 16 / 4 (llvmpipe)** shows least on this 64×64 image" in t for t in md)
+    assert not any("(here mostly along the top" in t for t in md)
+    nine = next("".join(c["source"]) for c in cells["cells"] if "## 9." in "".join(c["source"]))
+    for head in ("**llvmpipe's binner.**", "**Tile-based deferred**", "**Desktop GPUs**"):
+        assert f"\n\n{head}" in nine, head
