@@ -1059,3 +1059,42 @@ def test_frame_inspector_strip_at_4_samples_and_on_an_empty_pixel():
         assert not w.history.records and not len(w.hist_ax.get_yticks())
     finally:
         w.close()
+
+
+def test_frame_inspector_folds_a_triangles_refused_samples_into_one_row():
+    """Review r82, 11-F: under 4x MSAA a triangle's consecutive not_covered samples are one
+    row of the inspector's table (its samples, the nearest miss); the printed table keeps
+    one row per record."""
+    from teachraster.pipeline.debugging.frame_history import history_table
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("uv_sphere", 64, 48, samples=4, glass=True, backend="image")
+    try:
+        w.row.value, w.col.value = 24, 32
+        h = w.history
+        flat = history_table(h, narrow=True)
+        folded = history_table(h, narrow=True, fold=True)
+        assert "4 samples, nearest outside E" in folded and "0-3" in w.table.value
+        assert len(folded.splitlines()) < len(flat.splitlines())
+        assert h.table() == flat  # h.table() is unchanged: a row per record
+        # the folded row names the nearest of its samples' misses
+        runs = [r for r in h.records if r.outcome == "not_covered" and r.triangle == 384]
+        nearest = min(r.outside for r in runs)
+        assert f"by {nearest:.4f} px" in folded
+        for line in folded.splitlines():
+            assert len(line) <= 80, line
+    finally:
+        w.close()
+
+
+def test_lesson_11_r82_figures_and_words():
+    """Review r82: the z-fighting band keys its white, the sliver's title counts the centres
+    in its window, the depth_complexity panel says what it counts, Question 1's last sentence
+    reads, and §5's llvmpipe check stands apart from the test file."""
+    text = " ".join(_lesson_11_source().split())
+    assert "white = centre outside both" in text  # 11-C
+    assert "px in the whole frame, {in_window} in this " in text  # 11-D
+    assert '"passed the depth test\\n(depth complexity here): ' in _lesson_11_source()  # 11-E
+    assert "In the order drawn above" not in text  # 11-H
+    assert "In §2's order (red first) the buffer ends with blue's" in text
+    assert "*Tested in* `tests/test_frame_history_gl.py`" in text  # 11-I

@@ -427,13 +427,13 @@ class FrameInspector(Holdable):
         pair = self.pairs.get(self.scene.value) if self.beside.value else None
         self.pair_history = None if pair is None else self.frames[pair].history(row, col)
         # r21 D4: the pair's two tables with the same columns, so their rows line up
-        text = history_table(self.history, narrow=True, like=self.pair_history)
+        text = history_table(self.history, narrow=True, like=self.pair_history, fold=True)
         if self.view.value == "quad_overshading":  # who launched this quad's lanes
             text += "\n\n" + quad_text(self.frame, row, col)
         if self.pair_history is None:
             self.table.value = _pre(text)
             return
-        beside = history_table(self.pair_history, narrow=True, like=self.history)
+        beside = history_table(self.pair_history, narrow=True, like=self.history, fold=True)
         self.table.value = paired_tables(((self.scene.value, text), (pair, beside)))
 
     def _bar_room(self) -> float:
