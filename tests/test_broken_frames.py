@@ -1160,12 +1160,15 @@ def test_the_paired_history_tables_fit_a_592_px_column_at_12_px():
         markup = w.table.value
         assert "tri piece smp" not in markup and "tri  outcome" in markup
         w.beside.value = False
-        assert "tri  outcome" in w.table.value and "font-size:12px" in w.table.value
+        assert "tri  outcome" in w.table.value and f"font-size:{fi.TABLE_FONT}" in w.table.value
     finally:
         w.close()
     assert markup.count(f"font-size:{fi.PAIRED_FONT}") == 2 and markup.count("min-width:0") == 2
     assert "max-width:100%" in markup and "overflow-x:auto" in markup
-    assert fi.PAIRED_FONT == fi.TABLE_FONT == "12px"
+    # review r82 11-B: 14 px in a wide window, never under 12 px; 12 px up to a 1043-px one
+    # (the 592-px column at 1024 x 768 holds an 80-character line only at 12 px)
+    assert fi.PAIRED_FONT == fi.TABLE_FONT == "clamp(12px, 1.15vw, 14px)"
+    assert 1043 * 0.0115 < 12 and 1218 * 0.0115 >= 14
     pixels = [(30, 20), (22, 40), (14, 10), (24, 28), (14, 47), (12, 20)]
     pixels += [a[1] for a in sol.BROKEN_FRAMES.values()]
     longest = max(len(line) for n in ANSWERS for frame in (ex.broken_frame(n).frame,

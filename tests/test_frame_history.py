@@ -624,9 +624,13 @@ def test_lesson_11_tells_each_story():
     assert ns.counts["hi_z"] >= 1
     assert sum(ns.counts.values()) == ns.over[ns.hz.row, ns.hz.col]
     assert ns.counts["passed"] == ns.passed[ns.hz.row, ns.hz.col]
-    # §1: the Hi-Z-rejected fragment carries no values, and its depth is farther than before
+    # §1: the Hi-Z-rejected fragment carries no values, and its depth is no nearer than
+    # before (review r82 11-A: Hi-Z rejects at nearest >= farthest, so a tie is rejected too;
+    # here it is strictly farther)
     (rejected,) = [r for r in ns.h if r.outcome == "hi_z"]
     assert rejected.value == () and rejected.depth > rejected.depth_before
+    assert "no nearer than `before`" in _lesson_11_source()
+    assert "farther than `before`" not in _lesson_11_source()
     assert all(r.value == () for r in ns.hz if r.outcome == "hi_z")
     # §2's prediction: the far triangle wins where triangle 1 covers a pixel triangle 0 showed
     on, off = ns.coarse_on.triangle_id, ns.coarse_off.triangle_id
@@ -643,22 +647,18 @@ def test_lesson_11_tells_each_story():
     assert ns.reasons[(39, 35)] == [(0, "seam", "seam v1–E32∩near")]
     assert ns.reasons[(11, 40)] == [(2, "zero_area", None)]
     # §4's prediction (review r62 #1): the pixels of the quads where both halves of the
-    # rectangle cover a centre are shaded twice; the diagonal crosses more quads than that (the
-    # trap), and every pixel is covered exactly once
-    assert not (ns.half_cov[0] & ns.half_cov[1]).any() and ns.rect_px == 48
-    assert ns.twice.sum() == 4 * ns.shared_quads.sum() == 16
-    assert len(ns.crossed) > ns.shared_quads.sum()
-    assert all(ns.half_quads[0][q] or ns.half_quads[1][q] for q in ns.crossed)
-    assert ns.lanes == 64 and ns.useful == 48
-    # review r70 #1: each pixel tinted by the triangle covering its centre (two centres lie
-    # 0.1 px from the diagonal: not to be judged by eye), the two tints distinct
-    for k in (0, 1):
-        assert np.array_equal(ns.owner == k, ns.half_cov[k])
-    assert (ns.owner == -1).sum() == 12 * 10 - 48
+    # rectangle cover a centre are shaded twice; the diagonal passes through fewer pixels than
+    # that (the trap), and every pixel is covered exactly once
+    assert not (ns.half_cov[0] & ns.half_cov[1]).any() and ns.rect_px == 72
+    assert ns.twice.sum() == 4 * ns.shared_quads.sum() == 24
+    assert all(ns.twice[p] for p in ns.crossed_px) and len(ns.crossed_px) == 12 < ns.twice.sum()
+    assert ns.lanes == 96 and ns.useful == 72
+    # review r82 11-G: no tint gives the coverage away; no pixel centre lies nearer the
+    # diagonal than 0.22 px (it was 0.1 px), so the student judges each centre by eye
+    assert 0.22 < ns.diag_gap < 0.23
     draw = _lesson_11_source().split("def draw_quads(ax):")[1].split("q_helpers =")[0]
-    assert "ax.imshow(pale_halves[owner + 1], extent=(0, 12, 10, 0)" in draw  # (the globals
-    assert len({tuple(c) for c in ns.pale_halves}) == 3  # keep no function to call)
-    assert "tinted by the triangle" in _lesson_11_source()  # and the question says so
+    asked = _lesson_11_source().split("q_helpers = PredictPixels(")[1].split("answer=")[0]
+    assert "imshow" not in draw and "tint" not in asked
     # §2's tie band (r62 #3): the gap at v1 is under half a unorm16 step, 0.4 is on a step,
     # and the band reaches both ends of the edge v1-v3
     assert 0 < ns.fight_gap[0] < ns.step16 / 2 < ns.fight_gap[1] and ns.fight_gap[2] == 0
@@ -1059,3 +1059,42 @@ def test_frame_inspector_strip_at_4_samples_and_on_an_empty_pixel():
         assert not w.history.records and not len(w.hist_ax.get_yticks())
     finally:
         w.close()
+
+
+def test_frame_inspector_folds_a_triangles_refused_samples_into_one_row():
+    """Review r82, 11-F: under 4x MSAA a triangle's consecutive not_covered samples are one
+    row of the inspector's table (its samples, the nearest miss); the printed table keeps
+    one row per record."""
+    from teachraster.pipeline.debugging.frame_history import history_table
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("uv_sphere", 64, 48, samples=4, glass=True, backend="image")
+    try:
+        w.row.value, w.col.value = 24, 32
+        h = w.history
+        flat = history_table(h, narrow=True)
+        folded = history_table(h, narrow=True, fold=True)
+        assert "4 samples, nearest outside E" in folded and "0-3" in w.table.value
+        assert len(folded.splitlines()) < len(flat.splitlines())
+        assert h.table() == flat  # h.table() is unchanged: a row per record
+        # the folded row names the nearest of its samples' misses
+        runs = [r for r in h.records if r.outcome == "not_covered" and r.triangle == 384]
+        nearest = min(r.outside for r in runs)
+        assert f"by {nearest:.4f} px" in folded
+        for line in folded.splitlines():
+            assert len(line) <= 80, line
+    finally:
+        w.close()
+
+
+def test_lesson_11_r82_figures_and_words():
+    """Review r82: the z-fighting band keys its white, the sliver's title counts the centres
+    in its window, the depth_complexity panel says what it counts, Question 1's last sentence
+    reads, and §5's llvmpipe check stands apart from the test file."""
+    text = " ".join(_lesson_11_source().split())
+    assert "white = centre outside both" in text  # 11-C
+    assert "px in the whole frame, {in_window} in this " in text  # 11-D
+    assert '"passed the depth test\\n(depth complexity here): ' in _lesson_11_source()  # 11-E
+    assert "In the order drawn above" not in text  # 11-H
+    assert "In §2's order (red first) the buffer ends with blue's" in text
+    assert "*Tested in* `tests/test_frame_history_gl.py`" in text  # 11-I

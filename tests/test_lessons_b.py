@@ -1135,6 +1135,10 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     for cell in ("| OpenGL 4.6 |", "| Direct3D 11 |", "| Vulkan |", "| teachraster |",
                  "[earlydepthstencil]", "`EarlyFragmentTests`", "*Early Per-Fragment Tests*"):  # fmt: skip
         assert cell in words, cell
+    # review r82 10-A: the Direct3D row quotes the D3D11.3 functional specification (§16.12),
+    # with no note that a source went unread
+    assert "not checked here" not in words
+    assert "§16.12.2, *Default Pixel Shader Execution Mode*" in words and "§16.12.1" in words
     # review r70 #3: "should instead" is Vulkan 1.3's wording; the current specification says
     # "must" where the device reports earlyFragmentMultisampleCoverageAfterSampleCounting
     assert (
@@ -1630,6 +1634,10 @@ def test_10_r36_items():
     assert (ns.false_in | ns.false_out).sum() == ns.narrow.wrong.sum()
     assert ns.false_in.any() and ns.false_out.any()  # both colours drawn
     assert ns.same_tiles and ns.rejected_tiles.sum() == (ns.tile_far < 0.7).sum() == 21
+    # review r82 10-B: the answer's tile map numbers tiles at their centres, as q_hiz's grid
+    # does, so "tile column 3" is the same cell in both
+    code = (ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text()
+    assert "np.arange(hw // t_) + 0.5" in code and "np.arange(hh // t_) + 0.5" in code
     cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
     md = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
@@ -1681,6 +1689,11 @@ def test_10_r45_items():
     held = next(i for i, t in enumerate(text) if t.startswith("q_small.hold()"))
     method = next(i for i, t in enumerate(text) if "all its children must be classified" in t)
     assert held < method
+    # review r82 10-E: q_small counts 1 + 16 + 16 + 16 exactly; 48 (the 64-block's own test
+    # forgotten) is marked wrong, and the explanation names it
+    asked = next(t for t in text if "q_small = Predict(" in t)
+    assert ns.tiny_tests == 49 and "answer=int(tiny_tests),\n    tolerance=0," in asked
+    assert "(48 forgets the 64-block's own test" in asked
 
 
 def test_10_tile_explorer_driven_by_the_test():
@@ -1763,3 +1776,22 @@ def test_06_figure_cells_rerun_after_later_cells():
             if later and any(name in binds[k] for k in range(i)):
                 clashes[(i, name)] = later
     assert not clashes
+
+
+def test_10_r82_figures_and_words():
+    """Review r82, lesson 10: the hierarchy's 1x1 panel zooms on a 16x16 block the edges
+    cross (10-D); the explorer's text says what the llvmpipe preset shows on 64x64 (10-C);
+    the yellow pixels' places stand on their own (10-G); §9 is three paragraphs (10-H)."""
+    import json
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    block = ns.fill.coverage[ns.zr : ns.zr + 16, ns.zc : ns.zc + 16]
+    assert block.shape == (16, 16) and 0 < block.mean() < 1
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    md = [" ".join("".join(c["source"]).split()) for c in cells["cells"]
+          if c["cell_type"] == "markdown"]  # fmt: skip
+    assert any("**64 / 16 / 4 (llvmpipe)** shows least on this 64×64 image" in t for t in md)
+    assert not any("(here mostly along the top" in t for t in md)
+    nine = next("".join(c["source"]) for c in cells["cells"] if "## 9." in "".join(c["source"]))
+    for head in ("**llvmpipe's binner.**", "**Tile-based deferred**", "**Desktop GPUs**"):
+        assert f"\n\n{head}" in nine, head

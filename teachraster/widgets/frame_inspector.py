@@ -50,8 +50,11 @@ def _views(frames: dict, view: str) -> list:
     return [v for v in VIEWS if v != "nan"]
 
 
-#: The largest the frame is drawn, width and height in inches (a 4:3 frame: 3 × 2.25).
-FRAME_BOX = (3.0, 3.1)
+#: The largest the frame is drawn, width and height in inches (a 4:3 frame: 6 × 4.5). Review
+#: r82, 11-B: at 3 inches a 64-pixel frame gave 4.5 screen px a pixel, one pixel off under a
+#: normal click, with the rest of the row empty; at 6, 9 px (the picture scales down to a
+#: narrower column, 7.9 px a pixel in JupyterLab's 592-px column at 1024 × 768).
+FRAME_BOX = (6.0, 6.2)
 #: The frame figure's margins in inches: left (row labels and "row i"), top (column labels,
 #: "column j" and the title), right (and bottom without a colour bar), then the colour
 #: bar's gap under the frame, its height and the room under it for its ticks and label at
@@ -222,13 +225,17 @@ def changed_pixel(frame, pair, row: int, col: int) -> tuple[int, int]:
     return int(rows[k]), int(cols[k])
 
 
-#: The history table's font size, alone and with its pair's beside it: a projector's 12 px
-#: (the course's rule for text), the table narrow (:func:`history_table`, at most
-#: :data:`NARROW` characters a line) so that each fits a 592-px column (JupyterLab at
-#: 1024 x 768 with the file browser open). Review r18: at 0.8em a table took 615 px and cut
+#: The history table's font size, alone and with its pair's beside it: 14 px where the window
+#: is wide enough (review r82, 11-B: 12 px was too small for the back of a room), never less
+#: than a projector's 12 px (the course's rule for text). The table is narrow
+#: (:func:`history_table`, at most :data:`NARROW` characters a line): at 12 px it fits a
+#: 592-px column (JupyterLab at 1024 x 768 with the file browser open), at 14 px a 674-px
+#: one, so the size grows with the window (1.15 % of its width: 12 px up to a 1043-px
+#: window, 14 px from 1218 px on), where the column (the window less the ~430-px file
+#: browser and margins) holds the lines. Review r18: at 0.8em a table took 615 px and cut
 #: "outside E12 by 6.1611 px"; at 0.75em (9.75 px) two fitted side by side, too small to
-#: read. Two at 12 px stand side by side only in a column of 2 x 578 + 24 px or more.
-TABLE_FONT = PAIRED_FONT = "12px"
+#: read. Two stand side by side only in a column of 2 x 578 + 24 px or more (at 12 px).
+TABLE_FONT = PAIRED_FONT = "clamp(12px, 1.15vw, 14px)"
 
 
 def _pre(text: str, size: str = TABLE_FONT) -> str:
@@ -420,13 +427,13 @@ class FrameInspector(Holdable):
         pair = self.pairs.get(self.scene.value) if self.beside.value else None
         self.pair_history = None if pair is None else self.frames[pair].history(row, col)
         # r21 D4: the pair's two tables with the same columns, so their rows line up
-        text = history_table(self.history, narrow=True, like=self.pair_history)
+        text = history_table(self.history, narrow=True, like=self.pair_history, fold=True)
         if self.view.value == "quad_overshading":  # who launched this quad's lanes
             text += "\n\n" + quad_text(self.frame, row, col)
         if self.pair_history is None:
             self.table.value = _pre(text)
             return
-        beside = history_table(self.pair_history, narrow=True, like=self.history)
+        beside = history_table(self.pair_history, narrow=True, like=self.history, fold=True)
         self.table.value = paired_tables(((self.scene.value, text), (pair, beside)))
 
     def _bar_room(self) -> float:

@@ -553,7 +553,7 @@ def _tuple(c) -> tuple:
     return tuple(float(v) for v in c)
 
 
-def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
+def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool = False) -> str:
     """The readable table ``print(h)`` shows. ``narrow``: at most :data:`NARROW` characters a
     line, for a widget's column at a projector's 12 px (review r18, exercise 11: at 0.75em,
     9.75 px, two tables fitted a 592-px column side by side, too small to read): the header
@@ -561,7 +561,10 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
     piece, more than one sample), each colour line's "after" on a line of its own. ``like``:
     the other history of a pair (or None), whose rows set the columns too, so that the two
     tables have the same columns and wrap their rows alike (review r21 D4: the outcome
-    column's width in one table decided which of its rows wrapped)."""
+    column's width in one table decided which of its rows wrapped). ``fold``: a triangle's
+    consecutive ``not_covered`` samples refused for the same reason on one line, with the
+    nearest miss (review r82, 11-F: under 4× MSAA a glass sphere's pixel listed 40 records,
+    most of them refused samples, each on two lines)."""
     shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
              f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
@@ -574,15 +577,16 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
     samples = not narrow or any(g.n_samples > 1 for g in both)
     lines = [f"{where}\n{way}" if narrow else f"{where} {way}"]
     rows = list(zip(h.records, _outcomes(h), map(_why, h.records)))
+    rows = _folded(rows) if fold else [(r, o, w, str(r.sample)) for r, o, w in rows]
     outcomes = [o for g in both for o in _outcomes(g)]
     wide = 22 if not narrow else max([len("outcome"), *map(len, outcomes)])
     tri = 5 if not narrow else 3
     head = f"{'tri':>{tri}} " + (f"{'piece':>5} " if pieces else "") + ("smp " if samples else "")
     lines.append(f"{head} {'outcome':<{wide}} {'depth':>9} {'before':>9} {'after':>9}  "
                  "value / why")  # fmt: skip
-    for r, outcome, why in rows:
+    for r, outcome, why, smp in rows:
         head = (f"{r.triangle:>{tri}} " + (f"{r.piece:>5} " if pieces else "")
-                + (f"{r.sample:>3} " if samples else ""))  # fmt: skip
+                + (f"{smp:>3} " if samples else ""))  # fmt: skip
         line = (f"{head} {outcome:<{wide}} {_num(r.depth)} {_num(r.depth_before)} "
                 f"{_num(r.depth_after)}")  # fmt: skip
         if narrow and len(line) + 2 + len(why) > NARROW:  # the why under its row, wrapped
@@ -600,6 +604,34 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None) -> str:
                      f"{h.n_samples} samples at the end")  # fmt: skip
     lines += colour_lines(h, narrow)
     return "\n".join(lines)
+
+
+def _folded(rows) -> list:
+    """``rows`` [(record, outcome, why)] as [(record, outcome, why, sample text)], each run
+    of one piece's consecutive ``not_covered`` samples refused for the same reason as one
+    row: its samples ("0-3"), the nearest miss ("4 samples, nearest outside E13 by 0.6400
+    px")."""
+    out: list = []
+
+    def key(r):
+        return r.triangle, r.piece, r.reason
+
+    for r, outcome, why in rows:
+        first = out[-1][0][0] if out and out[-1][1] == "not_covered" == outcome else None
+        if first is not None and (first.triangle, first.piece, first.reason) == key(r):
+            out[-1][0].append(r)
+            continue
+        out.append(([r], outcome, why))
+    folded = []
+    for records, outcome, why in out:
+        r = records[0]
+        if len(records) == 1:
+            folded.append((r, outcome, why, str(r.sample)))
+            continue
+        near = min(records, key=lambda x: x.outside if np.isfinite(x.outside) else np.inf)
+        smp = f"{records[0].sample}-{records[-1].sample}"
+        folded.append((near, outcome, f"{len(records)} samples, nearest {_why(near)}", smp))
+    return folded
 
 
 def _outcomes(h: PixelHistory) -> list[str]:
