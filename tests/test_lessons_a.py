@@ -980,6 +980,10 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
     for text in (tour, picture):
         assert "neither discards, writes depth nor writes memory" in text
     assert "test *and write* depth before the shader" in tour
+    # review r77 00-6: §17.3 places the tests after shading, §14.9 says when they may run early
+    assert ("§17.3 (*Per-Fragment Operations*) places the depth and stencil tests after "
+            "fragment shading; §14.9 (*Early Per-Fragment Tests*) says when they may run "
+            "early") in tour  # fmt: skip
     assert "can keep the early test and only the depth write waits" in tour
     assert "conservative depth" in tour and "gl_FragDepth" in tour
     assert "(10_tiles_and_hierarchical_z.ipynb)" in tour and "(05a_zbuffer.ipynb)" in tour
