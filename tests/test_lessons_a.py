@@ -1304,6 +1304,9 @@ def test_00_04_answers_wait_for_check_r66():
     shown = next(c for c in tour if "PipelineMap(" in c)
     assert "q_facing.hold()" in shown and "q_centres.hold()" in shown
     assert shown.index("hold()") < shown.index("PipelineMap(") and 'stage="vertex"' in shown
+    # review r77 00-3: the player, run to its end in half-planes, shows 59 of 144 too
+    player = next(c for c in tour if "FillPlayer(" in c)
+    assert "q_centres.hold()" in player and player.index("hold()") < player.index("FillPlayer(")
     nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
     text = ["".join(c["source"]) for c in nb["cells"]]
     kinds = [c["cell_type"] for c in nb["cells"]]
