@@ -1314,12 +1314,21 @@ def test_00_04_answers_wait_for_check_r66():
     boxed = next(i for i, t in enumerate(text) if r"\boxed{t =" in t)
     explorer = next(i for i, t in enumerate(text) if "ProjectionExplorer(" in t)
     assert ask < explorer < boxed and text[explorer].startswith("q_midpoint.hold()")
+    # review r77 04-2: a ruler answers the drag; the belief (midpoint, nearer, farther) is
+    # asked first, recorded, and the drag's picture held until it is checked
+    where = next(i for i, t in enumerate(text) if "q_where = Predict(" in t)
+    assert where < ask and text[ask].startswith("q_where.hold()")
+    assert '        "the segment\'s midpoint",\n        "a point nearer' in text[where]
+    assert 'answer="a point nearer the eye than the segment\'s midpoint"' in text[where]
     ask = next(i for i, t in enumerate(text) if "q_affine = Predict(" in t)
     viewer = next(i for i, t in enumerate(text) if "TexturedPlaneViewer(" in t)
     assert text[viewer].startswith("q_affine.hold()")
     said = [t for k, t in zip(kinds[ask:viewer], text[ask:viewer]) if k == "markdown"]
     assert not any("kink" in t or "straight *inside*" in t for t in said)
     assert "kink" in text[ask].split("explain=")[1]
+    # review r77 04-3: only the receding lines kink; the cross lines (constant v) do not
+    assert "what do the <b>receding</b> checker lines look like" in text[ask]
+    assert "stay straight \"\n    \"and unkinked" in text[ask]
     assert 'legend(loc="lower right"' in text[ask - 2]  # the |Δu| panel's key, below v2 v3
 
 
