@@ -277,6 +277,12 @@ def test_pipeline_stage_clicked(lesson):
     w.locator("[data-stage=depth]").click()
     w.get_by_text("Early-z", exact=True).wait_for(timeout=5_000)
     w.locator("[data-stage=vertex]").click()
+    w.get_by_text("perspective projection").first.wait_for(timeout=5_000)
+    # review r77 00-8: the dashed early-z box opens the depth test, where early-z is explained
+    w.locator("[data-early=depth]").click()
+    w.get_by_text("Early-z", exact=True).wait_for(timeout=5_000)
+    assert _kernel(lesson, "pipeline.state['stage']") == "depth"
+    w.locator("[data-stage=vertex]").click()
     # the page redraws on its next frame: wait for it rather than read the text at once
     w.get_by_text("perspective projection").first.wait_for(timeout=5_000)
     assert _kernel(lesson, "pipeline.state['stage']") == "vertex"

@@ -619,6 +619,18 @@ def test_projection_explorer_ratio_moves_the_far_end_along_its_ray():
     assert ex.t == pytest.approx(float(ex.segment.world_parameter(0.5)[0]))
     ex.ratio.value = 1.0
     assert ex.largest_gap == pytest.approx(0.0, abs=1e-12)
+    # review r77 (not confirmed): every change re-renders, and while it draws the readout
+    # says so, with the new ratio, never the old one under a moved slider
+    shown = []
+    # the page figure's caption (a traitlet: sent to the page when set, before the redraw)
+    ex.info._page.observe(lambda change: shown.append(change["new"]), "caption")
+    for ratio in (8.0, 7.5):
+        ex.ratio.value = ratio
+        assert ex.segment.z1 == pytest.approx(ratio * ex.segment.z0)
+    assert [v.split(" · ")[0] for v in shown] == [f"depth ratio z1 / z0 = {r:.2f}"
+                                                  for r in (8.0, 8.0, 7.5, 7.5)]  # fmt: skip
+    assert "drawing…" in shown[0] and "drawing…" in shown[2]
+    assert "drawing…" not in shown[-1] and f"{ex.largest_gap:.3f}" in shown[-1]
     ex.close()
 
 

@@ -496,11 +496,25 @@ def test_tiles_benchmark_quick_run_succeeds(capsys):
     assert "counters: 64×64" in out and "tests per pixel" in out
 
 
-def test_a_partial_block_beyond_the_box_says_how_many_tests_are_drawn():
+def test_a_partial_block_beyond_the_box_tests_and_shows_all_its_pixels():
     """Review r23 (00's player, tiles): a 4×4 block reaching out of the bounding box ran 16
-    pixel tests, but the picture greys only those inside the box; the caption says so."""
+    pixel tests, but the picture greyed only those inside the box. Review r77 00-2: the
+    trace gives every one of them (rejected_at over the whole image), the caption says how
+    many lie outside the box."""
     tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]])
     trace = tr.rasterize(tri, 16, 16, method="tiled", trace=True).trace
     captions = [trace.caption(k) for k in range(trace.first_work_step, trace.interpolation_step)]
-    assert any("16 pixel tests (6 inside the bounding box: the ones drawn)" in c for c in captions)
+    assert any("16 pixel tests (10 of them outside the bounding box)" in c for c in captions)
+    k = next(k for k in range(len(trace)) if "outside the bounding box" in trace.caption(k))
+    b = trace.blocks
+    i = k - trace.first_work_step
+    r0, c0 = b.row[i], b.col[i]
+    block = (slice(r0, r0 + b.extent[i, 0]), slice(c0, c0 + b.extent[i, 1]))
+    tested = trace.rejected_at(k)[block] | trace.coverage_at(k)[block]
+    assert tested.all()  # all 16, also the 10 outside the box
+    assert trace.rejected_at(-1).sum() > trace.image(~trace.covered, fill=False).sum()
+    # recording changes nothing: the same coverage with and without the trace
+    np.testing.assert_array_equal(
+        tr.rasterize(tri, 16, 16, method="tiled").coverage, trace.coverage_at(-1)
+    )
     assert any(c.endswith("16 pixel tests, 15 covered") for c in captions)  # all inside

@@ -566,16 +566,22 @@ def test_textured_viewer_draws_v_down_the_middle_column():
     viewer = TexturedPlaneViewer(tilt=60, checks=4, backend="image", style="classroom")
     assert _empty_quarters(viewer.fig) == []
     prof = viewer.profile
-    v_affine, rows = (np.asarray(d, dtype=float) for d in prof.lines[0].get_data())
-    v_persp = np.asarray(prof.lines[1].get_xdata(), dtype=float)
+    # screen y on x, v on y (review r77 04-1: with v on x the far edge's fast change lay flat)
+    rows, v_affine = (np.asarray(d, dtype=float) for d in prof.lines[0].get_data())
+    v_persp = np.asarray(prof.lines[1].get_ydata(), dtype=float)
+    np.testing.assert_array_equal(rows, np.arange(viewer.height) + 0.5)
+    assert prof.title.axes.get_xlabel() == "screen y (px)"
+    assert prof.title.axes.get_ylabel() == "texture v"
     np.testing.assert_array_equal(v_affine, viewer.uv_affine[:, viewer.width // 2, 1])
     np.testing.assert_array_equal(v_persp, viewer.uv_perspective[:, viewer.width // 2, 1])
     ok = np.isfinite(v_affine)
     steps_a, steps_p = np.diff(v_affine[ok]), np.diff(v_persp[ok])
     assert np.ptp(steps_a) < 1e-9  # affine: equal steps
     assert steps_p.max() > 3 * steps_p.min()  # perspective: bunched towards the far edge
+    # steepest at the far edge, the top rows: on the left of the plot, as the text says
+    assert np.argmax(steps_p) < len(steps_p) // 4
     viewer.tilt.value = 0.0  # facing the camera: the two curves are one
-    np.testing.assert_allclose(prof.lines[0].get_xdata(), prof.lines[1].get_xdata(), atol=1e-12)
+    np.testing.assert_allclose(prof.lines[0].get_ydata(), prof.lines[1].get_ydata(), atol=1e-12)
     # no error anywhere: no marker pointing at an arbitrary pixel (review r3 04-5)
     hm = viewer.view.heatmap
     assert not hm.marker.get_visible() and not hm.note.get_visible()

@@ -260,7 +260,7 @@ class TileTrace:
         outline is then the image's frame, and a step that splits it seems to change nothing:
         review r20, lesson 00's player). ``box``: the bounding box the pictures draw; a
         smallest partial block reaching out of it says how many of its tests lie inside
-        (review r23: the player greys only those).
+        (review r23; since review r77 00-2 the player draws them all).
         """
         s, kind = int(self.size[b]), int(self.kind_code[b])
         rows, cols = (int(v) for v in self.extent[b])
@@ -299,7 +299,7 @@ class TileTrace:
                         0, min(c0 + cols, box.col1) - max(c0, box.col0)
                     )
                     if inside < rows * cols:
-                        then += f" ({inside:,} inside the bounding box: the ones drawn)"
+                        then += f" ({rows * cols - inside:,} of them outside the bounding box)"
                 then += f", {int(self.covered[b]):,} covered"
             why = f"{crossing} {verb} it: partial, {then}"
         return f"{where}: {why}"

@@ -319,7 +319,24 @@ class FillTrace:
         k = self.index(k)
         if self.halfplane is None and self.blocks is None:
             return np.zeros((self.height, self.width), dtype=bool)
+        if self.blocks is not None and not self.culled:
+            # blocks reach beyond the box: a rejected block and the pixel tests of a smallest
+            # partial one cover all their pixels, inside the box or not (review r77 00-2)
+            steps = self.block_steps
+            return (steps >= 0) & (steps <= k) & ~self.image(self.covered, fill=False)
         return self.image((self.visit_step <= k) & ~self.covered, fill=False)
+
+    @cached_property
+    def block_steps(self) -> np.ndarray | None:
+        """(height, width) int32 over the whole image (tiles): the step of the block that
+        decided each pixel, rejected with its block or tested in a smallest partial one,
+        also where a block reaches beyond the bounding box; -1 where no block was
+        classified. None for the other methods (see :attr:`visit_step`)."""
+        if self.blocks is None:
+            return None
+        whole = BBox(0, self.height, 0, self.width, 0.0, float(self.width), 0.0,
+                     float(self.height))  # fmt: skip
+        return self.blocks.leaf_steps(whole, self.first_work_step)
 
     def image(self, local: np.ndarray, fill=np.nan) -> np.ndarray:
         """Place a bbox-local array into a full (height, width, ...) image."""

@@ -374,9 +374,11 @@ class ProfileArtists(Artists):
         along_row = self.axis == "row"
         pick = (lambda im: im[self.index, :]) if along_row else (lambda im: im[:, self.index])
         pos = np.arange(a.shape[1 if along_row else 0]) + 0.5  # the pixel centres
+        # the screen position on x, the value on y, along a column too: with the value on x
+        # a curve that changes fast per pixel row lay flat, and "steeper" read backwards
+        # (review r77 04-1)
         for line, image in zip(self.lines, (a, b)):
-            values = pick(image)
-            line.set_data((pos, values) if along_row else (values, pos))
+            line.set_data(pos, pick(image))
             line.set_marker("o" if pos.size <= 40 else "")  # dots only where they stay apart
         for guide in self.guides:
             guide.set_data(([0, a.shape[1]], [self.index + 0.5] * 2) if along_row
@@ -384,17 +386,14 @@ class ProfileArtists(Artists):
         ax = self.title.axes
         # only the row's (column's) covered pixels and one on either side: over the whole
         # image the curves took a third of the panel (reviews r19/r20, lesson 00's player)
-        start, stop = _covered_span(pick(a), pick(b))
-        (ax.set_xlim if along_row else ax.set_ylim)(
-            *((start, stop) if along_row else (stop, start))
-        )
+        ax.set_xlim(*_covered_span(pick(a), pick(b)))
         lo, hi = self.vlim or _value_range(pick(a), pick(b))
         if along_row and self.vlim is None:
             # headroom above the curves for the key, in the upper left: inside the curves'
             # own range "best" was decided once and a new row's curves ran under it (review
             # r13, 04 c15: the key covered the lower ends of both curves)
             hi += KEY_ROOM * (hi - lo)
-        (ax.set_ylim if along_row else ax.set_xlim)(lo, hi)
+        ax.set_ylim(lo, hi)
         self.title.set_text(f"{'row' if along_row else 'column'} {self.index} (dashed)")
 
 
@@ -450,9 +449,9 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
     a, b : (H, W) arrays
         The two images (NaN where not covered: a gap in the curve).
     axis : {"row", "column"}
-        Along a row, the curves run left to right (x = the centres' screen x, j + 0.5); along
-        a column they run downwards like the image (y = the centres' screen y, i + 0.5,
-        increasing downwards; x = the value).
+        Along a row, x is the centres' screen x, j + 0.5; along a column, the centres'
+        screen y, i + 0.5 (the image's top row on the left). The value is always on y, so
+        that a value changing fast per pixel is a steep curve.
     index : int
         Which row (column).
     labels : (str, str)
@@ -475,12 +474,11 @@ def plot_profile(ax, a, b, *, axis: str = "row", index: int = 0, labels=("a", "b
     # the values sit at the pixel centres, j + 0.5 (i + 0.5): labelled as the screen position
     # they are at, not "column j", whose point sat half-way to the next column's tick
     # (review r45, lesson 00-6)
-    if axis == "row":
-        ax.set(xlim=(0, w), xlabel="screen x (px)", ylabel=value)
-    else:
-        ax.set(ylim=(h, 0), ylabel="screen y (px)", xlabel=value)
+    ax.set(xlim=(0, w if axis == "row" else h), ylabel=value,
+           xlabel=f"screen {'x' if axis == 'row' else 'y'} (px)")  # fmt: skip
     # whole columns (rows) only: a few pixels' span drew ticks at 2.5, 5.0, 7.5
-    (ax.xaxis if axis == "row" else ax.yaxis).set_major_locator(MaxNLocator(integer=True))
+    # along a column of a tall image, a few: seven ticks of a 120-row column touched (r77)
+    ax.xaxis.set_major_locator(MaxNLocator("auto" if axis == "row" else 4, integer=True))
     title = ax.set_title("", fontsize=fs(0.9))
     result = ProfileArtists(lines, guide_lines, title, axis, int(index),
                             None if vlim is None else tuple(vlim))  # fmt: skip

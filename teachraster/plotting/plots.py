@@ -472,20 +472,24 @@ class SplitArtists(Artists):
         # the text's width and its box, in points (DejaVu Sans bold: about 0.65 em a glyph)
         wide = self.label.get_fontsize() * (0.65 * max(map(len, text.split("\n"))) + 0.8)
         room = _room_left_of(self.label.axes, s.u4)
-        if away_left and room < wide - dx:
-            # no room left of point 4 for both lines: its number alone, still outside the
-            # triangle (review r19, lesson 00: starting at the grid's left edge, the label ran
-            # over the covered centres right of point 4); the caption gives u4's value
-            text = "4"
-            wide = self.label.get_fontsize() * (0.65 + 0.8)
-        if away_left and room < wide - dx:
+        at, offset = (s.u4, v2y), (dx, -fs(0.6))
+        align = ("right" if away_left else "left", "top")
+        # no room left of point 4 for both lines: its number alone, still outside the triangle
+        # (review r19, lesson 00: starting at the grid's left edge, the label ran over the
+        # covered centres right of point 4); the caption gives u4's value. Centred on the
+        # pixel corner left of point 4 nearest the split line, between four centres: hung
+        # below the line it blanked one centre and touched another (review r77 00-1)
+        corner = (float(np.floor(s.u4 - 0.5)), float(np.round(v2y)))
+        if away_left and room < wide - dx and corner[0] >= min(self.label.axes.get_xlim()) + 1:
+            text, at, offset, align = "4", corner, (0.0, 0.0), ("center", "center")
+        elif away_left and room < wide - dx:
             # not even that: the label starts at the grid's left edge instead (review r9 00
             # c14: it stuck out of the grid onto the "row i" axis label)
-            away_left, dx = False, fs(0.3) - room
-        self.label.xy = (s.u4, v2y)
-        self.label.set_position((dx, -fs(0.6)))
-        self.label.set_horizontalalignment("right" if away_left else "left")
-        self.label.set_verticalalignment("top")
+            offset, align = (fs(0.3) - room, -fs(0.6)), ("left", "top")
+        self.label.xy = at
+        self.label.set_position(offset)
+        self.label.set_horizontalalignment(align[0])
+        self.label.set_verticalalignment(align[1])
         self.label.set_text(text)
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)

@@ -127,7 +127,8 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6),
             label=f"{n_steps} equal steps of q")  # fmt: skip
     ax.plot(*pts.T, "-", color=COLORS["edge"], lw=lw(1.0), label="segment in the world")
-    ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), label="where those rays hit it")
+    # above the large dot at t: at q = 0 or 1 that dot hid the end's own (review r77 04-4)
+    ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), label="where those rays hit it", zorder=4)
     ax.plot([0], [0], "^", color=COLORS["edge"], ms=ms(1.3), label="eye")
     (out.ray,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8), label="the ray at q")
     (out.screen_point,) = ax.plot([], [], "s", color=COLORS["current"], ms=ms(1.0),
@@ -151,8 +152,12 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
         curve_ax.plot(qq, segment.world_parameter(qq), color=COLORS["edge"], lw=lw(0.8),
                       label="t(q), perspective")  # fmt: skip
         curve_ax.plot(qq, qq, "--", color=COLORS["grid"], lw=lw(0.6), label="t = q (affine)")
-        (out.curve_point,) = curve_ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.2))
-        curve_ax.set(xlabel="q (screen)", ylabel="t (world)", xlim=(0, 1), ylim=(0, 1))
+        # not clipped, and a margin round the unit square: at q = 0 or 1 the dot sat half
+        # hidden on the frame's corner (review r77 04-4)
+        (out.curve_point,) = curve_ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.2),
+                                           clip_on=False)  # fmt: skip
+        curve_ax.set(xlabel="q (screen)", ylabel="t (world)", xlim=(-0.02, 1.02),
+                     ylim=(-0.02, 1.02))  # fmt: skip
         curve_ax.legend(loc="upper left", fontsize=fs(0.7))
     out.update(q)
     return out

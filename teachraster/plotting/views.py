@@ -19,7 +19,7 @@ import textwrap
 
 import numpy as np
 from matplotlib.collections import PolyCollection
-from matplotlib.colors import Normalize, to_rgba
+from matplotlib.colors import Normalize, to_rgba, to_rgba_array
 from matplotlib.patches import Rectangle
 from matplotlib.patheffects import withStroke
 from matplotlib.transforms import Affine2D, ScaledTranslation
@@ -49,6 +49,10 @@ from .plots import (
     plot_triangle,
 )
 from .style import COLORS, VALUE_CMAP
+
+#: Outline colours of classified blocks (tiles), by ``TileTrace.kind_code``: rejected (a grey
+#: darker than the pixel grid's), accepted, partial.
+BLOCK_COLORS = (COLORS["centre"], COLORS["flat_bottom"], COLORS["bbox"])
 
 METHOD_NAMES = {"span": "Span tables", "halfplane": "Half-planes", "tiled": "Tiles"}
 
@@ -177,6 +181,11 @@ class FillView:
             [], facecolors="none", edgecolors=COLORS["outside"], linewidths=fs(0.17),
             zorder=3.5))  # fmt: skip
         self.sample_only.set_visible(False)
+        # tiles: the outline of every block classified so far, coloured by its verdict, so that
+        # the walk over the grid of blocks stays visible once passed (review r77 00-2)
+        self.block_outlines = ax.add_collection(PolyCollection(
+            [], facecolors="none", linewidths=fs(0.14), zorder=3.4))  # fmt: skip
+        self.block_outlines.set_visible(False)
         self._values = (values, attribute)  # asked for; _shown: (name, lo, hi) or None
         self._shown = None
         self._sample_key = sample_key
@@ -250,8 +259,8 @@ class FillView:
         parts = [self.grid, self.coverage, self.bbox, self.split, self.centres, self.triangle,
                  self.raster_line, self.pixel, self.legend, self.value_bar]  # fmt: skip
         out = [a for p in parts if isinstance(p, Artists) for a in p.artists]
-        return out + [self.rejected, self.values, self.sample_only, self.header,
-                      self.caption_text]  # fmt: skip
+        return out + [self.rejected, self.values, self.sample_only, self.block_outlines,
+                      self.header, self.caption_text]  # fmt: skip
 
     @property
     def _sample_only_n(self) -> int:
@@ -285,6 +294,7 @@ class FillView:
             self.rejected = set_image(self.rejected, rejected.astype(float))
             # nothing rejected yet: skip drawing the layer at all
             self.rejected.set_visible(bool(rejected.any()))
+        self._show_blocks(trace, k)
         boxed = k >= trace.bbox_step
         # span tables test no box of pixels (Ek §1.1: the sort gives the rows, each span its
         # columns): the box is drawn for the methods that test it
@@ -337,6 +347,21 @@ class FillView:
         if draw:
             self.fig.canvas.draw_idle()
         return step
+
+    def _show_blocks(self, trace: FillTrace, k: int) -> None:
+        """Tiles: outline every block classified by step ``k``, read from the trace (its
+        position, extent and verdict): accepted green, rejected grey, partial orange."""
+        blocks = trace.blocks
+        shown = blocks is not None and k >= trace.first_work_step and len(blocks) > 0
+        self.block_outlines.set_visible(shown)
+        if not shown:
+            return
+        n = min(k - trace.first_work_step + 1, len(blocks))  # block i is step first + i
+        r0, c0 = blocks.row[:n], blocks.col[:n]
+        r1, c1 = r0 + blocks.extent[:n, 0], c0 + blocks.extent[:n, 1]
+        corners = [(c0, r0), (c1, r0), (c1, r1), (c0, r1)]
+        self.block_outlines.set_verts(np.stack([np.stack(p, -1) for p in corners], 1))
+        self.block_outlines.set_edgecolor(to_rgba_array(BLOCK_COLORS)[blocks.kind_code[:n]])
 
     def set_fill(self, fill, *, step: int | None = None, draw: bool = True) -> Step:
         """Show another fill (a moved vertex, the other method, ...), reusing the artists.
@@ -398,7 +423,8 @@ class FillView:
         return LayeredBlit(self.fig, [
             (MOVING, [self.rejected, self.coverage.image, self.values, r.band]),
             (STILL, middle),
-            (MOVING, [r.cells, p.box, r.span, r.covered, r.missed, p.centre]),
+            (MOVING, [self.block_outlines, r.cells, p.box, r.span, r.covered, r.missed,
+                      p.centre]),  # fmt: skip
             # the vertex dots above their labels' boxes, as in a full draw (review r23)
             (STILL, [split.point, split.label, *t.labels, *t.edge_labels, t.vertices]),
             # text costs more to draw than the pixels: the header moves only with the step
@@ -531,7 +557,10 @@ class FillView:
                         ("span x_left .. x_right", c["current"], c["current"], "|"),
                         ("its centre covered", c["edge"], "white", "o"),
                         ("its centre not", "white", c["edge"], "o")]  # fmt: skip
-        elif testing and method == "tiled":  # the block's outline (plot_current_pixel)
+        if method == "tiled":  # the outlines of the blocks classified (review r77 00-2)
+            entries += [(f"block {kind}", "none", colour)
+                        for kind, colour in zip(("rejected", "accepted", "partial"), BLOCK_COLORS)]  # fmt: skip
+        if testing and method == "tiled":  # the block's outline (plot_current_pixel)
             entries.append(("block under test", "none", c["current"]))
         elif testing:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)

@@ -148,6 +148,10 @@ class ProjectionExplorer(Shown):
 
     def set_ratio(self, ratio: float) -> None:
         """Move the far end along its eye ray to depth ``ratio`` · z0, and redraw."""
+        # the readout first says a picture is coming: a new ratio redraws the whole figure,
+        # seconds on a loaded machine, and a stale "4.00" under a 7.50 slider read as a wrong
+        # answer (review r77, 04)
+        self.info.value = f"depth ratio z1 / z0 = {float(ratio):.2f} · <i>drawing…</i>"
         seg = self.segment
         z1 = float(ratio) * seg.z0
         self.segment = Segment(seg.x0, seg.z0, seg.x1 / seg.z1 * z1, z1)  # same screen point

@@ -178,10 +178,22 @@ function diagram(onPick, lessons) {
   // 00: that read as fragments skipping the shader)
   const [r, f] = [boxes[6], boxes[7]];
   const [ex, ey, ew, eh] = [r.x + r.w / 2 - 30, r.y + r.h + 24, f.x - r.x + 60, 26];
-  root.append(svg("rect", { x: ex, y: ey, width: ew, height: eh, rx: 6, fill: "#fff",
+  // a button too: it opens the depth test's stage, where early-z is explained (review r77
+  // 00-8: clicking it did nothing). data-early, not data-stage: one box per stage
+  const early = svg("g", { class: "stage", tabindex: 0, role: "button", "data-early": "depth",
+    "aria-label": "early depth test: see the depth and stencil test" });
+  early.append(svg("rect", { x: ex, y: ey, width: ew, height: eh, rx: 6, fill: "#fff",
     stroke: "#333", "stroke-width": 1.5, "stroke-dasharray": "7 5" }));
-  root.append(svg("text", { x: ex + ew / 2, y: ey + 18, "text-anchor": "middle",
+  early.append(svg("text", { x: ex + ew / 2, y: ey + 18, "text-anchor": "middle",
     "font-size": MAP.font, "font-weight": "bold", fill: "#333" }, "early depth test"));
+  early.addEventListener("click", (e) => onPick("depth", e));
+  onKeys(early, (e) => {
+    if (e.key === "Enter" || e.key === " ") {
+      e.preventDefault();
+      onPick("depth", e);
+    }
+  });
+  root.append(early);
   arrow(`M${r.x + r.w / 2},${r.y + r.h} L${r.x + r.w / 2},${ey - 2}`, "7 5");
   arrow(`M${f.x + f.w / 2},${ey} L${f.x + f.w / 2},${f.y + f.h + 2}`, "7 5");
   ["early-z (lessons 05a, 10), optional: depth tested and written",
