@@ -1710,3 +1710,26 @@ def test_06_figure_cells_rerun_after_later_cells():
             if later and any(name in binds[k] for k in range(i)):
                 clashes[(i, name)] = later
     assert not clashes
+
+
+def test_09_footprint_explorer_follows_the_static_footprints():
+    """Review r81 09-3: the package's FootprintExplorer is in lesson 09, right after §4's
+    static footprint figure, under a caption saying what to do and what to see."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    static = next(i for i, t in enumerate(text) if t.startswith('picked = {"near"'))
+    assert text[static + 1].startswith("### Any pixel's footprint, live")
+    assert "**Do:**" in text[static + 1] and "**See:**" in text[static + 1]
+    assert cells[static + 2]["cell_type"] == "code"
+    assert text[static + 2].startswith("footprints = FootprintExplorer(tilt=80)")
+    # the caption says the numbers change every second row: a quad shares its differences
+    from teachraster.widgets import FootprintExplorer
+
+    ex = FootprintExplorer(tilt=80)
+    w, uv, ddy = ex.data["width"], ex.data["uv"], ex.data["ddy"]
+    col = w // 2
+    rows = [r for r in range(ex.data["height"]) if uv[r * w + col] is not None]
+    assert all(ddy[r * w + col] == ddy[(r ^ 1) * w + col] for r in rows if r ^ 1 in rows)
+    assert len({tuple(ddy[r * w + col]) for r in rows}) > 1
