@@ -136,3 +136,26 @@ def test_lesson_08_centroid_prediction(ns):
     assert not any("v at the pixel centres" in s for s in sources[:k])
     # review r61 08-5: nothing before the question says the centre value leaves [0, 1]
     assert not any("extrapolated" in s for s in sources[:k])
+
+
+def test_lesson_08_review_r81_section_7_text_matches_its_chart(ns):
+    """Review r81 08-1/2: cell 32 said the 16-sample pattern falls like 1/S on axis edges (its
+    error times S doubles from 8 to 16), and cell 29 gave one S range for every series."""
+    import json
+    from pathlib import Path
+
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    text = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+    assert "8- and 16-sample patterns are" not in text
+    assert "2-, 4- and 8-sample patterns" in text and "it does not continue the line" in text
+    std = ns.standard_axis
+    assert std[16] * 16 > 1.5 * std[8] * 8  # 16 does not fall like 1/S from 8
+    # "S = 4 to 256; the standard patterns ... 2 to 16", as the chart draws them
+    counts = {}
+    for row in ns.edge_rows:
+        counts.setdefault(row["kind"], []).append(row["samples"])
+    assert all((min(v), max(v)) == (4, 256) for k, v in counts.items() if "standard" not in k)
+    assert (min(counts["standard, axis edges"]), max(counts["standard, axis edges"])) == (2, 16)
+    assert "$S$ = 4 to 256; the standard patterns" in text and "2 to 16)" in text

@@ -1352,6 +1352,21 @@ def test_09_quads_closed_form_and_predictions():
 
     assert ns.rho_switch == pytest.approx(2**1.5, abs=1e-9) and read(ns.lam_switch) == 2
     assert abs(3 - ns.rho_switch) > ns.tol_q and read(1.5) == 1
+    # review r81 09 q_level: the question gives trilinear's weights and says GL's nearest level
+    # is the one trilinear weights more (the finer on a tie), so the switch is reasoned: true
+    # of the sampler at every λ > 0
+    for lam in np.linspace(0.01, 4.99, 250):
+        heavier = int(np.floor(lam)) + int(lam % 1 > 0.5)
+        assert read(lam) == heavier, lam
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    ask = next(
+        "".join(c["source"]) for c in cells if "q_level = PredictPoint" in "".join(c["source"])
+    )
+    assert (
+        "frac(λ)" in ask and "trilinear weights more" in ask and "takes one of the two" not in ask
+    )
     # the probes question: its answer is the measured gap, in the last bucket, whose label
     # names the bucket's own bound
     assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
@@ -1418,7 +1433,8 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     from teachraster.widgets import FilterExplorer
 
     ns = lesson("09_texture_filtering")
-    # "facing you a pixel covers about 3.5 texels, so a check is more than two pixels wide"
+    # "at 0° a pixel covers the few texels the first line prints, so a check (8 texels) is more
+    # than two pixels wide"
     assert 3 < 2 ** ns.start_lod.max() < 4 and ns.check_px > 2
     # "nearest draws the checks 2 or 3 pixels wide": every check facing you is 2 to 3 px
     assert 2 < ns.check_px <= 8 / 2 ** ns.start_lod.min() < 3
@@ -1435,17 +1451,23 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
             assert all(abs(spread[k] - ns.crisp) < 0.01 for k in (1, 2, 3)), spread
         else:
             assert ns.crisp > spread[1] > spread[2] > 0.2 and spread[3] < 0.6 * spread[2], spread
+            # "falls from level 1 to level 2 ... and falls most at level 3"
+            assert spread[2] - spread[3] > spread[1] - spread[2], spread
     # review r69 09-3: full contrast is not freedom from moiré; nearest_mipmap_nearest's error
     # per level read grows to level 3 (read from λ 2.5 to 3.5, one-texel checks), bilinear
-    # reads' stays low; the text quotes the printed numbers
+    # reads' stays "under half of it at every level"; review r81 09-7: the text points to the
+    # printed numbers instead of copying them (no number with two decimals in its Markdown)
     nmn, lmn = ns.level_rms["nearest_mipmap_nearest"], ns.level_rms["linear_mipmap_nearest"]
     assert nmn[1] < nmn[2] < nmn[3] and all(lmn[k] < 0.5 * nmn[k] for k in (1, 2, 3))
     import json
+    import re
 
     cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
-    see = next(t for t in ("".join(c["source"]) for c in cells) if "reads one whole texel" in t)
-    assert ", ".join(f"{nmn[k]:.3f}" for k in (1, 2, 3)) + " at 30°" in see
-    assert f"{min(lmn.values()):.2f}–{max(lmn.values()):.2f}" in see
+    texts = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
+    see = next(t for t in texts if "reads one whole texel" in t)
+    caps = next(t for t in texts if "numbers on a driver's" in t)
+    assert "under half of it at" in see and "table under the spreads, at 30°" in see
+    assert not re.search(r"\d\.\d\d", see) and not re.search(r"\d\.\d\d", caps)
     explorer = FilterExplorer(tilt=0, filter="nearest", repeats=int(ns.uv_x6.max()),
                               samples=2, backend="image")  # fmt: skip
     try:
@@ -1795,3 +1817,26 @@ def test_10_r82_figures_and_words():
     nine = next("".join(c["source"]) for c in cells["cells"] if "## 9." in "".join(c["source"]))
     for head in ("**llvmpipe's binner.**", "**Tile-based deferred**", "**Desktop GPUs**"):
         assert f"\n\n{head}" in nine, head
+
+
+def test_09_footprint_explorer_follows_the_static_footprints():
+    """Review r81 09-3: the package's FootprintExplorer is in lesson 09, right after §4's
+    static footprint figure, under a caption saying what to do and what to see."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    static = next(i for i, t in enumerate(text) if t.startswith('picked = {"near"'))
+    assert text[static + 1].startswith("### Any pixel's footprint, live")
+    assert "**Do:**" in text[static + 1] and "**See:**" in text[static + 1]
+    assert cells[static + 2]["cell_type"] == "code"
+    assert text[static + 2].startswith("footprints = FootprintExplorer(tilt=80)")
+    # the caption says the numbers change every second row: a quad shares its differences
+    from teachraster.widgets import FootprintExplorer
+
+    ex = FootprintExplorer(tilt=80)
+    w, uv, ddy = ex.data["width"], ex.data["uv"], ex.data["ddy"]
+    col = w // 2
+    rows = [r for r in range(ex.data["height"]) if uv[r * w + col] is not None]
+    assert all(ddy[r * w + col] == ddy[(r ^ 1) * w + col] for r in rows if r ^ 1 in rows)
+    assert len({tuple(ddy[r * w + col]) for r in rows}) > 1

@@ -1385,3 +1385,33 @@ def test_depth_explorer_legend_names_the_half_the_time_line():
     assert texts[-1] == "fights half the time (Δz = 2δ)" and texts[1].startswith("now")
     assert np.isfinite(w.marker.get_xdata()).all()  # unorm16 fights: the line is drawn
     w.close()
+
+
+def test_filter_status_line_says_computing_while_a_picture_is_pending():
+    """Review r81 09-8: after a filter change and keys the status line still read the last
+    picture's numbers ("largest λ 1.8" at 30°); it now says the new picture is on its way
+    until it is drawn, and the explorer's caption names the ring round the worst pixel."""
+    from teachraster.widgets import FilterExplorer
+    from teachraster.widgets.common import PROJECTOR_CSS
+
+    ex = FilterExplorer(16, 12, tilt=0.0, samples=2, backend="image")
+    seen = []
+    original = type(ex)._render
+
+    def render_and_look(self):
+        seen.append(self.info.value)  # what the page shows while the kernel renders
+        original(self)
+
+    try:
+        type(ex)._render = render_and_look
+        ex.filter.value = "nearest_mipmap_nearest"
+        ex.tilt.value = 30.0
+    finally:
+        type(ex)._render = original
+    assert seen and all("computing" in s for s in seen), seen
+    assert "30°" in seen[-1] and "nearest_mipmap_nearest" in seen[-1]
+    assert "computing" not in ex.info.value and "largest λ" in ex.info.value
+    title = ex.widget.children[0].value
+    assert "ring in the error panel marks the worst pixel" in title
+    assert title.startswith(PROJECTOR_CSS) and "tr-projector" in ex.widget._dom_classes
+    ex.close()

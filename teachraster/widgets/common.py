@@ -275,6 +275,23 @@ FALLBACK_CSS = (
 )
 
 
+#: An explorer's control labels, read-outs and status line at 16 px, not JupyterLab's 13:
+#: read from the back of a lecture hall (review r81, 08-5 and 09-6)
+PROJECTOR_CSS = (
+    "<style>.tr-projector .tr-live-slider, .tr-projector .widget-label,"
+    " .tr-projector .widget-toggle-button, .tr-projector select,"
+    " .tr-projector .tr-drag-caption {font-size: 16px}</style>"
+)
+
+
+def projector_text(box: widgets.Box, title: widgets.HTML) -> widgets.Box:
+    """``box`` (an explorer's widget) with its controls' text and status line at projector
+    size (:data:`PROJECTOR_CSS`, carried by its ``title``, one of its children)."""
+    box.add_class("tr-projector")
+    title.value = PROJECTOR_CSS + title.value
+    return box
+
+
 #: The text/plain beside a stand-in (a front end without HTML).
 STANDIN_PLAIN = "(the widget's last picture: Run All to bring the widget back)"
 

@@ -23,6 +23,7 @@ from .common import (
     fit_width,
     font_scale,
     later,
+    projector_text,
     style_context,
     title_html,
 )
@@ -227,10 +228,13 @@ class FilterExplorer:
         title = title_html(
             "Texture filtering: a floor tilting to the horizon",
             "Tilt the square until its checks are smaller than a pixel, then compare filters: "
-            "moiré without mipmaps, blur with trilinear, detail kept by anisotropic filtering.",
+            "moiré without mipmaps, blur with trilinear, detail kept by anisotropic filtering. "
+            'The ring in the error panel marks the worst pixel; its error is the "max" '
+            "under the colour bar.",
         )
-        self.widget = widgets.VBox([title, control_row([self.tilt, self.filter]),
-                                    *info_widgets, self.display.widget])  # fmt: skip
+        self.widget = projector_text(widgets.VBox([title, control_row([self.tilt, self.filter]),
+                                                   *info_widgets, self.display.widget]),
+                                     title)  # fmt: skip
         self._ahead = None
         #: the other filters' pictures at the tilt on show, drawn while the kernel idles
         self._toggles = TogglesAhead(self.display, self, TEXTURE_FILTERS)
@@ -343,6 +347,9 @@ class FilterExplorer:
             show_kept(self, kept)
             self._set_artists()  # for the next picture drawn
         else:
+            # the status line says a new picture is on its way: the last one's numbers were
+            # read as the new state's (review r81 09-8)
+            self.info.value = self._pending_html()
             self._render()
             self._set_artists()
             self.info.value = self._info_html()
@@ -389,6 +396,10 @@ class FilterExplorer:
             f"<b>{rms}</b> · about {reads:.1f} texels read per pixel · largest λ "
             f"{np.nanmax(self.lod):.1f}"
         )
+
+    def _pending_html(self) -> str:
+        return (f"filter <b>{self.filter.value}</b> at {self.tilt.value:.0f}° · "
+                "<i>computing…</i>")  # fmt: skip
 
     def _reads(self) -> float:
         key = (self.shown_tilt, self.shown_filter)

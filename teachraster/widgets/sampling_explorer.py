@@ -18,6 +18,7 @@ from .common import (
     control_row,
     fit_width,
     labelled,
+    projector_text,
     style_context,
     title_html,
 )
@@ -106,7 +107,9 @@ class SamplingExplorer(Shown):
             "filter until the reconstruction there is flat instead of a false wave.",
         )
         controls = control_row([self.rate, self.width, labelled("shape", self.kernel)])
-        self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
+        self.widget = projector_text(
+            widgets.VBox([title, controls, *info_widgets, self.display.widget]), title
+        )
         self._ahead = self._toggles = None
         if self.backend != "ipympl":
             self._ahead = self.display.ahead([self.rate, self.width], self)
