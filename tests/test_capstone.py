@@ -497,3 +497,34 @@ def test_glass_sorted_says_when_a_buffer_never_called_the_over_passed():
     assert not report.passed
     assert "never calls the over you passed" in str(report), str(report)
     assert "opaque background" not in str(report), str(report)
+
+
+def test_no_pixel_differs_is_never_said_of_a_scene_not_rendered():
+    """r84 12-1: cell 12 printed "no pixel differs" for textured_floor with the stubs as
+    shipped (and after an exception or a time-out): the scene was never rendered."""
+    import json
+    from pathlib import Path
+
+    from endless_loops import forever
+
+    def stub(*args):
+        raise NotImplementedError()
+
+    mine = {"barycentric": sol.CAPSTONE["barycentric"], "perspective_weights": stub}
+    raised = {"barycentric": lambda xy, p: 1 / 0, "perspective_weights": stub}
+    for report in (ex.capstone("textured_floor", **mine),
+                   ex.capstone("textured_floor", **raised),
+                   ex.capstone("grid", covers=forever, budget=0.2)):  # fmt: skip
+        assert len(report.differing_pixels()) == 0
+        words = report.no_difference()
+        assert "no pixel differs" not in words and "was not rendered" in words, words
+        assert report.explain_pixel(0, 0) == words
+    assert "perspective_weights raises NotImplementedError" in ex.capstone(
+        "textured_floor", **mine).no_difference()  # fmt: skip
+    assert "ZeroDivisionError" in ex.capstone("textured_floor", **raised).no_difference()
+    right = ex.capstone("single_triangle", **_mine("single_triangle"))
+    assert right.no_difference().startswith("no pixel differs: all 1728 pixels match")
+    path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
+    code = ["".join(c["source"]) for c in json.loads(path.read_text())["cells"]]
+    assert not [c for c in code if '"no pixel differs"' in c]
+    assert [c for c in code if "report.no_difference()" in c]

@@ -421,10 +421,34 @@ class CapstoneReport(Report):
         return "\n".join(lines)
 
     def differing_pixels(self) -> np.ndarray:
-        """(n, 2) rows and columns where the student's frame differs."""
+        """(n, 2) rows and columns where the student's frame differs; none where the scene
+        was not rendered with the student's functions (:meth:`no_difference` says why)."""
         if self.mine is None:
             return np.zeros((0, 2), dtype=int)
         return np.argwhere(differing(self.spec, self.mine, self.reference))
+
+    def not_rendered(self) -> str | None:
+        """Why the scene has no frame of the student's to compare (a function unfinished,
+        raising or out of time), or None when it was rendered."""
+        if self.mine is not None:
+            return None
+        if self.not_implemented or not self.failures:
+            why = (f"your {self.unfinished or 'function'} raises NotImplementedError: replace "
+                   "`raise NotImplementedError()` with your code and run its cell again")  # fmt: skip
+        else:
+            why = self.failures[0].explanation
+        return (f"{self.spec.name} was not rendered with your functions, so there is no pixel "
+                f"of yours to compare: {why}")  # fmt: skip
+
+    def no_difference(self) -> str:
+        """What to say where :meth:`differing_pixels` is empty: the scene was not rendered
+        (r84 12-1: "no pixel differs" was printed for a stub), or every pixel matches."""
+        if self.mine is None:
+            return self.not_rendered()
+        words = f"no pixel differs: all {self.n_cases} pixels match the package's"
+        if self.failures:  # failed through its own exercise's cases or another scene's
+            return f"{words}; the scene fails for another reason: see the report above"
+        return words
 
     def explain_pixel(self, row: int, col: int) -> str:
         """Why pixel (``row``, ``col``) of your frame differs from the package's (the stage
@@ -433,8 +457,7 @@ class CapstoneReport(Report):
         if not (0 <= row < H and 0 <= col < W):
             raise ValueError(f"(row, col) must lie in the {H} × {W} frame, got ({row}, {col})")
         if self.mine is None:
-            why = self.failures[0].explanation if self.failures else "not implemented yet"
-            return f"no frame of yours to compare: {why}"
+            return self.not_rendered()
         if not differing(self.spec, self.mine, self.reference)[row, col]:
             return f"pixel ({row}, {col}) matches the package's"
         stage, text = explain_pixel(self.spec, self.functions, self.mine, self.reference,
