@@ -110,7 +110,8 @@ WRONG = [
     ("glass_sorted", {"a_buffer": _nearest_first}, "sorting",
      "the likely mistake: you laid each fragment over the result in order of increasing depth"),
     ("glass_sorted", {"a_buffer": lambda d, c, b: _a_buffer_onto(d, c, np.zeros(4))},
-     "sorting", "the likely mistake: you composited the fragments onto transparent black"),
+     "A-buffer resolve", "the likely mistake: you composited the fragments onto transparent "
+     "black"),  # r84 12-3: not "sorting" (one fragment, or the background forgotten)
     # a_buffer calls the student's own over: a wrong over shows first, at the blending stage
     ("glass_sorted", {"over": _straight_over, "a_buffer": lambda d, c, b: _a_buffer_onto(
         d, c, b, step=_straight_over)}, "blending", "you multiplied the source colour by its alpha again"),
@@ -132,7 +133,7 @@ WRONG = [
      "your function returns (0, 0, 0) on every case"),
     ("cube_msaa", {"resolve": lambda c, i, b: np.asarray(c)[0]}, "resolve",
      "your answer holds NaN"),
-    ("glass_sorted", {"a_buffer": lambda d, c, b: np.ones(4)}, "sorting",
+    ("glass_sorted", {"a_buffer": lambda d, c, b: np.ones(4)}, "A-buffer resolve",  # 1 fragment
      "your a_buffer returns (1, 1, 1, 1) whatever the fragments"),
     ("grid", {"covers": lambda xy, p: False}, "coverage", "your function never covers anything"),
     ("intersecting_triangles", {"depth_passes": sv.WRONG["passes with <="][1]}, "depth test",
@@ -497,3 +498,61 @@ def test_glass_sorted_says_when_a_buffer_never_called_the_over_passed():
     assert not report.passed
     assert "never calls the over you passed" in str(report), str(report)
     assert "opaque background" not in str(report), str(report)
+
+
+def test_no_pixel_differs_is_never_said_of_a_scene_not_rendered():
+    """r84 12-1: cell 12 printed "no pixel differs" for textured_floor with the stubs as
+    shipped (and after an exception or a time-out): the scene was never rendered."""
+    import json
+    from pathlib import Path
+
+    from endless_loops import forever
+
+    def stub(*args):
+        raise NotImplementedError()
+
+    mine = {"barycentric": sol.CAPSTONE["barycentric"], "perspective_weights": stub}
+    raised = {"barycentric": lambda xy, p: 1 / 0, "perspective_weights": stub}
+    for report in (ex.capstone("textured_floor", **mine),
+                   ex.capstone("textured_floor", **raised),
+                   ex.capstone("grid", covers=forever, budget=0.2)):  # fmt: skip
+        assert len(report.differing_pixels()) == 0
+        words = report.no_difference()
+        assert "no pixel differs" not in words and "was not rendered" in words, words
+        assert report.explain_pixel(0, 0) == words
+    assert "perspective_weights raises NotImplementedError" in ex.capstone(
+        "textured_floor", **mine).no_difference()  # fmt: skip
+    assert "ZeroDivisionError" in ex.capstone("textured_floor", **raised).no_difference()
+    right = ex.capstone("single_triangle", **_mine("single_triangle"))
+    assert right.no_difference().startswith("no pixel differs: all 1728 pixels match")
+    path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
+    code = ["".join(c["source"]) for c in json.loads(path.read_text())["cells"]]
+    assert not [c for c in code if '"no pixel differs"' in c]
+    assert [c for c in code if "report.no_difference()" in c]
+
+
+def test_the_a_buffers_order_is_said_only_after_two_wrong_frames():
+    """r84 12-2: every failing pixel of glass_sorted said "(farthest first, each nearer
+    fragment laid over what lies behind it)" and "sort by depth and start from the farthest":
+    12.5's one reasoning step, given by the first wrong run. A hint first, the order after a
+    second different wrong frame (as ex.check's hints)."""
+    from teachraster.exercises import tries
+
+    def drawing_order(depths, colours, background):
+        return _a_buffer_onto(depths, colours, background, order=range(len(depths)))
+
+    def nearest_first(depths, colours, background):
+        return _a_buffer_onto(depths, colours, background, order=np.argsort(depths))
+
+    tries.forget_hints("a_buffer")
+    try:
+        first = str(ex.capstone("glass_sorted", **_mine("glass_sorted", a_buffer=drawing_order)))
+        assert "drawing order" in first, first
+        for words in ("farthest first", "start from the farthest", "sort by depth"):
+            assert words not in first, (words, first)
+        again = str(ex.capstone("glass_sorted", **_mine("glass_sorted", a_buffer=drawing_order)))
+        assert "farthest first" not in again  # the same wrong frame again: still a hint
+        second = str(ex.capstone("glass_sorted", **_mine("glass_sorted", a_buffer=nearest_first)))
+        assert "farthest first" in second, second
+    finally:
+        tries.spend_hints(["a_buffer"])

@@ -142,6 +142,10 @@ def test_printing_is_kept_aside_and_costs_no_budget(capsys):
     assert "your function printed 12000 lines" in str(report)
     out = capsys.readouterr().out
     assert out.count("\n") < 30 and "debug" in out and "first 20 of 12000 lines" in out
+    # r84 03-3: the lines are written as the check returns, before a report printed after it
+    print(report)
+    shown = capsys.readouterr().out
+    assert "above this report" in shown and "below the report" not in shown
 
 
 def test_a_lecturer_raises_the_budget_for_a_class(monkeypatch):

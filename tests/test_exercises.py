@@ -367,3 +367,40 @@ def test_float32_products_fail_covers_on_the_long_edge_and_are_named_float32():
     long_edge = [f for f in report.failures if f.case.startswith("a long edge")]
     assert long_edge and all("float32" in f.explanation for f in report.failures)
     assert "longest edge" in long_edge[0].explanation
+
+
+def test_barycentric_is_asked_by_its_definition_and_its_rule_is_a_hint_first():
+    """r84 03-1: 3.1 gave the area ratio in words and the first wrong answer printed it
+    again: transcription. The task asks for the weights by what they do; the rule's formula
+    comes once two different answers have failed. 03-4: the figure's title keeps p's
+    coordinates on one line."""
+    import json
+    import re
+    from pathlib import Path
+
+    from teachraster import edge_function
+    from teachraster.exercises import tries
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    task = next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == "task_3_1")
+    text = "".join(task["source"])
+    assert "sub-triangle" not in text and "signed area" not in text
+    assert "sum to 1" in text and "p = λ1·v1 + λ2·v2 + λ3·v3" in text
+
+    def shifted(xy, p, by=0.5):  # the weights of p + (by, by)
+        v1, v2, v3 = np.asarray(xy, float)
+        q = np.asarray(p, float) + by
+        e = [edge_function(v2, v3, q), edge_function(v3, v1, q), edge_function(v1, v2, q)]
+        return np.array(e) / edge_function(v1, v2, v3)
+
+    tries.forget_hints("barycentric")
+    try:
+        first = ex.check("barycentric", shifted)
+        assert "E of the edge opposite" not in str(first) and "sum to 1" in str(first)
+        second = ex.check("barycentric", lambda xy, p: shifted(xy, p, 0.25))
+        assert "E of the edge opposite v_i at p" in str(second)
+    finally:
+        tries.spend_hints(["barycentric"])
+    title = second.title()
+    assert not re.search(r"\([^)\n]*\n", title), title

@@ -1157,7 +1157,9 @@ def test_the_9_1_walkthrough_is_folded_so_that_students_try_first():
             for c in json.loads(nb.read_text())["cells"]}  # fmt: skip
     task = text["line_pixels_task"]
     folded = task[task.index("<details>") : task.index("</details>")]
-    assert "u = x + y" in folded and "Fraction" in folded and "<summary>How to go about" in folded
+    # r84 09-1: the box is a hint (the first step); the algorithm comes from the checker
+    assert "u = x + y" in folded and "<summary>A hint" in folded
+    assert "open interval" not in task and "closed [0, 1]" not in task
     assert "u = x + y" not in task.replace(folded, "")
 
 
@@ -2036,3 +2038,27 @@ def test_a_stop_after_the_update_is_named_however_near_1(threshold):
 
     assert f"a third stack: {UNDERFLOW_LAYERS} layers, none opaque by itself" in task, task
     assert f"it reads all {UNDERFLOW_LAYERS}" in task and "no short stack" not in task, task
+
+
+def test_line_pixels_algorithm_is_a_hint_in_the_notebook_and_said_after_two_tries():
+    """r84 09-1: 9.1's "How to go about it" box spelled out the whole slab algorithm (turned
+    coordinates, open intervals in t, closed [0, 1], Fraction): 9.1 was transcription. The
+    box keeps the first step; the checker's rule sketches the rest once two different answers
+    have failed."""
+    import json
+    from pathlib import Path
+
+    from teachraster.exercises import tries
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/09_lines_and_blending.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    text = "".join(cells[2]["source"])
+    assert "u = x + y" in text and "open interval" not in text and "[0, 1]" not in text
+    tries.forget_hints("line_pixels")
+    try:
+        first = str(ex.check("line_pixels", lambda p0, p1: sorted(line_pixels(p0, p1))[1:]))
+        assert "open interval" not in first and "a hint only" in first, first
+        second = str(ex.check("line_pixels", lambda p0, p1: sorted(line_pixels(p0, p1))[:-1]))
+        assert second.count("open interval") == 1, second  # said in full once
+    finally:
+        tries.spend_hints(["line_pixels"])

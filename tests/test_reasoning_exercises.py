@@ -205,6 +205,54 @@ def test_robust_fill_blames_float32_only_where_its_spacing_and_the_answer_say_so
     assert "float32" not in str(report) and "precision" not in str(report), str(report)
 
 
+def test_robust_fill_never_names_a_tie_rule_the_function_does_not_follow():
+    """r84 10-2: a fill whose tie rule is the top-left rule's mirror (x and y swapped in, the
+    image transposed back) was told "you cover no centre on an edge (E > 0)" on one case and
+    "you cover every centre on an edge (E ≥ 0)" on another: each gave that case only. A tie
+    rule is named only where it gives every failing tie case; else the rule at the case."""
+    from student_variants import _fill_with
+
+    from teachraster.exercises.hard_case_fill import TIE_KINDS
+
+    good = _fill_with()
+
+    def mirrored(xy, width, height, origin=(0, 0)):
+        return good(np.asarray(xy, float)[:, ::-1], height, width, (origin[1], origin[0])).T
+
+    report = ex.check("robust_fill", mirrored)
+    assert not report.passed
+    kinds = {f.kind for f in report.failures}
+    assert not kinds & set(TIE_KINDS), str(report)
+    assert "E ≥ 0" not in str(report) and "E > 0" not in str(report), str(report)
+    assert "the top-left rule" in report.failures[0].explanation
+    # a tie rule the function follows everywhere is still named, on every failing case
+    report = ex.check("robust_fill", _fill_with(tie=lambda a, b: True))
+    assert {f.kind for f in report.failures} == {"E >= 0"}, str(report)
+
+
+def test_the_naive_fills_report_hints_at_the_repairs_and_gives_them_after_a_try():
+    """r84 10-1: the naive fill's report, run in the notebook before the task, printed each
+    repair as code (np.rint(xy * 256) / 256, the E formula from differences): a to-do list.
+    The naive fill is the first answer: hints; the student's first try, a second answer,
+    gets the full words."""
+    from student_variants import _fill_with
+
+    from teachraster.exercises import tries
+
+    naive = _fill(raw=True, rule="inclusive", absolute=True, dtype=np.float32)
+    tries.forget_hints("robust_fill")
+    try:
+        text = str(ex.check("robust_fill", naive))
+        for code in ("np.rint", "(b.x − a.x)(p.y − a.y)", "from differences to a vertex",
+                     "keep the vertices in float64", "the top-left rule gives it"):  # fmt: skip
+            assert code not in text, (code, text)
+        assert "a hint only" in text
+        tried = str(ex.check("robust_fill", _fill_with(snap=False)))
+        assert "np.rint(xy * 256) / 256" in tried, tried
+    finally:
+        tries.spend_hints(["robust_fill"])
+
+
 def test_robust_fill_task_keeps_the_goal_and_leaves_the_causes_to_the_checker():
     """Exercise 10's task names no fix: the catalogue's failures, explained, teach them."""
     import json
@@ -504,6 +552,33 @@ def test_safe_near_too_close_is_told_why_truly():
     report = ex.check("safe_near", lambda z, g, f, b: 0.9 * sol.safe_near(z, g, f, b))
     assert not report.passed
     assert all("of a step apart" in f.explanation for f in report.failures), str(report)
+
+
+def test_safe_near_too_far_out_is_not_told_it_fails_to_tell_them_apart():
+    """r84 05-1: "finer than needed: any near plane from 0.152 to 0.154 tells them apart"
+    was said of 0.156, which tells them apart too; and 05-3: the figure drew a 3 % miss as
+    one line (log axes over a factor 900)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("safe_near", lambda z, g, f, b: 1.02 * sol.safe_near(z, g, f, b))
+    finer = [f.explanation for f in report.failures if "finer than needed" in f.explanation]
+    assert finer, str(report)
+    for words in finer:
+        assert "yours tells them apart too" in words and "the check accepts" in words, words
+        assert "tells them apart, and yours" not in words
+    from teachraster.exercises.near_plane import draw_near, near_cases
+
+    case = near_cases()[0]
+    fig, ax = plt.subplots()
+    draw_near(ax, case, 1.03 * case[2])
+    lo, hi = ax.get_xlim()
+    assert hi / lo < 2, (lo, hi)  # zoomed: both lines apart on the page
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any(t.startswith("your n ") for t in labels), labels
+    plt.close(fig)
 
 
 def test_safe_near_with_an_infinite_far_plane_still_fails_where_it_matters():

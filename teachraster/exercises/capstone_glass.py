@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
+from . import tries
 from .front_to_back import as_rgba
 from .running import run_checker
 from .scalars import vec
@@ -97,14 +98,24 @@ def variants(depths, colours, background) -> dict[str, np.ndarray]:
     }
 
 
+NO_BACKGROUND = "you composited the fragments onto transparent black"
+
+#: The words that give 12.5's order away, said only once two different frames of the
+#: student's ``a_buffer`` have failed (r84 12-2: every failing pixel said "farthest first,
+#: each nearer fragment laid over what lies behind it"; :func:`.tries.hinted_check`).
+REPAIRS = {
+    "drawing order": ", so sort by depth and start from the farthest (each nearer one is laid "
+    "over what lies behind it)",
+    "nearest first": "; lay them on farthest first (or go nearest first with the under step "
+    "of exercise 9, weighting each by the transmittance left in front)",
+}
+
 MISTAKES = {
     "drawing order": "you composited in drawing order, as the GPU blends: at this pixel the "
-    "fragment drawn later lies behind the one drawn first, so sort by depth and start from the "
-    "farthest (each nearer one is laid over what lies behind it)",
+    "fragment drawn later lies behind the one drawn first" + REPAIRS["drawing order"],
     "nearest first": "you laid each fragment over the result in order of increasing depth: "
-    "the nearest then ends at the bottom; lay them on farthest first (or go nearest first "
-    "with the under step of exercise 9, weighting each by the transmittance left in front)",
-    "no background": "you composited the fragments onto transparent black: the background "
+    "the nearest then ends at the bottom" + REPAIRS["nearest first"],
+    "no background": NO_BACKGROUND + ": the background "
     "shows through them, so it is the farthest layer, the one to start from",
     "premultiplied twice": "you multiplied each fragment's colour by its alpha again: the "
     "fragments are premultiplied already (your over with straight alpha?)",
@@ -127,13 +138,31 @@ def explain(fn, frame, row: int, col: int) -> str:
     yours, error = run_checker(lambda: _answer(fn, depths, colours),
                                (None, "your a_buffer did not answer here in time"))  # fmt: skip
     said = error or f"your a_buffer returned {vec(yours, ours)}"
+    full = tries.hints_spent(NAME)
+    how = ("farthest first, each nearer fragment laid over what lies behind it" if full else
+           "every fragment seen through those nearer than it, the background through all")  # fmt: skip
     head = (f"its fragments in drawing order have depths {vec(depths)} and premultiplied "
             f"colours {', '.join(vec(c) for c in colours)} over the background "
             f"{vec(BACKGROUND)}: {said}, the A-buffer's resolve gives {vec(ours, yours)} "
-            "(farthest first, each nearer fragment laid over what lies behind it)")  # fmt: skip
+            f"({how})")  # fmt: skip
     if yours is None:
         return head
-    return head + _mistake(fn, depths, colours, yours, ours)
+    words = _mistake(fn, depths, colours, yours, ours)
+    if not full:  # a hint: the mistake, not its repair
+        for text in REPAIRS.values():
+            words = words.replace(text, "")
+    return head + words
+
+
+#: The task whose words are staged (:func:`.tries.hinted_check`).
+NAME = "a_buffer"
+
+
+def count_try(frame) -> None:
+    """Count one failing frame of the student's ``a_buffer`` (its repair is said in full
+    once two different ones have failed in this kernel, as ``ex.check``'s hints are)."""
+    colour = getattr(frame, "color", None)
+    tries.hinted_check(NAME, repr(frame) if colour is None else np.asarray(colour).tobytes())
 
 
 def _answer(fn, depths, colours):

@@ -18,6 +18,8 @@ explain it, in this order:
    its answer and agrees with the most answers overall, provided it agrees with four answers
    in five (else its answer here is a coincidence, frequent where answers are few: three
    verdicts, a bool); symptoms ("keeps a vertex behind the plane") only when no cause fits.
+   A mistake with ``must_fit`` (a tie rule) is named only where it gives the answer of every
+   failing case ``must_fit`` picks (every tie case), else nowhere (r84 10-2).
    An exercise with ``partial_names=False`` names here only a mistake that gives every
    failing answer.
 4. **Low precision**, only when the error is within the rounding of the precision named
@@ -312,6 +314,16 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
     return fits
 
 
+def _all_it_must(fit: _Fit, failing: list[Result]) -> bool:
+    """The mistake gives every failing answer its :attr:`~.exercise.Mistake.must_fit` asks
+    for (r84 10-2: a tie rule named on one case only, another tie rule on the next)."""
+    must = fit.mistake.must_fit
+    if must is None:
+        return True
+    return all(r.index in fit.failing for r in failing
+               if run_checker(lambda r=r: bool(must(r.args, r.expected, r.got)), False))  # fmt: skip
+
+
 def _same_answer(spec: Exercise, value, r: Result) -> bool:
     return spec.match(r.got, value, r.args) if spec.match is not None else near(value, r.got)
 
@@ -353,7 +365,7 @@ def diagnose(
         return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
     mistakes = spec.all_mistakes() + [low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
-    fits = [f for f in fits if f.whole or not f.mistake.only_whole]
+    fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
     whole = sorted(
         (f for f in fits if f.whole and not f.mistake.symptom),
         key=lambda f: (len(f.mistake.parts), f.order),

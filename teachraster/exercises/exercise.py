@@ -50,6 +50,11 @@ class Mistake:
         more elsewhere has another cause).
     parts : tuple of Mistake
         For a combination of mistakes (:class:`Knobs`): the single mistakes it combines.
+    must_fit : callable, optional
+        ``must_fit(args, expected, got) -> bool``: the failing cases this mistake must give,
+        every one of them, to be named at all (a tie rule: every failing case wrong only at
+        centres on an edge; r84 10-2: a mirrored tie rule was named "E > 0" on one case and
+        "E ≥ 0" on another, each right only there).
     """
 
     kind: str
@@ -60,6 +65,7 @@ class Mistake:
     only_whole: bool = False
     parts: tuple = ()
     without: Callable | None = field(default=None, repr=False)  # (part) -> gives without it
+    must_fit: Callable | None = field(default=None, repr=False)
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words

@@ -17,6 +17,7 @@ one of its options), then explained at its first wrong pixel with the top-left r
 from __future__ import annotations
 
 import copy
+from dataclasses import replace
 from functools import cache
 from types import SimpleNamespace
 
@@ -239,6 +240,15 @@ def _snapping_decides(args, expected, got) -> bool:
     return not np.array_equal(unsnapped, expected)
 
 
+def _on_edge(args) -> np.ndarray:
+    """The window's centres on an edge of the snapped triangle (E ≥ 0 covers them, E > 0
+    does not): where only the tie rule decides."""
+    xy, width, height, origin = args
+    s, kw = snap(np.asarray(xy, float)), dict(origin=tuple(origin))
+    return (naive_coverage(s, width, height, rule="inclusive", **kw)
+            & ~naive_coverage(s, width, height, rule="strict", **kw))  # fmt: skip
+
+
 #: The vertices a tie mistake may sit beside: (how they were read, words naming that).
 _VERTEX_READINGS = (
     ("snapped", ""),
@@ -421,10 +431,34 @@ MISTAKES["transposed, origin swapped"] = (
     f"{MISTAKES['transposed']}; and {MISTAKES['origin swapped']}"
 )
 
+
+def _tie_case(args, expected, got) -> bool:
+    """Is the answer wrong only at ties: every wrong pixel a centre on an edge of the snapped
+    triangle (covered by E ≥ 0 on every edge, not by E > 0)? Then a tie rule named must give
+    it (a wrong pixel elsewhere has another cause: precision, snapping; so has float32
+    rounding of A x + B y + C, which moves centres across the edges they lie on)."""
+    if got.shape != expected.shape or _rounding_decides(args, got):
+        return False
+    wrong = got != expected
+    return bool(wrong.any() and not (wrong & ~_on_edge(args)).any())
+
+
 #: The tie mistakes beside another (r6: an unsnapped E >= 0 fill at 10013 px was told
 #: precision, where float32 holds the grid): named when no single cause fits.
-TIES = tuple(Mistake(kind, _tie_words(kind, rule), fits=_tie_rule_decides(rule), symptom=True)
+TIES = tuple(Mistake(kind, _tie_words(kind, rule), fits=_tie_rule_decides(rule), symptom=True,
+                     must_fit=_tie_case)
              for kind, rule in (("E >= 0", "inclusive"), ("E > 0", "strict")))  # fmt: skip
+
+#: The tie rules a student may get wrong: each is named only where it gives the answer of
+#: every failing tie case (r84 10-2: a mirrored rule was "E > 0" on one, "E ≥ 0" on another).
+TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED)
+
+
+def _table() -> list[Mistake]:
+    """The mistakes table, each tie rule held to every failing tie case."""
+    table = variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, ROUNDING, *TIES,
+                                                   OFF_GRID))  # fmt: skip
+    return [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
 
 
 def explain_fill(args, expected, got) -> str:
@@ -492,8 +526,30 @@ def same_image(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
     return got.shape == expected.shape and bool(np.array_equal(got, expected))
 
 
+#: The repairs as the words give them, and what is said instead until two different answers
+#: have failed (r84 10-1: the naive fill's report, run before the task, printed each repair as
+#: code: the exercise was a to-do list). The naive fill is the first answer; the student's
+#: first try of robust_fill the second, so its check says everything.
+HINTS = (
+    (": snap first (np.rint(xy * 256) / 256), then decide ties by the top-left rule on the "
+     "snapped triangle", ": a GPU changes the vertices before it tests any centre "
+     "(lesson 07): find what it does to them"),
+    ("; compute E from differences to a vertex, (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − "
+     "a.x), in float64: on the snapped grid it is then exact", "; find a form of E, and a "
+     "precision, in which E is exact for vertices and centres on the snapped grid"),
+    ("; keep the vertices in float64 (or integers in 1/256 px) and compute each edge function "
+     "in float64 (from differences to a vertex is safest: A x + B y + C cancels two products "
+     "of size x·y)", "; find which of your numbers must hold that grid there, and a form of E "
+     "without products of size x·y"),
+    (" first (np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does,", " first, as a "
+     "GPU's fixed-point set-up does,"),
+    ("; the top-left rule gives it to one of them", "; a GPU gives it to exactly one of them"),
+    (", so orient the snapped one", ""),
+    ("; compute E in float64 (from differences to a vertex is safest)", ""),
+)  # fmt: skip
+
 ROBUST_FILL = Exercise(
     "robust_fill", fill_cases, as_image, same_image, explain_fill, _rule,
-    variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, ROUNDING, *TIES, OFF_GRID)), answers=(PackageAnswer(rasterize),),
-    draw=draw_fill, compose=compose,
+    _table(), answers=(PackageAnswer(rasterize),),
+    draw=draw_fill, compose=compose, hints=HINTS,
 )  # fmt: skip

@@ -9,6 +9,7 @@ checker runs itself (:mod:`.diagnosis`).
 from __future__ import annotations
 
 import itertools
+import re
 
 import numpy as np
 
@@ -160,7 +161,9 @@ def _draw_bary(ax, case, got):
     artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
     ax.set_xlim(-0.6, 6.0)  # the right part of the axes holds the triangle
     ax.set_ylabel("weight")
-    artists.append(ax.legend(fontsize="x-small", loc="upper left"))
+    low, high = ax.get_ylim()  # r84 03-4: room above the bars for the legend
+    ax.set_ylim(low, high + 0.3 * (high - low))
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", ncols=2))
     artists += _draw_triangle_and_p(ax.inset_axes([0.56, 0.06, 0.42, 0.88]), xy, p)
     return artists
 
@@ -209,7 +212,13 @@ BARYCENTRIC = Exercise(
     "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
     lambda g, e, a: all_close(g, e), explain_barycentric, _bary_rule, barycentric_mistakes(),
     float32=bary_float32, float32_words=bary_float32_words, answers=(PackageAnswer(barycentric),),
-    draw=_draw_bary,
+    draw=_draw_bary, hints=(
+        # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
+        # must not print the area ratio that the task leaves to the student
+        (re.compile(r": λ_i = E of the edge opposite v_i at p, divided by E\(v1, v2, v3\) = "
+                    r"[^;.]*"), ": the weights rebuild p (λ1·v1 + λ2·v2 + λ3·v3 = p) and sum "
+         "to 1; check yours against both on this case"),
+    ),
 )  # fmt: skip
 
 

@@ -494,11 +494,22 @@ def explain_line(args, expected, got) -> str:
             f"dark ({len(missing)} missing)")  # fmt: skip
 
 
+#: One way to the answer, said by the rule only once two different answers of the student's
+#: have failed (r84 09-1: the notebook's box spelled it out before any try; ``hints``).
+ALGORITHM = (
+    " (one way: in the turned coordinates u = x + y, v = x − y a diamond is an open square, so "
+    "each of its two conditions holds on an open interval of t along p(t) = p0 + t·(p1 − p0); "
+    "the segment meets the diamond where both intervals and the closed [0, 1] share a point, "
+    "and leaves it unless p1 lies inside; move both end points first and compute with "
+    "`Fraction`, so that every tie is exact)"
+)
+
+
 def _line_rule(args, expected, got) -> str:
     p0, p1 = args
     return (
         ": a pixel is lit when the segment passes through its diamond |x − (col + ½)| + "
-        "|y − (row + ½)| < ½ and leaves it (p1's own diamond stays dark); " + _TIE
+        "|y − (row + ½)| < ½ and leaves it (p1's own diamond stays dark)" + ALGORITHM + "; " + _TIE
     )
 
 
@@ -560,6 +571,7 @@ LINE_PIXELS = Exercise(
         f"your function returns {short(set(v)) if len(v) else 'no pixels'} for every line, "
         "whatever its end points: a placeholder left in?"),
     answers=(PackageAnswer(rasterize_line, modules=("teachraster.core.line_rules",)),),
-    draw=draw_line, partial_names=False, once=((_TIE, _TIE_AGAIN),),
+    draw=draw_line, partial_names=False, once=((_TIE, _TIE_AGAIN), (ALGORITHM, "")),
+    hints=((ALGORITHM, ""),),
     inputs_drawn=True, example=7,  # 45° along diamond edges: ties, drawn over the diamonds
 )  # fmt: skip

@@ -206,8 +206,11 @@ def explain_near(args, expected, got) -> str:
         verdict = (f"too coarse: the two surfaces' window depths lie {num(steps)} of a step "
                    "apart, so both can round to one stored value and z-fight")  # fmt: skip
     elif got > hi:
-        verdict = (f"finer than needed: any near plane from {num(lo, got)} to {num(hi, got)} "
-                   "tells them apart, and yours lies further out, losing precision elsewhere")  # fmt: skip
+        # r84 05-1: "any near plane from lo to hi tells them apart" read as if yours did not
+        verdict = (f"finer than needed: yours tells them apart too, but lies further out than "
+                   f"the smallest near plane that does, losing precision elsewhere; the check "
+                   f"accepts {num(lo, got)} to {num(hi, got)}, the smallest by any reading of "
+                   "whole steps up to 1 % further out")  # fmt: skip
     else:
         verdict = "right"
     return f"{head}, where the buffer resolves Δz = {num(yours)} ({verdict})"
@@ -233,14 +236,20 @@ def draw_near(ax, case, got):
     """Δz at the case's distance against the near plane (log-log), the gap, the expected
     near plane and yours."""
     _, (z, gap, far, bits), expected = case
-    ns = np.geomspace(expected / 30, min(expected * 30, z * 0.999), 200)
+    shown = got is not None and np.isfinite(got) and 0 < got < z
+    lo, hi = expected / 30, min(expected * 30, z * 0.999)
+    if shown and abs(got - expected) < 0.1 * expected:  # r84 05-3: 3 % apart drew one line
+        lo, hi = 0.8 * min(got, expected), min(1.2 * max(got, expected), z * 0.999)
+    ns = np.geomspace(lo, hi, 200)
     dz = np.array([resolution(z, n, far, bits) for n in ns])
     artists = ax.loglog(ns, dz, color="black", label=f"Δz at z = {num(z)}")
     artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
-    artists.append(ax.axvline(expected, color="#2b7bba", label="smallest n (expected)"))
-    if got is not None and np.isfinite(got) and 0 < got < z:
+    artists.append(ax.axvline(expected, color="#2b7bba",
+                              label=f"smallest n (expected) {num(expected, got)}"))  # fmt: skip
+    if shown:
         colour = "#7fbf7f" if same_near(got, expected, (z, gap, far, bits)) else "#d7301f"
-        artists.append(ax.axvline(got, color=colour, linestyle="--", label="your n"))
+        artists.append(ax.axvline(got, color=colour, linestyle="--",
+                                  label=f"your n {num(got, expected)}"))  # fmt: skip
     ax.set_xlabel("near plane n")
     ax.set_ylabel("depth resolution Δz")
     artists.append(ax.legend(fontsize="x-small"))

@@ -82,7 +82,9 @@ class Capture:
                         "that overflowed or divided by zero")  # fmt: skip
         if self.lines:
             shown = min(self.lines, len(self.kept))
-            rest = f"; the first {shown} are shown below the report" if shown else ""
+            # r84 03-3: written when the check returns, so above a report printed after it
+            rest = (f"; the first {shown} were shown when the check ended, above this report"
+                    if shown else "")  # fmt: skip
             said.append(
                 f"your function printed {self.lines} line{'s' * (self.lines != 1)} during the "
                 f"check{rest} (printing is slow in a notebook: remove debug prints once done)"

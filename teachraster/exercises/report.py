@@ -257,9 +257,13 @@ def issued(report) -> bool:
 def _wrapped(title: str, width: int = 60, lines: int = 3) -> str:
     """A title on at most ``lines`` lines of ``width`` (r64 01-3: "random 30: counter-clockwise
     on scree..." was cut at 40 characters, before the words that said what the case is)."""
+    import re
     import textwrap
 
-    return "\n".join(textwrap.wrap(title, width, max_lines=lines, placeholder=" ..."))
+    # r84 03-4: a point's coordinates stay on one line ("p=(6.5,⏎6.5)" was cut in two)
+    whole = re.sub(r"\([^()]{0,24}\)", lambda m: m.group(0).replace(" ", "\u00a0"), title)
+    text = "\n".join(textwrap.wrap(whole, width, max_lines=lines, placeholder=" ..."))
+    return text.replace("\u00a0", " ")
 
 
 #: The stub's figure (issue 30, r46: every stub figure showed one case's expected answer).
