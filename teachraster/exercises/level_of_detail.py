@@ -233,7 +233,7 @@ def hinted(name: str, words: str, hints) -> str:
     if tries.hints_spent(name):
         return words
     for text, hint in hints:
-        words = words.replace(text, hint)
+        words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
     return words
 
 
