@@ -284,6 +284,30 @@ def _behind_words(args, expected, got) -> str:
     return f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
 
 
+def _new_vertices(args, got) -> list:
+    """The vertices of ``got`` that are none of the triangle's own."""
+    (v,) = args
+    g = np.asarray(got, dtype=float).reshape(-1, 4)
+    return [p for p in g if not any(all_close(p, q) for q in v)]
+
+
+def _off_plane(args, expected, got) -> bool:
+    """A new vertex that is not on the near plane (r85 04: t = ½ or a wrong sign of t was
+    told only its symptom, or a generic rule)."""
+    scale = max(1.0, float(np.abs(args[0]).max()))
+    return any(abs(p[2] + p[3]) > 1e-4 * scale for p in _new_vertices(args, got))
+
+
+def _off_plane_words(args, expected, got) -> str:
+    scale = max(1.0, float(np.abs(args[0]).max()))
+    p = next(p for p in _new_vertices(args, got) if abs(p[2] + p[3]) > 1e-4 * scale)
+    return (
+        f"your new vertex {vec(p)} is not on the near plane: its z + w is {num(p[2] + p[3])}, "
+        "not 0, so its t is wrong (a crossing lies where z + w, which changes linearly along "
+        "the edge, reaches 0)"
+    )
+
+
 def _divided(a) -> float:
     return a[2] / a[3] + 1
 
@@ -291,9 +315,9 @@ def _divided(a) -> float:
 CLIP_MISTAKES = [
     Mistake("unclipped", _unclipped_words, gives=lambda v: np.asarray(v, dtype=float)),
     Mistake("after the divide", _divide_words, gives=lambda v: clip_with(v, _divided)),
-    Mistake("t from z only", _words_with_crossing("the new vertex lies where z + w = 0, at t = "
-            "d1/(d1 − d2) with d = z + w (the signed distance to the plane z = −w); you took t "
-            "from z alone", z_alone=True),
+    # r85 04: the hinted words said where the vertex lies twice
+    Mistake("t from z only", _words_with_crossing("you took t from z alone, as if the plane "
+            "were z = 0", z_alone=True),
             gives=lambda v: clip_with(v, t_from=lambda a, b: a[2] / (a[2] - b[2]))),
     Mistake("t from the divide", _words_with_crossing("you took t from z/w after the divide; "
             "the new vertex is interpolated in clip space, at t = d1/(d1 − d2) with d = z + w"),
@@ -323,6 +347,7 @@ CLIP_MISTAKES = [
     Mistake("reversed", "your polygon has the right vertices in reverse order: keep the "
             "triangle's order (walk the edges v1→v2→v3→v1)",
             fits=lambda args, e, g: len(g) > 0 and same_polygon(np.asarray(g)[::-1], e)),
+    Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
 ]  # fmt: skip
 

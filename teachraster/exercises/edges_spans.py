@@ -8,6 +8,8 @@ solution the checker runs itself: it is named only where it gives the student's 
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ..core.edges import edge_function
@@ -94,6 +96,12 @@ EDGE_MISTAKES = [
         gives=lambda a, b, p: _e(a, b, p) / 2,
     ),
     Mistake(
+        "truncated to an integer",
+        "yours is E truncated to a whole number (int(), or an integer array?): E is a float, "
+        "and its fraction decides the side of a point near the edge",
+        gives=lambda a, b, p: float(int(_e(a, b, p))),
+    ),
+    Mistake(
         "x and y swapped",
         "x and y are swapped: a point is (x, y) = (p[0], p[1]); E = (b.x − a.x)(p.y − a.y) − "
         "(b.y − a.y)(p.x − a.x)",
@@ -116,10 +124,18 @@ def _draw_edge(ax, case, got):
     return draw_values(ax, ["E(a, b, p)"], [case[2]], None if got is None else [got])
 
 
+#: r85 01: every failure printed E's formula, factor by factor, the answer of 1.1: the first
+#: failing tries print E's value only (the full words come after two different answers).
+EDGE_HINTS = (
+    (re.compile(r"E = \(b\.x − a\.x\)\(p\.y − a\.y\) − \(b\.y − a\.y\)\(p\.x − a\.x\) = .+? = "),
+     "E = "),
+    (re.compile(r"; E = \(b\.x − a\.x\)\(p\.y − a\.y\) − \(b\.y − a\.y\)\(p\.x − a\.x\)$"), ""),
+)  # fmt: skip
+
 EDGE_FUNCTION = Exercise(
     "edge_function", edge_function_cases, as_number, lambda g, e, a: close(g, e),
     explain_edge, lambda *a: "", EDGE_MISTAKES, float32=edge_float32,
-    answers=(PackageAnswer(edge_function),), draw=_draw_edge,
+    answers=(PackageAnswer(edge_function),), draw=_draw_edge, hints=EDGE_HINTS,
 )  # fmt: skip
 
 

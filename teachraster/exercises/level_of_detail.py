@@ -12,6 +12,7 @@ answer the student's reproduces.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -76,16 +77,21 @@ def explain_level(args, expected, got) -> str:
     lx, ly = (float(a) for a in footprint_axes(ddx, ddy, (h, w)))
     return (
         f"on an H×W = {h}×{w} texture the footprint's axis "
-        f"along x is {_AXIS_X}{num(lx)} texels, along y {_AXIS_Y}{num(ly)}{_RHO}"
+        f"along x is {_AXIS_X}{_texels(lx)}, along y {_AXIS_Y}{_texels(ly)}{_RHO}"
         f"{num(max(lx, ly))}{_LAMBDA}"
         f"{num(expected, got)}; yours is {num(got, expected)}"
     )
 
 
+def _texels(n: float) -> str:
+    """``1 texel``, ``2.5 texels`` (r85 07 D4: "1 texels")."""
+    return f"{num(n)} texel" + ("" if num(n) == "1" else "s")
+
+
 # the words of explain_level that state 7.1's formula, each replaced by a hint on the first
 # failing tries (issue 30: hints before formulas; the per-case words gave it on every failure)
 _AXIS_X, _AXIS_Y = "‖(du/dx·W, dv/dx·H)‖ = ", "‖(du/dy·W, dv/dy·H)‖ = "
-_RHO, _LAMBDA = " texels, ρ = the longer = ", ", λ = log2 ρ = "
+_RHO, _LAMBDA = ", ρ = the longer = ", ", λ = log2 ρ = "
 
 
 _NORMS = {
@@ -103,15 +109,18 @@ _COMBINE = {
     "mean": lambda x, y: (x + y) / 2,
 }
 _LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r,
-        "plus one": lambda r: math.log2(r) + 1}  # fmt: skip
+        "plus one": lambda r: math.log2(r) + 1, "floor": lambda r: math.floor(math.log2(r))}  # fmt: skip
 
 
-def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False):  # fmt: skip
-    """mip_level with the usual mistakes as knobs (the defaults are GL's rule)."""
+def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False, pair="step"):  # fmt: skip
+    """mip_level with the usual mistakes as knobs (the defaults are GL's rule); ``pair``
+    "coordinate" builds the axes as (∂u/∂x, ∂u/∂y) and (∂v/∂x, ∂v/∂y) (r85 07: unnamed)."""
     h, w = size
     sx, sy = {"texels": (w, h), "units": (1, 1), "swapped": (h, w)}[scale]
     ax = (float(ddx[0]) * sx, float(ddx[1]) * sy)
     ay = (float(ddy[0]) * sx, float(ddy[1]) * sy)
+    if pair == "coordinate":
+        ax, ay = (ax[0], ay[0]), (ax[1], ay[1])
     rho = _COMBINE[combine](_NORMS[norm](ax), _NORMS[norm](ay))
     if rho <= 0 and log != "none":
         return None
@@ -163,6 +172,14 @@ LEVEL_KNOBS = Knobs(level_with, {
         Slip("log10", "that is log10; λ = log2 ρ", "log10"),
         Slip("one too many", "your λ is one more than log2 ρ: level 0 is the full texture, so "
              "one texel per pixel (ρ = 1) is λ = 0", "plus one"),
+        Slip("rounded down", "you rounded λ down to a whole level (floor or int()): λ is "
+             "fractional, and 7.3's trilinear blends the two levels around it", "floor"),
+    ],
+    "pair": [
+        Slip("derivatives paired by coordinate", "you paired the derivatives by coordinate, "
+             "(∂u/∂x, ∂u/∂y) and (∂v/∂x, ∂v/∂y); each footprint axis is where one pixel step "
+             "takes (u, v): (∂u/∂x, ∂v/∂x) for a step right, (∂u/∂y, ∂v/∂y) for a step down",
+             "coordinate"),
     ],
     "clamp": [
         Slip("clamped", "λ is unclamped here: a magnified texture (ρ < 1) has λ < 0", True),
@@ -193,8 +210,14 @@ HINTS = (
     (": λ = log2 max(‖∂(u·W, v·H)/∂x‖, ‖∂(u·W, v·H)/∂y‖)",
      ": λ counts the halvings that bring the footprint's longer axis, measured in "
      "texels of level 0, down to one texel"),
-    (_AXIS_X, ""), (_AXIS_Y, ""), (_RHO, " texels (ρ = "),
+    (_AXIS_X, ""), (_AXIS_Y, ""), (_RHO, " (ρ = "),
     (_LAMBDA, "), λ = "),
+    # r85 07 D1: the axes in texels and ρ answer 7.1's three steps: the first tries get λ only
+    (re.compile(r" the footprint's axis along x is .+? texels?, along y .+? texels? \(ρ = .+?\), "),
+     ", "),
+    (re.compile(r"measure them in texels \(u times W = \d+, v times H = \d+\) before taking "
+                r"lengths"),
+     "λ counts in texels of level 0: how many texels long is the texture along u, and along v?"),
     # r73 07-1: a named mistake's fix as a question first
     ("; GL takes the longer axis, ρ = max(|∂/∂x|, |∂/∂y|), each axis its own length",
      ": which one length of the footprint decides whether some direction is undersampled?"),
@@ -210,7 +233,7 @@ def hinted(name: str, words: str, hints) -> str:
     if tries.hints_spent(name):
         return words
     for text, hint in hints:
-        words = words.replace(text, hint)
+        words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
     return words
 
 

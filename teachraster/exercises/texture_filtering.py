@@ -436,7 +436,7 @@ def _trilinear_cases(rng, word):
 
 def _lod_words(label: str, lod: float) -> str:
     """ ", λ=…" unless the label is that already ("λ = 1": r64 07 D5, "λ = 1, …, λ=1")."""
-    return "" if re.fullmatch(r"λ = [−\d.]+", label) else f", λ={num(lod)}"
+    return "" if re.search(r"λ = [−\d.]+", label) else f", λ={num(lod)}"
 
 
 trilinear_cases = fixed_and_drawn(_trilinear_cases, SEED + 90)  # r49: some drawn per check
@@ -508,6 +508,7 @@ LEVEL_FILTERS = {
     "clamp": {"wrap_as": "clamp"},
     "swapped": {"swap": True},
     "transposed": {"transpose": True},
+    "repeat": {"wrap_as": "repeat"},
 }
 
 
@@ -581,6 +582,10 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "not u·W − ½)" + _BILINEAR_FIRST, "corners"),
         Slip("bilinear: always clamp", "the levels are clamped at the border whatever the wrap "
              "mode" + _BILINEAR_FIRST, "clamp"),
+        # r85 07 D3: `wrap` not passed on was told to rethink its levels and weights
+        Slip("wrap not passed on", lambda a, e, g: f"every level is tiled ('repeat') although "
+             f"this case asks for wrap={a[3]!r}: pass trilinear's `wrap` on to each bilinear "
+             "call (the default 'repeat' is only the default)", "repeat"),
         Slip("bilinear: weights swapped", "within each level the texel weights are swapped"
              + _BILINEAR_FIRST, "swapped"),
         Slip("bilinear: rows and columns swapped", "each level's rows and columns are swapped"

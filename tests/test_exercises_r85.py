@@ -1,0 +1,131 @@
+"""Review r85 (exercises 01, 04, 07 played as students): the first failing try gives no
+formula away, and the mistakes it left unnamed or misnamed are named.
+
+Each test checks a student's first try (the staged hints on) or, where the mistake is named
+in the full words, the full words (the hints spent, as after two different failing answers).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+from exercise_solutions import CORRECT
+
+from teachraster import exercises as ex
+from teachraster.exercises import tries
+from teachraster.exercises.level_of_detail import level_with
+
+
+def _first_try(name, fn):
+    """The report of a student's first failing check of task ``name`` in a fresh kernel."""
+    tries.forget_hints(name)
+    try:
+        return ex.check(name, fn, budget=60)
+    finally:
+        tries.spend_hints([name])
+
+
+def _words(report) -> str:
+    return "\n".join(f.explanation for f in report.failures)
+
+
+def test_mip_levels_first_try_gives_neither_the_axes_in_texels_nor_rho():
+    """r85 07 D1: "the footprint's axis along x is 8 texels, along y 2 texels (ρ = 8), λ = 3"
+    answered 7.1's three steps on the first failure."""
+    report = _first_try("mip_level", lambda *a: level_with(*a, scale="units"))
+    words = _words(report)
+    assert not report.passed and "a hint only" in str(report)
+    assert "ρ" not in words and "texels (" not in words and "u times W" not in words, words
+    assert "texture, λ = 0; yours is -6" in words, words
+
+
+@pytest.mark.parametrize(("knobs", "named"), [
+    ({"log": "floor"}, "rounded λ down to a whole level"),
+    ({"pair": "coordinate"}, "paired the derivatives by coordinate"),
+])  # fmt: skip
+def test_mip_level_mistakes_r85_left_half_named(knobs, named):
+    """r85 07: a floored λ and axes built per coordinate got only the rule restated."""
+    report = ex.check("mip_level", lambda *a: level_with(*a, **knobs))
+    assert named in report.failures[0].explanation, str(report)
+
+
+def test_one_texel_is_singular():
+    """r85 07 D4: "the footprint's axis along x is 1 texels"."""
+    report = ex.check("mip_level", lambda *a: level_with(*a, scale="units"))
+    words = _words(report)
+    assert not re.search(r"(?<![\d.])1 texels", words) and "= 1 texel," in words, words
+
+
+def test_trilinear_that_drops_wrap_is_told_so():
+    """r85 07 D3: a trilinear calling bilinear with 'repeat' whatever `wrap` was told to
+    rethink its levels and weights, which were right."""
+    bilinear = CORRECT["bilinear"]
+
+    def trilinear(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q)
+        lower = int(math.floor(lam))
+        upper, t = min(lower + 1, q), lam - lower
+        a, b = bilinear(pyramid[lower], uv, "repeat"), bilinear(pyramid[upper], uv, "repeat")
+        return (1 - t) * np.asarray(a) + t * np.asarray(b)
+
+    for report in (_first_try("trilinear", trilinear), ex.check("trilinear", trilinear)):
+        assert "pass trilinear's `wrap` on" in report.failures[0].explanation, str(report)
+
+
+def _clip(t_of):
+    def clip_near(v):
+        v, out = np.asarray(v, dtype=float), []
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            da, db = a[2] + a[3], b[2] + b[3]
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0):
+                out.append(a + t_of(a, b, da, db) * (b - a))
+        return np.array(out).reshape(-1, 4)
+
+    return clip_near
+
+
+@pytest.mark.parametrize("t_of", [
+    lambda a, b, da, db: 0.5,  # the midpoint
+    lambda a, b, da, db: da / (da + db),  # a sign slip
+])  # fmt: skip
+def test_a_crossing_off_the_plane_is_named(t_of):
+    """r85 04: t = ½ was told its symptom only ("keeps (…), whose z + w < 0"), a wrong sign
+    the generic rule."""
+    report = _first_try("clip_near", _clip(t_of))
+    assert "is not on the near plane" in report.failures[0].explanation, str(report)
+
+
+def test_t_from_z_alone_says_where_the_vertex_lies_once():
+    """r85 04: the hinted words said "where z + w = 0, where z + w, …, is 0" (twice)."""
+    report = _first_try("clip_near", _clip(lambda a, b, da, db: a[2] / (a[2] - b[2])))
+    first = report.failures[0].explanation
+    assert "you took t from z alone" in first, first
+    assert "z + w = 0, where" not in first and first.count("reaches 0") == 1, first
+
+
+def test_edge_functions_first_try_prints_the_value_not_the_formula():
+    """r85 01: every failure printed E = (b.x − a.x)(p.y − a.y) − …, the whole of 1.1."""
+
+    def negated(a, b, p):
+        return (b[1] - a[1]) * (p[0] - a[0]) - (b[0] - a[0]) * (p[1] - a[1])
+
+    first = _words(_first_try("edge_function", negated))
+    assert "(b.x − a.x)" not in first and "E = 25; yours is -25" in first, first
+    assert "(b.x − a.x)" in _words(ex.check("edge_function", negated))
+
+
+def test_an_edge_function_truncated_to_an_integer_is_named():
+    """r85 01: int(E) got only the numbers."""
+
+    def truncated(a, b, p):
+        return float(int((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])))
+
+    report = ex.check("edge_function", truncated)
+    assert "truncated to a whole number" in report.failures[0].explanation, str(report)
