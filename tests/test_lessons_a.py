@@ -1305,6 +1305,12 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     printed = "no slope term: the decal loses at"  # the unit counts, printed after it
     assert not any(printed in c for c in code[:ask]) and printed in code[ask + 1]
     assert not any("smallest visible Δz at z = 1 is" in c for c in code)  # no third copy
+    # r86: the unit-count reasoning is held behind q_bias, the explorer behind q_fight
+    shown = " ".join(_cells("05b_depth_precision", "markdown"))
+    assert "Units alone" not in shown
+    assert any(c.startswith("q_bias.hold()") and "Units alone" in c for c in code)
+    explore = next(c for c in code if "DepthPrecisionExplorer(" in c)
+    assert explore.startswith("q_fight.hold()")
     recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
     assert "takes a **reversed projection matrix**: a $[0, 1]$-depth projection" in recipe
     assert "GL_LOWER_LEFT, GL_ZERO_TO_ONE" in recipe and "does not work" not in recipe
