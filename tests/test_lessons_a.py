@@ -1425,3 +1425,12 @@ def test_05a_05b_reader_r79_contradictions():
     ns_b = lesson("05b_depth_precision")
     assert not any("falls steeply" in c for c in _cells("05b_depth_precision", "code"))
     assert round(ns_b.share[ns_b.z_late], 2) == 0.36 and ns_b.share[ns_b.z_end] < 0.05
+
+
+def test_05a_try_it_points_at_the_cell_it_means():
+    """r86: the Try-it said "in the first cell" (the imports); it names §1's renders now."""
+    summary = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
+    assert "first cell" not in summary and "§1's cell (`full_screen`)" in summary
+    assert any(
+        "def full_screen(" in c and "depth_test=False" in c for c in _cells("05a_zbuffer", "code")
+    )
