@@ -1305,6 +1305,12 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     printed = "no slope term: the decal loses at"  # the unit counts, printed after it
     assert not any(printed in c for c in code[:ask]) and printed in code[ask + 1]
     assert not any("smallest visible Δz at z = 1 is" in c for c in code)  # no third copy
+    # r86: the unit-count reasoning is held behind q_bias, the explorer behind q_fight
+    shown = " ".join(_cells("05b_depth_precision", "markdown"))
+    assert "Units alone" not in shown
+    assert any(c.startswith("q_bias.hold()") and "Units alone" in c for c in code)
+    explore = next(c for c in code if "DepthPrecisionExplorer(" in c)
+    assert explore.startswith("q_fight.hold()")
     recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
     assert "takes a **reversed projection matrix**: a $[0, 1]$-depth projection" in recipe
     assert "GL_LOWER_LEFT, GL_ZERO_TO_ONE" in recipe and "does not work" not in recipe
@@ -1419,3 +1425,12 @@ def test_05a_05b_reader_r79_contradictions():
     ns_b = lesson("05b_depth_precision")
     assert not any("falls steeply" in c for c in _cells("05b_depth_precision", "code"))
     assert round(ns_b.share[ns_b.z_late], 2) == 0.36 and ns_b.share[ns_b.z_end] < 0.05
+
+
+def test_05a_try_it_points_at_the_cell_it_means():
+    """r86: the Try-it said "in the first cell" (the imports); it names §1's renders now."""
+    summary = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
+    assert "first cell" not in summary and "§1's cell (`full_screen`)" in summary
+    assert any(
+        "def full_screen(" in c and "depth_test=False" in c for c in _cells("05a_zbuffer", "code")
+    )

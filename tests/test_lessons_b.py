@@ -452,6 +452,23 @@ def test_every_predict_pixels_names_what_it_asks():
     assert calls >= 10
 
 
+def test_06_review_r87_cells_held_for_q_depth_are_collapsed():
+    """r87 P1: every code cell held for q_depth (the crossing figure with CROSSING_TEXT, the
+    depth chart) keeps its source collapsed, and no hold comment names the answer."""
+    import json
+    import re
+
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    held = [c for c in nb["cells"] if "".join(c["source"]).startswith("q_depth.hold()")]
+    drawn = [c for c in held if re.search(r"CROSSING_TEXT|plot_pareto", "".join(c["source"]))]
+    assert len(drawn) == 2
+    for c in drawn:
+        assert c["metadata"]["jupyter"]["source_hidden"] and "hide-input" in c["metadata"]["tags"]
+        assert not re.search(r"linear|crossing|wrong", "".join(c["source"]).splitlines()[0])
+    shown = " ".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "markdown")
+    assert "appendix B at the end" not in shown
+
+
 def test_06_review_r2_prediction_error_split_and_shared_reciprocal():
     """Review r2, 06: the tie-rule Predict asks what lesson 02 does not answer (gaps of E > 0
     given the double hits of E >= 0); the float32 error is split by scene; k attributes share

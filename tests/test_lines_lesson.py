@@ -47,6 +47,15 @@ def test_tie_question_has_one_defensible_answer(ns):
     assert ns.tie_row == 1 and len(ns.tie_choices) == 3 and ns.by_shift[1] in ns.tie_choices
     assert ns.by_shift[0] in ns.tie_choices and "below the corner" in ns.by_shift[ns.tie_row]
     assert not any(word in " ".join(ns.tie_choices) for word in ("both", "neither"))
+    # r88 12a-2: the question does not point at the (unheld) table that answers it
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "notebooks" / "12a_lines.ipynb"
+    asked = ["".join(c["source"]) for c in json.loads(path.read_text())["cells"]]
+    asked = next(t for t in asked if "q_tie = Predict(" in t)
+    question = asked.split("q_tie = Predict(")[1].split("tie_choices,")[0]
+    assert "table" not in question and "table below" in asked.split("explain=")[1]
 
 
 def test_polyline_lights_its_shared_vertex_once(ns):
