@@ -79,19 +79,25 @@ def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
     telling = any(_tells(text, f.explanation) for f in report.failures for text, _ in hints)
     if not telling or not tries.hinted_check(name, _answer(report)):
         return report if note is None else replace(report, tries=note)
-    failures = []
-    for f in report.failures:
-        words = f.explanation
-        for text, hint in hints:
-            words = (
-                text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
-            )
-        failures.append(replace(f, explanation=words))
+    failures = [replace(f, explanation=apply_hints(f.explanation, hints)) for f in report.failures]
     more = (
         "a hint only: work from it and the numbers of the case (the full words come once "
         f"{tries.HINTED_ANSWERS} different answers of yours have failed)"
     )
     return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
+
+
+def apply_hints(words: str, hints) -> str:
+    """``words`` with each ``(text, hint)`` of ``hints`` put in: ``text`` a string replaced
+    where it occurs, or a compiled pattern substituted (the one way every staged hint is put
+    in, in a report and in words said outside it: :func:`.level_of_detail.hinted`).
+
+    >>> apply_hints("level 2 because rho = 4", [("level 2", "level ?")])
+    'level ? because rho = 4'
+    """
+    for text, hint in hints:
+        words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
+    return words
 
 
 def _tells(text, words: str) -> bool:

@@ -229,12 +229,9 @@ def hinted(name: str, words: str, hints) -> str:
     ``name`` have failed (the check's own staging, :func:`.checks._hinted`), for words said
     outside the report (a picture's pixel)."""
     from . import tries
+    from .checks import apply_hints
 
-    if tries.hints_spent(name):
-        return words
-    for text, hint in hints:
-        words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
-    return words
+    return words if tries.hints_spent(name) else apply_hints(words, hints)
 
 
 def draw_level_case(ax, case, got):

@@ -63,8 +63,8 @@ FRAME_BOX = (6.0, 6.2)
 #: (review r44 D2: a bar on the right widened the figure by up to 1 inch in the overlay
 #: views, and at 1280 px with the file browser open the history chart wrapped under it).
 FRAME_MARGINS = (0.85, 1.0, 0.15, 0.12, 0.13, 0.75)
-#: The history chart's figure, width and height in inches: at least as tall as the frame's
-#: figure with its colour bar, so that the table under the two never moves with the view.
+#: The history chart's figure, width and height in inches; it stands in a row of its own,
+#: under the history table (r21 D3, r62 #4), not beside the frame.
 HISTORY_SIZE = (4.6, 4.5)
 
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
