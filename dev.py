@@ -91,6 +91,10 @@ def pytest_args(args):
         # every browser, nbgrader and notebook test (740 s of them on one worker, measured).
         # What several workers need is built once per run (run_once.py, notebook_runs.py).
         args = ["-n", str(workers), "--dist", "load", "--maxschedchunk", "2", *args]
+    if not any(a.startswith("--durations") for a in args):
+        # the 20 slowest tests in every log: a CI run that took 36 min where the one before
+        # took 12 (stop 42) left no clue which tests grew
+        args = ["--durations=20", *args]
     return args
 
 
