@@ -476,6 +476,34 @@ def test_frame_inspector_marks_its_pixel_and_says_when_nothing_reaches_it():
         w.close()
 
 
+def test_frame_inspector_draws_edges_and_saves_the_frame_in_its_stand_in():
+    """Review r90 11-4: the fan's hub was a white blur, no edge drawn: the image view draws
+    the shown triangles' edges thin (not a 3-px-a-triangle sphere's). 11-5: the picture a
+    saved notebook shows without a kernel held the history chart only, not the frame."""
+    pytest.importorskip("ipywidgets")
+    from matplotlib.collections import LineCollection
+
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets.common import box_standin
+
+    w = FrameInspector("fan", 64, 48, backend="image", view="image", row=23, col=31)
+    try:
+        edges = [c for c in w.ax.collections if isinstance(c, LineCollection)]
+        assert len(edges) == 1 and len(edges[0].get_segments()) == 3 * 12
+        hub = np.array([32.0, 24.0])  # the fan's centre, where its 12 triangles meet
+        ends = np.concatenate(edges[0].get_segments())
+        assert (np.abs(ends - hub).max(axis=1) < 1e-9).sum() >= 12
+        pictures = box_standin(w.widget, "inspector").count("data:image/png")
+        assert pictures == 2  # the frame, then the history chart
+        w.view.value = "overdraw"
+        assert not [c for c in w.ax.collections if isinstance(c, LineCollection)]
+        w.scene.value = "uv_sphere"
+        w.view.value = "image"
+        assert not [c for c in w.ax.collections if isinstance(c, LineCollection)]
+    finally:
+        w.close()
+
+
 def test_frame_inspector_under_ipympl_takes_mouse_clicks():
     pytest.importorskip("ipympl")
     from matplotlib.backend_bases import MouseEvent
