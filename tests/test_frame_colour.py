@@ -307,5 +307,5 @@ def test_each_records_swatches_are_named_where_they_fit():
         if named:
             assert all(words.count(w) == passed for w in SWATCH_WORDS), words
         else:
-            assert "before | fragment on white | after" in words, words
+            assert "before | fragment (over checks) | after" in words, words  # r90 11-6
         plt.close(fig)

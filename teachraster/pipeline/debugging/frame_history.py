@@ -960,7 +960,8 @@ def swatch_colours(h: PixelHistory, key: str) -> np.ndarray:
     ``"color"`` or ``"color_after"``) of each passed record of ``h``, one row each.
 
     The target's before and after are its RGB clipped to [0, 1]; the fragment is its RGB
-    over white by its alpha (see :func:`_draw_colours`)."""
+    over white by its alpha (see :func:`_draw_colours`: drawn over checks, white in the
+    swatch's middle, so that a translucent fragment is told from an opaque result)."""
     if key not in ("color_before", "color", "color_after"):
         raise ValueError(f"key must be color_before, color or color_after, not {key!r}")
     on = [r for r in h.records if r.outcome == "passed"]
@@ -993,6 +994,9 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
     artists = [ax.axhline(hi, color="0.6", linewidth=0.8)]  # depths below, colours above
     for key, dx in zip(("color_before", "color", "color_after"), (-0.27, 0.0, 0.27)):
         shown = swatch_colours(h, key)
+        if key == "color":  # its own RGB by its alpha over checks, white in the middle
+            artists += _checks(ax, x[on] + dx, hi + band * 0.15, band, h, on)
+            shown = _fragment_rgba(h)
         artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=0.26,
                               color=shown, edgecolor="k", linewidth=0.4))  # fmt: skip
     size = _swatch_word_size(ax, SWATCH_WORDS)
@@ -1005,9 +1009,38 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
         return artists
     # at the Axes' left edge (x in Axes fractions): the inspector's 327-px Axes holds it
     # even with one record (its x-range is then only 1.2 wide)
-    artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment on white | after",
+    artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment (over checks) | after",
                            fontsize="x-small", ha="left", va="bottom",
                            transform=ax.get_yaxis_transform()))  # fmt: skip
+    return artists
+
+
+def _fragment_rgba(h: PixelHistory) -> np.ndarray:
+    """Each passed record's fragment colour as drawn: its RGB clipped to [0, 1], with its
+    alpha, over :func:`_checks` (over white where a check is white: :func:`swatch_colours`)."""
+    on = [r for r in h.records if r.outcome == "passed"]
+    rgba = np.array([r.color for r in on], dtype=float).reshape(len(on), -1)
+    return np.column_stack([np.clip(rgba[:, :3], 0, 1), np.clip(rgba[:, 3], 0, 1)])
+
+
+def _checks(ax, centres, bottom, height, h: PixelHistory, on) -> list:
+    """Under each translucent fragment swatch (alpha < 1), a 3 x 3 board of grey and white
+    checks, white in the middle: a fragment with alpha ½ over white looked the same as the
+    target after it was blended over a white target (review r90 11-6); over the checks
+    its translucency shows, while its middle is still the colour over white."""
+    from matplotlib.patches import Rectangle
+
+    artists = []
+    alpha = _fragment_rgba(h)[:, 3]
+    for k, x0 in enumerate(centres):
+        if alpha[k] >= 1:
+            continue
+        for i in range(3):
+            for j in range(3):
+                colour = "white" if (i + j) % 2 == 0 else "0.6"
+                artists.append(ax.add_patch(Rectangle(
+                    (x0 - 0.13 + i * 0.26 / 3, bottom + j * height / 3), 0.26 / 3, height / 3,
+                    facecolor=colour, edgecolor="none", zorder=1)))  # fmt: skip
     return artists
 
 
