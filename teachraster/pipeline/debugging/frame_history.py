@@ -602,7 +602,7 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
     if h.n_samples > 1 and any(r.shown for r in h.records):
         lines.append(f"  kept k of {h.n_samples}: the triangle holds k of the pixel's "
                      f"{h.n_samples} samples at the end")  # fmt: skip
-    lines += colour_lines(h, narrow)
+    lines += colour_lines(h, narrow, fold)
     return "\n".join(lines)
 
 
@@ -683,24 +683,35 @@ def _why(r) -> str:
 NARROW = 80
 
 
-def colour_lines(h: PixelHistory, narrow: bool = False) -> list[str]:
+def colour_lines(h: PixelHistory, narrow: bool = False, fold: bool = False) -> list[str]:
     """The colour part of the table: per record that reached the colour buffer, the
     target's RGBA before, the fragment's own and the target's after (none without a
     colour buffer); ``narrow``: the "after" on a line of its own where the line would
-    pass :data:`NARROW` characters."""
+    pass :data:`NARROW` characters; ``fold``: one line for a triangle's consecutive samples
+    whose three colours are the same ("s0-3"; review r90 11-7: a glass sphere's pixel
+    listed four identical lines, one per sample)."""
     if h.blend is None:
         return []
     mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
     if not any(r.outcome == "passed" for r in h.records):  # a header over no line said nothing
         return [f"colour buffer ({mode}, {h.blend.color_format}): no fragment reached it here"]
     out = [f"colour buffer ({mode}, {h.blend.color_format}), RGBA: before -> fragment -> after"]
-    for r in h.records:
-        if r.outcome == "passed":
-            smp = f" s{r.sample}" if h.n_samples > 1 else ""
-            line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
-            after = f" -> {_rgba(r.color_after)}"
-            wrap = narrow and len(line + after) > NARROW
-            out += [line, " " * 9 + after] if wrap else [line + after]
+    runs = []  # [first record, last sample] of each line
+    for r in (r for r in h.records if r.outcome == "passed"):
+        key = (r.triangle, tuple(r.color_before), tuple(r.color), tuple(r.color_after))
+        last = runs[-1][0] if runs else None
+        same = last is not None and key == (last.triangle, tuple(last.color_before),
+                                              tuple(last.color), tuple(last.color_after))  # fmt: skip
+        if fold and h.n_samples > 1 and same and r.sample == runs[-1][1] + 1:
+            runs[-1][1] = r.sample
+        else:
+            runs.append([r, r.sample])
+    for r, end in runs:
+        smp = "" if h.n_samples == 1 else f" s{r.sample}" + (f"-{end}" if end != r.sample else "")
+        line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
+        after = f" -> {_rgba(r.color_after)}"
+        wrap = narrow and len(line + after) > NARROW
+        out += [line, " " * 9 + after] if wrap else [line + after]
     return out
 
 
