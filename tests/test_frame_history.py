@@ -687,6 +687,13 @@ def test_lesson_11_tells_each_story():
     draw = _lesson_11_source().split("def draw_quads(ax):")[1].split("q_helpers =")[0]
     asked = _lesson_11_source().split("q_helpers = PredictPixels(")[1].split("answer=")[0]
     assert "imshow" not in draw and "tint" not in asked
+    # r90 11-1: the shared diagonal dashed in the first triangle's colour over the second's
+    assert "set_dashes" in draw and "(dashed in both colours)" in asked
+    # r90 11-2: the text that states the key fact (a quad runs all four lanes) is held
+    text = _lesson_11_source()
+    assert text.index("q_helpers = PredictPixels(") < text.index("runs all four of its")
+    held = text.split("runs all four of its")[0].rsplit("q_helpers.hold()", 1)[1]
+    assert "PredictPixels(" not in held
     # §2's tie band (r62 #3): the gap at v1 is under half a unorm16 step, 0.4 is on a step,
     # and the band reaches both ends of the edge v1-v3
     assert 0 < ns.fight_gap[0] < ns.step16 / 2 < ns.fight_gap[1] and ns.fight_gap[2] == 0
