@@ -666,6 +666,35 @@ def test_attribute_surfaces_readout_follows_w_and_the_toggles():
     assert all("Switch both f sheets on" in t for t in got[5:])
 
 
+def test_attribute_surfaces_pieces_lie_on_one_side_of_the_crossing():
+    # review r89 03-1: a piece straddling the crossing of the two f sheets was sorted whole,
+    # a staircase; now every piece has one sheet above the other all over it, and the
+    # crossing drawn is where the affine f equals v3's (only v3's w differs)
+    xy, f = [[2.0, 1.0], [13.0, 5.0], [5.0, 12.0]], [0.2, 0.9, 0.5]
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    names = ["correct", "affine"]
+    got = call_js(parts, [("sheetPieces", [xy, [1.0, 1.0, w3], f, names]) for w3 in (1.5, 8.0)])
+    for out in got:
+        assert len(out["pieces"]) >= 256
+        for piece in out["pieces"]:
+            d = np.array(piece["correct"])[:, 2] - np.array(piece["affine"])[:, 2]
+            assert (d >= -1e-12).all() or (d <= 1e-12).all()
+            assert np.array_equal(
+                np.array(piece["correct"])[:, :2], np.array(piece["affine"])[:, :2]
+            )
+        ends = np.array(out["crossing"]).reshape(-1, 3)
+        assert len(out["crossing"]) >= 8
+        lam = tr.barycentric(np.array(xy), ends[:, :2])
+        inside = (lam > 1 / 16).all(axis=1) | (lam[:, 2] > 1 - 1e-12)  # off v1v2 by a cell, or v3
+        assert inside.sum() >= 8
+        assert np.allclose(lam[inside] @ f, f[2], atol=1e-9)  # the line where affine f is f3
+        assert np.allclose(ends[inside, 2], f[2], atol=1e-9)
+        # a cell that touches v1v2 (where the sheets meet too) ends it within that cell
+        assert np.allclose(lam @ f, f[2], atol=0.01)
+    flat = call_js(parts, [("sheetPieces", [xy, [1.0, 1.0, 1.0], f, names])])[0]
+    assert flat["crossing"] == []
+
+
 def test_view3d_fits_the_picture_and_spreads_the_labels():
     # review r78 03-3: the 3-D view fills its box at any turn, and labels do not overlap
     rng = np.random.default_rng(78)

@@ -307,5 +307,20 @@ def test_each_records_swatches_are_named_where_they_fit():
         if named:
             assert all(words.count(w) == passed for w in SWATCH_WORDS), words
         else:
-            assert "before | fragment on white | after" in words, words
+            assert "before | fragment (over checks) | after" in words, words  # r90 11-6
         plt.close(fig)
+
+
+def test_identical_sample_colour_lines_fold_into_one():
+    """Review r90 11-7: under 4x MSAA a glass sphere's pixel listed one colour line per
+    sample, four identical lines for triangle 415; folded, one line names "s0-3"."""
+    from teachraster.pipeline.debugging.frame_history import colour_lines
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    h = glass_frame("uv_sphere", 64, 48, samples=4).history(23, 31)
+    full, folded = colour_lines(h), colour_lines(h, fold=True)
+    assert len(folded) < len(full)
+    assert any(" s0-3 " in line for line in folded)
+    # nothing lost: each folded line stands for the unfolded lines it replaces
+    bodies = lambda lines: {line[line.index("(") :] for line in lines[1:]}  # noqa: E731
+    assert bodies(folded) == bodies(full)

@@ -476,6 +476,34 @@ def test_frame_inspector_marks_its_pixel_and_says_when_nothing_reaches_it():
         w.close()
 
 
+def test_frame_inspector_draws_edges_and_saves_the_frame_in_its_stand_in():
+    """Review r90 11-4: the fan's hub was a white blur, no edge drawn: the image view draws
+    the shown triangles' edges thin (not a 3-px-a-triangle sphere's). 11-5: the picture a
+    saved notebook shows without a kernel held the history chart only, not the frame."""
+    pytest.importorskip("ipywidgets")
+    from matplotlib.collections import LineCollection
+
+    from teachraster.widgets import FrameInspector
+    from teachraster.widgets.common import box_standin
+
+    w = FrameInspector("fan", 64, 48, backend="image", view="image", row=23, col=31)
+    try:
+        edges = [c for c in w.ax.collections if isinstance(c, LineCollection)]
+        assert len(edges) == 1 and len(edges[0].get_segments()) == 3 * 12
+        hub = np.array([32.0, 24.0])  # the fan's centre, where its 12 triangles meet
+        ends = np.concatenate(edges[0].get_segments())
+        assert (np.abs(ends - hub).max(axis=1) < 1e-9).sum() >= 12
+        pictures = box_standin(w.widget, "inspector").count("data:image/png")
+        assert pictures == 2  # the frame, then the history chart
+        w.view.value = "overdraw"
+        assert not [c for c in w.ax.collections if isinstance(c, LineCollection)]
+        w.scene.value = "uv_sphere"
+        w.view.value = "image"
+        assert not [c for c in w.ax.collections if isinstance(c, LineCollection)]
+    finally:
+        w.close()
+
+
 def test_frame_inspector_under_ipympl_takes_mouse_clicks():
     pytest.importorskip("ipympl")
     from matplotlib.backend_bases import MouseEvent
@@ -659,6 +687,13 @@ def test_lesson_11_tells_each_story():
     draw = _lesson_11_source().split("def draw_quads(ax):")[1].split("q_helpers =")[0]
     asked = _lesson_11_source().split("q_helpers = PredictPixels(")[1].split("answer=")[0]
     assert "imshow" not in draw and "tint" not in asked
+    # r90 11-1: the shared diagonal dashed in the first triangle's colour over the second's
+    assert "set_dashes" in draw and "(dashed in both colours)" in asked
+    # r90 11-2: the text that states the key fact (a quad runs all four lanes) is held
+    text = _lesson_11_source()
+    assert text.index("q_helpers = PredictPixels(") < text.index("runs all four of its")
+    held = text.split("runs all four of its")[0].rsplit("q_helpers.hold()", 1)[1]
+    assert "PredictPixels(" not in held
     # §2's tie band (r62 #3): the gap at v1 is under half a unorm16 step, 0.4 is on a step,
     # and the band reaches both ends of the edge v1-v3
     assert 0 < ns.fight_gap[0] < ns.step16 / 2 < ns.fight_gap[1] and ns.fight_gap[2] == 0
@@ -792,7 +827,12 @@ def test_history_colour_swatches_draw_the_colours_the_table_prints(depth_write):
             dx = centre[0] - on[k]
             key = "color_before" if dx < -0.1 else "color_after" if dx > 0.1 else "color"
             want = np.clip(expected[key][k], 0, 1)
-            np.testing.assert_allclose(p.get_facecolor()[:3], want, atol=1e-12)
+            face = np.asarray(p.get_facecolor())
+            if key == "color":  # r90 11-6: its own RGB by its alpha, over checks
+                r = h.records[on[k]]
+                np.testing.assert_allclose(face, np.clip(r.color, 0, 1), atol=1e-12)
+            else:
+                np.testing.assert_allclose(face[:3], want, atol=1e-12)
             x, y = ax.transData.transform(centre)
             drawn = image[image.shape[0] - 1 - int(round(y)), int(round(x)), :3]
             np.testing.assert_allclose(drawn, np.round(want * 255), atol=1)

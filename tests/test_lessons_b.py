@@ -1155,7 +1155,13 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     # review r82 10-A: the Direct3D row quotes the D3D11.3 functional specification (§16.12),
     # with no note that a source went unread
     assert "not checked here" not in words
-    assert "§16.12.2, *Default Pixel Shader Execution Mode*" in words and "§16.12.1" in words
+    # r90: the section titles in full, as the D3D11.3 specification v1.16 heads them
+    assert "§16.12 *Pixel Shader Execution Control: Force Early/Late Depth/Stencil Test*" in words
+    assert (
+        "§16.12.2 *Default Pixel Shader Execution Mode - Absence of ForceEarlyDepthStencil Flag*"
+        in words
+        and "§16.12.1" in words
+    )
     # review r70 #3: "should instead" is Vulkan 1.3's wording; the current specification says
     # "must" where the device reports earlyFragmentMultisampleCoverageAfterSampleCounting
     assert (
@@ -1726,8 +1732,11 @@ def test_10_r45_items():
     assert "fastest runs" not in md and "medians" not in md and "bench_tiles.py" in md
     assert not hasattr(ns, "timed_ms") and "no clear winner" not in "\n".join(text)
     held = next(i for i, t in enumerate(text) if t.startswith("q_small.hold()"))
-    method = next(i for i, t in enumerate(text) if "all its children must be classified" in t)
-    assert held < method
+    # r90 10-2: the method is itself held now (a folded display(Markdown) cell): read its
+    # string literal's wrapped lines joined
+    joined = [t.replace('"\n        "', "") for t in text]
+    method = next(i for i, t in enumerate(joined) if "all its children must be classified" in t)
+    assert held <= method and text[method].startswith("q_small.hold()")
     # review r82 10-E: q_small counts 1 + 16 + 16 + 16 exactly; 48 (the 64-block's own test
     # forgotten) is marked wrong, and the explanation names it
     asked = next(t for t in text if "q_small = Predict(" in t)
@@ -1857,3 +1866,21 @@ def test_09_footprint_explorer_follows_the_static_footprints():
     rows = [r for r in range(ex.data["height"]) if uv[r * w + col] is not None]
     assert all(ddy[r * w + col] == ddy[(r ^ 1) * w + col] for r in rows if r ^ 1 in rows)
     assert len({tuple(ddy[r * w + col]) for r in rows}) > 1
+
+
+def test_10_q_small_method_held_and_q_hiz_one_try():
+    """r90 10-2: the Markdown right under q_small gave its method (1 + 16 + 16 + 16); it is
+    held until q_small is checked. 10-3: q_hiz locks after one Check, and says so."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, t in enumerate(text) if "q_small = Predict(" in t)
+    method = next(i for i, t in enumerate(text) if "all its children" in t)
+    assert method > ask and text[method].startswith("q_small.hold()")
+    assert nb["cells"][method]["metadata"]["jupyter"]["source_hidden"]
+    between = [t for c, t in zip(nb["cells"][ask:method], text[ask:method])
+               if c["cell_type"] == "markdown"]  # fmt: skip
+    assert not between
+    hiz = next(t for t in text if "q_hiz = PredictPixels(" in t)
+    assert '"One try."' in hiz

@@ -163,6 +163,51 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None,
     return result
 
 
+def plot_triangle_edges(
+    ax,
+    frame,
+    *,
+    min_pixels: float = 12.0,
+    color: str = "#222222",
+    lw: float = 0.6,
+    alpha: float = 0.45,
+):
+    """Draw thin the edges of the triangles the frame shows (its trace's window positions,
+    after clipping, of each triangle that owns a pixel) over a picture of it, so that where
+    triangles meet can be seen even where their colours blend into one another (review r90
+    11-4: the fan's hub, white on white). Left out (None returned) where those triangles
+    cover fewer than ``min_pixels`` pixels each on average: edges a pixel or two apart would
+    hide the picture (a 64 x 48 uv_sphere: 3 px a triangle). Also None without a trace.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> import teachraster as tr
+    >>> fan = tr.render(tr.get_scene("fan"), None, 64, 48, trace=True)
+    >>> fig, ax = plt.subplots()
+    >>> len(plot_triangle_edges(ax, fan).get_segments())  # 12 triangles, 3 edges each
+    36
+    >>> sphere = tr.render(tr.get_scene("uv_sphere"), None, 64, 48, trace=True)
+    >>> plot_triangle_edges(ax, sphere) is None
+    True
+    >>> plt.close(fig)
+    """
+    from matplotlib.collections import LineCollection
+
+    trace = getattr(frame, "trace", None)
+    if trace is None:
+        return None
+    owners = frame.triangle_id[frame.triangle_id >= 0]
+    shown = np.isin(trace.parent, owners) & ~trace.culled
+    if not shown.any() or owners.size / np.unique(owners).size < min_pixels:
+        return None
+    xy = trace.window[shown, :, :2]
+    edges = np.stack([xy, np.roll(xy, -1, axis=1)], axis=2).reshape(-1, 2, 2)
+    lines = LineCollection(edges, colors=color, linewidths=lw, alpha=alpha, zorder=3)
+    ax.add_collection(lines, autolim=False)
+    return lines
+
+
 def fit_title(ax, margin: float = 4.0):
     """Shrink ``ax``'s title until it lies inside its figure (a fixed-size widget figure in the
     classroom style's large fonts); returns the title."""

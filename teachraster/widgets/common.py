@@ -356,7 +356,11 @@ def choices_html(labels) -> str:
 
 def _pictures(box) -> list:
     """``(widget, trait)`` of every picture in ``box``'s tree, depth first: an
-    ``ipywidgets.Image``'s ``value``, a page figure's ``poster``."""
+    ``ipywidgets.Image``'s ``value``, a page figure's ``poster``, the ``value`` bytes of any
+    other picture widget (the FrameInspector's clickable frame: review r90 11-5, without it
+    the saved inspector showed its history chart alone)."""
+    import traitlets
+
     found = []
     for child in getattr(box, "children", ()):
         found += _pictures(child)
@@ -364,6 +368,8 @@ def _pictures(box) -> list:
         found.append((box, "value"))
     elif hasattr(box, "has_trait") and box.has_trait("poster"):
         found.append((box, "poster"))
+    elif hasattr(box, "traits") and isinstance(box.traits().get("value"), traitlets.Bytes):
+        found.append((box, "value"))
     return found
 
 

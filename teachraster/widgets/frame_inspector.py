@@ -25,7 +25,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
-from ..plotting.frame_debug import fit_title
+from ..plotting.frame_debug import fit_title, plot_triangle_edges
 from .common import (
     Holdable,
     Shown,
@@ -477,6 +477,7 @@ class FrameInspector(Holdable):
                 shown = self.frame.color[..., :3]
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
+            plot_triangle_edges(ax, self.frame)  # where triangles meet (r90 11-4: fan's hub)
             glass = " (glass)" if self.glass.value else ""  # what is drawn (review r8, 11)
             # r21 D9: a frame handed in is named by its key ("frame 1"), a scene is not
             name = self.scene.value if self.frames else f"{self.scene.value}: the frame"

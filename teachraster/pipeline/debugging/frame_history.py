@@ -602,7 +602,7 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
     if h.n_samples > 1 and any(r.shown for r in h.records):
         lines.append(f"  kept k of {h.n_samples}: the triangle holds k of the pixel's "
                      f"{h.n_samples} samples at the end")  # fmt: skip
-    lines += colour_lines(h, narrow)
+    lines += colour_lines(h, narrow, fold)
     return "\n".join(lines)
 
 
@@ -683,24 +683,35 @@ def _why(r) -> str:
 NARROW = 80
 
 
-def colour_lines(h: PixelHistory, narrow: bool = False) -> list[str]:
+def colour_lines(h: PixelHistory, narrow: bool = False, fold: bool = False) -> list[str]:
     """The colour part of the table: per record that reached the colour buffer, the
     target's RGBA before, the fragment's own and the target's after (none without a
     colour buffer); ``narrow``: the "after" on a line of its own where the line would
-    pass :data:`NARROW` characters."""
+    pass :data:`NARROW` characters; ``fold``: one line for a triangle's consecutive samples
+    whose three colours are the same ("s0-3"; review r90 11-7: a glass sphere's pixel
+    listed four identical lines, one per sample)."""
     if h.blend is None:
         return []
     mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
     if not any(r.outcome == "passed" for r in h.records):  # a header over no line said nothing
         return [f"colour buffer ({mode}, {h.blend.color_format}): no fragment reached it here"]
     out = [f"colour buffer ({mode}, {h.blend.color_format}), RGBA: before -> fragment -> after"]
-    for r in h.records:
-        if r.outcome == "passed":
-            smp = f" s{r.sample}" if h.n_samples > 1 else ""
-            line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
-            after = f" -> {_rgba(r.color_after)}"
-            wrap = narrow and len(line + after) > NARROW
-            out += [line, " " * 9 + after] if wrap else [line + after]
+    runs = []  # [first record, last sample] of each line
+    for r in (r for r in h.records if r.outcome == "passed"):
+        key = (r.triangle, tuple(r.color_before), tuple(r.color), tuple(r.color_after))
+        last = runs[-1][0] if runs else None
+        same = last is not None and key == (last.triangle, tuple(last.color_before),
+                                              tuple(last.color), tuple(last.color_after))  # fmt: skip
+        if fold and h.n_samples > 1 and same and r.sample == runs[-1][1] + 1:
+            runs[-1][1] = r.sample
+        else:
+            runs.append([r, r.sample])
+    for r, end in runs:
+        smp = "" if h.n_samples == 1 else f" s{r.sample}" + (f"-{end}" if end != r.sample else "")
+        line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
+        after = f" -> {_rgba(r.color_after)}"
+        wrap = narrow and len(line + after) > NARROW
+        out += [line, " " * 9 + after] if wrap else [line + after]
     return out
 
 
@@ -960,7 +971,8 @@ def swatch_colours(h: PixelHistory, key: str) -> np.ndarray:
     ``"color"`` or ``"color_after"``) of each passed record of ``h``, one row each.
 
     The target's before and after are its RGB clipped to [0, 1]; the fragment is its RGB
-    over white by its alpha (see :func:`_draw_colours`)."""
+    over white by its alpha (see :func:`_draw_colours`: drawn over checks, white in the
+    swatch's middle, so that a translucent fragment is told from an opaque result)."""
     if key not in ("color_before", "color", "color_after"):
         raise ValueError(f"key must be color_before, color or color_after, not {key!r}")
     on = [r for r in h.records if r.outcome == "passed"]
@@ -993,6 +1005,9 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
     artists = [ax.axhline(hi, color="0.6", linewidth=0.8)]  # depths below, colours above
     for key, dx in zip(("color_before", "color", "color_after"), (-0.27, 0.0, 0.27)):
         shown = swatch_colours(h, key)
+        if key == "color":  # its own RGB by its alpha over checks, white in the middle
+            artists += _checks(ax, x[on] + dx, hi + band * 0.15, band, h, on)
+            shown = _fragment_rgba(h)
         artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=0.26,
                               color=shown, edgecolor="k", linewidth=0.4))  # fmt: skip
     size = _swatch_word_size(ax, SWATCH_WORDS)
@@ -1005,9 +1020,38 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
         return artists
     # at the Axes' left edge (x in Axes fractions): the inspector's 327-px Axes holds it
     # even with one record (its x-range is then only 1.2 wide)
-    artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment on white | after",
+    artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment (over checks) | after",
                            fontsize="x-small", ha="left", va="bottom",
                            transform=ax.get_yaxis_transform()))  # fmt: skip
+    return artists
+
+
+def _fragment_rgba(h: PixelHistory) -> np.ndarray:
+    """Each passed record's fragment colour as drawn: its RGB clipped to [0, 1], with its
+    alpha, over :func:`_checks` (over white where a check is white: :func:`swatch_colours`)."""
+    on = [r for r in h.records if r.outcome == "passed"]
+    rgba = np.array([r.color for r in on], dtype=float).reshape(len(on), -1)
+    return np.column_stack([np.clip(rgba[:, :3], 0, 1), np.clip(rgba[:, 3], 0, 1)])
+
+
+def _checks(ax, centres, bottom, height, h: PixelHistory, on) -> list:
+    """Under each translucent fragment swatch (alpha < 1), a 3 x 3 board of grey and white
+    checks, white in the middle: a fragment with alpha ½ over white looked the same as the
+    target after it was blended over a white target (review r90 11-6); over the checks
+    its translucency shows, while its middle is still the colour over white."""
+    from matplotlib.patches import Rectangle
+
+    artists = []
+    alpha = _fragment_rgba(h)[:, 3]
+    for k, x0 in enumerate(centres):
+        if alpha[k] >= 1:
+            continue
+        for i in range(3):
+            for j in range(3):
+                colour = "white" if (i + j) % 2 == 0 else "0.6"
+                artists.append(ax.add_patch(Rectangle(
+                    (x0 - 0.13 + i * 0.26 / 3, bottom + j * height / 3), 0.26 / 3, height / 3,
+                    facecolor=colour, edgecolor="none", zorder=1)))  # fmt: skip
     return artists
 
 

@@ -38,6 +38,104 @@ export function largestGap(xy, w, f, n = 48) {
   return best;
 }
 
+// The point between a and b (d(a), d(b) of opposite signs) where d changes sign, by
+// bisection: d is not linear along a side (the f sheet is a ratio), a cut interpolated
+// linearly would leave a sliver of the wrong sign.
+function signChange(a, b, d, da) {
+  let [lo, hi] = [0, 1];
+  for (let k = 0; k < 40; k++) {
+    const t = (lo + hi) / 2;
+    const dt = d([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]);
+    if (dt === 0) [lo, hi] = [t, t];
+    else if (dt > 0 === da > 0) lo = t;
+    else hi = t;
+  }
+  const t = (lo + hi) / 2;
+  return [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+}
+
+// Polygon [[x, y], ...] cut by the sign of the function d: the parts where d >= 0 and where
+// d <= 0 (each side's sign change found by signChange), each left out when empty.
+function splitBySign(pts, d) {
+  const ds = pts.map(d);
+  const parts = [[], []];
+  pts.forEach((a, i) => {
+    const j = (i + 1) % pts.length;
+    const [da, db] = [ds[i], ds[j]];
+    if (da >= 0) parts[0].push(a);
+    if (da <= 0) parts[1].push(a);
+    if ((da > 0 && db < 0) || (da < 0 && db > 0)) {
+      const cut = signChange(a, pts[j], d, da);
+      parts[0].push(cut);
+      parts[1].push(cut);
+    }
+  });
+  return parts.filter((q) => q.length >= 3);
+}
+
+// The drawn sheets (`names`, keys of surfaceValues) over the triangle xy as pieces for
+// drawPolygons, on one barycentric mesh of n steps shared by every sheet, each cell cut
+// wherever two of the sheets cross (review r89 03-1: sorted whole, a piece straddling the
+// crossing put one sheet in front over all of it, a staircase). Over each piece one sheet
+// lies wholly above or below another, so the painter's sort of a piece's centre is right
+// between the sheets over it. Also `crossing`: segments [[x, y, value], [x, y, value]] of
+// the curve where the perspective-correct and affine f meet, when both are drawn (a conic,
+// Σλf/w = (Σλf)(Σλ/w); with only v3's w moved, the edge v1v2 and the line from v3 where the
+// affine f equals v3's f: for w1 = w2 their difference is, up to a positive factor,
+// λ3 (1 - w1/w3) (λ1 (f1 - f3) + λ2 (f2 - f3))). A side of the triangle is left out.
+export function sheetPieces(xy, w, f, names, n = 16) {
+  const at = (i, j) => [0, 1].map((k) => xy[0][k] + (i / n) * (xy[1][k] - xy[0][k]) +
+    (j / n) * (xy[2][k] - xy[0][k]));
+  const cells = [];
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; i + j < n; j++) {
+      cells.push([at(i, j), at(i + 1, j), at(i, j + 1)]);
+      if (i + j + 1 < n) cells.push([at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+    }
+  }
+  const value = (p) => surfaceValues(xy, w, f, p);
+  const pairs = [];
+  names.forEach((a, k) => names.slice(k + 1).forEach((b) => pairs.push([a, b])));
+  let parts = cells;
+  for (const [a, b] of pairs) {
+    const d = (p) => { // zero below rounding: no sliver cut off along a side where they meet
+      const v = value(p);
+      return Math.abs(v[a] - v[b]) < 1e-12 ? 0 : v[a] - v[b];
+    };
+    parts = parts.flatMap((pts) => splitBySign(pts, d));
+  }
+  const pieces = parts.map((pts) => {
+    const values = pts.map(value);
+    return Object.fromEntries(names.map((name) =>
+      [name, pts.map((p, k) => [p[0], p[1], values[k][name]])]));
+  });
+  const crossing = [];
+  const gap = (p) => {
+    const v = value(p);
+    return Math.abs(v.correct - v.affine) < 1e-12 ? 0 : v.correct - v.affine;
+  };
+  if (names.includes("correct") && names.includes("affine")) {
+    for (const pts of cells) {
+      // a corner on the curve (|d| below rounding) is one of the segment's ends
+      const ds = pts.map(gap);
+      const ends = [];
+      pts.forEach((p, i) => {
+        const j = (i + 1) % 3;
+        if (ds[i] === 0) ends.push([p[0], p[1], value(p).affine]);
+        if ((ds[i] > 0 && ds[j] < 0) || (ds[i] < 0 && ds[j] > 0)) {
+          const q = signChange(p, pts[j], gap, ds[i]);
+          ends.push([q[0], q[1], value(q).affine]);
+        }
+      });
+      // not along the triangle's own side (v1v2 above: the sheets meet there, at its border)
+      const lams = ends.map((q) => barycentrics(xy, q));
+      const onSide = [0, 1, 2].some((k) => lams.every((l) => Math.abs(l[k]) < 1e-9));
+      if (ends.length === 2 && !onSide) crossing.push(ends);
+    }
+  }
+  return { pieces, crossing };
+}
+
 // the sentence under the picture: it speaks of a sheet only while that sheet is drawn
 // (review r78 03-1: with every w equal, 1/w is a constant, f/w is f scaled by it)
 export function readoutText(w, show, gap) {
@@ -114,12 +212,17 @@ function mount(el, data, host) {
     // every w equal: the affine sheet is the perspective-correct one; drawn twice, the two
     // coplanar sheets z-fought into a speckle (review r9, lesson 03 c23): one is drawn
     const same = w.every((v) => v === w[0]) && state.show.correct;
-    for (const [name, , colour] of SURFACES) {
-      if (!state.show[name] || (same && name === "affine")) continue;
-      polys.push(...surfacePieces(xy, (x, y) => surfaceValues(xy, w, f, [x, y])[name] * zScale,
-        12, { fill: colour, alpha: 0.55, stroke: "rgba(255,255,255,0.25)" }));
+    const names = SURFACES.map(([name]) => name)
+      .filter((name) => state.show[name] && !(same && name === "affine"));
+    const colours = Object.fromEntries(SURFACES.map(([name, , colour]) => [name, colour]));
+    const { pieces, crossing } = sheetPieces(xy, w, f, names);
+    for (const piece of pieces) {
+      for (const name of names) {
+        polys.push({ pts: piece[name].map(([x, y, v]) => [x, y, v * zScale]),
+          fill: colours[name], alpha: 0.55, stroke: "rgba(255,255,255,0.25)" });
+      }
     }
-    cached = { key, polys, gap: largestGap(xy, w, f) };
+    cached = { key, polys, crossing, gap: largestGap(xy, w, f) };
     return cached;
   }
 
@@ -127,7 +230,7 @@ function mount(el, data, host) {
     ctx.clearRect(0, 0, 640, 470);
     const { xy, f } = data;
     const w = state.w;
-    const { polys, gap } = scene();
+    const { polys, crossing, gap } = scene();
     // the labels: the value axis at the screen's corner (0, ½, 1), each vertex, the gap. Text
     // no smaller than 15 px: the canvas is shown shrunk to the notebook's column on a small
     // screen (review r7: 10-11 px there)
@@ -138,10 +241,16 @@ function mount(el, data, host) {
       halo: true }));
     const showGap = state.show.correct && state.show.affine && gap.gap > 1e-9;
     if (showGap) {
+      // over the sheets: haloed (r57 03-2); each end of the bar named with its value (r89 03-2)
       const [x, y] = gap.p;
-      labels.push({ p: [x, y, Math.max(gap.s.correct, gap.s.affine) * zScale],
+      const top = gap.s.correct >= gap.s.affine;
+      labels.push({ p: [x, y, (gap.s.correct + gap.s.affine) / 2 * zScale],
         text: ` gap ${fmt(gap.gap, 3)}`, color: OKABE.vermillion, font: "bold 17px sans-serif",
-        halo: true }); // over the sheets: haloed (r57 03-2)
+        halo: true });
+      labels.push({ p: [x, y, gap.s.correct * zScale], text: ` f ${fmt(gap.s.correct, 3)}`,
+        color: OKABE.blue, font: "bold 16px sans-serif", halo: true, above: top });
+      labels.push({ p: [x, y, gap.s.affine * zScale], text: ` affine ${fmt(gap.s.affine, 3)}`,
+        color: "#9a5f00", font: "bold 16px sans-serif", halo: true, above: !top });
     }
     for (const l of labels) {
       ctx.font = l.font;
@@ -151,10 +260,25 @@ function mount(el, data, host) {
     const points = polys.flatMap((poly) => poly.pts).concat([[0, 0, zScale]]);
     fitView(cam, points, labels, { left: 8, top: 8, right: 632, bottom: 440 });
     drawPolygons(ctx, cam, polys);
+    // where the two f sheets cross (see sheetPieces), drawn over them (r89 03-1)
+    for (const [a, b] of crossing) {
+      line3d(ctx, cam, [a[0], a[1], a[2] * zScale], [b[0], b[1], b[2] * zScale], "#222", 2.5);
+    }
     if (showGap) {
       const [x, y] = gap.p;
-      line3d(ctx, cam, [x, y, gap.s.correct * zScale], [x, y, gap.s.affine * zScale],
+      const ends = [[gap.s.correct, OKABE.blue], [gap.s.affine, OKABE.orange]];
+      line3d(ctx, cam, [x, y, ends[0][0] * zScale], [x, y, ends[1][0] * zScale],
         OKABE.vermillion, 3);
+      for (const [v, colour] of ends) {
+        const q = cam.project([x, y, v * zScale]);
+        ctx.beginPath();
+        ctx.arc(q[0], q[1], 5, 0, 2 * Math.PI);
+        ctx.fillStyle = colour;
+        ctx.fill();
+        ctx.lineWidth = 1.5;
+        ctx.strokeStyle = "#222";
+        ctx.stroke();
+      }
     }
     line3d(ctx, cam, [0, 0, 0], [0, 0, zScale], "#555", 1.5);
     xy.forEach(([x, y], k) => {
@@ -173,8 +297,9 @@ function mount(el, data, host) {
     });
     ctx.fillStyle = "#333";
     ctx.font = "15px sans-serif";
-    ctx.fillText("grey: the screen and the triangle; height: the value (axis at the corner)",
-      8, 462);
+    ctx.fillText(crossing.length
+      ? "grey: the screen and the triangle; black: where the two f sheets cross"
+      : "grey: the screen and the triangle; height: the value (axis at the corner)", 8, 462);
     readout.innerHTML = readoutText(w, state.show, gap);
     host.picture(canvas);
   }
