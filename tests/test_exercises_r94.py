@@ -1,0 +1,112 @@
+"""Review r94 (exercises 03, 08, 12 played as students): the mistakes it found misnamed,
+the wrong answer that passed, and the words that gave the answer on the first try.
+
+A first try is checked with the staged hints on (as in a fresh kernel), the named mistakes
+with the hints spent (as after two different failing answers).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from teachraster import exercises as ex
+from teachraster.exercises import tries
+
+
+@pytest.fixture
+def plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    yield plt
+    plt.close("all")
+
+
+def _first_try(name, fn):
+    """The report of a student's first failing check of task ``name`` in a fresh kernel."""
+    tries.forget_hints(name)
+    try:
+        return ex.check(name, fn, budget=60)
+    finally:
+        tries.spend_hints([name])
+
+
+def _words(report) -> str:
+    return "\n".join(f.explanation for f in report.failures)
+
+
+def _hiz(bound):
+    """hiz_rejects from the plane at the tile's four extreme centres (bare) and the nearest
+    vertex, combined by ``bound(plane_min, plane_max, nearest_vertex, buffer) -> bool``."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+        cols = np.array([col0, col0 + size - 1, col0, col0 + size - 1]) + 0.5
+        rows = np.array([row0, row0, row0 + size - 1, row0 + size - 1]) + 0.5
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        lam2 = ((cols - x1) * (y3 - y1) - (rows - y1) * (x3 - x1)) / area
+        lam3 = ((x2 - x1) * (rows - y1) - (y2 - y1) * (cols - x1)) / area
+        plane = z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1)
+        return bool(bound(plane.min(), plane.max(), min(z1, z2, z3), np.asarray(buffer)))
+
+    return hiz_rejects
+
+
+def test_hiz_right_answer_passes():
+    assert ex.check("hiz_rejects", _hiz(lambda lo, hi, v, b: max(lo, v) >= b.max())).passed
+
+
+@pytest.mark.parametrize(("bound", "named", "wrong"), [
+    # r94 D8-6 (a): both bounds computed, the smaller taken: told "use ≥", "nearest vertex"
+    (lambda lo, hi, v, b: min(lo, v) >= b.max(), "smaller of the two bounds",
+     ("use ≥", "compared the triangle's nearest vertex", "bare plane")),
+    # r94 D8-6 (b): the plane's largest corner: told "the triangle's farthest vertex"
+    (lambda lo, hi, v, b: max(hi, v) >= b.max(), "the plane's largest value at the corners",
+     ("farthest vertex",)),
+    # r94 D8-5: an empty pixel read as the far plane passed every case
+    (lambda lo, hi, v, b: max(lo, v) >= np.where(np.isinf(b), 1.0, b).max(),
+     "as the far plane, 1.0", ("use ≥",)),
+])  # fmt: skip
+def test_hiz_names_the_mistake_on_every_failure_and_no_other(bound, named, wrong):
+    report = ex.check("hiz_rejects", _hiz(bound))
+    assert not report.passed
+    for f in report.failures:
+        assert named in f.explanation, str(report)
+    for w in wrong:
+        assert w not in _words(report), str(report)
+
+
+def test_hiz_first_try_keeps_the_extreme_centres_and_the_larger_bound():
+    """r94 D8-3: row and column swapped gave the tile's extreme centres on the first try."""
+
+    def swapped(xyz, row0, col0, size, buffer):
+        return _hiz(lambda lo, hi, v, b: max(lo, v) >= b.max())(xyz, col0, row0, size, buffer)
+
+    first = _words(_first_try("hiz_rejects", swapped))
+    assert "you swapped the tile's row and column" in first, first
+    assert "col0 + ½" not in first, first
+    assert "col0 + ½" in _words(ex.check("hiz_rejects", swapped))
+    smaller = _words(_first_try("hiz_rejects", _hiz(lambda lo, hi, v, b: min(lo, v) >= b.max())))
+    assert "smaller of the two bounds" in smaller and "the larger of the two" not in smaller
+
+
+def test_hiz_case_figure_draws_the_extreme_centres_only_once_the_hints_are_spent(plt):
+    """r94 D8-3: the first failing try's figure drew the four extreme centres and the plane
+    there (the answer); D8-12: the triangle tinted the stored depths."""
+    from teachraster.exercises.hiz_tile import draw_hiz, hiz_cases
+
+    case = hiz_cases()[4]
+    tries.forget_hints("hiz_rejects")
+    try:
+        fig, ax = plt.subplots()
+        draw_hiz(ax, case, False)
+        assert "circles" not in ax.get_xlabel() and not ax.texts, ax.get_xlabel()
+        assert not any(p.get_fill() for p in ax.patches)
+    finally:
+        tries.spend_hints(["hiz_rejects"])
+    fig, ax = plt.subplots()
+    draw_hiz(ax, case, False)
+    assert "circles" in ax.get_xlabel() and len(ax.texts) == 4
