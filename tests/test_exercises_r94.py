@@ -110,3 +110,16 @@ def test_hiz_case_figure_draws_the_extreme_centres_only_once_the_hints_are_spent
     fig, ax = plt.subplots()
     draw_hiz(ax, case, False)
     assert "circles" in ax.get_xlabel() and len(ax.texts) == 4
+
+
+def test_capstone_quotes_the_depth_mistake_at_the_pixel_not_the_exercises_first():
+    """r94 D12-1: ``<=`` with glass writing depth, at a tie where every fragment writes,
+    was told the glass's words (exercise 4's first failure)."""
+    import student_variants as sv
+    from test_capstone import _mine
+
+    both = sv._passes_with(ties=True, mask=False)
+    report = ex.capstone("intersecting_triangles", **_mine("intersecting_triangles",
+                                                            depth_passes=both))  # fmt: skip
+    first = report.failures[0].explanation
+    assert "use <, not <=" in first and "leaves the buffer" not in first, first
