@@ -123,3 +123,94 @@ def test_capstone_quotes_the_depth_mistake_at_the_pixel_not_the_exercises_first(
                                                             depth_passes=both))  # fmt: skip
     first = report.failures[0].explanation
     assert "use <, not <=" in first and "leaves the buffer" not in first, first
+
+
+def _block(**knobs):
+    from teachraster.exercises.tile_blocks import classify_with
+
+    return lambda xy, x0, y0, size: classify_with(xy, x0, y0, size, **knobs)
+
+
+def _covered_corners(xy, x0, y0, size):
+    """Accepted iff the four extreme centres are covered; rejected per edge (r94 c3)."""
+    from exercise_solutions import CORRECT
+
+    from teachraster.exercises.coverage import covered
+
+    kind = CORRECT["classify_block"](xy, x0, y0, size)
+    if kind == "rejected":
+        return kind
+    pts = [(x0 + dx, y0 + dy) for dx in (0.5, size - 0.5) for dy in (0.5, size - 0.5)]
+    return "accepted" if covered(np.asarray(xy, dtype=float), np.array(pts)).all() else "partial"
+
+
+def test_block_corners_inside_words_are_true_and_said_once():
+    """r94 D8-1: "(nor do corners inside accept it)" was false (accepting by the four covered
+    corner centres passes); D8-2: "Corners outside … per edge" said twice."""
+    assert ex.check("classify_block", _covered_corners).passed
+    report = ex.check("classify_block", _block(logic="inside"))
+    words = _words(report)
+    assert "corners outside the triangle do not reject" in words, words
+    assert "nor do corners inside" not in words
+    for f in report.failures:
+        assert f.explanation.lower().count("corners outside the triangle do not reject") <= 1
+
+
+@pytest.mark.parametrize(("knobs", "named", "kept"), [
+    ({"points": "x0 y0 swapped"}, "you swapped x0 and y0", "x0 + ½"),
+    ({"points": "beyond"}, "x0 + size + ½ lies beyond", "x0 + size − ½"),
+    ({"points": "two corners"}, "only 2 of the 4", "test all four"),
+])  # fmt: skip
+def test_block_first_try_names_the_mistake_without_the_extreme_centres(knobs, named, kept):
+    """r94 D8-3: "a hint only" lines gave the extreme centres (or the method)."""
+    first = _words(_first_try("classify_block", _block(**knobs)))
+    assert named in first and kept not in first, first
+    assert kept in _words(ex.check("classify_block", _block(**knobs)))
+
+
+def test_two_corners_reason_is_this_cases():
+    """r94 D8-8: "partial; yours says rejected" was told an edge "can pass both"."""
+    report = ex.check("classify_block", _block(points="two corners"))
+    for f in report.failures:
+        if "yours says rejected" in f.explanation:
+            assert "can fail both and pass one" in f.explanation, f.explanation
+        elif "only 2 of the 4" in f.explanation:
+            assert "can pass both and fail one" in f.explanation, f.explanation
+
+
+def test_block_hint_does_not_call_the_tested_point_the_blocks_centre():
+    """r94 D8-4: "even the block's centre where its E is largest" read as the geometric
+    centre, the very point a one-point test used."""
+    from teachraster.exercises.tile_blocks import BLOCK_HINTS
+
+    assert not any("block's centre" in hint for _, hint in BLOCK_HINTS)
+
+
+def test_tile_scene_shows_x0_y0_swapped_and_hides_the_centres_on_the_first_try():
+    """r94 D8-10: the scene's triangle was symmetric about x = y, so x0 and y0 swapped drew
+    the package's picture; D8-3: its caption gave the extreme centres on the first try."""
+    from teachraster.exercises.picture_scenes import tile_scene
+
+    scene = tile_scene(_block(points="x0 y0 swapped"))
+    mine = scene.run()
+    assert (mine != scene.reference).any()
+    row, col = np.argwhere(mine != scene.reference)[0]
+    tries.forget_hints("classify_block")
+    try:
+        first = scene.explain_at(mine, row, col)
+    finally:
+        tries.spend_hints(["classify_block"])
+    assert "extreme centres" not in first and "x0=" in first, first
+    assert "extreme centres x =" in scene.explain_at(mine, row, col)
+
+
+@pytest.mark.parametrize("knobs", [
+    {"points": "outer corners"}, {"tie": "loose"},
+    {"logic": "inside"}, {"points": "two corners"}, {"points": "x0 y0 swapped"},
+    {"points": "beyond"}, {"points": "pixel corners"},
+])  # fmt: skip
+def test_tile_scene_still_shows_each_classic_mistake(knobs):
+    from teachraster.exercises.picture_scenes import tile_scene
+
+    scene = tile_scene(_block(**knobs))
+    assert (scene.run() != scene.reference).any(), knobs
