@@ -214,3 +214,94 @@ def test_tile_scene_still_shows_each_classic_mistake(knobs):
 
     scene = tile_scene(_block(**knobs))
     assert (scene.run() != scene.reference).any(), knobs
+
+
+def _bary(order=(0, 1, 2), p_swapped=False, clamp=False, solve=False):
+    """barycentric by the signed areas (or a 3×3 solve), with r94's mistakes as knobs."""
+
+    def barycentric(xy, p):
+        xy, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+        if p_swapped:
+            p = p[::-1]
+        if solve:
+            lam = np.linalg.solve(np.vstack([xy.T, np.ones(3)]), np.array([p[0], p[1], 1.0]))
+        else:
+
+            def e(a, b, q):
+                return (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+
+            v1, v2, v3 = xy
+            lam = np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)]) / e(v1, v2, v3)
+        if clamp:
+            lam = np.maximum(lam, 0.0)
+            lam = lam / lam.sum()
+        return lam[list(order)]
+
+    return barycentric
+
+
+@pytest.mark.parametrize(("fn", "named"), [
+    (_bary(clamp=True), "your weights are never negative"),
+    (_bary(p_swapped=True), "you swapped p's x and y"),
+])  # fmt: skip
+def test_barycentric_common_mistakes_are_named_on_the_first_try(fn, named):
+    """r94 D3-5: clamped weights and p's x and y swapped got only the rule."""
+    assert (
+        ex.check("barycentric", _bary()).passed
+        and ex.check("barycentric", _bary(solve=True)).passed
+    )
+    report = _first_try("barycentric", fn)
+    assert named in report.failures[0].explanation, str(report)
+
+
+def test_weights_in_another_order_are_not_given_the_area_ratio_on_the_first_try():
+    """r94 D3-7: a 3×3 solve returned reversed was told "the area of the sub-triangle …"."""
+    fn = _bary(order=(2, 1, 0), solve=True)
+    first = _words(_first_try("barycentric", fn))
+    assert "another order" in first and "sub-triangle" not in first, first
+    assert "λ_i = 1 at v_i" in first
+    assert "sub-triangle" in _words(ex.check("barycentric", fn))
+
+
+def _persp(kind):
+    def perspective_weights(lam, w):
+        lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+        if kind == "clamped":
+            lam = np.maximum(lam, 0.0)
+        if kind == "reversed ratios":
+            q = lam * (w.max() / w)
+        elif kind == "over w squared":
+            q = lam * (w.min() / w) ** 2
+        else:
+            q = lam * (w.min() / w)
+        return q / q.sum()
+
+    return perspective_weights
+
+
+def test_perspective_weights_that_sum_to_1_are_not_told_to_sum_to_1():
+    """r94 D3-3: λ/w² (weights summing to 1) was told "… and make the weights sum to 1"."""
+    assert ex.check("perspective_weights", _persp("right")).passed
+    for report in (_first_try("perspective_weights", _persp("over w squared")),
+                   ex.check("perspective_weights", _persp("over w squared"))):  # fmt: skip
+        words = _words(report)
+        assert "make the weights sum to 1" not in words and "normalised to sum" not in words
+        assert "already sum to 1" in words, words
+
+
+def test_clamped_perspective_weights_are_named_here_and_in_the_capstone():
+    """r94 D3-3, D12-4: clamping (the package's own default) got the normalisation hint."""
+    from test_capstone import _mine
+
+    report = _first_try("perspective_weights", _persp("clamped"))
+    assert "your weight is 0 where λ is negative" in _words(report), str(report)
+    assert "make the weights sum to 1" not in _words(report)
+    cap = ex.capstone("textured_floor", **_mine("textured_floor",
+                                                perspective_weights=_persp("clamped")))  # fmt: skip
+    last = cap.failures[-1].explanation
+    assert "your weight is 0 where λ is negative" in last and "sum to 1" not in last, last
+
+
+def test_the_direction_of_the_ratio_is_tested():
+    """r94 D3-4: λ·(max w / w) passed: no case had w more than 1.8e308 apart."""
+    assert not ex.check("perspective_weights", _persp("reversed ratios")).passed
