@@ -305,3 +305,30 @@ def test_clamped_perspective_weights_are_named_here_and_in_the_capstone():
 def test_the_direction_of_the_ratio_is_tested():
     """r94 D3-4: λ·(max w / w) passed: no case had w more than 1.8e308 apart."""
     assert not ex.check("perspective_weights", _persp("reversed ratios")).passed
+
+
+def _markdown(name: str) -> str:
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "notebooks" / "exercises" / f"{name}.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    return "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+
+
+def test_hiz_main_text_defines_the_answer_the_check_takes():
+    """r94 D8-7: "reject whenever no fragment … could pass" defined the per-pixel answer the
+    check fails; the bound asked was stated only in the hint."""
+    text = _markdown("08_tiles")
+    main = text.split("## 8.2", 1)[1].split("<details>", 1)[0]
+    assert "no fragment of the triangle in this tile\ncould pass" not in main
+    assert "two cheap lower\nbounds" in main and "larger of the\ntwo" in main, main
+
+
+def test_capstone_says_how_an_uncovered_sample_looks_and_that_over_is_copied():
+    """r94 D12-3: nothing said that an uncovered sample's id is −1 and its colour NaN;
+    D12-2: `over` is lesson 12b §4's rule, not a derivation."""
+    text = _markdown("12_capstone")
+    assert "`sample_ids[k]` is −1 where no triangle covers sample k" in text
+    assert "its colour is then NaN" in text
+    assert "shares derive" not in text and "copy it from there" in text
