@@ -332,3 +332,13 @@ def test_capstone_says_how_an_uncovered_sample_looks_and_that_over_is_copied():
     assert "`sample_ids[k]` is −1 where no triangle covers sample k" in text
     assert "its colour is then NaN" in text
     assert "shares derive" not in text and "copy it from there" in text
+
+
+def test_a_scene_that_agrees_with_a_failing_check_says_so(plt):
+    """r94 D8-10: the third panel read "no pixel differs" under a failing check."""
+    report = ex.check("classify_block", _block(tie="strict"))
+    assert not report.passed
+    fig, axes = plt.subplots(1, 3)
+    report.compare(axes)
+    assert "the failing cases above" in axes[2].get_title(), axes[2].get_title()
+    assert len(axes[1].get_title().splitlines()) <= 2, axes[1].get_title()  # r94 D8-11

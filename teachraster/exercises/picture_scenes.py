@@ -485,5 +485,7 @@ def tile_scene(fn) -> Scene:
                 return f"the package visits block ({key[0]}, {key[1]}) of size {size}, yours does not: its parent's verdict differs"  # fmt: skip
         return f"yours and the package's agree: {WALK[int(reference[row, col])][0]}"
 
-    scene = Scene("a tile walk: blocks of 16, then 4, then pixels", reference, run, explain, WALK)
+    # r94 D8-11: "the package's: a tile walk: blocks of 16, then 4, then pixels" took three
+    # lines over its panel
+    scene = Scene("tile walk: blocks 16, 4, 1", reference, run, explain, WALK)
     return scene
