@@ -342,3 +342,25 @@ def test_a_scene_that_agrees_with_a_failing_check_says_so(plt):
     report.compare(axes)
     assert "the failing cases above" in axes[2].get_title(), axes[2].get_title()
     assert len(axes[1].get_title().splitlines()) <= 2, axes[1].get_title()  # r94 D8-11
+
+
+def test_a_slow_covers_in_the_capstone_is_told_of_its_time_only():
+    """r94 D12-5: a correct but slow covers was told why the grid cannot see ties, and "a
+    Python call per pixel?" (covers is one call per point)."""
+    import time
+
+    import reasoning_solutions as rs
+    from test_capstone import _mine
+
+    def slow(xy, p):
+        end = time.process_time() + 0.003
+        while time.process_time() < end:
+            pass
+        return rs.CAPSTONE["covers"](xy, p)
+
+    report = ex.capstone("grid", **_mine("grid", covers=slow))
+    words = _words(report)
+    if "did not finish" not in words:  # the machine was fast enough: nothing to test
+        pytest.skip("the slow covers finished in time")
+    assert "cannot tell whether ties" not in words and "call per pixel" not in words, words
+    assert "should take microseconds" in words
