@@ -364,3 +364,15 @@ def test_a_slow_covers_in_the_capstone_is_told_of_its_time_only():
         pytest.skip("the slow covers finished in time")
     assert "cannot tell whether ties" not in words and "call per pixel" not in words, words
     assert "should take microseconds" in words
+
+
+def test_a_negative_sub_triangle_is_drawn_apart(plt):
+    """r94 D3-6: λ2 = −0.8's sub-triangle was filled like the others, labelled inside."""
+    from teachraster.exercises.interpolation import _draw_bary, barycentric_cases
+
+    case = next(c for c in barycentric_cases() if (np.asarray(c[2]) < 0).sum() == 1)
+    fig, ax = plt.subplots()
+    _draw_bary(ax, case, None)
+    texts = [t.get_text() for a in fig.axes for t in a.texts]
+    k = int(np.argmin(case[2])) + 1
+    assert f"λ{k} < 0" in texts, texts

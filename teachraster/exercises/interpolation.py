@@ -197,12 +197,19 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
     v, q = xy - origin, p - origin
     colours = ("#1b9e77", "#d95f02", "#7570b3")
     artists = []
+    lam = _areas(xy, p) / _area(xy) if _area(xy) else np.zeros(3)
     for k in range(3):
         sub = np.array([q, v[(k + 1) % 3], v[(k + 2) % 3]])
-        artists.append(ax.add_patch(Polygon(sub, color=colours[k], alpha=0.3, lw=0)))
-        centre = sub.mean(axis=0)
-        artists.append(ax.annotate(f"λ{k + 1}", centre, ha="center", va="center",
-                                   fontsize="small", color=colours[k]))  # fmt: skip
+        if lam[k] < 0:  # r94 D3-6: a negative share hatched, labelled outside the triangle
+            artists.append(ax.add_patch(Polygon(sub, fill=False, hatch="///", lw=1, ls="--",
+                                                edgecolor=colours[k])))  # fmt: skip
+            centre, label = (q + sub[1:].mean(axis=0)) / 2, f"λ{k + 1} < 0"
+        else:
+            artists.append(ax.add_patch(Polygon(sub, color=colours[k], alpha=0.3, lw=0)))
+            centre, label = sub.mean(axis=0), f"λ{k + 1}"
+        artists.append(ax.annotate(label, centre, ha="center", va="center", fontsize="small",
+                                   color=colours[k], bbox={"boxstyle": "round,pad=0.1",
+                                   "facecolor": "white", "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
     ring = np.vstack([v, v[:1]])
     artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     for k in range(3):
