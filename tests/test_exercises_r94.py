@@ -373,6 +373,6 @@ def test_a_negative_sub_triangle_is_drawn_apart(plt):
     case = next(c for c in barycentric_cases() if (np.asarray(c[2]) < 0).sum() == 1)
     fig, ax = plt.subplots()
     _draw_bary(ax, case, None)
-    texts = [t.get_text() for a in fig.axes for t in a.texts]
+    texts = [t.get_text() for a in [ax, *ax.child_axes] for t in a.texts]
     k = int(np.argmin(case[2])) + 1
     assert f"λ{k} < 0" in texts, texts
