@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_exercises_r85 import _first_try, _words  # a first try in a fresh kernel
 
 from teachraster import exercises as ex
 from teachraster.exercises import tries
@@ -16,26 +17,11 @@ from teachraster.exercises import tries
 
 @pytest.fixture
 def plt():
-    import matplotlib
+    pytest.importorskip("matplotlib").use("Agg")
+    import matplotlib.pyplot as pyplot
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
-
-
-def _first_try(name, fn):
-    """The report of a student's first failing check of task ``name`` in a fresh kernel."""
-    tries.forget_hints(name)
-    try:
-        return ex.check(name, fn, budget=60)
-    finally:
-        tries.spend_hints([name])
-
-
-def _words(report) -> str:
-    return "\n".join(f.explanation for f in report.failures)
+    yield pyplot
+    pyplot.close("all")
 
 
 def _hiz(bound):
