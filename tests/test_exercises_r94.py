@@ -362,3 +362,10 @@ def test_a_negative_sub_triangle_is_drawn_apart(plt):
     texts = [t.get_text() for a in [ax, *ax.child_axes] for t in a.texts]
     k = int(np.argmin(case[2])) + 1
     assert f"λ{k} < 0" in texts, texts
+
+
+@pytest.mark.parametrize("name", ["barycentric", "perspective_weights"])
+def test_an_answer_nan_on_every_case_is_told_nan(name):
+    """r94 D3-2: the convention (CONVENTIONS.md, Exercises) now says what the check does."""
+    report = ex.check(name, lambda *a: [float("nan")] * 3)
+    assert "your answer holds NaN" in report.failures[0].explanation, str(report)
