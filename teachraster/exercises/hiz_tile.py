@@ -92,6 +92,9 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         # but costs a test per pixel: the bound asked is the corners' and the nearest vertex's
         ("a sliver crossing the tile: its covered centres all lie behind",
          (_SLIVER, 0, 0, TILE, np.full((TILE, TILE), 0.1662))),
+        # r94 D8-5: an empty pixel read as the far plane 1.0 passed every case
+        ("a triangle on the far plane (depth 1), one pixel of the tile still empty",
+         (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -138,8 +141,13 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
     outer_r, outer_c = np.array([row0, row0, row0 + size, row0 + size]) - 0.5, \
         np.array([col0, col0 + size, col0, col0 + size]) - 0.5  # fmt: skip
     near = plane_at(xyz, rows, cols).min()
+    bare = plane_at(xyz, rows, cols, clamp=False)
     with np.errstate(all="ignore"):
         return {
+            # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
+            "smaller bound": bool(min(bare.min(), xyz[:, 2].min()) >= buffer.max()),
+            "plane farthest": bool(plane_at(xyz, rows, cols).max() >= buffer.max()),
+            "empty as far plane": bool(near >= np.where(np.isinf(buffer), 1.0, buffer).max()),
             "vertex": bool(xyz[:, 2].min() >= buffer.max()),
             "no clamp": bool(plane_at(xyz, rows, cols, clamp=False).min() >= buffer.max()),
             "outer corners": bool(
@@ -171,6 +179,15 @@ def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
 
 
 MISTAKES = {
+    "smaller bound": "you took the smaller of the two bounds (the plane at the corners, the "
+    "nearest vertex): no fragment is nearer than either, so the nearest depth a fragment can "
+    "have is the larger of the two (the smaller keeps blocks Hi-Z could reject)",
+    "plane farthest": "you took the plane's largest value at the corners, its farthest: the "
+    "block is hidden only if even its nearest fragment is, so take the plane's smallest "
+    "value there",
+    "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: this buffer "
+    "holds +inf where nothing is drawn yet, and a fragment there passes whatever its depth, "
+    "even one at 1.0, so nothing in this tile may be rejected",
     "vertex": "you compared the triangle's nearest vertex: in this tile its depth plane is "
     "farther than that vertex; evaluate the plane at the tile's extreme pixel centres (the "
     "vertex alone is a safe bound, but the larger of the two bounds is asked: the vertex "
@@ -197,8 +214,9 @@ MISTAKES = {
     "farthest stored depth",
     "tile mean": "you compared with the tile's mean depth: only its farthest stored depth "
     "bounds every pixel of the tile",
-    "row col swapped": "you swapped the tile's row and column: its pixel centres lie at "
-    "x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size − ½",
+    "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
+    "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
+    "y = row0 + ½ … row0 + size − ½",
 }
 
 
@@ -266,16 +284,38 @@ def draw_hiz(ax, case, got):
     shown = np.where(np.isfinite(buffer), buffer, np.nan)
     artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
                          vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
-    # the triangle itself, shaded (r40 08-4: only an edge or none of it showed in the view)
+    # the triangle itself, outlined (r40 08-4: only an edge or none of it showed in the view;
+    # r94 D8-12: a translucent fill tinted the stored depths under it, as if two were held)
     from matplotlib.patches import Polygon
 
-    artists.append(ax.add_patch(Polygon(xyz[:, :2], closed=True, facecolor="#d7301f",
-                                        alpha=0.18, edgecolor="#d7301f", linewidth=1.5,
+    from .tries import hints_spent
+
+    artists.append(ax.add_patch(Polygon(xyz[:, :2], closed=True, fill=False, hatch="//",
+                                        edgecolor="#d7301f", linewidth=1.5,
                                         label="the triangle")))  # fmt: skip
+    verdict = "rejected" if expected else "kept"
+    yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
+    far = f"farthest stored {num(np.max(buffer))}: {verdict}{yours}"
+    # r94 D8-3: the extreme centres and the plane there are the task's answer: drawn only once
+    # two different answers have failed (as classify_block's figure does)
+    if not hints_spent("hiz_rejects"):
+        artists.append(ax.set_xlabel(f"hatched: the triangle\n{far}", fontsize="x-small"))
+    else:
+        artists += _extreme_centres(ax, xyz, row0, col0, size, far)
+    ax.set_xlim(col0 - 2, col0 + size + 2)
+    ax.set_ylim(row0 + size + 2, row0 - 2)
+    ax.set_aspect("equal")
+    artists += _whole_triangle(ax, xyz, row0, col0, size)
+    artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
+    return artists
+
+
+def _extreme_centres(ax, xyz, row0, col0, size, far: str) -> list:
+    """The triangle's depth at the tile's four extreme centres, the nearest filled."""
     rows, cols = _corners(row0, col0, size)
     depth = plane_at(xyz, rows, cols)
     k = int(np.argmin(depth))
-    artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
+    artists = ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
     artists += ax.plot(cols[k] + 0.5, rows[k] + 0.5, "o", color="#ff9f1c", ms=8)  # the nearest
     for r, c, z in zip(rows, cols, depth):  # the triangle's depth at each extreme centre
         inward = (1 if c == col0 else -1, -1 if r == row0 else 1)  # y axis points down
@@ -283,17 +323,8 @@ def draw_hiz(ax, case, got):
                                    textcoords="offset points", ha="center", va="center",
                                    fontsize="x-small", bbox={"boxstyle": "round,pad=0.15",
                                    "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
-    verdict = "rejected" if expected else "kept"
-    yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
     artists.append(ax.set_xlabel(f"circles: the triangle's depth at the extreme centres\n(filled: "
-                                 f"nearest, {num(depth[k])}); farthest stored "
-                                 f"{num(np.max(buffer))}: {verdict}{yours}",
-                                 fontsize="x-small"))  # fmt: skip
-    ax.set_xlim(col0 - 2, col0 + size + 2)
-    ax.set_ylim(row0 + size + 2, row0 - 2)
-    ax.set_aspect("equal")
-    artists += _whole_triangle(ax, xyz, row0, col0, size)
-    artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
+                                 f"nearest, {num(depth[k])}); {far}", fontsize="x-small"))  # fmt: skip
     return artists
 
 
@@ -318,7 +349,8 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     inset.set_aspect("equal")
     inset.set_xticks([])
     inset.set_yticks([])
-    inset.set_title("whole triangle", fontsize="x-small")
+    # r94 D8-9: a title above the inset sat on the main axes' first tick label
+    inset.set_xlabel("whole triangle", fontsize="x-small")
     return [inset]
 
 
@@ -342,9 +374,18 @@ HIZ_HINTS = (
     ("; the bound asked is the one a few tests give: the plane at the tile's extreme pixel "
      "centres, no nearer than the nearest vertex",
      "; the bound asked is the one a few tests give (which few points, and what else?)"),
+    # r94 D8-3: the swapped row and column gave the tile's extreme centres on the first try
+    ("; its pixel centres lie at x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size "
+     "− ½", ""),
+    (", so the nearest depth a fragment can have is the larger of the two (the smaller keeps "
+     "blocks Hi-Z could reject)", ": which of the two, then, bounds how near a fragment can be?"),
 )  # fmt: skip
 
 HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
     variant_mistakes(_variants, MISTAKES, (FLOAT32,)), draw=draw_hiz, hints=HIZ_HINTS,
+    # r94 D8-6: a bool answer agrees with many mistakes on any one case: "use ≥" was said to
+    # a function using ≥ (the smaller of the two bounds); name only a mistake giving every
+    # failing answer
+    partial_names=False,
 )  # fmt: skip

@@ -80,6 +80,15 @@ ORDER = (
 )
 
 
+def _clamped(xy, p) -> np.ndarray | None:
+    """Negative weights set to 0 and the rest renormalised (None where none is negative)."""
+    lam = _areas(xy, p) / _area(xy)
+    if (lam >= 0).all():
+        return None
+    kept = np.maximum(lam, 0.0)
+    return kept / kept.sum()
+
+
 def barycentric_mistakes() -> list[Mistake]:
     out = [
         Mistake("absolute area", _absolute_area_words,
@@ -100,6 +109,13 @@ def barycentric_mistakes() -> list[Mistake]:
                                              "outside an edge its weight is negative, so take "
                                              "E(...) itself, not its absolute value"),
                 gives=lambda xy, p: np.abs(_areas(xy, p)) / abs(_area(xy))),
+        # r94 D3-5: two common mistakes got only the rule (clamping is what the package's
+        # perspective_weights does by default)
+        Mistake("clamped", ": your weights are never negative: where p lies outside an edge, "
+                "the weight of the vertex opposite that edge is negative (the weights still "
+                "rebuild p and sum to 1); do not clamp them", gives=_clamped),
+        Mistake("p's x and y swapped", ": you swapped p's x and y: p = (x, y), its column "
+                "first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
     ]  # fmt: skip
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):
@@ -181,12 +197,19 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
     v, q = xy - origin, p - origin
     colours = ("#1b9e77", "#d95f02", "#7570b3")
     artists = []
+    lam = _areas(xy, p) / _area(xy) if _area(xy) else np.zeros(3)
     for k in range(3):
         sub = np.array([q, v[(k + 1) % 3], v[(k + 2) % 3]])
-        artists.append(ax.add_patch(Polygon(sub, color=colours[k], alpha=0.3, lw=0)))
-        centre = sub.mean(axis=0)
-        artists.append(ax.annotate(f"λ{k + 1}", centre, ha="center", va="center",
-                                   fontsize="small", color=colours[k]))  # fmt: skip
+        if lam[k] < 0:  # r94 D3-6: a negative share hatched, labelled outside the triangle
+            artists.append(ax.add_patch(Polygon(sub, fill=False, hatch="///", lw=1, ls="--",
+                                                edgecolor=colours[k])))  # fmt: skip
+            centre, label = (q + sub[1:].mean(axis=0)) / 2, f"λ{k + 1} < 0"
+        else:
+            artists.append(ax.add_patch(Polygon(sub, color=colours[k], alpha=0.3, lw=0)))
+            centre, label = sub.mean(axis=0), f"λ{k + 1}"
+        artists.append(ax.annotate(label, centre, ha="center", va="center", fontsize="small",
+                                   color=colours[k], bbox={"boxstyle": "round,pad=0.1",
+                                   "facecolor": "white", "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
     ring = np.vstack([v, v[:1]])
     artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     for k in range(3):
@@ -218,6 +241,9 @@ BARYCENTRIC = Exercise(
         (re.compile(r": λ_i = E of the edge opposite v_i at p, divided by E\(v1, v2, v3\) = "
                     r"[^;.]*"), ": the weights rebuild p (λ1·v1 + λ2·v2 + λ3·v3 = p) and sum "
          "to 1; check yours against both on this case"),
+        # r94 D3-7: weights in another order were given the area ratio (a 3×3 solve's too)
+        (" λ_i belongs to v_i: the area of the sub-triangle opposite v_i (p with the other "
+         "two) over the whole", " λ_i belongs to v_i (λ_i = 1 at v_i)"),
     ),
 )  # fmt: skip
 

@@ -30,6 +30,8 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
     for name in ("perspective_w_ratio_1e6", "perspective_w_scale"):
         ws += [np.asarray(w, dtype=float) for w in CASES[name].inputs["ws"]]
     ws += list(np.exp(rng.uniform(np.log(0.1), np.log(100.0), size=(5, 3))))
+    # r94 D3-4: w 1e610 apart: the ratios' direction matters (max w / w overflows)
+    ws.append(np.array([1e-310, 1.0, 1e300]))
     lams = [np.array([0.2, 0.3, 0.5]), np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.5, 0.5])]
     out = []
     for w in ws:
@@ -71,6 +73,9 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             "times w": lam * w / (lam @ w),
             "unnormalised": lam / w,
             "unnormalised times w": lam * w,
+            # r94 D3-3: the package's own default (clamping) was told to "make the weights
+            # sum to 1"; said only where a λ is negative (elsewhere it is the right answer)
+            "clamped": weights_per_row(lam[None], w[None])[0] if (lam < 0).any() else None,
         }
 
 
@@ -82,6 +87,9 @@ MISTAKES = {
     "unnormalised": "these are λ_i / w_i, not yet weights: they must sum to 1 (divide by "
     "their sum Σ λ_j / w_j, the interpolated 1/w)",
     "unnormalised times w": "these are λ_i · w_i, neither divided by w nor summing to 1",
+    "clamped": "your weight is 0 where λ is negative: the point lies outside the triangle "
+    "(as a clipped or extrapolated one does), and its weights are not clamped here: a "
+    "negative λ gives a negative μ",
 }
 
 
@@ -95,6 +103,9 @@ def explain_weights(args, expected, got) -> str:
 
 
 def _rule(args, expected, got) -> str:
+    # r94 D3-3: "make the weights sum to 1" was told to weights that did
+    if abs(float(np.sum(got)) - 1) <= 1e-9:
+        return " (μ_i ∝ λ_i / w_i; yours already sum to 1)"
     return " (μ_i ∝ λ_i / w_i, normalised to sum to 1)"
 
 
@@ -156,5 +167,7 @@ PERSPECTIVE_WEIGHTS = Exercise(
          "divided to sum to 1?)"),
         (" (μ_i ∝ λ_i / w_i, normalised to sum to 1)", ": write λ_i in terms of μ and the three "
          "w, turn that around, and make the weights sum to 1"),
+        (" (μ_i ∝ λ_i / w_i; yours already sum to 1)", ": write λ_i in terms of μ and the "
+         "three w and turn that around (yours already sum to 1)"),
     ),
 )  # fmt: skip

@@ -430,7 +430,9 @@ def trilinear_scene(fn) -> Scene:
 
 # -- the tile walk (classify_block) -----------------------------------------------------------
 TILE_IMAGE, TILE_SIZES = 48, (16, 4)
-TILE_TRIANGLE = np.array([[6.0, 6.0], [45.5, 17.5], [17.5, 45.5]])  # each classic mistake shows
+#: Each classic mistake shows; not symmetric about x = y (r94 D8-10: x0 and y0 swapped drew
+#: the mirrored block's verdict, the same one, and the picture showed no difference)
+TILE_TRIANGLE = np.array([[6.0, 6.0], [44.5, 18.5], [17.5, 45.5]])
 #: Pixel codes of the walk: the deepest verdict each pixel got.
 WALK = (
     ("rejected", "#ffffff"),
@@ -476,10 +478,14 @@ def tile_scene(fn) -> Scene:
         for size in TILE_SIZES:
             key = (col // size * size, row // size * size, size)
             if key in scene.parts and scene.parts[key] != truth.get(key, scene.parts[key]):
-                return f"block ({key[0]}, {key[1]}) of size {size}: " + tb.explain_block((TILE_TRIANGLE.copy(), *key), truth[key], scene.parts[key])  # fmt: skip
+                words = tb.explain_block((TILE_TRIANGLE.copy(), *key), truth[key], scene.parts[key])  # fmt: skip
+                # r94 D8-3: the first try's caption gave the block's extreme centres
+                return f"block ({key[0]}, {key[1]}) of size {size}: " + lod.hinted("classify_block", words, tb.BLOCK_HINTS)  # fmt: skip
             if key in truth and key not in scene.parts:
                 return f"the package visits block ({key[0]}, {key[1]}) of size {size}, yours does not: its parent's verdict differs"  # fmt: skip
         return f"yours and the package's agree: {WALK[int(reference[row, col])][0]}"
 
-    scene = Scene("a tile walk: blocks of 16, then 4, then pixels", reference, run, explain, WALK)
+    # r94 D8-11: "the package's: a tile walk: blocks of 16, then 4, then pixels" took three
+    # lines over its panel
+    scene = Scene("tile walk: blocks 16, 4, 1", reference, run, explain, WALK)
     return scene

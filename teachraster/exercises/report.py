@@ -220,7 +220,9 @@ class Report:
         the student's function once, within the time a case may take, and not at all when the
         check stopped on a time limit. Exercises with a picture only; returns the artists.
         """
-        return self._picture().draw(axes, pixel)
+        picture = self._picture()
+        picture.check_failed = not self.passed
+        return picture.draw(axes, pixel)
 
     def explain_pixel(self, row: int, col: int) -> str:
         """Why pixel (``row``, ``col``) of the student's picture differs (or does not)."""

@@ -65,6 +65,9 @@ class Scene:
     inputs: Callable | None = field(default=None, repr=False)
     #: What a continuous picture's values are (the colour bar's label: r64 07-6, "λ").
     value_name: str = ""
+    #: The check of this picture failed (set by :meth:`.report.Report.compare`): a picture
+    #: that shows no difference then says the failing cases show it (r94 D8-10).
+    check_failed: bool = False
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
@@ -228,6 +231,8 @@ def _difference_panel(ax, scene: Scene):
     title = (
         f"{n} pixel{'s' * (n != 1)} differ{'s' * (n == 1)}{biggest}" if n else "no pixel differs"
     )
+    if not n and scene.check_failed:  # r94 D8-10: the picture must not read as a pass
+        title += " here;\nthe failing cases above\nshow your mistake"
     ax.set_title(title, fontsize="small")
     return artists
 

@@ -126,10 +126,17 @@ def classify_with(xy, x0, y0, size, *, points="centres", tie="top-left", orient=
 
 def _two_corners(args, expected, got) -> str:
     xy, x0, y0, size = args
+    # r94 D8-8: the reason is this case's ("partial; yours says rejected" was told an edge
+    # "can pass both and fail the other two")
+    why = (
+        "fail both and pass one of the other two: it then rejects nothing"
+        if got == "rejected"
+        else "pass both and fail one of the other two: the block is then not accepted"
+    )
     return (
         f"you tested only 2 of the 4 extreme centres, ({num(x0 + 0.5)}, {num(y0 + 0.5)}) and "
-        f"({num(x0 + size - 0.5)}, {num(y0 + size - 0.5)}): an edge can pass both and fail "
-        "the other two; test all four (or, per edge, the one its signs pick)"
+        f"({num(x0 + size - 0.5)}, {num(y0 + size - 0.5)}): an edge can {why}; test all four "
+        "(or, per edge, the one its signs pick)"
     )
 
 
@@ -164,9 +171,11 @@ BLOCK_KNOBS = Knobs(classify_with, {
     "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
                     "both windings (orient the edges so that the interior is positive)", False)],
     "logic": [
+        # r94 D8-1, D8-2: "(nor do corners inside accept it)" was false (the triangle is
+        # convex: four covered centres do accept it), and the rule's last sentence said twice
         Slip("corners inside", lambda a, e, g: "corners outside the triangle do not reject a "
-             "block (nor do corners inside accept it): the test is per edge; "
-             + _by_verdicts(_edge_table(*a), e, g)[2:], "inside"),
+             "block: the test is per edge; "
+             + _by_verdicts(_edge_table(*a), e, g)[2:].replace(_OUTSIDE, ""), "inside"),
         Slip("best corner accepts", lambda a, e, g: _by_verdicts(_edge_table(*a), e, "accepted")[2:],
              "accept by the best corner"),
     ],
@@ -218,18 +227,25 @@ _POINT = r"\([^()]*\) \(E = [^()]*\)"
 BLOCK_HINTS = (
     (re.compile(r" \(extreme centres x = [^;()]*; y = [^()]*\)"), ""),
     (re.compile(rf"even the corner that maximises its E, {_POINT}, fails"),
-     "even the block's centre where its E is largest fails (which centre is that?)"),
+     "even the pixel centre of the block where its E is largest fails (which one is that?)"),
     (re.compile(rf"the lowest of the minimising corners is {_POINT} for edge (v\d→v\d), which "
                 "passes"),
-     r"even edge \1, at the block's centre where its E is lowest, passes (which centre?)"),
+     r"even edge \1, at the pixel centre of the block where its E is lowest, passes (which "
+     "one?)"),
     (re.compile(rf"this corner, {_POINT}, is the one that minimises E for edge (v\d→v\d), and "
                 rf"it fails; you tested the maximising one, {_POINT}"),
-     r"edge \1 fails at the block's centre where its E is smallest (which centre is it?)"),
+     r"edge \1 fails at the pixel centre of the block where its E is smallest (which one is "
+     "it?)"),
     (re.compile(rf" \(each edge's maximising corner passes: (?:v\d→v\d: {_POINT}(?:; )?)+\)"),
-     " (each edge passes at the block's centre where its E is largest)"),
+     " (each edge passes at the pixel centre of the block where its E is largest)"),
     (re.compile(r"(corner \([^()]*\) lies exactly on edge v\d→v\d), a (?:top|left|bottom|right) "
                 r"edge: the top-left rule (includes|excludes) it"),
      r"\1: the top-left rule \2 it (which kind of edge is it, with y pointing down?)"),
+    # r94 D8-3: named mistakes that gave the extreme centres (or the method) on the first try
+    ("; its extreme centres lie at x = x0 + ½, x0 + size − ½ and y = y0 + ½, y0 + size − ½", ""),
+    (re.compile(r"the last pixel centre of the block is x0 \+ size − ½ = [^,]*, not x0 \+ size "
+                r"\+ ½"), "x0 + size + ½ lies beyond the block's last pixel centre"),
+    ("; test all four (or, per edge, the one its signs pick)", ""),
 )  # fmt: skip
 
 
@@ -389,8 +405,12 @@ def _by_verdicts(edges, expected, got) -> str:
     return (
         ": no edge excludes all four centres (each edge's maximising corner passes: "
         + "; ".join(best)
-        + "). Corners outside the triangle do not reject a block: the test is per edge"
+        + ")"
+        + _OUTSIDE
     )
+
+
+_OUTSIDE = ". Corners outside the triangle do not reject a block: the test is per edge"
 
 
 def draw_block_case(ax, case, got):
