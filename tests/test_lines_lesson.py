@@ -483,12 +483,17 @@ def test_12a_wide_question_has_no_hair_thin_pixels(ns):
     outlines (recomputed here, not only the cell's assert), the question says how far, and
     every corner of both shapes lies inside the widget's frame (0..16 x 0..10)."""
     grid = np.stack(np.meshgrid(np.arange(16) + 0.5, np.arange(10) + 0.5), -1).reshape(-1, 2)
+    from teachraster.core.lines import wide_line_triangles
+
     for shape in ("rectangle", "gl"):
-        quad = ns.corners_of(shape)
+        t = wide_line_triangles(ns.s0, ns.s1, 4, shape=shape)  # s0, s1: q_wide's p0, p1
+        quad = np.vstack([t[0], t[1][2:]])
         assert ((quad > 0) & (quad < (16, 10))).all()
         for a, b in zip(quad, np.roll(quad, -1, axis=0)):
             e = b - a
             t = np.clip((grid - a) @ e / (e @ e), 0, 1)
             assert np.linalg.norm(a + t[:, None] * e - grid, axis=1).min() >= 0.1
     assert ns.margin >= 0.1
-    assert f"closer than {ns.margin:.2f} px to either outline" in ns.q_wide.question
+    code = _cells_before("12a_lines", "widetbl", kinds=("code",))
+    asked = code.split("q_wide = PredictPixels(")[1].split("answer=")[0]
+    assert "no centre lies closer than " in asked and "{margin:.2f} px to either outline" in asked
