@@ -846,19 +846,26 @@ def test_readout_in_front_of_the_near_plane_says_clipped():
         assert len(values) == 12 and min(values) >= 0, table  # value, step, count x 4
 
 
-def test_diamond_explorer_outlines_one_row_either_side_of_the_line():
+def test_diamond_explorer_outlines_only_the_pixels_the_line_crosses():
     """Review r83 12a-4: the walk outlined all 5 candidates of every column, rows 0-5 of the
-    6-row grid at the start. Now each walked column outlines the pixels lit, ended in or
-    decided by a tie, and the missed ones within one row of the line's row at its centre."""
+    6-row grid at the start; review r88: one row either side of the line still outlined rows
+    0-2 in columns 0-2. Now each walked column outlines the pixels lit, ended in or decided by
+    a tie, and the missed ones whose square the segment crosses inside that column."""
     walk = call_js(LINES, [("diamondSteps", [[0.5, 0.5], [8.5, 4.5], 10, 6])])[0]
     kept = call_js(LINES, [("nearCandidates", [walk, s]) for s in walk["steps"]])
     for s, near in zip(walk["steps"], kept, strict=True):
-        base = int(np.floor(s["minor"]))
-        assert all(abs(c["row"] - base) <= 1 for c in near)
+        # the segment (slope 1/2) inside column j runs from y = (j + 1)/2 - 1/4 to + 1/4,
+        # clipped to x >= 0.5 at p0, and stops at p1 (8.5, 4.5) in column 8
+        j = s["major"]
+        y0 = 0.5 + (max(j, 0.5) - 0.5) / 2
+        y1 = 0.5 + (min(j + 1, 8.5) - 0.5) / 2
+        crossed = {r for r in range(6) if r < y1 and y0 < r + 1}
+        assert {c["row"] for c in near} <= crossed | {c["row"] for c in near if c["tie"]}
+        assert {c["row"] for c in near if c["state"] == 0 and not c["tie"]} <= crossed
         rest = [c for c in s["cands"] if c not in near]
         assert all(c["state"] == 0 and not c["tie"] for c in rest)
-        assert len(near) <= 3 < len(s["cands"]) or len(s["cands"]) <= 3
-    assert sum(len(n) for n in kept) < sum(len(s["cands"]) for s in walk["steps"])
+        assert len(near) <= 2
+    assert [sorted(c["row"] for c in n) for n in kept[:3]] == [[0], [0, 1], [1]]
 
 
 def test_end_point_labels_keep_off_the_lit_squares_where_they_can():

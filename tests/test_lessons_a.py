@@ -272,6 +272,19 @@ def test_01_predictions_and_the_stepping_failure_rates():
                       if "q_flat = PredictPixels(" in "".join(c["source"]))  # fmt: skip
     question = asked_cell.split("q_flat = PredictPixels(")[1].split("answer=")[0]
     assert "1/256" in question and "through the centre" not in question
+    # review r89 01: the prompt points to section 4's crossing formula and says how a pixel
+    # outside the three rows counts; the held cell ties the near-flat case back to the split
+    assert "crossing formula u(v) of section 4" in question
+    assert "a pixel of another row counts as one too many" in question
+    assert 2.5 < ns.near_u4 < 2.5 + 1 / 256
+    # review r89 01-1: the stars of the span table are the rows the text names
+    starred = [
+        i for i, (xl, xr, *_) in ns.ends.items() if (xl - 0.5) % 1 == 0 or (xr - 0.5) % 1 == 0
+    ]
+    assert starred == [1, 5, 9, 13]
+    assert "rows 5, 9 and 13, the row q_row asked about, and row 1" in " ".join(
+        " ".join(_cells("01_span_tables", "markdown")).split()
+    )
     # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
     # filled anyway
     assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))

@@ -1884,3 +1884,20 @@ def test_10_q_small_method_held_and_q_hiz_one_try():
     assert not between
     hiz = next(t for t in text if "q_hiz = PredictPixels(" in t)
     assert '"One try."' in hiz
+
+
+@pytest.mark.notebook
+def test_07_review_r89_subpixel_ties_and_the_order_shown():
+    """Review r89 07-2, 07-5: the sub-pixel centres lost and gained by rounding are ties (a
+    rounded edge exactly through a centre), the cell prints which and the text says so; the
+    six-orders figure names the order it shows."""
+    import json
+
+    ns = lesson("07_hard_cases")
+    assert ns.sub_lost == [[2, 3], [5, 5]] and ns.sub_gained == [[9, 9]]
+    assert ns.sub_ties == [(1, [2, 3]), (4, [9, 9])]
+    assert ns.shown_order == (0, 2, 1)
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    text = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
+                             if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "Both the first's loss and the fourth's gain are **ties**" in text

@@ -259,13 +259,22 @@ function mount(el, data, host) {
 }
 
 // The candidates of a walked column (row) worth outlining: those the rule lit, ended in or
-// decided by a tie, and the missed ones within one row (column) of the line's row at the
-// column's centre. Those farther out are tested (SPREAD) but can never be met, so outlining
-// them showed more of the grid than the walk looks at (review r83 12a-4).
+// decided by a tie, and the missed ones whose pixel the segment passes through inside that
+// column (a diamond the line misses although it crosses the pixel). The others are tested
+// (SPREAD) but the line never comes near them: outlining them showed more of the grid than
+// the rule looks at (reviews r83 12a-4, r88: one row either side still did).
 export function nearCandidates(walk, s) {
-  const base = Math.floor(s.minor);
+  const [ax, ot] = walk.xMajor ? [0, 1] : [1, 0];
+  const { a, b, unit } = walk;
+  // the part of the segment inside the column, and its extent along the minor axis
+  const lo = Math.max(s.major * unit, Math.min(a[ax], b[ax]));
+  const hi = Math.min((s.major + 1) * unit, Math.max(a[ax], b[ax]));
+  const at = (u) => a[ot] + ((u - a[ax]) * (b[ot] - a[ot])) / (b[ax] - a[ax]);
+  const [m0, m1] = [Math.min(at(lo), at(hi)), Math.max(at(lo), at(hi))];
+  const crossed = (m) => (m0 === m1 ? m * unit <= m0 && m0 < (m + 1) * unit
+    : m * unit < m1 && m0 < (m + 1) * unit);
   return s.cands.filter((c) => c.state !== MISSED || c.tie ||
-    Math.abs((walk.xMajor ? c.row : c.col) - base) <= 1);
+    crossed(walk.xMajor ? c.row : c.col));
 }
 
 function drawLineGrid(ctx, W, H, cell, m, toPx) {
