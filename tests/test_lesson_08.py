@@ -159,3 +159,23 @@ def test_lesson_08_review_r81_section_7_text_matches_its_chart(ns):
     assert all((min(v), max(v)) == (4, 256) for k, v in counts.items() if "standard" not in k)
     assert (min(counts["standard, axis edges"]), max(counts["standard, axis edges"])) == (2, 16)
     assert "$S$ = 4 to 256; the standard patterns" in text and "2 to 16)" in text
+
+
+def test_lesson_08_review_r92_crawling_edge_and_vertex_names(ns):
+    """Review r92 08-1/2/3: with one sample a few pixels switch per frame, never a row (the
+    cell prints the counts); the 16-sample tail is dim, not pale; q_centre names the vertices
+    v1, v2, v3 and the edge E12, as CONVENTIONS and the figure under it do."""
+    import json
+    from pathlib import Path
+
+    assert 0 < max(ns.switched) < ns.W // 2 and min(ns.switched) >= 1
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    crawl = " ".join(next(s for s in sources if s.startswith("### Crawling edges")).split())
+    assert "whole row" not in crawl and "pale" not in crawl and "dim" in crawl
+    (ask,) = [s for s in sources if "q_centre = Predict(" in s]
+    assert "vertex 0" not in ask and "vertex 2" not in ask
+    assert "the edge E12" in ask and "v3 lies" in ask
+    assert not any("where it is written" in s for s in sources)  # review r92 08-7: "source"

@@ -1080,6 +1080,32 @@ def test_08_sampling_explorer_and_inspector():
         inspector.close()
 
 
+def test_08_inspector_numbers_sit_inside_the_pixel_square():
+    """Review r92 (08, PixelInspector): at 16 samples "12", "13" and "15" sat outside the
+    pixel square, away from their dots; every pattern's numbers now sit inside it."""
+    import teachraster as tr
+    from teachraster.widgets import PixelInspector
+
+    inspector = PixelInspector(tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]]), 20, 14,
+                               row=3, col=13, backend="image")  # fmt: skip
+    try:
+        for name in inspector.pattern.options:
+            inspector.pattern.value = name
+            labels = inspector.pixel.labels
+            if len(labels) <= 4:
+                continue
+            fig = inspector.pixel.square.axes.figure
+            fig.canvas.draw()
+            renderer = fig.canvas.get_renderer()
+            sq = inspector.pixel.square.get_window_extent(renderer)
+            for label in labels:
+                box = label.get_window_extent(renderer)
+                x, y = (box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2
+                assert sq.x0 <= x <= sq.x1 and sq.y0 <= y <= sq.y1, (name, label.get_text())
+    finally:
+        inspector.close()
+
+
 # -- 11 and 12: predictions -------------------------------------------------------------------------
 @pytest.mark.parametrize("name", ["11_debugging_a_frame", "12a_lines", "12b_blending"])
 def test_11_12_predictions_hide_their_answer_and_some_are_answered_on_a_figure(name):
@@ -1375,9 +1401,8 @@ def test_09_quads_closed_form_and_predictions():
 
     assert ns.rho_switch == pytest.approx(2**1.5, abs=1e-9) and read(ns.lam_switch) == 2
     assert abs(3 - ns.rho_switch) > ns.tol_q and read(1.5) == 1
-    # review r81 09 q_level: the question gives trilinear's weights and says GL's nearest level
-    # is the one trilinear weights more (the finer on a tie), so the switch is reasoned: true
-    # of the sampler at every λ > 0
+    # GL's nearest level is the one trilinear weights more (the finer on a tie), the
+    # explanation's claim: true of the sampler at every λ > 0
     for lam in np.linspace(0.01, 4.99, 250):
         heavier = int(np.floor(lam)) + int(lam % 1 > 0.5)
         assert read(lam) == heavier, lam
@@ -1387,9 +1412,10 @@ def test_09_quads_closed_form_and_predictions():
     ask = next(
         "".join(c["source"]) for c in cells if "q_level = PredictPoint" in "".join(c["source"])
     )
-    assert (
-        "frac(λ)" in ask and "trilinear weights more" in ask and "takes one of the two" not in ask
-    )
+    # review r92 09 q_level: the prompt no longer states the rule's outcome ("the one trilinear
+    # weights more" gave λ = 1.5 away): it says the rule rounds λ and asks for the ρ
+    assert "frac(λ)" in ask and "rounding λ" in ask and "at what ρ?" in ask
+    assert "weights more" not in ask and "takes one of the two" not in ask
     # the probes question: its answer is the measured gap, in the last bucket, whose label
     # names the bucket's own bound
     assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
@@ -1843,6 +1869,70 @@ def test_10_r82_figures_and_words():
     nine = next("".join(c["source"]) for c in cells["cells"] if "## 9." in "".join(c["source"]))
     for head in ("**llvmpipe's binner.**", "**Tile-based deferred**", "**Desktop GPUs**"):
         assert f"\n\n{head}" in nine, head
+
+
+def _floor_uv_exact(tilt, width, height, repeats, distance, below):
+    """uv at a window point (x right, y down, pixels) of FootprintExplorer's floor, in float64
+    from first principles: the ray through the point meets the tilted square's plane (a
+    pinhole of fov 60° looking down -z; the zoom fits the square's height to 0.92 of the
+    frame)."""
+    import math
+
+    t, f, aspect = math.radians(tilt), 1 / math.tan(math.radians(30.0)), width / height
+    p0, ex, es = np.array([0, -below, -distance]), np.array([1.0, 0, 0]), np.array(
+        [0, math.cos(t), -math.sin(t)])  # fmt: skip
+    corners = [p0 + x * ex + s * es for x in (-1, 1) for s in (0, 2)]
+    ndc = np.array([[f / aspect * p[0] / -p[2], f * p[1] / -p[2]] for p in corners])
+    lo, hi = ndc.min(axis=0), ndc.max(axis=0)
+    scale, centre = 2 * 0.92 / (hi - lo)[1], (lo + hi) / 2
+    normal = np.cross(ex, es)
+
+    def uv(x, y):
+        nx, ny = (2 * x / width - 1) / scale + centre[0], (1 - 2 * y / height) / scale + centre[1]
+        ray = np.array([nx * aspect / f, ny / f, -1.0])
+        hit = ray * (p0 @ normal) / (ray @ normal) - p0
+        return np.array([(hit @ ex + 1) / 2, 1 - (hit @ es) / 2]) * repeats
+
+    return uv
+
+
+def test_09_footprint_explorer_floor_is_long_in_depth_as_an_exact_jacobian():
+    """Review r92 09-1: the explorer's floor showed footprints long ACROSS near the viewer
+    (the eye high above the near edge of a small square), against §4 and §6. Its floor is now
+    seen from low down: down the middle column every footprint is longer in depth than across,
+    and the probe count never falls walking up from the nearest row; its derivatives are the
+    quad differences of an exact float64 ray-plane computation; and the caption says so."""
+    import json
+
+    from teachraster.plotting.footprint import footprint
+    from teachraster.widgets import FootprintExplorer
+    from teachraster.widgets.footprint_explorer import FLOOR_BELOW, FLOOR_DISTANCE
+
+    ex = FootprintExplorer(tilt=80)
+    d = ex.data
+    w, h, col = d["width"], d["height"], d["width"] // 2
+    exact = _floor_uv_exact(80, w, h, d["repeats"], FLOOR_DISTANCE, FLOOR_BELOW)
+    rows = [r for r in range(h - 1, -1, -1) if d["uv"][r * w + col] is not None]  # near first
+    assert len(rows) > 0.8 * h  # the floor fills the frame's rows
+    probes = []
+    for r in rows:
+        i = r * w + col
+        fp = footprint(d["uv"][i], d["ddx"][i], d["ddy"][i], (d["texH"], d["texW"]))
+        assert np.hypot(*fp.axis_y) > np.hypot(*fp.axis_x), r  # in depth > across
+        probes.append(fp.probes)
+        r0, c0 = r & ~1, col & ~1  # the quad's upper-left pixel: coarse differences
+        at = exact(c0 + 0.5, r0 + 0.5)
+        np.testing.assert_allclose(d["ddx"][i], exact(c0 + 1.5, r0 + 0.5) - at, rtol=1e-5,
+                                   atol=1e-9)  # fmt: skip
+        np.testing.assert_allclose(d["ddy"][i], exact(c0 + 0.5, r0 + 1.5) - at, rtol=1e-5,
+                                   atol=1e-9)  # fmt: skip
+    assert probes == sorted(probes) and probes[-1] >= probes[0] + 2
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    live = next(i for i, t in enumerate(text) if t.startswith("### Any pixel's footprint, live"))
+    caption = " ".join(text[live].split())
+    assert "longer in depth" in caption and "rises" in caption
+    assert "footprint(" in text[live + 2]  # the cell that prints the walk
 
 
 def test_09_footprint_explorer_follows_the_static_footprints():

@@ -397,3 +397,35 @@ def test_mip_level_refuses_bad_shapes():
         tr.mip_level([0.1, 0.1], [0.1, 0.1], (4,))
     with pytest.raises(ValueError, match="ddx"):
         tr.mip_level([0.1], [0.1], (4, 4))
+
+
+def test_probe_count_ignores_rounding_on_a_face_on_square():
+    """Review r92 09-2: a face-on square's footprints are square only to ~15 digits
+    (P_max / P_min = 1 + 8e-15 on half its pixels); the ceiling must give 1 probe there, so
+    that anisotropic equals trilinear, while a ratio of exactly 2 (and a millionth over 1)
+    still gives 2."""
+    from teachraster.pipeline.texturing.texture_filters import anisotropic_probes
+    from teachraster.widgets.textured import CORNER_UV, TRIANGLES, plane_clip
+
+    camera = tr.Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0)
+    uv = np.broadcast_to(CORNER_UV[TRIANGLES] * 6, (2, 3, 2))
+    frame = tr.render(plane_clip(0.0, camera, 4 / 3), 160, 120, attrs=uv, derivatives=True)
+    cov = frame.coverage
+    dx, dy = frame.ddx[..., :2][cov], frame.ddy[..., :2][cov]
+    n, lam, _ = anisotropic_probes(dx, dy, 64, 64, 16)
+    px, py = np.hypot(*(dx * 64).T), np.hypot(*(dy * 64).T)
+    assert (np.maximum(px, py) / np.minimum(px, py) > 1).any()  # the rounding is there
+    assert (n == 1).all() and (lam > 0).all()  # minified, yet one probe at every pixel
+    tex = np.random.default_rng(3).uniform(size=(64, 64))
+    np.testing.assert_array_equal(
+        tr.sample(tex, frame.attrs[cov], "anisotropic", ddx=dx, ddy=dy),
+        tr.sample(tex, frame.attrs[cov], "trilinear", ddx=dx, ddy=dy),
+    )
+    two = anisotropic_probes(
+        np.array([[4 / 64, 0.0], [4 / 64, 0.0]]),
+        np.array([[0.0, 2 / 64], [0.0, 4 / 64 / (1 + 1e-6)]]),
+        64,
+        64,
+        16,
+    )
+    assert two[0].tolist() == [2, 2]  # exactly 2, and 1 + 1e-6

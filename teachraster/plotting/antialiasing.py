@@ -567,7 +567,9 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
     The pixel's sides are obstacles too, and every box keeps ``NUMBER_GAP`` points from the
     next: with 16 random samples "13" and "11" sat on the pixel's top side and "12 9" touched
     (review r26, lesson 08 c34). The triangle's edge ``lines`` are obstacles too (review
-    r29, 08-2).
+    r29, 08-2). A number whose centre lies outside the pixel square counts half a
+    collision: the inside wins wherever it is free (review r92: "12", "13" and "15" sat
+    outside the square at 16 samples).
     """
     fig = ax.figure
     to_pt = 72.0 / fig.dpi
@@ -600,6 +602,10 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
                 box = (x + ox - w / 2, y + oy - h / 2, x + ox + w / 2, y + oy + h / 2)
                 inside = box[0] >= x_lo and box[2] <= x_hi and box[1] >= y_lo and box[3] <= y_hi
                 hits = sum(_overlap(box, b) for b in blocked) + (0 if inside else 10)
+                # outside the pixel square a number is read with no dot (review r92, 08):
+                # a half penalty, less than any collision, more than none
+                own = sx0 <= x + ox <= sx1 and sy0 <= y + oy <= sy1
+                hits += 0 if own else 0.5
                 hits += _nearer_dot(pts, s, x + ox, y + oy)
                 on_line = Bbox.from_extents(*(np.array(box) * to_px))
                 hits += sum(p.intersects_bbox(on_line, filled=False) for p in paths)

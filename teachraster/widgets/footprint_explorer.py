@@ -24,15 +24,26 @@ from ..pipeline.texturing.texture import checkerboard, sample
 from .explorable import Explorable, esm_source
 from .textured import CORNER_UV, TRIANGLES, plane_clip
 
+#: Where the floor lies: its near edge this far ahead of the eye and this far below it, so
+#: the eye is low (every pixel's view ray meets the floor at less than 45°, at 27° at the
+#: near edge when flat) and the footprint is longer in depth than across at every pixel, and
+#: more so with distance, as on lesson 09's big floor. (The 2 x 2 square of the
+#: FilterExplorer, lesson 04's defaults 0.6 and 1.5, is seen from above near its near edge:
+#: there the footprint is long across.)
+FLOOR_DISTANCE, FLOOR_BELOW = 1.2, 0.6
+
 
 def floor_scene(width: int, height: int, tilt: float, repeats: int, texels: int = 64) -> dict:
     """The data the page needs: the rendered floor, per pixel uv and derivatives (None where
     the floor is not; 8 significant digits), the texture's grey values and its number of
-    levels."""
+    levels. The floor is :func:`plane_clip`'s square with the eye low above it
+    (:data:`FLOOR_DISTANCE`, :data:`FLOOR_BELOW`), its depth filling the frame's height and
+    its sides running off the screen."""
     camera = Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0, near=0.05,
                     far=50.0)  # fmt: skip
     texture = checkerboard(8, texels)
-    clip = plane_clip(tilt, camera, width / height)
+    clip = plane_clip(tilt, camera, width / height, distance=FLOOR_DISTANCE, below=FLOOR_BELOW,
+                      fit="depth")  # fmt: skip
     uv = np.broadcast_to(CORNER_UV[TRIANGLES] * repeats, (2, 3, 2))
     frame = render(clip, width, height, attrs=uv, derivatives=True)
     image = sample(texture, frame.attrs, "trilinear", ddx=frame.ddx, ddy=frame.ddy)
@@ -62,7 +73,8 @@ class FootprintExplorer(Explorable):
     repeats : int
         How often the 64-texel checkerboard repeats across the floor.
     pixel : (row, col), optional
-        The pixel whose footprint is shown first (default: one far away, where it is long).
+        The pixel whose footprint is shown first (default: the farthest row's, where the
+        footprint is longest in depth).
 
     Attributes
     ----------

@@ -48,7 +48,7 @@ FIT = 0.92
 
 
 def plane_clip(tilt_deg: float, camera: Camera, aspect: float, *, distance: float = 0.6,
-               below: float = 1.5) -> np.ndarray:  # fmt: skip
+               below: float = 1.5, fit: str = "square") -> np.ndarray:  # fmt: skip
     """(2, 3, 4) clip-space triangles of the square tilted ``tilt_deg`` away from the camera.
 
     The square (side 2) stands like a wall ``distance`` in front of a camera that looks
@@ -59,15 +59,20 @@ def plane_clip(tilt_deg: float, camera: Camera, aspect: float, *, distance: floa
     The projection is then zoomed and shifted in screen space so the square fills the
     frame at every tilt: an off-centre frustum (glFrustum with asymmetric bounds), which
     changes x and y but keeps every w, so how strong the perspective is depends only on
-    where the square is.
+    where the square is. ``fit="depth"`` fits the square's near-to-far extent (the frame's
+    height) only: its sides may run off the screen, so a floor seen at a grazing angle still
+    fills the frame's rows.
     """
+    if fit not in ("square", "depth"):
+        raise ValueError(f"fit must be 'square' or 'depth', got {fit!r}")
     t = math.radians(tilt_deg)
     x, y = CORNERS[:, 0], 2.0 * CORNERS[:, 1]
     world = np.stack([x, y * math.cos(t) - below, -distance - y * math.sin(t)], axis=1)
     clip = camera.clip(world, aspect)
     ndc = clip[:, :2] / clip[:, 3:]
     lo, hi = ndc.min(axis=0), ndc.max(axis=0)
-    scale = 2 * FIT / float(np.max(hi - lo))  # one scale for x and y: squares stay square
+    extent = hi - lo if fit == "square" else (hi - lo)[1:]
+    scale = 2 * FIT / float(np.max(extent))  # one scale for x and y: squares stay square
     centre = (lo + hi) / 2
     # x_ndc' = scale * (x_ndc - c)  <=>  x_clip' = scale * (x_clip - c * w)
     clip[:, :2] = scale * (clip[:, :2] - centre * clip[:, 3:])

@@ -53,6 +53,14 @@ MIPMAP_FILTERS = {
 #: and on most GPUs): a larger ``max_anisotropy`` is clamped to it, as GL clamps the parameter.
 MAX_ANISOTROPY = 16
 
+#: How far below an integer the ratio P_max / P_min may lie and still count as that integer
+#: of probes (relative, in units of float64's epsilon): a face-on square's two axes, each
+#: from differences of interpolated uv across one pixel, differ by rounding alone, about
+#: epsilon times the image's width in pixels (118 epsilon measured on a 512-pixel-wide
+#: face-on square), and the ceiling must not turn that into a second probe. 4096 epsilon
+#: (9e-13) keeps a millionth of a real stretch a second probe.
+ANISOTROPY_ROUNDING = 4096 * np.finfo(float).eps
+
 
 def _as_derivative(name: str, value) -> np.ndarray:
     arr = as_real(name, value)  # NaN passes: an uncovered pixel's derivative
@@ -191,7 +199,8 @@ def anisotropic_probes(dx, dy, w: int, h: int, max_anisotropy) -> tuple:
     pmax, pmin = np.maximum(px, py), np.minimum(px, py)
     major = np.where((px >= py)[:, None], dx, dy)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        ratio = np.ceil(pmax / pmin)
+        # ⌈P_max / P_min⌉, blind to rounding noise: a ratio of 1 + 8e-15 is 1 probe, not 2
+        ratio = np.ceil(pmax / pmin * (1.0 - ANISOTROPY_ROUNDING))
     # pmin = 0 is infinitely anisotropic. Where the texture is magnified (pmax <= 1, λ <= 0)
     # there is nothing to average: one probe at the centre, i.e. bilinear on level 0. The
     # probe count is clamped to MAX_ANISOTROPY whatever max_anisotropy asks (GL clamps it).

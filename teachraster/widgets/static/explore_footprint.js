@@ -36,7 +36,9 @@ export function footprintOf(uv, ddx, ddy, w, h, q, maxAnisotropy = 16) {
   const lam = Math.max(log2Length(ddx, w, h), log2Length(ddy, w, h));
   const [pmax, pmin] = [Math.max(px, py), Math.min(px, py)];
   let probes = 1;
-  if (pmax > 1) probes = Math.min(pmin > 0 ? Math.ceil(pmax / pmin) : maxAnisotropy, maxAnisotropy);
+  // ⌈P_max / P_min⌉ blind to rounding noise, as the engine's ANISOTROPY_ROUNDING (4096 ε)
+  const ratio = (pmax / pmin) * (1 - 4096 * Number.EPSILON);
+  if (pmax > 1) probes = Math.min(pmin > 0 ? Math.ceil(ratio) : maxAnisotropy, maxAnisotropy);
   const major = px >= py ? ax : ay;
   const probeCentres = [];
   for (let i = 1; i <= probes; i++) {
@@ -380,7 +382,7 @@ export function footprintText(state, fp, reading) {
       `${t > 0 ? ` (weight ${fmt(t, 2)} on ${l1})` : " (one level)"} over the orange square of ` +
       `side ρ, fetching 2 × 2 texels of each (dashed: <span style="color:#CC79A7">level ` +
       `${l0}</span>${t > 0 ? `, <span style="color:#009E73">level ${l1}</span>` : ""}); anisotropic takes ${fp.probes} probe${fp.probes > 1 ? "s" : ""} at ` +
-      `λ = ${fmt(fp.probeLam, 3)}.`);
+      `λ = ${fp.probeLam.toFixed(2)}.`);
   } else if (state.pixel) {
     parts.push(`Pixel (row ${state.pixel[0]}, col ${state.pixel[1]}) is not on the floor.`);
   }
