@@ -1415,3 +1415,40 @@ def test_filter_status_line_says_computing_while_a_picture_is_pending():
     assert "ring in the error panel marks the worst pixel" in title
     assert title.startswith(PROJECTOR_CSS) and "tr-projector" in ex.widget._dom_classes
     ex.close()
+
+
+def test_half_plane_player_at_4_samples_counts_and_greys_as_rasterize_does():
+    """Review r93 02-1: at 4 samples lesson 02's player ended "70 pixels covered" where
+    ``tr.rasterize(..., samples=4)`` gives 83 pixels with a covered sample, and pixel (4, 10)
+    was grey "rejected by test 1" under a covered sample dot. The captions read the recorded
+    sample tests: every pixel step says how many of its samples are covered, a pixel with a
+    covered sample is never greyed, and the last step counts what ``rasterize`` covers."""
+    import re
+
+    tri = tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]])  # lesson 02's
+    p = FillPlayer(tri, 16, 16, method="halfplane", backend="image")
+    try:
+        p.samples.value = "4 standard (rotated grid)"
+        msaa = tr.rasterize(tri, 16, 16, samples=4)
+        trace = p.trace
+        p.show_step(-1)
+        shown = re.match(r"([\d,]+) pixels with a covered sample \(([\d,]+) with their centre",
+                         p.caption_text)  # fmt: skip
+        assert shown, p.caption_text
+        assert int(shown[1]) == msaa.coverage.sum() == 83  # was "70 pixels covered"
+        assert int(shown[2]) == tr.rasterize(tri, 16, 16).coverage.sum() == 70
+        assert not (trace.rejected_at(-1) & msaa.coverage).any()
+        assert (trace.rejected_at(-1) | msaa.coverage).sum() == trace.bbox.size
+        k = trace.first_work_step + (4 - trace.bbox.row0) * trace.bbox.shape[1] + 10
+        k -= trace.bbox.col0
+        p.show_step(k)
+        assert (trace.step(k).row, trace.step(k).col) == (4, 10)
+        assert "centre outside: rejected by test 1" in p.caption_text
+        assert p.caption_text.endswith("its 4 samples: 1 covered, the pixel is shaded (MSAA)")
+        assert not trace.rejected_at(k)[4, 10] and "centre covered" in keyed(p.view)
+        for step in trace:  # every pixel step's count is the recorded samples'
+            if step.kind == "pixel":
+                n = int(msaa.sample_coverage[step.row, step.col].sum())
+                assert f"its 4 samples: {n or 'none'} covered" in step.caption, step.caption
+    finally:
+        p.close()
