@@ -1452,3 +1452,30 @@ def test_half_plane_player_at_4_samples_counts_and_greys_as_rasterize_does():
                 assert f"its 4 samples: {n or 'none'} covered" in step.caption, step.caption
     finally:
         p.close()
+
+
+def test_editor_without_comparison_shows_no_w_sliders_and_keeps_v2_label_inside():
+    """Review r93 02-6/9/9b: in lesson 02 (``comparison=False``) three w sliders changed
+    nothing on show and the header spoke of "the upper figure"; "v2" at x = 14.5 of 16
+    crossed the right spine; in span mode the two parts lay under the covered pixels."""
+    from ipywidgets import FloatLogSlider
+
+    from teachraster.widgets import TriangleEditor
+
+    tri = tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]])  # lesson 02's
+    e = TriangleEditor(tri, 16, 16, method="halfplane", probe=[7.5, 7.5], comparison=False,
+                       backend="image")  # fmt: skip
+    try:
+        sliders = [w for col in e.widget.children[1].children for w in col.children]
+        assert not any(isinstance(w, FloatLogSlider) for w in sliders) and len(e.w) == 3
+        title = e.widget.children[0].value
+        assert "upper figure" not in title and "Drag a vertex in the figure" in title
+        e.fig.canvas.draw()
+        renderer = e.fig.canvas.get_renderer()
+        right = e.view.ax.get_window_extent(renderer).x1
+        assert e.view.triangle.labels[1].get_window_extent(renderer).x1 < right
+        e.method.value = "span"
+        ax_z = e.view.coverage.image.get_zorder()
+        assert e.view.split.flat_top.get_zorder() > ax_z and e.view.split.flat_top.get_hatch()
+    finally:
+        e.close()
