@@ -144,8 +144,9 @@ def test_canvas_text_reads_12_px_in_the_column_at_1024_px():
     assert cell == 42
     (size,) = call_js(EDGES, [("signSize", [cell, width])])
     assert size * 585 / width >= 12 + 1  # the signs a little above the floor
-    assert size * 585 / width >= 18  # and on a projector (was 14.8 px in a 585-px column)
-    assert 2 * 0.28 * cell + 0.6 * size <= cell  # three monospace glyphs inside the pixel
+    assert size * 585 / width >= 16  # and on a projector (was 14.8 px in a 585-px column)
+    assert 0.62 * size <= 0.3 * cell  # each glyph within its gap: "+−+" did not run together
+    assert 2 * 0.3 * cell + 0.6 * size <= cell  # three monospace glyphs inside the pixel
     for parts in (EDGES, LINES):
         for line in esm_source(*parts).splitlines():
             if re.search(r"\.font = ", line):
