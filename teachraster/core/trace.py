@@ -314,7 +314,9 @@ class FillTrace:
         """(height, width) bool: pixels tested and rejected once steps 0..k have run.
 
         Half-planes test every pixel they do not cover, tiles reject them by blocks or test
-        them in the smallest partial blocks; for span tables this is all False.
+        them in the smallest partial blocks; for span tables this is all False. With several
+        samples a pixel with a covered sample is not rejected (it is shaded), whatever its
+        centre.
         """
         k = self.index(k)
         if self.halfplane is None and self.blocks is None:
@@ -504,8 +506,9 @@ class FillTrace:
                     work=i)  # fmt: skip
 
     def _samples_verdict(self, row: int, col: int) -> str:
-        """What the recorded sample tests decided for one pixel ("" with one sample): the
-        centre's verdict alone contradicted the covered sample dots (review r93 02-1)."""
+        """What the recorded sample tests (``samples.coverage``) decided for one pixel of a
+        multisampled fill: the centre's verdict alone contradicted the covered sample dots
+        (review r93 02-1)."""
         hits = self.samples.coverage[row, col]
         k, s = int(np.count_nonzero(hits)), len(hits)
         if k == 0:
