@@ -137,11 +137,16 @@ def test_canvas_text_reads_12_px_in_the_column_at_1024_px():
     sizes = call_js(EDGES, [("readablePx", [px, w]) for w in widths for px in (11, 13, 15)])
     for (w, px), size in zip([(w, px) for w in widths for px in (11, 13, 15)], sizes):
         assert size >= px and size * min(1.0, 585 / w) >= 12 - 1e-9, (w, px, size)
-    # lesson 02's 16 x 14 grid: 37-px cells on a 634-px canvas
-    cell, width = min(600 // 16, 520 // 14), 30 + 16 * 37 + 12
+    # lesson 02's 16 x 14 grid: 42-px cells on a 714-px canvas (review r93 02-4: 37-px cells
+    # on a 634-px one drew the signs 9-10 px high)
+    cell = min(44, 680 // 16, 600 // 14)
+    width = 30 + 16 * cell + 12
+    assert cell == 42
     (size,) = call_js(EDGES, [("signSize", [cell, width])])
     assert size * 585 / width >= 12 + 1  # the signs a little above the floor
-    assert 2 * 0.28 * cell + 0.6 * size <= cell  # three monospace glyphs inside the pixel
+    assert size * 585 / width >= 16  # and on a projector (was 14.8 px in a 585-px column)
+    assert 0.62 * size <= 0.3 * cell  # each glyph within its gap: "+−+" did not run together
+    assert 2 * 0.3 * cell + 0.6 * size <= cell  # three monospace glyphs inside the pixel
     for parts in (EDGES, LINES):
         for line in esm_source(*parts).splitlines():
             if re.search(r"\.font = ", line):

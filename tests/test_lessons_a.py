@@ -814,6 +814,16 @@ def test_02_player_and_editor():
     player.slider.value = k
     assert player.caption_text == ns.trace.caption(k)
     assert (ns.trace.step(k).row, ns.trace.step(k).col) == (box.row0 + 5, box.col0 + 6)
+    # review r93 02-1: at 4 samples the last step counts what rasterize covers (83, not the
+    # 70 centres), and no pixel with a covered sample is greyed as rejected
+    player.samples.value = "4 standard (rotated grid)"
+    player.show_step(-1)
+    msaa = tr.rasterize(ns.tri, ns.W, ns.H, samples=4).coverage
+    assert player.caption_text.startswith(f"{msaa.sum()} pixels with a covered sample (70 ")
+    assert not (player.trace.rejected_at(-1) & msaa).any()
+    # review r93 02-2: the player is the serial reference loop, not "how a GPU fills"
+    assert "serial reference loop" in player.widget.children[0].value
+    assert "How a GPU fills" not in player.widget.children[0].value
     player.close()
     editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image",
                             probe=ns.inside_point, comparison=False)  # fmt: skip
@@ -855,6 +865,43 @@ def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
     expected[k, k] = True  # (2.5, 2.5) .. (13.5, 13.5); the corner (14.5, 14.5) to neither
     assert np.array_equal(ns.upper_owns, expected)
     assert ns.diagonal_all.sum() == 13
+    # review r93 02-3: exactly one triangle of a mesh owns the corner (14.5, 14.5): the upper
+    # triangle of the square below-right (not "the neighbours to the right and below")
+    ask_text = re.sub(r"\s+", " ", text[ask])
+    assert "neighbours to the right and below do" not in ask_text
+    assert "the <i>upper</i> triangle of the square diagonally " in ask_text
+    owners = []
+    for dx, dy in [(0, 0), (12, 0), (0, 12), (12, 12)]:  # this square and its neighbours
+        x, y = 2.5 + dx, 2.5 + dy
+        halves = {"upper": [[x, y], [x + 12, y], [x + 12, y + 12]],
+                  "lower": [[x, y], [x + 12, y + 12], [x, y + 12]]}  # fmt: skip
+        for half, t in halves.items():
+            if tr.rasterize(tr.Triangle(t), 32, 32).coverage[14, 14]:
+                owners.append((dx, dy, half))
+    assert owners == [(12, 12, "upper")]
+
+
+@pytest.mark.notebook
+def test_02_stepping_prediction_is_asked_before_its_answer_is_printed():
+    """Review r93 02-12: a numeric Predict on Pineda's stepping, before the cell that prints
+    the step; Check disabled until a number is typed; its answer is the printed step."""
+    from teachraster.widgets import Predict
+
+    ns = lesson("02_half_planes")
+    code = _cells("02_half_planes", "code")
+    ask = next(i for i, t in enumerate(code) if "q_step = Predict(" in t)
+    shows = next(i for i, t in enumerate(code) if "a pixel right" in t)
+    assert ask < shows and code[shows].startswith("q_step.hold()")
+    assert ns.step_px * 256**2 == ns.step_right == -294_912
+    cells = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())["cells"]
+    cell = next(c for c in cells if "q_step = Predict(" in "".join(c["source"]))
+    assert cell["metadata"] == {"jupyter": {"source_hidden": True}, "tags": ["hide-input"]}
+    q = Predict("E12 a pixel right?", answer=ns.step_px, headless=False)
+    assert q.check.disabled
+    q.control.value = str(ns.step_px)
+    assert not q.check.disabled
+    q.check.click()
+    assert q.correct
 
 
 @pytest.mark.notebook

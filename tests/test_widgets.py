@@ -1415,3 +1415,67 @@ def test_filter_status_line_says_computing_while_a_picture_is_pending():
     assert "ring in the error panel marks the worst pixel" in title
     assert title.startswith(PROJECTOR_CSS) and "tr-projector" in ex.widget._dom_classes
     ex.close()
+
+
+def test_half_plane_player_at_4_samples_counts_and_greys_as_rasterize_does():
+    """Review r93 02-1: at 4 samples lesson 02's player ended "70 pixels covered" where
+    ``tr.rasterize(..., samples=4)`` gives 83 pixels with a covered sample, and pixel (4, 10)
+    was grey "rejected by test 1" under a covered sample dot. The captions read the recorded
+    sample tests: every pixel step says how many of its samples are covered, a pixel with a
+    covered sample is never greyed, and the last step counts what ``rasterize`` covers."""
+    import re
+
+    tri = tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]])  # lesson 02's
+    p = FillPlayer(tri, 16, 16, method="halfplane", backend="image")
+    try:
+        p.samples.value = "4 standard (rotated grid)"
+        msaa = tr.rasterize(tri, 16, 16, samples=4)
+        trace = p.trace
+        p.show_step(-1)
+        shown = re.match(r"([\d,]+) pixels with a covered sample \(([\d,]+) with their centre",
+                         p.caption_text)  # fmt: skip
+        assert shown, p.caption_text
+        assert int(shown[1]) == msaa.coverage.sum() == 83  # was "70 pixels covered"
+        assert int(shown[2]) == tr.rasterize(tri, 16, 16).coverage.sum() == 70
+        assert not (trace.rejected_at(-1) & msaa.coverage).any()
+        assert (trace.rejected_at(-1) | msaa.coverage).sum() == trace.bbox.size
+        k = trace.first_work_step + (4 - trace.bbox.row0) * trace.bbox.shape[1] + 10
+        k -= trace.bbox.col0
+        p.show_step(k)
+        assert (trace.step(k).row, trace.step(k).col) == (4, 10)
+        assert "centre outside: rejected by test 1" in p.caption_text
+        assert p.caption_text.endswith("its 4 samples: 1 covered, the pixel is shaded (MSAA)")
+        assert not trace.rejected_at(k)[4, 10] and "centre covered" in keyed(p.view)
+        for step in trace:  # every pixel step's count is the recorded samples'
+            if step.kind == "pixel":
+                n = int(msaa.sample_coverage[step.row, step.col].sum())
+                assert f"its 4 samples: {n or 'none'} covered" in step.caption, step.caption
+    finally:
+        p.close()
+
+
+def test_editor_without_comparison_shows_no_w_sliders_and_keeps_v2_label_inside():
+    """Review r93 02-6/9/9b: in lesson 02 (``comparison=False``) three w sliders changed
+    nothing on show and the header spoke of "the upper figure"; "v2" at x = 14.5 of 16
+    crossed the right spine; in span mode the two parts lay under the covered pixels."""
+    from ipywidgets import FloatLogSlider
+
+    from teachraster.widgets import TriangleEditor
+
+    tri = tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]])  # lesson 02's
+    e = TriangleEditor(tri, 16, 16, method="halfplane", probe=[7.5, 7.5], comparison=False,
+                       backend="image")  # fmt: skip
+    try:
+        sliders = [w for col in e.widget.children[1].children for w in col.children]
+        assert not any(isinstance(w, FloatLogSlider) for w in sliders) and len(e.w) == 3
+        title = e.widget.children[0].value
+        assert "upper figure" not in title and "Drag a vertex in the figure" in title
+        e.fig.canvas.draw()
+        renderer = e.fig.canvas.get_renderer()
+        right = e.view.ax.get_window_extent(renderer).x1
+        assert e.view.triangle.labels[1].get_window_extent(renderer).x1 < right
+        e.method.value = "span"
+        ax_z = e.view.coverage.image.get_zorder()
+        assert e.view.split.flat_top.get_zorder() > ax_z and e.view.split.flat_top.get_hatch()
+    finally:
+        e.close()

@@ -314,7 +314,9 @@ class FillTrace:
         """(height, width) bool: pixels tested and rejected once steps 0..k have run.
 
         Half-planes test every pixel they do not cover, tiles reject them by blocks or test
-        them in the smallest partial blocks; for span tables this is all False.
+        them in the smallest partial blocks; for span tables this is all False. With several
+        samples a pixel with a covered sample is not rejected (it is shaded), whatever its
+        centre.
         """
         k = self.index(k)
         if self.halfplane is None and self.blocks is None:
@@ -324,7 +326,11 @@ class FillTrace:
             # partial one cover all their pixels, inside the box or not (review r77 00-2)
             steps = self.block_steps
             return (steps >= 0) & (steps <= k) & ~self.image(self.covered, fill=False)
-        return self.image((self.visit_step <= k) & ~self.covered, fill=False)
+        rejected = self.image((self.visit_step <= k) & ~self.covered, fill=False)
+        if self.samples is not None:  # a pixel with a covered sample is shaded (MSAA), not
+            # rejected, though its centre is out (review r93 02-1: grey under a covered dot)
+            rejected &= ~self.samples.coverage.any(axis=2)
+        return rejected
 
     @cached_property
     def block_steps(self) -> np.ndarray | None:
@@ -494,8 +500,20 @@ class FillTrace:
         else:
             verdict = "all tests pass on the line of a zero-area triangle: not covered"
         text = f"pixel (row {row}, col {col}) at ({col + 0.5:g}, {row + 0.5:g}): "
+        if self.samples is not None:  # the verdict above is the centre's
+            verdict = "centre " + verdict + self._samples_verdict(row, col)
         return Step(k, "pixel", text + ", ".join(parts) + f" -> {verdict}", row=row, col=col,
                     work=i)  # fmt: skip
+
+    def _samples_verdict(self, row: int, col: int) -> str:
+        """What the recorded sample tests (``samples.coverage``) decided for one pixel of a
+        multisampled fill: the centre's verdict alone contradicted the covered sample dots
+        (review r93 02-1)."""
+        hits = self.samples.coverage[row, col]
+        k, s = int(np.count_nonzero(hits)), len(hits)
+        if k == 0:
+            return f"; its {s} samples: none covered, the pixel is not shaded"
+        return f"; its {s} samples: {k} covered, the pixel is shaded (MSAA)"
 
     def _interpolation_caption(self) -> str:
         n = int(np.count_nonzero(self.covered))
@@ -504,6 +522,11 @@ class FillTrace:
         names = list(self.pixel_affine)
         if self.pixel_depth is not None:
             names.append("depth z (affine)")
+        if not names and self.samples is not None:  # review r93 02-1: the count of the
+            # pixels shaded (any sample covered), as ``rasterize`` gives it, not the centres'
+            m = int(len(self.samples.eval_rows))
+            return (f"{m:,} pixels with a covered sample ({n:,} with their centre covered); "
+                    "no attributes to interpolate")  # fmt: skip
         if not names:
             return f"{n:,} pixels covered; no attributes to interpolate"
         how = {

@@ -533,7 +533,10 @@ class FillView:
             return entries + self._sample_entries(trace, coloured, setup=self._bold_dots)
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
-        entries = [None] * ValueBar.LINES if coloured else [("covered", c["fill"], c["fill"])]
+        # with samples the blue is the centre's pass; a pixel shaded by a sample alone shows
+        # its covered dot (review r93 02-1)
+        covered = "covered" if trace.samples is None else "centre covered"
+        entries = [None] * ValueBar.LINES if coloured else [(covered, c["fill"], c["fill"])]
         if method == "halfplane":
             entries.append(("tested, rejected", c["rejected"], c["rejected"]))
         elif method == "tiled":  # rejected with their block, or tested in a partial one

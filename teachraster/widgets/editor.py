@@ -14,6 +14,7 @@ from ..core.triangle import Triangle
 from ..core.validate import as_finite, as_size
 from ..plotting import COLORS, FillView, InterpolationView
 from ..plotting.blitting import MOVING
+from ..plotting.common import lw
 from .common import (
     Holdable,
     close_tree,
@@ -92,7 +93,7 @@ class TriangleEditor(Holdable):
         The cross is dragged like a vertex (in the page; :meth:`set_probe` from code).
     comparison : bool
         Show the interpolation figure (affine vs perspective-correct, lesson 04). Lesson 02,
-        whose w are all 1, leaves it out.
+        whose w are all 1, leaves it out, and the w sliders with it (``w`` still holds them).
 
     Attributes
     ----------
@@ -180,7 +181,10 @@ class TriangleEditor(Holdable):
             self.x.append(x)
             self.y.append(y)
             self.w.append(wi)
-            columns.append(widgets.VBox([widgets.HTML(f"<b>vertex v{i + 1}</b>"), x, y, wi]))
+            # without the comparison a w changes nothing on show: no slider for it (review
+            # r93 02-9: three dead sliders); ``w[i]`` still sets it from code
+            shown = [x, y, wi] if comparison else [x, y]
+            columns.append(widgets.VBox([widgets.HTML(f"<b>vertex v{i + 1}</b>"), *shown]))
         self.method = widgets.ToggleButtons(
             options=[("span tables", "span"), ("half-planes", "halfplane")],
             value=method,
@@ -190,7 +194,11 @@ class TriangleEditor(Holdable):
         self.info = widgets.HTML(layout=widgets.Layout(min_height="2.6em"))
         self._set_info()
 
-        hint = "Drag a vertex in the upper figure, or move it and change its depth w here"
+        hint = (
+            "Drag a vertex in the upper figure, or move it and change its depth w here"
+            if comparison
+            else "Drag a vertex in the figure, or move it here"
+        )
         if self.backend == "ipympl":
             self.fig.canvas.mpl_connect("button_press_event", self._on_press)
             self.fig.canvas.mpl_connect("motion_notify_event", self._on_motion)
@@ -242,6 +250,7 @@ class TriangleEditor(Holdable):
         The FillView's key lists the current pixel and raster line of a step; the editor
         shows no step, so those lines go, and a free line below the rest names the cross.
         """
+        self._parts_over_coverage()
         key = self.view.legend
         if key is None:
             return
@@ -255,6 +264,15 @@ class TriangleEditor(Holdable):
             k = sum(shown)  # the step-only entries come last: the first hidden line is free
             key.swatches[k].set(visible=True, marker="X", mfc=COLORS["edge"], mec="white")
             key.texts[k].set(visible=True, text=label)
+
+    def _parts_over_coverage(self) -> None:
+        """Span tables' two parts hatched over the covered pixels: painted under them, the
+        parts the key names showed only as slivers beside the edges (review r93 02-9b)."""
+        split = self.view.split
+        for poly, name, hatch in ((split.flat_bottom, "flat_bottom", "//"),
+                                  (split.flat_top, "flat_top", "\\\\")):  # fmt: skip
+            poly.set(zorder=0.6, hatch=hatch, fc="none", hatch_linewidth=lw(0.6),
+                     ec=COLORS[name], lw=lw(0.8))  # fmt: skip
 
     def _fill_blit(self):
         """The fill figure's blit, the probe's cross drawn over everything (it moves too)."""

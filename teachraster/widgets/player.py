@@ -113,8 +113,11 @@ class FillPlayer(Holdable):
         Plotting style for this widget's figures (``"classroom"``); default the current one.
     samples : str
         Sample pattern, a key of :data:`~teachraster.widgets.common.SAMPLE_PATTERNS`. With
-        more than one sample the steps still follow the pixel centres, and every sample of
-        the finished fill is drawn on top (filled where covered): what MSAA adds. Tiles
+        more than one sample the steps still follow the pixel centres, every sample of a
+        pixel is drawn once its step has run (filled where covered), and the captions read
+        the recorded sample tests: a pixel step says how many of its samples are covered,
+        a pixel with a covered sample is not greyed as rejected, and the last step counts
+        the pixels with a covered sample, as ``rasterize`` does: what MSAA adds. Tiles
         test pixel centres only: with ``method="tiled"`` the fill has one sample per pixel
         whatever the menu says, and a note beside the menu says so (``samples_note``).
 
@@ -289,8 +292,10 @@ class FillPlayer(Holdable):
 
     def _layout(self) -> widgets.VBox:
         title = title_html(
-            "How a GPU fills a triangle, step by step",
-            "Press play, drag the step slider or use the buttons (all in the page); switching "
+            # a serial loop, one step at a time; a GPU tests a block's pixels at once
+            # (review r93 02-2: "How a GPU fills" titled a loop with bail-out)
+            "How a serial reference loop fills a triangle, step by step",
+            "A GPU runs the tests of a whole block of pixels at once. Press play, drag the step slider or use the buttons (all in the page); switching "
             "the method, the interpolation or the samples asks the kernel.",
         )
         options = [labelled("method", self.method)]

@@ -73,11 +73,12 @@ function mount(el, data, host) {
   const root = frame(el, data.title,
     "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
     "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
-    "their edges' colours; tint a half-plane to see where its E keeps one sign. A centre " +
+    "their edges' colours; tint a half-plane to see where its E keeps one sign (its sign " +
+    "alone is then drawn, large). A centre " +
     "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it.");
   const m = { left: 30, top: 26 };
-  const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 22, maxCell: 40,
-    fitW: 600, fitH: 520, margin: m, pad: 12,
+  const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 22, maxCell: 44,
+    fitW: 680, fitH: 600, margin: m, pad: 12,
     label: "two triangles over the pixel grid with the edge-function signs at every centre" });
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
@@ -93,7 +94,7 @@ function mount(el, data, host) {
     const chosen = state.chosen === "A" ? scene.A : scene.B;
     drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
     drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
-    drawSigns(ctx, chosen, W, H, cell, m);
+    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint));
     drawShared(ctx, scene, cell, m, data.colors);
     drawTriangles(ctx, state, toPx, data.colors);
     drawEdgeLabels(ctx, chosen, state, toPx);
@@ -250,8 +251,9 @@ function drawHalfPlanes(ctx, setup, W, H, toPx, cell, which) {
   ctx.rect(x0, y0, W * cell, H * cell);
   ctx.clip();
   const given = setup.given;
+  const all = which === "all";
   for (let k = 0; k < 3; k++) {
-    if (which !== "all" && which !== ["E12", "E23", "E31"][k]) continue;
+    if (!all && which !== ["E12", "E23", "E31"][k]) continue;
     const a = given[k].map((t) => t / u);
     const b = given[(k + 1) % 3].map((t) => t / u);
     const d = [b[0] - a[0], b[1] - a[1]];
@@ -266,13 +268,47 @@ function drawHalfPlanes(ctx, setup, W, H, toPx, cell, which) {
     ctx.beginPath();
     pts.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
     ctx.closePath();
-    ctx.globalAlpha = which === "all" ? 0.12 : 0.22;
+    if (all) {
+      ctx.clip(); // all three: the half-planes' intersection, hatched below
+      continue;
+    }
+    ctx.globalAlpha = 0.22;
     ctx.fillStyle = EDGE_HUES[k];
     ctx.fill();
+  }
+  if (all) {
+    // where all three keep the inside's sign, hatched in black: the fills keep their colours
+    // (three translucent tints blended into the grey of "drawn twice", review r93 02-8b)
+    ctx.globalAlpha = 0.6;
+    ctx.fillStyle = hatch(ctx, "#000");
+    ctx.fillRect(x0, y0, W * cell, H * cell);
   }
   ctx.restore();
 }
 
+
+// a repeating "/" hatch in `colour` (one tile per colour)
+const HATCHES = new Map();
+function hatch(ctx, colour) {
+  const key = colour;
+  if (!HATCHES.has(key)) {
+    const n = 12;
+    const tile = document.createElement("canvas");
+    tile.width = tile.height = n;
+    const t = tile.getContext("2d");
+    t.strokeStyle = colour;
+    t.lineWidth = 1.5;
+    t.beginPath();
+    const lines = [[0, n], [n, 0], [-2, 2], [2, -2], [n - 2, n + 2], [n + 2, n - 2]];
+    for (let i = 0; i < lines.length; i += 2) {
+      t.moveTo(...lines[i]);
+      t.lineTo(...lines[i + 1]);
+    }
+    t.stroke();
+    HATCHES.set(key, ctx.createPattern(tile, "repeat"));
+  }
+  return HATCHES.get(key);
+}
 
 // A glyph drawn once as a small picture (drawImage is many times cheaper than fillText, and a
 // grid shows hundreds of them at every frame of a drag)
@@ -296,29 +332,36 @@ function sprite(text, colour, size, dpr) {
 
 // The sign glyphs' size (px) in cells of `cell` px on a canvas `width` px wide: 0.42 of a
 // cell, and never less than reads 12 px in the column at 1024 px (review r7 02-4: 0.32 of a
-// cell read 11 px; r9 02-5: the glyphs still looked small at 0.38). Three of them,
-// SIGN_GAP of a cell apart, stay inside their pixel.
-export const SIGN_SCALE = 0.42;
-export const SIGN_GAP = 0.28;
+// cell read 11 px; r9 02-5: the glyphs still looked small at 0.38; r93 02-4: 0.42 of a 37-px
+// cell drew "+" 9-10 px high, small on a projector: 0.48 of a 42-px cell, as large as three
+// glyphs SIGN_GAP of a cell apart allow without touching). Three of them stay inside their
+// pixel; with one half-plane tinted its sign alone is drawn, ONE_SIGN_SCALE of a cell.
+export const ONE_SIGN_SCALE = 0.75;
+export const SIGN_SCALE = 0.48;
+export const SIGN_GAP = 0.3;
 export function signSize(cell, width) {
   return Math.max(readablePx(12, width), Math.round(cell * SIGN_SCALE));
 }
 
 // three sign glyphs per centre: E12, E23, E31 of the chosen triangle, in their colours
-function drawSigns(ctx, setup, W, H, cell, m) {
+function drawSigns(ctx, setup, W, H, cell, m, only = -1) {
   const logical = ctx.canvas.logical;
-  const size = signSize(cell, logical ? logical.w : ctx.canvas.width);
+  const three = signSize(cell, logical ? logical.w : ctx.canvas.width);
+  // one half-plane tinted: its sign alone, large (review r93 02-4: read on a projector)
+  const size = only < 0 ? three : Math.round(cell * ONE_SIGN_SCALE);
   const dpr = logical ? logical.dpr : 1;
   const gap = cell * SIGN_GAP;
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
       const e = givenValues(setup, r, c);
       const cx = m.left + (c + 0.5) * cell;
-      const cy = m.top + (r + 0.5) * cell + cell * 0.12;
+      const cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
       for (let k = 0; k < 3; k++) {
+        if (only >= 0 && k !== only) continue;
         const s = signOf(e[k]);
         const img = sprite(s, s === "0" ? "#000" : EDGE_HUES[k], size, dpr);
-        ctx.drawImage(img, cx + (k - 1) * gap - size / 2, cy - size * 0.9, size, size * 1.3);
+        const x = only < 0 ? cx + (k - 1) * gap : cx;
+        ctx.drawImage(img, x - size / 2, cy - size * 0.9, size, size * 1.3);
       }
     }
   }
@@ -334,10 +377,25 @@ function drawShared(ctx, scene, cell, m, colors) {
     ctx.beginPath();
     ctx.arc(cx, cy, cell * 0.42, 0, 2 * Math.PI);
     ctx.stroke();
-    ctx.fillStyle = ctx.strokeStyle;
-    ctx.font = `bold ${Math.max(textPx(ctx, 12), Math.round(cell * 0.3))}px sans-serif`;
-    ctx.fillText(owner === "both" ? "AB" : owner === "none" ? "–" : owner,
-      m.left + col * cell + 2, m.top + row * cell + cell * 0.3);
+    // the owner's letter black on a white disc at the cell's corner: orange on B's light
+    // orange fill was nearly invisible, and 7 px high (review r93 02-4)
+    const text = owner === "both" ? "AB" : owner === "none" ? "–" : owner;
+    const size = Math.max(textPx(ctx, 14), Math.round(cell * 0.36));
+    ctx.font = `bold ${size}px sans-serif`;
+    const [lx, ly] = [m.left + col * cell + size * 0.55, m.top + row * cell + size * 0.55];
+    const r = Math.max(ctx.measureText(text).width / 2 + 2, size * 0.6);
+    ctx.fillStyle = "#fff";
+    ctx.beginPath();
+    ctx.arc(lx, ly, r, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    ctx.fillStyle = "#000";
+    ctx.textAlign = "center";
+    ctx.textBaseline = "middle";
+    ctx.fillText(text, lx, ly + 1);
+    ctx.textAlign = "left";
+    ctx.textBaseline = "alphabetic";
   }
 }
 
@@ -389,7 +447,7 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
   const idx = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
   const v = idx.map((i) => toPx(state.vertices[i]));
   const centroid = [(v[0][0] + v[1][0] + v[2][0]) / 3, (v[0][1] + v[1][1] + v[2][1]) / 3];
-  const labels = edgeLabels(setup, ["E12", "E23", "E31"]);
+  const labels = edgeLabels(setup, EDGE_NAMES[state.chosen]);
   const size = textPx(ctx, 13);
   ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
@@ -400,8 +458,8 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
     const out = [mid[0] - centroid[0], mid[1] - centroid[1]];
     const len = Math.hypot(out[0], out[1]) || 1;
     const at = [mid[0] + (out[0] / len) * 22, mid[1] + (out[1] / len) * 22];
-    const name = state.chosen === "A" ? `${e.name}: ` : "";
-    const text = `${name}${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
+    // B's edges named too (review r93 02-5: "left, bias 0" beside A's "E12: right, bias −1")
+    const text = `${e.name}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const w = ctx.measureText(text).width;
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - w / 2 - 3, at[1] + 2 - size, w + 6, size + 3);
