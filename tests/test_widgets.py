@@ -23,6 +23,7 @@ from teachraster.widgets import (  # noqa: E402
     display,  # noqa: E402
     resolve_backend,
 )
+from teachraster.widgets.player import COMPARISON_HINT  # noqa: E402
 from teachraster.widgets.textured import plane_clip  # noqa: E402
 
 W = H = 16
@@ -104,12 +105,17 @@ def test_the_page_paints_exactly_the_step_the_view_draws(method):
 def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     player.method.value = "halfplane"
     frames = player.frames
-    assert frames.captions == [s.caption for s in player.trace]  # text: the page never parses it
+    captions = [s.caption for s in player.trace]  # text: the page never parses it
+    assert frames.captions[:-1] == captions[:-1]
     assert frames.infos[0] == f"of {len(player.trace) - 1} (snap)"
     # review r9/r10 (lesson 04 c15): the last step's picture shows the values it interpolates
-    # (coloured by them, keyed); its info line points to the comparison of both ways
+    # (coloured by them, keyed); its caption points to the comparison of both ways, and
+    # its readout stays short: a long one pushed the speed menu onto a new line and
+    # pointed at a folded comparison (review r91 00-B)
     assert player.interp_view is not None  # the fixture's triangle has attributes
-    assert frames.infos[-1].endswith("(interpolate: both ways in the comparison below)")
+    assert frames.captions[-1] == captions[-1] + COMPARISON_HINT
+    assert "click its title" in frames.captions[-1]
+    assert frames.infos[-1] == f"of {len(player.trace) - 1} (interpolate)"
     player.view.show_step(-1, draw=False)
     assert player.view.values.get_visible()
     bar = player.view.value_bar  # the key's colour bar of u (review r11: two swatches)
