@@ -265,6 +265,15 @@ def _within_sides(ax, points, offsets, size: float) -> list:
         x = ax.transLimits.transform(p)[0] * width  # from the Axes' left side, in points
         if (dx > 0 and x + dx + reach > width) or (dx < 0 and x + dx - reach < 0):
             dx = -dx
+        # a label that still overhangs the side (its half width, 0.65 size, past it) was cut
+        # by the frame (review r91 04-D: lesson 04's v2, 1.25 px from the side): moved in
+        # until it touches the side, and above or below its dot if it would cover the dot
+        half = 0.85 * size  # two bold characters in their padded box
+        inward = min(max(dx, half - x), width - half - x)
+        if inward != dx:
+            dx = inward
+            if abs(dx) < half:
+                dy = np.copysign(max(abs(dy), 0.9 * size), dy if dy else 1.0)
         out.append((dx, dy))
     return out
 
@@ -491,6 +500,9 @@ class SplitArtists(Artists):
         self.label.set_horizontalalignment(align[0])
         self.label.set_verticalalignment(align[1])
         self.label.set_text(text)
+        # the lone "4" sits on the pink split line: pink on pink read faintly (review r91
+        # 00-C), so it is drawn dark grey; the longer label beside the line stays pink
+        self.label.set_color("#333333" if text == "4" else COLORS["split"])
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
 
