@@ -611,7 +611,8 @@ def test_04_heatmap_edges_and_the_readable_floor():
     assert "lesson 05a, section 4" in text  # w <= 0: clipping comes first (review r5-r7)
     # review r91 04-A: the marked maximum is not the centre nearest an edge's peak; it hugs
     # edge v1 v2, while the centres nearest the peaks lie deeper inside and hold less
-    assert "closest to either" not in text and "hugs\nedge $v_1 v_2$" in text
+    flat = " ".join(text.split())
+    assert "closest to either" not in flat and "hugs edge $v_1 v_2$" in flat
     assert np.isclose(ns.q_peak, np.sqrt(2) / (1 + np.sqrt(2)))
     worst = tuple(int(k) for k in ns.worst)
     assert worst == (4, 10) and round(float(ns.diff[worst]), 3) == 0.163
