@@ -1045,9 +1045,12 @@ def test_a_colour_bar_put_back_from_its_cache_is_the_one_drawn():
     assert viewer._bar.last == "drawn" and viewer.view.heatmap.image.get_clim() == (0.0, 31.0)
     # the two renders are labelled alike (no ticks) and the affine curve is not hidden
     assert not viewer.view.axes[0].get_xticks().size and not viewer.view.axes[1].get_xticks().size
-    affine, persp = viewer.profile.lines
-    assert affine.get_zorder() > persp.get_zorder()
     viewer.close()
+    # the lesson's size and style, where the v-curve has a row of its own
+    wide = TexturedPlaneViewer(tilt=0.0, backend="image", style="classroom")
+    affine, persp = wide.profile.lines  # at 0° they coincide: the affine one dashed, on top
+    assert affine.get_zorder() > persp.get_zorder() and affine.get_linestyle() == "--"
+    wide.close()
 
 
 def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_poster():
