@@ -613,6 +613,13 @@ def test_04_heatmap_edges_and_the_readable_floor():
     # edge v1 v2, while the centres nearest the peaks lie deeper inside and hold less
     flat = " ".join(text.split())
     assert "closest to either" not in flat and "hugs edge $v_1 v_2$" in flat
+    # every number the text quotes about the three centres is one the cell prints
+    facts = [ns.centre_facts(*ns.worst)]
+    facts += [ns.centre_facts(ns.rows_c[k], ns.cols_c[k]) for k in ns.nearest]
+    for fact in facts:
+        value, to_peak, to_edge = re.findall(r"\d+\.\d+", fact)
+        assert value in flat and to_peak in flat and to_edge in flat, fact
+    assert "0.163 at pixel (row 4, col 10)" in flat and "0.04 px inside it" in flat
     assert np.isclose(ns.q_peak, np.sqrt(2) / (1 + np.sqrt(2)))
     worst = tuple(int(k) for k in ns.worst)
     assert worst == (4, 10) and round(float(ns.diff[worst]), 3) == 0.163
