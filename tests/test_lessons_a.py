@@ -614,11 +614,15 @@ def test_04_heatmap_edges_and_the_readable_floor():
     flat = " ".join(text.split())
     assert "closest to either" not in flat and "hugs edge $v_1 v_2$" in flat
     # every number the text quotes about the three centres is one the cell prints
-    facts = [ns.centre_facts(*ns.worst)]
-    facts += [ns.centre_facts(ns.rows_c[k], ns.cols_c[k]) for k in ns.nearest]
-    for fact in facts:
-        value, to_peak, to_edge = re.findall(r"\d+\.\d+", fact)
-        assert value in flat and to_peak in flat and to_edge in flat, fact
+    edge = ns.xy[[1, 2, 0]] - ns.xy
+    for r, c in [tuple(ns.worst), *[(ns.rows_c[k], ns.cols_c[k]) for k in ns.nearest]]:
+        p = np.array([c + 0.5, r + 0.5])
+        to_p = p - ns.xy
+        to_edge = np.min(np.abs(edge[:, 0] * to_p[:, 1] - edge[:, 1] * to_p[:, 0])
+                         / np.hypot(*edge.T))  # fmt: skip
+        to_peak = np.hypot(*(ns.peaks - p).T).min()
+        for number in (f"{ns.diff[r, c]:.3f}", f"{to_peak:.2f}", f"{to_edge:.2f}"):
+            assert number in flat, ((r, c), number)
     assert "0.163 at pixel (row 4, col 10)" in flat and "0.04 px inside it" in flat
     assert np.isclose(ns.q_peak, np.sqrt(2) / (1 + np.sqrt(2)))
     worst = tuple(int(k) for k in ns.worst)
