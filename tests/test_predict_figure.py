@@ -286,3 +286,23 @@ def test_a_dragged_marker_with_a_whole_number_readout_lands_on_a_whole_number():
                                                    ("snapDragged", [[0.1234, 0.5], "z", 3]),
                                                    ("snapDragged", [[180.29, 0.5], None, 0])])  # fmt: skip
     assert code == [180, 0.5] and z == [0.1234, 0.5] and plain == [180.29, 0.5]
+
+
+def test_the_answers_label_keeps_off_the_segment_the_marker_moves_along():
+    """Review r91 04-F (lesson 04 c4): "the answer" and its white ground lay across the
+    segment the marker is dragged along; a place round the dot clear of it wins."""
+    truth, mine = [300.0, 200.0], [420.0, 120.0]
+    segment = [[100.0, 330.0], [600.0, 0.0]]  # up and to the right, through the dot
+    plain, kept = call_js(("predict_figure",), [("answerLabel", [mine, truth]),
+                                                ("answerLabel", [mine, truth, None, 600, [segment]])])  # fmt: skip
+    boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in (plain, kept)])
+
+    def crosses(box):
+        (ax, ay), (bx, by) = segment
+        for t in np.linspace(0, 1, 401):
+            x, y = ax + t * (bx - ax), ay + t * (by - ay)
+            if box["x0"] < x < box["x1"] and box["y0"] < y < box["y1"]:
+                return True
+        return False
+
+    assert crosses(boxes[0]) and not crosses(boxes[1])

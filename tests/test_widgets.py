@@ -23,6 +23,7 @@ from teachraster.widgets import (  # noqa: E402
     display,  # noqa: E402
     resolve_backend,
 )
+from teachraster.widgets.player import COMPARISON_HINT  # noqa: E402
 from teachraster.widgets.textured import plane_clip  # noqa: E402
 
 W = H = 16
@@ -104,12 +105,17 @@ def test_the_page_paints_exactly_the_step_the_view_draws(method):
 def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     player.method.value = "halfplane"
     frames = player.frames
-    assert frames.captions == [s.caption for s in player.trace]  # text: the page never parses it
+    captions = [s.caption for s in player.trace]  # text: the page never parses it
+    assert frames.captions[:-1] == captions[:-1]
     assert frames.infos[0] == f"of {len(player.trace) - 1} (snap)"
     # review r9/r10 (lesson 04 c15): the last step's picture shows the values it interpolates
-    # (coloured by them, keyed); its info line points to the comparison of both ways
+    # (coloured by them, keyed); its caption points to the comparison of both ways, and
+    # its readout stays short: a long one pushed the speed menu onto a new line and
+    # pointed at a folded comparison (review r91 00-B)
     assert player.interp_view is not None  # the fixture's triangle has attributes
-    assert frames.infos[-1].endswith("(interpolate: both ways in the comparison below)")
+    assert frames.captions[-1] == captions[-1] + COMPARISON_HINT
+    assert "click its title" in frames.captions[-1]
+    assert frames.infos[-1] == f"of {len(player.trace) - 1} (interpolate)"
     player.view.show_step(-1, draw=False)
     assert player.view.values.get_visible()
     bar = player.view.value_bar  # the key's colour bar of u (review r11: two swatches)
@@ -1026,15 +1032,24 @@ def test_a_colour_bar_put_back_from_its_cache_is_the_one_drawn():
     assert viewer._bar.last == "cached"
     assert _shown(viewer) == first
     # the range ends on a round number (25 at 30° and 31°, whose maxima differ), so a new
-    # tilt puts the bar back too, and the picture is a fresh viewer's at that tilt
+    # tilt puts the bar back too, and the picture is a fresh viewer's at that tilt; the
+    # bar ends near the maximum the title states (review r91 04-E: it ran to 40 for 31.7)
     viewer.tilt.value = 31.0
     assert viewer._bar.last == "cached" and viewer.view.heatmap.image.get_clim() == (0.0, 25.0)
+    assert 25.0 - viewer.maximum < 0.2 * viewer.maximum
     fresh = TexturedPlaneViewer(64, 48, tilt=31.0, backend="image")
     assert _shown(viewer) == _shown(fresh)
     fresh.close()
-    viewer.tilt.value = 70.0  # a range not drawn before (40): drawn
-    assert viewer._bar.last == "drawn" and viewer.view.heatmap.image.get_clim() == (0.0, 40.0)
+    viewer.tilt.value = 70.0  # a range not drawn before (35): drawn
+    assert viewer._bar.last == "drawn" and viewer.view.heatmap.image.get_clim() == (0.0, 35.0)
+    # the two renders are labelled alike (no ticks) and the affine curve is not hidden
+    assert not viewer.view.axes[0].get_xticks().size and not viewer.view.axes[1].get_xticks().size
     viewer.close()
+    # the lesson's size and style, where the v-curve has a row of its own
+    wide = TexturedPlaneViewer(tilt=0.0, backend="image", style="classroom")
+    affine, persp = wide.profile.lines  # at 0° they coincide: the affine one dashed, on top
+    assert affine.get_zorder() > persp.get_zorder() and affine.get_linestyle() == "--"
+    wide.close()
 
 
 def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_poster():

@@ -265,10 +265,15 @@ def _within_sides(ax, points, offsets, size: float) -> list:
         x = ax.transLimits.transform(p)[0] * width  # from the Axes' left side, in points
         if (dx > 0 and x + dx + reach > width) or (dx < 0 and x + dx - reach < 0):
             dx = -dx
-        # a label overhanging by less than that is drawn in, just clear of the side: "v2"
-        # at x = 14.5 of 16 crossed the right spine, by the key (review r93 02-6)
-        whole = 0.8 * size  # half a label's width in its box, and a margin
-        dx = min(dx, width - x - whole) if dx > 0 else max(dx, whole - x) if dx < 0 else dx
+        # a label that still overhangs the side (its half width, 0.65 size, past it) was cut
+        # by the frame (review r91 04-D: lesson 04's v2, 1.25 px from the side; r93 02-6: 02's v2 by the key): moved in
+        # until it touches the side, and above or below its dot if it would cover the dot
+        half = 0.85 * size  # two bold characters in their padded box
+        inward = min(max(dx, half - x), width - half - x)
+        if inward != dx:
+            dx = inward
+            if abs(dx) < half:
+                dy = np.copysign(max(abs(dy), 0.9 * size), dy if dy else 1.0)
         out.append((dx, dy))
     return out
 
@@ -495,6 +500,9 @@ class SplitArtists(Artists):
         self.label.set_horizontalalignment(align[0])
         self.label.set_verticalalignment(align[1])
         self.label.set_text(text)
+        # the lone "4" sits on the pink split line: pink on pink read faintly (review r91
+        # 00-C), so it is drawn dark grey; the longer label beside the line stays pink
+        self.label.set_color("#333333" if text == "4" else COLORS["split"])
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
 

@@ -55,6 +55,9 @@ PLAYER_SIDE, PLAYER_KEY = 4.8, 1.75
 #: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
 #: interpolation toggle opened it).
 COMPARISON_MAX_PX = 660
+#: Appended to the last step's caption when the triangle has attributes: both
+#: interpolations are in the comparison, which may be folded.
+COMPARISON_HINT = " Both ways side by side: the comparison below (click its title to open it)."
 #: The comparison's width on screen at 1024 x 768 with JupyterLab's file browser open (CSS
 #: px): the output column (592) less the accordion's padding (review r20, 00 c14). Its text
 #: is sized to read 12 px there.
@@ -352,8 +355,9 @@ class FillPlayer(Holdable):
         if fill_key not in self._texts:
             captions, infos = step_texts(self.trace)
             if self.interp_view is not None:  # the other interpolation is in the comparison
-                infos = [i.replace("(interpolate)", "(interpolate: both ways in the "
-                                   "comparison below)") for i in infos]  # fmt: skip
+                # in the caption, not the short readout: a long readout pushed the speed
+                # menu onto a new line, and the comparison may be folded
+                captions = [*captions[:-1], captions[-1] + COMPARISON_HINT]
             self._texts[fill_key] = captions, infos
         captions, infos = self._texts[fill_key]
         group = step // self.frames.key

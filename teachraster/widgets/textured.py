@@ -176,6 +176,9 @@ class TexturedPlaneViewer:
                 # (drawn afresh at every release, it was ~16 ms of a ~35 ms final)
                 round_range=True,
             )  # fmt: skip
+            # the two renders labelled alike: no pixel ticks on either (review r91 04-E: only
+            # "affine uv" had them); the error map has none either
+            self.view.axes[0].set(xticks=[], yticks=[], xlabel="", ylabel="")
             if self.view.heatmap.colorbar is not None:
                 self.view.heatmap.colorbar.set_label("texels")
             # the heatmap's title states the maximum and its ring marks the pixel; the note
@@ -189,6 +192,14 @@ class TexturedPlaneViewer:
                     axis="column", index=width // 2, labels=("affine", "perspective"),
                     value="texture v", guides=[self.view.axes[2]], vlim=(-0.04, 1.04),
                 )  # fmt: skip
+                # the affine curve dashed, on top: at 0° the two coincide and the perspective
+                # curve hid it, so the key named a curve nobody saw (review r91 04-E)
+                affine_line, persp_line = self.profile.lines
+                affine_line.set_zorder(persp_line.get_zorder() + 0.5)
+                affine_line.set_linestyle((0, (4, 2)))
+                key = axes[3].get_legend()
+                if key is not None:  # its handle is a copy, made before
+                    key.legend_handles[0].set_linestyle((0, (4, 2)))
             self._show_error()
             # the colour bar's ticks too (review r9 04 c25: they read 10 px at 1024 px); its
             # sprite is made below, after them

@@ -129,7 +129,8 @@ const PIPE_CSS = `
 .tr-pipe .stage { cursor: pointer; }
 .tr-pipe .stage:focus { outline: none; }
 .tr-pipe .stage:focus rect, .tr-pipe .stage:hover rect { stroke-width: 3; }
-.tr-pipe-detail { display: flex; flex-wrap: wrap; gap: 14px; align-items: flex-start; }
+.tr-pipe-detail { display: flex; flex-wrap: wrap; gap: 14px; align-items: flex-start;
+  font-size: 15px; }
 .tr-pipe-detail > div { flex: 1 1 380px; max-width: 640px; }
 `;
 
@@ -143,12 +144,13 @@ function svg(tag, attrs, text) {
 
 // Two rows of five boxes; the second row continues from the first. Drawn 1:1 in a 580-px
 // column (JupyterLab's at 1024 px with the file browser open is about 585), where its
-// smallest type, 13 px, stays at least 12 px on screen (review r7: 900 wide, it was 8 px).
-// Stage names 13 px bold: at 14 px "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px
-// from their boxes' borders (review r17), under the selected box's 2-px border.
-const MAP = { width: 580, height: 400, font: 13, name: 13 };  // 400: three lines of early-z
+// lesson numbers, early-z note and caption are 15 px, a classroom's minimum (review r91 00-D:
+// 13 px read on a laptop, not from the back of a hall). Stage names stay 13 px bold: at 14 px
+// "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px from their boxes' borders (review
+// r17), under the selected box's 2-px border; five boxes fill the column.
+const MAP = { width: 580, height: 418, font: 15, name: 13, line: 18 };  // three lines of early-z
 function layout() {
-  const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 50];
+  const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 68];
   return STAGES.map(([key], k) => {
     const r = Math.floor(k / 5);
     const c = k % 5;
@@ -199,7 +201,7 @@ function diagram(onPick, lessons) {
   ["early-z (lessons 05a, 10), optional: depth tested and written",
     "before shading, only if the shader neither discards, writes",
     "depth nor writes memory (discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
-    { x: ex + ew / 2, y: ey + eh + 18 + 16 * i, "text-anchor": "middle",
+    { x: ex + ew / 2, y: ey + eh + 18 + MAP.line * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
     const [, name] = STAGES[k];
@@ -214,7 +216,7 @@ function diagram(onPick, lessons) {
       "font-size": MAP.name, "font-weight": "bold" }, line)));
     const taught = lessons[b.key];
     taught.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
-      y: b.y + b.h - 8 - 15 * (taught.length - 1 - i), "text-anchor": "middle",
+      y: b.y + b.h - 7 - 16 * (taught.length - 1 - i), "text-anchor": "middle",
       "font-size": MAP.font, fill: "#444" }, line)));
     g.addEventListener("click", (e) => onPick(b.key, e));
     onKeys(g, (e) => {
@@ -226,9 +228,10 @@ function diagram(onPick, lessons) {
     root.append(g);
     return g;
   });
-  ["The logical order of OpenGL and Direct3D; in each box, the lessons that teach",
-    "the stage. Click a stage for the tour triangle there."].forEach((line, i) => root.append(
-    svg("text", { x: 2, y: 16 + 16 * i, "font-size": MAP.font, fill: "#333" }, line)));
+  ["The logical order of OpenGL and Direct3D; in each box, the",
+    "lessons that teach the stage. Click a stage for the tour",
+    "triangle there."].forEach((line, i) => root.append(
+    svg("text", { x: 2, y: 16 + MAP.line * i, "font-size": MAP.font, fill: "#333" }, line)));
   return { root, groups };
 }
 

@@ -78,8 +78,11 @@ export function readoutPlace(mine, textWidth, canvasWidth) {
 // (whose cross reaches 14 px each way), so that it is never drawn under the marker. With a
 // readout (its box from readoutPlace) the label also keeps clear of it: "th code 188" was the
 // two printed over each other with the marker on the answer; the first of the four places
-// round the dot that clears both wins.
-export function answerLabel(mine, truth, readout = null, height = Infinity) {
+// round the dot that clears both wins. `lines` (canvas pixels, [[x0, y0], [x1, y1]] each):
+// drawn lines the label's white ground should not cut, such as the segment a marker moves
+// along (review r91 04-F: "the answer" lay across lesson 04's segment); a place clear of them
+// is preferred, but not at the price of the marker or the readout.
+export function answerLabel(mine, truth, readout = null, height = Infinity, lines = []) {
   const left = mine[0] > truth[0];
   const below = mine[1] < truth[1] - 4 || truth[1] < 30;
   const place = (l, b) => ({ x: truth[0] + (l ? -6 : 6), y: b ? truth[1] + 30 : truth[1] - 18,
@@ -91,7 +94,14 @@ export function answerLabel(mine, truth, readout = null, height = Infinity) {
     const box = labelBox(p);
     return box.y0 >= 0 && box.y1 <= height && !overlaps(box, cross) && !(readout && overlaps(box, readout));
   };
-  return tries.find(clear) || tries[0];
+  const crosses = (p) => {
+    const box = labelBox(p);
+    return lines.some(([a, b]) => Array.from({ length: 41 }, (_, k) => k / 40).some((t) => {
+      const [x, y] = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+      return x > box.x0 - 3 && x < box.x1 + 3 && y > box.y0 - 2 && y < box.y1 + 3;
+    }));
+  };
+  return tries.find((p) => clear(p) && !crosses(p)) || tries.find(clear) || tries[0];
 }
 
 // the box "the answer" fills at the 18 px bold font (about 104 px wide), from its baseline
@@ -360,7 +370,8 @@ function mountPoint(root, data, host) {
       ctx.fill();
       const avoid = readoutBox(mine); // measured in the readout's font, before the label's is set
       ctx.font = ANSWER_FONT;
-      const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height);
+      const lines = data.along ? [data.along.map(toPx)] : [];
+      const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height, lines);
       // on a white ground: the lines through the answer (the segment, the eye ray) crossed the
       // words and read "theranswer" (review r58 04-7)
       const ground = labelBox({ x, y, align });
