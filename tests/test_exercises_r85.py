@@ -129,3 +129,73 @@ def test_an_edge_function_truncated_to_an_integer_is_named():
 
     report = ex.check("edge_function", truncated)
     assert "truncated to a whole number" in report.failures[0].explanation, str(report)
+
+
+# -- r84/r85 items left open (fixexr7): each first explanation names its own mistake ------------
+def _resolve_nanmean(colours, ids, background):
+    return np.nanmean(np.asarray(colours, dtype=float), axis=0)  # the uncovered samples NaN
+
+
+def _resolve_covered(colours, ids, background):
+    return np.asarray(colours, dtype=float)[np.asarray(ids) >= 0].mean(axis=0)
+
+
+def _depth_from_zero(depths, writes):
+    stored = 0.0  # the buffer started at 0: no fragment is nearer, so none passes or writes
+    return [d < stored for d in depths]
+
+
+def _fill_sampled(dx, dy, transposed=False):
+    covers = CORRECT["covers"]
+
+    def fill(xy, width, height):
+        out = np.zeros((height, width), dtype=bool)
+        for i in range(height):
+            for j in range(width):
+                out[i, j] = covers(xy, (j + dx, i + dy))
+        return out.T if transposed else out
+
+    return fill
+
+
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")  # the mean of no samples
+@pytest.mark.parametrize("resolve", [_resolve_nanmean, _resolve_covered])
+def test_a_resolve_of_the_covered_samples_is_named_where_none_is_covered(resolve):
+    """r85 06: np.nanmean over the samples (a mean of the covered ones) was told only "your
+    answer holds NaN" on its first failing case, the pixel no triangle covers: the mistake,
+    the background's share left out, is named there too."""
+    report = _first_try("resolve", resolve)
+    first = report.failures[0]
+    assert first.case == "4 samples, none covered", str(report)
+    assert first.kind == "covered only" and "holds NaN" not in first.explanation, str(report)
+    assert "you averaged the covered samples only" in first.explanation, first.explanation
+    assert "the background's share here is the whole pixel" in first.explanation
+    later = report.failures[1].explanation
+    assert "leaving out the background's share of the pixel (3 of its 4 samples)" in later
+
+
+def test_a_depth_buffer_started_at_zero_is_told_the_cause():
+    """r85 04: a buffer started at 0 (nothing is nearer) was told its symptom only ("your
+    function lets no fragment pass, ever")."""
+    report = _first_try("depth_passes", _depth_from_zero)
+    first = report.failures[0]
+    assert first.kind == "cleared to 0", str(report)
+    assert "you started the buffer at 0" in first.explanation, first.explanation
+    assert "nothing is strictly nearer than 0" in first.explanation
+
+
+@pytest.mark.parametrize(("fill", "kind", "own"), [
+    (_fill_sampled(0.0, 0.0), "pixel corners", "; you sampled (2, 1), which lies outside"),
+    (_fill_sampled(0.5, 0.5, transposed=True), "transposed",
+     "holds the pixel across the diagonal (row 3, col 2"),
+])  # fmt: skip
+def test_a_fills_corner_or_transposed_words_give_an_example_of_that_mistake(fill, kind, own):
+    """r85 01-1: the corner and transposed words ended "For example, … lies exactly on edge
+    v1→v2: the top-left rule covers it", a tie that shows neither mistake; the example now
+    shows the mistake at its pixel, and no other follows."""
+    report = _first_try("fill", fill)
+    first = report.failures[0]
+    assert first.kind == kind, str(report)
+    assert own in first.explanation, first.explanation
+    assert first.explanation.count("For example") == 1, first.explanation
+    assert "top-left rule" not in first.explanation, first.explanation
