@@ -13,6 +13,7 @@ import re
 import numpy as np
 import pytest
 from exercise_solutions import CORRECT
+from reasoning_solutions import CORRECT as REASONING
 
 from teachraster import exercises as ex
 from teachraster.exercises import tries
@@ -199,3 +200,25 @@ def test_a_fills_corner_or_transposed_words_give_an_example_of_that_mistake(fill
     assert own in first.explanation, first.explanation
     assert first.explanation.count("For example") == 1, first.explanation
     assert "top-left rule" not in first.explanation, first.explanation
+
+
+def test_a_span_along_a_bottom_edge_reads_without_a_contradiction():
+    """r85 02: "the centre line y = 1.5 crosses the triangle … from x_l = 0.5 to x_r = 60.5,
+    so the covered centres are none" read as a contradiction; the line runs along the
+    triangle's bottom edge, which owns none of its centres."""
+    span = REASONING["span"]
+
+    def no_horizontal_rule(xy, row):  # a horizontal edge on the line taken as two crossings
+        y = row + 0.5
+        on = [x for k in range(3) for x in (xy[k][0], xy[(k + 1) % 3][0])
+              if xy[k][1] == xy[(k + 1) % 3][1] == y]  # fmt: skip
+        if not on:
+            return span(xy, row)
+        return math.ceil(min(on) - 0.5), math.ceil(max(on) - 0.5)
+
+    first = _first_try("span", no_horizontal_rule).failures[0]
+    assert first.kind == "horizontal edge", first.explanation
+    text = first.explanation
+    assert "runs along the triangle's horizontal bottom edge" in text, text
+    assert "a bottom edge owns none of its centres, so the covered centres are none" in text
+    assert "crosses the triangle" not in text and text.count("bottom edge") == 3, text
