@@ -654,9 +654,9 @@ def _floor_texel(texture, uv, wrap):
     return tex[int(np.floor(uv[1] * h)) % h, int(np.floor(uv[0] * w)) % w]
 
 
-def _passes_with(ties=False, mask=True, test_all=True, previous=False):
+def _passes_with(ties=False, mask=True, test_all=True, previous=False, start=math.inf):
     def depth_passes(depths, writes):
-        stored = last = math.inf
+        stored = last = start
         out = []
         for d, w in zip(depths, writes):
             against = last if previous else stored
@@ -1116,6 +1116,8 @@ WRONG = {
     "glass writes depth": ("depth_passes", _passes_with(mask=False), "leaves the buffer"),
     "glass untested": ("depth_passes", _passes_with(test_all=False), "still tested"),
     "against the previous fragment": ("depth_passes", _passes_with(previous=True), "just before"),
+    # r85 04: told only "lets no fragment pass, ever"
+    "buffer started at 0": ("depth_passes", _passes_with(start=0.0), "started the buffer at 0"),
     "every fragment passes": (
         "depth_passes",
         lambda d, w: [True] * len(d),
@@ -1237,6 +1239,16 @@ WRONG = {
         lambda b: ("missing premultiplication", (13, 52), (0.31, 0.28, 0.24)),
         "your value is the one frame 4 shows at (13, 52)",
     ),  # fmt: skip
+    # r84 11-2: passed while the two frames of each pair numbered their triangles alike
+    "frame 2, the triangle's number read off the intended history": (
+        "broken_frame_2",
+        lambda b: (
+            "culled winding",
+            (24, 28),
+            next(r.triangle for r in b.intended.history(24, 28).records if r.outcome == "passed"),
+        ),
+        "is its number in the intended frame's history",
+    ),  # fmt: skip
 }
 
 
@@ -1324,6 +1336,8 @@ KINDS = {
     "frame 1, (col, row) for (row, col)": "evidence",
     "frame 6, the sliver's two numbers swapped": "evidence",
     "frame 4, the frame shown's value typed in": "typed in",
+    "frame 2, the triangle's number read off the intended history": "the intended frame's number",
+    "buffer started at 0": "cleared to 0",
 }
 
 

@@ -327,6 +327,37 @@ def test_the_look_alike_frames_1_and_2_take_evidence_of_different_kinds():
     _passes("broken_frame_2", sol.diagnosis(2))
 
 
+def test_a_triangle_number_read_off_the_intended_history_is_named():
+    """r84 11-2: frame 2's triangle, numbered as the intended frame's history numbers it,
+    passed both cases, the two frames of each pair numbering alike: "a number the list asks
+    for is the one in the frame's own history" was never needed. The redrawn cube pair numbers
+    them apart, so the slip fails there, told what it read (never the right number)."""
+
+    def read_off_the_intended(b):
+        meant = b.intended.history(24, 28).records
+        return "culled winding", (24, 28), next(r.triangle for r in meant if r.outcome == "passed")
+
+    report = ex.check("broken_frame_2", read_off_the_intended)
+    assert [f.case for f in report.failures] == ["the frame redrawn"], str(report)
+    failure = report.failures[0]
+    assert failure.kind == "the intended frame's number", failure.explanation
+    text = failure.explanation
+    assert "you found the right triangle, but" in text and "its number in the intended" in text
+    assert "frame.trace.window[k, :, :2]" in text and "b.frame.history(24, 28)" in text, text
+    for look in bf._REDRAWN:  # whichever look the check draws, at every pixel with the mark
+        redrawn = bf._redrawn(2, look)
+        assert look.meant_order not in (None, 0, look.order), look
+        for row, col in np.argwhere(bf._differs(redrawn))[::37]:
+            p = bf._pixel(redrawn, int(row), int(col))
+            if not bf._SIGNS["culled winding"][0](p, redrawn):
+                continue
+            for value in bf._meant_numbers(redrawn, "culled winding", p):
+                answer = ("culled winding", (int(row), int(col)), value)
+                assert bf._judged(redrawn, answer)[0] == "intended", (look, answer)
+        right = bf.as_diagnosis(sol.diagnosis(2)(redrawn))
+        assert bf._judged(redrawn, right)[0] == "right", look
+
+
 def test_a_pixel_given_as_floats_is_told_it_is_a_float():
     """r11 11-H: (24.0, 28.0) was told "row 24.0 is not an integer"."""
     failure = _first(1, ("depth function", (24.0, 28), 0.026233))

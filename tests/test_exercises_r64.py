@@ -173,3 +173,16 @@ def test_a_far_case_figure_has_its_whole_title_and_plain_ticks(plt):
     assert ax.xaxis.get_offset_text().get_text() == ""
     assert ax.yaxis.get_offset_text().get_text() == ""
     assert all(t.get_text().startswith("1000") for t in ax.get_xticklabels() if t.get_text())
+
+
+def test_the_docs_task_table_does_not_give_8_2s_method_away():
+    """r85 08 (fixexr7): docs/exercises.md's table said "the depth plane's minimum at the
+    extreme centres, bounded by the nearest vertex (the larger of the two bounds …)", the
+    method the notebook gives only as a hint behind <details>."""
+    docs = (ROOT / "docs/exercises.md").read_text(encoding="utf-8")
+    row = next(line for line in docs.splitlines() if line.startswith("| 8.2 `hiz_rejects"))
+    for method in ("extreme centres", "nearest vertex", "larger of the two", "minimum"):
+        assert method not in row, (method, row)
+    text = _cell("notebooks/exercises/08_tiles.ipynb", "hiz_rejects_task")
+    hint = text[text.index("<details>") :]
+    assert "larger of the two" in hint and "larger of the two" not in text[: len(text) - len(hint)]

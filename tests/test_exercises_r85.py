@@ -13,6 +13,7 @@ import re
 import numpy as np
 import pytest
 from exercise_solutions import CORRECT
+from reasoning_solutions import CORRECT as REASONING
 
 from teachraster import exercises as ex
 from teachraster.exercises import tries
@@ -129,3 +130,95 @@ def test_an_edge_function_truncated_to_an_integer_is_named():
 
     report = ex.check("edge_function", truncated)
     assert "truncated to a whole number" in report.failures[0].explanation, str(report)
+
+
+# -- r84/r85 items left open (fixexr7): each first explanation names its own mistake ------------
+def _resolve_nanmean(colours, ids, background):
+    return np.nanmean(np.asarray(colours, dtype=float), axis=0)  # the uncovered samples NaN
+
+
+def _resolve_covered(colours, ids, background):
+    return np.asarray(colours, dtype=float)[np.asarray(ids) >= 0].mean(axis=0)
+
+
+def _depth_from_zero(depths, writes):
+    stored = 0.0  # the buffer started at 0: no fragment is nearer, so none passes or writes
+    return [d < stored for d in depths]
+
+
+def _fill_sampled(dx, dy, transposed=False):
+    covers = CORRECT["covers"]
+
+    def fill(xy, width, height):
+        out = np.zeros((height, width), dtype=bool)
+        for i in range(height):
+            for j in range(width):
+                out[i, j] = covers(xy, (j + dx, i + dy))
+        return out.T if transposed else out
+
+    return fill
+
+
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")  # the mean of no samples
+@pytest.mark.parametrize("resolve", [_resolve_nanmean, _resolve_covered])
+def test_a_resolve_of_the_covered_samples_is_named_where_none_is_covered(resolve):
+    """r85 06: np.nanmean over the samples (a mean of the covered ones) was told only "your
+    answer holds NaN" on its first failing case, the pixel no triangle covers: the mistake,
+    the background's share left out, is named there too."""
+    report = _first_try("resolve", resolve)
+    first = report.failures[0]
+    assert first.case == "4 samples, none covered", str(report)
+    assert first.kind == "covered only" and "holds NaN" not in first.explanation, str(report)
+    assert "you averaged the covered samples only" in first.explanation, first.explanation
+    assert "the background's share here is the whole pixel" in first.explanation
+    later = report.failures[1].explanation
+    assert "leaving out the background's share of the pixel (3 of its 4 samples)" in later
+
+
+def test_a_depth_buffer_started_at_zero_is_told_the_cause():
+    """r85 04: a buffer started at 0 (nothing is nearer) was told its symptom only ("your
+    function lets no fragment pass, ever")."""
+    report = _first_try("depth_passes", _depth_from_zero)
+    first = report.failures[0]
+    assert first.kind == "cleared to 0", str(report)
+    assert "you started the buffer at 0" in first.explanation, first.explanation
+    assert "nothing is strictly nearer than 0" in first.explanation
+
+
+@pytest.mark.parametrize(("fill", "kind", "own"), [
+    (_fill_sampled(0.0, 0.0), "pixel corners", "; you sampled (2, 1), which lies outside"),
+    (_fill_sampled(0.5, 0.5, transposed=True), "transposed",
+     "holds the pixel across the diagonal (row 3, col 2"),
+])  # fmt: skip
+def test_a_fills_corner_or_transposed_words_give_an_example_of_that_mistake(fill, kind, own):
+    """r85 01-1: the corner and transposed words ended "For example, … lies exactly on edge
+    v1→v2: the top-left rule covers it", a tie that shows neither mistake; the example now
+    shows the mistake at its pixel, and no other follows."""
+    report = _first_try("fill", fill)
+    first = report.failures[0]
+    assert first.kind == kind, str(report)
+    assert own in first.explanation, first.explanation
+    assert first.explanation.count("For example") == 1, first.explanation
+    assert "top-left rule" not in first.explanation, first.explanation
+
+
+def test_a_span_along_a_bottom_edge_reads_without_a_contradiction():
+    """r85 02: "the centre line y = 1.5 crosses the triangle … from x_l = 0.5 to x_r = 60.5,
+    so the covered centres are none" read as a contradiction; the line runs along the
+    triangle's bottom edge, which owns none of its centres."""
+    span = REASONING["span"]
+
+    def no_horizontal_rule(xy, row):  # a horizontal edge on the line taken as two crossings
+        y = row + 0.5
+        on = [x for k in range(3) for x in (xy[k][0], xy[(k + 1) % 3][0])
+              if xy[k][1] == xy[(k + 1) % 3][1] == y]  # fmt: skip
+        if not on:
+            return span(xy, row)
+        return math.ceil(min(on) - 0.5), math.ceil(max(on) - 0.5)
+
+    first = _first_try("span", no_horizontal_rule).failures[0]
+    assert first.kind == "horizontal edge", first.explanation
+    text = first.explanation
+    assert "runs along the triangle's horizontal bottom edge" in text, text
+    assert "a bottom edge owns none of its centres, so the covered centres are none" in text
+    assert "crosses the triangle" not in text and text.count("bottom edge") == 3, text

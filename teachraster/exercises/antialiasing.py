@@ -401,8 +401,29 @@ def _mean_rule(args) -> str:
 
 
 def _covered_mean(colours, ids, background):
+    """The mean of the covered samples alone; NaN where none is covered, as a mean of no
+    samples is (``np.nanmean`` over the samples, the uncovered ones NaN: r85 06, the
+    no-sample case was told only "your answer holds NaN")."""
     c = ids >= 0
-    return colours[c].mean(axis=0) if c.any() else None
+    return colours[c].mean(axis=0) if c.any() else np.full(colours.shape[-1], np.nan)
+
+
+def _covered_words(args, expected, got) -> str:
+    """The covered samples averaged alone: the background's share of the pixel left out (and,
+    with no sample covered, a mean of nothing)."""
+    _, ids, _ = args
+    s, k = len(ids), int((ids >= 0).sum())
+    if k == 0:
+        said = (": you averaged the covered samples only (np.nanmean over the samples does "
+                "so), and none is covered here: the mean of no samples is NaN, but the "
+                "background's share here is the whole pixel")  # fmt: skip
+    else:
+        said = (
+            f": you averaged the {k} covered sample{'s' * (k != 1)} only, leaving out the "
+            f"background's share of the pixel ({s - k} of its {s} samples), so the "
+            "covered ones weigh too much where a triangle's edge crosses the pixel"
+        )
+    return said + "; " + _mean_rule(args)
 
 
 def _majority(colours, ids, background):
@@ -429,8 +450,7 @@ def _with_background(colours, ids, background):
 
 
 RESOLVE_MISTAKES = [
-    Mistake("covered only", _resolve_words("you averaged the {k} covered sample{s} only"),
-            gives=_covered_mean),
+    Mistake("covered only", _covered_words, gives=_covered_mean),
     Mistake("uncovered as black", _resolve_words("the uncovered samples count as the background "
             "{bg}, not as black"),
             gives=lambda c, i, b: np.where((i >= 0)[:, None], c, 0.0).mean(axis=0)),

@@ -43,9 +43,10 @@ reader does not serve both causes (r11 11-D: a coin flip once the reader was wri
 What a wrong answer is told, in this order: a check run inside the function; a pixel where
 the two frames agree; the frame's cause at a changed pixel that does not show its mark
 (:data:`_SIGNS`; the sliver's: the thin triangle passes through the pixel); a cause that is
-not the frame's (the value is then not judged: r18-2); the frame shown's value given for
-the redrawn frame; a value that is not the evidence there (and a row and column, or the
-sliver's two numbers, swapped).
+not the frame's (the value is then not judged: r18-2); a triangle's number read off the
+intended frame's history (r84 11-2: the cube's redrawn pair numbers its two frames apart); the
+frame shown's value given for the redrawn frame; a value that is not the evidence there (and a
+row and column, or the sliver's two numbers, swapped).
 """
 
 from __future__ import annotations
@@ -307,18 +308,25 @@ class _Look:
     strip_depth: float = 0.3
     cube: tuple = (1.0, 0.0)
     order: int = 0  # the cube's triangles drawn from this one on (r11 11-D: other numbers)
+    # frame 2's intended cube's, where it differs (r84 11-2: a triangle's number read off
+    # the intended frame's history passed, both frames numbering alike; a redrawn pair numbers
+    # them apart, so that "a number the list asks for is the one in the frame's own history").
+    # Not frame 1's: drawn in another order, its two faces would both pass, parting at blending
+    meant_order: int | None = None
 
 
 #: The look of the frames shown, and the looks a check redraws them with (one at random).
 _SHOWN = _Look()
 _REDRAWN = (
-    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 3),
-    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 5),
-    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 7),
+    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 3, 9),
+    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 5, 10),
+    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 7, 2),
 )
 
 
-def _cube(look: _Look, winding_reversed: bool = False, **kwargs) -> Frame:
+def _cube(look: _Look, winding_reversed: bool = False, meant: bool = False, **kwargs) -> Frame:
+    """The cube drawn with ``look``; ``meant``: the intended frame, in the look's
+    ``meant_order`` where it has one."""
     scene = get_scene("cube")
     clip = scene.clip(W / H)
     clip = clip * np.array([1.6, 1.6, 1, 1])  # zoomed in: a narrower field of view
@@ -331,7 +339,8 @@ def _cube(look: _Look, winding_reversed: bool = False, **kwargs) -> Frame:
         clip, rgba = clip[:, ::-1], rgba[:, ::-1]
     # the same triangles in another order: the same picture (the depth test decides), other
     # triangle numbers, so that a number typed in fails the redrawn frame
-    clip, rgba = np.roll(clip, -look.order, axis=0), np.roll(rgba, -look.order, axis=0)
+    order = look.meant_order if meant and look.meant_order is not None else look.order
+    clip, rgba = np.roll(clip, -order, axis=0), np.roll(rgba, -order, axis=0)
     return render(clip, W, H, attrs=rgba, trace=True, clear_color=(1, 1, 1, 1), **kwargs)
 
 
@@ -407,7 +416,8 @@ _SPECS = [
     ("The cube does not look as intended.",
      lambda k: _cube(k, reverse_depth=True), lambda k: _cube(k)),
     ("The cube does not look as intended.",
-     lambda k: _cube(k, winding_reversed=True, cull="back"), lambda k: _cube(k, cull="back")),
+     lambda k: _cube(k, winding_reversed=True, cull="back"),
+     lambda k: _cube(k, meant=True, cull="back")),
     ("The dark pane on the wall is missing.",
      lambda k: _pixels([_wall(k), _pane(k, 1e-6)]), lambda k: _pixels([_wall(k), _pane(k, 1e-3)])),
     ("The dark pane on the wall is missing.",
@@ -848,8 +858,9 @@ def _right_at(b: BrokenFrame, cause: str, row: int, col: int, value) -> bool:
 def _judged(number, got) -> tuple[str, _Pixel | None]:
     """The verdict on one answer for the case's frame: "nested" (a check inside the student's
     function), "right", "pixel" (the frames agree there), "unmarked" (the frame's cause, at a
-    changed pixel that does not show it), "cause", "copied" (the frame shown's value, given
-    for the redrawn one) or "evidence"."""
+    changed pixel that does not show it), "cause", "intended" (the evidence triangle's number
+    in the intended frame's history, not this frame's), "copied" (the frame shown's value,
+    given for the redrawn one) or "evidence"."""
     if getattr(number, "nested", False):
         return "nested", None
     return _judged_on(_as_frame(number), got)
@@ -871,11 +882,22 @@ def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
     kind = EVIDENCE[cause][0]
     if _matches(kind, value, _evidence(b, cause, p)):
         return "right", p
+    if kind == "triangle" and value in _meant_numbers(b, cause, p):
+        return "intended", p
     if b is not broken_frame(b.number) and _right_at(
         broken_frame(b.number), cause, row, col, value
     ):
         return "copied", p
     return "evidence", p
+
+
+def _meant_numbers(b: BrokenFrame, cause: str, p: _Pixel) -> set:
+    """The numbers the intended frame's history gives the triangles whose numbers in the
+    broken frame's history are the evidence (the same corners on screen): the evidence read
+    off the other history (r84 11-2)."""
+    evidence = set(_evidence(b, cause, p))
+    keys = {_key(b.frame, r.piece) for r in p.mine.records if r.triangle in evidence}
+    return {r.triangle for r in p.meant.records if _key(b.intended, r.piece) in keys}
 
 
 def _same(got, number, args=None) -> bool:
@@ -1064,6 +1086,21 @@ def _other_look(number: int) -> str:
     return f"another wall and {thing}: other colours and depths"
 
 
+def _meant_words(args, number, got) -> str:
+    """The triangle's number read off the intended frame's history (r84 11-2: it passed
+    while both frames of a pair numbered their triangles alike)."""
+    cause, (row, col), value = got
+    return (
+        f"you found the right triangle, but {value} is its number in the intended frame's "
+        "history: the list asks for its number in this frame's own history, and the two "
+        "frames of this pair number "
+        "their triangles differently (they draw them in other orders; in the frame shown "
+        "they happen to agree). Match the triangle by its corners on screen, "
+        "frame.trace.window[k, :, :2] (the same in both frames, whatever its number), and "
+        f"read its number off {_history_hint(number, row, col, 'the frame')}"
+    )
+
+
 def _copied_words(args, number, got) -> str:
     cause, (row, col), _ = got
     return (
@@ -1102,6 +1139,7 @@ DIAGNOSIS_MISTAKES = (
     Mistake("pixel", _pixel_words, fits=_verdict("pixel")),
     Mistake("pixel without the mark", _unmarked_words, fits=_verdict("unmarked")),
     Mistake("cause", _cause_words, fits=_verdict("cause")),
+    Mistake("the intended frame's number", _meant_words, fits=_verdict("intended")),
     Mistake("typed in", _copied_words, fits=_verdict("copied")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
 )
@@ -1155,6 +1193,7 @@ _PRIVATE = tuple(
     PackageAnswer(f, words="read from the checker's private functions: not counted (read the "
                   "evidence off frame.history(row, col) yourself)")
     for f in (_is_cause, _pixel, _evidence, _judged_on.__wrapped__, _right_at, _stages, _ties,
+              _meant_numbers,
               _thin_missed, _reordered, _recoloured, *(sign for sign, _ in _SIGNS.values()))
 )  # fmt: skip
 

@@ -18,6 +18,7 @@ from .exercise import Exercise
 from .report import Report, issue
 from .running import SKIPPED, effective_budget, nested
 from .running import budget as time_budget
+from .tries import apply_hints
 from .value_checks import check_exercise
 
 
@@ -85,19 +86,6 @@ def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
         f"{tries.HINTED_ANSWERS} different answers of yours have failed)"
     )
     return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
-
-
-def apply_hints(words: str, hints) -> str:
-    """``words`` with each ``(text, hint)`` of ``hints`` put in: ``text`` a string replaced
-    where it occurs, or a compiled pattern substituted (the one way every staged hint is put
-    in, in a report and in words said outside it: :func:`.level_of_detail.hinted`).
-
-    >>> apply_hints("level 2 because rho = 4", [("level 2", "level ?")])
-    'level ? because rho = 4'
-    """
-    for text, hint in hints:
-        words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
-    return words
 
 
 def _tells(text, words: str) -> bool:

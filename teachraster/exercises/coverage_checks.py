@@ -265,6 +265,131 @@ def _ties_as_given_words(args, expected, got) -> str:
     )
 
 
+# -- each mistake's own example (r85 01-1: the corner and transposed words ended with "For
+# example, … lies exactly on edge v1→v2: the top-left rule covers it", a tie that has nothing
+# to do with either mistake) ---------------------------------------------------------------
+#: How a mistake's words begin their own example: :func:`compose` then adds no other.
+OWN_EXAMPLE = ". For example, "
+
+
+def _where(xy: np.ndarray, p: np.ndarray) -> str:
+    """Where point ``p`` lies for triangle ``xy``, by its exact edge functions."""
+    if cov.area2(xy) == 0:
+        return "on a triangle of no area (it covers nothing)"
+    e = cov.values_at(xy, p)
+    if (e < 0).any():
+        return f"outside edge {cov.edge_name(int(np.argmin(e)))}"
+    on = [cov.edge_name(k) for k in range(3) if e[k] == 0]
+    if len(on) == 2:
+        return f"exactly on a vertex, on edges {on[0]} and {on[1]}"
+    return f"exactly on edge {on[0]}" if on else "inside the triangle"
+
+
+def _ties(*where: str) -> int:
+    """How many of the points :func:`_where` placed lie on an edge (an example without ties
+    is clearer: it shows the mistake, not the top-left rule)."""
+    return sum(2 if "vertex" in w else "exactly on" in w for w in where)
+
+
+def _first_wrong(args, expected, got):
+    """(case, k, e, g): the first triangle whose image is wrong, with the student's image as
+    given (None when its shape is not the expected one's)."""
+    (case,) = args
+    k = cov.wrong_triangle(got, expected)
+    g = np.asarray(got[k], dtype=bool)
+    return case, k, expected[k], (g if g.shape == expected[k].shape else None)
+
+
+def _own_example(text: str, describe):
+    """Words: ``text``, then an example of this very mistake: ``describe(case, xy, e, g, i,
+    j)`` -> (sentence, ties) for a wrong pixel (i, j), or None where the pixel does not show
+    the mistake; the sentence with the fewest points on an edge is chosen. Where no pixel
+    shows it (a combination of mistakes), ``text`` alone, and :func:`compose` adds the usual
+    example."""
+
+    def words(args, expected, got) -> str:
+        try:
+            case, k, e, g = _first_wrong(args, expected, got)
+        except (TypeError, ValueError, IndexError):  # an answer of another form
+            return text
+        if g is None:
+            return text
+        said = [describe(case, case.triangles[k], e, g, int(i), int(j))
+                for i, j in np.argwhere(g != e)]  # fmt: skip
+        said = sorted((ties, n, t) for n, (t, ties) in enumerate(x for x in said if x))
+        if not said:
+            return text
+        tri = f"triangle {k}: " if len(case.triangles) > 1 else ""
+        missing, extra = int((e & ~g).sum()), int((g & ~e).sum())
+        return f"{text}{OWN_EXAMPLE}{tri}{said[0][2]} ({missing} pixel(s) missing, {extra} extra)"
+
+    return words
+
+
+def _centre(case, i: int, j: int, ox: float = 0.5, oy: float = 0.5) -> np.ndarray:
+    return np.array([case.origin[0] + j + ox, case.origin[1] + i + oy], dtype=float)
+
+
+def _yours(covered) -> str:
+    return "your function covered it" if covered else "your function left it uncovered"
+
+
+def _sampled_at(ox: float, oy: float):
+    """A pixel sampled at (j + ox, i + oy), not its centre: the two points' verdicts."""
+
+    def describe(case, xy, e, g, i, j):
+        c, s = _centre(case, i, j), _centre(case, i, j, ox, oy)
+        if bool(cov.covered(xy, s)[0]) != g[i, j]:  # another mistake decides this pixel
+            return None
+        rule = "covers it" if e[i, j] else "leaves it uncovered"
+        where = _where(xy, c), _where(xy, s)
+        return (f"the centre {cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, so "
+                f"the rule {rule}; you sampled {cov.point(s)}, which lies {where[1]}, and "
+                f"{_yours(g[i, j])}", _ties(*where))  # fmt: skip
+
+    return describe
+
+
+def _moved_vertices(how: str):
+    """Vertices rounded (or truncated) to whole pixels: the triangle the student filled."""
+
+    def describe(case, xy, e, g, i, j):
+        v = {"rounded": np.round, "truncated": np.trunc}[how](xy)
+        c = _centre(case, i, j)
+        if bool(cov.covered(xy, c, vertices=how)[0]) != g[i, j]:
+            return None
+        where = _where(xy, c), _where(v, c)
+        vs = ", ".join(cov.point(q) for q in xy)
+        return (f"v1, v2, v3 = {vs} become {', '.join(cov.point(q) for q in v)}; the centre "
+                f"{cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, but {where[1]} "
+                f"of the {how} triangle, and {_yours(g[i, j])}", _ties(*where))  # fmt: skip
+
+    return describe
+
+
+def _mirrored_pixel(case, xy, e, g, i, j, other: tuple[int, int], what: str):
+    """The student's [i, j] holds the verdict of pixel ``other``: the two pixels' verdicts."""
+    oi, oj = other
+    if not (0 <= oi < e.shape[0] and 0 <= oj < e.shape[1]) or e[oi, oj] != g[i, j]:
+        return None
+    c, d = _centre(case, i, j), _centre(case, oi, oj)
+    where = _where(xy, c), _where(xy, d)
+    state = "covered" if e[i, j] else "not covered"
+    other_state = "covered" if e[oi, oj] else "not covered"
+    return (f"pixel (row {i}, col {j}), centre {cov.point(c)}, lies {where[0]}: it is {state}; "
+            f"your image's [{i}, {j}] holds {what} (row {oi}, col {oj}, centre {cov.point(d)}, "
+            f"{where[1]}: {other_state})", _ties(*where))  # fmt: skip
+
+
+def _transposed_pixel(case, xy, e, g, i, j):
+    return _mirrored_pixel(case, xy, e, g, i, j, (j, i), "the pixel across the diagonal")
+
+
+def _flipped_pixel(case, xy, e, g, i, j):
+    return _mirrored_pixel(case, xy, e, g, i, j, (e.shape[0] - 1 - i, j),
+                           "the pixel in the mirrored row")  # fmt: skip
+
+
 def _rule_knobs(masked: bool, corners: bool) -> Knobs:
     knobs = {
         "owns": [Slip(cov.owns_kind(o), cov.owns_words(o), o) for o in cov.owns_variants()],
@@ -275,26 +400,32 @@ def _rule_knobs(masked: bool, corners: bool) -> Knobs:
                  "counter-clockwise only"),
         ],
         "vertices": [
-            Slip("vertices rounded", "you rounded the vertices to whole pixels: a vertex keeps "
-                 "its position, snapped to the 1/256-px grid only", "rounded"),
-            Slip("vertices truncated", "you truncated the vertices to whole pixels (int()): a "
-                 "vertex keeps its position, snapped to the 1/256-px grid only", "truncated"),
+            Slip("vertices rounded", _own_example(
+                "you rounded the vertices to whole pixels: a vertex keeps its position, "
+                "snapped to the 1/256-px grid only", _moved_vertices("rounded")), "rounded"),
+            Slip("vertices truncated", _own_example(
+                "you truncated the vertices to whole pixels (int()): a vertex keeps its "
+                "position, snapped to the 1/256-px grid only", _moved_vertices("truncated")),
+                "truncated"),
         ],
     }  # fmt: skip
     if corners:
         knobs["at"] = [
-            Slip("pixel corners", "your coverage is the triangle sampled at pixel corners "
-                 "(j, i) instead of the pixel centres (j + 0.5, i + 0.5)", "corners"),
+            Slip("pixel corners", _own_example(
+                "your coverage is the triangle sampled at pixel corners (j, i) instead of the "
+                "pixel centres (j + 0.5, i + 0.5)", _sampled_at(0.0, 0.0)), "corners"),
             # r64 01-1: half a pixel off in one axis was sent to the top-left rule in covers
-            Slip("half a pixel off in x", "your column j is sampled at x = j, not at its "
-                 "centre x = j + 0.5 (the rows are right: y = i + 0.5)", "x at corners"),
-            Slip("half a pixel off in y", "your row i is sampled at y = i, not at its centre "
-                 "y = i + 0.5 (the columns are right: x = j + 0.5)", "y at corners"),
+            Slip("half a pixel off in x", _own_example(
+                "your column j is sampled at x = j, not at its centre x = j + 0.5 (the rows "
+                "are right: y = i + 0.5)", _sampled_at(0.0, 0.5)), "x at corners"),
+            Slip("half a pixel off in y", _own_example(
+                "your row i is sampled at y = i, not at its centre y = i + 0.5 (the columns "
+                "are right: x = j + 0.5)", _sampled_at(0.5, 0.0)), "y at corners"),
         ]  # fmt: skip
     return Knobs(_rule(masked), knobs, most=2)
 
 
-def _mirrored(kind: str, words: str, flip) -> Mistake:
+def _mirrored(kind: str, words, flip) -> Mistake:
     return Mistake(kind, words, gives=lambda case: np.array([flip(e) for e in _expected(case)]))
 
 
@@ -333,8 +464,8 @@ def mistakes(name: str) -> list:
     table = _constant_mistakes(name, masked)
     if name == "fill":
         table += [
-            _mirrored("transposed", TRANSPOSED, lambda e: e.T),
-            _mirrored("upside down", UPSIDE_DOWN, lambda e: e[::-1]),
+            _mirrored("transposed", _own_example(TRANSPOSED, _transposed_pixel), lambda e: e.T),
+            _mirrored("upside down", _own_example(UPSIDE_DOWN, _flipped_pixel), lambda e: e[::-1]),
         ]
     else:
         table.append(
@@ -360,8 +491,9 @@ def explain(args, expected, got) -> str:
 
 def compose(head: str, words: str) -> str:
     """The mistake first, then the pixel that shows it; a placeholder alone (r64: the example
-    of an answer that never changes told the top-left rule)."""
-    if PLACEHOLDER in words:
+    of an answer that never changes told the top-left rule), and a mistake that gives its own
+    example with it (:data:`OWN_EXAMPLE`, r85 01-1)."""
+    if PLACEHOLDER in words or OWN_EXAMPLE in words:
         return words
     return f"{words}. For example, {head}" if words else head
 

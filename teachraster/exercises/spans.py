@@ -320,6 +320,15 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
             f"triangle ({_vertices(xy)}), so no column is covered; yours covers {_span_words(got)}"
         )
     xl, xr = cross
+    kind = _horizontal_edge(xy, y)
+    if kind:  # r85 02: "crosses … from 0.5 to 60.5, so the covered centres are none" read
+        # as a contradiction where the line runs along a bottom edge
+        owns = "," if kind == "top" else "; a bottom edge owns none of its centres,"
+        return (
+            f"the centre line y = {num(y)} runs along the triangle's horizontal {kind} edge "
+            f"({_vertices(xy)}) from x = {_frac(xl)} to {_frac(xr)}{owns} so the covered "
+            f"centres are {_span_words(expected)}; yours: {_span_words(got)}"
+        )
     return (
         f"the centre line y = {num(y)} crosses the triangle ({_vertices(xy)}) from x_l = "
         f"{_frac(xl)} to x_r = {_frac(xr)}, so the covered centres are "
@@ -341,9 +350,12 @@ def _horizontal_fits(args, expected, got) -> bool:
 
 def _horizontal_words(args, expected, got) -> str:
     xy, row = args
-    kind = _horizontal_edge(xy, row + 0.5)
-    rule = "covered (a top edge)" if kind == "top" else "not covered (a bottom edge)"
-    return f"row {row}'s centre line runs along a horizontal {kind} edge: its centres are {rule}"
+    if _horizontal_edge(xy, row + 0.5) == "top":
+        return (f"you left out the centres on row {row}'s centre line, which runs along a "
+                "horizontal top edge: a top edge owns its centres")  # fmt: skip
+    return (f"you covered the centres on row {row}'s centre line, the edge's ends taken as "
+            "crossings: the triangle lies above the line, and the centres on its bottom edge "
+            "go to what lies below it")  # fmt: skip
 
 
 def _ends_fits(args, expected, got) -> bool:

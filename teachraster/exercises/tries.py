@@ -41,6 +41,7 @@ cause each (r21 D2), so there every wrong cause waits.
 from __future__ import annotations
 
 import os
+import re
 import threading
 import time
 
@@ -179,3 +180,18 @@ def forget_hints(name: str | None = None) -> None:
             _HINTED.clear()
         else:
             _HINTED.pop(name, None)
+
+
+def apply_hints(words: str, hints) -> str:
+    """``words`` with each ``(text, hint)`` of ``hints`` put in: ``text`` a string replaced
+    where it occurs, or a compiled pattern substituted (the one way every staged hint is put
+    in, in a report and in words said outside it: :func:`.level_of_detail.hinted`). It lives
+    here, not in :mod:`.checks`, which imports every exercise: there, level_of_detail and the
+    checks imported each other.
+
+    >>> apply_hints("level 2 because rho = 4", [("level 2", "level ?")])
+    'level ? because rho = 4'
+    """
+    for text, hint in hints:
+        words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
+    return words

@@ -152,8 +152,13 @@ DEPTH_MISTAKES = [
             "buffer holds", gives=lambda d, w: _simulate(-np.asarray(d, dtype=float), w)),
     Mistake("all pass", "your function lets every fragment pass, always",
             gives=lambda d, w: np.ones(len(d), dtype=bool)),
-    Mistake("none pass", "your function lets no fragment pass, ever",
-            gives=lambda d, w: np.zeros(len(d), dtype=bool)),
+    # r85 04: a buffer started at 0 was told only its symptom ("lets no fragment pass,
+    # ever"); its answers are a placeholder's all False (no depth lies below 0), so both
+    # are said, the cause first
+    _mistake("cleared to 0", "no fragment passes, ever: you started the buffer at 0, the "
+             "nearest depth, and nothing is strictly nearer than 0 (or False is left in for "
+             "every fragment). GL clears the buffer to the far value, 1.0; here it starts "
+             "empty, so the first fragment passes whatever its depth", start=0.0),
 ]  # fmt: skip
 
 
