@@ -83,6 +83,10 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
          (slope, 16, 16, TILE, np.full((TILE, TILE), 0.45))),
         ("a sloped triangle reaching in front at the tile's near corner",
          (slope, 0, 0, TILE, np.full((TILE, TILE), 0.33))),
+        # the farthest vertex behind the tile, the tile's part of the plane in front: tells
+        # "the farthest vertex" from "the plane's farthest corner" (both reject the case above)
+        ("a sloped triangle whose far vertex lies behind the tile, its part here in front",
+         (slope, 0, 0, TILE, full)),
         ("the tile's farthest pixel decides", (slope, 8, 16, TILE,
                                                _with(np.full((TILE, TILE), 0.2), (7, 7), 0.6))),
         # r49/r64 08-5: the plane alone failed one random tie only
