@@ -955,3 +955,13 @@ def test_attribute_sheets_are_drawn_far_to_near_wherever_they_overlap():
         assert bad == 0, args
     # the test sees the fault: the old sort by centre depth fails in a low turned view
     assert _overdrawn_nearer(got[-1])[0] > 100
+
+
+def test_value_axis_labels_only_where_they_do_not_overlap():
+    # review r96 03-2: looking down, "0" and "0.5" were printed on one another
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    calls = [("valueTicks", [30.0, e, 8.8]) for e in (0.45, 1.3, 1.5, 1.57)]
+    got = call_js(parts, calls)
+    for (_, (scale, e, z)), ticks in zip(calls, got):
+        assert ticks == ([0, 0.5, 1] if scale * z * np.cos(e) / 2 >= 24 else [0])
+    assert got[0] == [0, 0.5, 1] and got[-1] == [0]

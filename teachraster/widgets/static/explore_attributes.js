@@ -197,6 +197,13 @@ export function drawnSheets(xy, w, f, names, W, H, view, exact = true) {
     .map((i) => ({ sheet: polys[i].sheet, s: polys[i].pts.map(cam.project) }));
 }
 
+// the value-axis ticks (of 0, ½, 1) labelled when a value of 1 stands zScale high, the view
+// at `scale` px a unit and `elevation`: all three while ½ is 24 px (a label's height) up
+// the screen, else 0 alone
+export function valueTicks(scale, elevation, zScale) {
+  return scale * zScale * Math.cos(elevation) / 2 >= 24 ? [0, 0.5, 1] : [0];
+}
+
 function mount(el, data, host) {
   let state = { w: data.w, show: { correct: true, affine: true, fw: false, inv: false },
     ...host.state() };
@@ -280,6 +287,10 @@ function mount(el, data, host) {
     // the view fitted to what is drawn at this turn (review r78 03-3), above the key line
     const points = polys.flatMap((poly) => poly.pts).concat([[0, 0, zScale]]);
     fitView(cam, points, labels, { left: 8, top: 8, right: 632, bottom: 440 });
+    // seen from high above the axis is short and its labels 0, ½, 1 fell on one another
+    // (review r96 03-2): only those a label's height apart are kept
+    const shown = valueTicks(cam.scale, cam.elevation, zScale);
+    labels.splice(0, 3, ...labels.slice(0, 3).filter((l, k) => shown.includes([0, 0.5, 1][k])));
     drawPolygons(ctx, cam, polys, true); // each overlap in its true order (r96 03-1)
     // where the two f sheets cross (see sheetPieces), drawn over them (r89 03-1)
     for (const [a, b] of crossing) {
