@@ -896,3 +896,72 @@ def test_end_point_labels_keep_off_the_lit_squares_where_they_can():
     (flush,) = call_js(LINES, [("labelAt", [380, 100, 60, 400, [], 15, [0, 0], None,
                                             {"soft": [[300, 80, 36, 50]], "far": 32}])])  # fmt: skip
     assert flush == [338, 122]
+
+
+def _overdrawn_nearer(drawn: list[dict], n: int = 250) -> tuple[int, int]:
+    """Screen points where a farther piece is drawn over a nearer one, of points covered twice."""
+    s = [np.array(piece["s"]) for piece in drawn]
+    allp = np.concatenate(s)
+    gx, gy = np.meshgrid(
+        np.linspace(allp[:, 0].min(), allp[:, 0].max(), n),
+        np.linspace(allp[:, 1].min(), allp[:, 1].max(), n),
+    )
+    px, py = gx.ravel(), gy.ravel()
+    last = np.full(px.shape, -np.inf)  # depth of the piece drawn last over each point
+    bad = twice = np.zeros(px.shape, bool)
+    for q in s:  # in the order drawn; each piece fanned into triangles
+        depth = np.full(px.shape, np.nan)
+        for k in range(1, len(q) - 1):
+            a, b, c = q[0], q[k], q[k + 1]
+            det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+            if abs(det) < 1e-12:
+                continue
+            l1 = ((px - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (py - a[1])) / det
+            l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) / det
+            inside = np.minimum(np.minimum(l1, l2), 1 - l1 - l2) > 1e-6
+            depth[inside] = ((1 - l1 - l2) * a[2] + l1 * b[2] + l2 * c[2])[inside]
+        hit = ~np.isnan(depth)
+        twice = twice | (hit & np.isfinite(last))
+        bad = bad | (hit & (depth < last - 1e-6))
+        last = np.where(hit, np.maximum(last, np.nan_to_num(depth, nan=-np.inf)), last)
+    return int(bad.sum()), int(twice.sum())
+
+
+def test_attribute_sheets_are_drawn_far_to_near_wherever_they_overlap():
+    # review r96 03-1: dragged up (a low view), sorting the pieces' centres put orange and blue
+    # facets over one another in turn, a checker pattern; now, from every view, no piece is
+    # drawn over a nearer one where the two overlap on the screen
+    xy, f = [[2.0, 1.0], [13.0, 5.0], [5.0, 12.0]], [0.2, 0.9, 0.5]  # lesson 03's
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    views = [  # the opening view, r96's drag 150 px up (to the lowest elevation), turns
+        {"yaw": -0.5, "elevation": 0.45},
+        {"yaw": -0.5, "elevation": 0.05},
+        {"yaw": 1.0, "elevation": 0.15},
+        {"yaw": 2.6, "elevation": 0.05},
+        {"yaw": -2.2, "elevation": 0.8},
+        {"yaw": 0.3, "elevation": 1.5},
+    ]
+    calls = [
+        ("drawnSheets", [xy, [1.0, 1.0, w3], f, ["correct", "affine"], 16, 14, view])
+        for w3 in (2.0, 8.0)
+        for view in views
+    ]
+    low = ("drawnSheets", [xy, [1.0, 1.0, 8.0], f, ["correct", "affine"], 16, 14, views[2]])
+    got = call_js(parts, [*calls, (low[0], [*low[1], False])])
+    for (_, args), drawn in zip(calls, got[:-1]):
+        assert {piece["sheet"] for piece in drawn} == {"correct", "affine"}
+        bad, twice = _overdrawn_nearer(drawn)
+        assert twice > 500, args  # the sheets do overlap on the screen
+        assert bad == 0, args
+    # the test sees the fault: the old sort by centre depth fails in a low turned view
+    assert _overdrawn_nearer(got[-1])[0] > 100
+
+
+def test_value_axis_labels_only_where_they_do_not_overlap():
+    # review r96 03-2: looking down, "0" and "0.5" were printed on one another
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    calls = [("valueTicks", [30.0, e, 8.8]) for e in (0.45, 1.3, 1.5, 1.57)]
+    got = call_js(parts, calls)
+    for (_, (scale, e, z)), ticks in zip(calls, got):
+        assert ticks == ([0, 0.5, 1] if scale * z * np.cos(e) / 2 >= 24 else [0])
+    assert got[0] == [0, 0.5, 1] and got[-1] == [0]

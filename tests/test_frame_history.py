@@ -434,6 +434,12 @@ def test_frame_inspector_views_clicks_and_scenes():
     assert shaded  # the cube covers this quad
     assert "quad of rows 10–11, cols 14–15" in w.table.value
     assert f"{4 * len(shaded)} lanes launched" in w.table.value
+    # review r96 11-1: the counts Question 3 asks for start a line of their own, no line long
+    from teachraster.widgets.frame_inspector import quad_text
+
+    text = quad_text(w.frame, 10, 14)
+    assert text.splitlines()[1].startswith(f"{4 * len(shaded)} lanes launched (4 each), ")
+    assert max(len(line) for line in text.splitlines()) <= 90
     w.view.value = "overdraw"
     assert "quad of rows" not in w.table.value
     w.click_at(100.0, 100.0)  # outside the frame: nothing changes

@@ -148,9 +148,10 @@ def marker_xy(row: int, col: int, reach: float = 3.0):
 
 
 def quad_text(frame, row: int, col: int) -> str:
-    """One line under the history in the quad overshading view: the triangles that shaded
-    the 2×2 quad of pixel (``row``, ``col``), each launching its four lanes, and the helpers
-    among them (the overlay's value there, from the same counts)."""
+    """The lines under the history in the quad overshading view: the triangles that shaded
+    the 2×2 quad of pixel (``row``, ``col``), then, on a line of its own (review r96 11-1:
+    one long line ran off a laptop-wide inspector), the lanes launched (four per triangle)
+    and the helpers among them (the overlay's value there, from the same counts)."""
     r0, c0 = row // 2 * 2, col // 2 * 2
     where = f"quad of rows {r0}–{r0 + 1}, cols {c0}–{c0 + 1}"
     shaded = quad_triangles(frame, row, col)
@@ -158,7 +159,7 @@ def quad_text(frame, row: int, col: int) -> str:
         return f"{where}: no triangle shaded a pixel of it, no lanes launched"
     lanes, useful = 4 * len(shaded), sum(shaded.values())
     each = ", ".join(f"{t} ({n} px)" for t, n in shaded.items())
-    return (f"{where}: shaded by {len(shaded)} triangle(s), {each}: {lanes} lanes launched "
+    return (f"{where}: shaded by {len(shaded)} triangle(s), {each}:\n{lanes} lanes launched "
             f"(4 each), {lanes - useful} helpers ({(lanes - useful) / lanes:.0%})")  # fmt: skip
 
 

@@ -165,6 +165,45 @@ const SURFACES = [
   ["inv", "1/w (a plane)", OKABE.green],
 ];
 
+// The polygons of the picture for drawPolygons: the screen and the triangle (grey, under
+// everything) and the sheets `names` (see sheetPieces) at a value of 1 standing zScale high.
+export function scenePolys(xy, w, f, names, W, H, zScale) {
+  const polys = surfacePieces([[0, 0], [W, 0], [W, H], [0, H]], () => 0, 6,
+    { fill: "#eee", alpha: 1, stroke: "#ccc", bias: -1e6 });
+  polys.push({ pts: xy.map(([x, y]) => [x, y, 0]), fill: "#bbb", alpha: 0.8, stroke: "#555",
+    bias: -1e5 });
+  const colours = Object.fromEntries(SURFACES.map(([name, , colour]) => [name, colour]));
+  const { pieces, crossing } = sheetPieces(xy, w, f, names);
+  for (const piece of pieces) {
+    for (const name of names) {
+      polys.push({ pts: piece[name].map(([x, y, v]) => [x, y, v * zScale]), sheet: name,
+        fill: colours[name], alpha: 0.55, stroke: "rgba(255,255,255,0.25)" });
+    }
+  }
+  return { polys, crossing };
+}
+
+// for the tests: the sheets' polygons projected for a camera turned to `view` ({yaw,
+// elevation}), in the order drawn (`exact`: exactOrder; else by centre depth, as before r96)
+export function drawnSheets(xy, w, f, names, W, H, view, exact = true) {
+  const zScale = 0.55 * Math.max(W, H);
+  const cam = camera3d({ centre: [W / 2, H / 2, zScale / 2], ...view });
+  const { polys } = scenePolys(xy, w, f, names, W, H, zScale);
+  const depth = (poly) => poly.pts.reduce((acc, p) => acc + cam.project(p)[2], 0) /
+    poly.pts.length + (poly.bias || 0);
+  const order = exact ? exactOrder(cam, polys)
+    : polys.map((_, i) => i).sort((a, b) => depth(polys[a]) - depth(polys[b]));
+  return order.filter((i) => polys[i].sheet)
+    .map((i) => ({ sheet: polys[i].sheet, s: polys[i].pts.map(cam.project) }));
+}
+
+// the value-axis ticks (of 0, ½, 1) labelled when a value of 1 stands zScale high, the view
+// at `scale` px a unit and `elevation`: all three while ½ is 24 px (a label's height) up
+// the screen, else 0 alone
+export function valueTicks(scale, elevation, zScale) {
+  return scale * zScale * Math.cos(elevation) / 2 >= 24 ? [0, 0.5, 1] : [0];
+}
+
 function mount(el, data, host) {
   let state = { w: data.w, show: { correct: true, affine: true, fw: false, inv: false },
     ...host.state() };
@@ -205,23 +244,12 @@ function mount(el, data, host) {
     if (cached.key === key) return cached;
     const { xy, f } = data;
     const w = state.w;
-    const polys = surfacePieces([[0, 0], [W, 0], [W, H], [0, H]], () => 0, 6,
-      { fill: "#eee", alpha: 1, stroke: "#ccc", bias: -1e6 });
-    polys.push({ pts: xy.map(([x, y]) => [x, y, 0]), fill: "#bbb", alpha: 0.8, stroke: "#555",
-      bias: -1e5 });
     // every w equal: the affine sheet is the perspective-correct one; drawn twice, the two
     // coplanar sheets z-fought into a speckle (review r9, lesson 03 c23): one is drawn
     const same = w.every((v) => v === w[0]) && state.show.correct;
     const names = SURFACES.map(([name]) => name)
       .filter((name) => state.show[name] && !(same && name === "affine"));
-    const colours = Object.fromEntries(SURFACES.map(([name, , colour]) => [name, colour]));
-    const { pieces, crossing } = sheetPieces(xy, w, f, names);
-    for (const piece of pieces) {
-      for (const name of names) {
-        polys.push({ pts: piece[name].map(([x, y, v]) => [x, y, v * zScale]),
-          fill: colours[name], alpha: 0.55, stroke: "rgba(255,255,255,0.25)" });
-      }
-    }
+    const { polys, crossing } = scenePolys(xy, w, f, names, W, H, zScale);
     cached = { key, polys, crossing, gap: largestGap(xy, w, f) };
     return cached;
   }
@@ -259,7 +287,11 @@ function mount(el, data, host) {
     // the view fitted to what is drawn at this turn (review r78 03-3), above the key line
     const points = polys.flatMap((poly) => poly.pts).concat([[0, 0, zScale]]);
     fitView(cam, points, labels, { left: 8, top: 8, right: 632, bottom: 440 });
-    drawPolygons(ctx, cam, polys);
+    // seen from high above the axis is short and its labels 0, ½, 1 fell on one another
+    // (review r96 03-2): only those a label's height apart are kept
+    const shown = valueTicks(cam.scale, cam.elevation, zScale);
+    labels.splice(0, 3, ...labels.slice(0, 3).filter((l, k) => shown.includes([0, 0.5, 1][k])));
+    drawPolygons(ctx, cam, polys, true); // each overlap in its true order (r96 03-1)
     // where the two f sheets cross (see sheetPieces), drawn over them (r89 03-1)
     for (const [a, b] of crossing) {
       line3d(ctx, cam, [a[0], a[1], a[2] * zScale], [b[0], b[1], b[2] * zScale], "#222", 2.5);

@@ -25,15 +25,17 @@ export function camera3d({ yaw = -0.45, elevation = 0.6, scale = 20, centre = [0
   return cam;
 }
 
-// Draw polygons {pts: [[x, y, z], ...], fill, alpha, stroke, width} far to near.
-export function drawPolygons(ctx, cam, polys) {
+// Draw polygons {pts: [[x, y, z], ...], fill, alpha, stroke, width} far to near. With
+// `exact`, in the order of exactOrder (convex pieces only), else sorted by centre depth.
+export function drawPolygons(ctx, cam, polys, exact = false) {
   const items = polys.map((poly) => {
     const s = poly.pts.map(cam.project);
     const depth = s.reduce((acc, q) => acc + q[2], 0) / s.length + (poly.bias || 0);
     return { poly, s, depth };
   });
-  items.sort((a, b) => a.depth - b.depth);
-  for (const { poly, s } of items) {
+  const order = exact ? exactOrder(cam, polys) : items.map((_, i) => i)
+    .sort((a, b) => items[a].depth - items[b].depth);
+  for (const { poly, s } of order.map((i) => items[i])) {
     ctx.beginPath();
     s.forEach((q, i) => (i ? ctx.lineTo(q[0], q[1]) : ctx.moveTo(q[0], q[1])));
     if (s.length > 2) ctx.closePath();
@@ -49,6 +51,105 @@ export function drawPolygons(ctx, cam, polys) {
       ctx.stroke();
     }
   }
+}
+
+// the part of convex polygon a (2-D points) inside convex polygon b (Sutherland-Hodgman)
+function clipConvex(a, b) {
+  const area = b.reduce((acc, p, i) => {
+    const q = b[(i + 1) % b.length];
+    return acc + p[0] * q[1] - q[0] * p[1];
+  }, 0);
+  let out = a;
+  for (let i = 0; i < b.length && out.length; i++) {
+    const [p, q] = [b[i], b[(i + 1) % b.length]];
+    const side = (r) => Math.sign(area) * ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+    const next = [];
+    out.forEach((r, k) => {
+      const t = out[(k + 1) % out.length];
+      const [dr, dt] = [side(r), side(t)];
+      if (dr >= 0) next.push(r);
+      if ((dr > 0 && dt < 0) || (dr < 0 && dt > 0)) {
+        const u = dr / (dr - dt);
+        next.push([r[0] + u * (t[0] - r[0]), r[1] + u * (t[1] - r[1])]);
+      }
+    });
+    out = next;
+  }
+  return out;
+}
+
+// a convex polygon's area and centre (2-D)
+function areaCentre(pts) {
+  let [a, cx, cy] = [0, 0, 0];
+  pts.forEach((p, i) => {
+    const q = pts[(i + 1) % pts.length];
+    const c = p[0] * q[1] - q[0] * p[1];
+    a += c;
+    cx += (p[0] + q[0]) * c;
+    cy += (p[1] + q[1]) * c;
+  });
+  return Math.abs(a) < 1e-12 ? [0, [0, 0]] : [Math.abs(a) / 2, [cx / (3 * a), cy / (3 * a)]];
+}
+
+// the depth of projected polygon s (fanned into triangles) over the screen point p
+export function depthAt(s, p) {
+  let best = [-Infinity, 0];
+  for (let k = 1; k + 1 < s.length; k++) {
+    const [a, b, c] = [s[0], s[k], s[k + 1]];
+    const det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    if (Math.abs(det) < 1e-12) continue;
+    const l1 = ((p[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (p[1] - a[1])) / det;
+    const l2 = ((b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1])) / det;
+    const l0 = 1 - l1 - l2;
+    const inside = Math.min(l0, l1, l2);
+    if (inside > best[0]) best = [inside, l0 * a[2] + l1 * b[2] + l2 * c[2]];
+  }
+  return best[1];
+}
+
+// The order (indices into polys) to paint convex polygons far to near so that, wherever two
+// overlap on the screen, the nearer one there is drawn later (review r96 03-1: sorting the
+// centres interleaved two nearly parallel sheets in a low view, facet by facet). Each pair
+// whose pictures overlap is compared at the centre of the overlap; the order is a
+// topological sort of those comparisons, ties (and any cycle) by centre depth.
+export function exactOrder(cam, polys) {
+  const items = polys.map((poly) => {
+    const s = poly.pts.map(cam.project);
+    const xs = s.map((q) => q[0]);
+    const ys = s.map((q) => q[1]);
+    return { s, bias: poly.bias || 0, box: [Math.min(...xs), Math.max(...xs), Math.min(...ys),
+      Math.max(...ys)], depth: s.reduce((acc, q) => acc + q[2], 0) / s.length + (poly.bias || 0) };
+  });
+  const n = items.length;
+  const after = items.map(() => []);
+  const count = new Array(n).fill(0);
+  for (let i = 0; i < n; i++) {
+    const a = items[i];
+    for (let j = i + 1; j < n; j++) {
+      const b = items[j];
+      if (a.box[1] <= b.box[0] || b.box[1] <= a.box[0] || a.box[3] <= b.box[2] ||
+        b.box[3] <= a.box[2]) continue;
+      const [area, c] = areaCentre(clipConvex(a.s, b.s));
+      if (area < 1e-6) continue;
+      const [da, db] = [depthAt(a.s, c) + a.bias, depthAt(b.s, c) + b.bias];
+      if (da === db) continue;
+      const [far, near] = da < db ? [i, j] : [j, i];
+      after[far].push(near);
+      count[near] += 1;
+    }
+  }
+  const order = [];
+  const done = new Array(n).fill(false);
+  const byDepth = items.map((_, i) => i).sort((a, b) => items[a].depth - items[b].depth);
+  while (order.length < n) {
+    // the farthest piece that nothing still undrawn must go under; in a cycle, the farthest
+    const next = byDepth.find((i) => !done[i] && count[i] === 0) ??
+      byDepth.find((i) => !done[i]);
+    done[next] = true;
+    order.push(next);
+    for (const k of after[next]) count[k] -= 1;
+  }
+  return order;
 }
 
 // a surface z = f(x, y) over the quadrilateral or triangle `corners` (bilinear in its
