@@ -187,6 +187,7 @@ export function orbitDrag(canvas, cam, onChange) {
   canvas.addEventListener("pointerdown", (e) => {
     if (e.button !== 0) return;
     last = [e.clientX, e.clientY];
+    cam.dragging = true; // a view may draw faster, less exactly, while it turns (r96 03-1)
     capture(canvas, e);
     e.preventDefault();
     canvas.focus({ preventScroll: true });
@@ -199,7 +200,12 @@ export function orbitDrag(canvas, cam, onChange) {
     last = [e.clientX, e.clientY];
     onChange(e);
   });
-  const up = () => (last = null);
+  const up = (e) => {
+    if (!last) return;
+    last = null;
+    cam.dragging = false;
+    onChange(e); // the picture at rest, drawn exactly
+  };
   canvas.addEventListener("pointerup", up);
   canvas.addEventListener("pointercancel", up);
   onKeys(canvas, (e) => {
