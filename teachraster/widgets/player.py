@@ -298,8 +298,10 @@ class FillPlayer(Holdable):
             # a serial loop, one step at a time; a GPU tests a block's pixels at once
             # (review r93 02-2: "How a GPU fills" titled a loop with bail-out)
             "How a serial reference loop fills a triangle, step by step",
-            "A GPU runs the tests of a whole block of pixels at once. Press play, drag the step slider or use the buttons (all in the page); switching "
-            "the method, the interpolation or the samples asks the kernel.",
+            # one line shorter than the two sentences it was (test_browser_player: the player
+            # with its comparison closed must fit 860 px, it measured 877)
+            "A GPU tests a block of pixels at once. Play, drag or step (in the page); the "
+            "menus ask the kernel.",
         )
         options = [labelled("method", self.method)]
         # Without attributes the interpolation changes nothing on show: no toggle for it.
