@@ -1358,7 +1358,7 @@ def test_history_legend_covers_no_tile_or_marker(number):
     """Review r21 D1: at frames 1 and 7 the rejected nearer fragment (the mark of 'depth
     function', the highest depth) lay under the legend, which had room for two rows and had
     three. At the inspector's figure size, after a draw, no legend overlaps a tile or a
-    buffer marker at any changed pixel (every third), in either frame of the pair."""
+    buffer marker at any changed pixel (every third, at most ~60), in either frame of the pair."""
     import matplotlib
     import matplotlib.pyplot as plt
 
@@ -1382,7 +1382,10 @@ def _legend_covers(broken, plot_history, plt) -> list:
             rows, cols = np.nonzero((frame.color != broken.intended.color).any(axis=2)
                                     | (broken.frame.color != frame.color).any(axis=2))  # fmt: skip
             pixels = sorted(zip(rows.tolist(), cols.tolist()))
-            changed = [p for p in pixels if broken.frame.history(*p).records][::3]
+            changed = [p for p in pixels if broken.frame.history(*p).records]
+            # every third, at most ~60 spread over the frame: frame 1 changes 839 pixels,
+            # and every third of them took 286 s of one CI worker (stop 43's durations)
+            changed = changed[:: max(3, len(changed) // 60)]
             assert changed
             for row, col in changed:
                 ax.clear()
