@@ -266,8 +266,9 @@ def _within_sides(ax, points, offsets, size: float) -> list:
         if (dx > 0 and x + dx + reach > width) or (dx < 0 and x + dx - reach < 0):
             dx = -dx
         # a label that still overhangs the side (its half width, 0.65 size, past it) was cut
-        # by the frame (review r91 04-D: lesson 04's v2, 1.25 px from the side; r93 02-6: 02's v2 by the key): moved in
-        # until it touches the side, and above or below its dot if it would cover the dot
+        # by the frame (review r91 04-D: lesson 04's v2, 1.25 px from the side; r93 02-6:
+        # lesson 02's v2, by the key): moved in until it touches the side, and above or
+        # below its dot if it would cover the dot
         half = 0.85 * size  # two bold characters in their padded box
         inward = min(max(dx, half - x), width - half - x)
         if inward != dx:
