@@ -7,7 +7,6 @@ one more entry in :data:`EXERCISES`.
 
 from __future__ import annotations
 
-import re
 import sys
 from collections.abc import Callable
 from dataclasses import replace
@@ -77,7 +76,7 @@ def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
     each of ``hints``' texts as its hint, and a note that the next failing check says more
     (:attr:`~.exercise.Exercise.hints`; a check that fails otherwise, a TypeError, is not
     counted)."""
-    telling = any(_tells(text, f.explanation) for f in report.failures for text, _ in hints)
+    telling = any(tries.tells(text, f.explanation) for f in report.failures for text, _ in hints)
     if not telling or not tries.hinted_check(name, _answer(report)):
         return report if note is None else replace(report, tries=note)
     failures = [replace(f, explanation=apply_hints(f.explanation, hints)) for f in report.failures]
@@ -86,12 +85,6 @@ def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
         f"{tries.HINTED_ANSWERS} different answers of yours have failed)"
     )
     return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
-
-
-def _tells(text, words: str) -> bool:
-    """Do ``words`` hold ``text`` (a string, or a compiled pattern whose numbers differ from
-    case to case: r64 04: a crossing's t and point)?"""
-    return bool(text.search(words)) if isinstance(text, re.Pattern) else text in words
 
 
 def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:

@@ -195,3 +195,14 @@ def apply_hints(words: str, hints) -> str:
     for text, hint in hints:
         words = text.sub(hint, words) if isinstance(text, re.Pattern) else words.replace(text, hint)
     return words
+
+
+def tells(text, words: str) -> bool:
+    """Do ``words`` hold ``text``, a hint's string or compiled pattern (one whose numbers
+    differ from case to case: r64 04, a crossing's t and point)? The same string-or-pattern
+    rule as :func:`apply_hints`.
+
+    >>> tells(re.compile(r"t = [0-9.]+"), "at t = 0.25"), tells("level 2", "level 3")
+    (True, False)
+    """
+    return bool(text.search(words)) if isinstance(text, re.Pattern) else text in words
