@@ -1342,7 +1342,10 @@ def test_05a_r100_q_top_leaves_the_rings_to_q_order_and_the_near_plane_is_w_ge_n
     assert "only gives $-w \\le w$, so $w \\ge 0$, but not $w > 0$" in text
     small, large = ns.layer_share["integrated, DDR5-5600"]
     _, large_4090 = ns.layer_share["discrete, RTX 4090"]
-    assert f"takes {100 * large:.1f} % of the integrated GPU's bandwidth ({100 * large_4090:.1f} %" in text
+    assert (
+        f"takes {100 * large:.1f} % of the integrated GPU's bandwidth ({100 * large_4090:.1f} %"
+        in text
+    )
 
 
 @pytest.mark.notebook
