@@ -1315,6 +1315,40 @@ def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
 
 
 @pytest.mark.notebook
+def test_05a_r100_q_top_leaves_the_rings_to_q_order_and_the_near_plane_is_w_ge_n():
+    """Review r100 05a-1: q_top's answer names the wrong ring only, not which stick lies over
+    which at the other two (q_order's question). 05a-2: the near plane keeps w >= n > 0 for a
+    perspective matrix's vertices (z + w = 2f(w - n)/(f - n), checked on the section's
+    matrix), while arbitrary clip coordinates get only w >= 0 from -w <= z <= w: the eye
+    plane. The bandwidth shares the text quotes are the ones printed (r100 cosmetic)."""
+    ns = lesson("05a_zbuffer")
+    ask = next(c for c in _cells("05a_zbuffer", "code") if "q_top = Predict(" in c)
+    said = eval("(" + ask[ask.index("explain=") + 8 : ask.rindex(",\n)")] + ")", vars(ns))
+    assert ns.rgb_wrong[0] in said and f"{ns.rgb_wrong_top} over {ns.rgb_wrong_under}" in said
+    for top, under in ns.crossings:  # the other rings' order stays q_order's to read
+        if (top, under) != (ns.rgb_wrong_top, ns.rgb_wrong_under):
+            assert f"{top} over {under}" not in said and f"{under}, drawn after" not in said
+    assert "at both of its crossings" not in said
+    # the near plane: z + w = 2f(w - n)/(f - n) for any point of tr.perspective(..., n, f)
+    n, f = ns.clip_near, ns.clip_far
+    assert ns.near_is_w_n and f > n > 0
+    pts = np.random.default_rng(0).uniform(-5, 5, (50, 3))
+    clip = np.column_stack([pts, np.ones(50)]) @ ns.proj.T
+    assert np.allclose(clip[:, 2] + clip[:, 3], 2 * f * (clip[:, 3] - n) / (f - n))
+    assert ((clip[:, 2] >= -clip[:, 3]) == (clip[:, 3] >= n)).all()
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    assert "the near plane keeps $w > 0$" not in text
+    assert "$z + w = 2f(w - n)/(f - n)$" in text and "$w \\ge n$" in text
+    assert "only gives $-w \\le w$, so $w \\ge 0$, but not $w > 0$" in text
+    small, large = ns.layer_share["integrated, DDR5-5600"]
+    _, large_4090 = ns.layer_share["discrete, RTX 4090"]
+    assert (
+        f"takes {100 * large:.1f} % of the integrated GPU's bandwidth ({100 * large_4090:.1f} %"
+        in text
+    )
+
+
+@pytest.mark.notebook
 def test_05b_colours_by_attribute_reverse_question_and_where_the_values_lie():
     """Review r38 05b: the squares' colours are read from the loop, not from triangle numbers
     (the Try-it that draws blue first then counts right); q_reverse asks about float32; and

@@ -1714,7 +1714,7 @@ def test_10_r36_items():
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "Kanter" in md and "draw-stream binning rasterizer" in md
     assert "Z compression" in md and "Fast Z clear" in md and "Why 8×8" in md
-    assert "down the upper half of both sides" in md
+    assert "run down both sides to about the middle" in md  # review r100 10-4
     from teachraster.plotting.tiles import early_z_counts
 
     sphere = ns.frames["uv_sphere"]  # r52: the twice-shaded pixels lie in the upper half
@@ -1730,6 +1730,66 @@ def test_10_r36_items():
         assert [cells[(rows + 1, j)] for j in range(4)] == ["pixels", "", "no test", "tested"]
         assert cells[(rows + 2, 2)] == f"{ns.counters.pixels_accepted:,}"
         assert cells[(rows + 2, 0)] == "count"  # review r52: the numbers' row is labelled
+    finally:
+        plt.close(fig)
+
+
+@pytest.mark.notebook
+def test_10_r100_items():
+    """Review r100, lesson 10: window depth is affine on the screen per lesson 05b (10-1, not
+    05a); the replay's Hi-Z bound on the triangle's side is the plane at the tile's corners
+    clamped to the triangle's depths, never above its fragments' (10-2: a GPU bounding the
+    triangle the same way rejects at most what the replay rejects, a tighter one may reject
+    more); the yellow pixels' place is what the cell prints (10-4); the counters' pixel header
+    fits its cells (10-3)."""
+    import json
+
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting.tiles import plot_block_counters
+
+    def markdown(name):
+        cells = json.loads((ROOT / "notebooks" / f"{name}.ipynb").read_text())["cells"]
+        return " ".join(" ".join("".join(c["source"]) for c in cells
+                                 if c["cell_type"] == "markdown").split())  # fmt: skip
+
+    md = markdown("10_tiles_and_hierarchical_z")
+    assert "affine on the screen (lesson 05a)" not in md
+    assert "affine on the screen (lesson 05b, section 1" in md and "Ritschel" in md
+    assert "Window depth is affine in screen space" in markdown("05b_depth_precision")
+    assert "affine" not in markdown("05a_zbuffer")
+    code = (ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text()
+    assert "a GPU rejects at most what the replay rejects" not in code
+    assert "the same way rejects at most what the replay rejects" in code
+    ns = lesson("10_tiles_and_hierarchical_z")
+    frame = ns.frames["uv_sphere"]
+    hiz = frame.trace.hiz
+    tested = hiz.block_tested
+    own = frame.trace.window[hiz.block_triangle, :, 2]  # each block's triangle's depths
+    first = np.full(len(hiz.block_triangle), np.inf)  # each block's nearest fragment
+    np.minimum.at(first, hiz.fragment_block, frame.trace.fragment_depth)
+    nearest = hiz.block_nearest[tested]
+    assert (nearest >= own[tested].min(axis=1)).all()  # clamped to the triangle's depths
+    assert (nearest <= first[tested]).all()  # never above the covered pixels' bound...
+    assert (nearest < first[tested]).any()  # ...and below it somewhere: that one is tighter
+    # 10-4: the numbers quoted are the ones printed
+    share = [f"{100 * s:.1f} %" for s in ns.twice_share]
+    assert (f"{share[0]} of the covered pixels in the top quarter are shaded twice, {share[1]} in "
+            f"the second, and {share[2]} and {share[3]} in the two below the middle: "
+            f"{100 * ns.twice_above:.1f} % of the twice-shaded") in md  # fmt: skip
+    assert ns.twice_share[0] > 4 * ns.twice_share[1] > 4 * ns.twice_share[2] > ns.twice_share[3]
+    assert "along the top of the rim" not in md
+    fig, ax = plt.subplots(figsize=(4.2, 4.7))  # the counters' panel of the lesson's figure
+    try:
+        table = plot_block_counters(ax, ns.fill).table
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        header = len(ns.counters.table()) + 1
+        for j in (2, 3):  # "no test", "tested": inside their cells with room to spare
+            cell = table.get_celld()[(header, j)]
+            text = cell.get_text().get_window_extent(renderer)
+            box = cell.get_window_extent(renderer)
+            assert text.width < 0.85 * box.width and cell.get_text().get_fontweight() == "normal"
     finally:
         plt.close(fig)
 
