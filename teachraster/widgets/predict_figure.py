@@ -152,6 +152,9 @@ class FigurePrediction(HoldsAnswer, Explorable):
             self._update_standin()  # the verdict goes into the saved notebook
             self._release_held()  # and the answer cell's output shows (``hold()``)
 
+    def _release_widget(self):
+        return self  # the page's view of this widget takes the released class
+
     @property
     def given(self):
         """The student's answer (None before one is given)."""
