@@ -153,7 +153,9 @@ class FigurePrediction(HoldsAnswer, Explorable):
             self._release_held()  # and the answer cell's output shows (``hold()``)
 
     def _release_widget(self):
-        return self  # the page's view of this widget takes the released class
+        # the page's view of this widget takes the released class (not yet seen to reach a
+        # page reloaded on the same kernel in the browser; the held line's hint covers it)
+        return self
 
     @property
     def given(self):
