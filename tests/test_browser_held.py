@@ -114,3 +114,72 @@ def test_an_answer_cell_that_shows_markdown_holds_it_too(lab, page):  # noqa: F8
         state="visible", timeout=15_000
     )
     _line(page).wait_for(state="hidden", timeout=15_000)
+
+
+RELOAD_NAME = "held_reload.ipynb"
+
+
+def test_a_page_reloaded_on_the_same_kernel_shows_the_answer_after_check(lab, page):  # noqa: F811
+    """r95 (lesson 09): a student reloads the tab (or reopens the notebook) while its kernel
+    runs. The reloaded page no longer maps the held line's display id to its output, so the
+    release that empties it reached nothing and the answer cell stayed hidden after Check.
+    The prediction's widget, restored from the kernel, now carries the class that shows it."""
+    cells = [CELLS[0], CELLS[1].replace("THE ANSWER", "THE RELOADED ANSWER")]
+    _run_all(lab, page, cells, RELOAD_NAME)
+    question = page.locator(".jupyter-widgets", has_text="Which way does it wind?").first
+    question.wait_for(timeout=60_000)
+    answer = page.locator(".jp-OutputArea-output", has_text="THE RELOADED ANSWER").first
+    answer.wait_for(state="attached", timeout=60_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")  # saved, as JupyterLab's autosave does
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
+    )
+    page.reload()  # the same kernel: its widgets come back, the display ids do not
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    question = page.locator(".jupyter-widgets", has_text="Which way does it wind?").first
+    question.locator("button", has_text="counter-clockwise").wait_for(timeout=90_000)
+    answer.wait_for(state="attached", timeout=60_000)
+    assert not answer.is_visible() and _line(page).is_visible()  # still held
+    question.locator("button", has_text="counter-clockwise").click()
+    question.locator("button", has_text="Check").click()
+    answer.wait_for(state="visible", timeout=15_000)
+    _line(page).wait_for(state="hidden", timeout=15_000)
+
+
+FIGURE_RELOAD_NAME = "held_reload_figure.ipynb"
+FIGURE_CELLS = [
+    "from teachraster.widgets import PredictPoint\n"
+    "q2 = PredictPoint('Where is it?', answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4),\n"
+    "                  tolerance=0.5)\n"
+    "q2",
+    "q2.hold()\nprint('THE POINT ANSWER: (1, 2)')",
+    "runs = globals().get('runs', 0) + 1\n"
+    "if runs > 1:  # run again after the reload: the Check a student makes, from code\n"
+    "    q2.given = (1.0, 2.0)\n"
+    "    q2.check()",
+]
+
+
+def test_a_figure_prediction_releases_its_held_cell_in_a_reloaded_page(lab, page):  # noqa: F811
+    """As above for the figure predictions, anywidgets, whose page views do not take
+    ``_dom_classes``: the state names the released class and the page adds it."""
+    _run_all(lab, page, FIGURE_CELLS, FIGURE_RELOAD_NAME)
+    answer = page.locator(".jp-OutputArea-output", has_text="THE POINT ANSWER").first
+    answer.wait_for(state="attached", timeout=60_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
+    )
+    page.reload()
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.locator(".tr-predict", has_text="Where is it?").first.wait_for(timeout=240_000)
+    answer.wait_for(state="attached", timeout=60_000)
+    assert not answer.is_visible() and _line(page).is_visible()
+    page.locator(".jp-Notebook .jp-Cell").nth(2).locator(".jp-InputArea-editor").click()
+    page.keyboard.press("Shift+Enter")
+    answer.wait_for(state="visible", timeout=60_000)
+    _line(page).wait_for(state="hidden", timeout=15_000)

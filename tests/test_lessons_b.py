@@ -1330,6 +1330,26 @@ def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     # smaller than a texel (λ' < 0) and still taken, the near one is magnified with a ratio > 1
     assert fps["middle"].lam > 0 and fps["middle"].probe_lam < 0 and fps["middle"].probes > 1
     assert axes["near"][1] / axes["near"][0] > 1
+    # r95 09-4: the near (magnified) panel draws the 2 x 2 texels bilinear reads, not its ρ
+    # square; r95 09-6: the titles give λ to the printout's 2 decimals (3.48 read as 3.5 sat
+    # on the nearest-level switch)
+    assert fps["near"].bilinear is not None and fps["near"].lam <= 0
+    assert fps["middle"].bilinear is None and fps["far"].bilinear is None
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    drawn = next(t for t in text if "plot_footprint(ax, fp" in t and "picked = {" in t)
+    assert 'ax.set_title(f"{name}: λ = {fp.lam:.2f}{magnified}")' in drawn
+    assert "fp.bilinear is not None" in drawn and 'λ = {fp.lam:.2f}")' in drawn
+    said = next(t for t in text if t.startswith("### The footprint, drawn in texture space"))
+    assert "dashed" in " ".join(said.split()) and "2 × 2 texels around the sample" in said
+    # r95 09-5: the sampling figure draws the no-prefilter case cell 4 describes (left)
+    sampling = next(t for t in text if "sample_signal(32, *s)" in t)
+    assert "plt.subplots(3, 3" in sampling and "zip(axes.T, settings)" in sampling
+    assert list(ns.settings) == [(0.0, "box"), (1.0, "box"), (2.0, "gaussian")]
+    told = " ".join(next(t for t in text if t.startswith("### Prefilter, sample")).split())
+    assert "no prefilter at all (left)" in told and "standard deviation one sample spacing" in told
     read = ns.level_read
     steps = read["linear_mipmap_nearest"][ns.rows_shown, ns.W // 2]
     steps = steps[np.isfinite(steps)]
@@ -1407,15 +1427,21 @@ def test_09_quads_closed_form_and_predictions():
         heavier = int(np.floor(lam)) + int(lam % 1 > 0.5)
         assert read(lam) == heavier, lam
     import json
+    import re
 
     cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
     ask = next(
         "".join(c["source"]) for c in cells if "q_level = PredictPoint" in "".join(c["source"])
     )
     # review r92 09 q_level: the prompt no longer states the rule's outcome ("the one trilinear
-    # weights more" gave λ = 1.5 away): it says the rule rounds λ and asks for the ρ
-    assert "frac(λ)" in ask and "rounding λ" in ask and "at what ρ?" in ask
-    assert "weights more" not in ask and "takes one of the two" not in ask
+    # weights more" gave λ = 1.5 away); r95: nor that it rounds λ (then only 2^1.5 was left):
+    # it gives the rule's reason (twice too wide as far off as twice too narrow) and asks for ρ
+    prompt = ask[ask.index("q_level = PredictPoint(") : ask.index("answer=(rho_switch")]
+    prompt = re.sub(r'"\s*\n\s*f?"', "", prompt)  # the string literals joined
+    assert "twice too wide" in prompt and "twice too narrow" in prompt and "at what ρ?" in prompt
+    assert "rounding" not in prompt and "round" not in prompt and "frac(λ)" not in prompt
+    assert "weights more" not in prompt and "takes one of the two" not in prompt
+    assert "log" not in prompt and "1.5" not in prompt
     # the probes question: its answer is the measured gap, in the last bucket, whose label
     # names the bucket's own bound
     assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]

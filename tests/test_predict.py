@@ -227,6 +227,39 @@ def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(publis
     q.close()
 
 
+def test_hold_is_released_by_the_prediction_widget_a_reloaded_page_still_has(published):
+    """r95 (lesson 09): a page reloaded on the same kernel (or a notebook reopened while its
+    kernel runs) no longer maps the held line's display id to its output, so emptying it
+    showed nothing: the held cells stayed hidden after Check. The held line's style also
+    shows the outputs once the notebook holds the prediction widget's released class, which
+    the widget keeps in the kernel (a reloaded page draws it again); the line says what to
+    do where even that fails (a front end that drops the class)."""
+    from teachraster.widgets import PredictOrder
+    from teachraster.widgets.predict import HELD_TEXT
+
+    assert "run this cell again" in HELD_TEXT
+    for q in (Predict("Which row?", ["row 2", "row 3"], answer="row 3", headless=False),
+              PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"])):  # fmt: skip
+        page_widget = q.widget if isinstance(q, Predict) else q
+        published.clear()
+        q._holds = lambda: True  # a student's kernel
+        q.hold()
+        html, held = published[0][0]["text/html"], published[0][1]["transient"]["display_id"]
+        released = q._released_class()
+        assert f".jp-Notebook:not(:has(.{released})) .jp-OutputArea-child:has(.{held}) ~" in html
+        assert f"class='teachraster-held {held}'" in html
+        assert released not in page_widget._dom_classes
+        if isinstance(q, Predict):
+            q.control.value = "row 2"
+            q.check.click()
+        else:
+            q.state = {**q.state, "given": ["a", "b"], "acted": True, "revealed": True}
+        assert released in page_widget._dom_classes  # synced, and kept for a reloaded page
+        if not isinstance(q, Predict):  # an anywidget's page adds it from the state
+            assert q.state["released"] == released and q.state["revealed"]
+        q.close()
+
+
 def test_hold_waits_for_each_prediction_and_each_held_cell(published):
     q = Predict("How many?", answer=3, headless=False)
     q.hold()

@@ -429,3 +429,44 @@ def test_probe_count_ignores_rounding_on_a_face_on_square():
         16,
     )
     assert two[0].tolist() == [2, 2]  # exactly 2, and 1 + 1e-6
+
+
+def test_a_magnified_footprint_draws_the_2x2_texels_bilinear_reads():
+    """r95 09-4: the footprint figure drew a magnified pixel's 0.54-texel ρ square as what
+    trilinear reads; it reads the 2 × 2 texels of one bilinear read of level 0. The figure
+    takes them from the sampler's own corner (``bilinear_corner``) and draws them dashed; a
+    minified footprint keeps its square of side ρ."""
+    import matplotlib
+
+    matplotlib.use("agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    from teachraster.pipeline.texturing.texel_fetch import bilinear_corner
+    from teachraster.plotting.footprint import footprint, plot_footprint, trilinear_reads
+
+    uv, ddx, ddy = np.array([0.3, 0.6]), np.array([0.3 / 64, 0]), np.array([0, 0.5 / 64])
+    fp = footprint(uv, ddx, ddy, (64, 64))
+    assert fp.lam < 0 and fp.probes == 1
+    x0, y0, _, _ = bilinear_corner(uv[:1], uv[1:], 64, 64)
+    assert fp.bilinear.tolist() == [x0[0], y0[0]]
+    # exactly the texels trilinear fetches (the texel centres of the 2 x 2 block), no other
+    for dx in (-0.5, 0.5, 1.5, 2.5):
+        for dy in (-0.5, 0.5, 1.5, 2.5):
+            point = fp.bilinear + [dx, dy]
+            inside = 0 < dx < 2 and 0 < dy < 2
+            assert trilinear_reads(uv[None], ddx[None], ddy[None], (64, 64), point)[0] == inside
+    fig, ax = plt.subplots()
+    art = plot_footprint(ax, fp)
+    square = art["square"]
+    assert isinstance(square, Rectangle) and square.get_linestyle() == "--"
+    assert (square.get_width(), square.get_height()) == (2.0, 2.0)
+    np.testing.assert_allclose(square.get_xy(), fp.bilinear - fp.centre)
+    lo, hi = sorted(ax.get_xlim()), sorted(ax.get_ylim())  # the whole block is in view
+    assert lo[0] <= square.get_x() and square.get_x() + 2 <= lo[1]
+    assert hi[0] <= square.get_y() and square.get_y() + 2 <= hi[1]
+    minified = footprint(uv, 8 * ddx, 8 * ddy, (64, 64))
+    assert minified.bilinear is None and minified.lam > 0
+    square = plot_footprint(ax, minified)["square"]
+    assert square.get_linestyle() == "-" and square.get_width() == pytest.approx(minified.rho)
+    plt.close(fig)

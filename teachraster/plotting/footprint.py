@@ -5,7 +5,8 @@ two derivative vectors ``∂(uW, vH)/∂x`` and ``∂(uW, vH)/∂y`` (texels per
 ellipse inscribed in it has those two vectors (halved) as conjugate semi-diameters. Beside it:
 
 - the square of side ρ = max of the two lengths: what an isotropic filter (trilinear) averages,
-  at level λ = log2 ρ, which covers the long axis and blurs across the short one;
+  at level λ = log2 ρ, which covers the long axis and blurs across the short one (where
+  λ ≤ 0, magnified, trilinear is one bilinear read of level 0: its 2 × 2 texels instead);
 - the ``N`` anisotropic probes of ``EXT_texture_filter_anisotropic``, spaced along the major
   axis at ``i / (N + 1) − ½`` (i = 1 … N), each a square of side ``P_max / N`` (their level
   ``log2(P_max / N)``), as :func:`teachraster.pipeline.texture_filters.sample_anisotropic`
@@ -34,6 +35,9 @@ class Footprint:
     probes: int
     probe_lam: float
     probe_centres: np.ndarray  # (N, 2)
+    #: where trilinear is one bilinear read of level 0 (magnified, λ ≤ 0): the first of the
+    #: 2 × 2 texels it reads, (column, row) in texels of level 0 (unwrapped); else None
+    bilinear: np.ndarray | None = None
 
 
 def footprint(uv, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> Footprint:
@@ -43,7 +47,9 @@ def footprint(uv, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> Footprin
     >>> f.rho, f.lam, f.probes, f.probe_lam
     (8.0, 3.0, 8, 0.0)
     """
-    from ..pipeline.texturing.texture_filters import anisotropic_probes
+    from ..pipeline.texturing.mip_pyramid import level_sizes
+    from ..pipeline.texturing.texel_fetch import bilinear_corner
+    from ..pipeline.texturing.texture_filters import anisotropic_probes, linear_levels
 
     h, w = texture_shape[:2]
     scale = np.array([w, h], dtype=float)
@@ -56,8 +62,16 @@ def footprint(uv, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> Footprin
     n = int(n[0])
     centre = np.asarray(uv, float)[:2] * scale
     offsets = np.array([i / (n + 1) - 0.5 for i in range(1, n + 1)])
-    return Footprint(centre, ax_, ay_, rho, float(np.log2(rho)), n, float(probe_lam[0]),
-                     centre + offsets[:, None] * (major[0] * scale))  # fmt: skip
+    lam = float(np.log2(rho))
+    # the levels trilinear reads, and the texels of a bilinear read, as the sampler takes them
+    first, _, weight = linear_levels(np.array([lam]), len(level_sizes(h, w)) - 1)
+    bilinear = None
+    if first[0] == 0 and weight[0] == 0:  # one read of level 0: its 2 × 2 texels
+        u, v = np.asarray(uv, float)[:2]
+        x0, y0, _, _ = bilinear_corner(np.array([u]), np.array([v]), h, w)
+        bilinear = np.array([x0[0], y0[0]])
+    return Footprint(centre, ax_, ay_, rho, lam, n, float(probe_lam[0]),
+                     centre + offsets[:, None] * (major[0] * scale), bilinear)  # fmt: skip
 
 
 def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, legend: bool = True,
@@ -67,7 +81,9 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     ``centred``: coordinates relative to the pixel's centre in the texture (0 at the
     centre), so that the ticks read as sizes; else absolute texel coordinates (for a texture
     repeated many times, numbers like 1003.75 that say nothing). Where a single probe is
-    taken it is trilinear's square: filled, under trilinear's outline.
+    taken it is trilinear's square: filled, under trilinear's outline. Where trilinear is one
+    bilinear read of level 0 (``fp.bilinear``: magnified), what it reads is drawn instead of
+    the square of side ρ: the 2 × 2 texels of that read, dashed (and filled: the one probe).
 
     Returns the dict of artists: ``parallelogram``, ``ellipse``, ``square``, ``probes``.
     """
@@ -75,7 +91,14 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     shift = fp.centre if centred else np.zeros(2)
     c = fp.centre - shift
     corners = c + np.array([-a - b, a - b, a + b, -a + b]) / 2
-    half = max(np.abs(corners - c).max(), fp.rho / 2) * margin
+    # what trilinear reads: the square of side ρ at level λ, or where it is one bilinear read
+    # of level 0 (magnified) the 2 × 2 texels of that read, drawn dashed
+    if fp.bilinear is None:
+        read_lo, read_side = c - fp.rho / 2, fp.rho
+    else:
+        read_lo, read_side = fp.bilinear - shift, 2.0
+    reach = np.abs(np.vstack([read_lo, read_lo + read_side]) - c).max()
+    half = max(np.abs(corners - c).max(), fp.rho / 2, reach) * margin
     lo, hi = c - half, c + half
     if texture is not None:
         tex = np.asarray(texture)
@@ -96,13 +119,18 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     ell = c + (np.outer(np.cos(t), a) + np.outer(np.sin(t), b)) / 2
     (art["ellipse"],) = ax.plot(*ell.T, color=OKABE_ITO["blue"], lw=3,
                                 label="footprint ellipse")  # fmt: skip
-    art["square"] = ax.add_patch(Rectangle(c - fp.rho / 2, fp.rho, fp.rho, fill=False, lw=2.5,
-                                           ec=OKABE_ITO["orange"], zorder=3,
-                                           label=f"trilinear: ρ = {fp.rho:.1f}, λ = {fp.lam:.1f}"))  # fmt: skip
+    label = (f"trilinear: ρ = {fp.rho:.2f}, λ = {fp.lam:.2f}" if fp.bilinear is None else
+             f"trilinear (λ = {fp.lam:.2f} ≤ 0): bilinear, 2 × 2 texels of level 0")  # fmt: skip
+    art["square"] = ax.add_patch(Rectangle(read_lo, read_side, read_side, fill=False, lw=2.5,
+                                           ls="-" if fp.bilinear is None else "--",
+                                           ec=OKABE_ITO["orange"], zorder=3, label=label))  # fmt: skip
     side = fp.rho / fp.probes
-    # one probe is trilinear's own square: filled only, its outline would hide the orange
+    # one probe is trilinear's own read: filled only, its outline would hide the orange
     edge = "none" if fp.probes == 1 else OKABE_ITO["bluish_green"]
-    for k, p in enumerate(fp.probe_centres - shift):
+    probes = fp.probe_centres - shift
+    if fp.bilinear is not None:  # magnified: the one probe is the same bilinear read
+        probes, side = read_lo[None, :] + 1.0, 2.0
+    for k, p in enumerate(probes):
         ax.add_patch(Rectangle(p - side / 2, side, side, fill=True, alpha=0.35, lw=1.5,
                                ec=edge, fc=OKABE_ITO["bluish_green"], zorder=2,
                                label=(f"{fp.probes} anisotropic probes, λ = {fp.probe_lam:.1f}"

@@ -73,19 +73,25 @@ def is_headless() -> bool:
     return os.environ.get("MPLBACKEND", "").strip().lower() == "agg"
 
 
-#: Hides, in JupyterLab and Notebook 7, every output of a cell after the one holding a
-#: ``teachraster-held`` element: the outputs a prediction's answer cell makes after
-#: ``hold()``. Revealing replaces that output with an empty one, so the rest shows in place.
-#: A front end without ``:has`` (or one that strips styles) shows everything at once.
+#: Hides, in JupyterLab and Notebook 7, every output of a cell after the one holding the
+#: ``teachraster-held`` element of display id ``{held}``: the outputs a prediction's answer
+#: cell makes after ``hold()``, until the notebook holds an element of class ``{released}``
+#: (the prediction's own widget takes that class when it is revealed, and keeps it in the
+#: kernel: a page reloaded on the same kernel shows the answer cell's output, although the
+#: reloaded page no longer knows the display id through which the live release empties the
+#: held line). A front end without ``:has`` (or one that strips styles) shows everything at
+#: once.
 HELD_CSS = (
-    "<style>.jp-OutputArea-child:has(.teachraster-held) ~ .jp-OutputArea-child "
-    "{display: none}</style>"
+    "<style>.jp-Notebook:not(:has(.{released})) .jp-OutputArea-child:has(.{held}) "
+    "~ .jp-OutputArea-child {{display: none}} "
+    ".jp-Notebook:has(.{released}) .jp-OutputArea-child:has(.{held}) {{display: none}}</style>"
 )
 
 #: What stands in for the held outputs, live and in a notebook saved before the answer.
 HELD_TEXT = (
     "Answer the prediction above to see this: the output of this cell gives its answer "
-    "away, so it stays hidden until the prediction is checked."
+    "away, so it stays hidden until the prediction is checked. If it stays hidden after "
+    "you have checked, run this cell again."
 )
 
 
@@ -118,16 +124,31 @@ class HoldsAnswer:
         held = self.__dict__.setdefault("_held_ids", [])
         display_id = f"teachraster-held-{os.getpid()}-{next(_ids)}"
         held.append(display_id)
-        line = f"<div class='teachraster-held' style='color:#555'><i>{HELD_TEXT}</i></div>"
-        publish_display_data({"text/html": HELD_CSS + line, "text/plain": HELD_TEXT},
+        css = HELD_CSS.format(held=display_id, released=self._released_class())
+        line = (f"<div class='teachraster-held {display_id}' style='color:#555'>"
+                f"<i>{HELD_TEXT}</i></div>")  # fmt: skip
+        publish_display_data({"text/html": css + line, "text/plain": HELD_TEXT},
                              transient={"display_id": display_id})  # fmt: skip
 
+    def _released_class(self) -> str:
+        """The class the prediction's widget takes once revealed (see :data:`HELD_CSS`)."""
+        return self.__dict__.setdefault(
+            "_released", f"teachraster-released-{os.getpid()}-{next(_ids)}"
+        )
+
+    def _release_widget(self):
+        """The widget that takes :meth:`_released_class` when revealed (the page's view of it)."""
+        return self.widget
+
     def _release_held(self) -> None:
-        """Show what ``hold()`` hid: empty its line (the outputs after it then show). Each
-        line is emptied once; the outputs never move, so nothing is shown twice."""
+        """Show what ``hold()`` hid: empty its line (the outputs after it then show), and
+        mark the prediction's widget released (what a reloaded page reads, :data:`HELD_CSS`).
+        Each line is emptied once; the outputs never move, so nothing is shown twice."""
         from IPython.display import publish_display_data
 
         held = self.__dict__.get("_held_ids", [])
+        if held:  # what a page reloaded on this kernel reads: its held lines lost their ids
+            self._release_widget().add_class(self._released_class())
         while held:
             publish_display_data({"text/html": "", "text/plain": ""},
                                  transient={"display_id": held.pop(0)}, update=True)  # fmt: skip

@@ -152,6 +152,16 @@ class FigurePrediction(HoldsAnswer, Explorable):
             self._update_standin()  # the verdict goes into the saved notebook
             self._release_held()  # and the answer cell's output shows (``hold()``)
 
+    def _release_widget(self):
+        return self
+
+    def _release_held(self) -> None:
+        # an anywidget's view does not take ``_dom_classes`` (seen in JupyterLab 4.6): the
+        # state names the released class and the page adds it (predict_figure.js, ``mark``)
+        if self.__dict__.get("_held_ids"):
+            self.state = {**self.state, "released": self._released_class()}
+        super()._release_held()
+
     @property
     def given(self):
         """The student's answer (None before one is given)."""

@@ -110,9 +110,8 @@ def filtered(table, offset, h, w, u, v, filter: str, wrap: str) -> np.ndarray:
         return fetch(wrap_index(np.floor(v * h), h, wrap), wrap_index(np.floor(u * w), w, wrap))
     # Written as a + t (b - a), recentred like interpolation.blend, so a constant texture
     # stays exactly constant and t = 0 returns a exactly.
-    x, y = u * w - 0.5, v * h - 0.5
-    x0, y0 = np.floor(x), np.floor(y)
-    fx, fy = (x - x0)[:, None], (y - y0)[:, None]
+    x0, y0, fx, fy = bilinear_corner(u, v, h, w)
+    fx, fy = fx[:, None], fy[:, None]
     c0, c1 = wrap_index(x0, w, wrap), wrap_index(x0 + 1, w, wrap)
     r0, r1 = wrap_index(y0, h, wrap), wrap_index(y0 + 1, h, wrap)
     t00, t01 = fetch(r0, c0), fetch(r0, c1)
@@ -128,6 +127,21 @@ def filtered(table, offset, h, w, u, v, filter: str, wrap: str) -> np.ndarray:
         tb = [t[bad] * s for t in (t00, t01, t10, t11)]
         out[bad] = _bilinear_blend(*tb, fx[bad], fy[bad]) / s
     return out
+
+
+def bilinear_corner(u, v, h, w):
+    """The 2 × 2 texels ``LINEAR`` reads at ``u``, ``v`` of an ``h`` × ``w`` level: the column
+    and row of the first (not yet wrapped: the others are the next column and row), and the
+    blend weights of the second column and row.
+
+    Texel centres lie on integers after ``x = u W - 1/2`` (GL's ``LINEAR``), so the texels read are columns ``⌊x⌋`` and ``⌊x⌋ + 1``, blended by ``x - ⌊x⌋``; rows alike.
+
+    >>> bilinear_corner(np.array([0.5]), np.array([0.3]), 4, 4)
+    (array([1.]), array([0.]), array([0.5]), array([0.7]))
+    """
+    x, y = u * w - 0.5, v * h - 0.5
+    x0, y0 = np.floor(x), np.floor(y)
+    return x0, y0, x - x0, y - y0
 
 
 def _bilinear_blend(t00, t01, t10, t11, fx, fy):

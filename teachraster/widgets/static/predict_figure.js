@@ -139,7 +139,12 @@ function mount(el, data, host) {
   root.classList.add("tr-predict");
   root.append(element("div", { class: "tr-predict-q", html: `<b>Predict first.</b> ${data.question}` }));
   const kinds = { pixels: mountPixels, point: mountPoint, order: mountOrder };
-  return kinds[data.kind](root, data, host);
+  const view = kinds[data.kind](root, data, host);
+  // the held answer cells (q.hold()) show once the notebook holds the class the kernel names
+  // in the state when revealed: also a page reloaded on the same kernel (review r95, 09)
+  const mark = (s) => { if (s && s.released) el.classList.add(s.released); };
+  mark(host.state());
+  return { ...view, setState(s) { mark(s); if (view.setState) view.setState(s); } };
 }
 
 // the picture (the kernel's PNG) with a canvas over it, in the picture's own pixels
