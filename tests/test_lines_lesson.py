@@ -526,5 +526,33 @@ def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
     text = " ".join(_cells_before("12a_lines", "db845d96", kinds=("markdown",)).split())
     assert "read in the GL **4.6** specification" in text and "(4.5 for Mesa 22.3)" in text
     if getattr(ns, "ok", False):  # an OpenGL context was there: the version printed agrees
-        version = ns.gl_version()
+        from teachraster.study.opengl_lines import gl_version
+
+        version = gl_version()
         assert version.startswith("4.5") and "Mesa 22.3" in version, version
+
+
+def test_review_r101_bresenham_question_takes_an_answer_first(ns, monkeypatch):
+    """The §2 question, built from its cell as a student's kernel builds it: Check waits for
+    an answer (text that is no number keeps it waiting), 6 is right, the neighbours are not."""
+    import json
+    from pathlib import Path
+
+    import teachraster as tr
+    from teachraster.widgets import Predict
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    cells = json.loads((Path(__file__).resolve().parents[1] / "notebooks" /
+                        "12a_lines.ipynb").read_text())["cells"]  # fmt: skip
+    src = next("".join(c["source"]) for c in cells if c.get("id") == "bresq")
+    for value, verdict in (("6", True), ("5", False), ("7", False)):
+        scope = dict(tr=tr, np=np, bres=ns.bres, dx=ns.dx, dy=ns.dy, Predict=Predict)
+        exec(src, scope)  # the question cell, as the lesson runs it
+        q = scope["q_bres"]
+        assert q.check.disabled
+        q.control.value = "abc"
+        assert q.check.disabled
+        q.control.value = value
+        assert not q.check.disabled
+        q.check.click()
+        assert q.correct is verdict and q.revealed and q.check.disabled, value
