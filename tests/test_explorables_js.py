@@ -836,6 +836,22 @@ def test_end_point_labels_keep_clear_of_the_tie_marks():
     assert lx + 60 < bx or bx + bw < lx or ly < by or by + bh < ly - 15
 
 
+def test_end_point_label_is_not_read_with_a_tie_mark_beside_it():
+    """Review r101 12a-D: "p0" sat a few pixels left of the "tie" mark of the next pixel, on
+    its line, and read as "p0 tie". A mark on the label's line keeps a wide space from it."""
+    size, width = 15, 20
+    first = call_js(LINES, [("labelAt", [100, 100, width, 400, [], size])])[0]
+    lx, ly = first
+    mark = [lx + width + 4, ly - size, 24, size]  # 4 px right of the label, on its line
+    moved = call_js(LINES, [("labelAt", [100, 100, width, 400, [mark], size])])[0]
+    mx, my = moved
+    assert moved != first
+    bx, by, bw, bh = mark
+    assert (
+        mx + width + 0.8 * size < bx or bx + bw + 0.8 * size < mx or my < by or by + bh < my - size
+    )
+
+
 def test_readout_in_front_of_the_near_plane_says_clipped():
     # review r47 05b: near dragged from 0.1 to 2.5 left the readout at z = 0.1 with a negative
     # float32 depth; a fragment in front of the near plane is clipped and stores nothing

@@ -179,3 +179,21 @@ def test_lesson_08_review_r92_crawling_edge_and_vertex_names(ns):
     assert "vertex 0" not in ask and "vertex 2" not in ask
     assert "the edge E12" in ask and "v3 lies" in ask
     assert not any("where it is written" in s for s in sources)  # review r92 08-7: "source"
+
+
+def test_lesson_08_review_r101_intersection_line_and_held_texts(ns):
+    """Review r101 08-A: cell 26 said the upright pair meets along "a pixel boundary (x = 0)";
+    world x = 0 lies at window x = 23.5 here, on the centres of column 23, as the text now
+    says (and the cell prints). 08-E: §7's random curve is a fresh draw per pixel, not the
+    cost of the random pattern's uneven rows."""
+    import json
+    from pathlib import Path
+
+    assert ns.line_x == 23.5 and ns.line_x % 1 == 0.5  # a column of centres, no boundary
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    text = " ".join(" ".join("".join(c["source"]) for c in cells).split())
+    assert f"at window x = {ns.line_x:g} here" in text and "pixel boundary (x = 0)" not in text
+    assert "through the centres of one pixel column" in text
+    assert "what that costs" not in text and "what uneven ones cost" not in text

@@ -497,3 +497,62 @@ def test_12a_wide_question_has_no_hair_thin_pixels(ns):
     code = _cells_before("12a_lines", "widetbl", kinds=("code",))
     asked = code.split("q_wide = PredictPixels(")[1].split("answer=")[0]
     assert "no centre lies closer than " in asked and "{margin:.2f} px to either outline" in asked
+
+
+def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
+    """Review r101. 12a-B: "y-major lines light the left pixel in both" is computed (a y-major
+    line through the corner of row 1's pixels 0 and 1). 12a-A: the text says which GL version
+    each claim is checked against (the 4.6 text; llvmpipe's own version as printed). §2 asks
+    where Bresenham first parts from the diamond rule before the cell that prints it."""
+    import json
+    from pathlib import Path
+
+    assert ns.x_tie == 1.0 and ns.steep_cols == ([0], [0])  # the left pixel, both rules
+    text = " ".join(_cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split())
+    assert "y-major lines light the left pixel in both: the cell prints one such tie too" in text
+    # the prediction: the D the captions print, the tie at D = 0, the column c16 prints
+    for k, d in enumerate(ns.d_seq):
+        assert f"column {k}, error term D = {d} " in ns.bres.trace.caption(ns.setup + k)
+    assert ns.d_seq[ns.tie_col] == 0 and ns.first_differ == ns.tie_col + 1 == 6
+    assert {int(c) for _, c in ns.differ} == {ns.first_differ}
+    before = _cells_before("12a_lines", "bresq")
+    assert "pixels differ" not in before and f"column {ns.first_differ}" not in before
+    cells = json.loads((Path(__file__).resolve().parents[1] / "notebooks" /
+                        "12a_lines.ipynb").read_text())["cells"]  # fmt: skip
+    at = next(k for k, c in enumerate(cells) if c.get("id") == "bresq")
+    assert "".join(cells[at + 1]["source"]).startswith("q_bres.hold()")
+    assert "pixels differ" in "".join(cells[at + 1]["source"])
+    # the versions: the quoted rules read in GL 4.6, llvmpipe's printed version named
+    text = " ".join(_cells_before("12a_lines", "db845d96", kinds=("markdown",)).split())
+    assert "read in the GL **4.6** specification" in text and "(4.5 for Mesa 22.3)" in text
+    if getattr(ns, "ok", False):  # an OpenGL context was there: the version printed agrees
+        from teachraster.study.opengl_lines import gl_version
+
+        version = gl_version()
+        assert version.startswith("4.5") and "Mesa 22.3" in version, version
+
+
+def test_review_r101_bresenham_question_takes_an_answer_first(ns, monkeypatch):
+    """The §2 question, built from its cell as a student's kernel builds it: Check waits for
+    an answer (text that is no number keeps it waiting), 6 is right, the neighbours are not."""
+    import json
+    from pathlib import Path
+
+    import teachraster as tr
+    from teachraster.widgets import Predict
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    cells = json.loads((Path(__file__).resolve().parents[1] / "notebooks" /
+                        "12a_lines.ipynb").read_text())["cells"]  # fmt: skip
+    src = next("".join(c["source"]) for c in cells if c.get("id") == "bresq")
+    for value, verdict in (("6", True), ("5", False), ("7", False)):
+        scope = dict(tr=tr, np=np, bres=ns.bres, dx=ns.dx, dy=ns.dy, Predict=Predict)
+        exec(src, scope)  # the question cell, as the lesson runs it
+        q = scope["q_bres"]
+        assert q.check.disabled
+        q.control.value = "abc"
+        assert q.check.disabled
+        q.control.value = value
+        assert not q.check.disabled
+        q.check.click()
+        assert q.correct is verdict and q.revealed and q.check.disabled, value

@@ -112,6 +112,23 @@ def test_line_view_draws_bresenhams_midpoint_and_the_gap_d_measures(ax):
     assert np.isnan(mid.get_xdata()).all() and np.isnan(gap.get_xdata()).all()
 
 
+def test_line_player_caption_stays_within_its_axes():
+    """Review r101 12a-C: the diamond step's caption ran past the axes to the edge of the
+    output (matplotlib's wrap=True wraps at the figure's edge); it wraps at the axes' width."""
+    from teachraster.widgets import LinePlayer
+
+    player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule="diamond", step=14, backend="image")
+    player.fig.canvas.draw()
+    caption = player.view.caption
+    assert "ends inside its diamond" in caption.get_text().replace("\n", " ")
+    assert "\n" in caption.get_text()
+    renderer = player.fig.canvas.get_renderer()
+    text_box = caption.get_window_extent(renderer)
+    axes_box = player.view.caption.axes.get_window_extent(renderer)
+    assert text_box.x1 <= axes_box.x1 + 1
+    player.close()
+
+
 def test_plot_rgba_shows_the_rgb_written_or_alpha_over_a_checkerboard(ax):
     color = np.zeros((4, 5, 4))
     color[1, 2] = [0.25, 0, 0, 0.5]

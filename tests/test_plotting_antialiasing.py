@@ -88,13 +88,14 @@ def test_pixel_inspector_plot_labels_samples_with_edge_values():
 
 def test_sampling_key_does_not_name_the_signal_twice_without_a_prefilter():
     """Review 08-09-r5 (08 item 8): at width 0 the key listed "signal" and "prefiltered"
-    for one curve; it now says that there is no prefilter, and names it again at width > 0."""
+    for one curve; it says what the line is at width 0. Review r101 08-D: a key that changed
+    its text with the filter left a stale sliver in the page: one text at every width."""
     from teachraster.plotting.sampling import plot_sampling, sample_signal, update_sampling
 
     fig, axes = plt.subplots(3, 1)
     art = plot_sampling(axes, sample_signal(32, 0.0))
     texts = lambda: [t.get_text() for t in axes[0].get_legend().get_texts()]  # noqa: E731
-    assert texts()[1] == "prefiltered: none (= signal)"
+    assert texts()[1] == "prefiltered\n(at width 0: the signal)"
     update_sampling(art, sample_signal(32, 2.0))
-    assert texts()[1] == "prefiltered"
+    assert texts()[1] == "prefiltered\n(at width 0: the signal)"
     plt.close(fig)

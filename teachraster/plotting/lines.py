@@ -16,6 +16,7 @@ Everything drawn comes from the fill's :class:`~teachraster.core.line_trace.Line
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 
 import numpy as np
@@ -139,7 +140,7 @@ class LineView(Artists):
         xs, ys = (trace.p0[0], trace.p1[0]), (trace.p0[1], trace.p1[1])
         (segment,) = ax.plot(xs, ys, color=COLORS["edge"], lw=lw(1.2), zorder=3)
         caption = ax.text(0.0, -0.02, "", transform=ax.transAxes, va="top", ha="left",
-                          fontsize=fs(0.8), wrap=True, bbox=label_box())  # fmt: skip
+                          fontsize=fs(0.8), bbox=label_box())  # fmt: skip
         diamonds = {name: PolyCollection([], facecolor="none", zorder=2,
                                          **{**style, "linewidth": lw(style["linewidth"])})
                     for name, style in _DIAMOND_STYLES.items()}  # fmt: skip
@@ -169,7 +170,7 @@ class LineView(Artists):
         elif step.kind == "row":
             self.current.set_bounds(0, step.row, width, 1)
         self.current.set_visible(step.kind in ("column", "row"))
-        self.caption.set_text(step.caption)
+        self.caption.set_text(_fit_caption(self.caption, step.caption))
         if self.diamonds is not None:
             for name, polys in _diamonds_at(trace, k).items():
                 self.diamonds[name].set_verts(polys)
@@ -270,3 +271,15 @@ def plot_rgba(
     checker.set_visible(view == "alpha")
     shown = ax.imshow(image, extent=(0, width, height, 0), interpolation="nearest", zorder=1)
     return RGBAArtists(checker, shown)
+
+
+def _fit_caption(text, caption: str) -> str:
+    """``caption`` wrapped to the width of the Axes of ``text`` (a matplotlib Text under them).
+
+    matplotlib's own ``wrap=True`` wraps at the figure's edge: a diamond step's caption ran
+    past the axes to the edge of the notebook's output (review r101 12a-C).
+    """
+    ax = text.axes
+    width_pt = ax.get_position(original=False).width * ax.figure.get_figwidth() * 72
+    chars = max(20, int(width_pt / (0.6 * text.get_fontsize())))  # about 0.6 em a character
+    return "\n".join(textwrap.fill(line, chars) for line in caption.split("\n"))

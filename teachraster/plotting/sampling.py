@@ -113,6 +113,10 @@ def sample_signal(rate: int, width: float, kernel: str = "box") -> SamplingResul
                           float(nyquist), alias_from, rms)  # fmt: skip
 
 
+#: the key of the prefiltered line, the same at every filter width
+PREFILTERED_KEY = "prefiltered\n(at width 0: the signal)"
+
+
 @dataclass
 class SamplingArtists:
     """The lines :func:`plot_sampling` drew, updated in place by :func:`update_sampling`."""
@@ -161,13 +165,13 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
 
 
 def _name_prefiltered(art: SamplingArtists, result: SamplingResult) -> None:
-    """Without a prefilter (width 0) the "prefiltered" line is the signal itself: its key
-    says so, instead of naming one curve twice."""
+    """The key of the "prefiltered" line says what it is at width 0 (the signal itself, not
+    a second curve) in one text at every width: a text that changed with the filter left a
+    stale sliver of the longer one in the page's picture (review r101 08-D)."""
     legend = art.filtered.axes.get_legend()
     if legend is None:
         return
-    same = np.array_equal(result.filtered, result.signal)
-    legend.get_texts()[1].set_text("prefiltered: none (= signal)" if same else "prefiltered")
+    legend.get_texts()[1].set_text(PREFILTERED_KEY)
 
 
 def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:

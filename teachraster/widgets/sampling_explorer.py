@@ -104,7 +104,8 @@ class SamplingExplorer(Shown):
         title = title_html(
             "Prefilter → sample → reconstruct",
             "Yellow: the signal is above the Nyquist limit (half the sample rate). Widen the "
-            "filter until the reconstruction there is flat instead of a false wave.",
+            "filter until the reconstruction there is flat instead of a false wave; wider "
+            "still, and it blurs the left half too: the RMS error rises again.",
         )
         controls = control_row([self.rate, self.width, labelled("shape", self.kernel)])
         self.widget = projector_text(
@@ -132,8 +133,8 @@ class SamplingExplorer(Shown):
                                       (STILL, over + keys)])  # fmt: skip
 
     def _draw_figure(self) -> None:
-        # the key names the prefiltered line "none (= signal)" at width 0: a layer per text
-        self._blit.draw(key=self.art.filtered.axes.get_legend().get_texts()[1].get_text())
+        # the keys do not change with the controls (review r101 08-D): one still layer
+        self._blit.draw()
 
     def update(self, restart: bool = False) -> None:
         """Recompute from the controls and move the same lines (``restart``: the shape
@@ -185,5 +186,5 @@ class SamplingExplorer(Shown):
     def _info_html(self) -> str:
         r = self.result
         return (f"{len(r.samples)} samples per unit: Nyquist limit {r.nyquist:g} cycles, "
-                f"passed from x = {r.alias_from:.2f} on · RMS error of the reconstruction "
+                f"signal above it from x = {r.alias_from:.2f} · RMS error of the reconstruction "
                 f"against an ideal low-pass: <b>{r.rms_error:.3f}</b>")  # fmt: skip
