@@ -1570,3 +1570,42 @@ def test_no_review_ids_in_the_code_a_lecturer_shows(name):
             if cell["cell_type"] == "code" and "plt.subplots(" in "".join(cell["source"]):
                 long = len(cell["source"]) > 40
                 assert not long or cell["metadata"].get("tags") == ["hide-input"]
+
+
+def test_00_04_r97_items():
+    """Review r97: 00's q_centres comment called the area ratio (46 %) the answer (41 %) and
+    its explanation said "the box of pixel centres is a little larger still"; 04's boxed t(q)
+    stood in a Markdown cell two cells under q_midpoint (hold() cannot hide Markdown), the
+    floor's scene-building code was shown, and the summary tied the error to the depth ratio
+    alone."""
+    tour = "\n".join(_cells("00_tour", "code"))
+    assert "46 %, is right" not in tour and "larger still" not in tour
+    assert (
+        "the answer is covered_share (41 %); the area ratio, area_share (46 %), is accepted" in tour
+    )
+    assert "The share of centres is lower still because the box holds more centres" in tour
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    cells, text = nb["cells"], ["".join(c["source"]) for c in nb["cells"]]
+    boxed = [i for i, t in enumerate(text) if r"\boxed{t =" in t]
+    ask = next(i for i, t in enumerate(text) if "q_midpoint = PredictPoint(" in t)
+    for i in boxed:  # the formula after the question is held, never a Markdown cell
+        assert i > ask and cells[i]["cell_type"] == "code"
+        assert text[i].startswith("q_midpoint.hold()") and "display(Markdown(" in text[i]
+        assert cells[i]["metadata"]["jupyter"]["source_hidden"] is True
+    floor = next(i for i, t in enumerate(text) if "edge_texels = {}" in t)
+    assert cells[floor]["metadata"].get("tags") == ["hide-input"]  # plumbing folded
+
+
+@pytest.mark.notebook
+def test_04_summary_error_is_ratio_times_change_r97():
+    """Review r97 04-4: the summary's error grows with the depth ratio *and* with the
+    attribute's change along the edge; its numbers are the ones the cells print."""
+    ns = lesson("04_perspective_correct_interpolation")
+    summary = next(t for t in _cells("04_perspective_correct_interpolation", "markdown")
+                   if t.startswith("## Summary"))  # fmt: skip
+    flat = " ".join(summary.split())
+    e = ns.edge_texels
+    assert f"({e['diagonal']:.1f} against {e['side u = 0']:.1f} texels)" in flat
+    r = ns.z1 / ns.z0
+    assert f"{(np.sqrt(r) - 1) ** 2 / (r - 1):.3f} for $r = {r:g}$" in flat
+    assert "**times** how much the attribute changes along the edge" in flat
