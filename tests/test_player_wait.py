@@ -56,7 +56,7 @@ const mod = await import(process.argv[2]);
 const asked = [];
 const el = element();
 const player = mod.mountFrames(el, { request: (g, gen) => asked.push([g, gen]) });
-const notice = el.children[0].children[3];
+const notice = el.children[0].children[2].children[1];  // root > stage > [canvas, notice]
 const out = {};
 await player.reset({ width: 4, height: 4, n: 32, key: 16, step: 0, captions: [], infos: [],
                      gen: 1 });

@@ -24,7 +24,12 @@ const CSS = `
 .tr-frames .tr-caption { min-height: 3.2em; padding: 2px 6px; border: 1px solid #ddd;
   font-size: 15px; margin: 2px 0 4px 0; }
 .tr-frames canvas { display: block; max-width: 100%; height: auto; }
-.tr-frames .tr-notice { color: #b00020; font-size: 13px; min-height: 0; }
+/* The notice lies over the picture's foot instead of below it: a "waiting" that comes and
+   goes must not make the player jump in height (nor push it past a screen, issue 31). */
+.tr-frames .tr-stage { position: relative; width: fit-content; max-width: 100%; }
+.tr-frames .tr-notice { position: absolute; left: 0; right: 0; bottom: 0; color: #b00020;
+  font-size: 14px; background: rgba(255, 255, 255, 0.92); padding: 2px 6px; }
+.tr-frames .tr-notice:empty { display: none; }
 .tr-frames button { display: inline-flex; align-items: center; justify-content: center;
   gap: 4px; white-space: nowrap; }
 .tr-frames .tr-icon { width: 12px; height: 12px; fill: currentColor; flex: none; }
@@ -208,7 +213,10 @@ export function mountFrames(el, opts) {
   canvas.className = "teachraster-figure";
   canvas.setAttribute("role", "img");
   const ctx = canvas.getContext("2d");
-  root.append(bar, caption, canvas, notice);
+  const stage = document.createElement("div");
+  stage.className = "tr-stage";
+  stage.append(canvas, notice);
+  root.append(bar, caption, stage);
   el.appendChild(root);
   // Keys pressed in the player (arrows on the slider, space on a button) are the player's:
   // JupyterLab's command-mode shortcuts must not also see them.
