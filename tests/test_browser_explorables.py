@@ -290,8 +290,9 @@ def test_pipeline_stage_clicked(lesson):
     sent = _kernel(lesson, "pipeline.data['lessons']['rasterize']")
     box = w.locator("[data-stage=rasterize] text").all_text_contents()  # SVG: no innerText
     # lesson 06 prices the rasteriser's choices (review r23 00-4): three lines, which the
-    # 84-px box holds under its one-line name (baselines 46, 61, 76 px; the name's at 28)
-    assert sent == ["01–04, 06,", "07, 08, 10,", "12a"] and box[-3:] == sent
+    # 92-px box holds under its one-line name (baselines 51, 68, 85 px; the name's at 28);
+    # at most nine characters a line, runs of three as a range (review r97 00-5)
+    assert sent == ["01–04,", "06–08,", "10, 12a"] and box[-3:] == sent
 
 
 def test_predictions_wait_for_an_answer_then_show_it(lesson):

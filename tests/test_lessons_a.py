@@ -1036,10 +1036,15 @@ def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
     for stem in {s for stems in lessons.values() for s in stems}:
         assert (NOTEBOOKS / f"{stem}.ipynb").exists(), stem
     shown = tour_stages()["lessons"]
+
+    def spelled(text: str) -> str:  # "06–08" -> "06, 07, 08"
+        return re.sub(r"(\d\d)–(\d\d)", lambda m: ", ".join(
+            f"{k:02d}" for k in range(int(m[1]), int(m[2]) + 1)), text)  # fmt: skip
+
     for key, stems in lessons.items():  # the box lists every lesson, in order
-        assert " ".join(shown[key]).replace("01–04", "01, 02, 03, 04") == ", ".join(
-            lesson_number(s) for s in stems
-        ), key
+        assert spelled(" ".join(shown[key])) == ", ".join(lesson_number(s) for s in stems), key
+        # review r97 00-5: lines of at most nine characters, ~75 px at 15 px in a 104-px box
+        assert all(len(line) <= 9 for line in shown[key]) and len(shown[key]) <= 3, key
 
 
 def test_pipeline_shades_before_the_depth_test_and_early_z_tests_before_shading():
@@ -1604,3 +1609,42 @@ def test_no_review_ids_in_the_code_a_lecturer_shows(name):
             if cell["cell_type"] == "code" and "plt.subplots(" in "".join(cell["source"]):
                 long = len(cell["source"]) > 40
                 assert not long or cell["metadata"].get("tags") == ["hide-input"]
+
+
+def test_00_04_r97_items():
+    """Review r97: 00's q_centres comment called the area ratio (46 %) the answer (41 %) and
+    its explanation said "the box of pixel centres is a little larger still"; 04's boxed t(q)
+    stood in a Markdown cell two cells under q_midpoint (hold() cannot hide Markdown), the
+    floor's scene-building code was shown, and the summary tied the error to the depth ratio
+    alone."""
+    tour = "\n".join(_cells("00_tour", "code"))
+    assert "46 %, is right" not in tour and "larger still" not in tour
+    assert (
+        "the answer is covered_share (41 %); the area ratio, area_share (46 %), is accepted" in tour
+    )
+    assert "The share of centres is lower still because the box holds more centres" in tour
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    cells, text = nb["cells"], ["".join(c["source"]) for c in nb["cells"]]
+    boxed = [i for i, t in enumerate(text) if r"\boxed{t =" in t]
+    ask = next(i for i, t in enumerate(text) if "q_midpoint = PredictPoint(" in t)
+    for i in boxed:  # the formula after the question is held, never a Markdown cell
+        assert i > ask and cells[i]["cell_type"] == "code"
+        assert text[i].startswith("q_midpoint.hold()") and "display(Markdown(" in text[i]
+        assert cells[i]["metadata"]["jupyter"]["source_hidden"] is True
+    floor = next(i for i, t in enumerate(text) if "edge_texels = {}" in t)
+    assert cells[floor]["metadata"].get("tags") == ["hide-input"]  # plumbing folded
+
+
+@pytest.mark.notebook
+def test_04_summary_error_is_ratio_times_change_r97():
+    """Review r97 04-4: the summary's error grows with the depth ratio *and* with the
+    attribute's change along the edge; its numbers are the ones the cells print."""
+    ns = lesson("04_perspective_correct_interpolation")
+    summary = next(t for t in _cells("04_perspective_correct_interpolation", "markdown")
+                   if t.startswith("## Summary"))  # fmt: skip
+    flat = " ".join(summary.split())
+    e = ns.edge_texels
+    assert f"({e['diagonal']:.1f} against {e['side u = 0']:.1f} texels)" in flat
+    r = ns.z1 / ns.z0
+    assert f"{(np.sqrt(r) - 1) ** 2 / (r - 1):.3f} for $r = {r:g}$" in flat
+    assert "**times** how much the attribute changes along the edge" in flat

@@ -61,14 +61,16 @@ def map_lessons() -> dict[str, tuple[str, ...]]:
     return {**{key: by_name[name] for key, name in SHARED_STAGES.items()}, **MAP_ONLY_LESSONS}
 
 
-def lessons_label(stems, width: int = 12) -> list[str]:
-    """The lesson numbers of ``stems`` as a stage box prints them: a run of four or more
-    consecutive whole numbers as a range, in lines of at most ``width`` characters.
+def lessons_label(stems, width: int = 9) -> list[str]:
+    """The lesson numbers of ``stems`` as a stage box prints them: a run of three or more
+    consecutive whole numbers as a range, in lines of at most ``width`` characters (nine
+    at 15 px are about 75 px: a 104-px box holds them with a margin on either side, where
+    twelve filled it from border to border, review r97 00-5).
 
-    >>> lessons_label(["01_a", "02_b", "03_c", "04_d", "07_e", "08_f", "10_g", "12_h"])
-    ['01–04, 07,', '08, 10, 12']
+    >>> lessons_label(["01_a", "02_b", "03_c", "04_d", "06_e", "07_f", "08_g", "10_h", "12_i"])
+    ['01–04,', '06–08,', '10, 12']
     >>> lessons_label(["05a_zbuffer", "05b_depth_precision", "10_tiles"])
-    ['05a, 05b, 10']
+    ['05a, 05b,', '10']
     """
     import textwrap
 
@@ -78,8 +80,8 @@ def lessons_label(stems, width: int = 12) -> list[str]:
         while (run < len(numbers) and numbers[run].isdigit() and numbers[0].isdigit()
                and int(numbers[run]) == int(numbers[0]) + run):  # fmt: skip
             run += 1
-        items.append(f"{numbers[0]}–{numbers[run - 1]}" if run >= 4 else numbers[0])
-        numbers = numbers[run if run >= 4 else 1 :]
+        items.append(f"{numbers[0]}–{numbers[run - 1]}" if run >= 3 else numbers[0])
+        numbers = numbers[run if run >= 3 else 1 :]
     return textwrap.wrap(", ".join(items), width, break_on_hyphens=False)
 
 

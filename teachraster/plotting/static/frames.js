@@ -24,7 +24,12 @@ const CSS = `
 .tr-frames .tr-caption { min-height: 3.2em; padding: 2px 6px; border: 1px solid #ddd;
   font-size: 15px; margin: 2px 0 4px 0; }
 .tr-frames canvas { display: block; max-width: 100%; height: auto; }
-.tr-frames .tr-notice { color: #b00020; font-size: 13px; min-height: 0; }
+/* The notice lies over the picture's foot instead of below it: a "waiting" that comes and
+   goes must not make the player jump in height (nor push it past a screen, issue 31). */
+.tr-frames .tr-stage { position: relative; width: fit-content; max-width: 100%; }
+.tr-frames .tr-notice { position: absolute; left: 0; right: 0; bottom: 0; color: #b00020;
+  font-size: 14px; background: rgba(255, 255, 255, 0.92); padding: 2px 6px; }
+.tr-frames .tr-notice:empty { display: none; }
 .tr-frames button { display: inline-flex; align-items: center; justify-content: center;
   gap: 4px; white-space: nowrap; }
 .tr-frames .tr-icon { width: 12px; height: 12px; fill: currentColor; flex: none; }
@@ -156,6 +161,24 @@ export function groupMismatch(msg, buffers) {
     `${msg.places.length} places, sent as [${sizes}] bytes (starting ${head.join(", ")})`;
 }
 
+// How long the kernel may be silent before the player says so. On a loaded classroom hub
+// a group can take seconds and more (review r97 00-1: "does not answer ... Run All" after
+// 20 s, on a player whose picture then came): first a calm "waiting", the advice to run
+// everything again only after SILENT_MS, and even then not as a verdict.
+export const WAIT_MS = 4000;
+export const SILENT_MS = 60000;
+
+// The notice under the player after `ms` without the group asked for: "" at first.
+export function waitingNotice(ms) {
+  if (ms < WAIT_MS) return "";
+  if (ms < SILENT_MS) {
+    return "Waiting for the kernel\u2026 (busy: the picture comes when it answers)";
+  }
+  return `The kernel has not answered for ${Math.round(ms / 1000)} s. If it is still busy ` +
+    "(its circle at the top right is filled), wait; if it was stopped or restarted, Run All " +
+    "(Run \u25b8 Run All Cells) to bring the player back.";
+}
+
 // Mount a player in `el`. `opts`: width, height (pixels of a frame), n (steps), key (steps
 // per group), step, interval (ms per step when playing), captions, infos (text per step),
 // poster (PNG bytes of the first picture, optional), request(g) (ask for group g; absent
@@ -190,7 +213,10 @@ export function mountFrames(el, opts) {
   canvas.className = "teachraster-figure";
   canvas.setAttribute("role", "img");
   const ctx = canvas.getContext("2d");
-  root.append(bar, caption, canvas, notice);
+  const stage = document.createElement("div");
+  stage.className = "tr-stage";
+  stage.append(canvas, notice);
+  root.append(bar, caption, stage);
   el.appendChild(root);
   // Keys pressed in the player (arrows on the slider, space on a button) are the player's:
   // JupyterLab's command-mode shortcuts must not also see them.
@@ -199,7 +225,7 @@ export function mountFrames(el, opts) {
   const s = {
     groups: new Map(), asked: new Set(), inflight: null, shown: -1, want: 0,
     timer: null, n: 0, key: 16, captions: [], infos: [], interval: 400, gen: 0,
-    fill: "", cache: new Map(),
+    fill: "", cache: new Map(), waitingSince: null, watching: false,
   };
   // the decoded groups of the last few fills, by name (a toggle back paints at once)
   const CACHED_FILLS = 6;
@@ -253,7 +279,8 @@ export function mountFrames(el, opts) {
       s.askedAt = performance.now();
       opts.request(g, s.gen);
       setTimeout(() => retry(g, s.gen), 3000);
-      setTimeout(() => checkAlive(g), 20000); // a busy kernel, not a dead one, under load
+      if (s.waitingSince === null) s.waitingSince = performance.now(); // kept over retries
+      watch();
     } else {
       s.priority = g;
     }
@@ -269,12 +296,23 @@ export function mountFrames(el, opts) {
     }
   }
 
-  function checkAlive(g) {
-    if (s.inflight === g && !s.groups.has(g)) {
-      notice.textContent =
-        "The kernel does not answer (stopped or restarted?): Run All (Run \u25b8 Run All Cells) " +
-        "to bring the player back.";
-    }
+  // While a group is asked for and not here, the notice says how long the kernel has been
+  // silent (waitingNotice); it empties when the group comes, however late, or a new fill
+  // starts. One timer at a time, none while nothing is awaited.
+  function watch() {
+    if (s.watching) return;
+    s.watching = true;
+    const look = () => {
+      if (s.inflight === null || s.waitingSince === null) {
+        s.watching = false;
+        s.waitingSince = null;
+        notice.textContent = "";
+        return;
+      }
+      notice.textContent = waitingNotice(performance.now() - s.waitingSince);
+      setTimeout(look, 1000);
+    };
+    setTimeout(look, WAIT_MS);
   }
 
   function nextMissing() {
@@ -299,6 +337,7 @@ export function mountFrames(el, opts) {
     }
     s.groups.set(g, frames);
     canvas.dataset.groups = String(s.groups.size); // for tests and benchmarks
+    s.waitingSince = null; // the kernel answered: no notice (a late answer clears it)
     notice.textContent = "";
     if (s.inflight === g) s.inflight = null;
     if (s.priority === g) s.priority = undefined;
@@ -369,6 +408,8 @@ export function mountFrames(el, opts) {
     canvas.dataset.groups = String(s.groups.size);
     s.asked.clear();
     s.inflight = null;
+    s.waitingSince = null; // a new fill: nothing awaited yet, no notice from the last one
+    notice.textContent = "";
     s.priority = undefined;
     s.n = o.n;
     s.key = o.key;
@@ -480,6 +521,7 @@ function render({ model, el }) {
   return () => {
     gone = true;
     player.stop();
+    player.state.waitingSince = null; // a pending look stops, saying nothing
   };
 }
 

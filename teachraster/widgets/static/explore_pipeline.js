@@ -147,10 +147,13 @@ function svg(tag, attrs, text) {
 // lesson numbers, early-z note and caption are 15 px, a classroom's minimum (review r91 00-D:
 // 13 px read on a laptop, not from the back of a hall). Stage names stay 13 px bold: at 14 px
 // "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px from their boxes' borders (review
-// r17), under the selected box's 2-px border; five boxes fill the column.
-const MAP = { width: 580, height: 418, font: 15, name: 13, line: 18 };  // three lines of early-z
+// r17), under the selected box's 2-px border; five boxes fill the column. The lesson numbers
+// come in lines of at most nine characters (about 75 px at 15 px: review r97 00-5 found the
+// depth test's three lessons on one line filling a 104-px box from border to border), three
+// lines at most, 17 px apart, under the name: boxes 92 px tall.
+const MAP = { width: 580, height: 434, font: 15, name: 13, line: 18, lessons: 17 };
 function layout() {
-  const [bw, bh, gx, gy, x0, y0] = [104, 84, 14, 70, 2, 68];
+  const [bw, bh, gx, gy, x0, y0] = [104, 92, 14, 70, 2, 68];
   return STAGES.map(([key], k) => {
     const r = Math.floor(k / 5);
     const c = k % 5;
@@ -216,7 +219,7 @@ function diagram(onPick, lessons) {
       "font-size": MAP.name, "font-weight": "bold" }, line)));
     const taught = lessons[b.key];
     taught.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
-      y: b.y + b.h - 7 - 16 * (taught.length - 1 - i), "text-anchor": "middle",
+      y: b.y + b.h - 7 - MAP.lessons * (taught.length - 1 - i), "text-anchor": "middle",
       "font-size": MAP.font, fill: "#444" }, line)));
     g.addEventListener("click", (e) => onPick(b.key, e));
     onKeys(g, (e) => {
