@@ -877,6 +877,25 @@ def test_07_t_junction_is_asked_before_the_text_and_the_figure_answer_it():
     assert ask < told < held and "sky" not in cells[ask - 1]
 
 
+def test_07_catalogue_tables_print_in_one_piece():
+    """Review r98 07-2: the tables printed line by line reached the page in pieces (a line's
+    text and its newline in two outputs), read as stray blank lines; each is one write now."""
+    from notebook_runs import executed
+
+    run = executed("07_hard_cases")
+    assert not run.error
+    nb = run.notebook()
+    for cell in nb.cells:
+        if cell.cell_type != "code" or not (
+            cell.source.startswith("table = [") or "rest = []" in cell.source
+        ):
+            continue
+        streams = [o for o in cell.outputs if o.get("output_type") == "stream"]
+        assert len(streams) == 1 and "\n\n\n" not in streams[0]["text"], cell.source[:60]
+    sources = [c.source for c in nb.cells if c.cell_type == "code"]
+    assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 2
+
+
 def test_07_case_texts_match_what_the_lesson_prints():
     from teachraster.study import hardcases
 
