@@ -192,3 +192,19 @@ def test_zero_area_naive_fills_the_whole_line_as_it_says(name):
     lo, hi = xy.min(axis=0), xy.max(axis=0)
     beyond = ((lit < lo) | (lit > hi)).any(axis=1)
     assert beyond.any() and "beyond" in case.naive_does and "no bounding box" in case.naive_does
+
+
+def test_near_flat_why_puts_point_4_below_v1():
+    """Review r98 07-1: "the split point u4 is 1/256 px below v1" read u4, a horizontal
+    coordinate, as a height (lesson 01 prints u4 beside v1's u). Point 4 = (u4, v_mid) is the
+    point below v1: here the long edge v1-v3 is vertical, so u4 is v1's u exactly."""
+    import teachraster as tr
+
+    case = hc.get_case("near_flat")
+    v1 = case.triangles[0][0]
+    span = tr.rasterize(tr.Triangle(case.triangles[0]), 10, 10, method="span", trace=True)
+    span = span.trace.span
+    v_mid = span.sorted_xy[1][1]
+    assert span.u4 == v1[0] and v_mid - v1[1] == 1 / 256  # point 4: straight below v1
+    assert "point 4 = (u4, v_mid), lies 1/256 px below v1" in case.why
+    assert "u4 is" not in case.why

@@ -252,11 +252,22 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
-    # the row question (review r13 01: asked after the rule, in the flat-top part): row 13's
-    # ends are the package's, both on centres; the clicked answer is columns 7-12, nothing else
-    assert ns.asked_row == 13 and ns.ends_asked == [7.5, 13.5] == list(ns.ends[13][:2])
-    assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
-    assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
+    # the row question (review r98 01-1: row 13 repeated the worked row 5): row 9 runs
+    # through the middle vertex v3; its ends are the package's, u4 and v3 itself, both on
+    # centres; the clicked answer is columns 6-17, nothing else
+    v3 = ns.xy[2]
+    assert ns.asked_row + 0.5 == ns.v_mid == v3[1] and ns.order[1] == 2
+    assert ns.ends_asked == [ns.u4, v3[0]] == [6.5, 18.5] == list(ns.ends[9][:2])
+    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(6, 18))
+    assert ns.row_answer.sum() == 12 and ns.cols_asked.tolist() == list(range(6, 18))
+    row_cell = next("".join(c["source"]) for c in json.loads(
+        (NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
+        if "q_row = PredictPixels(" in "".join(c["source"]))  # fmt: skip
+    row_question = row_cell.split("q_row = PredictPixels(")[1].split("answer=")[0]
+    assert "runs exactly through the middle" in row_question and "6.5" not in row_question
+    # review r98 01-2: the Try-it says to re-fill before span_fill(trace.snapped, ...)
+    summary = " ".join(_cells("01_span_tables", "markdown")[-1].split())
+    assert "re-run the cell of section 1 (it fills the new triangle: `fill` and `trace`)" in summary
     # review r78 01-1: q_flat asks about the near-flat triangle (v2 1/256 px lower), which the
     # rules stated before do not answer by rote: row 2 loses its centres, row 6 gains 9.5
     assert ns.asked_rows == [2, 6, 10] and ns.ends2 == [2.5, 2.5] and ns.ends6[0] == 4.5
@@ -282,7 +293,7 @@ def test_01_predictions_and_the_stepping_failure_rates():
         i for i, (xl, xr, *_) in ns.ends.items() if (xl - 0.5) % 1 == 0 or (xr - 0.5) % 1 == 0
     ]
     assert starred == [1, 5, 9, 13]
-    assert "rows 5, 9 and 13, the row q_row asked about, and row 1" in " ".join(
+    assert "rows 5, 9 (q_row's) and 13 have one on both ends" in " ".join(
         " ".join(_cells("01_span_tables", "markdown")).split()
     )
     # review r78 01-2: the player's winding step says "back-facing"; the text says why it is

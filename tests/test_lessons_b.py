@@ -841,6 +841,61 @@ def test_07_t_junction_cracks_overlaps_and_the_split_seals_it():
     assert "differs from ours" in asked.split("answer=")[0]
 
 
+def test_07_t_junction_is_asked_before_the_text_and_the_figure_answer_it():
+    """Review r98 07-3: the T-junction's gaps are asked on the grid (q_gaps) before any text
+    says where they are; the answer is every centre inside the mesh's outline A-D-B-C that no
+    triangle draws, and those are the wedge's, the gaps the held figure prints."""
+    import json
+
+    ns = lesson("07_hard_cases")
+    quad = np.array([ns.A, ns.D, ns.B, ns.C])  # the mesh's outline, convex
+    rows, cols = np.mgrid[:16, :16]
+    px, py = cols + 0.5, rows + 0.5
+    sides = [(q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0])
+             for p, q in zip(quad, np.roll(quad, -1, axis=0))]  # fmt: skip
+    strictly_in = np.all([e > 0 for e in sides], axis=0) | np.all([e < 0 for e in sides], axis=0)
+    assert np.array_equal(ns.gap_answer, strictly_in & (ns.crack_counts == 0))
+    assert len(ns.gap_cells) == ns.t_gaps[ns.crack_name] == 4
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, c in enumerate(cells) if "q_gaps = PredictPixels(" in c)
+    held = next(i for i, c in enumerate(cells) if c.startswith("q_gaps.hold()"))
+    told = next(i for i, c in enumerate(cells) if c.startswith("A crack no tie rule closes"))
+    assert ask < held < told and 'picked="left as gaps"' in cells[ask]
+    before = cells[ask - 2]  # the heading's text, above the setup
+    assert "gap" not in before and "crack" not in before.lower()
+    assert nb["cells"][ask]["metadata"]["tags"] == ["hide-input"]
+    # ... and where the divide puts the vertex behind the eye (q_behind), before the text
+    # that says it lands in the sky: (x/w + 1)·16, (1 - y/w)·16 of its clip coordinates
+    x, y, _, w = ns.behind_clip[2]
+    assert w < 0 and np.allclose(ns.behind_at, [(x / w + 1) * 16, (1 - y / w) * 16])
+    assert ns.behind_at[1] < ns.n_px / 2 < ns.in_front_at[1]  # above the horizon; mirrored
+    assert np.allclose(ns.behind_at + ns.in_front_at, ns.n_px)  # through the image's centre
+    ask = next(i for i, c in enumerate(cells) if "q_behind = PredictPoint(" in c)
+    told = next(i for i, c in enumerate(cells) if "reaching up into the sky" in c)
+    held = next(i for i, c in enumerate(cells) if c.startswith("q_behind.hold()"))
+    assert ask < told < held and "sky" not in cells[ask - 1]
+
+
+def test_07_catalogue_tables_print_in_one_piece():
+    """Review r98 07-2: the tables printed line by line reached the page in pieces (a line's
+    text and its newline in two outputs), read as stray blank lines; each is one write now."""
+    from notebook_runs import executed
+
+    run = executed("07_hard_cases")
+    assert not run.error
+    nb = run.notebook()
+    for cell in nb.cells:
+        if cell.cell_type != "code" or not (
+            cell.source.startswith("table = [") or "rest = []" in cell.source
+        ):
+            continue
+        streams = [o for o in cell.outputs if o.get("output_type") == "stream"]
+        assert len(streams) == 1 and "\n\n\n" not in streams[0]["text"], cell.source[:60]
+    sources = [c.source for c in nb.cells if c.cell_type == "code"]
+    assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 2
+
+
 def test_07_case_texts_match_what_the_lesson_prints():
     from teachraster.study import hardcases
 

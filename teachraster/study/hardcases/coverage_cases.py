@@ -182,8 +182,8 @@ add_case(
 add_case(
     HardCase(
         "near_flat",
-        "the flat-top triangle with one top vertex 1/256 px lower: the split point u4 is "
-        "1/256 px below v1",
+        "the flat-top triangle with one top vertex 1/256 px lower: the split point, "
+        "point 4 = (u4, v_mid), lies 1/256 px below v1",
         "triangle",
         "the top edge now slopes down (not a top edge): row 1 loses every centre, the "
         "vertex pixel (1, 1) included; the hypotenuse moved right by < 1/256 px, so its "
