@@ -228,6 +228,40 @@ def test_predictions_and_standards_numbers(ns, nsb):
         assert ns.srgb_steps[("additive", 40)][2] > 1
 
 
+def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
+    """Review r102 12b: q_order asks a number (where only blue and yellow overlap, the red
+    channel moves by alpha squared times their difference); the resolve table quotes what each
+    API promises, and llvmpipe's sRGB resolve is measured (linear light); the explorer's sRGB
+    box changes even one layer's colour, printed."""
+    import json
+    from pathlib import Path
+
+    import teachraster as tr
+
+    ns = nsb
+    assert ns.blue_yellow_only.sum() > 0
+    assert abs(ns.red_gap - ns.alpha_o**2 * (ns.rgba[2, 0] - ns.rgba[0, 0])) < 1e-12
+    assert abs(ns.red_gap - 0.342) < 1e-9
+    assert abs(ns.red_gap - 0.6 * 0.4 * 0.95) > ns.red_gap_tol  # the slip alpha (1 - alpha)
+    assert abs(ns.red_gap - 0.6 * 0.95) > ns.red_gap_tol  # the slip alpha alone
+    assert ns.delta.max() > ns.red_gap  # "the largest change, under all three"
+    path = Path(__file__).resolve().parents[1] / "notebooks" / "12b_blending.ipynb"
+    nb = json.loads(path.read_text())
+    md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "which pixels differ?" not in md  # the counts answered it before the question
+    for quoted in ("GL 4.6 §18.3.1", "resolved in an implementation-dependent manner",
+                   "Multisample resolve is performed in linear space", "§5.6.6", "§19.2.4",
+                   "VK_RESOLVE_MODE_AVERAGE_BIT", "VkResolveImageFlagBitsKHR"):  # fmt: skip
+        assert quoted in md, quoted
+    if ns.ok:  # llvmpipe resolves an SRGB8_ALPHA8 blit in linear light, within a code
+        assert ns.resolve_apart["linear light"] <= 1 < 30 < ns.resolve_apart["codes"]
+    # the explorer's pixel under blue alone: blended with white in light once the box is ticked
+    assert np.allclose(ns.blue_shown[False], [0.4, 0.67, 0.82])
+    assert abs(ns.blue_shown[True][0] - tr.linear_to_srgb(0.4)) < 1e-9  # red: 40 % of light
+    assert "lightens even the regions one triangle covers" in md
+
+
 def test_srgb8_resolve_averages_the_samples_linear_values():
     """The lesson's table: under color_format="srgb8" every sample stores an 8-bit code and
     frame.color, the resolve, is the mean of the samples' linear values (not rounded again)."""
