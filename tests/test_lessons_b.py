@@ -125,6 +125,13 @@ def test_06_review_r60_figures_say_what_they_draw():
     assert not any(k.startswith(("Ampere", "Ada", "Hopper")) for k in ns.RECIPROCAL_RATE)
     code = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
     assert "_min_s'] * 1e3:.2f}..{r[timer + '_max_s'] * 1e3:.2f}" in code
+    # r102 06-2: the checkerboard's vermillion marks have a key in the figure itself
+    checker = next(
+        "".join(c["source"]) for c in nb["cells"] if "def draw_checks(" in "".join(c["source"])
+    )
+    assert (
+        "fig.legend(" in checker and 'label="check differs from perspective-correct\'s"' in checker
+    )
     assert "fastest(r, t) * 1e3:8.2f}" in code  # the other timers' columns too
 
 
@@ -415,8 +422,19 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     assert not any(a == b for a, b in zip(ns.price_items, ns.price_order))
     assert not any(a == b for a, b in zip(ns.price_items, ns.order30))
     assert sorted(ns.price_items) == sorted(ns.price_order)
-    # D1: the held headline says the front shrinks, not that nothing changes
-    assert ns.FRONT_TEXT.startswith("**Cheaper divides shrink the front, never reorder it.**")
+    # D1: the held headline says the front shrinks, not that nothing changes; r102 06-1: and
+    # agrees with q_price, whose answer reorders the costs: the costs reorder, the front not
+    assert ns.FRONT_TEXT.startswith("**Cheaper divides reorder the costs, not the front.**")
+    assert "never reorder" not in ns.FRONT_TEXT
+    # the order at d = 1 is q_price's (N = 2 after the exact divide), at §1's 30 N = 2 before it
+    assert ns.order_at[1].index("N=2") > ns.order_at[1].index("perspective")
+    assert ns.order_at[30].index("N=2") < ns.order_at[30].index("perspective")
+    assert [v for v in ns.order_at[1] if v in ns.front_at[1]] == ns.front_at[1]
+    for d in ns.order_at:  # the front, cheapest first, keeps its order at every price
+        assert [v for v in ns.order_at[d] if v in ns.front_at[d]] == ns.front_at[d]
+    assert [v.replace("subdivided ", "") for v in ns.price_order] == [
+        v for v in ns.order_at[1] if v in ("affine", "N=16", "N=4", "perspective", "N=2")
+    ]
     assert "**The front keeps its order.**" not in "".join(cells)
     # q_bits: the cue to E's own bound, without the answer
     question = next(c for c in cells if "q_bits = Predict(" in c).split("explain=")[0]

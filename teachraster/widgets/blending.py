@@ -154,7 +154,8 @@ class BlendingExplorer(Shown):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, premultiplied alpha, sRGB",
-            "Move a triangle earlier or later: 'over' depends on the order. 'clear to opaque "
+            "The list: the triangles in the order drawn, the first at the top. Move one "
+            "earlier or later: 'over' depends on the order. 'clear to opaque "
             "white' clears the buffer to (1, 1, 1, 1), the white of the lesson's figures; "
             "unticked, it is cleared to transparent black (0, 0, 0, 0), into which straight "
             "alpha stores a wrong alpha. The panels show the colours written, as displayed; tick 'stored alpha' "
@@ -170,8 +171,10 @@ class BlendingExplorer(Shown):
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     def _options(self):
+        # the triangles in the order drawn, by their index (the status line's) and colour; no
+        # position number: "1. triangle 0" put two counts on one line (review r102 12b-5)
         names = ("blue", "red", "yellow", "green", "purple")
-        return [(f"{k + 1}. triangle {t} ({names[t % len(names)]})", k)
+        return [(f"triangle {t} ({names[t % len(names)]})", k)
                 for k, t in enumerate(self.order)]  # fmt: skip
 
     @property
