@@ -981,3 +981,19 @@ def test_value_axis_labels_only_where_they_do_not_overlap():
     for (_, (scale, e, z)), ticks in zip(calls, got):
         assert ticks == ([0, 0.5, 1] if scale * z * np.cos(e) / 2 >= 24 else [0])
     assert got[0] == [0, 0.5, 1] and got[-1] == [0]
+
+
+def test_gap_bar_labels_on_one_line_when_the_bar_is_short():
+    # review r96 03-2: seen from above the bar shrank to a few pixels and its three labels
+    # (f, affine, gap) were drawn on one another and on v3's; below GAP_LABELS_APART px they
+    # are one line at the bar's middle
+    parts = ("raster_rules", "view3d", "explore_attributes")
+    gap = {"p": [7.17, 10.1], "gap": 0.191, "s": {"correct": 0.799, "affine": 0.608}}
+    tall, short = call_js(parts, [("gapBarLabels", [gap, 8.8, px]) for px in (46.0, 12.0)])
+    assert [label["text"].strip() for label in tall] == ["gap 0.191", "f 0.799", "affine 0.608"]
+    assert [label["p"][2] for label in tall] == pytest.approx(
+        [(0.799 + 0.608) / 2 * 8.8, 0.799 * 8.8, 0.608 * 8.8]
+    )
+    assert len(short) == 1
+    assert short[0]["text"].strip() == "f 0.799 / affine 0.608 / gap 0.191"
+    assert short[0]["p"][2] == pytest.approx((0.799 + 0.608) / 2 * 8.8)

@@ -798,7 +798,7 @@ def test_history_colour_swatches_draw_the_colours_the_table_prints(depth_write):
     import matplotlib.pyplot as plt
     from matplotlib.patches import Rectangle
 
-    from teachraster.pipeline.debugging.frame_history import swatch_colours
+    from teachraster.pipeline.debugging.frame_history import SWATCH_WIDTH, swatch_colours
 
     scene = get_scene("intersecting_triangles")
     clip = scene.clip(64 / 48)
@@ -824,7 +824,7 @@ def test_history_colour_swatches_draw_the_colours_the_table_prints(depth_write):
         fig.canvas.draw()
         image = np.asarray(fig.canvas.buffer_rgba())
         swatches = [p for p in ax.patches
-                    if isinstance(p, Rectangle) and np.isclose(p.get_width(), 0.26)]  # fmt: skip
+                    if isinstance(p, Rectangle) and np.isclose(p.get_width(), SWATCH_WIDTH)]  # fmt: skip
         on = [i for i, r in enumerate(h) if r.outcome == "passed"]
         assert len(swatches) == 3 * len(on)
         for p in swatches:
@@ -1109,8 +1109,9 @@ def test_frame_inspector_strip_at_4_samples_and_on_an_empty_pixel():
 
 def test_frame_inspector_folds_a_triangles_refused_samples_into_one_row():
     """Review r82, 11-F: under 4x MSAA a triangle's consecutive not_covered samples are one
-    row of the inspector's table (its samples, the nearest miss); the printed table keeps
-    one row per record."""
+    row of the inspector's table (its samples, the nearest miss); since r96 11-2 the printed
+    table (``h.table()``, ``print(h)``) folds them too, and ``fold=False`` gives one row per
+    record."""
     from teachraster.pipeline.debugging.frame_history import history_table
     from teachraster.widgets import FrameInspector
 
@@ -1118,11 +1119,11 @@ def test_frame_inspector_folds_a_triangles_refused_samples_into_one_row():
     try:
         w.row.value, w.col.value = 24, 32
         h = w.history
-        flat = history_table(h, narrow=True)
+        flat = history_table(h, narrow=True, fold=False)
         folded = history_table(h, narrow=True, fold=True)
         assert "4 samples, nearest outside E" in folded and "0-3" in w.table.value
         assert len(folded.splitlines()) < len(flat.splitlines())
-        assert h.table() == flat  # h.table() is unchanged: a row per record
+        assert h.table() == folded  # what a student prints is what the inspector shows
         # the folded row names the nearest of its samples' misses
         runs = [r for r in h.records if r.outcome == "not_covered" and r.triangle == 384]
         nearest = min(r.outside for r in runs)
@@ -1144,3 +1145,60 @@ def test_lesson_11_r82_figures_and_words():
     assert "In the order drawn above" not in text  # 11-H
     assert "In §2's order (red first) the buffer ends with blue's" in text
     assert "*Tested in* `tests/test_frame_history_gl.py`" in text  # 11-I
+
+
+def test_printed_table_folds_identical_sample_lines_as_the_inspector_does():
+    """Review r96 11-2: ``h.table()`` of a glass sphere's pixel under 4x MSAA printed four
+    identical colour lines for triangle 415 (one per sample) and four "not_covered" rows of
+    triangle 383. Printed, the table folds them as the inspector does ("s0-3", "0-3"); the
+    records, the contract, keep one per sample, and every folded line stands for the lines
+    it replaces."""
+    from teachraster.pipeline.debugging.frame_history import (
+        colour_lines,
+        history_table,
+        sample_list,
+    )
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    h = glass_frame("uv_sphere", 64, 48, samples=4).history(23, 31)
+    printed = h.table()
+    assert printed == history_table(h, narrow=True, fold=True) and str(h) == history_table(h)
+    lines = printed.splitlines()
+    body = lambda t: t[t.index("(") :]  # noqa: E731
+    colours = [line for line in lines if line.startswith("  415 ")]
+    assert len(colours) == 1 and " s0-3 " in colours[0]
+    assert any(line.startswith("383 0-3  not_covered") for line in lines)
+    assert any(" s1-2 " in line for line in lines if line.startswith("  592 "))
+    # nothing lost: each sample's colour line is one of the folded lines
+    full = colour_lines(h)
+    folded = colour_lines(h, fold=True)
+    assert {body(x) for x in full[1:]} == {body(x) for x in folded[1:]}
+    assert len(h.records) == 4 * len({r.triangle for r in h.records})  # one per sample
+    assert sum(r.triangle == 415 and r.outcome == "passed" for r in h.records) == 4
+    assert len(history_table(h, narrow=True, fold=False).splitlines()) > len(lines)
+    assert sample_list([0, 2, 3]) == "0,2-3" and sample_list([3]) == "3"
+
+
+def test_glass_swatches_in_the_inspector_are_legible():
+    """Review r96 11-3: with glass, the inspector's history strip drew each record's
+    before/fragment/after swatches about 15 x 30 px. At the inspector's size, one sample,
+    each is now at least 20 px wide and 40 px tall."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    from matplotlib.patches import Rectangle
+
+    from teachraster.pipeline.debugging.frame_history import SWATCH_WIDTH
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("uv_sphere", 64, 48, glass=True, backend="image")
+    try:
+        w.row.value, w.col.value = 24, 32
+        w.hist_fig.canvas.draw()
+        swatches = [p for p in w.hist_ax.patches
+                    if isinstance(p, Rectangle) and np.isclose(p.get_width(), SWATCH_WIDTH)]  # fmt: skip
+        assert len(swatches) == 3 * sum(r.outcome == "passed" for r in w.history)
+        for p in swatches:
+            box = p.get_window_extent()
+            assert box.width >= 20 and box.height >= 40, (box.width, box.height)
+    finally:
+        w.close()

@@ -49,6 +49,23 @@ def test_plane_explorer_reads_positions_as_lesson_03_does(explorer):
     assert explorer.image.colorbar.ax.get_ylabel() == "f at the pixel centres"
 
 
+def test_plane_explorer_text_at_projector_size(explorer):
+    """Review r96 03-3: the sliders' names and values and the 3 x 3 system were 12-13 px,
+    the smallest text of lesson 03. The sliders take the projector's 16 px (wide enough for
+    it: name, track and value need 280 px there), the numbers beside the figure 15 px, the
+    system's monospace table included."""
+    from teachraster.widgets.common import PROJECTOR_CSS
+
+    title = explorer.widget.children[0].value
+    assert title.startswith(PROJECTOR_CSS) and "tr-projector" in explorer.widget._dom_classes
+    assert ".tr-live-slider" in PROJECTOR_CSS and "font-size: 16px" in PROJECTOR_CSS
+    for s in (*explorer.x, *explorer.y, *explorer.f):
+        assert int(s.layout.width.removesuffix("px")) >= 280
+    info = explorer.info.value
+    assert "font-size:15px" in info.split("3 × 3 system")[0]
+    assert "<table style='font-family:monospace; font-size:15px" in info
+
+
 def test_plane_explorer_fits_one_screen_with_its_sliders(explorer):
     """Lesson 03's explorer under its three rows of sliders on a projector (1024 x 768, about
     600 px for the widget): its figure was 576 px high, a title row above the ticks; now at

@@ -1207,6 +1207,18 @@ def test_11_replay_and_the_sliver_between_centres():
     assert 0 < covered_1 < covered_4  # a few centres where it crosses a row; more samples more
 
 
+def test_11_the_sliver_table_folds_the_samples_the_text_names():
+    """Review r96 11-2: the printed table folds a triangle's samples that say the same, as
+    the inspector does; cell 16 names the folded samples of cell 17's 4-sample table."""
+    from notebook_runs import executed
+
+    cells = executed("11_debugging_a_frame").notebook().cells
+    text = "".join(cells[16].source)
+    assert "samples `0-2` below" in " ".join(text.split())
+    printed = "".join(o.get("text", "") for o in cells[17].outputs if o.output_type == "stream")
+    assert any(line.startswith("  0 0-2  not_covered") for line in printed.splitlines())
+
+
 def test_11_answers_wait_for_check():
     """Review r36 11-3: unheld markdown after Question 1 (cell 14: "the strip draws the
     buffer after the blue fragment ... above the red one's") and after q_glass (cells 38, 40:

@@ -32,6 +32,7 @@ from .common import (
     control_row,
     fit_width,
     picture_row,
+    projector_text,
     style_context,
     title_html,
 )
@@ -51,8 +52,13 @@ LEVELS = 6
 FIGSIZE = (6.3, 4.3)
 
 #: The numbers beside the figure: 15 px, readable on a projector (review r78 03-7: the
-#: page's 13 px was below classroom size)
-INFO_DIV = "<div style='margin-left:16px; font-size:15px'>"
+#: page's 13 px was below classroom size); the 3 × 3 system's table too (r96 03-3)
+INFO_SIZE = "15px"
+INFO_DIV = f"<div style='margin-left:16px; font-size:{INFO_SIZE}'>"
+
+#: Each slider's width in the page: at the projector's 16 px (``common.PROJECTOR_CSS``) its
+#: name (5 em), track (120 px at least) and value (4 em) need 280 px; 260 did at 13 px
+SLIDER_WIDTH = "290px"
 
 #: What the colours are (the colour bar's label; the Axes have no title).
 COLOUR_LABEL = "f at the pixel centres"
@@ -226,8 +232,10 @@ class PlaneExplorer:
             "stay straight and parallel; the 3 × 3 system, M and A, B, C, D follow.",
         )
         rows = [control_row([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
-        self.widget = widgets.VBox([title, *rows, picture_row([self.display.widget,
-                                                               *info_widgets])])  # fmt: skip
+        # the sliders' names and values at projector size, as FilterExplorer's (review r96
+        # 03-3: 12-13 px, the smallest text of lesson 03)
+        self.widget = projector_text(widgets.VBox([title, *rows, picture_row(
+            [self.display.widget, *info_widgets])]), title)  # fmt: skip
         if self.backend != "ipympl":
             # the positions of the slider moved last, drawn while the kernel idles; full
             # pictures (the colour bar of a new f range too), so a release on one needs no
@@ -238,7 +246,7 @@ class PlaneExplorer:
         def slider(value, lo, hi, name, step=0.25):
             # in the page, coalesced: the kernel renders the latest value, never a queue
             s = LiveSlider(value=value, min=lo, max=hi, step=step, description=name,
-                           layout=fit_width(widgets.Layout(width="260px")))  # fmt: skip
+                           layout=fit_width(widgets.Layout(width=SLIDER_WIDTH)))  # fmt: skip
             s.observe(lambda change: self.update(), "value")
             s.on_release(self.update)  # a drag ended on a draft: the full picture
             return s
@@ -349,8 +357,8 @@ class PlaneExplorer:
         # a gap between the columns, whatever the page's table style: two-digit values ran
         # into the next column ("[5.00 12.00 1]", review r65 03-2)
         system = ("<b>3 × 3 system</b> (rows v1, v2, v3) · (g_x, g_y, g_0) = f:"
-                  "<table style='font-family:monospace; border-collapse:separate; "
-                  f"border-spacing:0.8em 0'>{rows}</table>")  # fmt: skip
+                  f"<table style='font-family:monospace; font-size:{INFO_SIZE}; "
+                  f"border-collapse:separate; border-spacing:0.8em 0'>{rows}</table>")  # fmt: skip
         parts = []
         if "g" not in s:
             parts.append("<b>zero area</b>: the three points are on one line, no plane")

@@ -199,7 +199,9 @@ class PixelHistory:
     def table(self, narrow: bool = True) -> str:
         """The table in a notebook column: at most :data:`NARROW` characters a line, as the
         frame inspector shows it (``piece`` and ``smp`` only where they say something, a
-        long "value / why" under its row); ``narrow=False``: ``str(h)``, one row a line."""
+        long "value / why" under its row, a triangle's samples that say the same on one
+        line); ``narrow=False``: ``str(h)``, one row a line. ``records`` keeps every
+        sample's record."""
         return history_table(self, narrow=narrow)
 
     def _repr_pretty_(self, p, cycle) -> None:  # IPython prints the table
@@ -553,7 +555,7 @@ def _tuple(c) -> tuple:
     return tuple(float(v) for v in c)
 
 
-def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool = False) -> str:
+def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool = True) -> str:
     """The readable table ``print(h)`` shows. ``narrow``: at most :data:`NARROW` characters a
     line, for a widget's column at a projector's 12 px (review r18, exercise 11: at 0.75em,
     9.75 px, two tables fitted a 592-px column side by side, too small to read): the header
@@ -561,10 +563,13 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
     piece, more than one sample), each colour line's "after" on a line of its own. ``like``:
     the other history of a pair (or None), whose rows set the columns too, so that the two
     tables have the same columns and wrap their rows alike (review r21 D4: the outcome
-    column's width in one table decided which of its rows wrapped). ``fold``: a triangle's
-    consecutive ``not_covered`` samples refused for the same reason on one line, with the
-    nearest miss (review r82, 11-F: under 4× MSAA a glass sphere's pixel listed 40 records,
-    most of them refused samples, each on two lines)."""
+    column's width in one table decided which of its rows wrapped). ``fold`` (the default,
+    so that ``print(h)``, ``h.table()`` and the frame inspector show the same table; review
+    r96 11-2): a triangle's consecutive ``not_covered`` samples refused for the same reason
+    on one line, with the nearest miss (review r82, 11-F: under 4× MSAA a glass sphere's
+    pixel listed 40 records, most of them refused samples, each on two lines), and its
+    samples' identical colour lines on one (:func:`colour_lines`); ``fold=False``: a line
+    per record, as ``h.records`` holds them."""
     shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
              f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
@@ -629,7 +634,7 @@ def _folded(rows) -> list:
             folded.append((r, outcome, why, str(r.sample)))
             continue
         near = min(records, key=lambda x: x.outside if np.isfinite(x.outside) else np.inf)
-        smp = f"{records[0].sample}-{records[-1].sample}"
+        smp = sample_list([x.sample for x in records])
         folded.append((near, outcome, f"{len(records)} samples, nearest {_why(near)}", smp))
     return folded
 
@@ -687,32 +692,53 @@ def colour_lines(h: PixelHistory, narrow: bool = False, fold: bool = False) -> l
     """The colour part of the table: per record that reached the colour buffer, the
     target's RGBA before, the fragment's own and the target's after (none without a
     colour buffer); ``narrow``: the "after" on a line of its own where the line would
-    pass :data:`NARROW` characters; ``fold``: one line for a triangle's consecutive samples
-    whose three colours are the same ("s0-3"; review r90 11-7: a glass sphere's pixel
-    listed four identical lines, one per sample)."""
+    pass :data:`NARROW` characters; ``fold``: one line for the samples of one triangle's
+    draw whose three colours are the same, with their list ("s0-3", "s0,2"; reviews r90
+    11-7 and r96 11-2: a glass sphere's pixel listed four identical lines, one per
+    sample)."""
     if h.blend is None:
         return []
     mode = "blending off" if h.blend.mode is None else f"blend {h.blend.mode}"
     if not any(r.outcome == "passed" for r in h.records):  # a header over no line said nothing
         return [f"colour buffer ({mode}, {h.blend.color_format}): no fragment reached it here"]
     out = [f"colour buffer ({mode}, {h.blend.color_format}), RGBA: before -> fragment -> after"]
-    runs = []  # [first record, last sample] of each line
+    runs: list = []  # [first record, its samples] of each line
+    start = 0  # the first line of the present triangle's draw
     for r in (r for r in h.records if r.outcome == "passed"):
-        key = (r.triangle, tuple(r.color_before), tuple(r.color), tuple(r.color_after))
-        last = runs[-1][0] if runs else None
-        same = last is not None and key == (last.triangle, tuple(last.color_before),
-                                              tuple(last.color), tuple(last.color_after))  # fmt: skip
-        if fold and h.n_samples > 1 and same and r.sample == runs[-1][1] + 1:
-            runs[-1][1] = r.sample
+        if not runs or runs[-1][0].triangle != r.triangle:
+            start = len(runs)
+        same = [run for run in runs[start:] if _colours_of(run[0]) == _colours_of(r)]
+        if fold and h.n_samples > 1 and same:
+            same[0][1].append(r.sample)
         else:
-            runs.append([r, r.sample])
-    for r, end in runs:
-        smp = "" if h.n_samples == 1 else f" s{r.sample}" + (f"-{end}" if end != r.sample else "")
+            runs.append([r, [r.sample]])
+    for r, samples in runs:
+        smp = "" if h.n_samples == 1 else f" s{sample_list(samples)}"
         line = f"{r.triangle:>5}{smp:>4}  {_rgba(r.color_before)} -> {_rgba(r.color)}"
         after = f" -> {_rgba(r.color_after)}"
         wrap = narrow and len(line + after) > NARROW
         out += [line, " " * 9 + after] if wrap else [line + after]
     return out
+
+
+def _colours_of(r) -> tuple:
+    """A record's colour line: the target before, the fragment, the target after."""
+    return tuple(r.color_before), tuple(r.color), tuple(r.color_after)
+
+
+def sample_list(samples) -> str:
+    """Sample numbers as a short list: runs of consecutive ones as "first-last".
+
+    >>> sample_list([0, 1, 2, 3]), sample_list([1, 2]), sample_list([0, 2, 3])
+    ('0-3', '1-2', '0,2-3')
+    """
+    parts: list[list[int]] = []
+    for s in sorted(samples):
+        if parts and s == parts[-1][1] + 1:
+            parts[-1][1] = s
+        else:
+            parts.append([s, s])
+    return ",".join(str(a) if a == b else f"{a}-{b}" for a, b in parts)
 
 
 def _rgba(c) -> str:
@@ -997,24 +1023,24 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
     if h.blend is None or not len(x):
         return []
     lo, hi = limits
-    band = (hi - lo) * 0.18
-    ax.set_ylim(lo, hi + band * 1.9)
+    band = (hi - lo) * SWATCH_BAND
+    ax.set_ylim(lo, hi + band * 1.75)
     on = [i for i, r in enumerate(h.records) if r.outcome == "passed"]
     if not on:
         return []
     artists = [ax.axhline(hi, color="0.6", linewidth=0.8)]  # depths below, colours above
-    for key, dx in zip(("color_before", "color", "color_after"), (-0.27, 0.0, 0.27)):
+    for key, dx in zip(("color_before", "color", "color_after"), SWATCH_OFFSETS):
         shown = swatch_colours(h, key)
         if key == "color":  # its own RGB by its alpha over checks, white in the middle
             artists += _checks(ax, x[on] + dx, hi + band * 0.15, band, h, on)
             shown = _fragment_rgba(h)
-        artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=0.26,
+        artists.append(ax.bar(x[on] + dx, band, bottom=hi + band * 0.15, width=SWATCH_WIDTH,
                               color=shown, edgecolor="k", linewidth=0.4))  # fmt: skip
     size = _swatch_word_size(ax, SWATCH_WORDS)
     if size is not None:
         # each record's three swatches named above them, as RenderDoc names its columns: one
         # label at the left named only the first record's (review r55 #7, r62)
-        for word, dx in zip(SWATCH_WORDS, (-0.27, 0.0, 0.27)):
+        for word, dx in zip(SWATCH_WORDS, SWATCH_OFFSETS):
             artists += [ax.text(x[i] + dx, hi + band * 1.2, word, fontsize=size,
                                 ha="center", va="bottom") for i in on]  # fmt: skip
         return artists
@@ -1050,24 +1076,32 @@ def _checks(ax, centres, bottom, height, h: PixelHistory, on) -> list:
             for j in range(3):
                 colour = "white" if (i + j) % 2 == 0 else "0.6"
                 artists.append(ax.add_patch(Rectangle(
-                    (x0 - 0.13 + i * 0.26 / 3, bottom + j * height / 3), 0.26 / 3, height / 3,
+                    (x0 + (i / 3 - 0.5) * SWATCH_WIDTH, bottom + j * height / 3),
+                    SWATCH_WIDTH / 3, height / 3,
                     facecolor=colour, edgecolor="none", zorder=1)))  # fmt: skip
     return artists
 
 
 #: The words over a record's three colour swatches, where they fit (:func:`_draw_colours`).
 SWATCH_WORDS = ("before", "fragment", "after")
+#: A colour swatch's width (records) and the three's offsets from their record: 0.92 of a
+#: record's room (0.26 wide, ±0.27 before: 15 px in the frame inspector; review r96 11-3).
+SWATCH_WIDTH = 0.3
+SWATCH_OFFSETS = (-0.31, 0.0, 0.31)
+#: A swatch's height as a share of the depths' range (0.18 before: 30 px in the inspector,
+#: r96 11-3); the colour band above the depths is 1.75 of it (the words over the swatches).
+SWATCH_BAND = 0.36
 
 
 def _swatch_word_size(ax, words) -> float | None:
     """The font size (points) in which the longest of ``words`` fits over a colour swatch
-    (0.26 records wide; estimated at 0.55 em a character): the Axes' small size, else its
+    (:data:`SWATCH_WIDTH` records wide; estimated at 0.55 em a character): the Axes' small size, else its
     x-small one, as long as that is at least 9 points (12 px at 96 dpi); else None."""
     from matplotlib.font_manager import FontProperties
 
     width_in = ax.get_position().width * ax.figure.get_size_inches()[0]
     span = abs(np.subtract(*ax.get_xlim())) or 1.0
-    swatch_pt = 0.26 * width_in / span * 72
+    swatch_pt = SWATCH_WIDTH * width_in / span * 72
     for name in ("small", "x-small"):
         size = FontProperties(size=name).get_size_in_points()
         if size >= 9 and swatch_pt >= 0.55 * size * max(len(w) for w in words):

@@ -197,6 +197,32 @@ export function drawnSheets(xy, w, f, names, W, H, view, exact = true) {
     .map((i) => ({ sheet: polys[i].sheet, s: polys[i].pts.map(cam.project) }));
 }
 
+// below this projected length (px) the bar has no room for a label at each end and one at
+// its middle (each 22 px tall): its three values go on one line
+export const GAP_LABELS_APART = 30;
+
+// the labels of the gap bar ({p, text, color, font}) when it is `barPx` long on the screen:
+// f at its f end, the gap at its middle, the affine value at the other end; one line of all
+// three at the bar's middle when barPx < GAP_LABELS_APART (review r96 03-2)
+export function gapBarLabels(gap, zScale, barPx) {
+  const [x, y] = gap.p;
+  const at = (v) => [x, y, v * zScale];
+  const f = ` f ${fmt(gap.s.correct, 3)}`;
+  const affine = ` affine ${fmt(gap.s.affine, 3)}`;
+  const size = ` gap ${fmt(gap.gap, 3)}`;
+  const middle = (gap.s.correct + gap.s.affine) / 2;
+  if (barPx < GAP_LABELS_APART) {
+    return [{ p: at(middle), text: `${f} /${affine} /${size}`, color: OKABE.vermillion,
+      font: "bold 16px sans-serif" }];
+  }
+  // over the sheets: haloed (r57 03-2); each end of the bar named with its value (r89 03-2)
+  return [
+    { p: at(middle), text: size, color: OKABE.vermillion, font: "bold 17px sans-serif" },
+    { p: at(gap.s.correct), text: f, color: OKABE.blue, font: "bold 16px sans-serif" },
+    { p: at(gap.s.affine), text: affine, color: "#9a5f00", font: "bold 16px sans-serif" },
+  ];
+}
+
 // the value-axis ticks (of 0, ½, 1) labelled when a value of 1 stands zScale high, the view
 // at `scale` px a unit and `elevation`: all three while ½ is 24 px (a label's height) up
 // the screen, else 0 alone
@@ -263,30 +289,36 @@ function mount(el, data, host) {
     // no smaller than 15 px: the canvas is shown shrunk to the notebook's column on a small
     // screen (review r7: 10-11 px there)
     const labels = [0, 0.5, 1].map((v) => ({ p: [0, 0, v * zScale], text: ` ${v}`,
-      color: "#333", font: "16px sans-serif", fixed: true }));
+      color: "#333", font: "16px sans-serif", fixed: true, up: 17, down: 5 }));
     xy.forEach(([x, y], k) => labels.push({ p: [x, y, 0], color: "#111",
       text: ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, font: "bold 16px sans-serif",
-      halo: true }));
+      halo: true, up: 17, down: 5 }));
     const showGap = state.show.correct && state.show.affine && gap.gap > 1e-9;
-    if (showGap) {
-      // over the sheets: haloed (r57 03-2); each end of the bar named with its value (r89 03-2)
-      const [x, y] = gap.p;
-      const top = gap.s.correct >= gap.s.affine;
-      labels.push({ p: [x, y, (gap.s.correct + gap.s.affine) / 2 * zScale],
-        text: ` gap ${fmt(gap.gap, 3)}`, color: OKABE.vermillion, font: "bold 17px sans-serif",
-        halo: true });
-      labels.push({ p: [x, y, gap.s.correct * zScale], text: ` f ${fmt(gap.s.correct, 3)}`,
-        color: OKABE.blue, font: "bold 16px sans-serif", halo: true, above: top });
-      labels.push({ p: [x, y, gap.s.affine * zScale], text: ` affine ${fmt(gap.s.affine, 3)}`,
-        color: "#9a5f00", font: "bold 16px sans-serif", halo: true, above: !top });
-    }
-    for (const l of labels) {
+    const first = labels.length;
+    // the bar's labels: one at each end and one at its middle while the bar stands tall
+    // enough for them, else one line (r96 03-2: seen from above, the three fell on v3's)
+    const gapLabels = (barPx) => gapBarLabels(gap, zScale, barPx)
+      .map((l) => ({ ...l, halo: true, up: 17, down: 5 }));
+    if (showGap) labels.push(...gapLabels(Infinity));
+    const measure = () => labels.forEach((l) => {
       ctx.font = l.font;
-      Object.assign(l, { w: ctx.measureText(l.text).width + 4, up: 17, down: 5 });
-    }
+      l.w = ctx.measureText(l.text).width + 4;
+    });
+    measure();
     // the view fitted to what is drawn at this turn (review r78 03-3), above the key line
     const points = polys.flatMap((poly) => poly.pts).concat([[0, 0, zScale]]);
-    fitView(cam, points, labels, { left: 8, top: 8, right: 632, bottom: 440 });
+    const box = { left: 8, top: 8, right: 632, bottom: 440 };
+    fitView(cam, points, labels, box);
+    if (showGap) {
+      const [x, y] = gap.p;
+      const [a, b] = [gap.s.correct, gap.s.affine].map((v) => cam.project([x, y, v * zScale]));
+      const barPx = Math.hypot(a[0] - b[0], a[1] - b[1]);
+      if (barPx < GAP_LABELS_APART) {
+        labels.splice(first, labels.length - first, ...gapLabels(barPx));
+        measure();
+        fitView(cam, points, labels, box);
+      }
+    }
     // seen from high above the axis is short and its labels 0, ½, 1 fell on one another
     // (review r96 03-2): only those a label's height apart are kept
     const shown = valueTicks(cam.scale, cam.elevation, zScale);
