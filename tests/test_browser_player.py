@@ -164,7 +164,6 @@ def test_the_player_with_its_comparison_open_fits_the_screen(lab, page):  # noqa
     assert not page.errors, page.errors[:3]
 
 
-
 #: what the player shows: the step its canvas paints (and the one it waits for), the readout,
 #: the caption and the range's value
 SHOWN = """p => ({step: p.querySelector('canvas').dataset.step,
