@@ -162,3 +162,55 @@ def test_the_player_with_its_comparison_open_fits_the_screen(lab, page):  # noqa
     page.wait_for_timeout(1500)  # a fold would come with the kernel's answer: it is in
     assert player.is_visible() and player.locator("canvas[data-step]").is_visible()
     assert not page.errors, page.errors[:3]
+
+
+#: what the player shows: the step its canvas paints (and the one it waits for), the readout,
+#: the caption and the range's value
+SHOWN = """p => ({step: p.querySelector('canvas').dataset.step,
+    want: p.querySelector('canvas').dataset.want ?? null,
+    info: p.querySelector('.tr-info').textContent,
+    caption: p.querySelector('.tr-caption').textContent,
+    value: p.querySelector('input[type=range]').value,
+    max: p.querySelector('input[type=range]').max})"""
+#: a cell that keeps the kernel busy after the player's, as a lesson's later cells do while
+#: Run All goes on: the player's pictures wait for it
+BUSY = "import time\ntime.sleep(12)  # the kernel busy: the player's pictures wait"
+
+
+@pytest.mark.parametrize("key", ["End", "ArrowRight"])
+def test_the_first_key_on_the_step_moves_the_readout_at_once(lab, page, key):  # noqa: F811
+    """Review r99 02-5: on a fresh player the first key pressed on the focused step slider
+    moved its handle (End: to the last step) while the readout and the picture stayed at
+    step 0 ("0 of 172"): the picture of the new step had to come from a kernel still busy
+    with the lesson's later cells, and the page changed the readout and the caption only
+    with the picture. Now they follow the key at once, the old picture dimmed under a note
+    until the new one comes; then it is painted, and the kernel hears of the step."""
+    _run(page, lab, [*PLAYER, BUSY], f"player_first_key_{key}.ipynb")
+    player = page.locator(".tr-frames").first
+    player.locator("canvas[data-step]").wait_for(timeout=120_000)  # the poster, step 0
+    handle = player.element_handle()
+    first = page.evaluate(SHOWN, handle)
+    assert first["step"] == "0" and first["info"].startswith("0 of "), first
+    step = player.get_by_role("slider", name="step")
+    step.scroll_into_view_if_needed()
+    step.focus()
+    page.keyboard.press(key)
+    want = first["max"] if key == "End" else "1"
+    page.wait_for_function(
+        f"p => ({SHOWN})(p).info.startsWith({want + ' of '!r})", arg=handle, timeout=3_000
+    )
+    now = page.evaluate(SHOWN, handle)
+    assert now["value"] == want and now["caption"] != first["caption"], now
+    if now["step"] != want:  # the picture on its way: said so over the old one
+        assert now["want"] == want, now
+        assert player.locator(".tr-wait").is_visible()
+        assert f"drawing step {want}" in player.locator(".tr-wait").inner_text()
+    page.wait_for_function(  # the picture comes once the kernel is free
+        f"p => ({SHOWN})(p).step === {want!r}", arg=handle, timeout=60_000
+    )
+    done = page.evaluate(SHOWN, handle)
+    assert done["want"] is None and not player.locator(".tr-wait").is_visible(), done
+    assert done["info"] == now["info"] and done["caption"] == now["caption"], (now, done)
+    assert _kernel(page, "player.step") == int(want)  # the kernel heard of it
+    assert _kernel(page, "player.caption_text") == done["caption"]
+    assert not page.errors, page.errors[:3]

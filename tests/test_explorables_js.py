@@ -221,6 +221,20 @@ def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
             assert (np.abs(sx) <= cw / 2).all() and (np.abs(sy) <= ch / 2).all()
 
 
+def test_the_e_axis_ticks_keep_two_lines_of_text_apart_on_the_screen():
+    """Review r93 02-8: turned towards the top, the 3-D view's E ticks (-50, 0, 50) ran
+    together; the step is chosen in screen space: at least two text heights apart, else only
+    the 0 tick."""
+    span, size = 100.0, 17.0
+    for elev in np.linspace(0.05, np.pi / 2, 12):
+        px_per = 3.0 * np.cos(elev)  # screen px per px² of E at this elevation
+        step = call_js(EDGES, [("eTickStep", [span, px_per, size])])[0]
+        assert step * px_per >= 2 * size - 1e-9 or step > span, (elev, step)
+        assert step >= span / 3
+    assert call_js(EDGES, [("eTickStep", [span, 3.0, size])])[0] == 50  # side on: -50, 0, 50
+    assert call_js(EDGES, [("eTickStep", [span, 0.0, size])])[0] > span  # from the top: 0
+
+
 CRACKS = ("raster_rules", "explore_cracks")
 
 

@@ -488,6 +488,18 @@ def test_02_barycentrics_and_the_edge_function_bits():
     assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
 
 
+def test_02_how_many_bits_is_a_heading_of_its_own_that_folds_away():
+    """The optional bit-width part is a level-4 heading in a cell of its own, which JupyterLab
+    folds with every cell up to the next heading of its level or higher (section 5c)."""
+    nb = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    i = next(k for k, t in enumerate(text) if t.startswith("#### How many bits?"))
+    assert "optional" in text[i].splitlines()[0] and nb["cells"][i]["cell_type"] == "markdown"
+    after = [t for t in text[i + 1 :] if re.match(r"#{1,4} ", t)]
+    assert after[0].startswith("### 5c.")
+    assert "edge_bits" in "".join(text[i:]).split("### 5c.")[0]  # its cell is folded with it
+
+
 @pytest.mark.notebook
 def test_02_reordered_triangle_and_the_shared_row():
     ns = lesson("02_half_planes")
@@ -796,6 +808,15 @@ def test_05b_fight_distance_is_worked_out_from_one_anchor_not_read_off_a_curve()
     assert "answer=(cross16, 0.005)" in ask
     assert "becomes possible" in ask and "not yet likely" in ask
     assert "from which they z-fight" not in ask
+    # review r99 05b-1: a Markdown cell two cells below, on screen while the question was
+    # open, said unorm16 "already fight[s] at z = 10" and nothing at z = 1: held with it now
+    nb = json.loads((NOTEBOOKS / "05b_depth_precision.ipynb").read_text())
+    cells = [("".join(c["source"]), c["cell_type"]) for c in nb["cells"]]
+    for text, kind in cells:
+        if "already fight" in text or "Nothing fights at $z = 1$" in text:
+            assert kind == "code" and text.startswith("q_fight.hold()"), text[:80]
+    assert any("already fight" in t for t, _ in cells)
+    assert ns.first_fight_16 == 10 and ns.predicted["unorm16"][0] < ns.delta  # what it says
 
 
 def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
@@ -866,8 +887,17 @@ def test_02_player_and_editor():
     player.close()
     editor = TriangleEditor(ns.tri, ns.W, ns.H, method="halfplane", backend="image",
                             probe=ns.inside_point, comparison=False)  # fmt: skip
-    # the lesson's text: E12, E23, E31 at the cross, live; no interpolation figure here
-    assert editor.interp_display.widget not in editor.widget.children
+    # the lesson's text: E12, E23, E31 at the cross, live; no interpolation figure here, not
+    # even in the widget state (review r99 02-3: its picture, "|Δu|: 0 everywhere", was kept)
+    assert editor.interp_display is None and editor.interp_view is None
+    from ipywidgets import Image
+
+    def tree(w):
+        yield w
+        for c in getattr(w, "children", ()):
+            yield from tree(c)
+
+    assert not any(isinstance(w, Image) for w in tree(editor.widget))
     edges = [(ns.v1, ns.v2), (ns.v2, ns.v3), (ns.v3, ns.v1)]
     assert np.allclose(editor.edge_values(), [tr.edge_function(a, b, ns.inside_point)
                                               for a, b in edges])  # fmt: skip
@@ -898,6 +928,11 @@ def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
     ask = next(i for i, t in enumerate(text) if "PredictPixels(" in t and "upper" in t)
     rule = next(i for i, t in enumerate(text) if "(interior to its right)" in t)
     assert ask < rule
+    # review r99 02-2: the rule stood in the Markdown cell right under the question, on screen
+    # before Check; now it is printed by the held cell after it
+    assert rule == ask + 1 and text[rule].startswith("q_diagonal.hold()")
+    assert "display(Markdown(RULE_TEXT))" in text[rule]
+    assert not any("(interior to its right)" in c for c in _cells("02_half_planes", "markdown"))
     assert "left** edge" not in "".join(text[:ask]) and "upper_owns" in text[ask]
     k = np.arange(2, 14)
     expected = np.zeros((ns.H, ns.W), bool)
@@ -931,8 +966,13 @@ def test_02_stepping_prediction_is_asked_before_its_answer_is_printed():
     ask = next(i for i, t in enumerate(code) if "q_step = Predict(" in t)
     shows = next(i for i, t in enumerate(code) if "a pixel right" in t)
     assert ask < shows and code[shows].startswith("q_step.hold()")
-    assert ns.step_px * 256**2 == ns.step_right == -294_912
+    # review r99 02-1: the Markdown before the question gave the step, −(v2 − v1): it is the
+    # answer's explanation now, not the text above it
     cells = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())["cells"]
+    before = ["".join(c["source"]) for c in cells]
+    before = before[: next(i for i, t in enumerate(before) if "q_step = Predict(" in t)]
+    assert not any("-(v_2 - v_1)" in t or "u_2 - u_1$" in t for t in before[3:])
+    assert ns.step_px * 256**2 == ns.step_right == -294_912
     cell = next(c for c in cells if "q_step = Predict(" in "".join(c["source"]))
     assert cell["metadata"] == {"jupyter": {"source_hidden": True}, "tags": ["hide-input"]}
     q = Predict("E12 a pixel right?", answer=ns.step_px, headless=False)

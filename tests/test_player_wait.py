@@ -47,6 +47,7 @@ function element() {
     append(...c) { this.children.push(...c); }, appendChild(c) { this.children.push(c); },
     replaceChildren(...c) { this.children = c; }, setAttribute() {}, addEventListener() {},
     getContext: () => ({ drawImage() {} }),
+    classList: { add() {}, remove() {}, contains: () => false },
   };
 }
 globalThis.document = {
@@ -56,7 +57,8 @@ const mod = await import(process.argv[2]);
 const asked = [];
 const el = element();
 const player = mod.mountFrames(el, { request: (g, gen) => asked.push([g, gen]) });
-const notice = el.children[0].children[2].children[1];  // root > stage > [canvas, notice]
+// root > stage > [canvas, the "drawing step" note, notice]
+const notice = el.children[0].children[2].children[2];
 const out = {};
 await player.reset({ width: 4, height: 4, n: 32, key: 16, step: 0, captions: [], infos: [],
                      gen: 1 });

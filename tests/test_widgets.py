@@ -1402,6 +1402,26 @@ def test_depth_explorer_legend_names_the_half_the_time_line():
     w.close()
 
 
+def test_depth_explorer_names_the_band_left_of_the_near_plane_and_shows_its_start():
+    """Review r99 05b-2: the axis starts at the slider's lowest near plane (0.01), so at the
+    default near 0.1 its left fifth was an empty band; and the grey "start" curve lay hidden
+    under the "now" curve, a key entry for nothing on show. The band is shaded and named, and
+    the start curve is a wider halo round the "now" curve."""
+    from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
+
+    w = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0, backend="image")
+    assert w.ax.get_xlim()[0] == 0.01
+    assert w.band.get_x() == 0.01 and w.band.get_width() == pytest.approx(0.1 - 0.01)
+    assert w.band_text.get_visible() and w.band_text.get_text() == "nearer than the near plane"
+    assert w.reference.get_linewidth() > w.curve.get_linewidth() + 2  # seen round "now"
+    w.near.value = 10.0
+    assert w.band.get_width() == pytest.approx(10.0 - 0.01)
+    assert w.band_text.get_position()[0] < 0.1  # left of the start curve, which begins at 0.1
+    w.near.value = 0.01
+    assert w.band.get_width() == pytest.approx(0.0) and not w.band_text.get_visible()
+    w.close()
+
+
 def test_filter_status_line_says_computing_while_a_picture_is_pending():
     """Review r81 09-8: after a filter change and keys the status line still read the last
     picture's numbers ("largest λ 1.8" at 30°); it now says the new picture is on its way

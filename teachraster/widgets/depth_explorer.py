@@ -152,12 +152,24 @@ class DepthPrecisionExplorer:
                                description="near", readout_format=".3g")  # fmt: skip
         self.reverse = widgets.Checkbox(value=reverse, description="reverse-Z")
         self._compute()
+        self._start_near = self.z_near  # where the grey curve of the start begins
         with style_context(style):
             self.fig = new_figure((9.0, 5.5), self.backend)
             self.fig.set_layout_engine("constrained")
             ax = self.fig.add_subplot()
-            (self.reference,) = ax.loglog(self.z, self.resolution, color="#BBBBBB", lw=2,
-                                          label=f"start: {self._label()}")  # fmt: skip
+            # wide and light under the "now" curve: at the start a grey halo round it, so the
+            # key's "start" entry names something on show (review r99 05b-2)
+            (self.reference,) = ax.loglog(self.z, self.resolution, color="#C8C8C8", lw=8,
+                                          label=f"start: {self._label()}",
+                                          solid_capstyle="butt")  # fmt: skip
+            # the axis starts at the slider's lowest near plane (0.01): what lies left of the
+            # near plane on show is said to be so, not an unexplained blank band (r99 05b-2)
+            self.band = ax.axvspan(0.01, self.z_near, color=(0.0, 0.0, 0.0, 0.06), lw=0, zorder=0)
+            self.band_text = ax.text(0.0, 0.97, "nearer than the near plane", rotation=90,
+                                     ha="center", va="top", color="0.3", fontsize="small",
+                                     transform=ax.get_xaxis_transform(),
+                                     bbox=dict(boxstyle="round,pad=0.2", fc="white",
+                                               ec="none", alpha=0.75))  # fmt: skip
             (self.curve,) = ax.loglog(self.z, self.resolution, color=COLORS["edge"], lw=3,
                                       label="now")  # fmt: skip
             ax.axhline(self.delta, color=COLORS["outside"], ls="--", lw=2,
@@ -232,6 +244,12 @@ class DepthPrecisionExplorer:
     def _draw(self) -> None:
         self.curve.set_data(self.z, self.resolution)
         self.curve.set_label(f"now: {self._label()}")
+        self.band.set_width(self.z_near - 0.01)  # from the axis's left end to the near plane
+        # in the middle of the band on the log axis, or of its part left of the start's grey
+        # curve (which begins at the first near plane): the words never cross that curve
+        room = min(self.z_near, self._start_near)
+        self.band_text.set_x(np.sqrt(0.01 * room))
+        self.band_text.set_visible(room >= 0.06)  # wide enough for the words (one line)
         x = np.nan if self.half_from is None else self.half_from
         self.marker.set_xdata([x, x])
         legend = self.ax.get_legend() or self._legend()
@@ -290,7 +308,8 @@ class DepthPrecisionExplorer:
         """A new value changes the curve, the z-fighting mark and the "now" label; the axes,
         the reference curve and the gap line stay in a cached background, the legend in a
         still layer over the curve."""
-        return LayeredBlit(self.fig, [(MOVING, [self.curve, self.marker]),
+        return LayeredBlit(self.fig, [(MOVING, [self.band, self.band_text, self.curve,
+                                               self.marker]),
                                       (STILL, [self.ax.get_legend()]), (MOVING, [self.now])])  # fmt: skip
 
     def _draw_figure(self) -> None:

@@ -93,7 +93,9 @@ class TriangleEditor(Holdable):
         The cross is dragged like a vertex (in the page; :meth:`set_probe` from code).
     comparison : bool
         Show the interpolation figure (affine vs perspective-correct, lesson 04). Lesson 02,
-        whose w are all 1, leaves it out, and the w sliders with it (``w`` still holds them).
+        whose w are all 1, leaves it out, and the w sliders with it (``w`` still holds them);
+        the figure is then not made at all (``interp_view`` and ``interp_display`` are None),
+        so no picture of it sits in a saved notebook's widget state.
 
     Attributes
     ----------
@@ -103,7 +105,7 @@ class TriangleEditor(Holdable):
     method : ToggleButtons
     info : HTML
         Area and winding, pixels covered, u4 and the largest interpolation error in words.
-    view, interp_view : FillView, InterpolationView
+    view, interp_view : FillView, InterpolationView or None
     fig : Figure
         The FillView's figure, shown whole in one ``<img>`` (or the ipympl canvas);
         ``view.ax`` is its Axes and ``xy`` the vertices, so a vertex's place on the page
@@ -211,7 +213,7 @@ class TriangleEditor(Holdable):
             )
         else:
             title = title_html("Edit a triangle: its fill and its edge functions", hint + ".")
-        figures = [self.display.widget, *([self.interp_display.widget] * comparison)]
+        figures = [self.display.widget, *([self.interp_display.widget] if comparison else [])]
         self.widget = widgets.VBox([
             title, control_row(columns), labelled("method", self.method), self.info, *figures,
         ])  # fmt: skip
@@ -238,6 +240,9 @@ class TriangleEditor(Holdable):
         else:
             self.display = PageDisplay(self.fig, self.view.ax, self._draw_fill, self._handles,
                                        on_move=self._on_page_move)  # fmt: skip
+        self.interp_view = self.interp_display = None
+        if not self.comparison:  # no figure, no picture of it in the widget state
+            return
         ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
         axes = comparison_axes(ifig, height, width)
         self.interp_view = InterpolationView(self.fill, self.attribute, axes=axes)
@@ -406,7 +411,8 @@ class TriangleEditor(Holdable):
         self._tidy_key()  # a new method's key is made afresh
         self.display.refresh()  # first: what the pointer moved (the comparison costs more)
         if not dragging:
-            self.interp_view.update(self.fill, draw=False)
+            if self.comparison:
+                self.interp_view.update(self.fill, draw=False)
             self._set_info()
             if self.comparison:
                 self.interp_display.refresh()
@@ -428,8 +434,8 @@ class TriangleEditor(Holdable):
                 parts.append(f"split at u4 = {trace.span.u4:.2f}")
         elif trace.halfplane is not None:
             parts.append(f"{trace.bbox.size} centres of the bounding box tested")
-        m = self.interp_view.maximum
-        if self.comparison and np.isfinite(m):
+        m = self.interp_view.maximum if self.comparison else np.nan
+        if np.isfinite(m):
             parts.append(f"largest |affine − perspective| of {self.attribute} = {m:.3g}")
         info = " · ".join(parts)
         if self.probe is not None:
@@ -509,5 +515,6 @@ class TriangleEditor(Holdable):
     def close(self) -> None:
         """Close every widget of the editor."""
         for d in (self.display, self.interp_display):
-            d.close()
+            if d is not None:
+                d.close()
         close_tree(self.widget)

@@ -30,6 +30,15 @@ const CSS = `
 .tr-frames .tr-notice { position: absolute; left: 0; right: 0; bottom: 0; color: #b00020;
   font-size: 14px; background: rgba(255, 255, 255, 0.92); padding: 2px 6px; }
 .tr-frames .tr-notice:empty { display: none; }
+/* A step whose picture is still on its way from the kernel (a busy kernel, say one still
+   running the cells below): its readout and caption are shown at once, the older picture
+   dimmed under a note saying so (review r99 02-5: the handle at the last step over "0 of
+   172" and step 0's picture looked like a key the player had ignored). */
+.tr-frames .tr-wait { display: none; position: absolute; left: 8px; top: 8px;
+  padding: 2px 8px; background: rgba(255, 255, 255, 0.92); border: 1px solid #999;
+  border-radius: 3px; font-size: 15px; }
+.tr-frames .tr-stage.tr-waiting canvas { opacity: 0.35; }
+.tr-frames .tr-stage.tr-waiting .tr-wait { display: block; }
 .tr-frames button { display: inline-flex; align-items: center; justify-content: center;
   gap: 4px; white-space: nowrap; }
 .tr-frames .tr-icon { width: 12px; height: 12px; fill: currentColor; flex: none; }
@@ -213,9 +222,12 @@ export function mountFrames(el, opts) {
   canvas.className = "teachraster-figure";
   canvas.setAttribute("role", "img");
   const ctx = canvas.getContext("2d");
-  const stage = document.createElement("div");
+  const stage = document.createElement("div"); // the picture, its notes over it
   stage.className = "tr-stage";
-  stage.append(canvas, notice);
+  const wait = document.createElement("div");
+  wait.className = "tr-wait";
+  wait.setAttribute("aria-live", "polite");
+  stage.append(canvas, wait, notice);
   root.append(bar, caption, stage);
   el.appendChild(root);
   // Keys pressed in the player (arrows on the slider, space on a button) are the player's:
@@ -233,6 +245,20 @@ export function mountFrames(el, opts) {
   function label(k) {
     caption.textContent = s.captions[k] ?? "";
     info.textContent = `${k} ${s.infos[k] ?? ""}`;
+  }
+
+  // The step wanted has no picture yet (its group is on its way): its texts, which the page
+  // holds for every step, at once, the picture on show dimmed under a note; or none waiting.
+  function waiting(k) {
+    if (k === null) {
+      stage.classList.remove("tr-waiting");
+      delete canvas.dataset.want;
+      return;
+    }
+    label(k);
+    wait.textContent = `drawing step ${k}\u2026 (its picture comes from the kernel)`;
+    stage.classList.add("tr-waiting");
+    canvas.dataset.want = String(k); // for tests: the step whose picture is awaited
   }
 
   function paint(p) {
@@ -259,14 +285,18 @@ export function mountFrames(el, opts) {
     canvas.dataset.step = String(k);
     canvas.dataset.gen = String(s.gen); // the fill on show (tests and benchmarks wait on it)
     label(k);
+    waiting(null);
     return true;
   }
 
+  // Step k: the handle, the readout and the caption at once, the picture as soon as its
+  // group is here (a key pressed before then must not look ignored: review r99 02-5).
   function show(k) {
     k = Math.max(0, Math.min(s.n - 1, k));
     s.want = k;
     slider.value = String(k);
-    if (k !== s.shown) draw(k);
+    if (k === s.shown) waiting(null);
+    else if (!draw(k)) waiting(k);
   }
 
   // One request at a time: the kernel renders a group at a time, and the page always asks
@@ -350,12 +380,14 @@ export function mountFrames(el, opts) {
     if (opts.onStep) opts.onStep(s.want);
   }
 
-  function stop() {
+  // Pause playing; the kernel hears of the step unless `quietly` (the slider moved: the
+  // kernel hears of its own step when it is released, not of the one it left).
+  function stop(quietly = false) {
     if (s.timer !== null) {
       clearInterval(s.timer);
       s.timer = null;
       setButton(play, "play", "play", "play");
-      settle();
+      if (!quietly) settle();
     }
   }
 
@@ -377,7 +409,8 @@ export function mountFrames(el, opts) {
   prev.addEventListener("click", () => { stop(); show(s.want - 1); settle(); });
   next.addEventListener("click", () => { stop(); show(s.want + 1); settle(); });
   last.addEventListener("click", () => { stop(); show(s.n - 1); settle(); });
-  slider.addEventListener("input", () => { stop(); show(Number(slider.value)); });
+  // every move of the range, by pointer or key, from the first: Play paused, the step shown
+  slider.addEventListener("input", () => { stop(true); show(Number(slider.value)); });
   slider.addEventListener("change", settle);
 
   // The decoded frames of a fill no longer kept: their memory back at once (a bitmap's
@@ -426,19 +459,31 @@ export function mountFrames(el, opts) {
     if (s.groups.has(Math.floor(s.want / s.key))) {
       draw(s.want); // a fill shown before: its frames are here, decoded
     } else if (o.poster && o.poster.byteLength) {
+      const step = s.want, gen = s.gen; // the poster's: a key may move s.want while it decodes
       const bitmap = await decodePng(o.poster);
+      if (gen !== s.gen) {
+        bitmap?.close(); // a newer fill came meanwhile
+        return;
+      }
       if (bitmap !== null) ctx.drawImage(bitmap, 0, 0);
       bitmap?.close();
-      s.shown = s.want;
-      canvas.dataset.step = String(s.want);
+      s.shown = step;
+      canvas.dataset.step = String(step);
       canvas.dataset.gen = String(s.gen);
-      label(s.want);
+      label(step);
+      if (s.want === step) waiting(null);
+      else waiting(s.want);
+    } else {
+      waiting(s.want); // nothing to show until its group comes
     }
     for (const [g, group] of o.groups ?? []) {
       await addGroup(g, group.places, group.blobs, s.gen);
     }
-    if (s.shown !== s.want) draw(s.want);
-    else need(nextMissing() ?? Math.floor(s.want / s.key)); // the rest of a fill seen in part
+    if (s.shown !== s.want) {
+      if (!draw(s.want)) waiting(s.want);
+    } else {
+      need(nextMissing() ?? Math.floor(s.want / s.key)); // the rest of a fill seen in part
+    }
   }
 
   function setInterval_(ms) {

@@ -626,16 +626,24 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   ctx.fillText("Drag to turn; arrow keys too.", 8, ch - 8);
 }
 
+// The E axis's tick step in px²: about three ticks over the box's half height `span`, but
+// never closer on the screen than two lines of text (`pxPer`: screen px per px² of E, which
+// shrinks as the view turns towards the top; review r93 02-8: -50, 0, 50 ran together).
+// A step beyond `span` leaves the 0 tick alone.
+export function eTickStep(span, pxPer, size) {
+  const raw = Math.max(span / 3, (2 * size) / Math.max(pxPer, 1e-9));
+  const mag = 10 ** Math.floor(Math.log10(raw));
+  return [1, 2, 5, 10].map((k) => k * mag).find((v) => v >= raw);
+}
+
 // the vertical E axis with ticks in px², at the box corner drawn leftmost on the screen
 function drawEAxis(ctx, cam, corners, h, zs) {
   const [x, y] = corners.reduce((a, b) => (cam.project([...b, 0])[0] < cam.project([...a, 0])[0]
     ? b : a));
   line3d(ctx, cam, [x, y, -h], [x, y, h], "#111", 1.5);
   const span = h / zs; // the box's half height in px²
-  const raw = span / 3;
-  const mag = 10 ** Math.floor(Math.log10(raw));
-  const step = [1, 2, 5, 10].map((k) => k * mag).find((v) => v >= raw);
   const size = textPx(ctx, PLANES_TEXT);
+  const step = eTickStep(span, cam.scale * zs * Math.cos(cam.elevation), size);
   ctx.font = `${size}px sans-serif`;
   ctx.textAlign = "right";
   for (let e = -Math.floor(span / step) * step; e <= span + 1e-9; e += step) {
