@@ -219,6 +219,20 @@ def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
             y1 = x * np.sin(yaw) + y * np.cos(yaw)
             sx, sy = scale * x1, scale * (y1 * np.sin(elev) - z * np.cos(elev))
             assert (np.abs(sx) <= cw / 2).all() and (np.abs(sy) <= ch / 2).all()
+    # review r99 (r93 02-8): fitted at the view's own tilt, the box still fits at every yaw,
+    # and fills the height at its widest yaw (no empty band under a low view)
+    for elev in np.linspace(0.05, 1.2, 9):
+        scale = call_js(EDGES, [("fitBox", [W, H, h, cw, ch, 8, elev, 8])])[0]
+        tall = 0.0
+        for yaw in np.linspace(0, 2 * np.pi, 73):
+            x, y, z = (box - [W / 2, H / 2, 0]).T
+            x1 = x * np.cos(yaw) - y * np.sin(yaw)
+            y1 = x * np.sin(yaw) + y * np.cos(yaw)
+            sx, sy = scale * x1, scale * (y1 * np.sin(elev) - z * np.cos(elev))
+            assert (np.abs(sx) <= cw / 2).all() and (np.abs(sy) <= ch / 2).all(), (elev, yaw)
+            tall = max(tall, np.abs(sy).max())
+        wide = scale * np.hypot(W / 2, H / 2)
+        assert tall >= ch / 2 - 8 - 0.5 or wide >= cw / 2 - 8 - 1e-9, elev  # one side is filled
 
 
 def test_the_e_axis_ticks_keep_two_lines_of_text_apart_on_the_screen():

@@ -569,7 +569,11 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   const zs = (1.6 * h) / top; // steep enough to see; the steepest plane leaves the box
   const size = textPx(ctx, PLANES_TEXT);
   const [above, below] = [planesTop(size), planesBottom(size)];
-  cam.scale = fitBox(W, H, h, cw, ch - above - below, 40);
+  // fitted at the view's tilt, for every yaw: turning keeps the size, tilting rescales it so
+  // that the box fills the room at each tilt (review r99: fitted for the steepest tilt, a
+  // low view left a band empty); 64 px at the sides for the E ticks ("-100"), 28 above and
+  // below
+  cam.scale = fitBox(W, H, h, cw, ch - above - below, 64, cam.elevation, 28);
   // E_k = gx x + gy y + c: its gradient, from the plane's values at three corners
   const grads = fns.map((f) => [f(1, 0) - f(0, 0), f(0, 1) - f(0, 0)]);
   if (!cam.turned) cam.yaw = bestYaw(grads, zs, cam.elevation); // until the reader turns it

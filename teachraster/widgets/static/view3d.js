@@ -358,11 +358,15 @@ export function clipToSlab(pts, h) {
   return out;
 }
 
-// A camera scale and centre that keep the box [0, W] x [0, H] x [-h, h] inside a w x h_px
-// area at every turn: orthographic, so on screen x spans at most the box's radius in the
-// ground plane, and y at most the radius of the whole box.
-export function fitBox(W, H, h, w, hPx, margin = 8) {
+// A camera scale that keeps the box [0, W] x [0, H] x [-h, h] inside a w x h_px area at every
+// yaw: orthographic, so on screen x spans at most the box's radius in the ground plane. On y,
+// with `elevation` given, the most a turn at that tilt shows, ground radius x sin + h x cos
+// (tight: the box fills the area at its widest yaw, no band left empty under a low view);
+// without it, at every tilt too, the radius of the whole box. `margin` is kept on x, `yMargin`
+// (default the same) on y.
+export function fitBox(W, H, h, w, hPx, margin = 8, elevation = null, yMargin = margin) {
   const ground = Math.hypot(W / 2, H / 2);
-  const whole = Math.hypot(ground, h);
-  return Math.min((w / 2 - margin) / ground, (hPx / 2 - margin) / whole);
+  const tall = elevation === null ? Math.hypot(ground, h)
+    : ground * Math.abs(Math.sin(elevation)) + h * Math.abs(Math.cos(elevation));
+  return Math.min((w / 2 - margin) / ground, (hPx / 2 - yMargin) / tall);
 }
