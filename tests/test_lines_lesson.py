@@ -252,10 +252,17 @@ def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "which pixels differ?" not in md  # the counts answered it before the question
-    for quoted in ("GL 4.6 §18.3.1", "OpenGL ES 3.2 §16.2.1", "implementation-dependent manner",
+    for quoted in ("GL 4.4 §18.3.1", "OpenGL ES 3.2 §16.2.1", "implementation-dependent manner",
                    "Multisample resolve is performed in linear space", "§5.6.6", "§19.2.4",
                    "VK_RESOLVE_MODE_AVERAGE_BIT", "VkResolveImageFlagBitsKHR"):  # fmt: skip
         assert quoted in md, quoted
+    # the resolve table quotes each version it was checked in (r9 fixer): GL 4.4's blit section
+    # for the sRGB rule (GL 4.6's text not checked), Vulkan 1.3 promises no sRGB decode, the
+    # current specification's "should" and precision sentences are not 1.3's, and
+    # maintenance10's flags belong to vkCmdResolveImage2
+    assert "GL 4.6 §18.3.1" not in md and "in these words since GL 4.4" not in md
+    assert md.count("Vulkan 1.3: not stated") == 2 and "`vkCmdResolveImage2`" in md
+    assert "the precision and sRGB sentences are not in 1.3's" in md
     if ns.ok:  # llvmpipe resolves an SRGB8_ALPHA8 blit in linear light, within a code
         assert ns.resolve_apart["linear light"] <= 1 < 30 < ns.resolve_apart["codes"]
     # the explorer's pixel under blue alone: blended with white in light once the box is ticked
