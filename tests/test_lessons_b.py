@@ -132,7 +132,9 @@ def test_06_review_r60_figures_say_what_they_draw():
     assert (
         "fig.legend(" in checker and 'label="check differs from perspective-correct\'s"' in checker
     )
-    assert "fastest(r, t) * 1e3:8.2f}" in code  # the other timers' columns too
+    # r102 06-3: one table of times, each variant's fastest round; coverage alone is printed
+    # in §4, as its ratio and share (no second timer's columns in the appendix)
+    assert "{fastest(r) * 1e3:8.2f}" in code and "fastest(r, t) * 1e3" not in code
 
 
 def test_06_edge_table_gaps_and_incremental_lists():
@@ -212,9 +214,43 @@ def test_06_edge_bits_and_depth_claims():
     # review r53 06-12: the stepped span table priced, "at the limit already at 256²"
     assert all(round(v, 1) == round(ns.fill_limit, 1) for v in ns.stepped_ratio.values())
     # review r56 06-3/06-7: a column that reads the same in every row is said once under its
-    # table; the times are in the appendix, one table per group
+    # table; the times are in the appendix, in one table (r102 06-3: not one per group)
     source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
-    assert "every variant: " in source and source.count("times(group, timers)") == 1
+    assert "every variant: " in source and source.count("times_table([") == 1  # called once
+
+
+def test_06_appendix_b_is_one_table_and_one_sentence():
+    """Review r102 06-3 and its first change: appendix B's timings folded into one table (every
+    variant once, one header, each group under a line naming its baseline) and one sentence;
+    what the appendix explained moved beside the lines that print the signs (§1, §2, §4)."""
+    import json
+
+    from notebook_runs import executed
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    at = next(i for i, c in enumerate(cells) if c.startswith("## Appendix B"))
+    prose = " ".join(cells[at].split("\n", 1)[1].split())
+    assert prose.endswith(".") and prose.count(". ") == 0, prose  # one sentence
+    assert cells[at + 1].count("times_table(") == 1
+    run = executed("06_what_accuracy_costs").notebook().cells[at + 1]
+    lines = "".join(
+        o.get("text", "") for o in run.outputs if o.output_type == "stream"
+    ).splitlines()
+    assert sum(line.startswith("variant") for line in lines) == 1
+    assert len(lines) == 1 + 4 + len(ns.rows)  # the header, four group lines, every variant
+    for r in ns.rows:  # each variant once, in its group's block
+        start = next(i for i, line in enumerate(lines) if line.startswith(r["group"] + " ("))
+        block = [line for line in lines[start + 1 :] if line.startswith("  ")]
+        block = block[: sum(x["group"] == r["group"] for x in ns.rows)]
+        assert sum(line[2:].startswith(r["variant"] + " ") for line in block) == 1, r["variant"]
+    assert all(len(line) <= 80 for line in lines)
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    # the reasons once, where the signs are printed, not again in the appendix
+    assert md.count("a division by the piece's length") == 1
+    assert md.count('the line "subdivided slower than the exact divide at every N') == 1
 
 
 def test_06_every_gap_and_double_is_drawn_above_the_mesh():
@@ -292,7 +328,7 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # r60 06-3: only §1, §2 and §4 print a time line
     assert "one line per section" not in md and "§1, §2 and §4 quote it" in md
     # 06-4: every table prints min..max beside the median (the depth and edge tables too)
-    assert "{'min..max ms':>12s}" in code and "{spread(r):>12s}" in code
+    assert "{'min..max ms':>13s}" in code and "{spread(r):>13s}" in code
     # r37 06-5: one paragraph of §1 reads the time columns; the others no longer repeat it
     assert "time says nothing: the eight times differ by noise" not in md
     # 06-5, 06-6: N is the subdivision length only; the ratio printed is for N doubling
