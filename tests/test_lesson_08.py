@@ -228,6 +228,9 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     assert centred < e16["grid"] < e16["standard"] and ns.err4["standard"] < ns.err4["grid"]
     assert f"mean error of {centred:.3f} on these triangles" in text
     assert f"below the grid's {e16['grid']:.3f}" in text and "$1/32$ px" in text
+    # "its rows and columns start at the pixel's edge": 0, 1/16, ... 15/16 both ways
+    for axis in (0, 1):
+        assert np.allclose(np.sort(tr.sample_pattern(16)[:, axis]), np.arange(16) / 16)
     # one pixel of the resolve: 2 of 4 samples on a face; the numbers' mean is the image's
     er, ec = ns.er, ns.ec
     assert int(ns.on_face[er, ec].sum()) == 2
