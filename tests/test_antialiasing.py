@@ -58,6 +58,22 @@ def test_more_samples_less_error():
     assert e.shape == (32, 32) and np.abs(e).max() <= 1
 
 
+def test_study_measures_patterns_of_ones_own():
+    """Review r105 08-1: a pattern given by its offsets is measured like the named kinds (the
+    lesson prints the 16-sample pattern moved by 1/32 px, its rows centred in their strips)."""
+    std16 = tr.sample_pattern(16)
+    rows = sample_error_study(study_triangles(32, 6), size=32, counts=(16,), kinds=("standard",),
+                              repeat=1, patterns={"same": std16, "centred": std16 + 1 / 32})  # fmt: skip
+    err = {r["kind"]: r for r in rows}
+    assert err["same"]["mean_error"] == err["standard"]["mean_error"]
+    assert err["centred"]["samples"] == 16
+    assert err["centred"]["mean_error"] < err["standard"]["mean_error"]
+    with pytest.raises(ValueError, match="patterns"):
+        sample_error_study(size=8, counts=(), patterns={"bad": [0.5, 0.5]}, repeat=1)
+    with pytest.raises(TypeError, match="patterns"):
+        sample_error_study(size=8, counts=(), patterns=[[0.5, 0.5]], repeat=1)
+
+
 def test_bad_input():
     with pytest.raises(ValueError, match="xy"):
         pixel_area([[0, 0], [1, 1]], 4, 4)

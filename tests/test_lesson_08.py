@@ -197,3 +197,51 @@ def test_lesson_08_review_r101_intersection_line_and_held_texts(ns):
     assert f"at window x = {ns.line_x:g} here" in text and "pixel boundary (x = 0)" not in text
     assert "through the centres of one pixel column" in text
     assert "what that costs" not in text and "what uneven ones cost" not in text
+
+
+def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
+    """Review r105 08-4: §7's "guess which falls fastest" is a Predict, its answer the steepest
+    fitted slope, the chart held until Check. 08-1: the 16-sample pattern centred (+1/32 px) is
+    printed and beats the grid, as the text quotes. r101/r105 top change 2: one pixel resolved
+    as numbers and as light, its numbers printed. 08-3, 08-6: the error maps' outline, and
+    Direct3D's reference rasterizer in the centroid table."""
+    import json
+    from pathlib import Path
+
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    text = " ".join(" ".join(s for c, s in zip(cells, sources)
+                             if c["cell_type"] == "markdown").split())  # fmt: skip
+    # the prediction: asked before the chart, answered by the fitted slopes the chart prints
+    (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
+    assert cells[k]["metadata"]["jupyter"]["source_hidden"]
+    assert "answer=placements[fastest]" in sources[k]
+    assert sources[k + 1].startswith("q_fastest.hold()") and "ax.loglog" in sources[k + 1]
+    assert "guess which falls fastest" not in text
+    assert ns.fastest == "grid" == min(ns.fitted, key=ns.fitted.get)
+    for kind, k_fit in ns.fitted.items():
+        assert k_fit == pytest.approx(ns.edge_slopes[kind])
+    # the centred 16-sample pattern: below the grid, which is below the pattern as it is
+    e16, centred = ns.err16, ns.err16_centred
+    assert centred < e16["grid"] < e16["standard"] and ns.err4["standard"] < ns.err4["grid"]
+    assert f"mean error of {centred:.3f} on these triangles" in text
+    assert f"below the grid's {e16['grid']:.3f}" in text and "$1/32$ px" in text
+    # "its rows and columns start at the pixel's edge": 0, 1/16, ... 15/16 both ways
+    for axis in (0, 1):
+        assert np.allclose(np.sort(tr.sample_pattern(16)[:, axis]), np.arange(16) / 16)
+    # one pixel of the resolve: 2 of 4 samples on a face; the numbers' mean is the image's
+    er, ec = ns.er, ns.ec
+    assert int(ns.on_face[er, ec].sum()) == 2
+    np.testing.assert_allclose(ns.px_numbers, ns.frame4.image[er, ec])
+    np.testing.assert_allclose(ns.px_numbers, ns.px_samples.mean(axis=0))
+    assert (ns.px_light >= ns.px_numbers - 1e-12).all() and (ns.px_light > ns.px_numbers).any()
+    dark = int(np.argmin(ns.px_samples[ns.on_face[er, ec]][0]))  # the face's darkest channel
+    assert ns.px_samples[ns.on_face[er, ec]][0][dark] == 0
+    quoted = f"{ns.px_numbers[dark]:.3f} as numbers and {ns.px_light[dark]:.3f} as light"
+    assert quoted == "0.500 as numbers and 0.735 as light" and quoted in text
+    # the error maps outline their triangle; Direct3D's reference rasterizer is quoted
+    (maps,) = [s for s in sources if "art = plot_area_error(" in s]
+    assert "np.vstack([xy2, xy2[:1]])" in maps
+    assert "the first covered sample is chosen, starting from the pixel center" in text

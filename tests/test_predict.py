@@ -75,6 +75,11 @@ def test_number_within_tolerance_is_right():
     q.control.value = "11"
     q.check.click()
     assert "11" in q.feedback.value and "10 (± 0.5)" in q.feedback.value
+    # r105 08-5: the answer shown one digit finer than the tolerance, not to six digits
+    q = Predict("v?", answer=1.158494, tolerance=0.1, headless=False)
+    q.control.value = "0.5"
+    q.check.click()
+    assert "1.16 (± 0.1)" in q.feedback.value and "1.158" not in q.feedback.value.split("</div>")[0]
     q.close()
 
 

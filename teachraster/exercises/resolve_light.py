@@ -1,10 +1,10 @@
-"""Exercise ``resolve_srgb`` (lesson 08 §8, lesson 12b): the MSAA resolve in linear light.
+"""Exercise ``resolve_srgb`` (lesson 08 §6, lesson 12b): the MSAA resolve in linear light.
 
 Exercise 6.2's resolve averages the numbers it is given. The samples of an 8-bit framebuffer
 are sRGB-encoded, and encoded numbers are not light: half of a black pixel and half of a white
 one must show the light of 50 % white, which encodes as 0.735, not 0.5. So the resolve
 decodes every sample (and the background) to linear light, averages there, and encodes the
-mean again (GL's ``FRAMEBUFFER_SRGB`` resolve; lesson 08 §8 and lesson 12b). The student
+mean again (GL's ``FRAMEBUFFER_SRGB`` resolve; lesson 08 §6 and lesson 12b). The student
 works out that order; the curves are the package's tools (``tr.srgb_to_linear``,
 ``tr.linear_to_srgb``). Cases: exercise 6.2's, read as sRGB-encoded, and black on white at
 each coverage of 4 samples.

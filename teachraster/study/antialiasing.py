@@ -117,13 +117,36 @@ def study_triangles(size: int = 48, n: int = 12, seed: int = 11) -> np.ndarray:
     return out
 
 
+def _study_patterns(kinds, counts, patterns):
+    """(kind, samples, offsets) of every pattern :func:`sample_error_study` measures."""
+    for kind in kinds:
+        for n in counts:
+            try:
+                offsets = sample_pattern(n, kind) if n > 1 or kind != "standard" else 1
+            except ValueError:
+                continue  # this kind cannot make n samples (e.g. a grid of 2)
+            yield kind, n, offsets
+    if patterns is None:
+        return
+    if not isinstance(patterns, dict):
+        raise TypeError(f"patterns must be a dict of name: offsets, got {type(patterns).__name__}")
+    for name, offsets in patterns.items():
+        offsets = as_finite("patterns", offsets, None)
+        if offsets.ndim != 2 or offsets.shape[1] != 2 or len(offsets) < 1:
+            raise ValueError(f"patterns[{name!r}] must be (S, 2) offsets, got {offsets.shape}")
+        yield str(name), len(offsets), offsets
+
+
 def sample_error_study(triangles=None, size: int = 48, counts=(1, 2, 4, 8, 16),
-                       kinds=("standard", "grid", "jittered", "random"), repeat: int = 5):  # fmt: skip
+                       kinds=("standard", "grid", "jittered", "random"), repeat: int = 5,
+                       patterns=None):  # fmt: skip
     """Error of the coverage fraction against the exact area, and the fill's time.
 
     For each pattern (kind, n) that exists: over all pixels where either is non-zero,
     the mean and max absolute error of ``coverage_fraction`` against :func:`pixel_area`,
     and the median time of one ``tr.rasterize`` of all the triangles (``repeat`` runs).
+    ``patterns`` (a dict name: (S, 2) offsets in the pixel) adds patterns of one's own, each
+    measured alike under its name (e.g. a standard pattern moved by a fraction of a pixel).
 
     Returns
     -------
@@ -133,25 +156,20 @@ def sample_error_study(triangles=None, size: int = 48, counts=(1, 2, 4, 8, 16),
     tris = study_triangles(size) if triangles is None else np.asarray(triangles, float)
     truth = [pixel_area(t, size, size) for t in tris]
     rows = []
-    for kind in kinds:
-        for n in counts:
-            try:
-                offsets = sample_pattern(n, kind) if n > 1 or kind != "standard" else 1
-            except ValueError:
-                continue  # this kind cannot make n samples (e.g. a grid of 2)
-            errors, times = [], []
-            for t, want in zip(tris, truth):
-                fill = rasterize(Triangle(t), size, size, samples=offsets)
-                err = fill.coverage_fraction - want
-                errors.append(np.abs(err[(want > 0) | (fill.coverage_fraction > 0)]))
-            for _ in range(repeat):
-                t0 = time.perf_counter()
-                for t in tris:
-                    rasterize(Triangle(t), size, size, samples=offsets)
-                times.append(time.perf_counter() - t0)
-            e = np.concatenate(errors)
-            rows.append({"kind": kind, "samples": n, "mean_error": float(e.mean()),
-                         "max_error": float(e.max()), "time_s": statistics.median(times)})  # fmt: skip
+    for kind, n, offsets in _study_patterns(kinds, counts, patterns):
+        errors, times = [], []
+        for t, want in zip(tris, truth):
+            fill = rasterize(Triangle(t), size, size, samples=offsets)
+            err = fill.coverage_fraction - want
+            errors.append(np.abs(err[(want > 0) | (fill.coverage_fraction > 0)]))
+        for _ in range(repeat):
+            t0 = time.perf_counter()
+            for t in tris:
+                rasterize(Triangle(t), size, size, samples=offsets)
+            times.append(time.perf_counter() - t0)
+        e = np.concatenate(errors)
+        rows.append({"kind": kind, "samples": n, "mean_error": float(e.mean()),
+                     "max_error": float(e.max()), "time_s": statistics.median(times)})  # fmt: skip
     return rows
 
 

@@ -32,6 +32,7 @@ import base64
 import html
 import io
 import itertools
+import math
 import os
 import struct
 from collections.abc import Callable, Sequence
@@ -331,8 +332,11 @@ class Predict(HoldsAnswer):
     def _answer_text(self) -> str:
         if self.choices:
             return html.escape(self.answer)
-        tol = f" (± {self.tolerance:g})" if self.tolerance else ""
-        return f"{self.answer:g}{tol}"
+        if not self.tolerance:
+            return f"{self.answer:g}"
+        # one digit finer than the tolerance, no more (r105 08-5: "1.15849 (± 0.1)")
+        digits = max(0, 1 - math.floor(math.log10(self.tolerance)))
+        return f"{round(self.answer, digits):g} (± {self.tolerance:g})"
 
     def _verdict(self) -> str:
         """One HTML line: what the student said against the answer."""
