@@ -664,3 +664,11 @@ def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypat
             assert not q.check.disabled
             q.check.click()
             assert q.correct is verdict and q.revealed and q.check.disabled, (name, value)
+
+
+def test_review_r101_polyline_figure_sets_the_rule_beside_every_pixel_touched(ns):
+    """Review r101 (top change 3): why exit-only diamonds: drawn beside "every pixel the segment
+    touches", the rule lights the shared vertex once and one pixel a column; the obvious rule
+    lights the shared pixel with both segments and two pixels in some columns."""
+    assert ns.both == [] and ns.naive_both == [ns.shared]
+    assert ns.naive_cols > 0 and ((ns.first | ns.second).sum(axis=0) <= 1).all()
