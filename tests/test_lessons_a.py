@@ -1710,7 +1710,9 @@ def test_05a_r103_the_painter_first_repairs_a_near_to_far_submission():
     ns = lesson("05a_zbuffer")
     z = ns.flat_clip[..., 2] / ns.flat_clip[..., 3]
     assert (z == z[:, :1]).all() and (np.diff(z[:, 0]) > 0).all()  # flat, submitted near first
-    assert ns.painter_order(ns.flat_clip).tolist() == [2, 1, 0]  # the sort: far to near
+    from teachraster.pipeline.painters_algorithm import painter_order
+
+    assert painter_order(ns.flat_clip).tolist() == [2, 1, 0]  # the sort: far to near
     assert ns.flat_wrong["as submitted"] > 0 and ns.flat_wrong["painter's order"] == 0
     frames = ns.flat_frames
     assert np.array_equal(frames["painter's order"].triangle_id, frames["z-buffer"].triangle_id)
