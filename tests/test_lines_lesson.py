@@ -586,14 +586,20 @@ def test_review_r101_bresenham_question_takes_an_answer_first(ns, monkeypatch):
     for value, verdict in (("6", True), ("5", False), ("7", False)):
         scope = dict(tr=tr, np=np, bres=ns.bres, dx=ns.dx, dy=ns.dy, Predict=Predict)
         exec(src, scope)  # the question cell, as the lesson runs it
-        q = scope["q_bres"]
-        assert q.check.disabled
-        q.control.value = "abc"
-        assert q.check.disabled
-        q.control.value = value
-        assert not q.check.disabled
-        q.check.click()
-        assert q.correct is verdict and q.revealed and q.check.disabled, value
+        assert _answered(scope["q_bres"], value) is verdict, value
+
+
+def _answered(q, value: str) -> bool:
+    """Answer the numeric question ``q`` as a student does: Check waits for a number (text that
+    is no number keeps it waiting), then takes ``value``; the verdict, the question locked."""
+    assert q.check.disabled
+    q.control.value = "abc"
+    assert q.check.disabled
+    q.control.value = value
+    assert not q.check.disabled
+    q.check.click()
+    assert q.revealed and q.check.disabled
+    return q.correct
 
 
 def _cell_source(cell_id: str) -> str:
@@ -656,14 +662,7 @@ def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypat
                          pixel_area=pixel_area, wide_line_triangles=wide_line_triangles,
                          tall=ns.tall)  # fmt: skip
             exec(_cell_source(cell_id), scope)  # the question cell, as the lesson runs it
-            q = scope[name]
-            assert q.check.disabled
-            q.control.value = "abc"
-            assert q.check.disabled
-            q.control.value = value
-            assert not q.check.disabled
-            q.check.click()
-            assert q.correct is verdict and q.revealed and q.check.disabled, (name, value)
+            assert _answered(scope[name], value) is verdict, (name, value)
 
 
 def test_review_r101_polyline_figure_sets_the_rule_beside_every_pixel_touched(ns):
