@@ -1699,3 +1699,27 @@ def test_04_summary_error_is_ratio_times_change_r97():
     r = ns.z1 / ns.z0
     assert f"{(np.sqrt(r) - 1) ** 2 / (r - 1):.3f} for $r = {r:g}$" in flat
     assert "**times** how much the attribute changes along the edge" in flat
+
+
+@pytest.mark.notebook
+def test_05a_r103_the_painter_first_repairs_a_near_to_far_submission():
+    """Review r103 05a-B: before the two scenes where no sort helps, the painter is seen working:
+    three flat triangles (one depth each) submitted near to far are wrong drawn as submitted
+    and right, pixel for pixel the z-buffer's picture, in the painter's far-to-near order; the
+    cell prints both counts. r103 cosmetics: no review id in a cell's comment."""
+    ns = lesson("05a_zbuffer")
+    z = ns.flat_clip[..., 2] / ns.flat_clip[..., 3]
+    assert (z == z[:, :1]).all() and (np.diff(z[:, 0]) > 0).all()  # flat, submitted near first
+    from teachraster.pipeline.painters_algorithm import painter_order
+
+    assert painter_order(ns.flat_clip).tolist() == [2, 1, 0]  # the sort: far to near
+    assert ns.flat_wrong["as submitted"] > 0 and ns.flat_wrong["painter's order"] == 0
+    frames = ns.flat_frames
+    assert np.array_equal(frames["painter's order"].triangle_id, frames["z-buffer"].triangle_id)
+    assert np.allclose(frames["painter's order"].attrs, frames["z-buffer"].attrs, equal_nan=True)
+    cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    works = next(i for i, t in enumerate(text) if "flat_wrong = {" in t)
+    sticks = next(i for i, t in enumerate(text) if "PredictOrder(" in t)
+    assert works < sticks  # the painter works before it is shown failing
+    assert not any(re.search(r"\br\d+\b:", t) for t in _cells("05a_zbuffer", "code"))

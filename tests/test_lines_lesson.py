@@ -593,11 +593,88 @@ def test_review_r101_bresenham_question_takes_an_answer_first(ns, monkeypatch):
     for value, verdict in (("6", True), ("5", False), ("7", False)):
         scope = dict(tr=tr, np=np, bres=ns.bres, dx=ns.dx, dy=ns.dy, Predict=Predict)
         exec(src, scope)  # the question cell, as the lesson runs it
-        q = scope["q_bres"]
-        assert q.check.disabled
-        q.control.value = "abc"
-        assert q.check.disabled
-        q.control.value = value
-        assert not q.check.disabled
-        q.check.click()
-        assert q.correct is verdict and q.revealed and q.check.disabled, value
+        assert _answered(scope["q_bres"], value) is verdict, value
+
+
+def _answered(q, value: str) -> bool:
+    """Answer the numeric question ``q`` as a student does: Check waits for a number (text that
+    is no number keeps it waiting), then takes ``value``; the verdict, the question locked."""
+    assert q.check.disabled
+    q.control.value = "abc"
+    assert q.check.disabled
+    q.control.value = value
+    assert not q.check.disabled
+    q.check.click()
+    assert q.revealed and q.check.disabled
+    return q.correct
+
+
+def _cell_source(cell_id: str) -> str:
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "notebooks" / "12a_lines.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    return "".join(next(c for c in cells if c.get("id") == cell_id)["source"])
+
+
+def test_review_r105_dda_and_smooth_line_predictions(ns):
+    """Reviews r101/r105: §3 and §4 ask before they tell. q_dda: the run of columns the float32
+    DDA lights in row 2 while the exact line is in row 1 is the drift there over the slope
+    (28 columns, the first run the held cell counts). q_smooth: the area the 1 px smooth line
+    covers in the dark pixel above the aliased line's, the covered height at the column's
+    centre (pixel_area's own number). Each question comes before the cell that answers it,
+    and that cell is held."""
+    assert ns.dda_run == 28 and abs(ns.dda_lead / ns.dda_slope - ns.dda_run) < 1
+    assert ns.dda_wrong[0] == ns.first_column and len(ns.dda_wrong) == ns.dda_run + 1
+    assert (ns.sm_row, ns.sm_col) == (3, 6) and ns.sm_area == pytest.approx(0.439, abs=1e-3)
+    assert ns.one_px[ns.sm_row + 1, ns.sm_col] and not ns.one_px[ns.sm_row, ns.sm_col]
+    assert ns.smooth[ns.sm_row, ns.sm_col] == ns.sm_area
+    for ask, held, told in (("ddaq", "1ef67203", "DDA lights a different pixel in"),
+                            ("smoothq", "smoothcell", "the question's pixel")):  # fmt: skip
+        before = _cells_before("12a_lines", ask)
+        assert told not in before and f"{ask[:-1]}.hold()" not in before
+        assert _cell_source(held).startswith(f"q_{ask[:-1]}.hold()")
+    assert "q_smooth.hold()" in _cell_source("smoothcell")
+    # the last column's caption says that p1's pixel is the next segment's (r105 12a-3)
+    assert "(last column: p1's pixel is left to the next segment)" in ns.bres.trace.caption(
+        len(ns.bres.trace) - 1
+    )
+
+
+def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypatch):
+    """The two questions, built from their cells as a student's kernel builds them: Check waits
+    for a number, the answer and its tolerance are right, the near slips are not."""
+    from fractions import Fraction
+
+    import teachraster as tr
+    from teachraster.core.lines import wide_line_triangles
+    from teachraster.study.antialiasing import pixel_area
+    from teachraster.widgets import Predict
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    cases = {
+        "ddaq": (
+            "q_dda",
+            [("28", True), ("27", True), ("29", True), ("25", False), ("1", False)],
+        ),  # fmt: skip
+        "smoothq": (
+            "q_smooth",
+            [("0.44", True), ("0.41", True), ("0.68", False), ("0.5", False), ("1", False)],
+        ),  # fmt: skip
+    }
+    for cell_id, (name, answers) in cases.items():
+        for value, verdict in answers:
+            scope = dict(tr=tr, np=np, Predict=Predict, Fraction=Fraction, p0=ns.p0, p1=ns.p1,
+                         pixel_area=pixel_area, wide_line_triangles=wide_line_triangles,
+                         tall=ns.tall)  # fmt: skip
+            exec(_cell_source(cell_id), scope)  # the question cell, as the lesson runs it
+            assert _answered(scope[name], value) is verdict, (name, value)
+
+
+def test_review_r101_polyline_figure_sets_the_rule_beside_every_pixel_touched(ns):
+    """Review r101 (top change 3): why exit-only diamonds: drawn beside "every pixel the segment
+    touches", the rule lights the shared vertex once and one pixel a column; the obvious rule
+    lights the shared pixel with both segments and two pixels in some columns."""
+    assert ns.both == [] and ns.naive_both == [ns.shared]
+    assert ns.naive_cols > 0 and ((ns.first | ns.second).sum(axis=0) <= 1).all()

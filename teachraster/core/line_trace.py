@@ -104,7 +104,11 @@ class LineTrace:
         head = f"{where} {int(s.major[work])}"
         value = float(s.value[work])
         if self.rule == "bresenham":
-            head += f", error term D = {value:g} ({'step' if value > 0 else 'stay'} next)"
+            # the loop stops before p1's pixel: after the last column there is no next one
+            then = f"{'step' if value > 0 else 'stay'} next"
+            if work == len(s.major) - 1:
+                then = f"last {where}: p1's pixel is left to the next segment"
+            head += f", error term D = {value:g} ({then})"
         else:
             other = "y" if s.x_major else "x"
             label = "float32 sum" if self.rule == "dda" else "line at the centre"
