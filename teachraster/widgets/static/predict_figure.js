@@ -137,8 +137,10 @@ const PRED_CSS = `
 .tr-chip.wrong { border-color: #D55E00; background: #fbe9e0; }
 .tr-choices { display: flex; flex-wrap: wrap; gap: 6px; margin: 4px 0 6px; }
 .tr-choices button { font-size: 15px; padding: 4px 12px; }
-.tr-choices button.right { outline: 3px solid #009E73; outline-offset: 1px; }
-.tr-choices button.wrong { outline: 3px solid #D55E00; outline-offset: 1px; }
+.tr-predict .tr-choices button.right, .tr-predict .tr-choices button.wrong { opacity: 1;
+  color: #111; outline-offset: 1px; }
+.tr-predict .tr-choices button.right { outline: 3px solid #009E73; background: #e3f5ee; }
+.tr-predict .tr-choices button.wrong { outline: 3px solid #D55E00; background: #fbe9e0; }
 `;
 
 function verdictHtml(right, text) {
