@@ -145,9 +145,10 @@ function svg(tag, attrs, text) {
 // Two rows of five boxes; the second row continues from the first. Every text of the map is
 // 16 px, the stage names bold (review r91 00-D, r97 00-5: 13-px names and a caption read
 // 12-13 px on a laptop at 1280 px, not from the back of a hall): drawn 1:1 wherever the
-// column is 736 px or more (JupyterLab's at 1280 px with the file browser open is about 850,
-// at 1400 px about 940), and shrunk with it below that, to 12.7 px in the 585-px column of a
-// 1024-px screen (the figures' minimum there, 12 px). The boxes are 132 px wide: the widest
+// column is 736 px or more (JupyterLab's with the file browser open at 1280 and 1400 px,
+// as test_browser_explorables measures), and shrunk with it below that, to 12.7 px in the
+// 585-px column of a 1024-px screen (the figures' minimum there, 12 px). The boxes are
+// 132 px wide: the widest
 // names, "(guard band)" and "rasterisation", are 116 and 113 px at 16 px bold (DejaVu Sans,
 // the widest of the usual sans-serifs), which leaves 8 px on either side, clear of the
 // selected box's 2-px border (at 14 px in 104-px boxes they ran to 0.3 px of it: review r17).
