@@ -290,9 +290,45 @@ def test_pipeline_stage_clicked(lesson):
     sent = _kernel(lesson, "pipeline.data['lessons']['rasterize']")
     box = w.locator("[data-stage=rasterize] text").all_text_contents()  # SVG: no innerText
     # lesson 06 prices the rasteriser's choices (review r23 00-4): three lines, which the
-    # 92-px box holds under its one-line name (baselines 51, 68, 85 px; the name's at 28);
+    # 100-px box holds under its one-line name (baselines 55, 73, 91 px; the name's at 30);
     # at most nine characters a line, runs of three as a range (review r97 00-5)
     assert sent == ["01–04,", "06–08,", "10, 12a"] and box[-3:] == sent
+
+
+#: The pipeline map's texts as shown: each one's size on screen (its font size times the
+#: map's scale), whether it lies inside its stage's box, and the map's and column's widths.
+MAP_TEXT = """(w) => {
+  const s = w.querySelector('.tr-pipe svg');
+  const scale = s.getBoundingClientRect().width / s.viewBox.baseVal.width;
+  const sizes = [...s.querySelectorAll('text')].map(t => +t.getAttribute('font-size') * scale);
+  const outside = [];
+  for (const g of s.querySelectorAll('g[data-stage]')) {
+    const r = g.querySelector('rect').getBBox();
+    for (const b of [...g.querySelectorAll('text')].map(t => t.getBBox())) {
+      if (b.x < r.x + 4 || b.x + b.width > r.x + r.width - 4 || b.y < r.y || b.y + b.height > r.y + r.height)
+        outside.push(g.dataset.stage);
+    }
+  }
+  const column = s.closest('.jp-OutputArea-output').getBoundingClientRect().width;
+  return {least: Math.min(...sizes), outside, map: s.getBoundingClientRect().width, column};
+}"""
+
+
+def test_pipeline_map_reads_15_px_in_a_1280_px_window(lesson):
+    """Review r97 00-5 (r91 00-D): at 1280 px the stage names were 13 px bold and the caption
+    read 12-13 px. Every text of the map now reads at least 15 px there and at 1400 x 900 (the
+    map drawn 1:1 within the column, which it fits), at least 12 px in the 585-px column of a
+    1024-px screen, and each stage's name and lessons stay inside its box."""
+    w = _widget(lesson, "pipeline")
+    try:
+        for (width, height), least in [((1400, 900), 15), ((1280, 800), 15), ((1024, 768), 12)]:
+            lesson.set_viewport_size({"width": width, "height": height})
+            lesson.wait_for_timeout(500)
+            got = lesson.evaluate(MAP_TEXT, w.element_handle())
+            assert got["least"] >= least and not got["outside"], (width, got)
+            assert got["map"] <= got["column"] + 1, (width, got)
+    finally:
+        lesson.set_viewport_size({"width": 1400, "height": 900})
 
 
 def test_predictions_wait_for_an_answer_then_show_it(lesson):

@@ -10,6 +10,7 @@ test, small grids.
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import tempfile
 from pathlib import Path
@@ -773,6 +774,47 @@ def test_eye_ray_t_of_q_and_the_peak_for_ratio_2():
     assert peak["gap"] >= (dense - Segment(0, 1.0, 1, 2.0).world_parameter(dense)).max() - 1e-12
     other = got[42]
     assert other["gap"] == pytest.approx(other["formula"], abs=1e-14)
+
+
+def _text_px(text: str, px: float, bold: bool = False) -> float:
+    """The width of ``text`` at ``px`` in DejaVu Sans (matplotlib's font; Chromium's sans-serif
+    here, and wider than Arial, Helvetica or Segoe UI)."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextPath
+
+    font = FontProperties(family="DejaVu Sans", weight="bold" if bold else "normal", size=px)
+    return TextPath((0, 0), text, prop=font).get_extents().width
+
+
+def test_pipeline_map_text_reads_16_px_and_fits_its_boxes():
+    """Review r97 00-5 (r91 00-D): the stage names were 13 px bold and the caption read 12-13 px
+    at 1280 px. Every text of the map is now at least 15 px where it is drawn 1:1, in any
+    column as wide as the map (at most the 940-px notebook column), and 12 px in the 585-px
+    column of a 1024-px screen; each name and lesson line fits its box with room to spare."""
+    from teachraster.plotting.style import COLUMN_WIDTH_PX
+    from teachraster.widgets.pipeline_map import tour_stages
+
+    (m,) = call_js(("explore_pipeline",), [("mapGeometry", [])])
+    assert m["name"] >= 15 and m["font"] >= 15 and m["width"] <= COLUMN_WIDTH_PX
+    assert min(m["name"], m["font"]) * min(1.0, 585 / m["width"]) >= 12.0
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "explore_pipeline.js").read_text()
+    assert not re.search(r'"font-size": \d', js)  # every size is MAP's
+    names = dict(re.findall(r'^  \["(\w+)", "([^"]*)", "[^"]*"\],$', js, flags=re.M))
+    lessons = tour_stages()["lessons"]
+    for box in m["boxes"]:
+        assert 0 <= box["x"] and box["x"] + box["w"] <= m["width"]
+        assert box["y"] + box["h"] <= m["height"]
+        room = box["w"] - 2 * 6  # 6 px from either border (the selected box's is 2 px)
+        for line in names[box["key"]].split("|"):
+            assert _text_px(line, m["name"], bold=True) <= room, line
+        for line in lessons[box["key"]]:
+            assert _text_px(line, m["font"]) <= room, line
+    for line in m["caption"]:  # from the left edge
+        assert _text_px(line, m["font"]) <= m["width"] - 4, line
+    r, f = m["boxes"][6], m["boxes"][7]  # the note is centred under early-z, between them
+    centre = r["x"] + r["w"] / 2 - 30 + (f["x"] - r["x"] + 60) / 2
+    for line in m["note"]:
+        assert _text_px(line, m["font"]) / 2 <= min(centre, m["width"] - centre) - 2, line
 
 
 def test_pipeline_map_shows_the_engines_tour_triangle():

@@ -1094,7 +1094,7 @@ def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
 
     for key, stems in lessons.items():  # the box lists every lesson, in order
         assert spelled(" ".join(shown[key])) == ", ".join(lesson_number(s) for s in stems), key
-        # review r97 00-5: lines of at most nine characters, ~75 px at 15 px in a 104-px box
+        # review r97 00-5: lines of at most nine characters, ~80 px at 16 px in a 132-px box
         assert all(len(line) <= 9 for line in shown[key]) and len(shown[key]) <= 3, key
 
 

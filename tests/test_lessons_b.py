@@ -839,8 +839,11 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
 
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     far_cell = next("".join(c["source"]) for c in nb["cells"]
-                    if "q_far = Predict(" in "".join(c["source"]))  # fmt: skip
-    asked = far_cell.split("q_far = Predict(")[1].split("explain=")[0]
+                    if "q_far = PredictChoice(" in "".join(c["source"]))  # fmt: skip
+    asked = far_cell.split("q_far = PredictChoice(")[1].split("explain=")[0]
+    # review r98 07: the multiple choice is judged in the page (PredictChoice: Check enabled at
+    # the pick, no wait for a busy kernel), on the choices and the answer computed above
+    assert "    far_choices,\n    answer=far_answer,\n" in far_cell
     assert "edge's length" not in asked and "x_a·y_b" not in asked
     # review r13 07: the subpixel panel names its zero-area triangles, the clip its seam
     assert ns.collapsed == 2 and ns.clipped_into == 2

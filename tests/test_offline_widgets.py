@@ -28,7 +28,7 @@ LIVE = {"FillPlayer", "LinePlayer", "ZBufferStepper", "TileExplorer", "TexturedP
 COMPUTED_IN_THE_PAGE = {"PipelineMap", "CrackExplorer", "EdgeFunctionExplorer",
                         "AttributeSurfaces", "EyeRayExplorer", "DepthValuesExplorer",
                         "FootprintExplorer", "DiamondExplorer", "PredictPixels", "PredictPoint",
-                        "PredictOrder"}  # fmt: skip
+                        "PredictOrder", "PredictChoice"}  # fmt: skip
 LIVE |= COMPUTED_IN_THE_PAGE
 
 

@@ -12,7 +12,7 @@ from explorables_node import call_js  # noqa: E402
 
 import teachraster as tr  # noqa: E402
 from teachraster.plotting import plot_triangle  # noqa: E402
-from teachraster.widgets import PredictOrder, PredictPixels, PredictPoint  # noqa: E402
+from teachraster.widgets import PredictChoice, PredictOrder, PredictPixels, PredictPoint  # noqa: E402
 
 TRI = tr.Triangle([[1.5, 1.5], [9.5, 3.5], [3.5, 8.5]])
 
@@ -152,6 +152,11 @@ def test_a_point_marker_can_read_out_the_code_it_sits_on():
         (lambda: PredictOrder("Q?", ["a", "a"], answer=None), ValueError, "items"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=None), ValueError, "allow_impossible"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=["a", "c"]), ValueError, "answer"),
+        (lambda: PredictChoice("Q?", ["a"], answer="a"), ValueError, "choices"),
+        (lambda: PredictChoice("Q?", ["a", "a"], answer="a"), ValueError, "choices"),
+        (lambda: PredictChoice("Q?", "ab", answer="a"), TypeError, "choices"),
+        (lambda: PredictChoice("Q?", ["a", "b"], answer="c"), ValueError, "answer"),
+        (lambda: PredictChoice("Q?", ["a", "b"], answer="a", draw=1), TypeError, "draw"),
     ],
 )  # fmt: skip
 def test_bad_arguments_name_the_argument(make, error, name):
@@ -178,6 +183,42 @@ def test_the_page_judges_as_the_kernel():
         assert js["correct"] == p.correct and js["gap"] == pytest.approx(p.gap)
     assert [js["correct"] for js in got[6:]] == [True, False, True]
     assert got[7]["places"] == [False, False]
+
+
+def test_a_choice_is_judged_in_the_page_as_in_the_kernel():
+    """Review r98, 07 (q_far): an ipywidgets Predict enabled Check only after the kernel had
+    heard of the pick (still disabled 1 s after it); a PredictChoice is judged in the page,
+    as the figure kinds are, and says what the kernel says."""
+    from pathlib import Path
+
+    choices = ["under a pixel", "tens of pixels", "a < b & c"]
+    q = PredictChoice("How far?", choices, answer="tens of pixels", explain="Far.")
+    assert q.data["kind"] == "choice" and q.data["choices"] == choices and "png" not in q.data
+    assert q.given is None and q.correct is None
+    q.check()  # nothing picked: nothing revealed
+    assert not q.revealed
+    with pytest.raises(ValueError, match="choice"):
+        q.given = "thousands"
+    verdicts = []
+    for pick in choices:
+        q.given = pick
+        assert q.correct is (pick == "tens of pixels")
+        verdicts.append(q.verdict())
+    got = call_js(("predict_figure",), [("choiceVerdict", ["tens of pixels", c]) for c in choices])
+    for v, js, pick in zip(verdicts, got, choices, strict=True):
+        assert v == ("Right. " if js["correct"] else "Not quite. ") + js["text"], (v, js)
+        assert js["correct"] is (pick == "tens of pixels")
+    assert "a &lt; b &amp; c" in verdicts[2]  # plain text, escaped alike on both sides
+    q.given = "under a pixel"
+    q.check()
+    q.state = {**q.state, "given": "tens of pixels"}  # a later pick: the checked one is kept
+    assert q.revealed and q.correct is False and q.given == "under a pixel"
+    standin = q._standin()
+    assert "How far?" in standin and "a &lt; b &amp; c" in standin and "Not quite." in standin
+    # the page enables Check at the pick, in the page, before telling the kernel
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    pick = js.split("function mountChoice")[1].split("host.setState({ given: value })")[0]
+    assert "render_();" in pick and "checkDisabled(state.revealed, state.given !== null)" in js
 
 
 def test_the_saved_notebook_keeps_the_question_its_picture_and_the_verdict():

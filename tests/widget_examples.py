@@ -67,4 +67,5 @@ def examples():
             "Where?", answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4)
         ),
         "PredictOrder": lambda: w.PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"]),
+        "PredictChoice": lambda: w.PredictChoice("How far?", ["near", "far"], answer="far"),
     }

@@ -58,7 +58,8 @@ rate with no kernel in the loop and stay live in ``teachraster html`` pages:
 :class:`PipelineMap` (00), :class:`CrackExplorer` (01), :class:`EdgeFunctionExplorer` (02),
 :class:`AttributeSurfaces` and :class:`EyeRayExplorer` (03/04), :class:`DepthValuesExplorer`
 (05b), :class:`FootprintExplorer` (09), :class:`DiamondExplorer` (12); and the predictions
-answered on a figure, :class:`PredictPixels`, :class:`PredictPoint`, :class:`PredictOrder`
+answered on a figure, :class:`PredictPixels`, :class:`PredictPoint`, :class:`PredictOrder`,
+and :class:`PredictChoice`, a multiple choice whose Check the page enables at the pick
 (:mod:`teachraster.widgets.predict_figure`).
 
 Figures
@@ -101,7 +102,7 @@ from .pipeline_map import PipelineMap
 from .plane_explorer import PlaneExplorer
 from .player import FillPlayer
 from .predict import Predict
-from .predict_figure import PredictOrder, PredictPixels, PredictPoint
+from .predict_figure import PredictChoice, PredictOrder, PredictPixels, PredictPoint
 from .projection_explorer import ProjectionExplorer
 from .textured import TexturedPlaneViewer
 from .tiles import TileExplorer
@@ -131,6 +132,7 @@ __all__ = [
     "PixelInspector",
     "PlaneExplorer",
     "Predict",
+    "PredictChoice",
     "PredictOrder",
     "PredictPixels",
     "PredictPoint",

@@ -64,8 +64,8 @@ def map_lessons() -> dict[str, tuple[str, ...]]:
 def lessons_label(stems, width: int = 9) -> list[str]:
     """The lesson numbers of ``stems`` as a stage box prints them: a run of three or more
     consecutive whole numbers as a range, in lines of at most ``width`` characters (nine
-    at 15 px are about 75 px: a 104-px box holds them with a margin on either side, where
-    twelve filled it from border to border, review r97 00-5).
+    at 16 px are about 80 px: a 132-px box holds them with a wide margin on either side;
+    twelve at 15 px filled a 104-px box from border to border, review r97 00-5).
 
     >>> lessons_label(["01_a", "02_b", "03_c", "04_d", "06_e", "07_f", "08_g", "10_h", "12_i"])
     ['01–04,', '06–08,', '10, 12']

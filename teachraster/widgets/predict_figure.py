@@ -53,6 +53,17 @@ Order: ``answer`` lists the items in the right order, or is None when no order w
         items=["red", "green", "blue"], answer=None, allow_impossible=True,
         explain="Each stick is in front of one and behind the other: a cycle.",
     )
+
+Choice: a multiple choice judged in the page, as these are: Check is enabled the moment an
+option is picked, with no round trip to a busy kernel (review r98, 07: a :class:`Predict`'s
+Check waited over a second for the kernel to hear of the pick); ``draw`` optional::
+
+    PredictChoice(
+        "How far can float32's rounding move an edge at 10⁶ px?",
+        ["under a pixel", "tens of pixels", "thousands of pixels"],
+        answer="thousands of pixels",
+        explain="float32's numbers near 10¹² are 65,536 apart.",
+    )
 """
 
 from __future__ import annotations
@@ -83,6 +94,13 @@ def _check_draw(draw) -> Callable | None:
     if draw is not None and not callable(draw):
         raise TypeError(f"draw must be callable (it draws on an Axes) or None, got {draw!r}")
     return draw
+
+
+def _optional_picture(draw, figsize, style) -> dict:
+    """The picture over an order or a choice: ``draw(ax)`` on one Axes, or none."""
+    if draw is None:
+        return {}
+    return figure_picture(_check_draw(draw), lambda fig: fig.add_subplot(), figsize, style)
 
 
 def _plural(noun: str, n: int) -> str:
@@ -188,6 +206,8 @@ class FigurePrediction(HoldsAnswer, Explorable):
         text = self.question  # under the title "Predict first"
         if self.data.get("items"):  # an order question: its items, in the order shown first
             text += f"<div>{choices_html(self.data['items'])}</div>"
+        if self.data.get("choices"):  # a choice: its options (plain text)
+            text += f"<div>{choices_html([html.escape(c) for c in self.data['choices']])}</div>"
         if self.revealed:
             text += f"<div><i>{self.verdict()}</i></div>"
         return text
@@ -481,10 +501,7 @@ class PredictOrder(FigurePrediction):
                 raise ValueError("answer is None (no order works): set allow_impossible=True")
         elif sorted(map(str, answer)) != sorted(items):
             raise ValueError(f"answer must order the items {items!r}, got {answer!r}")
-        picture = {}
-        if draw is not None:
-            _check_draw(draw)
-            picture = figure_picture(draw, lambda fig: fig.add_subplot(), figsize, style)
+        picture = _optional_picture(draw, figsize, style)
         self.items = items
         self.answer = None if answer is None else [str(a) for a in answer]
         super().__init__(question, explain, {
@@ -517,3 +534,66 @@ class PredictOrder(FigurePrediction):
         right = (self.data["impossibleLabel"] if self.answer is None
                  else " → ".join(self.answer))  # fmt: skip
         return f"{word} The answer: {right}."
+
+
+class PredictChoice(FigurePrediction):
+    """A multiple choice judged in the page: Check is enabled as soon as an option is picked.
+
+    :class:`~teachraster.widgets.Predict` (ipywidgets) enables its Check only once the
+    kernel has heard of the pick, which a kernel busy with the lesson's later cells (Run
+    All) delays by seconds; here, as in the figure predictions, the page judges and reveals
+    by itself, and the kernel hears of the answer (``q.given``, ``q.correct``) after.
+
+    Parameters
+    ----------
+    question : str
+        The question (HTML).
+    choices : list of str
+        The options (plain text), at least two, all different.
+    answer : str
+        The right one, one of ``choices``.
+    draw : callable, optional
+        ``draw(ax)`` draws a picture above the options.
+    explain, figsize, style : as above.
+
+    Examples
+    --------
+    >>> q = PredictChoice("Which row?", ["row 2", "row 3"], answer="row 2")
+    >>> q.correct is None
+    True
+    >>> q.given = "row 3"
+    >>> q.correct, q.verdict()
+    (False, 'Not quite. You predicted <b>row 3</b>; the answer is <b>row 2</b>.')
+    """
+
+    def __init__(self, question: str, choices: Sequence[str], answer: str, *,
+                 draw=None, explain: str = "", figsize=(7.0, 3.5),
+                 style: str | None = "classroom") -> None:  # fmt: skip
+        if isinstance(choices, str):
+            raise TypeError(f"choices must be a list of str, got the str {choices!r}")
+        choices = [str(c) for c in choices]
+        if len(choices) < 2 or len(set(choices)) != len(choices):
+            raise ValueError(f"choices must be at least two different answers, got {choices!r}")
+        if str(answer) not in choices:
+            raise ValueError(f"answer {answer!r} is not one of choices {choices!r}")
+        picture = _optional_picture(draw, figsize, style)
+        self.choices, self.answer = choices, str(answer)
+        super().__init__(question, explain, {
+            "kind": "choice", "choices": choices, "answer": self.answer, **picture})  # fmt: skip
+
+    @FigurePrediction.given.setter
+    def given(self, choice) -> None:
+        if choice is not None and str(choice) not in self.choices:
+            raise ValueError(f"choice must be one of {self.choices!r}, got {choice!r}")
+        self.state = {**self.state, "given": None if choice is None else str(choice)}
+
+    @property
+    def correct(self) -> bool | None:
+        return None if self.given is None else self.given == self.answer
+
+    def verdict(self) -> str:
+        if self.given is None:
+            return f"The answer: <b>{html.escape(self.answer)}</b>."
+        word = "Right." if self.correct else "Not quite."
+        return (f"{word} You predicted <b>{html.escape(self.given)}</b>; the answer is "
+                f"<b>{html.escape(self.answer)}</b>.")  # fmt: skip

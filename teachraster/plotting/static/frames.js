@@ -24,19 +24,19 @@ const CSS = `
 .tr-frames .tr-caption { min-height: 3.2em; padding: 2px 6px; border: 1px solid #ddd;
   font-size: 15px; margin: 2px 0 4px 0; }
 .tr-frames canvas { display: block; max-width: 100%; height: auto; }
-/* The notice lies over the picture's foot instead of below it: a "waiting" that comes and
-   goes must not make the player jump in height (nor push it past a screen, issue 31). */
-.tr-frames .tr-stage { position: relative; width: fit-content; max-width: 100%; }
-.tr-frames .tr-notice { position: absolute; left: 0; right: 0; bottom: 0; color: #b00020;
-  font-size: 14px; background: rgba(255, 255, 255, 0.92); padding: 2px 6px; }
-.tr-frames .tr-notice:empty { display: none; }
 /* A step whose picture is still on its way from the kernel (a busy kernel, say one still
    running the cells below): its readout and caption are shown at once, the older picture
    dimmed under a note saying so (review r99 02-5: the handle at the last step over "0 of
-   172" and step 0's picture looked like a key the player had ignored). */
+   172" and step 0's picture looked like a key the player had ignored). The note lies over
+   the picture: one that comes and goes must not make the player jump in height (nor push
+   it past a screen, issue 31). It is the player's only note: after a minute of silence it
+   turns into the advice (red) and back when the kernel answers (review r9: a second
+   "Waiting for the kernel" at the picture's foot said the same thing twice). */
+.tr-frames .tr-stage { position: relative; width: fit-content; max-width: 100%; }
 .tr-frames .tr-wait { display: none; position: absolute; left: 8px; top: 8px;
-  padding: 2px 8px; background: rgba(255, 255, 255, 0.92); border: 1px solid #999;
-  border-radius: 3px; font-size: 15px; }
+  margin-right: 8px; padding: 2px 8px; background: rgba(255, 255, 255, 0.92);
+  border: 1px solid #999; border-radius: 3px; font-size: 15px; }
+.tr-frames .tr-wait.tr-silent { color: #b00020; border-color: #b00020; }
 .tr-frames .tr-stage.tr-waiting canvas { opacity: 0.35; }
 .tr-frames .tr-stage.tr-waiting .tr-wait { display: block; }
 .tr-frames button { display: inline-flex; align-items: center; justify-content: center;
@@ -170,18 +170,17 @@ export function groupMismatch(msg, buffers) {
     `${msg.places.length} places, sent as [${sizes}] bytes (starting ${head.join(", ")})`;
 }
 
-// How long the kernel may be silent before the player says so. On a loaded classroom hub
-// a group can take seconds and more (review r97 00-1: "does not answer ... Run All" after
-// 20 s, on a player whose picture then came): first a calm "waiting", the advice to run
-// everything again only after SILENT_MS, and even then not as a verdict.
-export const WAIT_MS = 4000;
+// How long the kernel may be silent before the player says more than that a step's picture
+// is on its way. On a loaded classroom hub a group can take seconds and more (review r97
+// 00-1: "does not answer ... Run All" after 20 s, on a player whose picture then came): the
+// advice to run everything again only after SILENT_MS, and even then not as a verdict.
 export const SILENT_MS = 60000;
 
-// The notice under the player after `ms` without the group asked for: "" at first.
-export function waitingNotice(ms) {
-  if (ms < WAIT_MS) return "";
-  if (ms < SILENT_MS) {
-    return "Waiting for the kernel\u2026 (busy: the picture comes when it answers)";
+// The note over the picture while step k's picture is awaited and the kernel has been
+// silent for `ms` (null: nothing asked yet): what is coming, then after SILENT_MS the advice.
+export function waitingNote(k, ms) {
+  if (ms === null || ms < SILENT_MS) {
+    return `drawing step ${k}\u2026 (its picture comes from the kernel)`;
   }
   return `The kernel has not answered for ${Math.round(ms / 1000)} s. If it is still busy ` +
     "(its circle at the top right is filled), wait; if it was stopped or restarted, Run All " +
@@ -216,8 +215,6 @@ export function mountFrames(el, opts) {
   const caption = document.createElement("div");
   caption.className = "tr-caption teachraster-caption";
   caption.setAttribute("aria-live", "polite");
-  const notice = document.createElement("div");
-  notice.className = "tr-notice";
   const canvas = document.createElement("canvas");
   canvas.className = "teachraster-figure";
   canvas.setAttribute("role", "img");
@@ -227,7 +224,7 @@ export function mountFrames(el, opts) {
   const wait = document.createElement("div");
   wait.className = "tr-wait";
   wait.setAttribute("aria-live", "polite");
-  stage.append(canvas, wait, notice);
+  stage.append(canvas, wait);
   root.append(bar, caption, stage);
   el.appendChild(root);
   // Keys pressed in the player (arrows on the slider, space on a button) are the player's:
@@ -237,7 +234,7 @@ export function mountFrames(el, opts) {
   const s = {
     groups: new Map(), asked: new Set(), inflight: null, shown: -1, want: 0,
     timer: null, n: 0, key: 16, captions: [], infos: [], interval: 400, gen: 0,
-    fill: "", cache: new Map(), waitingSince: null, watching: false,
+    fill: "", cache: new Map(), waitingSince: null, watching: false, awaited: null,
   };
   // the decoded groups of the last few fills, by name (a toggle back paints at once)
   const CACHED_FILLS = 6;
@@ -250,15 +247,26 @@ export function mountFrames(el, opts) {
   // The step wanted has no picture yet (its group is on its way): its texts, which the page
   // holds for every step, at once, the picture on show dimmed under a note; or none waiting.
   function waiting(k) {
+    s.awaited = k;
     if (k === null) {
       stage.classList.remove("tr-waiting");
       delete canvas.dataset.want;
+      note();
       return;
     }
     label(k);
-    wait.textContent = `drawing step ${k}\u2026 (its picture comes from the kernel)`;
+    note();
     stage.classList.add("tr-waiting");
     canvas.dataset.want = String(k); // for tests: the step whose picture is awaited
+  }
+
+  // The note's words for the step awaited (waitingNote), "" when none is.
+  function note() {
+    const k = s.awaited;
+    const ms = s.waitingSince === null ? null : performance.now() - s.waitingSince;
+    const text = k === null ? "" : waitingNote(k, ms);
+    if (wait.textContent !== text) wait.textContent = text;
+    wait.classList.toggle("tr-silent", k !== null && ms !== null && ms >= SILENT_MS);
   }
 
   function paint(p) {
@@ -326,9 +334,10 @@ export function mountFrames(el, opts) {
     }
   }
 
-  // While a group is asked for and not here, the notice says how long the kernel has been
-  // silent (waitingNotice); it empties when the group comes, however late, or a new fill
-  // starts. One timer at a time, none while nothing is awaited.
+  // While a group is asked for and not here, the note over an awaited step's picture tells,
+  // after SILENT_MS, how long the kernel has been silent (waitingNote); it is the step's note
+  // again when the kernel answers, however late, and goes when the picture comes or a new
+  // fill starts. One timer at a time, none while nothing is asked for.
   function watch() {
     if (s.watching) return;
     s.watching = true;
@@ -336,13 +345,13 @@ export function mountFrames(el, opts) {
       if (s.inflight === null || s.waitingSince === null) {
         s.watching = false;
         s.waitingSince = null;
-        notice.textContent = "";
+        note();
         return;
       }
-      notice.textContent = waitingNotice(performance.now() - s.waitingSince);
+      note();
       setTimeout(look, 1000);
     };
-    setTimeout(look, WAIT_MS);
+    setTimeout(look, 1000);
   }
 
   function nextMissing() {
@@ -367,8 +376,8 @@ export function mountFrames(el, opts) {
     }
     s.groups.set(g, frames);
     canvas.dataset.groups = String(s.groups.size); // for tests and benchmarks
-    s.waitingSince = null; // the kernel answered: no notice (a late answer clears it)
-    notice.textContent = "";
+    s.waitingSince = null; // the kernel answered: no advice (a late answer clears it)
+    note();
     if (s.inflight === g) s.inflight = null;
     if (s.priority === g) s.priority = undefined;
     if (s.want !== s.shown) draw(s.want);
@@ -441,8 +450,8 @@ export function mountFrames(el, opts) {
     canvas.dataset.groups = String(s.groups.size);
     s.asked.clear();
     s.inflight = null;
-    s.waitingSince = null; // a new fill: nothing awaited yet, no notice from the last one
-    notice.textContent = "";
+    s.waitingSince = null; // a new fill: nothing awaited yet, no advice from the last one
+    note();
     s.priority = undefined;
     s.n = o.n;
     s.key = o.key;

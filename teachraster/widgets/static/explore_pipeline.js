@@ -142,18 +142,33 @@ function svg(tag, attrs, text) {
   return e;
 }
 
-// Two rows of five boxes; the second row continues from the first. Drawn 1:1 in a 580-px
-// column (JupyterLab's at 1024 px with the file browser open is about 585), where its
-// lesson numbers, early-z note and caption are 15 px, a classroom's minimum (review r91 00-D:
-// 13 px read on a laptop, not from the back of a hall). Stage names stay 13 px bold: at 14 px
-// "rasterisation" and "(guard band)" ran to 1.3 and 0.3 px from their boxes' borders (review
-// r17), under the selected box's 2-px border; five boxes fill the column. The lesson numbers
-// come in lines of at most nine characters (about 75 px at 15 px: review r97 00-5 found the
-// depth test's three lessons on one line filling a 104-px box from border to border), three
-// lines at most, 17 px apart, under the name: boxes 92 px tall.
-const MAP = { width: 580, height: 434, font: 15, name: 13, line: 18, lessons: 17 };
-function layout() {
-  const [bw, bh, gx, gy, x0, y0] = [104, 92, 14, 70, 2, 68];
+// Two rows of five boxes; the second row continues from the first. Every text of the map is
+// 16 px, the stage names bold (review r91 00-D, r97 00-5: 13-px names and a caption read
+// 12-13 px on a laptop at 1280 px, not from the back of a hall): drawn 1:1 wherever the
+// column is 736 px or more (JupyterLab's with the file browser open at 1280 and 1400 px,
+// as test_browser_explorables measures), and shrunk with it below that, to 12.7 px in the
+// 585-px column of a 1024-px screen (the figures' minimum there, 12 px). The boxes are
+// 132 px wide: the widest
+// names, "(guard band)" and "rasterisation", are 116 and 113 px at 16 px bold (DejaVu Sans,
+// the widest of the usual sans-serifs), which leaves 8 px on either side, clear of the
+// selected box's 2-px border (at 14 px in 104-px boxes they ran to 0.3 px of it: review r17).
+// The lesson numbers come in lines of at most nine characters (about 75 px: review r97 00-5
+// found the depth test's three lessons on one line filling its box from border to border),
+// three lines at most, 18 px apart, under the name: boxes 100 px tall.
+export const MAP = { width: 736, height: 442, font: 16, name: 16, nameLine: 19, line: 20, lessons: 18 };
+// the lines of the caption above the map and of the note under early-z
+export const CAPTION = ["The logical order of OpenGL and Direct3D; in each box, the lessons that",
+  "teach the stage. Click a stage for the tour triangle there."];
+export const EARLY_Z_NOTE = ["early-z (lessons 05a, 10), optional: depth tested and written",
+  "before shading, only if the shader neither discards, writes",
+  "depth nor writes memory (discard: test early, write late)"];
+// the map's sizes, texts and boxes (for the tests, which measure the texts against them)
+export function mapGeometry() {
+  return { ...MAP, caption: CAPTION, note: EARLY_Z_NOTE, boxes: layout() };
+}
+
+export function layout() {
+  const [bw, bh, gx, gy, x0, y0] = [132, 100, 18, 70, 2, 52];
   return STAGES.map(([key], k) => {
     const r = Math.floor(k / 5);
     const c = k % 5;
@@ -182,14 +197,14 @@ function diagram(onPick, lessons) {
   // dashed, not an arrow from rasterisation to the depth test around the shader (review r45,
   // 00: that read as fragments skipping the shader)
   const [r, f] = [boxes[6], boxes[7]];
-  const [ex, ey, ew, eh] = [r.x + r.w / 2 - 30, r.y + r.h + 24, f.x - r.x + 60, 26];
+  const [ex, ey, ew, eh] = [r.x + r.w / 2 - 30, r.y + r.h + 24, f.x - r.x + 60, 28];
   // a button too: it opens the depth test's stage, where early-z is explained (review r77
   // 00-8: clicking it did nothing). data-early, not data-stage: one box per stage
   const early = svg("g", { class: "stage", tabindex: 0, role: "button", "data-early": "depth",
     "aria-label": "early depth test: see the depth and stencil test" });
   early.append(svg("rect", { x: ex, y: ey, width: ew, height: eh, rx: 6, fill: "#fff",
     stroke: "#333", "stroke-width": 1.5, "stroke-dasharray": "7 5" }));
-  early.append(svg("text", { x: ex + ew / 2, y: ey + 18, "text-anchor": "middle",
+  early.append(svg("text", { x: ex + ew / 2, y: ey + 19, "text-anchor": "middle",
     "font-size": MAP.font, "font-weight": "bold", fill: "#333" }, "early depth test"));
   early.addEventListener("click", (e) => onPick("depth", e));
   onKeys(early, (e) => {
@@ -201,10 +216,8 @@ function diagram(onPick, lessons) {
   root.append(early);
   arrow(`M${r.x + r.w / 2},${r.y + r.h} L${r.x + r.w / 2},${ey - 2}`, "7 5");
   arrow(`M${f.x + f.w / 2},${ey} L${f.x + f.w / 2},${f.y + f.h + 2}`, "7 5");
-  ["early-z (lessons 05a, 10), optional: depth tested and written",
-    "before shading, only if the shader neither discards, writes",
-    "depth nor writes memory (discard: test early, write late)"].forEach((line, i) => root.append(svg("text",
-    { x: ex + ew / 2, y: ey + eh + 18 + MAP.line * i, "text-anchor": "middle",
+  EARLY_Z_NOTE.forEach((line, i) => root.append(svg("text",
+    { x: ex + ew / 2, y: ey + eh + 20 + MAP.line * i, "text-anchor": "middle",
       "font-size": MAP.font, fill: "#333" }, line)));
   const groups = boxes.map((b, k) => {
     const [, name] = STAGES[k];
@@ -215,11 +228,11 @@ function diagram(onPick, lessons) {
       fill: main ? "#d6ecf8" : "#f6f6f6", stroke: main ? "#0072B2" : "#777", "stroke-width": main ? 2.5 : 1.5 }));
     const lines = name.split("|");
     lines.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
-      y: b.y + (lines.length > 1 ? 21 : 28) + 17 * i, "text-anchor": "middle",
+      y: b.y + (lines.length > 1 ? 23 : 30) + MAP.nameLine * i, "text-anchor": "middle",
       "font-size": MAP.name, "font-weight": "bold" }, line)));
     const taught = lessons[b.key];
     taught.forEach((line, i) => g.append(svg("text", { x: b.x + b.w / 2,
-      y: b.y + b.h - 7 - MAP.lessons * (taught.length - 1 - i), "text-anchor": "middle",
+      y: b.y + b.h - 9 - MAP.lessons * (taught.length - 1 - i), "text-anchor": "middle",
       "font-size": MAP.font, fill: "#444" }, line)));
     g.addEventListener("click", (e) => onPick(b.key, e));
     onKeys(g, (e) => {
@@ -231,10 +244,8 @@ function diagram(onPick, lessons) {
     root.append(g);
     return g;
   });
-  ["The logical order of OpenGL and Direct3D; in each box, the",
-    "lessons that teach the stage. Click a stage for the tour",
-    "triangle there."].forEach((line, i) => root.append(
-    svg("text", { x: 2, y: 16 + MAP.line * i, "font-size": MAP.font, fill: "#333" }, line)));
+  CAPTION.forEach((line, i) => root.append(
+    svg("text", { x: 2, y: 17 + MAP.line * i, "font-size": MAP.font, fill: "#333" }, line)));
   return { root, groups };
 }
 

@@ -1,13 +1,16 @@
 // Predictions answered by acting on a figure, and revealed by the figure itself.
 //
-// Three kinds share this module (data.kind):
+// Four kinds share this module (data.kind):
 // - "pixels": click (or drag across) the cells you expect (pixels lit, tiles rejected: data.cell,
 //   data.picked); Check draws the true cells
 //   over yours: right ones ticked, missed ones outlined, extra ones crossed;
 // - "point": drag the marker to where you expect the point; Check draws the true point, the
 //   gap and whether it is within the tolerance;
 // - "order": put the items in order (drag a chip, or focus it and use the arrow keys), or
-//   say that no order works; Check marks each place and shows the right order.
+//   say that no order works; Check marks each place and shows the right order;
+// - "choice": pick one option (a multiple choice, no figure needed); Check is enabled at the
+//   pick, with no round trip to a kernel that may be busy (review r98, 07: an ipywidgets
+//   Predict's Check waited over a second), and marks the right option and a wrong pick.
 // Check stays disabled until an answer is given. The picture behind is the kernel's
 // (matplotlib, drawn once); the verdicts are teachraster.widgets.predict_figure's, and the
 // tests compare the two (node).
@@ -54,6 +57,13 @@ export function readoutText(label, x, digits) {
 // answer"); other markers stay where they are dropped.
 export function snapDragged(p, readout, digits) {
   return readout && digits === 0 ? [Math.round(p[0]), p[1]] : p;
+}
+
+// a choice's verdict: PredictChoice.verdict is "Right." or "Not quite." and then `text`
+// (the tests compare the two)
+export function choiceVerdict(answer, given) {
+  return { correct: given === answer,
+    text: `You predicted <b>${escapeHtml(given)}</b>; the answer is <b>${escapeHtml(answer)}</b>.` };
 }
 
 export function orderVerdict(answer, given) {
@@ -125,6 +135,12 @@ const PRED_CSS = `
 .tr-chip:focus { outline: 3px solid #E69F00; }
 .tr-chip.right { border-color: #009E73; background: #e3f5ee; }
 .tr-chip.wrong { border-color: #D55E00; background: #fbe9e0; }
+.tr-choices { display: flex; flex-wrap: wrap; gap: 6px; margin: 4px 0 6px; }
+.tr-choices button { font-size: 15px; padding: 4px 12px; }
+.tr-predict .tr-choices button.right, .tr-predict .tr-choices button.wrong { opacity: 1;
+  color: #111; outline-offset: 1px; }
+.tr-predict .tr-choices button.right { outline: 3px solid #009E73; background: #e3f5ee; }
+.tr-predict .tr-choices button.wrong { outline: 3px solid #D55E00; background: #fbe9e0; }
 `;
 
 function verdictHtml(right, text) {
@@ -138,7 +154,8 @@ function mount(el, data, host) {
   const root = frame(el, "", "");
   root.classList.add("tr-predict");
   root.append(element("div", { class: "tr-predict-q", html: `<b>Predict first.</b> ${data.question}` }));
-  const kinds = { pixels: mountPixels, point: mountPoint, order: mountOrder };
+  const kinds = { pixels: mountPixels, point: mountPoint, order: mountOrder,
+    choice: mountChoice };
   const view = kinds[data.kind](root, data, host);
   // the held answer cells (q.hold()) show once the notebook holds the class the kernel names
   // in the state when revealed: also a page reloaded on the same kernel (review r95, 09)
@@ -549,6 +566,49 @@ function mountOrder(root, data, host) {
       state = { ...state, ...s };
       if (state.given) order = [...state.given];
       if (impossible) impossible.checked = state.given === null && state.acted;
+      if (state.revealed) reveal(false);
+      render_();
+    },
+  };
+}
+
+function mountChoice(root, data, host) {
+  let state = { given: null, revealed: false, ...host.state() };
+  if (data.png) pictureBox(root, data);
+  const picks = choiceButtons(data.choices.map((c) => [c, c]), state.given, (value) => {
+    if (state.revealed) return;
+    state.given = value;
+    render_(); // Check enabled at once: the page judges, the kernel hears of it after
+    host.setState({ given: value });
+  });
+  const row = element("div", { class: "tr-choices", role: "group",
+    "aria-label": "the answers: pick one" }, picks.buttons);
+  root.append(row);
+  const { check, show } = checkRow(root, data, () => reveal(true));
+  function render_() {
+    picks.set(state.given);
+    picks.buttons.forEach((b, k) => {
+      const c = data.choices[k];
+      b.disabled = state.revealed;
+      b.classList.toggle("right", state.revealed && c === data.answer);
+      b.classList.toggle("wrong", state.revealed && c === state.given && c !== data.answer);
+    });
+    check.disabled = checkDisabled(state.revealed, state.given !== null);
+  }
+  function reveal(byClick) {
+    if (state.given === null) return;
+    if (byClick && state.revealed) return; // checked once: the first answer is kept
+    state.revealed = true;
+    const v = choiceVerdict(data.answer, state.given);
+    show(v.correct, v.text);
+    render_();
+    if (byClick) host.setState({ revealed: true, given: state.given });
+  }
+  render_();
+  if (state.revealed) reveal(false);
+  return {
+    setState(s) {
+      state = { ...state, ...s };
       if (state.revealed) reveal(false);
       render_();
     },
