@@ -1557,6 +1557,7 @@ def test_the_pair_view_puts_the_tables_under_the_picture():
     narrow column: with pairs they come right after the picture, the history chart after them
     (without pairs, picture and chart side by side as before)."""
     from teachraster.widgets import FrameInspector
+    from teachraster.widgets.common import SLIDER_COLUMN_WIDTH
 
     w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
     try:
@@ -1576,7 +1577,8 @@ def test_the_pair_view_puts_the_tables_under_the_picture():
         holding = [next(i for i, c in enumerate(parts) if c is x or x in getattr(c, "children", ()))
                    for x in (w.frame_widget, w.table, w.hist_display.widget)]  # fmt: skip
         assert holding[0] < holding[1] < holding[2] and holding[1] == holding[0] + 1, holding
-        assert w.row.layout.width == w.col.layout.width == "100%"
+        # as wide as the column less ipywidgets' margins (r103 10-D: "100%" overflowed by 4 px)
+        assert w.row.layout.width == w.col.layout.width == SLIDER_COLUMN_WIDTH
     finally:
         w.close()
 

@@ -32,6 +32,20 @@ CELLS = [
     "player = LinePlayer((0.5, 0.5), (12.5, 5.5), 14, 7, rule='bresenham', step=2)\nplayer",
 ]
 
+#: The boxes from a slider up to its output that scroll sideways or hold more than their
+#: width, and the slider itself where it reaches past its output's right edge
+OVERFLOW = """(slider) => {
+  const out = slider.closest('.jp-OutputArea-output');
+  const found = [];
+  for (let e = slider.parentElement; e && e !== out.parentElement; e = e.parentElement)
+    if (e.scrollLeft !== 0 || e.scrollWidth > e.clientWidth)
+      found.push(`${e.className.slice(0, 50)}: scrolled ${e.scrollLeft}, ${e.scrollWidth} px `
+                 + `in ${e.clientWidth}`);
+  const past = slider.getBoundingClientRect().right - out.getBoundingClientRect().right;
+  if (past > 0.5) found.push(`slider ${past} px past the output`);
+  return found;
+}"""
+
 
 def _end_then_home(tab, slider, top: int) -> tuple[str, str]:
     """The readout of the noUiSlider ``slider`` after End, then after Home, once its handle
@@ -74,6 +88,19 @@ def test_end_reaches_the_new_last_value_after_the_range_changes(lab, page):  # n
     page.keyboard.press("End")
     page.wait_for_timeout(500)
     assert _kernel(page, "ex.block.value") == 388  # the kernel has it too
+    # review r103 10-D: a number typed into the readout takes the walk there, and the explorer
+    # stays put. The slider, 100 % wide plus ipywidgets' 2-px margins, overflowed its box by
+    # 4 px, and the box scrolled to the readout being typed in, cutting the explorer's left
+    # edge ("lock sizes", "evel 1")
+    assert block.evaluate(OVERFLOW) == []  # as shown
+    block.locator(".widget-readout").first.click()
+    page.keyboard.press("Control+A")
+    page.keyboard.type("200")
+    assert block.evaluate(OVERFLOW) == []  # while typing
+    page.keyboard.press("Enter")
+    page.wait_for_timeout(500)
+    assert _kernel(page, "ex.block.value") == 200
+    assert block.evaluate(OVERFLOW) == []
     # the level slider, the package's own (a range input: its keys read the max it has now)
     # keeps its place: 0..1 became 0..2 in place, and End reaches 2
     level = page.locator(".tr-live-slider input[type=range]").first

@@ -1648,12 +1648,16 @@ def test_05a_summary_and_stepper_text_hold_the_answers():
         assert nb["cells"][k]["metadata"]["jupyter"]["source_hidden"]
 
 
-@pytest.mark.parametrize("name", ["00_tour", "04_perspective_correct_interpolation"])
+@pytest.mark.parametrize(
+    "name", ["00_tour", "04_perspective_correct_interpolation", "10_tiles_and_hierarchical_z"]
+)
 def test_no_review_ids_in_the_code_a_lecturer_shows(name):
     """Review r91 00-A/04-G: the authors' review log ("review r45 00-7") read as noise on a
-    projector; git history keeps it. 04's long figure cells are hidden, as 00's are."""
+    projector; git history keeps it. 04's long figure cells are hidden, as 00's are. Review
+    r103: lesson 10's cells too ("review r82 10-D", "# r90 10-2:")."""
     for source in _cells(name, "code"):
-        assert not re.search(r"\breview r\d|\(r\d\d\b", source), source[:80]
+        found = re.search(r"\breview r\d|\(r\d\d\b|#\s*r\d\d\b|\br\d\d\d? \d\d?-", source)
+        assert not found, source[:80]
     if name.startswith("04"):
         nb = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())
         for cell in nb["cells"]:

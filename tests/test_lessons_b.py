@@ -1782,6 +1782,58 @@ def test_10_numbers_the_text_relies_on():
     assert bins.empty[0] + bins.full[0] + bins.partial[0] == int(tiles_of_box.sum())
 
 
+def test_10_q_hiz_every_tile_is_clear_cut():
+    """Review r103 10-A: q_hiz counted tile (row 1, col 5) as rejected while the near triangle's
+    edge visibly cut its corner (it missed a pixel centre by 0.09 px; four more tiles were
+    within 0.7 px). Each tile's margin, the signed distance (px, + inside) from its worst pixel
+    centre to the triangle's edges, is now at least 2 px either way: a covered tile has every
+    centre 2 px inside, any other a centre 2 px outside. A tile's corner lies within 0.71 px
+    of its corner centre and the edge line is 0.5 px wide at the widget's scale (about 6.5
+    screen px a pixel), so the line stays 1 px clear of a covered tile and cuts 1 px into any
+    other: the picture decides every tile. The answer is the covered tiles."""
+    ns = lesson("10_tiles_and_hierarchical_z")
+    xy = np.asarray(ns.near_xy, float)
+    u, v = np.meshgrid(np.arange(ns.hw) + 0.5, np.arange(ns.hh) + 0.5)
+    area = (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (
+        xy[2, 0] - xy[0, 0]
+    )
+    inside = np.full(u.shape, np.inf)
+    for a, b in zip(xy, np.roll(xy, -1, axis=0)):
+        dist = ((b[0] - a[0]) * (v - a[1]) - (b[1] - a[1]) * (u - a[0])) / np.hypot(*(b - a))
+        inside = np.minimum(inside, np.sign(area) * dist)
+    t = ns.hiz_q.tile
+    margin = inside.reshape(ns.hh // t, t, ns.hw // t, t).min(axis=(1, 3))
+    assert np.abs(margin).min() >= 2.0, np.round(margin, 2)
+    assert np.array_equal(ns.rejected_tiles, margin > 0)
+    # the question keeps its trap: tiles the triangle covers only in part, which reject nothing
+    partial = (margin < 0) & (inside.reshape(margin.shape[0], t, margin.shape[1], t) > 0).any(
+        axis=(1, 3)
+    )
+    assert partial.sum() >= 10 and 10 < ns.rejected_tiles.sum() < ns.rejected_tiles.size
+
+
+def test_10_llvmpipe_128_against_our_64_on_one_convention():
+    """Review r103 (lesson 10, cell 16): "128 pixels against the 63 printed above" set a bound
+    reached (63: differences up to 63 px fit int32) beside one not (llvmpipe's 128 is 2**15 of
+    its 256 units). Both limits are 2**15 units, printed: 64 px at our 512 units a pixel, 128
+    at llvmpipe's 256 (``MAX_FIXED_LENGTH32 = 1 << ((32/2 - 1) - FIXED_ORDER)``, lp_rast.h);
+    the text says why int32 stops at 63 and that llvmpipe's test is ``<=``."""
+    import json
+
+    from teachraster.core import fixed_point
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    assert ns.mesa_px == 128 == 2**15 // 256 and 2**15 // 512 == 64
+    assert fixed_point.max_extent(8, 32) == 63 == 2**15 // 512 - 1
+    assert fixed_point.bit_budget(63, 8, 32).fits and not fixed_point.bit_budget(64, 8, 32).fits
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    md = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "against the 63 printed above" not in md
+    assert "128 against our 64 (printed above)" in md and "hence the 63 px printed for int32" in md
+    assert "the same $2^{15}$ units" in md and "is `<=`" in md
+
+
 @pytest.mark.notebook
 def test_10_prints_counts_with_thousands_separators():
     # issue 31: "524288 units" (BitBudget.lines) and "1184 of 1492" beside "65,536" elsewhere;
@@ -1863,7 +1915,7 @@ def test_10_r36_items():
     ns = lesson("10_tiles_and_hierarchical_z")
     assert (ns.false_in | ns.false_out).sum() == ns.narrow.wrong.sum()
     assert ns.false_in.any() and ns.false_out.any()  # both colours drawn
-    assert ns.same_tiles and ns.rejected_tiles.sum() == (ns.tile_far < 0.7).sum() == 21
+    assert ns.same_tiles and ns.rejected_tiles.sum() == (ns.tile_far < 0.7).sum() == 16
     # review r82 10-B: the answer's tile map numbers tiles at their centres, as q_hiz's grid
     # does, so "tile column 3" is the same cell in both
     code = (ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text()

@@ -95,6 +95,12 @@ def labelled(text: str, control) -> widgets.HBox:
 #: Narrowest a picture of a row of pictures gets before it wraps under its neighbour (CSS px).
 READABLE_PX = 300
 
+#: The width of a slider as wide as its column. ipywidgets puts a margin
+#: (``--jp-widgets-margin``, 2 px) on each side of a widget, so ``width="100%"`` made a slider
+#: 4 px wider than its box: the box scrolled sideways, cutting the widget's left edge, as soon
+#: as a value was typed into the readout (the TileExplorer's block slider; review r103 10-D).
+SLIDER_COLUMN_WIDTH = "calc(100% - 2 * var(--jp-widgets-margin, 2px))"
+
 
 def control_row(children, **layout) -> widgets.HBox:
     """A row of controls that wraps whole controls onto the next line when the column is too

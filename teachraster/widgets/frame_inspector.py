@@ -27,6 +27,7 @@ from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
 from ..plotting.frame_debug import fit_title, plot_triangle_edges
 from .common import (
+    SLIDER_COLUMN_WIDTH,
     Holdable,
     Shown,
     close_tree,
@@ -353,10 +354,10 @@ class FrameInspector(Holdable):
         # 64 values (review r62, lesson 11 #4)
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
                                      max=height - 1, description="row",
-                                     layout=widgets.Layout(width="100%"))  # fmt: skip
+                                     layout=widgets.Layout(width=SLIDER_COLUMN_WIDTH))  # fmt: skip
         self.col = widgets.IntSlider(value=width // 2 if col is None else col, min=0,
                                      max=width - 1, description="col",
-                                     layout=widgets.Layout(width="100%"))  # fmt: skip
+                                     layout=widgets.Layout(width=SLIDER_COLUMN_WIDTH))  # fmt: skip
         if self.pairs and row is None and col is None:  # open where the pair differs
             pair = self.frames[self.pairs[scene]] if scene in self.pairs else None
             if pair is not None:

@@ -11,6 +11,7 @@ from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.tiles import CURRENT_BLOCK, UNCLASSIFIED, block_mask, pending_children
 from .common import (
+    SLIDER_COLUMN_WIDTH,
     Holdable,
     Shown,
     control_row,
@@ -107,7 +108,7 @@ class TileExplorer(Holdable):
         # and the column, not ipywidgets' ~120 px (review r26, lesson 10 c23); arrow keys step
         # one block
         self.block = widgets.IntSlider(value=0, min=0, max=0, description="block",
-                                       layout=widgets.Layout(width="100%"))  # fmt: skip
+                                       layout=widgets.Layout(width=SLIDER_COLUMN_WIDTH))  # fmt: skip
         self.counters = widgets.HTML()
         self._fill()
         with style_context(style):
