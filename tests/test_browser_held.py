@@ -183,3 +183,51 @@ def test_a_figure_prediction_releases_its_held_cell_in_a_reloaded_page(lab, page
     page.keyboard.press("Shift+Enter")
     answer.wait_for(state="visible", timeout=60_000)
     _line(page).wait_for(state="hidden", timeout=15_000)
+
+
+AGAIN_NAME = "held_again.ipynb"
+AGAIN_CELLS = [
+    CELLS[0].replace("Which way does it wind?", "Which way does it wind, again?"),
+    "q.hold()\nprint('THE ANSWER ASKED AGAIN: clockwise')",
+]
+
+
+def test_a_question_run_again_and_checked_shows_the_cell_held_for_its_first_run(lab, page):  # noqa: F811
+    """r104 09-8: in a page reloaded on its kernel (so that only the released class shows a
+    held cell, see the test above), a student checks a prediction, runs its question cell
+    again (a new prediction, a new widget in the page) and checks again. The answer cell held
+    under the first run stayed hidden until it was run again too: its style waited for a class
+    only the first widget took, and the new widget replaced it. The class is the question's
+    now, and the new widget takes it on Check. (Without the reload the first Check empties the
+    held line and its style, and the answer cell shows from then on.)"""
+    from playwright.sync_api import expect
+
+    _run_all(lab, page, AGAIN_CELLS, AGAIN_NAME)
+    answer = page.locator(".jp-OutputArea-output", has_text="THE ANSWER ASKED AGAIN").first
+    answer.wait_for(state="attached", timeout=60_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")  # saved, as JupyterLab's autosave does
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
+    )
+    page.reload()  # the same kernel: its widgets come back, the display ids do not
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    question = page.locator(".jupyter-widgets", has_text="Which way does it wind, again?").first
+    question.locator("button", has_text="counter-clockwise").wait_for(timeout=90_000)
+    answer.wait_for(state="attached", timeout=60_000)
+    assert not answer.is_visible()
+    question.locator("button", has_text="counter-clockwise").click()
+    question.locator("button", has_text="Check").click()
+    answer.wait_for(state="visible", timeout=15_000)
+    expect(question.locator("button", has_text="Check")).to_be_disabled(timeout=15_000)
+
+    page.locator(".jp-Notebook .jp-Cell").nth(0).locator(".jp-InputArea-editor").click()
+    page.keyboard.press("Shift+Enter")  # the question cell alone, run again
+    question = page.locator(".jupyter-widgets", has_text="Which way does it wind, again?").first
+    expect(question.locator("button", has_text="counter-clockwise")).to_be_enabled(timeout=60_000)
+    answer.wait_for(state="hidden", timeout=15_000)  # a new question: predict first, again
+    question.locator("button:text-is('clockwise')").click()
+    question.locator("button", has_text="Check").click()
+    answer.wait_for(state="visible", timeout=15_000)
+    _line(page).wait_for(state="hidden", timeout=15_000)

@@ -260,6 +260,41 @@ def test_hold_is_released_by_the_prediction_widget_a_reloaded_page_still_has(pub
         q.close()
 
 
+def test_a_question_run_again_releases_the_cells_held_for_its_first_run(published):
+    """r104 09-8: a question cell run again makes a new prediction; its page view replaces the
+    old one, and with it the released class the held cells' style waited for, so they stayed
+    hidden after the new one was checked. The class is the question's: the new prediction,
+    which held nothing itself, takes the same class on Check; another question does not."""
+    from teachraster.widgets import PredictOrder
+
+    def ask():
+        return (Predict("Which row?", ["row 2", "row 3"], answer="row 3", headless=False),
+                PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"]))  # fmt: skip
+
+    first = ask()
+    for q in first:
+        q._holds = lambda: True  # a student's kernel
+        q.hold()
+    styles = [data["text/html"] for data, _ in published]
+    again = ask()  # the question cells run again: nothing held through these
+    other = Predict("Which column?", ["column 2", "column 3"], answer="column 2", headless=False)
+    assert other._released_class() not in {q._released_class() for q in first}
+    for old, new, style in zip(first, again, styles):
+        released = new._released_class()
+        assert released == old._released_class() and f":has(.{released}))" in style
+        page_widget = new.widget if isinstance(new, Predict) else new
+        assert released not in page_widget._dom_classes
+        if isinstance(new, Predict):
+            new.control.value = "row 2"
+            new.check.click()
+        else:
+            new.state = {**new.state, "given": ["a", "b"], "acted": True, "revealed": True}
+            assert new.state["released"] == released
+        assert released in page_widget._dom_classes
+    for q in (*first, *again, other):
+        q.close()
+
+
 def test_hold_waits_for_each_prediction_and_each_held_cell(published):
     q = Predict("How many?", answer=3, headless=False)
     q.hold()
