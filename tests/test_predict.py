@@ -227,6 +227,16 @@ def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(publis
     q.close()
 
 
+def _answer_and_check(q) -> None:
+    """Answer the question "Which row?" (a Predict) or "Nearest first?" (a PredictOrder)
+    wrong and check it, as a student in the page does."""
+    if isinstance(q, Predict):
+        q.control.value = "row 2"
+        q.check.click()
+    else:
+        q.state = {**q.state, "given": ["a", "b"], "acted": True, "revealed": True}
+
+
 def test_hold_is_released_by_the_prediction_widget_a_reloaded_page_still_has(published):
     """r95 (lesson 09): a page reloaded on the same kernel (or a notebook reopened while its
     kernel runs) no longer maps the held line's display id to its output, so emptying it
@@ -249,11 +259,7 @@ def test_hold_is_released_by_the_prediction_widget_a_reloaded_page_still_has(pub
         assert f".jp-Notebook:not(:has(.{released})) .jp-OutputArea-child:has(.{held}) ~" in html
         assert f"class='teachraster-held {held}'" in html
         assert released not in page_widget._dom_classes
-        if isinstance(q, Predict):
-            q.control.value = "row 2"
-            q.check.click()
-        else:
-            q.state = {**q.state, "given": ["a", "b"], "acted": True, "revealed": True}
+        _answer_and_check(q)
         assert released in page_widget._dom_classes  # synced, and kept for a reloaded page
         if not isinstance(q, Predict):  # an anywidget's page adds it from the state
             assert q.state["released"] == released and q.state["revealed"]
@@ -284,13 +290,9 @@ def test_a_question_run_again_releases_the_cells_held_for_its_first_run(publishe
         assert released == old._released_class() and f":has(.{released}))" in style
         page_widget = new.widget if isinstance(new, Predict) else new
         assert released not in page_widget._dom_classes
-        if isinstance(new, Predict):
-            new.control.value = "row 2"
-            new.check.click()
-        else:
-            new.state = {**new.state, "given": ["a", "b"], "acted": True, "revealed": True}
-            assert new.state["released"] == released
+        _answer_and_check(new)
         assert released in page_widget._dom_classes
+        assert isinstance(new, Predict) or new.state["released"] == released
     for q in (*first, *again, other):
         q.close()
 
