@@ -237,6 +237,14 @@ def test_footprint_both_ways(lesson):
     readout.get_by_text("Pixel (row ").wait_for(timeout=5_000)
     pixel = _kernel(lesson, "footprint.state['pixel']")
     assert pixel[0] >= 24  # the lower part of the 48 x 36 image: near the camera
+    # r104 09-7: the bottom row, where lesson 09 says to start ("the bottom row (the
+    # nearest)"), is floor: it answered "not on the floor"
+    screen.scroll_into_view_if_needed()
+    box = screen.bounding_box()  # the readout above may have moved it
+    lesson.mouse.click(box["x"] + box["width"] * 0.5, box["y"] + box["height"] * 35.5 / 36)
+    readout.get_by_text("Pixel (row 35, col ").wait_for(timeout=5_000)
+    assert "not on the floor" not in readout.inner_text()
+    assert "footprint's axes are" in readout.inner_text()
     texture.scroll_into_view_if_needed()
     box = texture.bounding_box()
     lesson.mouse.click(box["x"] + box["width"] * 0.5, box["y"] + box["height"] * 0.5)

@@ -636,6 +636,23 @@ def test_footprint_level_and_probes_as_the_engine():
     assert len(levels) >= 3  # near and far pixels read different levels
 
 
+def test_footprint_readout_gives_every_number_to_two_decimals():
+    """r104 09-7: the readout mixed significant digits ("axes 0.976 and 1.44", "λ = 0.526"
+    beside "λ = 1.7"); it gives two decimals throughout, as cells 25 and 28 print them."""
+    import re
+
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    data = floor_scene(32, 24, 80.0, 1)
+    i = 23 * 32 + 16  # the bottom row, the middle column: a near pixel of the floor
+    (fp,) = call_js(FOOTPRINT, [("footprintOf", [data["uv"][i], data["ddx"][i], data["ddy"][i],
+                                                 64, 64, data["q"]])])  # fmt: skip
+    (text,) = call_js(FOOTPRINT, [("footprintText", [{"pixel": [23, 16]}, fp, []])])
+    numbers = re.findall(r"(?<![\w.])-?\d+\.\d+", text)
+    assert len(numbers) >= 5 and all(len(n.split(".")[1]) == 2 for n in numbers), numbers
+    assert f"ρ = {fp['rho']:.2f}" in text and f"λ = log₂ ρ = {fp['lam']:.2f}" in text
+
+
 def test_pixels_reading_a_texel_point_as_footprint_contains():
     from teachraster.plotting.footprint import footprint_contains, trilinear_reads
     from teachraster.widgets.footprint_explorer import floor_scene

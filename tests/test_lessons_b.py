@@ -1699,6 +1699,25 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     # "anisotropic keeps a little more of the far checks ... the two stay close here"
     rms = ns.far_rms
     assert rms["anisotropic"] < rms["trilinear"] < 1.25 * rms["anisotropic"]
+    # r104 09-6: at 89° λ reached only 4.4 under a header promising "detail kept by
+    # anisotropic". The text says why: the view, not the cap on the probes nor the last level
+    # ("about two and a half times as long as wide", "below 4.5"); the header says how much
+    assert 4 < ns.far_lod[89] < 4.5 < explorer.n_levels - 1 == 6
+    assert 2.25 < ns.stretch_89 < 2.75 and np.ceil(ns.stretch_89) < ns.default_cap
+    see = " ".join(see.split())
+    assert "about two and a half times as long as wide" in see and "below 4.5" in see
+    import teachraster as tr
+    from teachraster.widgets.textured import CORNER_UV, TRIANGLES, plane_clip
+
+    longest = 0.0  # "no footprint more than three times as long as wide", at any tilt
+    for tilt in range(90):
+        f = tr.render(plane_clip(tilt, explorer.camera, 160 / 120), 160, 120,
+                      attrs=np.broadcast_to(CORNER_UV[TRIANGLES] * 6, (2, 3, 2)),
+                      derivatives=True)  # fmt: skip
+        ax = [np.hypot(*np.moveaxis(d[f.coverage][:, :2], -1, 0)) for d in (f.ddx, f.ddy)]
+        longest = max(longest, float((np.maximum(*ax) / np.minimum(*ax)).max()))
+    assert 2.5 < longest < 3
+    assert "no footprint more than three times as long as wide" in explorer.widget.children[0].value
 
 
 def test_09_filter_explorer_driven_by_the_test():
@@ -2145,8 +2164,8 @@ def test_10_r82_figures_and_words():
 def _floor_uv_exact(tilt, width, height, repeats, distance, below):
     """uv at a window point (x right, y down, pixels) of FootprintExplorer's floor, in float64
     from first principles: the ray through the point meets the tilted square's plane (a
-    pinhole of fov 60° looking down -z; the zoom fits the square's height to 0.92 of the
-    frame)."""
+    pinhole of fov 60° looking down -z; the zoom puts the square's far edge 0.92 of the way
+    up from the frame's middle and its near edge on the frame's bottom edge)."""
     import math
 
     t, f, aspect = math.radians(tilt), 1 / math.tan(math.radians(30.0)), width / height
@@ -2155,7 +2174,8 @@ def _floor_uv_exact(tilt, width, height, repeats, distance, below):
     corners = [p0 + x * ex + s * es for x in (-1, 1) for s in (0, 2)]
     ndc = np.array([[f / aspect * p[0] / -p[2], f * p[1] / -p[2]] for p in corners])
     lo, hi = ndc.min(axis=0), ndc.max(axis=0)
-    scale, centre = 2 * 0.92 / (hi - lo)[1], (lo + hi) / 2
+    scale, centre = (0.92 + 1) / (hi - lo)[1], (lo + hi) / 2
+    centre[1] = hi[1] - 0.92 / scale
     normal = np.cross(ex, es)
 
     def uv(x, y):
@@ -2185,6 +2205,10 @@ def test_09_footprint_explorer_floor_is_long_in_depth_as_an_exact_jacobian():
     exact = _floor_uv_exact(80, w, h, d["repeats"], FLOOR_DISTANCE, FLOOR_BELOW)
     rows = [r for r in range(h - 1, -1, -1) if d["uv"][r * w + col] is not None]  # near first
     assert len(rows) > 0.8 * h  # the floor fills the frame's rows
+    # r104 09-7: "click a pixel in the floor's nearest row": it is the screen's bottom row, on
+    # the floor across the whole width, and the row cell 28 prints as the nearest
+    assert rows[0] == h - 1 and all(d["uv"][(h - 1) * w + c] is not None for c in range(w))
+    assert rows == list(range(h - 1, h - 1 - len(rows), -1))  # no gap up to the far edge
     probes = []
     for r in rows:
         i = r * w + col
@@ -2204,6 +2228,74 @@ def test_09_footprint_explorer_floor_is_long_in_depth_as_an_exact_jacobian():
     caption = " ".join(text[live].split())
     assert "longer in depth" in caption and "rises" in caption
     assert "footprint(" in text[live + 2]  # the cell that prints the walk
+
+
+def test_09_r104_labels_clear_of_the_key_and_of_the_answer():
+    """r104 09-4: cell 25's shared key (below the three footprint panels) covered their x tick
+    labels; 09-5: q_level's "the answer", written above the answer's dot on Check, covered
+    the level labels ("level 1 / 2 wide") of the figure's upper half."""
+    import json
+
+    import matplotlib.pyplot as plt
+    from explorables_node import call_js
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from teachraster.plotting import use_style
+    from teachraster.plotting.footprint import footprint, plot_footprint
+    from teachraster.widgets.common import style_context
+
+    ns = lesson("09_texture_filtering")
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    source = next(t for t in text if t.startswith('picked = {"near"'))
+    shown = []
+    show, plt.show = plt.show, lambda *a, **k: shown.append(plt.gcf())
+    try:  # the cell again, on the lesson's own frame (its imports are not among the globals)
+        with use_style("classroom"):
+            exec(source, {**vars(ns), "np": np, "plt": plt, "footprint": footprint,
+                          "plot_footprint": plot_footprint})  # fmt: skip
+    finally:
+        plt.show = show
+    (fig,) = shown
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    key_top = fig.legends[0].get_window_extent(renderer).y1
+    lowest = min(ax.get_tightbbox(renderer).y0 for ax in fig.axes)
+    assert lowest - key_top >= 0.08 * fig.dpi, (lowest, key_top)  # was 0.037 in: touching
+    plt.close(fig)
+
+    import teachraster as tr
+    from teachraster.widgets import PredictPoint
+
+    scope = {"np": np, "tr": tr, "PredictPoint": PredictPoint}  # the question cell's imports
+    exec(next(t for t in text if "q_level = PredictPoint(" in t), scope)  # not picklable
+    q = scope["q_level"]
+    with style_context("classroom"):  # the question's picture, as PredictPoint draws it
+        fig = Figure(figsize=(9, 2.6), dpi=96)
+        FigureCanvasAgg(fig)
+        ax = fig.add_subplot()
+        fig.set_layout_engine("constrained")
+        scope["draw_footprints"](ax)
+        ax.set(xlim=(0.5, 8.8), ylim=(0, 1))
+        fig.canvas.draw()
+    w, h = fig.canvas.get_width_height()
+    assert [w, h] == q.data["size"]
+    texts = [t.get_window_extent() for t in ax.texts]  # y up from the bottom
+    assert len(texts) == 4
+    x0, y0, sx, sy = q.data["transform"]
+    px = lambda p: [x0 + sx * p[0], y0 + sy * p[1]]  # noqa: E731 (the page's toPx)
+    truth, line = px(q.answer), [px(p) for p in q.data["along"]]
+    mines = [px((x, 0.5)) for x in np.linspace(0.5, 8.8, 84)]  # the marker moves on the line
+    places = call_js(("predict_figure",), [("answerLabel", [m, truth, None, h, [line]])
+                                           for m in mines])  # fmt: skip
+    boxes = call_js(("predict_figure",), [("labelBox", [p]) for p in places])
+    for box in boxes:
+        for t in texts:
+            apart = (box["x1"] <= t.x0 or t.x1 <= box["x0"]
+                     or box["y1"] <= h - t.y1 or h - t.y0 <= box["y0"])  # fmt: skip
+            assert apart, (box, t)
+    q.close()
 
 
 def test_09_footprint_explorer_follows_the_static_footprints():

@@ -232,6 +232,16 @@ def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(publis
     q.close()
 
 
+def _answer_and_check(q) -> None:
+    """Answer the question "Which row?" (a Predict) or "Nearest first?" (a PredictOrder)
+    wrong and check it, as a student in the page does."""
+    if isinstance(q, Predict):
+        q.control.value = "row 2"
+        q.check.click()
+    else:
+        q.state = {**q.state, "given": ["a", "b"], "acted": True, "revealed": True}
+
+
 def test_hold_is_released_by_the_prediction_widget_a_reloaded_page_still_has(published):
     """r95 (lesson 09): a page reloaded on the same kernel (or a notebook reopened while its
     kernel runs) no longer maps the held line's display id to its output, so emptying it
@@ -254,14 +264,41 @@ def test_hold_is_released_by_the_prediction_widget_a_reloaded_page_still_has(pub
         assert f".jp-Notebook:not(:has(.{released})) .jp-OutputArea-child:has(.{held}) ~" in html
         assert f"class='teachraster-held {held}'" in html
         assert released not in page_widget._dom_classes
-        if isinstance(q, Predict):
-            q.control.value = "row 2"
-            q.check.click()
-        else:
-            q.state = {**q.state, "given": ["a", "b"], "acted": True, "revealed": True}
+        _answer_and_check(q)
         assert released in page_widget._dom_classes  # synced, and kept for a reloaded page
         if not isinstance(q, Predict):  # an anywidget's page adds it from the state
             assert q.state["released"] == released and q.state["revealed"]
+        q.close()
+
+
+def test_a_question_run_again_releases_the_cells_held_for_its_first_run(published):
+    """r104 09-8: a question cell run again makes a new prediction; its page view replaces the
+    old one, and with it the released class the held cells' style waited for, so they stayed
+    hidden after the new one was checked. The class is the question's: the new prediction,
+    which held nothing itself, takes the same class on Check; another question does not."""
+    from teachraster.widgets import PredictOrder
+
+    def ask():
+        return (Predict("Which row?", ["row 2", "row 3"], answer="row 3", headless=False),
+                PredictOrder("Nearest first?", ["a", "b"], answer=["b", "a"]))  # fmt: skip
+
+    first = ask()
+    for q in first:
+        q._holds = lambda: True  # a student's kernel
+        q.hold()
+    styles = [data["text/html"] for data, _ in published]
+    again = ask()  # the question cells run again: nothing held through these
+    other = Predict("Which column?", ["column 2", "column 3"], answer="column 2", headless=False)
+    assert other._released_class() not in {q._released_class() for q in first}
+    for old, new, style in zip(first, again, styles):
+        released = new._released_class()
+        assert released == old._released_class() and f":has(.{released}))" in style
+        page_widget = new.widget if isinstance(new, Predict) else new
+        assert released not in page_widget._dom_classes
+        _answer_and_check(new)
+        assert released in page_widget._dom_classes
+        assert isinstance(new, Predict) or new.state["released"] == released
+    for q in (*first, *again, other):
         q.close()
 
 

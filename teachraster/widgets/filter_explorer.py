@@ -228,7 +228,9 @@ class FilterExplorer:
         title = title_html(
             "Texture filtering: a floor tilting to the horizon",
             "Tilt the square until its checks are smaller than a pixel, then compare filters: "
-            "moiré without mipmaps, blur with trilinear, detail kept by anisotropic filtering. "
+            "moiré without mipmaps, blur with trilinear, and how much more anisotropic filtering "
+            "keeps (here a little: even at 89° the camera, above the square's near edge, sees "
+            "no footprint more than three times as long as wide). "
             'The ring in the error panel marks the worst pixel; its error is the "max" '
             "under the colour bar.",
         )

@@ -29,6 +29,7 @@ The cell that gives the answer away
 from __future__ import annotations
 
 import base64
+import hashlib
 import html
 import io
 import itertools
@@ -80,8 +81,9 @@ def is_headless() -> bool:
 #: (the prediction's own widget takes that class when it is revealed, and keeps it in the
 #: kernel: a page reloaded on the same kernel shows the answer cell's output, although the
 #: reloaded page no longer knows the display id through which the live release empties the
-#: held line). A front end without ``:has`` (or one that strips styles) shows everything at
-#: once.
+#: held line). The class is named after the question, so the widget of the question cell run
+#: again takes it too when checked. A front end without ``:has`` (or one that strips styles)
+#: shows everything at once.
 HELD_CSS = (
     "<style>.jp-Notebook:not(:has(.{released})) .jp-OutputArea-child:has(.{held}) "
     "~ .jp-OutputArea-child {{display: none}} "
@@ -132,10 +134,20 @@ class HoldsAnswer:
                              transient={"display_id": display_id})  # fmt: skip
 
     def _released_class(self) -> str:
-        """The class the prediction's widget takes once revealed (see :data:`HELD_CSS`)."""
-        return self.__dict__.setdefault(
-            "_released", f"teachraster-released-{os.getpid()}-{next(_ids)}"
-        )
+        """The class the prediction's widget takes once revealed (see :data:`HELD_CSS`).
+
+        One name per question (its kind and text), not per object: a question cell run again
+        makes a new prediction, whose page view replaces the old one, and with it the class
+        the held cells' style waits for. Then the answer cells run under the old one stayed
+        hidden after the new one was checked, until they were run again too (r104 09-8). The
+        same name lets the new prediction release them; a kernel restarted too.
+        """
+        if "_released" not in self.__dict__:
+            kind = type(self).__name__
+            text = getattr(self, "question", "")
+            digest = hashlib.sha1(f"{kind}\0{text}".encode()).hexdigest()[:16]
+            self._released = f"teachraster-released-{digest}"
+        return self._released
 
     def _release_widget(self):
         """The widget that takes :meth:`_released_class` when revealed (the page's view of it)."""
@@ -148,8 +160,10 @@ class HoldsAnswer:
         from IPython.display import publish_display_data
 
         held = self.__dict__.get("_held_ids", [])
-        if held:  # what a page reloaded on this kernel reads: its held lines lost their ids
-            self._release_widget().add_class(self._released_class())
+        # what a page reloaded on this kernel reads (its held lines lost their ids), and what
+        # releases the cells held for an earlier run of this question: taken when nothing
+        # was held through this object too
+        self._release_widget().add_class(self._released_class())
         while held:
             publish_display_data({"text/html": "", "text/plain": ""},
                                  transient={"display_id": held.pop(0)}, update=True)  # fmt: skip

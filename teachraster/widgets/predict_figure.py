@@ -175,9 +175,9 @@ class FigurePrediction(HoldsAnswer, Explorable):
 
     def _release_held(self) -> None:
         # an anywidget's view does not take ``_dom_classes`` (seen in JupyterLab 4.6): the
-        # state names the released class and the page adds it (predict_figure.js, ``mark``)
-        if self.__dict__.get("_held_ids"):
-            self.state = {**self.state, "released": self._released_class()}
+        # state names the released class and the page adds it (predict_figure.js, ``mark``);
+        # always: cells held for an earlier run of the question wait for it too
+        self.state = {**self.state, "released": self._released_class()}
         super()._release_held()
 
     @property

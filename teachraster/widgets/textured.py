@@ -59,9 +59,11 @@ def plane_clip(tilt_deg: float, camera: Camera, aspect: float, *, distance: floa
     The projection is then zoomed and shifted in screen space so the square fills the
     frame at every tilt: an off-centre frustum (glFrustum with asymmetric bounds), which
     changes x and y but keeps every w, so how strong the perspective is depends only on
-    where the square is. ``fit="depth"`` fits the square's near-to-far extent (the frame's
-    height) only: its sides may run off the screen, so a floor seen at a grazing angle still
-    fills the frame's rows.
+    where the square is. ``fit="depth"`` fits the square's near-to-far extent only, from the
+    frame's margin at the top (its far edge against the sky) to the frame's bottom edge (its
+    near edge): its sides may run off the screen, so a floor seen at a grazing angle fills
+    every row below the far edge, the bottom row too (r104 09-7: "click a pixel in the
+    floor's nearest row" found the bottom row empty).
     """
     if fit not in ("square", "depth"):
         raise ValueError(f"fit must be 'square' or 'depth', got {fit!r}")
@@ -71,9 +73,12 @@ def plane_clip(tilt_deg: float, camera: Camera, aspect: float, *, distance: floa
     clip = camera.clip(world, aspect)
     ndc = clip[:, :2] / clip[:, 3:]
     lo, hi = ndc.min(axis=0), ndc.max(axis=0)
-    extent = hi - lo if fit == "square" else (hi - lo)[1:]
-    scale = 2 * FIT / float(np.max(extent))  # one scale for x and y: squares stay square
     centre = (lo + hi) / 2
+    if fit == "square":
+        scale = 2 * FIT / float(np.max(hi - lo))  # one scale for x and y: squares stay square
+    else:  # the far edge (the top) at FIT, the near edge (the bottom) at -1
+        scale = (FIT + 1) / float(hi[1] - lo[1])
+        centre[1] = hi[1] - FIT / scale
     # x_ndc' = scale * (x_ndc - c)  <=>  x_clip' = scale * (x_clip - c * w)
     clip[:, :2] = scale * (clip[:, :2] - centre * clip[:, 3:])
     return clip[TRIANGLES]

@@ -374,15 +374,18 @@ export function footprintText(state, fp, reading) {
   if (fp) {
     const [r, c] = state.pixel;
     const [l0, l1, t] = fp.linear;
+    // two decimals throughout, as the lesson's printouts (r104 09-7: "axes 0.976 and 1.44",
+    // "λ = 0.526" beside "λ = 1.7")
+    const f2 = (x) => x.toFixed(2);
     parts.push(`<b>Pixel (row ${r}, col ${c})</b>: its footprint's axes are ` +
-      `${fmt(Math.hypot(...fp.axisX), 3)} and ${fmt(Math.hypot(...fp.axisY), 3)} texels ` +
-      `(dashed: the pixel square, mapped; blue: the ellipse). ρ = ${fmt(fp.rho, 3)}, ` +
-      `λ = log₂ ρ = ${fmt(fp.lam, 3)}: GL's nearest mip level is <b>${fp.nearest}</b> ` +
+      `${f2(Math.hypot(...fp.axisX))} and ${f2(Math.hypot(...fp.axisY))} texels ` +
+      `(dashed: the pixel square, mapped; blue: the ellipse). ρ = ${f2(fp.rho)}, ` +
+      `λ = log₂ ρ = ${f2(fp.lam)}: GL's nearest mip level is <b>${fp.nearest}</b> ` +
       `(its texel grid in blue); trilinear blends levels ${l0} and ${l1}` +
-      `${t > 0 ? ` (weight ${fmt(t, 2)} on ${l1})` : " (one level)"} over the orange square of ` +
+      `${t > 0 ? ` (weight ${f2(t)} on ${l1})` : " (one level)"} over the orange square of ` +
       `side ρ, fetching 2 × 2 texels of each (dashed: <span style="color:#CC79A7">level ` +
       `${l0}</span>${t > 0 ? `, <span style="color:#009E73">level ${l1}</span>` : ""}); anisotropic takes ${fp.probes} probe${fp.probes > 1 ? "s" : ""} at ` +
-      `λ = ${fp.probeLam.toFixed(2)}.`);
+      `λ = ${f2(fp.probeLam)}.`);
   } else if (state.pixel) {
     parts.push(`Pixel (row ${state.pixel[0]}, col ${state.pixel[1]}) is not on the floor.`);
   }
