@@ -296,16 +296,17 @@ def test_the_answers_label_keeps_off_the_segment_the_marker_moves_along():
     plain, kept = call_js(("predict_figure",), [("answerLabel", [mine, truth]),
                                                 ("answerLabel", [mine, truth, None, 600, [segment]])])  # fmt: skip
     boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in (plain, kept)])
+    assert _crosses(boxes[0], [segment]) and not _crosses(boxes[1], [segment])
 
-    def crosses(box):
-        (ax, ay), (bx, by) = segment
+
+def _crosses(box, segments) -> bool:
+    """Whether a label's box (canvas pixels) lies across any of ``segments``."""
+    for (ax, ay), (bx, by) in segments:
         for t in np.linspace(0, 1, 401):
             x, y = ax + t * (bx - ax), ay + t * (by - ay)
             if box["x0"] < x < box["x1"] and box["y0"] < y < box["y1"]:
                 return True
-        return False
-
-    assert crosses(boxes[0]) and not crosses(boxes[1])
+    return False
 
 
 def test_the_answers_label_keeps_off_the_figures_lines_it_is_given():
@@ -329,13 +330,4 @@ def test_the_answers_label_keeps_off_the_figures_lines_it_is_given():
     plain, kept = call_js(("predict_figure",), [("answerLabel", [mine, truth]),
                                                 ("answerLabel", [mine, truth, None, 600, lines])])  # fmt: skip
     boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in (plain, kept)])
-
-    def crosses(box):
-        for (ax, ay), (bx, by) in lines:
-            for t in np.linspace(0, 1, 401):
-                x, y = ax + t * (bx - ax), ay + t * (by - ay)
-                if box["x0"] < x < box["x1"] and box["y0"] < y < box["y1"]:
-                    return True
-        return False
-
-    assert crosses(boxes[0]) and not crosses(boxes[1])
+    assert _crosses(boxes[0], lines) and not _crosses(boxes[1], lines)
