@@ -1202,3 +1202,38 @@ def test_glass_swatches_in_the_inspector_are_legible():
             assert box.width >= 20 and box.height >= 40, (box.width, box.height)
     finally:
         w.close()
+
+
+def test_identical_passed_samples_print_on_one_row():
+    """Review r106 11-C2: lesson 11 says the table prints a triangle's samples that say the
+    same on one line, but for the fan under 4x MSAA, pixel (23, 31) (Question 2's pixel),
+    triangle 5's samples 2 and 3 printed as two identical "passed (kept 2 of 4)" rows. They
+    are one row "2-3" now, in the printed table and the inspector alike; samples whose depths
+    differ keep rows of their own, and the records keep one per sample."""
+    from teachraster.pipeline.debugging.frame_history import history_table
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("fan", 64, 48, samples=4, backend="image")
+    try:
+        w.row.value, w.col.value = 23, 31
+        h = w.history
+        printed = h.table()
+        assert printed == history_table(h, narrow=True, like=w.pair_history, fold=True)
+        rows = [line for line in printed.splitlines() if line.startswith("  5 ")]
+        assert [line.split()[1] for line in rows] == ["0-1", "2-3"]
+        assert "  5 2-3  passed (kept 2 of 4)  0.967634" in printed
+        assert "  5 2-3  passed" in w.table.value
+        flat = history_table(h, narrow=True, fold=False)
+        assert flat.count("  5   2  passed (kept 2 of 4)") == 1
+        assert flat.count("  5   3  passed (kept 2 of 4)") == 1
+        assert sum(r.triangle == 5 and r.outcome == "passed" for r in h.records) == 2
+        # different samples that say different things are not folded: triangles 3 and 4
+        # each pass at one sample, with their own value
+        assert "  3   1  passed (kept 1 of 4)" in printed and "  4   0  passed" in printed
+        # no two rows of the printed table say the same but for their samples
+        body = [line[7:] for line in printed.splitlines() if line[:5].strip().isdigit()]
+        heads = [line[:3] for line in printed.splitlines() if line[:5].strip().isdigit()]
+        pairs = list(zip(zip(heads, body), zip(heads[1:], body[1:])))
+        assert not [a for a, b in pairs if a == b]
+    finally:
+        w.close()

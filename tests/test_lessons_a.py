@@ -383,6 +383,32 @@ def test_03_predictions_point_and_drift_are_the_packages():
     assert all("q_far.hold()" in text[i] for i in range(far_ask + 1, prose))
 
 
+def test_03_r106_drift_answer_held_and_the_notes_told_as_they_read():
+    """Review r106 03-P1: the markdown one scroll below q_drift began "The float32 loop ends a
+    few hundredths off", the answer; it is held until Check now (and q_far's reasoning too).
+    03-F1: in the note's comments a reader asks and the reply says "exactly the same way";
+    03-C: the note's listings have four slips, and q_drift's first option names its range."""
+    cells = json.loads((NOTEBOOKS / "03_barycentric_and_plane_equations.ipynb").read_text())
+    cells = cells["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "q_drift = Predict(" in t)
+    section = next(i for i, t in enumerate(text) if t.startswith("## ") and i > ask)
+    for c, t in zip(cells[ask + 1 : section], text[ask + 1 : section]):
+        words = " ".join(t.split())
+        if "hundredths" in words or "a thousand times" in words:
+            assert c["cell_type"] == "code" and t.startswith("q_drift.hold()"), t[:80]
+    held = [t for t in text if t.startswith("q_drift.hold()") and "Markdown(" in t]
+    assert held and "a few hundredths off" in held[0]
+    markdown = " ".join(" ".join(t.split()) for c, t in zip(cells, text)
+                        if c["cell_type"] == "markdown")  # fmt: skip
+    assert "a commenter" not in markdown and "a reader asks" in markdown
+    assert '"exactly the same way as you interpolate the colour components"' in markdown
+    assert "four slips" in markdown and "`minx`, `miny`" in markdown
+    assert "puts it first" not in markdown and "opens with the warning" in markdown
+    drift = next(t for t in text if "q_drift = Predict(" in t)
+    assert "above 0, below 10⁻⁴ (one rounding near 1000 is about" in drift
+
+
 @pytest.mark.notebook
 def test_01_gouraud_spans_match_the_package():
     """Review r3 01-2: the span loop carries a colour down the edges and across each span."""

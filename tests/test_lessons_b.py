@@ -1436,6 +1436,30 @@ def test_11_overshading_title_question_3_and_early_tests():
     assert "§14.9 *Early Per-Fragment Tests*" in words
 
 
+def test_11_r106_colour_bar_quads_and_why_the_band_is_deeper_in_the_middle():
+    """Review r106: Question 3 sent the student to "the top of the colour bar", but the
+    inspector's bar is horizontal with the palest value, 0.75, at its right end (11-C1);
+    quads were "GL's derivative rule", but GLSL calls a 2x2 square only "typical" (11-F1);
+    the z-fighting band is one row deeper in the middle than near v1, because v1's gap is
+    not 0 but about half of the half step (11-G1)."""
+    import json
+
+    from teachraster.plotting.frame_debug import overlay_style
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
+    assert "top of the colour bar" not in text
+    assert "(the right-hand end of the inspector's colour bar, 0.75)" in text
+    _, _, norm, ticks = overlay_style("quad_overshading", np.zeros((2, 2)))
+    assert norm.vmax == ticks[-1] == 0.75  # the inspector draws this bar horizontally
+    assert "GL's derivative rule" not in text and 'only "typical"' in text
+    ns = lesson("11_debugging_a_frame")
+    assert ns.band_rows[32][0] == ns.band_rows[3][0] + 1  # "one row more in column 32"
+    assert 0 < ns.fight_gap[0] < ns.step16 / 2  # v1's gap: small but not 0
+    assert 0.4 < ns.fight_gap[0] / (ns.step16 / 2) < 0.6  # "about half of the half step"
+    assert "uses up about half of the half step" in text
+
+
 # -- 09 texture filtering -----------------------------------------------------------------------
 def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     ns = lesson("09_texture_filtering")

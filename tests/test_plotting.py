@@ -187,6 +187,27 @@ def test_vertex_labels_stay_inside_the_axes_at_the_grid_sides():
     plt.close(fig)
 
 
+def test_vertex_labels_stay_inside_the_axes_at_the_grid_top_and_bottom():
+    """Review r106 03-W1 (PlaneExplorer): with v3 at the grid's bottom corner (16, 14) its
+    label was cut off at the figure's bottom edge. ``inside=True`` keeps a label at the top
+    or bottom inside the Axes too, beside its dot rather than over it."""
+    fig, ax = plt.subplots(figsize=(6.3, 4.3))
+    tp.plot_pixel_grid(ax, 16, 14)
+    xy = np.array([[0.0, 1.0], [13.0, 5.0], [16.0, 14.0]])  # the reader's extremes
+    result = tp.plot_triangle(ax, xy, arrows=False, inside=True)
+    fig.canvas.draw()
+    box = ax.get_window_extent()
+    for label in result.labels:
+        extent = label.get_bbox_patch().get_window_extent()
+        assert box.y0 - 1 <= extent.y0 and extent.y1 <= box.y1 + 1, label.get_text()
+        assert box.x0 - 1 <= extent.x0 and extent.x1 <= box.x1 + 1, label.get_text()
+    dot = ax.transData.transform(xy[2])
+    extent = result.labels[2].get_window_extent()
+    assert not (extent.x0 < dot[0] < extent.x1 and extent.y0 < dot[1] < extent.y1)
+    assert tp.plot_triangle(ax, xy).labels[2].get_position()[1] < 0  # default: outwards
+    plt.close(fig)
+
+
 def test_split_shows_u4():
     fill = make_fill("span")
     fig, ax = plt.subplots()

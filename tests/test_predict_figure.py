@@ -337,13 +337,38 @@ def test_the_answers_label_keeps_off_the_segment_the_marker_moves_along():
     plain, kept = call_js(("predict_figure",), [("answerLabel", [mine, truth]),
                                                 ("answerLabel", [mine, truth, None, 600, [segment]])])  # fmt: skip
     boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in (plain, kept)])
+    assert _crosses(boxes[0], [segment]) and not _crosses(boxes[1], [segment])
 
-    def crosses(box):
-        (ax, ay), (bx, by) = segment
+
+def _crosses(box, segments) -> bool:
+    """Whether a label's box (canvas pixels) lies across any of ``segments``."""
+    for (ax, ay), (bx, by) in segments:
         for t in np.linspace(0, 1, 401):
             x, y = ax + t * (bx - ax), ay + t * (by - ay)
             if box["x0"] < x < box["x1"] and box["y0"] < y < box["y1"]:
                 return True
-        return False
+    return False
 
-    assert crosses(boxes[0]) and not crosses(boxes[1])
+
+def test_the_answers_label_keeps_off_the_figures_lines_it_is_given():
+    """Review r106 03-W2 (lesson 03 c3): after Check, "the answer" and its white ground lay
+    on the triangle's edge v3v1, near which the answer lies. PredictPoint's ``keep_clear``
+    hands the page the triangle's edges, and a place round the dot clear of them wins."""
+    xy = np.array([[2.0, 1.0], [13.0, 5.0], [5.0, 12.0]])  # lesson 03's triangle
+    edges = np.stack([xy, np.roll(xy, -1, axis=0)], axis=1)
+    q = PredictPoint("Where?", answer=(4.0, 4.7), draw=None, xlim=(0, 16), ylim=(14, 0),
+                     keep_clear=edges)  # fmt: skip
+    assert q.data["keepClear"] == edges.tolist()
+    with pytest.raises(ValueError, match="keep_clear"):
+        PredictPoint("Where?", answer=(1, 1), draw=None, xlim=(0, 4), ylim=(0, 4),
+                     keep_clear=[[0, 0, 1, 1]])  # fmt: skip
+
+    def px(p):  # 40 canvas px a unit, y down as the figure's
+        return [60.0 + 40 * p[0], 20.0 + 40 * p[1]]
+
+    truth, mine = px((4.0, 4.7)), px((8.0, 6.0))  # the marker right of the answer
+    lines = [[px(a), px(b)] for a, b in edges]
+    plain, kept = call_js(("predict_figure",), [("answerLabel", [mine, truth]),
+                                                ("answerLabel", [mine, truth, None, 600, lines])])  # fmt: skip
+    boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in (plain, kept)])
+    assert _crosses(boxes[0], lines) and not _crosses(boxes[1], lines)

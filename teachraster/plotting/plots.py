@@ -279,6 +279,33 @@ def _within_sides(ax, points, offsets, size: float) -> list:
     return out
 
 
+def _within_top_bottom(ax, points, offsets, size: float) -> list:
+    """``offsets`` (points) with the vertical part mirrored, or moved in, where a label would
+    stick out of the Axes' top or bottom: lesson 03's PlaneExplorer cut "v3" off at the
+    figure's bottom with v3 at (16, 14), and drew "v1" over the top of the frame with v1 at
+    (2, 1) (review r106 03-W1). A label moved in so far that it would cover its dot is moved
+    sideways too. ``size``: the labels' font size in points."""
+    height = ax.get_window_extent().height * 72 / ax.figure.dpi  # the Axes' height in points
+    width = ax.get_window_extent().width * 72 / ax.figure.dpi
+    if not height > 0:
+        return list(offsets)
+    half, side = 0.75 * size, 0.85 * size  # half of a label's padded box: its height, width
+    out = []
+    for p, (dx, dy) in zip(points, offsets):
+        x, y = ax.transLimits.transform(p) * (width, height)  # from the bottom left, in points
+        if not half <= y + dy <= height - half and half <= y - dy <= height - half:
+            dy = -dy  # mirrored, it fits
+        inward = min(max(dy, half - y), height - half - y)
+        if inward != dy:
+            dy = inward
+            if abs(dy) < half:  # beside its dot rather than on it, and still inside
+                dx = np.copysign(max(abs(dx), 1.4 * side), dx if dx else 1.0)
+                if not side <= x + dx <= width - side:
+                    dx = -dx
+        out.append((dx, dy))
+    return out
+
+
 @dataclass
 class TriangleArtists(Artists):
     """Artists of :func:`plot_triangle`."""
@@ -305,7 +332,7 @@ class TriangleArtists(Artists):
         names = vertex_names(tri)
         offsets = _outward(xy, centre, fs(0.9), ax)
         if self.inside:
-            offsets = _within_sides(ax, xy, offsets, fs(0.95))
+            offsets = _within_top_bottom(ax, xy, _within_sides(ax, xy, offsets, fs(0.95)), fs(0.95))
         for label, name, p, off in zip(self.labels, names, xy, offsets):
             label.xy = tuple(p)
             label.set_position(off)
@@ -353,8 +380,8 @@ def plot_triangle(
     color : colour, optional
         Default: the "edge" colour of :data:`~teachraster.plotting.style.COLORS`.
     inside : bool
-        Keep a vertex label at the grid's left or right side inside the Axes (its offset
-        mirrored), for a figure with a key or colour bar beside the Axes and no layout engine
+        Keep a vertex label at the grid's sides, top or bottom inside the Axes (its offset
+        mirrored or moved in), for a figure with a key or colour bar beside the Axes and no layout engine
         to make room (the widgets). Default: pushed outwards, where a layout engine makes room.
 
     Returns

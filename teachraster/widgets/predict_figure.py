@@ -369,6 +369,10 @@ class PredictPoint(FigurePrediction):
         The reveal also draws this polyline (data coordinates, N >= 2): the curve the answer
         was worked out from, left out of the question's picture (review r38, 05b: the z² law
         drawn through the answer once it is checked).
+    keep_clear : (N, 2, 2) array-like, optional
+        Segments of the figure (data coordinates) that the label "the answer" should not cover,
+        such as a triangle's edges near the answer (review r106 03-W2: it hid part of lesson
+        03's edge v3v1); a place clear of them is preferred, as of ``along``.
     explain, figsize, style : as above.
 
     Examples
@@ -384,7 +388,7 @@ class PredictPoint(FigurePrediction):
                  tolerance: float = 0.0, units: str = "units", explain: str = "",
                  figsize=(7.0, 5.0), style: str | None = "classroom", step=None,
                  readout: str | None = None, ray_from=None,
-                 reveal_curve=None) -> None:  # fmt: skip
+                 reveal_curve=None, keep_clear=None) -> None:  # fmt: skip
         answer = as_finite("answer", answer, (2,))
         xlim, ylim = as_finite("xlim", xlim, (2,)), as_finite("ylim", ylim, (2,))
         if xlim[0] == xlim[1] or ylim[0] == ylim[1]:
@@ -405,6 +409,8 @@ class PredictPoint(FigurePrediction):
             if len(reveal_curve) < 2:
                 raise ValueError(f"reveal_curve needs at least 2 points, got {len(reveal_curve)}")
             reveal_curve = reveal_curve.tolist()
+        if keep_clear is not None:
+            keep_clear = as_finite("keep_clear", keep_clear, (None, 2, 2)).tolist()
 
         def axes_for(fig):
             ax = fig.add_subplot()
@@ -432,7 +438,7 @@ class PredictPoint(FigurePrediction):
             "units": html.escape(units), "keyStep": step,
             "readout": None if readout is None else html.escape(readout),
             "readoutDigits": digits, "rayFrom": ray_from, "revealCurve": reveal_curve,
-            **picture})  # fmt: skip
+            "keepClear": keep_clear, **picture})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:

@@ -567,9 +567,10 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
     so that ``print(h)``, ``h.table()`` and the frame inspector show the same table; review
     r96 11-2): a triangle's consecutive ``not_covered`` samples refused for the same reason
     on one line, with the nearest miss (review r82, 11-F: under 4× MSAA a glass sphere's
-    pixel listed 40 records, most of them refused samples, each on two lines), and its
-    samples' identical colour lines on one (:func:`colour_lines`); ``fold=False``: a line
-    per record, as ``h.records`` holds them."""
+    pixel listed 40 records, most of them refused samples, each on two lines), its
+    consecutive samples whose rows are otherwise identical on one (review r106 11-C2), and
+    its samples' identical colour lines on one (:func:`colour_lines`); ``fold=False``: a
+    line per record, as ``h.records`` holds them."""
     shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
              f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
@@ -613,30 +614,41 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
 
 def _folded(rows) -> list:
     """``rows`` [(record, outcome, why)] as [(record, outcome, why, sample text)], each run
-    of one piece's consecutive ``not_covered`` samples refused for the same reason as one
-    row: its samples ("0-3"), the nearest miss ("4 samples, nearest outside E13 by 0.6400
-    px")."""
+    of one piece's consecutive samples that say the same as one row with their samples
+    ("0-3"): ``not_covered`` samples refused for the same reason, with the nearest miss ("4
+    samples, nearest outside E13 by 0.6400 px"); any other outcome where the row's outcome,
+    depths and value are equal (review r106 11-C2: a fan's pixel printed two identical
+    "passed (kept 2 of 4)" rows of triangle 5)."""
     out: list = []
-
-    def key(r):
-        return r.triangle, r.piece, r.reason
-
     for r, outcome, why in rows:
-        first = out[-1][0][0] if out and out[-1][1] == "not_covered" == outcome else None
-        if first is not None and (first.triangle, first.piece, first.reason) == key(r):
+        if out and out[-1][1] == outcome and _says_the_same(out[-1][0][0], r, outcome):
             out[-1][0].append(r)
             continue
         out.append(([r], outcome, why))
     folded = []
     for records, outcome, why in out:
         r = records[0]
-        if len(records) == 1:
-            folded.append((r, outcome, why, str(r.sample)))
+        smp = sample_list([x.sample for x in records])
+        if len(records) == 1 or outcome != "not_covered":
+            folded.append((r, outcome, why, smp))
             continue
         near = min(records, key=lambda x: x.outside if np.isfinite(x.outside) else np.inf)
-        smp = sample_list([x.sample for x in records])
         folded.append((near, outcome, f"{len(records)} samples, nearest {_why(near)}", smp))
     return folded
+
+
+def _says_the_same(first, r, outcome: str) -> bool:
+    """Whether record ``r`` (its outcome text ``outcome``, the same as ``first``'s) says what
+    ``first`` says in the table: the same piece and, refused, the same reason; otherwise the
+    same depths and value, to the bit (NaN equal to NaN)."""
+    if (first.triangle, first.piece) != (r.triangle, r.piece):
+        return False
+    if outcome == "not_covered":
+        return first.reason == r.reason
+    depths = zip((first.depth, first.depth_before, first.depth_after),
+                 (r.depth, r.depth_before, r.depth_after))  # fmt: skip
+    same = all(a == b or (np.isnan(a) and np.isnan(b)) for a, b in depths)
+    return same and first.value == r.value and _why(first) == _why(r)
 
 
 def _outcomes(h: PixelHistory) -> list[str]:

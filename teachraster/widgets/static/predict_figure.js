@@ -392,7 +392,9 @@ function mountPoint(root, data, host) {
       ctx.fill();
       const avoid = readoutBox(mine); // measured in the readout's font, before the label's is set
       ctx.font = ANSWER_FONT;
-      const lines = data.along ? [data.along.map(toPx)] : [];
+      // the segment the marker moves along, and the figure's lines the label should not
+      // cover (PredictPoint's keep_clear: lesson 03's triangle edges, review r106 03-W2)
+      const lines = [...(data.along ? [data.along] : []), ...(data.keepClear || [])].map((s) => s.map(toPx));
       const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height, lines);
       // on a white ground: the lines through the answer (the segment, the eye ray) crossed the
       // words and read "theranswer" (review r58 04-7)
