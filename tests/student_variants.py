@@ -636,9 +636,19 @@ def span_by_testing(xy, row):
 
 
 def weights_ratios(lam, w):
-    """λ_i · (w_1 / w_i): only ratios of w, so nothing overflows; then normalised."""
-    q = np.asarray(lam, float) * (w[0] / np.asarray(w, float))
+    """λ_i · (w_min / w_i): only ratios of w, none above 1, so nothing overflows; then
+    normalised (r107 N3-1: w_1 / w_i passed, though it overflows where w_1 is not smallest)."""
+    w = np.asarray(w, float)
+    q = np.asarray(lam, float) * (w.min() / w)
     return q / q.sum()
+
+
+def weights_by_w1(lam, w):
+    """λ_i · (w_1 / w_i), normalised: right while w_1 is the smallest (r107 N3-1)."""
+    w = np.asarray(w, float)
+    with np.errstate(all="ignore"):
+        q = np.asarray(lam, float) * (w[0] / w)
+        return q / q.sum()
 
 
 def weights_overflowing(lam, w):
@@ -1111,6 +1121,7 @@ WRONG = {
     "weights affine": ("perspective_weights", lambda lam, w: lam, "affine"),
     "weights times w": ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "multiplied"),
     "weights unnormalised": ("perspective_weights", lambda lam, w: lam / w, "sum to 1"),
+    "weights scaled by w1": ("perspective_weights", weights_by_w1, "you scaled the w by w1"),
     # depth_passes
     "passes with <=": ("depth_passes", _passes_with(ties=True), "use <, not <="),
     "glass writes depth": ("depth_passes", _passes_with(mask=False), "leaves the buffer"),
@@ -1278,6 +1289,7 @@ KINDS = {
     "clip returns an empty polygon": "constant",
     "covers, ties by the edges as given": "ties by the edges as given",
     "blocks by every centre": "timeout",
+    "weights scaled by w1": "scaled by w1",
     "blocks by the pixels' top-left corners": "pixel corners",
     "blocks by the coverage of every centre": "by coverage",
     "Hi-Z over the covered centres": "covered centres",
