@@ -497,6 +497,36 @@ def classify_pixel_corners(xy, x0, y0, size):
     return _classify(xy, x0 - half, y0 - half, size)
 
 
+def classify_float32(xy, x0, y0, size):
+    """The four extreme centres and the top-left rule, every edge function in float32
+    (r107 N8-1: it passed every case; a centre 1/65536 px² off an edge 3000 px out tells)."""
+    f = np.float32
+    v = [(f(p[0]), f(p[1])) for p in np.asarray(xy, float)]
+
+    def e(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    if e(v[0], v[1], v[2]) == 0:
+        return "rejected"
+    if e(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    pts = [(f(x), f(y)) for x in (x0 + 0.5, x0 + size - 0.5) for y in (y0 + 0.5, y0 + size - 0.5)]
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        oks = [e(a, b, p) > 0 or (e(a, b, p) == 0 and _owns(a, b)) for p in pts]
+        if not any(oks):
+            return "rejected"
+        accepted = accepted and all(oks)
+    return "accepted" if accepted else "partial"
+
+
+def classify_bottom_right(xy, x0, y0, size):
+    """Right and bottom edges own their centres (r107 N8-2: told "pixel corners")."""
+    return _classify(xy, x0, y0, size,
+                     owns=lambda a, b: b[1] > a[1] or (b[1] == a[1] and b[0] < a[0]))  # fmt: skip
+
+
 def classify_one_winding(xy, x0, y0, size):
     v = [[Fraction(float(c)) for c in p] for p in xy]
     if edge_function(v[0], v[1], v[2]) < 0:
@@ -1055,6 +1085,8 @@ WRONG = {
     ),  # fmt: skip
     "blocks without the top-left rule": ("classify_block", classify_strict, "top-left rule"),
     "blocks of one winding": ("classify_block", classify_one_winding, "both windings"),
+    "blocks in float32": ("classify_block", classify_float32, "in float32"),
+    "blocks by a bottom-right rule": ("classify_block", classify_bottom_right, "bottom-right rule"),
     "blocks always partial": (
         "classify_block",
         returns("partial"),
@@ -1290,6 +1322,8 @@ KINDS = {
     "covers, ties by the edges as given": "ties by the edges as given",
     "blocks by every centre": "timeout",
     "weights scaled by w1": "scaled by w1",
+    "blocks in float32": "float32",
+    "blocks by a bottom-right rule": "bottom-right rule",
     "blocks by the pixels' top-left corners": "pixel corners",
     "blocks by the coverage of every centre": "by coverage",
     "Hi-Z over the covered centres": "covered centres",

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_exercises_r85 import _words
+from test_exercises_r85 import _first_try, _words  # a first try in a fresh kernel
 
 from teachraster import exercises as ex
 
@@ -62,3 +62,68 @@ def test_exercise_3_says_how_far_apart_the_w_are():
 
     text = _markdown("03_interpolation")
     assert "1e300 apart" not in text and "1e610 apart, 1e-310 to 1e300" in text
+
+
+def _block(owns=None, points=None):
+    """classify_block in exact Fractions (tests/exercise_solutions.py), a tie rule ``owns(a,
+    b)`` or the ``points(x0, y0, size)`` tested in place of the corner trick."""
+    from exercise_solutions import _classify
+
+    def classify_block(xy, x0, y0, size):
+        pts = None if points is None else points(x0, y0, size)
+        return _classify(xy, x0, y0, size, corner_trick=pts is None, points=pts, owns=owns)
+
+    return classify_block
+
+
+def _bottom_right(a, b):
+    return b[1] > a[1] or (b[1] == a[1] and b[0] < a[0])
+
+
+def _top_right(a, b):
+    return b[1] > a[1] or (b[1] == a[1] and b[0] > a[0])
+
+
+@pytest.mark.parametrize(("owns", "rule"), [(_bottom_right, "bottom-right rule"),
+                                            (_top_right, "top-right rule")])  # fmt: skip
+def test_a_mirrored_tie_rule_is_named_not_pixel_corners(owns, rule):
+    """r107 N8-2: the bottom-right (top-right) rule with the right centres was told "you
+    tested the pixels' top-left corners …" as its first explanation."""
+    for report in (_first_try("classify_block", _block(owns)),
+                   ex.check("classify_block", _block(owns))):  # fmt: skip
+        assert all(f.kind == rule for f in report.failures), str(report)
+        assert "top-left corners" not in _words(report), str(report)
+
+
+def _centre_only(x0, y0, size):
+    from fractions import Fraction
+
+    return [(x0 + Fraction(size, 2), y0 + Fraction(size, 2))]
+
+
+@pytest.mark.parametrize("fn", [
+    _block(points=_centre_only),  # a one-point test at the block's geometric centre
+    lambda *a: (lambda k: "partial" if k == "accepted" else k)(_block()(*a)),  # never accepts
+])  # fmt: skip
+def test_no_line_of_the_summary_names_a_mistake_the_function_does_not_make(fn):
+    """r107 N8-2 (a), (b): later lines named "only 2 of the 4 extreme centres", "x0 + size + ½
+    lies beyond" (a verdict one mistake shares on one case); now the rule at the case."""
+    for report in (_first_try("classify_block", fn), ex.check("classify_block", fn)):
+        words = _words(report)
+        assert "only 2 of the 4" not in words and "beyond" not in words, words
+        assert "size + ½" not in words and "top-left rule includes" not in words, words
+
+
+def test_float32_edge_functions_fail_named_float32():
+    """r107 N8-1: float32 edge functions passed all 45 cases; a centre 1/65536 px² from an
+    edge 3000 px out (vertices on the 1/256 grid) rounds onto it in float32."""
+    from student_variants import classify_float32
+
+    from teachraster.exercises.tile_blocks import expected_block
+
+    xy = np.array([[3016.83203125, 3010.59375], [2990.40625, 2994.26171875], [6000.0, 0.0]])
+    assert (expected_block(xy, 3000, 3000, 1), classify_float32(xy, 3000, 3000, 1)) == (
+        "rejected", "accepted")  # fmt: skip
+    report = ex.check("classify_block", classify_float32)
+    assert not report.passed and all(f.kind == "float32" for f in report.failures), str(report)
+    assert "x0=3000, y0=3000" in report.failures[0].explanation
