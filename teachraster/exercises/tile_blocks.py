@@ -79,7 +79,7 @@ def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
 
 
 def edge_kind(d) -> str:
-    """"top", "bottom", "left" or "right": the kind of an edge running along ``d`` with the
+    """The kind of an edge ("top", "bottom", "left" or "right") running along ``d`` with the
     interior on its positive side (y pointing down)."""
     return ("top" if d[0] > 0 else "bottom") if d[1] == 0 else ("left" if d[1] < 0 else "right")
 
