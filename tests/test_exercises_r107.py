@@ -127,3 +127,41 @@ def test_float32_edge_functions_fail_named_float32():
     report = ex.check("classify_block", classify_float32)
     assert not report.passed and all(f.kind == "float32" for f in report.failures), str(report)
     assert "x0=3000, y0=3000" in report.failures[0].explanation
+
+
+def _times_w(lam, w):
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    return lam * w / (lam @ w)
+
+
+def test_the_capstone_stages_the_exercises_words_as_their_checks_do():
+    """r107 N12-1: the capstone gave on the first wrong try the words exercise 3 holds back
+    until two different answers have failed (λ_i / w_i, the area ratio); one count, shared
+    with the exercise's check."""
+    from test_capstone import _mine
+    from test_exercises_r94 import _bary, _persp
+
+    from teachraster.exercises import tries
+
+    tries.forget_hints("perspective_weights")
+    try:
+        cap = ex.capstone("textured_floor", **_mine("textured_floor", perspective_weights=_times_w))
+        first = _words(cap)
+        assert "λ_i / w_i" not in first and "then turn that around" in first, first
+        assert "gives a hint" in first and "a hint only" in first, first
+        # a second, different failing answer in the exercise: the full words, here too
+        assert not ex.check("perspective_weights", _persp("over w squared")).passed
+        again = ex.capstone("textured_floor", **_mine("textured_floor",
+                                                      perspective_weights=_times_w))  # fmt: skip
+        assert "so the 3-D weights go as λ_i / w_i" in _words(again), _words(again)
+        assert "a hint only" not in _words(again)
+    finally:
+        tries.spend_hints(["perspective_weights"])
+    tries.forget_hints("barycentric")
+    try:
+        rotated = _bary(order=(1, 2, 0))
+        words = _words(ex.capstone("single_triangle", **_mine("single_triangle",
+                                                              barycentric=rotated)))  # fmt: skip
+        assert "sub-triangle" not in words and "λ_i = 1 at v_i" in words, words
+    finally:
+        tries.spend_hints(["barycentric"])
