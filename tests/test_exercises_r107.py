@@ -165,3 +165,27 @@ def test_the_capstone_stages_the_exercises_words_as_their_checks_do():
         assert "sub-triangle" not in words and "λ_i = 1 at v_i" in words, words
     finally:
         tries.spend_hints(["barycentric"])
+
+
+def test_weights_of_the_wrong_sign_get_no_area_ratio_on_the_first_try():
+    """r107 N3-4: every sign flipped was told "λ1 = E(v2, v3, p), …, each over E(v1, v2, v3)"
+    on the first try, the area ratio the task leaves to the student."""
+    from test_exercises_r94 import _bary
+
+    def flipped(xy, p):
+        return -np.asarray(_bary()(xy, p))
+
+    first = _words(_first_try("barycentric", flipped))
+    assert "every weight has the wrong sign" in first and "each over E(" not in first, first
+    assert "each over E(v1, v2, v3)" in _words(ex.check("barycentric", flipped))
+
+
+def test_the_docs_say_what_the_hiz_task_states():
+    """r107 N8-3: docs/exercises.md said which bound is asked only in a hint; the task now
+    says "two cheap lower bounds … the larger" (r94 D8-7)."""
+    from pathlib import Path
+
+    docs = (Path(__file__).resolve().parents[1] / "docs" / "exercises.md").read_text("utf-8")
+    row = next(line for line in docs.splitlines() if line.startswith("| 8.2 `hiz_rejects"))
+    assert "two cheap lower bounds" in row and "the larger is taken" in row, row
+    assert "which bound the check asks for, the notebook says only in a hint" not in row
