@@ -497,6 +497,36 @@ def classify_pixel_corners(xy, x0, y0, size):
     return _classify(xy, x0 - half, y0 - half, size)
 
 
+def classify_float32(xy, x0, y0, size):
+    """The four extreme centres and the top-left rule, every edge function in float32
+    (r107 N8-1: it passed every case; a centre 1/65536 px² off an edge 3000 px out tells)."""
+    f = np.float32
+    v = [(f(p[0]), f(p[1])) for p in np.asarray(xy, float)]
+
+    def e(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    if e(v[0], v[1], v[2]) == 0:
+        return "rejected"
+    if e(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    pts = [(f(x), f(y)) for x in (x0 + 0.5, x0 + size - 0.5) for y in (y0 + 0.5, y0 + size - 0.5)]
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        oks = [e(a, b, p) > 0 or (e(a, b, p) == 0 and _owns(a, b)) for p in pts]
+        if not any(oks):
+            return "rejected"
+        accepted = accepted and all(oks)
+    return "accepted" if accepted else "partial"
+
+
+def classify_bottom_right(xy, x0, y0, size):
+    """Right and bottom edges own their centres (r107 N8-2: told "pixel corners")."""
+    return _classify(xy, x0, y0, size,
+                     owns=lambda a, b: b[1] > a[1] or (b[1] == a[1] and b[0] < a[0]))  # fmt: skip
+
+
 def classify_one_winding(xy, x0, y0, size):
     v = [[Fraction(float(c)) for c in p] for p in xy]
     if edge_function(v[0], v[1], v[2]) < 0:
@@ -636,9 +666,19 @@ def span_by_testing(xy, row):
 
 
 def weights_ratios(lam, w):
-    """λ_i · (w_1 / w_i): only ratios of w, so nothing overflows; then normalised."""
-    q = np.asarray(lam, float) * (w[0] / np.asarray(w, float))
+    """λ_i · (w_min / w_i): only ratios of w, none above 1, so nothing overflows; then
+    normalised (r107 N3-1: w_1 / w_i passed, though it overflows where w_1 is not smallest)."""
+    w = np.asarray(w, float)
+    q = np.asarray(lam, float) * (w.min() / w)
     return q / q.sum()
+
+
+def weights_by_w1(lam, w):
+    """λ_i · (w_1 / w_i), normalised: right while w_1 is the smallest (r107 N3-1)."""
+    w = np.asarray(w, float)
+    with np.errstate(all="ignore"):
+        q = np.asarray(lam, float) * (w[0] / w)
+        return q / q.sum()
 
 
 def weights_overflowing(lam, w):
@@ -1045,6 +1085,8 @@ WRONG = {
     ),  # fmt: skip
     "blocks without the top-left rule": ("classify_block", classify_strict, "top-left rule"),
     "blocks of one winding": ("classify_block", classify_one_winding, "both windings"),
+    "blocks in float32": ("classify_block", classify_float32, "in float32"),
+    "blocks by a bottom-right rule": ("classify_block", classify_bottom_right, "bottom-right rule"),
     "blocks always partial": (
         "classify_block",
         returns("partial"),
@@ -1111,6 +1153,7 @@ WRONG = {
     "weights affine": ("perspective_weights", lambda lam, w: lam, "affine"),
     "weights times w": ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "multiplied"),
     "weights unnormalised": ("perspective_weights", lambda lam, w: lam / w, "sum to 1"),
+    "weights scaled by w1": ("perspective_weights", weights_by_w1, "you scaled the w by w1"),
     # depth_passes
     "passes with <=": ("depth_passes", _passes_with(ties=True), "use <, not <="),
     "glass writes depth": ("depth_passes", _passes_with(mask=False), "leaves the buffer"),
@@ -1278,6 +1321,9 @@ KINDS = {
     "clip returns an empty polygon": "constant",
     "covers, ties by the edges as given": "ties by the edges as given",
     "blocks by every centre": "timeout",
+    "weights scaled by w1": "scaled by w1",
+    "blocks in float32": "float32",
+    "blocks by a bottom-right rule": "bottom-right rule",
     "blocks by the pixels' top-left corners": "pixel corners",
     "blocks by the coverage of every centre": "by coverage",
     "Hi-Z over the covered centres": "covered centres",

@@ -98,9 +98,26 @@ def named_mistake(used, name, inside: bool = False) -> str:
     if name not in CHECKED_BY or fn is None:
         return ""
     try:
-        return _mistake_words(name, fn, inside)
+        words = _mistake_words(name, fn, inside)
     except TypeError:  # an unhashable callable: no cache, no name
         return ""
+    return _staged(CHECKED_AS.get(name, name), words)
+
+
+def _staged(checked: str, words: str) -> str:
+    """The exercise's words in the mode its own check is in (r107 N12-1: the capstone gave
+    the area ratio, λ_i / w_i, on the first wrong try): hints until two different answers of
+    the task have failed in this kernel, here or in the exercise (the check that named the
+    mistake, :func:`own_report`, counted this one), and "a hint only" said as the exercise
+    says it."""
+    from .checks import exercise
+    from .tries import HINT_ONLY, staged
+
+    said, hinted = staged(checked, words, exercise(checked).hints)
+    if not hinted:
+        return said
+    said = said.replace("'s check names the mistake: ", "'s check gives a hint: ", 1)
+    return f"{said}; {HINT_ONLY}"
 
 
 def own_report(checked: str, fn):

@@ -80,10 +80,7 @@ def _hinted(report: Report, hints, name: str, note: str | None) -> Report:
     if not telling or not tries.hinted_check(name, _answer(report)):
         return report if note is None else replace(report, tries=note)
     failures = [replace(f, explanation=apply_hints(f.explanation, hints)) for f in report.failures]
-    more = (
-        "a hint only: work from it and the numbers of the case (the full words come once "
-        f"{tries.HINTED_ANSWERS} different answers of yours have failed)"
-    )
+    more = tries.HINT_ONLY
     return replace(report, failures=failures, tries=more if note is None else f"{note}. {more}")
 
 

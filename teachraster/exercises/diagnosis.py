@@ -245,9 +245,18 @@ def _nan_words(args, expected, got) -> str | None:
     g = _numbers(got)
     if g is None or np.isfinite(g).all():
         return None
-    what = "NaN" if np.isnan(g).any() else "infinity"
-    cause = "a 0/0, or a NaN input passed on?" if what == "NaN" else "a division by zero?"
-    return f"your answer holds {what} ({cause})"
+    if np.isnan(g).any():
+        return _NAN_WORDS
+    return "your answer holds infinity (a division by zero?)"
+
+
+_NAN_WORDS = "your answer holds NaN (a 0/0, or a NaN input passed on?)"
+
+
+def _all_nan(value) -> bool:
+    """Is every number of ``value`` NaN (a constant answer told NaN, not "placeholder")?"""
+    x = _numbers(value)
+    return x is not None and x.size > 0 and x.dtype != object and bool(np.isnan(x).all())
 
 
 def _shape_words(expected, got) -> str | None:
@@ -361,8 +370,12 @@ def diagnose(
     # issue 30 (r64 04-1): a constant first, before any mistake of the table is run
     value = run_checker(lambda: _constant(results, spec.call is not None), None)
     if value is not None:
-        words = (spec.constant or constant_words)(value)
-        return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
+        # r107 N3-2: NaN on every case is a 0/0 far more often than a placeholder
+        # (CONVENTIONS.md, Exercises and grading)
+        nan = _all_nan(value)
+        kind = "nan" if nan else "constant"
+        words = _NAN_WORDS if nan else (spec.constant or constant_words)(value)
+        return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
     mistakes = spec.all_mistakes() + [low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]

@@ -244,6 +244,9 @@ BARYCENTRIC = Exercise(
         # r94 D3-7: weights in another order were given the area ratio (a 3×3 solve's too)
         (" λ_i belongs to v_i: the area of the sub-triangle opposite v_i (p with the other "
          "two) over the whole", " λ_i belongs to v_i (λ_i = 1 at v_i)"),
+        # r107 N3-4: every sign flipped was given the area ratio in full on the first try
+        (" λ1 = E(v2, v3, p), λ2 = E(v3, v1, p), λ3 = E(v1, v2, p), each over E(v1, v2, v3): "
+         "take", " Take"),
     ),
 )  # fmt: skip
 

@@ -228,9 +228,9 @@ def hinted(name: str, words: str, hints) -> str:
     """``words`` with ``hints`` in place of the formula until two different answers of task
     ``name`` have failed (the check's own staging, :func:`.checks._hinted`), for words said
     outside the report (a picture's pixel)."""
-    from .tries import apply_hints, hints_spent
+    from .tries import staged
 
-    return words if hints_spent(name) else apply_hints(words, hints)
+    return staged(name, words, hints)[0]
 
 
 def draw_level_case(ax, case, got):

@@ -38,6 +38,12 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
         for lam in lams + [rng.dirichlet(np.ones(3))]:
             mu = weights_per_row(lam[None], w[None])[0]
             out.append((f"λ = {vec(lam)}, w = {_ws(w)}", (lam.copy(), w.copy()), mu))
+    # r107 N3-1: the smallest w not first (λ·(w1 / w) passed while the smallest came first);
+    # no λ of 1 at a vertex whose w is the largest: there even w_min / w_i underflows to 0
+    for w in (np.array([1e300, 1.0, 1e-310]), np.array([1.0, 1e-310, 1e300])):
+        for lam in (np.array([0.2, 0.3, 0.5]), np.array([0.5, 0.5, 0.0])):
+            out.append((f"λ = {vec(lam)}, w = {_ws(w)}", (lam.copy(), w.copy()),
+                        weights_per_row(lam[None], w[None])[0]))  # fmt: skip
     # r46 P3: a point outside the triangle (a negative λ, as an extrapolated or clipped
     # vertex has): the same formula, and its μ is negative too
     lam, w = np.array([-0.25, 0.5, 0.75]), np.array([1.0, 2.0, 4.0])
@@ -73,6 +79,8 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             "times w": lam * w / (lam @ w),
             "unnormalised": lam / w,
             "unnormalised times w": lam * w,
+            # r107 N3-1: scaled by the first w, not the smallest: right where w1 is smallest
+            "scaled by w1": (lambda r: r / r.sum())(lam * (w[0] / w)),
             # r94 D3-3: the package's own default (clamping) was told to "make the weights
             # sum to 1"; said only where a λ is negative (elsewhere it is the right answer)
             "clamped": weights_per_row(lam[None], w[None])[0] if (lam < 0).any() else None,
@@ -87,6 +95,9 @@ MISTAKES = {
     "unnormalised": "these are λ_i / w_i, not yet weights: they must sum to 1 (divide by "
     "their sum Σ λ_j / w_j, the interpolated 1/w)",
     "unnormalised times w": "these are λ_i · w_i, neither divided by w nor summing to 1",
+    "scaled by w1": "you scaled the w by w1, the first one: where another w is far smaller, "
+    "w1 / w_i overflows to inf (and inf/inf is NaN); only the ratios of the w matter: scale "
+    "by the smallest w, so that no ratio exceeds 1",
     "clamped": "your weight is 0 where λ is negative: the point lies outside the triangle "
     "(as a clipped or extrapolated one does), and its weights are not clamped here: a "
     "negative λ gives a negative μ",
@@ -110,13 +121,11 @@ def _rule(args, expected, got) -> str:
 
 
 def _overflow_words(args, expected, got) -> str:
-    lam, w = args
-    small = w.min() < 1
+    # r107 N3-3: not "1/w overflows" to every non-finite answer (w/max(w) underflows to 0)
     return (
-        f": not finite. With w this {'small' if small else 'large'}, 1/w "
-        f"{'overflows to inf' if small else 'underflows'} (and inf/inf or 0/0 is nan), yet "
-        "only the ratios of the w matter: scale them first (divide every w by the smallest "
-        "one, for instance)"
+        ": not finite: with w this far from 1, some step overflowed to inf or underflowed to "
+        "0 (and inf/inf or 0/0 is nan), yet only the ratios of the w matter: form ratios none "
+        "of which exceeds 1 (divide the smallest w by each w, for instance)"
     )
 
 

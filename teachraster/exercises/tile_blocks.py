@@ -59,7 +59,8 @@ def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
     """The verdict from the four points (xs[i], ys[i]) with a tie rule (mistakes included).
 
     Edge functions in pixels (exact for vertices on the 1/256 grid and points on the
-    1/2 grid). ``tie``: "top-left", "strict" (E > 0) or "loose" (E >= 0).
+    1/2 grid). ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), or another rule of
+    two kinds of edges, "bottom-right", "top-right", "bottom-left" (r107 N8-2).
     """
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     if setup.area2 == 0:
@@ -70,10 +71,17 @@ def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
         e = (b[0] - a[0]) * (pts[:, 1] - a[1]) - (b[1] - a[1]) * (pts[:, 0] - a[0])
-        ok[:, k] = passes(e, {"strict": False, "loose": True}.get(tie, setup.top_left[k]))
+        owns = {"strict": False, "loose": True, "top-left": setup.top_left[k]}.get(tie)
+        ok[:, k] = passes(e, edge_kind(b - a) in tie.split("-") if owns is None else owns)
     if (~ok.any(axis=0)).any():
         return "rejected"
     return "accepted" if ok.all() else "partial"
+
+
+def edge_kind(d) -> str:
+    """The kind of an edge ("top", "bottom", "left" or "right") running along ``d`` with the
+    interior on its positive side (y pointing down)."""
+    return ("top" if d[0] > 0 else "bottom") if d[1] == 0 else ("left" if d[1] < 0 else "right")
 
 
 def as_kind(value) -> str:
@@ -149,6 +157,22 @@ def _tie_words(args, expected, got) -> str:
     return f"corner {vec(c)} lies exactly on edge {edge['name']}, a {edge['kind']} edge: the top-left rule {rule} it"  # fmt: skip
 
 
+def _rule_slip(rule: str) -> Slip:
+    """A mirrored tie rule (r107 N8-2: the bottom-right rule was told "you tested the pixels'
+    top-left corners", whose verdict it shares on a vertical left edge)."""
+    kinds = ("top", "bottom", "left", "right")
+    mine, others = rule.split("-"), [k for k in kinds if k not in rule.split("-")]
+
+    def words(args, expected, got):
+        return (
+            f"your edge tests follow a {rule} rule (a centre on a {mine[0]} or {mine[1]} edge "
+            f"passes, on a {others[0]} or {others[1]} edge fails): the conventions use the "
+            f"top-left rule; here {_tie_words(args, expected, got)}"
+        )
+
+    return Slip(f"{rule} rule", words, rule)
+
+
 BLOCK_KNOBS = Knobs(classify_with, {
     "points": [
         Slip("outer corners", "you tested the block's outer corners; the extreme pixel centres "
@@ -167,6 +191,7 @@ BLOCK_KNOBS = Knobs(classify_with, {
     "tie": [
         Slip("no top-left rule (E > 0)", _tie_words, "strict"),
         Slip("no top-left rule (E ≥ 0)", _tie_words, "loose"),
+        *(_rule_slip(rule) for rule in ("bottom-right", "top-right", "bottom-left")),
     ],
     "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
                     "both windings (orient the edges so that the interior is positive)", False)],
@@ -200,6 +225,43 @@ BY_COVERAGE = Mistake(
     "no centre is covered, yet no single edge rules them all out (which edge passes somewhere "
     "in the block?)",
     gives=_by_coverage,
+)
+
+
+def _float32_verdict(xy, x0, y0, size) -> str:
+    """The corner trick's four centres with every edge function computed in float32."""
+    f = np.float32
+    v = np.asarray(xy, dtype=float).astype(f)
+
+    def e(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    area = e(v[0], v[1], v[2])
+    if area == 0:
+        return "rejected"
+    if area < 0:
+        v = v[[0, 2, 1]]
+    xs, ys = POINTS["centres"](x0, y0, size)
+    pts = np.stack([xs, ys], axis=1).astype(f)
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        ok = passes(np.array([e(a, b, q) for q in pts]), edge_kind(b - a) in ("top", "left"))
+        if not ok.any():
+            return "rejected"
+        accepted = accepted and bool(ok.all())
+    return "accepted" if accepted else "partial"
+
+
+#: r107 N8-1: float32 edge functions passed every case (no centre lay within float32's
+#: rounding of an edge); the cases "far out, a centre 1/65536 px² from an edge" show it.
+FLOAT32 = Mistake(
+    "float32",
+    "did you compute the edge functions in float32? With vertices on the 1/256 grid, E's "
+    "products have 16 bits after the point, and at 3000 px float32's 24 bits cannot hold them: "
+    "this centre, 1/65536 px² from an edge, rounds onto it (or across it). Compute in float64 "
+    "(plain Python floats or np.float64), which holds them exactly",
+    gives=_float32_verdict,
 )
 
 
@@ -252,7 +314,10 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
+        [BY_COVERAGE, FLOAT32, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
+        # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
+        # with a wrong one on one case; named only where it gives every failing answer
+        partial_names=False,
     )  # fmt: skip
 
 
@@ -280,6 +345,9 @@ def _hard_blocks():
         ("counter-clockwise, a right edge through the right corners", [right[0], right[2], right[1]], 8, 12, 4),  # fmt: skip
         ("zero area", [[0.5, 0.5], [8.5, 8.5], [16.5, 16.5]], 0, 0, 16),
         ("far from the origin", [[4098.5, 4098.5], [4125.5, 4102.5], [4104.5, 4123.5]], 4104, 4104, 4),  # fmt: skip
+        # r107 N8-1: E = ±1/65536 px² at the centre (3000.5, 3000.5), 0 in float32
+        ("far out, a centre 1/65536 px² outside an edge", [[3016.83203125, 3010.59375], [2990.40625, 2994.26171875], [6000.0, 0.0]], 3000, 3000, 1),  # fmt: skip
+        ("far out, a centre 1/65536 px² inside an edge", [[3043.2578125, 3026.92578125], [2974.07421875, 2984.16796875], [0.0, 6000.0]], 3000, 3000, 1),  # fmt: skip
     ]  # fmt: skip
 
 
@@ -359,7 +427,7 @@ def _edge_table(xy, x0, y0, size):
         a, b = setup.perm[k], setup.perm[(k + 1) % 3]
         kmax, kmin = int(np.argmax(e[:, k])), int(np.argmin(e[:, k]))
         d = v[(k + 1) % 3] - v[k]
-        kind = ("top" if d[0] > 0 else "bottom") if d[1] == 0 else ("left" if d[1] < 0 else "right")
+        kind = edge_kind(d)
         out.append({
             "name": f"v{a + 1}→v{b + 1}", "kind": kind, "owns": bool(setup.top_left[k]),
             "max": (cols[kmax] + 0.5, rows[kmax] + 0.5, float(e[kmax, k])),

@@ -197,6 +197,25 @@ def apply_hints(words: str, hints) -> str:
     return words
 
 
+#: What a report (or a capstone quoting an exercise's check) adds to words given as a hint.
+HINT_ONLY = (
+    "a hint only: work from it and the numbers of the case (the full words come once "
+    f"{HINTED_ANSWERS} different answers of yours have failed)"
+)
+
+
+def staged(name: str, words: str, hints) -> tuple[str, bool]:
+    """``words`` as task ``name``'s check says them now: with ``hints`` in place of the words
+    that give the answer away until :data:`HINTED_ANSWERS` different answers of the task have
+    failed in this kernel (the one rule, for the check's report, a picture's pixel and the
+    capstone quoting the exercise: r107 N12-1); and whether a hint was put in. The answer is
+    counted by the check (:func:`hinted_check`), not here."""
+    if hints_spent(name):
+        return words, False
+    said = apply_hints(words, hints)
+    return said, said != words
+
+
 def tells(text, words: str) -> bool:
     """Do ``words`` hold ``text``, a hint's string or compiled pattern (one whose numbers
     differ from case to case: r64 04, a crossing's t and point)? The same string-or-pattern
