@@ -114,14 +114,26 @@ class Alarm:
             return self._end[0]
         try:
             now = self._clock()
-            collected = self._collected  # a collection under way counts too: the watchdog
-            began = self._collecting  # may look in while its "stop" callback runs
-            if began is not None:
-                collected += now - began
-            self._cpu_now = now - self._cpu_start - collected
+            self._cpu_now = now - self._cpu_start - self._collected_by(now)
         except OSError:  # the thread has ended: its clock is gone
             pass
         return self._cpu_now
+
+    def _collected_by(self, now: float) -> float:
+        """The collector's CPU in the case's thread up to thread-CPU time ``now``: a
+        collection under way counts too (the watchdog may look in while its "stop" callback
+        runs)."""
+        began = self._collecting
+        return self._collected + (now - began if began is not None else 0.0)
+
+    def collected(self) -> float:
+        """CPU seconds the garbage collector took in the case's thread: not the student's,
+        but not waiting either (a collection under a loaded machine outlasted ``wait``, and
+        the case was told "it waits")."""
+        try:
+            return self._collected_by(self._clock())
+        except OSError:  # the thread has ended: its clock is gone
+            return self._collected
 
     def _on_collection(self, phase, info) -> None:
         """``gc.callbacks``: a collection in the case's thread is not the student's CPU. A
@@ -159,7 +171,7 @@ class Alarm:
             return "cpu"
         if wall > self.cap:
             return "wall"
-        if wall > self.wait and cpu + self.queued() < WAITING * wall:
+        if wall > self.wait and cpu + self.collected() + self.queued() < WAITING * wall:
             return "wait"
         return None
 
