@@ -727,10 +727,13 @@ MISTAKES.update(
             classify_outer_corners,
             "outer corners",
         ),  # fmt: skip
+        # two slips (E >= 0 and no zero-area test): since r107 N8-2 classify_block names a
+        # mistake only where one gives every failing answer, so the tie is told by the rule,
+        # at the corner where E = 0
         "E >= 0 on every edge": (
             "classify_block",
             classify_loose,
-            "the top-left rule excludes it",
+            "(E = 0), fails",
         ),  # fmt: skip
     }
 )
