@@ -21,6 +21,14 @@ pytestmark = [
     pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
 ]
 
+
+@pytest.fixture(autouse=True)
+def _own_errors(page):  # noqa: F811
+    """Each test counts only the page errors of its own run: the module's tests share one page,
+    and one "[anywidget] Failed to initialize model" under load used to fail every later test."""
+    del page.errors[:]
+
+
 PLAYER = [
     "import json\nimport teachraster as tr\nfrom teachraster.widgets import FillPlayer\n"
     "tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]])\n"
