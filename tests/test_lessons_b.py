@@ -1874,7 +1874,20 @@ def test_10_llvmpipe_128_against_our_64_on_one_convention():
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "against the 63 printed above" not in md
     assert "128 against our 64 (printed above)" in md and "hence the 63 px printed for int32" in md
-    assert "the same $2^{15}$ units" in md and "is `<=`" in md
+    assert "the same $2^{15}$ units" in md and "`<= MAX_FIXED_LENGTH32`" in md
+    # review r109 10-5: llvmpipe's test (lp_setup_tri.c) is on the last pixel's offsets from the
+    # box's 4-aligned start, x | y <= 128, not on the box's width; the example the text gives
+    # is printed (a 128-px box passes from column 0, fails from column 2)
+    assert "a box of exactly 128" not in md and "rounded down to a multiple of 4" in md
+    assert ns.box_from == {0: True, 2: False}
+    assert "passes from column 0 and fails from column 2" in md
+    # "two offsets below 128 OR to less than 128": x | y <= 128 is both below 128, but for
+    # offsets of 0 or 128 each
+    code = " ".join("".join(c["source"]) for c in cells["cells"] if c["cell_type"] == "code")
+    assert "((x1 - (x0 & ~3)) | (y1 - (y0 & ~3))) <= mesa_px" in code  # Mesa's expression
+    fits = {(x, y) for x in range(200) for y in range(200) if (x | y) <= 128}
+    assert fits == {(x, y) for x in range(200) for y in range(200)
+                    if (x < 128 and y < 128) or {x, y} <= {0, 128}}  # fmt: skip
 
 
 @pytest.mark.notebook
@@ -2082,6 +2095,47 @@ def test_10_r45_items():
     asked = next(t for t in text if "q_small = Predict(" in t)
     assert ns.tiny_tests == 49 and "answer=int(tiny_tests),\n    tolerance=0," in asked
     assert "(48 forgets the 64-block's own test" in asked
+
+
+def test_10_r109_items():
+    """Review r109, lesson 10: the helpers counted are those of §3's large triangle, as the text
+    says (10-1: the cell counted §1's 64×64 one); the captions' E is px², rounded, and the
+    integer the walk holds is printed in units² (10-4: "every test value is an integer" beside
+    "E12 = -81"); Hi-Z's bound on the triangle's side is exercise 8.2's (the plane at the
+    tile's extreme pixel centres, no nearer than the nearest vertex), not "the depth plane at
+    the tile's corners"; a block test counts two corner evaluations (10-8); the summary says
+    what §9 says of SSE."""
+    import json
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    md = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    # 10-1: §3's large triangle (cell 13's), about half of 512 x 512 covered, few helpers
+    assert "helpers of §3's large triangle" in md
+    assert ns.large_covered == round(ns.big_share * 512 * 512)
+    assert ns.quad_pixels == ns.large_covered + ns.helpers and ns.helpers / ns.quad_pixels < 0.01
+    # 10-4: the caption's value, rounded, and the integer behind it, quoted as printed
+    caption = ns.fill.trace.caption(8)
+    px2 = ns.e_units * ns.blocks.px2_per_unit2
+    assert isinstance(ns.e_units, int) and f"E12 = {px2:.0f} at its most inside" in caption
+    assert f"−{-ns.e_units:,} units², −{-px2:.2f} px²" in md and "E12 = -81" in md
+    assert "counted in grid units" in md
+    # Hi-Z's nearest depth: exercise 8.2's bound, named as 8.2's checker names its mistakes
+    assert "the depth plane at the tile's corners" not in md
+    assert "*extreme pixel centres*" in md and "not the tile's outer corners" in md
+    assert "nearest vertex" in md and "Greene, Kass and Miller" in md
+    ex = json.loads((ROOT / "notebooks" / "exercises" / "08_tiles.ipynb").read_text())
+    ex_md = " ".join(" ".join("".join(c["source"]) for c in ex["cells"]).split())
+    assert "the larger of the two" in ex_md and "only the centres the triangle covers" in ex_md
+    # 10-8: evaluations, a block test as two corners
+    assert ns.evaluations == 2 * ns.walk.blocks + ns.walk.pixel_tests
+    assert "a block test as two" in md
+    # §9 says four SSE additions per edge; the summary no longer says one
+    assert "one SIMD addition" not in md and "(four with SSE)" in md
+    assert "vendors do not document" not in json.dumps(cells) and "US 11,615,585" in json.dumps(
+        cells
+    )
 
 
 def test_10_tile_explorer_driven_by_the_test():
