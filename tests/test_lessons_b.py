@@ -953,9 +953,10 @@ def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
     assert ns.gaps_on_ab == [c for c in ns.gap_cells if e_ab[tuple(c)] == 0] == [[4, 4], [7, 11]]
     assert tr.edge_function(ns.A, ns.B, ns.C) > 0 and ns.ab_top_left is False  # a right edge
     assert ns.inclusive_gaps == ns.gaps_inside  # E >= 0 draws those on AB, not the others
-    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
-    assert f"strictly inside the wedge {ns.gaps_inside}" in printed
-    assert f"exactly on AB (E = 0) {ns.gaps_on_ab}; AB a top-left edge of ABC: False" in printed
+    raw = streams(executed("07_hard_cases").notebook())
+    printed = " ".join(raw.split())
+    assert f"strictly inside the wedge A-V-B: {ns.gaps_inside}" in printed
+    assert f"exactly on AB (E = 0): {ns.gaps_on_ab}; AB top-left for ABC: False" in printed
     assert f"(no tie rule) the gaps are {ns.gaps_inside}" in printed
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
@@ -980,6 +981,8 @@ def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
     assert "owner_colors(sliver_owner, case.triangles)" in sliver and "owner_color(" not in sliver
     assert "order {shown_name} shown" in "".join(cells) and ns.shown_name == "v1 v3 v2"
     assert "naive covers nothing for orders v1 v3 v2, v2 v1 v3, v3 v2 v1" in printed
+    gap_lines = raw.split("V outside ABC, the gap centres")[1].split("the gaps are")[0]
+    assert all(len(line) <= 80 for line in gap_lines.splitlines())
 
 
 def test_07_catalogue_tables_print_in_one_piece():
