@@ -245,3 +245,57 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     (maps,) = [s for s in sources if "art = plot_area_error(" in s]
     assert "np.vstack([xy2, xy2[:1]])" in maps
     assert "the first covered sample is chosen, starting from the pixel center" in text
+
+
+def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
+    """Review r108 08-2: §7's second chart measures one fixed draw of the jittered and random
+    patterns (the same offsets in every pixel), its first chart a fresh draw per edge; cells 16
+    and 37 say so. 08-4: q_fastest gives what to reason with (the crossed cells, coin tosses,
+    §3's edge passing samples one at a time). 08-3: the intersection magnified, the line of equal
+    depth between the samples each triangle won. 08-5/6/7: the quarter labels at the pixel
+    centre, the fading tail, the 16-sample pattern's two samples on the border printed."""
+    import json
+    from pathlib import Path
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study.antialiasing import sample_error_study
+
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    flat = " ".join(" ".join(sources).split())
+    # the second chart's jittered and random: tr.sample_pattern(S, kind), one draw (seed 0)
+    for kind in ("jittered", "random"):
+        (fixed,) = sample_error_study(size=32, repeat=1, counts=(), kinds=(),
+                                      patterns={kind: tr.sample_pattern(4, kind)})  # fmt: skip
+        (study,) = [r for r in ns.rows if r["kind"] == kind and r["samples"] == 4]
+        assert fixed["mean_error"] == study["mean_error"]
+    assert "a fresh draw of samples for each pixel" not in flat
+    assert "§7's first chart measures something else" in flat and "one fixed draw of each" in flat
+    assert "are each **one fixed draw** (`tr.sample_pattern(S, kind)`, seed 0)" in flat
+    # q_fastest: the reasoning's means are in the question, the answer in neither
+    (ask,) = [s for s in sources if "q_fastest = Predict(" in s]
+    asked = " ".join(ask.split("list(placements.values())")[0].split()).replace('" "', "")
+    assert "edge crosses at most 2√S − 1 of them" in asked and "central limit theorem" in asked
+    assert "passes them one at a time, as §3's" in asked and "fastest</b>" in asked
+    assert "S^−3/4" not in asked and "Mitchell" not in asked
+    # the magnified intersection: the dashed line (equal depth) parts the samples each won
+    a, b, c = ns.dz
+    ids = ns.pierced[4].sample_triangle_id
+    for r, col in zip(ns.s_rows, ns.s_cols):
+        for (ox, oy), k in zip(ns.pierced[4].samples, ids[r, col]):
+            assert (a * (col + ox) + b * (r + oy) + c < 0) == (k == 0)  # red nearer: red
+    assert np.allclose(a * ns.meet_x + b * ns.meet_y + c, 0)
+    assert "The lower panels magnify the dashed window" in flat
+    # 08-5: no sample of the 4-sample pattern near the pixel centre, where the label is now
+    assert np.hypot(*(tr.sample_pattern(4) - 0.5).T).min() > 0.35
+    assert any("ax.text(c + 0.5, r + 0.5," in s for s in sources)
+    # 08-6: the tail's pixels fade; 08-7: the border samples, printed and named in the text
+    crawl = " ".join(next(s for s in sources if s.startswith("### Crawling edges")).split())
+    assert "barely lighter" not in crawl and "fade towards the tip" in crawl
+    assert ns.on_border == [(12, (0.0, 0.5)), (15, (0.0625, 0.0))]
+    printed = streams(executed("08_antialiasing").notebook())
+    assert "sample 12 at (0.0, 0.5), sample 15 at (0.0625, 0.0)" in printed
+    assert "two of the 16 samples lie on the pixel's edges" in flat

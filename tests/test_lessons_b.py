@@ -934,6 +934,57 @@ def test_07_t_junction_is_asked_before_the_text_and_the_figure_answer_it():
     assert ask < told < held and "sky" not in cells[ask - 1]
 
 
+def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
+    """Review r115 07-1: of q_gaps' four centres two lie strictly inside the wedge A-V-B and two
+    exactly on AB, gaps only because AB is no top-left edge of ABC; the explanation and the held
+    cell say which (E >= 0 would draw the two on AB). 07-2: q_behind gives no formula to
+    substitute, only where v3 would land with w > 0. 07-3, 07-4, 07-5: the far figure keyed,
+    the slivers in the picker's colours, vertex orders named v1 v2 v3."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    import teachraster as tr
+
+    ns = lesson("07_hard_cases")
+    e_ab = {tuple(c): float(tr.edge_function(ns.A, ns.B, (c[1] + 0.5, c[0] + 0.5)))
+            for c in ns.gap_cells}  # fmt: skip
+    assert ns.gaps_inside == [c for c in ns.gap_cells if e_ab[tuple(c)] < 0] == [[5, 7], [6, 9]]
+    assert ns.gaps_on_ab == [c for c in ns.gap_cells if e_ab[tuple(c)] == 0] == [[4, 4], [7, 11]]
+    assert tr.edge_function(ns.A, ns.B, ns.C) > 0 and ns.ab_top_left is False  # a right edge
+    assert ns.inclusive_gaps == ns.gaps_inside  # E >= 0 draws those on AB, not the others
+    raw = streams(executed("07_hard_cases").notebook())
+    printed = " ".join(raw.split())
+    assert f"strictly inside the wedge A-V-B: {ns.gaps_inside}" in printed
+    assert f"exactly on AB (E = 0): {ns.gaps_on_ab}; AB top-left for ABC: False" in printed
+    assert f"(no tie rule) the gaps are {ns.gaps_inside}" in printed
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    (gaps,) = [c for c in cells if "q_gaps = PredictPixels(" in c]
+    explain = " ".join(gaps.split("explain=")[1].split())
+    assert "ABC owns the centres up to" not in explain and "of two kinds" in explain
+    assert "strictly inside the thin wedge" in explain and "exactly on AB" in explain
+    assert "whatever the tie rule" in explain.split("exactly on AB")[0]  # the inside two only
+    told = " ".join(next(c for c in cells if c.startswith("A crack no tie rule closes")).split())
+    assert "the centres strictly inside it are gaps" in told and "exactly on $AB$" in told
+    # q_behind: no formula in the question; where v3 would land with w = +2, midway v1-v2
+    (behind,) = [c for c in cells if "q_behind = PredictPoint(" in c]
+    asked = behind.split("q_behind = PredictPoint(")[1].split("answer=")[0]
+    assert "x_win" not in asked and "/w" not in asked and "midway between v1 and v2" in asked
+    assert "in_front_at[0]:g}, {in_front_at[1]:g})" in asked
+    assert np.allclose(ns.in_front_at, ns.behind_win[:2].mean(axis=0))
+    assert "x_win = (x/w + 1)·16" in behind.split("explain=")[1]
+    # the far figure has the key of every other two-panel figure; the orders are named
+    (far,) = [c for c in cells if c.startswith("q_far.hold()")]
+    assert "counts_legend(fig, counts=(ours.coverage[far]" in far
+    (sliver,) = [c for c in cells if 'introduce("sliver_pair")' in c]
+    assert "owner_colors(sliver_owner, case.triangles)" in sliver and "owner_color(" not in sliver
+    assert "order {shown_name} shown" in "".join(cells) and ns.shown_name == "v1 v3 v2"
+    assert "naive covers nothing for orders v1 v3 v2, v2 v1 v3, v3 v2 v1" in printed
+    gap_lines = raw.split("V outside ABC, the gap centres")[1].split("the gaps are")[0]
+    assert all(len(line) <= 80 for line in gap_lines.splitlines())
+
+
 def test_07_catalogue_tables_print_in_one_piece():
     """Review r98 07-2: the tables printed line by line reached the page in pieces (a line's
     text and its newline in two outputs), read as stray blank lines; each is one write now."""

@@ -110,7 +110,9 @@ def _six_orders():
 
     def shows(inputs, ours: Fills, naive: Naive) -> str | None:
         empty = [perms[k] for k in range(6) if not naive.values["coverage"][k].any()]
-        return f"naive covers nothing for orders {empty}" if empty else None
+        # the vertices by their names, v1 v2 v3 (CONVENTIONS), not by 0-based index
+        names = ", ".join(" ".join(f"v{i + 1}" for i in p) for p in empty)
+        return f"naive covers nothing for orders {names}" if empty else None
 
     def naive(inputs) -> Naive:
         cov = [naive_coverage(xy, 16, 16, rule="top_left", orient="none") for xy in tris]
