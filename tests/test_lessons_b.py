@@ -2434,3 +2434,17 @@ def test_11_r112_sliver_marks_read_and_question_1_in_two_steps():
         "".join(c["source"]) for c in cells if "q_redraw = PredictPixels(" in "".join(c["source"])
     )
     assert "<b>Step 1.</b>" in q1 and "<b>Step 2.</b>" in q1
+
+
+def test_06_r113_fill_table_prints_no_bits_as_not_applicable():
+    """Review r113 06-4: "every variant: error 0, bits none kept" read as a finding."""
+    from notebook_runs import executed
+
+    printed = "".join(
+        o.get("text", "")
+        for c in executed("06_what_accuracy_costs").notebook().cells
+        if c.cell_type == "code"
+        for o in c.outputs
+        if o.output_type == "stream"
+    )
+    assert "none kept" not in printed and "bits: n/a" in printed
