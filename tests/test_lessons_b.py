@@ -2448,3 +2448,19 @@ def test_06_r113_fill_table_prints_no_bits_as_not_applicable():
         if o.output_type == "stream"
     )
     assert "none kept" not in printed and "bits: n/a" in printed
+
+
+def test_r112_r110_wording():
+    """Review r112 11-C: two overlays are not counts; "forces the late tests: ... may still
+    test early" read as a contradiction. r110 09-2: the box lowers detail near the Nyquist
+    limit; 09-7: three probes are 1.58 levels finer, "at least a level"."""
+    import json
+
+    def words(name):
+        cells = json.loads((ROOT / "notebooks" / f"{name}.ipynb").read_text())["cells"]
+        return " ".join(" ".join("".join(c["source"]) for c in cells).split())
+
+    text11, text09 = words("11_debugging_a_frame"), words("09_texture_filtering")
+    assert "is a number per pixel" in text11 and "a count per pixel" not in text11
+    assert "forces the late tests" not in text11 and "GL defines the tests of a shader" in text11
+    assert "(a little lowered)" not in text09 and "each at least a level finer" in text09
