@@ -2464,3 +2464,29 @@ def test_r112_r110_wording():
     assert "is a number per pixel" in text11 and "a count per pixel" not in text11
     assert "forces the late tests" not in text11 and "GL defines the tests of a shader" in text11
     assert "(a little lowered)" not in text09 and "each at least a level finer" in text09
+
+
+def test_09_r110_try_it_fine_derivatives_part_only_on_a_rolled_floor():
+    """Review r110 09-10: on the level floor fine and coarse λ differ by 0.004 at most, nothing
+    to see; the Try-it now rolls the floor by 20° first, where they part by a good fraction of
+    a level near the horizon."""
+    import teachraster as tr
+    from teachraster.pipeline.mesh import Mesh, plane_mesh, rotate, translate
+
+    base = tr.get_scene("textured_floor")
+    largest = {}
+    for roll in (0, 20):
+        mesh = plane_mesh(40.0, 1).transformed(translate(0, 0, -20))
+        mesh = mesh.transformed(rotate((0, 0, 1), roll)) if roll else mesh
+        floor = tr.Scene("floor x8", "rolled", Mesh(mesh.positions, mesh.triangles,
+                         {"uv": mesh.attrs["uv"] * 8}), base.camera, texture=base.texture,
+                         shading="texture")  # fmt: skip
+        lam = []
+        for how in ("coarse", "fine"):
+            fr = tr.render(floor, width=256, height=192, texture_filter="trilinear",
+                           derivatives=how)  # fmt: skip
+            lam.append(tr.mip_level(fr.ddx, fr.ddy, floor.texture.shape))
+        largest[roll] = float(np.nanmax(np.abs(lam[1] - lam[0])))
+    assert largest[0] < 0.01 and largest[20] > 0.2
+    text = (ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text()
+    assert "rotate((0, 0, 1), 20)" in text and "barely differ" in text
