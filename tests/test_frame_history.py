@@ -419,6 +419,11 @@ def test_frame_inspector_views_clicks_and_scenes():
     for view in ("image", *KINDS):
         w.view.value = view
     assert w.view.value == "nan"
+    # r112 11: on the built-in scenes the nan view is always 0 (render refuses NaN input); its
+    # label says so
+    from teachraster.widgets.frame_inspector import NAN_ON_SCENES
+
+    assert w.view.label == NAN_ON_SCENES and "0 on built-in scenes" in NAN_ON_SCENES
     w.row.value, w.col.value = 10, 14
     assert (w.history.row, w.history.col) == (10, 14)
     assert "row 10, col 14" in w.table.value

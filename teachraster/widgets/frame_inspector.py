@@ -43,10 +43,18 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 VIEWS = ("image", *KINDS)
 
 
+#: The "nan" view's label on the built-in scenes: render refuses a NaN input, so it is 0 there
+#: (lesson 11, §5, prints it for every scene); it stays offered, as the overlay to know.
+NAN_ON_SCENES = "nan (0 on built-in scenes)"
+
+
 def _views(frames: dict, view: str) -> list:
     """The views offered: all of :data:`VIEWS`, but with frames handed in and none holding a
-    NaN pixel, not "nan" (r21 D9: an empty map offered in exercise 11), unless asked for."""
-    if not frames or view == "nan" or any(f.overlay("nan").any() for f in frames.values()):
+    NaN pixel, not "nan" (an empty map offered in exercise 11), unless asked for. On the
+    built-in scenes "nan" is offered under a label that says it is 0 there."""
+    if not frames:
+        return [(NAN_ON_SCENES, v) if v == "nan" else (v, v) for v in VIEWS]
+    if view == "nan" or any(f.overlay("nan").any() for f in frames.values()):
         return list(VIEWS)
     return [v for v in VIEWS if v != "nan"]
 
