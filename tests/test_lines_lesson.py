@@ -597,8 +597,12 @@ def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
     # review r111 12a-1: Direct3D's y-major rule quoted, its section checked (D3D11.3 §3.4.3,
     # the rules printed in its figure D3D11_3_LineRast.png; §3.4.4 is antialiased lines)
     assert "except the right corner is also included" in text and "§3.4.3 *Aliased Line" in text
-    assert ns.in_d3d_diamond(1.0, 1.5, 1, 0, y_major=True)  # pixel (1, 0)'s right corner
-    assert not ns.in_d3d_diamond(1.0, 1.5, 1, 0) and not ns.in_d3d_diamond(1.0, 1.5, 1, 1, True)
+    body = _cell_source("b9bb4840").split("def in_d3d_diamond")[1].split("\n\n\n")[0]
+    scope = {}
+    exec("def in_d3d_diamond" + body, scope)  # the cell's own function
+    d3d = scope["in_d3d_diamond"]
+    assert d3d(1.0, 1.5, 1, 0, y_major=True)  # pixel (1, 0)'s right corner: in, y-major only
+    assert not d3d(1.0, 1.5, 1, 0) and not d3d(1.0, 1.5, 1, 1, True)  # a left corner: out
     # the prediction: the D the captions print, the tie at D = 0, the column c16 prints
     for k, d in enumerate(ns.d_seq):
         assert f"column {k}, error term D = {d} " in ns.bres.trace.caption(ns.setup + k)
