@@ -208,7 +208,8 @@ def test_predictions_and_standards_numbers(ns, nsb):
         assert all(ns.allowed[k] == ns.n_lines for k in "123"), ns.allowed
     ns = nsb
     # the 8-bit sRGB target stores the code the prediction computes from the curve
-    assert ns.srgb_code == ns.stored_code == 188
+    assert ns.srgb_code == 188  # half of white's light: lessons 08/09's 0.735, §7's code 188
+    assert ns.srgb_codes[ns.q_alpha] == ns.stored_code == 137  # q_code: a quarter of it
     # MSAA with blending: the predicted alpha is the resolved one, not 1 (one factor pair)
     assert ns.k in (1, 2, 3) and abs(ns.resolved[3] - ns.resolved_alpha) < 1e-12
     assert ns.blended_alpha == 0.8125 and ns.resolved_alpha < 1  # c38's "alpha 0.8125"
@@ -252,7 +253,7 @@ def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "which pixels differ?" not in md  # the counts answered it before the question
-    for quoted in ("GL 4.4 §18.3.1", "OpenGL ES 3.2 §16.2.1", "implementation-dependent manner",
+    for quoted in ("GL 4.6 §18.3.1", "OpenGL ES 3.2 §16.2.1", "implementation-dependent manner",
                    "Multisample resolve is performed in linear space", "§5.6.6", "§19.2.4",
                    "VK_RESOLVE_MODE_AVERAGE_BIT", "VkResolveImageFlagBitsKHR"):  # fmt: skip
         assert quoted in md, quoted
@@ -260,7 +261,12 @@ def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
     # for the sRGB rule (GL 4.6's text not checked), Vulkan 1.3 promises no sRGB decode, the
     # current specification's "should" and precision sentences are not 1.3's, and
     # maintenance10's flags belong to vkCmdResolveImage2
-    assert "GL 4.6 §18.3.1" not in md and "in these words since GL 4.4" not in md
+    assert "in these words since GL 4.4" not in md
+    # review r113 12b-3: GL 4.6 §18.3.1 (core, May 5, 2022) read: the resolve sentence quoted
+    # whole, the read-side decode gated by FRAMEBUFFER_SRGB (since 4.4); GL 4.3 did not "decode
+    # nothing": its February 2013 text decoded an sRGB read buffer whatever the enable
+    assert "the sample values for each pixel are resolved in an implementation-dependent" in md
+    assert "in GL 4.3 the blit decoded nothing" not in md and "GL 4.3's February 2013" in md
     assert md.count("Vulkan 1.3: not stated") == 2 and "`vkCmdResolveImage2`" in md
     assert "the precision and sRGB sentences are not in 1.3's" in md
     if ns.ok:  # llvmpipe resolves an SRGB8_ALPHA8 blit in linear light, within a code
@@ -340,7 +346,33 @@ def test_12b_predictions_ask_before_the_rule_is_given(nsb):
     before_code = _cells_before("12b_blending", "f9afb546")
     assert "2.2" not in before_code and "2.4" not in before_code
     assert "codes on dark" not in before_code  # r51 12b-3: the side of 128 is not given
-    assert ns.stored_code - 128 > ns.code_tolerance  # code 128 (no sRGB) is a wrong answer
+    # review r113 12b-1, 12b-4: q_code asks a quarter of white's light, which lessons 08/09 did
+    # not print (they printed the half: 0.735, code 188); the marker starts on code 0, no
+    # answer, so Check needs a move and every code on the ramp can be given
+    assert ns.q_alpha == 0.25 and ns.stored_code != ns.srgb_code
+    assert abs(ns.stored_code - ns.code_start) > ns.code_tolerance
+    assert abs(ns.by_square - ns.stored_code) <= 1  # the half's 0.735 squared: the way there
+    for slip in (64, 94, 128, 188):  # encoded numbers; half of 188; the middle; the half's
+        assert abs(slip - ns.stored_code) > ns.code_tolerance, slip
+
+
+def test_review_r113_code_question_starts_on_no_answer(nsb, monkeypatch):
+    """Review r113 12b-4: q_code, built from its cell as a student's kernel builds it, starts
+    its marker on code 0 (no answer: Check waits until it moves, and 128 can be given); the
+    exact code and the half's value squared are right, the middle and code 64 are not."""
+    import teachraster as tr
+    from teachraster.widgets import PredictPoint
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    src = _cells_before("12b_blending", "a8bf3f59", kinds=("code",)).split("\n")
+    at = max(k for k, line in enumerate(src) if line.startswith("q_alpha = "))
+    scope = dict(tr=tr, np=np, PredictPoint=PredictPoint)
+    exec("\n".join(src[at:]), scope)  # the question cell, as the lesson runs it
+    q = scope["q_code"]
+    assert q.data["start"] == [0.0, 0.5] and q.given is None and q.correct is None
+    for code, verdict in ((137, True), (138, True), (128, False), (64, False), (188, False)):
+        q.given = (code, 0.5)
+        assert q.correct is verdict, code
 
 
 def test_dda_drift_is_plotted_along_the_walk(ns):
@@ -371,6 +403,13 @@ def test_tie_table_says_what_the_cell_computes(ns):
         # the two candidates: row y - 1 above the corner (y down), row y below it
         said = [y - 1 if "upper" in c else y if "lower" in c else None for c in cells[1:]]
         assert said == [gl, d3d, ours], name
+    # review r111 12a-1: the y-major tie, at x = 1 in row 1, between columns 0 and 1; Direct3D's
+    # y-major diamond keeps its right corner (D3D11.3 §3.4.3), so all three light column 0
+    steep = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| y-major")]
+    assert len(steep) == 1
+    said = [0 if "left" in c else 1 if "right" in c else None for c in steep[0][1:]]
+    ours, gl, d3d = (c[0] for c in ns.steep_cols)
+    assert said == [gl, d3d, ours] == [0, 0, 0]
 
 
 def test_explorer_count_beside_section_2s(nsb):
@@ -552,9 +591,18 @@ def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
     import json
     from pathlib import Path
 
-    assert ns.x_tie == 1.0 and ns.steep_cols == ([0], [0])  # the left pixel, both rules
+    assert ns.x_tie == 1.0 and ns.steep_cols == ([0], [0], [0])  # the left pixel, all three
     text = " ".join(_cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split())
-    assert "y-major lines light the left pixel in both: the cell prints one such tie too" in text
+    assert "y-major lines light the left pixel in both" in text
+    # review r111 12a-1: Direct3D's y-major rule quoted, its section checked (D3D11.3 §3.4.3,
+    # the rules printed in its figure D3D11_3_LineRast.png; §3.4.4 is antialiased lines)
+    assert "except the right corner is also included" in text and "§3.4.3 *Aliased Line" in text
+    body = _cell_source("b9bb4840").split("def in_d3d_diamond")[1].split("\n\n\n")[0]
+    scope = {}
+    exec("def in_d3d_diamond" + body, scope)  # the cell's own function
+    d3d = scope["in_d3d_diamond"]
+    assert d3d(1.0, 1.5, 1, 0, y_major=True)  # pixel (1, 0)'s right corner: in, y-major only
+    assert not d3d(1.0, 1.5, 1, 0) and not d3d(1.0, 1.5, 1, 1, True)  # a left corner: out
     # the prediction: the D the captions print, the tie at D = 0, the column c16 prints
     for k, d in enumerate(ns.d_seq):
         assert f"column {k}, error term D = {d} " in ns.bres.trace.caption(ns.setup + k)
@@ -678,3 +726,21 @@ def test_review_r101_polyline_figure_sets_the_rule_beside_every_pixel_touched(ns
     lights the shared pixel with both segments and two pixels in some columns."""
     assert ns.both == [] and ns.naive_both == [ns.shared]
     assert ns.naive_cols > 0 and ((ns.first | ns.second).sum(axis=0) <= 1).all()
+
+
+def test_review_r111_no_review_ids_and_no_cue_before_the_moved_line():
+    """Review r111 12a-4, 12a-5: no reviewer's id in the code or text a student sees (12a and
+    12b); the task list above q_moved no longer says that columns change their row, and
+    q_tie's stem no longer rules out the ε² option for it."""
+    import json
+    from pathlib import Path
+
+    ids = re.compile(r"\breviews? r\d+|\(r\d{2,3}\)|\br\d{2,3} 12[ab]-\d|\bN\d-\d")
+    for name in ("12a_lines", "12b_blending"):
+        path = Path(__file__).resolve().parents[1] / "notebooks" / f"{name}.ipynb"
+        for cell in json.loads(path.read_text())["cells"]:
+            text = "".join(cell["source"])
+            assert not ids.search(text), (name, cell.get("id"), ids.search(text).group(0))
+    tasks = _cell_source("diamondexpmd")
+    assert "changed their row" not in tasks and "compare the lit" in tasks
+    assert "does not matter whether y runs up or down" not in _cell_source("27754070")
