@@ -144,8 +144,10 @@ def test_plane_explorer_colours_the_pixels_rasterize_covers(explorer):
         covered = tr.rasterize(tr.Triangle(xy), 16, 14).coverage
         assert np.array_equal(~np.isnan(explorer.values), covered), xy.tolist()
         e = [tr.edge_function(xy[k], xy[(k + 1) % 3], centres) for k in range(3)]
-        on_an_edge += any(((ek == 0) & (el * em > 0)).any() for ek, el, em in
-                          [(e[0], e[1], e[2]), (e[1], e[2], e[0]), (e[2], e[0], e[1])])
+        on_an_edge += any(
+            ((ek == 0) & (el * em > 0)).any()
+            for ek, el, em in [(e[0], e[1], e[2]), (e[1], e[2], e[0]), (e[2], e[0], e[1])]
+        )
     assert on_an_edge >= 30  # the ties the old rule got wrong are well represented
 
 

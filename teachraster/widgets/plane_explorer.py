@@ -415,4 +415,3 @@ def _widest_ticks(bar):
         yield
     finally:
         bar.formatter = formatter
-
