@@ -876,6 +876,15 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     assert "may still test early and write the depth late" in html["depth"]
     assert "discard" in html["fragment"]
     assert sum(c != [245, 245, 245] for c in images["rasterize"]) == data["fragments"]
+    # review r115 00-B: depth 1 was grey 240 beside a grey-245 "no fragment"; now depth runs
+    # from grey 20 (0) to 200 (1) and no fragment is white, as the key says
+    depth = [None if d is None else 20 + 180 * d for d in data["depth"]]
+    assert [c[0] if d is not None else None for c, d in zip(images["depth"], depth)] == [
+        None if d is None else round(d) for d in depth
+    ]
+    assert all(c == [255, 255, 255] for c, d in zip(images["depth"], depth) if d is None)
+    assert max(d for d in depth if d is not None) <= 200  # 55 grey levels from white at least
+    assert "white: no fragment" in html["depth"] and "lightest grey" not in html["depth"]
     assert images["vertex"] is None and images["blend"] == data["colour"]
 
 

@@ -404,7 +404,10 @@ def test_03_r106_drift_answer_held_and_the_notes_told_as_they_read():
     assert "a commenter" not in markdown and "a reader asks" in markdown
     assert '"exactly the same way as you interpolate the colour components"' in markdown
     assert "four slips" in markdown and "`minx`, `miny`" in markdown
-    assert "puts it first" not in markdown and "opens with the warning" in markdown
+    # r112 03-C: the warning is the comment's third sentence, not its opening
+    assert "opens with the warning" not in markdown and "warns, before any matrix" in markdown
+    # r112 03-C: a hidden input's first line shows in JupyterLab: no review ids for students
+    assert not [t[:60] for t in text if re.search(r"\br\d{2,3}\b|review", t)]
     drift = next(t for t in text if "q_drift = Predict(" in t)
     assert "above 0, below 10⁻⁴ (one rounding near 1000 is about" in drift
 
@@ -1753,3 +1756,39 @@ def test_05a_r103_the_painter_first_repairs_a_near_to_far_submission():
     sticks = next(i for i, t in enumerate(text) if "PredictOrder(" in t)
     assert works < sticks  # the painter works before it is shown failing
     assert not any(re.search(r"\br\d+\b:", t) for t in _cells("05a_zbuffer", "code"))
+
+
+@pytest.mark.notebook
+def test_05a_r111_sticks_tilted_in_depth_their_keys_tie_and_the_divided_edge():
+    """Review r111 05a-1: "three flat sticks" read as "one depth each", for which no cycle is
+    possible; the sticks are tilted in depth (wide end near, tip far). 05a-2: their sort keys
+    tie, so the painter draws them as submitted, and no order is right. 05a-4: "past −1" read
+    both ways. 05a-5: the Try-it's third vertex at z = -0.2 is cut by the near plane again,
+    and with w > 0 at both ends the divided edge does cross z/w = -1, at the clipper's point."""
+    from teachraster.pipeline.painters_algorithm import painter_order
+
+    ns = lesson("05a_zbuffer")
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    assert "flat sticks" not in text and "three thin sticks, each **tilted in depth**" in text
+    depth = ns.stick_clip[..., 2] / ns.stick_clip[..., 3]  # per stick: wide ends, then tip
+    assert (depth[:, 1] > depth[:, 0]).all() and (depth[:, 1] > depth[:, 2]).all()
+    far_key = depth.max(axis=1) / 2 + 0.5
+    assert np.allclose(far_key, far_key[0], rtol=0, atol=5e-5)  # equal as printed (4 digits)
+    assert painter_order(ns.stick_clip).tolist() == [0, 1, 2]  # as submitted
+    assert "painter again draws them as\nsubmitted." in "\n".join(_cells("05a_zbuffer", "markdown"))
+    # the unheld markdown under q_order does not say that no order works (its answer)
+    assert ns.orders_right == 0 and "every drawing order" not in text
+    assert not any("lies past −1" in c for c in _cells("05a_zbuffer", "code"))
+    assert (ns.z_ndc[[0, 2]] > -1).all()  # "is greater than −1"
+    view = ns.view_xyz.copy()
+    view[2, 2] = -0.2  # the Try-it: in front of the eye, nearer than the near plane
+    clip = np.column_stack([view, np.ones(3)]) @ ns.proj.T
+    assert 0 < clip[2, 3] < ns.clip_near and (clip[:, 3] > 0).all()
+    z = clip[:, 2] / clip[:, 3]
+    assert (z[0] + 1) * (z[2] + 1) < 0  # the divided edge crosses -1 now
+    d = clip[:, 2] + clip[:, 3]
+    cut = clip[0] + d[0] / (d[0] - d[2]) * (clip[2] - clip[0])  # the clipper's vertex
+    s = (-1 - z[0]) / (z[2] - z[0])  # where the divided edge meets -1 (linear after the divide)
+    xy_ndc = clip[:, :2] / clip[:, 3:]
+    assert np.allclose(xy_ndc[0] + s * (xy_ndc[2] - xy_ndc[0]), cut[:2] / cut[3])
+    assert "does the divided edge cross $z/w = -1$ this time" in text

@@ -378,6 +378,25 @@ def test_fill_view_shows_the_current_raster_line_and_split():
     assert "bounding box" in [text.get_text() for text in view.legend.texts]
 
 
+def test_fill_view_key_tells_the_dashed_box_from_the_partial_blocks():
+    """Review r115 00-A: in the tiles view "bounding box" and "block partial" were the same
+    solid orange square; the box is drawn dashed, and so is its swatch now."""
+    from teachraster.plotting.views import DASHED_SQUARE
+
+    fill = make_fill("tiled")
+    view = tp.FillView(fill, step=0)
+    for k in (fill.trace.bbox_step, len(fill.trace) // 2, -1):
+        view.show_step(k, draw=False)
+        swatch = {t.get_text(): s for s, t in zip(view.legend.swatches, view.legend.texts)
+                  if t.get_visible()}  # fmt: skip
+        box = swatch["bounding box"]
+        assert box.get_marker() is DASHED_SQUARE and box.get_markerfacecolor() == "none"
+        if "block partial" in swatch:
+            assert swatch["block partial"].get_marker() == "s"
+    assert view.bbox.outline.get_linestyle() != "-"  # the picture's box is dashed too
+    plt.close(view.fig)
+
+
 def test_fill_view_shows_the_current_pixel_and_rejected_pixels():
     fill = make_fill("halfplane")
     t = fill.trace

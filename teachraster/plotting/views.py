@@ -21,6 +21,7 @@ import numpy as np
 from matplotlib.collections import PolyCollection
 from matplotlib.colors import Normalize, to_rgba, to_rgba_array
 from matplotlib.patches import Rectangle
+from matplotlib.path import Path
 from matplotlib.patheffects import withStroke
 from matplotlib.transforms import Affine2D, ScaledTranslation
 
@@ -76,6 +77,22 @@ def _new_figure(figsize, rect):
 PIXEL_UNDER_TEST = "pixel under test, × centre"
 #: The key's entry for the pixels a multisampled fill shades for a covered sample alone.
 SAMPLE_ONLY = "centre out, a sample in"
+
+
+def _dashed_square() -> Path:
+    """A square marker drawn in dashes, for the key's bounding box: the picture draws the box
+    dashed (:func:`~teachraster.plotting.plot_bbox`), and a solid orange square named it and
+    the tiles' partial blocks alike (review r115 00-A)."""
+    pieces = [(-1.0, -0.5), (-0.17, 0.17), (0.5, 1.0)]  # along each side: corners and middle
+    verts = []
+    for a, b in pieces:
+        verts += [(a, -1), (b, -1), (a, 1), (b, 1), (-1, a), (-1, b), (1, a), (1, b)]
+    codes = [Path.MOVETO, Path.LINETO] * (len(verts) // 2)
+    return Path(verts, codes)
+
+
+#: The key's marker for the bounding box: a dashed square (not filled).
+DASHED_SQUARE = _dashed_square()
 
 
 def sample_test_steps(trace: FillTrace) -> np.ndarray | None:
@@ -527,7 +544,8 @@ class FillView:
             # the split and the untested samples: eight lines for parts, spans and centres
             # not drawn yet read as on show (reviews r33 and r58, lesson 00 step 0; one
             # sample per pixel too, and tiles' "covered, rejected" at their step 0)
-            entries = [("bounding box", "none", c["bbox"])] if boxed and method != "span" else []
+            entries = ([("bounding box", "none", c["bbox"], DASHED_SQUARE)]
+                       if boxed and method != "span" else [])  # fmt: skip
             if split:
                 entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
             return entries + self._sample_entries(trace, coloured, setup=self._bold_dots)
@@ -542,7 +560,7 @@ class FillView:
         elif method == "tiled":  # rejected with their block, or tested in a partial one
             entries.append(("rejected", c["rejected"], c["rejected"]))
         if method != "span":  # span tables draw no box (see show_step)
-            entries.append(("bounding box", "none", c["bbox"]))
+            entries.append(("bounding box", "none", c["bbox"], DASHED_SQUARE))
         if method == "span" and not coloured:
             if split:  # the parts' tints, the line y = v_mid and point 4 (plot_split) appear
                 # together, at the split's step (review r58 00-4: keyed before it was drawn)

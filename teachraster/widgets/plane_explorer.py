@@ -22,7 +22,9 @@ from matplotlib.collections import LineCollection
 from matplotlib.text import Text
 from matplotlib.ticker import FuncFormatter, MaxNLocator
 
+from ..core.fill import rasterize
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
+from ..core.triangle import Triangle
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.common import screen_ticks
@@ -161,8 +163,8 @@ class PlaneExplorer:
     x, y, f : lists of three LiveSliders
         Vertex positions and values; setting ``.value`` updates everything.
     values : (height, width) array
-        The plane at every pixel centre inside the triangle (NaN outside): what the image
-        shows.
+        The plane at every pixel centre :func:`~teachraster.rasterize` covers (the top-left
+        rule decides centres on an edge; NaN elsewhere): what the image shows.
     system : dict
         :func:`plane_system` of the current triangle.
     info : ipywidgets.HTML
@@ -281,8 +283,10 @@ class PlaneExplorer:
         ys, xs = np.mgrid[0 : self.height, 0 : self.width] + 0.5
         values = np.full((self.height, self.width), np.nan)
         if self.system["area2"] != 0:
-            lam = _barycentric_grid(xy, xs, ys, self.system["area2"])
-            inside = (lam >= 0).all(axis=0)
+            # the pixels the core fills (snapped edge functions, the top-left rule of
+            # lessons 02 and 06), not "all λ >= 0": a centre exactly on an edge, common on
+            # the sliders' quarter-pixel grid, is drawn only where tr.rasterize draws it
+            inside = rasterize(Triangle(xy), self.width, self.height).coverage
             values[inside] = attribute_plane(xy, f, M=self.system["M"])(xs, ys)[inside]
         self.values = values
 
@@ -411,11 +415,3 @@ def _widest_ticks(bar):
         yield
     finally:
         bar.formatter = formatter
-
-
-def _barycentric_grid(xy, xs, ys, area2: float) -> np.ndarray:
-    # (3, H, W) screen-space barycentrics at the pixel centres, from the edge functions.
-    (ax, ay), (bx, by), (cx, cy) = xy
-    la = ((cx - bx) * (ys - by) - (cy - by) * (xs - bx)) / area2
-    lb = ((ax - cx) * (ys - cy) - (ay - cy) * (xs - cx)) / area2
-    return np.stack([la, lb, 1.0 - la - lb])

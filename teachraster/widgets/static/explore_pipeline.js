@@ -87,8 +87,8 @@ export function stageHtml(data, key) {
         "(image or buffer stores, atomics: side effects a culled fragment must not lose). A shader that " +
         "writes its own depth needs the late test (unless it declares conservative depth); " +
         "with one that may discard, a GPU may still test early and write the depth late, " +
-        "once the shader has kept the fragment (lessons 05a, 10).</p><p>Key: the darker the grey, the nearer (depth 0 would be " +
-        "black, 1 light grey); the lightest grey: no fragment.</p>";
+        "once the shader has kept the fragment (lessons 05a, 10).</p><p>Key: the darker the grey, the nearer (depth 0 " +
+        "would be near black, depth 1 mid grey); white: no fragment.</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
         "colour target was cleared to dark grey). That is the final image.</p>";
@@ -111,6 +111,10 @@ function setupHtml(data) {
     `${r0}–${r1 - 1}, columns ${c0}–${c1 - 1}.</p>`;
 }
 
+// the depth stage's greys: depth 0 at DEPTH_BLACK, depth 1 at DEPTH_BLACK + DEPTH_GREYS
+export const DEPTH_BLACK = 20;
+export const DEPTH_GREYS = 180;
+
 // the per-pixel picture of a stage (null: none)
 export function stageImage(data, key) {
   const n = data.width * data.height;
@@ -118,7 +122,9 @@ export function stageImage(data, key) {
   if (key === "rasterize") return Array.from({ length: n }, (_, i) => (data.coverage[i] ? [86, 180, 233] : grey(245)));
   if (key === "fragment") return data.colour.map((c, i) => (data.coverage[i] ? c : grey(245)));
   if (key === "depth") {
-    return data.depth.map((d) => (d === null ? grey(245) : grey(Math.round(40 + 200 * d))));
+    // depth 0..1 to grey 20..200, and no fragment white: depth 1 (grey 240) against a
+    // grey-245 "no fragment" could not be told apart on a projector (review r115 00-B)
+    return data.depth.map((d) => (d === null ? grey(255) : grey(Math.round(DEPTH_BLACK + DEPTH_GREYS * d))));
   }
   if (key === "blend") return data.colour;
   return null;
