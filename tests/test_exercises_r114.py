@@ -75,3 +75,99 @@ def test_the_plane_at_the_tiles_middle_is_named_so():
     assert not report.passed
     assert {f.kind for f in report.failures} == {"tile middle"}, str(report)
     assert "largest value at the corners" not in str(report), str(report)
+
+
+def _block(**knobs):
+    from teachraster.exercises.tile_blocks import classify_with
+
+    return lambda xy, x0, y0, size: classify_with(xy, x0, y0, size, **knobs)
+
+
+def _oriented(xy):
+    xy = [tuple(map(float, p)) for p in xy]
+    (x1, y1), (x2, y2), (x3, y3) = xy
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    return (xy if area > 0 else [xy[0], xy[2], xy[1]]), area
+
+
+def _top_left(a, b):
+    return b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+
+
+def _four_centres(x0, y0, size):
+    return [(x0 + dx, y0 + dy) for dy in (0.5, size - 0.5) for dx in (0.5, size - 0.5)]
+
+
+def _edge_ok(a, b, p, owns):
+    e = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+    return e > 0 or (e == 0 and owns)
+
+
+def _any_corner_rejects(xy, x0, y0, size):
+    """All four extreme centres tested; an edge that passes at most one of them rejects."""
+    v, area = _oriented(xy)
+    if area == 0:
+        return "rejected"
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        ok = [_edge_ok(a, b, p, _top_left(a, b)) for p in _four_centres(x0, y0, size)]
+        if sum(ok) <= 1:
+            return "rejected"
+        accepted = accepted and all(ok)
+    return "accepted" if accepted else "partial"
+
+
+def _sign_flipped_ties_as_given(xy, x0, y0, size):
+    """E's sign flipped for the other winding, ties by the top-left test of each edge as given
+    (a bottom-right rule on a counter-clockwise triangle)."""
+    v = [tuple(map(float, p)) for p in xy]
+    _, area = _oriented(v)
+    if area == 0:
+        return "rejected"
+    s = 1 if area > 0 else -1
+    accepted = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        ok = []
+        for p in _four_centres(x0, y0, size):
+            e = s * ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]))
+            ok.append(e > 0 or (e == 0 and _top_left(a, b)))
+        if not any(ok):
+            return "rejected"
+        accepted = accepted and all(ok)
+    return "accepted" if accepted else "partial"
+
+
+def test_four_corner_code_is_never_told_it_tested_two():
+    """r114 D8-7: code testing all four centres (rejecting where at most one passes) was told
+    "you tested only 2 of the 4 extreme centres" as its first explanation; a true two-corner
+    test still is."""
+    from test_exercises_r85 import _first_try, _words
+
+    for report in (_first_try("classify_block", _any_corner_rejects),
+                   ex.check("classify_block", _any_corner_rejects)):  # fmt: skip
+        assert not report.passed and "only 2 of the 4" not in _words(report), _words(report)
+    two = ex.check("classify_block", _block(points="two corners"))
+    assert {f.kind for f in two.failures} == {"two corners only"}, str(two)
+
+
+def test_a_winding_dependent_tie_rule_is_not_called_top_right():
+    """r114 D8-4: the top-left test of the edges as given, E's sign flipped for the other
+    winding, was told "your edge tests follow a top-right rule"."""
+    report = ex.check("classify_block", _sign_flipped_ties_as_given)
+    assert not report.passed
+    assert {f.kind for f in report.failures} == {"tie rule of the edges as given"}, str(report)
+    assert "top-right" not in str(report), str(report)
+
+
+def test_a_culling_classify_block_is_named_on_every_draw():
+    """r114 item 5 (r107 N8-2's xfail): rejecting every block of a counter-clockwise triangle
+    was told the rule on some fresh draws; each check draws six new blocks."""
+    from student_variants import classify_one_winding
+
+    for _ in range(4):
+        report = ex.check("classify_block", classify_one_winding, budget=120)
+        assert not report.passed
+        assert {f.kind for f in report.failures} == {"culled one winding"}, str(report)
+        assert "both windings" in report.failures[0].explanation
