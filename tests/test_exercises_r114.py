@@ -171,3 +171,37 @@ def test_a_culling_classify_block_is_named_on_every_draw():
         assert not report.passed
         assert {f.kind for f in report.failures} == {"culled one winding"}, str(report)
         assert "both windings" in report.failures[0].explanation
+
+
+def test_the_capstone_grid_asks_the_edge_kind_on_the_first_try():
+    """r114 D12-2: the grid scene's coverage sentence said "lies exactly on edge v1→v2, a
+    right edge" on the first try, the kind exercise 1's check asks as a question until two
+    different answers have failed."""
+    import re
+
+    from student_variants import WRONG
+    from test_capstone import _mine
+    from test_exercises_r85 import _words
+
+    from teachraster.exercises import tries
+
+    loose = WRONG["covers with E >= 0"][1]
+    tries.forget_hints("covers")
+    try:
+        first = _words(ex.capstone("grid", **_mine("grid", covers=loose)))
+    finally:
+        tries.spend_hints(["covers"])
+    assert "which kind of edge is it" in first, first
+    assert not re.search(r"edge v\d→v\d, a (top|left|bottom|right) edge", first), first
+    later = _words(ex.capstone("grid", **_mine("grid", covers=loose)))
+    assert re.search(r"edge v\d→v\d, a (top|left|bottom|right) edge", later), later
+
+
+def test_capstone_glass_points_to_no_over_that_exercise_9_lacks():
+    """r114 D12-1: cell 16 said "copy it from there (or from your exercise 9)"; exercise 9
+    no longer asks for a premultiplied *over* (9.2b is atop)."""
+    from test_exercises_r94 import _markdown
+
+    text = " ".join(_markdown("12_capstone").split())
+    assert "or from your exercise 9" not in text
+    assert "exercise 9.2's shares derive it too" in text
