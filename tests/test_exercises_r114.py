@@ -205,3 +205,24 @@ def test_capstone_glass_points_to_no_over_that_exercise_9_lacks():
     text = " ".join(_markdown("12_capstone").split())
     assert "or from your exercise 9" not in text
     assert "exercise 9.2's shares derive it too" in text
+
+
+def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():
+    """r114 D3-1: 3.1 asked to "find" the weights lesson 03 §1 prints as area ratios, 3.2 to
+    "work out" lesson 04 §3's derivation line by line; now 3.1 works from the definition
+    (a solve the lesson does not show) and 3.2 asks for the form that survives w 1e610 apart."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+
+    def task(grade_id):
+        cell = next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)
+        return " ".join("".join(cell["source"]).split())
+
+    first, second = task("task_3_1"), task("task_3_2")
+    assert "Lesson 03 §1" in first and "Cramer's rule" in first, first
+    assert "Lesson 04 (§1–§3) derives" in second and "1e610 apart" in second, second
+    assert "Only the ratios of the three w matter" not in second
+    assert "then turn that around" not in second
