@@ -216,7 +216,18 @@ def _coverage(used, reference, pixel, rr, covered) -> str:
     said = error or f"your {asked} returned {yours!r}"
     why, _, _ = explain_coverage(xy, p, covered)
     named = named_mistake(used, "covers", inside="strictly inside" in why)
+    # r114 D12-2: the edge's kind (exercise 1's question) was given on the first try: the
+    # sentence in the mode covers' own check is in, as the quoted exercise words are
+    why = _covers_staged(why)
     return f"triangle {rr.triangle}: {said}; the package: {why}{named}"
+
+
+def _covers_staged(words: str) -> str:
+    """``words`` with covers' hints in place until two different answers of it have failed."""
+    from .checks import exercise
+    from .tries import staged
+
+    return staged("covers", words, exercise("covers").hints)[0]
 
 
 def _points(xy) -> str:

@@ -27,11 +27,17 @@ from ..pipeline.rasterization.batched_fill import Fragments, weight_source
 from .answers import as_bool
 from .cases import SEED, fixed_and_drawn
 from .coverage import covered
-from .exercise import Exercise, Mistake, variant_mistakes
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .package_answers import CHECKER_WORDS
 from .scalars import num
 
 #: Tile side of the cases (hardware Hi-Z uses 8 × 8).
 TILE = 8
+#: How far a near tie's farthest stored depth lies from the triangle's nearest depth: far
+#: beyond float64's rounding of any form of the plane (r114 D8-2 measured at most 1e-15 over
+#: 5400 ties for the gradients, a 3×3 solve, the normal and the notes' A x + B y + D), far
+#: within float32's (1e-8 typically).
+NEAR_TIE = 2.0**-36
 
 
 def _corners(row0: int, col0: int, size: int):
@@ -112,10 +118,14 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         xy = centre + reach[:, None] * np.column_stack([np.cos(turn), np.sin(turn)])
         xyz = np.column_stack([np.round(xy * 256) / 256, rng.uniform(0.1, 0.9, 3)])
         near = plane_at(xyz, *_corners(row0, col0, TILE)).min()
-        # exact ties only in the fixed cases (checked once): a drawn tie would let float64's
-        # rounding of a right plane decide, and the graded run must not flake
+        # near ties only in the fixed cases (checked once): float32's rounding (about 1e-8
+        # here) decides them, float64's (at most 1e-15, r114 D8-2) never. r114 D8-2: ties set
+        # to the renderer's plane bit for bit failed a right float64 plane in the notes' own
+        # form (A x + B y + D), which rounds otherwise by an ulp, and called it float32
         tie = k % 3 == 0 and word == "random"
-        buffer = near + rng.uniform(-0.05, 0.05, (TILE, TILE)) * (not tie)
+        gap = NEAR_TIE * (1 if k % 2 == 0 else -1)  # kept, rejected
+        buffer = near + (gap if tie else rng.uniform(-0.05, 0.05, (TILE, TILE)))
+        buffer = np.broadcast_to(buffer, (TILE, TILE)).copy()
         buffer[rng.integers(0, TILE), rng.integers(0, TILE)] += rng.choice([-0.01, 0.0, 0.01])
         named.append((f"{word} {k + 1}", (xyz, row0, col0, TILE, buffer)))
     return [(label, args, expected_reject(*args)) for label, args in named]
@@ -146,11 +156,17 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
         np.array([col0, col0 + size, col0, col0 + size]) - 0.5  # fmt: skip
     near = plane_at(xyz, rows, cols).min()
     bare = plane_at(xyz, rows, cols, clamp=False)
+    mid_r, mid_c = row0 + (size - 1) / 2, col0 + (size - 1) / 2  # the centre x0 + size/2
     with np.errstate(all="ignore"):
         return {
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare.min(), xyz[:, 2].min()) >= buffer.max()),
             "plane farthest": bool(plane_at(xyz, rows, cols).max() >= buffer.max()),
+            # r114 D8-3: the plane at the tile's middle (the mean of the extreme centres') was
+            # told "the plane's largest value at the corners"
+            "tile middle": bool(
+                max(_bare_plane(xyz, mid_r, mid_c), xyz[:, 2].min()) >= buffer.max()
+            ),
             "empty as far plane": bool(near >= np.where(np.isinf(buffer), 1.0, buffer).max()),
             "vertex": bool(xyz[:, 2].min() >= buffer.max()),
             "no clamp": bool(plane_at(xyz, rows, cols, clamp=False).min() >= buffer.max()),
@@ -189,6 +205,9 @@ MISTAKES = {
     "plane farthest": "you took the plane's largest value at the corners, its farthest: the "
     "block is hidden only if even its nearest fragment is, so take the plane's smallest "
     "value there",
+    "tile middle": "you took the plane at the tile's middle: that is its mean over the tile, "
+    "and fragments elsewhere in the tile lie nearer: the block is hidden only if even its "
+    "nearest fragment is (where in the tile is the plane nearest?)",
     "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: this buffer "
     "holds +inf where nothing is drawn yet, and a fragment there passes whatever its depth, "
     "even one at 1.0, so nothing in this tile may be rejected",
@@ -249,11 +268,14 @@ def _tie_gap(args) -> float | None:
 
 def _float32_words(args, expected, got) -> str:
     gap = _tie_gap(args)
-    tie = "exactly equal" if gap == 0 else f"{abs(gap):.1e} apart"
-    return (f"the triangle's nearest depth and the tile's farthest stored one are {tie} here "
-            "(a tie: the fragment would fail the test, so the block is rejected), and float32's "
-            "rounding (about 6e-08 of a depth) decides it the other way: did you compute in "
-            "float32? Compute the plane in float64")  # fmt: skip
+    if gap == 0:
+        tie = ("exactly equal here (a tie: the fragment would fail the test, so the block is "
+               "rejected)")  # fmt: skip
+    else:  # r114 D8-2: a near tie, on either side
+        tie = f"only {abs(gap):.1e} apart here (the block is {'rejected' if expected else 'kept'})"
+    return (f"the triangle's nearest depth and the tile's farthest stored one are {tie}, and "
+            "float32's rounding (about 6e-08 of a depth) decides it the other way: did you "
+            "compute in float32? Compute the plane in float64")  # fmt: skip
 
 
 #: r40 08-1: hiz_rejects in float32 was refused and blamed on "bare plane" or "outer corners".
@@ -267,10 +289,13 @@ def explain_hiz(args, expected, got) -> str:
     corner = plane_at(xyz, rows, cols)
     nearest, farthest = corner.min(), np.max(buffer)
     k = int(np.argmin(corner))
+    far = num(farthest)
+    if far == num(nearest) and farthest != nearest:  # r114: a near tie printed as equal
+        far += f" ({abs(farthest - nearest):.1e} {'farther' if farthest > nearest else 'nearer'})"
     return (f"the tile's extreme centres are ({cols[0] + 0.5}, {rows[0] + 0.5}) to "
             f"({cols[3] + 0.5}, {rows[3] + 0.5}); the triangle's depth is nearest at "
             f"({cols[k] + 0.5}, {rows[k] + 0.5}), {num(nearest)}; the tile's farthest stored "
-            f"depth is {num(farthest)}: the block is "
+            f"depth is {far}: the block is "
             f"{'rejected' if expected else 'kept'}, you {'rejected' if got else 'kept'} it")  # fmt: skip
 
 
@@ -392,4 +417,7 @@ HIZ_REJECTS = Exercise(
     # a function using ≥ (the smaller of the two bounds); name only a mistake giving every
     # failing answer
     partial_names=False,
+    # r114 D8-1: the checker's own verdict, handed in or called, passed all cases: listed as
+    # an answer, every function of this module is watched and not counted
+    answers=(PackageAnswer(expected_reject, words=CHECKER_WORDS),),
 )  # fmt: skip

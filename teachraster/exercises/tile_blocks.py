@@ -29,7 +29,8 @@ from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short
 from .cases import SEED, fixed_and_drawn
 from .coverage import covered
-from .exercise import Exercise, Knobs, Mistake, Slip
+from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
+from .package_answers import CHECKER_WORDS
 from .running import WrongAnswerType
 from .scalars import num, tri_words, vec
 
@@ -59,12 +60,18 @@ def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
     """The verdict from the four points (xs[i], ys[i]) with a tie rule (mistakes included).
 
     Edge functions in pixels (exact for vertices on the 1/256 grid and points on the
-    1/2 grid). ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), or another rule of
-    two kinds of edges, "bottom-right", "top-right", "bottom-left" (r107 N8-2).
+    1/2 grid). ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), another rule of
+    two kinds of edges, "bottom-right", "top-right", "bottom-left" (r107 N8-2), or "as
+    given": the top-left rule of each edge as given, before orienting it (r114 D8-4: the
+    bottom-right rule on a counter-clockwise triangle). ``orient`` "cull": every block of a
+    counter-clockwise triangle rejected (r114 item 5).
     """
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
-    if setup.area2 == 0:
+    ccw = bool(setup.perm[1] == 2)  # re-ordered: counter-clockwise on screen
+    if setup.area2 == 0 or (orient == "cull" and ccw):
         return "rejected"
+    if tie == "as given":
+        tie = "bottom-right" if ccw else "top-left"
     v = setup.p / setup.unit if orient else snap(np.asarray(xy, dtype=float))
     pts = np.stack([xs, ys], axis=1).astype(float)
     ok = np.empty((len(pts), 3), dtype=bool)
@@ -183,7 +190,6 @@ BLOCK_KNOBS = Knobs(classify_with, {
         Slip("pixel corners", lambda a, e, g: "you tested the pixels' top-left corners "
              f"({a[1]}, {a[2]}) … ({a[1] + a[3] - 1}, {a[2] + a[3] - 1}); the pixel centres lie "
              "½ px right and down of them", "pixel corners"),
-        Slip("two corners only", _two_corners, "two corners"),
         Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 is the block's first column (x), "
              "y0 its first row (y); its extreme centres lie at x = x0 + ½, x0 + size − ½ and "
              "y = y0 + ½, y0 + size − ½", "x0 y0 swapped"),
@@ -205,6 +211,44 @@ BLOCK_KNOBS = Knobs(classify_with, {
              "accept by the best corner"),
     ],
 })  # fmt: skip
+
+
+def _only_whole(kind: str, words, **knobs) -> Mistake:
+    """A slip named only where it gives every answer of the check, passing ones too, and
+    never combined with another (r114 D8-7, item 5): where it shares a verdict with a
+    different function on the failing cases only, naming it misled."""
+    return Mistake(kind, words, lambda *a: classify_with(*a, **knobs), only_whole=True)
+
+
+#: r114 D8-7: "you tested only 2 of the 4 extreme centres" was told to code testing all four
+#: (rejecting where at most one passes) as its first explanation, and in summary lines to a
+#: one-point test: three verdicts, so two corners share one on many a case.
+TWO_CORNERS = _only_whole("two corners only", _two_corners, points="two corners")
+
+#: r114 D8-4: a winding-dependent tie rule (the top-left test of each edge as given, E's sign
+#: flipped for the other winding) was called "a top-right rule".
+AS_GIVEN = _only_whole(
+    "tie rule of the edges as given",
+    lambda a, e, g: (
+        "your edge tests apply the top-left rule to each edge as given, before "
+        "orienting it: on a counter-clockwise triangle that is a bottom-right rule (a centre on "
+        "a bottom or right edge passes, on a top or left edge fails): decide a tie on the "
+        "oriented edge (interior on its positive side); here " + _tie_words(a, e, g)
+    ),
+    tie="as given",
+)
+
+#: r114 item 5 (r107 N8-2's open xfail): a function that rejects every block of a
+#: counter-clockwise triangle differs from the "one winding only" slip (the edges as given,
+#: which leave some blocks partial) on some fresh draws, and was told the rule there; a knob
+#: of its own combined with others and misnamed two functions' summary lines.
+CULLED = _only_whole(
+    "culled one winding",
+    "this triangle runs counter-clockwise on screen and you rejected its block, as you do "
+    "every block of such a triangle: classify_block culls nothing: handle both windings "
+    "(orient the edges so that the interior is positive)",
+    orient="cull",
+)
 
 
 def _by_coverage(xy, x0, y0, size) -> str | None:
@@ -314,10 +358,13 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
+        [BY_COVERAGE, FLOAT32, CULLED, AS_GIVEN, TWO_CORNERS, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
         partial_names=False,
+        # r114 D8-1: the checker's own verdict, handed in or called, passed all cases: listed
+        # as an answer, every function of this module is watched and not counted
+        answers=(PackageAnswer(expected_block, words=CHECKER_WORDS),),
     )  # fmt: skip
 
 
