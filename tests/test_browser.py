@@ -2,8 +2,10 @@
 
 JupyterLab runs on 127.0.0.1 (no token, a free port, its state in a temporary directory,
 stopped by its PID afterwards) on a *copy* of the notebooks, so nothing in the repository is
-written. Debian's Chromium, headless and driven by Playwright, opens lesson 01, runs all
-cells, then presses Play and moves the step slider with the keyboard. Each action must change
+written. Debian's Chromium, headless and driven by Playwright, opens lesson 01's player (its
+setup, its triangle and its player cell: the whole lesson runs in the browser once per run,
+``test_every_notebook_runs_in_the_browser``), runs all cells, then presses Play and moves
+the step slider with the keyboard. Each action must change
 the slider's value, the caption and the picture; the pictures are the kernel's (matplotlib
 draws every step once) and reach the page on request, so this proves the whole kernel ->
 page path of the page-side player.
@@ -22,7 +24,7 @@ import pytest
 from notebook_browser import CHROMIUM as CHROMIUM  # the other browser tests read these here
 from notebook_browser import CHROMIUM_ARGS as CHROMIUM_ARGS
 from notebook_browser import _shut_down_kernels as _shut_down_kernels  # for the other files
-from notebook_browser import listed, open_file, unavailable
+from notebook_browser import listed, open_cells, unavailable
 
 ROOT = Path(__file__).resolve().parents[1]
 LESSON = "01_span_tables.ipynb"
@@ -74,12 +76,25 @@ def _shown_step(canvas) -> str:
     return canvas.get_attribute("data-step") or ""
 
 
+def player_cells(path: Path = ROOT / "notebooks" / LESSON) -> list[str]:
+    """Lesson 01's cells its first player needs: the setup (the first code cell), the cell
+    that makes ``W, H`` and ``tri``, and the player's cell. The player is the lesson's last
+    cell: running all of the lesson here ran it a second time (~25 s of kernel, CI time)."""
+    import nbformat
+
+    code = [c.source for c in nbformat.read(path, as_version=4).cells if c.cell_type == "code"]
+    shape = next(s for s in code if "W, H = " in s and "tri = " in s)
+    player = next(s for s in code if "= FillPlayer(tri, W, H" in s)
+    assert code.index(shape) < code.index(player), "the triangle is made after the player"
+    return [code[0], shape, player]
+
+
 def test_lesson_01_plays_and_steps_in_the_browser(lab, page, tmp_path):
     """The page-side player: arrow keys on the step slider and Play change the picture and
     the caption in the page; the kernel hears of the step when Play is paused."""
     from playwright.sync_api import expect
 
-    open_file(page, lab, LESSON)
+    open_cells(page, lab, player_cells(), "lesson01_player.ipynb")
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")

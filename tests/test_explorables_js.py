@@ -1011,17 +1011,22 @@ def test_end_point_labels_keep_off_the_lit_squares_where_they_can():
 
 
 def _overdrawn_nearer(drawn: list[dict], n: int = 250) -> tuple[int, int]:
-    """Screen points where a farther piece is drawn over a nearer one, of points covered twice."""
+    """Screen points where a farther piece is drawn over a nearer one, of points covered twice.
+
+    Each piece is tested at the grid points of its bounding box only (the points outside it
+    are never inside: the same counts as testing all n * n, in a tenth of the time)."""
     s = [np.array(piece["s"]) for piece in drawn]
     allp = np.concatenate(s)
-    gx, gy = np.meshgrid(
-        np.linspace(allp[:, 0].min(), allp[:, 0].max(), n),
-        np.linspace(allp[:, 1].min(), allp[:, 1].max(), n),
-    )
-    px, py = gx.ravel(), gy.ravel()
-    last = np.full(px.shape, -np.inf)  # depth of the piece drawn last over each point
-    bad = twice = np.zeros(px.shape, bool)
+    xs = np.linspace(allp[:, 0].min(), allp[:, 0].max(), n)
+    ys = np.linspace(allp[:, 1].min(), allp[:, 1].max(), n)
+    last = np.full((n, n), -np.inf)  # depth of the piece drawn last over each point
+    bad = np.zeros((n, n), bool)
+    twice = np.zeros((n, n), bool)
     for q in s:  # in the order drawn; each piece fanned into triangles
+        i0, i1 = np.searchsorted(ys, [q[:, 1].min(), q[:, 1].max()])
+        j0, j1 = np.searchsorted(xs, [q[:, 0].min(), q[:, 0].max()])
+        box = np.s_[i0 : i1 + 1, j0 : j1 + 1]
+        px, py = np.meshgrid(xs[box[1]], ys[box[0]])
         depth = np.full(px.shape, np.nan)
         for k in range(1, len(q) - 1):
             a, b, c = q[0], q[k], q[k + 1]
@@ -1032,10 +1037,10 @@ def _overdrawn_nearer(drawn: list[dict], n: int = 250) -> tuple[int, int]:
             l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) / det
             inside = np.minimum(np.minimum(l1, l2), 1 - l1 - l2) > 1e-6
             depth[inside] = ((1 - l1 - l2) * a[2] + l1 * b[2] + l2 * c[2])[inside]
-        hit = ~np.isnan(depth)
-        twice = twice | (hit & np.isfinite(last))
-        bad = bad | (hit & (depth < last - 1e-6))
-        last = np.where(hit, np.maximum(last, np.nan_to_num(depth, nan=-np.inf)), last)
+        hit, seen = ~np.isnan(depth), last[box]
+        twice[box] |= hit & np.isfinite(seen)
+        bad[box] |= hit & (depth < seen - 1e-6)
+        last[box] = np.where(hit, np.maximum(seen, np.nan_to_num(depth, nan=-np.inf)), seen)
     return int(bad.sum()), int(twice.sum())
 
 
