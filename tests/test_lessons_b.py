@@ -1887,7 +1887,6 @@ def test_10_numbers_the_text_relies_on():
     assert bins.empty[0] + bins.full[0] + bins.partial[0] == int(tiles_of_box.sum())
 
 
-
 def test_10_r121_llvmpipe_small_triangles_and_row_exit():
     """Review r121 10-1/10-2/10-5: q_small's 49 is this lesson's walk, not llvmpipe's; llvmpipe
     bins a triangle inside one 64x64 tile directly (lp_setup_bin_triangle: TRIANGLE_3_4 /
@@ -1912,6 +1911,7 @@ def test_10_r121_llvmpipe_small_triangles_and_row_exit():
     assert "counted as `nr_empty_64`)" not in text and "ends the row" in text
     assert "holds the cleared depth, 1.0" not in text and "counts it as +∞" in text
     assert "For a triangle that crosses a tile boundary" in text
+
 
 def test_10_q_hiz_every_tile_is_clear_cut():
     """Review r103 10-A: q_hiz counted tile (row 1, col 5) as rejected while the near triangle's
