@@ -1887,6 +1887,32 @@ def test_10_numbers_the_text_relies_on():
     assert bins.empty[0] + bins.full[0] + bins.partial[0] == int(tiles_of_box.sum())
 
 
+def test_10_r121_llvmpipe_small_triangles_and_row_exit():
+    """Review r121 10-1/10-2/10-5: q_small's 49 is this lesson's walk, not llvmpipe's; llvmpipe
+    bins a triangle inside one 64x64 tile directly (lp_setup_bin_triangle: TRIANGLE_3_4 /
+    TRIANGLE_3_16, no 64-level test), and its binner leaves a row at the first outside tile
+    after the triangle, so nr_empty_64 counts only the outside tiles before it. The cleared
+    depth is named one way (1.0 by default, +inf in the replay and exercise 8.2)."""
+    import json
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    # q_small's triangle: box columns 99-101 straddle column 100, so TRIANGLE_3_16 (not the
+    # stamp); llvmpipe's cautious 4x4 reject keeps 6 blocks: 16 + 96 tests against the walk's 49
+    assert ns.llvm_small[2] == ("TRIANGLE_3_16", (99, 101), 16, 96) and ns.tiny_tests == 49
+    assert ns.llvm_small[32][0] == "the tile walk (§9)" and ns.llvm_small[16][2] is None
+    # the binner's row loop on cell 40's triangle (the reader's 3 counted, 5 never tested; one
+    # tile fewer ends a row since llvmpipe's cautious corners also bin tile (0, 7))
+    assert ns.lp_n == {"empty": 3, "exit": 3, "untested": 5, "full": 7, "partial": 22}
+    assert ns.differ == [(0, 7)] and ns.bins.empty[0] == 12
+    assert ns.lp_n["full"] == ns.bins.full[0]
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    text = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]).split())
+    assert "With llvmpipe's block sizes" not in text and "This lesson's tiled walk" in text
+    assert "counted as `nr_empty_64`)" not in text and "ends the row" in text
+    assert "holds the cleared depth, 1.0" not in text and "counts it as +∞" in text
+    assert "For a triangle that crosses a tile boundary" in text
+
+
 def test_10_q_hiz_every_tile_is_clear_cut():
     """Review r103 10-A: q_hiz counted tile (row 1, col 5) as rejected while the near triangle's
     edge visibly cut its corner (it missed a pixel centre by 0.09 px; four more tiles were
