@@ -275,10 +275,23 @@ def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
     if ns.ok:  # llvmpipe resolves an SRGB8_ALPHA8 blit in linear light, within a code
         assert ns.resolve_apart["linear light"] <= 1 < 30 < ns.resolve_apart["codes"]
     # the explorer's pixel under blue alone: blended with white in light once the box is ticked
-    assert np.allclose(ns.blue_shown[False], [0.4, 0.67, 0.82])
+    shown = ns.blue_shown
+    assert np.allclose(shown[False, False], [0.4, 0.67, 0.82])
     # red: 40 % of white's light, encoded and stored as an 8-bit code (170, not 0.4's 102)
-    assert round(ns.blue_shown[True][0] * 255) == round(float(tr.linear_to_srgb(0.4)) * 255)
-    assert "lightens even the regions one triangle covers" in md
+    assert round(shown[True, True][0] * 255) == round(float(tr.linear_to_srgb(0.4)) * 255)
+    assert "even the regions one triangle covers lighten" in md
+    # review r117 12b-2: "sRGB framebuffer" means color_format="srgb8" as in §6 and GL: the
+    # colours are linear (blue's 0.6·c + 0.4 light encoded: 0.665, 0.838, 0.916 before
+    # rounding); decoding them is the separate box's job, an sRGB texture's
+    blue = ns.explorer.rgba[0, 0]
+    gl_way = tr.linear_to_srgb(0.6 * blue[:3] + 0.4)
+    assert np.allclose(shown[True, False], gl_way, atol=1 / 255)
+    decoded = 0.6 * tr.srgb_to_linear(blue[:3]) + 0.4
+    assert np.allclose(shown[False, True], decoded)
+    assert (shown[True, False] >= shown[False, False]).all()  # "lightens every triangle"
+    assert (shown[False, True] <= shown[False, False]).all()  # "everything darkens"
+    assert (shown[True, True] >= shown[False, False]).all()
+    assert "its colours decoded first" not in md and "Decoding colours is not the framebuffer" in md
 
 
 def test_srgb8_resolve_averages_the_samples_linear_values():
