@@ -283,7 +283,8 @@ def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
     # review r117 12b-2: "sRGB framebuffer" means color_format="srgb8" as in §6 and GL: the
     # colours are linear (blue's 0.6·c + 0.4 light encoded: 0.665, 0.838, 0.916 before
     # rounding); decoding them is the separate box's job, an sRGB texture's
-    blue = ns.explorer.rgba[0, 0]
+    assert ns.same_scene
+    blue = ns.colours[0, 0]  # the explorer's blue, §2's scene
     gl_way = tr.linear_to_srgb(0.6 * blue[:3] + 0.4)
     assert np.allclose(shown[True, False], gl_way, atol=1 / 255)
     decoded = 0.6 * tr.srgb_to_linear(blue[:3]) + 0.4
