@@ -103,18 +103,20 @@ def test_wide_line_figure_shows_every_corner_with_little_margin(ns):
 def test_srgb_resolve_strip_is_darker_when_codes_are_averaged(nsb):
     ns = nsb
     # review r13 12 (missing): the edge resolved from averaged codes emits less light at every
-    # partly covered pixel ("darker and thinner"); a half-covered one 21 % instead of 50 %
+    # partly covered pixel ("darker and thinner"); a half-covered one 22 % instead of 50 %
+    from teachraster import srgb_to_linear
+
     partial = (ns.edge_cov > 0) & (ns.edge_cov < 1)
     assert partial.sum() > 10
     linear, codes = ns.srgb_resolved.values()
     assert (codes[partial] < linear[partial]).all()
     # review r27 12-4: "21% of white's light, 43% of the 50% it should", said once (review r34
     # 12b-5: the edge cell no longer repeats it, it prints the edge's own mean code and light)
-    assert round(ns.encoded_light, 2) == 0.21 and round(ns.encoded_light / 0.5, 2) == 0.43
+    # review r117 12b-1: the light of the code stored (128/255), not of the unrounded 0.5
+    assert ns.mix_code == 128 and ns.encoded_light == float(srgb_to_linear(128 / 255))
+    assert round(ns.encoded_light, 2) == 0.22 and round(ns.encoded_light / 0.5, 2) == 0.43
     assert "half_light" not in vars(ns)
     assert np.array_equal(ns.partial, partial)
-    from teachraster import srgb_to_linear
-
     light = {name: srgb_to_linear(c[partial]).mean() for name, c in ns.srgb_resolved.items()}
     assert light["sRGB codes averaged"] < light["linear light, then encoded"]
 
@@ -263,19 +265,34 @@ def test_review_r102_12b_order_question_resolve_table_and_srgb_box(nsb):
     # maintenance10's flags belong to vkCmdResolveImage2
     assert "in these words since GL 4.4" not in md
     # review r113 12b-3: GL 4.6 §18.3.1 (core, May 5, 2022) read: the resolve sentence quoted
-    # whole, the read-side decode gated by FRAMEBUFFER_SRGB (since 4.4); GL 4.3 did not "decode
-    # nothing": its February 2013 text decoded an sRGB read buffer whatever the enable
+    # whole, the read-side decode gated by FRAMEBUFFER_SRGB. Review r117 12b-3: GL 4.3's
+    # history is disputed (ANGLE quotes 4.3's "no linearization is performed") and not needed
     assert "the sample values for each pixel are resolved in an implementation-dependent" in md
-    assert "in GL 4.3 the blit decoded nothing" not in md and "GL 4.3's February 2013" in md
+    assert "with `GL_FRAMEBUFFER_SRGB` enabled" in md and "are converted from the non-linear" in md
+    assert "GL 4.3" not in md and "February 2013" not in md
     assert md.count("Vulkan 1.3: not stated") == 2 and "`vkCmdResolveImage2`" in md
     assert "the precision and sRGB sentences are not in 1.3's" in md
     if ns.ok:  # llvmpipe resolves an SRGB8_ALPHA8 blit in linear light, within a code
         assert ns.resolve_apart["linear light"] <= 1 < 30 < ns.resolve_apart["codes"]
     # the explorer's pixel under blue alone: blended with white in light once the box is ticked
-    assert np.allclose(ns.blue_shown[False], [0.4, 0.67, 0.82])
+    shown = ns.blue_shown
+    assert np.allclose(shown[False, False], [0.4, 0.67, 0.82])
     # red: 40 % of white's light, encoded and stored as an 8-bit code (170, not 0.4's 102)
-    assert round(ns.blue_shown[True][0] * 255) == round(float(tr.linear_to_srgb(0.4)) * 255)
-    assert "lightens even the regions one triangle covers" in md
+    assert round(shown[True, True][0] * 255) == round(float(tr.linear_to_srgb(0.4)) * 255)
+    assert "even the regions one triangle covers lighten" in md
+    # review r117 12b-2: "sRGB framebuffer" means color_format="srgb8" as in §6 and GL: the
+    # colours are linear (blue's 0.6·c + 0.4 light encoded: 0.665, 0.838, 0.916 before
+    # rounding); decoding them is the separate box's job, an sRGB texture's
+    assert ns.same_scene
+    blue = ns.colours[0, 0]  # the explorer's blue, §2's scene
+    gl_way = tr.linear_to_srgb(0.6 * blue[:3] + 0.4)
+    assert np.allclose(shown[True, False], gl_way, atol=1 / 255)
+    decoded = 0.6 * tr.srgb_to_linear(blue[:3]) + 0.4
+    assert np.allclose(shown[False, True], decoded)
+    assert (shown[True, False] >= shown[False, False]).all()  # "lightens every triangle"
+    assert (shown[False, True] <= shown[False, False]).all()  # "everything darkens"
+    assert (shown[True, True] >= shown[False, False]).all()
+    assert "its colours decoded first" not in md and "Decoding colours is not the framebuffer" in md
 
 
 def test_srgb8_resolve_averages_the_samples_linear_values():

@@ -159,7 +159,8 @@ def test_blending_explorer_controls_keep_their_text():
         assert row.layout.flex_flow == "row wrap"
         for column in row.children[1:]:
             assert column.layout.flex == "0 0 auto"
-        for control in (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb, ex.white):
+        controls = (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb, ex.decode, ex.white)
+        for control in controls:
             assert control.layout.width == "auto" and control.layout.flex == "0 0 auto"
         assert not ex.premultiplied.indent and not ex.srgb.indent and not ex.white.indent
     finally:
@@ -362,5 +363,33 @@ def test_blending_explorer_says_its_background_is_transparent_black():
         assert "cleared to transparent black (0, 0, 0, 0)" in ex.widget.children[0].value
         empty = ex.color[0, 0]  # a corner no triangle covers
         assert np.array_equal(empty, [0, 0, 0, 0])
+    finally:
+        ex.close()
+
+
+def test_blending_explorer_srgb_box_is_color_format_srgb8():
+    """Review r117 12b-2: the "sRGB framebuffer" box means what render(color_format="srgb8")
+    means, colours taken as linear (as GL takes a shader's output); decoding sRGB colours is
+    the separate "colours sRGB-encoded" box."""
+    import teachraster as tr
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24), white=True)
+    try:
+        ex.srgb.value = True
+        order = ex.order
+        attrs = ex.rgba[order]
+        frame = tr.render(ex.clip[order], 24, 24, attrs=attrs, blend="over", depth_write=False,
+                          clear_color=(1, 1, 1, 1), color_format="srgb8")  # fmt: skip
+        assert np.array_equal(ex.color, frame.color)
+        assert "(sRGB framebuffer)" in ex.info.value and "decoded" not in ex.info.value
+        ex.decode.value = True
+        attrs = attrs.copy()
+        attrs[..., :3] = tr.srgb_to_linear(attrs[..., :3])
+        frame = tr.render(ex.clip[order], 24, 24, attrs=attrs, blend="over", depth_write=False,
+                          clear_color=(1, 1, 1, 1), color_format="srgb8")  # fmt: skip
+        assert np.array_equal(ex.color, frame.color)
+        assert "(colours decoded from sRGB)" in ex.info.value
+        assert 'color_format="srgb8"' in ex.widget.children[0].value
     finally:
         ex.close()

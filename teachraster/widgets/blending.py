@@ -10,9 +10,12 @@ by their stored alpha instead. "clear to opaque white" clears the buffer to (1, 
 instead of transparent black (0, 0, 0, 0): the background of the lesson's figures, where
 straight and premultiplied colours display alike. The other checkboxes switch to premultiplied colours
 (``blend="premultiplied"``, colours multiplied by alpha first: the same RGB on this buffer,
-a different stored alpha) and to an 8-bit sRGB framebuffer (``color_format="srgb8"``:
-blending in linear light, encoded and rounded to 8 bits after every layer) rather than
-blending the encoded numbers directly.
+a different stored alpha) and to an 8-bit sRGB framebuffer (``color_format="srgb8"``, as
+GL's: the triangles' colours taken as linear light, blended in linear light, encoded and
+rounded to 8 bits after every layer) rather than blending the numbers directly. A separate
+box, "colours sRGB-encoded (decode)", takes the triangles' colours as sRGB codes and decodes
+them to linear first, as sampling an sRGB texture does; one name, one meaning (review r117
+12b-2: the framebuffer box used to decode the colours too, which GL's framebuffer does not).
 """
 
 from __future__ import annotations
@@ -29,7 +32,7 @@ from .display import FigureDisplay, new_figure, resolve_backend
 
 def default_scene():
     """Three overlapping transparent triangles at different depths (clip (3, 3, 4), RGBA
-    (3, 3, 4) straight alpha, sRGB-encoded colours), the red one in front."""
+    (3, 3, 4) straight alpha), the red one in front."""
     clip = np.array([
         [[-0.9, -0.7, 0.2, 1], [0.5, -0.8, 0.2, 1], [-0.3, 0.8, 0.2, 1]],
         [[-0.5, 0.9, -0.4, 1], [-0.4, -0.6, -0.4, 1], [0.9, 0.3, -0.4, 1]],
@@ -46,23 +49,27 @@ def compose(
     *,
     premultiplied=False,
     srgb=False,
+    decode=False,
     size=(48, 48),
     clear_color=(0.0, 0.0, 0.0, 0.0),
 ):
     """The (H, W, 4) colour buffer of triangles ``order`` blended *over* in that order.
 
-    ``rgba`` holds straight-alpha, sRGB-encoded colours. ``srgb``: an 8-bit sRGB framebuffer
-    (``color_format="srgb8"``, GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``): decode to
-    linear first, blend in linear light, encode and round to 8 bits after every layer; the
-    result is returned as linear values (``frame.color``; :func:`rgba_shown` encodes them).
-    Else blend the encoded numbers.
+    ``rgba`` holds straight-alpha colours. ``srgb``: an 8-bit sRGB framebuffer
+    (``color_format="srgb8"``, GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``): the colours
+    are taken as linear light, as GL takes a fragment shader's output, blended in linear light
+    with the decoded buffer, encoded and rounded to 8 bits after every layer; the result is
+    returned as linear values (``frame.color``; :func:`rgba_shown` encodes them). Else the
+    numbers are blended as they are. ``decode``: the colours are sRGB codes (as an sRGB
+    texture's texels are) and are decoded to linear light before anything else; without
+    ``srgb`` the buffer then stores those linear numbers unencoded.
     ``premultiplied``: multiply colour by alpha first and blend with (ONE, ONE_MINUS_SRC_ALPHA);
     the result is the buffer as stored, premultiplied.
     ``clear_color``: the buffer's RGBA before the first triangle (linear values; black and
     white are the same in either encoding), as ``render``'s.
     """
     colours = np.array(rgba, dtype=np.float64)[list(order)]
-    if srgb:
+    if decode:
         colours[..., :3] = srgb_to_linear(colours[..., :3])
     if premultiplied:
         colours[..., :3] *= colours[..., 3:]
@@ -89,7 +96,9 @@ class BlendingExplorer(Shown):
     ----------
     order : list of int
         The current submission order; ``select``, ``earlier``, ``later``, ``sort`` change it.
-    premultiplied, srgb, alpha, white : Checkbox
+    premultiplied, srgb, decode, alpha, white : Checkbox
+        ``srgb``: an 8-bit sRGB framebuffer, ``color_format="srgb8"`` (colours linear).
+        ``decode``: the colours are sRGB codes, decoded to linear first (an sRGB texture's).
         ``alpha``: draw the stored alpha over a checkerboard instead of the RGB as displayed.
         ``white``: clear to opaque white (1, 1, 1, 1) instead of transparent black.
     depth_order : list of int
@@ -129,6 +138,8 @@ class BlendingExplorer(Shown):
                                               indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer", indent=False,
                                      layout=widgets.Layout(**whole))  # fmt: skip
+        self.decode = widgets.Checkbox(value=False, description="colours sRGB-encoded (decode)",
+                                       indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         self.alpha = widgets.Checkbox(value=False, description="stored alpha (checkerboard)",
                                       indent=False, layout=widgets.Layout(**whole))  # fmt: skip
         # lesson 12b opens it on white, the clear colour of its figures (review r63 12b-3)
@@ -150,7 +161,7 @@ class BlendingExplorer(Shown):
         self.earlier.on_click(lambda _: self._move(-1))
         self.later.on_click(lambda _: self._move(+1))
         self.sort.on_click(lambda _: self._sort())
-        for box in (self.premultiplied, self.srgb, self.alpha, self.white):
+        for box in (self.premultiplied, self.srgb, self.decode, self.alpha, self.white):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, premultiplied alpha, sRGB",
@@ -159,13 +170,17 @@ class BlendingExplorer(Shown):
             "white' clears the buffer to (1, 1, 1, 1), the white of the lesson's figures; "
             "unticked, it is cleared to transparent black (0, 0, 0, 0), into which straight "
             "alpha stores a wrong alpha. The panels show the colours written, as displayed; tick 'stored alpha' "
-            "to see alpha as a checkerboard.",
+            "to see alpha as a checkerboard. 'sRGB framebuffer' is color_format=\"srgb8\": "
+            "the colours are taken as linear light (as GL takes a shader's output), blended "
+            "in light and stored encoded; 'colours sRGB-encoded' decodes them first, as "
+            "sampling an sRGB texture does.",
         )
         column = dict(flex="0 0 auto", margin="0 12px 0 0")
         buttons = widgets.VBox([self.earlier, self.later, self.sort],
                                layout=widgets.Layout(align_items="stretch", **column))  # fmt: skip
         boxes = widgets.VBox(
-            [self.premultiplied, self.srgb, self.alpha, self.white], layout=widgets.Layout(**column)
+            [self.premultiplied, self.srgb, self.decode, self.alpha, self.white],
+            layout=widgets.Layout(**column),
         )
         controls = control_row([self.select, buttons, boxes])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
@@ -193,7 +208,7 @@ class BlendingExplorer(Shown):
     def _compute(self) -> None:
         clear = (1.0, 1.0, 1.0, 1.0) if self.white.value else (0.0, 0.0, 0.0, 0.0)
         opts = {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
-                "size": self.size, "clear_color": clear}  # fmt: skip
+                "decode": self.decode.value, "size": self.size, "clear_color": clear}  # fmt: skip
         self.color = compose(self.clip, self.rgba, self.order, **opts)
         self.sorted_color = compose(self.clip, self.rgba, self.depth_order, **opts)
         self.differ = int((np.abs(self.color - self.sorted_color) > 1e-9).any(axis=2).sum())
@@ -233,6 +248,7 @@ class BlendingExplorer(Shown):
                 f"({back})"
                 f"{' (premultiplied)' if self.premultiplied.value else ''}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}"
+                f"{' (colours decoded from sRGB)' if self.decode.value else ''}"
                 # name the clear either way: unticked it is black (review r71)
                 f"; cleared to {'opaque white' if self.white.value else 'transparent black'}"
                 f"{'; stored alpha over a checkerboard' if self.alpha.value else ''}")  # fmt: skip
