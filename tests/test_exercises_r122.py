@@ -7,6 +7,7 @@ the reference of 8.2 also clamped the plane to the farthest vertex (D8-6).
 
 from __future__ import annotations
 
+import numpy as np
 from exercise_solutions import CORRECT
 
 from teachraster import exercises as ex
@@ -74,3 +75,85 @@ def test_a_cases_own_wall_clock_cap_is_quoted_as_the_cases():
     text = _stopped_on_the_wall(cap=40.0, seconds=2.0, check_wall=41.0)
     assert text.startswith("the case ran for 40 s of wall-clock time on case 120 of 150"), text
     assert "computed for 0.007 s of it" in text, text
+
+
+def _first_words(name, fn):
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    try:
+        report = ex.check(name, fn, budget=60)
+    finally:
+        tries.spend_hints([name])
+    assert not report.passed
+    return report.failures[0].explanation, str(report)
+
+
+def test_an_overflowing_perspective_weight_is_asked_back_on_the_first_try():
+    """N3-2: every overflowing answer was told "divide the smallest w by each w" on its first
+    check, the reference's scaling in words; the words come once two answers have failed."""
+
+    def naive(lam, w):
+        q = np.asarray(lam, float) / np.asarray(w, float)
+        return q / q.sum()
+
+    first, report = _first_words("perspective_weights", naive)
+    assert "divide the smallest w" not in report and "none of which exceeds 1" not in report
+    assert "which of your intermediate quantities is not finite here" in first, first
+    assert "a hint only" in report, report
+    spent = ex.check("perspective_weights", naive, budget=60)
+    assert "divide the smallest w by each w" in spent.failures[0].explanation
+
+
+def test_trilinears_clamp_is_asked_back_on_the_first_try():
+    """N12-1: "clamp it to [0, q] = [0, 3] first, then take its levels and the weight (below 0
+    ... level 0 alone is filtered)" on a first try, in 7.3 and the capstone's floor."""
+    from teachraster.exercises.texture_filtering import trilinear_with
+
+    for mode in ("weight", "extrapolate", "index"):
+        first, report = _first_words("trilinear", lambda *a, m=mode: trilinear_with(*a, clamp=m))
+        assert "clamp it to" not in report and "level 0 alone is filtered" not in report, report
+        assert "the pyramid's levels run from 0 to q = 3: what λ does the filter use" in first
+        assert "a hint only" in report, report
+
+
+def _task_rule(xyz, row0, col0, size, buffer):
+    """8.2's rule as cell 5 states it, in float64: the larger of the plane's minimum over the
+    extreme pixel centres and the nearest vertex, at or behind the farthest stored depth."""
+    xyz = np.asarray(xyz, float)
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    xs = np.array([col0, col0 + size - 1]) + 0.5
+    ys = np.array([row0, row0 + size - 1]) + 0.5
+    plane = min(z1 + a * (x - x1) + b * (y - y1) for x in xs for y in ys)
+    return bool(max(plane, xyz[:, 2].min()) >= np.max(buffer))
+
+
+def test_the_reference_rejects_as_the_tasks_rule_does_beyond_the_farthest_vertex():
+    """D8-6 (r114, latent): the reference clamped the plane to the farthest vertex's depth
+    too, and kept a tile the task's rule rejects."""
+    from teachraster.exercises.hiz_tile import expected_reject, hiz_cases
+
+    xyz = np.array([[0, 0, 0.1], [8, 0, 0.3], [0, 8, 0.5]])
+    tile = (xyz, 16, 16, 8, np.full((8, 8), 0.6))
+    assert _task_rule(*tile) and expected_reject(*tile)
+    for label, args, expected in hiz_cases():
+        assert _task_rule(*args) == expected, label
+
+
+def test_hiz_words_name_the_bound_not_the_nearest_depth():
+    """N8-2: a covered-centres answer was told "the nearest depth the triangle can have in
+    the tile is 0.065" while no fragment there is nearer than 0.166."""
+    from teachraster.exercises.hiz_tile import _covered_bound
+
+    def covered_min(xyz, row0, col0, size, buffer):
+        got = _covered_bound(np.asarray(xyz, float), row0, col0, size, np.asarray(buffer))
+        return False if got is None else got
+
+    first, report = _first_words("hiz_rejects", covered_min)
+    assert "nearest depth the triangle can have" not in report, report
+    assert "the task's lower bound on the triangle's depth in the tile" in first, first
+    spent = ex.check("hiz_rejects", covered_min, budget=60).failures[0].explanation
+    assert "so the bound (no nearer than the nearest vertex) is" in spent, spent

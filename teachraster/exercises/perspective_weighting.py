@@ -178,5 +178,12 @@ PERSPECTIVE_WEIGHTS = Exercise(
          "w, turn that around, and make the weights sum to 1"),
         (" (μ_i ∝ λ_i / w_i; yours already sum to 1)", ": write λ_i in terms of μ and the "
          "three w and turn that around (yours already sum to 1)"),
+        # r122 N3-2: the first failure of every overflowing answer gave the reference's scaling
+        (": form ratios none of which exceeds 1 (divide the smallest w by each w, for instance)",
+         ": which of your intermediate quantities is not finite here, and which quantities "
+         "built from the three w stay finite and nonzero whatever the w?"),
+        ("only the ratios of the w matter: scale by the smallest w, so that no ratio exceeds 1",
+         "only the ratios of the w matter: by which w can you scale so that no ratio "
+         "overflows?"),
     ),
 )  # fmt: skip
