@@ -7,6 +7,8 @@ the reference of 8.2 also clamped the plane to the farthest vertex (D8-6).
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 from exercise_solutions import CORRECT
 
@@ -157,3 +159,52 @@ def test_hiz_words_name_the_bound_not_the_nearest_depth():
     assert "the task's lower bound on the triangle's depth in the tile" in first, first
     spent = ex.check("hiz_rejects", covered_min, budget=60).failures[0].explanation
     assert "so the bound (no nearer than the nearest vertex) is" in spent, spent
+
+
+def _naive_weights(lam, w):
+    """Lesson 04's formula as printed: λ_i / w_i over their sum, in float64."""
+    q = np.asarray(lam, float) / np.asarray(w, float)
+    return q / q.sum()
+
+
+def test_lesson_04s_formula_fails_exactly_the_cases_cell_7_names():
+    """N3-1: cell 7 said the formula fails `perspective_w_ratio_1e6` and
+    `perspective_w_scale`; it fails only cases where a w of 1e-310 has a nonzero λ."""
+    import nbformat
+
+    from teachraster.exercises.perspective_weighting import same_weights, weights_cases
+
+    failing, passing = set(), set()
+    with np.errstate(all="ignore"):
+        for label, (lam, w), mu in weights_cases():
+            ok = same_weights(_naive_weights(lam, w), mu)
+            (passing if ok else failing).add(label)
+            assert ok == (not ((w < 1e-305) & (lam != 0)).any()), label
+    assert (
+        failing
+        and any("w = (1e-300" in s for s in passing)
+        and any("w = (1e+300" in s for s in passing)
+    )
+    path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
+    text = " ".join(nbformat.read(path, 4).cells[7].source.split())
+    assert "fails exactly the check's cases where a vertex with w = 1e-310 has a nonzero λ" in text
+    assert "passes the catalogue's `perspective_w_ratio_1e6` case (w from 1e-3 to 1e3)" in text
+    assert "tests the simulator" not in text and "the simulator's concern, not a GPU's" in text
+
+
+def test_the_affine_floor_marks_every_floor_pixel_as_cell_8_says():
+    """N12-2: cell 8 said a wrong (u, v) "bends or shifts its squares"; affine weights mark
+    every pixel of the floor (one solid block in the third panel)."""
+    from test_capstone import _mine
+
+    from teachraster.exercises import capstone_render as cr
+
+    spec = cr.SCENES["textured_floor"]
+    floor = np.zeros((cr.H, cr.W), bool)
+    for part in cr._parts(spec, cr._frame(spec)):
+        floor |= np.isfinite(part).all(axis=2)
+    report = ex.capstone(
+        "textured_floor",
+        **_mine("textured_floor", perspective_weights=lambda lam, w: np.asarray(lam, float)),
+    )
+    assert report.n_wrong == int(floor.sum()) > 0, (report.n_wrong, floor.sum())
