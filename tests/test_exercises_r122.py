@@ -208,3 +208,14 @@ def test_the_affine_floor_marks_every_floor_pixel_as_cell_8_says():
         **_mine("textured_floor", perspective_weights=lambda lam, w: np.asarray(lam, float)),
     )
     assert report.n_wrong == int(floor.sum()) > 0, (report.n_wrong, floor.sum())
+
+
+def test_a_triangle_missed_whole_is_shown_by_a_pixel_strictly_inside():
+    """D12-3 (r114, carried): the one-winding covers' example was a tie pixel ("centre (2.5,
+    5.5) lies exactly on edge v1→v2"), as if the top-left rule were the mistake."""
+    from test_capstone import _one_winding
+
+    report = ex.check("covers", _one_winding, budget=60)
+    words = next(f.explanation for f in report.failures if "For example" in f.explanation)
+    example = words.split("For example", 1)[1]
+    assert "strictly inside" in example and "lies exactly on edge" not in example, words
