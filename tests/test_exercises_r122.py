@@ -219,3 +219,20 @@ def test_a_triangle_missed_whole_is_shown_by_a_pixel_strictly_inside():
     words = next(f.explanation for f in report.failures if "For example" in f.explanation)
     example = words.split("For example", 1)[1]
     assert "strictly inside" in example and "lies exactly on edge" not in example, words
+
+
+def test_a_product_of_ratios_to_the_largest_w_is_told_why_it_fails():
+    """D3-3 (r114, carried): λ_i·w_j·w_k with the w scaled by the largest (ratios all ≤ 1)
+    was told only "form ratios none of which exceeds 1"."""
+    from teachraster.exercises import tries
+
+    def products(lam, w):
+        lam, w = np.asarray(lam, float), np.asarray(w, float) / np.max(w)
+        q = lam * np.array([w[1] * w[2], w[0] * w[2], w[0] * w[1]])
+        return q / q.sum()
+
+    first, report = _first_words("perspective_weights", products)
+    assert "product of two ratios" not in report and "a hint only" in report, report
+    tries.spend_hints(["perspective_weights"])
+    spent = ex.check("perspective_weights", products, budget=60).failures[0].explanation
+    assert "one per weight: a ratio to the largest w, or a product of two ratios" in spent
