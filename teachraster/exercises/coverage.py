@@ -260,7 +260,9 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
 
 def example_pixel(case: CoverageCase, k: int, got: np.ndarray, expected: np.ndarray):
     """((i, j), centre) of a wrong pixel of triangle ``k`` that shows the rule best: one
-    exactly on a single edge (a tie), else one strictly inside, else the first."""
+    exactly on a single edge (a tie), else one strictly inside, else the first. Where the
+    answer covers none of the triangle's pixels (one winding handled, r114/r122 D12-3: the
+    example was a tie), one strictly inside first: the tie is not the mistake there."""
     wrong = np.argwhere(got != expected)
     xy = case.triangles[k]
     centres = [np.array([case.origin[0] + j + 0.5, case.origin[1] + i + 0.5]) for i, j in wrong]
@@ -268,7 +270,11 @@ def example_pixel(case: CoverageCase, k: int, got: np.ndarray, expected: np.ndar
         return tuple(wrong[0]), centres[0]
     zeros = [int((values_at(xy, c) == 0).sum()) for c in centres]
     inside = [bool((values_at(xy, c) > 0).all()) for c in centres]
-    n = zeros.index(1) if 1 in zeros else (inside.index(True) if True in inside else 0)
+    missed_all = bool(np.any(expected)) and not np.any(np.logical_and(got, expected))
+    if missed_all and True in inside:
+        n = inside.index(True)
+    else:
+        n = zeros.index(1) if 1 in zeros else (inside.index(True) if True in inside else 0)
     return tuple(int(v) for v in wrong[n]), centres[n]
 
 

@@ -6,8 +6,9 @@ farthest one: when even the nearest is no nearer (≥), every fragment of the bl
 depth test (strictly nearer passes) and the block is rejected whole. The triangle's depth is
 affine in screen space (lesson 05b), so over the tile's pixel centres its plane is smallest
 at one of the four *extreme pixel centres* (the corner trick of exercise 8.1), and no
-fragment is nearer than the triangle's nearest vertex: the nearest depth is the larger of
-the two bounds. A tile with an empty pixel (depth +inf, nothing drawn yet) rejects nothing.
+fragment is nearer than the triangle's nearest vertex: the task's lower bound is the larger
+of the two (a bound: it may lie nearer than every fragment of the triangle in the tile). A
+tile with an empty pixel (depth +inf, nothing drawn yet) rejects nothing.
 
 Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
 uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`
@@ -68,9 +69,21 @@ def _bare_plane(xyz, rows, cols):
     return z1 + a * (cols + half - x1) + b * (rows + half - y1)
 
 
+def lower_bound(xyz, row0: int, col0: int, size: int) -> float:
+    """The task's bound: the larger of the plane's minimum over the extreme pixel centres and
+    the nearest vertex's depth. The renderer's plane is also clamped *above*, to the farthest
+    vertex's depth; where all four centres lie beyond it that clamp lowered the bound below
+    the task's rule (r114 D8-6, a tile the rule rejects and the reference kept): there the
+    bare plane's minimum is the bound."""
+    rows, cols = _corners(row0, col0, size)
+    near = float(plane_at(xyz, rows, cols).min())
+    if near >= float(np.max(np.asarray(xyz, dtype=float)[:, 2])):
+        near = max(near, float(plane_at(xyz, rows, cols, clamp=False).min()))
+    return near
+
+
 def expected_reject(xyz, row0, col0, size, buffer) -> bool:
-    nearest = plane_at(xyz, *_corners(row0, col0, size)).min()
-    return bool(nearest >= np.max(buffer))
+    return bool(lower_bound(xyz, row0, col0, size) >= np.max(buffer))
 
 
 def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
@@ -117,7 +130,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         reach = rng.uniform(5, 30, 3)
         xy = centre + reach[:, None] * np.column_stack([np.cos(turn), np.sin(turn)])
         xyz = np.column_stack([np.round(xy * 256) / 256, rng.uniform(0.1, 0.9, 3)])
-        near = plane_at(xyz, *_corners(row0, col0, TILE)).min()
+        near = lower_bound(xyz, row0, col0, TILE)
         # near ties only in the fixed cases (checked once): float32's rounding (about 1e-8
         # here) decides them, float64's (at most 1e-15, r114 D8-2) never. r114 D8-2: ties set
         # to the renderer's plane bit for bit failed a right float64 plane in the notes' own
@@ -154,7 +167,7 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
     finite = buffer[np.isfinite(buffer)]
     outer_r, outer_c = np.array([row0, row0, row0 + size, row0 + size]) - 0.5, \
         np.array([col0, col0 + size, col0, col0 + size]) - 0.5  # fmt: skip
-    near = plane_at(xyz, rows, cols).min()
+    near = lower_bound(xyz, row0, col0, size)
     bare = plane_at(xyz, rows, cols, clamp=False)
     mid_r, mid_c = row0 + (size - 1) / 2, col0 + (size - 1) / 2  # the centre x0 + size/2
     with np.errstate(all="ignore"):
@@ -200,8 +213,8 @@ def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
 
 MISTAKES = {
     "smaller bound": "you took the smaller of the two bounds (the plane at the corners, the "
-    "nearest vertex): no fragment is nearer than either, so the nearest depth a fragment can "
-    "have is the larger of the two (the smaller keeps blocks Hi-Z could reject)",
+    "nearest vertex): no fragment is nearer than either, so none is nearer than the larger "
+    "of the two (the smaller keeps blocks Hi-Z could reject)",
     "plane farthest": "you took the plane's largest value at the corners, its farthest: the "
     "block is hidden only if even its nearest fragment is, so take the plane's smallest "
     "value there",
@@ -217,7 +230,7 @@ MISTAKES = {
     "alone keeps blocks Hi-Z could reject)",
     "no clamp": "you took the bare plane at the corners: where it runs nearer than the "
     "triangle's nearest vertex (a corner outside the triangle), no fragment can be that near; "
-    "the nearest depth is the larger of the two bounds (either alone is safe, but the larger "
+    "the bound asked is the larger of the two (either alone is safe, but the larger "
     "is asked: either alone keeps blocks Hi-Z could reject)",
     "covered centres": "you took the plane's minimum over the centres the triangle covers: "
     "a safe bound, and tighter here, but it costs a coverage test per pixel, the work Hi-Z "
@@ -252,7 +265,7 @@ def _tie_gap(args) -> float | None:
     """The case's nearest depth minus its farthest stored one, when float32 cannot tell them
     apart (an exact or near tie, :data:`TIE`); else None."""
     xyz, row0, col0, size, buffer = args
-    near = float(plane_at(xyz, *_corners(row0, col0, size)).min())
+    near = lower_bound(xyz, row0, col0, size)
     far = float(np.max(buffer))
     if not np.isfinite(far) or abs(near - far) > TIE * max(1.0, abs(far)):
         return None
@@ -287,23 +300,24 @@ def explain_hiz(args, expected, got) -> str:
     xyz, row0, col0, size, buffer = args
     rows, cols = _corners(row0, col0, size)
     corner = plane_at(xyz, rows, cols)
-    nearest, farthest = corner.min(), np.max(buffer)
+    nearest, farthest = lower_bound(xyz, row0, col0, size), np.max(buffer)
     k = int(np.argmin(corner))
     far = num(farthest)
     if far == num(nearest) and farthest != nearest:  # r114: a near tie printed as equal
         far += f" ({abs(farthest - nearest):.1e} {'farther' if farthest > nearest else 'nearer'})"
     return (f"the tile's extreme centres are ({cols[0] + 0.5}, {rows[0] + 0.5}) to "
-            f"({cols[3] + 0.5}, {rows[3] + 0.5}); the triangle's depth is nearest at "
-            f"({cols[k] + 0.5}, {rows[k] + 0.5}), {num(nearest)}; the tile's farthest stored "
+            f"({cols[3] + 0.5}, {rows[3] + 0.5}); the plane is nearest at "
+            f"({cols[k] + 0.5}, {rows[k] + 0.5}), so the bound (no nearer than the nearest "
+            f"vertex) is {num(nearest)}; the tile's farthest stored "
             f"depth is {far}: the block is "
             f"{'rejected' if expected else 'kept'}, you {'rejected' if got else 'kept'} it")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
     return (
-        ". The block is rejected when the nearest depth the triangle can have in the tile (its "
-        "plane at the extreme pixel centres, no nearer than its nearest vertex) is at or "
-        "behind the farthest depth stored there"
+        ". The block is rejected when the task's lower bound on the triangle's depth in the "
+        "tile (its plane at the extreme pixel centres, no nearer than its nearest vertex) is "
+        "at or behind the farthest depth stored there"
     )
 
 
@@ -387,9 +401,12 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
 #: hints until two different answers have failed (r64 08-3: every first failure's header gave
 #: the extreme centres and the nearest one; :attr:`.exercise.Exercise.hints`).
 HIZ_HINTS = (
-    (re.compile(r"the tile's extreme centres are \([^()]*\) to \([^()]*\); the triangle's "
-                r"depth is nearest at \([^()]*\), "),
-     "the nearest depth the triangle can have in the tile is "),
+    # r122 N8-2: "the nearest depth the triangle can have" named the bound, which may lie
+    # nearer than any fragment of the triangle in the tile
+    (re.compile(r"the tile's extreme centres are \([^()]*\) to \([^()]*\); the plane is "
+                r"nearest at \([^()]*\), so the bound \(no nearer than the nearest vertex\) is "),
+     "the task's lower bound on the triangle's depth in the tile (the larger of the two cheap "
+     "bounds) is "),
     (" (its plane at the extreme pixel centres, no nearer than its nearest vertex)",
      " (where in the tile can its depth be smallest, and how near can a fragment be?)"),
     # r73 08-2: the named mistakes stated the bound asked; a question until two have failed
@@ -397,7 +414,7 @@ HIZ_HINTS = (
      "bound, but the larger of the two bounds is asked: the vertex alone keeps blocks Hi-Z "
      "could reject)", ": a safe bound, but not the one asked (it keeps blocks Hi-Z could "
      "reject): what else bounds the triangle's depth in the tile?"),
-    ("; the nearest depth is the larger of the two bounds (either alone is safe, but the "
+    ("; the bound asked is the larger of the two (either alone is safe, but the "
      "larger is asked: either alone keeps blocks Hi-Z could reject)",
      ": what else bounds how near a fragment of the triangle can be?"),
     ("; the bound asked is the one a few tests give: the plane at the tile's extreme pixel "
@@ -406,7 +423,7 @@ HIZ_HINTS = (
     # r94 D8-3: the swapped row and column gave the tile's extreme centres on the first try
     ("; its pixel centres lie at x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size "
      "− ½", ""),
-    (", so the nearest depth a fragment can have is the larger of the two (the smaller keeps "
+    (", so none is nearer than the larger of the two (the smaller keeps "
      "blocks Hi-Z could reject)", ": which of the two, then, bounds how near a fragment can be?"),
 )  # fmt: skip
 

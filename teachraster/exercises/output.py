@@ -6,7 +6,10 @@ kernel take longer than the function itself, and would bury the report. While a 
 first ``KEEP`` lines written from the checking threads (the thread calling ``check`` and the
 threads running its cases), counts the rest, and passes every other thread's output through.
 Afterwards :meth:`Capture.summary` says how much was printed and :meth:`Capture.replay` writes
-the lines kept, under a heading, to the real output. A warning (numpy's "overflow encountered
+the lines kept, under a heading, to the real output. Past the first ``KEEP`` lines a ``print``
+of the checking threads is counted without formatting its arguments (a line per call, plus the
+line breaks of its ``str`` arguments): formatting ten thousand arrays took more CPU than the
+function itself, and printing must not count against the student (r122 D3-2). A warning (numpy's "overflow encountered
 in divide") raised in the checking threads is counted apart, by its text, and said as a
 warning, never as something the function printed (r39 03-2).
 
@@ -20,6 +23,7 @@ warning, never as something the function printed (r39 03-2).
 
 from __future__ import annotations
 
+import builtins
 import sys
 import threading
 import warnings
@@ -60,6 +64,16 @@ class Capture:
             self.lines += len(done)
             room = KEEP - len(self.kept)
             self.kept += [line[:WIDTH] for line in done[:room]]
+
+    def full(self) -> bool:
+        """The cap is reached: further lines are counted only."""
+        return len(self.kept) >= KEEP
+
+    def count_call(self, args, sep, end) -> None:
+        """Count the lines of a ``print`` call past the cap without formatting ``args``."""
+        texts = [a for a in (*args, sep, end) if isinstance(a, str)]
+        with self._lock:
+            self.lines += sum(t.count("\n") for t in texts)
 
     def warn(self, text: str) -> None:
         """Count one warning (its category and message), apart from the printed lines."""
@@ -161,10 +175,22 @@ def captured():
             shown(message, category, filename, lineno, file, line)
 
     warnings.showwarning = showwarning
+    printed = builtins.print
+
+    def quiet_print(*args, sep=" ", end="\n", file=None, flush=False):
+        ours = file is None or file is sys.stdout or file is sys.stderr
+        if ours and capture.owns() and capture.full():
+            capture.count_call(args, sep, end)
+            return None
+        return printed(*args, sep=sep, end=end, file=file, flush=flush)
+
+    builtins.print = quiet_print
     _state.capture = capture
     try:
         yield capture
     finally:
+        if builtins.print is quiet_print:
+            builtins.print = printed
         if warnings.showwarning is showwarning:
             warnings.showwarning = shown
         _state.capture = None

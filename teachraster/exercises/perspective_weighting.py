@@ -12,6 +12,8 @@ Expected answers: :func:`teachraster.core.interpolation.weights_per_row`, the re
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ..core.interpolation import perspective_weights, weights_per_row
@@ -125,7 +127,9 @@ def _overflow_words(args, expected, got) -> str:
     return (
         ": not finite: with w this far from 1, some step overflowed to inf or underflowed to "
         "0 (and inf/inf or 0/0 is nan), yet only the ratios of the w matter: form ratios none "
-        "of which exceeds 1 (divide the smallest w by each w, for instance)"
+        "of which exceeds 1 (divide the smallest w by each w, for instance), one per weight: "
+        "a ratio to the largest w, or a product of two ratios, can underflow to 0 at the "
+        "smallest w, the vertex that dominates μ"
     )
 
 
@@ -178,5 +182,14 @@ PERSPECTIVE_WEIGHTS = Exercise(
          "w, turn that around, and make the weights sum to 1"),
         (" (μ_i ∝ λ_i / w_i; yours already sum to 1)", ": write λ_i in terms of μ and the "
          "three w and turn that around (yours already sum to 1)"),
+        # r122 N3-2: the first failure of every overflowing answer gave the reference's scaling
+        # r122 D3-3: the words also say why ratios to the largest w, or products, fail
+        (re.compile(r": form ratios none of which exceeds 1 \(divide the smallest w by each w, "
+                    r"for instance\), one per weight: .*? dominates μ"),
+         ": which of your intermediate quantities is not finite here, and which quantities "
+         "built from the three w stay finite and nonzero whatever the w?"),
+        ("only the ratios of the w matter: scale by the smallest w, so that no ratio exceeds 1",
+         "only the ratios of the w matter: by which w can you scale so that no ratio "
+         "overflows?"),
     ),
 )  # fmt: skip

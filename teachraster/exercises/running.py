@@ -216,11 +216,7 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
         )
         kind = "timeout"
     else:
-        text = (
-            f"the check ran for {seconds_words(alarm.cap)} of wall-clock time{where}, and "
-            f"your function computed for {seconds_words(alarm.cpu())} of it: the machine is "
-            f"too busy; try again later (or raise the budget: check(..., budget=30))"
-        )
+        text = _too_busy(alarm, b, where)
         kind = "budget"
     if stuck:
         text += (
@@ -229,6 +225,23 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
         )
     b.stopped = f"{text} (the check stopped there)"
     return Outcome(error=text, kind=kind)
+
+
+def _too_busy(alarm: Alarm, b: Budget, where: str) -> str:
+    """The words for a case stopped by a wall-clock cap: the case's own (20 times its CPU
+    limit) or what was left of the whole check's (``WALL_FACTOR`` times its budget). r122
+    D3-2: "the check ran for 0.088 s of wall-clock time" quoted the case's share of what was
+    left as the whole check's time."""
+    if alarm.cap < 20 * alarm.seconds * (1 - 1e-9):  # the check's wall-clock limit
+        wall, cpu = time.perf_counter() - b.start, b.used + alarm.cpu()
+        ran = (f"the check ran for {seconds_words(wall)} of wall-clock time (its limit: "
+               f"{seconds_words(min(WALL_FACTOR * b.seconds, LONGEST))}, {WALL_FACTOR:g} times "
+               f"its budget of CPU){where}, and your function computed for "
+               f"{seconds_words(cpu)} of it")  # fmt: skip
+    else:
+        ran = (f"the case ran for {seconds_words(alarm.wall())} of wall-clock time{where}, "
+               f"and your function computed for {seconds_words(alarm.cpu())} of it")  # fmt: skip
+    return f"{ran}: the machine is too busy; try again later (or raise the budget: check(..., budget=30))"
 
 
 def run_case(body: Callable[[], Any], limit: float | None = None, case: str | None = None):

@@ -306,6 +306,17 @@ NAMED_HINTS = (
 )  # fmt: skip
 
 
+#: r122 N12-1: the clamp and what follows from it, asked back on the first tries (the words
+#: were given in full on a first try, in 7.3's check and the capstone's floor_trilinear)
+CLAMP_HINTS = (
+    (re.compile(r"clamp it to \[0, q\] = \[0, (\d+)\] first"),
+     r"the pyramid's levels run from 0 to q = \1: what λ does the filter use instead"),
+    (", then take its levels and the weight (below 0 the texture is magnified and level 0 "
+     "alone is filtered)", ", and which levels and weight follow from it?"),
+    ("; the weight λ − ⌊λ⌋ then stays in [0, 1]", "? (can a weight lie outside [0, 1]?)"),
+)  # fmt: skip
+
+
 #: 7.2's rule for an answer no mistake explains, said once two different answers have failed,
 #: and the question asked before (r64 07 D2: the method came with the first wrong answer).
 BILINEAR_RULE = (
@@ -616,7 +627,7 @@ def trilinear_exercise(scene) -> Exercise:
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
         _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
         draw=draw_texture_case, scene=scene,
-        hints=((TRILINEAR_RULE, TRILINEAR_HINT), *NAMED_HINTS),
+        hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
     )  # fmt: skip

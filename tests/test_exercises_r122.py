@@ -1,0 +1,238 @@
+"""Review r122 (exercises 03, 08, 12 played as students in fresh processes): a correct
+barycentric printing 200 lines a call was told "the check ran for 0.088 s of wall-clock time
+... the machine is too busy" (D3-2), 3.2's and trilinear's checks gave the answer's words on a
+first try (N3-2, N12-1), 8.2 called its bound "the nearest depth the triangle can have", and
+the reference of 8.2 also clamped the plane to the farthest vertex (D8-6).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from exercise_solutions import CORRECT
+
+from teachraster import exercises as ex
+from teachraster.exercises import output, running
+from teachraster.exercises.alarm import Alarm
+
+
+class Costly:
+    """An argument whose formatting is counted (a big array's ``str`` costs CPU)."""
+
+    formatted = 0
+
+    def __str__(self):
+        Costly.formatted += 1
+        return "costly"
+
+
+def test_printing_past_the_cap_formats_nothing_and_costs_no_cpu():
+    """D3-2: formatting the prints of a chatty function ate the CPU budget (10.4 s of CPU for
+    30 000 prints of arrays: "the check's budget ... ran out on case 140"). Past the lines kept,
+    a print is counted, not formatted."""
+    Costly.formatted = 0
+    right = CORRECT["barycentric"]
+
+    def chatty(xy, p):
+        for k in range(200):
+            print("debug", k, Costly())
+        return right(xy, p)
+
+    report = ex.check("barycentric", chatty, budget=60)
+    assert report.passed, str(report)
+    assert Costly.formatted <= output.KEEP, Costly.formatted
+    assert "your function printed 30000 lines" in str(report), str(report)
+
+
+def test_print_to_a_file_of_ones_own_is_not_swallowed(tmp_path):
+    path = tmp_path / "log.txt"
+    with output.captured() as out, open(path, "w") as fh:
+        for k in range(output.KEEP + 5):
+            print("x", k)
+        print("kept", file=fh)
+    assert path.read_text() == "kept\n"
+    assert out.lines == output.KEEP + 5
+
+
+def _stopped_on_the_wall(cap: float, seconds: float, check_wall: float) -> str:
+    b = running.Budget(10.0)
+    b.start -= check_wall
+    b.used = 0.5
+    alarm = Alarm(seconds, None, 5 * seconds, cap)
+    alarm.why = "wall"
+    alarm._end = (0.007, cap)  # frozen: CPU and wall seconds of the case
+    return running._timeout(alarm, b, "120 of 150").error
+
+
+def test_the_checks_wall_clock_limit_quotes_the_checks_time_not_the_cases():
+    """D3-2: the case's share of what was left (0.088 s) was quoted as the check's time."""
+    text = _stopped_on_the_wall(cap=0.088, seconds=2.0, check_wall=99.95)
+    assert "0.088 s" not in text, text
+    assert text.startswith("the check ran for 100 s of wall-clock time (its limit: 100 s"), text
+    assert "your function computed for 0.51 s of it: the machine is too busy" in text, text
+
+
+def test_a_cases_own_wall_clock_cap_is_quoted_as_the_cases():
+    text = _stopped_on_the_wall(cap=40.0, seconds=2.0, check_wall=41.0)
+    assert text.startswith("the case ran for 40 s of wall-clock time on case 120 of 150"), text
+    assert "computed for 0.007 s of it" in text, text
+
+
+def _first_words(name, fn):
+    from teachraster.exercises import tries
+
+    tries.forget_hints(name)
+    try:
+        report = ex.check(name, fn, budget=60)
+    finally:
+        tries.spend_hints([name])
+    assert not report.passed
+    return report.failures[0].explanation, str(report)
+
+
+def test_an_overflowing_perspective_weight_is_asked_back_on_the_first_try():
+    """N3-2: every overflowing answer was told "divide the smallest w by each w" on its first
+    check, the reference's scaling in words; the words come once two answers have failed."""
+
+    def naive(lam, w):
+        q = np.asarray(lam, float) / np.asarray(w, float)
+        return q / q.sum()
+
+    first, report = _first_words("perspective_weights", naive)
+    assert "divide the smallest w" not in report and "none of which exceeds 1" not in report
+    assert "which of your intermediate quantities is not finite here" in first, first
+    assert "a hint only" in report, report
+    spent = ex.check("perspective_weights", naive, budget=60)
+    assert "divide the smallest w by each w" in spent.failures[0].explanation
+
+
+def test_trilinears_clamp_is_asked_back_on_the_first_try():
+    """N12-1: "clamp it to [0, q] = [0, 3] first, then take its levels and the weight (below 0
+    ... level 0 alone is filtered)" on a first try, in 7.3 and the capstone's floor."""
+    from teachraster.exercises.texture_filtering import trilinear_with
+
+    for mode in ("weight", "extrapolate", "index"):
+        first, report = _first_words("trilinear", lambda *a, m=mode: trilinear_with(*a, clamp=m))
+        assert "clamp it to" not in report and "level 0 alone is filtered" not in report, report
+        assert "the pyramid's levels run from 0 to q = 3: what λ does the filter use" in first
+        assert "a hint only" in report, report
+
+
+def _task_rule(xyz, row0, col0, size, buffer):
+    """8.2's rule as cell 5 states it, in float64: the larger of the plane's minimum over the
+    extreme pixel centres and the nearest vertex, at or behind the farthest stored depth."""
+    xyz = np.asarray(xyz, float)
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    xs = np.array([col0, col0 + size - 1]) + 0.5
+    ys = np.array([row0, row0 + size - 1]) + 0.5
+    plane = min(z1 + a * (x - x1) + b * (y - y1) for x in xs for y in ys)
+    return bool(max(plane, xyz[:, 2].min()) >= np.max(buffer))
+
+
+def test_the_reference_rejects_as_the_tasks_rule_does_beyond_the_farthest_vertex():
+    """D8-6 (r114, latent): the reference clamped the plane to the farthest vertex's depth
+    too, and kept a tile the task's rule rejects."""
+    from teachraster.exercises.hiz_tile import expected_reject, hiz_cases
+
+    xyz = np.array([[0, 0, 0.1], [8, 0, 0.3], [0, 8, 0.5]])
+    tile = (xyz, 16, 16, 8, np.full((8, 8), 0.6))
+    assert _task_rule(*tile) and expected_reject(*tile)
+    for label, args, expected in hiz_cases():
+        assert _task_rule(*args) == expected, label
+
+
+def test_hiz_words_name_the_bound_not_the_nearest_depth():
+    """N8-2: a covered-centres answer was told "the nearest depth the triangle can have in
+    the tile is 0.065" while no fragment there is nearer than 0.166."""
+    from teachraster.exercises.hiz_tile import _covered_bound
+
+    def covered_min(xyz, row0, col0, size, buffer):
+        got = _covered_bound(np.asarray(xyz, float), row0, col0, size, np.asarray(buffer))
+        return False if got is None else got
+
+    first, report = _first_words("hiz_rejects", covered_min)
+    assert "nearest depth the triangle can have" not in report, report
+    assert "the task's lower bound on the triangle's depth in the tile" in first, first
+    spent = ex.check("hiz_rejects", covered_min, budget=60).failures[0].explanation
+    assert "so the bound (no nearer than the nearest vertex) is" in spent, spent
+
+
+def _naive_weights(lam, w):
+    """Lesson 04's formula as printed: λ_i / w_i over their sum, in float64."""
+    q = np.asarray(lam, float) / np.asarray(w, float)
+    return q / q.sum()
+
+
+def test_lesson_04s_formula_fails_exactly_the_cases_cell_7_names():
+    """N3-1: cell 7 said the formula fails `perspective_w_ratio_1e6` and
+    `perspective_w_scale`; it fails only cases where a w of 1e-310 has a nonzero λ."""
+    import nbformat
+
+    from teachraster.exercises.perspective_weighting import same_weights, weights_cases
+
+    failing, passing = set(), set()
+    with np.errstate(all="ignore"):
+        for label, (lam, w), mu in weights_cases():
+            ok = same_weights(_naive_weights(lam, w), mu)
+            (passing if ok else failing).add(label)
+            assert ok == (not ((w < 1e-305) & (lam != 0)).any()), label
+    assert (
+        failing
+        and any("w = (1e-300" in s for s in passing)
+        and any("w = (1e+300" in s for s in passing)
+    )
+    path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
+    text = " ".join(nbformat.read(path, 4).cells[7].source.split())
+    assert "fails exactly the check's cases where a vertex with w = 1e-310 has a nonzero λ" in text
+    assert "passes the catalogue's `perspective_w_ratio_1e6` case (w from 1e-3 to 1e3)" in text
+    assert "tests the simulator" not in text and "the simulator's concern, not a GPU's" in text
+
+
+def test_the_affine_floor_marks_every_floor_pixel_as_cell_8_says():
+    """N12-2: cell 8 said a wrong (u, v) "bends or shifts its squares"; affine weights mark
+    every pixel of the floor (one solid block in the third panel)."""
+    from test_capstone import _mine
+
+    from teachraster.exercises import capstone_render as cr
+
+    spec = cr.SCENES["textured_floor"]
+    floor = np.zeros((cr.H, cr.W), bool)
+    for part in cr._parts(spec, cr._frame(spec)):
+        floor |= np.isfinite(part).all(axis=2)
+    report = ex.capstone(
+        "textured_floor",
+        **_mine("textured_floor", perspective_weights=lambda lam, w: np.asarray(lam, float)),
+    )
+    assert report.n_wrong == int(floor.sum()) > 0, (report.n_wrong, floor.sum())
+
+
+def test_a_triangle_missed_whole_is_shown_by_a_pixel_strictly_inside():
+    """D12-3 (r114, carried): the one-winding covers' example was a tie pixel ("centre (2.5,
+    5.5) lies exactly on edge v1→v2"), as if the top-left rule were the mistake."""
+    from test_capstone import _one_winding
+
+    report = ex.check("covers", _one_winding, budget=60)
+    words = next(f.explanation for f in report.failures if "For example" in f.explanation)
+    example = words.split("For example", 1)[1]
+    assert "strictly inside" in example and "lies exactly on edge" not in example, words
+
+
+def test_a_product_of_ratios_to_the_largest_w_is_told_why_it_fails():
+    """D3-3 (r114, carried): λ_i·w_j·w_k with the w scaled by the largest (ratios all ≤ 1)
+    was told only "form ratios none of which exceeds 1"."""
+    from teachraster.exercises import tries
+
+    def products(lam, w):
+        lam, w = np.asarray(lam, float), np.asarray(w, float) / np.max(w)
+        q = lam * np.array([w[1] * w[2], w[0] * w[2], w[0] * w[1]])
+        return q / q.sum()
+
+    first, report = _first_words("perspective_weights", products)
+    assert "product of two ratios" not in report and "a hint only" in report, report
+    tries.spend_hints(["perspective_weights"])
+    spent = ex.check("perspective_weights", products, budget=60).failures[0].explanation
+    assert "one per weight: a ratio to the largest w, or a product of two ratios" in spent
