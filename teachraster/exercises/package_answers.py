@@ -44,7 +44,7 @@ import types
 from collections.abc import Iterable
 from contextlib import contextmanager
 from dataclasses import replace
-from functools import lru_cache
+from functools import cache, lru_cache
 
 from .exercise import Exercise, PackageAnswer
 from .interrupt import is_transparent
@@ -235,7 +235,15 @@ def _stub_code(f):
     """A code object ``(*args, _watch_, **kwargs)`` that calls ``_watch_(args, kwargs)``, with
     as many free variables as ``f`` has (a function's code can only be swapped for one with
     as many), named as ``f``'s code for the tracebacks."""
-    free = [f"_free{k}" for k in range(len(f.__code__.co_freevars))]
+    code = _stub_template(len(f.__code__.co_freevars))
+    return code.replace(co_name=f.__code__.co_name, co_qualname=f.__code__.co_qualname)
+
+
+@cache
+def _stub_template(n_free: int):
+    """The stub's code for ``n_free`` free variables, compiled once per count (a check swaps
+    hundreds of functions: compiling each anew was a twentieth of a check's CPU)."""
+    free = [f"_free{k}" for k in range(n_free)]
     lines = ["def _outer():", *(f"    {n} = None" for n in free),
              "    def stub(*args, _watch_=None, **kwargs):",
              *([f"        {', '.join(free)}"] if free else []),
@@ -243,8 +251,7 @@ def _stub_code(f):
              "    return stub"]  # fmt: skip
     space: dict = {}
     exec(compile("\n".join(lines), "<teachraster: a watched answer>", "exec"), space)
-    code = space["_outer"]().__code__
-    return code.replace(co_name=f.__code__.co_name, co_qualname=f.__code__.co_qualname)
+    return space["_outer"]().__code__
 
 
 def _swap(f) -> None:
