@@ -1102,6 +1102,56 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     assert "y$ pointing up" in text and "b[1] < a[1]" not in text  # the rule is not given
 
 
+def _far_coverage(absolute, dtype):
+    # the Try it's two float32 rewrites of my_coverage (y up, the y-up tie rule), with origin
+    def coverage(xy, width, height, origin=(0, 0)):
+        xy = np.asarray(xy, dtype=float)
+        a, b, c = xy
+        if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+            xy = xy[[0, 2, 1]]
+        xy = xy.astype(dtype)
+        x, y = (g.astype(dtype) for g in np.meshgrid(origin[0] + np.arange(width) + 0.5,
+                                                     origin[1] + np.arange(height) + 0.5))  # fmt: skip
+        inside = np.ones((height, width), dtype=bool)
+        for p, q in zip(xy, np.roll(xy, -1, axis=0)):
+            if absolute:  # E = Ax + By + C, C = x_p y_q - y_p x_q
+                e = -(q[1] - p[1]) * x + (q[0] - p[0]) * y + (p[0] * q[1] - p[1] * q[0])
+            else:
+                e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
+            owns = q[1] < p[1] or (q[1] == p[1] and q[0] < p[0])
+            inside &= (e > 0) | ((e == 0) & owns)
+        return inside
+
+    return coverage
+
+
+def test_07_try_it_far_from_origin_runs_and_shows_the_failure():
+    # review r119 07-A: the Try it's coverage gets an origin (no grid from the origin, which at
+    # 1e5 px was 1e10 centres), and the absolute float32 form it asks for fails where the
+    # relative one does not; the text quotes what the cell prints
+    import json
+
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    assert ns.try_far_wrong == {100_000: 1, 1_000_000: 1}  # E >= 0 as given: one tie extra
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    sources = ["".join(c["source"]) for c in nb["cells"]]
+    (k,) = [i for i, s in enumerate(sources) if s.startswith("def try_far(")]
+    assert "**Try it:**" in sources[k - 1] and "origin=(0, 0)" in sources[k - 2]
+    text = " ".join(sources[k - 1].split())
+    assert "1 of the 64 wrong at both distances" in text and "16 \\times 16" in text
+    far_case = hardcases.get_case("far_from_origin")
+    assert far_case.run().coverage[100_000].shape == (16, 16)
+    assert int(far_case.run().coverage[100_000].sum()) == 64
+    scope = {"np": np, "far_case": far_case}
+    exec(sources[k].split("\n\n\ntry_far_wrong")[0], scope)
+    absolute32 = scope["try_far"](_far_coverage(True, np.float32))
+    assert absolute32 == {100_000: 64, 1_000_000: 64} == {o: ns.far_wrong[o][1] for o in absolute32}
+    assert scope["try_far"](_far_coverage(False, np.float32)) == {100_000: 0, 1_000_000: 0}
+    assert scope["try_far"](_far_coverage(True, np.float64)) == {100_000: 0, 1_000_000: 0}
+
+
 def test_07_case_picker_driven_by_the_test():
     from teachraster.widgets.case_picker import CasePicker
 
