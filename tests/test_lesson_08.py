@@ -217,7 +217,7 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     # the prediction: asked before the chart, answered by the fitted slopes the chart prints
     (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
     assert cells[k]["metadata"]["jupyter"]["source_hidden"]
-    assert "answer=placements[fastest]" in sources[k]
+    assert 'answer=" > ".join(placements[k] for k in order)' in sources[k]
     assert sources[k + 1].startswith("q_fastest.hold()") and "ax.loglog" in sources[k + 1]
     assert "guess which falls fastest" not in text
     assert ns.fastest == "grid" == min(ns.fitted, key=ns.fitted.get)
@@ -278,9 +278,17 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     # q_fastest: the reasoning's means are in the question, the answer in neither
     (ask,) = [s for s in sources if "q_fastest = Predict(" in s]
     asked = " ".join(ask.split("list(placements.values())")[0].split()).replace('" "', "")
-    assert "edge crosses at most 2√S − 1 of them" in asked and "central limit theorem" in asked
-    assert "passes them one at a time, as §3's" in asked and "fastest</b>" in asked
-    assert "S^−3/4" not in asked and "Mitchell" not in asked
+    assert "the edge crosses at most 2√S − 1 of the S cells" in asked and "coin tosses" in asked
+    assert "meets them one by one, as §3's" in asked and "order the three" in asked
+    assert "S^−3/4" not in asked and "S<sup>−3/4" not in asked and "Mitchell" not in asked
+    # review r119 08-A: the facts are neutral, no adjective grades the options; the answer is
+    # the order of all three (fastest first), which the fitted slopes give
+    for graded in ("no chance", "left to chance", "fastest</b>", "only in the cells"):
+        assert graded not in asked, graded
+    assert ns.order == ["grid", "jittered", "random"] == sorted(ns.fitted, key=ns.fitted.get)
+    assert len(ns.orders) == 6 and ns.q_fastest.answer in ns.orders
+    # 08-B: exponents in widget HTML are typeset (<sup>), not typed as S^−1/2
+    assert "S^−" not in ask and "S^k" not in ask and "S<sup>−1/2</sup>" in ask
     # the magnified intersection: the dashed line (equal depth) parts the samples each won
     a, b, c = ns.dz
     ids = ns.pierced[4].sample_triangle_id
