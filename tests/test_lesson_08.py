@@ -289,6 +289,11 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     assert len(ns.orders) == 6 and ns.q_fastest.answer in ns.orders
     # 08-B: exponents in widget HTML are typeset (<sup>), not typed as S^−1/2
     assert "S^−" not in ask and "S^k" not in ask and "S<sup>−1/2</sup>" in ask
+    # 08-D: the two S^-1/2 curves, random and the grid on axis edges, coincide: captioned
+    assert round(ns.edge_slopes["random"], 1) == round(ns.edge_slopes["grid, axis edges"], 1)
+    at = {r["kind"]: r["mean_error"] for r in ns.edge_rows if r["samples"] == 256}
+    assert abs(at["random"] / at["grid, axis edges"] - 1) < 0.25
+    assert "at large $S$ they nearly coincide, one hiding the other" in flat
     # the magnified intersection: the dashed line (equal depth) parts the samples each won
     a, b, c = ns.dz
     ids = ns.pierced[4].sample_triangle_id

@@ -1011,6 +1011,25 @@ def test_07_catalogue_tables_print_in_one_piece():
         assert len(streams) == 1 and "\n\n\n" not in streams[0]["text"], cell.source[:60]
     sources = [c.source for c in nb.cells if c.cell_type == "code"]
     assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 2
+    # review r119 07-C: the tie-rule checker's table and verdict too, in one output
+    (tie,) = [c for c in nb.cells if c.cell_type == "code" and "def check_tie_rule" in c.source]
+    streams = [o for o in tie.outputs if o.get("output_type") == "stream"]
+    assert len(streams) == 1 and streams[0]["text"].count("centres drawn extra") == 4
+
+
+def test_07_triangles_numbered_from_1():
+    """Review r119 07-B: the fan, the slivers and the picker's trio count triangles from 1, as
+    the subpixel insets and the conventions' v1, v2, v3 do."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    assert f"the hub centre belongs to triangle {ns.hub_owner + 1};" in printed
+    assert ns.owners == [ns.below] == [1]
+    assert "owner of the shared row: sliver [2] (the sliver below the shared edge is 2)" in printed
+    a, b, c = ns.fan_trio
+    assert f"triangles {a + 1} and {c + 1} touch across triangle {b + 1}," in printed
+    assert "triangle 0" not in printed and "sliver 0" not in printed
 
 
 def test_07_case_texts_match_what_the_lesson_prints():
@@ -1075,7 +1094,7 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     cell = next("".join(c["source"]) for c in nb["cells"]
                 if "def check_tie_rule" in "".join(c["source"]))  # fmt: skip
-    scope = {"np": np, "hardcases": hardcases}
+    scope = {"np": np, "hardcases": hardcases, "say": lambda lines: print("\n".join(lines))}
     exec(cell.split("\n\n\nmy_verdict")[0], scope)
     assert ns.my_verdict.startswith("Not yet") and "Extra centres" in ns.my_verdict  # E >= 0
     assert "Missing" not in ns.my_verdict
@@ -1164,7 +1183,7 @@ def test_07_case_picker_driven_by_the_test():
         picker.case.value = "diagonal_sliver"
         assert len(picker._case.triangles) == 1 and (picker.naive_counts < 2).all()
         key = picker.info.value.split("<b>key</b>")[1]
-        assert "triangle 0" in key and "one colour per" not in key and "twice" not in key
+        assert "triangle 1" in key and "one colour per" not in key and "twice" not in key
         # r57 07-3: the centres are drawn, filled where covered, in both panels
         for ax in picker.axes:
             dots = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) > 3]
