@@ -277,7 +277,7 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     assert "are each **one fixed draw** (`tr.sample_pattern(S, kind)`, seed 0)" in flat
     # q_fastest: the reasoning's means are in the question, the answer in neither
     (ask,) = [s for s in sources if "q_fastest = Predict(" in s]
-    asked = " ".join(ask.split("list(placements.values())")[0].split()).replace('" "', "")
+    asked = " ".join(ask.split("\n    orders,\n")[0].split()).replace('" "', "")
     assert "the edge crosses at most 2√S − 1 of the S cells" in asked and "coin tosses" in asked
     assert "meets them one by one, as §3's" in asked and "order the three" in asked
     assert "S^−3/4" not in asked and "S<sup>−3/4" not in asked and "Mitchell" not in asked
