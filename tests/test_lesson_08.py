@@ -217,7 +217,7 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     # the prediction: asked before the chart, answered by the fitted slopes the chart prints
     (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
     assert cells[k]["metadata"]["jupyter"]["source_hidden"]
-    assert "answer=placements[fastest]" in sources[k]
+    assert 'answer=" > ".join(order)' in sources[k]
     assert sources[k + 1].startswith("q_fastest.hold()") and "ax.loglog" in sources[k + 1]
     assert "guess which falls fastest" not in text
     assert ns.fastest == "grid" == min(ns.fitted, key=ns.fitted.get)
@@ -277,10 +277,23 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     assert "are each **one fixed draw** (`tr.sample_pattern(S, kind)`, seed 0)" in flat
     # q_fastest: the reasoning's means are in the question, the answer in neither
     (ask,) = [s for s in sources if "q_fastest = Predict(" in s]
-    asked = " ".join(ask.split("list(placements.values())")[0].split()).replace('" "', "")
-    assert "edge crosses at most 2√S − 1 of them" in asked and "central limit theorem" in asked
-    assert "passes them one at a time, as §3's" in asked and "fastest</b>" in asked
-    assert "S^−3/4" not in asked and "Mitchell" not in asked
+    asked = " ".join(ask.split("\n    orders,\n")[0].split()).replace('" "', "")
+    assert "the edge crosses at most 2√S − 1 of the S cells" in asked and "coin tosses" in asked
+    assert "meets them one by one, as §3's" in asked and "order the three" in asked
+    assert "S^−3/4" not in asked and "S<sup>−3/4" not in asked and "Mitchell" not in asked
+    # review r119 08-A: the facts are neutral, no adjective grades the options; the answer is
+    # the order of all three (fastest first), which the fitted slopes give
+    for graded in ("no chance", "left to chance", "fastest</b>", "only in the cells"):
+        assert graded not in asked, graded
+    assert ns.order == ["grid", "jittered", "random"] == sorted(ns.fitted, key=ns.fitted.get)
+    assert len(ns.orders) == 6 and " > ".join(ns.order) in ns.orders
+    # 08-B: exponents in widget HTML are typeset (<sup>), not typed as S^−1/2
+    assert "S^−" not in ask and "S^k" not in ask and "S<sup>−1/2</sup>" in ask
+    # 08-D: the two S^-1/2 curves, random and the grid on axis edges, coincide: captioned
+    assert round(ns.edge_slopes["random"], 1) == round(ns.edge_slopes["grid, axis edges"], 1)
+    at = {r["kind"]: r["mean_error"] for r in ns.edge_rows if r["samples"] == 256}
+    assert abs(at["random"] / at["grid, axis edges"] - 1) < 0.25
+    assert "at large $S$ they nearly coincide, one hiding the other" in flat
     # the magnified intersection: the dashed line (equal depth) parts the samples each won
     a, b, c = ns.dz
     ids = ns.pierced[4].sample_triangle_id

@@ -1011,6 +1011,28 @@ def test_07_catalogue_tables_print_in_one_piece():
         assert len(streams) == 1 and "\n\n\n" not in streams[0]["text"], cell.source[:60]
     sources = [c.source for c in nb.cells if c.cell_type == "code"]
     assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 2
+    # review r119 07-C: the tie-rule checker's table and verdict too, in one output
+    (tie,) = [c for c in nb.cells if c.cell_type == "code" and "def check_tie_rule" in c.source]
+    streams = [o for o in tie.outputs if o.get("output_type") == "stream"]
+    assert len(streams) == 1 and streams[0]["text"].count("centres drawn extra") == 4
+
+
+def test_07_triangles_numbered_from_1():
+    """Review r119 07-B: the fan, the slivers and the picker's trio count triangles from 1, as
+    the subpixel insets and the conventions' v1, v2, v3 do."""
+    import re
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    assert f"the hub centre belongs to triangle {ns.hub_owner + 1};" in printed
+    assert ns.owners == [ns.below] == [1]
+    assert "owner of the shared row: sliver [2] (the sliver below the shared edge is 2)" in printed
+    a, b, c = ns.fan_trio
+    assert f"triangles {a + 1} and {c + 1} touch across triangle {b + 1}," in printed
+    # no triangle or sliver numbered 0 ("a triangle 0.0025 px wide" is a width)
+    assert not re.search(r"\b(triangle|sliver) 0(?![.\d])", printed)
 
 
 def test_07_case_texts_match_what_the_lesson_prints():
@@ -1075,7 +1097,7 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     cell = next("".join(c["source"]) for c in nb["cells"]
                 if "def check_tie_rule" in "".join(c["source"]))  # fmt: skip
-    scope = {"np": np, "hardcases": hardcases}
+    scope = {"np": np, "hardcases": hardcases, "say": lambda lines: print("\n".join(lines))}
     exec(cell.split("\n\n\nmy_verdict")[0], scope)
     assert ns.my_verdict.startswith("Not yet") and "Extra centres" in ns.my_verdict  # E >= 0
     assert "Missing" not in ns.my_verdict
@@ -1102,6 +1124,56 @@ def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
     assert "y$ pointing up" in text and "b[1] < a[1]" not in text  # the rule is not given
 
 
+def _far_coverage(absolute, dtype):
+    # the Try it's two float32 rewrites of my_coverage (y up, the y-up tie rule), with origin
+    def coverage(xy, width, height, origin=(0, 0)):
+        xy = np.asarray(xy, dtype=float)
+        a, b, c = xy
+        if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+            xy = xy[[0, 2, 1]]
+        xy = xy.astype(dtype)
+        x, y = (g.astype(dtype) for g in np.meshgrid(origin[0] + np.arange(width) + 0.5,
+                                                     origin[1] + np.arange(height) + 0.5))  # fmt: skip
+        inside = np.ones((height, width), dtype=bool)
+        for p, q in zip(xy, np.roll(xy, -1, axis=0)):
+            if absolute:  # E = Ax + By + C, C = x_p y_q - y_p x_q
+                e = -(q[1] - p[1]) * x + (q[0] - p[0]) * y + (p[0] * q[1] - p[1] * q[0])
+            else:
+                e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
+            owns = q[1] < p[1] or (q[1] == p[1] and q[0] < p[0])
+            inside &= (e > 0) | ((e == 0) & owns)
+        return inside
+
+    return coverage
+
+
+def test_07_try_it_far_from_origin_runs_and_shows_the_failure():
+    # review r119 07-A: the Try it's coverage gets an origin (no grid from the origin, which at
+    # 1e5 px was 1e10 centres), and the absolute float32 form it asks for fails where the
+    # relative one does not; the text quotes what the cell prints
+    import json
+
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    assert ns.try_far_wrong == {100_000: 1, 1_000_000: 1}  # E >= 0 as given: one tie extra
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    sources = ["".join(c["source"]) for c in nb["cells"]]
+    (k,) = [i for i, s in enumerate(sources) if s.startswith("def try_far(")]
+    assert "**Try it:**" in sources[k - 1] and "origin=(0, 0)" in sources[k - 2]
+    text = " ".join(sources[k - 1].split())
+    assert "1 of the 64 wrong at both distances" in text and "16 \\times 16" in text
+    far_case = hardcases.get_case("far_from_origin")
+    assert far_case.run().coverage[100_000].shape == (16, 16)
+    assert int(far_case.run().coverage[100_000].sum()) == 64
+    scope = {"np": np, "far_case": far_case}
+    exec(sources[k].split("\n\n\ntry_far_wrong")[0], scope)
+    absolute32 = scope["try_far"](_far_coverage(True, np.float32))
+    assert absolute32 == {100_000: 64, 1_000_000: 64} == {o: ns.far_wrong[o][1] for o in absolute32}
+    assert scope["try_far"](_far_coverage(False, np.float32)) == {100_000: 0, 1_000_000: 0}
+    assert scope["try_far"](_far_coverage(True, np.float64)) == {100_000: 0, 1_000_000: 0}
+
+
 def test_07_case_picker_driven_by_the_test():
     from teachraster.widgets.case_picker import CasePicker
 
@@ -1114,7 +1186,7 @@ def test_07_case_picker_driven_by_the_test():
         picker.case.value = "diagonal_sliver"
         assert len(picker._case.triangles) == 1 and (picker.naive_counts < 2).all()
         key = picker.info.value.split("<b>key</b>")[1]
-        assert "triangle 0" in key and "one colour per" not in key and "twice" not in key
+        assert "triangle 1" in key and "one colour per" not in key and "twice" not in key
         # r57 07-3: the centres are drawn, filled where covered, in both panels
         for ax in picker.axes:
             dots = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) > 3]

@@ -95,7 +95,12 @@ def test_sampling_key_does_not_name_the_signal_twice_without_a_prefilter():
     fig, axes = plt.subplots(3, 1)
     art = plot_sampling(axes, sample_signal(32, 0.0))
     texts = lambda: [t.get_text() for t in axes[0].get_legend().get_texts()]  # noqa: E731
-    assert texts()[1] == "prefiltered\n(at width 0: the signal)"
-    update_sampling(art, sample_signal(32, 2.0))
-    assert texts()[1] == "prefiltered\n(at width 0: the signal)"
+    assert texts()[1] == "prefiltered, width 0.00\n(none: the signal)"
+    # review r119 08-C: at width 4 the key no longer says "the signal"; the first, longest
+    # line keeps its length, so the key's box keeps its size (r101 08-D's stale sliver)
+    update_sampling(art, sample_signal(32, 4.0))
+    assert texts()[1] == "prefiltered, width 4.00\n(a local average)"
+    assert "the signal" not in texts()[1]
+    update_sampling(art, sample_signal(32, 0.5))
+    assert texts()[1].split("\n")[0] == "prefiltered, width 0.50"
     plt.close(fig)

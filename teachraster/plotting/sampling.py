@@ -83,6 +83,7 @@ class SamplingResult:
     nyquist: float
     alias_from: float  # x beyond which the signal is above the Nyquist limit
     rms_error: float  # reconstruction against the ideal, over the whole signal
+    width: float = 0.0  # the prefilter's width, in sample spacings (0: none)
 
 
 def sample_signal(rate: int, width: float, kernel: str = "box") -> SamplingResult:
@@ -110,11 +111,18 @@ def sample_signal(rate: int, width: float, kernel: str = "box") -> SamplingResul
     alias_from = float(np.clip((nyquist - f0) / (f1 - f0), 0.0, 1.0))
     rms = float(np.sqrt(np.mean((reconstructed - ideal) ** 2)))
     return SamplingResult(x, signal, filtered, sample_x, samples, reconstructed, ideal,
-                          float(nyquist), alias_from, rms)  # fmt: skip
+                          float(nyquist), alias_from, rms, float(width))  # fmt: skip
 
 
-#: the key of the prefiltered line, the same at every filter width
-PREFILTERED_KEY = "prefiltered\n(at width 0: the signal)"
+def prefiltered_key(width: float) -> str:
+    """The key of the prefiltered line at filter ``width``: the signal itself at 0, else a
+    local average. Its first line, the longest, has the same length at every width (digits
+    are equally wide), so the key's box keeps its size (review r101 08-D: a key that changed
+    size left a stale sliver in the page's picture; review r119 08-C: a key that said "at
+    width 0: the signal" at every width was stale at every other width)."""
+    return f"prefiltered, width {width:.2f}\n" + (
+        "(none: the signal)" if width <= 0 else "(a local average)"
+    )
 
 
 @dataclass
@@ -165,13 +173,12 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
 
 
 def _name_prefiltered(art: SamplingArtists, result: SamplingResult) -> None:
-    """The key of the "prefiltered" line says what it is at width 0 (the signal itself, not
-    a second curve) in one text at every width: a text that changed with the filter left a
-    stale sliver of the longer one in the page's picture (review r101 08-D)."""
+    """The key of the "prefiltered" line says what it is at the current width: at 0 the signal
+    itself, not a second curve (:func:`prefiltered_key`)."""
     legend = art.filtered.axes.get_legend()
     if legend is None:
         return
-    legend.get_texts()[1].set_text(PREFILTERED_KEY)
+    legend.get_texts()[1].set_text(prefiltered_key(result.width))
 
 
 def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:

@@ -55,7 +55,7 @@ OWNER_COLORS = ("#1f77b4", "#98df8a", "#9467bd", "#dbdb8d", "#17becf", "#c7c7c7"
 #: owners so that neighbours never share one: 16 colours for the fan's 16 owners put near
 #: twins side by side (review r11, 07: "two olives, two greys and two purples").
 NEIGHBOUR_COLORS = (COLORS["fill"], "#F0E442", "#009E73", "#9467bd", "#999999")
-#: The naive panel's "covered once": a light grey, not the sky blue that is triangle 0's colour
+#: The naive panel's "covered once": a light grey, not the sky blue that is triangle 1's colour
 #: in the owner panel beside it (review r13, 07: one colour, two meanings in one picture).
 NAIVE_ONCE = "#c8c8c8"
 #: Separate copies of one triangle: pixels every copy covers, and pixels only some cover.
@@ -661,13 +661,14 @@ class CasePicker:
                     f"onto the first: {swatch(EVERY_COPY, 'covered by every copy')}, "
                     f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}; "
                     + self._marks_html())  # fmt: skip
+        # triangles numbered from 1, as in the lesson's text (review r119 07-B)
         # name only what the panels draw (review r8, lesson 07: a one-triangle case listed
         # three owner colours and a class of pixels covered twice that neither panel showed)
         owners = sorted({int(k) for k in np.unique(self.owner) if k >= 0})
         if not owners:
             left = "left, no pixel owned"
         elif len(owners) == 1:
-            left = f"left, {swatch(self.colors[owners[0]], f'triangle {owners[0]}')}"
+            left = f"left, {swatch(self.colors[owners[0]], f'triangle {owners[0] + 1}')}"
         elif len(set(self.colors.values())) == len(owners):
             more = "…" if len(owners) > 3 else ""
             left = (
@@ -702,7 +703,11 @@ class CasePicker:
         for i, j in self.hubs:
             owner = int(self.owner[i, j])
             who = (
-                f"triangle {owner}" if owner >= 0 else "no triangle" if owner == NONE else "several"
+                f"triangle {owner + 1}"
+                if owner >= 0
+                else "no triangle"
+                if owner == NONE
+                else "several"
             )
             key += (f"; outlined in black, pixel ({i}, {j}): its centre is a vertex of several "
                     f"triangles, ours gives it to {swatch(self._owner_fill(owner), who)}")  # fmt: skip
