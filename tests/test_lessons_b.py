@@ -509,6 +509,21 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     assert "not the front" not in text
     assert 'off it at $d = 1$ and $d = 2$ (their "front:" lines end "N=4 -> perspective")' in text
     assert "on it again at $d = 9$, 30 and 128" in text
+    # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
+    assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
+    assert 0.5 * ns.c["divides"] < ns.setup_cycles / 4 < ns.c["divides"]  # "nearly a divide"
+    # 06-9: the lesson ends on a sentence; "all but a handful", "no sign and no pixel"
+    assert "only their cost tells them apart" in " ".join(ns_markdown_last().split())
+    assert max(ns.step_near.values()) <= 10 and not any(ns.step_flips.values())
+    assert not any(ns.step_differ.values())
+
+
+def ns_markdown_last():
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())["cells"]
+    assert cells[-1]["cell_type"] == "markdown"
+    return "".join(cells[-1]["source"])
 
 
 def test_every_predict_pixels_names_what_it_asks():
