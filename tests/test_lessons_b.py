@@ -58,7 +58,11 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     assert estimate == pytest.approx(n16["error"], rel=0.05) and 30 <= n16["error"] < 100
     # r113 06-2: a choice of magnitudes, asked before anything gives r or the change (it was
     # lesson 04's formula with both plugged in): the mean under a texel, the worst tens
-    assert n16["mean_abs_texels"] < 1 and ns.quake_answer == ns.quake_choices[2]
+    assert n16["mean_abs_texels"] < 1 and ns.quake_answer == ns.quake_choices[1]
+    # r118 06-4: no choice split by a magnitude nothing before the question shows; the right
+    # one is "many times" the mean (the printed max / mean), the question cues lesson 04
+    assert n16["error"] > 10 * n16["mean_abs_texels"] and "many times" in ns.quake_answer
+    assert not any("10 to 100" in c for c in ns.quake_choices)
     assert len(set(ns.quake_choices)) == 4
     source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
     asked = source[
@@ -68,6 +72,7 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     ]
     assert "√r" not in asked and "ratio_q" not in asked and "change_q" not in asked
     assert "quake_choices" in asked and "answer=quake_answer" in asked
+    assert "misses by more the more w changes" in asked  # r118 06-4: lesson 04's cue
     # review r7 06-1: max / mean falls as N grows ("most at N = 2, least at N = 32"), and the
     # worst pixel is many times the mean at every N
     ratios = [ns.max_over_mean[n] for n in sorted(ns.max_over_mean)]
@@ -459,7 +464,7 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     assert sorted(ns.price_items) == sorted(ns.price_order)
     # D1: the held headline says the front shrinks, not that nothing changes; r102 06-1: and
     # agrees with q_price, whose answer reorders the costs: the costs reorder, the front not
-    assert ns.FRONT_TEXT.startswith("**Cheaper divides reorder the costs, not the front.**")
+    assert ns.FRONT_TEXT.startswith("**Cheaper divides reorder the costs; the front keeps its")
     assert "never reorder" not in ns.FRONT_TEXT
     # the order at d = 1 is q_price's (N = 2 after the exact divide), at §1's 30 N = 2 before it
     assert ns.order_at[1].index("N=2") > ns.order_at[1].index("perspective")
@@ -479,6 +484,46 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
         assert "Grey: off the front." in ex.widget.children[0].value  # F3
     finally:
         ex.close()
+
+
+def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
+    """Review r118 06-1: the held headline said the front did not change, while its own text
+    and the printed fronts had N = 2 off it at d = 1 and 2. It says what the printed "front:"
+    lines show: the same order at every price, N = 2 off at d = 1, 2 and on at 9, 30, 128."""
+    import re
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("06_what_accuracy_costs")
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    fronts = {int(d): f.split(" -> ") for d, f in re.findall(
+        r"divide = +(\d+) cycles:.*\n  front: (.*)\n", printed)}  # fmt: skip
+    assert fronts == ns.front_at and sorted(fronts) == [1, 2, 9, 30, 128]
+    off = [d for d, f in fronts.items() if "N=2" not in f]
+    assert off == [1, 2] and ns.d2 == 3  # "off it at d = 1 and d = 2", "d <= 3"
+    for d, front in fronts.items():  # the others on it at every price, in one order
+        assert [v for v in fronts[128] if v != "N=2"] == [v for v in front if v != "N=2"]
+        assert front[-2:] == (["N=4", "perspective"] if d in off else ["N=2", "perspective"])
+    text = " ".join(ns.FRONT_TEXT.split())
+    assert "the front keeps its order and loses only $N = 2$" in text
+    assert "not the front" not in text
+    assert 'off it at $d = 1$ and $d = 2$ (their "front:" lines end "N=4 -> perspective")' in text
+    assert "on it again at $d = 9$, 30 and 128" in text
+    # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
+    assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
+    assert 0.5 * ns.c["divides"] < ns.setup_cycles / 4 < ns.c["divides"]  # "nearly a divide"
+    # 06-9: the lesson ends on a sentence; "all but a handful", "no sign and no pixel"
+    assert "only their cost tells them apart" in " ".join(ns_markdown_last().split())
+    assert max(ns.step_near.values()) <= 10 and not any(ns.step_flips.values())
+    assert not any(ns.step_differ.values())
+
+
+def ns_markdown_last():
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())["cells"]
+    assert cells[-1]["cell_type"] == "markdown"
+    return "".join(cells[-1]["source"])
 
 
 def test_every_predict_pixels_names_what_it_asks():
@@ -771,6 +816,11 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
             exec(src, scope)  # the question cell, as the lesson runs it
             q = scope[name]
             assert answered(q, value) is verdict, (name, value)
+            if name == "q_bits":  # r118 06-3: 50 by lesson 02's closed box is explained
+                said = "right for lesson 02's box, whose far edge is <i>in</i>"
+                assert (
+                    (said in q.feedback.value) is (value == "50") == (value == str(ns.closed_bits))
+                )
             assert q.revealed and q.check.disabled and q.given is not None
 
 

@@ -371,3 +371,22 @@ def test_held_outputs_stay_in_the_cell_where_tests_read_them(monkeypatch, headle
     assert len(pngs) == 1
     marked = ["teachraster-held" in o.get("data", {}).get("text/html", "") for o in outputs]
     assert marked == ([True, False, False] if headless == "0" else [False, False])
+
+
+def test_a_note_explains_one_given_answer():
+    """Review r118 06-3: a number reached by a sound route that does not fit the question
+    (50 bits, lesson 02's closed box) gets its own line in the verdict; others do not."""
+    for value, noted in (("50", True), ("49", False), ("33", False)):
+        q = Predict("Bits?", answer=49, notes={50: "far edge <i>in</i>"}, headless=False)
+        q.control.value = value
+        q.check.click()
+        assert ("far edge <i>in</i>" in q.feedback.value) is noted, value
+    q = Predict("Which?", ["a", "b"], answer="a", notes={"b": "why b"}, headless=False)
+    q.control.value = "b"
+    q.check.click()
+    assert "why b" in q.feedback.value and q.correct is False
+    for notes, error in (([1], TypeError), ({50: ""}, TypeError), ({"x": "y"}, TypeError)):
+        with pytest.raises(error, match="notes"):
+            Predict("Bits?", answer=49, notes=notes)
+    with pytest.raises(ValueError, match="notes"):
+        Predict("Which?", ["a", "b"], answer="a", notes={"c": "no such choice"})

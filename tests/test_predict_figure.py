@@ -317,6 +317,12 @@ def test_the_revealed_pixels_have_a_key_and_missed_ones_are_not_orange():
     for words in ("yours, and right", "missed", "marked, not among them"):
         assert words in legend
     assert "#CC79A7" in legend and "#E69F00" not in legend
+    # review r118 06-6: missed cells filled and outlined solid, 4 px (a dashed 3-px outline
+    # read as faint dots on a projector); the key shows the same fill
+    pixels = js.split("function mountPixels")[-1].split("function reveal")[0]
+    assert "ctx.fillStyle = MISSED_FILL" in pixels and "[5, 3]" not in pixels
+    assert "has(r, c) ? 3 : 4" in pixels and "dashed" not in legend
+    assert "rgba(204,121,167,0.5)" in legend and "4px solid #CC79A7" in legend
 
 
 def test_a_dragged_marker_with_a_whole_number_readout_lands_on_a_whole_number():

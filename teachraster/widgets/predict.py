@@ -36,7 +36,7 @@ import itertools
 import math
 import os
 import struct
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
@@ -206,6 +206,24 @@ def _check_arguments(question, choices, answer, tolerance):
     return None, tolerance
 
 
+def _check_notes(notes, choices) -> dict:
+    """Validate ``notes``: a mapping of given answers (a choice, or a number) to lines."""
+    if notes is None:
+        return {}
+    if not isinstance(notes, Mapping):
+        raise TypeError(f"notes must be a mapping of answers to lines, got {type(notes).__name__}")
+    checked = {}
+    for key, text in notes.items():
+        if not isinstance(text, str) or not text.strip():
+            raise TypeError(f"notes: the line for {key!r} must be a non-empty str, got {text!r}")
+        if choices is not None and str(key) not in choices:
+            raise ValueError(f"notes: {key!r} is not one of choices {choices!r}")
+        if choices is None and (isinstance(key, bool) or not isinstance(key, int | float)):
+            raise TypeError(f"notes: keys must be numbers when there are no choices, got {key!r}")
+        checked[str(key) if choices is not None else float(key)] = text
+    return checked
+
+
 class Predict(HoldsAnswer):
     """Ask first, reveal after: a multiple-choice or numeric prediction question.
 
@@ -229,6 +247,10 @@ class Predict(HoldsAnswer):
         default :func:`is_headless` decides.
     style : str, optional
         Plotting style the figure is drawn in ("classroom" by default).
+    notes : mapping, optional
+        A line (HTML allowed) the verdict adds for one given answer, keyed by a choice or a
+        number: why that answer, reached by a sound route, is not this one (review r118 06-3:
+        lesson 02's closed box gives 50 bits where the half-open range gives 49).
 
     Attributes
     ----------
@@ -264,8 +286,10 @@ class Predict(HoldsAnswer):
         *,
         headless: bool | None = None,
         style: str | None = "classroom",
+        notes: Mapping | None = None,
     ) -> None:
         self.choices, self.tolerance = _check_arguments(question, choices, answer, tolerance)
+        self.notes = _check_notes(notes, self.choices)
         if figure is not None and not callable(figure):
             raise TypeError(f"figure must be callable or None, got {type(figure).__name__}")
         self.question, self.explain, self.figure, self.style = question, explain, figure, style
@@ -359,9 +383,11 @@ class Predict(HoldsAnswer):
         said = html.escape(self.given if self.choices else f"{self.given:g}")
         word = "Right" if self.correct else "Not quite"
         colour = "#009E73" if self.correct else "#D55E00"  # Okabe–Ito bluish green, vermillion
+        note = next((text for key, text in self.notes.items() if key == self.given), "")
         return (
             f"<span style='color:{colour};font-weight:bold'>{word}.</span> You predicted "
             f"<b>{said}</b>; the answer is <b>{self._answer_text()}</b>."
+            + (f" {note}" if note else "")
         )
 
     def reveal(self) -> None:

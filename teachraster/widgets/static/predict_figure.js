@@ -31,13 +31,16 @@ export function pixelVerdict(answer, given, width) {
     correct: right === truth.size && mine.size === truth.size };
 }
 
+// A missed cell's fill: Okabe-Ito's reddish purple (#CC79A7), half transparent
+export const MISSED_FILL = "rgba(204,121,167,0.5)";
+
 // The key to the revealed answer, in the colours the figure draws it in (a legend under the
 // verdict: the outlines alone do not say which is which on a projector, review r31/r34)
 export function pixelLegend() {
   const box = (style) => `<span style="display:inline-block;width:14px;height:14px;` +
     `vertical-align:middle;margin:0 4px 0 10px;box-sizing:border-box;${style}"></span>`;
   return `<br>${box(`border:3px solid ${OKABE.green}`)}yours, and right` +
-    `${box(`border:3px dashed ${OKABE.purple}`)}missed` +
+    `${box(`background:${MISSED_FILL};border:4px solid ${OKABE.purple}`)}missed` +
     `${box(`background:rgba(0,114,178,0.45);border:2px solid ${OKABE.vermillion}`)}` +
     `marked, not among them (crossed)`;
 }
@@ -251,15 +254,21 @@ function mountPixels(root, data, host) {
     }
     if (state.revealed) {
       const truth = new Set(data.answer.map(([r, c]) => r * W + c));
-      ctx.lineWidth = 3;
       for (const [r, c] of data.answer) {
         const [x, y, w, h] = cell(r, c);
-        // missed: purple, not the orange the lessons draw their diamonds and markers in
+        // missed: purple, not the orange the lessons draw their diamonds and markers in;
+        // filled and outlined solid and thick, so that where the answer was (the verdict's
+        // point) reads on a projector (review r118 06-6: a dashed 3-px outline on a small
+        // cell looked faint and dotted)
+        if (!has(r, c)) {
+          ctx.fillStyle = MISSED_FILL;
+          ctx.fillRect(x + 1, y + 1, w - 2, h - 2);
+        }
+        ctx.lineWidth = has(r, c) ? 3 : 4;
         ctx.strokeStyle = has(r, c) ? OKABE.green : OKABE.purple;
-        ctx.setLineDash(has(r, c) ? [] : [5, 3]);
         ctx.strokeRect(x + 2.5, y + 2.5, w - 5, h - 5);
       }
-      ctx.setLineDash([]);
+      ctx.lineWidth = 3;
       ctx.strokeStyle = OKABE.vermillion;
       for (const [r, c] of state.given) {
         if (truth.has(r * W + c)) continue;
