@@ -204,7 +204,8 @@ def test_capstone_glass_points_to_no_over_that_exercise_9_lacks():
 
     text = " ".join(_markdown("12_capstone").split())
     assert "or from your exercise 9" not in text
-    assert "exercise 9.2's shares derive it too" in text
+    # and nothing says it is derived there (r94 D12-2: it is lesson 12b §4's rule, copied)
+    assert "copy it from there" in text and "shares derive" not in text
 
 
 def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():

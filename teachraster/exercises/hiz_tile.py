@@ -405,8 +405,8 @@ HIZ_HINTS = (
     # nearer than any fragment of the triangle in the tile
     (re.compile(r"the tile's extreme centres are \([^()]*\) to \([^()]*\); the plane is "
                 r"nearest at \([^()]*\), so the bound \(no nearer than the nearest vertex\) is "),
-     "the task's lower bound on the triangle's depth in the tile (the larger of the two cheap "
-     "bounds) is "),
+     # not "(the larger of the two)": that is what the "smaller bound" mistake is asked (r94)
+     "the task's lower bound on the triangle's depth in the tile is "),
     (" (its plane at the extreme pixel centres, no nearer than its nearest vertex)",
      " (where in the tile can its depth be smallest, and how near can a fragment be?)"),
     # r73 08-2: the named mistakes stated the bound asked; a question until two have failed
