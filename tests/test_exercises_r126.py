@@ -50,3 +50,43 @@ def test_absolute_lambda_is_named_on_several_points_outside_the_triangle():
     assert len(report.failures) >= 5, str(report)
     for failure in report.failures:
         assert "you took abs(λ)" in failure.explanation, failure.explanation
+
+
+def _naive_weights(lam, w):
+    """Lesson 04's formula as printed: λ_i / w_i over their sum, in float64."""
+    with np.errstate(all="ignore"):
+        q = np.asarray(lam, float) / np.asarray(w, float)
+        return q / q.sum()
+
+
+def test_lesson_04s_formula_passes_the_floor_its_pixels_match_with_a_note():
+    """D12-1: "fails, though all 1728 pixels match the package's" for w = 1e-310, which
+    exercise 3 calls "the simulator's concern, not a GPU's"; the scene now judges the scene
+    and notes what 3.2's check still fails."""
+    from test_capstone import _mine
+
+    report = ex.capstone(
+        "textured_floor", **_mine("textured_floor", perspective_weights=_naive_weights)
+    )
+    text = str(report)
+    assert report.passed and report.n_wrong == 0, text
+    assert "all 1728 pixels match the package's, and the scene passes" in text, text
+    assert "still fails 10 of exercise 3.2's cases whose w lie beyond float32's range" in text
+    assert "w = (1e-310" in text and "exercise 3.2's check does" in text, text
+    assert not _check("perspective_weights", _naive_weights).passed
+    cell = _cell("12_capstone.ipynb", 8)
+    assert "w = 1e-310" in cell and "not counted" in cell, cell
+
+
+def test_a_wrong_weight_on_a_gpus_w_still_fails_the_scene_whose_pixels_match():
+    """The note is for w beyond float32's range only: a mistake on ordinary w still counts."""
+    from test_capstone import _mine
+
+    def naive_but_clamped(lam, w):  # right inside the triangle, the floor's only centres
+        return _naive_weights(np.maximum(lam, 0.0), w)
+
+    report = ex.capstone(
+        "textured_floor", **_mine("textured_floor", perspective_weights=naive_but_clamped)
+    )
+    assert not report.passed and report.n_wrong == 0, str(report)
+    assert "p outside the triangle" in str(report), str(report)
