@@ -90,3 +90,44 @@ def test_a_wrong_weight_on_a_gpus_w_still_fails_the_scene_whose_pixels_match():
     )
     assert not report.passed and report.n_wrong == 0, str(report)
     assert "p outside the triangle" in str(report), str(report)
+
+
+def _float32_barycentric(xy, p):
+    xy, p = np.asarray(xy, np.float32), np.asarray(p, np.float32)
+
+    def e(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    v1, v2, v3 = xy
+    return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)], np.float32) / e(v1, v2, v3)
+
+
+def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
+    """D3-2: cell 4 gave the far triangles as the only reason for float64, but the check fails
+    float32 by 1e-8 on a 5-px triangle at the origin; the text now says so, and why."""
+    from test_capstone import _mine
+
+    from teachraster.exercises.interpolation import barycentric_cases
+    from teachraster.exercises.tolerance import TOL
+
+    cell = _cell("03_interpolation.ipynb", 4)
+    assert TOL == 1e-9 and "compares your weights with float64's to 1e-9" in cell, cell
+    assert (
+        "off by about 1e-8 (0.40000001 for 0.4)" in cell and "5-px triangle at the origin" in cell
+    )
+    assert "float32 numbers are 1/128 px apart" in cell
+    assert float(np.spacing(np.float32(1e5))) == 1 / 128
+    near = []
+    for _, (xy, p), lam in barycentric_cases():
+        if np.abs(xy).max() < 1e4:
+            near.append(float(np.abs(_float32_barycentric(xy, p) - lam).max()))
+    assert 5e-9 < float(np.median(near)) < 5e-8, np.median(near)
+    first = _check("barycentric", _float32_barycentric).failures[0]
+    assert (
+        "v2=(6.5, 1.5), v3=(6.5, 6.5)" in first.explanation and "(0.40000001," in first.explanation
+    )
+    assert "did you compute in float32" in first.explanation, first.explanation
+    scene = ex.capstone(
+        "single_triangle", **_mine("single_triangle", barycentric=_float32_barycentric)
+    )
+    assert scene.passed and "right within its rounding, so they pass" in str(scene), str(scene)
