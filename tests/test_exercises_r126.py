@@ -131,3 +131,39 @@ def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
         "single_triangle", **_mine("single_triangle", barycentric=_float32_barycentric)
     )
     assert scene.passed and "right within its rounding, so they pass" in str(scene), str(scene)
+
+
+def _hiz(outer=False, vertex=True):
+    """8.2 in float64 as cell 5 asks; ``outer``: the plane at the tile's outer corners;
+    ``vertex=False``: the plane's bound alone."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, float)
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+        b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+        xs = [col0, col0 + size] if outer else [col0 + 0.5, col0 + size - 0.5]
+        ys = [row0, row0 + size] if outer else [row0 + 0.5, row0 + size - 0.5]
+        plane = min(z1 + a * (x - x1) + b * (y - y1) for x in xs for y in ys)
+        bound = max(plane, min(z1, z2, z3)) if vertex else plane
+        return bool(bound >= np.max(buffer))
+
+    return hiz_rejects
+
+
+def test_outer_corners_and_the_plane_alone_each_fail_several_clear_cases():
+    """D8-3: outer corners failed only "random 16" (a tie 1.5e-11 wide), the plane alone one
+    case of 35; now each fails four named cases by 0.018 or more and is named."""
+    from test_exercises_r122 import _task_rule
+
+    from teachraster.exercises.hiz_tile import _steep_cases, expected_reject
+
+    assert _check("hiz_rejects", _hiz()).passed
+    for mistake, words in ((_hiz(outer=True), "you evaluated the plane at the tile's outer corners"),
+                           (_hiz(vertex=False), "you took the bare plane at the corners")):  # fmt: skip
+        report = _check("hiz_rejects", mistake)
+        named = [f.case for f in report.failures if f.case.startswith("a ")]
+        assert len(named) >= 4, str(report)
+        assert all(words in f.explanation for f in report.failures), str(report)
+    for label, args in _steep_cases():
+        assert expected_reject(*args) and _task_rule(*args), label
