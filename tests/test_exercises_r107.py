@@ -36,7 +36,8 @@ def _weights_by_w1(lam, w):
 def test_weights_scaled_by_the_first_w_fail_named_here_and_in_the_capstone():
     """r107 N3-1, N12-2: w scaled by w1 passed all 67 cases and textured_floor (every
     extreme triple had its smallest w first); w/max(w) products were told "1/w overflows"
-    (N3-3), though they take no 1/w."""
+    (N3-3), though they take no 1/w. Since r126 D12-1 the floor, whose pixels all match,
+    passes with a note; exercise 3.2's check still names the mistake."""
     from test_capstone import _mine
 
     report = ex.check("perspective_weights", _weights_by_w1)
@@ -53,7 +54,10 @@ def test_weights_scaled_by_the_first_w_fail_named_here_and_in_the_capstone():
     assert "1/w overflows" not in words and "none of which exceeds 1" in words, words
     cap = ex.capstone("textured_floor", **_mine("textured_floor",
                                                 perspective_weights=_weights_by_w1))  # fmt: skip
-    assert not cap.passed and "you scaled the w by w1" in _words(cap), str(cap)
+    # r126 D12-1: the scene judges the scene: its pixels all match, and exercise 3.2's cases
+    # with w beyond float32's range (no GPU meets them) are noted beside the pass, not counted
+    assert cap.passed and cap.n_wrong == 0, str(cap)
+    assert "still fails 4 of exercise 3.2's cases whose w lie beyond float32's range" in str(cap)
 
 
 def test_exercise_3_says_how_far_apart_the_w_are():

@@ -227,7 +227,8 @@ def capstone(scene: str, *, budget: float = BUDGET, **functions) -> CapstoneRepo
     if report.passed:  # a right frame from the package's own function does not count
         report = replace(report, package=package_use(used))
     if report.passed:  # r49: a record of the package's answers, replayed, passed a scene
-        report = replace(report, failures=_own_checks(used))
+        failures, aside = _own_checks(used)
+        report = replace(report, failures=failures, aside=aside)
     if report.passed and tracker.precision is not None:
         report = replace(report, precision=f"your {tracker.precision[0]} answers "
                          f"{tracker.precision[1]}: right within its rounding, so they pass")  # fmt: skip
@@ -321,14 +322,16 @@ def package_use(used: dict) -> str | None:
     return None
 
 
-def _own_checks(used: dict) -> list[Failure]:
+def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
     """Each function on its own exercise's check, whose cases include some drawn afresh:
     a function that only replays answers recorded from the package (right on this scene's
-    pixels, r49: ``single_triangle`` passed so) fails them. Empty when all pass."""
+    pixels, r49: ``single_triangle`` passed so) fails them. Empty when all pass. Beside them
+    a note, or None: ``perspective_weights`` failing only cases whose w no GPU meets (r126
+    D12-1: exercise 3.2's w = 1e-310 failed a scene whose every pixel matched)."""
     from .capstone_explain import own_report
     from .checks import names
 
-    out = []
+    out, aside = [], None
     for name, fn in used.items():
         checked = CHECKED_AS.get(name, name)
         if checked not in names():  # a_buffer: no exercise of its own
@@ -337,12 +340,29 @@ def _own_checks(used: dict) -> list[Failure]:
         # float32 within its rounding passes the capstone (:data:`TOL`), as in _fallback
         failed = None if report.passed else next(
             (f for f in report.failures if f.kind != "float32"), None)  # fmt: skip
+        if failed is not None and checked == "perspective_weights":
+            failed, aside = _on_a_gpu(name, report.failures)
         if failed is not None:
             place = f"the {checked} exercise's own cases"
             out.append(Failure(f"{name} on {place}", f"your {name} fails {place} (some drawn "
                                f"afresh for this check): {failed.case}: {failed.explanation}",
                                None, None, kind=failed.kind))  # fmt: skip
-    return out
+    return out, aside
+
+
+def _on_a_gpu(name: str, failures: list[Failure]) -> tuple[Failure | None, str | None]:
+    """The first failure of ``perspective_weights`` on a case a GPU meets (w within float32's
+    range), and a note on those it failed beyond that range (None where there are none)."""
+    from .perspective_weighting import beyond_a_gpu
+
+    counted = [f for f in failures if f.kind != "float32" and not beyond_a_gpu(f.case)]
+    beyond = [f for f in failures if beyond_a_gpu(f.case)]
+    aside = None if not beyond else (
+        f"your {name} still fails {len(beyond)} of exercise 3.2's cases whose w lie beyond "
+        f"float32's range, such as {beyond[0].case}: a GPU never meets such w, so the scene "
+        "does not count them; exercise 3.2's check does"
+    )  # fmt: skip
+    return (counted[0] if counted else None), aside
 
 
 def _fallback(name: str, fn, where: str) -> Failure | None:
@@ -398,6 +418,8 @@ class CapstoneReport(Report):
     mine: object = field(default=None, repr=False)
     n_wrong: int = 0
     unfinished: str | None = None
+    #: A note beside a pass: what the scene does not count (:func:`_on_a_gpu`), or None.
+    aside: str | None = None
 
     def __str__(self) -> str:
         return self._with_printed(self._summary())
@@ -411,6 +433,8 @@ class CapstoneReport(Report):
                     "code, then run its cell and this one again)")  # fmt: skip
         if self.passed:
             note = "" if self.precision is None else f" ({self.precision})"
+            if self.aside is not None:
+                return f"{head}: all {self.n_cases} pixels match the package's, and the scene passes{note} ({self.aside})"  # fmt: skip
             return (f"{head}: all {self.n_cases} pixels match the package's (all cases "
                     f"pass){note}")  # fmt: skip
         if self.package is not None and self.mine is not None and not self.failures:

@@ -118,6 +118,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         # r94 D8-5: an empty pixel read as the far plane 1.0 passed every case
         ("a triangle on the far plane (depth 1), one pixel of the tile still empty",
          (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
+        *_steep_cases(),
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -142,6 +143,39 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         buffer[rng.integers(0, TILE), rng.integers(0, TILE)] += rng.choice([-0.01, 0.0, 0.01])
         named.append((f"{word} {k + 1}", (xyz, row0, col0, TILE, buffer)))
     return [(label, args, expected_reject(*args)) for label, args in named]
+
+
+#: A steep triangle (its depth grows 0.05 per px along one axis, 0.025 along the other) seen
+#: from four sides: (words, x mirrored, y mirrored, x and y swapped, the tile beside it
+#: (row0, col0)).
+_STEEP = np.array([[0.0, 0.0, 0.1], [16.0, 0.0, 0.9], [0.0, 16.0, 0.5]])
+_SIDES = (
+    ("growing right and down", False, False, False, (0, 8)),
+    ("growing left and down", True, False, False, (0, 16)),
+    ("growing right and up", False, True, False, (24, 8)),
+    ("growing down and right", False, False, True, (8, 0)),
+)
+
+
+def _steep_cases() -> list[tuple[str, tuple]]:
+    """r126 D8-3: the outer-corner and plane-only mistakes were each caught by one case (one
+    a random tie 1.5e-11 wide). Beside the triangle its plane is 0.0375 nearer at the tile's
+    outer corners than at its extreme pixel centres (0.5 against 0.5375), and the farthest
+    stored depth 0.5188 lies between; in a tile around its nearest vertex (depth 0.1) the bare
+    plane at the extreme centres runs to -0.1625, and the stored depth 0.05 lies between."""
+    out = []
+    for words, fx, fy, swap, beside in _SIDES:
+        xyz = _STEEP[:, [1, 0, 2]] if swap else _STEEP.copy()
+        xyz[:, 0] = 32 - xyz[:, 0] if fx else xyz[:, 0]
+        xyz[:, 1] = 32 - xyz[:, 1] if fy else xyz[:, 1]
+        out.append((f"a steep plane {words}: behind at the tile's extreme pixel centres, in "
+                    "front at its outer corners", (xyz, *beside, TILE, np.full((TILE, TILE), 0.5188))))  # fmt: skip
+        # the nearest vertex moved to (12 or 28, 12 or 28), inside the tile (8 or 24, 8 or 24)
+        around = xyz + [-4 if fx else 12, -4 if fy else 12, 0]
+        out.append((f"a tile around the nearest vertex of a steep plane {words}: the plane "
+                    "runs nearer than any fragment", (around, 24 if fy else 8, 24 if fx else 8,
+                                                      TILE, np.full((TILE, TILE), 0.05))))  # fmt: skip
+    return out
 
 
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the

@@ -13,6 +13,7 @@ Expected answers: :func:`teachraster.core.interpolation.weights_per_row`, the re
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 import numpy as np
 
@@ -47,10 +48,12 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
             out.append((f"λ = {vec(lam)}, w = {_ws(w)}", (lam.copy(), w.copy()),
                         weights_per_row(lam[None], w[None])[0]))  # fmt: skip
     # r46 P3: a point outside the triangle (a negative λ, as an extrapolated or clipped
-    # vertex has): the same formula, and its μ is negative too
-    lam, w = np.array([-0.25, 0.5, 0.75]), np.array([1.0, 2.0, 4.0])
-    out.append((f"p outside the triangle: λ = {vec(lam)}, w = {_ws(w)}", (lam, w.copy()),
-                weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
+    # vertex has): the same formula, and its μ is negative too. r126 D3-3: one such case of
+    # 71 caught abs(λ); now six, a negative λ at each vertex, and Σ λ_i / w_i > 0 (in front)
+    for lam, w in OUTSIDE:
+        lam, w = np.array(lam), np.array(w)
+        out.append((f"p outside the triangle: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
+                    weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
     now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
     for k in range(DRAWN):
         w = np.array([float(f"{x:.3g}") for x in np.exp(now.uniform(np.log(0.1), np.log(100), 3))])
@@ -60,6 +63,31 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
         out.append((f"drawn for this check {k + 1}: λ = {vec(lam)}, w = {_ws(w)}",
                     (lam.copy(), w.copy()), mu))  # fmt: skip
     return out
+
+
+#: (λ, w) of points outside the triangle: one negative λ each
+OUTSIDE = (
+    ((-0.25, 0.5, 0.75), (1.0, 2.0, 4.0)),
+    ((1.5, -0.75, 0.25), (1.0, 2.0, 4.0)),
+    ((0.6, 0.7, -0.3), (10.0, 1.0, 3.0)),
+    ((1.2, -0.4, 0.2), (4.0, 1.0, 0.5)),
+    ((-0.5, 0.75, 0.75), (3.0, 1.0, 2.0)),
+    ((0.25, 1.25, -0.5), (1e-3, 1.0, 1e3)),
+)
+
+
+def beyond_a_gpu(label: str) -> bool:
+    """Whether case ``label`` has a w outside float32's range (1e-310, 1e300): only a
+    simulator meets such w (lesson 07's summary), so the capstone does not count them
+    (r126 D12-1); this exercise's own check does."""
+    return label in _beyond_a_gpu()
+
+
+@lru_cache(maxsize=1)
+def _beyond_a_gpu() -> frozenset:
+    f32 = np.finfo(np.float32)
+    return frozenset(label for label, (_, w), _ in weights_cases()
+                     if w.min() < f32.tiny or w.max() > f32.max)  # fmt: skip
 
 
 def _ws(w) -> str:
@@ -86,7 +114,13 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             # r94 D3-3: the package's own default (clamping) was told to "make the weights
             # sum to 1"; said only where a λ is negative (elsewhere it is the right answer)
             "clamped": weights_per_row(lam[None], w[None])[0] if (lam < 0).any() else None,
+            # r126 D3-3: abs(λ) got only the general rule
+            "absolute": _normalised(np.abs(lam) * (w.min() / w)) if (lam < 0).any() else None,
         }
+
+
+def _normalised(q: np.ndarray) -> np.ndarray:
+    return q / q.sum()
 
 
 MISTAKES = {
@@ -103,6 +137,9 @@ MISTAKES = {
     "clamped": "your weight is 0 where λ is negative: the point lies outside the triangle "
     "(as a clipped or extrapolated one does), and its weights are not clamped here: a "
     "negative λ gives a negative μ",
+    "absolute": "your weights are all positive, but one λ is negative: you took abs(λ) "
+    "(or the size of each weight); the point lies outside the triangle, and each μ keeps the "
+    "sign of its λ (every w is positive): a negative λ gives a negative μ",
 }
 
 

@@ -1,0 +1,169 @@
+"""Review r126 (exercises 03, 08, 12 played as students in fresh processes): 3.2 had one
+point outside the triangle of 71 cases and told abs(λ) only the general rule (D3-3); cell 4
+of 03 gave far triangles as the only reason for float64 while the check fails float32 at the
+origin (D3-2); 8.2's outer-corner and plane-only mistakes were each caught by one case (D8-3);
+the capstone failed a scene whose pixels all matched, for 3.2's w = 1e-310 (D12-1).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import nbformat
+import numpy as np
+
+from teachraster import exercises as ex
+from teachraster.exercises import tries
+
+EXERCISES = Path(__file__).parents[1] / "notebooks/exercises"
+
+
+def _check(name, fn, *, fresh=True):
+    if fresh:
+        tries.forget_hints(name)
+    try:
+        return ex.check(name, fn, budget=60)
+    finally:
+        tries.spend_hints([name])
+
+
+def _cell(notebook: str, index: int) -> str:
+    return " ".join(nbformat.read(EXERCISES / notebook, 4).cells[index].source.split())
+
+
+def test_absolute_lambda_is_named_on_several_points_outside_the_triangle():
+    """D3-3: abs(λ) failed one case of 71 and was told "write λ_i in terms of μ ..."."""
+    from teachraster.exercises.perspective_weighting import weights_cases
+
+    outside = [label for label, (lam, _), _ in weights_cases() if label.startswith("p outside")]
+    assert len(outside) >= 5, outside
+    for label, (lam, w), mu in weights_cases():
+        if label.startswith("p outside"):
+            assert (lam < 0).sum() == 1 and (lam / w).sum() > 0 and (mu < 0).sum() == 1, label
+
+    def absolute(lam, w):
+        lam, w = np.asarray(lam, float), np.asarray(w, float)
+        q = np.abs(lam) * (w.min() / w)
+        return q / q.sum()
+
+    report = _check("perspective_weights", absolute)
+    assert len(report.failures) >= 5, str(report)
+    for failure in report.failures:
+        assert "you took abs(λ)" in failure.explanation, failure.explanation
+
+
+def _naive_weights(lam, w):
+    """Lesson 04's formula as printed: λ_i / w_i over their sum, in float64."""
+    with np.errstate(all="ignore"):
+        q = np.asarray(lam, float) / np.asarray(w, float)
+        return q / q.sum()
+
+
+def test_lesson_04s_formula_passes_the_floor_its_pixels_match_with_a_note():
+    """D12-1: "fails, though all 1728 pixels match the package's" for w = 1e-310, which
+    exercise 3 calls "the simulator's concern, not a GPU's"; the scene now judges the scene
+    and notes what 3.2's check still fails."""
+    from test_capstone import _mine
+
+    report = ex.capstone(
+        "textured_floor", **_mine("textured_floor", perspective_weights=_naive_weights)
+    )
+    text = str(report)
+    assert report.passed and report.n_wrong == 0, text
+    assert "all 1728 pixels match the package's, and the scene passes" in text, text
+    assert "still fails 10 of exercise 3.2's cases whose w lie beyond float32's range" in text
+    assert "w = (1e-310" in text and "exercise 3.2's check does" in text, text
+    assert not _check("perspective_weights", _naive_weights).passed
+    cell = _cell("12_capstone.ipynb", 8)
+    assert "w = 1e-310" in cell and "not counted" in cell, cell
+
+
+def test_a_wrong_weight_on_a_gpus_w_still_fails_the_scene_whose_pixels_match():
+    """The note is for w beyond float32's range only: a mistake on ordinary w still counts."""
+    from test_capstone import _mine
+
+    def naive_but_clamped(lam, w):  # right inside the triangle, the floor's only centres
+        return _naive_weights(np.maximum(lam, 0.0), w)
+
+    report = ex.capstone(
+        "textured_floor", **_mine("textured_floor", perspective_weights=naive_but_clamped)
+    )
+    assert not report.passed and report.n_wrong == 0, str(report)
+    assert "p outside the triangle" in str(report), str(report)
+
+
+def _float32_barycentric(xy, p):
+    xy, p = np.asarray(xy, np.float32), np.asarray(p, np.float32)
+
+    def e(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    v1, v2, v3 = xy
+    return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)], np.float32) / e(v1, v2, v3)
+
+
+def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
+    """D3-2: cell 4 gave the far triangles as the only reason for float64, but the check fails
+    float32 by 1e-8 on a 5-px triangle at the origin; the text now says so, and why."""
+    from test_capstone import _mine
+
+    from teachraster.exercises.interpolation import barycentric_cases
+    from teachraster.exercises.tolerance import TOL
+
+    cell = _cell("03_interpolation.ipynb", 4)
+    assert TOL == 1e-9 and "compares your weights with float64's to 1e-9" in cell, cell
+    assert (
+        "off by about 1e-8 (0.40000001 for 0.4)" in cell and "5-px triangle at the origin" in cell
+    )
+    assert "float32 numbers are 1/128 px apart" in cell
+    assert float(np.spacing(np.float32(1e5))) == 1 / 128
+    near = []
+    for _, (xy, p), lam in barycentric_cases():
+        if np.abs(xy).max() < 1e4:
+            near.append(float(np.abs(_float32_barycentric(xy, p) - lam).max()))
+    assert 5e-9 < float(np.median(near)) < 5e-8, np.median(near)
+    first = _check("barycentric", _float32_barycentric).failures[0]
+    assert (
+        "v2=(6.5, 1.5), v3=(6.5, 6.5)" in first.explanation and "(0.40000001," in first.explanation
+    )
+    assert "did you compute in float32" in first.explanation, first.explanation
+    scene = ex.capstone(
+        "single_triangle", **_mine("single_triangle", barycentric=_float32_barycentric)
+    )
+    assert scene.passed and "right within its rounding, so they pass" in str(scene), str(scene)
+
+
+def _hiz(outer=False, vertex=True):
+    """8.2 in float64 as cell 5 asks; ``outer``: the plane at the tile's outer corners;
+    ``vertex=False``: the plane's bound alone."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, float)
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+        b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+        xs = [col0, col0 + size] if outer else [col0 + 0.5, col0 + size - 0.5]
+        ys = [row0, row0 + size] if outer else [row0 + 0.5, row0 + size - 0.5]
+        plane = min(z1 + a * (x - x1) + b * (y - y1) for x in xs for y in ys)
+        bound = max(plane, min(z1, z2, z3)) if vertex else plane
+        return bool(bound >= np.max(buffer))
+
+    return hiz_rejects
+
+
+def test_outer_corners_and_the_plane_alone_each_fail_several_clear_cases():
+    """D8-3: outer corners failed only "random 16" (a tie 1.5e-11 wide), the plane alone one
+    case of 35; now each fails four named cases by 0.018 or more and is named."""
+    from test_exercises_r122 import _task_rule
+
+    from teachraster.exercises.hiz_tile import _steep_cases, expected_reject
+
+    assert _check("hiz_rejects", _hiz()).passed
+    for mistake, words in ((_hiz(outer=True), "you evaluated the plane at the tile's outer corners"),
+                           (_hiz(vertex=False), "you took the bare plane at the corners")):  # fmt: skip
+        report = _check("hiz_rejects", mistake)
+        named = [f.case for f in report.failures if f.case.startswith("a ")]
+        assert len(named) >= 4, str(report)
+        assert all(words in f.explanation for f in report.failures), str(report)
+    for label, args in _steep_cases():
+        assert expected_reject(*args) and _task_rule(*args), label
