@@ -127,13 +127,18 @@ class SamplingExplorer(Shown):
         # in the order plot_sampling drew them (equal zorders: the faint curve over the samples)
         curves = [a.filtered, a.stems, a.filtered_faint, a.ideal, a.reconstructed]
         over = [child for ax in axes for child in (*ax.spines.values(), ax.xaxis, ax.yaxis)]
-        keys = [ax.get_legend() for ax in axes if ax.get_legend() is not None]
-        return LayeredBlit(self.fig, [(MOVING, a.spans), (STILL, [a.signal]),
-                                      (MOVING, [c for c in curves if c is not None]),
-                                      (STILL, over + keys)])  # fmt: skip
+        # panel 1's key names the filter's width (prefiltered_key): redrawn with the curves.
+        # Cached with the still keys, the page kept "width 0.00 (none: the signal)" beside a
+        # slider at 1.00 or 4.00 (review r127 08-1)
+        named = a.filtered.axes.get_legend()
+        keys = [ax.get_legend() for ax in axes if ax.get_legend() not in (None, named)]
+        plan = [(MOVING, a.spans), (STILL, [a.signal]),
+                (MOVING, [c for c in curves if c is not None]), (STILL, over + keys)]  # fmt: skip
+        if named is not None:  # beside the panel: nothing still lies over it
+            plan.append((MOVING, [named]))
+        return LayeredBlit(self.fig, plan)
 
     def _draw_figure(self) -> None:
-        # the keys do not change with the controls (review r101 08-D): one still layer
         self._blit.draw()
 
     def update(self, restart: bool = False) -> None:
