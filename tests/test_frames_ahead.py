@@ -496,3 +496,33 @@ def test_every_slider_explorers_first_picture_is_its_default_picture():
         finally:
             widget.close()
     assert "TileExplorer" in checked and len(checked) >= 7, checked
+
+
+def test_sampling_key_names_the_filter_width_on_show_moved_and_drawn_ahead():
+    """Panel 1's key says the filter's width ("prefiltered, width 4.00"): in the picture sent
+    after a move and in the pictures drawn ahead along the filter slider, not the key cached
+    at the first draw (review r127 08-1: "width 0.00 (none: the signal)" beside a slider at
+    1.00 or 4.00). Checked against a fresh explorer drawn at that width."""
+    from teachraster.plotting.frames import frame_rgba
+    from teachraster.plotting.sampling import prefiltered_key
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    ex = SamplingExplorer(width=0.0, backend="image")
+    page, sent = _listen(ex, ex.width)
+    ex.width.value = 0.5  # the filter, moved last: its positions are drawn ahead
+    ahead = ex.display.frames_ahead
+    while ahead.step(seconds=0.05):
+        pass
+    pictures = _pictures(sent, page._ref)
+    for width in (1.0, 4.0):
+        fresh = SamplingExplorer(width=width, backend="image")
+        assert fresh.art.filtered.axes.get_legend().get_texts()[1].get_text() == (
+            prefiltered_key(width)
+        )
+        k = int(np.flatnonzero(np.isclose(ahead.values, width))[0])
+        assert np.array_equal(pictures[k][0], frame_rgba(fresh.fig)), width
+        ex.width.value = width
+        assert np.array_equal(page._last, frame_rgba(fresh.fig)), width
+        assert np.array_equal(frame_rgba(ex.fig), frame_rgba(fresh.fig)), width
+        fresh.close()
+    ex.close()

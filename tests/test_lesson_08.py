@@ -312,3 +312,51 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     printed = streams(executed("08_antialiasing").notebook())
     assert "sample 12 at (0.0, 0.5), sample 15 at (0.0625, 0.0)" in printed
     assert "two of the 16 samples lie on the pixel's edges" in flat
+
+
+def test_lesson_08_review_r127_fastest_held_diagonals_and_why_the_grid_beats_jittered(ns):
+    """Review r127 08-2: the theory under q_fastest's chart (the whole order) is held until
+    Check, in a code cell with its source collapsed, not a Markdown cell on screen before it.
+    08-3: diagonals of the grid meet several samples at once too, not only rows or columns.
+    08-4: why the grid beats jittered, with what the study shows: its slope between successive
+    S steepens and stays steeper than jittered's, its error is below jittered's at every S."""
+    import json
+    from pathlib import Path
+
+    from notebook_runs import executed, streams
+
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
+    held = cells[k + 2]
+    assert held["cell_type"] == "code" and sources[k + 2].startswith("q_fastest.hold()")
+    assert held["metadata"]["jupyter"]["source_hidden"] and "hide-input" in held["metadata"]["tags"]
+    # no Markdown cell from the question to the held theory says the rates
+    for c, s in zip(cells[: k + 3], sources):
+        if c["cell_type"] == "markdown":
+            assert "Mitchell" not in s and "a little faster" not in s and "S^{-3/4}" not in s
+    flat = " ".join(sources[k].split()).replace('" "', "")
+    assert "only an edge along its rows or columns" not in flat
+    assert "parallel to the grid's rows or columns meets √S" not in flat
+    assert "a row, a column or a diagonal of the ordered grid meets several" in flat
+    assert "an edge along a diagonal meets several at once too" in flat
+    # the study: the grid's slope between successive S steepens, each steeper than jittered's
+    grid, jit = ns.step_slopes["grid"], ns.step_slopes["jittered"]
+    assert (np.diff(grid) < 0).all() and (grid < jit).all() and (grid > -1).all()
+    assert all(abs(j + 0.75) < 0.05 for j in jit)
+    assert (ns.edge_errors["grid"] < ns.edge_errors["jittered"]).all()
+    # the held text quotes what the cells print
+    text = " ".join(ns.FASTEST_TEXT.split())
+    fitted = f"{ns.edge_slopes['grid']:.2f} for the grid against {ns.edge_slopes['jittered']:.2f}"
+    assert fitted == "-0.80 for the grid against -0.74" and fitted in text
+    steps = {
+        kind: ", ".join(f"{v:.2f}" for v in ns.step_slopes[kind]) for kind in ("grid", "jittered")
+    }
+    assert (
+        f"the grid's slope goes {steps['grid']} while jittered's stays near −3/4 ({steps['jittered']})"
+        in text
+    )
+    printed = streams(executed("08_antialiasing").notebook())
+    assert f"grid: {steps['grid']}" in printed and f"jittered: {steps['jittered']}" in printed

@@ -128,12 +128,18 @@ class SamplingExplorer(Shown):
         curves = [a.filtered, a.stems, a.filtered_faint, a.ideal, a.reconstructed]
         over = [child for ax in axes for child in (*ax.spines.values(), ax.xaxis, ax.yaxis)]
         keys = [ax.get_legend() for ax in axes if ax.get_legend() is not None]
-        return LayeredBlit(self.fig, [(MOVING, a.spans), (STILL, [a.signal]),
-                                      (MOVING, [c for c in curves if c is not None]),
-                                      (STILL, over + keys)])  # fmt: skip
+        plan = [(MOVING, a.spans), (STILL, [a.signal]),
+                (MOVING, [c for c in curves if c is not None]), (STILL, over + keys)]  # fmt: skip
+        # the label of panel 1's key names the filter's width (prefiltered_key): redrawn with
+        # the curves, where the key's layout put it (its first line as long at every width).
+        # Cached with the keys, the page kept "width 0.00 (none: the signal)" beside a slider
+        # at 1.00 or 4.00 (review r127 08-1)
+        named = a.filtered.axes.get_legend()
+        if named is not None:  # beside the panel: nothing still lies over it
+            plan.append((MOVING, [named.get_texts()[1]]))
+        return LayeredBlit(self.fig, plan)
 
     def _draw_figure(self) -> None:
-        # the keys do not change with the controls (review r101 08-D): one still layer
         self._blit.draw()
 
     def update(self, restart: bool = False) -> None:
