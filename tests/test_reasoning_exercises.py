@@ -788,7 +788,7 @@ def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
      ("quad at (row // 2, col // 2)", "quad's number", "row − row mod 2"),
      ("quad of this pixel", "even rows", "row − row mod 2"),
      ("resolve of the encoded numbers", "sRGB-encoded", "decode first, average in linear light"),
-     ("Hi-Z by the plane alone", "bare plane", "larger of the two bounds"),
+     ("Hi-Z by the plane alone", "bare plane", "the bound asked is the larger of the two"),
      ("Hi-Z over the covered centres", "centres the triangle", "no nearer than the nearest vertex")],
 )  # fmt: skip
 def test_a_named_mistake_asks_before_its_formula(label, name_words, formula):
