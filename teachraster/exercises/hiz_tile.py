@@ -320,7 +320,7 @@ def _float32_words(args, expected, got) -> str:
                "rejected)")  # fmt: skip
     else:  # r114 D8-2: a near tie, on either side
         tie = f"only {abs(gap):.1e} apart here (the block is {'rejected' if expected else 'kept'})"
-    return (f"the triangle's nearest depth and the tile's farthest stored one are {tie}, and "
+    return (f"the task's bound on the triangle's depth and the tile's farthest stored one are {tie}, and "
             "float32's rounding (about 6e-08 of a depth) decides it the other way: did you "
             "compute in float32? Compute the plane in float64")  # fmt: skip
 

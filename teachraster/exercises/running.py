@@ -52,6 +52,8 @@ CASE_LIMIT = DEFAULT_BUDGET * CASE_SHARE
 WAIT_FACTOR = 5.0
 #: Wall-clock seconds a whole check may take, per CPU second of its budget (a busy machine).
 WALL_FACTOR = 10.0
+#: A case's own wall-clock cap, in multiples of its CPU limit (a machine too busy to give it CPU).
+CASE_WALL_FACTOR = 20.0
 #: CPU seconds one comparison or explanation of the checker may take, and all of them together.
 CHECKER_CALL, CHECKER_TOTAL = 2.0, 10.0
 #: Seconds a case that could not be stopped is given to unwind before the check abandons it.
@@ -228,11 +230,11 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
 
 
 def _too_busy(alarm: Alarm, b: Budget, where: str) -> str:
-    """The words for a case stopped by a wall-clock cap: the case's own (20 times its CPU
-    limit) or what was left of the whole check's (``WALL_FACTOR`` times its budget). r122
+    """The words for a case stopped by a wall-clock cap: the case's own (``CASE_WALL_FACTOR``
+    times its CPU limit) or what was left of the whole check's (``WALL_FACTOR`` times its budget). r122
     D3-2: "the check ran for 0.088 s of wall-clock time" quoted the case's share of what was
     left as the whole check's time."""
-    if alarm.cap < 20 * alarm.seconds * (1 - 1e-9):  # the check's wall-clock limit
+    if alarm.cap < CASE_WALL_FACTOR * alarm.seconds * (1 - 1e-9):  # the check's wall-clock limit
         wall, cpu = time.perf_counter() - b.start, b.used + alarm.cpu()
         ran = (f"the check ran for {seconds_words(wall)} of wall-clock time (its limit: "
                f"{seconds_words(min(WALL_FACTOR * b.seconds, LONGEST))}, {WALL_FACTOR:g} times "
@@ -262,7 +264,9 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
     limit = b.case_limit() if limit is None else min(limit, b.remaining())
     if limit <= 0:
         return _timeout(None, b, case)
-    alarm = Alarm(limit, None, WAIT_FACTOR * limit, max(min(20 * limit, b.wall_left()), 0.0))
+    alarm = Alarm(
+        limit, None, WAIT_FACTOR * limit, max(min(CASE_WALL_FACTOR * limit, b.wall_left()), 0.0)
+    )
     in_place = threading.current_thread() is threading.main_thread() or getattr(busy, "on", False)
     if in_place:
         outcome, stuck = _run_here(body, alarm), False
@@ -366,7 +370,7 @@ def run_checker(body: Callable[[], Any], fallback: Any) -> Any:
     left = min(CHECKER_CALL, CHECKER_TOTAL - b.checker)
     if left <= 0:
         return fallback
-    alarm = Alarm(left, sys._getframe(), WAIT_FACTOR * left, 20 * left)
+    alarm = Alarm(left, sys._getframe(), WAIT_FACTOR * left, CASE_WALL_FACTOR * left)
     try:
         try:
             alarm.start()
