@@ -776,7 +776,9 @@ def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
         return q / q.sum()
 
     report = ex.check("perspective_weights", clamped)
-    assert [f.case.split(":")[0] for f in report.failures] == ["p outside the triangle"]
+    names = [f.case.split(":")[0] for f in report.failures]
+    # fixex12 (r126) added more cases outside the triangle: each must fail, and nothing else
+    assert len(names) >= 6 and set(names) == {"p outside the triangle"}, names
 
 
 @pytest.mark.parametrize(
