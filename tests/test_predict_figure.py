@@ -27,7 +27,7 @@ def _pixels():
 def test_pixels_are_judged_and_revealed_only_once_answered():
     q = _pixels()
     truth = np.argwhere(tr.rasterize(TRI, 12, 10).coverage).tolist()
-    assert q.data["answer"] == truth and q.data["kind"] == "pixels"
+    assert q._reveal["answer"] == truth and q.data["kind"] == "pixels"
     assert q.given is None and q.correct is None
     q.check()  # no answer: nothing revealed
     assert not q.revealed
@@ -166,7 +166,7 @@ def test_bad_arguments_name_the_argument(make, error, name):
 
 def test_the_page_judges_as_the_kernel():
     q = _pixels()
-    truth = q.data["answer"]
+    truth = q._reveal["answer"]
     cases = [truth, truth[:-2], truth + [[0, 0]], [[9, 9]]]
     got = call_js(("predict_figure",), [("pixelVerdict", [truth, g, 12]) for g in cases]
                   + [("pointVerdict", [[1, 2], [1.1, 2.1], 0.25]),
@@ -226,7 +226,7 @@ def test_the_saved_notebook_keeps_the_question_its_picture_and_the_verdict():
     standin = q._standin()
     assert "Click the pixels this triangle covers." in standin
     assert "data:image/png;base64," in standin and "Run All (Run ▸ Run All Cells)" in standin
-    q.given = q.data["answer"]
+    q.given = q._reveal["answer"]
     q.check()
     assert "Right." in q._standin()
 
@@ -268,11 +268,15 @@ def test_point_reveal_can_draw_the_curve_the_answer_comes_from():
     from pathlib import Path
 
     kw = dict(answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4))
-    assert PredictPoint("Where?", **kw).data["revealCurve"] is None
+    assert PredictPoint("Where?", **kw)._reveal["revealCurve"] is None
     q = PredictPoint("Where?", **kw, reveal_curve=[(0, 0), (1, 2), (2, 4)])
-    assert q.data["revealCurve"] == [[0.0, 0.0], [1.0, 2.0], [2.0, 4.0]]
+    # the curve passes through the answer: it reaches the page with the reveal (issue 31)
+    assert "revealCurve" not in q.data and "reveal" not in q.state
+    q.given = (1.0, 2.0)
+    q.check()
+    assert q.state["reveal"]["revealCurve"] == [[0.0, 0.0], [1.0, 2.0], [2.0, 4.0]]
     js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
-    assert "data.revealCurve" in js  # the page draws it
+    assert "known.revealCurve" in js  # the page draws it
     for bad in ([(0, 0)], [(0, 0, 1), (1, 1, 1)], [(0, 0), (1, float("nan"))]):
         with pytest.raises(ValueError, match="reveal_curve"):
             PredictPoint("Where?", **kw, reveal_curve=bad)
@@ -378,3 +382,70 @@ def test_the_answers_label_keeps_off_the_figures_lines_it_is_given():
                                                 ("answerLabel", [mine, truth, None, 600, lines])])  # fmt: skip
     boxes = call_js(("predict_figure",), [("labelBox", [lab]) for lab in (plain, kept)])
     assert _crosses(boxes[0], lines) and not _crosses(boxes[1], lines)
+
+
+def _examples():
+    """One of each kind, with the answer it must not send the page before Check."""
+    return [
+        (_pixels(), [[2, 2]]),
+        (PredictPoint("Where?", answer=(1.25, 2.75), draw=None, xlim=(0, 4), ylim=(0, 4),
+                      reveal_curve=[(0, 0), (1.25, 2.75)]), (3.0, 3.0)),
+        (PredictOrder("Nearest?", ["a", "b", "c"], answer=["c", "a", "b"]), ["a", "b", "c"]),
+        (PredictChoice("How far?", ["near", "far"], answer="far"), "near"),
+    ]  # fmt: skip
+
+
+def _synced(q) -> str:
+    """Everything the kernel sends the page of ``q`` (its synced traits), as JSON, and the
+    HTML its output keeps for a viewer (the saved notebook's)."""
+    import json
+
+    state = q.get_state()
+    state.pop("_esm", None)  # the module's source: no answer in it
+    return json.dumps(state) + q._repr_mimebundle_()[0]["text/html"]
+
+
+def test_the_page_holds_no_answer_before_check():
+    """Issue 31: the page had the answer before Check (``data["answer"]``), so a student read
+    it with devtools, or in the widget state of a saved notebook. Before Check no synced
+    trait and no output of the notebook holds it; Check (the page's, sent as the state, or
+    ``check()``) brings it in the state, and only with an answer given."""
+    import json
+
+    for q, given in _examples():
+        answer = q._reveal["answer"]
+        if q.data["kind"] != "choice":  # (a choice's answer is among the options shown)
+            secret = json.dumps(answer).replace(" ", "")
+            assert secret not in _synced(q).replace(" ", ""), q
+            assert "2.75" not in _synced(q) and "1.25" not in _synced(q)  # nor the curve
+        assert "reveal" not in q.state and "answer" not in q.data
+        q.state = {**q.state, "revealed": True}  # a page asking with no answer: refused
+        assert not q.revealed and "reveal" not in q.state
+        q.state = {**q.state, "given": given, "acted": True}  # an answer, not yet checked
+        assert "reveal" not in q.get_state()["state"]
+        q.state = {**q.state, "revealed": True}  # Check, as the page sends it
+        assert q.revealed and q.get_state()["state"]["reveal"]["answer"] == answer
+        q.state = {k: v for k, v in q.state.items() if k != "reveal"}  # a page's later state
+        assert q.state["reveal"]["answer"] == answer  # the answer stays with the reveal
+    pixels = _pixels()
+    pixels.given = [[2, 2]]
+    pixels.check()  # from code, as the lessons' tests do
+    assert pixels.state["reveal"]["answer"] == np.argwhere(pixels.answer).tolist()
+
+
+def test_the_offline_page_carries_the_answer_it_judges_with():
+    """A ``teachraster html`` page has no kernel to ask: it holds what the reveal shows
+    (``data.reveal``), and the page judges at once, as before."""
+    import json
+    import os
+
+    q = PredictChoice("How far?", ["near", "far"], answer="far")
+    page = q.offline_html()
+    payload = json.loads(page.split("const [DATA, STATE] = ")[1].split(";\n")[0])
+    assert payload[0]["reveal"] == {"answer": "far"}
+    os.environ["TEACHRASTER_STATIC_PAGES"] = "1"
+    try:
+        assert '"reveal":{"answer":"far"}' in q._repr_mimebundle_()[0]["text/html"]
+    finally:
+        del os.environ["TEACHRASTER_STATIC_PAGES"]
+    assert '"reveal"' not in q._repr_mimebundle_()[0]["text/html"]

@@ -162,8 +162,12 @@ class Explorable(anywidget.AnyWidget):
         bundle = super()._repr_mimebundle_(**kwargs)
         data = bundle[0] if isinstance(bundle, tuple) else bundle
         # where no widget can live (an HTML export, a viewer): the page computes it alone
-        data["text/html"] = self.offline_html()
+        data["text/html"] = self._fallback_html()
         return bundle
+
+    def _fallback_html(self) -> str:
+        """The HTML of its output where no widget lives (a viewer): :meth:`offline_html`."""
+        return self.offline_html()
 
     def _ipython_display_(self) -> None:
         from IPython.display import publish_display_data

@@ -78,7 +78,7 @@ import traitlets
 from ..core.validate import as_finite, as_float
 from ..plotting.frames import encode_png, frame_rgba
 from .common import choices_html, font_scale, style_context
-from .explorable import Explorable, esm_source
+from .explorable import Explorable, esm_source, offline_html, static_pages
 from .predict import HoldsAnswer
 
 
@@ -149,21 +149,37 @@ class FigurePrediction(HoldsAnswer, Explorable):
     noun = "question"
     title = "Predict first"
 
-    def __init__(self, question: str, explain: str, data: dict) -> None:
+    def __init__(self, question: str, explain: str, data: dict, reveal: dict) -> None:
         super().__init__()
         self.question, self.explain = _check_question(question, explain)
+        # what Check shows (the answer, and for a point the curve through it): kept in the
+        # kernel until Check, never in ``data`` (issue 31: the page held the answer before
+        # Check, readable with devtools or in a saved notebook's widget state)
+        self._reveal = reveal
         self.data = {"question": question, "explain": explain, **data}
         self.state = {"given": None, "revealed": False}
         self.observe(self._on_state, "state")
 
     @traitlets.validate("state")
     def _keep_the_checked_answer(self, proposal) -> dict:
-        """Once revealed, the answer that was checked stays: a later one (from the page or
+        """The answer reaches the page only with the reveal: a revealed state carries it
+        (``reveal``), any other never does, and a reveal with no answer given is refused.
+        Once revealed, the answer that was checked stays: a later one (from the page or
         from code) changes neither ``given`` nor the verdict (review r28)."""
-        new, old = proposal["value"], self.state
-        if not old.get("revealed"):
-            return new
-        return {**new, **{k: old[k] for k in ("given", "acted") if k in old}, "revealed": True}
+        new, old = dict(proposal["value"]), self.state
+        new.pop("reveal", None)
+        if old.get("revealed"):
+            kept = {k: old[k] for k in ("given", "acted") if k in old}
+            return {**new, **kept, "revealed": True, "reveal": self._reveal}
+        if new.get("revealed") and not self._answered_in(new):
+            new["revealed"] = False  # Check needs an answer, in the kernel as in the page
+        if new.get("revealed"):
+            new["reveal"] = self._reveal
+        return new
+
+    @staticmethod
+    def _answered_in(state: dict) -> bool:
+        return state.get("given") not in (None, []) or bool(state.get("acted"))
 
     def _on_state(self, change) -> None:
         if change["new"].get("revealed") and not change["old"].get("revealed"):
@@ -192,11 +208,7 @@ class FigurePrediction(HoldsAnswer, Explorable):
 
     def check(self) -> None:
         """Reveal, as the page's Check does: only once an answer is given."""
-        if self.given is not None or self._answered():
-            self.state = {**self.state, "revealed": True}
-
-    def _answered(self) -> bool:
-        return False
+        self.state = {**self.state, "revealed": True}  # refused without one (the validator)
 
     def verdict(self) -> str:
         """The verdict in words (HTML), as the page says it."""
@@ -211,6 +223,16 @@ class FigurePrediction(HoldsAnswer, Explorable):
         if self.revealed:
             text += f"<div><i>{self.verdict()}</i></div>"
         return text
+
+    def offline_html(self) -> str:
+        """This question as an offline page (``teachraster html``): no kernel there to
+        reveal the answer, so the page holds it and judges by itself."""
+        return offline_html(self._esm, {**self.data, "reveal": self._reveal}, self.state)
+
+    def _fallback_html(self) -> str:
+        # the notebook's own output for viewers: no answer in it (issue 31), but in a
+        # ``teachraster html`` run it is the live page above
+        return self.offline_html() if static_pages() else super().offline_html()
 
     def _standin(self) -> str:
         if not self.picture and self.data.get("png"):
@@ -296,8 +318,9 @@ class PredictPixels(FigurePrediction):
         picture = figure_picture(drawn, axes_for, (side, side), style)
         self.answer = mask.copy()
         super().__init__(question, explain, {"kind": "pixels", "width": width, "height": height,
-                                             "answer": np.argwhere(mask).tolist(), **picture,
-                                             "cell": html.escape(cell), "picked": html.escape(picked)})  # fmt: skip
+                                             **picture, "cell": html.escape(cell),
+                                             "picked": html.escape(picked)},
+                         {"answer": np.argwhere(mask).tolist()})  # fmt: skip
         self.state = {"given": [], "revealed": False}
 
     @property
@@ -433,12 +456,12 @@ class PredictPoint(FigurePrediction):
         # the readout shows as many decimals as one key step needs (none for whole codes)
         digits = 0 if step >= 1 else min(6, int(np.ceil(-np.log10(step) - 1e-9)))
         super().__init__(question, explain, {
-            "kind": "point", "answer": answer.tolist(), "start": start.tolist(),
+            "kind": "point", "start": start.tolist(),
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
             "units": html.escape(units), "keyStep": step,
             "readout": None if readout is None else html.escape(readout),
-            "readoutDigits": digits, "rayFrom": ray_from, "revealCurve": reveal_curve,
-            "keepClear": keep_clear, **picture})  # fmt: skip
+            "readoutDigits": digits, "rayFrom": ray_from, "keepClear": keep_clear, **picture},
+            {"answer": answer.tolist(), "revealCurve": reveal_curve})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:
@@ -511,11 +534,11 @@ class PredictOrder(FigurePrediction):
         self.items = items
         self.answer = None if answer is None else [str(a) for a in answer]
         super().__init__(question, explain, {
-            "kind": "order", "items": items, "answer": self.answer,
+            "kind": "order", "items": items,
             "allowImpossible": bool(allow_impossible), "impossibleLabel": impossible_label,
             "hint": "Drag the items into order (or focus one and use the arrow keys); "
                     "to answer the order shown, click one of them.",
-            **picture})  # fmt: skip
+            **picture}, {"answer": self.answer})  # fmt: skip
         self.state = {"given": None, "acted": False, "revealed": False}
 
     @FigurePrediction.given.setter
@@ -526,12 +549,9 @@ class PredictOrder(FigurePrediction):
                 raise ValueError(f"order must hold the items {self.items!r}, got {order!r}")
         self.state = {**self.state, "given": order, "acted": True}
 
-    def _answered(self) -> bool:
-        return bool(self.state.get("acted"))
-
     @property
     def correct(self) -> bool | None:
-        if not self._answered():
+        if not self.state.get("acted"):
             return None
         return self.given == self.answer
 
@@ -585,7 +605,7 @@ class PredictChoice(FigurePrediction):
         picture = _optional_picture(draw, figsize, style)
         self.choices, self.answer = choices, str(answer)
         super().__init__(question, explain, {
-            "kind": "choice", "choices": choices, "answer": self.answer, **picture})  # fmt: skip
+            "kind": "choice", "choices": choices, **picture}, {"answer": self.answer})  # fmt: skip
 
     @FigurePrediction.given.setter
     def given(self, choice) -> None:

@@ -10,10 +10,16 @@
 //   say that no order works; Check marks each place and shows the right order;
 // - "choice": pick one option (a multiple choice, no figure needed); Check is enabled at the
 //   pick, with no round trip to a kernel that may be busy (review r98, 07: an ipywidgets
-//   Predict's Check waited over a second), and marks the right option and a wrong pick.
+//   Predict's Check waited over a second), and marks the right option and a wrong pick
+//   once the kernel has sent the answer (below).
 // Check stays disabled until an answer is given. The picture behind is the kernel's
 // (matplotlib, drawn once); the verdicts are teachraster.widgets.predict_figure's, and the
 // tests compare the two (node).
+//
+// The answer is not in the page before Check (issue 31: devtools, or a saved notebook's widget
+// state, read it): Check tells the kernel, which sends what the reveal shows (`reveal`: the
+// answer, a point's curve) in the state; the page says "Checking…" until it is there. An
+// offline page (`teachraster html`, no kernel) carries it in data.reveal and judges at once.
 
 // -- verdicts (pure) ----------------------------------------------------------------------------
 // Check is pressed once: enabled while an answer is given and the answer not yet shown (a
@@ -200,8 +206,14 @@ function overlaid(canvas) {
   return out;
 }
 
+// what the reveal shows (the answer, ...): the kernel's, once Check is pressed, or the
+// offline page's own; null while the kernel has not sent it
+export function revealed(data, state) {
+  return state.reveal || data.reveal || null;
+}
+
 // Check (disabled until an answer is given) and, once pressed, the verdict and the
-// explanation: show(correct, text)
+// explanation: show(correct, text); waiting(live) while the kernel has not sent the answer
 function checkRow(root, data, onCheck) {
   const check = button("Check", onCheck);
   check.disabled = true;
@@ -215,21 +227,34 @@ function checkRow(root, data, onCheck) {
     verdict.innerHTML = verdictHtml(correct, text);
     explain.innerHTML = data.explain || "";
   };
-  return { check, show };
+  const waiting = (live) => {
+    check.disabled = true;
+    verdict.textContent = live ? "Checking\u2026"
+      : "Checking needs the notebook running: Run All (Run \u25b8 Run All Cells).";
+  };
+  return { check, show, waiting };
 }
 
-// the figure shows the answer: repainted, the kernel told (a Check pressed here), and the
-// picture kept for the saved notebook
-function revealOnFigure(host, canvas, paint, given, byClick) {
+// Check pressed (byClick) or a revealed state come in: the kernel told of a Check pressed
+// here; then the answer, once known (else "Checking…"). Returns it, or null.
+function revealStart(host, data, state, byClick, sent, waiting) {
+  state.revealed = true;
+  if (byClick) host.setState(sent);
+  const known = revealed(data, state);
+  if (!known) waiting(host.live);
+  return known;
+}
+
+// the figure shows the answer: repainted, and the picture kept for the saved notebook
+function revealOnFigure(host, canvas, paint) {
   paint.request();
-  if (byClick) host.setState({ revealed: true, given });
   host.picture(overlaid(canvas));
 }
 
 function mountPixels(root, data, host) {
   let state = { given: [], revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
-  const { check, show } = checkRow(root, data, () => reveal(true));
+  const { check, show, waiting } = checkRow(root, data, () => reveal(true));
   const cell = data.cell || "pixel";
   const picked = data.picked || "lit";
   const cells = (n) => (n === 1 ? cell : `${cell}s`);
@@ -252,9 +277,10 @@ function mountPixels(root, data, host) {
       ctx.fillStyle = "rgba(0,114,178,0.45)";
       ctx.fillRect(x + 1, y + 1, w - 2, h - 2);
     }
-    if (state.revealed) {
-      const truth = new Set(data.answer.map(([r, c]) => r * W + c));
-      for (const [r, c] of data.answer) {
+    const known = state.revealed && revealed(data, state);
+    if (known) {
+      const truth = new Set(known.answer.map(([r, c]) => r * W + c));
+      for (const [r, c] of known.answer) {
         const [x, y, w, h] = cell(r, c);
         // missed: purple, not the orange the lessons draw their diamonds and markers in;
         // filled and outlined solid and thick, so that where the answer was (the verdict's
@@ -288,12 +314,13 @@ function mountPixels(root, data, host) {
   function reveal(byClick) {
     if (!state.given.length) return;
     if (byClick && state.revealed) return; // checked once: the first answer is kept
-    state.revealed = true;
-    const v = pixelVerdict(data.answer, state.given, W);
+    const known = revealStart(host, data, state, byClick, { revealed: true, given: state.given }, waiting);
+    if (!known) return paint.request();
+    const v = pixelVerdict(known.answer, state.given, W);
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
       `${v.right} right, ${v.extra} too many, ${v.missed} missed. The answer: <b>${v.total}</b> ` +
       `${cells(v.total)} ${picked}.` + pixelLegend());
-    revealOnFigure(host, canvas, paint, state.given, byClick);
+    revealOnFigure(host, canvas, paint);
   }
 
   function cellAt(p) {
@@ -340,7 +367,7 @@ function mountPixels(root, data, host) {
 function mountPoint(root, data, host) {
   let state = { given: null, revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
-  const { check, show } = checkRow(root, data, () => reveal(true));
+  const { check, show, waiting } = checkRow(root, data, () => reveal(true));
   root.insertBefore(element("div", { text: "Drag the orange marker to your answer." }), canvas.parentElement);
   const start = data.start;
 
@@ -365,15 +392,16 @@ function mountPoint(root, data, host) {
   function draw() {
     ctx.clearRect(0, 0, canvas.width, canvas.height);
     const mine = toPx(state.given || start);
-    if (state.revealed) {
-      const truth = toPx(data.answer);
-      if (data.revealCurve) {
+    const known = state.revealed && revealed(data, state);
+    if (known) {
+      const truth = toPx(known.answer);
+      if (known.revealCurve) {
         // the curve the answer comes from (PredictPoint's reveal_curve), kept out of the
         // question's picture
         ctx.strokeStyle = "#009E73";
         ctx.lineWidth = 3;
         ctx.beginPath();
-        data.revealCurve.forEach((p, k) => (k ? ctx.lineTo(...toPx(p)) : ctx.moveTo(...toPx(p))));
+        known.revealCurve.forEach((p, k) => (k ? ctx.lineTo(...toPx(p)) : ctx.moveTo(...toPx(p))));
         ctx.stroke();
       }
       if (data.rayFrom) {
@@ -448,13 +476,14 @@ function mountPoint(root, data, host) {
   function reveal(byClick) {
     if (state.given === null) return;
     if (byClick && state.revealed) return; // checked once: the first answer is kept
-    state.revealed = true;
-    const v = pointVerdict(data.answer, state.given, data.tolerance);
+    const known = revealStart(host, data, state, byClick, { revealed: true, given: state.given }, waiting);
+    if (!known) return paint.request();
+    const v = pointVerdict(known.answer, state.given, data.tolerance);
     const mine = data.readout
       ? `You predicted ${readoutText(data.readout, state.given[0], data.readoutDigits)}. ` : "";
     show(v.correct, `${mine}Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
       `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`);
-    revealOnFigure(host, canvas, paint, state.given, byClick);
+    revealOnFigure(host, canvas, paint);
   }
   pointerInput(canvas, {
     handles: () => [toPx(state.given || start)],
@@ -508,7 +537,7 @@ function mountOrder(root, data, host) {
     });
     root.append(element("label", {}, [impossible, element("span", { text: data.impossibleLabel })]));
   }
-  const { check, show } = checkRow(root, data, () => reveal(true));
+  const { check, show, waiting } = checkRow(root, data, () => reveal(true));
   const given = () => (impossible && impossible.checked ? null : order);
   function act() {
     state.acted = true;
@@ -517,7 +546,8 @@ function mountOrder(root, data, host) {
   }
   function render_() {
     chips.innerHTML = "";
-    const v = state.revealed ? orderVerdict(data.answer, given()) : null;
+    const known = state.revealed && revealed(data, state);
+    const v = known ? orderVerdict(known.answer, given()) : null;
     order.forEach((item, k) => {
       const chip = element("div", { class: "tr-chip", tabindex: 0, role: "listitem", html: item });
       if (v && v.places) chip.classList.add(v.places[k] ? "right" : "wrong");
@@ -562,13 +592,13 @@ function mountOrder(root, data, host) {
   function reveal(byClick) {
     if (!state.acted) return;
     if (byClick && state.revealed) return; // checked once: the first answer is kept
-    state.revealed = true;
     if (impossible) impossible.disabled = true; // the answer is kept as checked
-    const v = orderVerdict(data.answer, given());
-    const right = data.answer === null ? data.impossibleLabel : data.answer.join(" → ");
-    show(v.correct, `The answer: <b>${right}</b>.`);
+    const known = revealStart(host, data, state, byClick, { revealed: true, given: given(), acted: true }, waiting);
     render_();
-    if (byClick) host.setState({ revealed: true, given: given(), acted: true });
+    if (!known) return;
+    const v = orderVerdict(known.answer, given());
+    const right = known.answer === null ? data.impossibleLabel : known.answer.join(" → ");
+    show(v.correct, `The answer: <b>${right}</b>.`);
   }
   render_();
   if (state.revealed) reveal(false);
@@ -595,25 +625,26 @@ function mountChoice(root, data, host) {
   const row = element("div", { class: "tr-choices", role: "group",
     "aria-label": "the answers: pick one" }, picks.buttons);
   root.append(row);
-  const { check, show } = checkRow(root, data, () => reveal(true));
+  const { check, show, waiting } = checkRow(root, data, () => reveal(true));
   function render_() {
     picks.set(state.given);
+    const known = state.revealed && revealed(data, state);
     picks.buttons.forEach((b, k) => {
       const c = data.choices[k];
       b.disabled = state.revealed;
-      b.classList.toggle("right", state.revealed && c === data.answer);
-      b.classList.toggle("wrong", state.revealed && c === state.given && c !== data.answer);
+      b.classList.toggle("right", Boolean(known) && c === known.answer);
+      b.classList.toggle("wrong", Boolean(known) && c === state.given && c !== known.answer);
     });
     check.disabled = checkDisabled(state.revealed, state.given !== null);
   }
   function reveal(byClick) {
     if (state.given === null) return;
     if (byClick && state.revealed) return; // checked once: the first answer is kept
-    state.revealed = true;
-    const v = choiceVerdict(data.answer, state.given);
-    show(v.correct, v.text);
+    const known = revealStart(host, data, state, byClick, { revealed: true, given: state.given }, waiting);
     render_();
-    if (byClick) host.setState({ revealed: true, given: state.given });
+    if (!known) return;
+    const v = choiceVerdict(known.answer, state.given);
+    show(v.correct, v.text);
   }
   render_();
   if (state.revealed) reveal(false);
