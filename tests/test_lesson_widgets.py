@@ -38,6 +38,40 @@ def test_plane_system_three_ways_agree():
         assert np.allclose(tr.attribute_plane(xy, f)(*xy.T), f)
 
 
+def _page_move(ex, i, x, y, final, seq=1):
+    """A position of vertex ``i`` as the page's drag sends it (static/drag.js)."""
+    ex.display.widget._on_page_message(
+        None, {"type": "move", "i": i, "x": x, "y": y, "seq": seq, "final": final}, []
+    )
+
+
+def test_plane_explorer_vertices_are_dragged_in_the_page(explorer):
+    """Issue 31: lesson 03's explorer was slider-only. Its vertices are the page figure's
+    handles (the TriangleEditor's drag, static/drag.js): mid-drag the kernel fills the
+    dragged triangle with tr.rasterize (the top-left rule) and sends drafts, the sliders
+    wait; the release puts the vertex on the sliders' quarter-pixel grid, within their range,
+    and the handles follow for the next press."""
+    page = explorer.display.widget
+    assert page.handles == [[2.0, 1.0], [13.0, 5.0], [5.0, 12.0]] and page.on_move is not None
+    draws = explorer.display.draws
+    _page_move(explorer, 0, 3.1, 2.4, final=False)
+    assert explorer.display.draws == draws + 1 and explorer._drafting()
+    assert [explorer.x[0].value, explorer.y[0].value] == [2.0, 1.0]  # the sliders wait
+    dragged = [[3.0, 2.5], [13.0, 5.0], [5.0, 12.0]]
+    assert explorer.shown_xy.tolist() == dragged
+    _page_move(explorer, 0, 8.0, 13.0, final=False, seq=2)  # v1 onto the edge v2 v3's line
+    _page_move(explorer, 0, 20.4, -3.0, final=True, seq=3)  # let go beyond the grid: clipped
+    assert not explorer._drafting()
+    assert [explorer.x[0].value, explorer.y[0].value] == [16.0, 0.0]
+    xy = [[16.0, 0.0], [13.0, 5.0], [5.0, 12.0]]
+    assert page.handles == xy and explorer.shown_xy.tolist() == xy
+    inside = tr.rasterize(tr.Triangle(xy), 16, 14).coverage
+    assert np.array_equal(~np.isnan(explorer.values), inside)
+    assert np.allclose(explorer.system["g"], plane_system(xy, [0.2, 0.9, 0.5])["g"])
+    _page_move(explorer, 2, 5.13, 11.88, final=True, seq=4)  # a click: one final position
+    assert [explorer.x[2].value, explorer.y[2].value] == [5.25, 12.0]
+
+
 def test_plane_explorer_reads_positions_as_lesson_03_does(explorer):
     """Ticks at whole screen coordinates (v1 = (2, 1) on its ticks, as lesson 03's figure),
     and a colour bar that says what it measures (review a1, 03)."""

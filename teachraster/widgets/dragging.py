@@ -172,6 +172,10 @@ class DragFigure(anywidget.AnyWidget):
                 if place is None:
                     self.poster, self.poster_frame = png, self._frame
                     self._posted = rgba
+        elif final and moved != self.handles:
+            # a final picture in reference mode is a patch too: the handles where they are
+            # now, for the next press (PlaneExplorer's vertices, moved by a slider or a drag)
+            self.handles = moved
         # kernel_ms: from the position's arrival to this answer (for benchmarks)
         now = time.perf_counter()
         kernel_ms = (now - self._t0) * 1e3 if self._t0 else 0.0

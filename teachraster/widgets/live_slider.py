@@ -163,9 +163,14 @@ class SliderDisplay:
 
     mode = "page"
 
-    def __init__(self, fig, draw, drafting, alt: str = "") -> None:
+    def __init__(self, fig, draw, drafting, alt: str = "", *, handles=None,
+                 on_move=None) -> None:  # fmt: skip
         self.fig, self.draw, self.drafting = fig, draw, drafting
-        self.widget = DragFigure(alt=alt, reference=True, deflate=True, key=uuid.uuid4().hex)
+        #: the points dragged in the page (data coordinates of the first Axes), as
+        #: :class:`~teachraster.widgets.dragging.PageDisplay`'s: none for a slider explorer
+        self.handles = handles or (lambda: [])
+        self.widget = DragFigure(on_move, alt=alt, reference=True, deflate=True,
+                                 key=uuid.uuid4().hex)  # fmt: skip
         self.caption = PageCaption(self.widget)
         self.draws = 0
         self.frames_ahead = None
@@ -185,7 +190,8 @@ class SliderDisplay:
         if rgba is None:
             self.draws += 1
             (self.fig.canvas.draw if self.draw is None else self.draw)()
-        self.widget.show(self.fig, self.fig.axes[0], [], final=not self.drafting(), rgba=rgba)
+        self.widget.show(self.fig, self.fig.axes[0], self.handles(), final=not self.drafting(),
+                         rgba=rgba)  # fmt: skip
 
     def ahead(self, sliders, explorer, *, full: bool = False):
         """Draw ``explorer`` at every position of a slider (of ``sliders``: the one moved
@@ -218,12 +224,15 @@ class PageCaption:
         self._page.caption = html
 
 
-def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: str = ""):
+def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: str = "",
+                   handles=None, on_move=None):  # fmt: skip
     """The display of a slider explorer's figure: a :class:`SliderDisplay`, or under ipympl
-    (``mode`` "ipympl") the canvas itself (``FigureDisplay``)."""
+    (``mode`` "ipympl") the canvas itself (``FigureDisplay``). ``handles()`` and
+    ``on_move(i, x, y, final)``: points of the figure dragged in the page, as a
+    :class:`~teachraster.widgets.dragging.PageDisplay`'s (the page display only)."""
     if mode == "ipympl":
         return FigureDisplay(fig, mode, draw=draw)
-    return SliderDisplay(fig, draw, drafting, alt)
+    return SliderDisplay(fig, draw, drafting, alt, handles=handles, on_move=on_move)
 
 
 def info_line(display, side: str = "top"):

@@ -1,6 +1,7 @@
 """``PlaneExplorer``: an attribute as a plane over the screen, and the set-up that finds it.
 
-Lesson 03's widget. Move a vertex or change a vertex value and watch the three views of the
+Lesson 03's widget. Drag a vertex in the picture (or move it on its sliders) or change a
+vertex value and watch the three views of the
 same plane agree: the attribute at every pixel centre with its (straight, parallel) contour
 lines, Fatahalian's 3 × 3 system and its set-up matrix M (CMU 15-462 *Texture*), and the
 coefficients A, B, C, D of *Triangle Rasterisation II - Interpolation* with its steps
@@ -184,6 +185,10 @@ class PlaneExplorer:
                  style: str | None = None) -> None:  # fmt: skip
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
+        #: the vertices while a drag in the page is under way (the sliders follow at the
+        #: release, as the TriangleEditor's do); None otherwise
+        self._drag_xy: np.ndarray | None = None
+        self._quiet = False
         xy = np.asarray(xy, dtype=np.float64).reshape(3, 2)
         f = np.asarray(f, dtype=np.float64).reshape(3)
         self._sliders(xy, f)
@@ -221,8 +226,11 @@ class PlaneExplorer:
             image = self.image
             self._bar = None if image.colorbar is None else ColourBarSprite(
                 self.fig, lambda: image.image, image.colorbar)  # fmt: skip
+            # the vertices are dragged in the page (DragFigure, static/drag.js: the
+            # TriangleEditor's way); the kernel fills with tr.rasterize at each position
             self.display = slider_display(
-                self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
+                self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT,
+                handles=lambda: self.shown_xy, on_move=self._on_page_move,
             )
         self.info, info_widgets = info_line(self.display, side="right")
         self.info.value = self._info_html()
@@ -230,8 +238,9 @@ class PlaneExplorer:
         # where the numbers wrap below the figure: JupyterLab's file browser open, r11)
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
-            "Move a vertex or change its value: the dashed contour lines (f in equal steps) "
-            "stay straight and parallel; the 3 × 3 system, M and A, B, C, D follow.",
+            "Drag a vertex (or use its sliders) or change its value: the dashed contour lines "
+            "(f in equal steps) stay straight and parallel; the 3 × 3 system, M and A, B, C, "
+            "D follow.",
         )
         rows = [control_row([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
         # the sliders' names and values at projector size, as FilterExplorer's (review r96
@@ -249,7 +258,7 @@ class PlaneExplorer:
             # in the page, coalesced: the kernel renders the latest value, never a queue
             s = LiveSlider(value=value, min=lo, max=hi, step=step, description=name,
                            layout=fit_width(widgets.Layout(width=SLIDER_WIDTH)))  # fmt: skip
-            s.observe(lambda change: self.update(), "value")
+            s.observe(lambda change: None if self._quiet else self.update(), "value")
             s.on_release(self.update)  # a drag ended on a draft: the full picture
             return s
 
@@ -261,8 +270,32 @@ class PlaneExplorer:
 
     @property
     def xy(self) -> np.ndarray:
-        """The current vertices, (3, 2)."""
+        """The current vertices, (3, 2): the sliders', or where a drag in the page has them."""
+        if self._drag_xy is not None:
+            return self._drag_xy.copy()
         return np.array([[self.x[k].value, self.y[k].value] for k in range(3)])
+
+    def _on_page_move(self, i: int, x: float, y: float, final: bool) -> None:
+        """Vertex ``i`` dragged in the page to (x, y): on the sliders' quarter-pixel grid,
+        within their range. Mid-drag only the picture follows (a draft, as a slider's);
+        at the release the sliders take the position, and one full picture follows."""
+        xy = self.xy
+        for k, (slider, value) in enumerate(((self.x[i], x), (self.y[i], y))):
+            xy[i, k] = min(max(round(value / slider.step) * slider.step, slider.min), slider.max)
+        if not final:
+            self._drag_xy = xy
+            self.update()
+            return
+        self._drag_xy = None
+        self._quiet = True
+        try:
+            self.x[i].value, self.y[i].value = xy[i]
+        finally:
+            self._quiet = False
+        self.update()
+        ahead = getattr(self.display, "frames_ahead", None)
+        if ahead is not None:  # pictures drawn ahead during the drag may show its positions
+            ahead.restart()
 
     @property
     def fvals(self) -> np.ndarray:
@@ -320,9 +353,9 @@ class PlaneExplorer:
                                       (MOVING, above)])  # fmt: skip
 
     def _drafting(self) -> bool:
-        """True while a slider is dragged: a draft leaves out a colour bar whose range was
+        """True while a slider or a vertex in the page is dragged: a draft leaves out a colour bar whose range was
         not drawn before (the release brings the full picture)."""
-        return any(s.dragging for s in (*self.x, *self.y, *self.f))
+        return self._drag_xy is not None or any(s.dragging for s in (*self.x, *self.y, *self.f))
 
     def _draw(self) -> None:
         self._blit = same_or_new(self._blit, self._edit_blit())
