@@ -56,6 +56,8 @@ def test_plane_explorer_vertices_are_dragged_in_the_page(explorer):
     draws = explorer.display.draws
     _page_move(explorer, 0, 3.1, 2.4, final=False)
     assert explorer.display.draws == draws + 1 and explorer._drafting()
+    labels = [a for a in explorer.triangle.artists if a.get_visible() and hasattr(a, "get_text")]
+    assert labels  # hidden for the draft only (half its cost): shown on the figure again
     assert [explorer.x[0].value, explorer.y[0].value] == [2.0, 1.0]  # the sliders wait
     dragged = [[3.0, 2.5], [13.0, 5.0], [5.0, 12.0]]
     assert explorer.shown_xy.tolist() == dragged

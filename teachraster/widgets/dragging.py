@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import time
 import zlib
+from contextlib import contextmanager
 from pathlib import Path
 
 import anywidget
@@ -287,6 +288,20 @@ class DragFigure(anywidget.AnyWidget):
             with self.hold_sync():
                 self.poster, self.poster_frame = encode_png(rgba), self._frame
         self._posted = rgba
+
+
+@contextmanager
+def hidden(artists):
+    """Within: ``artists`` hidden (a drag's drafts leave out labels, half a frame's cost; the
+    page's ring marks the point in hand meanwhile), then shown as they were."""
+    shown = [a.get_visible() for a in artists]
+    for a in artists:
+        a.set_visible(False)
+    try:
+        yield
+    finally:
+        for a, was in zip(artists, shown):
+            a.set_visible(was)
 
 
 def same_or_new(old: LayeredBlit, new: LayeredBlit) -> LayeredBlit:

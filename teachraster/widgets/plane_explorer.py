@@ -40,7 +40,7 @@ from .common import (
     title_html,
 )
 from .display import new_figure, resolve_backend
-from .dragging import same_or_new
+from .dragging import hidden, same_or_new
 from .live_slider import LiveSlider, info_line, slider_display
 from .sprites import ColourBarSprite, text_boxes
 
@@ -363,6 +363,10 @@ class PlaneExplorer:
             self._blit.draw()
             return
         labels = [a for a in self.triangle.artists if isinstance(a, Text)]
+        if self._drag_xy is not None:  # a vertex in hand: its labels wait for the release
+            with hidden(labels):
+                self._bar.draw(self._blit, draft=True, others=[self.ax.bbox])
+            return
         self._bar.draw(self._blit, draft=self._drafting(),
                        others=[self.ax.bbox, *text_boxes(labels)])  # fmt: skip
 

@@ -1,0 +1,85 @@
+"""Lesson 03's ``PlaneExplorer`` dragged in the page, in JupyterLab in headless Chromium.
+
+Issue 31: the explorer was slider-only. Its vertices are now the handles of its page figure
+(``static/drag.js``, the TriangleEditor's drag, in JupyterLab's default display: no
+``%matplotlib widget``): a drag of v1 paints the kernel's drafts as the pointer moves, and the
+release puts v1 on its sliders (quarter pixels), filled by ``tr.rasterize``.
+
+Uses the JupyterLab server and page of tests/test_browser.py; skipped, saying why, where
+Playwright or Chromium is missing.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import time
+
+import pytest
+from browser_cells import run_new_cell
+from test_browser import WHY, lab, page  # noqa: F401
+from test_browser_saved import _run_all
+
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(WHY is not None, reason=f"browser test skipped: {WHY}"),
+]
+
+NAME = "plane_drag.ipynb"
+CELLS = [
+    "import json\nimport numpy as np\nimport teachraster as tr\n"
+    "from teachraster.widgets.plane_explorer import PlaneExplorer",
+    "ex = PlaneExplorer()\nex.widget.add_class('t-plane')\nex",
+]
+FRAMES = "() => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0)"
+
+
+def _kernel(tab, code: str):
+    n = tab.locator(".jp-Notebook .jp-CodeCell").count()
+    marker = f"PLANE-SAYS-{n}:"
+    run_new_cell(tab, f"print({marker!r} + json.dumps({code}))")
+    out = tab.locator(".jp-OutputArea-output", has_text=re.compile(re.escape(marker))).last
+    out.wait_for(timeout=60_000)
+    return json.loads(out.inner_text().split(marker, 1)[1])
+
+
+def test_a_vertex_dragged_in_the_page(lab, page):  # noqa: F811
+    page.set_viewport_size({"width": 1400, "height": 900})
+    _run_all(lab, page, CELLS, NAME)
+    img = page.locator(".t-plane .tr-drag img").first
+    img.wait_for(timeout=120_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.wait_for_function("() => document.querySelector('.t-plane .tr-drag img').naturalWidth > 0",
+                           timeout=30_000)  # fmt: skip
+    x0, y0, sx, sy = _kernel(page, "ex.display.widget.transform")
+    width = _kernel(page, "ex.display.widget.size[0]")
+    img.evaluate("i => i.scrollIntoView({block: 'center'})")  # the new cells scrolled it away
+    page.wait_for_timeout(300)
+    box = img.bounding_box()
+    scale = box["width"] / width  # CSS px per figure px
+
+    def at(x, y):  # data (pixels of the grid) -> the page
+        return box["x"] + (x0 + sx * x) * scale, box["y"] + (y0 + sy * y) * scale
+
+    before = page.evaluate(FRAMES)
+    page.mouse.move(*at(2.0, 1.0))  # v1
+    page.mouse.down()
+    start = time.perf_counter()
+    steps = 40
+    for k in range(1, steps + 1):  # to (6, 4) over ~0.7 s, as a hand moves
+        page.mouse.move(*at(2.0 + 4.0 * k / steps, 1.0 + 3.0 * k / steps))
+        page.wait_for_timeout(16)
+    during = page.evaluate(FRAMES) - before
+    seconds = time.perf_counter() - start
+    page.mouse.up()
+    print(f"PlaneExplorer vertex drag: {during} pictures in {seconds:.2f} s "
+          f"({during / seconds:.1f} per s)")
+    assert during >= 3  # the kernel's drafts were painted while the pointer moved
+    page.wait_for_function(
+        "n => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0) > n",
+        arg=before + during, timeout=30_000,
+    )
+    got = _kernel(page, "[ex.x[0].value, ex.y[0].value, ex.display.widget.handles[0], "
+                        "bool(np.array_equal(~np.isnan(ex.values), "
+                        "tr.rasterize(tr.Triangle(ex.xy), 16, 14).coverage))]")  # fmt: skip
+    assert got == [6.0, 4.0, [6.0, 4.0], True], got
