@@ -72,12 +72,15 @@ def test_a_vertex_dragged_in_the_page(lab, page):  # noqa: F811
     during = page.evaluate(FRAMES) - before
     seconds = time.perf_counter() - start
     page.mouse.up()
-    print(f"PlaneExplorer vertex drag: {during} pictures in {seconds:.2f} s "
-          f"({during / seconds:.1f} per s)")
+    print(
+        f"PlaneExplorer vertex drag: {during} pictures in {seconds:.2f} s "
+        f"({during / seconds:.1f} per s)"
+    )
     assert during >= 3  # the kernel's drafts were painted while the pointer moved
     page.wait_for_function(
         "n => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0) > n",
-        arg=before + during, timeout=30_000,
+        arg=before + during,
+        timeout=30_000,
     )
     got = _kernel(page, "[ex.x[0].value, ex.y[0].value, ex.display.widget.handles[0], "
                         "bool(np.array_equal(~np.isnan(ex.values), "

@@ -229,8 +229,13 @@ class PlaneExplorer:
             # the vertices are dragged in the page (DragFigure, static/drag.js: the
             # TriangleEditor's way); the kernel fills with tr.rasterize at each position
             self.display = slider_display(
-                self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT,
-                handles=lambda: self.shown_xy, on_move=self._on_page_move,
+                self.fig,
+                self.backend,
+                draw=self._draw,
+                drafting=self._drafting,
+                alt=ALT,
+                handles=lambda: self.shown_xy,
+                on_move=self._on_page_move,
             )
         self.info, info_widgets = info_line(self.display, side="right")
         self.info.value = self._info_html()
