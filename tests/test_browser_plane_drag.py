@@ -11,13 +11,11 @@ Playwright or Chromium is missing.
 
 from __future__ import annotations
 
-import json
-import re
 import time
 
 import pytest
-from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
+from test_browser_explorables import _kernel  # a cell's printed JSON
 from test_browser_saved import _run_all
 
 pytestmark = [
@@ -32,15 +30,6 @@ CELLS = [
     "ex = PlaneExplorer()\nex.widget.add_class('t-plane')\nex",
 ]
 FRAMES = "() => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0)"
-
-
-def _kernel(tab, code: str):
-    n = tab.locator(".jp-Notebook .jp-CodeCell").count()
-    marker = f"PLANE-SAYS-{n}:"
-    run_new_cell(tab, f"print({marker!r} + json.dumps({code}))")
-    out = tab.locator(".jp-OutputArea-output", has_text=re.compile(re.escape(marker))).last
-    out.wait_for(timeout=60_000)
-    return json.loads(out.inner_text().split(marker, 1)[1])
 
 
 def test_a_vertex_dragged_in_the_page(lab, page):  # noqa: F811
