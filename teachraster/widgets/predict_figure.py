@@ -7,11 +7,14 @@ given; then the figure itself shows the answer over the student's (the true pixe
 the true point beside the marker, each item's place marked), with a verdict and the
 explanation.
 
-The picture is drawn once by the kernel (matplotlib: the lesson's ``draw(ax)``); marking,
-checking and revealing happen in the page (``static/predict_figure.js``), so a question also
-works in a ``teachraster html`` page with no kernel. The student's answer reaches the kernel
-(``q.given``, ``q.correct``, ``q.revealed``), and a notebook saved and reopened keeps the
-question, its picture and, once checked, the verdict.
+The picture is drawn once by the kernel (matplotlib: the lesson's ``draw(ax)``); marking and
+drawing the reveal happen in the page (``static/predict_figure.js``). The answer is not sent
+to the page before Check (issue 31: it was in the widget's ``data``, readable with devtools
+or in a saved notebook's widget state): Check sends the student's answer, and the kernel's
+state then carries what the reveal shows (``state["reveal"]``). A ``teachraster html`` page,
+with no kernel, carries it (``offline_html``) and judges by itself. The student's answer
+reaches the kernel (``q.given``, ``q.correct``, ``q.revealed``), and a notebook saved and
+reopened keeps the question, its picture and, once checked, the verdict.
 
 API for lessons (one example each)
 ----------------------------------
@@ -54,7 +57,7 @@ Order: ``answer`` lists the items in the right order, or is None when no order w
         explain="Each stick is in front of one and behind the other: a cycle.",
     )
 
-Choice: a multiple choice judged in the page, as these are: Check is enabled the moment an
+Choice: a multiple choice marked in the page, as these are: Check is enabled the moment an
 option is picked, with no round trip to a busy kernel (review r98, 07: a :class:`Predict`'s
 Check waited over a second for the kernel to hear of the pick); ``draw`` optional::
 
@@ -567,8 +570,8 @@ class PredictChoice(FigurePrediction):
 
     :class:`~teachraster.widgets.Predict` (ipywidgets) enables its Check only once the
     kernel has heard of the pick, which a kernel busy with the lesson's later cells (Run
-    All) delays by seconds; here, as in the figure predictions, the page judges and reveals
-    by itself, and the kernel hears of the answer (``q.given``, ``q.correct``) after.
+    All) delays by seconds; here, as in the figure predictions, the page enables Check at
+    the pick; Check then brings the answer from the kernel (none is in the page before).
 
     Parameters
     ----------
