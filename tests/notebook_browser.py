@@ -78,6 +78,25 @@ def _settings(folder: Path) -> None:
     (cells / "tracker.jupyterlab-settings").write_text(json.dumps({"windowingMode": "none"}))
 
 
+#: nbgrader's server and page extensions: a test dependency (``teachraster[dev]``), not in a
+#: student's JupyterLab (``teachraster[lab]``). Left on, the server imported nbgrader at each
+#: start (3.2 s) and every page load activated its four page plugins, which ask the server
+#: for courses and assignments; no browser test uses them (test_nbgrader runs nbgrader alone).
+NBGRADER_SERVER_EXTENSIONS = tuple(
+    f"nbgrader.server_extensions.{name}"
+    for name in ("formgrader", "validate_assignment", "assignment_list", "course_list")
+)
+
+
+def _page_config(config: Path) -> None:
+    """The page extensions the test server's pages leave out (:data:`NBGRADER_SERVER_EXTENSIONS`)."""
+    labconfig = config / "labconfig"
+    labconfig.mkdir(parents=True, exist_ok=True)
+    (labconfig / "page_config.json").write_text(
+        json.dumps({"disabledExtensions": {"@jupyter/nbgrader": True}})
+    )
+
+
 @dataclass
 class Lab:
     """A JupyterLab server on a copy of ``notebooks/`` and a Chromium page open on it."""
@@ -116,6 +135,8 @@ def _start_server(work: Path, env: dict) -> tuple[str, subprocess.Popen]:
             f"--ServerApp.root_dir={work / 'notebooks'}",
             f"--LabApp.user_settings_dir={work / 'settings'}",
             f"--LabApp.workspaces_dir={work / 'workspaces'}",
+            *(f"--ServerApp.jpserver_extensions={name}=False"
+              for name in NBGRADER_SERVER_EXTENSIONS),
         ],
         stdout=log, stderr=subprocess.STDOUT, env=env, cwd=work,
     )  # fmt: skip
@@ -151,6 +172,7 @@ def lab() -> Lab:
     work = Path(tempfile.mkdtemp(prefix="teachraster-lab-"))
     shutil.copytree(ROOT / "notebooks", work / "notebooks")
     _settings(work / "settings")
+    _page_config(work / "config")
     env = dict(
         os.environ,
         JUPYTER_CONFIG_DIR=str(work / "config"),

@@ -156,6 +156,27 @@ def test_a_page_reloaded_on_the_same_kernel_shows_the_answer_after_check(lab, pa
     _line(page).wait_for(state="hidden", timeout=15_000)
 
 
+#: The question cell's outputs, as the page shows them (a failure message's evidence)
+_OUTPUTS = """() => [...document.querySelectorAll('.jp-Notebook .jp-Cell')].slice(0, 1).map(c =>
+    [...c.querySelectorAll('.jp-OutputArea-output')].map(o =>
+        (o.getAttribute('data-mime-type') || 'widget') + ': ' + o.textContent.slice(0, 120)))"""
+
+
+def _restored(tab, selector: str, text: str) -> None:
+    """After a reload, wait for the question's widget (``selector`` with ``text``) in stages,
+    each named when it fails: the kernel connected again, then the view drawn."""
+    from playwright.sync_api import Error
+
+    tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=120_000)
+    try:
+        tab.locator(selector, has_text=text).first.wait_for(timeout=120_000)
+    except Error as exc:
+        raise AssertionError(
+            f"the reloaded page did not draw {text!r}; the question cell shows "
+            f"{tab.evaluate(_OUTPUTS)}; page errors: {tab.errors[-3:]}"
+        ) from exc
+
+
 FIGURE_RELOAD_NAME = "held_reload_figure.ipynb"
 FIGURE_CELLS = [
     "from teachraster.widgets import PredictPoint\n"
@@ -184,7 +205,7 @@ def test_a_figure_prediction_releases_its_held_cell_in_a_reloaded_page(lab, page
     )
     page.reload()
     page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
-    page.locator(".tr-predict", has_text="Where is it?").first.wait_for(timeout=240_000)
+    _restored(page, ".tr-predict", "Where is it?")
     answer.wait_for(state="attached", timeout=60_000)
     assert not answer.is_visible() and _line(page).is_visible()
     page.locator(".jp-Notebook .jp-Cell").nth(2).locator(".jp-InputArea-editor").click()
