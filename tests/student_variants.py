@@ -780,28 +780,58 @@ def _quad_with(aligned=True, perspective=True, y_down=True, clamp=False):
     return quad_derivatives
 
 
-def _hiz_with(compare=lambda near, buffer: near >= np.max(buffer), vertex_only=False, clamp=True):
-    """Brute force: the depth plane at every pixel centre of the tile (its smallest value is
-    the nearest), no nearer than the nearest vertex unless ``clamp`` is off."""
+def _hiz_with(
+    compare=lambda near, buffer: near >= np.max(buffer),
+    vertex_only=False,
+    clamp=True,
+    box="centres",
+):
+    """Brute force: the depth plane at every pixel centre of the tile inside the triangle's
+    bounding box (its smallest value is the nearest; +inf where none), no nearer than the
+    nearest vertex unless ``clamp`` is off. ``box``: "centres" (as 8.2 asks, r126 N8-1),
+    "tile" (lesson 10's bound: every centre of the tile), "pixels" (the pixels the box
+    touches)."""
 
     def hiz_rejects(xyz, row0, col0, size, buffer):
         (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
         if vertex_only:
             return bool(compare(min(z1, z2, z3), buffer))
         rows, cols = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
+        lo_x, hi_x, lo_y, hi_y = min(x1, x2, x3), max(x1, x2, x3), min(y1, y2, y3), max(y1, y2, y3)
+        if box == "pixels":
+            lo_x, hi_x = math.floor(lo_x) + 0.5, math.ceil(hi_x) - 0.5
+            lo_y, hi_y = math.floor(lo_y) + 0.5, math.ceil(hi_y) - 0.5
+        inside = (cols >= lo_x) & (cols <= hi_x) & (rows >= lo_y) & (rows <= hi_y)
+        if box == "tile":
+            inside[:] = True
         area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
         lam2 = ((cols - x1) * (y3 - y1) - (rows - y1) * (x3 - x1)) / area
         lam3 = ((x2 - x1) * (rows - y1) - (y2 - y1) * (cols - x1)) / area
-        plane = z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1)
-        nearest = max(plane.min(), min(z1, z2, z3)) if clamp else plane.min()
+        plane = (z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1))[inside]
+        low = plane.min() if plane.size else np.inf
+        nearest = max(low, min(z1, z2, z3)) if clamp else low
         return bool(compare(nearest, buffer))
 
     return hiz_rejects
 
 
+def hiz_box_corners(xyz, row0, col0, size, buffer):
+    """The plane at the bounding box's own corners, kept within the tile's extreme centres
+    (not at the centres inside the box): safe, up to half a pixel looser."""
+    v = np.asarray(xyz, dtype=float)
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = v
+    xs = np.clip([v[:, 0].min(), v[:, 0].max()], col0 + 0.5, col0 + size - 0.5)
+    ys = np.clip([v[:, 1].min(), v[:, 1].max()], row0 + 0.5, row0 + size - 0.5)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    low = (z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)).min()
+    return bool(max(low, min(z1, z2, z3)) >= np.max(buffer))
+
+
 def hiz_covered_centres(xyz, row0, col0, size, buffer):
     """The plane's minimum over the tile's centres the triangle covers (r64 08-4): safe and
-    tighter, but a coverage test per pixel; the corners' bound where it covers none."""
+    tighter, but a coverage test per pixel; the box's bound where it covers none."""
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
     plane = []
     for r in range(row0, row0 + size):
@@ -1214,6 +1244,14 @@ WRONG = {
     "Hi-Z by the nearest vertex": ("hiz_rejects", _hiz_with(vertex_only=True), "nearest vertex"),
     "Hi-Z over the covered centres": ("hiz_rejects", hiz_covered_centres, "centres the triangle"),
     "Hi-Z by the plane alone": ("hiz_rejects", _hiz_with(clamp=False), "bare plane"),
+    # r126 N8-1: lesson 10's bound over the whole tile, the pixels the box touches, its corners
+    "Hi-Z by lesson 10's bound": ("hiz_rejects", _hiz_with(box="tile"), "lesson 10's bound"),
+    "Hi-Z over the pixels the box touches": (
+        "hiz_rejects",
+        _hiz_with(box="pixels"),
+        "pixels the triangle's bounding box touches",
+    ),  # fmt: skip
+    "Hi-Z at the box's own corners": ("hiz_rejects", hiz_box_corners, "box's own corners"),
     "Hi-Z strictly behind": (
         "hiz_rejects",
         _hiz_with(lambda near, buffer: near > np.max(buffer)),
