@@ -815,6 +815,17 @@ def _hiz_with(
     return hiz_rejects
 
 
+def hiz_box(xyz, row0, col0, size):
+    """8.2's rectangle (r126 N8-1): the tile's columns c0 … c1 and rows r0 … r1 whose centres
+    lie in the triangle's bounding box, or None where none does."""
+    v = np.asarray(xyz, dtype=float)
+    c0 = max(col0, math.ceil(v[:, 0].min() - 0.5))
+    c1 = min(col0 + size - 1, math.floor(v[:, 0].max() - 0.5))
+    r0 = max(row0, math.ceil(v[:, 1].min() - 0.5))
+    r1 = min(row0 + size - 1, math.floor(v[:, 1].max() - 0.5))
+    return None if c0 > c1 or r0 > r1 else (c0, c1, r0, r1)
+
+
 def hiz_box_corners(xyz, row0, col0, size, buffer):
     """The plane at the bounding box's own corners, kept within the tile's extreme centres
     (not at the centres inside the box): safe, up to half a pixel looser."""

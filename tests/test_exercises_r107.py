@@ -191,5 +191,6 @@ def test_the_docs_say_what_the_hiz_task_states():
 
     docs = (Path(__file__).resolve().parents[1] / "docs" / "exercises.md").read_text("utf-8")
     row = next(line for line in docs.splitlines() if line.startswith("| 8.2 `hiz_rejects"))
-    assert "two cheap lower bounds" in row and "the larger is taken" in row, row
+    # r126 N8-1: the task now states lesson 10's bound cut to the triangle's bounding box
+    assert "tighter bound than lesson 10" in row and "bounding box" in row, row
     assert "which bound the check asks for, the notebook says only in a hint" not in row

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from student_variants import hiz_box
 
 from teachraster import exercises as ex
 
@@ -44,8 +45,12 @@ def _hiz_absolute_plane(xyz, row0, col0, size, buffer):
     b = z1 * (x2 - x3) + z2 * (x3 - x1) + z3 * (x1 - x2)
     c = x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2)
     d = -(x1 * (y2 * z3 - y3 * z2) + x2 * (y3 * z1 - y1 * z3) + x3 * (y1 * z2 - y2 * z1))
-    xs = np.array([col0 + 0.5, col0 + size - 0.5, col0 + 0.5, col0 + size - 0.5])
-    ys = np.array([row0 + 0.5, row0 + 0.5, row0 + size - 0.5, row0 + size - 0.5])
+    box = hiz_box(xyz, row0, col0, size)  # r126 N8-1: the tile's centres inside the box
+    if box is None:
+        return True
+    c0, c1, r0, r1 = box
+    xs = np.array([c0, c1, c0, c1]) + 0.5
+    ys = np.array([r0, r0, r1, r1]) + 0.5
     z = -(a * xs + b * ys + d) / c
     return bool(max(z.min(), min(z1, z2, z3)) >= np.max(buffer))
 

@@ -121,14 +121,20 @@ def test_trilinears_clamp_is_asked_back_on_the_first_try():
 
 def _task_rule(xyz, row0, col0, size, buffer):
     """8.2's rule as cell 5 states it, in float64: the larger of the plane's minimum over the
-    extreme pixel centres and the nearest vertex, at or behind the farthest stored depth."""
+    tile's centres inside the triangle's bounding box (r126 N8-1; none: rejected) and the
+    nearest vertex, at or behind the farthest stored depth."""
+    from student_variants import hiz_box
+
     xyz = np.asarray(xyz, float)
+    box = hiz_box(xyz, row0, col0, size)
+    if box is None:
+        return True
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
     a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
     b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-    xs = np.array([col0, col0 + size - 1]) + 0.5
-    ys = np.array([row0, row0 + size - 1]) + 0.5
+    xs = np.array(box[:2]) + 0.5
+    ys = np.array(box[2:]) + 0.5
     plane = min(z1 + a * (x - x1) + b * (y - y1) for x in xs for y in ys)
     return bool(max(plane, xyz[:, 2].min()) >= np.max(buffer))
 

@@ -134,16 +134,22 @@ def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
 
 
 def _hiz(outer=False, vertex=True):
-    """8.2 in float64 as cell 5 asks; ``outer``: the plane at the tile's outer corners;
-    ``vertex=False``: the plane's bound alone."""
+    """8.2 in float64 as cell 5 asks (the tile's centres inside the box, r126 N8-1);
+    ``outer``: the plane at the extreme pixels' outer corners; ``vertex=False``: the plane's
+    bound alone."""
+    from student_variants import hiz_box
 
     def hiz_rejects(xyz, row0, col0, size, buffer):
         (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, float)
+        box = hiz_box(xyz, row0, col0, size)
+        if box is None:
+            return True
+        c0, c1, r0, r1 = box
         area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
         a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
         b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-        xs = [col0, col0 + size] if outer else [col0 + 0.5, col0 + size - 0.5]
-        ys = [row0, row0 + size] if outer else [row0 + 0.5, row0 + size - 0.5]
+        xs = [c0, c1 + 1] if outer else [c0 + 0.5, c1 + 0.5]
+        ys = [r0, r1 + 1] if outer else [r0 + 0.5, r1 + 0.5]
         plane = min(z1 + a * (x - x1) + b * (y - y1) for x in xs for y in ys)
         bound = max(plane, min(z1, z2, z3)) if vertex else plane
         return bool(bound >= np.max(buffer))
@@ -159,7 +165,7 @@ def test_outer_corners_and_the_plane_alone_each_fail_several_clear_cases():
     from teachraster.exercises.hiz_tile import _steep_cases, expected_reject
 
     assert _check("hiz_rejects", _hiz()).passed
-    for mistake, words in ((_hiz(outer=True), "you evaluated the plane at the tile's outer corners"),
+    for mistake, words in ((_hiz(outer=True), "you evaluated the plane at the outer corners of the extreme pixels"),
                            (_hiz(vertex=False), "you took the bare plane at the corners")):  # fmt: skip
         report = _check("hiz_rejects", mistake)
         named = [f.case for f in report.failures if f.case.startswith("a ")]
