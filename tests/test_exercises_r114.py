@@ -216,7 +216,8 @@ def test_capstone_glass_points_to_no_over_that_exercise_9_lacks():
 def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():
     """r114 D3-1: 3.1 asked to "find" the weights lesson 03 §1 prints as area ratios, 3.2 to
     "work out" lesson 04 §3's derivation line by line; now 3.1 works from the definition
-    (a solve the lesson does not show) and 3.2 asks for the form that survives w 1e610 apart."""
+    (a solve the lesson does not show) and 3.2 asks for the form that survives w 1e610 apart;
+    since r126 D3-1 3.2 derives μ from the divide by w alone."""
     import json
     from pathlib import Path
 
@@ -229,6 +230,8 @@ def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():
 
     first, second = task("task_3_1"), task("task_3_2")
     assert "Lesson 03 §1" in first and "Cramer's rule" in first, first
-    assert "Lesson 04 (§1–§3) derives" in second and "1e610 apart" in second, second
+    # r126 D3-1: 3.2 derives μ from the divide by w on a GPU's w (1e-310: an ungraded extra)
+    assert "Derive μ from λ and the three clip-space w using only these facts" in second, second
+    assert "1e610" not in second and "An extra, not graded" in second, second
     assert "Only the ratios of the three w matter" not in second
     assert "then turn that around" not in second

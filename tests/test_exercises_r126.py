@@ -108,7 +108,7 @@ def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
     from teachraster.exercises.interpolation import barycentric_cases
     from teachraster.exercises.tolerance import TOL
 
-    cell = _cell("03_interpolation.ipynb", 4)
+    cell = _cell("03_interpolation.ipynb", 2)
     assert TOL == 1e-9 and "compares your weights with float64's to 1e-9" in cell, cell
     assert (
         "off by about 1e-8 (0.40000001 for 0.4)" in cell and "5-px triangle at the origin" in cell
@@ -171,3 +171,69 @@ def test_outer_corners_and_the_plane_alone_each_fail_several_clear_cases():
         assert all(words in f.explanation for f in report.failures), str(report)
     for label, args in _steep_cases():
         assert expected_reject(*args) and _task_rule(*args), label
+
+
+# -- fixex13 (r126 N8-1, D8-1, D3-4, D12-3 and fixex10's note) --------------------------------
+
+
+def test_8_2_asks_for_a_tighter_bound_than_lesson_10_and_names_the_lessons():
+    """N8-1/D8-1: 8.2 copied lesson 10 §7's bound; it now asks for the plane over the tile's
+    centres inside the triangle's bounding box, and names the lesson's bound as looser."""
+    from student_variants import _hiz_with, hiz_box_corners
+
+    from teachraster.exercises.hiz_tile import _box_cases, expected_reject, tile_bound
+
+    text = " ".join(_cell("08_tiles.ipynb", 5).split())
+    assert "Lesson 10 §7 takes the larger of two cheap lower bounds" in text, text
+    assert "inside the triangle's bounding box" in text, text
+    for label, args in _box_cases():  # each named box case: lesson 10's bound keeps it
+        assert expected_reject(*args) and tile_bound(*args[:4]) < np.max(args[4]), label
+    assert _check("hiz_rejects", _hiz_with()).passed
+    for fn, words in ((_hiz_with(box="tile"), "you took lesson 10's bound"),
+                      (_hiz_with(box="pixels"), "pixels the triangle's bounding box touches"),
+                      (hiz_box_corners, "the bounding box's own corners")):  # fmt: skip
+        report = _check("hiz_rejects", fn)
+        assert report.failures and all(words in f.explanation for f in report.failures), report
+
+
+def test_depth_test_and_safe_near_refuse_the_checkers_own_answer():
+    """fixex10's note: depth_test and safe_near listed no answer, so the checker's own
+    functions, handed in, passed as the student's."""
+    from teachraster.exercises.depth_clipping import passes_depth
+    from teachraster.exercises.near_plane import expected_near
+
+    for name, fn in (("depth_test", lambda a, b: passes_depth(a, b)),
+                     ("safe_near", lambda z, g, f, b: expected_near(z, g, f, b))):  # fmt: skip
+        report = _check(name, fn)
+        assert not report.passed and "not counted" in str(report), str(report)
+    assert _check("depth_test", lambda a, b: a < b).passed
+
+
+def test_3_1_hands_over_no_tool():
+    """D3-4: cell 3 imported the package's edge_function, the decisive tool of 3.1."""
+    import nbformat
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
+    code = "\n".join(c.source for c in nbformat.read(path, 4).cells if c.cell_type == "code")
+    assert "edge_function" not in code and "import teachraster" not in code, code
+
+
+def test_a_long_scene_name_keeps_its_title_within_the_panel():
+    """D12-3: "intersecting_triangles: yours" was wider than its panel and shifted it."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def stub(depths, writes):
+        raise NotImplementedError
+
+    report = ex.capstone("intersecting_triangles", depth_passes=stub)
+    fig, axes = plt.subplots(1, 3, figsize=(8.8, 3.2), layout="constrained")
+    report.compare(axes)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    title = axes[0].title.get_window_extent(renderer)
+    panel = axes[0].get_window_extent(renderer)
+    assert title.width <= panel.width + 1, (title.width, panel.width, axes[0].get_title())
+    plt.close(fig)
