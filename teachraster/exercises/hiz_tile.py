@@ -538,8 +538,13 @@ def _extreme_centres(ax, xyz, row0, col0, size, far: str) -> list:
     k = int(np.argmin(depth))
     artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
     artists += ax.plot(cols[k] + 0.5, rows[k] + 0.5, "o", color="#ff9f1c", ms=8)  # the nearest
-    for r, c, z in zip(rows, cols, depth):  # the triangle's depth at each extreme centre
-        inward = (1 if c == col0 else -1, -1 if r == row0 else 1)  # y axis points down
+    # the triangle's depth at each extreme centre; in a box under 4 px the labels would
+    # overlap: the nearest one only (r126 N8-1's small triangles)
+    small = cols.max() - cols.min() < 4 or rows.max() - rows.min() < 4
+    for j, (r, c, z) in enumerate(zip(rows, cols, depth)):
+        if small and j != k:
+            continue
+        inward = (1 if c == cols.min() else -1, -1 if r == rows.min() else 1)  # y points down
         artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(14 * inward[0], 9 * inward[1]),
                                    textcoords="offset points", ha="center", va="center",
                                    fontsize="x-small", bbox={"boxstyle": "round,pad=0.15",
@@ -559,13 +564,17 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     inset.add_patch(Polygon(xyz[:, :2], closed=True, facecolor="#d7301f", alpha=0.25,
                             edgecolor="#d7301f", linewidth=1))  # fmt: skip
     inset.add_patch(Rectangle((col0, row0), size, size, fill=False, edgecolor="black", lw=1))
-    for x, y, z in xyz:
-        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
-                       color="#7f0000")  # fmt: skip
     lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0))
     hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
     pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
     lo, hi = lo - pad, hi + pad
+    # a triangle under half the view: its nearest vertex's depth alone (the labels overlap)
+    tiny = np.ptp(xyz[:, :2], axis=0).max() < 0.5 * float((hi - lo).max())
+    for j, (x, y, z) in enumerate(xyz):
+        if tiny and j != int(np.argmin(xyz[:, 2])):
+            continue
+        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
+                       color="#7f0000")  # fmt: skip
     inset.set_xlim(lo[0], hi[0])
     inset.set_ylim(hi[1], lo[1])
     inset.set_aspect("equal")
