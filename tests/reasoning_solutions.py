@@ -95,12 +95,20 @@ def quad_derivatives(xy, w, f, row, col):
 
 
 def hiz_rejects(xyz, row0, col0, size, buffer):
-    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, float)
+    """8.2: the plane over the tile's centres inside the triangle's bounding box (r126 N8-1)."""
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+    # the tile's pixels whose centres lie in the triangle's bounding box
+    c_lo = max(col0, math.ceil(min(x1, x2, x3) - 0.5))
+    c_hi = min(col0 + size - 1, math.floor(max(x1, x2, x3) - 0.5))
+    r_lo = max(row0, math.ceil(min(y1, y2, y3) - 0.5))
+    r_hi = min(row0 + size - 1, math.floor(max(y1, y2, y3) - 0.5))
+    if c_lo > c_hi or r_lo > r_hi:
+        return True  # no fragment of the triangle in this tile
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
-    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
-    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-    xs = np.array([col0 + 0.5, col0 + size - 0.5])
-    ys = np.array([row0 + 0.5, row0 + size - 0.5])
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area  # dz/dx
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area  # dz/dy
+    xs = np.array([c_lo + 0.5, c_hi + 0.5])
+    ys = np.array([r_lo + 0.5, r_hi + 0.5])
     corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)
     nearest = max(corners.min(), min(z1, z2, z3))
     return bool(nearest >= np.max(buffer))

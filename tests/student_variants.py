@@ -674,7 +674,8 @@ def weights_ratios(lam, w):
 
 
 def weights_by_w1(lam, w):
-    """λ_i · (w_1 / w_i), normalised: right while w_1 is the smallest (r107 N3-1)."""
+    """λ_i · (w_1 / w_i), normalised: right on every w a GPU meets (r107 N3-1 named it while
+    3.2 graded w = 1e-310 beside 1e300, r126 D3-1)."""
     w = np.asarray(w, float)
     with np.errstate(all="ignore"):
         q = np.asarray(lam, float) * (w[0] / w)
@@ -682,7 +683,8 @@ def weights_by_w1(lam, w):
 
 
 def weights_overflowing(lam, w):
-    """Right, except that 1/w overflows for the catalogue's w near 1e-310."""
+    """Lesson 04 as printed: right on a GPU's w; 1/w overflows for w near 1e-310 (3.2's
+    ungraded extra since r126 D3-1)."""
     q = np.asarray(lam, float) / np.asarray(w, float)
     return q / q.sum()
 
@@ -780,28 +782,69 @@ def _quad_with(aligned=True, perspective=True, y_down=True, clamp=False):
     return quad_derivatives
 
 
-def _hiz_with(compare=lambda near, buffer: near >= np.max(buffer), vertex_only=False, clamp=True):
-    """Brute force: the depth plane at every pixel centre of the tile (its smallest value is
-    the nearest), no nearer than the nearest vertex unless ``clamp`` is off."""
+def _hiz_with(
+    compare=lambda near, buffer: near >= np.max(buffer),
+    vertex_only=False,
+    clamp=True,
+    box="centres",
+):
+    """Brute force: the depth plane at every pixel centre of the tile inside the triangle's
+    bounding box (its smallest value is the nearest; +inf where none), no nearer than the
+    nearest vertex unless ``clamp`` is off. ``box``: "centres" (as 8.2 asks, r126 N8-1),
+    "tile" (lesson 10's bound: every centre of the tile), "pixels" (the pixels the box
+    touches)."""
 
     def hiz_rejects(xyz, row0, col0, size, buffer):
         (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
         if vertex_only:
             return bool(compare(min(z1, z2, z3), buffer))
         rows, cols = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
+        lo_x, hi_x, lo_y, hi_y = min(x1, x2, x3), max(x1, x2, x3), min(y1, y2, y3), max(y1, y2, y3)
+        if box == "pixels":
+            lo_x, hi_x = math.floor(lo_x) + 0.5, math.ceil(hi_x) - 0.5
+            lo_y, hi_y = math.floor(lo_y) + 0.5, math.ceil(hi_y) - 0.5
+        inside = (cols >= lo_x) & (cols <= hi_x) & (rows >= lo_y) & (rows <= hi_y)
+        if box == "tile":
+            inside[:] = True
         area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
         lam2 = ((cols - x1) * (y3 - y1) - (rows - y1) * (x3 - x1)) / area
         lam3 = ((x2 - x1) * (rows - y1) - (y2 - y1) * (cols - x1)) / area
-        plane = z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1)
-        nearest = max(plane.min(), min(z1, z2, z3)) if clamp else plane.min()
+        plane = (z1 + lam2 * (z2 - z1) + lam3 * (z3 - z1))[inside]
+        low = plane.min() if plane.size else np.inf
+        nearest = max(low, min(z1, z2, z3)) if clamp else low
         return bool(compare(nearest, buffer))
 
     return hiz_rejects
 
 
+def hiz_box(xyz, row0, col0, size):
+    """8.2's rectangle (r126 N8-1): the tile's columns c0 … c1 and rows r0 … r1 whose centres
+    lie in the triangle's bounding box, or None where none does."""
+    v = np.asarray(xyz, dtype=float)
+    c0 = max(col0, math.ceil(v[:, 0].min() - 0.5))
+    c1 = min(col0 + size - 1, math.floor(v[:, 0].max() - 0.5))
+    r0 = max(row0, math.ceil(v[:, 1].min() - 0.5))
+    r1 = min(row0 + size - 1, math.floor(v[:, 1].max() - 0.5))
+    return None if c0 > c1 or r0 > r1 else (c0, c1, r0, r1)
+
+
+def hiz_box_corners(xyz, row0, col0, size, buffer):
+    """The plane at the bounding box's own corners, kept within the tile's extreme centres
+    (not at the centres inside the box): safe, up to half a pixel looser."""
+    v = np.asarray(xyz, dtype=float)
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = v
+    xs = np.clip([v[:, 0].min(), v[:, 0].max()], col0 + 0.5, col0 + size - 0.5)
+    ys = np.clip([v[:, 1].min(), v[:, 1].max()], row0 + 0.5, row0 + size - 0.5)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    low = (z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)).min()
+    return bool(max(low, min(z1, z2, z3)) >= np.max(buffer))
+
+
 def hiz_covered_centres(xyz, row0, col0, size, buffer):
     """The plane's minimum over the tile's centres the triangle covers (r64 08-4): safe and
-    tighter, but a coverage test per pixel; the corners' bound where it covers none."""
+    tighter, but a coverage test per pixel; the box's bound where it covers none."""
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
     plane = []
     for r in range(row0, row0 + size):
@@ -883,6 +926,9 @@ DIFFERENT = {
     # issue 30
     "span from exact fractions, the split by edges": ("span", span_exact),
     "perspective weights from ratios of w": ("perspective_weights", weights_ratios),
+    # r126 D3-1: on a GPU's w (3.2's cases since) scaling by the first w is right too
+    "perspective weights scaled by w1": ("perspective_weights", weights_by_w1),
+    "perspective weights as lesson 04 prints them": ("perspective_weights", weights_overflowing),
     "depth passes as 0/1 ints": (
         "depth_passes",
         lambda d, w: np.array(_passes_with()(d, w), dtype=int),
@@ -1153,7 +1199,6 @@ WRONG = {
     "weights affine": ("perspective_weights", lambda lam, w: lam, "affine"),
     "weights times w": ("perspective_weights", lambda lam, w: lam * w / (lam @ w), "multiplied"),
     "weights unnormalised": ("perspective_weights", lambda lam, w: lam / w, "sum to 1"),
-    "weights scaled by w1": ("perspective_weights", weights_by_w1, "you scaled the w by w1"),
     # depth_passes
     "passes with <=": ("depth_passes", _passes_with(ties=True), "use <, not <="),
     "glass writes depth": ("depth_passes", _passes_with(mask=False), "leaves the buffer"),
@@ -1214,6 +1259,14 @@ WRONG = {
     "Hi-Z by the nearest vertex": ("hiz_rejects", _hiz_with(vertex_only=True), "nearest vertex"),
     "Hi-Z over the covered centres": ("hiz_rejects", hiz_covered_centres, "centres the triangle"),
     "Hi-Z by the plane alone": ("hiz_rejects", _hiz_with(clamp=False), "bare plane"),
+    # r126 N8-1: lesson 10's bound over the whole tile, the pixels the box touches, its corners
+    "Hi-Z by lesson 10's bound": ("hiz_rejects", _hiz_with(box="tile"), "lesson 10's bound"),
+    "Hi-Z over the pixels the box touches": (
+        "hiz_rejects",
+        _hiz_with(box="pixels"),
+        "pixels the triangle's bounding box touches",
+    ),  # fmt: skip
+    "Hi-Z at the box's own corners": ("hiz_rejects", hiz_box_corners, "box's own corners"),
     "Hi-Z strictly behind": (
         "hiz_rejects",
         _hiz_with(lambda near, buffer: near > np.max(buffer)),
@@ -1321,13 +1374,15 @@ KINDS = {
     "clip returns an empty polygon": "constant",
     "covers, ties by the edges as given": "ties by the edges as given",
     "blocks by every centre": "timeout",
-    "weights scaled by w1": "scaled by w1",
     "blocks in float32": "float32",
     "blocks by a bottom-right rule": "bottom-right rule",
     "blocks by the pixels' top-left corners": "pixel corners",
     "blocks by the coverage of every centre": "by coverage",
     "Hi-Z over the covered centres": "covered centres",
     "Hi-Z by the plane alone": "no clamp",
+    "Hi-Z by lesson 10's bound": "whole tile",
+    "Hi-Z over the pixels the box touches": "pixel box",
+    "Hi-Z at the box's own corners": "box corners",
     "clip with z − w": "far plane's distance",
     "clip against the far plane": "far plane",
     "fill half a pixel off in x": "half a pixel off in x",

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from student_variants import hiz_box
 
 from teachraster import exercises as ex
 
@@ -44,8 +45,12 @@ def _hiz_absolute_plane(xyz, row0, col0, size, buffer):
     b = z1 * (x2 - x3) + z2 * (x3 - x1) + z3 * (x1 - x2)
     c = x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2)
     d = -(x1 * (y2 * z3 - y3 * z2) + x2 * (y3 * z1 - y1 * z3) + x3 * (y1 * z2 - y2 * z1))
-    xs = np.array([col0 + 0.5, col0 + size - 0.5, col0 + 0.5, col0 + size - 0.5])
-    ys = np.array([row0 + 0.5, row0 + 0.5, row0 + size - 0.5, row0 + size - 0.5])
+    box = hiz_box(xyz, row0, col0, size)  # r126 N8-1: the tile's centres inside the box
+    if box is None:
+        return True
+    c0, c1, r0, r1 = box
+    xs = np.array([c0, c1, c0, c1]) + 0.5
+    ys = np.array([r0, r0, r1, r1]) + 0.5
     z = -(a * xs + b * ys + d) / c
     return bool(max(z.min(), min(z1, z2, z3)) >= np.max(buffer))
 
@@ -211,7 +216,8 @@ def test_capstone_glass_points_to_no_over_that_exercise_9_lacks():
 def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():
     """r114 D3-1: 3.1 asked to "find" the weights lesson 03 §1 prints as area ratios, 3.2 to
     "work out" lesson 04 §3's derivation line by line; now 3.1 works from the definition
-    (a solve the lesson does not show) and 3.2 asks for the form that survives w 1e610 apart."""
+    (a solve the lesson does not show) and 3.2 asks for the form that survives w 1e610 apart;
+    since r126 D3-1 3.2 derives μ from the divide by w alone."""
     import json
     from pathlib import Path
 
@@ -224,6 +230,8 @@ def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():
 
     first, second = task("task_3_1"), task("task_3_2")
     assert "Lesson 03 §1" in first and "Cramer's rule" in first, first
-    assert "Lesson 04 (§1–§3) derives" in second and "1e610 apart" in second, second
+    # r126 D3-1: 3.2 derives μ from the divide by w on a GPU's w (1e-310: an ungraded extra)
+    assert "Derive μ from λ and the three clip-space w using only these facts" in second, second
+    assert "1e610" not in second and "An extra, not graded" in second, second
     assert "Only the ratios of the three w matter" not in second
     assert "then turn that around" not in second

@@ -139,10 +139,10 @@ def _cell(path: str, grade_id: str) -> str:
 
 def test_hiz_task_says_which_bound_is_asked_truthfully():
     """r64 08-4: "the check asks for the tightest safe answer" was false (the plane over the
-    covered centres is tighter); the check asks for the larger of the two bounds, and a
+    covered centres is tighter); the check asks for the box's bound (r126 N8-1), and a
     tighter per-pixel bound is named, not passed."""
     text = _cell("notebooks/exercises/08_tiles.ipynb", "hiz_rejects_task")
-    assert "tightest" not in text and "larger of the two" in text
+    assert "tightest" not in text and "inside the triangle's bounding box" in text
     from student_variants import hiz_covered_centres
 
     assert not ex.check("hiz_rejects", hiz_covered_centres).passed
@@ -185,4 +185,5 @@ def test_the_docs_task_table_does_not_give_8_2s_method_away():
         assert method not in row, (method, row)
     text = _cell("notebooks/exercises/08_tiles.ipynb", "hiz_rejects_task")
     hint = text[text.index("<details>") :]
-    assert "larger of the two" in hint and "larger of the two" not in text[: len(text) - len(hint)]
+    # r126 N8-1: the task states the bound (the box cut); which centres and where, the hint
+    assert "extreme centres" in hint and "extreme centres" not in text[: len(text) - len(hint)]

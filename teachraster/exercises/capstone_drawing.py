@@ -70,7 +70,10 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
         titles = ("yours (overdraw)", "package's (overdraw)", differ)
         axes[0].set_xlabel(view, fontsize="x-small")
     else:
-        titles = (f"{spec.name}: yours", "the package's", differ)
+        # r126 D12-3: "intersecting_triangles: yours" overran its panel and shifted it
+        mine_title = f"{spec.name}: yours"
+        titles = (mine_title if len(mine_title) <= 24 else f"{spec.name}:\nyours",
+                  "the package's", differ)  # fmt: skip
     for ax, title in zip(axes, titles):
         ax.set_title(title, fontsize="small")
         ax.set_xticks([])

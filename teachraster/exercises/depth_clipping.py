@@ -24,12 +24,18 @@ from ..study.hardcases import CASES
 from .answers import MAX_VERTICES, as_bool, as_numbers, short
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer
+from .package_answers import CHECKER_WORDS
 from .running import WrongAnswerType
 from .scalars import num, vec
 from .tolerance import TOL, all_close, same_polygon
 
 
 # -- depth_test -------------------------------------------------------------------------------
+def passes_depth(incoming: float, stored: float) -> bool:
+    """The expected verdict: strictly nearer (smaller) passes."""
+    return bool(incoming < stored)
+
+
 def depth_test_cases():
     rng = np.random.default_rng(SEED + 3)
     pairs = [(0.5, 0.5), (0.3, 0.7), (0.7, 0.3), (0.0, 0.0), (1.0, 1.0), (0.0, 1.0), (1.0, 0.0)]
@@ -42,7 +48,7 @@ def depth_test_cases():
         (
             label if a == b and n == 0 else f"incoming {num(a, b)}, stored {num(b, a)}",
             (float(a), float(b)),
-            bool(a < b),
+            passes_depth(a, b),
         )
         for n, (a, b) in enumerate(pairs)
     ]
@@ -101,6 +107,9 @@ DEPTH_TEST = Exercise(
     "depth_test", depth_test_cases, as_bool, lambda g, e, a: g == e, explain_depth,
     lambda *a: ": the fragment passes only when its depth is strictly smaller than the stored one",
     DEPTH_MISTAKES, draw=_draw_depth,
+    # r126 (fixex10's note): no answer was listed, so the checker's own functions were not
+    # watched: handed in, they passed as the student's
+    answers=(PackageAnswer(passes_depth, words=CHECKER_WORDS),),
 )  # fmt: skip
 
 

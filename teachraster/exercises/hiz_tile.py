@@ -1,19 +1,21 @@
-"""Exercise ``hiz_rejects`` (lesson 10): may Hi-Z reject a triangle's block in one tile?
+"""Exercise ``hiz_rejects`` (lesson 10): a tighter Hi-Z bound for one tile.
 
-Hi-Z keeps, per tile, the farthest depth stored there. Before interpolating a triangle's
-depth in a tile it compares the *nearest* depth the triangle can have in the tile with that
-farthest one: when even the nearest is no nearer (≥), every fragment of the block fails the
-depth test (strictly nearer passes) and the block is rejected whole. The triangle's depth is
-affine in screen space (lesson 05b), so over the tile's pixel centres its plane is smallest
-at one of the four *extreme pixel centres* (the corner trick of exercise 8.1), and no
-fragment is nearer than the triangle's nearest vertex: the task's lower bound is the larger
-of the two (a bound: it may lie nearer than every fragment of the triangle in the tile). A
-tile with an empty pixel (depth +inf, nothing drawn yet) rejects nothing.
+Hi-Z keeps, per tile, the farthest depth stored there, and rejects a triangle's block in the
+tile when a lower bound on the triangle's depth there is at or behind it (every fragment would
+fail the depth test, strictly nearer passes). Lesson 10 §7 builds the bound from the plane's
+minimum over all the tile's pixel centres (at one of its four extreme centres) and the nearest
+vertex's depth. The exercise asks for a tighter one, still a few numbers per tile: no fragment
+lies outside the triangle's bounding box, so the plane is minimised over only the tile's pixel
+centres inside that box (its border included), at the four extreme centres of that smaller
+rectangle, and no nearer than the nearest vertex; a box holding no centre of the tile leaves
+the triangle no fragment there (the bound is +inf: the block is rejected). The lesson's bound
+is safe but looser: named, not taken (r126 N8-1). A tile with an empty pixel (+inf) rejects
+only a triangle with no fragment in it.
 
 Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
 uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`
-(clamped to the vertices' depth range) at the extreme pixel centres, against the tile's
-largest stored depth.
+(clamped to the vertices' depth range) at the extreme centres of the tile cut to the box,
+against the tile's largest stored depth.
 """
 
 from __future__ import annotations
@@ -69,17 +71,48 @@ def _bare_plane(xyz, rows, cols):
     return z1 + a * (cols + half - x1) + b * (rows + half - y1)
 
 
+def box_span(lo: float, hi: float, first: int, size: int) -> tuple[int, int] | None:
+    """The pixels (first … first + size − 1) whose centres lie in [lo, hi], as (first, last),
+    or None when no centre does."""
+    a, b = max(first, int(np.ceil(lo - 0.5))), min(first + size - 1, int(np.floor(hi - 0.5)))
+    return (a, b) if a <= b else None
+
+
+def _box_corners(xyz, row0: int, col0: int, size: int):
+    """The extreme centres (rows, cols) of the tile's centres inside the triangle's bounding
+    box (r126 N8-1), or None when the box holds none of them."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    cs = box_span(xy[:, 0].min(), xy[:, 0].max(), col0, size)
+    rs = box_span(xy[:, 1].min(), xy[:, 1].max(), row0, size)
+    if cs is None or rs is None:
+        return None
+    return np.array([rs[0], rs[0], rs[1], rs[1]]), np.array([cs[0], cs[1], cs[0], cs[1]])
+
+
 def lower_bound(xyz, row0: int, col0: int, size: int) -> float:
-    """The task's bound: the larger of the plane's minimum over the extreme pixel centres and
-    the nearest vertex's depth. The renderer's plane is also clamped *above*, to the farthest
+    """The task's bound: the larger of the plane's minimum over the extreme centres of the tile
+    cut to the triangle's bounding box and the nearest vertex's depth (+inf: no centre of the
+    tile lies in the box). The renderer's plane is also clamped *above*, to the farthest
     vertex's depth; where all four centres lie beyond it that clamp lowered the bound below
     the task's rule (r114 D8-6, a tile the rule rejects and the reference kept): there the
     bare plane's minimum is the bound."""
-    rows, cols = _corners(row0, col0, size)
+    box = _box_corners(xyz, row0, col0, size)
+    if box is None:
+        return float("inf")
+    return _bound_at(xyz, *box)
+
+
+def _bound_at(xyz, rows, cols) -> float:
+    """The plane's minimum at centres (rows, cols), no nearer than the nearest vertex."""
     near = float(plane_at(xyz, rows, cols).min())
     if near >= float(np.max(np.asarray(xyz, dtype=float)[:, 2])):
         near = max(near, float(plane_at(xyz, rows, cols, clamp=False).min()))
     return near
+
+
+def tile_bound(xyz, row0: int, col0: int, size: int) -> float:
+    """Lesson 10 §7's bound: the same over all the tile's pixel centres (safe, looser)."""
+    return _bound_at(xyz, *_corners(row0, col0, size))
 
 
 def expected_reject(xyz, row0, col0, size, buffer) -> bool:
@@ -119,6 +152,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         ("a triangle on the far plane (depth 1), one pixel of the tile still empty",
          (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
         *_steep_cases(),
+        *_box_cases(),
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -149,6 +183,8 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
 #: from four sides: (words, x mirrored, y mirrored, x and y swapped, the tile beside it
 #: (row0, col0)).
 _STEEP = np.array([[0.0, 0.0, 0.1], [16.0, 0.0, 0.9], [0.0, 16.0, 0.5]])
+#: r126 N8-1: a steep triangle whose nearest vertex (8, 0) is no corner of its bounding box.
+_APEX = np.array([[8.0, 0.0, 0.1], [16.0, 16.0, 0.9], [0.0, 16.0, 0.5]])
 _SIDES = (
     ("growing right and down", False, False, False, (0, 8)),
     ("growing left and down", True, False, False, (0, 16)),
@@ -161,8 +197,9 @@ def _steep_cases() -> list[tuple[str, tuple]]:
     """r126 D8-3: the outer-corner and plane-only mistakes were each caught by one case (one
     a random tie 1.5e-11 wide). Beside the triangle its plane is 0.0375 nearer at the tile's
     outer corners than at its extreme pixel centres (0.5 against 0.5375), and the farthest
-    stored depth 0.5188 lies between; in a tile around its nearest vertex (depth 0.1) the bare
-    plane at the extreme centres runs to -0.1625, and the stored depth 0.05 lies between."""
+    stored depth 0.5188 lies between. :data:`_APEX`'s nearest vertex (depth 0.1) lies in the
+    middle of its box's side: in the tile in the box's corner beside it the bare plane at the
+    extreme centres runs to -0.069, and the stored depth 0.05 lies between."""
     out = []
     for words, fx, fy, swap, beside in _SIDES:
         xyz = _STEEP[:, [1, 0, 2]] if swap else _STEEP.copy()
@@ -170,12 +207,54 @@ def _steep_cases() -> list[tuple[str, tuple]]:
         xyz[:, 1] = 32 - xyz[:, 1] if fy else xyz[:, 1]
         out.append((f"a steep plane {words}: behind at the tile's extreme pixel centres, in "
                     "front at its outer corners", (xyz, *beside, TILE, np.full((TILE, TILE), 0.5188))))  # fmt: skip
-        # the nearest vertex moved to (12 or 28, 12 or 28), inside the tile (8 or 24, 8 or 24)
-        around = xyz + [-4 if fx else 12, -4 if fy else 12, 0]
-        out.append((f"a tile around the nearest vertex of a steep plane {words}: the plane "
-                    "runs nearer than any fragment", (around, 24 if fy else 8, 24 if fx else 8,
-                                                      TILE, np.full((TILE, TILE), 0.05))))  # fmt: skip
+        # r126 N8-1: the nearest vertex in the middle of its box's side, the tile in the box's
+        # corner beside it (inside the box: the box alone does not lift the plane there)
+        apex = _APEX[:, [1, 0, 2]] if swap else _APEX.copy()
+        apex[:, 0] = 32 - apex[:, 0] if fx else apex[:, 0]
+        apex[:, 1] = 32 - apex[:, 1] if fy else apex[:, 1]
+        out.append((f"a tile in a corner of the bounding box of a steep plane {words}, beside "
+                    "its nearest vertex: the plane runs nearer there than any fragment",
+                    (apex, 24 if fy else 0, 24 if fx else 0, TILE, np.full((TILE, TILE), 0.05))))  # fmt: skip
     return out
+
+
+#: r126 N8-1: a small right triangle (legs 3.6 px), its depth growing 0.02 per px along x and
+#: y from its nearest vertex (0.3). Moved to (4.2, 4.2) in an 8-px tile at (0, 0), the tile's
+#: centres inside its box run from (4.5, 4.5) to (7.5, 7.5): the plane's minimum there is
+#: 0.312, over the whole tile 0.152, so lesson 10's bound is the vertex's 0.3.
+_SMALL = np.array([[0.2, 0.2, 0.3], [3.8, 0.2, 0.372], [0.2, 3.8, 0.372]])
+
+
+#: r126 N8-1: a large triangle whose box starts at x = 3.5, the centre of the tile's column 3,
+#: its depth growing with x: over the tile's centres inside the box the plane is nearest at
+#: (3.5, 0.5), 0.4005; over the whole tile at (0.5, 0.5), 0.34, below the nearest vertex's 0.38.
+_AT_CENTRE = np.array([[3.5, -20.0, 0.38], [40.0, -20.0, 1.11], [3.5, 30.0, 0.43]])
+
+
+def _box_cases() -> list[tuple[str, tuple]]:
+    """r126 N8-1: tiles where the triangle's bounding box decides: lesson 10's bound over the
+    whole tile keeps them, the box's rejects; the box's own corners, or the pixels it touches,
+    keep the second; the third's box holds no centre of the tile at all."""
+    near_corner = _SMALL + [4, 4, 0]  # its box's centres: (4.5, 4.5) … (7.5, 7.5)
+    far_corner = _SMALL * [-1, -1, 1] + [4, 4, 0]  # mirrored: (0.5, 0.5) … (3.5, 3.5)
+    past = _SMALL * [0.8, 0.8, 1] + [4.54, 4.54, 0]  # box from 4.7: first centre 5.5, not 4.5
+    beyond = _SMALL * [4, 4, 1] + [14.9, 1, 0]  # box from x = 15.7: past the centre 15.5
+    big = _SMALL * [2, 2, 1] + [6, 6, 0]  # a 16-px tile around a 7-px triangle
+    buffer = np.full((TILE, TILE), 0.305)
+    return [
+        ("a small triangle in the tile's bottom-right corner, its depth growing away from "
+         "the tile's middle", (near_corner, 0, 0, TILE, buffer)),
+        ("a small triangle in the tile's top-left corner, its depth growing away from the "
+         "tile's middle", (far_corner, 0, 0, TILE, buffer)),
+        ("a triangle whose bounding box starts 0.2 px past the centre of a pixel",
+         (past, 0, 0, TILE, np.full((TILE, TILE), 0.32))),
+        ("a tile the triangle's bounding box misses by 0.2 px, one pixel still empty",
+         (beyond, 0, 8, TILE, _with(np.full((TILE, TILE), 0.45), (2, 7), np.inf))),
+        ("a large triangle whose bounding box starts exactly at a pixel centre of the tile",
+         (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
+        ("a 16-px tile around a small triangle", (big, 0, 0, 2 * TILE,
+                                                  np.full((2 * TILE, 2 * TILE), 0.301))),
+    ]  # fmt: skip
 
 
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
@@ -197,40 +276,71 @@ def same_verdict(got: bool, expected: bool, args=None) -> bool:
 
 
 def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
-    rows, cols = _corners(row0, col0, size)
+    xyz = np.asarray(xyz, dtype=float)
+    box = _box_corners(xyz, row0, col0, size)
+    rows, cols = box if box is not None else _corners(row0, col0, size)
     finite = buffer[np.isfinite(buffer)]
-    outer_r, outer_c = np.array([row0, row0, row0 + size, row0 + size]) - 0.5, \
-        np.array([col0, col0 + size, col0, col0 + size]) - 0.5  # fmt: skip
     near = lower_bound(xyz, row0, col0, size)
-    bare = plane_at(xyz, rows, cols, clamp=False)
+    far = buffer.max()
     mid_r, mid_c = row0 + (size - 1) / 2, col0 + (size - 1) / 2  # the centre x0 + size/2
+    zmin = xyz[:, 2].min()
     with np.errstate(all="ignore"):
+        bare = plane_at(xyz, rows, cols, clamp=False).min() if box is not None else np.inf
         return {
+            # r126 N8-1: lesson 10's bound, the plane over every centre of the tile
+            "whole tile": bool(tile_bound(xyz, row0, col0, size) >= far),
+            "pixel box": bool(_pixel_box_bound(xyz, row0, col0, size) >= far),
+            "box corners": bool(_box_own_corners(xyz, row0, col0, size) >= far),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
-            "smaller bound": bool(min(bare.min(), xyz[:, 2].min()) >= buffer.max()),
-            "plane farthest": bool(plane_at(xyz, rows, cols).max() >= buffer.max()),
+            "smaller bound": bool(min(bare, zmin) >= far),
+            "plane farthest": bool(box is None or plane_at(xyz, rows, cols).max() >= far),
             # r114 D8-3: the plane at the tile's middle (the mean of the extreme centres') was
             # told "the plane's largest value at the corners"
-            "tile middle": bool(
-                max(_bare_plane(xyz, mid_r, mid_c), xyz[:, 2].min()) >= buffer.max()
-            ),
+            "tile middle": bool(max(_bare_plane(xyz, mid_r, mid_c), zmin) >= far),
             "empty as far plane": bool(near >= np.where(np.isinf(buffer), 1.0, buffer).max()),
-            "vertex": bool(xyz[:, 2].min() >= buffer.max()),
-            "no clamp": bool(plane_at(xyz, rows, cols, clamp=False).min() >= buffer.max()),
-            "outer corners": bool(
-                max(plane_at(xyz, outer_r, outer_c, clamp=False).min(), xyz[:, 2].min())
-                >= buffer.max()
-            ),  # fmt: skip
+            "vertex": bool(zmin >= far),
+            "no clamp": bool(bare >= far),
+            "outer corners": bool(_outer_bound(xyz, box) >= far),
             "tile min": bool(near >= buffer.min()),
-            "strict": bool(near > buffer.max()),
+            "strict": bool(near > far),
             "empty ignored": bool(len(finite) and near >= finite.max()),
-            "farthest vertex": bool(xyz[:, 2].max() >= buffer.max()),
+            "farthest vertex": bool(xyz[:, 2].max() >= far),
             "tile mean": bool(len(finite) and near >= finite.mean()),
-            "row col swapped": bool(
-                plane_at(xyz, *_corners(col0, row0, size)).min() >= buffer.max()
-            ),  # fmt: skip
+            "row col swapped": bool(lower_bound(xyz, col0, row0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
         }
+
+
+def _outer_bound(xyz, box) -> float:
+    """The box's extreme pixels' outer corners instead of their centres."""
+    if box is None:
+        return np.inf
+    rows, cols = box
+    out_r = rows + np.where(rows == rows.min(), -0.5, 0.5)
+    out_c = cols + np.where(cols == cols.min(), -0.5, 0.5)
+    return max(float(_bare_plane(xyz, out_r, out_c).min()), float(xyz[:, 2].min()))
+
+
+def _pixel_box_bound(xyz, row0, col0, size) -> float:
+    """The tile cut to the pixels the box touches (not the centres inside it)."""
+    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    spans = [box_span(np.floor(a) + 0.5, np.ceil(b) - 0.5, first, size)
+             for a, b, first in ((lo[0], hi[0], col0), (lo[1], hi[1], row0))]  # fmt: skip
+    if None in spans:
+        return np.inf
+    (c0, c1), (r0, r1) = spans
+    return max(float(_bare_plane(xyz, np.array([r0, r0, r1, r1]),
+                                 np.array([c0, c1, c0, c1])).min()), float(xyz[:, 2].min()))  # fmt: skip
+
+
+def _box_own_corners(xyz, row0, col0, size) -> float:
+    """The plane at the box's own corners clipped to the tile's extreme centres (not at the
+    centres inside the box): safe, up to half a pixel looser."""
+    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    xs = np.clip([lo[0], hi[0]], col0 + 0.5, col0 + size - 0.5)
+    ys = np.clip([lo[1], hi[1]], row0 + 0.5, row0 + size - 0.5)
+    plane = _bare_plane(xyz, ys[None, :] - 0.5, xs[:, None] - 0.5)
+    return max(float(plane.min()), float(xyz[:, 2].min()))
 
 
 def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
@@ -246,6 +356,16 @@ def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
 
 
 MISTAKES = {
+    "whole tile": "you took lesson 10's bound, the plane over all the tile's pixel centres: "
+    "safe, but no fragment of the triangle lies outside its bounding box, and here the plane "
+    "is nearest at centres outside it; the bound asked minimises the plane over the tile's "
+    "centres inside the box (lesson 10's keeps blocks this one rejects)",
+    "pixel box": "you cut the tile to the pixels the triangle's bounding box touches: a "
+    "fragment sits at a pixel centre, and here the centre of the box's first or last pixel "
+    "lies outside the box; take only the centres inside it",
+    "box corners": "you took the plane at the bounding box's own corners (kept within the "
+    "tile): fragments sit at pixel centres, and the nearest centre inside the box lies up to "
+    "½ px further in; take the plane's minimum over the tile's centres inside the box",
     "smaller bound": "you took the smaller of the two bounds (the plane at the corners, the "
     "nearest vertex): no fragment is nearer than either, so none is nearer than the larger "
     "of the two (the smaller keeps blocks Hi-Z could reject)",
@@ -257,9 +377,10 @@ MISTAKES = {
     "nearest fragment is (where in the tile is the plane nearest?)",
     "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: this buffer "
     "holds +inf where nothing is drawn yet, and a fragment there passes whatever its depth, "
-    "even one at 1.0, so nothing in this tile may be rejected",
+    "even one at 1.0, so this triangle may not be rejected here",
     "vertex": "you compared the triangle's nearest vertex: in this tile its depth plane is "
-    "farther than that vertex; evaluate the plane at the tile's extreme pixel centres (the "
+    "farther than that vertex; evaluate the plane at the extreme centres of the tile's part "
+    "inside the triangle's bounding box (the "
     "vertex alone is a safe bound, but the larger of the two bounds is asked: the vertex "
     "alone keeps blocks Hi-Z could reject)",
     "no clamp": "you took the bare plane at the corners: where it runs nearer than the "
@@ -268,17 +389,19 @@ MISTAKES = {
     "is asked: either alone keeps blocks Hi-Z could reject)",
     "covered centres": "you took the plane's minimum over the centres the triangle covers: "
     "a safe bound, and tighter here, but it costs a coverage test per pixel, the work Hi-Z "
-    "is there to skip; the bound asked is the one a few tests give: the plane at the tile's "
-    "extreme pixel centres, no nearer than the nearest vertex",
-    "outer corners": "you evaluated the plane at the tile's outer corners; fragments sit at "
-    "pixel centres, the extreme ones ½ px inside",
+    "is there to skip; the bound asked is the one a few tests give: the plane at the extreme "
+    "centres of the tile's part inside the triangle's bounding box, no nearer than the "
+    "nearest vertex",
+    "outer corners": "you evaluated the plane at the outer corners of the extreme pixels; "
+    "fragments sit at pixel centres, the extreme ones ½ px inside",
     "tile min": "you compared with the nearest depth stored in the tile: a fragment is hidden "
     "only if it is behind the depth at its own pixel, and only the tile's farthest depth "
     "bounds all of them",
     "strict": "a fragment exactly at the stored depth fails the test (strictly nearer "
     "passes), so a block at exactly the tile's farthest depth is rejected too: use ≥",
     "empty ignored": "a pixel of the tile is still empty (+inf): a fragment there passes "
-    "whatever its depth, so nothing in this tile may be rejected",
+    "whatever its depth, so a triangle that can have a fragment in this tile may not be "
+    "rejected",
     "farthest vertex": "you compared the triangle's farthest vertex: the block is hidden only "
     "if even the triangle's nearest possible depth in the tile lies at or behind the tile's "
     "farthest stored depth",
@@ -305,7 +428,10 @@ def _tie_gap(args) -> float | None:
         return None
     # a tie float32 holds exactly (a flat triangle at 0.5) is no place for its rounding: there
     # ">" is the mistake ("strict")
-    rows, cols = _corners(row0, col0, size)
+    box = _box_corners(xyz, row0, col0, size)
+    if box is None:
+        return None
+    rows, cols = box
     low = _bare_plane(np.asarray(xyz, np.float32), rows.astype(np.float32),
                       cols.astype(np.float32))  # fmt: skip
     if np.array_equal(low.astype(float), plane_at(xyz, rows, cols, clamp=False)):
@@ -332,26 +458,34 @@ FLOAT32 = Mistake("float32", _float32_words, fits=lambda a, e, g: _tie_gap(a) is
 def explain_hiz(args, expected, got) -> str:
     """The extreme centres, the triangle's nearest depth there, the tile's farthest, verdicts."""
     xyz, row0, col0, size, buffer = args
-    rows, cols = _corners(row0, col0, size)
+    box = _box_corners(xyz, row0, col0, size)
+    verdict = (
+        f"the block is {'rejected' if expected else 'kept'}, you {'rejected' if got else 'kept'} it"
+    )
+    if box is None:
+        return (f"the triangle's bounding box holds no pixel centre of the tile (columns {col0} to "
+                f"{col0 + size - 1}, rows {row0} to {row0 + size - 1}): no fragment of it lies "
+                f"here, and {verdict}")  # fmt: skip
+    rows, cols = box
     corner = plane_at(xyz, rows, cols)
     nearest, farthest = lower_bound(xyz, row0, col0, size), np.max(buffer)
     k = int(np.argmin(corner))
     far = num(farthest)
     if far == num(nearest) and farthest != nearest:  # r114: a near tie printed as equal
         far += f" ({abs(farthest - nearest):.1e} {'farther' if farthest > nearest else 'nearer'})"
-    return (f"the tile's extreme centres are ({cols[0] + 0.5}, {rows[0] + 0.5}) to "
-            f"({cols[3] + 0.5}, {rows[3] + 0.5}); the plane is nearest at "
+    return (f"the tile's centres inside the triangle's bounding box run from ({cols[0] + 0.5}, "
+            f"{rows[0] + 0.5}) to ({cols[3] + 0.5}, {rows[3] + 0.5}); the plane is nearest at "
             f"({cols[k] + 0.5}, {rows[k] + 0.5}), so the bound (no nearer than the nearest "
             f"vertex) is {num(nearest)}; the tile's farthest stored "
-            f"depth is {far}: the block is "
-            f"{'rejected' if expected else 'kept'}, you {'rejected' if got else 'kept'} it")  # fmt: skip
+            f"depth is {far}: {verdict}")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
     return (
         ". The block is rejected when the task's lower bound on the triangle's depth in the "
-        "tile (its plane at the extreme pixel centres, no nearer than its nearest vertex) is "
-        "at or behind the farthest depth stored there"
+        "tile (its plane's minimum over the tile's centres inside its bounding box, no nearer "
+        "than its nearest vertex; +inf where the box holds none) is at or behind the farthest "
+        "depth stored there"
     )
 
 
@@ -389,19 +523,35 @@ def draw_hiz(ax, case, got):
 
 def _extreme_centres(ax, xyz, row0, col0, size, far: str) -> list:
     """The triangle's depth at the tile's four extreme centres, the nearest filled."""
-    rows, cols = _corners(row0, col0, size)
+    from matplotlib.patches import Rectangle
+
+    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    artists = [ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="#ff9f1c", lw=1.2,
+                                      linestyle="--"))]  # fmt: skip
+    box = _box_corners(xyz, row0, col0, size)
+    if box is None:
+        artists.append(ax.set_xlabel(f"dashed: the triangle's bounding box, no centre of the "
+                                     f"tile inside\n{far}", fontsize="x-small"))  # fmt: skip
+        return artists
+    rows, cols = box
     depth = plane_at(xyz, rows, cols)
     k = int(np.argmin(depth))
-    artists = ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
+    artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
     artists += ax.plot(cols[k] + 0.5, rows[k] + 0.5, "o", color="#ff9f1c", ms=8)  # the nearest
-    for r, c, z in zip(rows, cols, depth):  # the triangle's depth at each extreme centre
-        inward = (1 if c == col0 else -1, -1 if r == row0 else 1)  # y axis points down
+    # the triangle's depth at each extreme centre; in a box under 4 px the labels would
+    # overlap: the nearest one only (r126 N8-1's small triangles)
+    small = cols.max() - cols.min() < 4 or rows.max() - rows.min() < 4
+    for j, (r, c, z) in enumerate(zip(rows, cols, depth)):
+        if small and j != k:
+            continue
+        inward = (1 if c == cols.min() else -1, -1 if r == rows.min() else 1)  # y points down
         artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(14 * inward[0], 9 * inward[1]),
                                    textcoords="offset points", ha="center", va="center",
                                    fontsize="x-small", bbox={"boxstyle": "round,pad=0.15",
                                    "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
-    artists.append(ax.set_xlabel(f"circles: the triangle's depth at the extreme centres\n(filled: "
-                                 f"nearest, {num(depth[k])}); {far}", fontsize="x-small"))  # fmt: skip
+    artists.append(ax.set_xlabel(f"dashed: the triangle's box; circles: its depth at the extreme "
+                                 f"centres inside\n(filled: nearest, {num(depth[k])}); {far}",
+                                 fontsize="x-small"))  # fmt: skip
     return artists
 
 
@@ -414,13 +564,17 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     inset.add_patch(Polygon(xyz[:, :2], closed=True, facecolor="#d7301f", alpha=0.25,
                             edgecolor="#d7301f", linewidth=1))  # fmt: skip
     inset.add_patch(Rectangle((col0, row0), size, size, fill=False, edgecolor="black", lw=1))
-    for x, y, z in xyz:
-        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
-                       color="#7f0000")  # fmt: skip
     lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0))
     hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
     pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
     lo, hi = lo - pad, hi + pad
+    # a triangle under half the view: its nearest vertex's depth alone (the labels overlap)
+    tiny = np.ptp(xyz[:, :2], axis=0).max() < 0.5 * float((hi - lo).max())
+    for j, (x, y, z) in enumerate(xyz):
+        if tiny and j != int(np.argmin(xyz[:, 2])):
+            continue
+        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
+                       color="#7f0000")  # fmt: skip
     inset.set_xlim(lo[0], hi[0])
     inset.set_ylim(hi[1], lo[1])
     inset.set_aspect("equal")
@@ -437,23 +591,33 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
 HIZ_HINTS = (
     # r122 N8-2: "the nearest depth the triangle can have" named the bound, which may lie
     # nearer than any fragment of the triangle in the tile
-    (re.compile(r"the tile's extreme centres are \([^()]*\) to \([^()]*\); the plane is "
-                r"nearest at \([^()]*\), so the bound \(no nearer than the nearest vertex\) is "),
+    (re.compile(r"the tile's centres inside the triangle's bounding box run from \([^()]*\) to "
+                r"\([^()]*\); the plane is nearest at \([^()]*\), so the bound \(no nearer than "
+                r"the nearest vertex\) is "),
      # not "(the larger of the two)": that is what the "smaller bound" mistake is asked (r94)
      "the task's lower bound on the triangle's depth in the tile is "),
-    (" (its plane at the extreme pixel centres, no nearer than its nearest vertex)",
-     " (where in the tile can its depth be smallest, and how near can a fragment be?)"),
+    (" (its plane's minimum over the tile's centres inside its bounding box, no nearer than "
+     "its nearest vertex; +inf where the box holds none)",
+     " (where in the tile can a fragment lie, where is its depth smallest, and how near can "
+     "a fragment be?)"),
     # r73 08-2: the named mistakes stated the bound asked; a question until two have failed
-    ("; evaluate the plane at the tile's extreme pixel centres (the vertex alone is a safe "
+    ("; evaluate the plane at the extreme centres of the tile's part inside the triangle's "
+     "bounding box (the vertex alone is a safe "
      "bound, but the larger of the two bounds is asked: the vertex alone keeps blocks Hi-Z "
      "could reject)", ": a safe bound, but not the one asked (it keeps blocks Hi-Z could "
      "reject): what else bounds the triangle's depth in the tile?"),
     ("; the bound asked is the larger of the two (either alone is safe, but the "
      "larger is asked: either alone keeps blocks Hi-Z could reject)",
      ": what else bounds how near a fragment of the triangle can be?"),
-    ("; the bound asked is the one a few tests give: the plane at the tile's extreme pixel "
-     "centres, no nearer than the nearest vertex",
+    ("; the bound asked is the one a few tests give: the plane at the extreme centres of the "
+     "tile's part inside the triangle's bounding box, no nearer than the nearest vertex",
      "; the bound asked is the one a few tests give (which few points, and what else?)"),
+    # r126 N8-1: the new mistakes ask before they tell
+    ("; the bound asked minimises the plane over the tile's centres inside the box (lesson "
+     "10's keeps blocks this one rejects)", ": which of the tile's centres can hold a fragment "
+     "of the triangle at all?"),
+    ("; take only the centres inside it", ""),
+    ("; take the plane's minimum over the tile's centres inside the box", ""),
     # r94 D8-3: the swapped row and column gave the tile's extreme centres on the first try
     ("; its pixel centres lie at x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size "
      "− ½", ""),

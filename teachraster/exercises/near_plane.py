@@ -25,7 +25,8 @@ import numpy as np
 from ..pipeline.visibility.depth import depth_resolution, window_depth
 from .answers import as_number
 from .cases import DRAWN, drawn_rng
-from .exercise import Exercise, Mistake, variant_mistakes
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .package_answers import CHECKER_WORDS
 from .scalars import num
 from .tolerance import close
 
@@ -258,7 +259,9 @@ def draw_near(ax, case, got):
 
 SAFE_NEAR = Exercise(
     "safe_near", near_cases, as_number, same_near, explain_near, _rule,
-    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_near, hints=(
+    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_near,
+    # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
+    answers=(PackageAnswer(expected_near, words=CHECKER_WORDS),), hints=(
         # r39 05-3: the first wrong try printed the inequality the task asks to derive
         ("; solve step (f − n) z² / (f n) ≤ gap for n exactly", "; keep it and solve for n "
          "exactly"),
