@@ -1828,7 +1828,7 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     text_11 = " ".join(" ".join(_cells("11_debugging_a_frame", "code")).split())
     assert "teachraster's test-off" in text_11 and "glDepthFunc(GL_ALWAYS)" in text_11
     # §1's triangle: x = 3w, past the clip volume but inside the guard band
-    tri = np.array(ns.full_screen(0.0))[0]
+    tri = np.array(ns.near, dtype=float)[0]  # full_screen(-0.5)
     assert (tri[:, 0] / tri[:, 3]).max() == 3 and 3 < ns.band
     assert "whose triangles needed none" not in text and "needed no near or far cut" in text
     assert "reaches $x = 3w$" in text
