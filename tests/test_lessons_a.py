@@ -1775,7 +1775,7 @@ def test_05a_r111_sticks_tilted_in_depth_their_keys_tie_and_the_divided_edge():
     far_key = depth.max(axis=1) / 2 + 0.5
     assert np.allclose(far_key, far_key[0], rtol=0, atol=5e-5)  # equal as printed (4 digits)
     assert painter_order(ns.stick_clip).tolist() == [0, 1, 2]  # as submitted
-    assert "painter again draws them as\nsubmitted." in "\n".join(_cells("05a_zbuffer", "markdown"))
+    assert "so the painter again draws them as submitted." in text
     # the unheld markdown under q_order does not say that no order works (its answer)
     assert ns.orders_right == 0 and "every drawing order" not in text
     assert not any("lies past −1" in c for c in _cells("05a_zbuffer", "code"))
@@ -1792,3 +1792,51 @@ def test_05a_r111_sticks_tilted_in_depth_their_keys_tie_and_the_divided_edge():
     xy_ndc = clip[:, :2] / clip[:, 3:]
     assert np.allclose(xy_ndc[0] + s * (xy_ndc[2] - xy_ndc[0]), cut[:2] / cut[3])
     assert "does the divided edge cross $z/w = -1$ this time" in text
+
+
+@pytest.mark.notebook
+def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth():
+    """Review r130 05a-A: q_clip's explanation said the cut "cannot even be found" after the
+    divide; the edge passes w = 0 (t = 0.870), so its image is the piece of the line through
+    infinity, which does pass z/w = -1 at the clipper's own point; the segment between the
+    divided points (the answer) is the wrong piece. 05a-B: depth_test=False writes the last
+    fragment's depth (GL_ALWAYS, as lesson 11 says), not glDisable's untouched buffer; the
+    cell prints frame.depth. 05a-C: §1's big triangle needed no near/far cut (x = 3w, within
+    the guard band). 05a-D: the intersecting pair's tie before the sticks' "too"/"again".
+    05a-I: the stencil update waits with the depth write. 05a-F/G: Try-it a list; four
+    folded cells."""
+    ns = lesson("05a_zbuffer")
+    a, b = ns.clip_tri_clip[0], ns.clip_tri_clip[2]
+    assert a[3] > 0 > b[3] and np.isclose(a[3] + ns.t_w0 * (b[3] - a[3]), 0)
+    assert 0 < ns.t_13 < ns.t_w0 < 1 and f"{ns.t_w0:.3f}" == "0.870"
+    z_w = ns.edge_pts[:, 2] / ns.edge_pts[:, 3]
+    assert np.isclose(z_w[1], -1) and z_w[2] < -1 < 1 < z_w[3]  # -inf before w = 0, +inf after
+    assert np.isclose(z_w[0], ns.z_ndc[0]) and np.isclose(z_w[-1], ns.z_ndc[2])
+    assert ns.clip_choices[2] == "no: the segment between the divided points has no z/w = −1"
+    ask = next(c for c in _cells("05a_zbuffer", "code") if "q_clip = Predict(" in c)
+    said = eval("(" + ask[ask.index("explain=") + 8 : ask.rindex(",\n)")] + ")", vars(ns))
+    assert "cannot even be found" not in said
+    assert f"passes the eye's plane w = 0 at t = {ns.t_w0:.3f}" in said
+    assert "the <i>other</i> piece of the line" in said and "at the clipper's own point" in said
+    assert f"cuts at t = d_a / (d_a − d_b) = {ns.t_13:.3f}" in said
+    # depth_test=False: the last triangle's window depth (NDC 0.5 -> 0.75), GL_ALWAYS
+    assert np.array_equal(np.unique(ns.no_test_depth), [0.75]) and ns.GL_CLEAR_DEPTH == 1.0
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    assert "`depth_test=False` is `glDisable(GL_DEPTH_TEST)`" not in text
+    assert "`depth_test=False` is `GL_ALWAYS` with the test enabled" in text
+    assert "It is *not* `glDisable(GL_DEPTH_TEST)`" in text
+    text_11 = " ".join(" ".join(_cells("11_debugging_a_frame", "code")).split())
+    assert "teachraster's test-off" in text_11 and "glDepthFunc(GL_ALWAYS)" in text_11
+    # §1's triangle: x = 3w, past the clip volume but inside the guard band
+    tri = np.array(ns.near, dtype=float)[0]  # full_screen(-0.5)
+    assert (tri[:, 0] / tri[:, 3]).max() == 3 and 3 < ns.band
+    assert "whose triangles needed none" not in text and "needed no near or far cut" in text
+    assert "reaches $x = 3w$" in text
+    # the pair's tie is explained before the sticks' tie "too"
+    pair, sticks = text.index("is the same for both triangles"), text.index("keys tie too")
+    assert pair < sticks
+    assert "only the depth *write* (and any stencil update) waits" in text
+    assert "only delays the depth and stencil writes" in text
+    assert "The next two cells are folded" not in text and "The next four cells are folded" in text
+    try_it = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
+    assert try_it.count("\n- ") == 4

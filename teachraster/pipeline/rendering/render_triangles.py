@@ -188,7 +188,9 @@ class Frame:
         Perspective-correct attributes, NaN where uncovered.
     depth : (H, W) float64
         Window depth as stored in the depth buffer: only depth that was written, so NaN
-        where uncovered and where only triangles with ``depth_write=False`` passed.
+        where uncovered and where only triangles with ``depth_write=False`` passed. With
+        ``depth_test=False`` every fragment passes and writes (GL's ``GL_ALWAYS``, not
+        ``glDisable(GL_DEPTH_TEST)``, which writes no depth): the last fragment's depth.
     plan : Plan
         Which effects were simulated, for how much, and why.
     trace : RenderTrace or None
@@ -350,7 +352,8 @@ def render(
     attrs : (N, 3) or (N, 3, k) array-like, optional
         Per-vertex attributes, interpolated perspective-correctly.
     depth_test : bool
-        z-buffer on (nearer wins, ties keep the earlier triangle) or off (later wins).
+        z-buffer on (nearer wins, ties keep the earlier triangle) or off (later wins, and
+        writes its depth: ``GL_ALWAYS``, not ``glDisable(GL_DEPTH_TEST)``).
     cull : {None, "back", "front"}
         Remove back-facing (clockwise on screen) or front-facing triangles.
     depth_format : {"float64", "float32", "unorm24", "unorm16"}
