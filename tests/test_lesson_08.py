@@ -33,8 +33,28 @@ def test_lesson_08_shows_what_it_says(ns):
     assert "shaded once per triangle and pixel" in plan.why and "shading per" not in plan.why
     # review r61 08-1: the printed counts, the GPU's story first (every sample tested, the
     # uniform pixels compressed), then the simulator's shortcut, named as such
-    assert ns.uniform == plan.total - plan.count > plan.count
     assert "a GPU tests every sample" in ns.gpu and ns.ours.startswith("teachraster's plan")
+    # review r129 08-1: the GPU's counts read from the frame's samples (one triangle in front
+    # at all 4, or not), the plan's per-sample pixels printed apart: those, and the pixels its
+    # cautious shortcut could not clear in advance
+    ids = ns.frames[4].sample_triangle_id
+    one = (ids >= 0).all(-1) & (ids == ids[..., :1]).all(-1)
+    assert ns.covered == plan.total == int((ids >= 0).any(-1).sum())
+    assert ns.uniform == int(one.sum()) > ns.mixed == plan.total - ns.uniform > 0
+    assert ns.partial == int(((ids >= 0).any(-1) & (ids < 0).any(-1)).sum()) < ns.mixed
+    t = tr.render(tr.get_scene("cube"), None, 96, 72, samples=4, trace=True).trace
+    worked = np.zeros(ids.shape[:2], bool)
+    worked[t.fragment_row[t.fragment_sample >= 0], t.fragment_col[t.fragment_sample >= 0]] = True
+    assert int(worked.sum()) == plan.count == ns.mixed + ns.cautious and ns.cautious >= 0
+    assert (worked | ~(ids >= 0).any(-1))[~one].all()  # every mixed pixel was worked per sample
+    gpu, ours = " ".join(ns.gpu.split()), " ".join(ns.ours.split())
+    assert f"At {ns.uniform} of them one triangle is in front at all 4 samples" in gpu
+    assert f"At the other {ns.mixed} the samples show two triangles" in gpu
+    assert f"({ns.partial} of them are partly covered)" in gpu
+    assert f"per-sample work at {plan.count} of {plan.total} pixels: those {ns.mixed}, and" in ours
+    assert f"{ns.cautious} more where it could not rule out in advance" in ours
+    assert "can differ" not in gpu and "reached by two or more" not in gpu
+    assert "might be in front in part of the pixel" in plan.why and "2+ triangles:" not in plan.why
     # §2: only partly covered pixels differ, by at most the samples' mean off the centre
     # times u's gradient; MSAA stores S colours and S depths per pixel
     assert ns.gap_full < 1e-12 and 0 < ns.gap_u
