@@ -33,8 +33,28 @@ def test_lesson_08_shows_what_it_says(ns):
     assert "shaded once per triangle and pixel" in plan.why and "shading per" not in plan.why
     # review r61 08-1: the printed counts, the GPU's story first (every sample tested, the
     # uniform pixels compressed), then the simulator's shortcut, named as such
-    assert ns.uniform == plan.total - plan.count > plan.count
     assert "a GPU tests every sample" in ns.gpu and ns.ours.startswith("teachraster's plan")
+    # review r129 08-1: the GPU's counts read from the frame's samples (one triangle in front
+    # at all 4, or not), the plan's per-sample pixels printed apart: those, and the pixels its
+    # cautious shortcut could not clear in advance
+    ids = ns.frames[4].sample_triangle_id
+    one = (ids >= 0).all(-1) & (ids == ids[..., :1]).all(-1)
+    assert ns.n_covered == plan.total == int((ids >= 0).any(-1).sum())
+    assert ns.uniform == int(one.sum()) > ns.mixed == plan.total - ns.uniform > 0
+    assert ns.partial == int(((ids >= 0).any(-1) & (ids < 0).any(-1)).sum()) < ns.mixed
+    t = tr.render(tr.get_scene("cube"), None, 96, 72, samples=4, trace=True).trace
+    worked = np.zeros(ids.shape[:2], bool)
+    worked[t.fragment_row[t.fragment_sample >= 0], t.fragment_col[t.fragment_sample >= 0]] = True
+    assert int(worked.sum()) == plan.count == ns.mixed + ns.cautious and ns.cautious >= 0
+    assert (worked | ~(ids >= 0).any(-1))[~one].all()  # every mixed pixel was worked per sample
+    gpu, ours = " ".join(ns.gpu.split()), " ".join(ns.ours.split())
+    assert f"At {ns.uniform} of them one triangle is in front at all 4 samples" in gpu
+    assert f"At the other {ns.mixed} the samples show two triangles" in gpu
+    assert f"({ns.partial} of them are partly covered)" in gpu
+    assert f"per-sample work at {plan.count} of {plan.total} pixels: those {ns.mixed}, and" in ours
+    assert f"{ns.cautious} more where it could not rule out in advance" in ours
+    assert "can differ" not in gpu and "reached by two or more" not in gpu
+    assert "might be in front in part of the pixel" in plan.why and "2+ triangles:" not in plan.why
     # §2: only partly covered pixels differ, by at most the samples' mean off the centre
     # times u's gradient; MSAA stores S colours and S depths per pixel
     assert ns.gap_full < 1e-12 and 0 < ns.gap_u
@@ -293,7 +313,8 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     assert round(ns.edge_slopes["random"], 1) == round(ns.edge_slopes["grid, axis edges"], 1)
     at = {r["kind"]: r["mean_error"] for r in ns.edge_rows if r["samples"] == 256}
     assert abs(at["random"] / at["grid, axis edges"] - 1) < 0.25
-    assert "at large $S$ they nearly coincide, one hiding the other" in flat
+    # review r129 08-5: in the chart they run side by side, both readable (no hiding)
+    assert "at large $S$ they run side by side" in flat and "one hiding the other" not in flat
     # the magnified intersection: the dashed line (equal depth) parts the samples each won
     a, b, c = ns.dz
     ids = ns.pierced[4].sample_triangle_id
@@ -340,8 +361,14 @@ def test_lesson_08_review_r127_fastest_held_diagonals_and_why_the_grid_beats_jit
     flat = " ".join(sources[k].split()).replace('" "', "")
     assert "only an edge along its rows or columns" not in flat
     assert "parallel to the grid's rows or columns meets √S" not in flat
-    assert "a row, a column or a diagonal of the ordered grid meets several" in flat
-    assert "an edge along a diagonal meets several at once too" in flat
+    # review r129 08-4: any simple slope meets several grid points at once, not only rows,
+    # columns and diagonals; the count along a slope of 1/2 is computed, not typed
+    assert (
+        "a row, a column, a diagonal or another simple slope (½, ⅓, …) of the ordered grid" in flat
+    )
+    assert "{on_a_line['slope 1/2']} along a slope of ½" in flat
+    assert "an edge along a diagonal or another simple slope meets several at" in flat
+    assert ns.on_a_line == {"row": 16, "diagonal": 16, "slope 1/2": 8, "slope 1/3": 6}
     # the study: the grid's slope between successive S steepens, each steeper than jittered's
     grid, jit = ns.step_slopes["grid"], ns.step_slopes["jittered"]
     assert (np.diff(grid) < 0).all() and (grid < jit).all() and (grid > -1).all()
@@ -350,9 +377,11 @@ def test_lesson_08_review_r127_fastest_held_diagonals_and_why_the_grid_beats_jit
     # the held text quotes what the cells print
     text = " ".join(ns.FASTEST_TEXT.split())
     fitted = f"{ns.edge_slopes['grid']:.2f} for the grid against {ns.edge_slopes['jittered']:.2f}"
-    assert fitted == "-0.80 for the grid against -0.74" and fitted in text
+    assert fitted == "-0.80 for the grid against -0.74"
+    assert fitted.replace("-", "−") in text  # review r129 08-9: a typographic minus
     steps = {
-        kind: ", ".join(f"{v:.2f}" for v in ns.step_slopes[kind]) for kind in ("grid", "jittered")
+        kind: ", ".join(f"{v:.2f}".replace("-", "−") for v in ns.step_slopes[kind])
+        for kind in ("grid", "jittered")
     }
     assert (
         f"the grid's slope goes {steps['grid']} while jittered's stays near −3/4 ({steps['jittered']})"
@@ -360,3 +389,43 @@ def test_lesson_08_review_r127_fastest_held_diagonals_and_why_the_grid_beats_jit
     )
     printed = streams(executed("08_antialiasing").notebook())
     assert f"grid: {steps['grid']}" in printed and f"jittered: {steps['jittered']}" in printed
+    assert "fitted slopes k of error ∝ S^k:\n  grid: −0.80\n" in printed
+
+
+def test_lesson_08_review_r129_held_chart_source_reconstruction_and_even_steps(ns):
+    """Review r129 08-8: q_fastest's held chart cell has its source collapsed and no comment or
+    label in it states a rate (the reference line's label is named in the question's own
+    collapsed cell). 08-2: step 3 names both reconstructions, the display's box and the
+    explorer's tent. 08-3: even rows make the quarter steps come at equal intervals of the
+    edge's travel; the random pattern's intervals are printed from its rows."""
+    import json
+    from pathlib import Path
+
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
+    chart = cells[k + 1]
+    assert sources[k + 1].startswith("q_fastest.hold()") and "ax.loglog" in sources[k + 1]
+    assert (
+        chart["metadata"]["jupyter"]["source_hidden"] and "hide-input" in chart["metadata"]["tags"]
+    )
+    for told in ("steepens", "Mitchell", "S^{-3/4}", "jittered curve", '"jittered"]'):
+        assert told not in sources[k + 1], told
+    assert "(the grid)" not in sources[k]
+    assert ns.REFERENCE == ("jittered", -0.75, "$S^{-3/4}$ (Mitchell), from jittered's S = 4")
+    text = " ".join(" ".join(sources).split())
+    assert "the display shows each value over its pixel." not in text
+    assert "A display shows each value over its pixel (a **box**)" in text
+    assert (
+        "(a **tent**, as bilinear filtering does)" in text
+        and "a Gaussian's width is $2\\sigma$" in text
+    )
+    assert "coverage moves in equal steps" not in text and "its steps are equal" not in text
+    assert "its steps come at equal intervals of the edge's travel" in text
+    assert "coverage steps by ¼ at equal " in text
+    assert np.allclose(ns.steps_apart["rotated grid (standard)"], 0.25)
+    apart = ", ".join(f"{d:.2f}" for d in ns.steps_apart["random"])
+    assert apart == "0.15, 0.35, 0.22"
+    assert np.allclose(np.diff(ns.pattern_rows4["random"]), ns.steps_apart["random"])

@@ -90,7 +90,12 @@ def test_sampling_key_does_not_name_the_signal_twice_without_a_prefilter():
     """Review 08-09-r5 (08 item 8): at width 0 the key listed "signal" and "prefiltered"
     for one curve; it says what the line is at width 0. Review r101 08-D: a key that changed
     its text with the filter left a stale sliver in the page: one text at every width."""
-    from teachraster.plotting.sampling import plot_sampling, sample_signal, update_sampling
+    from teachraster.plotting.sampling import (
+        plot_sampling,
+        prefiltered_key,
+        sample_signal,
+        update_sampling,
+    )
 
     fig, axes = plt.subplots(3, 1)
     art = plot_sampling(axes, sample_signal(32, 0.0))
@@ -99,8 +104,18 @@ def test_sampling_key_does_not_name_the_signal_twice_without_a_prefilter():
     # review r119 08-C: at width 4 the key no longer says "the signal"; the first, longest
     # line keeps its length, so the key's box keeps its size (r101 08-D's stale sliver)
     update_sampling(art, sample_signal(32, 4.0))
-    assert texts()[1] == "prefiltered, width 4.00\n(a local average)"
+    assert texts()[1] == "prefiltered, width 4.00\n(box: a local average)"
     assert "the signal" not in texts()[1]
+    # review r129 08-7: the key names the shape, and the Gaussian's sigma (width = 2 sigma)
+    update_sampling(art, sample_signal(32, 4.0, "gaussian"))
+    assert texts()[1] == "prefiltered, width 4.00\n(Gaussian, σ = 2.00)"
+    renderer = fig.canvas.get_renderer()
+    for width, kernel in ((0.0, "box"), (4.0, "box"), (4.0, "gaussian")):
+        first, second = (
+            axes[0].text(0, 0, line, fontsize=12).get_window_extent(renderer).width
+            for line in prefiltered_key(width, kernel).split("\n")
+        )
+        assert second <= first, (width, kernel)  # the first line stays the longest
     update_sampling(art, sample_signal(32, 0.5))
     assert texts()[1].split("\n")[0] == "prefiltered, width 0.50"
     plt.close(fig)

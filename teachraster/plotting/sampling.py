@@ -84,6 +84,7 @@ class SamplingResult:
     alias_from: float  # x beyond which the signal is above the Nyquist limit
     rms_error: float  # reconstruction against the ideal, over the whole signal
     width: float = 0.0  # the prefilter's width, in sample spacings (0: none)
+    kernel: str = "box"  # the prefilter's shape: "box", or "gaussian" (sigma = width / 2)
 
 
 def sample_signal(rate: int, width: float, kernel: str = "box") -> SamplingResult:
@@ -111,18 +112,24 @@ def sample_signal(rate: int, width: float, kernel: str = "box") -> SamplingResul
     alias_from = float(np.clip((nyquist - f0) / (f1 - f0), 0.0, 1.0))
     rms = float(np.sqrt(np.mean((reconstructed - ideal) ** 2)))
     return SamplingResult(x, signal, filtered, sample_x, samples, reconstructed, ideal,
-                          float(nyquist), alias_from, rms, float(width))  # fmt: skip
+                          float(nyquist), alias_from, rms, float(width), kernel)  # fmt: skip
 
 
-def prefiltered_key(width: float) -> str:
-    """The key of the prefiltered line at filter ``width``: the signal itself at 0, else a
-    local average. Its first line, the longest, has the same length at every width (digits
-    are equally wide), so the key's box keeps its size (review r101 08-D: a key that changed
-    size left a stale sliver in the page's picture; review r119 08-C: a key that said "at
-    width 0: the signal" at every width was stale at every other width)."""
-    return f"prefiltered, width {width:.2f}\n" + (
-        "(none: the signal)" if width <= 0 else "(a local average)"
-    )
+def prefiltered_key(width: float, kernel: str = "box") -> str:
+    """The key of the prefiltered line at filter ``width`` and shape ``kernel``: the signal
+    itself at 0, else the filter named, a box (a local average) or a Gaussian with its
+    sigma (``width / 2``: the width is 2 sigma). Its first line, the longest, has the same
+    length at every width (digits are equally wide), so the key's box keeps its size
+    (review r101 08-D: a key that changed size left a stale sliver in the page's picture;
+    review r119 08-C: a key that said "at width 0: the signal" at every width was stale at
+    every other width; review r129 08-7: the key named neither shape)."""
+    if width <= 0:
+        named = "(none: the signal)"
+    elif kernel == "gaussian":
+        named = f"(Gaussian, σ = {width / 2:.2f})"
+    else:
+        named = "(box: a local average)"
+    return f"prefiltered, width {width:.2f}\n{named}"
 
 
 @dataclass
@@ -178,7 +185,7 @@ def _name_prefiltered(art: SamplingArtists, result: SamplingResult) -> None:
     legend = art.filtered.axes.get_legend()
     if legend is None:
         return
-    legend.get_texts()[1].set_text(prefiltered_key(result.width))
+    legend.get_texts()[1].set_text(prefiltered_key(result.width, result.kernel))
 
 
 def update_sampling(art: SamplingArtists, result: SamplingResult) -> None:

@@ -18,9 +18,10 @@ What a GPU does with MSAA, and what ``tr.render(..., samples=S)`` simulates:
 *Simulate only what the scene calls for*: in a pixel covered wholly by one triangle and
 touched by no other, every sample has the same triangle, so no per-sample test is needed:
 the intersection of a line's S sample intervals is such "full" pixels, and only the rest
-(partly covered, or reached by two or more triangles) is expanded to samples. A full
-triangle whose depth is surely below every other's over the pixel (first by the triangles'
-own depth ranges, then by the planes over the pixel square) also takes the whole pixel.
+(partly covered, or where another triangle might be in front in part of the pixel) is
+expanded to samples. A full triangle whose depth is surely below every other's over the
+pixel (first by the triangles' own depth ranges, then by the planes over the pixel square)
+also takes the whole pixel.
 Where samples are tested one by one, a triangle surely behind another at a sample is
 dropped there, and a sample left with one triangle needs no depth at all. The
 ``multisampling`` effect of the plan says for how many pixels per-sample work ran;

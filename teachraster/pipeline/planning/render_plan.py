@@ -182,7 +182,8 @@ def multisampling_effect(n_samples: int, n_per_sample: int, covered: int, forced
         why = f"every covered pixel resolved sample by sample ({n_samples} samples)"
     else:
         why = (
-            f"{n_per_sample:,} pixel(s) are partly covered or reached by 2+ triangles: "
+            f"{n_per_sample:,} pixel(s) are partly covered, or another triangle might be in "
+            "front in part of the pixel: "
             "coverage and depth tested and colour stored per sample there, shaded once per "
             f"triangle and pixel; the other "
             f"{covered - n_per_sample:,} show one triangle at every sample (it covers the "
