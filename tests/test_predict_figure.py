@@ -327,6 +327,11 @@ def test_the_revealed_pixels_have_a_key_and_missed_ones_are_not_orange():
     assert "ctx.fillStyle = MISSED_FILL" in pixels and "[5, 3]" not in pixels
     assert "has(r, c) ? 3 : 4" in pixels and "dashed" not in legend
     assert "rgba(204,121,167,0.5)" in legend and "4px solid #CC79A7" in legend
+    # review r129 08-6: the marked cells are drawn blue whether right or not, so both swatches of
+    # marked cells are blue (the right one was white inside: blue cells read "not among them")
+    assert "ctx.fillStyle = GIVEN_FILL" in pixels
+    right, wrong = legend.split("yours, and right")[0], legend.split("missed")[-1]
+    assert right.count("rgba(0,114,178,0.45)") == 1 and "rgba(0,114,178,0.45)" in wrong
 
 
 def test_a_dragged_marker_with_a_whole_number_readout_lands_on_a_whole_number():

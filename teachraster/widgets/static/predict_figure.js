@@ -39,15 +39,18 @@ export function pixelVerdict(answer, given, width) {
 
 // A missed cell's fill: Okabe-Ito's reddish purple (#CC79A7), half transparent
 export const MISSED_FILL = "rgba(204,121,167,0.5)";
+// every cell the student marked is filled blue, right or not (the outline tells them apart): the
+// key's "yours, and right" swatch is blue too (review r129 08-6: only "not among them" was)
+export const GIVEN_FILL = "rgba(0,114,178,0.45)";
 
 // The key to the revealed answer, in the colours the figure draws it in (a legend under the
 // verdict: the outlines alone do not say which is which on a projector, review r31/r34)
 export function pixelLegend() {
   const box = (style) => `<span style="display:inline-block;width:14px;height:14px;` +
     `vertical-align:middle;margin:0 4px 0 10px;box-sizing:border-box;${style}"></span>`;
-  return `<br>${box(`border:3px solid ${OKABE.green}`)}yours, and right` +
+  return `<br>${box(`background:${GIVEN_FILL};border:3px solid ${OKABE.green}`)}yours, and right` +
     `${box(`background:${MISSED_FILL};border:4px solid ${OKABE.purple}`)}missed` +
-    `${box(`background:rgba(0,114,178,0.45);border:2px solid ${OKABE.vermillion}`)}` +
+    `${box(`background:${GIVEN_FILL};border:2px solid ${OKABE.vermillion}`)}` +
     `marked, not among them (crossed)`;
 }
 
@@ -274,7 +277,7 @@ function mountPixels(root, data, host) {
     };
     for (const [r, c] of state.given) {
       const [x, y, w, h] = cell(r, c);
-      ctx.fillStyle = "rgba(0,114,178,0.45)";
+      ctx.fillStyle = GIVEN_FILL;
       ctx.fillRect(x + 1, y + 1, w - 2, h - 2);
     }
     const known = state.revealed && revealed(data, state);
