@@ -79,6 +79,10 @@ def near(a, b, tol: float = MATCH_TOL) -> bool:
     >>> near(1.0, 1.0 + 1e-9), near([1, 2], (1.0, 2.0)), near(True, 1.0), near("a", "a")
     (True, True, False, True)
     """
+    if type(a) is float and type(b) is float:  # the same test as below, without numpy
+        if a == b or abs(a - b) <= tol * max(1.0, abs(a), abs(b)):
+            return True
+        return a != a and b != b  # both NaN
     if isinstance(a, _EXACT) or isinstance(b, _EXACT):
         if type(a) is not type(b) and not (
             isinstance(a, (bool, np.bool_)) and isinstance(b, (bool, np.bool_))
