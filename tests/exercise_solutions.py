@@ -34,7 +34,56 @@ def _owns(a, b):
     return b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
 
 
+#: Coordinates the float shortcut of :func:`covers` takes as they are (each exactly a float).
+_FLOATS = (float, np.float64, np.float32)
+_INTS = (int, np.int64, np.int32)
+
+
+def _sign(a, b, p):
+    """The sign of E(a, b, p) computed in floats, or None where the rounding could have made
+    it (Shewchuk's bound for orient2d, (3 + 16ε)ε of |left| + |right|, here with a margin of
+    over a thousand: a tie is always None)."""
+    left = (b[0] - a[0]) * (p[1] - a[1])
+    right = (b[1] - a[1]) * (p[0] - a[0])
+    e = left - right
+    if abs(e) > 1e-12 * (abs(left) + abs(right)):
+        return 1 if e > 0 else -1
+    return None
+
+
+def _covers_by_floats(xy, p):
+    """covers(xy, p) from float edge functions when no sign is in doubt (every coordinate an
+    exact float below 1e15, so no product overflows and a rounded E keeps its exact sign),
+    else None: the exact integers decide."""
+    pts = []
+    for q in (*xy, p):
+        if len(q) != 2:
+            return None
+        for c in q:
+            if not (type(c) in _FLOATS or (type(c) in _INTS and abs(c) <= 2**53)):
+                return None
+            if not abs(c) < 1e15:  # NaN and infinity too
+                return None
+        pts.append((float(q[0]), float(q[1])))
+    *v, p = pts
+    area = _sign(v[0], v[1], v[2])
+    if area is None:
+        return None
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        e = _sign(v[k], v[(k + 1) % 3], p)
+        if e is None:
+            return None
+        if e < 0:
+            return False
+    return True
+
+
 def covers(xy, p):
+    fast = _covers_by_floats(xy, p)
+    if fast is not None:
+        return fast
     *v, p = _exact_points([*xy, p])
     if edge_function(v[0], v[1], v[2]) < 0:
         v = [v[0], v[2], v[1]]

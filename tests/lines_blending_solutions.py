@@ -31,6 +31,20 @@ def _meets(a, b, cx, cy) -> bool:
     return lo < hi or (lo == hi and not (lo_open or hi_open))
 
 
+def _far_from_line(p0, p1):
+    """``far(x, y)``: is the point more than ¾ px (in floats) from the line through p0 and p1?
+    Every point of a diamond of radius ½ lies within ½ px of its centre, and the end points
+    move by far less than the ¼ px margin, so a centre this far has a diamond the segment
+    cannot meet: only the exact test of the others decides (a long line's box holds far
+    more centres than its band, each an exact test in Fractions)."""
+    (x0, y0), (x1, y1) = (float(p0[0]), float(p0[1])), (float(p1[0]), float(p1[1]))
+    dx, dy = x1 - x0, y1 - y0
+    length = (dx * dx + dy * dy) ** 0.5
+    if not 0 < length < 1e12:
+        return lambda x, y: False
+    return lambda x, y: abs(dx * (y - y0) - dy * (x - x0)) > 0.75 * length
+
+
 def line_with(eps_x, eps_y, order="row col", clip=True):
     """The diamond-exit rule with the end points moved by (eps_x, eps_y) (GL: (−ε, −ε²)),
     pairs as (row, col), or (col, row) for the mistake; ``clip=False`` keeps pixels left of
@@ -39,9 +53,12 @@ def line_with(eps_x, eps_y, order="row col", clip=True):
     def fn(p0, p1):
         a = (Fraction(p0[0]) + eps_x, Fraction(p0[1]) + eps_y)
         b = (Fraction(p1[0]) + eps_x, Fraction(p1[1]) + eps_y)
+        far = _far_from_line(p0, p1)
         out = []
         for row in range(int(min(a[1], b[1])) - 1, int(max(a[1], b[1])) + 2):
             for col in range(int(min(a[0], b[0])) - 1, int(max(a[0], b[0])) + 2):
+                if far(col + 0.5, row + 0.5):  # its diamond cannot meet the segment
+                    continue
                 cx, cy = col + HALF, row + HALF
                 inside_end = abs(b[0] - cx) + abs(b[1] - cy) < HALF
                 inside = (row >= 0 and col >= 0) or not clip

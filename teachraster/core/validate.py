@@ -25,6 +25,8 @@ import numpy as np
 #: Integer arguments must fit a C long (int64): numpy indexes and sizes with them.
 INT_LIMIT = 2**63 - 1
 
+_FLOAT64 = np.dtype(np.float64)
+
 #: Largest image (pixels) a call allocates unless the caller raises ``max_pixels``:
 #: 16384 × 16384, already several GiB of float64 buffers.
 MAX_PIXELS = 2**28
@@ -152,6 +154,8 @@ def as_finite(name: str, value, shape: tuple[int | None, ...] | None) -> np.ndar
     TypeError: w must be numeric (real numbers), got complex values
     """
     arr = as_real(name, value, shape)
+    if np.isfinite(arr).all():  # the common case: one pass, no mask kept
+        return arr
     bad = ~np.isfinite(arr)
     if bad.any():
         where = tuple(int(i) for i in np.argwhere(bad)[0]) if arr.ndim else ()
@@ -170,6 +174,13 @@ def as_real(name: str, value, shape: tuple[int | None, ...] | None = None) -> np
     part), None entries, ragged nested lists; a ValueError for a wrong shape or a Python
     integer too large for a float.
     """
+    if type(value) is np.ndarray and value.dtype == _FLOAT64:
+        # the fast path (a core function called per point by the checker's mistakes): an
+        # array already of float64 needs no check of its entries, only of its shape, and
+        # its copy cannot overflow
+        if shape is not None:
+            check_shape(name, value.shape, shape)
+        return np.array(value, dtype=np.float64)
     raw = _as_array(name, value)
     kind = raw.dtype.kind
     if kind not in "biufO":

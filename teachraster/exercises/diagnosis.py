@@ -71,6 +71,7 @@ class Result:
 
 
 _EXACT = (str, bytes, bool, np.bool_, set, frozenset)
+_FLOATS = (float, np.float64)
 
 
 def near(a, b, tol: float = MATCH_TOL) -> bool:
@@ -79,6 +80,16 @@ def near(a, b, tol: float = MATCH_TOL) -> bool:
     >>> near(1.0, 1.0 + 1e-9), near([1, 2], (1.0, 2.0)), near(True, 1.0), near("a", "a")
     (True, True, False, True)
     """
+    ta, tb = type(a), type(b)
+    if ta in _FLOATS and tb in _FLOATS:  # the same test as below, without numpy
+        a, b = float(a), float(b)
+        if a == b or abs(a - b) <= tol * max(1.0, abs(a), abs(b)):
+            return True
+        return a != a and b != b  # both NaN
+    if ta is tb is str:
+        return a == b
+    if ta is tb is np.ndarray and a.dtype == b.dtype == np.bool_ and a.shape == b.shape:
+        return tol >= 1.0 or bool((a == b).all())  # 0 and 1 apart by 1, within a scale of 1
     if isinstance(a, _EXACT) or isinstance(b, _EXACT):
         if type(a) is not type(b) and not (
             isinstance(a, (bool, np.bool_)) and isinstance(b, (bool, np.bool_))

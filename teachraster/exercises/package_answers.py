@@ -108,6 +108,31 @@ def _noted(f, original, args, kwargs, outside: bool) -> None:
 
 
 def _module_helpers(spec: Exercise) -> list:
+    """:func:`_scan_helpers`, read again only when a module it read has changed (a function
+    bound anew: a test's monkeypatch) or ``spec`` lists other answers: a check asks three
+    times, and the scan of every table of the checker's modules was a tenth of a check."""
+    modules = dict.fromkeys(checker_modules(spec))
+    for answer in spec.answers:
+        f = _function(answer)
+        if f is not None:
+            modules.update(dict.fromkeys((f.__module__, *answer.modules)))
+    stamp = (tuple(map(id, spec.answers)), tuple(spec.reference), spec.cases,
+             tuple((m, tuple((k, id(v)) for k, v in vars(importlib.import_module(m)).items()))
+                   for m in modules))  # fmt: skip
+    with _LOCK:
+        held = _HELPERS.get(id(spec))
+    if held is None or held[0] is not spec or held[1] != stamp:
+        held = (spec, stamp, _scan_helpers(spec))
+        with _LOCK:
+            _HELPERS[id(spec)] = held
+    return list(held[2])
+
+
+#: id(spec) -> (spec, what its scan read, the scan)
+_HELPERS: dict = {}
+
+
+def _scan_helpers(spec: Exercise) -> list:
     """The private functions of the modules of ``spec``'s listed answers (r12 09-1: ``_thin``
     passed 9.1 uncounted), and every function of the modules an answer names in
     :attr:`~.exercise.PackageAnswer.modules` (r13 09-1: ``line_rules.diamond``, reached from
