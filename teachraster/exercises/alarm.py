@@ -106,8 +106,6 @@ class Alarm:
         self._collected = 0.0  # CPU seconds the garbage collector took in the case's thread
         self._collecting = None
         self._thread = None
-        self._paused = False
-        self._round = 0  # how many times :meth:`resume` re-armed it
 
     # -- measuring -------------------------------------------------------------------------------
     def cpu(self) -> float:
@@ -240,35 +238,6 @@ class Alarm:
             self._traced = False
             sys.settrace(self._trace)
 
-    # -- one watchdog for many calls of the checker ------------------------------------------
-    def pause(self) -> bool:
-        """Between two calls of the checker that share this alarm (:func:`.running.checker_calls`):
-        disarmed, its watchdog kept. False, and nothing changed, when it cannot be paused (it
-        fired, or it is not the main thread's: a watchdog that interrupts another thread is
-        stopped after each call, as it always was): then it is stopped as usual."""
-        self.active = False
-        if self.mode != "signal":
-            return False
-        with self._lock:
-            if self.fired or self._done.is_set():
-                return False
-            self._paused = True
-        return True
-
-    def resume(self, guard) -> None:
-        """Armed again after :meth:`pause`, with its limits counted afresh from now (the CPU,
-        the wall clock, the collector's and the queue's time), ``guard`` its new frame."""
-        with self._lock:
-            self.begin = time.perf_counter()
-            self._cpu_start = self._clock()  # first: every reading in between is smaller
-            self._cpu_now = 0.0
-            self._collected, self._collecting = 0.0, None
-            self._queued_start = self._queued() if self._queued is not None else 0.0
-            self.guard = guard
-            self._paused = False
-            self.active = True
-            self._round += 1  # last: a look at the counters before it is looked at again
-
     # -- the interrupt -------------------------------------------------------------------------
     def _on_signal(self, signum, frame):
         if not (self.active and self.fired):  # someone else's alarm: theirs to handle
@@ -310,16 +279,9 @@ class Alarm:
         self._thread_id = threading.get_ident()
 
         def watch():
-            while True:
-                round_ = self._round
-                while self._paused or (why := self.due()) is None:
-                    if self._done.wait(self._next_look()):
-                        return
-                    round_ = self._round
-                with self._lock:  # paused or re-armed since that look: look again
-                    if self._paused or self._round != round_:
-                        continue
-                break
+            while (why := self.due()) is None:
+                if self._done.wait(self._next_look()):
+                    return
             last = None if why == "cpu" else self.cpu()
             while True:
                 with self._lock:

@@ -29,7 +29,6 @@ import threading
 import time
 import traceback
 from collections.abc import Callable
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -371,53 +370,17 @@ def run_checker(body: Callable[[], Any], fallback: Any) -> Any:
     left = min(CHECKER_CALL, CHECKER_TOTAL - b.checker)
     if left <= 0:
         return fallback
-    held, _calls.alarm = _calls.alarm, None
-    if held is not None and held.seconds != left:  # the check's total nearly spent
-        held.stop()
-        held = None
-    alarm = held or Alarm(left, sys._getframe(), WAIT_FACTOR * left, CASE_WALL_FACTOR * left)
+    alarm = Alarm(left, sys._getframe(), WAIT_FACTOR * left, CASE_WALL_FACTOR * left)
     try:
         try:
-            if held is None:
-                alarm.start()
-            else:
-                alarm.resume(sys._getframe())
+            alarm.start()
             with np.errstate(all="ignore"):  # inf and huge answers: explained, not warned about
                 return body()
         finally:
-            if _calls.depth and _calls.alarm is None and alarm.pause():
-                b.checker += alarm.cpu()
-                _calls.alarm = alarm  # kept for the next call
-            else:
-                alarm.active = False
-                alarm.stop()
-                b.checker += alarm.cpu()
+            alarm.active = False
+            alarm.stop()
+            b.checker += alarm.cpu()
     except KeyboardInterrupt:
         raise
     except BaseException:
         return fallback
-
-
-class _Calls(threading.local):
-    depth = 0  # how many :func:`checker_calls` are open in this thread
-    alarm = None  # the paused alarm the next call of the checker re-arms
-
-
-_calls = _Calls()
-
-
-@contextmanager
-def checker_calls():
-    """``with checker_calls():`` the :func:`run_checker` calls inside, one after another in
-    this thread, share one :class:`~.alarm.Alarm` (one watchdog thread), re-armed with the
-    same limits for each call: what starting a watchdog per call cost was a large part of a
-    diagnosis (one call per typical mistake, per comparison, per explanation). An alarm that
-    fired is stopped, and the next call starts a fresh one."""
-    _calls.depth += 1
-    try:
-        yield
-    finally:
-        _calls.depth -= 1
-        if _calls.depth == 0 and _calls.alarm is not None:
-            alarm, _calls.alarm = _calls.alarm, None
-            alarm.stop()

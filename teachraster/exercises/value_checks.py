@@ -19,7 +19,7 @@ from .diagnosis import Result, diagnose
 from .exercise import Exercise, content_key, copies
 from .package_answers import package_note, watching
 from .report import Failure, Report
-from .running import SKIPPED, checker_calls, current, run_case, run_checker
+from .running import SKIPPED, current, run_case, run_checker
 
 #: Outcome kinds after which the check stops (the time is spent).
 STOPS = ("timeout", "budget")
@@ -109,17 +109,14 @@ def check_exercise(spec: Exercise, fn) -> Report:
         inputs = _drawer(spec, cases[0], None) if spec.inputs_drawn else None
         return Report(spec.name, [], len(cases), True, inputs, scene=scene)
     results = []
-    with checker_calls():  # the comparisons and the diagnosis: one watchdog for them all
-        for k, (case, outcome) in enumerate(ran):
-            if outcome.error is None:
-                label, args, expected = case
-                value = outcome.value
-                ok = run_checker(
-                    lambda v=value, e=expected, a=args: bool(spec.same(v, e, a)), False
-                )
-                raw, key = returned.raw.get(k), returned.key(k)
-                results.append(Result(k, args, expected, outcome.value, ok, raw, key))
-        said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()))
+    for k, (case, outcome) in enumerate(ran):
+        if outcome.error is None:
+            label, args, expected = case
+            value = outcome.value
+            ok = run_checker(lambda v=value, e=expected, a=args: bool(spec.same(v, e, a)), False)
+            raw, key = returned.raw.get(k), returned.key(k)
+            results.append(Result(k, args, expected, outcome.value, ok, raw, key))
+    said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()))
     answers = {r.index: r.got for r in results}
     failures = []
     for k, (case, outcome) in enumerate(ran):
