@@ -2378,7 +2378,9 @@ def test_10_r109_items():
     assert "nearest vertex" in md and "Greene, Kass and Miller" in md
     ex = json.loads((ROOT / "notebooks" / "exercises" / "08_tiles.ipynb").read_text())
     ex_md = " ".join(" ".join("".join(c["source"]) for c in ex["cells"]).split())
-    assert "the larger of the two" in ex_md and "only the centres the triangle covers" in ex_md
+    # fixex13 (r126 N8-1): 8.2 now asks for a tighter bound than lesson 10's larger of the two
+    assert "takes the larger of two cheap lower bounds" in ex_md and "safe, but loose" in ex_md
+    assert "only the centres the triangle covers" in ex_md
     # 10-8: evaluations, a block test as two corners
     assert ns.evaluations == 2 * ns.walk.blocks + ns.walk.pixel_tests
     assert "a block test as two" in md
