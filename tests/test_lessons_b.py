@@ -472,6 +472,9 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     why = " ".join(re.sub(r'"\s*"', "", why).split())
     assert "N = 2 then costs at least as much as the exact divide" in why
     assert "as much at 3, more below" in why and "dearer" not in why and "outweigh" not in why
+    # 06-6: q_depth does not say that precision is not the cause
+    depth = next(c for c in cells if "q_depth = Predict(" in c).split("explain=")[0]
+    assert "wrong triangle in <b>float64</b>" in depth and "even in" not in depth
 
 
 def test_06_review_r128_q_quake_held_and_wording():
