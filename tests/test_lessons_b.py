@@ -433,6 +433,50 @@ def test_06_divide_cost_slider_reprices_the_front():
     assert "for the texture's two coordinates $u$ and $v$" in md
 
 
+def test_06_review_r132_checkerboard_held_tie_and_d3():
+    """Review r132 06-3: the checkerboard (where N = 16 errs: few pixels, far) is held until
+    q_quake is checked, its paragraph a held display after the figure. 06-1: the depth front
+    names the variant that ties a front point (pareto_front keeps the first). 06-2: at d = 3
+    N = 2 and the exact divide cost the same (12), "at least as much". 06-5: q_price gives no
+    hint which card moves."""
+    import json
+    import re
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    board = next(c for c in cells if "def draw_checks(" in c)
+    assert board.startswith("q_quake.hold()") and board.rstrip().endswith(
+        "display(Markdown(CHECKS_TEXT))"
+    )
+    assert "The checkerboard below" not in md and "N = 16's only" not in md
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    # 06-1: the tie, printed in the front and stated in the text
+    assert "'window float32 = window unorm24'" in printed
+    assert "two variants at the same point count once" in md and 'joined by "="' in md
+    assert "464 and 464 wrong pixels" in printed
+    # 06-2: the cost at the tie, printed and said
+    p0, a0, s0, d2 = ns.p0, ns.a0, ns.s0, ns.d2
+    assert d2 + p0 == a0 + (d2 + s0) / 2 == 12
+    assert re.search(r"N=2 off the front when d <= 3 \(at d = 3 both cost 12\)", printed)
+    front = " ".join(ns.FRONT_TEXT.split())
+    assert "costs at least as much as it when" in front and "costs more than it" not in front
+    assert "(the same at $d = 3$, 12 cycles each, more below)" in front
+    price = next(c for c in cells if "q_price = PredictOrder(" in c)
+    ask, why = price.split("explain=")
+    assert "where N = 2" not in ask and "the point is" not in ask
+    why = " ".join(re.sub(r'"\s*"', "", why).split())
+    assert "N = 2 then costs at least as much as the exact divide" in why
+    assert "as much at 3, more below" in why and "dearer" not in why and "outweigh" not in why
+    # 06-6: q_depth does not say that precision is not the cause
+    depth = next(c for c in cells if "q_depth = Predict(" in c).split("explain=")[0]
+    assert "wrong triangle in <b>float64</b>" in depth and "even in" not in depth
+
+
 def test_06_review_r128_q_quake_held_and_wording():
     """Review r128 06-1: what answers q_quake (the mean under a texel, the worst many times
     it, a pixel or more on screen) is held until Check in a collapsed cell, as TIE_TEXT and
@@ -456,7 +500,7 @@ def test_06_review_r128_q_quake_held_and_wording():
         assert words not in md, words
     assert next(i for i, c in enumerate(cells) if "q_quake = Predict(" in c) < at
     price = next(c for c in cells if "q_price = PredictOrder(" in c).split("explain=")[0]
-    assert "a limit case: no real unit divides faster than it multiplies" in price
+    assert "a limit case, as no real unit divides faster than it multiplies" in price
     figure = next(c for c in cells if "def error_image(" in c)
     assert '"exact to rounding" if worst < shown_floor' in figure and "worst {said}" not in figure
     fill = next(c for c in cells if c.startswith("q_fill.hold()  # its output"))
@@ -654,7 +698,7 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
                            if raw["cell_type"] == "markdown").split())  # fmt: skip
     for printed in ("DivideCostExplorer(interp_rows)", "max / mean error (texels)",
-                    "N = 16, worst pixel"):  # fmt: skip
+                    "N = 16, worst pixel", "def draw_checks("):  # fmt: skip
         cell = next(c for c in cells if printed in c)
         assert cell.startswith("q_quake.hold()"), printed
     # review r53 06-8: what says or draws that linear depth moves the crossing waits for q_depth
@@ -788,7 +832,9 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert "wobble" not in md and "Pentium-class" in md and "early-1990s" not in md
     # r41 06-6: the error is shown as a texture: affine's checks wrong across the floor,
     # N = 16's at few pixels (its far edge)
-    assert "The checkerboard below marks in vermillion" in md  # r68 06-2: right above it
+    # r68 06-2: right by it; r132 06-3: after it, held with it (it answers q_quake)
+    assert "The checkerboard above marks in vermillion" in ns.CHECKS_TEXT
+    assert "N = 16's only near its far edge" in ns.CHECKS_TEXT and "only near its far" not in md
     assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
     # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
     assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in next(

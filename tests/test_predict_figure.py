@@ -391,12 +391,14 @@ def test_the_answers_label_keeps_off_the_figures_lines_it_is_given():
 
 def _examples():
     """One of each kind, with the answer it must not send the page before Check."""
+    why = "Because the whole order is c, a, b (secret 7)."  # an explanation states the answer
     return [
         (_pixels(), [[2, 2]]),
         (PredictPoint("Where?", answer=(1.25, 2.75), draw=None, xlim=(0, 4), ylim=(0, 4),
-                      reveal_curve=[(0, 0), (1.25, 2.75)]), (3.0, 3.0)),
-        (PredictOrder("Nearest?", ["a", "b", "c"], answer=["c", "a", "b"]), ["a", "b", "c"]),
-        (PredictChoice("How far?", ["near", "far"], answer="far"), "near"),
+                      reveal_curve=[(0, 0), (1.25, 2.75)], explain=why), (3.0, 3.0)),
+        (PredictOrder("Nearest?", ["a", "b", "c"], answer=["c", "a", "b"], explain=why),
+         ["a", "b", "c"]),
+        (PredictChoice("How far?", ["near", "far"], answer="far", explain=why), "near"),
     ]  # fmt: skip
 
 
@@ -413,25 +415,32 @@ def _synced(q) -> str:
 def test_the_page_holds_no_answer_before_check():
     """Issue 31: the page had the answer before Check (``data["answer"]``), so a student read
     it with devtools, or in the widget state of a saved notebook. Before Check no synced
-    trait and no output of the notebook holds it; Check (the page's, sent as the state, or
-    ``check()``) brings it in the state, and only with an answer given."""
+    trait and no output of the notebook holds it, nor the explanation, which often states
+    it (review r132 06-4: lesson 06's q_price gave the whole order, q_rule the count); Check
+    (the page's, sent as the state, or ``check()``) brings both in the state, and only with
+    an answer given."""
     import json
 
     for q, given in _examples():
-        answer = q._reveal["answer"]
+        answer, why = q._reveal["answer"], q._reveal["explain"]
+        assert why and q.explain == why, q  # every kind has one here
         if q.data["kind"] != "choice":  # (a choice's answer is among the options shown)
             secret = json.dumps(answer).replace(" ", "")
             assert secret not in _synced(q).replace(" ", ""), q
             assert "2.75" not in _synced(q) and "1.25" not in _synced(q)  # nor the curve
-        assert "reveal" not in q.state and "answer" not in q.data
+        assert why not in _synced(q) and json.dumps(why) not in _synced(q), q
+        assert "secret 7" not in _synced(q) and "centres inside" not in _synced(q), q
+        assert "reveal" not in q.state and "answer" not in q.data and "explain" not in q.data
         q.state = {**q.state, "revealed": True}  # a page asking with no answer: refused
         assert not q.revealed and "reveal" not in q.state
         q.state = {**q.state, "given": given, "acted": True}  # an answer, not yet checked
         assert "reveal" not in q.get_state()["state"]
         q.state = {**q.state, "revealed": True}  # Check, as the page sends it
         assert q.revealed and q.get_state()["state"]["reveal"]["answer"] == answer
+        assert q.get_state()["state"]["reveal"]["explain"] == why  # the explanation with it
         q.state = {k: v for k, v in q.state.items() if k != "reveal"}  # a page's later state
         assert q.state["reveal"]["answer"] == answer  # the answer stays with the reveal
+        assert q.state["reveal"]["explain"] == why
     pixels = _pixels()
     pixels.given = [[2, 2]]
     pixels.check()  # from code, as the lessons' tests do
@@ -444,13 +453,15 @@ def test_the_offline_page_carries_the_answer_it_judges_with():
     import json
     import os
 
-    q = PredictChoice("How far?", ["near", "far"], answer="far")
+    q = PredictChoice("How far?", ["near", "far"], answer="far", explain="skyward 9")
     page = q.offline_html()
     payload = json.loads(page.split("const [DATA, STATE] = ")[1].split(";\n")[0])
-    assert payload[0]["reveal"] == {"answer": "far"}
+    assert payload[0]["reveal"] == {"answer": "far", "explain": "skyward 9"}  # as the answer
     os.environ["TEACHRASTER_STATIC_PAGES"] = "1"
     try:
-        assert '"reveal":{"answer":"far"}' in q._repr_mimebundle_()[0]["text/html"]
+        html = q._repr_mimebundle_()[0]["text/html"]
+        assert '"reveal":{"answer":"far","explain":"skyward 9"}' in html
     finally:
         del os.environ["TEACHRASTER_STATIC_PAGES"]
     assert '"reveal"' not in q._repr_mimebundle_()[0]["text/html"]
+    assert "skyward 9" not in q._repr_mimebundle_()[0]["text/html"]  # nor the explanation

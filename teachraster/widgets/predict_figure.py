@@ -155,11 +155,12 @@ class FigurePrediction(HoldsAnswer, Explorable):
     def __init__(self, question: str, explain: str, data: dict, reveal: dict) -> None:
         super().__init__()
         self.question, self.explain = _check_question(question, explain)
-        # what Check shows (the answer, and for a point the curve through it): kept in the
-        # kernel until Check, never in ``data`` (issue 31: the page held the answer before
-        # Check, readable with devtools or in a saved notebook's widget state)
-        self._reveal = reveal
-        self.data = {"question": question, "explain": explain, **data}
+        # what Check shows (the answer, for a point the curve through it, and the
+        # explanation, which often states the answer): kept in the kernel until Check, never
+        # in ``data`` (issue 31: the page held the answer before Check, readable with
+        # devtools or in a saved notebook's widget state; review r132 06-4: the explanation)
+        self._reveal = {**reveal, "explain": explain}
+        self.data = {"question": question, **data}
         self.state = {"given": None, "revealed": False}
         self.observe(self._on_state, "state")
 
@@ -229,7 +230,7 @@ class FigurePrediction(HoldsAnswer, Explorable):
 
     def offline_html(self) -> str:
         """This question as an offline page (``teachraster html``): no kernel there to
-        reveal the answer, so the page holds it and judges by itself."""
+        reveal the answer, so the page holds it (and the explanation) and judges by itself."""
         return offline_html(self._esm, {**self.data, "reveal": self._reveal}, self.state)
 
     def _fallback_html(self) -> str:

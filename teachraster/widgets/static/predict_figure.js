@@ -216,7 +216,8 @@ export function revealed(data, state) {
 }
 
 // Check (disabled until an answer is given) and, once pressed, the verdict and the
-// explanation: show(correct, text); waiting(live) while the kernel has not sent the answer
+// explanation: show(correct, text, known), the explanation coming with the answer (known:
+// review r132 06-4, it often states the answer); waiting(live) while the kernel has not sent it
 function checkRow(root, data, onCheck) {
   const check = button("Check", onCheck);
   check.disabled = true;
@@ -224,11 +225,11 @@ function checkRow(root, data, onCheck) {
   const verdict = element("div", { class: "tr-predict-verdict", "aria-live": "polite" });
   const explain = element("div");
   root.append(element("div", { class: "tr-x-row" }, [check]), verdict, explain);
-  const show = (correct, text) => {
+  const show = (correct, text, known) => {
     check.disabled = true;
     check.title = "checked: your prediction is kept";
     verdict.innerHTML = verdictHtml(correct, text);
-    explain.innerHTML = data.explain || "";
+    explain.innerHTML = (known && known.explain) || "";
   };
   const waiting = (live) => {
     check.disabled = true;
@@ -322,7 +323,7 @@ function mountPixels(root, data, host) {
     const v = pixelVerdict(known.answer, state.given, W);
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
       `${v.right} right, ${v.extra} too many, ${v.missed} missed. The answer: <b>${v.total}</b> ` +
-      `${cells(v.total)} ${picked}.` + pixelLegend());
+      `${cells(v.total)} ${picked}.` + pixelLegend(), known);
     revealOnFigure(host, canvas, paint);
   }
 
@@ -485,7 +486,7 @@ function mountPoint(root, data, host) {
     const mine = data.readout
       ? `You predicted ${readoutText(data.readout, state.given[0], data.readoutDigits)}. ` : "";
     show(v.correct, `${mine}Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
-      `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`);
+      `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`, known);
     revealOnFigure(host, canvas, paint);
   }
   pointerInput(canvas, {
@@ -601,7 +602,7 @@ function mountOrder(root, data, host) {
     if (!known) return;
     const v = orderVerdict(known.answer, given());
     const right = known.answer === null ? data.impossibleLabel : known.answer.join(" → ");
-    show(v.correct, `The answer: <b>${right}</b>.`);
+    show(v.correct, `The answer: <b>${right}</b>.`, known);
   }
   render_();
   if (state.revealed) reveal(false);
@@ -647,7 +648,7 @@ function mountChoice(root, data, host) {
     render_();
     if (!known) return;
     const v = choiceVerdict(known.answer, state.given);
-    show(v.correct, v.text);
+    show(v.correct, v.text, known);
   }
   render_();
   if (state.revealed) reveal(false);
