@@ -153,6 +153,8 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
          (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
         *_steep_cases(),
         *_box_cases(),
+        *_border_cases(),  # r131 D8-1
+        *_one_axis_cases(),  # r131 D8-6
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -254,8 +256,6 @@ def _box_cases() -> list[tuple[str, tuple]]:
          (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
         ("a 16-px tile around a small triangle", (big, 0, 0, 2 * TILE,
                                                   np.full((2 * TILE, 2 * TILE), 0.301))),
-        *_border_cases(),
-        *_one_axis_cases(),
     ]  # fmt: skip
 
 
