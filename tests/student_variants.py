@@ -875,6 +875,19 @@ def hiz_cut(xyz, row0, col0, size, buffer, low="ceil", high="floor", cut="xy", e
     return bool(max(low_z, min(z1, z2, z3)) >= np.max(buffer))
 
 
+def hiz_integer_centres(xyz, row0, col0, size, buffer):
+    """r131 D8-4: pixel c's centre taken at x = c (no + ½), rows alike."""
+    v = np.asarray(xyz, dtype=float)
+    c0, c1 = max(col0, math.ceil(v[:, 0].min())), min(col0 + size - 1, math.floor(v[:, 0].max()))
+    r0, r1 = max(row0, math.ceil(v[:, 1].min())), min(row0 + size - 1, math.floor(v[:, 1].max()))
+    if c0 > c1 or r0 > r1:
+        return True
+    n = np.cross(v[1] - v[0], v[2] - v[0])
+    low = min(v[0, 2] - (n[0] * (c - v[0, 0]) + n[1] * (r - v[0, 1])) / n[2]
+              for c in (c0, c1) for r in (r0, r1))  # fmt: skip
+    return bool(max(low, v[:, 2].min()) >= np.max(buffer))
+
+
 def hiz_covered_centres(xyz, row0, col0, size, buffer):
     """The plane's minimum over the tile's centres the triangle covers (r64 08-4): safe and
     tighter, but a coverage test per pixel; the box's bound where it covers none."""
@@ -1324,6 +1337,11 @@ WRONG = {
         "not cut to the tile",
     ),  # fmt: skip
     "Hi-Z with the box cut in x only": ("hiz_rejects", lambda *a: hiz_cut(*a, cut="x"), "x only"),
+    "Hi-Z with centres at integer coordinates": (
+        "hiz_rejects",
+        hiz_integer_centres,
+        "centre at x = c + ½",
+    ),  # fmt: skip
     "Hi-Z with the box cut in y only": ("hiz_rejects", lambda *a: hiz_cut(*a, cut="y"), "y only"),
     "Hi-Z strictly behind": (
         "hiz_rejects",
@@ -1447,6 +1465,7 @@ KINDS = {
     "Hi-Z over the box not cut to the tile": "box uncut",
     "Hi-Z with the box cut in x only": "box in x only",
     "Hi-Z with the box cut in y only": "box in y only",
+    "Hi-Z with centres at integer coordinates": "integer centres",
     "clip with z − w": "far plane's distance",
     "clip against the far plane": "far plane",
     "fill half a pixel off in x": "half a pixel off in x",

@@ -368,6 +368,8 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "farthest vertex": bool(xyz[:, 2].max() >= far),
             "tile mean": bool(len(finite) and near >= finite.mean()),
             "row col swapped": bool(lower_bound(xyz, col0, row0, size) >= far),
+            # r131 D8-4: the centres at integer coordinates (8.1 names the same slip)
+            "integer centres": bool(_integer_bound(xyz, row0, col0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
         }
 
@@ -397,6 +399,21 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     if c0 > c1 or r0 > r1:
         return np.inf
     return _bound_at(xyz, np.array([r0, r0, r1, r1]), np.array([c0, c1, c0, c1]))
+
+
+def _integer_bound(xyz, row0, col0, size) -> float:
+    """The task's bound with pixel c's centre taken at x = c (not c + ½), rows alike."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    spans = []
+    for axis, first in ((0, col0), (1, row0)):
+        a = max(first, int(np.ceil(xy[:, axis].min())))
+        b = min(first + size - 1, int(np.floor(xy[:, axis].max())))
+        if a > b:
+            return np.inf
+        spans.append((a, b))
+    (c0, c1), (r0, r1) = spans
+    rows, cols = np.array([r0, r0, r1, r1]) - 0.5, np.array([c0, c1, c0, c1]) - 0.5
+    return max(float(_bare_plane(xyz, rows, cols).min()), float(xyz[:, 2].min()))
 
 
 def _outer_bound(xyz, box) -> float:
@@ -517,6 +534,9 @@ MISTAKES = {
     "farthest stored depth",
     "tile mean": "you compared with the tile's mean depth: only its farthest stored depth "
     "bounds every pixel of the tile",
+    "integer centres": "you put the pixel centres at integer coordinates: pixel column c "
+    "has its centre at x = c + ½ and row r at y = r + ½, so both which centres lie in the box "
+    "and the plane's value there move by ½ px",
     "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
