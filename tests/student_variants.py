@@ -842,6 +842,52 @@ def hiz_box_corners(xyz, row0, col0, size, buffer):
     return bool(max(low, min(z1, z2, z3)) >= np.max(buffer))
 
 
+def hiz_cut(xyz, row0, col0, size, buffer, low="ceil", high="floor", cut="xy", empty=True):
+    """r131's 8.2 variants: the tile's centres from column ``low(xmin − ½)`` (ceil: as asked;
+    "floor+1": a strict inequality; "round": ⌊xmin + ½⌋) to ``high(xmax − ½)`` ("floor"; or
+    "ceil-1", strict), rows alike, cut to the tile in the axes of ``cut`` (the others: the
+    whole tile; "" the whole box), the plane at the four extreme centres no nearer than the
+    nearest vertex; ``empty``: the answer where the box holds no centre of the tile."""
+    v = np.asarray(xyz, dtype=float)
+    first = {
+        "ceil": lambda t: math.ceil(t - 0.5),
+        "floor+1": lambda t: math.floor(t - 0.5) + 1,
+        "round": lambda t: math.floor(t + 0.5),
+    }[low]
+    last = {"floor": lambda t: math.floor(t - 0.5), "ceil-1": lambda t: math.ceil(t - 0.5) - 1}[
+        high
+    ]
+    spans = []
+    for axis, start in ((0, col0), (1, row0)):
+        a, b = first(v[:, axis].min()), last(v[:, axis].max())
+        if max(a, start) > min(b, start + size - 1):
+            return empty
+        if "xy"[axis] in cut:
+            a, b = max(a, start), min(b, start + size - 1)
+        elif cut:
+            a, b = start, start + size - 1
+        spans.append((a, b))
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = v
+    n = np.cross(v[1] - v[0], v[2] - v[0])
+    (c0, c1), (r0, r1) = spans
+    low_z = min(z1 - (n[0] * (c + 0.5 - x1) + n[1] * (r + 0.5 - y1)) / n[2]
+                for c in (c0, c1) for r in (r0, r1))  # fmt: skip
+    return bool(max(low_z, min(z1, z2, z3)) >= np.max(buffer))
+
+
+def hiz_integer_centres(xyz, row0, col0, size, buffer):
+    """r131 D8-4: pixel c's centre taken at x = c (no + ½), rows alike."""
+    v = np.asarray(xyz, dtype=float)
+    c0, c1 = max(col0, math.ceil(v[:, 0].min())), min(col0 + size - 1, math.floor(v[:, 0].max()))
+    r0, r1 = max(row0, math.ceil(v[:, 1].min())), min(row0 + size - 1, math.floor(v[:, 1].max()))
+    if c0 > c1 or r0 > r1:
+        return True
+    n = np.cross(v[1] - v[0], v[2] - v[0])
+    low = min(v[0, 2] - (n[0] * (c - v[0, 0]) + n[1] * (r - v[0, 1])) / n[2]
+              for c in (c0, c1) for r in (r0, r1))  # fmt: skip
+    return bool(max(low, v[:, 2].min()) >= np.max(buffer))
+
+
 def hiz_covered_centres(xyz, row0, col0, size, buffer):
     """The plane's minimum over the tile's centres the triangle covers (r64 08-4): safe and
     tighter, but a coverage test per pixel; the box's bound where it covers none."""
@@ -940,6 +986,7 @@ DIFFERENT = {
     "robust fill, vectorised": ("robust_fill", _fill_with()),
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
+    "Hi-Z at the box's extreme centres": ("hiz_rejects", hiz_cut),
     "front to back, under": ("front_to_back", _under_with(_under)),
     "numpy over_premultiplied": (
         "over_premultiplied",
@@ -1267,6 +1314,35 @@ WRONG = {
         "pixels the triangle's bounding box touches",
     ),  # fmt: skip
     "Hi-Z at the box's own corners": ("hiz_rejects", hiz_box_corners, "box's own corners"),
+    # r131 D8-1: the centres on the box's border left out passed every case (unsafe)
+    "Hi-Z without the box's border": (
+        "hiz_rejects",
+        lambda *a: hiz_cut(*a, low="floor+1", high="ceil-1"),
+        "left out the centres on the box's border",
+    ),  # fmt: skip
+    "Hi-Z from ⌊xmin + ½⌋": (
+        "hiz_rejects",
+        lambda *a: hiz_cut(*a, low="round"),
+        "left out the centres on the box's left or top border",
+    ),  # fmt: skip
+    # r131 D8-2, D8-3, D8-6: named "pixels the box touches", "nearest vertex", "box's corners"
+    "Hi-Z keeping an empty box": (
+        "hiz_rejects",
+        lambda *a: hiz_cut(*a, empty=False),
+        "bounding box holds no centre of the tile",
+    ),  # fmt: skip
+    "Hi-Z over the box not cut to the tile": (
+        "hiz_rejects",
+        lambda *a: hiz_cut(*a, cut=""),
+        "not cut to the tile",
+    ),  # fmt: skip
+    "Hi-Z with the box cut in x only": ("hiz_rejects", lambda *a: hiz_cut(*a, cut="x"), "x only"),
+    "Hi-Z with centres at integer coordinates": (
+        "hiz_rejects",
+        hiz_integer_centres,
+        "centre at x = c + ½",
+    ),  # fmt: skip
+    "Hi-Z with the box cut in y only": ("hiz_rejects", lambda *a: hiz_cut(*a, cut="y"), "y only"),
     "Hi-Z strictly behind": (
         "hiz_rejects",
         _hiz_with(lambda near, buffer: near > np.max(buffer)),
@@ -1383,6 +1459,13 @@ KINDS = {
     "Hi-Z by lesson 10's bound": "whole tile",
     "Hi-Z over the pixels the box touches": "pixel box",
     "Hi-Z at the box's own corners": "box corners",
+    "Hi-Z without the box's border": "border",
+    "Hi-Z from ⌊xmin + ½⌋": "border low",
+    "Hi-Z keeping an empty box": "empty kept",
+    "Hi-Z over the box not cut to the tile": "box uncut",
+    "Hi-Z with the box cut in x only": "box in x only",
+    "Hi-Z with the box cut in y only": "box in y only",
+    "Hi-Z with centres at integer coordinates": "integer centres",
     "clip with z − w": "far plane's distance",
     "clip against the far plane": "far plane",
     "fill half a pixel off in x": "half a pixel off in x",

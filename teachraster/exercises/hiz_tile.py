@@ -153,6 +153,8 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
          (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
         *_steep_cases(),
         *_box_cases(),
+        *_border_cases(),  # r131 D8-1
+        *_one_axis_cases(),  # r131 D8-6
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -257,6 +259,57 @@ def _box_cases() -> list[tuple[str, tuple]]:
     ]  # fmt: skip
 
 
+#: r131 D8-1: a vertex exactly on the pixel centre (2.5, 0.5), the triangle's nearest point:
+#: that centre lies on the box's left and top border, and the triangle covers it (a top and
+#: a left edge meet there). Without it the bound is 0.247, at (3.5, 1.5), behind 0.2.
+_ON_CENTRE = np.array([[2.5, 0.5, 0.1], [7.5, 0.5, 0.5], [2.5, 6.5, 0.5]])
+#: An axis-aligned edge on the column of centres x = 2.5, the plane nearest along it (0.1)
+#: and growing 0.05 per px to the right; turned to lie on each side of its box in turn.
+_ON_COLUMN = np.array([[2.5, -4.0, 0.1], [12.5, 4.0, 0.6], [2.5, 12.0, 0.1]])
+
+
+def _border_cases() -> list[tuple[str, tuple]]:
+    """r131 D8-1: centres exactly on the triangle's bounding box, where its depth is nearest:
+    a bound leaving them out (a strict inequality, or ⌊xmin + ½⌋) was 0.05 or more too far,
+    behind the stored 0.13 or 0.2, and passed every case: on the left and top sides a
+    rejection there drops a covered fragment."""
+    out = [
+        (
+            "a vertex exactly on a pixel centre, the triangle's nearest point: the box's "
+            "top-left corner holds it",
+            (_ON_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.2)),
+        )
+    ]
+    for side, (fx, swap) in {"left": (False, False), "right": (True, False),
+                             "top": (False, True), "bottom": (True, True)}.items():  # fmt: skip
+        xyz = _ON_COLUMN.copy()
+        xyz[:, 0] = 8 - xyz[:, 0] if fx else xyz[:, 0]  # the column x = 5.5 for the right
+        xyz = xyz[:, [1, 0, 2]] if swap else xyz
+        out.append(
+            (
+                f"an edge exactly on a line of pixel centres, the box's {side} side, "
+                "where the depth is nearest",
+                (xyz, 0, 0, TILE, np.full((TILE, TILE), 0.13)),
+            )
+        )
+    return out
+
+
+#: r131 D8-6: a triangle reaching beyond the tile's right side, its box's rows 2 … 4 of the
+#: tile, nearest at (7.5, 2.5) (0.35); the tile's top row, outside the box, runs to 0.29.
+_BEYOND_RIGHT = np.array([[4.5, 2.2, 0.401], [20.0, 2.2, 0.091], [20.0, 5.2, 0.181]])
+
+
+def _one_axis_cases() -> list[tuple[str, tuple]]:
+    """r131 D8-6: the box cut from the tile in x only (or y only) failed the same cases as
+    the box's own corners; here the box's corners lie on the extreme centres in the axis
+    the tile cuts, and only the other axis's cut decides."""
+    return [("a triangle beyond the tile's right side, its box over the tile's middle rows",
+             (_BEYOND_RIGHT, 0, 0, TILE, np.full((TILE, TILE), 0.32))),
+            ("a triangle beyond the tile's bottom side, its box over the tile's middle columns",
+             (_BEYOND_RIGHT[:, [1, 0, 2]], 0, 0, TILE, np.full((TILE, TILE), 0.32)))]  # fmt: skip
+
+
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
 #: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
@@ -291,6 +344,14 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "whole tile": bool(tile_bound(xyz, row0, col0, size) >= far),
             "pixel box": bool(_pixel_box_bound(xyz, row0, col0, size) >= far),
             "box corners": bool(_box_own_corners(xyz, row0, col0, size) >= far),
+            # r131 D8-2, D8-3, D8-6: an empty box kept, the box not cut to the tile, cut in
+            # one axis only; D8-1: the centres on the box's border left out
+            "empty kept": bool(box is not None and near >= far),
+            "box uncut": bool(_cut_bound(xyz, row0, col0, size, cut="") >= far),
+            "box in x only": bool(_cut_bound(xyz, row0, col0, size, cut="x") >= far),
+            "box in y only": bool(_cut_bound(xyz, row0, col0, size, cut="y") >= far),
+            "border": bool(_cut_bound(xyz, row0, col0, size, border="none") >= far),
+            "border low": bool(_cut_bound(xyz, row0, col0, size, border="high") >= far),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
             "plane farthest": bool(box is None or plane_at(xyz, rows, cols).max() >= far),
@@ -307,8 +368,52 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "farthest vertex": bool(xyz[:, 2].max() >= far),
             "tile mean": bool(len(finite) and near >= finite.mean()),
             "row col swapped": bool(lower_bound(xyz, col0, row0, size) >= far),
+            # r131 D8-4: the centres at integer coordinates (8.1 names the same slip)
+            "integer centres": bool(_integer_bound(xyz, row0, col0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
         }
+
+
+def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
+    """The task's bound with the box cut to the tile only in the axes of ``cut`` (the other
+    axes: the whole box, or the whole tile where the box is not cut at all: ``cut=""`` takes
+    the box's own extreme centres, beyond the tile too) and the centres on the box's border
+    kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
+    leaves the left and top; "none": a strict inequality). +inf where the tile and the box
+    share no centre (as the task's)."""
+    if _box_corners(xyz, row0, col0, size) is None:
+        return np.inf
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    spans = []
+    for axis, first in ((0, col0), (1, row0)):
+        lo, hi = xy[:, axis].min(), xy[:, axis].max()
+        a = int(np.floor(lo + 0.5)) if border != "both" else int(np.ceil(lo - 0.5))
+        b = int(np.ceil(hi - 0.5)) - 1 if border == "none" else int(np.floor(hi - 0.5))
+        if not cut:
+            spans.append((a, b))
+        elif "xy"[axis] in cut:
+            spans.append((max(first, a), min(first + size - 1, b)))
+        else:
+            spans.append((first, first + size - 1))
+    (c0, c1), (r0, r1) = spans
+    if c0 > c1 or r0 > r1:
+        return np.inf
+    return _bound_at(xyz, np.array([r0, r0, r1, r1]), np.array([c0, c1, c0, c1]))
+
+
+def _integer_bound(xyz, row0, col0, size) -> float:
+    """The task's bound with pixel c's centre taken at x = c (not c + ½), rows alike."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    spans = []
+    for axis, first in ((0, col0), (1, row0)):
+        a = max(first, int(np.ceil(xy[:, axis].min())))
+        b = min(first + size - 1, int(np.floor(xy[:, axis].max())))
+        if a > b:
+            return np.inf
+        spans.append((a, b))
+    (c0, c1), (r0, r1) = spans
+    rows, cols = np.array([r0, r0, r1, r1]) - 0.5, np.array([c0, c1, c0, c1]) - 0.5
+    return max(float(_bare_plane(xyz, rows, cols).min()), float(xyz[:, 2].min()))
 
 
 def _outer_bound(xyz, box) -> float:
@@ -355,6 +460,13 @@ def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
     return bool(plane_at(xyz, r, c, clamp=False).min() >= buffer.max())
 
 
+_BORDER = (
+    "a vertex or an axis-aligned edge can lie exactly on a pixel centre, and the triangle's "
+    "depth can be nearest there; on the box's left or top side the triangle covers such a "
+    "centre (the top-left rule), so a bound without it can reject a fragment that is drawn. "
+    "The bound counts every centre inside the box, its border included"
+)
+
 MISTAKES = {
     "whole tile": "you took lesson 10's bound, the plane over all the tile's pixel centres: "
     "safe, but no fragment of the triangle lies outside its bounding box, and here the plane "
@@ -366,6 +478,21 @@ MISTAKES = {
     "box corners": "you took the plane at the bounding box's own corners (kept within the "
     "tile): fragments sit at pixel centres, and the nearest centre inside the box lies up to "
     "½ px further in; take the plane's minimum over the tile's centres inside the box",
+    "empty kept": "you kept the block where the triangle's bounding box holds no centre of "
+    "the tile: every fragment sits at a pixel centre inside the box, so the triangle has no "
+    "fragment in this tile and nothing of it can pass here: reject it, whatever the tile stores",
+    "box uncut": "you took the extreme centres of the whole bounding box, not cut to the tile: "
+    "here the plane is nearest at centres of the box outside this tile (a safe bound, but "
+    "looser: it keeps blocks Hi-Z could reject); which of the box's centres lie in this tile?",
+    "box in x only": "you cut the tile to the box in x only: your rows run over the whole "
+    "tile, and here the plane is nearest in rows above or below the box, where no fragment "
+    "lies (a safe bound, but looser); cut the rows to the box too",
+    "box in y only": "you cut the tile to the box in y only: your columns run over the whole "
+    "tile, and here the plane is nearest in columns beside the box, where no fragment lies "
+    "(a safe bound, but looser); cut the columns to the box too",
+    "border": "you left out the centres on the box's border (a strict inequality?): " + _BORDER,
+    "border low": "you left out the centres on the box's left or top border (⌊xmin + ½⌋ skips "
+    "the column whose centre lies exactly at xmin, ⌊ymin + ½⌋ the row): " + _BORDER,
     "smaller bound": "you took the smaller of the two bounds (the plane at the corners, the "
     "nearest vertex): no fragment is nearer than either, so none is nearer than the larger "
     "of the two (the smaller keeps blocks Hi-Z could reject)",
@@ -407,6 +534,9 @@ MISTAKES = {
     "farthest stored depth",
     "tile mean": "you compared with the tile's mean depth: only its farthest stored depth "
     "bounds every pixel of the tile",
+    "integer centres": "you put the pixel centres at integer coordinates: pixel column c "
+    "has its centre at x = c + ½ and row r at y = r + ½, so both which centres lie in the box "
+    "and the plane's value there move by ½ px",
     "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
