@@ -958,3 +958,17 @@ def test_sampling_explorer_title_names_the_band_not_a_half():
         assert starts[32] < 0.3 < 0.45 < starts[64] < 0.55  # a quarter at 32, a half at 64
     finally:
         s.close()
+
+
+def test_sampling_explorer_names_panel_two():
+    """Review r133 08-F: panel 2 ("2. sample") has a key, as panels 1 and 3: its dots are the
+    samples, its faint line the prefiltered signal they are taken from."""
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    s = SamplingExplorer(backend="image")
+    try:
+        (panel,) = [ax for ax in s.fig.axes if ax.get_title() == "2. sample"]
+        key = [t.get_text() for t in panel.get_legend().get_texts()]
+        assert key == ["samples", "prefiltered (faint)"]
+    finally:
+        s.close()
