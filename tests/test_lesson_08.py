@@ -237,7 +237,7 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     # the prediction: asked before the chart, answered by the fitted slopes the chart prints
     (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
     assert cells[k]["metadata"]["jupyter"]["source_hidden"]
-    assert 'answer=f"slowest {slowest}, lowest {lowest}"' in sources[k]
+    assert 'answer=f"slowest {slowest}, lowest {lowest_256}"' in sources[k]
     assert sources[k + 1].startswith("q_fastest.hold()") and "ax.loglog" in sources[k + 1]
     assert "guess which falls fastest" not in text
     assert ns.order[0] == "grid" == min(ns.fitted, key=ns.fitted.get)
@@ -306,7 +306,7 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     for graded in ("no chance", "left to chance", "fastest</b>", "only in the cells"):
         assert graded not in asked, graded
     assert ns.order == ["grid", "jittered", "random"] == sorted(ns.fitted, key=ns.fitted.get)
-    assert len(ns.pairs) == 6 and f"slowest {ns.slowest}, lowest {ns.lowest}" in ns.pairs
+    assert len(ns.pairs) == 6 and f"slowest {ns.slowest}, lowest {ns.lowest_256}" in ns.pairs
     # 08-B: exponents in widget HTML are typeset (<sup>), not typed as S^−1/2
     assert "S^−" not in ask and "S^k" not in ask and "S<sup>−1/2</sup>" in ask
     # 08-D: the two S^-1/2 curves, random and the grid on axis edges, coincide: captioned
@@ -471,7 +471,7 @@ def test_lesson_08_review_r133_shading_ratio_msaa_inside_robust_fastest_and_less
     # q_fastest: random's slope is far from the other two, the grid ends well below jittered
     grid, jit, rnd = (ns.fitted[k] for k in ("grid", "jittered", "random"))
     assert ns.slowest == "random" and rnd - max(grid, jit) > 0.15
-    assert ns.lowest == "grid" and ns.at_256["grid"] < 0.7 * ns.at_256["jittered"]
+    assert ns.lowest_256 == "grid" and ns.at_256["grid"] < 0.7 * ns.at_256["jittered"]
     assert ns.at_256["jittered"] == ns.edge_errors["jittered"][-1]
-    assert f"slowest {ns.slowest}, lowest {ns.lowest}" == "slowest random, lowest grid"
+    assert f"slowest {ns.slowest}, lowest {ns.lowest_256}" == "slowest random, lowest grid"
     assert ns.STRATIFIED_ERROR_EXPONENT == -0.75
