@@ -237,10 +237,10 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     # the prediction: asked before the chart, answered by the fitted slopes the chart prints
     (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
     assert cells[k]["metadata"]["jupyter"]["source_hidden"]
-    assert 'answer=" > ".join(order)' in sources[k]
+    assert 'answer=f"slowest {slowest}, lowest {lowest_256}"' in sources[k]
     assert sources[k + 1].startswith("q_fastest.hold()") and "ax.loglog" in sources[k + 1]
     assert "guess which falls fastest" not in text
-    assert ns.fastest == "grid" == min(ns.fitted, key=ns.fitted.get)
+    assert ns.order[0] == "grid" == min(ns.fitted, key=ns.fitted.get)
     for kind, k_fit in ns.fitted.items():
         assert k_fit == pytest.approx(ns.edge_slopes[kind])
     # the centred 16-sample pattern: below the grid, which is below the pattern as it is
@@ -297,16 +297,16 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
     assert "are each **one fixed draw** (`tr.sample_pattern(S, kind)`, seed 0)" in flat
     # q_fastest: the reasoning's means are in the question, the answer in neither
     (ask,) = [s for s in sources if "q_fastest = Predict(" in s]
-    asked = " ".join(ask.split("\n    orders,\n")[0].split()).replace('" "', "")
+    asked = " ".join(ask.split("\n    pairs,\n")[0].split()).replace('" "', "")
     assert "the edge crosses at most 2√S − 1 of the S cells" in asked and "coin tosses" in asked
-    assert "meets them one by one, as §3's" in asked and "order the three" in asked
+    assert "meets them one by one, as §3's" in asked and "falls <b>slowest</b>" in asked
     assert "S^−3/4" not in asked and "S<sup>−3/4" not in asked and "Mitchell" not in asked
     # review r119 08-A: the facts are neutral, no adjective grades the options; the answer is
     # the order of all three (fastest first), which the fitted slopes give
     for graded in ("no chance", "left to chance", "fastest</b>", "only in the cells"):
         assert graded not in asked, graded
     assert ns.order == ["grid", "jittered", "random"] == sorted(ns.fitted, key=ns.fitted.get)
-    assert len(ns.orders) == 6 and " > ".join(ns.order) in ns.orders
+    assert len(ns.pairs) == 6 and f"slowest {ns.slowest}, lowest {ns.lowest_256}" in ns.pairs
     # 08-B: exponents in widget HTML are typeset (<sup>), not typed as S^−1/2
     assert "S^−" not in ask and "S^k" not in ask and "S<sup>−1/2</sup>" in ask
     # 08-D: the two S^-1/2 curves, random and the grid on axis edges, coincide: captioned
@@ -414,7 +414,12 @@ def test_lesson_08_review_r129_held_chart_source_reconstruction_and_even_steps(n
     for told in ("steepens", "Mitchell", "S^{-3/4}", "jittered curve", '"jittered"]'):
         assert told not in sources[k + 1], told
     assert "(the grid)" not in sources[k]
-    assert ns.REFERENCE == ("jittered", -0.75, "$S^{-3/4}$ (Mitchell), from jittered's S = 4")
+    # review r133 08-H: the reference line's rate and Mitchell's name are in neither collapsed
+    # source before Check (the exponent comes from the package, the legend names no rate)
+    for told in ("Mitchell", "3/4", "-0.75", "REFERENCE"):
+        assert told not in sources[k] and told not in sources[k + 1], told
+    assert "STRATIFIED_ERROR_EXPONENT" in sources[k + 1]
+    assert 'label="theory line (explained below)"' in sources[k + 1]
     text = " ".join(" ".join(sources).split())
     assert "the display shows each value over its pixel." not in text
     assert "A display shows each value over its pixel (a **box**)" in text
@@ -429,3 +434,44 @@ def test_lesson_08_review_r129_held_chart_source_reconstruction_and_even_steps(n
     apart = ", ".join(f"{d:.2f}" for d in ns.steps_apart["random"])
     assert apart == "0.15, 0.35, 0.22"
     assert np.allclose(np.diff(ns.pattern_rows4["random"]), ns.steps_apart["random"])
+
+
+def test_lesson_08_review_r133_shading_ratio_msaa_inside_robust_fastest_and_lesson_09(ns):
+    """Review r133 08-A: supersampling costs up to S times the shading, the ratio quoted from the
+    printed one. 08-B: inside a triangle MSAA leaves texture detail to texture filtering and
+    shading aliasing as it is. 08-C: lesson 09 does not claim to name aliasing first. 08-H:
+    q_fastest asks what holds on any run (the slowest, far from the other two; the lowest at
+    S = 256), not the order of the grid and jittered, whose fitted slopes are close."""
+    import json
+    from pathlib import Path
+
+    from notebook_runs import executed, streams
+
+    root = Path(__file__).resolve().parents[1]
+    cells = json.loads((root / "notebooks" / "08_antialiasing.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+                    .split())  # fmt: skip
+    ratio = ns.shaded_ssaa / ns.shaded_msaa
+    assert 1 < ratio < 4 and ns.shading_ratio == ratio
+    printed = streams(executed("08_antialiasing").notebook())
+    assert f"supersampling / MSAA: {ratio:.1f}× the shading work" in printed
+    assert f"the cell below prints {ratio:.1f}× for this triangle" in text
+    assert "up to $S$ times the shading work ($S$ times at every fully covered pixel" in text
+    assert "$S$ times the shading work;" not in text and "($S\\times$ the shading)" not in text
+    assert "(up to $S\\times$ the shading, §2)" in text
+    assert "texture detail inside the triangle is not antialiased" not in text
+    assert "texture detail is left to texture filtering (lesson 09)" in text
+    assert "(a sharp highlight, an alpha-tested cut-out) stays" in text
+    # lesson 09 meets aliasing in textures; lesson 08 §1 named it
+    assert "one effect, **aliasing**" in text
+    nine = json.loads((root / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    opening = " ".join("".join(nine[0]["source"]).split())
+    assert "This lesson names that effect" not in opening
+    assert "Lesson 08 named that effect for edges, **aliasing**; this lesson meets it" in opening
+    # q_fastest: random's slope is far from the other two, the grid ends well below jittered
+    grid, jit, rnd = (ns.fitted[k] for k in ("grid", "jittered", "random"))
+    assert ns.slowest == "random" and rnd - max(grid, jit) > 0.15
+    assert ns.lowest_256 == "grid" and ns.at_256["grid"] < 0.7 * ns.at_256["jittered"]
+    assert ns.at_256["jittered"] == ns.edge_errors["jittered"][-1]
+    assert f"slowest {ns.slowest}, lowest {ns.lowest_256}" == "slowest random, lowest grid"
+    assert ns.STRATIFIED_ERROR_EXPONENT == -0.75

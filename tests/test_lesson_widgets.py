@@ -930,3 +930,45 @@ def test_depth_explorer_key_clears_the_z_label_and_fits_in_the_lesson_style():
                 assert key.x0 < now.x0 and now.x1 < key.x1 and key.y0 < now.y0 < key.y1
             finally:
                 ex.close()
+
+
+def test_sampling_explorer_title_names_the_band_not_a_half():
+    """Review r133 08-D: the title said a wide filter "blurs the left half too", true at 64
+    samples only; at the lesson's 32 the signal is below the Nyquist limit left of x = 0.24 (a
+    quarter). It names the part left of the yellow band, wherever that band starts."""
+    import ipywidgets as widgets
+
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    def texts(w):
+        if isinstance(w, widgets.HTML):
+            yield w.value
+        for child in getattr(w, "children", ()):
+            yield from texts(child)
+
+    s = SamplingExplorer(backend="image")
+    try:
+        title = " ".join(t for t in texts(s.widget) if "Prefilter" in t)
+        assert "blurs the part left of the yellow band too" in " ".join(title.split())
+        assert "left half" not in title
+        starts = {}
+        for rate in (32, 64):
+            s.rate.value = rate
+            starts[rate] = s.result.alias_from
+        assert starts[32] < 0.3 < 0.45 < starts[64] < 0.55  # a quarter at 32, a half at 64
+    finally:
+        s.close()
+
+
+def test_sampling_explorer_names_panel_two():
+    """Review r133 08-F: panel 2 ("2. sample") has a key, as panels 1 and 3: its dots are the
+    samples, its faint line the prefiltered signal they are taken from."""
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    s = SamplingExplorer(backend="image")
+    try:
+        (panel,) = [ax for ax in s.fig.axes if ax.get_title() == "2. sample"]
+        key = [t.get_text() for t in panel.get_legend().get_texts()]
+        assert key == ["samples", "prefiltered (faint)"]
+    finally:
+        s.close()

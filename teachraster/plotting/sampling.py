@@ -155,7 +155,8 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
     a.set_title("1. prefilter")
     stems = b.plot(result.sample_x, result.samples, "o", color=COLORS["outside"], ms=6,
                    label="samples")[0]  # fmt: skip
-    (faint,) = b.plot(result.x, result.filtered, color=OKABE_ITO["blue"], lw=1, alpha=0.35)
+    (faint,) = b.plot(result.x, result.filtered, color=OKABE_ITO["blue"], lw=1, alpha=0.35,
+                      label="prefiltered (faint)")  # fmt: skip
     b.set_title("2. sample")
     # dashed and darker: in a shared key it must not look like the signal's grey line
     (ideal,) = c.plot(result.x, result.ideal, color="0.3", lw=1.5, ls="--",
@@ -172,7 +173,7 @@ def plot_sampling(axes, result: SamplingResult) -> SamplingArtists:
                                 lw=0))  # fmt: skip
     # keys beside the panels, not in them: inside, at the lower left, they hid the signal's
     # troughs and the reconstruction's dips the student compares with the ideal (review r42)
-    for ax in (a, c):
+    for ax in axes:  # panel 2 too: its dots and its faint line are named (review r133 08-F)
         ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=12, frameon=False)
     art = SamplingArtists(sig, filt, stems, rec, ideal, spans, faint)
     _name_prefiltered(art, result)

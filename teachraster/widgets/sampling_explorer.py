@@ -105,7 +105,8 @@ class SamplingExplorer(Shown):
             "Prefilter → sample → reconstruct",
             "Yellow: the signal is above the Nyquist limit (half the sample rate). Widen the "
             "filter until the reconstruction there is flat instead of a false wave; wider "
-            "still, and it blurs the left half too: the RMS error rises again.",
+            "still, and it blurs the part left of the yellow band too: the RMS error rises "
+            "again.",
         )
         controls = control_row([self.rate, self.width, labelled("shape", self.kernel)])
         self.widget = projector_text(
