@@ -352,8 +352,7 @@ def render(
     attrs : (N, 3) or (N, 3, k) array-like, optional
         Per-vertex attributes, interpolated perspective-correctly.
     depth_test : bool
-        z-buffer on (nearer wins, ties keep the earlier triangle) or off (later wins, and
-        writes its depth: ``GL_ALWAYS``, not ``glDisable(GL_DEPTH_TEST)``).
+        On: nearer wins, ties keep the earlier. Off: later wins and writes depth (``GL_ALWAYS``).
     cull : {None, "back", "front"}
         Remove back-facing (clockwise on screen) or front-facing triangles.
     depth_format : {"float64", "float32", "unorm24", "unorm16"}
