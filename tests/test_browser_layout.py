@@ -218,7 +218,12 @@ def _resize(tab, size: str, redrawn: bool = True) -> None:
 def _measure(tab, base: str, app: str) -> dict:
     cells = [SETUP] + [cell for _, cell in WIDGETS]
     _run(tab, base, cells, f"layout_{app.split('/')[0]}.ipynb", app=app)
-    tab.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+    try:
+        tab.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+    except Exception:  # noqa: BLE001 (say which cells had not run: timed out once under load)
+        prompts = tab.evaluate("""() => [...document.querySelectorAll(
+            '.jp-Notebook .jp-CodeCell .jp-InputPrompt')].map(p => p.textContent.trim())""")
+        raise AssertionError(f"the cells had not all run in 300 s; prompts: {prompts}") from None
     failed = tab.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
     assert not failed.count(), failed.first.inner_text()[-3000:]
     try:
