@@ -28,7 +28,7 @@ from .common import (
     title_html,
 )
 from .display import COMPARISON_DPI, FigureDisplay, comparison_axes, new_figure, resolve_backend
-from .dragging import PageDisplay, comparison_edit_blit, fill_edit_blit, same_or_new
+from .dragging import PageDisplay, comparison_edit_blit, fill_edit_blit, hidden, same_or_new
 
 #: Step of the x and y sliders: the rasteriser's snapping grid (8 sub-pixel bits).
 GRID = 1 / 256
@@ -295,15 +295,8 @@ class TriangleEditor(Holdable):
         # edges' arrows (fancy arrows: a sixth of what is left) wait for the release; the
         # page's ring marks the vertex in hand meanwhile.
         t = self.view.triangle
-        labels = [*t.labels, *t.edge_labels, self.view.split.label, *t.arrows]
-        shown = [a.get_visible() for a in labels]
-        for a in labels:
-            a.set_visible(False)
-        try:
+        with hidden([*t.labels, *t.edge_labels, self.view.split.label, *t.arrows]):
             self._blits["fill"].draw()
-        finally:
-            for a, was in zip(labels, shown):
-                a.set_visible(was)
 
     def _draw_interp(self) -> None:
         fresh = comparison_edit_blit(self.interp_view)
