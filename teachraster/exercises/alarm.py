@@ -93,6 +93,7 @@ class Alarm:
         self.cap = min(20 * seconds if cap is None else cap, LONGEST)
         self.guard = guard
         self.active = False
+        self.leaving = False  # set by the case's thread as it leaves the case: no more interrupts
         self.fired = False
         self.fired_at = None
         self.why = None
@@ -215,28 +216,36 @@ class Alarm:
         self._start_watchdog()
 
     def stop(self) -> None:
-        """Idempotent: disarm, restore the previous handler and trace function."""
+        """Idempotent: disarm, restore the previous handler and trace function.
+
+        Off the main thread an interrupt the watchdog sent before the case's thread set
+        ``leaving`` may land in here (one at most: the watchdog sends none once ``leaving`` is
+        set, and none after this has taken its lock); the caller catches it and calls this
+        again, which finishes what the interrupt cut short (each step is done once).
+        """
+        self.active = False
+        self.leaving = True
         if self._end is None:
             self._end = (self.cpu(), self.wall())
         if self._on_collection in gc.callbacks:
             gc.callbacks.remove(self._on_collection)
-        self.active = False
-        mode, self.mode = self.mode, None
+        mode = self.mode
         if mode is None:
             return
-        busy.on = False
-        busy.alarm = None
         if mode in ("signal", "watchdog"):
             with self._lock:
                 self._done.set()
-                if mode == "watchdog":
-                    drain_async()  # drop an interrupt not yet delivered
+            if mode == "watchdog":
+                drain_async()  # drop an interrupt not yet delivered: none can follow it
+        busy.on = False
+        busy.alarm = None
         if mode == "signal":
             # None: a handler not installed from Python, which cannot be put back
             signal.signal(signal.SIGALRM, self._previous or signal.SIG_DFL)
         if self._traced:
             self._traced = False
             sys.settrace(self._trace)
+        self.mode = None
 
     # -- the interrupt -------------------------------------------------------------------------
     def _on_signal(self, signum, frame):
@@ -285,7 +294,7 @@ class Alarm:
             last = None if why == "cpu" else self.cpu()
             while True:
                 with self._lock:
-                    if self._done.is_set():
+                    if self._done.is_set() or self.leaving:
                         return
                     if not self.fired:
                         self.why, self.fired_at = why, time.perf_counter()

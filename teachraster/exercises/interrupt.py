@@ -181,20 +181,35 @@ class _Drained(BaseException):
     """Replaces an interrupt not yet delivered, to be caught at once (:func:`drain_async`)."""
 
 
+#: How many times :func:`drain_async` sends its :class:`_Drained` before it gives up.
+DRAIN_ATTEMPTS = 100
+
+
 def drain_async() -> None:
     """Drop an asynchronous exception pending on this thread, and the flag it sets.
 
     CPython keeps one flag for the whole interpreter while any thread has an exception
     pending, and clears it only when that thread raises it: ``send_async(thread, None)``
     would leave it set (every thread's interpreter loop then takes its slow path for good).
-    So the pending interrupt is replaced by :class:`_Drained`, raised here at the next
-    backward jump of this loop, and caught.
+    So the pending interrupt is replaced by :class:`_Drained`, which this thread raises at its
+    next check for pending work (as the call that sends it returns), and caught: the sending
+    and every loop are inside the ``try`` (the sending once was not, and every check off the
+    main thread failed every case with "your function raised ..._Drained"). An interrupt that
+    lands here before it is replaced is dropped too: it is the one this drains.
+
+    The flag may be cleared by another thread raising its own asynchronous exception between
+    the sending and the check: then nothing is raised here, and the sending is repeated. Should
+    it never be raised (``DRAIN_ATTEMPTS`` times), the exception is cleared instead, at the
+    price of the flag: never left pending, to land later in code that does not expect it.
     """
     if send_async is None:
         return
-    send_async(threading.get_ident(), _Drained)
-    try:
-        for _ in range(1_000_000):
-            pass
-    except _Drained:
+    try:  # everything inside it: the exception is raised at a call's end or a loop's jump back
+        me = threading.get_ident()
+        for _ in range(DRAIN_ATTEMPTS):
+            send_async(me, _Drained)
+            for _ in range(1000):
+                pass
+        send_async(me, None)
+    except (_Drained, CaseInterrupt):
         pass

@@ -278,25 +278,46 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
     return outcome
 
 
-def _run_here(body, alarm: Alarm) -> Outcome | None:
-    """The outcome of ``body`` run in this thread under ``alarm``; None when past a limit."""
+def _guarded(alarm: Alarm, body) -> tuple[bool, Any]:
+    """``(True, body())`` run under ``alarm`` in this thread, or ``(False, the exception)``.
+
+    This frame is the guard: the interrupt unwinds to it. Off the main thread the interrupt is
+    an asynchronous exception, which lands at the thread's next check for pending work, so one
+    the watchdog sent just before the case ended may land in :meth:`Alarm.stop`, and one more
+    that it sent as ``leaving`` was set (two at most: it sends none once it has seen
+    ``leaving``, and none after ``stop`` has taken its lock, which then drops any still on its
+    way). Each is caught here and ``stop`` called again, which finishes what it cut short:
+    none reaches the caller, whatever thread this runs in. ``KeyboardInterrupt`` is raised.
+    """
     alarm.guard = sys._getframe()
     try:
         try:
             alarm.start()
-            value = body()
+            return True, body()
         finally:
             alarm.active = False  # first: an interrupt already on its way is now ignored
-            alarm.stop()
-    except CaseInterrupt:
-        return None
+            alarm.leaving = True  # and the watchdog sends no more (plain stores: nothing lands)
+            try:
+                alarm.stop()
+            except CaseInterrupt:
+                try:
+                    alarm.stop()
+                except CaseInterrupt:
+                    alarm.stop()
     except KeyboardInterrupt:
         raise  # the notebook's stop button stops the check too
     except BaseException as exc:  # a student's bug of any kind is a failed case, never a crash
-        return None if alarm.fired else describe_exception(exc)
+        return False, exc
+
+
+def _run_here(body, alarm: Alarm) -> Outcome | None:
+    """The outcome of ``body`` run in this thread under ``alarm``; None when past a limit."""
+    ok, got = _guarded(alarm, body)
+    if not ok:
+        return None if alarm.fired or isinstance(got, CaseInterrupt) else describe_exception(got)
     if alarm.fired or alarm.overran():  # it caught the interrupt, or nothing could interrupt it
         return None
-    return Outcome(value=value)
+    return Outcome(value=got)
 
 
 def _run_in_thread(body, alarm: Alarm) -> tuple[Outcome | None, bool]:
@@ -370,17 +391,12 @@ def run_checker(body: Callable[[], Any], fallback: Any) -> Any:
     left = min(CHECKER_CALL, CHECKER_TOTAL - b.checker)
     if left <= 0:
         return fallback
-    alarm = Alarm(left, sys._getframe(), WAIT_FACTOR * left, CASE_WALL_FACTOR * left)
+    alarm = Alarm(left, None, WAIT_FACTOR * left, CASE_WALL_FACTOR * left)
     try:
-        try:
-            alarm.start()
-            with np.errstate(all="ignore"):  # inf and huge answers: explained, not warned about
-                return body()
-        finally:
-            alarm.active = False
-            alarm.stop()
-            b.checker += alarm.cpu()
-    except KeyboardInterrupt:
-        raise
-    except BaseException:
-        return fallback
+        # inf and huge answers: explained, not warned about (outside the guard, whose callees
+        # the interrupt must pass: a ``with`` there could swallow it, for all escapes() knows)
+        with np.errstate(all="ignore"):
+            ok, got = _guarded(alarm, body)
+    finally:
+        b.checker += alarm.cpu()
+    return got if ok else fallback
