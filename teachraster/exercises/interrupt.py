@@ -8,7 +8,10 @@ interrupt on, a tracer watches the student's frames instruction by instruction a
 the first instruction from which the exception cannot be caught before it reaches the checker
 (:func:`escapes`, reading Python 3.11+ exception tables), so that even a bare ``except:``
 inside a loop inside a ``try`` lets it through. In a thread other than the main one the
-interrupt is an asynchronous exception (:func:`send_async`).
+interrupt is an asynchronous exception (:func:`send_async`), which lands at the thread's next
+check for pending work: once the case ends, one still on its way is dropped
+(:func:`drain_async`), and one that lands in the checker's clean-up first is caught there
+(``running._guarded``), so that none reaches a report or the caller, in any thread.
 """
 
 from __future__ import annotations

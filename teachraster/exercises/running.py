@@ -11,7 +11,7 @@ time too (:mod:`.alarm`). A case past its limit is stopped by :class:`CaseInterr
 ``BaseException`` (as ``KeyboardInterrupt`` is), so that ``except Exception`` cannot swallow it
 (:mod:`.interrupt`). Outside the main thread a case runs in a thread of its own, which the
 check abandons if it cannot be stopped (a ``time.sleep`` there cannot be cut short), so that
-the check still returns in time.
+the check still returns in time; otherwise it reports what it reports in the main thread.
 
 The checker's own comparisons and explanations run through :func:`run_checker`, with limits of
 their own (they do not eat the student's budget). A ``SystemExit`` (``exit()`` in the student's
