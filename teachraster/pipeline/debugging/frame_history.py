@@ -30,7 +30,7 @@ renderer uses. Replaying the records (:meth:`PixelHistory.replay`) gives the fra
 triangle and depth at every sample bit for bit (tests/test_frame_history.py).
 
 The depth test is the renderer's own, decided in one place
-(:func:`~teachraster.pipeline.visibility.zbuffer.depth_passes`; Ritschel, *Interpolation and
+(:func:`~teachraster.pipeline.visibility.zbuffer.passes_depth_test`; Ritschel, *Interpolation and
 z-buffering*): strictly nearer passes, so of equal depths the earlier triangle stays;
 without the test every fragment passes and the last one drawn shows. The one-sample history
 reads the trace's answers; under MSAA the records' test is run by

@@ -11,7 +11,7 @@ drawn wins (``np.maximum.at``). Each costs O(fragments), not O(fragments × laye
 Whether each fragment passed the test *when it arrived* (the trace) is a running minimum
 in drawing order per pixel, computed only when asked (:func:`passed_on_arrival`).
 
-The test itself, the compare and what ``depth_test=False`` means, is :func:`depth_passes`
+The test itself, the compare and what ``depth_test=False`` means, is :func:`passes_depth_test`
 and nowhere else (the developers' brief: one place for each rule, every consumer reads
 it): the depth stage, MSAA's per-sample test, the pixel history's replay, Hi-Z and the
 overlays call it, or :func:`passed_on_arrival` and :func:`resolve`, which do;
@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 
 
-def depth_passes(depth, buffer, depth_test: bool = True) -> np.ndarray:
+def passes_depth_test(depth, buffer, depth_test: bool = True) -> np.ndarray:
     """Does a fragment (or sample) with stored depth ``depth`` pass the depth test against
     the value ``buffer`` it finds there? Elementwise, broadcast: the one place the test is
     decided.
@@ -57,9 +57,9 @@ def depth_passes(depth, buffer, depth_test: bool = True) -> np.ndarray:
     passed : ndarray of bool
         The broadcast shape of ``depth`` and ``buffer``.
 
-    >>> depth_passes([0.25, 0.5, 0.75, np.nan, np.inf], [0.5, 0.5, 0.5, 0.5, np.inf]).tolist()
+    >>> passes_depth_test([0.25, 0.5, 0.75, np.nan, np.inf], [0.5, 0.5, 0.5, 0.5, np.inf]).tolist()
     [True, False, False, False, False]
-    >>> depth_passes([0.75, np.nan], 0.5, depth_test=False).tolist()
+    >>> passes_depth_test([0.75, np.nan], 0.5, depth_test=False).tolist()
     [True, True]
     """
     depth, buffer = np.asarray(depth), np.asarray(buffer)
@@ -70,7 +70,7 @@ def depth_passes(depth, buffer, depth_test: bool = True) -> np.ndarray:
 
 def surely_in_front(farthest, nearest) -> np.ndarray:
     """Elementwise: does a depth range whose far end is ``farthest`` lie wholly in front of
-    one whose near end is ``nearest``, so that the test (:func:`depth_passes`, with the test
+    one whose near end is ``nearest``, so that the test (:func:`passes_depth_test`, with the test
     on) keeps the first over the second at every sample whichever is drawn first: drawn
     later, the first passes against the second, and the second fails against the first?
     The bound of the shortcuts that skip the test where its answer is known: MSAA's whole
@@ -80,7 +80,7 @@ def surely_in_front(farthest, nearest) -> np.ndarray:
     >>> surely_in_front([0.25, 0.5, np.nan], [0.5, 0.5, 0.5]).tolist()   # equal: not sure
     [True, False, False]
     """
-    return depth_passes(farthest, nearest) & ~depth_passes(nearest, farthest)
+    return passes_depth_test(farthest, nearest) & ~passes_depth_test(nearest, farthest)
 
 
 def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: bool):
@@ -96,7 +96,7 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
         Pixels in the frame.
     depth_test : bool
         With the test the strictly nearer fragment wins (ties keep the earlier; NaN and +inf
-        never pass, :func:`depth_passes`); without it the last one drawn wins.
+        never pass, :func:`passes_depth_test`); without it the last one drawn wins.
 
     Returns
     -------
@@ -110,7 +110,7 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     tested = int((count > 1).sum())
     index = np.arange(m)
     # what passes against the empty buffer (+inf): every fragment without the test
-    live = depth_passes(depth, np.inf, depth_test)
+    live = passes_depth_test(depth, np.inf, depth_test)
     if not live.all():
         pixel, depth, index = pixel[live], depth[live], index[live]
     if tested == 0:  # one fragment per pixel at most: nothing to resolve
@@ -124,7 +124,7 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     nearest = np.full(n_pixels, np.inf)
     np.minimum.at(nearest, pixel, depth)
     # Of the fragments at the nearest depth, the earliest: it arrived first and nothing
-    # after it passed against it (:func:`depth_passes`), what the sequential test keeps.
+    # after it passed against it (:func:`passes_depth_test`), what the sequential test keeps.
     ties = depth == nearest[pixel]
     winner = np.full(n_pixels, m, dtype=np.int64)
     np.minimum.at(winner, pixel[ties], index[ties])
@@ -136,7 +136,7 @@ def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None,
                       depth_test: bool = True) -> np.ndarray:  # fmt: skip
     """(m,) bool: did each fragment pass the depth test when it arrived (drawing order)?
 
-    A fragment passes when :func:`depth_passes` says so against the buffer it finds: the
+    A fragment passes when :func:`passes_depth_test` says so against the buffer it finds: the
     nearest depth written before it at its pixel (its sample, when ``pixel`` numbers
     samples), +inf while none was. ``writes`` (m,) bool is each fragment's depth mask
     (GL's ``glDepthMask``; None: all write): a fragment that does not write is still
@@ -153,13 +153,13 @@ def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None,
     """
     m = len(pixel)
     if m == 0 or not depth_test:
-        return depth_passes(np.zeros(m), np.inf, depth_test)
+        return passes_depth_test(np.zeros(m), np.inf, depth_test)
     order = np.argsort(pixel, kind="stable")
     pix = pixel[order]
     ranked = depth[order]
     # a depth that passes nowhere is never written (a finite one that fails is no nearer
     # than the buffer, so writing it would not change the running minimum)
-    mask = depth_passes(ranked, np.inf)
+    mask = passes_depth_test(ranked, np.inf)
     if writes is not None:
         mask &= np.asarray(writes)[order]
     written = ranked if mask.all() else np.where(mask, ranked, np.inf)
@@ -169,7 +169,7 @@ def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None,
     buffer[1:] = running_min(pix, written, longest)[:-1]
     buffer[first] = np.inf  # a pixel's first fragment finds it empty
     passed = np.empty(m, dtype=bool)
-    passed[order] = depth_passes(ranked, buffer)
+    passed[order] = passes_depth_test(ranked, buffer)
     return passed
 
 
