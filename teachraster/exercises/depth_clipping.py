@@ -20,6 +20,7 @@ import re
 import numpy as np
 
 from ..pipeline.geometry.clipping import clip_polygon, distances
+from ..pipeline.visibility.zbuffer import passes_depth_test
 from ..study.hardcases import CASES
 from .answers import MAX_VERTICES, as_bool, as_numbers, short
 from .cases import DRAWN, SEED, drawn_rng
@@ -32,8 +33,9 @@ from .tolerance import TOL, all_close, same_polygon
 
 # -- depth_test -------------------------------------------------------------------------------
 def passes_depth(incoming: float, stored: float) -> bool:
-    """The expected verdict: strictly nearer (smaller) passes."""
-    return bool(incoming < stored)
+    """The expected verdict: strictly nearer (smaller) passes, by the renderer's own test
+    (:func:`~teachraster.pipeline.visibility.zbuffer.passes_depth_test`)."""
+    return bool(passes_depth_test(incoming, stored))
 
 
 def depth_test_cases():
@@ -109,7 +111,7 @@ DEPTH_TEST = Exercise(
     DEPTH_MISTAKES, draw=_draw_depth,
     # r126 (fixex10's note): no answer was listed, so the checker's own functions were not
     # watched: handed in, they passed as the student's
-    answers=(PackageAnswer(passes_depth, words=CHECKER_WORDS),),
+    answers=(PackageAnswer(passes_depth, words=CHECKER_WORDS), PackageAnswer(passes_depth_test)),
 )  # fmt: skip
 
 

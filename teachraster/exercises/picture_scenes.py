@@ -23,6 +23,7 @@ from ..pipeline.render_triangles import Frame, render
 from ..pipeline.scenes import get_scene
 from ..pipeline.texture import checkerboard, sample
 from ..pipeline.texture_filters import mip_level
+from ..pipeline.visibility.zbuffer import passes_depth_test
 from . import antialiasing as aa
 from . import depth_precision as dp
 from . import level_of_detail as lod
@@ -264,7 +265,7 @@ def _stored(z):
 
 def _winner(stored_a, stored_b):
     """1 where A (drawn first) stays, 2 where B passes the test (strictly smaller)."""
-    return np.where(stored_b < stored_a, 2.0, 1.0)
+    return np.where(passes_depth_test(stored_b, stored_a), 2.0, 1.0)
 
 
 def depth_scene(fn) -> Scene:

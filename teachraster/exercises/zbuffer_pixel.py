@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..pipeline.visibility.zbuffer import passed_on_arrival
+from ..pipeline.visibility.zbuffer import passed_on_arrival, passes_depth_test
 from .answers import refuse_non_answers, short
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer
@@ -202,7 +202,7 @@ def _buffer_line(ax, depths, writes) -> list:
     held, stored = [], np.inf
     for d, w in zip(depths, writes):
         held.append(stored)
-        if d < stored and w:
+        if passes_depth_test(d, stored) and w:
             stored = d
     shown = [min(h, 1.04) for h in held]
     x = np.arange(len(depths))

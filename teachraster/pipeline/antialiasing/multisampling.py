@@ -51,7 +51,7 @@ from ..planning.render_plan import (
 from ..rasterization.batched_fill import weight_source
 from ..rasterization.sample_coverage import centre_covered, sample_fragments
 from ..visibility.depth import quantize
-from ..visibility.zbuffer import last_written, passed_on_arrival, resolve
+from ..visibility.zbuffer import last_written, passed_on_arrival, resolve, surely_in_front
 from .sample_shading import BLOCK, shade, shade_tables
 
 
@@ -153,7 +153,7 @@ def _nearest_whole(frags, planes, unit, width, n_pix, depth_format):
     rest = np.full(n_pix, np.inf)
     np.minimum.at(rest, f_pix, np.where(f_tri == cand[f_pix], np.inf, z_lo[f_tri]))
     np.minimum.at(rest, frags.part_pixel, z_lo[frags.part_tri])
-    winner = np.where(np.r_[z_hi, np.inf][cand] < rest, cand, -1)  # index -1 reads inf
+    winner = np.where(surely_in_front(np.r_[z_hi, np.inf][cand], rest), cand, -1)  # -1: inf
     shared = rest < np.inf  # another triangle reaches the pixel (where one covers it all)
     # where the triangles' own depth ranges overlap: the planes over the pixel square
     left = (cand >= 0) & (winner < 0)
@@ -216,7 +216,7 @@ def _nearest(full, bounds, part_pixel, part_lo, winner):
     np.minimum.at(rest, pix, np.where(first[pix] == index, np.inf, lo))
     if len(part_pixel):
         np.minimum.at(rest, part_pixel, part_lo)
-    done = np.flatnonzero(best < rest)  # inf < inf is False for pixels not in this set
+    done = np.flatnonzero(surely_in_front(best, rest))  # never for inf: not in this set
     winner[done] = tri[first[done]]
 
 
@@ -474,9 +474,7 @@ def _decide_samples(entries, planes, unit, offsets, width, options, colour=(None
             won, met = resolve(cell, depth, n_cells, depth_test)
             return won, met, depth, None
         met = int(np.count_nonzero(np.bincount(cell, minlength=n_cells) > 1))
-        passed = np.ones(len(cell), dtype=bool)
-        if depth_test:
-            passed = passed_on_arrival(cell, depth, writes)
+        passed = passed_on_arrival(cell, depth, writes, depth_test)
         won, stored = last_written(cell, passed, writes, n_cells)
         return won, met, depth, (passed, stored)
     met = int(np.count_nonzero(np.bincount(cell, minlength=n_cells) > 1))
@@ -485,7 +483,7 @@ def _decide_samples(entries, planes, unit, offsets, width, options, colour=(None
         z_lo, z_hi = quantize(planes[:, 5], depth_format), quantize(planes[:, 6], depth_format)
         ceiling = np.full(n_cells, np.inf)
         np.minimum.at(ceiling, cell, z_hi[tri])
-        keep = np.flatnonzero(z_lo[tri] <= ceiling[cell])
+        keep = np.flatnonzero(~surely_in_front(ceiling[cell], z_lo[tri]))
     count = np.bincount(cell[keep], minlength=n_cells)
     won = np.full(n_cells, -1, dtype=np.int64)
     alone = count[cell[keep]] == 1

@@ -29,9 +29,12 @@ samples, from the triangles' edge functions and depth planes, with the very func
 renderer uses. Replaying the records (:meth:`PixelHistory.replay`) gives the frame's
 triangle and depth at every sample bit for bit (tests/test_frame_history.py).
 
-The depth test follows Ritschel, *Interpolation and z-buffering*: strictly nearer passes,
-so of equal depths the earlier triangle stays; without the test every fragment passes and
-the last one drawn shows.
+The depth test is the renderer's own, decided in one place
+(:func:`~teachraster.pipeline.visibility.zbuffer.passes_depth_test`; Ritschel, *Interpolation and
+z-buffering*): strictly nearer passes, so of equal depths the earlier triangle stays;
+without the test every fragment passes and the last one drawn shows. The one-sample history
+reads the trace's answers; under MSAA the records' test is run by
+:func:`~teachraster.pipeline.visibility.zbuffer.passed_on_arrival`, as the frame's.
 """
 
 from __future__ import annotations
@@ -49,6 +52,7 @@ from ..blending.colour_blending import write_colour
 from ..rasterization.batched_fill import weight_source
 from ..rendering.stages import Visibility, fragment_values, interpolate_stage
 from ..visibility.depth import quantize
+from ..visibility.zbuffer import passed_on_arrival
 from .edge_names import CLIP_EDGE, INPUT_EDGE, SEAM, piece_edges
 
 #: The outcomes, in the pipeline's order of tests (the first that failed is reported).
@@ -498,19 +502,26 @@ def _hidden_values(frame, dbg, row, col, records) -> dict:
 
 def _replay_buffer(records, depth_test) -> list[HistoryRecord]:
     """Fill in the buffer before and after every record (per sample, in order), decide the
-    depth test where it is still open ("covered": MSAA), and mark what each sample shows
-    at the end and who hid the fragments that passed."""
+    depth test where it is still open ("covered": MSAA) by the frame's own test
+    (:func:`~teachraster.pipeline.visibility.zbuffer.passed_on_arrival`, per sample), and
+    mark what each sample shows at the end and who hid the fragments that passed."""
+    tested = [i for i, r in enumerate(records) if r.outcome == "covered"]
+    if tested:
+        rec = [records[i] for i in tested]
+        passed = passed_on_arrival(np.array([r.sample for r in rec]),
+                                   np.array([r.depth for r in rec]),
+                                   np.array([r.depth_write for r in rec]), depth_test)  # fmt: skip
+        records = list(records)
+        for i, ok in zip(tested, passed.tolist()):
+            records[i] = replace(records[i], outcome="passed" if ok else "failed_depth")
     buffer: dict[int, float] = {}
     out = []
     for r in records:
         before = buffer.get(r.sample, np.inf)
-        outcome = r.outcome
-        if outcome == "covered":
-            outcome = "passed" if (not depth_test or r.depth < before) else "failed_depth"
-        if outcome == "passed" and r.depth_write:
+        if r.outcome == "passed" and r.depth_write:
             buffer[r.sample] = r.depth
         after = buffer.get(r.sample, np.inf)
-        out.append(replace(r, outcome=outcome, depth_before=before, depth_after=after))
+        out.append(replace(r, depth_before=before, depth_after=after))
     last: dict[int, int] = {}  # per sample, the index of the last record that passed
     for i, r in enumerate(out):
         if r.outcome == "passed":

@@ -178,7 +178,7 @@ def _sample_work(trace, dbg) -> Work:
     bits = (mask[:, None] >> np.arange(n_s)) & 1
     pair, sample = np.nonzero(bits)
     samples = bits.sum(axis=1)
-    passed = np.ones(len(pair), dtype=bool)
+    depth, writes = np.zeros(len(pair)), None  # without the test no depth is needed
     if a.depth_test and len(pair):
         planes = depth_planes(weight_source(window[:, :, :2], setup, False), window)
         row, col = np.divmod(pixel[pair], a.width)
@@ -187,7 +187,7 @@ def _sample_work(trace, dbg) -> Work:
         if a.depth_format != "float64":
             depth = quantize(depth, a.depth_format)
         writes = None if dbg.writes is None else dbg.writes[piece[pair]]  # depth masks
-        passed = passed_on_arrival(pixel[pair] * n_s + sample, depth, writes)
+    passed = passed_on_arrival(pixel[pair] * n_s + sample, depth, writes, a.depth_test)
     passed_samples = np.bincount(pair, weights=passed, minlength=len(pixel)).astype(np.int64)
     triangle = dbg.clipped.parent[piece]
     return Work(pixel, piece, triangle, samples, passed_samples, None, pixel // a.width)

@@ -653,8 +653,7 @@ def _multi_frame(multi, clipped, window, culled, size, plan, debug) -> Frame:
             clipped.parent[tri], row, col,
             np.concatenate([r["depth"], np.full(len(r["whole_tri"]), np.nan)]),
             np.concatenate([
-                passed_on_arrival(r["slot"], r["depth"], r["writes"]) if r["depth_test"]
-                else np.ones(len(r["slot"]), dtype=bool),
+                passed_on_arrival(r["slot"], r["depth"], r["writes"], r["depth_test"]),
                 np.ones(len(r["whole_tri"]), dtype=bool),
             ]),
             np.concatenate([r["sample"], np.full(len(r["whole_tri"]), -1)]),

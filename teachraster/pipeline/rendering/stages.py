@@ -175,9 +175,7 @@ class Visibility:
 
     @cached_property
     def passed(self) -> np.ndarray:
-        if not self.depth_test:
-            return np.ones(len(self.pixel), dtype=bool)
-        return passed_on_arrival(self.pixel, self.depth, self.writes)
+        return passed_on_arrival(self.pixel, self.depth, self.writes, self.depth_test)
 
     @property
     def buffer_depth(self) -> np.ndarray:
@@ -230,10 +228,8 @@ def depth_stage(
     mask = np.ones(len(frags.tri), dtype=bool) if writes is None else writes[frags.tri]
     if depth_test and depth_rule is not None:
         passed = passed_by_rule(pixel, depth, mask, depth_rule)
-    elif depth_test:
-        passed = passed_on_arrival(pixel, depth, mask)
     else:
-        passed = np.ones(len(pixel), bool)
+        passed = passed_on_arrival(pixel, depth, mask, depth_test)
     winner, stored = last_written(pixel, passed, mask, width * height)
     tested = int((np.bincount(pixel, minlength=width * height) > 1).sum())
     pixels = np.flatnonzero(winner >= 0)

@@ -39,7 +39,7 @@ import numpy as np
 
 from ..rasterization.batched_fill import Fragments
 from .depth import quantize
-from .zbuffer import running_min
+from .zbuffer import passes_depth_test, running_min
 
 #: Side of a Hi-Z tile, in pixels (hardware uses 8×8 or larger).
 HIZ_TILE = 8
@@ -146,16 +146,18 @@ def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, heig
         final = arrivals.tile_final((height, width), tile)[block_tile[idx]]
         ready = arrivals.tile_ready((height, width), tile)[block_tile[idx]]
         # ... and a tile with a pixel no earlier triangle reached is still open (inf).
-        idx = idx[(nearest[idx] >= final) & (ready < block_tri[idx])]
+        idx = idx[~passes_depth_test(nearest[idx], final) & (ready < block_tri[idx])]
         # Every pixel of such a tile holds a depth no farther than its first fragment's,
         # so a block at least as far as the tile's largest first depth is rejected for
         # sure, without the buffer as it was (most hidden blocks of a closed mesh).
-        sure = nearest[idx] >= arrivals.tile_first((height, width), tile)[block_tile[idx]]
+        first = arrivals.tile_first((height, width), tile)[block_tile[idx]]
+        sure = ~passes_depth_test(nearest[idx], first)
         rejected[idx[sure]] = True
         idx = idx[~sure]
         farthest[idx] = arrivals.tile_farthest(block_tri[idx], b_row[idx], b_col[idx],
                                                (height, width), tile)  # fmt: skip
-    rejected |= tested & (nearest >= farthest)
+    # the block's nearest point fails against the tile's farthest depth: so does all of it
+    rejected[idx] = ~passes_depth_test(nearest[idx], farthest[idx])
     return HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
                      block, arrivals.passed)  # fmt: skip
 
@@ -212,7 +214,7 @@ class _Arrivals:
         before[1:] = self.running[:-1]
         before[self.start[self.count > 0]] = np.inf  # a pixel's first fragment: empty
         self.passed = np.empty(m, dtype=bool)  # strictly nearer than all before it
-        self.passed[self.order] = sorted_depth < before
+        self.passed[self.order] = passes_depth_test(sorted_depth, before)
 
     def tile_ready(self, image, tile) -> np.ndarray:
         """Per tile, the triangle after which every pixel of it holds a depth (the largest

@@ -49,6 +49,7 @@ import numpy as np
 from ..rasterization.batched_fill import Fragments, flat_ranges
 from .depth import quantize
 from .hierarchical_z import HIZ_TILE
+from .zbuffer import surely_in_front
 
 #: Hi-Z is planned only where it expects to reject at least this many fragments ...
 #: (measured, benchmarks/bench_scenes.py section 5: a rejected fragment saves ~20 ns of
@@ -206,7 +207,7 @@ class HiZCut:
             lines.col[which] // t,
             (lines.col[which] + counts[which] - 1) // t,
         )
-        gone = near > far  # strictly farther than every tile it crosses: all hidden
+        gone = surely_in_front(far, near)  # every tile it crosses is in front: all hidden
         rest = which[~gone]
         pieces, owner, rejected = self._blocks(lines, counts, rest, farthest, grid[1])
         record = dataclasses.replace(
@@ -299,7 +300,7 @@ class HiZCut:
         idx = np.flatnonzero(np.isfinite(bound))  # only occluded tiles can reject
         rejected = np.zeros(len(line), dtype=bool)
         near = self._nearest(lines, line[idx], start[idx], stop[idx])
-        rejected[idx] = near > bound[idx]  # strictly farther: never shown, never tied
+        rejected[idx] = surely_in_front(bound[idx], near)  # never shown, never tied
         return _Pieces(tri, row, start, stop - start, tile_id), owner, rejected
 
 

@@ -11,6 +11,14 @@ drawn wins (``np.maximum.at``). Each costs O(fragments), not O(fragments × laye
 Whether each fragment passed the test *when it arrived* (the trace) is a running minimum
 in drawing order per pixel, computed only when asked (:func:`passed_on_arrival`).
 
+The test itself, the compare and what ``depth_test=False`` means, is :func:`passes_depth_test`
+and nowhere else (the developers' brief: one place for each rule, every consumer reads
+it): the depth stage, MSAA's per-sample test, the pixel history's replay, Hi-Z and the
+overlays call it, or :func:`passed_on_arrival` and :func:`resolve`, which do;
+:func:`surely_in_front` is the one bound the shortcuts (MSAA's whole pixels, Hi-Z) use to
+skip the test where its answer is already known. tests/test_depth_test_one_place.py
+checks that no other module writes the compare again.
+
 >>> pixel, depth = np.array([5, 5, 5, 2]), np.array([0.5, 0.25, 0.25, 0.75])
 >>> resolve(pixel, depth, 8, depth_test=True)[0][[2, 5]].tolist()   # ties keep the earlier
 [3, 1]
@@ -23,6 +31,58 @@ from __future__ import annotations
 import numpy as np
 
 
+def passes_depth_test(depth, buffer, depth_test: bool = True) -> np.ndarray:
+    """Does a fragment (or sample) with stored depth ``depth`` pass the depth test against
+    the value ``buffer`` it finds there? Elementwise, broadcast: the one place the test is
+    decided.
+
+    With the test on it is GL's default ``GL_LESS`` (the glDepthFunc reference page:
+    "passes if the incoming depth value is less than the stored depth value"; Ritschel,
+    *Interpolation and z-buffering*): strictly nearer passes, so of equal depths the one
+    already in the buffer stays (ties keep the earlier). The empty buffer holds +inf, so
+    any finite depth passes there and an infinite one does not. A NaN depth compares false
+    and never passes (so it is never written). Off (``depth_test=False``) every fragment
+    passes whatever its depth, NaN included (``GL_ALWAYS``): the last one drawn shows and,
+    where it writes depth, leaves its own (``frame.depth``).
+
+    Parameters
+    ----------
+    depth, buffer : array-like of float
+        The incoming stored depths and the buffer's values, broadcast against each other.
+    depth_test : bool
+        Whether the test is on.
+
+    Returns
+    -------
+    passed : ndarray of bool
+        The broadcast shape of ``depth`` and ``buffer``.
+
+    >>> passes_depth_test([0.25, 0.5, 0.75, np.nan, np.inf], [0.5, 0.5, 0.5, 0.5, np.inf]).tolist()
+    [True, False, False, False, False]
+    >>> passes_depth_test([0.75, np.nan], 0.5, depth_test=False).tolist()
+    [True, True]
+    """
+    depth, buffer = np.asarray(depth), np.asarray(buffer)
+    if not depth_test:
+        return np.ones(np.broadcast_shapes(depth.shape, buffer.shape), dtype=bool)
+    return depth < buffer
+
+
+def surely_in_front(farthest, nearest) -> np.ndarray:
+    """Elementwise: does a depth range whose far end is ``farthest`` lie wholly in front of
+    one whose near end is ``nearest``, so that the test (:func:`passes_depth_test`, with the test
+    on) keeps the first over the second at every sample whichever is drawn first: drawn
+    later, the first passes against the second, and the second fails against the first?
+    The bound of the shortcuts that skip the test where its answer is known: MSAA's whole
+    pixels and dropped samples, the renderer's Hi-Z. Written with the compare, so it stays
+    true for any monotone compare (with ``GL_LESS``: ``farthest < nearest``).
+
+    >>> surely_in_front([0.25, 0.5, np.nan], [0.5, 0.5, 0.5]).tolist()   # equal: not sure
+    [True, False, False]
+    """
+    return passes_depth_test(farthest, nearest) & ~passes_depth_test(nearest, farthest)
+
+
 def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: bool):
     """The winning fragment per pixel (-1 none) and the number of contested pixels.
 
@@ -31,12 +91,12 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     pixel : (m,) int64
         Flat pixel index of every fragment, fragments in drawing order.
     depth : (m,) float64
-        Their stored depths (finite).
+        Their stored depths.
     n_pixels : int
         Pixels in the frame.
     depth_test : bool
-        With the test the strictly nearer fragment wins (ties keep the earlier); without it
-        the last one drawn wins.
+        With the test the strictly nearer fragment wins (ties keep the earlier; NaN and +inf
+        never pass, :func:`passes_depth_test`); without it the last one drawn wins.
 
     Returns
     -------
@@ -49,6 +109,10 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     count = np.bincount(pixel, minlength=n_pixels)
     tested = int((count > 1).sum())
     index = np.arange(m)
+    # what passes against the empty buffer (+inf): every fragment without the test
+    live = passes_depth_test(depth, np.inf, depth_test)
+    if not live.all():
+        pixel, depth, index = pixel[live], depth[live], index[live]
     if tested == 0:  # one fragment per pixel at most: nothing to resolve
         winner = np.full(n_pixels, -1, dtype=np.int64)
         winner[pixel] = index
@@ -60,21 +124,24 @@ def resolve(pixel: np.ndarray, depth: np.ndarray, n_pixels: int, depth_test: boo
     nearest = np.full(n_pixels, np.inf)
     np.minimum.at(nearest, pixel, depth)
     # Of the fragments at the nearest depth, the earliest: it arrived first and nothing
-    # after it was strictly nearer, exactly what the sequential test keeps.
-    ties = np.flatnonzero(depth == nearest[pixel])
+    # after it passed against it (:func:`passes_depth_test`), what the sequential test keeps.
+    ties = depth == nearest[pixel]
     winner = np.full(n_pixels, m, dtype=np.int64)
-    np.minimum.at(winner, pixel[ties], ties)
+    np.minimum.at(winner, pixel[ties], index[ties])
     winner[winner == m] = -1
     return winner, tested
 
 
-def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None) -> np.ndarray:
+def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None,
+                      depth_test: bool = True) -> np.ndarray:  # fmt: skip
     """(m,) bool: did each fragment pass the depth test when it arrived (drawing order)?
 
-    A fragment passes when it is strictly nearer than every earlier fragment at its pixel
-    *that wrote depth*: ``writes`` (m,) bool is each fragment's depth mask (GL's
-    ``glDepthMask``; None: all write). A fragment that does not write is still tested,
-    and leaves the buffer as it was.
+    A fragment passes when :func:`passes_depth_test` says so against the buffer it finds: the
+    nearest depth written before it at its pixel (its sample, when ``pixel`` numbers
+    samples), +inf while none was. ``writes`` (m,) bool is each fragment's depth mask
+    (GL's ``glDepthMask``; None: all write): a fragment that does not write is still
+    tested, and leaves the buffer as it was; nor does one that fails (NaN, +inf) write.
+    ``depth_test=False``: every fragment passes.
 
     Fragments are grouped by pixel (a stable sort keeps drawing order within a pixel) and
     the buffer each one found is the running minimum of the depths written before it in
@@ -85,19 +152,24 @@ def passed_on_arrival(pixel: np.ndarray, depth: np.ndarray, writes=None) -> np.n
     [True, True, True]
     """
     m = len(pixel)
-    if m == 0:
-        return np.ones(0, dtype=bool)
+    if m == 0 or not depth_test:
+        return passes_depth_test(np.zeros(m), np.inf, depth_test)
     order = np.argsort(pixel, kind="stable")
     pix = pixel[order]
     ranked = depth[order]
-    written = ranked if writes is None else np.where(np.asarray(writes)[order], ranked, np.inf)
+    # a depth that passes nowhere is never written (a finite one that fails is no nearer
+    # than the buffer, so writing it would not change the running minimum)
+    mask = passes_depth_test(ranked, np.inf)
+    if writes is not None:
+        mask &= np.asarray(writes)[order]
+    written = ranked if mask.all() else np.where(mask, ranked, np.inf)
     first = np.flatnonzero(np.r_[True, pix[1:] != pix[:-1]])
     longest = int(np.diff(np.r_[first, m]).max())
     buffer = np.empty(m)  # the buffer each fragment found: the running minimum before it
     buffer[1:] = running_min(pix, written, longest)[:-1]
     buffer[first] = np.inf  # a pixel's first fragment finds it empty
     passed = np.empty(m, dtype=bool)
-    passed[order] = ranked < buffer
+    passed[order] = passes_depth_test(ranked, buffer)
     return passed
 
 
