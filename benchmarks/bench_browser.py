@@ -89,6 +89,7 @@ import numpy as np
 import teachraster as tr
 from teachraster.widgets import FillPlayer, TexturedPlaneViewer, TriangleEditor
 from teachraster.widgets.display import FigureDisplay, new_figure
+tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], w=[1, 3, 6], attrs={"u": [0, 1, 0]})
 def drag_info(tag, display):
     # where a dragged figure's handles are in its picture (bench_vertex_drag reads it)
     w_ = display.widget
@@ -112,8 +113,7 @@ def _redraw(change):
     plain.refresh()
 fs.observe(_redraw, "value")
 box = w.VBox([fs, plain.widget]); box.add_class("bench-fig"); box""",
-    """tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], w=[1, 3, 6], attrs={"u": [0, 1, 0]})
-player = FillPlayer(tri, 16, 16, method="halfplane", interval=20)
+    """player = FillPlayer(tri, 16, 16, method="halfplane", interval=20)
 player.widget.add_class("bench-player")
 player""",
     """viewer = TexturedPlaneViewer(tilt=60)
@@ -137,8 +137,10 @@ depth""",
     # here by write_notebook, so that the editor's cells stay last
     """editor = TriangleEditor(tri, 16, 16)
 editor.widget.add_class("bench-editor")
+drag_info("BENCH-EDITOR", editor.display)
 editor""",
-    'drag_info("BENCH-EDITOR", editor.display)',
+    # the line run_all_cells waits for
+    'print("BENCH-END")',
 ]
 
 
@@ -153,15 +155,16 @@ def free_port() -> int:
 
 
 def write_notebook(folder: Path, only: list | None = None) -> str:
-    """The benchmark's notebook in ``folder``; with ``only`` (slider explorers' CSS classes)
-    the baselines and those explorers alone, then the line :func:`run_all_cells` waits for."""
+    """The benchmark's notebook in ``folder``; with ``only`` (the CSS classes of slider
+    explorers or dragged figures) the baselines and those widgets alone, then the line
+    :func:`run_all_cells` waits for."""
     import nbformat
 
     nb = nbformat.v4.new_notebook()
     cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *CONTROL_CELLS, *CELLS[-2:]]
     if only is not None:
         chosen = [c for c in CELLS if any(f'add_class("{cls}")' in c for cls in only)]
-        cells = [*CELLS[:3], *chosen, 'print("BENCH-EDITOR", "{}")']
+        cells = [*CELLS[:3], *chosen, CELLS[-1]]
     nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
@@ -226,9 +229,7 @@ def run_all_cells(page, base: str, name: str, ahead=None) -> None:
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     try:
-        page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(
-            timeout=600_000
-        )
+        page.locator(".jp-OutputArea-output", has_text="BENCH-END").first.wait_for(timeout=600_000)
     except Exception:  # a cell failed (Run All stops there): say which
         errors = page.locator(".jp-OutputArea-output[data-mime-type*='error']").all_inner_texts()
         raise RuntimeError("the notebook did not finish: " + "\n".join(errors)[-3000:]) from None
@@ -633,18 +634,17 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     return specs + explorables + controls, statistics.median(rt)
 
 
-def run_only(page, args, tries: int, chosen) -> tuple[list, float]:
-    """``--only``: the baselines, then the slider explorers ``chosen`` (``SLIDERS`` rows)."""
+def run_only(page, args, tries: int, chosen, drags) -> tuple[list, float]:
+    """``--only``: the baselines, then the slider explorers ``chosen`` (``SLIDERS`` rows),
+    then the figures whose vertices are dragged ``drags`` (``VERTEX_DRAGS`` rows)."""
     took = _Stopwatch()
     rt, fig = took("baselines", bench_baselines, page, tries)
     frames = took("idle frames", bench_frames, page, tries)
     sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle,
                           1 if args.quick else 3)
                for cls, name, label, toggle in chosen}  # fmt: skip
-    # their vertices too, where they are dragged in the page (after the sliders, as in run)
-    classes = {s[0] for s in chosen}
-    drags = took("vertex drags", vertex_drags, page, tries,
-                 [d for d in VERTEX_DRAGS if d[0] in classes])  # fmt: skip
+    # the vertices after the sliders, as in run (a vertex moved redraws their pictures)
+    drags = took("vertex drags", vertex_drags, page, tries, drags)
     specs = [("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
              ("info", "baseline: plain figure redrawn from a slider", fig),
              table.Row("baseline: animation frames of the idle page", frames, "fps",
@@ -659,17 +659,20 @@ def main(argv=None) -> int:
                              "1 per new row, 1 per drag")  # fmt: skip
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
     parser.add_argument("--only", default=None, metavar="TEXT",
-                        help="only the baselines and the slider explorers whose name holds "
-                             "TEXT (e.g. FilterExplorer; their vertices too where they are "
-                             "dragged): a notebook of those cells alone")  # fmt: skip
+                        help="only the baselines and the slider explorers and dragged "
+                             "figures whose name holds TEXT (e.g. FilterExplorer; "
+                             "PlaneExplorer: its sliders and its vertex; TriangleEditor): a "
+                             "notebook of those cells alone")  # fmt: skip
     parser.add_argument("--shots", type=Path, default=None,
                         help="folder for screenshots of the player and the editor")  # fmt: skip
     args = parser.parse_args(argv)
-    chosen = None
+    chosen = drags = None
     if args.only is not None:
         chosen = [s for s in SLIDERS if args.only.lower() in s[1].lower()]
-        if not chosen:
-            parser.error(f"--only {args.only!r}: none of " + ", ".join(s[1] for s in SLIDERS))
+        drags = [d for d in VERTEX_DRAGS if args.only.lower() in d[1].lower()]
+        if not chosen and not drags:
+            names = [s[1] for s in SLIDERS] + [d[1] for d in VERTEX_DRAGS]
+            parser.error(f"--only {args.only!r}: none of " + ", ".join(names))
     # the smoke run shows every row works; its figures are not the report's (CI time): one
     # try of each action (a second press of the same key or button was the same path again)
     tries = 1 if args.quick else max(args.tries, 3)
@@ -682,19 +685,20 @@ def main(argv=None) -> int:
     started = time.strftime("%d %b %Y %H:%M UTC", time.gmtime())
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
-    name = write_notebook(work / "nb", None if chosen is None else [s[0] for s in chosen])
+    only = None if chosen is None else sorted({x[0] for x in [*chosen, *drags]})
+    name = write_notebook(work / "nb", only)
     proc, base, log = _Stopwatch()("lab start", start_lab, work)
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
             try:
                 page = browser.new_page(viewport={"width": 1400, "height": 900})
-                _Stopwatch()("lab and Run All", run_all_cells, page, base, name,
-                             None if chosen is None else [s[0] for s in chosen])  # fmt: skip
+                ahead = None if only is None else [c for c in only if c in AHEAD]
+                _Stopwatch()("lab and Run All", run_all_cells, page, base, name, ahead)
                 if chosen is None:
                     specs, r = run(page, args, tries, reps)
                 else:
-                    specs, r = run_only(page, args, tries, chosen)
+                    specs, r = run_only(page, args, tries, chosen, drags)
             finally:
                 browser.close()
     finally:
