@@ -420,8 +420,9 @@ def bench_vertex_drag(page, tries, css_class, info, name="editor"):
             f"{name} drag, first frame (ms from the press, medians): position sent "
             f"{med(lambda t: t['sent']):.1f}, answer in {med(lambda t: t['reply']):.1f} "
             f"(kernel render {med(lambda t: (t['kernel'] or {}).get('render', 0)):.1f} + "
-            f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), painted "
-            f"{med(lambda t: t['painted']):.1f}; patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
+            f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), decoded "
+            f"{med(lambda t: t['decoded']):.1f}, painted {med(lambda t: t['painted']):.1f}; "
+            f"patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
         )
     return fps, firsts, settles
 
