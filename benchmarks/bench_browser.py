@@ -260,6 +260,22 @@ def wait_for_ahead(page, classes=None) -> None:
             arg=cls, timeout=300_000)  # fmt: skip
 
 
+def ahead_settled(page, css_class: str, still_s: float = 1.5, timeout_s: float = 300) -> None:
+    """Until the pictures drawn ahead for the explorer ``css_class`` stop arriving (some in
+    the page, none new for ``still_s``): after a vertex is let go the kernel draws those of
+    the slider moved last (not necessarily the first: :func:`wait_for_ahead` counts those)."""
+    count = f"() => document.querySelector('.{css_class} .tr-drag img').dataset.ahead || '0'"
+    last, since, end = None, time.time(), time.time() + timeout_s
+    while time.time() < end:
+        n = page.evaluate(count)
+        if n != last:
+            last, since = n, time.time()
+        elif int(n) > 0 and time.time() - since >= still_s:
+            return
+        page.wait_for_timeout(200)
+    raise RuntimeError(f"{css_class}: pictures drawn ahead still arriving after {timeout_s} s")
+
+
 def wait_for_groups(page) -> None:
     """Until every group of the player's frames is in the page."""
     page.wait_for_function(
@@ -380,7 +396,7 @@ def bench_vertex_drag(page, tries, css_class, info, name="editor"):
     hx, hy = info["handles"][1]
     for _ in range(tries):
         if css_class in AHEAD:  # a vertex moved: its slider's pictures drawn ahead again
-            wait_for_ahead(page, [css_class])
+            ahead_settled(page, css_class)
         page.evaluate(COUNT, [sel, "data-frames"])
         page.evaluate(ARM, [sel, ["pointerdown"], sel, "data-frames"])
         # The press is Playwright's (a real pointer event); the moves are synthesized in the
