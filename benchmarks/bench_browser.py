@@ -21,7 +21,8 @@ and ``DepthPrecisionExplorer``; then every explorable computed in the page
   figure's ``src``, the canvas' step, the output's text), timed in the page;
 - frame rates: pictures changed per second while the step slider is dragged with the mouse,
   while Play runs at 20 ms/step, and re-rendered fills per second while a vertex of the
-  editor is dragged continuously, 1 grid pixel per pointer move, and while each explorer's
+  editor or of the ``PlaneExplorer`` is dragged continuously, 1 grid pixel per pointer move
+  (:func:`bench_vertex_drag`), and while each explorer's
   slider is dragged (its next step at every animation frame, :func:`bench_slider`); how
   long after the drag the last picture comes (coalesced: about one render, never a queue);
   the kernel's time per slider value, as the page hears it. The slider explorers' pictures
@@ -87,7 +88,12 @@ import ipywidgets as w
 import numpy as np
 import teachraster as tr
 from teachraster.widgets import FillPlayer, TexturedPlaneViewer, TriangleEditor
-from teachraster.widgets.display import FigureDisplay, new_figure""",
+from teachraster.widgets.display import FigureDisplay, new_figure
+tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], w=[1, 3, 6], attrs={"u": [0, 1, 0]})
+def drag_info(tag, display):
+    # where a dragged figure's handles are in its picture (bench_vertex_drag reads it)
+    w_ = display.widget
+    print(tag, json.dumps({"transform": w_.transform, "size": w_.size, "handles": w_.handles}))""",
     # baseline 1: a do-nothing round trip
     """rt = w.IntSlider(description="rt")
 rt_out = w.Output()
@@ -107,8 +113,7 @@ def _redraw(change):
     plain.refresh()
 fs.observe(_redraw, "value")
 box = w.VBox([fs, plain.widget]); box.add_class("bench-fig"); box""",
-    """tri = tr.Triangle([[1.3, 1.2], [14.6, 4.7], [5.2, 14.1]], w=[1, 3, 6], attrs={"u": [0, 1, 0]})
-player = FillPlayer(tri, 16, 16, method="halfplane", interval=20)
+    """player = FillPlayer(tri, 16, 16, method="halfplane", interval=20)
 player.widget.add_class("bench-player")
 player""",
     """viewer = TexturedPlaneViewer(tilt=60)
@@ -122,6 +127,7 @@ explorer""",
     """from teachraster.widgets import PlaneExplorer
 plane = PlaneExplorer()
 plane.widget.add_class("bench-plane")
+drag_info("BENCH-PLANE", plane.display)
 plane""",
     """from teachraster.widgets.depth_explorer import DepthPrecisionExplorer
 depth = DepthPrecisionExplorer("unorm24", near=0.1, far=1000.0)
@@ -131,10 +137,10 @@ depth""",
     # here by write_notebook, so that the editor's cells stay last
     """editor = TriangleEditor(tri, 16, 16)
 editor.widget.add_class("bench-editor")
+drag_info("BENCH-EDITOR", editor.display)
 editor""",
-    """page = editor.display.widget
-print("BENCH-EDITOR", json.dumps({"transform": page.transform, "size": page.size,
-                                  "handles": page.handles}))""",
+    # the line run_all_cells waits for
+    'print("BENCH-END")',
 ]
 
 
@@ -149,15 +155,16 @@ def free_port() -> int:
 
 
 def write_notebook(folder: Path, only: list | None = None) -> str:
-    """The benchmark's notebook in ``folder``; with ``only`` (slider explorers' CSS classes)
-    the baselines and those explorers alone, then the line :func:`run_all_cells` waits for."""
+    """The benchmark's notebook in ``folder``; with ``only`` (the CSS classes of slider
+    explorers or dragged figures) the baselines and those widgets alone, then the line
+    :func:`run_all_cells` waits for."""
     import nbformat
 
     nb = nbformat.v4.new_notebook()
     cells = [*CELLS[:-2], *EXPLORABLE_CELLS, *CONTROL_CELLS, *CELLS[-2:]]
     if only is not None:
         chosen = [c for c in CELLS if any(f'add_class("{cls}")' in c for cls in only)]
-        cells = [*CELLS[:3], *chosen, 'print("BENCH-EDITOR", "{}")']
+        cells = [*CELLS[:3], *chosen, CELLS[-1]]
     nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
@@ -222,9 +229,7 @@ def run_all_cells(page, base: str, name: str, ahead=None) -> None:
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     try:
-        page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first.wait_for(
-            timeout=600_000
-        )
+        page.locator(".jp-OutputArea-output", has_text="BENCH-END").first.wait_for(timeout=600_000)
     except Exception:  # a cell failed (Run All stops there): say which
         errors = page.locator(".jp-OutputArea-output[data-mime-type*='error']").all_inner_texts()
         raise RuntimeError("the notebook did not finish: " + "\n".join(errors)[-3000:]) from None
@@ -253,6 +258,22 @@ def wait_for_ahead(page, classes=None) -> None:
             " const n = Math.floor((Number(r.max) - Number(r.min)) / Number(r.step) + 1e-9) + 1;"
             " return i && Number(i.dataset.ahead || 0) >= n; }",
             arg=cls, timeout=300_000)  # fmt: skip
+
+
+def ahead_settled(page, css_class: str, still_s: float = 1.5, timeout_s: float = 300) -> None:
+    """Until the pictures drawn ahead for the explorer ``css_class`` stop arriving (some in
+    the page, none new for ``still_s``): after a vertex is let go the kernel draws those of
+    the slider moved last (not necessarily the first: :func:`wait_for_ahead` counts those)."""
+    count = f"() => document.querySelector('.{css_class} .tr-drag img').dataset.ahead || '0'"
+    last, since, end = None, time.time(), time.time() + timeout_s
+    while time.time() < end:
+        n = page.evaluate(count)
+        if n != last:
+            last, since = n, time.time()
+        elif int(n) > 0 and time.time() - since >= still_s:
+            return
+        page.wait_for_timeout(200)
+    raise RuntimeError(f"{css_class}: pictures drawn ahead still arriving after {timeout_s} s")
 
 
 def wait_for_groups(page) -> None:
@@ -337,8 +358,30 @@ def bench_player(page, tries):
     return step, drag_fps, play_fps, toggles
 
 
-def bench_editor(page, tries, info):
-    img = page.locator(".bench-editor .tr-drag img").first
+def drag_info(page, tag: str) -> dict:
+    """What the notebook's ``drag_info(tag, display)`` printed: the transform from data to
+    figure pixels, the figure's size and the handles of a dragged figure."""
+    out = page.locator(".jp-OutputArea-output", has_text=tag).first
+    return json.loads(out.inner_text().split(tag, 1)[1])
+
+
+#: The figures whose vertices are dragged in the page (``static/drag.js``): (CSS class of
+#: the widget, its name in the report, the tag its cell prints ``drag_info`` under)
+VERTEX_DRAGS = [
+    ("bench-editor", "TriangleEditor", "BENCH-EDITOR"),
+    ("bench-plane", "PlaneExplorer", "BENCH-PLANE"),
+]
+
+
+def bench_vertex_drag(page, tries, css_class, info, name="editor"):
+    """Vertex v2 of the figure in ``css_class`` dragged ``tries`` times (``info``:
+    :func:`drag_info`), 0-4 grid pixels left and back at every animation frame.
+
+    Returns the pictures per second during each drag, the ms from the press to the first
+    picture and from the release to the last one; prints where the time goes (``name``).
+    """
+    sel = f".{css_class} .tr-drag img"
+    img = page.locator(sel).first
     img.scroll_into_view_if_needed()
     page.wait_for_timeout(300)
     box = img.bounding_box()
@@ -352,15 +395,16 @@ def bench_editor(page, tries, info):
     fps, firsts, kernel, trips, parts, settles = [], [], [], [], [], []
     hx, hy = info["handles"][1]
     for _ in range(tries):
-        page.evaluate(COUNT, [".bench-editor .tr-drag img", "data-frames"])
-        page.evaluate(ARM, [".bench-editor .tr-drag img", ["pointerdown"],
-                            ".bench-editor .tr-drag img", "data-frames"])  # fmt: skip
+        if css_class in AHEAD:  # a vertex moved: its slider's pictures drawn ahead again
+            ahead_settled(page, css_class)
+        page.evaluate(COUNT, [sel, "data-frames"])
+        page.evaluate(ARM, [sel, ["pointerdown"], sel, "data-frames"])
         # The press is Playwright's (a real pointer event); the moves are synthesized in the
         # page at display rate, as a mouse sends them (Playwright's own moves arrive at about
         # 20 a second on this machine, too few for the frame rate to mean anything).
         page.mouse.move(*at(hx, hy))
         page.mouse.down()
-        page.evaluate(MOVES, {"sel": ".bench-editor .tr-drag img",
+        page.evaluate(MOVES, {"sel": sel,
                               "points": [at(hx - d, hy) for d in (0, 1, 2, 3, 4, 3, 2, 1)],
                               "ms": TIMES["drag"] + 500})  # fmt: skip
         page.evaluate(MARK_RELEASE)
@@ -371,9 +415,7 @@ def bench_editor(page, tries, info):
         trips += page.evaluate("() => window.__count.rt.filter(x => x > 0)")
         if page.evaluate(DONE):
             firsts.append(page.evaluate(DT))
-        timeline = img.get_attribute(
-            "data-first-frame"
-        )  # drag.js: where the first frame's time goes
+        timeline = img.get_attribute("data-first-frame")  # drag.js: where its time goes
         if timeline:
             parts.append(json.loads(timeline))
         end = page.evaluate("() => window.__dragEnd")
@@ -382,7 +424,7 @@ def bench_editor(page, tries, info):
         during = [x for x in times if x <= end] if times else []
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
     if kernel:
-        print(f"editor drag: kernel ms per position median {statistics.median(kernel):.0f}, "
+        print(f"{name} drag: kernel ms per position median {statistics.median(kernel):.0f}, "
               f"position -> picture round trip median {statistics.median(trips):.0f} ms, "
               f"{len(kernel)} frames")  # fmt: skip
     if parts:
@@ -391,13 +433,27 @@ def bench_editor(page, tries, info):
             return statistics.median(f(t) for t in parts)
 
         print(
-            "editor drag, first frame (ms from the press, medians): position sent "
+            f"{name} drag, first frame (ms from the press, medians): position sent "
             f"{med(lambda t: t['sent']):.1f}, answer in {med(lambda t: t['reply']):.1f} "
             f"(kernel render {med(lambda t: (t['kernel'] or {}).get('render', 0)):.1f} + "
-            f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), painted "
-            f"{med(lambda t: t['painted']):.1f}; patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
+            f"encode {med(lambda t: (t['kernel'] or {}).get('encode', 0)):.1f}), decoded "
+            f"{med(lambda t: t['decoded']):.1f}, painted {med(lambda t: t['painted']):.1f}; "
+            f"patch {med(lambda t: t['bytes']) / 1e3:.0f} kB"
         )
     return fps, firsts, settles
+
+
+def vertex_drags(page, tries, which) -> list[tuple]:
+    """:func:`bench_vertex_drag` of each figure of ``which`` (``VERTEX_DRAGS`` rows),
+    ``tries`` // 4 drags (two at least): the report's rows."""
+    rows = []
+    for css_class, name, tag in which:
+        fps, firsts, settles = bench_vertex_drag(page, max(2, tries // 4), css_class,
+                                                 drag_info(page, tag), name)  # fmt: skip
+        rows += [("click", f"{name}: first frame of a drag", firsts),
+                 ("fps", f"{name}: vertex dragged (fills/s)", fps),
+                 ("settle", f"{name}: last picture after a drag", settles)]  # fmt: skip
+    return rows
 
 
 #: The slider explorers benchmarked: (CSS class of the widget, its name in the report, the
@@ -553,8 +609,6 @@ class _Stopwatch:
 
 def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     """Every interaction timed in the lab's page: the report's specs and the round trip."""
-    out = page.locator(".jp-OutputArea-output", has_text="BENCH-EDITOR").first
-    info = json.loads(out.inner_text().split("BENCH-EDITOR", 1)[1])
     # as it first shows (the interpolation toggle unfolds its comparison below)
     player_h = page.locator(".bench-player").first.bounding_box()["height"]
     if args.shots:
@@ -563,12 +617,14 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     rt, fig = took("baselines", bench_baselines, page, tries)
     frames = took("idle frames", bench_frames, page, tries)
     step, drag_fps, play_fps, toggles = took("player", bench_player, page, tries)
-    editor_fps, editor_first, editor_after = took("editor", bench_editor, page,
-                                                  max(2, tries // 4), info)  # fmt: skip
+    editor = took("editor", vertex_drags, page, tries, VERTEX_DRAGS[:1])
     sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle,
                           1 if args.quick else 3)
                for cls, name, label, toggle in SLIDERS}  # fmt: skip
     first_drag = took("first drag", first_drag_fps, page, "bench-plane", "f2")
+    # the PlaneExplorer's vertex after its sliders: a vertex moved redraws their pictures
+    # drawn ahead, which the slider rows above time
+    plane = took("plane vertex", vertex_drags, page, tries, VERTEX_DRAGS[1:])
     explorables = took("explorables", bench_explorables, page, reps)
     controls = took("controls", bench_controls, page, reps)
     specs = [
@@ -586,29 +642,31 @@ def run(page, args, tries: int, reps: int) -> tuple[list, float]:
     specs += [table.Row("FillPlayer: height of the whole player", [player_h], "px", 900.0,
                         "≤ 900 px"),
               table.fps("FillPlayer: step slider dragged", drag_fps, 50.0),
-              table.fps("FillPlayer: play at 20 ms/step", play_fps, 40.0),
-              ("click", "TriangleEditor: first frame of a drag", editor_first),
-              ("fps", "TriangleEditor: vertex dragged (fills/s)", editor_fps),
-              ("settle", "TriangleEditor: last picture after a drag", editor_after)]  # fmt: skip
+              table.fps("FillPlayer: play at 20 ms/step", play_fps, 40.0)]  # fmt: skip
+    specs += editor
     specs += slider_rows(sliders)
     specs.append(table.fps("PlaneExplorer: f2, its first drag (kernel)", first_drag,
                            note="the slider drawn ahead was v1 x"))  # fmt: skip
+    specs += plane
     return specs + explorables + controls, statistics.median(rt)
 
 
-def run_only(page, args, tries: int, chosen) -> tuple[list, float]:
-    """``--only``: the baselines, then the slider explorers ``chosen`` (``SLIDERS`` rows)."""
+def run_only(page, args, tries: int, chosen, drags) -> tuple[list, float]:
+    """``--only``: the baselines, then the slider explorers ``chosen`` (``SLIDERS`` rows),
+    then the figures whose vertices are dragged ``drags`` (``VERTEX_DRAGS`` rows)."""
     took = _Stopwatch()
     rt, fig = took("baselines", bench_baselines, page, tries)
     frames = took("idle frames", bench_frames, page, tries)
     sliders = {name: took(name, bench_slider, page, tries, cls, label, toggle,
                           1 if args.quick else 3)
                for cls, name, label, toggle in chosen}  # fmt: skip
+    # the vertices after the sliders, as in run (a vertex moved redraws their pictures)
+    drags = took("vertex drags", vertex_drags, page, tries, drags)
     specs = [("info", "baseline: do-nothing IntSlider -> Output (rt)", rt),
              ("info", "baseline: plain figure redrawn from a slider", fig),
              table.Row("baseline: animation frames of the idle page", frames, "fps",
                        note="the ceiling of every frame rate below")]  # fmt: skip
-    return specs + slider_rows(sliders), statistics.median(rt)
+    return specs + slider_rows(sliders) + drags, statistics.median(rt)
 
 
 def main(argv=None) -> int:
@@ -618,16 +676,20 @@ def main(argv=None) -> int:
                              "1 per new row, 1 per drag")  # fmt: skip
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
     parser.add_argument("--only", default=None, metavar="TEXT",
-                        help="only the baselines and the slider explorers whose name holds "
-                             "TEXT (e.g. FilterExplorer): a notebook of those cells alone")  # fmt: skip
+                        help="only the baselines and the slider explorers and dragged "
+                             "figures whose name holds TEXT (e.g. FilterExplorer; "
+                             "PlaneExplorer: its sliders and its vertex; TriangleEditor): a "
+                             "notebook of those cells alone")  # fmt: skip
     parser.add_argument("--shots", type=Path, default=None,
                         help="folder for screenshots of the player and the editor")  # fmt: skip
     args = parser.parse_args(argv)
-    chosen = None
+    chosen = drags = None
     if args.only is not None:
         chosen = [s for s in SLIDERS if args.only.lower() in s[1].lower()]
-        if not chosen:
-            parser.error(f"--only {args.only!r}: none of " + ", ".join(s[1] for s in SLIDERS))
+        drags = [d for d in VERTEX_DRAGS if args.only.lower() in d[1].lower()]
+        if not chosen and not drags:
+            names = [s[1] for s in SLIDERS] + [d[1] for d in VERTEX_DRAGS]
+            parser.error(f"--only {args.only!r}: none of " + ", ".join(names))
     # the smoke run shows every row works; its figures are not the report's (CI time): one
     # try of each action (a second press of the same key or button was the same path again)
     tries = 1 if args.quick else max(args.tries, 3)
@@ -640,19 +702,20 @@ def main(argv=None) -> int:
     started = time.strftime("%d %b %Y %H:%M UTC", time.gmtime())
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
-    name = write_notebook(work / "nb", None if chosen is None else [s[0] for s in chosen])
+    only = None if chosen is None else sorted({x[0] for x in [*chosen, *drags]})
+    name = write_notebook(work / "nb", only)
     proc, base, log = _Stopwatch()("lab start", start_lab, work)
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
             try:
                 page = browser.new_page(viewport={"width": 1400, "height": 900})
-                _Stopwatch()("lab and Run All", run_all_cells, page, base, name,
-                             None if chosen is None else [s[0] for s in chosen])  # fmt: skip
+                ahead = None if only is None else [c for c in only if c in AHEAD]
+                _Stopwatch()("lab and Run All", run_all_cells, page, base, name, ahead)
                 if chosen is None:
                     specs, r = run(page, args, tries, reps)
                 else:
-                    specs, r = run_only(page, args, tries, chosen)
+                    specs, r = run_only(page, args, tries, chosen, drags)
             finally:
                 browser.close()
     finally:

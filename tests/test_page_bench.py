@@ -44,6 +44,12 @@ def test_browser_benchmark_quick_run_reports_every_figure():
             assert f"{name}{', ' if what != 'dragged' else ' '}{what}" in out, (name, what)
     assert "FilterExplorer: filter toggle" in out
     assert "PlaneExplorer: f2, its first drag" in out
+    # the figures whose vertices are dragged in the page (drag.js): the TriangleEditor's and
+    # the PlaneExplorer's, each with its first frame, its rate and its last picture
+    for name in ("TriangleEditor", "PlaneExplorer"):
+        for what in (": first frame of a drag", ": vertex dragged (fills/s)",
+                     ": last picture after a drag"):  # fmt: skip
+            assert f"| {name}{what} |" in out, (name, what)
     # the explorables computed in the page (issue 31): a drag's first picture, its rate and
     # its last picture; a click to its picture
     for name in ("EdgeFunctionExplorer: vertex", "AttributeSurfaces: rotate",

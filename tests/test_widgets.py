@@ -1072,6 +1072,36 @@ def test_a_slider_explorer_sends_patches_and_keeps_the_final_picture_as_its_post
     viewer.close()
 
 
+def test_a_vertex_dragged_in_a_slider_explorer_comes_back_as_raw_pixels():
+    """Issue 31: the PlaneExplorer's vertex drag answered each position with a zlib patch
+    (0.5 MB of pixels: a quarter of the kernel's time under load, and the page waited on its
+    inflate, 250 ms of a 470-ms first frame in bench_browser). A position from the page now
+    comes back raw, as the editor's; a slider's drafts stay deflated (megabytes a frame)."""
+    from teachraster.widgets import PlaneExplorer
+
+    e = PlaneExplorer(backend="image")
+    page, sent = e.display.widget, []
+    page.send = lambda content, buffers=None: sent.append((content, buffers))
+    for s in e.x + e.y + e.f:
+        s.send = lambda content, buffers=None: None
+    for seq, x in enumerate([12.0, 11.0], start=1):
+        page._on_page_message(page, {"type": "move", "i": 1, "x": x, "y": 5.0, "seq": seq}, [])
+    page._on_page_message(page, {"type": "move", "i": 1, "x": 10.0, "y": 5.0, "seq": 3,
+                                 "final": True}, [])  # fmt: skip
+    frames = [(c, b) for c, b in sent if c["type"] == "frame"]
+    assert len(frames) == 3
+    for content, (raw,) in frames:
+        px, py, pw, ph = content["place"]
+        assert not content["deflate"] and len(raw) == 4 * pw * ph > 0
+    assert e.x[1].value == 10.0
+    sent.clear()
+    _page_value(e.x[1], 9.0, False)  # a slider's draft: deflated as before
+    content, (packed,) = next((c, b) for c, b in sent if c["type"] == "frame")
+    _, _, pw, ph = content["place"]
+    assert content["deflate"] and len(zlib.decompress(packed)) == 4 * pw * ph
+    e.close()
+
+
 def test_filter_truths_computed_ahead_are_the_truths_at_those_tilts():
     from teachraster.widgets import FilterExplorer
 

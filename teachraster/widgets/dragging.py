@@ -157,7 +157,11 @@ class DragFigure(anywidget.AnyWidget):
         h, w = rgba.shape[:2]
         last, self._last = self._last, rgba
         self._frame += 1
-        place, png = self._patch(last, rgba, final)
+        # a picture answering a point dragged in the page goes as raw pixels, deflated or not:
+        # the editor's way (issue 31: the PlaneExplorer's vertex, 0.5 MB a patch, spent a
+        # quarter of its kernel time on zlib and waited on the page's inflate under load)
+        deflate = self.deflate and not self._t0
+        place, png = self._patch(last, rgba, final, deflate)
         t_encoded = time.perf_counter()
         bbox = ax.get_window_extent()
         (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
@@ -187,16 +191,17 @@ class DragFigure(anywidget.AnyWidget):
         # a patch applies to the picture of frame n - 1 (a view that missed it waits for
         # the next whole picture); in reference mode to the reference picture
         self._send_frame(self._seq, moved, place, png, kernel_ms, timing,
-                         self.deflate and bool(place and png))  # fmt: skip
+                         deflate and bool(place and png))  # fmt: skip
         if final and place is not None and self.reference:
             # the poster (a PNG: 10-15 ms to encode, 100+ kB to send) a moment later: the
             # picture reaches the page first, and a second final meanwhile is posted once
             self._poster_rgba = rgba
             later(self._post_latest)
 
-    def _patch(self, last, rgba, final: bool) -> tuple:
+    def _patch(self, last, rgba, final: bool, deflate: bool) -> tuple:
         """``(place, bytes)`` of the picture ``rgba`` for the page that shows ``last``
-        (in reference mode: the reference and one patch).
+        (in reference mode: the reference and one patch), a patch zlib-compressed with
+        ``deflate``.
 
         A patch travels as raw RGBA pixels: the page paints them at once (putImageData),
         where a PNG waits for an asynchronous decode that took 5-90 ms on a loaded machine;
@@ -207,19 +212,20 @@ class DragFigure(anywidget.AnyWidget):
             if self._ref is None or self._ref.shape != rgba.shape:
                 self._ref, self.ref_frame = rgba, self._frame
                 return None, encode_png(rgba)
-            return self._crop(self._ref, rgba)
+            return self._crop(self._ref, rgba, deflate)
         if last is None or last.shape != rgba.shape or final:
             return None, encode_png(rgba)
-        return self._crop(last, rgba)
+        return self._crop(last, rgba, deflate)
 
-    def _crop(self, base, rgba) -> tuple:
-        """``(place, bytes)``: the rectangle of ``rgba`` that differs from ``base``."""
+    def _crop(self, base, rgba, deflate: bool) -> tuple:
+        """``(place, bytes)``: the rectangle of ``rgba`` that differs from ``base``
+        (zlib-compressed with ``deflate``)."""
         box = changed_box(base, rgba)
         if box is None:
             return [0, 0, 0, 0], b""
         r0, r1, c0, c1 = box
         raw = rgba[r0:r1, c0:c1].tobytes()
-        return [c0, r0, c1 - c0, r1 - r0], zlib.compress(raw, 1) if self.deflate else raw
+        return [c0, r0, c1 - c0, r1 - r0], zlib.compress(raw, 1) if deflate else raw
 
     def send_ahead(self, batch, generation: int) -> list[tuple]:
         """Send the page pictures drawn ahead, in one message: ``batch`` holds
@@ -228,7 +234,7 @@ class DragFigure(anywidget.AnyWidget):
         ``(place, bytes)`` (:meth:`unpatch` gives its pixels back)."""
         entries, buffers = [], []
         for k, rgba, caption in batch:
-            place, data = self._crop(self._ref, rgba)
+            place, data = self._crop(self._ref, rgba, self.deflate)
             entries.append({"k": int(k), "place": place, "caption": caption,
                             "deflate": self.deflate and bool(data)})  # fmt: skip
             buffers.append(data)
@@ -267,7 +273,7 @@ class DragFigure(anywidget.AnyWidget):
         self._ref = None
         self._frame += 1
         rgba = self._last
-        place, png = self._patch(None, rgba, True)
+        place, png = self._patch(None, rgba, True, False)
         with self.hold_sync():
             self.poster, self.poster_frame = png, self._frame
             self._posted = rgba

@@ -320,6 +320,16 @@ function render({ model, el }) {
   function counted() {
     img.dataset.frames = String(Number(img.dataset.frames || 0) + 1);
   }
+  // where a drag's first picture's time went (benchmarks), once its patch is painted
+  function noteFirst(msg, bytes, decoded) {
+    if (!first || first.seq !== msg.seq || first.decoded !== undefined) return;
+    first.decoded = decoded;
+    first.painted = performance.now();
+    const t = (k) => Math.round((first[k] - first.down) * 10) / 10;
+    img.dataset.firstFrame = JSON.stringify({ sent: t("sent"), reply: t("reply"),
+      decoded: t("decoded"), painted: t("painted"), bytes: bytes.byteLength,
+      kernel: msg.timing || null });
+  }
   async function paintRef(msg, bytes) {
     if (msg.place === null) {
       sizePicture();
@@ -334,7 +344,10 @@ function render({ model, el }) {
       Object.assign(ref, { bitmap, frame: msg.ref, dirty: null });
       showPng(bytes);
     } else if (ref.bitmap && msg.ref === ref.frame) {
-      putPatch(msg.place, msg.deflate ? await inflate(bytes) : bytes);
+      const raw = msg.deflate ? await inflate(bytes) : bytes;
+      const decoded = performance.now();
+      putPatch(msg.place, raw);
+      noteFirst(msg, bytes, decoded);
     } else {
       askRef(); // a view opened after the reference was sent: it asks for a new one
       return;
@@ -398,14 +411,7 @@ function render({ model, el }) {
       const data = new Uint8ClampedArray(buf, raw.byteOffset || 0, 4 * w * h);
       const decoded = performance.now();
       pctx.putImageData(new ImageData(data, w, h), x, y);
-      if (first && first.seq === msg.seq && first.decoded === undefined) {
-        first.decoded = decoded;
-        first.painted = performance.now();
-        const t = (k) => Math.round((first[k] - first.down) * 10) / 10;
-        img.dataset.firstFrame = JSON.stringify({ sent: t("sent"), reply: t("reply"),
-          decoded: t("decoded"), painted: t("painted"), bytes: bytes.byteLength,
-          kernel: msg.timing || null });
-      }
+      noteFirst(msg, bytes, decoded);
     } else if (msg.n - 1 !== shown) {
       missed = true; // a view opened meanwhile: it waits for a whole picture (or a poster)
       return;
