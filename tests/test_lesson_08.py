@@ -517,7 +517,7 @@ def test_lesson_08_review_r136_plan_gpu_only_blends_titles_and_decimals(ns):
     assert f"{num / den:.3f}" == f"{ns.h_centre / ns.h_vertex:.3f}"
     assert 'f"so v = {h_centre:.4f} / {h_vertex:.4f} =' in flat
     # 08-9: one item of the plan a numbered section
-    sections = [s for s in sources if re.match(r"## \d\. ", s)]
+    sections = [n for s in sources for n in re.findall(r"^## (\d)\. ", s, flags=re.M)]
     plan = re.findall(r"^(\d)\. ", sources[0], flags=re.M)
     assert plan == [str(k) for k in range(1, len(sections) + 1)] and len(sections) == 8
     # 08-11: the bit count only where the source gives it
