@@ -215,8 +215,18 @@ def test_06_edge_bits_and_depth_claims():
     # times", growing with the triangle towards the printed limit
     assert 4 < ns.fill_ratio["256²"] < ns.fill_ratio["512²"] < ns.fill_limit < 10, ns.fill_ratio
     assert (ns.per_centre, ns.per_pixel) == (8, 2)
-    # review r53 06-12: the stepped span table priced, "at the limit already at 256²"
-    assert all(round(v, 1) == round(ns.fill_limit, 1) for v in ns.stepped_ratio.values())
+    # review r53 06-12: the stepped span table priced, "close to the limit already at 256²";
+    # review r135 06-1: stepped exactly (quotient, remainder, the compare for the carry: 3
+    # additions per crossing), not one addition, which is exact in neither floats nor fixed point
+    assert ns.STEP_ADDITIONS == 3
+    assert all(0.97 * ns.fill_limit < v < ns.fill_limit for v in ns.stepped_ratio.values())
+    assert "close to the limit already at 256²" in ns.FILL_TEXT
+    assert "exact only in fixed point" not in ns.FILL_TEXT
+    assert "quotient and remainder" in ns.FILL_TEXT and "3 additions per crossing" in ns.FILL_TEXT
+    # review r135 06-2: the tie rule, not the cost of the arithmetic (floats can crack a mesh)
+    assert ns.TIE_TEXT.startswith(
+        "What cracks a mesh is an inconsistent **tie rule**, not the cost of the arithmetic."
+    )
     # review r56 06-3/06-7: a column that reads the same in every row is said once under its
     # table; the times are in the appendix, in one table (r102 06-3: not one per group)
     source = (ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text()
@@ -300,6 +310,11 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # of times, measured by benchmarks/bench_lesson06_signs.py, not asserted here)
     assert set(ns.coverage_share) == {"halfplane 256²", "span 256²", "halfplane 512²", "span 512²"}
     assert set(ns.coverage_ratio) == set(ns.fill_ratio) == {"256²", "512²"}
+    # review r135 06-3: the rounds' spread is printed, and the text reads no ratio of fill
+    # times as a fact about the algorithms (the whole fill's and coverage's ratios can disagree)
+    assert set(ns.fill_spread) == set(ns.coverage_share)
+    assert all(s >= 1 for s in ns.fill_spread.values())
+    assert '"slowest round over the fastest")' in md and "the two ratios need not agree" in md
     # r20 06-1..4: the times the signs rest on are the kernel's CPU time, fastest of interleaved
     # rounds (waiting for a core not counted), and the text says so
     assert "clock=time.process_time" in code and "fastest(r)" in code

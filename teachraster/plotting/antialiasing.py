@@ -366,7 +366,7 @@ class PixelSampleArtists(Artists):
         key = ""
         if values is not None:
             key = f"\nbeside each: {', '.join(names)}" if few else "\nedge values: table below"
-        ax.set_title(f"pixel ({row}, {col})\n{covered} of {len(offsets)} covered{key}",
+        ax.set_title(f"pixel (row {row}, col {col})\n{covered} of {len(offsets)} covered{key}",
                      fontsize=fs(0.85))  # fmt: skip
 
 
@@ -597,8 +597,8 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
         best, best_hits = None, None
         for reach in (1.0, 1.8, 2.6):
             for dx, dy in directions:
-                ox = dx * (r + w / 2 + 1) * reach
-                oy = dy * (r + h / 2 + 1) * reach
+                ox = dx * (r + w / 2 + LEADER_PT) * reach
+                oy = dy * (r + h / 2 + LEADER_PT) * reach
                 box = (x + ox - w / 2, y + oy - h / 2, x + ox + w / 2, y + oy + h / 2)
                 inside = box[0] >= x_lo and box[2] <= x_hi and box[1] >= y_lo and box[3] <= y_hi
                 hits = sum(_overlap(box, b) for b in blocked) + (0 if inside else 10)
@@ -617,14 +617,23 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
                 break
         ox, oy, box = best
         blocked.append(box)
+        # a leader from the number to its dot: with 16 random samples a number could sit
+        # between two dots and name either (review r136 08-10)
         labels.append(ax.annotate(str(s), (xs[s], ys[s]), xytext=(ox, oy),
                                   textcoords="offset points", ha="center", va="center",
-                                  fontsize=size, zorder=6))  # fmt: skip
+                                  fontsize=size, zorder=6,
+                                  arrowprops=dict(arrowstyle="-", color="black",
+                                                  lw=max(0.8, lw(0.3)), shrinkA=0,
+                                                  shrinkB=dot_pt / 2)))  # fmt: skip
     return labels
 
 
 #: Points kept between two sample numbers' boxes (and a number and a dot or the pixel's side).
 NUMBER_GAP = 3.0
+
+#: Points between a sample's dot and its number's box: room for the leader joining them to
+#: show (review r136 08-10).
+LEADER_PT = 4.0
 
 
 def _nearer_dot(pts, s: int, x: float, y: float) -> int:

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import ipywidgets as widgets
-import matplotlib as mpl
 import numpy as np
 from matplotlib.cm import ScalarMappable
-from matplotlib.colors import ListedColormap, Normalize
+from matplotlib.colors import Normalize
+from matplotlib.patheffects import withStroke
 
 from ..core.fill import rasterize
 from ..core.trace import edge_name
@@ -15,6 +15,7 @@ from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
 from ..plotting.antialiasing import edge_value_text, sample_data
+from ..plotting.style import VALUE_CMAP
 from .common import (
     SAMPLE_PATTERNS,
     Holdable,
@@ -27,24 +28,22 @@ from .common import (
 )
 from .display import FigureDisplay, new_figure, resolve_backend
 
-#: The left panel's greys when more than 4 samples hide their dots: a pixel's covered fraction
-#: on ``Greys`` from 0 to 1 / MANY_SAMPLES_GREY (1 is a dark grey, on which the triangle's
-#: black edges still show; up to 4 samples the greys are lighter, to 2.5, under the dots).
-MANY_SAMPLES_GREY = 1.25
+#: Up to 4 samples the left panel's covered fraction is a light grey under the dots (``Greys``
+#: from 0 to 1 / FEW_SAMPLES_GREY); with more it is the picture, in the colour map of lesson
+#: 08's other coverage figures (VALUE_CMAP: 0 dark blue, 1 yellow; review r136 08-7).
+FEW_SAMPLES_GREY = 2.5
 
 
 def fraction_key(fig, ax, width: int, height: int):
     """A horizontal colour bar under ``ax``'s grid of ``width`` x ``height`` pixels (drawn at
-    equal aspect, anchored at the top of its box): the covered fraction 0 to 1 in the greys
-    the left panel uses with many samples (review r61 08-2: no key said dark = 1)."""
+    equal aspect, anchored at the top of its box): the covered fraction 0 to 1 in the colours
+    the left panel uses with many samples (review r61 08-2: no key said which colour is 1)."""
     box = ax.get_position()
     fig_w, fig_h = fig.get_size_inches()
     grid_h = min(box.width * fig_w * height / width / fig_h, box.height)
     bottom = box.y1 - grid_h - 0.08  # below the grid, clear of its last row
     cax = fig.add_axes((box.x0 + 0.15 * box.width, bottom, 0.7 * box.width, 0.035))
-    greys = mpl.colormaps["Greys"]
-    cmap = ListedColormap(greys(np.linspace(0, 1 / MANY_SAMPLES_GREY, 256)))
-    key = fig.colorbar(ScalarMappable(Normalize(0, 1), cmap), cax=cax, orientation="horizontal",
+    key = fig.colorbar(ScalarMappable(Normalize(0, 1), VALUE_CMAP), cax=cax, orientation="horizontal",
                        ticks=[0, 0.25, 0.5, 0.75, 1])  # fmt: skip
     cax.tick_params(labelsize=13)
     cax.set_visible(False)
@@ -107,7 +106,14 @@ class PixelInspector(Holdable):
             self.samples = plot_samples(left, self.result)
             for tri in self._triangles():
                 closed = np.vstack([tri, tri[:1]])
-                left.plot(closed[:, 0], closed[:, 1], color="k", lw=1.2)
+                # a white rim: the black edge shows on the dark blue of an empty pixel too
+                left.plot(
+                    closed[:, 0],
+                    closed[:, 1],
+                    color="k",
+                    lw=1.2,
+                    path_effects=[withStroke(linewidth=3.5, foreground="white")],
+                )
             # not clipped: the last row's and column's pixels are marked whole
             self.marker = left.plot([], [], color="#D55E00", lw=2.5, zorder=6, clip_on=False)[0]
             self._left = left
@@ -156,16 +162,18 @@ class PixelInspector(Holdable):
 
     def _few_or_fraction(self) -> None:
         """Up to 4 samples per pixel the left panel draws every sample; with more they are a
-        field of overlapping dots, so it shows each pixel's covered fraction (grey) and leaves
-        the samples to the magnified pixel on the right."""
+        field of overlapping dots, so it shows each pixel's covered fraction (in VALUE_CMAP, as
+        the lesson's coverage figures) and leaves the samples to the magnified pixel."""
         n = len(sample_data(self.result)[1])
         few = n <= 4
         self.samples.covered.set_visible(few)
         self.samples.uncovered.set_visible(few)
-        if self.samples.fraction is not None:  # darker greys when they are all there is
-            self.samples.fraction.image.set_clim(0, 2.5 if few else MANY_SAMPLES_GREY)
+        if self.samples.fraction is not None:  # the lesson's colours when they are the picture
+            image = self.samples.fraction.image
+            image.set_cmap("Greys" if few else VALUE_CMAP)
+            image.set_clim(0, FEW_SAMPLES_GREY if few else 1.0)
         self._left_note.set_text("every sample (filled = covered)" if few else "")
-        # with more samples the greys are the picture: a key says which grey is which fraction
+        # with more samples the colours are the picture: a key says which is which fraction
         self.fraction_key.ax.set_visible(not few)
         self.fraction_key.set_label(f"{n} samples: covered fraction", fontsize=14)
 
@@ -208,7 +216,7 @@ class PixelInspector(Holdable):
             rows.append(f"<tr><td>s{s}</td><td>({ox:.4f}, {oy:.4f})</td>{cells}"
                         f"<td>{'yes' if covered[s] else 'no'}</td></tr>")  # fmt: skip
         return (
-            f"<details{' open' if len(offsets) > 4 else ''}><summary>pixel ({r}, {c}): every sample's edge values (px², positive = "
+            f"<details{' open' if len(offsets) > 4 else ''}><summary>pixel (row {r}, col {c}): every sample's edge values (px², positive = "
             f"inside)</summary><table class='tr-samples' style='font-variant-numeric:"
             f"tabular-nums'><tr>{head}</tr>{''.join(rows)}</table></details>"
         )
