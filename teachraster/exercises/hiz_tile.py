@@ -480,7 +480,9 @@ def _box_buffer_far(xyz, row0, col0, size, buffer) -> float:
     if box is None:
         return -np.inf
     rows, cols = box
-    return float(buffer[rows[0] - row0 : rows[3] - row0 + 1, cols[0] - col0 : cols[3] - col0 + 1].max())
+    return float(
+        buffer[rows[0] - row0 : rows[3] - row0 + 1, cols[0] - col0 : cols[3] - col0 + 1].max()
+    )
 
 
 def _integer_bound(xyz, row0, col0, size) -> float:
