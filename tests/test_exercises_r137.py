@@ -99,3 +99,41 @@ def test_exercise_3_says_what_lesson_03_gives():
     lesson = nbformat.read(LESSON_03, 4).cells
     said = " ".join(c.source for c in lesson[4:7] if c.cell_type == "markdown")
     assert "signed" in said and "E(\\mathbf{v}_2,\\mathbf{v}_3,\\mathbf{p})" in said
+
+
+def _bary(xy, p):
+    xy = np.asarray(xy, dtype=float)
+    v1, v2, v3 = xy
+    e = tr.edge_function
+    return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)]) / e(v1, v2, v3)
+
+
+def _mu(lam, w):
+    q = np.asarray(lam, float) / np.asarray(w, float)
+    return q / q.sum()
+
+
+NAMED_03 = [
+    # D3-2: clipped to [0, 1] and renormalised (the pipeline's own clamp)
+    ("barycentric", lambda xy, p: np.clip(_bary(xy, p), 0, 1) / np.clip(_bary(xy, p), 0, 1).sum(),
+     "clamped", "do not clamp them"),
+    # D3-3: λ3 = 1 − λ1 + λ2: the sum it breaks is said
+    ("barycentric", lambda xy, p: _bary(xy, p) * [1, 1, 0] + [0, 0, 1 - _bary(xy, p)[0] + _bary(xy, p)[1]],
+     None, "; yours sum to 1.4, not 1"),
+    ("perspective_weights", lambda lam, w: (np.asarray(lam) / w) / np.abs(np.asarray(lam) / w).sum(),
+     "absolute sum", "the sum of the sizes |λ_j / w_j|"),
+    ("perspective_weights", lambda lam, w: _mu([1, 1, 1], w), "no lambda", "leave λ out"),
+    ("perspective_weights", lambda lam, w: _mu(lam, np.asarray(w)[::-1]), "w reversed",
+     "another vertex's w"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("name, fn, kind, words", NAMED_03, ids=[n[3][:20] for n in NAMED_03])
+def test_exercise_3s_half_named_answers_are_named_on_the_first_try(name, fn, kind, words):
+    """D3-2, D3-3 and 3.2's W5, W7, W10: the mistake (or the broken sum) is said."""
+    report = _check(name, fn)
+    assert not report.passed
+    first = report.failures[0]
+    assert words in first.explanation, str(report)
+    if kind is not None:
+        assert {f.kind for f in report.failures} == {kind}, str(report)
