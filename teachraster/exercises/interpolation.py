@@ -167,7 +167,9 @@ def _bary_rule(args, expected, got) -> str:
     total = float(np.sum(np.asarray(got, dtype=float)))
     # r137 D3-3: a sum other than 1 is said, whatever broke it (λ3 = 1 − λ1 + λ2, ...)
     off = f"; yours sum to {num(total)}, not 1" if abs(total - 1) > 1e-6 else ""
-    return f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}{off}"
+    return (
+        f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}{off}"
+    )
 
 
 def _draw_bary(ax, case, got):
