@@ -907,17 +907,16 @@ def hiz_vertex_in_tile(xyz, row0, col0, size, buffer):
     return bool((max(bound[0], min(inside)) if inside else bound[0]) >= np.max(buffer))
 
 
+def _box_spans(v, row0, col0, size):
+    """The tile's columns and rows whose centres lie in the box of ``v`` (first > last: none)."""
+    return [(max(start, math.ceil(v[:, a].min() - 0.5)), min(start + size - 1, math.floor(v[:, a].max() - 0.5)))
+            for a, start in ((0, col0), (1, row0))]  # fmt: skip
+
+
 def hiz_box_buffer(xyz, row0, col0, size, buffer):
     """r137 D8-10: the box's bound against the farthest depth stored in the box's pixels only."""
     v = np.asarray(xyz, dtype=float)
-    c0, c1 = (
-        max(col0, math.ceil(v[:, 0].min() - 0.5)),
-        min(col0 + size - 1, math.floor(v[:, 0].max() - 0.5)),
-    )
-    r0, r1 = (
-        max(row0, math.ceil(v[:, 1].min() - 0.5)),
-        min(row0 + size - 1, math.floor(v[:, 1].max() - 0.5)),
-    )
+    (c0, c1), (r0, r1) = _box_spans(v, row0, col0, size)
     if c0 > c1 or r0 > r1:
         return True
     box = np.asarray(buffer)[r0 - row0 : r1 - row0 + 1, c0 - col0 : c1 - col0 + 1]
@@ -927,14 +926,9 @@ def hiz_box_buffer(xyz, row0, col0, size, buffer):
 def hiz_empty_in_x_only(xyz, row0, col0, size, buffer):
     """r137 D8-3: an empty box tested in x only (an empty row range runs on)."""
     v = np.asarray(xyz, dtype=float)
-    c0, c1 = (
-        max(col0, math.ceil(v[:, 0].min() - 0.5)),
-        min(col0 + size - 1, math.floor(v[:, 0].max() - 0.5)),
-    )
+    (c0, c1), (r0, r1) = _box_spans(v, row0, col0, size)
     if c0 > c1:
         return True
-    r0, r1 = math.ceil(v[:, 1].min() - 0.5), math.floor(v[:, 1].max() - 0.5)
-    r0, r1 = max(row0, r0), min(row0 + size - 1, r1)
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = v
     n = np.cross(v[1] - v[0], v[2] - v[0])
     low = min(z1 - (n[0] * (c + 0.5 - x1) + n[1] * (r + 0.5 - y1)) / n[2]
@@ -946,14 +940,7 @@ def hiz_clipped(xyz, row0, col0, size, buffer):
     """r137 D8-9: the plane's minimum over the triangle clipped to the rectangle of the box's
     centres (Sutherland-Hodgman, a few numbers, no per-pixel test): safe and tighter."""
     v = np.asarray(xyz, dtype=float)
-    c0, c1 = (
-        max(col0, math.ceil(v[:, 0].min() - 0.5)),
-        min(col0 + size - 1, math.floor(v[:, 0].max() - 0.5)),
-    )
-    r0, r1 = (
-        max(row0, math.ceil(v[:, 1].min() - 0.5)),
-        min(row0 + size - 1, math.floor(v[:, 1].max() - 0.5)),
-    )
+    (c0, c1), (r0, r1) = _box_spans(v, row0, col0, size)
     if c0 > c1 or r0 > r1:
         return True
     poly = [tuple(p) for p in v]
