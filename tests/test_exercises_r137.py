@@ -92,10 +92,11 @@ def test_an_array_of_one_bool_is_an_explained_failure():
 
 def test_exercise_3_says_what_lesson_03_gives():
     """D3-1: lesson 03 §1 and its next cell print λ1 = E(v2, v3, p)/E(v1, v2, v3) for any p:
-    03 cell 2 says so, not that the lesson only reads weights off a picture."""
+    03 cell 2 says the lesson gives the weights for every p, not that it only reads them off
+    a picture of a point inside (without restating the formula: r84 03-1)."""
     text = _cell("03_interpolation.ipynb", 2)
-    assert "reads the weights off a picture" not in text
-    assert "λ1 = E(v2, v3, p)/E(v1, v2, v3)" in text
+    assert "reads the weights off a picture" not in text and "of a point inside;" not in text
+    assert "already gives these weights in another form, for every p and either winding" in text
     lesson = nbformat.read(LESSON_03, 4).cells
     said = " ".join(c.source for c in lesson[4:7] if c.cell_type == "markdown")
     assert "signed" in said and "E(\\mathbf{v}_2,\\mathbf{v}_3,\\mathbf{p})" in said
