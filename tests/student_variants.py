@@ -830,8 +830,12 @@ def hiz_box(xyz, row0, col0, size):
 
 def hiz_box_corners(xyz, row0, col0, size, buffer):
     """The plane at the bounding box's own corners, kept within the tile's extreme centres
-    (not at the centres inside the box): safe, up to half a pixel looser."""
+    (not at the centres inside the box): safe, up to half a pixel looser. An empty box is
+    rejected as asked (r137's cases empty in y or at x < ½ showed a second mistake, the empty
+    box kept, in the corners taken without that test)."""
     v = np.asarray(xyz, dtype=float)
+    if hiz_cut(xyz, row0, col0, size, np.full_like(buffer, np.inf)):  # True: the box is empty
+        return True
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = v
     xs = np.clip([v[:, 0].min(), v[:, 0].max()], col0 + 0.5, col0 + size - 0.5)
     ys = np.clip([v[:, 1].min(), v[:, 1].max()], row0 + 0.5, row0 + size - 0.5)
@@ -854,9 +858,12 @@ def hiz_cut(xyz, row0, col0, size, buffer, low="ceil", high="floor", cut="xy", e
         "floor+1": lambda t: math.floor(t - 0.5) + 1,
         "round": lambda t: math.floor(t + 0.5),
     }[low]
-    last = {"floor": lambda t: math.floor(t - 0.5), "ceil-1": lambda t: math.ceil(t - 0.5) - 1}[
-        high
-    ]
+    last = {
+        "floor": lambda t: math.floor(t - 0.5),
+        "ceil-1": lambda t: math.ceil(t - 0.5) - 1,
+        "floor+½": lambda t: math.floor(t + 0.5),  # r137 D8-5: one past the box's end
+        "int": lambda t: int(t - 0.5),  # r137 D8-6: truncated toward 0
+    }[high]
     spans = []
     for axis, start in ((0, col0), (1, row0)):
         a, b = first(v[:, axis].min()), last(v[:, axis].max())
@@ -886,6 +893,75 @@ def hiz_integer_centres(xyz, row0, col0, size, buffer):
     low = min(v[0, 2] - (n[0] * (c - v[0, 0]) + n[1] * (r - v[0, 1])) / n[2]
               for c in (c0, c1) for r in (r0, r1))  # fmt: skip
     return bool(max(low, v[:, 2].min()) >= np.max(buffer))
+
+
+def hiz_vertex_in_tile(xyz, row0, col0, size, buffer):
+    """r137 D8-1 (unsafe): the box's bound, no nearer than the nearest vertex *inside the
+    tile* (the bare plane where none is)."""
+    v = np.asarray(xyz, dtype=float)
+    bound = []  # the bare plane's minimum over the box's centres, taken by _hiz_with
+    _hiz_with(compare=lambda near, b: bound.append(near), clamp=False)(
+        xyz, row0, col0, size, buffer
+    )
+    inside = [z for x, y, z in v if col0 <= x <= col0 + size and row0 <= y <= row0 + size]
+    return bool((max(bound[0], min(inside)) if inside else bound[0]) >= np.max(buffer))
+
+
+def _box_spans(v, row0, col0, size):
+    """The tile's columns and rows whose centres lie in the box of ``v`` (first > last: none)."""
+    return [(max(start, math.ceil(v[:, a].min() - 0.5)), min(start + size - 1, math.floor(v[:, a].max() - 0.5)))
+            for a, start in ((0, col0), (1, row0))]  # fmt: skip
+
+
+def hiz_box_buffer(xyz, row0, col0, size, buffer):
+    """r137 D8-10: the box's bound against the farthest depth stored in the box's pixels only."""
+    v = np.asarray(xyz, dtype=float)
+    (c0, c1), (r0, r1) = _box_spans(v, row0, col0, size)
+    if c0 > c1 or r0 > r1:
+        return True
+    box = np.asarray(buffer)[r0 - row0 : r1 - row0 + 1, c0 - col0 : c1 - col0 + 1]
+    return hiz_cut(xyz, row0, col0, size, np.full_like(buffer, box.max()))
+
+
+def hiz_empty_in_x_only(xyz, row0, col0, size, buffer):
+    """r137 D8-3: an empty box tested in x only (an empty row range runs on)."""
+    v = np.asarray(xyz, dtype=float)
+    (c0, c1), (r0, r1) = _box_spans(v, row0, col0, size)
+    if c0 > c1:
+        return True
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = v
+    n = np.cross(v[1] - v[0], v[2] - v[0])
+    low = min(z1 - (n[0] * (c + 0.5 - x1) + n[1] * (r + 0.5 - y1)) / n[2]
+              for c in (c0, c1) for r in (r0, r1))  # fmt: skip
+    return bool(max(low, min(z1, z2, z3)) >= np.max(buffer))
+
+
+def hiz_clipped(xyz, row0, col0, size, buffer):
+    """r137 D8-9: the plane's minimum over the triangle clipped to the rectangle of the box's
+    centres (Sutherland-Hodgman, a few numbers, no per-pixel test): safe and tighter."""
+    v = np.asarray(xyz, dtype=float)
+    (c0, c1), (r0, r1) = _box_spans(v, row0, col0, size)
+    if c0 > c1 or r0 > r1:
+        return True
+    poly = [tuple(p) for p in v]
+    for axis, bound, keep in (
+        (0, c0 + 0.5, 1),
+        (0, c1 + 0.5, -1),
+        (1, r0 + 0.5, 1),
+        (1, r1 + 0.5, -1),
+    ):
+        out = []
+        for a, b in zip(poly, poly[1:] + poly[:1]):
+            ina, inb = keep * (a[axis] - bound) >= 0, keep * (b[axis] - bound) >= 0
+            if ina:
+                out.append(a)
+            if ina != inb:
+                t = (bound - a[axis]) / (b[axis] - a[axis])
+                out.append(tuple(p + t * (q - p) for p, q in zip(a, b)))
+        poly = out
+        if not poly:
+            return True
+    return bool(min(p[2] for p in poly) >= np.max(buffer))
 
 
 def hiz_covered_centres(xyz, row0, col0, size, buffer):
@@ -987,6 +1063,8 @@ DIFFERENT = {
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
     "Hi-Z at the box's extreme centres": ("hiz_rejects", hiz_cut),
+    # r137 D8-2: the top-left rule covers no centre on the box's right or bottom border
+    "Hi-Z over the half-open box": ("hiz_rejects", lambda *a: hiz_cut(*a, high="ceil-1")),
     "front to back, under": ("front_to_back", _under_with(_under)),
     "numpy over_premultiplied": (
         "over_premultiplied",
@@ -1304,7 +1382,7 @@ WRONG = {
     "quad with y up": ("quad_derivatives", _quad_with(y_down=False), "wrong sign"),
     # hiz_rejects
     "Hi-Z by the nearest vertex": ("hiz_rejects", _hiz_with(vertex_only=True), "nearest vertex"),
-    "Hi-Z over the covered centres": ("hiz_rejects", hiz_covered_centres, "centres the triangle"),
+    "Hi-Z over the covered centres": ("hiz_rejects", hiz_covered_centres, "the centres it covers"),
     "Hi-Z by the plane alone": ("hiz_rejects", _hiz_with(clamp=False), "bare plane"),
     # r126 N8-1: lesson 10's bound over the whole tile, the pixels the box touches, its corners
     "Hi-Z by lesson 10's bound": ("hiz_rejects", _hiz_with(box="tile"), "lesson 10's bound"),
@@ -1343,6 +1421,37 @@ WRONG = {
         "centre at x = c + ½",
     ),  # fmt: skip
     "Hi-Z with the box cut in y only": ("hiz_rejects", lambda *a: hiz_cut(*a, cut="y"), "y only"),
+    # r137: passed (D8-1 unsafe, D8-3, D8-6, D8-10) or named wrongly (D8-5, D8-9)
+    "Hi-Z by the nearest vertex inside the tile": (
+        "hiz_rejects",
+        hiz_vertex_in_tile,
+        "nearest vertex among those inside the tile",
+    ),  # fmt: skip
+    "Hi-Z with the empty box tested in x only": (
+        "hiz_rejects",
+        hiz_empty_in_x_only,
+        "bounding box holds no centre of the tile",
+    ),  # fmt: skip
+    "Hi-Z with int() for floor": (
+        "hiz_rejects",
+        lambda *a: hiz_cut(*a, high="int"),
+        "it truncates toward 0",
+    ),  # fmt: skip
+    "Hi-Z against the box's stored depths": (
+        "hiz_rejects",
+        hiz_box_buffer,
+        "one number per tile",
+    ),  # fmt: skip
+    "Hi-Z one column past the box": (
+        "hiz_rejects",
+        lambda *a: hiz_cut(*a, high="floor+½"),
+        "past the box's far end",
+    ),  # fmt: skip
+    "Hi-Z over the triangle clipped to the centres": (
+        "hiz_rejects",
+        hiz_clipped,
+        "or over the triangle clipped to the box's centres",
+    ),  # fmt: skip
     "Hi-Z strictly behind": (
         "hiz_rejects",
         _hiz_with(lambda near, buffer: near > np.max(buffer)),
@@ -1466,6 +1575,12 @@ KINDS = {
     "Hi-Z with the box cut in x only": "box in x only",
     "Hi-Z with the box cut in y only": "box in y only",
     "Hi-Z with centres at integer coordinates": "integer centres",
+    "Hi-Z by the nearest vertex inside the tile": "vertex in tile",
+    "Hi-Z with the empty box tested in x only": "empty kept",
+    "Hi-Z with int() for floor": "int for floor",
+    "Hi-Z against the box's stored depths": "box buffer",
+    "Hi-Z one column past the box": "one past",
+    "Hi-Z over the triangle clipped to the centres": "covered centres",
     "clip with z − w": "far plane's distance",
     "clip against the far plane": "far plane",
     "fill half a pixel off in x": "half a pixel off in x",

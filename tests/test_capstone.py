@@ -72,6 +72,20 @@ def _under(depths, colours, background):  # correct: nearest first with the unde
     return acc + (1 - acc[3]) * np.asarray(background)
 
 
+def _own_alpha(depths, colours, background):  # r137 D12-1: each later one by its own 1 − α
+    acc = np.zeros(4)
+    for k in np.argsort(depths):
+        acc = acc + np.asarray(colours[k]) * (1 if acc[3] == 0 else 1 - colours[k][3])
+    return acc + (1 - acc[3]) * np.asarray(background) if acc[3] < 1 else acc
+
+
+def _reset(depths, colours, background):  # r131 D12-3: the transmittance reset, not multiplied
+    acc, t = np.zeros(4), 1.0
+    for k in np.argsort(depths):
+        acc, t = acc + t * np.asarray(colours[k]), 1 - colours[k][3]
+    return acc + t * np.asarray(background)
+
+
 def test_a_buffer_passes_nearest_first_with_under_too():
     """A correct resolve that goes the other way (exercise 9's under step) passes."""
     assert ex.capstone("glass_sorted", over=sol.over_premultiplied, a_buffer=_under).passed
@@ -133,6 +147,9 @@ WRONG = [
      "your function returns (0, 0, 0) on every case"),
     ("cube_msaa", {"resolve": lambda c, i, b: np.asarray(c)[0]}, "resolve",
      "your answer holds NaN"),
+    # r137 D12-1: the two panes' alphas differ (0.6, 0.45), so the pane's own 1 − α fails
+    ("glass_sorted", {"a_buffer": _own_alpha}, "sorting", "the A-buffer's resolve gives"),
+    ("glass_sorted", {"a_buffer": _reset}, "sorting", "your alpha 1.18 is above 1"),
     ("glass_sorted", {"a_buffer": lambda d, c, b: np.ones(4)}, "A-buffer resolve",  # 1 fragment
      "your a_buffer returns (1, 1, 1, 1) whatever the fragments"),
     ("grid", {"covers": lambda xy, p: False}, "coverage", "your function never covers anything"),
@@ -556,3 +573,45 @@ def test_the_a_buffers_order_is_said_only_after_two_wrong_frames():
         assert "farthest first" in second, second
     finally:
         tries.spend_hints(["a_buffer"])
+
+
+def test_the_floors_uv_cross_the_borders_on_screen_as_12_7_says():
+    """r137 D12-2: 12.7 says the floor's vertices carry (u, v) from −¼ to 1¼ and that on
+    screen u crosses 0 and 1 and v crosses 1 (not that v runs from −¼ on screen)."""
+    from teachraster.exercises.capstone_scenes import UV_SCALE, UV_SHIFT
+
+    assert (UV_SHIFT, UV_SHIFT + UV_SCALE) == (-0.25, 1.25)
+    asked = []
+
+    def probe(texture, uv, wrap):
+        asked.append(np.asarray(uv, float))
+        return sol.bilinear(texture, uv, wrap)
+
+    assert ex.capstone("floor_bilinear", bilinear=probe).passed
+    uv = np.array(asked[: 48 * 20])  # the frame's pixels (the exercise's own cases follow)
+    assert uv[:, 0].min() < 0 and uv[:, 0].max() > 1
+    assert uv[:, 1].min() > 0 and uv[:, 1].max() > 1
+    text = _cell("12.7")
+    assert "vertices carry (u, v) from −¼ to 1¼" in text and "u crosses 0 and 1" in text
+
+
+def _cell(heading: str) -> str:
+    """The markdown cell of 12_capstone.ipynb under ``## heading``."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    text = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
+    return next(t for t in text if t.startswith(f"## {heading} "))
+
+
+def test_the_glass_panes_alphas_are_the_scenes_and_said():
+    """r137 D12-1: two different alphas, said in 12.4 and 12.5 as the scene draws them."""
+    from teachraster.exercises.capstone_render import GLASS_ALPHA
+
+    assert GLASS_ALPHA == (0.6, 0.45)
+    assert "alphas 0.6 and 0.45" in _cell("12.4")
+    assert "the red one at alpha 0.6, the blue one at 0.45" in _cell("12.5")
+    # r137 D12-3: 12.2 says float32 answers pass exercise 3's own cases here too
+    assert "within float32's rounding are accepted" in _cell("12.2")

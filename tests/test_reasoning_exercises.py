@@ -805,7 +805,7 @@ def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
      ("quad of this pixel", "even rows", "row − row mod 2"),
      ("resolve of the encoded numbers", "sRGB-encoded", "decode first, average in linear light"),
      ("Hi-Z by the plane alone", "bare plane", "the bound asked is the larger of the two"),
-     ("Hi-Z over the covered centres", "centres the triangle", "no nearer than the nearest vertex")],
+     ("Hi-Z over the covered centres", "the centres it covers", "no nearer than the nearest vertex")],
 )  # fmt: skip
 def test_a_named_mistake_asks_before_its_formula(label, name_words, formula):
     """r73 07-1, 06-1, 08-2: a recognised mistake is named with a question on the first tries

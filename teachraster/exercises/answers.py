@@ -152,6 +152,11 @@ def as_bool(value) -> bool:
     arr = _array(value, "a bool (True or False)", 1)
     if arr.size != 1:
         raise WrongAnswerType(f"returned {short(value)}, {arr.size} values, not one bool")
+    if arr.ndim:  # r137 D8-7: np.array([True]) is an array of one bool, not a bool
+        raise WrongAnswerType(
+            f"returned {short(value)}, an array of shape {arr.shape}, not a bool: return its "
+            "one value (bool(x[0])), or True or False itself"
+        )
     kind = arr.dtype.kind
     if kind == "b":
         return bool(arr.item())

@@ -23,7 +23,7 @@ from ..core.blend_factors import BLEND_MODES, apply_blend
 from . import tries
 from .front_to_back import as_rgba
 from .running import run_checker
-from .scalars import vec
+from .scalars import num, vec
 
 PREMULTIPLIED = BLEND_MODES["premultiplied"]
 #: The glass scene's clear colour (premultiplied white: opaque).
@@ -185,6 +185,11 @@ def _mistake(fn, depths, colours, yours, ours) -> str:
         fits = run_checker(lambda: _fit_on_stacks(fn, fits), fits)
     if len(fits) == 1:
         return f"; the likely mistake: {MISTAKES[fits[0]]}"
+    if yours[3] > 1 + 1e-6:  # r137 D12-3 (r131): a transmittance reset, not multiplied
+        return (f"; your alpha {num(float(yours[3]))} is above 1: the fragments and the "
+                "background share the pixel once, so their weights sum to 1 and alpha ends at "
+                "most 1 (did a weight start afresh at each fragment instead of carrying on "
+                "what the fragments in front leave?)")  # fmt: skip
     if run_checker(lambda: _constant(fn, yours), False):
         return (f"; the likely mistake: your a_buffer returns {vec(yours)} whatever the "
                 "fragments (a placeholder such as `return background` left in, or a `return` "

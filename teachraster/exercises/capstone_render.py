@@ -128,8 +128,11 @@ SCENES = {s.name: s for s in (
 )}  # fmt: skip
 
 
-#: The glass scenes' alpha (their colours are premultiplied by it).
-GLASS_ALPHA = 0.6
+#: The glass scenes' alpha per triangle (their colours are premultiplied by it): two different
+#: alphas, so an A-buffer weighting a fragment by its own (1 − α) instead of the
+#: transmittance of those in front of it fails (r137 D12-1: with two equal alphas the weights
+#: agree at every pixel of two fragments).
+GLASS_ALPHA = (0.6, 0.45)
 #: The colour of the tie scene's copy of triangle 0 (drawn last, at exactly its depths).
 TIE_COLOR = (0.2, 0.75, 0.3)
 
@@ -146,7 +149,8 @@ def render_with(spec: CapstoneScene, overrides=None):
     if not spec.glass:
         return render(scene, None, W, H, trace=True, overrides=overrides, **spec.options)
     clip = scene.clip(W / H)
-    alpha = np.full((len(clip), 3, 1), GLASS_ALPHA)  # premultiplied: the colour times alpha
+    alpha = np.repeat(np.resize(GLASS_ALPHA, len(clip))[:, None, None], 3, axis=1)
+    # premultiplied: the colour times alpha
     rgba = np.concatenate([scene.mesh.corner("color") * alpha, alpha], axis=2)
     return render(clip, W, H, attrs=rgba, blend="premultiplied", depth_write=False,
                   clear_color=tuple(glass.BACKGROUND), trace=True, overrides=overrides)  # fmt: skip

@@ -4,8 +4,8 @@ a filter's mistakes apart.
 The floor's checkerboard is symmetric (its transpose is itself) and its (u, v) stay inside
 [0, 1], so a filter that swaps u and v, or clamps where it should repeat, would draw the same
 frame. The capstone's floor is tinted by two ramps, red along the columns and green along the
-rows (so the transpose shows), and its (u, v) run from −¼ to 1¼ (so every border is crossed
-and the wrap mode shows). The sphere's checkerboard is tinted the same way (r40 12-2: a
+rows (so the transpose shows), and its vertices' (u, v) run from −¼ to 1¼ (so on screen u
+crosses 0 and 1 and v crosses 1, and the wrap mode shows: r137 D12-2). The sphere's checkerboard is tinted the same way (r40 12-2: a
 bilinear that swaps u and v drew the untinted sphere right).
 """
 

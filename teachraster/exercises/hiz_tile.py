@@ -71,32 +71,35 @@ def _bare_plane(xyz, rows, cols):
     return z1 + a * (cols + half - x1) + b * (rows + half - y1)
 
 
-def box_span(lo: float, hi: float, first: int, size: int) -> tuple[int, int] | None:
-    """The pixels (first … first + size − 1) whose centres lie in [lo, hi], as (first, last),
-    or None when no centre does."""
-    a, b = max(first, int(np.ceil(lo - 0.5))), min(first + size - 1, int(np.floor(hi - 0.5)))
+def box_span(lo: float, hi: float, first: int, size: int, open_high: bool = False):
+    """The pixels (first … first + size − 1) whose centres lie in [lo, hi] (``open_high``:
+    in [lo, hi)), as (first, last), or None when no centre does."""
+    last = int(np.ceil(hi - 0.5)) - 1 if open_high else int(np.floor(hi - 0.5))
+    a, b = max(first, int(np.ceil(lo - 0.5))), min(first + size - 1, last)
     return (a, b) if a <= b else None
 
 
-def _box_corners(xyz, row0: int, col0: int, size: int):
+def _box_corners(xyz, row0: int, col0: int, size: int, open_high: bool = False):
     """The extreme centres (rows, cols) of the tile's centres inside the triangle's bounding
-    box (r126 N8-1), or None when the box holds none of them."""
+    box (r126 N8-1; ``open_high``: without its right and bottom border), or None when the
+    box holds none of them."""
     xy = np.asarray(xyz, dtype=float)[:, :2]
-    cs = box_span(xy[:, 0].min(), xy[:, 0].max(), col0, size)
-    rs = box_span(xy[:, 1].min(), xy[:, 1].max(), row0, size)
+    cs = box_span(xy[:, 0].min(), xy[:, 0].max(), col0, size, open_high)
+    rs = box_span(xy[:, 1].min(), xy[:, 1].max(), row0, size, open_high)
     if cs is None or rs is None:
         return None
     return np.array([rs[0], rs[0], rs[1], rs[1]]), np.array([cs[0], cs[1], cs[0], cs[1]])
 
 
-def lower_bound(xyz, row0: int, col0: int, size: int) -> float:
+def lower_bound(xyz, row0: int, col0: int, size: int, open_high: bool = False) -> float:
     """The task's bound: the larger of the plane's minimum over the extreme centres of the tile
     cut to the triangle's bounding box and the nearest vertex's depth (+inf: no centre of the
     tile lies in the box). The renderer's plane is also clamped *above*, to the farthest
     vertex's depth; where all four centres lie beyond it that clamp lowered the bound below
     the task's rule (r114 D8-6, a tile the rule rejects and the reference kept): there the
-    bare plane's minimum is the bound."""
-    box = _box_corners(xyz, row0, col0, size)
+    bare plane's minimum is the bound. ``open_high``: the box without its right and bottom
+    border, whose centres the top-left rule never covers (r137 D8-2: accepted too)."""
+    box = _box_corners(xyz, row0, col0, size, open_high)
     if box is None:
         return float("inf")
     return _bound_at(xyz, *box)
@@ -155,6 +158,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         *_box_cases(),
         *_border_cases(),  # r131 D8-1
         *_one_axis_cases(),  # r131 D8-6
+        *_r137_cases(),
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -310,6 +314,50 @@ def _one_axis_cases() -> list[tuple[str, tuple]]:
              (_BEYOND_RIGHT[:, [1, 0, 2]], 0, 0, TILE, np.full((TILE, TILE), 0.32)))]  # fmt: skip
 
 
+#: r137 D8-1: the nearest vertex (depth 0.1) far outside the tile, the two inside it at 0.5,
+#: farther than the plane's minimum there (0.363 at the covered centre (7.5, 1.5)).
+_NEAR_OUTSIDE = np.array([[1.0, 1.0, 0.5], [20.0, 1.0, 0.1], [1.0, 20.0, 0.5]])
+#: r137 D8-6: a triangle left of the tile whose box ends at x = 0.3, between −½ and ½: no
+#: centre of the tile lies in it (int(0.3 − ½) is 0, not −1).
+_LEFT_OF = np.array([[-4.0, 1.0, 0.9], [0.3, 2.0, 0.9], [-2.0, 6.0, 0.9]])
+#: r137 D8-5: a triangle whose box ends at x = 5.2, 0.3 px before the centre 5.5, its depth
+#: falling to the right and rising downwards: over the box's centres the plane is nearest at
+#: (4.5, 0.5), 0.265; at the box's own corner (5.2, 0.5) 0.258, at the centre one column
+#: past the box (5.5, 0.5) 0.255; the stored 0.2565 lies between the last two.
+_ENDS_BEFORE = np.array([[5.2, 20.0, 0.648], [-8.0, -10.0, 0.18], [-8.0, 30.0, 0.98]])
+#: r137 D8-10: a small triangle in the tile's top-left corner (its box's pixels 1 … 3).
+_CORNER = np.array([[1.2, 1.2, 0.5], [3.8, 1.2, 0.5], [1.2, 3.8, 0.5]])
+
+
+def _r137_cases() -> list[tuple[str, tuple]]:
+    """r137: four wrong answers passed every case: the nearest vertex taken inside the tile
+    (unsafe, D8-1), an empty box tested in x only (D8-3), ``int()`` for floor (D8-6), the
+    stored depths read inside the box only (D8-10); and one past the box's end was named the
+    box's own corners (D8-5)."""
+    one_empty = _with(np.full((TILE, TILE), 0.3), (0, 0), np.inf)
+    below = np.array([[2.0, 7.7, 0.5], [6.0, 7.7, 0.5], [4.0, 12.0, 0.2]])
+    thin = np.array([[1.0, 3.6, 0.5], [7.0, 3.6, 0.5], [4.0, 4.4, 0.2]])
+    left_buffer = _with(np.full((TILE, TILE), 0.5), (3, 3), np.inf)
+    return [
+        ("the triangle's nearest vertex far outside the tile, the two inside it farther than "
+         "the plane there", (_NEAR_OUTSIDE, 0, 0, TILE, np.full((TILE, TILE), 0.4))),
+        ("a triangle whose bounding box starts 0.2 px below the tile's last row of centres, "
+         "one pixel still empty", (below, 0, 0, TILE, one_empty)),
+        ("a thin triangle between two rows of the tile's centres, one pixel still empty",
+         (thin, 0, 0, TILE, one_empty)),
+        ("a triangle left of the tile, its bounding box ending at x = 0.3, before the first "
+         "centre", (_LEFT_OF, 0, 0, TILE, left_buffer)),
+        ("a triangle above the tile, its bounding box ending at y = 0.3, before the first "
+         "centre", (_LEFT_OF[:, [1, 0, 2]], 0, 0, TILE, left_buffer)),
+        ("a triangle whose bounding box ends 0.3 px before a centre, its depth falling towards "
+         "it", (_ENDS_BEFORE, 0, 0, TILE, np.full((TILE, TILE), 0.2565))),
+        ("a small triangle in the tile's corner, the tile's last pixel still empty",
+         (_CORNER, 0, 0, TILE, _with(np.full((TILE, TILE), 0.4), (7, 7), np.inf))),
+        ("a small triangle in the tile's corner, the tile's farthest pixel outside its box",
+         (_CORNER, 0, 0, TILE, _with(np.full((TILE, TILE), 0.45), (7, 7), 0.6))),
+    ]  # fmt: skip
+
+
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
 #: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
@@ -325,7 +373,15 @@ def _with(buffer: np.ndarray, at, value) -> np.ndarray:
 
 
 def same_verdict(got: bool, expected: bool, args=None) -> bool:
-    return got == expected
+    """The task's verdict, or (r137 D8-2) the verdict of the half-open box: on the box's right
+    and bottom border the top-left rule covers no centre (a right or bottom edge, or the
+    rightmost or bottom vertex, lies there), so leaving those centres out is safe too."""
+    return got == expected or (args is not None and got == half_open_reject(*args))
+
+
+def half_open_reject(xyz, row0, col0, size, buffer) -> bool:
+    """The verdict of the bound over the box's centres without its right and bottom border."""
+    return bool(lower_bound(xyz, row0, col0, size, open_high=True) >= np.max(buffer))
 
 
 def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
@@ -352,6 +408,13 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "box in y only": bool(_cut_bound(xyz, row0, col0, size, cut="y") >= far),
             "border": bool(_cut_bound(xyz, row0, col0, size, border="none") >= far),
             "border low": bool(_cut_bound(xyz, row0, col0, size, border="high") >= far),
+            # r137 D8-5, D8-6: one column (row) past the box's far end; int() for floor
+            "one past": bool(_cut_bound(xyz, row0, col0, size, border="past") >= far),
+            "int for floor": bool(_cut_bound(xyz, row0, col0, size, border="trunc") >= far),
+            # r137 D8-1, D8-10: the nearest vertex inside the tile; the stored depths read
+            # inside the box only
+            "vertex in tile": bool(_vertex_in_tile_bound(xyz, row0, col0, size, bare) >= far),
+            "box buffer": bool(near >= _box_buffer_far(xyz, row0, col0, size, buffer)),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
             "plane farthest": bool(box is None or plane_at(xyz, rows, cols).max() >= far),
@@ -379,16 +442,18 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     axes: the whole box, or the whole tile where the box is not cut at all: ``cut=""`` takes
     the box's own extreme centres, beyond the tile too) and the centres on the box's border
     kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
-    leaves the left and top; "none": a strict inequality). +inf where the tile and the box
-    share no centre (as the task's)."""
-    if _box_corners(xyz, row0, col0, size) is None:
-        return np.inf
+    leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
+    "trunc": ``int(xmax − ½)``, truncated toward 0). +inf where the tile and the box share
+    no centre (as the task's)."""
+    if border not in ("past", "trunc") and _box_corners(xyz, row0, col0, size) is None:
+        return np.inf  # (those two judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
     spans = []
     for axis, first in ((0, col0), (1, row0)):
         lo, hi = xy[:, axis].min(), xy[:, axis].max()
-        a = int(np.floor(lo + 0.5)) if border != "both" else int(np.ceil(lo - 0.5))
-        b = int(np.ceil(hi - 0.5)) - 1 if border == "none" else int(np.floor(hi - 0.5))
+        a = int(np.floor(lo + 0.5)) if border in ("none", "high") else int(np.ceil(lo - 0.5))
+        b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
+             "trunc": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
@@ -399,6 +464,25 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     if c0 > c1 or r0 > r1:
         return np.inf
     return _bound_at(xyz, np.array([r0, r0, r1, r1]), np.array([c0, c1, c0, c1]))
+
+
+def _vertex_in_tile_bound(xyz, row0, col0, size, bare: float) -> float:
+    """The plane's minimum over the box's centres, no nearer than the nearest vertex *inside
+    the tile* (the bare plane where none is)."""
+    inside = ((xyz[:, 0] >= col0) & (xyz[:, 0] <= col0 + size) & (xyz[:, 1] >= row0)
+              & (xyz[:, 1] <= row0 + size))  # fmt: skip
+    return max(bare, float(xyz[inside, 2].min())) if inside.any() else bare
+
+
+def _box_buffer_far(xyz, row0, col0, size, buffer) -> float:
+    """The farthest depth stored in the tile's pixels inside the box only (-inf: none)."""
+    box = _box_corners(xyz, row0, col0, size)
+    if box is None:
+        return -np.inf
+    rows, cols = box
+    return float(
+        buffer[rows[0] - row0 : rows[3] - row0 + 1, cols[0] - col0 : cols[3] - col0 + 1].max()
+    )
 
 
 def _integer_bound(xyz, row0, col0, size) -> float:
@@ -441,6 +525,8 @@ def _pixel_box_bound(xyz, row0, col0, size) -> float:
 def _box_own_corners(xyz, row0, col0, size) -> float:
     """The plane at the box's own corners clipped to the tile's extreme centres (not at the
     centres inside the box): safe, up to half a pixel looser."""
+    if _box_corners(xyz, row0, col0, size) is None:  # an empty box rejected, as the task's
+        return np.inf
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
     xs = np.clip([lo[0], hi[0]], col0 + 0.5, col0 + size - 0.5)
     ys = np.clip([lo[1], hi[1]], row0 + 0.5, row0 + size - 0.5)
@@ -462,9 +548,10 @@ def _covered_bound(xyz, row0, col0, size, buffer) -> bool | None:
 
 _BORDER = (
     "a vertex or an axis-aligned edge can lie exactly on a pixel centre, and the triangle's "
-    "depth can be nearest there; on the box's left or top side the triangle covers such a "
+    "depth can be nearest there; on the box's left or top side the triangle can cover such a "
     "centre (the top-left rule), so a bound without it can reject a fragment that is drawn. "
-    "The bound counts every centre inside the box, its border included"
+    "The bound counts every centre inside the box, its border included (which border centres "
+    "can the rule cover at all? leaving out only those it never covers is accepted too)"
 )
 
 MISTAKES = {
@@ -491,6 +578,20 @@ MISTAKES = {
     "tile, and here the plane is nearest in columns beside the box, where no fragment lies "
     "(a safe bound, but looser); cut the columns to the box too",
     "border": "you left out the centres on the box's border (a strict inequality?): " + _BORDER,
+    "one past": "you took a column (or row) past the box's far end (⌊xmax + ½⌋?): its "
+    "centre lies beyond the box, where no fragment can be, and here the plane is nearest "
+    "there; the box's last column is the last whose centre c + ½ is at most xmax",
+    "int for floor": "you rounded with int(): it truncates toward 0, so for a box ending "
+    "between x = −½ and ½ (or y), int(xmax − ½) is 0, not −1, and takes the tile's first "
+    "column, whose centre lies beyond the box: use math.floor (or np.floor)",
+    "vertex in tile": "you took the nearest vertex among those inside the tile: no fragment "
+    "is nearer than the nearest vertex of the whole triangle, wherever that vertex lies, but a "
+    "vertex inside the tile can be farther than fragments beside it (a bound from it can "
+    "reject a fragment that is drawn)",
+    "box buffer": "you compared with the depths stored in the tile's pixels inside the box "
+    "only: Hi-Z keeps one number per tile, its farthest stored depth, and never reads the "
+    "pixels (reading them is the per-pixel work it skips); compare with the tile's farthest "
+    "depth",
     "border low": "you left out the centres on the box's left or top border (⌊xmin + ½⌋ skips "
     "the column whose centre lies exactly at xmin, ⌊ymin + ½⌋ the row): " + _BORDER,
     "smaller bound": "you took the smaller of the two bounds (the plane at the corners, the "
@@ -505,7 +606,9 @@ MISTAKES = {
     "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: this buffer "
     "holds +inf where nothing is drawn yet, and a fragment there passes whatever its depth, "
     "even one at 1.0, so this triangle may not be rejected here",
-    "vertex": "you compared the triangle's nearest vertex: in this tile its depth plane is "
+    "vertex": "you compared the triangle's nearest vertex (or a bound never above it, such "
+    "as the plane at the corners of the whole, uncut bounding box: over the box the plane "
+    "reaches below every vertex): in this tile its depth plane is "
     "farther than that vertex; evaluate the plane at the extreme centres of the tile's part "
     "inside the triangle's bounding box (the "
     "vertex alone is a safe bound, but the larger of the two bounds is asked: the vertex "
@@ -514,9 +617,12 @@ MISTAKES = {
     "triangle's nearest vertex (a corner outside the triangle), no fragment can be that near; "
     "the bound asked is the larger of the two (either alone is safe, but the larger "
     "is asked: either alone keeps blocks Hi-Z could reject)",
-    "covered centres": "you took the plane's minimum over the centres the triangle covers: "
-    "a safe bound, and tighter here, but it costs a coverage test per pixel, the work Hi-Z "
-    "is there to skip; the bound asked is the one a few tests give: the plane at the extreme "
+    # r137 D8-9: the triangle clipped to the rectangle of centres (no per-pixel test) gives
+    # the same verdicts here: both are said
+    "covered centres": "you took the plane's minimum over the triangle's own part of the "
+    "tile (over the centres it covers, or over the triangle clipped to the box's centres): a "
+    "safe bound, and tighter here, but not the one asked: a coverage test per centre is the "
+    "work Hi-Z is there to skip, and clipping costs more than the few numbers asked; the bound asked is the one a few tests give: the plane at the extreme "
     "centres of the tile's part inside the triangle's bounding box, no nearer than the "
     "nearest vertex",
     "outer corners": "you evaluated the plane at the outer corners of the extreme pixels; "

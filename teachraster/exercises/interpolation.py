@@ -81,11 +81,11 @@ ORDER = (
 
 
 def _clamped(xy, p) -> np.ndarray | None:
-    """Negative weights set to 0 and the rest renormalised (None where none is negative)."""
+    """Negative weights set to 0 (and any above 1 to 1, as np.clip(λ, 0, 1) does) and the rest
+    renormalised: inside the triangle λ itself (r137 D3-2: "None" there made the clamp agree
+    with too few answers to be named)."""
     lam = _areas(xy, p) / _area(xy)
-    if (lam >= 0).all():
-        return None
-    kept = np.maximum(lam, 0.0)
+    kept = np.clip(lam, 0.0, 1.0)
     return kept / kept.sum()
 
 
@@ -164,7 +164,12 @@ def bary_float32(args) -> float:
 
 def _bary_rule(args, expected, got) -> str:
     xy, _ = args
-    return f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}"
+    total = float(np.sum(np.asarray(got, dtype=float)))
+    # r137 D3-3: a sum other than 1 is said, whatever broke it (λ3 = 1 − λ1 + λ2, ...)
+    off = f"; yours sum to {num(total)}, not 1" if abs(total - 1) > 1e-6 else ""
+    return (
+        f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}{off}"
+    )
 
 
 def _draw_bary(ax, case, got):

@@ -108,6 +108,10 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             "clamped": weights_per_row(lam[None], w[None])[0] if (lam < 0).any() else None,
             # r126 D3-3: abs(λ) got only the general rule
             "absolute": _normalised(np.abs(lam) * (w.min() / w)) if (lam < 0).any() else None,
+            # r137: three half-named (the sum, or the general rule, only)
+            "absolute sum": (lam / w) / np.abs(lam / w).sum() if (lam < 0).any() else None,
+            "no lambda": _normalised(1 / w),
+            "w reversed": _normalised(lam / w[::-1]),
         }
 
 
@@ -129,6 +133,13 @@ MISTAKES = {
     "absolute": "your weights are all positive, but one λ is negative: you took abs(λ) "
     "(or the size of each weight); the point lies outside the triangle, and each μ keeps the "
     "sign of its λ (every w is positive): a negative λ gives a negative μ",
+    "absolute sum": "you divided by the sum of the sizes |λ_j / w_j|: one λ is negative here, "
+    "so that sum is larger than the signed one and your weights do not sum to 1; divide by "
+    "the signed sum",
+    "no lambda": "your weights leave λ out: they are the same at every point of the triangle, "
+    "while each μ_i must be 1 at its vertex v_i (where λ_i is 1) and 0 on the edge opposite",
+    "w reversed": "you paired λ_i with another vertex's w (the w in reverse order): each "
+    "vertex's λ goes with that vertex's own w",
 }
 
 
